@@ -1,0 +1,18 @@
+"""seal: Semantic Frame Execution And Localization.
+
+Commands are parsed into semantic frames from a declarative frame library, ordered by a
+planner so that every precondition holds, and localised on a room-annotated map by SeFM, a
+particle filter over where each frame can be executed.
+"""
+
+from __future__ import annotations
+
+from .errors import SealError, SealErrors, Where
+from .frames import Action, Binding, Element, Fact, Frame, LexicalUnit
+from .library import Library, load_library, read_library
+from .taxonomy import Category, Taxonomy, class_key
+
+__version__ = "0.1.0"
+
+__all__ = ["Action", "Binding", "Category", "Element", "Fact", "Frame", "LexicalUnit", "Library", "SealError",
+           "SealErrors", "Taxonomy", "Where", "__version__", "class_key", "load_library", "read_library"]

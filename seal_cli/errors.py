@@ -1,0 +1,103 @@
+"""Errors are part of seal's interface.
+
+Every failure a user can cause (a broken frame file, an unparsable command, an impossible
+plan, a bad map) is a :class:`SealError` carrying where it happened: a file, a line and a
+column (1-based), and optionally the source line so that a caret can be drawn under the
+column. The CLI prints ``str(error)`` and exits with code 1; it never shows a traceback.
+
+A check that finds several problems at once (``seal validate``) raises or returns a
+:class:`SealErrors`, which holds them all in source order.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+
+__all__ = ["SealError", "SealErrors", "Where", "caret"]
+
+
+@dataclass(frozen=True, order=True)
+class Where:
+    """A position in a source: file (or None for text given on the command line), line, column."""
+
+    file: str | None = None
+    line: int | None = None
+    column: int | None = None
+
+    def __str__(self) -> str:
+        parts = [self.file or "<input>"]
+        if self.line is not None:
+            parts.append(str(self.line))
+            if self.column is not None:
+                parts.append(str(self.column))
+        return ":".join(parts)
+
+
+def caret(source_line: str, column: int) -> str:
+    """The source line with a caret under the 1-based column."""
+    line = source_line.rstrip("\n")
+    pad = "".join("\t" if ch == "\t" else " " for ch in line[: max(column - 1, 0)])
+    return f"{line}\n{pad}^"
+
+
+class SealError(Exception):
+    """One problem a user can fix, with where it is."""
+
+    def __init__(self, message: str, where: Where | None = None, *, source_line: str | None = None,
+                 hint: str | None = None) -> None:
+        super().__init__(message)
+        self.message = message
+        self.where = where or Where()
+        self.source_line = source_line
+        self.hint = hint
+
+    @property
+    def file(self) -> str | None:
+        return self.where.file
+
+    @property
+    def line(self) -> int | None:
+        return self.where.line
+
+    @property
+    def column(self) -> int | None:
+        return self.where.column
+
+    def located(self) -> str:
+        """``file:line:col: message`` (the part a tool or an editor reads)."""
+        if self.where == Where():
+            return self.message
+        return f"{self.where}: {self.message}"
+
+    def __str__(self) -> str:
+        text = self.located()
+        if self.source_line is not None and self.column is not None:
+            text += "\n" + caret(self.source_line, self.column)
+        if self.hint:
+            text += f"\n{self.hint}"
+        return text
+
+    def to_json(self) -> dict[str, object]:
+        return {"file": self.file, "line": self.line, "column": self.column, "message": self.message}
+
+
+def _sort_key(error: SealError) -> tuple[str, int, int]:
+    return (error.file or "", error.line or 0, error.column or 0)
+
+
+class SealErrors(SealError):
+    """Several problems found together, sorted by file, line and column."""
+
+    def __init__(self, problems: Iterable[SealError]) -> None:
+        self.problems: Sequence[SealError] = sorted(problems, key=_sort_key)
+        count = len(self.problems)
+        first = self.problems[0] if self.problems else None
+        super().__init__(f"{count} problem{'s' if count != 1 else ''}",
+                         first.where if first else None)
+
+    def __str__(self) -> str:
+        return "\n".join(str(p) for p in self.problems)
+
+    def to_json(self) -> dict[str, object]:
+        return {"problems": [p.to_json() for p in self.problems]}

@@ -1,0 +1,134 @@
+"""Object classes and the categories that frame elements are typed with.
+
+A library declares categories in a types file (``utensil: [spoon, fork, ladle]``); a member
+may itself be a category (``tableware: [utensil, plate]``). A category declared without
+members (``thing: ~``) is *open*: every class belongs to it.
+
+Class names compare case-insensitively with ``_``, ``-``, spaces and CamelCase humps equal:
+``SinkBasin``, ``sink_basin`` and ``sink basin`` are one class (:func:`class_key`).
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+from functools import cached_property
+
+from .errors import SealError, Where
+
+__all__ = ["Category", "Taxonomy", "class_key", "class_words"]
+
+_HUMP = re.compile(r"(?<=[a-z0-9])(?=[A-Z])|(?<=[A-Z])(?=[A-Z][a-z])")
+
+
+def class_words(name: str) -> tuple[str, ...]:
+    """The lower-case words of a class name: ``"SinkBasin"`` and ``"sink_basin"`` give ``("sink", "basin")``."""
+    return tuple(w for w in re.split(r"[\s_\-]+", _HUMP.sub(" ", name).lower()) if w)
+
+
+def class_key(name: str) -> str:
+    """The key under which class names compare equal (``"sink_basin"``)."""
+    return "_".join(class_words(name))
+
+
+@dataclass(frozen=True)
+class Category:
+    """A named set of classes and categories; ``members is None`` means open (everything)."""
+
+    name: str
+    members: tuple[str, ...] | None
+    where: Where | None = field(default=None, compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        if not class_key(self.name):
+            raise SealError("a category needs a name", self.where)
+        object.__setattr__(self, "name", class_key(self.name))
+        if self.members is not None:
+            object.__setattr__(self, "members", tuple(class_key(m) for m in self.members))
+
+    @property
+    def is_open(self) -> bool:
+        return self.members is None
+
+
+@dataclass(frozen=True)
+class Taxonomy:
+    """The categories of a library, with membership that follows nested categories."""
+
+    categories: tuple[Category, ...] = ()
+    world: tuple[str, ...] = ()
+    """Predicates the world or the robot's state may make true without any frame (``hand_empty``)."""
+
+    @cached_property
+    def by_name(self) -> Mapping[str, Category]:
+        return {c.name: c for c in self.categories}
+
+    def __contains__(self, name: object) -> bool:
+        return isinstance(name, str) and class_key(name) in self.by_name
+
+    @cached_property
+    def _closure(self) -> Mapping[str, frozenset[str]]:
+        """Each closed category's members, following nested categories (cycles are cut)."""
+        closure: dict[str, frozenset[str]] = {}
+        for name in self.by_name:
+            seen: set[str] = set()
+            stack = [name]
+            while stack:
+                category = self.by_name.get(stack.pop())
+                for member in (category.members or ()) if category else ():
+                    if member not in seen:
+                        seen.add(member)
+                        stack.append(member)
+            closure[name] = frozenset(seen)
+        return closure
+
+    @cached_property
+    def known_classes(self) -> frozenset[str]:
+        """Every class named as a member somewhere (categories excluded)."""
+        return frozenset(m for ms in self._closure.values() for m in ms if m not in self.by_name)
+
+    def members(self, category: str) -> frozenset[str]:
+        """The classes (not categories) of a closed category."""
+        return frozenset(m for m in self._closure.get(class_key(category), ()) if m not in self.by_name)
+
+    def is_open(self, category: str) -> bool:
+        found = self.by_name.get(class_key(category))
+        return bool(found and (found.is_open or any(self.is_open(m) for m in self._closure[found.name]
+                                                     if m in self.by_name)))
+
+    def is_a(self, cls: str, category: str) -> bool | None:
+        """Whether ``cls`` belongs to ``category``: True, False, or None when nobody can tell.
+
+        A class belongs to itself and to every open category. A class nobody has listed (the
+        vocabulary is open) is None for closed categories: not known to be a member, nor known
+        not to be one.
+        """
+        cls, category = class_key(cls), class_key(category)
+        if cls == category or cls in self._closure.get(category, ()):
+            return True
+        if self.is_open(category):
+            return True
+        if cls in self.known_classes or cls in self.by_name:
+            return False
+        return None
+
+    def merged(self, other: Taxonomy) -> Taxonomy:
+        """Both taxonomies; a category declared in both takes the union of members."""
+        merged: dict[str, Category] = dict(self.by_name)
+        for category in other.categories:
+            mine = merged.get(category.name)
+            if mine is None:
+                merged[category.name] = category
+            elif mine.members is not None and category.members is not None:
+                members = tuple(dict.fromkeys(mine.members + category.members))
+                merged[category.name] = Category(category.name, members, mine.where)
+            else:
+                merged[category.name] = Category(category.name, None, mine.where)
+        return Taxonomy(tuple(merged.values()), tuple(dict.fromkeys(self.world + other.world)))
+
+    @classmethod
+    def of(cls, categories: Mapping[str, Iterable[str] | None], world: Iterable[str] = ()) -> Taxonomy:
+        """Build from a plain mapping, as in tests: ``Taxonomy.of({"utensil": ["spoon"]})``."""
+        return cls(tuple(Category(n, None if m is None else tuple(m)) for n, m in categories.items()),
+                   tuple(world))
