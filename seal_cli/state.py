@@ -15,7 +15,7 @@ not to belong.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 
 from .frames import Binding, Fact
@@ -67,7 +67,7 @@ class State:
     def __contains__(self, fact: object) -> bool:
         return isinstance(fact, Fact) and self.holds(fact)
 
-    def __iter__(self):  # type: ignore[no-untyped-def]
+    def __iter__(self) -> Iterator[Fact]:
         return iter(sorted(self.facts, key=str))
 
     def __str__(self) -> str:
