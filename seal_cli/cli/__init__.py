@@ -21,7 +21,7 @@ from rich.console import Console
 from .. import __version__
 from ..errors import SealError, SealErrors
 
-__all__ = ["app", "main"]
+__all__ = ["app", "bench_app", "command", "emit_json", "err", "main", "out"]
 
 app = typer.Typer(
     name="seal",
@@ -31,6 +31,10 @@ app = typer.Typer(
     pretty_exceptions_enable=False,
     context_settings={"help_option_names": ["-h", "--help"]},
 )
+
+bench_app = typer.Typer(help="Benchmarks: parsing corpora, the task suite with baselines, belief-update speed.",
+                        no_args_is_help=True)
+app.add_typer(bench_app, name="bench")
 
 out = Console(soft_wrap=True, highlight=False)
 err = Console(stderr=True, soft_wrap=True, highlight=False)
@@ -45,8 +49,9 @@ def report(error: SealError) -> None:
         err.print(f"error: {problem}", markup=False)
 
 
-def command(*args: Any, **kwargs: Any) -> Callable[[F], F]:
-    """``@app.command`` that turns SealError into a message on stderr and exit code 1."""
+def command(*args: Any, on: typer.Typer | None = None, **kwargs: Any) -> Callable[[F], F]:
+    """``@app.command`` (or a command of the sub-app ``on``, e.g. ``bench_app``) that turns
+    SealError into a message on stderr and exit code 1."""
 
     def decorate(function: F) -> F:
         @functools.wraps(function)
@@ -62,7 +67,7 @@ def command(*args: Any, **kwargs: Any) -> Callable[[F], F]:
             except BrokenPipeError:
                 raise typer.Exit(0) from None
 
-        app.command(*args, **kwargs)(run)
+        (on or app).command(*args, **kwargs)(run)
         return function
 
     return decorate
