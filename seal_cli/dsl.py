@@ -50,10 +50,10 @@ def _syntax_problem(exc: UnexpectedInput, text: str, file: str) -> SealError:
         message = f"unexpected {found}"
     elif isinstance(exc, UnexpectedToken):
         token = exc.token
-        found = "the end of the file" if token.type == "$END" else repr(str(token))
+        found = "end of file" if token.type == "$END" else repr(str(token))
         message = f"unexpected {found}"
     else:
-        message = "unexpected end of the file"
+        message = "unexpected end of file"
     expected = getattr(exc, "expected", None) or getattr(exc, "allowed", None)
     if expected:
         message += f"; expected {_describe(set(expected))}"

@@ -65,6 +65,8 @@ class Fact:
 
     def __post_init__(self) -> None:
         _check_identifier("predicate", self.predicate, self.where)
+        if self.predicate == "not":
+            raise SealError("'not' negates a fact and cannot be a predicate: write 'not name(args)'", self.where)
         for arg in self.args:
             _check_identifier("argument", arg, self.where)
 

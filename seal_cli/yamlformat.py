@@ -204,13 +204,14 @@ class _Reader:
     def elements(self, node: yaml.Node) -> Iterator[Element]:
         for role, key_node, value in self.pairs(node, "elements"):
             fields: dict[str, str | None] = {}
+            before = len(self.contents.problems)
             if isinstance(value, yaml.ScalarNode):
                 fields["type"] = self.string(value, f"the type of {role}")
             else:
                 for key, _, inner in self.pairs(value, f"element {role!r}", ELEMENT_KEYS):
                     fields[key] = self.string(inner, f"{key} of {role}")
             if not fields.get("type"):
-                if "type" not in fields:
+                if "type" not in fields and len(self.contents.problems) == before:
                     self.problem(f"element {role!r} needs a type", key_node)
                 continue
             element = self.build(functools.partial(Element, role, str(fields["type"]), fields.get("default"),
