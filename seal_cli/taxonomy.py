@@ -94,7 +94,8 @@ class Taxonomy:
 
     def is_open(self, category: str) -> bool:
         found = self.by_name.get(class_key(category))
-        return bool(found and (found.is_open or any(self.is_open(m) for m in self._closure[found.name]
+        # the closure already follows nested categories, so no recursion (a category may list itself)
+        return bool(found and (found.is_open or any(self.by_name[m].is_open for m in self._closure[found.name]
                                                      if m in self.by_name)))
 
     def is_a(self, cls: str, category: str) -> bool | None:
