@@ -11,12 +11,16 @@ use it. It is STRIPS:
 A unary fact whose predicate names a category of the library (``openable(fridge)``) is a
 type test, decided by the taxonomy rather than stored: it holds unless the class is known
 not to belong.
+
+``open(x)`` of a thing that cannot be closed always holds (a table is always open; see
+docs/design.md, "Open things"). A state that knows which things open and close (``closable``)
+decides this itself, so that only the openable things' ``open`` facts are stored.
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from .frames import Binding, Fact
 from .taxonomy import Taxonomy
@@ -32,16 +36,24 @@ class State:
 
     facts: frozenset[Fact] = frozenset()
     taxonomy: Taxonomy | None = field(default=None, compare=False, repr=False)
+    closable: frozenset[str] | None = field(default=None, compare=False, repr=False)
+    """The things that open and close. When given, ``open(x)`` of any other thing always holds;
+    when None, ``open`` is an ordinary stored fact."""
 
     @classmethod
-    def of(cls, facts: Iterable[Fact], taxonomy: Taxonomy | None = None) -> State:
-        return cls(frozenset(f.positive for f in facts if not f.negated), taxonomy)
+    def of(cls, facts: Iterable[Fact], taxonomy: Taxonomy | None = None,
+           closable: Iterable[str] | None = None) -> State:
+        return cls(frozenset(f.positive for f in facts if not f.negated), taxonomy,
+                   None if closable is None else frozenset(closable))
 
     def holds(self, fact: Fact) -> bool:
         """Whether a grounded fact is true here (a negated fact: whether its positive is false)."""
         taxonomy = self.taxonomy
         if taxonomy is not None and len(fact.args) == 1 and fact.predicate in taxonomy:
             truth = taxonomy.is_a(fact.args[0], fact.predicate) is not False
+        elif self.closable is not None and fact.predicate == "open" and len(fact.args) == 1 \
+                and fact.args[0] not in self.closable:
+            truth = True
         else:
             truth = fact.positive in self.facts
         return truth != fact.negated
@@ -58,7 +70,7 @@ class State:
         post = binding.postconditions
         deletes = {f.positive for f in post if f.negated}
         adds = {f for f in post if not f.negated}
-        return State((self.facts - deletes) | adds, self.taxonomy)
+        return replace(self, facts=(self.facts - deletes) | adds)
 
     def achieves(self, binding: Binding, fact: Fact) -> bool:
         """Whether running the grounded frame here makes ``fact`` hold."""

@@ -47,3 +47,13 @@ def test_apply_deletes_then_adds(library: Library) -> None:
 def test_frames_without_preconditions_are_always_applicable() -> None:
     wave = Frame("Wave", elements=(Element("theme", "person"),))
     assert State().applicable(wave.bind({"theme": "Roger"}))
+
+
+def test_open_of_a_thing_that_cannot_close_always_holds(library: Library) -> None:
+    state = State.of([Fact("hand_empty")], library.taxonomy, closable={"fridge"})
+    assert state.holds(Fact("open", ("table",)))                  # a table is always open
+    assert not state.holds(Fact("open", ("fridge",)))             # the fridge starts closed
+    opened = state.apply(library.frame("Open").bind({"theme": "fridge"}))
+    assert opened.holds(Fact("open", ("fridge",))) and opened.closable == frozenset({"fridge"})
+    assert opened.apply(library.frame("Close").bind({"theme": "fridge"})).holds(Fact("open", ("fridge",), True))
+    assert not State.of([]).holds(Fact("open", ("table",)))       # without closable, open is stored
