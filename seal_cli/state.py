@@ -19,7 +19,7 @@ decides this itself, so that only the openable things' ``open`` facts are stored
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
 
 from .frames import Binding, Fact
@@ -39,18 +39,24 @@ class State:
     closable: frozenset[str] | None = field(default=None, compare=False, repr=False)
     """The things that open and close. When given, ``open(x)`` of any other thing always holds;
     when None, ``open`` is an ordinary stored fact."""
+    classes: Mapping[str, str] = field(default_factory=dict, compare=False, repr=False)
+    """The class of each thing whose name is not its class (``fridge_1`` → ``fridge``, ``apple_2`` → ``apple``)."""
 
     @classmethod
     def of(cls, facts: Iterable[Fact], taxonomy: Taxonomy | None = None,
-           closable: Iterable[str] | None = None) -> State:
+           closable: Iterable[str] | None = None, classes: Mapping[str, str] | None = None) -> State:
         return cls(frozenset(f.positive for f in facts if not f.negated), taxonomy,
-                   None if closable is None else frozenset(closable))
+                   None if closable is None else frozenset(closable), dict(classes or {}))
+
+    def class_of(self, name: str) -> str:
+        """The class of a thing: its entry in ``classes``, else its own name."""
+        return self.classes.get(name, name)
 
     def holds(self, fact: Fact) -> bool:
         """Whether a grounded fact is true here (a negated fact: whether its positive is false)."""
         taxonomy = self.taxonomy
         if taxonomy is not None and len(fact.args) == 1 and fact.predicate in taxonomy:
-            truth = taxonomy.is_a(fact.args[0], fact.predicate) is not False
+            truth = taxonomy.is_a(self.class_of(fact.args[0]), fact.predicate) is not False
         elif self.closable is not None and fact.predicate == "open" and len(fact.args) == 1 \
                 and fact.args[0] not in self.closable:
             truth = True

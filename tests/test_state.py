@@ -57,3 +57,11 @@ def test_open_of_a_thing_that_cannot_close_always_holds(library: Library) -> Non
     assert opened.holds(Fact("open", ("fridge",))) and opened.closable == frozenset({"fridge"})
     assert opened.apply(library.frame("Close").bind({"theme": "fridge"})).holds(Fact("open", ("fridge",), True))
     assert not State.of([]).holds(Fact("open", ("table",)))       # without closable, open is stored
+
+
+def test_type_tests_use_the_class_of_a_named_thing(library: Library) -> None:
+    state = State.of([], library.taxonomy, classes={"fridge_1": "fridge", "table_1": "table"})
+    assert state.class_of("fridge_1") == "fridge" and state.class_of("cup") == "cup"
+    assert state.holds(Fact("openable", ("fridge_1",)))
+    assert not state.holds(Fact("openable", ("table_1",)))
+    assert state.apply(library.frame("Open").bind({"theme": "fridge_1"})).class_of("table_1") == "table"
