@@ -1,0 +1,201 @@
+"""``seal parse`` and ``seal bench parse``: commands in words → the frames they evoke."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import typer
+
+from ..errors import SealError, Where
+from . import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
+
+if TYPE_CHECKING:
+    from ..grounding import Vocabulary
+    from ..language import Parse
+
+VocabularyOption = typer.Option(None, "--vocabulary", help="YAML list of object classes (each a name or "
+                                "{class: NAME, synonyms: [...]}) to ground elements in.", show_default=False)
+MapOption = typer.Option(None, "--map", help="Ground elements in the classes of this map (its places, objects "
+                         "and priors); a path or a shipped map's name.", show_default=False)
+
+
+def vocabulary_from(vocabulary: Path | None, map_name: str | None) -> Vocabulary | None:
+    """The vocabulary named by ``--vocabulary`` and/or ``--map`` (both: their union)."""
+    from ..grounding import Vocabulary, load_vocabulary, vocabulary_of_map
+
+    found: list[Vocabulary] = []
+    if vocabulary is not None:
+        found.append(load_vocabulary(vocabulary))
+    if map_name is not None:
+        from ..maps import load_map
+        from ..resources import map_path
+
+        found.append(vocabulary_of_map(load_map(map_path(map_name))))
+    if not found:
+        return None
+    if len(found) == 1:
+        return found[0]
+    names = [c for v in found for c in v.classes]
+    synonyms: dict[str, list[str]] = {}
+    for v in found:
+        for name, extra in zip(v.classes, v.synonyms, strict=True):
+            synonyms.setdefault(name, []).extend(extra)
+    return Vocabulary.of(names, synonyms)
+
+
+def _read_lines(source: str) -> list[str]:
+    if source == "-":
+        return sys.stdin.read().splitlines()
+    from ..fileio import read_text
+
+    return read_text(source).splitlines()
+
+
+@command("parse")
+def parse(
+    text: str | None = typer.Argument(None, help="The command, e.g. \"bring Roger a coffee from the kitchen\"."),
+    file: str | None = typer.Option(None, "--file", "-f", help="Parse one command per line of this file "
+                                    "('-': standard input); with --json, one JSON object per line.",
+                                    show_default=False),
+    vocabulary: Path | None = VocabularyOption,
+    map_name: str | None = MapOption,
+    framelib: list[Path] | None = FramelibOption,
+    as_json: bool = JsonOption,
+) -> None:
+    """Parse a command into the frames it evokes, with their elements."""
+    from ..language import parse_command, parse_lines
+    from ..library import load_library
+
+    if (text is None) == (file is None):
+        raise SealError("give either a command or --file FILE (one command per line; '-' reads standard input)")
+    library = load_library(framelib_paths(framelib))
+    vocab = vocabulary_from(vocabulary, map_name)
+    if file is not None:
+        lines = _read_lines(file)
+        if as_json:
+            sys.stdout.write("".join(json.dumps(result, ensure_ascii=False) + "\n"
+                                     for result in parse_lines(lines, library, vocab)))
+            sys.stdout.flush()
+            return
+        for number, result in enumerate(parse_lines(lines, library, vocab), 1):
+            if "error" in result:
+                out.print(f"{number}: [red]error[/red] {_escape(result['error']['message'])} "
+                          f"(column {result['error']['column']})")
+            else:
+                out.print(f"{number}: {_escape(summary(result))}")
+        return
+    assert text is not None
+    try:
+        parsed = parse_command(text, library, vocab)
+    except SealError as error:
+        if as_json:
+            from ..language import _error_json
+
+            emit_json({"text": text, "error": _error_json(error)})
+            raise typer.Exit(1) from None
+        raise
+    if as_json:
+        emit_json(parsed.to_json())
+    else:
+        out.print(tree(parsed))
+
+
+def _escape(text: str) -> str:
+    from rich.markup import escape
+
+    return escape(text)
+
+
+def summary(result: dict[str, Any]) -> str:
+    """``Bring(theme=coffee, recipient=Roger) Place(...)``: a parse on one line."""
+    parts = []
+    for frame in result["frames"]:
+        inner = ", ".join(f"{role}={e.get('class') or e['head']}" for role, e in frame["elements"].items())
+        parts.append(f"{frame['frame']}({inner})")
+    return " ".join(parts)
+
+
+def tree(parsed: Parse) -> Any:
+    """The parse as a rich tree: frames, their elements, and what each element is."""
+    from rich.markup import escape
+    from rich.tree import Tree
+
+    root = Tree(f"[bold]{escape(parsed.text)}[/bold]")
+    for index, frame in enumerate(parsed.frames):
+        a, b = frame.span
+        branch = root.add(f"[bold cyan]{index}. {frame.frame}[/bold cyan]  [dim]'{escape(frame.lexical_unit)}' "
+                          f"· {escape(parsed.text[a:b])!s}[/dim]")
+        for role, phrase in frame.elements.items():
+            facts = [f"head [green]{escape(phrase.head)}[/green]"]
+            if phrase.cls:
+                facts.append(f"class [magenta]{escape(phrase.cls)}[/magenta]")
+            if phrase.kind != "thing":
+                facts.append(phrase.kind)
+            if phrase.quantity is not None:
+                facts.append(f"×{phrase.quantity}")
+            if phrase.refers_to is not None:
+                facts.append(f"→ frame {phrase.refers_to[0]} {phrase.refers_to[1]}")
+            if phrase.default:
+                facts.append("default")
+            said = escape(phrase.text) if phrase.text else "[dim](unsaid)[/dim]"
+            branch.add(f"[yellow]{role}[/yellow]: {said}  [dim]{' · '.join(facts)}[/dim]")
+    return root
+
+
+# ---------------------------------------------------------------------------------------------
+# seal bench parse
+
+
+def _shared() -> Path:
+    """``../shared`` beside the checkout (where the corpora and scorers are)."""
+    return Path(__file__).resolve().parents[2] / ".." / "shared"
+
+
+@command("parse", on=bench_app)
+def bench_parse(
+    corpus: list[Path] | None = typer.Option(None, "--corpus", help="Corpus to score (repeatable): GPSR-style "
+                                             "JSON Lines, or ALFRED goals (.tsv). Default: the shipped GPSR dev "
+                                             "set and ALFRED valid_seen goals.", show_default=False),
+    constants: Path | None = typer.Option(None, "--constants", help="ALFRED constants (classes) for .tsv goals; "
+                                          "default: the shipped alfred_constants.json.", show_default=False),
+    scorers: Path | None = typer.Option(None, "--scorers", help="Folder of the scorers (default: ../shared/eval).",
+                                        show_default=False),
+    as_json: bool = JsonOption,
+) -> None:
+    """Score `seal parse` on parsing corpora with the shared scorers, and print their figures."""
+    shared = _shared()
+    folder = scorers or shared / "eval"
+    corpora = list(corpus or [shared / "data" / "gpsr" / "dev.jsonl", shared / "data" / "alfred" /
+                              "goals_valid_seen.tsv"])
+    seal = f"{sys.executable} -m seal_cli"
+    results: dict[str, Any] = {}
+    for path in corpora:
+        if not path.is_file():
+            raise SealError(f"no such corpus: {path}", Where(str(path)))
+        if path.suffix == ".tsv":
+            consts = constants or shared / "data" / "alfred" / "alfred_constants.json"
+            argv = [str(folder / "score_alfred_goals.py"), str(path), str(consts)]
+        else:
+            argv = [str(folder / "score_parse.py"), str(path)]
+        if not Path(argv[0]).is_file():
+            raise SealError(f"scorer not found: {argv[0]} (give --scorers DIR)", Where(argv[0]))
+        err.print(f"scoring {path} ...")
+        run = subprocess.run([sys.executable, *argv, "--seal", seal, *(["--json"] if as_json else [])],
+                             capture_output=True, text=True)
+        if as_json:
+            lines = run.stdout.strip().splitlines()
+            try:
+                results[str(path)] = json.loads("\n".join(lines[:-1]))
+            except json.JSONDecodeError:
+                raise SealError(f"the scorer failed on {path}: {run.stderr[-500:]}") from None
+        else:
+            out.print(f"[bold]{_escape(str(path))}[/bold]")
+            out.print(_escape(run.stdout.rstrip()))
+            if run.returncode and run.stderr:
+                err.print(_escape(run.stderr.rstrip()[-1000:]))
+    if as_json:
+        emit_json({"corpora": results})

@@ -1,0 +1,169 @@
+"""Grounding: which object class a noun phrase denotes, in a given vocabulary of classes.
+
+A :class:`Vocabulary` is a list of classes (``AlarmClock``, ``tomato soup``), each with optional
+synonyms. A phrase is matched on its words' lemmas (so plurals match), best first:
+
+1. an exact name: the phrase's last words spell a class or a synonym ("the red *alarm clock*"),
+   or the words after "of" do ("a roll *of toilet paper*");
+2. the head word: the phrase's head is the head of a class name ("clock" → ``AlarmClock``),
+   helped by every other word they share ("a bottle of *wine*" → ``WineBottle``);
+3. any word: the head is another word of a class name ("counter" → ``CounterTop``), then a
+   modifier is ("an *apple* slice" → ``Apple``).
+
+Ties go to the class listed first, so list the usual class first. No match gives None: the
+vocabulary of a building is open and an unknown noun is not an error.
+
+Vocabulary files are YAML lists: ``- cup`` or ``- {class: Fridge, synonyms: [refrigerator]}``
+(a mapping ``classes: [...]`` is read too).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
+from functools import cached_property
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from .errors import SealError, Where
+from .lexicon import noun_lemma
+from .taxonomy import class_words
+
+if TYPE_CHECKING:
+    from .language import NP
+
+__all__ = ["Vocabulary", "load_vocabulary", "vocabulary_of_map"]
+
+
+def _lemmas(words: Iterable[str]) -> tuple[str, ...]:
+    return tuple(noun_lemma(w) for w in words)
+
+
+@dataclass(frozen=True)
+class Vocabulary:
+    """Object classes, each with the names (class name and synonyms) it may be called by."""
+
+    classes: tuple[str, ...]
+    synonyms: tuple[tuple[str, ...], ...] = ()
+    where: Where | None = field(default=None, compare=False)
+
+    def __post_init__(self) -> None:
+        if not self.synonyms:
+            object.__setattr__(self, "synonyms", tuple(() for _ in self.classes))
+        if len(self.synonyms) != len(self.classes):
+            raise SealError("a vocabulary needs one list of synonyms per class", self.where)
+
+    @classmethod
+    def of(cls, names: Iterable[str], synonyms: Mapping[str, Sequence[str]] | None = None) -> Vocabulary:
+        """A vocabulary from class names (and optionally synonyms by class), duplicates dropped."""
+        unique = tuple(dict.fromkeys(n for n in names if class_words(n)))
+        extra = synonyms or {}
+        return cls(unique, tuple(tuple(extra.get(n, ())) for n in unique))
+
+    @cached_property
+    def _names(self) -> tuple[tuple[int, tuple[str, ...]], ...]:
+        """(class index, lemmatised words) for every name of every class."""
+        names = []
+        for index, (name, synonyms) in enumerate(zip(self.classes, self.synonyms, strict=True)):
+            for spelled in (name, *synonyms):
+                words = _lemmas(class_words(spelled))
+                if words:
+                    names.append((index, words))
+        return tuple(names)
+
+    @cached_property
+    def _exact(self) -> dict[tuple[str, ...], int]:
+        exact: dict[tuple[str, ...], int] = {}
+        for index, words in self._names:
+            exact.setdefault(words, index)
+            exact.setdefault(("".join(words),), index)     # "glassbottle", "tvstand"
+        return exact
+
+    @cached_property
+    def _by_word(self) -> dict[str, list[tuple[int, tuple[str, ...]]]]:
+        index: dict[str, list[tuple[int, tuple[str, ...]]]] = {}
+        for cls_index, words in self._names:
+            for word in set(words):
+                index.setdefault(word, []).append((cls_index, words))
+        return index
+
+    def __len__(self) -> int:
+        return len(self.classes)
+
+    def ground_words(self, words: Sequence[str], head: int = -1, of: Sequence[str] = ()) -> str | None:
+        """The class that words denote (``head`` indexes the head word), or None."""
+        words = _lemmas(w for w in words if w)
+        of = _lemmas(w for w in of if w)
+        if not words and not of:
+            return None
+        end = len(words) + head + 1 if head < 0 else head + 1
+        for phrase in (words[:end], of):
+            for start in range(len(phrase)):             # longest exact name ending at the head
+                found = self._exact.get(phrase[start:])
+                if found is not None:
+                    return self.classes[found]
+        head_word = words[end - 1] if words else of[-1]
+        best: tuple[float, int] | None = None
+        context = set(words) | set(of)
+        for key, weight in ((head_word, 4.0), *((w, 1.0) for w in reversed(of)),
+                            *((w, 0.5) for w in reversed(words[:end - 1]))):
+            for cls_index, name in self._by_word.get(key, ()):
+                score = weight + (2.0 if name[-1] == key else 0.0) + sum(0.5 for w in name if w in context) \
+                    - 0.25 * sum(1 for w in name if w not in context)
+                if best is None or (score, -cls_index) > (best[0], -best[1]):
+                    best = (score, cls_index)
+            if best is not None and weight >= 4.0:
+                break
+        return None if best is None else self.classes[best[1]]
+
+    def ground_np(self, np: NP) -> str | None:
+        """The class a parsed noun phrase denotes (conjunctions: the first one)."""
+        if np.head is None or np.kind == "message":
+            return None
+        words = [w.text for w in np.mods] + [np.head.text]
+        of = []
+        if np.of is not None and np.of.head is not None:
+            of = [w.text for w in np.of.mods] + [np.of.head.text]
+        return self.ground_words(words, -1, of)
+
+
+def _entries(data: Any, where: Where) -> tuple[list[str], dict[str, list[str]]]:
+    if isinstance(data, dict) and "classes" in data:
+        data = data["classes"]
+    if not isinstance(data, list):
+        raise SealError("a vocabulary is a YAML list of classes (each a name or {class: NAME, synonyms: [...]})",
+                        where)
+    names: list[str] = []
+    synonyms: dict[str, list[str]] = {}
+    for number, entry in enumerate(data, 1):
+        if isinstance(entry, str | int | float) and str(entry).strip():
+            names.append(str(entry))
+        elif isinstance(entry, dict) and isinstance(entry.get("class"), str) and entry["class"].strip():
+            extra = entry.get("synonyms") or []
+            if not isinstance(extra, list) or not all(isinstance(s, str) for s in extra):
+                raise SealError(f"entry {number}: synonyms must be a list of names", where)
+            names.append(entry["class"])
+            synonyms.setdefault(entry["class"], []).extend(extra)
+        else:
+            raise SealError(f"entry {number} ({entry!r}) is neither a class name nor {{class: NAME, synonyms: [...]}}",
+                            where)
+    if not names:
+        raise SealError("the vocabulary lists no class", where)
+    return names, synonyms
+
+
+def load_vocabulary(path: str | Path) -> Vocabulary:
+    """Read a vocabulary file (YAML list of classes, each a name or ``{class, synonyms}``)."""
+    from .fileio import read_yaml
+
+    where = Where(str(path))
+    names, synonyms = _entries(read_yaml(path), where)
+    return Vocabulary.of(names, synonyms)
+
+
+def vocabulary_of_map(map_: Any) -> Vocabulary:
+    """The classes a map knows: its places', its objects' and its priors' classes."""
+    names = [p.cls for p in getattr(map_, "places", ())]
+    names += [o.cls for o in getattr(map_, "objects", ())]
+    names += list(getattr(map_, "priors", {}) or {})
+    return Vocabulary.of(names)

@@ -1,0 +1,768 @@
+"""The command language: text → the frames it evokes, with their elements filled.
+
+:func:`parse_command` tags the words (:mod:`seal_cli.lexicon`), parses the tags with the LALR
+grammar ``grammars/command.lark``, and turns each clause into an :class:`Evoked` frame:
+
+1. **Which frame.** A verb's lexical unit may evoke several frames ("take": Pick, Bring,
+   Guide). Each is tried: the direct object fills the frame's first element, an indirect object
+   its recipient, and each prepositional phrase the role its preposition names (FrameNet's
+   names: *to* → goal or recipient, *from* → source, *with* → instrument, *in/on/at* → ground,
+   goal or instrument). A realised role the frame lacks excludes it; the others are scored by
+   how well each phrase fits its element's type (a person where a person is wanted), and the
+   frame with the fewest unfilled elements wins a tie.
+2. **Which phrase a preposition describes.** A prepositional phrase the frame has no role for
+   describes the noun before it ("the person *at the sofa*").
+3. **Pronouns** ("it", "them", "one") refer to an element of an earlier frame that fits
+   (``refers_to``); an omitted object of a frame that needs its object in hand refers to the
+   object of the frame before ("pick up the apple and put [it] in the fridge").
+4. **Result words** evoke frames of their own before the clause's frame: "put a *heated* egg
+   in the fridge" is Heat(egg), Place(egg, fridge); and "put the cup *with the fork* on the
+   table" puts the fork in the cup first.
+5. **Defaults**: an element the command omits takes the frame's default, marked ``default``.
+6. **Grounding**: with a :class:`~seal_cli.grounding.Vocabulary`, each element gets the class
+   it denotes (``cls``), else None.
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterable, Iterator, Mapping, Sequence
+from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING, Any
+
+from .errors import SealError
+from .frames import Frame
+from .lexicon import PERSON_PRONOUNS, CommandError, Lexicon, Word, is_plural, noun_lemma, tag
+from .library import Library
+
+if TYPE_CHECKING:
+    from lark import Lark, Tree
+
+    from .grounding import Vocabulary
+
+__all__ = ["CommandError", "Evoked", "Parse", "Phrase", "parse_command", "parse_lines"]
+
+
+# ---------------------------------------------------------------------------------------------
+# Values
+
+
+@dataclass(frozen=True)
+class Phrase:
+    """What fills a frame element: the words, their head (lemma), the class they denote.
+
+    ``kind`` is "person", "thing", "place" (here, there) or "message"; ``refers_to`` names the
+    antecedent of a pronoun as (frame index, element); ``quantity`` a number said ("two
+    apples"); ``default`` marks an element filled from the frame's default, not said.
+    """
+
+    text: str | None
+    head: str
+    cls: str | None = None
+    kind: str = "thing"
+    refers_to: tuple[int, str] | None = None
+    quantity: int | None = None
+    plural: bool = False
+    modifiers: tuple[str, ...] = ()
+    default: bool = False
+    span: tuple[int, int] | None = field(default=None, compare=False)
+
+    def to_json(self) -> dict[str, Any]:
+        data: dict[str, Any] = {"text": self.text, "head": self.head, "class": self.cls}
+        if self.kind != "thing":
+            data["kind"] = self.kind
+        if self.refers_to is not None:
+            data["refers_to"] = list(self.refers_to)
+        if self.quantity is not None:
+            data["quantity"] = self.quantity
+        if self.plural:
+            data["number"] = "plural"
+        if self.modifiers:
+            data["modifiers"] = list(self.modifiers)
+        if self.default:
+            data["default"] = True
+        return data
+
+
+@dataclass(frozen=True)
+class Evoked:
+    """A frame evoked by a verb phrase (or by a result word), with its elements."""
+
+    frame: str
+    lexical_unit: str
+    span: tuple[int, int]
+    elements: Mapping[str, Phrase]
+
+    def to_json(self) -> dict[str, Any]:
+        return {"frame": self.frame, "lexical_unit": self.lexical_unit, "span": list(self.span),
+                "elements": {role: p.to_json() for role, p in self.elements.items()}}
+
+
+@dataclass(frozen=True)
+class Parse:
+    """A parsed command: the frames it evokes, in the order they are to be done."""
+
+    text: str
+    frames: tuple[Evoked, ...]
+
+    def to_json(self) -> dict[str, Any]:
+        return {"text": self.text, "frames": [f.to_json() for f in self.frames]}
+
+    def resolve(self, phrase: Phrase) -> Phrase:
+        """The phrase a pronoun stands for (the phrase itself when it is not one)."""
+        seen = 0
+        while phrase.refers_to is not None and seen < len(self.frames):
+            index, role = phrase.refers_to
+            phrase = self.frames[index].elements[role]
+            seen += 1
+        return phrase
+
+
+# ---------------------------------------------------------------------------------------------
+# The parser (grammar built once) and the lexicon of each library (cached)
+
+_PARSER: Lark | None = None
+_LEXICONS: dict[int, tuple[Library, Lexicon]] = {}
+
+
+def command_parser(strict: bool = False) -> Lark:
+    """The LALR parser of ``grammars/command.lark`` over tagged words."""
+    global _PARSER
+    if _PARSER is not None and not strict:
+        return _PARSER
+    from lark import Lark, Token
+    from lark.lexer import Lexer
+
+    from .resources import grammar_path
+
+    class TagLexer(Lexer):
+        def __init__(self, lexer_conf: Any) -> None:
+            pass
+
+        def lex(self, data: Any) -> Iterator[Token]:   # type: ignore[override]
+            for w in data:
+                yield Token(w.tag, w.text, w.start, 1, w.start + 1, 1, w.end + 1, w.end)
+
+    grammar = grammar_path("command.lark").read_text(encoding="utf-8")
+    parser = Lark(grammar, parser="lalr", lexer=TagLexer, strict=strict, maybe_placeholders=False)
+    if not strict:
+        _PARSER = parser
+    return parser
+
+
+def lexicon_of(library: Library) -> Lexicon:
+    found = _LEXICONS.get(id(library))
+    if found is not None and found[0] is library:
+        return found[1]
+    lexicon = Lexicon.of(library)
+    _LEXICONS[id(library)] = (library, lexicon)
+    return lexicon
+
+
+# ---------------------------------------------------------------------------------------------
+# Entry points
+
+
+def parse_command(text: str, library: Library, vocabulary: Vocabulary | None = None) -> Parse:
+    """The frames a command evokes. Raises :class:`CommandError` (a SealError with a column and
+    what was expected) when it cannot be parsed."""
+    from lark.exceptions import UnexpectedInput
+
+    lexicon = lexicon_of(library)
+    if not text.strip():
+        raise CommandError("empty command: expected a verb, such as " + _some_verbs(lexicon), 1, text,
+                           ["a verb"])
+    words = tag(lexicon, text)
+    if not words:
+        raise CommandError("no words in the command: expected a verb, such as " + _some_verbs(lexicon),
+                           _first_column(text), text, ["a verb"])
+    try:
+        tree = command_parser().parse(words)
+    except UnexpectedInput as error:
+        raise _explain(error, text, words, lexicon) from None
+    return Builder(text, library, vocabulary, {w.start: w for w in words}).command(tree)
+
+
+def parse_lines(lines: Iterable[str], library: Library,
+                vocabulary: Vocabulary | None = None) -> Iterator[dict[str, Any]]:
+    """One JSON object per line: the parse, or ``{"text", "error"}`` for a line that cannot be parsed."""
+    for line in lines:
+        text = line.rstrip("\r\n")
+        try:
+            yield parse_command(text, library, vocabulary).to_json()
+        except SealError as error:
+            yield {"text": text, "error": _error_json(error)}
+
+
+def _error_json(error: SealError) -> dict[str, object]:
+    if isinstance(error, CommandError):
+        return error.to_json()
+    return {"message": error.message, "column": error.column, "expected": []}
+
+
+# ---------------------------------------------------------------------------------------------
+# Errors a person can act on
+
+_DESCRIBE = {"VERB": "a verb", "DET": "a noun phrase", "WORD": "a noun phrase", "NAME": "a noun phrase",
+             "PRON": "a noun phrase", "NUM": "a noun phrase", "POSS": "a noun phrase", "RESULT": "a noun phrase",
+             "PREP": "a preposition", "SEP": "'and' or ','", "END": "the end of the command",
+             "$END": "the end of the command", "POLITE": "a verb", "OF": "'of'", "PARTICLE": "a particle",
+             "VBG_T": "a participle", "VBG_P": "a participle", "VBG_I": "a participle", "WH": "a question",
+             "BE": "'is' or 'are'", "THERE": "'there'", "HERE": "'here'", "AND_NP": "'and'"}
+
+
+def _some_verbs(lexicon: Lexicon, near: str | None = None) -> str:
+    verbs = [v for v in lexicon.verbs]
+    close = difflib.get_close_matches(near, verbs, n=3, cutoff=0.6) if near else []
+    shown = close + [v for v in ("bring", "find", "go", "pick up", "put", "follow", "tell") if v in verbs
+                     and v not in close]
+    shown += [v for v in verbs if v not in shown][: max(0, 8 - len(shown))]
+    return ", ".join(shown[:8]) + (f" ({len(verbs)} in all; `seal frames` lists them)" if len(verbs) > 8 else "")
+
+
+def _first_column(text: str) -> int:
+    stripped = len(text) - len(text.lstrip())
+    return stripped + 1
+
+
+def _explain(error: Any, text: str, words: Sequence[Word], lexicon: Lexicon) -> CommandError:
+    from lark.exceptions import UnexpectedToken
+
+    expected = sorted({_DESCRIBE.get(t, t.lower()) for t in getattr(error, "expected", ()) or ()})
+    if not isinstance(error, UnexpectedToken):
+        return CommandError("cannot parse the command", 1, text, expected)
+    token = error.token
+    at_end = token.type == "$END"
+    column = len(text.rstrip()) + 1 if at_end else token.start_pos + 1
+    wants_verb = "VERB" in (error.expected or ())
+    if wants_verb and not at_end:
+        word = str(token).split()[0].lower()
+        return CommandError(f"unknown verb {word!r}; known verbs include {_some_verbs(lexicon, word)}",
+                            column, text, ["a verb"])
+    before = _word_before(words, token.start_pos if not at_end else len(text))
+    after = f" after {before!r}" if before else ""
+    if wants_verb:
+        return CommandError(f"expected a verb{after}, such as {_some_verbs(lexicon)}", column, text, ["a verb"])
+    if at_end:
+        return CommandError(f"the command ends too early{after}: expected {_either(expected)}", column, text,
+                            expected)
+    return CommandError(f"unexpected {str(token)!r}{after}: expected {_either(expected)}", column, text, expected)
+
+
+def _word_before(words: Sequence[Word], position: int) -> str | None:
+    before = [w for w in words if w.end <= position]
+    return before[-1].text if before else None
+
+
+def _either(options: Sequence[str]) -> str:
+    if not options:
+        return "something else"
+    return options[0] if len(options) == 1 else ", ".join(options[:-1]) + " or " + options[-1]
+
+
+# ---------------------------------------------------------------------------------------------
+# Noun phrases as read from the tree
+
+
+@dataclass
+class NP:
+    """A noun phrase as the grammar found it, before it fills an element."""
+
+    start: int
+    end: int
+    head: Word | None
+    kind: str = "thing"               # person | thing | place | message | pronoun
+    pronoun: str | None = None
+    quantity: int | None = None
+    plural: bool = False
+    mods: list[Word] = field(default_factory=list)
+    results: list[Word] = field(default_factory=list)
+    of: NP | None = None
+    contents: list[NP] = field(default_factory=list)      # "the cup with a fork (in it)"
+    inner: list[NP] = field(default_factory=list)         # noun phrases inside (for result words)
+    conjuncts: list[NP] = field(default_factory=list)
+
+    @property
+    def head_text(self) -> str:
+        if self.head is None:
+            return ""
+        if self.kind == "person" and self.head.tag == "NAME":
+            return self.head.text
+        return noun_lemma(self.head.text) if self.head.tag in ("WORD", "RESULT") else self.head.lower
+
+    def all_nps(self) -> Iterator[NP]:
+        yield self
+        for np in (*self.inner, *self.contents, *self.conjuncts):
+            yield from np.all_nps()
+
+
+@dataclass
+class PP:
+    prep: str
+    np: NP
+    start: int
+
+
+@dataclass
+class Clause:
+    verb: Word
+    objects: list[NP]
+    items: list[Any]                 # NP | PP | Word (PARTICLE, BE, WH, ...) after the objects
+    message: NP | None
+    start: int
+    end: int
+
+
+_TO = ("to", "into", "onto")
+_FROM = ("from", "out of", "off")
+_LOCATIVE = ("in", "on", "at", "near", "under", "by", "inside", "behind", "above", "over", "in front of",
+             "between", "around", "across", "through", "along", "beyond", "against", "outside", "past")
+_ATTACHABLE = _LOCATIVE + ("with", "without", "about", "for", "via", "of")
+
+
+class Builder:
+    """Turns the tree of one command into frames (see the module docstring)."""
+
+    def __init__(self, text: str, library: Library, vocabulary: Vocabulary | None,
+                 words: Mapping[int, Word]) -> None:
+        self.text = text
+        self.library = library
+        self.taxonomy = library.taxonomy
+        self.vocabulary = vocabulary
+        self.words = words
+        self.frames: list[Evoked] = []
+        self.kinds: list[dict[str, str]] = []          # kind of each frame's elements, for pronouns
+
+    # -- the tree ------------------------------------------------------------------------------
+    def word(self, token: Any) -> Word:
+        return self.words[token.start_pos]
+
+    def command(self, tree: Tree) -> Parse:
+        for clause in tree.children:
+            if getattr(clause, "data", None) == "clause":
+                self.clause(self.read_clause(clause))
+        return Parse(self.text, tuple(self.frames))
+
+    def read_clause(self, tree: Tree) -> Clause:
+        phrase = tree.children[-1]
+        verb = self.word(phrase.children[0])
+        items: list[Any] = []
+        for child in phrase.children[1:]:
+            items.append(self.item(child))
+        items = self.coordinate(items)
+        objects: list[NP] = []
+        while items and (isinstance(items[0], NP) or isinstance(items[0], Word) and items[0].tag == "PARTICLE"
+                         and objects == [] and len(items) > 1 and isinstance(items[1], NP)):
+            first = items.pop(0)
+            if isinstance(first, NP):
+                objects.append(first)
+        message = self.message(items)
+        end = max([verb.end] + [self.end_of(x) for x in (*objects, *items)] + ([message.end] if message else []))
+        return Clause(verb, objects, items, message, verb.start, end)
+
+    @staticmethod
+    def end_of(item: Any) -> int:
+        if isinstance(item, NP):
+            return item.end
+        if isinstance(item, PP):
+            return item.np.end
+        return int(item.end)
+
+    def item(self, node: Any) -> Any:
+        from lark import Tree
+
+        if not isinstance(node, Tree):
+            return self.word(node)
+        if node.data == "pp":
+            return self.pp(node)
+        if node.data == "predicate":
+            return self.predicate(node)
+        return self.np(node)
+
+    def pp(self, node: Tree) -> PP:
+        prep = self.word(node.children[0])
+        return PP(str(prep.info), self.np(node.children[1]), prep.start)
+
+    def predicate(self, node: Tree) -> Word:
+        first = self.word(node.children[0])
+        end = first.end
+        for child in node.children[1:]:
+            end = max(end, self.end_of(self.item(child)))
+        return Word(self.text[first.start:end], first.start, end, "PREDICATE", first.info)
+
+    def np(self, node: Any) -> NP:
+        kind = node.data
+        if kind == "pron_np":
+            w = self.word(node.children[0])
+            low = w.lower
+            pron_kind = "person" if low in PERSON_PRONOUNS else "thing" if low in (
+                "it", "this", "that", "something", "everything", "anything", "nothing", "itself") else "pronoun"
+            return NP(w.start, w.end, w, pron_kind, pronoun=low, plural=low in ("them", "they", "ones", "these",
+                                                                                "those"))
+        if kind == "name_np":
+            w = self.word(node.children[0])
+            return NP(w.start, w.end, w, "person")
+        # det_np / bare_np
+        np = NP(-1, -1, None)
+        for child in node.children:
+            if getattr(child, "data", None) == "nominal":
+                words = [self.word(t) for t in child.children]
+                np.head = words[-1]
+                np.mods = [w for w in words[:-1] if w.tag == "WORD"]
+                np.results = [w for w in words[:-1] if w.tag == "RESULT"]
+                np.start = words[0].start if np.start < 0 else np.start
+                np.end = words[-1].end
+            elif getattr(child, "data", None) == "postmod":
+                self.postmod(np, child)
+            else:
+                w = self.word(child)
+                np.start = w.start if np.start < 0 else np.start
+                if w.tag == "NUM":
+                    np.quantity = int(w.info) if isinstance(w.info, int) else None
+        assert np.head is not None
+        np.plural = is_plural(np.head.text) or (np.quantity or 0) > 1
+        np.kind = "person" if self.taxonomy.is_a(np.head_text, "person") is True and \
+            not self.taxonomy.is_open("person") else "thing"
+        return np
+
+    def postmod(self, np: NP, node: Tree) -> None:
+        first = self.word(node.children[0])
+        if first.tag == "OF":
+            inner = self.np(node.children[1])
+            np.of = inner
+            np.inner.append(inner)
+            np.end = inner.end
+            return
+        end = first.end
+        for child in node.children[1:]:
+            item = self.item(child)
+            if isinstance(item, NP):
+                np.inner.append(item)
+                if first.info in ("contain", "hold", "have", "carry"):
+                    np.contents.append(item)
+            elif isinstance(item, PP):
+                np.inner.append(item.np)
+            end = max(end, self.end_of(item))
+        np.end = end
+
+    def coordinate(self, items: list[Any]) -> list[Any]:
+        """Join "NP and NP" into one phrase with conjuncts."""
+        out: list[Any] = []
+        i = 0
+        while i < len(items):
+            item = items[i]
+            if (isinstance(item, Word) and item.tag == "AND_NP" and out and isinstance(out[-1], NP | PP)
+                    and i + 1 < len(items) and isinstance(items[i + 1], NP)):
+                host = out[-1].np if isinstance(out[-1], PP) else out[-1]
+                other = items[i + 1]
+                if not host.conjuncts:
+                    host.conjuncts.append(replace(host, conjuncts=[]))
+                host.conjuncts.append(other)
+                host.end = other.end
+                host.plural = True
+                i += 2
+                continue
+            out.append(item)
+            i += 1
+        return out
+
+    def message(self, items: list[Any]) -> NP | None:
+        """A question said as the message ("tell me *what day is today*"): from the wh-word on,
+        up to a final "to <person>" phrase. "how many" is no message (it asks to count)."""
+        for k, item in enumerate(items):
+            if isinstance(item, Word) and item.tag == "WH":
+                nxt = items[k + 1] if k + 1 < len(items) else None
+                if item.lower == "how" and isinstance(nxt, NP) and nxt.quantity is not None:
+                    items.pop(k)
+                    return None
+                stop = next((j for j in range(k + 1, len(items)) if isinstance(items[j], PP)
+                             and items[j].prep in ("to", "for") and items[j].np.kind in ("person", "pronoun")),
+                            len(items))
+                end = max(self.end_of(x) for x in items[k:stop]) if stop > k else item.end
+                head = Word(self.text[item.start:end], item.start, end, "WORD")
+                del items[k:stop]
+                return NP(item.start, end, head, "message")
+        return None
+
+    # -- one clause → frames -----------------------------------------------------------------
+    def clause(self, clause: Clause) -> None:
+        unit = str(clause.verb.info)
+        frames = self.library.evoked_by(unit)
+        best: tuple[tuple[float, ...], Frame, dict[str, Any], list[tuple[NP, PP]]] | None = None
+        for order, frame in enumerate(frames):
+            assigned = self.assign(frame, clause, strict=True)
+            if assigned is None:
+                continue
+            roles, attached, score = assigned
+            key = (score, -self.unfilled(frame, roles), -order)
+            if best is None or key > best[0]:
+                best = (key, frame, roles, attached)
+        if best is None:                     # no frame takes every phrase: the best that takes the most
+            for order, frame in enumerate(frames):
+                assigned = self.assign(frame, clause, strict=False)
+                assert assigned is not None
+                roles, attached, score = assigned
+                key = (score - 5 * len(clause.items), -self.unfilled(frame, roles), -order)
+                if best is None or key > best[0]:
+                    best = (key, frame, roles, attached)
+        assert best is not None
+        _, frame, roles, attached = best
+        self.emit(frame, unit, clause, roles, attached)
+
+    def unfilled(self, frame: Frame, roles: Mapping[str, Any]) -> int:
+        return sum(1 for e in frame.elements if e.role not in roles)
+
+    def assign(self, frame: Frame, clause: Clause,
+               strict: bool) -> tuple[dict[str, Any], list[tuple[NP, PP]], float] | None:
+        """Fill the frame's elements from the clause; None when a realised role does not fit."""
+        roles: dict[str, Any] = {}
+        attached: list[tuple[NP, PP]] = []
+        first = frame.elements[0].role if frame.elements else None
+        objects = list(clause.objects)
+        if clause.message is not None and first is not None:
+            roles[first] = clause.message
+            if objects and "recipient" in frame.roles:
+                roles["recipient"] = objects.pop(0)
+        elif len(objects) >= 2:
+            if "recipient" in frame.roles:
+                roles["recipient"] = objects.pop(0)
+            elif strict:
+                return None
+        if objects and first is not None and first not in roles:
+            roles[first] = objects.pop(0)
+        if objects and strict:
+            return None
+        previous: NP | None = clause.objects[-1] if clause.objects else None
+        for item in clause.items:
+            if isinstance(item, NP):
+                if strict:
+                    return None
+                previous = item
+                continue
+            if not isinstance(item, PP):
+                continue
+            role = self.role_for(frame, item, previous, roles)
+            if role is not None:
+                roles[role] = item.np
+            elif previous is not None and (item.prep in _ATTACHABLE or not strict):
+                attached.append((previous, item))
+            elif strict:
+                return None
+            previous = item.np
+        score = sum(self.fit(frame, role, np) for role, np in roles.items())
+        return roles, attached, score
+
+    def role_for(self, frame: Frame, pp: PP, previous: NP | None, roles: Mapping[str, Any]) -> str | None:
+        """The element a prepositional phrase fills in this frame, or None (it describes a noun)."""
+        have = frame.roles
+        np = pp.np
+        person = self.kind(np, frame, "recipient") == "person"
+        if pp.prep in _TO or pp.prep == "for":
+            options = ["recipient", "goal"] if person else ["goal"] if pp.prep != "for" else []
+        elif pp.prep in _FROM:
+            options = ["source"]
+        elif pp.prep == "with":
+            options = ["instrument"]
+        elif pp.prep in _LOCATIVE:
+            if previous is not None and previous.kind == "person" and "ground" not in have:
+                return None
+            if previous is not None and previous.contents and np.pronoun in ("it", "them"):
+                return None                              # "a pan with a spoon in it"
+            options = ["ground"]
+            theme_type = frame.elements[0].type if frame.elements else None
+            if theme_type is None or not self.is_person_type(theme_type) or frame.elements[0].role == "goal":
+                options.append("goal")
+            options += ["instrument", "source"]
+        else:
+            return None
+        for role in options:
+            if role in have and role not in roles:
+                if role == "instrument" and pp.prep != "with" and \
+                        self.taxonomy.is_a(self.class_or_head(np), frame.element(role).type) is not True:
+                    continue
+                return role
+        return None
+
+    def is_location(self, type_: str) -> bool:
+        return not self.taxonomy.is_open(type_) and self.taxonomy.is_a("room", type_) is True
+
+    def is_person_type(self, type_: str) -> bool:
+        return self.taxonomy.is_a("person", type_) is True and not self.taxonomy.is_open(type_)
+
+    def class_or_head(self, np: NP) -> str:
+        if self.vocabulary is not None:
+            found = self.vocabulary.ground_np(np)
+            if found:
+                return found
+        return np.head_text
+
+    def kind(self, np: NP, frame: Frame, role: str) -> str:
+        if np.kind != "pronoun":
+            return np.kind
+        antecedent = self.antecedent(np, frame, role)
+        return antecedent[2] if antecedent else "pronoun"
+
+    def fit(self, frame: Frame, role: str, np: NP) -> float:
+        """How well a phrase fits an element: +2 a person where a person is wanted, +1 a class of
+        the element's type, 0 unknown, -2 what cannot be (a thing where a person is wanted)."""
+        type_ = frame.element(role).type
+        kind = self.kind(np, frame, role)
+        person_type = self.is_person_type(type_)
+        if kind == "person":
+            return 2.0 if person_type else 0.0 if self.taxonomy.is_open(type_) else -2.0
+        if kind == "pronoun":
+            return 0.0
+        if person_type:
+            return -2.0
+        if kind in ("message", "place"):
+            return 0.5
+        found = self.taxonomy.is_a(self.class_or_head(np), type_)
+        return 1.0 if found else -2.0 if found is False else 0.0
+
+    # -- pronouns ------------------------------------------------------------------------------
+    def antecedent(self, np: NP, frame: Frame | None, role: str | None) -> tuple[int, str, str] | None:
+        """(frame index, element, kind) of what a pronoun refers to: the latest element of an
+        earlier frame that can be it (a person for "him", a thing for "it"), fitting the role."""
+        wanted_person: bool | None = None
+        if frame is not None and role is not None:
+            type_ = frame.element(role).type
+            wanted_person = True if self.is_person_type(type_) else None if self.taxonomy.is_open(type_) else \
+                bool(self.taxonomy.is_a("person", type_))
+        best: tuple[float, int, str, str] | None = None
+        for index in range(len(self.frames) - 1, -1, -1):
+            evoked = self.frames[index]
+            for rank, (name, phrase) in enumerate(evoked.elements.items()):
+                if phrase.default or phrase.refers_to is not None:
+                    continue
+                kind = phrase.kind
+                if kind in ("message", "place"):
+                    continue
+                if np.pronoun in ("it", "one", "this", "that") and kind == "person":
+                    continue
+                if np.pronoun in ("him", "her") and kind != "person":
+                    continue
+                if np.pronoun in ("them", "they", "ones") and kind != "person" and not phrase.plural \
+                        and wanted_person is not False:
+                    pass
+                score = -(len(self.frames) - index) * 2 - rank * 0.5
+                if self.is_location(self.library.frame(evoked.frame).element(name).type):
+                    score -= 1
+                if wanted_person is True:
+                    score += 3 if kind == "person" else -3
+                elif wanted_person is False and kind == "person":
+                    score -= 3
+                if np.pronoun in ("them", "they") and (kind == "person" or phrase.plural):
+                    score += 1
+                if best is None or score > best[0]:
+                    best = (score, index, name, kind)
+        return None if best is None else best[1:]
+
+    # -- frames out ----------------------------------------------------------------------------
+    def emit(self, frame: Frame, unit: str, clause: Clause, roles: dict[str, Any],
+             attached: list[tuple[NP, PP]]) -> None:
+        for host, pp in attached:
+            host.end = max(host.end, pp.np.end)
+            if pp.prep == "with" and pp.np.kind != "person":
+                host.contents.append(pp.np)
+        # frames evoked by result words and contents, in the order of the words
+        for role in frame.roles:
+            np = roles.get(role)
+            if isinstance(np, NP):
+                self.prepare(np, frame, role, roles)
+        elements: dict[str, Phrase] = {}
+        for element in frame.elements:
+            np = roles.get(element.role)
+            if np is not None:
+                elements[element.role] = self.phrase(np, frame, element.role)
+        first = frame.elements[0] if frame.elements else None
+        if first is not None and first.role not in elements and self.frames and \
+                any(p.predicate == "holding" and p.args == (first.role,) for p in frame.preconditions):
+            implicit = self.implicit(frame, first.role)
+            if implicit is not None:
+                elements = {first.role: implicit, **elements}
+        for element in frame.elements:
+            if element.role not in elements and element.default is not None:
+                elements[element.role] = Phrase(None, element.default, self.ground_name(element.default),
+                                                default=True)
+        ordered = {e.role: elements[e.role] for e in frame.elements if e.role in elements}
+        self.frames.append(Evoked(frame.name, unit, (clause.start, clause.end), ordered))
+
+    def prepare(self, np: NP, frame: Frame, role: str, roles: Mapping[str, Any]) -> None:
+        """Frames that must come first: result words ("heated") and contents ("with a fork")."""
+        for inner in np.inner:
+            self.results_of(inner)
+        self.results_of(np)
+        if np.contents and role == (frame.elements[0].role if frame.elements else None):
+            relation = next((p for p in frame.postconditions if not p.negated and len(p.args) == 2
+                             and p.args[0] == role and p.args[1] in roles), None)
+            if relation is not None:
+                for content in np.contents:
+                    self.results_of(content)
+                    self.put(content, np, relation.predicate)
+
+    def results_of(self, np: NP) -> None:
+        for word in np.results:
+            info: tuple[str, str] = word.info  # type: ignore[assignment]
+            frame_name, unit = info
+            frame = self.library.frame(frame_name)
+            first = frame.elements[0].role
+            self.frames.append(Evoked(frame.name, unit, (word.start, word.end),
+                                      {first: self.phrase(np, frame, first)} | self.defaults(frame, {first})))
+        np.results = []
+
+    def put(self, content: NP, container: NP, predicate: str) -> None:
+        """The frame that makes ``predicate(content, container)`` true (Place for ``in``)."""
+        for frame in sorted(self.library.achievers(predicate), key=lambda f: len(f.elements)):
+            fact = next(p for p in frame.postconditions if p.predicate == predicate and not p.negated)
+            if len(fact.args) == 2 and fact.args[0] == frame.elements[0].role:
+                elements = {fact.args[0]: self.phrase(content, frame, fact.args[0]),
+                            fact.args[1]: self.phrase(container, frame, fact.args[1])}
+                self.frames.append(Evoked(frame.name, frame.lexical_units[0].text if frame.lexical_units else "",
+                                          (content.start, content.end), elements | self.defaults(frame, elements)))
+                return
+
+    def defaults(self, frame: Frame, have: Iterable[str]) -> dict[str, Phrase]:
+        have = set(have)
+        return {e.role: Phrase(None, e.default, self.ground_name(e.default), default=True)
+                for e in frame.elements if e.default is not None and e.role not in have}
+
+    def implicit(self, frame: Frame, role: str) -> Phrase | None:
+        """An object left unsaid refers to the object of the frame before ("and put [it] away")."""
+        for index in range(len(self.frames) - 1, -1, -1):
+            evoked = self.frames[index]
+            if not evoked.elements:
+                continue
+            name, phrase = next(iter(evoked.elements.items()))
+            if phrase.kind != "thing" or phrase.default:
+                continue
+            target = phrase.refers_to or (index, name)
+            root = self.frames[target[0]].elements[target[1]]
+            return Phrase("", root.head, root.cls, root.kind, target, root.quantity, root.plural)
+        return None
+
+    def phrase(self, np: NP, frame: Frame, role: str) -> Phrase:
+        if np.pronoun is not None and np.kind in ("pronoun", "thing") and np.pronoun not in (
+                "something", "everything", "anything", "nothing"):
+            found = self.antecedent(np, frame, role)
+            if found is not None:
+                index, name, _ = found
+                target = self.frames[index].elements[name]
+                ref = target.refers_to or (index, name)
+                root = self.frames[ref[0]].elements[ref[1]]
+                return Phrase(self.text[np.start:np.end], root.head, root.cls, root.kind, ref, root.quantity,
+                              root.plural, span=(np.start, np.end))
+            return Phrase(self.text[np.start:np.end], np.head_text, None,
+                          "thing" if np.kind == "pronoun" and np.pronoun == "it" else
+                          "person" if np.kind == "pronoun" else np.kind, span=(np.start, np.end))
+        text = self.text[np.start:np.end]
+        cls = None
+        if self.vocabulary is not None and np.kind != "message":
+            cls = self.vocabulary.ground_np(np)
+        modifiers = tuple(noun_lemma(w.text) if w.tag == "WORD" else w.lower for w in np.mods)
+        return Phrase(text, np.head_text if np.kind != "message" else text, cls, np.kind, None, np.quantity,
+                      np.plural and np.kind != "message", modifiers, span=(np.start, np.end))
+
+    def ground_name(self, name: str) -> str | None:
+        if self.vocabulary is None:
+            return name
+        return self.vocabulary.ground_words((name,)) or name

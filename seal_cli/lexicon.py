@@ -1,0 +1,616 @@
+"""Words of a command and the part each plays: the lexicon behind ``grammars/command.lark``.
+
+The command grammar is written over *tags*, not words. This module splits a command into
+words and tags each one, so that the grammar never lists a verb or a noun:
+
+- **verbs** are the lexical units of the frame library (``Library.by_unit``), multiword ones
+  included ("pick up", "tell me how many"); a particle verb may be split around its object
+  ("pick the cup up", "turn the lamp on"). A frame with new lexical units makes new verbs;
+- **function words** (determiners, prepositions, pronouns, conjunctions, politeness) are the
+  closed classes of English, listed here;
+- **every other word is open-class**: a noun, an adjective or a name (``NAME``: a capitalised
+  word where a noun phrase starts). A word nobody has listed is never an error;
+- **result words** (``RESULT``): a participle of a lexical unit, or an adjective equal to the
+  predicate of a frame's result (``hot``, ``clean``), before a noun: "a *heated* egg" evokes
+  Heat. Which words these are is derived from the library's postconditions;
+- **participles after a noun** (``VBG_T``, ``VBG_P``, ``VBG_I``: transitive, with a
+  prepositional complement, bare) describe people and things: "the person *wearing* a hat".
+
+Lemmas and singulars come from lemminflect, which ships its data. The tagger decides what the
+grammar cannot: whether "and" joins clauses or noun phrases, whether "light" is a verb or a
+noun, by looking one or two words ahead.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
+from functools import lru_cache
+
+from .errors import SealError, Where
+from .library import Library
+
+__all__ = ["MAX_LENGTH", "CommandError", "Lexicon", "Word", "lemma", "noun_lemma", "tokenize"]
+
+MAX_LENGTH = 1000
+"""The longest command accepted, in characters (a spoken command is far shorter)."""
+
+class CommandError(SealError):
+    """A command that cannot be parsed: where (column) and what was expected there."""
+
+    def __init__(self, message: str, column: int, text: str, expected: Sequence[str] = ()) -> None:
+        super().__init__(message, Where(None, None, column), source_line=text)
+        self.expected = list(expected)
+        self.text = text
+
+    def located(self) -> str:
+        return f"column {self.column}: {self.message}"
+
+    def to_json(self) -> dict[str, object]:
+        return {"message": self.message, "column": self.column, "expected": self.expected}
+
+
+# ---------------------------------------------------------------------------------------------
+# Closed classes of English (function words). Open-class words are never listed.
+
+
+def _closed_class(*lines: str) -> frozenset[str]:
+    return frozenset(" ".join(lines).split())
+
+
+DETERMINERS = _closed_class("the a an some any this that these those each every all another both either no other such")
+NUMBERS = {"zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
+           "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "a couple of": 2, "a pair of": 2, "couple": 2,
+           "several": 3, "few": 3, "many": 3}
+POSSESSIVES = _closed_class("my your his her its our their")
+PRONOUNS = _closed_class("it them him her me you us they he she yourself myself himself herself themselves",
+                         "itself ourselves yourselves something someone somebody everything everyone everybody",
+                         "anything anyone anybody nothing one ones this that those these")
+PERSON_PRONOUNS = _closed_class("him her me you us he she yourself myself himself herself themselves ourselves",
+                                "yourselves someone somebody everyone everybody anyone anybody")
+PREPOSITIONS = {
+    "to": "to", "into": "into", "onto": "onto", "from": "from", "in": "in", "on": "on", "at": "at",
+    "under": "under", "underneath": "under", "beneath": "under", "below": "under", "with": "with",
+    "without": "without", "near": "near", "inside": "inside", "outside": "outside", "by": "by",
+    "beside": "by", "behind": "behind", "above": "above", "over": "over", "across": "across",
+    "through": "through", "toward": "to", "towards": "to", "around": "around", "between": "between",
+    "among": "between", "upon": "on", "within": "in", "off": "off", "for": "for", "about": "about",
+    "via": "via", "past": "past", "against": "against", "along": "along", "beyond": "beyond", "using": "with",
+    "out of": "out of", "next to": "near", "close to": "near", "near to": "near", "in front of": "in front of",
+    "on top of": "on", "inside of": "inside", "off of": "off", "away from": "from", "in between": "between",
+    "on to": "onto", "in to": "into", "up to": "to", "down to": "to", "over to": "to", "out from": "from",
+    "from inside": "from", "from within": "from", "from on top of": "from", "from under": "from",
+    "back to": "to", "back into": "into", "back onto": "onto", "back in": "in", "back on": "on",
+    "left of": "by", "right of": "by", "to the left of": "by", "to the right of": "by",
+    "on the left of": "by", "on the right of": "by",
+}
+PARTICLES = _closed_class("up down out off away back over on in around about aside along")
+WH_WORDS = _closed_class("what which who whom whose where when why how whether if")
+BE_WORDS = _closed_class("is are was were be am 's been being")
+SEPARATOR_WORDS = frozenset(["and", "then", ",", ";", ":", "after that", "afterwards", "next", "finally",
+                             "and then", "and after that", "after", "also", "once done", "when done",
+                             "and finally", "before", "while", "or"])
+POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "will you", "would you mind",
+                    "could you please", "i want you to", "i need you to", "i would like you to",
+                    "i'd like you to", "you should", "you must", "you need to", "you have to", "you will",
+                    "you can", "go ahead and", "robot", "hey", "ok", "okay", "now", "first", "firstly",
+                    "just", "quickly", "carefully", "to", "try to", "then", "and", "also", "simply",
+                    "let's", "be sure to", "make sure to", "remember to", "go and", "come and"])
+END_MARKS = frozenset(".!?")
+HERE_WORDS = frozenset(["here", "there", "over here", "over there"])
+
+_PHRASES: dict[str, tuple[str, ...]] = {}
+for _table in (PREPOSITIONS, POLITE, SEPARATOR_WORDS, NUMBERS, HERE_WORDS):
+    for _phrase in _table:
+        words = tuple(_phrase.split())
+        if len(words) > 1:
+            _PHRASES.setdefault(words[0], ())
+            _PHRASES[words[0]] = (*_PHRASES[words[0]], _phrase)
+_LONGEST_FUNCTION_PHRASE = max(len(p.split()) for ps in _PHRASES.values() for p in ps)
+
+NP_START = frozenset({"DET", "NUM", "POSS", "PRON", "NAME", "WORD", "RESULT"})
+"""Tags that can begin a noun phrase."""
+
+# ---------------------------------------------------------------------------------------------
+# Tokens
+
+
+@dataclass(slots=True)
+class Word:
+    """A word (or a merged multiword function phrase) of the command, with its tag.
+
+    ``start``/``end`` are character offsets into the command. ``info`` carries what the tag
+    needs: the lexical unit of a VERB, the (frame, unit) of a RESULT, the number of a NUM,
+    the preposition of a PREP.
+    """
+
+    text: str
+    start: int
+    end: int
+    tag: str = ""
+    info: object = None
+    lower: str = field(default="", repr=False)
+
+    def __post_init__(self) -> None:
+        self.lower = self.text.lower()
+
+
+_TOKEN = re.compile(r"""
+    (?P<word>[^\W\d_]+(?:['’\-][^\W\d_]+)*|\d+(?:\.\d+)?)   # letters, inner apostrophes and hyphens; numbers
+  | (?P<poss>['’]s\b)                                      # possessive 's (and is)
+  | (?P<punct>[,;:.!?]+)
+  | (?P<quote>["“”'‘’`()\[\]])                             # quotes and brackets are ignored
+  | (?P<space>\s+)
+""", re.VERBOSE)
+_CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f]")
+
+
+def tokenize(text: str) -> list[Word]:
+    """The words and punctuation of ``text``; anything else is a SealError at its column."""
+    if len(text) > MAX_LENGTH:
+        raise CommandError(f"command too long ({len(text)} characters; the limit is {MAX_LENGTH})", MAX_LENGTH + 1,
+                           text[:MAX_LENGTH + 20], ["a shorter command"])
+    bad = _CONTROL.search(text)
+    if bad:
+        raise CommandError(f"control character U+{ord(bad.group()):04X} in the command", bad.start() + 1,
+                           _printable(text), ["a word"])
+    words: list[Word] = []
+    pos = 0
+    while pos < len(text):
+        match = _TOKEN.match(text, pos)
+        if match is None:
+            raise CommandError(f"unexpected character {text[pos]!r}", pos + 1, text, ["a word"])
+        kind = match.lastgroup
+        if kind == "word":
+            words.append(Word(match.group(), match.start(), match.end()))
+        elif kind == "poss":
+            words.append(Word("'s", match.start(), match.end()))
+        elif kind == "punct":
+            # "..." and "?!" are one mark; "," and ";" keep their own
+            words.append(Word(match.group()[0], match.start(), match.end()))
+        pos = match.end()
+    return words
+
+
+def _printable(text: str) -> str:
+    return _CONTROL.sub(" ", text)
+
+
+# ---------------------------------------------------------------------------------------------
+# Lemmas (lemminflect), cached
+
+
+@lru_cache(maxsize=65536)
+def noun_lemma(word: str) -> str:
+    """The singular of a noun (``"knives"`` → ``"knife"``); unknown words by lemminflect's rules."""
+    import lemminflect
+
+    lower = word.lower()
+    if len(lower) <= 2 or not lower.isalpha():
+        return lower
+    lemmas = lemminflect.getAllLemmas(lower).get("NOUN") or lemminflect.getAllLemmasOOV(lower, "NOUN").get("NOUN")
+    if not lemmas:
+        return lower
+    if lower in lemmas:     # "glasses" is a noun of its own, and so is "people"
+        return lower if not lower.endswith("s") or lower.endswith("ss") else lemmas[0] if lemmas[0] != lower \
+            else lower
+    return lemmas[0]
+
+
+@lru_cache(maxsize=65536)
+def lemma(word: str) -> str:
+    """The verb lemma of a word (``"heated"`` → ``"heat"``); the word itself when it is not a verb form."""
+    import lemminflect
+
+    lemmas = lemminflect.getAllLemmas(word.lower()).get("VERB")
+    return lemmas[0] if lemmas else word.lower()
+
+
+@lru_cache(maxsize=65536)
+def is_plural(word: str) -> bool:
+    """Whether a noun is plural ("apples", "people"): its singular differs from it."""
+    lower = word.lower()
+    if not lower.isalpha() or len(lower) <= 2:
+        return False
+    if lower in ("people", "persons", "children", "men", "women"):
+        return True
+    return noun_lemma(lower) != lower and not lower.endswith("ss")
+
+
+@lru_cache(maxsize=65536)
+def _gerund_lemma(word: str) -> str | None:
+    """The verb of an -ing form ("wearing" → "wear"), or None."""
+    import lemminflect
+
+    lower = word.lower()
+    if not lower.endswith("ing") or len(lower) < 5:
+        return None
+    lemmas = lemminflect.getAllLemmas(lower).get("VERB")
+    return lemmas[0] if lemmas else None
+
+
+def _is_adjective(word: str) -> bool:
+    import lemminflect
+
+    return "ADJ" in lemminflect.getAllLemmas(word)
+
+
+def _participles(unit: str) -> set[str]:
+    """Past participles and past forms of a one-word verb: ``heat`` → {heated}, ``light`` → {lit, lighted}."""
+    import lemminflect
+
+    forms = lemminflect.getAllInflections(unit, upos="VERB") or lemminflect.getAllInflectionsOOV(unit, upos="VERB")
+    return {f.lower() for tag in ("VBN", "VBD") for f in forms.get(tag, ())}
+
+
+# ---------------------------------------------------------------------------------------------
+# The lexicon of one library
+
+
+@dataclass(frozen=True)
+class Lexicon:
+    """Verbs and result words of a library, indexed for the tagger.
+
+    ``units``: first word → the library's lexical units starting with it, longest first.
+    ``results``: a participle or result adjective → (frame name, lexical unit).
+    """
+
+    units: Mapping[str, tuple[tuple[str, ...], ...]]
+    results: Mapping[str, tuple[str, str]]
+    verbs: tuple[str, ...]
+
+    @classmethod
+    def of(cls, library: Library) -> Lexicon:
+        units: dict[str, list[tuple[str, ...]]] = {}
+        for unit in library.units:           # longest first
+            words = tuple(unit.split())
+            units.setdefault(words[0], []).append(words)
+        return cls({w: tuple(us) for w, us in units.items()}, _result_words(library),
+                   tuple(sorted(library.by_unit)))
+
+    def verb_at(self, words: Sequence[Word], i: int, stop: int) -> tuple[str, int, int | None] | None:
+        """The lexical unit that starts at word ``i``: (unit, words it covers contiguously,
+        index of a split particle or None). Contiguous matches are preferred, longest first;
+        "pick the cup up" splits "pick up" when "up" stands alone before the clause ends."""
+        candidates = self.units.get(words[i].lower)
+        if not candidates:
+            return None
+        for unit in candidates:
+            n = len(unit)
+            if i + n <= len(words) and all(words[i + k].lower == unit[k] for k in range(1, n)):
+                if n > 1 or not self._split(words, i, stop, candidates):
+                    return " ".join(unit), n, None
+                break
+        split = self._split(words, i, stop, candidates)
+        if split:
+            return split
+        return None
+
+    def _split(self, words: Sequence[Word], i: int, stop: int,
+               candidates: Iterable[tuple[str, ...]]) -> tuple[str, int, int] | None:
+        for unit in candidates:
+            if len(unit) != 2 or unit[1] not in PARTICLES:
+                continue
+            for j in range(i + 2, stop):
+                if words[j].lower == unit[1] and _stands_alone(words, j):
+                    return " ".join(unit), 1, j
+        return None
+
+
+def _stands_alone(words: Sequence[Word], j: int) -> bool:
+    """A particle stands alone when no noun phrase follows it (it is not a preposition there)."""
+    if j + 1 >= len(words):
+        return True
+    after = words[j + 1].lower
+    return after in (",", ".", "!", "?", ";", "and", "then", "please") or after in PREPOSITIONS
+
+
+def _result_words(library: Library) -> dict[str, tuple[str, str]]:
+    """Words before a noun that name a frame's result: participles of its lexical units and the
+    predicate of a positive one-place postcondition on its first element (``hot(theme)``)."""
+    results: dict[str, tuple[str, str]] = {}
+    for frame in library.frames:
+        if not frame.elements or not frame.lexical_units:
+            continue
+        first = frame.elements[0]
+        if first.role != "theme" or library.taxonomy.is_a("person", first.type) and \
+                not library.taxonomy.is_open(first.type):
+            continue    # only a theme's state is a result ("the moved cup" does not mean Go)
+        effects = [f for f in frame.postconditions if not f.negated and f.args == (first.role,)]
+        if not effects:
+            continue
+        for fact in effects:
+            if fact.predicate.isalpha() and _is_adjective(fact.predicate):
+                results.setdefault(fact.predicate, (frame.name, frame.lexical_units[0].text))
+        for unit in frame.lexical_units:
+            words = unit.words
+            if len(words) == 1 or all(w in PARTICLES for w in words[1:]):
+                for form in _participles(words[0]):
+                    if form not in _CLOSED:
+                        results.setdefault(form, (frame.name, unit.text))
+    return results
+
+
+_CLOSED = (DETERMINERS | POSSESSIVES | PRONOUNS | WH_WORDS | BE_WORDS | PARTICLES
+           | frozenset(p for p in PREPOSITIONS if " " not in p) | frozenset(NUMBERS))
+
+
+# ---------------------------------------------------------------------------------------------
+# The tagger
+
+
+def _match_phrase(words: Sequence[Word], i: int, table: Iterable[str] | Mapping[str, object]) -> int:
+    """How many words of a multiword (or one-word) phrase of ``table`` start at ``i`` (0: none)."""
+    best = 0
+    first = words[i].lower
+    for phrase in _PHRASES.get(first, ()):
+        if phrase in table:
+            parts = phrase.split()
+            n = len(parts)
+            if n > best and i + n <= len(words) and all(words[i + k].lower == parts[k] for k in range(n)):
+                best = n
+    if best == 0 and first in table:
+        best = 1
+    return best
+
+
+def _merge(words: list[Word], i: int, n: int, tag: str, info: object = None) -> Word:
+    text = " ".join(w.text for w in words[i:i + n])
+    merged = Word(text, words[i].start, words[i + n - 1].end, tag, info)
+    return merged
+
+
+def _capitalised(word: Word) -> bool:
+    text = word.text
+    return text[:1].isupper() and any(c.islower() for c in text[1:])
+
+
+class Tagger:
+    """Tags the words of one command (see the module docstring). Not thread-safe; cheap to make."""
+
+    def __init__(self, lexicon: Lexicon, words: list[Word], text: str = "") -> None:
+        self.text = text
+        self.lexicon = lexicon
+        self.words = words
+        self.out: list[Word] = []
+
+    # -- helpers -----------------------------------------------------------------------------
+    def text_of(self, start: int, end: int) -> str:
+        return self.text[start:end] if self.text else ""
+
+    def clause_end(self, i: int) -> int:
+        """Index of the first word at or after ``i`` that may end the clause."""
+        for j in range(i, len(self.words)):
+            if self.words[j].lower in (",", ";", ".", "!", "?", "then", "and"):
+                return j
+        return len(self.words)
+
+    def verb_after(self, i: int) -> bool:
+        """Whether a verb (a lexical unit) starts at ``i``, after any politeness words."""
+        while i < len(self.words):
+            n = _match_phrase(self.words, i, POLITE)
+            if n and self.words[i].lower not in ("to", "and", "then"):
+                i += n
+                continue
+            break
+        if i >= len(self.words):
+            return False
+        return self.lexicon.verb_at(self.words, i, self.clause_end(i + 1)) is not None
+
+    def np_starts(self, i: int) -> bool:
+        if i >= len(self.words):
+            return False
+        w = self.words[i]
+        low = w.lower
+        if low in END_MARKS or low in (",", ";", ":") or low in WH_WORDS or low in BE_WORDS:
+            return False
+        if low in PREPOSITIONS and low not in ("one",):
+            return False
+        return low not in ("and", "then", "please", "here", "there")
+
+    def prev_tag(self) -> str:
+        return self.out[-1].tag if self.out else ""
+
+    # -- the pass ----------------------------------------------------------------------------
+    def run(self) -> list[Word]:
+        words = self.words
+        i = 0
+        expect_verb = True
+        particles: dict[int, str] = {}
+        while i < len(words):
+            w = words[i]
+            low = w.lower
+            if i in particles:
+                w.tag, w.info = "PARTICLE", particles.pop(i)
+                self.out.append(w)
+                i += 1
+                continue
+            if expect_verb:
+                n = _match_phrase(words, i, POLITE)
+                if n and not (n == 1 and low in ("and", "then") and not self.out) and (
+                        low in ("to", "and", "then") or self.verb_after(i + n) or i + n >= len(words)
+                        or not self.lexicon.verb_at(words, i, self.clause_end(i + 1))):
+                        self.out.append(_merge(words, i, n, "POLITE"))
+                        i += n
+                        continue
+                if _capitalised(w) and i + 1 < len(words) and words[i + 1].lower == "," and self.verb_after(i + 2):
+                    self.out.append(_merge(words, i, 2, "POLITE"))      # "Robin, bring me a cup"
+                    i += 2
+                    continue
+                found = self.lexicon.verb_at(words, i, self.clause_end(i + 1))
+                if found:
+                    unit, n, split = found
+                    self.out.append(_merge(words, i, n, "VERB", unit))
+                    if split is not None:
+                        particles[split] = unit
+                    i += n
+                    expect_verb = False
+                    continue
+                expect_verb = False
+                # not a verb: tag it as what it is; the grammar reports the missing verb
+            if low in END_MARKS:
+                rest = words[i + 1:]
+                if all(r.lower in END_MARKS or r.lower == "please" for r in rest):
+                    self.out.append(Word(w.text, w.start, w.end, "END"))
+                    i += 1
+                    continue
+                self.out.append(Word(w.text, w.start, w.end, "SEP"))    # "Go to the kitchen. Find Robin."
+                expect_verb = True
+                i += 1
+                continue
+            n = _match_phrase(words, i, SEPARATOR_WORDS)
+            if n:
+                step = self.separator(i, n)
+                if step:
+                    i += step
+                    expect_verb = self.prev_tag() == "SEP"
+                    continue
+            if low == "please" and (i + 1 == len(words) or all(r.lower in END_MARKS for r in words[i + 1:])):
+                self.out.append(Word(w.text, w.start, w.end, "POLITE"))
+                i += 1
+                continue
+            i += self.tag_word(i)
+        return self.out
+
+    def separator(self, i: int, n: int) -> int:
+        """Tag a separator ("and", ",", "then", ", and then") as SEP, AND_NP or nothing;
+        returns how many words it took (0: not a separator here)."""
+        words = self.words
+        j = i + n
+        while j < len(words) and _match_phrase(words, j, SEPARATOR_WORDS) and words[j].lower not in ("before",):
+            j += _match_phrase(words, j, SEPARATOR_WORDS)
+        low = words[i].lower
+        if self.verb_after(j):
+            self.out.append(_merge(words, i, j - i, "SEP"))
+            return j - i
+        if j >= len(words) or words[j].lower in END_MARKS:
+            if low in (",", ";", ":"):
+                return j - i        # a trailing comma is nothing
+            self.out.append(_merge(words, i, j - i, "SEP"))
+            return j - i
+        nxt = words[j].lower
+        if low in (",", ";", ":") and (nxt in PREPOSITIONS or nxt == "please"):
+            return 1                # "Put a pan with a spoon in it, in the sink"
+        if low in ("then", "after that", "afterwards", "finally", "after", "before", "while", "once done",
+                   "when done") or j - i > 1 and low != ",":
+            self.out.append(_merge(words, i, j - i, "SEP"))
+            return j - i
+        if low in ("and", ",", "or") and self.np_starts(j) and self.prev_tag() in ("WORD", "NAME", "PRON"):
+            after = words[j + 1].lower if j + 1 < len(words) else ""
+            unknown_verb = (nxt not in DETERMINERS and nxt not in POSSESSIVES and nxt not in PRONOUNS
+                            and not _capitalised(words[j]) and nxt not in NUMBERS
+                            and (after in DETERMINERS or after in POSSESSIVES or after in ("it", "them", "me")))
+            if not unknown_verb:
+                self.out.append(_merge(words, i, 1, "AND_NP"))
+                return 1
+        if low in ("and", "then", ",", ";", "or"):
+            self.out.append(_merge(words, i, j - i, "SEP"))
+            return j - i
+        return 0
+
+    def tag_word(self, i: int) -> int:
+        """Tag the word at ``i`` (not a verb, not a separator); returns how many words it took."""
+        words = self.words
+        w = words[i]
+        low = w.lower
+        prev = self.prev_tag()
+        in_np = prev in ("DET", "NUM", "POSS", "RESULT") or (prev == "WORD" and self._premodifier())
+        nxt = words[i + 1].lower if i + 1 < len(words) else ""
+        # numbers and quantities
+        n = _match_phrase(words, i, NUMBERS)
+        if n and not in_np and (low != "one" or self.np_starts(i + 1) and nxt not in PREPOSITIONS) and \
+                (n > 1 or low != "one" or self._noun_follows(i + 1)):
+                self.out.append(_merge(words, i, n, "NUM", NUMBERS[" ".join(x.lower for x in words[i:i + n])]))
+                return n
+        if low.isdigit():
+            self.out.append(Word(w.text, w.start, w.end, "NUM", int(low)))
+            return 1
+        if low == "'s":
+            if prev in ("NAME", "WORD", "PRON") and self.np_starts(i + 1) and nxt not in ("a", "an", "the"):
+                self.out[-1] = Word(f"{self.out[-1].text}'s", self.out[-1].start, w.end, "POSS", self.out[-1].text)
+            else:
+                self.out.append(Word(w.text, w.start, w.end, "BE"))
+            return 1
+        if not in_np:
+            n = _match_phrase(words, i, HERE_WORDS)
+            if n and not (low == "there" and nxt in BE_WORDS):
+                self.out.append(_merge(words, i, n, "HERE"))
+                return n
+            if low == "there":
+                self.out.append(Word(w.text, w.start, w.end, "THERE"))
+                return 1
+            n = _match_phrase(words, i, PREPOSITIONS)
+            if n:
+                prep = PREPOSITIONS[" ".join(x.lower for x in words[i:i + n])]
+                if self.np_starts(i + n) or words[i + n:i + n + 1] and words[i + n].lower in ("here", "there"):
+                    self.out.append(_merge(words, i, n, "PREP", prep))
+                else:
+                    self.out.append(_merge(words, i, n, "PARTICLE", prep))   # "pick it up", "where ... from"
+                return n
+            if low == "of":
+                self.out.append(Word(w.text, w.start, w.end, "OF"))
+                return 1
+            if low in PARTICLES:
+                self.out.append(Word(w.text, w.start, w.end, "PARTICLE", low))
+                return 1
+            if low in WH_WORDS and prev != "DET":
+                self.out.append(Word(w.text, w.start, w.end, "WH"))
+                return 1
+            if low in BE_WORDS:
+                self.out.append(Word(w.text, w.start, w.end, "BE"))
+                return 1
+            if low in POSSESSIVES and (low != "her" or self._noun_follows(i + 1)):
+                self.out.append(Word(w.text, w.start, w.end, "POSS"))
+                return 1
+            if low in DETERMINERS and (low not in ("that", "this", "these", "those") or self._noun_follows(i + 1)):
+                self.out.append(Word(w.text, w.start, w.end, "DET"))
+                return 1
+            if low in PRONOUNS:
+                self.out.append(Word(w.text, w.start, w.end, "PRON"))
+                return 1
+        elif low == "of":
+            self.out.append(Word(w.text, w.start, w.end, "OF"))
+            return 1
+        elif low in DETERMINERS or low in POSSESSIVES:
+            self.out.append(Word(w.text, w.start, w.end, "DET" if low in DETERMINERS else "POSS"))
+            return 1
+        # open-class words
+        gerund = _gerund_lemma(low)
+        if gerund and prev in ("WORD", "NAME", "PRON", "BE") and not (prev == "WORD" and self._premodifier()):
+            tag = "VBG_T" if self.np_starts(i + 1) and nxt not in PARTICLES else \
+                "VBG_P" if nxt in PREPOSITIONS and self.np_starts(i + 2) else "VBG_I"
+            self.out.append(Word(w.text, w.start, w.end, tag, gerund))
+            return 1
+        result = self.lexicon.results.get(low)
+        if result and self._noun_follows(i + 1):
+            self.out.append(Word(w.text, w.start, w.end, "RESULT", result))
+            return 1
+        if _capitalised(w) and not in_np and prev not in ("WORD",) and low not in _CLOSED:
+            if prev == "NAME":          # "Mary Ann": one name
+                last = self.out[-1]
+                self.out[-1] = Word(self.text_of(last.start, w.end), last.start, w.end, "NAME")
+            else:
+                self.out.append(Word(w.text, w.start, w.end, "NAME"))
+            return 1
+        self.out.append(Word(w.text, w.start, w.end, "WORD"))
+        return 1
+
+    def _premodifier(self) -> bool:
+        """Whether the last WORD is still inside the noun phrase's modifiers (always: the head is
+        only known at the end, so a following open-class word extends the phrase)."""
+        return False
+
+    def _noun_follows(self, i: int) -> bool:
+        """Whether an open-class word (a noun or adjective) starts at ``i``."""
+        if i >= len(self.words):
+            return False
+        low = self.words[i].lower
+        if low in _CLOSED or low in END_MARKS or low in (",", ";", ":", "and", "then", "of", "please"):
+            return low in NUMBERS and low != "one"
+        return low not in PREPOSITIONS
+
+
+def tag(lexicon: Lexicon, text: str) -> list[Word]:
+    """The tagged words of a command."""
+    return Tagger(lexicon, tokenize(text), text).run()
