@@ -219,14 +219,17 @@ class World:
         return any(math.dist(pose[:2], a) <= self.access_tolerance for a in stands)
 
     def observe(self, pose: Sequence[float] | None = None) -> list[Detection]:
-        """The movable things the robot sees: in its sensor's view and not shut inside anything."""
+        """The movable things the robot sees: not shut inside anything, and in its sensor's view or in
+        or on a place within its reach (it looks at what it stands at)."""
         pose = pose or self.robot.pose
         things = [i for i in self.items.values() if i.movable and not self.held_chain(i.id)
                   and self.enclosure(i.id) is None]
         if not things:
             return []
         mask = self.sensor.visible(pose, np.asarray([t.at for t in things], dtype=float))
-        return [Detection(t.cls, t.at, t.id) for t, ok in zip(things, mask, strict=True) if ok]
+        at_hand = {i.id for i in self.items.values() if not i.movable and i.is_open and self.within_reach(i.id, pose)}
+        return [Detection(t.cls, t.at, t.id) for t, ok in zip(things, mask, strict=True)
+                if ok or t.parent in at_hand]
 
     # -- moving ------------------------------------------------------------------------------
 
