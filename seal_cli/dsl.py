@@ -30,7 +30,8 @@ _TERMINALS = {"NAME": "a name", "STRING": 'a "quoted" lexical unit', "LBRACE": "
 def parser(strict: bool = False) -> Lark:
     """The DSL's LALR parser (``strict=True`` also proves the grammar free of conflicts)."""
     return Lark(grammar_path("frames.lark").read_text(encoding="utf-8"), parser="lalr", strict=strict,
-                propagate_positions=True, maybe_placeholders=False)
+                propagate_positions=True, maybe_placeholders=False,
+                cache=not strict)  # Lark's cache of the parse table: ~0.15 s less at every start
 
 
 def _describe(names: set[str] | frozenset[str]) -> str:
