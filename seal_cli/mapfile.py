@@ -19,11 +19,16 @@
     sensor: {range: 5.0, fov: 360, p_detect: 0.9, sigma: 0.3, noise: 0.05}
 
 The image is read exactly as ROS map_server reads it: image row 0 is the highest y; for each
-pixel the channels are averaged (in trinary mode an alpha channel is averaged in too, as
-map_server does), ``negate`` flips it, ``p = (255 − value) / 255`` is the occupancy
-probability, and the cell is occupied if ``p > occupied_thresh``, free if ``p < free_thresh``,
-unknown otherwise. PGM (P5 binary and P2 text, 8 or 16 bits) is read with numpy alone; PNG through
-matplotlib. Reading never raises anything but SealError.
+pixel the colour channels are averaged, ``negate`` flips the value, ``p = (255 − value) / 255``
+is the occupancy probability, and the cell is occupied if ``p > occupied_thresh``, free if
+``p < free_thresh``, unknown otherwise (``mode: scale`` reads the same; ``mode: raw`` takes the
+value as an occupancy percentage, 255 unknown). PGM (P5 binary and P2 text, 8 or 16 bits; other
+maximum values are scaled to 255) is read with numpy alone; PNG through matplotlib.
+
+One deliberate difference, for PNG only: ROS 1's map_server averages an alpha channel *into*
+the grey value in trinary mode, which turns unknown grey (205) into free space on an opaque RGBA
+PNG. seal does what ROS 2's nav2_map_server does: it averages the colour channels only, and a
+fully transparent pixel is unknown. Reading never raises anything but SealError.
 """
 
 from __future__ import annotations
@@ -106,22 +111,22 @@ def read_pgm(data: bytes) -> NDArray[np.float64]:
     return (pixels * (255.0 / maxval)).reshape(height, width)
 
 
-def _read_png(path: Path, trinary: bool) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+def _read_png(path: Path) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Grey (colour channels averaged, 0..255) and alpha (0..255) of a PNG, through matplotlib."""
     import matplotlib.image
 
     try:
         image = np.asarray(matplotlib.image.imread(str(path)), dtype=float)
     except Exception as exc:  # matplotlib/Pillow raise many kinds; all mean "cannot read"
         raise SealError(f"cannot read image {path.name}: {exc}") from None
-    if image.dtype.kind == "f" and image.max(initial=0) <= 1.0:
+    if image.max(initial=0) <= 1.0:
         image = np.round(image * 255.0)
     if image.ndim == 2:
         return image, np.full(image.shape, 255.0)
     channels = image.shape[2]
     has_alpha = channels in (2, 4)
     alpha = image[..., -1] if has_alpha else np.full(image.shape[:2], 255.0)
-    averaged = channels if (trinary or not has_alpha) else channels - 1
-    return image[..., :averaged].mean(axis=2), alpha
+    return image[..., :channels - 1 if has_alpha else channels].mean(axis=2), alpha
 
 
 def read_image(path: Path, negate: bool = False, occupied_thresh: float = 0.65, free_thresh: float = 0.196,
@@ -130,13 +135,13 @@ def read_image(path: Path, negate: bool = False, occupied_thresh: float = 0.65, 
     try:
         data = path.read_bytes()
     except FileNotFoundError:
-        raise SealError(f"image {path} does not exist") from None
+        raise SealError(f"image {path.name} does not exist (looked for {path})") from None
     except OSError as exc:
         raise SealError(f"cannot read image {path}: {exc.strerror}") from None
     if data[:2] in (b"P5", b"P2"):
         grey, alpha = read_pgm(data), None
     elif data[:8] == b"\x89PNG\r\n\x1a\n":
-        grey, alpha = _read_png(path, mode == "trinary")
+        grey, alpha = _read_png(path)
     else:
         raise SealError(f"image {path.name} is neither PGM (P5/P2) nor PNG")
     if negate:
@@ -151,8 +156,8 @@ def read_image(path: Path, negate: bool = False, occupied_thresh: float = 0.65, 
         occ = (255.0 - grey) / 255.0
         cells[occ > occupied_thresh] = OCCUPIED
         cells[occ < free_thresh] = FREE
-        if alpha is not None and mode == "scale":
-            cells[(cells != OCCUPIED) & (cells != FREE) & (alpha < 1.0)] = UNKNOWN
+    if alpha is not None:
+        cells[alpha < 1.0] = UNKNOWN  # a transparent pixel says nothing
     return cells[::-1].copy()
 
 
@@ -365,7 +370,8 @@ class _Reader:
             if "name" not in fields:
                 self.problem("a room needs a name", item)
             shapes = [k for k in ("polygon", "box") if k in fields]
-            if len(shapes) != 1:
+            misspelt = any(isinstance(k, yaml.ScalarNode) and k.value not in ROOM_KEYS for k, _ in item.value)
+            if len(shapes) != 1 and not (misspelt and not shapes):
                 self.problem("a room needs exactly one of polygon: [[x, y], ...] or box: [xmin, ymin, xmax, ymax]"
                              + (" (it has both)" if len(shapes) == 2 else ""), item)
             room = self.room_shape(name, fields, shapes[0]) if name and len(shapes) == 1 else None

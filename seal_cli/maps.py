@@ -273,7 +273,8 @@ class Sensor:
 class Map:
     """An annotated map (see the module docstring). Build it in code or with :func:`load_map`.
 
-    ``bounds`` may be omitted when a ``grid`` is given (then it is the grid's extent); ``grid``
+    ``bounds`` may be omitted when a ``grid`` is given (then it is the box around the grid, the
+    places, the objects and the robot); ``grid``
     may be omitted when ``bounds`` are given (then all of ``bounds`` is free). ``priors`` maps an
     object class to ``{room | place name | place class: mass}``. ``positions`` locates parts of
     the map in its source file by YAML path (``("rooms", 2, "polygon")``) for error messages.
@@ -298,7 +299,7 @@ class Map:
         if self.bounds is None and self.grid is None:
             raise SealError("a map needs bounds [xmin, ymin, xmax, ymax] or an occupancy image", self.where())
         if self.bounds is None:
-            set_(self, "bounds", self.grid.bounds)
+            set_(self, "bounds", self._grid_and_contents_bounds())
         set_(self, "bounds", self._checked_bounds(self.bounds))
         if self.grid is None:
             xmin, ymin, xmax, ymax = self.bounds
@@ -318,6 +319,17 @@ class Map:
             problems = self.problems()
             if problems:
                 raise SealErrors(problems)
+
+    def _grid_and_contents_bounds(self) -> Bounds:
+        """The box around the grid and every place, object and placed robot (receptacles often lie
+        just off a reachability grid)."""
+        xmin, ymin, xmax, ymax = self.grid.bounds
+        points = [p.at for p in self.places] + [o.at for o in self.objects]
+        if self.robot is not None and self.robot.placed:
+            points.append(self.robot.xy)
+        for x, y in points:
+            xmin, ymin, xmax, ymax = min(xmin, x), min(ymin, y), max(xmax, x), max(ymax, y)
+        return (xmin, ymin, xmax, ymax)
 
     def _checked_bounds(self, bounds: Any) -> Bounds:
         try:

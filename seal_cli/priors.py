@@ -9,8 +9,9 @@ mixture, over the map's free space,
 where ``U`` is uniform over all free space, ``U_t`` uniform over the target's free space and
 ``ε`` = :data:`FLOOR` a small floor so that no free point is impossible. A room's free space is
 the free cells whose centres are in the room; a place's (or a place class's) is the free space
-within the place's ``reach`` (1 m by default) — where a robot stands to take something from it —
-and, if none is within reach, the free cell nearest to it. A class without a prior is uniform.
+within the place's ``reach`` (1 m by default) and in its line of sight — where a robot stands
+to take something from it, not behind a wall — and, if there is none, the free cell nearest to
+it. A class without a prior is uniform.
 
 Everything is resolved to the map's free cells: :attr:`Prior.weights` is the probability of
 each free cell, sampling draws a cell by weight and a point uniformly inside it, and
@@ -85,6 +86,7 @@ def target_cells(m: Map, target: str) -> NDArray[np.intp]:
         place = m.places[i]
         d2 = ((centres - np.array(place.at)) ** 2).sum(axis=1)
         within = d2 <= place.reach ** 2
+        within[within] = m.line_of_sight(place.at, centres[within])  # not through a wall
         if not within.any() and len(d2):
             within[np.argmin(d2)] = True
         near |= within

@@ -118,7 +118,7 @@ class VisibleRegion:
 
     @property
     def area(self) -> float:
-        """Square metres seen (the fan's area: each ray a sector of its reach)."""
+        """Square metres of the fan (each ray a sector of its reach); not clipped to the map or to free space."""
         n = len(self.angles)
         step = 2 * np.pi / n if self.full_circle else math.radians(self.fov_deg) / max(n - 1, 1)
         weights = np.full(n, step)

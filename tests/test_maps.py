@@ -1,0 +1,397 @@
+"""Maps: reading map_server images exactly, the apartment, rooms, priors, maps built in code, broken maps.
+
+Each file in ``tests/data/maps_bad`` starts with ``# expect: LINE: text`` lines; checking it must
+report exactly those problems, each on its line and containing its text.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+import yaml
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from typer.testing import CliRunner
+
+from seal_cli.cli import app
+from seal_cli.errors import SealError, SealErrors
+from seal_cli.geometry import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
+from seal_cli.mapfile import read_pgm
+from seal_cli.maps import (
+    OUTSIDE,
+    Map,
+    ObjectTruth,
+    Place,
+    Robot,
+    Room,
+    Sensor,
+    check_map_file,
+    load_map,
+    prior_density,
+    sample_prior,
+)
+from seal_cli.priors import FLOOR
+from seal_cli.resources import map_path
+from seal_cli.validation import validate_paths
+
+ROOT = Path(__file__).resolve().parents[1]
+APARTMENT = ROOT / "maps" / "apartment.yaml"
+BAD = Path(__file__).parent / "data" / "maps_bad"
+CASES = sorted(BAD.glob("*.yaml"))
+EXPECT = re.compile(r"^# expect: (\d+): (.+)$", re.M)
+
+
+@pytest.fixture(scope="module")
+def apartment() -> Map:
+    return load_map(APARTMENT)
+
+
+def write_map(folder: Path, text: str, image: bytes | None = None, image_name: str = "tiny.pgm") -> Path:
+    if image is not None:
+        (folder / image_name).write_bytes(image)
+    path = folder / "map.yaml"
+    path.write_text(text)
+    return path
+
+
+# -- map_server conventions ------------------------------------------------------------------------
+TINY = (b"P5\n# a comment in the header\n3 2\n255\n"
+        + bytes([0, 254, 205,      # row 0: the TOP row of the picture (highest y)
+                 100, 40, 250]))   # row 1: the bottom row (lowest y, at the origin)
+SERVER = "image: {image}\nresolution: 0.5\norigin: [1.0, 2.0, 0.0]\nnegate: {negate}\n" \
+         "occupied_thresh: 0.65\nfree_thresh: 0.196\n"
+
+
+def cell_centre(col: int, row_from_bottom: int) -> list[float]:
+    return [1.0 + 0.5 * (col + 0.5), 2.0 + 0.5 * (row_from_bottom + 0.5)]
+
+
+def test_origin_is_the_lower_left_pixel_and_row_0_the_highest_y(tmp_path: Path) -> None:
+    m = load_map(write_map(tmp_path, SERVER.format(image="tiny.pgm", negate=0), TINY))
+    assert m.bounds == (1.0, 2.0, 2.5, 3.0)
+    assert m.name == tmp_path.name  # map.yaml takes its folder's name
+    # p = (255 - v) / 255: 0 → 1.0 occupied; 254 → 0.004 free; 205 → 0.196 unknown (not < 0.196)
+    # 100 → 0.608 unknown; 40 → 0.843 occupied; 250 → 0.0196 free
+    top = m.grid.values([cell_centre(c, 1) for c in range(3)])
+    bottom = m.grid.values([cell_centre(c, 0) for c in range(3)])
+    assert top.tolist() == [OCCUPIED, FREE, UNKNOWN]
+    assert bottom.tolist() == [UNKNOWN, OCCUPIED, FREE]
+    assert m.is_free([cell_centre(1, 1), cell_centre(2, 0), cell_centre(0, 0)]).tolist() == [True, True, False]
+
+
+def test_negate_flips_the_picture(tmp_path: Path) -> None:
+    m = load_map(write_map(tmp_path, SERVER.format(image="tiny.pgm", negate=1), TINY))
+    # negate: p = v / 255: 0 free, 254 occupied, 205 (0.804) occupied, 100 (0.39) unknown, 40 (0.157) free
+    assert m.grid.values([cell_centre(c, 1) for c in range(3)]).tolist() == [FREE, OCCUPIED, OCCUPIED]
+    assert m.grid.values([cell_centre(c, 0) for c in range(3)]).tolist() == [UNKNOWN, FREE, OCCUPIED]
+
+
+def test_thresholds_are_strict_as_in_map_server(tmp_path: Path) -> None:
+    # with free_thresh = 0.2 and occupied_thresh = 0.6: v = 204 gives p = 0.2 (not < 0.2: unknown),
+    # v = 205 gives 0.196 (free), v = 102 gives p = 0.6 (not > 0.6: unknown), v = 101 gives 0.604 (occupied)
+    image = b"P5\n4 1\n255\n" + bytes([204, 205, 102, 101])
+    text = "image: t.pgm\nresolution: 1\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.6\nfree_thresh: 0.2\n"
+    m = load_map(write_map(tmp_path, text, image, "t.pgm"))
+    assert m.grid.values([[0.5, 0.5], [1.5, 0.5], [2.5, 0.5], [3.5, 0.5]]).tolist() == \
+        [UNKNOWN, FREE, UNKNOWN, OCCUPIED]
+
+
+def test_text_pgm_and_16_bit_pgm_read_like_the_binary_one(tmp_path: Path) -> None:
+    p2 = b"P2\n# text\n3 2\n255\n0 254 205\n100 40 250\n"
+    assert np.array_equal(read_pgm(p2), read_pgm(TINY))
+    wide = b"P5\n3 2\n65535\n" + np.array([0, 254, 205, 100, 40, 250], dtype=">u2").tobytes()
+    assert np.allclose(read_pgm(wide), read_pgm(TINY) * 255 / 65535)
+    m = load_map(write_map(tmp_path, SERVER.format(image="tiny.pgm", negate=0), p2))
+    assert m.grid.values([cell_centre(0, 1)]).tolist() == [OCCUPIED]
+
+
+def test_png_reads_like_pgm(tmp_path: Path) -> None:
+    import matplotlib.image
+
+    grey = np.array([[0, 254, 205], [100, 40, 250]], dtype=np.uint8)
+    rgb = np.repeat(grey[:, :, None], 3, axis=2)
+    matplotlib.image.imsave(tmp_path / "tiny.png", rgb)
+    (tmp_path / "tiny.pgm").write_bytes(TINY)
+    png = load_map(write_map(tmp_path, SERVER.format(image="tiny.png", negate=0)))
+    pgm = load_map(write_map(tmp_path, SERVER.format(image="tiny.pgm", negate=0)))
+    assert np.array_equal(png.grid.cells, pgm.grid.cells)
+
+
+def test_the_real_aws_house_reads_as_map_server_reads_it(shared_data: Path) -> None:
+    folder = shared_data / "maps" / "aws_small_house"
+    m = load_map(folder / "map.yaml")
+    assert m.name == "aws_small_house"
+    assert m.grid.shape == (500, 500)
+    assert m.bounds == (-12.5, -12.5, 12.5, 12.5)
+    raw = (folder / "map.pgm").read_bytes()
+    pixels = np.frombuffer(raw[-250000:], dtype=np.uint8).reshape(500, 500)
+    # every pixel: row r, column c is the cell whose centre is at origin + (c + 0.5, 499 - r + 0.5) * res
+    rows, cols = np.mgrid[0:500:7, 0:500:7]
+    centres = np.column_stack([-12.5 + (cols.ravel() + 0.5) * 0.05, -12.5 + (499 - rows.ravel() + 0.5) * 0.05])
+    expected = np.select([pixels[rows, cols].ravel() == 0, pixels[rows, cols].ravel() == 254], [OCCUPIED, FREE],
+                         UNKNOWN)
+    assert np.array_equal(m.grid.values(centres), expected)
+    # known cells: the first wall pixel of the picture, the house's middle, outside the house
+    assert m.is_occupied([[0.675, 5.525]]).all()
+    assert m.is_free([[0.725, 5.475], [0.0, 0.0], [6.55, 0.95]]).all()  # a wall's inner side, the hall, kitchen table
+    assert not m.is_free([[-12.0, -12.0], [12.0, 12.0]]).any()
+    assert m.free_area == pytest.approx(63021 * 0.05 ** 2)
+    free_rows, free_cols = np.nonzero(m.grid.free_mask)
+    assert -12.5 + free_cols.min() * 0.05 == pytest.approx(-9.3)  # the house spans about 18.75 m × 11.2 m
+    assert -12.5 + (free_cols.max() + 1) * 0.05 == pytest.approx(9.45)
+    models = {d["type"]: d for d in json.loads((folder / "world_models.json").read_text())["models"]}
+    # the kitchen table stands in free space (a laser sees its legs only); the bed is a blob the laser never entered
+    assert m.is_free([[models["KitchenTable_01"]["x"], models["KitchenTable_01"]["y"]]]).all()
+    assert m.grid.values([[models["Bed_01"]["x"], models["Bed_01"]["y"]]]).tolist() == [UNKNOWN]
+
+
+def test_the_aws_house_validates_as_a_plain_ros_map(shared_data: Path) -> None:
+    path = shared_data / "maps" / "aws_small_house" / "map.yaml"
+    assert check_map_file(path) == []
+    result = CliRunner().invoke(app, ["validate", str(path)])
+    assert result.exit_code == 0, result.output
+
+
+def test_the_aws_house_takes_rooms_and_priors(shared_data: Path, tmp_path: Path) -> None:
+    image = shared_data / "maps" / "aws_small_house" / "map.pgm"
+    text = (f"image: {image}\nresolution: 0.05\norigin: [-12.5, -12.5, 0.0]\nnegate: 0\noccupied_thresh: 0.65\n"
+            "free_thresh: 0.196\nbounds: [-9.5, -6, 9.6, 5.7]\nrooms:\n"
+            "  - {name: bedroom, box: [-9.5, 0.0, -2.6, 3.4]}\n  - {name: kitchen, box: [4.8, -5.8, 9.6, 3.4]}\n"
+            "priors:\n  cup: {bedroom: 0.5, kitchen: 0.5}\nobjects:\n  - {class: cup, at: [6.5, 1.0]}\n"
+            "robot: {pose: [0.0, 0.0, 0.0]}\n")
+    m = load_map(write_map(tmp_path, text))
+    masses = m.prior("cup").room_masses()
+    assert masses["bedroom"] == pytest.approx(0.5 * (1 - FLOOR) + FLOOR * m.room_free_area()["bedroom"] / m.free_area)
+
+
+# -- the apartment ----------------------------------------------------------------------------------
+def test_the_apartment(apartment: Map) -> None:
+    m = apartment
+    assert m.name == "apartment"
+    assert m.room_names == ("bedroom", "family_room", "dining_room", "kitchen", "living_room")
+    assert m.bounds == (-9.0, -6.0, 9.0, 6.0)
+    assert m.grid.resolution == 0.05 and m.grid.shape == (280, 400)
+    assert m.priors["cup"] == {"family_room": 0.5, "bedroom": 0.5}
+    assert m.priors["spoon"] == {"kitchen": 0.5, "bedroom": 0.5}
+    assert {p.name for p in m.places} >= {"fridge_1", "counter_1", "sink_1", "microwave_1", "bed_1", "sofa_1"}
+    fridge = m.place("fridge_1")
+    assert fridge is not None and fridge.openable and fridge.closed and fridge.room == "kitchen"
+    assert [o.cls for o in m.objects] == ["spoon", "cup", "apple"]
+    assert m.objects[2].at == fridge.at and m.objects[2].inside == "fridge_1"  # at defaults to the place's
+    assert m.sensor == Sensor(range=5.0, fov_deg=360.0)
+    assert m.robot.pose == (-6.0, -3.0, 0.0) and m.robot.holding is None
+    assert 190 < m.free_area < 216  # 18 m × 12 m less walls, island, wardrobe and pillar
+    assert map_path("apartment").resolve() == APARTMENT.resolve()
+
+
+def test_the_apartment_image_is_what_the_script_draws(tmp_path: Path) -> None:
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("make_apartment", ROOT / "maps" / "make_apartment.py")
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    drawn = module.draw()
+    assert np.array_equal(read_pgm((ROOT / "maps" / "apartment.pgm").read_bytes()), drawn.astype(float))
+
+
+def test_the_apartment_validates_clean() -> None:
+    assert check_map_file(APARTMENT) == []
+    result = CliRunner().invoke(app, ["validate", str(APARTMENT)])
+    assert result.exit_code == 0, result.output
+    assert "1 maps" in result.output
+
+
+def test_walls_doors_and_rooms_of_the_apartment(apartment: Map) -> None:
+    m = apartment
+    walls = [[-3.0, 2.0], [0.0, -6.0], [-9.0, 0.0], [5.0, -3.0]]  # a wall, the south wall, the west wall, the island
+    assert m.is_occupied(walls).all() and not m.is_free(walls).any()
+    doors = [[-3.0, 4.7], [-5.0, 0.5], [0.0, 1.0], [3.0, 4.5], [7.0, 0.0], [2.0, -2.0], [3.0, 0.5]]
+    assert m.is_free(doors).all()
+    inside = {"bedroom": [-6, 3], "family_room": [0, 3], "dining_room": [6, 3], "kitchen": [6, -4],
+              "living_room": [-6, -3]}
+    assert m.room_of(list(inside.values())) == list(inside)
+    assert m.room_of([[2.5, 0.5], [20.0, 0.0]]) == ["living_room", OUTSIDE]  # the living room's nook; off the map
+    assert m.room_index([[20.0, 0.0]]).tolist() == [-1]
+    # adjacent rooms share walls: points on the boundary belong to exactly one room
+    on_walls = np.array([[x, 0.0] for x in np.linspace(3.1, 8.9, 30)] + [[-3.0, y] for y in np.linspace(1.1, 5.9, 30)])
+    assert (m.room_index(on_walls) >= 0).all()
+    assert m.line_of_sight((-6.0, -3.0), [[-6.0, 3.0], [-5.0, 3.0], [-1.0, -3.0]]).tolist() == [False, True, True]
+
+
+def test_no_object_is_visible_from_the_apartment_start(apartment: Map) -> None:
+    from seal_cli.sensor import visible
+
+    x, y, _ = apartment.robot.pose
+    points = np.array([o.at for o in apartment.objects])
+    assert np.all(np.hypot(points[:, 0] - x, points[:, 1] - y) > apartment.sensor.range)
+    assert not visible(apartment, apartment.robot.pose, points).any()
+
+
+# -- free space and sampling -------------------------------------------------------------------------
+def test_sampling_free_space(apartment: Map) -> None:
+    rng = np.random.default_rng(3)
+    points = apartment.sample_free(rng, 5000)
+    assert points.shape == (5000, 2) and apartment.is_free(points).all()
+    kitchen = apartment.sample_free(rng, 2000, region="kitchen")
+    assert apartment.is_free(kitchen).all()
+    assert (np.array(apartment.room_of(kitchen)) == "kitchen").mean() > 0.99  # cells straddling the wall line
+    again = apartment.sample_free(np.random.default_rng(3), 5000)
+    assert np.array_equal(points, again)
+    with pytest.raises(SealError, match="no room 'garage'"):
+        apartment.sample_free(rng, 3, region="garage")
+
+
+# -- priors ---------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("cls", ["cup", "spoon"])
+def test_sampled_room_masses_match_the_prior(apartment: Map, cls: str) -> None:
+    areas = apartment.room_free_area()
+    expected = {room: (1 - FLOOR) * apartment.priors[cls].get(room, 0.0) + FLOOR * areas[room] / apartment.free_area
+                for room in apartment.room_names}
+    assert apartment.prior(cls).room_masses() == pytest.approx({**expected, OUTSIDE: 0.0}, abs=1e-9)
+    points = sample_prior(apartment, cls, 40_000, np.random.default_rng(0))
+    counts = np.bincount(apartment.room_index(points) + 1, minlength=6) / len(points)
+    for i, room in enumerate(apartment.room_names):
+        assert counts[i + 1] == pytest.approx(expected[room], abs=0.012), room
+    assert apartment.is_free(points).all()
+
+
+def test_prior_density_is_a_density_over_free_space(apartment: Map) -> None:
+    density = prior_density(apartment, "cup", apartment.free_centres)
+    assert density.sum() * apartment.cell_area == pytest.approx(1.0)
+    assert prior_density(apartment, "cup", [[-3.0, 2.0], [50.0, 50.0]]).tolist() == [0.0, 0.0]  # a wall; off the map
+    bedroom, dining = prior_density(apartment, "cup", [[-6.0, 3.0], [6.0, 3.0]])
+    assert bedroom / dining > 50
+    uniform = prior_density(apartment, "unicorn", apartment.free_centres)
+    assert np.allclose(uniform, 1.0 / apartment.free_area)
+
+
+def test_place_priors_spread_within_reach(apartment: Map) -> None:
+    prior = apartment.prior("apple")  # fridge 0.4, counter 0.4 (place classes), kitchen 0.2
+    centres = apartment.free_centres
+    fridge, counter = np.array(apartment.place("fridge_1").at), np.array(apartment.place("counter_1").at)
+    near = np.zeros(len(centres), dtype=bool)
+    for place in (fridge, counter):
+        disc = np.flatnonzero(np.hypot(*(centres - place).T) <= 1.0)
+        near[disc[apartment.line_of_sight(place, centres[disc])]] = True
+    kitchen = apartment.free_cell_room == apartment.room_id("kitchen")
+    exact = prior.weights[near].sum()
+    assert exact == pytest.approx((1 - FLOOR) * (0.8 + 0.2 * near[kitchen].sum() / kitchen.sum())
+                                  + FLOOR * near.mean())
+    points = prior.sample(20_000, np.random.default_rng(1))
+    assert near[apartment.free_index(points)].mean() == pytest.approx(exact, abs=0.015)
+    assert prior.room_masses()["kitchen"] == pytest.approx(
+        1 - FLOOR + FLOOR * apartment.room_free_area()["kitchen"] / apartment.free_area)  # not through the wall
+
+
+# -- maps built in code -----------------------------------------------------------------------------------
+def test_a_map_from_bounds_alone_is_all_free() -> None:
+    m = Map("box", (0.0, 0.0, 4.0, 3.0), rooms=(Room.box("a", 0, 0, 2, 3), Room.box("b", 2, 0, 4, 3)),
+            priors={"Cup": {"A": 1.0}})
+    assert m.free_area == pytest.approx(12.0)
+    assert m.robot.pose == pytest.approx((2.025, 1.525, 0.0), abs=0.05)  # the free cell nearest the middle
+    assert m.is_free([[0.01, 0.01], [3.99, 2.99]]).all() and not m.is_free([[4.01, 1.0]]).any()
+    assert m.prior("cup").room_masses()["a"] == pytest.approx(1 - FLOOR + FLOOR / 2)
+    assert m.line_of_sight((0.5, 0.5), [[3.5, 2.5]]).all()
+
+
+def test_a_map_from_a_reachability_grid() -> None:
+    lattice = np.array([[x, z] for x in np.arange(-1.0, 1.01, 0.25) for z in np.arange(0.0, 1.51, 0.25)])
+    grid = OccupancyGrid.from_cells(lattice, 0.25)
+    m = Map("FloorPlan1", grid=grid, places=(Place("Fridge|1", "Fridge", (1.5, 0.5), openable=True),),
+            priors={"apple": {"fridge": 1.0}}, objects=(ObjectTruth("Apple", (1.5, 0.5), "Fridge|1"),),
+            robot=Robot((0.0, 0.0, 0.0)))
+    assert m.bounds == (grid.bounds[0], grid.bounds[1], 1.5, grid.bounds[3])  # the fridge is just off the grid
+    assert m.free_area == pytest.approx(len(lattice) * 0.0625)
+    assert m.place("fridge|1").cls == "fridge" and m.objects[0].cls == "apple"
+    near = sample_prior(m, "apple", 1000, np.random.default_rng(0))
+    assert (np.hypot(near[:, 0] - 1.5, near[:, 1] - 0.5) < 1.2).mean() > 0.95
+    assert m.line_of_sight((0.0, 0.0), [[1.5, 0.5]]).all()  # unknown cells (counters) do not block sight
+
+
+def test_a_bad_map_in_code_raises_every_problem() -> None:
+    with pytest.raises(SealErrors) as caught:
+        Map("bad", (0.0, 0.0, 10.0, 10.0), rooms=(Room.box("a", 0, 0, 5, 5), Room.box("b", 4, 4, 8, 8)),
+            priors={"cup": {"garage": 0.5, "a": -1.0}}, objects=(ObjectTruth("cup", (11.0, 1.0)),))
+    messages = [p.message for p in caught.value.problems]
+    assert len(messages) == 4
+    assert any("overlaps" in m for m in messages) and any("garage" in m for m in messages)
+    assert any("-1" in m for m in messages) and any("outside" in m for m in messages)
+    with pytest.raises(SealError, match="bounds"):
+        Map("nothing")
+    with pytest.raises(SealError, match="at least 3 points"):
+        Room("r", ((0.0, 0.0), (1.0, 1.0)))
+    with pytest.raises(SealError, match="fov"):
+        Sensor(fov_deg=0)
+
+
+# -- broken map files -------------------------------------------------------------------------------------
+def expectations(path: Path) -> list[tuple[int, str]]:
+    return [(int(line), text.strip()) for line, text in EXPECT.findall(path.read_text())]
+
+
+def test_corpus_is_large_enough() -> None:
+    assert len(CASES) >= 35
+    assert all(expectations(p) for p in CASES)
+
+
+@pytest.mark.parametrize("path", CASES, ids=[p.stem for p in CASES])
+def test_each_broken_map_reports_its_problems(path: Path) -> None:
+    problems = check_map_file(path)
+    got = [(p.line, p.message) for p in problems]
+    want = expectations(path)
+    assert len(got) == len(want), got
+    for (line, message), (want_line, want_text) in zip(got, want, strict=True):
+        assert line == want_line, (message, want_text)
+        assert want_text in message
+    assert all(p.file == str(path) and p.column for p in problems)
+    with pytest.raises(SealError):
+        load_map(path)
+
+
+@pytest.mark.parametrize("path", CASES, ids=[p.stem for p in CASES])
+def test_seal_validate_lists_file_line_column_and_exits_1(path: Path) -> None:
+    result = CliRunner().invoke(app, ["validate", str(path)])
+    assert result.exit_code == 1
+    assert "Traceback" not in result.output
+    for line, _ in expectations(path):
+        assert re.search(rf"^(error: )?{re.escape(str(path))}:{line}:\d+: ", result.output, re.M), result.output
+
+
+def test_validate_checks_maps_and_frames_together(tmp_path: Path) -> None:
+    report = validate_paths([APARTMENT, BAD / "28_many_problems.yaml"])
+    assert report.maps == 2 and len(report.problems) == 4
+
+
+def test_odd_files_are_problems_not_crashes(tmp_path: Path) -> None:
+    for text, message in [("", "empty"), ("- 1\n- 2\n", "must be a mapping"), ("bounds: [0, 0, 1, 1]\nrooms: 3\n",
+                                                                              "rooms must be a list")]:
+        path = tmp_path / "odd.yaml"
+        path.write_text(text)
+        problems = check_map_file(path)
+        assert problems and message in problems[0].message
+    assert "no such file" in check_map_file(tmp_path / "missing.yaml")[0].message
+
+
+yaml_values = st.recursive(
+    st.none() | st.booleans() | st.integers(-5, 5) | st.floats(allow_nan=True) | st.text(max_size=4),
+    lambda inner: st.lists(inner, max_size=4) | st.dictionaries(st.sampled_from(
+        ["name", "box", "polygon", "class", "at", "in", "pose", "range", "fov", "kitchen", "cup", "open"]), inner,
+        max_size=4), max_leaves=12)
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(st.dictionaries(st.sampled_from(["bounds", "rooms", "places", "priors", "objects", "robot", "sensor", "name",
+                                        "image", "resolution", "origin", "negate"]), yaml_values, max_size=6))
+def test_any_map_file_gives_problems_or_a_map_never_a_crash(tmp_path: Path, data: dict) -> None:
+    data.setdefault("bounds", [0, 0, 10, 10])
+    path = tmp_path / "fuzz.yaml"
+    path.write_text(yaml.safe_dump(data))
+    problems = check_map_file(path)
+    assert all(isinstance(p, SealError) for p in problems)
+    if not problems:
+        assert isinstance(load_map(path), Map)
