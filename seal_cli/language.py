@@ -122,7 +122,35 @@ class Parse:
 # The parser (grammar built once) and the lexicon of each library (cached)
 
 _PARSER: Lark | None = None
-_LEXICONS: dict[int, tuple[Library, Lexicon]] = {}
+_LEXICONS: dict[int, tuple[Library, Lexicon, Types]] = {}
+
+
+class Types:
+    """The library's taxonomy, asked the same few questions many times: memoised."""
+
+    def __init__(self, library: Library) -> None:
+        self.taxonomy = library.taxonomy
+        self._is_a: dict[tuple[str, str], bool | None] = {}
+        self._open: dict[str, bool] = {}
+
+    def is_a(self, cls: str, type_: str) -> bool | None:
+        key = (cls, type_)
+        if key not in self._is_a:
+            self._is_a[key] = self.taxonomy.is_a(cls, type_)
+        return self._is_a[key]
+
+    def is_open(self, type_: str) -> bool:
+        if type_ not in self._open:
+            self._open[type_] = self.taxonomy.is_open(type_)
+        return self._open[type_]
+
+    def is_person(self, type_: str) -> bool:
+        """A type only people belong to (``person``)."""
+        return self.is_a("person", type_) is True and not self.is_open(type_)
+
+    def is_location(self, type_: str) -> bool:
+        """A type rooms belong to (``location``): where things are, not what they are."""
+        return not self.is_open(type_) and self.is_a("room", type_) is True
 
 
 def command_parser(strict: bool = False) -> Lark:
@@ -150,13 +178,14 @@ def command_parser(strict: bool = False) -> Lark:
     return parser
 
 
-def lexicon_of(library: Library) -> Lexicon:
+def lexicon_of(library: Library) -> tuple[Lexicon, Types]:
+    """The library's lexicon and memoised types (made once per library)."""
     found = _LEXICONS.get(id(library))
     if found is not None and found[0] is library:
-        return found[1]
-    lexicon = Lexicon.of(library)
-    _LEXICONS[id(library)] = (library, lexicon)
-    return lexicon
+        return found[1], found[2]
+    lexicon, types = Lexicon.of(library), Types(library)
+    _LEXICONS[id(library)] = (library, lexicon, types)
+    return lexicon, types
 
 
 # ---------------------------------------------------------------------------------------------
@@ -168,7 +197,7 @@ def parse_command(text: str, library: Library, vocabulary: Vocabulary | None = N
     what was expected) when it cannot be parsed."""
     from lark.exceptions import UnexpectedInput
 
-    lexicon = lexicon_of(library)
+    lexicon, types = lexicon_of(library)
     if not text.strip():
         raise CommandError("empty command: expected a verb, such as " + _some_verbs(lexicon), 1, text,
                            ["a verb"])
@@ -180,7 +209,7 @@ def parse_command(text: str, library: Library, vocabulary: Vocabulary | None = N
         tree = command_parser().parse(words)
     except UnexpectedInput as error:
         raise _explain(error, text, words, lexicon) from None
-    return Builder(text, library, vocabulary, {w.start: w for w in words}).command(tree)
+    return Builder(text, library, types, vocabulary, {w.start: w for w in words}).command(tree)
 
 
 def parse_lines(lines: Iterable[str], library: Library,
@@ -323,11 +352,11 @@ _ATTACHABLE = _LOCATIVE + ("with", "without", "about", "for", "via", "of")
 class Builder:
     """Turns the tree of one command into frames (see the module docstring)."""
 
-    def __init__(self, text: str, library: Library, vocabulary: Vocabulary | None,
+    def __init__(self, text: str, library: Library, types: Types, vocabulary: Vocabulary | None,
                  words: Mapping[int, Word]) -> None:
         self.text = text
         self.library = library
-        self.taxonomy = library.taxonomy
+        self.taxonomy = types
         self.vocabulary = vocabulary
         self.words = words
         self.frames: list[Evoked] = []
@@ -339,7 +368,7 @@ class Builder:
 
     def command(self, tree: Tree) -> Parse:
         for clause in tree.children:
-            if getattr(clause, "data", None) == "clause":
+            if str(getattr(clause, "data", "")) == "clause":
                 self.clause(self.read_clause(clause))
         return Parse(self.text, tuple(self.frames))
 
@@ -373,9 +402,10 @@ class Builder:
 
         if not isinstance(node, Tree):
             return self.word(node)
-        if node.data == "pp":
+        data = str(node.data)           # a lark Token: compare it as a plain str (faster)
+        if data == "pp":
             return self.pp(node)
-        if node.data == "predicate":
+        if data == "predicate":
             return self.predicate(node)
         return self.np(node)
 
@@ -391,7 +421,9 @@ class Builder:
         return Word(self.text[first.start:end], first.start, end, "PREDICATE", first.info)
 
     def np(self, node: Any) -> NP:
-        kind = node.data
+        from lark import Tree
+
+        kind = str(node.data)
         if kind == "pron_np":
             w = self.word(node.children[0])
             low = w.lower
@@ -405,14 +437,15 @@ class Builder:
         # det_np / bare_np
         np = NP(-1, -1, None)
         for child in node.children:
-            if getattr(child, "data", None) == "nominal":
+            data = str(child.data) if isinstance(child, Tree) else None
+            if data == "nominal":
                 words = [self.word(t) for t in child.children]
                 np.head = words[-1]
                 np.mods = [w for w in words[:-1] if w.tag == "WORD"]
                 np.results = [w for w in words[:-1] if w.tag == "RESULT"]
                 np.start = words[0].start if np.start < 0 else np.start
                 np.end = words[-1].end
-            elif getattr(child, "data", None) == "postmod":
+            elif data == "postmod":
                 self.postmod(np, child)
             else:
                 w = self.word(child)
@@ -584,10 +617,10 @@ class Builder:
         return None
 
     def is_location(self, type_: str) -> bool:
-        return not self.taxonomy.is_open(type_) and self.taxonomy.is_a("room", type_) is True
+        return self.taxonomy.is_location(type_)
 
     def is_person_type(self, type_: str) -> bool:
-        return self.taxonomy.is_a("person", type_) is True and not self.taxonomy.is_open(type_)
+        return self.taxonomy.is_person(type_)
 
     def class_or_head(self, np: NP) -> str:
         if self.vocabulary is not None:

@@ -30,8 +30,9 @@ from functools import lru_cache
 
 from .errors import SealError, Where
 from .library import Library
+from .morphology import gerund_lemma, is_adjective, is_plural, noun_lemma, participles, verb_lemma
 
-__all__ = ["MAX_LENGTH", "CommandError", "Lexicon", "Word", "lemma", "noun_lemma", "tokenize"]
+__all__ = ["MAX_LENGTH", "CommandError", "Lexicon", "Word", "is_plural", "noun_lemma", "tokenize", "verb_lemma"]
 
 MAX_LENGTH = 1000
 """The longest command accepted, in characters (a spoken command is far shorter)."""
@@ -178,73 +179,6 @@ def _printable(text: str) -> str:
 
 
 # ---------------------------------------------------------------------------------------------
-# Lemmas (lemminflect), cached
-
-
-@lru_cache(maxsize=65536)
-def noun_lemma(word: str) -> str:
-    """The singular of a noun (``"knives"`` → ``"knife"``); unknown words by lemminflect's rules."""
-    import lemminflect
-
-    lower = word.lower()
-    if len(lower) <= 2 or not lower.isalpha():
-        return lower
-    lemmas = lemminflect.getAllLemmas(lower).get("NOUN") or lemminflect.getAllLemmasOOV(lower, "NOUN").get("NOUN")
-    if not lemmas:
-        return lower
-    if lower in lemmas:     # "glasses" is a noun of its own, and so is "people"
-        return lower if not lower.endswith("s") or lower.endswith("ss") else lemmas[0] if lemmas[0] != lower \
-            else lower
-    return lemmas[0]
-
-
-@lru_cache(maxsize=65536)
-def lemma(word: str) -> str:
-    """The verb lemma of a word (``"heated"`` → ``"heat"``); the word itself when it is not a verb form."""
-    import lemminflect
-
-    lemmas = lemminflect.getAllLemmas(word.lower()).get("VERB")
-    return lemmas[0] if lemmas else word.lower()
-
-
-@lru_cache(maxsize=65536)
-def is_plural(word: str) -> bool:
-    """Whether a noun is plural ("apples", "people"): its singular differs from it."""
-    lower = word.lower()
-    if not lower.isalpha() or len(lower) <= 2:
-        return False
-    if lower in ("people", "persons", "children", "men", "women"):
-        return True
-    return noun_lemma(lower) != lower and not lower.endswith("ss")
-
-
-@lru_cache(maxsize=65536)
-def _gerund_lemma(word: str) -> str | None:
-    """The verb of an -ing form ("wearing" → "wear"), or None."""
-    import lemminflect
-
-    lower = word.lower()
-    if not lower.endswith("ing") or len(lower) < 5:
-        return None
-    lemmas = lemminflect.getAllLemmas(lower).get("VERB")
-    return lemmas[0] if lemmas else None
-
-
-def _is_adjective(word: str) -> bool:
-    import lemminflect
-
-    return "ADJ" in lemminflect.getAllLemmas(word)
-
-
-def _participles(unit: str) -> set[str]:
-    """Past participles and past forms of a one-word verb: ``heat`` → {heated}, ``light`` → {lit, lighted}."""
-    import lemminflect
-
-    forms = lemminflect.getAllInflections(unit, upos="VERB") or lemminflect.getAllInflectionsOOV(unit, upos="VERB")
-    return {f.lower() for tag in ("VBN", "VBD") for f in forms.get(tag, ())}
-
-
-# ---------------------------------------------------------------------------------------------
 # The lexicon of one library
 
 
@@ -321,12 +255,12 @@ def _result_words(library: Library) -> dict[str, tuple[str, str]]:
         if not effects:
             continue
         for fact in effects:
-            if fact.predicate.isalpha() and _is_adjective(fact.predicate):
+            if fact.predicate.isalpha() and is_adjective(fact.predicate):
                 results.setdefault(fact.predicate, (frame.name, frame.lexical_units[0].text))
         for unit in frame.lexical_units:
             words = unit.words
             if len(words) == 1 or all(w in PARTICLES for w in words[1:]):
-                for form in _participles(words[0]):
+                for form in participles(words[0]):
                     if form not in _CLOSED:
                         results.setdefault(form, (frame.name, unit.text))
     return results
@@ -342,8 +276,10 @@ _CLOSED = (DETERMINERS | POSSESSIVES | PRONOUNS | WH_WORDS | BE_WORDS | PARTICLE
 
 def _match_phrase(words: Sequence[Word], i: int, table: Iterable[str] | Mapping[str, object]) -> int:
     """How many words of a multiword (or one-word) phrase of ``table`` start at ``i`` (0: none)."""
-    best = 0
     first = words[i].lower
+    if first not in _PHRASES:
+        return 1 if first in table else 0
+    best = 0
     for phrase in _PHRASES.get(first, ()):
         if phrase in table:
             parts = phrase.split()
@@ -374,6 +310,13 @@ class Tagger:
         self.lexicon = lexicon
         self.words = words
         self.out: list[Word] = []
+        self._verbs: dict[int, tuple[str, int, int | None] | None] = {}
+
+    def verb_at(self, i: int) -> tuple[str, int, int | None] | None:
+        """The lexical unit starting at word ``i`` (memoised: the tagger asks more than once)."""
+        if i not in self._verbs:
+            self._verbs[i] = self.lexicon.verb_at(self.words, i, self.clause_end(i + 1))
+        return self._verbs[i]
 
     # -- helpers -----------------------------------------------------------------------------
     def text_of(self, start: int, end: int) -> str:
@@ -396,7 +339,7 @@ class Tagger:
             break
         if i >= len(self.words):
             return False
-        return self.lexicon.verb_at(self.words, i, self.clause_end(i + 1)) is not None
+        return self.verb_at(i) is not None
 
     def np_starts(self, i: int) -> bool:
         if i >= len(self.words):
@@ -430,7 +373,7 @@ class Tagger:
                 n = _match_phrase(words, i, POLITE)
                 if n and not (n == 1 and low in ("and", "then") and not self.out) and (
                         low in ("to", "and", "then") or self.verb_after(i + n) or i + n >= len(words)
-                        or not self.lexicon.verb_at(words, i, self.clause_end(i + 1))):
+                        or not self.verb_at(i)):
                         self.out.append(_merge(words, i, n, "POLITE"))
                         i += n
                         continue
@@ -438,7 +381,7 @@ class Tagger:
                     self.out.append(_merge(words, i, 2, "POLITE"))      # "Robin, bring me a cup"
                     i += 2
                     continue
-                found = self.lexicon.verb_at(words, i, self.clause_end(i + 1))
+                found = self.verb_at(i)
                 if found:
                     unit, n, split = found
                     self.out.append(_merge(words, i, n, "VERB", unit))
@@ -576,7 +519,7 @@ class Tagger:
             self.out.append(Word(w.text, w.start, w.end, "DET" if low in DETERMINERS else "POSS"))
             return 1
         # open-class words
-        gerund = _gerund_lemma(low)
+        gerund = gerund_lemma(low)
         if gerund and prev in ("WORD", "NAME", "PRON", "BE") and not (prev == "WORD" and self._premodifier()):
             tag = "VBG_T" if self.np_starts(i + 1) and nxt not in PARTICLES else \
                 "VBG_P" if nxt in PREPOSITIONS and self.np_starts(i + 2) else "VBG_I"

@@ -1,0 +1,129 @@
+"""Lemmas, singulars and inflections of English words, from lemminflect's dictionaries.
+
+lemminflect ships two lookup tables (``lemma_lu.csv.gz``: word → lemmas by part of speech;
+``infl_lu.csv.gz``: lemma → inflected forms) and a learned model for words they lack. Its own
+loader turns each table into Python dictionaries, which takes most of a second; ``seal parse``
+starts many times a minute from scripts, so this module reads the same tables as sorted lines
+and looks words up by bisection (a few milliseconds to open). Words the tables lack go to
+lemminflect's model, imported only then.
+
+    word table line:  ``knives,noun,knife``            (word, category, lemmas separated by /)
+    lemma table line: ``light,verb,lit/lighted,lit,lighting,lights``   (VBD, VBN, VBG, VBZ)
+"""
+
+from __future__ import annotations
+
+import bisect
+import gzip
+import importlib.util
+from functools import lru_cache
+from pathlib import Path
+
+__all__ = ["gerund_lemma", "is_adjective", "is_plural", "noun_lemma", "participles", "verb_lemma"]
+
+
+class _Table:
+    """A lemminflect table as sorted lines, looked up by word."""
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+        self._lines: list[str] | None = None
+
+    @property
+    def lines(self) -> list[str]:
+        if self._lines is None:
+            spec = importlib.util.find_spec("lemminflect")
+            folder = Path(next(iter(spec.submodule_search_locations or ()))) if spec else Path()
+            with gzip.open(folder / "resources" / self.name, "rt", encoding="utf-8") as handle:
+                lines = handle.read().split("\n")
+            lines.sort()
+            self._lines = lines
+        return self._lines
+
+    def entries(self, word: str) -> list[list[str]]:
+        """``[category, field, ...]`` for each line of ``word``."""
+        lines = self.lines
+        key = word + ","
+        found = []
+        i = bisect.bisect_left(lines, key)
+        while i < len(lines) and lines[i].startswith(key):
+            found.append(lines[i][len(key):].split(","))
+            i += 1
+        return found
+
+
+_WORDS = _Table("lemma_lu.csv.gz")
+_LEMMAS = _Table("infl_lu.csv.gz")
+
+
+def _lemmas(word: str, category: str) -> tuple[str, ...]:
+    for entry in _WORDS.entries(word):
+        if entry[0] == category and len(entry) > 1:
+            return tuple(entry[1].split("/"))
+    return ()
+
+
+def _oov(word: str, upos: str) -> tuple[str, ...]:
+    import lemminflect
+
+    return tuple(lemminflect.getAllLemmasOOV(word, upos).get(upos, ()))
+
+
+@lru_cache(maxsize=65536)
+def noun_lemma(word: str) -> str:
+    """The singular of a noun (``"knives"`` → ``"knife"``, ``"people"`` stays); lower case."""
+    lower = word.lower()
+    if len(lower) <= 2 or not lower.isalpha():
+        return lower
+    lemmas = _lemmas(lower, "noun")
+    if not lemmas:
+        if lower.endswith("s") and not lower.endswith("ss") and not _WORDS.entries(lower):
+            lemmas = _oov(lower, "NOUN")        # "cheezits": the model, not a guess
+        if not lemmas:
+            return lower
+    if lower in lemmas and (not lower.endswith("s") or lower.endswith("ss") or len(lemmas) == 1):
+        return lower                            # "people", "glass"; but "glasses" → "glass"
+    return lemmas[0]
+
+
+@lru_cache(maxsize=65536)
+def is_plural(word: str) -> bool:
+    """Whether a noun is plural ("apples", "people", "knives")."""
+    lower = word.lower()
+    if lower in ("people", "persons", "children", "men", "women"):
+        return True
+    return noun_lemma(lower) != lower
+
+
+@lru_cache(maxsize=65536)
+def verb_lemma(word: str) -> str | None:
+    """The verb a word is a form of (``"heated"`` → ``"heat"``), or None."""
+    lemmas = _lemmas(word.lower(), "verb")
+    return lemmas[0] if lemmas else None
+
+
+@lru_cache(maxsize=65536)
+def gerund_lemma(word: str) -> str | None:
+    """The verb of an -ing form (``"wearing"`` → ``"wear"``), or None."""
+    lower = word.lower()
+    if not lower.endswith("ing") or len(lower) < 5:
+        return None
+    return verb_lemma(lower)
+
+
+@lru_cache(maxsize=65536)
+def is_adjective(word: str) -> bool:
+    """Whether lemminflect lists the word as an adjective ("hot", "clean")."""
+    return any(entry[0] == "adj" for entry in _WORDS.entries(word.lower()))
+
+
+@lru_cache(maxsize=4096)
+def participles(verb: str) -> frozenset[str]:
+    """Past forms and past participles of a verb: ``light`` → {lit, lighted}, ``cut`` → {cut}."""
+    for entry in _LEMMAS.entries(verb.lower()):
+        if entry[0] == "verb" and len(entry) >= 3:
+            return frozenset(f for field in entry[1:3] for f in field.split("/") if f)
+    import lemminflect
+
+    forms = lemminflect.getAllInflectionsOOV(verb, upos="VERB")
+    return frozenset(f.lower() for tag in ("VBN", "VBD") for f in forms.get(tag, ()))
