@@ -27,7 +27,7 @@ What happened is reported to observers (``observe=callable(Record)``) and kept i
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
@@ -133,7 +133,8 @@ class Agent:
 
     def __init__(self, scene: Scene, library: Library, policy: Policy, *, rng: np.random.Generator,
                  budget: Budget | None = None, planner: Callable[..., list[Binding]] | None = None,
-                 observers: Sequence[Callable[[Record], None]] = (), look_every: float = 1.0) -> None:
+                 observers: Sequence[Callable[[Record], None]] = (), look_every: float = 1.0,
+                 classes: Mapping[str, str] | None = None) -> None:
         self.scene = scene
         self.world = scene.world
         self.grid = scene.grid
@@ -152,10 +153,14 @@ class Agent:
         self.placed: set[str] = set()
         """Things the robot has put where a frame wanted them: not to be taken away again."""
         self.chosen: dict[str, str] = {}
-        """The instance chosen for each class, kept across frames (open *this* cabinet, then put into it)."""
+        """The instance chosen for each name a frame uses, kept across frames (open *this* cabinet, then put into it)."""
         self.looks: list[tuple[float, float, float]] = []
+        self.classes = {class_key(k): class_key(v) for k, v in (classes or {}).items()}
+        """The class of each thing a command names that is not a class itself (``apple_2``)."""
         self.state = State()
-        self.remaining: list[Binding] = []
+        self.steps: list[Binding] = []
+        """The plan being executed; ``steps[index]`` is the frame at hand."""
+        self.index = 0
         self._learn_places(bool(getattr(policy, "oracle", False)))
 
     # -- knowledge ---------------------------------------------------------------------------
@@ -198,13 +203,21 @@ class Agent:
 
     # -- the run -----------------------------------------------------------------------------
 
+    @property
+    def remaining(self) -> list[Binding]:
+        return self.steps[self.index:]
+
     def initial_state(self) -> State:
         """The semantic state the robot starts from: its hand, and which receptacles are open."""
         held = self.held()
         facts = {Fact("holding", (held.key,))} if held else {Fact("hand_empty")}
         closable = {i.key for i in self.world.items.values() if i.openable}
         facts |= {Fact("open", (i.key,)) for i in self.world.items.values() if i.openable and i.is_open}
-        return State.of(facts, self.library.taxonomy, closable=closable)
+        return State.of(facts, self.library.taxonomy, closable=closable, classes=self.classes)
+
+    def class_of(self, value: str) -> str:
+        key = class_key(value)
+        return self.classes.get(key, key)
 
     def run(self, commanded: Sequence[Binding]) -> Result:
         """Plan the commanded frames, then search and execute until done or out of budget."""
@@ -217,19 +230,19 @@ class Agent:
         except SealError as error:
             self.say("fail", f"cannot plan: {error.message}")
             return self._result(False, f"cannot plan: {error.message}", [])
-        self.remaining = steps
+        self.steps, self.index = steps, 0
         plan = [str(b) for b in steps]
         self.say("plan", "plan: " + ", ".join(plan) if plan else "nothing to do", plan=plan)
         executed: list[str] = []
         replans = 0
-        while steps:
-            binding = steps[0]
+        while self.index < len(self.steps):
+            binding = self.steps[self.index]
             self.say("frame", f"{binding}", frame=str(binding))
             outcome = self.execute(binding)
             if outcome.ok:
                 self.state = self.state.apply(binding)
                 executed.append(str(binding))
-                steps.pop(0)
+                self.index += 1
                 if todo and binding == todo[0]:
                     todo.pop(0)
                 self.say("done", f"done: {binding}", frame=str(binding))
@@ -249,7 +262,7 @@ class Agent:
             except SealError as error:
                 self.say("give_up", f"cannot replan: {error.message}")
                 return self._result(False, f"cannot replan: {error.message}", plan, executed)
-            self.remaining = steps
+            self.steps, self.index = steps, 0
             self.say("replan", f"{outcome.message}; replans: " + ", ".join(str(b) for b in steps))
         return self._result(True, "done", plan, executed)
 
@@ -289,18 +302,20 @@ class Agent:
         """The instance that an element's value (a class, or an item's name) denotes now."""
         if value in self.world.items and value in self.known:
             return value
+        name = class_key(value)
+        key = self.class_of(value)
+        others = {i for n, i in self.chosen.items() if n != name and self.class_of(n) == key}
         held = self.held()
-        key = class_key(value)
-        if held is not None and (held.key == key or held.id == value):
+        if held is not None and held.key == key and held.id not in others:
             return held.id
-        candidates = [k for k in self.instances(key) if k.id not in self.unreachable
+        candidates = [k for k in self.instances(key) if k.id not in self.unreachable and k.id not in others
                       and not self.world.held_chain(k.id)]
         taking = role == "theme" and any(a.name == "pick" for a in binding.actions)
         if taking:
             candidates = [k for k in candidates if k.id not in self.placed]
         if not candidates:
             return None
-        previous = self.chosen.get(key)
+        previous = self.chosen.get(name)
         if previous is not None and any(k.id == previous for k in candidates):
             return previous
         choose = getattr(self.policy, "choose", None)
@@ -475,7 +490,6 @@ class Agent:
             if binding.frame.name != "Place" or binding.elements.get("goal") is not None:
                 self.placed.add(args[0])
         elif name == "pick":
-            self.chosen[self.world.items[args[0]].key] = args[0]
             self.placed.discard(args[0])
         elif name == "open":
             self.opened.add(args[0])
@@ -583,19 +597,128 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
 
 
 class SeFMPolicy:
-    """The SeFM searcher: look where the current frame's belief is densest (see :mod:`seal_cli.search`)."""
+    """The SeFM searcher: observe the best mode of the current frame's belief.
+
+    The beliefs (:class:`seal_cli.beliefs.SeFM`) are over every frame of the plan and every object
+    they name, built from the map's priors and updated with each look. To search for what the
+    current frame needs, the robot takes the frame's modes, heaviest first, and goes where it
+    can *observe* one: if the mode lies at a closed receptacle it has not looked into, it goes
+    and opens it; otherwise it goes to the nearest pose (by path) from which the mode is in view.
+    A view already taken is not taken again; when every mode has been looked at, it falls back
+    to the nearest frontier (:class:`~seal_cli.baselines.CoveragePolicy`), so the search is
+    complete. ``priors=False`` is the ``uniform`` ablation; :class:`~seal_cli.baselines.
+    ObjectOnlyPolicy` looks at the object's belief instead of the frame's.
+    """
 
     name = "sefm"
+    use_frames = True
 
-    def __init__(self, *, particles: int = 200, priors: bool = True) -> None:
+    def __init__(self, *, particles: int = 200, priors: bool = True, bandwidth: float = 0.5,
+                 distance_scale: float = 4.0) -> None:
         self.particles = particles
         self.priors = priors
+        self.bandwidth = bandwidth
+        self.distance_scale = distance_scale
+        """A view's utility is its mode's weight × exp(−path / scale): far modes must be heavier."""
 
     def begin(self, agent: Agent) -> None:
-        raise SealError("the SeFM policy needs seal_cli.beliefs, which is not available yet")
+        from .baselines import CoveragePolicy
+
+        self.fallback = CoveragePolicy()
+        self.fallback.begin(agent)
+        self.history: list[tuple[tuple[float, float, float], tuple[Detection, ...]]] = []
+        self.tried: set[tuple[Cell, str | None]] = set()
+        self.sefm: Any = None
+        self.key: tuple[str, ...] = ()
+        self.map = agent.scene.map
+        if not self.priors:
+            from dataclasses import replace
+
+            self.map = replace(self.map, priors={})
+
+    def _state(self, agent: Agent) -> State:
+        """The robot's state for SeFM: its hand, and which receptacles *by name* it knows are open."""
+        held = agent.held()
+        facts = {Fact("holding", (held.key,))} if held else {Fact("hand_empty")}
+        facts |= {Fact("open", (i.id,)) for i in agent.world.items.values()
+                  if i.openable and i.is_open and i.id in agent.known}
+        facts |= {f for f in agent.state.facts if f.predicate not in ("holding", "hand_empty", "open")}
+        return State.of(facts, agent.library.taxonomy, closable={i.id for i in agent.world.items.values()
+                                                                 if i.openable}, classes=agent.classes)
+
+    def _beliefs(self, agent: Agent) -> Any:
+        """SeFM over the current plan (rebuilt, and the looks replayed, when the plan changes)."""
+        from .beliefs import SeFM, SeFMConfig
+
+        bindings = [b.frame.bind({r: agent.class_of(v) for r, v in b.values}) for b in agent.steps]
+        key = tuple(str(b) for b in bindings)
+        if self.sefm is None or key != self.key:
+            state = self._state(agent)
+            self.sefm = SeFM(self.map, bindings, state, agent.rng,
+                             SeFMConfig(particles=self.particles, bandwidth=self.bandwidth))
+            self.key = key
+            for pose, seen in self.history:
+                self.sefm.update(pose, seen, state)
+        return self.sefm
 
     def observe(self, agent: Agent, detections: Sequence[Detection]) -> None:
-        pass
+        self.fallback.observe(agent, detections)
+        pose = agent.world.robot.pose
+        self.history.append((pose, tuple(detections)))
+        if self.sefm is not None:
+            self.sefm.update(pose, detections, self._state(agent))
+
+    def modes(self, agent: Agent, binding: Binding, target: str) -> list[tuple[tuple[float, float], float]]:
+        """Where the thing sought is believed to be: ``(point, weight)``, heaviest first."""
+        sefm = self._beliefs(agent)
+        sefm.update(agent.world.robot.pose, (), self._state(agent))
+        if self.use_frames:
+            summary = sefm.frame_summary(agent.index)
+        else:
+            summary = sefm.object_summary(agent.class_of(target))
+        modes = [(m.mean, m.weight) for m in summary.modes]
+        return sorted(modes, key=lambda mw: -mw[1]) or [(summary.best, 1.0)]
 
     def next_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
-        return None
+        field_ = agent.distances()
+        options: list[tuple[float, View]] = []
+        for point, weight in self.modes(agent, binding, target):
+            view = self._view_of(agent, point, field_)
+            if view is None or (view.cell, view.open) in self.tried:
+                continue
+            cost = float(field_[view.cell])
+            options.append((weight * math.exp(-cost / self.distance_scale), view))
+        if options:
+            view = max(options, key=lambda o: o[0])[1]
+        else:
+            fallback = self.fallback.next_view(agent, binding, target)
+            if fallback is None:
+                return None
+            view = View(fallback.cell, fallback.look_at, fallback.open, f"{fallback.why} (every mode seen)")
+        self.tried.add((view.cell, view.open))
+        return view
+
+    def _view_of(self, agent: Agent, point: tuple[float, float], field_: np.ndarray) -> View | None:
+        """How to observe a point: open the closed receptacle it lies at, or stand where it is in view."""
+        boxes = [k for k in agent.known.values() if not k.movable and k.openable and k.id not in agent.opened
+                 and not agent.world.items[k.id].is_open and self._at(agent, k, point)]
+        if boxes:
+            box = min(boxes, key=lambda k: math.dist(k.at, point))
+            cell = agent.stand_cell(box, field_)
+            if cell is not None:
+                return View(cell, box.at, open=box.id, why=f"opens {box.id}, where the belief is densest")
+        pts = agent.grid.free_points
+        cells = agent.grid.free_cells
+        seen = agent.world.sensor.visible(agent.world.robot.pose, np.asarray([point]))[0]
+        near = np.hypot(pts[:, 0] - point[0], pts[:, 1] - point[1]) <= min(agent.world.reach, agent.world.sensor.range)
+        costs = np.where(near, field_[cells[:, 0], cells[:, 1]], np.inf)
+        k = int(np.argmin(costs))
+        if not np.isfinite(costs[k]):
+            return None
+        why = "looks at the belief's best mode" + (" again, from nearer" if seen else "")
+        return View((int(cells[k, 0]), int(cells[k, 1])), point, why=why)
+
+    def _at(self, agent: Agent, box: Known, point: tuple[float, float]) -> bool:
+        place = agent.scene.map.place(box.id)
+        reach = place.reach if place is not None else agent.world.reach
+        return math.dist(box.at, point) <= reach + 0.25 or any(math.dist(a, point) <= 0.5 for a in box.access)

@@ -27,6 +27,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+
 from .errors import SealError, Where
 from .frames import Binding
 from .library import Library
@@ -306,7 +308,7 @@ def build_scene(episode: Episode, plan: FloorPlan, library: Library, priors: Map
     gx0, gy0, gx1, gy1 = occupancy.bounds
     bx0, by0, bx1, by1 = plan.bounds
     bounds = (min(gx0, bx0) - 0.5, min(gy0, by0) - 0.5, max(gx1, bx1) + 0.5, max(gy1, by1) + 0.5)
-    places = tuple(Place(i.id, i.key, i.at, openable=i.openable, reach=REACH)
+    places = tuple(Place(i.id, i.key, i.at, openable=i.openable, reach=_place_reach(i, grid))
                    for i in world.items.values() if not i.movable)
     movable = sorted({i.key for i in world.items.values() if i.movable})
     objects = tuple(ObjectTruth(i.key, i.at, i.parent) for i in world.items.values() if i.movable)
@@ -315,8 +317,19 @@ def build_scene(episode: Episode, plan: FloorPlan, library: Library, priors: Map
                   rooms=(Room.box(episode.scene_type, *bounds),), places=places,
                   priors=scene_priors(priors, plan, movable), objects=objects,
                   robot=MapRobot(episode.start), sensor=MapSensor(range=s.range, fov_deg=s.fov), grid=occupancy)
-    vocabulary = tuple(sorted({i.key for i in world.items.values()} | plan.classes))
+    vocabulary = tuple(sorted({i.key for i in world.items.values()}))
     return Scene(world, the_map, grid, vocabulary, f"{episode.task_dir} ({episode.task_id})")
+
+
+def _place_reach(item: Item, grid: Grid) -> float:
+    """How far from a receptacle's pivot the robot stands to use it, as the map's ``reach``: the
+    nearest free cell's distance plus one cell (never more than the arm's reach). A place's prior
+    mass, and what a shut place may hide, is spread over those cells only."""
+    pts = grid.free_points
+    nearest = float(np.min(np.hypot(pts[:, 0] - item.at[0], pts[:, 1] - item.at[1])))
+    for a in item.access:
+        nearest = min(nearest, math.dist(a, item.at))
+    return min(REACH, nearest + GRID + 0.05)
 
 
 def build_world(episode: Episode, plan: FloorPlan, library: Library, *,
