@@ -379,6 +379,7 @@ class Builder:
         for child in phrase.children[1:]:
             items.append(self.item(child))
         items = self.coordinate(items)
+        items = self.containing(items)
         objects: list[NP] = []
         while items and (isinstance(items[0], NP) or isinstance(items[0], Word) and items[0].tag == "PARTICLE"
                          and objects == [] and len(items) > 1 and isinstance(items[1], NP)):
@@ -499,6 +500,25 @@ class Builder:
             i += 1
         return out
 
+    def containing(self, items: list[Any]) -> list[Any]:
+        """Read "a pan with a spoon in it": the spoon is a content of the pan (and "in it" no goal)."""
+        out: list[Any] = []
+        i = 0
+        while i < len(items):
+            item = items[i]
+            nxt = items[i + 1] if i + 1 < len(items) else None
+            host = out[-1].np if out and isinstance(out[-1], PP) else out[-1] if out and isinstance(out[-1], NP) \
+                else None
+            if (host is not None and isinstance(item, PP) and item.prep == "with" and isinstance(nxt, PP)
+                    and nxt.prep in ("in", "on", "inside") and nxt.np.pronoun in ("it", "them")):
+                host.contents.append(item.np)
+                host.end = max(host.end, nxt.np.end)
+                i += 2
+                continue
+            out.append(item)
+            i += 1
+        return out
+
     def message(self, items: list[Any]) -> NP | None:
         """A question said as the message ("tell me *what day is today*"): from the wh-word on,
         up to a final "to <person>" phrase. "how many" is no message (it asks to count)."""
@@ -589,7 +609,7 @@ class Builder:
         """The element a prepositional phrase fills in this frame, or None (it describes a noun)."""
         have = frame.roles
         np = pp.np
-        person = self.kind(np, frame, "recipient") == "person"
+        person = self.kind(np, frame, "recipient" if "recipient" in have else None) == "person"
         if pp.prep in _TO or pp.prep == "for":
             options = ["recipient", "goal"] if person else ["goal"] if pp.prep != "for" else []
         elif pp.prep in _FROM:
@@ -629,7 +649,7 @@ class Builder:
                 return found
         return np.head_text
 
-    def kind(self, np: NP, frame: Frame, role: str) -> str:
+    def kind(self, np: NP, frame: Frame | None, role: str | None) -> str:
         if np.kind != "pronoun":
             return np.kind
         antecedent = self.antecedent(np, frame, role)

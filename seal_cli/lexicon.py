@@ -99,6 +99,8 @@ POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "wi
                     "let's", "be sure to", "make sure to", "remember to", "go and", "come and"])
 END_MARKS = frozenset(".!?")
 HERE_WORDS = frozenset(["here", "there", "over here", "over there"])
+_QUANTIFIERS = frozenset(["one", "two", "three", "four", "both", "all", "some", "each", "any", "none", "most",
+                          "either", "neither", "several", "many", "few"])
 
 _PHRASES: dict[str, tuple[str, ...]] = {}
 for _table in (PREPOSITIONS, POLITE, SEPARATOR_WORDS, NUMBERS, HERE_WORDS):
@@ -139,6 +141,7 @@ class Word:
 _TOKEN = re.compile(r"""
     (?P<word>[^\W\d_]+(?:['’\-][^\W\d_]+)*|\d+(?:\.\d+)?)   # letters, inner apostrophes and hyphens; numbers
   | (?P<poss>['’]s\b)                                      # possessive 's (and is)
+  | (?P<amp>&)
   | (?P<punct>[,;:.!?]+)
   | (?P<quote>["“”'‘’`()\[\]])                             # quotes and brackets are ignored
   | (?P<space>\s+)
@@ -164,6 +167,8 @@ def tokenize(text: str) -> list[Word]:
         kind = match.lastgroup
         if kind == "word":
             words.append(Word(match.group(), match.start(), match.end()))
+        elif kind == "amp":
+            words.append(Word("and", match.start(), match.end()))
         elif kind == "poss":
             words.append(Word("'s", match.start(), match.end()))
         elif kind == "punct":
@@ -206,12 +211,18 @@ class Lexicon:
         """The lexical unit that starts at word ``i``: (unit, words it covers contiguously,
         index of a split particle or None). Contiguous matches are preferred, longest first;
         "pick the cup up" splits "pick up" when "up" stands alone before the clause ends."""
-        candidates = self.units.get(words[i].lower)
-        if not candidates:
-            return None
+        first = words[i].lower
+        candidates = self.units.get(first)
+        if not candidates:                       # "putting", "placed": a form of a lexical unit
+            base = verb_lemma(first) if first.isalpha() else None
+            candidates = self.units.get(base) if base and base != first else None
+            if not candidates:
+                return None
         for unit in candidates:
             n = len(unit)
             if i + n <= len(words) and all(words[i + k].lower == unit[k] for k in range(1, n)):
+                if i + n < len(words) and words[i + n].lower in ("of", "'s"):
+                    return None                  # "slice of apple", "the light's": a noun
                 if n > 1 or not self._split(words, i, stop, candidates):
                     return " ".join(unit), n, None
                 break
@@ -236,7 +247,7 @@ def _stands_alone(words: Sequence[Word], j: int) -> bool:
     if j + 1 >= len(words):
         return True
     after = words[j + 1].lower
-    return after in (",", ".", "!", "?", ";", "and", "then", "please") or after in PREPOSITIONS
+    return after in (",", ".", "!", "?", ";", "please") or after in PREPOSITIONS or after in SEPARATOR_WORDS
 
 
 def _result_words(library: Library) -> dict[str, tuple[str, str]]:
@@ -340,6 +351,17 @@ class Tagger:
             return False
         return self.verb_at(i) is not None
 
+    def purpose(self, i: int) -> bool:
+        """Whether "to" at ``i`` starts a clause of purpose ("... to put it in the sink")."""
+        if i + 2 >= len(self.words) or not self.out or self.out[-1].tag in ("VERB", "PREP"):
+            return False
+        found = self.verb_at(i + 1)
+        if not found:
+            return False
+        after = i + 1 + found[1]
+        return after < len(self.words) and (self.words[after].lower in DETERMINERS or self.words[after].lower in
+                                            POSSESSIVES or self.words[after].lower in PRONOUNS)
+
     def np_starts(self, i: int) -> bool:
         if i >= len(self.words):
             return False
@@ -401,6 +423,11 @@ class Tagger:
                 expect_verb = True
                 i += 1
                 continue
+            if low == "to" and self.purpose(i):
+                self.out.append(Word(w.text, w.start, w.end, "SEP"))     # "take the remote to turn on the lamp"
+                expect_verb = True
+                i += 1
+                continue
             n = _match_phrase(words, i, SEPARATOR_WORDS)
             if n:
                 step = self.separator(i, n)
@@ -432,6 +459,8 @@ class Tagger:
             self.out.append(_merge(words, i, j - i, "SEP"))
             return j - i
         nxt = words[j].lower
+        if low == "," and gerund_lemma(nxt) and self.prev_tag() in ("WORD", "NAME"):
+            return 1                # "a pan, containing a knife, in the fridge"
         if low in (",", ";", ":") and (nxt in PREPOSITIONS or nxt == "please"):
             return 1                # "Put a pan with a spoon in it, in the sink"
         if low in ("then", "after that", "afterwards", "finally", "after", "before", "while", "once done",
@@ -474,6 +503,14 @@ class Tagger:
             else:
                 self.out.append(Word(w.text, w.start, w.end, "BE"))
             return 1
+        if not in_np and low in _QUANTIFIERS and nxt == "of" and i + 2 < len(words) and \
+                (words[i + 2].lower in DETERMINERS or words[i + 2].lower in POSSESSIVES):
+            number = NUMBERS.get(low)            # "both of the cups", "one of the books"
+            self.out.append(_merge(words, i, 2, "DET" if number is None else "NUM", number))
+            return 2
+        if low in PARTICLES and nxt == "of":      # "the back of the toilet"
+            self.out.append(Word(w.text, w.start, w.end, "WORD"))
+            return 1
         if not in_np:
             n = _match_phrase(words, i, HERE_WORDS)
             if n and not (low == "there" and nxt in BE_WORDS):
@@ -514,7 +551,7 @@ class Tagger:
         elif low == "of":
             self.out.append(Word(w.text, w.start, w.end, "OF"))
             return 1
-        elif low in DETERMINERS or low in POSSESSIVES:
+        elif (low in DETERMINERS or low in POSSESSIVES) and self._noun_follows(i + 1):
             self.out.append(Word(w.text, w.start, w.end, "DET" if low in DETERMINERS else "POSS"))
             return 1
         # open-class words
