@@ -23,6 +23,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -49,9 +50,14 @@ class Prior:
     masses: Mapping[str, float] = field(default_factory=dict)
     """The resolved masses per target (``"_rest"`` for what is spread over all free space)."""
 
+    @cached_property
+    def _cdf(self) -> NDArray[np.float64]:
+        return np.cumsum(self.weights)
+
     def sample(self, n: int, rng: np.random.Generator) -> NDArray[np.float64]:
-        """``n`` points drawn from the prior, shape (n, 2)."""
-        cells = rng.choice(len(self.weights), size=n, p=self.weights)
+        """``n`` points drawn from the prior, shape (n, 2): a cell by weight, a point uniform in it."""
+        cdf = self._cdf
+        cells = np.minimum(np.searchsorted(cdf, rng.random(n) * cdf[-1], side="right"), len(cdf) - 1)
         return self.map.jitter_in_cells(rng, cells)
 
     def density(self, points: ArrayLike) -> NDArray[np.float64]:

@@ -395,3 +395,48 @@ def test_any_map_file_gives_problems_or_a_map_never_a_crash(tmp_path: Path, data
     assert all(isinstance(p, SealError) for p in problems)
     if not problems:
         assert isinstance(load_map(path), Map)
+
+
+# -- seal map and seal bench maps ------------------------------------------------------------------------
+def test_seal_map_shows_rooms_priors_places_and_objects() -> None:
+    result = CliRunner().invoke(app, ["map", "apartment"])
+    assert result.exit_code == 0, result.output
+    for text in ("apartment", "family_room", "fridge_1", "closed", "spoon", "counter_1", "p_detect 0.9"):
+        assert text in result.output
+
+
+def test_seal_map_json_and_png_read_back(tmp_path: Path, apartment: Map) -> None:
+    import matplotlib.image
+
+    png = tmp_path / "apartment.png"
+    result = CliRunner().invoke(app, ["map", str(APARTMENT), "--json", "--png", str(png)])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert data["name"] == "apartment" and [r["name"] for r in data["rooms"]] == list(apartment.room_names)
+    assert data["priors"]["cup"]["masses"] == {"family_room": 0.5, "bedroom": 0.5}
+    assert data["priors"]["cup"]["rooms"]["bedroom"] == pytest.approx(apartment.prior("cup").room_masses()["bedroom"],
+                                                                      abs=1e-4)
+    assert data["objects"][0] == {"class": "spoon", "at": [8.3, -4.1], "in": "counter_1", "room": "kitchen"}
+    assert data["robot"]["room"] == "living_room"
+    picture = matplotlib.image.imread(png)
+    assert picture.shape[1] == 9 * 120 and picture.shape[2] in (3, 4)
+    assert len(np.unique(picture.reshape(-1, picture.shape[2])[:, :3], axis=0)) > 20  # walls, rooms, markers
+
+
+def test_seal_map_errors_are_clean(tmp_path: Path) -> None:
+    result = CliRunner().invoke(app, ["map", str(BAD / "07_overlapping_rooms.yaml"), "--png", str(tmp_path / "x.png")])
+    assert result.exit_code == 1 and "overlaps" in result.output and "Traceback" not in result.output
+    assert not (tmp_path / "x.png").exists()
+    result = CliRunner().invoke(app, ["map", "apartment", "--png", str(tmp_path / "no" / "x.png")])
+    assert result.exit_code == 1 and "does not exist" in result.output
+
+
+def test_seal_bench_maps_reports_every_query() -> None:
+    result = CliRunner().invoke(app, ["bench", "maps", "--repeats", "1", "--points", "300", "--points", "700",
+                                      "--json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert data["map"] == "apartment" and data["rays"] > 1000
+    queries = {(q["query"], q["points"]) for q in data["queries"]}
+    assert ("visible region contains", 700) in queries and ("is_free", 300) in queries and len(queries) == 16
+    assert all(q["ms"] >= 0 for q in data["queries"])

@@ -1,0 +1,118 @@
+"""``seal map``: what an annotated map holds, as a table, JSON or a picture; ``seal bench maps``."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import typer
+from rich.table import Table
+
+from . import JsonOption, bench_app, command, emit_json, out
+
+
+def summary(m: Any) -> dict[str, Any]:
+    """The map as plain data: grid, rooms (with free area), places, prior masses per room, objects."""
+    areas = m.room_free_area()
+    return {
+        "name": m.name, "file": m.file, "bounds": list(m.bounds),
+        "grid": {"shape": list(m.grid.shape), "resolution": m.grid.resolution, "origin": list(m.grid.origin)},
+        "free_area": round(m.free_area, 3),
+        "rooms": [{"name": r.name, "area": round(r.area, 3), "free_area": round(areas[r.name], 3)} for r in m.rooms],
+        "places": [{"name": p.name, "class": p.cls, "at": list(p.at), "room": p.room, "openable": p.openable,
+                    "open": p.open, "reach": p.reach} for p in m.places],
+        "priors": {cls: {"masses": dict(masses), "rooms": {k: round(v, 4) for k, v in
+                                                            m.prior(cls).room_masses().items()}}
+                   for cls, masses in m.priors.items()},
+        "objects": [{"class": o.cls, "at": list(o.at), "in": o.inside, "room": m.room_of([o.at])[0]}
+                    for o in m.objects],
+        "robot": {"pose": list(m.robot.pose), "holding": m.robot.holding, "room": m.room_of([m.robot.xy])[0]},
+        "sensor": {"range": m.sensor.range, "fov": m.sensor.fov_deg, "p_detect": m.sensor.p_detect,
+                   "sigma": m.sensor.sigma, "noise": m.sensor.noise},
+    }
+
+
+def show(data: dict[str, Any]) -> None:
+    grid = data["grid"]
+    out.print(f"[bold]{data['name']}[/bold]  bounds {data['bounds']}  grid {grid['shape'][1]}×{grid['shape'][0]} "
+              f"at {grid['resolution']:g} m  free {data['free_area']:.1f} m²")
+    rooms = Table("room", "area m²", "free m²", *data["priors"], title="rooms and prior mass per room")
+    for room in data["rooms"]:
+        masses = [f"{p['rooms'][room['name']]:.2f}" for p in data["priors"].values()]
+        rooms.add_row(room["name"], f"{room['area']:.1f}", f"{room['free_area']:.1f}", *masses)
+    out.print(rooms)
+    if data["places"]:
+        places = Table("place", "class", "at", "room", "state")
+        for p in data["places"]:
+            state = ("open" if p["open"] else "closed") if p["openable"] else ""
+            places.add_row(p["name"], p["class"], _xy(p["at"]), p["room"] or "—", state)
+        out.print(places)
+    if data["objects"]:
+        objects = Table("object", "at", "room", "in")
+        for o in data["objects"]:
+            objects.add_row(o["class"], _xy(o["at"]), o["room"], o["in"] or "")
+        out.print(objects)
+    robot, sensor = data["robot"], data["sensor"]
+    out.print(f"robot at {_xy(robot['pose'][:2])} yaw {robot['pose'][2]:g} in {robot['room']}, holding "
+              f"{robot['holding'] or 'nothing'}; sensor {sensor['range']:g} m, {sensor['fov']:g}°, "
+              f"p_detect {sensor['p_detect']:g}, σ {sensor['sigma']:g} m")
+
+
+def _rate(per_second: float) -> str:
+    for scale, unit in ((1e9, "G"), (1e6, "M"), (1e3, "k")):
+        if per_second >= scale:
+            return f"{per_second / scale:.1f} {unit}"
+    return f"{per_second:.0f}"
+
+
+def _xy(p: list[float]) -> str:
+    return f"[{p[0]:g}, {p[1]:g}]"
+
+
+@command("map")
+def map_command(
+    path: str = typer.Argument(..., help="A map file, or the name of a shipped map (apartment)."),
+    png: Path | None = typer.Option(None, "--png", help="Also draw the map, its rooms, places, objects and the "
+                                    "robot's visible region into this PNG file.", show_default=False),
+    as_json: bool = JsonOption,
+) -> None:
+    """Show what an annotated map holds: rooms, places, priors per room, objects, robot and sensor."""
+    from ..maps import load_map
+    from ..resources import map_path
+
+    m = load_map(map_path(path))
+    if png is not None:
+        from ..mapdraw import save_map_png
+
+        save_map_png(m, png)
+    data = summary(m)
+    if as_json:
+        emit_json(data)
+    else:
+        show(data)
+
+
+@command("maps", on=bench_app)
+def bench_maps(
+    path: str = typer.Option("apartment", "--map", help="A map file, or the name of a shipped map."),
+    repeats: int = typer.Option(5, "--repeats", min=1, help="Calls per figure (the median is reported)."),
+    points: list[int] | None = typer.Option(None, "--points", min=1, help="Numbers of points to time each query "
+                                            "on (repeatable; default 1000 and 60000).", show_default=False),
+    as_json: bool = JsonOption,
+) -> None:
+    """Time the map queries a particle filter makes, on 1,000 and 60,000 points."""
+    from ..mapbench import bench_map
+    from ..resources import map_path
+
+    result = bench_map(map_path(path), sizes=tuple(points or (1_000, 60_000)), repeats=repeats)
+    if as_json:
+        emit_json(result)
+        return
+    out.print(f"{result['map']}: grid {result['grid'][1]}×{result['grid'][0]} at {result['resolution']:g} m, "
+              f"load {result['load_ms']:.1f} ms, visible region {result['visible_region_ms']:.1f} ms "
+              f"({result['rays']} rays)")
+    table = Table("query", "points", "ms per call", "points per second")
+    for row in result["queries"]:
+        rate = row["points"] / row["ms"] * 1000 if row["ms"] else float("inf")
+        table.add_row(row["query"], f"{row['points']:,}", f"{row['ms']:.2f}", _rate(rate))
+    out.print(table)
