@@ -264,7 +264,7 @@ def _explain(error: Any, text: str, words: Sequence[Word], lexicon: Lexicon) -> 
     at_end = token.type == "$END"
     column = len(text.rstrip()) + 1 if at_end else token.start_pos + 1
     wants_verb = "VERB" in (error.expected or ())
-    if wants_verb and not at_end:
+    if wants_verb and not at_end and token.type not in ("END", "SEP"):
         word = str(token).split()[0].lower()
         return CommandError(f"unknown verb {word!r}; known verbs include {_some_verbs(lexicon, word)}",
                             column, text, ["a verb"])

@@ -139,7 +139,7 @@ class Word:
 
 
 _TOKEN = re.compile(r"""
-    (?P<word>[^\W\d_]+(?:['’\-][^\W\d_]+)*|\d+(?:\.\d+)?)   # letters, inner apostrophes and hyphens; numbers
+    (?P<word>[^\W\d_]+(?:['’](?![sS]\b)[^\W\d_]+|-[^\W\d_]+)*|[0-9]+)   # letters, inner ' and -; numbers
   | (?P<poss>['’]s\b)                                      # possessive 's (and is)
   | (?P<amp>&)
   | (?P<punct>[,;:.!?]+)
@@ -494,7 +494,7 @@ class Tagger:
                 (n > 1 or low != "one" or self._noun_follows(i + 1)):
                 self.out.append(_merge(words, i, n, "NUM", NUMBERS[" ".join(x.lower for x in words[i:i + n])]))
                 return n
-        if low.isdigit():
+        if low.isascii() and low.isdigit():
             self.out.append(Word(w.text, w.start, w.end, "NUM", int(low)))
             return 1
         if low == "'s":
@@ -508,7 +508,7 @@ class Tagger:
             number = NUMBERS.get(low)            # "both of the cups", "one of the books"
             self.out.append(_merge(words, i, 2, "DET" if number is None else "NUM", number))
             return 2
-        if low in PARTICLES and nxt == "of":      # "the back of the toilet"
+        if low in PARTICLES and nxt == "of" and _match_phrase(words, i, PREPOSITIONS) < 2:   # "the back of"
             self.out.append(Word(w.text, w.start, w.end, "WORD"))
             return 1
         if not in_np:

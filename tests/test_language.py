@@ -1,0 +1,278 @@
+"""The command language: words → evoked frames, their elements, pronouns, defaults, errors."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from seal_cli.errors import SealError
+from seal_cli.frames import Element, Fact, Frame, LexicalUnit
+from seal_cli.grounding import Vocabulary
+from seal_cli.language import CommandError, Parse, command_parser, parse_command, parse_lines
+from seal_cli.library import Library
+
+
+def frames_of(text: str, library: Library) -> list[str]:
+    return [f.frame for f in parse_command(text, library).frames]
+
+
+def elements(text: str, library: Library, index: int = 0) -> dict[str, str]:
+    """Element → head of one frame of the parse."""
+    parse = parse_command(text, library)
+    return {role: p.head for role, p in parse.frames[index].elements.items() if not p.default}
+
+
+def test_the_grammar_is_conflict_free_lalr() -> None:
+    parser = command_parser(strict=True)          # raises on any shift/reduce or reduce/reduce conflict
+    assert parser.options.parser == "lalr"
+
+
+def test_the_spec_example_parses_to_the_spec_json(library: Library) -> None:
+    got = parse_command("bring Roger a coffee from the kitchen", library).to_json()
+    assert got == {"text": "bring Roger a coffee from the kitchen",
+                   "frames": [{"frame": "Bring", "lexical_unit": "bring", "span": [0, 37],
+                               "elements": {"theme": {"text": "a coffee", "head": "coffee", "class": None},
+                                            "recipient": {"text": "Roger", "head": "Roger", "class": None,
+                                                          "kind": "person"},
+                                            "source": {"text": "the kitchen", "head": "kitchen", "class": None}}}]}
+
+
+@pytest.mark.parametrize(("text", "frames"), [
+    ("take the cup to the table", ["Bring"]),
+    ("take the cup", ["Pick"]),
+    ("take them to the exit", ["Guide"]),
+    ("take the person wearing a red shirt to the exit", ["Guide"]),
+    ("give me a plate from the bookshelf", ["Bring"]),
+    ("give me the plate", ["Give"]),
+    ("tell me how many cups there are on the table", ["Count"]),
+    ("introduce yourself to Robin", ["Greet"]),
+    ("say hello to Robin", ["Greet"]),
+    ("tell me what day is today", ["Tell"]),
+    ("move to the kitchen", ["Go"]),
+    ("move the apple to the table", ["Place"]),
+    ("look at the clock under the lamp", ["LookAt"]),
+    ("look for the clock in the bedroom", ["Find"]),
+    ("Meet Adel in the bathroom and take them to the kitchen table", ["Meet", "Guide"]),
+])
+def test_frames_are_chosen_by_the_elements_realised(library: Library, text: str, frames: list[str]) -> None:
+    assert frames_of(text, library) == frames
+
+
+def test_prepositions_fill_framenet_roles(library: Library) -> None:
+    assert elements("take the cup to the table", library) == {"theme": "cup", "goal": "table"}
+    assert elements("guide Axel from the storage rack to the bathroom", library) == \
+        {"theme": "Axel", "source": "rack", "goal": "bathroom"}
+    assert elements("slice the apple with the knife", library) == {"theme": "apple", "instrument": "knife"}
+    assert elements("heat the egg in the microwave", library) == {"theme": "egg", "instrument": "microwave"}
+    assert elements("find the cup on the table", library) == {"theme": "cup", "ground": "table"}
+    assert elements("put the cup into the sink", library) == {"theme": "cup", "goal": "sink"}
+    assert elements("take the cup out of the fridge", library) == {"theme": "cup", "source": "fridge"}
+    assert elements("tell the time to the waving person", library) == {"message": "time", "recipient": "person"}
+
+
+def test_ditransitives_give_the_indirect_object_the_recipient(library: Library) -> None:
+    assert elements("give Maria the salt", library) == {"theme": "salt", "recipient": "Maria"}
+    assert elements("bring me two apples", library) == {"theme": "apple", "recipient": "me"}
+    parse = parse_command("bring me two apples", library)
+    assert parse.frames[0].elements["theme"].quantity == 2
+    assert parse.frames[0].elements["theme"].plural
+
+
+def test_a_phrase_the_frame_has_no_role_for_describes_the_noun_before_it(library: Library) -> None:
+    parse = parse_command("Tell the gesture of the person at the sofa to the person at the chairs", library)
+    message, recipient = parse.frames[0].elements["message"], parse.frames[0].elements["recipient"]
+    assert message.text == "the gesture of the person at the sofa"
+    assert recipient.text == "the person at the chairs" and recipient.kind == "person"
+    follow = parse_command("follow the man in the blue shirt", library).frames[0]
+    assert follow.elements["theme"].text == "the man in the blue shirt" and set(follow.elements) == {"theme"}
+
+
+def test_participles_and_possessives_describe_people_and_things(library: Library) -> None:
+    theme = parse_command("find the person raising their left arm", library).frames[0].elements["theme"]
+    assert theme.text == "the person raising their left arm" and theme.head == "person" and theme.kind == "person"
+    parse = parse_command("Find a person pointing to the left in the office and lead them to the kitchen", library)
+    assert parse.frames[0].elements["ground"].head == "office"
+    assert parse.frames[1].frame == "Guide" and parse.frames[1].elements["goal"].head == "kitchen"
+    cup = parse_command("bring me Roger's cup", library).frames[0].elements["theme"]
+    assert cup.head == "cup" and cup.text == "Roger's cup"
+
+
+def test_particles_before_or_after_the_object(library: Library) -> None:
+    for text in ("pick up the cup", "pick the cup up", "Pick the cup up from the table"):
+        frame = parse_command(text, library).frames[0]
+        assert (frame.frame, frame.lexical_unit, frame.elements["theme"].head) == ("Pick", "pick up", "cup")
+    for text in ("turn on the lamp", "turn the lamp on", "switch the lamp on please"):
+        frame = parse_command(text, library).frames[0]
+        assert frame.frame == "ToggleOn" and frame.elements["theme"].head == "lamp"
+
+
+def test_clauses_politeness_and_sentences(library: Library) -> None:
+    assert frames_of("could you please go to the kitchen, find the cup and then bring it to me", library) == \
+        ["Go", "Find", "Bring"]
+    assert frames_of("Robot please go to the kitchen. Find Robin!", library) == ["Go", "Find"]
+    assert frames_of("go to the kitchen then find the cup after that bring it to me please", library) == \
+        ["Go", "Find", "Bring"]
+
+
+def test_noun_phrases_join_with_and(library: Library) -> None:
+    parse = parse_command("put the cup and the plate on the table", library)
+    assert [f.frame for f in parse.frames] == ["Place"]
+    assert parse.frames[0].elements["theme"].text == "the cup and the plate"
+
+
+def test_pronouns_refer_to_their_antecedent(library: Library) -> None:
+    parse = parse_command("Meet Robin at the side tables then look for them in the office", library)
+    them = parse.frames[1].elements["theme"]
+    assert them.refers_to == (0, "theme") and them.kind == "person" and them.head == "Robin"
+    parse = parse_command("Look for a cup in the kitchen then take it and bring it to me", library)
+    assert [f.frame for f in parse.frames] == ["Find", "Pick", "Bring"]
+    assert parse.frames[1].elements["theme"].refers_to == (0, "theme")
+    assert parse.frames[2].elements["theme"].refers_to == (0, "theme")    # the root, not the other "it"
+    assert parse.resolve(parse.frames[2].elements["theme"]).text == "a cup"
+    data = parse.to_json()
+    assert data["frames"][2]["elements"]["theme"]["refers_to"] == [0, "theme"]
+
+
+def test_an_unsaid_object_is_the_one_in_hand(library: Library) -> None:
+    parse = parse_command("pick up the apple and put in the fridge", library)
+    place = parse.frames[1].elements
+    assert place["theme"].refers_to == (0, "theme") and place["goal"].head == "fridge"
+
+
+def test_omitted_elements_take_the_frames_default(library: Library) -> None:
+    stir = parse_command("stir the cup", library).frames[0]
+    assert stir.elements["instrument"].head == "spoon" and stir.elements["instrument"].default
+    assert stir.to_json()["elements"]["instrument"] == {"text": None, "head": "spoon", "class": "spoon",
+                                                         "default": True}
+
+
+def test_result_words_evoke_frames_first(library: Library) -> None:
+    parse = parse_command("Put a heated egg in the fridge", library)
+    assert [f.frame for f in parse.frames] == ["Heat", "Place"]
+    assert parse.frames[0].elements["theme"].head == "egg" and parse.frames[1].elements["goal"].head == "fridge"
+    assert frames_of("put a clean cloth in a drawer", library) == ["Clean", "Place"]
+    assert frames_of("put the sliced apple on the plate", library) == ["Slice", "Place"]
+    assert frames_of("find the person raising their left arm", library) == ["Find"]   # "left" is no result
+    assert frames_of("look at the book by the light of the lamp", library) == ["LookAt"]
+
+
+def test_contents_put_first(library: Library) -> None:
+    parse = parse_command("Put a pan with a spoon in it, in the sink", library)
+    assert [(f.frame, {r: p.head for r, p in f.elements.items()}) for f in parse.frames] == [
+        ("Place", {"theme": "spoon", "goal": "pan"}), ("Place", {"theme": "pan", "goal": "sink"})]
+
+
+def test_inflected_verbs_and_subordinate_clauses(library: Library) -> None:
+    assert frames_of("Turn on the lamp while holding the remote", library) == ["ToggleOn", "Pick"]
+    assert frames_of("Putting a candle in a drawer", library) == ["Place"]
+    assert frames_of("take the remote to turn on the lamp", library) == ["Pick", "ToggleOn"]
+
+
+def test_unknown_nouns_and_names_are_open_class(library: Library) -> None:
+    theme = parse_command("bring me the zorblax from the quuxtable", library).frames[0].elements
+    assert theme["theme"].head == "zorblax" and theme["source"].head == "quuxtable"
+    assert parse_command("greet Xanthippe", library).frames[0].elements["theme"].kind == "person"
+
+
+def test_a_new_frame_makes_new_verbs_without_touching_the_grammar(library: Library) -> None:
+    water = Frame("Water", (LexicalUnit("water"), LexicalUnit("give water to")),
+                  (Element("theme", "object"), Element("instrument", "container", "watering_can")),
+                  postconditions=(Fact("watered", ("theme",)),))
+    extended = Library((*library.frames, water), library.taxonomy)
+    with pytest.raises(CommandError):
+        parse_command("water the plant", library)
+    parse = parse_command("water the plant with the jug and then give water to the fern", extended)
+    assert [(f.frame, f.elements["theme"].head) for f in parse.frames] == [("Water", "plant"), ("Water", "fern")]
+    assert parse.frames[0].elements["instrument"].head == "jug"
+    assert [f.frame for f in parse_command("put the watered plant on the table", extended).frames] == \
+        ["Water", "Place"]
+
+
+def test_grounding_with_a_vocabulary(library: Library) -> None:
+    vocab = Vocabulary.of(["AlarmClock", "CounterTop", "Apple", "Fridge"], {"Fridge": ["refrigerator"]})
+    parse = parse_command("put the apple slice from the counter in the refrigerator and find the clock", library,
+                          vocab)
+    place = parse.frames[0].elements
+    assert (place["theme"].cls, place["goal"].cls) == ("Apple", "Fridge")
+    assert parse.frames[1].elements["theme"].cls == "AlarmClock"
+    assert parse_command("find the zorblax", library, vocab).frames[0].elements["theme"].cls is None
+
+
+# ---------------------------------------------------------------------------------------------
+# Bad input: a clear error each, with a column and what was expected
+
+
+@pytest.mark.parametrize(("text", "column", "words"), [
+    ("", 1, "empty command"),
+    ("   \t ", 1, "empty command"),
+    ("?!.,", 1, "expected a verb"),
+    ("to", 3, "expected a verb"),
+    ("launch the rocket", 1, "unknown verb 'launch'"),
+    ("go to the kitchen and launch the rocket", 23, "unknown verb 'launch'"),
+    ("bring me the", 13, "ends too early"),
+    ("bring me the cup ☕", 18, "unexpected character"),
+    ("bring me\x07 the cup", 9, "control character U+0007"),
+    ("go to the kitchen " * 600, 1001, "too long"),
+])
+def test_bad_commands_are_clear_errors(library: Library, text: str, column: int, words: str) -> None:
+    with pytest.raises(CommandError) as caught:
+        parse_command(text, library)
+    error = caught.value
+    assert words in error.message
+    assert error.column == column
+    assert error.expected
+    assert error.to_json() == {"message": error.message, "column": column, "expected": error.expected}
+
+
+def test_unknown_verbs_list_the_known_ones(library: Library) -> None:
+    with pytest.raises(CommandError) as caught:
+        parse_command("brin me the cup", library)
+    assert "known verbs include bring" in caught.value.message       # the closest one first
+    assert str(caught.value).endswith("brin me the cup\n^")         # the caret under the column
+
+
+def test_non_ascii_words_are_words(library: Library) -> None:
+    parse = parse_command("bring Zoë a café crème from the kitchen", library)
+    assert parse.frames[0].elements["recipient"].head == "Zoë"
+    assert parse.frames[0].elements["theme"].head == "crème"
+
+
+def test_parse_lines_gives_one_object_per_line_errors_included(library: Library) -> None:
+    out = list(parse_lines(["go to the kitchen", "", "launch the rocket\n"], library))
+    assert [("frames" in o, "error" in o) for o in out] == [(True, False), (False, True), (False, True)]
+    assert out[2]["text"] == "launch the rocket" and out[2]["error"]["column"] == 1
+    json.dumps(out)
+
+
+WORDS = ["bring", "take", "put", "the", "a", "cup", "to", "from", "and", "then", "it", "them", "me", "Robin",
+         "pick", "up", "on", "in", "of", "with", "please", ",", ".", "tell", "how", "many", "what", "is", "there",
+         "heated", "wearing", "pointing", "two", "one", "their", "'s", "turn", "off", "look", "at", "for", "here"]
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(st.sampled_from(WORDS), max_size=14).map(" ".join))
+def test_word_salad_parses_or_fails_cleanly(library: Library, text: str) -> None:
+    try:
+        parse = parse_command(text, library)
+    except SealError as error:
+        assert error.message and error.column is not None and error.column >= 1
+        return
+    assert isinstance(parse, Parse)
+    json.dumps(parse.to_json())
+    for frame in parse.frames:
+        for phrase in frame.elements.values():
+            if phrase.refers_to is not None:
+                assert phrase.refers_to[0] < len(parse.frames)
+                assert phrase.refers_to[1] in parse.frames[phrase.refers_to[0]].elements
+
+
+@settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.text(max_size=80))
+def test_random_text_parses_or_fails_cleanly(library: Library, text: str) -> None:
+    try:
+        parse_command(text, library)
+    except SealError as error:
+        assert error.message and error.column is not None
