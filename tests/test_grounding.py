@@ -1,0 +1,97 @@
+"""Grounding noun phrases in a vocabulary of object classes; vocabulary files."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from seal_cli.errors import SealError
+from seal_cli.grounding import Vocabulary, load_vocabulary, vocabulary_of_map
+from seal_cli.language import parse_command
+from seal_cli.library import Library
+
+ALFRED_LIKE = Vocabulary.of(["AlarmClock", "Apple", "CounterTop", "DiningTable", "SideTable", "ToiletPaper",
+                             "ToiletPaperRoll", "WineBottle", "SoapBottle", "KeyChain", "SoapBar", "Sink",
+                             "SinkBasin", "tomato soup"])
+
+
+def theme_class(text: str, library: Library, vocabulary: Vocabulary = ALFRED_LIKE) -> str | None:
+    return parse_command(f"find {text}", library, vocabulary).frames[0].elements["theme"].cls
+
+
+@pytest.mark.parametrize(("phrase", "cls"), [
+    ("the alarm clock", "AlarmClock"),        # exact, CamelCase split
+    ("two red alarm clocks", "AlarmClock"),   # plural, modifiers
+    ("the clock", "AlarmClock"),              # head word
+    ("the counter", "CounterTop"),            # another word of the class name
+    ("an apple slice", "Apple"),              # a modifier when the head is nothing known
+    ("a slice of apple", "Apple"),            # the "of" phrase
+    ("two rolls of toilet paper", "ToiletPaper"),   # an exact name beats a head word
+    ("a bottle of wine", "WineBottle"),       # head word helped by the other words
+    ("a set of keys", "KeyChain"),
+    ("a bar of soap", "SoapBar"),
+    ("the table", "DiningTable"),             # a tie: the class listed first
+    ("the sink", "Sink"),
+    ("some tomato soup", "tomato soup"),      # multiword class names
+    ("the zorblax", None),                    # open vocabulary: no class, no error
+])
+def test_noun_phrases_ground_to_classes(library: Library, phrase: str, cls: str | None) -> None:
+    assert theme_class(phrase, library) == cls
+
+
+def test_synonyms_and_names_compare_like_class_names() -> None:
+    vocab = Vocabulary.of(["Fridge", "coffee_machine"], {"Fridge": ["refrigerator", "ice box"]})
+    assert vocab.ground_words(["refrigerators"]) == "Fridge"
+    assert vocab.ground_words(["ice", "box"]) == "Fridge"
+    assert vocab.ground_words(["coffee", "machine"]) == "coffee_machine"
+    assert vocab.ground_words(["the"]) is None
+    assert len(Vocabulary.of(["cup", "cup", "Cup"])) == 2      # exact duplicates dropped, spelling kept
+
+
+def test_vocabulary_files(tmp_path: Path, library: Library) -> None:
+    path = tmp_path / "vocab.yaml"
+    path.write_text("- AlarmClock\n- {class: Fridge, synonyms: [refrigerator]}\n- counter top\n", encoding="utf-8")
+    vocab = load_vocabulary(path)
+    assert vocab.classes == ("AlarmClock", "Fridge", "counter top")
+    parse = parse_command("put the clock from the counter in the refrigerator", library, vocab)
+    place = parse.frames[0].elements
+    assert (place["theme"].cls, place["goal"].cls) == ("AlarmClock", "Fridge")
+    mapping = tmp_path / "mapping.yaml"
+    mapping.write_text("classes: [cup, plate]\n", encoding="utf-8")
+    assert load_vocabulary(mapping).classes == ("cup", "plate")
+
+
+@pytest.mark.parametrize(("content", "words"), [
+    ("cup: 1\n", "YAML list"),
+    ("[]\n", "no class"),
+    ("- {synonyms: [a]}\n", "entry 1"),
+    ("- {class: Fridge, synonyms: refrigerator}\n", "synonyms must be a list"),
+    ("- [a, b\n", "YAML syntax error"),
+])
+def test_bad_vocabulary_files_are_clear_errors(tmp_path: Path, content: str, words: str) -> None:
+    path = tmp_path / "bad.yaml"
+    path.write_text(content, encoding="utf-8")
+    with pytest.raises(SealError) as caught:
+        load_vocabulary(path)
+    assert words in str(caught.value) and str(path) in str(caught.value)
+
+
+def test_a_missing_vocabulary_file_is_an_error(tmp_path: Path) -> None:
+    with pytest.raises(SealError, match="no such file"):
+        load_vocabulary(tmp_path / "nope.yaml")
+
+
+def test_a_maps_classes_make_a_vocabulary() -> None:
+    class Thing:
+        def __init__(self, cls: str) -> None:
+            self.cls = cls
+
+    class FakeMap:
+        places = (Thing("fridge"), Thing("kitchen_table"))
+        objects = (Thing("cup"),)
+        priors = {"spoon": {}, "cup": {}}
+
+    vocab = vocabulary_of_map(FakeMap())
+    assert vocab.classes == ("fridge", "kitchen_table", "cup", "spoon")
+    assert vocab.ground_words(["kitchen", "tables"]) == "kitchen_table"

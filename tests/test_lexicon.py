@@ -1,0 +1,91 @@
+"""Tagging: verbs from the library, function words, open-class words, result words; morphology."""
+
+from __future__ import annotations
+
+import pytest
+
+from seal_cli.language import lexicon_of
+from seal_cli.lexicon import MAX_LENGTH, CommandError, tag, tokenize
+from seal_cli.library import Library
+from seal_cli.morphology import gerund_lemma, is_adjective, is_plural, noun_lemma, participles, verb_lemma
+
+
+def tags(text: str, library: Library) -> list[tuple[str, str]]:
+    lexicon, _ = lexicon_of(library)
+    return [(w.text, w.tag) for w in tag(lexicon, text)]
+
+
+def test_multiword_and_split_verbs(library: Library) -> None:
+    assert tags("tell me how many cups", library)[0] == ("tell me how many", "VERB")
+    assert tags("pick the cup up", library) == [("pick", "VERB"), ("the", "DET"), ("cup", "WORD"),
+                                                 ("up", "PARTICLE")]
+    lexicon, _ = lexicon_of(library)
+    assert tag(lexicon, "pick the cup up")[0].info == "pick up"
+    assert tag(lexicon, "pick the cup on the table")[0].info == "pick"      # "on" has an object: a preposition
+
+
+def test_a_verb_is_only_a_verb_where_a_clause_starts(library: Library) -> None:
+    assert tags("light the candle", library)[0] == ("light", "VERB")
+    assert ("light", "WORD") in tags("look at the book by the light of the lamp", library)
+    assert ("microwave", "WORD") in tags("put the egg in the microwave", library)
+    assert tags("put it in the sink and microwave the egg", library)[6] == ("microwave", "VERB")
+
+
+def test_and_joins_clauses_or_noun_phrases(library: Library) -> None:
+    assert ("and", "AND_NP") in tags("put the cup and the plate on the table", library)
+    assert ("and", "SEP") in tags("take the cup and put it on the table", library)
+
+
+def test_names_are_capitalised_words_where_a_noun_phrase_starts(library: Library) -> None:
+    assert ("Mary Ann", "NAME") in tags("greet Mary Ann", library)
+    assert ("Apple", "WORD") in tags("take the Apple", library)
+    assert ("TV", "WORD") in tags("find TV", library)       # an acronym is no name
+
+
+def test_result_words_come_from_the_library(library: Library) -> None:
+    lexicon, _ = lexicon_of(library)
+    assert lexicon.results["heated"] == ("Heat", "heat")
+    assert lexicon.results["lit"] == ("ToggleOn", "light")
+    assert lexicon.results["hot"][0] == "Heat"                 # hot(theme) is Heat's result
+    assert lexicon.results["clean"][0] == "Clean"
+    assert "left" not in lexicon.results                       # Place has no one-place result
+    assert "moved" not in lexicon.results                      # Go's element is a goal, not a theme
+    assert ("heated", "RESULT") in tags("put a heated egg in the fridge", library)
+
+
+def test_participles_after_nouns(library: Library) -> None:
+    got = tags("find the person wearing a hat and the person pointing to the left and the person sitting", library)
+    assert ("wearing", "VBG_T") in got and ("pointing", "VBG_P") in got and ("sitting", "VBG_I") in got
+    assert ("waving", "WORD") in tags("follow the waving person", library)
+
+
+def test_tokenize_keeps_character_offsets() -> None:
+    words = tokenize("Bring Roger's cup, please!")
+    assert [(w.text, w.start, w.end) for w in words] == [
+        ("Bring", 0, 5), ("Roger", 6, 11), ("'s", 11, 13), ("cup", 14, 17), (",", 17, 18), ("please", 19, 25),
+        ("!", 25, 26)]
+    assert [w.text for w in tokenize("don't put the t-shirt & the cup")] == \
+        ["don't", "put", "the", "t-shirt", "and", "the", "cup"]
+
+
+@pytest.mark.parametrize(("text", "column"), [("go\x00", 3), ("go to the kitchen → now", 19)])
+def test_tokenize_refuses_what_is_not_text(text: str, column: int) -> None:
+    with pytest.raises(CommandError) as caught:
+        tokenize(text)
+    assert caught.value.column == column
+
+
+def test_tokenize_refuses_very_long_commands() -> None:
+    with pytest.raises(CommandError, match="too long"):
+        tokenize("a" * (MAX_LENGTH + 1))
+
+
+def test_morphology_from_lemminflect() -> None:
+    assert [noun_lemma(w) for w in ("knives", "people", "persons", "glasses", "tomatoes", "cups", "Sofa")] == \
+        ["knife", "people", "person", "glass", "tomato", "cup", "sofa"]
+    assert noun_lemma("cheezits") == "cheezit"                 # a word the dictionary lacks: lemminflect's model
+    assert is_plural("apples") and is_plural("people") and not is_plural("glass") and not is_plural("cup")
+    assert verb_lemma("heated") == "heat" and verb_lemma("lit") == "light" and verb_lemma("sofa") is None
+    assert gerund_lemma("wearing") == "wear" and gerund_lemma("ceiling") is None
+    assert {"lit", "lighted"} <= participles("light") and participles("cut") == {"cut"}
+    assert is_adjective("hot") and not is_adjective("cup")
