@@ -153,7 +153,7 @@ class Agent:
         self.placed: set[str] = set()
         """Things the robot has put where a frame wanted them: not to be taken away again."""
         self.chosen: dict[str, str] = {}
-        """The instance chosen for each name a frame uses, kept across frames (open *this* cabinet, then put into it)."""
+        """The instance chosen for each name a frame uses, across frames (open *this* cabinet, put into it)."""
         self.looks: list[tuple[float, float, float]] = []
         self.classes = {class_key(k): class_key(v) for k, v in (classes or {}).items()}
         """The class of each thing a command names that is not a class itself (``apple_2``)."""
@@ -300,9 +300,9 @@ class Agent:
 
     def resolve(self, value: str, binding: Binding, role: str | None = None) -> str | None:
         """The instance that an element's value (a class, or an item's name) denotes now."""
-        if value in self.world.items and value in self.known:
-            return value
         name = class_key(value)
+        if value in self.world.items and value in self.known and name not in self.classes:
+            return value  # an item named by itself (a place of the map), not a name the command made up
         key = self.class_of(value)
         others = {i for n, i in self.chosen.items() if n != name and self.class_of(n) == key}
         held = self.held()
@@ -321,6 +321,13 @@ class Agent:
         choose = getattr(self.policy, "choose", None)
         pick = choose(self, key, candidates) if choose else None
         return pick or self.nearest(candidates)
+
+    def spent(self, item: str, value: str) -> bool:
+        """Whether a known instance cannot serve as ``value`` (put in place already, out of reach,
+        or chosen for another name of its class)."""
+        name = class_key(value)
+        return item in self.placed or item in self.unreachable or any(
+            i == item and n != name for n, i in self.chosen.items())
 
     def nearest(self, candidates: Sequence[Known]) -> str | None:
         """The candidate the robot can reach by the shortest drive."""
@@ -682,7 +689,10 @@ class SeFMPolicy:
     def next_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
         field_ = agent.distances()
         options: list[tuple[float, View]] = []
+        spent = [k.at for k in agent.instances(agent.class_of(target)) if agent.spent(k.id, target)]
         for point, weight in self.modes(agent, binding, target):
+            if any(math.dist(point, at) <= agent.world.reach for at in spent):
+                continue  # the belief is right, but the thing there will not do (placed, out of reach)
             view = self._view_of(agent, point, field_)
             if view is None or (view.cell, view.open) in self.tried:
                 continue
@@ -707,16 +717,17 @@ class SeFMPolicy:
             cell = agent.stand_cell(box, field_)
             if cell is not None:
                 return View(cell, box.at, open=box.id, why=f"opens {box.id}, where the belief is densest")
+        # the particles are poses from which the robot could act on the thing: stand on the mode
         pts = agent.grid.free_points
         cells = agent.grid.free_cells
-        seen = agent.world.sensor.visible(agent.world.robot.pose, np.asarray([point]))[0]
-        near = np.hypot(pts[:, 0] - point[0], pts[:, 1] - point[1]) <= min(agent.world.reach, agent.world.sensor.range)
-        costs = np.where(near, field_[cells[:, 0], cells[:, 1]], np.inf)
-        k = int(np.argmin(costs))
-        if not np.isfinite(costs[k]):
-            return None
-        why = "looks at the belief's best mode" + (" again, from nearer" if seen else "")
-        return View((int(cells[k, 0]), int(cells[k, 1])), point, why=why)
+        gap = np.hypot(pts[:, 0] - point[0], pts[:, 1] - point[1])
+        costs = field_[cells[:, 0], cells[:, 1]]
+        for radius in (agent.grid.resolution * 1.5, agent.world.reach / 2):
+            near = np.flatnonzero((gap <= radius) & np.isfinite(costs))
+            if len(near):
+                k = int(near[np.argmin(costs[near])])
+                return View((int(cells[k, 0]), int(cells[k, 1])), point, why="goes to the belief's best mode")
+        return None
 
     def _at(self, agent: Agent, box: Known, point: tuple[float, float]) -> bool:
         place = agent.scene.map.place(box.id)

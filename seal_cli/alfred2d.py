@@ -41,7 +41,7 @@ if TYPE_CHECKING:
 
 __all__ = ["FOUR", "GRID", "MOVABLE_RECEPTACLES", "TASK_TYPES", "Condition", "Episode", "FloorPlan", "Placement",
            "Receptacle", "Suite", "Task", "build_scene", "build_world", "estimate_priors", "gold_commands",
-           "goal_conditions", "judge", "load_suite", "read_floorplans", "read_trials", "scene_priors", "thor_yaw"]
+           "gold_classes", "goal_conditions", "judge", "load_suite", "read_floorplans", "read_trials", "scene_priors", "thor_yaw"]
 
 GRID = 0.25
 """ALFRED's agent grid, metres."""
@@ -59,6 +59,12 @@ SENSOR = Sensor(range=1.5, fov=360.0)
 """The robot's eyes in ALFRED's rooms: it turns on the spot (turning costs no path) and recognises
 things within 3 m; closed receptacles hide what is inside. The scenes carry no wall geometry, so
 nothing else occludes."""
+
+BELIEF_RANGE = 0.75
+"""The sensor range the beliefs are told. Their particles live on free space: they are the poses
+from which the robot could take a thing, up to a place's reach from it. A pose counts as looked
+at when the robot passes within this distance of it — from there the thing it serves, if it were
+there, would be within the robot's 1.5 m of sight; farther, it might not."""
 
 REACH = 1.5
 """ALFRED's interaction distance (AI2-THOR's ``visibilityDistance``), metres."""
@@ -316,7 +322,7 @@ def build_scene(episode: Episode, plan: FloorPlan, library: Library, priors: Map
     the_map = Map(f"{episode.floor_plan}:{episode.task_id}", bounds,
                   rooms=(Room.box(episode.scene_type, *bounds),), places=places,
                   priors=scene_priors(priors, plan, movable), objects=objects,
-                  robot=MapRobot(episode.start), sensor=MapSensor(range=s.range, fov_deg=s.fov), grid=occupancy)
+                  robot=MapRobot(episode.start), sensor=MapSensor(range=BELIEF_RANGE, fov_deg=s.fov), grid=occupancy)
     vocabulary = tuple(sorted({i.key for i in world.items.values()}))
     return Scene(world, the_map, grid, vocabulary, f"{episode.task_dir} ({episode.task_id})")
 
@@ -398,8 +404,8 @@ def gold_commands(task: Task, library: Library, classes: Iterable[str] = ()) -> 
         raise SealError(f"task {task} names no receptacle")
     if kind == "pick_and_place_simple":
         frames.append(bind("Place", theme=obj, goal=recep))
-    elif kind == "pick_two_obj_and_place":
-        frames += [bind("Place", theme=obj, goal=recep), bind("Place", theme=obj, goal=recep)]
+    elif kind == "pick_two_obj_and_place":  # two things of one class: obj and obj_2 (see gold_classes)
+        frames += [bind("Place", theme=obj, goal=recep), bind("Place", theme=f"{obj}_2", goal=recep)]
     elif kind == "pick_and_place_with_movable_recep":
         mrecep = class_key(task.mrecep or "")
         frames += [bind("Place", theme=obj, goal=mrecep), bind("Place", theme=mrecep, goal=recep)]
@@ -410,6 +416,12 @@ def gold_commands(task: Task, library: Library, classes: Iterable[str] = ()) -> 
         frames += [bind(verb, theme=obj, instrument=_instrument(library, category, preferred, have)),
                    bind("Place", theme=obj, goal=recep)]
     return frames
+
+
+def gold_classes(task: Task) -> dict[str, str]:
+    """The class of each name :func:`gold_commands` uses that is not a class (``book_2``: a second book)."""
+    obj = class_key(task.object)
+    return {f"{obj}_2": obj} if task.type == "pick_two_obj_and_place" else {}
 
 
 @dataclass(frozen=True)

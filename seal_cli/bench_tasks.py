@@ -25,7 +25,7 @@ from typing import Any
 
 import numpy as np
 
-from .alfred2d import TASK_TYPES, Episode, Suite, build_scene, gold_commands, judge, load_suite
+from .alfred2d import TASK_TYPES, Episode, Suite, build_scene, gold_classes, gold_commands, judge, load_suite
 from .errors import SealError
 from .frames import Binding
 from .library import Library, load_library
@@ -67,7 +67,7 @@ def commands_for(episode: Episode, library: Library, vocabulary: Sequence[str],
     against the scene's classes, its frames built without a map (values are classes, or
     ``apple_2`` for a second apple)."""
     if goal == "gold":
-        return gold_commands(episode.task, library, vocabulary), {}
+        return gold_commands(episode.task, library, vocabulary), gold_classes(episode.task)
     if goal != "human":
         raise SealError(f"unknown goal source {goal!r}; use one of {', '.join(GOALS)}")
     from .grounding import Vocabulary
