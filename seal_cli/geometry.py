@@ -370,30 +370,6 @@ def segment_cells(grid: OccupancyGrid, start: ArrayLike, ends: ArrayLike
     return np.floor(v).astype(np.intp), np.floor(u).astype(np.intp), np.where(valid, t1, np.inf), valid
 
 
-def _entered_cells(grid: OccupancyGrid, start: Points, ends: Points
-                   ) -> tuple[NDArray[np.float64], NDArray[np.intp], NDArray[np.intp], NDArray[np.bool_]]:
-    """Every grid-line crossing of each segment ``start → ends[i]`` and the cell it enters there.
-
-    Returns ``(t, rows, cols, occupied)`` of shape (N, K), unordered and inf-padded in ``t``. The
-    cells entered plus the start cell are exactly the cells of :func:`segment_cells`, found
-    without sorting (a corner crossing enters the diagonal cell).
-    """
-    ga = np.broadcast_to(grid.world_to_grid(start) / grid.resolution, ends.shape)
-    gb = grid.world_to_grid(ends) / grid.resolution
-    d = gb - ga
-    nudge = np.sign(d) * 1e-9
-    t = np.concatenate([_crossings(ga[:, 0], gb[:, 0]), _crossings(ga[:, 1], gb[:, 1])], axis=1)
-    real = np.isfinite(t)
-    ts = np.where(real, t, 0.0)
-    cols = np.floor(ga[:, 0:1] + ts * d[:, 0:1] + nudge[:, 0:1]).astype(np.intp)
-    rows = np.floor(ga[:, 1:2] + ts * d[:, 1:2] + nudge[:, 1:2]).astype(np.intp)
-    h, w = grid.shape
-    on_grid = real & (rows >= 0) & (rows < h) & (cols >= 0) & (cols < w)
-    occupied = np.zeros(t.shape, dtype=bool)
-    occupied[on_grid] = grid.occupied_mask[rows[on_grid], cols[on_grid]]
-    return t, rows, cols, occupied
-
-
 _BLOCK = 16
 """Grid-line crossings examined per step of :func:`line_of_sight` before blocked segments are dropped."""
 
@@ -445,18 +421,59 @@ def cast_rays(grid: OccupancyGrid, origin: ArrayLike, angles: ArrayLike, max_ran
 
     A ray sees up to and *including* the first occupied cell it enters (other than the cell it
     starts in), so a point is visible along the ray when its distance is at most this reach —
-    the same rule as :func:`line_of_sight`. Rays that meet nothing reach ``max_range``.
+    the same rule as :func:`line_of_sight`. Rays that meet nothing reach ``max_range``. Like
+    :func:`line_of_sight`, crossings are examined a block at a time and a ray stops once the
+    rest of its crossings lie beyond its first hit.
     """
     theta = np.asarray(angles, dtype=float).ravel()
-    o = as_points(origin)[:1]
     reach = np.full(len(theta), float(max_range))
     if not grid.has_obstacles or len(theta) == 0:
         return reach
+    o = as_points(origin)[:1]
     ends = o + max_range * np.column_stack([np.cos(theta), np.sin(theta)])
-    width = int(np.ceil(2 * max_range / grid.resolution)) + 3
-    for part in _chunks(len(theta), width):
-        t, _, _, occupied = _entered_cells(grid, o, ends[part])
-        hit = np.where(occupied, t, np.inf).min(axis=1)
-        after = np.where(t > hit[:, None] + 1e-12, t, np.inf).min(axis=1)
-        reach[part] = np.where(np.isfinite(hit), np.minimum(after, 1.0) * max_range, max_range)
+    ga = grid.world_to_grid(o)[0] / grid.resolution
+    gb = grid.world_to_grid(ends) / grid.resolution
+    d = gb - ga
+    nudge = np.sign(d) * 1e-9
+    h, w = grid.shape
+    hit_t = np.full(len(theta), np.inf)
+    hit_cell = np.zeros((len(theta), 2), dtype=np.intp)
+    for axis in (0, 1):
+        a, b = ga[axis], gb[:, axis]
+        fa = np.floor(a)
+        count = np.abs(np.floor(b) - fa).astype(np.intp)
+        forward = b >= a
+        todo = np.flatnonzero(count > 0)
+        k0 = 1
+        while len(todo):
+            k = np.arange(k0, k0 + _BLOCK)
+            n = count[todo]
+            lines = np.where(forward[todo, None], fa + k, fa - k + 1)
+            t = (lines - a) / (b[todo] - a)[:, None]
+            cols = np.floor(ga[0] + t * d[todo, 0:1] + nudge[todo, 0:1]).astype(np.intp)
+            rows = np.floor(ga[1] + t * d[todo, 1:2] + nudge[todo, 1:2]).astype(np.intp)
+            hit = (k <= n[:, None]) & (rows >= 0) & (rows < h) & (cols >= 0) & (cols < w)
+            hit[hit] = grid.occupied_mask[rows[hit], cols[hit]]
+            first = np.argmax(hit, axis=1)
+            found = hit[np.arange(len(todo)), first]
+            t_found = np.where(found, t[np.arange(len(todo)), first], np.inf)
+            better = t_found < hit_t[todo]
+            rays = todo[better]
+            hit_t[rays] = t_found[better]
+            hit_cell[rays, 0] = rows[better, first[better]]
+            hit_cell[rays, 1] = cols[better, first[better]]
+            k0 += _BLOCK
+            next_t = (np.where(forward[todo], fa + k0, fa - k0 + 1) - a) / (b[todo] - a)
+            todo = todo[~found & (n >= k0) & (next_t < hit_t[todo])]
+    stopped = np.isfinite(hit_t)
+    if stopped.any():
+        # the ray leaves its hit cell where it crosses the cell's far side in x or in y
+        row, col = hit_cell[stopped, 0], hit_cell[stopped, 1]
+        ds, starts = d[stopped], ga
+        exits = []
+        for axis, cell in ((0, col), (1, row)):
+            far = np.where(ds[:, axis] > 0, cell + 1, cell)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                exits.append(np.where(ds[:, axis] != 0, (far - starts[axis]) / ds[:, axis], np.inf))
+        reach[stopped] = np.minimum(np.minimum(exits[0], exits[1]), 1.0) * max_range
     return reach
