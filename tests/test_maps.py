@@ -440,3 +440,16 @@ def test_seal_bench_maps_reports_every_query() -> None:
     queries = {(q["query"], q["points"]) for q in data["queries"]}
     assert ("visible region contains", 700) in queries and ("is_free", 300) in queries and len(queries) == 16
     assert all(q["ms"] >= 0 for q in data["queries"])
+
+
+def test_the_code_example_in_the_docs_runs(monkeypatch: pytest.MonkeyPatch) -> None:
+    text = (ROOT / "docs" / "maps.md").read_text()
+    code = re.search(r"```python\n(.*?)```", text, re.S)
+    assert code is not None
+    monkeypatch.chdir(ROOT)
+    scope: dict = {}
+    exec(compile(code.group(1), "docs/maps.md", "exec"), scope)
+    assert scope["x"].shape == (1000, 2) and scope["inside"].dtype == bool
+    assert (scope["inside"] == scope["exact"]).mean() > 0.99
+    assert {d.cls for d in scope["detections"]} == {"spoon", "apple"}
+    assert scope["scene"].free_area == pytest.approx(63 * 0.0625)
