@@ -97,6 +97,16 @@ class Vocabulary:
         if not words and not of:
             return None
         end = len(words) + head + 1 if head < 0 else head + 1
+        found = self._ground(words, end, of)
+        if found is None and words and words[end - 1].endswith("s"):     # a plural the dictionary lacks
+            for cut in (1, 2):
+                stem = words[end - 1][:-cut]
+                found = self._ground((*words[:end - 1], stem, *words[end:]), end, of) if len(stem) > 2 else None
+                if found is not None:
+                    break
+        return found
+
+    def _ground(self, words: tuple[str, ...], end: int, of: tuple[str, ...]) -> str | None:
         for phrase in (words[:end], of):
             for start in range(len(phrase)):             # longest exact name ending at the head
                 found = self._exact.get(phrase[start:])

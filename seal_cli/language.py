@@ -30,13 +30,15 @@ from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
+from lark import Tree
+
 from .errors import SealError
 from .frames import Frame
 from .lexicon import PERSON_PRONOUNS, CommandError, Lexicon, Word, is_plural, noun_lemma, tag
 from .library import Library
 
 if TYPE_CHECKING:
-    from lark import Lark, Tree
+    from lark import Lark
 
     from .grounding import Vocabulary
 
@@ -154,28 +156,45 @@ class Types:
 
 
 def command_parser(strict: bool = False) -> Lark:
-    """The LALR parser of ``grammars/command.lark`` over tagged words."""
+    """The LALR parser of ``grammars/command.lark`` over tagged words (Lark caches its tables
+    on disk, so a new process builds it in milliseconds)."""
     global _PARSER
     if _PARSER is not None and not strict:
         return _PARSER
-    from lark import Lark, Token
-    from lark.lexer import Lexer
+    from lark import Lark
 
     from .resources import grammar_path
 
-    class TagLexer(Lexer):
-        def __init__(self, lexer_conf: Any) -> None:
-            pass
-
-        def lex(self, data: Any) -> Iterator[Token]:   # type: ignore[override]
-            for w in data:
-                yield Token(w.tag, w.text, w.start, 1, w.start + 1, 1, w.end + 1, w.end)
-
     grammar = grammar_path("command.lark").read_text(encoding="utf-8")
-    parser = Lark(grammar, parser="lalr", lexer=TagLexer, strict=strict, maybe_placeholders=False)
+    parser = Lark(grammar, parser="lalr", lexer=_tag_lexer(), strict=strict, maybe_placeholders=False,
+                  cache=not strict)
     if not strict:
         _PARSER = parser
     return parser
+
+
+def _tag_lexer() -> type:
+    """The lexer that hands the tagger's words to Lark as tokens (made once, importable by name
+    so that Lark's cache can refer to it)."""
+    global TagLexer
+    if TagLexer is None:
+        from lark import Token
+        from lark.lexer import Lexer
+
+        class _TagLexer(Lexer):
+            def __init__(self, lexer_conf: Any) -> None:
+                pass
+
+            def lex(self, data: Any) -> Iterator[Token]:   # type: ignore[override]
+                for w in data:
+                    yield Token(w.tag, w.text, w.start, 1, w.start + 1, 1, w.end + 1, w.end)
+
+        _TagLexer.__name__ = _TagLexer.__qualname__ = "TagLexer"
+        TagLexer = _TagLexer
+    return TagLexer
+
+
+TagLexer: type | None = None
 
 
 def lexicon_of(library: Library) -> tuple[Lexicon, Types]:
@@ -399,8 +418,6 @@ class Builder:
         return int(item.end)
 
     def item(self, node: Any) -> Any:
-        from lark import Tree
-
         if not isinstance(node, Tree):
             return self.word(node)
         data = str(node.data)           # a lark Token: compare it as a plain str (faster)
@@ -422,8 +439,6 @@ class Builder:
         return Word(self.text[first.start:end], first.start, end, "PREDICATE", first.info)
 
     def np(self, node: Any) -> NP:
-        from lark import Tree
-
         kind = str(node.data)
         if kind == "pron_np":
             w = self.word(node.children[0])

@@ -4,8 +4,9 @@ lemminflect ships two lookup tables (``lemma_lu.csv.gz``: word → lemmas by par
 ``infl_lu.csv.gz``: lemma → inflected forms) and a learned model for words they lack. Its own
 loader turns each table into Python dictionaries, which takes most of a second; ``seal parse``
 starts many times a minute from scripts, so this module reads the same tables as sorted lines
-and looks words up by bisection (a few milliseconds to open). Words the tables lack go to
-lemminflect's model, imported only then.
+and looks words up by bisection (a few milliseconds to open). A noun the tables lack ("cheezits")
+is kept as written (grounding then also tries it without a plural ending); a verb they lack gets
+its forms from lemminflect's model, imported only then.
 
     word table line:  ``knives,noun,knife``            (word, category, lemmas separated by /)
     lemma table line: ``light,verb,lit/lighted,lit,lighting,lights``   (VBD, VBN, VBG, VBZ)
@@ -63,12 +64,6 @@ def _lemmas(word: str, category: str) -> tuple[str, ...]:
     return ()
 
 
-def _oov(word: str, upos: str) -> tuple[str, ...]:
-    import lemminflect
-
-    return tuple(lemminflect.getAllLemmasOOV(word, upos).get(upos, ()))
-
-
 @lru_cache(maxsize=65536)
 def noun_lemma(word: str) -> str:
     """The singular of a noun (``"knives"`` → ``"knife"``, ``"people"`` stays); lower case."""
@@ -77,10 +72,7 @@ def noun_lemma(word: str) -> str:
         return lower
     lemmas = _lemmas(lower, "noun")
     if not lemmas:
-        if lower.endswith("s") and not lower.endswith("ss") and not _WORDS.entries(lower):
-            lemmas = _oov(lower, "NOUN")        # "cheezits": the model, not a guess
-        if not lemmas:
-            return lower
+        return lower        # a word the dictionary lacks ("cheezits") stays as it is
     if lower in lemmas and (not lower.endswith("s") or lower.endswith("ss") or len(lemmas) == 1):
         return lower                            # "people", "glass"; but "glasses" → "glass"
     return lemmas[0]

@@ -46,6 +46,7 @@ def test_synonyms_and_names_compare_like_class_names() -> None:
     assert vocab.ground_words(["ice", "box"]) == "Fridge"
     assert vocab.ground_words(["coffee", "machine"]) == "coffee_machine"
     assert vocab.ground_words(["the"]) is None
+    assert Vocabulary.of(["cheezit"]).ground_words(["cheezits"]) == "cheezit"   # a plural nobody listed
     assert len(Vocabulary.of(["cup", "cup", "Cup"])) == 2      # exact duplicates dropped, spelling kept
 
 
