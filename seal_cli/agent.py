@@ -219,9 +219,12 @@ class Agent:
         key = class_key(value)
         return self.classes.get(key, key)
 
-    def run(self, commanded: Sequence[Binding]) -> Result:
-        """Plan the commanded frames, then search and execute until done or out of budget."""
+    def run(self, commanded: Sequence[Binding], done: Sequence[Binding] = ()) -> Result:
+        """Plan the commanded frames, then search and execute until done or out of budget.
+        ``done``: frames already carried out, whose postconditions hold at the start."""
         self.state = self.initial_state()
+        for binding in done:
+            self.state = self.state.apply(binding)
         self.policy.begin(self)
         self.look()
         todo = list(commanded)
@@ -672,17 +675,34 @@ class SeFMPolicy:
         self.fallback.observe(agent, detections)
         pose = agent.world.robot.pose
         self.history.append((pose, tuple(detections)))
-        if self.sefm is not None:
+        if self.sefm is None and self.keep_clouds and agent.steps:
+            self._beliefs(agent)
+        elif self.sefm is not None:
             self.sefm.update(pose, detections, self._state(agent))
+            if self.keep_clouds:
+                self.snapshot(agent)
+
+    keep_clouds = False
+    """Keep a copy of the particle clouds after every update (for ``seal run --rrd``)."""
+
+    def snapshot(self, agent: Agent) -> None:
+        """The clouds now: the frame at hand, and every object believed in."""
+        sefm = self.sefm
+        if not hasattr(self, "clouds"):
+            self.clouds: list[dict[str, Any]] = []
+        objects = {c: (sefm.objects.X[sefm.objects.row(c)].copy(), sefm.objects.W[sefm.objects.row(c)].copy())
+                   for c in sefm.object_classes}
+        index = min(agent.index, len(sefm.bindings) - 1)
+        frame = str(sefm.bindings[index]) if sefm.bindings else ""
+        self.clouds.append({"step": agent.world.step, "frame": frame,
+                            "frame_particles": (sefm.frames.X[index].copy(), sefm.frames.W[index].copy())
+                            if sefm.bindings else None, "objects": objects})
 
     def modes(self, agent: Agent, binding: Binding, target: str) -> list[tuple[tuple[float, float], float]]:
         """Where the thing sought is believed to be: ``(point, weight)``, heaviest first."""
         sefm = self._beliefs(agent)
         sefm.update(agent.world.robot.pose, (), self._state(agent))
-        if self.use_frames:
-            summary = sefm.frame_summary(agent.index)
-        else:
-            summary = sefm.object_summary(agent.class_of(target))
+        summary = sefm.frame_summary(agent.index) if self.use_frames else sefm.object_summary(agent.class_of(target))
         modes = [(m.mean, m.weight) for m in summary.modes]
         return sorted(modes, key=lambda mw: -mw[1]) or [(summary.best, 1.0)]
 

@@ -1,0 +1,183 @@
+"""``seal run``: a simulated robot carries out a command on a map; ``seal bench tasks``: the ALFRED-2D suite."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import Any
+
+import typer
+from rich.table import Table
+
+from . import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
+
+KIND_STYLE = {"plan": "bold", "frame": "bold cyan", "search": "yellow", "go": "", "see": "green", "look": "dim",
+              "act": "green", "fail": "red", "replan": "magenta", "done": "bold green", "give_up": "bold red"}
+
+
+def _narrate(record: Any) -> None:
+    style = KIND_STYLE.get(record.kind, "")
+    where = f"[dim]({record.pose[0]:.2f}, {record.pose[1]:.2f}) {record.path_m:6.2f} m[/dim]"
+    text = record.text.replace("[", r"\[")
+    out.print(f"{where}  [{style}]{text}[/{style}]" if style else f"{where}  {text}")
+
+
+@command("run")
+def run(
+    text: str = typer.Argument(..., help="The command, e.g. \"stir the cup\"."),
+    map_name: str = typer.Option(..., "--map", help="The map (a path or a shipped map's name); its ground-truth "
+                                 "objects are the world the robot acts in."),
+    holding: str | None = typer.Option(None, "--holding", help="The class of what the robot holds at the start.",
+                                       show_default=False),
+    done: list[str] | None = typer.Option(None, "--done", help="A command already carried out (repeatable): its "
+                                          "frames' postconditions hold at the start.", show_default=False),
+    policy: str = typer.Option("sefm", "--policy", help="Who searches: sefm, object_only, coverage, oracle or "
+                               "uniform."),
+    seed: int = typer.Option(0, "--seed", help="Seed of the one random generator."),
+    particles: int = typer.Option(200, "--particles", min=1, help="Particles per object and per frame."),
+    max_steps: int = typer.Option(400, "--max-steps", min=1, help="Give up after this many steps."),
+    max_metres: float = typer.Option(300.0, "--max-metres", min=0.1, help="Give up after driving this far."),
+    rrd: Path | None = typer.Option(None, "--rrd", help="Write a Rerun recording of the run here.",
+                                    show_default=False),
+    png: Path | None = typer.Option(None, "--png", help="Write a picture of the run here.", show_default=False),
+    framelib: list[Path] | None = FramelibOption,
+    as_json: bool = JsonOption,
+) -> None:
+    """Simulate a robot that searches for what the command needs, goes there and does it, narrating each step."""
+    from dataclasses import replace
+
+    import numpy as np
+
+    from ..agent import Agent, Budget, scene_from_map
+    from ..baselines import make_policy
+    from ..grounding import vocabulary_of_map
+    from ..language import parse_command
+    from ..library import load_library
+    from ..maps import Robot, load_map
+    from ..problem import build_problem
+    from ..resources import map_path
+
+    library = load_library(framelib_paths(framelib))
+    the_map = load_map(map_path(map_name))
+    if holding is not None:
+        the_map = replace(the_map, robot=Robot(the_map.robot.pose, holding))
+    scene = scene_from_map(the_map, library)
+    vocabulary = vocabulary_of_map(the_map)
+    parses = [parse_command(t, library, vocabulary) for t in (*(done or ()), text)]
+    problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1])
+    searcher = make_policy(policy, particles)
+    if hasattr(searcher, "keep_clouds") and (rrd is not None or png is not None):
+        searcher.keep_clouds = True
+    observers = [] if as_json else [_narrate]
+    agent = Agent(scene, library, searcher, rng=np.random.default_rng(seed),
+                  budget=Budget(steps=max_steps, metres=max_metres), observers=observers,
+                  classes=problem.state.classes)
+    done_frames = [b for p in parses[:-1] for b in build_problem(p, library).commanded]
+    result = agent.run(problem.commanded, done=done_frames)
+    if rrd is not None:
+        from ..runrecord import write_rrd
+
+        write_rrd(rrd, agent)
+    if png is not None:
+        from ..runrecord import write_png
+
+        write_png(png, agent, f"{the_map.name}: {text}")
+    if as_json:
+        emit_json({"map": the_map.name, "text": text, "policy": policy, "seed": seed,
+                   "completed": result.completed, "reason": result.reason, "path_m": round(result.path_m, 3),
+                   "steps": result.steps, "plan": result.plan, "executed": result.executed,
+                   "records": [{"kind": r.kind, "text": r.text, "step": r.step, "path_m": round(r.path_m, 3),
+                                "pose": [round(v, 3) for v in r.pose]} for r in result.records]})
+    else:
+        verdict = "[bold green]done[/bold green]" if result.completed else \
+            f"[bold red]not done[/bold red]: {result.reason}"
+        out.print(f"{verdict} — {result.path_m:.2f} m driven, {result.steps} steps")
+    if not result.completed:
+        raise typer.Exit(1)
+
+
+@command("tasks", on=bench_app)
+def tasks(
+    suite: str = typer.Option("alfred2d", "--suite", help="The task suite (only alfred2d so far)."),
+    data: Path | None = typer.Option(None, "--data", help="The ALFRED-2D folder (default: ../shared/data/alfred2d "
+                                     "beside the project).", show_default=False),
+    split: str = typer.Option("valid_seen", "--split", help="Which split's episodes to run (priors always come "
+                              "from train)."),
+    goal: str = typer.Option("gold", "--goal", help="gold: ALFRED's task labels; human: the first human goal "
+                             "sentence, parsed."),
+    limit: int | None = typer.Option(None, "--limit", min=1, help="At most this many episodes per task type.",
+                                     show_default=False),
+    types: list[str] | None = typer.Option(None, "--type", help="Only this task type (repeatable).",
+                                           show_default=False),
+    policies: str = typer.Option("sefm,object_only,coverage,oracle", "--policies",
+                                 help="Comma-separated policies (uniform: SeFM without priors)."),
+    jobs: int = typer.Option(0, "--jobs", min=0, help="Worker processes (0: one per core)."),
+    seed: int = typer.Option(0, "--seed", help="Seed; each episode's generator is derived from it."),
+    particles: int = typer.Option(200, "--particles", min=1, help="Particles per object and per frame."),
+    episodes: Path | None = typer.Option(None, "--episodes", help="Also write every outcome here as JSON Lines.",
+                                         show_default=False),
+    framelib: list[Path] | None = FramelibOption,
+    as_json: bool = JsonOption,
+) -> None:
+    """Run every policy on the same ALFRED-2D episodes: success and path length per task type."""
+    import json
+
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+
+    from ..bench_tasks import run_suite, summarise
+    from ..errors import SealError
+
+    if data is None:
+        data = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "alfred2d"
+    if suite != "alfred2d":
+        raise SealError(f"unknown suite {suite!r}; the only suite is alfred2d")
+    names = [p.strip() for p in policies.split(",") if p.strip()]
+    if not names:
+        raise SealError("--policies names no policy")
+    from ..baselines import make_policy
+
+    for name in names:
+        make_policy(name)
+    outcomes = []
+    with Progress(TextColumn("episodes"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), console=err,
+                  transient=True, disable=not err.is_terminal) as progress:
+        bar = progress.add_task("episodes", total=None)
+        for outcome in run_suite(data, split, names, goal=goal, limit=limit, types=types, seed=seed,
+                                 jobs=jobs or os.cpu_count() or 1, particles=particles,
+                                 framelib=[str(p) for p in framelib] if framelib else None,
+                                 progress=lambda done, total: progress.update(bar, completed=done, total=total)):
+            outcomes.append(outcome)
+    if episodes is not None:
+        from ..fileio import atomic_write_text
+
+        atomic_write_text(episodes, "".join(json.dumps(o.to_json()) + "\n" for o in outcomes))
+    report = summarise(outcomes, names)
+    report.update({"suite": suite, "split": split, "goal": goal, "seed": seed, "limit": limit})
+    if as_json:
+        emit_json(report)
+    else:
+        _table(report, names)
+
+
+def _table(report: dict[str, Any], names: list[str]) -> None:
+    table = Table(title=f"ALFRED-2D {report['split']}, goals from {report['goal']}: success rate / mean path (m)")
+    table.add_column("task type", no_wrap=True)
+    table.add_column("n", justify="right", no_wrap=True)
+    for name in names:
+        table.add_column(name, justify="right", no_wrap=True)
+    table.add_column("expert m", justify="right", no_wrap=True)
+    for group, figures in report["groups"].items():
+        cells = []
+        for name in names:
+            s, p = figures["success"][name], figures["path_m"][name]
+            cells.append(f"{s:.2f} / {p:.2f}" if s is not None and p is not None else "—")
+        expert = figures.get("expert_path_m")
+        table.add_row(f"[bold]{group}[/bold]" if group == "all" else group, str(figures["n"]), *cells,
+                      f"{expert:.2f}" if expert is not None else "—")
+    wide = 40 + 16 * len(names)
+    if out.width >= wide:
+        out.print(table)
+    else:
+        from rich.console import Console
+
+        Console(width=wide, highlight=False).print(table)
