@@ -46,7 +46,7 @@ from numpy.typing import NDArray
 from .errors import SealError, SealErrors, Where
 from .fileio import read_text
 from .geometry import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
-from .maps import Map, ObjectTruth, Place, Robot, Room, Sensor, _suggest
+from .maps import Map, MapWarning, ObjectTruth, Place, Robot, Room, Sensor, _suggest
 from .taxonomy import class_key
 
 __all__ = ["KEYS", "check_map_file", "load_map", "read_image", "read_map", "read_pgm"]
@@ -311,8 +311,9 @@ class _Reader:
             for problem in getattr(exc, "problems", None) or [exc]:
                 self.problems.append(problem)
             return None
-        self.problems.extend(built.problems(self.broken))
-        return built
+        found = built.problems(self.broken)
+        self.problems.extend(found)
+        return built.noting(p for p in found if isinstance(p, MapWarning))
 
     def map_server(self, nodes: dict[str, yaml.Node], root: yaml.Node) -> OccupancyGrid | None:
         if "image" not in nodes:
@@ -530,7 +531,9 @@ def _default_name(path: Path) -> str:
 
 # -- entry points -------------------------------------------------------------------------------------
 def read_map(path: str | Path) -> tuple[Map | None, list[SealError]]:
-    """The map in a file (None if it cannot be built) and every problem found, sorted by position."""
+    """The map in a file (None if it cannot be built) and every problem found, sorted by position.
+
+    Problems that are :class:`~seal_cli.maps.MapWarning` do not stop the map from being used."""
     path = Path(path)
     try:
         text = read_text(path)
@@ -560,14 +563,18 @@ def read_map(path: str | Path) -> tuple[Map | None, list[SealError]]:
 
 
 def load_map(path: str | Path) -> Map:
-    """The map in a file, or SealError(s) listing every problem with its file, line and column."""
+    """The map in a file, or SealError(s) listing every problem with its file, line and column.
+
+    A map whose only problems are warnings (:class:`~seal_cli.maps.MapWarning`) loads, with them in
+    ``Map.warnings``."""
     built, problems = read_map(path)
-    if problems:
-        raise problems[0] if len(problems) == 1 else SealErrors(problems)
-    assert built is not None
+    fatal = [p for p in problems if not isinstance(p, MapWarning)]
+    if fatal or built is None:
+        raise fatal[0] if len(fatal) == 1 else SealErrors(fatal or problems)
     return built
 
 
 def check_map_file(path: str | Path) -> list[SealError]:
-    """Every problem of a map file (what ``seal validate`` reports); empty when the map is good."""
+    """Every problem of a map file, warnings included (what ``seal validate`` reports); empty when the
+    map is good."""
     return read_map(path)[1]

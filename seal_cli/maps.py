@@ -50,8 +50,8 @@ from .taxonomy import class_key
 if TYPE_CHECKING:
     from .priors import Prior
 
-__all__ = ["OUTSIDE", "Map", "ObjectTruth", "Place", "Robot", "Room", "Sensor", "check_map_file", "load_map",
-           "prior_density", "prior_sampler", "sample_prior"]
+__all__ = ["OUTSIDE", "Map", "MapWarning", "ObjectTruth", "Place", "Robot", "Room", "Sensor", "check_map_file",
+           "load_map", "prior_density", "prior_sampler", "sample_prior"]
 
 OUTSIDE = "_outside"
 """The name reported for points in no room."""
@@ -72,6 +72,15 @@ def _xy(value: ArrayLike, what: str, where: Where | None = None) -> XY:
     if array.shape != (2,) or not np.all(np.isfinite(array)):
         raise SealError(f"{what} must be two finite numbers [x, y], not {value!r}", where)
     return (float(array[0]), float(array[1]))
+
+
+class MapWarning(SealError):
+    """A problem that ``seal validate`` reports but that does not stop the map from being used.
+
+    Rooms that overlap (the room listed first wins), and places, objects or the robot outside the
+    bounds or on an occupied cell (a laser map marks furniture occupied: a cup on a coffee table
+    may well stand on one). Such a map loads, with the problems in :attr:`Map.warnings`.
+    """
 
 
 # -- value objects ------------------------------------------------------------------------------
@@ -293,6 +302,8 @@ class Map:
     file: str | None = field(default=None, compare=False)
     positions: Mapping[tuple[str | int, ...], Where] = field(default_factory=dict, compare=False, repr=False)
     check: InitVar[bool] = True
+    warnings: tuple[SealError, ...] = field(default=(), init=False, compare=False, repr=False)
+    """What is odd about the map but does not stop it from being used (:class:`MapWarning`)."""
 
     def __post_init__(self, check: bool) -> None:
         set_ = object.__setattr__
@@ -317,8 +328,10 @@ class Map:
             set_(self, "robot", replace(self.robot, pose=self._default_pose()))
         if check:
             problems = self.problems()
-            if problems:
-                raise SealErrors(problems)
+            fatal = [p for p in problems if not isinstance(p, MapWarning)]
+            if fatal:
+                raise SealErrors(fatal)
+            set_(self, "warnings", tuple(problems))
 
     def _grid_and_contents_bounds(self) -> Bounds:
         """The box around the grid and every place, object and placed robot (receptacles often lie
@@ -547,6 +560,11 @@ class Map:
         return ("class", members) if members else None
 
     # -- checking --------------------------------------------------------------------------------
+    def noting(self, warnings: Iterable[SealError]) -> Map:
+        """This map, with these warnings recorded in :attr:`warnings` (for readers that check themselves)."""
+        object.__setattr__(self, "warnings", tuple(warnings))
+        return self
+
     def problems(self, known: Iterable[str] = ()) -> list[SealError]:
         """Every problem of this map, located by :attr:`positions`. ``known``: names of rooms and
         places that exist but could not be built (so that priors naming them are not blamed)."""
@@ -619,7 +637,7 @@ def _room_overlaps(m: Map) -> Iterator[SealError]:
             if area > OVERLAP_TOLERANCE:
                 first = m.where("rooms", i)
                 at = f" (line {first.line})" if first.line else ""
-                yield SealError(f"room {b.name} overlaps room {a.name}{at} by about {area:.2f} m²; rooms must not "
+                yield MapWarning(f"room {b.name} overlaps room {a.name}{at} by about {area:.2f} m²; rooms must not "
                                 "overlap (they may share walls)", m.where("rooms", j, "polygon"))
 
 
@@ -630,7 +648,7 @@ def _outside(m: Map, xy: XY) -> bool:
 def _places(m: Map) -> Iterator[SealError]:
     for i, place in enumerate(m.places):
         if _outside(m, place.at):
-            yield SealError(f"place {place.name} at {_pt(place.at)} is outside the map's bounds {_pt(m.bounds[:2])}"
+            yield MapWarning(f"place {place.name} at {_pt(place.at)} is outside the map's bounds {_pt(m.bounds[:2])}"
                             f"–{_pt(m.bounds[2:])}", m.where("places", i, "at"))
 
 
@@ -662,10 +680,11 @@ def _objects(m: Map, known: set[str]) -> Iterator[SealError]:
     for i, obj in enumerate(m.objects):
         point = np.array([obj.at])
         if _outside(m, obj.at):
-            yield SealError(f"object {obj.cls} at {_pt(obj.at)} is outside the map's bounds {_pt(m.bounds[:2])}–"
+            yield MapWarning(f"object {obj.cls} at {_pt(obj.at)} is outside the map's bounds {_pt(m.bounds[:2])}–"
                             f"{_pt(m.bounds[2:])}", m.where("objects", i, "at"))
-        elif m.is_occupied(point)[0]:
-            yield SealError(f"object {obj.cls} at {_pt(obj.at)} is inside a wall (an occupied cell of the map)",
+        elif m.is_occupied(point)[0] and (obj.inside is None or m.place(obj.inside) is None):
+            yield MapWarning(f"object {obj.cls} at {_pt(obj.at)} is inside a wall or an obstacle (an occupied cell "
+                             "of the map); if it stands on furniture, say which place it is in: in: <place>",
                             m.where("objects", i, "at"))
         if obj.inside is not None and m.place(obj.inside) is None and class_key(obj.inside) not in known:
             places = [p.name for p in m.places]
@@ -677,9 +696,9 @@ def _objects(m: Map, known: set[str]) -> Iterator[SealError]:
 def _robot(m: Map) -> Iterator[SealError]:
     xy = m.robot.xy
     if _outside(m, xy):
-        yield SealError(f"robot pose {_pt(xy)} is outside the map's bounds", m.where("robot", "pose"))
+        yield MapWarning(f"robot pose {_pt(xy)} is outside the map's bounds", m.where("robot", "pose"))
     elif m.is_occupied(np.array([xy]))[0]:
-        yield SealError(f"robot pose {_pt(xy)} is inside a wall (an occupied cell of the map)",
+        yield MapWarning(f"robot pose {_pt(xy)} is inside a wall or an obstacle (an occupied cell of the map)",
                         m.where("robot", "pose"))
 
 

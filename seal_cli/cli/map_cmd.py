@@ -8,7 +8,7 @@ from typing import Any
 import typer
 from rich.table import Table
 
-from . import JsonOption, bench_app, command, emit_json, out
+from . import JsonOption, bench_app, command, emit_json, err, out
 
 
 def summary(m: Any) -> dict[str, Any]:
@@ -81,6 +81,8 @@ def map_command(
     from ..resources import map_path
 
     m = load_map(map_path(path))
+    for warning in m.warnings:
+        err.print(f"warning: {warning}", markup=False)
     if png is not None:
         from ..mapdraw import save_map_png
 
