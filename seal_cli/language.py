@@ -419,7 +419,10 @@ class Builder:
 
     def item(self, node: Any) -> Any:
         if not isinstance(node, Tree):
-            return self.word(node)
+            word = self.word(node)
+            if word.tag == "HERE":              # "come here": a place said by pointing
+                return PP("at", NP(word.start, word.end, word, "place"), word.start)
+            return word
         data = str(node.data)           # a lark Token: compare it as a plain str (faster)
         if data == "pp":
             return self.pp(node)
@@ -597,7 +600,12 @@ class Builder:
             elif strict:
                 return None
         if objects and first is not None and first not in roles:
-            roles[first] = objects.pop(0)
+            only = objects.pop(0)
+            if ("recipient" in frame.roles and only.kind == "person"
+                    and not self.is_person_type(frame.elements[0].type) and frame.elements[0].role != "goal"):
+                roles["recipient"] = only            # "tell Robin", "give Maria": the person receives
+            else:
+                roles[first] = only
         if objects and strict:
             return None
         previous: NP | None = clause.objects[-1] if clause.objects else None
@@ -632,7 +640,10 @@ class Builder:
         elif pp.prep == "with":
             options = ["instrument"]
         elif pp.prep in _LOCATIVE:
-            if previous is not None and previous.kind == "person" and "ground" not in have:
+            person_before = previous is not None and (previous.kind == "person" or (
+                frame.elements and roles.get(frame.elements[0].role) is previous
+                and self.is_person_type(frame.elements[0].type)))
+            if person_before and "ground" not in have:
                 return None
             if previous is not None and previous.contents and np.pronoun in ("it", "them"):
                 return None                              # "a pan with a spoon in it"
@@ -721,6 +732,9 @@ class Builder:
                     score -= 3
                 if np.pronoun in ("them", "they") and (kind == "person" or phrase.plural):
                     score += 1
+                if wanted_person is False and kind == "thing" and frame is not None and role is not None:
+                    fits = self.taxonomy.is_a(phrase.cls or phrase.head, frame.element(role).type)
+                    score += 3.0 if fits else -3.0 if fits is False else 0.0   # "close it": the fridge
                 if best is None or score > best[0]:
                     best = (score, index, name, kind)
         return None if best is None else best[1:]

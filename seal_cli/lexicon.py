@@ -96,7 +96,7 @@ POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "wi
                     "i'd like you to", "you should", "you must", "you need to", "you have to", "you will",
                     "you can", "go ahead and", "robot", "hey", "ok", "okay", "now", "first", "firstly",
                     "just", "quickly", "carefully", "to", "try to", "then", "and", "also", "simply",
-                    "let's", "be sure to", "make sure to", "remember to", "go and", "come and"])
+                    "let's", "be sure to", "make sure to", "remember to", "go and", "come and", "go", "come"])
 END_MARKS = frozenset(".!?")
 HERE_WORDS = frozenset(["here", "there", "over here", "over there"])
 _QUANTIFIERS = frozenset(["one", "two", "three", "four", "both", "all", "some", "each", "any", "none", "most",
