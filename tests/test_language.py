@@ -171,6 +171,24 @@ def test_inflected_verbs_and_subordinate_clauses(library: Library) -> None:
     assert frames_of("take the remote to turn on the lamp", library) == ["Pick", "ToggleOn"]
 
 
+@pytest.mark.parametrize(("text", "expected"), [
+    ("Could you bring me the apple from the kitchen table?", [("Bring", {"theme": "apple", "recipient": "me",
+                                                                         "source": "table"})]),
+    ("Go get a coke from the fridge", [("Pick", {"theme": "coke", "source": "fridge"})]),
+    ("How many cups are on the table?", [("Count", {"theme": "cup", "ground": "table"})]),
+    ("Lead the lady in the red dress to the couch", [("Guide", {"theme": "lady", "goal": "couch"})]),
+    ("Tell Robin to come", [("Tell", {"recipient": "Robin"})]),
+    ("come here", [("Go", {"goal": "here"})]),
+    ("Open the fridge, take out the milk and close it", [("Open", {"theme": "fridge"}),
+                                                          ("Pick", {"theme": "milk"}), ("Close", {"theme": "fridge"})]),
+])
+def test_other_wordings(library: Library, text: str, expected: list[tuple[str, dict[str, str]]]) -> None:
+    parse = parse_command(text, library)
+    got = [(f.frame, {r: parse.resolve(p).head for r, p in f.elements.items() if not p.default})
+           for f in parse.frames]
+    assert got == expected
+
+
 def test_unknown_nouns_and_names_are_open_class(library: Library) -> None:
     theme = parse_command("bring me the zorblax from the quuxtable", library).frames[0].elements
     assert theme["theme"].head == "zorblax" and theme["source"].head == "quuxtable"
