@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 from .errors import SealError, Where
 from .library import Library
@@ -118,24 +118,26 @@ NP_START = frozenset({"DET", "NUM", "POSS", "PRON", "NAME", "WORD", "RESULT"})
 # Tokens
 
 
-@dataclass(slots=True)
 class Word:
     """A word (or a merged multiword function phrase) of the command, with its tag.
 
     ``start``/``end`` are character offsets into the command. ``info`` carries what the tag
     needs: the lexical unit of a VERB, the (frame, unit) of a RESULT, the number of a NUM,
-    the preposition of a PREP.
+    the preposition of a PREP. (A plain slotted class: the tagger makes tens of thousands.)
     """
 
-    text: str
-    start: int
-    end: int
-    tag: str = ""
-    info: object = None
-    lower: str = field(default="", repr=False)
+    __slots__ = ("end", "info", "lower", "start", "tag", "text")
 
-    def __post_init__(self) -> None:
-        self.lower = self.text.lower()
+    def __init__(self, text: str, start: int, end: int, tag: str = "", info: object = None) -> None:
+        self.text = text
+        self.start = start
+        self.end = end
+        self.tag = tag
+        self.info = info
+        self.lower = text.lower()
+
+    def __repr__(self) -> str:
+        return f"Word({self.text!r}, {self.start}, {self.end}, {self.tag!r})"
 
 
 _TOKEN = re.compile(r"""
@@ -160,21 +162,21 @@ def tokenize(text: str) -> list[Word]:
                            _printable(text), ["a word"])
     words: list[Word] = []
     pos = 0
-    while pos < len(text):
-        match = _TOKEN.match(text, pos)
-        if match is None:
+    for match in _TOKEN.finditer(text):
+        if match.start() != pos:
             raise CommandError(f"unexpected character {text[pos]!r}", pos + 1, text, ["a word"])
+        pos = match.end()
         kind = match.lastgroup
         if kind == "word":
-            words.append(Word(match.group(), match.start(), match.end()))
+            words.append(Word(match.group(), match.start(), pos))
+        elif kind == "punct":           # "..." and "?!" are one mark
+            words.append(Word(match.group()[0], match.start(), pos))
         elif kind == "amp":
-            words.append(Word("and", match.start(), match.end()))
+            words.append(Word("and", match.start(), pos))
         elif kind == "poss":
-            words.append(Word("'s", match.start(), match.end()))
-        elif kind == "punct":
-            # "..." and "?!" are one mark; "," and ";" keep their own
-            words.append(Word(match.group()[0], match.start(), match.end()))
-        pos = match.end()
+            words.append(Word("'s", match.start(), pos))
+    if pos != len(text):
+        raise CommandError(f"unexpected character {text[pos]!r}", pos + 1, text, ["a word"])
     return words
 
 
