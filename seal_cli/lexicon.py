@@ -488,7 +488,7 @@ class Tagger:
         w = words[i]
         low = w.lower
         prev = self.prev_tag()
-        in_np = prev in ("DET", "NUM", "POSS", "RESULT") or (prev == "WORD" and self._premodifier())
+        in_np = prev in ("DET", "NUM", "POSS", "RESULT")     # inside a noun phrase, before its head
         nxt = words[i + 1].lower if i + 1 < len(words) else ""
         # numbers and quantities
         n = _match_phrase(words, i, NUMBERS)
@@ -558,7 +558,7 @@ class Tagger:
             return 1
         # open-class words
         gerund = gerund_lemma(low)
-        if gerund and prev in ("WORD", "NAME", "PRON", "BE") and not (prev == "WORD" and self._premodifier()):
+        if gerund and prev in ("WORD", "NAME", "PRON", "BE"):
             tag = "VBG_T" if self.np_starts(i + 1) and nxt not in PARTICLES else \
                 "VBG_P" if nxt in PREPOSITIONS and self.np_starts(i + 2) else "VBG_I"
             self.out.append(Word(w.text, w.start, w.end, tag, gerund))
@@ -576,11 +576,6 @@ class Tagger:
             return 1
         self.out.append(Word(w.text, w.start, w.end, "WORD"))
         return 1
-
-    def _premodifier(self) -> bool:
-        """Whether the last WORD is still inside the noun phrase's modifiers (always: the head is
-        only known at the end, so a following open-class word extends the phrase)."""
-        return False
 
     def _noun_follows(self, i: int) -> bool:
         """Whether an open-class word (a noun or adjective) starts at ``i``."""
