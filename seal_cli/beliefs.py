@@ -1,0 +1,265 @@
+"""SeFM, Semantic Frame Mapping: where each frame of a plan can be executed, and where each object is.
+
+:class:`SeFM` joins the object filter (:mod:`seal_cli.object_beliefs`, after SLiM) and the frame
+filter (:mod:`seal_cli.frame_beliefs`, the paper's Algorithm 1) over one map. Built from a map,
+the grounded frames of a plan (:class:`~seal_cli.frames.Binding`), the robot's state
+(:class:`~seal_cli.state.State`) and a ``numpy.random.Generator``, it is advanced by
+:meth:`SeFM.update` with the robot's pose, what it detected there, and its state now::
+
+    sefm = SeFM(m, plan_bindings, state, np.random.default_rng(0))
+    for pose in poses:
+        sefm.update(pose, simulate_detections(m, pose), state)
+    sefm.frame_summary(2).rooms        # {"kitchen": 0.31, "bedroom": 0.52, ...}
+
+One update: the object beliefs take the observation; the kernel sums of the sources that changed
+are refreshed; the relation beliefs are recomputed from the state; every frame is resampled,
+moved and reweighted by measurement × context. The context uses the frames' beliefs of the
+previous update (each frame moves once per update, all at once). Every random draw comes from
+the one generator, so the same seed and inputs give the same beliefs.
+
+What is observed about a run — a Rerun recording, a picture, metrics — is gathered by
+*observers* passed in (``SeFM(..., observers=[RerunRecorder(path)])``), never by code inside the
+update.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+from typing import Any, Protocol
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .frame_beliefs import FrameBeliefs, FrameModel, Terms
+from .frames import Binding
+from .maps import Map
+from .modes import Summary, summarise
+from .object_beliefs import ObjectBeliefs, ObjectModel, Source, source_for
+from .potentials import KernelSums, make_kernel_sums
+from .relations import OTHER, Relations, relations
+from .sensor import VisibleRegion, as_pose, visible_region
+from .state import State
+from .taxonomy import class_key
+
+__all__ = ["Observer", "SeFM", "SeFMConfig", "Step", "frame_id"]
+
+Array = NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class SeFMConfig:
+    """Everything that shapes SeFM's numbers (defaults: the paper's and the SPEC's)."""
+
+    particles: int = 200
+    """Per object and per frame."""
+    sigma: float = 0.3
+    """The potentials' Gaussian, Σ = σ²I (m)."""
+    other: float = OTHER
+    """B of an Other relation."""
+    kernel: str = "grid"
+    """``grid`` (the engine) or ``exact`` (the O(P²) reference)."""
+    objects: ObjectModel | None = None
+    """None: from the map's sensor."""
+    frames: FrameModel = field(default_factory=FrameModel)
+    bandwidth: float = 1.0
+    """Mean-shift bandwidth of the summaries (m)."""
+    ray_spacing: float = 0.1
+    """Gap between neighbouring sensor rays at full range (m) when casting the visible region."""
+
+    def __post_init__(self) -> None:
+        if self.particles < 1:
+            raise ValueError("particles must be at least 1")
+        if self.sigma <= 0:
+            raise ValueError("sigma must be positive")
+
+
+@dataclass(frozen=True)
+class Step:
+    """One update, as observers see it."""
+
+    index: int
+    pose: tuple[float, float, float]
+    detections: tuple[tuple[str, tuple[float, float]], ...]
+    region: VisibleRegion
+
+
+class Observer(Protocol):
+    """Something that watches SeFM run: called once at the start, after every update, and at the end."""
+
+    def start(self, sefm: SeFM) -> None: ...
+
+    def update(self, sefm: SeFM, step: Step) -> None: ...
+
+    def finish(self, sefm: SeFM) -> None: ...
+
+
+def frame_id(binding: Binding) -> str:
+    """A name for a grounded frame usable in paths: ``stir_cup_spoon``."""
+    values = [class_key(v) for _, v in sorted(binding.values, key=lambda kv: binding.frame.roles.index(kv[0]))]
+    return "_".join([class_key(binding.frame.name), *values])
+
+
+def _detections(detections: Iterable[Any]) -> tuple[tuple[str, tuple[float, float]], ...]:
+    """Detections as ``(class, (x, y))`` from :class:`~seal_cli.sensor.Detection` objects or pairs."""
+    out = []
+    for d in detections:
+        cls, at = (d.cls, d.at) if hasattr(d, "cls") else d
+        out.append((class_key(str(cls)), (float(at[0]), float(at[1]))))
+    return tuple(out)
+
+
+class SeFM:
+    """Object and frame beliefs over one map for one plan (see the module docstring)."""
+
+    def __init__(self, m: Map, bindings: Sequence[Binding], state: State, rng: np.random.Generator,
+                 config: SeFMConfig | None = None, observers: Sequence[Observer] = ()) -> None:
+        self.map = m
+        self.bindings = tuple(bindings)
+        self.state = state
+        self.rng = rng
+        self.config = config or SeFMConfig()
+        self.observers = list(observers)
+        self.step = 0
+        self._last_region: VisibleRegion | None = None
+        self.sources = self._sources()
+        P = self.config.particles
+        self.objects = ObjectBeliefs.from_prior(m, self.sources, P, rng,
+                                                self.config.objects or ObjectModel.for_map(m))
+        self.kernel: KernelSums = make_kernel_sums(self.config.kernel, len(self.sources) + len(self.bindings), P,
+                                                   m.bounds, self.config.sigma)
+        self.kernel.set(range(len(self.sources)), self.objects.X, self.objects.W)
+        self.relations = relations(self.bindings, state, self.config.other)
+        terms = self.terms()
+        self.frames = FrameBeliefs.start(m, self._noise(), P, terms, self.kernel, (self.objects.X, self.objects.W),
+                                         rng, self.config.frames)
+        self._refresh_context(terms)
+        for observer in self.observers:
+            observer.start(self)
+
+    # -- construction ---------------------------------------------------------------------------
+    def _sources(self) -> tuple[Source, ...]:
+        seen: dict[str, Source] = {}
+        for binding in self.bindings:
+            for _, value, _ in _all_elements(binding):
+                source = source_for(self.map, value)
+                seen.setdefault(source.key, source)
+        return tuple(seen.values())
+
+    def _noise(self) -> list[float]:
+        model = self.config.frames
+        out = []
+        for binding in self.bindings:
+            kinds = {self.sources[self.source_row(v)].kind for _, v, _ in _all_elements(binding)}
+            out.append(model.movable_noise if "object" in kinds else model.static_noise)
+        return out
+
+    def source_row(self, value: str) -> int:
+        """The row of the source a value names (an object class, place or room)."""
+        return self.objects.row(source_for(self.map, value).key) if self.sources else -1
+
+    # -- the state's relations ------------------------------------------------------------------
+    def terms(self) -> Terms:
+        """The potentials of every frame under the current relation beliefs."""
+        C = len(self.sources)
+        measurement = [[(self.source_row(v), b) for _, v, b in r.elements] for r in self.relations]
+        context = [[(C + j, b) for j, b in r.context] for r in self.relations]
+        return Terms.build(len(self.bindings), measurement, context)
+
+    def _refresh_context(self, terms: Terms) -> None:
+        """The kernel rows of the frames that are some frame's context now hold their new beliefs."""
+        rows = np.unique(terms.ctx_source)
+        if len(rows):
+            frames = rows - len(self.sources)
+            self.kernel.set(list(rows), self.frames.X[frames], self.frames.W[frames])
+
+    # -- one update -----------------------------------------------------------------------------
+    def update(self, pose: ArrayLike, detections: Iterable[Any] = (), state: State | None = None) -> None:
+        """One belief update from the robot's pose ``(x, y[, yaw])``, what it detected there, and its state."""
+        if state is not None:
+            self.state = state
+        robot = as_pose(pose)
+        seen = _detections(detections)
+        region = self._region(robot)
+        change = self.objects.update(region.contains, seen, self._hidden(), self._held(), self.rng)
+        if change.redrawn:
+            rows = list(change.redrawn)
+            self.kernel.set(rows, self.objects.X[rows], self.objects.W[rows])
+        for row, index, delta, total in change.reweighted:
+            self.kernel.reweight(row, index, self.objects.X[row, index], delta, total)
+        self.relations = relations(self.bindings, self.state, self.config.other)
+        terms = self.terms()
+        self.frames.update(terms, self.kernel, (self.objects.X, self.objects.W), self.rng)
+        self._refresh_context(terms)
+        self.step += 1
+        record = Step(self.step, robot, seen, region)
+        for observer in self.observers:
+            observer.update(self, record)
+
+    def _region(self, pose: tuple[float, float, float]) -> VisibleRegion:
+        """The region visible from a pose (cast once per distinct pose)."""
+        if self._last_region is None or self._last_region.pose != pose:
+            sensor = self.map.sensor
+            span = min(sensor.fov_deg, 360.0) * np.pi / 180
+            rays = max(16, int(np.ceil(span * sensor.range / self.config.ray_spacing)))
+            self._last_region = visible_region(self.map, pose, rays=rays)
+        return self._last_region
+
+    def close(self) -> None:
+        """Tell the observers the run is over."""
+        for observer in self.observers:
+            observer.finish(self)
+
+    def _held(self) -> set[str]:
+        return {class_key(f.args[0]) for f in self.state.facts if f.predicate == "holding" and len(f.args) == 1}
+
+    def _hidden(self) -> list[tuple[float, float, float]]:
+        """Closed places as ``(x, y, reach)``: what is within reach of them may be inside, unseen."""
+        return [(p.at[0], p.at[1], p.reach) for p in self.map.places if p.openable and not self._is_open(p)]
+
+    def _is_open(self, place: Any) -> bool:
+        """Open by the state's ``open(name)`` or ``open(class)``; without such a fact, closed if the state
+        knows what closes, else as the map says."""
+        names = {class_key(place.name), place.cls}
+        if any(f.predicate == "open" and len(f.args) == 1 and class_key(f.args[0]) in names for f in self.state.facts):
+            return True
+        return False if self.state.closable is not None else bool(place.open)
+
+    # -- what it believes -----------------------------------------------------------------------
+    def frame_summary(self, i: int) -> Summary:
+        return summarise(self.map, self.frames.X[i], self.frames.W[i], self.config.bandwidth)
+
+    def object_summary(self, cls: str) -> Summary:
+        row = self.objects.row(cls)
+        return summarise(self.map, self.objects.X[row], self.objects.W[row], self.config.bandwidth)
+
+    @property
+    def object_classes(self) -> tuple[str, ...]:
+        """The sources that are object classes (places and rooms are known, not believed)."""
+        return tuple(s.key for s in self.sources if s.kind == "object")
+
+    def frame_json(self, i: int) -> dict[str, Any]:
+        binding = self.bindings[i]
+        summary = self.frame_summary(i).to_json()
+        ordered = sorted(binding.values, key=lambda kv: binding.frame.roles.index(kv[0]))
+        return {"frame": binding.frame.name, "elements": dict(ordered), **summary}
+
+    def object_json(self, cls: str) -> dict[str, Any]:
+        summary = self.object_summary(cls).to_json()
+        summary.pop("ess")
+        return {"class": cls, **summary}
+
+    def to_json(self) -> dict[str, Any]:
+        return {"frames": [self.frame_json(i) for i in range(len(self.bindings))],
+                "objects": [self.object_json(c) for c in self.object_classes]}
+
+    def relation_of(self, i: int) -> Relations:
+        return self.relations[i]
+
+
+def _all_elements(binding: Binding) -> list[tuple[str, str, float]]:
+    """Every spatial element of a binding, with a placeholder belief (the sources do not depend on the state)."""
+    from .relations import spatial_roles
+
+    values = binding.elements
+    return [(r, values[r], 0.0) for r in spatial_roles(binding)]

@@ -1,0 +1,265 @@
+"""Frame beliefs: a weighted particle set per grounded frame over where it can be executed.
+
+Notation: ``X`` (F, P, 2) particles of F frames, ``W`` (F, P) normalised weights, ``γ`` the
+unnormalised target, ``K_s(x)`` the kernel sum of source ``s`` (:mod:`seal_cli.potentials`),
+``B`` element and ``C`` context relation beliefs (:mod:`seal_cli.relations`).
+
+**Target.** Frame ``i``'s belief at step t is ``π_t(x) ∝ γ_t(x)`` over free space, with::
+
+    γ_t(x) = [ Σ_k B_ik · K_k(x) + ε_i ] × [ c₀ + Σ_j C_ij · K_j(x) ]
+
+the measurement potential (a *sum* over the frame's elements of the object beliefs smoothed by
+a Gaussian of constant Σ = σ²I) times the context potential (the same over the frames that
+achieve its unmet preconditions). A potential whose relations are all Disjoint is the factor 1.
+``ε_i`` is a floor worth ``floor_share`` of the frame's mass spread over all free space (the
+frame is never impossible anywhere); ``c₀`` (``context_floor``, 1 by default) keeps the context
+from vetoing: it raises a frame's weight by at most ``1 + Σ C`` where its preconditions' frames
+are, like the authors' sums floored at 1. With ``c₀ = 0`` the context is the bare product;
+then two beliefs that are each uniform over a room multiply to one proportional to 1/area², and
+which room wins depends on room sizes (docs/sefm.md shows the numbers).
+
+**Update** (the paper's Algorithm 1, as a sequential Monte Carlo sampler):
+
+1. resample by weight (systematic, over the particles listed room by room, so that each room
+   keeps its share of the belief to within one particle);
+2. move each particle by the prediction potential, a Gaussian of the frame's own spread
+   (static frames barely move, frames on movable objects move more); a move that would leave
+   free space stays put, which keeps the move symmetric;
+3. reinvigorate: a share of the particles is drawn afresh from ``g = u·U + (1 − u)·M``, uniform
+   free space ``U`` mixed with the frame's elements' beliefs ``M`` (their particles plus
+   N(0, Σ), chosen by B);
+4. reweight: a moved particle by ``Ẑ_{t−1} · γ_t(x') / γ_{t−1}(x)``, a fresh one by
+   ``γ_t(x) / g(x)``; ``Ẑ_t`` is their mean.
+
+The ratio in step 4 is the incremental weight of an SMC sampler whose backward kernel is the
+move itself (Del Moral, Doucet and Jasra 2006): the particles track ``π_t``, the frame's
+belief given the *current* object beliefs. Weighting by ``γ_t`` alone would multiply the same
+object evidence in again at every update (the belief after T updates ∝ γ^T) and collapse every
+frame onto its single densest room. Both groups estimate ``Ẑ_t = ∫ γ_t``, so their weights are
+on one scale and the fresh group takes over exactly when the old particles stop explaining the
+target (a newly seen object).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .maps import Map
+from .object_beliefs import spatial_order
+from .potentials import KernelSums
+from .resampling import ess, grouped_systematic, normalise, systematic
+
+__all__ = ["FrameBeliefs", "FrameModel", "Terms"]
+
+Array = NDArray[np.float64]
+Index = NDArray[np.intp]
+
+
+@dataclass(frozen=True)
+class FrameModel:
+    """Parameters of the frame filter."""
+
+    floor_share: float = 0.01
+    context_floor: float = 1.0
+    fresh_share: float = 0.2
+    uniform_share: float = 0.05
+    static_noise: float = 0.02
+    movable_noise: float = 0.1
+
+
+@dataclass(frozen=True)
+class Terms:
+    """Every frame's potentials in one state, as flat index arrays (one entry per non-Disjoint relation).
+
+    ``source`` entries are rows of the kernel's sources: object rows for the measurement,
+    frame rows for the context.
+    """
+
+    frames: int
+    meas_frame: Index
+    meas_source: Index
+    meas_weight: Array
+    ctx_frame: Index
+    ctx_source: Index
+    ctx_weight: Array
+
+    @classmethod
+    def build(cls, frames: int, measurement: Sequence[Sequence[tuple[int, float]]],
+              context: Sequence[Sequence[tuple[int, float]]]) -> Terms:
+        """From, per frame, ``(source row, belief)`` pairs of its elements and of its context frames."""
+        def flat(per_frame: Sequence[Sequence[tuple[int, float]]]) -> tuple[Index, Index, Array]:
+            rows = [(f, s, b) for f, pairs in enumerate(per_frame) for s, b in pairs if b > 0]
+            if not rows:
+                return np.zeros(0, np.intp), np.zeros(0, np.intp), np.zeros(0)
+            f, s, b = zip(*rows, strict=True)
+            return np.array(f, np.intp), np.array(s, np.intp), np.array(b, float)
+
+        return cls(frames, *flat(measurement), *flat(context))
+
+    @property
+    def belief_total(self) -> Array:
+        """Σ_k B_ik per frame."""
+        return np.asarray(np.bincount(self.meas_frame, self.meas_weight, minlength=self.frames), float)
+
+    @property
+    def has_context(self) -> NDArray[np.bool_]:
+        return np.bincount(self.ctx_frame, minlength=self.frames) > 0
+
+
+@dataclass
+class FrameBeliefs:
+    """The particle sets of every frame (rows), with what the update needs to remember."""
+
+    map: Map
+    X: Array
+    W: Array
+    gamma: Array
+    """γ of each particle where it is, from the update that weighted it."""
+    Z: Array
+    """Ẑ per frame: the estimate of ∫γ."""
+    noise: Array
+    """The prediction potential's spread per frame (m)."""
+    sigma: float
+    model: FrameModel = field(default_factory=FrameModel)
+    last_ess: Array = field(default_factory=lambda: np.zeros(0))
+
+    @classmethod
+    def start(cls, m: Map, noise: Sequence[float], particles: int, terms: Terms, kernel: KernelSums,
+              sources: tuple[Array, Array], rng: np.random.Generator, model: FrameModel | None = None) -> FrameBeliefs:
+        """Draw every particle from the proposal, weight it by ``γ/g``, resample and move."""
+        F = terms.frames
+        beliefs = cls(m, np.zeros((F, particles, 2)), np.full((F, particles), 1.0 / max(particles, 1)),
+                      np.zeros((F, particles)), np.ones(F), np.asarray(noise, float), kernel.sigma,
+                      model or FrameModel())
+        if F:
+            X, gamma, weights = beliefs._fresh(terms, kernel, sources, particles, rng)
+            beliefs._resample_move(X, gamma, weights, terms, kernel, rng)
+        return beliefs
+
+    @property
+    def particles(self) -> int:
+        return int(self.X.shape[1])
+
+    def ess(self) -> Array:
+        """The effective sample size of the last reweighting (before it was resampled)."""
+        return self.last_ess
+
+    # -- one update ---------------------------------------------------------------------------
+    def update(self, terms: Terms, kernel: KernelSums, sources: tuple[Array, Array],
+               rng: np.random.Generator) -> None:
+        """Reweight, reinvigorate, resample, move (see the module docstring)."""
+        F, P = self.W.shape
+        if F == 0:
+            return
+        gamma = self.gamma_at(terms, kernel, self.X)
+        weights = self.Z[:, None] * self.W * P * gamma / self.gamma
+        n = int(round(self.model.fresh_share * P))
+        X = self.X
+        if n:
+            drawn, drawn_gamma, drawn_weights = self._fresh(terms, kernel, sources, n, rng)
+            X = np.concatenate([X, drawn], axis=1)
+            gamma = np.concatenate([gamma, drawn_gamma], axis=1)
+            weights = np.concatenate([weights, drawn_weights], axis=1)
+        self._resample_move(X, gamma, weights, terms, kernel, rng)
+
+    def _fresh(self, terms: Terms, kernel: KernelSums, sources: tuple[Array, Array], n: int,
+               rng: np.random.Generator) -> tuple[Array, Array, Array]:
+        """``n`` points per frame from the proposal g, with γ and the weight ``γ/g`` of each."""
+        X, uniform = self._draw(terms, sources, n, rng)
+        measurement, context = self.potentials(terms, kernel, X)
+        free = self.map.is_free(X.reshape(-1, 2)).reshape(X.shape[:2])
+        gamma = np.where(free, self.gamma_of(terms, measurement, context), 0.0)
+        total = terms.belief_total[:, None]
+        u = np.where(total > 0, self.model.uniform_share, 1.0)
+        g = u * free / self.free_area + (1 - u) * measurement / (np.where(total > 0, total, 1.0)
+                                                                 * 2 * np.pi * self.sigma ** 2)
+        return X, gamma, np.where(g > 0, gamma / np.where(g > 0, g, 1.0), 0.0)
+
+    def _resample_move(self, X: Array, gamma: Array, weights: Array, terms: Terms, kernel: KernelSums,
+                       rng: np.random.Generator) -> None:
+        """Keep P of the weighted particles by systematic resampling (room by room), then move them by a
+        Metropolis–Hastings step whose proposal is the prediction potential and whose target is γ."""
+        F, P = self.W.shape
+        weights = np.where(np.isfinite(weights) & (weights > 0), weights, 0.0)
+        self.Z = np.maximum(weights.mean(axis=1), np.finfo(float).tiny)
+        W = normalise(weights)
+        self.last_ess = ess(W)
+        by_room = spatial_order(self.map, X)
+        ancestors = np.take_along_axis(by_room, systematic(np.take_along_axis(W, by_room, axis=1), rng, P), axis=1)
+        X = np.take_along_axis(X, ancestors[..., None], axis=1)
+        gamma = np.take_along_axis(gamma, ancestors, axis=1)
+        proposal = X + rng.normal(0.0, 1.0, X.shape) * self.noise[:, None, None]
+        proposed = self.gamma_at(terms, kernel, proposal)
+        accept = rng.random((F, P)) * gamma < proposed
+        self.X = np.where(accept[..., None], proposal, X)
+        self.gamma = np.where(accept, proposed, gamma)
+        self.W = np.full((F, P), 1.0 / P)
+
+    @property
+    def free_area(self) -> float:
+        return max(self.map.free_area, 1e-9)
+
+    # -- the target and the proposal ----------------------------------------------------------
+    def potentials(self, terms: Terms, kernel: KernelSums, X: Array) -> tuple[Array, Array]:
+        """Σ_k B_ik K_k(x) and Σ_j C_ij K_j(x) at points X (F, Q, 2): two (F, Q) arrays."""
+        F, Q = X.shape[:2]
+        which = np.concatenate([terms.meas_source, terms.ctx_source])
+        rows = np.concatenate([terms.meas_frame, terms.ctx_frame])
+        K = kernel.sample(which, X[rows]) if len(which) else np.zeros((0, Q))
+        weights = np.concatenate([terms.meas_weight, terms.ctx_weight])[:, None] * K
+        measurement, context = np.zeros((F, Q)), np.zeros((F, Q))
+        m = len(terms.meas_source)
+        np.add.at(measurement, terms.meas_frame, weights[:m])
+        np.add.at(context, terms.ctx_frame, weights[m:])
+        return measurement, context
+
+    def gamma_of(self, terms: Terms, measurement: Array, context: Array) -> Array:
+        """γ from the two potentials (before restricting to free space)."""
+        total = terms.belief_total
+        floor = self.model.floor_share * total * 2 * np.pi * self.sigma ** 2 / self.free_area
+        meas = np.where(total[:, None] > 0, measurement + floor[:, None], 1.0)
+        c0 = max(self.model.context_floor, 1e-12)
+        ctx = np.where(terms.has_context[:, None], c0 + context, 1.0)
+        return np.asarray(meas * ctx)
+
+    def gamma_at(self, terms: Terms, kernel: KernelSums, X: Array) -> Array:
+        """γ at points X (F, Q, 2), zero off free space."""
+        free = self.map.is_free(X.reshape(-1, 2)).reshape(X.shape[:2])
+        return np.where(free, self.gamma_of(terms, *self.potentials(terms, kernel, X)), 0.0)
+
+    def _draw(self, terms: Terms, sources: tuple[Array, Array], n: int,
+              rng: np.random.Generator) -> tuple[Array, NDArray[np.bool_]]:
+        """``n`` points per frame from the proposal g, and which of them came from its uniform part.
+
+        The split between the two parts is exact (``u·n`` uniform draws), and the element draws are
+        systematic over the mixture ``Σ_k B_k W_k``: each element and each of its rooms gets its
+        share of the fresh particles to within one.
+        """
+        F = terms.frames
+        total = terms.belief_total
+        n_uniform = np.where(total > 0, int(round(self.model.uniform_share * n)), n)
+        uniform = np.arange(n)[None, :] < n_uniform[:, None]
+        X = np.zeros((F, n, 2))
+        count = int(uniform.sum())
+        if count:
+            X[uniform] = self.map.sample_free(rng, count)
+        if count < F * n:
+            X[~uniform] = self._near_elements(terms, sources, n - n_uniform, rng)
+        return X, uniform
+
+    def _near_elements(self, terms: Terms, sources: tuple[Array, Array], counts: Index,
+                       rng: np.random.Generator) -> Array:
+        """``counts[i]`` points for frame i: systematic draws of (element, particle) by ``B_k W_k``, plus N(0, Σ)."""
+        positions, weights = sources
+        P = weights.shape[1]
+        order = np.argsort(terms.meas_frame, kind="stable")
+        frame_of, source_of, belief = terms.meas_frame[order], terms.meas_source[order], terms.meas_weight[order]
+        mixture = (belief[:, None] * weights[source_of]).ravel()
+        pick = grouped_systematic(mixture, np.repeat(frame_of, P), counts, rng)
+        term, particle = np.divmod(pick, P)
+        points = positions[source_of[term], particle]
+        return np.asarray(points + rng.normal(0.0, self.sigma, points.shape))

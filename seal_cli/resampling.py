@@ -1,0 +1,70 @@
+"""Resampling and weight bookkeeping for stacks of particle sets (one row per belief).
+
+Every function works on all rows at once: ``W`` is an (R, P) array of normalised weights, one
+row per object class or frame; no Python loop runs over particles.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+__all__ = ["ess", "grouped_systematic", "normalise", "stratified", "systematic"]
+
+
+def normalise(weights: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Each row divided by its sum; a row whose sum is not a positive finite number becomes uniform."""
+    total = weights.sum(axis=-1, keepdims=True)
+    good = np.isfinite(total) & (total > 0)
+    uniform = np.full_like(weights, 1.0 / weights.shape[-1])
+    return np.where(good, weights / np.where(good, total, 1.0), uniform)
+
+
+def ess(weights: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Effective sample size of each row of normalised weights: ``1 / Σ W²`` (P for uniform weights)."""
+    return np.asarray(1.0 / np.square(weights).sum(axis=-1))
+
+
+def systematic(weights: NDArray[np.float64], rng: np.random.Generator, count: int | None = None) -> NDArray[np.intp]:
+    """Systematic resampling of each row: ``count`` (default P) ancestor indices per row, one uniform draw per row.
+
+    In the order the particles are listed, each contiguous run of them gets its share of the
+    draws to within one."""
+    rows, size = weights.shape
+    count = size if count is None else count
+    cumulative = np.cumsum(weights, axis=1)
+    cumulative /= cumulative[:, -1:]
+    offsets = np.arange(rows)[:, None]
+    points = (rng.random((rows, 1)) + np.arange(count)) / count
+    flat = np.searchsorted((cumulative + offsets).ravel(), (points + offsets).ravel(), side="right")
+    return np.asarray(np.clip(flat.reshape(rows, count) - offsets * size, 0, size - 1))
+
+
+def grouped_systematic(weights: NDArray[np.float64], group: NDArray[np.intp], counts: NDArray[np.intp],
+                       rng: np.random.Generator) -> NDArray[np.intp]:
+    """Systematic draws within groups: ``counts[g]`` indices into ``weights`` from the entries of group ``g``.
+
+    ``group`` (N,) must be sorted; each group's weights need not sum to 1 (each is normalised on its
+    own) but must have a positive sum when its count is positive. Returns the indices, group by group.
+    """
+    counts = np.asarray(counts, np.intp)
+    groups = len(counts)
+    total = np.bincount(group, weights, minlength=groups)
+    share = weights / np.where(total > 0, total, 1.0)[group]
+    cumulative = np.cumsum(share)
+    start = np.searchsorted(group, np.arange(groups))
+    before = np.concatenate([[0.0], cumulative])[start]
+    cumulative = cumulative - before[group] + group
+    owner = np.repeat(np.arange(groups), counts)
+    rank = np.arange(len(owner)) - np.repeat(np.cumsum(counts) - counts, counts)
+    points = owner + (rank + rng.random(groups)[owner]) / np.maximum(counts[owner], 1)
+    index = np.searchsorted(cumulative, points, side="right")
+    end = np.searchsorted(group, np.arange(groups), side="right")
+    return np.asarray(np.clip(index, start[owner], np.maximum(end[owner] - 1, start[owner])))
+
+
+def stratified(weights: NDArray[np.float64], n: int, rng: np.random.Generator) -> NDArray[np.intp]:
+    """``n`` systematic draws of indices by ``weights`` (any positive scale), in random order."""
+    index = grouped_systematic(np.asarray(weights, float), np.zeros(len(weights), np.intp),
+                               np.array([n]), rng)
+    return np.asarray(rng.permutation(index))
