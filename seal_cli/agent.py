@@ -624,12 +624,12 @@ class SeFMPolicy:
     use_frames = True
 
     def __init__(self, *, particles: int = 200, priors: bool = True, bandwidth: float = 0.5,
-                 distance_scale: float = 4.0) -> None:
+                 distance_scale: float = 1.0) -> None:
         self.particles = particles
         self.priors = priors
         self.bandwidth = bandwidth
         self.distance_scale = distance_scale
-        """A view's utility is its mode's weight × exp(−path / scale): far modes must be heavier."""
+        """A view's utility is the belief mass it reveals / (metres to drive there + scale)."""
 
     def begin(self, agent: Agent) -> None:
         from .baselines import CoveragePolicy
@@ -692,52 +692,74 @@ class SeFMPolicy:
             self.clouds: list[dict[str, Any]] = []
         objects = {c: (sefm.objects.X[sefm.objects.row(c)].copy(), sefm.objects.W[sefm.objects.row(c)].copy())
                    for c in sefm.object_classes}
+        from .beliefs import frame_id
+
         index = min(agent.index, len(sefm.bindings) - 1)
-        frame = str(sefm.bindings[index]) if sefm.bindings else ""
+        frame = frame_id(sefm.bindings[index]) if sefm.bindings else ""
         self.clouds.append({"step": agent.world.step, "frame": frame,
                             "frame_particles": (sefm.frames.X[index].copy(), sefm.frames.W[index].copy())
                             if sefm.bindings else None, "objects": objects})
 
-    def modes(self, agent: Agent, binding: Binding, target: str) -> list[tuple[tuple[float, float], float]]:
-        """Where the thing sought is believed to be: ``(point, weight)``, heaviest first."""
+    def cloud(self, agent: Agent, target: str) -> tuple[np.ndarray, np.ndarray, list[Any]]:
+        """The particles and weights that say where to look (the current frame's, or for
+        object-only the object's), and their modes."""
         sefm = self._beliefs(agent)
         sefm.update(agent.world.robot.pose, (), self._state(agent))
-        summary = sefm.frame_summary(agent.index) if self.use_frames else sefm.object_summary(agent.class_of(target))
-        modes = [(m.mean, m.weight) for m in summary.modes]
-        return sorted(modes, key=lambda mw: -mw[1]) or [(summary.best, 1.0)]
+        if self.use_frames:
+            i = agent.index
+            return sefm.frames.X[i], sefm.frames.W[i], list(sefm.frame_summary(i).modes)
+        row = sefm.objects.row(agent.class_of(target))
+        return sefm.objects.X[row], sefm.objects.W[row], list(sefm.object_summary(agent.class_of(target)).modes)
 
     def next_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
+        """The view that reveals the most belief per metre: opening a shut receptacle reveals the
+        mass at it; standing on a mode reveals the mass the beliefs' sensor would see there and no
+        shut receptacle hides."""
         field_ = agent.distances()
-        options: list[tuple[float, View]] = []
-        spent = [k.at for k in agent.instances(agent.class_of(target)) if agent.spent(k.id, target)]
-        for point, weight in self.modes(agent, binding, target):
-            if any(math.dist(point, at) <= agent.world.reach for at in spent):
-                continue  # the belief is right, but the thing there will not do (placed, out of reach)
-            view = self._view_of(agent, point, field_)
-            if view is None or (view.cell, view.open) in self.tried:
+        X, W, modes = self.cloud(agent, target)
+        W = W.copy()
+        for k in agent.instances(agent.class_of(target)):
+            if agent.spent(k.id, target):  # the belief is right there, but that one will not do
+                W[np.hypot(X[:, 0] - k.at[0], X[:, 1] - k.at[1]) <= agent.world.reach] = 0.0
+        hidden = np.zeros(len(X), dtype=bool)
+        for x, y, r in self.sefm._hidden():
+            hidden |= np.hypot(X[:, 0] - x, X[:, 1] - y) <= r
+        seeing = self.map.sensor.range
+        options: list[tuple[float, float, View]] = []
+        for box in agent.known.values():
+            if box.movable or not box.openable or box.id in agent.opened or agent.world.items[box.id].is_open:
                 continue
-            cost = float(field_[view.cell])
-            options.append((weight * math.exp(-cost / self.distance_scale), view))
-        if options:
-            view = max(options, key=lambda o: o[0])[1]
+            place = self.map.place(box.id)
+            reach = place.reach if place is not None else agent.world.reach
+            mass = float(W[np.hypot(X[:, 0] - box.at[0], X[:, 1] - box.at[1]) <= reach + 0.25].sum())
+            cell = agent.stand_cell(box, field_)
+            if cell is not None and mass > 0:
+                options.append((mass, float(field_[cell]), View(cell, box.at, open=box.id,
+                                                               why=f"opens {box.id}, where the belief is")))
+        for mode in modes:
+            view = self._view_of(agent, mode.mean, field_)
+            if view is None:
+                continue
+            at = agent.grid.point(view.cell)
+            mass = float(W[(np.hypot(X[:, 0] - at[0], X[:, 1] - at[1]) <= seeing) & ~hidden].sum())
+            options.append((mass, float(field_[view.cell]), view))
+        fresh = [o for o in options if (o[2].cell, o[2].open) not in self.tried and o[0] > self.min_mass]
+        if fresh:
+            view = max(fresh, key=lambda o: o[0] / (o[1] + self.distance_scale))[2]
         else:
             fallback = self.fallback.next_view(agent, binding, target)
             if fallback is None:
                 return None
-            view = View(fallback.cell, fallback.look_at, fallback.open, f"{fallback.why} (every mode seen)")
+            view = View(fallback.cell, fallback.look_at, fallback.open, f"{fallback.why} (the belief is spent)")
         self.tried.add((view.cell, view.open))
         return view
 
+    min_mass = 1e-3
+    """A view that would reveal less belief than this is not worth the drive."""
+
     def _view_of(self, agent: Agent, point: tuple[float, float], field_: np.ndarray) -> View | None:
-        """How to observe a point: open the closed receptacle it lies at, or stand where it is in view."""
-        boxes = [k for k in agent.known.values() if not k.movable and k.openable and k.id not in agent.opened
-                 and not agent.world.items[k.id].is_open and self._at(agent, k, point)]
-        if boxes:
-            box = min(boxes, key=lambda k: math.dist(k.at, point))
-            cell = agent.stand_cell(box, field_)
-            if cell is not None:
-                return View(cell, box.at, open=box.id, why=f"opens {box.id}, where the belief is densest")
-        # the particles are poses from which the robot could act on the thing: stand on the mode
+        """Where to stand to observe a point of the belief: the particles are poses from which the
+        robot could act on the thing, so it stands on it (or as near as it can drive)."""
         pts = agent.grid.free_points
         cells = agent.grid.free_cells
         gap = np.hypot(pts[:, 0] - point[0], pts[:, 1] - point[1])
@@ -748,8 +770,3 @@ class SeFMPolicy:
                 k = int(near[np.argmin(costs[near])])
                 return View((int(cells[k, 0]), int(cells[k, 1])), point, why="goes to the belief's best mode")
         return None
-
-    def _at(self, agent: Agent, box: Known, point: tuple[float, float]) -> bool:
-        place = agent.scene.map.place(box.id)
-        reach = place.reach if place is not None else agent.world.reach
-        return math.dist(box.at, point) <= reach + 0.25 or any(math.dist(a, point) <= 0.5 for a in box.access)

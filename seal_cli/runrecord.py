@@ -67,7 +67,8 @@ def write_rrd(path: str | Path, agent: Agent) -> None:
             stream.set_time("step", sequence=cloud["step"])
             if cloud["frame_particles"] is not None:
                 X, W = cloud["frame_particles"]
-                stream.log("frames/current/particles", rr.Points2D(X, radii=0.03, colors=_weights_colours(W)))
+                stream.log(f"frames/{cloud['frame']}/particles", rr.Points2D(X, radii=0.03,
+                                                                             colors=_weights_colours(W)))
             for cls, (X, W) in cloud["objects"].items():
                 stream.log(f"objects/{cls}/particles", rr.Points2D(X, radii=0.03, colors=_weights_colours(W)))
         stream.flush()

@@ -1,0 +1,71 @@
+"""``seal run`` on the shipped apartment and ``seal bench tasks`` on a few real episodes, through the CLI."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from typer.testing import CliRunner
+
+from seal_cli.cli import app
+
+runner = CliRunner()
+
+
+def test_run_stir_the_cup_narrates_and_finishes(tmp_path: Path) -> None:
+    png, rrd = tmp_path / "run.png", tmp_path / "run.rrd"
+    result = runner.invoke(app, ["run", "--map", "apartment", "stir the cup", "--png", str(png), "--rrd", str(rrd),
+                                 "--particles", "100"])
+    assert result.exit_code == 0, result.output
+    assert "plan: Pick(theme=spoon), Stir(theme=cup, instrument=spoon)" in result.output
+    assert "picked up spoon_1" in result.output and "stirred cup_1 with spoon_1" in result.output
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    import rerun as rr
+
+    summary = str(rr.chunk.RrdReader(str(rrd)).stream().collect().summary())
+    for entity in ("/robot/path", "/robot/pose", "/map/places", "/objects/spoon/particles", "/observations/cup",
+                   "/frames/stir_cup_spoon/particles", "/metrics/path_m"):
+        assert entity in summary, entity
+
+
+def test_run_json_is_reproducible_and_holding_skips_the_pick() -> None:
+    args = ["run", "--map", "apartment", "stir the cup", "--json", "--seed", "3", "--particles", "100"]
+    first = json.loads(runner.invoke(app, args).stdout)
+    again = json.loads(runner.invoke(app, args).stdout)
+    assert first == again and first["completed"] and first["path_m"] > 0
+    held = json.loads(runner.invoke(app, [*args, "--holding", "spoon"]).stdout)
+    assert held["plan"] == ["Stir(theme=cup, instrument=spoon)"] and held["path_m"] < first["path_m"]
+
+
+def test_run_refuses_what_cannot_be_done() -> None:
+    result = runner.invoke(app, ["run", "--map", "apartment", "pick up the unicorn", "--max-steps", "30",
+                                 "--particles", "50"])
+    assert result.exit_code == 1 and "not done" in result.output
+    bad = runner.invoke(app, ["run", "--map", "no_such_map.yaml", "stir the cup"])
+    assert bad.exit_code == 1 and "Traceback" not in bad.output
+    unknown = runner.invoke(app, ["run", "--map", "apartment", "stir the cup", "--policy", "psychic"])
+    assert unknown.exit_code == 1 and "unknown policy" in unknown.output
+
+
+def test_bench_tasks_json_has_every_group(shared_data: Path) -> None:
+    result = runner.invoke(app, ["bench", "tasks", "--suite", "alfred2d", "--data", str(shared_data / "alfred2d"),
+                                 "--split", "valid_seen", "--goal", "gold", "--limit", "1", "--jobs", "1",
+                                 "--particles", "100", "--json"])
+    assert result.exit_code == 0, result.output
+    report = json.loads(result.stdout)
+    from seal_cli.alfred2d import TASK_TYPES
+
+    assert list(report["groups"])[:7] == list(TASK_TYPES)
+    for figures in report["groups"].values():
+        assert set(figures["success"]) == {"sefm", "object_only", "coverage", "oracle"}
+        assert set(figures["path_m"]) == {"sefm", "object_only", "coverage", "oracle"}
+
+
+def test_bench_tasks_table_and_bad_options(shared_data: Path) -> None:
+    ok = runner.invoke(app, ["bench", "tasks", "--data", str(shared_data / "alfred2d"), "--limit", "1",
+                             "--type", "pick_and_place_simple", "--policies", "oracle", "--jobs", "1"])
+    assert ok.exit_code == 0 and "pick_and_place_simple" in ok.stdout and "oracle" in ok.stdout
+    bad_goal = runner.invoke(app, ["bench", "tasks", "--data", str(shared_data / "alfred2d"), "--goal", "mind"])
+    assert bad_goal.exit_code == 1 and "unknown goal source" in bad_goal.output
+    bad_suite = runner.invoke(app, ["bench", "tasks", "--suite", "thor"])
+    assert bad_suite.exit_code == 1 and "unknown suite" in bad_suite.output
