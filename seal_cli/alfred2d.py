@@ -41,7 +41,8 @@ if TYPE_CHECKING:
 
 __all__ = ["FOUR", "GRID", "MOVABLE_RECEPTACLES", "TASK_TYPES", "Condition", "Episode", "FloorPlan", "Placement",
            "Receptacle", "Suite", "Task", "build_scene", "build_world", "estimate_priors", "gold_commands",
-           "gold_classes", "goal_conditions", "judge", "load_suite", "read_floorplans", "read_trials", "scene_priors", "thor_yaw"]
+           "gold_classes", "goal_conditions", "judge", "load_suite", "read_floorplans", "read_trials", "scene_priors",
+           "thor_yaw"]
 
 GRID = 0.25
 """ALFRED's agent grid, metres."""

@@ -7,8 +7,21 @@ from pathlib import Path
 
 import pytest
 
-from seal_cli.alfred2d import (FOUR, TASK_TYPES, Task, build_scene, estimate_priors, gold_classes, gold_commands,
-                               goal_conditions, judge, load_suite, read_floorplans, scene_priors, thor_yaw)
+from seal_cli.alfred2d import (
+    FOUR,
+    TASK_TYPES,
+    Task,
+    build_scene,
+    estimate_priors,
+    goal_conditions,
+    gold_classes,
+    gold_commands,
+    judge,
+    load_suite,
+    read_floorplans,
+    scene_priors,
+    thor_yaw,
+)
 from seal_cli.errors import SealError
 from seal_cli.library import Library
 from seal_cli.taxonomy import class_key
