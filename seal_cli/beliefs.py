@@ -113,10 +113,13 @@ class SeFM:
     """Object and frame beliefs over one map for one plan (see the module docstring)."""
 
     def __init__(self, m: Map, bindings: Sequence[Binding], state: State, rng: np.random.Generator,
-                 config: SeFMConfig | None = None, observers: Sequence[Observer] = ()) -> None:
+                 config: SeFMConfig | None = None, observers: Sequence[Observer] = (),
+                 classes: Iterable[str] = ()) -> None:
+        """``classes``: object classes to believe in besides those the frames name."""
         self.map = m
         self.bindings = tuple(bindings)
         self.state = state
+        self.extra_classes = tuple(class_key(c) for c in classes)
         self.rng = rng
         self.config = config or SeFMConfig()
         self.observers = list(observers)
@@ -140,11 +143,31 @@ class SeFM:
     # -- construction ---------------------------------------------------------------------------
     def _sources(self) -> tuple[Source, ...]:
         seen: dict[str, Source] = {}
-        for binding in self.bindings:
-            for _, value, _ in _all_elements(binding):
-                source = source_for(self.map, value)
-                seen.setdefault(source.key, source)
+        values = [v for b in self.bindings for _, v, _ in _all_elements(b)] + list(self.extra_classes)
+        for value in values:
+            source = self._source(value)
+            seen.setdefault(source.key, source)
         return tuple(seen.values())
+
+    def _source(self, value: str) -> Source:
+        """A value names a place or room of the map by name, else a thing whose class the state knows
+        (``cup_2`` is a cup), else a class."""
+        if self.map.place(value) is not None or self.map.room_id(value) is not None:
+            return source_for(self.map, value)
+        return source_for(self.map, self.state.class_of(value))
+
+    @property
+    def frame_ids(self) -> tuple[str, ...]:
+        """A distinct name per frame, for paths and tables (``stir_cup_spoon``, ``pick_cup``, ``pick_cup_2``)."""
+        out: list[str] = []
+        for binding in self.bindings:
+            base = frame_id(binding)
+            name, k = base, 1
+            while name in out:
+                k += 1
+                name = f"{base}_{k}"
+            out.append(name)
+        return tuple(out)
 
     def _noise(self) -> list[float]:
         model = self.config.frames
@@ -156,7 +179,7 @@ class SeFM:
 
     def source_row(self, value: str) -> int:
         """The row of the source a value names (an object class, place or room)."""
-        return self.objects.row(source_for(self.map, value).key) if self.sources else -1
+        return self.objects.row(self._source(value).key)
 
     # -- the state's relations ------------------------------------------------------------------
     def terms(self) -> Terms:
@@ -209,6 +232,10 @@ class SeFM:
         """Tell the observers the run is over."""
         for observer in self.observers:
             observer.finish(self)
+
+    def open_places(self) -> list[str]:
+        """The names of the map's places that are open now (what the sensor can see into)."""
+        return [p.name for p in self.map.places if not p.openable or self._is_open(p)]
 
     def _held(self) -> set[str]:
         return {class_key(f.args[0]) for f in self.state.facts if f.predicate == "holding" and len(f.args) == 1}

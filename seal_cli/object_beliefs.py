@@ -46,7 +46,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .maps import Map
-from .resampling import ess, normalise, stratified, systematic
+from .resampling import ess, grouped_systematic, normalise, stratified, systematic
 from .taxonomy import class_key
 
 __all__ = ["ObjectBeliefs", "ObjectModel", "Source", "Update", "rooms_of", "source_for", "spatial_order"]
@@ -276,5 +276,14 @@ def _initial(m: Map, source: Source, n: int, rng: np.random.Generator) -> Array:
         return points[np.arange(n) % len(points)]
     if source.kind == "room":
         return m.sample_free(rng, n, region=source.room)
-    cells = stratified(m.prior(source.key).weights, n, rng)
-    return m.jitter_in_cells(rng, cells)
+    return m.jitter_in_cells(rng, rng.permutation(_by_room(m, m.prior(source.key).weights, n, rng)))
+
+
+def _by_room(m: Map, weights: Array, n: int, rng: np.random.Generator) -> NDArray[np.intp]:
+    """``n`` free cells drawn by ``weights``: each room gets its share of the draws to within one
+    (systematic over rooms), and within a room the cells are drawn independently (no lattice)."""
+    rooms = m.free_cell_room + 1
+    masses = np.bincount(rooms, weights, minlength=len(m.rooms) + 1)
+    counts = np.bincount(stratified(masses, n, rng), minlength=len(masses))
+    order = np.argsort(rooms, kind="stable")
+    return order[grouped_systematic(weights[order], rooms[order], counts, rng, systematic=False)]

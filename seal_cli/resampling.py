@@ -41,11 +41,12 @@ def systematic(weights: NDArray[np.float64], rng: np.random.Generator, count: in
 
 
 def grouped_systematic(weights: NDArray[np.float64], group: NDArray[np.intp], counts: NDArray[np.intp],
-                       rng: np.random.Generator) -> NDArray[np.intp]:
-    """Systematic draws within groups: ``counts[g]`` indices into ``weights`` from the entries of group ``g``.
+                       rng: np.random.Generator, systematic: bool = True) -> NDArray[np.intp]:
+    """Draws within groups: ``counts[g]`` indices into ``weights`` from the entries of group ``g``.
 
     ``group`` (N,) must be sorted; each group's weights need not sum to 1 (each is normalised on its
     own) but must have a positive sum when its count is positive. Returns the indices, group by group.
+    Draws are systematic (one uniform per group) or, with ``systematic=False``, independent.
     """
     counts = np.asarray(counts, np.intp)
     groups = len(counts)
@@ -57,7 +58,10 @@ def grouped_systematic(weights: NDArray[np.float64], group: NDArray[np.intp], co
     cumulative = cumulative - before[group] + group
     owner = np.repeat(np.arange(groups), counts)
     rank = np.arange(len(owner)) - np.repeat(np.cumsum(counts) - counts, counts)
-    points = owner + (rank + rng.random(groups)[owner]) / np.maximum(counts[owner], 1)
+    if systematic:
+        points = owner + (rank + rng.random(groups)[owner]) / np.maximum(counts[owner], 1)
+    else:
+        points = owner + rng.random(len(owner))
     index = np.searchsorted(cumulative, points, side="right")
     end = np.searchsorted(group, np.arange(groups), side="right")
     return np.asarray(np.clip(index, start[owner], np.maximum(end[owner] - 1, start[owner])))
