@@ -726,23 +726,20 @@ class SeFMPolicy:
             hidden |= np.hypot(X[:, 0] - x, X[:, 1] - y) <= r
         seeing = self.map.sensor.range
         options: list[tuple[float, float, View]] = []
-        for box in agent.known.values():
-            if box.movable or not box.openable or box.id in agent.opened or agent.world.items[box.id].is_open:
+        for place in agent.known.values():  # every place is somewhere to look: what is in or on it
+            if place.movable:
                 continue
-            place = self.map.place(box.id)
-            reach = place.reach if place is not None else agent.world.reach
-            mass = float(W[np.hypot(X[:, 0] - box.at[0], X[:, 1] - box.at[1]) <= reach + 0.25].sum())
-            cell = agent.stand_cell(box, field_)
-            if cell is not None and mass > 0:
-                options.append((mass, float(field_[cell]), View(cell, box.at, open=box.id,
-                                                               why=f"opens {box.id}, where the belief is")))
-        for mode in modes:
-            view = self._view_of(agent, mode.mean, field_)
-            if view is None:
+            where = self.map.place(place.id)
+            reach = where.reach if where is not None else agent.world.reach
+            near = np.hypot(X[:, 0] - place.at[0], X[:, 1] - place.at[1]) <= reach + 0.25
+            cell = agent.stand_cell(place, field_)
+            if cell is None:
                 continue
-            at = agent.grid.point(view.cell)
-            mass = float(W[(np.hypot(X[:, 0] - at[0], X[:, 1] - at[1]) <= seeing) & ~hidden].sum())
-            options.append((mass, float(field_[view.cell]), view))
+            shut = place.openable and place.id not in agent.opened and not agent.world.items[place.id].is_open
+            mass = float(W[near].sum() if shut else W[near & ~hidden].sum())
+            why = f"opens {place.id}, where the belief is" if shut else f"looks at {place.id}, where the belief is"
+            options.append((mass, float(field_[cell]), View(cell, place.at, open=place.id if shut else None,
+                                                             why=why)))
         fresh = [o for o in options if (o[2].cell, o[2].open) not in self.tried and o[0] > self.min_mass]
         if fresh:
             view = max(fresh, key=lambda o: o[0] / (o[1] + self.distance_scale))[2]
