@@ -283,7 +283,7 @@ def _by_room(m: Map, weights: Array, n: int, rng: np.random.Generator) -> NDArra
     """``n`` free cells drawn by ``weights``: each room gets its share of the draws to within one
     (systematic over rooms), and within a room the cells are drawn independently (no lattice)."""
     rooms = m.free_cell_room + 1
-    masses = np.bincount(rooms, weights, minlength=len(m.rooms) + 1)
+    masses = np.asarray(np.bincount(rooms, weights, minlength=len(m.rooms) + 1), float)
     counts = np.bincount(stratified(masses, n, rng), minlength=len(masses))
     order = np.argsort(rooms, kind="stable")
     return order[grouped_systematic(weights[order], rooms[order], counts, rng, systematic=False)]
