@@ -70,13 +70,13 @@ def commands_for(episode: Episode, library: Library, vocabulary: Sequence[str],
         return gold_commands(episode.task, library, vocabulary), gold_classes(episode.task)
     if goal != "human":
         raise SealError(f"unknown goal source {goal!r}; use one of {', '.join(GOALS)}")
-    from .grounding import Vocabulary
+    from .alfred2d import scene_vocabulary
     from .language import parse_command
     from .problem import build_problem
 
     if not episode.goals:
         raise SealError(f"episode {episode.task_id} has no goal sentence")
-    parse = parse_command(episode.goals[0], library, Vocabulary.of(vocabulary))
+    parse = parse_command(episode.goals[0], library, scene_vocabulary(vocabulary))
     problem = build_problem(parse, library)
     return list(problem.commanded), dict(problem.state.classes)
 
