@@ -40,7 +40,7 @@ class Grid:
     origin: tuple[float, float]
     resolution: float
     connectivity: int = 8
-    _cache: dict[Cell, np.ndarray] = field(default_factory=dict, repr=False)
+    _cache: dict[Cell, tuple[np.ndarray, np.ndarray]] = field(default_factory=dict, repr=False)
 
     def __post_init__(self) -> None:
         if self.free.ndim != 2 or self.free.dtype != bool:
@@ -142,8 +142,8 @@ class Grid:
         graph = coo_matrix((np.concatenate(costs), (np.concatenate(rows), np.concatenate(cols))), shape=(n, n))
         return graph.tocsr(), index
 
-    def distances(self, start: Cell) -> np.ndarray:
-        """Metres of the shortest path from ``start`` to every cell (``inf`` where none, or occupied)."""
+    def _dijkstra(self, start: Cell) -> tuple[np.ndarray, np.ndarray]:
+        """Distances (metres, per cell) and predecessors (per node) of every shortest path from ``start``."""
         if start in self._cache:
             return self._cache[start]
         from scipy.sparse.csgraph import dijkstra
@@ -151,18 +151,35 @@ class Grid:
         if not self.is_free(start):
             raise SealError(f"cell {start} is not free")
         graph, index = self._graph
-        along = dijkstra(graph, directed=True, indices=int(index[start]))
+        along, previous = dijkstra(graph, directed=True, indices=int(index[start]), return_predecessors=True)
         field_ = np.full(self.free.shape, np.inf)
         cells = self.free_cells
         field_[cells[:, 0], cells[:, 1]] = along * self.resolution
         if len(self._cache) > 256:
             self._cache.clear()
-        self._cache[start] = field_
-        return field_
+        self._cache[start] = (field_, previous)
+        return field_, previous
+
+    def distances(self, start: Cell) -> np.ndarray:
+        """Metres of the shortest path from ``start`` to every cell (``inf`` where none, or occupied)."""
+        return self._dijkstra(start)[0]
 
     def path(self, start: Cell, goal: Cell) -> list[Cell]:
-        """One shortest path (A*), both ends included; an unreachable goal is a SealError."""
-        return astar(self, start, goal)
+        """One shortest path, both ends included (from the Dijkstra tree of ``start``; :func:`astar` is
+        the reference); an unreachable goal is a SealError."""
+        field_, previous = self._dijkstra(start)
+        if not self.is_free(goal):
+            raise SealError(f"the goal cell {goal} is not free")
+        if not np.isfinite(field_[goal]):
+            raise SealError(f"no path from {self.point(start)} to {self.point(goal)}")
+        _, index = self._graph
+        cells = self.free_cells
+        node = int(index[goal])
+        path = [goal]
+        while node != int(index[start]):
+            node = int(previous[node])
+            path.append((int(cells[node, 0]), int(cells[node, 1])))
+        return path[::-1]
 
 
 def _heuristic(a: Cell, b: Cell, connectivity: int) -> float:

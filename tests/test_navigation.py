@@ -33,6 +33,7 @@ def test_path_goes_round_the_wall_and_matches_dijkstra(connectivity: int) -> Non
     assert all(c[1] != 3 or c[0] == 6 for c in path)  # crosses the wall only through the gap
     field = grid.distances((0, 0))
     assert path_length(grid, path) == pytest.approx(field[0, 6])
+    assert path_length(grid, astar(grid, (0, 0), (0, 6))) == pytest.approx(field[0, 6])  # the reference agrees
     steps = [max(abs(a[0] - b[0]), abs(a[1] - b[1])) for a, b in zip(path, path[1:], strict=False)]
     assert steps and max(steps) == 1
 
@@ -68,6 +69,8 @@ def test_bad_input_is_a_clear_error() -> None:
     grid = wall_grid()
     with pytest.raises(SealError, match="not free"):
         grid.path((0, 3), (0, 0))
+    with pytest.raises(SealError, match="not free"):
+        astar(grid, (0, 0), (0, 3))
     with pytest.raises(SealError, match="not free"):
         grid.distances((99, 99))
     with pytest.raises(SealError, match="boolean"):
