@@ -1,0 +1,169 @@
+"""``seal localize``: the SPEC's JSON, the paper's Fig. 3 on the shipped apartment, trajectories and
+observation files, and bad input that is refused with its position and leaves no file behind."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+from typer.testing import CliRunner
+
+from seal_cli.cli import app
+
+runner = CliRunner()
+FIG3 = ["--task", "grasp the cup", "--task", "grasp the spoon", "--task", "stir the cup"]
+APARTMENT_PATH = [[-6, -3], [-3.5, -0.2], [-1, -2.5], [1, -2.5], [2.5, -4.7], [5, -4.5, 0.0], [7, -3], [5, -4.5],
+                  [2.5, -4.7], [1, -2], [0.5, 0.5], [0.5, 2.5, 1.57]]
+"""From the living room into the kitchen (past the spoon), then up into the family room (the cup)."""
+
+
+def localize(*args: str) -> dict[str, Any]:
+    result = runner.invoke(app, ["localize", "--map", "apartment", *args, "--json"])
+    assert result.exit_code == 0, result.output
+    return json.loads(result.stdout)
+
+
+def stir(data: dict[str, Any]) -> dict[str, Any]:
+    return next(f for f in data["frames"] if f["frame"] == "Stir")
+
+
+def test_json_is_the_spec_shape() -> None:
+    data = localize("--task", "stir the cup", "--steps", "2", "--particles", "100", "--seed", "3")
+    assert {"map", "seed", "steps", "particles", "frames", "objects"} <= set(data)
+    assert (data["map"], data["seed"], data["steps"], data["particles"]) == ("apartment", 3, 2, 100)
+    frame = stir(data)
+    assert frame["elements"] == {"theme": "cup", "instrument": "spoon"}
+    assert set(frame) == {"frame", "elements", "rooms", "modes", "best", "ess"}
+    assert set(frame["rooms"]) == {"kitchen", "bedroom", "family_room", "dining_room", "living_room", "_outside"}
+    assert sum(frame["rooms"].values()) == pytest.approx(1.0, abs=0.01)
+    for mode in frame["modes"]:
+        assert set(mode) == {"mean", "cov", "weight", "room"} and np.array(mode["cov"]).shape == (2, 2)
+    assert {o["class"] for o in data["objects"]} == {"cup", "spoon"}
+    assert set(data["objects"][0]) == {"class", "rooms", "modes", "best"}
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_fig3a_on_the_apartment(seed: int) -> None:
+    rooms = stir(localize(*FIG3, "--seed", str(seed)))["rooms"]
+    assert rooms["kitchen"] + rooms["bedroom"] >= 0.7
+    assert max(rooms, key=rooms.__getitem__) == "bedroom"
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_fig3b_on_the_apartment(seed: int) -> None:
+    rooms = stir(localize(*FIG3, "--holding", "spoon", "--seed", str(seed)))["rooms"]
+    assert rooms["family_room"] + rooms["bedroom"] >= 0.7
+    assert rooms["kitchen"] < 0.1
+
+
+@pytest.mark.parametrize("holding", [[], ["--holding", "spoon"]])
+def test_fig3cd_a_trajectory_past_the_objects(tmp_path: Path, holding: list[str]) -> None:
+    path = tmp_path / "path.yaml"
+    path.write_text("poses:\n" + "".join(f"  - {p}\n" for p in APARTMENT_PATH))
+    data = localize(*FIG3, *holding, "--trajectory", str(path))
+    truth = {"spoon": (8.3, -4.1), "cup": (0.3, 3.6)}
+    for obj in data["objects"]:
+        if holding and obj["class"] == "spoon":
+            continue
+        assert np.hypot(*np.subtract(obj["best"], truth[obj["class"]])) < 1.0, obj
+    target = truth["cup"] if holding else truth["spoon"]
+    assert np.hypot(*np.subtract(stir(data)["best"], target)) < 1.0
+    for frame in data["frames"]:
+        theme = frame["elements"].get("theme")
+        if frame["frame"] == "Pick" and not (holding and theme == "spoon"):
+            assert np.hypot(*np.subtract(frame["best"], truth[theme])) < 1.0, frame
+
+
+def test_observations_file(tmp_path: Path) -> None:
+    observations = tmp_path / "seen.yaml"
+    observations.write_text("- pose: [5.0, -4.5, 0.0]\n  detections:\n    - {class: spoon, at: [8.0, -3.0]}\n"
+                            "- pose: [0.5, 2.5]\n  detections: []\n")
+    data = localize("--task", "stir the cup", "--observations", str(observations), "--steps", "5")
+    spoon = next(o for o in data["objects"] if o["class"] == "spoon")
+    assert np.hypot(*np.subtract(spoon["best"], (8.0, -3.0))) < 0.5  # where it was seen, not the map's truth
+    assert np.hypot(*np.subtract(stir(data)["best"], (8.0, -3.0))) < 1.0
+
+
+def test_same_seed_same_output_other_seed_other_output() -> None:
+    a, b, c = (localize("--task", "stir the cup", "--steps", "3", "--seed", s) for s in ("1", "1", "2"))
+    assert a == b and a != c
+
+
+def test_without_tasks_the_maps_objects_are_localised() -> None:
+    data = localize("--steps", "1")
+    assert data["frames"] == []
+    assert {o["class"] for o in data["objects"]} == {"apple", "cup", "spoon"}
+
+
+def test_table_output() -> None:
+    result = runner.invoke(app, ["localize", "--map", "apartment", "--task", "stir the cup", "--steps", "2"])
+    assert result.exit_code == 0, result.output
+    assert "Stir" in result.stdout and "bedroom" in result.stdout and "objects" in result.stdout
+
+
+def test_rrd_and_png_are_written(tmp_path: Path) -> None:
+    import matplotlib.image
+
+    rrd, png = tmp_path / "out.rrd", tmp_path / "out.png"
+    result = runner.invoke(app, ["localize", "--map", "apartment", "--task", "stir the cup", "--steps", "2",
+                                 "--rrd", str(rrd), "--png", str(png)])
+    assert result.exit_code == 0, result.output
+    image = matplotlib.image.imread(png)
+    assert image.ndim == 3 and image.shape[1] > image.shape[0] > 300
+    assert rrd.stat().st_size > 10_000
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out.png", "out.rrd"]
+
+
+BAD_FILES = {
+    "not a number": ("trajectory", "poses:\n  - [1.0, 2.0]\n  - [1.0, oops]\n", ":3:11: pose 2's y must be a finite"),
+    "no poses": ("trajectory", "pose: [[1, 2]]\n", ":1:1: unknown key 'pose' in a trajectory (did you mean 'poses'?)"),
+    "empty list": ("trajectory", "poses: []\n", ":1:8: poses is empty"),
+    "syntax": ("trajectory", "poses: [[1, 2]\n", ":2:1: YAML syntax error"),
+    "empty file": ("trajectory", "", ":1:1: "),
+    "off the map": ("trajectory", "poses:\n  - [1, 2]\n  - [40, 2]\n", ":3:5: pose [40, 2] is outside map apartment"),
+    "bad key": ("observations", "- pose: [1, 2]\n  detections:\n    - {clas: cup, at: [1, 2]}\n",
+                ":3:8: unknown key 'clas' in detection 1 of observation 1 (did you mean 'class'?)"),
+    "no at": ("observations", "- pose: [1, 2]\n  detections:\n    - {class: cup}\n",
+              ":3:7: detection 1 of observation 1 has no 'at'"),
+    "pose of three words": ("observations", "- pose: [1, 2, 3, 4]\n", ":1:9: observation 1's pose must be [x, y]"),
+    "not a list": ("observations", "pose: [1, 2]\n", ":1:1: unknown key 'pose' in an observations file"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(BAD_FILES))
+def test_bad_files_are_refused_where_they_are_wrong_and_leave_nothing(tmp_path: Path, case: str) -> None:
+    kind, text, expected = BAD_FILES[case]
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(text)
+    rrd, png = tmp_path / "out.rrd", tmp_path / "out.png"
+    result = runner.invoke(app, ["localize", "--map", "apartment", "--task", "stir the cup", f"--{kind}", str(bad),
+                                 "--rrd", str(rrd), "--png", str(png)])
+    assert result.exit_code == 1
+    assert expected in result.stderr, result.stderr
+    assert result.stderr.startswith(f"error: {bad}")
+    assert "Traceback" not in result.output + result.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.yaml"]
+
+
+def test_a_missing_file_and_both_kinds_of_file_are_errors(tmp_path: Path) -> None:
+    result = runner.invoke(app, ["localize", "--map", "apartment", "--trajectory", str(tmp_path / "none.yaml")])
+    assert result.exit_code == 1 and "no such file" in result.stderr
+    (tmp_path / "p.yaml").write_text("poses: [[1, 2]]\n")
+    result = runner.invoke(app, ["localize", "--map", "apartment", "--trajectory", str(tmp_path / "p.yaml"),
+                                 "--observations", str(tmp_path / "p.yaml")])
+    assert result.exit_code == 1 and "not both" in result.stderr
+
+
+def test_a_failing_run_leaves_no_output(tmp_path: Path) -> None:
+    rrd = tmp_path / "out.rrd"
+    result = runner.invoke(app, ["localize", "--map", "apartment", "--task", "fly to the moon", "--rrd", str(rrd)])
+    assert result.exit_code == 1 and "Traceback" not in result.stderr
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_usage_errors_are_typers() -> None:
+    assert runner.invoke(app, ["localize", "--map", "apartment", "--particles", "0"]).exit_code == 2
+    assert runner.invoke(app, ["localize"]).exit_code == 2
