@@ -484,98 +484,93 @@ class Tagger:
 
     def tag_word(self, i: int) -> int:
         """Tag the word at ``i`` (not a verb, not a separator); returns how many words it took."""
-        words = self.words
-        w = words[i]
-        low = w.lower
-        prev = self.prev_tag()
-        in_np = prev in ("DET", "NUM", "POSS", "RESULT")     # inside a noun phrase, before its head
-        nxt = words[i + 1].lower if i + 1 < len(words) else ""
-        # numbers and quantities
+        in_np = self.prev_tag() in ("DET", "NUM", "POSS", "RESULT")   # inside a noun phrase, before its head
+        return self._quantity(i, in_np) or self._function_word(i, in_np) or self._open_word(i, in_np)
+
+    def _emit(self, i: int, n: int, tag: str, info: object = None) -> int:
+        word = self.words[i]
+        self.out.append(Word(word.text, word.start, word.end, tag, info) if n == 1 else
+                        _merge(self.words, i, n, tag, info))
+        return n
+
+    def _quantity(self, i: int, in_np: bool) -> int:
+        """Numbers ("two", "a couple of", "3"), quantifiers before "of" ("both of the"), "'s"."""
+        words, low, nxt = self.words, self.words[i].lower, self._next(i)
         n = _match_phrase(words, i, NUMBERS)
         if n and not in_np and (low != "one" or self.np_starts(i + 1) and nxt not in PREPOSITIONS) and \
                 (n > 1 or low != "one" or self._noun_follows(i + 1)):
-                self.out.append(_merge(words, i, n, "NUM", NUMBERS[" ".join(x.lower for x in words[i:i + n])]))
-                return n
+            return self._emit(i, n, "NUM", NUMBERS[" ".join(x.lower for x in words[i:i + n])])
         if low.isascii() and low.isdigit():
-            self.out.append(Word(w.text, w.start, w.end, "NUM", int(low)))
-            return 1
+            return self._emit(i, 1, "NUM", int(low))
         if low == "'s":
-            if prev in ("NAME", "WORD", "PRON") and self.np_starts(i + 1) and nxt not in ("a", "an", "the"):
-                self.out[-1] = Word(f"{self.out[-1].text}'s", self.out[-1].start, w.end, "POSS", self.out[-1].text)
-            else:
-                self.out.append(Word(w.text, w.start, w.end, "BE"))
-            return 1
+            last = self.out[-1] if self.out else None
+            if last is not None and last.tag in ("NAME", "WORD", "PRON") and self.np_starts(i + 1) and \
+                    nxt not in ("a", "an", "the"):
+                self.out[-1] = Word(f"{last.text}'s", last.start, words[i].end, "POSS", last.text)
+                return 1
+            return self._emit(i, 1, "BE")
         if not in_np and low in _QUANTIFIERS and nxt == "of" and i + 2 < len(words) and \
                 (words[i + 2].lower in DETERMINERS or words[i + 2].lower in POSSESSIVES):
             number = NUMBERS.get(low)            # "both of the cups", "one of the books"
-            self.out.append(_merge(words, i, 2, "DET" if number is None else "NUM", number))
-            return 2
-        if low in PARTICLES and nxt == "of" and _match_phrase(words, i, PREPOSITIONS) < 2:   # "the back of"
-            self.out.append(Word(w.text, w.start, w.end, "WORD"))
-            return 1
-        if not in_np:
-            n = _match_phrase(words, i, HERE_WORDS)
-            if n and not (low == "there" and nxt in BE_WORDS):
-                self.out.append(_merge(words, i, n, "HERE"))
-                return n
-            if low == "there":
-                self.out.append(Word(w.text, w.start, w.end, "THERE"))
-                return 1
-            n = _match_phrase(words, i, PREPOSITIONS)
-            if n:
-                prep = PREPOSITIONS[" ".join(x.lower for x in words[i:i + n])]
-                if self.np_starts(i + n) or words[i + n:i + n + 1] and words[i + n].lower in ("here", "there"):
-                    self.out.append(_merge(words, i, n, "PREP", prep))
-                else:
-                    self.out.append(_merge(words, i, n, "PARTICLE", prep))   # "pick it up", "where ... from"
-                return n
-            if low == "of":
-                self.out.append(Word(w.text, w.start, w.end, "OF"))
-                return 1
-            if low in PARTICLES:
-                self.out.append(Word(w.text, w.start, w.end, "PARTICLE", low))
-                return 1
-            if low in WH_WORDS and prev != "DET":
-                self.out.append(Word(w.text, w.start, w.end, "WH"))
-                return 1
-            if low in BE_WORDS:
-                self.out.append(Word(w.text, w.start, w.end, "BE"))
-                return 1
-            if low in POSSESSIVES and (low != "her" or self._noun_follows(i + 1)):
-                self.out.append(Word(w.text, w.start, w.end, "POSS"))
-                return 1
-            if low in DETERMINERS and (low not in ("that", "this", "these", "those") or self._noun_follows(i + 1)):
-                self.out.append(Word(w.text, w.start, w.end, "DET"))
-                return 1
-            if low in PRONOUNS:
-                self.out.append(Word(w.text, w.start, w.end, "PRON"))
-                return 1
-        elif low == "of":
-            self.out.append(Word(w.text, w.start, w.end, "OF"))
-            return 1
-        elif (low in DETERMINERS or low in POSSESSIVES) and self._noun_follows(i + 1):
-            self.out.append(Word(w.text, w.start, w.end, "DET" if low in DETERMINERS else "POSS"))
-            return 1
-        # open-class words
+            return self._emit(i, 2, "DET" if number is None else "NUM", number)
+        return 0
+
+    def _function_word(self, i: int, in_np: bool) -> int:
+        """Prepositions, particles, "of", wh-words, "is", possessives, determiners, pronouns."""
+        words, low, nxt = self.words, self.words[i].lower, self._next(i)
+        if low in PARTICLES and nxt == "of" and _match_phrase(words, i, PREPOSITIONS) < 2:
+            return self._emit(i, 1, "WORD")       # "the back of the toilet"
+        if low == "of":
+            return self._emit(i, 1, "OF")
+        if in_np:
+            if (low in DETERMINERS or low in POSSESSIVES) and self._noun_follows(i + 1):
+                return self._emit(i, 1, "DET" if low in DETERMINERS else "POSS")
+            return 0
+        n = _match_phrase(words, i, HERE_WORDS)
+        if n and not (low == "there" and nxt in BE_WORDS):
+            return self._emit(i, n, "HERE")
+        if low == "there":
+            return self._emit(i, 1, "THERE")
+        n = _match_phrase(words, i, PREPOSITIONS)
+        if n:
+            prep = PREPOSITIONS[" ".join(x.lower for x in words[i:i + n])]
+            has_object = self.np_starts(i + n) or i + n < len(words) and words[i + n].lower in ("here", "there")
+            return self._emit(i, n, "PREP" if has_object else "PARTICLE", prep)   # "pick it up", "... from"
+        if low in PARTICLES:
+            return self._emit(i, 1, "PARTICLE", low)
+        if low in WH_WORDS and self.prev_tag() != "DET":
+            return self._emit(i, 1, "WH")
+        if low in BE_WORDS:
+            return self._emit(i, 1, "BE")
+        if low in POSSESSIVES and (low != "her" or self._noun_follows(i + 1)):
+            return self._emit(i, 1, "POSS")
+        if low in DETERMINERS and (low not in ("that", "this", "these", "those") or self._noun_follows(i + 1)):
+            return self._emit(i, 1, "DET")
+        if low in PRONOUNS:
+            return self._emit(i, 1, "PRON")
+        return 0
+
+    def _open_word(self, i: int, in_np: bool) -> int:
+        """Participles after a noun, result words, names, and every other word (a noun or adjective)."""
+        w, low, nxt, prev = self.words[i], self.words[i].lower, self._next(i), self.prev_tag()
         gerund = gerund_lemma(low)
         if gerund and prev in ("WORD", "NAME", "PRON", "BE"):
             tag = "VBG_T" if self.np_starts(i + 1) and nxt not in PARTICLES else \
                 "VBG_P" if nxt in PREPOSITIONS and self.np_starts(i + 2) else "VBG_I"
-            self.out.append(Word(w.text, w.start, w.end, tag, gerund))
-            return 1
+            return self._emit(i, 1, tag, gerund)
         result = self.lexicon.results.get(low)
         if result and self._noun_follows(i + 1):
-            self.out.append(Word(w.text, w.start, w.end, "RESULT", result))
-            return 1
-        if _capitalised(w) and not in_np and prev not in ("WORD",) and low not in _CLOSED:
+            return self._emit(i, 1, "RESULT", result)
+        if _capitalised(w) and not in_np and prev != "WORD" and low not in _CLOSED:
             if prev == "NAME":          # "Mary Ann": one name
                 last = self.out[-1]
                 self.out[-1] = Word(self.text_of(last.start, w.end), last.start, w.end, "NAME")
-            else:
-                self.out.append(Word(w.text, w.start, w.end, "NAME"))
-            return 1
-        self.out.append(Word(w.text, w.start, w.end, "WORD"))
-        return 1
+                return 1
+            return self._emit(i, 1, "NAME")
+        return self._emit(i, 1, "WORD")
+
+    def _next(self, i: int) -> str:
+        return self.words[i + 1].lower if i + 1 < len(self.words) else ""
 
     def _noun_follows(self, i: int) -> bool:
         """Whether an open-class word (a noun or adjective) starts at ``i``."""
