@@ -396,7 +396,8 @@ class Agent:
             if target is not None:
                 if self.world.held_chain(target):
                     return Outcome(True, f"holds {target}")
-                cell = self.stand_cell(self.known[target])
+                stand = getattr(self.policy, "stand", None)
+                cell = stand(self, self.known[target]) if stand else self.stand_cell(self.known[target])
                 if cell is None:
                     self.unreachable.add(target)
                     self.say("fail", f"{target} cannot be reached from anywhere the robot can drive")
@@ -740,6 +741,12 @@ class SeFMPolicy:
             why = f"opens {place.id}, where the belief is" if shut else f"looks at {place.id}, where the belief is"
             options.append((mass, float(field_[cell]), View(cell, place.at, open=place.id if shut else None,
                                                              why=why)))
+        for mode in modes if self.modes_too or not options else ():  # the belief's modes, wherever they are
+            view = self._view_of(agent, mode.mean, field_)
+            if view is not None:
+                at = agent.grid.point(view.cell)
+                mass = float(W[(np.hypot(X[:, 0] - at[0], X[:, 1] - at[1]) <= seeing) & ~hidden].sum())
+                options.append((mass, float(field_[view.cell]), view))
         fresh = [o for o in options if (o[2].cell, o[2].open) not in self.tried and o[0] > self.min_mass]
         if fresh:
             view = max(fresh, key=lambda o: o[0] / (o[1] + self.distance_scale))[2]
@@ -753,6 +760,8 @@ class SeFMPolicy:
 
     min_mass = 1e-3
     """A view that would reveal less belief than this is not worth the drive."""
+    modes_too = False
+    """Also consider standing on the belief's modes when the map has places (without places, always)."""
 
     def _view_of(self, agent: Agent, point: tuple[float, float], field_: np.ndarray) -> View | None:
         """Where to stand to observe a point of the belief: the particles are poses from which the

@@ -25,6 +25,7 @@ import numpy as np
 
 from .agent import Agent, Known, SeFMPolicy, View
 from .frames import Binding
+from .navigation import Cell
 from .taxonomy import class_key
 from .world import Detection
 
@@ -108,7 +109,9 @@ class CoveragePolicy:
 
 
 class OraclePolicy:
-    """Knows the world; picks the instances that make the remaining plan shortest."""
+    """Knows the world; picks the instances, and the poses to act from, that make the remaining plan
+    shortest (exhaustively over the nearest few instances of each class, and exactly over poses by
+    dynamic programming): the lower bound on the path."""
 
     name = "oracle"
     oracle = True
@@ -116,7 +119,9 @@ class OraclePolicy:
     per_class = 6
 
     def begin(self, agent: Agent) -> None:
-        pass
+        self.plan: list[Known] = []
+        self._pairs: dict[tuple[str, str], np.ndarray] = {}
+        self._cells: dict[str, np.ndarray] = {}
 
     def observe(self, agent: Agent, detections: Sequence[Detection]) -> None:
         pass
@@ -125,7 +130,7 @@ class OraclePolicy:
         return None  # it knows every instance there is; if none will do, there is none
 
     def choose(self, agent: Agent, cls: str, candidates: Sequence[Known]) -> str | None:
-        targets = _navigation_targets(agent)
+        targets = [agent.class_of(t) for t in _navigation_targets(agent)]
         if not targets or targets[0] != cls:
             targets = [cls, *targets]
         held = agent.held()
@@ -142,43 +147,66 @@ class OraclePolicy:
         if cls not in options:
             return None
         classes = list(options)
-        best: tuple[float, str] | None = None
+        best: tuple[float, list[Known]] | None = None
         for n, combo in enumerate(itertools.product(*(options[c] for c in classes))):
             if n >= self.max_assignments:
                 break
             chosen = dict(zip(classes, combo, strict=True))
-            cost = _tour(agent, [chosen[t] for t in targets if t in chosen])
+            stops = [chosen[t] for t in targets if t in chosen]
+            cost = self.tour(agent, stops)[0]
             if best is None or cost < best[0]:
-                best = (cost, chosen[cls].id)
-        return best[1] if best else None
+                best = (cost, stops)
+        if best is None:
+            return None
+        self.plan = best[1]
+        return best[1][0].id
+
+    def stand(self, agent: Agent, known: Known) -> Cell | None:
+        """The pose to act on ``known`` from that makes the rest of the chosen tour shortest."""
+        stops = self.plan if self.plan and self.plan[0].id == known.id else [known]
+        cost, cell = self.tour(agent, stops)
+        return cell if np.isfinite(cost) else None
+
+    def _stand_cells(self, agent: Agent, known: Known) -> np.ndarray:
+        if known.id not in self._cells:
+            self._cells[known.id] = agent.stand_cells(known)
+        return self._cells[known.id]
+
+    def _between(self, agent: Agent, a: Known, b: Known) -> np.ndarray:
+        """Metres from each stand cell of ``a`` to each stand cell of ``b``."""
+        key = (a.id, b.id)
+        if key not in self._pairs:
+            ca, cb = self._stand_cells(agent, a), self._stand_cells(agent, b)
+            rows = [agent.grid.distances((int(i), int(j)))[cb[:, 0], cb[:, 1]] for i, j in ca]
+            self._pairs[key] = np.asarray(rows).reshape(len(ca), len(cb))
+        return self._pairs[key]
+
+    def tour(self, agent: Agent, stops: Sequence[Known]) -> tuple[float, Cell | None]:
+        """The shortest drive through the stops in order (each from any of its stand cells), and the
+        cell to stand at for the first stop."""
+        if not stops:
+            return 0.0, None
+        after = np.zeros(len(self._stand_cells(agent, stops[-1])))  # metres still to go from each cell
+        for a, b in zip(stops[-2::-1], stops[:0:-1], strict=True):
+            between = self._between(agent, a, b)
+            after = (between + after[None, :]).min(axis=1) if between.size else np.full(len(between), np.inf)
+        first = self._stand_cells(agent, stops[0])
+        if not len(first):
+            return math.inf, None
+        here = agent.distances()[first[:, 0], first[:, 1]]
+        total = here + after
+        k = int(np.argmin(total))
+        return float(total[k]), (int(first[k, 0]), int(first[k, 1]))
 
 
 def _navigation_targets(agent: Agent) -> list[str]:
-    """The classes the remaining plan will drive to, in order."""
+    """The names the remaining plan will drive to, in order."""
     out: list[str] = []
     for binding in getattr(agent, "remaining", []):
         for action in binding.actions:
             if action.name == "navigate":
                 out.append(class_key(action.args[0]))
     return out
-
-
-def _tour(agent: Agent, stops: Sequence[Known]) -> float:
-    """Metres to visit the stops in order, each at its stand cell nearest the previous one."""
-    cell = agent.robot_cell()
-    total = 0.0
-    for k in stops:
-        cells = agent.stand_cells(k)
-        if not len(cells):
-            return math.inf
-        field_ = agent.grid.distances(cell)
-        costs = field_[cells[:, 0], cells[:, 1]]
-        i = int(np.argmin(costs))
-        if not np.isfinite(costs[i]):
-            return math.inf
-        total += float(costs[i])
-        cell = (int(cells[i, 0]), int(cells[i, 1]))
-    return total
 
 
 class ObjectOnlyPolicy(SeFMPolicy):
