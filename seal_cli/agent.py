@@ -161,6 +161,8 @@ class Agent:
         self.steps: list[Binding] = []
         """The plan being executed; ``steps[index]`` is the frame at hand."""
         self.index = 0
+        self.todo: list[Binding] = []
+        """The commanded frames not yet executed."""
         self._learn_places(bool(getattr(policy, "oracle", False)))
 
     # -- knowledge ---------------------------------------------------------------------------
@@ -228,6 +230,7 @@ class Agent:
         self.policy.begin(self)
         self.look()
         todo = list(commanded)
+        self.todo = todo
         try:
             steps = self.planner(todo, self.library, self.state)
         except SealError as error:
@@ -707,10 +710,25 @@ class SeFMPolicy:
         sefm = self._beliefs(agent)
         sefm.update(agent.world.robot.pose, (), self._state(agent))
         if self.use_frames:
-            i = agent.index
+            i = self.frame_index(agent)
             return sefm.frames.X[i], sefm.frames.W[i], list(sefm.frame_summary(i).modes)
         row = sefm.objects.row(agent.class_of(target))
         return sefm.objects.X[row], sefm.objects.W[row], list(sefm.object_summary(agent.class_of(target)).modes)
+
+    serve_commanded = False
+    """Search by the belief of the commanded frame the current step serves (Stir(cup) while picking
+    the spoon for it: spoons near cups are worth more), rather than the step's own. Off: on
+    ALFRED-2D it drew the robot to the static goal (a desk, a microwave) first, and searched longer
+    (docs/benchmarks.md)."""
+
+    def frame_index(self, agent: Agent) -> int:
+        """The plan step whose belief guides the search: the current one, or the commanded frame it
+        is a precondition of (the next commanded frame in the plan)."""
+        if self.serve_commanded and agent.todo:
+            for j in range(agent.index, len(agent.steps)):
+                if agent.steps[j] == agent.todo[0]:
+                    return j
+        return agent.index
 
     def next_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
         """The view that reveals the most belief per metre: opening a shut receptacle reveals the
