@@ -13,7 +13,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cached_property, lru_cache
 
 from .errors import SealError, Where
 
@@ -27,8 +27,10 @@ def class_words(name: str) -> tuple[str, ...]:
     return tuple(w for w in re.split(r"[\s_\-]+", _HUMP.sub(" ", name).lower()) if w)
 
 
+@lru_cache(maxsize=8192)
 def class_key(name: str) -> str:
-    """The key under which class names compare equal (``"sink_basin"``)."""
+    """The key under which class names compare equal (``"sink_basin"``); cached, as planners and
+    state checks ask for the same few names again and again."""
     return "_".join(class_words(name))
 
 
