@@ -17,6 +17,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
+from functools import cached_property
 
 from .errors import SealError, SealErrors, Where
 
@@ -75,10 +76,10 @@ class Fact:
         negated, name, args = parse_atom(text, where)
         return cls(name, args, negated, where)
 
-    @property
+    @cached_property
     def positive(self) -> Fact:
-        """The fact without its negation."""
-        return Fact(self.predicate, self.args, False, self.where)
+        """The fact without its negation (itself when it is not negated)."""
+        return Fact(self.predicate, self.args, False, self.where) if self.negated else self
 
     def bind(self, values: Mapping[str, str]) -> Fact:
         """The fact with each argument replaced by its value (arguments without one stay)."""
@@ -229,7 +230,9 @@ class Frame:
 
 @dataclass(frozen=True)
 class Binding:
-    """A grounded frame: a frame and the value (an object class or place) of each filled element."""
+    """A grounded frame: a frame and the value (an object class or place) of each filled element.
+
+    Its grounded facts and actions are computed once (planners ask for them at every state)."""
 
     frame: Frame
     values: tuple[tuple[str, str], ...]
@@ -242,15 +245,15 @@ class Binding:
         values = self.elements
         return tuple(f.bind(values) for f in facts if all(a in values for a in f.args))
 
-    @property
+    @cached_property
     def preconditions(self) -> tuple[Fact, ...]:
         return self._ground(self.frame.preconditions)
 
-    @property
+    @cached_property
     def postconditions(self) -> tuple[Fact, ...]:
         return self._ground(self.frame.postconditions)
 
-    @property
+    @cached_property
     def actions(self) -> tuple[Action, ...]:
         values = self.elements
         return tuple(a.bind(values) for a in self.frame.actions if all(x in values for x in a.args))
