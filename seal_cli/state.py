@@ -20,7 +20,7 @@ decides this itself, so that only the openable things' ``open`` facts are stored
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator, Mapping
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 
 from .frames import Binding, Fact
 from .taxonomy import Taxonomy
@@ -76,7 +76,7 @@ class State:
         post = binding.postconditions
         deletes = {f.positive for f in post if f.negated}
         adds = {f for f in post if not f.negated}
-        return replace(self, facts=(self.facts - deletes) | adds)
+        return State((self.facts - deletes) | adds, self.taxonomy, self.closable, self.classes)
 
     def achieves(self, binding: Binding, fact: Fact) -> bool:
         """Whether running the grounded frame here makes ``fact`` hold."""
