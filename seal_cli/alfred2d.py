@@ -42,7 +42,7 @@ if TYPE_CHECKING:
 __all__ = ["FOUR", "GRID", "MOVABLE_RECEPTACLES", "TASK_TYPES", "Condition", "Episode", "FloorPlan", "Placement",
            "Receptacle", "Suite", "Task", "build_scene", "build_world", "estimate_priors", "gold_commands",
            "gold_classes", "goal_conditions", "judge", "load_suite", "read_floorplans", "read_trials", "scene_priors",
-           "scene_vocabulary", "thor_yaw", "SYNONYMS"]
+           "scene_vocabulary", "thor_yaw", "train_priors", "SYNONYMS"]
 
 GRID = 0.25
 """ALFRED's agent grid, metres."""
@@ -342,8 +342,21 @@ def load_suite(data_dir: str | Path, split: str, *, limit: int | None = None,
         episodes.append(episode)
     suite = Suite(plans, episodes, Path(data_dir), movable)
     if with_priors:
-        suite.priors = estimate_priors(read_trials(data_dir, "train", plans), plans)
+        suite.priors = train_priors(data_dir)
     return suite
+
+
+_PRIORS: dict[tuple[str, float], dict[str, dict[str, float]]] = {}
+
+
+def train_priors(data_dir: str | Path) -> dict[str, dict[str, float]]:
+    """:func:`estimate_priors` over the ``train`` split (kept per process: reading it takes a while)."""
+    path = Path(data_dir) / "trials_train.jsonl"
+    key = (str(path.resolve()), path.stat().st_mtime if path.exists() else 0.0)
+    if key not in _PRIORS:
+        plans, _ = read_floorplans(data_dir)
+        _PRIORS[key] = estimate_priors(read_trials(data_dir, "train", plans), plans)
+    return _PRIORS[key]
 
 
 # -- priors -----------------------------------------------------------------------------------------
