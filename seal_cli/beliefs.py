@@ -130,10 +130,11 @@ class SeFM:
         self.objects = ObjectBeliefs.from_prior(m, self.sources, P, rng,
                                                 self.config.objects or ObjectModel.for_map(m))
         self.kernel: KernelSums = make_kernel_sums(self.config.kernel, len(self.sources) + len(self.bindings), P,
-                                                   m.bounds, self.config.sigma)
+                                                   m.bounds, self.config.sigma, split=len(self.sources))
         self.kernel.set(range(len(self.sources)), self.objects.X, self.objects.W)
         self.relations = relations(self.bindings, state, self.config.other)
-        terms = self.terms()
+        self._related = state.facts
+        terms = self._terms = self.terms()
         self.frames = FrameBeliefs.start(m, self._noise(), P, terms, self.kernel, (self.objects.X, self.objects.W),
                                          rng, self.config.frames)
         self._refresh_context(terms)
@@ -208,10 +209,13 @@ class SeFM:
         if change.redrawn:
             rows = list(change.redrawn)
             self.kernel.set(rows, self.objects.X[rows], self.objects.W[rows])
-        for row, index, delta, total in change.reweighted:
-            self.kernel.reweight(row, index, self.objects.X[row, index], delta, total)
-        self.relations = relations(self.bindings, self.state, self.config.other)
-        terms = self.terms()
+        self.kernel.reweight([(row, index, self.objects.X[row, index], delta, total)
+                              for row, index, delta, total in change.reweighted])
+        if self.state.facts != self._related:
+            self.relations = relations(self.bindings, self.state, self.config.other)
+            self._related = self.state.facts
+            self._terms = self.terms()
+        terms = self._terms
         self.frames.update(terms, self.kernel, (self.objects.X, self.objects.W), self.rng)
         self._refresh_context(terms)
         self.step += 1

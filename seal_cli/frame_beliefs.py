@@ -49,7 +49,6 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .maps import Map
-from .object_beliefs import spatial_order
 from .potentials import KernelSums
 from .resampling import ess, grouped_systematic, normalise, systematic
 
@@ -126,6 +125,8 @@ class FrameBeliefs:
     sigma: float
     model: FrameModel = field(default_factory=FrameModel)
     last_ess: Array = field(default_factory=lambda: np.zeros(0))
+    cell: Index = field(default_factory=lambda: np.zeros((0, 0), np.intp))
+    """The free cell of each particle (an index into the map's free cells)."""
 
     @classmethod
     def start(cls, m: Map, noise: Sequence[float], particles: int, terms: Terms, kernel: KernelSums,
@@ -135,9 +136,14 @@ class FrameBeliefs:
         beliefs = cls(m, np.zeros((F, particles, 2)), np.full((F, particles), 1.0 / max(particles, 1)),
                       np.zeros((F, particles)), np.ones(F), np.asarray(noise, float), kernel.sigma,
                       model or FrameModel())
+        beliefs.cell = np.zeros((F, particles), np.intp)
         if F:
-            X, gamma, weights = beliefs._fresh(terms, kernel, sources, particles, rng)
-            beliefs._resample_move(X, gamma, weights, terms, kernel, rng)
+            X, uniform = beliefs._draw(terms, sources, particles, rng)
+            cells = m.free_index(X.reshape(-1, 2)).reshape(F, particles).astype(np.intp)
+            measurement, context = beliefs.potentials(terms, kernel, X)
+            gamma = np.where(cells >= 0, beliefs.gamma_of(terms, measurement, context), 0.0)
+            weights = beliefs._importance(terms, gamma, measurement, cells >= 0)
+            beliefs._resample_move(X, cells, gamma, weights, terms, kernel, rng)
         return beliefs
 
     @property
@@ -155,32 +161,30 @@ class FrameBeliefs:
         F, P = self.W.shape
         if F == 0:
             return
-        gamma = self.gamma_at(terms, kernel, self.X)
-        weights = self.Z[:, None] * self.W * P * gamma / self.gamma
         n = int(round(self.model.fresh_share * P))
-        X = self.X
+        X, cells = self.X, self.cell
         if n:
-            drawn, drawn_gamma, drawn_weights = self._fresh(terms, kernel, sources, n, rng)
+            drawn, _ = self._draw(terms, sources, n, rng)
             X = np.concatenate([X, drawn], axis=1)
-            gamma = np.concatenate([gamma, drawn_gamma], axis=1)
-            weights = np.concatenate([weights, drawn_weights], axis=1)
-        self._resample_move(X, gamma, weights, terms, kernel, rng)
-
-    def _fresh(self, terms: Terms, kernel: KernelSums, sources: tuple[Array, Array], n: int,
-               rng: np.random.Generator) -> tuple[Array, Array, Array]:
-        """``n`` points per frame from the proposal g, with γ and the weight ``γ/g`` of each."""
-        X, uniform = self._draw(terms, sources, n, rng)
+            cells = np.concatenate([cells, self.map.free_index(drawn.reshape(-1, 2)).reshape(F, n).astype(np.intp)],
+                                   axis=1)
         measurement, context = self.potentials(terms, kernel, X)
-        free = self.map.is_free(X.reshape(-1, 2)).reshape(X.shape[:2])
-        gamma = np.where(free, self.gamma_of(terms, measurement, context), 0.0)
+        gamma = np.where(cells >= 0, self.gamma_of(terms, measurement, context), 0.0)
+        weights = np.concatenate([self.Z[:, None] * self.W * P * gamma[:, :P] / self.gamma,
+                                  self._importance(terms, gamma[:, P:], measurement[:, P:], cells[:, P:] >= 0)],
+                                 axis=1)
+        self._resample_move(X, cells, gamma, weights, terms, kernel, rng)
+
+    def _importance(self, terms: Terms, gamma: Array, measurement: Array, free: NDArray[np.bool_]) -> Array:
+        """``γ / g`` of fresh draws, g being the proposal's density (uniform share plus the elements' share)."""
         total = terms.belief_total[:, None]
         u = np.where(total > 0, self.model.uniform_share, 1.0)
         g = u * free / self.free_area + (1 - u) * measurement / (np.where(total > 0, total, 1.0)
                                                                  * 2 * np.pi * self.sigma ** 2)
-        return X, gamma, np.where(g > 0, gamma / np.where(g > 0, g, 1.0), 0.0)
+        return np.where(g > 0, gamma / np.where(g > 0, g, 1.0), 0.0)
 
-    def _resample_move(self, X: Array, gamma: Array, weights: Array, terms: Terms, kernel: KernelSums,
-                       rng: np.random.Generator) -> None:
+    def _resample_move(self, X: Array, cells: Index, gamma: Array, weights: Array, terms: Terms,
+                       kernel: KernelSums, rng: np.random.Generator) -> None:
         """Keep P of the weighted particles by systematic resampling (room by room), then move them by a
         Metropolis–Hastings step whose proposal is the prediction potential and whose target is γ."""
         F, P = self.W.shape
@@ -188,16 +192,26 @@ class FrameBeliefs:
         self.Z = np.maximum(weights.mean(axis=1), np.finfo(float).tiny)
         W = normalise(weights)
         self.last_ess = ess(W)
-        by_room = spatial_order(self.map, X)
+        by_room = self._room_order(cells)
         ancestors = np.take_along_axis(by_room, systematic(np.take_along_axis(W, by_room, axis=1), rng, P), axis=1)
         X = np.take_along_axis(X, ancestors[..., None], axis=1)
+        cells = np.take_along_axis(cells, ancestors, axis=1)
         gamma = np.take_along_axis(gamma, ancestors, axis=1)
         proposal = X + rng.normal(0.0, 1.0, X.shape) * self.noise[:, None, None]
-        proposed = self.gamma_at(terms, kernel, proposal)
+        moved = self.map.free_index(proposal.reshape(-1, 2)).reshape(F, P).astype(np.intp)
+        proposed = np.where(moved >= 0, self.gamma_of(terms, *self.potentials(terms, kernel, proposal)), 0.0)
         accept = rng.random((F, P)) * gamma < proposed
         self.X = np.where(accept[..., None], proposal, X)
+        self.cell = np.where(accept, moved, cells)
         self.gamma = np.where(accept, proposed, gamma)
         self.W = np.full((F, P), 1.0 / P)
+
+    def _room_order(self, cells: Index) -> Index:
+        """Particles listed room by room, and within a room by free cell (row by row of the map);
+        particles off free space (weight 0) first."""
+        rooms = np.where(cells >= 0, self.map.free_cell_room[np.maximum(cells, 0)], -1)
+        key = (rooms + 1).astype(np.int64) * (len(self.map.free_centres) + 1) + cells + 1
+        return np.argsort(key, axis=1, kind="stable")
 
     @property
     def free_area(self) -> float:
@@ -209,7 +223,7 @@ class FrameBeliefs:
         F, Q = X.shape[:2]
         which = np.concatenate([terms.meas_source, terms.ctx_source])
         rows = np.concatenate([terms.meas_frame, terms.ctx_frame])
-        K = kernel.sample(which, X[rows]) if len(which) else np.zeros((0, Q))
+        K = kernel.sample(which, X, rows) if len(which) else np.zeros((0, Q))
         weights = np.concatenate([terms.meas_weight, terms.ctx_weight])[:, None] * K
         measurement, context = np.zeros((F, Q)), np.zeros((F, Q))
         m = len(terms.meas_source)

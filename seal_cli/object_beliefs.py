@@ -41,12 +41,13 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import numpy as np
 from numpy.typing import NDArray
 
 from .maps import Map
-from .resampling import ess, grouped_systematic, normalise, stratified, systematic
+from .resampling import ess, normalise, stratified, systematic
 from .taxonomy import class_key
 
 __all__ = ["ObjectBeliefs", "ObjectModel", "Source", "Update", "rooms_of", "source_for", "spatial_order"]
@@ -285,5 +286,19 @@ def _by_room(m: Map, weights: Array, n: int, rng: np.random.Generator) -> NDArra
     rooms = m.free_cell_room + 1
     masses = np.asarray(np.bincount(rooms, weights, minlength=len(m.rooms) + 1), float)
     counts = np.bincount(stratified(masses, n, rng), minlength=len(masses))
+    order, bounds = _cells_by_room(m)
+    picked = []
+    for room in np.flatnonzero(counts):
+        cells = order[bounds[room]:bounds[room + 1]]
+        cdf = np.cumsum(weights[cells])
+        picked.append(cells[np.minimum(np.searchsorted(cdf, rng.random(counts[room]) * cdf[-1], side="right"),
+                                       len(cells) - 1)])
+    return np.concatenate(picked) if picked else np.zeros(0, np.intp)
+
+
+@lru_cache(maxsize=8)
+def _cells_by_room(m: Map) -> tuple[NDArray[np.intp], NDArray[np.intp]]:
+    """The free cells sorted by room (``-1`` first) and where each room's run starts (cached per map)."""
+    rooms = m.free_cell_room + 1
     order = np.argsort(rooms, kind="stable")
-    return order[grouped_systematic(weights[order], rooms[order], counts, rng, systematic=False)]
+    return order, np.searchsorted(rooms[order], np.arange(len(m.rooms) + 2))

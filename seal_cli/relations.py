@@ -29,7 +29,7 @@ from .frames import Action, Binding, Fact
 from .state import State
 from .taxonomy import class_key
 
-__all__ = ["CORE", "DISJOINT", "LOCATING_ACTIONS", "OTHER", "Relations", "context_relations",
+__all__ = ["CORE", "DISJOINT", "LOCATING_ACTIONS", "OTHER", "Relations", "achievers", "context_relations",
            "element_relations", "relations", "spatial_roles"]
 
 CORE = 1.0
@@ -116,22 +116,33 @@ def element_relations(binding: Binding, state: State, other: float = OTHER) -> d
     return {r: DISJOINT if r in disjoint else CORE if r in core else other for r in roles}
 
 
-def _achieves(binding: Binding, fact: Fact) -> bool:
-    target = (fact.predicate, tuple(class_key(a) for a in fact.args))
-    return any(not p.negated and (p.predicate, tuple(class_key(a) for a in p.args)) == target
-               for p in binding.postconditions)
+def _key(fact: Fact) -> tuple[str, tuple[str, ...]]:
+    return fact.predicate, tuple(class_key(a) for a in fact.args)
 
 
-def context_relations(index: int, bindings: Sequence[Binding], state: State, other: float = OTHER) -> dict[int, float]:
+def achievers(bindings: Sequence[Binding]) -> dict[tuple[str, tuple[str, ...]], list[int]]:
+    """Which bindings (indices) make each fact true: their positive postconditions, by class key."""
+    out: dict[tuple[str, tuple[str, ...]], list[int]] = {}
+    for j, binding in enumerate(bindings):
+        for fact in binding.postconditions:
+            if not fact.negated and j not in out.setdefault(_key(fact), []):
+                out[_key(fact)].append(j)
+    return out
+
+
+def context_relations(index: int, bindings: Sequence[Binding], state: State, other: float = OTHER,
+                      made_by: dict[tuple[str, tuple[str, ...]], list[int]] | None = None) -> dict[int, float]:
     """B(R_ij | x_t) for the frames j (indices into ``bindings``) that achieve frame i's unmet preconditions.
 
     Among several achievers of one fact, the nearest one planned before frame i is taken (else
-    the nearest after it): the plan's own order says which step provides the fact.
+    the nearest after it): the plan's own order says which step provides the fact. ``made_by``
+    is :func:`achievers` of the bindings, if already known.
     """
+    made_by = achievers(bindings) if made_by is None else made_by
     beliefs: dict[int, float] = {}
     first = True
     for fact in state.unmet(bindings[index]):
-        candidates = [j for j in range(len(bindings)) if j != index and _achieves(bindings[j], fact)]
+        candidates = [j for j in made_by.get(_key(fact), []) if j != index]
         if not candidates:
             continue
         before = [j for j in candidates if j < index]
@@ -144,9 +155,10 @@ def context_relations(index: int, bindings: Sequence[Binding], state: State, oth
 def relations(bindings: Sequence[Binding], state: State, other: float = OTHER) -> list[Relations]:
     """The relation beliefs of every grounded frame of a plan in one state."""
     out = []
+    made_by = achievers(bindings)
     for i, binding in enumerate(bindings):
         elements = element_relations(binding, state, other)
         values = binding.elements
         out.append(Relations(tuple((r, values[r], b) for r, b in elements.items()),
-                             tuple(sorted(context_relations(i, bindings, state, other).items()))))
+                             tuple(sorted(context_relations(i, bindings, state, other, made_by).items()))))
     return out
