@@ -34,7 +34,7 @@ from .errors import SealError, Where
 from .fileio import atomic_write_text
 from .frames import Binding, Fact, Frame
 from .library import Library
-from .planning import Plan
+from .planning import OPENABLE, Plan
 from .taxonomy import Taxonomy, class_key
 
 __all__ = ["Kinds", "action_name", "domain_pddl", "problem_pddl", "write_pddl"]
@@ -132,6 +132,12 @@ def _unfilled(binding: Binding) -> list[tuple[str, str]]:
     return [(e.role, class_key(e.type)) for e in binding.frame.elements if e.role not in values]
 
 
+def _filling(binding: Binding) -> list[tuple[str | None, str]]:
+    """(value or None when unfilled, category) of each element of the binding."""
+    values = binding.elements
+    return [(values.get(e.role), class_key(e.type)) for e in binding.frame.elements]
+
+
 def _dropped(binding: Binding, kinds: Kinds) -> list[Fact]:
     """The preconditions an unfilled element dropped, about the placeholders instead."""
     values = binding.elements
@@ -183,6 +189,8 @@ class _Problem:
             facts.update(dict.fromkeys(Fact("open", (o,)) for o in self.objects if o not in initial.closable))
         for binding in self.plan.bindings:
             facts.update(dict.fromkeys(_dropped(binding, self.kinds)))
+            facts.update(dict.fromkeys(Fact(test_name(class_key(f.predicate)), f.args)
+                                       for f in binding.preconditions if self._is_test(f)))
         for category in self._tests():
             for obj in self.objects:
                 if self.kinds.find(self.kinds.objects[obj]) == self.kinds.find(category) and \
@@ -191,9 +199,16 @@ class _Problem:
         return list(facts)
 
     def _belongs(self, obj: str, category: str) -> bool:
-        if obj.startswith("unspecified_") and obj not in self.plan.initial.classes:
-            return any(c == category for b in self.plan.bindings for _, c in _unfilled(b))
-        return self.library.taxonomy.is_a(self.plan.initial.class_of(obj), category) is not False
+        """Known to belong, or filling an element of that category in seal's plan (an unknown class
+        the command used): a PDDL planner may not slice an apple with an apple."""
+        initial = self.plan.initial
+        if self.library.taxonomy.is_a(initial.class_of(obj), category) is True:
+            return True
+        if category == OPENABLE and initial.closable is not None and obj in initial.closable:
+            return True
+        kinds = self.kinds
+        return any((value if value is not None else placeholder(kinds.kind(c))) == obj and c == category
+                   for b in self.plan.bindings for value, c in _filling(b))
 
     def _is_test(self, fact: Fact) -> bool:
         return len(fact.args) == 1 and fact.predicate in self.library.taxonomy

@@ -127,6 +127,11 @@ class Plan:
 
 # -- achievers -------------------------------------------------------------------------------------
 
+def _key(binding: Binding) -> tuple[str, tuple[tuple[str, str], ...]]:
+    """What tells grounded frames apart, cheaper to hash than the binding (which hashes its frame)."""
+    return binding.frame.name, binding.values
+
+
 def _unify(roles: Sequence[str], args: Sequence[str], values: Mapping[str, str]) -> dict[str, str] | None:
     """``values`` extended so that each role names its argument; None if a role would take two."""
     bound = dict(values)
@@ -153,8 +158,15 @@ def _from_deletions(frame: Frame, values: dict[str, str], state: State) -> list[
     return partials
 
 
+OPENABLE = "openable"
+"""The category of things that open and close; a map may say so of one place, whatever its class."""
+
+
 def fits(value: str, category: str, state: State, taxonomy: Taxonomy) -> bool:
-    """Whether a thing may fill an element of this type: it is not known *not* to belong."""
+    """Whether a thing may fill an element of this type: it is not known *not* to belong (a thing
+    the state says opens and closes is openable)."""
+    if category == OPENABLE and state.closable is not None and value in state.closable:
+        return True
     return taxonomy.is_a(state.class_of(value), category) is not False
 
 
@@ -178,18 +190,19 @@ class Achievers:
                 self.index.setdefault(key, []).append((order, frame, n))
 
     def __call__(self, fact: Fact, needer: Binding, state: State) -> list[Binding]:
-        found: dict[Binding, tuple[int, ...]] = {}
+        found: dict[tuple[str, tuple[tuple[str, str], ...]], tuple[tuple[int, ...], Binding]] = {}
         for order, frame, n in self.index.get((fact.predicate, fact.negated, len(fact.args)), ()):
             values = _unify(frame.postconditions[n].args, fact.args, {})
             if values is None:
                 continue
             for m, partial in enumerate(_from_deletions(frame, values, state)):
                 binding = frame.bind(self._complete(frame, partial, needer, state))
-                if binding == needer or binding in found or not self.well_typed(binding, state) \
+                key = _key(binding)
+                if key == _key(needer) or key in found or not self.well_typed(binding, state) \
                         or not state.apply(binding).holds(fact):
                     continue
-                found[binding] = (len(frame.elements) - len(binding.values), order, n, m)
-        return sorted(found, key=found.__getitem__)
+                found[key] = ((len(frame.elements) - len(binding.values), order, n, m), binding)
+        return [binding for _, binding in sorted(found.values(), key=lambda rank_binding: rank_binding[0])]
 
     def _complete(self, frame: Frame, values: dict[str, str], needer: Binding, state: State) -> dict[str, str]:
         """Open roles: from the needing frame's same-named element, then from the default."""
@@ -242,11 +255,11 @@ class _Search:
         if state.applicable(goal):
             return [(goal, True)]
         found: list[Binding] = []
-        self._relevant(goal, state, k, found, set(), {goal})
+        self._relevant(goal, state, k, found, set(), {_key(goal)})
         return [(b, False) for b in found]
 
     def _relevant(self, needer: Binding, state: State, k: int, found: list[Binding], facts: set[Fact],
-                  tried: set[Binding]) -> None:
+                  tried: set[tuple[str, tuple[tuple[str, str], ...]]]) -> None:
         """Depth first through the unmet preconditions: achievers that can run are successors."""
         for fact in state.unmet(needer):
             if fact in facts:
@@ -256,9 +269,9 @@ class _Search:
             if not options:
                 self.trace.dead.setdefault(k, []).append((fact, needer))
             for option in options:
-                if option in tried:
+                if _key(option) in tried:
                     continue
-                tried.add(option)
+                tried.add(_key(option))
                 if state.applicable(option):
                     found.append(option)
                 else:

@@ -35,6 +35,8 @@ from .library import Library
 from .state import State, robot_facts
 from .taxonomy import Taxonomy, class_key
 
+OPENABLE = "openable"
+
 if TYPE_CHECKING:
     from .language import Parse, Phrase
     from .maps import Map
@@ -103,7 +105,7 @@ class Things:
     def _add(self, name: str, cls: str) -> None:
         if name not in self.classes:
             self.classes[name] = cls
-            if self.taxonomy.is_a(cls, "openable") is True:
+            if self.taxonomy.is_a(cls, OPENABLE) is True:
                 self.closable.add(name)
 
     def class_of(self, name: str) -> str:
@@ -176,6 +178,8 @@ def _check_types(frame: Frame, values: Mapping[str, tuple[str, ...]], phrases: M
     for role, names in values.items():
         element = frame.element(role)
         for name in names:
+            if element.type == OPENABLE and name in things.closable:
+                continue
             if things.taxonomy.is_a(things.class_of(name), element.type) is False:
                 phrase = phrases.get(role)
                 raise _located(f"{frame.name} needs its {role} to be {element.type}, and "
