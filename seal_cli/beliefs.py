@@ -205,7 +205,7 @@ class SeFM:
         robot = as_pose(pose)
         seen = _detections(detections)
         region = self._region(robot)
-        change = self.objects.update(region.contains, seen, self._hidden(), self._held(), self.rng)
+        change = self.objects.update(_within_range(region), seen, self._hidden(), self._held(), self.rng)
         if change.redrawn:
             rows = list(change.redrawn)
             self.kernel.set(rows, self.objects.X[rows], self.objects.W[rows])
@@ -286,6 +286,21 @@ class SeFM:
 
     def relation_of(self, i: int) -> Relations:
         return self.relations[i]
+
+
+def _within_range(region: VisibleRegion) -> Any:
+    """``region.contains``, asked only about the points within the sensor's range (the rest are not seen)."""
+    x, y, _ = region.pose
+
+    def contains(points: Array) -> NDArray[np.bool_]:
+        d = points - (x, y)
+        near = np.einsum("ij,ij->i", d, d) <= region.range ** 2
+        out = np.zeros(len(points), bool)
+        if near.any():
+            out[near] = region.contains(points[near])
+        return out
+
+    return contains
 
 
 def _all_elements(binding: Binding) -> list[tuple[str, str, float]]:

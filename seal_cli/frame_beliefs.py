@@ -64,7 +64,7 @@ class FrameModel:
 
     floor_share: float = 0.01
     context_floor: float = 1.0
-    fresh_share: float = 0.2
+    fresh_share: float = 0.1
     uniform_share: float = 0.05
     static_noise: float = 0.02
     movable_noise: float = 0.1
@@ -197,7 +197,7 @@ class FrameBeliefs:
         X = np.take_along_axis(X, ancestors[..., None], axis=1)
         cells = np.take_along_axis(cells, ancestors, axis=1)
         gamma = np.take_along_axis(gamma, ancestors, axis=1)
-        proposal = X + rng.normal(0.0, 1.0, X.shape) * self.noise[:, None, None]
+        proposal = X + rng.standard_normal(X.shape) * self.noise[:, None, None]
         moved = self.map.free_index(proposal.reshape(-1, 2)).reshape(F, P).astype(np.intp)
         proposed = np.where(moved >= 0, self.gamma_of(terms, *self.potentials(terms, kernel, proposal)), 0.0)
         accept = rng.random((F, P)) * gamma < proposed

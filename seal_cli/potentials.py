@@ -132,6 +132,8 @@ class GridKernelSums:
         self.halo = int(math.ceil(truncate * self.filter_sigma)) + 1
         self.scale = 2 * math.pi * sigma ** 2 / cell ** 2
         self.grids: NDArray[np.floating[Any]] = np.zeros((count, *self.shape), dtype=dtype)
+        self.factor = np.ones(count)
+        """Each row's grid times its factor is its K (a reweighting divides the factor, not the grid)."""
 
     def _cells(self, xy: Array) -> tuple[Index, Index, Array, Array]:
         """Lower-left cell indices and fractional offsets of points (clamped into the grid)."""
@@ -168,27 +170,32 @@ class GridKernelSums:
             return
         i, j, fu, fv = self._cells(positions)
         self.grids[list(rows)] = self._smooth(self._bin((len(rows), *self.shape), i, j, fu, fv, weights))
+        self.factor[list(rows)] = 1.0
 
     def reweight(self, changes: Sequence[Change]) -> None:
-        """All the changes' particles are binned into windows of one size around them (one filter for all)."""
+        """All the changes' particles are binned into windows of one size around them (one filter for all);
+        the division by each total is kept as a factor of the row, applied when sampling."""
         moved = [c for c in changes if len(c[1])]
         if moved:
-            cells = [self._cells(positions) for _, _, positions, _, _ in moved]
-            span_i = min(max(int(i.max() - i.min()) for i, _, _, _ in cells) + 2 * self.halo + 2, self.shape[0])
-            span_j = min(max(int(j.max() - j.min()) for _, j, _, _ in cells) + 2 * self.halo + 2, self.shape[1])
-            corners = [(min(max(int(i.min()) - self.halo, 0), self.shape[0] - span_i),
-                        min(max(int(j.min()) - self.halo, 0), self.shape[1] - span_j)) for i, j, _, _ in cells]
-            i = np.concatenate([c[0] - lo_i for c, (lo_i, _) in zip(cells, corners, strict=True)])
-            j = np.concatenate([c[1] - lo_j for c, (_, lo_j) in zip(cells, corners, strict=True)])
-            layer = np.repeat(np.arange(len(moved)), [len(c[1]) for c in moved])
-            mass = self._bin((len(moved), span_i, span_j), layer * span_i + i, j,
-                             np.concatenate([c[2] for c in cells]), np.concatenate([c[3] for c in cells]),
-                             np.concatenate([c[3] for c in moved]), flat=True)
+            sizes = [len(c[1]) for c in moved]
+            i, j, fu, fv = self._cells(np.concatenate([c[2] for c in moved]))
+            start = np.cumsum([0, *sizes[:-1]])
+            low_i, high_i = np.minimum.reduceat(i, start), np.maximum.reduceat(i, start)
+            low_j, high_j = np.minimum.reduceat(j, start), np.maximum.reduceat(j, start)
+            span_i = min(int((high_i - low_i).max()) + 2 * self.halo + 2, self.shape[0])
+            span_j = min(int((high_j - low_j).max()) + 2 * self.halo + 2, self.shape[1])
+            corner_i = np.clip(low_i - self.halo, 0, self.shape[0] - span_i)
+            corner_j = np.clip(low_j - self.halo, 0, self.shape[1] - span_j)
+            layer = np.repeat(np.arange(len(moved)), sizes)
+            rows = np.array([c[0] for c in moved])
+            delta = np.concatenate([c[3] for c in moved]) / self.factor[rows][layer]
+            mass = self._bin((len(moved), span_i, span_j), layer * span_i + i - corner_i[layer], j - corner_j[layer],
+                             fu, fv, delta, flat=True)
             smooth = self._smooth(mass)
-            for k, ((row, *_), (lo_i, lo_j)) in enumerate(zip(moved, corners, strict=True)):
-                self.grids[row, lo_i:lo_i + span_i, lo_j:lo_j + span_j] += smooth[k]
+            for k, row in enumerate(rows):
+                self.grids[row, corner_i[k]:corner_i[k] + span_i, corner_j[k]:corner_j[k] + span_j] += smooth[k]
         for row, _, _, _, total in changes:
-            self.grids[row] /= total
+            self.factor[row] /= total
 
     def sample(self, which: Index, points: Array, rows: Index | None = None) -> Array:
         i, j, fu, fv = self._cells(points)
@@ -198,11 +205,14 @@ class GridKernelSums:
             i, j, fu, fv = i[rows], j[rows], fu[rows], fv[rows]
         nx, ny = self.shape
         flat = self.grids.reshape(-1)
-        corner = (np.asarray(which)[:, None] * nx + i) * ny + j
+        which = np.asarray(which)
+        corner = (which[:, None] * nx + i) * ny + j
         a, b = flat[corner], flat[corner + ny]
         c, d = flat[corner + 1], flat[corner + ny + 1]
         low = a + (b - a) * fu
-        return np.asarray(low + (c + (d - c) * fu - low) * fv, dtype=float)
+        out = np.asarray(low + (c + (d - c) * fu - low) * fv, dtype=float)
+        out *= self.factor[which][:, None]
+        return out
 
 
 class SplitKernelSums:
