@@ -283,15 +283,15 @@ class Map:
     """An annotated map (see the module docstring). Build it in code or with :func:`load_map`.
 
     ``bounds`` may be omitted when a ``grid`` is given (then it is the box around the grid, the
-    places, the objects and the robot); ``grid``
-    may be omitted when ``bounds`` are given (then all of ``bounds`` is free). ``priors`` maps an
-    object class to ``{room | place name | place class: mass}``. ``positions`` locates parts of
+    places, the objects and the robot); ``grid`` may be omitted when ``bounds`` are given (then
+    all of ``bounds`` is free). ``priors`` maps an object class to ``{room | place name | place
+    class: mass}``. A robot without a pose is placed at the free cell nearest the middle. ``positions`` locates parts of
     the map in its source file by YAML path (``("rooms", 2, "polygon")``) for error messages.
     ``check=False`` builds without checking; call :meth:`problems` yourself.
     """
 
     name: str
-    bounds: Bounds = None  # type: ignore[assignment]  # None: the grid's extent
+    bounds: Bounds = None  # type: ignore[assignment]  # None: around the grid and what is on it
     rooms: tuple[Room, ...] = ()
     places: tuple[Place, ...] = ()
     priors: Mapping[str, Mapping[str, float]] = field(default_factory=dict)
@@ -318,8 +318,7 @@ class Map:
             set_(self, "grid", OccupancyGrid.filled(self.bounds, resolution))
         set_(self, "rooms", tuple(self.rooms))
         set_(self, "objects", tuple(self.objects))
-        set_(self, "priors", {class_key(c): {str(t): float(m) for t, m in masses.items()}
-                              for c, masses in self.priors.items()})
+        set_(self, "priors", self._checked_priors(self.priors))
         set_(self, "places", tuple(p if p.room is not None else replace(p, room=self._room_name(p.at))
                                    for p in self.places))
         if self.robot is None:
@@ -332,6 +331,19 @@ class Map:
             if fatal:
                 raise SealErrors(fatal)
             set_(self, "warnings", tuple(problems))
+
+    def _checked_priors(self, priors: Any) -> dict[str, dict[str, float]]:
+        out: dict[str, dict[str, float]] = {}
+        for cls, masses in dict(priors).items():
+            if not isinstance(masses, Mapping):
+                raise SealError(f"the prior of {cls} must map rooms, places or place classes to masses, "
+                                f"not {masses!r}", self.where("priors", class_key(str(cls))))
+            try:
+                out[class_key(str(cls))] = {str(t): float(m) for t, m in masses.items()}
+            except (TypeError, ValueError):
+                raise SealError(f"the prior of {cls} has a mass that is not a number: {dict(masses)!r}",
+                                self.where("priors", class_key(str(cls)))) from None
+        return out
 
     def _grid_and_contents_bounds(self) -> Bounds:
         """The box around the grid and every place, object and placed robot (receptacles often lie
