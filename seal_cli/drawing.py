@@ -2,10 +2,12 @@
 
 :class:`PngDrawer` is an observer: it follows the robot during the run and draws when the run
 ends. The picture has one panel for the objects (each class's particles in its own colour, the
-detections as orange crosses) and one panel per frame (its particles coloured by weight — dark
-purple light, yellow heavy —, its modes as 2-σ ellipses labelled with room and weight, its best
-point as a white star). Every panel shows the occupancy map, the rooms (tinted, named), the
-places, the ground-truth objects (red stars) and the robot's path (blue) ending at its pose.
+detections as orange crosses) and one panel per frame: its particles coloured by weight (dark
+purple light, yellow heavy; a frame's weights are its target γ, see
+:meth:`~seal_cli.frame_beliefs.FrameBeliefs.shown_weights`), its modes as 2-σ ellipses labelled
+with their weight, its best point as a white star. Every panel shows the occupancy map, the rooms
+(tinted, named), the places, the ground-truth objects (red stars) and the robot's path (blue)
+ending at its pose.
 """
 
 from __future__ import annotations
@@ -94,7 +96,7 @@ def _base(ax: Any, sefm: SeFM, trace: Trace) -> None:
 
 def _objects(ax: Any, sefm: SeFM, trace: Trace) -> None:
     _base(ax, sefm, trace)
-    for k, cls in enumerate(sefm.object_classes):
+    for k, cls in enumerate(sorted(sefm.object_classes)):
         row = sefm.objects.row(cls)
         X, W = sefm.objects.X[row], sefm.objects.W[row]
         size = 4 + 40 * W / max(W.max(), 1e-300)
@@ -114,7 +116,7 @@ def _frame(ax: Any, sefm: SeFM, trace: Trace, i: int) -> None:
     from matplotlib.patches import Ellipse
 
     _base(ax, sefm, trace)
-    X, W = sefm.frames.X[i], sefm.frames.W[i]
+    X, W = sefm.frames.X[i], sefm.frames.shown_weights(i)
     order = np.argsort(W)
     ax.scatter(X[order, 0], X[order, 1], c=W[order], cmap="viridis", s=10, linewidths=0, zorder=8,
                vmin=0, vmax=max(float(W.max()), 1e-300))

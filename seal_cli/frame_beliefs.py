@@ -154,6 +154,13 @@ class FrameBeliefs:
         """The effective sample size of the last reweighting (before it was resampled)."""
         return self.last_ess
 
+    def shown_weights(self, i: int) -> Array:
+        """Frame i's particles' weights for pictures: each particle's γ, normalised. After the resampling
+        every particle weighs 1/P; γ is the weight it would carry in a weighted set of the same belief."""
+        gamma = self.gamma[i]
+        total = gamma.sum()
+        return gamma / total if total > 0 else self.W[i]
+
     # -- one update ---------------------------------------------------------------------------
     def update(self, terms: Terms, kernel: KernelSums, sources: tuple[Array, Array],
                rng: np.random.Generator) -> None:

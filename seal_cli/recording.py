@@ -13,15 +13,17 @@ entity                             what
 ``robot/pose``                     where the robot is
 ``robot/path``                     where it has been (LineStrips2D)
 ``objects/<class>/particles``      each object's particles, coloured by weight
-``frames/<frame id>/particles``    each frame's particles, coloured by weight
+``frames/<frame id>/particles``    each frame's particles, coloured by weight (γ, see below)
 ``frames/<frame id>/modes``        each frame's modes, sized by spread, labelled room and weight
 ``observations/<class>``           the detections of the step
 ``metrics/frames/<id>/ess``        effective sample size (Scalars); also ``.../top_room`` mass
 ``metrics/objects/<class>/ess``    effective sample size of each object belief
 =================================  ==========================================================
 
-Log time and log ticks are off, so the same run gives the same content. Read a file back with
-``rr.chunk.RrdReader(path).stream().collect()``.
+A frame's particles are resampled at every update, so they all weigh 1/P; they are coloured by
+the weight each would carry if it had not been (its normalised target γ), which is what a
+weighted particle set of the same belief would show. Log time and log ticks are off, so the same
+run gives the same content. Read a file back with ``rr.chunk.RrdReader(path).stream().collect()``.
 """
 
 from __future__ import annotations
@@ -121,8 +123,8 @@ class RerunRecorder:
             s.log(f"objects/{cls}/particles", rr.Points2D(sefm.objects.X[row], radii=0.04, colors=weight_colours(W)))
             s.log(f"metrics/objects/{cls}/ess", rr.Scalars(float(sefm.objects.ess()[row])))
         for i, fid in enumerate(sefm.frame_ids):
-            W = sefm.frames.W[i]
-            s.log(f"frames/{fid}/particles", rr.Points2D(sefm.frames.X[i], radii=0.05, colors=weight_colours(W)))
+            s.log(f"frames/{fid}/particles", rr.Points2D(sefm.frames.X[i], radii=0.05,
+                                                         colors=weight_colours(sefm.frames.shown_weights(i))))
             summary = sefm.frame_summary(i)
             modes = summary.modes
             if modes:

@@ -84,7 +84,7 @@ def test_particles_are_logged_at_every_step_with_weight_colours(recorded: tuple[
     last = frames[-1]
     np.testing.assert_allclose(np.array(last["Points2D:positions"]), sefm.frames.X[1], atol=1e-5)
     colours = np.array(last["Points2D:colors"], dtype=np.uint32)
-    expected = weight_colours(sefm.frames.W[1]).astype(np.uint32)
+    expected = weight_colours(sefm.frames.shown_weights(1)).astype(np.uint32)
     packed = (expected[:, 0] << 24) | (expected[:, 1] << 16) | (expected[:, 2] << 8) | 255
     np.testing.assert_array_equal(colours, packed)
     assert len(logged["/objects/cup/particles"][0]["Points2D:positions"]) == 120
