@@ -483,3 +483,75 @@ def test_the_code_example_in_the_docs_runs(monkeypatch: pytest.MonkeyPatch) -> N
     assert (scope["inside"] == scope["exact"]).mean() > 0.99
     assert {d.cls for d in scope["detections"]} == {"spoon", "apple"}
     assert scope["scene"].free_area == pytest.approx(63 * 0.0625)
+
+
+# -- properties over random maps ---------------------------------------------------------------------------
+@st.composite
+def random_maps(draw: st.DrawFn) -> Map:
+    """A rectangle cut into rooms by vertical walls (some with doors), places, and priors on rooms and places."""
+    width, height = draw(st.floats(3, 12)), draw(st.floats(2, 8))
+    cuts = sorted(draw(st.lists(st.floats(0.15, 0.85), min_size=0, max_size=3, unique=True)))
+    xs = [0.0]
+    for x in [c * width for c in cuts]:
+        if x - xs[-1] > 0.3 and width - x > 0.3:  # rooms at least 0.3 m wide
+            xs.append(x)
+    xs.append(width)
+    res = 0.1
+    cols = int(np.ceil(width / res))
+    rows = int(np.ceil(height / res))
+    free = np.ones((rows, cols), dtype=bool)
+    occupied = np.zeros_like(free)
+    for x in xs[1:-1]:
+        col = min(int(x / res), cols - 1)
+        occupied[:, col] = True
+        if draw(st.booleans()):
+            occupied[rows // 3: rows // 3 + 8, col] = False  # a door
+    free &= ~occupied
+    grid = OccupancyGrid.from_masks(free, res, (0.0, 0.0), occupied)
+    rooms = tuple(Room.box(f"room_{i}", a, 0.0, b, height) for i, (a, b) in enumerate(zip(xs, xs[1:], strict=False)))
+    n_places = draw(st.integers(0, 3))
+    places = tuple(Place(f"thing_{i}", draw(st.sampled_from(["table", "shelf"])),
+                         (draw(st.floats(0.05, width - 0.05)), draw(st.floats(0.05, height - 0.05))),
+                         reach=draw(st.floats(0.2, 1.5))) for i in range(n_places))
+    targets = [r.name for r in rooms] + [p.name for p in places] + sorted({p.cls for p in places})
+    priors = {}
+    for cls in ("cup", "spoon"):
+        chosen = draw(st.lists(st.sampled_from(targets), max_size=3, unique=True))
+        raw = np.array(draw(st.lists(st.floats(0.0, 1.0), min_size=len(chosen), max_size=len(chosen))))
+        scale = draw(st.floats(0.0, 1.0)) / max(raw.sum(), 1e-9)
+        priors[cls] = {t: float(m * scale) for t, m in zip(chosen, raw, strict=True)}
+    return Map("random", (0.0, 0.0, width, height), rooms=rooms, places=places, priors=priors, grid=grid)
+
+
+@settings(max_examples=40, deadline=None)
+@given(random_maps(), st.sampled_from(["cup", "spoon", "unicorn"]), st.integers(0, 2**31 - 1))
+def test_priors_on_random_maps_are_normalised_and_match_their_masses(m: Map, cls: str, seed: int) -> None:
+    prior = m.prior(cls)
+    assert np.all(np.isfinite(prior.weights)) and np.all(prior.weights > 0)
+    assert prior.weights.sum() == pytest.approx(1.0)
+    assert prior_density(m, cls, m.free_centres).sum() * m.cell_area == pytest.approx(1.0)
+    masses = m.priors.get(cls, {})
+    areas = m.room_free_area()
+    if not m.places:  # room priors alone: each room's mass is exactly its share
+        rest = 1 - sum(masses.values())
+        for room in m.room_names:
+            expected = (1 - FLOOR) * (masses.get(room, 0.0) + rest * areas[room] / m.free_area) \
+                + FLOOR * areas[room] / m.free_area
+            assert prior.room_masses()[room] == pytest.approx(expected, abs=1e-9)
+    points = prior.sample(4000, np.random.default_rng(seed))
+    assert m.is_free(points).all()
+    sampled = np.bincount(m.free_cell_room[m.free_index(points)] + 1, minlength=len(m.rooms) + 1) / len(points)
+    exact = np.array([prior.room_masses()[OUTSIDE]] + [prior.room_masses()[r] for r in m.room_names])
+    assert np.abs(sampled - exact).max() < 0.04
+
+
+def test_a_rotated_grid_is_read_in_the_world_frame() -> None:
+    cells = np.zeros((2, 4), dtype=np.int8)  # 4 cells along the grid's x, 2 along its y
+    cells[0, 3] = OCCUPIED
+    grid = OccupancyGrid(cells, 1.0, (10.0, 0.0, np.pi / 2))  # the grid's x axis points along world +y
+    m = Map("turned", grid=grid)
+    assert m.bounds == pytest.approx((8.0, 0.0, 10.0, 4.0))
+    assert m.is_occupied([[9.5, 3.5]]).all() and m.is_free([[9.5, 0.5], [8.5, 3.5]]).all()
+    points = m.sample_free(np.random.default_rng(0), 500)
+    assert m.is_free(points).all() and m.in_bounds(points).all()
+    assert m.free_area == pytest.approx(7.0)
