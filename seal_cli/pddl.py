@@ -72,6 +72,7 @@ class Kinds:
     parent: dict[str, str] = field(default_factory=dict)
     objects: dict[str, str] = field(default_factory=dict)
     """Object → a category it belongs to (its kind is that category's)."""
+    placeholders: set[str] = field(default_factory=set)
 
     def find(self, category: str) -> str:
         while self.parent.setdefault(category, category) != category:
@@ -138,12 +139,27 @@ def _filling(binding: Binding) -> list[tuple[str | None, str]]:
     return [(values.get(e.role), class_key(e.type)) for e in binding.frame.elements]
 
 
+def _taken_from(frame: Frame, fact: Fact) -> list[str]:
+    """The roles of a where-from fact that only deletions name (Pick's source)."""
+    kept = {a for f in frame.postconditions if not f.negated for a in f.args}
+    return [a for a in fact.args if a not in kept]
+
+
 def _dropped(binding: Binding, kinds: Kinds) -> list[Fact]:
     """The preconditions an unfilled element dropped, about the placeholders instead."""
     values = binding.elements
     stand_in = {role: placeholder(kinds.kind(category)) for role, category in _unfilled(binding)}
     return [fact.bind({**values, **stand_in}) for fact in binding.frame.preconditions
             if any(a in stand_in for a in fact.args) and not fact.negated]
+
+
+def where_from(frame: Frame) -> list[Fact]:
+    """Deletions naming an element that no positive postcondition names (Pick's ``in(theme, source)``,
+    Close's ``open(theme)``): the frame takes the thing as it is, so in PDDL the fact must hold first.
+    (seal's planner grounds such an element from the state, which is the same rule.)"""
+    kept = {a for f in frame.postconditions if not f.negated for a in f.args}
+    return [f.positive for f in frame.postconditions
+            if f.negated and any(a not in kept for a in f.args) and f.positive not in frame.preconditions]
 
 
 def _objects(plan: Plan) -> list[str]:
@@ -172,11 +188,16 @@ class _Problem:
         for binding in plan.bindings:
             for _, category in _unfilled(binding):
                 holders.setdefault(category, "")
+        for frame in library:
+            for fact in where_from(frame):
+                for role in _taken_from(frame, fact):
+                    holders.setdefault(class_key(frame.element(role).type), "")
         kinds = Kinds.of_plan(library, plan, objects)
         for category in holders:
             name = placeholder(kinds.kind(category))
             if name not in kinds.objects:
                 kinds.objects[name] = category
+                kinds.placeholders.add(name)
                 objects.append(name)
         problem = cls(library, plan, kinds, objects, [])
         problem.init = problem._init()
@@ -191,12 +212,29 @@ class _Problem:
             facts.update(dict.fromkeys(_dropped(binding, self.kinds)))
             facts.update(dict.fromkeys(Fact(test_name(class_key(f.predicate)), f.args)
                                        for f in binding.preconditions if self._is_test(f)))
+        for frame in self.library:
+            for fact in where_from(frame):
+                facts.update(dict.fromkeys(self._somewhere(frame, fact, facts)))
         for category in self._tests():
             for obj in self.objects:
                 if self.kinds.find(self.kinds.objects[obj]) == self.kinds.find(category) and \
                         self._belongs(obj, category):
                     facts.setdefault(Fact(test_name(category), (obj,)), None)
         return list(facts)
+
+    def _somewhere(self, frame: Frame, fact: Fact, known: Iterable[Fact]) -> list[Fact]:
+        """For a thing nobody says where it is, ``in(thing, unspecified_location)``: Pick may take it
+        from the unspecified place, as seal's Pick with no source does."""
+        taken = _taken_from(frame, fact)
+        given = [a for a in fact.args if a not in taken]
+        if not taken or len(given) != 1:
+            return []
+        position, role = fact.args.index(given[0]), given[0]
+        kind = self.kinds.kind(class_key(frame.element(role).type))
+        placed = {f.args[position] for f in known if f.predicate == fact.predicate and len(f.args) == len(fact.args)}
+        stand_in = {a: placeholder(self.kinds.kind(class_key(frame.element(a).type))) for a in taken}
+        return [fact.bind({**stand_in, role: obj}) for obj in self.objects
+                if obj not in placed and obj not in self.kinds.placeholders and self.kinds.of(obj) == kind]
 
     def _belongs(self, obj: str, category: str) -> bool:
         """Known to belong, or filling an element of that category in seal's plan (an unknown class
@@ -249,7 +287,7 @@ def _action(frame: Frame, problem: _Problem) -> str:
     kinds, taxonomy = problem.kinds, problem.library.taxonomy
     params = " ".join(f"?{e.role} - {type_name(kinds.kind(class_key(e.type)))}" for e in frame.elements)
     pre = [f"({test_name(class_key(e.type))} ?{e.role})" for e in frame.elements if kinds.narrower(class_key(e.type))]
-    pre += [_atom(f, (f"?{a}" for a in f.args), taxonomy) for f in frame.preconditions]
+    pre += [_atom(f, (f"?{a}" for a in f.args), taxonomy) for f in (*frame.preconditions, *where_from(frame))]
     effect = [_atom(f, (f"?{a}" for a in f.args), taxonomy) for f in frame.postconditions]
     return (f"  (:action {action_name(frame)}\n"
             f"    :parameters ({params})\n"
@@ -271,7 +309,9 @@ def _check_names(problem: _Problem) -> None:
     for what, name in names:
         other = used.setdefault(name.lower(), what)
         if other != what:
-            raise SealError(f"cannot export PDDL: {name!r} would name both a {other} and a {what}")
+            raise SealError(f"cannot export PDDL: {name!r} would name both a {other} and an {what}"
+                            if what[0] in "aeiou" else
+                            f"cannot export PDDL: {name!r} would name both a {other} and a {what}")
 
 
 def domain_pddl(library: Library, plan: Plan, *, name: str = "seal") -> str:
