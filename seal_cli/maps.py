@@ -444,8 +444,29 @@ class Map:
         return self.grid.is_occupied(points)
 
     def room_index(self, points: ArrayLike) -> NDArray[np.intp]:
-        """The index into :attr:`rooms` of the room holding each point; -1 outside every room."""
+        """The index into :attr:`rooms` of the room holding each point; -1 outside every room.
+
+        Exact (the rooms' polygons decide). Points in grid cells that no room edge comes near are
+        answered from a cached raster of the rooms; the rest are tested against the polygons.
+        """
         p = as_points(points)
+        if len(p) < 2000 and "_room_raster" not in self.__dict__:
+            return self._room_index_exact(p)  # a few points: not worth building the raster
+        raster = self._room_raster
+        if raster is None:
+            return self._room_index_exact(p)
+        labels, near_edge = raster
+        rows, cols, inside = self.grid.cell_index(p)
+        out = np.full(len(p), -1, dtype=np.intp)
+        out[inside] = labels[rows[inside], cols[inside]]
+        exact = ~inside
+        exact[inside] = near_edge[rows[inside], cols[inside]]
+        if exact.any():
+            out[exact] = self._room_index_exact(p[exact])
+        return out
+
+    def _room_index_exact(self, p: NDArray[np.float64]) -> NDArray[np.intp]:
+        """Room of each point by the polygons alone, first room first."""
         out = np.full(len(p), -1, dtype=np.intp)
         for index, room in enumerate(self.rooms):
             todo = out < 0
@@ -454,6 +475,31 @@ class Map:
             hit = room.contains(p[todo])
             out[np.flatnonzero(todo)[hit]] = index
         return out
+
+    @cached_property
+    def _room_raster(self) -> tuple[NDArray[np.int16], NDArray[np.bool_]] | None:
+        """Per grid cell: the room of its centre, and whether a room edge passes within one cell of it
+        (there the cell's points may lie in different rooms). None for no rooms or a huge grid."""
+        h, w = self.grid.shape
+        if not self.rooms or h * w > MAX_IMPLICIT_CELLS:
+            return None
+        from .geometry import segment_cells
+
+        near = np.zeros((h, w), dtype=bool)
+        for room in self.rooms:
+            v = room.vertices
+            for a, b in zip(v, np.roll(v, -1, axis=0), strict=True):
+                rows, cols, _, valid = segment_cells(self.grid, a, b[None, :])
+                keep = valid & (rows >= 0) & (rows < h) & (cols >= 0) & (cols < w)
+                near[rows[keep], cols[keep]] = True
+        grown = near.copy()  # one cell of slack on every side: no rounding can put a point astray
+        grown[1:, :] |= near[:-1, :]
+        grown[:-1, :] |= near[1:, :]
+        grown[:, 1:] |= near[:, :-1]
+        grown[:, :-1] |= near[:, 1:]
+        rr, cc = np.mgrid[0:h, 0:w]
+        labels = self._room_index_exact(self.grid.cell_centres(rr.ravel(), cc.ravel())).reshape(h, w)
+        return labels.astype(np.int16), grown
 
     def room_of(self, points: ArrayLike) -> list[str]:
         """The name of the room of each point (:data:`OUTSIDE` for none)."""

@@ -555,3 +555,31 @@ def test_a_rotated_grid_is_read_in_the_world_frame() -> None:
     points = m.sample_free(np.random.default_rng(0), 500)
     assert m.is_free(points).all() and m.in_bounds(points).all()
     assert m.free_area == pytest.approx(7.0)
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.lists(st.tuples(st.floats(-4, 4), st.floats(-3, 3), st.floats(0.3, 3), st.floats(0.3, 3),
+                          st.integers(4, 9), st.integers(0, 2**31 - 1)), min_size=1, max_size=4),
+       st.sampled_from([0.05, 0.1, 0.25, 0.5]), st.integers(0, 2**31 - 1))
+def test_room_index_is_exact(specs: list, resolution: float, seed: int) -> None:
+    rooms = []
+    for i, (cx, cy, rx, ry, n, s) in enumerate(specs):
+        r = np.random.default_rng(s)  # a star-shaped room: evenly spread angles, jittered, random radii
+        angles = (np.arange(n) + r.uniform(-0.3, 0.3, n)) * 2 * np.pi / n
+        radius = r.uniform(0.4, 1.0, n)
+        vertices = np.column_stack([cx + rx * radius * np.cos(angles), cy + ry * radius * np.sin(angles)])
+        if i % 2:  # every other room drawn on grid lines, where rounding would bite
+            vertices = np.round(vertices / resolution) * resolution
+        rooms.append(Room(f"r{i}", tuple((float(x), float(y)) for x, y in vertices)))
+    try:
+        m = Map("rooms", (-8.0, -7.0, 8.0, 7.0), rooms=tuple(rooms), grid=OccupancyGrid.filled((-8, -7, 8, 7),
+                                                                                                resolution))
+    except SealError:
+        return  # a room that rounding to the grid made degenerate
+    rng = np.random.default_rng(seed)
+    vertices = np.vstack([r.vertices for r in m.rooms])
+    on_edges = np.vstack([a + rng.uniform(0, 1, (20, 1)) * (b - a) for r in m.rooms
+                          for a, b in zip(r.vertices, np.roll(r.vertices, -1, axis=0), strict=True)])
+    lattice = np.round(rng.uniform(-8, 8, (3000, 2)) / resolution) * resolution
+    points = np.vstack([rng.uniform(-9, 9, (5000, 2)), vertices, on_edges, lattice])
+    assert np.array_equal(m.room_index(points), m._room_index_exact(points))
