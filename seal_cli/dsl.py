@@ -16,7 +16,7 @@ from .errors import SealError, Where
 from .frames import Action, Element, Fact, Frame, LexicalUnit
 from .library import Contents
 from .resources import grammar_path
-from .taxonomy import Category, Taxonomy
+from .taxonomy import Category, Synonyms, Taxonomy
 
 __all__ = ["dump", "parser", "read"]
 
@@ -134,6 +134,11 @@ class _Builder:
         category = Category(str(name), listed, self.where(tree))
         self.contents.taxonomy = self.contents.taxonomy.merged(Taxonomy((category,)))
 
+    def synonyms(self, tree: Tree) -> None:
+        name, members = tree.children
+        entry = Synonyms(str(name), tuple(str(m) for m in members.children), self.where(tree))
+        self.contents.taxonomy = self.contents.taxonomy.merged(Taxonomy(synonyms=(entry,)))
+
     def world(self, tree: Tree) -> None:
         self.contents.taxonomy = self.contents.taxonomy.merged(
             Taxonomy((), tuple(str(w) for w in tree.children)))
@@ -184,4 +189,6 @@ def dump(frames: tuple[Frame, ...] | list[Frame], taxonomy: Taxonomy | None = No
             parts.append(f"category {c.name} = {'*' if c.members is None else ', '.join(c.members)}\n")
         if taxonomy.world:
             parts.append(f"world {', '.join(taxonomy.world)}\n")
+        for entry in taxonomy.synonyms:
+            parts.append(f"synonyms {entry.name} = {', '.join(entry.names)}\n")
     return "\n".join(parts)

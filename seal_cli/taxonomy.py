@@ -6,6 +6,10 @@ members (``thing: ~``) is *open*: every class belongs to it.
 
 Class names compare case-insensitively with ``_``, ``-``, spaces and CamelCase humps equal:
 ``SinkBasin``, ``sink_basin`` and ``sink basin`` are one class (:func:`class_key`).
+
+A library may also say what else a class is called (``fridge: [refrigerator, icebox]``): each
+entry is a set of English names for one kind of thing (:class:`Synonyms`), merged into every
+vocabulary that grounds commands (a class called by any name of a set is called by all of them).
 """
 
 from __future__ import annotations
@@ -17,8 +21,9 @@ from functools import cached_property, lru_cache
 
 from .errors import SealError, Where
 
-__all__ = ["Category", "Taxonomy", "class_key", "class_words"]
+__all__ = ["Category", "Synonyms", "Taxonomy", "class_key", "class_words"]
 
+_NAME = re.compile(r"^[a-z0-9]+(?:_[a-z0-9]+)*$")
 _HUMP = re.compile(r"(?<=[a-z0-9])(?=[A-Z])|(?<=[A-Z])(?=[A-Z][a-z])")
 
 
@@ -55,12 +60,62 @@ class Category:
 
 
 @dataclass(frozen=True)
+class Synonyms:
+    """Names of one kind of thing: the class ``name`` is also called each of ``names``
+    (``fridge``: refrigerator, icebox). Names compare like class names (:func:`class_key`)."""
+
+    name: str
+    names: tuple[str, ...]
+    where: Where | None = field(default=None, compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        if not class_key(self.name):
+            raise SealError("a synonyms entry needs a class name", self.where)
+        name = class_key(self.name)
+        names = tuple(class_key(n) for n in self.names)
+        if not names:
+            raise SealError(f"synonyms of {name} list no other name", self.where)
+        if any(not n for n in names):
+            raise SealError(f"synonyms of {name} include an empty name", self.where)
+        odd = [n for n in (name, *names) if not _NAME.match(n)]
+        if odd:
+            raise SealError(f"synonyms of {name}: {odd[0]!r} is not a name (letters, digits and spaces only)",
+                            self.where)
+        if name in names:
+            raise SealError(f"{name} is listed among its own synonyms", self.where)
+        repeated = sorted({n for n in names if names.count(n) > 1})
+        if repeated:
+            raise SealError(f"synonyms of {name} repeat {', '.join(repeated)}", self.where)
+        object.__setattr__(self, "name", name)
+        object.__setattr__(self, "names", names)
+
+    @property
+    def all_names(self) -> tuple[str, ...]:
+        return (self.name, *self.names)
+
+
+@dataclass(frozen=True)
 class Taxonomy:
     """The categories of a library, with membership that follows nested categories."""
 
     categories: tuple[Category, ...] = ()
     world: tuple[str, ...] = ()
     """Predicates the world or the robot's state may make true without any frame (``hand_empty``)."""
+    synonyms: tuple[Synonyms, ...] = ()
+    """Other English names of classes (``fridge``: refrigerator), in the order declared."""
+
+    @cached_property
+    def names(self) -> Mapping[str, tuple[str, ...]]:
+        """Each name (class key) of a synonyms entry → the other names of its entry; entries
+        with the same class name are one set. (Validation refuses a name in two sets.)"""
+        sets: dict[str, dict[str, None]] = {}
+        for entry in self.synonyms:
+            sets.setdefault(entry.name, {}).update(dict.fromkeys(entry.all_names))
+        names: dict[str, tuple[str, ...]] = {}
+        for members in sets.values():
+            for name in members:
+                names.setdefault(name, tuple(n for n in members if n != name))
+        return names
 
     @cached_property
     def by_name(self) -> Mapping[str, Category]:
@@ -128,7 +183,8 @@ class Taxonomy:
                 merged[category.name] = Category(category.name, members, mine.where)
             else:
                 merged[category.name] = Category(category.name, None, mine.where)
-        return Taxonomy(tuple(merged.values()), tuple(dict.fromkeys(self.world + other.world)))
+        return Taxonomy(tuple(merged.values()), tuple(dict.fromkeys(self.world + other.world)),
+                        self.synonyms + other.synonyms)
 
     @classmethod
     def of(cls, categories: Mapping[str, Iterable[str] | None], world: Iterable[str] = ()) -> Taxonomy:

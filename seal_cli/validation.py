@@ -10,7 +10,8 @@ problem rather than stopping at the first:
 - a predicate used with different numbers of arguments;
 - a precondition that no frame's postcondition achieves and that is not a world fact;
 - preconditions that can only be achieved in a cycle (A needs what only B gives, B needs what only A gives);
-- two frames claiming the same lexical unit with the same element pattern (the parser could not choose).
+- two frames claiming the same lexical unit with the same element pattern (the parser could not choose);
+- a synonym claimed by two classes, or naming a category (grounding could not choose).
 """
 
 from __future__ import annotations
@@ -25,7 +26,7 @@ import yaml
 from .actions import PRIMITIVES
 from .errors import SealError, Where
 from .frames import Fact, Frame
-from .taxonomy import Taxonomy, class_key
+from .taxonomy import Synonyms, Taxonomy, class_key
 
 __all__ = ["Report", "check_library", "is_map_file", "validate_paths"]
 
@@ -33,7 +34,8 @@ __all__ = ["Report", "check_library", "is_map_file", "validate_paths"]
 def check_library(frames: Sequence[Frame], taxonomy: Taxonomy) -> list[SealError]:
     """Every cross-frame problem in these frames, in source order."""
     checks = (_duplicates(frames), _types(frames, taxonomy), _actions(frames), _arities(frames),
-              _unachieved(frames, taxonomy), _cycles(frames, taxonomy), _unit_clashes(frames))
+              _unachieved(frames, taxonomy), _cycles(frames, taxonomy), _unit_clashes(frames),
+              _synonym_clashes(taxonomy))
     return [problem for check in checks for problem in check]
 
 
@@ -178,6 +180,21 @@ def _unit_clashes(frames: Sequence[Frame]) -> Iterator[SealError]:
                                 "the parser could not tell them apart", unit.where)
 
 
+def _synonym_clashes(taxonomy: Taxonomy) -> Iterator[SealError]:
+    """A name is one class's: two entries of different classes may not share one, and a category
+    (``furniture``) is no other name of a class."""
+    owner: dict[str, Synonyms] = {}
+    for entry in taxonomy.synonyms:
+        for name in entry.all_names:
+            other = owner.setdefault(name, entry)
+            if other.name != entry.name:
+                where = f" (at {other.where})" if other.where and other.where.line else ""
+                yield SealError(f"{name!r} is a name of both {other.name}{where} and {entry.name}; "
+                                "a name may denote one class only", entry.where)
+            elif name in taxonomy.by_name and name != entry.name:
+                yield SealError(f"{name!r} is a category, not another name of {entry.name}", entry.where)
+
+
 # -- checking files as a user hands them over ---------------------------------------------------
 MAP_KEYS = frozenset({"image", "resolution", "origin", "rooms", "bounds", "places", "priors", "objects", "robot",
                       "sensor", "negate", "occupied_thresh", "free_thresh"})
@@ -194,7 +211,7 @@ def is_map_file(path: Path) -> bool:
     if not isinstance(node, yaml.MappingNode):
         return False
     keys = {k.value for k, _ in node.value if isinstance(k, yaml.ScalarNode)}
-    return bool(keys & MAP_KEYS) and not keys & {"frame", "frames", "categories", "world"}
+    return bool(keys & MAP_KEYS) and not keys & {"frame", "frames", "categories", "world", "synonyms"}
 
 
 @dataclass

@@ -2,7 +2,8 @@
 
 A document is either one frame (a mapping with ``frame:``) or a mapping with any of
 ``frames:`` (a list of frames), ``categories:`` (category → members, ``~`` for an open
-category) and ``world:`` (predicates the world may make true without a frame). A file may
+category), ``world:`` (predicates the world may make true without a frame) and ``synonyms:``
+(class → its other English names, ``fridge: [refrigerator, icebox]``). A file may
 hold several documents separated by ``---``::
 
     frame: Stir
@@ -29,14 +30,14 @@ import yaml
 from .errors import SealError, Where
 from .frames import Action, Element, Fact, Frame, LexicalUnit
 from .library import Contents
-from .taxonomy import Category, Taxonomy
+from .taxonomy import Category, Synonyms, Taxonomy
 
 __all__ = ["FRAME_KEYS", "dump", "read"]
 
 FRAME_KEYS = ("frame", "description", "framenet", "lexical_units", "elements", "preconditions", "actions",
               "postconditions")
 ELEMENT_KEYS = ("type", "default")
-TOP_KEYS = ("frames", "categories", "world")
+TOP_KEYS = ("frames", "categories", "world", "synonyms")
 
 T = TypeVar("T")
 
@@ -123,6 +124,8 @@ class _Reader:
                     self.frame(item)
             elif key == "categories":
                 self.categories(value)
+            elif key == "synonyms":
+                self.synonyms(value)
             elif key == "world":
                 world = tuple(w for w in (self.string(n, "a world predicate") for n in self.items(value, "world"))
                               if w)
@@ -140,6 +143,16 @@ class _Reader:
             if category:
                 found.append(category)
         self.contents.taxonomy = self.contents.taxonomy.merged(Taxonomy(tuple(found)))
+
+    def synonyms(self, node: yaml.Node) -> None:
+        found = []
+        for name, key_node, value in self.pairs(node, "synonyms"):
+            names = tuple(n for n in (self.string(item, f"a synonym of {name}")
+                                      for item in self.items(value, f"synonyms of {name}")) if n)
+            entry = self.build(functools.partial(Synonyms, name, names, self.where(key_node)), key_node)
+            if entry:
+                found.append(entry)
+        self.contents.taxonomy = self.contents.taxonomy.merged(Taxonomy(synonyms=tuple(found)))
 
     def frame(self, node: yaml.Node) -> None:
         fields: dict[str, object] = {}
@@ -289,7 +302,7 @@ def dump_frame(frame: Frame) -> str:
 def dump(frames: tuple[Frame, ...] | list[Frame], taxonomy: Taxonomy | None = None) -> str:
     """Frames (and categories) as a multi-document YAML frame file."""
     docs = [dump_frame(f) for f in frames]
-    if taxonomy and (taxonomy.categories or taxonomy.world):
+    if taxonomy and (taxonomy.categories or taxonomy.world or taxonomy.synonyms):
         lines = []
         if taxonomy.categories:
             lines.append("categories:")
@@ -297,5 +310,8 @@ def dump(frames: tuple[Frame, ...] | list[Frame], taxonomy: Taxonomy | None = No
                 lines.append(f"  {c.name}: {'~' if c.members is None else _flow(c.members)}")
         if taxonomy.world:
             lines.append(f"world: {_flow(taxonomy.world)}")
+        if taxonomy.synonyms:
+            lines.append("synonyms:")
+            lines.extend(f"  {s.name}: {_flow(s.names)}" for s in taxonomy.synonyms)
         docs.append("\n".join(lines) + "\n")
     return "---\n".join(docs)

@@ -115,3 +115,16 @@ def test_open_categories_and_world_facts_in_both_forms() -> None:
     yaml_text = "categories:\n  thing: ~\n  utensil: [spoon, Fork]\nworld: [hand_empty]\n"
     dsl_text = "category thing = *\ncategory utensil = spoon, fork\nworld hand_empty\n"
     assert yamlformat.read(yaml_text).taxonomy == dsl.read(dsl_text).taxonomy
+
+
+def test_synonyms_in_both_forms() -> None:
+    yaml_text = "synonyms:\n  Fridge: [refrigerator, ice box]\n  sofa: couch\n"
+    dsl_text = "synonyms fridge = refrigerator, ice_box\nsynonyms sofa = couch\n"
+    from_yaml, from_dsl = yamlformat.read(yaml_text), dsl.read(dsl_text)
+    assert from_yaml.problems == [] and from_dsl.problems == []
+    assert from_yaml.taxonomy == from_dsl.taxonomy
+    assert from_yaml.taxonomy.names["ice_box"] == (
+        "fridge", "refrigerator")
+    for write, read in ((yamlformat.dump, yamlformat.read), (dsl.dump, dsl.read)):
+        again = read(write([], from_yaml.taxonomy), "again")
+        assert again.problems == [] and again.taxonomy == from_yaml.taxonomy

@@ -48,3 +48,27 @@ def test_merging_takes_the_union_of_members() -> None:
 def test_nested_cycles_do_not_loop() -> None:
     looped = Taxonomy.of({"a": ["b", "x"], "b": ["a", "y"]})
     assert looped.members("a") == {"x", "y"}
+
+
+def test_synonyms_are_sets_of_names_merged_across_entries() -> None:
+    from seal_cli.taxonomy import Synonyms
+
+    taxonomy = Taxonomy(synonyms=(Synonyms("Fridge", ("refrigerator", "ice box")),)).merged(
+        Taxonomy(synonyms=(Synonyms("fridge", ("icebox",)), Synonyms("sofa", ("couch",)))))
+    assert taxonomy.names["refrigerator"] == ("fridge", "ice_box", "icebox")    # any name gives the others
+    assert taxonomy.names["fridge"] == ("refrigerator", "ice_box", "icebox")
+    assert taxonomy.names["couch"] == ("sofa",)
+    assert "chair" not in taxonomy.names
+
+
+def test_bad_synonym_entries_are_refused() -> None:
+    import pytest
+
+    from seal_cli.errors import SealError
+    from seal_cli.taxonomy import Synonyms
+
+    for name, names, words in [("rug", (), "no other name"), ("mat", ("Mat",), "its own synonyms"),
+                               ("mat", ("rug", "rug"), "repeat rug"), ("", ("x",), "needs a class name"),
+                               ("knife", ("chef's knife",), "is not a name")]:
+        with pytest.raises(SealError, match=words):
+            Synonyms(name, names)
