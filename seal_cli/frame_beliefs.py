@@ -231,12 +231,9 @@ class FrameBeliefs:
         which = np.concatenate([terms.meas_source, terms.ctx_source])
         rows = np.concatenate([terms.meas_frame, terms.ctx_frame])
         K = kernel.sample(which, X, rows) if len(which) else np.zeros((0, Q))
-        weights = np.concatenate([terms.meas_weight, terms.ctx_weight])[:, None] * K
-        measurement, context = np.zeros((F, Q)), np.zeros((F, Q))
+        weighted = np.concatenate([terms.meas_weight, terms.ctx_weight])[:, None] * K
         m = len(terms.meas_source)
-        np.add.at(measurement, terms.meas_frame, weights[:m])
-        np.add.at(context, terms.ctx_frame, weights[m:])
-        return measurement, context
+        return _per_frame(weighted[:m], terms.meas_frame, F), _per_frame(weighted[m:], terms.ctx_frame, F)
 
     def gamma_of(self, terms: Terms, measurement: Array, context: Array) -> Array:
         """γ from the two potentials (before restricting to free space)."""
@@ -284,3 +281,12 @@ class FrameBeliefs:
         term, particle = np.divmod(pick, P)
         points = positions[source_of[term], particle]
         return np.asarray(points + rng.normal(0.0, self.sigma, points.shape))
+
+
+def _per_frame(values: Array, frame: Index, frames: int) -> Array:
+    """Rows of ``values`` summed by frame (``frame`` is sorted: terms are listed frame by frame)."""
+    out = np.zeros((frames, values.shape[1]))
+    if len(frame):
+        starts = np.flatnonzero(np.r_[True, frame[1:] != frame[:-1]])
+        out[frame[starts]] = np.add.reduceat(values, starts, axis=0)
+    return out

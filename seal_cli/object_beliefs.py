@@ -171,11 +171,11 @@ class ObjectBeliefs:
         total = raw.sum(axis=1)
         W = normalise(raw)
         low = ess(W) < self.model.resample_below * self.particles
-        reweighted = []
-        for k, row in enumerate(rows):
-            changed = np.flatnonzero(L[k] != 1.0)
-            if int(row) not in moved and not low[k] and len(changed):
-                reweighted.append((int(row), changed, self.W[row, changed] * (L[k, changed] - 1.0), float(total[k])))
+        keep = ~low & ~np.isin(rows, list(moved))
+        k_of, index = np.nonzero((L != 1.0) & keep[:, None])
+        runs = np.split(index, np.searchsorted(k_of, np.arange(1, len(rows))))
+        reweighted = [(int(rows[k]), changed, self.W[rows[k], changed] * (L[k, changed] - 1.0), float(total[k]))
+                      for k, changed in enumerate(runs) if len(changed)]
         self.W[rows] = W
         if low.any():
             self._resample(rows[low], rng)
