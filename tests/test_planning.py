@@ -494,3 +494,16 @@ def test_cli_refusals_exit_1_without_a_traceback(args: list[str], message: str) 
 def test_cli_usage_errors_exit_2() -> None:
     assert runner.invoke(app, ["plan"]).exit_code == 2
     assert runner.invoke(app, ["plan", "--max-nodes", "0", "stir the cup"]).exit_code == 2
+
+
+def test_bench_plan_times_each_command(tmp_path: Path) -> None:
+    commands = tmp_path / "commands.txt"
+    commands.write_text("stir the cup\n\nslice the apple and put it in the fridge\n", encoding="utf-8")
+    result = runner.invoke(app, ["bench", "plan", "--file", str(commands), "--repeat", "1", "--json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert [(r["text"], r["steps"], r["commanded"]) for r in data["commands"]] == [
+        ("stir the cup", 2, 1), ("slice the apple and put it in the fridge", 6, 2)]
+    assert all(0 < r["plan_ms"] <= r["ms"] and r["nodes"] >= r["steps"] for r in data["commands"])
+    assert data["slowest"] in data["commands"]
+    assert runner.invoke(app, ["bench", "plan", "--file", str(tmp_path / "none.txt")]).exit_code == 1
