@@ -507,3 +507,13 @@ def test_bench_plan_times_each_command(tmp_path: Path) -> None:
     assert all(0 < r["plan_ms"] <= r["ms"] and r["nodes"] >= r["steps"] for r in data["commands"])
     assert data["slowest"] in data["commands"]
     assert runner.invoke(app, ["bench", "plan", "--file", str(tmp_path / "none.txt")]).exit_code == 1
+
+
+def test_the_docs_code_example_runs() -> None:
+    """docs/planning.md's "Using it from code" is run as written."""
+    docs = (Path(__file__).parents[1] / "docs" / "planning.md").read_text(encoding="utf-8")
+    blocks = [b.split("```")[0] for b in docs.split("```python\n")[1:]]
+    runnable = [b for b in blocks if "unified_planning" not in b]
+    assert runnable
+    for block in runnable:
+        exec(compile(block, "docs/planning.md", "exec"), {})
