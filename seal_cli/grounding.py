@@ -3,15 +3,25 @@
 A :class:`Vocabulary` is a list of classes (``AlarmClock``, ``tomato soup``), each with optional
 synonyms. A phrase is matched on its words' lemmas (so plurals match), best first:
 
-1. an exact name: the phrase's last words spell a class or a synonym ("the red *alarm clock*"),
-   or the words after "of" do ("a roll *of toilet paper*");
+1. an exact name: the phrase's last words spell a class's own name, or else a synonym ("the red
+   *alarm clock*"), also written together ("the *lap top*" → ``Laptop``, "a *bath tub*" →
+   ``Bathtub``); or the words after "of" do ("a roll *of toilet paper*");
 2. the head word: the phrase's head is the head of a class name ("clock" → ``AlarmClock``),
-   helped by every other word they share ("a bottle of *wine*" → ``WineBottle``);
-3. any word: the head is another word of a class name ("counter" → ``CounterTop``), then a
-   modifier is ("an *apple* slice" → ``Apple``).
+   helped by every other word they share ("a bottle of *wine*" → ``WineBottle``), then another
+   word of a class name ("counter" → ``CounterTop``);
+3. the words after "of" ("the middle *of the table*").
 
-Ties go to the class listed first, so list the usual class first. No match gives None: the
-vocabulary of a building is open and an unknown noun is not an error.
+A phrase whose head names a portion, region or group of something (``PORTIONS``: "an apple
+*slice*", "the table *top*", "a *set* of keys") denotes what its modifiers or its "of" phrase
+name, when they name a class. A modifier of any
+other head names something else: a "chair cushion" is a cushion, not a chair, and no class when
+the vocabulary calls nothing a cushion.
+
+Within a step, the class sharing the most words with the phrase wins; a class's own name beats
+another class's synonym; a remaining tie (``DiningTable``, ``SideTable``, ``CoffeeTable`` for
+"table") goes to the class listed first, so a vocabulary lists the usual class first, and a map's
+vocabulary lists only the tables the building has. No match gives None: the vocabulary of a
+building is open and an unknown noun is not an error.
 
 Vocabulary files are YAML lists: ``- cup`` or ``- {class: Fridge, synonyms: [refrigerator]}``
 (a mapping ``classes: [...]`` is read too).
@@ -27,12 +37,21 @@ from typing import TYPE_CHECKING, Any
 
 from .errors import SealError, Where
 from .lexicon import noun_lemma
-from .taxonomy import class_words
+from .taxonomy import class_key, class_words
 
 if TYPE_CHECKING:
     from .language import NP
 
-__all__ = ["Vocabulary", "load_vocabulary", "vocabulary_of_map"]
+__all__ = ["PORTIONS", "Vocabulary", "load_vocabulary", "vocabulary_of_map"]
+
+
+PORTIONS = frozenset(" ".join((
+    "slice piece bit chunk half part portion wedge segment sliver strip lump cube quarter crumb",
+    "top side edge corner middle centre center end bottom surface back front",
+    "set bunch pair pack group collection stack pile handful")).split())
+"""English nouns that name a portion, a region or a group of something else ("an apple *slice*",
+"the table *top*", "a *set* of keys"): with one of these as its head, a phrase denotes what its
+modifiers or its "of" phrase name."""
 
 
 def _lemmas(words: Iterable[str]) -> tuple[str, ...]:
@@ -62,30 +81,47 @@ class Vocabulary:
 
     @cached_property
     def _names(self) -> tuple[tuple[int, tuple[str, ...]], ...]:
-        """(class index, lemmatised words) for every name of every class."""
+        """(class index, lemmatised words) for every name of every class: the classes' own names
+        first, then their synonyms (so that an own name wins over another class's synonym)."""
         names = []
-        for index, (name, synonyms) in enumerate(zip(self.classes, self.synonyms, strict=True)):
-            for spelled in (name, *synonyms):
-                words = _lemmas(class_words(spelled))
-                if words:
-                    names.append((index, words))
-        return tuple(names)
+        for index, name in enumerate(self.classes):
+            names.append((index, _lemmas(class_words(name))))
+        for index, synonyms in enumerate(self.synonyms):
+            names.extend((index, _lemmas(class_words(spelled))) for spelled in synonyms)
+        return tuple((index, words) for index, words in names if words)
+
+    @cached_property
+    def _own(self) -> frozenset[tuple[str, ...]]:
+        """The classes' own names (lemmatised words), which win ties over synonyms."""
+        return frozenset(_lemmas(class_words(name)) for name in self.classes)
 
     @cached_property
     def _exact(self) -> dict[tuple[str, ...], int]:
         exact: dict[tuple[str, ...], int] = {}
         for index, words in self._names:
             exact.setdefault(words, index)
+        for index, words in self._names:
             exact.setdefault(("".join(words),), index)     # "glassbottle", "tvstand"
         return exact
 
     @cached_property
     def _by_word(self) -> dict[str, list[tuple[int, tuple[str, ...]]]]:
+        """Word → (class index, name) of every name with the word, own names first ("bin" is the
+        head of the trash can's "trash bin", as "clock" is of AlarmClock)."""
         index: dict[str, list[tuple[int, tuple[str, ...]]]] = {}
         for cls_index, words in self._names:
-            for word in set(words):
+            for word in dict.fromkeys(words):
                 index.setdefault(word, []).append((cls_index, words))
         return index
+
+    def with_synonyms(self, synonyms: Mapping[str, Sequence[str]]) -> Vocabulary:
+        """This vocabulary with more synonyms, by class key (``class_key``): each class gets the
+        names listed under its own name. A class with none added keeps what it had."""
+        if not synonyms:
+            return self
+        added = tuple(tuple(dict.fromkeys((*own, *synonyms.get(class_key(name), ()))))
+                      for name, own in zip(self.classes, self.synonyms, strict=True))
+        return Vocabulary(self.classes, added, self.where)
 
     def __len__(self) -> int:
         return len(self.classes)
@@ -107,19 +143,31 @@ class Vocabulary:
         return found
 
     def _ground(self, words: tuple[str, ...], end: int, of: tuple[str, ...]) -> str | None:
+        if of and end == len(words):                      # "a chest of drawers", "a bar of soap"
+            for start in range(end):
+                index = self._exact.get((*words[start:], "of", *of))
+                if index is not None:
+                    return self.classes[index]
         for phrase in (words[:end], of):
             for start in range(len(phrase)):             # longest exact name ending at the head
-                found = self._exact.get(phrase[start:])
-                if found is not None:
-                    return self.classes[found]
+                index = self._exact.get(phrase[start:])
+                if index is None and len(phrase) - start > 1:
+                    index = self._exact.get(("".join(phrase[start:]),))     # "lap top": Laptop
+                if index is not None:
+                    return self.classes[index]
         head_word = words[end - 1] if words else of[-1]
+        if head_word in PORTIONS:            # "an apple slice", "the table top", "a set of keys": the apple, ...
+            found = self._ground(words, end - 1, of) if end > 1 else None
+            if found is None and of:
+                found = self._ground(of, len(of), ())
+            if found is not None:
+                return found
         best: tuple[float, int] | None = None
         context = set(words) | set(of)
-        for key, weight in ((head_word, 4.0), *((w, 1.0) for w in reversed(of)),
-                            *((w, 0.5) for w in reversed(words[:end - 1]))):
+        for key, weight in ((head_word, 4.0), *((w, 1.0) for w in reversed(of))):
             for cls_index, name in self._by_word.get(key, ()):
                 score = weight + (2.0 if name[-1] == key else 0.0) + sum(0.5 for w in name if w in context) \
-                    - 0.25 * sum(1 for w in name if w not in context)
+                    - 0.25 * sum(1 for w in name if w not in context) + (0.125 if name in self._own else 0.0)
                 if best is None or (score, -cls_index) > (best[0], -best[1]):
                     best = (score, cls_index)
             if best is not None and weight >= 4.0:

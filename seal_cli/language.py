@@ -228,7 +228,26 @@ def parse_command(text: str, library: Library, vocabulary: Vocabulary | None = N
         tree = command_parser().parse(words)
     except UnexpectedInput as error:
         raise _explain(error, text, words, lexicon) from None
+    if vocabulary is not None:
+        vocabulary = with_library_synonyms(vocabulary, library)
     return Builder(text, library, types, vocabulary, {w.start: w for w in words}).command(tree)
+
+
+_MERGED: dict[tuple[int, int], tuple[Vocabulary, Library, Vocabulary]] = {}
+
+
+def with_library_synonyms(vocabulary: Vocabulary, library: Library) -> Vocabulary:
+    """The vocabulary with the library's synonyms of its classes (``framelib/synonyms.yaml``:
+    a map's ``Fridge`` is also called "refrigerator"); made once per vocabulary and library."""
+    key = (id(vocabulary), id(library))
+    found = _MERGED.get(key)
+    if found is not None and found[0] is vocabulary and found[1] is library:
+        return found[2]
+    merged = vocabulary.with_synonyms(library.taxonomy.names)
+    if len(_MERGED) > 64:
+        _MERGED.clear()
+    _MERGED[key] = (vocabulary, library, merged)
+    return merged
 
 
 def parse_lines(lines: Iterable[str], library: Library,

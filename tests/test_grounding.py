@@ -13,7 +13,8 @@ from seal_cli.library import Library
 
 ALFRED_LIKE = Vocabulary.of(["AlarmClock", "Apple", "CounterTop", "DiningTable", "SideTable", "ToiletPaper",
                              "ToiletPaperRoll", "WineBottle", "SoapBottle", "KeyChain", "SoapBar", "Sink",
-                             "SinkBasin", "tomato soup"])
+                             "SinkBasin", "tomato soup", "Laptop", "Bathtub", "Chair", "Tomato", "Dresser",
+                             "Fridge", "Sofa", "GarbageCan"])
 
 
 def theme_class(text: str, library: Library, vocabulary: Vocabulary = ALFRED_LIKE) -> str | None:
@@ -35,9 +36,44 @@ def theme_class(text: str, library: Library, vocabulary: Vocabulary = ALFRED_LIK
     ("the sink", "Sink"),
     ("some tomato soup", "tomato soup"),      # multiword class names
     ("the zorblax", None),                    # open vocabulary: no class, no error
+    ("the lap top", "Laptop"),                # written apart: compared without separators
+    ("a bath tub", "Bathtub"),
+    ("the chair cushion", None),              # a compound is its head: a cushion, not a chair
+    ("the table top", "DiningTable"),         # a region of the modifier's thing
+    ("a tomato piece", "Tomato"),             # a portion of it
+    ("a set of keys", "KeyChain"),            # a group of what "of" names
+    ("a chest of drawers", "Dresser"),        # a name with "of" in it (the library's synonyms)
+    ("the refrigerator", "Fridge"),           # the library's synonyms
+    ("the couch", "Sofa"),
+    ("a waste bin", "GarbageCan"),
+    ("the bin", "GarbageCan"),                # the head of a synonym ("trash bin"), like a class name's head
 ])
 def test_noun_phrases_ground_to_classes(library: Library, phrase: str, cls: str | None) -> None:
     assert theme_class(phrase, library) == cls
+
+
+def test_a_head_word_shared_by_several_classes_goes_to_the_first_listed(library: Library) -> None:
+    tables = ["DiningTable", "SideTable", "CoffeeTable"]
+    assert theme_class("the table", library, Vocabulary.of(tables)) == "DiningTable"
+    assert theme_class("the table", library, Vocabulary.of(tables[::-1])) == "CoffeeTable"
+    assert theme_class("the coffee table", library, Vocabulary.of(tables)) == "CoffeeTable"   # exact first
+    assert theme_class("the cushion", library, Vocabulary.of(["Chair", "Pillow"])) == "Pillow"   # a synonym
+
+
+def test_a_class_own_name_wins_over_another_class_synonym(library: Library) -> None:
+    vocab = Vocabulary.of(["SideTable", "nightstand", "Towel", "HandTowel"])
+    assert theme_class("the nightstand", library, vocab) == "nightstand"
+    assert theme_class("the bedside table", library, vocab) == "SideTable"   # the set's first class listed
+    assert theme_class("the towel", library, vocab) == "Towel"
+    own = Vocabulary.of(["fridge"], {"fridge": ["cold box"]})               # a file's synonyms add to the library's
+    assert theme_class("the cold box", library, own) == theme_class("the icebox", library, own) == "fridge"
+
+
+def test_the_library_synonyms_join_a_vocabulary_by_any_name_of_their_set() -> None:
+    vocab = Vocabulary.of(["refrigerator", "Couch"]).with_synonyms({"refrigerator": ("fridge",), "couch": ("sofa",)})
+    assert vocab.ground_words(["fridge"]) == "refrigerator"
+    assert vocab.ground_words(["sofas"]) == "Couch"
+    assert Vocabulary.of(["cup"]).with_synonyms({}).ground_words(["mug"]) is None
 
 
 def test_synonyms_and_names_compare_like_class_names() -> None:
