@@ -10,7 +10,11 @@ from rich.table import Table
 
 from ..planning import MAX_NODES, Plan
 from . import FramelibOption, JsonOption, bench_app, command, emit_json, framelib_paths, out
-from .parse_cmd import MapOption, VocabularyOption, vocabulary_from
+from .parse_cmd import VocabularyOption, vocabulary_from
+
+MapOption = typer.Option(None, "--map", help="The world: its places (openable ones closed unless open: true), "
+                         "where its objects are, the robot's hand; also grounds the words in its classes. "
+                         "A path or a shipped map's name.", show_default=False)
 
 
 def show(plan: Plan) -> None:
