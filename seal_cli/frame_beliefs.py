@@ -231,7 +231,7 @@ class FrameBeliefs:
         which = np.concatenate([terms.meas_source, terms.ctx_source])
         rows = np.concatenate([terms.meas_frame, terms.ctx_frame])
         K = kernel.sample(which, X, rows) if len(which) else np.zeros((0, Q))
-        weighted = np.concatenate([terms.meas_weight, terms.ctx_weight])[:, None] * K
+        weighted = np.concatenate([terms.meas_weight, terms.ctx_weight]).astype(K.dtype)[:, None] * K
         m = len(terms.meas_source)
         return _per_frame(weighted[:m], terms.meas_frame, F), _per_frame(weighted[m:], terms.ctx_frame, F)
 
@@ -239,7 +239,7 @@ class FrameBeliefs:
         """γ from the two potentials (before restricting to free space)."""
         total = terms.belief_total
         floor = self.model.floor_share * total * 2 * np.pi * self.sigma ** 2 / self.free_area
-        meas = np.where(total[:, None] > 0, measurement + floor[:, None], 1.0)
+        meas = np.where(total[:, None] > 0, measurement.astype(float) + floor[:, None], 1.0)
         c0 = max(self.model.context_floor, 1e-12)
         ctx = np.where(terms.has_context[:, None], c0 + context, 1.0)
         return np.asarray(meas * ctx)
@@ -285,7 +285,7 @@ class FrameBeliefs:
 
 def _per_frame(values: Array, frame: Index, frames: int) -> Array:
     """Rows of ``values`` summed by frame (``frame`` is sorted: terms are listed frame by frame)."""
-    out = np.zeros((frames, values.shape[1]))
+    out = np.zeros((frames, values.shape[1]), dtype=values.dtype)
     if len(frame):
         starts = np.flatnonzero(np.r_[True, frame[1:] != frame[:-1]])
         out[frame[starts]] = np.add.reduceat(values, starts, axis=0)

@@ -252,14 +252,13 @@ def rooms_of(m: Map, points: Array) -> NDArray[np.intp]:
     return np.asarray(rooms, np.intp)
 
 
-def spatial_order(m: Map, X: Array, tile: float = 0.5) -> NDArray[np.intp]:
+def spatial_order(m: Map, X: Array) -> NDArray[np.intp]:
     """A permutation of each row of particles X (R, P, 2) that lists them room by room, and within a room
-    tile by tile: systematic resampling in this order keeps each room's share to within one particle."""
-    flat = X.reshape(-1, 2)
-    xmin, ymin, xmax, _ = m.bounds
-    columns = int((xmax - xmin) / tile) + 2
-    cells = np.floor((flat - (xmin, ymin)) / tile).astype(np.int64)
-    key = (rooms_of(m, flat) + 1).astype(np.int64) * (1 << 40) + cells[:, 1] * columns + cells[:, 0]
+    by free cell (row by row of the map): systematic resampling in this order keeps each room's share to
+    within one particle. Particles off free space (few: objects may sit on furniture) come first."""
+    cells = m.free_index(X.reshape(-1, 2)).astype(np.int64)
+    rooms = np.where(cells >= 0, m.free_cell_room[np.maximum(cells, 0)], -1)
+    key = (rooms + 1) * (len(m.free_centres) + 1) + cells + 1
     return np.argsort(key.reshape(X.shape[:2]), axis=1, kind="stable")
 
 

@@ -201,19 +201,20 @@ class GridKernelSums:
     def sample(self, which: Index, points: Array, rows: Index | None = None) -> Array:
         i, j, fu, fv = self._cells(points)
         dtype = self.grids.dtype
+        nx, ny = self.shape
+        base = i * ny + j
         fu, fv = fu.astype(dtype), fv.astype(dtype)
         if rows is not None:
-            i, j, fu, fv = i[rows], j[rows], fu[rows], fv[rows]
-        nx, ny = self.shape
-        flat = self.grids.reshape(-1)
+            base, fu, fv = base[rows], fu[rows], fv[rows]
         which = np.asarray(which)
-        corner = (which[:, None] * nx + i) * ny + j
+        corner = base + (which * (nx * ny))[:, None]
+        flat = self.grids.reshape(-1)
         a, b = flat[corner], flat[corner + ny]
         c, d = flat[corner + 1], flat[corner + ny + 1]
         low = a + (b - a) * fu
-        out = np.asarray(low + (c + (d - c) * fu - low) * fv, dtype=float)
-        out *= self.factor[which][:, None]
-        return out
+        out = low + (c + (d - c) * fu - low) * fv
+        out *= self.factor[which].astype(dtype)[:, None]
+        return np.asarray(out)
 
 
 class SplitKernelSums:

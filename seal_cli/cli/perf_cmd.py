@@ -2,21 +2,10 @@
 
 from __future__ import annotations
 
-import os
-
 import typer
 from rich.table import Table
 
 from . import JsonOption, bench_app, command, emit_json, err, out
-
-
-def _one_core() -> str:
-    """Pin this process to one CPU (where the system allows it); say which."""
-    if hasattr(os, "sched_setaffinity") and hasattr(os, "sched_getaffinity"):
-        cpu = min(os.sched_getaffinity(0))
-        os.sched_setaffinity(0, {cpu})
-        return f"pinned to CPU {cpu}"
-    return "not pinned (this system cannot)"
 
 
 @command("perf", on=bench_app)
@@ -39,8 +28,8 @@ def perf(
     unknown = sorted(set(wanted) - {"paper", "building"})
     if unknown:
         raise SealError(f"unknown scale {', '.join(unknown)}; the scales are paper and building")
-    pinned = _one_core()
-    err.print(f"[dim]seal bench perf: {pinned}; times are the process's CPU seconds[/dim]")
+    err.print("[dim]seal bench perf: one thread; times are this process's CPU seconds (other work on the "
+              "machine does not count)[/dim]")
     library = load_library()
     results = [measure(scale, seed, lambda text: err.print(f"[dim]{text}[/dim]"))
                for scale in build_scales(library, lambda: load_map(map_path("apartment")), wanted, seed)]
