@@ -378,6 +378,7 @@ class Clause:
     message: NP | None
     start: int
     end: int
+    held: list[NP] = field(default_factory=list)     # "with X in hand": held while the clause is done
 
 
 _TO = ("to", "into", "onto")
@@ -405,17 +406,30 @@ class Builder:
         return self.words[token.start_pos]
 
     def command(self, tree: Tree) -> Parse:
-        for clause in tree.children:
-            if str(getattr(clause, "data", "")) == "clause":
-                self.clause(self.read_clause(clause))
+        clauses: list[Clause] = []
+        simultaneous = False
+        for child in tree.children:
+            if str(getattr(child, "data", "")) == "clause":
+                clause = self.read_clause(child)
+                if simultaneous and clauses:      # "turn on the lamp while holding a clock": hold it first
+                    clauses.insert(len(clauses) - 1, clause)
+                else:
+                    clauses.append(clause)
+                simultaneous = False
+            elif not isinstance(child, Tree) and child.type == "SEP":
+                simultaneous = "while" in str(child).lower().split()
+        for clause in clauses:
+            self.clause(clause)
         return Parse(self.text, tuple(self.frames))
 
     def read_clause(self, tree: Tree) -> Clause:
         phrase = tree.children[-1]
         verb = self.word(phrase.children[0])
-        items: list[Any] = []
-        for child in phrase.children[1:]:
-            items.append(self.item(child))
+        items: list[Any] = [self.item(child) for child in phrase.children[1:]]
+        for child in tree.children[:-1]:        # "with a clock in hand, turn on the lamp": as if said after
+            if str(getattr(child, "data", "")) == "lead":
+                items.extend(self.pp(pp) for pp in child.children if isinstance(pp, Tree))
+        held = self.in_hand(items)
         items = self.coordinate(items)
         items = self.containing(items)
         objects: list[NP] = []
@@ -426,7 +440,22 @@ class Builder:
                 objects.append(first)
         message = self.message(items)
         end = max([verb.end] + [self.end_of(x) for x in (*objects, *items)] + ([message.end] if message else []))
-        return Clause(verb, objects, items, message, verb.start, end)
+        return Clause(verb, objects, items, message, verb.start, end, held)
+
+    @staticmethod
+    def in_hand(items: list[Any]) -> list[NP]:
+        """Take out "with X in hand" ("in his hands"): X is held while the clause is done."""
+        held = []
+        k = 0
+        while k + 1 < len(items):
+            first, second = items[k], items[k + 1]
+            if isinstance(first, PP) and first.prep == "with" and isinstance(second, PP) and second.prep == "in" \
+                    and second.np.head is not None and second.np.head_text == "hand" and not second.np.of:
+                held.append(first.np)
+                del items[k:k + 2]
+                continue
+            k += 1
+        return held
 
     @staticmethod
     def end_of(item: Any) -> int:
@@ -576,6 +605,8 @@ class Builder:
 
     # -- one clause → frames -----------------------------------------------------------------
     def clause(self, clause: Clause) -> None:
+        for np in clause.held:
+            self.hold(np)
         unit = str(clause.verb.info)
         frames = self.library.evoked_by(unit)
         best: tuple[tuple[float, ...], Frame, dict[str, Any], list[tuple[NP, PP]]] | None = None
@@ -810,6 +841,18 @@ class Builder:
             self.frames.append(Evoked(frame.name, unit, (word.start, word.end),
                                       {first: self.phrase(np, frame, first)} | self.defaults(frame, {first})))
         np.results = []
+
+    def hold(self, np: NP) -> None:
+        """The frame that gets ``np`` in hand (``holding(theme)``: Pick), before the clause."""
+        for frame in sorted(self.library.achievers("holding"), key=lambda f: len(f.elements)):
+            first = frame.elements[0].role if frame.elements else None
+            if first is not None and any(p.predicate == "holding" and p.args == (first,) and not p.negated
+                                         for p in frame.postconditions):
+                self.results_of(np)
+                elements = {first: self.phrase(np, frame, first)}
+                self.frames.append(Evoked(frame.name, frame.lexical_units[0].text if frame.lexical_units else "",
+                                          (np.start, np.end), elements | self.defaults(frame, elements)))
+                return
 
     def put(self, content: NP, container: NP, predicate: str) -> None:
         """The frame that makes ``predicate(content, container)`` true (Place for ``in``)."""

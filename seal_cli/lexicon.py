@@ -393,6 +393,10 @@ class Tagger:
                 i += 1
                 continue
             if expect_verb:
+                if not self.out and low in ("while", "after") and self.verb_after(i + 1):
+                    self.out.append(Word(w.text, w.start, w.end, "POLITE"))   # "While holding a cup, ..."
+                    i += 1
+                    continue
                 n = _match_phrase(words, i, POLITE)
                 if n and not (n == 1 and low in ("and", "then") and not self.out) and (
                         low in ("to", "and", "then") or self.verb_after(i + n) or i + n >= len(words)
@@ -442,6 +446,9 @@ class Tagger:
                 i += 1
                 continue
             i += self.tag_word(i)
+            if self.out[-1].lower in ("hand", "hands") and len(self.out) > 1 and \
+                    self.out[-2].tag in ("PREP", "POSS") and self.verb_after(i):
+                expect_verb = True           # "with a clock in hand turn the lamp on"
         return self.out
 
     def separator(self, i: int, n: int) -> int:

@@ -166,9 +166,29 @@ def test_contents_put_first(library: Library) -> None:
 
 
 def test_inflected_verbs_and_subordinate_clauses(library: Library) -> None:
-    assert frames_of("Turn on the lamp while holding the remote", library) == ["ToggleOn", "Pick"]
+    assert frames_of("Turn on the lamp while holding the remote", library) == ["Pick", "ToggleOn"]
     assert frames_of("Putting a candle in a drawer", library) == ["Place"]
     assert frames_of("take the remote to turn on the lamp", library) == ["Pick", "ToggleOn"]
+
+
+@pytest.mark.parametrize("text", [
+    "Turn a light on with a bat in hand.",
+    "turn on the light with the bat in your hands",
+    "With a bat in hand turn the light on",
+    "With a bat in hand, turn on the light.",
+    "Turn on the light while holding a bat",
+    "While holding a bat, turn on the light",
+    "turn the light on while carrying the bat",
+])
+def test_what_is_held_while_a_clause_is_done_is_picked_first(library: Library, text: str) -> None:
+    parse = parse_command(text, library)
+    assert [(f.frame, f.elements["theme"].head) for f in parse.frames] == [("Pick", "bat"), ("ToggleOn", "light")]
+
+
+def test_with_is_still_an_instrument_or_a_content(library: Library) -> None:
+    assert elements("clean the cup with a sponge", library) == {"theme": "cup", "instrument": "sponge"}
+    assert frames_of("put the cup with the fork in it on the table", library) == ["Place", "Place"]
+    assert frames_of("In the kitchen, pick up the cup", library) == ["Pick"]
 
 
 @pytest.mark.parametrize(("text", "expected"), [
