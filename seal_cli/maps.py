@@ -556,7 +556,7 @@ class Map:
     @cached_property
     def free_cell_room(self) -> NDArray[np.intp]:
         """The room index of each free cell's centre (-1 for none)."""
-        return self.room_index(self.free_centres)
+        return self._room_index_exact(self.free_centres)
 
     def room_free_area(self) -> dict[str, float]:
         """Square metres of free space per room, and :data:`OUTSIDE`."""
