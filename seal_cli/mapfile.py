@@ -203,6 +203,11 @@ class _Reader:
     def number(self, node: yaml.Node, what: str, ok: Callable[[float], bool] = math.isfinite,
                need: str = "a number") -> float | None:
         value = self.value(node) if isinstance(node, yaml.ScalarNode) else None
+        if isinstance(value, str) and node.style is None:  # YAML 1.1 reads 1e-9 (no dot) as a string
+            try:
+                value = float(value)
+            except ValueError:
+                pass
         if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value) \
                 or not ok(float(value)):
             shown = node.value if isinstance(node, yaml.ScalarNode) else _shape(node)

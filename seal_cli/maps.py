@@ -315,6 +315,9 @@ class Map:
         if self.grid is None:
             xmin, ymin, xmax, ymax = self.bounds
             resolution = max(0.05, math.sqrt((xmax - xmin) * (ymax - ymin) / MAX_IMPLICIT_CELLS))
+            if not math.isfinite(resolution) or resolution > 1e5:
+                raise SealError(f"bounds {list(self.bounds)} are too large to map without an image",
+                                self.where("bounds"))
             set_(self, "grid", OccupancyGrid.filled(self.bounds, resolution))
         set_(self, "rooms", tuple(self.rooms))
         set_(self, "objects", tuple(self.objects))

@@ -403,6 +403,18 @@ def test_odd_files_are_problems_not_crashes(tmp_path: Path) -> None:
     assert "no such file" in check_map_file(tmp_path / "missing.yaml")[0].message
 
 
+
+def test_numbers_in_scientific_notation_and_absurd_sizes(tmp_path: Path) -> None:
+    # YAML 1.1 reads 5e-2 (no dot) as a string; a map file means the number
+    path = write_map(tmp_path, SERVER.format(image="tiny.pgm", negate=0).replace("0.5", "5e-1"), TINY)
+    assert load_map(path).grid.resolution == 0.5
+    assert "'5'" in check_map_file(write_map(tmp_path, "bounds: [0, 0, 9, 9]\nsensor: {range: '5'}\n"))[0].message
+    (huge,) = check_map_file(write_map(tmp_path, "bounds: [0, 0, 1e308, 1e308]\n"))
+    assert "too large" in huge.message
+    (tiny,) = check_map_file(write_map(tmp_path, "bounds: [0, 0, 1e-300, 1e-300]\n"))
+    assert "no free space" in tiny.message
+
+
 yaml_values = st.recursive(
     st.none() | st.booleans() | st.integers(-5, 5) | st.floats(allow_nan=True) | st.text(max_size=4),
     lambda inner: st.lists(inner, max_size=4) | st.dictionaries(st.sampled_from(
