@@ -386,6 +386,7 @@ _FROM = ("from", "out of", "off")
 _LOCATIVE = ("in", "on", "at", "near", "under", "by", "inside", "behind", "above", "over", "in front of",
              "between", "around", "across", "through", "along", "beyond", "against", "outside", "past")
 _ATTACHABLE = _LOCATIVE + ("with", "without", "about", "for", "via", "of")
+_PUT_IN = ("in", "on", "inside", "into", "onto")
 
 
 class Builder:
@@ -757,6 +758,9 @@ class Builder:
             type_ = frame.element(role).type
             wanted_person = True if self.is_person_type(type_) else None if self.taxonomy.is_open(type_) else \
                 bool(self.taxonomy.is_a("person", type_))
+        carried = self.carried(frame, role) if np.pronoun in ("it", "them", "they", "both") else None
+        if carried is not None:
+            return carried
         best: tuple[float, int, str, str] | None = None
         for index in range(len(self.frames) - 1, -1, -1):
             evoked = self.frames[index]
@@ -789,6 +793,31 @@ class Builder:
                     best = (score, index, name, kind)
         return None if best is None else best[1:]
 
+    def carried(self, frame: Frame | None, role: str | None) -> tuple[int, str, str] | None:
+        """After "put the pen in a cup", the object of "and move it (them) to the desk" is the cup
+        with the pen in it: moving the pen again would undo what was just done. (Only when both
+        frames put their first element somewhere, and the place was a container.)"""
+        if frame is None or not self.frames or role != (frame.elements[0].role if frame.elements else None):
+            return None
+        if self.relation(frame) is None:
+            return None
+        last = self.frames[-1]
+        relation = self.relation(self.library.frame(last.frame))
+        if relation is None or relation.args[1] not in last.elements:
+            return None
+        goal = last.elements[relation.args[1]]
+        if goal.default or goal.kind != "thing" or goal.refers_to is not None or \
+                self.taxonomy.is_a(goal.cls or goal.head, "container") is not True:
+            return None
+        return len(self.frames) - 1, relation.args[1], "thing"
+
+    @staticmethod
+    def relation(frame: Frame) -> Any:
+        """The frame's positive postcondition relating its first element to another (``in(theme, goal)``)."""
+        first = frame.elements[0].role if frame.elements else None
+        return next((p for p in frame.postconditions if not p.negated and len(p.args) == 2 and p.args[0] == first),
+                    None)
+
     # -- frames out ----------------------------------------------------------------------------
     def emit(self, frame: Frame, unit: str, clause: Clause, roles: dict[str, Any],
              attached: list[tuple[NP, PP]]) -> None:
@@ -818,6 +847,22 @@ class Builder:
                                                 default=True)
         ordered = {e.role: elements[e.role] for e in frame.elements if e.role in elements}
         self.frames.append(Evoked(frame.name, unit, (clause.start, clause.end), ordered))
+        self.carry_on(frame, roles, attached)
+
+    def carry_on(self, frame: Frame, roles: Mapping[str, Any], attached: list[tuple[NP, PP]]) -> None:
+        """"Put an apple in a pan *on the table*": a container the theme goes into, said to be in
+        or on a place, is put there too, after (a pan already there stays: the planner skips it)."""
+        first = frame.elements[0].role if frame.elements else None
+        relation = next((p for p in frame.postconditions if not p.negated and len(p.args) == 2
+                         and p.args[0] == first and isinstance(roles.get(p.args[1]), NP)), None)
+        if relation is None:
+            return
+        goal = roles[relation.args[1]]
+        for host, pp in attached:
+            if host is goal and pp.prep in _PUT_IN and not pp.np.pronoun and goal.kind == "thing" and \
+                    self.taxonomy.is_a(self.class_or_head(goal), "container") is True:
+                self.put(goal, pp.np, relation.predicate)
+                return
 
     def prepare(self, np: NP, frame: Frame, role: str, roles: Mapping[str, Any]) -> None:
         """Frames that must come first: result words ("heated") and contents ("with a fork")."""
@@ -871,7 +916,13 @@ class Builder:
                 for e in frame.elements if e.default is not None and e.role not in have}
 
     def implicit(self, frame: Frame, role: str) -> Phrase | None:
-        """An object left unsaid refers to the object of the frame before ("and put [it] away")."""
+        """An object left unsaid refers to the object of the frame before ("and put [it] away"),
+        or to the container it was just put in (:meth:`carried`)."""
+        carried = self.carried(frame, role)
+        if carried is not None:
+            index, name, _ = carried
+            root = self.frames[index].elements[name]
+            return Phrase("", root.head, root.cls, root.kind, (index, name), root.quantity, root.plural)
         for index in range(len(self.frames) - 1, -1, -1):
             evoked = self.frames[index]
             if not evoked.elements:

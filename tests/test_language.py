@@ -192,6 +192,20 @@ def test_with_is_still_an_instrument_or_a_content(library: Library) -> None:
 
 
 @pytest.mark.parametrize(("text", "expected"), [
+    ("Put an apple in a pan on the table", [("apple", "pan"), ("pan", "table")]),
+    ("put the spoon in the bowl inside the fridge", [("spoon", "bowl"), ("bowl", "fridge")]),
+    ("Place the remote in the box and move them to the couch", [("remote", "box"), ("box", "couch")]),
+    ("put a slice into a plate and put it in the microwave", [("slice", "plate"), ("plate", "microwave")]),
+    ("put the apple on the table and then put it in the fridge", [("apple", "table"), ("apple", "fridge")]),
+    ("put the cup on the table in the kitchen", [("cup", "table")]),            # a table is no container
+])
+def test_a_container_said_to_be_somewhere_goes_there_with_what_was_put_in_it(
+        library: Library, text: str, expected: list[tuple[str, str]]) -> None:
+    parse = parse_command(text, library)
+    assert [(parse.resolve(f.elements["theme"]).head, f.elements["goal"].head) for f in parse.frames] == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
     ("Could you bring me the apple from the kitchen table?", [("Bring", {"theme": "apple", "recipient": "me",
                                                                          "source": "table"})]),
     ("Go get a coke from the fridge", [("Pick", {"theme": "coke", "source": "fridge"})]),
