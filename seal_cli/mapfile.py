@@ -33,6 +33,7 @@ fully transparent pixel is unknown. Reading never raises anything but SealError.
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import math
 from collections.abc import Callable, Iterator
@@ -204,10 +205,8 @@ class _Reader:
                need: str = "a number") -> float | None:
         value = self.value(node) if isinstance(node, yaml.ScalarNode) else None
         if isinstance(value, str) and node.style is None:  # YAML 1.1 reads 1e-9 (no dot) as a string
-            try:
+            with contextlib.suppress(ValueError):
                 value = float(value)
-            except ValueError:
-                pass
         if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value) \
                 or not ok(float(value)):
             shown = node.value if isinstance(node, yaml.ScalarNode) else _shape(node)
