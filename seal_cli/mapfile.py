@@ -204,7 +204,7 @@ class _Reader:
     def number(self, node: yaml.Node, what: str, ok: Callable[[float], bool] = math.isfinite,
                need: str = "a number") -> float | None:
         value = self.value(node) if isinstance(node, yaml.ScalarNode) else None
-        if isinstance(value, str) and node.style is None:  # YAML 1.1 reads 1e-9 (no dot) as a string
+        if isinstance(value, str) and getattr(node, "style", "") is None:  # YAML 1.1 reads 1e-9 as a string
             with contextlib.suppress(ValueError):
                 value = float(value)
         if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value) \
