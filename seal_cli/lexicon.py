@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 from .errors import SealError, Where
 from .library import Library
-from .morphology import gerund_lemma, is_adjective, is_plural, noun_lemma, participles, verb_lemma
+from .morphology import gerund_lemma, is_adjective, is_gradable, is_plural, noun_lemma, participles, verb_lemma
 
 __all__ = ["MAX_LENGTH", "CommandError", "Lexicon", "Word", "is_plural", "noun_lemma", "tokenize", "verb_lemma"]
 
@@ -269,6 +269,9 @@ def _result_words(library: Library) -> dict[str, tuple[str, str]]:
         for fact in effects:
             if fact.predicate.isalpha() and is_adjective(fact.predicate):
                 results.setdefault(fact.predicate, (frame.name, frame.lexical_units[0].text))
+                for unit in frame.lexical_units:     # "a warm apple", "a cool tomato": the same state
+                    if len(unit.words) == 1 and is_gradable(unit.text):
+                        results.setdefault(unit.text, (frame.name, unit.text))
         for unit in frame.lexical_units:
             words = unit.words
             if len(words) == 1 or all(w in PARTICLES for w in words[1:]):
@@ -568,6 +571,8 @@ class Tagger:
         result = self.lexicon.results.get(low)
         if result and self._noun_follows(i + 1):
             return self._emit(i, 1, "RESULT", result)
+        if result and nxt in PARTICLES and self._noun_follows(i + 2):
+            return self._emit(i, 2, "RESULT", result)          # "a heated up potato", "the rinsed off apple"
         if _capitalised(w) and not in_np and prev != "WORD" and low not in _CLOSED:
             if prev == "NAME":          # "Mary Ann": one name
                 last = self.out[-1]

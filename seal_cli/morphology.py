@@ -20,7 +20,7 @@ import importlib.util
 from functools import lru_cache
 from pathlib import Path
 
-__all__ = ["gerund_lemma", "is_adjective", "is_plural", "noun_lemma", "participles", "verb_lemma"]
+__all__ = ["gerund_lemma", "is_adjective", "is_gradable", "is_plural", "noun_lemma", "participles", "verb_lemma"]
 
 
 class _Table:
@@ -107,6 +107,13 @@ def gerund_lemma(word: str) -> str | None:
 def is_adjective(word: str) -> bool:
     """Whether lemminflect lists the word as an adjective ("hot", "clean")."""
     return any(entry[0] == "adj" for entry in _WORDS.entries(word.lower()))
+
+
+@lru_cache(maxsize=4096)
+def is_gradable(word: str) -> bool:
+    """Whether the word is an adjective with comparative forms ("warm": warmer, warmest), i.e. it
+    names a state a thing can be more or less in ("wash" is listed as an adjective, but not so)."""
+    return any(entry[0] == "adj" and len(entry) > 1 and entry[1] for entry in _LEMMAS.entries(word.lower()))
 
 
 @lru_cache(maxsize=4096)

@@ -159,6 +159,17 @@ def test_result_words_evoke_frames_first(library: Library) -> None:
     assert frames_of("look at the book by the light of the lamp", library) == ["LookAt"]
 
 
+@pytest.mark.parametrize(("text", "frames"), [
+    ("Put a warm apple on the table", ["Heat", "Place"]),
+    ("Place a cool slice of lettuce on the table", ["Cool", "Place"]),
+    ("Place the heated up tomato on the white table", ["Heat", "Place"]),
+    ("put the wash cloth in the bin", ["Place"]),
+    ("put a light box on the table", ["Place"]),
+])
+def test_adjectives_naming_a_frames_result_evoke_it(library: Library, text: str, frames: list[str]) -> None:
+    assert frames_of(text, library) == frames
+
+
 def test_contents_put_first(library: Library) -> None:
     parse = parse_command("Put a pan with a spoon in it, in the sink", library)
     assert [(f.frame, {r: p.head for r, p in f.elements.items()}) for f in parse.frames] == [

@@ -51,6 +51,11 @@ def test_result_words_come_from_the_library(library: Library) -> None:
     assert "left" not in lexicon.results                       # Place has no one-place result
     assert "moved" not in lexicon.results                      # Go's element is a goal, not a theme
     assert ("heated", "RESULT") in tags("put a heated egg in the fridge", library)
+    assert lexicon.results["warm"] == ("Heat", "warm")         # a gradable adjective among Heat's units
+    assert lexicon.results["cool"] == ("Cool", "cool")
+    assert "wash" not in lexicon.results and "light" not in lexicon.results   # no state ("wash" has no "washer")
+    assert ("heated up", "RESULT") in tags("put the heated up egg in the fridge", library)
+    assert ("rinsed off", "RESULT") in tags("put the rinsed off apple on the table", library)
 
 
 def test_participles_after_nouns(library: Library) -> None:
