@@ -368,6 +368,7 @@ class PP:
     prep: str
     np: NP
     start: int
+    lead: bool = False         # said before the verb ("with X in hand, ...", "use X to ...")
 
 
 @dataclass
@@ -429,7 +430,7 @@ class Builder:
         items: list[Any] = [self.item(child) for child in phrase.children[1:]]
         for child in tree.children[:-1]:        # "with a clock in hand, turn on the lamp": as if said after
             if str(getattr(child, "data", "")) == "lead":
-                items.extend(self.pp(pp) for pp in child.children if isinstance(pp, Tree))
+                items.extend(replace(self.pp(pp), lead=True) for pp in child.children if isinstance(pp, Tree))
         held = self.in_hand(items)
         items = self.coordinate(items)
         items = self.containing(items)
@@ -606,10 +607,14 @@ class Builder:
 
     # -- one clause → frames -----------------------------------------------------------------
     def clause(self, clause: Clause) -> None:
-        for np in clause.held:
-            self.hold(np)
         unit = str(clause.verb.info)
         frames = self.library.evoked_by(unit)
+        if not any("instrument" in f.roles for f in frames):     # "use a card to turn on the lamp": hold it
+            used = [x for x in clause.items if isinstance(x, PP) and x.lead and x.prep == "with"]
+            clause.held += [x.np for x in used]
+            clause.items = [x for x in clause.items if not any(x is u for u in used)]
+        for np in clause.held:
+            self.hold(np)
         best: tuple[tuple[float, ...], Frame, dict[str, Any], list[tuple[NP, PP]]] | None = None
         for order, frame in enumerate(frames):
             assigned = self.assign(frame, clause, strict=True)
@@ -895,6 +900,9 @@ class Builder:
                                          for p in frame.postconditions):
                 self.results_of(np)
                 elements = {first: self.phrase(np, frame, first)}
+                if elements[first].refers_to is not None and self.frames and \
+                        elements[first].refers_to == (len(self.frames) - 1, first) and self.frames[-1].frame == frame.name:
+                    return                           # "pick up a card and use it to ...": in hand already
                 self.frames.append(Evoked(frame.name, frame.lexical_units[0].text if frame.lexical_units else "",
                                           (np.start, np.end), elements | self.defaults(frame, elements)))
                 return

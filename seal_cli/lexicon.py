@@ -326,6 +326,7 @@ class Tagger:
         self.words = words
         self.out: list[Word] = []
         self._verbs: dict[int, tuple[str, int, int | None] | None] = {}
+        self.using = False                  # after "use X": "to" starts the clause of what X is used for
 
     def verb_at(self, i: int) -> tuple[str, int, int | None] | None:
         """The lexical unit starting at word ``i`` (memoised: the tagger asks more than once)."""
@@ -354,10 +355,25 @@ class Tagger:
             break
         if i >= len(self.words):
             return False
-        return self.verb_at(i) is not None
+        return self.verb_at(i) is not None or self.use_at(i)
+
+    def use_at(self, i: int) -> bool:
+        """Whether "use X to V ..." starts at ``i`` ("use a knife to slice the apple"): X is what V
+        is done with, so "use" is tagged as the preposition "with" before the clause of V."""
+        if self.words[i].lower not in ("use", "using") or not self.np_starts(i + 1):
+            return False
+        for j in range(i + 2, min(len(self.words) - 1, i + 9)):
+            low = self.words[j].lower
+            if low == "to":
+                return self.verb_at(j + 1) is not None
+            if low in (",", ";", ".", "!", "?", "and", "then"):
+                return False
+        return False
 
     def purpose(self, i: int) -> bool:
         """Whether "to" at ``i`` starts a clause of purpose ("... to put it in the sink")."""
+        if i + 1 < len(self.words) and self.using and self.verb_at(i + 1):
+            return True                    # "use a knife to slice apples"
         if i + 2 >= len(self.words) or not self.out or self.out[-1].tag in ("VERB", "PREP"):
             return False
         found = self.verb_at(i + 1)
@@ -411,8 +427,15 @@ class Tagger:
                     self.out.append(_merge(words, i, 2, "POLITE"))      # "Robin, bring me a cup"
                     i += 2
                     continue
+                if self.use_at(i):
+                    self.out.append(Word(w.text, w.start, w.end, "PREP", "with"))
+                    self.using = True
+                    expect_verb = False
+                    i += 1
+                    continue
                 found = self.verb_at(i)
                 if found:
+                    self.using = False
                     unit, n, split = found
                     self.out.append(_merge(words, i, n, "VERB", unit))
                     if split is not None:

@@ -196,6 +196,23 @@ def test_what_is_held_while_a_clause_is_done_is_picked_first(library: Library, t
     assert [(f.frame, f.elements["theme"].head) for f in parse.frames] == [("Pick", "bat"), ("ToggleOn", "light")]
 
 
+@pytest.mark.parametrize(("text", "expected"), [
+    ("Use a knife to slice the apple.", [("Slice", {"theme": "apple", "instrument": "knife"})]),
+    ("using a knife, slice the bread", [("Slice", {"theme": "bread", "instrument": "knife"})]),
+    ("use knife to slice apple", [("Slice", {"theme": "apple", "instrument": "knife"})]),
+    ("use the card to turn on the lamp", [("Pick", {"theme": "card"}), ("ToggleOn", {"theme": "lamp"})]),
+    ("Pick up a card and use it to turn the lamp on", [("Pick", {"theme": "card"}), ("ToggleOn", {"theme": "lamp"})]),
+])
+def test_use_x_to_do_something(library: Library, text: str, expected: list[tuple[str, dict[str, str]]]) -> None:
+    parse = parse_command(text, library)
+    assert [(f.frame, {r: p.head for r, p in f.elements.items() if not p.default}) for f in parse.frames] == expected
+
+
+def test_use_without_a_purpose_is_no_verb(library: Library) -> None:
+    with pytest.raises(CommandError, match="unknown verb 'use'"):
+        parse_command("use the phone", library)
+
+
 def test_with_is_still_an_instrument_or_a_content(library: Library) -> None:
     assert elements("clean the cup with a sponge", library) == {"theme": "cup", "instrument": "sponge"}
     assert frames_of("put the cup with the fork in it on the table", library) == ["Place", "Place"]
