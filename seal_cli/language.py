@@ -900,8 +900,8 @@ class Builder:
                                          for p in frame.postconditions):
                 self.results_of(np)
                 elements = {first: self.phrase(np, frame, first)}
-                if elements[first].refers_to is not None and self.frames and \
-                        elements[first].refers_to == (len(self.frames) - 1, first) and self.frames[-1].frame == frame.name:
+                last = (len(self.frames) - 1, first)
+                if self.frames and elements[first].refers_to == last and self.frames[-1].frame == frame.name:
                     return                           # "pick up a card and use it to ...": in hand already
                 self.frames.append(Evoked(frame.name, frame.lexical_units[0].text if frame.lexical_units else "",
                                           (np.start, np.end), elements | self.defaults(frame, elements)))
