@@ -168,7 +168,7 @@ class FrameBeliefs:
         F, P = self.W.shape
         if F == 0:
             return
-        n = int(round(self.model.fresh_share * P))
+        n = max(1, int(round(self.model.fresh_share * P)))
         X, cells = self.X, self.cell
         if n:
             drawn, _ = self._draw(terms, sources, n, rng)
@@ -177,7 +177,8 @@ class FrameBeliefs:
                                    axis=1)
         measurement, context = self.potentials(terms, kernel, X)
         gamma = np.where(cells >= 0, self.gamma_of(terms, measurement, context), 0.0)
-        weights = np.concatenate([self.Z[:, None] * self.W * P * gamma[:, :P] / self.gamma,
+        ratio = np.divide(gamma[:, :P], self.gamma, out=np.zeros((F, P)), where=self.gamma > 0)
+        weights = np.concatenate([self.Z[:, None] * self.W * P * ratio,
                                   self._importance(terms, gamma[:, P:], measurement[:, P:], cells[:, P:] >= 0)],
                                  axis=1)
         self._resample_move(X, cells, gamma, weights, terms, kernel, rng)
@@ -259,7 +260,7 @@ class FrameBeliefs:
         """
         F = terms.frames
         total = terms.belief_total
-        n_uniform = np.where(total > 0, int(round(self.model.uniform_share * n)), n)
+        n_uniform = np.where(total > 0, int(np.ceil(self.model.uniform_share * n)), n)
         uniform = np.arange(n)[None, :] < n_uniform[:, None]
         X = np.zeros((F, n, 2))
         count = int(uniform.sum())

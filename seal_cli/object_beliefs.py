@@ -223,7 +223,7 @@ class ObjectBeliefs:
         ancestors = systematic(self.W[rows], rng, P - n)  # the rows are kept in spatial order
         X = np.take_along_axis(self.X[rows], ancestors[..., None], axis=1)
         X = self._inside(X + rng.normal(0.0, self.model.jitter, X.shape))
-        W = np.full((len(rows), P), (1.0 - self.model.relocate) / (P - n))
+        W = np.full((len(rows), P), (1.0 - (self.model.relocate if n else 0.0)) / (P - n))
         if n:
             X = np.concatenate([X, np.stack([_initial(self.map, self.sources[r], n, rng) for r in rows])], axis=1)
             W[:, P - n:] = self.model.relocate / n

@@ -163,6 +163,6 @@ def measure(scale: Scale, seed: int = 0, progress: Callable[[str], None] | None 
     _, exact_seconds = _run(scale, "exact", scale.exact_updates, seed)
     say(f"{scale.name}: total variation")
     return {"name": scale.name, "frames": len(scale.bindings), "objects": scale.objects,
-            "particles": scale.particles, "updates_per_s": round(scale.updates / seconds, 2),
-            "exact_updates_per_s": round(scale.exact_updates / exact_seconds, 3),
+            "particles": scale.particles, "updates_per_s": round(scale.updates / max(seconds, 1e-9), 2),
+            "exact_updates_per_s": round(scale.exact_updates / max(exact_seconds, 1e-9), 3),
             "tv_distance": round(tv_distance(engine), 5)}

@@ -273,13 +273,14 @@ def scenarios(draw: st.DrawFn) -> tuple[Map, list[tuple[tuple[float, float, floa
 
 @settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow,
                                                                  HealthCheck.function_scoped_fixture])
-@given(scenario=scenarios(), seed=st.integers(0, 2 ** 16), holding=st.sampled_from([None, "spoon"]))
+@given(scenario=scenarios(), seed=st.integers(0, 2 ** 16), holding=st.sampled_from([None, "spoon"]),
+       particles=st.sampled_from([1, 2, 7, 50]))
 def test_weights_are_always_finite_and_normalised(library: Library, scenario: tuple, seed: int,
-                                                   holding: str | None) -> None:
+                                                   holding: str | None, particles: int) -> None:
     m, steps = scenario
     frames = [library.frame("Pick").bind({"theme": "spoon"}), library.frame("Stir").bind({"theme": "cup"})]
     state = State.of(robot_facts(holding), library.taxonomy)
-    sefm = SeFM(m, frames, state, np.random.default_rng(seed), SeFMConfig(particles=50))
+    sefm = SeFM(m, frames, state, np.random.default_rng(seed), SeFMConfig(particles=particles))
     for pose, detections in steps:
         sefm.update(pose, detections, state)
         for W in (sefm.objects.W, sefm.frames.W):
