@@ -11,11 +11,11 @@ synonyms. A phrase is matched on its words' lemmas (so plurals match), best firs
    word of a class name ("counter" → ``CounterTop``);
 3. the words after "of" ("the middle *of the table*").
 
-A phrase whose head names a portion, region or group of something (``PORTIONS``: "an apple
-*slice*", "the table *top*", "a *set* of keys") denotes what its modifiers or its "of" phrase
-name, when they name a class. A modifier of any
-other head names something else: a "chair cushion" is a cushion, not a chair, and no class when
-the vocabulary calls nothing a cushion.
+A phrase whose head names a portion, region, part or group of something (``PORTIONS``: "an
+apple *slice*", "the table *top*", "the toilet *tank*", "a *set* of keys") denotes what its
+modifiers or its "of" phrase name, when they name a class. A modifier of any other head names
+something else: a "chair cushion" is a cushion, not a chair, and no class when the vocabulary
+calls nothing a cushion.
 
 Within a step, the class sharing the most words with the phrase wins; a class's own name beats
 another class's synonym; a remaining tie (``DiningTable``, ``SideTable``, ``CoffeeTable`` for
@@ -48,10 +48,11 @@ __all__ = ["PORTIONS", "Vocabulary", "load_vocabulary", "vocabulary_of_map"]
 PORTIONS = frozenset(" ".join((
     "slice piece bit chunk half part portion wedge segment sliver strip lump cube quarter crumb",
     "top side edge corner middle centre center end bottom surface back front",
+    "lid door handle seat tank cover",
     "set bunch pair pack group collection stack pile handful")).split())
-"""English nouns that name a portion, a region or a group of something else ("an apple *slice*",
-"the table *top*", "a *set* of keys"): with one of these as its head, a phrase denotes what its
-modifiers or its "of" phrase name."""
+"""English nouns that name a portion, a region, a part or a group of something else ("an apple
+*slice*", "the table *top*", "the fridge *door*", "a *set* of keys"): with one of these as its
+head, a phrase denotes what its modifiers or its "of" phrase name."""
 
 
 def _lemmas(words: Iterable[str]) -> tuple[str, ...]:

@@ -409,18 +409,27 @@ class Builder:
 
     def command(self, tree: Tree) -> Parse:
         clauses: list[Clause] = []
-        simultaneous = False
+        joins: list[str] = []                     # the separator before each clause
+        sep = ""
         for child in tree.children:
             if str(getattr(child, "data", "")) == "clause":
-                clause = self.read_clause(child)
-                if simultaneous and clauses:      # "turn on the lamp while holding a clock": hold it first
-                    clauses.insert(len(clauses) - 1, clause)
-                else:
-                    clauses.append(clause)
-                simultaneous = False
+                clauses.append(self.read_clause(child))
+                joins.append(sep)
+                sep = ""
             elif not isinstance(child, Tree) and child.type == "SEP":
-                simultaneous = "while" in str(child).lower().split()
-        for clause in clauses:
+                sep = str(child).lower()
+        for k in range(len(clauses) - 1):         # "slice and chill an apple": both the apple
+            bare, nxt = clauses[k], clauses[k + 1]
+            if not (bare.objects or bare.items or bare.message or bare.held) and nxt.objects and \
+                    not set(joins[k + 1].split()) - {"and", "then", ",", "plus", "as", "well"}:
+                bare.objects = [nxt.objects[0]]
+        ordered: list[Clause] = []
+        for clause, join in zip(clauses, joins, strict=True):
+            if "while" in join.split() and ordered:   # "turn on the lamp while holding a clock": hold it first
+                ordered.insert(len(ordered) - 1, clause)
+            else:
+                ordered.append(clause)
+        for clause in ordered:
             self.clause(clause)
         return Parse(self.text, tuple(self.frames))
 

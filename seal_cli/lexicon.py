@@ -90,7 +90,9 @@ WH_WORDS = _closed_class("what which who whom whose where when why how whether i
 BE_WORDS = _closed_class("is are was were be am 's been being")
 SEPARATOR_WORDS = frozenset(["and", "then", ",", ";", ":", "after that", "afterwards", "next", "finally",
                              "and then", "and after that", "after", "also", "once done", "when done",
-                             "and finally", "before", "while", "or"])
+                             "and finally", "before", "while", "or", "as well as", "plus"])
+AND_WORDS = frozenset(["and", "as well as", "plus"])
+"""Words that join like "and" (clauses or noun phrases)."""
 POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "will you", "would you mind",
                     "could you please", "i want you to", "i need you to", "i would like you to",
                     "i'd like you to", "you should", "you must", "you need to", "you have to", "you will",
@@ -380,8 +382,11 @@ class Tagger:
         if not found:
             return False
         after = i + 1 + found[1]
-        return after < len(self.words) and (self.words[after].lower in DETERMINERS or self.words[after].lower in
-                                            POSSESSIVES or self.words[after].lower in PRONOUNS)
+        if after >= len(self.words):
+            return False
+        nxt = self.words[after].lower
+        return nxt in DETERMINERS or nxt in POSSESSIVES or nxt in PRONOUNS or (
+            nxt in PREPOSITIONS and self.np_starts(after + _match_phrase(self.words, after, PREPOSITIONS)))
 
     def np_starts(self, i: int) -> bool:
         if i >= len(self.words):
@@ -484,7 +489,8 @@ class Tagger:
         j = i + n
         while j < len(words) and _match_phrase(words, j, SEPARATOR_WORDS) and words[j].lower not in ("before",):
             j += _match_phrase(words, j, SEPARATOR_WORDS)
-        low = words[i].lower
+        phrase = " ".join(w.lower for w in words[i:i + n])
+        low, span = ("and", j - i - n + 1) if phrase in AND_WORDS else (words[i].lower, j - i)
         if self.verb_after(j):
             self.out.append(_merge(words, i, j - i, "SEP"))
             return j - i
@@ -499,7 +505,7 @@ class Tagger:
         if low in (",", ";", ":") and (nxt in PREPOSITIONS or nxt == "please"):
             return 1                # "Put a pan with a spoon in it, in the sink"
         if low in ("then", "after that", "afterwards", "finally", "after", "before", "while", "once done",
-                   "when done") or j - i > 1 and low != ",":
+                   "when done") or span > 1 and low != ",":
             self.out.append(_merge(words, i, j - i, "SEP"))
             return j - i
         if low in ("and", ",", "or") and self.np_starts(j) and self.prev_tag() in ("WORD", "NAME", "PRON"):
@@ -508,8 +514,8 @@ class Tagger:
                             and not _capitalised(words[j]) and nxt not in NUMBERS
                             and (after in DETERMINERS or after in POSSESSIVES or after in ("it", "them", "me")))
             if not unknown_verb:
-                self.out.append(_merge(words, i, 1, "AND_NP"))
-                return 1
+                self.out.append(_merge(words, i, n, "AND_NP"))
+                return n
         if low in ("and", "then", ",", ";", "or"):
             self.out.append(_merge(words, i, j - i, "SEP"))
             return j - i

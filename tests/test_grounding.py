@@ -14,7 +14,7 @@ from seal_cli.library import Library
 ALFRED_LIKE = Vocabulary.of(["AlarmClock", "Apple", "CounterTop", "DiningTable", "SideTable", "ToiletPaper",
                              "ToiletPaperRoll", "WineBottle", "SoapBottle", "KeyChain", "SoapBar", "Sink",
                              "SinkBasin", "tomato soup", "Laptop", "Bathtub", "Chair", "Tomato", "Dresser",
-                             "Fridge", "Sofa", "GarbageCan"])
+                             "Fridge", "Sofa", "GarbageCan", "Toilet"])
 
 
 def theme_class(text: str, library: Library, vocabulary: Vocabulary = ALFRED_LIKE) -> str | None:
@@ -42,6 +42,8 @@ def theme_class(text: str, library: Library, vocabulary: Vocabulary = ALFRED_LIK
     ("the table top", "DiningTable"),         # a region of the modifier's thing
     ("a tomato piece", "Tomato"),             # a portion of it
     ("a set of keys", "KeyChain"),            # a group of what "of" names
+    ("the toilet tank", "Toilet"),            # a part of the modifier's thing
+    ("the fridge door", "Fridge"),
     ("a chest of drawers", "Dresser"),        # a name with "of" in it (the library's synonyms)
     ("the refrigerator", "Fridge"),           # the library's synonyms
     ("the couch", "Sofa"),

@@ -208,6 +208,21 @@ def test_use_x_to_do_something(library: Library, text: str, expected: list[tuple
     assert [(f.frame, {r: p.head for r, p in f.elements.items() if not p.default}) for f in parse.frames] == expected
 
 
+@pytest.mark.parametrize(("text", "expected"), [
+    ("Heat and chill a potato", [("Heat", "potato"), ("Cool", "potato")]),            # a shared object
+    ("slice, then refrigerate the apple", [("Slice", "apple"), ("Cool", "apple")]),
+    ("heat an apple as well as place it on the table", [("Heat", "apple"), ("Place", "apple")]),
+    ("cut a potato plus heat it", [("Slice", "potato"), ("Heat", "potato")]),
+    ("put the slice as well as the knife in the fridge", [("Place", "slice")]),         # joins noun phrases too
+    ("Chill a cup to put on the counter", [("Cool", "cup"), ("Place", "cup")]),        # purpose, object unsaid
+])
+def test_coordination_and_purpose(library: Library, text: str, expected: list[tuple[str, str]]) -> None:
+    parse = parse_command(text, library)
+    assert [(f.frame, parse.resolve(f.elements["theme"]).head) for f in parse.frames] == expected
+    if "knife" in text:
+        assert parse.frames[0].elements["theme"].plural
+
+
 def test_use_without_a_purpose_is_no_verb(library: Library) -> None:
     with pytest.raises(CommandError, match="unknown verb 'use'"):
         parse_command("use the phone", library)
