@@ -196,15 +196,17 @@ class FrameBeliefs:
         """Keep P of the weighted particles by systematic resampling (room by room), then move them by a
         Metropolis–Hastings step whose proposal is the prediction potential and whose target is γ."""
         F, P = self.W.shape
-        weights = np.where(np.isfinite(weights) & (weights > 0), weights, 0.0)
+        weights[~(np.isfinite(weights) & (weights > 0))] = 0.0
         self.Z = np.maximum(weights.mean(axis=1), np.finfo(float).tiny)
         W = normalise(weights)
         self.last_ess = ess(W)
-        by_room = self._room_order(cells)
-        ancestors = np.take_along_axis(by_room, systematic(np.take_along_axis(W, by_room, axis=1), rng, P), axis=1)
-        X = np.take_along_axis(X, ancestors[..., None], axis=1)
-        cells = np.take_along_axis(cells, ancestors, axis=1)
-        gamma = np.take_along_axis(gamma, ancestors, axis=1)
+        width = W.shape[1]
+        by_room = (self._room_order(cells) + np.arange(F)[:, None] * width).ravel()  # flat indices
+        chosen = systematic(W.ravel()[by_room].reshape(F, width), rng, P) + np.arange(F)[:, None] * width
+        ancestors = by_room[chosen]
+        X = X.reshape(-1, 2)[ancestors]
+        cells = cells.ravel()[ancestors]
+        gamma = gamma.ravel()[ancestors]
         proposal = X + rng.standard_normal(X.shape) * self.noise[:, None, None]
         moved = self.map.free_index(proposal.reshape(-1, 2)).reshape(F, P).astype(np.intp)
         proposed = np.where(moved >= 0, self.gamma_of(terms, *self.potentials(terms, kernel, proposal)), 0.0)

@@ -209,8 +209,8 @@ class GridKernelSums:
         which = np.asarray(which)
         corner = base + (which * (nx * ny))[:, None]
         flat = self.grids.reshape(-1)
-        a, b = flat[corner], flat[corner + ny]
-        c, d = flat[corner + 1], flat[corner + ny + 1]
+        a, b = np.take(flat, corner, mode="clip"), np.take(flat, corner + ny, mode="clip")
+        c, d = np.take(flat, corner + 1, mode="clip"), np.take(flat, corner + ny + 1, mode="clip")
         low = a + (b - a) * fu
         out = low + (c + (d - c) * fu - low) * fv
         out *= self.factor[which].astype(dtype)[:, None]
