@@ -674,6 +674,7 @@ class Builder:
         if objects and strict:
             return None
         previous: NP | None = clause.objects[-1] if clause.objects else None
+        has_to = any(isinstance(x, PP) and x.prep in _TO for x in clause.items)
         for item in clause.items:
             if isinstance(item, NP):
                 if strict:
@@ -682,7 +683,7 @@ class Builder:
                 continue
             if not isinstance(item, PP):
                 continue
-            role = self.role_for(frame, item, previous, roles)
+            role = self.role_for(frame, item, previous, roles, has_to)
             if role is not None:
                 roles[role] = item.np
             elif previous is not None and (item.prep in _ATTACHABLE or not strict):
@@ -693,8 +694,10 @@ class Builder:
         score = sum(self.fit(frame, role, np) for role, np in roles.items())
         return roles, attached, score
 
-    def role_for(self, frame: Frame, pp: PP, previous: NP | None, roles: Mapping[str, Any]) -> str | None:
-        """The element a prepositional phrase fills in this frame, or None (it describes a noun)."""
+    def role_for(self, frame: Frame, pp: PP, previous: NP | None, roles: Mapping[str, Any],
+                 has_to: bool = False) -> str | None:
+        """The element a prepositional phrase fills in this frame, or None (it describes a noun).
+        A locative phrase is no goal when a *to* phrase says the goal ("the book on the bed to the desk")."""
         have = frame.roles
         np = pp.np
         person = self.kind(np, frame, "recipient" if "recipient" in have else None) == "person"
@@ -714,7 +717,8 @@ class Builder:
                 return None                              # "a pan with a spoon in it"
             options = ["ground"]
             theme_type = frame.elements[0].type if frame.elements else None
-            if theme_type is None or not self.is_person_type(theme_type) or frame.elements[0].role == "goal":
+            if (theme_type is None or not self.is_person_type(theme_type) or frame.elements[0].role == "goal") \
+                    and not has_to:
                 options.append("goal")
             options += ["instrument", "source"]
         else:

@@ -602,6 +602,10 @@ class Tagger:
             return self._emit(i, 1, "RESULT", result)
         if result and nxt in PARTICLES and self._noun_follows(i + 2):
             return self._emit(i, 2, "RESULT", result)          # "a heated up potato", "the rinsed off apple"
+        if result and nxt == "," and i + 2 < len(self.words) and self.words[i + 2].lower in self.lexicon.results \
+                and self._noun_follows(i + 3):
+            self._emit(i, 1, "RESULT", result)                  # "a cooked, rinsed egg"
+            return 2
         if _capitalised(w) and not in_np and prev != "WORD" and low not in _CLOSED:
             if prev == "NAME":          # "Mary Ann": one name
                 last = self.out[-1]

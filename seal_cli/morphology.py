@@ -72,6 +72,9 @@ def noun_lemma(word: str) -> str:
         return lower
     lemmas = _lemmas(lower, "noun")
     if not lemmas:
+        verb = _lemmas(lower, "verb")       # "bars": listed only as a verb form; its noun is "bar"
+        if verb and lower.endswith("s") and verb[0] in (lower[:-1], lower[:-2]):
+            return verb[0]
         return lower        # a word the dictionary lacks ("cheezits") stays as it is
     if lower in lemmas and (not lower.endswith("s") or lower.endswith("ss") or len(lemmas) == 1):
         return lower                            # "people", "glass"; but "glasses" → "glass"

@@ -223,6 +223,17 @@ def test_coordination_and_purpose(library: Library, text: str, expected: list[tu
         assert parse.frames[0].elements["theme"].plural
 
 
+def test_a_place_said_of_the_object_is_no_goal_when_a_to_phrase_says_one(library: Library) -> None:
+    parse = parse_command("Bring the book on the bed to the nightstand", library)
+    assert [f.frame for f in parse.frames] == ["Bring"]
+    assert {r: p.head for r, p in parse.frames[0].elements.items()} == {"theme": "book", "goal": "nightstand",
+                                                                        "source": "bed"}
+
+
+def test_result_words_listed_with_commas(library: Library) -> None:
+    assert frames_of("Put a cooked, rinsed egg on the counter", library) == ["Heat", "Clean", "Place"]
+
+
 def test_use_without_a_purpose_is_no_verb(library: Library) -> None:
     with pytest.raises(CommandError, match="unknown verb 'use'"):
         parse_command("use the phone", library)

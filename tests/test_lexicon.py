@@ -89,6 +89,7 @@ def test_morphology_from_lemminflect() -> None:
     assert [noun_lemma(w) for w in ("knives", "people", "persons", "glasses", "tomatoes", "cups", "Sofa")] == \
         ["knife", "people", "person", "glass", "tomato", "cup", "sofa"]
     assert noun_lemma("cheezits") == "cheezits"                # a word the dictionary lacks stays as written
+    assert noun_lemma("bars") == "bar" and is_plural("bars")   # listed only as a verb form
     assert is_plural("apples") and is_plural("people") and not is_plural("glass") and not is_plural("cup")
     assert verb_lemma("heated") == "heat" and verb_lemma("lit") == "light" and verb_lemma("sofa") is None
     assert gerund_lemma("wearing") == "wear" and gerund_lemma("ceiling") is None
