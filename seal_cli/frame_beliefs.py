@@ -18,26 +18,29 @@ are, like the authors' sums floored at 1. With ``c₀ = 0`` the context is the b
 then two beliefs that are each uniform over a room multiply to one proportional to 1/area², and
 which room wins depends on room sizes (docs/sefm.md shows the numbers).
 
-**Update** (the paper's Algorithm 1, as a sequential Monte Carlo sampler):
+**Update** (the paper's Algorithm 1 — resample, move, reweight — as a resample-move
+sequential Monte Carlo sampler; written from the reweighting, so that the move can keep the
+target it has just been weighted for):
 
-1. resample by weight (systematic, over the particles listed room by room, so that each room
-   keeps its share of the belief to within one particle);
-2. move each particle by the prediction potential, a Gaussian of the frame's own spread
-   (static frames barely move, frames on movable objects move more); a move that would leave
-   free space stays put, which keeps the move symmetric;
-3. reinvigorate: a share of the particles is drawn afresh from ``g = u·U + (1 − u)·M``, uniform
-   free space ``U`` mixed with the frame's elements' beliefs ``M`` (their particles plus
-   N(0, Σ), chosen by B);
-4. reweight: a moved particle by ``Ẑ_{t−1} · γ_t(x') / γ_{t−1}(x)``, a fresh one by
-   ``γ_t(x) / g(x)``; ``Ẑ_t`` is their mean.
+1. reweight each particle by ``γ_t(x) / γ_{t−1}(x)`` at the point where it is (``γ_{t−1}`` is
+   remembered from the last update);
+2. reinvigorate: a share of particles is drawn afresh from ``g = u·U + (1 − u)·M``, uniform free
+   space ``U`` mixed with the frame's elements' beliefs ``M`` (their particles chosen by ``B·W``,
+   plus N(0, Σ)), and weighted ``γ_t(x) / g(x)``. Both groups' weights estimate ``Z_t = ∫ γ_t``
+   (the old ones through the running estimate ``Ẑ``), so they are on one scale and the fresh
+   group takes over exactly when the old particles stop explaining the target (an object just
+   seen);
+3. resample P particles by weight (systematic, over the particles listed room by room, so that
+   each room keeps its share of the belief to within one particle);
+4. move each particle by the prediction potential, a Gaussian of the frame's own spread (static
+   frames barely move, frames on movable objects move more), accepted or not by a
+   Metropolis–Hastings test against ``γ_t``: the move explores without changing the belief.
 
-The ratio in step 4 is the incremental weight of an SMC sampler whose backward kernel is the
-move itself (Del Moral, Doucet and Jasra 2006): the particles track ``π_t``, the frame's
-belief given the *current* object beliefs. Weighting by ``γ_t`` alone would multiply the same
-object evidence in again at every update (the belief after T updates ∝ γ^T) and collapse every
-frame onto its single densest room. Both groups estimate ``Ẑ_t = ∫ γ_t``, so their weights are
-on one scale and the fresh group takes over exactly when the old particles stop explaining the
-target (a newly seen object).
+The particles thus track ``π_t``, the frame's location given the *current* object and frame
+beliefs. Weighting by ``γ_t`` alone after a resampling would multiply the same object evidence
+in again at every update (the belief after T updates ∝ γ^T) and collapse every frame onto its
+single densest room. After an update every particle weighs 1/P; :meth:`FrameBeliefs.ess` is the
+effective sample size of the reweighting.
 """
 
 from __future__ import annotations
@@ -169,12 +172,10 @@ class FrameBeliefs:
         if F == 0:
             return
         n = max(1, int(round(self.model.fresh_share * P)))
-        X, cells = self.X, self.cell
-        if n:
-            drawn, _ = self._draw(terms, sources, n, rng)
-            X = np.concatenate([X, drawn], axis=1)
-            cells = np.concatenate([cells, self.map.free_index(drawn.reshape(-1, 2)).reshape(F, n).astype(np.intp)],
-                                   axis=1)
+        drawn, _ = self._draw(terms, sources, n, rng)
+        X = np.concatenate([self.X, drawn], axis=1)
+        cells = np.concatenate([self.cell, self.map.free_index(drawn.reshape(-1, 2)).reshape(F, n).astype(np.intp)],
+                               axis=1)
         measurement, context = self.potentials(terms, kernel, X)
         gamma = np.where(cells >= 0, self.gamma_of(terms, measurement, context), 0.0)
         ratio = np.divide(gamma[:, :P], self.gamma, out=np.zeros((F, P)), where=self.gamma > 0)
