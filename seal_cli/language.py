@@ -643,7 +643,22 @@ class Builder:
                     best = (key, frame, roles, attached)
         assert best is not None
         _, frame, roles, attached = best
+        self.first_into(frame, roles, attached)
         self.emit(frame, unit, clause, roles, attached)
+
+    def first_into(self, frame: Frame, roles: dict[str, Any], attached: list[tuple[NP, PP]]) -> None:
+        """"Put a spoon *in a bowl* into the sink": the spoon goes into the bowl, and the bowl (a
+        container) into the sink (:meth:`carry_on`)."""
+        relation = self.relation(frame)
+        if relation is None or not isinstance(roles.get(relation.args[1]), NP):
+            return
+        theme, goal = roles.get(relation.args[0]), roles[relation.args[1]]
+        for k, (host, pp) in enumerate(attached):
+            if host is theme and pp.prep in _PUT_IN and pp.np.kind == "thing" and not pp.np.pronoun and \
+                    self.taxonomy.is_a(self.class_or_head(pp.np), "container") is True:
+                roles[relation.args[1]] = pp.np
+                attached[k] = (pp.np, PP("into", goal, goal.start))
+                return
 
     def unfilled(self, frame: Frame, roles: Mapping[str, Any]) -> int:
         return sum(1 for e in frame.elements if e.role not in roles)

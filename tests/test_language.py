@@ -252,6 +252,8 @@ def test_with_is_still_an_instrument_or_a_content(library: Library) -> None:
     ("put a slice into a plate and put it in the microwave", [("slice", "plate"), ("plate", "microwave")]),
     ("put the apple on the table and then put it in the fridge", [("apple", "table"), ("apple", "fridge")]),
     ("put the cup on the table in the kitchen", [("cup", "table")]),            # a table is no container
+    ("Put a spoon in a bowl into the sink", [("spoon", "bowl"), ("bowl", "sink")]),
+    ("move the book on the desk to the shelf", [("book", "shelf")]),
 ])
 def test_a_container_said_to_be_somewhere_goes_there_with_what_was_put_in_it(
         library: Library, text: str, expected: list[tuple[str, str]]) -> None:
