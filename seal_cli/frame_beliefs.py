@@ -275,16 +275,23 @@ class FrameBeliefs:
 
     def _near_elements(self, terms: Terms, sources: tuple[Array, Array], counts: Index,
                        rng: np.random.Generator) -> Array:
-        """``counts[i]`` points for frame i: systematic draws of (element, particle) by ``B_k W_k``, plus N(0, Σ)."""
+        """``counts[i]`` points for frame i: an element chosen by B, then one of its particles by weight —
+        both systematically (each element, and each room of it, gets its share to within one) — plus N(0, Σ)."""
         positions, weights = sources
-        P = weights.shape[1]
+        S, P = weights.shape
         order = np.argsort(terms.meas_frame, kind="stable")
-        frame_of, source_of, belief = terms.meas_frame[order], terms.meas_source[order], terms.meas_weight[order]
-        mixture = (belief[:, None] * weights[source_of]).ravel()
-        pick = grouped_systematic(mixture, np.repeat(frame_of, P), counts, rng)
-        term, particle = np.divmod(pick, P)
-        points = positions[source_of[term], particle]
-        return np.asarray(points + rng.normal(0.0, self.sigma, points.shape))
+        frame_of, source_of = terms.meas_frame[order], terms.meas_source[order]
+        per_term = np.bincount(grouped_systematic(terms.meas_weight[order], frame_of, counts, rng),
+                               minlength=len(order))
+        owner = np.repeat(np.arange(len(order)), per_term)
+        rank = np.arange(len(owner)) - np.repeat(np.cumsum(per_term) - per_term, per_term)
+        row = source_of[owner]
+        cdf = np.cumsum(weights, axis=1)
+        cdf = (cdf / cdf[:, -1:] + np.arange(S)[:, None]).ravel()
+        points = row + (rank + rng.random(len(order))[owner]) / np.maximum(per_term[owner], 1)
+        particle = np.clip(np.searchsorted(cdf, points, side="right") - row * P, 0, P - 1)
+        drawn = positions[row, particle]
+        return np.asarray(drawn + rng.normal(0.0, self.sigma, drawn.shape))
 
 
 def _per_frame(values: Array, frame: Index, frames: int) -> Array:

@@ -58,5 +58,7 @@ def second_house() -> Map:
                         robot=(7.5, 2.0, 0.0), furniture=((12.5, 1.0, 14.5, 3.0),))
 
 
-SECOND_HOUSE_TRAJECTORY = [(7.5, 2.0), (7.5, 6.0), (7.5, 9.5), (3.0, 10.0), (7.5, 9.5), (11.0, 9.5), (12.0, 8.0)]
-"""From the hall through the dining room into the kitchen (sees the spoon), then into the family room (the cup)."""
+SECOND_HOUSE_TRAJECTORY = [(7.5, 2.0), (7.5, 6.0), (7.5, 9.5), (3.0, 10.0), (2.0, 9.0), (4.0, 9.5), (7.5, 9.5),
+                           (11.0, 9.5), (12.0, 8.0)]
+"""From the hall through the dining room into the kitchen (three looks at the spoon: a detector that misses one
+look in ten will not miss them all), then into the family room (the cup)."""
