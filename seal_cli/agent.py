@@ -310,6 +310,9 @@ class Agent:
         if value in self.world.items and value in self.known and name not in self.classes:
             return value  # an item named by itself (a place of the map), not a name the command made up
         key = self.class_of(value)
+        room = self.room(value)
+        if room is not None and not self.instances(key):
+            return self.surface_in(room)
         others = {i for n, i in self.chosen.items() if n != name and self.class_of(n) == key}
         held = self.held()
         if held is not None and held.key == key and held.id not in others:
@@ -327,6 +330,17 @@ class Agent:
         choose = getattr(self.policy, "choose", None)
         pick = choose(self, key, candidates) if choose else None
         return pick or self.nearest(candidates)
+
+    def room(self, value: str) -> Any:
+        """The map's room a value names, if it names one."""
+        index = self.scene.map.room_id(value)
+        return self.scene.map.rooms[index] if index is not None else None
+
+    def surface_in(self, room: Any) -> str | None:
+        """Where to go in a room, or to put a thing down there: the nearest open place in it."""
+        places = [k for k in self.known.values() if not k.movable and k.receptacle
+                  and self.world.items[k.id].is_open and bool(room.contains([k.at])[0])]
+        return self.nearest(places) if places else None
 
     def spent(self, item: str, value: str) -> bool:
         """Whether a known instance cannot serve as ``value`` (put in place already, out of reach,
@@ -411,6 +425,17 @@ class Agent:
                 return Outcome(True, f"at {target}")
             if (stop := self.exhausted()) is not None:
                 return Fatal(False, stop)
+            room = self.room(value)
+            if room is not None:  # a room with no open place in it: drive into it
+                inside = np.flatnonzero(room.contains(self.grid.free_points))
+                field_ = self.distances()
+                cells = self.grid.free_cells[inside]
+                costs = field_[cells[:, 0], cells[:, 1]] if len(cells) else np.zeros(0)
+                if not len(costs) or not np.isfinite(costs.min()):
+                    return Fatal(False, f"cannot drive into {value}")
+                k = int(np.argmin(costs))
+                self.drive_to((int(cells[k, 0]), int(cells[k, 1])), f"goes into {value}")
+                return Outcome(True, f"in {value}")
             view = self.policy.next_view(self, binding, value)
             if view is None:
                 return Fatal(False, f"searched everywhere it could and found no {value}")
@@ -420,6 +445,26 @@ class Agent:
             if view.open is not None:
                 self.open_to_look(view.open)
             self.look()
+
+    def search_for(self, value: str, binding: Binding) -> Outcome:
+        """``search(value)``: look (as ``navigate`` would) until a thing of that kind is known."""
+        role = next((r for r, v in binding.values if v == value), None)
+        while self.resolve(value, binding, role) is None:
+            if (stop := self.exhausted()) is not None:
+                return Fatal(False, stop)
+            view = self.policy.next_view(self, binding, value)
+            if view is None:
+                return Fatal(False, f"searched everywhere it could and found no {value}")
+            self.say("search", f"looks for {value}: {view.why}".rstrip(": "), target=value, view=view.cell)
+            self.drive_to(view.cell, "goes to look")
+            self.world.face(view.look_at)
+            if view.open is not None:
+                self.open_to_look(view.open)
+            self.look()
+        target = self.resolve(value, binding, role)
+        if target is not None and target in self.known:
+            self.world.face(self.known[target].at)
+        return Outcome(True, f"found {target}")
 
     def open_to_look(self, place: str) -> None:
         outcome = self.world.act("open", place)
@@ -473,6 +518,14 @@ class Agent:
     def do(self, action: Action, binding: Binding) -> Outcome:
         """A primitive other than navigate, on the instances its arguments denote; a closed
         receptacle in the way is opened, and the action tried once more."""
+        if action.name in WORDS:  # a message to say, a kind of thing to count: words, not items
+            if action.name == "search":
+                found = self.search_for(action.args[0], binding)
+                if not found.ok:
+                    return found
+            outcome = self.world.act(action.name, *(self.class_of(a) for a in action.args))
+            self.say("act" if outcome.ok else "fail", outcome.message, action=action.name, args=list(action.args))
+            return outcome
         roles = {v: r for r, v in binding.values}
         args: list[str] = []
         for value in action.args:
@@ -522,6 +575,10 @@ class Agent:
         outcome = self.world.act("place", held.id, target)
         self.say("act" if outcome.ok else "fail", outcome.message, action="place", args=[held.id, target])
         return outcome
+
+
+WORDS = frozenset({"search", "count", "say", "answer"})
+"""Primitives whose argument is a word (a kind of thing, a message), not an item of the world."""
 
 
 class Fatal(Outcome):

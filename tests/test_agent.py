@@ -83,3 +83,11 @@ def test_stand_in_planner_chains_preconditions(library: Library) -> None:
     state = State.of([Fact("hand_empty")], library.taxonomy, closable={"fridge"})
     steps = chain_preconditions([library.frame("Place").bind({"theme": "egg", "goal": "fridge"})], library, state)
     assert [str(b) for b in steps] == ["Pick(theme=egg)", "Open(theme=fridge)", "Place(theme=egg, goal=fridge)"]
+
+
+def test_find_searches_until_seen_and_rooms_are_places_to_go(library: Library) -> None:
+    s, agent, result, heard = run(library, [("Find", {"theme": "mug"})])
+    assert result.completed and "mug_1" in agent.known
+    assert heard[-1].kind == "done" and any(r.kind == "act" and "sees mug_1" in r.text for r in heard)
+    s, agent, result, _ = run(library, [("Go", {"goal": "kitchen"})])
+    assert result.completed and s.map.room_of([s.world.robot.pose[:2]]) == ["kitchen"]
