@@ -1,0 +1,62 @@
+"""Reading user files into clear errors; writing outputs whole or not at all."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pytest
+
+from seal_cli.errors import SealError
+from seal_cli.fileio import atomic_output, atomic_write_text, read_text, read_yaml
+
+
+def test_written_files_get_the_usual_mode(tmp_path: Path) -> None:
+    target = tmp_path / "out.txt"
+    atomic_write_text(target, "hello")
+    mask = os.umask(0)
+    os.umask(mask)
+    assert target.read_text() == "hello"
+    assert target.stat().st_mode & 0o777 == 0o666 & ~mask
+
+
+def test_a_failure_leaves_nothing_behind(tmp_path: Path) -> None:
+    target = tmp_path / "out.png"
+    with pytest.raises(RuntimeError), atomic_output(target) as tmp:
+        tmp.write_bytes(b"half")
+        raise RuntimeError("drawing failed")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_an_existing_file_survives_a_failed_rewrite(tmp_path: Path) -> None:
+    target = tmp_path / "out.txt"
+    target.write_text("old")
+    with pytest.raises(RuntimeError), atomic_output(target) as tmp:
+        tmp.write_text("new")
+        raise RuntimeError
+    assert target.read_text() == "old"
+
+
+def test_missing_folder_is_a_clear_error(tmp_path: Path) -> None:
+    with pytest.raises(SealError, match="folder .* does not exist"), atomic_output(tmp_path / "no" / "x.rrd"):
+        pass
+
+
+def test_reading_errors_name_the_file(tmp_path: Path) -> None:
+    with pytest.raises(SealError, match="no such file"):
+        read_text(tmp_path / "missing.yaml")
+    with pytest.raises(SealError, match="is a folder"):
+        read_text(tmp_path)
+    binary = tmp_path / "b.yaml"
+    binary.write_bytes(b"\xff\xfe\x00")
+    with pytest.raises(SealError, match="not UTF-8"):
+        read_text(binary)
+
+
+def test_yaml_syntax_errors_carry_line_column_and_caret(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("poses:\n  - [1, 2\n  - [3, 4]\n")
+    with pytest.raises(SealError) as caught:
+        read_yaml(bad)
+    assert caught.value.line == 3 and caught.value.file == str(bad)
+    assert str(caught.value).splitlines()[-1].endswith("^")
