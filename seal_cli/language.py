@@ -134,6 +134,24 @@ class Types:
         self.taxonomy = library.taxonomy
         self._is_a: dict[tuple[str, str], bool | None] = {}
         self._open: dict[str, bool] = {}
+        self._roles: dict[str, frozenset[str]] = {}
+        self._relations: dict[str, Any] = {}
+
+    def roles(self, frame: Frame) -> frozenset[str]:
+        """The frame's element roles (asked for every phrase of every clause: memoised by name)."""
+        found = self._roles.get(frame.name)
+        if found is None:
+            found = self._roles[frame.name] = frozenset(e.role for e in frame.elements)
+        return found
+
+    def relation(self, frame: Frame) -> Any:
+        """The frame's positive postcondition relating its first element to another
+        (``in(theme, goal)``), or None; memoised by name."""
+        if frame.name not in self._relations:
+            first = frame.elements[0].role if frame.elements else None
+            self._relations[frame.name] = next((p for p in frame.postconditions if not p.negated
+                                                and len(p.args) == 2 and p.args[0] == first), None)
+        return self._relations[frame.name]
 
     def is_a(self, cls: str, type_: str) -> bool | None:
         key = (cls, type_)
@@ -618,9 +636,9 @@ class Builder:
     def clause(self, clause: Clause) -> None:
         unit = str(clause.verb.info)
         frames = self.library.evoked_by(unit)
-        if not any("instrument" in f.roles for f in frames):     # "use a card to turn on the lamp": hold it
-            used = [x for x in clause.items if isinstance(x, PP) and x.lead and x.prep == "with"]
-            clause.held += [x.np for x in used]
+        used = [x for x in clause.items if isinstance(x, PP) and x.lead and x.prep == "with"]
+        if used and not any("instrument" in self.taxonomy.roles(f) for f in frames):
+            clause.held += [x.np for x in used]             # "use a card to turn on the lamp": hold it
             clause.items = [x for x in clause.items if not any(x is u for u in used)]
         for np in clause.held:
             self.hold(np)
@@ -669,19 +687,20 @@ class Builder:
         roles: dict[str, Any] = {}
         attached: list[tuple[NP, PP]] = []
         first = frame.elements[0].role if frame.elements else None
+        have = self.taxonomy.roles(frame)
         objects = list(clause.objects)
         if clause.message is not None and first is not None:
             roles[first] = clause.message
-            if objects and "recipient" in frame.roles:
+            if objects and "recipient" in have:
                 roles["recipient"] = objects.pop(0)
         elif len(objects) >= 2:
-            if "recipient" in frame.roles:
+            if "recipient" in have:
                 roles["recipient"] = objects.pop(0)
             elif strict:
                 return None
         if objects and first is not None and first not in roles:
             only = objects.pop(0)
-            if ("recipient" in frame.roles and only.kind == "person"
+            if ("recipient" in have and only.kind == "person"
                     and not self.is_person_type(frame.elements[0].type) and frame.elements[0].role != "goal"):
                 roles["recipient"] = only            # "tell Robin", "give Maria": the person receives
             else:
@@ -713,7 +732,7 @@ class Builder:
                  has_to: bool = False) -> str | None:
         """The element a prepositional phrase fills in this frame, or None (it describes a noun).
         A locative phrase is no goal when a *to* phrase says the goal ("the book on the bed to the desk")."""
-        have = frame.roles
+        have = self.taxonomy.roles(frame)
         np = pp.np
         person = self.kind(np, frame, "recipient" if "recipient" in have else None) == "person"
         if pp.prep in _TO or pp.prep == "for":
@@ -844,12 +863,8 @@ class Builder:
             return None
         return len(self.frames) - 1, relation.args[1], "thing"
 
-    @staticmethod
-    def relation(frame: Frame) -> Any:
-        """The frame's positive postcondition relating its first element to another (``in(theme, goal)``)."""
-        first = frame.elements[0].role if frame.elements else None
-        return next((p for p in frame.postconditions if not p.negated and len(p.args) == 2 and p.args[0] == first),
-                    None)
+    def relation(self, frame: Frame) -> Any:
+        return self.taxonomy.relation(frame)
 
     # -- frames out ----------------------------------------------------------------------------
     def emit(self, frame: Frame, unit: str, clause: Clause, roles: dict[str, Any],
