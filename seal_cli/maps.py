@@ -382,6 +382,11 @@ class Map:
         index = int(self.room_index(np.array([xy]))[0])
         return self.rooms[index].name if index >= 0 else None
 
+    def known(self) -> Map:
+        """What a robot knows of this map before it looks: everything but the ground-truth objects,
+        which only simulate what it would see. Plans made for localising and searching use this."""
+        return replace(self, objects=()) if self.objects else self
+
     def where(self, *path: str | int) -> Where:
         """Where a part of the map (by YAML path) was written; the longest known prefix, else the file."""
         for end in range(len(path), 0, -1):

@@ -123,20 +123,25 @@ def localize(
 def _plan(tasks: list[str], library: Any, holding: str | None, done: list[str], the_map: Any,
           plan_text: Any) -> tuple[list[Any], Any]:
     """Every distinct grounded frame of the tasks' plans, in order, and the state they start from."""
+    from ..grounding import vocabulary_of_map
     from ..problem import Things, problem_of_text
     from ..state import State
 
+    # Plans are made from what the robot knows: not from the map's ground-truth objects.
+    vocabulary = vocabulary_of_map(the_map)
+    the_map = the_map.known()
     bindings: list[Any] = []
     state: State | None = None
     for text in tasks:
-        plan = plan_text(text, library, holding=holding, done=tuple(done), map=the_map)
+        plan = plan_text(text, library, holding=holding, done=tuple(done), map=the_map, vocabulary=vocabulary)
         state = state or plan.initial
         for binding in plan.bindings:
             if binding not in bindings:
                 bindings.append(binding)
     if state is None:  # no task: the state the map, the hand and the commands already done leave
         if done:
-            problem = problem_of_text(done[-1], library, holding=holding, done=tuple(done[:-1]), map=the_map)
+            problem = problem_of_text(done[-1], library, holding=holding, done=tuple(done[:-1]), map=the_map,
+                                      vocabulary=vocabulary)
             state = problem.state
             for binding in problem.commanded:
                 state = state.apply(binding)
