@@ -167,3 +167,10 @@ def test_a_failing_run_leaves_no_output(tmp_path: Path) -> None:
 def test_usage_errors_are_typers() -> None:
     assert runner.invoke(app, ["localize", "--map", "apartment", "--particles", "0"]).exit_code == 2
     assert runner.invoke(app, ["localize"]).exit_code == 2
+
+
+def test_plans_do_not_know_where_the_objects_really_are() -> None:
+    """The map's objects only simulate what the robot sees: no frame is grounded to the counter the spoon is on."""
+    result = localize("--task", "stir the cup", "--steps", "1")
+    assert [(f["frame"], f["elements"]) for f in result["frames"]] == [
+        ("Pick", {"theme": "spoon"}), ("Stir", {"theme": "cup", "instrument": "spoon"})]
