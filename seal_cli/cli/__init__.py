@@ -105,8 +105,14 @@ def _register() -> None:
     import importlib
     import pkgutil
 
-    for module in sorted(m.name for m in pkgutil.iter_modules(__path__) if m.name.endswith("_cmd")):
+    found = {m.name for m in pkgutil.iter_modules(__path__) if m.name.endswith("_cmd")}
+    order = [m for m in COMMAND_ORDER if m in found] + sorted(found - set(COMMAND_ORDER))
+    for module in order:
         importlib.import_module(f"{__name__}.{module}")
+
+
+COMMAND_ORDER = ("parse_cmd", "plan_cmd", "localize_cmd", "run_cmd", "library_cmd", "map_cmd")
+"""The order commands appear in ``seal --help``: the pipeline first, then the tools."""
 
 
 _register()
