@@ -29,7 +29,16 @@ from dataclasses import dataclass
 
 from .errors import SealError, Where
 from .library import Library
-from .morphology import gerund_lemma, is_adjective, is_gradable, is_plural, noun_lemma, participles, verb_lemma
+from .morphology import (
+    gerund_lemma,
+    is_adjective,
+    is_adverb,
+    is_gradable,
+    is_plural,
+    noun_lemma,
+    participles,
+    verb_lemma,
+)
 
 __all__ = ["MAX_LENGTH", "CommandError", "Lexicon", "Word", "is_plural", "noun_lemma", "tokenize", "verb_lemma"]
 
@@ -606,6 +615,8 @@ class Tagger:
                 and self._noun_follows(i + 3):
             self._emit(i, 1, "RESULT", result)                  # "a cooked, rinsed egg"
             return 2
+        if not in_np and low.isalpha() and is_adverb(low) and prev != "DET":
+            return self._emit(i, 1, "PARTICLE")                # "gather together", "put it carefully on ..."
         if _capitalised(w) and not in_np and prev != "WORD" and low not in _CLOSED:
             if prev == "NAME":          # "Mary Ann": one name
                 last = self.out[-1]

@@ -20,7 +20,8 @@ import importlib.util
 from functools import lru_cache
 from pathlib import Path
 
-__all__ = ["gerund_lemma", "is_adjective", "is_gradable", "is_plural", "noun_lemma", "participles", "verb_lemma"]
+__all__ = ["gerund_lemma", "is_adjective", "is_adverb", "is_gradable", "is_plural", "noun_lemma", "participles",
+           "verb_lemma"]
 
 
 class _Table:
@@ -110,6 +111,14 @@ def gerund_lemma(word: str) -> str | None:
 def is_adjective(word: str) -> bool:
     """Whether lemminflect lists the word as an adjective ("hot", "clean")."""
     return any(entry[0] == "adj" for entry in _WORDS.entries(word.lower()))
+
+
+@lru_cache(maxsize=65536)
+def is_adverb(word: str) -> bool:
+    """Whether lemminflect lists the word as an adverb and as nothing else ("together",
+    "carefully"; not "upright", also an adjective and a noun)."""
+    entries = _WORDS.entries(word.lower())
+    return bool(entries) and all(entry[0] == "adv" for entry in entries)
 
 
 @lru_cache(maxsize=4096)

@@ -230,6 +230,11 @@ def test_a_place_said_of_the_object_is_no_goal_when_a_to_phrase_says_one(library
                                                                         "source": "bed"}
 
 
+def test_adverbs_are_no_nouns(library: Library) -> None:
+    assert elements("put the cup carefully on the table", library) == {"theme": "cup", "goal": "table"}
+    assert elements("gather together two key rings", library) == {"theme": "ring"}
+
+
 def test_result_words_listed_with_commas(library: Library) -> None:
     assert frames_of("Put a cooked, rinsed egg on the counter", library) == ["Heat", "Clean", "Place"]
 

@@ -90,6 +90,10 @@ def test_morphology_from_lemminflect() -> None:
         ["knife", "people", "person", "glass", "tomato", "cup", "sofa"]
     assert noun_lemma("cheezits") == "cheezits"                # a word the dictionary lacks stays as written
     assert noun_lemma("bars") == "bar" and is_plural("bars")   # listed only as a verb form
+    from seal_cli.morphology import is_adverb, is_gradable
+
+    assert is_adverb("together") and is_adverb("carefully") and not is_adverb("upright") and not is_adverb("cup")
+    assert is_gradable("warm") and not is_gradable("wash") and not is_gradable("cup")
     assert is_plural("apples") and is_plural("people") and not is_plural("glass") and not is_plural("cup")
     assert verb_lemma("heated") == "heat" and verb_lemma("lit") == "light" and verb_lemma("sofa") is None
     assert gerund_lemma("wearing") == "wear" and gerund_lemma("ceiling") is None
