@@ -99,7 +99,7 @@ WH_WORDS = _closed_class("what which who whom whose where when why how whether i
 BE_WORDS = _closed_class("is are was were be am 's been being")
 SEPARATOR_WORDS = frozenset(["and", "then", ",", ";", ":", "after that", "afterwards", "next", "finally",
                              "and then", "and after that", "after", "also", "once done", "when done",
-                             "and finally", "before", "while", "or", "as well as", "plus"])
+                             "and finally", "before", "while", "or", "as well as", "plus", "followed by"])
 AND_WORDS = frozenset(["and", "as well as", "plus"])
 """Words that join like "and" (clauses or noun phrases)."""
 POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "will you", "would you mind",
@@ -503,6 +503,8 @@ class Tagger:
         if self.verb_after(j):
             self.out.append(_merge(words, i, j - i, "SEP"))
             return j - i
+        if phrase == "followed by":
+            return 0                 # "the cup followed by the plate": no clause follows
         if j >= len(words) or words[j].lower in END_MARKS:
             if low in (",", ";", ":"):
                 return j - i        # a trailing comma is nothing

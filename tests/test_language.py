@@ -213,6 +213,7 @@ def test_use_x_to_do_something(library: Library, text: str, expected: list[tuple
     ("slice, then refrigerate the apple", [("Slice", "apple"), ("Cool", "apple")]),
     ("heat an apple as well as place it on the table", [("Heat", "apple"), ("Place", "apple")]),
     ("cut a potato plus heat it", [("Slice", "potato"), ("Heat", "potato")]),
+    ("pick up the pillow followed by turning on the light", [("Pick", "pillow"), ("ToggleOn", "light")]),
     ("put the slice as well as the knife in the fridge", [("Place", "slice")]),         # joins noun phrases too
     ("Chill a cup to put on the counter", [("Cool", "cup"), ("Place", "cup")]),        # purpose, object unsaid
 ])
