@@ -762,15 +762,27 @@ class SeFMPolicy:
                             if sefm.bindings else None, "objects": objects})
 
     def cloud(self, agent: Agent, target: str) -> tuple[np.ndarray, np.ndarray, list[Any]]:
-        """The particles and weights that say where to look (the current frame's, or for
-        object-only the object's), and their modes."""
+        """Where the thing sought is believed to be, as a weight per free cell of the map, and the
+        belief's modes. SeFM: the current frame's target density (measurement × context, the density
+        its particles track, evaluated without their sampling noise); object-only: the object's
+        particles smoothed by the same kernel."""
         sefm = self._beliefs(agent)
         sefm.update(agent.world.robot.pose, (), self._state(agent))
+        points = self.map.free_centres
         if self.use_frames:
             i = self.frame_index(agent)
-            return sefm.frames.X[i], sefm.frames.W[i], list(sefm.frame_summary(i).modes)
-        row = sefm.objects.row(agent.class_of(target))
-        return sefm.objects.X[row], sefm.objects.W[row], list(sefm.object_summary(agent.class_of(target)).modes)
+            frames = sefm.frames
+            terms = sefm.terms()
+            grid = np.broadcast_to(points, (len(sefm.bindings), len(points), 2))
+            density = frames.gamma_of(terms, *frames.potentials(terms, sefm.kernel, grid))[i]
+            modes = list(sefm.frame_summary(i).modes)
+        else:
+            row = sefm.objects.row(agent.class_of(target))
+            density = sefm.kernel.sample(np.array([row]), points[None])[0]
+            modes = list(sefm.object_summary(agent.class_of(target)).modes)
+        density = np.where(np.isfinite(density) & (density > 0), density, 0.0)
+        total = density.sum()
+        return points, (density / total if total > 0 else np.full(len(points), 1.0 / len(points))), modes
 
     serve_commanded = False
     """Search by the belief of the commanded frame the current step serves (Stir(cup) while picking
