@@ -45,7 +45,7 @@ import yaml
 from numpy.typing import NDArray
 
 from .errors import SealError, SealErrors, Where
-from .fileio import read_text
+from .fileio import LOADER, read_text
 from .geometry import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 from .maps import Map, MapWarning, ObjectTruth, Place, Robot, Room, Sensor, _suggest
 from .taxonomy import class_key
@@ -204,7 +204,7 @@ class _Reader:
     def number(self, node: yaml.Node, what: str, ok: Callable[[float], bool] = math.isfinite,
                need: str = "a number") -> float | None:
         value = self.value(node) if isinstance(node, yaml.ScalarNode) else None
-        if isinstance(value, str) and getattr(node, "style", "") is None:  # YAML 1.1 reads 1e-9 as a string
+        if isinstance(value, str) and not getattr(node, "style", "x"):  # YAML 1.1: plain 1e-9 is a string
             with contextlib.suppress(ValueError):
                 value = float(value)
         if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value) \
@@ -544,7 +544,7 @@ def read_map(path: str | Path) -> tuple[Map | None, list[SealError]]:
     except SealError as exc:
         return None, [exc]
     try:
-        root = yaml.compose(text, Loader=yaml.SafeLoader)
+        root = yaml.compose(text, Loader=LOADER)
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
         lines = text.splitlines()

@@ -32,7 +32,7 @@ from pathlib import Path
 import yaml
 
 from .errors import SealError, Where
-from .fileio import read_text
+from .fileio import LOADER, read_text
 
 __all__ = ["Observation", "check_inside", "read_observations", "read_trajectory"]
 
@@ -61,7 +61,7 @@ class _Reader:
 
     def root(self) -> yaml.Node | None:
         try:
-            return yaml.compose(self.text, Loader=yaml.SafeLoader)
+            return yaml.compose(self.text, Loader=LOADER)
         except yaml.MarkedYAMLError as exc:
             mark = exc.problem_mark or exc.context_mark
             where = Where(self.file, mark.line + 1, mark.column + 1) if mark else Where(self.file)

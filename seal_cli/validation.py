@@ -25,6 +25,7 @@ import yaml
 
 from .actions import PRIMITIVES
 from .errors import SealError, Where
+from .fileio import LOADER
 from .frames import Fact, Frame
 from .taxonomy import Synonyms, Taxonomy, class_key
 
@@ -205,7 +206,7 @@ def is_map_file(path: Path) -> bool:
     if path.suffix not in (".yaml", ".yml"):
         return False
     try:
-        node = yaml.compose(path.read_text(encoding="utf-8"), Loader=yaml.SafeLoader)
+        node = yaml.compose(path.read_text(encoding="utf-8"), Loader=LOADER)
     except (yaml.YAMLError, OSError, UnicodeDecodeError):
         return False
     if not isinstance(node, yaml.MappingNode):

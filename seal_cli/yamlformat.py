@@ -28,6 +28,7 @@ from typing import TypeVar
 import yaml
 
 from .errors import SealError, Where
+from .fileio import LOADER
 from .frames import Action, Element, Fact, Frame, LexicalUnit
 from .library import Contents
 from .taxonomy import Category, Synonyms, Taxonomy
@@ -252,7 +253,7 @@ def read(text: str, file: str = "<yaml>") -> Contents:
     """The frames, categories and problems in a YAML frame file's text."""
     reader = _Reader(text, file)
     try:
-        documents = list(yaml.compose_all(text, Loader=yaml.SafeLoader))
+        documents = list(yaml.compose_all(text, Loader=LOADER))
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
         where = Where(file, mark.line + 1, mark.column + 1) if mark else Where(file)
