@@ -204,8 +204,8 @@ def _tag_lexer() -> type:
                 pass
 
             def lex(self, data: Any) -> Iterator[Token]:   # type: ignore[override]
-                for w in data:
-                    yield Token(w.tag, w.text, w.start, 1, w.start + 1, 1, w.end + 1, w.end)
+                for i, w in enumerate(data):   # start_pos is the word's index: trees are shared by shape
+                    yield Token(w.tag, w.text, i, 1, w.start + 1, 1, w.end + 1, w.end)
 
         _TagLexer.__name__ = _TagLexer.__qualname__ = "TagLexer"
         TagLexer = _TagLexer
@@ -242,13 +242,24 @@ def parse_command(text: str, library: Library, vocabulary: Vocabulary | None = N
     if not words:
         raise CommandError("no words in the command: expected a verb, such as " + _some_verbs(lexicon),
                            _first_column(text), text, ["a verb"])
-    try:
-        tree = command_parser().parse(words)
-    except UnexpectedInput as error:
-        raise _explain(error, text, words, lexicon) from None
+    tags = tuple(w.tag for w in words)
+    tree = _TREES.get(tags)
+    if tree is None:
+        try:
+            tree = command_parser().parse(words)
+        except UnexpectedInput as error:
+            raise _explain(error, text, words, lexicon) from None
+        if len(_TREES) >= 4096:
+            _TREES.clear()
+        _TREES[tags] = tree
     if vocabulary is not None:
         vocabulary = with_library_synonyms(vocabulary, library)
-    return Builder(text, library, types, vocabulary, {w.start: w for w in words}).command(tree)
+    return Builder(text, library, types, vocabulary, words).command(tree)
+
+
+_TREES: dict[tuple[str, ...], Tree] = {}
+"""Parse trees by tag sequence. The grammar reads tags, not words, and a tree's tokens point at
+words by their index, so commands of one shape ("take the X from the Y") share one parse."""
 
 
 _MERGED: dict[tuple[int, int], tuple[Vocabulary, Library, Vocabulary]] = {}
@@ -318,13 +329,13 @@ def _explain(error: Any, text: str, words: Sequence[Word], lexicon: Lexicon) -> 
         return CommandError("cannot parse the command", 1, text, expected)
     token = error.token
     at_end = token.type == "$END"
-    column = len(text.rstrip()) + 1 if at_end else token.start_pos + 1
+    column = len(text.rstrip()) + 1 if at_end else words[token.start_pos].start + 1
     wants_verb = "VERB" in (error.expected or ())
     if wants_verb and not at_end and token.type not in ("END", "SEP"):
         word = str(token).split()[0].lower()
         return CommandError(f"unknown verb {word!r}; known verbs include {_some_verbs(lexicon, word)}",
                             column, text, ["a verb"])
-    before = _word_before(words, token.start_pos if not at_end else len(text))
+    before = _word_before(words, words[token.start_pos].start if not at_end else len(text))
     after = f" after {before!r}" if before else ""
     if wants_verb:
         return CommandError(f"expected a verb{after}, such as {_some_verbs(lexicon)}", column, text, ["a verb"])
@@ -412,7 +423,7 @@ class Builder:
     """Turns the tree of one command into frames (see the module docstring)."""
 
     def __init__(self, text: str, library: Library, types: Types, vocabulary: Vocabulary | None,
-                 words: Mapping[int, Word]) -> None:
+                 words: Sequence[Word]) -> None:
         self.text = text
         self.library = library
         self.taxonomy = types
@@ -435,7 +446,7 @@ class Builder:
                 joins.append(sep)
                 sep = ""
             elif not isinstance(child, Tree) and child.type == "SEP":
-                sep = str(child).lower()
+                sep = self.word(child).text.lower()   # the word, not the token: trees are shared
         for k in range(len(clauses) - 1):         # "slice and chill an apple": both the apple
             bare, nxt = clauses[k], clauses[k + 1]
             if not (bare.objects or bare.items or bare.message or bare.held) and nxt.objects and \

@@ -390,3 +390,27 @@ def test_random_text_parses_or_fails_cleanly(library: Library, text: str) -> Non
         parse_command(text, library)
     except SealError as error:
         assert error.message and error.column is not None
+
+
+def test_parse_trees_shared_by_shape_give_the_same_parses(library: Library, shared_data) -> None:
+    """Commands of one tag sequence share a parse tree; the result must be what a fresh parse gives."""
+    import csv
+
+    from seal_cli import language
+
+    texts = [json.loads(line)["text"] for line in (shared_data / "gpsr" / "dev.jsonl").open()][:400]
+    with (shared_data / "alfred" / "goals_valid_seen.tsv").open() as rows:
+        texts += [row["goal_sentence"] for row in csv.DictReader(rows, delimiter="\t")][:400]
+
+    def parse_all(fresh: bool) -> list[object]:
+        results: list[object] = []
+        for text in texts:
+            if fresh:
+                language._TREES.clear()
+            try:
+                results.append(parse_command(text, library).to_json())
+            except SealError as error:
+                results.append(str(error))
+        return results
+
+    assert parse_all(fresh=False) == parse_all(fresh=True)
