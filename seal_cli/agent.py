@@ -155,6 +155,8 @@ class Agent:
         self.chosen: dict[str, str] = {}
         """The instance chosen for each name a frame uses, across frames (open *this* cabinet, put into it)."""
         self.looks: list[tuple[float, float, float]] = []
+        self.inspected: set[str] = set()
+        """Places the robot has looked into or onto from within reach: it has seen all they hold."""
         self.classes = {class_key(k): class_key(v) for k, v in (classes or {}).items()}
         """The class of each thing a command names that is not a class itself (``apple_2``)."""
         self.state = State()
@@ -502,6 +504,8 @@ class Agent:
         pose = self.world.robot.pose
         detections = self.world.observe()
         self.looks.append(pose)
+        self.inspected |= {k.id for k in self.known.values() if not k.movable and self.world.items[k.id].is_open
+                           and self.world.within_reach(k.id, pose)}
         new = []
         for d in detections:
             item = self.world.items[d.id]
@@ -815,7 +819,7 @@ class SeFMPolicy:
         seeing = self.map.sensor.range
         options: list[tuple[float, float, View]] = []
         for place in agent.known.values():  # every place is somewhere to look: what is in or on it
-            if place.movable:
+            if place.movable or place.id in agent.inspected:
                 continue
             where = self.map.place(place.id)
             reach = where.reach if where is not None else agent.world.reach
