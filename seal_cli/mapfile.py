@@ -47,8 +47,11 @@ from numpy.typing import NDArray
 from .errors import SealError, SealErrors, Where
 from .fileio import LOADER, read_text
 from .geometry import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
-from .maps import Map, MapWarning, ObjectTruth, Place, Robot, Room, Sensor, _suggest
+from .maps import Map, MapWarning, ObjectTruth, Place, Robot, Room, Sensor
 from .taxonomy import class_key
+from .yamlnodes import NodeReader
+from .yamlnodes import is_null as _is_null
+from .yamlnodes import shape as _shape
 
 __all__ = ["KEYS", "check_map_file", "load_map", "read_image", "read_map", "read_pgm"]
 
@@ -163,35 +166,15 @@ def read_image(path: Path, negate: bool = False, occupied_thresh: float = 0.65, 
 
 
 # -- the YAML reader --------------------------------------------------------------------------------
-class _Reader:
+class _Reader(NodeReader):
     """Turns a composed YAML map into a Map, collecting every problem with its position."""
 
     def __init__(self, text: str, path: Path) -> None:
+        super().__init__(text, str(path))
         self.path = path
-        self.file = str(path)
-        self.lines = text.splitlines()
-        self.problems: list[SealError] = []
         self.positions: dict[Path_, Where] = {}
         self.broken: set[str] = set()
         self._construct = yaml.constructor.SafeConstructor()
-
-    # -- positions and problems -------------------------------------------------------------
-    def where(self, node: yaml.Node) -> Where:
-        return Where(self.file, node.start_mark.line + 1, node.start_mark.column + 1)
-
-    def problem(self, message: str, node: yaml.Node | None) -> None:
-        where = self.where(node) if node is not None else Where(self.file)
-        line = self.lines[where.line - 1] if where.line and where.line <= len(self.lines) else None
-        self.problems.append(SealError(message, where, source_line=line))
-
-    def build(self, make: Callable[[], T], node: yaml.Node) -> T | None:
-        """Build a value object; a SealError it raises becomes a problem at ``node``."""
-        try:
-            return make()
-        except SealError as exc:
-            for problem in getattr(exc, "problems", None) or [exc]:
-                self.problem(problem.message, node)
-            return None
 
     # -- values -------------------------------------------------------------------------------
     def value(self, node: yaml.Node) -> Any:
@@ -230,12 +213,6 @@ class _Reader:
         values = self.numbers(node, what, (2,))
         return (values[0], values[1]) if values else None
 
-    def string(self, node: yaml.Node, what: str) -> str | None:
-        if isinstance(node, yaml.ScalarNode) and node.tag != "tag:yaml.org,2002:null" and str(node.value).strip():
-            return str(node.value)
-        self.problem(f"{what} must be a single value, not {_shape(node)}", node)
-        return None
-
     def boolean(self, node: yaml.Node, what: str) -> bool | None:
         value = self.value(node) if isinstance(node, yaml.ScalarNode) else None
         if isinstance(value, bool) or value in (0, 1):
@@ -243,36 +220,11 @@ class _Reader:
         self.problem(f"{what} must be true or false, not {getattr(node, 'value', _shape(node))!r}", node)
         return None
 
-    def items(self, node: yaml.Node, what: str) -> list[yaml.Node]:
-        if isinstance(node, yaml.SequenceNode):
-            return list(node.value)
-        if _is_null(node):
-            return []
-        self.problem(f"{what} must be a list, not {_shape(node)}", node)
-        return []
-
-    def pairs(self, node: yaml.Node, what: str, path: Path_, allowed: tuple[str, ...] | None = None
-              ) -> Iterator[tuple[str, yaml.Node, yaml.Node]]:
-        """A mapping's (key, key node, value node); unknown and repeated keys are problems.
-        Records each key's position under ``path + (key,)``."""
-        if _is_null(node):
-            return
-        if not isinstance(node, yaml.MappingNode):
-            self.problem(f"{what} must be a mapping, not {_shape(node)}", node)
-            return
-        seen: set[str] = set()
-        for key_node, value_node in node.value:
-            key = self.string(key_node, "a key")
-            if key is None:
-                continue
-            if key in seen:
-                self.problem(f"{what} repeats the key {key!r}", key_node)
-                continue
-            seen.add(key)
-            if allowed is not None and key not in allowed:
-                self.problem(f"unknown key {key!r} in {what}{_suggest(key, allowed)}; known keys are "
-                             f"{', '.join(allowed)}", key_node)
-                continue
+    def pairs_at(self, node: yaml.Node, what: str, path: Path_, allowed: tuple[str, ...] | None = None
+                 ) -> Iterator[tuple[str, yaml.Node, yaml.Node]]:
+        """:meth:`NodeReader.pairs` (nothing is an empty mapping), recording each key's position under
+        ``path + (key,)`` for the map's own checks."""
+        for key, key_node, value_node in self.pairs(node, what, allowed, empty=True):
             self.positions[path + (key,)] = self.where(key_node)
             yield key, key_node, value_node
 
@@ -283,7 +235,7 @@ class _Reader:
             return None
         fields: dict[str, Any] = {}
         nodes: dict[str, yaml.Node] = {}
-        for key, _, value in self.pairs(root, "a map file", (), KEYS):
+        for key, _, value in self.pairs_at(root, "a map file", (), KEYS):
             nodes[key] = value
         server = self.map_server(nodes, root)
         fields["name"] = (self.string(nodes["name"], "name") if "name" in nodes else None) or _default_name(self.path)
@@ -368,7 +320,7 @@ class _Reader:
         rooms = []
         for i, item in enumerate(self.items(node, "rooms")):
             self.positions[("rooms", i)] = self.where(item)
-            fields = {key: value for key, _, value in self.pairs(item, "a room", ("rooms", i), ROOM_KEYS)}
+            fields = {key: value for key, _, value in self.pairs_at(item, "a room", ("rooms", i), ROOM_KEYS)}
             if not isinstance(item, yaml.MappingNode):
                 continue
             name = self.string(fields["name"], "a room's name") if "name" in fields else None
@@ -414,7 +366,7 @@ class _Reader:
         places = []
         for i, item in enumerate(self.items(node, "places")):
             self.positions[("places", i)] = self.where(item)
-            fields = {key: value for key, _, value in self.pairs(item, "a place", ("places", i), PLACE_KEYS)}
+            fields = {key: value for key, _, value in self.pairs_at(item, "a place", ("places", i), PLACE_KEYS)}
             if not isinstance(item, yaml.MappingNode):
                 continue
             missing = [k for k in ("name", "class", "at") if k not in fields]
@@ -443,7 +395,7 @@ class _Reader:
     def priors(self, node: yaml.Node) -> dict[str, dict[str, float]]:
         priors: dict[str, dict[str, float]] = {}
         first: dict[str, str] = {}
-        for cls, key_node, value in self.pairs(node, "priors", ("priors_raw",)):
+        for cls, key_node, value in self.pairs_at(node, "priors", ("priors_raw",)):
             key = class_key(cls)
             if key in first:
                 self.problem(f"priors name the class {cls!r} twice (as {first[key]!r} too)", key_node)
@@ -451,7 +403,7 @@ class _Reader:
             first[key] = cls
             self.positions[("priors", key)] = self.where(key_node)
             masses: dict[str, float] = {}
-            for target, target_node, mass_node in self.pairs(value, f"the prior of {cls}", ("priors_raw", cls)):
+            for target, target_node, mass_node in self.pairs_at(value, f"the prior of {cls}", ("priors_raw", cls)):
                 self.positions[("priors", key, target)] = self.where(target_node)
                 mass = self.number(mass_node, f"the mass of {target} in the prior of {cls}")
                 if mass is not None:
@@ -464,7 +416,7 @@ class _Reader:
         objects = []
         for i, item in enumerate(self.items(node, "objects")):
             self.positions[("objects", i)] = self.where(item)
-            fields = {key: value for key, _, value in self.pairs(item, "an object", ("objects", i), OBJECT_KEYS)}
+            fields = {key: value for key, _, value in self.pairs_at(item, "an object", ("objects", i), OBJECT_KEYS)}
             if not isinstance(item, yaml.MappingNode):
                 continue
             if "class" not in fields:
@@ -487,7 +439,7 @@ class _Reader:
         return tuple(objects)
 
     def robot(self, node: yaml.Node) -> Robot | None:
-        fields = {key: value for key, _, value in self.pairs(node, "robot", ("robot",), ROBOT_KEYS)}
+        fields = {key: value for key, _, value in self.pairs_at(node, "robot", ("robot",), ROBOT_KEYS)}
         pose = self.numbers(fields["pose"], "robot pose", (2, 3)) if "pose" in fields else []
         holding = None
         if "holding" in fields and not _is_null(fields["holding"]):
@@ -498,7 +450,7 @@ class _Reader:
                           node)
 
     def sensor(self, node: yaml.Node) -> Sensor | None:
-        fields = {key: value for key, _, value in self.pairs(node, "sensor", ("sensor",), SENSOR_KEYS)}
+        fields = {key: value for key, _, value in self.pairs_at(node, "sensor", ("sensor",), SENSOR_KEYS)}
         checks: dict[str, tuple[Callable[[float], bool], str]] = {
             "range": (lambda v: v > 0, "a positive number of metres"),
             "fov": (lambda v: 0 < v <= 360, "degrees in (0, 360]"),
@@ -511,20 +463,6 @@ class _Reader:
             return None
         args = {("fov_deg" if k == "fov" else k): v for k, v in values.items()}
         return self.build(lambda: Sensor(**args, where=self.where(node)), node)  # type: ignore[arg-type]
-
-
-def _is_null(node: yaml.Node) -> bool:
-    return isinstance(node, yaml.ScalarNode) and node.tag == "tag:yaml.org,2002:null"
-
-
-def _shape(node: yaml.Node) -> str:
-    if isinstance(node, yaml.MappingNode):
-        return "a mapping"
-    if isinstance(node, yaml.SequenceNode):
-        return "a list"
-    if _is_null(node):
-        return "nothing"
-    return repr(node.value)
 
 
 def _default_name(path: Path) -> str:

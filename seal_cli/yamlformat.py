@@ -20,18 +20,18 @@ Reading never raises: problems are collected with their file, line and column.
 
 from __future__ import annotations
 
-import difflib
 import functools
 from collections.abc import Callable, Iterator
 from typing import TypeVar
 
 import yaml
 
-from .errors import SealError, Where
+from .errors import Where
 from .fileio import LOADER
 from .frames import Action, Element, Fact, Frame, LexicalUnit
 from .library import Contents
 from .taxonomy import Category, Synonyms, Taxonomy
+from .yamlnodes import NodeReader, is_null
 
 __all__ = ["FRAME_KEYS", "dump", "read"]
 
@@ -43,74 +43,20 @@ TOP_KEYS = ("frames", "categories", "world", "synonyms")
 T = TypeVar("T")
 
 
-class _Reader:
+class _Reader(NodeReader):
     """Turns composed YAML nodes into model objects, recording problems as it goes."""
 
     def __init__(self, text: str, file: str) -> None:
-        self.file = file
-        self.lines = text.splitlines()
-        self.contents = Contents()
+        super().__init__(text, file)
+        self.contents = Contents(problems=self.problems)
 
-    # -- positions and problems -------------------------------------------------------------
-    def where(self, node: yaml.Node) -> Where:
-        return Where(self.file, node.start_mark.line + 1, node.start_mark.column + 1)
-
-    def problem(self, message: str, node: yaml.Node | None = None, where: Where | None = None) -> None:
-        where = where or (self.where(node) if node is not None else Where(self.file))
-        line = self.lines[where.line - 1] if where.line and where.line <= len(self.lines) else None
-        self.contents.problems.append(SealError(message, where, source_line=line))
-
-    def build(self, make: Callable[[], T], node: yaml.Node) -> T | None:
-        """Build a model object; a SealError it raises becomes a problem at ``node``."""
-        try:
-            return make()
-        except SealError as exc:
-            for problem in getattr(exc, "problems", None) or [exc]:
-                self.problem(problem.message, node, problem.where if problem.where.line else None)
-            return None
-
-    # -- node shapes ----------------------------------------------------------------------
-    def string(self, node: yaml.Node, what: str) -> str | None:
-        if isinstance(node, yaml.ScalarNode) and node.tag != "tag:yaml.org,2002:null":
-            return str(node.value)
-        self.problem(f"{what} must be a single value, not {_shape(node)}", node)
-        return None
-
-    def items(self, node: yaml.Node, what: str) -> list[yaml.Node]:
-        """A sequence's items; a single scalar counts as a one-item list."""
-        if isinstance(node, yaml.SequenceNode):
-            return list(node.value)
-        if isinstance(node, yaml.ScalarNode) and node.tag != "tag:yaml.org,2002:null":
-            return [node]
-        if isinstance(node, yaml.ScalarNode):
-            return []
-        self.problem(f"{what} must be a list, not {_shape(node)}", node)
-        return []
-
-    def pairs(self, node: yaml.Node, what: str, allowed: tuple[str, ...] | None = None
-              ) -> Iterator[tuple[str, yaml.Node, yaml.Node]]:
-        """A mapping's (key, key node, value node), with unknown and repeated keys reported."""
-        if not isinstance(node, yaml.MappingNode):
-            self.problem(f"{what} must be a mapping, not {_shape(node)}", node)
-            return
-        seen: set[str] = set()
-        for key_node, value_node in node.value:
-            key = self.string(key_node, "a key")
-            if key is None:
-                continue
-            if key in seen:
-                self.problem(f"{what} repeats the key {key!r}", key_node)
-                continue
-            seen.add(key)
-            if allowed is not None and key not in allowed:
-                self.problem(f"unknown key {key!r} in {what}{_did_you_mean(key, allowed)}; "
-                             f"known keys are {', '.join(allowed)}", key_node)
-                continue
-            yield key, key_node, value_node
+    def items(self, node: yaml.Node, what: str, *, single: bool = True) -> list[yaml.Node]:
+        """A list's items; in a frame file one value is a list of one (``lexical_units: stir``)."""
+        return super().items(node, what, single=single)
 
     # -- documents ------------------------------------------------------------------------
     def document(self, node: yaml.Node) -> None:
-        if isinstance(node, yaml.ScalarNode) and node.tag == "tag:yaml.org,2002:null":
+        if is_null(node):
             return
         if isinstance(node, yaml.SequenceNode):
             for item in node.value:
@@ -135,7 +81,7 @@ class _Reader:
     def categories(self, node: yaml.Node) -> None:
         found = []
         for name, key_node, value in self.pairs(node, "categories"):
-            if isinstance(value, yaml.ScalarNode) and value.tag == "tag:yaml.org,2002:null":
+            if is_null(value):
                 members = None
             else:
                 members = tuple(m for m in (self.string(n, f"a member of {name}")
@@ -218,35 +164,20 @@ class _Reader:
     def elements(self, node: yaml.Node) -> Iterator[Element]:
         for role, key_node, value in self.pairs(node, "elements"):
             fields: dict[str, str | None] = {}
-            before = len(self.contents.problems)
+            before = len(self.problems)
             if isinstance(value, yaml.ScalarNode):
                 fields["type"] = self.string(value, f"the type of {role}")
             else:
                 for key, _, inner in self.pairs(value, f"element {role!r}", ELEMENT_KEYS):
                     fields[key] = self.string(inner, f"{key} of {role}")
             if not fields.get("type"):
-                if "type" not in fields and len(self.contents.problems) == before:
+                if "type" not in fields and len(self.problems) == before:
                     self.problem(f"element {role!r} needs a type", key_node)
                 continue
             element = self.build(functools.partial(Element, role, str(fields["type"]), fields.get("default"),
                                                    self.where(key_node)), key_node)
             if element:
                 yield element
-
-
-def _shape(node: yaml.Node) -> str:
-    if isinstance(node, yaml.MappingNode):
-        return "a mapping"
-    if isinstance(node, yaml.SequenceNode):
-        return "a list"
-    if node.tag == "tag:yaml.org,2002:null":
-        return "nothing"
-    return f"{node.value!r}"
-
-
-def _did_you_mean(word: str, choices: tuple[str, ...]) -> str:
-    close = difflib.get_close_matches(word, choices, n=1)
-    return f" (did you mean {close[0]!r}?)" if close else ""
 
 
 def read(text: str, file: str = "<yaml>") -> Contents:
