@@ -205,7 +205,7 @@ class SeFM:
         robot = as_pose(pose)
         seen = _detections(detections)
         region = self._region(robot)
-        change = self.objects.update(_within_range(region), seen, self._hidden(), self._held(), self.rng)
+        change = self.objects.update(robot, _within_range(region), seen, self._hidden(), self._held(), self.rng)
         if change.redrawn:
             rows = list(change.redrawn)
             self.kernel.set(rows, self.objects.X[rows], self.objects.W[rows])

@@ -30,8 +30,9 @@ target it has just been weighted for):
    (the old ones through the running estimate ``Ẑ``), so they are on one scale and the fresh
    group takes over exactly when the old particles stop explaining the target (an object just
    seen);
-3. resample P particles by weight (systematic, over the particles listed room by room, so that
-   each room keeps its share of the belief to within one particle);
+3. resample P particles by weight (systematic, over the particles listed room by room and along a
+   Hilbert curve within a room, :mod:`seal_cli.cell_order`, so that each room keeps its share of
+   the belief to within one particle);
 4. move each particle by the prediction potential, a Gaussian of the frame's own spread (static
    frames barely move, frames on movable objects move more), accepted or not by a
    Metropolis–Hastings test against ``γ_t``: the move explores without changing the belief.
@@ -51,6 +52,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
+from . import cell_order
 from .maps import Map
 from .potentials import KernelSums
 from .resampling import ess, grouped_systematic, normalise, systematic
@@ -194,7 +196,7 @@ class FrameBeliefs:
 
     def _resample_move(self, X: Array, cells: Index, gamma: Array, weights: Array, terms: Terms,
                        kernel: KernelSums, rng: np.random.Generator) -> None:
-        """Keep P of the weighted particles by systematic resampling (room by room), then move them by a
+        """Keep P of the weighted particles by systematic resampling in cell order, then move them by a
         Metropolis–Hastings step whose proposal is the prediction potential and whose target is γ."""
         F, P = self.W.shape
         weights[~(np.isfinite(weights) & (weights > 0))] = 0.0
@@ -202,9 +204,9 @@ class FrameBeliefs:
         W = normalise(weights)
         self.last_ess = ess(W)
         width = W.shape[1]
-        by_room = (self._room_order(cells) + np.arange(F)[:, None] * width).ravel()  # flat indices
-        chosen = systematic(W.ravel()[by_room].reshape(F, width), rng, P) + np.arange(F)[:, None] * width
-        ancestors = by_room[chosen]
+        listed = (cell_order.order_of_cells(self.map, cells) + np.arange(F)[:, None] * width).ravel()  # flat indices
+        chosen = systematic(W.ravel()[listed].reshape(F, width), rng, P) + np.arange(F)[:, None] * width
+        ancestors = listed[chosen]
         X = X.reshape(-1, 2)[ancestors]
         cells = cells.ravel()[ancestors]
         gamma = gamma.ravel()[ancestors]
@@ -216,13 +218,6 @@ class FrameBeliefs:
         self.cell = np.where(accept, moved, cells)
         self.gamma = np.where(accept, proposed, gamma)
         self.W = np.full((F, P), 1.0 / P)
-
-    def _room_order(self, cells: Index) -> Index:
-        """Particles listed room by room, and within a room by free cell (row by row of the map);
-        particles off free space (weight 0) first."""
-        rooms = np.where(cells >= 0, self.map.free_cell_room[np.maximum(cells, 0)], -1)
-        key = (rooms + 1).astype(np.int64) * (len(self.map.free_centres) + 1) + cells + 1
-        return np.argsort(key, axis=1, kind="stable")
 
     @property
     def free_area(self) -> float:

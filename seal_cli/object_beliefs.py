@@ -7,8 +7,9 @@ A *source* is anything a frame element can name:
 
 - an **object** class (``cup``): particles drawn from the map's prior of the class (its rooms'
   and places' masses spread uniformly, plus a small floor over all free space; a class without
-  a prior is uniform) — by systematic sampling of the prior's cells, so that each room gets its
-  share of the particles to within one — and updated by what the robot sees;
+  a prior is uniform) — systematically over the rooms, so that each room gets its share of the
+  particles to within one, and stratified along a Hilbert curve within a room, so that each patch
+  of it does too (:mod:`seal_cli.cell_order`) — and updated by what the robot sees;
 - a **place** (``fridge_1``) or a place class (``fridge``): particles at the places, fixed;
 - a **room** (``kitchen``): particles uniform over the room's free space, fixed.
 
@@ -22,7 +23,14 @@ One update of the object rows, from a pose's visible region and the detections t
    where ``v(x)`` is 1 inside the visible region and 0 outside or within reach of a closed
    place (what is inside a shut fridge cannot be seen), and the sum runs over the detections
    ``z_d`` of the class. With no detection a visible particle falls to ``1 − p``: negative
-   information. ``p`` is capped below 1 so that no weight becomes zero by one miss;
+   information. ``p`` is capped below 1 so that no weight becomes zero by one miss.
+
+   **Negative information counts once per view.** A detector's misses from one viewpoint are
+   not independent (what hid the object from it, or made it miss, is still there at the next
+   look), so the ``−p·v`` term is applied only at a *new* view: one farther than ``view_step``
+   from, or (for a sensor that does not see all round) turned more than ``view_turn`` away from,
+   every view already used with the same places shut. From a view already used, ``v = 0``:
+   standing still adds nothing to what the first look said. Detections always count;
 2. when the effective sample size falls under half the particles: **resample** (systematic),
    **jitter** by a small Gaussian, and **reinvigorate**: a share of the particles (5 %) is redrawn
    from the prior and given together a small weight (1 %, the chance that the object was moved
@@ -39,22 +47,25 @@ Classes the robot holds are not updated: they are in its hand, not in the scene.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
-from functools import lru_cache
 
 import numpy as np
 from numpy.typing import NDArray
 
+from . import cell_order
 from .maps import Map
 from .resampling import ess, normalise, stratified, systematic
 from .taxonomy import class_key
 
-__all__ = ["ObjectBeliefs", "ObjectModel", "Source", "Update", "rooms_of", "source_for", "spatial_order"]
+__all__ = ["ObjectBeliefs", "ObjectModel", "Source", "Update", "Views", "source_for"]
 
 Array = NDArray[np.float64]
 Region = Callable[[Array], NDArray[np.bool_]]
 """A visible region: whether each point (N, 2) is seen."""
+Hidden = Sequence[tuple[float, float, float]]
+"""Closed places as ``(x, y, reach)``: what is within reach of them may be inside, unseen."""
 
 
 @dataclass(frozen=True)
@@ -102,10 +113,35 @@ class ObjectModel:
     """Share of a detected class's particles put on its fresh detections."""
     resample_below: float = 0.5
     max_p_detect: float = 0.99
+    view_step: float = 0.5
+    """How far (m) the robot must move for a look to be a new view (its misses to count again)..."""
+    view_turn: float = math.radians(30)
+    """...or how far (rad) it must turn, for a sensor that does not see all round."""
 
     @classmethod
     def for_map(cls, m: Map, **overrides: float) -> ObjectModel:
         return cls(p_detect=m.sensor.p_detect, sigma=m.sensor.sigma, **overrides)
+
+
+@dataclass
+class Views:
+    """The views whose negative information the beliefs already hold (see the module docstring)."""
+
+    step: float
+    turn: float | None
+    """None: the heading does not matter (the sensor sees all round)."""
+    used: list[tuple[float, float, float, frozenset[tuple[float, float, float]]]] = field(default_factory=list)
+
+    def first_look(self, pose: tuple[float, float, float], hidden: Hidden) -> bool:
+        """Whether no view like this one (near, same heading, same places shut) was used; it is now."""
+        x, y, yaw = pose
+        shut = frozenset(hidden)
+        for u, v, heading, closed in self.used:
+            turned = self.turn is not None and abs((yaw - heading + math.pi) % (2 * math.pi) - math.pi) > self.turn
+            if closed == shut and math.hypot(x - u, y - v) <= self.step and not turned:
+                return False
+        self.used.append((x, y, yaw, shut))
+        return True
 
 
 @dataclass(frozen=True)
@@ -126,14 +162,17 @@ class ObjectBeliefs:
     X: Array
     W: Array
     model: ObjectModel = field(default_factory=ObjectModel)
+    views: Views = field(default_factory=lambda: Views(ObjectModel.view_step, None))
 
     @classmethod
     def from_prior(cls, m: Map, sources: Sequence[Source], particles: int, rng: np.random.Generator,
                    model: ObjectModel | None = None) -> ObjectBeliefs:
         X = np.stack([_initial(m, s, particles, rng) for s in sources]) if sources else np.zeros((0, particles, 2))
-        X = np.take_along_axis(X, spatial_order(m, X)[..., None], axis=1)
+        X = np.take_along_axis(X, cell_order.order_of_points(m, X)[..., None], axis=1)
         W = np.full((len(sources), particles), 1.0 / particles)
-        return cls(m, tuple(sources), X, W, model or ObjectModel.for_map(m))
+        model = model or ObjectModel.for_map(m)
+        views = Views(model.view_step, None if m.sensor.fov_deg >= 360 else model.view_turn)
+        return cls(m, tuple(sources), X, W, model, views)
 
     @property
     def particles(self) -> int:
@@ -150,13 +189,13 @@ class ObjectBeliefs:
         return ess(self.W)
 
     # -- one update ---------------------------------------------------------------------------
-    def update(self, contains: Region, detections: Iterable[tuple[str, tuple[float, float]]],
-               hidden: Sequence[tuple[float, float, float]], held: Iterable[str],
+    def update(self, pose: tuple[float, float, float], contains: Region,
+               detections: Iterable[tuple[str, tuple[float, float]]], hidden: Hidden, held: Iterable[str],
                rng: np.random.Generator) -> Update:
         """Reweight by one observation, then resample and reinvigorate the rows that need it.
 
-        ``contains(points) -> bool[N]`` tells the visible region; ``hidden`` lists closed places as
-        ``(x, y, reach)``; ``detections`` are ``(class, (x, y))``.
+        ``contains(points) -> bool[N]`` tells the region visible from ``pose``; ``hidden`` lists
+        closed places; ``detections`` are ``(class, (x, y))``.
         """
         rows = np.array([i for i, s in enumerate(self.sources) if not s.static and s.key not in
                          {class_key(h) for h in held}], dtype=np.intp)
@@ -166,7 +205,8 @@ class ObjectBeliefs:
         moved = {int(r) for r in rows if self.sources[r].key in seen}
         if moved:
             self._place_on_detections(sorted(moved), seen, rng)
-        L = self._likelihood(rows, contains, seen, hidden)
+        new_view = self.views.first_look(pose, hidden)
+        L = self._likelihood(rows, contains if new_view else None, seen, hidden)
         raw = self.W[rows] * L
         total = raw.sum(axis=1)
         W = normalise(raw)
@@ -197,15 +237,18 @@ class ObjectBeliefs:
             self.W[row] /= self.W[row].sum()
         self._sort(np.asarray(rows, np.intp))
 
-    def _likelihood(self, rows: NDArray[np.intp], contains: Region, seen: dict[str, Array],
-                    hidden: Sequence[tuple[float, float, float]]) -> Array:
+    def _likelihood(self, rows: NDArray[np.intp], contains: Region | None, seen: dict[str, Array],
+                    hidden: Hidden) -> Array:
+        """L of the module docstring at the rows' particles; ``contains`` None: a view already used (v = 0)."""
         X = self.X[rows]
         p = min(self.model.p_detect, self.model.max_p_detect)
-        flat = X.reshape(-1, 2)
-        v = np.asarray(contains(flat), dtype=bool)
-        for x, y, reach in hidden:
-            v &= np.square(flat - (x, y)).sum(axis=1) > reach ** 2
-        L = 1.0 - p * v.reshape(X.shape[:2])
+        L = np.ones(X.shape[:2])
+        if contains is not None:
+            flat = X.reshape(-1, 2)
+            v = np.asarray(contains(flat), dtype=bool)
+            for x, y, reach in hidden:
+                v &= np.square(flat - (x, y)).sum(axis=1) > reach ** 2
+            L -= p * v.reshape(X.shape[:2])
         s2 = self.model.sigma ** 2
         norm = p / (2 * np.pi * s2 * self.model.clutter)
         for k, row in enumerate(rows):
@@ -220,7 +263,7 @@ class ObjectBeliefs:
         carry the weight ``relocate`` (the chance that the object was moved where nobody saw)."""
         P = self.particles
         n = min(int(round(self.model.prior_share * P)), P - 1)
-        ancestors = systematic(self.W[rows], rng, P - n)  # the rows are kept in spatial order
+        ancestors = systematic(self.W[rows], rng, P - n)  # the rows are kept in cell order
         X = np.take_along_axis(self.X[rows], ancestors[..., None], axis=1)
         X = self._inside(X + rng.normal(0.0, self.model.jitter, X.shape))
         W = np.full((len(rows), P), (1.0 - (self.model.relocate if n else 0.0)) / (P - n))
@@ -231,35 +274,15 @@ class ObjectBeliefs:
         self._sort(rows)
 
     def _sort(self, rows: NDArray[np.intp]) -> None:
-        """Keep the rows in spatial order (room by room), so that systematic resampling keeps each room's share."""
-        order = spatial_order(self.map, self.X[rows])
+        """Keep the rows in cell order (:mod:`seal_cli.cell_order`), so that systematic resampling keeps each
+        room's share, and each patch's."""
+        order = cell_order.order_of_points(self.map, self.X[rows])
         self.X[rows] = np.take_along_axis(self.X[rows], order[..., None], axis=1)
         self.W[rows] = np.take_along_axis(self.W[rows], order, axis=1)
 
     def _inside(self, X: Array) -> Array:
         xmin, ymin, xmax, ymax = self.map.bounds
         return np.stack([np.clip(X[..., 0], xmin, xmax), np.clip(X[..., 1], ymin, ymax)], axis=-1)
-
-
-def rooms_of(m: Map, points: Array) -> NDArray[np.intp]:
-    """The room index of each point (N, 2), -1 for none: by the free cell's room where the point is
-    on free space (one lookup), by the polygons elsewhere."""
-    index = m.free_index(points)
-    rooms = np.where(index >= 0, m.free_cell_room[np.maximum(index, 0)], -2)
-    off = rooms == -2
-    if off.any():
-        rooms[off] = m.room_index(points[off])
-    return np.asarray(rooms, np.intp)
-
-
-def spatial_order(m: Map, X: Array) -> NDArray[np.intp]:
-    """A permutation of each row of particles X (R, P, 2) that lists them room by room, and within a room
-    by free cell (row by row of the map): systematic resampling in this order keeps each room's share to
-    within one particle. Particles off free space (few: objects may sit on furniture) come first."""
-    cells = m.free_index(X.reshape(-1, 2)).astype(np.int64)
-    rooms = np.where(cells >= 0, m.free_cell_room[np.maximum(cells, 0)], -1)
-    key = (rooms + 1) * (len(m.free_centres) + 1) + cells + 1
-    return np.argsort(key.reshape(X.shape[:2]), axis=1, kind="stable")
 
 
 def _by_class(detections: Iterable[tuple[str, tuple[float, float]]]) -> dict[str, Array]:
@@ -281,23 +304,17 @@ def _initial(m: Map, source: Source, n: int, rng: np.random.Generator) -> Array:
 
 def _by_room(m: Map, weights: Array, n: int, rng: np.random.Generator) -> NDArray[np.intp]:
     """``n`` free cells drawn by ``weights``: each room gets its share of the draws to within one
-    (systematic over rooms), and within a room the cells are drawn independently (no lattice)."""
+    (systematic over rooms), and within a room the draws are stratified along the cells' order
+    (:mod:`seal_cli.cell_order`): one independent draw in each of ``count`` runs of equal weight, so
+    each patch of the room gets its share without the particles falling on a lattice."""
     rooms = m.free_cell_room + 1
     masses = np.asarray(np.bincount(rooms, weights, minlength=len(m.rooms) + 1), float)
     counts = np.bincount(stratified(masses, n, rng), minlength=len(masses))
-    order, bounds = _cells_by_room(m)
+    order, starts = cell_order.by_room(m)
     picked = []
     for room in np.flatnonzero(counts):
-        cells = order[bounds[room]:bounds[room + 1]]
+        cells = order[starts[room]:starts[room + 1]]
         cdf = np.cumsum(weights[cells])
-        picked.append(cells[np.minimum(np.searchsorted(cdf, rng.random(counts[room]) * cdf[-1], side="right"),
-                                       len(cells) - 1)])
+        u = (np.arange(counts[room]) + rng.random(counts[room])) / counts[room]
+        picked.append(cells[np.minimum(np.searchsorted(cdf, u * cdf[-1], side="right"), len(cells) - 1)])
     return np.concatenate(picked) if picked else np.zeros(0, np.intp)
-
-
-@lru_cache(maxsize=8)
-def _cells_by_room(m: Map) -> tuple[NDArray[np.intp], NDArray[np.intp]]:
-    """The free cells sorted by room (``-1`` first) and where each room's run starts (cached per map)."""
-    rooms = m.free_cell_room + 1
-    order = np.argsort(rooms, kind="stable")
-    return order, np.searchsorted(rooms[order], np.arange(len(m.rooms) + 2))

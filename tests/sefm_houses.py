@@ -4,13 +4,18 @@
 room, half in the bedroom; spoons half in the kitchen, half in the bedroom) but drawn differently
 from ``maps/apartment.yaml``: another size, another layout, and a bedroom much larger than the
 kitchen (where a bare product of two room-uniform beliefs would put "Stir cup" in the kitchen).
+
+:func:`aws_house` annotates the real occupancy map of the paper's house (AWS RoboMaker small house,
+in the shared data) with one of :data:`AWS_LAYOUTS`, the paper's priors and a robot pose.
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
+from pathlib import Path
 
 import numpy as np
+import yaml
 
 from seal_cli.geometry import OccupancyGrid
 from seal_cli.maps import Map, ObjectTruth, Place, Robot, Room, Sensor
@@ -62,3 +67,41 @@ SECOND_HOUSE_TRAJECTORY = [(7.5, 2.0), (7.5, 6.0), (7.5, 9.5), (3.0, 10.0), (2.0
                            (11.0, 9.5), (12.0, 8.0)]
 """From the hall through the dining room into the kitchen (three looks at the spoon: a detector that misses one
 look in ten will not miss them all), then into the family room (the cup)."""
+
+
+# -- the paper's own house: the AWS RoboMaker small house's occupancy map, annotated here ------------------
+AWS_LAYOUTS: dict[str, dict[str, tuple[float, float, float, float]]] = {
+    # the bedroom (the bed) top left; the room below it the family room; the gym top middle is in no room
+    "wings": {"bedroom": (-9.4, -1.5, -2.45, 3.1), "family_room": (-9.4, -5.7, -2.45, -1.5),
+              "living_room": (-2.45, -5.7, 4.8, 2.4), "dining_room": (4.8, -0.3, 9.5, 3.1),
+              "kitchen": (4.8, -5.8, 9.5, -0.3)},
+    # the whole left wing a bedroom (50 m², the kitchen 20 m²); the gym top middle the family room
+    "north_family": {"bedroom": (-9.4, -5.7, -2.45, 3.1), "family_room": (-2.45, 2.4, 4.8, 5.7),
+                     "living_room": (-2.45, -5.7, 4.8, 2.4), "dining_room": (4.8, -0.3, 9.5, 3.1),
+                     "kitchen": (4.8, -5.8, 9.5, -0.3)},
+    # the right wing one kitchen; dining top middle; family room the middle; living room bottom left
+    "kitchen_diner": {"bedroom": (-9.4, -1.5, -2.45, 3.1), "living_room": (-9.4, -5.7, -2.45, -1.5),
+                      "family_room": (-2.45, -5.7, 4.8, 2.4), "dining_room": (-2.45, 2.4, 4.8, 5.7),
+                      "kitchen": (4.8, -5.8, 9.5, 3.1)},
+}
+"""Room boxes for the AWS house (walls from the map: the left wing x < −2.45, the right wing x > 4.8, a
+partial wall at y = −1.5 in the left wing, a gym north of the middle): three plausible readings."""
+
+AWS_OBJECTS = ({"class": "spoon", "at": [8.6, -3.4]}, {"class": "cup", "at": [-7.5, 2.5]})
+"""The spoon by the cooking bench (kitchen), the cup by the nightstand (bedroom)."""
+
+AWS_TRAJECTORY = [(1.5, -4.0), (4.0, -3.0), (6.5, -2.5), (7.5, -3.5), (6.5, -2.0), (3.0, -0.5), (0.0, 0.5),
+                  (-3.5, 0.5), (-5.5, 0.0), (-7.5, 0.0), (-8.0, 0.8), (-7.2, 0.6)]
+"""Through the kitchen (four looks at the spoon), across the living room into the bedroom (three at the cup)."""
+
+
+def aws_house(folder: Path, data: Path, layout: str, robot: tuple[float, float, float]) -> Path:
+    """Write an annotated map of the AWS house into ``folder`` (the image stays where the shared data is)."""
+    doc = {"image": str((data / "maps" / "aws_small_house" / "map.pgm").resolve()), "resolution": 0.05,
+           "origin": [-12.5, -12.5, 0.0], "negate": 0, "occupied_thresh": 0.65, "free_thresh": 0.196,
+           "name": f"aws_{layout}", "rooms": [{"name": n, "box": list(b)} for n, b in AWS_LAYOUTS[layout].items()],
+           "priors": PAPER_PRIORS, "objects": list(AWS_OBJECTS), "robot": {"pose": list(robot)},
+           "sensor": {"range": 5.0, "fov": 360}}
+    path = folder / f"aws_{layout}.yaml"
+    path.write_text(yaml.safe_dump(doc, sort_keys=False))
+    return path

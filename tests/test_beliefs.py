@@ -3,6 +3,8 @@ the paper's Fig. 3 on a house drawn here, convergence, determinism, and weights 
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -16,7 +18,7 @@ from seal_cli.modes import room_masses
 from seal_cli.planning import plan_text
 from seal_cli.sensor import simulate_detections
 from seal_cli.state import State, robot_facts
-from tests.sefm_houses import SECOND_HOUSE_TRAJECTORY, second_house
+from tests.sefm_houses import SECOND_HOUSE_TRAJECTORY, aws_house, second_house
 
 SEEDS = range(5)
 
@@ -98,6 +100,34 @@ def test_fig3cd_beliefs_converge_on_the_objects_seen_along_a_path(library: Libra
             assert np.hypot(*(best - truth[binding.elements["theme"]])) < 1.0, binding
 
 
+def test_on_the_aws_house_a_look_into_the_bedroom_lowers_it_once_then_it_stays(library: Library, shared_data: Path,
+                                                                               tmp_path: Path) -> None:
+    """The map's middle sees a sixth of the (50 m²) bedroom: the spoon's bedroom mass drops at the first
+    look and stays there for the other 19 updates at that pose; Stir keeps the bedroom on top."""
+    from seal_cli.maps import load_map
+
+    m = load_map(aws_house(tmp_path, shared_data, "north_family", (0.0, 0.0, 0.0)))
+    bindings, state = paper_frames(library, m)
+    stir = stir_index(bindings)
+    rng = np.random.default_rng(0)
+    sefm = SeFM(m, bindings, state, rng)
+    spoon = sefm.objects.row("spoon")
+
+    def bedroom(X: np.ndarray, W: np.ndarray) -> float:
+        return room_masses(m, X, W)["bedroom"]
+
+    prior = bedroom(sefm.objects.X[spoon], sefm.objects.W[spoon])
+    masses, stirs = [], []
+    for _ in range(20):
+        sefm.update(m.robot.pose, simulate_detections(m, m.robot.pose, sefm.open_places(), rng), state)
+        masses.append(bedroom(sefm.objects.X[spoon], sefm.objects.W[spoon]))
+        stirs.append(sefm.frame_summary(stir).rooms)
+    assert masses[0] < prior - 0.02
+    assert masses[1:] == pytest.approx([masses[0]] * 19, abs=1e-9)
+    assert all(max(rooms, key=rooms.__getitem__) == "bedroom" for rooms in stirs[1:])
+    assert max(r["bedroom"] for r in stirs[1:]) - min(r["bedroom"] for r in stirs[1:]) < 0.08
+
+
 def test_the_bare_product_context_would_put_stir_in_the_small_kitchen(library: Library, house: Map) -> None:
     """Why the context has a floor of 1 (docs/sefm.md): two room-uniform beliefs multiplied favour small rooms."""
     from seal_cli.frame_beliefs import FrameModel
@@ -149,6 +179,52 @@ def test_seeing_nothing_lowers_what_is_in_view_by_one_minus_p_detect(library: Li
     assert left == pytest.approx(0.05 / 0.55, abs=0.03)
 
 
+def test_a_view_counts_once_standing_still_adds_nothing(library: Library) -> None:
+    """A detector's misses from one view are not independent: the first look lowers what it sees, the
+    next 19 from the same pose leave the belief as it was; a look from a new place counts again."""
+    m = box_map(objects=(), sensor=Sensor(range=2.0))
+    sefm = SeFM(m, [], cup_state(library), np.random.default_rng(0), SeFMConfig(particles=400), classes=["cup"])
+
+    def left() -> float:
+        return room_masses(m, sefm.objects.X[0], sefm.objects.W[0])["left"]
+
+    before = left()
+    sefm.update((2.5, 2.0), [])
+    once = left()
+    assert once < before - 0.1  # the 2 m disc is about half the left room
+    for _ in range(19):
+        sefm.update((2.5, 2.0), [])
+    assert left() == pytest.approx(once, abs=1e-9)
+    sefm.update((2.6, 2.1), [])  # 0.14 m away: the same view
+    assert left() == pytest.approx(once, abs=1e-9)
+    sefm.update((1.0, 2.0), [])  # 1.5 m away: a new view
+    assert left() < once - 0.02
+
+
+def test_views_are_new_by_place_heading_and_what_is_shut() -> None:
+    from seal_cli.object_beliefs import Views
+
+    round_ = Views(0.5, None)
+    assert round_.first_look((0.0, 0.0, 0.0), [])
+    assert not round_.first_look((0.3, 0.3, 3.0), [])      # near, and a 360° sensor does not care where it faces
+    assert round_.first_look((0.0, 0.6, 0.0), [])          # moved
+    assert round_.first_look((0.0, 0.0, 0.0), [(1.0, 1.0, 0.5)])  # a place shut now that was open: another view
+    ahead = Views(0.5, np.radians(30))
+    assert ahead.first_look((0.0, 0.0, 0.0), [])
+    assert not ahead.first_look((0.0, 0.0, 0.4), [])       # turned 23°
+    assert ahead.first_look((0.0, 0.0, 0.6), [])           # turned 34°
+    assert not ahead.first_look((0.0, 0.0, 2 * np.pi), [])  # a full turn is the same heading
+
+
+def test_detections_from_a_view_already_used_still_count(library: Library) -> None:
+    m = box_map()
+    sefm = SeFM(m, [], cup_state(library), np.random.default_rng(0), SeFMConfig(), classes=["cup"])
+    sefm.update((6.5, 2.0), [])  # missed it
+    sefm.update((6.5, 2.0), [("cup", (8.0, 1.0))])  # the same view, and now it is seen
+    s = sefm.object_summary("cup")
+    assert np.hypot(s.best[0] - 8.0, s.best[1] - 1.0) < 0.3
+
+
 def test_a_detection_pulls_the_belief_onto_it(library: Library) -> None:
     m = box_map()
     sefm = SeFM(m, [], cup_state(library), np.random.default_rng(0), SeFMConfig(), classes=["cup"])
@@ -164,8 +240,8 @@ def test_what_is_in_a_closed_place_cannot_be_seen_missing(library: Library) -> N
     opened = SeFM(m, [], cup_state(library, Fact("open", ("fridge_1",))), np.random.default_rng(0), SeFMConfig(),
                   classes=["apple"])
     for sefm in (closed, opened):
-        for _ in range(3):
-            sefm.update((7.0, 2.0), [])
+        for pose in ((7.0, 2.0), (7.0, 1.0), (7.5, 3.0)):  # three views (one view counts once)
+            sefm.update(pose, [])
     near = [s.objects.W[0][np.hypot(*(s.objects.X[0] - (9.0, 2.0)).T) < 1.0].sum() for s in (closed, opened)]
     assert near[0] > 0.9  # shut: no evidence against the apple being inside
     assert near[1] < 0.5  # open and empty-looking: the apple is probably not there
