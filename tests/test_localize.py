@@ -12,6 +12,7 @@ import pytest
 from typer.testing import CliRunner
 
 from seal_cli.cli import app
+from tests.sefm_houses import AWS_LAYOUTS, AWS_OBJECTS, AWS_TRAJECTORY, aws_house
 
 runner = CliRunner()
 FIG3 = ["--task", "grasp the cup", "--task", "grasp the spoon", "--task", "stir the cup"]
@@ -20,8 +21,8 @@ APARTMENT_PATH = [[-6, -3], [-3.5, -0.2], [-1, -2.5], [1, -2.5], [2.5, -4.7], [5
 """From the living room into the kitchen (past the spoon), then up into the family room (the cup)."""
 
 
-def localize(*args: str) -> dict[str, Any]:
-    result = runner.invoke(app, ["localize", "--map", "apartment", *args, "--json"])
+def localize(*args: str, map_name: str = "apartment") -> dict[str, Any]:
+    result = runner.invoke(app, ["localize", "--map", map_name, *args, "--json"])
     assert result.exit_code == 0, result.output
     return json.loads(result.stdout)
 
@@ -75,6 +76,50 @@ def test_fig3cd_a_trajectory_past_the_objects(tmp_path: Path, holding: list[str]
         theme = frame["elements"].get("theme")
         if frame["frame"] == "Pick" and not (holding and theme == "spoon"):
             assert np.hypot(*np.subtract(frame["best"], truth[theme])) < 1.0, frame
+
+
+# -- the paper's own house: the AWS small house's occupancy map, annotated in several ways ----------------------
+AWS_STARTS = [("wings", (1.0, 4.0, 0.0)),          # the gym (in no room): no prior room in view
+              ("wings", (1.5, -4.0, 0.0)),         # a quarter of the kitchen in view
+              ("wings", (-6.0, -3.5, 0.0)),        # in the family room, seeing most of it and a corner of the bedroom
+              ("north_family", (0.0, 0.0, 0.0)),   # the map's middle: a sixth of the bedroom, half the family room
+              ("kitchen_diner", (1.0, 4.0, 0.0))]  # in the dining room, seeing most of it
+"""Start poses from which no object is in view; docs/sefm.md lists what each sees and the target's exact masses."""
+
+
+@pytest.mark.parametrize(("layout", "robot"), AWS_STARTS)
+def test_fig3ab_on_the_aws_house(tmp_path: Path, shared_data: Path, layout: str,
+                                 robot: tuple[float, float, float]) -> None:
+    path = str(aws_house(tmp_path, shared_data, layout, robot))
+    for seed in range(3):
+        empty = stir(localize(*FIG3, "--seed", str(seed), map_name=path))["rooms"]
+        assert empty["kitchen"] + empty["bedroom"] >= 0.7, (seed, empty)
+        assert max(empty, key=empty.__getitem__) == "bedroom", (seed, empty)
+        spoon = stir(localize(*FIG3, "--holding", "spoon", "--seed", str(seed), map_name=path))["rooms"]
+        assert spoon["family_room"] + spoon["bedroom"] >= 0.7, (seed, spoon)
+        assert spoon["kitchen"] < 0.1, (seed, spoon)
+
+
+@pytest.mark.parametrize("layout", sorted(AWS_LAYOUTS))
+def test_fig3cd_on_the_aws_house(tmp_path: Path, shared_data: Path, layout: str) -> None:
+    path = str(aws_house(tmp_path, shared_data, layout, AWS_TRAJECTORY[0]))
+    trajectory = tmp_path / "path.yaml"
+    trajectory.write_text("poses:\n" + "".join(f"  - [{x}, {y}]\n" for x, y in AWS_TRAJECTORY))
+    truth = {o["class"]: o["at"] for o in AWS_OBJECTS}
+    for seed in range(3):
+        for holding in ([], ["--holding", "spoon"]):
+            data = localize(*FIG3, *holding, "--trajectory", str(trajectory), "--seed", str(seed), map_name=path)
+            for obj in data["objects"]:
+                if not (holding and obj["class"] == "spoon"):
+                    assert np.hypot(*np.subtract(obj["best"], truth[obj["class"]])) < 1.0, (seed, obj)
+                    assert np.hypot(*np.subtract(obj["modes"][0]["mean"], truth[obj["class"]])) < 1.0, (seed, obj)
+            for frame in data["frames"]:
+                theme = frame["elements"]["theme"]
+                if frame["frame"] == "Stir":
+                    target = truth["cup"] if holding else truth["spoon"]
+                    assert np.hypot(*np.subtract(frame["best"], target)) < 1.0, (seed, frame)
+                elif not (holding and theme == "spoon"):
+                    assert np.hypot(*np.subtract(frame["best"], truth[theme])) < 1.0, (seed, frame)
 
 
 def test_observations_file(tmp_path: Path) -> None:
