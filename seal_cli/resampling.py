@@ -28,16 +28,25 @@ def ess(weights: NDArray[np.float64]) -> NDArray[np.float64]:
 def systematic(weights: NDArray[np.float64], rng: np.random.Generator, count: int | None = None) -> NDArray[np.intp]:
     """Systematic resampling of each row: ``count`` (default P) ancestor indices per row, one uniform draw per row.
 
-    In the order the particles are listed, each contiguous run of them gets its share of the
-    draws to within one."""
+    The draws are at ``(u + k) / count`` on the row's cumulative weights, k = 0 … count − 1; particle
+    i is drawn once for each such point in ``[C_{i−1}, C_i)``, that is ``⌈count·C_i − u⌉ − ⌈count·C_{i−1} − u⌉``
+    times, so the ancestors are each index repeated that often (linear time, no search). In the
+    order the particles are listed, each contiguous run of them gets its share of the draws to
+    within one. A row whose sum is not positive is drawn as if uniform.
+    """
     rows, size = weights.shape
     count = size if count is None else count
     cumulative = np.cumsum(weights, axis=1)
-    cumulative /= cumulative[:, -1:]
-    offsets = np.arange(rows)[:, None]
-    points = (rng.random((rows, 1)) + np.arange(count)) / count
-    flat = np.searchsorted((cumulative + offsets).ravel(), (points + offsets).ravel(), side="right")
-    return np.asarray(np.clip(flat.reshape(rows, count) - offsets * size, 0, size - 1))
+    total = cumulative[:, -1:]
+    good = np.isfinite(total) & (total > 0)
+    cumulative = np.where(good, cumulative * (count / np.where(good, total, 1.0)),
+                          np.arange(1, size + 1) * (count / size))
+    cumulative[:, -1] = count  # exactly: rounding must not make count + 1 draws
+    u = rng.random((rows, 1))
+    drawn_below = np.ceil(cumulative - u).astype(np.intp)  # draws at or below each particle's upper edge
+    copies = np.diff(drawn_below, axis=1, prepend=0)
+    ancestors = np.repeat(np.arange(rows * size), copies.ravel()).reshape(rows, count)
+    return np.asarray(ancestors - np.arange(rows)[:, None] * size)
 
 
 def grouped_systematic(weights: NDArray[np.float64], group: NDArray[np.intp], counts: NDArray[np.intp],
