@@ -48,6 +48,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 from numpy.typing import NDArray
@@ -103,6 +104,21 @@ class Terms:
             return np.array(f, np.intp), np.array(s, np.intp), np.array(b, float)
 
         return cls(frames, *flat(measurement), *flat(context))
+
+    @cached_property
+    def measurement(self) -> tuple[Index, Array]:
+        """The measurement terms as (F, S) source rows (−1: none) and beliefs: frame i's terms in row i."""
+        return _slots(self.meas_frame, self.meas_source, self.meas_weight, np.arange(self.frames))
+
+    @cached_property
+    def context_frames(self) -> Index:
+        """The frames that have a context potential."""
+        return np.unique(self.ctx_frame)
+
+    @cached_property
+    def context(self) -> tuple[Index, Array]:
+        """The context terms as (len(context_frames), S) source rows (−1: none) and beliefs."""
+        return _slots(self.ctx_frame, self.ctx_source, self.ctx_weight, self.context_frames)
 
     @property
     def belief_total(self) -> Array:
@@ -226,13 +242,11 @@ class FrameBeliefs:
     # -- the target and the proposal ----------------------------------------------------------
     def potentials(self, terms: Terms, kernel: KernelSums, X: Array) -> tuple[Array, Array]:
         """Σ_k B_ik K_k(x) and Σ_j C_ij K_j(x) at points X (F, Q, 2): two (F, Q) arrays."""
-        F, Q = X.shape[:2]
-        which = np.concatenate([terms.meas_source, terms.ctx_source])
-        rows = np.concatenate([terms.meas_frame, terms.ctx_frame])
-        K = kernel.sample(which, X, rows) if len(which) else np.zeros((0, Q))
-        weighted = np.concatenate([terms.meas_weight, terms.ctx_weight]).astype(K.dtype)[:, None] * K
-        m = len(terms.meas_source)
-        return _per_frame(weighted[:m], terms.meas_frame, F), _per_frame(weighted[m:], terms.ctx_frame, F)
+        measurement = kernel.combine(*terms.measurement, X)
+        context = np.zeros_like(measurement)
+        if len(terms.context_frames):
+            context[terms.context_frames] = kernel.combine(*terms.context, X[terms.context_frames])
+        return measurement, context
 
     def gamma_of(self, terms: Terms, measurement: Array, context: Array) -> Array:
         """γ from the two potentials (before restricting to free space)."""
@@ -289,10 +303,12 @@ class FrameBeliefs:
         return np.asarray(drawn + rng.normal(0.0, self.sigma, drawn.shape))
 
 
-def _per_frame(values: Array, frame: Index, frames: int) -> Array:
-    """Rows of ``values`` summed by frame (``frame`` is sorted: terms are listed frame by frame)."""
-    out = np.zeros((frames, values.shape[1]), dtype=values.dtype)
-    if len(frame):
-        starts = np.flatnonzero(np.r_[True, frame[1:] != frame[:-1]])
-        out[frame[starts]] = np.add.reduceat(values, starts, axis=0)
-    return out
+def _slots(frame: Index, source: Index, weight: Array, rows: Index) -> tuple[Index, Array]:
+    """Terms listed by frame (``frame`` sorted) as a dense (len(rows), S) layout: the terms of frame
+    ``rows[r]`` fill row r from the left, −1 and 0 pad the rest."""
+    row = np.searchsorted(rows, frame)
+    rank = np.arange(len(frame)) - np.searchsorted(frame, frame)
+    width = int(rank.max()) + 1 if len(frame) else 0
+    sources, weights = np.full((len(rows), width), -1, np.intp), np.zeros((len(rows), width))
+    sources[row, rank], weights[row, rank] = source, weight
+    return sources, weights

@@ -11,7 +11,9 @@ of the belief lies within about σ of x"; it is ``2πσ²`` times the belief smo
 normal density N(0, Σ).
 
 A :class:`KernelSums` holds a numbered set of *sources* (rows: one per object class and one per
-frame) and answers *queries*: ``K`` of a source at many points. Two implementations give the
+frame) and answers *queries*: weighted sums ``Σ_s w_rs · K_{source_rs}(x)`` of a few sources at
+each of many points (:meth:`KernelSums.combine`: a frame's potential is one such sum at each of
+its particles), or ``K`` of one source (:meth:`KernelSums.sample`). Two implementations give the
 same answer:
 
 :class:`ExactKernelSums`
@@ -31,8 +33,9 @@ same answer:
 from __future__ import annotations
 
 import math
+from abc import ABC, abstractmethod
 from collections.abc import Sequence
-from typing import Any, Protocol
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -46,24 +49,31 @@ Change = tuple[int, Index, Array, Array, float]
 """``(row, particle indices, their positions, weight increments before normalising, the normaliser)``."""
 
 
-class KernelSums(Protocol):
-    """Numbered weighted particle sets and ``K`` of any of them at any points."""
+class KernelSums(ABC):
+    """Numbered weighted particle sets and weighted sums of their ``K`` at any points."""
 
     sigma: float
 
+    @abstractmethod
     def set(self, rows: Sequence[int], positions: Array, weights: Array) -> None:
         """Rows ``rows`` now hold these particle sets: ``positions`` (R, P, 2), normalised ``weights`` (R, P)."""
-        ...
 
+    @abstractmethod
     def reweight(self, changes: Sequence[Change]) -> None:
         """For each change ``(row, index, positions, delta, total)``: the weights of particles ``index``
         (at ``positions``, (m, 2)) of ``row`` grew by ``delta``; then all were divided by ``total``."""
-        ...
+
+    @abstractmethod
+    def combine(self, sources: Index, weights: Array, points: Array) -> Array:
+        """``out[r, q] = Σ_s weights[r, s] · K_{sources[r, s]}(points[r, q])`` for points (R, Q, 2) and
+        sources, weights (R, S); a source of −1 is no term. Shape (R, Q)."""
 
     def sample(self, which: Index, points: Array, rows: Index | None = None) -> Array:
         """``out[t, q] = K_{which[t]}(points[t, q])`` for points (T, Q, 2): shape (T, Q). With ``rows``
         (T,), points are (R, Q, 2) and query t is at ``points[rows[t]]``."""
-        ...
+        which = np.asarray(which, np.intp)
+        at = points if rows is None else points[np.asarray(rows, np.intp)]
+        return self.combine(which[:, None], np.ones((len(which), 1)), at)
 
 
 def exact_kernel_sum(points: Array, positions: Array, weights: Array, sigma: float, chunk: int = 1 << 18) -> Array:
@@ -83,7 +93,7 @@ def exact_kernel_sum(points: Array, positions: Array, weights: Array, sigma: flo
     return out
 
 
-class ExactKernelSums:
+class ExactKernelSums(KernelSums):
     """Every pair: O(P·Q) work per query and O(chunk) memory. The reference the engine is tested against."""
 
     def __init__(self, count: int, particles: int, sigma: float, chunk: int = 1 << 18) -> None:
@@ -101,15 +111,16 @@ class ExactKernelSums:
             self.weights[row, index] += delta
             self.weights[row] /= total
 
-    def sample(self, which: Index, points: Array, rows: Index | None = None) -> Array:
-        out = np.empty((len(which), points.shape[1]))
-        for t, row in enumerate(which):
-            at = points[t if rows is None else rows[t]]
-            out[t] = exact_kernel_sum(at, self.positions[row], self.weights[row], self.sigma, self.chunk)
+    def combine(self, sources: Index, weights: Array, points: Array) -> Array:
+        out = np.zeros(points.shape[:2])
+        for r, s in zip(*np.nonzero(np.asarray(sources) >= 0), strict=True):
+            row = sources[r, s]
+            out[r] += weights[r, s] * exact_kernel_sum(points[r], self.positions[row], self.weights[row], self.sigma,
+                                                       self.chunk)
         return out
 
 
-class GridKernelSums:
+class GridKernelSums(KernelSums):
     """Binned Gaussian smoothing on a grid over ``bounds`` (see the module docstring).
 
     ``cell`` defaults to σ/2, coarsened only if the grid would exceed ``max_cells`` cells.
@@ -198,26 +209,37 @@ class GridKernelSums:
         for row, _, _, _, total in changes:
             self.factor[row] /= total
 
-    def sample(self, which: Index, points: Array, rows: Index | None = None) -> Array:
+    def combine(self, sources: Index, weights: Array, points: Array) -> Array:
+        """Bilinear reads of the sources' grids at the points, one term (a column of ``sources``) at a time."""
         i, j, fu, fv = self._cells(points)
         dtype = self.grids.dtype
         nx, ny = self.shape
         base = i * ny + j
         fu, fv = fu.astype(dtype), fv.astype(dtype)
-        if rows is not None:
-            base, fu, fv = base[rows], fu[rows], fv[rows]
-        which = np.asarray(which)
-        corner = base + (which * (nx * ny))[:, None]
+        sources = np.asarray(sources, np.intp)
+        coef = (np.asarray(weights) * self.factor[np.maximum(sources, 0)] * (sources >= 0)).astype(dtype)
         flat = self.grids.reshape(-1)
-        a, b = np.take(flat, corner, mode="clip"), np.take(flat, corner + ny, mode="clip")
-        c, d = np.take(flat, corner + 1, mode="clip"), np.take(flat, corner + ny + 1, mode="clip")
-        low = a + (b - a) * fu
-        out = low + (c + (d - c) * fu - low) * fv
-        out *= self.factor[which].astype(dtype)[:, None]
-        return np.asarray(out)
+        out = np.zeros(base.shape, dtype)
+        for s in range(sources.shape[1]):
+            live = np.flatnonzero(sources[:, s] >= 0)
+            every = len(live) == len(base)
+            at = base if every else base[live]
+            corner = at + (sources[live, s] * (nx * ny))[:, None]
+            a, b = np.take(flat, corner), np.take(flat, corner + ny)
+            c, d = np.take(flat, corner + 1), np.take(flat, corner + ny + 1)
+            u, v = (fu, fv) if every else (fu[live], fv[live])
+            a += (b - a) * u                    # along x at the lower row of cells
+            c += (d - c) * u                    # ... and at the upper row
+            a += (c - a) * v                    # along y
+            a *= coef[live, s, None]
+            if every:
+                out += a
+            else:
+                out[live] += a
+        return out
 
 
-class SplitKernelSums:
+class SplitKernelSums(KernelSums):
     """Rows below ``split`` answered by ``low``, the others (renumbered from 0) by ``high``.
 
     SeFM keeps object beliefs (the measurement's sources) on a grid of σ/2 and frame beliefs (the
@@ -242,17 +264,14 @@ class SplitKernelSums:
         self.low.reweight([c for c in changes if c[0] < self.split])
         self.high.reweight([(c[0] - self.split, *c[1:]) for c in changes if c[0] >= self.split])
 
-    def sample(self, which: Index, points: Array, rows: Index | None = None) -> Array:
-        which = np.asarray(which, np.intp)
-        out = np.empty((len(which), points.shape[1]))
-        below = which < self.split
-        for part, kernel, offset in ((below, self.low, 0), (~below, self.high, self.split)):
-            if part.any():
-                if rows is None:
-                    out[part] = kernel.sample(which[part] - offset, points[part])
-                else:
-                    out[part] = kernel.sample(which[part] - offset, points, rows[part])
-        return out
+    def combine(self, sources: Index, weights: Array, points: Array) -> Array:
+        sources = np.asarray(sources, np.intp)
+        below, above = (sources >= 0) & (sources < self.split), sources >= self.split
+        parts = [kernel.combine(np.where(part, sources - offset, -1), weights, points)
+                 for part, kernel, offset in ((below, self.low, 0), (above, self.high, self.split)) if part.any()]
+        if not parts:
+            return np.zeros(points.shape[:2])
+        return parts[0] if len(parts) == 1 else parts[0] + parts[1]
 
 
 def make_kernel_sums(kind: str, count: int, particles: int, bounds: Sequence[float], sigma: float,

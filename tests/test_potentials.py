@@ -98,3 +98,21 @@ def test_grid_memory_grows_with_the_map_not_with_particles_squared() -> None:
 def test_unknown_kernel_is_refused() -> None:
     with pytest.raises(ValueError, match="grid"):
         make_kernel_sums("fft", 1, 1, BOUNDS, 0.3)
+
+
+@pytest.mark.parametrize("kind", ["grid", "exact"])
+def test_combine_is_the_weighted_sum_of_samples(kind: str) -> None:
+    """A frame's potential: Σ_s w_rs K_{source_rs} at each of row r's points; −1 is no term; rows of a split
+    kernel are answered by the part that holds them."""
+    rng = np.random.default_rng(5)
+    X, W = clouds(rng, 4, 300)
+    kernel = make_kernel_sums(kind, 4, 300, BOUNDS, 0.3, split=2)
+    kernel.set(range(4), X, W)
+    sources = np.array([[0, 3], [1, -1], [-1, -1]])
+    weights = np.array([[1.0, 0.3], [0.5, 7.0], [2.0, 2.0]])
+    points = rng.uniform(BOUNDS[:2], BOUNDS[2:], (3, 50, 2))
+    got = kernel.combine(sources, weights, points)
+    K = lambda s, r: kernel.sample(np.array([s]), points[r][None])[0]  # noqa: E731
+    np.testing.assert_allclose(got[0], K(0, 0) + 0.3 * K(3, 0), rtol=1e-5, atol=1e-7)
+    np.testing.assert_allclose(got[1], 0.5 * K(1, 1), rtol=1e-5, atol=1e-7)
+    np.testing.assert_array_equal(got[2], 0.0)
