@@ -50,6 +50,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import numpy as np
 from numpy.typing import NDArray
@@ -299,22 +300,28 @@ def _initial(m: Map, source: Source, n: int, rng: np.random.Generator) -> Array:
         return points[np.arange(n) % len(points)]
     if source.kind == "room":
         return m.sample_free(rng, n, region=source.room)
-    return m.jitter_in_cells(rng, rng.permutation(_by_room(m, m.prior(source.key).weights, n, rng)))
+    return m.jitter_in_cells(rng, rng.permutation(_by_room(m, source.key, n, rng)))
 
 
-def _by_room(m: Map, weights: Array, n: int, rng: np.random.Generator) -> NDArray[np.intp]:
-    """``n`` free cells drawn by ``weights``: each room gets its share of the draws to within one
-    (systematic over rooms), and within a room the draws are stratified along the cells' order
+def _by_room(m: Map, cls: str, n: int, rng: np.random.Generator) -> NDArray[np.intp]:
+    """``n`` free cells drawn by the prior of ``cls``: each room gets its share of the draws to within
+    one (systematic over rooms), and within a room the draws are stratified along the cells' order
     (:mod:`seal_cli.cell_order`): one independent draw in each of ``count`` runs of equal weight, so
     each patch of the room gets its share without the particles falling on a lattice."""
-    rooms = m.free_cell_room + 1
-    masses = np.asarray(np.bincount(rooms, weights, minlength=len(m.rooms) + 1), float)
+    cells, starts = cell_order.by_room(m)
+    cdf = _prior_cdf(m, cls)
+    before = np.concatenate([[0.0], cdf])[starts]  # the prior's weight before each room's run of cells
+    masses = np.diff(before)
     counts = np.bincount(stratified(masses, n, rng), minlength=len(masses))
-    order, starts = cell_order.by_room(m)
-    picked = []
-    for room in np.flatnonzero(counts):
-        cells = order[starts[room]:starts[room + 1]]
-        cdf = np.cumsum(weights[cells])
-        u = (np.arange(counts[room]) + rng.random(counts[room])) / counts[room]
-        picked.append(cells[np.minimum(np.searchsorted(cdf, u * cdf[-1], side="right"), len(cells) - 1)])
-    return np.concatenate(picked) if picked else np.zeros(0, np.intp)
+    room = np.repeat(np.arange(len(counts)), counts)
+    rank = np.arange(n) - np.repeat(np.cumsum(counts) - counts, counts)
+    u = (rank + rng.random(n)) / np.maximum(counts[room], 1)
+    index = np.searchsorted(cdf, before[room] + u * masses[room], side="right")
+    return cells[np.clip(index, starts[room], starts[room + 1] - 1)]
+
+
+@lru_cache(maxsize=256)
+def _prior_cdf(m: Map, cls: str) -> Array:
+    """The cumulative prior weight of ``cls`` over the free cells in cell order (cached per map and class)."""
+    cells, _ = cell_order.by_room(m)
+    return np.cumsum(m.prior(cls).weights[cells])
