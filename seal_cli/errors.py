@@ -19,14 +19,20 @@ __all__ = ["SealError", "SealErrors", "Where", "caret"]
 
 @dataclass(frozen=True, order=True)
 class Where:
-    """A position in a source: file (or None for text given on the command line), line, column."""
+    """A position in a source: file (or None for text given on the command line), line, column.
+
+    Printed ``file:line:col`` as compilers do, or ``column N`` for a command given as text."""
 
     file: str | None = None
     line: int | None = None
     column: int | None = None
 
     def __str__(self) -> str:
-        parts = [self.file or "<input>"]
+        if self.file is None:  # a command given on the command line: where in it
+            if self.column is None:
+                return "<input>" if self.line is None else f"line {self.line}"
+            return f"column {self.column}" if self.line in (None, 1) else f"line {self.line}, column {self.column}"
+        parts = [self.file]
         if self.line is not None:
             parts.append(str(self.line))
             if self.column is not None:

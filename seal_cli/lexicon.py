@@ -53,9 +53,6 @@ class CommandError(SealError):
         self.expected = list(expected)
         self.text = text
 
-    def located(self) -> str:
-        return f"column {self.column}: {self.message}"
-
     def to_json(self) -> dict[str, object]:
         return {"message": self.message, "column": self.column, "expected": self.expected}
 
