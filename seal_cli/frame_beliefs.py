@@ -33,9 +33,14 @@ target it has just been weighted for):
 3. resample P particles by weight (systematic, over the particles listed room by room and along a
    Hilbert curve within a room, :mod:`seal_cli.cell_order`, so that each room keeps its share of
    the belief to within one particle);
-4. move each particle by the prediction potential, a Gaussian of the frame's own spread (static
-   frames barely move, frames on movable objects move more), accepted or not by a
-   Metropolis–Hastings test against ``γ_t``: the move explores without changing the belief.
+4. move the copies that resampling made by the prediction potential, a Gaussian of the frame's
+   own spread (static frames barely move, frames on movable objects move more), each move
+   accepted or not by a Metropolis–Hastings test against ``γ_t``: the move explores without
+   changing the belief. A particle drawn once is already a draw from ``π_t``; its copies are
+   not independent of it, and moving them restores the diversity that resampling took (the
+   first copy stays where it is). Where the target has not changed, the weights are even,
+   resampling copies almost nothing and almost nothing moves; where it has (an object just
+   seen), many particles are copied and all the copies move.
 
 The particles thus track ``π_t``, the frame's location given the *current* object and frame
 beliefs. Weighting by ``γ_t`` alone after a resampling would multiply the same object evidence
@@ -111,21 +116,16 @@ class Terms:
         return _slots(self.meas_frame, self.meas_source, self.meas_weight, np.arange(self.frames))
 
     @cached_property
-    def context_frames(self) -> Index:
-        """The frames that have a context potential."""
-        return np.unique(self.ctx_frame)
+    def context(self) -> tuple[Index, Array]:
+        """The context terms as (F, S) source rows (−1: none) and beliefs: frame i's terms in row i."""
+        return _slots(self.ctx_frame, self.ctx_source, self.ctx_weight, np.arange(self.frames))
 
     @cached_property
-    def context(self) -> tuple[Index, Array]:
-        """The context terms as (len(context_frames), S) source rows (−1: none) and beliefs."""
-        return _slots(self.ctx_frame, self.ctx_source, self.ctx_weight, self.context_frames)
-
-    @property
     def belief_total(self) -> Array:
         """Σ_k B_ik per frame."""
         return np.asarray(np.bincount(self.meas_frame, self.meas_weight, minlength=self.frames), float)
 
-    @property
+    @cached_property
     def has_context(self) -> NDArray[np.bool_]:
         return np.bincount(self.ctx_frame, minlength=self.frames) > 0
 
@@ -212,8 +212,7 @@ class FrameBeliefs:
 
     def _resample_move(self, X: Array, cells: Index, gamma: Array, weights: Array, terms: Terms,
                        kernel: KernelSums, rng: np.random.Generator) -> None:
-        """Keep P of the weighted particles by systematic resampling in cell order, then move them by a
-        Metropolis–Hastings step whose proposal is the prediction potential and whose target is γ."""
+        """Keep P of the weighted particles by systematic resampling in cell order, then move the copies."""
         F, P = self.W.shape
         weights[~(np.isfinite(weights) & (weights > 0))] = 0.0
         self.Z = np.maximum(weights.mean(axis=1), np.finfo(float).tiny)
@@ -221,46 +220,65 @@ class FrameBeliefs:
         self.last_ess = ess(W)
         width = W.shape[1]
         listed = (cell_order.order_of_cells(self.map, cells) + np.arange(F)[:, None] * width).ravel()  # flat indices
-        chosen = systematic(W.ravel()[listed].reshape(F, width), rng, P) + np.arange(F)[:, None] * width
-        ancestors = listed[chosen]
-        X = X.reshape(-1, 2)[ancestors]
-        cells = cells.ravel()[ancestors]
-        gamma = gamma.ravel()[ancestors]
-        proposal = X + rng.standard_normal(X.shape) * self.noise[:, None, None]
-        moved = self.map.free_index(proposal.reshape(-1, 2)).reshape(F, P).astype(np.intp)
-        proposed = np.where(moved >= 0, self.gamma_of(terms, *self.potentials(terms, kernel, proposal)), 0.0)
-        accept = rng.random((F, P)) * gamma < proposed
-        self.X = np.where(accept[..., None], proposal, X)
-        self.cell = np.where(accept, moved, cells)
-        self.gamma = np.where(accept, proposed, gamma)
+        chosen = systematic(W.ravel()[listed].reshape(F, width), rng, P)
+        ancestors = listed[chosen + np.arange(F)[:, None] * width]
+        self.X = X.reshape(-1, 2)[ancestors]
+        self.cell = cells.ravel()[ancestors]
+        self.gamma = gamma.ravel()[ancestors]
         self.W = np.full((F, P), 1.0 / P)
+        copies = np.zeros((F, P), bool)
+        copies[:, 1:] = chosen[:, 1:] == chosen[:, :-1]  # the draws are sorted: a copy follows its original
+        f, k = np.nonzero(copies)
+        self._move(f, k, terms, kernel, rng)
+
+    def _move(self, f: Index, k: Index, terms: Terms, kernel: KernelSums, rng: np.random.Generator) -> None:
+        """Move particles ``k`` of frames ``f`` by the prediction potential, each move accepted by a
+        Metropolis–Hastings test against γ (so the belief stays what it is)."""
+        if len(f) == 0:
+            return
+        proposal = self.X[f, k] + rng.standard_normal((len(f), 2)) * self.noise[f, None]
+        moved = self.map.free_index(proposal).astype(np.intp)
+        gamma = self.gamma_of(terms, *self.potentials(terms, kernel, proposal[:, None], f), f)[:, 0]
+        proposed = np.where(moved >= 0, gamma, 0.0)
+        accept = rng.random(len(f)) * self.gamma[f, k] < proposed
+        f, k = f[accept], k[accept]
+        self.X[f, k], self.cell[f, k], self.gamma[f, k] = proposal[accept], moved[accept], proposed[accept]
 
     @property
     def free_area(self) -> float:
         return max(self.map.free_area, 1e-9)
 
     # -- the target and the proposal ----------------------------------------------------------
-    def potentials(self, terms: Terms, kernel: KernelSums, X: Array) -> tuple[Array, Array]:
-        """Σ_k B_ik K_k(x) and Σ_j C_ij K_j(x) at points X (F, Q, 2): two (F, Q) arrays."""
-        measurement = kernel.combine(*terms.measurement, X)
+    def potentials(self, terms: Terms, kernel: KernelSums, X: Array,
+                   frames: Index | None = None) -> tuple[Array, Array]:
+        """Σ_k B_ik K_k(x) and Σ_j C_ij K_j(x) at points X (R, Q, 2) of the frames ``frames`` (R,) — by
+        default every frame, R = F: two (R, Q) arrays."""
+        rows = np.arange(terms.frames) if frames is None else frames
+        sources, beliefs = terms.measurement
+        measurement = kernel.combine(sources[rows], beliefs[rows], X)
         context = np.zeros_like(measurement)
-        if len(terms.context_frames):
-            context[terms.context_frames] = kernel.combine(*terms.context, X[terms.context_frames])
+        some = terms.has_context[rows]
+        if some.any():
+            sources, beliefs = terms.context
+            at = rows[some]
+            context[some] = kernel.combine(sources[at], beliefs[at], X[some])
         return measurement, context
 
-    def gamma_of(self, terms: Terms, measurement: Array, context: Array) -> Array:
-        """γ from the two potentials (before restricting to free space)."""
-        total = terms.belief_total
+    def gamma_of(self, terms: Terms, measurement: Array, context: Array, frames: Index | None = None) -> Array:
+        """γ from the two potentials of the frames ``frames`` (default: every frame), before restricting
+        to free space."""
+        rows = np.arange(terms.frames) if frames is None else frames
+        total = terms.belief_total[rows, None]
         floor = self.model.floor_share * total * 2 * np.pi * self.sigma ** 2 / self.free_area
-        meas = np.where(total[:, None] > 0, measurement.astype(float) + floor[:, None], 1.0)
+        meas = np.where(total > 0, measurement.astype(float) + floor, 1.0)
         c0 = max(self.model.context_floor, 1e-12)
-        ctx = np.where(terms.has_context[:, None], c0 + context, 1.0)
+        ctx = np.where(terms.has_context[rows, None], c0 + context, 1.0)
         return np.asarray(meas * ctx)
 
-    def gamma_at(self, terms: Terms, kernel: KernelSums, X: Array) -> Array:
-        """γ at points X (F, Q, 2), zero off free space."""
+    def gamma_at(self, terms: Terms, kernel: KernelSums, X: Array, frames: Index | None = None) -> Array:
+        """γ at points X (R, Q, 2) of the frames ``frames`` (default: every frame), zero off free space."""
         free = self.map.is_free(X.reshape(-1, 2)).reshape(X.shape[:2])
-        return np.where(free, self.gamma_of(terms, *self.potentials(terms, kernel, X)), 0.0)
+        return np.where(free, self.gamma_of(terms, *self.potentials(terms, kernel, X, frames), frames), 0.0)
 
     def _draw(self, terms: Terms, sources: tuple[Array, Array], n: int,
               rng: np.random.Generator) -> tuple[Array, NDArray[np.bool_]]:
