@@ -116,3 +116,21 @@ def test_combine_is_the_weighted_sum_of_samples(kind: str) -> None:
     np.testing.assert_allclose(got[0], K(0, 0) + 0.3 * K(3, 0), rtol=1e-5, atol=1e-7)
     np.testing.assert_allclose(got[1], 0.5 * K(1, 1), rtol=1e-5, atol=1e-7)
     np.testing.assert_array_equal(got[2], 0.0)
+
+
+@pytest.mark.parametrize("banded", [True, False])
+def test_the_grid_smoothing_is_the_gaussian_filter(banded: bool, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The banded matrix products compute what scipy.ndimage's Gaussian filter does (zeros outside); a grid
+    too long for a band matrix uses the filter itself."""
+    from scipy import ndimage
+
+    import seal_cli.potentials as potentials
+
+    if not banded:
+        monkeypatch.setattr(potentials, "MAX_BAND", 10)
+    grid = GridKernelSums(2, BOUNDS, 0.3)
+    assert (grid._band is not None) == banded
+    mass = np.random.default_rng(7).random((2, 40, 31)).astype(np.float32)
+    want = ndimage.gaussian_filter(mass.astype(float), (0, grid.filter_sigma, grid.filter_sigma), mode="constant",
+                                   truncate=grid.truncate) * grid.scale
+    np.testing.assert_allclose(grid._smooth(mass), want, rtol=1e-5, atol=1e-5 * want.max())
