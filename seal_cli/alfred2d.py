@@ -42,7 +42,7 @@ if TYPE_CHECKING:
 __all__ = ["FOUR", "GRID", "MOVABLE_RECEPTACLES", "TASK_TYPES", "Condition", "Episode", "FloorPlan", "Placement",
            "Receptacle", "Suite", "Task", "build_scene", "build_world", "estimate_priors", "gold_commands",
            "gold_classes", "goal_conditions", "judge", "load_suite", "read_floorplans", "read_trials", "scene_priors",
-           "scene_vocabulary", "thor_yaw", "train_priors", "SYNONYMS"]
+           "scene_vocabulary", "suite_vocabulary", "thor_yaw", "train_priors"]
 
 GRID = 0.25
 """ALFRED's agent grid, metres."""
@@ -71,83 +71,29 @@ REACH = 1.5
 """ALFRED's interaction distance (AI2-THOR's ``visibilityDistance``), metres."""
 
 
-SYNONYMS: dict[str, tuple[str, ...]] = {
-    # Everyday English names of ALFRED's classes, as a household robot's vocabulary would list them.
-    # Written from general knowledge (a thesaurus, a shop's catalogue), not read off the goal sentences;
-    # the same list serves every floor plan, seen or unseen. A synonym that is another class's own name
-    # ("knife" for a butter knife, "towel" for a hand towel) is left out: it would steal that class.
-    "fridge": ("refrigerator", "icebox", "freezer"),
-    "garbage_can": ("bin", "trash can", "trash bin", "garbage bin", "waste bin", "wastebasket", "rubbish bin",
-                    "trash", "garbage"),
-    "counter_top": ("counter", "countertop", "kitchen counter", "worktop"),
-    "sink_basin": ("sink", "kitchen sink", "basin", "washbasin"),
-    "bathtub_basin": ("bathtub", "tub", "bath"),
-    "side_table": ("nightstand", "night stand", "bedside table", "end table"),
-    "dining_table": ("table", "kitchen table"),
-    "arm_chair": ("armchair", "chair", "easy chair"),
-    "sofa": ("couch", "settee"),
-    "dresser": ("chest of drawers", "bureau"),
-    "shelf": ("shelves", "bookshelf", "bookcase", "shelving"),
-    "tv_stand": ("tv stand", "television stand", "tv table", "entertainment center"),
-    "cabinet": ("cupboard", "cabinets"),
-    "stove_burner": ("stove", "burner", "cooktop", "hob", "range"),
-    "coffee_machine": ("coffee maker", "coffeemaker", "espresso machine"),
-    "desk_lamp": ("lamp", "table lamp", "reading lamp", "light"),
-    "floor_lamp": ("lamp", "standing lamp", "light"),
-    "toilet_paper_hanger": ("toilet paper holder", "toilet roll holder"),
-    "hand_towel_holder": ("towel holder", "towel rack", "towel rail"),
-    "ottoman": ("footstool", "pouf"),
-    "cd": ("disc", "compact disc", "cd"),
-    "cell_phone": ("phone", "mobile phone", "smartphone", "mobile"),
-    "remote_control": ("remote", "tv remote", "controller", "clicker"),
-    "key_chain": ("keys", "key", "key ring", "keyring"),
-    "credit_card": ("card", "bank card", "debit card"),
-    "alarm_clock": ("clock", "alarm"),
-    "glassbottle": ("glass bottle",),
-    "wine_bottle": ("wine", "bottle of wine"),
-    "cup": ("glass", "tumbler"),
-    "mug": ("coffee mug", "coffee cup", "tea cup"),
-    "newspaper": ("paper", "news paper"),
-    "laptop": ("computer", "notebook computer"),
-    "basket_ball": ("basketball", "ball"),
-    "baseball_bat": ("bat",),
-    "tennis_racket": ("racket", "racquet"),
-    "teddy_bear": ("teddy", "bear", "stuffed animal", "stuffed bear"),
-    "pillow": ("cushion",),
-    "watch": ("wristwatch",),
-    "spray_bottle": ("spray", "sprayer"),
-    "soap_bar": ("soap", "bar of soap"),
-    "soap_bottle": ("soap dispenser", "liquid soap", "bottle of soap"),
-    "dish_sponge": ("sponge",),
-    "scrub_brush": ("brush", "scrubber"),
-    "toilet_paper": ("toilet roll", "roll of toilet paper", "tissue roll"),
-    "paper_towel_roll": ("paper towels", "paper towel", "kitchen roll"),
-    "hand_towel": ("small towel", "face towel"),
-    "cloth": ("rag", "washcloth", "dish cloth", "dishcloth"),
-    "plate": ("dish",),
-    "pot": ("saucepan", "cooking pot"),
-    "pan": ("frying pan", "skillet", "fry pan"),
-    "kettle": ("teapot", "tea kettle"),
-    "butter_knife": ("table knife", "dinner knife"),
-    "spatula": ("turner", "flipper"),
-    "bread": ("loaf",),
-    "pepper_shaker": ("pepper", "pepper pot", "pepper grinder"),
-    "salt_shaker": ("salt", "salt pot"),
-    "statue": ("figurine", "sculpture", "statuette"),
-    "box": ("carton", "cardboard box"),
-    "boots": ("boot", "shoes"),
-    "footstool": ("stool",),
-    "watering_can": ("watering pot",),
-    "tissue_box": ("tissues", "box of tissues", "kleenex"),
-}
-"""Synonyms of ALFRED's classes for grounding the human goal sentences (see :func:`scene_vocabulary`)."""
+VOCABULARY = Path(__file__).resolve().parent / "suites" / "alfred2d_vocabulary.yaml"
+"""The suite's vocabulary file: AI2-THOR's classes and the names people use for them where THOR's
+name is not what the thing is called (a property of the simulator, like a detector's label map).
+General English synonyms are the frame library's; ALFRED's labelling conventions are left to the
+scene (:func:`scene_vocabulary`)."""
+
+_VOCABULARY: dict[str, Any] = {}
+
+
+def suite_vocabulary() -> Any:
+    """The suite's :class:`~seal_cli.grounding.Vocabulary`, read once per process from :data:`VOCABULARY`."""
+    from .grounding import load_vocabulary
+
+    if "suite" not in _VOCABULARY:
+        _VOCABULARY["suite"] = load_vocabulary(VOCABULARY)
+    return _VOCABULARY["suite"]
 
 
 def scene_vocabulary(classes: Iterable[str]) -> Any:
-    """The grounding vocabulary of a scene: its classes, each with :data:`SYNONYMS`."""
-    from .grounding import Vocabulary
-
-    return Vocabulary.of(list(classes), {c: SYNONYMS.get(c, ()) for c in classes})
+    """The grounding vocabulary of one scene: the classes present in it (its receptacles and its
+    things), with the suite's names for them, in the suite's order (which settles ties). A word is
+    grounded among these only: "the table" is the room's one table, "the sink" its basin."""
+    return suite_vocabulary().restricted_to(classes)
 
 
 # -- the data ------------------------------------------------------------------------------------

@@ -48,8 +48,8 @@ __all__ = ["PORTIONS", "Vocabulary", "load_vocabulary", "vocabulary_of_map"]
 PORTIONS = frozenset(" ".join((
     "slice piece bit chunk half part portion wedge segment sliver strip lump cube quarter crumb",
     "top side edge corner middle centre center end bottom surface back front",
-    "lid door handle seat tank cover",
-    "set bunch pair pack group collection stack pile handful")).split())
+    "lid door handle seat tank cover basin",
+    "set bunch pair pack group collection stack pile handful roll")).split())
 """English nouns that name a portion, a region, a part or a group of something else ("an apple
 *slice*", "the table *top*", "the fridge *door*", "a *set* of keys"): with one of these as its
 head, a phrase denotes what its modifiers or its "of" phrase name."""
@@ -57,6 +57,11 @@ head, a phrase denotes what its modifiers or its "of" phrase name."""
 
 def _lemmas(words: Iterable[str]) -> tuple[str, ...]:
     return tuple(noun_lemma(w) for w in words)
+
+
+def _head(name: tuple[str, ...]) -> str:
+    """The head word of a name: the last, or the one before "of" ("head of lettuce": head)."""
+    return name[name.index("of") - 1] if "of" in name[1:] else name[-1]
 
 
 @dataclass(frozen=True)
@@ -117,12 +122,40 @@ class Vocabulary:
 
     def with_synonyms(self, synonyms: Mapping[str, Sequence[str]]) -> Vocabulary:
         """This vocabulary with more synonyms, by class key (``class_key``): each class gets the
-        names listed under its own name. A class with none added keeps what it had."""
+        names listed under its own name. A class with none added keeps what it had.
+
+        A class named for a part or region of something (its last word is in :data:`PORTIONS`:
+        ``SinkBasin``, ``BathtubBasin``, ``CounterTop``) is also called by the name of the whole
+        and the whole's synonyms ("sink", "tub", "counter"), unless the vocabulary has a class for
+        the whole itself: in a room whose only sink is its basin, "the sink" is the basin."""
         if not synonyms:
             return self
-        added = tuple(tuple(dict.fromkeys((*own, *synonyms.get(class_key(name), ()))))
-                      for name, own in zip(self.classes, self.synonyms, strict=True))
-        return Vocabulary(self.classes, added, self.where)
+        keys = {class_key(name) for name in self.classes}
+        added = []
+        for name, own in zip(self.classes, self.synonyms, strict=True):
+            names = [*own, *synonyms.get(class_key(name), ())]
+            words = class_words(name)
+            whole = "_".join(words[:-1])
+            if len(words) > 1 and noun_lemma(words[-1]) in PORTIONS and whole not in keys:
+                names += [whole.replace("_", " "), *synonyms.get(whole, ())]
+            added.append(tuple(dict.fromkeys(n for n in names if class_key(n) != class_key(name))))
+        return Vocabulary(self.classes, tuple(added), self.where)
+
+    def restricted_to(self, classes: Iterable[str]) -> Vocabulary:
+        """The vocabulary of a scene: only the given classes (those present), each with the names
+        this vocabulary gives it, in this vocabulary's order (which settles ties), then the present
+        classes this vocabulary does not list. Classes keep the spelling they are given."""
+        present: dict[str, str] = {}
+        for cls in classes:
+            present.setdefault(class_key(cls), cls)
+        names: dict[str, list[str]] = {}
+        for name, synonyms in zip(self.classes, self.synonyms, strict=True):
+            key = class_key(name)
+            if key in present:
+                names.setdefault(present[key], []).extend(synonyms)
+        for cls in present.values():
+            names.setdefault(cls, [])
+        return Vocabulary.of(list(names), names)
 
     def __len__(self) -> int:
         return len(self.classes)
@@ -138,7 +171,7 @@ class Vocabulary:
         if found is None and words and words[end - 1].endswith("s"):     # a plural the dictionary lacks
             for cut in (1, 2):
                 stem = words[end - 1][:-cut]
-                found = self._ground((*words[:end - 1], stem, *words[end:]), end, of) if len(stem) > 2 else None
+                found = self._ground((*words[:end - 1], stem, *words[end:]), end, of) if len(stem) > 1 else None
                 if found is not None:
                     break
         return found
@@ -167,6 +200,8 @@ class Vocabulary:
         context = set(words) | set(of)
         for key, weight in ((head_word, 4.0), *((w, 1.0) for w in reversed(of))):
             for cls_index, name in self._by_word.get(key, ()):
+                if key != _head(name) and name not in self._own:
+                    continue      # a "table lamp" is a lamp: a synonym names a table only by its head
                 score = weight + (2.0 if name[-1] == key else 0.0) + sum(0.5 for w in name if w in context) \
                     - 0.25 * sum(1 for w in name if w not in context) + (0.125 if name in self._own else 0.0)
                 if best is None or (score, -cls_index) > (best[0], -best[1]):

@@ -20,6 +20,8 @@ from seal_cli.alfred2d import (
     load_suite,
     read_floorplans,
     scene_priors,
+    scene_vocabulary,
+    suite_vocabulary,
     thor_yaw,
 )
 from seal_cli.errors import SealError
@@ -138,3 +140,39 @@ def test_bad_data_is_a_clear_error(tmp_path: Path, shared_data: Path) -> None:
         load_suite(shared_data / "alfred2d", "test")
     with pytest.raises(SealError, match="unknown task type"):
         load_suite(shared_data / "alfred2d", "valid_seen", types=["juggling"])
+
+
+def test_the_suite_vocabulary_is_a_shipped_file_with_every_class_of_the_data(shared_data: Path) -> None:
+    from seal_cli.alfred2d import VOCABULARY
+    from seal_cli.grounding import load_vocabulary
+
+    assert VOCABULARY.is_file() and VOCABULARY.parent.parent.name == "seal_cli"   # inside the package: shipped
+    vocab = suite_vocabulary()
+    assert vocab == load_vocabulary(VOCABULARY)
+    plans, movable = read_floorplans(shared_data / "alfred2d")
+    classes = {r.cls for p in plans.values() for r in p.receptacles} | set(movable)
+    assert classes <= set(vocab.classes)
+    conventions = {"chair": "ArmChair", "table": "DiningTable", "sink": "SinkBasin", "glass": "Cup", "lamp": "DeskLamp"}
+    for cls, names in zip(vocab.classes, vocab.synonyms, strict=True):   # ALFRED's conventions are the scene's
+        assert not any(conventions.get(n) == cls for n in names), (cls, names)
+
+
+def test_an_episode_grounds_its_sentence_in_the_classes_its_room_has(library: Library) -> None:
+    from seal_cli.language import parse_command
+
+    def goal(text: str, present: list[str]) -> tuple[str | None, str | None]:
+        place = parse_command(text, library, scene_vocabulary(present)).frames[-1].elements
+        return place["theme"].cls, place["goal"].cls
+
+    bedroom = ["side_table", "desk_lamp", "arm_chair", "pillow", "cell_phone", "laptop"]
+    assert goal("put the phone on the table", bedroom) == ("cell_phone", "side_table")
+    assert goal("put the cushion on the chair", bedroom) == ("pillow", "arm_chair")
+    assert goal("put the computer on the table", bedroom) == ("laptop", "side_table")   # the suite's own names
+    bathroom = ["sink_basin", "bathtub_basin", "hand_towel", "hand_towel_holder", "toilet"]
+    assert goal("put the towel in the sink", bathroom) == ("hand_towel", "sink_basin")
+    assert goal("put the towel on the towel rack", bathroom) == ("hand_towel", "hand_towel_holder")
+    assert goal("put the towel in the tub", bathroom) == ("hand_towel", "bathtub_basin")
+    kitchen = ["dining_table", "side_table", "counter_top", "butter_knife", "kettle", "sink_basin"]
+    assert goal("put the knife on the table", kitchen) == ("butter_knife", "dining_table")  # the suite's order
+    assert goal("put the teapot on the counter", kitchen) == ("kettle", "counter_top")
+    assert goal("put the glass on the counter", kitchen)[0] is None      # no glass here, and no convention

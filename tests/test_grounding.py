@@ -134,3 +134,70 @@ def test_a_maps_classes_make_a_vocabulary() -> None:
     vocab = vocabulary_of_map(FakeMap())
     assert vocab.classes == ("fridge", "kitchen_table", "cup", "spoon")
     assert vocab.ground_words(["kitchen", "tables"]) == "kitchen_table"
+
+
+SCENE = Vocabulary.of(["DiningTable", "CoffeeTable", "SideTable", "SinkBasin", "Sink", "BathtubBasin", "Bathtub",
+                       "DeskLamp", "FloorLamp", "HandTowel", "Towel", "Knife", "ButterKnife", "CounterTop", "CD"],
+                      {"CD": ["disc"]})
+
+
+@pytest.mark.parametrize(("present", "phrase", "cls"), [
+    (["SideTable", "SinkBasin"], "the table", "SideTable"),        # the one table the room has
+    (["CoffeeTable", "SideTable"], "the table", "CoffeeTable"),    # a tie: the vocabulary's order
+    (["SinkBasin", "Toilet"], "the sink", "SinkBasin"),            # only the basin: "sink" is the basin
+    (["Sink", "SinkBasin"], "the sink", "Sink"),                   # both: the exact name
+    (["BathtubBasin"], "the tub", "BathtubBasin"),                 # the whole's synonyms too
+    (["BathtubBasin"], "the bath", "BathtubBasin"),
+    (["FloorLamp", "SideTable"], "the lamp", "FloorLamp"),         # whichever lamp is there
+    (["DeskLamp", "SideTable"], "the lamp", "DeskLamp"),
+    (["HandTowel"], "a towel", "HandTowel"),                       # no exact class: the one whose head it is
+    (["HandTowel", "Towel"], "a towel", "Towel"),                  # an exact name first
+    (["ButterKnife", "Apple"], "a knife", "ButterKnife"),
+    (["CounterTop"], "the counter", "CounterTop"),                 # the whole of a part
+    (["CD"], "two CDs", "CD"),                                     # a short plural the dictionary lacks
+    (["CD"], "the discs", "CD"),                                   # the vocabulary's own synonyms survive
+    (["Apple"], "the table", None),                                # nothing present: no class
+])
+def test_a_scene_grounds_words_in_the_classes_it_has(library: Library, present: list[str], phrase: str,
+                                                     cls: str | None) -> None:
+    assert theme_class(phrase, library, SCENE.restricted_to(present)) == cls
+
+
+def test_restricted_keeps_the_vocabulary_order_and_the_given_spelling() -> None:
+    scene = SCENE.restricted_to(["side_table", "cd", "dining_table", "pineapple"])
+    assert scene.classes == ("dining_table", "side_table", "cd", "pineapple")   # unlisted classes last
+    assert scene.ground_words(["disc"]) == "cd" and scene.ground_words(["pineapple"]) == "pineapple"
+    assert SCENE.restricted_to([]).classes == ()
+
+
+def test_another_class_synonym_names_a_thing_only_by_its_head(library: Library) -> None:
+    # DeskLamp is also a "table lamp": that makes it a lamp, not a table
+    vocab = Vocabulary.of(["DeskLamp", "Desk"])
+    assert theme_class("the table", library, vocab) is None
+    assert theme_class("the table lamp", library, vocab) == "DeskLamp"
+    assert theme_class("the light", library, vocab) == "DeskLamp"                # "desk light": its head
+    assert theme_class("a lettuce head", library, Vocabulary.of(["Lettuce"])) == "Lettuce"   # "head of lettuce"
+
+
+def test_a_part_is_called_by_its_whole_only_when_the_whole_is_no_class(library: Library) -> None:
+    assert theme_class("the sink", library, Vocabulary.of(["SinkBasin"])) == "SinkBasin"
+    assert theme_class("the sink", library, Vocabulary.of(["SinkBasin", "Sink"])) == "Sink"
+    assert theme_class("the fridge", library, Vocabulary.of(["FridgeDoor", "Fridge"])) == "Fridge"
+    assert theme_class("the roll", library, Vocabulary.of(["PaperTowelRoll"])) == "PaperTowelRoll"
+    assert theme_class("the kitchen roll", library, Vocabulary.of(["PaperTowelRoll"])) == "PaperTowelRoll"
+
+
+def test_a_map_vocabulary_follows_the_same_rules(library: Library) -> None:
+    class Thing:
+        def __init__(self, cls: str) -> None:
+            self.cls = cls
+
+    class Kitchen:
+        places = (Thing("sink_basin"), Thing("side_table"))
+        objects = (Thing("butter_knife"), Thing("floor_lamp"))
+        priors: dict[str, dict[str, float]] = {}
+
+    parse = parse_command("put the knife on the table by the lamp", library, vocabulary_of_map(Kitchen()))
+    place = parse.frames[0].elements
+    assert (place["theme"].cls, place["goal"].cls) == ("butter_knife", "side_table")
+    assert theme_class("the sink", library, vocabulary_of_map(Kitchen())) == "sink_basin"

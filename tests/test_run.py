@@ -68,3 +68,15 @@ def test_bench_tasks_table_and_bad_options(shared_data: Path) -> None:
     assert bad_goal.exit_code == 1 and "unknown goal source" in bad_goal.output
     bad_suite = runner.invoke(app, ["bench", "tasks", "--suite", "thor"])
     assert bad_suite.exit_code == 1 and "unknown suite" in bad_suite.output
+
+
+def test_run_grounds_words_in_the_map_and_a_vocabulary_file(tmp_path: Path) -> None:
+    words = tmp_path / "words.yaml"
+    words.write_text("- {class: cup, synonyms: [beaker]}\n- {class: pineapple, synonyms: [ananas]}\n", encoding="utf-8")
+    args = ["run", "--map", "apartment", "stir the beaker", "--json", "--particles", "50", "--max-steps", "5"]
+    plain = json.loads(runner.invoke(app, args).stdout)
+    assert plain["plan"] == ["Pick(theme=spoon)", "Stir(theme=beaker, instrument=spoon)"]   # no such class
+    named = json.loads(runner.invoke(app, [*args, "--vocabulary", str(words)]).stdout)
+    assert named["plan"] == ["Pick(theme=spoon)", "Stir(theme=cup, instrument=spoon)"]
+    missing = runner.invoke(app, [*args, "--vocabulary", str(tmp_path / "none.yaml")])
+    assert missing.exit_code == 1 and "Traceback" not in missing.output

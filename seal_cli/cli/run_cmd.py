@@ -40,6 +40,9 @@ def run(
     rrd: Path | None = typer.Option(None, "--rrd", help="Write a Rerun recording of the run here.",
                                     show_default=False),
     png: Path | None = typer.Option(None, "--png", help="Write a picture of the run here.", show_default=False),
+    vocabulary_file: Path | None = typer.Option(None, "--vocabulary", help="Also call the map's classes by the "
+                                                "names this vocabulary file gives them (the map's classes only).",
+                                                show_default=False),
     framelib: list[Path] | None = FramelibOption,
     as_json: bool = JsonOption,
 ) -> None:
@@ -63,6 +66,10 @@ def run(
         the_map = replace(the_map, robot=Robot(the_map.robot.pose, holding))
     scene = scene_from_map(the_map, library)
     vocabulary = vocabulary_of_map(the_map)
+    if vocabulary_file is not None:
+        from ..grounding import load_vocabulary
+
+        vocabulary = load_vocabulary(vocabulary_file).restricted_to(vocabulary.classes)
     parses = [parse_command(t, library, vocabulary) for t in (*(done or ()), text)]
     problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1])
     searcher = make_policy(policy, particles)
