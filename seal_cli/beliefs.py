@@ -46,6 +46,9 @@ __all__ = ["Observer", "SeFM", "SeFMConfig", "Step", "frame_id"]
 
 Array = NDArray[np.float64]
 
+REGIONS = 64
+"""How many visible regions (one per pose) SeFM keeps."""
+
 
 @dataclass(frozen=True)
 class SeFMConfig:
@@ -124,7 +127,7 @@ class SeFM:
         self.config = config or SeFMConfig()
         self.observers = list(observers)
         self.step = 0
-        self._last_region: VisibleRegion | None = None
+        self._regions: dict[tuple[float, float, float], VisibleRegion] = {}
         self.sources = self._sources()
         P = self.config.particles
         self.objects = ObjectBeliefs.from_prior(m, self.sources, P, rng,
@@ -224,13 +227,18 @@ class SeFM:
             observer.update(self, record)
 
     def _region(self, pose: tuple[float, float, float]) -> VisibleRegion:
-        """The region visible from a pose (cast once per distinct pose)."""
-        if self._last_region is None or self._last_region.pose != pose:
+        """The region visible from a pose: cast once per pose, the last ``REGIONS`` kept (a robot comes
+        back to where it was; the map does not change)."""
+        region = self._regions.pop(pose, None)
+        if region is None:
             sensor = self.map.sensor
             span = min(sensor.fov_deg, 360.0) * np.pi / 180
             rays = max(16, int(np.ceil(span * sensor.range / self.config.ray_spacing)))
-            self._last_region = visible_region(self.map, pose, rays=rays)
-        return self._last_region
+            region = visible_region(self.map, pose, rays=rays)
+            if len(self._regions) >= REGIONS:
+                del self._regions[next(iter(self._regions))]
+        self._regions[pose] = region  # most recently used last
+        return region
 
     def close(self) -> None:
         """Tell the observers the run is over."""

@@ -225,6 +225,20 @@ def test_detections_from_a_view_already_used_still_count(library: Library) -> No
     assert np.hypot(s.best[0] - 8.0, s.best[1] - 1.0) < 0.3
 
 
+def test_visible_regions_are_cast_once_per_pose_and_the_last_ones_kept(library: Library,
+                                                                       monkeypatch: pytest.MonkeyPatch) -> None:
+    import seal_cli.beliefs as beliefs
+
+    monkeypatch.setattr(beliefs, "REGIONS", 2)
+    sefm = SeFM(box_map(), [], cup_state(library), np.random.default_rng(0), classes=["cup"])
+    first = sefm._region((1.0, 1.0, 0.0))
+    assert sefm._region((1.0, 1.0, 0.0)) is first
+    sefm._region((2.0, 1.0, 0.0))
+    assert sefm._region((1.0, 1.0, 0.0)) is first  # used again: now the most recent
+    sefm._region((3.0, 1.0, 0.0))                  # evicts (2, 1)
+    assert set(sefm._regions) == {(1.0, 1.0, 0.0), (3.0, 1.0, 0.0)}
+
+
 def test_a_detection_pulls_the_belief_onto_it(library: Library) -> None:
     m = box_map()
     sefm = SeFM(m, [], cup_state(library), np.random.default_rng(0), SeFMConfig(), classes=["cup"])
