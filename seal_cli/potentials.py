@@ -149,6 +149,8 @@ class GridKernelSums(KernelSums):
         self.grids: NDArray[np.floating[Any]] = np.zeros((count, *self.shape), dtype=dtype)
         self._band = _band(max(self.shape), self.filter_sigma, truncate, dtype) if max(self.shape) <= MAX_BAND else None
         """The filter along an axis as a matrix (any window's is its leading block: entries depend on i − j)."""
+        self.radius = int(truncate * self.filter_sigma + 0.5)
+        """How far (cells) the filter reaches."""
         self.factor = np.ones(count)
         """Each row's grid times its factor is its K (a reweighting divides the factor, not the grid)."""
 
@@ -177,8 +179,9 @@ class GridKernelSums(KernelSums):
     def _smooth(self, mass: Array) -> Array:
         """The binned masses (R, nx', ny') smoothed along both grid axes by the Gaussian filter, as two
         products with banded matrices (each entry a tap of the filter's kernel, as ``scipy.ndimage``'s
-        ``gaussian_filter`` with zeros outside would use): BLAS does the many zeros faster than a
-        filter loop does the taps alone. (A grid more than ``MAX_BAND`` cells long takes the filter.)"""
+        ``gaussian_filter`` with zeros outside would use), block by block: BLAS does the zeros near the
+        band faster than a filter loop does the taps alone. (A grid more than ``MAX_BAND`` cells long
+        takes the filter.)"""
         _, nx, ny = mass.shape
         if self._band is None:
             from scipy import ndimage
@@ -187,7 +190,7 @@ class GridKernelSums(KernelSums):
             smooth = ndimage.gaussian_filter(mass, (0, s, s), mode="constant", truncate=self.truncate)
         else:
             with _one_thread():
-                smooth = np.matmul(self._band[:nx, :nx], mass @ self._band[:ny, :ny])
+                smooth = _banded(_banded(mass, self._band, self.radius, 2), self._band, self.radius, 1)
         smooth *= self.scale
         return np.asarray(smooth)
 
@@ -299,6 +302,21 @@ def _band(n: int, sd: float, truncate: float, dtype: type) -> Array:
     total = np.exp(-0.5 * (np.arange(-radius, radius + 1) / sd) ** 2).sum()
     d = np.subtract.outer(np.arange(n), np.arange(n))
     return np.where(np.abs(d) <= radius, np.exp(-0.5 * (d / sd) ** 2) / total, 0.0).astype(dtype)
+
+
+def _banded(mass: Array, band: Array, radius: int, axis: int, block: int = 32) -> Array:
+    """``mass`` times the symmetric band matrix along ``axis`` (1 or 2), a block of ``block`` outputs at a
+    time from the inputs within ``radius`` of it (the rest of the band is zeros)."""
+    n = mass.shape[axis]
+    out = np.empty_like(mass)
+    for start in range(0, n, block):
+        stop = min(start + block, n)
+        low, high = max(0, start - radius), min(n, stop + radius)
+        if axis == 2:
+            out[:, :, start:stop] = mass[:, :, low:high] @ band[low:high, start:stop]
+        else:
+            out[:, start:stop, :] = np.matmul(band[start:stop, low:high], mass[:, low:high, :])
+    return out
 
 
 @lru_cache(maxsize=1)
