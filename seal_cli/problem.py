@@ -33,7 +33,7 @@ from .errors import SealError, Where
 from .frames import Binding, Fact, Frame
 from .library import Library
 from .state import State, robot_facts
-from .taxonomy import Taxonomy, class_key
+from .taxonomy import Taxonomy, class_key, class_words
 
 OPENABLE = "openable"
 
@@ -152,9 +152,12 @@ def _said(phrase: Phrase | None, name: str) -> str:
 
 def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], things: Things,
             text: str) -> tuple[str, ...]:
-    """The things a phrase names: its antecedent's for a pronoun, else its class (counted if asked)."""
+    """The things a phrase names: its antecedent's for a pronoun, else its class (counted if asked);
+    every conjunct's for a coordination."""
     from .lexicon import PERSON_PRONOUNS, PRONOUNS
 
+    if phrase.conjuncts:        # "the apple and the pear": both
+        return tuple(dict.fromkeys(v for c in phrase.conjuncts for v in _values(c, earlier, things, text)))
     if phrase.refers_to is not None:
         index, role = phrase.refers_to
         if 0 <= index < len(earlier) and role in earlier[index]:
@@ -168,8 +171,22 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
     value = phrase.cls or phrase.head
     if not class_key(value):
         raise _located(f"{phrase.text!r} names no thing", phrase, text)
-    count = phrase.quantity if phrase.quantity is not None and phrase.quantity > 1 else 1
-    return things.instances(value, count)
+    return things.instances(value, _count(phrase, value))
+
+
+def _count(phrase: Phrase, value: str) -> int:
+    """How many things a phrase asks for: the number said ("two apples"); at least two for a plural
+    that names the class by its head ("the books", "both books"; not "the keys" of a key chain);
+    one whole for pieces cut from it ("two slices of apple": one apple, sliced; but "two sets of
+    keys" are two key chains)."""
+    from .grounding import PIECES
+
+    named = class_words(value)[-1:] == (phrase.head,)
+    if phrase.head in PIECES and not named:
+        return 1
+    if phrase.quantity is not None:
+        return max(1, phrase.quantity)
+    return 2 if phrase.plural and named else 1
 
 
 def _check_types(frame: Frame, values: Mapping[str, tuple[str, ...]], phrases: Mapping[str, Phrase],
