@@ -321,12 +321,12 @@ class Agent:
             return held.id
         candidates = [k for k in self.instances(key) if k.id not in self.unreachable and k.id not in others
                       and not self.world.held_chain(k.id)]
+        previous = self.chosen.get(name)
         taking = role == "theme" and any(a.name == "pick" for a in binding.actions)
-        if taking:
-            candidates = [k for k in candidates if k.id not in self.placed]
+        if taking:   # a thing put in place is not taken again, unless the command names it again
+            candidates = [k for k in candidates if k.id not in self.placed or k.id == previous]
         if not candidates:
             return None
-        previous = self.chosen.get(name)
         if previous is not None and any(k.id == previous for k in candidates):
             return previous
         choose = getattr(self.policy, "choose", None)

@@ -42,7 +42,7 @@ from .taxonomy import class_key, class_words
 if TYPE_CHECKING:
     from .language import NP
 
-__all__ = ["PORTIONS", "Vocabulary", "load_vocabulary", "vocabulary_of_map"]
+__all__ = ["PIECES", "PORTIONS", "Vocabulary", "load_vocabulary", "vocabulary_of_map"]
 
 
 PORTIONS = frozenset(" ".join((
@@ -53,6 +53,12 @@ PORTIONS = frozenset(" ".join((
 """English nouns that name a portion, a region, a part or a group of something else ("an apple
 *slice*", "the table *top*", "the fridge *door*", "a *set* of keys"): with one of these as its
 head, a phrase denotes what its modifiers or its "of" phrase name."""
+
+
+PIECES = frozenset({"slice", "piece", "chunk", "wedge", "section", "segment", "sliver", "half", "quarter", "bit"})
+"""The portions that are pieces cut from a whole ("an apple *slice*", "a *piece* of bread"): a
+piece exists once its whole has been cut, so naming one asks for the cutting (see
+:mod:`seal_cli.language`)."""
 
 
 def _lemmas(words: Iterable[str]) -> tuple[str, ...]:

@@ -34,6 +34,7 @@ from lark import Tree
 
 from .errors import SealError
 from .frames import Frame
+from .grounding import PIECES
 from .lexicon import PERSON_PRONOUNS, CommandError, Lexicon, Word, is_plural, noun_lemma, tag
 from .library import Library
 
@@ -55,7 +56,9 @@ class Phrase:
 
     ``kind`` is "person", "thing", "place" (here, there) or "message"; ``refers_to`` names the
     antecedent of a pronoun as (frame index, element); ``quantity`` a number said ("two
-    apples"); ``default`` marks an element filled from the frame's default, not said.
+    apples"); ``default`` marks an element filled from the frame's default, not said;
+    ``conjuncts`` are the phrases of a coordination ("the apple and the pear"), each grounded
+    (the phrase itself stands for the first).
     """
 
     text: str | None
@@ -68,6 +71,7 @@ class Phrase:
     modifiers: tuple[str, ...] = ()
     default: bool = False
     span: tuple[int, int] | None = field(default=None, compare=False)
+    conjuncts: tuple[Phrase, ...] = ()
 
     def to_json(self) -> dict[str, Any]:
         data: dict[str, Any] = {"text": self.text, "head": self.head, "class": self.cls}
@@ -83,6 +87,8 @@ class Phrase:
             data["modifiers"] = list(self.modifiers)
         if self.default:
             data["default"] = True
+        if self.conjuncts:
+            data["conjuncts"] = [c.to_json() for c in self.conjuncts]
         return data
 
 
@@ -431,6 +437,7 @@ class Builder:
         self.words = words
         self.frames: list[Evoked] = []
         self.kinds: list[dict[str, str]] = []          # kind of each frame's elements, for pronouns
+        self.cut: set[int] = set()                     # noun phrases of pieces already seen to (cut_for)
 
     # -- the tree ------------------------------------------------------------------------------
     def word(self, token: Any) -> Word:
@@ -454,13 +461,22 @@ class Builder:
                 bare.objects = [nxt.objects[0]]
         ordered: list[Clause] = []
         for clause, join in zip(clauses, joins, strict=True):
-            if "while" in join.split() and ordered:   # "turn on the lamp while holding a clock": hold it first
+            # "turn on the lamp while holding a clock": hold it first; but "carry a clock while turning
+            # on a lamp" is already holding it (the one that takes a thing in hand comes first)
+            if "while" in join.split() and ordered and not (self.takes(ordered[-1]) and not self.takes(clause)):
                 ordered.insert(len(ordered) - 1, clause)
             else:
                 ordered.append(clause)
         for clause in ordered:
             self.clause(clause)
         return Parse(self.text, tuple(self.frames))
+
+    def takes(self, clause: Clause) -> bool:
+        """Whether the clause's verb takes a thing in hand (a frame of it has ``holding(theme)`` as a
+        result: "hold", "carry", "pick up")."""
+        return any(frame.elements and any(p.predicate == "holding" and not p.negated and
+                                          p.args == (frame.elements[0].role,) for p in frame.postconditions)
+                   for frame in self.library.evoked_by(str(clause.verb.info)))
 
     def read_clause(self, tree: Tree) -> Clause:
         phrase = tree.children[-1]
@@ -937,6 +953,7 @@ class Builder:
                     self.put(content, np, relation.predicate)
 
     def results_of(self, np: NP) -> None:
+        self.cut_for(np)
         for word in np.results:
             info: tuple[str, str] = word.info  # type: ignore[assignment]
             frame_name, unit = info
@@ -945,6 +962,60 @@ class Builder:
             self.frames.append(Evoked(frame.name, unit, (word.start, word.end),
                                       {first: self.phrase(np, frame, first)} | self.defaults(frame, {first})))
         np.results = []
+
+    def cutting(self, noun: str) -> tuple[Frame, str] | None:
+        """The frame that cuts a thing into pieces, and its lexical unit: the one the piece's noun
+        names ("slice"), else the one of "cut", whose result is a state of its theme (``sliced``)."""
+        for unit in (noun, "cut"):
+            for frame in self.library.evoked_by(unit):
+                first = frame.elements[0].role if frame.elements else None
+                if any(not p.negated and p.args == (first,) for p in frame.postconditions):
+                    return frame, unit
+        return None
+
+    def cut_for(self, np: NP) -> None:
+        """A piece cut from a whole ("an apple *slice*", "a *piece* of bread", ``grounding.PIECES``)
+        exists once the whole has been cut: the cutting frame comes first, on the whole, unless the
+        command has cut it already ("slice the bread and take a slice")."""
+        if np.head is None or np.head.tag != "WORD" or np.kind != "thing" or noun_lemma(np.head.text) not in PIECES \
+                or id(np) in self.cut:
+            return
+        self.cut.add(id(np))
+        found = self.cutting(noun_lemma(np.head.text))
+        if found is None:
+            return
+        frame, unit = found
+        first = frame.elements[0].role
+        whole = self.phrase(np, frame, first)
+        if whole.refers_to is not None or whole.cls is None and not (np.mods or np.of):
+            return                                         # no whole named: "take a slice" (see phrase)
+        if any(e.frame == frame.name and first in e.elements and self.same_thing(e.elements[first], whole)
+               for e in self.frames):
+            return
+        self.frames.append(Evoked(frame.name, unit, (np.start, np.end), {first: whole} | self.defaults(frame, {first})))
+
+    def cut_from(self, np: NP) -> tuple[int, str] | None:
+        """For a piece that names no whole ("take *a slice*"), the theme of the latest frame that cut
+        something in this command: what the piece was cut from."""
+        if np.head is None or np.head.tag != "WORD" or np.mods or np.of is not None or \
+                noun_lemma(np.head.text) not in PIECES:
+            return None
+        found = self.cutting(noun_lemma(np.head.text))
+        if found is None:
+            return None
+        frame = found[0]
+        first = frame.elements[0].role
+        for index in range(len(self.frames) - 1, -1, -1):
+            if self.frames[index].frame == frame.name and first in self.frames[index].elements:
+                return index, first
+        return None
+
+    def same_thing(self, a: Phrase, b: Phrase) -> bool:
+        if a.refers_to is not None or b.refers_to is not None:
+            ra = a.refers_to or ()
+            rb = b.refers_to or ()
+            return bool(ra and ra == rb)
+        return (a.cls or a.head) == (b.cls or b.head)
 
     def hold(self, np: NP) -> None:
         """The frame that gets ``np`` in hand (``holding(theme)``: Pick), before the clause."""
@@ -1015,9 +1086,17 @@ class Builder:
         cls = None
         if self.vocabulary is not None and np.kind != "message":
             cls = self.vocabulary.ground_np(np)
+        whole = self.cut_from(np) if cls is None else None
+        if whole is not None:                   # "slice the bread, take a slice": a slice of the bread
+            index, name = whole
+            root = self.frames[index].elements[name]
+            ref = root.refers_to or (index, name)
+            root = self.frames[ref[0]].elements[ref[1]]
+            return Phrase(text, root.head, root.cls, root.kind, ref, None, np.plural, span=(np.start, np.end))
         modifiers = tuple(noun_lemma(w.text) if w.tag == "WORD" else w.lower for w in np.mods)
+        conjuncts = tuple(self.phrase(c, frame, role) for c in np.conjuncts) if len(np.conjuncts) > 1 else ()
         return Phrase(text, np.head_text if np.kind != "message" else text, cls, np.kind, None, np.quantity,
-                      np.plural and np.kind != "message", modifiers, span=(np.start, np.end))
+                      np.plural and np.kind != "message", modifiers, span=(np.start, np.end), conjuncts=conjuncts)
 
     def ground_name(self, name: str) -> str | None:
         if self.vocabulary is None:

@@ -547,6 +547,8 @@ class Tagger:
         if n and not in_np and (low != "one" or self.np_starts(i + 1) and nxt not in PREPOSITIONS) and \
                 (n > 1 or low != "one" or self._noun_follows(i + 1)):
             return self._emit(i, n, "NUM", NUMBERS[" ".join(x.lower for x in words[i:i + n])])
+        if n and in_np and low != "one" and self.prev_tag() == "DET" and self._noun_follows(i + n):
+            return self._emit(i, n, "NUM", NUMBERS[" ".join(x.lower for x in words[i:i + n])])   # "the two books"
         if low.isascii() and low.isdigit():
             return self._emit(i, 1, "NUM", int(low))
         if low == "'s":

@@ -91,3 +91,12 @@ def test_find_searches_until_seen_and_rooms_are_places_to_go(library: Library) -
     assert heard[-1].kind == "done" and any(r.kind == "act" and "sees mug_1" in r.text for r in heard)
     s, agent, result, _ = run(library, [("Go", {"goal": "kitchen"})])
     assert result.completed and s.map.room_of([s.world.robot.pose[:2]]) == ["kitchen"]
+
+
+def test_a_thing_put_somewhere_is_taken_again_when_the_command_names_it_again(library: Library) -> None:
+    # "move the apple to the fridge, chill it, move it to the table": the same apple all along
+    s, agent, result, _ = run(library, [("Place", {"theme": "apple", "goal": "fridge"}),
+                                        ("Cool", {"theme": "apple"}),
+                                        ("Place", {"theme": "apple", "goal": "dining_table"})], apple_in="counter_1")
+    assert result.completed, result.reason
+    assert s.world.has("apple_1", "cold") and s.world.items["apple_1"].parent == "table_1"

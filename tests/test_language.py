@@ -161,7 +161,7 @@ def test_result_words_evoke_frames_first(library: Library) -> None:
 
 @pytest.mark.parametrize(("text", "frames"), [
     ("Put a warm apple on the table", ["Heat", "Place"]),
-    ("Place a cool slice of lettuce on the table", ["Cool", "Place"]),
+    ("Place a cool slice of lettuce on the table", ["Slice", "Cool", "Place"]),
     ("Place the heated up tomato on the white table", ["Heat", "Place"]),
     ("put the wash cloth in the bin", ["Place"]),
     ("put a light box on the table", ["Place"]),
@@ -190,6 +190,8 @@ def test_inflected_verbs_and_subordinate_clauses(library: Library) -> None:
     "Turn on the light while holding a bat",
     "While holding a bat, turn on the light",
     "turn the light on while carrying the bat",
+    "Carry a bat while turning on a light",          # already holding it while the light goes on
+    "hold a bat while turning the light on",
 ])
 def test_what_is_held_while_a_clause_is_done_is_picked_first(library: Library, text: str) -> None:
     parse = parse_command(text, library)
@@ -309,9 +311,11 @@ def test_grounding_with_a_vocabulary(library: Library) -> None:
     vocab = Vocabulary.of(["AlarmClock", "CounterTop", "Apple", "Fridge"], {"Fridge": ["refrigerator"]})
     parse = parse_command("put the apple slice from the counter in the refrigerator and find the clock", library,
                           vocab)
-    place = parse.frames[0].elements
+    assert [f.frame for f in parse.frames] == ["Slice", "Place", "Find"]       # a slice: the apple is cut first
+    assert parse.frames[0].elements["theme"].cls == "Apple"
+    place = parse.frames[1].elements
     assert (place["theme"].cls, place["goal"].cls) == ("Apple", "Fridge")
-    assert parse.frames[1].elements["theme"].cls == "AlarmClock"
+    assert parse.frames[2].elements["theme"].cls == "AlarmClock"
     assert parse_command("find the zorblax", library, vocab).frames[0].elements["theme"].cls is None
 
 
@@ -414,3 +418,38 @@ def test_parse_trees_shared_by_shape_give_the_same_parses(library: Library, shar
         return results
 
     assert parse_all(fresh=False) == parse_all(fresh=True)
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("Put a chilled apple slice in the sink", [("Slice", "Apple"), ("Cool", "Apple"), ("Place", "Apple")]),
+    ("Put a pot with a piece of apple in it on a table",
+     [("Slice", "Apple"), ("Place", "Apple"), ("Place", "Pot")]),
+    ("put a cooked slice of tomato on the counter", [("Slice", "Tomato"), ("Heat", "Tomato"), ("Place", "Tomato")]),
+    ("cut an apple and put an apple piece in the pot", [("Slice", "Apple"), ("Place", "Apple")]),   # cut once
+    ("slice the bread, take a slice and put the slice in the fridge",      # a slice of what was cut
+     [("Slice", "Bread"), ("Pick", "Bread"), ("Place", "Bread")]),
+    ("put a slice in the fridge", [("Place", None)]),                      # nothing cut: no whole to cut
+    ("put two sets of keys on the desk", [("Place", "KeyChain")]),        # a group is no piece
+    ("Put the toilet paper roll on the desk", [("Place", "ToiletPaper")]),
+])
+def test_a_piece_cut_from_a_thing_asks_for_the_cutting_first(library: Library, text: str,
+                                                             expected: list[tuple[str, str | None]]) -> None:
+    vocab = Vocabulary.of(["Apple", "Pot", "Tomato", "Bread", "KeyChain", "ToiletPaper", "Desk", "Fridge"])
+    parse = parse_command(text, library, vocab)
+    assert [(f.frame, parse.resolve(f.elements["theme"]).cls) for f in parse.frames] == expected
+
+
+def test_a_number_after_the_article_is_a_quantity(library: Library) -> None:
+    theme = parse_command("move the two books on the desk to the bed", library).frames[0].elements["theme"]
+    assert (theme.head, theme.quantity, theme.modifiers) == ("book", 2, ())
+    assert parse_command("take the one on the left", library).frames[0].elements["theme"].quantity is None
+
+
+def test_a_coordination_keeps_each_conjunct(library: Library) -> None:
+    vocab = Vocabulary.of(["Apple", "Pear", "Fridge"])
+    theme = parse_command("put the apple and two pears in the fridge", library, vocab).frames[0].elements["theme"]
+    assert (theme.cls, theme.plural) == ("Apple", True)
+    assert [(c.text, c.cls, c.quantity) for c in theme.conjuncts] == [("the apple", "Apple", None),
+                                                                     ("two pears", "Pear", 2)]
+    assert [c["class"] for c in theme.to_json()["conjuncts"]] == ["Apple", "Pear"]
+    assert not parse_command("put the apple in the fridge", library, vocab).frames[0].elements["theme"].conjuncts

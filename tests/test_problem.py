@@ -1,0 +1,45 @@
+"""The planning problem from words: how many things a phrase asks for, coordinations."""
+
+from __future__ import annotations
+
+import pytest
+
+from seal_cli.grounding import Vocabulary
+from seal_cli.library import Library
+from seal_cli.problem import problem_of_text
+
+VOCAB = Vocabulary.of(["Book", "KeyChain", "Apple", "Pear", "Desk", "Fridge", "Microwave", "ToiletPaper"])
+
+
+def themes(text: str, library: Library) -> list[str]:
+    problem = problem_of_text(text, library, vocabulary=VOCAB)
+    return [b.elements["theme"] for b in problem.commanded if b.frame.name == "Place"]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("put a book on the desk", ["book"]),
+    ("put two books on the desk", ["book", "book_2"]),
+    ("put the two books on the desk", ["book", "book_2"]),          # a number after "the"
+    ("put the books on the desk", ["book", "book_2"]),              # a plural: at least two
+    ("put both books on the desk", ["book", "book_2"]),
+    ("put the keys on the desk", ["key_chain"]),                    # "keys" names a key chain, not its head
+    ("put two sets of keys on the desk", ["key_chain", "key_chain_2"]),   # groups are counted
+    ("put two rolls of toilet paper on the desk", ["toilet_paper", "toilet_paper_2"]),
+    ("put two slices of apple in the microwave", ["apple"]),        # pieces of one apple, sliced
+    ("put the apple and the pear in the fridge", ["apple", "pear"]),     # every conjunct
+    ("put the apple and two pears in the fridge", ["apple", "pear", "pear_2"]),
+])
+def test_how_many_things_a_phrase_asks_for(library: Library, text: str, expected: list[str]) -> None:
+    assert themes(text, library) == expected
+
+
+def test_pieces_are_cut_from_one_whole(library: Library) -> None:
+    problem = problem_of_text("put two slices of apple in the microwave", library, vocabulary=VOCAB)
+    assert [str(b) for b in problem.commanded] == ["Slice(theme=apple, instrument=knife)",
+                                                   "Place(theme=apple, goal=microwave)"]
+
+
+def test_a_pronoun_for_a_coordination_is_all_of_it(library: Library) -> None:
+    problem = problem_of_text("pick up the apple and the pear and put them in the fridge", library, vocabulary=VOCAB)
+    assert [str(b) for b in problem.commanded if b.frame.name == "Place"] == [
+        "Place(theme=apple, goal=fridge)", "Place(theme=pear, goal=fridge)"]
