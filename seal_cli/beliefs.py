@@ -35,9 +35,9 @@ from .frame_beliefs import FrameBeliefs, FrameModel, Terms
 from .frames import Binding
 from .maps import Map
 from .modes import Summary, summarise
-from .object_beliefs import ObjectBeliefs, ObjectModel, Source, source_for
+from .object_beliefs import ObjectBeliefs, ObjectModel, Region, Source, source_for
 from .potentials import KernelSums, make_kernel_sums
-from .relations import OTHER, Relations, relations
+from .relations import OTHER, held, relations, spatial_roles
 from .sensor import VisibleRegion, as_pose, visible_region
 from .state import State
 from .taxonomy import class_key
@@ -99,8 +99,17 @@ class Observer(Protocol):
 
 def frame_id(binding: Binding) -> str:
     """A name for a grounded frame usable in paths: ``stir_cup_spoon``."""
-    values = [class_key(v) for _, v in sorted(binding.values, key=lambda kv: binding.frame.roles.index(kv[0]))]
-    return "_".join([class_key(binding.frame.name), *values])
+    return "_".join([class_key(binding.frame.name), *(class_key(v) for v in _in_role_order(binding).values())])
+
+
+def _in_role_order(binding: Binding) -> dict[str, str]:
+    """The binding's element values, in the order of the frame's roles."""
+    return dict(sorted(binding.values, key=lambda kv: binding.frame.roles.index(kv[0])))
+
+
+def _places_in_space(binding: Binding) -> list[str]:
+    """The values of the binding's spatial elements (what can be located: not words to say)."""
+    return [binding.elements[role] for role in spatial_roles(binding)]
 
 
 def _detections(detections: Iterable[Any]) -> tuple[tuple[str, tuple[float, float]], ...]:
@@ -147,7 +156,7 @@ class SeFM:
     # -- construction ---------------------------------------------------------------------------
     def _sources(self) -> tuple[Source, ...]:
         seen: dict[str, Source] = {}
-        values = [v for b in self.bindings for _, v, _ in _all_elements(b)] + list(self.extra_classes)
+        values = [v for b in self.bindings for v in _places_in_space(b)] + list(self.extra_classes)
         for value in values:
             source = self._source(value)
             seen.setdefault(source.key, source)
@@ -177,7 +186,7 @@ class SeFM:
         model = self.config.frames
         out = []
         for binding in self.bindings:
-            kinds = {self.sources[self.source_row(v)].kind for _, v, _ in _all_elements(binding)}
+            kinds = {self.sources[self.source_row(v)].kind for v in _places_in_space(binding)}
             out.append(model.movable_noise if "object" in kinds else model.static_noise)
         return out
 
@@ -205,26 +214,34 @@ class SeFM:
         """One belief update from the robot's pose ``(x, y[, yaw])``, what it detected there, and its state."""
         if state is not None:
             self.state = state
-        robot = as_pose(pose)
-        seen = _detections(detections)
+        robot, seen = as_pose(pose), _detections(detections)
         region = self._region(robot)
-        change = self.objects.update(robot, _within_range(region), seen, self._hidden(), self._held(), self.rng)
-        if change.redrawn:
-            rows = list(change.redrawn)
-            self.kernel.set(rows, self.objects.X[rows], self.objects.W[rows])
-        self.kernel.reweight([(row, index, self.objects.X[row, index], delta, total)
-                              for row, index, delta, total in change.reweighted])
-        if self.state.facts != self._related:
-            self.relations = relations(self.bindings, self.state, self.config.other)
-            self._related = self.state.facts
-            self._terms = self.terms()
-        terms = self._terms
+        self._observe(robot, region, seen)
+        terms = self._relate()
         self.frames.update(terms, self.kernel, (self.objects.X, self.objects.W), self.rng)
         self._refresh_context(terms)
         self.step += 1
         record = Step(self.step, robot, seen, region)
         for observer in self.observers:
             observer.update(self, record)
+
+    def _observe(self, robot: tuple[float, float, float], region: VisibleRegion,
+                 seen: tuple[tuple[str, tuple[float, float]], ...]) -> None:
+        """The object beliefs take the observation; the kernel rows of the sources that changed follow."""
+        change = self.objects.update(robot, _within_range(region), seen, self._hidden(), held(self.state), self.rng)
+        if change.redrawn:
+            rows = list(change.redrawn)
+            self.kernel.set(rows, self.objects.X[rows], self.objects.W[rows])
+        self.kernel.reweight([(row, index, self.objects.X[row, index], delta, total)
+                              for row, index, delta, total in change.reweighted])
+
+    def _relate(self) -> Terms:
+        """The frames' potentials under the relation beliefs of the current state (recomputed when its facts change)."""
+        if self.state.facts != self._related:
+            self.relations = relations(self.bindings, self.state, self.config.other)
+            self._related = self.state.facts
+            self._terms = self.terms()
+        return self._terms
 
     def _region(self, pose: tuple[float, float, float]) -> VisibleRegion:
         """The region visible from a pose: cast once per pose, the last ``REGIONS`` kept (a robot comes
@@ -248,9 +265,6 @@ class SeFM:
     def open_places(self) -> list[str]:
         """The names of the map's places that are open now (what the sensor can see into)."""
         return [p.name for p in self.map.places if not p.openable or self._is_open(p)]
-
-    def _held(self) -> set[str]:
-        return {class_key(f.args[0]) for f in self.state.facts if f.predicate == "holding" and len(f.args) == 1}
 
     def _hidden(self) -> list[tuple[float, float, float]]:
         """Closed places as ``(x, y, reach)``: what is within reach of them may be inside, unseen."""
@@ -279,9 +293,7 @@ class SeFM:
 
     def frame_json(self, i: int) -> dict[str, Any]:
         binding = self.bindings[i]
-        summary = self.frame_summary(i).to_json()
-        ordered = sorted(binding.values, key=lambda kv: binding.frame.roles.index(kv[0]))
-        return {"frame": binding.frame.name, "elements": dict(ordered), **summary}
+        return {"frame": binding.frame.name, "elements": _in_role_order(binding), **self.frame_summary(i).to_json()}
 
     def object_json(self, cls: str) -> dict[str, Any]:
         summary = self.object_summary(cls).to_json()
@@ -292,11 +304,8 @@ class SeFM:
         return {"frames": [self.frame_json(i) for i in range(len(self.bindings))],
                 "objects": [self.object_json(c) for c in self.object_classes]}
 
-    def relation_of(self, i: int) -> Relations:
-        return self.relations[i]
 
-
-def _within_range(region: VisibleRegion) -> Any:
+def _within_range(region: VisibleRegion) -> Region:
     """``region.contains``, asked only about the points within the sensor's range (the rest are not seen)."""
     x, y, _ = region.pose
 
@@ -309,11 +318,3 @@ def _within_range(region: VisibleRegion) -> Any:
         return out
 
     return contains
-
-
-def _all_elements(binding: Binding) -> list[tuple[str, str, float]]:
-    """Every spatial element of a binding, with a placeholder belief (the sources do not depend on the state)."""
-    from .relations import spatial_roles
-
-    values = binding.elements
-    return [(r, values[r], 0.0) for r in spatial_roles(binding)]

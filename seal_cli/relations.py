@@ -30,7 +30,7 @@ from .state import State
 from .taxonomy import class_key
 
 __all__ = ["CORE", "DISJOINT", "LOCATING_ACTIONS", "OTHER", "Relations", "achievers", "context_relations",
-           "element_relations", "relations", "spatial_roles"]
+           "element_relations", "held", "relations", "spatial_roles"]
 
 CORE = 1.0
 OTHER = 0.3
@@ -78,14 +78,14 @@ def spatial_roles(binding: Binding) -> tuple[str, ...]:
     return tuple(r for r in binding.frame.roles if r in values and (r in used or r not in spoken))
 
 
-def _holds_thing(state: State, value: str) -> bool:
-    key = class_key(value)
-    return any(f.predicate == "holding" and len(f.args) == 1 and class_key(f.args[0]) == key for f in state.facts)
+def held(state: State) -> frozenset[str]:
+    """The class keys of what the robot holds: its ``holding(x)`` facts."""
+    return frozenset(class_key(f.args[0]) for f in state.facts if f.predicate == "holding" and len(f.args) == 1)
 
 
 def _disjoint(binding: Binding, role: str, state: State) -> bool:
     value = binding.elements[role]
-    if _holds_thing(state, value):
+    if class_key(value) in held(state):
         return True
     mine = [f for f in binding.frame.preconditions if role in f.args]
     if not mine or any(a.name in LOCATING_ACTIONS and role in a.args for a in binding.frame.actions):
