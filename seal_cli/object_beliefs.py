@@ -198,36 +198,34 @@ class ObjectBeliefs:
         ``contains(points) -> bool[N]`` tells the region visible from ``pose``; ``hidden`` lists
         closed places; ``detections`` are ``(class, (x, y))``.
         """
-        rows = np.array([i for i, s in enumerate(self.sources) if not s.static and s.key not in
-                         {class_key(h) for h in held}], dtype=np.intp)
+        rows = self._believed(held)
         if len(rows) == 0:
             return Update()
         seen = _by_class(detections)
-        moved = {int(r) for r in rows if self.sources[r].key in seen}
-        if moved:
-            self._place_on_detections(sorted(moved), seen, rng)
+        detected = [int(r) for r in rows if self.sources[r].key in seen]
+        self._place_on_detections(detected, seen, rng)
         new_view = self.views.first_look(pose, hidden)
         L = self._likelihood(rows, contains if new_view else None, seen, hidden)
         raw = self.W[rows] * L
         total = raw.sum(axis=1)
         W = normalise(raw)
         low = ess(W) < self.model.resample_below * self.particles
-        keep = ~low & ~np.isin(rows, list(moved))
-        k_of, index = np.nonzero((L != 1.0) & keep[:, None])
-        runs = np.split(index, np.searchsorted(k_of, np.arange(1, len(rows))))
-        reweighted = [(int(rows[k]), changed, self.W[rows[k], changed] * (L[k, changed] - 1.0), float(total[k]))
-                      for k, changed in enumerate(runs) if len(changed)]
+        windowed = ~low & ~np.isin(rows, detected)  # the rows whose particles stay where they are
+        reweighted = _changes(rows[windowed], self.W[rows[windowed]], L[windowed], total[windowed])
         self.W[rows] = W
-        if low.any():
-            self._resample(rows[low], rng)
-            moved.update(int(r) for r in rows[low])
-        return Update(tuple(sorted(moved)), tuple(reweighted))
+        self._resample(rows[low], rng)
+        return Update(tuple(sorted({*detected, *(int(r) for r in rows[low])})), reweighted)
+
+    def _believed(self, held: Iterable[str]) -> NDArray[np.intp]:
+        """The rows an observation updates: the object classes, but for those the robot holds."""
+        hand = {class_key(h) for h in held}
+        return np.array([i for i, s in enumerate(self.sources) if not s.static and s.key not in hand], dtype=np.intp)
 
     def _place_on_detections(self, rows: Sequence[int], seen: dict[str, Array], rng: np.random.Generator) -> None:
         """Put a share of each detected class's particles (its lightest) on the fresh detections, at the mean weight."""
         P = self.particles
         n = min(int(round(self.model.detection_share * P)), P)
-        if n == 0:
+        if n == 0 or not rows:
             return
         for row in rows:
             z = seen[self.sources[row].key]
@@ -262,6 +260,8 @@ class ObjectBeliefs:
     def _resample(self, rows: NDArray[np.intp], rng: np.random.Generator) -> None:
         """Systematic resampling with jitter, plus a share of fresh draws from the prior that together
         carry the weight ``relocate`` (the chance that the object was moved where nobody saw)."""
+        if len(rows) == 0:
+            return
         P = self.particles
         n = min(int(round(self.model.prior_share * P)), P - 1)
         ancestors = systematic(self.W[rows], rng, P - n)  # the rows are kept in cell order
@@ -284,6 +284,18 @@ class ObjectBeliefs:
     def _inside(self, X: Array) -> Array:
         xmin, ymin, xmax, ymax = self.map.bounds
         return np.stack([np.clip(X[..., 0], xmin, xmax), np.clip(X[..., 1], ymin, ymax)], axis=-1)
+
+
+def _changes(rows: NDArray[np.intp], W: Array, L: Array,
+             total: Array) -> tuple[tuple[int, NDArray[np.intp], Array, float], ...]:
+    """Each row's reweighting as :attr:`Update.reweighted`: the particles whose weight changed (L ≠ 1),
+    their increments W·(L − 1) before normalising, and the normaliser."""
+    out = []
+    for k, row in enumerate(rows):
+        changed = np.flatnonzero(L[k] != 1.0)
+        if len(changed):
+            out.append((int(row), changed, W[k, changed] * (L[k, changed] - 1.0), float(total[k])))
+    return tuple(out)
 
 
 def _by_class(detections: Iterable[tuple[str, tuple[float, float]]]) -> dict[str, Array]:
