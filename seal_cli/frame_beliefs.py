@@ -159,12 +159,7 @@ class FrameBeliefs:
                       model or FrameModel())
         beliefs.cell = np.zeros((F, particles), np.intp)
         if F:
-            X, uniform = beliefs._draw(terms, sources, particles, rng)
-            cells = m.free_index(X.reshape(-1, 2)).reshape(F, particles).astype(np.intp)
-            measurement, context = beliefs.potentials(terms, kernel, X)
-            gamma = np.where(cells >= 0, beliefs.gamma_of(terms, measurement, context), 0.0)
-            weights = beliefs._importance(terms, gamma, measurement, cells >= 0)
-            beliefs._resample_move(X, cells, gamma, weights, terms, kernel, rng)
+            beliefs._resample_move(*beliefs._fresh(terms, kernel, sources, particles, rng), terms, kernel, rng)
         return beliefs
 
     @property
@@ -189,18 +184,24 @@ class FrameBeliefs:
         F, P = self.W.shape
         if F == 0:
             return
-        n = max(1, int(round(self.model.fresh_share * P)))
-        drawn, _ = self._draw(terms, sources, n, rng)
-        X = np.concatenate([self.X, drawn], axis=1)
-        cells = np.concatenate([self.cell, self.map.free_index(drawn.reshape(-1, 2)).reshape(F, n).astype(np.intp)],
-                               axis=1)
+        gamma = self.gamma_at(terms, kernel, self.X, free=self.cell >= 0)
+        ratio = np.divide(gamma, self.gamma, out=np.zeros((F, P)), where=self.gamma > 0)
+        X, cells, fresh_gamma, fresh_weights = self._fresh(terms, kernel, sources,
+                                                           max(1, int(round(self.model.fresh_share * P))), rng)
+        self._resample_move(np.concatenate([self.X, X], axis=1), np.concatenate([self.cell, cells], axis=1),
+                            np.concatenate([gamma, fresh_gamma], axis=1),
+                            np.concatenate([self.Z[:, None] * self.W * P * ratio, fresh_weights], axis=1),
+                            terms, kernel, rng)
+
+    def _fresh(self, terms: Terms, kernel: KernelSums, sources: tuple[Array, Array], n: int,
+               rng: np.random.Generator) -> tuple[Array, Index, Array, Array]:
+        """``n`` fresh points per frame from the proposal g: where they are, their free cells, their γ,
+        and their importance weights γ/g."""
+        X = self._draw(terms, sources, n, rng)
+        cells = self.map.free_index(X.reshape(-1, 2)).reshape(X.shape[:2]).astype(np.intp)
         measurement, context = self.potentials(terms, kernel, X)
         gamma = np.where(cells >= 0, self.gamma_of(terms, measurement, context), 0.0)
-        ratio = np.divide(gamma[:, :P], self.gamma, out=np.zeros((F, P)), where=self.gamma > 0)
-        weights = np.concatenate([self.Z[:, None] * self.W * P * ratio,
-                                  self._importance(terms, gamma[:, P:], measurement[:, P:], cells[:, P:] >= 0)],
-                                 axis=1)
-        self._resample_move(X, cells, gamma, weights, terms, kernel, rng)
+        return X, cells, gamma, self._importance(terms, gamma, measurement, cells >= 0)
 
     def _importance(self, terms: Terms, gamma: Array, measurement: Array, free: NDArray[np.bool_]) -> Array:
         """``γ / g`` of fresh draws, g being the proposal's density (uniform share plus the elements' share)."""
@@ -238,8 +239,7 @@ class FrameBeliefs:
             return
         proposal = self.X[f, k] + rng.standard_normal((len(f), 2)) * self.noise[f, None]
         moved = self.map.free_index(proposal).astype(np.intp)
-        gamma = self.gamma_of(terms, *self.potentials(terms, kernel, proposal[:, None], f), f)[:, 0]
-        proposed = np.where(moved >= 0, gamma, 0.0)
+        proposed = self.gamma_at(terms, kernel, proposal[:, None], f, free=moved[:, None] >= 0)[:, 0]
         accept = rng.random(len(f)) * self.gamma[f, k] < proposed
         f, k = f[accept], k[accept]
         self.X[f, k], self.cell[f, k], self.gamma[f, k] = proposal[accept], moved[accept], proposed[accept]
@@ -275,14 +275,16 @@ class FrameBeliefs:
         ctx = np.where(terms.has_context[rows, None], c0 + context, 1.0)
         return np.asarray(meas * ctx)
 
-    def gamma_at(self, terms: Terms, kernel: KernelSums, X: Array, frames: Index | None = None) -> Array:
-        """γ at points X (R, Q, 2) of the frames ``frames`` (default: every frame), zero off free space."""
-        free = self.map.is_free(X.reshape(-1, 2)).reshape(X.shape[:2])
+    def gamma_at(self, terms: Terms, kernel: KernelSums, X: Array, frames: Index | None = None,
+                 free: NDArray[np.bool_] | None = None) -> Array:
+        """γ at points X (R, Q, 2) of the frames ``frames`` (default: every frame), zero off free space
+        (``free``, when the points' free cells are known)."""
+        if free is None:
+            free = self.map.is_free(X.reshape(-1, 2)).reshape(X.shape[:2])
         return np.where(free, self.gamma_of(terms, *self.potentials(terms, kernel, X, frames), frames), 0.0)
 
-    def _draw(self, terms: Terms, sources: tuple[Array, Array], n: int,
-              rng: np.random.Generator) -> tuple[Array, NDArray[np.bool_]]:
-        """``n`` points per frame from the proposal g, and which of them came from its uniform part.
+    def _draw(self, terms: Terms, sources: tuple[Array, Array], n: int, rng: np.random.Generator) -> Array:
+        """``n`` points per frame from the proposal g.
 
         The split between the two parts is exact (``u·n`` uniform draws), and the element draws are
         systematic over the mixture ``Σ_k B_k W_k``: each element and each of its rooms gets its
@@ -298,7 +300,7 @@ class FrameBeliefs:
             X[uniform] = self.map.sample_free(rng, count)
         if count < F * n:
             X[~uniform] = self._near_elements(terms, sources, n - n_uniform, rng)
-        return X, uniform
+        return X
 
     def _near_elements(self, terms: Terms, sources: tuple[Array, Array], counts: Index,
                        rng: np.random.Generator) -> Array:
