@@ -89,17 +89,23 @@ def mean_shift(X: Array, W: Array, bandwidth: float, iterations: int = 50,
         Y[moving] = shifted
         still = np.flatnonzero(moving)[step < tolerance * bandwidth]
         moving[still] = False
+    return _merge(Y, X, W, bandwidth)
+
+
+def _merge(points: Array, X: Array, W: Array, bandwidth: float) -> tuple[Array, NDArray[np.intp], Array]:
+    """Points closer than ``bandwidth / 2`` (by chains of such neighbours) are one peak, placed at the
+    densest of them: the peaks (M, 2), the peak of each point, and the density at each peak."""
     from scipy.sparse import csr_matrix
     from scipy.sparse.csgraph import connected_components
 
-    near = _sq_distances(Y, Y) < (bandwidth / 2) ** 2
-    count, labels = connected_components(csr_matrix(near), directed=False)
-    density = np.exp(scale * _sq_distances(Y, X)) @ W
+    count, group = connected_components(csr_matrix(_sq_distances(points, points) < (bandwidth / 2) ** 2),
+                                        directed=False)
+    density = np.exp(-0.5 / bandwidth ** 2 * _sq_distances(points, X)) @ W
     top = np.full(count, -1.0)
-    np.maximum.at(top, labels, density)
-    peak_of = np.full(count, -1, np.intp)
-    peak_of[labels[density == top[labels]]] = np.flatnonzero(density == top[labels])
-    return Y[peak_of], np.asarray(labels, np.intp), top
+    np.maximum.at(top, group, density)
+    densest = np.full(count, -1, np.intp)
+    densest[group[density == top[group]]] = np.flatnonzero(density == top[group])
+    return points[densest], np.asarray(group, np.intp), top
 
 
 def _sq_distances(A: Array, B: Array) -> Array:
@@ -144,17 +150,8 @@ def grid_modes(X: Array, W: Array, bandwidth: float) -> tuple[Array, NDArray[np.
     for _ in range(5):  # refine each peak by exact mean shift on the particles
         K = np.exp(scale * _sq_distances(peaks, X)) * W
         peaks = (K @ X) / np.maximum(K.sum(axis=1, keepdims=True), 1e-300)
-    from scipy.sparse import csr_matrix
-    from scipy.sparse.csgraph import connected_components
-
-    count, group = connected_components(csr_matrix(_sq_distances(peaks, peaks) < (bandwidth / 2) ** 2),
-                                        directed=False)
-    value = np.exp(scale * _sq_distances(peaks, X)) @ W
-    top = np.full(count, -1.0)
-    np.maximum.at(top, group, value)
-    keep = np.full(count, -1, np.intp)
-    keep[group[value == top[group]]] = np.flatnonzero(value == top[group])
-    return peaks[keep], np.asarray(group[peak_of.ravel()], np.intp), top
+    merged, group, top = _merge(peaks, X, W, bandwidth)
+    return merged, np.asarray(group[peak_of.ravel()], np.intp), top
 
 
 def summarise(m: Map, X: Array, W: Array, bandwidth: float = 1.0, min_weight: float = 0.05,
