@@ -65,11 +65,15 @@ def building(rng: np.random.Generator, classes: int = 60, columns: int = 6, rows
     width, height = columns * room, rows * room
     nx, ny = int(round(width / resolution)), int(round(height / resolution))
     ys, xs = (np.mgrid[0:ny, 0:nx] + 0.5) * resolution
-    on_line = lambda v, step: np.abs((v + room / 2) % step - room / 2) < 0.06  # noqa: E731
-    walls = on_line(xs, room) | on_line(ys, room) | (xs < 0.1) | (ys < 0.1) | (xs > width - 0.1) | (ys > height - 0.1)
-    middle = lambda v: np.abs(v % room - room / 2) < 0.5  # noqa: E731  (a 1 m doorway in the middle of each wall)
-    walls &= ~((on_line(xs, room) & middle(ys)) | (on_line(ys, room) & middle(xs)))
-    walls |= (xs < 0.1) | (ys < 0.1) | (xs > width - 0.1) | (ys > height - 0.1)
+
+    def on_wall(v: np.ndarray) -> np.ndarray:
+        return np.abs((v + room / 2) % room - room / 2) < 0.06
+
+    def mid_wall(v: np.ndarray) -> np.ndarray:  # a 1 m doorway in the middle of each wall
+        return np.abs(v % room - room / 2) < 0.5
+
+    outside = (xs < 0.1) | (ys < 0.1) | (xs > width - 0.1) | (ys > height - 0.1)
+    walls = ((on_wall(xs) & ~mid_wall(ys)) | (on_wall(ys) & ~mid_wall(xs))) | outside
     grid = OccupancyGrid.from_masks(~walls, resolution, (0.0, 0.0, 0.0), walls)
     names = [f"room_{i}_{j}" for j in range(rows) for i in range(columns)]
     rooms = tuple(Room.box(f"room_{i}_{j}", i * room, j * room, (i + 1) * room, (j + 1) * room)

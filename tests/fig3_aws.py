@@ -24,7 +24,6 @@ from seal_cli.cli import app
 from seal_cli.cli.localize_cmd import _plan
 from seal_cli.library import Library, load_library
 from seal_cli.maps import Map, load_map
-from seal_cli.planning import plan_text
 from seal_cli.potentials import GridKernelSums
 from seal_cli.sensor import visible_region
 from tests.conftest import DATA
@@ -50,7 +49,7 @@ def target_rooms(m: Map, library: Library, pose: tuple[float, float, float], hol
     """Stir(cup)'s room masses from its target γ after one look from ``pose`` that sees nothing: the object
     beliefs are the priors times 1 − p·v on the free cells, the frames' beliefs their targets (iterated
     until the context has settled), all integrated on the free cells."""
-    bindings, state = _plan(FIG3, library, holding, [], m, plan_text)
+    bindings, state = _plan(FIG3, library, holding, [], m)
     sefm = SeFM(m, bindings, state, np.random.default_rng(0))
     centres = m.free_centres
     v = visible_region(m, pose).contains(centres) & (np.hypot(*(centres - pose[:2]).T) <= m.sensor.range)

@@ -4,12 +4,18 @@ from __future__ import annotations
 
 import contextlib
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import typer
 from rich.table import Table
 
 from . import FramelibOption, JsonOption, command, emit_json, framelib_paths, out
+
+if TYPE_CHECKING:
+    from ..frames import Binding
+    from ..library import Library
+    from ..maps import Map
+    from ..state import State
 
 
 def _rooms(rooms: dict[str, float], top: int = 3) -> str:
@@ -77,7 +83,6 @@ def localize(
     from ..library import load_library
     from ..maps import load_map
     from ..observations import Observation, check_inside, read_observations, read_trajectory
-    from ..planning import plan_text
     from ..resources import map_path
     from ..sensor import simulate_detections
 
@@ -91,7 +96,7 @@ def localize(
     elif observations is not None:
         runs = read_observations(observations)
     check_inside(runs, the_map.bounds, the_map.name)
-    bindings, state = _plan(tasks or [], library, holding, done or [], the_map, plan_text)
+    bindings, state = _plan(tasks or [], library, holding, done or [], the_map)
     rng = np.random.default_rng(seed)
     with contextlib.ExitStack() as files:
         observers: list[Any] = []
@@ -120,17 +125,17 @@ def localize(
         show(result)
 
 
-def _plan(tasks: list[str], library: Any, holding: str | None, done: list[str], the_map: Any,
-          plan_text: Any) -> tuple[list[Any], Any]:
+def _plan(tasks: list[str], library: Library, holding: str | None, done: list[str],
+          the_map: Map) -> tuple[list[Binding], State]:
     """Every distinct grounded frame of the tasks' plans, in order, and the state they start from."""
     from ..grounding import vocabulary_of_map
+    from ..planning import plan_text
     from ..problem import Things, problem_of_text
-    from ..state import State
 
     # Plans are made from what the robot knows: not from the map's ground-truth objects.
     vocabulary = vocabulary_of_map(the_map)
     the_map = the_map.known()
-    bindings: list[Any] = []
+    bindings: list[Binding] = []
     state: State | None = None
     for text in tasks:
         plan = plan_text(text, library, holding=holding, done=tuple(done), map=the_map, vocabulary=vocabulary)
