@@ -37,6 +37,7 @@ from .frames import Frame
 from .grounding import PIECES
 from .lexicon import PERSON_PRONOUNS, CommandError, Lexicon, Word, is_plural, noun_lemma, tag
 from .library import Library
+from .taxonomy import class_words
 
 if TYPE_CHECKING:
     from lark import Lark
@@ -463,7 +464,10 @@ class Builder:
         for clause, join in zip(clauses, joins, strict=True):
             # "turn on the lamp while holding a clock": hold it first; but "carry a clock while turning
             # on a lamp" is already holding it (the one that takes a thing in hand comes first)
-            if "while" in join.split() and ordered and not (self.takes(ordered[-1]) and not self.takes(clause)):
+            if "while" in join.split() and ordered and not (self.takes(ordered[-1]) and not self.takes(clause)) \
+                    or join in ("after", "when done", "once done") and ordered:   # "A after B": B first
+                if not (clause.objects or clause.message) and ordered[-1].objects:
+                    clause.objects = [ordered[-1].objects[0]]     # "put it away when done heating": it
                 ordered.insert(len(ordered) - 1, clause)
             else:
                 ordered.append(clause)
@@ -611,6 +615,15 @@ class Builder:
                     and i + 1 < len(items) and isinstance(items[i + 1], NP)):
                 host = out[-1].np if isinstance(out[-1], PP) else out[-1]
                 other = items[i + 1]
+                if host.contents and host.contents[-1].end == host.end:   # "a pot containing a knife and
+                    content = host.contents[-1]                             # a slice": both in the pot
+                    if not content.conjuncts:
+                        content.conjuncts.append(replace(content, conjuncts=[]))
+                    content.conjuncts.append(other)
+                    content.end = host.end = other.end
+                    content.plural = True
+                    i += 2
+                    continue
                 if not host.conjuncts:
                     host.conjuncts.append(replace(host, conjuncts=[]))
                 host.conjuncts.append(other)
@@ -844,8 +857,14 @@ class Builder:
         for index in range(len(self.frames) - 1, -1, -1):
             evoked = self.frames[index]
             for rank, (name, phrase) in enumerate(evoked.elements.items()):
-                if phrase.default or phrase.refers_to is not None:
+                if phrase.default:
                     continue
+                target = (index, name)
+                if phrase.refers_to is not None:     # "put it in the fridge, take it out": the apple again
+                    target = phrase.refers_to
+                    if not (0 <= target[0] < len(self.frames)) or target[1] not in self.frames[target[0]].elements:
+                        continue
+                    phrase = self.frames[target[0]].elements[target[1]]
                 kind = phrase.kind
                 if kind in ("message", "place"):
                     continue
@@ -869,7 +888,7 @@ class Builder:
                     fits = self.taxonomy.is_a(phrase.cls or phrase.head, frame.element(role).type)
                     score += 3.0 if fits else -3.0 if fits is False else 0.0   # "close it": the fridge
                 if best is None or score > best[0]:
-                    best = (score, index, name, kind)
+                    best = (score, target[0], target[1], kind)
         return None if best is None else best[1:]
 
     def carried(self, frame: Frame | None, role: str | None) -> tuple[int, str, str] | None:
@@ -941,6 +960,10 @@ class Builder:
 
     def prepare(self, np: NP, frame: Frame, role: str, roles: Mapping[str, Any]) -> None:
         """Frames that must come first: result words ("heated") and contents ("with a fork")."""
+        cutting = self.cutting(noun_lemma(np.head.text)) if np.head is not None else None
+        if cutting is not None and cutting[0].name == frame.name and frame.elements and \
+                role == frame.elements[0].role:
+            self.cut.update(id(c) for c in (np, *np.conjuncts))   # "cut a tomato slice": this frame cuts it
         for inner in np.inner:
             self.results_of(inner)
         self.results_of(np)
@@ -953,14 +976,23 @@ class Builder:
                     self.put(content, np, relation.predicate)
 
     def results_of(self, np: NP) -> None:
+        if np.conjuncts:                 # "a heated apple and a chilled pear": each its own
+            for conjunct in np.conjuncts:
+                self.results_of(conjunct)
+            np.results = []
+            return
         self.cut_for(np)
         for word in np.results:
             info: tuple[str, str] = word.info  # type: ignore[assignment]
             frame_name, unit = info
             frame = self.library.frame(frame_name)
             first = frame.elements[0].role
+            theme = self.phrase(np, frame, first)
+            if any(e.frame == frame.name and first in e.elements and self.same_thing(e.elements[first], theme)
+                   for e in self.frames):
+                continue                 # "a chilled, cut slice": cut once
             self.frames.append(Evoked(frame.name, unit, (word.start, word.end),
-                                      {first: self.phrase(np, frame, first)} | self.defaults(frame, {first})))
+                                      {first: theme} | self.defaults(frame, {first})))
         np.results = []
 
     def cutting(self, noun: str) -> tuple[Frame, str] | None:
@@ -1101,4 +1133,4 @@ class Builder:
     def ground_name(self, name: str) -> str | None:
         if self.vocabulary is None:
             return name
-        return self.vocabulary.ground_words((name,)) or name
+        return self.vocabulary.ground_words(class_words(name)) or name

@@ -453,3 +453,41 @@ def test_a_coordination_keeps_each_conjunct(library: Library) -> None:
                                                                      ("two pears", "Pear", 2)]
     assert [c["class"] for c in theme.to_json()["conjuncts"]] == ["Apple", "Pear"]
     assert not parse_command("put the apple in the fridge", library, vocab).frames[0].elements["theme"].conjuncts
+
+
+def test_conjuncts_of_contents_results_and_pieces_are_each_their_own(library: Library) -> None:
+    vocab = Vocabulary.of(["Apple", "Pear", "Pot", "Knife", "Potato", "Table", "Tomato", "Pan", "Fridge"])
+
+    def said(text: str) -> list[tuple[str, list[str]]]:
+        parse = parse_command(text, library, vocab)
+        out = []
+        for f in parse.frames:
+            theme = parse.resolve(f.elements["theme"])
+            out.append((f.frame, [c.cls for c in theme.conjuncts] or [theme.cls]))
+        return out
+
+    # "containing a knife and a slice of potato": both in the pot (not the pot and a slice)
+    assert said("put a pot containing a knife and a slice of potato on a table") == [
+        ("Slice", ["Potato"]), ("Place", ["Knife", "Potato"]), ("Place", ["Pot"])]
+    assert said("put a heated apple and a chilled pear on the table") == [
+        ("Heat", ["Apple"]), ("Cool", ["Pear"]), ("Place", ["Apple", "Pear"])]
+    assert said("put a pan with a tomato slice and a knife in it in the fridge")[0] == ("Slice", ["Tomato"])
+    assert said("put a chilled, cut slice of tomato in the pan") == [     # cut once
+        ("Slice", ["Tomato"]), ("Cool", ["Tomato"]), ("Place", ["Tomato"])]
+    assert said("cut a tomato slice and chill it") == [("Slice", ["Tomato"]), ("Cool", ["Tomato"])]
+
+
+def test_a_pronoun_finds_what_a_pronoun_before_it_stood_for(library: Library) -> None:
+    parse = parse_command("take the apple from the table, put it in the fridge, take it out, heat it", library)
+    assert [(f.frame, parse.resolve(f.elements["theme"]).head) for f in parse.frames] == [
+        ("Pick", "apple"), ("Place", "apple"), ("Pick", "apple"), ("Heat", "apple")]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("pick up a pencil after turning the light on", [("ToggleOn", "light"), ("Pick", "pencil")]),
+    ("put the tomato in the fridge when done heating in the microwave",
+     [("Heat", "tomato"), ("Place", "tomato")]),
+])
+def test_what_is_said_after_after_is_done_first(library: Library, text: str, expected: list[tuple[str, str]]) -> None:
+    parse = parse_command(text, library)
+    assert [(f.frame, parse.resolve(f.elements["theme"]).head) for f in parse.frames] == expected
