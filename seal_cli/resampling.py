@@ -16,8 +16,9 @@ def normalise(weights: NDArray[np.float64]) -> NDArray[np.float64]:
     """Each row divided by its sum; a row whose sum is not a positive finite number becomes uniform."""
     total = weights.sum(axis=-1, keepdims=True)
     good = np.isfinite(total) & (total > 0)
-    uniform = np.full_like(weights, 1.0 / weights.shape[-1])
-    return np.where(good, weights / np.where(good, total, 1.0), uniform)
+    if good.all():
+        return np.asarray(weights / total)
+    return np.where(good, weights / np.where(good, total, 1.0), 1.0 / weights.shape[-1])
 
 
 def ess(weights: NDArray[np.float64]) -> NDArray[np.float64]:
