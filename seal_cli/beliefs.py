@@ -11,10 +11,12 @@ the grounded frames of a plan (:class:`~seal_cli.frames.Binding`), the robot's s
         sefm.update(pose, simulate_detections(m, pose), state)
     sefm.frame_summary(2).rooms        # {"kitchen": 0.31, "bedroom": 0.52, ...}
 
-One update: the object beliefs take the observation; the kernel sums of the sources that changed
-are refreshed; the relation beliefs are recomputed from the state; every frame is resampled,
-moved and reweighted by measurement × context. The context uses the frames' beliefs of the
-previous update (each frame moves once per update, all at once). Every random draw comes from
+One update (:meth:`SeFM.update`): the object beliefs take the observation (negative information
+once per view) and the kernel sums of the sources that changed follow; the relation beliefs are
+recomputed when the state's facts changed; every frame is reweighted by measurement × context,
+reinvigorated, resampled and its copies moved; the context fields take the frames' new beliefs.
+The context uses the frames' beliefs of the previous update (every frame is updated once per
+update, all at once). Every random draw comes from
 the one generator, so the same seed and inputs give the same beliefs.
 
 What is observed about a run — a Rerun recording, a picture, metrics — is gathered by
