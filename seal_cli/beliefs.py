@@ -16,8 +16,8 @@ once per view) and the kernel sums of the sources that changed follow; the relat
 recomputed when the state's facts changed; every frame is reweighted by measurement × context,
 reinvigorated, resampled and its copies moved; the context fields take the frames' new beliefs.
 The context uses the frames' beliefs of the previous update (every frame is updated once per
-update, all at once). Every random draw comes from
-the one generator, so the same seed and inputs give the same beliefs.
+update, all at once). Every random draw comes from the one generator, so the same seed and
+inputs give the same beliefs.
 
 What is observed about a run — a Rerun recording, a picture, metrics — is gathered by
 *observers* passed in (``SeFM(..., observers=[RerunRecorder(path)])``), never by code inside the
