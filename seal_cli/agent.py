@@ -545,6 +545,8 @@ class Agent:
         if not outcome.ok and "is closed" in outcome.message and action.name == "place":
             self.open_to_look(args[1])
             outcome = self.world.act(action.name, *args)
+        if not outcome.ok and action.name == "place" and "nothing can be put in or on" in outcome.message:
+            outcome, args = self.put_beside(args[0], args[1], outcome)
         self.say("act" if outcome.ok else "fail", outcome.message, action=action.name, args=args)
         if outcome.ok:
             self._after(action.name, args, binding)
@@ -564,6 +566,26 @@ class Agent:
             self.placed.discard(args[0])
         elif name == "open":
             self.opened.add(args[0])
+
+    def put_beside(self, thing: str, target: str, refused: Outcome) -> tuple[Outcome, list[str]]:
+        """"Put the keys on the laptop", "to the right of the knife", "take the bowl to the lamp":
+        nothing goes on that, so the thing goes where the target is — on the place it was seen on,
+        else on the open place nearest it."""
+        known = self.known.get(target)
+        under = known.parent if known is not None else None
+        places = [k for k in self.known.values() if not k.movable and k.receptacle and k.id != target
+                  and self.world.items[k.id].is_open]
+        if under is None or under not in self.known or not any(k.id == under for k in places):
+            at = self.world.position(target)
+            under = min(places, key=lambda k: math.dist(k.at, at)).id if places else None
+        if under is None:
+            return refused, [thing, target]
+        self.say("fail", f"{refused.message}; puts {thing} where {target} is, on {under}")
+        if not self.world.within_reach(under):
+            cell = self.stand_cell(self.known[under])
+            if cell is not None:
+                self.drive_to(cell, f"goes to {under}")
+        return self.world.act("place", thing, under), [thing, under]
 
     def put_down(self, binding: Binding) -> Outcome:
         """Set the held thing down on the nearest open surface (a Place without a goal)."""

@@ -46,7 +46,7 @@ __all__ = ["PIECES", "PORTIONS", "Vocabulary", "load_vocabulary", "vocabulary_of
 
 
 PORTIONS = frozenset(" ".join((
-    "slice piece bit chunk half part portion wedge segment sliver strip lump cube quarter crumb",
+    "slice piece bit chunk half part portion wedge segment section sliver strip lump cube quarter crumb",
     "top side edge corner middle centre center end bottom surface back front",
     "lid door handle seat tank cover basin",
     "set bunch pair pack group collection stack pile handful roll")).split())

@@ -615,6 +615,10 @@ class Builder:
                     and i + 1 < len(items) and isinstance(items[i + 1], NP)):
                 host = out[-1].np if isinstance(out[-1], PP) else out[-1]
                 other = items[i + 1]
+                if item.lower == "or":               # "an apple or a pear": either will do, the first
+                    host.end = other.end
+                    i += 2
+                    continue
                 if host.contents and host.contents[-1].end == host.end:   # "a pot containing a knife and
                     content = host.contents[-1]                             # a slice": both in the pot
                     if not content.conjuncts:

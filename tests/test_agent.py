@@ -100,3 +100,11 @@ def test_a_thing_put_somewhere_is_taken_again_when_the_command_names_it_again(li
                                         ("Place", {"theme": "apple", "goal": "dining_table"})], apple_in="counter_1")
     assert result.completed, result.reason
     assert s.world.has("apple_1", "cold") and s.world.items["apple_1"].parent == "table_1"
+
+
+def test_a_thing_put_on_what_holds_nothing_goes_where_that_is(library: Library) -> None:
+    # "put the apple by the knife": the knife lies on the counter, so the apple goes on the counter
+    s, agent, result, heard = run(library, [("Place", {"theme": "apple", "goal": "knife"})], apple_in="table_1")
+    assert result.completed, result.reason
+    assert s.world.items["apple_1"].parent == "counter_1"
+    assert any(r.kind == "fail" and "where knife_1 is, on counter_1" in r.text for r in heard)

@@ -201,3 +201,10 @@ def test_a_map_vocabulary_follows_the_same_rules(library: Library) -> None:
     place = parse.frames[0].elements
     assert (place["theme"].cls, place["goal"].cls) == ("butter_knife", "side_table")
     assert theme_class("the sink", library, vocabulary_of_map(Kitchen())) == "sink_basin"
+
+
+def test_pieces_are_portions() -> None:
+    from seal_cli.grounding import PIECES, PORTIONS
+
+    assert PIECES <= PORTIONS
+    assert Vocabulary.of(["Apple"]).ground_words(["apple", "section"]) == "Apple"

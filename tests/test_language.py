@@ -491,3 +491,8 @@ def test_a_pronoun_finds_what_a_pronoun_before_it_stood_for(library: Library) ->
 def test_what_is_said_after_after_is_done_first(library: Library, text: str, expected: list[tuple[str, str]]) -> None:
     parse = parse_command(text, library)
     assert [(f.frame, parse.resolve(f.elements["theme"]).head) for f in parse.frames] == expected
+
+
+def test_alternatives_joined_by_or_ask_for_one(library: Library) -> None:
+    theme = parse_command("slice an apple or a pear", library).frames[0].elements["theme"]
+    assert (theme.head, theme.conjuncts, theme.plural) == ("apple", (), False)
