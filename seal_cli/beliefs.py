@@ -230,7 +230,8 @@ class SeFM:
     def _observe(self, robot: tuple[float, float, float], region: VisibleRegion,
                  seen: tuple[tuple[str, tuple[float, float]], ...]) -> None:
         """The object beliefs take the observation; the kernel rows of the sources that changed follow."""
-        change = self.objects.update(robot, _within_range(region), seen, self._hidden(), held(self.state), self.rng)
+        change = self.objects.update(robot, _within_range(region), seen, self.hidden_places(), held(self.state),
+                                     self.rng)
         if change.redrawn:
             rows = list(change.redrawn)
             self.kernel.set(rows, self.objects.X[rows], self.objects.W[rows])
@@ -268,9 +269,11 @@ class SeFM:
         """The names of the map's places that are open now (what the sensor can see into)."""
         return [p.name for p in self.map.places if not p.openable or self._is_open(p)]
 
-    def _hidden(self) -> list[tuple[float, float, float]]:
+    def hidden_places(self) -> list[tuple[float, float, float]]:
         """Closed places as ``(x, y, reach)``: what is within reach of them may be inside, unseen."""
         return [(p.at[0], p.at[1], p.reach) for p in self.map.places if p.openable and not self._is_open(p)]
+
+    _hidden = hidden_places  # the agent's old name for it, until it moves to the public one
 
     def _is_open(self, place: Any) -> bool:
         """Open by the state's ``open(name)`` or ``open(class)``; without such a fact, closed if the state
@@ -281,6 +284,28 @@ class SeFM:
         return False if self.state.closable is not None else bool(place.open)
 
     # -- what it believes -----------------------------------------------------------------------
+    def frame_particles(self, i: int) -> tuple[Array, Array]:
+        """Frame ``i``'s particles and their weights (copies)."""
+        return self.frames.X[i].copy(), self.frames.W[i].copy()
+
+    def object_particles(self, cls: str) -> tuple[Array, Array]:
+        """An object class's particles and their weights (copies)."""
+        row = self.objects.row(cls)
+        return self.objects.X[row].copy(), self.objects.W[row].copy()
+
+    def frame_density(self, i: int, points: ArrayLike) -> Array:
+        """Frame ``i``'s target density γ (measurement × context) at the points: what its particles
+        track, without their sampling noise (unnormalised)."""
+        points = np.asarray(points, dtype=float)
+        terms = self.terms()
+        grid = np.broadcast_to(points, (len(self.bindings), len(points), 2))
+        return np.asarray(self.frames.gamma_of(terms, *self.frames.potentials(terms, self.kernel, grid))[i])
+
+    def object_density(self, cls: str, points: ArrayLike) -> Array:
+        """An object class's particles smoothed by the potentials' kernel, at the points (unnormalised)."""
+        points = np.asarray(points, dtype=float)
+        return np.asarray(self.kernel.sample(np.array([self.objects.row(cls)]), points[None])[0])
+
     def frame_summary(self, i: int) -> Summary:
         return summarise(self.map, self.frames.X[i], self.frames.W[i], self.config.bandwidth)
 

@@ -382,3 +382,31 @@ def test_weights_are_always_finite_and_normalised(library: Library, scenario: tu
         summary = sefm.frame_summary(i)
         assert sum(summary.rooms.values()) == pytest.approx(1.0)
         assert all(np.isfinite(summary.best))
+
+
+def test_public_queries_agree_with_the_summaries() -> None:
+    """What a searcher asks SeFM: particles, densities at points, closed places."""
+    from seal_cli.beliefs import SeFM
+    from seal_cli.library import load_library
+    from seal_cli.maps import load_map
+    from seal_cli.planning import plan_text
+    from seal_cli.resources import map_path
+
+    m = load_map(map_path("apartment")).known()
+    plan = plan_text("stir the cup", load_library(), map=m)
+    sefm = SeFM(m, plan.bindings, plan.initial, np.random.default_rng(0))
+    sefm.update(m.robot.pose)
+    X, W = sefm.frame_particles(1)
+    assert X.shape == (200, 2) and np.isclose(W.sum(), 1.0)
+    X[:] = 0.0                                   # a copy: the belief is untouched
+    assert not np.allclose(sefm.frame_particles(1)[0], 0.0)
+    points = m.free_centres
+    density = sefm.frame_density(1, points)
+    assert density.shape == (len(points),) and np.all(np.isfinite(density)) and density.max() > 0
+    rooms = m.room_index(points)
+    names = m.room_names
+    mass = {names[r]: density[rooms == r].sum() / density.sum() for r in range(len(names))}
+    assert max(mass, key=mass.get) == "bedroom"           # where spoons and cups both are likely
+    cups = sefm.object_density("cup", points)
+    assert cups[rooms == names.index("kitchen")].sum() < 0.05 * cups.sum()
+    assert [(x, y) for x, y, _ in sefm.hidden_places()] == [tuple(p.at) for p in m.places if p.openable]
