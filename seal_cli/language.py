@@ -464,7 +464,8 @@ class Builder:
         for clause, join in zip(clauses, joins, strict=True):
             # "turn on the lamp while holding a clock": hold it first; but "carry a clock while turning
             # on a lamp" is already holding it (the one that takes a thing in hand comes first)
-            if "while" in join.split() and ordered and not (self.takes(ordered[-1]) and not self.takes(clause)) \
+            together = "while" in join.split() or join.split()[:1] == ["as"] and join != "as well as"
+            if together and ordered and not (self.takes(ordered[-1]) and not self.takes(clause)) \
                     or join in ("after", "when done", "once done") and ordered:   # "A after B": B first
                 if not (clause.objects or clause.message) and ordered[-1].objects:
                     clause.objects = [ordered[-1].objects[0]]     # "put it away when done heating": it
@@ -919,10 +920,16 @@ class Builder:
     # -- frames out ----------------------------------------------------------------------------
     def emit(self, frame: Frame, unit: str, clause: Clause, roles: dict[str, Any],
              attached: list[tuple[NP, PP]]) -> None:
+        first = frame.elements[0].role if frame.elements else None
+        holds_nothing = "instrument" not in frame.roles and not any(
+            not p.negated and len(p.args) == 2 and p.args[0] == first for p in frame.postconditions)
         for host, pp in attached:
             host.end = max(host.end, pp.np.end)
             if pp.prep == "with" and pp.np.kind != "person":
-                host.contents.append(pp.np)
+                if holds_nothing and host is roles.get(first) and pp.np.kind == "thing" and not pp.np.pronoun:
+                    self.hold(pp.np)     # "turn on the lamp with the remote": held while it is done
+                else:
+                    host.contents.append(pp.np)
         # frames evoked by result words and contents, in the order of the words
         for role in frame.roles:
             np = roles.get(role)

@@ -96,7 +96,8 @@ WH_WORDS = _closed_class("what which who whom whose where when why how whether i
 BE_WORDS = _closed_class("is are was were be am 's been being")
 SEPARATOR_WORDS = frozenset(["and", "then", ",", ";", ":", "after that", "afterwards", "next", "finally",
                              "and then", "and after that", "after", "also", "once done", "when done",
-                             "and finally", "before", "while", "or", "as well as", "plus", "followed by"])
+                             "and finally", "before", "while", "or", "as well as", "plus", "followed by",
+                             "as you", "while you"])
 AND_WORDS = frozenset(["and", "as well as", "plus"])
 """Words that join like "and" (clauses or noun phrases)."""
 POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "will you", "would you mind",

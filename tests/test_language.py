@@ -192,6 +192,9 @@ def test_inflected_verbs_and_subordinate_clauses(library: Library) -> None:
     "turn the light on while carrying the bat",
     "Carry a bat while turning on a light",          # already holding it while the light goes on
     "hold a bat while turning the light on",
+    "turn on the light with a bat",                  # "with": no instrument, no content of a light
+    "Turn on the light as you hold a bat",
+    "turn the light on while you carry the bat",
 ])
 def test_what_is_held_while_a_clause_is_done_is_picked_first(library: Library, text: str) -> None:
     parse = parse_command(text, library)
