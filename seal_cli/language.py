@@ -920,13 +920,13 @@ class Builder:
     # -- frames out ----------------------------------------------------------------------------
     def emit(self, frame: Frame, unit: str, clause: Clause, roles: dict[str, Any],
              attached: list[tuple[NP, PP]]) -> None:
-        first = frame.elements[0].role if frame.elements else None
+        theme = frame.elements[0].role if frame.elements else ""
         holds_nothing = "instrument" not in frame.roles and not any(
-            not p.negated and len(p.args) == 2 and p.args[0] == first for p in frame.postconditions)
+            not p.negated and len(p.args) == 2 and p.args[0] == theme for p in frame.postconditions)
         for host, pp in attached:
             host.end = max(host.end, pp.np.end)
             if pp.prep == "with" and pp.np.kind != "person":
-                if holds_nothing and host is roles.get(first) and pp.np.kind == "thing" and not pp.np.pronoun:
+                if holds_nothing and host is roles.get(theme) and pp.np.kind == "thing" and not pp.np.pronoun:
                     self.hold(pp.np)     # "turn on the lamp with the remote": held while it is done
                 else:
                     host.contents.append(pp.np)
