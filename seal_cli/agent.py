@@ -53,6 +53,7 @@ class Scene:
     map: Map
     grid: Grid
     vocabulary: tuple[str, ...] = ()
+    """The classes present, which the robot's perception knows (empty: any)."""
     title: str = ""
 
 
@@ -438,6 +439,8 @@ class Agent:
                 k = int(np.argmin(costs))
                 self.drive_to((int(cells[k, 0]), int(cells[k, 1])), f"goes into {value}")
                 return Outcome(True, f"in {value}")
+            if not self.recognises(value):
+                return Fatal(False, f"cannot recognise a {value}: no class it knows is called that")
             view = self.policy.next_view(self, binding, value)
             if view is None:
                 return Fatal(False, f"searched everywhere it could and found no {value}")
@@ -454,6 +457,8 @@ class Agent:
         while self.resolve(value, binding, role) is None:
             if (stop := self.exhausted()) is not None:
                 return Fatal(False, stop)
+            if not self.recognises(value):
+                return Fatal(False, f"cannot recognise a {value}: no class it knows is called that")
             view = self.policy.next_view(self, binding, value)
             if view is None:
                 return Fatal(False, f"searched everywhere it could and found no {value}")
@@ -467,6 +472,13 @@ class Agent:
         if target is not None and target in self.known:
             self.world.face(self.known[target].at)
         return Outcome(True, f"found {target}")
+
+    def recognises(self, value: str) -> bool:
+        """Whether the robot could see a thing of this kind: its class is one of the scene's (the
+        classes its perception knows). A word the command grounded to no class is never seen, so
+        it is not searched for."""
+        known = self.scene.vocabulary
+        return not known or self.class_of(value) in {class_key(c) for c in known}
 
     def open_to_look(self, place: str) -> None:
         outcome = self.world.act("open", place)

@@ -52,6 +52,12 @@ def test_gives_up_when_the_thing_does_not_exist(library: Library) -> None:
     s, agent, result, heard = run(library, [("Pick", {"theme": "pineapple"})])
     assert not result.completed and "pineapple" in result.reason
     assert heard[-1].kind == "give_up"
+    assert result.path_m == 0.0 and "cannot recognise" in result.reason   # no class of the scene: no search
+    s = kitchen(library)
+    s.vocabulary = ()                      # perception that knows every class: it searches, in vain
+    blind = Agent(s, library, SeFMPolicy(particles=50), rng=np.random.default_rng(1)).run(
+        [library.frame("Pick").bind({"theme": "pineapple"})])
+    assert not blind.completed and "searched everywhere" in blind.reason and blind.path_m > 0
 
 
 def test_budget_stops_the_search(library: Library) -> None:
