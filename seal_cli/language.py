@@ -724,7 +724,13 @@ class Builder:
                 return
 
     def unfilled(self, frame: Frame, roles: Mapping[str, Any]) -> int:
-        return sum(1 for e in frame.elements if e.role not in roles)
+        """Elements the clause leaves empty; an object left unsaid that the frame before has in hand
+        is not empty ("heat the mug, move [it] to the cabinet": Place, not Go)."""
+        first = frame.elements[0].role if frame.elements else None
+        held = first is not None and first not in roles and bool(self.frames) and any(
+            p.predicate == "holding" and p.args == (first,) for p in frame.preconditions) and \
+            self.implicit(frame, first) is not None
+        return sum(1 for e in frame.elements if e.role not in roles) - int(held)
 
     def assign(self, frame: Frame, clause: Clause,
                strict: bool) -> tuple[dict[str, Any], list[tuple[NP, PP]], float] | None:

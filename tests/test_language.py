@@ -499,3 +499,10 @@ def test_what_is_said_after_after_is_done_first(library: Library, text: str, exp
 def test_alternatives_joined_by_or_ask_for_one(library: Library) -> None:
     theme = parse_command("slice an apple or a pear", library).frames[0].elements["theme"]
     assert (theme.head, theme.conjuncts, theme.plural) == ("apple", (), False)
+
+
+def test_an_unsaid_object_in_hand_counts_when_choosing_the_frame(library: Library) -> None:
+    parse = parse_command("heat the mug in the microwave, move to the cabinet", library)
+    assert [(f.frame, parse.resolve(f.elements[next(iter(f.elements))]).head) for f in parse.frames] == [
+        ("Heat", "mug"), ("Place", "mug")]                       # carried there, not Go
+    assert frames_of("move to the kitchen", library) == ["Go"]   # nothing in hand: go
