@@ -568,10 +568,8 @@ class Agent:
 
     def _after(self, name: str, args: list[str], binding: Binding) -> None:
         """Keep the robot's own knowledge in step with what it just did."""
-        if name == "place":
-            thing = self.known.get(args[0]) or self._known(self.world.items[args[0]])
-            thing.at = self.world.items[args[0]].at
-            self.known[args[0]] = thing
+        if name == "place":            # it knows where it put the thing, and on what
+            self.known[args[0]] = self._known(self.world.items[args[0]])
             if binding.frame.name != "Place" or binding.elements.get("goal") is not None:
                 self.placed.add(args[0])
         elif name == "pick":
@@ -612,6 +610,8 @@ class Agent:
             self.drive_to(cell, f"goes to put {held.id} down on {target}")
         outcome = self.world.act("place", held.id, target)
         self.say("act" if outcome.ok else "fail", outcome.message, action="place", args=[held.id, target])
+        if outcome.ok:
+            self._after("place", [held.id, target], binding)
         return outcome
 
 

@@ -114,3 +114,14 @@ def test_a_thing_put_on_what_holds_nothing_goes_where_that_is(library: Library) 
     assert result.completed, result.reason
     assert s.world.items["apple_1"].parent == "counter_1"
     assert any(r.kind == "fail" and "where knife_1 is, on counter_1" in r.text for r in heard)
+
+
+def test_a_thing_set_down_to_free_the_hand_is_found_where_it_was_put(library: Library) -> None:
+    # chill the apple, then slice it: the apple is set down to take the knife, and sliced there
+    s, agent, result, _ = run(library, [("Cool", {"theme": "apple"}), ("Slice", {"theme": "apple"}),
+                                        ("Place", {"theme": "apple", "goal": "dining_table"})])
+    assert result.completed, result.reason
+    assert s.world.has("apple_1", "cold") and s.world.has("apple_1", "sliced")
+    assert s.world.items["apple_1"].parent == "table_1"
+    put = agent.known["apple_1"]
+    assert put.parent == "table_1" and put.at == s.world.items["apple_1"].at
