@@ -440,7 +440,7 @@ class Agent:
                 self.drive_to((int(cells[k, 0]), int(cells[k, 1])), f"goes into {value}")
                 return Outcome(True, f"in {value}")
             if not self.recognises(value):
-                return Fatal(False, f"cannot recognise a {value}: no class it knows is called that")
+                return Fatal(False, f"cannot recognise {value!r}: no class it knows is called that")
             view = self.policy.next_view(self, binding, value)
             if view is None:
                 return Fatal(False, f"searched everywhere it could and found no {value}")
@@ -458,7 +458,7 @@ class Agent:
             if (stop := self.exhausted()) is not None:
                 return Fatal(False, stop)
             if not self.recognises(value):
-                return Fatal(False, f"cannot recognise a {value}: no class it knows is called that")
+                return Fatal(False, f"cannot recognise {value!r}: no class it knows is called that")
             view = self.policy.next_view(self, binding, value)
             if view is None:
                 return Fatal(False, f"searched everywhere it could and found no {value}")
