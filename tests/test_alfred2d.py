@@ -176,3 +176,17 @@ def test_an_episode_grounds_its_sentence_in_the_classes_its_room_has(library: Li
     assert goal("put the knife on the table", kitchen) == ("butter_knife", "dining_table")  # the suite's order
     assert goal("put the teapot on the counter", kitchen) == ("kettle", "counter_top")
     assert goal("put the glass on the counter", kitchen)[0] is None      # no glass here, and no convention
+
+
+def test_human_goals_are_grounded_in_the_episodes_room(shared_data: Path, library: Library) -> None:
+    from seal_cli.bench_tasks import commands_for
+
+    full = load_suite(shared_data / "alfred2d", "valid_seen", with_priors=False)
+    episode = next(e for e in full.episodes if e.goals[0] == "Put a cooked slice of tomato on a kitchen counter.")
+    plan = full.floor_plans[episode.floor_plan]
+    scene = build_scene(episode, plan, library, {})
+    commanded, _ = commands_for(episode, library, scene.vocabulary, "human")
+    assert [str(b) for b in commanded] == ["Slice(theme=tomato, instrument=knife)",
+                                           "Heat(theme=tomato, instrument=microwave)",
+                                           "Place(theme=tomato, goal=counter_top)"]
+    assert all(v in scene.vocabulary for b in commanded for _, v in b.values)   # every value a class of the room
