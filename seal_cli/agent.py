@@ -789,14 +789,13 @@ class SeFMPolicy:
         sefm = self.sefm
         if not hasattr(self, "clouds"):
             self.clouds: list[dict[str, Any]] = []
-        objects = {c: (sefm.objects.X[sefm.objects.row(c)].copy(), sefm.objects.W[sefm.objects.row(c)].copy())
-                   for c in sefm.object_classes}
+        objects = {c: sefm.object_particles(c) for c in sefm.object_classes}
         from .beliefs import frame_id
 
         index = min(agent.index, len(sefm.bindings) - 1)
         frame = frame_id(sefm.bindings[index]) if sefm.bindings else ""
         self.clouds.append({"step": agent.world.step, "frame": frame,
-                            "frame_particles": (sefm.frames.X[index].copy(), sefm.frames.W[index].copy())
+                            "frame_particles": sefm.frame_particles(index)
                             if sefm.bindings else None, "objects": objects})
 
     def cloud(self, agent: Agent, target: str) -> tuple[np.ndarray, np.ndarray, list[Any]]:
@@ -809,14 +808,10 @@ class SeFMPolicy:
         points = self.map.free_centres
         if self.use_frames:
             i = self.frame_index(agent)
-            frames = sefm.frames
-            terms = sefm.terms()
-            grid = np.broadcast_to(points, (len(sefm.bindings), len(points), 2))
-            density = frames.gamma_of(terms, *frames.potentials(terms, sefm.kernel, grid))[i]
+            density = sefm.frame_density(i, points)
             modes = list(sefm.frame_summary(i).modes)
         else:
-            row = sefm.objects.row(agent.class_of(target))
-            density = sefm.kernel.sample(np.array([row]), points[None])[0]
+            density = sefm.object_density(agent.class_of(target), points)
             modes = list(sefm.object_summary(agent.class_of(target)).modes)
         density = np.where(np.isfinite(density) & (density > 0), density, 0.0)
         total = density.sum()
@@ -848,7 +843,7 @@ class SeFMPolicy:
             if agent.spent(k.id, target):  # the belief is right there, but that one will not do
                 W[np.hypot(X[:, 0] - k.at[0], X[:, 1] - k.at[1]) <= agent.world.reach] = 0.0
         hidden = np.zeros(len(X), dtype=bool)
-        for x, y, r in self.sefm._hidden():
+        for x, y, r in self.sefm.hidden_places():
             hidden |= np.hypot(X[:, 0] - x, X[:, 1] - y) <= r
         seeing = self.map.sensor.range
         options: list[tuple[float, float, View]] = []

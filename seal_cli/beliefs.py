@@ -273,8 +273,6 @@ class SeFM:
         """Closed places as ``(x, y, reach)``: what is within reach of them may be inside, unseen."""
         return [(p.at[0], p.at[1], p.reach) for p in self.map.places if p.openable and not self._is_open(p)]
 
-    _hidden = hidden_places  # the agent's old name for it, until it moves to the public one
-
     def _is_open(self, place: Any) -> bool:
         """Open by the state's ``open(name)`` or ``open(class)``; without such a fact, closed if the state
         knows what closes, else as the map says."""
