@@ -439,17 +439,24 @@ class Agent:
                 k = int(np.argmin(costs))
                 self.drive_to((int(cells[k, 0]), int(cells[k, 1])), f"goes into {value}")
                 return Outcome(True, f"in {value}")
-            if not self.recognises(value):
-                return Fatal(False, f"cannot recognise {value!r}: no class it knows is called that")
-            view = self.policy.next_view(self, binding, value)
-            if view is None:
-                return Fatal(False, f"searched everywhere it could and found no {value}")
-            self.say("search", f"looks for {value}: {view.why}".rstrip(": "), target=value, view=view.cell)
-            self.drive_to(view.cell, "goes to look")
-            self.world.face(view.look_at)
-            if view.open is not None:
-                self.open_to_look(view.open)
-            self.look()
+            if (ended := self.look_once(value, binding)) is not None:
+                return ended
+
+    def look_once(self, value: str, binding: Binding) -> Outcome | None:
+        """One look for a thing of kind ``value``: go to the view the policy chooses, open what it
+        says to open, and look. An Outcome when the search must stop instead."""
+        if not self.recognises(value):
+            return Fatal(False, f"cannot recognise {value!r}: no class it knows is called that")
+        view = self.policy.next_view(self, binding, value)
+        if view is None:
+            return Fatal(False, f"searched everywhere it could and found no {value}")
+        self.say("search", f"looks for {value}: {view.why}".rstrip(": "), target=value, view=view.cell)
+        self.drive_to(view.cell, "goes to look")
+        self.world.face(view.look_at)
+        if view.open is not None:
+            self.open_to_look(view.open)
+        self.look()
+        return None
 
     def search_for(self, value: str, binding: Binding) -> Outcome:
         """``search(value)``: look (as ``navigate`` would) until a thing of that kind is known."""
@@ -457,17 +464,8 @@ class Agent:
         while self.resolve(value, binding, role) is None:
             if (stop := self.exhausted()) is not None:
                 return Fatal(False, stop)
-            if not self.recognises(value):
-                return Fatal(False, f"cannot recognise {value!r}: no class it knows is called that")
-            view = self.policy.next_view(self, binding, value)
-            if view is None:
-                return Fatal(False, f"searched everywhere it could and found no {value}")
-            self.say("search", f"looks for {value}: {view.why}".rstrip(": "), target=value, view=view.cell)
-            self.drive_to(view.cell, "goes to look")
-            self.world.face(view.look_at)
-            if view.open is not None:
-                self.open_to_look(view.open)
-            self.look()
+            if (ended := self.look_once(value, binding)) is not None:
+                return ended
         target = self.resolve(value, binding, role)
         if target is not None and target in self.known:
             self.world.face(self.known[target].at)
