@@ -260,6 +260,22 @@ class SeFM:
         self._regions[pose] = region  # most recently used last
         return region
 
+    def follow(self, looks: Sequence[Any] = (), steps: int = 0) -> None:
+        """One update per look (an :class:`~seal_cli.observations.Observation`: a pose and what was
+        detected there, or None to simulate it from the map's ground-truth objects), then ``steps``
+        more where the last look was (the map's robot pose when there is none): the paper's 20
+        updates at a fixed pose."""
+        from .observations import Observation
+        from .sensor import simulate_detections
+
+        last = looks[-1] if looks else Observation(self.map.robot.pose)
+        for look in [*looks, *[last] * steps]:
+            seen = look.detections
+            if seen is None:
+                seen = tuple((d.cls, d.at) for d in simulate_detections(self.map, look.pose, self.open_places(),
+                                                                         self.rng))
+            self.update(look.pose, seen)
+
     def close(self) -> None:
         """Tell the observers the run is over."""
         for observer in self.observers:

@@ -12,10 +12,7 @@ from rich.table import Table
 from . import FramelibOption, JsonOption, command, emit_json, framelib_paths, out
 
 if TYPE_CHECKING:
-    from ..frames import Binding
-    from ..library import Library
-    from ..maps import Map
-    from ..state import State
+    from ..observations import Observation
 
 
 def _rooms(rooms: dict[str, float], top: int = 3) -> str:
@@ -82,9 +79,9 @@ def localize(
     from ..fileio import atomic_output
     from ..library import load_library
     from ..maps import load_map
-    from ..observations import Observation, check_inside, read_observations, read_trajectory
+    from ..observations import check_inside, read_observations, read_trajectory
+    from ..planning import frames_to_localise
     from ..resources import map_path
-    from ..sensor import simulate_detections
 
     if trajectory is not None and observations is not None:
         raise SealError("give --trajectory (simulated detections) or --observations (real ones), not both")
@@ -96,7 +93,7 @@ def localize(
     elif observations is not None:
         runs = read_observations(observations)
     check_inside(runs, the_map.bounds, the_map.name)
-    bindings, state = _plan(tasks or [], library, holding, done or [], the_map)
+    bindings, state = frames_to_localise(tasks or [], library, the_map, holding=holding, done=done or [])
     rng = np.random.default_rng(seed)
     with contextlib.ExitStack() as files:
         observers: list[Any] = []
@@ -110,12 +107,7 @@ def localize(
             observers.append(PngDrawer(files.enter_context(atomic_output(png))))
         classes = () if bindings else the_map.classes
         sefm = SeFM(the_map, bindings, state, rng, SeFMConfig(particles=particles), observers, classes=classes)
-        final = runs[-1] if runs else Observation(the_map.robot.pose)
-        for obs in [*runs, *[final] * steps]:
-            seen = obs.detections
-            if seen is None:
-                seen = tuple((d.cls, d.at) for d in simulate_detections(the_map, obs.pose, sefm.open_places(), rng))
-            sefm.update(obs.pose, seen)
+        sefm.follow(runs, steps)
         sefm.close()
     result = {"map": the_map.name, "seed": seed, "steps": steps, "particles": particles,
               "updates": sefm.step, **sefm.to_json()}
@@ -123,34 +115,3 @@ def localize(
         emit_json(result)
     else:
         show(result)
-
-
-def _plan(tasks: list[str], library: Library, holding: str | None, done: list[str],
-          the_map: Map) -> tuple[list[Binding], State]:
-    """Every distinct grounded frame of the tasks' plans, in order, and the state they start from."""
-    from ..grounding import vocabulary_of_map
-    from ..planning import plan_text
-    from ..problem import Things, problem_of_text
-
-    # Plans are made from what the robot knows: not from the map's ground-truth objects.
-    vocabulary = vocabulary_of_map(the_map)
-    the_map = the_map.known()
-    bindings: list[Binding] = []
-    state: State | None = None
-    for text in tasks:
-        plan = plan_text(text, library, holding=holding, done=tuple(done), map=the_map, vocabulary=vocabulary)
-        state = state or plan.initial
-        for binding in plan.bindings:
-            if binding not in bindings:
-                bindings.append(binding)
-    if state is None:  # no task: the state the map, the hand and the commands already done leave
-        if done:
-            problem = problem_of_text(done[-1], library, holding=holding, done=tuple(done[:-1]), map=the_map,
-                                      vocabulary=vocabulary)
-            state = problem.state
-            for binding in problem.commanded:
-                state = state.apply(binding)
-        else:
-            state = Things(library.taxonomy, the_map).state(holding)
-    return bindings, state
-
