@@ -9,7 +9,7 @@
   needs is in view.
 - :class:`OraclePolicy`: knows where everything is, including what closed receptacles hold, and
   chooses the instances that make the whole remaining plan shortest: a lower bound on the path.
-- ``uniform``: SeFM without priors (:class:`~seal_cli.agent.SeFMPolicy` with ``priors=False``).
+- ``uniform``: SeFM without priors (:class:`~seal_cli.search.SeFMPolicy` with ``priors=False``).
 
 Every policy answers one question, :meth:`next_view`: from where to look next for what the
 current frame needs (see :class:`seal_cli.agent.Policy`).
@@ -23,9 +23,10 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from .agent import Agent, Known, SeFMPolicy, View
+from .agent import Agent, Known, View
 from .frames import Binding
 from .navigation import Cell
+from .search import SeFMPolicy
 from .taxonomy import class_key
 from .world import Detection
 

@@ -5,9 +5,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from seal_cli.agent import Agent, Budget, Record, SeFMPolicy, chain_preconditions
+from seal_cli.agent import Agent, Budget, Record, chain_preconditions
 from seal_cli.alfred2d import Task, judge
 from seal_cli.library import Library
+from seal_cli.search import SeFMPolicy
 from seal_cli.state import State
 
 from .scenes import kitchen
