@@ -47,40 +47,28 @@ def run(
     as_json: bool = JsonOption,
 ) -> None:
     """Simulate a robot that searches for what the command needs, goes there and does it, narrating each step."""
-    from dataclasses import replace
-
     import numpy as np
 
-    from ..agent import Agent, Budget, scene_from_map
+    from ..agent import Budget, run_on_map
     from ..baselines import make_policy
-    from ..grounding import vocabulary_of_map
-    from ..language import parse_command
     from ..library import load_library
-    from ..maps import Robot, load_map
-    from ..problem import build_problem
+    from ..maps import load_map
     from ..resources import map_path
 
     library = load_library(framelib_paths(framelib))
     the_map = load_map(map_path(map_name))
-    if holding is not None:
-        the_map = replace(the_map, robot=Robot(the_map.robot.pose, holding))
-    scene = scene_from_map(the_map, library)
-    vocabulary = vocabulary_of_map(the_map)
+    vocabulary = None
     if vocabulary_file is not None:
         from ..grounding import load_vocabulary
 
-        vocabulary = load_vocabulary(vocabulary_file).restricted_to(vocabulary.classes)
-    parses = [parse_command(t, library, vocabulary) for t in (*(done or ()), text)]
-    problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1])
+        vocabulary = load_vocabulary(vocabulary_file)
     searcher = make_policy(policy, particles)
     if hasattr(searcher, "keep_clouds") and (rrd is not None or png is not None):
         searcher.keep_clouds = True
-    observers = [] if as_json else [_narrate]
-    agent = Agent(scene, library, searcher, rng=np.random.default_rng(seed),
-                  budget=Budget(steps=max_steps, metres=max_metres), observers=observers,
-                  classes=problem.state.classes)
-    done_frames = [b for p in parses[:-1] for b in build_problem(p, library).commanded]
-    result = agent.run(problem.commanded, done=done_frames)
+    agent, result = run_on_map(the_map, text, library, searcher, rng=np.random.default_rng(seed), holding=holding,
+                               done=done or (), vocabulary=vocabulary,
+                               budget=Budget(steps=max_steps, metres=max_metres),
+                               observers=[] if as_json else [_narrate])
     if rrd is not None:
         from ..runrecord import write_rrd
 
