@@ -687,15 +687,13 @@ class Builder:
             clause.items = [x for x in clause.items if not any(x is u for u in used)]
         for np in clause.held:
             self.hold(np)
-        best: tuple[tuple[float, ...], Frame, dict[str, Any], list[tuple[NP, PP]]] | None = None
-        for order, frame in enumerate(frames):
-            assigned = self.assign(frame, clause, strict=True)
-            if assigned is None:
-                continue
-            roles, attached, score = assigned
-            key = (score, -self.unfilled(frame, roles), -order)
-            if best is None or key > best[0]:
-                best = (key, frame, roles, attached)
+        best = self.best_fit(frames, clause)
+        head = unit.split()[0]
+        if best is None and head != unit and self.library.evoked_by(head):
+            # "take the trash out to the garage": no frame of "take out" has a goal, one of "take" has
+            best = self.best_fit(self.library.evoked_by(head), clause)
+            if best is not None:
+                unit, frames = head, self.library.evoked_by(head)
         if best is None:                     # no frame takes every phrase: the best that takes the most
             for order, frame in enumerate(frames):
                 assigned = self.assign(frame, clause, strict=False)
@@ -708,6 +706,21 @@ class Builder:
         _, frame, roles, attached = best
         self.first_into(frame, roles, attached)
         self.emit(frame, unit, clause, roles, attached)
+
+    def best_fit(self, frames: Sequence[Frame], clause: Clause
+                 ) -> tuple[tuple[float, ...], Frame, dict[str, Any], list[tuple[NP, PP]]] | None:
+        """The frame that takes every phrase of the clause best (fewest elements left empty, then
+        library order), or None when none takes them all."""
+        best: tuple[tuple[float, ...], Frame, dict[str, Any], list[tuple[NP, PP]]] | None = None
+        for order, frame in enumerate(frames):
+            assigned = self.assign(frame, clause, strict=True)
+            if assigned is None:
+                continue
+            roles, attached, score = assigned
+            key = (score, -self.unfilled(frame, roles), -order)
+            if best is None or key > best[0]:
+                best = (key, frame, roles, attached)
+        return best
 
     def first_into(self, frame: Frame, roles: dict[str, Any], attached: list[tuple[NP, PP]]) -> None:
         """"Put a spoon *in a bowl* into the sink": the spoon goes into the bowl, and the bowl (a

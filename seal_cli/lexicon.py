@@ -577,7 +577,8 @@ class Tagger:
                 return self._emit(i, 1, "DET" if low in DETERMINERS else "POSS")
             return 0
         n = _match_phrase(words, i, HERE_WORDS)
-        if n and not (low == "there" and nxt in BE_WORDS):
+        after_be = bool(self.out) and self.out[-1].tag == "BE"  # "how many cups are there in the kitchen"
+        if n and not (low == "there" and (nxt in BE_WORDS or after_be)):
             return self._emit(i, n, "HERE")
         if low == "there":
             return self._emit(i, 1, "THERE")

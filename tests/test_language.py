@@ -506,3 +506,19 @@ def test_an_unsaid_object_in_hand_counts_when_choosing_the_frame(library: Librar
     assert [(f.frame, parse.resolve(f.elements[next(iter(f.elements))]).head) for f in parse.frames] == [
         ("Heat", "mug"), ("Place", "mug")]                       # carried there, not Go
     assert frames_of("move to the kitchen", library) == ["Go"]   # nothing in hand: go
+
+
+def test_there_after_a_form_of_be_is_existential(library: Library) -> None:
+    parse = parse_command("How many chairs are there in the dining room?", library)
+    (count,) = parse.frames
+    assert count.frame == "Count" and count.elements["ground"].text == "the dining room"
+    assert parse_command("go there", library).frames[0].elements["goal"].text == "there"
+
+
+def test_a_particle_verb_whose_frames_take_no_goal_falls_back_to_its_verb(library: Library) -> None:
+    """'take X out to Y': no frame of "take out" has a goal, so the frames of "take" are asked."""
+    (bring,) = parse_command("Take the trash out to the garage", library).frames
+    assert (bring.frame, bring.lexical_unit) == ("Bring", "take")
+    assert {r: p.head for r, p in bring.elements.items() if p.text} == {"theme": "trash", "goal": "garage"}
+    (pick,) = parse_command("take out the trash", library).frames
+    assert (pick.frame, pick.lexical_unit) == ("Pick", "take out")
