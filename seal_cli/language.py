@@ -35,7 +35,17 @@ from lark import Tree
 from .errors import SealError
 from .frames import Frame
 from .grounding import PIECES
-from .lexicon import PERSON_PRONOUNS, CommandError, Lexicon, Word, is_plural, noun_lemma, tag
+from .lexicon import (
+    FIRST_LATER,
+    PERSON_PRONOUNS,
+    SUBORDINATORS,
+    CommandError,
+    Lexicon,
+    Word,
+    is_plural,
+    noun_lemma,
+    tag,
+)
 from .library import Library
 from .taxonomy import class_words
 
@@ -73,6 +83,7 @@ class Phrase:
     default: bool = False
     span: tuple[int, int] | None = field(default=None, compare=False)
     conjuncts: tuple[Phrase, ...] = ()
+    relative: str | None = None
 
     def to_json(self) -> dict[str, Any]:
         data: dict[str, Any] = {"text": self.text, "head": self.head, "class": self.cls}
@@ -90,6 +101,8 @@ class Phrase:
             data["default"] = True
         if self.conjuncts:
             data["conjuncts"] = [c.to_json() for c in self.conjuncts]
+        if self.relative:
+            data["relative"] = self.relative
         return data
 
 
@@ -101,10 +114,14 @@ class Evoked:
     lexical_unit: str
     span: tuple[int, int]
     elements: Mapping[str, Phrase]
+    condition: str | None = None
 
     def to_json(self) -> dict[str, Any]:
-        return {"frame": self.frame, "lexical_unit": self.lexical_unit, "span": list(self.span),
+        data = {"frame": self.frame, "lexical_unit": self.lexical_unit, "span": list(self.span),
                 "elements": {role: p.to_json() for role, p in self.elements.items()}}
+        if self.condition:
+            data["condition"] = self.condition
+        return data
 
 
 @dataclass(frozen=True)
@@ -384,6 +401,7 @@ class NP:
     contents: list[NP] = field(default_factory=list)      # "the cup with a fork (in it)"
     inner: list[NP] = field(default_factory=list)         # noun phrases inside (for result words)
     conjuncts: list[NP] = field(default_factory=list)
+    relative: str | None = None                          # "that I was drinking from"
 
     @property
     def head_text(self) -> str:
@@ -405,6 +423,7 @@ class PP:
     np: NP
     start: int
     lead: bool = False         # said before the verb ("with X in hand, ...", "use X to ...")
+    describes: bool = False    # after "that is": says where the noun before it is
 
 
 @dataclass
@@ -416,6 +435,9 @@ class Clause:
     start: int
     end: int
     held: list[NP] = field(default_factory=list)     # "with X in hand": held while the clause is done
+    sub: str | None = None                           # "before"/"after"/"when"... said before the verb
+    conditions: list[str] = field(default_factory=list)   # "when the water boils"
+    gap: Clause | None = None                        # "... and the glasses next to them": the verb again
 
 
 _TO = ("to", "into", "onto")
@@ -453,8 +475,13 @@ class Builder:
                 clauses.append(self.read_clause(child))
                 joins.append(sep)
                 sep = ""
+                if clauses[-1].gap is not None:   # "put the plates on the table and the glasses next to them"
+                    clauses.append(clauses[-1].gap)
+                    joins.append("and")
             elif not isinstance(child, Tree) and child.type == "SEP":
-                sep = self.word(child).text.lower()   # the word, not the token: trees are shared
+                word = self.word(child)           # the word, not the token: trees are shared
+                sep = word.info if isinstance(word.info, str) else word.text.lower()
+        self.subordinate(clauses)
         for k in range(len(clauses) - 1):         # "slice and chill an apple": both the apple
             bare, nxt = clauses[k], clauses[k + 1]
             if not (bare.objects or bare.items or bare.message or bare.held) and nxt.objects and \
@@ -466,15 +493,35 @@ class Builder:
             # on a lamp" is already holding it (the one that takes a thing in hand comes first)
             together = "while" in join.split() or join.split()[:1] == ["as"] and join != "as well as"
             if together and ordered and not (self.takes(ordered[-1]) and not self.takes(clause)) \
-                    or join in ("after", "when done", "once done") and ordered:   # "A after B": B first
+                    or (join in ("when done", "once done") or join in FIRST_LATER) and ordered:  # "A after B": B first
                 if not (clause.objects or clause.message) and ordered[-1].objects:
                     clause.objects = [ordered[-1].objects[0]]     # "put it away when done heating": it
+                elif clause.objects and clause.objects[0].pronoun in ("it", "them") and ordered[-1].objects and \
+                        not ordered[-1].objects[0].pronoun:
+                    clause.objects[0] = ordered[-1].objects[0]    # "put the dishes away after you wash them"
                 ordered.insert(len(ordered) - 1, clause)
             else:
                 ordered.append(clause)
         for clause in ordered:
             self.clause(clause)
         return Parse(self.text, tuple(self.frames))
+
+    @staticmethod
+    def subordinate(clauses: list[Clause]) -> None:
+        """Order the clauses of subordinate clauses said with a subordinator before their verb: one
+        that a clause follows is subordinate to it ("*before you go* to the garage, turn off the
+        lights": the lights first; "*when you reach* the kitchen, open the fridge": in order); the
+        last one is subordinate to the clause before it ("put them away, *after you wash* them")."""
+        k = 0
+        while k < len(clauses):
+            sub = clauses[k].sub
+            if sub is not None and k + 1 < len(clauses) and sub == "before":
+                clauses[k], clauses[k + 1] = clauses[k + 1], clauses[k]
+                k += 2
+                continue
+            if sub is not None and k + 1 == len(clauses) and k > 0 and sub in FIRST_LATER:
+                clauses[k - 1], clauses[k] = clauses[k], clauses[k - 1]
+            k += 1
 
     def takes(self, clause: Clause) -> bool:
         """Whether the clause's verb takes a thing in hand (a frame of it has ``holding(theme)`` as a
@@ -484,24 +531,107 @@ class Builder:
                    for frame in self.library.evoked_by(str(clause.verb.info)))
 
     def read_clause(self, tree: Tree) -> Clause:
-        phrase = tree.children[-1]
+        phrase = next(c for c in tree.children if str(getattr(c, "data", "")) == "verb_phrase")
         verb = self.word(phrase.children[0])
         items: list[Any] = [self.item(child) for child in phrase.children[1:]]
-        for child in tree.children[:-1]:        # "with a clock in hand, turn on the lamp": as if said after
-            if str(getattr(child, "data", "")) == "lead":
+        sub: str | None = None
+        conditions: list[str] = []
+        for child in tree.children:
+            data = str(getattr(child, "data", ""))
+            if data == "lead":                  # "with a clock in hand, turn on the lamp": as if said after
                 items.extend(replace(self.pp(pp), lead=True) for pp in child.children if isinstance(pp, Tree))
-        held = self.in_hand(items)
+            elif data == "polite":
+                for token in child.children:
+                    info = self.word(token).info
+                    if isinstance(info, str) and info in SUBORDINATORS:
+                        sub = info              # "before you go to the garage, ..."
+            elif data == "cond":
+                conditions.append(self.word(child.children[0]).text)
+        items = self.relatives(items)
+        gap: Clause | None = None
+        split = self.gapping(items)
+        if split is not None:
+            gap = self.make_clause(verb, items[split + 1:], [], None, [])
+            gap.start = items[split + 1].start
+            items = items[:split]
+        clause = self.make_clause(verb, items, conditions, sub, [])
+        clause.gap = gap
+        return clause
+
+    def make_clause(self, verb: Word, items: list[Any], conditions: list[str], sub: str | None,
+                    held: list[NP]) -> Clause:
+        """A clause from its verb and the phrases after it."""
+        held = held + self.in_hand(items)
         items = self.coordinate(items)
         items = self.containing(items)
         objects: list[NP] = []
+        if len(items) > 1 and isinstance(items[0], Word) and items[0].lower == "how" and \
+                isinstance(items[1], NP) and items[1].quantity is not None:
+            counted = items[1]
+            assert isinstance(counted, NP)
+            counted.quantity = None             # "count how many books are on the shelf": the books
+            items.pop(0)
         while items and (isinstance(items[0], NP) or isinstance(items[0], Word) and items[0].tag == "PARTICLE"
                          and objects == [] and len(items) > 1 and isinstance(items[1], NP)):
             first = items.pop(0)
             if isinstance(first, NP):
                 objects.append(first)
-        message = self.message(items)
+        message = self.message(items) or self.said(verb, objects, items)
         end = max([verb.end] + [self.end_of(x) for x in (*objects, *items)] + ([message.end] if message else []))
-        return Clause(verb, objects, items, message, verb.start, end, held)
+        return Clause(verb, objects, items, message, verb.start, end, held, sub, conditions)
+
+    def relatives(self, items: list[Any]) -> list[Any]:
+        """A relative clause (``REL``) belongs to the noun before it: kept whole as its ``relative``,
+        with the frames its result words evoke ("a lamp that is turned on"); "that is" before a
+        prepositional phrase makes the phrase describe the noun ("the pan that is on the stove"),
+        never fill an element of the frame."""
+        out: list[Any] = []
+        describe = False
+        for item in items:
+            if isinstance(item, Word) and item.tag == "REL" and out and isinstance(out[-1], NP | PP):
+                host = out[-1].np if isinstance(out[-1], PP) else out[-1]
+                if item.info == "be":
+                    describe = True
+                    continue
+                host.relative = item.text
+                for frame_unit in item.info if isinstance(item.info, tuple) else ():
+                    host.results.append(Word(item.text, item.start, item.end, "RESULT", frame_unit))
+                continue
+            if describe and isinstance(item, PP):
+                item.describes = True
+            describe = False
+            out.append(item)
+        return out
+
+    @staticmethod
+    def gapping(items: list[Any]) -> int | None:
+        """Where a second clause with the verb left out starts: "put the plates *on the table* and the
+        glasses *next to them*" (an object and a place, "and", another object and place); None."""
+        if not items or not isinstance(items[0], NP):
+            return None
+        for k in range(2, len(items) - 2):
+            if isinstance(items[k], Word) and items[k].tag == "AND_NP" and items[k].lower == "and" and \
+                    isinstance(items[k - 1], PP) and isinstance(items[k + 1], NP) and \
+                    all(isinstance(x, PP) for x in items[k + 2:]) and not items[k - 1].lead and \
+                    items[k - 1].prep not in ("with", "without", "of", "for", "about", "between") + _FROM and \
+                    items[k - 1].np.pronoun is None:     # "a bowl with a spoon in it and a knife ...": contents
+                return k
+        return None
+
+    def said(self, verb: Word, objects: list[NP], items: list[Any]) -> NP | None:
+        """What a verb of saying says when it is a clause without a wh-word: "tell him *dinner is
+        ready*" (a noun phrase, then "is"), from the object after the person told."""
+        if not objects or not items or not (isinstance(items[0], Word) and items[0].tag == "BE") or \
+                str(verb.info) not in lexicon_of(self.library)[0].speech:
+            return None
+        first = objects[1] if len(objects) >= 2 else objects[0]
+        stop = next((j for j in range(len(items)) if isinstance(items[j], PP) and items[j].prep in ("to", "for")
+                     and items[j].np.kind in ("person", "pronoun")), len(items))
+        end = max(self.end_of(x) for x in items[:stop])
+        del objects[objects.index(first):]
+        del items[:stop]
+        head = Word(self.text[first.start:end], first.start, end, "WORD")
+        return NP(first.start, end, head, "message")
 
     @staticmethod
     def in_hand(items: list[Any]) -> list[NP]:
@@ -672,9 +802,12 @@ class Builder:
                              and items[j].prep in ("to", "for") and items[j].np.kind in ("person", "pronoun")),
                             len(items))
                 end = max(self.end_of(x) for x in items[k:stop]) if stop > k else item.end
-                head = Word(self.text[item.start:end], item.start, end, "WORD")
+                start = item.start
+                if item.lower in ("that", "to") and stop > k + 1:   # "tell him that ...", "tell her to ..."
+                    start = items[k + 1].start
+                head = Word(self.text[start:end], start, end, "WORD")
                 del items[k:stop]
-                return NP(item.start, end, head, "message")
+                return NP(start, end, head, "message")
         return None
 
     # -- one clause → frames -----------------------------------------------------------------
@@ -694,6 +827,11 @@ class Builder:
             best = self.best_fit(self.library.evoked_by(head), clause)
             if best is not None:
                 unit, frames = head, self.library.evoked_by(head)
+        if (best is None or "recipient" not in self.taxonomy.roles(best[1])) and self.recipient_said(clause):
+            brings = self.bringing(frames)   # "grab me a beer", "grab a beer from the fridge for me": Bring
+            found = self.best_fit(brings, clause) if brings else None
+            if found is not None:
+                best = found
         if best is None:                     # no frame takes every phrase: the best that takes the most
             for order, frame in enumerate(frames):
                 assigned = self.assign(frame, clause, strict=False)
@@ -706,6 +844,28 @@ class Builder:
         _, frame, roles, attached = best
         self.first_into(frame, roles, attached)
         self.emit(frame, unit, clause, roles, attached)
+
+    def recipient_said(self, clause: Clause) -> bool:
+        """Whether the clause names someone to receive: an indirect object, or "for"/"to" a person."""
+        return len(clause.objects) >= 2 and self.kind(clause.objects[0], None, None) == "person" or any(
+            isinstance(x, PP) and x.prep in ("for", "to") and self.kind(x.np, None, None) == "person"
+            for x in clause.items)
+
+    def bringing(self, frames: Sequence[Frame]) -> list[Frame]:
+        """For a verb of taking (a frame of it gets its theme in hand: Pick), the frames that take a
+        thing in hand to someone (a recipient, and ``holding(theme)`` before): taking a thing for a
+        person is bringing it to them. Empty for any other verb."""
+        if not any(self.achieves_holding(f) for f in frames):
+            return []
+        return [f for f in self.library.frames if f not in frames and "recipient" in self.taxonomy.roles(f)
+                and f.elements and any(p.predicate == "holding" and p.args == (f.elements[0].role,)
+                                       and not p.negated for p in f.preconditions)]
+
+    @staticmethod
+    def achieves_holding(frame: Frame) -> bool:
+        first = frame.elements[0].role if frame.elements else None
+        return first is not None and any(p.predicate == "holding" and p.args == (first,) and not p.negated
+                                          for p in frame.postconditions)
 
     def best_fit(self, frames: Sequence[Frame], clause: Clause
                  ) -> tuple[tuple[float, ...], Frame, dict[str, Any], list[tuple[NP, PP]]] | None:
@@ -731,6 +891,7 @@ class Builder:
         theme, goal = roles.get(relation.args[0]), roles[relation.args[1]]
         for k, (host, pp) in enumerate(attached):
             if host is theme and pp.prep in _PUT_IN and pp.np.kind == "thing" and not pp.np.pronoun and \
+                    not pp.describes and \
                     self.taxonomy.is_a(self.class_or_head(pp.np), "container") is True:
                 roles[relation.args[1]] = pp.np
                 attached[k] = (pp.np, PP("into", goal, goal.start))
@@ -753,6 +914,10 @@ class Builder:
         first = frame.elements[0].role if frame.elements else None
         have = self.taxonomy.roles(frame)
         objects = list(clause.objects)
+        seek = first == "theme" and "ground" in have and self.searches(frame, str(clause.verb.info)) and \
+            any(isinstance(x, PP) and x.prep == "for" for x in clause.items)
+        if seek and objects:                 # "search the kitchen for a can opener": the kitchen is searched
+            roles["ground"] = objects.pop(0)
         if clause.message is not None and first is not None:
             roles[first] = clause.message
             if objects and "recipient" in have:
@@ -765,7 +930,8 @@ class Builder:
         if objects and first is not None and first not in roles:
             only = objects.pop(0)
             if ("recipient" in have and only.kind == "person"
-                    and not self.is_person_type(frame.elements[0].type) and frame.elements[0].role != "goal"):
+                    and not self.is_person_type(frame.elements[0].type) and frame.elements[0].role != "goal"
+                    and not any(isinstance(x, PP) and x.prep == "to" for x in clause.items)):
                 roles["recipient"] = only            # "tell Robin", "give Maria": the person receives
             else:
                 roles[first] = only
@@ -781,16 +947,38 @@ class Builder:
                 continue
             if not isinstance(item, PP):
                 continue
-            role = self.role_for(frame, item, previous, roles, has_to)
+            if seek and item.prep == "for" and "theme" not in roles:
+                roles["theme"] = item.np          # "... for a can opener", "look in the closet for my scarf"
+                previous = item.np
+                continue
+            role = None if item.describes else self.role_for(frame, item, previous, roles, has_to)
+            if role is None and previous is None and first == "theme" and first not in roles and \
+                    item.prep in ("on", "at") and not item.lead and not item.describes and \
+                    not (self.frames and self.needs_in_hand(frame)):
+                role = first                      # "check on the baby": the verb's object after its preposition
             if role is not None:
                 roles[role] = item.np
-            elif previous is not None and (item.prep in _ATTACHABLE or not strict):
+            elif previous is not None and (item.prep in _ATTACHABLE or not strict or item.describes):
                 attached.append((previous, item))
             elif strict:
                 return None
             previous = item.np
         score = sum(self.fit(frame, role, np) for role, np in roles.items())
         return roles, attached, score
+
+    @staticmethod
+    def needs_in_hand(frame: Frame) -> bool:
+        """Whether the frame needs its first element in hand (``holding(theme)`` before it)."""
+        first = frame.elements[0].role if frame.elements else None
+        return any(p.predicate == "holding" and p.args == (first,) for p in frame.preconditions)
+
+    @staticmethod
+    def searches(frame: Frame, unit: str) -> bool:
+        """Whether the unit's object is the place searched: the frame also has the unit with "for"
+        ("search" beside "search for", "look" beside "look for"), so "search X for Y" is "search for Y
+        in X"."""
+        wanted = unit + " for"
+        return any(u.text == wanted for u in frame.lexical_units)
 
     def role_for(self, frame: Frame, pp: PP, previous: NP | None, roles: Mapping[str, Any],
                  has_to: bool = False) -> str | None:
@@ -801,6 +989,8 @@ class Builder:
         person = self.kind(np, frame, "recipient" if "recipient" in have else None) == "person"
         if pp.prep in _TO or pp.prep == "for":
             options = ["recipient", "goal"] if person else ["goal"] if pp.prep != "for" else []
+            if pp.prep == "to" and not person and "goal" not in have and np.kind == "thing":
+                options = ["recipient"]      # "give the newspaper to grandpa": Give has no goal, only someone
         elif pp.prep in _FROM:
             options = ["source"]
         elif pp.prep == "with":
@@ -854,12 +1044,13 @@ class Builder:
         type_ = frame.element(role).type
         kind = self.kind(np, frame, role)
         person_type = self.is_person_type(type_)
-        if kind == "person":
-            return 2.0 if person_type else 0.0 if self.taxonomy.is_open(type_) else -2.0
+        if kind == "person":     # a person is somewhere too: "bring her to me" (Guide's goal)
+            return 2.0 if person_type else 0.0 if self.taxonomy.is_open(type_) or self.is_location(type_) else -2.0
         if kind == "pronoun":
             return 0.0
-        if person_type:
-            return -2.0
+        if person_type:          # a noun nobody called a thing may receive ("give the newspaper to grandpa"),
+            return 1.0 if role == "recipient" and kind == "thing" and \
+                self.taxonomy.is_a(self.class_or_head(np), type_) is None else -2.0   # as any noun may be a place
         if kind in ("message", "place"):
             return 0.5
         found = self.taxonomy.is_a(self.class_or_head(np), type_)
@@ -970,7 +1161,8 @@ class Builder:
                 elements[element.role] = Phrase(None, element.default, self.ground_name(element.default),
                                                 default=True)
         ordered = {e.role: elements[e.role] for e in frame.elements if e.role in elements}
-        self.frames.append(Evoked(frame.name, unit, (clause.start, clause.end), ordered))
+        self.frames.append(Evoked(frame.name, unit, (clause.start, clause.end), ordered,
+                                  "; ".join(clause.conditions) or None))
         self.carry_on(frame, roles, attached)
 
     def carry_on(self, frame: Frame, roles: Mapping[str, Any], attached: list[tuple[NP, PP]]) -> None:
@@ -983,7 +1175,8 @@ class Builder:
             return
         goal = roles[relation.args[1]]
         for host, pp in attached:
-            if host is goal and pp.prep in _PUT_IN and not pp.np.pronoun and goal.kind == "thing" and \
+            if host is goal and pp.prep in _PUT_IN and not pp.np.pronoun and goal.kind == "thing" and not pp.describes \
+                    and \
                     self.taxonomy.is_a(self.class_or_head(goal), "container") is True:
                 self.put(goal, pp.np, relation.predicate)
                 return
@@ -1131,8 +1324,8 @@ class Builder:
         return None
 
     def phrase(self, np: NP, frame: Frame, role: str) -> Phrase:
-        if np.pronoun is not None and np.kind in ("pronoun", "thing") and np.pronoun not in (
-                "something", "everything", "anything", "nothing"):
+        if np.pronoun is not None and (np.kind in ("pronoun", "thing") or np.pronoun in ("him", "her", "he", "she")) \
+                and np.pronoun not in ("something", "everything", "anything", "nothing"):
             found = self.antecedent(np, frame, role)
             if found is not None:
                 index, name, _ = found
@@ -1158,7 +1351,8 @@ class Builder:
         modifiers = tuple(noun_lemma(w.text) if w.tag == "WORD" else w.lower for w in np.mods)
         conjuncts = tuple(self.phrase(c, frame, role) for c in np.conjuncts) if len(np.conjuncts) > 1 else ()
         return Phrase(text, np.head_text if np.kind != "message" else text, cls, np.kind, None, np.quantity,
-                      np.plural and np.kind != "message", modifiers, span=(np.start, np.end), conjuncts=conjuncts)
+                      np.plural and np.kind != "message", modifiers, span=(np.start, np.end), conjuncts=conjuncts,
+                      relative=np.relative)
 
     def ground_name(self, name: str) -> str | None:
         if self.vocabulary is None:

@@ -105,20 +105,46 @@ POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "wi
                     "i'd like you to", "you should", "you must", "you need to", "you have to", "you will",
                     "you can", "go ahead and", "robot", "hey", "ok", "okay", "now", "first", "firstly",
                     "just", "quickly", "carefully", "to", "try to", "then", "and", "also", "simply",
-                    "let's", "be sure to", "make sure to", "remember to", "go and", "come and", "go", "come"])
+                    "let's", "let 's", "be sure to", "make sure to", "remember to", "go and", "come and", "go", "come",
+                    "would you be so kind as to", "would you be kind enough to", "do me a favor and",
+                    "do me a favour and", "don't forget to", "do not forget to", "help me", "help me to", "help us",
+                    "make sure you", "see that you", "hi", "hello", "excuse me"])
 END_MARKS = frozenset(".!?")
-HERE_WORDS = frozenset(["here", "there", "over here", "over there"])
+HERE_WORDS = frozenset(["here", "there", "over here", "over there", "upstairs", "downstairs", "indoors", "outdoors",
+                        "nearby", "elsewhere", "everywhere", "somewhere", "anywhere"])
+"""Words that name a place by themselves (deictic and directional adverbs): "come *here*", "bring it
+*upstairs*"."""
+TIME_WORDS = frozenset(["now", "later", "soon", "today", "tonight", "tomorrow", "again", "too", "first",
+                        "right away", "right now", "at once", "as well", "as soon as possible", "asap", "meanwhile",
+                        "in a minute", "in a moment", "for now", "this morning", "this evening", "tonight"])
+"""Time adverbials said after a verb's arguments ("put it in the fridge *right away*"): they say when,
+not what, and are no part of a noun phrase."""
+SUBORDINATORS = frozenset(["after", "before", "when", "whenever", "once", "as soon as", "until", "till", "if",
+                           "unless", "as long as", "in case"])
+"""Words that start a subordinate clause: one of the robot's own ("*after you* wash them": a frame,
+ordered) or a condition on the world ("*when* the water boils": no frame, the frame's
+``condition``)."""
+FIRST_LATER = frozenset(["after", "when", "whenever", "once", "as soon as"])
+"""Subordinators whose clause is done before the main one ("put them away *after you* wash them")."""
+NOMINATIVE = frozenset(["i", "he", "she", "we", "they"])
+"""Subject pronouns: never an object, so after a noun one starts a clause ("the book *I* left on the sofa")."""
+RELATIVES = frozenset(["that", "which", "who", "whom", "whose"])
+STATES_DONE = frozenset(["done", "finished", "ready", "there", "here", "back", "through"])
+"""What "once you are ___" says of the robot when it only sequences: "*once you're done*, ..." is "then"."""
 _QUANTIFIERS = frozenset(["one", "two", "three", "four", "both", "all", "some", "each", "any", "none", "most",
                           "either", "neither", "several", "many", "few"])
 
 _PHRASES: dict[str, tuple[str, ...]] = {}
-for _table in (PREPOSITIONS, POLITE, SEPARATOR_WORDS, NUMBERS, HERE_WORDS):
+for _table in (PREPOSITIONS, POLITE, SEPARATOR_WORDS, NUMBERS, HERE_WORDS, TIME_WORDS, SUBORDINATORS):
     for _phrase in _table:
         words = tuple(_phrase.split())
         if len(words) > 1:
             _PHRASES.setdefault(words[0], ())
             _PHRASES[words[0]] = (*_PHRASES[words[0]], _phrase)
 _LONGEST_FUNCTION_PHRASE = max(len(p.split()) for ps in _PHRASES.values() for p in ps)
+
+_SUB_FIRST = frozenset(p.split()[0] for p in SUBORDINATORS)
+_REL_FIRST = RELATIVES | NOMINATIVE | {"where", "you"}
 
 NP_START = frozenset({"DET", "NUM", "POSS", "PRON", "NAME", "WORD", "RESULT"})
 """Tags that can begin a noun phrase."""
@@ -143,7 +169,7 @@ class Word:
         self.end = end
         self.tag = tag
         self.info = info
-        self.lower = text.lower()
+        self.lower = text.lower().replace("’", "'")
 
     def __repr__(self) -> str:
         return f"Word({self.text!r}, {self.start}, {self.end}, {self.tag!r})"
@@ -203,11 +229,14 @@ class Lexicon:
 
     ``units``: first word → the library's lexical units starting with it, longest first.
     ``results``: a participle or result adjective → (frame name, lexical unit).
+    ``speech``: units of frames whose first element is a ``message`` ("tell", "say"): after them a
+    clause is what is said ("tell him *that dinner is ready*"), not a relative clause or a condition.
     """
 
     units: Mapping[str, tuple[tuple[str, ...], ...]]
     results: Mapping[str, tuple[str, str]]
     verbs: tuple[str, ...]
+    speech: frozenset[str] = frozenset()
 
     @classmethod
     def of(cls, library: Library) -> Lexicon:
@@ -215,8 +244,10 @@ class Lexicon:
         for unit in library.units:           # longest first
             words = tuple(unit.split())
             units.setdefault(words[0], []).append(words)
+        speech = frozenset(unit.text for frame in library.frames if frame.elements
+                           and frame.elements[0].type == "message" for unit in frame.lexical_units)
         return cls({w: tuple(us) for w, us in units.items()}, _result_words(library),
-                   tuple(sorted(library.by_unit)))
+                   tuple(sorted(library.by_unit)), speech)
 
     def verb_at(self, words: Sequence[Word], i: int, stop: int) -> tuple[str, int, int | None] | None:
         """The lexical unit that starts at word ``i``: (unit, words it covers contiguously,
@@ -287,6 +318,8 @@ def _result_words(library: Library) -> dict[str, tuple[str, str]]:
                 for form in participles(words[0]):
                     if form not in _CLOSED:
                         results.setdefault(form, (frame.name, unit.text))
+                        if len(words) > 1:          # "turned off": ToggleOff, whatever "turned" alone is
+                            results.setdefault(" ".join((form, *words[1:])), (frame.name, unit.text))
     return results
 
 
@@ -336,6 +369,8 @@ class Tagger:
         self.out: list[Word] = []
         self._verbs: dict[int, tuple[str, int, int | None] | None] = {}
         self.using = False                  # after "use X": "to" starts the clause of what X is used for
+        self.speech = False                 # the clause's verb says something ("tell"): a clause after it is said
+        self.verb_index = -1                # where in ``out`` the clause's verb is
 
     def verb_at(self, i: int) -> tuple[str, int, int | None] | None:
         """The lexical unit starting at word ``i`` (memoised: the tagger asks more than once)."""
@@ -435,6 +470,12 @@ class Tagger:
                         self.out.append(_merge(words, i, n, "POLITE"))
                         i += n
                         continue
+                n = self.lead_in(i)
+                if n:
+                    i += n
+                    if self.prev_tag() == "VERB":
+                        expect_verb = False
+                    continue
                 if _capitalised(w) and i + 1 < len(words) and words[i + 1].lower == "," and self.verb_after(i + 2):
                     self.out.append(_merge(words, i, 2, "POLITE"))      # "Robin, bring me a cup"
                     i += 2
@@ -450,6 +491,7 @@ class Tagger:
                     self.using = False
                     unit, n, split = found
                     self.out.append(_merge(words, i, n, "VERB", unit))
+                    self.clause_verb(unit)
                     if split is not None:
                         particles[split] = unit
                     i += n
@@ -467,11 +509,22 @@ class Tagger:
                 expect_verb = True
                 i += 1
                 continue
+            if low == "to" and self.speech and self.prev_tag() in ("WORD", "NAME", "PRON") and \
+                    i + 1 < len(words) and self.verb_at(i + 1):
+                self.out.append(Word(w.text, w.start, w.end, "WH"))      # "tell Maria *to* come downstairs"
+                i += 1
+                continue
             if low == "to" and self.purpose(i):
                 self.out.append(Word(w.text, w.start, w.end, "SEP"))     # "take the remote to turn on the lamp"
                 expect_verb = True
                 i += 1
                 continue
+            if low in _SUB_FIRST or low in _REL_FIRST:
+                n = self.subordinate(i, start=False) or self.relative(i)
+                if n:
+                    i += n
+                    expect_verb = self.prev_tag() == "SEP"
+                    continue
             n = _match_phrase(words, i, SEPARATOR_WORDS)
             if n:
                 step = self.separator(i, n)
@@ -479,15 +532,205 @@ class Tagger:
                     i += step
                     expect_verb = self.prev_tag() == "SEP"
                     continue
-            if low == "please" and (i + 1 == len(words) or all(r.lower in END_MARKS for r in words[i + 1:])):
-                self.out.append(Word(w.text, w.start, w.end, "POLITE"))
-                i += 1
-                continue
+            if low in ("please", "thanks", "thank"):
+                k = i + 1
+                while k < len(words) and words[k].lower in ("you", "please", "thanks"):
+                    k += 1
+                if all(r.lower in END_MARKS for r in words[k:]):
+                    self.out.append(_merge(words, i, k - i, "POLITE"))    # "... please", "..., thank you."
+                    i = k
+                    continue
             i += self.tag_word(i)
             if self.out[-1].lower in ("hand", "hands") and len(self.out) > 1 and \
                     self.out[-2].tag in ("PREP", "POSS") and self.verb_after(i):
                 expect_verb = True           # "with a clock in hand turn the lamp on"
         return self.out
+
+    # -- clauses inside clauses ---------------------------------------------------------------
+    def clause_verb(self, unit: str) -> None:
+        """A clause's verb was tagged: remember where, and whether it says something."""
+        self.speech = unit in self.lexicon.speech
+        self.verb_index = len(self.out) - 1
+
+    def has_object(self) -> bool:
+        """Whether the clause has a noun phrase after its verb yet."""
+        return self.verb_index >= 0 and any(t.tag in ("DET", "NUM", "POSS", "PRON", "NAME", "WORD")
+                                            for t in self.out[self.verb_index + 1:])
+
+    def _extend(self, i: int, n: int) -> None:
+        """The last tagged word takes in words ``i .. i+n`` ("First" + "," before a verb)."""
+        last = self.out[-1]
+        self.out[-1] = Word(self.text_of(last.start, self.words[i + n - 1].end) or last.text, last.start,
+                            self.words[i + n - 1].end, last.tag, last.info)
+
+    def cond_end(self, j: int) -> int:
+        """Where a clause said inside another ends: at punctuation, or at "and"/"then" before a verb."""
+        words = self.words
+        k = j
+        while k < len(words):
+            low = words[k].lower
+            if low in (",", ";", ":") or low in END_MARKS:
+                break
+            if low in ("and", "then", "but") and self.verb_after(k + 1):
+                break
+            k += 1
+        return k
+
+    def lead_in(self, i: int) -> int:
+        """Words before a clause's verb that are no verb and no politeness phrase; returns how many
+        were tagged (0: none here). A comma after politeness ("First, open ..."), a sequencing word
+        after a sentence ("After that, ..."), a subordinate clause ("When you reach the kitchen, ...",
+        "If the door is open, ..."), a manner adverb ("Gently place ..."), "be careful and", "start by
+        opening", a polite frame ending in "you could" ("I was wondering if you could ..."), and a
+        light verb with a noun that is a lexical unit ("take a look at" is "look at")."""
+        words, low = self.words, self.words[i].lower
+        prev = self.prev_tag()
+        nxt = words[i + 1].lower if i + 1 < len(words) else ""
+        if low in (",", ";", ":") and prev in ("POLITE", "COND", "SEP"):
+            self._extend(i, 1)
+            return 1
+        n = _match_phrase(words, i, SEPARATOR_WORDS)
+        if n and low not in ("and", "or", "while", "before", "after", "as") or n > 1 and low in ("and", "after"):
+            k = i + n + (1 if i + n < len(words) and words[i + n].lower == "," else 0)
+            if self.verb_after(k):
+                if prev == "SEP":
+                    self._extend(i, k - i)                  # "Take the cup to the sink. After that, wash it."
+                    self.out[-1].info = "then"
+                else:
+                    self.out.append(_merge(words, i, k - i, "POLITE"))
+                return k - i
+        n = self.subordinate(i, start=True)
+        if n:
+            return n
+        if low.isalpha() and low not in PARTICLES and is_adverb(low) and self.verb_after(i + 1):
+            return self._emit(i, 1, "POLITE")               # "Gently place the eggs ..."
+        if low == "be" and i + 3 < len(words) and words[i + 2].lower in ("and", ",") and \
+                nxt not in _CLOSED and nxt.isalpha() and self.verb_after(i + 3):
+            return self._emit(i, 3, "POLITE")               # "Be careful and carry the vase ..."
+        if nxt == "by" and low in ("start", "begin", "finish", "end", "continue") and i + 2 < len(words) and \
+                gerund_lemma(words[i + 2].lower) and self.verb_at(i + 2):
+            return self._emit(i, 2, "POLITE")               # "Start by opening the window"
+        if low in ("take", "have") and nxt in ("a", "another"):
+            for k in (i + 2, i + 3):                        # "take a (quick) look at"
+                for unit in self.lexicon.units.get(words[k].lower if k < len(words) else "", ()):
+                    if len(unit) > 1 and unit[1] in PREPOSITIONS and \
+                            all(k + m < len(words) and words[k + m].lower == unit[m] for m in range(len(unit))):
+                        self.out.append(_merge(words, i, k + len(unit) - i, "VERB", " ".join(unit)))
+                        self.clause_verb(" ".join(unit))
+                        return k + len(unit) - i
+        if all(t.tag == "POLITE" for t in self.out) and self.verb_at(i) is None:
+            for j in range(i, min(len(words) - 2, i + 12)):  # "It would be great if you could close ..."
+                if words[j].lower in (",", ";") or words[j].lower in END_MARKS:
+                    break
+                if words[j].lower == "you" and words[j + 1].lower in ("could", "can", "would", "will", "might") \
+                        and self.verb_after(j + 2):
+                    return self._emit(i, j + 2 - i, "POLITE")
+        return 0
+
+    def _subordinate_at(self, i: int) -> tuple[str, int, str] | None:
+        """A subordinate clause at ``i``: ("clause", end, subordinator) for one of the robot's own
+        ("after you wash them": the verb's clause follows), ("then", end, "then") for "once you're
+        done (with X)", ("cond", end, subordinator) for a condition on the world ("when the water
+        boils"); None when none starts here."""
+        words = self.words
+        n = _match_phrase(words, i, SUBORDINATORS)
+        if not n or _match_phrase(words, i, TIME_WORDS) > n or i + n >= len(words):
+            return None
+        sub = " ".join(w.lower for w in words[i:i + n])
+        j = i + n
+        subject = words[j].lower
+        if subject in ("you", "we", "you've", "we've"):
+            k = j + 1
+            if subject in ("you", "we") and k < len(words) and words[k].lower in ("have", "had"):
+                k += 1
+            if k < len(words) and (self.verb_at(k) is not None or self.verb_after(k)):
+                return "clause", k, sub
+        state = j + 1 if subject in ("you're", "we're", "you've", "we've") else \
+            j + 2 if subject in ("you", "we") and j + 1 < len(words) and words[j + 1].lower in ("are", "have") \
+            else -1
+        if 0 <= state < len(words) and words[state].lower in STATES_DONE:
+            return "then", self.cond_end(state + 1), "then"
+        end = self.cond_end(j)
+        return ("cond", end, sub) if end > j else None
+
+    def subordinate(self, i: int, start: bool) -> int:
+        """Tag a subordinate clause (see :meth:`_subordinate_at`); returns how many words it took.
+        At a clause's start the subordinator is politeness before the verb (the grammar's ``pre``),
+        inside a clause a separator; a condition is one ``COND`` word."""
+        if not start:
+            low = self.words[i].lower
+            if self.speech and low in WH_WORDS or self.verb_after(i + 1) or \
+                    _match_phrase(self.words, i, SEPARATOR_WORDS) > 1:
+                return 0        # "tell me when ..." is what is said; "after heating it", "when done": separators
+        found = self._subordinate_at(i)
+        if found is None:
+            return 0
+        kind, end, sub = found
+        tag = "COND" if kind == "cond" else "POLITE" if start else "SEP"
+        self.out.append(_merge(self.words, i, end - i, tag, sub))
+        return end - i
+
+    def relative(self, i: int) -> int:
+        """A relative clause after a noun; returns how many words it took. "the cup *that is* on the
+        table" and "the person *who is* waving" drop "that is" (the rest describes the noun as
+        usual); any other ("the glass *that I was drinking from*", "the book *I left on the sofa*",
+        "the bananas *that have gone bad*") is one ``REL`` word the noun keeps; "*where it belongs*"
+        names a place (``HERE``)."""
+        words, low, prev = self.words, self.words[i].lower, self.prev_tag()
+        nxt = words[i + 1].lower if i + 1 < len(words) else ""
+        if low == "where":
+            if self.speech or prev not in ("WORD", "NAME", "PRON", "PARTICLE", "HERE") or not self.has_object():
+                return 0
+            end = self.cond_end(i + 1)
+            return self._emit(i, end - i, "HERE", "where") if end > i + 1 else 0
+        if prev not in ("WORD", "NAME") and not (prev == "PRON" and low == "who" and self.out[-1].lower in (
+                "someone", "somebody", "anyone", "anybody", "everyone", "everybody", "those", "one")):
+            return 0
+        if low in NOMINATIVE or low == "you" and verb_lemma(nxt):
+            end = self.relative_end(i + 1)
+            return self._emit(i, end - i, "REL") if end > i + 1 else 0
+        if low not in RELATIVES or self.speech and low == "that" or not nxt or nxt in END_MARKS:
+            return 0
+        if nxt in BE_WORDS and i + 2 < len(words):
+            after = words[i + 2].lower
+            n = _match_phrase(words, i + 2, PREPOSITIONS)
+            if n and self.np_starts(i + 2 + n):
+                return self._emit(i, 2, "REL", "be")     # "the cup that is on the table": the PP describes it
+            if gerund_lemma(after):
+                return 2         # "the person who is waving": "the person waving"
+            end = i + 2
+            results: list[tuple[str, str]] = []
+            while end < len(words) and (words[end].lower not in _CLOSED or words[end].lower == "not") and \
+                    words[end].lower not in END_MARKS and words[end].lower not in (",", ";", ":", "then") and \
+                    not (words[end].lower in ("and", "or") and (end + 1 >= len(words) or words[end + 1].lower in
+                                                                _CLOSED or self.verb_after(end + 1))):
+                low = words[end].lower                   # "that are black and white"
+                particle = words[end + 1].lower if end + 1 < len(words) else ""
+                found = self.lexicon.results.get(f"{low} {particle}") if particle in PARTICLES else None
+                if found:
+                    end += 1                         # "turned on", "turned off": the unit's own frame
+                found = found or self.lexicon.results.get(low)
+                if found:
+                    results.append(found)            # "a lamp that is turned on": a result, as "a lit lamp"
+                end += 1
+            return self._emit(i, max(end, i + 2) - i, "REL", tuple(results))
+        end = self.relative_end(i + 1)
+        return self._emit(i, end - i, "REL") if end > i + 1 else 0
+
+    def relative_end(self, j: int) -> int:
+        """Where a relative clause with a verb of its own ends: where a clause would end, or before a
+        second prepositional phrase or a "to" phrase ("a box that has a candle in it | on the table")."""
+        words = self.words
+        end = self.cond_end(j)
+        seen = False
+        for k in range(j + 1, end):
+            n = _match_phrase(words, k, PREPOSITIONS)
+            if not n or not self.np_starts(k + n) or self.verb_at(k + n) is not None:
+                continue
+            if seen or PREPOSITIONS[" ".join(w.lower for w in words[k:k + n])] in ("to", "into", "onto"):
+                return k
+            seen = True
+        return end
 
     def separator(self, i: int, n: int) -> int:
         """Tag a separator ("and", ",", "then", ", and then") as SEP, AND_NP or nothing;
@@ -498,6 +741,15 @@ class Tagger:
             j += _match_phrase(words, j, SEPARATOR_WORDS)
         phrase = " ".join(w.lower for w in words[i:i + n])
         low, span = ("and", j - i - n + 1) if phrase in AND_WORDS else (words[i].lower, j - i)
+        sub = self._subordinate_at(j) if j < len(words) and words[j].lower in _SUB_FIRST and \
+            not (self.speech and words[j].lower in WH_WORDS) and not self.verb_after(j + 1) else None
+        if sub is not None and low in ("and", "then", ",", ";", "or", "and then"):
+            kind, end = sub[0], sub[1]
+            ends_clause = end < len(self.words) and self.words[end].lower == "," and self.verb_after(end + 1)
+            if low in (",", ";") and kind == "cond" and not ends_clause:
+                return j - i      # "turn off the stove, when the water boils": the condition of this clause
+            self.out.append(_merge(words, i, j - i, "SEP"))
+            return j - i          # "..., and once you're done, put them away"; "...; when it is warm, bring it"
         if self.verb_after(j):
             self.out.append(_merge(words, i, j - i, "SEP"))
             return j - i
@@ -576,6 +828,18 @@ class Tagger:
             if (low in DETERMINERS or low in POSSESSIVES) and self._noun_follows(i + 1):
                 return self._emit(i, 1, "DET" if low in DETERMINERS else "POSS")
             return 0
+        n = _match_phrase(words, i, TIME_WORDS)
+        if n and (low != "first" or self.prev_tag() not in ("VERB", "PREP")):
+            return self._emit(i, n, "PARTICLE", "time")        # "put it in the fridge right away"
+        prev = self.prev_tag()
+        if low in ("one", "ones") and prev in ("WORD", "RESULT"):
+            k = len(self.out) - 1
+            while k >= 0 and self.out[k].tag in ("WORD", "RESULT"):
+                k -= 1
+            if k >= 0 and self.out[k].tag in ("DET", "POSS", "NUM"):
+                return self._emit(i, 1, "WORD")                  # "the red one"
+        if low == "that" and self.speech and prev in ("WORD", "NAME", "PRON") and self.np_starts(i + 1):
+            return self._emit(i, 1, "WH")                        # "tell the guest *that* dinner is ready"
         n = _match_phrase(words, i, HERE_WORDS)
         after_be = bool(self.out) and self.out[-1].tag == "BE"  # "how many cups are there in the kitchen"
         if n and not (low == "there" and (nxt in BE_WORDS or after_be)):
@@ -613,7 +877,7 @@ class Tagger:
         if result and self._noun_follows(i + 1):
             return self._emit(i, 1, "RESULT", result)
         if result and nxt in PARTICLES and self._noun_follows(i + 2):
-            return self._emit(i, 2, "RESULT", result)          # "a heated up potato", "the rinsed off apple"
+            return self._emit(i, 2, "RESULT", self.lexicon.results.get(f"{low} {nxt}", result))  # "a heated up potato"
         if result and nxt == "," and i + 2 < len(self.words) and self.words[i + 2].lower in self.lexicon.results \
                 and self._noun_follows(i + 3):
             self._emit(i, 1, "RESULT", result)                  # "a cooked, rinsed egg"

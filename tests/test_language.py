@@ -278,7 +278,7 @@ def test_a_container_said_to_be_somewhere_goes_there_with_what_was_put_in_it(
     ("Go get a coke from the fridge", [("Pick", {"theme": "coke", "source": "fridge"})]),
     ("How many cups are on the table?", [("Count", {"theme": "cup", "ground": "table"})]),
     ("Lead the lady in the red dress to the couch", [("Guide", {"theme": "lady", "goal": "couch"})]),
-    ("Tell Robin to come", [("Tell", {"recipient": "Robin"})]),
+    ("Tell Robin to come", [("Tell", {"recipient": "Robin", "message": "come"})]),
     ("come here", [("Go", {"goal": "here"})]),
     ("Open the fridge, take out the milk and close it", [("Open", {"theme": "fridge"}),
                                                           ("Pick", {"theme": "milk"}), ("Close", {"theme": "fridge"})]),
