@@ -34,7 +34,7 @@ from lark import Tree
 
 from .errors import SealError
 from .frames import Frame
-from .grounding import PIECES
+from .grounding import PIECES, PORTIONS
 from .lexicon import (
     FIRST_LATER,
     PERSON_PRONOUNS,
@@ -115,12 +115,15 @@ class Evoked:
     span: tuple[int, int]
     elements: Mapping[str, Phrase]
     condition: str | None = None
+    result: str | None = None
+    time: str | None = None
 
     def to_json(self) -> dict[str, Any]:
         data = {"frame": self.frame, "lexical_unit": self.lexical_unit, "span": list(self.span),
                 "elements": {role: p.to_json() for role, p in self.elements.items()}}
-        if self.condition:
-            data["condition"] = self.condition
+        for key in ("condition", "result", "time"):
+            if getattr(self, key):
+                data[key] = getattr(self, key)
         return data
 
 
@@ -438,6 +441,7 @@ class Clause:
     sub: str | None = None                           # "before"/"after"/"when"... said before the verb
     conditions: list[str] = field(default_factory=list)   # "when the water boils"
     gap: Clause | None = None                        # "... and the glasses next to them": the verb again
+    result: list[PP] = field(default_factory=list)   # "cut the cake *into slices*"
 
 
 _TO = ("to", "into", "onto")
@@ -820,6 +824,9 @@ class Builder:
             clause.items = [x for x in clause.items if not any(x is u for u in used)]
         for np in clause.held:
             self.hold(np)
+        if frames and all(self.makes_state(f) for f in frames):
+            clause.result = [x for x in clause.items if isinstance(x, PP) and self.is_form(x)]
+            clause.items = [x for x in clause.items if not any(x is r for r in clause.result)]
         best = self.best_fit(frames, clause)
         head = unit.split()[0]
         if best is None and head != unit and self.library.evoked_by(head):
@@ -844,6 +851,27 @@ class Builder:
         _, frame, roles, attached = best
         self.first_into(frame, roles, attached)
         self.emit(frame, unit, clause, roles, attached)
+
+    def makes_state(self, frame: Frame) -> bool:
+        """Whether the frame's result is a state of its first element and it puts it nowhere (Slice:
+        ``sliced(theme)``, no goal)."""
+        first = frame.elements[0].role if frame.elements else None
+        return "goal" not in self.taxonomy.roles(frame) and any(
+            not p.negated and p.args == (first,) for p in frame.postconditions)
+
+    @staticmethod
+    def is_form(pp: PP) -> bool:
+        """Whether a phrase says the form the action leaves its theme in: "*into slices*", "into eight
+        pieces", "into cubes", "*in half*" (a portion, a number of things, or things said bare)."""
+        np = pp.np
+        if np.head is None or np.kind != "thing" or np.pronoun is not None or pp.prep not in ("into", "in"):
+            return False
+        head = noun_lemma(np.head.text)
+        if head in PORTIONS or head == "half":
+            return True
+        first = np.mods[0] if np.mods else np.head
+        bare_plural = np.plural and first.start == np.start and not np.of
+        return pp.prep == "into" and (np.quantity is not None or bare_plural)
 
     def recipient_said(self, clause: Clause) -> bool:
         """Whether the clause names someone to receive: an indirect object, or "for"/"to" a person."""
@@ -1162,7 +1190,10 @@ class Builder:
                                                 default=True)
         ordered = {e.role: elements[e.role] for e in frame.elements if e.role in elements}
         self.frames.append(Evoked(frame.name, unit, (clause.start, clause.end), ordered,
-                                  "; ".join(clause.conditions) or None))
+                                  "; ".join(clause.conditions) or None,
+                                  " ".join(self.text[r.start:r.np.end] for r in clause.result) or None,
+                                  " ".join(w.text for w in clause.items if isinstance(w, Word) and w.info == "time")
+                                  or None))
         self.carry_on(frame, roles, attached)
 
     def carry_on(self, frame: Frame, roles: Mapping[str, Any], attached: list[tuple[NP, PP]]) -> None:

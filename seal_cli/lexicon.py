@@ -126,6 +126,9 @@ ordered) or a condition on the world ("*when* the water boils": no frame, the fr
 ``condition``)."""
 FIRST_LATER = frozenset(["after", "when", "whenever", "once", "as soon as"])
 """Subordinators whose clause is done before the main one ("put them away *after you* wash them")."""
+TIME_UNITS = frozenset(["second", "seconds", "minute", "minutes", "hour", "hours", "moment", "moments", "while",
+                        "day", "days", "week", "weeks"])
+"""Measures of time: "for *three minutes*", "every *few minutes*" say how long or how often."""
 NOMINATIVE = frozenset(["i", "he", "she", "we", "they"])
 """Subject pronouns: never an object, so after a noun one starts a clause ("the book *I* left on the sofa")."""
 RELATIVES = frozenset(["that", "which", "who", "whom", "whose"])
@@ -145,6 +148,8 @@ _LONGEST_FUNCTION_PHRASE = max(len(p.split()) for ps in _PHRASES.values() for p 
 
 _SUB_FIRST = frozenset(p.split()[0] for p in SUBORDINATORS)
 _REL_FIRST = RELATIVES | NOMINATIVE | {"where", "you"}
+_INDEFINITE = frozenset(["something", "anything", "nothing", "everything", "someone", "somebody", "anyone",
+                         "anybody"])
 
 NP_START = frozenset({"DET", "NUM", "POSS", "PRON", "NAME", "WORD", "RESULT"})
 """Tags that can begin a noun phrase."""
@@ -279,7 +284,8 @@ class Lexicon:
             if len(unit) != 2 or unit[1] not in PARTICLES:
                 continue
             for j in range(i + 2, stop):
-                if words[j].lower == unit[1] and _stands_alone(words, j):
+                if words[j].lower == unit[1] and _stands_alone(words, j) and \
+                        _match_phrase(words, j - 1, TIME_WORDS) < 2:      # not "right away"
                     return " ".join(unit), 1, j
         return None
 
@@ -508,6 +514,14 @@ class Tagger:
                 self.out.append(Word(w.text, w.start, w.end, "SEP"))    # "Go to the kitchen. Find Robin."
                 expect_verb = True
                 i += 1
+                continue
+            if low == "please" and not expect_verb and i + 1 < len(words) and words[i + 1].lower not in END_MARKS:
+                i += 2 if i + 2 < len(words) and words[i + 1].lower == "," else 1
+                continue                 # "bring me, please, a glass of juice": politeness inside the clause
+            if low == "to" and self.out and self.out[-1].lower in _INDEFINITE and i + 1 < len(words) and \
+                    verb_lemma(words[i + 1].lower) == words[i + 1].lower:
+                end = self.relative_end(i + 1)                          # "something to drink"
+                i += self._emit(i, end - i, "REL")
                 continue
             if low == "to" and self.speech and self.prev_tag() in ("WORD", "NAME", "PRON") and \
                     i + 1 < len(words) and self.verb_at(i + 1):
@@ -831,6 +845,14 @@ class Tagger:
         n = _match_phrase(words, i, TIME_WORDS)
         if n and (low != "first" or self.prev_tag() not in ("VERB", "PREP")):
             return self._emit(i, n, "PARTICLE", "time")        # "put it in the fridge right away"
+        if low in ("for", "every", "each") and self.prev_tag() not in ("VERB", "PREP"):
+            k = i + 1                                          # "for three minutes", "every few minutes"
+            while k < len(words) and (words[k].lower in ("a", "an", "few", "couple", "of", "several", "another",
+                                                          "other", "more") or words[k].lower in NUMBERS
+                                      or words[k].lower.isdigit()):
+                k += 1
+            if k < len(words) and words[k].lower in TIME_UNITS:
+                return self._emit(i, k + 1 - i, "PARTICLE", "time")
         prev = self.prev_tag()
         if low in ("one", "ones") and prev in ("WORD", "RESULT"):
             k = len(self.out) - 1
@@ -850,6 +872,8 @@ class Tagger:
         if n:
             prep = PREPOSITIONS[" ".join(x.lower for x in words[i:i + n])]
             has_object = self.np_starts(i + n) or i + n < len(words) and words[i + n].lower in ("here", "there")
+            if not has_object and prep == "outside":
+                return self._emit(i, n, "HERE")                  # "take the trash bag outside"
             return self._emit(i, n, "PREP" if has_object else "PARTICLE", prep)   # "pick it up", "... from"
         if low in PARTICLES:
             return self._emit(i, 1, "PARTICLE", low)
