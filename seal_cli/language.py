@@ -405,6 +405,8 @@ class NP:
     inner: list[NP] = field(default_factory=list)         # noun phrases inside (for result words)
     conjuncts: list[NP] = field(default_factory=list)
     relative: str | None = None                          # "that I was drinking from"
+    relative_start: int = -1
+    relative_end: int = -1
 
     @property
     def head_text(self) -> str:
@@ -427,6 +429,7 @@ class PP:
     start: int
     lead: bool = False         # said before the verb ("with X in hand, ...", "use X to ...")
     describes: bool = False    # after "that is": says where the noun before it is
+    after_relative: bool = False   # right after a relative clause: the frame's, or the relative clause's
 
 
 @dataclass
@@ -597,12 +600,16 @@ class Builder:
                 if item.info == "be":
                     describe = True
                     continue
-                host.relative = item.text
+                host.relative = self.text[item.start:item.end]
+                host.relative_start, host.relative_end = item.start, item.end
                 for frame_unit in item.info if isinstance(item.info, tuple) else ():
                     host.results.append(Word(item.text, item.start, item.end, "RESULT", frame_unit))
                 continue
             if describe and isinstance(item, PP):
                 item.describes = True
+            elif out and isinstance(item, PP) and isinstance(out[-1], NP | PP) and \
+                    (out[-1].np if isinstance(out[-1], PP) else out[-1]).relative_end == item.start - 1:
+                item.after_relative = True
             describe = False
             out.append(item)
         return out
@@ -746,6 +753,9 @@ class Builder:
         i = 0
         while i < len(items):
             item = items[i]
+            if (isinstance(item, Word) and item.tag == "AND_NP" and item.lower == "or" and out
+                    and isinstance(out[-1], PP) and i + 1 < len(items) and isinstance(items[i + 1], PP)):
+                items = [*items[:i + 1], items[i + 1].np, *items[i + 2:]]   # "on the desk or in the bedroom"
             if (isinstance(item, Word) and item.tag == "AND_NP" and out and isinstance(out[-1], NP | PP)
                     and i + 1 < len(items) and isinstance(items[i + 1], NP)):
                 host = out[-1].np if isinstance(out[-1], PP) else out[-1]
@@ -980,6 +990,8 @@ class Builder:
                 previous = item.np
                 continue
             role = None if item.describes else self.role_for(frame, item, previous, roles, has_to)
+            if item.after_relative and "recipient" in roles:
+                role = None                       # "bring me the book I left on the sofa": where it was left
             if role is None and previous is None and first == "theme" and first not in roles and \
                     item.prep in ("on", "at") and not item.lead and not item.describes and \
                     not (self.frames and self.needs_in_hand(frame)):
@@ -1162,6 +1174,9 @@ class Builder:
         holds_nothing = "instrument" not in frame.roles and not any(
             not p.negated and len(p.args) == 2 and p.args[0] == theme for p in frame.postconditions)
         for host, pp in attached:
+            if pp.after_relative and host.relative is not None:
+                host.relative = self.text[host.relative_start:pp.np.end]
+                continue
             host.end = max(host.end, pp.np.end)
             if pp.prep == "with" and pp.np.kind != "person":
                 if holds_nothing and host is roles.get(theme) and pp.np.kind == "thing" and not pp.np.pronoun:

@@ -120,7 +120,7 @@ TIME_WORDS = frozenset(["now", "later", "soon", "today", "tonight", "tomorrow", 
 """Time adverbials said after a verb's arguments ("put it in the fridge *right away*"): they say when,
 not what, and are no part of a noun phrase."""
 SUBORDINATORS = frozenset(["after", "before", "when", "whenever", "once", "as soon as", "until", "till", "if",
-                           "unless", "as long as", "in case"])
+                           "unless", "as long as", "in case", "while"])
 """Words that start a subordinate clause: one of the robot's own ("*after you* wash them": a frame,
 ordered) or a condition on the world ("*when* the water boils": no frame, the frame's
 ``condition``)."""
@@ -518,8 +518,9 @@ class Tagger:
             if low == "please" and not expect_verb and i + 1 < len(words) and words[i + 1].lower not in END_MARKS:
                 i += 2 if i + 2 < len(words) and words[i + 1].lower == "," else 1
                 continue                 # "bring me, please, a glass of juice": politeness inside the clause
-            if low == "to" and self.out and self.out[-1].lower in _INDEFINITE and i + 1 < len(words) and \
-                    verb_lemma(words[i + 1].lower) == words[i + 1].lower:
+            if low == "to" and self.out and (self.out[-1].lower in _INDEFINITE or len(self.out) > 1 and
+                                             self.out[-1].tag == "WORD" and self.out[-2].lower in _INDEFINITE) \
+                    and i + 1 < len(words) and verb_lemma(words[i + 1].lower) == words[i + 1].lower:
                 end = self.relative_end(i + 1)                          # "something to drink"
                 i += self._emit(i, end - i, "REL")
                 continue
@@ -671,11 +672,10 @@ class Tagger:
         """Tag a subordinate clause (see :meth:`_subordinate_at`); returns how many words it took.
         At a clause's start the subordinator is politeness before the verb (the grammar's ``pre``),
         inside a clause a separator; a condition is one ``COND`` word."""
-        if not start:
-            low = self.words[i].lower
-            if self.speech and low in WH_WORDS or self.verb_after(i + 1) or \
-                    _match_phrase(self.words, i, SEPARATOR_WORDS) > 1:
-                return 0        # "tell me when ..." is what is said; "after heating it", "when done": separators
+        low = self.words[i].lower
+        if self.verb_after(i + 1) or not start and (self.speech and low in WH_WORDS or
+                                                    _match_phrase(self.words, i, SEPARATOR_WORDS) > 1):
+            return 0            # "tell me when ..." is what is said; "after heating it", "when done": separators
         found = self._subordinate_at(i)
         if found is None:
             return 0
@@ -727,23 +727,27 @@ class Tagger:
                 if found:
                     results.append(found)            # "a lamp that is turned on": a result, as "a lit lamp"
                 end += 1
+            if i + 2 < end < len(words) and words[end].lower in PARTICLES and verb_lemma(words[end - 1].lower) and (
+                    end + 1 == len(words) or words[end + 1].lower in END_MARKS or words[end + 1].lower in (",", ";")
+                    or _match_phrase(words, end + 1, PREPOSITIONS)):
+                end += 1                             # "the charger that's plugged in | next to my bed"
             return self._emit(i, max(end, i + 2) - i, "REL", tuple(results))
         end = self.relative_end(i + 1)
         return self._emit(i, end - i, "REL") if end > i + 1 else 0
 
     def relative_end(self, j: int) -> int:
         """Where a relative clause with a verb of its own ends: where a clause would end, or before a
-        second prepositional phrase or a "to" phrase ("a box that has a candle in it | on the table")."""
+        prepositional phrase, which the frame may take ("put the cup you used | in the sink") or give back
+        to the relative clause ("bring me the book I left | on the sofa")."""
         words = self.words
         end = self.cond_end(j)
-        seen = False
         for k in range(j + 1, end):
             n = _match_phrase(words, k, PREPOSITIONS)
             if not n or not self.np_starts(k + n) or self.verb_at(k + n) is not None:
                 continue
-            if seen or PREPOSITIONS[" ".join(w.lower for w in words[k:k + n])] in ("to", "into", "onto"):
-                return k
-            seen = True
+            if k + n < len(words) and words[k + n].lower in ("it", "them", "him", "her") and k + n + 1 < end:
+                continue         # "a box that has a candle in it | on the table"
+            return k             # "the book I left | on the sofa": the frame decides whose phrase it is
         return end
 
     def separator(self, i: int, n: int) -> int:
@@ -791,6 +795,12 @@ class Tagger:
             if not unknown_verb:
                 self.out.append(_merge(words, i, n, "AND_NP"))
                 return n
+        if low == "or" and self.prev_tag() in ("WORD", "NAME", "PRON") and _match_phrase(words, j, PREPOSITIONS):
+            k = j + _match_phrase(words, j, PREPOSITIONS)
+            end = self.cond_end(k)
+            if self.np_starts(k) and not any(self.verb_at(m) for m in range(k, end)):
+                self.out.append(_merge(words, i, n, "AND_NP"))
+                return n             # "on the desk or in the bedroom"
         if low in ("and", "then", ",", ";", "or"):
             self.out.append(_merge(words, i, j - i, "SEP"))
             return j - i
