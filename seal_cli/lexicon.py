@@ -234,8 +234,9 @@ class Lexicon:
 
     ``units``: first word → the library's lexical units starting with it, longest first.
     ``results``: a participle or result adjective → (frame name, lexical unit).
-    ``speech``: units of frames whose first element is a ``message`` ("tell", "say"): after them a
-    clause is what is said ("tell him *that dinner is ready*"), not a relative clause or a condition.
+    ``speech``: units of frames whose first element is a ``message`` or a ``question`` ("tell", "say",
+    "answer"): after them a clause is what is said ("tell him *that dinner is ready*"), not a relative
+    clause or a condition.
     """
 
     units: Mapping[str, tuple[tuple[str, ...], ...]]
@@ -250,7 +251,7 @@ class Lexicon:
             words = tuple(unit.split())
             units.setdefault(words[0], []).append(words)
         speech = frozenset(unit.text for frame in library.frames if frame.elements
-                           and frame.elements[0].type == "message" for unit in frame.lexical_units)
+                           and frame.elements[0].type in ("message", "question") for unit in frame.lexical_units)
         return cls({w: tuple(us) for w, us in units.items()}, _result_words(library),
                    tuple(sorted(library.by_unit)), speech)
 
@@ -534,7 +535,7 @@ class Tagger:
                 expect_verb = True
                 i += 1
                 continue
-            if low in _SUB_FIRST or low in _REL_FIRST:
+            if (low in _SUB_FIRST or low in _REL_FIRST) and self.prev_tag() not in ("DET", "POSS", "NUM", "PREP"):
                 n = self.subordinate(i, start=False) or self.relative(i)
                 if n:
                     i += n
@@ -700,6 +701,8 @@ class Tagger:
         if prev not in ("WORD", "NAME") and not (prev == "PRON" and low == "who" and self.out[-1].lower in (
                 "someone", "somebody", "anyone", "anybody", "everyone", "everybody", "those", "one")):
             return 0
+        if self.speech:
+            return 0             # "tell the man (that) ...": what is said
         if low in NOMINATIVE or low == "you" and verb_lemma(nxt):
             end = self.relative_end(i + 1)
             return self._emit(i, end - i, "REL") if end > i + 1 else 0
