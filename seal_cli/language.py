@@ -553,7 +553,7 @@ class Builder:
                     if isinstance(info, str) and info in SUBORDINATORS:
                         sub = info              # "before you go to the garage, ..."
             elif data == "cond":
-                conditions.append(self.word(child.children[0]).text)
+                conditions.append(self.word(child.children[0]).text.rstrip(",;: "))
         items = self.relatives(items)
         gap: Clause | None = None
         split = self.gapping(items)

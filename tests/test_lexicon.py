@@ -99,3 +99,37 @@ def test_morphology_from_lemminflect() -> None:
     assert gerund_lemma("wearing") == "wear" and gerund_lemma("ceiling") is None
     assert {"lit", "lighted"} <= participles("light") and participles("cut") == {"cut"}
     assert is_adjective("hot") and not is_adjective("cup")
+
+
+def test_subordinate_clauses_are_separators_or_conditions(library: Library) -> None:
+    assert tags("put the dishes away after you wash them", library)[4:6] == [("after you", "SEP"), ("wash", "VERB")]
+    assert tags("Before you go to the garage, turn off the lights", library)[:2] == [("Before you", "POLITE"),
+                                                                                   ("go", "VERB")]
+    assert ("when the water is boiling", "COND") in tags("turn off the stove when the water is boiling", library)
+    assert tags("If the door is open, close it", library)[:2] == [("If the door is open,", "COND"),
+                                                                  ("close", "VERB")]
+    lexicon, _ = lexicon_of(library)
+    once = tag(lexicon, "wash the dishes and once you're done, put them away")
+    assert [(w.tag, w.info) for w in once if w.tag in ("SEP", "POLITE")] == [("SEP", None), ("POLITE", "then")]
+    assert ("when", "WH") in tags("tell me when dinner is ready", library)   # what is said, not a condition
+
+
+def test_relative_clauses(library: Library) -> None:
+    assert ("that is", "REL") in tags("bring me the cup that is on the table", library)
+    assert ("I left", "REL") in tags("bring me the book I left on the sofa", library)
+    assert ("that have gone bad", "REL") in tags("throw away the bananas that have gone bad", library)
+    assert ("where it belongs", "HERE") in tags("put the book on the shelf where it belongs", library)
+    assert [t for t in tags("find the person who is waving", library)][-1] == ("waving", "VBG_I")
+    assert ("that", "WH") in tags("tell the guest that dinner is ready", library)
+    assert ("where", "WH") in tags("find out where my umbrella is", library)   # no object yet: a question
+
+
+def test_adverbs_of_time_place_and_manner(library: Library) -> None:
+    assert tags("gently place the eggs in the basket", library)[:2] == [("gently", "POLITE"), ("place", "VERB")]
+    assert ("right away", "PARTICLE") in tags("put it in the fridge right away", library)
+    assert ("for three minutes", "PARTICLE") in tags("microwave the popcorn for three minutes", library)
+    assert ("upstairs", "HERE") in tags("bring it upstairs", library)
+    assert tags("take a look at the sink", library)[0] == ("take a look at", "VERB")
+    assert tags("start by opening the window", library)[:2] == [("start by", "POLITE"), ("opening", "VERB")]
+    assert ("one", "WORD") in tags("bring me the red one", library)
+    assert ("one", "NUM") in tags("bring me one apple", library)
