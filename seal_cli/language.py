@@ -163,12 +163,22 @@ class Types:
         self._open: dict[str, bool] = {}
         self._roles: dict[str, frozenset[str]] = {}
         self._relations: dict[str, Any] = {}
+        self._states: dict[str, bool] = {}
 
     def roles(self, frame: Frame) -> frozenset[str]:
         """The frame's element roles (asked for every phrase of every clause: memoised by name)."""
         found = self._roles.get(frame.name)
         if found is None:
             found = self._roles[frame.name] = frozenset(e.role for e in frame.elements)
+        return found
+
+    def makes_state(self, frame: Frame) -> bool:
+        """See :meth:`Builder.makes_state` (memoised by name)."""
+        found = self._states.get(frame.name)
+        if found is None:
+            first = frame.elements[0].role if frame.elements else None
+            found = self._states[frame.name] = "goal" not in self.roles(frame) and any(
+                not p.negated and p.args == (first,) for p in frame.postconditions)
         return found
 
     def relation(self, frame: Frame) -> Any:
@@ -592,6 +602,8 @@ class Builder:
         with the frames its result words evoke ("a lamp that is turned on"); "that is" before a
         prepositional phrase makes the phrase describe the noun ("the pan that is on the stove"),
         never fill an element of the frame."""
+        if not any(isinstance(item, Word) and item.tag == "REL" for item in items):
+            return items
         out: list[Any] = []
         describe = False
         for item in items:
@@ -618,7 +630,7 @@ class Builder:
     def gapping(items: list[Any]) -> int | None:
         """Where a second clause with the verb left out starts: "put the plates *on the table* and the
         glasses *next to them*" (an object and a place, "and", another object and place); None."""
-        if not items or not isinstance(items[0], NP):
+        if len(items) < 5 or not isinstance(items[0], NP):
             return None
         for k in range(2, len(items) - 2):
             if isinstance(items[k], Word) and items[k].tag == "AND_NP" and items[k].lower == "and" and \
@@ -865,9 +877,7 @@ class Builder:
     def makes_state(self, frame: Frame) -> bool:
         """Whether the frame's result is a state of its first element and it puts it nowhere (Slice:
         ``sliced(theme)``, no goal)."""
-        first = frame.elements[0].role if frame.elements else None
-        return "goal" not in self.taxonomy.roles(frame) and any(
-            not p.negated and p.args == (first,) for p in frame.postconditions)
+        return self.taxonomy.makes_state(frame)
 
     @staticmethod
     def is_form(pp: PP) -> bool:

@@ -147,6 +147,13 @@ for _table in (PREPOSITIONS, POLITE, SEPARATOR_WORDS, NUMBERS, HERE_WORDS, TIME_
 _LONGEST_FUNCTION_PHRASE = max(len(p.split()) for ps in _PHRASES.values() for p in ps)
 
 _SUB_FIRST = frozenset(p.split()[0] for p in SUBORDINATORS)
+_TIME_FIRST = frozenset(p.split()[0] for p in TIME_WORDS)
+_FUNCTION_SPECIAL = _TIME_FIRST | {"for", "every", "each", "one", "ones", "that"}
+"""First words of what :meth:`Tagger._special_function_word` tags (checked before calling it)."""
+_SEP_FIRST = frozenset(p.split()[0] for p in SEPARATOR_WORDS)
+_LEAD_FIRST = _SUB_FIRST | _SEP_FIRST | {",", ";", ":", "start", "begin", "finish", "end", "continue", "take", "have",
+                                         "be"}
+"""Words that may begin what :meth:`Tagger.lead_in` tags before a verb (besides adverbs and polite frames)."""
 _REL_FIRST = RELATIVES | NOMINATIVE | {"where", "you"}
 _INDEFINITE = frozenset(["something", "anything", "nothing", "everything", "someone", "somebody", "anyone",
                          "anybody"])
@@ -174,7 +181,8 @@ class Word:
         self.end = end
         self.tag = tag
         self.info = info
-        self.lower = text.lower().replace("’", "'")
+        lower = text.lower()
+        self.lower = lower.replace("’", "'") if "’" in lower else lower
 
     def __repr__(self) -> str:
         return f"Word({self.text!r}, {self.start}, {self.end}, {self.tag!r})"
@@ -600,6 +608,8 @@ class Tagger:
         opening", a polite frame ending in "you could" ("I was wondering if you could ..."), and a
         light verb with a noun that is a lexical unit ("take a look at" is "look at")."""
         words, low = self.words, self.words[i].lower
+        if low not in _LEAD_FIRST and self.verb_at(i) is not None:
+            return 0                                        # the verb itself (most clauses)
         prev = self.prev_tag()
         nxt = words[i + 1].lower if i + 1 < len(words) else ""
         if low in (",", ";", ":") and prev in ("POLITE", "COND", "SEP"):
@@ -844,17 +854,10 @@ class Tagger:
             return self._emit(i, 2, "DET" if number is None else "NUM", number)
         return 0
 
-    def _function_word(self, i: int, in_np: bool) -> int:
-        """Prepositions, particles, "of", wh-words, "is", possessives, determiners, pronouns."""
-        words, low, nxt = self.words, self.words[i].lower, self._next(i)
-        if low in PARTICLES and nxt == "of" and _match_phrase(words, i, PREPOSITIONS) < 2:
-            return self._emit(i, 1, "WORD")       # "the back of the toilet"
-        if low == "of":
-            return self._emit(i, 1, "OF")
-        if in_np:
-            if (low in DETERMINERS or low in POSSESSIVES) and self._noun_follows(i + 1):
-                return self._emit(i, 1, "DET" if low in DETERMINERS else "POSS")
-            return 0
+    def _special_function_word(self, i: int) -> int:
+        """Time adverbials ("right away", "for three minutes"), "one" after adjectives ("the red one")
+        and "that" opening reported speech ("tell the guest *that* dinner is ready"); 0 if none."""
+        words, low = self.words, self.words[i].lower
         n = _match_phrase(words, i, TIME_WORDS)
         if n and (low != "first" or self.prev_tag() not in ("VERB", "PREP")):
             return self._emit(i, n, "PARTICLE", "time")        # "put it in the fridge right away"
@@ -875,6 +878,23 @@ class Tagger:
                 return self._emit(i, 1, "WORD")                  # "the red one"
         if low == "that" and self.speech and prev in ("WORD", "NAME", "PRON") and self.np_starts(i + 1):
             return self._emit(i, 1, "WH")                        # "tell the guest *that* dinner is ready"
+        return 0
+
+    def _function_word(self, i: int, in_np: bool) -> int:
+        """Prepositions, particles, "of", wh-words, "is", possessives, determiners, pronouns."""
+        words, low, nxt = self.words, self.words[i].lower, self._next(i)
+        if low in PARTICLES and nxt == "of" and _match_phrase(words, i, PREPOSITIONS) < 2:
+            return self._emit(i, 1, "WORD")       # "the back of the toilet"
+        if low == "of":
+            return self._emit(i, 1, "OF")
+        if in_np:
+            if (low in DETERMINERS or low in POSSESSIVES) and self._noun_follows(i + 1):
+                return self._emit(i, 1, "DET" if low in DETERMINERS else "POSS")
+            return 0
+        if low in _FUNCTION_SPECIAL:
+            n = self._special_function_word(i)
+            if n:
+                return n
         n = _match_phrase(words, i, HERE_WORDS)
         after_be = bool(self.out) and self.out[-1].tag == "BE"  # "how many cups are there in the kitchen"
         if n and not (low == "there" and (nxt in BE_WORDS or after_be)):
