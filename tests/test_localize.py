@@ -212,6 +212,9 @@ def test_a_failing_run_leaves_no_output(tmp_path: Path) -> None:
 def test_usage_errors_are_typers() -> None:
     assert runner.invoke(app, ["localize", "--map", "apartment", "--particles", "0"]).exit_code == 2
     assert runner.invoke(app, ["localize"]).exit_code == 2
+    negative_seed = runner.invoke(app, ["localize", "--map", "apartment", "--seed", "-1"])
+    assert negative_seed.exit_code == 2 and "--seed" in negative_seed.stderr
+    assert "Traceback" not in negative_seed.stderr
 
 
 def test_plans_do_not_know_where_the_objects_really_are() -> None:

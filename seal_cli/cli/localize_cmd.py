@@ -63,7 +63,7 @@ def localize(
                                              show_default=False),
     steps: int = typer.Option(20, "--steps", min=0, help="Updates at the final pose (the paper uses 20)."),
     particles: int = typer.Option(200, "--particles", min=1, help="Particles per object and per frame."),
-    seed: int = typer.Option(0, "--seed", help="Seed of the one random generator."),
+    seed: int = typer.Option(0, "--seed", min=0, help="Seed of the one random generator."),
     rrd: Path | None = typer.Option(None, "--rrd", help="Write a Rerun recording of the run here.",
                                     show_default=False),
     png: Path | None = typer.Option(None, "--png", help="Write a picture of the map and the beliefs here.",

@@ -12,7 +12,7 @@ from . import JsonOption, bench_app, command, emit_json, err, out
 def perf(
     scales: list[str] | None = typer.Option(None, "--scale", help="paper or building (repeatable; default both).",
                                             show_default=False),
-    seed: int = typer.Option(0, "--seed", help="Seed of the random generators."),
+    seed: int = typer.Option(0, "--seed", min=0, help="Seed of the random generators."),
     as_json: bool = JsonOption,
 ) -> None:
     """Updates per second of SeFM (grid kernel sums) and of the exact O(P²) reference, and the total variation

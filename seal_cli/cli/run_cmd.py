@@ -33,7 +33,7 @@ def run(
                                           "frames' postconditions hold at the start.", show_default=False),
     policy: str = typer.Option("sefm", "--policy", help="Who searches: sefm, object_only, coverage, oracle or "
                                "uniform."),
-    seed: int = typer.Option(0, "--seed", help="Seed of the one random generator."),
+    seed: int = typer.Option(0, "--seed", min=0, help="Seed of the one random generator."),
     particles: int = typer.Option(200, "--particles", min=1, help="Particles per object and per frame."),
     max_steps: int = typer.Option(400, "--max-steps", min=1, help="Give up after this many steps."),
     max_metres: float = typer.Option(300.0, "--max-metres", min=0.1, help="Give up after driving this far."),
@@ -107,7 +107,7 @@ def tasks(
     policies: str = typer.Option("sefm,object_only,coverage,oracle", "--policies",
                                  help="Comma-separated policies (uniform: SeFM without priors)."),
     jobs: int = typer.Option(0, "--jobs", min=0, help="Worker processes (0: one per core)."),
-    seed: int = typer.Option(0, "--seed", help="Seed; each episode's generator is derived from it."),
+    seed: int = typer.Option(0, "--seed", min=0, help="Seed; each episode's generator is derived from it."),
     particles: int = typer.Option(200, "--particles", min=1, help="Particles per object and per frame."),
     episodes: Path | None = typer.Option(None, "--episodes", help="Also write every outcome here as JSON Lines.",
                                          show_default=False),
