@@ -507,6 +507,11 @@ def test_bench_plan_times_each_command(tmp_path: Path) -> None:
     assert all(0 < r["plan_ms"] <= r["ms"] and r["nodes"] >= r["steps"] for r in data["commands"])
     assert data["slowest"] in data["commands"]
     assert runner.invoke(app, ["bench", "plan", "--file", str(tmp_path / "none.txt")]).exit_code == 1
+    blank = tmp_path / "blank.txt"
+    blank.write_text("\n  \n", encoding="utf-8")
+    empty = runner.invoke(app, ["bench", "plan", "--file", str(blank)])
+    assert empty.exit_code == 1 and "Traceback" not in empty.stderr
+    assert f"{blank}: no commands to time" in empty.stderr
 
 
 def test_the_docs_code_example_runs() -> None:

@@ -2,8 +2,9 @@
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass
+from dataclasses import asdict
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import typer
 from rich.table import Table
@@ -12,9 +13,22 @@ from ..planning import MAX_NODES, Plan
 from . import FramelibOption, JsonOption, bench_app, command, emit_json, framelib_paths, out
 from .parse_cmd import VocabularyOption, vocabulary_from
 
+if TYPE_CHECKING:
+    from ..maps import Map
+
 MapOption = typer.Option(None, "--map", help="The world: its places (openable ones closed unless open: true), "
                          "where its objects are, the robot's hand; also grounds the words in its classes. "
                          "A path or a shipped map's name.", show_default=False)
+
+
+def _load_world(map_name: str | None) -> Map | None:
+    """The ``--map`` world, or None."""
+    if map_name is None:
+        return None
+    from ..maps import load_map
+    from ..resources import map_path
+
+    return load_map(map_path(map_name))
 
 
 def show(plan: Plan) -> None:
@@ -53,12 +67,7 @@ def plan(
     from ..planning import plan_text
 
     library = load_library(framelib_paths(framelib))
-    world = None
-    if map_name is not None:
-        from ..maps import load_map
-        from ..resources import map_path
-
-        world = load_map(map_path(map_name))
+    world = _load_world(map_name)
     result = plan_text(text, library, holding=holding, done=tuple(done or ()), map=world,
                        vocabulary=vocabulary_from(vocabulary, map_name), max_nodes=max_nodes)
     if pddl is not None:
@@ -71,41 +80,6 @@ def plan(
         show(result)
 
 
-@dataclass(frozen=True)
-class Timing:
-    """One command's plan: commanded and total frames, search nodes expanded, median milliseconds
-    for parse + ground + plan, and for the plan alone."""
-
-    text: str
-    commanded: int
-    steps: int
-    nodes: int
-    ms: float
-    plan_ms: float
-    """Of ``ms``, the search alone (the rest is parsing and grounding)."""
-
-
-BENCH_COMMANDS = (
-    "stir the cup",
-    "heat the egg and put it in the fridge",
-    "slice the apple and put it in the fridge",
-    "put two apples in the fridge, put three eggs in the microwave and put two cups on the table",
-    "go to the kitchen, pick up the cup, bring it to me",
-    "find the cup, bring it to me, find the spoon, give it to Roger, open the fridge and put the apple in the fridge",
-    "pick up the cup, put it in the fridge, pick up the apple, put it in the microwave, pick up the spoon "
-    "and stir the cup",
-    "look at the clock under the lamp, turn off the lamp, slice the bread, heat it, put it on the table "
-    "and close the microwave",
-    "heat the egg, cool the apple, clean the plate, put the egg on the plate, put the apple in the microwave "
-    "and stir the cup",
-    "stir the cup, slice the apple, put the apple in the cup, heat the cup, put the cup in the fridge "
-    "and close the fridge",
-    "slice the apple, slice the bread, slice the tomato, put the apple in the fridge, put the bread in the fridge "
-    "and put the tomato in the fridge",
-)
-"""Commands of one to six clauses that ``seal bench plan`` times by default."""
-
-
 @command("plan", on=bench_app)
 def bench_plan(
     file: Path | None = typer.Option(None, "--file", "-f", help="Time these commands (one per line) instead of "
@@ -116,40 +90,22 @@ def bench_plan(
     as_json: bool = JsonOption,
 ) -> None:
     """Time parse + ground + plan for commands of up to six clauses; report the slowest."""
-    import statistics
-    import time
-
     from ..library import load_library
-    from ..planning import plan as search
-    from ..problem import problem_of_text
+    from ..planbench import BENCH_COMMANDS, time_plans
 
     library = load_library(framelib_paths(framelib))
-    world = None
-    if map_name is not None:
-        from ..maps import load_map
-        from ..resources import map_path
-
-        world = load_map(map_path(map_name))
-    vocabulary = vocabulary_from(None, map_name)
+    world = _load_world(map_name)
     if file is not None:
         from ..fileio import read_text
 
         texts = [line.strip() for line in read_text(file).splitlines() if line.strip()]
+        if not texts:
+            from ..errors import SealError, Where
+
+            raise SealError("no commands to time: the file has no non-blank line", Where(str(file)))
     else:
         texts = list(BENCH_COMMANDS)
-    problem_of_text(texts[0], library, map=world, vocabulary=vocabulary)      # warm up: grammar and lexicon
-    rows = []
-    for text in texts:
-        times, searches = [], []
-        for _ in range(repeat):
-            begin = time.perf_counter()
-            problem = problem_of_text(text, library, map=world, vocabulary=vocabulary)
-            middle = time.perf_counter()
-            result = search(problem.commanded, library, problem.state, text=text)
-            times.append(time.perf_counter() - begin)
-            searches.append(time.perf_counter() - middle)
-        rows.append(Timing(text, sum(s.commanded for s in result.steps), len(result.steps), result.expanded,
-                           round(1000 * statistics.median(times), 2), round(1000 * statistics.median(searches), 2)))
+    rows = time_plans(texts, library, map=world, vocabulary=vocabulary_from(None, map_name), repeat=repeat)
     slowest = max(rows, key=lambda r: r.ms)
     if as_json:
         emit_json({"map": world.name if world else None, "repeat": repeat,
