@@ -58,8 +58,8 @@ MOVABLE_RECEPTACLES = frozenset(class_key(c) for c in ("Bowl", "Box", "Cup", "Mu
 
 SENSOR = Sensor(range=1.5, fov=360.0)
 """The robot's eyes in ALFRED's rooms: it turns on the spot (turning costs no path) and recognises
-things within 3 m; closed receptacles hide what is inside. The scenes carry no wall geometry, so
-nothing else occludes."""
+things within 1.5 m (AI2-THOR's interaction distance); closed receptacles hide what is inside.
+The scenes carry no wall geometry, so nothing else occludes."""
 
 BELIEF_RANGE = 0.75
 """The sensor range the beliefs are told. Their particles live on free space: they are the poses
