@@ -341,7 +341,8 @@ _DESCRIBE = {"VERB": "a verb", "DET": "a noun phrase", "WORD": "a noun phrase", 
              "PREP": "a preposition", "SEP": "'and' or ','", "END": "the end of the command",
              "$END": "the end of the command", "POLITE": "a verb", "OF": "'of'", "PARTICLE": "a particle",
              "VBG_T": "a participle", "VBG_P": "a participle", "VBG_I": "a participle", "WH": "a question",
-             "BE": "'is' or 'are'", "THERE": "'there'", "HERE": "'here'", "AND_NP": "'and'"}
+             "BE": "'is' or 'are'", "THERE": "'there'", "HERE": "'here'", "AND_NP": "'and'",
+             "SAID": "what is said"}
 
 
 def _some_verbs(lexicon: Lexicon, near: str | None = None) -> str:

@@ -600,6 +600,28 @@ class Tagger:
             k += 1
         return k
 
+    def speech_end(self, j: int) -> int:
+        """Where reported speech that starts at ``j`` ends: at the end of the sentence, or where a
+        clause of the command's own follows ("tell him that, if it rains, the party is off | and
+        bring ..."); its own commas are inside it."""
+        words = self.words
+        k = j
+        while k < len(words):
+            low = words[k].lower
+            if low in END_MARKS and k > j:
+                break
+            if low in (",", ";", ":", "and", "then", "but") and k > j:
+                n = _match_phrase(words, k, SEPARATOR_WORDS) or 1
+                m = k + n
+                while m < len(words) and _match_phrase(words, m, SEPARATOR_WORDS):
+                    m += _match_phrase(words, m, SEPARATOR_WORDS)
+                if m < len(words) and (self.verb_at(m) is not None or self.verb_after(m)):
+                    break
+            k += 1
+        while k > j and words[k - 1].lower in (",", ";", ":"):
+            k -= 1                                           # a comma before the next clause is no speech
+        return k
+
     def lead_in(self, i: int) -> int:
         """Words before a clause's verb that are no verb and no politeness phrase; returns how many
         were tagged (0: none here). A comma after politeness ("First, open ..."), a sequencing word
@@ -876,8 +898,14 @@ class Tagger:
                 k -= 1
             if k >= 0 and self.out[k].tag in ("DET", "POSS", "NUM"):
                 return self._emit(i, 1, "WORD")                  # "the red one"
-        if low == "that" and self.speech and prev in ("WORD", "NAME", "PRON") and self.np_starts(i + 1):
-            return self._emit(i, 1, "WH")                        # "tell the guest *that* dinner is ready"
+        if low == "that" and self.speech and prev in ("WORD", "NAME", "PRON") and \
+                (self.np_starts(i + 1) or self._next(i) == ","):
+            self._emit(i, 1, "WH")                               # "tell the guest *that* dinner is ready":
+            start = i + 1                                        # what is said is any clause, kept whole
+            while start < len(words) and words[start].lower == ",":
+                start += 1                                       # "tell her that, if it rains, ..."
+            end = self.speech_end(start)
+            return start - i + (self._emit(start, end - start, "SAID") if end > start else 0)
         return 0
 
     def _function_word(self, i: int, in_np: bool) -> int:

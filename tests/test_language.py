@@ -715,3 +715,22 @@ def test_gapping_is_not_contents_or_a_coordinated_place(library: Library) -> Non
     assert [c.head for c in between.frames[0].elements["goal"].conjuncts] == ["bottle", "candle"]
     gapped = parse_command("Put the pan from the stove and the knife from the sink on the table", library)
     assert [f.frame for f in gapped.frames] == ["Place"]                # one goal for both: no gap
+
+
+@pytest.mark.parametrize(("text", "message"), [
+    ("go to the office and tell Hiroshi that the meeting starts at three", "the meeting starts at three"),
+    ("tell Anna that, if it rains, the party is off", "if it rains, the party is off"),
+    ("tell him that the cup is on the table, the spoon in the drawer",
+     "the cup is on the table, the spoon in the drawer"),
+    ("tell the guests that dinner is ready. Then bring me the cake", "dinner is ready"),
+    ("tell Hiroshi that the meeting starts at three, then come back", "the meeting starts at three"),
+])
+def test_reported_speech_after_that_is_said_whole(library: Library, text: str, message: str) -> None:
+    """What is said after "that" is any clause (a number at its end, commas, a condition): kept whole,
+    never parsed as a command; it ends where a clause of the command's own begins."""
+    parse = parse_command(text, library)
+    (tell,) = [f for f in parse.frames if f.frame == "Tell"]
+    assert tell.elements["message"].text == message and tell.elements["message"].kind == "message"
+    assert tell.elements["recipient"].kind == "person"
+    assert [f.frame for f in parse.frames][-1] == ("Bring" if "cake" in text else "Go" if "back" in text
+                                                   else "Tell")
