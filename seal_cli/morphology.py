@@ -65,12 +65,18 @@ def _lemmas(word: str, category: str) -> tuple[str, ...]:
     return ()
 
 
+_SUPPLETIVE = {"people": "person"}
+"""English's suppletive plural, which lemminflect's table lists only as a noun of its own ("peoples")."""
+
+
 @lru_cache(maxsize=65536)
 def noun_lemma(word: str) -> str:
-    """The singular of a noun (``"knives"`` → ``"knife"``, ``"people"`` stays); lower case."""
+    """The singular of a noun (``"knives"`` → ``"knife"``, ``"people"`` → ``"person"``); lower case."""
     lower = word.lower()
     if len(lower) <= 2 or not lower.isalpha():
         return lower
+    if lower in _SUPPLETIVE:
+        return _SUPPLETIVE[lower]
     lemmas = _lemmas(lower, "noun")
     if not lemmas:
         verb = _lemmas(lower, "verb")       # "bars": listed only as a verb form; its noun is "bar"

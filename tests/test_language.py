@@ -734,3 +734,13 @@ def test_reported_speech_after_that_is_said_whole(library: Library, text: str, m
     assert tell.elements["recipient"].kind == "person"
     assert [f.frame for f in parse.frames][-1] == ("Bring" if "cake" in text else "Go" if "back" in text
                                                    else "Tell")
+
+
+def test_people_is_the_plural_of_person(library: Library) -> None:
+    (count,) = parse_command("tell me how many people are in the living room", library).frames
+    theme = count.elements["theme"]
+    assert (count.frame, theme.text, theme.head, theme.kind, theme.plural) == ("Count", "people", "person", "person",
+                                                                               True)
+    assert count.elements["ground"].head == "room"
+    (count,) = parse_command("count the people in the kitchen", library, Vocabulary.of(["people", "kitchen"])).frames
+    assert (count.elements["theme"].head, count.elements["theme"].cls) == ("person", "people")
