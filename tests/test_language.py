@@ -744,3 +744,13 @@ def test_people_is_the_plural_of_person(library: Library) -> None:
     assert count.elements["ground"].head == "room"
     (count,) = parse_command("count the people in the kitchen", library, Vocabulary.of(["people", "kitchen"])).frames
     assert (count.elements["theme"].head, count.elements["theme"].cls) == ("person", "people")
+
+
+def test_the_librarys_lexical_units_find_out_how_many_and_wipe(library: Library) -> None:
+    parse = parse_command("find out how many apples are left in the fruit bowl", library)
+    assert [(f.frame, f.lexical_unit) for f in parse.frames] == [("Count", "find out how many")]
+    assert elements("find out how many apples are left in the fruit bowl", library) == {"theme": "apple",
+                                                                                          "ground": "bowl"}
+    assert elements("wipe the table with a damp cloth", library) == {"theme": "table", "instrument": "cloth"}
+    assert frames_of("wipe the table with a damp cloth", library) == ["Clean"]
+    assert frames_of("find the keys", library) == ["Find"]       # "find" alone is still Find
