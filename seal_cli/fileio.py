@@ -64,12 +64,17 @@ def atomic_output(path: str | Path) -> Iterator[Path]:
     folder = target.parent if str(target.parent) else Path(".")
     if not folder.is_dir():
         raise SealError(f"cannot write {target}: folder {folder} does not exist", Where(str(target)))
+    if target.is_dir():
+        raise SealError(f"cannot write {target}: it is a folder; give a file name", Where(str(target)))
     fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=target.suffix, dir=folder)
     os.close(fd)
     try:
         yield Path(tmp)
         os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes 0600; give the file the mode a plain open() would
-        os.replace(tmp, target)
+        try:
+            os.replace(tmp, target)
+        except OSError as exc:
+            raise SealError(f"cannot write {target}: {exc.strerror}", Where(str(target))) from None
     except BaseException:
         with contextlib.suppress(OSError):
             os.unlink(tmp)

@@ -60,3 +60,25 @@ def test_yaml_syntax_errors_carry_line_column_and_caret(tmp_path: Path) -> None:
         read_yaml(bad)
     assert caught.value.line == 3 and caught.value.file == str(bad)
     assert str(caught.value).splitlines()[-1].endswith("^")
+
+
+def test_a_folder_as_the_output_is_a_clear_error(tmp_path: Path) -> None:
+    with pytest.raises(SealError, match="is a folder"), atomic_output(tmp_path):
+        pass
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_localize_png_onto_a_folder_is_exit_1_and_leaves_nothing(tmp_path: Path) -> None:
+    from typer.testing import CliRunner
+
+    from seal_cli.cli import app
+
+    out = tmp_path / "out"
+    out.mkdir()
+    for option in ("--png", "--rrd"):
+        result = CliRunner().invoke(app, ["localize", "--map", "apartment", "--steps", "1", "--particles", "10",
+                                          option, str(out)])
+        assert result.exit_code == 1, result.output
+        assert "is a folder" in result.stderr and str(out) in result.stderr
+        assert "Traceback" not in result.stderr
+        assert list(out.iterdir()) == [] and sorted(p.name for p in tmp_path.iterdir()) == ["out"]
