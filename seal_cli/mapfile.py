@@ -190,6 +190,8 @@ class _Reader(NodeReader):
         if isinstance(value, str) and not getattr(node, "style", "x"):  # YAML 1.1: plain 1e-9 is a string
             with contextlib.suppress(ValueError):
                 value = float(value)
+        if isinstance(value, int) and not isinstance(value, bool) and abs(value) > 1e300:
+            value = math.inf  # too large for a float: math.isfinite would raise OverflowError
         if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value) \
                 or not ok(float(value)):
             shown = node.value if isinstance(node, yaml.ScalarNode) else _shape(node)

@@ -73,7 +73,7 @@ class _Reader:
     def number(self, node: yaml.Node, what: str) -> float:
         if isinstance(node, yaml.ScalarNode) and node.tag in ("tag:yaml.org,2002:int", "tag:yaml.org,2002:float"):
             value = yaml.safe_load(node.value)
-            if isinstance(value, int | float) and math.isfinite(value):
+            if isinstance(value, int | float) and abs(value) < 1e300 and math.isfinite(value):
                 return float(value)
         raise self.error(f"{what} must be a finite number, not {_shape(node)}", node)
 

@@ -175,6 +175,10 @@ BAD_FILES = {
               ":3:7: detection 1 of observation 1 has no 'at'"),
     "pose of three words": ("observations", "- pose: [1, 2, 3, 4]\n", ":1:9: observation 1's pose must be [x, y]"),
     "not a list": ("observations", "pose: [1, 2]\n", ":1:1: unknown key 'pose' in an observations file"),
+    "a number too large for a float": ("observations", "- pose: [1, " + "9" * 400 + "]\n",
+                                       ":1:13: observation 1's pose's y must be a finite number"),
+    "a pose too large for a float": ("trajectory", "poses: [[" + "9" * 400 + ", 1]]\n",
+                                     ":1:10: pose 1's x must be a finite number"),
 }
 
 

@@ -595,3 +595,14 @@ def test_room_index_is_exact(specs: list, resolution: float, seed: int) -> None:
     lattice = np.round(rng.uniform(-8, 8, (3000, 2)) / resolution) * resolution
     points = np.vstack([rng.uniform(-9, 9, (5000, 2)), vertices, on_edges, lattice])
     assert np.array_equal(m.room_index(points), m._room_index_exact(points))
+
+
+def test_a_number_too_large_for_a_float_is_a_located_error(tmp_path: Path) -> None:
+    text = APARTMENT.read_text().replace("resolution: 0.05", "resolution: " + "1" * 400)
+    bad = tmp_path / "huge.yaml"
+    bad.write_text(text)
+    (tmp_path / "apartment.pgm").write_bytes((APARTMENT.parent / "apartment.pgm").read_bytes())
+    result = CliRunner().invoke(app, ["map", str(bad), "--png", str(tmp_path / "x.png")])
+    assert result.exit_code == 1, result.output
+    assert f"{bad}:7:13: resolution must be a positive number" in result.stderr
+    assert "Traceback" not in result.stderr and not (tmp_path / "x.png").exists()
