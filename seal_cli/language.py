@@ -1045,6 +1045,10 @@ class Builder:
         elif pp.prep in _FROM:
             options = ["source"]
         elif pp.prep == "with":
+            if previous is not None and previous.kind == "person" and previous.pronoun is None and not (
+                    "instrument" in have and
+                    self.taxonomy.is_a(self.class_or_head(np), frame.element("instrument").type) is True):
+                return None              # "follow the woman *with the umbrella*": it describes her
             options = ["instrument"]
         elif pp.prep in _LOCATIVE:
             person_before = previous is not None and (previous.kind == "person" or (
@@ -1189,7 +1193,7 @@ class Builder:
                 host.relative = self.text[host.relative_start:pp.np.end]
                 continue
             host.end = max(host.end, pp.np.end)
-            if pp.prep == "with" and pp.np.kind != "person":
+            if pp.prep == "with" and pp.np.kind != "person" and (host.kind != "person" or host.pronoun):
                 if holds_nothing and host is roles.get(theme) and pp.np.kind == "thing" and not pp.np.pronoun:
                     self.hold(pp.np)     # "turn on the lamp with the remote": held while it is done
                 else:

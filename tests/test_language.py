@@ -754,3 +754,16 @@ def test_the_librarys_lexical_units_find_out_how_many_and_wipe(library: Library)
     assert elements("wipe the table with a damp cloth", library) == {"theme": "table", "instrument": "cloth"}
     assert frames_of("wipe the table with a damp cloth", library) == ["Clean"]
     assert frames_of("find the keys", library) == ["Find"]       # "find" alone is still Find
+
+
+def test_a_with_phrase_after_a_person_describes_the_person(library: Library) -> None:
+    """"the woman *with the umbrella*" is who is followed, not a thing picked up to follow her; after a thing,
+    or as the instrument of a frame that has one, "with" keeps its meaning."""
+    (follow,) = parse_command("follow the woman with the umbrella to the car", library).frames
+    assert (follow.frame, follow.elements["theme"].text, follow.elements["theme"].head,
+            follow.elements["goal"].head) == ("Follow", "the woman with the umbrella", "woman", "car")
+    (find,) = parse_command("find the girl with the red backpack in the hall", library).frames
+    assert (find.frame, find.elements["theme"].head, find.elements["ground"].head) == ("Find", "girl", "hall")
+    assert elements("stir the soup with the ladle", library) == {"theme": "soup", "instrument": "ladle"}
+    assert frames_of("turn on the lamp with the remote", library) == ["Pick", "ToggleOn"]
+    assert frames_of("follow him with the camera", library) == ["Pick", "Follow"]   # a pronoun takes no modifier
