@@ -418,6 +418,7 @@ class NP:
     relative: str | None = None                          # "that I was drinking from"
     relative_start: int = -1
     relative_end: int = -1
+    determined: bool = False                             # begins with a determiner ("the", "his", "two")
 
     @property
     def head_text(self) -> str:
@@ -594,9 +595,32 @@ class Builder:
             first = items.pop(0)
             if isinstance(first, NP):
                 objects.append(first)
+        self.second_object(verb, objects, items)
         message = self.message(items) or self.said(verb, objects, items)
         end = max([verb.end] + [self.end_of(x) for x in (*objects, *items)] + ([message.end] if message else []))
         return Clause(verb, objects, items, message, verb.start, end, held, sub, conditions)
+
+    def second_object(self, verb: Word, objects: list[NP], items: list[Any]) -> None:
+        """"give the man *in the gray suit* his coat": after a person and the phrases that describe them
+        (where they are, what they have), a noun phrase with a determiner is the second object of a verb
+        whose frames have someone to receive; the phrases join the person's noun phrase."""
+        if len(objects) != 1 or objects[0].kind != "person" or objects[0].pronoun is not None or \
+                not items or not isinstance(items[0], PP):
+            return
+        k = 0
+        while k < len(items) and isinstance(items[k], PP) and items[k].prep in _LOCATIVE + ("with",) and \
+                not items[k].lead:
+            k += 1
+        if k == len(items) or not isinstance(items[k], NP) or not items[k].determined or \
+                items[k].kind == "person" or \
+                not any("recipient" in self.taxonomy.roles(f) for f in self.library.evoked_by(str(verb.info))):
+            return
+        person = objects[0]
+        for pp in items[:k]:
+            person.inner.append(pp.np)
+            person.end = max(person.end, pp.np.end)
+        objects.append(items[k])
+        del items[:k + 1]
 
     def relatives(self, items: list[Any]) -> list[Any]:
         """A relative clause (``REL``) belongs to the noun before it: kept whole as its ``relative``,
@@ -717,7 +741,7 @@ class Builder:
             w = self.word(node.children[0])
             return NP(w.start, w.end, w, "person")
         # det_np / bare_np
-        np = NP(-1, -1, None)
+        np = NP(-1, -1, None, determined=kind == "det_np")
         for child in node.children:
             data = str(child.data) if isinstance(child, Tree) else None
             if data == "nominal":

@@ -767,3 +767,22 @@ def test_a_with_phrase_after_a_person_describes_the_person(library: Library) -> 
     assert elements("stir the soup with the ladle", library) == {"theme": "soup", "instrument": "ladle"}
     assert frames_of("turn on the lamp with the remote", library) == ["Pick", "ToggleOn"]
     assert frames_of("follow him with the camera", library) == ["Pick", "Follow"]   # a pronoun takes no modifier
+
+
+@pytest.mark.parametrize(("text", "frame", "theme", "recipient"), [
+    ("give the man in the gray suit his coat", "Give", "his coat", "the man in the gray suit"),
+    ("give the woman at the door Anna's umbrella", "Give", "Anna's umbrella", "the woman at the door"),
+    ("bring the girl with the red backpack a cup", "Bring", "a cup", "the girl with the red backpack"),
+])
+def test_a_second_object_after_what_describes_the_person(library: Library, text: str, frame: str, theme: str,
+                                                         recipient: str) -> None:
+    (evoked,) = parse_command(text, library).frames
+    assert (evoked.frame, evoked.elements["theme"].text, evoked.elements["recipient"].text) == (frame, theme,
+                                                                                                recipient)
+    assert evoked.elements["recipient"].kind == "person"
+
+
+def test_no_second_object_where_the_phrase_is_a_goal(library: Library) -> None:
+    (guide,) = parse_command("take the woman in the red dress to the kitchen", library).frames
+    assert (guide.frame, guide.elements["theme"].text, guide.elements["goal"].head) == (
+        "Guide", "the woman in the red dress", "kitchen")
