@@ -419,6 +419,7 @@ class NP:
     relative_start: int = -1
     relative_end: int = -1
     determined: bool = False                             # begins with a determiner ("the", "his", "two")
+    possessor: NP | None = None                          # "*the visitor*'s question", "*Jorge*'s question"
 
     @property
     def head_text(self) -> str:
@@ -758,6 +759,11 @@ class Builder:
                 np.start = w.start if np.start < 0 else np.start
                 if w.tag == "NUM":
                     np.quantity = int(w.info) if isinstance(w.info, int) else None
+                elif w.tag == "POSS" and isinstance(w.info, str):     # "the visitor's": whose it is
+                    name = w.info[:1].isupper() and any(c.islower() for c in w.info[1:])
+                    owner = Word(w.info, w.start, w.start + len(w.info), "NAME" if name else "WORD")
+                    person = name or self.taxonomy.is_a(noun_lemma(w.info), "person") is True
+                    np.possessor = NP(np.start, owner.end, owner, "person" if person else "thing")
         assert np.head is not None
         np.plural = is_plural(np.head.text) or (np.quantity or 0) > 1
         np.kind = "person" if self.taxonomy.is_a(np.head_text, "person") is True and \
@@ -1222,6 +1228,7 @@ class Builder:
                     self.hold(pp.np)     # "turn on the lamp with the remote": held while it is done
                 else:
                     host.contents.append(pp.np)
+        self.asker(frame, roles)
         # frames evoked by result words and contents, in the order of the words
         for role in frame.roles:
             np = roles.get(role)
@@ -1249,6 +1256,20 @@ class Builder:
                                   " ".join(w.text for w in clause.items if isinstance(w, Word) and w.info == "time")
                                   or None))
         self.carry_on(frame, roles, attached)
+
+    @staticmethod
+    def asker(frame: Frame, roles: dict[str, Any]) -> None:
+        """Whose question is answered gets the answer: "answer *Jorge*'s question", "answer the question *of
+        the girl in the kitchen*" (the possessor, or the person of an "of" phrase with what describes them,
+        is the recipient when none is said)."""
+        first = frame.elements[0] if frame.elements else None
+        theme = roles.get(first.role) if first is not None and first.type == "question" else None
+        if not isinstance(theme, NP) or "recipient" not in frame.roles or "recipient" in roles:
+            return
+        if theme.possessor is not None and theme.possessor.kind == "person":
+            roles["recipient"] = theme.possessor
+        elif theme.of is not None and theme.of.kind == "person" and theme.of.pronoun is None:
+            roles["recipient"] = replace(theme.of, end=max(theme.of.end, theme.end))
 
     def carry_on(self, frame: Frame, roles: Mapping[str, Any], attached: list[tuple[NP, PP]]) -> None:
         """"Put an apple in a pan *on the table*": a container the theme goes into, said to be in

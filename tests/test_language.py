@@ -786,3 +786,24 @@ def test_no_second_object_where_the_phrase_is_a_goal(library: Library) -> None:
     (guide,) = parse_command("take the woman in the red dress to the kitchen", library).frames
     assert (guide.frame, guide.elements["theme"].text, guide.elements["goal"].head) == (
         "Guide", "the woman in the red dress", "kitchen")
+
+
+@pytest.mark.parametrize(("text", "recipient", "head"), [
+    ("answer Jorge's question", "Jorge", "Jorge"),
+    ("answer the visitor's question", "the visitor", "visitor"),
+    ("answer my mother's question", "my mother", "mother"),
+    ("answer the question of the girl in the kitchen", "the girl in the kitchen", "girl"),
+])
+def test_whose_question_is_answered_receives_the_answer(library: Library, text: str, recipient: str,
+                                                         head: str) -> None:
+    (answer,) = parse_command(text, library).frames
+    assert (answer.frame, answer.elements["theme"].head) == ("Answer", "question")
+    got = answer.elements["recipient"]
+    assert (got.text, got.head, got.kind) == (recipient, head, "person")
+
+
+def test_a_possessor_is_no_recipient_elsewhere(library: Library) -> None:
+    assert "recipient" not in parse_command("answer a question", library).frames[0].elements
+    assert "recipient" not in parse_command("answer the quiz's question", library).frames[0].elements
+    (bring,) = parse_command("bring me Anna's coat", library).frames
+    assert (bring.elements["theme"].text, bring.elements["recipient"].text) == ("Anna's coat", "me")
