@@ -460,6 +460,8 @@ class Clause:
     result: list[PP] = field(default_factory=list)   # "cut the cake *into slices*"
 
 
+LIGHT_VERBS = ("give",)
+"""Verbs that lend their clause to an action noun: "give the sauce a stir" is stirring it."""
 _TO = ("to", "into", "onto")
 _FROM = ("from", "out of", "off")
 _LOCATIVE = ("in", "on", "at", "near", "under", "by", "inside", "behind", "above", "over", "in front of",
@@ -869,7 +871,7 @@ class Builder:
 
     # -- one clause → frames -----------------------------------------------------------------
     def clause(self, clause: Clause) -> None:
-        unit = str(clause.verb.info)
+        unit = self.light_verb(clause) or str(clause.verb.info)
         frames = self.library.evoked_by(unit)
         used = [x for x in clause.items if isinstance(x, PP) and x.lead and x.prep == "with"]
         if used and not any("instrument" in self.taxonomy.roles(f) for f in frames):
@@ -904,6 +906,24 @@ class Builder:
         _, frame, roles, attached = best
         self.first_into(frame, roles, attached)
         self.emit(frame, unit, clause, roles, attached)
+
+    def light_verb(self, clause: Clause) -> str | None:
+        """"give the sauce *a quick stir*": "give" with a thing and "a" (adjectives) and a noun that is a lexical
+        unit of the library is that unit's frame, done to the thing (the construction of "take a look at").
+        The lexical unit, or None. A person keeps "give" ("give me a hand")."""
+        if str(clause.verb.info) not in LIGHT_VERBS or len(clause.objects) != 2:
+            return None
+        thing, act = clause.objects
+        if thing.kind == "person" or act.head is None or act.head.tag != "WORD" or act.of is not None or \
+                act.plural or act.quantity is not None or act.relative or \
+                self.text[act.start:act.end].split(None, 1)[0].lower() not in ("a", "an", "another"):
+            return None
+        unit = act.head.lower
+        frames = self.library.evoked_by(unit)
+        if not frames or not all(f.elements and not self.is_person_type(f.elements[0].type) for f in frames):
+            return None
+        clause.objects = [thing]
+        return unit
 
     def makes_state(self, frame: Frame) -> bool:
         """Whether the frame's result is a state of its first element and it puts it nowhere (Slice:

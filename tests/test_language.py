@@ -807,3 +807,17 @@ def test_a_possessor_is_no_recipient_elsewhere(library: Library) -> None:
     assert "recipient" not in parse_command("answer the quiz's question", library).frames[0].elements
     (bring,) = parse_command("bring me Anna's coat", library).frames
     assert (bring.elements["theme"].text, bring.elements["recipient"].text) == ("Anna's coat", "me")
+
+
+@pytest.mark.parametrize(("text", "frame", "unit", "expected"), [
+    ("give the sauce a quick stir", "Stir", "stir", {"theme": "sauce"}),
+    ("give the plates a good rinse in the sink", "Clean", "rinse", {"theme": "plate", "instrument": "sink"}),
+    ("give the table a wipe", "Clean", "wipe", {"theme": "table"}),
+    ("give me a hand", "Give", "give", {"theme": "hand", "recipient": "me"}),       # a person keeps "give"
+    ("give the man a cup", "Give", "give", {"theme": "cup", "recipient": "man"}),
+])
+def test_give_a_thing_an_action_noun_is_that_action(library: Library, text: str, frame: str, unit: str,
+                                                    expected: dict[str, str]) -> None:
+    (evoked,) = parse_command(text, library).frames
+    assert (evoked.frame, evoked.lexical_unit, evoked.span) == (frame, unit, (0, len(text)))
+    assert elements(text, library) == expected
