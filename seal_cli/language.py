@@ -420,6 +420,7 @@ class NP:
     relative_end: int = -1
     determined: bool = False                             # begins with a determiner ("the", "his", "two")
     possessor: NP | None = None                          # "*the visitor*'s question", "*Jorge*'s question"
+    there: bool = False                                  # a bare "there" ending its clause: a place said before
 
     @property
     def head_text(self) -> str:
@@ -460,6 +461,8 @@ class Clause:
     result: list[PP] = field(default_factory=list)   # "cut the cake *into slices*"
 
 
+_PLACES = ("goal", "ground", "source")
+"""The roles that say where (FrameNet's names)."""
 LIGHT_VERBS = ("give",)
 """Verbs that lend their clause to an action noun: "give the sauce a stir" is stirring it."""
 _TO = ("to", "into", "onto")
@@ -483,6 +486,7 @@ class Builder:
         self.frames: list[Evoked] = []
         self.kinds: list[dict[str, str]] = []          # kind of each frame's elements, for pronouns
         self.cut: set[int] = set()                     # noun phrases of pieces already seen to (cut_for)
+        self.clause_frames = 0                         # frames of the clauses before the one being built
 
     # -- the tree ------------------------------------------------------------------------------
     def word(self, token: Any) -> Word:
@@ -711,7 +715,11 @@ class Builder:
         if not isinstance(node, Tree):
             word = self.word(node)
             if word.tag == "HERE":              # "come here": a place said by pointing
-                return PP("at", NP(word.start, word.end, word, "place"), word.start)
+                nxt = node.start_pos + 1        # a bare "there" ending its clause ("... and count the bikes there")
+                while nxt < len(self.words) and self.words[nxt].info == "time":
+                    nxt += 1                     # "... there too", "... there right away"
+                there = word.lower == "there" and (nxt == len(self.words) or self.words[nxt].tag in ("SEP", "END"))
+                return PP("at", NP(word.start, word.end, word, "place", there=there), word.start)
             return word
         data = str(node.data)           # a lark Token: compare it as a plain str (faster)
         if data == "pp":
@@ -871,6 +879,7 @@ class Builder:
 
     # -- one clause → frames -----------------------------------------------------------------
     def clause(self, clause: Clause) -> None:
+        self.clause_frames = len(self.frames)
         unit = self.light_verb(clause) or str(clause.verb.info)
         frames = self.library.evoked_by(unit)
         used = [x for x in clause.items if isinstance(x, PP) and x.lead and x.prep == "with"]
@@ -1463,6 +1472,12 @@ class Builder:
             return Phrase(self.text[np.start:np.end], np.head_text, None,
                           "thing" if np.kind == "pronoun" and np.pronoun == "it" else
                           "person" if np.kind == "pronoun" else np.kind, span=(np.start, np.end))
+        if np.there:
+            place = self.place_before()
+            if place is not None:                   # "go to the garage and count the bikes there"
+                root = self.frames[place[0]].elements[place[1]]
+                return Phrase(self.text[np.start:np.end], root.head, root.cls, root.kind, place, root.quantity,
+                              root.plural, span=(np.start, np.end))
         text = self.text[np.start:np.end]
         cls = None
         if self.vocabulary is not None and np.kind != "message":
@@ -1479,6 +1494,21 @@ class Builder:
         return Phrase(text, np.head_text if np.kind != "message" else text, cls, np.kind, None, np.quantity,
                       np.plural and np.kind != "message", modifiers, span=(np.start, np.end), conjuncts=conjuncts,
                       relative=np.relative)
+
+    def place_before(self) -> tuple[int, str] | None:
+        """The place named last in an earlier clause (a goal, ground or source said, not a default, and no
+        person; through a "there" or pronoun that stood for one), as (frame index, element); None."""
+        best: tuple[int, tuple[int, str]] | None = None
+        for index in range(self.clause_frames):
+            for role, phrase in self.frames[index].elements.items():
+                if phrase.default or phrase.span is None or role not in _PLACES:
+                    continue
+                target = phrase.refers_to or (index, role)
+                if self.frames[target[0]].elements[target[1]].kind != "thing":
+                    continue                                  # a person, "here": no place named
+                if best is None or phrase.span[0] >= best[0]:
+                    best = (phrase.span[0], target)
+        return None if best is None else best[1]
 
     def ground_name(self, name: str) -> str | None:
         if self.vocabulary is None:

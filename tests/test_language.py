@@ -821,3 +821,21 @@ def test_give_a_thing_an_action_noun_is_that_action(library: Library, text: str,
     (evoked,) = parse_command(text, library).frames
     assert (evoked.frame, evoked.lexical_unit, evoked.span) == (frame, unit, (0, len(text)))
     assert elements(text, library) == expected
+
+
+def test_a_bare_there_ending_a_clause_is_the_place_named_before(library: Library) -> None:
+    parse = parse_command("navigate to the garage and count the bikes there", library)
+    assert [f.frame for f in parse.frames] == ["Go", "Count"]
+    ground = parse.frames[1].elements["ground"]
+    assert (ground.text, ground.head, ground.refers_to) == ("there", "garage", (0, "goal"))
+    parse = parse_command("take the cup from the kitchen to the table and count the plates there", library)
+    assert parse.frames[1].elements["ground"].refers_to == (0, "goal")          # the place named last
+    parse = parse_command("go to the kitchen, then put the cup there too", library)
+    goal = parse.frames[1].elements["goal"]
+    assert (parse.frames[1].frame, goal.text, goal.head, goal.refers_to) == ("Place", "there", "kitchen", (0, "goal"))
+    parse = parse_command("bring the cup to Anna and put the plate there", library)
+    assert parse.frames[1].elements["goal"].refers_to is None                    # a person is no place
+    alone = parse_command("put it there", library).frames[0].elements["goal"]
+    assert (alone.text, alone.kind, alone.refers_to) == ("there", "place", None)   # no place before: pointing
+    (count,) = parse_command("how many cups are there on the table", library).frames
+    assert count.elements["ground"].head == "table"                              # existential "there"
