@@ -63,6 +63,9 @@ PLACE_KEYS = ("name", "class", "at", "openable", "open", "reach")
 OBJECT_KEYS = ("class", "at", "in")
 ROBOT_KEYS = ("pose", "holding")
 SENSOR_KEYS = ("range", "fov", "p_detect", "sigma", "noise")
+MAX_METRES = 1000.0
+"""The largest sensor range and place reach a map may give: beyond it squared distances overflow
+(1e200 m) or the search's lattices cannot be built, and no robot acts a kilometre away."""
 MODES = ("trinary", "scale", "raw")
 
 T = TypeVar("T")
@@ -379,7 +382,8 @@ class _Reader(NodeReader):
             at = self.xy(fields["at"], f"place {name}: at") if "at" in fields else None
             openable = self.boolean(fields["openable"], "openable") if "openable" in fields else False
             is_open = self.boolean(fields["open"], "open") if "open" in fields else None
-            reach = self.number(fields["reach"], "reach", lambda v: v > 0, "a positive number of metres") \
+            reach = self.number(fields["reach"], "reach", lambda v: 0 < v <= MAX_METRES,
+                                f"a positive number of metres, at most {MAX_METRES:g}") \
                 if "reach" in fields else 1.0
             bad = (openable is None or reach is None or ("open" in fields and is_open is None))
             place = None
@@ -454,7 +458,7 @@ class _Reader(NodeReader):
     def sensor(self, node: yaml.Node) -> Sensor | None:
         fields = {key: value for key, _, value in self.pairs_at(node, "sensor", ("sensor",), SENSOR_KEYS)}
         checks: dict[str, tuple[Callable[[float], bool], str]] = {
-            "range": (lambda v: v > 0, "a positive number of metres"),
+            "range": (lambda v: 0 < v <= MAX_METRES, f"a positive number of metres, at most {MAX_METRES:g}"),
             "fov": (lambda v: 0 < v <= 360, "degrees in (0, 360]"),
             "p_detect": (lambda v: 0 <= v <= 1, "a probability in [0, 1]"),
             "sigma": (lambda v: v > 0, "a positive number of metres"),

@@ -606,3 +606,22 @@ def test_a_number_too_large_for_a_float_is_a_located_error(tmp_path: Path) -> No
     assert result.exit_code == 1, result.output
     assert f"{bad}:7:13: resolution must be a positive number" in result.stderr
     assert "Traceback" not in result.stderr and not (tmp_path / "x.png").exists()
+
+
+@pytest.mark.parametrize(("old", "new", "where", "message"), [
+    ("sensor: {range: 5.0, fov: 360}", "sensor: {range: 1e300, fov: 360}", ":45:17:", "sensor range must be"),
+    ("at: [8.5, -4.0]}", "at: [8.5, -4.0], reach: 1.0e+300}", ":24:63:", "reach must be"),
+])
+def test_a_range_or_reach_beyond_any_building_is_refused(tmp_path: Path, old: str, new: str, where: str,
+                                                         message: str) -> None:
+    text = APARTMENT.read_text()
+    assert old in text
+    bad = tmp_path / "far.yaml"
+    bad.write_text(text.replace(old, new, 1))
+    (tmp_path / "apartment.pgm").write_bytes((APARTMENT.parent / "apartment.pgm").read_bytes())
+    for args in (["map", str(bad)], ["localize", "--map", str(bad), "--steps", "1", "--particles", "10",
+                                     "--png", str(tmp_path / "x.png")]):
+        result = CliRunner().invoke(app, args)
+        assert result.exit_code == 1, result.output
+        assert f"{bad}{where} {message}" in result.stderr and "at most 1000" in result.stderr
+        assert "Traceback" not in result.stderr and not (tmp_path / "x.png").exists()
