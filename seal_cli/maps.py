@@ -45,7 +45,7 @@ from .geometry import (
     polygon_area,
     self_intersections,
 )
-from .taxonomy import class_key
+from .taxonomy import check_class_name, class_key
 
 if TYPE_CHECKING:
     from .priors import Prior
@@ -205,7 +205,7 @@ class ObjectTruth:
     def __post_init__(self) -> None:
         if not isinstance(self.cls, str) or not class_key(self.cls):
             raise SealError(f"an object needs a class, not {self.cls!r}", self.where)
-        object.__setattr__(self, "cls", class_key(self.cls))
+        object.__setattr__(self, "cls", check_class_name(self.cls, "object class", self.where))
         object.__setattr__(self, "at", _xy(self.at, f"object {self.cls}: at", self.where))
 
 
@@ -223,7 +223,9 @@ class Robot:
 
     def __post_init__(self) -> None:
         if self.holding is not None:
-            object.__setattr__(self, "holding", class_key(str(self.holding)) or None)
+            held = str(self.holding)
+            object.__setattr__(self, "holding", check_class_name(held, "holding", self.where) if class_key(held)
+                               else None)
         if self.pose is None:
             return
         try:

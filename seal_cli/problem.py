@@ -33,7 +33,7 @@ from .errors import SealError, Where
 from .frames import Binding, Fact, Frame
 from .library import Library
 from .state import State, robot_facts
-from .taxonomy import Taxonomy, class_key, class_words
+from .taxonomy import Taxonomy, check_class_name, class_key, class_words
 
 OPENABLE = "openable"
 
@@ -133,6 +133,8 @@ class Things:
 
     def state(self, holding: str | None = None) -> State:
         """The world's facts and the robot's hand; ``holding`` (a class) overrides the map's robot."""
+        if holding:
+            check_class_name(holding, "holding")
         held = holding or self.robot_holding
         name = self.name(held) if held else None
         facts = {f for f in self.facts if not (f.predicate == "in" and f.args[0] == name)}

@@ -21,15 +21,26 @@ from functools import cached_property, lru_cache
 
 from .errors import SealError, Where
 
-__all__ = ["Category", "Synonyms", "Taxonomy", "class_key", "class_words"]
+__all__ = ["Category", "Synonyms", "Taxonomy", "check_class_name", "class_key", "class_words"]
 
 _NAME = re.compile(r"^[a-z0-9]+(?:_[a-z0-9]+)*$")
+_CLASS = re.compile(r"[a-z_][a-z0-9_]*\Z")
 _HUMP = re.compile(r"(?<=[a-z0-9])(?=[A-Z])|(?<=[A-Z])(?=[A-Z][a-z])")
 
 
 def class_words(name: str) -> tuple[str, ...]:
     """The lower-case words of a class name: ``"SinkBasin"`` and ``"sink_basin"`` give ``("sink", "basin")``."""
     return tuple(w for w in re.split(r"[\s_\-]+", _HUMP.sub(" ", name).lower()) if w)
+
+
+def check_class_name(name: str, what: str, where: Where | None = None) -> str:
+    """``class_key(name)``, or a SealError when that is no name a plan can use (letters, digits
+    and '_', not starting with a digit): ``what`` says which value it is."""
+    key = class_key(name)
+    if not _CLASS.match(key):
+        raise SealError(f"{what} {name!r} is not a class name (letters, digits, '_' or spaces, not starting "
+                        "with a digit)", where)
+    return key
 
 
 @lru_cache(maxsize=8192)

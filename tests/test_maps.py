@@ -625,3 +625,21 @@ def test_a_range_or_reach_beyond_any_building_is_refused(tmp_path: Path, old: st
         assert result.exit_code == 1, result.output
         assert f"{bad}{where} {message}" in result.stderr and "at most 1000" in result.stderr
         assert "Traceback" not in result.stderr and not (tmp_path / "x.png").exists()
+
+
+@pytest.mark.parametrize(("old", "new", "where", "message"), [
+    ("holding: null}", "holding: 7}", ":44:8:", "holding '7' is not a class name"),
+    ("{class: apple, in: fridge_1}", "{class: '@@', in: fridge_1}", ":43:5:", "object class '@@' is not a class name"),
+])
+def test_a_class_a_plan_cannot_name_is_refused_where_it_is(tmp_path: Path, old: str, new: str, where: str,
+                                                           message: str) -> None:
+    text = APARTMENT.read_text()
+    assert old in text
+    bad = tmp_path / "odd.yaml"
+    bad.write_text(text.replace(old, new, 1))
+    (tmp_path / "apartment.pgm").write_bytes((APARTMENT.parent / "apartment.pgm").read_bytes())
+    for args in (["map", str(bad)], ["plan", "--map", str(bad), "bring the apple to the bed"]):
+        result = CliRunner().invoke(app, args)
+        assert result.exit_code == 1, result.output
+        assert f"{bad}{where} {message}" in result.stderr
+        assert "Traceback" not in result.stderr

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from seal_cli.grounding import Vocabulary
@@ -43,3 +45,19 @@ def test_a_pronoun_for_a_coordination_is_all_of_it(library: Library) -> None:
     problem = problem_of_text("pick up the apple and the pear and put them in the fridge", library, vocabulary=VOCAB)
     assert [str(b) for b in problem.commanded if b.frame.name == "Place"] == [
         "Place(theme=apple, goal=fridge)", "Place(theme=pear, goal=fridge)"]
+
+
+@pytest.mark.parametrize("command", [["plan", "stir the cup"], ["localize", "--map", "apartment", "--steps", "1",
+                                                                 "--task", "stir the cup"],
+                                     ["run", "--map", "apartment", "stir the cup"]])
+def test_holding_what_no_class_is_called_names_the_option(tmp_path: Path, command: list[str]) -> None:
+    from typer.testing import CliRunner
+
+    from seal_cli.cli import app
+
+    png = tmp_path / "x.png"
+    extra = ["--png", str(png)] if command[0] != "plan" else ["--pddl", str(tmp_path)]
+    result = CliRunner().invoke(app, [*command, "--holding", "@@", *extra])
+    assert result.exit_code == 1, result.output
+    assert "holding '@@' is not a class name" in result.stderr and "Traceback" not in result.stderr
+    assert list(tmp_path.iterdir()) == []
