@@ -36,6 +36,9 @@ from .state import State, robot_facts
 from .taxonomy import Taxonomy, check_class_name, class_key, class_words
 
 OPENABLE = "openable"
+OBJECT = "object"
+"""The category of what a robot handles; a map's rooms and places (fixed furniture and receptacles,
+as the SPEC says) are never one."""
 
 if TYPE_CHECKING:
     from .language import Parse, Phrase
@@ -70,6 +73,8 @@ class Things:
         self.taxonomy = taxonomy
         self.classes: dict[str, str] = {}
         self.closable: set[str] = set()
+        self.fixed: set[str] = set()
+        """The map's rooms and places: they stay where they are."""
         self.facts: set[Fact] = set()
         self.robot_holding: str | None = None
         if map is not None:
@@ -78,9 +83,11 @@ class Things:
     def _read_map(self, map: Map) -> None:
         for room in map.rooms:
             self.classes.setdefault(class_key(room.name), class_key(room.name))
+            self.fixed.add(class_key(room.name))
         for place in map.places:
             name = class_key(place.name)
             self.classes[name] = place.cls
+            self.fixed.add(name)
             if place.openable:
                 self.closable.add(name)
                 if place.open:
@@ -193,12 +200,17 @@ def _count(phrase: Phrase, value: str) -> int:
 
 def _check_types(frame: Frame, values: Mapping[str, tuple[str, ...]], phrases: Mapping[str, Phrase],
                  things: Things, text: str) -> None:
-    """A value known not to belong to its element's category is an error ("open the table")."""
+    """A value known not to belong to its element's category is an error ("open the table"); so is
+    a map's room or place where the element is an object the robot handles ("pick up the sofa")."""
     for role, names in values.items():
         element = frame.element(role)
         for name in names:
             if element.type == OPENABLE and name in things.closable:
                 continue
+            if element.type == OBJECT and name in things.fixed:
+                phrase = phrases.get(role)
+                raise _located(f"{frame.name} needs its {role} to be an object the robot can handle, and "
+                               f"{_said(phrase, name)} is fixed in the map", phrase, text)
             if things.taxonomy.is_a(things.class_of(name), element.type) is False:
                 phrase = phrases.get(role)
                 raise _located(f"{frame.name} needs its {role} to be {element.type}, and "

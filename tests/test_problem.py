@@ -61,3 +61,25 @@ def test_holding_what_no_class_is_called_names_the_option(tmp_path: Path, comman
     assert result.exit_code == 1, result.output
     assert "holding '@@' is not a class name" in result.stderr and "Traceback" not in result.stderr
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_maps_rooms_and_places_are_not_objects_to_handle(library: Library) -> None:
+    """The map's places are fixed furniture and receptacles: "pick up the sofa" is refused, with a
+    caret under the phrase; objects on them and the places as goals are fine."""
+    from seal_cli.errors import SealError
+    from seal_cli.maps import load_map
+    from seal_cli.resources import map_path
+
+    apartment = load_map(map_path("apartment"))
+    for text, frame, said in [("pick up the dining table", "Pick", "'the dining table' (dining_table_1)"),
+                              ("clean the sofa", "Clean", "'the sofa' (sofa_1)"),
+                              ("bring the kitchen to me", "Bring", "'the kitchen' (kitchen)")]:
+        with pytest.raises(SealError, match=f"{frame} needs its theme to be an object the robot can handle") \
+                as caught:
+            problem_of_text(text, library, map=apartment)
+        assert said in str(caught.value) and "is fixed in the map" in str(caught.value)
+        assert caught.value.column == text.index("the") + 1
+    problem = problem_of_text("bring the cup to the sofa", library, map=apartment)
+    assert [str(b) for b in problem.commanded] == ["Bring(theme=cup, goal=sofa_1)"]
+    assert [str(b) for b in problem_of_text("clean the table", library).commanded] == [
+        "Clean(theme=table, instrument=sink)"]          # without a map, nothing says the table is fixed
