@@ -1197,6 +1197,9 @@ class Builder:
                 kind = phrase.kind
                 if kind in ("message", "place"):
                     continue
+                if kind == "thing" and np.pronoun in ("him", "her", "he", "she") and \
+                        self.person_by_role(target, phrase):
+                    kind = "person"                  # "meet the plumber ... and take him": a person there
                 if np.pronoun in ("it", "one", "this", "that") and kind == "person":
                     continue
                 if np.pronoun in ("him", "her") and kind != "person":
@@ -1219,6 +1222,13 @@ class Builder:
                 if best is None or score > best[0]:
                     best = (score, target[0], target[1], kind)
         return None if best is None else best[1:]
+
+    def person_by_role(self, target: tuple[int, str], phrase: Phrase) -> bool:
+        """Whether a noun the library does not know as a person is one by the element it fills: an
+        element typed person ("meet *the plumber*", Meet's theme), unless its class is known to be no
+        person."""
+        type_ = self.library.frame(self.frames[target[0]].frame).element(target[1]).type
+        return self.is_person_type(type_) and self.taxonomy.is_a(phrase.cls or phrase.head, "person") is not False
 
     def carried(self, frame: Frame | None, role: str | None) -> tuple[int, str, str] | None:
         """After "put the pen in a cup", the object of "and move it (them) to the desk" is the cup
@@ -1467,7 +1477,7 @@ class Builder:
                 target = self.frames[index].elements[name]
                 ref = target.refers_to or (index, name)
                 root = self.frames[ref[0]].elements[ref[1]]
-                return Phrase(self.text[np.start:np.end], root.head, root.cls, root.kind, ref, root.quantity,
+                return Phrase(self.text[np.start:np.end], root.head, root.cls, found[2], ref, root.quantity,
                               root.plural, span=(np.start, np.end))
             return Phrase(self.text[np.start:np.end], np.head_text, None,
                           "thing" if np.kind == "pronoun" and np.pronoun == "it" else

@@ -839,3 +839,18 @@ def test_a_bare_there_ending_a_clause_is_the_place_named_before(library: Library
     assert (alone.text, alone.kind, alone.refers_to) == ("there", "place", None)   # no place before: pointing
     (count,) = parse_command("how many cups are there on the table", library).frames
     assert count.elements["ground"].head == "table"                              # existential "there"
+
+
+def test_him_or_her_refers_to_a_noun_that_filled_an_element_typed_person(library: Library) -> None:
+    parse = parse_command("meet the courier at the door and give him the box", library)
+    assert [f.frame for f in parse.frames] == ["Meet", "Give"]
+    recipient = parse.frames[1].elements["recipient"]
+    assert (recipient.text, recipient.head, recipient.kind, recipient.refers_to) == \
+        ("him", "courier", "person", (0, "theme"))
+    parse = parse_command("greet the electrician in the hall and guide her to the attic", library)
+    theme = parse.frames[1].elements["theme"]
+    assert (parse.frames[1].frame, theme.head, theme.refers_to) == ("Guide", "electrician", (0, "theme"))
+    parse = parse_command("find the lamp in the kitchen and follow him", library)     # a lamp fills no person
+    assert parse.frames[1].elements["theme"].refers_to is None
+    parse = parse_command("pick up the vase and take it to the hall", library)       # "it" unchanged
+    assert parse.frames[1].elements["theme"].refers_to == (0, "theme")
