@@ -109,6 +109,19 @@ POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "wi
                     "would you be so kind as to", "would you be kind enough to", "do me a favor and",
                     "do me a favour and", "don't forget to", "do not forget to", "help me", "help me to", "help us",
                     "make sure you", "see that you", "hi", "hello", "excuse me"])
+POLITE_FORMULAE = frozenset([
+    "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
+    "when you have a moment", "when you have a minute", "when you have a second", "when you have time",
+    "when you have a sec", "when you can", "whenever you can", "whenever you get a chance",
+    "whenever you have a moment", "whenever you have time", "as soon as you can", "if you get a chance",
+    "if you have a chance", "if you have a moment", "if you have a minute", "if you have a second",
+    "if you have time", "if you can", "if possible", "if you please", "if you would", "if you don't mind",
+    "if you do not mind", "if it's not too much trouble", "if it is not too much trouble", "if you wouldn't mind",
+    "if you would not mind", "at your convenience", "when convenient", "when it's convenient", "no rush",
+    "no hurry"])
+"""Politeness said as a clause of its own ("*when you get a chance*, could you ..."; "... *if you don't
+mind*"): the robot's time is asked for, not a condition or a task. Only a whole clause: "if you can"
+followed by more of its clause ("if you can reach the shelf, ...") is a condition."""
 END_MARKS = frozenset(".!?")
 HERE_WORDS = frozenset(["here", "there", "over here", "over there", "upstairs", "downstairs", "indoors", "outdoors",
                         "nearby", "elsewhere", "everywhere", "somewhere", "anywhere"])
@@ -138,7 +151,7 @@ _QUANTIFIERS = frozenset(["one", "two", "three", "four", "both", "all", "some", 
                           "either", "neither", "several", "many", "few"])
 
 _PHRASES: dict[str, tuple[str, ...]] = {}
-for _table in (PREPOSITIONS, POLITE, SEPARATOR_WORDS, NUMBERS, HERE_WORDS, TIME_WORDS, SUBORDINATORS):
+for _table in (PREPOSITIONS, POLITE, POLITE_FORMULAE, SEPARATOR_WORDS, NUMBERS, HERE_WORDS, TIME_WORDS, SUBORDINATORS):
     for _phrase in _table:
         words = tuple(_phrase.split())
         if len(words) > 1:
@@ -147,6 +160,7 @@ for _table in (PREPOSITIONS, POLITE, SEPARATOR_WORDS, NUMBERS, HERE_WORDS, TIME_
 _LONGEST_FUNCTION_PHRASE = max(len(p.split()) for ps in _PHRASES.values() for p in ps)
 
 _SUB_FIRST = frozenset(p.split()[0] for p in SUBORDINATORS)
+_FORMULA_FIRST = frozenset(p.split()[0] for p in POLITE_FORMULAE)
 _TIME_FIRST = frozenset(p.split()[0] for p in TIME_WORDS)
 _FUNCTION_SPECIAL = _TIME_FIRST | {"for", "every", "each", "one", "ones", "that"}
 """First words of what :meth:`Tagger._special_function_word` tags (checked before calling it)."""
@@ -416,6 +430,21 @@ class Tagger:
             return False
         return self.verb_at(i) is not None or self.use_at(i)
 
+    def formula(self, i: int) -> int:
+        """How many words a politeness formula said as a whole clause takes at ``i`` (0: none): it
+        ends the command or is followed by punctuation, "and"/"then" or more politeness."""
+        words = self.words
+        if words[i].lower not in _FORMULA_FIRST:
+            return 0
+        n = _match_phrase(words, i, POLITE_FORMULAE)
+        if not n or i + n == len(words):
+            return n
+        nxt = words[i + n].lower
+        if nxt in END_MARKS or nxt in (",", ";", ":", "and", "then"):
+            return n
+        m = _match_phrase(words, i + n, POLITE)
+        return n if m and nxt != "to" and self.verb_after(i + n) else 0
+
     def use_at(self, i: int) -> bool:
         """Whether "use X to V ..." starts at ``i`` ("use a knife to slice the apple"): X is what V
         is done with, so "use" is tagged as the preposition "with" before the clause of V."""
@@ -473,6 +502,15 @@ class Tagger:
                 self.out.append(w)
                 i += 1
                 continue
+            if low in _FORMULA_FIRST:
+                n = self.formula(i)
+                if n and expect_verb:
+                    self.out.append(_merge(words, i, n, "POLITE"))    # "When you get a chance, could you ..."
+                    i += n
+                    continue
+                if n:
+                    i += n                                             # "bring it to me when you can"
+                    continue
             if expect_verb:
                 if not self.out and low in ("while", "after") and self.verb_after(i + 1):
                     self.out.append(Word(w.text, w.start, w.end, "POLITE"))   # "While holding a cup, ..."
@@ -682,7 +720,7 @@ class Tagger:
         boils"); None when none starts here."""
         words = self.words
         n = _match_phrase(words, i, SUBORDINATORS)
-        if not n or _match_phrase(words, i, TIME_WORDS) > n or i + n >= len(words):
+        if not n or _match_phrase(words, i, TIME_WORDS) > n or i + n >= len(words) or self.formula(i):
             return None
         sub = " ".join(w.lower for w in words[i:i + n])
         j = i + n

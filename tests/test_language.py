@@ -854,3 +854,16 @@ def test_him_or_her_refers_to_a_noun_that_filled_an_element_typed_person(library
     assert parse.frames[1].elements["theme"].refers_to is None
     parse = parse_command("pick up the vase and take it to the hall", library)       # "it" unchanged
     assert parse.frames[1].elements["theme"].refers_to == (0, "theme")
+
+
+def test_a_politeness_formula_said_as_a_clause_is_no_task_and_no_condition(library: Library) -> None:
+    for text in ("Okay robot, whenever you have a moment, could you open the window?",
+                 "Hey robot, if you don't mind, open the window",
+                 "open the window when you get a chance",
+                 "open the window, if you have time."):
+        (frame,) = parse_command(text, library).frames                # no Pick(chance), no condition
+        assert (frame.frame, frame.elements["theme"].head, frame.condition) == ("Open", "window", None)
+    parse = parse_command("open the window, if possible, and then close the door", library)
+    assert [(f.frame, f.elements["theme"].head) for f in parse.frames] == [("Open", "window"), ("Close", "door")]
+    (frame,) = parse_command("open the window when the kettle boils", library).frames
+    assert frame.condition is not None                                  # a condition on the world stays one
