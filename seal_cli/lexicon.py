@@ -122,6 +122,9 @@ POLITE_FORMULAE = frozenset([
 """Politeness said as a clause of its own ("*when you get a chance*, could you ..."; "... *if you don't
 mind*"): the robot's time is asked for, not a condition or a task. Only a whole clause: "if you can"
 followed by more of its clause ("if you can reach the shelf, ...") is a condition."""
+SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "thanks", "thanx": "thanks",
+             "u": "you", "ur": "your"}
+"""Texting spellings of function words ("turn the lights off *pls*"): read as the word they spell."""
 END_MARKS = frozenset(".!?")
 HERE_WORDS = frozenset(["here", "there", "over here", "over there", "upstairs", "downstairs", "indoors", "outdoors",
                         "nearby", "elsewhere", "everywhere", "somewhere", "anywhere"])
@@ -196,7 +199,8 @@ class Word:
         self.tag = tag
         self.info = info
         lower = text.lower()
-        self.lower = lower.replace("’", "'") if "’" in lower else lower
+        lower = lower.replace("’", "'") if "’" in lower else lower
+        self.lower = SPELLINGS.get(lower, lower)         # "pls": "please"
 
     def __repr__(self) -> str:
         return f"Word({self.text!r}, {self.start}, {self.end}, {self.tag!r})"

@@ -867,3 +867,11 @@ def test_a_politeness_formula_said_as_a_clause_is_no_task_and_no_condition(libra
     assert [(f.frame, f.elements["theme"].head) for f in parse.frames] == [("Open", "window"), ("Close", "door")]
     (frame,) = parse_command("open the window when the kettle boils", library).frames
     assert frame.condition is not None                                  # a condition on the world stays one
+
+
+def test_texting_spellings_of_function_words_read_as_the_words(library: Library) -> None:
+    (frame,) = parse_command("switch lamps on plz", library).frames          # bare plural, split particle
+    theme = frame.elements["theme"]
+    assert (frame.frame, theme.head, theme.plural) == ("ToggleOn", "lamp", True)
+    (frame,) = parse_command("can u put ur keys on the shelf pls", library).frames
+    assert (frame.frame, frame.elements["theme"].head, frame.elements["goal"].head) == ("Place", "key", "shelf")
