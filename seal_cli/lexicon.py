@@ -449,6 +449,48 @@ class Tagger:
         m = _match_phrase(words, i + n, POLITE)
         return n if m and nxt != "to" and self.verb_after(i + n) else 0
 
+    def aside(self, i: int) -> int:
+        """A sentence said beside the command, with no verb of the library, at the start of a sentence
+        ("*Good morning!* Could you ...", "*Priya needs her laptop,* could you bring it to her?"): how many
+        words it takes, with its end mark (0: none). A greeting or a statement asks nothing of the
+        robot when another sentence holds the command; before a comma, only when a polite request
+        follows ("..., could you", "..., please"). Only a verb's base form makes a command: "my
+        brother is *freezing*" states."""
+        words = self.words
+        if i and words[i - 1].lower not in END_MARKS and any(t.tag != "POLITE" for t in self.out):
+            return 0                                     # inside a sentence
+        if verb_lemma(words[i].lower) == words[i].lower:
+            return 0                                     # "Grab the cup.": a verb the library lacks, an error
+        end, comma = i, -1
+        while end < len(words) and words[end].lower not in END_MARKS:
+            if words[end].lower in self.lexicon.units and self.verb_at(end) is not None or self.use_at(end):
+                return comma + 1 - i if comma > i and self.request_at(comma + 1) else 0
+            if words[end].lower in (",", ";") and comma < 0:
+                comma = end
+            end += 1
+        if end >= len(words):
+            return 0
+        while end + 1 < len(words) and words[end + 1].lower in END_MARKS:
+            end += 1
+        if not any(t.tag == "VERB" for t in self.out) and \
+                not any(self.verb_at(k) is not None for k in range(end + 1, len(words))):
+            return 0                                     # no sentence holds a command: the error says so
+        return end + 1 - i
+
+    def request_at(self, i: int) -> bool:
+        """Whether a polite request starts at ``i``: politeness ("could you", "please", "robot", commas
+        between) and then a verb."""
+        words, polite = self.words, False
+        while i < len(words):
+            n = _match_phrase(words, i, POLITE)
+            if n and words[i].lower not in ("to", "and", "then", "go", "come", "now", "first", "just"):
+                polite, i = True, i + n
+            elif words[i].lower == ",":
+                i += 1
+            else:
+                break
+        return polite and i < len(words) and self.verb_at(i) is not None
+
     def use_at(self, i: int) -> bool:
         """Whether "use X to V ..." starts at ``i`` ("use a knife to slice the apple"): X is what V
         is done with, so "use" is tagged as the preposition "with" before the clause of V."""
@@ -553,6 +595,11 @@ class Tagger:
                         particles[split] = unit
                     i += n
                     expect_verb = False
+                    continue
+                n = self.aside(i)
+                if n:
+                    self.out.append(_merge(words, i, n, "POLITE"))     # "Good morning! Could you ..."
+                    i += n
                     continue
                 expect_verb = False
                 # not a verb: tag it as what it is; the grammar reports the missing verb

@@ -875,3 +875,18 @@ def test_texting_spellings_of_function_words_read_as_the_words(library: Library)
     assert (frame.frame, theme.head, theme.plural) == ("ToggleOn", "lamp", True)
     (frame,) = parse_command("can u put ur keys on the shelf pls", library).frames
     assert (frame.frame, frame.elements["theme"].head, frame.elements["goal"].head) == ("Place", "key", "shelf")
+
+
+def test_a_sentence_without_a_verb_beside_the_command_is_dropped(library: Library) -> None:
+    parse = parse_command("Good evening, robot! Would you close the blinds and then open the door?", library)
+    assert [(f.frame, f.elements["theme"].head) for f in parse.frames] == [("Close", "blind"), ("Open", "door")]
+    parse = parse_command("Put the milk in the fridge. Thanks a lot!", library)
+    assert [f.frame for f in parse.frames] == ["Place"]
+    parse = parse_command("My brother is freezing, please close the window", library)   # a statement, a request
+    assert [(f.frame, f.elements["theme"].head) for f in parse.frames] == [("Close", "window")]
+    with pytest.raises(CommandError):
+        parse_command("The hallway is dark.", library)                 # no sentence holds a command
+    with pytest.raises(CommandError):
+        parse_command("Hello there! Yank the cord.", library)          # a verb the library lacks: still an error
+    with pytest.raises(CommandError):
+        parse_command("the mug on the shelf, bring it to me", library)  # no request after the comma
