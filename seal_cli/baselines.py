@@ -83,27 +83,29 @@ class CoveragePolicy:
         costs = field_[cells[:, 0], cells[:, 1]]
         options = container_views(agent, field_, closed_unopened(agent))
         here = agent.robot_cell()
-        while len(unseen := np.flatnonzero(~self.seen)):
+        unseen = np.flatnonzero(~self.seen)
+        if len(unseen):
             rng = 0.8 * agent.world.sensor.range
             # the cost of seeing a lattice point: the drive to the nearest cell within range of it
             groups = self.tree.query_ball_point(self.lattice[unseen], rng)
-            best: tuple[float, int, int] | None = None
+            reachable: list[tuple[float, int, int]] = []
             for u, group in zip(unseen, groups, strict=True):
                 if not group:
                     continue
                 g = np.asarray(group)
                 k = int(g[int(np.argmin(costs[g]))])
-                if np.isfinite(costs[k]) and (best is None or costs[k] < best[0]):
-                    best = (float(costs[k]), int(u), int(k))
-            if best is not None:
-                cost, ui, ki = best
+                if np.isfinite(costs[k]):
+                    reachable.append((float(costs[k]), int(u), int(k)))
+            # the cheapest first (the first listed among equals); one seen from here yet unseen is never
+            # to be seen: mark it and take the next (in one pass: the costs do not change meanwhile)
+            for cost, ui, ki in sorted(reachable, key=lambda r: r[0]):
                 cell = (int(cells[ki, 0]), int(cells[ki, 1]))
-                goal = self.lattice[ui]
                 if cell == here:
-                    self.seen[ui] = True  # in view from here yet unseen: never to be seen
+                    self.seen[ui] = True
                     continue
+                goal = self.lattice[ui]
                 options.append((cost, View(cell, (float(goal[0]), float(goal[1])), why="the nearest frontier")))
-            break
+                break
         if not options:
             return None
         return min(options, key=lambda o: o[0])[1]

@@ -77,3 +77,25 @@ def test_suite_on_real_episodes_is_reproducible_and_spec_shaped(shared_data: Pat
         if o.policy != "oracle" and o.success:
             twin = next(x for x in oracle if x.task_id == o.task_id)
             assert o.path_m >= twin.path_m - 1.0  # the oracle is (nearly) a lower bound
+
+
+def test_coverage_drops_every_point_it_cannot_see_from_here_in_one_pass(library: Library) -> None:
+    """Lattice points within reach of the robot's own cell yet unseen (behind a wall) are dropped
+    together: one neighbour query per choice, not one per dropped point (a map whose belief was
+    spent far from the robot made `seal run` take hours)."""
+    agent = Agent(kitchen(library), library, CoveragePolicy(), rng=np.random.default_rng(0))
+    policy = agent.policy
+    assert isinstance(policy, CoveragePolicy)
+    policy.begin(agent)
+    policy.seen[:] = False  # nothing seen: every point the robot's own cell is nearest to is "unseeable"
+    tree, calls = policy.tree, []
+
+    class Counting:
+        def query_ball_point(self, points, r):  # type: ignore[no-untyped-def]
+            calls.append(len(points))
+            return tree.query_ball_point(points, r)
+
+    policy.tree = Counting()  # type: ignore[assignment]
+    view = policy.next_view(agent, library.frame("Heat").bind({"theme": "apple"}), "apple")
+    assert view is not None and view.cell != agent.robot_cell()
+    assert len(calls) == 1 and policy.seen.sum() > 1
