@@ -750,6 +750,8 @@ class Builder:
                                                                                 "those"))
         if kind == "name_np":
             w = self.word(node.children[0])
+            if len(node.children) > 1:          # "Gate 5": a numbered place or thing, no person
+                return NP(w.start, self.word(node.children[1]).end, w, "thing")
             return NP(w.start, w.end, w, "person")
         # det_np / bare_np
         np = NP(-1, -1, None, determined=kind == "det_np")
@@ -757,11 +759,13 @@ class Builder:
             data = str(child.data) if isinstance(child, Tree) else None
             if data == "nominal":
                 words = [self.word(t) for t in child.children]
+                if words[-1].tag == "LABEL":    # "room 214": the noun is the head, its number in the text
+                    np.end = words.pop().end
                 np.head = words[-1]
                 np.mods = [w for w in words[:-1] if w.tag == "WORD"]
                 np.results = [w for w in words[:-1] if w.tag == "RESULT"]
                 np.start = words[0].start if np.start < 0 else np.start
-                np.end = words[-1].end
+                np.end = max(np.end, words[-1].end)
             elif data == "postmod":
                 self.postmod(np, child)
             else:

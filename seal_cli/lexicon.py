@@ -150,6 +150,12 @@ NOMINATIVE = frozenset(["i", "he", "she", "we", "they"])
 RELATIVES = frozenset(["that", "which", "who", "whom", "whose"])
 STATES_DONE = frozenset(["done", "finished", "ready", "there", "here", "back", "through"])
 """What "once you are ___" says of the robot when it only sequences: "*once you're done*, ..." is "then"."""
+_CLOCK_PREPOSITIONS = frozenset(["at", "by", "until", "till", "around", "in", "before"])
+"""Prepositions of a time said with a number ("at three", "by 5 pm", "in ten minutes")."""
+_CLOCK_WORDS = frozenset(["am", "pm", "a.m.", "p.m.", "o'clock", "oclock", "sharp", "thirty", "fifteen",
+                          "fortyfive", "twenty", "forty", "fifty"])
+_VAGUE_NUMBERS = frozenset(["one", "couple", "several", "few", "many"])
+"""Number words that count but never label ("the red *one*", "a *few*")."""
 _QUANTIFIERS = frozenset(["one", "two", "three", "four", "both", "all", "some", "each", "any", "none", "most",
                           "either", "neither", "several", "many", "few"])
 
@@ -165,7 +171,8 @@ _LONGEST_FUNCTION_PHRASE = max(len(p.split()) for ps in _PHRASES.values() for p 
 _SUB_FIRST = frozenset(p.split()[0] for p in SUBORDINATORS)
 _FORMULA_FIRST = frozenset(p.split()[0] for p in POLITE_FORMULAE)
 _TIME_FIRST = frozenset(p.split()[0] for p in TIME_WORDS)
-_FUNCTION_SPECIAL = _TIME_FIRST | {"for", "every", "each", "one", "ones", "that"}
+_FUNCTION_SPECIAL = _TIME_FIRST | {"for", "every", "each", "one", "ones", "that", "at", "by", "until", "till",
+                                   "around", "in", "before"}
 """First words of what :meth:`Tagger._special_function_word` tags (checked before calling it)."""
 _SEP_FIRST = frozenset(p.split()[0] for p in SEPARATOR_WORDS)
 _LEAD_FIRST = _SUB_FIRST | _SEP_FIRST | {",", ";", ":", "start", "begin", "finish", "end", "continue", "take", "have",
@@ -944,6 +951,8 @@ class Tagger:
     def _quantity(self, i: int, in_np: bool) -> int:
         """Numbers ("two", "a couple of", "3"), quantifiers before "of" ("both of the"), "'s"."""
         words, low, nxt = self.words, self.words[i].lower, self._next(i)
+        if self.prev_tag() in ("WORD", "NAME") and self.label_at(i):
+            return self._emit(i, 1, "LABEL", low)              # "room 214", "table 9": no count
         n = _match_phrase(words, i, NUMBERS)
         if n and not in_np and (low != "one" or self.np_starts(i + 1) and nxt not in PREPOSITIONS) and \
                 (n > 1 or low != "one" or self._noun_follows(i + 1)):
@@ -951,6 +960,8 @@ class Tagger:
         if n and in_np and low != "one" and self.prev_tag() == "DET" and self._noun_follows(i + n):
             return self._emit(i, n, "NUM", NUMBERS[" ".join(x.lower for x in words[i:i + n])])   # "the two books"
         if low.isascii() and low.isdigit():
+            if self.prev_tag() == "PREP" and not self._noun_follows(i + 1):
+                return self._emit(i, 1, "WORD")                # "the guests in 305": a place named by its number
             return self._emit(i, 1, "NUM", int(low))
         if low == "'s":
             last = self.out[-1] if self.out else None
@@ -964,6 +975,41 @@ class Tagger:
             number = NUMBERS.get(low)            # "both of the cups", "one of the books"
             return self._emit(i, 2, "DET" if number is None else "NUM", number)
         return 0
+
+    def clock_time(self, i: int) -> int:
+        """How many words a time said with a number take at ``i`` (0: none): "at three", "by 5 pm",
+        "at half past six", "until 4 o'clock", "in ten minutes", "in ten" (a number word; "in 305"
+        is a numbered place). Nothing noun-like may follow: "at three tables" counts tables."""
+        words, low = self.words, self.words[i].lower
+        k = i + 1
+        if k < len(words) and low != "in" and words[k].lower in ("half", "quarter") and k + 1 < len(words) and \
+                words[k + 1].lower in ("past", "to"):
+            k += 2                                              # "at half past six"
+        if k >= len(words) or not (words[k].lower in NUMBERS and words[k].lower not in _VAGUE_NUMBERS
+                                   or words[k].lower.isascii() and words[k].lower.isdigit()):
+            return 0
+        digits = words[k].lower.isdigit()
+        k += 1
+        if k < len(words) and words[k].lower in TIME_UNITS:
+            return k + 1 - i                                    # "in ten minutes", "by 5 hours"
+        if low == "in" and digits:
+            return 0                                            # "the guests in 305": a place
+        while k < len(words) and words[k].lower in _CLOCK_WORDS:
+            k += 1                                              # "at 5 pm", "at three thirty", "at 4 o'clock"
+        if k < len(words) and self._noun_follows(k) and words[k].lower not in NUMBERS:
+            return 0
+        return k - i
+
+    def label_at(self, i: int) -> bool:
+        """Whether the number at ``i`` names a numbered thing with the noun before it ("room *214*",
+        "meeting room *three*", "table *9*"): one number (digits, or a number word other than "one"),
+        with no noun after it to count ("give the kids *two* apples" counts)."""
+        low = self.words[i].lower
+        if not (low.isascii() and low.isdigit() or low in NUMBERS and low not in _VAGUE_NUMBERS):
+            return False
+        if i + 1 < len(self.words) and self.words[i + 1].lower in TIME_UNITS:
+            return False                                        # "wait ten minutes"
+        return i + 1 >= len(self.words) or not self._noun_follows(i + 1) or self.words[i + 1].lower in NUMBERS
 
     def _special_function_word(self, i: int) -> int:
         """Time adverbials ("right away", "for three minutes"), "one" after adjectives ("the red one")
@@ -980,6 +1026,10 @@ class Tagger:
                 k += 1
             if k < len(words) and words[k].lower in TIME_UNITS:
                 return self._emit(i, k + 1 - i, "PARTICLE", "time")
+        if low in _CLOCK_PREPOSITIONS and self.prev_tag() != "PREP":
+            n = self.clock_time(i)
+            if n:
+                return self._emit(i, n, "PARTICLE", "time")        # "meet her at three", "in ten minutes"
         prev = self.prev_tag()
         if low in ("one", "ones") and prev in ("WORD", "RESULT"):
             k = len(self.out) - 1

@@ -890,3 +890,26 @@ def test_a_sentence_without_a_verb_beside_the_command_is_dropped(library: Librar
         parse_command("Hello there! Yank the cord.", library)          # a verb the library lacks: still an error
     with pytest.raises(CommandError):
         parse_command("the mug on the shelf, bring it to me", library)  # no request after the comma
+
+
+def test_a_noun_and_a_number_name_one_numbered_thing(library: Library) -> None:
+    (frame,) = parse_command("fetch the towels from cabin 12.", library).frames
+    source = frame.elements["source"]
+    assert (source.text, source.head, source.quantity) == ("cabin 12", "cabin", None)
+    (frame,) = parse_command("take the visitor to lecture hall four", library).frames
+    assert (frame.frame, frame.elements["goal"].text) == ("Guide", "lecture hall four")
+    (frame,) = parse_command("bring fresh sheets to the patients in 412", library).frames
+    assert frame.elements["recipient"].text == "the patients in 412"          # a place named by its number
+    (frame,) = parse_command("give the twins three crayons", library).frames   # a number before a noun counts
+    assert (frame.elements["theme"].head, frame.elements["theme"].quantity) == ("crayon", 3)
+    (frame,) = parse_command("put 4 spoons in the drawer", library).frames
+    assert frame.elements["theme"].quantity == 4
+
+
+def test_a_time_said_with_a_number_is_a_time(library: Library) -> None:
+    (frame,) = parse_command("meet the plumber at four", library).frames
+    assert (frame.frame, frame.elements["theme"].head, frame.time) == ("Meet", "plumber", "at four")
+    (frame,) = parse_command("bring the tray to the lounge in five minutes", library).frames
+    assert ("source" not in frame.elements, frame.time) == (True, "in five minutes")
+    (frame,) = parse_command("put the bowls on the counter by 6 pm", library).frames
+    assert (frame.elements["goal"].head, frame.time) == ("counter", "by 6 pm")
