@@ -82,3 +82,15 @@ def test_localize_png_onto_a_folder_is_exit_1_and_leaves_nothing(tmp_path: Path)
         assert "is a folder" in result.stderr and str(out) in result.stderr
         assert "Traceback" not in result.stderr
         assert list(out.iterdir()) == [] and sorted(p.name for p in tmp_path.iterdir()) == ["out"]
+
+
+def test_json_lines_errors_carry_line_and_column(tmp_path: Path) -> None:
+    from seal_cli.fileio import read_json_lines
+
+    path = tmp_path / "c.jsonl"
+    path.write_text('{"a": 1}\n\n{"b": nope}\n', encoding="utf-8")
+    with pytest.raises(SealError) as info:
+        read_json_lines(path)
+    assert (info.value.line, info.value.column) == (3, 7) and "not JSON" in info.value.message
+    path.write_text('{"a": 1}\n\n[2]\n', encoding="utf-8")
+    assert read_json_lines(path) == [{"a": 1}, [2]]

@@ -117,3 +117,30 @@ def test_bench_parse_runs_the_scorer(shared_data: Path, tmp_path: Path) -> None:
     assert result.exit_code == 0, result.output
     figures = json.loads(result.stdout)["corpora"][str(corpus)]
     assert figures["n"] == 2 and figures["frames"] == 1.0 and figures["roles"] == 1.0
+
+
+@pytest.mark.parametrize(("content", "expected"), [
+    (b"\x84\x00binary", "is not UTF-8 text"),
+    (b"- a\n- b\n", ":1:1: not JSON"),
+    (b'{"text": "stir the cup"}\n{"text": oops}\n', ":2:10: not JSON"),
+    (b'{"text": "stir the cup"}\n[1, 2]\n', "each line must be a JSON object"),
+])
+def test_bench_parse_refuses_a_corpus_that_is_not_json_lines(tmp_path: Path, content: bytes, expected: str) -> None:
+    corpus = tmp_path / "bad.jsonl"
+    corpus.write_bytes(content)
+    for extra in ([], ["--json"]):
+        result = runner.invoke(app, ["bench", "parse", "--corpus", str(corpus), "--scorers", str(tmp_path), *extra])
+        assert result.exit_code == 1, result.output
+        assert f"error: {corpus}" in result.stderr and expected in result.stderr
+        assert "Traceback" not in result.output + result.stderr
+
+
+def test_bench_parse_reports_a_crashing_scorer_as_an_error(shared_data: Path, tmp_path: Path) -> None:
+    scorers = shared_data.parent / "eval"
+    if not (scorers / "score_parse.py").is_file():
+        pytest.skip("the shared scorers are not here")
+    corpus = tmp_path / "odd.jsonl"
+    corpus.write_text('{"foo": 1}\n', encoding="utf-8")
+    result = runner.invoke(app, ["bench", "parse", "--corpus", str(corpus)])
+    assert result.exit_code == 1, result.output
+    assert f"the scorer failed on {corpus}" in result.stderr and "Traceback" not in result.output + result.stderr

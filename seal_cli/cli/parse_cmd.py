@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Any
 import typer
 
 from ..errors import SealError, Where
+from ..fileio import read_json_lines
 from . import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
 
 if TYPE_CHECKING:
@@ -180,12 +181,16 @@ def bench_parse(
             consts = constants or shared / "data" / "alfred" / "alfred_constants.json"
             argv = [str(folder / "score_alfred_goals.py"), str(path), str(consts)]
         else:
+            if not all(isinstance(item, dict) for item in read_json_lines(path)):
+                raise SealError(f"{path} is not a corpus: each line must be a JSON object", Where(str(path)))
             argv = [str(folder / "score_parse.py"), str(path)]
         if not Path(argv[0]).is_file():
             raise SealError(f"scorer not found: {argv[0]} (give --scorers DIR)", Where(argv[0]))
         err.print(f"scoring {path} ...")
         run = subprocess.run([sys.executable, *argv, "--seal", seal, *(["--json"] if as_json else [])],
                              capture_output=True, text=True)
+        if run.returncode and "Traceback (most recent call last)" in run.stderr:  # it crashed (exit 1 is a low score)
+            raise SealError(f"the scorer failed on {path}: {run.stderr.strip().splitlines()[-1]}", Where(str(path)))
         if as_json:
             lines = run.stdout.strip().splitlines()
             try:
