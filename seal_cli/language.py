@@ -41,10 +41,11 @@ from .lexicon import (
     SUBORDINATORS,
     CommandError,
     Lexicon,
+    Tagger,
     Word,
     is_plural,
     noun_lemma,
-    tag,
+    tokenize,
 )
 from .library import Library
 from .taxonomy import class_words
@@ -133,9 +134,15 @@ class Parse:
 
     text: str
     frames: tuple[Evoked, ...]
+    remarks: tuple[str, ...] = ()
+    """What was said beside the command and dropped: statements, greetings ("*The grandchildren are
+    here.*", "..., *she's been waiting a while*")."""
 
     def to_json(self) -> dict[str, Any]:
-        return {"text": self.text, "frames": [f.to_json() for f in self.frames]}
+        data: dict[str, Any] = {"text": self.text, "frames": [f.to_json() for f in self.frames]}
+        if self.remarks:
+            data["remarks"] = list(self.remarks)
+        return data
 
     def resolve(self, phrase: Phrase) -> Phrase:
         """The phrase a pronoun stands for (the phrase itself when it is not one)."""
@@ -275,7 +282,8 @@ def parse_command(text: str, library: Library, vocabulary: Vocabulary | None = N
     if not text.strip():
         raise CommandError("empty command: expected a verb, such as " + _some_verbs(lexicon), 1, text,
                            ["a verb"])
-    words = tag(lexicon, text)
+    tagger = Tagger(lexicon, tokenize(text), text)
+    words = tagger.run()
     if not words:
         raise CommandError("no words in the command: expected a verb, such as " + _some_verbs(lexicon),
                            _first_column(text), text, ["a verb"])
@@ -291,7 +299,10 @@ def parse_command(text: str, library: Library, vocabulary: Vocabulary | None = N
         _TREES[tags] = tree
     if vocabulary is not None:
         vocabulary = with_library_synonyms(vocabulary, library)
-    return Builder(text, library, types, vocabulary, words).command(tree)
+    parse = Builder(text, library, types, vocabulary, words).command(tree)
+    if tagger.remarks:
+        parse = replace(parse, remarks=tuple(text[a:b] for a, b in tagger.remarks))
+    return parse
 
 
 _TREES: dict[tuple[str, ...], Tree] = {}

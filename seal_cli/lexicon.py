@@ -40,7 +40,8 @@ from .morphology import (
     verb_lemma,
 )
 
-__all__ = ["MAX_LENGTH", "CommandError", "Lexicon", "Word", "is_plural", "noun_lemma", "tokenize", "verb_lemma"]
+__all__ = ["MAX_LENGTH", "CommandError", "Lexicon", "Tagger", "Word", "is_plural", "noun_lemma", "tokenize",
+           "verb_lemma"]
 
 MAX_LENGTH = 1000
 """The longest command accepted, in characters (a spoken command is far shorter)."""
@@ -125,6 +126,23 @@ followed by more of its clause ("if you can reach the shelf, ...") is a conditio
 SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "thanks", "thanx": "thanks",
              "u": "you", "ur": "your"}
 """Texting spellings of function words ("turn the lights off *pls*"): read as the word they spell."""
+VOCATIVES = frozenset(["dear", "dearie", "love", "darling", "sweetheart", "sweetie", "honey", "hun", "pet", "mate",
+                       "buddy", "pal", "sir", "madam", "ma'am", "miss", "robot", "friend", "my dear", "my friend",
+                       "my love", "old friend", "thanks", "thank you", "please", "would you", "could you",
+                       "will you", "can you", "won't you", "wouldn't you", "would you please", "will you please",
+                       "could you please", "ok", "okay", "right", "yeah"])
+"""Words of address and tags said after a request ("close the door, *dear*", "..., *would you*?",
+"pass me the salt, *love*, ..."): no part of the clause."""
+FINITE = frozenset(["is", "are", "was", "were", "am", "'s", "has", "have", "had", "do", "does", "did", "can", "could",
+                    "will", "would", "shall", "should", "must", "might", "may", "can't", "cannot", "couldn't",
+                    "won't", "wouldn't", "shouldn't", "mustn't", "don't", "doesn't", "didn't", "isn't", "aren't",
+                    "wasn't", "weren't", "hasn't", "haven't", "hadn't", "ain't", "keeps", "needs", "wants"])
+"""Finite verbs that make a statement of what starts with a subject ("the bus *is* late", "she *can't*
+sleep"): auxiliaries, modals, "be" and "have"."""
+SUBJECTS = frozenset(["i", "he", "she", "we", "they", "it", "this", "that", "there", "these", "those", "everyone",
+                      "everybody", "someone", "somebody", "nobody", "nothing", "everything"])
+"""Pronouns that may start a statement said beside the command ("*it's* cold in here")."""
+_CONTRACTED = frozenset(["'s", "'re", "'m", "'ll", "'ve", "'d"])
 END_MARKS = frozenset(".!?")
 HERE_WORDS = frozenset(["here", "there", "over here", "over there", "upstairs", "downstairs", "indoors", "outdoors",
                         "nearby", "elsewhere", "everywhere", "somewhere", "anywhere"])
@@ -160,7 +178,8 @@ _QUANTIFIERS = frozenset(["one", "two", "three", "four", "both", "all", "some", 
                           "either", "neither", "several", "many", "few"])
 
 _PHRASES: dict[str, tuple[str, ...]] = {}
-for _table in (PREPOSITIONS, POLITE, POLITE_FORMULAE, SEPARATOR_WORDS, NUMBERS, HERE_WORDS, TIME_WORDS, SUBORDINATORS):
+for _table in (PREPOSITIONS, POLITE, POLITE_FORMULAE, SEPARATOR_WORDS, NUMBERS, HERE_WORDS, TIME_WORDS, SUBORDINATORS,
+               VOCATIVES):
     for _phrase in _table:
         words = tuple(_phrase.split())
         if len(words) > 1:
@@ -411,6 +430,7 @@ class Tagger:
         self.using = False                  # after "use X": "to" starts the clause of what X is used for
         self.speech = False                 # the clause's verb says something ("tell"): a clause after it is said
         self.verb_index = -1                # where in ``out`` the clause's verb is
+        self.remarks: list[tuple[int, int]] = []   # character spans of statements dropped beside the command
 
     def verb_at(self, i: int) -> tuple[str, int, int | None] | None:
         """The lexical unit starting at word ``i`` (memoised: the tagger asks more than once)."""
@@ -456,6 +476,80 @@ class Tagger:
         m = _match_phrase(words, i + n, POLITE)
         return n if m and nxt != "to" and self.verb_after(i + n) else 0
 
+    def statement_at(self, i: int) -> int:
+        """Whether a statement starts at ``i`` and where its clause ends (0: none): a subject (a pronoun,
+        a contraction "it's", "we're", "i'll"; or a noun phrase: "the bus", "my son Declan", "Bogdan") and
+        then a finite verb ("is", "has", "can't", "keeps", "arrives on"); a command starts with a verb's
+        base form instead. The clause ends at punctuation."""
+        words = self.words
+        if i >= len(words):
+            return 0
+        end = i
+        while end < len(words) and words[end].lower not in END_MARKS and words[end].lower not in (",", ";", ":"):
+            end += 1
+        first = words[i].lower
+        if verb_lemma(first) == first and first not in SUBJECTS:
+            return 0                                          # "Grab the cup": a command, maybe an unknown verb
+        nxt = words[i + 1].lower if i + 1 < end else ""
+        if "'" in first and first.split("'")[0] in SUBJECTS | {"you", "who", "what", "here"} and \
+                "'" + first.split("'", 1)[1] in _CONTRACTED:
+            return end                                        # "we're eating in ten", "i'll be right there"
+        if first in SUBJECTS or first == "you" and nxt not in ("can", "could", "will", "would", "should", "must"):
+            return end if nxt in FINITE or nxt in _CONTRACTED or self.finite_form(i + 1, end) else 0
+        if not (first in DETERMINERS or first in POSSESSIVES or _capitalised(words[i])):
+            return 0
+        for k in range(i + 1, end):
+            if words[k - 1].lower in DETERMINERS or words[k - 1].lower in POSSESSIVES:
+                continue                                      # "the plates": a noun
+            if words[k].lower in FINITE or self.finite_form(k, end):
+                return end                                    # "the fridge door's open", "Bogdan has a question"
+        return 0
+
+    def finite_form(self, k: int, end: int) -> bool:
+        """Whether the word at ``k`` is a verb's third-person or past form followed by what a verb takes
+        ("she *arrives on* the bus", "the light *keeps flashing*"), not a plural noun."""
+        low = self.words[k].lower if k < end else ""
+        lemma = verb_lemma(low) if low.isalpha() else None
+        if not lemma or lemma == low or not (low.endswith("s") or low.endswith("ed")):
+            return False
+        nxt = self.words[k + 1].lower if k + 1 < end else ""
+        return bool(nxt) and (nxt in PREPOSITIONS or nxt in DETERMINERS or nxt in POSSESSIVES or nxt == "to"
+                              or bool(gerund_lemma(nxt)))
+
+    def vocatives_end(self, i: int) -> int:
+        """Where words of address and tag questions starting at ``i`` end, commas between ("..., *dear*",
+        "..., *would you*?"); ``i`` when none."""
+        words, k = self.words, i
+        while k < len(words):
+            n = _match_phrase(words, k, VOCATIVES)
+            if n:
+                k += n
+            elif words[k].lower == "," and k > i:
+                k += 1
+            else:
+                break
+        return k
+
+    def remark_after(self, i: int) -> int:
+        """After a comma that ends a request: words of address, tag questions and statements up to the end
+        of the sentence ("..., *dear*? ...", "..., *she's been waiting a while*.", "..., *we're eating in
+        ten*"); how many words to drop (0: none). Only when nothing else follows in the sentence."""
+        words = self.words
+        k, spans = i + 1, []
+        while True:
+            k = self.vocatives_end(k)
+            end = self.statement_at(k)
+            if not end:
+                break
+            spans.append((words[k].start, words[end - 1].end))
+            k = end
+            while k < len(words) and words[k].lower in (",", ";"):
+                k += 1
+        if k < len(words) and words[k].lower not in END_MARKS or k == i + 1:
+            return 0
+        self.remarks.extend(spans)
+        return k - i
+
     def aside(self, i: int) -> int:
         """A sentence said beside the command, with no verb of the library, at the start of a sentence
         ("*Good morning!* Could you ...", "*Priya needs her laptop,* could you bring it to her?"): how many
@@ -466,11 +560,16 @@ class Tagger:
         words = self.words
         if i and words[i - 1].lower not in END_MARKS and any(t.tag != "POLITE" for t in self.out):
             return 0                                     # inside a sentence
-        if verb_lemma(words[i].lower) == words[i].lower:
+        stated = self.statement_at(i)
+        if stated and stated < len(words) and words[stated].lower in (",", ";") and self.verb_after(stated + 1):
+            self.remarks.append((words[i].start, words[stated - 1].end))
+            return stated + 1 - i                        # "Bogdan has a question; answer it for him"
+        if verb_lemma(words[i].lower) == words[i].lower and not stated:
             return 0                                     # "Grab the cup.": a verb the library lacks, an error
         end, comma = i, -1
         while end < len(words) and words[end].lower not in END_MARKS:
-            if words[end].lower in self.lexicon.units and self.verb_at(end) is not None or self.use_at(end):
+            if not stated and (words[end].lower in self.lexicon.units and self.verb_at(end) is not None
+                               or self.use_at(end)):
                 return comma + 1 - i if comma > i and self.request_at(comma + 1) else 0
             if words[end].lower in (",", ";") and comma < 0:
                 comma = end
@@ -482,6 +581,7 @@ class Tagger:
         if not any(t.tag == "VERB" for t in self.out) and \
                 not any(self.verb_at(k) is not None for k in range(end + 1, len(words))):
             return 0                                     # no sentence holds a command: the error says so
+        self.remarks.append((words[i].start, words[end].end))
         return end + 1 - i
 
     def request_at(self, i: int) -> bool:
@@ -644,6 +744,11 @@ class Tagger:
                 if n:
                     i += n
                     expect_verb = self.prev_tag() == "SEP"
+                    continue
+            if low in (",", ";") and not expect_verb:
+                n = self.remark_after(i)
+                if n:
+                    i += n                   # "close the door, dear, I'm cold": address and statements dropped
                     continue
             n = _match_phrase(words, i, SEPARATOR_WORDS)
             if n:

@@ -913,3 +913,29 @@ def test_a_time_said_with_a_number_is_a_time(library: Library) -> None:
     assert ("source" not in frame.elements, frame.time) == (True, "in five minutes")
     (frame,) = parse_command("put the bowls on the counter by 6 pm", library).frames
     assert (frame.elements["goal"].head, frame.time) == ("counter", "by 6 pm")
+
+
+def test_a_statement_beside_the_command_is_dropped_and_kept_as_a_remark(library: Library) -> None:
+    parse = parse_command("Open the window, the kids are too hot.", library)
+    assert [f.frame for f in parse.frames] == ["Open"]
+    assert parse.remarks == ("the kids are too hot",)
+    assert parse.to_json()["remarks"] == ["the kids are too hot"]
+    parse = parse_command("switch the kettle on, we're having guests", library)
+    assert ([f.frame for f in parse.frames], parse.remarks) == (["ToggleOn"], ("we're having guests",))
+    parse = parse_command("Close the curtains, please. It's getting dark and I can't see the screen.", library)
+    assert [(f.frame, f.elements["theme"].head) for f in parse.frames] == [("Close", "curtain")]
+    assert parse.remarks == ("It's getting dark and I can't see the screen.",)
+    parse = parse_command("The mail has come; bring the letters to the study.", library)
+    assert [(f.frame, f.elements["theme"].head) for f in parse.frames] == [("Bring", "letter")]
+    assert "remarks" not in parse_command("open the window", library).to_json()       # the SPEC's keys only
+    with pytest.raises(CommandError, match="launch"):
+        parse_command("launch the rocket, then pick up the cup", library)           # a verb the library lacks
+    with pytest.raises(CommandError):
+        parse_command("The kids are too hot.", library)                            # no command anywhere
+
+
+def test_words_of_address_and_tag_questions_after_a_request_are_no_element(library: Library) -> None:
+    for text in ("pass me the salt, would you?", "pass me the salt, dear", "pass me the salt, love, will you?",
+                 "Pass me the salt, sir. My hands are greasy."):
+        (frame,) = parse_command(text, library).frames
+        assert (frame.frame, frame.elements["theme"].text) == ("Give", "the salt")
