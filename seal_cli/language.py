@@ -1081,6 +1081,8 @@ class Builder:
                     item.prep in ("on", "at") and not item.lead and not item.describes and \
                     not (self.frames and self.needs_in_hand(frame)):
                 role = first                      # "check on the baby": the verb's object after its preposition
+            if role is None and item.prep == "for" and item.np.pronoun in PERSON_PRONOUNS and not item.describes:
+                continue                          # "chop the carrots *for me* with the knife": for whom, no element
             if role is not None:
                 roles[role] = item.np
             elif previous is not None and (item.prep in _ATTACHABLE or not strict or item.describes):

@@ -107,7 +107,8 @@ POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "wi
                     "you can", "go ahead and", "robot", "hey", "ok", "okay", "now", "first", "firstly",
                     "just", "quickly", "carefully", "to", "try to", "then", "and", "also", "simply",
                     "let's", "let 's", "be sure to", "make sure to", "remember to", "go and", "come and", "go", "come",
-                    "would you be so kind as to", "would you be kind enough to", "do me a favor and",
+                    "would you be so kind as to", "would you be kind enough to", "be so kind as to",
+                    "be kind enough to", "be good enough to", "do me a favor and",
                     "do me a favour and", "don't forget to", "do not forget to", "help me", "help me to", "help us",
                     "make sure you", "see that you", "hi", "hello", "excuse me"])
 POLITE_FORMULAE = frozenset([
@@ -172,6 +173,9 @@ _CLOCK_PREPOSITIONS = frozenset(["at", "by", "until", "till", "around", "in", "b
 """Prepositions of a time said with a number ("at three", "by 5 pm", "in ten minutes")."""
 _CLOCK_WORDS = frozenset(["am", "pm", "a.m.", "p.m.", "o'clock", "oclock", "sharp", "thirty", "fifteen",
                           "fortyfive", "twenty", "forty", "fifty"])
+_TIME_MEASURE = frozenset(["a", "an", "few", "couple", "of", "several", "another", "other", "more", "little", "short",
+                           "good", "long"])
+"""Words between "for"/"every" and a unit of time ("for *a little* while", "every *few* minutes")."""
 _VAGUE_NUMBERS = frozenset(["one", "couple", "several", "few", "many"])
 """Number words that count but never label ("the red *one*", "a *few*")."""
 _QUANTIFIERS = frozenset(["one", "two", "three", "four", "both", "all", "some", "each", "any", "none", "most",
@@ -853,9 +857,13 @@ class Tagger:
             return n
         if low.isalpha() and low not in PARTICLES and is_adverb(low) and self.verb_after(i + 1):
             return self._emit(i, 1, "POLITE")               # "Gently place the eggs ..."
-        if low == "be" and i + 3 < len(words) and words[i + 2].lower in ("and", ",") and \
-                nxt not in _CLOSED and nxt.isalpha() and self.verb_after(i + 3):
-            return self._emit(i, 3, "POLITE")               # "Be careful and carry the vase ..."
+        if low == "be":                                     # "Be careful and carry ...", "be a dear and hand me ..."
+            k = i + 1 + (1 if nxt in ("a", "an", "so", "extra", "very", "really") else 0)
+            while k < min(len(words), i + 5) and words[k].lower not in _CLOSED and words[k].lower.isalpha() and \
+                    words[k].lower not in ("and", "then"):
+                k += 1
+            if i + 1 < k < len(words) and words[k].lower in ("and", ",") and self.verb_after(k + 1):
+                return self._emit(i, k + 1 - i, "POLITE")
         if nxt == "by" and low in ("start", "begin", "finish", "end", "continue") and i + 2 < len(words) and \
                 gerund_lemma(words[i + 2].lower) and self.verb_at(i + 2):
             return self._emit(i, 2, "POLITE")               # "Start by opening the window"
@@ -1125,8 +1133,7 @@ class Tagger:
             return self._emit(i, n, "PARTICLE", "time")        # "put it in the fridge right away"
         if low in ("for", "every", "each") and self.prev_tag() not in ("VERB", "PREP"):
             k = i + 1                                          # "for three minutes", "every few minutes"
-            while k < len(words) and (words[k].lower in ("a", "an", "few", "couple", "of", "several", "another",
-                                                          "other", "more") or words[k].lower in NUMBERS
+            while k < len(words) and (words[k].lower in _TIME_MEASURE or words[k].lower in NUMBERS
                                       or words[k].lower.isdigit()):
                 k += 1
             if k < len(words) and words[k].lower in TIME_UNITS:

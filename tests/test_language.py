@@ -939,3 +939,16 @@ def test_words_of_address_and_tag_questions_after_a_request_are_no_element(libra
                  "Pass me the salt, sir. My hands are greasy."):
         (frame,) = parse_command(text, library).frames
         assert (frame.frame, frame.elements["theme"].text) == ("Give", "the salt")
+
+
+def test_polite_frames_with_be_and_for_whom(library: Library) -> None:
+    for text in ("Be an angel and close the shutters.", "Would you be a good lad and close the shutters?",
+                 "Could you be kind enough to close the shutters?", "close the shutters for me, will you?"):
+        (frame,) = parse_command(text, library).frames
+        assert (frame.frame, frame.elements["theme"].text) == ("Close", "the shutters")
+    (frame,) = parse_command("dice the onions for me with the sharp knife", library).frames
+    assert (frame.elements["theme"].text, frame.elements["instrument"].head) == ("the onions", "knife")
+    (frame,) = parse_command("bring a blanket for her", library).frames          # a recipient keeps "for"
+    assert frame.elements["recipient"].text == "her"
+    (frame,) = parse_command("leave the light on for a little while", library).frames
+    assert frame.time == "for a little while"
