@@ -952,3 +952,13 @@ def test_polite_frames_with_be_and_for_whom(library: Library) -> None:
     assert frame.elements["recipient"].text == "her"
     (frame,) = parse_command("leave the light on for a little while", library).frames
     assert frame.time == "for a little while"
+
+
+def test_household_verbs_pop_lay_check_on(library: Library) -> None:
+    parse = parse_command("pop over to the bakery and pop the loaf in the bread bin", library)
+    assert [(f.frame, f.lexical_unit) for f in parse.frames] == [("Go", "pop over"), ("Place", "pop")]
+    assert parse.frames[1].elements["goal"].text == "the bread bin"
+    (frame,) = parse_command("lay the napkins on the tray", library).frames
+    assert (frame.frame, frame.elements["theme"].head, frame.elements["goal"].head) == ("Place", "napkin", "tray")
+    parse = parse_command("walk to the garage and check on the puppy", library)
+    assert (parse.frames[1].frame, parse.frames[1].elements["theme"].text) == ("LookAt", "the puppy")
