@@ -41,9 +41,11 @@ from .lexicon import (
     SUBORDINATORS,
     CommandError,
     Lexicon,
+    Mention,
     Tagger,
     Word,
     is_plural,
+    mentions,
     noun_lemma,
     tokenize,
 )
@@ -299,7 +301,7 @@ def parse_command(text: str, library: Library, vocabulary: Vocabulary | None = N
         _TREES[tags] = tree
     if vocabulary is not None:
         vocabulary = with_library_synonyms(vocabulary, library)
-    parse = Builder(text, library, types, vocabulary, words).command(tree)
+    parse = Builder(text, library, types, vocabulary, words, tagger.remarks).command(tree)
     if tagger.remarks:
         parse = replace(parse, remarks=tuple(text[a:b] for a, b in tagger.remarks))
     return parse
@@ -488,8 +490,10 @@ class Builder:
     """Turns the tree of one command into frames (see the module docstring)."""
 
     def __init__(self, text: str, library: Library, types: Types, vocabulary: Vocabulary | None,
-                 words: Sequence[Word]) -> None:
+                 words: Sequence[Word], remarks: Sequence[tuple[int, int]] = ()) -> None:
         self.text = text
+        self.remarks = remarks
+        self._mentions: list[Mention] | None = None
         self.library = library
         self.taxonomy = types
         self.vocabulary = vocabulary
@@ -1240,6 +1244,26 @@ class Builder:
                     best = (score, target[0], target[1], kind)
         return None if best is None else best[1:]
 
+    def mentioned(self, np: NP, frame: Frame, role: str) -> Mention | None:
+        """What a pronoun no frame's element can be stands for in a statement or condition said before it
+        ("*My son Declan* arrives at six; meet him", "*When Ana* arrives, ...", "*The printer*'s jammed, fix
+        it"): him/her the latest person named, it the latest thing (one of the element's type first)."""
+        if self._mentions is None:
+            spans = [*self.remarks, *((w.start, w.end) for w in self.words if w.tag == "COND")]
+            self._mentions = sorted((m for a, b in spans for m in mentions(self.text, a, b)), key=lambda m: m.start)
+        pronoun = np.pronoun or ""
+        if pronoun not in ("him", "her", "he", "she", "it", "this", "that"):
+            return None
+        person = pronoun not in ("it", "this", "that")
+        said = [m for m in self._mentions if m.end <= np.start and
+                (m.name or self.taxonomy.is_a(noun_lemma(m.head), "person") is True) == person]
+        if not person:
+            type_ = frame.element(role).type
+            fitting = [m for m in said if noun_lemma(m.head) == type_ or not self.taxonomy.is_open(type_)
+                       and self.taxonomy.is_a(noun_lemma(m.head), type_) is True]
+            said = fitting or [m for m in said if m.determined and not m.oblique] or [m for m in said if m.determined]
+        return said[-1] if said else None
+
     def person_by_role(self, target: tuple[int, str], phrase: Phrase) -> bool:
         """Whether a noun the library does not know as a person is one by the element it fills: an
         element typed person ("meet *the plumber*", Meet's theme), unless its class is known to be no
@@ -1496,6 +1520,11 @@ class Builder:
                 root = self.frames[ref[0]].elements[ref[1]]
                 return Phrase(self.text[np.start:np.end], root.head, root.cls, found[2], ref, root.quantity,
                               root.plural, span=(np.start, np.end))
+            said = self.mentioned(np, frame, role)
+            if said is not None:                    # "Bogdan has a question; answer it for him"
+                person = said.name or self.taxonomy.is_a(noun_lemma(said.head), "person") is True
+                return Phrase(self.text[np.start:np.end], said.head if said.name else noun_lemma(said.head),
+                              None, "person" if person else "thing", span=(np.start, np.end))
             return Phrase(self.text[np.start:np.end], np.head_text, None,
                           "thing" if np.kind == "pronoun" and np.pronoun == "it" else
                           "person" if np.kind == "pronoun" else np.kind, span=(np.start, np.end))

@@ -40,8 +40,8 @@ from .morphology import (
     verb_lemma,
 )
 
-__all__ = ["MAX_LENGTH", "CommandError", "Lexicon", "Tagger", "Word", "is_plural", "noun_lemma", "tokenize",
-           "verb_lemma"]
+__all__ = ["MAX_LENGTH", "CommandError", "Lexicon", "Mention", "Tagger", "Word", "is_plural", "mentions",
+           "noun_lemma", "tokenize", "verb_lemma"]
 
 MAX_LENGTH = 1000
 """The longest command accepted, in characters (a spoken command is far shorter)."""
@@ -1239,6 +1239,51 @@ class Tagger:
         if low in _CLOSED or low in END_MARKS or low in (",", ";", ":", "and", "then", "of", "please"):
             return low in NUMBERS and low != "one"
         return low not in PREPOSITIONS
+
+
+@dataclass(frozen=True)
+class Mention:
+    """A noun phrase said in a statement or condition beside the command ("*my son Declan* arrives"):
+    what a pronoun of the command may stand for. ``head`` is its last word (a name as written)."""
+
+    start: int
+    end: int
+    head: str
+    name: bool
+    determined: bool
+    oblique: bool = False            # the object of a preposition ("a question about *the computer*")
+
+
+def mentions(text: str, start: int, end: int) -> list[Mention]:
+    """The noun phrases of ``text[start:end]``, a statement or condition that is no command: a determiner, a
+    possessive or a capitalised word, then open-class words; a name ends its phrase ("my friend *Ana* arrives")."""
+    try:
+        words = tokenize(text[start:end])
+    except CommandError:
+        return []
+    found: list[Mention] = []
+    k = 0
+    while k < len(words):
+        low = words[k].lower
+        determined = low in DETERMINERS or low in POSSESSIVES
+        if not (determined or _capitalised(words[k]) and low not in _CLOSED and low not in NOMINATIVE):
+            k += 1
+            continue
+        first, k = k, k + 1 if determined else k
+        while k < len(words) and words[k].lower.isalpha() and words[k].lower not in _CLOSED and \
+                words[k].lower not in FINITE and words[k].lower not in SEPARATOR_WORDS and \
+                words[k].lower not in _SUB_FIRST and not gerund_lemma(words[k].lower):
+            k += 1
+            if _capitalised(words[k - 1]) and not (k < len(words) and _capitalised(words[k])):
+                break                                         # "my son Declan | arrives"
+        if k > first + int(determined):
+            head = words[k - 1]
+            oblique = first > 0 and words[first - 1].lower in PREPOSITIONS
+            found.append(Mention(start + words[first].start, start + head.end, head.text, _capitalised(head),
+                                 determined, oblique))
+        else:
+            k = max(k, first + 1)
+    return found
 
 
 def tag(lexicon: Lexicon, text: str) -> list[Word]:

@@ -962,3 +962,16 @@ def test_household_verbs_pop_lay_check_on(library: Library) -> None:
     assert (frame.frame, frame.elements["theme"].head, frame.elements["goal"].head) == ("Place", "napkin", "tray")
     parse = parse_command("walk to the garage and check on the puppy", library)
     assert (parse.frames[1].frame, parse.frames[1].elements["theme"].text) == ("LookAt", "the puppy")
+
+
+def test_a_pronoun_may_stand_for_a_noun_of_a_statement_or_condition_said_before(library: Library) -> None:
+    (frame,) = parse_command("My neighbour Olga has a parcel for the office; take it to her.", library).frames
+    assert (frame.elements["theme"].head, frame.elements["recipient"].head) == ("parcel", "Olga")
+    assert frame.elements["theme"].text == "it"                       # the words as said
+    (frame,) = parse_command("When the plumber Marek comes, please greet him.", library).frames
+    assert frame.elements["theme"].head == "Marek"
+    (frame,) = parse_command("Our guest Ravi has a question about the wifi; answer it for him", library).frames
+    assert (frame.elements["theme"].head, frame.elements["recipient"].head) == ("question", "Ravi")
+    parse = parse_command("pick up the cup and give it to her", library)     # no statement: as before
+    assert parse.frames[1].elements["theme"].refers_to == (0, "theme")
+    assert parse.frames[1].elements["recipient"].head == "her"
