@@ -176,6 +176,10 @@ _CLOCK_WORDS = frozenset(["am", "pm", "a.m.", "p.m.", "o'clock", "oclock", "shar
 _TIME_MEASURE = frozenset(["a", "an", "few", "couple", "of", "several", "another", "other", "more", "little", "short",
                            "good", "long"])
 """Words between "for"/"every" and a unit of time ("for *a little* while", "every *few* minutes")."""
+_PATH = frozenset(["to", "into", "onto", "from", "out of", "off", "through", "via", "past", "across", "along"])
+"""Prepositions of a path: "down from the shelf *and over to* my chair" goes on one path."""
+_PARTITIVES = frozenset(["some", "any", "all", "both", "each", "more", "enough", "half"])
+"""Determiners that stand alone for a part of what was named ("pour *some* into the cup")."""
 _VAGUE_NUMBERS = frozenset(["one", "couple", "several", "few", "many"])
 """Number words that count but never label ("the red *one*", "a *few*")."""
 _QUANTIFIERS = frozenset(["one", "two", "three", "four", "both", "all", "some", "each", "any", "none", "most",
@@ -1039,6 +1043,11 @@ class Tagger:
             if not unknown_verb:
                 self.out.append(_merge(words, i, n, "AND_NP"))
                 return n
+        m = _match_phrase(words, j, PREPOSITIONS) if low == "and" and n == 1 else 0
+        if m and self.prev_tag() in ("WORD", "NAME", "PRON") and self.np_starts(j + m) and \
+                PREPOSITIONS[" ".join(w.lower for w in words[j:j + m])] in _PATH and \
+                not any(self.verb_at(k) for k in range(j, self.cond_end(j))):
+            return n                 # "down from the shelf *and* over to my chair": one path, phrases in a row
         if low == "or" and self.prev_tag() in ("WORD", "NAME", "PRON") and _match_phrase(words, j, PREPOSITIONS):
             k = j + _match_phrase(words, j, PREPOSITIONS)
             end = self.cond_end(k)
@@ -1195,6 +1204,9 @@ class Tagger:
             return self._emit(i, 1, "BE")
         if low in POSSESSIVES and (low != "her" or self._noun_follows(i + 1)):
             return self._emit(i, 1, "POSS")
+        if low in _PARTITIVES and self.prev_tag() == "VERB" and not self._noun_follows(i + 1) and \
+                nxt not in DETERMINERS and nxt not in POSSESSIVES and nxt not in NUMBERS and nxt != "of":
+            return self._emit(i, 1, "PRON")                    # "pour *some* into the cup": some of it
         if low in DETERMINERS and (low not in ("that", "this", "these", "those") or self._noun_follows(i + 1)):
             return self._emit(i, 1, "DET")
         if low in PRONOUNS:

@@ -975,3 +975,14 @@ def test_a_pronoun_may_stand_for_a_noun_of_a_statement_or_condition_said_before(
     parse = parse_command("pick up the cup and give it to her", library)     # no statement: as before
     assert parse.frames[1].elements["theme"].refers_to == (0, "theme")
     assert parse.frames[1].elements["recipient"].head == "her"
+
+
+def test_a_partitive_pronoun_and_a_path_said_in_two_phrases(library: Library) -> None:
+    parse = parse_command("take the milk out of the fridge and pour some into the jug", library)
+    pour = parse.frames[1]
+    assert (pour.elements["theme"].text, pour.elements["theme"].refers_to, pour.elements["goal"].head) == (
+        "some", (0, "theme"), "jug")
+    (frame,) = parse_command("turn off all the lamps", library).frames           # "all" before a noun phrase
+    assert frame.elements["theme"].head == "lamp"
+    (frame,) = parse_command("carry the basket up from the cellar and over to the porch", library).frames
+    assert (frame.frame, frame.elements["source"].head, frame.elements["goal"].head) == ("Bring", "cellar", "porch")
