@@ -1375,6 +1375,11 @@ class Builder:
             self.cut.update(id(c) for c in (np, *np.conjuncts))   # "cut a tomato slice": this frame cuts it
         for inner in np.inner:
             self.results_of(inner)
+        if np.results and frame.elements and role == frame.elements[0].role:
+            if "source" in roles:
+                np.results = []          # "take the clean mugs out of the dishwasher": the thing as it is
+            undone = {p.predicate for p in frame.postconditions if p.negated and p.args == (role,)}
+            np.results = [w for w in np.results if not undone & self.result_states(w)]   # "heat the frozen peas"
         self.results_of(np)
         if np.contents and role == (frame.elements[0].role if frame.elements else None):
             relation = next((p for p in frame.postconditions if not p.negated and len(p.args) == 2
@@ -1383,6 +1388,12 @@ class Builder:
                 for content in np.contents:
                     self.results_of(content)
                     self.put(content, np, relation.predicate)
+
+    def result_states(self, word: Word) -> set[str]:
+        """The states a result word's frame gives its theme (``cold`` for "frozen")."""
+        frame = self.library.frame(word.info[0])  # type: ignore[index]
+        first = frame.elements[0].role if frame.elements else None
+        return {p.predicate for p in frame.postconditions if not p.negated and p.args == (first,)}
 
     def results_of(self, np: NP) -> None:
         if np.conjuncts:                 # "a heated apple and a chilled pear": each its own

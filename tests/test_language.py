@@ -986,3 +986,11 @@ def test_a_partitive_pronoun_and_a_path_said_in_two_phrases(library: Library) ->
     assert frame.elements["theme"].head == "lamp"
     (frame,) = parse_command("carry the basket up from the cellar and over to the porch", library).frames
     assert (frame.frame, frame.elements["source"].head, frame.elements["goal"].head) == ("Bring", "cellar", "porch")
+
+
+def test_a_result_word_describes_a_thing_taken_from_somewhere_or_whose_state_the_frame_undoes(
+        library: Library) -> None:
+    assert frames_of("take the clean towels out of the dryer", library) == ["Pick"]
+    assert frames_of("heat the chilled soup in the microwave", library) == ["Heat"]      # Heat undoes cold
+    assert frames_of("put a clean plate on the table", library) == ["Clean", "Place"]    # ALFRED's reading kept
+    assert frames_of("put a heated egg in the fridge", library) == ["Heat", "Place"]
