@@ -79,23 +79,28 @@ def test_suite_on_real_episodes_is_reproducible_and_spec_shaped(shared_data: Pat
             assert o.path_m >= twin.path_m - 1.0  # the oracle is (nearly) a lower bound
 
 
-def test_coverage_drops_every_point_it_cannot_see_from_here_in_one_pass(library: Library) -> None:
-    """Lattice points within reach of the robot's own cell yet unseen (behind a wall) are dropped
-    together: one neighbour query per choice, not one per dropped point (a map whose belief was
-    spent far from the robot made `seal run` take hours)."""
-    agent = Agent(kitchen(library), library, CoveragePolicy(), rng=np.random.default_rng(0))
-    policy = agent.policy
-    assert isinstance(policy, CoveragePolicy)
-    policy.begin(agent)
-    policy.seen[:] = False  # nothing seen: every point the robot's own cell is nearest to is "unseeable"
-    tree, calls = policy.tree, []
+def test_coverage_looks_from_a_cell_with_a_line_of_sight_never_from_where_it_stands(library: Library) -> None:
+    """In a house with walls, a frontier point behind a wall is looked at from a cell that sees it:
+    coverage finishes "stir the cup" on the apartment (it used to crawl 5 cm a step towards points
+    it could never see, and before that needed gigabytes for its neighbour lists)."""
+    from seal_cli.agent import run_on_map
+    from seal_cli.maps import load_map
+    from seal_cli.resources import map_path
 
-    class Counting:
-        def query_ball_point(self, points, r):  # type: ignore[no-untyped-def]
-            calls.append(len(points))
-            return tree.query_ball_point(points, r)
+    apartment = load_map(map_path("apartment"))
+    policy = CoveragePolicy()
+    views: list[tuple[tuple[int, int], tuple[int, int], tuple[float, float]]] = []
+    original = policy.next_view
 
-    policy.tree = Counting()  # type: ignore[assignment]
-    view = policy.next_view(agent, library.frame("Heat").bind({"theme": "apple"}), "apple")
-    assert view is not None and view.cell != agent.robot_cell()
-    assert len(calls) == 1 and policy.seen.sum() > 1
+    def spy(agent, binding, target):  # type: ignore[no-untyped-def]
+        view = original(agent, binding, target)
+        if view is not None and view.open is None:
+            views.append((agent.robot_cell(), view.cell, view.look_at))
+        return view
+
+    policy.next_view = spy  # type: ignore[method-assign]
+    agent, result = run_on_map(apartment, "stir the cup", library, policy, rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    assert views and all(here != cell for here, cell, _ in views)
+    for _, cell, at in views:
+        assert apartment.line_of_sight(agent.grid.point(cell), np.array([at]))[0]
