@@ -210,8 +210,16 @@ class OraclePolicy:
         return cell if np.isfinite(cost) else None
 
     def _stand_cells(self, agent: Agent, known: Known) -> np.ndarray:
+        """The cells to act on ``known`` from; on a grid finer than 0.25 m, one per 0.25 m (a
+        shortest-path field is computed from each, so a 5 cm grid would cost 25 times as many for
+        a few centimetres of path)."""
         if known.id not in self._cells:
-            self._cells[known.id] = agent.stand_cells(known)
+            cells = agent.stand_cells(known)
+            stride = max(1, round(0.25 / agent.grid.resolution))
+            if stride > 1:
+                thin = cells[(cells[:, 0] % stride == 0) & (cells[:, 1] % stride == 0)]
+                cells = thin if len(thin) else cells
+            self._cells[known.id] = cells
         return self._cells[known.id]
 
     def _between(self, agent: Agent, a: Known, b: Known) -> np.ndarray:
