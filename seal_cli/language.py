@@ -879,6 +879,9 @@ class Builder:
         """A question said as the message ("tell me *what day is today*"): from the wh-word on,
         up to a final "to <person>" phrase. "how many" is no message (it asks to count)."""
         for k, item in enumerate(items):
+            if isinstance(item, Word) and item.tag == "SAID":   # "tell him we need a cart": said without "that"
+                del items[k]
+                return NP(item.start, item.end, Word(item.text, item.start, item.end, "WORD"), "message")
             if isinstance(item, Word) and item.tag == "WH":
                 nxt = items[k + 1] if k + 1 < len(items) else None
                 if item.lower == "how" and isinstance(nxt, NP) and nxt.quantity is not None:

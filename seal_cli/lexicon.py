@@ -125,8 +125,12 @@ POLITE_FORMULAE = frozenset([
 mind*"): the robot's time is asked for, not a condition or a task. Only a whole clause: "if you can"
 followed by more of its clause ("if you can reach the shelf, ...") is a condition."""
 SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "thanks", "thanx": "thanks",
-             "u": "you", "ur": "your"}
-"""Texting spellings of function words ("turn the lights off *pls*"): read as the word they spell."""
+             "u": "you", "ur": "your", "n": "and", "im": "i'm", "ive": "i've", "youre": "you're",
+             "theyre": "they're", "thats": "that's", "dont": "don't", "doesnt": "doesn't", "didnt": "didn't",
+             "isnt": "isn't", "arent": "aren't", "wasnt": "wasn't", "havent": "haven't", "couldnt": "couldn't",
+             "wouldnt": "wouldn't", "shouldnt": "shouldn't"}
+"""Texting spellings of function words ("turn the lights off *pls*", "open it *n* wipe it", "tell her
+*im* late"): read as the word they spell."""
 VOCATIVES = frozenset(["dear", "dearie", "love", "darling", "sweetheart", "sweetie", "honey", "hun", "pet", "mate",
                        "buddy", "pal", "sir", "madam", "ma'am", "miss", "robot", "friend", "my dear", "my friend",
                        "my love", "old friend", "thanks", "thank you", "please", "would you", "could you",
@@ -144,6 +148,9 @@ SUBJECTS = frozenset(["i", "he", "she", "we", "they", "it", "this", "that", "the
                       "everybody", "someone", "somebody", "nobody", "nothing", "everything"])
 """Pronouns that may start a statement said beside the command ("*it's* cold in here")."""
 _CONTRACTED = frozenset(["'s", "'re", "'m", "'ll", "'ve", "'d"])
+_OBJECT_PRONOUNS = frozenset(["it", "them", "him", "her", "me", "us", "this", "that"])
+_FIRST_PERSON = frozenset(["i", "we", "they"])
+"""Subjects whose verb has its base form ("we *open* at six"): after them, any verb is finite."""
 END_MARKS = frozenset(".!?")
 HERE_WORDS = frozenset(["here", "there", "over here", "over there", "upstairs", "downstairs", "indoors", "outdoors",
                         "nearby", "elsewhere", "everywhere", "somewhere", "anywhere"])
@@ -496,9 +503,14 @@ class Tagger:
         while end < len(words) and words[end].lower not in END_MARKS and words[end].lower not in (",", ";", ":"):
             end += 1
         first = words[i].lower
+        nxt = words[i + 1].lower if i + 1 < end else ""
+        if nxt.isascii() and nxt.isdigit() and i + 2 < end and words[i + 2].lower in FINITE and \
+                first not in self.lexicon.units:
+            return end                                        # "Table 4 is ready", "room 12 has no towels"
         if verb_lemma(first) == first and first not in SUBJECTS:
             return 0                                          # "Grab the cup": a command, maybe an unknown verb
-        nxt = words[i + 1].lower if i + 1 < end else ""
+        if first in _FIRST_PERSON and nxt.isalpha() and nxt not in PREPOSITIONS:
+            return end                                        # "we open at six", "I need a hand": no command
         if "'" in first and first.split("'")[0] in SUBJECTS | {"you", "who", "what", "here"} and \
                 "'" + first.split("'", 1)[1] in _CONTRACTED:
             return end                                        # "we're eating in ten", "i'll be right there"
@@ -513,16 +525,26 @@ class Tagger:
                 return end                                    # "the fridge door's open", "Bogdan has a question"
         return 0
 
+    def told_at(self, i: int) -> bool:
+        """Whether a clause said without "that" starts at ``i``, right after the person a verb of saying
+        tells ("tell mom *I'm late*", "tell the waiter *table 4 is ready*"): a statement, and only one
+        noun phrase between the verb and it."""
+        if self.verb_index < 0 or not self.statement_at(i):
+            return False
+        between = self.out[self.verb_index + 1:]
+        return all(t.tag in ("DET", "POSS", "WORD", "NAME", "PRON", "LABEL", "RESULT") for t in between) and \
+            sum(t.tag in ("PRON", "NAME") for t in between) <= 1
+
     def finite_form(self, k: int, end: int) -> bool:
         """Whether the word at ``k`` is a verb's third-person or past form followed by what a verb takes
         ("she *arrives on* the bus", "the light *keeps flashing*"), not a plural noun."""
         low = self.words[k].lower if k < end else ""
         lemma = verb_lemma(low) if low.isalpha() else None
-        if not lemma or lemma == low or not (low.endswith("s") or low.endswith("ed")):
-            return False
+        if not lemma or lemma == low or low.endswith("ing"):
+            return False                                      # irregular pasts too: "left", "brought"
         nxt = self.words[k + 1].lower if k + 1 < end else ""
         return bool(nxt) and (nxt in PREPOSITIONS or nxt in DETERMINERS or nxt in POSSESSIVES or nxt == "to"
-                              or bool(gerund_lemma(nxt)))
+                              or nxt in _OBJECT_PRONOUNS or bool(gerund_lemma(nxt)))   # "a guest *left* it"
 
     def vocatives_end(self, i: int) -> int:
         """Where words of address and tag questions starting at ``i`` end, commas between ("..., *dear*",
@@ -727,6 +749,10 @@ class Tagger:
                 self.out.append(Word(w.text, w.start, w.end, "SEP"))    # "Go to the kitchen. Find Robin."
                 expect_verb = True
                 i += 1
+                continue
+            if self.speech and self.prev_tag() in ("WORD", "NAME", "PRON", "LABEL") and self.told_at(i):
+                end = self.speech_end(i)
+                i += self._emit(i, end - i, "SAID")          # "tell him we need a cart": what is said, kept whole
                 continue
             if low == "please" and not expect_verb and i + 1 < len(words) and words[i + 1].lower not in END_MARKS:
                 i += 2 if i + 2 < len(words) and words[i + 1].lower == "," else 1
@@ -1158,7 +1184,7 @@ class Tagger:
                 k -= 1
             if k >= 0 and self.out[k].tag in ("DET", "POSS", "NUM"):
                 return self._emit(i, 1, "WORD")                  # "the red one"
-        if low == "that" and self.speech and prev in ("WORD", "NAME", "PRON") and \
+        if low == "that" and self.speech and prev in ("WORD", "NAME", "PRON", "LABEL") and \
                 (self.np_starts(i + 1) or self._next(i) == ","):
             self._emit(i, 1, "WH")                               # "tell the guest *that* dinner is ready":
             start = i + 1                                        # what is said is any clause, kept whole

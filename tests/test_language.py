@@ -994,3 +994,29 @@ def test_a_result_word_describes_a_thing_taken_from_somewhere_or_whose_state_the
     assert frames_of("heat the chilled soup in the microwave", library) == ["Heat"]      # Heat undoes cold
     assert frames_of("put a clean plate on the table", library) == ["Clean", "Place"]    # ALFRED's reading kept
     assert frames_of("put a heated egg in the fridge", library) == ["Heat", "Place"]
+
+
+def test_what_is_told_without_that_is_the_message(library: Library) -> None:
+    parse = parse_command("find the doorman and tell him we leave at noon", library)
+    tell = parse.frames[-1]
+    assert (tell.elements["recipient"].head, tell.elements["message"].text) == ("him", "we leave at noon")
+    assert tell.time is None                                         # the time is the message's, not the telling's
+    (tell,) = parse_command("tell dad im home", library).frames          # texting "im"
+    assert (tell.elements["recipient"].head, tell.elements["message"].text) == ("dad", "im home")
+    (tell,) = parse_command("tell the cook room 7 has no breakfast", library).frames
+    assert (tell.elements["recipient"].head, tell.elements["message"].text) == ("cook", "room 7 has no breakfast")
+    (tell,) = parse_command("tell the man in seat 12 that boarding starts at nine", library).frames
+    assert (tell.elements["recipient"].head, tell.elements["message"].text) == ("man", "boarding starts at nine")
+    (tell,) = parse_command("tell Joan the news", library).frames          # a noun phrase: as before
+    assert (tell.elements["recipient"].head, tell.elements["message"].text) == ("Joan", "the news")
+
+
+def test_more_statements_beside_the_command_are_remarks(library: Library) -> None:
+    parse = parse_command("turn the radio off, im studying", library)
+    assert ([f.frame for f in parse.frames], parse.remarks) == (["ToggleOff"], ("im studying",))
+    parse = parse_command("Look in the porch; the courier left a parcel there.", library)
+    assert parse.remarks == ("the courier left a parcel there",)
+    parse = parse_command("Room 9 is empty. Clean the bathroom in room 9.", library)
+    assert ([f.frame for f in parse.frames], parse.remarks) == (["Clean"], ("Room 9 is empty.",))
+    parse = parse_command("switch the lights off, we eat at eight", library)
+    assert parse.remarks == ("we eat at eight",)
