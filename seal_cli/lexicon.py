@@ -148,6 +148,8 @@ SUBJECTS = frozenset(["i", "he", "she", "we", "they", "it", "this", "that", "the
                       "everybody", "someone", "somebody", "nobody", "nothing", "everything"])
 """Pronouns that may start a statement said beside the command ("*it's* cold in here")."""
 _CONTRACTED = frozenset(["'s", "'re", "'m", "'ll", "'ve", "'d"])
+_LINKS = frozenset(["or", "otherwise", "because", "cause", "cos", "coz", "cuz", "since", "as", "so", "but"])
+"""Conjunctions before a statement after the request ("..., *or* it will melt", "..., *because* I'm cold")."""
 _OBJECT_PRONOUNS = frozenset(["it", "them", "him", "her", "me", "us", "this", "that"])
 _FIRST_PERSON = frozenset(["i", "we", "they"])
 """Subjects whose verb has its base form ("we *open* at six"): after them, any verb is finite."""
@@ -563,12 +565,14 @@ class Tagger:
     def remark_after(self, i: int) -> int:
         """After a comma that ends a request: words of address, tag questions and statements up to the end
         of the sentence ("..., *dear*? ...", "..., *she's been waiting a while*.", "..., *we're eating in
-        ten*"); how many words to drop (0: none). Only when nothing else follows in the sentence."""
+        ten*"), also after "or", "because", "so" ("..., *or it will melt*"); how many words to drop (0: none).
+        Only when nothing else follows in the sentence."""
         words = self.words
         k, spans = i + 1, []
         while True:
             k = self.vocatives_end(k)
-            end = self.statement_at(k)
+            link = 1 if k < len(words) and words[k].lower in _LINKS and k + 1 < len(words) else 0
+            end = self.statement_at(k + link)
             if not end:
                 break
             spans.append((words[k].start, words[end - 1].end))
@@ -594,7 +598,7 @@ class Tagger:
         if stated and stated < len(words) and words[stated].lower in (",", ";") and self.verb_after(stated + 1):
             self.remarks.append((words[i].start, words[stated - 1].end))
             return stated + 1 - i                        # "Bogdan has a question; answer it for him"
-        if verb_lemma(words[i].lower) == words[i].lower and not stated:
+        if verb_lemma(words[i].lower) == words[i].lower and not stated and not self.timed_noun(i):
             return 0                                     # "Grab the cup.": a verb the library lacks, an error
         end, comma = i, -1
         while end < len(words) and words[end].lower not in END_MARKS:
@@ -613,6 +617,16 @@ class Tagger:
             return 0                                     # no sentence holds a command: the error says so
         self.remarks.append((words[i].start, words[end].end))
         return end + 1 - i
+
+    def timed_noun(self, i: int) -> bool:
+        """Whether the sentence at ``i`` is a word that is no verb of the library and a time, and nothing
+        else ("*Dinner at eight.*", "*Checkout in ten minutes!*"): a statement without a verb."""
+        words = self.words
+        if words[i].lower in self.lexicon.units or i + 1 >= len(words) or \
+                words[i + 1].lower not in _CLOCK_PREPOSITIONS:
+            return False
+        n = self.clock_time(i + 1) or _match_phrase(words, i + 1, TIME_WORDS)
+        return bool(n) and i + 1 + n < len(words) and words[i + 1 + n].lower in END_MARKS
 
     def request_at(self, i: int) -> bool:
         """Whether a polite request starts at ``i``: politeness ("could you", "please", "robot", commas
@@ -706,6 +720,11 @@ class Tagger:
                         self.out.append(_merge(words, i, n, "POLITE"))
                         i += n
                         continue
+                if low == "you" and i + 1 < len(words) and verb_lemma(words[i + 1].lower) == words[i + 1].lower and \
+                        self.verb_at(i + 1):
+                    self.out.append(Word(w.text, w.start, w.end, "POLITE"))   # "You go to the hall", "please
+                    i += 1                                                     # you bring ...": still a request
+                    continue
                 n = self.lead_in(i)
                 if n:
                     i += n

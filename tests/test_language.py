@@ -1020,3 +1020,20 @@ def test_more_statements_beside_the_command_are_remarks(library: Library) -> Non
     assert ([f.frame for f in parse.frames], parse.remarks) == (["Clean"], ("Room 9 is empty.",))
     parse = parse_command("switch the lights off, we eat at eight", library)
     assert parse.remarks == ("we eat at eight",)
+
+
+def test_a_statement_after_or_because_and_a_verbless_sentence_with_a_time_are_remarks(library: Library) -> None:
+    parse = parse_command("close the freezer, or the ice will thaw", library)
+    assert ([f.frame for f in parse.frames], parse.remarks) == (["Close"], ("or the ice will thaw",))
+    parse = parse_command("Lunch in ten minutes. Switch on the oven.", library)
+    assert ([f.frame for f in parse.frames], parse.remarks) == (["ToggleOn"], ("Lunch in ten minutes.",))
+    with pytest.raises(CommandError, match="launch"):
+        parse_command("Launch in ten minutes.", library)               # no other sentence: an unknown verb still
+
+
+def test_you_before_an_imperative_verb_is_still_a_request(library: Library) -> None:
+    (frame,) = parse_command("please you open the window", library).frames
+    assert (frame.frame, frame.elements["theme"].head) == ("Open", "window")
+    parse = parse_command("You go to the garage and find the ladder.", library)
+    assert [(f.frame, next(iter(f.elements.values())).head) for f in parse.frames] == [("Go", "garage"),
+                                                                                        ("Find", "ladder")]
