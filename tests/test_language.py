@@ -999,7 +999,7 @@ def test_a_result_word_describes_a_thing_taken_from_somewhere_or_whose_state_the
 def test_what_is_told_without_that_is_the_message(library: Library) -> None:
     parse = parse_command("find the doorman and tell him we leave at noon", library)
     tell = parse.frames[-1]
-    assert (tell.elements["recipient"].head, tell.elements["message"].text) == ("him", "we leave at noon")
+    assert (tell.elements["recipient"].head, tell.elements["message"].text) == ("doorman", "we leave at noon")
     assert tell.time is None                                         # the time is the message's, not the telling's
     (tell,) = parse_command("tell dad im home", library).frames          # texting "im"
     assert (tell.elements["recipient"].head, tell.elements["message"].text) == ("dad", "im home")
@@ -1037,3 +1037,11 @@ def test_you_before_an_imperative_verb_is_still_a_request(library: Library) -> N
     parse = parse_command("You go to the garage and find the ladder.", library)
     assert [(f.frame, next(iter(f.elements.values())).head) for f in parse.frames] == [("Go", "garage"),
                                                                                         ("Find", "ladder")]
+
+
+def test_him_may_be_a_noun_nobody_knows_that_fills_an_element_a_person_may_fill(library: Library) -> None:
+    parse = parse_command("find the lifeguard and tell him that the pool closes at six", library)
+    recipient = parse.frames[1].elements["recipient"]
+    assert (recipient.head, recipient.refers_to) == ("lifeguard", (0, "theme"))
+    parse = parse_command("find the mug and give it to him", library)       # a known thing is no 'him'
+    assert parse.frames[1].elements["recipient"].refers_to is None
