@@ -1271,11 +1271,13 @@ class Builder:
     def person_by_role(self, target: tuple[int, str], phrase: Phrase) -> bool:
         """Whether a noun the library does not know as a person is one by the element it fills: an
         element typed person ("meet *the plumber*", Meet's theme), unless its class is known to be no
-        person; or a noun the taxonomy does not know at all that fills an element a person may fill ("find
-        *the bellhop*", Find's theme is any thing)."""
-        type_ = self.library.frame(self.frames[target[0]].frame).element(target[1]).type
+        person; or a noun the taxonomy does not know at all that fills the first element, one a person may
+        fill ("find *the bellhop*": Find's theme is any thing; not "in the kitchen", where it is)."""
+        evoked = self.library.frame(self.frames[target[0]].frame)
+        type_ = evoked.element(target[1]).type
         known = self.taxonomy.is_a(phrase.cls or phrase.head, "person")
-        if known is None and phrase.head.lower() not in PRONOUNS and self.taxonomy.is_a("person", type_) is True:
+        if known is None and phrase.head.lower() not in PRONOUNS and target[1] == evoked.elements[0].role and \
+                self.taxonomy.is_a("person", type_) is True:
             return True                               # "find the bellhop and tell him ...": one that may be a person
         return self.is_person_type(type_) and known is not False
 
