@@ -305,13 +305,14 @@ class Lexicon:
     ``results``: a participle or result adjective → (frame name, lexical unit).
     ``speech``: units of frames whose first element is a ``message`` or a ``question`` ("tell", "say",
     "answer"): after them a clause is what is said ("tell him *that dinner is ready*"), not a relative
-    clause or a condition.
+    clause or a condition. ``goals``: units of frames with a ``goal`` element ("follow", "go").
     """
 
     units: Mapping[str, tuple[tuple[str, ...], ...]]
     results: Mapping[str, tuple[str, str]]
     verbs: tuple[str, ...]
     speech: frozenset[str] = frozenset()
+    goals: frozenset[str] = frozenset()
 
     @classmethod
     def of(cls, library: Library) -> Lexicon:
@@ -321,8 +322,10 @@ class Lexicon:
             units.setdefault(words[0], []).append(words)
         speech = frozenset(unit.text for frame in library.frames if frame.elements
                            and frame.elements[0].type in ("message", "question") for unit in frame.lexical_units)
+        goals = frozenset(unit.text for frame in library.frames if any(e.role == "goal" for e in frame.elements)
+                          for unit in frame.lexical_units)
         return cls({w: tuple(us) for w, us in units.items()}, _result_words(library),
-                   tuple(sorted(library.by_unit)), speech)
+                   tuple(sorted(library.by_unit)), speech, goals)
 
     def verb_at(self, words: Sequence[Word], i: int, stop: int) -> tuple[str, int, int | None] | None:
         """The lexical unit that starts at word ``i``: (unit, words it covers contiguously,
@@ -618,6 +621,23 @@ class Tagger:
         self.remarks.append((words[i].start, words[end].end))
         return end + 1 - i
 
+    def until_place(self, i: int) -> bool:
+        """Whether "until"/"till" at ``i`` says how far a motion goes: after a verb of a frame with a goal,
+        a noun phrase with no verb and no time ("walk with her *until the corner*"); "until the bus
+        stops" (a noun then an -s form) stays a condition."""
+        words = self.words
+        if self.verb_index < 0 or str(self.out[self.verb_index].info) not in self.lexicon.goals or \
+                self.clock_time(i) or not self.np_starts(i + 1):
+            return False
+        end = self.cond_end(i + 1)
+        span = [w.lower for w in words[i + 1:end]]
+        if not span or any(x in FINITE or x in _CONTRACTED or x in SUBJECTS or x in TIME_UNITS
+                           or x in ("you", "i") or x in STATES_DONE for x in span) or \
+                any(gerund_lemma(x) and (k == 0 or span[k - 1] not in DETERMINERS) for k, x in enumerate(span)):
+            return False
+        return not (len(span) > 1 and span[-1].endswith("s") and span[-2] not in DETERMINERS
+                    and span[-2] not in POSSESSIVES)
+
     def timed_noun(self, i: int) -> bool:
         """Whether the sentence at ``i`` is a word that is no verb of the library and a time, and nothing
         else ("*Dinner at eight.*", "*Checkout in ten minutes!*"): a statement without a verb."""
@@ -680,7 +700,7 @@ class Tagger:
             return False
         if low in PREPOSITIONS and low not in ("one",):
             return False
-        return low not in ("and", "then", "please", "here", "there")
+        return low not in ("and", "then", "please", "here", "there", "until", "till")
 
     def prev_tag(self) -> str:
         return self.out[-1].tag if self.out else ""
@@ -790,6 +810,10 @@ class Tagger:
             if low == "to" and self.purpose(i):
                 self.out.append(Word(w.text, w.start, w.end, "SEP"))     # "take the remote to turn on the lamp"
                 expect_verb = True
+                i += 1
+                continue
+            if low in ("until", "till") and self.until_place(i):
+                self.out.append(Word(w.text, w.start, w.end, "PREP", "to"))   # "follow me until the gate"
                 i += 1
                 continue
             if (low in _SUB_FIRST or low in _REL_FIRST) and self.prev_tag() not in ("DET", "POSS", "NUM", "PREP"):
@@ -1293,7 +1317,7 @@ class Tagger:
         if i >= len(self.words):
             return False
         low = self.words[i].lower
-        if low in _CLOSED or low in END_MARKS or low in (",", ";", ":", "and", "then", "of", "please"):
+        if low in _CLOSED or low in END_MARKS or low in (",", ";", ":", "and", "then", "of", "please", "until", "till"):
             return low in NUMBERS and low != "one"
         return low not in PREPOSITIONS
 

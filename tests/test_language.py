@@ -1045,3 +1045,15 @@ def test_him_may_be_a_noun_nobody_knows_that_fills_an_element_a_person_may_fill(
     assert (recipient.head, recipient.refers_to) == ("lifeguard", (0, "theme"))
     parse = parse_command("find the mug and give it to him", library)       # a known thing is no 'him'
     assert parse.frames[1].elements["recipient"].refers_to is None
+
+
+def test_until_a_place_after_a_motion_is_its_goal(library: Library) -> None:
+    (frame,) = parse_command("walk with the old man until the crossing", library).frames
+    assert frame.elements["goal"].head == "crossing"
+    parse = parse_command("guide her until the lift, then open the door", library)
+    assert [(f.frame, f.elements.get("goal") and f.elements["goal"].head) for f in parse.frames] == [
+        ("Guide", "lift"), ("Open", None)]
+    (frame,) = parse_command("follow me until the bus stops", library).frames    # a clause: a condition
+    assert (frame.condition, "goal" in frame.elements) == ("until the bus stops", False)
+    (frame,) = parse_command("stir the soup until it thickens", library).frames
+    assert frame.condition == "until it thickens"
