@@ -93,7 +93,8 @@ def run(
 
 @command("tasks", on=bench_app)
 def tasks(
-    suite: str = typer.Option("alfred2d", "--suite", help="The task suite (only alfred2d so far)."),
+    suite: str = typer.Option("alfred2d", "--suite", help="alfred2d: ALFRED-2D's episodes; map: commands on "
+                              "one seal map over layouts drawn from its priors."),
     data: Path | None = typer.Option(None, "--data", help="The ALFRED-2D folder (default: ../shared/data/alfred2d "
                                      "beside the project).", show_default=False),
     split: str = typer.Option("valid_seen", "--split", help="Which split's episodes to run (priors always come "
@@ -104,6 +105,13 @@ def tasks(
                                      show_default=False),
     types: list[str] | None = typer.Option(None, "--type", help="Only this task type (repeatable).",
                                            show_default=False),
+    map_name: str = typer.Option("apartment", "--map", help="With --suite map: the map (a path or a shipped "
+                                 "map's name)."),
+    commands: list[str] | None = typer.Option(None, "--command", help="With --suite map: a command to run "
+                                              "(repeatable; default: five household commands).",
+                                              show_default=False),
+    layouts: int = typer.Option(10, "--layouts", min=1, help="With --suite map: object layouts drawn from the "
+                                "map's priors."),
     policies: str = typer.Option("sefm,object_only,coverage,oracle", "--policies",
                                  help="Comma-separated policies (uniform: SeFM without priors)."),
     jobs: int = typer.Option(0, "--jobs", min=0, help="Worker processes (0: one per core)."),
@@ -114,18 +122,19 @@ def tasks(
     framelib: list[Path] | None = FramelibOption,
     as_json: bool = JsonOption,
 ) -> None:
-    """Run every policy on the same ALFRED-2D episodes: success and path length per task type."""
+    """Run every policy on the same episodes: success and path length per task type (ALFRED-2D) or
+    per command (a seal map over layouts drawn from its priors)."""
     import json
 
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
-    from ..bench_tasks import run_suite, summarise
+    from ..bench_tasks import Outcome, run_suite, summarise
     from ..errors import SealError
 
     if data is None:
         data = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "alfred2d"
-    if suite != "alfred2d":
-        raise SealError(f"unknown suite {suite!r}; the only suite is alfred2d")
+    if suite not in ("alfred2d", "map"):
+        raise SealError(f"unknown suite {suite!r}; the suites are alfred2d and map")
     names = [p.strip() for p in policies.split(",") if p.strip()]
     if not names:
         raise SealError("--policies names no policy")
@@ -133,21 +142,32 @@ def tasks(
 
     for name in names:
         make_policy(name)
-    outcomes = []
+    outcomes: list[Outcome] = []
     with Progress(TextColumn("episodes"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), console=err,
                   transient=True, disable=not err.is_terminal) as progress:
         bar = progress.add_task("episodes", total=None)
-        for outcome in run_suite(data, split, names, goal=goal, limit=limit, types=types, seed=seed,
-                                 jobs=jobs or os.cpu_count() or 1, particles=particles,
-                                 framelib=[str(p) for p in framelib] if framelib else None,
-                                 progress=lambda done, total: progress.update(bar, completed=done, total=total)):
-            outcomes.append(outcome)
+        libs = [str(p) for p in framelib] if framelib else None
+        if suite == "map":
+            from ..mapsuite import COMMANDS, run_map_suite
+            from ..resources import map_path
+
+            runs = run_map_suite(str(map_path(map_name)), list(commands or COMMANDS), names, layouts=layouts,
+                                 seed=seed, jobs=jobs or os.cpu_count() or 1, particles=particles, framelib=libs,
+                                 progress=lambda done, total: progress.update(bar, completed=done, total=total))
+        else:
+            runs = run_suite(data, split, names, goal=goal, limit=limit, types=types, seed=seed,
+                             jobs=jobs or os.cpu_count() or 1, particles=particles, framelib=libs,
+                             progress=lambda done, total: progress.update(bar, completed=done, total=total))
+        outcomes.extend(runs)
     if episodes is not None:
         from ..fileio import atomic_write_text
 
         atomic_write_text(episodes, "".join(json.dumps(o.to_json()) + "\n" for o in outcomes))
     report = summarise(outcomes, names)
-    report.update({"suite": suite, "split": split, "goal": goal, "seed": seed, "limit": limit})
+    if suite == "map":
+        report.update({"suite": suite, "map": map_name, "layouts": layouts, "seed": seed})
+    else:
+        report.update({"suite": suite, "split": split, "goal": goal, "seed": seed, "limit": limit})
     if as_json:
         emit_json(report)
     else:
@@ -155,20 +175,27 @@ def tasks(
 
 
 def _table(report: dict[str, Any], names: list[str]) -> None:
-    table = Table(title=f"ALFRED-2D {report['split']}, goals from {report['goal']}: success rate / mean path (m)")
-    table.add_column("task type", no_wrap=True)
+    if report["suite"] == "map":
+        title = f"map {report['map']}, {report['layouts']} layouts: success rate / mean path (m)"
+    else:
+        title = f"ALFRED-2D {report['split']}, goals from {report['goal']}: success rate / mean path (m)"
+    table = Table(title=title)
+    table.add_column("task type" if report["suite"] != "map" else "command", no_wrap=True)
     table.add_column("n", justify="right", no_wrap=True)
     for name in names:
         table.add_column(name, justify="right", no_wrap=True)
-    table.add_column("expert m", justify="right", no_wrap=True)
+    expert_column = report["suite"] != "map"
+    if expert_column:
+        table.add_column("expert m", justify="right", no_wrap=True)
     for group, figures in report["groups"].items():
         cells = []
         for name in names:
             s, p = figures["success"][name], figures["path_m"][name]
             cells.append(f"{s:.2f} / {p:.2f}" if s is not None and p is not None else "—")
-        expert = figures.get("expert_path_m")
-        table.add_row(f"[bold]{group}[/bold]" if group == "all" else group, str(figures["n"]), *cells,
-                      f"{expert:.2f}" if expert is not None else "—")
+        if expert_column:
+            expert = figures.get("expert_path_m")
+            cells.append(f"{expert:.2f}" if expert is not None else "—")
+        table.add_row(f"[bold]{group}[/bold]" if group == "all" else group, str(figures["n"]), *cells)
     wide = 40 + 16 * len(names)
     if out.width >= wide:
         out.print(table)
