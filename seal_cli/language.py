@@ -618,10 +618,21 @@ class Builder:
             first = items.pop(0)
             if isinstance(first, NP):
                 objects.append(first)
+        self.recipient_first(verb, objects, items)
         self.second_object(verb, objects, items)
         message = self.message(items) or self.said(verb, objects, items)
         end = max([verb.end] + [self.end_of(x) for x in (*objects, *items)] + ([message.end] if message else []))
         return Clause(verb, objects, items, message, verb.start, end, held, sub, conditions)
+
+    def recipient_first(self, verb: Word, objects: list[NP], items: list[Any]) -> None:
+        """"give *to me* the remote", "bring to my son his coat": a "to" phrase naming a person right
+        after a verb whose frames have someone to receive, and then a noun phrase: that noun phrase is
+        the object (the order of many other languages)."""
+        if objects or len(items) < 2 or not isinstance(items[0], PP) or items[0].prep != "to" or \
+                items[0].np.kind != "person" or not isinstance(items[1], NP) or items[1].kind == "person" or \
+                not any("recipient" in self.taxonomy.roles(f) for f in self.library.evoked_by(str(verb.info))):
+            return
+        objects.append(items.pop(1))
 
     def second_object(self, verb: Word, objects: list[NP], items: list[Any]) -> None:
         """"give the man *in the gray suit* his coat": after a person and the phrases that describe them

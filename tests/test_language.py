@@ -1057,3 +1057,10 @@ def test_until_a_place_after_a_motion_is_its_goal(library: Library) -> None:
     assert (frame.condition, "goal" in frame.elements) == ("until the bus stops", False)
     (frame,) = parse_command("stir the soup until it thickens", library).frames
     assert frame.condition == "until it thickens"
+
+
+def test_the_person_said_first_with_to_and_then_the_thing(library: Library) -> None:
+    (frame,) = parse_command("hand to my wife the scissors", library).frames
+    assert (frame.elements["theme"].head, frame.elements["recipient"].head) == ("scissors", "wife")
+    (frame,) = parse_command("bring to the kitchen the cups", library).frames       # a place: as before
+    assert "theme" not in frame.elements
