@@ -470,16 +470,18 @@ class Tagger:
         return len(self.words)
 
     def verb_after(self, i: int) -> bool:
-        """Whether a verb (a lexical unit) starts at ``i``, after any politeness words."""
+        """Whether a verb (a lexical unit) starts at ``i``, after any politeness words; or at ``i`` itself,
+        a verb that is politeness only before another ("and *go* to the hall", not "go and get")."""
+        start = i
         while i < len(self.words):
             n = _match_phrase(self.words, i, POLITE)
             if n and self.words[i].lower not in ("to", "and", "then"):
                 i += n
                 continue
             break
-        if i >= len(self.words):
-            return False
-        return self.verb_at(i) is not None or self.use_at(i)
+        if i < len(self.words) and (self.verb_at(i) is not None or self.use_at(i)):
+            return True
+        return start < i and start < len(self.words) and self.verb_at(start) is not None
 
     def formula(self, i: int) -> int:
         """How many words a politeness formula said as a whole clause takes at ``i`` (0: none): it

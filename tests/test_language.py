@@ -1064,3 +1064,8 @@ def test_the_person_said_first_with_to_and_then_the_thing(library: Library) -> N
     assert (frame.elements["theme"].head, frame.elements["recipient"].head) == ("scissors", "wife")
     (frame,) = parse_command("bring to the kitchen the cups", library).frames       # a place: as before
     assert "theme" not in frame.elements
+
+
+def test_and_go_after_a_noun_phrase_is_a_new_clause(library: Library) -> None:
+    assert frames_of("fetch the kettle and go to the porch", library) == ["Pick", "Go"]
+    assert frames_of("go and get the kettle", library) == ["Pick"]             # politeness before a verb
