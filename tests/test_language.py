@@ -1069,3 +1069,9 @@ def test_the_person_said_first_with_to_and_then_the_thing(library: Library) -> N
 def test_and_go_after_a_noun_phrase_is_a_new_clause(library: Library) -> None:
     assert frames_of("fetch the kettle and go to the porch", library) == ["Pick", "Go"]
     assert frames_of("go and get the kettle", library) == ["Pick"]             # politeness before a verb
+
+
+def test_a_greeting_said_to_someone_is_greet_and_a_parting_is_said(library: Library) -> None:
+    (frame,) = parse_command("say good evening to the neighbours", library).frames
+    assert (frame.frame, frame.elements["theme"].head) == ("Greet", "neighbour")
+    assert frames_of("say good night to the twins", library) == ["Tell"]
