@@ -1147,6 +1147,8 @@ class Tagger:
         if self.prev_tag() in ("WORD", "NAME") and self.label_at(i):
             return self._emit(i, 1, "LABEL", low)              # "room 214", "table 9": no count
         n = _match_phrase(words, i, NUMBERS)
+        if n and self.prev_tag() == "PREP" and not self._noun_follows(i + n) and low not in ("one", "a", "an"):
+            return self._emit(i, n, "WORD")                    # "cut it into eight": so many pieces, a noun
         if n and not in_np and (low != "one" or self.np_starts(i + 1) and nxt not in PREPOSITIONS) and \
                 (n > 1 or low != "one" or self._noun_follows(i + 1)):
             return self._emit(i, n, "NUM", NUMBERS[" ".join(x.lower for x in words[i:i + n])])

@@ -1075,3 +1075,10 @@ def test_a_greeting_said_to_someone_is_greet_and_a_parting_is_said(library: Libr
     (frame,) = parse_command("say good evening to the neighbours", library).frames
     assert (frame.frame, frame.elements["theme"].head) == ("Greet", "neighbour")
     assert frames_of("say good night to the twins", library) == ["Tell"]
+
+
+def test_a_number_alone_after_a_preposition_is_no_count(library: Library) -> None:
+    parse = parse_command("chill the pie, then cut it into six.", library)
+    assert [(f.frame, f.elements["theme"].head) for f in parse.frames] == [("Cool", "pie"), ("Slice", "pie")]
+    (frame,) = parse_command("put two apples in the bowl", library).frames           # a count: as before
+    assert frame.elements["theme"].quantity == 2
