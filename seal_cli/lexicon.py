@@ -110,7 +110,8 @@ POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "wi
                     "would you be so kind as to", "would you be kind enough to", "be so kind as to",
                     "be kind enough to", "be good enough to", "do me a favor and",
                     "do me a favour and", "don't forget to", "do not forget to", "help me", "help me to", "help us",
-                    "make sure you", "see that you", "hi", "hello", "excuse me"])
+                    "make sure you", "see that you", "hi", "hello", "excuse me", "maybe", "perhaps", "oh", "ah",
+                    "ahh", "aw", "ugh", "urgh", "argh", "oops", "whoops", "sorry", "well", "gosh", "so"])
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
     "when you have a moment", "when you have a minute", "when you have a second", "when you have time",
@@ -135,9 +136,11 @@ VOCATIVES = frozenset(["dear", "dearie", "love", "darling", "sweetheart", "sweet
                        "buddy", "pal", "sir", "madam", "ma'am", "miss", "robot", "friend", "my dear", "my friend",
                        "my love", "old friend", "thanks", "thank you", "please", "would you", "could you",
                        "will you", "can you", "won't you", "wouldn't you", "would you please", "will you please",
-                       "could you please", "ok", "okay", "right", "yeah"])
+                       "could you please", "ok", "okay", "right", "yeah", "sorry", "ugh", "oh", "oops"])
 """Words of address and tags said after a request ("close the door, *dear*", "..., *would you*?",
 "pass me the salt, *love*, ..."): no part of the clause."""
+FILLERS = frozenset(["um", "umm", "ummm", "uh", "uhh", "uhm", "er", "erm", "ehm", "hmm", "hm", "mm", "mmm"])
+"""Hesitations ("and then, *um*, chill the juice"): no word of the command; dropped, with a comma after them."""
 FINITE = frozenset(["is", "are", "was", "were", "am", "'s", "has", "have", "had", "do", "does", "did", "can", "could",
                     "will", "would", "shall", "should", "must", "might", "may", "can't", "cannot", "couldn't",
                     "won't", "wouldn't", "shouldn't", "mustn't", "don't", "doesn't", "didn't", "isn't", "aren't",
@@ -438,13 +441,30 @@ def _capitalised(word: Word) -> bool:
     return text[:1].isupper() and any(c.islower() for c in text[1:])
 
 
+def _without_fillers(words: list[Word]) -> list[Word]:
+    """The words without hesitations ("um", "uh", ...) and the comma after one ("and, *um,* put it on the
+    bed"): they say nothing, so "and then, um, chill it" is "and then, chill it"."""
+    if not any(w.lower in FILLERS for w in words):
+        return words
+    kept: list[Word] = []
+    skip_comma = False
+    for w in words:
+        if w.lower in FILLERS:
+            skip_comma = True
+            continue
+        if not (skip_comma and w.lower == ","):
+            kept.append(w)
+        skip_comma = False
+    return kept
+
+
 class Tagger:
     """Tags the words of one command (see the module docstring). Not thread-safe; cheap to make."""
 
     def __init__(self, lexicon: Lexicon, words: list[Word], text: str = "") -> None:
         self.text = text
         self.lexicon = lexicon
-        self.words = words
+        self.words = _without_fillers(words)
         self.out: list[Word] = []
         self._verbs: dict[int, tuple[str, int, int | None] | None] = {}
         self.using = False                  # after "use X": "to" starts the clause of what X is used for
@@ -597,13 +617,19 @@ class Tagger:
         follows ("..., could you", "..., please"). Only a verb's base form makes a command: "my
         brother is *freezing*" states."""
         words = self.words
-        if i and words[i - 1].lower not in END_MARKS and any(t.tag != "POLITE" for t in self.out):
+        k = len(self.out) - 1
+        while k >= 0 and self.out[k].tag == "POLITE":
+            k -= 1                                       # "... Sorry, *gross*": interjections start it
+        if k >= 0 and not (self.out[k].tag == "SEP" and self.out[k].lower in END_MARKS):
             return 0                                     # inside a sentence
         stated = self.statement_at(i)
         if stated and stated < len(words) and words[stated].lower in (",", ";") and self.verb_after(stated + 1):
             self.remarks.append((words[i].start, words[stated - 1].end))
             return stated + 1 - i                        # "Bogdan has a question; answer it for him"
-        if verb_lemma(words[i].lower) == words[i].lower and not stated and not self.timed_noun(i):
+        said = any(t.tag == "VERB" for t in self.out)
+        alone = i + 1 == len(words) or words[i + 1].lower in END_MARKS      # "... *Gross.*": an adjective alone
+        if verb_lemma(words[i].lower) == words[i].lower and not stated and not self.timed_noun(i) and \
+                not (said and alone and is_adjective(words[i].lower)):
             return 0                                     # "Grab the cup.": a verb the library lacks, an error
         end, comma = i, -1
         while end < len(words) and words[end].lower not in END_MARKS:
@@ -614,7 +640,10 @@ class Tagger:
                 comma = end
             end += 1
         if end >= len(words):
-            return 0
+            if not said or stated:
+                return 0
+            self.remarks.append((words[i].start, words[-1].end))
+            return end - i                               # "pour it into the cup... *the blue one*": a fragment after
         while end + 1 < len(words) and words[end + 1].lower in END_MARKS:
             end += 1
         if not any(t.tag == "VERB" for t in self.out) and \
@@ -736,7 +765,7 @@ class Tagger:
                     i += 1
                     continue
                 n = _match_phrase(words, i, POLITE)
-                if n and not (n == 1 and low in ("and", "then") and not self.out) and (
+                if n and not (n == 1 and low in ("and", "then") and not self.out and not self.verb_after(i + 1)) and (
                         low in ("to", "and", "then") or self.verb_after(i + n) or i + n >= len(words)
                         or not self.verb_at(i)):
                         self.out.append(_merge(words, i, n, "POLITE"))
@@ -796,6 +825,10 @@ class Tagger:
                 i += self._emit(i, end - i, "SAID")          # "tell him we need a cart": what is said, kept whole
                 continue
             if low == "please" and not expect_verb and i + 1 < len(words) and words[i + 1].lower not in END_MARKS:
+                n = self.remark_after(i + 1) if words[i + 1].lower == "," else 0
+                if n:
+                    i += 1 + n       # "turn the heater on please, *I'm shivering*"
+                    continue
                 i += 2 if i + 2 < len(words) and words[i + 1].lower == "," else 1
                 continue                 # "bring me, please, a glass of juice": politeness inside the clause
             if low == "to" and self.out and (self.out[-1].lower in _INDEFINITE or len(self.out) > 1 and
@@ -890,6 +923,9 @@ class Tagger:
             low = words[k].lower
             if low in END_MARKS and k > j:
                 break
+            if low in (",", ";") and k > j and k + 1 < len(words) and \
+                    words[k + 1].lower.split("'")[0] == "i" and self.statement_at(k + 1):
+                break                # "tell Sam that the dog needs a walk, *I can't do it today*": the speaker's
             if low in (",", ";", ":", "and", "then", "but") and k > j:
                 n = _match_phrase(words, k, SEPARATOR_WORDS) or 1
                 m = k + n

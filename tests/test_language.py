@@ -1082,3 +1082,34 @@ def test_a_number_alone_after_a_preposition_is_no_count(library: Library) -> Non
     assert [(f.frame, f.elements["theme"].head) for f in parse.frames] == [("Cool", "pie"), ("Slice", "pie")]
     (frame,) = parse_command("put two apples in the bowl", library).frames           # a count: as before
     assert frame.elements["theme"].quantity == 2
+
+
+def test_hesitations_and_interjections_are_no_words_of_the_command(library: Library) -> None:
+    parse = parse_command("so, um, open the window and, uh, close the door", library)
+    assert [f.frame for f in parse.frames] == ["Open", "Close"]
+    (frame,) = parse_command("and then, erm, perhaps heat the soup in the pot", library).frames
+    assert (frame.frame, frame.elements["theme"].head) == ("Heat", "soup")
+    (frame,) = parse_command("oops, sorry, could you maybe wipe the counter", library).frames
+    assert frame.frame == "Clean"
+    (frame,) = parse_command("oh and fetch my slippers", library).frames
+    assert frame.elements["theme"].head == "slipper"
+    parse = parse_command("pass me the remote, oops", library)
+    assert ([f.frame for f in parse.frames], parse.remarks) == (["Give"], ())
+    for bad in ("uh", "hmm...", "oh"):
+        with pytest.raises(CommandError):
+            parse_command(bad, library)
+
+
+def test_a_fragment_after_the_command_and_a_remark_after_please_or_in_speech_are_dropped(library: Library) -> None:
+    parse = parse_command("put the stamp on the envelope... the big one", library)
+    assert ([f.frame for f in parse.frames], parse.remarks) == (["Place"], ("the big one",))
+    parse = parse_command("rinse the mugs... Lovely.", library)
+    assert ([f.frame for f in parse.frames], parse.remarks) == (["Clean"], ("Lovely.",))
+    parse = parse_command("open the garage please, we are leaving", library)
+    assert ([f.frame for f in parse.frames], parse.remarks) == (["Open"], ("we are leaving",))
+    parse = parse_command("tell Rob that the van is ready, I won't need it", library)
+    assert (parse.frames[0].elements["message"].text, parse.remarks) == ("the van is ready", ("I won't need it",))
+    with pytest.raises(CommandError, match="yank"):
+        parse_command("pick up the cup. yank the cord", library)       # a verb the library lacks: still an error
+    with pytest.raises(CommandError):
+        parse_command("the big one", library)
