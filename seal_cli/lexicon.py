@@ -129,7 +129,9 @@ SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "tha
              "u": "you", "ur": "your", "n": "and", "im": "i'm", "ive": "i've", "youre": "you're",
              "theyre": "they're", "thats": "that's", "dont": "don't", "doesnt": "doesn't", "didnt": "didn't",
              "isnt": "isn't", "arent": "aren't", "wasnt": "wasn't", "havent": "haven't", "couldnt": "couldn't",
-             "wouldnt": "wouldn't", "shouldnt": "shouldn't"}
+             "wouldnt": "wouldn't", "shouldnt": "shouldn't", "shes": "she's", "hes": "he's", "whats": "what's",
+             "theres": "there's", "wont": "won't", "cant": "can't", "wheres": "where's", "hows": "how's",
+             "ill": "i'll", "id": "i'd", "youll": "you'll", "weve": "we've", "theyve": "they've", "itll": "it'll"}
 """Texting spellings of function words ("turn the lights off *pls*", "open it *n* wipe it", "tell her
 *im* late"): read as the word they spell."""
 VOCATIVES = frozenset(["dear", "dearie", "love", "darling", "sweetheart", "sweetie", "honey", "hun", "pet", "mate",
@@ -153,6 +155,7 @@ SUBJECTS = frozenset(["i", "he", "she", "we", "they", "it", "this", "that", "the
 _CONTRACTED = frozenset(["'s", "'re", "'m", "'ll", "'ve", "'d"])
 _LINKS = frozenset(["or", "otherwise", "because", "cause", "cos", "coz", "cuz", "since", "as", "so", "but"])
 """Conjunctions before a statement after the request ("..., *or* it will melt", "..., *because* I'm cold")."""
+_BECAUSE = frozenset(["because", "cause", "'cause", "cos", "coz", "cuz", "'cos"])
 _OBJECT_PRONOUNS = frozenset(["it", "them", "him", "her", "me", "us", "this", "that"])
 _FIRST_PERSON = frozenset(["i", "we", "they"])
 """Subjects whose verb has its base form ("we *open* at six"): after them, any verb is finite."""
@@ -371,7 +374,8 @@ def _stands_alone(words: Sequence[Word], j: int) -> bool:
     if j + 1 >= len(words):
         return True
     after = words[j + 1].lower
-    return after in (",", ".", "!", "?", ";", "please") or after in PREPOSITIONS or after in SEPARATOR_WORDS
+    return after in (",", ".", "!", "?", ";", "please") or after in PREPOSITIONS or after in SEPARATOR_WORDS or \
+        after in _BECAUSE or "'" in after and after.split("'")[0] in SUBJECTS     # "turn it off *it's* too loud"
 
 
 def _result_words(library: Library) -> dict[str, tuple[str, str]]:
@@ -441,6 +445,20 @@ def _capitalised(word: Word) -> bool:
     return text[:1].isupper() and any(c.islower() for c in text[1:])
 
 
+def _its_is_it_is(words: Sequence[Word], k: int) -> bool:
+    """Whether "its" written without its apostrophe is "it's" ("*its* too loud", "*its* getting cold",
+    "*its* a mess"): a determiner, an adverb, a participle, or an adjective that ends the phrase follow it,
+    no noun ("its lid", "its red lid")."""
+    nxt = words[k + 1].lower if k + 1 < len(words) else ""
+    if not nxt.isalpha():
+        return False
+    if nxt in DETERMINERS or nxt in ("not", "been", "going", "gonna", "got") or gerund_lemma(nxt) or \
+            nxt not in _CLOSED and is_adverb(nxt):
+        return True
+    after = words[k + 2].lower if k + 2 < len(words) else ""
+    return is_adjective(nxt) and (not after.isalpha() or after in _CLOSED or after in SEPARATOR_WORDS)
+
+
 def _without_fillers(words: list[Word]) -> list[Word]:
     """The words without hesitations ("um", "uh", ...) and the comma after one ("and, *um,* put it on the
     bed"): they say nothing, so "and then, um, chill it" is "and then, chill it"."""
@@ -465,6 +483,9 @@ class Tagger:
         self.text = text
         self.lexicon = lexicon
         self.words = _without_fillers(words)
+        for k, w in enumerate(self.words):
+            if w.lower == "its" and _its_is_it_is(self.words, k):
+                w.lower = "it's"                        # "turn the radio off *its* too loud"
         self.out: list[Word] = []
         self._verbs: dict[int, tuple[str, int, int | None] | None] = {}
         self.using = False                  # after "use X": "to" starts the clause of what X is used for
@@ -586,6 +607,18 @@ class Tagger:
             else:
                 break
         return k
+
+    def remark_unmarked(self, i: int) -> int:
+        """A statement after the request with no comma before it, started by "because"/"cos"/... or a subject
+        contraction ("give the ball to Lily *cos she wants it*", "turn the radio off *it's too loud*"): how
+        many words to drop (0: none). A bare "she"/"I" after a noun may start a relative clause ("the book *I
+        left* on the sofa"), so only these."""
+        low = self.words[i].lower
+        if low not in _BECAUSE and not ("'" in low and low.split("'")[0] in SUBJECTS and
+                                        "'" + low.split("'", 1)[1] in _CONTRACTED):
+            return 0
+        n = self.remark_after(i - 1)
+        return n - 1 if n else 0
 
     def remark_after(self, i: int) -> int:
         """After a comma that ends a request: words of address, tag questions and statements up to the end
@@ -856,6 +889,12 @@ class Tagger:
                 if n:
                     i += n
                     expect_verb = self.prev_tag() == "SEP"
+                    continue
+            if not expect_verb and self.prev_tag() in ("WORD", "NAME", "PRON", "PARTICLE", "LABEL", "HERE") and \
+                    (low in _BECAUSE or "'" in low):
+                n = self.remark_unmarked(i)
+                if n:
+                    i += n                   # "give the ball to Lily cos she wants it"
                     continue
             if low in (",", ";") and not expect_verb:
                 n = self.remark_after(i)

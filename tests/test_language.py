@@ -1113,3 +1113,16 @@ def test_a_fragment_after_the_command_and_a_remark_after_please_or_in_speech_are
         parse_command("pick up the cup. yank the cord", library)       # a verb the library lacks: still an error
     with pytest.raises(CommandError):
         parse_command("the big one", library)
+
+
+def test_a_statement_after_the_request_without_a_comma_and_contractions_without_apostrophes(library: Library) -> None:
+    parse = parse_command("open the window cuz it's stuffy", library)
+    assert ([f.frame for f in parse.frames], parse.remarks) == (["Open"], ("cuz it's stuffy",))
+    parse = parse_command("switch the fan off its freezing", library)
+    assert ([f.frame for f in parse.frames], parse.remarks) == (["ToggleOff"], ("its freezing",))
+    parse = parse_command("greet the postman hes at the gate", library)
+    assert ([f.frame for f in parse.frames], parse.remarks) == (["Greet"], ("hes at the gate",))
+    (frame,) = parse_command("put the kettle on its base", library).frames    # a possessive before a noun
+    assert frame.elements["goal"].text == "its base"
+    (frame,) = parse_command("bring me the book I left on the sofa", library).frames   # a relative clause
+    assert frame.frame == "Bring"
