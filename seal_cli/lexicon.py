@@ -108,7 +108,8 @@ POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "wi
                     "just", "quickly", "carefully", "to", "try to", "then", "and", "also", "simply",
                     "let's", "let 's", "be sure to", "make sure to", "remember to", "go and", "come and", "go", "come",
                     "would you be so kind as to", "would you be kind enough to", "be so kind as to",
-                    "be kind enough to", "be good enough to", "do me a favor and",
+                    "be kind enough to", "be good enough to", "be so good as to", "would you be so good as to",
+                    "would you be good enough to", "could you be so kind as to", "do me a favor and",
                     "do me a favour and", "don't forget to", "do not forget to", "help me", "help me to", "help us",
                     "make sure you", "see that you", "hi", "hello", "excuse me", "maybe", "perhaps", "oh", "ah",
                     "ahh", "aw", "ugh", "urgh", "argh", "oops", "whoops", "sorry", "well", "gosh", "so"])
@@ -804,6 +805,11 @@ class Tagger:
                         self.out.append(_merge(words, i, n, "POLITE"))
                         i += n
                         continue
+                if low == "do" and i + 1 < len(words) and "do" not in self.lexicon.units and \
+                        verb_lemma(words[i + 1].lower) == words[i + 1].lower and self.verb_at(i + 1):
+                    self.out.append(Word(w.text, w.start, w.end, "POLITE"))   # emphatic "*Do* take his coat"
+                    i += 1
+                    continue
                 if low == "you" and i + 1 < len(words) and verb_lemma(words[i + 1].lower) == words[i + 1].lower and \
                         self.verb_at(i + 1):
                     self.out.append(Word(w.text, w.start, w.end, "POLITE"))   # "You go to the hall", "please
@@ -1381,6 +1387,9 @@ class Tagger:
         if not in_np and low.isalpha() and is_adverb(low) and prev != "DET":
             return self._emit(i, 1, "PARTICLE")                # "gather together", "put it carefully on ..."
         if _capitalised(w) and not in_np and prev != "WORD" and low not in _CLOSED:
+            if prev == "PREP" and low.endswith("s") and len(low) > 2 and self._noun_follows(i + 1) and \
+                    not _capitalised(self.words[i + 1]) and not gerund_lemma(nxt):
+                return self._emit(i, 1, "POSS", w.text[:-1])    # "in *Emmas* room": a possessive lacking its '
             if prev == "NAME":          # "Mary Ann": one name
                 last = self.out[-1]
                 self.out[-1] = Word(self.text_of(last.start, w.end), last.start, w.end, "NAME")

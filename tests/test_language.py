@@ -1126,3 +1126,18 @@ def test_a_statement_after_the_request_without_a_comma_and_contractions_without_
     assert frame.elements["goal"].text == "its base"
     (frame,) = parse_command("bring me the book I left on the sofa", library).frames   # a relative clause
     assert frame.frame == "Bring"
+
+
+def test_be_so_good_as_to_emphatic_do_and_a_possessive_without_its_apostrophe(library: Library) -> None:
+    (frame,) = parse_command("Would you be so good as to open the shutters?", library).frames
+    assert (frame.frame, frame.elements["theme"].head) == ("Open", "shutter")
+    (frame,) = parse_command("Be so good as to bring the tea tray.", library).frames
+    assert frame.elements["theme"].head == "tray"
+    (frame,) = parse_command("Do close the gate behind you.", library).frames
+    assert frame.frame == "Close"
+    (frame,) = parse_command("put the book on Toms desk", library).frames
+    assert (frame.elements["goal"].head, frame.elements["goal"].text) == ("desk", "Toms desk")
+    (frame,) = parse_command("bring Chris coffee", library).frames          # after the verb: two objects
+    assert (frame.elements["recipient"].head, frame.elements["theme"].head) == ("Chris", "coffee")
+    with pytest.raises(CommandError, match="do"):
+        parse_command("do it", library)
