@@ -1405,7 +1405,8 @@ class Tagger:
         if i >= len(self.words):
             return False
         low = self.words[i].lower
-        if low in _CLOSED or low in END_MARKS or low in (",", ";", ":", "and", "then", "of", "please", "until", "till"):
+        if low in _CLOSED or low in END_MARKS or low in (",", ";", ":", "and", "then", "of", "please") or \
+                low in _SUB_FIRST:                              # "on pallet 6 *before* they ship"
             return low in NUMBERS and low != "one"
         return low not in PREPOSITIONS
 
