@@ -51,6 +51,7 @@ from .lexicon import (
     tokenize,
 )
 from .library import Library
+from .morphology import is_gradable
 from .taxonomy import class_words
 
 if TYPE_CHECKING:
@@ -1460,8 +1461,8 @@ class Builder:
         frame, unit = found
         first = frame.elements[0].role
         whole = self.phrase(np, frame, first)
-        if whole.refers_to is not None or whole.cls is None and not (np.mods or np.of):
-            return                                         # no whole named: "take a slice" (see phrase)
+        if whole.refers_to is not None or whole.cls is None and not (_whole_named(np) or np.of):
+            return                                         # no whole named: "take a (little) slice" (see phrase)
         if any(e.frame == frame.name and first in e.elements and self.same_thing(e.elements[first], whole)
                for e in self.frames):
             return
@@ -1470,7 +1471,7 @@ class Builder:
     def cut_from(self, np: NP) -> tuple[int, str] | None:
         """For a piece that names no whole ("take *a slice*"), the theme of the latest frame that cut
         something in this command: what the piece was cut from."""
-        if np.head is None or np.head.tag != "WORD" or np.mods or np.of is not None or \
+        if np.head is None or np.head.tag != "WORD" or _whole_named(np) or np.of is not None or \
                 noun_lemma(np.head.text) not in PIECES:
             return None
         found = self.cutting(noun_lemma(np.head.text))
@@ -1602,3 +1603,9 @@ class Builder:
         if self.vocabulary is None:
             return name
         return self.vocabulary.ground_words(class_words(name)) or name
+
+
+def _whole_named(np: NP) -> bool:
+    """Whether a piece's modifiers name what it is cut from ("an *apple* slice"): a modifier that is no
+    gradable adjective ("the *little* piece", "a *thin* slice" say how it is, not of what)."""
+    return any(not is_gradable(m.lower) for m in np.mods)

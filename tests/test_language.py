@@ -1141,3 +1141,12 @@ def test_be_so_good_as_to_emphatic_do_and_a_possessive_without_its_apostrophe(li
     assert (frame.elements["recipient"].head, frame.elements["theme"].head) == ("Chris", "coffee")
     with pytest.raises(CommandError, match="do"):
         parse_command("do it", library)
+
+
+def test_a_number_before_a_subordinator_and_a_piece_described_by_a_gradable_adjective(library: Library) -> None:
+    (frame,) = parse_command("check the crates on shelf 4 before they leave", library).frames
+    assert (frame.elements["theme"].head, frame.condition) == ("crate", "before they leave")
+    parse = parse_command("cut the melon and give the big piece to Ann", library)
+    assert [f.frame for f in parse.frames] == ["Slice", "Give"]
+    assert parse.frames[1].elements["theme"].refers_to == (0, "theme")
+    assert frames_of("put a cheese slice on the bread", library)[0] == "Slice"   # a noun names the whole
