@@ -142,6 +142,11 @@ VOCATIVES = frozenset(["dear", "dearie", "love", "darling", "sweetheart", "sweet
                        "could you please", "ok", "okay", "right", "yeah", "sorry", "ugh", "oh", "oops"])
 """Words of address and tags said after a request ("close the door, *dear*", "..., *would you*?",
 "pass me the salt, *love*, ..."): no part of the clause."""
+TITLES = frozenset(["mr", "mrs", "ms", "mx", "miss", "dr", "prof", "st", "rev", "revd", "fr", "sr", "capt", "sgt",
+                    "lt", "col", "gen", "hon", "mme", "mlle", "messrs"])
+"""Titles written as abbreviations before a name ("*Mr.* Patel", "*Dr.* Ahmed", "*St.* Mary's"): their full
+stop ends no sentence, it is part of the word ("Mr."), and title and name are one name ("Mr. Patel")."""
+_NAME_AFTER = re.compile(r"\s+[^\W\d_]")
 FILLERS = frozenset(["um", "umm", "ummm", "uh", "uhh", "uhm", "er", "erm", "ehm", "hmm", "hm", "mm", "mmm"])
 """Hesitations ("and then, *um*, chill the juice"): no word of the command; dropped, with a comma after them."""
 FINITE = frozenset(["is", "are", "was", "were", "am", "'s", "has", "have", "had", "do", "does", "did", "can", "could",
@@ -285,6 +290,11 @@ def tokenize(text: str) -> list[Word]:
         kind = match.lastgroup
         if kind == "word":
             words.append(Word(match.group(), match.start(), pos))
+        elif kind == "punct" and match.group() == "." and words and words[-1].end == match.start() and \
+                words[-1].lower in TITLES and _capitalised(words[-1]) and _title_before_name(text, pos) and \
+                (len(words) < 2 or words[-2].lower not in DETERMINERS):     # "the Dr. Then ..." ends a sentence
+            title = words[-1]
+            words[-1] = Word(text[title.start:pos], title.start, pos)    # "Mr. Patel": the stop is the title's
         elif kind == "punct":           # "..." and "?!" are one mark
             words.append(Word(match.group()[0], match.start(), pos))
         elif kind == "amp":
@@ -294,6 +304,12 @@ def tokenize(text: str) -> list[Word]:
     if pos != len(text):
         raise CommandError(f"unexpected character {text[pos]!r}", pos + 1, text, ["a word"])
     return words
+
+
+def _title_before_name(text: str, pos: int) -> bool:
+    """Whether a capitalised word follows the title's stop at ``pos`` ("Mr. *Patel*"), not the end of the text."""
+    after = _NAME_AFTER.match(text, pos)
+    return after is not None and text[after.end() - 1].isupper()
 
 
 def _printable(text: str) -> str:

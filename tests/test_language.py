@@ -1150,3 +1150,19 @@ def test_a_number_before_a_subordinator_and_a_piece_described_by_a_gradable_adje
     assert [f.frame for f in parse.frames] == ["Slice", "Give"]
     assert parse.frames[1].elements["theme"].refers_to == (0, "theme")
     assert frames_of("put a cheese slice on the bread", library)[0] == "Slice"   # a noun names the whole
+
+
+def test_a_title_with_a_full_stop_is_part_of_one_name(library: Library) -> None:
+    (frame,) = parse_command("Follow Mrs. Ling to the library.", library).frames
+    assert (frame.frame, frame.elements["theme"].text) == ("Follow", "Mrs. Ling")
+    assert frame.elements["goal"].head == "library"
+    (frame,) = parse_command("Give Prof. Adeyemi the red folder", library).frames
+    assert (frame.elements["recipient"].head, frame.elements["theme"].head) == ("Prof. Adeyemi", "folder")
+    (frame,) = parse_command("put the mug on Mr. Olsen's desk", library).frames
+    assert (frame.elements["goal"].head, frame.elements["goal"].text) == ("desk", "Mr. Olsen's desk")
+    (frame,) = parse_command("greet Ms Varga at the door", library).frames      # no stop
+    assert frame.elements["theme"].text == "Ms Varga"
+    parse = parse_command("Greet the Dr. Then open the door.", library)     # after 'the': a sentence ends
+    assert [f.frame for f in parse.frames] == ["Greet", "Open"]
+    with pytest.raises(CommandError):
+        parse_command("Mr.", library)
