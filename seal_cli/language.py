@@ -1397,6 +1397,8 @@ class Builder:
             self.cut.update(id(c) for c in (np, *np.conjuncts))   # "cut a tomato slice": this frame cuts it
         for inner in np.inner:
             self.results_of(inner)
+        if np.results and role == "instrument":
+            np.results = []              # "wipe the table with a clean cloth": the tool as it is, no Clean first
         if np.results and frame.elements and role == frame.elements[0].role:
             if "source" in roles:
                 np.results = []          # "take the clean mugs out of the dishwasher": the thing as it is

@@ -1166,3 +1166,10 @@ def test_a_title_with_a_full_stop_is_part_of_one_name(library: Library) -> None:
     assert [f.frame for f in parse.frames] == ["Greet", "Open"]
     with pytest.raises(CommandError):
         parse_command("Mr.", library)
+
+
+def test_a_result_word_on_the_instrument_describes_the_tool(library: Library) -> None:
+    assert frames_of("stir the soup with a clean spoon", library) == ["Stir"]
+    (frame,) = parse_command("scrub the pan with a clean sponge", library).frames
+    assert (frame.frame, frame.elements["instrument"].head) == ("Clean", "sponge")
+    assert frames_of("put a clean plate on the table", library) == ["Clean", "Place"]   # the theme: still cleaned
