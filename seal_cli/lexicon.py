@@ -1068,9 +1068,9 @@ class Tagger:
         sub = " ".join(w.lower for w in words[i:i + n])
         j = i + n
         subject = words[j].lower
-        if subject in ("you", "we", "you've", "we've"):
+        if subject in ("you", "you've"):           # "before *we* open": the people's doing, a condition
             k = j + 1
-            if subject in ("you", "we") and k < len(words) and words[k].lower in ("have", "had"):
+            if subject == "you" and k < len(words) and words[k].lower in ("have", "had"):
                 k += 1
             if k < len(words) and (self.verb_at(k) is not None or self.verb_after(k)):
                 return "clause", k, sub

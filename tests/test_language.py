@@ -1173,3 +1173,11 @@ def test_a_result_word_on_the_instrument_describes_the_tool(library: Library) ->
     (frame,) = parse_command("scrub the pan with a clean sponge", library).frames
     assert (frame.frame, frame.elements["instrument"].head) == ("Clean", "sponge")
     assert frames_of("put a clean plate on the table", library) == ["Clean", "Place"]   # the theme: still cleaned
+
+
+def test_a_subordinate_clause_whose_subject_is_we_is_a_condition(library: Library) -> None:
+    (frame,) = parse_command("Look at the booking list before we open.", library).frames
+    assert (frame.frame, frame.condition) == ("LookAt", "before we open")
+    (frame,) = parse_command("once we have left, close the door", library).frames
+    assert (frame.frame, frame.condition) == ("Close", "once we have left")
+    assert frames_of("after you wash the cups, put them away", library) == ["Clean", "Place"]   # the robot's own
