@@ -162,6 +162,8 @@ _CONTRACTED = frozenset(["'s", "'re", "'m", "'ll", "'ve", "'d"])
 _LINKS = frozenset(["or", "otherwise", "because", "cause", "cos", "coz", "cuz", "since", "as", "so", "but"])
 """Conjunctions before a statement after the request ("..., *or* it will melt", "..., *because* I'm cold")."""
 _BECAUSE = frozenset(["because", "cause", "'cause", "cos", "coz", "cuz", "'cos"])
+_FREQUENCY = frozenset(["just", "still", "only", "even", "also", "often", "sometimes", "now", "again", "ever"])
+"""Adverbs before a finite verb that -ly does not mark ("the timer *just* went")."""
 _OBJECT_PRONOUNS = frozenset(["it", "them", "him", "her", "me", "us", "this", "that"])
 _FIRST_PERSON = frozenset(["i", "we", "they"])
 """Subjects whose verb has its base form ("we *open* at six"): after them, any verb is finite."""
@@ -581,14 +583,31 @@ class Tagger:
             return end                                        # "we're eating in ten", "i'll be right there"
         if first in SUBJECTS or first == "you" and nxt not in ("can", "could", "will", "would", "should", "must"):
             return end if nxt in FINITE or nxt in _CONTRACTED or self.finite_form(i + 1, end) else 0
-        if not (first in DETERMINERS or first in POSSESSIVES or _capitalised(words[i])):
+        partitive = first in _QUANTIFIERS and nxt == "of"       # "one of its wheels squeaks"
+        if not (first in DETERMINERS or first in POSSESSIVES or _capitalised(words[i]) or partitive):
             return 0
         for k in range(i + 1, end):
             if words[k - 1].lower in DETERMINERS or words[k - 1].lower in POSSESSIVES:
                 continue                                      # "the plates": a noun
             if words[k].lower in FINITE or self.finite_form(k, end):
                 return end                                    # "the fridge door's open", "Bogdan has a question"
+            if k == end - 1 and k > i + 1 and self.final_verb(k, partitive):
+                return end                                    # "the timer just went", "one of them squeaks"
         return 0
+
+    def final_verb(self, k: int, partitive: bool) -> bool:
+        """Whether the word at ``k``, ending its clause after the subject, is a finite verb with nothing
+        after it: a past form ("the kettle *boiled*"), or a present form after an adverb ("the bell
+        *always rings*") or after a partitive subject ("one of its wheels *squeaks*"); a word ending in
+        s after a noun alone may be a plural noun ("the kitchen plates")."""
+        low = self.words[k].lower
+        lemma = verb_lemma(low) if low.isalpha() else None
+        if not lemma or lemma == low or low.endswith("ing"):
+            return False
+        before = self.words[k - 1].lower
+        return not low.endswith("s") or partitive or is_adverb(before) or before in _FREQUENCY
+
+
 
     def told_at(self, i: int) -> bool:
         """Whether a clause said without "that" starts at ``i``, right after the person a verb of saying

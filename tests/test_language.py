@@ -1181,3 +1181,14 @@ def test_a_subordinate_clause_whose_subject_is_we_is_a_condition(library: Librar
     (frame,) = parse_command("once we have left, close the door", library).frames
     assert (frame.frame, frame.condition) == ("Close", "once we have left")
     assert frames_of("after you wash the cups, put them away", library) == ["Clean", "Place"]   # the robot's own
+
+
+def test_a_remark_whose_verb_ends_it(library: Library) -> None:
+    parse = parse_command("Switch the kettle off, the water just boiled.", library)
+    assert ([f.frame for f in parse.frames], parse.remarks) == (["ToggleOff"], ("the water just boiled",))
+    parse = parse_command("Look at the cart, one of its doors rattles.", library)
+    assert ([f.frame for f in parse.frames], parse.remarks) == (["LookAt"], ("one of its doors rattles",))
+    parse = parse_command("Open the window, the baby woke.", library)
+    assert ([f.frame for f in parse.frames], parse.remarks) == (["Open"], ("the baby woke",))
+    (frame,) = parse_command("pick up the cup, the spoons", library).frames    # plural nouns: a list
+    assert frame.elements["theme"].text == "the cup, the spoons"
