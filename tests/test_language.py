@@ -1192,3 +1192,10 @@ def test_a_remark_whose_verb_ends_it(library: Library) -> None:
     assert ([f.frame for f in parse.frames], parse.remarks) == (["Open"], ("the baby woke",))
     (frame,) = parse_command("pick up the cup, the spoons", library).frames    # plural nouns: a list
     assert frame.elements["theme"].text == "the cup, the spoons"
+
+
+def test_reheat_is_heat(library: Library) -> None:
+    (frame,) = parse_command("reheat the soup in the microwave", library).frames
+    assert (frame.frame, frame.elements["theme"].head) == ("Heat", "soup")
+    assert frame.elements["instrument"].head == "microwave"
+    assert frames_of("bring me the reheated pasta", library) == ["Heat", "Bring"]
