@@ -997,12 +997,15 @@ class Builder:
     def bringing(self, frames: Sequence[Frame]) -> list[Frame]:
         """For a verb of taking (a frame of it gets its theme in hand: Pick), the frames that take a
         thing in hand to someone (a recipient, and ``holding(theme)`` before): taking a thing for a
-        person is bringing it to them. Empty for any other verb."""
+        person is bringing it to them, so those that also say where it is taken from (a source) when
+        any does. Empty for any other verb."""
         if not any(self.achieves_holding(f) for f in frames):
             return []
-        return [f for f in self.library.frames if f not in frames and "recipient" in self.taxonomy.roles(f)
-                and f.elements and any(p.predicate == "holding" and p.args == (f.elements[0].role,)
-                                       and not p.negated for p in f.preconditions)]
+        handing = [f for f in self.library.frames if f not in frames and "recipient" in self.taxonomy.roles(f)
+                   and f.elements and any(p.predicate == "holding" and p.args == (f.elements[0].role,)
+                                          and not p.negated for p in f.preconditions)]
+        fetching = [f for f in handing if "source" in self.taxonomy.roles(f)]
+        return fetching or handing       # "grab me two eggs": taken from where they are, so Bring, not Give
 
     @staticmethod
     def achieves_holding(frame: Frame) -> bool:

@@ -1199,3 +1199,11 @@ def test_reheat_is_heat(library: Library) -> None:
     assert (frame.frame, frame.elements["theme"].head) == ("Heat", "soup")
     assert frame.elements["instrument"].head == "microwave"
     assert frames_of("bring me the reheated pasta", library) == ["Heat", "Bring"]
+
+
+def test_a_verb_of_taking_with_someone_to_receive_brings(library: Library) -> None:
+    (frame,) = parse_command("grab me three lemons", library).frames
+    assert (frame.frame, frame.elements["recipient"].head, frame.elements["theme"].quantity) == ("Bring", "me", 3)
+    (frame,) = parse_command("collect the post from the hall for Nadia", library).frames
+    assert (frame.frame, frame.elements["source"].head) == ("Bring", "hall")
+    assert frames_of("hand me the pepper", library) == ["Give"]            # a verb of giving still gives
