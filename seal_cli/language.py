@@ -1259,9 +1259,18 @@ class Builder:
                 if wanted_person is False and kind == "thing" and frame is not None and role is not None:
                     fits = self.taxonomy.is_a(phrase.cls or phrase.head, frame.element(role).type)
                     score += 3.0 if fits else -3.0 if fits is False else 0.0   # "close it": the fridge
+                if frame is not None and role is not None and self.undoes(frame, role, evoked.frame, name):
+                    score += 3.0       # "open the shed, grab the trowel, then close it": the shed opened
                 if best is None or score > best[0]:
                     best = (score, target[0], target[1], kind)
         return None if best is None else best[1:]
+
+    def undoes(self, frame: Frame, role: str, earlier: str, name: str) -> bool:
+        """Whether ``frame`` ends, on its element ``role``, a state the ``earlier`` frame gave its element
+        ``name`` (Close's ``not open(theme)`` undoes Open's ``open(theme)``)."""
+        ended = {p.predicate for p in frame.postconditions if p.negated and p.args == (role,)}
+        return bool(ended) and any(not p.negated and p.args == (name,) and p.predicate in ended
+                                   for p in self.library.frame(earlier).postconditions)
 
     def mentioned(self, np: NP, frame: Frame, role: str) -> Mention | None:
         """What a pronoun no frame's element can be stands for in a statement or condition said before it

@@ -1207,3 +1207,12 @@ def test_a_verb_of_taking_with_someone_to_receive_brings(library: Library) -> No
     (frame,) = parse_command("collect the post from the hall for Nadia", library).frames
     assert (frame.frame, frame.elements["source"].head) == ("Bring", "hall")
     assert frames_of("hand me the pepper", library) == ["Give"]            # a verb of giving still gives
+
+
+def test_a_pronoun_of_a_frame_that_undoes_an_earlier_result_is_that_frames_element(library: Library) -> None:
+    parse = parse_command("open the garage, take the ladder and close it", library)
+    assert parse.frames[2].elements["theme"].refers_to == (0, "theme")
+    parse = parse_command("switch on the radio, fetch the paper, then switch it off", library)
+    assert parse.frames[2].elements["theme"].refers_to == (0, "theme")
+    parse = parse_command("open the drawer, take out the spoon and put it on the table", library)
+    assert parse.frames[2].elements["theme"].refers_to == (1, "theme")     # no state undone: the latest
