@@ -30,7 +30,7 @@ from .errors import SealError
 from .frames import Binding
 from .library import Library, load_library
 
-__all__ = ["GOALS", "Outcome", "commands_for", "run_episode", "run_suite", "summarise"]
+__all__ = ["GOALS", "Outcome", "commands_for", "in_order", "run_episode", "run_suite", "summarise"]
 
 GOALS = ("gold", "human")
 
@@ -141,21 +141,23 @@ def run_suite(data_dir: str | Path, split: str, policies: Sequence[str], *, goal
     jobs = max(1, min(jobs or os.cpu_count() or 1, total or 1))
     work = [(i, tuple(policies), goal, seed, particles) for i in range(total)]
     init = (str(data_dir), split, limit, tuple(types) if types else None, tuple(framelib) if framelib else None)
-    done: dict[int, list[Outcome]] = {}
     if jobs == 1:
         _init_worker(*init)
         results: Iterable[tuple[int, list[Outcome]]] = map(_work, work)
-        yield from _ordered(results, done, total, progress)
+        yield from in_order(results, total, progress)
         return
     import multiprocessing
 
     context = multiprocessing.get_context("fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn")
     with context.Pool(jobs, initializer=_init_worker, initargs=init) as pool:
-        yield from _ordered(pool.imap_unordered(_work, work), done, total, progress)
+        yield from in_order(pool.imap_unordered(_work, work), total, progress)
 
 
-def _ordered(results: Iterable[tuple[int, list[Outcome]]], done: dict[int, list[Outcome]], total: int,
-             progress: Callable[[int, int], None] | None) -> Iterator[Outcome]:
+def in_order(results: Iterable[tuple[int, list[Outcome]]], total: int,
+             progress: Callable[[int, int], None] | None = None) -> Iterator[Outcome]:
+    """The outcomes of ``(index, outcomes)`` pairs that arrive in any order, yielded in index order
+    as soon as every earlier index has arrived; ``progress(done, total)`` after each arrival."""
+    done: dict[int, list[Outcome]] = {}
     following = 0
     for count, (index, outcomes) in enumerate(results, 1):
         done[index] = outcomes

@@ -24,7 +24,7 @@ from typing import Any
 
 import numpy as np
 
-from .bench_tasks import Outcome
+from .bench_tasks import Outcome, in_order
 from .library import Library, load_library
 from .maps import Map, ObjectTruth, load_map
 
@@ -117,26 +117,12 @@ def run_map_suite(map_path: str, commands: Sequence[str], policies: Sequence[str
         plan(problem.commanded, library, problem.state, text=text)
     work = [(i, tuple(commands), tuple(policies), seed, particles) for i in range(layouts)]
     jobs = max(1, min(jobs or os.cpu_count() or 1, layouts or 1))
-    done: dict[int, list[Outcome]] = {}
-    following = 0
     if jobs == 1:
         _WORKER.update(map=m, library=library)
-        results: Iterator[tuple[int, list[Outcome]]] = map(_work, work)
-        pool = None
-    else:
-        import multiprocessing
+        yield from in_order(map(_work, work), layouts, progress)
+        return
+    import multiprocessing
 
-        context = multiprocessing.get_context("fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn")
-        pool = context.Pool(jobs, initializer=_init_worker, initargs=(map_path, framelib))
-        results = pool.imap_unordered(_work, work)
-    try:
-        for count, (index, outcomes) in enumerate(results, 1):
-            done[index] = outcomes
-            if progress:
-                progress(count, layouts)
-            while following in done:
-                yield from done.pop(following)
-                following += 1
-    finally:
-        if pool is not None:
-            pool.terminate()
+    context = multiprocessing.get_context("fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn")
+    with context.Pool(jobs, initializer=_init_worker, initargs=(map_path, framelib)) as pool:
+        yield from in_order(pool.imap_unordered(_work, work), layouts, progress)
