@@ -1167,11 +1167,23 @@ class Builder:
             return None
         for role in options:
             if role in have and role not in roles:
-                if role == "instrument" and pp.prep != "with" and \
+                if role == "instrument" and pp.prep != "with" and not self.made_for(np, frame) and \
                         self.taxonomy.is_a(self.class_or_head(np), frame.element(role).type) is not True:
                     continue
                 return role
         return None
+
+    def made_for(self, np: NP, frame: Frame) -> bool:
+        """Whether the noun names a thing made for doing the frame: its head is the agent noun of one of
+        the frame's verbs and the library knows no class of it ("in the blanket *warmer*": warm, Heat)."""
+        if np.head is None or np.kind != "thing" or "instrument" not in frame.roles or \
+                self.taxonomy.is_a(self.class_or_head(np), frame.element("instrument").type) is not None:
+            return False
+        head = noun_lemma(np.head.text.split()[-1].lower())
+        if not head.endswith("er") or len(head) < 5:
+            return False
+        stems = {head[:-2], head[:-1], head[:-3]}     # warmer, cooler: warm, cool; freezer: freeze; cutter: cut
+        return any(u.text in stems for u in frame.lexical_units)
 
     def is_location(self, type_: str) -> bool:
         return self.taxonomy.is_location(type_)

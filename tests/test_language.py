@@ -1216,3 +1216,10 @@ def test_a_pronoun_of_a_frame_that_undoes_an_earlier_result_is_that_frames_eleme
     assert parse.frames[2].elements["theme"].refers_to == (0, "theme")
     parse = parse_command("open the drawer, take out the spoon and put it on the table", library)
     assert parse.frames[2].elements["theme"].refers_to == (1, "theme")     # no state undone: the latest
+
+
+def test_in_a_thing_named_for_the_frames_verb_is_its_instrument(library: Library) -> None:
+    (frame,) = parse_command("warm the towels in the towel warmer", library).frames
+    assert (frame.elements["theme"].text, frame.elements["instrument"].head) == ("the towels", "warmer")
+    (frame,) = parse_command("heat the soup in the pot", library).frames      # a pot is no heater: where it is
+    assert frame.elements["theme"].text == "the soup in the pot" and frame.elements["instrument"].default
