@@ -314,6 +314,18 @@ def _title_before_name(text: str, pos: int) -> bool:
     return after is not None and text[after.end() - 1].isupper()
 
 
+def _awaits_name(word: Word) -> bool:
+    """Whether a tagged word is a title whose name follows ("*Mr.* Hughes"): no noun phrase yet."""
+    return word.text.endswith(".") and word.lower.rstrip(".") in TITLES
+
+
+def _subject_word(word: Word) -> bool:
+    """Whether a word may only start a clause: a subject pronoun or its contraction ("we're", "I'll")."""
+    low = word.lower
+    return low in SUBJECTS and low not in _OBJECT_PRONOUNS or \
+        "'" in low and low.split("'")[0] in SUBJECTS and "'" + low.split("'", 1)[1] in _CONTRACTED
+
+
 def _printable(text: str) -> str:
     return _CONTROL.sub(" ", text)
 
@@ -613,11 +625,29 @@ class Tagger:
         """Whether a clause said without "that" starts at ``i``, right after the person a verb of saying
         tells ("tell mom *I'm late*", "tell the waiter *table 4 is ready*"): a statement, and only one
         noun phrase between the verb and it."""
-        if self.verb_index < 0 or not self.statement_at(i):
+        if self.verb_index < 0 or _awaits_name(self.out[-1]):
+            return False                                      # "tell Mr. | Hughes that ...": the title's name
+        if not self.statement_at(i) and not self.bare_subject(i):
             return False
         between = self.out[self.verb_index + 1:]
         return all(t.tag in ("DET", "POSS", "WORD", "NAME", "PRON", "LABEL", "RESULT") for t in between) and \
             sum(t.tag in ("PRON", "NAME") for t in between) <= 1
+
+    def bare_subject(self, i: int) -> bool:
+        """Whether a statement whose subject is a bare noun starts at ``i`` after a plural person noun
+        ("tell the kids *dinner is ready*"): one or two lowercase open words, then "is"/"has"/..."""
+        words, out = self.words, self.out
+        if len(out) < 2 or out[-1].tag != "WORD" or not is_plural(out[-1].lower) or \
+                out[-2].tag not in ("DET", "POSS", "NUM", "WORD"):
+            return False
+        for k in range(i, min(i + 2, len(words) - 1)):
+            low = words[k].lower
+            if not low.isalpha() or _capitalised(words[k]) or low in DETERMINERS or low in PRONOUNS or \
+                    low in PREPOSITIONS or low in POSSESSIVES or low in self.lexicon.units:
+                return False
+            if words[k + 1].lower in FINITE:
+                return True
+        return False
 
     def finite_form(self, k: int, end: int) -> bool:
         """Whether the word at ``k`` is a verb's third-person or past form followed by what a verb takes
@@ -894,6 +924,9 @@ class Tagger:
                 expect_verb = True
                 i += 1
                 continue
+            if self.speech and self.out and self.out[-1].lower == "her" and self.prev_tag() == "POSS" and \
+                    _subject_word(w) and self.told_at(i):
+                self.out[-1].tag = "PRON"                    # "tell *her* we're moving": her is the person told
             if self.speech and self.prev_tag() in ("WORD", "NAME", "PRON", "LABEL") and self.told_at(i):
                 end = self.speech_end(i)
                 i += self._emit(i, end - i, "SAID")          # "tell him we need a cart": what is said, kept whole

@@ -1011,6 +1011,21 @@ def test_what_is_told_without_that_is_the_message(library: Library) -> None:
     assert (tell.elements["recipient"].head, tell.elements["message"].text) == ("Joan", "the news")
 
 
+def test_told_after_a_title_a_plural_person_noun_or_her(library: Library) -> None:
+    (tell,) = parse_command("Tell Dr. Okafor that the taxi is waiting", library).frames
+    assert (tell.elements["recipient"].head, tell.elements["message"].text) == ("Dr. Okafor", "the taxi is waiting")
+    (tell,) = parse_command("tell Mrs. Quinn the parcel came", library).frames
+    assert (tell.elements["recipient"].head, tell.elements["message"].text) == ("Mrs. Quinn", "the parcel came")
+    (tell,) = parse_command("tell the kids dinner is ready", library).frames
+    assert (tell.elements["recipient"].text, tell.elements["message"].text) == ("the kids", "dinner is ready")
+    (tell,) = parse_command("tell her we're leaving at six", library).frames
+    assert (tell.elements["recipient"].text, tell.elements["message"].text) == ("her", "we're leaving at six")
+    (tell,) = parse_command("tell the twins stories", library).frames       # two noun phrases: as before
+    assert tell.elements["message"].head == "story"                       # no clause: no verb after the noun
+    (tell,) = parse_command("tell her mother to come down", library).frames  # her a possessive: as before
+    assert tell.elements["recipient"].head == "mother"
+
+
 def test_more_statements_beside_the_command_are_remarks(library: Library) -> None:
     parse = parse_command("turn the radio off, im studying", library)
     assert ([f.frame for f in parse.frames], parse.remarks) == (["ToggleOff"], ("im studying",))
