@@ -105,7 +105,7 @@ POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "wi
                     "could you please", "i want you to", "i need you to", "i would like you to",
                     "i'd like you to", "you should", "you must", "you need to", "you have to", "you will",
                     "you can", "go ahead and", "robot", "hey", "ok", "okay", "now", "first", "firstly",
-                    "just", "quickly", "carefully", "to", "try to", "then", "and", "also", "simply",
+                    "just", "quickly", "quick", "carefully", "to", "try to", "then", "and", "also", "simply",
                     "let's", "let 's", "be sure to", "make sure to", "remember to", "go and", "come and", "go", "come",
                     "would you be so kind as to", "would you be kind enough to", "be so kind as to",
                     "be kind enough to", "be good enough to", "be so good as to", "would you be so good as to",
@@ -862,6 +862,11 @@ class Tagger:
                 if not self.out and low in ("while", "after") and self.verb_after(i + 1):
                     self.out.append(Word(w.text, w.start, w.end, "POLITE"))   # "While holding a cup, ..."
                     i += 1
+                    continue
+                if i + 2 < len(words) and words[i + 1].lower == "," and is_adverb(low) and \
+                        (self.verb_after(i + 2) or words[i + 2].lower == "please"):
+                    self.out.append(_merge(words, i, 2, "POLITE"))      # "*Quietly,* please: turn off ..."
+                    i += 2
                     continue
                 n = _match_phrase(words, i, POLITE)
                 if n and not (n == 1 and low in ("and", "then") and not self.out and not self.verb_after(i + 1)) and (

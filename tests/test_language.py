@@ -1026,6 +1026,15 @@ def test_told_after_a_title_a_plural_person_noun_or_her(library: Library) -> Non
     assert tell.elements["recipient"].head == "mother"
 
 
+def test_a_leading_manner_adverb_and_quick_are_politeness(library: Library) -> None:
+    assert frames_of("Gently, please: put the baby in the cot", library) == ["Place"]
+    assert frames_of("Silently, open the door to the nursery", library) == ["Open"]
+    assert frames_of("Quick, shut the gate!", library) == ["Close"]
+    assert frames_of("give the sauce a quick stir", library) == ["Stir"]          # inside a noun phrase: as before
+    with pytest.raises(CommandError, match="'the'"):
+        parse_command("Quick, the gate", library)                                 # no verb: still an error
+
+
 def test_more_statements_beside_the_command_are_remarks(library: Library) -> None:
     parse = parse_command("turn the radio off, im studying", library)
     assert ([f.frame for f in parse.frames], parse.remarks) == (["ToggleOff"], ("im studying",))
