@@ -164,6 +164,11 @@ _LINKS = frozenset(["or", "otherwise", "because", "cause", "cos", "coz", "cuz", 
 _BECAUSE = frozenset(["because", "cause", "'cause", "cos", "coz", "cuz", "'cos"])
 _FREQUENCY = frozenset(["just", "still", "only", "even", "also", "often", "sometimes", "now", "again", "ever"])
 """Adverbs before a finite verb that -ly does not mark ("the timer *just* went")."""
+_NOMINATIVE = frozenset(["he", "she", "it", "someone", "somebody", "everyone", "everybody", "nobody", "nothing",
+                         "everything"])
+"""Subjects of a third-person verb: any inflected verb after them is finite ("he *likes* company")."""
+_LINKING = frozenset(["seem", "appear", "look", "sound", "feel", "smell", "taste", "become", "remain"])
+"""Linking verbs: their finite form makes a statement whatever follows ("the door *seems* loose")."""
 _OBJECT_PRONOUNS = frozenset(["it", "them", "him", "her", "me", "us", "this", "that"])
 _FIRST_PERSON = frozenset(["i", "we", "they"])
 """Subjects whose verb has its base form ("we *open* at six"): after them, any verb is finite."""
@@ -324,6 +329,23 @@ def _subject_word(word: Word) -> bool:
     low = word.lower
     return low in SUBJECTS and low not in _OBJECT_PRONOUNS or \
         "'" in low and low.split("'")[0] in SUBJECTS and "'" + low.split("'", 1)[1] in _CONTRACTED
+
+
+def _statement_lead(word: Word, nxt: Word) -> bool:
+    """Whether a word may lead a statement said beside the command: a sentence adverb ("*apparently*
+    they're staying"), or "and"/"then"/"quick" before a comma, an adverb or a subject ("*and* quick, it's
+    the next shot", "and then *it* goes ...")."""
+    low, after = word.lower, nxt.lower
+    if is_adverb(low) and low.endswith("ly"):
+        return True
+    return low in ("and", "then", "quick") and (after in (",", "quick", "then") or is_adverb(after) or
+                                                after in SUBJECTS or _subject_word(nxt))
+
+
+def _inflected(low: str) -> bool:
+    """Whether a word is a verb's third-person or past form ("likes", "left"), not its base or -ing form."""
+    lemma = verb_lemma(low) if low.isalpha() else None
+    return bool(lemma) and lemma != low and not low.endswith("ing")
 
 
 def _printable(text: str) -> str:
@@ -583,6 +605,9 @@ class Tagger:
             end += 1
         first = words[i].lower
         nxt = words[i + 1].lower if i + 1 < end else ""
+        if i + 1 < len(words) and _statement_lead(words[i], words[i + 1]):
+            k = i + 1 + (words[i + 1].lower == ",")          # "..., *apparently* they're staying", "and quick, it's"
+            return self.statement_at(k) if k < len(words) and not (_capitalised(words[i]) and k == i + 1) else 0
         if nxt.isascii() and nxt.isdigit() and i + 2 < end and words[i + 2].lower in FINITE and \
                 first not in self.lexicon.units:
             return end                                        # "Table 4 is ready", "room 12 has no towels"
@@ -594,15 +619,17 @@ class Tagger:
                 "'" + first.split("'", 1)[1] in _CONTRACTED:
             return end                                        # "we're eating in ten", "i'll be right there"
         if first in SUBJECTS or first == "you" and nxt not in ("can", "could", "will", "would", "should", "must"):
-            return end if nxt in FINITE or nxt in _CONTRACTED or self.finite_form(i + 1, end) else 0
+            return end if nxt in FINITE or nxt in _CONTRACTED or self.finite_form(i + 1, end) or \
+                first in _NOMINATIVE and _inflected(nxt) else 0     # "he *likes* company", "it *smells* like"
         partitive = first in _QUANTIFIERS and nxt == "of"       # "one of its wheels squeaks"
         if not (first in DETERMINERS or first in POSSESSIVES or _capitalised(words[i]) or partitive):
             return 0
         for k in range(i + 1, end):
             if words[k - 1].lower in DETERMINERS or words[k - 1].lower in POSSESSIVES:
                 continue                                      # "the plates": a noun
-            if words[k].lower in FINITE or self.finite_form(k, end):
-                return end                                    # "the fridge door's open", "Bogdan has a question"
+            if words[k].lower in FINITE or self.finite_form(k, end) or \
+                    verb_lemma(words[k].lower) in _LINKING and _inflected(words[k].lower):
+                return end                                    # "the fridge door's open", "the door *seems* loose"
             if k == end - 1 and k > i + 1 and self.final_verb(k, partitive):
                 return end                                    # "the timer just went", "one of them squeaks"
         return 0
@@ -702,6 +729,11 @@ class Tagger:
             spans.append((words[k].start, words[end - 1].end))
             k = end
             while k < len(words) and words[k].lower in (",", ";"):
+                k += 1
+            if spans and k < len(words) and (k + 1 == len(words) or words[k + 1].lower in END_MARKS) and \
+                    words[k].lower not in self.lexicon.units and \
+                    (is_adjective(words[k].lower) or words[k].lower.endswith("ing") and gerund_lemma(words[k].lower)):
+                spans.append((words[k].start, words[k].end))     # "..., someone left it open, *shocking*."
                 k += 1
         if k < len(words) and words[k].lower not in END_MARKS or k == i + 1:
             return 0

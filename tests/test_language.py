@@ -1046,6 +1046,23 @@ def test_more_statements_beside_the_command_are_remarks(library: Library) -> Non
     assert parse.remarks == ("we eat at eight",)
 
 
+def test_statements_with_a_third_person_verb_a_linking_verb_or_a_sentence_adverb_are_remarks(
+        library: Library) -> None:
+    parse = parse_command("close the window; she hates the draught", library)
+    assert ([f.frame for f in parse.frames], parse.remarks) == (["Close"], ("she hates the draught",))
+    parse = parse_command("check the tap in the bathroom, the washer sounds worn", library)
+    assert parse.remarks == ("the washer sounds worn",)
+    parse = parse_command("Shut the gate; somebody opened it again, typical.", library)
+    assert ([f.frame for f in parse.frames], parse.remarks) == (["Close"], ("somebody opened it again", "typical"))
+    parse = parse_command("Greet the Okoros; hopefully they're bringing dessert", library)
+    assert ([f.frame for f in parse.frames], parse.remarks) == (["Greet"], ("hopefully they're bringing dessert",))
+    parse = parse_command("Wipe the table, and quick, it's nearly noon.", library)
+    assert ([f.frame for f in parse.frames], parse.remarks) == (["Clean"], ("and quick, it's nearly noon",))
+    assert frames_of("pick up the cup, and then it goes in the sink", library) == ["Pick"]
+    with pytest.raises(CommandError, match="'sadly'"):
+        parse_command("Sadly, the door", library)                     # no statement, no verb: still an error
+
+
 def test_a_statement_after_or_because_and_a_verbless_sentence_with_a_time_are_remarks(library: Library) -> None:
     parse = parse_command("close the freezer, or the ice will thaw", library)
     assert ([f.frame for f in parse.frames], parse.remarks) == (["Close"], ("or the ice will thaw",))
