@@ -1399,12 +1399,14 @@ class Builder:
 
     def carry_on(self, frame: Frame, roles: Mapping[str, Any], attached: list[tuple[NP, PP]]) -> None:
         """"Put an apple in a pan *on the table*": a container the theme goes into, said to be in
-        or on a place, is put there too, after (a pan already there stays: the planner skips it)."""
+        or on a place, is put there too, after (a pan already there stays: the planner skips it).
+        Only when the frame's goal may be a place (a room is one): "pour water into the bowl *in
+        kennel 2*" says where the bowl is (Pour's goal is a container; the water is poured, not put)."""
         first = frame.elements[0].role if frame.elements else None
         relation = next((p for p in frame.postconditions if not p.negated and len(p.args) == 2
                          and p.args[0] == first and isinstance(roles.get(p.args[1]), NP)), None)
-        if relation is None:
-            return
+        if relation is None or self.taxonomy.is_a("room", frame.element(relation.args[1]).type) is not True:
+            return                                   # the goal may be no place: a container only
         goal = roles[relation.args[1]]
         for host, pp in attached:
             if host is goal and pp.prep in _PUT_IN and not pp.np.pronoun and goal.kind == "thing" and not pp.describes \

@@ -1035,6 +1035,12 @@ def test_a_leading_manner_adverb_and_quick_are_politeness(library: Library) -> N
         parse_command("Quick, the gate", library)                                 # no verb: still an error
 
 
+def test_a_place_after_the_goal_of_pour_says_where_the_goal_is(library: Library) -> None:
+    (pour,) = parse_command("pour the milk into the jug on the shelf", library).frames
+    assert (pour.frame, pour.elements["goal"].head) == ("Pour", "jug")
+    assert frames_of("put the spoon in a cup on the tray", library) == ["Place", "Place"]   # the cup goes there too
+
+
 def test_more_statements_beside_the_command_are_remarks(library: Library) -> None:
     parse = parse_command("turn the radio off, im studying", library)
     assert ([f.frame for f in parse.frames], parse.remarks) == (["ToggleOff"], ("im studying",))
