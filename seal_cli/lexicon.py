@@ -269,9 +269,11 @@ class Word:
 
 
 _TOKEN = re.compile(r"""
-    (?P<word>[^\W\d_]+(?:['’](?![sS]\b)[^\W\d_]+|-[^\W\d_]+)*|[0-9]+)   # letters, inner ' and -; numbers
+    (?P<word>[^\W\d_]+(?:['’](?![sS]\b)[^\W\d_]+|-[^\W_]+)*|[0-9]+(?:-[^\W_]+)*)   # letters, inner ' and -
+                                                           # ("t-shirt", "under-12s", "covid-19"); numbers
   | (?P<poss>['’]s\b)                                      # possessive 's (and is)
   | (?P<amp>&)
+  | (?P<dash>[—–]|-{2,}|(?<=\s)-(?=\s))                   # a dash between clauses reads as ";"
   | (?P<punct>[,;:.!?]+)
   | (?P<quote>["“”'‘’`()\[\]])                             # quotes and brackets are ignored
   | (?P<space>\s+)
@@ -306,6 +308,8 @@ def tokenize(text: str) -> list[Word]:
             words.append(Word(match.group()[0], match.start(), pos))
         elif kind == "amp":
             words.append(Word("and", match.start(), pos))
+        elif kind == "dash":
+            words.append(Word(";", match.start(), pos))
         elif kind == "poss":
             words.append(Word("'s", match.start(), pos))
     if pos != len(text):

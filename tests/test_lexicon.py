@@ -73,6 +73,23 @@ def test_tokenize_keeps_character_offsets() -> None:
         ["don't", "put", "the", "t-shirt", "and", "the", "cup"]
 
 
+def test_a_dash_between_clauses_reads_as_a_semicolon_and_hyphens_join_digits() -> None:
+    """An em or en dash, a double hyphen or a hyphen between spaces breaks clauses like ";"; a
+    hyphen inside a word joins letters and digits ("under-12s", "covid-19", "12-pack")."""
+    for dash in ("—", "–", "--", " - "):
+        words = tokenize(f"turn on the oven{dash}we open at noon")
+        assert [w.lower for w in words] == ["turn", "on", "the", "oven", ";", "we", "open", "at", "noon"]
+    assert [w.text for w in tokenize("the under-12s want a 12-pack of covid-19 tests")] == \
+        ["the", "under-12s", "want", "a", "12-pack", "of", "covid-19", "tests"]
+
+
+def test_a_remark_after_a_dash_is_set_aside(library: Library) -> None:
+    from seal_cli.language import parse_command
+
+    parse = parse_command("Switch the kettle on — the guests are here.", library)
+    assert [e.frame for e in parse.frames] == ["ToggleOn"] and parse.remarks == ("the guests are here",)
+
+
 @pytest.mark.parametrize(("text", "column"), [("go\x00", 3), ("go to the kitchen → now", 19)])
 def test_tokenize_refuses_what_is_not_text(text: str, column: int) -> None:
     with pytest.raises(CommandError) as caught:
