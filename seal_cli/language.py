@@ -32,14 +32,11 @@ from typing import TYPE_CHECKING, Any
 
 from lark import Tree
 
+from .english import FIRST_LATER, PERSON_PRONOUNS, PRONOUNS, SUBORDINATORS
 from .errors import SealError
 from .frames import Frame
 from .grounding import PIECES, PORTIONS
 from .lexicon import (
-    FIRST_LATER,
-    PERSON_PRONOUNS,
-    PRONOUNS,
-    SUBORDINATORS,
     CommandError,
     Lexicon,
     Mention,

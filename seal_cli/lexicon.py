@@ -7,7 +7,7 @@ words and tags each one, so that the grammar never lists a verb or a noun:
   included ("pick up", "tell me how many"); a particle verb may be split around its object
   ("pick the cup up", "turn the lamp on"). A frame with new lexical units makes new verbs;
 - **function words** (determiners, prepositions, pronouns, conjunctions, politeness) are the
-  closed classes of English, listed here;
+  closed classes of English, listed in :mod:`seal_cli.english`;
 - **every other word is open-class**: a noun, an adjective or a name (``NAME``: a capitalised
   word where a noun phrase starts). A word nobody has listed is never an error;
 - **result words** (``RESULT``): a participle of a lexical unit, or an adjective equal to the
@@ -27,6 +27,49 @@ import re
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
+from .english import (
+    AND_WORDS,
+    BASE_FORM_SUBJECTS,
+    BE_WORDS,
+    BECAUSE,
+    CLOCK_PREPOSITIONS,
+    CLOCK_WORDS,
+    CONTRACTED,
+    DETERMINERS,
+    END_MARKS,
+    FILLERS,
+    FINITE,
+    FREQUENCY_ADVERBS,
+    HERE_WORDS,
+    LINKING_VERBS,
+    NOMINATIVE,
+    NUMBERS,
+    OBJECT_PRONOUNS,
+    PARTICLES,
+    PARTITIVES,
+    PATH_PREPOSITIONS,
+    POLITE,
+    POLITE_FORMULAE,
+    POSSESSIVES,
+    PREPOSITIONS,
+    PRONOUNS,
+    QUANTIFIERS,
+    RELATIVES,
+    SEPARATOR_WORDS,
+    SPELLINGS,
+    STATEMENT_LINKS,
+    STATES_DONE,
+    SUBJECTS,
+    SUBORDINATORS,
+    THIRD_PERSON_SUBJECTS,
+    TIME_MEASURE,
+    TIME_UNITS,
+    TIME_WORDS,
+    TITLES,
+    VAGUE_NUMBERS,
+    VOCATIVES,
+    WH_WORDS,
+)
 from .errors import SealError, Where
 from .library import Library
 from .morphology import (
@@ -59,159 +102,7 @@ class CommandError(SealError):
 
 
 # ---------------------------------------------------------------------------------------------
-# Closed classes of English (function words). Open-class words are never listed.
-
-
-def _closed_class(*lines: str) -> frozenset[str]:
-    return frozenset(" ".join(lines).split())
-
-
-DETERMINERS = _closed_class("the a an some any this that these those each every all another both either no other such")
-NUMBERS = {"zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
-           "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "a couple of": 2, "a pair of": 2, "couple": 2,
-           "several": 3, "few": 3, "many": 3}
-POSSESSIVES = _closed_class("my your his her its our their")
-PRONOUNS = _closed_class("it them him her me you us they he she yourself myself himself herself themselves",
-                         "itself ourselves yourselves something someone somebody everything everyone everybody",
-                         "anything anyone anybody nothing one ones this that those these")
-PERSON_PRONOUNS = _closed_class("him her me you us he she yourself myself himself herself themselves ourselves",
-                                "yourselves someone somebody everyone everybody anyone anybody")
-PREPOSITIONS = {
-    "to": "to", "into": "into", "onto": "onto", "from": "from", "in": "in", "on": "on", "at": "at",
-    "under": "under", "underneath": "under", "beneath": "under", "below": "under", "with": "with",
-    "without": "without", "near": "near", "inside": "inside", "outside": "outside", "by": "by",
-    "beside": "by", "behind": "behind", "above": "above", "over": "over", "across": "across",
-    "through": "through", "toward": "to", "towards": "to", "around": "around", "between": "between",
-    "among": "between", "upon": "on", "within": "in", "off": "off", "for": "for", "about": "about",
-    "via": "via", "past": "past", "against": "against", "along": "along", "beyond": "beyond", "using": "with",
-    "out of": "out of", "next to": "near", "close to": "near", "near to": "near", "in front of": "in front of",
-    "on top of": "on", "inside of": "inside", "off of": "off", "away from": "from", "in between": "between",
-    "on to": "onto", "in to": "into", "up to": "to", "down to": "to", "over to": "to", "out from": "from",
-    "from inside": "from", "from within": "from", "from on top of": "from", "from under": "from",
-    "back to": "to", "back into": "into", "back onto": "onto", "back in": "in", "back on": "on",
-    "left of": "by", "right of": "by", "to the left of": "by", "to the right of": "by",
-    "on the left of": "by", "on the right of": "by",
-}
-PARTICLES = _closed_class("up down out off away back over on in around about aside along")
-WH_WORDS = _closed_class("what which who whom whose where when why how whether if")
-BE_WORDS = _closed_class("is are was were be am 's been being")
-SEPARATOR_WORDS = frozenset(["and", "then", ",", ";", ":", "after that", "afterwards", "next", "finally",
-                             "and then", "and after that", "after", "also", "once done", "when done",
-                             "and finally", "before", "while", "or", "as well as", "plus", "followed by",
-                             "as you", "while you"])
-AND_WORDS = frozenset(["and", "as well as", "plus"])
-"""Words that join like "and" (clauses or noun phrases)."""
-POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "will you", "would you mind",
-                    "could you please", "i want you to", "i need you to", "i would like you to",
-                    "i'd like you to", "you should", "you must", "you need to", "you have to", "you will",
-                    "you can", "go ahead and", "robot", "hey", "ok", "okay", "now", "first", "firstly",
-                    "just", "quickly", "quick", "carefully", "to", "try to", "then", "and", "also", "simply",
-                    "let's", "let 's", "be sure to", "make sure to", "remember to", "go and", "come and", "go", "come",
-                    "would you be so kind as to", "would you be kind enough to", "be so kind as to",
-                    "be kind enough to", "be good enough to", "be so good as to", "would you be so good as to",
-                    "would you be good enough to", "could you be so kind as to", "do me a favor and",
-                    "do me a favour and", "don't forget to", "do not forget to", "help me", "help me to", "help us",
-                    "make sure you", "see that you", "hi", "hello", "excuse me", "maybe", "perhaps", "oh", "ah",
-                    "ahh", "aw", "ugh", "urgh", "argh", "oops", "whoops", "sorry", "well", "gosh", "so"])
-POLITE_FORMULAE = frozenset([
-    "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
-    "when you have a moment", "when you have a minute", "when you have a second", "when you have time",
-    "when you have a sec", "when you can", "whenever you can", "whenever you get a chance",
-    "whenever you have a moment", "whenever you have time", "as soon as you can", "if you get a chance",
-    "if you have a chance", "if you have a moment", "if you have a minute", "if you have a second",
-    "if you have time", "if you can", "if possible", "if you please", "if you would", "if you don't mind",
-    "if you do not mind", "if it's not too much trouble", "if it is not too much trouble", "if you wouldn't mind",
-    "if you would not mind", "at your convenience", "when convenient", "when it's convenient", "no rush",
-    "no hurry"])
-"""Politeness said as a clause of its own ("*when you get a chance*, could you ..."; "... *if you don't
-mind*"): the robot's time is asked for, not a condition or a task. Only a whole clause: "if you can"
-followed by more of its clause ("if you can reach the shelf, ...") is a condition."""
-SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "thanks", "thanx": "thanks",
-             "u": "you", "ur": "your", "n": "and", "im": "i'm", "ive": "i've", "youre": "you're",
-             "theyre": "they're", "thats": "that's", "dont": "don't", "doesnt": "doesn't", "didnt": "didn't",
-             "isnt": "isn't", "arent": "aren't", "wasnt": "wasn't", "havent": "haven't", "couldnt": "couldn't",
-             "wouldnt": "wouldn't", "shouldnt": "shouldn't", "shes": "she's", "hes": "he's", "whats": "what's",
-             "theres": "there's", "wont": "won't", "cant": "can't", "wheres": "where's", "hows": "how's",
-             "ill": "i'll", "id": "i'd", "youll": "you'll", "weve": "we've", "theyve": "they've", "itll": "it'll"}
-"""Texting spellings of function words ("turn the lights off *pls*", "open it *n* wipe it", "tell her
-*im* late"): read as the word they spell."""
-VOCATIVES = frozenset(["dear", "dearie", "love", "darling", "sweetheart", "sweetie", "honey", "hun", "pet", "mate",
-                       "buddy", "pal", "sir", "madam", "ma'am", "miss", "robot", "friend", "my dear", "my friend",
-                       "my love", "old friend", "thanks", "thank you", "please", "would you", "could you",
-                       "will you", "can you", "won't you", "wouldn't you", "would you please", "will you please",
-                       "could you please", "ok", "okay", "right", "yeah", "sorry", "ugh", "oh", "oops"])
-"""Words of address and tags said after a request ("close the door, *dear*", "..., *would you*?",
-"pass me the salt, *love*, ..."): no part of the clause."""
-TITLES = frozenset(["mr", "mrs", "ms", "mx", "miss", "dr", "prof", "st", "rev", "revd", "fr", "sr", "capt", "sgt",
-                    "lt", "col", "gen", "hon", "mme", "mlle", "messrs"])
-"""Titles written as abbreviations before a name ("*Mr.* Patel", "*Dr.* Ahmed", "*St.* Mary's"): their full
-stop ends no sentence, it is part of the word ("Mr."), and title and name are one name ("Mr. Patel")."""
-_NAME_AFTER = re.compile(r"\s+[^\W\d_]")
-FILLERS = frozenset(["um", "umm", "ummm", "uh", "uhh", "uhm", "er", "erm", "ehm", "hmm", "hm", "mm", "mmm"])
-"""Hesitations ("and then, *um*, chill the juice"): no word of the command; dropped, with a comma after them."""
-FINITE = frozenset(["is", "are", "was", "were", "am", "'s", "has", "have", "had", "do", "does", "did", "can", "could",
-                    "will", "would", "shall", "should", "must", "might", "may", "can't", "cannot", "couldn't",
-                    "won't", "wouldn't", "shouldn't", "mustn't", "don't", "doesn't", "didn't", "isn't", "aren't",
-                    "wasn't", "weren't", "hasn't", "haven't", "hadn't", "ain't", "keeps", "needs", "wants"])
-"""Finite verbs that make a statement of what starts with a subject ("the bus *is* late", "she *can't*
-sleep"): auxiliaries, modals, "be" and "have"."""
-SUBJECTS = frozenset(["i", "he", "she", "we", "they", "it", "this", "that", "there", "these", "those", "everyone",
-                      "everybody", "someone", "somebody", "nobody", "nothing", "everything"])
-"""Pronouns that may start a statement said beside the command ("*it's* cold in here")."""
-_CONTRACTED = frozenset(["'s", "'re", "'m", "'ll", "'ve", "'d"])
-_LINKS = frozenset(["or", "otherwise", "because", "cause", "cos", "coz", "cuz", "since", "as", "so", "but"])
-"""Conjunctions before a statement after the request ("..., *or* it will melt", "..., *because* I'm cold")."""
-_BECAUSE = frozenset(["because", "cause", "'cause", "cos", "coz", "cuz", "'cos"])
-_FREQUENCY = frozenset(["just", "still", "only", "even", "also", "often", "sometimes", "now", "again", "ever"])
-"""Adverbs before a finite verb that -ly does not mark ("the timer *just* went")."""
-_NOMINATIVE = frozenset(["he", "she", "it", "someone", "somebody", "everyone", "everybody", "nobody", "nothing",
-                         "everything"])
-"""Subjects of a third-person verb: any inflected verb after them is finite ("he *likes* company")."""
-_LINKING = frozenset(["seem", "appear", "look", "sound", "feel", "smell", "taste", "become", "remain"])
-"""Linking verbs: their finite form makes a statement whatever follows ("the door *seems* loose")."""
-_OBJECT_PRONOUNS = frozenset(["it", "them", "him", "her", "me", "us", "this", "that"])
-_FIRST_PERSON = frozenset(["i", "we", "they"])
-"""Subjects whose verb has its base form ("we *open* at six"): after them, any verb is finite."""
-END_MARKS = frozenset(".!?")
-HERE_WORDS = frozenset(["here", "there", "over here", "over there", "upstairs", "downstairs", "indoors", "outdoors",
-                        "nearby", "elsewhere", "everywhere", "somewhere", "anywhere"])
-"""Words that name a place by themselves (deictic and directional adverbs): "come *here*", "bring it
-*upstairs*"."""
-TIME_WORDS = frozenset(["now", "later", "soon", "today", "tonight", "tomorrow", "again", "too", "first",
-                        "right away", "right now", "at once", "as well", "as soon as possible", "asap", "meanwhile",
-                        "in a minute", "in a moment", "for now", "this morning", "this evening", "tonight"])
-"""Time adverbials said after a verb's arguments ("put it in the fridge *right away*"): they say when,
-not what, and are no part of a noun phrase."""
-SUBORDINATORS = frozenset(["after", "before", "when", "whenever", "once", "as soon as", "until", "till", "if",
-                           "unless", "as long as", "in case", "while"])
-"""Words that start a subordinate clause: one of the robot's own ("*after you* wash them": a frame,
-ordered) or a condition on the world ("*when* the water boils": no frame, the frame's
-``condition``)."""
-FIRST_LATER = frozenset(["after", "when", "whenever", "once", "as soon as"])
-"""Subordinators whose clause is done before the main one ("put them away *after you* wash them")."""
-TIME_UNITS = frozenset(["second", "seconds", "minute", "minutes", "hour", "hours", "moment", "moments", "while",
-                        "day", "days", "week", "weeks"])
-"""Measures of time: "for *three minutes*", "every *few minutes*" say how long or how often."""
-NOMINATIVE = frozenset(["i", "he", "she", "we", "they"])
-"""Subject pronouns: never an object, so after a noun one starts a clause ("the book *I* left on the sofa")."""
-RELATIVES = frozenset(["that", "which", "who", "whom", "whose"])
-STATES_DONE = frozenset(["done", "finished", "ready", "there", "here", "back", "through"])
-"""What "once you are ___" says of the robot when it only sequences: "*once you're done*, ..." is "then"."""
-_CLOCK_PREPOSITIONS = frozenset(["at", "by", "until", "till", "around", "in", "before"])
-"""Prepositions of a time said with a number ("at three", "by 5 pm", "in ten minutes")."""
-_CLOCK_WORDS = frozenset(["am", "pm", "a.m.", "p.m.", "o'clock", "oclock", "sharp", "thirty", "fifteen",
-                          "fortyfive", "twenty", "forty", "fifty"])
-_TIME_MEASURE = frozenset(["a", "an", "few", "couple", "of", "several", "another", "other", "more", "little", "short",
-                           "good", "long"])
-"""Words between "for"/"every" and a unit of time ("for *a little* while", "every *few* minutes")."""
-_PATH = frozenset(["to", "into", "onto", "from", "out of", "off", "through", "via", "past", "across", "along"])
-"""Prepositions of a path: "down from the shelf *and over to* my chair" goes on one path."""
-_PARTITIVES = frozenset(["some", "any", "all", "both", "each", "more", "enough", "half"])
-"""Determiners that stand alone for a part of what was named ("pour *some* into the cup")."""
-_VAGUE_NUMBERS = frozenset(["one", "couple", "several", "few", "many"])
-"""Number words that count but never label ("the red *one*", "a *few*")."""
-_QUANTIFIERS = frozenset(["one", "two", "three", "four", "both", "all", "some", "each", "any", "none", "most",
-                          "either", "neither", "several", "many", "few"])
+# Phrases of closed-class words, and the first words of what the tagger looks at specially
 
 _PHRASES: dict[str, tuple[str, ...]] = {}
 for _table in (PREPOSITIONS, POLITE, POLITE_FORMULAE, SEPARATOR_WORDS, NUMBERS, HERE_WORDS, TIME_WORDS, SUBORDINATORS,
@@ -279,6 +170,7 @@ _TOKEN = re.compile(r"""
   | (?P<space>\s+)
 """, re.VERBOSE)
 _CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f]")
+_NAME_AFTER = re.compile(r"\s+[^\W\d_]")
 
 
 def tokenize(text: str) -> list[Word]:
@@ -331,8 +223,8 @@ def _awaits_name(word: Word) -> bool:
 def _subject_word(word: Word) -> bool:
     """Whether a word may only start a clause: a subject pronoun or its contraction ("we're", "I'll")."""
     low = word.lower
-    return low in SUBJECTS and low not in _OBJECT_PRONOUNS or \
-        "'" in low and low.split("'")[0] in SUBJECTS and "'" + low.split("'", 1)[1] in _CONTRACTED
+    return low in SUBJECTS and low not in OBJECT_PRONOUNS or \
+        "'" in low and low.split("'")[0] in SUBJECTS and "'" + low.split("'", 1)[1] in CONTRACTED
 
 
 def _statement_lead(word: Word, nxt: Word) -> bool:
@@ -432,7 +324,7 @@ def _stands_alone(words: Sequence[Word], j: int) -> bool:
         return True
     after = words[j + 1].lower
     return after in (",", ".", "!", "?", ";", "please") or after in PREPOSITIONS or after in SEPARATOR_WORDS or \
-        after in _BECAUSE or "'" in after and after.split("'")[0] in SUBJECTS     # "turn it off *it's* too loud"
+        after in BECAUSE or "'" in after and after.split("'")[0] in SUBJECTS     # "turn it off *it's* too loud"
 
 
 def _result_words(library: Library) -> dict[str, tuple[str, str]]:
@@ -617,22 +509,22 @@ class Tagger:
             return end                                        # "Table 4 is ready", "room 12 has no towels"
         if verb_lemma(first) == first and first not in SUBJECTS:
             return 0                                          # "Grab the cup": a command, maybe an unknown verb
-        if first in _FIRST_PERSON and nxt.isalpha() and nxt not in PREPOSITIONS:
+        if first in BASE_FORM_SUBJECTS and nxt.isalpha() and nxt not in PREPOSITIONS:
             return end                                        # "we open at six", "I need a hand": no command
         if "'" in first and first.split("'")[0] in SUBJECTS | {"you", "who", "what", "here"} and \
-                "'" + first.split("'", 1)[1] in _CONTRACTED:
+                "'" + first.split("'", 1)[1] in CONTRACTED:
             return end                                        # "we're eating in ten", "i'll be right there"
         if first in SUBJECTS or first == "you" and nxt not in ("can", "could", "will", "would", "should", "must"):
-            return end if nxt in FINITE or nxt in _CONTRACTED or self.finite_form(i + 1, end) or \
-                first in _NOMINATIVE and _inflected(nxt) else 0     # "he *likes* company", "it *smells* like"
-        partitive = first in _QUANTIFIERS and nxt == "of"       # "one of its wheels squeaks"
+            return end if nxt in FINITE or nxt in CONTRACTED or self.finite_form(i + 1, end) or \
+                first in THIRD_PERSON_SUBJECTS and _inflected(nxt) else 0     # "he *likes* company", "it *smells* like"
+        partitive = first in QUANTIFIERS and nxt == "of"       # "one of its wheels squeaks"
         if not (first in DETERMINERS or first in POSSESSIVES or _capitalised(words[i]) or partitive):
             return 0
         for k in range(i + 1, end):
             if words[k - 1].lower in DETERMINERS or words[k - 1].lower in POSSESSIVES:
                 continue                                      # "the plates": a noun
             if words[k].lower in FINITE or self.finite_form(k, end) or \
-                    verb_lemma(words[k].lower) in _LINKING and _inflected(words[k].lower):
+                    verb_lemma(words[k].lower) in LINKING_VERBS and _inflected(words[k].lower):
                 return end                                    # "the fridge door's open", "the door *seems* loose"
             if k == end - 1 and k > i + 1 and self.final_verb(k, partitive):
                 return end                                    # "the timer just went", "one of them squeaks"
@@ -648,7 +540,7 @@ class Tagger:
         if not lemma or lemma == low or low.endswith("ing"):
             return False
         before = self.words[k - 1].lower
-        return not low.endswith("s") or partitive or is_adverb(before) or before in _FREQUENCY
+        return not low.endswith("s") or partitive or is_adverb(before) or before in FREQUENCY_ADVERBS
 
 
 
@@ -689,7 +581,7 @@ class Tagger:
             return False                                      # irregular pasts too: "left", "brought"
         nxt = self.words[k + 1].lower if k + 1 < end else ""
         return bool(nxt) and (nxt in PREPOSITIONS or nxt in DETERMINERS or nxt in POSSESSIVES or nxt == "to"
-                              or nxt in _OBJECT_PRONOUNS or bool(gerund_lemma(nxt)))   # "a guest *left* it"
+                              or nxt in OBJECT_PRONOUNS or bool(gerund_lemma(nxt)))   # "a guest *left* it"
 
     def vocatives_end(self, i: int) -> int:
         """Where words of address and tag questions starting at ``i`` end, commas between ("..., *dear*",
@@ -711,8 +603,8 @@ class Tagger:
         many words to drop (0: none). A bare "she"/"I" after a noun may start a relative clause ("the book *I
         left* on the sofa"), so only these."""
         low = self.words[i].lower
-        if low not in _BECAUSE and not ("'" in low and low.split("'")[0] in SUBJECTS and
-                                        "'" + low.split("'", 1)[1] in _CONTRACTED):
+        if low not in BECAUSE and not ("'" in low and low.split("'")[0] in SUBJECTS and
+                                        "'" + low.split("'", 1)[1] in CONTRACTED):
             return 0
         n = self.remark_after(i - 1)
         return n - 1 if n else 0
@@ -726,7 +618,7 @@ class Tagger:
         k, spans = i + 1, []
         while True:
             k = self.vocatives_end(k)
-            link = 1 if k < len(words) and words[k].lower in _LINKS and k + 1 < len(words) else 0
+            link = 1 if k < len(words) and words[k].lower in STATEMENT_LINKS and k + 1 < len(words) else 0
             end = self.statement_at(k + link)
             if not end:
                 break
@@ -797,7 +689,7 @@ class Tagger:
             return False
         end = self.cond_end(i + 1)
         span = [w.lower for w in words[i + 1:end]]
-        if not span or any(x in FINITE or x in _CONTRACTED or x in SUBJECTS or x in TIME_UNITS
+        if not span or any(x in FINITE or x in CONTRACTED or x in SUBJECTS or x in TIME_UNITS
                            or x in ("you", "i") or x in STATES_DONE for x in span) or \
                 any(gerund_lemma(x) and (k == 0 or span[k - 1] not in DETERMINERS) for k, x in enumerate(span)):
             return False
@@ -809,7 +701,7 @@ class Tagger:
         else ("*Dinner at eight.*", "*Checkout in ten minutes!*"): a statement without a verb."""
         words = self.words
         if words[i].lower in self.lexicon.units or i + 1 >= len(words) or \
-                words[i + 1].lower not in _CLOCK_PREPOSITIONS:
+                words[i + 1].lower not in CLOCK_PREPOSITIONS:
             return False
         n = self.clock_time(i + 1) or _match_phrase(words, i + 1, TIME_WORDS)
         return bool(n) and i + 1 + n < len(words) and words[i + 1 + n].lower in END_MARKS
@@ -1006,7 +898,7 @@ class Tagger:
                     expect_verb = self.prev_tag() == "SEP"
                     continue
             if not expect_verb and self.prev_tag() in ("WORD", "NAME", "PRON", "PARTICLE", "LABEL", "HERE") and \
-                    (low in _BECAUSE or "'" in low):
+                    (low in BECAUSE or "'" in low):
                 n = self.remark_unmarked(i)
                 if n:
                     i += n                   # "give the ball to Lily cos she wants it"
@@ -1306,7 +1198,7 @@ class Tagger:
                 return n
         m = _match_phrase(words, j, PREPOSITIONS) if low == "and" and n == 1 else 0
         if m and self.prev_tag() in ("WORD", "NAME", "PRON") and self.np_starts(j + m) and \
-                PREPOSITIONS[" ".join(w.lower for w in words[j:j + m])] in _PATH and \
+                PREPOSITIONS[" ".join(w.lower for w in words[j:j + m])] in PATH_PREPOSITIONS and \
                 not any(self.verb_at(k) for k in range(j, self.cond_end(j))):
             return n                 # "down from the shelf *and* over to my chair": one path, phrases in a row
         if low == "or" and self.prev_tag() in ("WORD", "NAME", "PRON") and _match_phrase(words, j, PREPOSITIONS):
@@ -1355,7 +1247,7 @@ class Tagger:
                 self.out[-1] = Word(f"{last.text}'s", last.start, words[i].end, "POSS", last.text)
                 return 1
             return self._emit(i, 1, "BE")
-        if not in_np and low in _QUANTIFIERS and nxt == "of" and i + 2 < len(words) and \
+        if not in_np and low in QUANTIFIERS and nxt == "of" and i + 2 < len(words) and \
                 (words[i + 2].lower in DETERMINERS or words[i + 2].lower in POSSESSIVES):
             number = NUMBERS.get(low)            # "both of the cups", "one of the books"
             return self._emit(i, 2, "DET" if number is None else "NUM", number)
@@ -1370,7 +1262,7 @@ class Tagger:
         if k < len(words) and low != "in" and words[k].lower in ("half", "quarter") and k + 1 < len(words) and \
                 words[k + 1].lower in ("past", "to"):
             k += 2                                              # "at half past six"
-        if k >= len(words) or not (words[k].lower in NUMBERS and words[k].lower not in _VAGUE_NUMBERS
+        if k >= len(words) or not (words[k].lower in NUMBERS and words[k].lower not in VAGUE_NUMBERS
                                    or words[k].lower.isascii() and words[k].lower.isdigit()):
             return 0
         digits = words[k].lower.isdigit()
@@ -1379,7 +1271,7 @@ class Tagger:
             return k + 1 - i                                    # "in ten minutes", "by 5 hours"
         if low == "in" and digits:
             return 0                                            # "the guests in 305": a place
-        while k < len(words) and words[k].lower in _CLOCK_WORDS:
+        while k < len(words) and words[k].lower in CLOCK_WORDS:
             k += 1                                              # "at 5 pm", "at three thirty", "at 4 o'clock"
         if k < len(words) and self._noun_follows(k) and words[k].lower not in NUMBERS:
             return 0
@@ -1390,7 +1282,7 @@ class Tagger:
         "meeting room *three*", "table *9*"): one number (digits, or a number word other than "one"),
         with no noun after it to count ("give the kids *two* apples" counts)."""
         low = self.words[i].lower
-        if not (low.isascii() and low.isdigit() or low in NUMBERS and low not in _VAGUE_NUMBERS):
+        if not (low.isascii() and low.isdigit() or low in NUMBERS and low not in VAGUE_NUMBERS):
             return False
         if i + 1 < len(self.words) and self.words[i + 1].lower in TIME_UNITS:
             return False                                        # "wait ten minutes"
@@ -1405,12 +1297,12 @@ class Tagger:
             return self._emit(i, n, "PARTICLE", "time")        # "put it in the fridge right away"
         if low in ("for", "every", "each") and self.prev_tag() not in ("VERB", "PREP"):
             k = i + 1                                          # "for three minutes", "every few minutes"
-            while k < len(words) and (words[k].lower in _TIME_MEASURE or words[k].lower in NUMBERS
+            while k < len(words) and (words[k].lower in TIME_MEASURE or words[k].lower in NUMBERS
                                       or words[k].lower.isdigit()):
                 k += 1
             if k < len(words) and words[k].lower in TIME_UNITS:
                 return self._emit(i, k + 1 - i, "PARTICLE", "time")
-        if low in _CLOCK_PREPOSITIONS and self.prev_tag() != "PREP":
+        if low in CLOCK_PREPOSITIONS and self.prev_tag() != "PREP":
             n = self.clock_time(i)
             if n:
                 return self._emit(i, n, "PARTICLE", "time")        # "meet her at three", "in ten minutes"
@@ -1467,7 +1359,7 @@ class Tagger:
             return self._emit(i, 1, "BE")
         if low in POSSESSIVES and (low != "her" or self._noun_follows(i + 1)):
             return self._emit(i, 1, "POSS")
-        if low in _PARTITIVES and self.prev_tag() == "VERB" and not self._noun_follows(i + 1) and \
+        if low in PARTITIVES and self.prev_tag() == "VERB" and not self._noun_follows(i + 1) and \
                 nxt not in DETERMINERS and nxt not in POSSESSIVES and nxt not in NUMBERS and nxt != "of":
             return self._emit(i, 1, "PRON")                    # "pour *some* into the cup": some of it
         if low in DETERMINERS and (low not in ("that", "this", "these", "those") or self._noun_follows(i + 1)):

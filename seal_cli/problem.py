@@ -163,7 +163,7 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
             text: str) -> tuple[str, ...]:
     """The things a phrase names: its antecedent's for a pronoun, else its class (counted if asked);
     every conjunct's for a coordination."""
-    from .lexicon import PERSON_PRONOUNS, PRONOUNS
+    from .english import PERSON_PRONOUNS, PRONOUNS
 
     if phrase.conjuncts:        # "the apple and the pear": both
         return tuple(dict.fromkeys(v for c in phrase.conjuncts for v in _values(c, earlier, things, text)))
