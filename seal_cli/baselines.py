@@ -49,6 +49,16 @@ def container_views(agent: Agent, field_: np.ndarray, containers: Sequence[Known
     return views
 
 
+def _one_per_quarter_metre(cells: np.ndarray, resolution: float) -> np.ndarray:
+    """Which of the cells (rows of i, j) lie on a lattice of about 0.25 m: all of them on a grid that
+    coarse or coarser, one in ``stride²`` on a finer one. The searchers that pay a shortest-path
+    field or a line-of-sight query per candidate cell thin their candidates with it."""
+    stride = max(1, round(0.25 / resolution))
+    if stride == 1:
+        return np.ones(len(cells), dtype=bool)
+    return (cells[:, 0] % stride == 0) & (cells[:, 1] % stride == 0)
+
+
 class CoveragePolicy:
     """Go to the nearest frontier of the seen area, or the nearest unopened receptacle.
 
@@ -115,10 +125,8 @@ class CoveragePolicy:
         grid = agent.grid
         points, cells = grid.free_points, grid.free_cells
         here = agent.robot_cell()
-        stride = max(1, round(0.25 / grid.resolution))
         candidate = np.isfinite(costs) & ~((cells[:, 0] == here[0]) & (cells[:, 1] == here[1]))
-        if stride > 1:
-            candidate &= (cells[:, 0] % stride == 0) & (cells[:, 1] % stride == 0)
+        candidate &= _one_per_quarter_metre(cells, grid.resolution)
         order = np.flatnonzero(candidate)
         order = order[np.argsort(costs[order], kind="stable")]
         tree = cKDTree(self.lattice[unseen])
@@ -215,11 +223,8 @@ class OraclePolicy:
         a few centimetres of path)."""
         if known.id not in self._cells:
             cells = agent.stand_cells(known)
-            stride = max(1, round(0.25 / agent.grid.resolution))
-            if stride > 1:
-                thin = cells[(cells[:, 0] % stride == 0) & (cells[:, 1] % stride == 0)]
-                cells = thin if len(thin) else cells
-            self._cells[known.id] = cells
+            thin = cells[_one_per_quarter_metre(cells, agent.grid.resolution)]
+            self._cells[known.id] = thin if len(thin) else cells
         return self._cells[known.id]
 
     def _between(self, agent: Agent, a: Known, b: Known) -> np.ndarray:

@@ -70,12 +70,13 @@ def run_layout(m: Map, layout: int, commands: Sequence[str], library: Library, p
     from .agent import run_on_map
     from .baselines import make_policy
 
-    world = sample_layout(m, np.random.default_rng(layout_seed(seed, layout, m.name)))
+    base = layout_seed(seed, layout, m.name)
+    world = sample_layout(m, np.random.default_rng(base))
     outcomes = []
     for c, text in enumerate(commands):
         for name in policies:
             start = time.perf_counter()
-            rng = np.random.default_rng(layout_seed(seed, layout, m.name) + 1 + c)
+            rng = np.random.default_rng(base + 1 + c)
             _, result = run_on_map(world, text, library, make_policy(name, particles), rng=rng)
             outcomes.append(Outcome(f"{m.name}-layout{layout}-{c}", text, name, result.completed,
                                     round(result.path_m, 3), result.steps, result.reason, float("nan"),
@@ -105,16 +106,13 @@ def run_map_suite(map_path: str, commands: Sequence[str], policies: Sequence[str
     outcomes in layout order. The map and every command are checked (parsed and planned) first,
     so a bad one is an error before any run."""
     from .grounding import vocabulary_of_map
-    from .language import parse_command
-    from .planning import plan
-    from .problem import build_problem
+    from .planning import plan_text
 
     m = load_map(map_path)
     library = load_library(framelib)
     vocabulary = vocabulary_of_map(m)
     for text in commands:     # a command that cannot be parsed or planned fails here, cleanly
-        problem = build_problem(parse_command(text, library, vocabulary), library)
-        plan(problem.commanded, library, problem.state, text=text)
+        plan_text(text, library, vocabulary=vocabulary)
     work = [(i, tuple(commands), tuple(policies), seed, particles) for i in range(layouts)]
     jobs = max(1, min(jobs or os.cpu_count() or 1, layouts or 1))
     if jobs == 1:

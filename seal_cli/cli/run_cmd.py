@@ -146,6 +146,10 @@ def tasks(
     with Progress(TextColumn("episodes"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), console=err,
                   transient=True, disable=not err.is_terminal) as progress:
         bar = progress.add_task("episodes", total=None)
+
+        def advance(done: int, total: int) -> None:
+            progress.update(bar, completed=done, total=total)
+
         libs = [str(p) for p in framelib] if framelib else None
         if suite == "map":
             from ..mapsuite import COMMANDS, run_map_suite
@@ -153,11 +157,11 @@ def tasks(
 
             runs = run_map_suite(str(map_path(map_name)), list(commands or COMMANDS), names, layouts=layouts,
                                  seed=seed, jobs=jobs or os.cpu_count() or 1, particles=particles, framelib=libs,
-                                 progress=lambda done, total: progress.update(bar, completed=done, total=total))
+                                 progress=advance)
         else:
             runs = run_suite(data, split, names, goal=goal, limit=limit, types=types, seed=seed,
                              jobs=jobs or os.cpu_count() or 1, particles=particles, framelib=libs,
-                             progress=lambda done, total: progress.update(bar, completed=done, total=total))
+                             progress=advance)
         outcomes.extend(runs)
     if episodes is not None:
         from ..fileio import atomic_write_text
