@@ -597,11 +597,18 @@ def test_room_index_is_exact(specs: list, resolution: float, seed: int) -> None:
     assert np.array_equal(m.room_index(points), m._room_index_exact(points))
 
 
-def test_a_number_too_large_for_a_float_is_a_located_error(tmp_path: Path) -> None:
-    text = APARTMENT.read_text().replace("resolution: 0.05", "resolution: " + "1" * 400)
-    bad = tmp_path / "huge.yaml"
-    bad.write_text(text)
+def _edited_apartment(tmp_path: Path, name: str, old: str, new: str) -> Path:
+    """A copy of the shipped apartment in ``tmp_path`` (with its image) where ``old`` reads ``new``."""
+    text = APARTMENT.read_text()
+    assert old in text
+    bad = tmp_path / name
+    bad.write_text(text.replace(old, new, 1))
     (tmp_path / "apartment.pgm").write_bytes((APARTMENT.parent / "apartment.pgm").read_bytes())
+    return bad
+
+
+def test_a_number_too_large_for_a_float_is_a_located_error(tmp_path: Path) -> None:
+    bad = _edited_apartment(tmp_path, "huge.yaml", "resolution: 0.05", "resolution: " + "1" * 400)
     result = CliRunner().invoke(app, ["map", str(bad), "--png", str(tmp_path / "x.png")])
     assert result.exit_code == 1, result.output
     assert f"{bad}:7:13: resolution must be a positive number" in result.stderr
@@ -614,11 +621,7 @@ def test_a_number_too_large_for_a_float_is_a_located_error(tmp_path: Path) -> No
 ])
 def test_a_range_or_reach_beyond_any_building_is_refused(tmp_path: Path, old: str, new: str, where: str,
                                                          message: str) -> None:
-    text = APARTMENT.read_text()
-    assert old in text
-    bad = tmp_path / "far.yaml"
-    bad.write_text(text.replace(old, new, 1))
-    (tmp_path / "apartment.pgm").write_bytes((APARTMENT.parent / "apartment.pgm").read_bytes())
+    bad = _edited_apartment(tmp_path, "far.yaml", old, new)
     for args in (["map", str(bad)], ["localize", "--map", str(bad), "--steps", "1", "--particles", "10",
                                      "--png", str(tmp_path / "x.png")]):
         result = CliRunner().invoke(app, args)
@@ -633,11 +636,7 @@ def test_a_range_or_reach_beyond_any_building_is_refused(tmp_path: Path, old: st
 ])
 def test_a_class_a_plan_cannot_name_is_refused_where_it_is(tmp_path: Path, old: str, new: str, where: str,
                                                            message: str) -> None:
-    text = APARTMENT.read_text()
-    assert old in text
-    bad = tmp_path / "odd.yaml"
-    bad.write_text(text.replace(old, new, 1))
-    (tmp_path / "apartment.pgm").write_bytes((APARTMENT.parent / "apartment.pgm").read_bytes())
+    bad = _edited_apartment(tmp_path, "odd.yaml", old, new)
     for args in (["map", str(bad)], ["plan", "--map", str(bad), "bring the apple to the bed"]):
         result = CliRunner().invoke(app, args)
         assert result.exit_code == 1, result.output
