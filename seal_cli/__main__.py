@@ -1,5 +1,5 @@
 """``python -m seal_cli`` runs the ``seal`` command line."""
 
-from .cli import main
+from seal_cli.cli import main
 
 main()

@@ -17,7 +17,7 @@ from typing import Any
 
 import yaml
 
-from .errors import SealError, Where
+from seal_cli.errors import SealError, Where
 
 __all__ = ["LOADER", "atomic_output", "atomic_write_text", "read_json_lines", "read_text", "read_yaml"]
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from .errors import SealError
+from seal_cli.errors import SealError
 
 __all__ = ["data_dir", "framelib_dir", "grammar_path", "map_path", "maps_dir"]
 

@@ -15,7 +15,7 @@ from typing import TypeVar
 
 import yaml
 
-from .errors import SealError, Where
+from seal_cli.errors import SealError, Where
 
 __all__ = ["NodeReader", "is_null", "shape", "suggest"]
 

@@ -19,13 +19,13 @@ from typing import Any
 import numpy as np
 from typer.testing import CliRunner
 
-from seal_cli.beliefs import SeFM
 from seal_cli.cli import app
 from seal_cli.cli.localize_cmd import _plan
-from seal_cli.library import Library, load_library
-from seal_cli.maps import Map, load_map
-from seal_cli.potentials import GridKernelSums
-from seal_cli.sensor import visible_region
+from seal_cli.frames.library import Library, load_library
+from seal_cli.maps.model import Map, load_map
+from seal_cli.sefm.filter import SeFM
+from seal_cli.sefm.potentials import GridKernelSums
+from seal_cli.sensing.sensor import visible_region
 from tests.conftest import DATA
 from tests.sefm_houses import AWS_OBJECTS, AWS_TRAJECTORY, aws_house
 

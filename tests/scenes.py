@@ -4,14 +4,14 @@ from __future__ import annotations
 
 import numpy as np
 
-from seal_cli.agent import Scene
-from seal_cli.geometry import OccupancyGrid
-from seal_cli.library import Library
-from seal_cli.maps import Map, ObjectTruth, Place, Robot, Room, Sensor
-from seal_cli.navigation import Grid
-from seal_cli.world import Item, World
-from seal_cli.world import Robot as WorldRobot
-from seal_cli.world import Sensor as WorldSensor
+from seal_cli.frames.library import Library
+from seal_cli.maps.geometry import OccupancyGrid
+from seal_cli.maps.model import Map, ObjectTruth, Place, Robot, Room, Sensor
+from seal_cli.sim.agent import Scene
+from seal_cli.sim.navigation import Grid
+from seal_cli.sim.world import Item, World
+from seal_cli.sim.world import Robot as WorldRobot
+from seal_cli.sim.world import Sensor as WorldSensor
 
 
 def kitchen(library: Library, *, apple_in: str = "fridge_1", priors: bool = True) -> Scene:

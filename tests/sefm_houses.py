@@ -17,8 +17,8 @@ from pathlib import Path
 import numpy as np
 import yaml
 
-from seal_cli.geometry import OccupancyGrid
-from seal_cli.maps import Map, ObjectTruth, Place, Robot, Room, Sensor
+from seal_cli.maps.geometry import OccupancyGrid
+from seal_cli.maps.model import Map, ObjectTruth, Place, Robot, Room, Sensor
 
 PAPER_PRIORS = {"cup": {"family_room": 0.5, "bedroom": 0.5}, "spoon": {"kitchen": 0.5, "bedroom": 0.5}}
 

@@ -18,8 +18,8 @@ from typing import Any, TypeVar
 import typer
 from rich.console import Console
 
-from .. import __version__
-from ..errors import SealError, SealErrors
+from seal_cli import __version__
+from seal_cli.errors import SealError, SealErrors
 
 __all__ = ["app", "bench_app", "command", "emit_json", "err", "main", "out"]
 

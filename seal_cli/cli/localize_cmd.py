@@ -9,10 +9,10 @@ from typing import TYPE_CHECKING, Any
 import typer
 from rich.table import Table
 
-from . import FramelibOption, JsonOption, command, emit_json, framelib_paths, out
+from seal_cli.cli import FramelibOption, JsonOption, command, emit_json, framelib_paths, out
 
 if TYPE_CHECKING:
-    from ..observations import Observation
+    from seal_cli.sensing.observations import Observation
 
 
 def _rooms(rooms: dict[str, float], top: int = 3) -> str:
@@ -74,14 +74,14 @@ def localize(
     """Run SeFM: where each frame of the tasks' plans can be executed, and where each object is."""
     import numpy as np
 
-    from ..beliefs import SeFM, SeFMConfig
-    from ..errors import SealError
-    from ..fileio import atomic_output
-    from ..library import load_library
-    from ..maps import load_map
-    from ..observations import check_inside, read_observations, read_trajectory
-    from ..planning import frames_to_localise
-    from ..resources import map_path
+    from seal_cli.errors import SealError
+    from seal_cli.fileio import atomic_output
+    from seal_cli.frames.library import load_library
+    from seal_cli.maps.model import load_map
+    from seal_cli.planning.plan import frames_to_localise
+    from seal_cli.resources import map_path
+    from seal_cli.sefm.filter import SeFM, SeFMConfig
+    from seal_cli.sensing.observations import check_inside, read_observations, read_trajectory
 
     if trajectory is not None and observations is not None:
         raise SealError("give --trajectory (simulated detections) or --observations (real ones), not both")
@@ -98,11 +98,11 @@ def localize(
     with contextlib.ExitStack() as files:
         observers: list[Any] = []
         if rrd is not None:
-            from ..recording import RerunRecorder
+            from seal_cli.sefm.observers.rerun import RerunRecorder
 
             observers.append(RerunRecorder(files.enter_context(atomic_output(rrd))))
         if png is not None:
-            from ..drawing import PngDrawer
+            from seal_cli.sefm.observers.png import PngDrawer
 
             observers.append(PngDrawer(files.enter_context(atomic_output(png))))
         classes = () if bindings else the_map.classes

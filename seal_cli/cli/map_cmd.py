@@ -8,7 +8,7 @@ from typing import Any
 import typer
 from rich.table import Table
 
-from . import JsonOption, bench_app, command, emit_json, err, out
+from seal_cli.cli import JsonOption, bench_app, command, emit_json, err, out
 
 
 def summary(m: Any) -> dict[str, Any]:
@@ -77,14 +77,14 @@ def map_command(
     as_json: bool = JsonOption,
 ) -> None:
     """Show what an annotated map holds: rooms, places, priors per room, objects, robot and sensor."""
-    from ..maps import load_map
-    from ..resources import map_path
+    from seal_cli.maps.model import load_map
+    from seal_cli.resources import map_path
 
     m = load_map(map_path(path))
     for warning in m.warnings:
         err.print(f"warning: {warning}", markup=False)
     if png is not None:
-        from ..mapdraw import save_map_png
+        from seal_cli.maps.drawing import save_map_png
 
         save_map_png(m, png)
     data = summary(m)
@@ -103,8 +103,8 @@ def bench_maps(
     as_json: bool = JsonOption,
 ) -> None:
     """Time the map queries a particle filter makes, on 1,000 and 60,000 points."""
-    from ..mapbench import bench_map
-    from ..resources import map_path
+    from seal_cli.bench.maps import bench_map
+    from seal_cli.resources import map_path
 
     result = bench_map(map_path(path), sizes=tuple(points or (1_000, 60_000)), repeats=repeats)
     if as_json:

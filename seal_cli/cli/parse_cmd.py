@@ -10,13 +10,13 @@ from typing import TYPE_CHECKING, Any
 
 import typer
 
-from ..errors import SealError, Where
-from ..fileio import read_json_lines
-from . import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
+from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
+from seal_cli.errors import SealError, Where
+from seal_cli.fileio import read_json_lines
 
 if TYPE_CHECKING:
-    from ..grounding import Vocabulary
-    from ..language import Parse
+    from seal_cli.language.grounding import Vocabulary
+    from seal_cli.language.parser import Parse
 
 VocabularyOption = typer.Option(None, "--vocabulary", help="YAML list of object classes (each a name or "
                                 "{class: NAME, synonyms: [...]}) to ground elements in.", show_default=False)
@@ -26,14 +26,14 @@ MapOption = typer.Option(None, "--map", help="Ground elements in the classes of 
 
 def vocabulary_from(vocabulary: Path | None, map_name: str | None) -> Vocabulary | None:
     """The vocabulary named by ``--vocabulary`` and/or ``--map`` (both: their union)."""
-    from ..grounding import Vocabulary, load_vocabulary, vocabulary_of_map
+    from seal_cli.language.grounding import Vocabulary, load_vocabulary, vocabulary_of_map
 
     found: list[Vocabulary] = []
     if vocabulary is not None:
         found.append(load_vocabulary(vocabulary))
     if map_name is not None:
-        from ..maps import load_map
-        from ..resources import map_path
+        from seal_cli.maps.model import load_map
+        from seal_cli.resources import map_path
 
         found.append(vocabulary_of_map(load_map(map_path(map_name))))
     if not found:
@@ -51,7 +51,7 @@ def vocabulary_from(vocabulary: Path | None, map_name: str | None) -> Vocabulary
 def _read_lines(source: str) -> list[str]:
     if source == "-":
         return sys.stdin.read().splitlines()
-    from ..fileio import read_text
+    from seal_cli.fileio import read_text
 
     return read_text(source).splitlines()
 
@@ -68,8 +68,8 @@ def parse(
     as_json: bool = JsonOption,
 ) -> None:
     """Parse a command into the frames it evokes, with their elements."""
-    from ..language import parse_command, parse_lines
-    from ..library import load_library
+    from seal_cli.frames.library import load_library
+    from seal_cli.language.parser import parse_command, parse_lines
 
     if (text is None) == (file is None):
         raise SealError("give either a command or --file FILE (one command per line; '-' reads standard input)")
@@ -94,7 +94,7 @@ def parse(
         parsed = parse_command(text, library, vocab)
     except SealError as error:
         if as_json:
-            from ..language import _error_json
+            from seal_cli.language.parser import _error_json
 
             emit_json({"text": text, "error": _error_json(error)})
             raise typer.Exit(1) from None

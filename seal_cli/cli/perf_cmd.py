@@ -5,7 +5,7 @@ from __future__ import annotations
 import typer
 from rich.table import Table
 
-from . import JsonOption, bench_app, command, emit_json, err, out
+from seal_cli.cli import JsonOption, bench_app, command, emit_json, err, out
 
 
 @command("perf", on=bench_app)
@@ -17,12 +17,12 @@ def perf(
 ) -> None:
     """Updates per second of SeFM (grid kernel sums) and of the exact O(P²) reference, and the total variation
     distance between their weights on the same particles, at the paper's scale and a building's."""
-    from ..errors import SealError
-    from ..library import load_library
-    from ..maps import load_map
-    from ..perfbench import measure
-    from ..perfbench import scales as build_scales
-    from ..resources import map_path
+    from seal_cli.bench.perf import measure
+    from seal_cli.bench.perf import scales as build_scales
+    from seal_cli.errors import SealError
+    from seal_cli.frames.library import load_library
+    from seal_cli.maps.model import load_map
+    from seal_cli.resources import map_path
 
     wanted = scales or ["paper", "building"]
     unknown = sorted(set(wanted) - {"paper", "building"})

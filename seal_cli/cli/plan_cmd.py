@@ -9,12 +9,12 @@ from typing import TYPE_CHECKING
 import typer
 from rich.table import Table
 
-from ..planning import MAX_NODES, Plan
-from . import FramelibOption, JsonOption, bench_app, command, emit_json, framelib_paths, out
-from .parse_cmd import VocabularyOption, vocabulary_from
+from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, framelib_paths, out
+from seal_cli.cli.parse_cmd import VocabularyOption, vocabulary_from
+from seal_cli.planning.plan import MAX_NODES, Plan
 
 if TYPE_CHECKING:
-    from ..maps import Map
+    from seal_cli.maps.model import Map
 
 MapOption = typer.Option(None, "--map", help="The world: its places (openable ones closed unless open: true), "
                          "where its objects are, the robot's hand; also grounds the words in its classes. "
@@ -25,8 +25,8 @@ def _load_world(map_name: str | None) -> Map | None:
     """The ``--map`` world, or None."""
     if map_name is None:
         return None
-    from ..maps import load_map
-    from ..resources import map_path
+    from seal_cli.maps.model import load_map
+    from seal_cli.resources import map_path
 
     return load_map(map_path(map_name))
 
@@ -63,15 +63,15 @@ def plan(
     as_json: bool = JsonOption,
 ) -> None:
     """Plan a command: the frames it commands, in order, with the frames their preconditions need."""
-    from ..library import load_library
-    from ..planning import plan_text
+    from seal_cli.frames.library import load_library
+    from seal_cli.planning.plan import plan_text
 
     library = load_library(framelib_paths(framelib))
     world = _load_world(map_name)
     result = plan_text(text, library, holding=holding, done=tuple(done or ()), map=world,
                        vocabulary=vocabulary_from(vocabulary, map_name), max_nodes=max_nodes)
     if pddl is not None:
-        from ..pddl import write_pddl
+        from seal_cli.planning.pddl import write_pddl
 
         write_pddl(pddl, library, result)
     if as_json:
@@ -90,17 +90,17 @@ def bench_plan(
     as_json: bool = JsonOption,
 ) -> None:
     """Time parse + ground + plan for commands of up to six clauses; report the slowest."""
-    from ..library import load_library
-    from ..planbench import BENCH_COMMANDS, time_plans
+    from seal_cli.bench.plan import BENCH_COMMANDS, time_plans
+    from seal_cli.frames.library import load_library
 
     library = load_library(framelib_paths(framelib))
     world = _load_world(map_name)
     if file is not None:
-        from ..fileio import read_text
+        from seal_cli.fileio import read_text
 
         texts = [line.strip() for line in read_text(file).splitlines() if line.strip()]
         if not texts:
-            from ..errors import SealError, Where
+            from seal_cli.errors import SealError, Where
 
             raise SealError("no commands to time: the file has no non-blank line", Where(str(file)))
     else:

@@ -9,7 +9,7 @@ from typing import Any
 import typer
 from rich.table import Table
 
-from . import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
+from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
 
 KIND_STYLE = {"plan": "bold", "frame": "bold cyan", "search": "yellow", "go": "", "see": "green", "look": "dim",
               "act": "green", "fail": "red", "replan": "magenta", "done": "bold green", "give_up": "bold red"}
@@ -49,17 +49,17 @@ def run(
     """Simulate a robot that searches for what the command needs, goes there and does it, narrating each step."""
     import numpy as np
 
-    from ..agent import Budget, run_on_map
-    from ..baselines import make_policy
-    from ..library import load_library
-    from ..maps import load_map
-    from ..resources import map_path
+    from seal_cli.frames.library import load_library
+    from seal_cli.maps.model import load_map
+    from seal_cli.resources import map_path
+    from seal_cli.sim.agent import Budget, run_on_map
+    from seal_cli.sim.policies.baselines import make_policy
 
     library = load_library(framelib_paths(framelib))
     the_map = load_map(map_path(map_name))
     vocabulary = None
     if vocabulary_file is not None:
-        from ..grounding import load_vocabulary
+        from seal_cli.language.grounding import load_vocabulary
 
         vocabulary = load_vocabulary(vocabulary_file)
     searcher = make_policy(policy, particles)
@@ -70,11 +70,11 @@ def run(
                                budget=Budget(steps=max_steps, metres=max_metres),
                                observers=[] if as_json else [_narrate])
     if rrd is not None:
-        from ..runrecord import write_rrd
+        from seal_cli.sim.record import write_rrd
 
         write_rrd(rrd, agent)
     if png is not None:
-        from ..runrecord import write_png
+        from seal_cli.sim.record import write_png
 
         write_png(png, agent, f"{the_map.name}: {text}")
     if as_json:
@@ -128,8 +128,8 @@ def tasks(
 
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
-    from ..bench_tasks import Outcome, run_suite, summarise
-    from ..errors import SealError
+    from seal_cli.bench.tasks import Outcome, run_suite, summarise
+    from seal_cli.errors import SealError
 
     if data is None:
         data = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "alfred2d"
@@ -138,7 +138,7 @@ def tasks(
     names = [p.strip() for p in policies.split(",") if p.strip()]
     if not names:
         raise SealError("--policies names no policy")
-    from ..baselines import make_policy
+    from seal_cli.sim.policies.baselines import make_policy
 
     for name in names:
         make_policy(name)
@@ -152,8 +152,8 @@ def tasks(
 
         libs = [str(p) for p in framelib] if framelib else None
         if suite == "map":
-            from ..mapsuite import COMMANDS, run_map_suite
-            from ..resources import map_path
+            from seal_cli.bench.mapsuite import COMMANDS, run_map_suite
+            from seal_cli.resources import map_path
 
             runs = run_map_suite(str(map_path(map_name)), list(commands or COMMANDS), names, layouts=layouts,
                                  seed=seed, jobs=jobs or os.cpu_count() or 1, particles=particles, framelib=libs,
@@ -164,7 +164,7 @@ def tasks(
                              progress=advance)
         outcomes.extend(runs)
     if episodes is not None:
-        from ..fileio import atomic_write_text
+        from seal_cli.fileio import atomic_write_text
 
         atomic_write_text(episodes, "".join(json.dumps(o.to_json()) + "\n" for o in outcomes))
     report = summarise(outcomes, names)

@@ -1,0 +1,272 @@
+"""Checks that make a frame library correct as a whole.
+
+The readers already refuse what is wrong inside one frame (a fact naming an element the frame
+lacks, a repeated element). These checks look across frames and types, and return *every*
+problem rather than stopping at the first:
+
+- duplicate frame names;
+- an element typed with an unknown category, or a default outside its category;
+- an action that is not a known primitive, or has the wrong number of arguments;
+- a predicate used with different numbers of arguments;
+- a precondition that no frame's postcondition achieves and that is not a world fact;
+- preconditions that can only be achieved in a cycle (A needs what only B gives, B needs what only A gives);
+- two frames claiming the same lexical unit with the same element pattern (the parser could not choose);
+- a synonym claimed by two classes, or naming a category (grounding could not choose).
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterable, Iterator, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import yaml
+
+from seal_cli.errors import SealError, Where
+from seal_cli.fileio import LOADER
+from seal_cli.frames.actions import PRIMITIVES
+from seal_cli.frames.model import Fact, Frame
+from seal_cli.frames.taxonomy import Synonyms, Taxonomy, class_key
+
+__all__ = ["Report", "check_library", "is_map_file", "validate_paths"]
+
+
+def check_library(frames: Sequence[Frame], taxonomy: Taxonomy) -> list[SealError]:
+    """Every cross-frame problem in these frames, in source order."""
+    checks = (_duplicates(frames), _types(frames, taxonomy), _actions(frames), _arities(frames),
+              _unachieved(frames, taxonomy), _cycles(frames, taxonomy), _unit_clashes(frames),
+              _synonym_clashes(taxonomy))
+    return [problem for check in checks for problem in check]
+
+
+def _at(frame: Frame) -> str:
+    return f" (at {frame.where})" if frame.where and frame.where.line else ""
+
+
+def _duplicates(frames: Sequence[Frame]) -> Iterator[SealError]:
+    first: dict[str, Frame] = {}
+    for frame in frames:
+        if frame.name in first:
+            yield SealError(f"duplicate frame name {frame.name!r}: already defined{_at(first[frame.name])}",
+                            frame.where)
+        else:
+            first[frame.name] = frame
+
+
+def _suggest(word: str, choices: Iterable[str]) -> str:
+    close = difflib.get_close_matches(word, sorted(choices), n=1)
+    return f" (did you mean {close[0]!r}?)" if close else ""
+
+
+def _types(frames: Sequence[Frame], taxonomy: Taxonomy) -> Iterator[SealError]:
+    known = set(taxonomy.by_name)
+    for frame in frames:
+        for element in frame.elements:
+            if class_key(element.type) not in known:
+                listing = ", ".join(sorted(known)) if known else "none (declare categories in a types file)"
+                yield SealError(f"{frame.name}.{element.role} has unknown category {element.type!r}"
+                                f"{_suggest(class_key(element.type), known)}; known categories: {listing}",
+                                element.where)
+            elif element.default is not None and taxonomy.is_a(element.default, element.type) is not True:
+                members = sorted(taxonomy.members(element.type))
+                yield SealError(f"{frame.name}.{element.role} defaults to {element.default!r}, which is not a "
+                                f"{element.type} (its members: {', '.join(members) or 'none'})", element.where)
+
+
+def _actions(frames: Sequence[Frame]) -> Iterator[SealError]:
+    for frame in frames:
+        for action in frame.actions:
+            primitive = PRIMITIVES.get(action.name)
+            if primitive is None:
+                yield SealError(f"{frame.name} uses unknown action {action.name!r}"
+                                f"{_suggest(action.name, PRIMITIVES)}; known actions: {', '.join(PRIMITIVES)}",
+                                action.where)
+            elif len(action.args) != primitive.arity:
+                yield SealError(f"action {action.name} takes {primitive.arity} argument"
+                                f"{'s' if primitive.arity != 1 else ''} ({', '.join(primitive.params)}), "
+                                f"not {len(action.args)}: {action}", action.where)
+
+
+def _facts(frame: Frame) -> Iterator[Fact]:
+    yield from frame.preconditions
+    yield from frame.postconditions
+
+
+def _arities(frames: Sequence[Frame]) -> Iterator[SealError]:
+    first: dict[str, tuple[Fact, Frame]] = {}
+    for frame in frames:
+        for fact in _facts(frame):
+            seen = first.setdefault(fact.predicate, (fact, frame))
+            if len(seen[0].args) != len(fact.args):
+                yield SealError(f"{fact.predicate} takes {len(seen[0].args)} argument(s) in {seen[1].name} "
+                                f"({seen[0].positive}) but {len(fact.args)} here: {fact}", fact.where)
+
+
+def _is_world(fact: Fact, taxonomy: Taxonomy) -> bool:
+    """World facts need no frame: declared world predicates and category tests (``openable(x)``)."""
+    return fact.predicate in taxonomy.world or (len(fact.args) == 1 and fact.predicate in taxonomy)
+
+
+def _achieves(frame: Frame, fact: Fact) -> bool:
+    return any(p.predicate == fact.predicate and p.negated == fact.negated and len(p.args) == len(fact.args)
+               for p in frame.postconditions)
+
+
+def _unachieved(frames: Sequence[Frame], taxonomy: Taxonomy) -> Iterator[SealError]:
+    for frame in frames:
+        for fact in frame.preconditions:
+            if not _is_world(fact, taxonomy) and not any(_achieves(other, fact) for other in frames):
+                produced = {p.predicate for f in frames for p in f.postconditions if not p.negated}
+                yield SealError(f"precondition {fact} of {frame.name} is achieved by no frame's postcondition "
+                                f"and is not a world fact{_suggest(fact.predicate, produced)}; "
+                                "declare it under 'world:' if the world or robot provides it", fact.where)
+
+
+def _cycles(frames: Sequence[Frame], taxonomy: Taxonomy) -> Iterator[SealError]:
+    """Frames that can never run because what they need is only given by frames that need them."""
+    needs = {f.name: [fact for fact in f.preconditions if not _is_world(fact, taxonomy)] for f in frames}
+    unique = {f.name: f for f in frames}
+    runnable: set[str] = set()
+    changed = True
+    while changed:
+        changed = False
+        for name in unique:
+            if name not in runnable and all(any(_achieves(unique[o], fact) for o in runnable)
+                                            for fact in needs[name]):
+                runnable.add(name)
+                changed = True
+    stuck = [name for name in unique if name not in runnable
+             and all(any(_achieves(o, fact) for o in frames) for fact in needs[name])]
+    reported: set[frozenset[str]] = set()
+    for start in stuck:
+        path = _find_cycle(start, unique, needs, set(stuck))
+        if path and frozenset(path) not in reported:
+            reported.add(frozenset(path))
+            chain = " → ".join(path + [path[0]])
+            yield SealError(f"precondition cycle: {chain}; none of these frames can ever run, because each needs "
+                            "what only another one in the cycle achieves", unique[path[0]].where)
+
+
+def _find_cycle(start: str, frames: dict[str, Frame], needs: dict[str, list[Fact]], stuck: set[str]
+                ) -> list[str] | None:
+    """A path of stuck frames from ``start`` back to ``start``, each achieving a need of the one before."""
+    stack: list[tuple[str, list[str]]] = [(start, [start])]
+    visited: set[str] = set()
+    while stack:
+        name, path = stack.pop()
+        for fact in needs[name]:
+            for other in sorted(n for n in stuck if _achieves(frames[n], fact)):
+                if other == start:
+                    return path
+                if other not in visited:
+                    visited.add(other)
+                    stack.append((other, path + [other]))
+    return None
+
+
+def _pattern(frame: Frame) -> frozenset[tuple[str, str]]:
+    return frozenset((e.role, class_key(e.type)) for e in frame.elements)
+
+
+def _unit_clashes(frames: Sequence[Frame]) -> Iterator[SealError]:
+    claimed: dict[tuple[str, frozenset[tuple[str, str]]], Frame] = {}
+    for frame in frames:
+        for unit in frame.lexical_units:
+            key = (unit.text, _pattern(frame))
+            other = claimed.setdefault(key, frame)
+            if other is not frame and other.name != frame.name:
+                yield SealError(f"lexical unit {unit.text!r} of {frame.name} is also claimed by {other.name}"
+                                f"{_at(other)} with the same elements ({', '.join(sorted(frame.roles))}); "
+                                "the parser could not tell them apart", unit.where)
+
+
+def _synonym_clashes(taxonomy: Taxonomy) -> Iterator[SealError]:
+    """A name is one class's: two entries of different classes may not share one, and a category
+    (``furniture``) is no other name of a class."""
+    owner: dict[str, Synonyms] = {}
+    for entry in taxonomy.synonyms:
+        for name in entry.all_names:
+            other = owner.setdefault(name, entry)
+            if other.name != entry.name:
+                where = f" (at {other.where})" if other.where and other.where.line else ""
+                yield SealError(f"{name!r} is a name of both {other.name}{where} and {entry.name}; "
+                                "a name may denote one class only", entry.where)
+            elif name in taxonomy.by_name and name != entry.name:
+                yield SealError(f"{name!r} is a category, not another name of {entry.name}", entry.where)
+
+
+# -- checking files as a user hands them over ---------------------------------------------------
+MAP_KEYS = frozenset({"image", "resolution", "origin", "rooms", "bounds", "places", "priors", "objects", "robot",
+                      "sensor", "negate", "occupied_thresh", "free_thresh"})
+
+
+def is_map_file(path: Path) -> bool:
+    """Whether a YAML file is a map (top-level map keys and no frame keys) rather than frames."""
+    if path.suffix not in (".yaml", ".yml"):
+        return False
+    try:
+        node = yaml.compose(path.read_text(encoding="utf-8"), Loader=LOADER)
+    except (yaml.YAMLError, OSError, UnicodeDecodeError):
+        return False
+    if not isinstance(node, yaml.MappingNode):
+        return False
+    keys = {k.value for k, _ in node.value if isinstance(k, yaml.ScalarNode)}
+    return bool(keys & MAP_KEYS) and not keys & {"frame", "frames", "categories", "world", "synonyms"}
+
+
+@dataclass
+class Report:
+    """What ``seal validate`` found."""
+
+    files: list[Path] = field(default_factory=list)
+    frames: int = 0
+    categories: int = 0
+    maps: int = 0
+    problems: list[SealError] = field(default_factory=list)
+
+    def summary(self) -> str:
+        found = f"{self.frames} frames, {self.categories} categories, {self.maps} maps in {len(self.files)} files"
+        if not self.problems:
+            return f"ok: {found}"
+        count = len(self.problems)
+        return f"{count} problem{'s' if count != 1 else ''} in {found}"
+
+    def to_json(self) -> dict[str, object]:
+        return {"ok": not self.problems, "files": [str(f) for f in self.files], "frames": self.frames,
+                "categories": self.categories, "maps": self.maps,
+                "problems": [p.to_json() for p in self.problems]}
+
+
+def validate_paths(paths: Iterable[str | Path], with_stdlib: bool = False) -> Report:
+    """Check frame files, folders and maps; every problem, sorted by file, line and column."""
+    from seal_cli.frames.library import frame_files, read_library
+
+    files, problems = frame_files(paths)
+    maps = [f for f in files if is_map_file(f)]
+    frame_paths = [f for f in files if f not in maps]
+    report = Report(files=files, maps=len(maps), problems=problems)
+    if frame_paths:
+        extra: list[Path] = []
+        if with_stdlib:
+            from seal_cli.resources import framelib_dir
+
+            extra = [p for p in frame_files([framelib_dir()])[0] if p.resolve() not in
+                     {f.resolve() for f in frame_paths}]
+        library, found = read_library(extra + frame_paths)
+        report.frames = len(library) - (len(read_library(extra)[0]) if extra else 0)
+        report.categories = len(library.taxonomy.categories)
+        report.problems.extend(found)
+    for path in maps:
+        report.problems.extend(_check_map(path))
+    report.problems.sort(key=lambda p: (p.file or "", p.line or 0, p.column or 0))
+    return report
+
+
+def _check_map(path: Path) -> list[SealError]:
+    try:
+        from seal_cli.maps.model import check_map_file
+    except ImportError:
+        return [SealError("this file looks like a map, and this version of seal cannot check maps yet",
+                          Where(str(path)))]
+    return list(check_map_file(path))

@@ -1,0 +1,163 @@
+"""Closed-class English: the function words the tagger reads, listed once.
+
+Determiners, numbers, pronouns, prepositions, particles, conjunctions, subordinators, politeness
+formulae, words of address, titles, fillers, spellings of function words, the subjects and
+finite verbs that mark a statement, time words. These are the language, not any corpus: an
+open-class word (a noun, an adjective, a name) is never listed, and verbs come from the frame
+library's lexical units (:mod:`seal_cli.language.lexicon`). Multiword entries ("as soon as", "could
+you") are matched as phrases by the tagger.
+"""
+
+from __future__ import annotations
+
+
+def _closed_class(*lines: str) -> frozenset[str]:
+    return frozenset(" ".join(lines).split())
+
+
+DETERMINERS = _closed_class("the a an some any this that these those each every all another both either no other such")
+NUMBERS = {"zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
+           "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "a couple of": 2, "a pair of": 2, "couple": 2,
+           "several": 3, "few": 3, "many": 3}
+POSSESSIVES = _closed_class("my your his her its our their")
+PRONOUNS = _closed_class("it them him her me you us they he she yourself myself himself herself themselves",
+                         "itself ourselves yourselves something someone somebody everything everyone everybody",
+                         "anything anyone anybody nothing one ones this that those these")
+PERSON_PRONOUNS = _closed_class("him her me you us he she yourself myself himself herself themselves ourselves",
+                                "yourselves someone somebody everyone everybody anyone anybody")
+PREPOSITIONS = {
+    "to": "to", "into": "into", "onto": "onto", "from": "from", "in": "in", "on": "on", "at": "at",
+    "under": "under", "underneath": "under", "beneath": "under", "below": "under", "with": "with",
+    "without": "without", "near": "near", "inside": "inside", "outside": "outside", "by": "by",
+    "beside": "by", "behind": "behind", "above": "above", "over": "over", "across": "across",
+    "through": "through", "toward": "to", "towards": "to", "around": "around", "between": "between",
+    "among": "between", "upon": "on", "within": "in", "off": "off", "for": "for", "about": "about",
+    "via": "via", "past": "past", "against": "against", "along": "along", "beyond": "beyond", "using": "with",
+    "out of": "out of", "next to": "near", "close to": "near", "near to": "near", "in front of": "in front of",
+    "on top of": "on", "inside of": "inside", "off of": "off", "away from": "from", "in between": "between",
+    "on to": "onto", "in to": "into", "up to": "to", "down to": "to", "over to": "to", "out from": "from",
+    "from inside": "from", "from within": "from", "from on top of": "from", "from under": "from",
+    "back to": "to", "back into": "into", "back onto": "onto", "back in": "in", "back on": "on",
+    "left of": "by", "right of": "by", "to the left of": "by", "to the right of": "by",
+    "on the left of": "by", "on the right of": "by",
+}
+PARTICLES = _closed_class("up down out off away back over on in around about aside along")
+WH_WORDS = _closed_class("what which who whom whose where when why how whether if")
+BE_WORDS = _closed_class("is are was were be am 's been being")
+SEPARATOR_WORDS = frozenset(["and", "then", ",", ";", ":", "after that", "afterwards", "next", "finally",
+                             "and then", "and after that", "after", "also", "once done", "when done",
+                             "and finally", "before", "while", "or", "as well as", "plus", "followed by",
+                             "as you", "while you"])
+AND_WORDS = frozenset(["and", "as well as", "plus"])
+"""Words that join like "and" (clauses or noun phrases)."""
+POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "will you", "would you mind",
+                    "could you please", "i want you to", "i need you to", "i would like you to",
+                    "i'd like you to", "you should", "you must", "you need to", "you have to", "you will",
+                    "you can", "go ahead and", "robot", "hey", "ok", "okay", "now", "first", "firstly",
+                    "just", "quickly", "quick", "carefully", "to", "try to", "then", "and", "also", "simply",
+                    "let's", "let 's", "be sure to", "make sure to", "remember to", "go and", "come and", "go", "come",
+                    "would you be so kind as to", "would you be kind enough to", "be so kind as to",
+                    "be kind enough to", "be good enough to", "be so good as to", "would you be so good as to",
+                    "would you be good enough to", "could you be so kind as to", "do me a favor and",
+                    "do me a favour and", "don't forget to", "do not forget to", "help me", "help me to", "help us",
+                    "make sure you", "see that you", "hi", "hello", "excuse me", "maybe", "perhaps", "oh", "ah",
+                    "ahh", "aw", "ugh", "urgh", "argh", "oops", "whoops", "sorry", "well", "gosh", "so"])
+POLITE_FORMULAE = frozenset([
+    "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
+    "when you have a moment", "when you have a minute", "when you have a second", "when you have time",
+    "when you have a sec", "when you can", "whenever you can", "whenever you get a chance",
+    "whenever you have a moment", "whenever you have time", "as soon as you can", "if you get a chance",
+    "if you have a chance", "if you have a moment", "if you have a minute", "if you have a second",
+    "if you have time", "if you can", "if possible", "if you please", "if you would", "if you don't mind",
+    "if you do not mind", "if it's not too much trouble", "if it is not too much trouble", "if you wouldn't mind",
+    "if you would not mind", "at your convenience", "when convenient", "when it's convenient", "no rush",
+    "no hurry"])
+"""Politeness said as a clause of its own ("*when you get a chance*, could you ..."; "... *if you don't
+mind*"): the robot's time is asked for, not a condition or a task. Only a whole clause: "if you can"
+followed by more of its clause ("if you can reach the shelf, ...") is a condition."""
+SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "thanks", "thanx": "thanks",
+             "u": "you", "ur": "your", "n": "and", "im": "i'm", "ive": "i've", "youre": "you're",
+             "theyre": "they're", "thats": "that's", "dont": "don't", "doesnt": "doesn't", "didnt": "didn't",
+             "isnt": "isn't", "arent": "aren't", "wasnt": "wasn't", "havent": "haven't", "couldnt": "couldn't",
+             "wouldnt": "wouldn't", "shouldnt": "shouldn't", "shes": "she's", "hes": "he's", "whats": "what's",
+             "theres": "there's", "wont": "won't", "cant": "can't", "wheres": "where's", "hows": "how's",
+             "ill": "i'll", "id": "i'd", "youll": "you'll", "weve": "we've", "theyve": "they've", "itll": "it'll"}
+"""Texting spellings of function words ("turn the lights off *pls*", "open it *n* wipe it", "tell her
+*im* late"): read as the word they spell."""
+VOCATIVES = frozenset(["dear", "dearie", "love", "darling", "sweetheart", "sweetie", "honey", "hun", "pet", "mate",
+                       "buddy", "pal", "sir", "madam", "ma'am", "miss", "robot", "friend", "my dear", "my friend",
+                       "my love", "old friend", "thanks", "thank you", "please", "would you", "could you",
+                       "will you", "can you", "won't you", "wouldn't you", "would you please", "will you please",
+                       "could you please", "ok", "okay", "right", "yeah", "sorry", "ugh", "oh", "oops"])
+"""Words of address and tags said after a request ("close the door, *dear*", "..., *would you*?",
+"pass me the salt, *love*, ..."): no part of the clause."""
+TITLES = frozenset(["mr", "mrs", "ms", "mx", "miss", "dr", "prof", "st", "rev", "revd", "fr", "sr", "capt", "sgt",
+                    "lt", "col", "gen", "hon", "mme", "mlle", "messrs"])
+"""Titles written as abbreviations before a name ("*Mr.* Patel", "*Dr.* Ahmed", "*St.* Mary's"): their full
+stop ends no sentence, it is part of the word ("Mr."), and title and name are one name ("Mr. Patel")."""
+FILLERS = frozenset(["um", "umm", "ummm", "uh", "uhh", "uhm", "er", "erm", "ehm", "hmm", "hm", "mm", "mmm"])
+"""Hesitations ("and then, *um*, chill the juice"): no word of the command; dropped, with a comma after them."""
+FINITE = frozenset(["is", "are", "was", "were", "am", "'s", "has", "have", "had", "do", "does", "did", "can", "could",
+                    "will", "would", "shall", "should", "must", "might", "may", "can't", "cannot", "couldn't",
+                    "won't", "wouldn't", "shouldn't", "mustn't", "don't", "doesn't", "didn't", "isn't", "aren't",
+                    "wasn't", "weren't", "hasn't", "haven't", "hadn't", "ain't", "keeps", "needs", "wants"])
+"""Finite verbs that make a statement of what starts with a subject ("the bus *is* late", "she *can't*
+sleep"): auxiliaries, modals, "be" and "have"."""
+SUBJECTS = frozenset(["i", "he", "she", "we", "they", "it", "this", "that", "there", "these", "those", "everyone",
+                      "everybody", "someone", "somebody", "nobody", "nothing", "everything"])
+"""Pronouns that may start a statement said beside the command ("*it's* cold in here")."""
+CONTRACTED = frozenset(["'s", "'re", "'m", "'ll", "'ve", "'d"])
+STATEMENT_LINKS = frozenset(["or", "otherwise", "because", "cause", "cos", "coz", "cuz", "since", "as", "so", "but"])
+"""Conjunctions before a statement after the request ("..., *or* it will melt", "..., *because* I'm cold")."""
+BECAUSE = frozenset(["because", "cause", "'cause", "cos", "coz", "cuz", "'cos"])
+FREQUENCY_ADVERBS = frozenset(["just", "still", "only", "even", "also", "often", "sometimes", "now", "again", "ever"])
+"""Adverbs before a finite verb that -ly does not mark ("the timer *just* went")."""
+THIRD_PERSON_SUBJECTS = frozenset(["he", "she", "it", "someone", "somebody", "everyone", "everybody", "nobody",
+                                   "nothing", "everything"])
+"""Subjects of a third-person verb: any inflected verb after them is finite ("he *likes* company")."""
+LINKING_VERBS = frozenset(["seem", "appear", "look", "sound", "feel", "smell", "taste", "become", "remain"])
+"""Linking verbs: their finite form makes a statement whatever follows ("the door *seems* loose")."""
+OBJECT_PRONOUNS = frozenset(["it", "them", "him", "her", "me", "us", "this", "that"])
+BASE_FORM_SUBJECTS = frozenset(["i", "we", "they"])
+"""Subjects whose verb has its base form ("we *open* at six"): after them, any verb is finite."""
+END_MARKS = frozenset(".!?")
+HERE_WORDS = frozenset(["here", "there", "over here", "over there", "upstairs", "downstairs", "indoors", "outdoors",
+                        "nearby", "elsewhere", "everywhere", "somewhere", "anywhere"])
+"""Words that name a place by themselves (deictic and directional adverbs): "come *here*", "bring it
+*upstairs*"."""
+TIME_WORDS = frozenset(["now", "later", "soon", "today", "tonight", "tomorrow", "again", "too", "first",
+                        "right away", "right now", "at once", "as well", "as soon as possible", "asap", "meanwhile",
+                        "in a minute", "in a moment", "for now", "this morning", "this evening", "tonight"])
+"""Time adverbials said after a verb's arguments ("put it in the fridge *right away*"): they say when,
+not what, and are no part of a noun phrase."""
+SUBORDINATORS = frozenset(["after", "before", "when", "whenever", "once", "as soon as", "until", "till", "if",
+                           "unless", "as long as", "in case", "while"])
+"""Words that start a subordinate clause: one of the robot's own ("*after you* wash them": a frame,
+ordered) or a condition on the world ("*when* the water boils": no frame, the frame's
+``condition``)."""
+FIRST_LATER = frozenset(["after", "when", "whenever", "once", "as soon as"])
+"""Subordinators whose clause is done before the main one ("put them away *after you* wash them")."""
+TIME_UNITS = frozenset(["second", "seconds", "minute", "minutes", "hour", "hours", "moment", "moments", "while",
+                        "day", "days", "week", "weeks"])
+"""Measures of time: "for *three minutes*", "every *few minutes*" say how long or how often."""
+NOMINATIVE = frozenset(["i", "he", "she", "we", "they"])
+"""Subject pronouns: never an object, so after a noun one starts a clause ("the book *I* left on the sofa")."""
+RELATIVES = frozenset(["that", "which", "who", "whom", "whose"])
+STATES_DONE = frozenset(["done", "finished", "ready", "there", "here", "back", "through"])
+"""What "once you are ___" says of the robot when it only sequences: "*once you're done*, ..." is "then"."""
+CLOCK_PREPOSITIONS = frozenset(["at", "by", "until", "till", "around", "in", "before"])
+"""Prepositions of a time said with a number ("at three", "by 5 pm", "in ten minutes")."""
+CLOCK_WORDS = frozenset(["am", "pm", "a.m.", "p.m.", "o'clock", "oclock", "sharp", "thirty", "fifteen",
+                          "fortyfive", "twenty", "forty", "fifty"])
+TIME_MEASURE = frozenset(["a", "an", "few", "couple", "of", "several", "another", "other", "more", "little", "short",
+                           "good", "long"])
+"""Words between "for"/"every" and a unit of time ("for *a little* while", "every *few* minutes")."""
+PATH_PREPOSITIONS = frozenset(["to", "into", "onto", "from", "out of", "off", "through", "via", "past", "across",
+                               "along"])
+"""Prepositions of a path: "down from the shelf *and over to* my chair" goes on one path."""
+PARTITIVES = frozenset(["some", "any", "all", "both", "each", "more", "enough", "half"])
+"""Determiners that stand alone for a part of what was named ("pour *some* into the cup")."""
+VAGUE_NUMBERS = frozenset(["one", "couple", "several", "few", "many"])
+"""Number words that count but never label ("the red *one*", "a *few*")."""
+QUANTIFIERS = frozenset(["one", "two", "three", "four", "both", "all", "some", "each", "any", "none", "most",
+                          "either", "neither", "several", "many", "few"])

@@ -1,0 +1,269 @@
+"""Grounding: which object class a noun phrase denotes, in a given vocabulary of classes.
+
+A :class:`Vocabulary` is a list of classes (``AlarmClock``, ``tomato soup``), each with optional
+synonyms. A phrase is matched on its words' lemmas (so plurals match), best first:
+
+1. an exact name: the phrase's last words spell a class's own name, or else a synonym ("the red
+   *alarm clock*"), also written together ("the *lap top*" → ``Laptop``, "a *bath tub*" →
+   ``Bathtub``); or the words after "of" do ("a roll *of toilet paper*");
+2. the head word: the phrase's head is the head of a class name ("clock" → ``AlarmClock``),
+   helped by every other word they share ("a bottle of *wine*" → ``WineBottle``), then another
+   word of a class name ("counter" → ``CounterTop``);
+3. the words after "of" ("the middle *of the table*").
+
+A phrase whose head names a portion, region, part or group of something (``PORTIONS``: "an
+apple *slice*", "the table *top*", "the toilet *tank*", "a *set* of keys") denotes what its
+modifiers or its "of" phrase name, when they name a class. A modifier of any other head names
+something else: a "chair cushion" is a cushion, not a chair, and no class when the vocabulary
+calls nothing a cushion.
+
+Within a step, the class sharing the most words with the phrase wins; a class's own name beats
+another class's synonym; a remaining tie (``DiningTable``, ``SideTable``, ``CoffeeTable`` for
+"table") goes to the class listed first, so a vocabulary lists the usual class first, and a map's
+vocabulary lists only the tables the building has. No match gives None: the vocabulary of a
+building is open and an unknown noun is not an error.
+
+Vocabulary files are YAML lists: ``- cup`` or ``- {class: Fridge, synonyms: [refrigerator]}``
+(a mapping ``classes: [...]`` is read too).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
+from functools import cached_property
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from seal_cli.errors import SealError, Where
+from seal_cli.frames.taxonomy import class_key, class_words
+from seal_cli.language.lexicon import noun_lemma
+
+if TYPE_CHECKING:
+    from seal_cli.language.parser import NP
+
+__all__ = ["PIECES", "PORTIONS", "Vocabulary", "load_vocabulary", "vocabulary_of_map"]
+
+
+PORTIONS = frozenset(" ".join((
+    "slice piece bit chunk half part portion wedge segment section sliver strip lump cube quarter crumb",
+    "top side edge corner middle centre center end bottom surface back front",
+    "lid door handle seat tank cover basin",
+    "set bunch pair pack group collection stack pile handful roll")).split())
+"""English nouns that name a portion, a region, a part or a group of something else ("an apple
+*slice*", "the table *top*", "the fridge *door*", "a *set* of keys"): with one of these as its
+head, a phrase denotes what its modifiers or its "of" phrase name."""
+
+
+PIECES = frozenset({"slice", "piece", "chunk", "wedge", "section", "segment", "sliver", "half", "quarter", "bit"})
+"""The portions that are pieces cut from a whole ("an apple *slice*", "a *piece* of bread"): a
+piece exists once its whole has been cut, so naming one asks for the cutting (see
+:mod:`seal_cli.language.parser`)."""
+
+
+def _lemmas(words: Iterable[str]) -> tuple[str, ...]:
+    return tuple(noun_lemma(w) for w in words)
+
+
+def _head(name: tuple[str, ...]) -> str:
+    """The head word of a name: the last, or the one before "of" ("head of lettuce": head)."""
+    return name[name.index("of") - 1] if "of" in name[1:] else name[-1]
+
+
+@dataclass(frozen=True)
+class Vocabulary:
+    """Object classes, each with the names (class name and synonyms) it may be called by."""
+
+    classes: tuple[str, ...]
+    synonyms: tuple[tuple[str, ...], ...] = ()
+    where: Where | None = field(default=None, compare=False)
+
+    def __post_init__(self) -> None:
+        if not self.synonyms:
+            object.__setattr__(self, "synonyms", tuple(() for _ in self.classes))
+        if len(self.synonyms) != len(self.classes):
+            raise SealError("a vocabulary needs one list of synonyms per class", self.where)
+
+    @classmethod
+    def of(cls, names: Iterable[str], synonyms: Mapping[str, Sequence[str]] | None = None) -> Vocabulary:
+        """A vocabulary from class names (and optionally synonyms by class), duplicates dropped."""
+        unique = tuple(dict.fromkeys(n for n in names if class_words(n)))
+        extra = synonyms or {}
+        return cls(unique, tuple(tuple(extra.get(n, ())) for n in unique))
+
+    @cached_property
+    def _names(self) -> tuple[tuple[int, tuple[str, ...]], ...]:
+        """(class index, lemmatised words) for every name of every class: the classes' own names
+        first, then their synonyms (so that an own name wins over another class's synonym)."""
+        names = []
+        for index, name in enumerate(self.classes):
+            names.append((index, _lemmas(class_words(name))))
+        for index, synonyms in enumerate(self.synonyms):
+            names.extend((index, _lemmas(class_words(spelled))) for spelled in synonyms)
+        return tuple((index, words) for index, words in names if words)
+
+    @cached_property
+    def _own(self) -> frozenset[tuple[str, ...]]:
+        """The classes' own names (lemmatised words), which win ties over synonyms."""
+        return frozenset(_lemmas(class_words(name)) for name in self.classes)
+
+    @cached_property
+    def _exact(self) -> dict[tuple[str, ...], int]:
+        exact: dict[tuple[str, ...], int] = {}
+        for index, words in self._names:
+            exact.setdefault(words, index)
+        for index, words in self._names:
+            exact.setdefault(("".join(words),), index)     # "glassbottle", "tvstand"
+        return exact
+
+    @cached_property
+    def _by_word(self) -> dict[str, list[tuple[int, tuple[str, ...]]]]:
+        """Word → (class index, name) of every name with the word, own names first ("bin" is the
+        head of the trash can's "trash bin", as "clock" is of AlarmClock)."""
+        index: dict[str, list[tuple[int, tuple[str, ...]]]] = {}
+        for cls_index, words in self._names:
+            for word in dict.fromkeys(words):
+                index.setdefault(word, []).append((cls_index, words))
+        return index
+
+    def with_synonyms(self, synonyms: Mapping[str, Sequence[str]]) -> Vocabulary:
+        """This vocabulary with more synonyms, by class key (``class_key``): each class gets the
+        names listed under its own name. A class with none added keeps what it had.
+
+        A class named for a part or region of something (its last word is in :data:`PORTIONS`:
+        ``SinkBasin``, ``BathtubBasin``, ``CounterTop``) is also called by the name of the whole
+        and the whole's synonyms ("sink", "tub", "counter"), unless the vocabulary has a class for
+        the whole itself: in a room whose only sink is its basin, "the sink" is the basin."""
+        if not synonyms:
+            return self
+        keys = {class_key(name) for name in self.classes}
+        added = []
+        for name, own in zip(self.classes, self.synonyms, strict=True):
+            names = [*own, *synonyms.get(class_key(name), ())]
+            words = class_words(name)
+            whole = "_".join(words[:-1])
+            if len(words) > 1 and noun_lemma(words[-1]) in PORTIONS and whole not in keys:
+                names += [whole.replace("_", " "), *synonyms.get(whole, ())]
+            added.append(tuple(dict.fromkeys(n for n in names if class_key(n) != class_key(name))))
+        return Vocabulary(self.classes, tuple(added), self.where)
+
+    def restricted_to(self, classes: Iterable[str]) -> Vocabulary:
+        """The vocabulary of a scene: only the given classes (those present), each with the names
+        this vocabulary gives it, in this vocabulary's order (which settles ties), then the present
+        classes this vocabulary does not list. Classes keep the spelling they are given."""
+        present: dict[str, str] = {}
+        for cls in classes:
+            present.setdefault(class_key(cls), cls)
+        names: dict[str, list[str]] = {}
+        for name, synonyms in zip(self.classes, self.synonyms, strict=True):
+            key = class_key(name)
+            if key in present:
+                names.setdefault(present[key], []).extend(synonyms)
+        for cls in present.values():
+            names.setdefault(cls, [])
+        return Vocabulary.of(list(names), names)
+
+    def __len__(self) -> int:
+        return len(self.classes)
+
+    def ground_words(self, words: Sequence[str], head: int = -1, of: Sequence[str] = ()) -> str | None:
+        """The class that words denote (``head`` indexes the head word), or None."""
+        words = _lemmas(w for w in words if w)
+        of = _lemmas(w for w in of if w)
+        if not words and not of:
+            return None
+        end = len(words) + head + 1 if head < 0 else head + 1
+        found = self._ground(words, end, of)
+        if found is None and words and words[end - 1].endswith("s"):     # a plural the dictionary lacks
+            for cut in (1, 2):
+                stem = words[end - 1][:-cut]
+                found = self._ground((*words[:end - 1], stem, *words[end:]), end, of) if len(stem) > 1 else None
+                if found is not None:
+                    break
+        return found
+
+    def _ground(self, words: tuple[str, ...], end: int, of: tuple[str, ...]) -> str | None:
+        if of and end == len(words):                      # "a chest of drawers", "a bar of soap"
+            for start in range(end):
+                index = self._exact.get((*words[start:], "of", *of))
+                if index is not None:
+                    return self.classes[index]
+        for phrase in (words[:end], of):
+            for start in range(len(phrase)):             # longest exact name ending at the head
+                index = self._exact.get(phrase[start:])
+                if index is None and len(phrase) - start > 1:
+                    index = self._exact.get(("".join(phrase[start:]),))     # "lap top": Laptop
+                if index is not None:
+                    return self.classes[index]
+        head_word = words[end - 1] if words else of[-1]
+        if head_word in PORTIONS:            # "an apple slice", "the table top", "a set of keys": the apple, ...
+            found = self._ground(words, end - 1, of) if end > 1 else None
+            if found is None and of:
+                found = self._ground(of, len(of), ())
+            if found is not None:
+                return found
+        best: tuple[float, int] | None = None
+        context = set(words) | set(of)
+        for key, weight in ((head_word, 4.0), *((w, 1.0) for w in reversed(of))):
+            for cls_index, name in self._by_word.get(key, ()):
+                if key != _head(name) and name not in self._own:
+                    continue      # a "table lamp" is a lamp: a synonym names a table only by its head
+                score = weight + (2.0 if name[-1] == key else 0.0) + sum(0.5 for w in name if w in context) \
+                    - 0.25 * sum(1 for w in name if w not in context) + (0.125 if name in self._own else 0.0)
+                if best is None or (score, -cls_index) > (best[0], -best[1]):
+                    best = (score, cls_index)
+            if best is not None and weight >= 4.0:
+                break
+        return None if best is None else self.classes[best[1]]
+
+    def ground_np(self, np: NP) -> str | None:
+        """The class a parsed noun phrase denotes (conjunctions: the first one)."""
+        if np.head is None or np.kind == "message":
+            return None
+        words = [w.text for w in np.mods] + [np.head.text]
+        of = []
+        if np.of is not None and np.of.head is not None:
+            of = [w.text for w in np.of.mods] + [np.of.head.text]
+        return self.ground_words(words, -1, of)
+
+
+def _entries(data: Any, where: Where) -> tuple[list[str], dict[str, list[str]]]:
+    if isinstance(data, dict) and "classes" in data:
+        data = data["classes"]
+    if not isinstance(data, list):
+        raise SealError("a vocabulary is a YAML list of classes (each a name or {class: NAME, synonyms: [...]})",
+                        where)
+    names: list[str] = []
+    synonyms: dict[str, list[str]] = {}
+    for number, entry in enumerate(data, 1):
+        if isinstance(entry, str | int | float) and str(entry).strip():
+            names.append(str(entry))
+        elif isinstance(entry, dict) and isinstance(entry.get("class"), str) and entry["class"].strip():
+            extra = entry.get("synonyms") or []
+            if not isinstance(extra, list) or not all(isinstance(s, str) for s in extra):
+                raise SealError(f"entry {number}: synonyms must be a list of names", where)
+            names.append(entry["class"])
+            synonyms.setdefault(entry["class"], []).extend(extra)
+        else:
+            raise SealError(f"entry {number} ({entry!r}) is neither a class name nor {{class: NAME, synonyms: [...]}}",
+                            where)
+    if not names:
+        raise SealError("the vocabulary lists no class", where)
+    return names, synonyms
+
+
+def load_vocabulary(path: str | Path) -> Vocabulary:
+    """Read a vocabulary file (YAML list of classes, each a name or ``{class, synonyms}``)."""
+    from seal_cli.fileio import read_yaml
+
+    where = Where(str(path))
+    names, synonyms = _entries(read_yaml(path), where)
+    return Vocabulary.of(names, synonyms)
+
+
+def vocabulary_of_map(map_: Any) -> Vocabulary:
+    """The classes a map knows: its places', its objects' and its priors' classes."""
+    names = [p.cls for p in getattr(map_, "places", ())]
+    names += [o.cls for o in getattr(map_, "objects", ())]
+    names += list(getattr(map_, "priors", {}) or {})
+    return Vocabulary.of(names)

@@ -1,0 +1,125 @@
+"""Pictures of maps with matplotlib: occupancy, rooms, places, objects, the robot and what it sees.
+
+:func:`draw_map` draws onto a matplotlib ``Axes`` so that other pictures (particle clouds,
+modes) can be layered on top; :func:`save_map_png` writes a whole picture. matplotlib is
+imported inside the functions (it costs half a second).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from seal_cli.maps.geometry import FREE, OCCUPIED
+from seal_cli.maps.model import Map
+
+__all__ = ["draw_map", "room_colour", "save_map_png"]
+
+_PALETTE = ("#4e79a7", "#f28e2b", "#59a14f", "#e15759", "#b07aa1", "#76b7b2", "#edc948", "#ff9da7", "#9c755f",
+            "#bab0ac")
+
+
+def room_colour(index: int) -> str:
+    """The colour of the index-th room (a 10-colour palette, repeating)."""
+    return _PALETTE[index % len(_PALETTE)]
+
+
+def occupancy_image(m: Map) -> np.ndarray:
+    """Grey levels for the grid (white free, black occupied, light grey unknown), row 0 at the lowest y."""
+    image = np.full(m.grid.shape, 0.85)
+    image[m.grid.cells == FREE] = 1.0
+    image[m.grid.cells == OCCUPIED] = 0.0
+    return image
+
+
+def draw_map(ax: Any, m: Map, *, rooms: bool = True, places: bool = True, objects: bool = True,
+             robot: bool = True, visible: bool = False) -> None:
+    """Draw the map on ``ax`` in world coordinates (metres), clipped to the map's bounds."""
+    from matplotlib.patches import Polygon
+    from matplotlib.transforms import Affine2D
+
+    grid = m.grid
+    shown = ax.imshow(occupancy_image(m), cmap="gray", vmin=0, vmax=1, origin="lower", extent=grid.extent,
+                      interpolation="nearest", zorder=0)
+    if grid.yaw:
+        x0, y0 = grid.origin[0], grid.origin[1]
+        shown.set_transform(Affine2D().rotate_around(x0, y0, grid.yaw) + ax.transData)
+    if rooms:
+        for i, room in enumerate(m.rooms):
+            colour = room_colour(i)
+            ax.add_patch(Polygon(room.vertices, closed=True, facecolor=colour, alpha=0.12, edgecolor=colour,
+                                 linewidth=1.5, zorder=1))
+            x, y, ha, va = _label_point(m, i)
+            ax.text(x, y, room.name, ha=ha, va=va, fontsize=9, color=colour, weight="bold", zorder=5)
+    if places:
+        for place in m.places:
+            marker = "s" if place.openable else "o"
+            ax.plot(*place.at, marker=marker, markersize=5, markerfacecolor="white" if place.closed else "#555",
+                    markeredgecolor="#555", zorder=3)
+            ax.annotate(place.name, place.at, xytext=(3, 3), textcoords="offset points", fontsize=6, color="#555",
+                        zorder=5)
+    if objects:
+        for obj in m.objects:
+            ax.plot(*obj.at, marker="*", markersize=11, color="#d62728", markeredgecolor="black", zorder=4)
+            ax.annotate(obj.cls, obj.at, xytext=(4, -9), textcoords="offset points", fontsize=7, color="#d62728",
+                        zorder=5)
+    if robot:
+        x, y, yaw = m.robot.pose
+        if visible:
+            from seal_cli.sensing.sensor import visible_region
+
+            outline = visible_region(m, m.robot.pose).polygon()
+            ax.add_patch(Polygon(outline, closed=True, facecolor="#ffd700", alpha=0.25, edgecolor="none", zorder=2))
+        ax.plot(x, y, marker="o", markersize=8, color="#1f77b4", markeredgecolor="black", zorder=4)
+        ax.arrow(x, y, 0.6 * np.cos(yaw), 0.6 * np.sin(yaw), width=0.05, color="#1f77b4", zorder=4)
+    xmin, ymin, xmax, ymax = m.bounds
+    pad = 0.02 * max(xmax - xmin, ymax - ymin)
+    ax.set_xlim(xmin - pad, xmax + pad)
+    ax.set_ylim(ymin - pad, ymax + pad)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+
+
+def _label_point(m: Map, index: int) -> tuple[float, float, str, str]:
+    """Where to write a room's name, and its alignment: inside its top-left corner (as on a floor
+    plan), else at its centroid, else at its free cell nearest the centroid."""
+    room = m.rooms[index]
+    xmin, _, _, ymax = room.bbox
+    inset = 0.3 + 0.02 * max(m.bounds[2] - m.bounds[0], m.bounds[3] - m.bounds[1])
+    corner = (xmin + inset, ymax - inset)
+    if room.contains([corner])[0]:
+        return (corner[0], corner[1], "left", "top")
+    cx, cy = room.centroid
+    if room.contains([(cx, cy)])[0]:
+        return (cx, cy, "center", "center")
+    cells = m.free_centres[m.free_cell_room == index]
+    if len(cells) == 0:
+        return (float(room.vertices[:, 0].mean()), float(room.vertices[:, 1].mean()), "center", "center")
+    best = cells[np.argmin(np.hypot(cells[:, 0] - cx, cells[:, 1] - cy))]
+    return (float(best[0]), float(best[1]), "center", "center")
+
+
+def save_map_png(m: Map, path: str | Path, *, visible: bool = True, dpi: int = 120) -> None:
+    """Write a picture of the map (with the robot's visible region) to ``path`` (whole or not at all)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from seal_cli.fileio import atomic_output
+
+    xmin, ymin, xmax, ymax = m.bounds
+    width = 9.0
+    height = max(3.0, width * (ymax - ymin) / (xmax - xmin) + 0.6)
+    fig, ax = plt.subplots(figsize=(width, height))
+    try:
+        draw_map(ax, m, visible=visible)
+        ax.set_title(m.name)
+        fig.tight_layout()
+        with atomic_output(path) as tmp:
+            fig.savefig(tmp, dpi=dpi, format="png")
+    finally:
+        plt.close(fig)

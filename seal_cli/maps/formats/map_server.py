@@ -1,0 +1,528 @@
+"""Map files: a ROS map_server YAML plus seal's semantic keys, read with the position of every value.
+
+::
+
+    image: apartment.pgm        # optional; the map_server keys keep their ROS meaning
+    resolution: 0.05
+    origin: [-10.0, -7.0, 0.0]  # pose of the lower-left pixel (yaw radians)
+    negate: 0
+    occupied_thresh: 0.65
+    free_thresh: 0.196
+    mode: trinary               # optional: trinary (default), scale or raw
+    name: apartment
+    bounds: [-9, -6, 9, 6]      # xmin, ymin, xmax, ymax; default: the image's extent
+    rooms: [{name: kitchen, polygon: [[x, y], ...]}, {name: bedroom, box: [xmin, ymin, xmax, ymax]}]
+    places: [{name: fridge_1, class: fridge, at: [x, y], openable: true, open: false, reach: 1.0}]
+    priors: {cup: {family_room: 0.5, bedroom: 0.5}}
+    objects: [{class: cup, at: [x, y], in: fridge_1}]   # ``at`` defaults to the place's position
+    robot: {pose: [x, y, yaw], holding: null}
+    sensor: {range: 5.0, fov: 360, p_detect: 0.9, sigma: 0.3, noise: 0.05}
+
+The image is read exactly as ROS map_server reads it: image row 0 is the highest y; for each
+pixel the colour channels are averaged, ``negate`` flips the value, ``p = (255 − value) / 255``
+is the occupancy probability, and the cell is occupied if ``p > occupied_thresh``, free if
+``p < free_thresh``, unknown otherwise (``mode: scale`` reads the same; ``mode: raw`` takes the
+value as an occupancy percentage, 255 unknown). PGM (P5 binary and P2 text, 8 or 16 bits; other
+maximum values are scaled to 255) is read with numpy alone; PNG through matplotlib.
+
+One deliberate difference, for PNG only: ROS 1's map_server averages an alpha channel *into*
+the grey value in trinary mode, which turns unknown grey (205) into free space on an opaque RGBA
+PNG. seal does what ROS 2's nav2_map_server does: it averages the colour channels only, and a
+fully transparent pixel is unknown. Reading never raises anything but SealError.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import functools
+import math
+from collections.abc import Callable, Iterator
+from pathlib import Path
+from typing import Any, TypeVar
+
+import numpy as np
+import yaml
+from numpy.typing import NDArray
+
+from seal_cli.errors import SealError, SealErrors, Where
+from seal_cli.fileio import LOADER, read_text
+from seal_cli.frames.taxonomy import class_key
+from seal_cli.maps.geometry import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
+from seal_cli.maps.model import Map, MapWarning, ObjectTruth, Place, Robot, Room, Sensor
+from seal_cli.yamlnodes import NodeReader
+from seal_cli.yamlnodes import is_null as _is_null
+from seal_cli.yamlnodes import shape as _shape
+
+__all__ = ["KEYS", "check_map_file", "load_map", "read_image", "read_map", "read_pgm"]
+
+MAP_SERVER_KEYS = ("image", "resolution", "origin", "negate", "occupied_thresh", "free_thresh", "mode")
+SEMANTIC_KEYS = ("name", "bounds", "rooms", "places", "priors", "objects", "robot", "sensor")
+KEYS = MAP_SERVER_KEYS + SEMANTIC_KEYS
+ROOM_KEYS = ("name", "polygon", "box")
+PLACE_KEYS = ("name", "class", "at", "openable", "open", "reach")
+OBJECT_KEYS = ("class", "at", "in")
+ROBOT_KEYS = ("pose", "holding")
+SENSOR_KEYS = ("range", "fov", "p_detect", "sigma", "noise")
+MAX_METRES = 1000.0
+"""The largest sensor range and place reach a map may give: beyond it squared distances overflow
+(1e200 m) or the search's lattices cannot be built, and no robot acts a kilometre away."""
+MODES = ("trinary", "scale", "raw")
+
+T = TypeVar("T")
+Path_ = tuple[str | int, ...]
+
+
+# -- images ---------------------------------------------------------------------------------------
+def read_pgm(data: bytes) -> NDArray[np.float64]:
+    """A PGM image (P5 or P2) as grey values scaled to 0..255, row 0 the top row of the picture."""
+    magic = data[:2]
+    if magic not in (b"P5", b"P2"):
+        raise SealError(f"not a PGM image (it starts with {data[:2]!r}, not P5 or P2)")
+    fields: list[int] = []
+    pos = 2
+    while len(fields) < 3:
+        while pos < len(data) and data[pos:pos + 1].isspace():
+            pos += 1
+        if pos < len(data) and data[pos:pos + 1] == b"#":
+            end = data.find(b"\n", pos)
+            pos = len(data) if end < 0 else end + 1
+            continue
+        start = pos
+        while pos < len(data) and data[pos:pos + 1].isdigit():
+            pos += 1
+        if start == pos:
+            raise SealError("PGM header is cut short or malformed (expected width, height and maximum value)")
+        fields.append(int(data[start:pos]))
+    width, height, maxval = fields
+    if width <= 0 or height <= 0 or not 0 < maxval < 65536:
+        raise SealError(f"PGM header has impossible values: width {width}, height {height}, maximum {maxval}")
+    count = width * height
+    if magic == b"P5":
+        pos += 1  # exactly one whitespace byte separates the header from the pixels
+        dtype = np.dtype(">u2") if maxval > 255 else np.dtype(np.uint8)
+        need = count * dtype.itemsize
+        if len(data) - pos < need:
+            raise SealError(f"PGM image is truncated: {width}×{height} pixels need {need} bytes, "
+                            f"the file has {max(len(data) - pos, 0)}")
+        pixels = np.frombuffer(data, dtype=dtype, count=count, offset=pos).astype(float)
+    else:
+        try:
+            values = np.array(data[pos:].split(), dtype=float)
+        except ValueError:
+            raise SealError("PGM (P2) pixel values must be whole numbers") from None
+        if len(values) < count:
+            raise SealError(f"PGM image is truncated: {width}×{height} pixels, only {len(values)} values")
+        pixels = values[:count]
+    if pixels.max(initial=0) > maxval:
+        raise SealError(f"PGM pixel value {int(pixels.max())} exceeds the maximum {maxval} in its header")
+    return (pixels * (255.0 / maxval)).reshape(height, width)
+
+
+def _read_png(path: Path) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Grey (colour channels averaged, 0..255) and alpha (0..255) of a PNG, through matplotlib."""
+    import matplotlib.image
+
+    try:
+        image = np.asarray(matplotlib.image.imread(str(path)), dtype=float)
+    except Exception as exc:  # matplotlib/Pillow raise many kinds; all mean "cannot read"
+        raise SealError(f"cannot read image {path.name}: {exc}") from None
+    if image.max(initial=0) <= 1.0:
+        image = np.round(image * 255.0)
+    if image.ndim == 2:
+        return image, np.full(image.shape, 255.0)
+    channels = image.shape[2]
+    has_alpha = channels in (2, 4)
+    alpha = image[..., -1] if has_alpha else np.full(image.shape[:2], 255.0)
+    return image[..., :channels - 1 if has_alpha else channels].mean(axis=2), alpha
+
+
+def read_image(path: Path, negate: bool = False, occupied_thresh: float = 0.65, free_thresh: float = 0.196,
+               mode: str = "trinary") -> NDArray[np.int8]:
+    """Cells (FREE / OCCUPIED / UNKNOWN) of a map_server image, row 0 at the lowest y (flipped)."""
+    try:
+        data = path.read_bytes()
+    except FileNotFoundError:
+        raise SealError(f"image {path.name} does not exist (looked for {path})") from None
+    except OSError as exc:
+        raise SealError(f"cannot read image {path}: {exc.strerror}") from None
+    if data[:2] in (b"P5", b"P2"):
+        grey, alpha = read_pgm(data), None
+    elif data[:8] == b"\x89PNG\r\n\x1a\n":
+        grey, alpha = _read_png(path)
+    else:
+        raise SealError(f"image {path.name} is neither PGM (P5/P2) nor PNG")
+    if negate:
+        grey = 255.0 - grey
+    cells = np.full(grey.shape, UNKNOWN, dtype=np.int8)
+    if mode == "raw":
+        value = np.round(grey)
+        cells[value / 100.0 > occupied_thresh] = OCCUPIED
+        cells[value / 100.0 < free_thresh] = FREE
+        cells[value > 100] = UNKNOWN
+    else:
+        occ = (255.0 - grey) / 255.0
+        cells[occ > occupied_thresh] = OCCUPIED
+        cells[occ < free_thresh] = FREE
+    if alpha is not None:
+        cells[alpha < 1.0] = UNKNOWN  # a transparent pixel says nothing
+    return cells[::-1].copy()
+
+
+# -- the YAML reader --------------------------------------------------------------------------------
+class _Reader(NodeReader):
+    """Turns a composed YAML map into a Map, collecting every problem with its position."""
+
+    def __init__(self, text: str, path: Path) -> None:
+        super().__init__(text, str(path))
+        self.path = path
+        self.positions: dict[Path_, Where] = {}
+        self.broken: set[str] = set()
+        self._construct = yaml.constructor.SafeConstructor()
+
+    # -- values -------------------------------------------------------------------------------
+    def value(self, node: yaml.Node) -> Any:
+        try:
+            return self._construct.construct_object(node, deep=True)
+        except yaml.YAMLError as exc:
+            self.problem(f"cannot read this value: {getattr(exc, 'problem', None) or exc}", node)
+            return None
+
+    def number(self, node: yaml.Node, what: str, ok: Callable[[float], bool] = math.isfinite,
+               need: str = "a number") -> float | None:
+        value = self.value(node) if isinstance(node, yaml.ScalarNode) else None
+        if isinstance(value, str) and not getattr(node, "style", "x"):  # YAML 1.1: plain 1e-9 is a string
+            with contextlib.suppress(ValueError):
+                value = float(value)
+        if isinstance(value, int) and not isinstance(value, bool) and abs(value) > 1e300:
+            value = math.inf  # too large for a float: math.isfinite would raise OverflowError
+        if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value) \
+                or not ok(float(value)):
+            shown = node.value if isinstance(node, yaml.ScalarNode) else _shape(node)
+            self.problem(f"{what} must be {need}, not {shown!r}" if isinstance(node, yaml.ScalarNode)
+                         else f"{what} must be {need}, not {shown}", node)
+            return None
+        return float(value)
+
+    def numbers(self, node: yaml.Node, what: str, counts: tuple[int, ...]) -> list[float] | None:
+        shape = " or ".join(f"{n}" for n in counts)
+        if not isinstance(node, yaml.SequenceNode):
+            self.problem(f"{what} must be a list of {shape} numbers, not {_shape(node)}", node)
+            return None
+        if len(node.value) not in counts:
+            self.problem(f"{what} must have {shape} numbers, not {len(node.value)}", node)
+            return None
+        values = [self.number(item, f"each number of {what}") for item in node.value]
+        return None if any(v is None for v in values) else values  # type: ignore[return-value]
+
+    def xy(self, node: yaml.Node, what: str) -> tuple[float, float] | None:
+        values = self.numbers(node, what, (2,))
+        return (values[0], values[1]) if values else None
+
+    def boolean(self, node: yaml.Node, what: str) -> bool | None:
+        value = self.value(node) if isinstance(node, yaml.ScalarNode) else None
+        if isinstance(value, bool) or value in (0, 1):
+            return bool(value)
+        self.problem(f"{what} must be true or false, not {getattr(node, 'value', _shape(node))!r}", node)
+        return None
+
+    def pairs_at(self, node: yaml.Node, what: str, path: Path_, allowed: tuple[str, ...] | None = None
+                 ) -> Iterator[tuple[str, yaml.Node, yaml.Node]]:
+        """:meth:`NodeReader.pairs` (nothing is an empty mapping), recording each key's position under
+        ``path + (key,)`` for the map's own checks."""
+        for key, key_node, value_node in self.pairs(node, what, allowed, empty=True):
+            self.positions[path + (key,)] = self.where(key_node)
+            yield key, key_node, value_node
+
+    # -- the document ----------------------------------------------------------------------------
+    def read(self, root: yaml.Node) -> Map | None:
+        if not isinstance(root, yaml.MappingNode):
+            self.problem(f"a map file must be a mapping of keys (image, rooms, ...), not {_shape(root)}", root)
+            return None
+        fields: dict[str, Any] = {}
+        nodes: dict[str, yaml.Node] = {}
+        for key, _, value in self.pairs_at(root, "a map file", (), KEYS):
+            nodes[key] = value
+        server = self.map_server(nodes, root)
+        fields["name"] = (self.string(nodes["name"], "name") if "name" in nodes else None) or _default_name(self.path)
+        if "bounds" in nodes:
+            fields["bounds"] = self.bounds(nodes["bounds"])
+        if "rooms" in nodes:
+            fields["rooms"] = self.rooms(nodes["rooms"])
+        places = self.places(nodes["places"]) if "places" in nodes else ()
+        fields["places"] = places
+        if "priors" in nodes:
+            fields["priors"] = self.priors(nodes["priors"])
+        if "objects" in nodes:
+            fields["objects"] = self.objects(nodes["objects"], places)
+        if "robot" in nodes:
+            fields["robot"] = self.robot(nodes["robot"])
+        if "sensor" in nodes:
+            fields["sensor"] = self.sensor(nodes["sensor"])
+        if server is not None:
+            fields["grid"] = server
+        elif "bounds" not in nodes and "image" not in nodes:
+            self.problem("a map needs bounds: [xmin, ymin, xmax, ymax] or an occupancy image", root)
+            return None
+        if fields.get("bounds", "") is None or ("image" in nodes and server is None):
+            return None  # the bounds or the image are broken, already reported: nothing to check against
+        try:
+            built = Map(file=self.file, positions=self.positions, check=False,
+                        **{k: v for k, v in fields.items() if v is not None})
+        except SealError as exc:
+            for problem in getattr(exc, "problems", None) or [exc]:
+                self.problems.append(problem)
+            return None
+        found = built.problems(self.broken)
+        self.problems.extend(found)
+        return built.noting(p for p in found if isinstance(p, MapWarning))
+
+    def map_server(self, nodes: dict[str, yaml.Node], root: yaml.Node) -> OccupancyGrid | None:
+        if "image" not in nodes:
+            for key in MAP_SERVER_KEYS[1:]:
+                if key in nodes and key not in ("resolution", "origin"):
+                    self.problem(f"{key} only means something with an image; add image: or remove {key}", nodes[key])
+            return None
+        image = self.string(nodes["image"], "image")
+        missing = [k for k in ("resolution", "origin") if k not in nodes]
+        if missing:
+            self.problem(f"a map with an image needs {' and '.join(missing)} (map_server keys)", nodes["image"])
+        resolution = self.number(nodes["resolution"], "resolution", lambda v: v > 0, "a positive number of metres "
+                                 "per pixel") if "resolution" in nodes else None
+        origin = self.numbers(nodes["origin"], "origin", (2, 3)) if "origin" in nodes else None
+        negate = self.boolean(nodes["negate"], "negate") if "negate" in nodes else False
+        occ = self.number(nodes["occupied_thresh"], "occupied_thresh", lambda v: 0 <= v <= 1,
+                          "a probability in [0, 1]") if "occupied_thresh" in nodes else 0.65
+        free = self.number(nodes["free_thresh"], "free_thresh", lambda v: 0 <= v <= 1,
+                           "a probability in [0, 1]") if "free_thresh" in nodes else 0.196
+        mode = self.string(nodes["mode"], "mode") if "mode" in nodes else "trinary"
+        if mode is not None and mode not in MODES:
+            self.problem(f"mode must be one of {', '.join(MODES)}, not {mode!r}", nodes["mode"])
+            mode = None
+        if occ is not None and free is not None and free > occ:
+            self.problem(f"free_thresh {free:g} is above occupied_thresh {occ:g}", nodes["free_thresh"])
+            return None
+        if None in (image, resolution, origin, negate, occ, free, mode):
+            return None
+        assert image is not None and resolution is not None and origin is not None and mode is not None
+        try:
+            cells = read_image(self.path.parent / image, bool(negate), float(occ or 0), float(free or 0), mode)
+        except SealError as exc:
+            self.problem(exc.message, nodes["image"])
+            return None
+        return OccupancyGrid(cells, resolution, tuple(origin + [0.0] * (3 - len(origin))))  # type: ignore[arg-type]
+
+    def bounds(self, node: yaml.Node) -> tuple[float, ...] | None:
+        values = self.numbers(node, "bounds", (4,))
+        if values is None:
+            return None
+        if not (values[0] < values[2] and values[1] < values[3]):
+            self.problem(f"bounds must be [xmin, ymin, xmax, ymax] with xmin < xmax and ymin < ymax, not "
+                         f"{[float(v) for v in values]}", node)
+            return None
+        return tuple(values)
+
+    def rooms(self, node: yaml.Node) -> tuple[Room, ...]:
+        rooms = []
+        for i, item in enumerate(self.items(node, "rooms")):
+            self.positions[("rooms", i)] = self.where(item)
+            fields = {key: value for key, _, value in self.pairs_at(item, "a room", ("rooms", i), ROOM_KEYS)}
+            if not isinstance(item, yaml.MappingNode):
+                continue
+            name = self.string(fields["name"], "a room's name") if "name" in fields else None
+            if "name" not in fields:
+                self.problem("a room needs a name", item)
+            shapes = [k for k in ("polygon", "box") if k in fields]
+            misspelt = any(isinstance(k, yaml.ScalarNode) and k.value not in ROOM_KEYS for k, _ in item.value)
+            if len(shapes) != 1 and not (misspelt and not shapes):
+                self.problem("a room needs exactly one of polygon: [[x, y], ...] or box: [xmin, ymin, xmax, ymax]"
+                             + (" (it has both)" if len(shapes) == 2 else ""), item)
+            room = self.room_shape(name, fields, shapes[0]) if name and len(shapes) == 1 else None
+            if room is not None:
+                rooms.append(room)
+            elif name:
+                self.broken.add(name)
+        return tuple(rooms)
+
+    def room_shape(self, name: str, fields: dict[str, yaml.Node], shape: str) -> Room | None:
+        node = fields[shape]
+        where = self.where(node)
+        if shape == "box":
+            values = self.numbers(node, f"room {name}: box", (4,))
+            if values is None:
+                return None
+            xmin, ymin, xmax, ymax = values
+            return self.build(functools.partial(Room.box, name, xmin, ymin, xmax, ymax, where), node)
+        if not isinstance(node, yaml.SequenceNode):
+            self.problem(f"room {name}: polygon must be a list of [x, y] points, not {_shape(node)}", node)
+            return None
+        points = [self.xy(p, f"each point of room {name}'s polygon") for p in node.value]
+        if any(p is None for p in points):
+            return None
+        if len(points) > 1 and points[0] == points[-1]:
+            points = points[:-1]
+        repeated = [i for i in range(len(points)) if points[i] == points[i - 1]] if len(points) > 1 else []
+        if repeated:
+            self.problem(f"room {name}: polygon repeats the point {list(points[repeated[0]])} "  # type: ignore[arg-type]
+                         "twice in a row", node.value[repeated[0]])
+            return None
+        return self.build(lambda: Room(name, tuple(points), where), node)  # type: ignore[arg-type]
+
+    def places(self, node: yaml.Node) -> tuple[Place, ...]:
+        places = []
+        for i, item in enumerate(self.items(node, "places")):
+            self.positions[("places", i)] = self.where(item)
+            fields = {key: value for key, _, value in self.pairs_at(item, "a place", ("places", i), PLACE_KEYS)}
+            if not isinstance(item, yaml.MappingNode):
+                continue
+            missing = [k for k in ("name", "class", "at") if k not in fields]
+            if missing:
+                self.problem(f"a place needs {', '.join(missing)}", item)
+            name = self.string(fields["name"], "a place's name") if "name" in fields else None
+            cls = self.string(fields["class"], "a place's class") if "class" in fields else None
+            at = self.xy(fields["at"], f"place {name}: at") if "at" in fields else None
+            openable = self.boolean(fields["openable"], "openable") if "openable" in fields else False
+            is_open = self.boolean(fields["open"], "open") if "open" in fields else None
+            reach = self.number(fields["reach"], "reach", lambda v: 0 < v <= MAX_METRES,
+                                f"a positive number of metres, at most {MAX_METRES:g}") \
+                if "reach" in fields else 1.0
+            bad = (openable is None or reach is None or ("open" in fields and is_open is None))
+            place = None
+            if name and cls and at and not bad:
+                place = self.build(functools.partial(Place, name, cls, at, bool(openable), is_open, None,
+                                                     float(reach or 1.0), self.where(item)), item)
+            if place is not None:
+                places.append(place)
+            elif name:
+                self.broken.add(name)
+                if cls:
+                    self.broken.add(cls)
+        return tuple(places)
+
+    def priors(self, node: yaml.Node) -> dict[str, dict[str, float]]:
+        priors: dict[str, dict[str, float]] = {}
+        first: dict[str, str] = {}
+        for cls, key_node, value in self.pairs_at(node, "priors", ("priors_raw",)):
+            key = class_key(cls)
+            if key in first:
+                self.problem(f"priors name the class {cls!r} twice (as {first[key]!r} too)", key_node)
+                continue
+            first[key] = cls
+            self.positions[("priors", key)] = self.where(key_node)
+            masses: dict[str, float] = {}
+            for target, target_node, mass_node in self.pairs_at(value, f"the prior of {cls}", ("priors_raw", cls)):
+                self.positions[("priors", key, target)] = self.where(target_node)
+                mass = self.number(mass_node, f"the mass of {target} in the prior of {cls}")
+                if mass is not None:
+                    masses[target] = mass
+            priors[key] = masses
+        return priors
+
+    def objects(self, node: yaml.Node, places: tuple[Place, ...]) -> tuple[ObjectTruth, ...]:
+        by_name = {class_key(p.name): p for p in places}
+        objects = []
+        for i, item in enumerate(self.items(node, "objects")):
+            self.positions[("objects", i)] = self.where(item)
+            fields = {key: value for key, _, value in self.pairs_at(item, "an object", ("objects", i), OBJECT_KEYS)}
+            if not isinstance(item, yaml.MappingNode):
+                continue
+            if "class" not in fields:
+                self.problem("an object needs a class", item)
+            cls = self.string(fields["class"], "an object's class") if "class" in fields else None
+            inside = self.string(fields["in"], "in") if "in" in fields else None
+            if "at" in fields:
+                at = self.xy(fields["at"], f"object {cls}: at")
+            elif inside is not None and class_key(inside) in by_name:
+                at = by_name[class_key(inside)].at
+            else:
+                if inside is None or class_key(inside) not in self.broken:
+                    self.problem(f"object {cls or ''} needs at: [x, y]"
+                                 + (f" (or in: a place of this map; {inside!r} is none)" if inside else ""), item)
+                at = None
+            if cls and at and ("in" not in fields or inside):
+                built = self.build(functools.partial(ObjectTruth, cls, at, inside, self.where(item)), item)
+                if built is not None:
+                    objects.append(built)
+        return tuple(objects)
+
+    def robot(self, node: yaml.Node) -> Robot | None:
+        fields = {key: value for key, _, value in self.pairs_at(node, "robot", ("robot",), ROBOT_KEYS)}
+        pose = self.numbers(fields["pose"], "robot pose", (2, 3)) if "pose" in fields else []
+        holding = None
+        if "holding" in fields and not _is_null(fields["holding"]):
+            holding = self.string(fields["holding"], "holding")
+        if pose is None or not isinstance(node, yaml.MappingNode):
+            return None
+        return self.build(lambda: Robot(tuple(pose) or None, holding, self.where(node)),  # type: ignore[arg-type]
+                          node)
+
+    def sensor(self, node: yaml.Node) -> Sensor | None:
+        fields = {key: value for key, _, value in self.pairs_at(node, "sensor", ("sensor",), SENSOR_KEYS)}
+        checks: dict[str, tuple[Callable[[float], bool], str]] = {
+            "range": (lambda v: 0 < v <= MAX_METRES, f"a positive number of metres, at most {MAX_METRES:g}"),
+            "fov": (lambda v: 0 < v <= 360, "degrees in (0, 360]"),
+            "p_detect": (lambda v: 0 <= v <= 1, "a probability in [0, 1]"),
+            "sigma": (lambda v: v > 0, "a positive number of metres"),
+            "noise": (lambda v: v >= 0, "a number of metres, 0 or more")}
+        values: dict[str, float | None] = {key: self.number(value, f"sensor {key}", *checks[key])
+                                           for key, value in fields.items()}
+        if any(v is None for v in values.values()) or not isinstance(node, yaml.MappingNode):
+            return None
+        args = {("fov_deg" if k == "fov" else k): v for k, v in values.items()}
+        return self.build(lambda: Sensor(**args, where=self.where(node)), node)  # type: ignore[arg-type]
+
+
+def _default_name(path: Path) -> str:
+    """A map's name when it has no ``name:``: the file's stem, or its folder's name for ``map.yaml``."""
+    stem = path.stem
+    return path.resolve().parent.name if stem == "map" and path.resolve().parent.name else stem
+
+
+# -- entry points -------------------------------------------------------------------------------------
+def read_map(path: str | Path) -> tuple[Map | None, list[SealError]]:
+    """The map in a file (None if it cannot be built) and every problem found, sorted by position.
+
+    Problems that are :class:`~seal_cli.maps.model.MapWarning` do not stop the map from being used."""
+    path = Path(path)
+    try:
+        text = read_text(path)
+    except SealError as exc:
+        return None, [exc]
+    try:
+        root = yaml.compose(text, Loader=LOADER)
+    except yaml.MarkedYAMLError as exc:
+        mark = exc.problem_mark or exc.context_mark
+        lines = text.splitlines()
+        if mark is None:
+            return None, [SealError(f"YAML syntax error: {exc.problem}", Where(str(path)))]
+        source = lines[mark.line] if mark.line < len(lines) else None
+        return None, [SealError(f"YAML syntax error: {exc.problem or exc.context}",
+                                Where(str(path), mark.line + 1, mark.column + 1), source_line=source)]
+    except yaml.YAMLError as exc:
+        return None, [SealError(f"YAML error: {exc}", Where(str(path)))]
+    if root is None:
+        return None, [SealError("the map file is empty", Where(str(path)))]
+    reader = _Reader(text, path)
+    built = reader.read(root)
+    problems = sorted(reader.problems, key=lambda p: (p.line or 0, p.column or 0))
+    for problem in problems:
+        if problem.source_line is None and problem.line and problem.line <= len(reader.lines):
+            problem.source_line = reader.lines[problem.line - 1]
+    return built, problems
+
+
+def load_map(path: str | Path) -> Map:
+    """The map in a file, or SealError(s) listing every problem with its file, line and column.
+
+    A map whose only problems are warnings (:class:`~seal_cli.maps.model.MapWarning`) loads, with them in
+    ``Map.warnings``."""
+    built, problems = read_map(path)
+    fatal = [p for p in problems if not isinstance(p, MapWarning)]
+    if fatal or built is None:
+        raise fatal[0] if len(fatal) == 1 else SealErrors(fatal or problems)
+    return built
+
+
+def check_map_file(path: str | Path) -> list[SealError]:
+    """Every problem of a map file, warnings included (what ``seal validate`` reports); empty when the
+    map is good."""
+    return read_map(path)[1]

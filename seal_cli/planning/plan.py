@@ -1,0 +1,437 @@
+"""Planning: the ordered, grounded frames that carry out a command from the robot's state.
+
+A plan runs the **commanded** frames b₁ … bₙ in the commanded order, each once its
+preconditions hold. Before bₖ the planner **inserts** frames whose postconditions make bₖ's
+unmet preconditions true and, when such a frame cannot run yet, frames for its preconditions in
+turn: "stir the cup" is Pick(spoon), Stir(cup). What a frame needs and does is
+:class:`~seal_cli.planning.state.State` (``unmet`` and ``apply``), the semantics SeFM and the simulator use.
+
+**Search.** A* over nodes (facts, k), k being the number of commanded frames already run. From a
+node, bₖ₊₁ runs if it is applicable (and then nothing else is tried: a commanded frame runs as soon
+as it can); otherwise one of the *achievers* of its unmet preconditions is inserted. Every frame
+costs 1, and h = (n − k) + [bₖ₊₁ is not applicable] never overestimates and is consistent, so the
+plan found has the fewest frames. Paths are compared, after their cost, as sequences of successor
+ranks, so among the shortest plans the search returns the first in the order successors are
+generated: achievers of a frame come right before it, in the order of its preconditions, and the
+same inputs always give the same plan. The search gives up after ``max_nodes`` expansions.
+
+**Achievers** of an unmet fact p that a frame N needs, in a state s (inserted frames are grounded
+from the fact they achieve):
+
+1. a frame with a postcondition of p's predicate, sign and arity, whose roles take p's arguments
+   (holding(spoon) → Pick(theme=spoon));
+2. a role still open that one of the frame's deletions names takes what s says, since a frame
+   undoes what is there: Pick's source is where the theme is (``not in(theme, source)`` against
+   ``in(apple, fridge_1)``), Place's theme is what the hand holds (``not holding(theme)``);
+3. a role still open takes the value of N's element of the same name, if it fits the type
+   (Bring(cup, source=kitchen) needs holding(cup) → Pick(cup, source=kitchen));
+4. then the frame's defaults (the thing of that class the state knows, else the class);
+5. any other role stays unfilled, and the facts and actions naming it drop out
+   (the knife is put down with Place(theme=knife) and no goal).
+
+A grounding whose values do not fit their element types, or that would not make p true, is not an
+achiever. Achievers are tried with fewer unfilled roles first, then in library order.
+
+**Explanation.** An inserted step is explained by the first later step whose precondition it made
+true and which still held when that step ran: ``because="holding(spoon) for Stir"``.
+
+**Goal.** What the command leaves behind: each commanded frame's postconditions that hold at the
+end of the plan; a deletion counts when the frame removed a fact that was true and was not one of
+its own preconditions (closing an open fridge; not the "holding" that Place consumes).
+"""
+
+from __future__ import annotations
+
+import heapq
+from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+from seal_cli.errors import SealError
+from seal_cli.frames.library import Library
+from seal_cli.frames.model import Binding, Fact, Frame
+from seal_cli.frames.taxonomy import Taxonomy
+from seal_cli.planning.state import State
+
+if TYPE_CHECKING:
+    from seal_cli.maps.model import Map
+
+__all__ = ["MAX_NODES", "Plan", "Step", "frames_to_localise", "plan", "plan_text"]
+
+MAX_NODES = 20_000
+"""Default bound on the nodes the search expands before it gives up."""
+
+
+@dataclass(frozen=True)
+class Step:
+    """One frame of a plan: commanded, or inserted ``because`` it achieves another's precondition."""
+
+    binding: Binding
+    commanded: bool
+    because: str | None = None
+
+    @property
+    def frame(self) -> str:
+        return self.binding.frame.name
+
+    @property
+    def elements(self) -> dict[str, str]:
+        """The filled elements, in the frame's role order."""
+        values = self.binding.elements
+        return {role: values[role] for role in self.binding.frame.roles if role in values}
+
+    def to_json(self) -> dict[str, Any]:
+        data: dict[str, Any] = {"frame": self.frame, "elements": self.elements}
+        if self.because is not None:
+            data["because"] = self.because
+        return data
+
+    def __str__(self) -> str:
+        return str(self.binding)
+
+
+@dataclass(frozen=True)
+class Plan:
+    """The steps that carry out a command, the state they start from and the facts they leave."""
+
+    steps: tuple[Step, ...]
+    initial: State
+    goal: tuple[Fact, ...]
+    text: str | None = None
+    expanded: int = field(default=0, compare=False)
+    """Search nodes expanded to find the plan."""
+
+    @property
+    def bindings(self) -> tuple[Binding, ...]:
+        return tuple(step.binding for step in self.steps)
+
+    def states(self) -> tuple[State, ...]:
+        """The state before each step, then the state after the last."""
+        states = [self.initial]
+        for step in self.steps:
+            states.append(states[-1].apply(step.binding))
+        return tuple(states)
+
+    @property
+    def final(self) -> State:
+        return self.states()[-1]
+
+    def to_json(self) -> dict[str, Any]:
+        """The document ``seal plan --json`` prints (SPEC, "``seal plan --json``")."""
+        return {"text": self.text, "plan": [step.to_json() for step in self.steps],
+                "state": [str(f) for f in self.initial], "goal": [str(f) for f in self.goal]}
+
+    def __len__(self) -> int:
+        return len(self.steps)
+
+
+# -- achievers -------------------------------------------------------------------------------------
+
+def _key(binding: Binding) -> tuple[str, tuple[tuple[str, str], ...]]:
+    """What tells grounded frames apart, cheaper to hash than the binding (which hashes its frame)."""
+    return binding.frame.name, binding.values
+
+
+def _unify(roles: Sequence[str], args: Sequence[str], values: Mapping[str, str]) -> dict[str, str] | None:
+    """``values`` extended so that each role names its argument; None if a role would take two."""
+    bound = dict(values)
+    for role, arg in zip(roles, args, strict=True):
+        if bound.setdefault(role, arg) != arg:
+            return None
+    return bound
+
+
+def _from_deletions(frame: Frame, values: dict[str, str], state: State) -> list[dict[str, str]]:
+    """``values`` completed from the stored facts that the frame's deletions would remove."""
+    partials = [values]
+    for deletion in (p for p in frame.postconditions if p.negated and p.args):
+        extended: list[dict[str, str]] = []
+        for partial in partials:
+            if all(a in partial for a in deletion.args):
+                extended.append(partial)
+                continue
+            matches = [m for f in sorted(state.facts, key=str)
+                       if f.predicate == deletion.predicate and len(f.args) == len(deletion.args)
+                       and (m := _unify(deletion.args, f.args, partial)) is not None]
+            extended.extend(matches or [partial])
+        partials = extended
+    return partials
+
+
+OPENABLE = "openable"
+"""The category of things that open and close; a map may say so of one place, whatever its class."""
+
+
+def fits(value: str, category: str, state: State, taxonomy: Taxonomy) -> bool:
+    """Whether a thing may fill an element of this type: it is not known *not* to belong (a thing
+    the state says opens and closes is openable)."""
+    if category == OPENABLE and state.closable is not None and value in state.closable:
+        return True
+    return taxonomy.is_a(state.class_of(value), category) is not False
+
+
+def resolve(cls: str, state: State) -> str:
+    """The thing the state knows by this name, else the first it knows of this class
+    (``fridge`` → ``fridge_1``), else the class itself."""
+    if cls in state.classes:
+        return cls
+    return next((name for name, c in state.classes.items() if c == cls), cls)
+
+
+class Achievers:
+    """The grounded frames that would make a fact true (see the module's docstring)."""
+
+    def __init__(self, library: Library) -> None:
+        self.taxonomy = library.taxonomy
+        self.index: dict[tuple[str, bool, int], list[tuple[int, Frame, int]]] = {}
+        for order, frame in enumerate(library.frames):
+            for n, post in enumerate(frame.postconditions):
+                key = (post.predicate, post.negated, len(post.args))
+                self.index.setdefault(key, []).append((order, frame, n))
+
+    def __call__(self, fact: Fact, needer: Binding, state: State) -> list[Binding]:
+        found: dict[tuple[str, tuple[tuple[str, str], ...]], tuple[tuple[int, ...], Binding]] = {}
+        for order, frame, n in self.index.get((fact.predicate, fact.negated, len(fact.args)), ()):
+            values = _unify(frame.postconditions[n].args, fact.args, {})
+            if values is None:
+                continue
+            for m, partial in enumerate(_from_deletions(frame, values, state)):
+                binding = frame.bind(self._complete(frame, partial, needer, state))
+                key = _key(binding)
+                if key == _key(needer) or key in found or not self.well_typed(binding, state) \
+                        or not state.apply(binding).holds(fact):
+                    continue
+                found[key] = ((len(frame.elements) - len(binding.values), order, n, m), binding)
+        return [binding for _, binding in sorted(found.values(), key=lambda rank_binding: rank_binding[0])]
+
+    def _complete(self, frame: Frame, values: dict[str, str], needer: Binding, state: State) -> dict[str, str]:
+        """Open roles: from the needing frame's same-named element, then from the default."""
+        inherited = needer.elements
+        for element in frame.elements:
+            if element.role in values:
+                continue
+            if element.role in inherited and fits(inherited[element.role], element.type, state, self.taxonomy):
+                values[element.role] = inherited[element.role]
+            elif element.default is not None:
+                values[element.role] = resolve(element.default, state)
+        return values
+
+    def well_typed(self, binding: Binding, state: State) -> bool:
+        return all(fits(value, binding.frame.element(role).type, state, self.taxonomy)
+                   for role, value in binding.values)
+
+
+# -- search ----------------------------------------------------------------------------------------
+
+Node = tuple[frozenset[Fact], int]
+
+
+@dataclass
+class _Trace:
+    """What the search learnt on its way, for the message when it fails."""
+
+    deepest: int = 0
+    stuck: State | None = None
+    dead: dict[int, list[tuple[Fact, Binding]]] = field(default_factory=dict)
+
+
+class _Search:
+    """A* over (facts, commanded frames run); see the module's docstring."""
+
+    def __init__(self, commanded: tuple[Binding, ...], library: Library, max_nodes: int) -> None:
+        self.commanded = commanded
+        self.achievers = Achievers(library)
+        self.max_nodes = max_nodes
+        self.trace = _Trace()
+
+    def h(self, state: State, k: int) -> int:
+        """Frames still to run: the commanded ones, plus one if the next cannot run yet."""
+        left = len(self.commanded) - k
+        return left + (1 if left and state.unmet(self.commanded[k]) else 0)
+
+    def successors(self, state: State, k: int) -> list[tuple[Binding, bool]]:
+        """The next commanded frame if it can run, else the achievers that can run now, in order."""
+        goal = self.commanded[k]
+        if state.applicable(goal):
+            return [(goal, True)]
+        found: list[Binding] = []
+        self._relevant(goal, state, k, found, set(), {_key(goal)})
+        return [(b, False) for b in found]
+
+    def _relevant(self, needer: Binding, state: State, k: int, found: list[Binding], facts: set[Fact],
+                  tried: set[tuple[str, tuple[tuple[str, str], ...]]]) -> None:
+        """Depth first through the unmet preconditions: achievers that can run are successors."""
+        for fact in state.unmet(needer):
+            if fact in facts:
+                continue
+            facts.add(fact)
+            options = self.achievers(fact, needer, state)
+            if not options:
+                self.trace.dead.setdefault(k, []).append((fact, needer))
+            for option in options:
+                if _key(option) in tried:
+                    continue
+                tried.add(_key(option))
+                if state.applicable(option):
+                    found.append(option)
+                else:
+                    self._relevant(option, state, k, found, facts, tried)
+
+    def run(self, initial: State) -> tuple[list[tuple[Binding, bool]], int]:
+        start: Node = (initial.facts, 0)
+        best: dict[Node, tuple[int, tuple[int, ...]]] = {start: (0, ())}
+        parent: dict[Node, tuple[Node, Binding, bool]] = {}
+        heap: list[tuple[int, tuple[int, ...], int, Node, State]] = [(self.h(initial, 0), (), 0, start, initial)]
+        closed: set[Node] = set()
+        expanded = 0
+        while heap:
+            _, ranks, g, node, state = heapq.heappop(heap)
+            if node in closed:
+                continue
+            closed.add(node)
+            k = node[1]
+            if k > self.trace.deepest or self.trace.stuck is None:
+                self.trace.deepest, self.trace.stuck = k, state
+            if k == len(self.commanded):
+                return self._path(parent, node), expanded
+            expanded += 1
+            if expanded > self.max_nodes:
+                raise self._gave_up(state, k)
+            for rank, (binding, is_commanded) in enumerate(self.successors(state, k)):
+                after = state.apply(binding)
+                child: Node = (after.facts, k + is_commanded)
+                cost = (g + 1, ranks + (rank,))
+                if child in closed or (child in best and best[child] <= cost):
+                    continue
+                best[child], parent[child] = cost, (node, binding, is_commanded)
+                heapq.heappush(heap, (g + 1 + self.h(after, child[1]), cost[1], g + 1, child, after))
+        raise self._no_plan()
+
+    @staticmethod
+    def _path(parent: Mapping[Node, tuple[Node, Binding, bool]], node: Node) -> list[tuple[Binding, bool]]:
+        path: list[tuple[Binding, bool]] = []
+        while node in parent:
+            node, binding, is_commanded = parent[node]
+            path.append((binding, is_commanded))
+        return path[::-1]
+
+    def _gave_up(self, state: State, k: int) -> SealError:
+        goal = self.commanded[k]
+        unmet = ", ".join(map(str, state.unmet(goal))) or "nothing"
+        return SealError(f"no plan found within {self.max_nodes} search nodes: {goal} (commanded frame {k + 1}) "
+                         f"still needs {unmet}", hint="raise the bound (--max-nodes) or shorten the command")
+
+    def _no_plan(self) -> SealError:
+        k = self.trace.deepest
+        goal = self.commanded[k]
+        dead = self.trace.dead.get(k)
+        if dead:
+            fact, needer = dead[0]
+            via = "" if needer == goal else f" (on the way to {goal})"
+            return SealError(f"no frame achieves {fact}, which {needer} needs{via}")
+        state = self.trace.stuck or State()
+        unmet = state.unmet(goal)
+        return SealError(f"conflicting goals: no sequence of frames makes {' and '.join(map(str, unmet))} hold "
+                         f"together for {goal} (commanded frame {k + 1}); making one true undoes another")
+
+
+# -- the plan ----------------------------------------------------------------------------------------
+
+def _check_types(commanded: Sequence[Binding], state: State, taxonomy: Taxonomy) -> None:
+    for binding in commanded:
+        for role, value in binding.values:
+            element = binding.frame.element(role)
+            if not fits(value, element.type, state, taxonomy):
+                raise SealError(f"{binding.frame.name} needs its {role} to be {element.type}, "
+                                f"and {value} is not (a {state.class_of(value)})")
+
+
+def _because(index: int, bindings: Sequence[Binding], states: Sequence[State]) -> str | None:
+    """The first later precondition step ``index`` made true that still held when it was needed."""
+    before, after = states[index], states[index + 1]
+    for j in range(index + 1, len(bindings)):
+        for fact in bindings[j].preconditions:
+            if not before.holds(fact) and after.holds(fact) and all(s.holds(fact) for s in states[index + 1:j + 1]):
+                return f"{fact} for {bindings[j].frame.name}"
+    return None
+
+
+def _goal(steps: Sequence[Step], states: Sequence[State]) -> tuple[Fact, ...]:
+    final = states[-1]
+    goal: dict[Fact, None] = {}
+    for step, before in zip(steps, states, strict=False):
+        if not step.commanded:
+            continue
+        pre = set(step.binding.preconditions)
+        for fact in step.binding.postconditions:
+            removed = fact.negated and before.holds(fact.positive) and fact.positive not in pre
+            if (removed or not fact.negated) and final.holds(fact):
+                goal.setdefault(fact, None)
+    return tuple(goal)
+
+
+def plan(commanded: Sequence[Binding], library: Library, state: State, *, max_nodes: int = MAX_NODES,
+         text: str | None = None) -> Plan:
+    """The shortest plan that runs the commanded frames in order from ``state``.
+
+    Raises SealError when an element's value is of the wrong type, when a precondition is achieved
+    by no frame, when preconditions conflict, or when the search expands more than ``max_nodes``.
+    """
+    if max_nodes < 1:
+        raise SealError(f"the search bound must be at least 1 node, not {max_nodes}")
+    commanded = tuple(commanded)
+    _check_types(commanded, state, library.taxonomy)
+    path, expanded = _Search(commanded, library, max_nodes).run(state) if commanded else ([], 0)
+    bindings = [binding for binding, _ in path]
+    states = [state]
+    for binding in bindings:
+        states.append(states[-1].apply(binding))
+    steps = tuple(Step(b, c, None if c else _because(i, bindings, states)) for i, (b, c) in enumerate(path))
+    return Plan(steps, state, _goal(steps, states), text, expanded)
+
+
+def plan_text(text: str, library: Library, *, holding: str | None = None, done: Sequence[str] = (),
+              map: Map | None = None, vocabulary: Any = None, max_nodes: int = MAX_NODES) -> Plan:
+    """Parse a command, ground it in the robot's state and the map (:mod:`seal_cli.planning.problem`), plan it."""
+    from seal_cli.planning.problem import problem_of_text
+
+    problem = problem_of_text(text, library, holding=holding, done=done, map=map, vocabulary=vocabulary)
+    return plan(problem.commanded, library, problem.state, max_nodes=max_nodes, text=text)
+
+
+def explain(plan: Plan) -> Iterator[str]:
+    """One line per step, numbered, as ``seal plan`` prints it without ``--json``."""
+    for i, step in enumerate(plan.steps, 1):
+        yield f"{i}. {step}" + (f"  ← {step.because}" if step.because else "")
+
+
+def frames_to_localise(tasks: Sequence[str], library: Library, map: Map, *, holding: str | None = None,
+                       done: Sequence[str] = ()) -> tuple[list[Binding], State]:
+    """Every distinct grounded frame of the tasks' plans, in order, and the state they start from:
+    what ``seal localize`` keeps beliefs over.
+
+    Plans are made from what the robot knows (:meth:`Map.known <seal_cli.maps.model.Map.known>`): never
+    from the map's ground-truth objects, which only simulate what it sees. Without a task, the
+    state is the one the map, the hand and the commands already done leave.
+    """
+    from seal_cli.language.grounding import vocabulary_of_map
+    from seal_cli.planning.problem import Things, problem_of_text
+
+    vocabulary = vocabulary_of_map(map)
+    known = map.known()
+    bindings: list[Binding] = []
+    state: State | None = None
+    for text in tasks:
+        found = plan_text(text, library, holding=holding, done=tuple(done), map=known, vocabulary=vocabulary)
+        state = state or found.initial
+        bindings.extend(b for b in found.bindings if b not in bindings)
+    if state is not None:
+        return bindings, state
+    if not done:
+        return bindings, Things(library.taxonomy, known).state(holding)
+    problem = problem_of_text(done[-1], library, holding=holding, done=tuple(done[:-1]), map=known,
+                              vocabulary=vocabulary)
+    state = problem.state
+    for binding in problem.commanded:
+        state = state.apply(binding)
+    return bindings, state

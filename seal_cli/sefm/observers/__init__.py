@@ -1,0 +1,2 @@
+"""Observers of a SeFM run: metrics, the Rerun recording, the PNG picture.
+"""

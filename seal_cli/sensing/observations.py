@@ -1,0 +1,183 @@
+"""Trajectory and observation files for ``seal localize``, read with the position of every problem.
+
+A **trajectory** file lists the robot's poses; SeFM makes one belief update at each, with
+detections simulated from the map's ground-truth objects::
+
+    poses:
+      - [-6.0, -3.0]            # x, y (yaw 0)
+      - [5.0, -4.5, 1.57]       # x, y, yaw in radians
+
+An **observations** file lists what a real robot saw, one update each; a visible region with no
+detection of a class is negative evidence for it::
+
+    - pose: [5.0, -4.5, 0.0]
+      detections:
+        - {class: spoon, at: [8.3, -4.1]}
+    - pose: [0.5, 2.5]
+      detections: []
+
+(the list may also sit under a key ``observations:``). Every problem is a
+:class:`~seal_cli.errors.SealError` at ``file:line:column``; :func:`check_inside` refuses poses off
+the map.
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import yaml
+
+from seal_cli.errors import SealError, Where
+from seal_cli.fileio import LOADER, read_text
+
+__all__ = ["Observation", "check_inside", "read_observations", "read_trajectory"]
+
+
+@dataclass(frozen=True)
+class Observation:
+    """A pose ``(x, y, yaw)`` and what was detected there (None: simulate from the map)."""
+
+    pose: tuple[float, float, float]
+    detections: tuple[tuple[str, tuple[float, float]], ...] | None = None
+    where: Where | None = field(default=None, compare=False)
+
+
+class _Reader:
+    def __init__(self, path: str | Path) -> None:
+        self.file = str(path)
+        self.text = read_text(path)
+        self.lines = self.text.splitlines()
+
+    def where(self, node: yaml.Node) -> Where:
+        return Where(self.file, node.start_mark.line + 1, node.start_mark.column + 1)
+
+    def error(self, message: str, node: yaml.Node) -> SealError:
+        line = node.start_mark.line
+        return SealError(message, self.where(node), source_line=self.lines[line] if line < len(self.lines) else None)
+
+    def root(self) -> yaml.Node | None:
+        try:
+            return yaml.compose(self.text, Loader=LOADER)
+        except yaml.MarkedYAMLError as exc:
+            mark = exc.problem_mark or exc.context_mark
+            where = Where(self.file, mark.line + 1, mark.column + 1) if mark else Where(self.file)
+            source = self.lines[mark.line] if mark and mark.line < len(self.lines) else None
+            raise SealError(f"YAML syntax error: {exc.problem or exc.context}", where, source_line=source) from None
+        except yaml.YAMLError as exc:
+            raise SealError(f"YAML error: {exc}", Where(self.file)) from None
+
+    def number(self, node: yaml.Node, what: str) -> float:
+        if isinstance(node, yaml.ScalarNode) and node.tag in ("tag:yaml.org,2002:int", "tag:yaml.org,2002:float"):
+            value = yaml.safe_load(node.value)
+            if isinstance(value, int | float) and abs(value) < 1e300 and math.isfinite(value):
+                return float(value)
+        raise self.error(f"{what} must be a finite number, not {_shape(node)}", node)
+
+    def pose(self, node: yaml.Node, what: str = "a pose") -> tuple[float, float, float]:
+        if not isinstance(node, yaml.SequenceNode) or len(node.value) not in (2, 3):
+            raise self.error(f"{what} must be [x, y] or [x, y, yaw] (metres, radians), not {_shape(node)}", node)
+        values = [self.number(item, f"{what}'s {name}") for item, name in zip(node.value, ("x", "y", "yaw"),
+                                                                              strict=False)]
+        return (values[0], values[1], values[2] if len(values) == 3 else 0.0)
+
+    def point(self, node: yaml.Node, what: str) -> tuple[float, float]:
+        if not isinstance(node, yaml.SequenceNode) or len(node.value) != 2:
+            raise self.error(f"{what} must be [x, y] (metres), not {_shape(node)}", node)
+        return (self.number(node.value[0], f"{what}'s x"), self.number(node.value[1], f"{what}'s y"))
+
+    def mapping(self, node: yaml.Node, what: str, keys: Sequence[str], required: Sequence[str]) -> dict[str, yaml.Node]:
+        if not isinstance(node, yaml.MappingNode):
+            raise self.error(f"{what} must be a mapping with {', '.join(keys)}, not {_shape(node)}", node)
+        out: dict[str, yaml.Node] = {}
+        for key_node, value in node.value:
+            key = key_node.value if isinstance(key_node, yaml.ScalarNode) else None
+            if key not in keys:
+                close = difflib.get_close_matches(str(key), list(keys), n=1)
+                hint = f" (did you mean {close[0]!r}?)" if close else ""
+                raise self.error(f"unknown key {key!r} in {what}{hint}; expected {', '.join(keys)}", key_node)
+            out[str(key)] = value
+        for key in required:
+            if key not in out:
+                raise self.error(f"{what} has no {key!r}", node)
+        return out
+
+
+def _shape(node: yaml.Node) -> str:
+    if isinstance(node, yaml.ScalarNode):
+        return "nothing" if node.tag.endswith(":null") else repr(node.value)
+    if isinstance(node, yaml.SequenceNode):
+        return f"a list of {len(node.value)}"
+    return "a mapping"
+
+
+def _empty(reader: _Reader, root: yaml.Node | None, what: str) -> SealError:
+    return SealError(f"{reader.file} holds no {what}", Where(reader.file, 1, 1))
+
+
+def read_trajectory(path: str | Path) -> list[Observation]:
+    """The poses of a trajectory file (``poses: [[x, y], [x, y, yaw], ...]``), at least one."""
+    reader = _Reader(path)
+    root = reader.root()
+    if root is None:
+        raise _empty(reader, root, "poses")
+    poses = reader.mapping(root, "a trajectory", ("poses",), ("poses",))["poses"]
+    if not isinstance(poses, yaml.SequenceNode):
+        raise reader.error(f"poses must be a list of [x, y] or [x, y, yaw], not {_shape(poses)}", poses)
+    if not poses.value:
+        raise reader.error("poses is empty: give at least one pose", poses)
+    return [Observation(reader.pose(item, f"pose {i + 1}"), None, reader.where(item))
+            for i, item in enumerate(poses.value)]
+
+
+def read_observations(path: str | Path) -> list[Observation]:
+    """The observations of a file: a list of ``{pose, detections: [{class, at}]}``, at least one."""
+    reader = _Reader(path)
+    root = reader.root()
+    if root is None:
+        raise _empty(reader, root, "observations")
+    if isinstance(root, yaml.MappingNode):
+        root = reader.mapping(root, "an observations file", ("observations",), ("observations",))["observations"]
+    if not isinstance(root, yaml.SequenceNode):
+        raise reader.error(f"observations must be a list of {{pose, detections}}, not {_shape(root)}", root)
+    if not root.value:
+        raise reader.error("the list of observations is empty: give at least one", root)
+    out = []
+    for i, item in enumerate(root.value):
+        what = f"observation {i + 1}"
+        fields = reader.mapping(item, what, ("pose", "detections"), ("pose",))
+        pose = reader.pose(fields["pose"], f"{what}'s pose")
+        seen = fields.get("detections")
+        detections: list[tuple[str, tuple[float, float]]] = []
+        if seen is not None and not (isinstance(seen, yaml.ScalarNode) and seen.tag.endswith(":null")):
+            if not isinstance(seen, yaml.SequenceNode):
+                raise reader.error(f"{what}'s detections must be a list of {{class, at}}, not {_shape(seen)}", seen)
+            for j, node in enumerate(seen.value):
+                label = f"detection {j + 1} of {what}"
+                parts = reader.mapping(node, label, ("class", "at"), ("class", "at"))
+                cls = parts["class"]
+                if not isinstance(cls, yaml.ScalarNode) or cls.tag != "tag:yaml.org,2002:str" or not cls.value.strip():
+                    raise reader.error(f"{label}'s class must be a name, not {_shape(cls)}", cls)
+                detections.append((cls.value.strip(), reader.point(parts["at"], f"{label}'s at")))
+        out.append(Observation(pose, tuple(detections), reader.where(item)))
+    return out
+
+
+def check_inside(observations: Sequence[Observation], bounds: Sequence[float], name: str) -> None:
+    """Refuse a pose or a detection outside the map's bounds, at its position in the file."""
+    xmin, ymin, xmax, ymax = bounds
+
+    def inside(x: float, y: float) -> bool:
+        return xmin <= x <= xmax and ymin <= y <= ymax
+
+    for obs in observations:
+        if not inside(*obs.pose[:2]):
+            raise SealError(f"pose [{obs.pose[0]:g}, {obs.pose[1]:g}] is outside map {name}'s bounds "
+                            f"[{xmin:g}, {ymin:g}, {xmax:g}, {ymax:g}]", obs.where)
+        for cls, (x, y) in obs.detections or ():
+            if not inside(x, y):
+                raise SealError(f"a detection of {cls} at [{x:g}, {y:g}] is outside map {name}'s bounds "
+                                f"[{xmin:g}, {ymin:g}, {xmax:g}, {ymax:g}]", obs.where)

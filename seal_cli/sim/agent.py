@@ -1,0 +1,733 @@
+"""A robot that is told what to do, searches for what it needs, and does it: the SeFM agent.
+
+An :class:`Agent` runs one command in a :class:`Scene` (the simulated :class:`~seal_cli.sim.world.World`,
+and the map the robot is given: free space, places, priors, sensor). The loop is the paper's:
+
+1. **plan**: the commanded frames and the robot's state give an ordered list of grounded frames
+   (:mod:`seal_cli.planning.plan`); the semantic state (:class:`~seal_cli.planning.state.State`) is the
+   planner's, and executing a frame applies its postconditions to it;
+2. for each frame, run its primitive actions in the world. ``navigate(x)`` needs an *instance*
+   of ``x`` the robot knows: places are on the map; things must have been seen. While none is
+   known, the **search policy** proposes a :class:`View` — a pose from which to look at where
+   the frame is believed to be (or a closed receptacle to open and look into) — the robot drives
+   there, looking as it goes, and the beliefs are updated with what it sees;
+3. when an action fails (a receptacle is closed, a thing out of reach) the robot deals with
+   what the world told it, and **replans** from the state it is in; it **gives up** after a
+   budget of steps or metres.
+
+The policies differ only in where they look (:class:`Policy`): the SeFM agent
+(:class:`~seal_cli.sim.policies.sefm.SeFMPolicy`) goes to observe the best mode of the current frame's belief;
+the baselines are in :mod:`seal_cli.sim.policies.baselines`.
+Everything else — execution, perception, bookkeeping of path
+length — is shared, so that the comparison measures the search and nothing else.
+
+What happened is reported to observers (``observe=callable(Record)``) and kept in
+:attr:`Agent.records`: the narration of ``seal run`` and the Rerun recording hang off it.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any, Protocol
+
+import numpy as np
+
+from seal_cli.errors import SealError
+from seal_cli.frames.library import Library
+from seal_cli.frames.model import Action, Binding, Fact
+from seal_cli.frames.taxonomy import class_key
+from seal_cli.maps.model import Map
+from seal_cli.planning.state import State
+from seal_cli.sim.navigation import Cell, Grid
+from seal_cli.sim.world import HAND, Detection, Item, Outcome, World
+
+__all__ = ["Agent", "Budget", "Known", "Policy", "Record", "Result", "Scene", "View", "run_on_map", "scene_from_map"]
+
+
+@dataclass
+class Scene:
+    """A world to act in, and what the robot is told about it."""
+
+    world: World
+    map: Map
+    grid: Grid
+    vocabulary: tuple[str, ...] = ()
+    """The classes present, which the robot's perception knows (empty: any)."""
+    title: str = ""
+
+
+@dataclass(frozen=True)
+class Budget:
+    """When the robot gives up: after ``steps`` world steps (drives and actions) or ``metres`` driven."""
+
+    steps: int = 400
+    metres: float = 200.0
+    replans: int = 8
+
+
+@dataclass(frozen=True)
+class View:
+    """A pose to go to and look from; ``open`` names a closed receptacle to open there first."""
+
+    cell: Cell
+    look_at: tuple[float, float]
+    open: str | None = None
+    why: str = ""
+
+
+@dataclass(frozen=True)
+class Record:
+    """One line of what the robot did: ``kind`` is plan, go, look, see, act, fail, replan, done or give_up."""
+
+    kind: str
+    text: str
+    step: int
+    path_m: float
+    pose: tuple[float, float, float]
+    data: dict[str, Any] = field(default_factory=dict, compare=False)
+
+
+@dataclass
+class Result:
+    """How a run ended."""
+
+    completed: bool
+    """Every frame of the plan was executed (whether the *task* is done is the judge's business)."""
+    reason: str
+    path_m: float
+    steps: int
+    plan: list[str]
+    executed: list[str]
+    records: list[Record]
+
+
+@dataclass
+class Known:
+    """What the robot knows about one item: a place from the map, or a thing it has seen."""
+
+    id: str
+    cls: str
+    at: tuple[float, float]
+    movable: bool
+    openable: bool = False
+    receptacle: bool = True
+    access: tuple[tuple[float, float], ...] = ()
+    parent: str | None = None
+    """The place a thing was seen in or on."""
+
+
+class Policy(Protocol):
+    """Where to look next. ``begin`` once per run, ``observe`` after every look."""
+
+    name: str
+
+    def begin(self, agent: Agent) -> None: ...
+
+    def observe(self, agent: Agent, detections: Sequence[Detection]) -> None: ...
+
+    def next_view(self, agent: Agent, binding: Binding, target: str) -> View | None: ...
+
+
+class Agent:
+    """One robot, one command, one policy; see the module docstring."""
+
+    def __init__(self, scene: Scene, library: Library, policy: Policy, *, rng: np.random.Generator,
+                 budget: Budget | None = None, planner: Callable[..., list[Binding]] | None = None,
+                 observers: Sequence[Callable[[Record], None]] = (), look_every: float = 1.0,
+                 classes: Mapping[str, str] | None = None) -> None:
+        self.scene = scene
+        self.world = scene.world
+        self.grid = scene.grid
+        self.library = library
+        self.policy = policy
+        self.rng = rng
+        self.budget = budget or Budget()
+        self.planner = planner or default_planner
+        self.observers = list(observers)
+        self.look_every = look_every
+        self.records: list[Record] = []
+        self.known: dict[str, Known] = {}
+        self.unreachable: set[str] = set()
+        self.opened: set[str] = set()
+        """Receptacles the robot has opened (and so looked into)."""
+        self.placed: set[str] = set()
+        """Things the robot has put where a frame wanted them: not to be taken away again."""
+        self.chosen: dict[str, str] = {}
+        """The instance chosen for each name a frame uses, across frames (open *this* cabinet, put into it)."""
+        self.looks: list[tuple[float, float, float]] = []
+        self.inspected: set[str] = set()
+        """Places the robot has looked into or onto from within reach: it has seen all they hold."""
+        self.classes = {class_key(k): class_key(v) for k, v in (classes or {}).items()}
+        """The class of each thing a command names that is not a class itself (``apple_2``)."""
+        self.state = State()
+        self.steps: list[Binding] = []
+        """The plan being executed; ``steps[index]`` is the frame at hand."""
+        self.index = 0
+        self.todo: list[Binding] = []
+        """The commanded frames not yet executed."""
+        self._learn_places(bool(getattr(policy, "oracle", False)))
+
+    # -- knowledge ---------------------------------------------------------------------------
+
+    def _learn_places(self, oracle: bool) -> None:
+        """Places are on the map; an oracle also knows where every thing is."""
+        for item in self.world.items.values():
+            if not item.movable or oracle:
+                self.known[item.id] = self._known(item)
+
+    def _known(self, item: Item) -> Known:
+        parent = item.parent if item.parent in self.world.items and not self.world.items[item.parent].movable else None
+        return Known(item.id, item.key, item.at, item.movable, item.openable, item.receptacle, item.access, parent)
+
+    def instances(self, cls: str) -> list[Known]:
+        key = class_key(cls)
+        return [k for k in self.known.values() if k.cls == key]
+
+    def held(self) -> Item | None:
+        return self.world.items[self.world.robot.holding] if self.world.robot.holding else None
+
+    # -- records -----------------------------------------------------------------------------
+
+    def say(self, kind: str, text: str, **data: Any) -> None:
+        robot = self.world.robot
+        record = Record(kind, text, self.world.step, robot.path_m, robot.pose, data)
+        self.records.append(record)
+        for observer in self.observers:
+            observer(record)
+
+    # -- budget ------------------------------------------------------------------------------
+
+    def exhausted(self) -> str | None:
+        robot = self.world.robot
+        if self.world.step >= self.budget.steps:
+            return f"out of steps ({self.budget.steps})"
+        if robot.path_m >= self.budget.metres:
+            return f"out of path budget ({self.budget.metres:g} m)"
+        return None
+
+    # -- the run -----------------------------------------------------------------------------
+
+    @property
+    def remaining(self) -> list[Binding]:
+        return self.steps[self.index:]
+
+    def initial_state(self) -> State:
+        """The semantic state the robot starts from: its hand, and which receptacles are open."""
+        held = self.held()
+        facts = {Fact("holding", (held.key,))} if held else {Fact("hand_empty")}
+        closable = {i.key for i in self.world.items.values() if i.openable}
+        facts |= {Fact("open", (i.key,)) for i in self.world.items.values() if i.openable and i.is_open}
+        return State.of(facts, self.library.taxonomy, closable=closable, classes=self.classes)
+
+    def class_of(self, value: str) -> str:
+        key = class_key(value)
+        return self.classes.get(key, key)
+
+    def run(self, commanded: Sequence[Binding], done: Sequence[Binding] = ()) -> Result:
+        """Plan the commanded frames, then search and execute until done or out of budget.
+        ``done``: frames already carried out, whose postconditions hold at the start."""
+        self.state = self.initial_state()
+        for binding in done:
+            self.state = self.state.apply(binding)
+        self.policy.begin(self)
+        self.look()
+        todo = list(commanded)
+        self.todo = todo
+        try:
+            steps = self.planner(todo, self.library, self.state)
+        except SealError as error:
+            self.say("fail", f"cannot plan: {error.message}")
+            return self._result(False, f"cannot plan: {error.message}", [])
+        self.steps, self.index = steps, 0
+        plan = [str(b) for b in steps]
+        self.say("plan", "plan: " + ", ".join(plan) if plan else "nothing to do", plan=plan)
+        executed: list[str] = []
+        replans = 0
+        while self.index < len(self.steps):
+            binding = self.steps[self.index]
+            self.say("frame", f"{binding}", frame=str(binding))
+            outcome = self.execute(binding)
+            if outcome.ok:
+                self.state = self.state.apply(binding)
+                executed.append(str(binding))
+                self.index += 1
+                if todo and binding == todo[0]:
+                    todo.pop(0)
+                self.say("done", f"done: {binding}", frame=str(binding))
+                continue
+            stop = self.exhausted()
+            if stop or isinstance(outcome, Fatal):
+                reason = stop or outcome.message
+                self.say("give_up", f"gives up: {reason}")
+                return self._result(False, reason, plan, executed)
+            replans += 1
+            if replans > self.budget.replans:
+                self.say("give_up", f"gives up after {self.budget.replans} replans: {outcome.message}")
+                return self._result(False, outcome.message, plan, executed)
+            self.state = self.resync(self.state)
+            try:
+                steps = self.planner(todo, self.library, self.state)
+            except SealError as error:
+                self.say("give_up", f"cannot replan: {error.message}")
+                return self._result(False, f"cannot replan: {error.message}", plan, executed)
+            self.steps, self.index = steps, 0
+            self.say("replan", f"{outcome.message}; replans: " + ", ".join(str(b) for b in steps))
+        return self._result(True, "done", plan, executed)
+
+    def _result(self, completed: bool, reason: str, plan: list[str], executed: list[str] | None = None) -> Result:
+        return Result(completed, reason, self.world.robot.path_m, self.world.step, plan, executed or [],
+                      self.records)
+
+    def resync(self, state: State) -> State:
+        """The semantic state corrected by what the robot knows of its own hand."""
+        held = self.held()
+        facts = {f for f in state.facts if f.predicate not in ("holding", "hand_empty")}
+        facts |= {Fact("holding", (held.key,))} if held else {Fact("hand_empty")}
+        return State.of(facts, state.taxonomy, closable=state.closable, classes=state.classes)
+
+    # -- executing a frame -----------------------------------------------------------------------
+
+    def execute(self, binding: Binding) -> Outcome:
+        """Run the grounded frame's primitive actions in the world."""
+        acted = False
+        for action in binding.actions:
+            if action.name == "navigate":
+                outcome = self.go_to(action.args[0], binding)
+            else:
+                outcome = self.do(action, binding)
+                acted = True
+            if not outcome.ok:
+                return outcome
+        hand_empty = any(f.predicate == "hand_empty" and not f.negated for f in binding.postconditions)
+        if hand_empty and self.world.robot.holding is not None and not any(
+                a.name in ("place", "hand_over") for a in binding.actions):
+            return self.put_down(binding)  # "put it down": a Place without a goal
+        if not acted and not binding.actions:
+            return Outcome(True, "nothing to do")
+        return Outcome(True, "ok")
+
+    def resolve(self, value: str, binding: Binding, role: str | None = None) -> str | None:
+        """The instance that an element's value (a class, or an item's name) denotes now."""
+        name = class_key(value)
+        if value in self.world.items and value in self.known and name not in self.classes:
+            return value  # an item named by itself (a place of the map), not a name the command made up
+        key = self.class_of(value)
+        room = self.room(value)
+        if room is not None and not self.instances(key):
+            return self.surface_in(room)
+        others = {i for n, i in self.chosen.items() if n != name and self.class_of(n) == key}
+        held = self.held()
+        if held is not None and held.key == key and held.id not in others:
+            return held.id
+        candidates = [k for k in self.instances(key) if k.id not in self.unreachable and k.id not in others
+                      and not self.world.held_chain(k.id)]
+        previous = self.chosen.get(name)
+        taking = role == "theme" and any(a.name == "pick" for a in binding.actions)
+        if taking:   # a thing put in place is not taken again, unless the command names it again
+            candidates = [k for k in candidates if k.id not in self.placed or k.id == previous]
+        if not candidates:
+            return None
+        if previous is not None and any(k.id == previous for k in candidates):
+            return previous
+        choose = getattr(self.policy, "choose", None)
+        pick = choose(self, key, candidates) if choose else None
+        return pick or self.nearest(candidates)
+
+    def room(self, value: str) -> Any:
+        """The map's room a value names, if it names one."""
+        index = self.scene.map.room_id(value)
+        return self.scene.map.rooms[index] if index is not None else None
+
+    def surface_in(self, room: Any) -> str | None:
+        """Where to go in a room, or to put a thing down there: the nearest open place in it."""
+        places = [k for k in self.known.values() if not k.movable and k.receptacle
+                  and self.world.items[k.id].is_open and bool(room.contains([k.at])[0])]
+        return self.nearest(places) if places else None
+
+    def spent(self, item: str, value: str) -> bool:
+        """Whether a known instance cannot serve as ``value`` (put in place already, out of reach,
+        or chosen for another name of its class)."""
+        name = class_key(value)
+        return item in self.placed or item in self.unreachable or any(
+            i == item and n != name for n, i in self.chosen.items())
+
+    def nearest(self, candidates: Sequence[Known]) -> str | None:
+        """The candidate the robot can reach by the shortest drive."""
+        field_ = self.distances()
+        best: tuple[float, str] | None = None
+        for k in candidates:
+            cell = self.stand_cell(k, field_)
+            if cell is None:
+                continue
+            cost = field_[cell]
+            if best is None or cost < best[0]:
+                best = (cost, k.id)
+        return best[1] if best else None
+
+    def robot_cell(self) -> Cell:
+        cell = self.grid.cell(self.world.robot.pose)
+        return cell if self.grid.is_free(cell) else self.grid.nearest_free(self.world.robot.pose)
+
+    def distances(self) -> np.ndarray:
+        return self.grid.distances(self.robot_cell())
+
+    def stand_cells(self, known: Known) -> np.ndarray:
+        """Free cells (rows of i, j) from which the robot can reach the item."""
+        pts = self.grid.free_points
+        at = np.asarray(known.at)
+        near = np.hypot(pts[:, 0] - at[0], pts[:, 1] - at[1]) <= self.world.reach - 1e-6
+        stands = list(known.access)
+        if known.parent is not None and known.parent in self.known:
+            stands += list(self.known[known.parent].access)
+        for a in stands:
+            near |= np.hypot(pts[:, 0] - a[0], pts[:, 1] - a[1]) <= self.world.access_tolerance
+        box = self.known.get(known.parent) if known.parent else None
+        if box is not None and box.openable:  # stand where the receptacle can be opened too
+            both = near & self._reach_mask(box)
+            if both.any():
+                near = both
+        return self.grid.free_cells[near]
+
+    def _reach_mask(self, known: Known) -> np.ndarray:
+        pts = self.grid.free_points
+        mask = np.hypot(pts[:, 0] - known.at[0], pts[:, 1] - known.at[1]) <= self.world.reach - 1e-6
+        for a in known.access:
+            mask |= np.hypot(pts[:, 0] - a[0], pts[:, 1] - a[1]) <= self.world.access_tolerance
+        return mask
+
+    def stand_cell(self, known: Known, field_: np.ndarray | None = None) -> Cell | None:
+        """The stand cell nearest the robot by path, or None if none can be driven to."""
+        cells = self.stand_cells(known)
+        if not len(cells):
+            return None
+        field_ = self.distances() if field_ is None else field_
+        costs = field_[cells[:, 0], cells[:, 1]]
+        k = int(np.argmin(costs))
+        if not np.isfinite(costs[k]):
+            return None
+        return (int(cells[k, 0]), int(cells[k, 1]))
+
+    def go_to(self, value: str, binding: Binding) -> Outcome:
+        """``navigate(value)``: find an instance (searching while none is known), drive within reach of it."""
+        role = next((r for r, v in binding.values if v == value), None)
+        while True:
+            target = self.resolve(value, binding, role)
+            if target is not None:
+                if self.world.held_chain(target):
+                    return Outcome(True, f"holds {target}")
+                stand = getattr(self.policy, "stand", None)
+                cell = stand(self, self.known[target]) if stand else self.stand_cell(self.known[target])
+                if cell is None:
+                    self.unreachable.add(target)
+                    self.say("fail", f"{target} cannot be reached from anywhere the robot can drive")
+                    continue
+                self.chosen[class_key(value)] = target
+                self.drive_to(cell, f"goes to {target}")
+                self.world.face(self.known[target].at)
+                return Outcome(True, f"at {target}")
+            if (stop := self.exhausted()) is not None:
+                return Fatal(False, stop)
+            room = self.room(value)
+            if room is not None:  # a room with no open place in it: drive into it
+                inside = np.flatnonzero(room.contains(self.grid.free_points))
+                field_ = self.distances()
+                cells = self.grid.free_cells[inside]
+                costs = field_[cells[:, 0], cells[:, 1]] if len(cells) else np.zeros(0)
+                if not len(costs) or not np.isfinite(costs.min()):
+                    return Fatal(False, f"cannot drive into {value}")
+                k = int(np.argmin(costs))
+                self.drive_to((int(cells[k, 0]), int(cells[k, 1])), f"goes into {value}")
+                return Outcome(True, f"in {value}")
+            if (ended := self.look_once(value, binding)) is not None:
+                return ended
+
+    def look_once(self, value: str, binding: Binding) -> Outcome | None:
+        """One look for a thing of kind ``value``: go to the view the policy chooses, open what it
+        says to open, and look. An Outcome when the search must stop instead."""
+        if not self.recognises(value):
+            return Fatal(False, f"cannot recognise {value!r}: no class it knows is called that")
+        view = self.policy.next_view(self, binding, value)
+        if view is None:
+            return Fatal(False, f"searched everywhere it could and found no {value}")
+        self.say("search", f"looks for {value}: {view.why}".rstrip(": "), target=value, view=view.cell)
+        self.drive_to(view.cell, "goes to look")
+        self.world.face(view.look_at)
+        if view.open is not None:
+            self.open_to_look(view.open)
+        self.look()
+        return None
+
+    def search_for(self, value: str, binding: Binding) -> Outcome:
+        """``search(value)``: look (as ``navigate`` would) until a thing of that kind is known."""
+        role = next((r for r, v in binding.values if v == value), None)
+        while self.resolve(value, binding, role) is None:
+            if (stop := self.exhausted()) is not None:
+                return Fatal(False, stop)
+            if (ended := self.look_once(value, binding)) is not None:
+                return ended
+        target = self.resolve(value, binding, role)
+        if target is not None and target in self.known:
+            self.world.face(self.known[target].at)
+        return Outcome(True, f"found {target}")
+
+    def recognises(self, value: str) -> bool:
+        """Whether the robot could see a thing of this kind: its class is one of the scene's (the
+        classes its perception knows). A word the command grounded to no class is never seen, so
+        it is not searched for."""
+        known = self.scene.vocabulary
+        return not known or self.class_of(value) in {class_key(c) for c in known}
+
+    def open_to_look(self, place: str) -> None:
+        outcome = self.world.act("open", place)
+        self.say("act" if outcome.ok else "fail", outcome.message, action="open", args=[place])
+        if outcome.ok:
+            self.opened.add(place)
+            self.state = State.of(set(self.state.facts) | {Fact("open", (self.world.items[place].key,))},
+                                  self.state.taxonomy, closable=self.state.closable, classes=self.state.classes)
+
+    def drive_to(self, cell: Cell, why: str) -> None:
+        """Drive the shortest path to the cell, looking every ``look_every`` metres and at the end."""
+        start = self.robot_cell()
+        if cell == start:
+            return
+        path = self.grid.path(start, cell)
+        points = [self.grid.point(c) for c in path[1:]]
+        metres = 0.0
+        since_look = 0.0
+        chunk: list[tuple[float, float]] = []
+        prev = self.world.robot.pose[:2]
+        for p in points:
+            chunk.append(p)
+            step = math.dist(prev, p)
+            prev = p
+            since_look += step
+            if since_look >= self.look_every and p != points[-1]:
+                metres += self.world.drive(chunk)
+                chunk, since_look = [], 0.0
+                self.look(quiet=True)
+        metres += self.world.drive(chunk)
+        self.say("go", f"{why} ({metres:.2f} m)", to=self.grid.point(cell), metres=metres)
+
+    def look(self, quiet: bool = False) -> list[Detection]:
+        """Sense from where the robot is; remember what it sees; update the beliefs."""
+        pose = self.world.robot.pose
+        detections = self.world.observe()
+        self.looks.append(pose)
+        self.inspected |= {k.id for k in self.known.values() if not k.movable and self.world.items[k.id].is_open
+                           and self.world.within_reach(k.id, pose)}
+        new = []
+        for d in detections:
+            item = self.world.items[d.id]
+            if d.id not in self.known:
+                new.append(d.id)
+            self.known[d.id] = self._known(item)
+        self.policy.observe(self, detections)
+        if new:
+            self.say("see", f"sees {', '.join(new)}", seen=new)
+        elif not quiet:
+            self.say("look", "looks around: nothing new", seen=[])
+        return detections
+
+    def do(self, action: Action, binding: Binding) -> Outcome:
+        """A primitive other than navigate, on the instances its arguments denote; a closed
+        receptacle in the way is opened, and the action tried once more."""
+        if action.name in WORDS:  # a message to say, a kind of thing to count: words, not items
+            if action.name == "search":
+                found = self.search_for(action.args[0], binding)
+                if not found.ok:
+                    return found
+            outcome = self.world.act(action.name, *(self.class_of(a) for a in action.args))
+            self.say("act" if outcome.ok else "fail", outcome.message, action=action.name, args=list(action.args))
+            return outcome
+        roles = {v: r for r, v in binding.values}
+        args: list[str] = []
+        for value in action.args:
+            target = self.resolve(value, binding, roles.get(value))
+            if target is None:
+                return Outcome(False, f"knows no {value} to {action.name.replace('_', ' ')}")
+            args.append(target)
+        outcome = self.world.act(action.name, *args)
+        if not outcome.ok and "which is closed" in outcome.message:
+            shut = outcome.message.split("inside ")[-1].split(",")[0]
+            self.open_to_look(shut)
+            outcome = self.world.act(action.name, *args)
+        if not outcome.ok and "is closed" in outcome.message and action.name == "place":
+            self.open_to_look(args[1])
+            outcome = self.world.act(action.name, *args)
+        if not outcome.ok and action.name == "place" and "nothing can be put in or on" in outcome.message:
+            outcome, args = self.put_beside(args[0], args[1], outcome)
+        self.say("act" if outcome.ok else "fail", outcome.message, action=action.name, args=args)
+        if outcome.ok:
+            self._after(action.name, args, binding)
+        elif "out of reach" in outcome.message:
+            self.look()
+        return outcome
+
+    def _after(self, name: str, args: list[str], binding: Binding) -> None:
+        """Keep the robot's own knowledge in step with what it just did."""
+        if name == "place":            # it knows where it put the thing, and on what
+            self.known[args[0]] = self._known(self.world.items[args[0]])
+            if binding.frame.name != "Place" or binding.elements.get("goal") is not None:
+                self.placed.add(args[0])
+        elif name == "pick":
+            self.placed.discard(args[0])
+        elif name == "open":
+            self.opened.add(args[0])
+
+    def put_beside(self, thing: str, target: str, refused: Outcome) -> tuple[Outcome, list[str]]:
+        """"Put the keys on the laptop", "to the right of the knife", "take the bowl to the lamp":
+        nothing goes on that, so the thing goes where the target is — on the place it was seen on,
+        else on the open place nearest it."""
+        known = self.known.get(target)
+        under = known.parent if known is not None else None
+        places = [k for k in self.known.values() if not k.movable and k.receptacle and k.id != target
+                  and self.world.items[k.id].is_open]
+        if under is None or under not in self.known or not any(k.id == under for k in places):
+            at = self.world.position(target)
+            under = min(places, key=lambda k: math.dist(k.at, at)).id if places else None
+        if under is None:
+            return refused, [thing, target]
+        self.say("fail", f"{refused.message}; puts {thing} where {target} is, on {under}")
+        if not self.world.within_reach(under):
+            cell = self.stand_cell(self.known[under])
+            if cell is not None:
+                self.drive_to(cell, f"goes to {under}")
+        return self.world.act("place", thing, under), [thing, under]
+
+    def put_down(self, binding: Binding) -> Outcome:
+        """Set the held thing down on the nearest open surface (a Place without a goal)."""
+        held = self.held()
+        assert held is not None
+        surfaces = [k for k in self.known.values() if not k.movable and k.receptacle and not k.openable]
+        target = self.nearest(surfaces) if surfaces else None
+        if target is None:
+            return Outcome(False, f"finds nowhere to put {held.id} down")
+        cell = self.stand_cell(self.known[target])
+        if cell is not None:
+            self.drive_to(cell, f"goes to put {held.id} down on {target}")
+        outcome = self.world.act("place", held.id, target)
+        self.say("act" if outcome.ok else "fail", outcome.message, action="place", args=[held.id, target])
+        if outcome.ok:
+            self._after("place", [held.id, target], binding)
+        return outcome
+
+
+WORDS = frozenset({"search", "count", "say", "answer"})
+"""Primitives whose argument is a word (a kind of thing, a message), not an item of the world."""
+
+
+class Fatal(Outcome):
+    """A failure that replanning cannot mend (the search is exhausted, the budget spent)."""
+
+
+def default_planner(commanded: Sequence[Binding], library: Library, state: State) -> list[Binding]:
+    """The project's planner (:func:`seal_cli.planning.plan.plan`) as a list of grounded frames."""
+    try:
+        from seal_cli.planning import plan as planning
+    except ImportError:
+        return chain_preconditions(commanded, library, state)
+    result = planning.plan(list(commanded), library, state)
+    return [step.binding for step in result.steps]
+
+
+def chain_preconditions(commanded: Sequence[Binding], library: Library, state: State) -> list[Binding]:
+    """A stand-in for the planner: before each commanded frame, achieve its unmet preconditions in
+    order, each by the first frame whose postconditions give it (recursively, depth-bounded)."""
+    steps: list[Binding] = []
+
+    def achieve(fact: Fact, depth: int) -> None:
+        nonlocal state
+        if state.holds(fact) or depth > 4:
+            return
+        if fact.predicate == "hand_empty" and not fact.negated:
+            held = next((f.args[0] for f in state.facts if f.predicate == "holding"), None)
+            if held:
+                run(library.frame("Place").bind({"theme": held}), depth + 1)
+                return
+        for frame in library.achievers(fact.predicate) if not fact.negated else ():
+            for post in frame.postconditions:
+                if post.predicate != fact.predicate or post.negated or len(post.args) != len(fact.args):
+                    continue
+                binding = frame.bind(dict(zip(post.args, fact.args, strict=True)))
+                if state.apply(binding).holds(fact):
+                    run(binding, depth + 1)
+                    return
+        raise SealError(f"no frame achieves {fact}")
+
+    def run(binding: Binding, depth: int) -> None:
+        nonlocal state
+        for fact in binding.preconditions:
+            achieve(fact, depth)
+        steps.append(binding)
+        state = state.apply(binding)
+
+    for binding in commanded:
+        run(binding, 0)
+    return steps
+
+
+def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Scene:
+    """A world built from a seal map's places and ground-truth objects, on its free space."""
+    from scipy.ndimage import binary_erosion
+
+    from seal_cli.sim.world import Item, Robot, Sensor
+
+    taxonomy = library.taxonomy
+    items = [Item(p.name, p.cls, p.at, movable=False, receptacle=True, openable=p.openable,
+                  toggleable=taxonomy.is_a(p.cls, "toggleable") is True) for p in m.places]
+    for item, place in zip(items, m.places, strict=True):
+        if place.openable and place.open:
+            item.states.add("open")
+    counts: dict[str, int] = {}
+    names = {class_key(p.name): p.name for p in m.places}
+    for o in m.objects:
+        counts[o.cls] = counts.get(o.cls, 0) + 1
+        parent = names.get(class_key(o.inside)) if o.inside else None
+        items.append(Item(f"{o.cls}_{counts[o.cls]}", o.cls, o.at, movable=True, parent=parent,
+                          receptacle=taxonomy.is_a(o.cls, "container") is True))
+    holding = None
+    if m.robot.holding:
+        holding = f"{m.robot.holding}_held"
+        items.append(Item(holding, m.robot.holding, m.robot.xy, movable=True, parent=HAND))
+    grid_free = np.asarray(m.grid.free_mask, dtype=bool)
+    cells = max(0, int(math.ceil(robot_radius / m.grid.resolution)) - 1)
+    free = binary_erosion(grid_free, iterations=cells) if cells else grid_free
+    if not free.any():
+        free = grid_free
+    res = m.grid.resolution
+    grid = Grid(free.astype(bool), (m.grid.origin[0] + res / 2, m.grid.origin[1] + res / 2), res, 8)
+    sensor = Sensor(range=m.sensor.range, fov=m.sensor.fov_deg,
+                    blocked=lambda pose, pts: ~m.line_of_sight(pose[:2], pts))
+    world = World(items, Robot(pose=m.robot.pose, holding=holding), taxonomy=taxonomy, sensor=sensor)
+    return Scene(world, m, grid, tuple(sorted({i.key for i in items})), m.name)
+
+
+def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.random.Generator,
+               holding: str | None = None, done: Sequence[str] = (), vocabulary: Any = None,
+               budget: Budget | None = None, observers: Sequence[Callable[[Record], None]] = ()
+               ) -> tuple[Agent, Result]:
+    """Carry out a command on a map whose ground-truth objects are the world (``seal run``).
+
+    The command and the ``done`` commands (already carried out) are parsed with the map's
+    vocabulary — or ``vocabulary``, restricted to the map's classes — and grounded without the
+    map's objects, which the robot must find; ``holding`` overrides what the map's robot holds.
+    """
+    from dataclasses import replace
+
+    from seal_cli.language.grounding import vocabulary_of_map
+    from seal_cli.language.parser import parse_command
+    from seal_cli.maps.model import Robot
+    from seal_cli.planning.problem import build_problem
+
+    if holding is not None:
+        m = replace(m, robot=Robot(m.robot.pose, holding))
+    known = vocabulary_of_map(m)
+    vocabulary = known if vocabulary is None else vocabulary.restricted_to(known.classes)
+    parses = [parse_command(t, library, vocabulary) for t in (*done, text)]
+    problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1])
+    agent = Agent(scene_from_map(m, library), library, policy, rng=rng, budget=budget, observers=observers,
+                  classes=problem.state.classes)
+    executed = [b for p in parses[:-1] for b in build_problem(p, library).commanded]
+    return agent, agent.run(problem.commanded, done=executed)

@@ -1,0 +1,222 @@
+"""Where a robot can drive, and how far it is: shortest paths on a grid of free cells.
+
+A :class:`Grid` is a boolean mask of free cells laid on the plane: cell ``(i, j)`` (row ``i``
+along +y, column ``j`` along +x) has its centre at ``origin + (j, i) * resolution``. ALFRED's
+scenes give such a grid directly (the agent's 0.25 m reachable positions); a seal map gives it
+from its occupancy image, with the robot's radius taken off the free space.
+
+Moves go to the 4 or 8 neighbouring free cells (a diagonal costs √2 cells, and may not cut a
+corner). :func:`astar` finds one shortest path; :meth:`Grid.distances` gives the length of the
+shortest path from one cell to every cell at once (Dijkstra, in C through scipy), which is what
+choosing among many viewpoints needs. Lengths are in metres.
+"""
+
+from __future__ import annotations
+
+import heapq
+import math
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+from functools import cached_property
+
+import numpy as np
+
+from seal_cli.errors import SealError
+
+__all__ = ["Cell", "Grid", "astar", "path_length"]
+
+Cell = tuple[int, int]
+
+_STEPS4: tuple[tuple[int, int, float], ...] = ((1, 0, 1.0), (-1, 0, 1.0), (0, 1, 1.0), (0, -1, 1.0))
+_STEPS8: tuple[tuple[int, int, float], ...] = _STEPS4 + tuple((di, dj, math.sqrt(2.0))
+                                                             for di in (1, -1) for dj in (1, -1))
+
+
+@dataclass(frozen=True, eq=False)
+class Grid:
+    """Free cells on the plane, and the moves between them."""
+
+    free: np.ndarray
+    origin: tuple[float, float]
+    resolution: float
+    connectivity: int = 8
+    _cache: dict[Cell, tuple[np.ndarray, np.ndarray]] = field(default_factory=dict, repr=False)
+
+    def __post_init__(self) -> None:
+        if self.free.ndim != 2 or self.free.dtype != bool:
+            raise SealError("a navigation grid needs a 2-D boolean mask of free cells")
+        if self.resolution <= 0:
+            raise SealError(f"grid resolution must be positive, not {self.resolution}")
+        if self.connectivity not in (4, 8):
+            raise SealError(f"grid connectivity must be 4 or 8, not {self.connectivity}")
+
+    @classmethod
+    def from_points(cls, points: Iterable[Sequence[float]], resolution: float, connectivity: int = 4,
+                    margin: int = 1) -> Grid:
+        """The grid whose free cells are the given points (ALFRED's reachable positions)."""
+        pts = np.asarray([(float(p[0]), float(p[1])) for p in points], dtype=float)
+        if not len(pts):
+            raise SealError("a navigation grid needs at least one free point")
+        low = pts.min(axis=0) - margin * resolution
+        idx = np.rint((pts - low) / resolution).astype(int)
+        shape = (int(idx[:, 1].max()) + 1 + margin, int(idx[:, 0].max()) + 1 + margin)
+        free = np.zeros(shape, dtype=bool)
+        free[idx[:, 1], idx[:, 0]] = True
+        return cls(free, (float(low[0]), float(low[1])), resolution, connectivity)
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        return (int(self.free.shape[0]), int(self.free.shape[1]))
+
+    # -- cells and points -------------------------------------------------------------------
+
+    def cell(self, point: Sequence[float]) -> Cell:
+        """The cell whose square holds the point (it may be outside the grid or occupied)."""
+        return (int(round((point[1] - self.origin[1]) / self.resolution)),
+                int(round((point[0] - self.origin[0]) / self.resolution)))
+
+    def point(self, cell: Cell) -> tuple[float, float]:
+        """The centre of a cell."""
+        return (self.origin[0] + cell[1] * self.resolution, self.origin[1] + cell[0] * self.resolution)
+
+    def inside(self, cell: Cell) -> bool:
+        return 0 <= cell[0] < self.free.shape[0] and 0 <= cell[1] < self.free.shape[1]
+
+    def is_free(self, cell: Cell) -> bool:
+        return self.inside(cell) and bool(self.free[cell])
+
+    @cached_property
+    def free_cells(self) -> np.ndarray:
+        """Every free cell as rows of ``(i, j)``."""
+        return np.argwhere(self.free)
+
+    @cached_property
+    def free_points(self) -> np.ndarray:
+        """The centres of the free cells, rows of ``(x, y)``, in the order of :attr:`free_cells`."""
+        cells = self.free_cells
+        return np.column_stack([self.origin[0] + cells[:, 1] * self.resolution,
+                                self.origin[1] + cells[:, 0] * self.resolution])
+
+    def nearest_free(self, point: Sequence[float]) -> Cell:
+        """The free cell whose centre is nearest the point."""
+        pts = self.free_points
+        k = int(np.argmin(np.hypot(pts[:, 0] - point[0], pts[:, 1] - point[1])))
+        i, j = self.free_cells[k]
+        return (int(i), int(j))
+
+    def neighbours(self, cell: Cell) -> Iterable[tuple[Cell, float]]:
+        """Free cells one move away, with the move's length in cells."""
+        steps = _STEPS4 if self.connectivity == 4 else _STEPS8
+        i, j = cell
+        for di, dj, cost in steps:
+            nxt = (i + di, j + dj)
+            if not self.is_free(nxt):
+                continue
+            if di and dj and not (self.is_free((i + di, j)) and self.is_free((i, j + dj))):
+                continue  # no cutting corners
+            yield nxt, cost
+
+    # -- distances ---------------------------------------------------------------------------
+
+    @cached_property
+    def _graph(self) -> tuple[object, np.ndarray]:
+        """The free cells as a sparse graph (scipy), and each cell's node index (-1 if occupied)."""
+        from scipy.sparse import coo_matrix
+
+        index = -np.ones(self.free.shape, dtype=np.int64)
+        cells = self.free_cells
+        index[cells[:, 0], cells[:, 1]] = np.arange(len(cells))
+        rows, cols, costs = [], [], []
+        steps = _STEPS4 if self.connectivity == 4 else _STEPS8
+        h, w = self.free.shape
+        for di, dj, cost in steps:
+            ni, nj = cells[:, 0] + di, cells[:, 1] + dj
+            ok = (ni >= 0) & (ni < h) & (nj >= 0) & (nj < w)
+            ok[ok] &= self.free[ni[ok], nj[ok]]
+            if di and dj:
+                ok[ok] &= self.free[cells[ok, 0] + di, cells[ok, 1]] & self.free[cells[ok, 0], cells[ok, 1] + dj]
+            rows.append(index[cells[ok, 0], cells[ok, 1]])
+            cols.append(index[ni[ok], nj[ok]])
+            costs.append(np.full(int(ok.sum()), cost))
+        n = len(cells)
+        graph = coo_matrix((np.concatenate(costs), (np.concatenate(rows), np.concatenate(cols))), shape=(n, n))
+        return graph.tocsr(), index
+
+    def _dijkstra(self, start: Cell) -> tuple[np.ndarray, np.ndarray]:
+        """Distances (metres, per cell) and predecessors (per node) of every shortest path from ``start``."""
+        if start in self._cache:
+            return self._cache[start]
+        from scipy.sparse.csgraph import dijkstra
+
+        if not self.is_free(start):
+            raise SealError(f"cell {start} is not free")
+        graph, index = self._graph
+        along, previous = dijkstra(graph, directed=True, indices=int(index[start]), return_predecessors=True)
+        field_ = np.full(self.free.shape, np.inf)
+        cells = self.free_cells
+        field_[cells[:, 0], cells[:, 1]] = along * self.resolution
+        if len(self._cache) > 256:
+            self._cache.clear()
+        self._cache[start] = (field_, previous)
+        return field_, previous
+
+    def distances(self, start: Cell) -> np.ndarray:
+        """Metres of the shortest path from ``start`` to every cell (``inf`` where none, or occupied)."""
+        return self._dijkstra(start)[0]
+
+    def path(self, start: Cell, goal: Cell) -> list[Cell]:
+        """One shortest path, both ends included (from the Dijkstra tree of ``start``; :func:`astar` is
+        the reference); an unreachable goal is a SealError."""
+        field_, previous = self._dijkstra(start)
+        if not self.is_free(goal):
+            raise SealError(f"the goal cell {goal} is not free")
+        if not np.isfinite(field_[goal]):
+            raise SealError(f"no path from {self.point(start)} to {self.point(goal)}")
+        _, index = self._graph
+        cells = self.free_cells
+        node = int(index[goal])
+        path = [goal]
+        while node != int(index[start]):
+            node = int(previous[node])
+            path.append((int(cells[node, 0]), int(cells[node, 1])))
+        return path[::-1]
+
+
+def _heuristic(a: Cell, b: Cell, connectivity: int) -> float:
+    di, dj = abs(a[0] - b[0]), abs(a[1] - b[1])
+    if connectivity == 4:
+        return float(di + dj)
+    return float(max(di, dj) + (math.sqrt(2.0) - 1.0) * min(di, dj))
+
+
+def astar(grid: Grid, start: Cell, goal: Cell) -> list[Cell]:
+    """A* with the Manhattan (4-connected) or octile (8-connected) distance, which never overestimates."""
+    for name, cell in (("start", start), ("goal", goal)):
+        if not grid.is_free(cell):
+            raise SealError(f"the {name} cell {cell} is not free")
+    frontier: list[tuple[float, float, Cell]] = [(_heuristic(start, goal, grid.connectivity), 0.0, start)]
+    came: dict[Cell, Cell | None] = {start: None}
+    cost: dict[Cell, float] = {start: 0.0}
+    while frontier:
+        _, g, cell = heapq.heappop(frontier)
+        if cell == goal:
+            break
+        if g > cost[cell]:
+            continue
+        for nxt, step in grid.neighbours(cell):
+            new = g + step
+            if new < cost.get(nxt, math.inf) - 1e-12:
+                cost[nxt] = new
+                came[nxt] = cell
+                heapq.heappush(frontier, (new + _heuristic(nxt, goal, grid.connectivity), new, nxt))
+    if goal not in came:
+        raise SealError(f"no path from {grid.point(start)} to {grid.point(goal)}")
+    path = [goal]
+    while (prev := came[path[-1]]) is not None:
+        path.append(prev)
+    return path[::-1]
+
+
+def path_length(grid: Grid, path: Sequence[Cell]) -> float:
+    """Metres along a path of cells."""
+    return sum(math.hypot(a[0] - b[0], a[1] - b[1]) for a, b in zip(path, path[1:], strict=False)) * grid.resolution

@@ -1,0 +1,2 @@
+"""Where a robot looks next: the search policies (SeFM and the baselines).
+"""

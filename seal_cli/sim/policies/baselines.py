@@ -1,0 +1,293 @@
+"""The searchers SeFM is measured against, on the same episodes and the same execution machinery.
+
+- :class:`ObjectOnlyPolicy` (SLiM-style, after Zeng et al.): one belief per object class, from
+  the same priors and observations, searched for one at a time in plan order: it looks where the
+  *object* the current frame needs is believed to be, with no frame relations and no
+  precondition context.
+- :class:`CoveragePolicy`: knows nothing of where things usually are; it goes to the nearest
+  frontier of what it has seen (or the nearest receptacle it has not looked into) until what it
+  needs is in view.
+- :class:`OraclePolicy`: knows where everything is, including what closed receptacles hold, and
+  chooses the instances that make the whole remaining plan shortest: a lower bound on the path.
+- ``uniform``: SeFM without priors (:class:`~seal_cli.sim.policies.sefm.SeFMPolicy` with ``priors=False``).
+
+Every policy answers one question, :meth:`next_view`: from where to look next for what the
+current frame needs (see :class:`seal_cli.sim.agent.Policy`).
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections.abc import Sequence
+
+import numpy as np
+
+from seal_cli.frames.model import Binding
+from seal_cli.frames.taxonomy import class_key
+from seal_cli.sim.agent import Agent, Known, View
+from seal_cli.sim.navigation import Cell
+from seal_cli.sim.policies.sefm import SeFMPolicy
+from seal_cli.sim.world import Detection
+
+__all__ = ["POLICIES", "CoveragePolicy", "ObjectOnlyPolicy", "OraclePolicy", "make_policy"]
+
+
+def closed_unopened(agent: Agent) -> list[Known]:
+    """Receptacles that are shut and that the robot has not looked into."""
+    return [k for k in agent.known.values() if not k.movable and k.openable and k.id not in agent.opened
+            and not agent.world.items[k.id].is_open]
+
+
+def container_views(agent: Agent, field_: np.ndarray, containers: Sequence[Known]) -> list[tuple[float, View]]:
+    """(path cost, view) for opening each container from its nearest stand cell."""
+    views = []
+    for k in containers:
+        cell = agent.stand_cell(k, field_)
+        if cell is not None and np.isfinite(field_[cell]):
+            views.append((float(field_[cell]), View(cell, k.at, open=k.id, why=f"opens {k.id} to look inside")))
+    return views
+
+
+def _one_per_quarter_metre(cells: np.ndarray, resolution: float) -> np.ndarray:
+    """Which of the cells (rows of i, j) lie on a lattice of about 0.25 m: all of them on a grid that
+    coarse or coarser, one in ``stride²`` on a finer one. The searchers that pay a shortest-path
+    field or a line-of-sight query per candidate cell thin their candidates with it."""
+    stride = max(1, round(0.25 / resolution))
+    if stride == 1:
+        return np.ones(len(cells), dtype=bool)
+    return (cells[:, 0] % stride == 0) & (cells[:, 1] % stride == 0)
+
+
+class CoveragePolicy:
+    """Go to the nearest frontier of the seen area, or the nearest unopened receptacle.
+
+    What is to be seen is every point of the map within sensor range of free space (things stand
+    on furniture, off the free space), on a lattice of half the sensor range at most 0.25 m; a
+    point is a frontier until the robot has seen it, and it is looked at from the nearest cell that
+    has a line of sight to it (:meth:`frontier`)."""
+
+    name = "coverage"
+
+    def begin(self, agent: Agent) -> None:
+        grid = agent.grid
+        step = min(0.25, grid.resolution * max(1, round(0.25 / grid.resolution)))
+        rng = agent.world.sensor.range
+        x0, y0 = grid.free_points.min(axis=0) - rng
+        x1, y1 = grid.free_points.max(axis=0) + rng
+        xs, ys = np.meshgrid(np.arange(x0, x1 + 1e-9, step), np.arange(y0, y1 + 1e-9, step))
+        lattice = np.column_stack([xs.ravel(), ys.ravel()])
+        from scipy.spatial import cKDTree
+
+        near, _ = cKDTree(grid.free_points).query(lattice, distance_upper_bound=0.8 * rng)
+        self.lattice = lattice[np.isfinite(near)]
+        self.seen = np.zeros(len(self.lattice), dtype=bool)
+
+    def observe(self, agent: Agent, detections: Sequence[Detection]) -> None:
+        todo = np.flatnonzero(~self.seen)
+        if len(todo):
+            self.seen[todo] = agent.world.sensor.visible(agent.world.robot.pose, self.lattice[todo])
+
+    def next_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
+        field_ = agent.distances()
+        cells = agent.grid.free_cells
+        costs = field_[cells[:, 0], cells[:, 1]]
+        options = container_views(agent, field_, closed_unopened(agent))
+        frontier = self.frontier(agent, costs)
+        if frontier is not None:
+            cost, k, u = frontier
+            goal = self.lattice[u]
+            options.append((cost, View((int(cells[k, 0]), int(cells[k, 1])), (float(goal[0]), float(goal[1])),
+                                       why="the nearest frontier")))
+        if not options:
+            return None
+        return min(options, key=lambda o: o[0])[1]
+
+    def frontier(self, agent: Agent, costs: np.ndarray) -> tuple[float, int, int] | None:
+        """The cheapest unseen lattice point to see: (drive in metres, the free cell to see it from,
+        the point). Seeing a point costs the drive to the nearest free cell within range of it
+        (0.8 of the sensor's) that has a line of sight to it; among equals, the first point by
+        index, seen from the first such cell by index. The robot's own cell is never a view: what
+        it could see from there it has seen.
+
+        The search runs over candidate cells in order of their drive, asking a tree of the unseen
+        points how many lie within range, and the sensor's line of sight only for cells that have
+        some; the first cell that sees one settles the cost. So the work grows with the cells
+        nearer than the frontier, never with cells × points in range. On a fine grid the candidate
+        cells are thinned to about one per 0.25 m (every cell where the grid is that coarse)."""
+        from scipy.spatial import cKDTree
+
+        unseen = np.flatnonzero(~self.seen)
+        if not len(unseen):
+            return None
+        reach = 0.8 * agent.world.sensor.range
+        blocked = agent.world.sensor.blocked
+        grid = agent.grid
+        points, cells = grid.free_points, grid.free_cells
+        here = agent.robot_cell()
+        candidate = np.isfinite(costs) & ~((cells[:, 0] == here[0]) & (cells[:, 1] == here[1]))
+        candidate &= _one_per_quarter_metre(cells, grid.resolution)
+        order = np.flatnonzero(candidate)
+        order = order[np.argsort(costs[order], kind="stable")]
+        tree = cKDTree(self.lattice[unseen])
+
+        def seen_from(cell: int) -> np.ndarray:
+            """Indices (into ``unseen``) of the unseen points within range of a cell it can see."""
+            near = np.asarray(sorted(tree.query_ball_point(points[cell], reach)), dtype=np.intp)
+            if blocked is not None and len(near):
+                x, y = points[cell]
+                near = near[~np.asarray(blocked((float(x), float(y), 0.0), self.lattice[unseen[near]]), dtype=bool)]
+            return near
+
+        first: int | None = None
+        for chunk in np.array_split(order, max(1, len(order) // 2048)) if len(order) else []:
+            counts = tree.query_ball_point(points[chunk], reach, return_length=True)
+            for cell in chunk[np.flatnonzero(counts)]:
+                if len(seen_from(int(cell))):
+                    first = int(cell)
+                    break
+            if first is not None:
+                break
+        if first is None:
+            return None
+        cost = float(costs[first])
+        tied = order[costs[order] == cost]
+        views = {int(c): seen_from(int(c)) for c in tied}
+        u = min(int(v.min()) for v in views.values() if len(v))
+        k = min(c for c, v in views.items() if u in set(v.tolist()))
+        return cost, k, int(unseen[u])
+
+
+class OraclePolicy:
+    """Knows the world; picks the instances, and the poses to act from, that make the remaining plan
+    shortest (exhaustively over the nearest few instances of each class, and exactly over poses by
+    dynamic programming): the lower bound on the path."""
+
+    name = "oracle"
+    oracle = True
+    max_assignments = 2000
+    per_class = 6
+
+    def begin(self, agent: Agent) -> None:
+        self.plan: list[Known] = []
+        self._pairs: dict[tuple[str, str], np.ndarray] = {}
+        self._cells: dict[str, np.ndarray] = {}
+
+    def observe(self, agent: Agent, detections: Sequence[Detection]) -> None:
+        pass
+
+    def next_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
+        return None  # it knows every instance there is; if none will do, there is none
+
+    def choose(self, agent: Agent, cls: str, candidates: Sequence[Known]) -> str | None:
+        targets = [agent.class_of(t) for t in _navigation_targets(agent)]
+        if not targets or targets[0] != cls:
+            targets = [cls, *targets]
+        held = agent.held()
+        options: dict[str, list[Known]] = {}
+        field_ = agent.distances()
+        for t in dict.fromkeys(targets):
+            if held is not None and held.key == t and t != cls:
+                continue
+            pool = list(candidates) if t == cls else [k for k in agent.instances(t) if k.id not in agent.unreachable]
+            costed = [(float(field_[c]), k) for k in pool if (c := agent.stand_cell(k, field_)) is not None]
+            costed.sort(key=lambda ck: ck[0])
+            if costed:
+                options[t] = [k for _, k in costed[: self.per_class]]
+        if cls not in options:
+            return None
+        classes = list(options)
+        best: tuple[float, list[Known]] | None = None
+        for n, combo in enumerate(itertools.product(*(options[c] for c in classes))):
+            if n >= self.max_assignments:
+                break
+            chosen = dict(zip(classes, combo, strict=True))
+            stops = [chosen[t] for t in targets if t in chosen]
+            cost = self.tour(agent, stops)[0]
+            if best is None or cost < best[0]:
+                best = (cost, stops)
+        if best is None:
+            return None
+        self.plan = best[1]
+        return best[1][0].id
+
+    def stand(self, agent: Agent, known: Known) -> Cell | None:
+        """The pose to act on ``known`` from that makes the rest of the chosen tour shortest."""
+        stops = self.plan if self.plan and self.plan[0].id == known.id else [known]
+        cost, cell = self.tour(agent, stops)
+        return cell if np.isfinite(cost) else None
+
+    def _stand_cells(self, agent: Agent, known: Known) -> np.ndarray:
+        """The cells to act on ``known`` from; on a grid finer than 0.25 m, one per 0.25 m (a
+        shortest-path field is computed from each, so a 5 cm grid would cost 25 times as many for
+        a few centimetres of path)."""
+        if known.id not in self._cells:
+            cells = agent.stand_cells(known)
+            thin = cells[_one_per_quarter_metre(cells, agent.grid.resolution)]
+            self._cells[known.id] = thin if len(thin) else cells
+        return self._cells[known.id]
+
+    def _between(self, agent: Agent, a: Known, b: Known) -> np.ndarray:
+        """Metres from each stand cell of ``a`` to each stand cell of ``b``."""
+        key = (a.id, b.id)
+        if key not in self._pairs:
+            ca, cb = self._stand_cells(agent, a), self._stand_cells(agent, b)
+            rows = [agent.grid.distances((int(i), int(j)))[cb[:, 0], cb[:, 1]] for i, j in ca]
+            self._pairs[key] = np.asarray(rows).reshape(len(ca), len(cb))
+        return self._pairs[key]
+
+    def tour(self, agent: Agent, stops: Sequence[Known]) -> tuple[float, Cell | None]:
+        """The shortest drive through the stops in order (each from any of its stand cells), and the
+        cell to stand at for the first stop."""
+        if not stops:
+            return 0.0, None
+        after = np.zeros(len(self._stand_cells(agent, stops[-1])))  # metres still to go from each cell
+        for a, b in zip(stops[-2::-1], stops[:0:-1], strict=True):
+            between = self._between(agent, a, b)
+            after = (between + after[None, :]).min(axis=1) if between.size else np.full(len(between), np.inf)
+        first = self._stand_cells(agent, stops[0])
+        if not len(first):
+            return math.inf, None
+        here = agent.distances()[first[:, 0], first[:, 1]]
+        total = here + after
+        k = int(np.argmin(total))
+        return float(total[k]), (int(first[k, 0]), int(first[k, 1]))
+
+
+def _navigation_targets(agent: Agent) -> list[str]:
+    """The names the remaining plan will drive to, in order."""
+    out: list[str] = []
+    for binding in getattr(agent, "remaining", []):
+        for action in binding.actions:
+            if action.name == "navigate":
+                out.append(class_key(action.args[0]))
+    return out
+
+
+class ObjectOnlyPolicy(SeFMPolicy):
+    """SLiM-style search: the belief of the object the current frame needs, and nothing else."""
+
+    name = "object_only"
+    use_frames = False
+
+
+POLICIES = ("sefm", "object_only", "coverage", "oracle")
+
+
+def make_policy(name: str, particles: int = 200) -> SeFMPolicy | CoveragePolicy | OraclePolicy:
+    """A fresh policy by name: sefm, object_only, coverage, oracle or uniform."""
+    if name == "sefm":
+        return SeFMPolicy(particles=particles)
+    if name == "uniform":
+        policy = SeFMPolicy(particles=particles, priors=False)
+        policy.name = "uniform"
+        return policy
+    if name == "object_only":
+        return ObjectOnlyPolicy(particles=particles)
+    if name == "coverage":
+        return CoveragePolicy()
+    if name == "oracle":
+        return OraclePolicy()
+    from seal_cli.errors import SealError
+
+    raise SealError(f"unknown policy {name!r}; known: {', '.join((*POLICIES, 'uniform'))}")

@@ -1,0 +1,192 @@
+"""ALFRED-2D: loading real trials, building their worlds and maps, priors from train, gold frames, judging."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from seal_cli.bench.alfred2d import (
+    FOUR,
+    TASK_TYPES,
+    Task,
+    build_scene,
+    estimate_priors,
+    goal_conditions,
+    gold_classes,
+    gold_commands,
+    judge,
+    load_suite,
+    read_floorplans,
+    scene_priors,
+    scene_vocabulary,
+    suite_vocabulary,
+    thor_yaw,
+)
+from seal_cli.errors import SealError
+from seal_cli.frames.library import Library
+from seal_cli.frames.taxonomy import class_key
+from seal_cli.sim.world import HAND
+
+
+@pytest.fixture(scope="module")
+def suite(shared_data: Path):  # type: ignore[no-untyped-def]
+    return load_suite(shared_data / "alfred2d", "valid_seen", limit=2)
+
+
+def test_suite_has_every_task_type_and_the_papers_four_first(suite) -> None:  # type: ignore[no-untyped-def]
+    groups = [e.group for e in suite.episodes]
+    assert set(groups) == set(TASK_TYPES) and all(groups.count(t) == 2 for t in TASK_TYPES)
+    assert FOUR == ("look_at_obj_in_light", "pick_and_place_simple", "pick_and_place_with_movable_recep",
+                    "pick_heat_then_place_in_recep")
+
+
+def test_priors_come_from_train_and_put_apples_in_fridges(suite) -> None:  # type: ignore[no-untyped-def]
+    apple = suite.priors["apple"]
+    assert sum(apple.values()) == pytest.approx(1.0)
+    assert max(apple, key=lambda k: apple[k]) == "fridge"
+    kitchen = next(e for e in suite.episodes if e.scene_type == "kitchen")
+    plan = suite.floor_plans[kitchen.floor_plan]
+    local = scene_priors(suite.priors, plan, ["apple", "never_seen_thing"])
+    assert set(local["apple"]) == {class_key(r.cls) for r in plan.receptacles if r.receptacle}
+    for masses in local.values():
+        assert sum(masses.values()) == pytest.approx(1.0) and min(masses.values()) > 0
+
+
+def test_estimate_priors_counts_parents(suite) -> None:  # type: ignore[no-untyped-def]
+    priors = estimate_priors(suite.episodes[:3], suite.floor_plans)
+    for masses in priors.values():
+        assert sum(masses.values()) == pytest.approx(1.0)
+
+
+def test_scene_world_and_map_agree(suite, library: Library) -> None:  # type: ignore[no-untyped-def]
+    episode = suite.episodes[0]
+    plan = suite.floor_plans[episode.floor_plan]
+    scene = build_scene(episode, plan, library, suite.priors)
+    world, m = scene.world, scene.map
+    assert {p.name for p in m.places} == {i.id for i in world.items.values() if not i.movable}
+    assert len(m.objects) == len(episode.objects)
+    assert all(i.openable is False or "open" not in i.states for i in world.items.values())  # all shut
+    start = scene.grid.cell(episode.start)
+    assert scene.grid.is_free(start)
+    assert world.robot.holding is None and world.robot.pose == episode.start
+    assert m.is_free([episode.start[:2]])[0]
+
+
+def test_thor_rotation_convention() -> None:
+    import math
+
+    assert thor_yaw(0) == pytest.approx(math.pi / 2)  # faces +z
+    assert thor_yaw(90) == pytest.approx(0.0)  # faces +x
+
+
+def test_gold_frames_per_task_type(library: Library) -> None:
+    heat = gold_commands(Task("pick_heat_then_place_in_recep", "Egg", "Fridge"), library)
+    assert [str(b) for b in heat] == ["Heat(theme=egg, instrument=microwave)", "Place(theme=egg, goal=fridge)"]
+    sliced = gold_commands(Task("pick_cool_then_place_in_recep", "Apple", "CounterTop", sliced=True), library,
+                           ["butter_knife", "apple"])
+    assert str(sliced[0]) == "Slice(theme=apple, instrument=butter_knife)"
+    stack = gold_commands(Task("pick_and_place_with_movable_recep", "Apple", "CounterTop", mrecep="Pan"), library)
+    assert [str(b) for b in stack] == ["Place(theme=apple, goal=pan)", "Place(theme=pan, goal=counter_top)"]
+    two = Task("pick_two_obj_and_place", "Book", "Desk")
+    assert [b.elements["theme"] for b in gold_commands(two, library)] == ["book", "book_2"]
+    assert gold_classes(two) == {"book_2": "book"}
+    look = gold_commands(Task("look_at_obj_in_light", "AlarmClock", toggle="DeskLamp"), library)
+    assert str(look[0]) == "LookAt(theme=alarm_clock, instrument=desk_lamp)"
+    with pytest.raises(SealError, match="no receptacle"):
+        gold_commands(Task("pick_and_place_simple", "Book"), library)
+
+
+def test_goal_conditions_are_ordered() -> None:
+    assert goal_conditions(Task("pick_heat_then_place_in_recep", "Apple", "CounterTop", sliced=True)) == [
+        ("sliced", ("apple",)), ("hot", ("apple",)), ("in", ("apple", "counter_top"))]
+    with pytest.raises(SealError, match="unknown task type"):
+        goal_conditions(Task("juggle", "Apple", "CounterTop"))
+
+
+def test_judge_needs_every_condition_in_order(suite, library: Library) -> None:  # type: ignore[no-untyped-def]
+    task = Task("pick_heat_then_place_in_recep", "Apple", "CounterTop")
+    episode = next(e for e in suite.episodes if e.scene_type == "kitchen")
+    scene = build_scene(episode, suite.floor_plans[episode.floor_plan], library, suite.priors)
+    world = scene.world
+    apple = world.of_class("apple")[0]
+    counter = world.of_class("counter_top")[0]
+    assert not judge(task, world).success
+    # placed first, heated after (teleporting for the test): the order is wrong
+    world._move(apple, counter.id, counter.at)
+    world.step += 1
+    world._set(apple, "hot")
+    world.step += 1
+    verdict = judge(task, world)
+    assert not verdict.success and "out of order" in verdict.reason
+    # take it again, and put it back after it is hot: now right
+    world._move(apple, HAND)
+    world.step += 1
+    world._move(apple, counter.id, counter.at)
+    assert judge(task, world).success
+
+
+def test_bad_data_is_a_clear_error(tmp_path: Path, shared_data: Path) -> None:
+    with pytest.raises(SealError, match="no ALFRED-2D data"):
+        read_floorplans(tmp_path)
+    (tmp_path / "floorplans.json").write_text("{not json")
+    with pytest.raises(SealError, match="cannot read"):
+        read_floorplans(tmp_path)
+    (tmp_path / "floorplans.json").write_text(json.dumps({"floor_plans": {"F": {"receptacles": [{}]}}}))
+    with pytest.raises(SealError, match="malformed"):
+        read_floorplans(tmp_path)
+    with pytest.raises(SealError, match="no split 'test'"):
+        load_suite(shared_data / "alfred2d", "test")
+    with pytest.raises(SealError, match="unknown task type"):
+        load_suite(shared_data / "alfred2d", "valid_seen", types=["juggling"])
+
+
+def test_the_suite_vocabulary_is_a_shipped_file_with_every_class_of_the_data(shared_data: Path) -> None:
+    from seal_cli.bench.alfred2d import VOCABULARY
+    from seal_cli.language.grounding import load_vocabulary
+
+    assert VOCABULARY.is_file() and VOCABULARY.parents[2].name == "seal_cli"   # inside the package: shipped
+    vocab = suite_vocabulary()
+    assert vocab == load_vocabulary(VOCABULARY)
+    plans, movable = read_floorplans(shared_data / "alfred2d")
+    classes = {r.cls for p in plans.values() for r in p.receptacles} | set(movable)
+    assert classes <= set(vocab.classes)
+    conventions = {"chair": "ArmChair", "table": "DiningTable", "sink": "SinkBasin", "glass": "Cup", "lamp": "DeskLamp"}
+    for cls, names in zip(vocab.classes, vocab.synonyms, strict=True):   # ALFRED's conventions are the scene's
+        assert not any(conventions.get(n) == cls for n in names), (cls, names)
+
+
+def test_an_episode_grounds_its_sentence_in_the_classes_its_room_has(library: Library) -> None:
+    from seal_cli.language.parser import parse_command
+
+    def goal(text: str, present: list[str]) -> tuple[str | None, str | None]:
+        place = parse_command(text, library, scene_vocabulary(present)).frames[-1].elements
+        return place["theme"].cls, place["goal"].cls
+
+    bedroom = ["side_table", "desk_lamp", "arm_chair", "pillow", "cell_phone", "laptop"]
+    assert goal("put the phone on the table", bedroom) == ("cell_phone", "side_table")
+    assert goal("put the cushion on the chair", bedroom) == ("pillow", "arm_chair")
+    assert goal("put the computer on the table", bedroom) == ("laptop", "side_table")   # the suite's own names
+    bathroom = ["sink_basin", "bathtub_basin", "hand_towel", "hand_towel_holder", "toilet"]
+    assert goal("put the towel in the sink", bathroom) == ("hand_towel", "sink_basin")
+    assert goal("put the towel on the towel rack", bathroom) == ("hand_towel", "hand_towel_holder")
+    assert goal("put the towel in the tub", bathroom) == ("hand_towel", "bathtub_basin")
+    kitchen = ["dining_table", "side_table", "counter_top", "butter_knife", "kettle", "sink_basin"]
+    assert goal("put the knife on the table", kitchen) == ("butter_knife", "dining_table")  # the suite's order
+    assert goal("put the teapot on the counter", kitchen) == ("kettle", "counter_top")
+    assert goal("put the glass on the counter", kitchen)[0] is None      # no glass here, and no convention
+
+
+def test_human_goals_are_grounded_in_the_episodes_room(shared_data: Path, library: Library) -> None:
+    from seal_cli.bench.tasks import commands_for
+
+    full = load_suite(shared_data / "alfred2d", "valid_seen", with_priors=False)
+    episode = next(e for e in full.episodes if e.goals[0] == "Put a cooked slice of tomato on a kitchen counter.")
+    plan = full.floor_plans[episode.floor_plan]
+    scene = build_scene(episode, plan, library, {})
+    commanded, _ = commands_for(episode, library, scene.vocabulary, "human")
+    assert [str(b) for b in commanded] == ["Slice(theme=tomato, instrument=knife)",
+                                           "Heat(theme=tomato, instrument=microwave)",
+                                           "Place(theme=tomato, goal=counter_top)"]
+    assert all(v in scene.vocabulary for b in commanded for _, v in b.values)   # every value a class of the room

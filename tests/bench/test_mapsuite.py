@@ -1,0 +1,71 @@
+"""The map suite: layouts drawn from a map's priors, every policy on the same layouts."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+from typer.testing import CliRunner
+
+from seal_cli.bench.mapsuite import run_map_suite, sample_layout
+from seal_cli.bench.tasks import summarise
+from seal_cli.cli import app
+from seal_cli.errors import SealError
+from seal_cli.maps.model import load_map
+from seal_cli.resources import map_path
+
+runner = CliRunner()
+
+
+def test_a_layout_moves_every_object_to_where_its_prior_puts_mass() -> None:
+    apartment = load_map(map_path("apartment"))
+    rooms_of = {"cup": {"family_room", "bedroom"}, "spoon": {"kitchen", "bedroom"}}
+    seen_inside = set()
+    for seed in range(20):
+        layout = sample_layout(apartment, np.random.default_rng(seed))
+        assert [o.cls for o in layout.objects] == [o.cls for o in apartment.objects]
+        for obj in layout.objects:
+            assert layout.is_free(np.array([obj.at]))[0]
+            (room,) = layout.room_of(np.array([obj.at]))
+            if obj.cls in rooms_of:
+                assert room in rooms_of[obj.cls]
+            if obj.inside is not None:
+                seen_inside.add((obj.cls, obj.inside))
+                place = layout.place(obj.inside)
+                assert place is not None and np.hypot(place.at[0] - obj.at[0], place.at[1] - obj.at[1]) <= place.reach
+    assert ("apple", "fridge_1") in seen_inside and ("apple", "counter_1") in seen_inside
+    again = sample_layout(apartment, np.random.default_rng(3))
+    assert again.objects == sample_layout(apartment, np.random.default_rng(3)).objects
+
+
+def test_every_policy_runs_on_the_same_layouts_and_the_oracle_is_shortest() -> None:
+    outcomes = list(run_map_suite(str(map_path("apartment")), ["stir the cup"], ["sefm", "oracle"], layouts=2,
+                                  jobs=1, particles=100))
+    assert [(o.task_id, o.policy) for o in outcomes] == [
+        ("apartment-layout0-0", "sefm"), ("apartment-layout0-0", "oracle"),
+        ("apartment-layout1-0", "sefm"), ("apartment-layout1-0", "oracle")]
+    assert all(o.success and o.group == "stir the cup" for o in outcomes)
+    by = {(o.task_id, o.policy): o.path_m for o in outcomes}
+    for layout in ("apartment-layout0-0", "apartment-layout1-0"):
+        assert by[(layout, "oracle")] <= by[(layout, "sefm")] + 1e-9
+    report = summarise(outcomes, ["sefm", "oracle"])
+    assert report["groups"]["stir the cup"]["n"] == 2 and report["groups"]["all"]["success"]["sefm"] == 1.0
+
+
+def test_a_command_that_cannot_be_planned_fails_before_any_run() -> None:
+    with pytest.raises(SealError, match="unknown verb 'fly'"):
+        list(run_map_suite(str(map_path("apartment")), ["fly to the moon"], ["sefm"], layouts=1, jobs=1))
+
+
+def test_bench_tasks_map_suite_json() -> None:
+    result = runner.invoke(app, ["bench", "tasks", "--suite", "map", "--command", "heat the apple", "--layouts", "1",
+                                 "--policies", "oracle,coverage", "--jobs", "1", "--json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert data["suite"] == "map" and data["map"] == "apartment" and data["layouts"] == 1
+    group = data["groups"]["heat the apple"]
+    assert group["n"] == 1 and set(group["success"]) == {"oracle", "coverage"}
+    assert group["path_m"]["oracle"] <= group["path_m"]["coverage"]
+    bad = runner.invoke(app, ["bench", "tasks", "--suite", "nope"])
+    assert bad.exit_code == 1 and "the suites are alfred2d and map" in bad.stderr

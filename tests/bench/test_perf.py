@@ -1,0 +1,66 @@
+"""``seal bench perf``: the SPEC's JSON, and the engine against the exact reference on the same particles."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import replace
+
+import numpy as np
+from typer.testing import CliRunner
+
+from seal_cli.bench.perf import building, measure, scales, tv_distance
+from seal_cli.cli import app
+from seal_cli.frames.library import Library
+from seal_cli.maps.model import load_map
+from seal_cli.resources import map_path
+
+
+def test_the_building_is_a_walled_floor_of_rooms_with_one_thing_of_each_class() -> None:
+    m = building(np.random.default_rng(0), classes=12, columns=3, rows=2)
+    assert len(m.rooms) == 6 and len(m.objects) == 12 and len(m.priors) == 12
+    assert m.grid.has_obstacles
+    assert all(0.9 < sum(p.values()) < 1.0 for p in m.priors.values())
+    doorway = np.array([[5.0, 2.5]])  # the middle of the wall between the first two rooms
+    assert m.is_free(doorway)[0] and not m.is_free(np.array([[5.0, 0.6]]))[0]
+
+
+def test_the_paper_scale_is_the_papers_fig3(library: Library) -> None:
+    (paper,) = scales(library, lambda: load_map(map_path("apartment")), ["paper"])
+    assert (len(paper.bindings), paper.objects, paper.particles) == (3, 2, 200)
+    result = measure(replace(paper, updates=5, exact_updates=2))
+    assert set(result) == {"name", "frames", "objects", "particles", "updates_per_s", "exact_updates_per_s",
+                           "tv_distance"}
+    assert result["updates_per_s"] > 0 and result["exact_updates_per_s"] > 0
+    assert 0 <= result["tv_distance"] <= 0.02
+
+
+def test_the_building_scale_has_the_spec_size_and_grid_matches_exact(library: Library) -> None:
+    (big,) = scales(library, lambda: load_map(map_path("apartment")), ["building"])
+    assert len(big.bindings) >= 60 and big.objects >= 60 and big.particles == 1000
+    small = replace(big, particles=150, updates=3)
+    from seal_cli.bench.perf import _run
+
+    sefm, _ = _run(small, "grid", small.updates, 0)
+    assert tv_distance(sefm) <= 0.02
+
+
+def test_cli_json_and_unknown_scale() -> None:
+    runner = CliRunner()
+    bad = runner.invoke(app, ["bench", "perf", "--scale", "city"])
+    assert bad.exit_code == 1 and "unknown scale city" in bad.stderr
+    assert "--scale" in runner.invoke(app, ["bench", "perf", "--help"]).stdout
+
+
+def test_json_output_shape(monkeypatch: object) -> None:
+    import seal_cli.bench.perf as perfbench
+
+    def quick(scale: perfbench.Scale, seed: int = 0, progress: object = None) -> dict[str, object]:
+        return {"name": scale.name, "frames": len(scale.bindings), "objects": scale.objects,
+                "particles": scale.particles, "updates_per_s": 1.0, "exact_updates_per_s": 0.5, "tv_distance": 0.0}
+
+    monkeypatch.setattr(perfbench, "measure", quick)  # type: ignore[attr-defined]
+    result = CliRunner().invoke(app, ["bench", "perf", "--json", "--scale", "paper"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert [s["name"] for s in data["scales"]] == ["paper"]
+    assert data["scales"][0]["frames"] == 3

@@ -1,0 +1,31 @@
+"""``seal_cli.bench.plan``: the timings ``seal bench plan`` prints."""
+
+from __future__ import annotations
+
+from seal_cli.bench.plan import BENCH_COMMANDS, time_plans
+from seal_cli.frames.library import Library
+from seal_cli.maps.model import load_map
+from seal_cli.resources import map_path
+
+
+def test_each_command_gets_its_plan_and_times(library: Library) -> None:
+    rows = time_plans(["stir the cup", "heat the egg and put it in the fridge"], library, repeat=2)
+    assert [(r.text, r.commanded, r.steps) for r in rows] == [
+        ("stir the cup", 1, 2), ("heat the egg and put it in the fridge", 2, 4)]
+    assert all(0 < r.plan_ms <= r.ms and r.nodes >= r.steps for r in rows)
+
+
+def test_a_map_grounds_the_commands_in_its_world(library: Library) -> None:
+    world = load_map(map_path("apartment"))
+    (row,) = time_plans(["put the apple in the fridge"], library, map=world, repeat=1)
+    assert row.commanded == 1 and row.steps >= 2          # the apple is picked up and the fridge opened first
+
+
+def test_no_commands_no_timings(library: Library) -> None:
+    assert time_plans([], library) == []
+
+
+def test_the_built_in_commands_run_from_one_clause_to_six(library: Library) -> None:
+    rows = time_plans(BENCH_COMMANDS, library, repeat=1)
+    assert min(r.commanded for r in rows) == 1 and max(r.commanded for r in rows) >= 6
+    assert all(r.steps >= r.commanded for r in rows)

@@ -1,0 +1,85 @@
+"""The command line as a user meets it: frames, validate, errors, exit codes."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+from typer.testing import CliRunner
+
+from seal_cli.cli import app
+from tests.frames.test_library import SPEC_FRAMES
+
+runner = CliRunner()
+
+
+def test_version() -> None:
+    result = runner.invoke(app, ["--version"])
+    assert result.exit_code == 0 and result.stdout.startswith("seal ")
+
+
+def test_frames_json_lists_the_spec_frames_with_their_roles() -> None:
+    result = runner.invoke(app, ["frames", "--json"])
+    assert result.exit_code == 0
+    frames = json.loads(result.stdout)["frames"]
+    assert {f["frame"]: set(f["elements"]) for f in frames} == SPEC_FRAMES
+    stir = next(f for f in frames if f["frame"] == "Stir")
+    assert stir["elements"]["instrument"] == {"type": "utensil", "default": "spoon"}
+    assert stir["preconditions"] == ["holding(instrument)"]
+    assert stir["actions"] == ["navigate(theme)", "stir(instrument, theme)"]
+
+
+def test_frames_table_and_one_frame_in_full() -> None:
+    table = runner.invoke(app, ["frames"])
+    assert table.exit_code == 0 and "24 frames" in table.stdout and "LookAt" in table.stdout
+    one = runner.invoke(app, ["frames", "Stir"])
+    assert one.exit_code == 0
+    assert "holding(instrument)" in one.stdout and "stir(instrument, theme)" in one.stdout
+    assert json.loads(runner.invoke(app, ["frames", "pick", "--json"]).stdout)["frame"] == "Pick"
+
+
+def test_unknown_frame_is_a_clean_error() -> None:
+    result = runner.invoke(app, ["frames", "Juggle"])
+    assert result.exit_code == 1
+    assert "unknown frame 'Juggle'" in result.stderr and "Traceback" not in result.output
+
+
+def test_validate_ok_and_json() -> None:
+    result = runner.invoke(app, ["validate", "framelib"])
+    assert result.exit_code == 0 and result.stdout.startswith("ok: 24 frames")
+    report = json.loads(runner.invoke(app, ["validate", "framelib", "--json"]).stdout)
+    assert report["ok"] is True and report["frames"] == 24 and report["problems"] == []
+
+
+def test_validate_json_lists_problems(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.frame"
+    bad.write_text('frame Whisk "whisk" {\n  theme: bowlful\n}\n')
+    result = runner.invoke(app, ["validate", "--stdlib", "--json", str(bad)])
+    assert result.exit_code == 1
+    (problem,) = json.loads(result.stdout)["problems"]
+    assert problem == {"file": str(bad), "line": 2, "column": 3, "message": problem["message"]}
+    assert "unknown category 'bowlful'" in problem["message"]
+
+
+def test_a_broken_framelib_option_stops_other_commands(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("frame: Whisk\nelements: {theme: {type: bowlful}}\n")
+    result = runner.invoke(app, ["frames", "--framelib", str(bad)])
+    assert result.exit_code == 1
+    assert f"error: {bad}:2:" in result.stderr
+
+
+def test_usage_errors_are_exit_2() -> None:
+    assert runner.invoke(app, ["validate"]).exit_code == 2
+    assert runner.invoke(app, ["frames", "--bogus"]).exit_code == 2
+
+
+def test_the_console_script_runs_without_a_traceback(tmp_path: Path) -> None:
+    missing = tmp_path / "missing.yaml"
+    run = subprocess.run([sys.executable, "-m", "seal_cli", "validate", str(missing)],
+                         capture_output=True, text=True)
+    assert run.returncode == 1
+    assert f"{missing}: no such file or folder" in run.stdout
+    assert "Traceback" not in run.stderr

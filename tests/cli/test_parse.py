@@ -1,0 +1,146 @@
+"""``seal parse`` and ``seal bench parse`` as a user meets them: JSON, JSON Lines, trees, errors."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from seal_cli.cli import app
+
+runner = CliRunner()
+
+
+def test_parse_json_prints_the_frames() -> None:
+    result = runner.invoke(app, ["parse", "bring Roger a coffee from the kitchen", "--json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert data["text"] == "bring Roger a coffee from the kitchen"
+    assert [f["frame"] for f in data["frames"]] == ["Bring"]
+    assert data["frames"][0]["elements"]["recipient"] == {"text": "Roger", "head": "Roger", "class": None,
+                                                          "kind": "person"}
+
+
+def test_parse_prints_a_tree_without_json() -> None:
+    result = runner.invoke(app, ["parse", "stir the cup and put it on the table"])
+    assert result.exit_code == 0, result.output
+    for words in ("0. Stir", "1. Place", "theme", "instrument", "default", "→ frame 0 theme"):
+        assert words in result.stdout
+
+
+def test_an_unparsable_command_is_a_message_with_a_caret_and_exit_1() -> None:
+    result = runner.invoke(app, ["parse", "launch the rocket"])
+    assert result.exit_code == 1
+    assert "unknown verb 'launch'" in result.stderr and "known verbs include" in result.stderr
+    assert "launch the rocket\n^" in result.stderr
+    assert "Traceback" not in result.output
+
+
+def test_an_unparsable_command_with_json_is_an_error_object() -> None:
+    result = runner.invoke(app, ["parse", "bring me the", "--json"])
+    assert result.exit_code == 1
+    data = json.loads(result.stdout)
+    assert data["text"] == "bring me the"
+    assert set(data["error"]) == {"message", "column", "expected"} and data["error"]["column"] == 13
+
+
+def test_file_mode_writes_one_json_line_per_input_line(tmp_path: Path) -> None:
+    commands = tmp_path / "commands.txt"
+    commands.write_text("go to the kitchen\n\nlaunch the rocket\nfind Robin and follow them\n", encoding="utf-8")
+    result = runner.invoke(app, ["parse", "--file", str(commands), "--json"])
+    assert result.exit_code == 0                      # lines that fail are error objects, not a failure
+    lines = [json.loads(line) for line in result.stdout.splitlines()]
+    assert len(lines) == 4
+    assert [("frames" in x, "error" in x) for x in lines] == [(True, False), (False, True), (False, True),
+                                                              (True, False)]
+    assert lines[3]["frames"][1]["elements"]["theme"]["refers_to"] == [0, "theme"]
+
+
+def test_file_mode_reads_standard_input() -> None:
+    result = runner.invoke(app, ["parse", "--file", "-", "--json"], input="go to the kitchen\nfind the cup\n")
+    assert result.exit_code == 0
+    assert [json.loads(x)["frames"][0]["frame"] for x in result.stdout.splitlines()] == ["Go", "Find"]
+
+
+def test_file_mode_without_json_prints_a_line_per_command(tmp_path: Path) -> None:
+    result = runner.invoke(app, ["parse", "--file", "-"], input="go to the kitchen\nlaunch it\n")
+    assert result.exit_code == 0
+    assert "1: Go(goal=kitchen)" in result.stdout and "2: error unknown verb 'launch'" in result.stdout
+
+
+def test_a_missing_file_is_exit_1(tmp_path: Path) -> None:
+    result = runner.invoke(app, ["parse", "--file", str(tmp_path / "nope.txt"), "--json"])
+    assert result.exit_code == 1 and "no such file" in result.stderr and not result.stdout
+
+
+def test_text_or_file_not_both_nor_neither() -> None:
+    assert runner.invoke(app, ["parse"]).exit_code == 1
+    assert runner.invoke(app, ["parse", "go home", "--file", "-"], input="").exit_code == 1
+
+
+def test_vocabulary_grounds_elements(tmp_path: Path) -> None:
+    vocab = tmp_path / "vocab.yaml"
+    vocab.write_text("- AlarmClock\n- {class: Fridge, synonyms: [refrigerator]}\n", encoding="utf-8")
+    result = runner.invoke(app, ["parse", "put the clock in the refrigerator", "--json", "--vocabulary", str(vocab)])
+    assert result.exit_code == 0, result.output
+    elements = json.loads(result.stdout)["frames"][0]["elements"]
+    assert (elements["theme"]["class"], elements["goal"]["class"]) == ("AlarmClock", "Fridge")
+
+
+def test_a_bad_vocabulary_is_exit_1(tmp_path: Path) -> None:
+    vocab = tmp_path / "vocab.yaml"
+    vocab.write_text("cup: 1\n", encoding="utf-8")
+    result = runner.invoke(app, ["parse", "find the cup", "--vocabulary", str(vocab)])
+    assert result.exit_code == 1 and "YAML list" in result.stderr
+
+
+def test_map_classes_ground_elements() -> None:
+    pytest.importorskip("seal_cli.maps.model")
+    result = runner.invoke(app, ["parse", "take the spoon from the fridge", "--json", "--map", "apartment"])
+    assert result.exit_code == 0, result.output
+    elements = json.loads(result.stdout)["frames"][0]["elements"]
+    assert (elements["theme"]["class"], elements["source"]["class"]) == ("spoon", "fridge")
+
+
+def test_bench_parse_runs_the_scorer(shared_data: Path, tmp_path: Path) -> None:
+    scorers = shared_data.parent / "eval"
+    if not (scorers / "score_parse.py").is_file():
+        pytest.skip("the shared scorers are not here")
+    corpus = tmp_path / "tiny.jsonl"
+    corpus.write_text("\n".join(json.dumps(x) for x in [
+        {"text": "bring me the cup", "expect": [{"frame": "Bring|Give", "elements": {"recipient": "me"}}]},
+        {"text": "go to the kitchen", "expect": [{"frame": "Go", "elements": {"goal": "kitchen"}}]},
+    ]) + "\n", encoding="utf-8")
+    result = runner.invoke(app, ["bench", "parse", "--corpus", str(corpus), "--json"])
+    assert result.exit_code == 0, result.output
+    figures = json.loads(result.stdout)["corpora"][str(corpus)]
+    assert figures["n"] == 2 and figures["frames"] == 1.0 and figures["roles"] == 1.0
+
+
+@pytest.mark.parametrize(("content", "expected"), [
+    (b"\x84\x00binary", "is not UTF-8 text"),
+    (b"- a\n- b\n", ":1:1: not JSON"),
+    (b'{"text": "stir the cup"}\n{"text": oops}\n', ":2:10: not JSON"),
+    (b'{"text": "stir the cup"}\n[1, 2]\n', "each line must be a JSON object"),
+])
+def test_bench_parse_refuses_a_corpus_that_is_not_json_lines(tmp_path: Path, content: bytes, expected: str) -> None:
+    corpus = tmp_path / "bad.jsonl"
+    corpus.write_bytes(content)
+    for extra in ([], ["--json"]):
+        result = runner.invoke(app, ["bench", "parse", "--corpus", str(corpus), "--scorers", str(tmp_path), *extra])
+        assert result.exit_code == 1, result.output
+        assert f"error: {corpus}" in result.stderr and expected in result.stderr
+        assert "Traceback" not in result.output + result.stderr
+
+
+def test_bench_parse_reports_a_crashing_scorer_as_an_error(shared_data: Path, tmp_path: Path) -> None:
+    scorers = shared_data.parent / "eval"
+    if not (scorers / "score_parse.py").is_file():
+        pytest.skip("the shared scorers are not here")
+    corpus = tmp_path / "odd.jsonl"
+    corpus.write_text('{"foo": 1}\n', encoding="utf-8")
+    result = runner.invoke(app, ["bench", "parse", "--corpus", str(corpus)])
+    assert result.exit_code == 1, result.output
+    assert f"the scorer failed on {corpus}" in result.stderr and "Traceback" not in result.output + result.stderr

@@ -1,0 +1,103 @@
+"""The validator: a corpus of broken frame files, each with the problems it must report.
+
+Each file in ``tests/data/frames_bad`` starts with ``# expect: LINE: text`` (or ``// expect:``
+in the DSL) lines; validating the file together with the standard library must report exactly
+those problems, each on its line and containing its text.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from seal_cli.cli import app
+from seal_cli.frames.model import Element, Fact, Frame
+from seal_cli.frames.taxonomy import Taxonomy
+from seal_cli.frames.validation import check_library, validate_paths
+
+BAD = Path(__file__).parents[1] / "data" / "frames_bad"
+CASES = sorted(BAD.iterdir())
+EXPECT = re.compile(r"^(?:#|//) expect: (\d+): (.+)$", re.M)
+
+
+def expectations(path: Path) -> list[tuple[int, str]]:
+    return [(int(line), text.strip()) for line, text in EXPECT.findall(path.read_text())]
+
+
+def test_corpus_is_large_enough() -> None:
+    assert len(CASES) >= 30
+    assert all(expectations(p) for p in CASES)
+
+
+@pytest.mark.parametrize("path", CASES, ids=[p.stem for p in CASES])
+def test_each_broken_file_reports_its_problems(path: Path) -> None:
+    report = validate_paths([path], with_stdlib=True)
+    got = [(p.line, p.message) for p in report.problems]
+    want = expectations(path)
+    assert len(got) == len(want), got
+    for (line, message), (want_line, want_text) in zip(got, want, strict=True):
+        assert line == want_line, (message, want_text)
+        assert want_text in message
+    assert all(p.file == str(path) for p in report.problems)
+
+
+@pytest.mark.parametrize("path", CASES, ids=[p.stem for p in CASES])
+def test_cli_prints_file_line_column_and_exits_1(path: Path) -> None:
+    result = CliRunner().invoke(app, ["validate", "--stdlib", str(path)])
+    assert result.exit_code == 1
+    assert result.exception is None or isinstance(result.exception, SystemExit)
+    line = expectations(path)[0][0]
+    assert re.search(rf"^{re.escape(str(path))}:{line}:\d+: ", result.stdout, re.M), result.stdout
+    assert "Traceback" not in result.output
+
+
+def test_syntax_errors_show_the_line_with_a_caret() -> None:
+    result = CliRunner().invoke(app, ["validate", "--stdlib", str(BAD / "34_dsl_bad_character.frame")])
+    lines = result.stdout.splitlines()
+    index = next(i for i, text in enumerate(lines) if "unexpected '@'" in text)
+    assert lines[index + 1] == "  theme: @container"
+    assert lines[index + 2] == "         ^"
+
+
+def test_every_problem_is_listed_not_only_the_first(tmp_path: Path) -> None:
+    mixed = tmp_path / "mixed.yaml"
+    mixed.write_text("frame: Beat\nlexical_units: [beat]\nelements:\n  theme: {type: containr}\n"
+                     "actions: [stirr(theme)]\npreconditions: [stired(theme)]\n")
+    report = validate_paths([mixed, BAD / "12_unknown_category.yaml"], with_stdlib=True)
+    assert sorted((p.file, p.line) for p in report.problems) == sorted([
+        (str(BAD / "12_unknown_category.yaml"), 5), (str(mixed), 4), (str(mixed), 5), (str(mixed), 6)])
+
+
+def test_the_standard_library_is_clean(library) -> None:
+    from seal_cli.resources import framelib_dir
+
+    report = validate_paths([framelib_dir()])
+    assert report.problems == []
+    assert report.frames == 24
+
+
+def test_missing_path_is_a_problem(tmp_path: Path) -> None:
+    report = validate_paths([tmp_path / "nope.yaml"])
+    assert "no such file or folder" in report.problems[0].message
+
+
+def test_empty_folder_is_a_problem(tmp_path: Path) -> None:
+    report = validate_paths([tmp_path])
+    assert "no frame files" in report.problems[0].message
+
+
+def test_cycle_needs_every_achiever_inside_it() -> None:
+    taxonomy = Taxonomy.of({"thing": None})
+
+    def frame(name: str, needs: str, gives: str) -> Frame:
+        return Frame(name, elements=(Element("theme", "thing"),), preconditions=(Fact(needs, ("theme",)),),
+                     postconditions=(Fact(gives, ("theme",)),))
+
+    looped = [frame("Boil", "filled", "boiling"), frame("Fill", "boiling", "filled")]
+    assert any("cycle" in p.message for p in check_library(looped, taxonomy))
+    # A third frame that achieves `filled` without needing anything breaks the cycle.
+    escape = Frame("Pour", elements=(Element("theme", "thing"),), postconditions=(Fact("filled", ("theme",)),))
+    assert not any("cycle" in p.message for p in check_library([*looped, escape], taxonomy))

@@ -1,0 +1,31 @@
+"""``seal_cli.language.english``: the closed classes the tagger reads are well-formed word lists."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+import seal_cli.language.english as english
+
+
+def _tables() -> dict[str, Iterable[str]]:
+    return {name: value for name, value in vars(english).items()
+            if name.isupper() and isinstance(value, (frozenset, dict))}
+
+
+def test_every_entry_is_lowercase_words_without_stray_space() -> None:
+    tables = _tables()
+    assert {"DETERMINERS", "PREPOSITIONS", "POLITE", "TITLES", "SPELLINGS", "FILLERS"} <= set(tables)
+    for name, table in tables.items():
+        for entry in table:
+            assert entry == entry.strip() and entry == entry.lower() and "  " not in entry, (name, entry)
+
+
+def test_spellings_lead_to_words_not_to_other_spellings() -> None:
+    for written, meant in english.SPELLINGS.items():
+        assert meant not in english.SPELLINGS, (written, meant)
+        assert written != meant
+
+
+def test_number_words_count() -> None:
+    assert english.NUMBERS["three"] == 3 and english.NUMBERS["a couple of"] == 2
+    assert all(isinstance(n, int) and n >= 0 for n in english.NUMBERS.values())

@@ -1,0 +1,210 @@
+"""Grounding noun phrases in a vocabulary of object classes; vocabulary files."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from seal_cli.errors import SealError
+from seal_cli.frames.library import Library
+from seal_cli.language.grounding import Vocabulary, load_vocabulary, vocabulary_of_map
+from seal_cli.language.parser import parse_command
+
+ALFRED_LIKE = Vocabulary.of(["AlarmClock", "Apple", "CounterTop", "DiningTable", "SideTable", "ToiletPaper",
+                             "ToiletPaperRoll", "WineBottle", "SoapBottle", "KeyChain", "SoapBar", "Sink",
+                             "SinkBasin", "tomato soup", "Laptop", "Bathtub", "Chair", "Tomato", "Dresser",
+                             "Fridge", "Sofa", "GarbageCan", "Toilet"])
+
+
+def theme_class(text: str, library: Library, vocabulary: Vocabulary = ALFRED_LIKE) -> str | None:
+    return parse_command(f"find {text}", library, vocabulary).frames[0].elements["theme"].cls
+
+
+@pytest.mark.parametrize(("phrase", "cls"), [
+    ("the alarm clock", "AlarmClock"),        # exact, CamelCase split
+    ("two red alarm clocks", "AlarmClock"),   # plural, modifiers
+    ("the clock", "AlarmClock"),              # head word
+    ("the counter", "CounterTop"),            # another word of the class name
+    ("an apple slice", "Apple"),              # a modifier when the head is nothing known
+    ("a slice of apple", "Apple"),            # the "of" phrase
+    ("two rolls of toilet paper", "ToiletPaper"),   # an exact name beats a head word
+    ("a bottle of wine", "WineBottle"),       # head word helped by the other words
+    ("a set of keys", "KeyChain"),
+    ("a bar of soap", "SoapBar"),
+    ("the table", "DiningTable"),             # a tie: the class listed first
+    ("the sink", "Sink"),
+    ("some tomato soup", "tomato soup"),      # multiword class names
+    ("the zorblax", None),                    # open vocabulary: no class, no error
+    ("the lap top", "Laptop"),                # written apart: compared without separators
+    ("a bath tub", "Bathtub"),
+    ("the chair cushion", None),              # a compound is its head: a cushion, not a chair
+    ("the table top", "DiningTable"),         # a region of the modifier's thing
+    ("a tomato piece", "Tomato"),             # a portion of it
+    ("a set of keys", "KeyChain"),            # a group of what "of" names
+    ("the toilet tank", "Toilet"),            # a part of the modifier's thing
+    ("the fridge door", "Fridge"),
+    ("a chest of drawers", "Dresser"),        # a name with "of" in it (the library's synonyms)
+    ("the refrigerator", "Fridge"),           # the library's synonyms
+    ("the couch", "Sofa"),
+    ("a waste bin", "GarbageCan"),
+    ("the bin", "GarbageCan"),                # the head of a synonym ("trash bin"), like a class name's head
+])
+def test_noun_phrases_ground_to_classes(library: Library, phrase: str, cls: str | None) -> None:
+    assert theme_class(phrase, library) == cls
+
+
+def test_a_head_word_shared_by_several_classes_goes_to_the_first_listed(library: Library) -> None:
+    tables = ["DiningTable", "SideTable", "CoffeeTable"]
+    assert theme_class("the table", library, Vocabulary.of(tables)) == "DiningTable"
+    assert theme_class("the table", library, Vocabulary.of(tables[::-1])) == "CoffeeTable"
+    assert theme_class("the coffee table", library, Vocabulary.of(tables)) == "CoffeeTable"   # exact first
+    assert theme_class("the cushion", library, Vocabulary.of(["Chair", "Pillow"])) == "Pillow"   # a synonym
+
+
+def test_a_class_own_name_wins_over_another_class_synonym(library: Library) -> None:
+    vocab = Vocabulary.of(["SideTable", "nightstand", "Towel", "HandTowel"])
+    assert theme_class("the nightstand", library, vocab) == "nightstand"
+    assert theme_class("the bedside table", library, vocab) == "SideTable"   # the set's first class listed
+    assert theme_class("the towel", library, vocab) == "Towel"
+    own = Vocabulary.of(["fridge"], {"fridge": ["cold box"]})               # a file's synonyms add to the library's
+    assert theme_class("the cold box", library, own) == theme_class("the icebox", library, own) == "fridge"
+
+
+def test_the_library_synonyms_join_a_vocabulary_by_any_name_of_their_set() -> None:
+    vocab = Vocabulary.of(["refrigerator", "Couch"]).with_synonyms({"refrigerator": ("fridge",), "couch": ("sofa",)})
+    assert vocab.ground_words(["fridge"]) == "refrigerator"
+    assert vocab.ground_words(["sofas"]) == "Couch"
+    assert Vocabulary.of(["cup"]).with_synonyms({}).ground_words(["mug"]) is None
+
+
+def test_synonyms_and_names_compare_like_class_names() -> None:
+    vocab = Vocabulary.of(["Fridge", "coffee_machine"], {"Fridge": ["refrigerator", "ice box"]})
+    assert vocab.ground_words(["refrigerators"]) == "Fridge"
+    assert vocab.ground_words(["ice", "box"]) == "Fridge"
+    assert vocab.ground_words(["coffee", "machine"]) == "coffee_machine"
+    assert vocab.ground_words(["the"]) is None
+    assert Vocabulary.of(["cheezit"]).ground_words(["cheezits"]) == "cheezit"   # a plural nobody listed
+    assert len(Vocabulary.of(["cup", "cup", "Cup"])) == 2      # exact duplicates dropped, spelling kept
+
+
+def test_vocabulary_files(tmp_path: Path, library: Library) -> None:
+    path = tmp_path / "vocab.yaml"
+    path.write_text("- AlarmClock\n- {class: Fridge, synonyms: [refrigerator]}\n- counter top\n", encoding="utf-8")
+    vocab = load_vocabulary(path)
+    assert vocab.classes == ("AlarmClock", "Fridge", "counter top")
+    parse = parse_command("put the clock from the counter in the refrigerator", library, vocab)
+    place = parse.frames[0].elements
+    assert (place["theme"].cls, place["goal"].cls) == ("AlarmClock", "Fridge")
+    mapping = tmp_path / "mapping.yaml"
+    mapping.write_text("classes: [cup, plate]\n", encoding="utf-8")
+    assert load_vocabulary(mapping).classes == ("cup", "plate")
+
+
+@pytest.mark.parametrize(("content", "words"), [
+    ("cup: 1\n", "YAML list"),
+    ("[]\n", "no class"),
+    ("- {synonyms: [a]}\n", "entry 1"),
+    ("- {class: Fridge, synonyms: refrigerator}\n", "synonyms must be a list"),
+    ("- [a, b\n", "YAML syntax error"),
+])
+def test_bad_vocabulary_files_are_clear_errors(tmp_path: Path, content: str, words: str) -> None:
+    path = tmp_path / "bad.yaml"
+    path.write_text(content, encoding="utf-8")
+    with pytest.raises(SealError) as caught:
+        load_vocabulary(path)
+    assert words in str(caught.value) and str(path) in str(caught.value)
+
+
+def test_a_missing_vocabulary_file_is_an_error(tmp_path: Path) -> None:
+    with pytest.raises(SealError, match="no such file"):
+        load_vocabulary(tmp_path / "nope.yaml")
+
+
+def test_a_maps_classes_make_a_vocabulary() -> None:
+    class Thing:
+        def __init__(self, cls: str) -> None:
+            self.cls = cls
+
+    class FakeMap:
+        places = (Thing("fridge"), Thing("kitchen_table"))
+        objects = (Thing("cup"),)
+        priors = {"spoon": {}, "cup": {}}
+
+    vocab = vocabulary_of_map(FakeMap())
+    assert vocab.classes == ("fridge", "kitchen_table", "cup", "spoon")
+    assert vocab.ground_words(["kitchen", "tables"]) == "kitchen_table"
+
+
+SCENE = Vocabulary.of(["DiningTable", "CoffeeTable", "SideTable", "SinkBasin", "Sink", "BathtubBasin", "Bathtub",
+                       "DeskLamp", "FloorLamp", "HandTowel", "Towel", "Knife", "ButterKnife", "CounterTop", "CD"],
+                      {"CD": ["disc"]})
+
+
+@pytest.mark.parametrize(("present", "phrase", "cls"), [
+    (["SideTable", "SinkBasin"], "the table", "SideTable"),        # the one table the room has
+    (["CoffeeTable", "SideTable"], "the table", "CoffeeTable"),    # a tie: the vocabulary's order
+    (["SinkBasin", "Toilet"], "the sink", "SinkBasin"),            # only the basin: "sink" is the basin
+    (["Sink", "SinkBasin"], "the sink", "Sink"),                   # both: the exact name
+    (["BathtubBasin"], "the tub", "BathtubBasin"),                 # the whole's synonyms too
+    (["BathtubBasin"], "the bath", "BathtubBasin"),
+    (["FloorLamp", "SideTable"], "the lamp", "FloorLamp"),         # whichever lamp is there
+    (["DeskLamp", "SideTable"], "the lamp", "DeskLamp"),
+    (["HandTowel"], "a towel", "HandTowel"),                       # no exact class: the one whose head it is
+    (["HandTowel", "Towel"], "a towel", "Towel"),                  # an exact name first
+    (["ButterKnife", "Apple"], "a knife", "ButterKnife"),
+    (["CounterTop"], "the counter", "CounterTop"),                 # the whole of a part
+    (["CD"], "two CDs", "CD"),                                     # a short plural the dictionary lacks
+    (["CD"], "the discs", "CD"),                                   # the vocabulary's own synonyms survive
+    (["Apple"], "the table", None),                                # nothing present: no class
+])
+def test_a_scene_grounds_words_in_the_classes_it_has(library: Library, present: list[str], phrase: str,
+                                                     cls: str | None) -> None:
+    assert theme_class(phrase, library, SCENE.restricted_to(present)) == cls
+
+
+def test_restricted_keeps_the_vocabulary_order_and_the_given_spelling() -> None:
+    scene = SCENE.restricted_to(["side_table", "cd", "dining_table", "pineapple"])
+    assert scene.classes == ("dining_table", "side_table", "cd", "pineapple")   # unlisted classes last
+    assert scene.ground_words(["disc"]) == "cd" and scene.ground_words(["pineapple"]) == "pineapple"
+    assert SCENE.restricted_to([]).classes == ()
+
+
+def test_another_class_synonym_names_a_thing_only_by_its_head(library: Library) -> None:
+    # DeskLamp is also a "table lamp": that makes it a lamp, not a table
+    vocab = Vocabulary.of(["DeskLamp", "Desk"])
+    assert theme_class("the table", library, vocab) is None
+    assert theme_class("the table lamp", library, vocab) == "DeskLamp"
+    assert theme_class("the light", library, vocab) == "DeskLamp"                # "desk light": its head
+    assert theme_class("a lettuce head", library, Vocabulary.of(["Lettuce"])) == "Lettuce"   # "head of lettuce"
+
+
+def test_a_part_is_called_by_its_whole_only_when_the_whole_is_no_class(library: Library) -> None:
+    assert theme_class("the sink", library, Vocabulary.of(["SinkBasin"])) == "SinkBasin"
+    assert theme_class("the sink", library, Vocabulary.of(["SinkBasin", "Sink"])) == "Sink"
+    assert theme_class("the fridge", library, Vocabulary.of(["FridgeDoor", "Fridge"])) == "Fridge"
+    assert theme_class("the roll", library, Vocabulary.of(["PaperTowelRoll"])) == "PaperTowelRoll"
+    assert theme_class("the kitchen roll", library, Vocabulary.of(["PaperTowelRoll"])) == "PaperTowelRoll"
+
+
+def test_a_map_vocabulary_follows_the_same_rules(library: Library) -> None:
+    class Thing:
+        def __init__(self, cls: str) -> None:
+            self.cls = cls
+
+    class Kitchen:
+        places = (Thing("sink_basin"), Thing("side_table"))
+        objects = (Thing("butter_knife"), Thing("floor_lamp"))
+        priors: dict[str, dict[str, float]] = {}
+
+    parse = parse_command("put the knife on the table by the lamp", library, vocabulary_of_map(Kitchen()))
+    place = parse.frames[0].elements
+    assert (place["theme"].cls, place["goal"].cls) == ("butter_knife", "side_table")
+    assert theme_class("the sink", library, vocabulary_of_map(Kitchen())) == "sink_basin"
+
+
+def test_pieces_are_portions() -> None:
+    from seal_cli.language.grounding import PIECES, PORTIONS
+
+    assert PIECES <= PORTIONS
+    assert Vocabulary.of(["Apple"]).ground_words(["apple", "section"]) == "Apple"

@@ -1,0 +1,85 @@
+"""The planning problem from words: how many things a phrase asks for, coordinations."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from seal_cli.frames.library import Library
+from seal_cli.language.grounding import Vocabulary
+from seal_cli.planning.problem import problem_of_text
+
+VOCAB = Vocabulary.of(["Book", "KeyChain", "Apple", "Pear", "Desk", "Fridge", "Microwave", "ToiletPaper"])
+
+
+def themes(text: str, library: Library) -> list[str]:
+    problem = problem_of_text(text, library, vocabulary=VOCAB)
+    return [b.elements["theme"] for b in problem.commanded if b.frame.name == "Place"]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("put a book on the desk", ["book"]),
+    ("put two books on the desk", ["book", "book_2"]),
+    ("put the two books on the desk", ["book", "book_2"]),          # a number after "the"
+    ("put the books on the desk", ["book", "book_2"]),              # a plural: at least two
+    ("put both books on the desk", ["book", "book_2"]),
+    ("put the keys on the desk", ["key_chain"]),                    # "keys" names a key chain, not its head
+    ("put two sets of keys on the desk", ["key_chain", "key_chain_2"]),   # groups are counted
+    ("put two rolls of toilet paper on the desk", ["toilet_paper", "toilet_paper_2"]),
+    ("put two slices of apple in the microwave", ["apple"]),        # pieces of one apple, sliced
+    ("put the apple and the pear in the fridge", ["apple", "pear"]),     # every conjunct
+    ("put the apple and two pears in the fridge", ["apple", "pear", "pear_2"]),
+])
+def test_how_many_things_a_phrase_asks_for(library: Library, text: str, expected: list[str]) -> None:
+    assert themes(text, library) == expected
+
+
+def test_pieces_are_cut_from_one_whole(library: Library) -> None:
+    problem = problem_of_text("put two slices of apple in the microwave", library, vocabulary=VOCAB)
+    assert [str(b) for b in problem.commanded] == ["Slice(theme=apple, instrument=knife)",
+                                                   "Place(theme=apple, goal=microwave)"]
+
+
+def test_a_pronoun_for_a_coordination_is_all_of_it(library: Library) -> None:
+    problem = problem_of_text("pick up the apple and the pear and put them in the fridge", library, vocabulary=VOCAB)
+    assert [str(b) for b in problem.commanded if b.frame.name == "Place"] == [
+        "Place(theme=apple, goal=fridge)", "Place(theme=pear, goal=fridge)"]
+
+
+@pytest.mark.parametrize("command", [["plan", "stir the cup"], ["localize", "--map", "apartment", "--steps", "1",
+                                                                 "--task", "stir the cup"],
+                                     ["run", "--map", "apartment", "stir the cup"]])
+def test_holding_what_no_class_is_called_names_the_option(tmp_path: Path, command: list[str]) -> None:
+    from typer.testing import CliRunner
+
+    from seal_cli.cli import app
+
+    png = tmp_path / "x.png"
+    extra = ["--png", str(png)] if command[0] != "plan" else ["--pddl", str(tmp_path)]
+    result = CliRunner().invoke(app, [*command, "--holding", "@@", *extra])
+    assert result.exit_code == 1, result.output
+    assert "holding '@@' is not a class name" in result.stderr and "Traceback" not in result.stderr
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_maps_rooms_and_places_are_not_objects_to_handle(library: Library) -> None:
+    """The map's places are fixed furniture and receptacles: "pick up the sofa" is refused, with a
+    caret under the phrase; objects on them and the places as goals are fine."""
+    from seal_cli.errors import SealError
+    from seal_cli.maps.model import load_map
+    from seal_cli.resources import map_path
+
+    apartment = load_map(map_path("apartment"))
+    for text, frame, said in [("pick up the dining table", "Pick", "'the dining table' (dining_table_1)"),
+                              ("clean the sofa", "Clean", "'the sofa' (sofa_1)"),
+                              ("bring the kitchen to me", "Bring", "'the kitchen' (kitchen)")]:
+        with pytest.raises(SealError, match=f"{frame} needs its theme to be an object the robot can handle") \
+                as caught:
+            problem_of_text(text, library, map=apartment)
+        assert said in str(caught.value) and "is fixed in the map" in str(caught.value)
+        assert caught.value.column == text.index("the") + 1
+    problem = problem_of_text("bring the cup to the sofa", library, map=apartment)
+    assert [str(b) for b in problem.commanded] == ["Bring(theme=cup, goal=sofa_1)"]
+    assert [str(b) for b in problem_of_text("clean the table", library).commanded] == [
+        "Clean(theme=table, instrument=sink)"]          # without a map, nothing says the table is fixed

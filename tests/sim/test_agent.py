@@ -1,0 +1,127 @@
+"""The SeFM agent on a tiny kitchen: it plans, searches, opens what hides things, acts, and replans."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from seal_cli.bench.alfred2d import Task, judge
+from seal_cli.frames.library import Library
+from seal_cli.planning.state import State
+from seal_cli.sim.agent import Agent, Budget, Record, chain_preconditions
+from seal_cli.sim.policies.sefm import SeFMPolicy
+from tests.scenes import kitchen
+
+
+def run(library: Library, commands: list[tuple[str, dict[str, str]]], **scene: object):  # type: ignore[no-untyped-def]
+    s = kitchen(library, **scene)  # type: ignore[arg-type]
+    heard: list[Record] = []
+    agent = Agent(s, library, SeFMPolicy(particles=100), rng=np.random.default_rng(1), observers=[heard.append])
+    result = agent.run([library.frame(f).bind(v) for f, v in commands])
+    return s, agent, result, heard
+
+
+def test_finds_the_apple_in_the_fridge_heats_it_and_puts_it_on_the_table(library: Library) -> None:
+    s, agent, result, heard = run(library, [("Heat", {"theme": "apple"}),
+                                            ("Place", {"theme": "apple", "goal": "dining_table"})])
+    assert result.completed, result.reason
+    assert judge(Task("pick_heat_then_place_in_recep", "Apple", "DiningTable"), s.world).success
+    assert result.plan[0] == "Pick(theme=apple)"
+    acts = [r.text for r in heard if r.kind == "act"]
+    assert any(t.startswith("opened fridge_1") for t in acts)   # looked where apples usually are
+    assert acts.index(next(t for t in acts if t.startswith("opened fridge_1"))) < acts.index(
+        next(t for t in acts if t.startswith("picked up apple_1")))
+    assert result.path_m == pytest.approx(s.world.robot.path_m) and result.path_m > 0
+    assert heard == result.records
+
+
+def test_apple_on_the_counter_is_found_without_opening_the_fridge_first_when_seen(library: Library) -> None:
+    s, agent, result, heard = run(library, [("Pick", {"theme": "apple"})], apple_in="counter_1")
+    assert result.completed and s.world.robot.holding == "apple_1"
+
+
+def test_slice_picks_the_knife_first_and_puts_it_down_to_take_the_apple(library: Library) -> None:
+    s, agent, result, _ = run(library, [("Slice", {"theme": "apple"}), ("Place", {"theme": "apple", "goal": "mug"})],
+                              apple_in="counter_1")
+    assert result.completed, result.reason
+    assert s.world.has("apple_1", "sliced") and s.world.items["apple_1"].parent == "mug_1"
+    assert s.world.items["knife_1"].parent not in (None, "@hand")
+
+
+def test_gives_up_when_the_thing_does_not_exist(library: Library) -> None:
+    s, agent, result, heard = run(library, [("Pick", {"theme": "pineapple"})])
+    assert not result.completed and "pineapple" in result.reason
+    assert heard[-1].kind == "give_up"
+    assert result.path_m == 0.0 and "cannot recognise" in result.reason   # no class of the scene: no search
+    s = kitchen(library)
+    s.vocabulary = ()                      # perception that knows every class: it searches, in vain
+    blind = Agent(s, library, SeFMPolicy(particles=50), rng=np.random.default_rng(1)).run(
+        [library.frame("Pick").bind({"theme": "pineapple"})])
+    assert not blind.completed and "searched everywhere" in blind.reason and blind.path_m > 0
+
+
+def test_budget_stops_the_search(library: Library) -> None:
+    s = kitchen(library, apple_in="cabinet_1")
+    agent = Agent(s, library, SeFMPolicy(particles=50), rng=np.random.default_rng(0), budget=Budget(steps=3))
+    result = agent.run([library.frame("Pick").bind({"theme": "apple"})])
+    assert not result.completed and "out of steps" in result.reason
+
+
+def test_same_seed_same_run(library: Library) -> None:
+    a = run(library, [("Pick", {"theme": "apple"})], apple_in="cabinet_1")[2]
+    b = run(library, [("Pick", {"theme": "apple"})], apple_in="cabinet_1")[2]
+    assert [r.text for r in a.records] == [r.text for r in b.records] and a.path_m == b.path_m
+
+
+def test_uniform_prior_searches_longer_than_the_informed_one(library: Library) -> None:
+    informed = run(library, [("Pick", {"theme": "apple"})])[2]
+    s = kitchen(library)
+    blind = Agent(s, library, SeFMPolicy(particles=100, priors=False), rng=np.random.default_rng(1)).run(
+        [library.frame("Pick").bind({"theme": "apple"})])
+    assert informed.completed and blind.completed
+    assert informed.path_m <= blind.path_m
+
+
+def test_stand_in_planner_chains_preconditions(library: Library) -> None:
+    state = State.of([], library.taxonomy)
+    from seal_cli.frames.model import Fact
+
+    state = State.of([Fact("hand_empty")], library.taxonomy, closable={"fridge"})
+    steps = chain_preconditions([library.frame("Place").bind({"theme": "egg", "goal": "fridge"})], library, state)
+    assert [str(b) for b in steps] == ["Pick(theme=egg)", "Open(theme=fridge)", "Place(theme=egg, goal=fridge)"]
+
+
+def test_find_searches_until_seen_and_rooms_are_places_to_go(library: Library) -> None:
+    s, agent, result, heard = run(library, [("Find", {"theme": "mug"})])
+    assert result.completed and "mug_1" in agent.known
+    assert heard[-1].kind == "done" and any(r.kind == "act" and "sees mug_1" in r.text for r in heard)
+    s, agent, result, _ = run(library, [("Go", {"goal": "kitchen"})])
+    assert result.completed and s.map.room_of([s.world.robot.pose[:2]]) == ["kitchen"]
+
+
+def test_a_thing_put_somewhere_is_taken_again_when_the_command_names_it_again(library: Library) -> None:
+    # "move the apple to the fridge, chill it, move it to the table": the same apple all along
+    s, agent, result, _ = run(library, [("Place", {"theme": "apple", "goal": "fridge"}),
+                                        ("Cool", {"theme": "apple"}),
+                                        ("Place", {"theme": "apple", "goal": "dining_table"})], apple_in="counter_1")
+    assert result.completed, result.reason
+    assert s.world.has("apple_1", "cold") and s.world.items["apple_1"].parent == "table_1"
+
+
+def test_a_thing_put_on_what_holds_nothing_goes_where_that_is(library: Library) -> None:
+    # "put the apple by the knife": the knife lies on the counter, so the apple goes on the counter
+    s, agent, result, heard = run(library, [("Place", {"theme": "apple", "goal": "knife"})], apple_in="table_1")
+    assert result.completed, result.reason
+    assert s.world.items["apple_1"].parent == "counter_1"
+    assert any(r.kind == "fail" and "where knife_1 is, on counter_1" in r.text for r in heard)
+
+
+def test_a_thing_set_down_to_free_the_hand_is_found_where_it_was_put(library: Library) -> None:
+    # chill the apple, then slice it: the apple is set down to take the knife, and sliced there
+    s, agent, result, _ = run(library, [("Cool", {"theme": "apple"}), ("Slice", {"theme": "apple"}),
+                                        ("Place", {"theme": "apple", "goal": "dining_table"})])
+    assert result.completed, result.reason
+    assert s.world.has("apple_1", "cold") and s.world.has("apple_1", "sliced")
+    assert s.world.items["apple_1"].parent == "table_1"
+    put = agent.known["apple_1"]
+    assert put.parent == "table_1" and put.at == s.world.items["apple_1"].at

@@ -1,0 +1,130 @@
+"""The household simulator: physical preconditions, hidden contents, states, sight, the log."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from seal_cli.errors import SealError
+from seal_cli.frames.library import Library
+from seal_cli.sim.world import HAND, Item, Robot, Sensor, World
+
+
+def kitchen(library: Library, **robot: object) -> World:
+    items = [
+        Item("fridge_1", "fridge", (3.0, 0.0), movable=False, openable=True, access=((2.0, 0.0),)),
+        Item("counter_1", "counter_top", (0.0, 1.0), movable=False, receptacle=True),
+        Item("microwave_1", "microwave", (0.0, -1.0), movable=False, openable=True, toggleable=True),
+        Item("sink_1", "sink_basin", (-1.0, 0.0), movable=False, receptacle=True),
+        Item("lamp_1", "desk_lamp", (6.0, 0.0), movable=False, toggleable=True),
+        Item("apple_1", "apple", (3.0, 0.1), parent="fridge_1"),
+        Item("knife_1", "knife", (0.2, 1.0), parent="counter_1"),
+        Item("pan_1", "pan", (-0.2, 1.0), receptacle=True, parent="counter_1"),
+    ]
+    return World(items, Robot(pose=(0.0, 0.0, 0.0), **robot), taxonomy=library.taxonomy,  # type: ignore[arg-type]
+                 reach=1.5, sensor=Sensor(range=3.0))
+
+
+def goto(world: World, x: float, y: float) -> None:
+    world.drive([(x, y)])
+
+
+def test_closed_fridge_hides_and_blocks_until_opened(library: Library) -> None:
+    world = kitchen(library)
+    goto(world, 2.0, 0.0)
+    assert "apple_1" not in {d.id for d in world.observe()}
+    failed = world.act("pick", "apple_1")
+    assert not failed and "closed" in failed.message and world.robot.holding is None
+    assert world.act("open", "fridge_1")
+    assert "apple_1" in {d.id for d in world.observe()}
+    assert world.act("pick", "apple_1") and world.robot.holding == "apple_1"
+    assert world.items["apple_1"].parent == HAND
+
+
+def test_reach_hand_and_receptacles(library: Library) -> None:
+    world = kitchen(library)
+    goto(world, 5.0, 0.0)
+    far = world.act("pick", "knife_1")
+    assert not far and "out of reach" in far.message
+    goto(world, 0.0, 0.5)
+    assert world.act("pick", "knife_1")
+    busy = world.act("pick", "pan_1")
+    assert not busy and "not empty" in busy.message
+    closed = world.act("place", "knife_1", "microwave_1")
+    assert not closed and "closed" in closed.message
+    assert not world.act("place", "knife_1", "knife_1")
+    assert world.act("place", "knife_1", "pan_1")
+    assert world.items["knife_1"].parent == "pan_1" and world.robot.holding is None
+    assert world.act("pick", "pan_1")
+    assert world.held_chain("knife_1")  # the knife rides in the pan
+    assert world.position("knife_1") == world.robot.pose[:2]
+
+
+def test_slice_needs_a_held_knife_and_states_change(library: Library) -> None:
+    world = kitchen(library)
+    goto(world, 2.0, 0.0)
+    world.act("open", "fridge_1")
+    world.act("pick", "apple_1")
+    assert not world.act("slice", "apple_1", "knife_1")
+    goto(world, 0.0, 0.5)
+    assert world.act("place", "apple_1", "counter_1")
+    no_knife = world.act("slice", "apple_1", "knife_1")
+    assert not no_knife and "hold" in no_knife.message
+    world.act("pick", "knife_1")
+    assert not world.act("slice", "apple_1", "pan_1")
+    assert world.act("slice", "apple_1", "knife_1") and world.has("apple_1", "sliced")
+    world.act("place", "knife_1", "counter_1")
+    world.act("pick", "apple_1")
+    assert not world.act("heat", "apple_1", "sink_1")  # a sink is not a heater
+    assert world.act("heat", "apple_1", "microwave_1") and world.has("apple_1", "hot")
+    t_hot = world.since("apple_1", "hot")
+    goto(world, 2.0, 0.0)
+    assert world.act("cool", "apple_1", "fridge_1")
+    assert world.has("apple_1", "cold") and not world.has("apple_1", "hot")
+    assert world.since("apple_1", "cold") > t_hot > world.since("apple_1", "sliced")
+
+
+def test_toggles_and_lamps(library: Library) -> None:
+    world = kitchen(library)
+    goto(world, 5.0, 0.0)
+    assert not world.act("toggle_on", "fridge_1")
+    assert world.act("toggle_on", "lamp_1") and world.has("lamp_1", "on")
+    assert world.act("toggle_off", "lamp_1") and not world.has("lamp_1", "on")
+
+
+def test_sensor_range_and_field_of_view() -> None:
+    sensor = Sensor(range=2.0, fov=90.0)
+    points = np.array([[1.0, 0.0], [3.0, 0.0], [-1.0, 0.0], [1.0, 0.9]])
+    assert sensor.visible((0.0, 0.0, 0.0), points).tolist() == [True, False, False, True]
+    blind = Sensor(range=5.0, blocked=lambda pose, pts: pts[:, 0] > 2.0)
+    assert blind.visible((0.0, 0.0, 0.0), np.array([[1.0, 0.0], [3.0, 0.0]])).tolist() == [True, False]
+
+
+def test_drive_counts_metres_and_log_keeps_order(library: Library) -> None:
+    world = kitchen(library)
+    assert world.drive([(1.0, 0.0), (1.0, 2.0)]) == pytest.approx(3.0)
+    assert world.robot.path_m == pytest.approx(3.0)
+    world.act("open", "fridge_1")
+    world.act("pick", "knife_1")
+    assert [e.action for e in world.log] == ["open", "pick"]
+    assert world.log[0].step < world.log[1].step
+
+
+def test_bad_worlds_and_actions(library: Library) -> None:
+    with pytest.raises(SealError, match="two items"):
+        World([Item("a", "apple", (0, 0)), Item("a", "pear", (1, 1))])
+    with pytest.raises(SealError, match="not in the world"):
+        World([Item("a", "apple", (0, 0), parent="nowhere")])
+    world = kitchen(library)
+    with pytest.raises(SealError, match="unknown primitive"):
+        world.act("teleport", "apple_1")
+    with pytest.raises(SealError, match="takes 1"):
+        world.act("pick", "apple_1", "knife_1")
+    assert not world.act("pick", "unicorn_1")
+    assert not world.act("approach", "roger")  # no people in this world
+
+
+def test_robot_may_start_holding(library: Library) -> None:
+    world = kitchen(library, holding="knife_1")
+    assert world.items["knife_1"].parent == HAND
+    assert not world.act("pick", "pan_1")
