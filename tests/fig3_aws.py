@@ -1,10 +1,10 @@
 """The paper's Fig. 3 on the AWS small house, over many seeds: ``python -m tests.fig3_aws --seeds 10``.
 
-For each room layout of :data:`tests.sefm_houses.AWS_LAYOUTS` and each start pose, prints what the
+For each room layout of :data:`seal_cli.bench.houses.AWS_LAYOUTS` and each start pose, prints what the
 robot sees of the prior rooms, the masses the target itself gives Stir(cup) (integrated on the
 free cells, without particles: the model's own answer), and the smallest and largest particle
 estimates over the seeds of what Fig. 3 asks (``seal localize`` as a user runs it); then, along
-:data:`~tests.sefm_houses.AWS_TRAJECTORY`, the farthest any object's or frame's best point ends
+:data:`~seal_cli.bench.houses.AWS_TRAJECTORY`, the farthest any object's or frame's best point ends
 from its object. A hand-run benchmark (about a minute); the test suite runs three seeds.
 """
 
@@ -19,6 +19,7 @@ from typing import Any
 import numpy as np
 from typer.testing import CliRunner
 
+from seal_cli.bench.houses import AWS_OBJECTS, AWS_TRAJECTORY, aws_house
 from seal_cli.cli import app
 from seal_cli.cli.localize_cmd import _plan
 from seal_cli.frames.library import Library, load_library
@@ -27,7 +28,6 @@ from seal_cli.sefm.filter import SeFM
 from seal_cli.sefm.potentials import GridKernelSums
 from seal_cli.sensing.sensor import visible_region
 from tests.conftest import DATA
-from tests.sefm_houses import AWS_OBJECTS, AWS_TRAJECTORY, aws_house
 
 FIG3 = ["grasp the cup", "grasp the spoon", "stir the cup"]
 STARTS = [("wings", (1.0, 4.0, 0.0)), ("wings", (1.5, -4.0, 0.0)), ("wings", (-6.0, -3.5, 0.0)),

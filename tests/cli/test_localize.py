@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
+from seal_cli.bench.houses import AWS_LAYOUTS, AWS_OBJECTS, AWS_TRAJECTORY, aws_house
 from seal_cli.cli import app
-from tests.sefm_houses import AWS_LAYOUTS, AWS_OBJECTS, AWS_TRAJECTORY, aws_house
 
 runner = CliRunner()
 FIG3 = ["--task", "grasp the cup", "--task", "grasp the spoon", "--task", "stir the cup"]

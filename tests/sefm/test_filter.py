@@ -10,6 +10,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from seal_cli.bench.houses import SECOND_HOUSE_TRAJECTORY, aws_house, second_house
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding, Fact
 from seal_cli.maps.model import Map, ObjectTruth, Place, Robot, Room, Sensor
@@ -18,7 +19,6 @@ from seal_cli.planning.state import State, robot_facts
 from seal_cli.sefm.filter import SeFM, SeFMConfig, frame_id
 from seal_cli.sefm.modes import room_masses
 from seal_cli.sensing.sensor import simulate_detections
-from tests.sefm_houses import SECOND_HOUSE_TRAJECTORY, aws_house, second_house
 
 SEEDS = range(5)
 

@@ -1,4 +1,4 @@
-"""Houses for the SeFM tests, drawn in code: walls around box rooms with doorways, the paper's priors.
+"""Houses for the SeFM tests and benchmarks, drawn in code: walls around box rooms with doorways, the paper's priors.
 
 :func:`second_house` is set up like the paper's Gazebo study (five rooms; cups half in the family
 room, half in the bedroom; spoons half in the kitchen, half in the bedroom) but drawn differently
@@ -96,7 +96,8 @@ AWS_TRAJECTORY = [(1.5, -4.0), (4.0, -3.0), (6.5, -2.5), (7.5, -3.5), (6.5, -2.0
 
 
 def aws_house(folder: Path, data: Path, layout: str, robot: tuple[float, float, float]) -> Path:
-    """Write an annotated map of the AWS house into ``folder`` (the image stays where the shared data is)."""
+    """Write an annotated map of the AWS house into ``folder`` (the image stays where the shared data is:
+    ``data`` is the shared data folder, ``../shared/data`` from a checkout)."""
     doc = {"image": str((data / "maps" / "aws_small_house" / "map.pgm").resolve()), "resolution": 0.05,
            "origin": [-12.5, -12.5, 0.0], "negate": 0, "occupied_thresh": 0.65, "free_thresh": 0.196,
            "name": f"aws_{layout}", "rooms": [{"name": n, "box": list(b)} for n, b in AWS_LAYOUTS[layout].items()],
