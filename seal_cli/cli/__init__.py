@@ -111,7 +111,7 @@ def _register() -> None:
         importlib.import_module(f"{__name__}.{module}")
 
 
-COMMAND_ORDER = ("parse_cmd", "plan_cmd", "localize_cmd", "run_cmd", "library_cmd", "map_cmd")
+COMMAND_ORDER = ("parse_cmd", "plan_cmd", "localize_cmd", "run_cmd", "library_cmd", "map_cmd", "bag_cmd")
 """The order commands appear in ``seal --help``: the pipeline first, then the tools."""
 
 

@@ -28,6 +28,7 @@ run gives the same content. Read a file back with ``rr.chunk.RrdReader(path).str
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -48,8 +49,9 @@ DETECTION = (255, 127, 14)
 class RerunRecorder:
     """Observer that writes a ``.rrd`` recording of a run to ``path`` (see the module docstring)."""
 
-    def __init__(self, path: str | Path, application_id: str = "seal_localize") -> None:
+    def __init__(self, path: str | Path, application_id: str = "seal_localize", stamps: Sequence[float] = ()) -> None:
         self.path = Path(path)
+        self.stamps = tuple(stamps)
         self.application_id = application_id
         self.stream: Any = None
         self.trail: list[tuple[float, float]] = []
