@@ -19,7 +19,8 @@ __all__ = ["observations_text"]
 
 
 def _number(v: float) -> str:
-    return repr(round(float(v), 4))
+    """The shortest text that reads back as the same float: the file gives the same beliefs as the bag."""
+    return repr(float(v))
 
 
 def observations_text(run: Run, source: str, frame: str) -> str:
