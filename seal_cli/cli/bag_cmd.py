@@ -22,6 +22,8 @@ def import_bag(
                                                 show_default=False),
     frame: str = typer.Option("map", "--frame", help="The map's TF frame: poses and detections are carried into it."),
     base_frame: str = typer.Option("base_link", "--base-frame", help="The robot's TF frame."),
+    labels: Path | None = typer.Option(None, "--labels", help="YAML {id: class} or [class, ...] naming numeric "
+                                       "class ids (ROS 1 vision_msgs, COCO ids).", show_default=False),
 ) -> None:
     """Read a bag's robot poses and detections into observations YAML (one entry per detection message)."""
     from seal_cli.errors import SealError, Where
@@ -31,7 +33,11 @@ def import_bag(
 
     if output.resolve() == bag.resolve():
         raise SealError(f"-o {output} is the bag itself: give another file", Where(str(output)))
-    run = read_run(bag, pose_topic=pose_topic, detections_topic=detections_topic, frame=frame, base_frame=base_frame)
+    from seal_cli.ros.labels import read_labels
+
+    names = read_labels(labels) if labels is not None else None
+    run = read_run(bag, pose_topic=pose_topic, detections_topic=detections_topic, frame=frame, base_frame=base_frame,
+                   labels=names)
     atomic_write_text(output, observations_text(run, str(bag), frame))
     skipped = f" ({run.skipped} outside the poses' time span skipped)" if run.skipped else ""
     err.print(f"wrote {output}: {len(run.observations)} observations from {run.detections_topic}{skipped}, poses "

@@ -46,12 +46,15 @@ def show(result: dict[str, Any]) -> None:
         out.print(objects)
 
 
-def _read_bag(bag: Path, pose_topic: str | None, detections_topic: str | None, frame: str,
-              base_frame: str) -> tuple[list[Observation], tuple[float, ...]]:
+def _read_bag(bag: Path, pose_topic: str | None, detections_topic: str | None, frame: str, base_frame: str,
+              labels: Path | None) -> tuple[list[Observation], tuple[float, ...]]:
     from seal_cli.cli import err
     from seal_cli.ros.bags import TOLERANCE, read_run
+    from seal_cli.ros.labels import read_labels
 
-    run = read_run(bag, pose_topic=pose_topic, detections_topic=detections_topic, frame=frame, base_frame=base_frame)
+    names = read_labels(labels) if labels is not None else None
+    run = read_run(bag, pose_topic=pose_topic, detections_topic=detections_topic, frame=frame, base_frame=base_frame,
+                   labels=names)
     err.print(f"{bag}: {len(run.observations)} detection messages on {run.detections_topic}, poses from "
               f"{run.pose_source}", markup=False)
     if run.skipped:
@@ -88,6 +91,8 @@ def localize(
     frame: str = typer.Option("map", "--frame", help="With --bag: the map's TF frame (poses and detections are "
                               "carried into it); also the frame of --goals."),
     base_frame: str = typer.Option("base_link", "--base-frame", help="With --bag: the robot's TF frame."),
+    labels: Path | None = typer.Option(None, "--labels", help="With --bag: YAML {id: class} or [class, ...] naming "
+                                       "numeric class ids (ROS 1 vision_msgs, COCO ids).", show_default=False),
     goals: Path | None = typer.Option(None, "--goals", help="Write per frame the pose to act from: YAML (.yaml) or "
                                       "geometry_msgs/PoseStamped on /goal_pose in a bag (.bag, .mcap, a folder).",
                                       show_default=False),
@@ -118,8 +123,8 @@ def localize(
     if len(given) > 1:
         raise SealError(f"give one of --trajectory (simulated detections), --observations or --bag (real ones), "
                         f"not {' and '.join(given)}")
-    if bag is None and (pose_topic or detections_topic):
-        raise SealError("--pose-topic and --detections-topic read a bag: give --bag too")
+    if bag is None and (pose_topic or detections_topic or labels):
+        raise SealError("--pose-topic, --detections-topic and --labels read a bag: give --bag too")
     if goals is not None:
         from seal_cli.ros.goals import check_goals_path
 
@@ -133,7 +138,7 @@ def localize(
     elif observations is not None:
         runs = read_observations(observations)
     elif bag is not None:
-        runs, stamps = _read_bag(bag, pose_topic, detections_topic, frame, base_frame)
+        runs, stamps = _read_bag(bag, pose_topic, detections_topic, frame, base_frame, labels)
     check_inside(runs, the_map.bounds, the_map.name)
     bindings, state = frames_to_localise(tasks or [], library, the_map, holding=holding, done=done or [])
     if goals is not None and not bindings:

@@ -27,7 +27,7 @@ restart, or sim and wall time mixed), an error naming the message. Every problem
 from __future__ import annotations
 
 import contextlib
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -43,6 +43,8 @@ from seal_cli.sensing.observations import Observation
 __all__ = ["JUMP", "TOLERANCE", "Grid", "Run", "bag_topics", "read_occupancy_grid", "read_run"]
 
 Array = NDArray[np.float64]
+Look = list[tuple[str, str, tuple[float, float, float]]]
+"""One message's detections: (class, frame, position in that frame)."""
 
 TOLERANCE = 0.5
 """How far (s) outside the poses' span a detection may be and still be placed (at the nearest pose)."""
@@ -245,11 +247,11 @@ def _class_of(hypothesis: Any) -> str:
     return str(inner.class_id if inner is not None else hypothesis.id).strip()
 
 
-def _detections(bag: _Bag, topic: str) -> tuple[list[float], list[list[tuple[str, str, tuple[float, float, float]]]]]:
+def _detections(bag: _Bag, topic: str, labels: Mapping[str, str]) -> tuple[list[float], list[Look]]:
     """Per message: its stamp and its detections as (class, frame, position in that frame)."""
     three_d = bag.topics[topic].endswith("3DArray")
     stamps: list[float] = []
-    looks: list[list[tuple[str, str, tuple[float, float, float]]]] = []
+    looks: list[Look] = []
     for i, logged, message in bag.messages(topic):
         stamps.append(_stamp(message.header, logged))
         seen = []
@@ -258,6 +260,7 @@ def _detections(bag: _Bag, topic: str) -> tuple[list[float], list[list[tuple[str
                 continue  # a box with no hypothesis names no class
             best = _best(det.results)
             cls = _class_of(best)
+            cls = labels.get(cls, cls)
             frame = _frame(det.header.frame_id or message.header.frame_id)
             if not cls:
                 raise bag.error(f"detection {j + 1} of message {i + 1} on {topic} has an empty class id")
@@ -292,12 +295,13 @@ def _choose(bag: _Bag, given: str | None, types: Sequence[str], what: str, optio
 
 
 def read_run(path: str | Path, *, pose_topic: str | None = None, detections_topic: str | None = None,
-             frame: str = "map", base_frame: str = "base_link") -> Run:
+             frame: str = "map", base_frame: str = "base_link", labels: Mapping[str, str] | None = None) -> Run:
     """The run in a bag, as observations in ``frame`` (see the module docstring).
 
     ``pose_topic``: a pose topic, or ``/tf`` for the transforms; by default ``/tf`` when it links
     ``frame`` to ``base_frame``, else the bag's only pose topic. ``detections_topic``: by default
-    the bag's only vision_msgs detection array topic.
+    the bag's only vision_msgs detection array topic. ``labels``: class id → class name
+    (:mod:`seal_cli.ros.labels`), for detectors that name classes by number.
     """
     frame = _frame(frame)
     with _open(path) as bag:
@@ -314,12 +318,12 @@ def read_run(path: str | Path, *, pose_topic: str | None = None, detections_topi
             source = _choose(bag, source, POSE_TYPES, "robot pose", "--pose-topic")
         topic = _choose(bag, detections_topic, DETECTION_TYPES, "detection", "--detections-topic")
         robot = None if source == "/tf" else _pose_track(bag, source, base_frame)
-        stamps, looks = _detections(bag, topic)
+        stamps, looks = _detections(bag, topic, labels or {})
         return _place(bag, tree, robot, source, topic, frame, base_frame, stamps, looks)
 
 
 def _place(bag: _Bag, tree: TfTree, robot: Track | None, source: str, topic: str, frame: str, base_frame: str,
-           stamps: list[float], looks: list[list[tuple[str, str, tuple[float, float, float]]]]) -> Run:
+           stamps: list[float], looks: list[Look]) -> Run:
     """Each detection message at the robot's pose at its stamp, its detections carried into ``frame``."""
     s = np.asarray(stamps, float)
     try:
@@ -346,7 +350,7 @@ def _place(bag: _Bag, tree: TfTree, robot: Track | None, source: str, topic: str
 
 
 def _in_frame(bag: _Bag, tree: TfTree, frame: str, stamps: Array,
-              looks: list[list[tuple[str, str, tuple[float, float, float]]]],
+              looks: list[Look],
               placed: NDArray[np.bool_]) -> dict[int, tuple[tuple[str, tuple[float, float]], ...]]:
     """Every placed message's detections as (class, (x, y)) in ``frame``: one lookup per detection frame."""
     rows = [(k, cls, source, p) for k, look in enumerate(looks) if placed[k] for cls, source, p in look]

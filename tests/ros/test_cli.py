@@ -34,12 +34,14 @@ def poses(n: int = 50) -> list[tuple[float, float, float, float]]:
 
 
 def kitchen_run(path: Path) -> Path:
-    """Detections every second; the spoon seen (in base_link) once the robot is within 5 m of it."""
+    """Detections every second; the spoon seen (in base_link) once the robot is within 5 m of it (in a ROS 1
+    bag, as class id 44, COCO's spoon)."""
     track = poses()
     looks = []
     for t, x, y, _ in track[::5]:
         near = (8.3 - x) ** 2 + (-4.1 - y) ** 2 < 4.5 ** 2
-        looks.append((t + 0.1, "base_link", [("spoon", 8.3 - x, -4.1 - y, 0.9)] if near else []))
+        spoon = 44 if path.suffix == ".bag" else "spoon"
+        looks.append((t + 0.1, "base_link", [(spoon, 8.3 - x, -4.1 - y, 0.9)] if near else []))
     return write_run(path, track, looks, pose_source="tf")
 
 
@@ -55,9 +57,9 @@ def localize(*args: str) -> dict[str, Any]:
 
 @pytest.mark.parametrize("name", ["run.mcap", "run.bag"])
 def test_localize_from_a_bag_believes_what_it_saw(tmp_path: Path, name: str) -> None:
-    if name.endswith(".bag"):
-        pytest.skip("ROS 1 vision_msgs name classes by integer ids; the kitchen run names them")
-    data = localize("--bag", str(kitchen_run(tmp_path / name)))
+    labels = tmp_path / "labels.yaml"
+    labels.write_text("{44: spoon, 47: cup}\n")
+    data = localize("--bag", str(kitchen_run(tmp_path / name)), "--labels", str(labels))
     assert data["updates"] == 10
     spoon = next(o for o in data["objects"] if o["class"] == "spoon")
     assert spoon["rooms"]["kitchen"] > 0.95  # seen on the counter; the bedroom's prior is gone
@@ -126,6 +128,14 @@ def test_bad_bags_are_refused(tmp_path: Path) -> None:
     assert "'world'" in refused("import-bag", str(bag), "-o", str(out), "--frame", "world", out=out)
     assert "is the bag itself" in refused("import-bag", str(bag), "-o", str(bag))
     assert bag.is_file()
+
+
+def test_bad_labels_are_refused_at_their_line(tmp_path: Path) -> None:
+    bag = kitchen_run(tmp_path / "run.bag")
+    labels = tmp_path / "labels.yaml"
+    labels.write_text("44: spoon\n47: [cup, mug]\n")
+    assert refused("import-bag", str(bag), "-o", str(tmp_path / "o.yaml"), "--labels", str(labels)) == \
+        f"error: {labels}:2:5: the label of 47 must be a single value, not a list"
 
 
 def test_localize_refuses_conflicting_and_dangling_options(tmp_path: Path) -> None:
