@@ -122,7 +122,7 @@ def localize(
              if v is not None]
     if len(given) > 1:
         raise SealError(f"give one of --trajectory (simulated detections), --observations or --bag (real ones), "
-                        f"not {' and '.join(given)}")
+                        f"not both {' and '.join(given)}")
     if bag is None and (pose_topic or detections_topic or labels):
         raise SealError("--pose-topic, --detections-topic and --labels read a bag: give --bag too")
     if goals is not None:

@@ -396,6 +396,8 @@ def read_occupancy_grid(path: str | Path, topic: str = "/map") -> Grid:
             o = info.origin
             yaw = float(quaternion_yaw(np.array([[o.orientation.x, o.orientation.y, o.orientation.z,
                                                   o.orientation.w or 1.0]]))[0])
-            return Grid(data.reshape(height, width), float(info.resolution),
+            # resolution is a float32: 0.05 arrives as 0.0500000007; take the shortest decimal that is that float32
+            resolution = float(np.format_float_positional(np.float32(info.resolution), unique=True))
+            return Grid(data.reshape(height, width), resolution,
                         (float(o.position.x), float(o.position.y), yaw), _frame(message.header.frame_id))
         raise bag.error(f"{topic} holds no messages")

@@ -140,7 +140,7 @@ def test_bad_labels_are_refused_at_their_line(tmp_path: Path) -> None:
 
 def test_localize_refuses_conflicting_and_dangling_options(tmp_path: Path) -> None:
     bag = kitchen_run(tmp_path / "run.mcap")
-    assert "not --observations and --bag" in refused("localize", "--map", "apartment", "--bag", str(bag),
+    assert "not both --observations and --bag" in refused("localize", "--map", "apartment", "--bag", str(bag),
                                                      "--observations", str(bag))
     assert "give --bag too" in refused("localize", "--map", "apartment", "--pose-topic", "/odom")
     goals = tmp_path / "goals.yaml"
