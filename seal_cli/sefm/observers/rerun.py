@@ -55,7 +55,7 @@ from seal_cli.sefm.observers.rerun_scene import DRAW, Classes, blueprint, log_gr
 if TYPE_CHECKING:
     from seal_cli.sefm.filter import SeFM, Step
 
-__all__ = ["CHANGE", "RerunRecorder", "cell_masses", "radii"]
+__all__ = ["CHANGE", "RerunRecorder", "cell_masses", "radii", "total_variation"]
 
 ROBOT = (214, 39, 40)
 DETECTION = (255, 127, 14)
@@ -86,7 +86,8 @@ def cell_masses(X: NDArray[np.float64], W: NDArray[np.float64], bounds: Sequence
     return {int(k): float(s / total) if total > 0 else 0.0 for k, s in zip(unique, sums, strict=True)}
 
 
-def _tv(a: dict[int, float], b: dict[int, float]) -> float:
+def total_variation(a: dict[int, float], b: dict[int, float]) -> float:
+    """½ Σ |a − b| over the cells of two :func:`cell_masses`."""
     return 0.5 * sum(abs(a.get(k, 0.0) - b.get(k, 0.0)) for k in set(a) | set(b))
 
 
@@ -241,7 +242,7 @@ class RerunRecorder:
         if only_pending and key not in self._pending:
             return False
         masses = cell_masses(X, W, sefm.map.bounds)
-        if force or key not in self._shown or _tv(masses, self._shown[key]) > CHANGE:
+        if force or key not in self._shown or total_variation(masses, self._shown[key]) > CHANGE:
             self._shown[key] = masses
             self._pending.discard(key)
             return True

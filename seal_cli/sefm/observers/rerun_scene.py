@@ -121,18 +121,20 @@ def log_map(stream: Any, m: Map, places: Sequence[tuple[str, tuple[float, float]
                    static=True)
 
 
-def blueprint(m: Map, frame_ids: Sequence[str], series: Sequence[tuple[str, str]] | None = None) -> Any:
+def blueprint(m: Map, frame_ids: Sequence[str], panels: Sequence[tuple[str, str, str]] | None = None) -> Any:
     """The default layout: the map view (left, framed on the map's bounds) and, on the right, time series.
 
     By default two: every frame's room masses (``/metrics/rooms``: one series per frame and room)
-    and the effective sample sizes (``/metrics/ess``); ``series`` gives others as (name, origin)."""
+    and the effective sample sizes (``/metrics/ess``); ``panels`` gives others as (kind, name,
+    origin), kind ``series`` (a time series) or ``log`` (a text log)."""
     import rerun.blueprint as rrb
 
     xmin, ymin, xmax, ymax = m.bounds
     view = rrb.Spatial2DView(name=f"map {m.name}", origin="/",
                              visual_bounds=rrb.VisualBounds2D(x_range=[xmin, xmax], y_range=[ymin, ymax]))
-    if series is None:
-        series = ([("room mass per frame", "/metrics/rooms")] if frame_ids else []) + \
-            [("effective sample size", "/metrics/ess")]
-    plots = [rrb.TimeSeriesView(name=name, origin=origin) for name, origin in series]
-    return rrb.Blueprint(rrb.Horizontal(view, rrb.Vertical(*plots), column_shares=[3, 2]) if plots else view)
+    if panels is None:
+        panels = ([("series", "room mass per frame", "/metrics/rooms")] if frame_ids else []) + \
+            [("series", "effective sample size", "/metrics/ess")]
+    kinds = {"series": rrb.TimeSeriesView, "log": rrb.TextLogView}
+    shown = [kinds[kind](name=name, origin=origin) for kind, name, origin in panels]
+    return rrb.Blueprint(rrb.Horizontal(view, rrb.Vertical(*shown), column_shares=[3, 2]) if shown else view)
