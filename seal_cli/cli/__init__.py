@@ -4,6 +4,8 @@ Each command lives in a module of this package and registers itself on :data:`ap
 call plain engine functions, print results on stdout (JSON with ``--json``) and diagnostics on
 stderr. A :class:`~seal_cli.errors.SealError` becomes one clear message and exit code 1; usage
 errors are typer's own (exit 2); nothing else may escape as a traceback.
+
+May import anything; nothing imports it (but ``python -m seal_cli``).
 """
 
 from __future__ import annotations
@@ -111,7 +113,7 @@ def _register() -> None:
         importlib.import_module(f"{__name__}.{module}")
 
 
-COMMAND_ORDER = ("parse_cmd", "plan_cmd", "localize_cmd", "run_cmd", "library_cmd", "map_cmd", "bag_cmd")
+COMMAND_ORDER = ("parse_cmd", "plan_cmd", "localize_cmd", "run_cmd", "library_cmd", "map_cmd")
 """The order commands appear in ``seal --help``: the pipeline first, then the tools."""
 
 

@@ -15,87 +15,24 @@ from typing import Any
 import numpy as np
 
 from seal_cli.ros.messages import DETECTION_2D, DETECTION_3D, ODOMETRY, POSE_STAMPED, TF, typestore
-from seal_cli.ros.writing import Message, header, is_ros1, pose, pose_stamped, write_bag
+from seal_cli.ros.writing import (
+    Message,
+    detection_array,
+    is_ros1,
+    occupancy_grid,
+    odometry,
+    pose_stamped,
+    tf_message,
+    write_bag,
+)
+
+__all__ = ["detections", "occupancy_grid", "run_messages", "store_for", "tf_message", "write_run"]
+
+detections = detection_array
 
 
 def store_for(path: str | Path) -> Any:
     return typestore(is_ros1(path))
-
-
-def _vector(store: Any, x: float, y: float, z: float) -> Any:
-    return store.types["geometry_msgs/msg/Vector3"](x=float(x), y=float(y), z=float(z))
-
-
-def odometry(store: Any, stamp: float, frame: str, child: str, x: float, y: float, yaw: float, ros1: bool) -> Any:
-    T = store.types
-    twist = T["geometry_msgs/msg/TwistWithCovariance"](twist=T["geometry_msgs/msg/Twist"](
-        linear=_vector(store, 0, 0, 0), angular=_vector(store, 0, 0, 0)), covariance=np.zeros(36))
-    return T[ODOMETRY](header=header(store, stamp, frame, ros1), child_frame_id=child,
-                       pose=T["geometry_msgs/msg/PoseWithCovariance"](pose=pose(store, x, y, yaw),
-                                                                      covariance=np.zeros(36)), twist=twist)
-
-
-def tf_message(store: Any, stamp: float, edges: Sequence[tuple[str, str, float, float, float]], ros1: bool) -> Any:
-    """``edges``: (parent, child, x, y, yaw)."""
-    T = store.types
-    transforms = []
-    for parent, child, x, y, yaw in edges:
-        p = pose(store, x, y, yaw)
-        transforms.append(T["geometry_msgs/msg/TransformStamped"](
-            header=header(store, stamp, parent, ros1), child_frame_id=child,
-            transform=T["geometry_msgs/msg/Transform"](translation=_vector(store, x, y, 0), rotation=p.orientation)))
-    return T[TF](transforms=transforms)
-
-
-def detections(store: Any, stamp: float, frame: str, seen: Sequence[tuple[str | int, float, float, float]],
-               ros1: bool, three_d: bool = True) -> Any:
-    """A Detection3DArray (or 2D) of ``(class, x, y, z)`` in ``frame``, each with one hypothesis of score 0.9."""
-    T = store.types
-    out = []
-    for cls, x, y, z in seen:
-        where = T["geometry_msgs/msg/PoseWithCovariance"](pose=pose(store, x, y, 0.0, z), covariance=np.zeros(36))
-        if ros1:
-            hyp = T["vision_msgs/msg/ObjectHypothesisWithPose"](id=int(cls), score=0.9, pose=where)
-        else:
-            hyp = T["vision_msgs/msg/ObjectHypothesisWithPose"](
-                hypothesis=T["vision_msgs/msg/ObjectHypothesis"](class_id=str(cls), score=0.9), pose=where)
-        if three_d:
-            box = T["vision_msgs/msg/BoundingBox3D"](center=pose(store, x, y, 0.0, z), size=_vector(store, .1, .1, .1))
-            extra = ({"source_cloud": _empty_cloud(store, stamp, frame)} if ros1 else {"id": ""})
-            out.append(T["vision_msgs/msg/Detection3D"](header=header(store, stamp, frame, ros1), results=[hyp],
-                                                        bbox=box, **extra))
-        else:
-            centre = (T["geometry_msgs/msg/Pose2D"](x=320.0, y=240.0, theta=0.0) if ros1 else
-                      T["vision_msgs/msg/Pose2D"](position=T["vision_msgs/msg/Point2D"](x=320.0, y=240.0), theta=0.0))
-            box = T["vision_msgs/msg/BoundingBox2D"](center=centre, size_x=40.0, size_y=30.0)
-            extra = ({"source_img": _empty_image(store, stamp, frame)} if ros1 else {"id": ""})
-            out.append(T["vision_msgs/msg/Detection2D"](header=header(store, stamp, frame, ros1), results=[hyp],
-                                                        bbox=box, **extra))
-    kind = DETECTION_3D if three_d else DETECTION_2D
-    return T[kind](header=header(store, stamp, frame, ros1), detections=out)
-
-
-def _empty_image(store: Any, stamp: float, frame: str) -> Any:
-    return store.types["sensor_msgs/msg/Image"](header=header(store, stamp, frame, True), height=0, width=0,
-                                                encoding="", is_bigendian=0, step=0, data=np.zeros(0, np.uint8))
-
-
-def _empty_cloud(store: Any, stamp: float, frame: str) -> Any:
-    return store.types["sensor_msgs/msg/PointCloud2"](header=header(store, stamp, frame, True), height=0, width=0,
-                                                      fields=[], is_bigendian=False, point_step=0, row_step=0,
-                                                      data=np.zeros(0, np.uint8), is_dense=True)
-
-
-def occupancy_grid(store: Any, stamp: float, values: np.ndarray, resolution: float,
-                   origin: tuple[float, float, float], ros1: bool, frame: str = "map") -> Any:
-    """``values[row, col]`` (−1 or 0..100), row 0 at the lowest y."""
-    T = store.types
-    height, width = values.shape
-    time = header(store, stamp, frame, ros1).stamp
-    info = T["nav_msgs/msg/MapMetaData"](map_load_time=time, resolution=float(resolution), width=width, height=height,
-                                         origin=pose(store, *origin))
-    return T["nav_msgs/msg/OccupancyGrid"](header=header(store, stamp, frame, ros1), info=info,
-                                           data=np.asarray(values, np.int8).ravel())
 
 
 def run_messages(path: str | Path, poses: Sequence[tuple[float, float, float, float]],

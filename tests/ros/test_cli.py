@@ -152,3 +152,16 @@ def test_localize_refuses_conflicting_and_dangling_options(tmp_path: Path) -> No
     assert "no topic /nope" in message
     assert "folder" in refused("localize", "--map", "apartment", "--task", "stir the cup", "--bag", str(bag),
                                "--goals", str(tmp_path / "missing" / "goals.yaml"))
+
+
+def test_bench_ros_reads_and_filters_every_message() -> None:
+    result = invoke("bench", "ros", "--format", "mcap", "--format", "ros1", "--poses", "60", "--messages", "12",
+                    "--json")
+    assert result.exit_code == 0, result.output
+    runs = json.loads(result.stdout)["runs"]
+    assert [r["format"] for r in runs] == ["mcap", "ros1"]
+    for r in runs:
+        assert (r["poses"], r["messages"], r["updates"], r["frames"], r["objects"]) == (60, 12, 12, 3, 2)
+        assert r["detections"] > 0 and r["updates_per_s"] > 0  # the loop passes the spoon and the cup
+    assert runs[0]["detections"] == runs[1]["detections"]  # ROS 1's integer ids name the same classes
+    assert "unknown format" in refused("bench", "ros", "--format", "ros3")

@@ -1,12 +1,14 @@
-"""``seal import-bag``: a ROS bag's poses and detections as an observations file for ``seal localize``."""
+"""ROS commands: ``seal import-bag`` (a bag's poses and detections as an observations file for
+``seal localize``) and ``seal bench ros`` (a bag read and filtered: updates per second)."""
 
 from __future__ import annotations
 
 from pathlib import Path
 
 import typer
+from rich.table import Table
 
-from seal_cli.cli import command, err
+from seal_cli.cli import JsonOption, bench_app, command, emit_json, err, out
 
 
 @command("import-bag")
@@ -42,3 +44,40 @@ def import_bag(
     skipped = f" ({run.skipped} outside the poses' time span skipped)" if run.skipped else ""
     err.print(f"wrote {output}: {len(run.observations)} observations from {run.detections_topic}{skipped}, poses "
               f"from {run.pose_source}", markup=False)
+
+
+@command("ros", on=bench_app)
+def bench_ros(
+    formats: list[str] | None = typer.Option(None, "--format", help="mcap, sqlite3 or ros1 (repeatable; default "
+                                             "mcap).", show_default=False),
+    poses: int = typer.Option(1000, "--poses", min=2, help="Robot poses in the bag (10 Hz)."),
+    messages: int = typer.Option(200, "--messages", min=1, help="Detection messages in the bag: one update each."),
+    seed: int = typer.Option(0, "--seed", min=0, help="Seed of the random generators."),
+    as_json: bool = JsonOption,
+) -> None:
+    """Read a robot's bag (poses on /tf, vision_msgs detections) and filter it at the paper's scale: updates/s."""
+    from seal_cli.bench.ros import FORMATS, measure
+    from seal_cli.errors import SealError
+    from seal_cli.frames.library import load_library
+    from seal_cli.maps.model import load_map
+    from seal_cli.resources import map_path
+
+    wanted = formats or ["mcap"]
+    unknown = sorted(set(wanted) - set(FORMATS))
+    if unknown:
+        raise SealError(f"unknown format {', '.join(unknown)}; the formats are {', '.join(FORMATS)}")
+    err.print("[dim]seal bench ros: writes the bag (untimed), then times reading it and one belief update per "
+              "detection message (this process's CPU seconds)[/dim]")
+    library, m = load_library(), load_map(map_path("apartment"))
+    results = [measure(m, library, fmt, poses, messages, seed) for fmt in wanted]
+    if as_json:
+        emit_json({"runs": results})
+        return
+    table = Table(title="a bag read and filtered (paper scale: 3 frames, 2 objects, 200 particles)",
+                  title_justify="left")
+    for column in ("format", "poses", "messages", "bag kB", "read s", "filter s", "updates/s"):
+        table.add_column(column, justify="left" if column == "format" else "right")
+    for r in results:
+        table.add_row(r["format"], str(r["poses"]), str(r["messages"]), f"{r['bag_bytes'] / 1000:.0f}",
+                      f"{r['read_s']:.2f}", f"{r['filter_s']:.2f}", f"{r['updates_per_s']:.1f}")
+    out.print(table)
