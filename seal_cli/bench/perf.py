@@ -41,7 +41,7 @@ from seal_cli.maps.model import Map, ObjectTruth, Robot, Room, Sensor
 from seal_cli.planning.state import State, robot_facts
 from seal_cli.sefm.filter import SeFM, SeFMConfig
 from seal_cli.sefm.potentials import make_kernel_sums
-from seal_cli.sensing.sensor import simulate_detections
+from seal_cli.sensing.model import simulate_detections
 
 __all__ = ["SCALES", "Scale", "building", "measure", "measure_apart", "peak_rss_mb", "scale", "scales"]
 

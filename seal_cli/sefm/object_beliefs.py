@@ -55,7 +55,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from seal_cli.frames.taxonomy import class_key
-from seal_cli.maps.model import OUTSIDE, Map
+from seal_cli.maps.model import OUTSIDE, Map, Sensor
 from seal_cli.sefm import cell_order
 from seal_cli.sefm.resampling import ess, normalise, stratified, systematic
 
@@ -119,8 +119,13 @@ class ObjectModel:
     """...or how far (rad) it must turn, for a sensor that does not see all round."""
 
     @classmethod
+    def for_sensor(cls, spec: Sensor, **overrides: float) -> ObjectModel:
+        """The observation model of a sensor's detections (its ``p_detect`` and ``sigma``)."""
+        return cls(p_detect=spec.p_detect, sigma=spec.sigma, **overrides)
+
+    @classmethod
     def for_map(cls, m: Map, **overrides: float) -> ObjectModel:
-        return cls(p_detect=m.sensor.p_detect, sigma=m.sensor.sigma, **overrides)
+        return cls.for_sensor(m.sensor, **overrides)
 
 
 @dataclass
