@@ -20,8 +20,8 @@ def perf(
     from seal_cli.bench.perf import measure
     from seal_cli.bench.perf import scales as build_scales
     from seal_cli.errors import SealError
-    from seal_cli.frames.library import load_library
-    from seal_cli.maps.model import load_map
+    from seal_cli.frames.reading import load_library
+    from seal_cli.maps.formats.map_server import load_map
     from seal_cli.resources import map_path
 
     wanted = scales or ["paper", "building"]

@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from seal_cli.maps.geometry import as_points
+from seal_cli.maps.geometry import OUTSIDE, as_points
 
 if TYPE_CHECKING:
     from seal_cli.maps.model import Map
@@ -70,8 +70,6 @@ class Prior:
 
     def room_masses(self) -> dict[str, float]:
         """The prior's mass per room name (and ``"_outside"``), exactly, from the cell weights."""
-        from seal_cli.maps.model import OUTSIDE
-
         sums = np.bincount(self.map.free_cell_room + 1, weights=self.weights, minlength=len(self.map.rooms) + 1)
         masses = {name: float(sums[i + 1]) for i, name in enumerate(self.map.room_names)}
         masses[OUTSIDE] = float(sums[0])
