@@ -25,8 +25,10 @@ from typing import Any
 import numpy as np
 
 from seal_cli.bench.tasks import Outcome, in_order
-from seal_cli.frames.library import Library, load_library
-from seal_cli.maps.model import Map, ObjectTruth, load_map
+from seal_cli.frames.library import Library
+from seal_cli.frames.reading import load_library
+from seal_cli.maps.formats.map_server import load_map
+from seal_cli.maps.model import Map, ObjectTruth
 
 __all__ = ["COMMANDS", "run_map_suite", "sample_layout"]
 

@@ -49,8 +49,8 @@ def run(
     """Simulate a robot that searches for what the command needs, goes there and does it, narrating each step."""
     import numpy as np
 
-    from seal_cli.frames.library import load_library
-    from seal_cli.maps.model import load_map
+    from seal_cli.frames.reading import load_library
+    from seal_cli.maps.formats.map_server import load_map
     from seal_cli.resources import map_path
     from seal_cli.sim.agent import Budget, run_on_map
     from seal_cli.sim.policies.baselines import make_policy

@@ -406,6 +406,17 @@ def _either(options: Sequence[str]) -> str:
     return options[0] if len(options) == 1 else ", ".join(options[:-1]) + " or " + options[-1]
 
 
+def ground_np(vocabulary: Vocabulary, np: NP) -> str | None:
+    """The class a parsed noun phrase denotes (conjunctions: the first one)."""
+    if np.head is None or np.kind == "message":
+        return None
+    words = [w.text for w in np.mods] + [np.head.text]
+    of = []
+    if np.of is not None and np.of.head is not None:
+        of = [w.text for w in np.of.mods] + [np.of.head.text]
+    return vocabulary.ground_words(words, -1, of)
+
+
 # ---------------------------------------------------------------------------------------------
 # Noun phrases as read from the tree
 
@@ -1190,7 +1201,7 @@ class Builder:
 
     def class_or_head(self, np: NP) -> str:
         if self.vocabulary is not None:
-            found = self.vocabulary.ground_np(np)
+            found = ground_np(self.vocabulary, np)
             if found:
                 return found
         return np.head_text
@@ -1595,7 +1606,7 @@ class Builder:
         text = self.text[np.start:np.end]
         cls = None
         if self.vocabulary is not None and np.kind != "message":
-            cls = self.vocabulary.ground_np(np)
+            cls = ground_np(self.vocabulary, np)
         whole = self.cut_from(np) if cls is None else None
         if whole is not None:                   # "slice the bread, take a slice": a slice of the bread
             index, name = whole

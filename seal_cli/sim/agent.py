@@ -672,7 +672,8 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
     """A world built from a seal map's places and ground-truth objects, on its free space."""
     from scipy.ndimage import binary_erosion
 
-    from seal_cli.sim.world import Item, Robot, Sensor
+    from seal_cli.sensing.model import RangeSensor
+    from seal_cli.sim.world import Item, Robot
 
     taxonomy = library.taxonomy
     items = [Item(p.name, p.cls, p.at, movable=False, receptacle=True, openable=p.openable,
@@ -698,9 +699,8 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
         free = grid_free
     res = m.grid.resolution
     grid = Grid(free.astype(bool), (m.grid.origin[0] + res / 2, m.grid.origin[1] + res / 2), res, 8)
-    sensor = Sensor(range=m.sensor.range, fov=m.sensor.fov_deg,
-                    blocked=lambda pose, pts: ~m.line_of_sight(pose[:2], pts))
-    world = World(items, Robot(pose=m.robot.pose, holding=holding), taxonomy=taxonomy, sensor=sensor)
+    world = World(items, Robot(pose=m.robot.pose, holding=holding), taxonomy=taxonomy,
+                  sensor=RangeSensor.on_map(m))
     return Scene(world, m, grid, tuple(sorted({i.key for i in items})), m.name)
 
 

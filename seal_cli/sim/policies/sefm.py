@@ -17,6 +17,7 @@ from seal_cli.frames.model import Binding, Fact
 from seal_cli.planning.state import State
 from seal_cli.sim.agent import Agent, View
 from seal_cli.sim.navigation import Cell
+from seal_cli.sim.policies.coverage import CoveragePolicy
 from seal_cli.sim.world import Detection
 
 __all__ = ["SeFMPolicy"]
@@ -31,7 +32,7 @@ class SeFMPolicy:
     can *observe* one: if the mode lies at a closed receptacle it has not looked into, it goes
     and opens it; otherwise it goes to the nearest pose (by path) from which the mode is in view.
     A view already taken is not taken again; when every mode has been looked at, it falls back
-    to the nearest frontier (:class:`~seal_cli.sim.policies.baselines.CoveragePolicy`), so the search is
+    to the nearest frontier (:class:`~seal_cli.sim.policies.coverage.CoveragePolicy`), so the search is
     complete. ``priors=False`` is the ``uniform`` ablation; :class:`~seal_cli.sim.policies.baselines.
     ObjectOnlyPolicy` looks at the object's belief instead of the frame's.
     """
@@ -48,8 +49,6 @@ class SeFMPolicy:
         """A view's utility is the belief mass it reveals / (metres to drive there + scale)."""
 
     def begin(self, agent: Agent) -> None:
-        from seal_cli.sim.policies.baselines import CoveragePolicy
-
         self.fallback = CoveragePolicy()
         self.fallback.begin(agent)
         self.history: list[tuple[tuple[float, float, float], tuple[Detection, ...]]] = []
