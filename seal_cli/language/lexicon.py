@@ -251,7 +251,7 @@ def _gated(table: tuple[Rule, ...], low: str) -> tuple[Rule, ...]:
     if rules is None:
         if len(_GATED) > 100_000:
             _GATED.clear()
-        rules = _GATED[key] = tuple(r for r in table if r.first is None or low in r.first)
+        rules = _GATED[key] = tuple(r for r in table if r.admits(low))
     return rules
 
 

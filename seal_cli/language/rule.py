@@ -62,11 +62,16 @@ class Example:
 @dataclass(frozen=True, slots=True)
 class Rule:
     """A named construction: ``match(state, i)`` is pure (see :class:`Match`). ``first``: when
-    given, the rule can only match where the word's lower-case form is one of these (a gate the
-    tagger checks before calling it); ``examples`` are run by a test."""
+    given, the rule can only match where the word's lower-case form is one of these, or satisfies
+    this predicate (a gate the tagger checks, once per word form, before calling it); ``examples`` are run by a test."""
 
     name: str
     match: Callable[[State, int], Match | None]
     examples: tuple[Example, ...]
-    first: frozenset[str] | None = None
+    first: frozenset[str] | Callable[[str], bool] | None = None
     doc: str = ""
+
+    def admits(self, low: str) -> bool:
+        """Whether the rule may match a word read as ``low`` (its gate; asked once per word form)."""
+        first = self.first
+        return first is None or (low in first if isinstance(first, frozenset) else first(low))

@@ -523,7 +523,7 @@ class State:
         if after >= len(self.words):
             return False
         nxt = self.words[after].lower
-        return nxt in DETERMINERS or nxt in POSSESSIVES or nxt in PRONOUNS or (
+        return nxt in DETERMINERS or nxt in POSSESSIVES or nxt in PRONOUNS or capitalised(self.words[after]) or (
             nxt in PREPOSITIONS and self.np_starts(after + match_phrase(self.words, after, PREPOSITIONS)))
 
     def np_starts(self, i: int) -> bool:

@@ -18,6 +18,7 @@ from seal_cli.language.rules import (
     numbers,
     open_words,
     politeness,
+    requests,
     statements,
     verbs,
 )
@@ -42,6 +43,11 @@ CLAUSE_START: tuple[Rule, ...] = (
     lead_ins.LIGHT_VERB,
     lead_ins.POLITE_FRAME,
     politeness.VOCATIVE_NAME,
+    requests.QUESTION,
+    requests.WHERE,
+    requests.REQUEST,
+    requests.LET_KNOW_RULE,
+    requests.FRONTED_OF,
     verbs.USE,
     verbs.VERB,
     statements.ASIDE,
@@ -61,9 +67,11 @@ INSIDE: tuple[Rule, ...] = (
     clauses.SUBORDINATE_INSIDE,
     clauses.RELATIVE,
     statements.REMARK_UNMARKED,
+    requests.FRONTED_END,
     statements.REMARK_AFTER,
     clauses.SEPARATOR,
     politeness.THANKS,
+    clauses.UNJOINED,
 )
 """Inside a clause, before the word is tagged by ``WORDS``."""
 

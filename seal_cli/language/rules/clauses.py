@@ -3,11 +3,12 @@ inside a clause, relative clauses, "until the corner", "something to drink"."""
 
 from __future__ import annotations
 
-from seal_cli.language.english import END_MARKS, SEPARATOR_WORDS
+from seal_cli.language.english import DETERMINERS, END_MARKS, POSSESSIVES, SEPARATOR_WORDS
 from seal_cli.language.morphology import verb_lemma
 from seal_cli.language.rule import AFTER_SEP, Example, Match, Rule
-from seal_cli.language.state import INDEFINITE, REL_FIRST, SEP_FIRST, SUB_FIRST, State, match_phrase
+from seal_cli.language.state import CLOSED, INDEFINITE, REL_FIRST, SEP_FIRST, SUB_FIRST, State, match_phrase, merge
 from seal_cli.language.tags import Tag
+from seal_cli.language.tokens import Word, capitalised
 
 
 def _end_mark(s: State, i: int) -> Match | None:
@@ -78,3 +79,38 @@ SEPARATOR = Rule("separator", _separator, (
     Example("take the cup and put it on the table", "and", Tag.SEP),
     Example("put the cup and the plate on the table", "and", Tag.AND_NP),
 ), SEP_FIRST, "'and', ',', 'then', ... joining clauses or noun phrases")
+
+
+_OBJECT_STARTS = frozenset(["it", "them", "him", "her", "me", "us"])
+
+
+def _unjoined(s: State, i: int) -> Match | None:
+    """A verb of the library in its base form right after a phrase, before its own object ("meet Jo at the
+    counter *escort her* back", "pick up the cup *bring it* to me"): a new clause said without "and"."""
+    words = s.words
+    if s.verb_index < 0 or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL, Tag.PARTICLE, Tag.HERE):
+        return None
+    if words[i].lower not in s.lexicon.units:
+        return None                       # only a verb's base form starts a command
+    found = s.verb_at(i)
+    if found is None or found[2] is not None or words[i].lower != found[0].split()[0]:
+        return None
+    after = i + found[1]
+    if after >= len(words):
+        return None
+    nxt = words[after]
+    if not (nxt.lower in _OBJECT_STARTS or nxt.lower in DETERMINERS or nxt.lower in POSSESSIVES or
+            capitalised(nxt) and nxt.lower not in CLOSED):
+        return None
+    if nxt.lower in ("that", "this", "these", "those") and not s.noun_follows(after + 1):
+        return None                       # "a potato slice *that is* on a plate": a relative clause
+    unit = found[0]
+    w = words[i]
+    return Match(found[1], (Word("", w.start, w.start, Tag.SEP), merge(words, i, found[1], Tag.VERB, unit)),
+                 expect=False, verb=unit, using=False)
+
+
+UNJOINED = Rule("clause without a joint", _unjoined, (
+    Example("meet Jo at the counter escort her back", "escort", Tag.VERB),
+    Example("pick up the cup bring it to me", "bring", Tag.VERB),
+), None, "a verb of the library and its object right after a phrase: a clause of its own, not a noun")

@@ -23,6 +23,7 @@ from seal_cli.language.english import (
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import TIME_FIRST, State, match_phrase
 from seal_cli.language.tags import Tag
+from seal_cli.language.tokens import Word
 
 _HERE_FIRST = frozenset(p.split()[0] for p in HERE_WORDS)
 _PREP_FIRST = frozenset(p.split()[0] for p in PREPOSITIONS)
@@ -107,7 +108,11 @@ def _here(s: State, i: int) -> Match | None:
     n = match_phrase(s.words, i, HERE_WORDS)
     after_be = bool(s.out) and s.out[-1].tag == Tag.BE           # "how many cups are there in the kitchen"
     if n and not (low == "there" and (nxt in BE_WORDS or after_be)):
-        return s.emit(i, n, Tag.HERE)
+        found = s.emit(i, n, Tag.HERE)
+        if n == 2 and low == "in":                                # "in there": read as "there"
+            w = found.words[0]
+            return Match(n, (Word(w.text, w.start, w.end, w.tag, w.info, s.words[i + 1].lower),))
+        return found
     if low == "there":
         return s.emit(i, 1, Tag.THERE)
     return None
@@ -188,6 +193,7 @@ DETERMINER_IN_NP = Rule("determiner inside a noun phrase", _determiner_in_np, (
 HERE = Rule("here and there", _here, (
     Example("bring it here", "here", Tag.HERE),
     Example("how many cups are there on the table", "there", Tag.THERE),
+    Example("go to the pantry and count the cans in there", "in there", Tag.HERE),
 ), _HERE_FIRST, "'here', 'there', 'upstairs' (a place); 'there' before or after 'is' (existential)")
 PREPOSITION = Rule("preposition", _preposition, (
     Example("put the cup on top of the fridge", "on top of", Tag.PREP),

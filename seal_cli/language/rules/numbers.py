@@ -12,6 +12,10 @@ from seal_cli.language.tokens import Word
 _NUMBER_FIRST = frozenset(p.split()[0] for p in NUMBERS)
 
 
+def _digits_or_number(low: str) -> bool:
+    return low.isdigit() or low in NUMBERS
+
+
 def _number(s: State, i: int) -> tuple[int, object]:
     n = match_phrase(s.words, i, NUMBERS)
     return n, NUMBERS[" ".join(x.lower for x in s.words[i:i + n])] if n else None
@@ -76,7 +80,7 @@ def _quantifier_of(s: State, i: int) -> Match | None:
 LABEL = Rule("number naming a thing", _label, (
     Example("go to room 214", "214", Tag.LABEL),
     Example("clean meeting room three", "three", Tag.LABEL),
-), None, "a number after a noun names a numbered thing, unless a noun follows it")
+), _digits_or_number, "a number after a noun names a numbered thing, unless a noun follows it")
 NUMBER_AS_NOUN = Rule("number as a noun", _number_as_noun, (
     Example("cut it into eight", "eight", Tag.WORD),
 ), _NUMBER_FIRST, "a number word after a preposition with no noun: so many pieces")
@@ -90,7 +94,7 @@ COUNT_AFTER_ARTICLE = Rule("number after an article", _count_after_article, (
 DIGITS = Rule("digits", _digits, (
     Example("bring me 3 apples", "3", Tag.NUM),
     Example("find the guests in 305", "305", Tag.WORD),
-), None, "digits: a count, or a place named by its number after a preposition")
+), str.isdigit, "digits: a count, or a place named by its number after a preposition")
 APOSTROPHE_S = Rule("'s", _apostrophe_s, (
     Example("bring me Roger's coat", "Roger's", Tag.POSS),
 ), frozenset(["'s"]), "'s: a possessive before a noun phrase, else 'is'")

@@ -63,14 +63,15 @@ PARTICIPLE = Rule("participle after a noun", _participle, (
     Example("find the person wearing a red blouse", "wearing", Tag.VBG_T),
     Example("find the person pointing to the left", "pointing", Tag.VBG_P),
     Example("find the person sitting", "sitting", Tag.VBG_I),
-), None, "an -ing form after a noun, a pronoun or 'is': transitive, with a preposition, or bare")
+), lambda low: bool(gerund_lemma(low)),
+    "an -ing form after a noun, a pronoun or 'is': transitive, with a preposition, or bare")
 RESULT = Rule("result word", _result, (
     Example("put a heated egg in the fridge", "heated", Tag.RESULT),
     Example("put the heated up egg in the fridge", "heated up", Tag.RESULT),
 ), None, "a participle of a lexical unit, or a frame's result adjective, before a noun")
 ADVERB = Rule("adverb", _adverb, (
     Example("put it carefully on the shelf", "carefully", Tag.PARTICLE),
-), None, "an adverb inside the clause")
+), lambda low: low.isalpha() and is_adverb(low), "an adverb inside the clause")
 NAME = Rule("name", _name, (
     Example("greet Mary Ann", "Mary Ann", Tag.NAME),
     Example("go to Emmas room", "Emmas", Tag.POSS),

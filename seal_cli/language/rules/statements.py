@@ -58,7 +58,7 @@ TOLD = Rule("told without that", _told, (
 ), None, "what is told without 'that', right after the person told")
 REMARK_UNMARKED = Rule("remark without a comma", _remark_unmarked, (
     Example("give the ball to Lily cos she wants it", "cos", ""),
-), None, "'because' or a subject contraction after the request starts a statement")
+), lambda low: low in BECAUSE or "'" in low, "'because' or a subject contraction after the request starts a statement")
 REMARK_AFTER = Rule("remark after a comma", _remark_after, (
     Example("close the door, dear, I'm cold", "dear", ""),
 ), frozenset([",", ";"]), "words of address and statements after a comma ending the request")
