@@ -4,7 +4,7 @@ The bag is written first (not timed): the shipped apartment, the robot driving t
 benchmark's loop (:mod:`seal_cli.bench.perf`) at 10 Hz for ``poses`` poses, published as ``/tf``
 (``map → odom`` static, ``odom → base_link`` moving), and ``messages`` ``vision_msgs/Detection3DArray``
 messages spread evenly over the run, in ``base_link``, holding what the map's sensor model sees
-of the ground-truth objects from the pose then (:func:`~seal_cli.sensing.sensor.simulate_detections`).
+of the ground-truth objects from the pose then (:func:`~seal_cli.sensing.model.simulate_detections`).
 
 Timed (CPU seconds of this process): :func:`~seal_cli.ros.bags.read_run` (open, deserialise,
 chain the transforms, interpolate a pose per message, carry the detections into ``map``) and
@@ -26,7 +26,7 @@ from seal_cli.frames.library import Library
 from seal_cli.maps.model import Map
 from seal_cli.planning.state import State, robot_facts
 from seal_cli.sefm.filter import SeFM, SeFMConfig
-from seal_cli.sensing.sensor import simulate_detections
+from seal_cli.sensing.model import simulate_detections
 
 __all__ = ["FORMATS", "measure"]
 

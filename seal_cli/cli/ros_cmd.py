@@ -58,8 +58,8 @@ def bench_ros(
     """Read a robot's bag (poses on /tf, vision_msgs detections) and filter it at the paper's scale: updates/s."""
     from seal_cli.bench.ros import FORMATS, measure
     from seal_cli.errors import SealError
-    from seal_cli.frames.library import load_library
-    from seal_cli.maps.model import load_map
+    from seal_cli.frames.reading import load_library
+    from seal_cli.maps.formats.map_server import load_map
     from seal_cli.resources import map_path
 
     wanted = formats or ["mcap"]

@@ -26,8 +26,7 @@ restart, or sim and wall time mixed), an error naming the message. Every problem
 
 from __future__ import annotations
 
-import contextlib
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -36,11 +35,12 @@ import numpy as np
 from numpy.typing import NDArray
 
 from seal_cli.errors import SealError, Where
-from seal_cli.ros.messages import DETECTION_TYPES, OCCUPANCY_GRID, POSE_TYPES, TF, require_rosbags, typestore
+from seal_cli.ros.messages import DETECTION_TYPES, POSE_TYPES, TF
+from seal_cli.ros.reader import Bag, open_bag
 from seal_cli.ros.transforms import TfTree, Track, apply, compose, quaternion_yaw
 from seal_cli.sensing.observations import Observation
 
-__all__ = ["JUMP", "TOLERANCE", "Grid", "Run", "bag_topics", "read_occupancy_grid", "read_run"]
+__all__ = ["JUMP", "TOLERANCE", "Run", "read_run"]
 
 Array = NDArray[np.float64]
 Look = list[tuple[str, str, tuple[float, float, float]]]
@@ -64,79 +64,6 @@ class Run:
     skipped: int = 0
 
 
-@dataclass(frozen=True)
-class Grid:
-    """A ``nav_msgs/OccupancyGrid``: ``values[row, col]`` in −1 (unknown) or 0..100, row 0 at the lowest y."""
-
-    values: NDArray[np.int8]
-    resolution: float
-    origin: tuple[float, float, float]
-    frame: str
-
-
-# -- the bag ---------------------------------------------------------------------------------------
-class _Bag:
-    """An open bag: its topics, and its messages deserialised, every failure a SealError."""
-
-    def __init__(self, reader: Any, path: Path) -> None:
-        self.reader, self.path = reader, path
-
-    @property
-    def topics(self) -> dict[str, str]:
-        return {c.topic: c.msgtype for c in self.reader.connections}
-
-    def error(self, message: str) -> SealError:
-        return SealError(message, Where(str(self.path)))
-
-    def messages(self, topic: str) -> Iterator[tuple[int, float, Any]]:
-        """``(index, log time s, message)`` of a topic, in log order."""
-        from rosbags.highlevel import AnyReaderError
-        from rosbags.serde import SerdeError
-
-        connections = [c for c in self.reader.connections if c.topic == topic]
-        try:
-            for i, (connection, logged, raw) in enumerate(self.reader.messages(connections=connections)):
-                try:
-                    message = self.reader.deserialize(raw, connection.msgtype)
-                except (AnyReaderError, SerdeError, ValueError, IndexError, KeyError) as exc:
-                    raise self.error(f"message {i + 1} on {topic} ({connection.msgtype}) cannot be decoded: "
-                                     f"{exc}") from None
-                yield i, logged * 1e-9, message
-        except SealError:
-            raise
-        except Exception as exc:  # rosbags' readers raise their own errors and sqlite's, lz4's, zstd's
-            raise self.error(f"cannot read {topic} from the bag: {exc}") from None
-
-
-@contextlib.contextmanager
-def _open(path: str | Path) -> Iterator[_Bag]:
-    require_rosbags()
-    from rosbags.highlevel import AnyReader
-
-    path = Path(path)
-    if not path.exists():
-        raise SealError("no such bag", Where(str(path)))
-    ros1 = path.suffix == ".bag"
-    try:
-        reader = AnyReader([path], default_typestore=typestore(ros1))
-        reader.open()
-    except Exception as exc:  # a file that is not a bag fails in many ways inside rosbags
-        detail = " ".join(str(a) for a in getattr(exc, "args", ())) or type(exc).__name__
-        raise SealError(f"cannot read this as a ROS bag (ROS 1 .bag, ROS 2 folder, .db3 or .mcap): {detail}",
-                        Where(str(path))) from None
-    try:
-        yield _Bag(reader, path)
-    finally:
-        with contextlib.suppress(Exception):
-            reader.close()
-
-
-def bag_topics(path: str | Path) -> dict[str, str]:
-    """Topic → message type of every connection in the bag."""
-    with _open(path) as bag:
-        return bag.topics
-
-
 # -- stamps and poses --------------------------------------------------------------------------------
 def _stamp(header: Any, logged: float) -> float:
     stamp = header.stamp
@@ -148,7 +75,7 @@ def _frame(name: str) -> str:
     return name.lstrip("/")
 
 
-def _check_clock(bag: _Bag, topic: str, stamps: Sequence[float]) -> None:
+def _check_clock(bag: Bag, topic: str, stamps: Sequence[float]) -> None:
     """Refuse stamps that run backwards by more than JUMP seconds."""
     s = np.asarray(stamps, float)
     if len(s) < 2:
@@ -165,7 +92,7 @@ def _pose_of(message: Any, msgtype: str) -> Any:
     return message.pose if msgtype.endswith("/PoseStamped") else message.pose.pose
 
 
-def _pose_track(bag: _Bag, topic: str, base_frame: str) -> Track:
+def _pose_track(bag: Bag, topic: str, base_frame: str) -> Track:
     """The robot's pose messages on a topic as a track (parent: their frame; child: the base frame)."""
     msgtype = bag.topics[topic]
     stamps: list[float] = []
@@ -200,7 +127,7 @@ def _track(parent: str, child: str, stamps: Sequence[float], t: Sequence[Any], q
     return Track(parent, child, s[keep], T[keep], Q[keep])
 
 
-def _tf_tree(bag: _Bag) -> TfTree:
+def _tf_tree(bag: Bag) -> TfTree:
     """Every transform on /tf and /tf_static, one track per child frame."""
     samples: dict[tuple[str, str], tuple[list[float], list[Any], list[Any]]] = {}
     static: set[tuple[str, str]] = set()
@@ -247,7 +174,7 @@ def _class_of(hypothesis: Any) -> str:
     return str(inner.class_id if inner is not None else hypothesis.id).strip()
 
 
-def _detections(bag: _Bag, topic: str, labels: Mapping[str, str]) -> tuple[list[float], list[Look]]:
+def _detections(bag: Bag, topic: str, labels: Mapping[str, str]) -> tuple[list[float], list[Look]]:
     """Per message: its stamp and its detections as (class, frame, position in that frame)."""
     three_d = bag.topics[topic].endswith("3DArray")
     stamps: list[float] = []
@@ -275,7 +202,7 @@ def _detections(bag: _Bag, topic: str, labels: Mapping[str, str]) -> tuple[list[
     return stamps, looks
 
 
-def _choose(bag: _Bag, given: str | None, types: Sequence[str], what: str, option: str,
+def _choose(bag: Bag, given: str | None, types: Sequence[str], what: str, option: str,
             extra: Sequence[str] = ()) -> str:
     """The topic given (checked), or the only topic of the right types in the bag."""
     topics = bag.topics
@@ -304,7 +231,7 @@ def read_run(path: str | Path, *, pose_topic: str | None = None, detections_topi
     (:mod:`seal_cli.ros.labels`), for detectors that name classes by number.
     """
     frame = _frame(frame)
-    with _open(path) as bag:
+    with open_bag(path) as bag:
         tree = _tf_tree(bag)
         source = pose_topic
         if source in (None, "/tf") and any(t in bag.topics for t in TF_TOPICS):
@@ -322,7 +249,7 @@ def read_run(path: str | Path, *, pose_topic: str | None = None, detections_topi
         return _place(bag, tree, robot, source, topic, frame, base_frame, stamps, looks)
 
 
-def _place(bag: _Bag, tree: TfTree, robot: Track | None, source: str, topic: str, frame: str, base_frame: str,
+def _place(bag: Bag, tree: TfTree, robot: Track | None, source: str, topic: str, frame: str, base_frame: str,
            stamps: list[float], looks: list[Look]) -> Run:
     """Each detection message at the robot's pose at its stamp, its detections carried into ``frame``."""
     s = np.asarray(stamps, float)
@@ -349,7 +276,7 @@ def _place(bag: _Bag, tree: TfTree, robot: Track | None, source: str, topic: str
     return Run(tuple(observations), tuple(float(s[k]) for k in order), source, topic, int((~placed).sum()))
 
 
-def _in_frame(bag: _Bag, tree: TfTree, frame: str, stamps: Array,
+def _in_frame(bag: Bag, tree: TfTree, frame: str, stamps: Array,
               looks: list[Look],
               placed: NDArray[np.bool_]) -> dict[int, tuple[tuple[str, tuple[float, float]], ...]]:
     """Every placed message's detections as (class, (x, y)) in ``frame``: one lookup per detection frame."""
@@ -372,32 +299,3 @@ def _in_frame(bag: _Bag, tree: TfTree, frame: str, stamps: Array,
         for (k, cls, _, _), p in zip(mine, points, strict=True):
             out[k].append((cls, (float(p[0]), float(p[1]))))
     return {k: tuple(v) for k, v in out.items()}
-
-
-# -- occupancy grids ---------------------------------------------------------------------------------
-def read_occupancy_grid(path: str | Path, topic: str = "/map") -> Grid:
-    """The first ``nav_msgs/OccupancyGrid`` on ``topic``."""
-    with _open(path) as bag:
-        if topic not in bag.topics:
-            grids = sorted(t for t, m in bag.topics.items() if m == OCCUPANCY_GRID)
-            hint = f" (its occupancy grids: {', '.join(grids)})" if grids else " (it holds no occupancy grid)"
-            raise bag.error(f"no topic {topic} in the bag{hint}")
-        if bag.topics[topic] != OCCUPANCY_GRID:
-            raise bag.error(f"{topic} holds {bag.topics[topic]}, not {OCCUPANCY_GRID}")
-        for _, _, message in bag.messages(topic):
-            info = message.info
-            width, height = int(info.width), int(info.height)
-            data = np.asarray(message.data, dtype=np.int8)
-            if width <= 0 or height <= 0 or len(data) != width * height:
-                raise bag.error(f"the occupancy grid on {topic} is {width}×{height} cells but holds {len(data)} values")
-            if not (np.isfinite(info.resolution) and info.resolution > 0):
-                raise bag.error(f"the occupancy grid on {topic} has resolution {info.resolution}, not a positive "
-                                f"number of metres per cell")
-            o = info.origin
-            yaw = float(quaternion_yaw(np.array([[o.orientation.x, o.orientation.y, o.orientation.z,
-                                                  o.orientation.w or 1.0]]))[0])
-            # resolution is a float32: 0.05 arrives as 0.0500000007; take the shortest decimal that is that float32
-            resolution = float(np.format_float_positional(np.float32(info.resolution), unique=True))
-            return Grid(data.reshape(height, width), resolution,
-                        (float(o.position.x), float(o.position.y), yaw), _frame(message.header.frame_id))
-        raise bag.error(f"{topic} holds no messages")

@@ -37,7 +37,7 @@ def write_rrd(path: str | Path, agent: Agent) -> None:
     from seal_cli.sefm.resampling import ess
 
     m = agent.scene.map
-    clouds: list[dict[str, Any]] = getattr(agent.policy, "clouds", [])
+    clouds: list[dict[str, Any]] = agent.policy.clouds
     frames = list(dict.fromkeys(c["frame"] for c in clouds if c["frame_particles"] is not None and c["frame"]))
     objects = list(dict.fromkeys(cls for c in clouds for cls in c["objects"]))
     classes = Classes(objects, frames)
@@ -118,7 +118,7 @@ def write_png(path: str | Path, agent: Agent, title: str = "") -> None:
     fig, ax = plt.subplots(figsize=(9.0, max(3.0, 9.0 * (ymax - ymin) / (xmax - xmin) + 0.6)))
     try:
         draw_map(ax, m, objects=False, robot=False)
-        clouds: list[dict[str, Any]] = getattr(agent.policy, "clouds", [])
+        clouds: list[dict[str, Any]] = agent.policy.clouds
         if clouds and clouds[-1]["frame_particles"] is not None:
             X, W = clouds[-1]["frame_particles"]
             ax.scatter(X[:, 0], X[:, 1], s=4 + 40 * W / max(W.max(), 1e-12), c="#ff7f0e", alpha=0.6, zorder=2,

@@ -12,7 +12,8 @@ import pytest
 pytest.importorskip("rosbags")
 
 from seal_cli.errors import SealError  # noqa: E402
-from seal_cli.ros.bags import read_occupancy_grid, read_run  # noqa: E402
+from seal_cli.ros.bags import read_run  # noqa: E402
+from seal_cli.ros.grids import read_occupancy_grid  # noqa: E402
 from seal_cli.ros.messages import POSE_STAMPED  # noqa: E402
 from seal_cli.ros.writing import pose_stamped, write_bag  # noqa: E402
 from tests.ros.bagfiles import occupancy_grid, run_messages, store_for, write_run  # noqa: E402

@@ -11,9 +11,8 @@ import pytest
 pytest.importorskip("rosbags")
 
 from seal_cli.errors import SealError  # noqa: E402
-from seal_cli.maps.formats.map_server import read_map  # noqa: E402
+from seal_cli.maps.formats.map_server import load_map, read_map  # noqa: E402
 from seal_cli.maps.geometry import FREE, OCCUPIED  # noqa: E402
-from seal_cli.maps.model import load_map  # noqa: E402
 from seal_cli.resources import map_path  # noqa: E402
 from seal_cli.ros.writing import write_bag  # noqa: E402
 from tests.ros.bagfiles import occupancy_grid, store_for  # noqa: E402

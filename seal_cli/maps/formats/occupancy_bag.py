@@ -74,7 +74,7 @@ def grid_from_bag(reader: Any, nodes: dict[str, yaml.Node]) -> OccupancyGrid | N
     if free > occ:
         reader.problem(f"free_thresh {free:g} is above occupied_thresh {occ:g}", nodes["free_thresh"])
         return None
-    from seal_cli.ros.bags import read_occupancy_grid
+    from seal_cli.ros.grids import read_occupancy_grid
 
     try:
         grid = read_occupancy_grid(reader.path.parent / bag, topic)
