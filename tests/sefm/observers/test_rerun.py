@@ -173,7 +173,9 @@ def test_metrics_are_series_per_step(recorded: tuple[Path, SeFM, Any]) -> None:
 
 
 def test_the_frame_ess_never_exceeds_the_particles(recorded: tuple[Path, SeFM, Any]) -> None:
-    path, _, (metrics, _) = recorded
+    """It is the reweighting's (carried and fresh particles together), in particles kept; the JSON reports it."""
+    path, sefm, (metrics, _) = recorded
+    assert [sefm.frame_json(i)["ess"] for i in range(2)] == [round(float(v), 1) for v in sefm.frames.ess()]
     for row in rows(path)["/metrics/ess"]:
         assert all(0 < v <= P + 1e-9 for v in row["Scalars:scalars"])
     assert all(f["ess"] <= P + 1e-9 for row in metrics.rows for f in row["frames"].values())
