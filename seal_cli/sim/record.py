@@ -33,7 +33,7 @@ def write_rrd(path: str | Path, agent: Agent) -> None:
 
     from seal_cli.sefm.modes import room_masses
     from seal_cli.sefm.observers.rerun import CHANGE, cell_masses, radii, total_variation
-    from seal_cli.sefm.observers.rerun_scene import DRAW, Classes, blueprint, log_map
+    from seal_cli.sefm.observers.rerun_scene import DRAW, Classes, batching, blueprint, log_map
     from seal_cli.sefm.resampling import ess
 
     m = agent.scene.map
@@ -47,7 +47,7 @@ def write_rrd(path: str | Path, agent: Agent) -> None:
     if objects:
         panels.insert(2, ("series", "effective sample size", "/metrics/ess"))
     stream = rr.RecordingStream("seal_run", recording_id=f"{m.name}-seal-run",
-                                batcher_config=rr.ChunkBatcherConfig.NEVER())
+                                batcher_config=batching(), send_properties=False)
     with atomic_output(path) as tmp:
         stream.save(str(tmp))
         stream.set_log_time_enabled(False)

@@ -50,7 +50,7 @@ from numpy.typing import NDArray
 
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.sefm.observers.metrics import weight_colours
-from seal_cli.sefm.observers.rerun_scene import DRAW, Classes, blueprint, log_grid_image, log_map
+from seal_cli.sefm.observers.rerun_scene import DRAW, Classes, batching, blueprint, log_grid_image, log_map
 
 if TYPE_CHECKING:
     from seal_cli.sefm.filter import SeFM, Step
@@ -115,7 +115,7 @@ class RerunRecorder:
         import rerun as rr
 
         self.stream = rr.RecordingStream(self.application_id, recording_id=f"{sefm.map.name}-seal",
-                                         batcher_config=rr.ChunkBatcherConfig.NEVER())
+                                         batcher_config=batching(), send_properties=False)
         self.stream.save(str(self.path))
         self.stream.set_log_time_enabled(False)
         self.stream.set_log_tick_enabled(False)

@@ -27,7 +27,7 @@ import numpy as np
 from seal_cli.maps.geometry import FREE, OCCUPIED, OccupancyGrid
 from seal_cli.maps.model import Map
 
-__all__ = ["DRAW", "Classes", "blueprint", "log_grid_image", "log_map", "png", "series_colour"]
+__all__ = ["DRAW", "Classes", "batching", "blueprint", "log_grid_image", "log_map", "png", "series_colour"]
 
 DRAW = {"occupancy": -10.0, "density": -5.0, "rooms": 1.0, "places": 2.0, "objects": 3.0, "frames": 4.0,
         "modes": 6.0, "observations": 7.0, "robot": 8.0}
@@ -38,6 +38,17 @@ PALETTE = np.array([[31, 119, 180], [255, 127, 14], [44, 160, 44], [214, 39, 40]
 """Matplotlib's tab10."""
 GREYS = {FREE: 254, OCCUPIED: 0}
 UNKNOWN_GREY = 205
+
+
+def batching() -> Any:
+    """Chunks of up to 8 MB per entity, never cut by time: every chunk carries a couple of kB of Arrow
+    schema, so a short run's recording is one chunk per entity instead of one per 200 ms."""
+    import datetime
+
+    import rerun as rr
+
+    return rr.ChunkBatcherConfig(flush_tick=datetime.timedelta(hours=24), flush_num_bytes=8 << 20,
+                                 flush_num_rows=1 << 31)
 
 
 def series_colour(i: int) -> tuple[int, int, int]:
@@ -122,16 +133,14 @@ def log_map(stream: Any, m: Map, places: Sequence[tuple[str, tuple[float, float]
 
 
 def blueprint(m: Map, frame_ids: Sequence[str], panels: Sequence[tuple[str, str, str]] | None = None) -> Any:
-    """The default layout: the map view (left, framed on the map's bounds) and, on the right, time series.
+    """The default layout: the map view (left) and, on the right, time series.
 
     By default two: every frame's room masses (``/metrics/rooms``: one series per frame and room)
     and the effective sample sizes (``/metrics/ess``); ``panels`` gives others as (kind, name,
     origin), kind ``series`` (a time series) or ``log`` (a text log)."""
     import rerun.blueprint as rrb
 
-    xmin, ymin, xmax, ymax = m.bounds
-    view = rrb.Spatial2DView(name=f"map {m.name}", origin="/",
-                             visual_bounds=rrb.VisualBounds2D(x_range=[xmin, xmax], y_range=[ymin, ymax]))
+    view = rrb.Spatial2DView(name=f"map {m.name}", origin="/")  # framed on its content: the occupancy image
     if panels is None:
         panels = ([("series", "room mass per frame", "/metrics/rooms")] if frame_ids else []) + \
             [("series", "effective sample size", "/metrics/ess")]
