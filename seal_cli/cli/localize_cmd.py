@@ -128,7 +128,7 @@ def localize(
     if goals is not None:
         from seal_cli.ros.goals import check_goals_path
 
-        check_goals_path(goals)
+        check_goals_path(goals, [bag, observations, trajectory, map_name if Path(map_name).exists() else None])
     library = load_library(framelib_paths(framelib))
     the_map = load_map(map_path(map_name))
     runs: list[Observation] = []

@@ -73,9 +73,12 @@ def goals_for(m: Map, frame_ids: Sequence[str], frames: Sequence[Mapping[str, An
     return out
 
 
-def check_goals_path(path: str | Path) -> None:
-    """Refuse, before anything runs, a goals file that cannot be written."""
+def check_goals_path(path: str | Path, inputs: Sequence[str | Path | None] = ()) -> None:
+    """Refuse, before anything runs, a goals file that cannot be written or would overwrite an input."""
     target = Path(path)
+    for given in inputs:
+        if given is not None and Path(given).resolve() == target.resolve():
+            raise SealError(f"--goals {target} is an input of the run: give another file", Where(str(target)))
     folder = target.parent if str(target.parent) else Path(".")
     if not folder.is_dir():
         raise SealError(f"cannot write goals to {target}: folder {folder} does not exist", Where(str(target)))

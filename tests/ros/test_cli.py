@@ -152,6 +152,29 @@ def test_localize_refuses_conflicting_and_dangling_options(tmp_path: Path) -> No
     assert "no topic /nope" in message
     assert "folder" in refused("localize", "--map", "apartment", "--task", "stir the cup", "--bag", str(bag),
                                "--goals", str(tmp_path / "missing" / "goals.yaml"))
+    before = bag.read_bytes()
+    assert "is an input of the run" in refused("localize", "--map", "apartment", "--task", "stir the cup", "--bag",
+                                               str(bag), "--goals", str(bag))
+    assert bag.read_bytes() == before
+
+
+def test_without_rosbags_the_way_out_is_named(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    import sys
+
+    monkeypatch.setitem(sys.modules, "rosbags", None)  # import rosbags now raises ImportError
+    message = refused("import-bag", str(tmp_path / "run.mcap"), "-o", str(tmp_path / "o.yaml"))
+    assert "pip install 'seal[ros]'" in message
+
+
+def test_validate_reads_the_occupancy_from_the_bag(tmp_path: Path) -> None:
+    from tests.ros.test_occupancy_bag import apartment_with, saved_as_message
+
+    saved_as_message(tmp_path)
+    good = apartment_with(tmp_path, "occupancy: mapping.mcap")
+    assert invoke("validate", str(good)).exit_code == 0
+    bad = apartment_with(tmp_path, "occupancy: {bag: mapping.mcap, topic: /nope}")
+    result = invoke("validate", str(bad))
+    assert result.exit_code == 1 and "no topic /nope in the bag" in result.output
 
 
 def test_bench_ros_reads_and_filters_every_message() -> None:
