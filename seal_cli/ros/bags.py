@@ -158,7 +158,7 @@ def _tf_tree(bag: Bag) -> TfTree:
             raise bag.error(f"frame {child!r} has two parents in the transforms: {parents[child]!r} and {parent!r}")
         parents[child] = parent
         if (parent, child) in static:
-            tree.add(Track(parent, child, np.zeros(1), np.asarray(t[-1:], float), np.asarray(q[-1:], float)))
+            tree.add(Track(parent, child, np.zeros(1), np.asarray(t[-1:], float), np.asarray(q[-1:], float), True))
         else:
             tree.add(_track(parent, child, s, t, q))
     return tree

@@ -1,7 +1,7 @@
 """Rigid transforms over time, as ROS's TF keeps them, and a TF tree to look them up in.
 
 A :class:`Track` is one edge of the tree: the pose of a ``child`` frame in its ``parent`` frame at
-a list of stamps (one stamp for a static transform), as translations ``t`` (N, 3) and unit
+a list of stamps (a static transform, ``fixed``, holds at every stamp), as translations ``t`` (N, 3) and unit
 quaternions ``q`` (N, 4, ``x y z w`` as ROS writes them). Between two stamps it is interpolated
 (linearly in translation, normalised-linearly in rotation, which for the small turns between
 two TF messages is slerp to within 1e-4 rad); outside its span it holds its first or last value
@@ -78,6 +78,8 @@ class Track:
     stamps: Array
     t: Array
     q: Array
+    fixed: bool = False
+    """A static transform (``/tf_static``): it holds at every stamp. A moving one holds only over its span."""
 
     def __post_init__(self) -> None:
         q = np.asarray(self.q, float)
@@ -89,7 +91,7 @@ class Track:
 
     @property
     def static(self) -> bool:
-        return len(self.stamps) == 1
+        return self.fixed
 
     @property
     def span(self) -> tuple[float, float]:
@@ -98,7 +100,7 @@ class Track:
     def at(self, stamps: Array) -> tuple[Array, Array]:
         """The pose at each stamp, interpolated; held constant outside the track's span."""
         stamps = np.asarray(stamps, float)
-        if self.static:
+        if len(self.stamps) == 1:
             return np.repeat(self.t, len(stamps), axis=0), np.repeat(self.q, len(stamps), axis=0)
         i = np.clip(np.searchsorted(self.stamps, stamps, side="right") - 1, 0, len(self.stamps) - 2)
         gap = self.stamps[i + 1] - self.stamps[i]

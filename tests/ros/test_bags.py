@@ -168,3 +168,10 @@ def test_a_grid_is_read_with_its_origin_and_rows(tmp_path: Path) -> None:
     assert grid.values.tolist() == values.tolist() and grid.resolution == 0.5 and grid.origin == (-1.0, -2.0, 0.0)
     with pytest.raises(SealError, match="no topic /costmap in the bag \\(its occupancy grids: /map\\)"):
         read_occupancy_grid(path, "/costmap")
+
+
+def test_a_single_moving_pose_places_only_what_is_near_its_stamp(tmp_path: Path) -> None:
+    """One message on /tf is not a static transform: detections far from its stamp are not placed at it."""
+    bag = write_run(tmp_path / "run.mcap", POSES[:1], [(10.2, "map", []), (30.0, "map", [])], pose_source="tf")
+    run = read_run(bag)
+    assert run.stamps == pytest.approx([10.2]) and run.skipped == 1

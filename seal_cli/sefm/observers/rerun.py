@@ -67,10 +67,13 @@ DENSITY_CELL = 0.2
 
 
 def radii(W: NDArray[np.float64], smallest: float = 0.03, largest: float = 0.12) -> NDArray[np.float32]:
-    """A radius per particle growing with the square root of its weight (area ∝ weight), in 0.01 m steps."""
+    """A radius per particle growing with the square root of its weight (area ∝ weight), in 0.01 m steps; even
+    weights all get the middle radius."""
     W = np.asarray(W, float)
     top = W.max() if len(W) else 0.0
-    share = np.sqrt(W / top) if top > 0 else np.zeros_like(W)
+    if top <= 0 or np.ptp(W) <= 1e-9 * top:  # even weights (a resampled set) say nothing: a middle size
+        return np.full(len(W), round((smallest + largest) / 2, 2), np.float32)
+    share = np.sqrt(W / top)
     return np.asarray(np.round((smallest + (largest - smallest) * share) * 100) / 100, np.float32)
 
 

@@ -134,6 +134,8 @@ def test_beliefs_are_logged_at_the_prior_when_they_change_and_at_the_end(recorde
 def test_radii_grow_with_weight() -> None:
     sizes = radii(np.array([0.0, 0.25, 1.0]))
     assert sizes[0] == pytest.approx(0.03) and sizes[-1] == pytest.approx(0.12) and sizes[0] < sizes[1] < sizes[2]
+    even = radii(np.full(4, 0.25))
+    assert len(set(even.tolist())) == 1 and 0.05 < even[0] < 0.1  # even weights: one middle size
 
 
 def test_densities_are_images_in_the_frames_colour(recorded: tuple[Path, SeFM, Any], apartment: Map) -> None:
