@@ -37,7 +37,7 @@ from numpy.typing import NDArray
 from seal_cli.errors import SealError, Where
 from seal_cli.ros.messages import DETECTION_TYPES, POSE_TYPES, TF
 from seal_cli.ros.reader import Bag, open_bag
-from seal_cli.ros.transforms import TfTree, Track, apply, compose, quaternion_yaw
+from seal_cli.ros.transforms import TfTree, Track, apply, compose, invert, quaternion_yaw
 from seal_cli.sensing.observations import Observation
 
 __all__ = ["JUMP", "TOLERANCE", "Run", "read_run"]
@@ -257,8 +257,7 @@ def _place(bag: Bag, tree: TfTree, robot: Track | None, source: str, topic: str,
         if robot is None:
             span, (t, q) = tree.span(frame, base_frame), tree.lookup(frame, base_frame, s)
         else:
-            if robot.child not in tree.tracks:
-                tree.add(robot)  # the pose topic is the only link from the robot's frame to the others
+            _link(tree, robot)
             above = tree.span(frame, robot.parent)
             span = (max(robot.span[0], above[0]), min(robot.span[1], above[1]))
             t, q = compose(tree.lookup(frame, robot.parent, s), robot.at(s))
@@ -274,6 +273,22 @@ def _place(bag: Bag, tree: TfTree, robot: Track | None, source: str, topic: str,
     observations = [Observation((float(t[k, 0]), float(t[k, 1]), float(yaw[k])), points[int(k)],
                                 Where(f"{bag.path} {topic} message {k + 1}")) for k in order]
     return Run(tuple(observations), tuple(float(s[k]) for k in order), source, topic, int((~placed).sum()))
+
+
+def _link(tree: TfTree, robot: Track) -> None:
+    """Join the pose topic to the transforms: as the robot frame's parent when /tf gives it none; else, when
+    /tf does not reach the topic's frame (a localiser's ``map`` over ``odom → base_link``), as the link
+    from that frame to the robot frame's root at the topic's stamps — ``map → odom``, as a localiser
+    publishes it — so that detections in the robot's frames reach ``map`` too."""
+    if robot.child not in tree.tracks:
+        tree.add(robot)
+        return
+    if tree.connected(robot.parent, robot.child):
+        return
+    root = tree.root(robot.child)
+    below = tree.lookup(root, robot.child, robot.stamps)
+    t, q = compose((robot.t, robot.q), invert(below))
+    tree.add(Track(robot.parent, root, robot.stamps, t, q))
 
 
 def _in_frame(bag: Bag, tree: TfTree, frame: str, stamps: Array,

@@ -21,7 +21,7 @@ from numpy.typing import NDArray
 
 from seal_cli.errors import SealError
 
-__all__ = ["Track", "TfTree", "apply", "compose", "quaternion_yaw", "yaw_quaternion"]
+__all__ = ["Track", "TfTree", "apply", "compose", "invert", "quaternion_yaw", "yaw_quaternion"]
 
 Array = NDArray[np.float64]
 
@@ -47,6 +47,7 @@ def compose(first: tuple[Array, Array], second: tuple[Array, Array]) -> tuple[Ar
 
 
 def invert(pose: tuple[Array, Array]) -> tuple[Array, Array]:
+    """The pose of A in B from the pose of B in A."""
     t, q = pose
     conj = q * np.array([-1.0, -1.0, -1.0, 1.0])
     return -_rotate(conj, t), conj
@@ -131,6 +132,18 @@ class TfTree:
             chain.append(self.tracks[frame])
             frame = chain[-1].parent
         return chain
+
+    def root(self, frame: str) -> str:
+        """The frame at the top of ``frame``'s chain (itself if it has no parent)."""
+        chain = self._chain(frame)
+        return chain[-1].parent if chain else frame
+
+    def connected(self, a: str, b: str) -> bool:
+        try:
+            self.path(a, b)
+        except SealError:
+            return False
+        return True
 
     def path(self, target: str, source: str) -> tuple[list[Track], list[Track]]:
         """The tracks from ``source`` up to the common ancestor, and from ``target`` up to it."""

@@ -175,3 +175,22 @@ def test_a_single_moving_pose_places_only_what_is_near_its_stamp(tmp_path: Path)
     bag = write_run(tmp_path / "run.mcap", POSES[:1], [(10.2, "map", []), (30.0, "map", [])], pose_source="tf")
     run = read_run(bag)
     assert run.stamps == pytest.approx([10.2]) and run.skipped == 1
+
+
+def test_a_localiser_pose_over_odometry_transforms_carries_robot_frame_detections(tmp_path: Path) -> None:
+    """/robot_pose in map (a localiser), /tf only odom → base_link (drifted 1 m off): a detection in base_link
+    reaches map through the localiser's pose, not through the drifted odometry."""
+    from seal_cli.ros.messages import TF
+    from tests.ros.bagfiles import tf_message
+
+    path = tmp_path / "run.mcap"
+    store = store_for(path)
+    messages = run_messages(path, POSES, [(12.0, "base_link", [("cup", 1.0, 0.0, 0.0)])], pose_source="pose")
+    messages += [("/tf", TF, t, tf_message(store, t, [("odom", "base_link", x + 1.0, y, yaw)], False))
+                 for t, x, y, yaw in POSES]
+    write_bag(path, sorted(messages, key=lambda m: m[2]), store)
+    run = read_run(path)
+    assert run.pose_source == "/robot_pose"
+    x, y, yaw = expected_pose(12.0)
+    assert run.observations[0].pose == pytest.approx((x, y, yaw), abs=1e-5)
+    assert run.observations[0].detections[0][1] == pytest.approx((x + math.cos(yaw), y + math.sin(yaw)), abs=1e-5)
