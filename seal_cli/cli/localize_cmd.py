@@ -78,7 +78,7 @@ def localize(
     from seal_cli.fileio import atomic_output
     from seal_cli.frames.reading import load_library
     from seal_cli.maps.formats.map_server import load_map
-    from seal_cli.planning.plan import frames_to_localise
+    from seal_cli.pipeline import frames_to_localise
     from seal_cli.resources import map_path
     from seal_cli.sefm.filter import SeFM, SeFMConfig
     from seal_cli.sensing.observations import check_inside, read_observations, read_trajectory

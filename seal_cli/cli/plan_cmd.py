@@ -64,7 +64,7 @@ def plan(
 ) -> None:
     """Plan a command: the frames it commands, in order, with the frames their preconditions need."""
     from seal_cli.frames.reading import load_library
-    from seal_cli.planning.plan import plan_text
+    from seal_cli.pipeline import plan as plan_text
 
     library = load_library(framelib_paths(framelib))
     world = _load_world(map_name)

@@ -51,8 +51,9 @@ def run(
 
     from seal_cli.frames.reading import load_library
     from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
     from seal_cli.resources import map_path
-    from seal_cli.sim.agent import Budget, run_on_map
+    from seal_cli.sim.agent import Budget
     from seal_cli.sim.policies.baselines import make_policy
 
     library = load_library(framelib_paths(framelib))
