@@ -12,7 +12,8 @@ and ``seal run`` do, so that a program using seal as a library takes the same pa
     beliefs = pipeline.localise(the_map, ["stir the cup"], rng=np.random.default_rng(0))
 
 Where a function takes ``library=None`` it uses the shipped standard library
-(:func:`seal_cli.frames.reading.standard_library`, read once).
+(:func:`seal_cli.frames.reading.standard_library`, read once). Parsing and planning import no
+numpy: the maps, SeFM and the simulator are imported by the functions that need them.
 """
 
 from __future__ import annotations
@@ -26,7 +27,6 @@ from seal_cli.frames.model import Binding
 from seal_cli.frames.reading import standard_library
 from seal_cli.language.grounding import Vocabulary, vocabulary_of_map
 from seal_cli.language.parser import Parse, parse_command
-from seal_cli.maps.model import Map, Robot
 from seal_cli.planning import plan as planning
 from seal_cli.planning.plan import MAX_NODES, Plan
 from seal_cli.planning.problem import Things, build_problem, problem_of_text
@@ -35,6 +35,7 @@ from seal_cli.planning.state import State
 if TYPE_CHECKING:
     import numpy as np
 
+    from seal_cli.maps.model import Map
     from seal_cli.sefm.filter import Observer, SeFM, SeFMConfig
     from seal_cli.sim.agent import Agent, Budget, Policy, Record, Result
 
@@ -113,6 +114,7 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
     vocabulary — or ``vocabulary``, restricted to the map's classes — and grounded without the
     map's objects, which the robot must find; ``holding`` overrides what the map's robot holds.
     """
+    from seal_cli.maps.model import Robot
     from seal_cli.sim.agent import Agent, scene_from_map
 
     if holding is not None:

@@ -7,7 +7,6 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import typer
-from rich.table import Table
 
 from seal_cli.cli import FramelibOption, JsonOption, command, emit_json, framelib_paths, out
 
@@ -26,6 +25,8 @@ def _point(p: list[float]) -> str:
 
 def show(result: dict[str, Any]) -> None:
     """The frames and objects as two tables: top rooms, modes, best point."""
+    from rich.table import Table
+
     frames = Table(title=f"frames on {result['map']} after {result['updates']} updates "
                          f"({result['particles']} particles, seed {result['seed']})", title_justify="left")
     for column in ("frame", "rooms", "modes (weight room)", "best", "ess"):

@@ -12,7 +12,6 @@ import typer
 
 from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
 from seal_cli.errors import SealError, Where
-from seal_cli.fileio import read_json_lines
 
 if TYPE_CHECKING:
     from seal_cli.language.grounding import Vocabulary
@@ -168,6 +167,8 @@ def bench_parse(
     as_json: bool = JsonOption,
 ) -> None:
     """Score `seal parse` on parsing corpora with the shared scorers, and print their figures."""
+    from seal_cli.fileio import read_json_lines
+
     shared = _shared()
     folder = scorers or shared / "eval"
     corpora = list(corpus or [shared / "data" / "gpsr" / "dev.jsonl", shared / "data" / "alfred" /

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import typer
-from rich.table import Table
 
 from seal_cli.cli import JsonOption, bench_app, command, emit_json, err, out
 
@@ -17,6 +16,8 @@ def perf(
 ) -> None:
     """Updates per second of SeFM (grid kernel sums) and of the exact O(P²) reference, and the total variation
     distance between their weights on the same particles, at the paper's scale and a building's."""
+    from rich.table import Table
+
     from seal_cli.bench.perf import measure
     from seal_cli.bench.perf import scales as build_scales
     from seal_cli.errors import SealError
