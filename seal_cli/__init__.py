@@ -37,7 +37,8 @@ _HOMES = {
     "seal_cli.planning.plan": ("Plan", "Step"),
     "seal_cli.maps.model": ("Map",),
     "seal_cli.maps.formats.map_server": ("load_map",),
-    "seal_cli.sensing.sensor": ("Detection", "simulate_detections"),
+    "seal_cli.sensing.sensor": ("Detection",),
+    "seal_cli.sensing.model": ("simulate_detections",),
     "seal_cli.sensing.observations": ("Observation",),
     "seal_cli.sefm.filter": ("Observer", "SeFM", "SeFMConfig"),
     "seal_cli.pipeline": ("localise", "parse", "plan"),
@@ -65,8 +66,9 @@ if TYPE_CHECKING:
     from seal_cli.planning.plan import Plan, Step
     from seal_cli.planning.state import State
     from seal_cli.sefm.filter import Observer, SeFM, SeFMConfig
+    from seal_cli.sensing.model import simulate_detections
     from seal_cli.sensing.observations import Observation
-    from seal_cli.sensing.sensor import Detection, simulate_detections
+    from seal_cli.sensing.sensor import Detection
 
 
 def __getattr__(name: str) -> Any:

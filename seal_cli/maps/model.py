@@ -613,6 +613,22 @@ class Map:
     def _prior_cache(self) -> dict[str, Prior]:
         return {}
 
+    def target_cells(self, target: str) -> NDArray[np.intp]:
+        """The free cells a prior target (a room, a place or a place class) spreads its mass over,
+        sorted; computed once per target and shared by every class's prior."""
+        from seal_cli.maps.priors import target_cells
+
+        cache = self._target_cells_cache
+        if target not in cache:
+            cells = target_cells(self, target)
+            cells.setflags(write=False)
+            cache[target] = cells
+        return cache[target]
+
+    @cached_property
+    def _target_cells_cache(self) -> dict[str, NDArray[np.intp]]:
+        return {}
+
     def prior_target(self, name: str) -> tuple[str, tuple[int, ...]] | None:
         """What a prior's key names: ``("room", (index,))``, ``("place", indices)`` for a place name
         or ``("class", indices)`` for every place of a class; None if nothing. Rooms come first."""

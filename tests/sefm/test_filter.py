@@ -18,7 +18,7 @@ from seal_cli.pipeline import plan as plan_text
 from seal_cli.planning.state import State, robot_facts
 from seal_cli.sefm.filter import SeFM, SeFMConfig, frame_id
 from seal_cli.sefm.modes import room_masses
-from seal_cli.sensing.sensor import simulate_detections
+from seal_cli.sensing.model import simulate_detections
 
 SEEDS = range(5)
 
