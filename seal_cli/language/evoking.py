@@ -54,7 +54,7 @@ class Evoker:
     def clause(self, clause: Clause) -> None:
         self.clause_frames = len(self.frames)
         unit = clause.unit or str(clause.verb.info)
-        frames = self.library.evoked_by(unit)
+        frames = self.types.evoked_by(unit)
         used = [x for x in clause.items if isinstance(x, PP) and x.lead and x.prep == "with"]
         if used and not any("instrument" in self.types.roles(f) for f in frames):
             clause.held += [x.np for x in used]             # "use a card to turn on the lamp": hold it
@@ -66,11 +66,11 @@ class Evoker:
             clause.items = [x for x in clause.items if not any(x is r for r in clause.result)]
         best = self.best_fit(frames, clause)
         head = unit.split()[0]
-        if best is None and head != unit and self.library.evoked_by(head):
+        if best is None and head != unit and self.types.evoked_by(head):
             # "take the trash out to the garage": no frame of "take out" has a goal, one of "take" has
-            best = self.best_fit(self.library.evoked_by(head), clause)
+            best = self.best_fit(self.types.evoked_by(head), clause)
             if best is not None:
-                unit, frames = head, self.library.evoked_by(head)
+                unit, frames = head, self.types.evoked_by(head)
         if (best is None or "recipient" not in self.types.roles(best[1])) and self.recipient_said(clause):
             brings = self.bringing(frames)   # "grab me a beer", "grab a beer from the fridge for me": Bring
             found = self.best_fit(brings, clause) if brings else None
@@ -304,7 +304,7 @@ class Evoker:
         """The frame that cuts a thing into pieces, and its lexical unit: the one the piece's noun
         names ("slice"), else the one of "cut", whose result is a state of its theme (``sliced``)."""
         for unit in (noun, "cut"):
-            for frame in self.library.evoked_by(unit):
+            for frame in self.types.evoked_by(unit):
                 first = frame.elements[0].role if frame.elements else None
                 if any(not p.negated and p.args == (first,) for p in frame.postconditions):
                     return frame, unit
