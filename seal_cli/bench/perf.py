@@ -215,8 +215,8 @@ def measure_apart(name: str, seed: int = 0, framelib: Sequence[str] = ()) -> dic
 def _measure_named(name: str, seed: int, framelib: tuple[str, ...]) -> dict[str, Any]:
     from pathlib import Path
 
-    from seal_cli.frames.library import load_library
-    from seal_cli.maps.model import load_map
+    from seal_cli.frames.reading import load_library
+    from seal_cli.maps.formats.map_server import load_map
     from seal_cli.resources import map_path
 
     library = load_library([Path(p) for p in framelib] or None)

@@ -463,7 +463,7 @@ class Evoker:
         text = self.text[np.start:np.end]
         cls = None
         if self.vocabulary is not None and np.kind != "message":
-            cls = self.vocabulary.ground_np(np)
+            cls = np.ground(self.vocabulary)
         whole = self.cut_from(np) if cls is None else None
         if whole is not None:                   # "slice the bread, take a slice": a slice of the bread
             index, name = whole

@@ -203,7 +203,7 @@ class Roles:
     def class_or_head(self, np: NP) -> str:
         """The class the phrase denotes in the vocabulary, else its head."""
         if self.vocabulary is not None:
-            found = self.vocabulary.ground_np(np)
+            found = np.ground(self.vocabulary)
             if found:
                 return found
         return np.head_text

@@ -12,13 +12,16 @@ from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from lark import Token, Transformer, Tree
 
 from seal_cli.language.element_types import Types
 from seal_cli.language.english import PERSON_PRONOUNS, SUBORDINATORS
 from seal_cli.language.lexicon import Word, is_plural, noun_lemma
+
+if TYPE_CHECKING:
+    from seal_cli.language.grounding import Vocabulary
 
 __all__ = ["NP", "PP", "Clause", "Command", "Item", "Syntax", "end_of"]
 
@@ -54,6 +57,16 @@ class NP:
         if self.kind == "person" and self.head.tag == "NAME":
             return self.head.text
         return noun_lemma(self.head.text) if self.head.tag in ("WORD", "RESULT") else self.head.lower
+
+    def ground(self, vocabulary: Vocabulary) -> str | None:
+        """The class this noun phrase denotes in ``vocabulary`` (conjunctions: the first one)."""
+        if self.head is None or self.kind == "message":
+            return None
+        words = [w.text for w in self.mods] + [self.head.text]
+        of = []
+        if self.of is not None and self.of.head is not None:
+            of = [w.text for w in self.of.mods] + [self.of.head.text]
+        return vocabulary.ground_words(words, -1, of)
 
     def all_nps(self) -> Iterator[NP]:
         yield self

@@ -28,7 +28,6 @@ import math
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import InitVar, dataclass, field, replace
 from functools import cached_property
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -37,6 +36,7 @@ from numpy.typing import ArrayLike, NDArray
 from seal_cli.errors import SealError, SealErrors, Where
 from seal_cli.frames.taxonomy import check_class_name, class_key
 from seal_cli.maps.geometry import (
+    OUTSIDE,
     OccupancyGrid,
     as_points,
     box_polygon,
@@ -50,11 +50,9 @@ from seal_cli.maps.geometry import (
 if TYPE_CHECKING:
     from seal_cli.maps.priors import Prior
 
-__all__ = ["OUTSIDE", "Map", "MapWarning", "ObjectTruth", "Place", "Robot", "Room", "Sensor", "check_map_file",
-           "load_map", "prior_density", "prior_sampler", "sample_prior"]
+__all__ = ["OUTSIDE", "Map", "MapWarning", "ObjectTruth", "Place", "Robot", "Room", "Sensor", "prior_density",
+           "prior_sampler", "sample_prior"]
 
-OUTSIDE = "_outside"
-"""The name reported for points in no room."""
 OVERLAP_TOLERANCE = 0.01
 """Square metres two rooms may share before they count as overlapping (drawing slack)."""
 MAX_IMPLICIT_CELLS = 4_000_000
@@ -786,22 +784,7 @@ def _robot(m: Map) -> Iterator[SealError]:
                         m.where("robot", "pose"))
 
 
-# -- files and priors (implemented beside, re-exported here) --------------------------------------
-def load_map(path: str | Path) -> Map:
-    """Read a map file (see :mod:`seal_cli.maps.formats.map_server`); a broken map raises SealError(s)
-    with positions."""
-    from seal_cli.maps.formats.map_server import load_map as load
-
-    return load(path)
-
-
-def check_map_file(path: str | Path) -> list[SealError]:
-    """Every problem of a map file, located; empty if the map is good. Never raises."""
-    from seal_cli.maps.formats.map_server import check_map_file as check
-
-    return check(path)
-
-
+# -- priors (implemented beside, in seal_cli.maps.priors) ----------------------------------------
 def prior_sampler(m: Map, cls: str) -> Prior:
     """The prior of ``cls`` on map ``m`` (``.sample(n, rng)``, ``.density(points)``)."""
     return m.prior(cls)

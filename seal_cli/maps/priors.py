@@ -31,7 +31,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from seal_cli.maps.geometry import as_points
+from seal_cli.maps.geometry import OUTSIDE, as_points
 
 if TYPE_CHECKING:
     from seal_cli.maps.model import Map
@@ -102,8 +102,6 @@ class Prior:
 
     def room_masses(self) -> dict[str, float]:
         """The prior's mass per room name (and ``"_outside"``), exactly."""
-        from seal_cli.maps.model import OUTSIDE
-
         rooms = self.map.free_cell_room + 1
         size = len(self.map.rooms) + 1
         sums = np.bincount(rooms, minlength=size) * (self.uniform / max(self.free_cells, 1))

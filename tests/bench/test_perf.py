@@ -11,7 +11,7 @@ from typer.testing import CliRunner
 from seal_cli.bench.perf import building, measure, scales, tv_distance
 from seal_cli.cli import app
 from seal_cli.frames.library import Library
-from seal_cli.maps.model import load_map
+from seal_cli.maps.formats.map_server import load_map
 from seal_cli.resources import map_path
 
 
