@@ -182,7 +182,7 @@ def bench_parse(
     parse each corpus in process: commands per CPU-second, and clauses swallowed into an element
     (refused by the parser, or left silently: the target is zero)."""
     from seal_cli.bench.parsing import commands_of, measure
-    from seal_cli.frames.library import load_library
+    from seal_cli.frames.reading import load_library
 
     library = load_library()
     shared = _shared()
