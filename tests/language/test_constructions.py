@@ -95,3 +95,26 @@ def test_a_noun_that_is_a_verb_stays_a_noun(library: Library) -> None:
 def test_no_question_without_a_clause(library: Library) -> None:
     with pytest.raises(CommandError):
         parse_command("what?", library)
+
+
+def test_go_with_someone_is_follow_and_get_to_is_go(library: Library) -> None:
+    assert frames("go with Lena to the car", library) == [("Follow", {"theme": "Lena", "goal": "car"})]
+    assert frames("come with me", library) == [("Follow", {"theme": "me"})]
+    assert frames("get to the attic", library) == [("Go", {"goal": "attic"})]
+    assert frames("get to know Lena", library)[0][0] == "Meet"
+    assert frames("get the mug to the sink", library)[0][0] == "Bring"
+    assert frames("take Lena", library) == [("Guide", {"theme": "Lena"})]
+
+
+def test_a_name_in_lower_case_after_to_is_a_recipient(library: Library) -> None:
+    (bring,) = parse_command("deliver the stapler to jonas", library).frames
+    assert bring.elements["recipient"].head == "jonas" and "goal" not in bring.elements
+    (place,) = parse_command("bring the bowl to fridge", library).frames     # a thing the library knows
+    assert place.elements["goal"].head == "fridge"
+    (bring,) = parse_command("deliver the stapler to robin", library).frames  # a word of the dictionary (a bird)
+    assert bring.elements["goal"].head == "robin"
+
+
+def test_a_question_of_any_shape_is_what_to_tell(library: Library) -> None:
+    (tell,) = parse_command("which of the jars in the cupboard is the heaviest?", library).frames
+    assert tell.elements["message"].text == "which of the jars in the cupboard is the heaviest"

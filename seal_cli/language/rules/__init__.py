@@ -104,6 +104,7 @@ WORDS: tuple[Rule, ...] = (
     open_words.RESULT,
     open_words.ADVERB,
     open_words.NAME,
+    open_words.LOWER_CASE_NAME,
     open_words.WORD,
 )
 """The word itself: numbers, function words, open-class words; the last always matches."""

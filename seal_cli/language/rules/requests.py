@@ -68,9 +68,9 @@ def _question(s: State, i: int) -> Match | None:
     nxt = words[i + 1].lower
     if nxt not in ("is", "are", "'s", "was", "were") and not nxt.isalpha():
         return None
-    w = words[i]
-    return Match(1, (_unsaid(w.start, Tag.VERB, QUESTION_MEANS), w.tagged(Tag.WH)), expect=False,
-                 verb=QUESTION_MEANS, using=False)
+    end = s.speech_end(i)                         # the question, whatever its shape, is what to tell
+    return Match(end - i, (_unsaid(words[i].start, Tag.VERB, QUESTION_MEANS), s.emit(i, end - i, Tag.SAID).words[0]),
+                 expect=False, verb=QUESTION_MEANS, using=False)
 
 
 def _where(s: State, i: int) -> Match | None:
@@ -119,7 +119,8 @@ def _let_know(s: State, i: int) -> Match | None:
 
 
 QUESTION = Rule("bare question", _question, (
-    Example("What's the biggest thing on the shelf?", "What", Tag.WH),
+    Example("What's the biggest thing on the shelf?", "What 's the biggest thing on the shelf", Tag.SAID),
+    Example("which of the bottles in the pantry is the biggest?", "", Tag.VERB),
     Example("who is in the kitchen?", "", Tag.VERB),
 ), QUESTION_WORDS, "a question where a command starts: 'tell me' and the question")
 WHERE = Rule("where is", _where, (
