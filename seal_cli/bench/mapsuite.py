@@ -70,7 +70,7 @@ def run_layout(m: Map, layout: int, commands: Sequence[str], library: Library, p
                seed: int = 0, particles: int = 200) -> list[Outcome]:
     """Every command with every policy on one layout of the map."""
     from seal_cli.sim.agent import run_on_map
-    from seal_cli.sim.policies.baselines import make_policy
+    from seal_cli.sim.policies import make_policy
 
     base = layout_seed(seed, layout, m.name)
     world = sample_layout(m, np.random.default_rng(base))

@@ -95,7 +95,7 @@ def run_episode(episode: Episode, suite: Suite, library: Library, policies: Sequ
                 seed: int = 0, particles: int = 200) -> list[Outcome]:
     """Every policy on one episode."""
     from seal_cli.sim.agent import Agent, Budget
-    from seal_cli.sim.policies.baselines import make_policy
+    from seal_cli.sim.policies import make_policy
 
     plan = suite.floor_plans[episode.floor_plan]
     outcomes = []

@@ -1,7 +1,8 @@
-"""The coverage searcher: knows nothing of where things usually are, and goes to the nearest frontier
-of what it has seen (or the nearest receptacle it has not looked into) until what it needs is in view.
+"""``coverage``: the searcher that knows nothing of where things usually are.
 
-SeFM falls back on it when every mode has been looked at; the other baselines share its helpers.
+It goes to the nearest frontier of what it has seen (or the nearest receptacle it has not looked
+into) until what it needs is in view. The helpers for opening receptacles and thinning candidate
+cells are shared with the other policies.
 """
 
 from __future__ import annotations
@@ -12,9 +13,10 @@ import numpy as np
 
 from seal_cli.frames.model import Binding
 from seal_cli.sim.agent import Agent, Known, View
+from seal_cli.sim.policies.base import Policy
 from seal_cli.sim.world import Detection
 
-__all__ = ["CoveragePolicy", "closed_unopened", "container_views"]
+__all__ = ["CoveragePolicy", "closed_unopened", "container_views", "one_per_quarter_metre"]
 
 
 def closed_unopened(agent: Agent) -> list[Known]:
@@ -33,7 +35,7 @@ def container_views(agent: Agent, field_: np.ndarray, containers: Sequence[Known
     return views
 
 
-def _one_per_quarter_metre(cells: np.ndarray, resolution: float) -> np.ndarray:
+def one_per_quarter_metre(cells: np.ndarray, resolution: float) -> np.ndarray:
     """Which of the cells (rows of i, j) lie on a lattice of about 0.25 m: all of them on a grid that
     coarse or coarser, one in ``stride²`` on a finer one. The searchers that pay a shortest-path
     field or a line-of-sight query per candidate cell thin their candidates with it."""
@@ -43,7 +45,7 @@ def _one_per_quarter_metre(cells: np.ndarray, resolution: float) -> np.ndarray:
     return (cells[:, 0] % stride == 0) & (cells[:, 1] % stride == 0)
 
 
-class CoveragePolicy:
+class CoveragePolicy(Policy):
     """Go to the nearest frontier of the seen area, or the nearest unopened receptacle.
 
     What is to be seen is every point of the map within sensor range of free space (things stand
@@ -110,7 +112,7 @@ class CoveragePolicy:
         points, cells = grid.free_points, grid.free_cells
         here = agent.robot_cell()
         candidate = np.isfinite(costs) & ~((cells[:, 0] == here[0]) & (cells[:, 1] == here[1]))
-        candidate &= _one_per_quarter_metre(cells, grid.resolution)
+        candidate &= one_per_quarter_metre(cells, grid.resolution)
         order = np.flatnonzero(candidate)
         order = order[np.argsort(costs[order], kind="stable")]
         tree = cKDTree(self.lattice[unseen])

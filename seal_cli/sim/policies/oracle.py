@@ -1,19 +1,4 @@
-"""The searchers SeFM is measured against, on the same episodes and the same execution machinery.
-
-- :class:`ObjectOnlyPolicy` (SLiM-style, after Zeng et al.): one belief per object class, from
-  the same priors and observations, searched for one at a time in plan order: it looks where the
-  *object* the current frame needs is believed to be, with no frame relations and no
-  precondition context.
-- :class:`CoveragePolicy`: knows nothing of where things usually are; it goes to the nearest
-  frontier of what it has seen (or the nearest receptacle it has not looked into) until what it
-  needs is in view.
-- :class:`OraclePolicy`: knows where everything is, including what closed receptacles hold, and
-  chooses the instances that make the whole remaining plan shortest: a lower bound on the path.
-- ``uniform``: SeFM without priors (:class:`~seal_cli.sim.policies.sefm.SeFMPolicy` with ``priors=False``).
-
-Every policy answers one question, :meth:`next_view`: from where to look next for what the
-current frame needs (see :class:`seal_cli.sim.agent.Policy`).
-"""
+"""``oracle``: knows where everything is, including what closed receptacles hold: a lower bound on the path."""
 
 from __future__ import annotations
 
@@ -27,14 +12,14 @@ from seal_cli.frames.model import Binding
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.sim.agent import Agent, Known, View
 from seal_cli.sim.navigation import Cell
-from seal_cli.sim.policies.coverage import CoveragePolicy, _one_per_quarter_metre
-from seal_cli.sim.policies.sefm import SeFMPolicy
+from seal_cli.sim.policies.base import Policy
+from seal_cli.sim.policies.coverage import one_per_quarter_metre
 from seal_cli.sim.world import Detection
 
-__all__ = ["POLICIES", "CoveragePolicy", "ObjectOnlyPolicy", "OraclePolicy", "make_policy"]
+__all__ = ["OraclePolicy", "navigation_targets"]
 
 
-class OraclePolicy:
+class OraclePolicy(Policy):
     """Knows the world; picks the instances, and the poses to act from, that make the remaining plan
     shortest (exhaustively over the nearest few instances of each class, and exactly over poses by
     dynamic programming): the lower bound on the path."""
@@ -56,7 +41,7 @@ class OraclePolicy:
         return None  # it knows every instance there is; if none will do, there is none
 
     def choose(self, agent: Agent, cls: str, candidates: Sequence[Known]) -> str | None:
-        targets = [agent.class_of(t) for t in _navigation_targets(agent)]
+        targets = [agent.class_of(t) for t in navigation_targets(agent)]
         if not targets or targets[0] != cls:
             targets = [cls, *targets]
         held = agent.held()
@@ -99,7 +84,7 @@ class OraclePolicy:
         a few centimetres of path)."""
         if known.id not in self._cells:
             cells = agent.stand_cells(known)
-            thin = cells[_one_per_quarter_metre(cells, agent.grid.resolution)]
+            thin = cells[one_per_quarter_metre(cells, agent.grid.resolution)]
             self._cells[known.id] = thin if len(thin) else cells
         return self._cells[known.id]
 
@@ -130,40 +115,11 @@ class OraclePolicy:
         return float(total[k]), (int(first[k, 0]), int(first[k, 1]))
 
 
-def _navigation_targets(agent: Agent) -> list[str]:
+def navigation_targets(agent: Agent) -> list[str]:
     """The names the remaining plan will drive to, in order."""
     out: list[str] = []
-    for binding in getattr(agent, "remaining", []):
+    for binding in agent.remaining:
         for action in binding.actions:
             if action.name == "navigate":
                 out.append(class_key(action.args[0]))
     return out
-
-
-class ObjectOnlyPolicy(SeFMPolicy):
-    """SLiM-style search: the belief of the object the current frame needs, and nothing else."""
-
-    name = "object_only"
-    use_frames = False
-
-
-POLICIES = ("sefm", "object_only", "coverage", "oracle")
-
-
-def make_policy(name: str, particles: int = 200) -> SeFMPolicy | CoveragePolicy | OraclePolicy:
-    """A fresh policy by name: sefm, object_only, coverage, oracle or uniform."""
-    if name == "sefm":
-        return SeFMPolicy(particles=particles)
-    if name == "uniform":
-        policy = SeFMPolicy(particles=particles, priors=False)
-        policy.name = "uniform"
-        return policy
-    if name == "object_only":
-        return ObjectOnlyPolicy(particles=particles)
-    if name == "coverage":
-        return CoveragePolicy()
-    if name == "oracle":
-        return OraclePolicy()
-    from seal_cli.errors import SealError
-
-    raise SealError(f"unknown policy {name!r}; known: {', '.join((*POLICIES, 'uniform'))}")
