@@ -511,20 +511,27 @@ class State:
         return False
 
     def purpose(self, i: int) -> bool:
-        """Whether "to" at ``i`` starts a clause of purpose ("... to put it in the sink")."""
-        if i + 1 < len(self.words) and self.using and self.verb_at(i + 1):
+        """Whether "to" at ``i`` starts a clause of purpose ("... to put it in the sink"). With its object
+        unsaid ("put it in the fridge *to chill*", "pick up a bowl *to hold up* over the bin") or a bare
+        one ("pick up the knife *to slice bread*") only when the verb names no thing the library knows
+        ("move it to *microwave*" is a place)."""
+        words = self.words
+        if i + 1 < len(words) and self.using and self.verb_at(i + 1):
             return True                    # "use a knife to slice apples"
-        if i + 2 >= len(self.words) or not self.out or self.out[-1].tag in ("VERB", "PREP"):
+        if i + 1 >= len(words) or not self.out or self.out[-1].tag in ("VERB", "PREP"):
             return False
         found = self.verb_at(i + 1)
         if not found:
             return False
         after = i + 1 + found[1]
-        if after >= len(self.words):
-            return False
-        nxt = self.words[after].lower
-        return nxt in DETERMINERS or nxt in POSSESSIVES or nxt in PRONOUNS or capitalised(self.words[after]) or (
-            nxt in PREPOSITIONS and self.np_starts(after + match_phrase(self.words, after, PREPOSITIONS)))
+        thing = words[i + 1].lower in self.lexicon.things or self.out[-1].tag not in ("WORD", "NAME", "PRON",
+                                                                                       "PARTICLE", "LABEL")
+        if after >= len(words) or words[after].lower in END_MARKS or words[after].lower in (",", ";", "and", "then"):
+            return not thing and found[2] is None
+        nxt = words[after].lower
+        return nxt in DETERMINERS or nxt in POSSESSIVES or nxt in PRONOUNS or capitalised(words[after]) or (
+            nxt in PREPOSITIONS and self.np_starts(after + match_phrase(words, after, PREPOSITIONS))) or \
+            not thing and (nxt in PARTICLES or self.noun_follows(after) and nxt not in self.lexicon.units)
 
     def np_starts(self, i: int) -> bool:
         if i >= len(self.words):

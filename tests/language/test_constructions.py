@@ -118,3 +118,10 @@ def test_a_name_in_lower_case_after_to_is_a_recipient(library: Library) -> None:
 def test_a_question_of_any_shape_is_what_to_tell(library: Library) -> None:
     (tell,) = parse_command("which of the jars in the cupboard is the heaviest?", library).frames
     assert tell.elements["message"].text == "which of the jars in the cupboard is the heaviest"
+
+
+def test_a_clause_of_purpose_may_leave_its_object_unsaid_or_bare(library: Library) -> None:
+    assert [f for f, _ in frames("put the jug in the fridge to chill", library)] == ["Place", "Cool"]
+    assert [f for f, _ in frames("pick up the knife to slice bread", library)] == ["Pick", "Slice"]
+    assert [f for f, _ in frames("grab the book to examine", library)] == ["Pick", "LookAt"]
+    assert [f for f, _ in frames("move the pan to microwave", library)] == ["Place"]     # a thing: a place
