@@ -37,7 +37,7 @@ def test_where_and_is_there_ask_to_find(library: Library) -> None:
 
 def test_a_question_after_a_phrase_said_first(library: Library) -> None:
     (tell,) = parse_command("In the garage, what is on the workbench?", library).frames
-    assert tell.frame == "Tell" and tell.elements["message"].text == "what is on the workbench"
+    assert tell.frame == "Tell" and tell.elements["message"].text == "In the garage, what is on the workbench"
     (count,) = parse_command("Of the guests in the lounge, how many are dancing?", library).frames
     assert count.frame == "Count" and count.elements["ground"].head == "lounge"
     assert frames("From the pantry, bring me the flour", library) == [

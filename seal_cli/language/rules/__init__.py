@@ -44,6 +44,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     lead_ins.POLITE_FRAME,
     politeness.VOCATIVE_NAME,
     requests.QUESTION,
+    requests.FRONTED_QUESTION,
     requests.WHERE,
     requests.REQUEST,
     requests.LET_KNOW_RULE,
