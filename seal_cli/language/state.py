@@ -38,7 +38,9 @@ from seal_cli.language.english import (
     PREPOSITIONS,
     PRONOUNS,
     QUANTIFIERS,
+    QUESTION_WORDS,
     RELATIVES,
+    REQUESTS,
     SEPARATOR_WORDS,
     STATEMENT_LINKS,
     STATES_DONE,
@@ -51,6 +53,7 @@ from seal_cli.language.english import (
     VAGUE_NUMBERS,
     VOCATIVES,
     WH_WORDS,
+    WHERE_QUESTIONS,
 )
 from seal_cli.language.morphology import gerund_lemma, is_adjective, is_adverb, is_plural, verb_lemma
 from seal_cli.language.rule import Match
@@ -449,12 +452,21 @@ class State:
         while end + 1 < len(words) and words[end + 1].lower in END_MARKS:
             end += 1
         if not any(t.tag == "VERB" for t in self.out) and \
-                not any(self.verb_at(k) is not None for k in range(end + 1, len(words))):
+                not any(self.verb_at(k) is not None or self.asks_at(k) for k in range(end + 1, len(words))):
             return None                                  # no sentence holds a command: the error says so
         return self._aside(i, end + 1 - i, (words[i].start, words[end].end))
 
     def _aside(self, i: int, n: int, *remarks: tuple[int, int]) -> Match:
         return Match(n, (merge(self.words, i, n, Tag.POLITE),), remarks=remarks)
+
+    def asks_at(self, k: int) -> bool:
+        """Whether a request said without an imperative may start at ``k`` (a bare question, "where is",
+        "I'd like"; :mod:`seal_cli.language.rules.requests` reads them)."""
+        words = self.words
+        if words[k].lower in QUESTION_WORDS:
+            return True
+        return any(all(k + m < len(words) and words[k + m].lower == part for m, part in enumerate(phrase.split()))
+                   for phrase in (*WHERE_QUESTIONS, *REQUESTS) if phrase.split()[0] == words[k].lower)
 
     def until_place(self, i: int) -> bool:
         """Whether "until"/"till" at ``i`` says how far a motion goes: after a verb of a frame with a goal,
