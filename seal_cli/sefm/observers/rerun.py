@@ -14,7 +14,7 @@ entity                                 what
 ``map/rooms``, ``map/places``          labelled outlines and places (static)
 ``/`` (AnnotationContext)              one id, label and colour per object class and frame
 ``robot/pose``                         where the robot is (a point) and which way it faces (an arrow)
-``robot/path``                         where it has been (LineStrips2D)
+``robot/path``                         where it has been (LineStrips2D, a point every 0.25 m)
 ``objects/<class>/particles``          each object's particles: its class id, radius by weight
 ``frames/<frame id>/particles``        each frame's particles: its class id, radius by weight γ
 ``frames/<frame id>/density``          the frame's target density γ as an image in its colour
@@ -62,6 +62,9 @@ DETECTION = (255, 127, 14)
 CHANGE = 0.05
 """Total variation (over 0.5 m cells) by which a belief must change before its cloud is logged again."""
 CELL = 0.5
+TRAIL_STEP = 0.25
+"""The path gains a point when the robot has moved this far (m) from the last one: a long bag's path
+stays a few hundred points, logged a few hundred times, not one point and one log per update."""
 DENSITY_CELL = 0.2
 """The density images' cell (m)."""
 
@@ -187,7 +190,7 @@ class RerunRecorder:
         s.log("robot/pose", rr.Points2D([[x, y]], radii=0.15, colors=[ROBOT], draw_order=DRAW["robot"]),
               rr.Arrows2D(origins=[[x, y]], vectors=[[0.5 * np.cos(yaw), 0.5 * np.sin(yaw)]], colors=[ROBOT],
                           draw_order=DRAW["robot"]))
-        if not self.trail or np.hypot(x - self.trail[-1][0], y - self.trail[-1][1]) > 1e-3:
+        if not self.trail or np.hypot(x - self.trail[-1][0], y - self.trail[-1][1]) >= TRAIL_STEP:
             self.trail.append((x, y))
             if len(self.trail) > 1:
                 s.log("robot/path", rr.LineStrips2D([self.trail], colors=[ROBOT], draw_order=DRAW["robot"]))
