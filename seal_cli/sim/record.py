@@ -73,30 +73,35 @@ def write_rrd(path: str | Path, agent: Agent) -> None:
                 thing = agent.world.items[item]
                 stream.log(f"observations/{thing.key}", rr.Points2D([thing.at], radii=0.1, colors=[SEEN],
                                                                    draw_order=DRAW["observations"]))
-        shown: dict[str, dict[int, float]] = {}
+        shown: dict[str, dict[int, float]] = {}  # what each cloud's masses were when it was last logged
+
+        def changed(key: str, X: np.ndarray, W: np.ndarray, last: bool) -> bool:
+            masses = cell_masses(X, W, m.bounds)
+            if last or key not in shown or total_variation(masses, shown[key]) > CHANGE:
+                shown[key] = masses
+                return True
+            return False
+
+        named: set[str] = set()  # the metrics whose series names went with their first values
         for k, cloud in enumerate(clouds):
             stream.set_time("step", sequence=cloud["step"])
             last = k == len(clouds) - 1
             if cloud["frame_particles"] is not None and cloud["frame"]:
                 X, W = cloud["frame_particles"]
                 fid = cloud["frame"]
-                stream.log(f"metrics/rooms/{fid}", rr.Scalars(list(room_masses(m, X, W).values())),
-                           *([rr.SeriesLines(names=[*m.room_names, "_outside"])] if f"rooms/{fid}" not in shown
-                             else []))
-                shown.setdefault(f"rooms/{fid}", {})
-                masses = cell_masses(X, W, m.bounds)
-                if last or f"frames/{fid}" not in shown or total_variation(masses, shown[f"frames/{fid}"]) > CHANGE:
-                    shown[f"frames/{fid}"] = masses
+                lines = [] if fid in named else [rr.SeriesLines(names=[*m.room_names, "_outside"])]
+                named.add(fid)
+                stream.log(f"metrics/rooms/{fid}", rr.Scalars(list(room_masses(m, X, W).values())), *lines)
+                if changed(f"frames/{fid}", X, W, last):
                     stream.log(f"frames/{fid}/particles", rr.Points2D(X, radii=radii(W), class_ids=[classes.ids[fid]],
                                                                      draw_order=DRAW["frames"]))
             if cloud["objects"]:
-                stream.log("metrics/ess", rr.Scalars([float(ess(cloud["objects"].get(c, (None, np.ones(1)))[1]))
-                                                      for c in objects]),
-                           *([rr.SeriesLines(names=objects)] if k == 0 else []))
+                lines = [] if "ess" in named else [rr.SeriesLines(names=objects)]
+                named.add("ess")
+                stream.log("metrics/ess", rr.Scalars([float(ess(cloud["objects"][c][1])) if c in cloud["objects"]
+                                                      else 0.0 for c in objects]), *lines)
             for cls, (X, W) in cloud["objects"].items():
-                masses = cell_masses(X, W, m.bounds)
-                if last or f"objects/{cls}" not in shown or total_variation(masses, shown[f"objects/{cls}"]) > CHANGE:
-                    shown[f"objects/{cls}"] = masses
+                if changed(f"objects/{cls}", X, W, last):
                     stream.log(f"objects/{cls}/particles", rr.Points2D(X, radii=radii(W),
                                                                       class_ids=[classes.ids[cls]],
                                                                       draw_order=DRAW["objects"]))
