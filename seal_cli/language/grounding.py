@@ -38,6 +38,7 @@ from typing import TYPE_CHECKING, Any
 from seal_cli.errors import SealError, Where
 from seal_cli.frames.taxonomy import class_key, class_words
 from seal_cli.language.lexicon import noun_lemma
+from seal_cli.language.wordusage import WordUsage, shipped_word_usage
 
 if TYPE_CHECKING:
     from seal_cli.language.parser import NP
@@ -77,6 +78,8 @@ class Vocabulary:
     classes: tuple[str, ...]
     synonyms: tuple[tuple[str, ...], ...] = ()
     where: Where | None = field(default=None, compare=False)
+    usage: WordUsage | None = field(default=None, compare=False)
+    """Which class people mean by a word (:mod:`~seal_cli.language.wordusage`); None: the shipped tables."""
 
     def __post_init__(self) -> None:
         if not self.synonyms:
@@ -85,11 +88,28 @@ class Vocabulary:
             raise SealError("a vocabulary needs one list of synonyms per class", self.where)
 
     @classmethod
-    def of(cls, names: Iterable[str], synonyms: Mapping[str, Sequence[str]] | None = None) -> Vocabulary:
+    def of(cls, names: Iterable[str], synonyms: Mapping[str, Sequence[str]] | None = None,
+           usage: WordUsage | None = None) -> Vocabulary:
         """A vocabulary from class names (and optionally synonyms by class), duplicates dropped."""
         unique = tuple(dict.fromkeys(n for n in names if class_words(n)))
         extra = synonyms or {}
-        return cls(unique, tuple(tuple(extra.get(n, ())) for n in unique))
+        return cls(unique, tuple(tuple(extra.get(n, ())) for n in unique), usage=usage)
+
+    def with_usage(self, usage: WordUsage) -> Vocabulary:
+        """This vocabulary grounding with these word statistics (``WordUsage()``: the rules alone)."""
+        return Vocabulary(self.classes, self.synonyms, self.where, usage)
+
+    @cached_property
+    def _usage(self) -> WordUsage:
+        return shipped_word_usage() if self.usage is None else self.usage
+
+    @cached_property
+    def _present(self) -> dict[str, str]:
+        """Class key → class, for the statistics (which count by class key)."""
+        present: dict[str, str] = {}
+        for name in self.classes:
+            present.setdefault(class_key(name), name)
+        return present
 
     @cached_property
     def _names(self) -> tuple[tuple[int, tuple[str, ...]], ...]:
@@ -145,7 +165,7 @@ class Vocabulary:
             if len(words) > 1 and noun_lemma(words[-1]) in PORTIONS and whole not in keys:
                 names += [whole.replace("_", " "), *synonyms.get(whole, ())]
             added.append(tuple(dict.fromkeys(n for n in names if class_key(n) != class_key(name))))
-        return Vocabulary(self.classes, tuple(added), self.where)
+        return Vocabulary(self.classes, tuple(added), self.where, self.usage)
 
     def restricted_to(self, classes: Iterable[str]) -> Vocabulary:
         """The vocabulary of a scene: only the given classes (those present), each with the names
@@ -161,7 +181,7 @@ class Vocabulary:
                 names.setdefault(present[key], []).extend(synonyms)
         for cls in present.values():
             names.setdefault(cls, [])
-        return Vocabulary.of(list(names), names)
+        return Vocabulary.of(list(names), names, self.usage)
 
     def __len__(self) -> int:
         return len(self.classes)
@@ -180,6 +200,8 @@ class Vocabulary:
                 found = self._ground((*words[:end - 1], stem, *words[end:]), end, of) if len(stem) > 1 else None
                 if found is not None:
                     break
+        if words and not of and end == len(words) and words[-1] not in PORTIONS:
+            found = self._usage.choose(words, self._present, found)
         return found
 
     def _ground(self, words: tuple[str, ...], end: int, of: tuple[str, ...]) -> str | None:

@@ -1,0 +1,152 @@
+"""Which class people mean by a word: grounding statistics learned from a train split.
+
+The rules of :mod:`seal_cli.language.grounding` read a phrase's words against class names;
+they cannot know that people who say "the sink" in an AI2-THOR kitchen mean its ``SinkBasin``,
+"the chair" in a living room its ``ArmChair``, or "a knife" the ``ButterKnife`` more often than
+the ``Knife``. A :class:`WordUsage` table holds, for each wording (a noun phrase's head, and its
+last modifier with the head), how often people meant each class, counted on a train split
+(``scripts/build_word_classes.py`` rebuilds the shipped table from ALFRED's train goals).
+
+Grounding asks it among the classes *present* (the vocabulary: a scene's classes, or all
+classes when no scene is known), so "the table" in a room with a side table and no dining table
+is the side table even when dining tables are the more usual meaning. The rules stay in charge
+unless the data is clear (:meth:`WordUsage.choose`): at least ``MIN_SUPPORT`` observations of
+the wording among the present classes, and the learned class meant at least ``MIN_RATIO`` times
+as often as the class the rules found. A class the statistics never saw (no class of the split's
+vocabulary: a GPSR arena's "table") is never overridden.
+
+Tables are JSON files (``format: seal-word-classes/1``) in the folder ``word_classes/`` beside
+this module; every file there is read and their counts are added.
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+from functools import cache
+from pathlib import Path
+from types import MappingProxyType
+from typing import Any
+
+from seal_cli.errors import SealError, Where
+from seal_cli.frames.taxonomy import class_key
+
+__all__ = ["FORMAT", "MIN_RATIO", "MIN_SUPPORT", "SHIPPED", "WordUsage", "load_word_usage", "shipped_word_usage"]
+
+FORMAT = "seal-word-classes/1"
+SHIPPED = Path(__file__).resolve().parent / "word_classes"
+MIN_SUPPORT = 5
+"""Observations of a wording (among the present classes) below which the rules decide alone."""
+MIN_RATIO = 2.0
+"""How many times as often the learned class must be meant as the rules' class to replace it."""
+
+
+@dataclass(frozen=True)
+class WordUsage:
+    """Counts of the class meant, by wording (lemmas joined by spaces), over a known set of classes.
+
+    ``counts[wording][class key]``; ``universe`` the class keys the counts were taken over (the
+    split's vocabulary): only a class among them can be overridden by the statistics."""
+
+    counts: Mapping[str, Mapping[str, int]] = field(default_factory=dict)
+    universe: frozenset[str] = frozenset()
+    sources: tuple[str, ...] = ()
+    min_support: int = MIN_SUPPORT
+    min_ratio: float = MIN_RATIO
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "counts", MappingProxyType({w: MappingProxyType(dict(c))
+                                                             for w, c in self.counts.items()}))
+
+    def __bool__(self) -> bool:
+        return bool(self.counts)
+
+    def merged(self, other: WordUsage) -> WordUsage:
+        """The two tables' counts added."""
+        counts: dict[str, dict[str, int]] = {w: dict(c) for w, c in self.counts.items()}
+        for wording, by_class in other.counts.items():
+            mine = counts.setdefault(wording, {})
+            for key, n in by_class.items():
+                mine[key] = mine.get(key, 0) + n
+        return WordUsage(counts, self.universe | other.universe, self.sources + other.sources,
+                         self.min_support, self.min_ratio)
+
+    def choose(self, lemmas: tuple[str, ...], present: Mapping[str, str], rule: str | None) -> str | None:
+        """The class meant by a phrase whose words up to the head are ``lemmas``, among ``present``
+        (class key → the vocabulary's spelling), given what the rules found (``rule``, or None).
+
+        The longest wording with support decides: the last modifier and the head, else the head. A
+        wording shorter than the class name the rules matched in the phrase ("coffee table" →
+        ``CoffeeTable``; "table" alone favours dining tables) keeps the rules' class."""
+        if not self.counts or not lemmas:
+            return rule
+        rule_key = class_key(rule) if rule is not None else None
+        if rule_key is not None and rule_key not in self.universe:
+            return rule                                   # a class the statistics never saw
+        for size in (2, 1):
+            if len(lemmas) < size:
+                continue
+            by_class = self.counts.get(" ".join(lemmas[-size:]))
+            if not by_class:
+                continue
+            seen = [(n, key) for key, n in by_class.items() if key in present]
+            support = sum(n for n, _ in seen)
+            if support < self.min_support:
+                continue
+            if rule_key is not None and size < len(rule_key.split("_")) \
+                    and set(rule_key.split("_")) <= set(lemmas):
+                return rule                               # the rules matched more of the phrase
+            n_best, best = max(seen, key=lambda s: (s[0], s[1] == rule_key))
+            n_rule = by_class.get(rule_key, 0) if rule_key is not None else 0
+            if rule_key is None:
+                return present[best] if 2 * n_best >= support else None
+            if best != rule_key and n_best >= self.min_ratio * n_rule:
+                return present[best]
+            return rule
+        return rule
+
+
+def _table(data: Any, where: Where) -> WordUsage:
+    if not isinstance(data, dict) or data.get("format") != FORMAT:
+        raise SealError(f"not a word-class table (expected \"format\": \"{FORMAT}\")", where)
+    classes, words = data.get("classes"), data.get("words")
+    if not isinstance(classes, list) or not all(isinstance(c, str) and c for c in classes):
+        raise SealError("\"classes\" must be a list of class names", where)
+    if not isinstance(words, dict):
+        raise SealError("\"words\" must map each wording to {class: count}", where)
+    universe = frozenset(class_key(c) for c in classes)
+    counts: dict[str, dict[str, int]] = {}
+    for wording, by_class in words.items():
+        if not isinstance(by_class, dict) or not all(
+                isinstance(c, str) and isinstance(n, int) and not isinstance(n, bool) and n > 0
+                for c, n in by_class.items()):
+            raise SealError(f"wording {wording!r}: expected {{class: positive count}}", where)
+        unknown = [c for c in by_class if class_key(c) not in universe]
+        if unknown:
+            raise SealError(f"wording {wording!r}: class {unknown[0]!r} is not in \"classes\"", where)
+        counts[" ".join(str(wording).lower().split())] = {class_key(c): n for c, n in by_class.items()}
+    return WordUsage(counts, universe, (str(data.get("source", where.file)),))
+
+
+def load_word_usage(paths: Iterable[str | Path]) -> WordUsage:
+    """The word-class tables in these files (or folders of ``*.json``), their counts added."""
+    from seal_cli.fileio import read_text
+
+    usage = WordUsage()
+    for path in paths:
+        path = Path(path)
+        for file in sorted(path.glob("*.json")) if path.is_dir() else [path]:
+            where = Where(str(file))
+            try:
+                data = json.loads(read_text(file))
+            except json.JSONDecodeError as err:
+                raise SealError(f"not JSON: {err.msg}", Where(str(file), err.lineno, err.colno)) from None
+            usage = usage.merged(_table(data, where))
+    return usage
+
+
+@cache
+def shipped_word_usage() -> WordUsage:
+    """The tables shipped with seal (``seal_cli/language/word_classes/``), read once."""
+    return load_word_usage([SHIPPED]) if SHIPPED.is_dir() else WordUsage()
