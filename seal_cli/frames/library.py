@@ -13,7 +13,7 @@ from functools import cached_property
 from pathlib import Path
 
 from seal_cli.errors import SealError, SealErrors, Where
-from seal_cli.frames.model import Frame, normalize_unit
+from seal_cli.frames.model import Frame, LexicalUnit, normalize_unit
 from seal_cli.frames.taxonomy import Taxonomy
 
 __all__ = ["FRAME_SUFFIXES", "Contents", "Library", "frame_files", "load_library", "read_library"]
@@ -100,9 +100,12 @@ class Contents:
     frames: list[Frame] = field(default_factory=list)
     taxonomy: Taxonomy = field(default_factory=Taxonomy)
     problems: list[SealError] = field(default_factory=list)
+    units: list[tuple[str, LexicalUnit]] = field(default_factory=list)
+    """Lexical units a file adds to a frame defined elsewhere (frame name, unit)."""
 
     def add(self, other: Contents) -> None:
         self.frames.extend(other.frames)
+        self.units.extend(other.units)
         self.taxonomy = self.taxonomy.merged(other.taxonomy)
         self.problems.extend(other.problems)
 
@@ -132,6 +135,7 @@ def read_library(paths: Iterable[str | Path]) -> tuple[Library, list[SealError]]
     files, problems = frame_files(paths)
     pieces = read_files(files)
     problems.extend(pieces.problems)
+    pieces.frames = _with_units(pieces.frames, pieces.units, problems)
     names: set[str] = set()
     unique: list[Frame] = []
     for frame in pieces.frames:
@@ -141,6 +145,41 @@ def read_library(paths: Iterable[str | Path]) -> tuple[Library, list[SealError]]
     library = Library(tuple(unique), pieces.taxonomy)
     problems.extend(check_library(pieces.frames, pieces.taxonomy))
     return library, problems
+
+
+def _with_units(frames: list[Frame], units: Sequence[tuple[str, LexicalUnit]],
+                problems: list[SealError]) -> list[Frame]:
+    """The frames with the lexical units other files add to them; a unit for no frame, or one the
+    frame lists already, is a problem."""
+    import dataclasses
+    import difflib
+
+    added: dict[str, list[LexicalUnit]] = {}
+    names = {f.name for f in frames}
+    for name, unit in units:
+        if name not in names:
+            close = difflib.get_close_matches(name, sorted(names), n=1)
+            hint = f" (did you mean {close[0]!r}?)" if close else ""
+            problems.append(SealError(f"lexical unit {unit.text!r} is for frame {name!r}, which no file defines{hint}",
+                                      unit.where))
+            continue
+        added.setdefault(name, []).append(unit)
+    out = []
+    for frame in frames:
+        extra = added.pop(frame.name, None)
+        if extra:
+            own = {u.text for u in frame.lexical_units}
+            new: list[LexicalUnit] = []
+            for unit in extra:
+                if unit.text in own:
+                    problems.append(SealError(f"lexical unit {unit.text!r} is already one of {frame.name}'s",
+                                              unit.where))
+                else:
+                    new.append(unit)
+                    own.add(unit.text)
+            frame = dataclasses.replace(frame, lexical_units=frame.lexical_units + tuple(new))
+        out.append(frame)
+    return out
 
 
 def load_library(paths: Iterable[str | Path] | None = None) -> Library:

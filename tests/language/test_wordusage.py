@@ -1,0 +1,130 @@
+"""Grounding statistics learned from a train split: the shipped table, how it changes grounding
+decisions (and when it must not), its file format, and that its script rebuilds it."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from seal_cli.errors import SealError
+from seal_cli.frames.library import Library
+from seal_cli.language.grounding import Vocabulary
+from seal_cli.language.parser import parse_command
+from seal_cli.language.wordusage import FORMAT, SHIPPED, WordUsage, load_word_usage, shipped_word_usage
+
+ROOT = Path(__file__).resolve().parents[2]
+RULES = WordUsage()
+
+
+def usage(counts: dict[str, dict[str, int]], universe: tuple[str, ...]) -> WordUsage:
+    return WordUsage(counts, frozenset(universe))
+
+
+TABLES = usage({"table": {"side_table": 10, "dining_table": 2, "coffee_table": 3}, "cup": {"mug": 9, "cup": 3},
+                "thing": {"box": 2, "cup": 2}, "rare": {"mug": 4}},
+               ("dining_table", "side_table", "coffee_table", "mug", "cup", "box"))
+
+
+def test_the_shipped_table_loads_with_its_source() -> None:
+    shipped = shipped_word_usage()
+    assert "sink_basin" in shipped.universe and "alarm_clock" in shipped.universe
+    assert shipped.sources and "ALFRED train" in shipped.sources[0]
+    sink = shipped.counts["sink"]
+    assert max(sink, key=sink.__getitem__) == "sink_basin"      # people in THOR kitchens mean the basin
+
+
+def test_the_shipped_table_changes_a_grounding_decision() -> None:
+    vocab = Vocabulary.of(["Sink", "SinkBasin", "Chair", "ArmChair"])
+    assert vocab.ground_words(["sink"]) == "SinkBasin"           # learned: the rules said Sink
+    assert vocab.with_usage(RULES).ground_words(["sink"]) == "Sink"
+    assert vocab.ground_words(["chair"]) == "ArmChair"
+    assert Vocabulary.of(["Sink"]).ground_words(["sink"]) == "Sink"   # only among the classes present
+
+
+def test_it_changes_a_parse(library: Library) -> None:
+    vocab = Vocabulary.of(["ButterKnife", "Knife", "Sink", "SinkBasin"])
+    parse = parse_command("put the knife in the sink", library, vocab)
+    assert parse.frames[-1].elements["goal"].cls == "SinkBasin"
+    rules = parse_command("put the knife in the sink", library, vocab.with_usage(RULES))
+    assert rules.frames[-1].elements["goal"].cls == "Sink"
+
+
+def test_the_scene_decides_among_the_classes_it_holds() -> None:
+    vocab = Vocabulary.of(["DiningTable", "SideTable", "CoffeeTable"]).with_usage(TABLES)
+    assert vocab.ground_words(["table"]) == "SideTable"                      # 10 against the rules' 2
+    assert vocab.restricted_to(["DiningTable", "CoffeeTable"]).ground_words(["table"]) == "DiningTable"   # 3 < 2 x 2
+    assert vocab.with_synonyms({"side_table": ["nightstand"]}).ground_words(["table"]) == "SideTable"     # kept
+
+
+def test_the_rules_keep_what_the_data_does_not_make_clear() -> None:
+    vocab = Vocabulary.of(["Cup", "Mug", "Box", "CoffeeTable", "DiningTable"]).with_usage(TABLES)
+    assert vocab.ground_words(["cup"]) == "Mug"                   # 9 >= 2 x 3
+    assert vocab.ground_words(["rare"]) is None                   # 4 observations: too few
+    assert vocab.ground_words(["coffee", "table"]) == "CoffeeTable"   # the rules matched more words than "table"
+    assert vocab.ground_words(["red", "cup"]) == "Mug"            # the head's wording when the pair is unknown
+
+
+def test_a_class_the_statistics_never_saw_is_not_overridden() -> None:
+    vocab = Vocabulary.of(["table", "SideTable"]).with_usage(TABLES)     # a GPSR arena's "table"
+    assert vocab.ground_words(["table"]) == "table"
+
+
+def test_a_phrase_the_rules_cannot_ground_takes_the_clear_majority() -> None:
+    counts = usage({"bin": {"garbage_can": 8, "box": 1}, "stuff": {"box": 3, "cup": 3}}, ("garbage_can", "box", "cup"))
+    vocab = Vocabulary.of(["GarbageCan", "Box", "Cup"]).with_usage(counts)
+    assert vocab.with_usage(RULES).ground_words(["stuff"]) is None
+    assert vocab.ground_words(["stuff"]) == "Box"                  # 3 of 6: half is enough
+    solo = Vocabulary.of(["Box", "Cup"]).with_usage(usage({"stuff": {"box": 3, "cup": 4}}, ("box", "cup")))
+    assert solo.ground_words(["stuff"]) == "Cup"
+
+
+def test_tables_in_a_folder_add_up(tmp_path: Path) -> None:
+    for name, n in (("a.json", 3), ("b.json", 4)):
+        (tmp_path / name).write_text(json.dumps({"format": FORMAT, "classes": ["Mug", "Cup"],
+                                                 "words": {"cup": {"Mug": n}}}))
+    merged = load_word_usage([tmp_path])
+    assert merged.counts["cup"]["mug"] == 7 and merged.universe == {"mug", "cup"}
+    assert Vocabulary.of(["Cup", "Mug"]).with_usage(merged).ground_words(["cup"]) == "Mug"
+
+
+@pytest.mark.parametrize(("content", "words"), [
+    ('{"format": "other"}', "not a word-class table"),
+    ('{"format": "seal-word-classes/1", "classes": "Mug", "words": {}}', '"classes" must be a list'),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": []}', '"words" must map'),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {"cup": {"Mug": 0}}}', "positive count"),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {"cup": {"Mug": true}}}', "positive count"),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {"cup": {"Cup": 2}}}', "'Cup' is not in"),
+])
+def test_bad_tables_are_clear_errors(tmp_path: Path, content: str, words: str) -> None:
+    path = tmp_path / "bad.json"
+    path.write_text(content)
+    with pytest.raises(SealError, match=words) as err:
+        load_word_usage([path])
+    assert err.value.file == str(path)
+
+
+def test_a_table_that_is_no_json_names_its_line_and_column(tmp_path: Path) -> None:
+    path = tmp_path / "bad.json"
+    path.write_text('{"format": "seal-word-classes/1",\n  "classes": [oops]}')
+    with pytest.raises(SealError, match="not JSON") as err:
+        load_word_usage([path])
+    assert (err.value.file, err.value.line, err.value.column) == (str(path), 2, 15)
+    with pytest.raises(SealError):
+        load_word_usage([tmp_path / "missing.json"])
+
+
+def test_the_build_script_reproduces_the_shipped_table(shared_data: Path) -> None:
+    run = subprocess.run([sys.executable, str(ROOT / "scripts" / "build_word_classes.py"), "--check",
+                          "--data", str(shared_data)], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    assert (SHIPPED / "alfred_train.json").is_file()
+
+
+def test_the_build_script_names_missing_data(tmp_path: Path) -> None:
+    run = subprocess.run([sys.executable, str(ROOT / "scripts" / "build_word_classes.py"), "--data", str(tmp_path)],
+                         capture_output=True, text=True)
+    assert run.returncode == 1 and "goals_train.tsv: no such file" in run.stderr and "Traceback" not in run.stderr
