@@ -30,7 +30,7 @@ import json
 import sys
 import zlib
 from collections import Counter
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -45,6 +45,7 @@ from seal_cli.language.wordusage import FORMAT, MIN_RATIO, MIN_SUPPORT, SHIPPED,
 
 OUT = SHIPPED / "alfred_train.json"
 MANIPULATE = ("Pick", "Heat", "Cool", "Clean", "LookAt", "Place")
+LABELS = ("object", "receptacle", "mrecep", "toggle")
 KEEP = 2
 """A wording seen fewer times than this is left out of the file (it could never reach MIN_SUPPORT alone)."""
 
@@ -85,10 +86,13 @@ def fields(parse: Parse, row: dict[str, str]) -> Iterable[tuple[Phrase, str]]:
             yield phrase, label
 
 
-def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary) -> dict[str, Counter[str]]:
+def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
+          scenes: dict[str, frozenset[str]]) -> tuple[dict[str, Counter[str]], dict[str, Counter[str]]]:
+    """(wording → labelled classes, wording → the classes of the scenes it was said in)."""
     library = load_library()
     rules = vocabulary.with_usage(WordUsage())
     counts: dict[str, Counter[str]] = {}
+    seen: dict[str, Counter[str]] = {}
     for row in rows:
         try:
             parse = parse_command(" ".join(row["goal_sentence"].split()), library, rules)
@@ -100,24 +104,44 @@ def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary) -> dict[str, C
                 continue
             for size in (2, 1):
                 if len(lemmas) >= size:
-                    counts.setdefault(" ".join(lemmas[-size:]), Counter())[label] += 1
-    return counts
+                    said = " ".join(lemmas[-size:])
+                    counts.setdefault(said, Counter())[label] += 1
+                    seen.setdefault(said, Counter()).update(scenes.get(row["floor_plan"], ()))
+    return counts, seen
 
 
-def table(counts: dict[str, Counter[str]], classes: Sequence[str], source: str) -> dict[str, object]:
+def scene_classes(data: Path, classes: Sequence[str]) -> dict[str, frozenset[str]]:
+    """Each floor plan's classes (its THOR object types and receptacles), spelled as ``classes``."""
+    path = data / "alfred2d" / "floorplans.json"
+    if not path.is_file():
+        return {}
+    spelling = {class_key(c): c for c in classes}
+    plans = json.loads(path.read_text())["floor_plans"]
+    return {name: frozenset(spelling[class_key(c)] for c in [*plan["object_types"],
+                                                             *(r["class"] for r in plan["receptacles"])]
+                            if class_key(c) in spelling)
+            for name, plan in plans.items()}
+
+
+def table(counts: dict[str, Counter[str]], seen: dict[str, Counter[str]], classes: Sequence[str],
+          source: str) -> dict[str, object]:
     words = {w: dict(sorted(c.items(), key=lambda kv: (-kv[1], kv[0])))
              for w, c in sorted(counts.items()) if sum(c.values()) >= KEEP}
+    where = {w: {c: seen[w][c] for c in by_class if seen.get(w, {}).get(c)} for w, by_class in words.items()}
     return {"format": FORMAT, "source": source, "built_by": "scripts/build_word_classes.py",
-            "classes": list(classes), "words": words}
+            "classes": list(classes), "words": words, "seen": {w: c for w, c in where.items() if c}}
 
 
 def dump(data: dict[str, object]) -> str:
-    head = {k: v for k, v in data.items() if k != "words"}
-    lines = json.dumps(head, indent=1)[:-2] + ',\n "words": {\n'
-    words = data["words"]
-    assert isinstance(words, dict)
-    lines += ",\n".join(f"  {json.dumps(w)}: {json.dumps(c)}" for w, c in words.items())
-    return lines + "\n }\n}\n"
+    """JSON with one wording a line, so that a rebuild's diff reads."""
+    head = {k: v for k, v in data.items() if k not in ("words", "seen")}
+    text = json.dumps(head, indent=1)[:-2]
+    for name in ("words", "seen"):
+        rows = data[name]
+        assert isinstance(rows, dict)
+        text += f',\n "{name}": {{\n' + ",\n".join(f"  {json.dumps(w)}: {json.dumps(c)}" for w, c in rows.items())
+        text += "\n }"
+    return text + "\n}\n"
 
 
 def read_rows(path: Path) -> list[dict[str, str]]:
@@ -135,12 +159,14 @@ def scorer(data: Path):  # type: ignore[no-untyped-def]
     return module
 
 
-def score(rows: Sequence[dict[str, str]], vocabulary: Vocabulary, module) -> dict[str, float]:  # type: ignore[no-untyped-def]
+def score(rows: Sequence[dict[str, str]], vocabulary: Callable[[dict[str, str]], Vocabulary],
+          module) -> dict[str, float]:  # type: ignore[no-untyped-def]
+    """The scorer's five fields on these rows, each parsed with ``vocabulary(row)``."""
     library = load_library()
     hits: Counter[str] = Counter()
     for row in rows:
         try:
-            parse = parse_command(" ".join(row["goal_sentence"].split()), library, vocabulary).to_json()
+            parse = parse_command(" ".join(row["goal_sentence"].split()), library, vocabulary(row)).to_json()
         except CommandError:
             parse = {}
         want = module.gold(row)
@@ -170,28 +196,44 @@ def main() -> int:
     classes = json.loads(constants.read_text())["OBJECTS"]
     vocabulary = Vocabulary.of(classes)
     rows = [r for r in read_rows(goals) if r.get("split", "train") == "train"]
+    scenes = scene_classes(args.data, classes)
 
     if args.dev:
         held = {r["task_id"] for r in rows if zlib.crc32(r["task_id"].encode()) % 1000 < args.dev * 1000}
         fit = [r for r in rows if r["task_id"] not in held]
         dev = [r for r in rows if r["task_id"] in held]
-        counts = count(fit, vocabulary)
+        counts, seen = count(fit, vocabulary, scenes)
         module = scorer(args.data)
         universe = frozenset(class_key(c) for c in classes)
+        words = {w: {class_key(c): n for c, n in by.items()} for w, by in counts.items()}
+        where = {w: {class_key(c): n for c, n in by.items()} for w, by in seen.items()}
         print(f"fit {len(fit)} sentences, dev {len(dev)} sentences ({len(held)} trials)")
-        base = score(dev, vocabulary.with_usage(WordUsage()), module)
-        print("rules alone          " + " ".join(f"{k} {v:.3f}" for k, v in base.items()))
+
+        def show(name: str, figures: dict[str, float]) -> None:
+            print(f"{name:<34}" + " ".join(f"{k} {v:.3f}" for k, v in figures.items()))
+
+        show("rules alone", score(dev, lambda row: vocabulary.with_usage(WordUsage()), module))
         for support in args.min_support:
             for ratio in args.min_ratio:
-                usage = WordUsage({w: {class_key(c): n for c, n in by.items()} for w, by in counts.items()},
-                                  universe, ("dev",), support, ratio)
-                got = score(dev, vocabulary.with_usage(usage), module)
-                print(f"support {support:>2} ratio {ratio:<4} " + " ".join(f"{k} {v:.3f}" for k, v in got.items()))
+                tried = vocabulary.with_usage(WordUsage(words, universe, ("dev",), support, ratio, where))
+                show(f"support {support} ratio {ratio}", score(dev, lambda row, v=tried: v, module))
+        usage = WordUsage(words, universe, ("dev",), args.min_support[0], args.min_ratio[0], where)
+
+        def in_scene(row: dict[str, str], *, rates: bool, learned: bool = True) -> Vocabulary:
+            present = scenes.get(row["floor_plan"], frozenset()) | {row[k] for k in LABELS if row[k]}
+            scene = vocabulary.restricted_to(present)
+            scene = scene.with_usage(usage if learned else WordUsage())
+            return scene if rates else Vocabulary.of(scene.classes, usage=scene.usage)
+
+        print("in the scene's classes:")
+        show("  rules alone", score(dev, lambda row: in_scene(row, rates=True, learned=False), module))
+        show("  counts", score(dev, lambda row: in_scene(row, rates=False), module))
+        show("  rates where present", score(dev, lambda row: in_scene(row, rates=True), module))
         return 0
 
     source = (f"ALFRED train goals ({goals.name}: {len(rows)} human goal sentences with their task labels), "
               "parsed by seal's rules; counts of the labelled class by the wording of the phrase that fills its field")
-    text = dump(table(count(rows, vocabulary), classes, source))
+    text = dump(table(*count(rows, vocabulary, scenes), classes, source))
     if args.check:
         shipped = args.out.read_text() if args.out.is_file() else ""
         if shipped != text:

@@ -35,7 +35,6 @@ from lark import Tree
 from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame
-from seal_cli.frames.taxonomy import class_words
 from seal_cli.language.english import FIRST_LATER, PERSON_PRONOUNS, PRONOUNS, SUBORDINATORS
 from seal_cli.language.grounding import PIECES, PORTIONS
 from seal_cli.language.lexicon import (
@@ -1627,7 +1626,7 @@ class Builder:
     def ground_name(self, name: str) -> str | None:
         if self.vocabulary is None:
             return name
-        return self.vocabulary.ground_words(class_words(name)) or name
+        return self.vocabulary.ground_name(name) or name
 
 
 def _whole_named(np: NP) -> bool:

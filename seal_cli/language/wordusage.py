@@ -9,11 +9,14 @@ last modifier with the head), how often people meant each class, counted on a tr
 
 Grounding asks it among the classes *present* (the vocabulary: a scene's classes, or all
 classes when no scene is known), so "the table" in a room with a side table and no dining table
-is the side table even when dining tables are the more usual meaning. The rules stay in charge
+is the side table even when dining tables are the more usual meaning. In a scene
+(``Vocabulary.restricted_to``) a class is judged by how often people meant it when it was
+there (:attr:`WordUsage.seen`), not by how often it was meant anywhere. The rules stay in charge
 unless the data is clear (:meth:`WordUsage.choose`): at least ``MIN_SUPPORT`` observations of
-the wording among the present classes, and the learned class meant at least ``MIN_RATIO`` times
-as often as the class the rules found. A class the statistics never saw (no class of the split's
-vocabulary: a GPSR arena's "table") is never overridden.
+the wording among the present classes, at least ``MIN_SUPPORT`` people who meant the learned
+class, and that class meant at least ``MIN_RATIO`` times as often as the class the rules found
+(half of the present classes' share when the rules found none). A class the statistics never
+saw (no class of the split's vocabulary: a GPSR arena's "table") is never overridden.
 
 Tables are JSON files (``format: seal-word-classes/1``) in the folder ``word_classes/`` beside
 this module; every file there is read and their counts are added.
@@ -55,27 +58,39 @@ class WordUsage:
     sources: tuple[str, ...] = ()
     min_support: int = MIN_SUPPORT
     min_ratio: float = MIN_RATIO
+    seen: Mapping[str, Mapping[str, int]] = field(default_factory=dict)
+    """``seen[wording][class key]``: how often the wording was said in a scene that held the class.
+    In a scene, a class is judged by its rate (``counts / seen``): how often people mean it when it
+    is there, not how often it is there."""
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "counts", MappingProxyType({w: MappingProxyType(dict(c))
-                                                             for w, c in self.counts.items()}))
+        for name in ("counts", "seen"):
+            table = getattr(self, name)
+            object.__setattr__(self, name, MappingProxyType({w: MappingProxyType(dict(c)) for w, c in table.items()}))
 
     def __bool__(self) -> bool:
         return bool(self.counts)
 
     def merged(self, other: WordUsage) -> WordUsage:
         """The two tables' counts added."""
-        counts: dict[str, dict[str, int]] = {w: dict(c) for w, c in self.counts.items()}
-        for wording, by_class in other.counts.items():
-            mine = counts.setdefault(wording, {})
-            for key, n in by_class.items():
-                mine[key] = mine.get(key, 0) + n
-        return WordUsage(counts, self.universe | other.universe, self.sources + other.sources,
-                         self.min_support, self.min_ratio)
+        def add(mine: Mapping[str, Mapping[str, int]], theirs: Mapping[str, Mapping[str, int]]) -> dict:
+            out: dict[str, dict[str, int]] = {w: dict(c) for w, c in mine.items()}
+            for key, by in theirs.items():
+                row = out.setdefault(key, {})
+                for name, n in by.items():
+                    row[name] = row.get(name, 0) + n
+            return out
 
-    def choose(self, lemmas: tuple[str, ...], present: Mapping[str, str], rule: str | None) -> str | None:
+        return WordUsage(add(self.counts, other.counts), self.universe | other.universe,
+                         self.sources + other.sources, self.min_support, self.min_ratio,
+                         add(self.seen, other.seen))
+
+    def choose(self, lemmas: tuple[str, ...], present: Mapping[str, str], rule: str | None,
+               scene: bool = False) -> str | None:
         """The class meant by a phrase whose words up to the head are ``lemmas``, among ``present``
         (class key → the vocabulary's spelling), given what the rules found (``rule``, or None).
+        ``scene``: the present classes are those of one scene (compare rates, see :attr:`seen`);
+        otherwise any (compare counts: how often each is meant, wherever).
 
         The longest wording with support decides: the last modifier and the head, else the head. A
         wording shorter than the class name the rules matched in the phrase ("coffee table" →
@@ -98,14 +113,27 @@ class WordUsage:
             if rule_key is not None and size < len(rule_key.split("_")) \
                     and set(rule_key.split("_")) <= set(lemmas):
                 return rule                               # the rules matched more of the phrase
-            n_best, best = max(seen, key=lambda s: (s[0], s[1] == rule_key))
-            n_rule = by_class.get(rule_key, 0) if rule_key is not None else 0
-            if rule_key is None:
-                return present[best] if 2 * n_best >= support else None
-            if best != rule_key and n_best >= self.min_ratio * n_rule:
+            wording = " ".join(lemmas[-size:])
+            scored = self._scored(wording, seen) if scene else [(float(n), key) for n, key in seen]
+            total = sum(s for s, _ in scored)
+            s_best, best = max(scored, key=lambda s: (s[0], s[1] == rule_key))
+            s_rule = next((s for s, key in scored if key == rule_key), 0.0)
+            if by_class[best] < self.min_support:
+                return rule                               # too few people meant it to say
+            if rule_key is None:                          # nothing the rules found: the clear majority
+                return present[best] if 2 * s_best >= total else None
+            if best != rule_key and s_best >= self.min_ratio * s_rule:
                 return present[best]
             return rule
         return rule
+
+
+    def _scored(self, wording: str, seen: list[tuple[int, str]]) -> list[tuple[float, str]]:
+        """Each class's rate: how often the wording meant it, of the times it was said where the
+        class was (a class with no record of that keeps its count's share)."""
+        times = self.seen.get(wording, {})
+        return [(n / times[key] if times.get(key) else float(n) / max(sum(m for m, _ in seen), 1), key)
+                for n, key in seen]
 
 
 def _table(data: Any, where: Where) -> WordUsage:
@@ -127,7 +155,17 @@ def _table(data: Any, where: Where) -> WordUsage:
         if unknown:
             raise SealError(f"wording {wording!r}: class {unknown[0]!r} is not in \"classes\"", where)
         counts[" ".join(str(wording).lower().split())] = {class_key(c): n for c, n in by_class.items()}
-    return WordUsage(counts, universe, (str(data.get("source", where.file)),))
+    seen: dict[str, dict[str, int]] = {}
+    raw = data.get("seen", {})
+    if not isinstance(raw, dict):
+        raise SealError("\"seen\" must map each wording to {class: times said where the class was}", where)
+    for wording, by_class in raw.items():
+        if not isinstance(by_class, dict) or not all(
+                isinstance(c, str) and class_key(c) in universe and isinstance(n, int) and not isinstance(n, bool)
+                and n > 0 for c, n in by_class.items()):
+            raise SealError(f"seen {wording!r}: expected {{class of \"classes\": positive count}}", where)
+        seen[" ".join(str(wording).lower().split())] = {class_key(c): n for c, n in by_class.items()}
+    return WordUsage(counts, universe, (str(data.get("source", where.file)),), seen=seen)
 
 
 def load_word_usage(paths: Iterable[str | Path]) -> WordUsage:

@@ -33,6 +33,7 @@ def test_the_shipped_table_loads_with_its_source() -> None:
     shipped = shipped_word_usage()
     assert "sink_basin" in shipped.universe and "alarm_clock" in shipped.universe
     assert shipped.sources and "ALFRED train" in shipped.sources[0]
+    assert shipped.seen["sink"]["sink_basin"] >= shipped.counts["sink"]["sink_basin"]   # said where it is
     sink = shipped.counts["sink"]
     assert max(sink, key=sink.__getitem__) == "sink_basin"      # people in THOR kitchens mean the basin
 
@@ -60,6 +61,18 @@ def test_the_scene_decides_among_the_classes_it_holds() -> None:
     assert vocab.with_synonyms({"side_table": ["nightstand"]}).ground_words(["table"]) == "SideTable"     # kept
 
 
+def test_in_a_scene_a_class_is_judged_by_how_often_it_is_meant_where_it_is() -> None:
+    # dining tables are meant more often (10 against 6), but they are in most scenes (100 sayings of
+    # "table" where one was), side tables in few (20): where both are, people mean the side table
+    tables = WordUsage({"table": {"dining_table": 10, "side_table": 6}}, frozenset({"dining_table", "side_table"}),
+                       seen={"table": {"dining_table": 100, "side_table": 20}})
+    anywhere = Vocabulary.of(["DiningTable", "SideTable"]).with_usage(tables)
+    assert not anywhere.scene and anywhere.ground_words(["table"]) == "DiningTable"
+    scene = anywhere.restricted_to(["DiningTable", "SideTable"])
+    assert scene.scene and scene.ground_words(["table"]) == "SideTable"
+    assert scene.with_synonyms({"side_table": ["nightstand"]}).scene
+
+
 def test_the_rules_keep_what_the_data_does_not_make_clear() -> None:
     vocab = Vocabulary.of(["Cup", "Mug", "Box", "CoffeeTable", "DiningTable"]).with_usage(TABLES)
     assert vocab.ground_words(["cup"]) == "Mug"                   # 9 against 3
@@ -74,12 +87,16 @@ def test_a_class_the_statistics_never_saw_is_not_overridden() -> None:
 
 
 def test_a_phrase_the_rules_cannot_ground_takes_the_clear_majority() -> None:
-    counts = usage({"bin": {"garbage_can": 8, "box": 1}, "stuff": {"box": 3, "cup": 3}}, ("garbage_can", "box", "cup"))
+    counts = usage({"bin": {"garbage_can": 8, "box": 1}, "stuff": {"box": 7, "cup": 5}, "glass": {"cup": 90, "box": 2}},
+                   ("garbage_can", "box", "cup"))
     vocab = Vocabulary.of(["GarbageCan", "Box", "Cup"]).with_usage(counts)
     assert vocab.with_usage(RULES).ground_words(["stuff"]) is None
-    assert vocab.ground_words(["stuff"]) == "Box"                  # 3 of 6: half is enough
-    solo = Vocabulary.of(["Box", "Cup"]).with_usage(usage({"stuff": {"box": 3, "cup": 4}}, ("box", "cup")))
+    assert vocab.ground_words(["stuff"]) == "Box"                  # 7 of 12
+    assert vocab.ground_words(["bin"]) == "GarbageCan"
+    solo = Vocabulary.of(["Box", "Cup"]).with_usage(usage({"stuff": {"box": 6, "cup": 8}}, ("box", "cup")))
     assert solo.ground_words(["stuff"]) == "Cup"
+    # no cup here: the two who meant a box by "glass" are too few to call a box a glass
+    assert Vocabulary.of(["Box"]).restricted_to(["Box"]).with_usage(counts).ground_words(["glass"]) is None
 
 
 def test_tables_in_a_folder_add_up(tmp_path: Path) -> None:
@@ -98,6 +115,9 @@ def test_tables_in_a_folder_add_up(tmp_path: Path) -> None:
     ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {"cup": {"Mug": 0}}}', "positive count"),
     ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {"cup": {"Mug": true}}}', "positive count"),
     ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {"cup": {"Cup": 2}}}', "'Cup' is not in"),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "seen": {"cup": {"Cup": 2}}}',
+     "seen 'cup': expected"),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "seen": []}', '"seen" must map'),
 ])
 def test_bad_tables_are_clear_errors(tmp_path: Path, content: str, words: str) -> None:
     path = tmp_path / "bad.json"
