@@ -36,7 +36,8 @@ from typing import Any
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from seal_cli.frames.library import Library, load_library  # noqa: E402
+from seal_cli.frames.library import Library  # noqa: E402
+from seal_cli.frames.reading import load_library  # noqa: E402
 
 OUT = ROOT / "framelib" / "derived_units.yaml"
 HEADER = """\

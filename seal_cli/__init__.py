@@ -8,8 +8,9 @@ particle filter over where each frame can be executed.
 from __future__ import annotations
 
 from seal_cli.errors import SealError, SealErrors, Where
-from seal_cli.frames.library import Library, load_library, read_library
+from seal_cli.frames.library import Library
 from seal_cli.frames.model import Action, Binding, Element, Fact, Frame, LexicalUnit
+from seal_cli.frames.reading import load_library, read_library
 from seal_cli.frames.taxonomy import Category, Taxonomy, class_key
 
 __version__ = "0.1.0"

@@ -25,8 +25,10 @@ from typing import Any
 import numpy as np
 
 from seal_cli.bench.tasks import Outcome, in_order
-from seal_cli.frames.library import Library, load_library
-from seal_cli.maps.model import Map, ObjectTruth, load_map
+from seal_cli.frames.library import Library
+from seal_cli.frames.reading import load_library
+from seal_cli.maps.formats.map_server import load_map
+from seal_cli.maps.model import Map, ObjectTruth
 
 __all__ = ["COMMANDS", "run_map_suite", "sample_layout"]
 
@@ -68,7 +70,7 @@ def run_layout(m: Map, layout: int, commands: Sequence[str], library: Library, p
                seed: int = 0, particles: int = 200) -> list[Outcome]:
     """Every command with every policy on one layout of the map."""
     from seal_cli.sim.agent import run_on_map
-    from seal_cli.sim.policies.baselines import make_policy
+    from seal_cli.sim.policies import make_policy
 
     base = layout_seed(seed, layout, m.name)
     world = sample_layout(m, np.random.default_rng(base))

@@ -4,6 +4,8 @@ Each command lives in a module of this package and registers itself on :data:`ap
 call plain engine functions, print results on stdout (JSON with ``--json``) and diagnostics on
 stderr. A :class:`~seal_cli.errors.SealError` becomes one clear message and exit code 1; usage
 errors are typer's own (exit 2); nothing else may escape as a traceback.
+
+May import anything; nothing imports it (but ``python -m seal_cli``).
 """
 
 from __future__ import annotations

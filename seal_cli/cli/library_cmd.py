@@ -9,8 +9,8 @@ import typer
 from rich.table import Table
 
 from seal_cli.cli import FramelibOption, JsonOption, command, emit_json, err, framelib_paths, out
-from seal_cli.frames.library import load_library
 from seal_cli.frames.model import Frame
+from seal_cli.frames.reading import load_library
 
 
 def frame_json(frame: Frame) -> dict[str, Any]:
@@ -81,7 +81,7 @@ def validate(
     as_json: bool = JsonOption,
 ) -> None:
     """Check frame files, frame folders and maps; list every problem as file:line:col: message."""
-    from seal_cli.frames.validation import validate_paths
+    from seal_cli.validate import validate_paths
 
     report = validate_paths(paths, with_stdlib=stdlib)
     if as_json:

@@ -76,8 +76,8 @@ def localize(
 
     from seal_cli.errors import SealError
     from seal_cli.fileio import atomic_output
-    from seal_cli.frames.library import load_library
-    from seal_cli.maps.model import load_map
+    from seal_cli.frames.reading import load_library
+    from seal_cli.maps.formats.map_server import load_map
     from seal_cli.planning.plan import frames_to_localise
     from seal_cli.resources import map_path
     from seal_cli.sefm.filter import SeFM, SeFMConfig

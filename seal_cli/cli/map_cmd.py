@@ -77,7 +77,7 @@ def map_command(
     as_json: bool = JsonOption,
 ) -> None:
     """Show what an annotated map holds: rooms, places, priors per room, objects, robot and sensor."""
-    from seal_cli.maps.model import load_map
+    from seal_cli.maps.formats.map_server import load_map
     from seal_cli.resources import map_path
 
     m = load_map(map_path(path))

@@ -32,7 +32,7 @@ def vocabulary_from(vocabulary: Path | None, map_name: str | None) -> Vocabulary
     if vocabulary is not None:
         found.append(load_vocabulary(vocabulary))
     if map_name is not None:
-        from seal_cli.maps.model import load_map
+        from seal_cli.maps.formats.map_server import load_map
         from seal_cli.resources import map_path
 
         found.append(vocabulary_of_map(load_map(map_path(map_name))))
@@ -68,7 +68,7 @@ def parse(
     as_json: bool = JsonOption,
 ) -> None:
     """Parse a command into the frames it evokes, with their elements."""
-    from seal_cli.frames.library import load_library
+    from seal_cli.frames.reading import load_library
     from seal_cli.language.parser import parse_command, parse_lines
 
     if (text is None) == (file is None):

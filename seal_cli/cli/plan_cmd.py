@@ -25,7 +25,7 @@ def _load_world(map_name: str | None) -> Map | None:
     """The ``--map`` world, or None."""
     if map_name is None:
         return None
-    from seal_cli.maps.model import load_map
+    from seal_cli.maps.formats.map_server import load_map
     from seal_cli.resources import map_path
 
     return load_map(map_path(map_name))
@@ -63,7 +63,7 @@ def plan(
     as_json: bool = JsonOption,
 ) -> None:
     """Plan a command: the frames it commands, in order, with the frames their preconditions need."""
-    from seal_cli.frames.library import load_library
+    from seal_cli.frames.reading import load_library
     from seal_cli.planning.plan import plan_text
 
     library = load_library(framelib_paths(framelib))
@@ -91,7 +91,7 @@ def bench_plan(
 ) -> None:
     """Time parse + ground + plan for commands of up to six clauses; report the slowest."""
     from seal_cli.bench.plan import BENCH_COMMANDS, time_plans
-    from seal_cli.frames.library import load_library
+    from seal_cli.frames.reading import load_library
 
     library = load_library(framelib_paths(framelib))
     world = _load_world(map_name)

@@ -10,7 +10,8 @@ from pathlib import Path
 import pytest
 import yaml
 
-from seal_cli.frames.library import Library, read_library
+from seal_cli.frames.library import Library
+from seal_cli.frames.reading import read_library
 from seal_cli.language.parser import parse_command
 
 ROOT = Path(__file__).resolve().parents[2]

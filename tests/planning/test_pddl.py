@@ -14,7 +14,7 @@ from seal_cli.cli import app
 from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding, Fact
-from seal_cli.maps.model import load_map
+from seal_cli.maps.formats.map_server import load_map
 from seal_cli.planning.pddl import domain_pddl, problem_pddl, write_pddl
 from seal_cli.planning.plan import Plan, plan, plan_text
 from seal_cli.planning.state import State, robot_facts
