@@ -10,6 +10,7 @@ from __future__ import annotations
 import dataclasses
 import difflib
 from collections.abc import Iterable, Mapping, Sequence
+from functools import cache
 from pathlib import Path
 
 from seal_cli.errors import SealError, SealErrors, Where
@@ -19,7 +20,7 @@ from seal_cli.frames.model import Frame, LexicalUnit
 from seal_cli.frames.validation import check_library
 from seal_cli.resources import framelib_dir
 
-__all__ = ["FRAME_SUFFIXES", "READERS", "frame_files", "load_library", "read_files", "read_library"]
+__all__ = ["FRAME_SUFFIXES", "READERS", "frame_files", "load_library", "read_files", "read_library", "standard_library"]
 
 READERS: Mapping[str, Reader] = {".yaml": yamlfile.read, ".yml": yamlfile.read, ".frame": dsl.read}
 """The frame file formats, by file suffix."""
@@ -115,3 +116,9 @@ def load_library(paths: Iterable[str | Path] | None = None) -> Library:
     if problems:
         raise problems[0] if len(problems) == 1 else SealErrors(problems)
     return library
+
+
+@cache
+def standard_library() -> Library:
+    """The shipped standard library, read once per process (a library is a value: sharing it is safe)."""
+    return load_library()
