@@ -21,7 +21,7 @@ from rich.console import Console
 from seal_cli import __version__
 from seal_cli.errors import SealError, SealErrors
 
-__all__ = ["app", "bench_app", "command", "emit_json", "err", "main", "out"]
+__all__ = ["OUTPUT_SUFFIXES", "app", "bench_app", "command", "emit_json", "err", "main", "out"]
 
 app = typer.Typer(
     name="seal",
@@ -56,6 +56,9 @@ def command(*args: Any, on: typer.Typer | None = None, **kwargs: Any) -> Callabl
     def decorate(function: F) -> F:
         @functools.wraps(function)
         def run(*a: Any, **kw: Any) -> Any:
+            from seal_cli.fileio import clean_up_on_signals, remove_temporaries
+
+            clean_up_on_signals()
             try:
                 return function(*a, **kw)
             except SealError as error:
@@ -66,6 +69,15 @@ def command(*args: Any, on: typer.Typer | None = None, **kwargs: Any) -> Callabl
                 raise typer.Exit(130) from None
             except BrokenPipeError:
                 raise typer.Exit(0) from None
+            except MemoryError:
+                err.print("error: out of memory: ask for less (fewer particles, steps, episodes or a smaller "
+                          "map)", markup=False)
+                raise typer.Exit(1) from None
+            except RecursionError:
+                err.print("error: the input is nested too deeply for seal to handle", markup=False)
+                raise typer.Exit(1) from None
+            finally:
+                remove_temporaries()  # of outputs planned but never written: the command failed first
 
         (on or app).command(*args, **kwargs)(run)
         return function
@@ -86,6 +98,9 @@ def framelib_paths(paths: list[Path] | None) -> list[Path] | None:
 FramelibOption = typer.Option(None, "--framelib", help="Frame library file or folder (repeatable); "
                               "default: the shipped standard library.", show_default=False)
 JsonOption = typer.Option(False, "--json", help="Machine-readable output on stdout.")
+
+OUTPUT_SUFFIXES = {"--png": (".png",), "--rrd": (".rrd",), "--episodes": (".jsonl", ".json")}
+"""The suffixes each output option's format may carry (``--png out.jpg`` is refused, not mislabelled)."""
 
 
 def _version(value: bool) -> None:

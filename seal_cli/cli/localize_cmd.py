@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import contextlib
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -74,8 +73,9 @@ def localize(
     """Run SeFM: where each frame of the tasks' plans can be executed, and where each object is."""
     import numpy as np
 
+    from seal_cli.cli import OUTPUT_SUFFIXES
     from seal_cli.errors import SealError
-    from seal_cli.fileio import atomic_output
+    from seal_cli.fileio import Outputs
     from seal_cli.frames.library import load_library
     from seal_cli.maps.model import load_map
     from seal_cli.planning.plan import frames_to_localise
@@ -95,16 +95,17 @@ def localize(
     check_inside(runs, the_map.bounds, the_map.name)
     bindings, state = frames_to_localise(tasks or [], library, the_map, holding=holding, done=done or [])
     rng = np.random.default_rng(seed)
-    with contextlib.ExitStack() as files:
+    with Outputs({"--rrd": rrd, "--png": png}, [map_name, trajectory, observations, *(framelib or [])],
+                 suffixes=OUTPUT_SUFFIXES) as files:
         observers: list[Any] = []
         if rrd is not None:
             from seal_cli.sefm.observers.rerun import RerunRecorder
 
-            observers.append(RerunRecorder(files.enter_context(atomic_output(rrd))))
+            observers.append(RerunRecorder(files["--rrd"]))
         if png is not None:
             from seal_cli.sefm.observers.png import PngDrawer
 
-            observers.append(PngDrawer(files.enter_context(atomic_output(png))))
+            observers.append(PngDrawer(files["--png"]))
         classes = () if bindings else the_map.classes
         sefm = SeFM(the_map, bindings, state, rng, SeFMConfig(particles=particles), observers, classes=classes)
         sefm.follow(runs, steps)

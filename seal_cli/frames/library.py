@@ -13,6 +13,7 @@ from functools import cached_property
 from pathlib import Path
 
 from seal_cli.errors import SealError, SealErrors, Where
+from seal_cli.fileio import read_text
 from seal_cli.frames.model import Frame, normalize_unit
 from seal_cli.frames.taxonomy import Taxonomy
 
@@ -115,9 +116,9 @@ def read_files(files: Sequence[Path]) -> Contents:
     pieces = Contents()
     for path in files:
         try:
-            text = path.read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError) as exc:
-            pieces.problems.append(SealError(f"cannot read {path}: {exc}", Where(str(path))))
+            text = read_text(path)
+        except SealError as exc:
+            pieces.problems.append(exc)
             continue
         reader = dsl.read if path.suffix == ".frame" else yamlformat.read
         content = reader(text, str(path))
