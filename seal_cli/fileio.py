@@ -70,22 +70,22 @@ def read_bytes(path: str | Path, limit: int = MAX_INPUT_BYTES, what: str = "file
     try:
         info = path.stat()
     except FileNotFoundError:
-        raise SealError(f"no such {what}: {path}", where) from None
+        raise SealError(f"no such {what}", where) from None
     except OSError as exc:
-        raise SealError(f"cannot read {path}: {exc.strerror}", where) from None
+        raise SealError(f"cannot read this {what}: {exc.strerror}", where) from None
     if stat.S_ISDIR(info.st_mode):
-        raise SealError(f"{path} is a folder, not a file", where)
+        raise SealError(f"this is a folder, not a {what}", where)
     if not stat.S_ISREG(info.st_mode):
-        raise SealError(f"cannot read {path}: it is {_kind(info.st_mode)}, not a regular file", where)
+        raise SealError(f"cannot read this {what}: it is {_kind(info.st_mode)}, not a regular file", where)
     if info.st_size > limit:
-        raise SealError(f"{path} is {_size(info.st_size)}; seal reads {what}s of at most {_size(limit)}", where)
+        raise SealError(f"this {what} is {_size(info.st_size)}; seal reads {what}s of at most {_size(limit)}", where)
     try:
         with path.open("rb") as handle:
             data = handle.read(limit + 1)
     except OSError as exc:
-        raise SealError(f"cannot read {path}: {exc.strerror}", where) from None
+        raise SealError(f"cannot read this {what}: {exc.strerror}", where) from None
     if len(data) > limit:  # it grew while we read it
-        raise SealError(f"{path} is larger than {_size(limit)}, the most seal reads", where)
+        raise SealError(f"this {what} is larger than {_size(limit)}, the most seal reads", where)
     _READ[(info.st_dev, info.st_ino)] = str(path)
     return data
 
@@ -128,8 +128,11 @@ def split_lines(text: str) -> list[str]:
 
 def read_yaml(path: str | Path) -> Any:
     """A YAML file's data; syntax errors carry the line and column, with the line and a caret."""
+    from seal_cli.yamlnodes import check_size
+
     text = read_text(path)
     try:
+        check_size(yaml.compose(text, Loader=LOADER), str(path))  # no alias bomb is expanded
         return yaml.load(text, Loader=LOADER)  # noqa: S506 (a safe loader)
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark

@@ -92,7 +92,7 @@ def localize(
         runs = read_trajectory(trajectory)
     elif observations is not None:
         runs = read_observations(observations)
-    check_inside(runs, the_map.bounds, the_map.name)
+    check_inside(runs, the_map.bounds, the_map.name, the_map.is_occupied)
     bindings, state = frames_to_localise(tasks or [], library, the_map, holding=holding, done=done or [])
     rng = np.random.default_rng(seed)
     with Outputs({"--rrd": rrd, "--png": png}, [map_name, trajectory, observations, *(framelib or [])],

@@ -100,9 +100,9 @@ def bench_plan(
     library = load_library(framelib_paths(framelib))
     world = _load_world(map_name)
     if file is not None:
-        from seal_cli.fileio import read_text
+        from seal_cli.fileio import read_text, split_lines
 
-        texts = [line.strip() for line in read_text(file).splitlines() if line.strip()]
+        texts = [line.strip() for line in split_lines(read_text(file)) if line.strip()]
         if not texts:
             from seal_cli.errors import SealError, Where
 

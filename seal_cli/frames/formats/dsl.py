@@ -77,6 +77,8 @@ class _Builder:
     def problem(self, exc: SealError, at: Tree | Token) -> None:
         for problem in getattr(exc, "problems", None) or [exc]:
             where = problem.where if problem.where.line else self.where(at)
+            if where.file is None:
+                where = Where(self.file, where.line, where.column)
             line = self.lines[where.line - 1] if where.line and where.line <= len(self.lines) else None
             self.contents.problems.append(SealError(problem.message, where, source_line=line))
 
@@ -145,7 +147,16 @@ class _Builder:
 
 
 def _string(token: Any) -> str:
-    return str(json.loads(str(token)))
+    """A quoted string's text, with JSON's escapes (``\\"``, ``\\\\``, ``\\n``, ``\\u00e9``)."""
+    try:
+        return str(json.loads(str(token)))
+    except json.JSONDecodeError as exc:
+        bad = str(token)[exc.pos:exc.pos + 2] if exc.msg.startswith("Invalid \\escape") else str(token)[exc.pos]
+        line, column = getattr(token, "line", None), getattr(token, "column", None)
+        where = Where(None, line, column + exc.pos) if line is not None and column is not None else None
+        raise SealError(f"a quoted string may not hold {bad!r}: write a tab or a newline as \\t or \\n, a "
+                        "quote as \\\", a backslash as \\\\, any other character as itself or \\uXXXX",
+                        where) from None
 
 
 def read(text: str, file: str = "<frame>") -> Contents:
