@@ -82,7 +82,7 @@ def shape(node: yaml.Node) -> str:
 
 def suggest(word: str, choices: Iterable[str]) -> str:
     """`` (did you mean 'x'?)`` for the closest choice, or nothing."""
-    close = difflib.get_close_matches(word, list(choices), n=1)
+    close = difflib.get_close_matches(word, [c for c in choices if c != word], n=1)
     return f" (did you mean {close[0]!r}?)" if close else ""
 
 

@@ -55,7 +55,7 @@ def _duplicates(frames: Sequence[Frame]) -> Iterator[SealError]:
 
 
 def _suggest(word: str, choices: Iterable[str]) -> str:
-    close = difflib.get_close_matches(word, sorted(choices), n=1)
+    close = difflib.get_close_matches(word, sorted(set(choices) - {word}), n=1)
     return f" (did you mean {close[0]!r}?)" if close else ""
 
 
@@ -115,8 +115,19 @@ def _unachieved(frames: Sequence[Frame], taxonomy: Taxonomy) -> Iterator[SealErr
         for fact in frame.preconditions:
             if not _is_world(fact, taxonomy) and _key(fact) not in achieved:
                 yield SealError(f"precondition {fact} of {frame.name} is achieved by no frame's postcondition "
-                                f"and is not a world fact{_suggest(fact.predicate, produced)}; "
+                                f"and is not a world fact{_near(fact, achieved, produced)}; "
                                 "declare it under 'world:' if the world or robot provides it", fact.where)
+
+
+def _near(fact: Fact, achieved: set[tuple[str, bool, int]], produced: Sequence[str]) -> str:
+    """What a frame does achieve of this predicate (another sign or number of arguments), else a
+    close name."""
+    forms = sorted((negated, arity) for name, negated, arity in achieved if name == fact.predicate)
+    if not forms:
+        return _suggest(fact.predicate, produced)
+    said = " or ".join(f"{'not ' if negated else ''}{fact.predicate} with {arity} argument{'s' * (arity != 1)}"
+                       for negated, arity in forms)
+    return f" (frames achieve only {said})"
 
 
 def _key(fact: Fact) -> tuple[str, bool, int]:
