@@ -7,9 +7,9 @@ from pathlib import Path
 from typing import Any
 
 import typer
-from rich.table import Table
 
 from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
+from seal_cli.sim.policies import DEFAULT_POLICIES, POLICIES
 
 KIND_STYLE = {"plan": "bold", "frame": "bold cyan", "search": "yellow", "go": "", "see": "green", "look": "dim",
               "act": "green", "fail": "red", "replan": "magenta", "done": "bold green", "give_up": "bold red"}
@@ -31,8 +31,8 @@ def run(
                                        show_default=False),
     done: list[str] | None = typer.Option(None, "--done", help="A command already carried out (repeatable): its "
                                           "frames' postconditions hold at the start.", show_default=False),
-    policy: str = typer.Option("sefm", "--policy", help="Who searches: sefm, object_only, coverage, oracle or "
-                               "uniform."),
+    policy: str = typer.Option("sefm", "--policy", help="Who searches: " + "; ".join(
+        f"{name} ({entry.summary})" for name, entry in POLICIES.items()) + "."),
     seed: int = typer.Option(0, "--seed", min=0, help="Seed of the one random generator."),
     particles: int = typer.Option(200, "--particles", min=1, help="Particles per object and per frame."),
     max_steps: int = typer.Option(400, "--max-steps", min=1, help="Give up after this many steps."),
@@ -49,11 +49,12 @@ def run(
     """Simulate a robot that searches for what the command needs, goes there and does it, narrating each step."""
     import numpy as np
 
-    from seal_cli.frames.library import load_library
-    from seal_cli.maps.model import load_map
+    from seal_cli.frames.reading import load_library
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
     from seal_cli.resources import map_path
-    from seal_cli.sim.agent import Budget, run_on_map
-    from seal_cli.sim.policies.baselines import make_policy
+    from seal_cli.sim.agent import Budget
+    from seal_cli.sim.policies import make_policy
 
     library = load_library(framelib_paths(framelib))
     the_map = load_map(map_path(map_name))
@@ -66,8 +67,7 @@ def run(
     from seal_cli.fileio import Outputs
 
     searcher = make_policy(policy, particles)
-    if hasattr(searcher, "keep_clouds") and (rrd is not None or png is not None):
-        searcher.keep_clouds = True
+    searcher.keep_clouds = rrd is not None or png is not None
     with Outputs({"--rrd": rrd, "--png": png}, [map_name, vocabulary_file, *(framelib or [])],
                  suffixes=OUTPUT_SUFFIXES) as outputs:
         agent, result = run_on_map(the_map, text, library, searcher, rng=np.random.default_rng(seed),
@@ -117,8 +117,8 @@ def tasks(
                                               show_default=False),
     layouts: int = typer.Option(10, "--layouts", min=1, help="With --suite map: object layouts drawn from the "
                                 "map's priors."),
-    policies: str = typer.Option("sefm,object_only,coverage,oracle", "--policies",
-                                 help="Comma-separated policies (uniform: SeFM without priors)."),
+    policies: str = typer.Option(",".join(DEFAULT_POLICIES), "--policies",
+                                 help="Comma-separated policies, of: " + ", ".join(POLICIES) + "."),
     jobs: int = typer.Option(0, "--jobs", min=0, help="Worker processes (0: one per core)."),
     seed: int = typer.Option(0, "--seed", min=0, help="Seed; each episode's generator is derived from it."),
     particles: int = typer.Option(200, "--particles", min=1, help="Particles per object and per frame."),
@@ -143,16 +143,15 @@ def tasks(
     names = [p.strip() for p in policies.split(",") if p.strip()]
     if not names:
         raise SealError("--policies names no policy")
-    from seal_cli.sim.policies.baselines import make_policy
-
-    for name in names:
-        make_policy(name)
+    unknown = [name for name in names if name not in POLICIES]
+    if unknown:
+        raise SealError(f"--policies: unknown policy {unknown[0]!r}; known: {', '.join(POLICIES)}")
     from seal_cli.cli import OUTPUT_SUFFIXES
     from seal_cli.fileio import Outputs
 
     outputs = Outputs({"--episodes": episodes}, [data, *(framelib or [])], suffixes=OUTPUT_SUFFIXES)
     outcomes: list[Outcome] = []
-    with Progress(TextColumn("episodes"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), console=err,
+    with Progress(TextColumn("episodes"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), console=err.console,
                   transient=True, disable=not err.is_terminal) as progress:
         bar = progress.add_task("episodes", total=None)
 
@@ -188,6 +187,8 @@ def tasks(
 
 
 def _table(report: dict[str, Any], names: list[str]) -> None:
+    from rich.table import Table
+
     if report["suite"] == "map":
         title = f"map {report['map']}, {report['layouts']} layouts: success rate / mean path (m)"
     else:

@@ -15,9 +15,9 @@ and the map the robot is given: free space, places, priors, sensor). The loop is
    what the world told it, and **replans** from the state it is in; it **gives up** after a
    budget of steps or metres.
 
-The policies differ only in where they look (:class:`Policy`): the SeFM agent
-(:class:`~seal_cli.sim.policies.sefm.SeFMPolicy`) goes to observe the best mode of the current frame's belief;
-the baselines are in :mod:`seal_cli.sim.policies.baselines`.
+The policies differ only in where they look (:class:`~seal_cli.sim.policies.base.Policy`): the SeFM
+agent (:class:`~seal_cli.sim.policies.sefm.SeFMPolicy`) looks where its frame beliefs say; the others are
+registered beside it in :data:`seal_cli.sim.policies.POLICIES`.
 Everything else — execution, perception, bookkeeping of path
 length — is shared, so that the comparison measures the search and nothing else.
 
@@ -30,7 +30,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import Any, Protocol
+from typing import Any
 
 import numpy as np
 
@@ -41,9 +41,10 @@ from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.model import Map
 from seal_cli.planning.state import State
 from seal_cli.sim.navigation import Cell, Grid
+from seal_cli.sim.policies.base import Policy
 from seal_cli.sim.world import HAND, Detection, Item, Outcome, World
 
-__all__ = ["Agent", "Budget", "Known", "Policy", "Record", "Result", "Scene", "View", "run_on_map", "scene_from_map"]
+__all__ = ["Agent", "Budget", "Known", "Policy", "Record", "Result", "Scene", "View", "scene_from_map"]
 
 
 @dataclass
@@ -118,18 +119,6 @@ class Known:
     """The place a thing was seen in or on."""
 
 
-class Policy(Protocol):
-    """Where to look next. ``begin`` once per run, ``observe`` after every look."""
-
-    name: str
-
-    def begin(self, agent: Agent) -> None: ...
-
-    def observe(self, agent: Agent, detections: Sequence[Detection]) -> None: ...
-
-    def next_view(self, agent: Agent, binding: Binding, target: str) -> View | None: ...
-
-
 class Agent:
     """One robot, one command, one policy; see the module docstring."""
 
@@ -167,7 +156,7 @@ class Agent:
         self.index = 0
         self.todo: list[Binding] = []
         """The commanded frames not yet executed."""
-        self._learn_places(bool(getattr(policy, "oracle", False)))
+        self._learn_places(policy.oracle)
 
     # -- knowledge ---------------------------------------------------------------------------
 
@@ -331,9 +320,7 @@ class Agent:
             return None
         if previous is not None and any(k.id == previous for k in candidates):
             return previous
-        choose = getattr(self.policy, "choose", None)
-        pick = choose(self, key, candidates) if choose else None
-        return pick or self.nearest(candidates)
+        return self.policy.choose(self, key, candidates) or self.nearest(candidates)
 
     def room(self, value: str) -> Any:
         """The map's room a value names, if it names one."""
@@ -417,8 +404,7 @@ class Agent:
             if target is not None:
                 if self.world.held_chain(target):
                     return Outcome(True, f"holds {target}")
-                stand = getattr(self.policy, "stand", None)
-                cell = stand(self, self.known[target]) if stand else self.stand_cell(self.known[target])
+                cell = self.policy.stand(self, self.known[target])
                 if cell is None:
                     self.unreachable.add(target)
                     self.say("fail", f"{target} cannot be reached from anywhere the robot can drive")
@@ -672,7 +658,8 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
     """A world built from a seal map's places and ground-truth objects, on its free space."""
     from scipy.ndimage import binary_erosion
 
-    from seal_cli.sim.world import Item, Robot, Sensor
+    from seal_cli.sensing.model import RangeSensor
+    from seal_cli.sim.world import Item, Robot
 
     taxonomy = library.taxonomy
     items = [Item(p.name, p.cls, p.at, movable=False, receptacle=True, openable=p.openable,
@@ -698,36 +685,6 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
         free = grid_free
     res = m.grid.resolution
     grid = Grid(free.astype(bool), (m.grid.origin[0] + res / 2, m.grid.origin[1] + res / 2), res, 8)
-    sensor = Sensor(range=m.sensor.range, fov=m.sensor.fov_deg,
-                    blocked=lambda pose, pts: ~m.line_of_sight(pose[:2], pts))
-    world = World(items, Robot(pose=m.robot.pose, holding=holding), taxonomy=taxonomy, sensor=sensor)
+    world = World(items, Robot(pose=m.robot.pose, holding=holding), taxonomy=taxonomy,
+                  sensor=RangeSensor.on_map(m))
     return Scene(world, m, grid, tuple(sorted({i.key for i in items})), m.name)
-
-
-def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.random.Generator,
-               holding: str | None = None, done: Sequence[str] = (), vocabulary: Any = None,
-               budget: Budget | None = None, observers: Sequence[Callable[[Record], None]] = ()
-               ) -> tuple[Agent, Result]:
-    """Carry out a command on a map whose ground-truth objects are the world (``seal run``).
-
-    The command and the ``done`` commands (already carried out) are parsed with the map's
-    vocabulary — or ``vocabulary``, restricted to the map's classes — and grounded without the
-    map's objects, which the robot must find; ``holding`` overrides what the map's robot holds.
-    """
-    from dataclasses import replace
-
-    from seal_cli.language.grounding import vocabulary_of_map
-    from seal_cli.language.parser import parse_command
-    from seal_cli.maps.model import Robot
-    from seal_cli.planning.problem import build_problem
-
-    if holding is not None:
-        m = replace(m, robot=Robot(m.robot.pose, holding))
-    known = vocabulary_of_map(m)
-    vocabulary = known if vocabulary is None else vocabulary.restricted_to(known.classes)
-    parses = [parse_command(t, library, vocabulary) for t in (*done, text)]
-    problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1])
-    agent = Agent(scene_from_map(m, library), library, policy, rng=rng, budget=budget, observers=observers,
-                  classes=problem.state.classes)
-    executed = [b for p in parses[:-1] for b in build_problem(p, library).commanded]
-    return agent, agent.run(problem.commanded, done=executed)

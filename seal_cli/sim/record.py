@@ -63,7 +63,7 @@ def write_rrd(path: str | Path, agent: Agent) -> None:
                 at = agent.world.items[item].at
                 stream.log(f"observations/{agent.world.items[item].key}", rr.Points2D([at], radii=0.1,
                                                                                    colors=[44, 160, 44]))
-        for cloud in getattr(agent.policy, "clouds", []):
+        for cloud in agent.policy.clouds:
             stream.set_time("step", sequence=cloud["step"])
             if cloud["frame_particles"] is not None:
                 X, W = cloud["frame_particles"]
@@ -89,7 +89,7 @@ def write_png(path: str | Path, agent: Agent, title: str = "") -> None:
     fig, ax = plt.subplots(figsize=(9.0, max(3.0, 9.0 * (ymax - ymin) / (xmax - xmin) + 0.6)))
     try:
         draw_map(ax, m, objects=False, robot=False)
-        clouds: list[dict[str, Any]] = getattr(agent.policy, "clouds", [])
+        clouds: list[dict[str, Any]] = agent.policy.clouds
         if clouds and clouds[-1]["frame_particles"] is not None:
             X, W = clouds[-1]["frame_particles"]
             ax.scatter(X[:, 0], X[:, 1], s=4 + 40 * W / max(W.max(), 1e-12), c="#ff7f0e", alpha=0.6, zorder=2,
