@@ -10,10 +10,11 @@ May import anything; nothing imports it (but ``python -m seal_cli``).
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import json
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypeVar
 
@@ -25,7 +26,8 @@ from seal_cli.errors import SealError, SealErrors
 if TYPE_CHECKING:
     from rich.console import Console
 
-__all__ = ["OUTPUT_SUFFIXES", "app", "bench_app", "command", "emit_json", "err", "main", "out"]
+__all__ = ["MAX_PARTICLES", "MAX_STEPS", "OUTPUT_SUFFIXES", "app", "bench_app", "command", "emit_json", "err",
+           "main", "out", "progress_bar"]
 
 app = typer.Typer(
     name="seal",
@@ -112,6 +114,26 @@ def command(*args: Any, on: typer.Typer | None = None, **kwargs: Any) -> Callabl
     return decorate
 
 
+@contextlib.contextmanager
+def progress_bar(what: str, total: int | None = None) -> Iterator[Callable[[int, int], None]]:
+    """``advance(done, total)`` for a bar with the count, the time taken and an estimate of the time
+    left: on stderr, and only when stderr is a terminal (nothing in a pipe, a file or a test)."""
+    from rich.progress import (
+        BarColumn,
+        MofNCompleteColumn,
+        Progress,
+        TextColumn,
+        TimeElapsedColumn,
+        TimeRemainingColumn,
+    )
+
+    with Progress(TextColumn(what), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), TextColumn("left"),
+                  TimeRemainingColumn(), console=err.console, transient=True,
+                  disable=not err.is_terminal) as progress:
+        bar = progress.add_task(what, total=total)
+        yield lambda done, total: progress.update(bar, completed=done, total=total)
+
+
 def emit_json(data: Any) -> None:
     """One JSON document on stdout."""
     sys.stdout.write(json.dumps(data, ensure_ascii=False) + "\n")
@@ -125,6 +147,12 @@ def framelib_paths(paths: list[Path] | None) -> list[Path] | None:
 FramelibOption = typer.Option(None, "--framelib", help="Frame library file or folder (repeatable); "
                               "default: the shipped standard library.", show_default=False)
 JsonOption = typer.Option(False, "--json", help="Machine-readable output on stdout.")
+
+MAX_PARTICLES = 100_000
+"""The most particles per object and per frame a command takes (a million per belief fills memory)."""
+
+MAX_STEPS = 100_000
+"""The most belief updates ``seal localize --steps`` takes (about ten minutes at 200 particles)."""
 
 OUTPUT_SUFFIXES = {"--png": (".png",), "--rrd": (".rrd",), "--episodes": (".jsonl", ".json")}
 """The suffixes each output option's format may carry (``--png out.jpg`` is refused, not mislabelled)."""
