@@ -14,6 +14,7 @@ from functools import cache
 from pathlib import Path
 
 from seal_cli.errors import SealError, SealErrors, Where
+from seal_cli.fileio import read_text
 from seal_cli.frames.formats import Contents, Reader, dsl, yamlfile
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame, LexicalUnit
@@ -51,9 +52,9 @@ def read_files(files: Sequence[Path]) -> Contents:
     pieces = Contents()
     for path in files:
         try:
-            text = path.read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError) as exc:
-            pieces.problems.append(SealError(f"cannot read {path}: {exc}", Where(str(path))))
+            text = read_text(path)
+        except SealError as exc:
+            pieces.problems.append(exc)
             continue
         reader = READERS.get(path.suffix, yamlfile.read)
         pieces.add(reader(text, str(path)))

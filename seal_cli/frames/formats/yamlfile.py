@@ -148,6 +148,9 @@ class _Reader(NodeReader):
         built = self.build(lambda: Frame(str(name), description=str(description), where=self.where(name_node),
                                          **args),  # type: ignore[arg-type]
                            name_node)
+        if built is None:  # still checked with the others, without the parts refused above
+            built = Frame.salvage(str(name), description=str(description), where=self.where(name_node),
+                                  **args)
         if built:
             self.contents.frames.append(built)
 
