@@ -74,11 +74,13 @@ def goals_for(m: Map, frame_ids: Sequence[str], frames: Sequence[Mapping[str, An
 
 
 def check_goals_path(path: str | Path, inputs: Sequence[str | Path | None] = ()) -> None:
-    """Refuse, before anything runs, a goals file that cannot be written or would overwrite an input."""
+    """Refuse, before anything runs, a goals file that cannot be written or is one of ``inputs`` (the run's
+    inputs and its other outputs)."""
     target = Path(path)
     for given in inputs:
         if given is not None and Path(given).resolve() == target.resolve():
-            raise SealError(f"--goals {target} is an input of the run: give another file", Where(str(target)))
+            raise SealError(f"--goals {target} is an input or another output of the run: give another file",
+                            Where(str(target)))
     folder = target.parent if str(target.parent) else Path(".")
     if not folder.is_dir():
         raise SealError(f"cannot write goals to {target}: folder {folder} does not exist", Where(str(target)))
