@@ -65,6 +65,7 @@ class SeFMPolicy(Policy):
         self.history: list[tuple[tuple[float, float, float], tuple[Detection, ...]]] = []
         self.tried: set[tuple[Cell, str | None]] = set()
         self.sefm: Any = None
+        self.planner: Any = None
         self.key: tuple[str, ...] = ()
         self.map = agent.scene.map
         if not self.priors:
@@ -155,6 +156,43 @@ class SeFMPolicy(Policy):
         return agent.index
 
     def next_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
+        """With frames, the view that starts the shortest expected completion of the whole remaining
+        plan (:meth:`plan_view`); where that has nothing to say, and for object-only, :meth:`greedy_view`."""
+        if self.use_frames and self.whole_plan:
+            decision = self.plan_view(agent, binding, target)
+            if decision is not None:
+                self.tried.add((decision.view.cell, decision.view.open))
+                return decision.view
+        return self.greedy_view(agent, binding, target)
+
+    whole_plan = True
+    """Search for the whole remaining plan (off: the step's own belief, the search of earlier rounds)."""
+
+    def plan_view(self, agent: Agent, binding: Binding, target: str) -> Any:
+        """The region to look at for the whole remaining plan (:class:`~seal_cli.sim.policies.whole_plan.
+        WholePlanSearch`) under SeFM's beliefs of the things still unknown — the commanded frames'
+        unknown elements, each SeFM's object belief after every look so far, as a mass per free cell."""
+        from seal_cli.sim.policies.whole_plan import WholePlanSearch
+
+        if self.planner is None:
+            self.planner = WholePlanSearch(agent)
+        sefm = self._beliefs(agent)
+        sefm.update(agent.world.robot.pose, (), self._state(agent))
+        points = self.map.free_centres
+
+        def weights(cls: str) -> np.ndarray:
+            if cls in sefm.object_classes:
+                w = np.asarray(sefm.object_density(cls, points), dtype=float)
+            else:
+                w = np.asarray(self.map.prior(cls).weights, dtype=float)
+            return np.where(np.isfinite(w) & (w > 0), w, 0.0)
+
+        decision = self.planner.choose(agent, binding, target, weights)
+        if decision is not None:
+            self.planner.looked.add(decision.region.name)
+        return decision
+
+    def greedy_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
         """The view that reveals the most belief per metre: opening a shut receptacle reveals the
         mass at it; standing on a mode reveals the mass the beliefs' sensor would see there and no
         shut receptacle hides."""
