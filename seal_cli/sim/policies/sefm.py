@@ -110,16 +110,29 @@ class SeFMPolicy(Policy):
                 self.snapshot(agent)
 
     def snapshot(self, agent: Agent) -> None:
-        """The clouds now: the frame at hand, and every object believed in."""
+        """The clouds now: the frame at hand, the commanded frame it serves, and every object believed in."""
         sefm = self.sefm
         objects = {c: sefm.object_particles(c) for c in sefm.object_classes}
         from seal_cli.sefm.filter import frame_id
 
         index = min(agent.index, len(sefm.bindings) - 1)
-        frame = frame_id(sefm.bindings[index]) if sefm.bindings else ""
-        self._clouds.append({"step": agent.world.step, "frame": frame,
-                            "frame_particles": sefm.frame_particles(index)
-                            if sefm.bindings else None, "objects": objects})
+        commanded = self.commanded_index(agent)
+        self._clouds.append({
+            "step": agent.world.step,
+            "frame": frame_id(sefm.bindings[index]) if sefm.bindings else "",
+            "frame_particles": sefm.frame_particles(index) if sefm.bindings else None,
+            "commanded": frame_id(sefm.bindings[commanded]) if commanded is not None else "",
+            "commanded_particles": sefm.frame_particles(commanded) if commanded is not None else None,
+            "objects": objects})
+
+    def commanded_index(self, agent: Agent) -> int | None:
+        """The plan step of the commanded frame the step at hand serves (itself, if it is commanded)."""
+        if not self.sefm.bindings:
+            return None
+        for j in range(min(agent.index, len(self.sefm.bindings) - 1), len(agent.steps)):
+            if agent.todo and agent.steps[j] == agent.todo[0] and j < len(self.sefm.bindings):
+                return j
+        return len(self.sefm.bindings) - 1
 
     def cloud(self, agent: Agent, target: str) -> tuple[np.ndarray, np.ndarray, list[Any]]:
         """Where the thing sought is believed to be, as a weight per free cell of the map, and the
