@@ -96,7 +96,7 @@ def write_png(path: str | Path, agent: Agent, title: str = "") -> None:
     clouds: list[dict[str, Any]] = agent.policy.clouds
     kept = [c for c in clouds if c["frame_particles"] is not None]
     serving = [c for c in kept if c.get("commanded") and c["commanded"] != c["frame"]]
-    last = (serving or kept or [None])[-1]   # the last look made for a step that serves another frame
+    last = (serving or kept)[-1] if kept else None   # the last look for a step that serves another frame
     panels = 2 if last is not None and last.get("commanded_particles") is not None else 1
     width = 9.0 * panels
     fig, axes = plt.subplots(1, panels, figsize=(width, max(3.0, 9.0 * (ymax - ymin) / (xmax - xmin) + 0.6)),
