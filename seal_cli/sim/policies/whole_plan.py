@@ -34,13 +34,22 @@ class Region:
     cells: np.ndarray = field(repr=False)
     """Indices into the map's free cells."""
     place: str | None = None
+    views: tuple[Cell, ...] = ()
+    """Cells that see about as much of the region as :attr:`view` does (a room's); the robot looks
+    from the one it can reach soonest."""
+
+    def nearest_view(self, field_: np.ndarray) -> Cell:
+        """The view the robot reaches soonest, by the shortest-path field from where it is."""
+        options = (self.view, *self.views)
+        return min(options, key=lambda c: float(field_[c]))
 
 
-def _room_view(agent: Agent, inside: np.ndarray, room_cells: np.ndarray) -> Cell | None:
-    """The cell of a room (rows of the agent's grid ``inside`` it) that sees the most of the room's
-    free cells within sensor range and line of sight (on a sample of both)."""
+def _room_views(agent: Agent, inside: np.ndarray, room_cells: np.ndarray) -> list[Cell]:
+    """Cells of a room (rows of the agent's grid ``inside`` it) that each see at least 0.9 of what the
+    best of them sees of the room's free cells within sensor range and line of sight (on a sample
+    of both), the best first."""
     if not len(inside):
-        return None
+        return []
     m = agent.scene.map
     points = agent.grid.free_points[inside]
     targets = m.free_centres[room_cells]
@@ -48,18 +57,18 @@ def _room_view(agent: Agent, inside: np.ndarray, room_cells: np.ndarray) -> Cell
     if len(targets) > 200:
         targets = targets[rng.choice(len(targets), 200, replace=False)]
     candidates = np.arange(len(points))
-    if len(candidates) > 60:
-        candidates = rng.choice(len(candidates), 60, replace=False)
+    if len(candidates) > 80:
+        candidates = rng.choice(len(candidates), 80, replace=False)
     reach = m.sensor.range
-    best, view = -1, int(candidates[0])
+    counts = []
     for c in candidates:
         x, y = points[c]
         near = np.hypot(targets[:, 0] - x, targets[:, 1] - y) <= reach
-        count = int(m.line_of_sight((x, y), targets[near]).sum()) if near.any() else 0
-        if count > best:
-            best, view = count, int(c)
-    cell = agent.grid.free_cells[inside[view]]
-    return int(cell[0]), int(cell[1])
+        counts.append(int(m.line_of_sight((x, y), targets[near]).sum()) if near.any() else 0)
+    order = np.argsort(-np.asarray(counts), kind="stable")
+    best = counts[int(order[0])]
+    cells = agent.grid.free_cells[inside[candidates[order]]]
+    return [(int(i), int(j)) for (i, j), n in zip(cells, np.asarray(counts)[order], strict=True) if n >= 0.9 * best]
 
 
 def regions_of(agent: Agent) -> list[Region]:
@@ -71,15 +80,15 @@ def regions_of(agent: Agent) -> list[Region]:
     out: list[Region] = []
     place_cells = {p.name: target_cells(m, p.name) for p in m.places if p.name in agent.known}
     in_room: dict[int, list[str]] = {}
-    views: dict[int, Cell] = {}
+    views: dict[int, list[Cell]] = {}
     for r, room in enumerate(m.rooms):
         cells = np.flatnonzero(m.free_cell_room == r)
         inside = np.flatnonzero(room.contains(agent.grid.free_points))
-        view = _room_view(agent, inside, cells) if len(cells) else None
-        if view is None:
+        seen_from = _room_views(agent, inside, cells) if len(cells) else []
+        if not seen_from:
             continue
-        views[r] = view
-        at = agent.grid.point(view)
+        views[r] = seen_from
+        at = agent.grid.point(seen_from[0])
         for place in m.places:
             known = agent.known.get(place.name)
             if known is None or known.openable or not room.contains([place.at])[0]:
@@ -100,11 +109,12 @@ def regions_of(agent: Agent) -> list[Region]:
         k = int(np.argmin(np.hypot(pts[:, 0] - place.at[0], pts[:, 1] - place.at[1])))
         out.append(Region(place.name, (int(stands[k, 0]), int(stands[k, 1])), place.at, own, place.name))
         taken[own] = True
-    for r, view in views.items():
+    for r, seen_from in views.items():
         cells = np.flatnonzero((m.free_cell_room == r) & ~taken)
         for name in in_room.get(r, []):
             cells = np.union1d(cells, place_cells[name][~taken[place_cells[name]]])
-        out.append(Region(m.rooms[r].name, view, agent.grid.point(view), cells))
+        out.append(Region(m.rooms[r].name, seen_from[0], agent.grid.point(seen_from[0]), cells,
+                          views=tuple(seen_from[1:])))
     return out
 
 
@@ -182,13 +192,13 @@ class WholePlanSearch:
         keep = [i for i in range(len(candidates))
                 if any(total[c] > 0 and mass[c][i] / total[c] >= 0.01 for c in sought)]
         here = agent.distances()
-        keep = [i for i in keep if np.isfinite(here[candidates[i].view])]
+        keep = [i for i in keep if np.isfinite(here[candidates[i].nearest_view(here)])]
         keep.sort(key=lambda i: -max(mass[c][i] / total[c] if total[c] > 0 else 0.0 for c in sought))
         keep = keep[:MAX_REGIONS]
         if not keep:
             return None
         regions = [candidates[i] for i in keep]
-        cells: list[Cell] = [g.view for g in regions] + [agent.robot_cell()]
+        cells: list[Cell] = [self.view_of(agent, g, here).cell for g in regions] + [agent.robot_cell()]
         plan: list[Target] = []
         for c, value, at in stops:
             if value is None:
@@ -219,4 +229,4 @@ class WholePlanSearch:
             cell = agent.stand_cell(known, field_) or region.view
             shut = known.openable and known.id not in agent.opened and not agent.world.items[known.id].is_open
             return View(cell, known.at, open=known.id if shut else None)
-        return View(region.view, region.look_at)
+        return View(region.nearest_view(field_), region.look_at)
