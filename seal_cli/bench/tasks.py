@@ -36,8 +36,9 @@ from seal_cli.bench.alfred2d import (
     load_suite,
 )
 from seal_cli.errors import SealError
-from seal_cli.frames.library import Library, load_library
+from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding
+from seal_cli.frames.reading import load_library
 
 __all__ = ["GOALS", "Outcome", "commands_for", "in_order", "run_episode", "run_suite", "summarise"]
 

@@ -18,18 +18,13 @@ from __future__ import annotations
 
 import difflib
 from collections.abc import Iterable, Iterator, Sequence
-from dataclasses import dataclass, field
-from pathlib import Path
 
-import yaml
-
-from seal_cli.errors import SealError, Where
-from seal_cli.fileio import LOADER
+from seal_cli.errors import SealError
 from seal_cli.frames.actions import PRIMITIVES
 from seal_cli.frames.model import Fact, Frame
 from seal_cli.frames.taxonomy import Synonyms, Taxonomy, class_key
 
-__all__ = ["Report", "check_library", "is_map_file", "validate_paths"]
+__all__ = ["check_library"]
 
 
 def check_library(frames: Sequence[Frame], taxonomy: Taxonomy) -> list[SealError]:
@@ -197,76 +192,3 @@ def _synonym_clashes(taxonomy: Taxonomy) -> Iterator[SealError]:
 
 
 # -- checking files as a user hands them over ---------------------------------------------------
-MAP_KEYS = frozenset({"image", "resolution", "origin", "rooms", "bounds", "places", "priors", "objects", "robot",
-                      "sensor", "negate", "occupied_thresh", "free_thresh"})
-
-
-def is_map_file(path: Path) -> bool:
-    """Whether a YAML file is a map (top-level map keys and no frame keys) rather than frames."""
-    if path.suffix not in (".yaml", ".yml"):
-        return False
-    try:
-        node = yaml.compose(path.read_text(encoding="utf-8"), Loader=LOADER)
-    except (yaml.YAMLError, OSError, UnicodeDecodeError):
-        return False
-    if not isinstance(node, yaml.MappingNode):
-        return False
-    keys = {k.value for k, _ in node.value if isinstance(k, yaml.ScalarNode)}
-    return bool(keys & MAP_KEYS) and not keys & {"frame", "frames", "categories", "world", "synonyms"}
-
-
-@dataclass
-class Report:
-    """What ``seal validate`` found."""
-
-    files: list[Path] = field(default_factory=list)
-    frames: int = 0
-    categories: int = 0
-    maps: int = 0
-    problems: list[SealError] = field(default_factory=list)
-
-    def summary(self) -> str:
-        found = f"{self.frames} frames, {self.categories} categories, {self.maps} maps in {len(self.files)} files"
-        if not self.problems:
-            return f"ok: {found}"
-        count = len(self.problems)
-        return f"{count} problem{'s' if count != 1 else ''} in {found}"
-
-    def to_json(self) -> dict[str, object]:
-        return {"ok": not self.problems, "files": [str(f) for f in self.files], "frames": self.frames,
-                "categories": self.categories, "maps": self.maps,
-                "problems": [p.to_json() for p in self.problems]}
-
-
-def validate_paths(paths: Iterable[str | Path], with_stdlib: bool = False) -> Report:
-    """Check frame files, folders and maps; every problem, sorted by file, line and column."""
-    from seal_cli.frames.library import frame_files, read_library
-
-    files, problems = frame_files(paths)
-    maps = [f for f in files if is_map_file(f)]
-    frame_paths = [f for f in files if f not in maps]
-    report = Report(files=files, maps=len(maps), problems=problems)
-    if frame_paths:
-        extra: list[Path] = []
-        if with_stdlib:
-            from seal_cli.resources import framelib_dir
-
-            extra = [p for p in frame_files([framelib_dir()])[0] if p.resolve() not in
-                     {f.resolve() for f in frame_paths}]
-        library, found = read_library(extra + frame_paths)
-        report.frames = len(library) - (len(read_library(extra)[0]) if extra else 0)
-        report.categories = len(library.taxonomy.categories)
-        report.problems.extend(found)
-    for path in maps:
-        report.problems.extend(_check_map(path))
-    report.problems.sort(key=lambda p: (p.file or "", p.line or 0, p.column or 0))
-    return report
-
-
-def _check_map(path: Path) -> list[SealError]:
-    try:
-        from seal_cli.maps.model import check_map_file
-    except ImportError:
-        return [SealError("this file looks like a map, and this version of seal cannot check maps yet",
-                          Where(str(path)))]
-    return list(check_map_file(path))

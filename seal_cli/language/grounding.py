@@ -33,14 +33,11 @@ from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from seal_cli.errors import SealError, Where
 from seal_cli.frames.taxonomy import class_key, class_words
 from seal_cli.language.lexicon import noun_lemma
-
-if TYPE_CHECKING:
-    from seal_cli.language.parser import NP
 
 __all__ = ["PIECES", "PORTIONS", "Vocabulary", "load_vocabulary", "vocabulary_of_map"]
 
@@ -215,16 +212,6 @@ class Vocabulary:
             if best is not None and weight >= 4.0:
                 break
         return None if best is None else self.classes[best[1]]
-
-    def ground_np(self, np: NP) -> str | None:
-        """The class a parsed noun phrase denotes (conjunctions: the first one)."""
-        if np.head is None or np.kind == "message":
-            return None
-        words = [w.text for w in np.mods] + [np.head.text]
-        of = []
-        if np.of is not None and np.of.head is not None:
-            of = [w.text for w in np.of.mods] + [np.of.head.text]
-        return self.ground_words(words, -1, of)
 
 
 def _entries(data: Any, where: Where) -> tuple[list[str], dict[str, list[str]]]:

@@ -42,7 +42,8 @@ from seal_cli.sefm.modes import Summary, summarise
 from seal_cli.sefm.object_beliefs import ObjectBeliefs, ObjectModel, Region, Source, source_for
 from seal_cli.sefm.potentials import KernelSums, make_kernel_sums
 from seal_cli.sefm.relations import OTHER, held, relations, spatial_roles
-from seal_cli.sensing.sensor import VisibleRegion, as_pose, visible_region
+from seal_cli.sensing.model import RangeSensor, SensorModel
+from seal_cli.sensing.sensor import VisibleRegion, as_pose
 
 __all__ = ["Observer", "SeFM", "SeFMConfig", "Step", "frame_id"]
 
@@ -128,9 +129,11 @@ class SeFM:
 
     def __init__(self, m: Map, bindings: Sequence[Binding], state: State, rng: np.random.Generator,
                  config: SeFMConfig | None = None, observers: Sequence[Observer] = (),
-                 classes: Iterable[str] = ()) -> None:
-        """``classes``: object classes to believe in besides those the frames name."""
+                 classes: Iterable[str] = (), sensor: SensorModel | None = None) -> None:
+        """``classes``: object classes to believe in besides those the frames name; ``sensor``: what sees
+        (default: the map's sensor, its view cut by the map's walls)."""
         self.map = m
+        self.sensor: SensorModel = sensor or RangeSensor.on_map(m)
         self.bindings = tuple(bindings)
         self.state = state
         self.extra_classes = tuple(class_key(c) for c in classes)
@@ -142,7 +145,7 @@ class SeFM:
         self.sources = self._sources()
         P = self.config.particles
         self.objects = ObjectBeliefs.from_prior(m, self.sources, P, rng,
-                                                self.config.objects or ObjectModel.for_map(m))
+                                                self.config.objects or ObjectModel.for_sensor(self.sensor.spec))
         self.kernel: KernelSums = make_kernel_sums(self.config.kernel, len(self.sources) + len(self.bindings), P,
                                                    m.bounds, self.config.sigma, split=len(self.sources))
         self.kernel.set(range(len(self.sources)), self.objects.X, self.objects.W)
@@ -251,10 +254,10 @@ class SeFM:
         back to where it was; the map does not change)."""
         region = self._regions.pop(pose, None)
         if region is None:
-            sensor = self.map.sensor
-            span = min(sensor.fov_deg, 360.0) * np.pi / 180
-            rays = max(16, int(np.ceil(span * sensor.range / self.config.ray_spacing)))
-            region = visible_region(self.map, pose, rays=rays)
+            spec = self.sensor.spec
+            span = min(spec.fov_deg, 360.0) * np.pi / 180
+            rays = max(16, int(np.ceil(span * spec.range / self.config.ray_spacing)))
+            region = self.sensor.region(pose, rays)
             if len(self._regions) >= REGIONS:
                 del self._regions[next(iter(self._regions))]
         self._regions[pose] = region  # most recently used last
@@ -265,15 +268,15 @@ class SeFM:
         detected there, or None to simulate it from the map's ground-truth objects), then ``steps``
         more where the last look was (the map's robot pose when there is none): the paper's 20
         updates at a fixed pose."""
+        from seal_cli.sensing.model import simulate_detections
         from seal_cli.sensing.observations import Observation
-        from seal_cli.sensing.sensor import simulate_detections
 
         last = looks[-1] if looks else Observation(self.map.robot.pose)
         for look in [*looks, *[last] * steps]:
             seen = look.detections
             if seen is None:
                 seen = tuple((d.cls, d.at) for d in simulate_detections(self.map, look.pose, self.open_places(),
-                                                                         self.rng))
+                                                                         self.rng, self.sensor))
             self.update(look.pose, seen)
 
     def close(self) -> None:

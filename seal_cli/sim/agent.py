@@ -44,7 +44,7 @@ from seal_cli.sim.navigation import Cell, Grid
 from seal_cli.sim.policies.base import Policy
 from seal_cli.sim.world import HAND, Detection, Item, Outcome, World
 
-__all__ = ["Agent", "Budget", "Known", "Policy", "Record", "Result", "Scene", "View", "run_on_map", "scene_from_map"]
+__all__ = ["Agent", "Budget", "Known", "Policy", "Record", "Result", "Scene", "View", "scene_from_map"]
 
 
 @dataclass
@@ -658,7 +658,8 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
     """A world built from a seal map's places and ground-truth objects, on its free space."""
     from scipy.ndimage import binary_erosion
 
-    from seal_cli.sim.world import Item, Robot, Sensor
+    from seal_cli.sensing.model import RangeSensor
+    from seal_cli.sim.world import Item, Robot
 
     taxonomy = library.taxonomy
     items = [Item(p.name, p.cls, p.at, movable=False, receptacle=True, openable=p.openable,
@@ -684,36 +685,6 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
         free = grid_free
     res = m.grid.resolution
     grid = Grid(free.astype(bool), (m.grid.origin[0] + res / 2, m.grid.origin[1] + res / 2), res, 8)
-    sensor = Sensor(range=m.sensor.range, fov=m.sensor.fov_deg,
-                    blocked=lambda pose, pts: ~m.line_of_sight(pose[:2], pts))
-    world = World(items, Robot(pose=m.robot.pose, holding=holding), taxonomy=taxonomy, sensor=sensor)
+    world = World(items, Robot(pose=m.robot.pose, holding=holding), taxonomy=taxonomy,
+                  sensor=RangeSensor.on_map(m))
     return Scene(world, m, grid, tuple(sorted({i.key for i in items})), m.name)
-
-
-def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.random.Generator,
-               holding: str | None = None, done: Sequence[str] = (), vocabulary: Any = None,
-               budget: Budget | None = None, observers: Sequence[Callable[[Record], None]] = ()
-               ) -> tuple[Agent, Result]:
-    """Carry out a command on a map whose ground-truth objects are the world (``seal run``).
-
-    The command and the ``done`` commands (already carried out) are parsed with the map's
-    vocabulary — or ``vocabulary``, restricted to the map's classes — and grounded without the
-    map's objects, which the robot must find; ``holding`` overrides what the map's robot holds.
-    """
-    from dataclasses import replace
-
-    from seal_cli.language.grounding import vocabulary_of_map
-    from seal_cli.language.parser import parse_command
-    from seal_cli.maps.model import Robot
-    from seal_cli.planning.problem import build_problem
-
-    if holding is not None:
-        m = replace(m, robot=Robot(m.robot.pose, holding))
-    known = vocabulary_of_map(m)
-    vocabulary = known if vocabulary is None else vocabulary.restricted_to(known.classes)
-    parses = [parse_command(t, library, vocabulary) for t in (*done, text)]
-    problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1])
-    agent = Agent(scene_from_map(m, library), library, policy, rng=rng, budget=budget, observers=observers,
-                  classes=problem.state.classes)
-    executed = [b for p in parses[:-1] for b in build_problem(p, library).commanded]
-    return agent, agent.run(problem.commanded, done=executed)

@@ -23,7 +23,7 @@ gives the step at which an item's property last took its current value, so a tas
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -31,8 +31,9 @@ import numpy as np
 from seal_cli.errors import SealError
 from seal_cli.frames.actions import PRIMITIVES
 from seal_cli.frames.taxonomy import Taxonomy, class_key
+from seal_cli.sensing.model import RangeSensor, SensorModel
 
-__all__ = ["HAND", "Detection", "Event", "Item", "Outcome", "Robot", "Sensor", "World"]
+__all__ = ["HAND", "Detection", "Event", "Item", "Outcome", "Robot", "World"]
 
 HAND = "@hand"
 """The parent of the item the robot holds."""
@@ -103,33 +104,11 @@ class Detection:
     id: str
 
 
-@dataclass(frozen=True)
-class Sensor:
-    """What the robot sees from a pose: within ``range`` metres and ``fov`` degrees of its heading,
-    and, when ``blocked`` is given, with nothing occupied between (``blocked(pose, points) -> bool[]``)."""
-
-    range: float = 5.0
-    fov: float = 360.0
-    blocked: Callable[[Sequence[float], np.ndarray], np.ndarray] | None = None
-
-    def visible(self, pose: Sequence[float], points: np.ndarray) -> np.ndarray:
-        pts = np.asarray(points, dtype=float).reshape(-1, 2)
-        d = pts - np.asarray(pose[:2], dtype=float)
-        ok = np.hypot(d[:, 0], d[:, 1]) <= self.range
-        if self.fov < 360.0:
-            bearing = np.arctan2(d[:, 1], d[:, 0]) - (pose[2] if len(pose) > 2 else 0.0)
-            off = np.abs((bearing + np.pi) % (2 * np.pi) - np.pi)
-            ok &= (off <= math.radians(self.fov) / 2) | (np.hypot(d[:, 0], d[:, 1]) < 1e-9)
-        if self.blocked is not None and ok.any():
-            ok[ok] &= ~np.asarray(self.blocked(pose, pts[ok]), dtype=bool)
-        return ok
-
-
 class World:
     """The simulated household: items, the robot, and the log of what was done."""
 
     def __init__(self, items: Iterable[Item], robot: Robot | None = None, *, taxonomy: Taxonomy | None = None,
-                 reach: float = 1.5, sensor: Sensor | None = None, access_tolerance: float = 0.2) -> None:
+                 reach: float = 1.5, sensor: SensorModel | None = None, access_tolerance: float = 0.2) -> None:
         self.items: dict[str, Item] = {}
         for item in items:
             if item.id in self.items or item.id == HAND:
@@ -150,7 +129,7 @@ class World:
             self.robot.holding = held[0]
         self.taxonomy = taxonomy or Taxonomy()
         self.reach = reach
-        self.sensor = sensor or Sensor()
+        self.sensor: SensorModel = sensor or RangeSensor()
         self.access_tolerance = access_tolerance
         self.step = 0
         self.log: list[Event] = []

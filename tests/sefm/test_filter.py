@@ -14,11 +14,11 @@ from seal_cli.bench.houses import SECOND_HOUSE_TRAJECTORY, aws_house, second_hou
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding, Fact
 from seal_cli.maps.model import Map, ObjectTruth, Place, Robot, Room, Sensor
-from seal_cli.planning.plan import plan_text
+from seal_cli.pipeline import plan as plan_text
 from seal_cli.planning.state import State, robot_facts
 from seal_cli.sefm.filter import SeFM, SeFMConfig, frame_id
 from seal_cli.sefm.modes import room_masses
-from seal_cli.sensing.sensor import simulate_detections
+from seal_cli.sensing.model import simulate_detections
 
 SEEDS = range(5)
 
@@ -104,7 +104,7 @@ def test_on_the_aws_house_a_look_into_the_bedroom_lowers_it_once_then_it_stays(l
                                                                                tmp_path: Path) -> None:
     """The map's middle sees a sixth of the (50 m²) bedroom: the spoon's bedroom mass drops at the first
     look and stays there for the other 19 updates at that pose; Stir keeps the bedroom on top."""
-    from seal_cli.maps.model import load_map
+    from seal_cli.maps.formats.map_server import load_map
 
     m = load_map(aws_house(tmp_path, shared_data, "north_family", (0.0, 0.0, 0.0)))
     bindings, state = paper_frames(library, m)
@@ -386,9 +386,9 @@ def test_weights_are_always_finite_and_normalised(library: Library, scenario: tu
 
 def test_public_queries_agree_with_the_summaries() -> None:
     """What a searcher asks SeFM: particles, densities at points, closed places."""
-    from seal_cli.frames.library import load_library
-    from seal_cli.maps.model import load_map
-    from seal_cli.planning.plan import plan_text
+    from seal_cli.frames.reading import load_library
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan as plan_text
     from seal_cli.resources import map_path
     from seal_cli.sefm.filter import SeFM
 

@@ -13,7 +13,7 @@ from typing import Any
 from lark import Lark, Token, Tree, UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
 
 from seal_cli.errors import SealError, Where
-from seal_cli.frames.library import Contents
+from seal_cli.frames.formats import Contents
 from seal_cli.frames.model import Action, Element, Fact, Frame, LexicalUnit
 from seal_cli.frames.taxonomy import Category, Synonyms, Taxonomy
 from seal_cli.resources import grammar_path

@@ -28,7 +28,7 @@ import yaml
 
 from seal_cli.errors import Where
 from seal_cli.fileio import LOADER
-from seal_cli.frames.library import Contents
+from seal_cli.frames.formats import Contents
 from seal_cli.frames.model import Action, Element, Fact, Frame, LexicalUnit
 from seal_cli.frames.taxonomy import Category, Synonyms, Taxonomy
 from seal_cli.yamlnodes import NodeReader, is_null

@@ -107,7 +107,7 @@ class CoveragePolicy(Policy):
         if not len(unseen):
             return None
         reach = 0.8 * agent.world.sensor.range
-        blocked = agent.world.sensor.blocked
+        sensor = agent.world.sensor
         grid = agent.grid
         points, cells = grid.free_points, grid.free_cells
         here = agent.robot_cell()
@@ -120,9 +120,8 @@ class CoveragePolicy(Policy):
         def seen_from(cell: int) -> np.ndarray:
             """Indices (into ``unseen``) of the unseen points within range of a cell it can see."""
             near = np.asarray(sorted(tree.query_ball_point(points[cell], reach)), dtype=np.intp)
-            if blocked is not None and len(near):
-                x, y = points[cell]
-                near = near[~np.asarray(blocked((float(x), float(y), 0.0), self.lattice[unseen[near]]), dtype=bool)]
+            if len(near):
+                near = near[sensor.line_of_sight(points[cell], self.lattice[unseen[near]])]
             return near
 
         first: int | None = None

@@ -10,7 +10,8 @@ import numpy as np
 import pytest
 
 from seal_cli.frames.library import Library
-from seal_cli.maps.model import Map, load_map
+from seal_cli.maps.formats.map_server import load_map
+from seal_cli.maps.model import Map
 from seal_cli.planning.state import State, robot_facts
 from seal_cli.resources import map_path
 from seal_cli.sefm.filter import SeFM, SeFMConfig
