@@ -43,8 +43,10 @@ from seal_cli.bench.houses import (
 from seal_cli.bench.mapsuite import sample_layout
 from seal_cli.bench.tasks import Outcome, in_order, summarise
 from seal_cli.errors import SealError
-from seal_cli.frames.library import Library, load_library
-from seal_cli.maps.model import Map, ObjectTruth, Robot, load_map
+from seal_cli.frames.library import Library
+from seal_cli.frames.reading import load_library
+from seal_cli.maps.formats.map_server import load_map
+from seal_cli.maps.model import Map, ObjectTruth, Robot
 
 __all__ = ["COMMANDS", "House", "houses", "regroup", "run_context_suite"]
 
@@ -92,7 +94,7 @@ def layout_seed(seed: int, layout: int, name: str) -> int:
 def run_house_layout(house: House, layout: int, commands: Sequence[str], library: Library,
                      policies: Sequence[str], *, seed: int = 0, particles: int = 200) -> list[Outcome]:
     """Every command from every start with every policy on one layout of one house."""
-    from seal_cli.sim.agent import run_on_map
+    from seal_cli.pipeline import run_on_map
     from seal_cli.sim.policies import make_policy
 
     m = house.map
@@ -130,7 +132,7 @@ def run_context_suite(data: Path, policies: Sequence[str], *, commands: Sequence
     """Run the policies on the commands on every house, start and layout; yields the outcomes in
     (layout, house) order. Every command is checked (parsed and planned) on every house first."""
     from seal_cli.language.grounding import vocabulary_of_map
-    from seal_cli.planning.plan import plan_text
+    from seal_cli.pipeline import plan as plan_text
 
     library = load_library(framelib)
     built = houses(Path(data))

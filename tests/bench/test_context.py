@@ -15,7 +15,7 @@ from seal_cli.cli import app
 from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
 from seal_cli.language.grounding import vocabulary_of_map
-from seal_cli.planning.plan import plan_text
+from seal_cli.pipeline import plan as plan_text
 
 runner = CliRunner()
 

@@ -180,6 +180,10 @@ class SeFMPolicy(Policy):
 
     whole_plan = True
     """Search for the whole remaining plan (off: the step's own belief, the search of earlier rounds)."""
+    min_rooms = 2
+    """The whole-plan search's regions are rooms a view sees whole and the places in them; on a map of
+    fewer rooms (ALFRED's single open rooms, seen 1.5 m at a time, where a look sees part of a room and
+    several places at once) that model is wrong, and the greedy view rule is kept (docs/benchmarks.md)."""
 
     def plan_view(self, agent: Agent, binding: Binding, target: str) -> Any:
         """The region to look at for the whole remaining plan (:class:`~seal_cli.sim.policies.whole_plan.
@@ -187,6 +191,8 @@ class SeFMPolicy(Policy):
         unknown elements, each SeFM's object belief after every look so far, as a mass per free cell."""
         from seal_cli.sim.policies.whole_plan import WholePlanSearch
 
+        if len(self.map.rooms) < self.min_rooms:
+            return None
         if self.planner is None:
             self.planner = WholePlanSearch(agent)
         sefm = self._beliefs(agent)
