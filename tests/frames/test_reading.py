@@ -41,7 +41,7 @@ frame Wave "wave" {
 
 
 def test_readers_by_suffix_are_the_two_formats() -> None:
-    assert READERS == {".yaml": yamlfile.read, ".yml": yamlfile.read, ".frame": dsl.read}
+    assert {".yaml": yamlfile.read, ".yml": yamlfile.read, ".frame": dsl.read} == READERS
     assert FRAME_SUFFIXES == (".yaml", ".yml", ".frame")
 
 
