@@ -2,13 +2,23 @@
 
 from __future__ import annotations
 
-import contextlib
+from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import typer
 
-from seal_cli.cli import FramelibOption, JsonOption, command, emit_json, framelib_paths, out
+from seal_cli.cli import (
+    MAX_PARTICLES,
+    MAX_STEPS,
+    FramelibOption,
+    JsonOption,
+    command,
+    emit_json,
+    framelib_paths,
+    out,
+    progress_bar,
+)
 
 if TYPE_CHECKING:
     from seal_cli.sensing.observations import Observation
@@ -47,6 +57,22 @@ def show(result: dict[str, Any]) -> None:
         out.print(objects)
 
 
+class Counter:
+    """Observer that reports each update to a progress bar's ``advance(done, total)``."""
+
+    def __init__(self, advance: Callable[[int, int], None], total: int) -> None:
+        self.advance, self.total = advance, total
+
+    def start(self, sefm: Any) -> None:
+        self.advance(0, self.total)
+
+    def update(self, sefm: Any, step: Any) -> None:
+        self.advance(step.index, self.total)
+
+    def finish(self, sefm: Any) -> None:
+        self.advance(self.total, self.total)
+
+
 @command("localize")
 def localize(
     map_name: str = typer.Option(..., "--map", help="The annotated map (a path or a shipped map's name)."),
@@ -62,8 +88,10 @@ def localize(
     observations: Path | None = typer.Option(None, "--observations", help="YAML list of {pose, detections: "
                                              "[{class, at}]}: real detections, one update each.",
                                              show_default=False),
-    steps: int = typer.Option(20, "--steps", min=0, help="Updates at the final pose (the paper uses 20)."),
-    particles: int = typer.Option(200, "--particles", min=1, help="Particles per object and per frame."),
+    steps: int = typer.Option(20, "--steps", min=0, max=MAX_STEPS, help="Updates at the final pose (the paper "
+                              "uses 20)."),
+    particles: int = typer.Option(200, "--particles", min=1, max=MAX_PARTICLES, help="Particles per object and "
+                                  "per frame."),
     seed: int = typer.Option(0, "--seed", min=0, help="Seed of the one random generator."),
     rrd: Path | None = typer.Option(None, "--rrd", help="Write a Rerun recording of the run here.",
                                     show_default=False),
@@ -75,8 +103,9 @@ def localize(
     """Run SeFM: where each frame of the tasks' plans can be executed, and where each object is."""
     import numpy as np
 
+    from seal_cli.cli import OUTPUT_SUFFIXES
     from seal_cli.errors import SealError
-    from seal_cli.fileio import atomic_output
+    from seal_cli.fileio import Outputs
     from seal_cli.frames.reading import load_library
     from seal_cli.maps.formats.map_server import load_map
     from seal_cli.pipeline import frames_to_localise
@@ -93,19 +122,20 @@ def localize(
         runs = read_trajectory(trajectory)
     elif observations is not None:
         runs = read_observations(observations)
-    check_inside(runs, the_map.bounds, the_map.name)
+    check_inside(runs, the_map.bounds, the_map.name, the_map.is_occupied)
     bindings, state = frames_to_localise(tasks or [], library, the_map, holding=holding, done=done or [])
     rng = np.random.default_rng(seed)
-    with contextlib.ExitStack() as files:
-        observers: list[Any] = []
+    with Outputs({"--rrd": rrd, "--png": png}, [map_name, trajectory, observations, *(framelib or [])],
+                 suffixes=OUTPUT_SUFFIXES) as files, progress_bar("updates", len(runs) + steps) as advance:
+        observers: list[Any] = [Counter(advance, len(runs) + steps)]
         if rrd is not None:
             from seal_cli.sefm.observers.rerun import RerunRecorder
 
-            observers.append(RerunRecorder(files.enter_context(atomic_output(rrd))))
+            observers.append(RerunRecorder(files["--rrd"]))
         if png is not None:
             from seal_cli.sefm.observers.png import PngDrawer
 
-            observers.append(PngDrawer(files.enter_context(atomic_output(png))))
+            observers.append(PngDrawer(files["--png"]))
         classes = () if bindings else the_map.classes
         sefm = SeFM(the_map, bindings, state, rng, SeFMConfig(particles=particles), observers, classes=classes)
         sefm.follow(runs, steps)

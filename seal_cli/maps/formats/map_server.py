@@ -45,7 +45,7 @@ import yaml
 from numpy.typing import NDArray
 
 from seal_cli.errors import SealError, SealErrors, Where
-from seal_cli.fileio import LOADER, read_text
+from seal_cli.fileio import LOADER, MAX_IMAGE_BYTES, read_bytes, read_text
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.geometry import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 from seal_cli.maps.model import Map, MapWarning, ObjectTruth, Place, Robot, Room, Sensor
@@ -140,12 +140,9 @@ def _read_png(path: Path) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
 def read_image(path: Path, negate: bool = False, occupied_thresh: float = 0.65, free_thresh: float = 0.196,
                mode: str = "trinary") -> NDArray[np.int8]:
     """Cells (FREE / OCCUPIED / UNKNOWN) of a map_server image, row 0 at the lowest y (flipped)."""
-    try:
-        data = path.read_bytes()
-    except FileNotFoundError:
-        raise SealError(f"image {path.name} does not exist (looked for {path})") from None
-    except OSError as exc:
-        raise SealError(f"cannot read image {path}: {exc.strerror}") from None
+    if not path.exists():
+        raise SealError(f"image {path.name} does not exist (looked for {path})")
+    data = read_bytes(path, MAX_IMAGE_BYTES, "map image")
     if data[:2] in (b"P5", b"P2"):
         grey, alpha = read_pgm(data), None
     elif data[:8] == b"\x89PNG\r\n\x1a\n":
