@@ -23,7 +23,7 @@ def test_a_map_is_told_from_frames_by_its_top_level_keys(tmp_path: Path) -> None
 def test_a_good_library_and_map_report_what_they_hold() -> None:
     report = validate_paths([framelib_dir(), maps_dir() / "apartment.yaml"])
     assert report.problems == [] and report.maps == 1 and report.frames > 20 and report.categories > 5
-    assert report.summary().startswith(f"ok: {report.frames} frames, {report.categories} categories, 1 maps in ")
+    assert report.summary().startswith(f"ok: {report.frames} frames, {report.categories} categories, 1 map in ")
     data = report.to_json()
     assert data["ok"] is True and data["maps"] == 1 and str(maps_dir() / "apartment.yaml") in data["files"]
 
