@@ -17,12 +17,12 @@ def test_a_frame_reads_with_its_position_and_units() -> None:
     assert frame.where is not None and (frame.where.file, frame.where.line) == ("w.frame", 1)
 
 
-def test_a_syntax_error_is_located_and_lists_what_could_come() -> None:
+def test_a_syntax_error_is_located_and_says_what_to_write() -> None:
     (problem,) = read('frame Wave "wave" {\n  theme person\n}\n', "w.frame").problems
     assert (problem.file, problem.line, problem.column) == ("w.frame", 2, 9)
     assert problem.message.startswith("syntax error") and "'role: category'" in problem.message
     (cut,) = read(WAVE[: WAVE.index("}")], "w.frame").problems
-    assert "unexpected end of file" in cut.message and "'}'" in cut.message
+    assert "end of file" in cut.message and "'}'" in cut.message and cut.file == "w.frame"
 
 
 def test_a_bad_name_is_refused_where_it_is() -> None:
