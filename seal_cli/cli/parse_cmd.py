@@ -12,7 +12,6 @@ import typer
 
 from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
 from seal_cli.errors import SealError, Where
-from seal_cli.fileio import read_json_lines
 
 if TYPE_CHECKING:
     from seal_cli.language.grounding import Vocabulary
@@ -151,6 +150,17 @@ def tree(parsed: Parse) -> Any:
 # seal bench parse
 
 
+def _alfred_vocabulary(constants: Path) -> Vocabulary:
+    """The classes of ALFRED's constants as a vocabulary (what the scorer grounds in)."""
+    from seal_cli.language.grounding import Vocabulary
+
+    try:
+        classes = json.loads(constants.read_text(encoding="utf-8"))["OBJECTS"]
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError, KeyError, TypeError) as error:
+        raise SealError(f"cannot read the ALFRED constants' OBJECTS: {error}", Where(str(constants))) from None
+    return Vocabulary.of([str(c) for c in classes])
+
+
 def _shared() -> Path:
     """``../shared`` beside the checkout (where the corpora and scorers are)."""
     return Path(__file__).resolve().parents[2] / ".." / "shared"
@@ -167,7 +177,14 @@ def bench_parse(
                                         show_default=False),
     as_json: bool = JsonOption,
 ) -> None:
-    """Score `seal parse` on parsing corpora with the shared scorers, and print their figures."""
+    """Score `seal parse` on parsing corpora with the shared scorers, and print their figures; then
+    parse each corpus in process: commands per CPU-second, and clauses swallowed into an element
+    (refused by the parser, or left silently: the target is zero)."""
+    from seal_cli.bench.parsing import commands_of, measure
+    from seal_cli.fileio import read_json_lines
+    from seal_cli.frames.reading import load_library
+
+    library = load_library()
     shared = _shared()
     folder = scorers or shared / "eval"
     corpora = list(corpus or [shared / "data" / "gpsr" / "dev.jsonl", shared / "data" / "alfred" /
@@ -191,16 +208,22 @@ def bench_parse(
                              capture_output=True, text=True)
         if run.returncode and "Traceback (most recent call last)" in run.stderr:  # it crashed (exit 1 is a low score)
             raise SealError(f"the scorer failed on {path}: {run.stderr.strip().splitlines()[-1]}", Where(str(path)))
+        vocab = _alfred_vocabulary(Path(argv[2])) if path.suffix == ".tsv" else None
+        figures = measure(commands_of(path), library, vocab)
         if as_json:
             lines = run.stdout.strip().splitlines()
             try:
                 results[str(path)] = json.loads("\n".join(lines[:-1]))
             except json.JSONDecodeError:
                 raise SealError(f"the scorer failed on {path}: {run.stderr[-500:]}") from None
+            results[str(path)]["in_process"] = figures.to_json()
         else:
             out.print(f"[bold]{_escape(str(path))}[/bold]")
             out.print(_escape(run.stdout.rstrip()))
             if run.returncode and run.stderr:
                 err.print(_escape(run.stderr.rstrip()[-1000:]))
+            out.print(f"in process: {figures.commands_per_cpu_s:,.0f} commands/CPU-s; clauses swallowed into an "
+                      f"element: {figures.silent_swallowed} silently, {figures.refused_swallowed} refused "
+                      f"(n={figures.commands}, errors {figures.errors})")
     if as_json:
         emit_json({"corpora": results})

@@ -101,7 +101,7 @@ class Clauses:
 
     def receives(self, verb: Word) -> bool:
         """Whether a frame of the verb has someone to receive (a recipient)."""
-        return any("recipient" in self.types.roles(f) for f in self.library.evoked_by(str(verb.info)))
+        return any("recipient" in self.types.roles(f) for f in self.types.evoked_by(str(verb.info)))
 
     def recipient_first(self, verb: Word, objects: list[NP], items: list[Item]) -> None:
         """"give *to me* the remote", "bring to my son his coat": a "to" phrase naming a person right
@@ -351,7 +351,7 @@ class Clauses:
         result: "hold", "carry", "pick up")."""
         return any(frame.elements and any(p.predicate == "holding" and not p.negated and
                                           p.args == (frame.elements[0].role,) for p in frame.postconditions)
-                   for frame in self.library.evoked_by(str(clause.verb.info)))
+                   for frame in self.types.evoked_by(str(clause.verb.info)))
 
     def light_verb(self, clause: Clause) -> None:
         """"give the sauce *a quick stir*": "give" with a thing and "a" (adjectives) and a noun that is a lexical
@@ -365,7 +365,7 @@ class Clauses:
                 self.text[act.start:act.end].split(None, 1)[0].lower() not in ("a", "an", "another"):
             return
         unit = act.head.lower
-        frames = self.library.evoked_by(unit)
+        frames = self.types.evoked_by(unit)
         if not frames or not all(f.elements and not self.types.is_person(f.elements[0].type) for f in frames):
             return
         clause.objects = [thing]

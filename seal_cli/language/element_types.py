@@ -20,6 +20,15 @@ class Types:
         self._roles: dict[str, frozenset[str]] = {}
         self._relations: dict[str, Any] = {}
         self._states: dict[str, bool] = {}
+        self._evoked: dict[str, tuple[Frame, ...]] = {}
+        self._library = library
+
+    def evoked_by(self, unit: str) -> tuple[Frame, ...]:
+        """The frames a lexical unit evokes (:meth:`Library.evoked_by`, memoised by unit)."""
+        found = self._evoked.get(unit)
+        if found is None:
+            found = self._evoked[unit] = self._library.evoked_by(unit)
+        return found
 
     def roles(self, frame: Frame) -> frozenset[str]:
         """The frame's element roles (asked for every phrase of every clause: memoised by name)."""

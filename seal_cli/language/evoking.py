@@ -18,15 +18,20 @@ from seal_cli.language.element_types import Types
 from seal_cli.language.grounding import PIECES, PORTIONS
 from seal_cli.language.lexicon import Word, noun_lemma
 from seal_cli.language.morphology import is_gradable
-from seal_cli.language.reference import Reference
-from seal_cli.language.roles import PUT_IN, Roles
+from seal_cli.language.reference import PLACES, Reference
+from seal_cli.language.roles import PUT_IN, TO, Roles
 from seal_cli.language.syntax import NP, PP, Clause
 from seal_cli.language.values import Evoked, Parse, Phrase
 
 if TYPE_CHECKING:
     from seal_cli.language.grounding import Vocabulary
 
-__all__ = ["Evoker"]
+__all__ = ["Evoker", "Fit"]
+
+
+Fit = tuple[tuple[float, ...], Frame, dict[str, Any], list[tuple[NP, PP]]]
+"""A frame chosen for a clause: its key (higher is better), the frame, its elements (role → phrase)
+and the phrases that describe a noun instead (:data:`seal_cli.language.roles.Assignment`)."""
 
 
 class Evoker:
@@ -52,9 +57,10 @@ class Evoker:
 
     # -- one clause → frames -----------------------------------------------------------------
     def clause(self, clause: Clause) -> None:
+        """The clause's frames: what it implies first (things held), then its own (:meth:`choose`)."""
         self.clause_frames = len(self.frames)
         unit = clause.unit or str(clause.verb.info)
-        frames = self.library.evoked_by(unit)
+        frames = self.types.evoked_by(unit)
         used = [x for x in clause.items if isinstance(x, PP) and x.lead and x.prep == "with"]
         if used and not any("instrument" in self.types.roles(f) for f in frames):
             clause.held += [x.np for x in used]             # "use a card to turn on the lamp": hold it
@@ -64,13 +70,21 @@ class Evoker:
         if frames and all(self.makes_state(f) for f in frames):
             clause.result = [x for x in clause.items if isinstance(x, PP) and self.is_form(x)]
             clause.items = [x for x in clause.items if not any(x is r for r in clause.result)]
+        unit, best = self.choose(unit, self.accompanying(frames, clause) or frames, clause)
+        _, frame, roles, attached = self.moving(best, self.types.evoked_by(unit), clause)
+        self.first_into(frame, roles, attached)
+        self.emit(frame, unit, clause, roles, attached)
+
+    def choose(self, unit: str, frames: Sequence[Frame], clause: Clause) -> tuple[str, Fit]:
+        """The frame of the verb that takes the clause best (:meth:`best_fit`), with the lexical unit
+        said; when none takes every phrase, the one that takes the most."""
         best = self.best_fit(frames, clause)
         head = unit.split()[0]
-        if best is None and head != unit and self.library.evoked_by(head):
+        if best is None and head != unit and self.types.evoked_by(head):
             # "take the trash out to the garage": no frame of "take out" has a goal, one of "take" has
-            best = self.best_fit(self.library.evoked_by(head), clause)
+            best = self.best_fit(self.types.evoked_by(head), clause)
             if best is not None:
-                unit, frames = head, self.library.evoked_by(head)
+                unit, frames = head, self.types.evoked_by(head)
         if (best is None or "recipient" not in self.types.roles(best[1])) and self.recipient_said(clause):
             brings = self.bringing(frames)   # "grab me a beer", "grab a beer from the fridge for me": Bring
             found = self.best_fit(brings, clause) if brings else None
@@ -85,10 +99,46 @@ class Evoker:
                 if best is None or key > best[0]:
                     best = (key, frame, roles, attached)
         assert best is not None
-        _, frame, roles, attached = best
-        self.first_into(frame, roles, attached)
-        self.emit(frame, unit, clause, roles, attached)
+        return unit, best
 
+    def accompanying(self, frames: Sequence[Frame], clause: Clause) -> list[Frame] | None:
+        """"go *with Sam*", "walk with the visitor to the door": a verb of going somewhere, no object,
+        and "with" a person is moving together with them — the library's frames that move with a person
+        (the first element a person, and a goal). With a goal said, the one that brings the person
+        there (its result relates them to the goal: Guide's ``at(theme, goal)``); without, one that
+        does not (Follow: where they go). The person becomes the object; None when this is not it."""
+        if clause.objects or clause.message or not any(f.elements and f.elements[0].role == "goal" for f in frames) \
+                or any("instrument" in self.types.roles(f) for f in frames):
+            return None
+        company = next((x for x in clause.items if isinstance(x, PP) and x.prep == "with" and not x.lead and
+                        self.roles.kind(x.np, None, None) == "person"), None)
+        if company is None:
+            return None
+        together = [f for f in self.library.frames if f.elements and self.types.is_person(f.elements[0].type)
+                    and "goal" in self.types.roles(f)]
+        leading = [f for f in together if _relates_to_goal(self.types.relation(f))]
+        goal_said = any(isinstance(x, PP) and x.prep in TO for x in clause.items)
+        chosen = leading if goal_said else [f for f in together if f not in leading]
+        if not chosen:
+            return None
+        clause.items = [x for x in clause.items if x is not company]
+        clause.objects = [company.np]
+        return chosen
+
+    def moving(self, best: Fit, frames: Sequence[Frame], clause: Clause) -> Fit:
+        """"*get to* the kitchen", "get into the bedroom": a verb of taking (one of its ``frames`` gets its
+        theme in hand: Pick) said with no object, only where to, and nothing earlier to take along, is
+        going there — the library's frames whose first element is the goal (Go), when one takes the
+        clause; else the frame as chosen ("put in the cabinet" stays Place: "put" takes nothing)."""
+        _, frame, roles, _ = best
+        first = frame.elements[0].role if frame.elements else None
+        if first is None or first in roles or clause.objects or clause.message or not roles or \
+                any(role not in PLACES for role in roles) or not any(self.achieves_holding(f) for f in frames):
+            return best
+        if self.frames and self.roles.needs_in_hand(frame) and self.reference.implicit(frame, first) is not None:
+            return best                      # "pick up the cup and get [it] to the kitchen"
+        going = [f for f in self.library.frames if f.elements and f.elements[0].role == "goal"]
+        return self.best_fit(going, clause) or best
 
     def makes_state(self, frame: Frame) -> bool:
         """Whether the frame's result is a state of its first element and it puts it nowhere (Slice:
@@ -134,11 +184,10 @@ class Evoker:
         return first is not None and any(p.predicate == "holding" and p.args == (first,) and not p.negated
                                           for p in frame.postconditions)
 
-    def best_fit(self, frames: Sequence[Frame], clause: Clause
-                 ) -> tuple[tuple[float, ...], Frame, dict[str, Any], list[tuple[NP, PP]]] | None:
+    def best_fit(self, frames: Sequence[Frame], clause: Clause) -> Fit | None:
         """The frame that takes every phrase of the clause best (fewest elements left empty, then
         library order), or None when none takes them all."""
-        best: tuple[tuple[float, ...], Frame, dict[str, Any], list[tuple[NP, PP]]] | None = None
+        best: Fit | None = None
         for order, frame in enumerate(frames):
             assigned = self.roles.assign(frame, clause, strict=True)
             if assigned is None:
@@ -304,7 +353,7 @@ class Evoker:
         """The frame that cuts a thing into pieces, and its lexical unit: the one the piece's noun
         names ("slice"), else the one of "cut", whose result is a state of its theme (``sliced``)."""
         for unit in (noun, "cut"):
-            for frame in self.library.evoked_by(unit):
+            for frame in self.types.evoked_by(unit):
                 first = frame.elements[0].role if frame.elements else None
                 if any(not p.negated and p.args == (first,) for p in frame.postconditions):
                     return frame, unit
@@ -439,3 +488,8 @@ def _whole_named(np: NP) -> bool:
     """Whether a piece's modifiers name what it is cut from ("an *apple* slice"): a modifier that is no
     gradable adjective ("the *little* piece", "a *thin* slice" say how it is, not of what)."""
     return any(not is_gradable(m.lower) for m in np.mods)
+
+
+def _relates_to_goal(relation: Any) -> bool:
+    """Whether a frame's result relates its first element to its goal (``at(theme, goal)``)."""
+    return relation is not None and relation.args[1] == "goal"

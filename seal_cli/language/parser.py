@@ -31,6 +31,7 @@ from seal_cli.language.clauses import Clauses
 from seal_cli.language.element_types import Types
 from seal_cli.language.evoking import Evoker
 from seal_cli.language.lexicon import CommandError, Lexicon, Tagger, Word, tokenize
+from seal_cli.language.swallowed import Swallowed, swallowed
 from seal_cli.language.syntax import NP, Syntax
 from seal_cli.language.values import Evoked, Parse, Phrase
 
@@ -85,6 +86,9 @@ class CommandParser:
         command = Syntax(text, words, self.types).transform(tree)
         clauses = Clauses(text, self.library, self.types, lexicon.speech).passes(command)
         parse = Evoker(text, self.library, self.types, vocabulary, words, tagger.remarks).command(clauses)
+        lost = swallowed(parse, words, lexicon)
+        if lost:
+            raise _swallowed_error(parse, lost[0])
         if tagger.remarks:
             parse = replace(parse, remarks=tuple(text[a:b] for a, b in tagger.remarks))
         return parse
@@ -214,6 +218,16 @@ _DESCRIBE = {"VERB": "a verb", "DET": "a noun phrase", "WORD": "a noun phrase", 
              "VBG_T": "a participle", "VBG_P": "a participle", "VBG_I": "a participle", "WH": "a question",
              "BE": "'is' or 'are'", "THERE": "'there'", "HERE": "'here'", "AND_NP": "'and'",
              "SAID": "what is said"}
+
+
+def _swallowed_error(parse: Parse, lost: Swallowed) -> CommandError:
+    """A verb said inside an element's text is an instruction the frames would drop: refused, never
+    lost silently ("go to the sink to meet Alex")."""
+    evoked = parse.frames[lost.frame]
+    phrase = evoked.elements[lost.element]
+    return CommandError(f"{lost.verb!r} is a verb inside the {lost.element} {phrase.text!r} of {evoked.frame}: "
+                        f"say it as an instruction of its own (\"..., then {lost.verb} ...\")", lost.start + 1,
+                        parse.text, ["a clause of its own"])
 
 
 def _some_verbs(lexicon: Lexicon, near: str | None = None) -> str:

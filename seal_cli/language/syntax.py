@@ -159,10 +159,15 @@ class Syntax(Transformer[Token, Command]):
         return self._value(tree)
 
     def _value(self, tree: Tree[Token]) -> Any:
-        words = self.words
-        children = [self._value(c) if isinstance(c, Tree) else
-                    self.HERE(c) if c.type == "HERE" else words[c.start_pos]   # type: ignore[index]
-                    for c in tree.children]
+        words, value = self.words, self._value
+        children: list[Any] = []
+        for child in tree.children:
+            if type(child) is Tree:
+                children.append(value(child))
+            elif child.type == "HERE":        # type: ignore[union-attr]
+                children.append(self.HERE(child))   # type: ignore[arg-type]
+            else:
+                children.append(words[child.start_pos])   # type: ignore[union-attr,index]
         return _RULES[tree.data](self, children)
 
     # -- tokens --------------------------------------------------------------------------------
