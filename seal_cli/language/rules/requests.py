@@ -72,6 +72,8 @@ def _question(s: State, i: int) -> Match | None:
     if nxt not in ("is", "are", "'s", "was", "were") and not nxt.isalpha():
         return None
     end = s.speech_end(i)                         # the question, whatever its shape, is what to tell
+    if end - i < 3 and words[end - 1].lower in ("is", "are", "'s", "was", "were"):
+        return None                               # "what is": no question yet
     return Match(end - i, (_unsaid(words[i].start, Tag.VERB, QUESTION_MEANS), s.emit(i, end - i, Tag.SAID).words[0]),
                  expect=False, verb=QUESTION_MEANS, using=False)
 
