@@ -75,10 +75,8 @@ def parse(
     from seal_cli.language.parser import parse_command, parse_lines
 
     if (text is None) == (file is None):
-        import click
-
-        raise click.UsageError("give either a command or --file FILE (one command per line; '-' reads standard "
-                               "input)")
+        raise typer.BadParameter("give either a command or --file FILE (one command per line; '-' reads standard "
+                                 "input)", param_hint="TEXT / --file")
     library = load_library(framelib_paths(framelib))
     vocab = vocabulary_from(vocabulary, map_name)
     if file is not None:
