@@ -79,7 +79,7 @@ OBSERVATIONS = '''- pose: [-6.0, -3.0, 0.0]
 HOSTILE_CHARS = ["\t", "\x00", "\\q", "\u2028", "\ufeff", "{", "}", "(", ")", ":", ",", "=", '"', "'", "*", "&a",
                  "*a", "!!python/object:os.system", "\r", "\x1c", "é", "-", "[", "]", "#", "%", "\\", "9" * 30,
                  "nan", ".inf", "~", "null", "@@"]
-HOSTILE_WORDS = ["stir", "the", "cup", "café", "put", "99999999999", "apples", "in", "fridge", "and", "it", "\x00",
+HOSTILE_WORDS = ["stir", "the", "cup", "café", "put", "99999999999", "apples", "in", "fridge", "and", "it", "\x01",
                  "\u2028", "\t", "pick", "up", "spoon", "😀", "ʼ", "not", "1e308", "-5", "two", "bring", "me", "a",
                  "(", ")", "[bold]", "\\", "NaN", "0", "sofa", "open", "table", "knife", "\r"]
 
@@ -152,7 +152,8 @@ def _seal() -> list[str]:
 def _once(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
     env = {**os.environ, "COLUMNS": "200", "NO_COLOR": "1", "PYTHONWARNINGS": "ignore"}
     start = time.perf_counter()
-    process = subprocess.Popen([*_seal(), *case.argv], cwd=folder, env=env, stdout=subprocess.PIPE,
+    argv = [a.replace("\x00", "\x01") for a in case.argv]  # no shell can pass a NUL in an argument
+    process = subprocess.Popen([*_seal(), *argv], cwd=folder, env=env, stdout=subprocess.PIPE,
                                stderr=subprocess.PIPE, stdin=subprocess.PIPE if case.stdin is not None
                                else subprocess.DEVNULL, start_new_session=True)
     try:
