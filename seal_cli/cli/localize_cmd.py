@@ -82,8 +82,9 @@ def localize(
                                        "map's robot).", show_default=False),
     done: list[str] | None = typer.Option(None, "--done", help="A command already carried out (repeatable, in "
                                           "order): its frames' postconditions hold.", show_default=False),
-    trajectory: Path | None = typer.Option(None, "--trajectory", help="YAML poses: [[x, y], [x, y, yaw], ...]; one "
-                                           "update per pose, detections simulated from the map's objects.",
+    trajectory: Path | None = typer.Option(None, "--trajectory", help="YAML poses: \\[\\[x, y], \\[x, y, "
+                                           "yaw], ...]; one update per pose, detections simulated from the "
+                                           "map's objects.",
                                            show_default=False),
     observations: Path | None = typer.Option(None, "--observations", help="YAML list of {pose, detections: "
                                              "[{class, at}]}: real detections, one update each.",
