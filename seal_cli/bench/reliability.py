@@ -416,7 +416,7 @@ def generated_cases(seed: int = 0, count: int = 320) -> Iterator[Case]:
     def command(i: int) -> Case:
         words = " ".join(rng.choice(HOSTILE_WORDS) for _ in range(rng.randint(1, 9)))
         verb = rng.choice([("parse",), ("parse", "--json"), ("plan",), ("plan", "--map", "apartment")])
-        return Case(f"command {i}", (*verb, words), twice=i % 7 == 0)
+        return Case(f"command {i}", (*verb, "--", words), twice=i % 7 == 0)  # "--": words may start with "-"
 
     def output(i: int) -> Case:
         target = rng.choice(["m.yaml", "apartment.pgm", "o.jpg", "sub", "missing/o.png", "/dev/null", "link.png",
@@ -434,7 +434,7 @@ def generated_cases(seed: int = 0, count: int = 320) -> Iterator[Case]:
     def option(i: int) -> Case:
         name, value = rng.choice([("--particles", rng.choice(["0", "-1", "1e9", "x", "1000000000000"])),
                                   ("--steps", rng.choice(["-1", "99999999999", "x"])),
-                                  ("--seed", rng.choice(["-1", "x", "1" * 40]))])
+                                  ("--seed", rng.choice(["-1", "x", "1.5"]))])
         return Case(f"option {i}: {name} {value}", ("localize", "--map", "apartment", name, value),
                     codes=(1, 2))
 

@@ -198,7 +198,9 @@ def bench_parse(
     results: dict[str, Any] = {}
     for path in corpora:
         if not path.is_file():
-            raise SealError(f"no such corpus: {path}", Where(str(path)))
+            where = "" if corpus else (" (the default corpora are in ../shared/data beside a checkout of seal, which "
+                                       "an installed seal does not have: give --corpus FILE and --scorers DIR)")
+            raise SealError(f"no such corpus: {path}{where}", Where(str(path)))
         if path.suffix == ".tsv":
             consts = constants or shared / "data" / "alfred" / "alfred_constants.json"
             argv = [str(folder / "score_alfred_goals.py"), str(path), str(consts)]

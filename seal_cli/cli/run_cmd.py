@@ -138,6 +138,9 @@ def tasks(
 
     if data is None:
         data = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "alfred2d"
+        if suite == "alfred2d" and not data.is_dir():
+            raise SealError(f"ALFRED-2D's episodes are not at {data}, the default beside a checkout of seal (an "
+                            "installed seal has no data): give --data DIR, the folder holding floorplans.json")
     if suite not in ("alfred2d", "map"):
         raise SealError(f"unknown suite {suite!r}; the suites are alfred2d and map")
     names = [p.strip() for p in policies.split(",") if p.strip()]
