@@ -361,7 +361,9 @@ class SeFM:
 
     def frame_json(self, i: int) -> dict[str, Any]:
         binding = self.bindings[i]
-        return {"frame": binding.frame.name, "elements": _in_role_order(binding), **self.frame_summary(i).to_json()}
+        summary = self.frame_summary(i).to_json()
+        summary["ess"] = round(float(self.frames.ess()[i]), 1)  # of the last reweighting: the particles weigh 1/P now
+        return {"frame": binding.frame.name, "elements": _in_role_order(binding), **summary}
 
     def object_json(self, cls: str) -> dict[str, Any]:
         summary = self.object_summary(cls).to_json()
