@@ -1,0 +1,39 @@
+"""The clause passes: a clause of purpose read as a "to" phrase becomes a clause of its own."""
+
+from __future__ import annotations
+
+import pytest
+
+from seal_cli.frames.library import Library
+from seal_cli.language.parser import parse_command
+
+
+def _frames(text: str, library: Library) -> list[tuple[str, dict[str, str | None]]]:
+    return [(f.frame, {role: p.text for role, p in f.elements.items()}) for f in parse_command(text, library).frames]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("carry the crate to the porch to open", [("Bring", {"theme": "the crate", "goal": "the porch"}),
+                                              ("Open", {"theme": "the crate"})]),        # its object: the crate
+    ("bring the jar to the counter to put spoon beside it",
+     [("Bring", {"theme": "the jar", "goal": "the counter"}), ("Place", {"theme": "spoon", "goal": "it"})]),
+    ("take a pear to the sink to rinse", [("Bring", {"theme": "a pear", "goal": "the sink"}),
+                                          ("Clean", {"theme": "a pear", "instrument": None})]),
+])
+def test_a_purpose_read_as_a_to_phrase_is_a_clause(library: Library, text: str, expected: list[object]) -> None:
+    assert _frames(text, library) == expected
+
+
+def test_a_purpose_of_going_takes_no_object(library: Library) -> None:
+    frames = _frames("grab the torch to go check the shed", library)
+    assert frames[0] == ("Pick", {"theme": "the torch"}) and ("Go", {"theme": "the torch"}) not in frames
+    assert all(elements.get("goal") != "the torch" for _, elements in frames)
+
+
+@pytest.mark.parametrize(("text", "frames"), [
+    ("move the mug to microwave", ["Place"]),                     # a thing the taxonomy knows: a place
+    ("leave the tray in the fridge to get chilled", ["Place"]),   # a state it gets into: no instruction
+])
+def test_no_purpose_where_the_word_is_a_thing_or_a_state(library: Library, text: str, frames: list[str]) -> None:
+    parse = parse_command(text, library)
+    assert [f.frame for f in parse.frames if f.frame != "Cool"] == frames
