@@ -80,7 +80,8 @@ class Clauses:
         goes = purpose is not None and any(f.elements and f.elements[0].role == "goal"
                                            for f in self.types.evoked_by(str(purpose.verb.info)))
         if purpose is not None and not (purpose.objects or purpose.message) and clause.objects and not goes:
-            purpose.objects = [clause.objects[0]]     # "take the box to the hall to open [it]"; "to go": nothing
+            purpose.objects = [replace(clause.objects[0], borrowed=True)]   # "take the box to the hall to open
+            #                                          [it]" (what is said after "open" no longer describes the box)
         return [clause, *([gap] if gap is not None else []), *([purpose] if purpose is not None else [])]
 
     def purpose(self, items: list[Item]) -> Clause | None:
