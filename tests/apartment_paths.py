@@ -17,8 +17,8 @@ import numpy as np
 
 from seal_cli.frames.reading import load_library
 from seal_cli.maps.formats.map_server import load_map
+from seal_cli.pipeline import run_on_map
 from seal_cli.resources import map_path
-from seal_cli.sim.agent import run_on_map
 from seal_cli.sim.policies import make_policy
 
 COMMANDS = ("stir the cup", "bring the apple to the bedroom", "put the spoon in the sink",

@@ -69,7 +69,7 @@ def layout_seed(seed: int, layout: int, map_name: str) -> int:
 def run_layout(m: Map, layout: int, commands: Sequence[str], library: Library, policies: Sequence[str], *,
                seed: int = 0, particles: int = 200) -> list[Outcome]:
     """Every command with every policy on one layout of the map."""
-    from seal_cli.sim.agent import run_on_map
+    from seal_cli.pipeline import run_on_map
     from seal_cli.sim.policies import make_policy
 
     base = layout_seed(seed, layout, m.name)
@@ -108,7 +108,7 @@ def run_map_suite(map_path: str, commands: Sequence[str], policies: Sequence[str
     outcomes in layout order. The map and every command are checked (parsed and planned) first,
     so a bad one is an error before any run."""
     from seal_cli.language.grounding import vocabulary_of_map
-    from seal_cli.planning.plan import plan_text
+    from seal_cli.pipeline import plan as plan_text
 
     m = load_map(map_path)
     library = load_library(framelib)

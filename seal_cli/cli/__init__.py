@@ -15,13 +15,15 @@ import json
 import sys
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import typer
-from rich.console import Console
 
 from seal_cli import __version__
 from seal_cli.errors import SealError, SealErrors
+
+if TYPE_CHECKING:
+    from rich.console import Console
 
 __all__ = ["app", "bench_app", "command", "emit_json", "err", "main", "out"]
 
@@ -38,8 +40,31 @@ bench_app = typer.Typer(help="Benchmarks: parsing corpora, the task suite with b
                         no_args_is_help=True)
 app.add_typer(bench_app, name="bench")
 
-out = Console(soft_wrap=True, highlight=False)
-err = Console(stderr=True, soft_wrap=True, highlight=False)
+
+
+class LazyConsole:
+    """A rich ``Console``, made when first used: importing rich costs more than ``seal --version`` and
+    ``seal parse --json`` do in all, and they never print through it."""
+
+    def __init__(self, **options: Any) -> None:
+        self._options = options
+        self._console: Console | None = None
+
+    @property
+    def console(self) -> Console:
+        """The console itself (for what wants one: a ``rich.progress.Progress``)."""
+        if self._console is None:
+            from rich.console import Console
+
+            self._console = Console(**self._options)
+        return self._console
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self.console, name)
+
+
+out = LazyConsole(soft_wrap=True, highlight=False)
+err = LazyConsole(stderr=True, soft_wrap=True, highlight=False)
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -92,7 +117,7 @@ JsonOption = typer.Option(False, "--json", help="Machine-readable output on stdo
 
 def _version(value: bool) -> None:
     if value:
-        out.print(f"seal {__version__}")
+        typer.echo(f"seal {__version__}")
         raise typer.Exit()
 
 

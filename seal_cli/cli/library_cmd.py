@@ -3,14 +3,14 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import typer
-from rich.table import Table
 
 from seal_cli.cli import FramelibOption, JsonOption, command, emit_json, err, framelib_paths, out
-from seal_cli.frames.model import Frame
-from seal_cli.frames.reading import load_library
+
+if TYPE_CHECKING:
+    from seal_cli.frames.model import Frame
 
 
 def frame_json(frame: Frame) -> dict[str, Any]:
@@ -39,6 +39,10 @@ def frames(
     as_json: bool = JsonOption,
 ) -> None:
     """The library's frames as a table, or one frame in full."""
+    from rich.table import Table
+
+    from seal_cli.frames.reading import load_library
+
     library = load_library(framelib_paths(framelib))
     if name is not None:
         frame = library.frame(name)

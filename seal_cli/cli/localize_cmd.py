@@ -7,7 +7,6 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import typer
-from rich.table import Table
 
 from seal_cli.cli import FramelibOption, JsonOption, command, emit_json, framelib_paths, out
 
@@ -26,6 +25,8 @@ def _point(p: list[float]) -> str:
 
 def show(result: dict[str, Any]) -> None:
     """The frames and objects as two tables: top rooms, modes, best point."""
+    from rich.table import Table
+
     frames = Table(title=f"frames on {result['map']} after {result['updates']} updates "
                          f"({result['particles']} particles, seed {result['seed']})", title_justify="left")
     for column in ("frame", "rooms", "modes (weight room)", "best", "ess"):
@@ -78,7 +79,7 @@ def localize(
     from seal_cli.fileio import atomic_output
     from seal_cli.frames.reading import load_library
     from seal_cli.maps.formats.map_server import load_map
-    from seal_cli.planning.plan import frames_to_localise
+    from seal_cli.pipeline import frames_to_localise
     from seal_cli.resources import map_path
     from seal_cli.sefm.filter import SeFM, SeFMConfig
     from seal_cli.sensing.observations import check_inside, read_observations, read_trajectory

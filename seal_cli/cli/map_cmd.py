@@ -6,7 +6,6 @@ from pathlib import Path
 from typing import Any
 
 import typer
-from rich.table import Table
 
 from seal_cli.cli import JsonOption, bench_app, command, emit_json, err, out
 
@@ -33,6 +32,8 @@ def summary(m: Any) -> dict[str, Any]:
 
 
 def show(data: dict[str, Any]) -> None:
+    from rich.table import Table
+
     grid = data["grid"]
     out.print(f"[bold]{data['name']}[/bold]  bounds {data['bounds']}  grid {grid['shape'][1]}×{grid['shape'][0]} "
               f"at {grid['resolution']:g} m  free {data['free_area']:.1f} m²")
@@ -103,6 +104,8 @@ def bench_maps(
     as_json: bool = JsonOption,
 ) -> None:
     """Time the map queries a particle filter makes, on 1,000 and 60,000 points."""
+    from rich.table import Table
+
     from seal_cli.bench.maps import bench_map
     from seal_cli.resources import map_path
 

@@ -12,7 +12,6 @@ import typer
 
 from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
 from seal_cli.errors import SealError, Where
-from seal_cli.fileio import read_json_lines
 
 if TYPE_CHECKING:
     from seal_cli.language.grounding import Vocabulary
@@ -182,6 +181,7 @@ def bench_parse(
     parse each corpus in process: commands per CPU-second, and clauses swallowed into an element
     (refused by the parser, or left silently: the target is zero)."""
     from seal_cli.bench.parsing import commands_of, measure
+    from seal_cli.fileio import read_json_lines
     from seal_cli.frames.reading import load_library
 
     library = load_library()

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import typer
-from rich.table import Table
 
 from seal_cli.cli import JsonOption, bench_app, command, emit_json, err, out
 
@@ -18,6 +17,8 @@ def perf(
     """Updates per second of SeFM (grid kernel sums) and of the exact O(P²) reference, the total variation
     distance between their weights on the same particles, and peak memory, at the paper's scale, a building's
     and a large floor's (each in a process of its own)."""
+    from rich.table import Table
+
     import seal_cli.bench.perf as perfbench
     from seal_cli.errors import SealError
 

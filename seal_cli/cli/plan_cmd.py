@@ -7,7 +7,6 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 import typer
-from rich.table import Table
 
 from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, framelib_paths, out
 from seal_cli.cli.parse_cmd import VocabularyOption, vocabulary_from
@@ -33,6 +32,8 @@ def _load_world(map_name: str | None) -> Map | None:
 
 def show(plan: Plan) -> None:
     """The plan as a numbered list: commanded frames in bold, inserted ones with their reason."""
+    from rich.table import Table
+
     table = Table.grid(padding=(0, 2))
     for column in ("number", "frame", "elements", "because"):
         table.add_column(justify="right" if column == "number" else "left")
@@ -64,7 +65,7 @@ def plan(
 ) -> None:
     """Plan a command: the frames it commands, in order, with the frames their preconditions need."""
     from seal_cli.frames.reading import load_library
-    from seal_cli.planning.plan import plan_text
+    from seal_cli.pipeline import plan as plan_text
 
     library = load_library(framelib_paths(framelib))
     world = _load_world(map_name)
@@ -90,6 +91,8 @@ def bench_plan(
     as_json: bool = JsonOption,
 ) -> None:
     """Time parse + ground + plan for commands of up to six clauses; report the slowest."""
+    from rich.table import Table
+
     from seal_cli.bench.plan import BENCH_COMMANDS, time_plans
     from seal_cli.frames.reading import load_library
 

@@ -7,7 +7,6 @@ from pathlib import Path
 from typing import Any
 
 import typer
-from rich.table import Table
 
 from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
 from seal_cli.sim.policies import DEFAULT_POLICIES, POLICIES
@@ -52,8 +51,9 @@ def run(
 
     from seal_cli.frames.reading import load_library
     from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
     from seal_cli.resources import map_path
-    from seal_cli.sim.agent import Budget, run_on_map
+    from seal_cli.sim.agent import Budget
     from seal_cli.sim.policies import make_policy
 
     library = load_library(framelib_paths(framelib))
@@ -142,7 +142,7 @@ def tasks(
     if unknown:
         raise SealError(f"--policies: unknown policy {unknown[0]!r}; known: {', '.join(POLICIES)}")
     outcomes: list[Outcome] = []
-    with Progress(TextColumn("episodes"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), console=err,
+    with Progress(TextColumn("episodes"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), console=err.console,
                   transient=True, disable=not err.is_terminal) as progress:
         bar = progress.add_task("episodes", total=None)
 
@@ -178,6 +178,8 @@ def tasks(
 
 
 def _table(report: dict[str, Any], names: list[str]) -> None:
+    from rich.table import Table
+
     if report["suite"] == "map":
         title = f"map {report['map']}, {report['layouts']} layouts: success rate / mean path (m)"
     else:

@@ -8,6 +8,7 @@ instead. Which files make up the standard library is :func:`seal_cli.resources.f
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping, Sequence
+from functools import cache
 from pathlib import Path
 
 from seal_cli.errors import SealError, SealErrors, Where
@@ -17,7 +18,7 @@ from seal_cli.frames.model import Frame
 from seal_cli.frames.validation import check_library
 from seal_cli.resources import framelib_dir
 
-__all__ = ["FRAME_SUFFIXES", "READERS", "frame_files", "load_library", "read_files", "read_library"]
+__all__ = ["FRAME_SUFFIXES", "READERS", "frame_files", "load_library", "read_files", "read_library", "standard_library"]
 
 READERS: Mapping[str, Reader] = {".yaml": yamlfile.read, ".yml": yamlfile.read, ".frame": dsl.read}
 """The frame file formats, by file suffix."""
@@ -79,3 +80,9 @@ def load_library(paths: Iterable[str | Path] | None = None) -> Library:
     if problems:
         raise problems[0] if len(problems) == 1 else SealErrors(problems)
     return library
+
+
+@cache
+def standard_library() -> Library:
+    """The shipped standard library, read once per process (a library is a value: sharing it is safe)."""
+    return load_library()

@@ -60,7 +60,8 @@ POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "wi
                     "be kind enough to", "be good enough to", "be so good as to", "would you be so good as to",
                     "would you be good enough to", "could you be so kind as to", "do me a favor and",
                     "do me a favour and", "don't forget to", "do not forget to", "help me", "help me to", "help us",
-                    "make sure you", "see that you", "hi", "hello", "excuse me", "maybe", "perhaps", "oh", "ah",
+                    "make sure you", "see that you", "hi", "hello", "hi there", "hello there", "hey there",
+                    "excuse me", "maybe", "perhaps", "oh", "ah",
                     "ahh", "aw", "ugh", "urgh", "argh", "oops", "whoops", "sorry", "well", "gosh", "so"])
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
@@ -171,8 +172,8 @@ QUESTION_WORDS = frozenset(["what", "who", "which", "whose", "whom", "what's", "
 """Words that start a question the robot answers by saying something ("*What's* the biggest thing on the
 shelf?", "*Who* is in the kitchen?"): a bare question means "tell me ..." (``QUESTION_MEANS``)."""
 QUESTION_MEANS = "tell"
-WHERE_QUESTIONS = frozenset(["where is", "where are", "where 's", "where's", "is there", "are there", "is there any",
-                             "are there any"])
+WHERE_QUESTIONS = frozenset(["where is", "where are", "where 's", "where's", "where're", "is there", "are there",
+                             "is there any", "are there any"])
 """Questions about where a thing is, or whether there is one ("*where is* the cup?", "*is there* a cup in the
 kitchen?"): they mean "find ..." (``WHERE_MEANS``)."""
 WHERE_MEANS = "find"

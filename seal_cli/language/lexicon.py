@@ -70,7 +70,9 @@ class Lexicon:
     ``results``: a participle or result adjective → (frame name, lexical unit).
     ``speech``: units of frames whose first element is a ``message`` or a ``question`` ("tell", "say",
     "answer"): after them a clause is what is said ("tell him *that dinner is ready*"), not a relative
-    clause or a condition. ``goals``: units of frames with a ``goal`` element ("follow", "go").
+    clause or a condition. ``goals``: units of frames with a ``goal`` element ("follow", "go");
+    ``recipients``: units of frames with a ``recipient`` ("bring", "give", "tell"); ``things``: the
+    words of the classes and synonyms the library's taxonomy knows ("fridge", "ice", "box").
     """
 
     units: Mapping[str, tuple[tuple[str, ...], ...]]
@@ -78,6 +80,8 @@ class Lexicon:
     verbs: tuple[str, ...]
     speech: frozenset[str] = frozenset()
     goals: frozenset[str] = frozenset()
+    recipients: frozenset[str] = frozenset()
+    things: frozenset[str] = frozenset()
 
     @classmethod
     def of(cls, library: Library) -> Lexicon:
@@ -89,8 +93,12 @@ class Lexicon:
                            and frame.elements[0].type in ("message", "question") for unit in frame.lexical_units)
         goals = frozenset(unit.text for frame in library.frames if any(e.role == "goal" for e in frame.elements)
                           for unit in frame.lexical_units)
+        recipients = frozenset(unit.text for frame in library.frames
+                               if any(e.role == "recipient" for e in frame.elements) for unit in frame.lexical_units)
+        taxonomy = library.taxonomy
+        things = frozenset(word for name in (*taxonomy.known_classes, *taxonomy.names) for word in name.split("_"))
         return cls({w: tuple(us) for w, us in units.items()}, _result_words(library),
-                   tuple(sorted(library.by_unit)), speech, goals)
+                   tuple(sorted(library.by_unit)), speech, goals, recipients, things)
 
     def verb_at(self, words: Sequence[Word], i: int, stop: int) -> tuple[str, int, int | None] | None:
         """The lexical unit that starts at word ``i``: (unit, words it covers contiguously,

@@ -38,7 +38,9 @@ from seal_cli.language.english import (
     PREPOSITIONS,
     PRONOUNS,
     QUANTIFIERS,
+    QUESTION_WORDS,
     RELATIVES,
+    REQUESTS,
     SEPARATOR_WORDS,
     STATEMENT_LINKS,
     STATES_DONE,
@@ -51,6 +53,7 @@ from seal_cli.language.english import (
     VAGUE_NUMBERS,
     VOCATIVES,
     WH_WORDS,
+    WHERE_QUESTIONS,
 )
 from seal_cli.language.morphology import gerund_lemma, is_adjective, is_adverb, is_plural, verb_lemma
 from seal_cli.language.rule import Match
@@ -449,12 +452,21 @@ class State:
         while end + 1 < len(words) and words[end + 1].lower in END_MARKS:
             end += 1
         if not any(t.tag == "VERB" for t in self.out) and \
-                not any(self.verb_at(k) is not None for k in range(end + 1, len(words))):
+                not any(self.verb_at(k) is not None or self.asks_at(k) for k in range(end + 1, len(words))):
             return None                                  # no sentence holds a command: the error says so
         return self._aside(i, end + 1 - i, (words[i].start, words[end].end))
 
     def _aside(self, i: int, n: int, *remarks: tuple[int, int]) -> Match:
         return Match(n, (merge(self.words, i, n, Tag.POLITE),), remarks=remarks)
+
+    def asks_at(self, k: int) -> bool:
+        """Whether a request said without an imperative may start at ``k`` (a bare question, "where is",
+        "I'd like"; :mod:`seal_cli.language.rules.requests` reads them)."""
+        words = self.words
+        if words[k].lower in QUESTION_WORDS:
+            return True
+        return any(all(k + m < len(words) and words[k + m].lower == part for m, part in enumerate(phrase.split()))
+                   for phrase in (*WHERE_QUESTIONS, *REQUESTS) if phrase.split()[0] == words[k].lower)
 
     def until_place(self, i: int) -> bool:
         """Whether "until"/"till" at ``i`` says how far a motion goes: after a verb of a frame with a goal,
@@ -511,20 +523,27 @@ class State:
         return False
 
     def purpose(self, i: int) -> bool:
-        """Whether "to" at ``i`` starts a clause of purpose ("... to put it in the sink")."""
-        if i + 1 < len(self.words) and self.using and self.verb_at(i + 1):
+        """Whether "to" at ``i`` starts a clause of purpose ("... to put it in the sink"). With its object
+        unsaid ("put it in the fridge *to chill*", "pick up a bowl *to hold up* over the bin") or a bare
+        one ("pick up the knife *to slice bread*") only when the verb names no thing the library knows
+        ("move it to *microwave*" is a place)."""
+        words = self.words
+        if i + 1 < len(words) and self.using and self.verb_at(i + 1):
             return True                    # "use a knife to slice apples"
-        if i + 2 >= len(self.words) or not self.out or self.out[-1].tag in ("VERB", "PREP"):
+        if i + 1 >= len(words) or not self.out or self.out[-1].tag in ("VERB", "PREP"):
             return False
         found = self.verb_at(i + 1)
         if not found:
             return False
         after = i + 1 + found[1]
-        if after >= len(self.words):
-            return False
-        nxt = self.words[after].lower
-        return nxt in DETERMINERS or nxt in POSSESSIVES or nxt in PRONOUNS or capitalised(self.words[after]) or (
-            nxt in PREPOSITIONS and self.np_starts(after + match_phrase(self.words, after, PREPOSITIONS)))
+        thing = words[i + 1].lower in self.lexicon.things or self.out[-1].tag not in ("WORD", "NAME", "PRON",
+                                                                                       "PARTICLE", "LABEL")
+        if after >= len(words) or words[after].lower in END_MARKS or words[after].lower in (",", ";", "and", "then"):
+            return not thing and found[2] is None
+        nxt = words[after].lower
+        return nxt in DETERMINERS or nxt in POSSESSIVES or nxt in PRONOUNS or capitalised(words[after]) or (
+            nxt in PREPOSITIONS and self.np_starts(after + match_phrase(words, after, PREPOSITIONS))) or \
+            not thing and (nxt in PARTICLES or self.noun_follows(after) and nxt not in self.lexicon.units)
 
     def np_starts(self, i: int) -> bool:
         if i >= len(self.words):

@@ -44,7 +44,7 @@ from seal_cli.sim.navigation import Cell, Grid
 from seal_cli.sim.policies.base import Policy
 from seal_cli.sim.world import HAND, Detection, Item, Outcome, World
 
-__all__ = ["Agent", "Budget", "Known", "Policy", "Record", "Result", "Scene", "View", "run_on_map", "scene_from_map"]
+__all__ = ["Agent", "Budget", "Known", "Policy", "Record", "Result", "Scene", "View", "scene_from_map"]
 
 
 @dataclass
@@ -688,32 +688,3 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
     world = World(items, Robot(pose=m.robot.pose, holding=holding), taxonomy=taxonomy,
                   sensor=RangeSensor.on_map(m))
     return Scene(world, m, grid, tuple(sorted({i.key for i in items})), m.name)
-
-
-def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.random.Generator,
-               holding: str | None = None, done: Sequence[str] = (), vocabulary: Any = None,
-               budget: Budget | None = None, observers: Sequence[Callable[[Record], None]] = ()
-               ) -> tuple[Agent, Result]:
-    """Carry out a command on a map whose ground-truth objects are the world (``seal run``).
-
-    The command and the ``done`` commands (already carried out) are parsed with the map's
-    vocabulary — or ``vocabulary``, restricted to the map's classes — and grounded without the
-    map's objects, which the robot must find; ``holding`` overrides what the map's robot holds.
-    """
-    from dataclasses import replace
-
-    from seal_cli.language.grounding import vocabulary_of_map
-    from seal_cli.language.parser import parse_command
-    from seal_cli.maps.model import Robot
-    from seal_cli.planning.problem import build_problem
-
-    if holding is not None:
-        m = replace(m, robot=Robot(m.robot.pose, holding))
-    known = vocabulary_of_map(m)
-    vocabulary = known if vocabulary is None else vocabulary.restricted_to(known.classes)
-    parses = [parse_command(t, library, vocabulary) for t in (*done, text)]
-    problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1])
-    agent = Agent(scene_from_map(m, library), library, policy, rng=rng, budget=budget, observers=observers,
-                  classes=problem.state.classes)
-    executed = [b for p in parses[:-1] for b in build_problem(p, library).commanded]
-    return agent, agent.run(problem.commanded, done=executed)

@@ -20,7 +20,8 @@ from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding, Element, Fact, Frame
 from seal_cli.frames.taxonomy import Taxonomy, class_key, class_words
 from seal_cli.maps.formats.map_server import load_map
-from seal_cli.planning.plan import Plan, plan, plan_text
+from seal_cli.pipeline import plan as plan_text
+from seal_cli.planning.plan import Plan, plan
 from seal_cli.planning.problem import instance_names
 from seal_cli.planning.state import State, robot_facts
 from seal_cli.resources import map_path

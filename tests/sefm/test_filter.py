@@ -14,7 +14,7 @@ from seal_cli.bench.houses import SECOND_HOUSE_TRAJECTORY, aws_house, second_hou
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding, Fact
 from seal_cli.maps.model import Map, ObjectTruth, Place, Robot, Room, Sensor
-from seal_cli.planning.plan import plan_text
+from seal_cli.pipeline import plan as plan_text
 from seal_cli.planning.state import State, robot_facts
 from seal_cli.sefm.filter import SeFM, SeFMConfig, frame_id
 from seal_cli.sefm.modes import room_masses
@@ -388,7 +388,7 @@ def test_public_queries_agree_with_the_summaries() -> None:
     """What a searcher asks SeFM: particles, densities at points, closed places."""
     from seal_cli.frames.reading import load_library
     from seal_cli.maps.formats.map_server import load_map
-    from seal_cli.planning.plan import plan_text
+    from seal_cli.pipeline import plan as plan_text
     from seal_cli.resources import map_path
     from seal_cli.sefm.filter import SeFM
 

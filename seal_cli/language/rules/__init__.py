@@ -44,6 +44,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     lead_ins.POLITE_FRAME,
     politeness.VOCATIVE_NAME,
     requests.QUESTION,
+    requests.FRONTED_QUESTION,
     requests.WHERE,
     requests.REQUEST,
     requests.LET_KNOW_RULE,
@@ -104,6 +105,7 @@ WORDS: tuple[Rule, ...] = (
     open_words.RESULT,
     open_words.ADVERB,
     open_words.NAME,
+    open_words.LOWER_CASE_NAME,
     open_words.WORD,
 )
 """The word itself: numbers, function words, open-class words; the last always matches."""

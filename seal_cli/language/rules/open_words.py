@@ -4,7 +4,7 @@ other word (a noun or an adjective). Nothing here lists a word."""
 from __future__ import annotations
 
 from seal_cli.language.english import PARTICLES, PREPOSITIONS
-from seal_cli.language.morphology import gerund_lemma, is_adverb
+from seal_cli.language.morphology import gerund_lemma, in_dictionary, is_adverb
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import CLOSED, State
 from seal_cli.language.tags import Tag
@@ -55,6 +55,17 @@ def _name(s: State, i: int) -> Match | None:
     return s.emit(i, 1, Tag.NAME)
 
 
+def _lower_case_name(s: State, i: int) -> Match | None:
+    """A word neither an English dictionary nor the library's taxonomy lists, alone after "to" in a clause
+    whose verb may have a recipient ("deliver the knife to *jamie*"): a name written in lower case."""
+    w, low = s.words[i], s.words[i].lower
+    if s.prev_tag() != Tag.PREP or s.out[-1].info != "to" or s.verb_index < 0 or \
+            str(s.out[s.verb_index].info) not in s.lexicon.recipients or not low.isalpha() or \
+            w.text != low or low in CLOSED or in_dictionary(low) or low in s.lexicon.things or s.noun_follows(i + 1):
+        return None
+    return s.emit(i, 1, Tag.NAME)
+
+
 def _word(s: State, i: int) -> Match | None:
     return s.emit(i, 1, Tag.WORD)
 
@@ -76,6 +87,10 @@ NAME = Rule("name", _name, (
     Example("greet Mary Ann", "Mary Ann", Tag.NAME),
     Example("go to Emmas room", "Emmas", Tag.POSS),
 ), None, "a capitalised word where a noun phrase starts; two in a row are one name")
+LOWER_CASE_NAME = Rule("name in lower case", _lower_case_name, (
+    Example("deliver the parcel to jamie", "jamie", Tag.NAME),
+    Example("give the keys to priya in the hallway", "priya", Tag.NAME),
+), None, "a word no dictionary lists, alone after 'to' in a clause that may have a recipient: a name")
 WORD = Rule("open word", _word, (
     Example("bring me the cup", "cup", Tag.WORD),
 ), None, "every other word: a noun or an adjective")

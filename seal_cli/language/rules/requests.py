@@ -14,6 +14,7 @@ from seal_cli.language.english import (
     END_MARKS,
     LET_KNOW,
     OBJECT_PRONOUNS,
+    PREPOSITIONS,
     QUESTION_MEANS,
     QUESTION_WORDS,
     REQUEST_MEANS,
@@ -22,7 +23,7 @@ from seal_cli.language.english import (
     WHERE_QUESTIONS,
 )
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import State
+from seal_cli.language.state import State, match_phrase
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 
@@ -68,9 +69,9 @@ def _question(s: State, i: int) -> Match | None:
     nxt = words[i + 1].lower
     if nxt not in ("is", "are", "'s", "was", "were") and not nxt.isalpha():
         return None
-    w = words[i]
-    return Match(1, (_unsaid(w.start, Tag.VERB, QUESTION_MEANS), w.tagged(Tag.WH)), expect=False,
-                 verb=QUESTION_MEANS, using=False)
+    end = s.speech_end(i)                         # the question, whatever its shape, is what to tell
+    return Match(end - i, (_unsaid(words[i].start, Tag.VERB, QUESTION_MEANS), s.emit(i, end - i, Tag.SAID).words[0]),
+                 expect=False, verb=QUESTION_MEANS, using=False)
 
 
 def _where(s: State, i: int) -> Match | None:
@@ -119,7 +120,8 @@ def _let_know(s: State, i: int) -> Match | None:
 
 
 QUESTION = Rule("bare question", _question, (
-    Example("What's the biggest thing on the shelf?", "What", Tag.WH),
+    Example("What's the biggest thing on the shelf?", "What 's the biggest thing on the shelf", Tag.SAID),
+    Example("which of the bottles in the pantry is the biggest?", "", Tag.VERB),
     Example("who is in the kitchen?", "", Tag.VERB),
 ), QUESTION_WORDS, "a question where a command starts: 'tell me' and the question")
 WHERE = Rule("where is", _where, (
@@ -164,6 +166,23 @@ def _clause_at(s: State, k: int) -> bool:
                                  or _where(s, k) is not None)
 
 
+def _fronted_question(s: State, i: int) -> Match | None:
+    """A phrase said before a question ("*On the table,* which object is lightest?"): the phrase is part
+    of what to tell."""
+    words = s.words
+    if QUESTION_MEANS not in s.lexicon.units or not match_phrase(words, i, PREPOSITIONS) and words[i].lower != "of":
+        return None
+    k = i + 1
+    while k < len(words) and words[k].lower not in END_MARKS and words[k].lower not in (",", ";"):
+        k += 1
+    if k + 1 >= len(words) or words[k].lower != "," or words[k + 1].lower not in QUESTION_WORDS or \
+            _question(s, k + 1) is None:
+        return None
+    end = s.speech_end(k + 1)
+    return Match(end - i, (_unsaid(words[i].start, Tag.VERB, QUESTION_MEANS), s.emit(i, end - i, Tag.SAID).words[0]),
+                 expect=False, verb=QUESTION_MEANS, using=False)
+
+
 def _fronted_end(s: State, i: int) -> Match | None:
     """A comma ending a phrase said before the clause's verb ("*From the cupboard,* give me the bowl", "*On
     the table,* which object is lightest?"): the clause starts after it."""
@@ -179,6 +198,10 @@ def _fronted_end(s: State, i: int) -> Match | None:
 FRONTED_OF = Rule("of-phrase first", _fronted_of, (
     Example("Of the people in the hall, how many are sitting?", "Of", Tag.PREP),
 ), frozenset(["of"]), "'of' and a noun phrase before the clause ('Of the people in the hall, how many ...')")
+FRONTED_QUESTION = Rule("phrase said before a question", _fronted_question, (
+    Example("On the table, which object is lightest?", "On the table , which object is lightest", Tag.SAID),
+), frozenset(p.split()[0] for p in PREPOSITIONS) | {"of"},
+    "a phrase and a comma before a question: all of it is what to tell")
 FRONTED_END = Rule("phrase said first", _fronted_end, (
-    Example("On the table, which object is lightest?", ",", Tag.SEP),
+    Example("From the cupboard, give me the bowl", ",", Tag.SEP),
 ), frozenset([","]), "the comma after a phrase said before the verb: the clause starts after it")

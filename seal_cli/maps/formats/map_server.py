@@ -49,6 +49,7 @@ from seal_cli.fileio import LOADER, read_text
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.geometry import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 from seal_cli.maps.model import Map, MapWarning, ObjectTruth, Place, Robot, Room, Sensor
+from seal_cli.resources import map_path
 from seal_cli.yamlnodes import NodeReader
 from seal_cli.yamlnodes import is_null as _is_null
 from seal_cli.yamlnodes import shape as _shape
@@ -511,11 +512,13 @@ def read_map(path: str | Path) -> tuple[Map | None, list[SealError]]:
 
 
 def load_map(path: str | Path) -> Map:
-    """The map in a file, or SealError(s) listing every problem with its file, line and column.
+    """The map in a file — or shipped with seal, by name (``"apartment"``, see
+    :func:`seal_cli.resources.map_path`) — or SealError(s) listing every problem with its file, line
+    and column. A file of that name, when there is one, comes first.
 
     A map whose only problems are warnings (:class:`~seal_cli.maps.model.MapWarning`) loads, with them in
     ``Map.warnings``."""
-    built, problems = read_map(path)
+    built, problems = read_map(map_path(str(path)))
     fatal = [p for p in problems if not isinstance(p, MapWarning)]
     if fatal or built is None:
         raise fatal[0] if len(fatal) == 1 else SealErrors(fatal or problems)

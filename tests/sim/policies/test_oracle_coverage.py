@@ -79,8 +79,8 @@ def test_coverage_looks_from_a_cell_with_a_line_of_sight_never_from_where_it_sta
     coverage finishes "stir the cup" on the apartment (it used to crawl 5 cm a step towards points
     it could never see, and before that needed gigabytes for its neighbour lists)."""
     from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
     from seal_cli.resources import map_path
-    from seal_cli.sim.agent import run_on_map
 
     apartment = load_map(map_path("apartment"))
     policy = CoveragePolicy()
