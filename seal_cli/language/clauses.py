@@ -14,8 +14,9 @@ order :meth:`Clauses.passes` lists them:
    (:meth:`~Clauses.message`);
 2. **subordinate clauses** ordered (:meth:`~Clauses.subordinate`: "*before you go*, turn off ...");
 3. **coordinated verbs** sharing one object (:meth:`~Clauses.share_objects`: "slice and chill an apple");
-4. **order words** (:meth:`~Clauses.order`: "A while B", "A after B", "A when done B");
-5. **light verbs** (:meth:`~Clauses.light_verb`: "give the sauce *a stir*" is stirring it).
+4. **clauses of purpose** leaving their object unsaid (:meth:`~Clauses.purposes`: "... *to open* [it]");
+5. **order words** (:meth:`~Clauses.order`: "A while B", "A after B", "A when done B");
+6. **light verbs** (:meth:`~Clauses.light_verb`: "give the sauce *a stir*" is stirring it).
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ from collections.abc import Sequence
 from dataclasses import replace
 
 from seal_cli.frames.library import Library
+from seal_cli.frames.model import Frame
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.language.element_types import Types
 from seal_cli.language.english import FIRST_LATER
@@ -55,9 +57,11 @@ class Clauses:
         for raw, join in zip(command.clauses, command.joins, strict=True):
             read = self.read(raw)             # the clause, and the ones said inside it (gapped, of purpose)
             clauses.extend(read)
-            joins.extend([join] + ["and"] * (len(read) - 1))
+            joins.append(join)
+            joins.extend("and" if extra is read[0].gap else "to" for extra in read[1:])
         self.subordinate(clauses)
         self.share_objects(clauses, joins)
+        self.purposes(clauses, joins)
         ordered = self.order(clauses, joins)
         for clause in ordered:
             self.light_verb(clause)
@@ -77,11 +81,6 @@ class Clauses:
             items = items[:split]
         clause = self.make_clause(raw.verb, items, raw.conditions, raw.sub)
         clause.gap = gap
-        goes = purpose is not None and any(f.elements and f.elements[0].role == "goal"
-                                           for f in self.types.evoked_by(str(purpose.verb.info)))
-        if purpose is not None and not (purpose.objects or purpose.message) and clause.objects and not goes:
-            purpose.objects = [replace(clause.objects[0], borrowed=True)]   # "take the box to the hall to open
-            #                                          [it]" (what is said after "open" no longer describes the box)
         return [clause, *([gap] if gap is not None else []), *([purpose] if purpose is not None else [])]
 
     def purpose(self, items: list[Item]) -> Clause | None:
@@ -363,6 +362,21 @@ class Clauses:
                     not set(joins[k + 1].split()) - {"and", "then", ",", "plus", "as", "well"}:
                 bare.objects = [nxt.objects[0]]
 
+    def purposes(self, clauses: list[Clause], joins: Sequence[str]) -> None:
+        """"carry the crate to the porch *to open*": a clause of purpose that leaves its object unsaid acts
+        on the object of the clause before — when nothing else would fill it (a frame that needs its
+        object in hand takes the object of the frame before anyway, :meth:`Reference.implicit`), and
+        not for a verb of going ("grab the torch *to go* check the shed"). The object is borrowed: a
+        copy that ends where it was said."""
+        for k in range(1, len(clauses)):
+            clause, before = clauses[k], clauses[k - 1]
+            if joins[k] != "to" or clause.objects or clause.message or not before.objects:
+                continue
+            frames = self.types.evoked_by(clause.unit or str(clause.verb.info))
+            if not frames or any(not f.elements or f.elements[0].role == "goal" or _needs_in_hand(f) for f in frames):
+                continue
+            clause.objects = [replace(before.objects[0], borrowed=True)]
+
     def order(self, clauses: list[Clause], joins: Sequence[str]) -> list[Clause]:
         """The clauses in the order they are to be done: "turn on the lamp while holding a clock" holds
         it first, but "carry a clock while turning on a lamp" is already holding it (the one that takes
@@ -412,6 +426,11 @@ class Clauses:
 def _copy(np: NP) -> NP:
     """The first conjunct of a coordination: the phrase as it was, without the others."""
     return replace(np, conjuncts=[])
+
+
+def _needs_in_hand(frame: Frame) -> bool:
+    first = frame.elements[0].role if frame.elements else None
+    return any(p.predicate == "holding" and p.args == (first,) for p in frame.preconditions)
 
 
 def _to_person(item: Item) -> bool:
