@@ -363,19 +363,22 @@ class Clauses:
                 bare.objects = [nxt.objects[0]]
 
     def purposes(self, clauses: list[Clause], joins: Sequence[str]) -> None:
-        """"carry the crate to the porch *to open*": a clause of purpose that leaves its object unsaid acts
-        on the object of the clause before — when nothing else would fill it (a frame that needs its
-        object in hand takes the object of the frame before anyway, :meth:`Reference.implicit`), and
-        not for a verb of going ("grab the torch *to go* check the shed"). The object is borrowed: a
-        copy that ends where it was said."""
+        """"carry the box to the porch *to open*": a clause of purpose said with nothing after its verb
+        acts on the object of the clause before, when that object is known to be what the verb's frames
+        take (a box is ``openable``; a credit card is not known to be ``toggleable``: "take the card *to
+        light*" stays as said) and nothing else would fill it (a frame that needs its object in hand takes
+        the object of the frame before anyway, :meth:`Reference.implicit`); never for a verb of going
+        ("grab the torch *to go*"). The object is borrowed: a copy that ends where it was said."""
         for k in range(1, len(clauses)):
             clause, before = clauses[k], clauses[k - 1]
-            if joins[k] != "to" or clause.objects or clause.message or not before.objects:
+            if joins[k] != "to" or clause.objects or clause.message or clause.items or not before.objects:
                 continue
+            thing = before.objects[0]
             frames = self.types.evoked_by(clause.unit or str(clause.verb.info))
-            if not frames or any(not f.elements or f.elements[0].role == "goal" or _needs_in_hand(f) for f in frames):
+            if not frames or any(not f.elements or f.elements[0].role == "goal" or _needs_in_hand(f) or
+                                 self.types.is_a(thing.head_text, f.elements[0].type) is not True for f in frames):
                 continue
-            clause.objects = [replace(before.objects[0], borrowed=True)]
+            clause.objects = [replace(thing, borrowed=True)]
 
     def order(self, clauses: list[Clause], joins: Sequence[str]) -> list[Clause]:
         """The clauses in the order they are to be done: "turn on the lamp while holding a clock" holds
