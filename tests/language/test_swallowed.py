@@ -45,6 +45,24 @@ def test_nouns_participles_and_subjects_verbs_are_no_swallowed_verbs(library: Li
     assert swallowed(parse, tokenize(text), CommandParser.of(library).lexicon) == ()
 
 
+def test_a_class_of_the_library_is_a_noun_after_to(library: Library) -> None:
+    text = "put the pan behind the kettle next to microwave"
+    parse = _one_element(text, "Place", "goal", "the kettle next to microwave")
+    lexicon, things = CommandParser.of(library).lexicon, library.taxonomy.known_classes
+    assert [x.verb for x in swallowed(parse, tokenize(text), lexicon)] == ["microwave"]   # "microwave" is a verb too
+    assert swallowed(parse, tokenize(text), lexicon, things) == ()                    # but names a thing here
+
+
+def test_a_word_the_tagger_joined_is_read_by_its_first(library: Library) -> None:
+    from seal_cli.language.lexicon import Tagger
+
+    text = "cut the bread to warm up slices"
+    parser = CommandParser.of(library)
+    words = Tagger(parser.lexicon, tokenize(text), text).run()
+    parse = _one_element(text, "Slice", "theme", "the bread to warm up slices")
+    assert [x.verb for x in swallowed(parse, words, parser.lexicon)] in (["warm up"], ["warm"])
+
+
 @pytest.mark.parametrize(("text", "verb"), [
     ("go to the door to greet Maria", "greet"),
     ("take the box to the hall to open", "open"),
