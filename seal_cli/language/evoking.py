@@ -13,13 +13,12 @@ from typing import TYPE_CHECKING, Any
 
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame
-from seal_cli.frames.taxonomy import class_words
 from seal_cli.language.element_types import Types
 from seal_cli.language.grounding import PIECES, PORTIONS
 from seal_cli.language.lexicon import Word, noun_lemma
 from seal_cli.language.morphology import is_gradable
 from seal_cli.language.reference import PLACES, Reference
-from seal_cli.language.roles import PUT_IN, Roles
+from seal_cli.language.roles import PUT_IN, TO, Roles
 from seal_cli.language.syntax import NP, PP, Clause
 from seal_cli.language.values import Evoked, Parse, Phrase
 
@@ -102,10 +101,11 @@ class Evoker:
         return unit, best
 
     def accompanying(self, frames: Sequence[Frame], clause: Clause) -> list[Frame] | None:
-        """"head *with Sam* to the lobby", "drive with the visitor": a verb of going somewhere, no object,
+        """"go *with Sam*", "walk with the visitor to the door": a verb of going somewhere, no object,
         and "with" a person is moving together with them — the library's frames that move with a person
-        (the first element a person, and a goal: Follow, Guide), as the library's own "go with" and
-        "walk with" are Follow. The person becomes the object; None when this is not it."""
+        (the first element a person, and a goal). With a goal said, the one that brings the person
+        there (its result relates them to the goal: Guide's ``at(theme, goal)``); without, one that
+        does not (Follow: where they go). The person becomes the object; None when this is not it."""
         if clause.objects or clause.message or not any(f.elements and f.elements[0].role == "goal" for f in frames) \
                 or any("instrument" in self.types.roles(f) for f in frames):
             return None
@@ -115,11 +115,14 @@ class Evoker:
             return None
         together = [f for f in self.library.frames if f.elements and self.types.is_person(f.elements[0].type)
                     and "goal" in self.types.roles(f)]
-        if not together:
+        leading = [f for f in together if _relates_to_goal(self.types.relation(f))]
+        goal_said = any(isinstance(x, PP) and x.prep in TO for x in clause.items)
+        chosen = leading if goal_said else [f for f in together if f not in leading]
+        if not chosen:
             return None
         clause.items = [x for x in clause.items if x is not company]
         clause.objects = [company.np]
-        return together
+        return chosen
 
     def moving(self, best: Fit, frames: Sequence[Frame], clause: Clause) -> Fit:
         """"*get to* the kitchen", "get into the bedroom": a verb of taking (one of its ``frames`` gets its
@@ -478,10 +481,15 @@ class Evoker:
     def ground_name(self, name: str) -> str | None:
         if self.vocabulary is None:
             return name
-        return self.vocabulary.ground_words(class_words(name)) or name
+        return self.vocabulary.ground_name(name) or name   # a default: the rules alone (langdata)
 
 
 def _whole_named(np: NP) -> bool:
     """Whether a piece's modifiers name what it is cut from ("an *apple* slice"): a modifier that is no
     gradable adjective ("the *little* piece", "a *thin* slice" say how it is, not of what)."""
     return any(not is_gradable(m.lower) for m in np.mods)
+
+
+def _relates_to_goal(relation: Any) -> bool:
+    """Whether a frame's result relates its first element to its goal (``at(theme, goal)``)."""
+    return relation is not None and relation.args[1] == "goal"

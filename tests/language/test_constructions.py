@@ -102,7 +102,7 @@ def test_no_question_without_a_clause(library: Library) -> None:
 
 
 def test_go_with_someone_is_follow_and_get_to_is_go(library: Library) -> None:
-    assert frames("go with Lena to the car", library) == [("Follow", {"theme": "Lena", "goal": "car"})]
+    assert frames("go with Lena to the car", library) == [("Guide", {"theme": "Lena", "goal": "car"})]  # taken there
     assert frames("come with me", library) == [("Follow", {"theme": "me"})]
     assert frames("get to the attic", library) == [("Go", {"goal": "attic"})]
     assert frames("get to know Lena", library)[0][0] == "Meet"
