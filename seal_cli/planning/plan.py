@@ -100,6 +100,8 @@ class Plan:
     text: str | None = None
     expanded: int = field(default=0, compare=False)
     """Search nodes expanded to find the plan."""
+    warnings: tuple[str, ...] = field(default=(), compare=False)
+    """What the map does not know of the command (``Problem.warnings``)."""
 
     @property
     def bindings(self) -> tuple[Binding, ...]:
@@ -118,8 +120,11 @@ class Plan:
 
     def to_json(self) -> dict[str, Any]:
         """The document ``seal plan --json`` prints (SPEC, "``seal plan --json``")."""
-        return {"text": self.text, "plan": [step.to_json() for step in self.steps],
-                "state": [str(f) for f in self.initial], "goal": [str(f) for f in self.goal]}
+        data: dict[str, Any] = {"text": self.text, "plan": [step.to_json() for step in self.steps],
+                                "state": [str(f) for f in self.initial], "goal": [str(f) for f in self.goal]}
+        if self.warnings:
+            data["warnings"] = list(self.warnings)
+        return data
 
     def __len__(self) -> int:
         return len(self.steps)
@@ -393,10 +398,13 @@ def plan(commanded: Sequence[Binding], library: Library, state: State, *, max_no
 def plan_text(text: str, library: Library, *, holding: str | None = None, done: Sequence[str] = (),
               map: Map | None = None, vocabulary: Any = None, max_nodes: int = MAX_NODES) -> Plan:
     """Parse a command, ground it in the robot's state and the map (:mod:`seal_cli.planning.problem`), plan it."""
+    from dataclasses import replace
+
     from seal_cli.planning.problem import problem_of_text
 
     problem = problem_of_text(text, library, holding=holding, done=done, map=map, vocabulary=vocabulary)
-    return plan(problem.commanded, library, problem.state, max_nodes=max_nodes, text=text)
+    found = plan(problem.commanded, library, problem.state, max_nodes=max_nodes, text=text)
+    return replace(found, warnings=problem.warnings) if problem.warnings else found
 
 
 def explain(plan: Plan) -> Iterator[str]:
