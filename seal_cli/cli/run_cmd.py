@@ -11,8 +11,9 @@ from rich.table import Table
 
 from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
 
-KIND_STYLE = {"plan": "bold", "frame": "bold cyan", "search": "yellow", "go": "", "see": "green", "look": "dim",
-              "act": "green", "fail": "red", "replan": "magenta", "done": "bold green", "give_up": "bold red"}
+KIND_STYLE = {"warn": "yellow", "plan": "bold", "frame": "bold cyan", "search": "yellow", "go": "", "see": "green",
+              "look": "dim", "act": "green", "fail": "red", "replan": "magenta", "done": "bold green",
+              "give_up": "bold red"}
 
 
 def _narrate(record: Any) -> None:
@@ -81,9 +82,12 @@ def run(
         emit_json({"map": the_map.name, "text": text, "policy": policy, "seed": seed,
                    "completed": result.completed, "reason": result.reason, "path_m": round(result.path_m, 3),
                    "steps": result.steps, "plan": result.plan, "executed": result.executed,
+                   "answer": result.answer, "warnings": result.warnings, "why": result.why.value,
                    "records": [{"kind": r.kind, "text": r.text, "step": r.step, "path_m": round(r.path_m, 3),
                                 "pose": [round(v, 3) for v in r.pose]} for r in result.records]})
     else:
+        if result.answer:
+            out.print(f"[bold]answer:[/bold] {result.answer}", markup=True)
         verdict = "[bold green]done[/bold green]" if result.completed else \
             f"[bold red]not done[/bold red]: {result.reason}"
         out.print(f"{verdict} — {result.path_m:.2f} m driven, {result.steps} steps")

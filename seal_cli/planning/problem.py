@@ -96,6 +96,8 @@ class Things:
         """The map's rooms and places: they stay where they are."""
         self.facts: set[Fact] = set()
         self.robot_holding: str | None = None
+        self.people: set[str] = set()
+        """The people the command names."""
         if map is not None:
             self._read_map(map)
 
@@ -218,7 +220,7 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str) -> tuple[s
     if phrase.head.lower() in SPEAKER_WORDS or phrase.kind == "person" \
             or things.taxonomy.is_a(category, "person") is True and category != "thing":
         value = person_value(phrase.text or phrase.head, phrase.head, {p.key: p for p in things.map.people})
-        things.classes.setdefault(value, "person")
+        things.people.add(value)    # only the map's people are of class person: another is searched for by name
         return (value,)
     if category in ("message", "question") or not phrase.text:
         return None
@@ -338,7 +340,7 @@ def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:
             if category in ("message", "question") or value in things.fixed:
                 continue
             cls = things.class_of(value)
-            if cls == "person" or things.taxonomy.is_a(cls, "person") is True:
+            if value in things.people or cls == "person":
                 if value not in placed:
                     warnings.setdefault(f"nobody on the map {m.name} is called {value}: seal run will search "
                                         "the whole house for them", None)
