@@ -6,15 +6,16 @@ them. A map thing is called by (lemmatised words, articles and possessives dropp
 - a **room** by its name ("living_room": "the living room", "the living_room" as written);
 - a **place** by its name without its number ("dining_table_1": "the dining table"), by its name
   with the number ("sofa 2"), by its class and the class's other names in the library's synonyms
-  ("sofa": "the couch", "the settee"), and, less surely, by the last word of any of those ("the
-  table" for a dining table);
+  ("sofa": "the couch", "the settee"), and, less surely, by the last word of its name or class
+  ("the table" for a dining table, not for a nightstand that is also a "night table");
 - a **person** by their name ("Roger"); the **speaker** by "me", "I", "us" (:data:`SPEAKER`).
 
 A phrase is split at its first relational word ("the couch *in* the living room"): the words
 before it are the thing, the words after it say where it is. Among the things its words call
 best, a phrase names, in turn:
 
-1. the ones where it says they are: in that room, or in the room of that place;
+1. the ones where it says they are: in that room, or in the room of that place (none there is
+   refused: "the table in the kitchen" when the kitchen has none);
 2. the ones the frame element can take (an ``openable`` element wants a place that opens; a
    ``heater`` a place that heats, by the library's categories);
 3. the first in the map's order (the map lists the usual one first).
@@ -121,7 +122,7 @@ class MapNames:
             spelled = [re.sub(r"[_ ]?\d+$", "", place.name), place.name, place.cls,
                        *synonyms.get(place.cls, ())]
             names = tuple(dict.fromkeys(w for w in map(words_of, spelled) if w))
-            heads = frozenset(n[-1] for n in names)
+            heads = frozenset(n[-1] for n in map(words_of, spelled[:3]) if n)     # not a synonym's: a "tv table"
             found.append(Referent(class_key(place.name), "place", place.cls,
                                   class_key(place.room) if place.room else None, names, heads))
         for person in self.map.people:
@@ -164,10 +165,13 @@ class MapNames:
         found = self.candidates(thing, kinds)
         if not found:
             return None
-        if where:
-            room = self._room_of_words(where)
-            inside = [r for r in found if room is not None and (r.room == room or r.id == room)]
-            found = inside or found
+        if where and (room := self._room_of_words(where)) is not None:
+            inside = [r for r in found if r.room == room or r.id == room]
+            if not inside:
+                what, there = " ".join(thing), room.replace("_", " ")
+                others = ", ".join(f"{r.id} ({r.room or 'in no room'})" for r in found)
+                raise Refusal(f"the {self.map.name} has no {what} in the {there}; it has {others}")
+            found = inside
         typed = [r for r in found if r.kind != "place" or self.taxonomy.is_a(r.cls, element_type) is not False
                  or (element_type == "openable" and self._openable(r.id))]
         if element_type == "openable":

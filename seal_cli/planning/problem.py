@@ -225,7 +225,10 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str) -> tuple[s
     if category in ("message", "question") or not phrase.text:
         return None
     kinds = ("room", "place", "person") if category == "thing" else ("room", "place")
-    found = names.ground(phrase.text, category, kinds)
+    try:
+        found = names.ground(phrase.text, category, kinds)
+    except SealError as wrong:
+        raise _located(wrong.message, phrase, text) from None
     if found is not None:
         return (found.id,)
     if things.taxonomy.is_a(phrase.cls or phrase.head, "person") is True:

@@ -333,7 +333,8 @@ class Agent:
         name = class_key(value)
         if value in self.world.items and value in self.known and (
                 name not in self.classes or not self.world.items[value].movable):
-            return value  # an item named by itself (a place, a person of the map), not a name the command made up
+            # an item named by itself (a place, a person of the map), not a name the command made up
+            return None if value in self.unreachable else value
         key = self.class_of(value)
         room = self.room(value)
         if room is not None and not self.instances(key):
@@ -427,6 +428,13 @@ class Agent:
             return None
         field_ = self.distances() if field_ is None else field_
         costs = field_[cells[:, 0], cells[:, 1]]
+        blocked = self.world.sensor.blocked
+        if blocked is not None and known.id in self.world.items:      # not behind a wall, seen from the thing
+            points = np.column_stack([self.grid.origin[0] + cells[:, 1] * self.grid.resolution,
+                                      self.grid.origin[1] + cells[:, 0] * self.grid.resolution])
+            clear = ~np.asarray(blocked(known.at, points), dtype=bool)
+            if clear.any():
+                cells, costs = cells[clear], costs[clear]
         for k in np.argsort(costs, kind="stable")[:STAND_TRIES]:
             if not np.isfinite(costs[k]):
                 return None
@@ -488,6 +496,11 @@ class Agent:
         self.look()
         return None
 
+    def is_person(self, value: str) -> bool:
+        """Whether a value names a person of the world (by their own name)."""
+        item = self.world.items.get(value)
+        return item is not None and item.key == PERSON
+
     def sweep_once(self, value: str, binding: Binding) -> Outcome | None:
         """One look of the whole-house search for a kind of thing nothing tells the robot where to
         look for (no prior, no class its perception knows): the nearest part of the house not yet
@@ -519,15 +532,20 @@ class Agent:
     def search_for(self, value: str, binding: Binding) -> Outcome:
         """``search(value)``: look (as ``navigate`` would) until a thing of that kind is known."""
         role = next((r for r, v in binding.values if v == value), None)
+        if self.is_person(value) and not self.world.within_reach(value):    # told where: goes to see them
+            went = self.go_to(value, binding)
+            if not went.ok:
+                return went
         while self.resolve(value, binding, role) is None:
             if (stop := self.exhausted()) is not None:
-                return Fatal(False, stop)
+                return Fatal(False, stop, Reason.BUDGET)
             if (ended := self.look_once(value, binding)) is not None:
                 return ended
         target = self.resolve(value, binding, role)
         if target is not None and target in self.known:
             self.world.face(self.known[target].at)
-            self.answers.append(self.where_is(target))
+            if (answer := self.where_is(target)) not in self.answers:
+                self.answers.append(answer)
         return Outcome(True, f"found {target}")
 
     def where_is(self, item_id: str) -> str:
@@ -610,14 +628,19 @@ class Agent:
                 found = self.search_for(action.args[0], binding)
                 if not found.ok:
                     return found
-            outcome = self.world.act(action.name, *(self.class_of(a) for a in action.args))
+            outcome = self.world.act(action.name, *(a if self.is_person(a) else self.class_of(a)
+                                                    for a in action.args))
             self.say("act" if outcome.ok else "fail", outcome.message, action=action.name, args=list(action.args))
-            if outcome.ok and action.name == "count":
-                self.answers.append(self.how_many(action.args[0], binding))
+            if outcome.ok and action.name == "count" and (answer := self.how_many(action.args[0], binding)) \
+                    not in self.answers:
+                self.answers.append(answer)
             return outcome
         roles = {v: r for r, v in binding.values}
         args: list[str] = []
         for value in action.args:
+            if action.name == "lead" and args:       # where to: driven to after, by go_to
+                args.append(value)
+                continue
             target = self.resolve(value, binding, roles.get(value))
             if target is None:
                 return Outcome(False, f"knows no {value} to {action.name.replace('_', ' ')}", Reason.NOT_FOUND, value)
@@ -631,6 +654,13 @@ class Agent:
             outcome = self.world.act(action.name, *args)
         if outcome.reason is Reason.NOT_RECEPTACLE and action.name == "place":
             outcome, args = self.put_beside(args[0], args[1], outcome)
+        if outcome.ok and action.name == "lead":     # the person follows the robot there
+            self.say("act", f"asks {args[0]} to follow", action="lead", args=args)
+            arrived = self.go_to(action.args[1], binding)
+            self.world.following = None
+            if not arrived.ok:
+                return arrived
+            outcome = Outcome(True, f"led {args[0]} to {action.args[1]}")
         self.say("act" if outcome.ok else "fail", outcome.message, action=action.name, args=args)
         if outcome.ok:
             self._after(action.name, args, binding)
@@ -699,8 +729,8 @@ class Agent:
 WORDS = frozenset({"search", "count", "say", "answer"})
 """Primitives whose argument is a word (a kind of thing, a message), not an item of the world."""
 
-GO_FIRST = {"approach": 0, "lead": 1}
-"""Primitives the robot drives for first: up to the person (approach), to where it leads them (lead)."""
+GO_FIRST = {"approach": 0}
+"""Primitives the robot drives for first: up to the person (approach)."""
 
 STAND_TRIES = 400
 """Stand cells tried, nearest first, for one that no wall cuts off from the thing."""

@@ -189,6 +189,8 @@ class World:
         self.reach = reach
         self.sensor = sensor or Sensor()
         self.access_tolerance = access_tolerance
+        self.following: str | None = None
+        """A person who walks with the robot (being led): where the robot drives, they go."""
         self.step = 0
         self.log: list[Event] = []
         self._since: dict[tuple[str, str], int] = {}
@@ -307,6 +309,8 @@ class World:
                 self.robot.trajectory.append((x, y))
         self.robot.pose = (x, y, yaw if heading is None else heading)
         self.robot.path_m += metres
+        if self.following is not None:
+            self.items[self.following].at = (x, y)
         self.step += 1
         return metres
 
@@ -536,12 +540,12 @@ class World:
         return self._person(person) or Outcome(True, f"followed {person}")
 
     def _do_lead(self, person: str, target: str) -> Outcome:
+        """The person, within reach, walks with the robot from now on (:attr:`following`)."""
         if (why := self._person(person)) is not None:
             return why
-        here = (self.robot.pose[0], self.robot.pose[1])
-        self.items[person].at = here
+        self.following = person
         self._since[(person, "at")] = self.step + 1
-        return Outcome(True, f"led {person} to {target}")
+        return Outcome(True, f"{person} follows the robot to {target}")
 
     def _do_meet(self, person: str) -> Outcome:
         return self._person(person) or Outcome(True, f"met {person}")
@@ -556,4 +560,4 @@ class World:
         return Outcome(True, f"said {message!r}")
 
 
-_TEXT_ARGS = {"search", "count", "say", "answer"}
+_TEXT_ARGS = {"search", "count", "say", "answer", "lead"}
