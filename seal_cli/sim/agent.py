@@ -729,8 +729,8 @@ class Agent:
 WORDS = frozenset({"search", "count", "say", "answer"})
 """Primitives whose argument is a word (a kind of thing, a message), not an item of the world."""
 
-GO_FIRST = {"approach": 0}
-"""Primitives the robot drives for first: up to the person (approach)."""
+GO_FIRST = {"approach": 0, "follow": 0}
+"""Primitives the robot drives for first: up to the person (approach, follow)."""
 
 STAND_TRIES = 400
 """Stand cells tried, nearest first, for one that no wall cuts off from the thing."""

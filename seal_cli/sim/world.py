@@ -525,7 +525,8 @@ class World:
         return self._reachable(person)
 
     def _do_approach(self, person: str) -> Outcome:
-        return self._person(person) or Outcome(True, f"is with {person}")
+        why = self._person(person)
+        return why if why is not None else Outcome(True, f"is with {person}")
 
     def _do_hand_over(self, obj: str, person: str) -> Outcome:
         if self.robot.holding != obj:
@@ -537,7 +538,8 @@ class World:
         return Outcome(True, f"handed {obj} to {person}")
 
     def _do_follow(self, person: str) -> Outcome:
-        return self._person(person) or Outcome(True, f"followed {person}")
+        why = self._person(person)
+        return why if why is not None else Outcome(True, f"followed {person}")
 
     def _do_lead(self, person: str, target: str) -> Outcome:
         """The person, within reach, walks with the robot from now on (:attr:`following`)."""
@@ -548,10 +550,12 @@ class World:
         return Outcome(True, f"{person} follows the robot to {target}")
 
     def _do_meet(self, person: str) -> Outcome:
-        return self._person(person) or Outcome(True, f"met {person}")
+        why = self._person(person)
+        return why if why is not None else Outcome(True, f"met {person}")
 
     def _do_greet(self, person: str) -> Outcome:
-        return self._person(person) or Outcome(True, f"greeted {person}")
+        why = self._person(person)
+        return why if why is not None else Outcome(True, f"greeted {person}")
 
     def _do_answer(self, question: str) -> Outcome:
         return Outcome(True, f"answered {question!r}")
