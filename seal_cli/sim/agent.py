@@ -669,13 +669,46 @@ class Agent:
         return outcome
 
     def how_many(self, value: str, binding: Binding) -> str:
-        """How many things of a kind the robot sees from where it counted them, and where that is."""
+        """How many things of a kind there are where the command says: in a room, every one the
+        robot has seen there once it has looked all over the room (:meth:`survey`); elsewhere,
+        those it sees from where it counts."""
         key = self.class_of(value)
-        n = sum(class_key(d.cls) == key for d in self.world.observe())
         ground = binding.elements.get("ground")
+        room = self.room(ground) if ground else None
+        if room is not None:
+            self.survey(room)
+            n = sum(1 for k in self.known.values() if k.cls == key and k.movable
+                    and bool(room.contains([self.world.position(k.id)])[0]))
+        else:
+            n = sum(class_key(d.cls) == key for d in self.world.observe())
         where = f" in the {ground.replace('_', ' ')}" if ground else ""
         noun = key.replace("_", " ")
         return f"{n} {noun}{'' if n == 1 else 's'}{where}"
+
+    def survey(self, room: Any, views: int | None = None) -> None:
+        """Look all over a room: to the nearest part of it not yet seen, until all of it is (at
+        most ``views`` views, default :data:`SURVEY_VIEWS`, within the budget)."""
+        from seal_cli.sim.policies.baselines import CoveragePolicy
+
+        sweep = CoveragePolicy()
+        sweep.begin(self)
+        sweep.seen |= ~room.contains(sweep.lattice)
+        for pose in self.looks:
+            sweep.seen |= self.world.sensor.visible(pose, sweep.lattice)
+        cells = self.grid.free_cells
+        for _ in range(SURVEY_VIEWS if views is None else views):
+            if self.exhausted() is not None:
+                return
+            field_ = self.distances()
+            found = sweep.frontier(self, field_[cells[:, 0], cells[:, 1]])
+            if found is None:
+                return
+            _, k, u = found
+            self.say("search", f"looks all over the {room.name.replace('_', ' ')}", target=room.name)
+            self.drive_to((int(cells[k, 0]), int(cells[k, 1])), "goes to look")
+            self.world.face(tuple(sweep.lattice[u]))
+            self.look()
+            sweep.seen |= self.world.sensor.visible(self.world.robot.pose, sweep.lattice)
 
     def _after(self, name: str, args: list[str], binding: Binding) -> None:
         """Keep the robot's own knowledge in step with what it just did."""
@@ -731,6 +764,9 @@ WORDS = frozenset({"search", "count", "say", "answer"})
 
 GO_FIRST = {"approach": 0, "follow": 0}
 """Primitives the robot drives for first: up to the person (approach, follow)."""
+
+SURVEY_VIEWS = 12
+"""At most this many views to look all over a room (Count)."""
 
 STAND_TRIES = 400
 """Stand cells tried, nearest first, for one that no wall cuts off from the thing."""

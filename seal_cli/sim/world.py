@@ -46,8 +46,9 @@ STATES = ("hot", "cold", "clean", "sliced", "on", "open")
 
 REACH_MARGIN = 0.3
 """How close to a thing a wall may stand without cutting the robot's reach to it: the sight line
-from the robot is tested to the point this far short of the thing, so the thing's own furniture
-(a counter a laser map marks occupied) does not hide it from the hand."""
+from the robot is tested to the point this far short of the thing (for a place with its own
+reach, that reach less 0.5 m if more: :meth:`World.margin`), so the thing's own furniture (a
+counter a laser map marks occupied) does not hide it from the hand."""
 
 
 @dataclass
@@ -274,11 +275,22 @@ class World:
         pose = pose or self.robot.pose
         at = self.items[item_id].at
         d = math.dist(pose[:2], at)
-        if d <= REACH_MARGIN:
+        margin = self.margin(item_id)
+        if d <= margin:
             return False
-        f = (d - REACH_MARGIN) / d
+        f = (d - margin) / d
         short = (pose[0] + (at[0] - pose[0]) * f, pose[1] + (at[1] - pose[1]) * f)
         return bool(np.asarray(self.sensor.blocked(pose, np.asarray([short], dtype=float)))[0])
+
+    def margin(self, item_id: str) -> float:
+        """How far short of the item the sight line for reach is tested: :data:`REACH_MARGIN` for a
+        thing, more for a place whose own reach is larger (a bed, a fridge drawn as a box: its
+        outline must not hide it from the hand), its reach less half a metre."""
+        item = self.items[item_id]
+        parent = self.items.get(item.parent) if item.parent else None
+        owner = item if item.reach is not None else parent if parent is not None and parent.reach is not None \
+            else None
+        return REACH_MARGIN if owner is None else max(REACH_MARGIN, float(owner.reach or 0.0) - 0.5)
 
     def observe(self, pose: Sequence[float] | None = None) -> list[Detection]:
         """The movable things the robot sees: not shut inside anything, and in its sensor's view or in
