@@ -15,11 +15,11 @@ import statistics
 
 import numpy as np
 
-from seal_cli.frames.library import load_library
-from seal_cli.maps.model import load_map
+from seal_cli.frames.reading import load_library
+from seal_cli.maps.formats.map_server import load_map
+from seal_cli.pipeline import run_on_map
 from seal_cli.resources import map_path
-from seal_cli.sim.agent import run_on_map
-from seal_cli.sim.policies.baselines import make_policy
+from seal_cli.sim.policies import make_policy
 
 COMMANDS = ("stir the cup", "bring the apple to the bedroom", "put the spoon in the sink",
             "pick up the cup and put it on the dining table", "heat the apple")

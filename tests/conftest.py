@@ -6,7 +6,8 @@ from pathlib import Path
 
 import pytest
 
-from seal_cli.frames.library import Library, load_library
+from seal_cli.frames.library import Library
+from seal_cli.frames.reading import load_library
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT.parent / "shared" / "data"

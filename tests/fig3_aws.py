@@ -22,8 +22,10 @@ from typer.testing import CliRunner
 from seal_cli.bench.houses import AWS_OBJECTS, AWS_TRAJECTORY, aws_house
 from seal_cli.cli import app
 from seal_cli.cli.localize_cmd import _plan
-from seal_cli.frames.library import Library, load_library
-from seal_cli.maps.model import Map, load_map
+from seal_cli.frames.library import Library
+from seal_cli.frames.reading import load_library
+from seal_cli.maps.formats.map_server import load_map
+from seal_cli.maps.model import Map
 from seal_cli.sefm.filter import SeFM
 from seal_cli.sefm.potentials import GridKernelSums
 from seal_cli.sensing.sensor import visible_region

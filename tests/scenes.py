@@ -7,11 +7,11 @@ import numpy as np
 from seal_cli.frames.library import Library
 from seal_cli.maps.geometry import OccupancyGrid
 from seal_cli.maps.model import Map, ObjectTruth, Place, Robot, Room, Sensor
+from seal_cli.sensing.model import RangeSensor
 from seal_cli.sim.agent import Scene
 from seal_cli.sim.navigation import Grid
 from seal_cli.sim.world import Item, World
 from seal_cli.sim.world import Robot as WorldRobot
-from seal_cli.sim.world import Sensor as WorldSensor
 
 
 def kitchen(library: Library, *, apple_in: str = "fridge_1", priors: bool = True) -> Scene:
@@ -28,7 +28,7 @@ def kitchen(library: Library, *, apple_in: str = "fridge_1", priors: bool = True
               Item("knife_1", "knife", (0.2, 0.9), parent="counter_1"),
               Item("mug_1", "mug", (3.2, 3.8), parent="table_1", receptacle=True)]
     world = World(items, WorldRobot(pose=(3.0, 1.0, 0.0)), taxonomy=library.taxonomy, reach=1.5,
-                  sensor=WorldSensor(range=1.5))
+                  sensor=RangeSensor(Sensor(range=1.5)))
     occupancy = OccupancyGrid.from_cells(pts, 0.25)
     m = Map("tiny_kitchen", (-0.5, -0.5, 6.5, 4.5), rooms=(Room.box("kitchen", -0.5, -0.5, 6.5, 4.5),),
             places=tuple(Place(n, c, at, openable=o, reach=0.75) for n, c, at, o in places),

@@ -33,8 +33,10 @@ from seal_cli.errors import SealError, Where
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding
 from seal_cli.frames.taxonomy import class_key
+from seal_cli.maps.model import Sensor as MapSensor
+from seal_cli.sensing.model import RangeSensor, SensorModel
 from seal_cli.sim.navigation import Grid
-from seal_cli.sim.world import HAND, Item, Robot, Sensor, World
+from seal_cli.sim.world import HAND, Item, Robot, World
 
 if TYPE_CHECKING:
     from seal_cli.sim.agent import Scene
@@ -56,7 +58,7 @@ FOUR = TASK_TYPES[:4]
 MOVABLE_RECEPTACLES = frozenset(class_key(c) for c in ("Bowl", "Box", "Cup", "Mug", "Plate", "Pan", "Pot"))
 """Movable objects that other objects can be put into (ALFRED's ``gen/constants.py``)."""
 
-SENSOR = Sensor(range=1.5, fov=360.0)
+SENSOR = RangeSensor(MapSensor(range=1.5, fov_deg=360.0))
 """The robot's eyes in ALFRED's rooms: it turns on the spot (turning costs no path) and recognises
 things within 1.5 m (AI2-THOR's interaction distance); closed receptacles hide what is inside.
 The scenes carry no wall geometry, so nothing else occludes."""
@@ -336,7 +338,7 @@ def scene_priors(priors: Mapping[str, Mapping[str, float]], plan: FloorPlan, cla
 # -- the world --------------------------------------------------------------------------------------
 
 def build_scene(episode: Episode, plan: FloorPlan, library: Library, priors: Mapping[str, Mapping[str, float]],
-                *, sensor: Sensor | None = None) -> Scene:
+                *, sensor: SensorModel | None = None) -> Scene:
     """The episode as a :class:`~seal_cli.sim.agent.Scene`: the world (ground truth) and the map the
     robot is given — the reachable grid, the receptacles as places (openable ones closed), and
     place-level priors for every movable class of the scene. Items get short names
@@ -344,7 +346,6 @@ def build_scene(episode: Episode, plan: FloorPlan, library: Library, priors: Map
     from seal_cli.maps.geometry import OccupancyGrid
     from seal_cli.maps.model import Map, ObjectTruth, Place, Room
     from seal_cli.maps.model import Robot as MapRobot
-    from seal_cli.maps.model import Sensor as MapSensor
     from seal_cli.sim.agent import Scene
 
     world, names = build_world(episode, plan, library, sensor=sensor)
@@ -361,7 +362,8 @@ def build_scene(episode: Episode, plan: FloorPlan, library: Library, priors: Map
     the_map = Map(f"{episode.floor_plan}:{episode.task_id}", bounds,
                   rooms=(Room.box(episode.scene_type, *bounds),), places=places,
                   priors=scene_priors(priors, plan, movable), objects=objects,
-                  robot=MapRobot(episode.start), sensor=MapSensor(range=BELIEF_RANGE, fov_deg=s.fov), grid=occupancy)
+                  robot=MapRobot(episode.start), sensor=MapSensor(range=BELIEF_RANGE, fov_deg=s.spec.fov_deg),
+                  grid=occupancy)
     vocabulary = tuple(sorted({i.key for i in world.items.values()}))
     return Scene(world, the_map, grid, vocabulary, f"{episode.task_dir} ({episode.task_id})")
 
@@ -378,7 +380,7 @@ def _place_reach(item: Item, grid: Grid) -> float:
 
 
 def build_world(episode: Episode, plan: FloorPlan, library: Library, *,
-                sensor: Sensor | None = None) -> tuple[World, dict[str, str]]:
+                sensor: SensorModel | None = None) -> tuple[World, dict[str, str]]:
     """The episode's ground truth: receptacles as places (openable ones closed), objects where the
     trial puts them, lamps on as the trial says, the robot at the start pose with an empty hand.
     Also returns each item's short name → ALFRED object id."""

@@ -106,7 +106,7 @@ def _aws(folder: Path, data: Path) -> Path:
 
 def plan_steps(case: Case, the_map: Any, library: Any) -> tuple[bool, str]:
     """Whether the case plans right, and what it planned (or the refusal)."""
-    from seal_cli.planning.plan import plan_text
+    from seal_cli.pipeline import plan as plan_text
 
     try:
         found = plan_text(case.text, library, map=the_map)
@@ -120,10 +120,11 @@ def judge(case: Case, map_file: str, seed: int, particles: int, framelib: Sequen
     """Plan the case, then run it if it says how the run must end (one worker's job)."""
     import numpy as np
 
-    from seal_cli.frames.library import load_library
-    from seal_cli.maps.model import load_map
-    from seal_cli.sim.agent import Budget, run_on_map
-    from seal_cli.sim.policies.baselines import make_policy
+    from seal_cli.frames.reading import load_library
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.agent import Budget
+    from seal_cli.sim.policies import make_policy
 
     library = load_library(framelib)
     the_map = load_map(map_file)

@@ -16,7 +16,8 @@ from typing import Any
 
 import numpy as np
 
-from seal_cli.maps.model import Map, load_map
+from seal_cli.maps.formats.map_server import load_map
+from seal_cli.maps.model import Map
 from seal_cli.sensing.sensor import visible, visible_region
 
 __all__ = ["bench_map"]

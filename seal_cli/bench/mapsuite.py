@@ -25,8 +25,10 @@ from typing import Any
 import numpy as np
 
 from seal_cli.bench.tasks import Outcome, in_order
-from seal_cli.frames.library import Library, load_library
-from seal_cli.maps.model import Map, ObjectTruth, load_map
+from seal_cli.frames.library import Library
+from seal_cli.frames.reading import load_library
+from seal_cli.maps.formats.map_server import load_map
+from seal_cli.maps.model import Map, ObjectTruth
 
 __all__ = ["COMMANDS", "run_map_suite", "sample_layout"]
 
@@ -67,8 +69,8 @@ def layout_seed(seed: int, layout: int, map_name: str) -> int:
 def run_layout(m: Map, layout: int, commands: Sequence[str], library: Library, policies: Sequence[str], *,
                seed: int = 0, particles: int = 200) -> list[Outcome]:
     """Every command with every policy on one layout of the map."""
-    from seal_cli.sim.agent import run_on_map
-    from seal_cli.sim.policies.baselines import make_policy
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.policies import make_policy
 
     base = layout_seed(seed, layout, m.name)
     world = sample_layout(m, np.random.default_rng(base))
@@ -106,7 +108,7 @@ def run_map_suite(map_path: str, commands: Sequence[str], policies: Sequence[str
     outcomes in layout order. The map and every command are checked (parsed and planned) first,
     so a bad one is an error before any run."""
     from seal_cli.language.grounding import vocabulary_of_map
-    from seal_cli.planning.plan import plan_text
+    from seal_cli.pipeline import plan as plan_text
 
     m = load_map(map_path)
     library = load_library(framelib)

@@ -1,6 +1,6 @@
 """``seal bench perf``: how fast SeFM updates its beliefs, against the exact O(P²) evaluation.
 
-Two scales (SPEC, "seal bench"):
+Three scales (SPEC, "seal bench"):
 
 ``paper``
     the paper's Gazebo study: the shipped apartment, the frames Pick(cup), Pick(spoon),
@@ -10,8 +10,14 @@ Two scales (SPEC, "seal bench"):
     on one to three rooms each and one ground-truth instance each, and 60 frames — 20 Pick, 20
     Stir (utensil core, container other, context the utensil's Pick) and 20 Place into a room —,
     1,000 particles per object and per frame.
+``large``
+    a 120 m × 80 m floor of 384 walled rooms (the same :func:`building`, 0.1 m cells: 0.96 M cells),
+    200 object classes and 200 frames (70 Pick, 70 Stir, 60 Place), 1,000 particles each.
 
-In both, the robot drives a loop through the map, one update per pose, with detections simulated
+Each scale runs in a process of its own (``spawn``), so that ``peak_rss_mb`` — the peak resident memory
+of that process, from ``getrusage`` — is the scale's alone and not the largest seen so far.
+
+In all, the robot drives a loop through the map, one update per pose, with detections simulated
 from the ground truth. ``updates_per_s`` times :meth:`SeFM.update <seal_cli.sefm.filter.SeFM.update>`
 with the grid kernel sums (the engine), ``exact_updates_per_s`` the same updates with the exact
 ones. ``tv_distance`` compares the two on the same particles: after the timed engine updates,
@@ -35,9 +41,9 @@ from seal_cli.maps.model import Map, ObjectTruth, Robot, Room, Sensor
 from seal_cli.planning.state import State, robot_facts
 from seal_cli.sefm.filter import SeFM, SeFMConfig
 from seal_cli.sefm.potentials import make_kernel_sums
-from seal_cli.sensing.sensor import simulate_detections
+from seal_cli.sensing.model import simulate_detections
 
-__all__ = ["Scale", "building", "measure", "scales"]
+__all__ = ["SCALES", "Scale", "building", "measure", "measure_apart", "peak_rss_mb", "scale", "scales"]
 
 
 @dataclass(frozen=True)
@@ -105,29 +111,45 @@ def _loop(m: Map, room: float = 5.0) -> tuple[tuple[float, float, float], ...]:
     return (*path, (*centres[-1], 0.0))
 
 
-def scales(library: Library, load_apartment: Callable[[], Map], which: Sequence[str] = ("paper", "building"),
+SCALES = ("paper", "building", "large")
+"""The names of the scales, smallest first."""
+
+
+def scales(library: Library, load_apartment: Callable[[], Map], which: Sequence[str] = SCALES[:2],
            seed: int = 0) -> list[Scale]:
     """The benchmark's scales (see the module docstring)."""
-    out = []
+    return [scale(name, library, load_apartment, seed) for name in SCALES if name in which]
+
+
+def scale(name: str, library: Library, load_apartment: Callable[[], Map], seed: int = 0) -> Scale:
+    """One of :data:`SCALES`."""
     hand_empty = State.of(robot_facts(None), library.taxonomy)
-    if "paper" in which:
+    if name == "paper":
         m = load_apartment()
         bindings: tuple[Binding, ...] = (library.frame("Pick").bind({"theme": "cup"}),
                                          library.frame("Pick").bind({"theme": "spoon"}),
                                          library.frame("Stir").bind({"theme": "cup"}))
         path = tuple((x, y, 0.0) for x, y in [(-6, -3), (-3.5, -0.2), (-1, -2.5), (1, -2.5), (2.5, -4.7), (5, -4.5),
                                               (7, -3), (5, -4.5), (2.5, -4.7), (1, -2), (0.5, 0.5), (0.5, 2.5)])
-        out.append(Scale("paper", m, bindings, hand_empty, 200, path, 200, 40))
-    if "building" in which:
+        return Scale("paper", m, bindings, hand_empty, 200, path, 200, 40)
+    if name == "building":
         m = building(np.random.default_rng(seed))
-        things = [f"thing_{k:02d}" for k in range(60)]
-        pick, stir, place = (library.frame(n) for n in ("Pick", "Stir", "Place"))
-        bindings = tuple([pick.bind({"theme": t}) for t in things[:20]]
-                         + [stir.bind({"theme": things[20 + k], "instrument": things[k]}) for k in range(20)]
-                         + [place.bind({"theme": things[40 + k], "goal": m.rooms[k % len(m.rooms)].name})
-                            for k in range(20)])
-        out.append(Scale("building", m, bindings, hand_empty, 1000, _loop(m), 30, 2))
-    return out
+        return Scale("building", m, _frames(library, m, 20, 20, 20), hand_empty, 1000, _loop(m), 30, 2)
+    if name == "large":
+        m = building(np.random.default_rng(seed), classes=200, columns=24, rows=16)
+        return Scale("large", m, _frames(library, m, 70, 70, 60), hand_empty, 1000, _loop(m), 10, 1)
+    raise KeyError(name)
+
+
+def _frames(library: Library, m: Map, picks: int, stirs: int, places: int) -> tuple[Binding, ...]:
+    """``picks`` Pick frames, ``stirs`` Stir frames (instrument: one of the picked things) and ``places``
+    Place frames into a room, over the map's classes in order."""
+    things = sorted(m.priors)
+    pick, stir, place = (library.frame(n) for n in ("Pick", "Stir", "Place"))
+    return tuple([pick.bind({"theme": t}) for t in things[:picks]]
+                 + [stir.bind({"theme": things[picks + k], "instrument": things[k % picks]}) for k in range(stirs)]
+                 + [place.bind({"theme": things[picks + stirs + k], "goal": m.rooms[k % len(m.rooms)].name})
+                    for k in range(places)])
 
 
 def _run(scale: Scale, kernel: str, updates: int, seed: int) -> tuple[SeFM, float]:
@@ -159,7 +181,7 @@ def tv_distance(sefm: SeFM) -> float:
 
 
 def measure(scale: Scale, seed: int = 0, progress: Callable[[str], None] | None = None) -> dict[str, Any]:
-    """The SPEC's figures for one scale."""
+    """The SPEC's figures for one scale (``peak_rss_mb`` is this process's peak so far)."""
     say = progress or (lambda _: None)
     say(f"{scale.name}: {scale.updates} engine updates")
     engine, seconds = _run(scale, "grid", scale.updates, seed)
@@ -169,4 +191,33 @@ def measure(scale: Scale, seed: int = 0, progress: Callable[[str], None] | None 
     return {"name": scale.name, "frames": len(scale.bindings), "objects": scale.objects,
             "particles": scale.particles, "updates_per_s": round(scale.updates / max(seconds, 1e-9), 2),
             "exact_updates_per_s": round(scale.exact_updates / max(exact_seconds, 1e-9), 3),
-            "tv_distance": round(tv_distance(engine), 5)}
+            "tv_distance": round(tv_distance(engine), 5), "peak_rss_mb": round(peak_rss_mb(), 1)}
+
+
+def peak_rss_mb() -> float:
+    """The peak resident memory of this process, in MB (``ru_maxrss`` is in KiB on Linux, bytes on macOS)."""
+    import resource
+    import sys
+
+    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+    return peak / (1 << 20) if sys.platform == "darwin" else peak / 1024
+
+
+def measure_apart(name: str, seed: int = 0, framelib: Sequence[str] = ()) -> dict[str, Any]:
+    """:func:`measure` of the scale ``name`` in a fresh process of its own, so that its ``peak_rss_mb``
+    counts that scale alone. The library is the shipped one unless ``framelib`` paths are given."""
+    import multiprocessing
+
+    with multiprocessing.get_context("spawn").Pool(1) as pool:
+        return pool.apply(_measure_named, (name, seed, tuple(framelib)))
+
+
+def _measure_named(name: str, seed: int, framelib: tuple[str, ...]) -> dict[str, Any]:
+    from pathlib import Path
+
+    from seal_cli.frames.reading import load_library
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+
+    library = load_library([Path(p) for p in framelib] or None)
+    return measure(scale(name, library, lambda: load_map(map_path("apartment")), seed), seed)

@@ -36,8 +36,9 @@ from seal_cli.bench.alfred2d import (
     load_suite,
 )
 from seal_cli.errors import SealError
-from seal_cli.frames.library import Library, load_library
+from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding
+from seal_cli.frames.reading import load_library
 
 __all__ = ["GOALS", "Outcome", "commands_for", "in_order", "run_episode", "run_suite", "summarise"]
 
@@ -94,7 +95,7 @@ def run_episode(episode: Episode, suite: Suite, library: Library, policies: Sequ
                 seed: int = 0, particles: int = 200) -> list[Outcome]:
     """Every policy on one episode."""
     from seal_cli.sim.agent import Agent, Budget
-    from seal_cli.sim.policies.baselines import make_policy
+    from seal_cli.sim.policies import make_policy
 
     plan = suite.floor_plans[episode.floor_plan]
     outcomes = []

@@ -3,14 +3,14 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import typer
-from rich.table import Table
 
 from seal_cli.cli import FramelibOption, JsonOption, command, emit_json, err, framelib_paths, out
-from seal_cli.frames.library import load_library
-from seal_cli.frames.model import Frame
+
+if TYPE_CHECKING:
+    from seal_cli.frames.model import Frame
 
 
 def frame_json(frame: Frame) -> dict[str, Any]:
@@ -39,6 +39,10 @@ def frames(
     as_json: bool = JsonOption,
 ) -> None:
     """The library's frames as a table, or one frame in full."""
+    from rich.table import Table
+
+    from seal_cli.frames.reading import load_library
+
     library = load_library(framelib_paths(framelib))
     if name is not None:
         frame = library.frame(name)
@@ -81,7 +85,7 @@ def validate(
     as_json: bool = JsonOption,
 ) -> None:
     """Check frame files, frame folders and maps; list every problem as file:line:col: message."""
-    from seal_cli.frames.validation import validate_paths
+    from seal_cli.validate import validate_paths
 
     report = validate_paths(paths, with_stdlib=stdlib)
     if as_json:

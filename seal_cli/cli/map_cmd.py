@@ -6,7 +6,6 @@ from pathlib import Path
 from typing import Any
 
 import typer
-from rich.table import Table
 
 from seal_cli.cli import JsonOption, bench_app, command, emit_json, err, out
 
@@ -33,6 +32,8 @@ def summary(m: Any) -> dict[str, Any]:
 
 
 def show(data: dict[str, Any]) -> None:
+    from rich.table import Table
+
     grid = data["grid"]
     out.print(f"[bold]{data['name']}[/bold]  bounds {data['bounds']}  grid {grid['shape'][1]}×{grid['shape'][0]} "
               f"at {grid['resolution']:g} m  free {data['free_area']:.1f} m²")
@@ -77,16 +78,19 @@ def map_command(
     as_json: bool = JsonOption,
 ) -> None:
     """Show what an annotated map holds: rooms, places, priors per room, objects, robot and sensor."""
-    from seal_cli.maps.model import load_map
+    from seal_cli.cli import OUTPUT_SUFFIXES
+    from seal_cli.fileio import Outputs
+    from seal_cli.maps.formats.map_server import load_map
     from seal_cli.resources import map_path
 
     m = load_map(map_path(path))
     for warning in m.warnings:
         err.print(f"warning: {warning}", markup=False)
-    if png is not None:
-        from seal_cli.maps.drawing import save_map_png
+    with Outputs({"--png": png}, [map_path(path)], suffixes=OUTPUT_SUFFIXES) as outputs:
+        if png is not None:
+            from seal_cli.maps.drawing import save_map_png
 
-        save_map_png(m, png)
+            save_map_png(m, outputs["--png"])
     data = summary(m)
     if as_json:
         emit_json(data)
@@ -103,6 +107,8 @@ def bench_maps(
     as_json: bool = JsonOption,
 ) -> None:
     """Time the map queries a particle filter makes, on 1,000 and 60,000 points."""
+    from rich.table import Table
+
     from seal_cli.bench.maps import bench_map
     from seal_cli.resources import map_path
 

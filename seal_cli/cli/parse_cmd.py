@@ -12,7 +12,6 @@ import typer
 
 from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
 from seal_cli.errors import SealError, Where
-from seal_cli.fileio import read_json_lines
 
 if TYPE_CHECKING:
     from seal_cli.language.grounding import Vocabulary
@@ -32,7 +31,7 @@ def vocabulary_from(vocabulary: Path | None, map_name: str | None) -> Vocabulary
     if vocabulary is not None:
         found.append(load_vocabulary(vocabulary))
     if map_name is not None:
-        from seal_cli.maps.model import load_map
+        from seal_cli.maps.formats.map_server import load_map
         from seal_cli.resources import map_path
 
         found.append(vocabulary_of_map(load_map(map_path(map_name))))
@@ -49,11 +48,15 @@ def vocabulary_from(vocabulary: Path | None, map_name: str | None) -> Vocabulary
 
 
 def _read_lines(source: str) -> list[str]:
-    if source == "-":
-        return sys.stdin.read().splitlines()
-    from seal_cli.fileio import read_text
+    """The lines of a file or of standard input ('-'): one command per ``\\n``-separated line."""
+    from seal_cli.fileio import MAX_INPUT_BYTES, decode, read_text, split_lines
 
-    return read_text(source).splitlines()
+    if source != "-":
+        return split_lines(read_text(source))
+    data = sys.stdin.buffer.read(MAX_INPUT_BYTES + 1)
+    if len(data) > MAX_INPUT_BYTES:
+        raise SealError(f"standard input holds more than {MAX_INPUT_BYTES // 2**20} MiB; seal reads at most that")
+    return split_lines(decode(data, "<stdin>"))
 
 
 @command("parse")
@@ -68,11 +71,14 @@ def parse(
     as_json: bool = JsonOption,
 ) -> None:
     """Parse a command into the frames it evokes, with their elements."""
-    from seal_cli.frames.library import load_library
+    from seal_cli.frames.reading import load_library
     from seal_cli.language.parser import parse_command, parse_lines
 
     if (text is None) == (file is None):
-        raise SealError("give either a command or --file FILE (one command per line; '-' reads standard input)")
+        import click
+
+        raise click.UsageError("give either a command or --file FILE (one command per line; '-' reads standard "
+                               "input)")
     library = load_library(framelib_paths(framelib))
     vocab = vocabulary_from(vocabulary, map_name)
     if file is not None:
@@ -151,6 +157,17 @@ def tree(parsed: Parse) -> Any:
 # seal bench parse
 
 
+def _alfred_vocabulary(constants: Path) -> Vocabulary:
+    """The classes of ALFRED's constants as a vocabulary (what the scorer grounds in)."""
+    from seal_cli.language.grounding import Vocabulary
+
+    try:
+        classes = json.loads(constants.read_text(encoding="utf-8"))["OBJECTS"]
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError, KeyError, TypeError) as error:
+        raise SealError(f"cannot read the ALFRED constants' OBJECTS: {error}", Where(str(constants))) from None
+    return Vocabulary.of([str(c) for c in classes])
+
+
 def _shared() -> Path:
     """``../shared`` beside the checkout (where the corpora and scorers are)."""
     return Path(__file__).resolve().parents[2] / ".." / "shared"
@@ -167,7 +184,14 @@ def bench_parse(
                                         show_default=False),
     as_json: bool = JsonOption,
 ) -> None:
-    """Score `seal parse` on parsing corpora with the shared scorers, and print their figures."""
+    """Score `seal parse` on parsing corpora with the shared scorers, and print their figures; then
+    parse each corpus in process: commands per CPU-second, and clauses swallowed into an element
+    (refused by the parser, or left silently: the target is zero)."""
+    from seal_cli.bench.parsing import commands_of, measure
+    from seal_cli.fileio import read_json_lines
+    from seal_cli.frames.reading import load_library
+
+    library = load_library()
     shared = _shared()
     folder = scorers or shared / "eval"
     corpora = list(corpus or [shared / "data" / "gpsr" / "dev.jsonl", shared / "data" / "alfred" /
@@ -191,16 +215,22 @@ def bench_parse(
                              capture_output=True, text=True)
         if run.returncode and "Traceback (most recent call last)" in run.stderr:  # it crashed (exit 1 is a low score)
             raise SealError(f"the scorer failed on {path}: {run.stderr.strip().splitlines()[-1]}", Where(str(path)))
+        vocab = _alfred_vocabulary(Path(argv[2])) if path.suffix == ".tsv" else None
+        figures = measure(commands_of(path), library, vocab)
         if as_json:
             lines = run.stdout.strip().splitlines()
             try:
                 results[str(path)] = json.loads("\n".join(lines[:-1]))
             except json.JSONDecodeError:
                 raise SealError(f"the scorer failed on {path}: {run.stderr[-500:]}") from None
+            results[str(path)]["in_process"] = figures.to_json()
         else:
             out.print(f"[bold]{_escape(str(path))}[/bold]")
             out.print(_escape(run.stdout.rstrip()))
             if run.returncode and run.stderr:
                 err.print(_escape(run.stderr.rstrip()[-1000:]))
+            out.print(f"in process: {figures.commands_per_cpu_s:,.0f} commands/CPU-s; clauses swallowed into an "
+                      f"element: {figures.silent_swallowed} silently, {figures.refused_swallowed} refused "
+                      f"(n={figures.commands}, errors {figures.errors})")
     if as_json:
         emit_json({"corpora": results})

@@ -7,7 +7,6 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 import typer
-from rich.table import Table
 
 from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
 from seal_cli.cli.parse_cmd import VocabularyOption, vocabulary_from
@@ -25,7 +24,7 @@ def _load_world(map_name: str | None) -> Map | None:
     """The ``--map`` world, or None."""
     if map_name is None:
         return None
-    from seal_cli.maps.model import load_map
+    from seal_cli.maps.formats.map_server import load_map
     from seal_cli.resources import map_path
 
     return load_map(map_path(map_name))
@@ -33,6 +32,8 @@ def _load_world(map_name: str | None) -> Map | None:
 
 def show(plan: Plan) -> None:
     """The plan as a numbered list: commanded frames in bold, inserted ones with their reason."""
+    from rich.table import Table
+
     table = Table.grid(padding=(0, 2))
     for column in ("number", "frame", "elements", "because"):
         table.add_column(justify="right" if column == "number" else "left")
@@ -63,17 +64,21 @@ def plan(
     as_json: bool = JsonOption,
 ) -> None:
     """Plan a command: the frames it commands, in order, with the frames their preconditions need."""
-    from seal_cli.frames.library import load_library
-    from seal_cli.planning.plan import plan_text
+    from seal_cli.fileio import Outputs
+    from seal_cli.frames.reading import load_library
+    from seal_cli.pipeline import plan as plan_text
+    from seal_cli.planning.pddl import PDDL_FILES
 
     library = load_library(framelib_paths(framelib))
     world = _load_world(map_name)
+    outputs = Outputs({"--pddl": pddl}, [vocabulary, *(framelib or [])], folders={"--pddl": PDDL_FILES})
     result = plan_text(text, library, holding=holding, done=tuple(done or ()), map=world,
                        vocabulary=vocabulary_from(vocabulary, map_name), max_nodes=max_nodes)
-    if pddl is not None:
-        from seal_cli.planning.pddl import write_pddl
+    with outputs:  # both files or neither; a failure above leaves no temporary (they are removed at exit)
+        if pddl is not None:
+            from seal_cli.planning.pddl import write_pddl
 
-        write_pddl(pddl, library, result)
+            write_pddl(pddl, library, result, files=outputs)
     for warning in result.warnings:
         err.print(f"[yellow]warning:[/yellow] {warning}", markup=True)
     if as_json:
@@ -92,15 +97,17 @@ def bench_plan(
     as_json: bool = JsonOption,
 ) -> None:
     """Time parse + ground + plan for commands of up to six clauses; report the slowest."""
+    from rich.table import Table
+
     from seal_cli.bench.plan import BENCH_COMMANDS, time_plans
-    from seal_cli.frames.library import load_library
+    from seal_cli.frames.reading import load_library
 
     library = load_library(framelib_paths(framelib))
     world = _load_world(map_name)
     if file is not None:
-        from seal_cli.fileio import read_text
+        from seal_cli.fileio import read_text, split_lines
 
-        texts = [line.strip() for line in read_text(file).splitlines() if line.strip()]
+        texts = [line.strip() for line in split_lines(read_text(file)) if line.strip()]
         if not texts:
             from seal_cli.errors import SealError, Where
 

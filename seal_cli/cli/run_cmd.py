@@ -7,9 +7,9 @@ from pathlib import Path
 from typing import Any
 
 import typer
-from rich.table import Table
 
 from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
+from seal_cli.sim.policies import DEFAULT_POLICIES, POLICIES
 
 KIND_STYLE = {"warn": "yellow", "plan": "bold", "frame": "bold cyan", "search": "yellow", "go": "", "see": "green",
               "look": "dim", "act": "green", "fail": "red", "replan": "magenta", "done": "bold green",
@@ -32,8 +32,8 @@ def run(
                                        show_default=False),
     done: list[str] | None = typer.Option(None, "--done", help="A command already carried out (repeatable): its "
                                           "frames' postconditions hold at the start.", show_default=False),
-    policy: str = typer.Option("sefm", "--policy", help="Who searches: sefm, object_only, coverage, oracle or "
-                               "uniform."),
+    policy: str = typer.Option("sefm", "--policy", help="Who searches: " + "; ".join(
+        f"{name} ({entry.summary})" for name, entry in POLICIES.items()) + "."),
     seed: int = typer.Option(0, "--seed", min=0, help="Seed of the one random generator."),
     particles: int = typer.Option(200, "--particles", min=1, help="Particles per object and per frame."),
     max_steps: int = typer.Option(400, "--max-steps", min=1, help="Give up after this many steps."),
@@ -50,11 +50,12 @@ def run(
     """Simulate a robot that searches for what the command needs, goes there and does it, narrating each step."""
     import numpy as np
 
-    from seal_cli.frames.library import load_library
-    from seal_cli.maps.model import load_map
+    from seal_cli.frames.reading import load_library
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
     from seal_cli.resources import map_path
-    from seal_cli.sim.agent import Budget, run_on_map
-    from seal_cli.sim.policies.baselines import make_policy
+    from seal_cli.sim.agent import Budget
+    from seal_cli.sim.policies import make_policy
 
     library = load_library(framelib_paths(framelib))
     the_map = load_map(map_path(map_name))
@@ -63,21 +64,25 @@ def run(
         from seal_cli.language.grounding import load_vocabulary
 
         vocabulary = load_vocabulary(vocabulary_file)
+    from seal_cli.cli import OUTPUT_SUFFIXES
+    from seal_cli.fileio import Outputs
+
     searcher = make_policy(policy, particles)
-    if hasattr(searcher, "keep_clouds") and (rrd is not None or png is not None):
-        searcher.keep_clouds = True
-    agent, result = run_on_map(the_map, text, library, searcher, rng=np.random.default_rng(seed), holding=holding,
-                               done=done or (), vocabulary=vocabulary,
-                               budget=Budget(steps=max_steps, metres=max_metres),
-                               observers=[] if as_json else [_narrate])
-    if rrd is not None:
-        from seal_cli.sim.record import write_rrd
+    searcher.keep_clouds = rrd is not None or png is not None
+    with Outputs({"--rrd": rrd, "--png": png}, [map_name, vocabulary_file, *(framelib or [])],
+                 suffixes=OUTPUT_SUFFIXES) as outputs:
+        agent, result = run_on_map(the_map, text, library, searcher, rng=np.random.default_rng(seed),
+                                   holding=holding, done=done or (), vocabulary=vocabulary,
+                                   budget=Budget(steps=max_steps, metres=max_metres),
+                                   observers=[] if as_json else [_narrate])
+        if rrd is not None:
+            from seal_cli.sim.record import write_rrd
 
-        write_rrd(rrd, agent)
-    if png is not None:
-        from seal_cli.sim.record import write_png
+            write_rrd(outputs["--rrd"], agent)
+        if png is not None:
+            from seal_cli.sim.record import write_png
 
-        write_png(png, agent, f"{the_map.name}: {text}")
+            write_png(outputs["--png"], agent, f"{the_map.name}: {text}")
     if as_json:
         emit_json({"map": the_map.name, "text": text, "policy": policy, "seed": seed,
                    "completed": result.completed, "reason": result.reason, "path_m": round(result.path_m, 3),
@@ -116,8 +121,8 @@ def tasks(
                                               show_default=False),
     layouts: int = typer.Option(10, "--layouts", min=1, help="With --suite map: object layouts drawn from the "
                                 "map's priors."),
-    policies: str = typer.Option("sefm,object_only,coverage,oracle", "--policies",
-                                 help="Comma-separated policies (uniform: SeFM without priors)."),
+    policies: str = typer.Option(",".join(DEFAULT_POLICIES), "--policies",
+                                 help="Comma-separated policies, of: " + ", ".join(POLICIES) + "."),
     jobs: int = typer.Option(0, "--jobs", min=0, help="Worker processes (0: one per core)."),
     seed: int = typer.Option(0, "--seed", min=0, help="Seed; each episode's generator is derived from it."),
     particles: int = typer.Option(200, "--particles", min=1, help="Particles per object and per frame."),
@@ -142,12 +147,15 @@ def tasks(
     names = [p.strip() for p in policies.split(",") if p.strip()]
     if not names:
         raise SealError("--policies names no policy")
-    from seal_cli.sim.policies.baselines import make_policy
+    unknown = [name for name in names if name not in POLICIES]
+    if unknown:
+        raise SealError(f"--policies: unknown policy {unknown[0]!r}; known: {', '.join(POLICIES)}")
+    from seal_cli.cli import OUTPUT_SUFFIXES
+    from seal_cli.fileio import Outputs
 
-    for name in names:
-        make_policy(name)
+    outputs = Outputs({"--episodes": episodes}, [data, *(framelib or [])], suffixes=OUTPUT_SUFFIXES)
     outcomes: list[Outcome] = []
-    with Progress(TextColumn("episodes"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), console=err,
+    with Progress(TextColumn("episodes"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), console=err.console,
                   transient=True, disable=not err.is_terminal) as progress:
         bar = progress.add_task("episodes", total=None)
 
@@ -167,10 +175,10 @@ def tasks(
                              jobs=jobs or os.cpu_count() or 1, particles=particles, framelib=libs,
                              progress=advance)
         outcomes.extend(runs)
-    if episodes is not None:
-        from seal_cli.fileio import atomic_write_text
-
-        atomic_write_text(episodes, "".join(json.dumps(o.to_json()) + "\n" for o in outcomes))
+    with outputs:  # a failure above leaves no temporary: they are removed at exit
+        if episodes is not None:
+            outputs["--episodes"].write_text("".join(json.dumps(o.to_json()) + "\n" for o in outcomes),
+                                             encoding="utf-8")
     report = summarise(outcomes, names)
     if suite == "map":
         report.update({"suite": suite, "map": map_name, "layouts": layouts, "seed": seed})
@@ -183,6 +191,8 @@ def tasks(
 
 
 def _table(report: dict[str, Any], names: list[str]) -> None:
+    from rich.table import Table
+
     if report["suite"] == "map":
         title = f"map {report['map']}, {report['layouts']} layouts: success rate / mean path (m)"
     else:
@@ -231,6 +241,8 @@ def e2e(
 ) -> None:
     """Plain commands on the apartment and the AWS house: how many ground to the expected plan, how many
     runs end as they must."""
+    from rich.table import Table
+
     from seal_cli.bench.e2e import MAPS, load_cases, run_cases, summarise
     from seal_cli.errors import SealError
 

@@ -18,18 +18,13 @@ from __future__ import annotations
 
 import difflib
 from collections.abc import Iterable, Iterator, Sequence
-from dataclasses import dataclass, field
-from pathlib import Path
 
-import yaml
-
-from seal_cli.errors import SealError, Where
-from seal_cli.fileio import LOADER
+from seal_cli.errors import SealError
 from seal_cli.frames.actions import PRIMITIVES
 from seal_cli.frames.model import Fact, Frame
 from seal_cli.frames.taxonomy import Synonyms, Taxonomy, class_key
 
-__all__ = ["Report", "check_library", "is_map_file", "validate_paths"]
+__all__ = ["check_library"]
 
 
 def check_library(frames: Sequence[Frame], taxonomy: Taxonomy) -> list[SealError]:
@@ -55,7 +50,7 @@ def _duplicates(frames: Sequence[Frame]) -> Iterator[SealError]:
 
 
 def _suggest(word: str, choices: Iterable[str]) -> str:
-    close = difflib.get_close_matches(word, sorted(choices), n=1)
+    close = difflib.get_close_matches(word, sorted(set(choices) - {word}), n=1)
     return f" (did you mean {close[0]!r}?)" if close else ""
 
 
@@ -108,60 +103,141 @@ def _is_world(fact: Fact, taxonomy: Taxonomy) -> bool:
     return fact.predicate in taxonomy.world or (len(fact.args) == 1 and fact.predicate in taxonomy)
 
 
-def _achieves(frame: Frame, fact: Fact) -> bool:
-    return any(p.predicate == fact.predicate and p.negated == fact.negated and len(p.args) == len(fact.args)
-               for p in frame.postconditions)
-
-
 def _unachieved(frames: Sequence[Frame], taxonomy: Taxonomy) -> Iterator[SealError]:
+    achieved = {_key(p) for f in frames for p in f.postconditions}
+    produced = sorted({p.predicate for f in frames for p in f.postconditions if not p.negated})
     for frame in frames:
         for fact in frame.preconditions:
-            if not _is_world(fact, taxonomy) and not any(_achieves(other, fact) for other in frames):
-                produced = {p.predicate for f in frames for p in f.postconditions if not p.negated}
+            if not _is_world(fact, taxonomy) and _key(fact) not in achieved:
                 yield SealError(f"precondition {fact} of {frame.name} is achieved by no frame's postcondition "
-                                f"and is not a world fact{_suggest(fact.predicate, produced)}; "
+                                f"and is not a world fact{_near(fact, achieved, produced)}; "
                                 "declare it under 'world:' if the world or robot provides it", fact.where)
 
 
+def _near(fact: Fact, achieved: set[tuple[str, bool, int]], produced: Sequence[str]) -> str:
+    """What a frame does achieve of this predicate (another sign or number of arguments), else a
+    close name."""
+    forms = sorted((negated, arity) for name, negated, arity in achieved if name == fact.predicate)
+    if not forms:
+        return _suggest(fact.predicate, produced)
+    said = " or ".join(f"{'not ' if negated else ''}{fact.predicate} with {arity} argument{'s' * (arity != 1)}"
+                       for negated, arity in forms)
+    return f" (frames achieve only {said})"
+
+
+def _key(fact: Fact) -> tuple[str, bool, int]:
+    """What achieving a fact takes: a postcondition of its predicate, sign and arity."""
+    return (fact.predicate, fact.negated, len(fact.args))
+
+
 def _cycles(frames: Sequence[Frame], taxonomy: Taxonomy) -> Iterator[SealError]:
-    """Frames that can never run because what they need is only given by frames that need them."""
-    needs = {f.name: [fact for fact in f.preconditions if not _is_world(fact, taxonomy)] for f in frames}
+    """Frames that can never run because what they need is only given by frames that need them.
+
+    Linear in the size of the library: which frames can run is found by counting unmet needs (as
+    Horn clauses are solved), and the cycles among the rest are the strongly connected components
+    of the graph frame → need → achiever (Tarjan)."""
     unique = {f.name: f for f in frames}
-    runnable: set[str] = set()
-    changed = True
-    while changed:
-        changed = False
-        for name in unique:
-            if name not in runnable and all(any(_achieves(unique[o], fact) for o in runnable)
-                                            for fact in needs[name]):
-                runnable.add(name)
-                changed = True
-    stuck = [name for name in unique if name not in runnable
-             and all(any(_achieves(o, fact) for o in frames) for fact in needs[name])]
-    reported: set[frozenset[str]] = set()
-    for start in stuck:
-        path = _find_cycle(start, unique, needs, set(stuck))
-        if path and frozenset(path) not in reported:
-            reported.add(frozenset(path))
+    needs = {name: {_key(fact) for fact in f.preconditions if not _is_world(fact, taxonomy)}
+             for name, f in unique.items()}
+    achievers: dict[tuple[str, bool, int], list[str]] = {}
+    for name, frame in unique.items():
+        for key in dict.fromkeys(_key(p) for p in frame.postconditions):
+            achievers.setdefault(key, []).append(name)
+    runnable = _runnable(unique, needs)
+    stuck = [name for name in unique if name not in runnable and all(key in achievers for key in needs[name])]
+    stuck_set = set(stuck)
+    edges = {name: [other for key in sorted(needs[name]) for other in achievers[key] if other in stuck_set]
+             for name in stuck}
+    for component in _components(stuck, edges):
+        path = _shortest_cycle(component, edges)
+        if path:
             chain = " → ".join(path + [path[0]])
             yield SealError(f"precondition cycle: {chain}; none of these frames can ever run, because each needs "
                             "what only another one in the cycle achieves", unique[path[0]].where)
 
 
-def _find_cycle(start: str, frames: dict[str, Frame], needs: dict[str, list[Fact]], stuck: set[str]
-                ) -> list[str] | None:
-    """A path of stuck frames from ``start`` back to ``start``, each achieving a need of the one before."""
-    stack: list[tuple[str, list[str]]] = [(start, [start])]
-    visited: set[str] = set()
-    while stack:
-        name, path = stack.pop()
-        for fact in needs[name]:
-            for other in sorted(n for n in stuck if _achieves(frames[n], fact)):
+def _runnable(frames: dict[str, Frame], needs: dict[str, set[tuple[str, bool, int]]]) -> set[str]:
+    """The frames that can run from the world facts alone or after other runnable frames."""
+    unmet = {name: len(keys) for name, keys in needs.items()}
+    waiting: dict[tuple[str, bool, int], list[str]] = {}
+    for name, keys in needs.items():
+        for key in keys:
+            waiting.setdefault(key, []).append(name)
+    ready = [name for name, count in unmet.items() if count == 0]
+    runnable: set[str] = set(ready)
+    achieved: set[tuple[str, bool, int]] = set()
+    while ready:
+        for key in {_key(p) for p in frames[ready.pop()].postconditions} - achieved:
+            achieved.add(key)
+            for other in waiting.get(key, ()):
+                unmet[other] -= 1
+                if unmet[other] == 0:
+                    runnable.add(other)
+                    ready.append(other)
+    return runnable
+
+
+def _components(nodes: list[str], edges: dict[str, list[str]]) -> list[list[str]]:
+    """Tarjan's strongly connected components with a cycle (more than one node, or a self-loop),
+    each in ``nodes`` order; iterative, so a 10,000-frame chain needs no deep recursion."""
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    on_stack: set[str] = set()
+    found: list[list[str]] = []
+    order = {n: k for k, n in enumerate(nodes)}
+    for root in nodes:
+        if root in index:
+            continue
+        work = [(root, 0)]
+        while work:
+            node, i = work.pop()
+            if i == 0:
+                index[node] = low[node] = len(index)
+                stack.append(node)
+                on_stack.add(node)
+            if i < len(edges[node]):
+                work.append((node, i + 1))
+                other = edges[node][i]
+                if other not in index:
+                    work.append((other, 0))
+                elif other in on_stack:
+                    low[node] = min(low[node], index[other])
+                continue
+            if low[node] == index[node]:
+                members = []
+                while True:
+                    member = stack.pop()
+                    on_stack.discard(member)
+                    members.append(member)
+                    if member == node:
+                        break
+                if len(members) > 1 or node in edges[node]:
+                    found.append(sorted(members, key=order.__getitem__))
+            if work:
+                parent = work[-1][0]
+                low[parent] = min(low[parent], low[node])
+    return found
+
+
+def _shortest_cycle(component: list[str], edges: dict[str, list[str]]) -> list[str] | None:
+    """The shortest path from the component's first frame back to it, inside the component."""
+    start, inside = component[0], set(component)
+    previous: dict[str, str] = {}
+    frontier = [start]
+    while frontier:
+        following = []
+        for name in frontier:
+            for other in edges[name]:
                 if other == start:
-                    return path
-                if other not in visited:
-                    visited.add(other)
-                    stack.append((other, path + [other]))
+                    path = [name]
+                    while path[-1] != start:
+                        path.append(previous[path[-1]])
+                    return path[::-1]
+                if other in inside and other not in previous:
+                    previous[other] = name
+                    following.append(other)
+        frontier = following
     return None
 
 
@@ -197,76 +273,3 @@ def _synonym_clashes(taxonomy: Taxonomy) -> Iterator[SealError]:
 
 
 # -- checking files as a user hands them over ---------------------------------------------------
-MAP_KEYS = frozenset({"image", "resolution", "origin", "rooms", "bounds", "places", "priors", "objects", "robot",
-                      "sensor", "negate", "occupied_thresh", "free_thresh"})
-
-
-def is_map_file(path: Path) -> bool:
-    """Whether a YAML file is a map (top-level map keys and no frame keys) rather than frames."""
-    if path.suffix not in (".yaml", ".yml"):
-        return False
-    try:
-        node = yaml.compose(path.read_text(encoding="utf-8"), Loader=LOADER)
-    except (yaml.YAMLError, OSError, UnicodeDecodeError):
-        return False
-    if not isinstance(node, yaml.MappingNode):
-        return False
-    keys = {k.value for k, _ in node.value if isinstance(k, yaml.ScalarNode)}
-    return bool(keys & MAP_KEYS) and not keys & {"frame", "frames", "categories", "world", "synonyms"}
-
-
-@dataclass
-class Report:
-    """What ``seal validate`` found."""
-
-    files: list[Path] = field(default_factory=list)
-    frames: int = 0
-    categories: int = 0
-    maps: int = 0
-    problems: list[SealError] = field(default_factory=list)
-
-    def summary(self) -> str:
-        found = f"{self.frames} frames, {self.categories} categories, {self.maps} maps in {len(self.files)} files"
-        if not self.problems:
-            return f"ok: {found}"
-        count = len(self.problems)
-        return f"{count} problem{'s' if count != 1 else ''} in {found}"
-
-    def to_json(self) -> dict[str, object]:
-        return {"ok": not self.problems, "files": [str(f) for f in self.files], "frames": self.frames,
-                "categories": self.categories, "maps": self.maps,
-                "problems": [p.to_json() for p in self.problems]}
-
-
-def validate_paths(paths: Iterable[str | Path], with_stdlib: bool = False) -> Report:
-    """Check frame files, folders and maps; every problem, sorted by file, line and column."""
-    from seal_cli.frames.library import frame_files, read_library
-
-    files, problems = frame_files(paths)
-    maps = [f for f in files if is_map_file(f)]
-    frame_paths = [f for f in files if f not in maps]
-    report = Report(files=files, maps=len(maps), problems=problems)
-    if frame_paths:
-        extra: list[Path] = []
-        if with_stdlib:
-            from seal_cli.resources import framelib_dir
-
-            extra = [p for p in frame_files([framelib_dir()])[0] if p.resolve() not in
-                     {f.resolve() for f in frame_paths}]
-        library, found = read_library(extra + frame_paths)
-        report.frames = len(library) - (len(read_library(extra)[0]) if extra else 0)
-        report.categories = len(library.taxonomy.categories)
-        report.problems.extend(found)
-    for path in maps:
-        report.problems.extend(_check_map(path))
-    report.problems.sort(key=lambda p: (p.file or "", p.line or 0, p.column or 0))
-    return report
-
-
-def _check_map(path: Path) -> list[SealError]:
-    try:
-        from seal_cli.maps.model import check_map_file
-    except ImportError:
-        return [SealError("this file looks like a map, and this version of seal cannot check maps yet",
-                          Where(str(path)))]
-    return list(check_map_file(path))

@@ -47,7 +47,7 @@ BE_WORDS = _closed_class("is are was were be am 's been being")
 SEPARATOR_WORDS = frozenset(["and", "then", ",", ";", ":", "after that", "afterwards", "next", "finally",
                              "and then", "and after that", "after", "also", "once done", "when done",
                              "and finally", "before", "while", "or", "as well as", "plus", "followed by",
-                             "as you", "while you"])
+                             "as you", "while you", "so you can", "so that you can"])
 AND_WORDS = frozenset(["and", "as well as", "plus"])
 """Words that join like "and" (clauses or noun phrases)."""
 POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "will you", "would you mind",
@@ -60,7 +60,8 @@ POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "wi
                     "be kind enough to", "be good enough to", "be so good as to", "would you be so good as to",
                     "would you be good enough to", "could you be so kind as to", "do me a favor and",
                     "do me a favour and", "don't forget to", "do not forget to", "help me", "help me to", "help us",
-                    "make sure you", "see that you", "hi", "hello", "excuse me", "maybe", "perhaps", "oh", "ah",
+                    "make sure you", "see that you", "hi", "hello", "hi there", "hello there", "hey there",
+                    "excuse me", "maybe", "perhaps", "oh", "ah",
                     "ahh", "aw", "ugh", "urgh", "argh", "oops", "whoops", "sorry", "well", "gosh", "so"])
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
@@ -122,9 +123,10 @@ BASE_FORM_SUBJECTS = frozenset(["i", "we", "they"])
 """Subjects whose verb has its base form ("we *open* at six"): after them, any verb is finite."""
 END_MARKS = frozenset(".!?")
 HERE_WORDS = frozenset(["here", "there", "over here", "over there", "upstairs", "downstairs", "indoors", "outdoors",
-                        "nearby", "elsewhere", "everywhere", "somewhere", "anywhere"])
+                        "nearby", "elsewhere", "everywhere", "somewhere", "anywhere", "in there", "in here"])
 """Words that name a place by themselves (deictic and directional adverbs): "come *here*", "bring it
-*upstairs*"."""
+*upstairs*". "in there" and "in here" are read as "there" and "here" ("count the cans *in there*": the
+place named before)."""
 TIME_WORDS = frozenset(["now", "later", "soon", "today", "tonight", "tomorrow", "again", "too", "first",
                         "right away", "right now", "at once", "as well", "as soon as possible", "asap", "meanwhile",
                         "in a minute", "in a moment", "for now", "this morning", "this evening", "tonight"])
@@ -161,3 +163,26 @@ VAGUE_NUMBERS = frozenset(["one", "couple", "several", "few", "many"])
 """Number words that count but never label ("the red *one*", "a *few*")."""
 QUANTIFIERS = frozenset(["one", "two", "three", "four", "both", "all", "some", "each", "any", "none", "most",
                           "either", "neither", "several", "many", "few"])
+
+# ---------------------------------------------------------------------------------------------
+# Constructions that say a request without its verb, and what each means as a plain command
+# (the paraphrase's verb must be a lexical unit of the library, or the construction is not read)
+
+QUESTION_WORDS = frozenset(["what", "who", "which", "whose", "whom", "what's", "who's"])
+"""Words that start a question the robot answers by saying something ("*What's* the biggest thing on the
+shelf?", "*Who* is in the kitchen?"): a bare question means "tell me ..." (``QUESTION_MEANS``)."""
+QUESTION_MEANS = "tell"
+WHERE_QUESTIONS = frozenset(["where is", "where are", "where 's", "where's", "where're", "is there", "are there",
+                             "is there any", "are there any"])
+"""Questions about where a thing is, or whether there is one ("*where is* the cup?", "*is there* a cup in the
+kitchen?"): they mean "find ..." (``WHERE_MEANS``)."""
+WHERE_MEANS = "find"
+REQUESTS = frozenset(["i'd like", "i would like", "i'd love", "i would love", "i'd like to have",
+                      "i would like to have", "can i have", "could i have", "may i have", "can i get", "could i get",
+                      "can i please have", "could i please have", "may i please have", "i need", "i want",
+                      "i'll have", "i will have", "i'll take", "can we have", "could we have", "we need", "we'd like"])
+"""A request for a thing said as the speaker's wish ("*I'd like* the red mug", "*Can I have* the big plate",
+"*I need* a pen"): it means "bring me ..." (``REQUEST_MEANS``, with the speaker as recipient)."""
+REQUEST_MEANS = "bring"
+LET_KNOW = ("let", "know")
+""""*let* me *know* ...", "*let* Amara *know* that ...": "tell me ...", "tell Amara that ..." (``QUESTION_MEANS``)."""

@@ -114,6 +114,13 @@ def gerund_lemma(word: str) -> str | None:
 
 
 @lru_cache(maxsize=65536)
+def in_dictionary(word: str) -> bool:
+    """Whether lemminflect lists the word at all (as a noun, verb, adjective or adverb): a person's
+    name mostly is not ("jamie", "priya"; "robin" is a bird too)."""
+    return bool(_WORDS.entries(word.lower()))
+
+
+@lru_cache(maxsize=65536)
 def is_adjective(word: str) -> bool:
     """Whether lemminflect lists the word as an adjective ("hot", "clean")."""
     return any(entry[0] == "adj" for entry in _WORDS.entries(word.lower()))

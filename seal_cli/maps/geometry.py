@@ -25,11 +25,13 @@ from functools import cached_property
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["FREE", "OCCUPIED", "UNKNOWN", "OccupancyGrid", "as_points", "box_polygon", "cast_rays",
+__all__ = ["FREE", "OCCUPIED", "OUTSIDE", "UNKNOWN", "OccupancyGrid", "as_points", "box_polygon", "cast_rays",
            "line_of_sight", "overlap_area", "point_in_polygon", "polygon_area", "segment_cells",
            "segments_intersect", "self_intersections"]
 
 FREE, OCCUPIED, UNKNOWN = 0, 100, -1
+OUTSIDE = "_outside"
+"""The name reported for points in no room (no polygon of a map's rooms)."""
 _CHUNK = 1 << 21
 """Largest number of (point × edge) or (segment × crossing) entries handled in one numpy step."""
 

@@ -30,7 +30,6 @@ import math
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import InitVar, dataclass, field, replace
 from functools import cached_property
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -39,6 +38,7 @@ from numpy.typing import ArrayLike, NDArray
 from seal_cli.errors import SealError, SealErrors, Where
 from seal_cli.frames.taxonomy import check_class_name, class_key
 from seal_cli.maps.geometry import (
+    OUTSIDE,
     OccupancyGrid,
     as_points,
     box_polygon,
@@ -53,14 +53,11 @@ if TYPE_CHECKING:
     from seal_cli.maps.priors import Prior
 
 __all__ = ["OUTSIDE", "SPEAKER", "Map", "MapWarning", "ObjectTruth", "Person", "Place", "Robot", "Room", "Sensor",
-           "check_map_file",
-           "load_map", "prior_density", "prior_sampler", "sample_prior"]
-
-OUTSIDE = "_outside"
+           "prior_density", "prior_sampler", "sample_prior"]
 
 SPEAKER = "me"
 """The name the person who gives the command goes by ("me", "I", "us")."""
-"""The name reported for points in no room."""
+
 OVERLAP_TOLERANCE = 0.01
 """Square metres two rooms may share before they count as overlapping (drawing slack)."""
 MAX_IMPLICIT_CELLS = 4_000_000
@@ -672,6 +669,22 @@ class Map:
     def _prior_cache(self) -> dict[str, Prior]:
         return {}
 
+    def target_cells(self, target: str) -> NDArray[np.intp]:
+        """The free cells a prior target (a room, a place or a place class) spreads its mass over,
+        sorted; computed once per target and shared by every class's prior."""
+        from seal_cli.maps.priors import target_cells
+
+        cache = self._target_cells_cache
+        if target not in cache:
+            cells = target_cells(self, target)
+            cells.setflags(write=False)
+            cache[target] = cells
+        return cache[target]
+
+    @cached_property
+    def _target_cells_cache(self) -> dict[str, NDArray[np.intp]]:
+        return {}
+
     def prior_target(self, name: str) -> tuple[str, tuple[int, ...]] | None:
         """What a prior's key names: ``("room", (index,))``, ``("place", indices)`` for a place name
         or ``("class", indices)`` for every place of a class; None if nothing. Rooms come first."""
@@ -855,22 +868,7 @@ def _people(m: Map) -> Iterator[SealError]:
         yield MapWarning(f"speaker at {_pt(m.speaker)} is outside the map's bounds", m.where("speaker", "at"))
 
 
-# -- files and priors (implemented beside, re-exported here) --------------------------------------
-def load_map(path: str | Path) -> Map:
-    """Read a map file (see :mod:`seal_cli.maps.formats.map_server`); a broken map raises SealError(s)
-    with positions."""
-    from seal_cli.maps.formats.map_server import load_map as load
-
-    return load(path)
-
-
-def check_map_file(path: str | Path) -> list[SealError]:
-    """Every problem of a map file, located; empty if the map is good. Never raises."""
-    from seal_cli.maps.formats.map_server import check_map_file as check
-
-    return check(path)
-
-
+# -- priors (implemented beside, in seal_cli.maps.priors) ----------------------------------------
 def prior_sampler(m: Map, cls: str) -> Prior:
     """The prior of ``cls`` on map ``m`` (``.sample(n, rng)``, ``.density(points)``)."""
     return m.prior(cls)

@@ -13,23 +13,25 @@ within the place's ``reach`` (1 m by default) and in its line of sight — where
 to take something from it, not behind a wall — and, if there is none, the free cell nearest to
 it. A class without a prior is uniform.
 
-Everything is resolved to the map's free cells: :attr:`Prior.weights` is the probability of
-each free cell, sampling draws a cell by weight and a point uniformly inside it, and
-:meth:`Prior.density` is the cell's weight divided by its area — a density in 1/m² that
-integrates to 1 over free space and is 0 elsewhere.
+A prior is stored as what it really is: a mass per target, each target a set of free cells (shared by
+every class that names it and cached on the map, :meth:`Map.target_cells <seal_cli.maps.model.Map.target_cells>`),
+plus the mass spread over all free space. Nothing dense per class is kept: :meth:`Prior.cell_weights`
+gives the probability of any free cells on demand, :meth:`Prior.sample` draws a target by mass, a cell
+uniformly in it and a point uniformly in the cell, and :meth:`Prior.density` is a cell's weight divided by
+its area — a density in 1/m² that integrates to 1 over free space and is 0 elsewhere. Memory is one index
+array per target of the map, whatever the number of classes.
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from functools import cached_property
 from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from seal_cli.maps.geometry import as_points
+from seal_cli.maps.geometry import OUTSIDE, as_points
 
 if TYPE_CHECKING:
     from seal_cli.maps.model import Map
@@ -42,22 +44,52 @@ FLOOR = 0.02
 
 @dataclass(frozen=True, eq=False)
 class Prior:
-    """The prior of one class on one map, as a probability per free cell."""
+    """The prior of one class on one map: masses on sets of free cells, and a uniform rest."""
 
     map: Map = field(repr=False)
     cls: str
-    weights: NDArray[np.float64] = field(repr=False)
+    components: tuple[tuple[NDArray[np.intp], float], ...] = field(repr=False)
+    """``(sorted free-cell indices, probability)`` per target with mass; the probabilities and
+    :attr:`uniform` sum to 1."""
+    uniform: float
+    """The probability spread uniformly over all free cells (the rest and the floor)."""
     masses: Mapping[str, float] = field(default_factory=dict)
     """The resolved masses per target (``"_rest"`` for what is spread over all free space)."""
 
-    @cached_property
-    def _cdf(self) -> NDArray[np.float64]:
-        return np.cumsum(self.weights)
+    @property
+    def free_cells(self) -> int:
+        return len(self.map.free_centres)
+
+    def cell_weights(self, cells: ArrayLike) -> NDArray[np.float64]:
+        """The probability of each given free cell (indices into the map's ``free_centres``)."""
+        cells = np.asarray(cells, dtype=np.intp)
+        out = np.full(len(cells), self.uniform / max(self.free_cells, 1))
+        for members, mass in self.components:
+            at = np.searchsorted(members, cells)
+            hit = members[np.minimum(at, len(members) - 1)] == cells
+            out[hit] += mass / len(members)
+        return out
+
+    @property
+    def weights(self) -> NDArray[np.float64]:
+        """The probability of every free cell, as a dense array (computed, not kept: for small maps and tests)."""
+        return self.cell_weights(np.arange(self.free_cells))
 
     def sample(self, n: int, rng: np.random.Generator) -> NDArray[np.float64]:
-        """``n`` points drawn from the prior, shape (n, 2): a cell by weight, a point uniform in it."""
-        cdf = self._cdf
-        cells = np.minimum(np.searchsorted(cdf, rng.random(n) * cdf[-1], side="right"), len(cdf) - 1)
+        """``n`` points drawn from the prior, shape (n, 2): a target by mass, a cell uniform in it, a point
+        uniform in the cell. One uniform number per point picks both the target (by the cumulative masses)
+        and the cell within it (by where the number falls inside the target's share)."""
+        blocks = [(members, mass) for members, mass in self.components]
+        if self.free_cells:
+            blocks.append((np.arange(self.free_cells), self.uniform))
+        edges = np.cumsum([0.0] + [mass for _, mass in blocks])
+        u = rng.random(n) * edges[-1]
+        which = np.clip(np.searchsorted(edges, u, side="right") - 1, 0, len(blocks) - 1)
+        cells = np.empty(n, dtype=np.intp)
+        for k, (members, mass) in enumerate(blocks):
+            chosen = which == k
+            at = ((u[chosen] - edges[k]) / mass * len(members)).astype(np.intp)
+            cells[chosen] = members[np.clip(at, 0, len(members) - 1)]
         return self.map.jitter_in_cells(rng, cells)
 
     def density(self, points: ArrayLike) -> NDArray[np.float64]:
@@ -65,21 +97,23 @@ class Prior:
         index = self.map.free_index(as_points(points))
         out = np.zeros(len(index))
         on = index >= 0
-        out[on] = self.weights[index[on]] / self.map.cell_area
+        out[on] = self.cell_weights(index[on]) / self.map.cell_area
         return out
 
     def room_masses(self) -> dict[str, float]:
-        """The prior's mass per room name (and ``"_outside"``), exactly, from the cell weights."""
-        from seal_cli.maps.model import OUTSIDE
-
-        sums = np.bincount(self.map.free_cell_room + 1, weights=self.weights, minlength=len(self.map.rooms) + 1)
+        """The prior's mass per room name (and ``"_outside"``), exactly."""
+        rooms = self.map.free_cell_room + 1
+        size = len(self.map.rooms) + 1
+        sums = np.bincount(rooms, minlength=size) * (self.uniform / max(self.free_cells, 1))
+        for members, mass in self.components:
+            sums = sums + np.bincount(rooms[members], minlength=size) * (mass / len(members))
         masses = {name: float(sums[i + 1]) for i, name in enumerate(self.map.room_names)}
         masses[OUTSIDE] = float(sums[0])
         return masses
 
 
 def target_cells(m: Map, target: str) -> NDArray[np.intp]:
-    """The free cells (indices into ``m.free_centres``) a prior target spreads its mass over."""
+    """The free cells (sorted indices into ``m.free_centres``) a prior target spreads its mass over."""
     resolved = m.prior_target(target)
     if resolved is None:
         return np.zeros(0, dtype=np.intp)
@@ -101,21 +135,17 @@ def target_cells(m: Map, target: str) -> NDArray[np.intp]:
 
 def build_prior(m: Map, cls: str, floor: float = FLOOR) -> Prior:
     """The prior of ``cls`` (a class key) on ``m``; see the module docstring."""
-    count = len(m.free_centres)
-    uniform = np.full(count, 1.0 / count) if count else np.zeros(0)
-    mixture = np.zeros(count)
+    parts: dict[str, tuple[NDArray[np.intp], float]] = {}
     masses: dict[str, float] = {}
     for target, mass in m.priors.get(cls, {}).items():
-        cells = target_cells(m, target)
+        cells = m.target_cells(target)
         if mass <= 0 or len(cells) == 0:
             continue
-        mixture[cells] += mass / len(cells)
-        masses[target] = masses.get(target, 0.0) + mass
+        parts[target] = (cells, mass)
+        masses[target] = mass
     rest = max(0.0, 1.0 - sum(masses.values()))
     masses["_rest"] = rest
-    weights = (1 - floor) * (mixture + rest * uniform) + floor * uniform
-    total = weights.sum()
-    if total > 0:
-        weights = weights / total
-    weights.setflags(write=False)
-    return Prior(m, cls, weights, masses)
+    total = (1 - floor) * (sum(masses.values())) + floor if len(m.free_centres) else 1.0
+    components = tuple((cells, (1 - floor) * mass / total) for cells, mass in parts.values())
+    uniform = ((1 - floor) * rest + floor) / total
+    return Prior(m, cls, components, uniform, masses)

@@ -54,9 +54,9 @@ from seal_cli.frames.taxonomy import Taxonomy
 from seal_cli.planning.state import State
 
 if TYPE_CHECKING:
-    from seal_cli.maps.model import Map
+    pass
 
-__all__ = ["MAX_NODES", "Plan", "Step", "frames_to_localise", "plan", "plan_text"]
+__all__ = ["MAX_NODES", "Plan", "Step", "explain", "plan"]
 
 MAX_NODES = 20_000
 """Default bound on the nodes the search expands before it gives up."""
@@ -395,51 +395,7 @@ def plan(commanded: Sequence[Binding], library: Library, state: State, *, max_no
     return Plan(steps, state, _goal(steps, states), text, expanded)
 
 
-def plan_text(text: str, library: Library, *, holding: str | None = None, done: Sequence[str] = (),
-              map: Map | None = None, vocabulary: Any = None, max_nodes: int = MAX_NODES) -> Plan:
-    """Parse a command, ground it in the robot's state and the map (:mod:`seal_cli.planning.problem`), plan it."""
-    from dataclasses import replace
-
-    from seal_cli.planning.problem import problem_of_text
-
-    problem = problem_of_text(text, library, holding=holding, done=done, map=map, vocabulary=vocabulary)
-    found = plan(problem.commanded, library, problem.state, max_nodes=max_nodes, text=text)
-    return replace(found, warnings=problem.warnings) if problem.warnings else found
-
-
 def explain(plan: Plan) -> Iterator[str]:
     """One line per step, numbered, as ``seal plan`` prints it without ``--json``."""
     for i, step in enumerate(plan.steps, 1):
         yield f"{i}. {step}" + (f"  ← {step.because}" if step.because else "")
-
-
-def frames_to_localise(tasks: Sequence[str], library: Library, map: Map, *, holding: str | None = None,
-                       done: Sequence[str] = ()) -> tuple[list[Binding], State]:
-    """Every distinct grounded frame of the tasks' plans, in order, and the state they start from:
-    what ``seal localize`` keeps beliefs over.
-
-    Plans are made from what the robot knows (:meth:`Map.known <seal_cli.maps.model.Map.known>`): never
-    from the map's ground-truth objects, which only simulate what it sees. Without a task, the
-    state is the one the map, the hand and the commands already done leave.
-    """
-    from seal_cli.language.grounding import vocabulary_of_map
-    from seal_cli.planning.problem import Things, problem_of_text
-
-    vocabulary = vocabulary_of_map(map)
-    known = map.known()
-    bindings: list[Binding] = []
-    state: State | None = None
-    for text in tasks:
-        found = plan_text(text, library, holding=holding, done=tuple(done), map=known, vocabulary=vocabulary)
-        state = state or found.initial
-        bindings.extend(b for b in found.bindings if b not in bindings)
-    if state is not None:
-        return bindings, state
-    if not done:
-        return bindings, Things(library.taxonomy, known).state(holding)
-    problem = problem_of_text(done[-1], library, holding=holding, done=tuple(done[:-1]), map=known,
-                              vocabulary=vocabulary)
-    state = problem.state
-    for binding in problem.commanded:
-        state = state.apply(binding)
-    return bindings, state

@@ -35,6 +35,7 @@ Then the frames of each ``done`` command, grounded the same way, are applied in 
 from __future__ import annotations
 
 import itertools
+import math
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
@@ -56,7 +57,8 @@ if TYPE_CHECKING:
     from seal_cli.language.parser import Parse, Phrase
     from seal_cli.maps.model import Map
 
-__all__ = ["Problem", "Things", "build_problem", "commanded_frames", "instance_names", "problem_of_text"]
+__all__ = ["MAX_COMMANDED", "MAX_COUNT", "Problem", "Things", "build_problem", "commanded_frames", "instance_names",
+           "problem_of_text"]
 
 INDEFINITE = frozenset({"something", "anything", "everything", "nothing"})
 """Pronouns that name a thing of their own rather than an antecedent."""
@@ -98,6 +100,8 @@ class Things:
         self.robot_holding: str | None = None
         self.people: set[str] = set()
         """The people the command names."""
+        self.synonyms: Mapping[str, tuple[str, ...]] = {}
+        """More names of classes (a vocabulary file's), by class key."""
         if map is not None:
             self._read_map(map)
 
@@ -172,6 +176,13 @@ class Things:
         return State.of(facts | robot_facts(name), self.taxonomy, self.closable, self.classes)
 
 
+MAX_COUNT = 100
+"""The most things one phrase may ask for ("put 100 apples in the fridge"); more is refused."""
+
+MAX_COMMANDED = 200
+"""The most grounded frames one command may command (counts and conjunctions multiply)."""
+
+
 def _located(message: str, phrase: Phrase | None, text: str) -> SealError:
     """An error about a phrase, with a caret under it when its place in the text is known."""
     if phrase is None or phrase.span is None:
@@ -205,9 +216,25 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
     if things.names is not None and (on_map := _on_map(phrase, things, text, category)) is not None:
         return on_map
     value = phrase.cls or phrase.head
+    if things.names is not None and phrase.cls and not _names(phrase, phrase.cls, things):
+        value = phrase.head     # on a map, a class the words do not name is a guess: the thing said is sought
     if not class_key(value):
         raise _located(f"{phrase.text!r} names no thing", phrase, text)
-    return things.instances(value, _count(phrase, value))
+    count = _count(phrase, value)
+    if count > MAX_COUNT:
+        raise _located(f"{phrase.text!r} asks for {count:,} things; seal plans for at most {MAX_COUNT} "
+                       "of a kind", phrase, text)
+    return things.instances(value, count)
+
+
+def _names(phrase: Phrase, cls: str, things: Things) -> bool:
+    """Whether the phrase's words name the class: its own words or one of its synonyms' ("the couch": a
+    sofa), rather than a class a learned table guesses people meant ("the bowl": a cup)."""
+    from seal_cli.language.lexicon import noun_lemma
+
+    said = {noun_lemma(w) for w in class_words(phrase.text or phrase.head)} | {phrase.head}
+    names = [cls, *things.taxonomy.names.get(class_key(cls), ()), *things.synonyms.get(class_key(cls), ())]
+    return any(set(map(noun_lemma, class_words(n))) & said for n in names)
 
 
 def _on_map(phrase: Phrase, things: Things, text: str, category: str) -> tuple[str, ...] | None:
@@ -307,15 +334,22 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         _check_types(frame, values, evoked.elements, things, parse.text)
         earlier.append(values)
         roles = [r for r in frame.roles if r in values]
+        if len(bindings) + math.prod(len(values[r]) for r in roles) > MAX_COMMANDED:
+            raise SealError(f"the command asks for more than {MAX_COMMANDED} frames (counted and joined things "
+                            f"multiply: {evoked.frame} alone is {math.prod(len(values[r]) for r in roles):,}); "
+                            "split it into smaller commands")
         for combination in itertools.product(*(values[r] for r in roles)):
             bindings.append(frame.bind(dict(zip(roles, combination, strict=True))))
     return bindings
 
 
 def build_problem(parse: Parse, library: Library, *, holding: str | None = None, done: Iterable[Parse] = (),
-                  map: Map | None = None) -> Problem:
+                  map: Map | None = None, vocabulary: Any = None) -> Problem:
     """The commanded frames of a parse and the state they start from (see the module's docstring)."""
     things = Things(library.taxonomy, map)
+    if vocabulary is not None:      # the names a vocabulary gives its classes name them too
+        things.synonyms = {class_key(c): tuple(n) for c, n in zip(vocabulary.classes, vocabulary.synonyms,
+                                                                   strict=True)}
     for frame in library:
         for element in frame.elements:
             if element.default is not None:
@@ -366,4 +400,5 @@ def problem_of_text(text: str, library: Library, *, holding: str | None = None, 
     from seal_cli.planning.grounding import spoken
 
     parses = [parse_command(spoken(t), library, vocabulary) for t in (*done, text)]
-    return build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=map)
+    return build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=map,
+                         vocabulary=vocabulary if hasattr(vocabulary, "synonyms") else None)

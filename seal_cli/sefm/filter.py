@@ -26,6 +26,7 @@ update.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Protocol
@@ -33,6 +34,7 @@ from typing import Any, Protocol
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from seal_cli.errors import SealError
 from seal_cli.frames.model import Binding
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.model import Map
@@ -42,7 +44,8 @@ from seal_cli.sefm.modes import Summary, summarise
 from seal_cli.sefm.object_beliefs import ObjectBeliefs, ObjectModel, Region, Source, source_for
 from seal_cli.sefm.potentials import KernelSums, make_kernel_sums
 from seal_cli.sefm.relations import OTHER, held, relations, spatial_roles
-from seal_cli.sensing.sensor import VisibleRegion, as_pose, visible_region
+from seal_cli.sensing.model import RangeSensor, SensorModel
+from seal_cli.sensing.sensor import VisibleRegion, as_pose
 
 __all__ = ["Observer", "SeFM", "SeFMConfig", "Step", "frame_id"]
 
@@ -128,9 +131,11 @@ class SeFM:
 
     def __init__(self, m: Map, bindings: Sequence[Binding], state: State, rng: np.random.Generator,
                  config: SeFMConfig | None = None, observers: Sequence[Observer] = (),
-                 classes: Iterable[str] = ()) -> None:
-        """``classes``: object classes to believe in besides those the frames name."""
+                 classes: Iterable[str] = (), sensor: SensorModel | None = None) -> None:
+        """``classes``: object classes to believe in besides those the frames name; ``sensor``: what sees
+        (default: the map's sensor, its view cut by the map's walls)."""
         self.map = m
+        self.sensor: SensorModel = sensor or RangeSensor.on_map(m)
         self.bindings = tuple(bindings)
         self.state = state
         self.extra_classes = tuple(class_key(c) for c in classes)
@@ -142,7 +147,7 @@ class SeFM:
         self.sources = self._sources()
         P = self.config.particles
         self.objects = ObjectBeliefs.from_prior(m, self.sources, P, rng,
-                                                self.config.objects or ObjectModel.for_map(m))
+                                                self.config.objects or ObjectModel.for_sensor(self.sensor.spec))
         self.kernel: KernelSums = make_kernel_sums(self.config.kernel, len(self.sources) + len(self.bindings), P,
                                                    m.bounds, self.config.sigma, split=len(self.sources))
         self.kernel.set(range(len(self.sources)), self.objects.X, self.objects.W)
@@ -214,9 +219,9 @@ class SeFM:
     # -- one update -----------------------------------------------------------------------------
     def update(self, pose: ArrayLike, detections: Iterable[Any] = (), state: State | None = None) -> None:
         """One belief update from the robot's pose ``(x, y[, yaw])``, what it detected there, and its state."""
+        robot, seen = self._checked(pose, detections)
         if state is not None:
             self.state = state
-        robot, seen = as_pose(pose), _detections(detections)
         region = self._region(robot)
         self._observe(robot, region, seen)
         terms = self._relate()
@@ -226,6 +231,28 @@ class SeFM:
         record = Step(self.step, robot, seen, region)
         for observer in self.observers:
             observer.update(self, record)
+
+    def _checked(self, pose: ArrayLike, detections: Iterable[Any]
+                 ) -> tuple[tuple[float, float, float], tuple[tuple[str, tuple[float, float]], ...]]:
+        """The pose and detections, refused (a SealError) when not finite, off the map, or of a class
+        that neither the map nor the beliefs know: the filter never takes NaN or nonsense."""
+        try:
+            robot, seen = as_pose(pose), _detections(detections)
+        except (TypeError, ValueError, IndexError) as exc:
+            raise SealError(f"a pose is (x, y[, yaw]) and a detection (class, (x, y)): {exc}") from None
+        xmin, ymin, xmax, ymax = self.map.bounds
+        if not all(math.isfinite(v) for v in robot) or not (xmin <= robot[0] <= xmax and ymin <= robot[1] <= ymax):
+            raise SealError(f"pose {robot} is not a finite point inside map {self.map.name}'s bounds "
+                            f"[{xmin:g}, {ymin:g}, {xmax:g}, {ymax:g}]")
+        known = set(self.map.classes) | {source.key for source in self.sources}
+        for cls, (x, y) in seen:
+            if not (math.isfinite(x) and math.isfinite(y) and xmin <= x <= xmax and ymin <= y <= ymax):
+                raise SealError(f"a detection of {cls or '(no class)'} at ({x:g}, {y:g}) is not a finite point "
+                                f"inside map {self.map.name}'s bounds [{xmin:g}, {ymin:g}, {xmax:g}, {ymax:g}]")
+            if cls not in known:
+                raise SealError(f"a detection of {cls!r}: map {self.map.name} and the plan know no such class "
+                                f"(they know {', '.join(sorted(known)) or 'none'})")
+        return robot, seen
 
     def _observe(self, robot: tuple[float, float, float], region: VisibleRegion,
                  seen: tuple[tuple[str, tuple[float, float]], ...]) -> None:
@@ -251,10 +278,10 @@ class SeFM:
         back to where it was; the map does not change)."""
         region = self._regions.pop(pose, None)
         if region is None:
-            sensor = self.map.sensor
-            span = min(sensor.fov_deg, 360.0) * np.pi / 180
-            rays = max(16, int(np.ceil(span * sensor.range / self.config.ray_spacing)))
-            region = visible_region(self.map, pose, rays=rays)
+            spec = self.sensor.spec
+            span = min(spec.fov_deg, 360.0) * np.pi / 180
+            rays = max(16, int(np.ceil(span * spec.range / self.config.ray_spacing)))
+            region = self.sensor.region(pose, rays)
             if len(self._regions) >= REGIONS:
                 del self._regions[next(iter(self._regions))]
         self._regions[pose] = region  # most recently used last
@@ -265,15 +292,15 @@ class SeFM:
         detected there, or None to simulate it from the map's ground-truth objects), then ``steps``
         more where the last look was (the map's robot pose when there is none): the paper's 20
         updates at a fixed pose."""
+        from seal_cli.sensing.model import simulate_detections
         from seal_cli.sensing.observations import Observation
-        from seal_cli.sensing.sensor import simulate_detections
 
         last = looks[-1] if looks else Observation(self.map.robot.pose)
         for look in [*looks, *[last] * steps]:
             seen = look.detections
             if seen is None:
                 seen = tuple((d.cls, d.at) for d in simulate_detections(self.map, look.pose, self.open_places(),
-                                                                         self.rng))
+                                                                         self.rng, self.sensor))
             self.update(look.pose, seen)
 
     def close(self) -> None:
@@ -334,7 +361,9 @@ class SeFM:
 
     def frame_json(self, i: int) -> dict[str, Any]:
         binding = self.bindings[i]
-        return {"frame": binding.frame.name, "elements": _in_role_order(binding), **self.frame_summary(i).to_json()}
+        summary = self.frame_summary(i).to_json()
+        summary["ess"] = round(float(self.frames.ess()[i]), 1)  # of the last reweighting: the particles weigh 1/P now
+        return {"frame": binding.frame.name, "elements": _in_role_order(binding), **summary}
 
     def object_json(self, cls: str) -> dict[str, Any]:
         summary = self.object_summary(cls).to_json()

@@ -50,13 +50,12 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
-from functools import lru_cache
 
 import numpy as np
 from numpy.typing import NDArray
 
 from seal_cli.frames.taxonomy import class_key
-from seal_cli.maps.model import Map
+from seal_cli.maps.model import OUTSIDE, Map, Sensor
 from seal_cli.sefm import cell_order
 from seal_cli.sefm.resampling import ess, normalise, stratified, systematic
 
@@ -120,8 +119,13 @@ class ObjectModel:
     """...or how far (rad) it must turn, for a sensor that does not see all round."""
 
     @classmethod
+    def for_sensor(cls, spec: Sensor, **overrides: float) -> ObjectModel:
+        """The observation model of a sensor's detections (its ``p_detect`` and ``sigma``)."""
+        return cls(p_detect=spec.p_detect, sigma=spec.sigma, **overrides)
+
+    @classmethod
     def for_map(cls, m: Map, **overrides: float) -> ObjectModel:
-        return cls(p_detect=m.sensor.p_detect, sigma=m.sensor.sigma, **overrides)
+        return cls.for_sensor(m.sensor, **overrides)
 
 
 @dataclass
@@ -319,21 +323,22 @@ def _by_room(m: Map, cls: str, n: int, rng: np.random.Generator) -> NDArray[np.i
     """``n`` free cells drawn by the prior of ``cls``: each room gets its share of the draws to within
     one (systematic over rooms), and within a room the draws are stratified along the cells' order
     (:mod:`seal_cli.sefm.cell_order`): one independent draw in each of ``count`` runs of equal weight, so
-    each patch of the room gets its share without the particles falling on a lattice."""
+    each patch of the room gets its share without the particles falling on a lattice. The prior's
+    weights are evaluated only on the cells of the rooms that get draws, and not kept."""
     cells, starts = cell_order.by_room(m)
-    cdf = _prior_cdf(m, cls)
-    before = np.concatenate([[0.0], cdf])[starts]  # the prior's weight before each room's run of cells
-    masses = np.diff(before)
+    prior = m.prior(cls)
+    by_name = prior.room_masses()
+    masses = np.array([by_name[OUTSIDE]] + [by_name[name] for name in m.room_names])  # runs: no room first
     counts = np.bincount(stratified(masses, n, rng), minlength=len(masses))
-    room = np.repeat(np.arange(len(counts)), counts)
-    rank = np.arange(n) - np.repeat(np.cumsum(counts) - counts, counts)
-    u = (rank + rng.random(n)) / np.maximum(counts[room], 1)
-    index = np.searchsorted(cdf, before[room] + u * masses[room], side="right")
-    return cells[np.clip(index, starts[room], starts[room + 1] - 1)]
+    out = np.empty(n, dtype=np.intp)
+    done = 0
+    for run in np.flatnonzero(counts):
+        members = cells[starts[run]:starts[run + 1]]
+        cdf = np.cumsum(prior.cell_weights(members))
+        k = int(counts[run])
+        u = (np.arange(k) + rng.random(k)) / k
+        index = np.searchsorted(cdf, u * cdf[-1], side="right")
+        out[done:done + k] = members[np.minimum(index, len(members) - 1)]
+        done += k
+    return out
 
-
-@lru_cache(maxsize=256)
-def _prior_cdf(m: Map, cls: str) -> Array:
-    """The cumulative prior weight of ``cls`` over the free cells in cell order (cached per map and class)."""
-    cells, _ = cell_order.by_room(m)
-    return np.cumsum(m.prior(cls).weights[cells])

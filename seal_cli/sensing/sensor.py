@@ -14,7 +14,8 @@ Two ways to ask, with the same rule:
   number of points by one lookup each — what a particle filter uses for negative information.
   It agrees with :func:`visible` except within about a quarter cell of an obstacle's edge.
 
-Simulated detections come from the map's ground-truth objects: without a random generator,
+Simulated detections (:func:`seal_cli.sensing.model.simulate_detections`, through the sensor model)
+come from the map's ground-truth objects: without a random generator,
 every visible object is detected exactly where it is; with one, each is detected with
 probability ``p_detect`` and displaced by Gaussian noise of ``sensor.noise`` metres (the same
 generator state gives the same detections). There are no false positives.
@@ -23,18 +24,15 @@ generator state gives the same detections). There are no false positives.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.geometry import as_points, cast_rays
-from seal_cli.maps.model import Map, ObjectTruth, Sensor
+from seal_cli.maps.model import Map, Sensor
 
-__all__ = ["Detection", "VisibleRegion", "as_pose", "closed_places", "in_view", "simulate_detections", "visible",
-           "visible_mask", "visible_objects", "visible_region"]
+__all__ = ["Detection", "VisibleRegion", "as_pose", "in_view", "visible", "visible_mask", "visible_region"]
 
 Pose = tuple[float, float, float]
 
@@ -164,38 +162,3 @@ class Detection:
 
     def to_json(self) -> dict[str, object]:
         return {"class": self.cls, "at": [round(self.at[0], 4), round(self.at[1], 4)]}
-
-
-def closed_places(m: Map, open_places: Iterable[str] | None = None) -> frozenset[str]:
-    """Class keys of the names of the places that are shut: openable and not open.
-
-    ``open_places`` names the places open now; None means as the map says (``open:``).
-    """
-    if open_places is None:
-        return frozenset(class_key(p.name) for p in m.places if p.openable and not p.open)
-    opened = {class_key(name) for name in open_places}
-    return frozenset(class_key(p.name) for p in m.places if p.openable and class_key(p.name) not in opened)
-
-
-def visible_objects(m: Map, pose: ArrayLike, open_places: Iterable[str] | None = None,
-                    sensor: Sensor | None = None) -> list[ObjectTruth]:
-    """The ground-truth objects visible from the pose (not hidden in a closed place)."""
-    shut = closed_places(m, open_places)
-    candidates = [o for o in m.objects if o.inside is None or class_key(o.inside) not in shut]
-    if not candidates:
-        return []
-    seen = visible(m, pose, np.array([o.at for o in candidates]), sensor)
-    return [o for o, ok in zip(candidates, seen, strict=True) if ok]
-
-
-def simulate_detections(m: Map, pose: ArrayLike, open_places: Iterable[str] | None = None,
-                        rng: np.random.Generator | None = None, sensor: Sensor | None = None) -> list[Detection]:
-    """What the sensor reports from ``pose``: see the module docstring for the noise model."""
-    s = sensor or m.sensor
-    seen = visible_objects(m, pose, open_places, s)
-    if rng is None or not seen:
-        return [Detection(o.cls, o.at) for o in seen]
-    detected = rng.random(len(seen)) < s.p_detect
-    offsets = rng.normal(0.0, s.noise, size=(len(seen), 2)) if s.noise > 0 else np.zeros((len(seen), 2))
-    return [Detection(o.cls, (o.at[0] + float(dx), o.at[1] + float(dy)))
-            for o, hit, (dx, dy) in zip(seen, detected, offsets, strict=True) if hit]

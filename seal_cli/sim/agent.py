@@ -15,9 +15,9 @@ and the map the robot is given: free space, places, priors, sensor). The loop is
    what the world told it, and **replans** from the state it is in; it **gives up** after a
    budget of steps or metres.
 
-The policies differ only in where they look (:class:`Policy`): the SeFM agent
-(:class:`~seal_cli.sim.policies.sefm.SeFMPolicy`) goes to observe the best mode of the current frame's belief;
-the baselines are in :mod:`seal_cli.sim.policies.baselines`.
+The policies differ only in where they look (:class:`~seal_cli.sim.policies.base.Policy`): the SeFM
+agent (:class:`~seal_cli.sim.policies.sefm.SeFMPolicy`) looks where its frame beliefs say; the others are
+registered beside it in :data:`seal_cli.sim.policies.POLICIES`.
 Everything else — execution, perception, bookkeeping of path
 length — is shared, so that the comparison measures the search and nothing else.
 
@@ -30,7 +30,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import Any, Protocol
+from typing import Any
 
 import numpy as np
 
@@ -41,9 +41,10 @@ from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.model import SPEAKER, Map
 from seal_cli.planning.state import State
 from seal_cli.sim.navigation import Cell, Grid
+from seal_cli.sim.policies.base import Policy
 from seal_cli.sim.world import HAND, PERSON, Detection, Item, Outcome, Reason, World
 
-__all__ = ["Agent", "Budget", "Known", "Policy", "Record", "Result", "Scene", "View", "run_on_map", "scene_from_map"]
+__all__ = ["Agent", "Budget", "Known", "Policy", "Record", "Result", "Scene", "View", "scene_from_map"]
 
 
 @dataclass
@@ -124,25 +125,13 @@ class Known:
     """The place a thing was seen in or on."""
 
 
-class Policy(Protocol):
-    """Where to look next. ``begin`` once per run, ``observe`` after every look."""
-
-    name: str
-
-    def begin(self, agent: Agent) -> None: ...
-
-    def observe(self, agent: Agent, detections: Sequence[Detection]) -> None: ...
-
-    def next_view(self, agent: Agent, binding: Binding, target: str) -> View | None: ...
-
-
 class Agent:
     """One robot, one command, one policy; see the module docstring."""
 
     def __init__(self, scene: Scene, library: Library, policy: Policy, *, rng: np.random.Generator,
                  budget: Budget | None = None, planner: Callable[..., list[Binding]] | None = None,
                  observers: Sequence[Callable[[Record], None]] = (), look_every: float = 1.0,
-                 classes: Mapping[str, str] | None = None, search_unknown: bool = False) -> None:
+                 classes: Mapping[str, str] | None = None, sweeper: Callable[[], Any] | None = None) -> None:
         self.scene = scene
         self.world = scene.world
         self.grid = scene.grid
@@ -153,10 +142,11 @@ class Agent:
         self.planner = planner or default_planner
         self.observers = list(observers)
         self.look_every = look_every
-        self.search_unknown = search_unknown
-        """Whether a kind of thing the robot's perception does not know is searched for in the whole
-        house (``seal run``: the map names what it knows, a command may name more) or refused at once
-        (a benchmark whose scene lists every class there is)."""
+        self.sweeper = sweeper
+        """Makes the search that looks all over the house (a coverage policy), for a kind of thing the
+        robot's perception does not know (``seal run``: the map names what it knows, a command may
+        name more) and to look all over a room before counting; None (a benchmark whose scene lists
+        every class there is): such a thing is refused at once, and counting counts what is in view."""
         self.records: list[Record] = []
         self.known: dict[str, Known] = {}
         self.unreachable: set[str] = set()
@@ -181,7 +171,7 @@ class Agent:
         """What the robot found out for a question (Find: where; Count: how many)."""
         self.sweep: Any = None
         """The whole-house search for what no prior or detector knows of, started when needed."""
-        self._learn_places(bool(getattr(policy, "oracle", False)))
+        self._learn_places(policy.oracle)
 
     # -- knowledge ---------------------------------------------------------------------------
 
@@ -353,9 +343,7 @@ class Agent:
             return None
         if previous is not None and any(k.id == previous for k in candidates):
             return previous
-        choose = getattr(self.policy, "choose", None)
-        pick = choose(self, key, candidates) if choose else None
-        return pick or self.nearest(candidates)
+        return self.policy.choose(self, key, candidates) or self.nearest(candidates)
 
     def room(self, value: str) -> Any:
         """The map's room a value names, if it names one."""
@@ -428,11 +416,10 @@ class Agent:
             return None
         field_ = self.distances() if field_ is None else field_
         costs = field_[cells[:, 0], cells[:, 1]]
-        blocked = self.world.sensor.blocked
-        if blocked is not None and known.id in self.world.items:      # not behind a wall, seen from the thing
+        if known.id in self.world.items:      # not behind a wall, seen from the thing
             points = np.column_stack([self.grid.origin[0] + cells[:, 1] * self.grid.resolution,
                                       self.grid.origin[1] + cells[:, 0] * self.grid.resolution])
-            clear = ~np.asarray(blocked(known.at, points), dtype=bool)
+            clear = np.asarray(self.world.sensor.line_of_sight(known.at, points), dtype=bool)
             if clear.any():
                 cells, costs = cells[clear], costs[clear]
         for k in np.argsort(costs, kind="stable")[:STAND_TRIES]:
@@ -451,8 +438,7 @@ class Agent:
             if target is not None:
                 if self.world.held_chain(target):
                     return Outcome(True, f"holds {target}")
-                stand = getattr(self.policy, "stand", None)
-                cell = stand(self, self.known[target]) if stand else self.stand_cell(self.known[target])
+                cell = self.policy.stand(self, self.known[target])
                 if cell is None:
                     self.unreachable.add(target)
                     self.say("fail", f"{target} cannot be reached from anywhere the robot can drive")
@@ -481,7 +467,7 @@ class Agent:
         """One look for a thing of kind ``value``: go to the view the policy chooses, open what it
         says to open, and look. An Outcome when the search must stop instead."""
         if not self.recognises(value):
-            if not self.search_unknown:
+            if self.sweeper is None:
                 return Fatal(False, f"cannot recognise {value!r}: no class it knows is called that",
                              Reason.NOT_FOUND, value)
             return self.sweep_once(value, binding)
@@ -504,12 +490,11 @@ class Agent:
     def sweep_once(self, value: str, binding: Binding) -> Outcome | None:
         """One look of the whole-house search for a kind of thing nothing tells the robot where to
         look for (no prior, no class its perception knows): the nearest part of the house not yet
-        seen, or a closed receptacle not yet opened (:class:`~seal_cli.sim.policies.baselines.CoveragePolicy`),
+        seen, or a closed receptacle not yet opened (the ``sweeper``'s policy),
         within the run's budget. An Outcome when the house has been searched."""
         if self.sweep is None:
-            from seal_cli.sim.policies.baselines import CoveragePolicy
-
-            self.sweep = CoveragePolicy()
+            assert self.sweeper is not None
+            self.sweep = self.sweeper()
             self.sweep.begin(self)
             for pose in self.looks:
                 self.sweep.seen |= self.world.sensor.visible(pose, self.sweep.lattice)
@@ -675,7 +660,7 @@ class Agent:
         key = self.class_of(value)
         ground = binding.elements.get("ground")
         room = self.room(ground) if ground else None
-        if room is not None:
+        if room is not None and self.sweeper is not None:
             self.survey(room)
             n = sum(1 for k in self.known.values() if k.cls == key and k.movable
                     and bool(room.contains([self.world.position(k.id)])[0]))
@@ -688,9 +673,8 @@ class Agent:
     def survey(self, room: Any, views: int | None = None) -> None:
         """Look all over a room: to the nearest part of it not yet seen, until all of it is (at
         most ``views`` views, default :data:`SURVEY_VIEWS`, within the budget)."""
-        from seal_cli.sim.policies.baselines import CoveragePolicy
-
-        sweep = CoveragePolicy()
+        assert self.sweeper is not None
+        sweep = self.sweeper()
         sweep.begin(self)
         sweep.seen |= ~room.contains(sweep.lattice)
         for pose in self.looks:
@@ -790,7 +774,8 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
     how far the robot can act on it and on what is in or on it."""
     from scipy.ndimage import binary_erosion
 
-    from seal_cli.sim.world import Item, Robot, Sensor
+    from seal_cli.sensing.model import RangeSensor
+    from seal_cli.sim.world import Item, Robot
 
     taxonomy = library.taxonomy
     items = [Item(p.name, p.cls, p.at, movable=False, receptacle=True, openable=p.openable,
@@ -818,43 +803,6 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
         free = grid_free
     res = m.grid.resolution
     grid = Grid(free.astype(bool), (m.grid.origin[0] + res / 2, m.grid.origin[1] + res / 2), res, 8)
-    sensor = Sensor(range=m.sensor.range, fov=m.sensor.fov_deg,
-                    blocked=lambda pose, pts: ~m.line_of_sight(pose[:2], pts))
-    world = World(items, Robot(pose=m.robot.pose, holding=holding), taxonomy=taxonomy, sensor=sensor)
+    world = World(items, Robot(pose=m.robot.pose, holding=holding), taxonomy=taxonomy,
+                  sensor=RangeSensor.on_map(m))
     return Scene(world, m, grid, tuple(sorted({i.key for i in items})), m.name)
-
-
-def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.random.Generator,
-               holding: str | None = None, done: Sequence[str] = (), vocabulary: Any = None,
-               budget: Budget | None = None, observers: Sequence[Callable[[Record], None]] = ()
-               ) -> tuple[Agent, Result]:
-    """Carry out a command on a map whose ground-truth objects are the world (``seal run``).
-
-    The command and the ``done`` commands (already carried out) are parsed with the map's
-    vocabulary — or ``vocabulary``, restricted to the map's classes — and grounded on what the
-    robot knows of the map (its rooms, places and people: :mod:`seal_cli.planning.grounding`),
-    without the map's objects, which the robot must find; ``holding`` overrides what the map's
-    robot holds. A room or a fixed thing the map lacks raises SealError before anything moves.
-    """
-    from dataclasses import replace
-
-    from seal_cli.language.grounding import vocabulary_of_map
-    from seal_cli.language.parser import parse_command
-    from seal_cli.maps.model import Robot
-    from seal_cli.planning.grounding import spoken
-    from seal_cli.planning.problem import build_problem
-
-    if holding is not None:
-        m = replace(m, robot=Robot(m.robot.pose, holding))
-    known = vocabulary_of_map(m)
-    vocabulary = known if vocabulary is None else vocabulary.restricted_to(known.classes)
-    parses = [parse_command(spoken(t), library, vocabulary) for t in (*done, text)]
-    problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=m.known())
-    agent = Agent(scene_from_map(m, library), library, policy, rng=rng, budget=budget, observers=observers,
-                  classes=problem.state.classes, search_unknown=True)
-    executed = [b for p in parses[:-1] for b in build_problem(p, library, map=m.known()).commanded]
-    for warning in problem.warnings:
-        agent.say("warn", f"warning: {warning}")
-    result = agent.run(problem.commanded, done=executed)
-    result.warnings = list(problem.warnings)
-    return agent, result

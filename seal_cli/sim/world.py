@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import enum
 import math
-from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -32,8 +32,9 @@ import numpy as np
 from seal_cli.errors import SealError
 from seal_cli.frames.actions import PRIMITIVES
 from seal_cli.frames.taxonomy import Taxonomy, class_key
+from seal_cli.sensing.model import RangeSensor, SensorModel
 
-__all__ = ["HAND", "PERSON", "Detection", "Event", "Item", "Outcome", "Reason", "Robot", "Sensor", "World"]
+__all__ = ["HAND", "PERSON", "Detection", "Event", "Item", "Outcome", "Reason", "Robot", "World"]
 
 HAND = "@hand"
 """The parent of the item the robot holds."""
@@ -141,33 +142,11 @@ class Detection:
     id: str
 
 
-@dataclass(frozen=True)
-class Sensor:
-    """What the robot sees from a pose: within ``range`` metres and ``fov`` degrees of its heading,
-    and, when ``blocked`` is given, with nothing occupied between (``blocked(pose, points) -> bool[]``)."""
-
-    range: float = 5.0
-    fov: float = 360.0
-    blocked: Callable[[Sequence[float], np.ndarray], np.ndarray] | None = None
-
-    def visible(self, pose: Sequence[float], points: np.ndarray) -> np.ndarray:
-        pts = np.asarray(points, dtype=float).reshape(-1, 2)
-        d = pts - np.asarray(pose[:2], dtype=float)
-        ok = np.hypot(d[:, 0], d[:, 1]) <= self.range
-        if self.fov < 360.0:
-            bearing = np.arctan2(d[:, 1], d[:, 0]) - (pose[2] if len(pose) > 2 else 0.0)
-            off = np.abs((bearing + np.pi) % (2 * np.pi) - np.pi)
-            ok &= (off <= math.radians(self.fov) / 2) | (np.hypot(d[:, 0], d[:, 1]) < 1e-9)
-        if self.blocked is not None and ok.any():
-            ok[ok] &= ~np.asarray(self.blocked(pose, pts[ok]), dtype=bool)
-        return ok
-
-
 class World:
     """The simulated household: items, the robot, and the log of what was done."""
 
     def __init__(self, items: Iterable[Item], robot: Robot | None = None, *, taxonomy: Taxonomy | None = None,
-                 reach: float = 1.5, sensor: Sensor | None = None, access_tolerance: float = 0.2) -> None:
+                 reach: float = 1.5, sensor: SensorModel | None = None, access_tolerance: float = 0.2) -> None:
         self.items: dict[str, Item] = {}
         for item in items:
             if item.id in self.items or item.id == HAND:
@@ -188,7 +167,7 @@ class World:
             self.robot.holding = held[0]
         self.taxonomy = taxonomy or Taxonomy()
         self.reach = reach
-        self.sensor = sensor or Sensor()
+        self.sensor: SensorModel = sensor or RangeSensor()
         self.access_tolerance = access_tolerance
         self.following: str | None = None
         """A person who walks with the robot (being led): where the robot drives, they go."""
@@ -270,8 +249,6 @@ class World:
     def walled(self, item_id: str, pose: Sequence[float] | None = None) -> bool:
         """Whether a wall stands between the robot and the item: the sight line from the robot to
         the point :data:`REACH_MARGIN` short of the item is blocked."""
-        if self.sensor.blocked is None:
-            return False
         pose = pose or self.robot.pose
         at = self.items[item_id].at
         d = math.dist(pose[:2], at)
@@ -280,7 +257,7 @@ class World:
             return False
         f = (d - margin) / d
         short = (pose[0] + (at[0] - pose[0]) * f, pose[1] + (at[1] - pose[1]) * f)
-        return bool(np.asarray(self.sensor.blocked(pose, np.asarray([short], dtype=float)))[0])
+        return not bool(np.asarray(self.sensor.line_of_sight(pose[:2], np.asarray([short], dtype=float)))[0])
 
     def margin(self, item_id: str) -> float:
         """How far short of the item the sight line for reach is tested: :data:`REACH_MARGIN` for a

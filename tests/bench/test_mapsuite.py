@@ -12,7 +12,7 @@ from seal_cli.bench.mapsuite import run_map_suite, sample_layout
 from seal_cli.bench.tasks import summarise
 from seal_cli.cli import app
 from seal_cli.errors import SealError
-from seal_cli.maps.model import load_map
+from seal_cli.maps.formats.map_server import load_map
 from seal_cli.resources import map_path
 
 runner = CliRunner()

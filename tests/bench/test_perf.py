@@ -11,7 +11,7 @@ from typer.testing import CliRunner
 from seal_cli.bench.perf import building, measure, scales, tv_distance
 from seal_cli.cli import app
 from seal_cli.frames.library import Library
-from seal_cli.maps.model import load_map
+from seal_cli.maps.formats.map_server import load_map
 from seal_cli.resources import map_path
 
 
@@ -29,7 +29,8 @@ def test_the_paper_scale_is_the_papers_fig3(library: Library) -> None:
     assert (len(paper.bindings), paper.objects, paper.particles) == (3, 2, 200)
     result = measure(replace(paper, updates=5, exact_updates=2))
     assert set(result) == {"name", "frames", "objects", "particles", "updates_per_s", "exact_updates_per_s",
-                           "tv_distance"}
+                           "tv_distance", "peak_rss_mb"}
+    assert result["peak_rss_mb"] > 10
     assert result["updates_per_s"] > 0 and result["exact_updates_per_s"] > 0
     assert 0 <= result["tv_distance"] <= 0.02
 
@@ -54,13 +55,38 @@ def test_cli_json_and_unknown_scale() -> None:
 def test_json_output_shape(monkeypatch: object) -> None:
     import seal_cli.bench.perf as perfbench
 
-    def quick(scale: perfbench.Scale, seed: int = 0, progress: object = None) -> dict[str, object]:
-        return {"name": scale.name, "frames": len(scale.bindings), "objects": scale.objects,
-                "particles": scale.particles, "updates_per_s": 1.0, "exact_updates_per_s": 0.5, "tv_distance": 0.0}
+    asked = []
 
-    monkeypatch.setattr(perfbench, "measure", quick)  # type: ignore[attr-defined]
-    result = CliRunner().invoke(app, ["bench", "perf", "--json", "--scale", "paper"])
+    def quick(name: str, seed: int = 0) -> dict[str, object]:
+        asked.append(name)
+        return {"name": name, "frames": 3, "objects": 2, "particles": 200, "updates_per_s": 1.0,
+                "exact_updates_per_s": 0.5, "tv_distance": 0.0, "peak_rss_mb": 120.0}
+
+    monkeypatch.setattr(perfbench, "measure_apart", quick)  # type: ignore[attr-defined]
+    result = CliRunner().invoke(app, ["bench", "perf", "--json", "--scale", "large", "--scale", "paper"])
     assert result.exit_code == 0, result.output
     data = json.loads(result.stdout)
-    assert [s["name"] for s in data["scales"]] == ["paper"]
-    assert data["scales"][0]["frames"] == 3
+    assert asked == ["paper", "large"]  # smallest first, whatever the order asked
+    assert [s["name"] for s in data["scales"]] == ["paper", "large"]
+    table = CliRunner().invoke(app, ["bench", "perf", "--scale", "paper"])
+    assert table.exit_code == 0 and "120" in table.stdout  # the peak column
+
+
+def test_a_scale_measured_apart_reports_its_own_peak_memory() -> None:
+    from seal_cli.bench.perf import measure_apart
+
+    result = measure_apart("paper", 0)
+    assert result["name"] == "paper" and result["frames"] == 3
+    assert 10 < result["peak_rss_mb"] < 2000
+
+
+def test_the_large_scale_has_the_spec_size(library: Library) -> None:
+    from seal_cli.bench.perf import scale
+
+    large = scale("large", library, lambda: load_map(map_path("apartment")))
+    xmin, ymin, xmax, ymax = large.map.bounds
+    assert (xmax - xmin, ymax - ymin) == (120.0, 80.0)
+    assert len(large.bindings) == 200 and len(large.map.priors) == 200 and large.particles == 1000
+    assert large.objects == 200
+    cup = large.map.prior(sorted(large.map.priors)[0])
+    assert sum(len(cells) for cells, _ in cup.components) < len(large.map.free_centres) / 50  # sparse

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from seal_cli.bench.plan import BENCH_COMMANDS, time_plans
 from seal_cli.frames.library import Library
-from seal_cli.maps.model import load_map
+from seal_cli.maps.formats.map_server import load_map
 from seal_cli.resources import map_path
 
 

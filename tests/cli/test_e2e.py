@@ -88,7 +88,7 @@ def test_bench_e2e_counts_plans_and_runs(tmp_path: Path) -> None:
 
 def test_the_shipped_suite_is_large_and_its_plans_are_right(library: object) -> None:
     from seal_cli.bench.e2e import MAPS, load_cases, plan_steps
-    from seal_cli.maps.model import load_map
+    from seal_cli.maps.formats.map_server import load_map
 
     cases = [c for c in load_cases() if c.map == "apartment"]
     assert len(load_cases()) >= 100 and {c.map for c in load_cases()} == set(MAPS)
@@ -99,7 +99,7 @@ def test_the_shipped_suite_is_large_and_its_plans_are_right(library: object) -> 
 
 def test_the_aws_house_plans_are_right(library: object, shared_data: Path, tmp_path: Path) -> None:
     from seal_cli.bench.e2e import MAPS, load_cases, plan_steps
-    from seal_cli.maps.model import load_map
+    from seal_cli.maps.formats.map_server import load_map
 
     the_map = load_map(MAPS["aws"](tmp_path, shared_data))
     assert {p.name for p in the_map.people} == {"Carla", "Dev"} and len(the_map.places) == 14

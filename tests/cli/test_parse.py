@@ -117,6 +117,9 @@ def test_bench_parse_runs_the_scorer(shared_data: Path, tmp_path: Path) -> None:
     assert result.exit_code == 0, result.output
     figures = json.loads(result.stdout)["corpora"][str(corpus)]
     assert figures["n"] == 2 and figures["frames"] == 1.0 and figures["roles"] == 1.0
+    in_process = figures["in_process"]
+    assert (in_process["commands"], in_process["parsed"], in_process["silent_swallowed"]) == (2, 2, 0)
+    assert in_process["commands_per_cpu_s"] > 0
 
 
 @pytest.mark.parametrize(("content", "expected"), [

@@ -5,7 +5,8 @@ from __future__ import annotations
 import pytest
 
 from seal_cli.errors import SealError
-from seal_cli.frames.library import Library, load_library
+from seal_cli.frames.library import Library
+from seal_cli.frames.reading import load_library
 from seal_cli.planning.state import State, robot_facts
 
 # The SPEC's table: frame -> element roles (part of the contract).

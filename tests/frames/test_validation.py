@@ -16,7 +16,8 @@ from typer.testing import CliRunner
 from seal_cli.cli import app
 from seal_cli.frames.model import Element, Fact, Frame
 from seal_cli.frames.taxonomy import Taxonomy
-from seal_cli.frames.validation import check_library, validate_paths
+from seal_cli.frames.validation import check_library
+from seal_cli.validate import validate_paths
 
 BAD = Path(__file__).parents[1] / "data" / "frames_bad"
 CASES = sorted(BAD.iterdir())

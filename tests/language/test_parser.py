@@ -417,7 +417,7 @@ def test_parse_trees_shared_by_shape_give_the_same_parses(library: Library, shar
         results: list[object] = []
         for text in texts:
             if fresh:
-                language._TREES.clear()
+                language.CommandParser.of(library).trees.clear()
             try:
                 results.append(parse_command(text, library).to_json())
             except SealError as error:

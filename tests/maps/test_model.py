@@ -19,8 +19,7 @@ from typer.testing import CliRunner
 
 from seal_cli.cli import app
 from seal_cli.errors import SealError, SealErrors
-from seal_cli.frames.validation import validate_paths
-from seal_cli.maps.formats.map_server import read_pgm
+from seal_cli.maps.formats.map_server import check_map_file, load_map, read_pgm
 from seal_cli.maps.geometry import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 from seal_cli.maps.model import (
     OUTSIDE,
@@ -31,13 +30,12 @@ from seal_cli.maps.model import (
     Robot,
     Room,
     Sensor,
-    check_map_file,
-    load_map,
     prior_density,
     sample_prior,
 )
 from seal_cli.maps.priors import FLOOR
 from seal_cli.resources import map_path
+from seal_cli.validate import validate_paths
 
 ROOT = Path(__file__).resolve().parents[2]
 APARTMENT = ROOT / "maps" / "apartment.yaml"
@@ -204,7 +202,7 @@ def test_the_apartment_validates_clean() -> None:
     assert check_map_file(APARTMENT) == []
     result = CliRunner().invoke(app, ["validate", str(APARTMENT)])
     assert result.exit_code == 0, result.output
-    assert "1 maps" in result.output
+    assert "1 map in 1 file" in result.output
 
 
 def test_walls_doors_and_rooms_of_the_apartment(apartment: Map) -> None:

@@ -8,9 +8,9 @@ import pytest
 
 from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
-from seal_cli.maps.model import load_map
+from seal_cli.maps.formats.map_server import load_map
+from seal_cli.pipeline import plan as plan_text
 from seal_cli.planning.grounding import MapNames, spoken
-from seal_cli.planning.plan import plan_text
 
 APARTMENT = Path(__file__).resolve().parents[2] / "maps" / "apartment.yaml"
 

@@ -14,9 +14,10 @@ from seal_cli.cli import app
 from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding, Fact
-from seal_cli.maps.model import load_map
+from seal_cli.maps.formats.map_server import load_map
+from seal_cli.pipeline import plan as plan_text
 from seal_cli.planning.pddl import domain_pddl, problem_pddl, write_pddl
-from seal_cli.planning.plan import Plan, plan, plan_text
+from seal_cli.planning.plan import Plan, plan
 from seal_cli.planning.state import State, robot_facts
 from seal_cli.resources import map_path
 from tests.planning.test_plan import alfred_command, alfred_tasks

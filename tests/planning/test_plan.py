@@ -19,8 +19,9 @@ from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding, Element, Fact, Frame
 from seal_cli.frames.taxonomy import Taxonomy, class_key, class_words
-from seal_cli.maps.model import load_map
-from seal_cli.planning.plan import Plan, plan, plan_text
+from seal_cli.maps.formats.map_server import load_map
+from seal_cli.pipeline import plan as plan_text
+from seal_cli.planning.plan import Plan, plan
 from seal_cli.planning.problem import instance_names
 from seal_cli.planning.state import State, robot_facts
 from seal_cli.resources import map_path
@@ -485,7 +486,7 @@ def test_cli_robot_state_options() -> None:
     (["put it in the fridge"], "cannot tell what 'it' refers to"),
     (["--max-nodes", "1", "slice the apple and put it in the fridge"], "search nodes"),
     (["--map", "no_such_map.yaml", "stir the cup"], "no_such_map"),
-    (["--pddl", "no/such/folder", "stir the cup"], "cannot write PDDL"),
+    (["--pddl", "no/such/folder", "stir the cup"], "cannot write into --pddl"),
 ])
 def test_cli_refusals_exit_1_without_a_traceback(args: list[str], message: str) -> None:
     result = runner.invoke(app, ["plan", *args])

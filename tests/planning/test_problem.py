@@ -68,7 +68,7 @@ def test_a_maps_rooms_and_places_are_not_objects_to_handle(library: Library) -> 
     """The map's places are fixed furniture and receptacles: "pick up the sofa" is refused, with a
     caret under the phrase; objects on them and the places as goals are fine."""
     from seal_cli.errors import SealError
-    from seal_cli.maps.model import load_map
+    from seal_cli.maps.formats.map_server import load_map
     from seal_cli.resources import map_path
 
     apartment = load_map(map_path("apartment"))

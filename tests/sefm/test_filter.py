@@ -14,11 +14,11 @@ from seal_cli.bench.houses import SECOND_HOUSE_TRAJECTORY, aws_house, second_hou
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding, Fact
 from seal_cli.maps.model import Map, ObjectTruth, Place, Robot, Room, Sensor
-from seal_cli.planning.plan import plan_text
+from seal_cli.pipeline import plan as plan_text
 from seal_cli.planning.state import State, robot_facts
 from seal_cli.sefm.filter import SeFM, SeFMConfig, frame_id
 from seal_cli.sefm.modes import room_masses
-from seal_cli.sensing.sensor import simulate_detections
+from seal_cli.sensing.model import simulate_detections
 
 SEEDS = range(5)
 
@@ -104,7 +104,7 @@ def test_on_the_aws_house_a_look_into_the_bedroom_lowers_it_once_then_it_stays(l
                                                                                tmp_path: Path) -> None:
     """The map's middle sees a sixth of the (50 m²) bedroom: the spoon's bedroom mass drops at the first
     look and stays there for the other 19 updates at that pose; Stir keeps the bedroom on top."""
-    from seal_cli.maps.model import load_map
+    from seal_cli.maps.formats.map_server import load_map
 
     m = load_map(aws_house(tmp_path, shared_data, "north_family", (0.0, 0.0, 0.0)))
     bindings, state = paper_frames(library, m)
@@ -384,11 +384,55 @@ def test_weights_are_always_finite_and_normalised(library: Library, scenario: tu
         assert all(np.isfinite(summary.best))
 
 
+@st.composite
+def bad_updates(draw: st.DrawFn) -> tuple[tuple[float, ...], list[tuple[str, tuple[float, float]]], str]:
+    """A pose and detections of which exactly one thing is wrong, and what: NaN or infinity, off
+    the map (the scenario maps lie in [0, 12] × [0, 8]), or a class nobody knows."""
+    wrong = draw(st.sampled_from(["nan pose", "off-map pose", "nan detection", "off-map detection", "class"]))
+    bad_number = draw(st.sampled_from([float("nan"), float("inf"), -float("inf")]))
+    off = draw(st.one_of(st.floats(-1e12, -0.01), st.floats(12.01, 1e12)))
+    pose: tuple[float, ...] = (1.0, 1.0, 0.0)
+    seen = [("cup", (1.0, 1.0))]
+    if wrong == "nan pose":
+        pose = (bad_number, 1.0, 0.0) if draw(st.booleans()) else (1.0, 1.0, bad_number)
+    elif wrong == "off-map pose":
+        pose = (off, 1.0) if draw(st.booleans()) else (1.0, off)
+    elif wrong == "nan detection":
+        seen.append(("spoon", (bad_number, 1.0)))
+    elif wrong == "off-map detection":
+        seen.append(("cup", (1.0, off)))
+    else:
+        seen.append((draw(st.sampled_from(["zebra", "", "cupp"])), (1.0, 1.0)))
+    return pose, seen, wrong
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow,
+                                                                 HealthCheck.function_scoped_fixture])
+@given(scenario=scenarios(), bad=bad_updates(), seed=st.integers(0, 2 ** 16))
+def test_nan_off_map_and_unknown_class_are_refused_and_change_nothing(library: Library, scenario: tuple,
+                                                                       bad: tuple, seed: int) -> None:
+    from seal_cli.errors import SealError
+
+    m, steps = scenario
+    frames = [library.frame("Pick").bind({"theme": "spoon"}), library.frame("Stir").bind({"theme": "cup"})]
+    state = State.of(robot_facts(None), library.taxonomy)
+    sefm = SeFM(m, frames, state, np.random.default_rng(seed), SeFMConfig(particles=7))
+    pose, seen, wrong = bad
+    before = (sefm.objects.X.copy(), sefm.frames.W.copy(), sefm.step)
+    with pytest.raises(SealError):
+        sefm.update(pose, seen, state)
+    np.testing.assert_array_equal(sefm.objects.X, before[0])
+    np.testing.assert_array_equal(sefm.frames.W, before[1])
+    assert sefm.step == before[2]
+    sefm.update(steps[0][0], steps[0][1], state)  # and it goes on as if the bad update never came
+    assert np.all(np.isfinite(sefm.frames.W)) and np.all(np.isfinite(sefm.objects.X))
+
+
 def test_public_queries_agree_with_the_summaries() -> None:
     """What a searcher asks SeFM: particles, densities at points, closed places."""
-    from seal_cli.frames.library import load_library
-    from seal_cli.maps.model import load_map
-    from seal_cli.planning.plan import plan_text
+    from seal_cli.frames.reading import load_library
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan as plan_text
     from seal_cli.resources import map_path
     from seal_cli.sefm.filter import SeFM
 

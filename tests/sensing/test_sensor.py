@@ -11,19 +11,11 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from seal_cli.maps.formats.map_server import load_map
 from seal_cli.maps.geometry import OCCUPIED, OccupancyGrid
-from seal_cli.maps.model import Map, ObjectTruth, Place, Room, Sensor, load_map
-from seal_cli.sensing.sensor import (
-    Detection,
-    as_pose,
-    closed_places,
-    in_view,
-    simulate_detections,
-    visible,
-    visible_mask,
-    visible_objects,
-    visible_region,
-)
+from seal_cli.maps.model import Map, ObjectTruth, Place, Room, Sensor
+from seal_cli.sensing.model import closed_places, simulate_detections, visible_objects
+from seal_cli.sensing.sensor import Detection, as_pose, in_view, visible, visible_mask, visible_region
 
 APARTMENT = Path(__file__).resolve().parents[2] / "maps" / "apartment.yaml"
 

@@ -9,6 +9,7 @@ from seal_cli.bench.alfred2d import Task, judge
 from seal_cli.frames.library import Library
 from seal_cli.planning.state import State
 from seal_cli.sim.agent import Agent, Budget, Record
+from seal_cli.sim.policies import make_policy
 from seal_cli.sim.policies.sefm import SeFMPolicy
 from tests.scenes import kitchen
 
@@ -18,7 +19,7 @@ def run(library: Library, commands: list[tuple[str, dict[str, str]]], search_unk
     s = kitchen(library, **scene)  # type: ignore[arg-type]
     heard: list[Record] = []
     agent = Agent(s, library, SeFMPolicy(particles=100), rng=np.random.default_rng(1), observers=[heard.append],
-                  search_unknown=search_unknown)
+                  sweeper=(lambda: make_policy("coverage")) if search_unknown else None)
     result = agent.run([library.frame(f).bind(v) for f, v in commands])
     return s, agent, result, heard
 

@@ -4,19 +4,29 @@ from __future__ import annotations
 
 import numpy as np
 
-from seal_cli.sim.world import PERSON, Item, Reason, Robot, Sensor, World
+from seal_cli.sim.world import PERSON, Item, Reason, Robot, World
+
+
+class WallAtOne:
+    """A sensor whose sight is cut by a wall along x = 1."""
+
+    range = 5.0
+
+    def line_of_sight(self, origin: object, points: object) -> np.ndarray:
+        p = np.asarray(points, dtype=float).reshape(-1, 2)
+        x0 = float(origin[0])                                            # type: ignore[index]
+        return ~((np.minimum(x0, p[:, 0]) < 1.0) & (np.maximum(x0, p[:, 0]) > 1.0))
+
+    def visible(self, pose: object, points: object) -> np.ndarray:
+        return self.line_of_sight(pose, points)
 
 
 def walled_world(robot_at: tuple[float, float]) -> World:
-    """A wall along x = 1 (from y = -5 to 5); an apple on a table at x = 1.6."""
-    def blocked(pose: object, points: np.ndarray) -> np.ndarray:
-        x0 = float(pose[0])                                              # type: ignore[index]
-        return (np.minimum(x0, points[:, 0]) < 1.0) & (np.maximum(x0, points[:, 0]) > 1.0)
-
+    """A wall along x = 1; an apple on a table at x = 1.6 (its reach 1 m); Anna at (0, 1)."""
     items = [Item("table_1", "table", (1.6, 0.0), movable=False, receptacle=True, reach=1.0),
              Item("apple_1", "apple", (1.6, 0.0), parent="table_1"),
              Item("anna", PERSON, (0.0, 1.0), movable=False)]
-    return World(items, Robot(pose=(*robot_at, 0.0)), sensor=Sensor(blocked=blocked))
+    return World(items, Robot(pose=(*robot_at, 0.0)), sensor=WallAtOne())  # type: ignore[arg-type]
 
 
 def test_reach_is_cut_by_a_wall_and_refused_with_the_reason() -> None:

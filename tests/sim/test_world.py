@@ -2,12 +2,13 @@
 
 from __future__ import annotations
 
-import numpy as np
 import pytest
 
 from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
-from seal_cli.sim.world import HAND, Item, Robot, Sensor, World
+from seal_cli.maps.model import Sensor
+from seal_cli.sensing.model import RangeSensor
+from seal_cli.sim.world import HAND, Item, Robot, World
 
 
 def kitchen(library: Library, **robot: object) -> World:
@@ -22,7 +23,7 @@ def kitchen(library: Library, **robot: object) -> World:
         Item("pan_1", "pan", (-0.2, 1.0), receptacle=True, parent="counter_1"),
     ]
     return World(items, Robot(pose=(0.0, 0.0, 0.0), **robot), taxonomy=library.taxonomy,  # type: ignore[arg-type]
-                 reach=1.5, sensor=Sensor(range=3.0))
+                 reach=1.5, sensor=RangeSensor(Sensor(range=3.0)))
 
 
 def goto(world: World, x: float, y: float) -> None:
@@ -90,14 +91,6 @@ def test_toggles_and_lamps(library: Library) -> None:
     assert not world.act("toggle_on", "fridge_1")
     assert world.act("toggle_on", "lamp_1") and world.has("lamp_1", "on")
     assert world.act("toggle_off", "lamp_1") and not world.has("lamp_1", "on")
-
-
-def test_sensor_range_and_field_of_view() -> None:
-    sensor = Sensor(range=2.0, fov=90.0)
-    points = np.array([[1.0, 0.0], [3.0, 0.0], [-1.0, 0.0], [1.0, 0.9]])
-    assert sensor.visible((0.0, 0.0, 0.0), points).tolist() == [True, False, False, True]
-    blind = Sensor(range=5.0, blocked=lambda pose, pts: pts[:, 0] > 2.0)
-    assert blind.visible((0.0, 0.0, 0.0), np.array([[1.0, 0.0], [3.0, 0.0]])).tolist() == [True, False]
 
 
 def test_drive_counts_metres_and_log_keeps_order(library: Library) -> None:

@@ -2,8 +2,8 @@
 
 The :class:`~seal_cli.sim.agent.Agent` executes a plan and asks its policy for a :class:`View`
 whenever what the current frame needs is not yet known. :class:`SeFMPolicy` answers from SeFM's
-belief over where the frame can be executed (:class:`seal_cli.sefm.filter.SeFM`); the baselines it
-is measured against are in :mod:`seal_cli.sim.policies.baselines`.
+belief over where the frame can be executed (:class:`seal_cli.sefm.filter.SeFM`); the policies it
+is measured against are registered beside it in :data:`seal_cli.sim.policies.POLICIES`.
 """
 
 from __future__ import annotations
@@ -17,12 +17,13 @@ from seal_cli.frames.model import Binding, Fact
 from seal_cli.planning.state import State
 from seal_cli.sim.agent import Agent, View
 from seal_cli.sim.navigation import Cell
+from seal_cli.sim.policies.base import Policy
 from seal_cli.sim.world import Detection
 
 __all__ = ["SeFMPolicy"]
 
 
-class SeFMPolicy:
+class SeFMPolicy(Policy):
     """The SeFM searcher: observe the best mode of the current frame's belief.
 
     The beliefs (:class:`seal_cli.sefm.filter.SeFM`) are over every frame of the plan and every object
@@ -31,9 +32,9 @@ class SeFMPolicy:
     can *observe* one: if the mode lies at a closed receptacle it has not looked into, it goes
     and opens it; otherwise it goes to the nearest pose (by path) from which the mode is in view.
     A view already taken is not taken again; when every mode has been looked at, it falls back
-    to the nearest frontier (:class:`~seal_cli.sim.policies.baselines.CoveragePolicy`), so the search is
-    complete. ``priors=False`` is the ``uniform`` ablation; :class:`~seal_cli.sim.policies.baselines.
-    ObjectOnlyPolicy` looks at the object's belief instead of the frame's.
+    to the nearest frontier (:class:`~seal_cli.sim.policies.coverage.CoveragePolicy`), so the search is
+    complete. ``priors=False`` is the ``uniform`` ablation (:class:`~seal_cli.sim.policies.uniform.UniformPolicy`);
+    :class:`~seal_cli.sim.policies.object_only.ObjectOnlyPolicy` looks at the object's belief instead of the frame's.
     """
 
     name = "sefm"
@@ -46,9 +47,18 @@ class SeFMPolicy:
         self.bandwidth = bandwidth
         self.distance_scale = distance_scale
         """A view's utility is the belief mass it reveals / (metres to drive there + scale)."""
+        self._clouds: list[dict[str, Any]] = []
+
+    @classmethod
+    def make(cls, *, particles: int = 200) -> Policy:
+        return cls(particles=particles)
+
+    @property
+    def clouds(self) -> list[dict[str, Any]]:
+        return self._clouds
 
     def begin(self, agent: Agent) -> None:
-        from seal_cli.sim.policies.baselines import CoveragePolicy
+        from seal_cli.sim.policies.coverage import CoveragePolicy
 
         self.fallback = CoveragePolicy()
         self.fallback.begin(agent)
@@ -98,20 +108,15 @@ class SeFMPolicy:
             if self.keep_clouds:
                 self.snapshot(agent)
 
-    keep_clouds = False
-    """Keep a copy of the particle clouds after every update (for ``seal run --rrd``)."""
-
     def snapshot(self, agent: Agent) -> None:
         """The clouds now: the frame at hand, and every object believed in."""
         sefm = self.sefm
-        if not hasattr(self, "clouds"):
-            self.clouds: list[dict[str, Any]] = []
         objects = {c: sefm.object_particles(c) for c in sefm.object_classes}
         from seal_cli.sefm.filter import frame_id
 
         index = min(agent.index, len(sefm.bindings) - 1)
         frame = frame_id(sefm.bindings[index]) if sefm.bindings else ""
-        self.clouds.append({"step": agent.world.step, "frame": frame,
+        self._clouds.append({"step": agent.world.step, "frame": frame,
                             "frame_particles": sefm.frame_particles(index)
                             if sefm.bindings else None, "objects": objects})
 

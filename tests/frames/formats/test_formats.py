@@ -13,7 +13,8 @@ import pytest
 from seal_cli.errors import Where
 from seal_cli.frames.formats import dsl
 from seal_cli.frames.formats import yamlfile as yamlformat
-from seal_cli.frames.library import Library, frame_files, read_files
+from seal_cli.frames.library import Library
+from seal_cli.frames.reading import frame_files, read_files
 from seal_cli.resources import framelib_dir
 
 SPEC_YAML = """\

@@ -1,0 +1,382 @@
+"""Clause-to-clause passes: from the clauses as the grammar read them (:mod:`seal_cli.language.syntax`)
+to the clauses the frames are built from, in the order they are to be done.
+
+Each pass is a method that takes clauses (or a clause's items) and returns or edits them, in the
+order :meth:`Clauses.passes` lists them:
+
+1. **reading a clause** (:meth:`Clauses.read`): relative clauses join their noun
+   (:meth:`~Clauses.relatives`), a gapped second clause is split off (:meth:`~Clauses.gapping`:
+   "put the plates on the table *and the glasses next to them*"), things held are taken out
+   ("with X in hand"), coordinated noun phrases join (:meth:`~Clauses.coordinate`), contents join
+   their container, the objects are read (an indirect object first, a second object after what
+   describes a person) and what a verb of saying says (:meth:`~Clauses.message`);
+2. **subordinate clauses** ordered (:meth:`~Clauses.subordinate`: "*before you go*, turn off ...");
+3. **coordinated verbs** sharing one object (:meth:`~Clauses.share_objects`: "slice and chill an apple");
+4. **order words** (:meth:`~Clauses.order`: "A while B", "A after B", "A when done B");
+5. **light verbs** (:meth:`~Clauses.light_verb`: "give the sauce *a stir*" is stirring it).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import replace
+
+from seal_cli.frames.library import Library
+from seal_cli.language.element_types import Types
+from seal_cli.language.english import FIRST_LATER
+from seal_cli.language.lexicon import Word
+from seal_cli.language.roles import FROM, LOCATIVE
+from seal_cli.language.syntax import NP, PP, Clause, Command, Item, end_of
+
+__all__ = ["LIGHT_VERBS", "Clauses"]
+
+
+LIGHT_VERBS = ("give",)
+"""Verbs that lend their clause to an action noun: "give the sauce a stir" is stirring it."""
+
+
+class Clauses:
+    """The clause passes for one command (its text) and one library."""
+
+    def __init__(self, text: str, library: Library, types: Types, speech: frozenset[str]) -> None:
+        self.text = text
+        self.library = library
+        self.types = types
+        self.speech = speech               # units of verbs of saying (``Lexicon.speech``)
+
+    def passes(self, command: Command) -> list[Clause]:
+        """The command's clauses, read and ordered (the passes of the module docstring)."""
+        clauses: list[Clause] = []
+        joins: list[str] = []
+        for raw, join in zip(command.clauses, command.joins, strict=True):
+            clause = self.read(raw)
+            clauses.append(clause)
+            joins.append(join)
+            if clause.gap is not None:        # "put the plates on the table and the glasses next to them"
+                clauses.append(clause.gap)
+                joins.append("and")
+        self.subordinate(clauses)
+        self.share_objects(clauses, joins)
+        ordered = self.order(clauses, joins)
+        for clause in ordered:
+            self.light_verb(clause)
+        return ordered
+
+    # -- one clause ----------------------------------------------------------------------------
+    def read(self, raw: Clause) -> Clause:
+        """A clause from the grammar's (all its phrases in ``items``): objects, message, the gapped
+        clause after it."""
+        items = self.relatives(list(raw.items))
+        gap: Clause | None = None
+        split = self.gapping(items)
+        if split is not None:
+            gap = self.make_clause(raw.verb, items[split + 1:], [], None)
+            gap.start = items[split + 1].start
+            items = items[:split]
+        clause = self.make_clause(raw.verb, items, raw.conditions, raw.sub)
+        clause.gap = gap
+        return clause
+
+    def make_clause(self, verb: Word, items: list[Item], conditions: list[str], sub: str | None) -> Clause:
+        """A clause from its verb and the phrases after it."""
+        held = self.in_hand(items)
+        items = self.coordinate(items)
+        items = self.containing(items)
+        objects: list[NP] = []
+        if len(items) > 1 and isinstance(items[0], Word) and items[0].lower == "how" and \
+                isinstance(items[1], NP) and items[1].quantity is not None:
+            counted = items[1]
+            counted.quantity = None             # "count how many books are on the shelf": the books
+            items.pop(0)
+        while items and (isinstance(items[0], NP) or isinstance(items[0], Word) and items[0].tag == "PARTICLE"
+                         and objects == [] and len(items) > 1 and isinstance(items[1], NP)):
+            first = items.pop(0)
+            if isinstance(first, NP):
+                objects.append(first)
+        self.recipient_first(verb, objects, items)
+        self.second_object(verb, objects, items)
+        message = self.message(items) or self.said(verb, objects, items)
+        end = max([verb.end] + [end_of(x) for x in (*objects, *items)] + ([message.end] if message else []))
+        return Clause(verb, objects, items, message, verb.start, end, held, sub, conditions)
+
+    def receives(self, verb: Word) -> bool:
+        """Whether a frame of the verb has someone to receive (a recipient)."""
+        return any("recipient" in self.types.roles(f) for f in self.types.evoked_by(str(verb.info)))
+
+    def recipient_first(self, verb: Word, objects: list[NP], items: list[Item]) -> None:
+        """"give *to me* the remote", "bring to my son his coat": a "to" phrase naming a person right
+        after a verb whose frames have someone to receive, and then a noun phrase: that noun phrase is
+        the object (the order of many other languages)."""
+        if objects or len(items) < 2 or not isinstance(items[0], PP) or items[0].prep != "to" or \
+                items[0].np.kind != "person" or not isinstance(items[1], NP) or items[1].kind == "person" or \
+                not self.receives(verb):
+            return
+        second = items.pop(1)
+        assert isinstance(second, NP)
+        objects.append(second)
+
+    def second_object(self, verb: Word, objects: list[NP], items: list[Item]) -> None:
+        """"give the man *in the gray suit* his coat": after a person and the phrases that describe them
+        (where they are, what they have), a noun phrase with a determiner is the second object of a verb
+        whose frames have someone to receive; the phrases join the person's noun phrase."""
+        if len(objects) != 1 or objects[0].kind != "person" or objects[0].pronoun is not None or \
+                not items or not isinstance(items[0], PP):
+            return
+        k = 0
+        while k < len(items):
+            item = items[k]
+            if not (isinstance(item, PP) and item.prep in LOCATIVE + ("with",) and not item.lead):
+                break
+            k += 1
+        second = items[k] if k < len(items) else None
+        if not isinstance(second, NP) or not second.determined or second.kind == "person" or \
+                not self.receives(verb):
+            return
+        person = objects[0]
+        for pp in items[:k]:
+            assert isinstance(pp, PP)
+            person.inner.append(pp.np)
+            person.end = max(person.end, pp.np.end)
+        objects.append(second)
+        del items[:k + 1]
+
+    def relatives(self, items: list[Item]) -> list[Item]:
+        """A relative clause (``REL``) belongs to the noun before it: kept whole as its ``relative``,
+        with the frames its result words evoke ("a lamp that is turned on"); "that is" before a
+        prepositional phrase makes the phrase describe the noun ("the pan that is on the stove"),
+        never fill an element of the frame."""
+        if not any(isinstance(item, Word) and item.tag == "REL" for item in items):
+            return items
+        out: list[Item] = []
+        describe = False
+        for item in items:
+            last = out[-1] if out else None
+            if isinstance(item, Word) and item.tag == "REL" and isinstance(last, NP | PP):
+                host = last.np if isinstance(last, PP) else last
+                if item.info == "be":
+                    describe = True
+                    continue
+                host.relative = self.text[item.start:item.end]
+                host.relative_start, host.relative_end = item.start, item.end
+                for frame_unit in item.info if isinstance(item.info, tuple) else ():
+                    host.results.append(Word(item.text, item.start, item.end, "RESULT", frame_unit))
+                continue
+            if describe and isinstance(item, PP):
+                item.describes = True
+            elif isinstance(item, PP) and isinstance(last, NP | PP) and \
+                    (last.np if isinstance(last, PP) else last).relative_end == item.start - 1:
+                item.after_relative = True
+            describe = False
+            out.append(item)
+        return out
+
+    @staticmethod
+    def gapping(items: list[Item]) -> int | None:
+        """Where a second clause with the verb left out starts: "put the plates *on the table* and the
+        glasses *next to them*" (an object and a place, "and", another object and place); None."""
+        if len(items) < 5 or not isinstance(items[0], NP):
+            return None
+        for k in range(2, len(items) - 2):
+            word, before = items[k], items[k - 1]
+            if isinstance(word, Word) and word.tag == "AND_NP" and word.lower == "and" and \
+                    isinstance(before, PP) and isinstance(items[k + 1], NP) and \
+                    all(isinstance(x, PP) for x in items[k + 2:]) and not before.lead and \
+                    before.prep not in ("with", "without", "of", "for", "about", "between") + FROM and \
+                    before.np.pronoun is None:     # "a bowl with a spoon in it and a knife ...": contents
+                return k
+        return None
+
+    def said(self, verb: Word, objects: list[NP], items: list[Item]) -> NP | None:
+        """What a verb of saying says when it is a clause without a wh-word: "tell him *dinner is
+        ready*" (a noun phrase, then "is"), from the object after the person told."""
+        if not objects or not items or not (isinstance(items[0], Word) and items[0].tag == "BE") or \
+                str(verb.info) not in self.speech:
+            return None
+        first = objects[1] if len(objects) >= 2 else objects[0]
+        stop = next((j for j, x in enumerate(items) if isinstance(x, PP) and x.prep in ("to", "for")
+                     and x.np.kind in ("person", "pronoun")), len(items))
+        end = max(end_of(x) for x in items[:stop])
+        del objects[objects.index(first):]
+        del items[:stop]
+        head = Word(self.text[first.start:end], first.start, end, "WORD")
+        return NP(first.start, end, head, "message")
+
+    @staticmethod
+    def in_hand(items: list[Item]) -> list[NP]:
+        """Take out "with X in hand" ("in his hands"): X is held while the clause is done."""
+        held = []
+        k = 0
+        while k + 1 < len(items):
+            first, second = items[k], items[k + 1]
+            if isinstance(first, PP) and first.prep == "with" and isinstance(second, PP) and second.prep == "in" \
+                    and second.np.head is not None and second.np.head_text == "hand" and not second.np.of:
+                held.append(first.np)
+                del items[k:k + 2]
+                continue
+            k += 1
+        return held
+
+    @staticmethod
+    def coordinate(items: list[Item]) -> list[Item]:
+        """Join "NP and NP" into one phrase with conjuncts."""
+        out: list[Item] = []
+        i = 0
+        while i < len(items):
+            item = items[i]
+            last = out[-1] if out else None
+            if (isinstance(item, Word) and item.tag == "AND_NP" and item.lower == "or" and isinstance(last, PP)
+                    and i + 1 < len(items)):
+                alternative = items[i + 1]
+                if isinstance(alternative, PP):     # "on the desk or in the bedroom"
+                    items = [*items[:i + 1], alternative.np, *items[i + 2:]]
+            other = items[i + 1] if i + 1 < len(items) else None
+            if isinstance(item, Word) and item.tag == "AND_NP" and isinstance(last, NP | PP) and \
+                    isinstance(other, NP):
+                host = last.np if isinstance(last, PP) else last
+                if item.lower == "or":               # "an apple or a pear": either will do, the first
+                    host.end = other.end
+                    i += 2
+                    continue
+                if host.contents and host.contents[-1].end == host.end:   # "a pot containing a knife and
+                    content = host.contents[-1]                             # a slice": both in the pot
+                    if not content.conjuncts:
+                        content.conjuncts.append(_copy(content))
+                    content.conjuncts.append(other)
+                    content.end = host.end = other.end
+                    content.plural = True
+                    i += 2
+                    continue
+                if not host.conjuncts:
+                    host.conjuncts.append(_copy(host))
+                host.conjuncts.append(other)
+                host.end = other.end
+                host.plural = True
+                i += 2
+                continue
+            out.append(item)
+            i += 1
+        return out
+
+    @staticmethod
+    def containing(items: list[Item]) -> list[Item]:
+        """Read "a pan with a spoon in it": the spoon is a content of the pan (and "in it" no goal)."""
+        out: list[Item] = []
+        i = 0
+        while i < len(items):
+            item = items[i]
+            nxt = items[i + 1] if i + 1 < len(items) else None
+            last = out[-1] if out else None
+            host = last.np if isinstance(last, PP) else last if isinstance(last, NP) else None
+            if (host is not None and isinstance(item, PP) and item.prep == "with" and isinstance(nxt, PP)
+                    and nxt.prep in ("in", "on", "inside") and nxt.np.pronoun in ("it", "them")):
+                host.contents.append(item.np)
+                host.end = max(host.end, nxt.np.end)
+                i += 2
+                continue
+            out.append(item)
+            i += 1
+        return out
+
+    def message(self, items: list[Item]) -> NP | None:
+        """A question said as the message ("tell me *what day is today*"): from the wh-word on,
+        up to a final "to <person>" phrase. "how many" is no message (it asks to count)."""
+        for k, item in enumerate(items):
+            if isinstance(item, Word) and item.tag == "SAID":   # "tell him we need a cart": said without "that"
+                del items[k]
+                return NP(item.start, item.end, Word(item.text, item.start, item.end, "WORD"), "message")
+            if isinstance(item, Word) and item.tag == "WH":
+                nxt = items[k + 1] if k + 1 < len(items) else None
+                if item.lower == "how" and isinstance(nxt, NP) and nxt.quantity is not None:
+                    items.pop(k)
+                    return None
+                stop = next((j for j in range(k + 1, len(items)) if _to_person(items[j])), len(items))
+                end = max(end_of(x) for x in items[k:stop]) if stop > k else item.end
+                start = item.start
+                if item.lower in ("that", "to") and stop > k + 1:   # "tell him that ...", "tell her to ..."
+                    start = items[k + 1].start
+                head = Word(self.text[start:end], start, end, "WORD")
+                del items[k:stop]
+                return NP(start, end, head, "message")
+        return None
+
+    # -- clause to clause ----------------------------------------------------------------------
+    @staticmethod
+    def subordinate(clauses: list[Clause]) -> None:
+        """Order the clauses of subordinate clauses said with a subordinator before their verb: one
+        that a clause follows is subordinate to it ("*before you go* to the garage, turn off the
+        lights": the lights first; "*when you reach* the kitchen, open the fridge": in order); the
+        last one is subordinate to the clause before it ("put them away, *after you wash* them")."""
+        k = 0
+        while k < len(clauses):
+            sub = clauses[k].sub
+            if sub is not None and k + 1 < len(clauses) and sub == "before":
+                clauses[k], clauses[k + 1] = clauses[k + 1], clauses[k]
+                k += 2
+                continue
+            if sub is not None and k + 1 == len(clauses) and k > 0 and sub in FIRST_LATER:
+                clauses[k - 1], clauses[k] = clauses[k], clauses[k - 1]
+            k += 1
+
+    @staticmethod
+    def share_objects(clauses: list[Clause], joins: Sequence[str]) -> None:
+        """"slice and chill an apple": a verb said bare before "and" shares the next clause's object."""
+        for k in range(len(clauses) - 1):
+            bare, nxt = clauses[k], clauses[k + 1]
+            if not (bare.objects or bare.items or bare.message or bare.held) and nxt.objects and \
+                    not set(joins[k + 1].split()) - {"and", "then", ",", "plus", "as", "well"}:
+                bare.objects = [nxt.objects[0]]
+
+    def order(self, clauses: list[Clause], joins: Sequence[str]) -> list[Clause]:
+        """The clauses in the order they are to be done: "turn on the lamp while holding a clock" holds
+        it first, but "carry a clock while turning on a lamp" is already holding it (the one that takes
+        a thing in hand comes first); "A after B", "A when done B" do B first, and a clause of B that
+        leaves its object unsaid takes A's."""
+        ordered: list[Clause] = []
+        for clause, join in zip(clauses, joins, strict=True):
+            together = "while" in join.split() or join.split()[:1] == ["as"] and join != "as well as"
+            if together and ordered and not (self.takes(ordered[-1]) and not self.takes(clause)) \
+                    or (join in ("when done", "once done") or join in FIRST_LATER) and ordered:  # "A after B": B first
+                if not (clause.objects or clause.message) and ordered[-1].objects:
+                    clause.objects = [ordered[-1].objects[0]]     # "put it away when done heating": it
+                elif clause.objects and clause.objects[0].pronoun in ("it", "them") and ordered[-1].objects and \
+                        not ordered[-1].objects[0].pronoun:
+                    clause.objects[0] = ordered[-1].objects[0]    # "put the dishes away after you wash them"
+                ordered.insert(len(ordered) - 1, clause)
+            else:
+                ordered.append(clause)
+        return ordered
+
+    def takes(self, clause: Clause) -> bool:
+        """Whether the clause's verb takes a thing in hand (a frame of it has ``holding(theme)`` as a
+        result: "hold", "carry", "pick up")."""
+        return any(frame.elements and any(p.predicate == "holding" and not p.negated and
+                                          p.args == (frame.elements[0].role,) for p in frame.postconditions)
+                   for frame in self.types.evoked_by(str(clause.verb.info)))
+
+    def light_verb(self, clause: Clause) -> None:
+        """"give the sauce *a quick stir*": "give" with a thing and "a" (adjectives) and a noun that is a lexical
+        unit of the library is that unit's frame, done to the thing (the construction of "take a look at"):
+        the clause's ``unit`` becomes the noun. A person keeps "give" ("give me a hand")."""
+        if str(clause.verb.info) not in LIGHT_VERBS or len(clause.objects) != 2:
+            return
+        thing, act = clause.objects
+        if thing.kind == "person" or act.head is None or act.head.tag != "WORD" or act.of is not None or \
+                act.plural or act.quantity is not None or act.relative or \
+                self.text[act.start:act.end].split(None, 1)[0].lower() not in ("a", "an", "another"):
+            return
+        unit = act.head.lower
+        frames = self.types.evoked_by(unit)
+        if not frames or not all(f.elements and not self.types.is_person(f.elements[0].type) for f in frames):
+            return
+        clause.objects = [thing]
+        clause.unit = unit
+
+
+def _copy(np: NP) -> NP:
+    """The first conjunct of a coordination: the phrase as it was, without the others."""
+    return replace(np, conjuncts=[])
+
+
+def _to_person(item: Item) -> bool:
+    """A "to"/"for" phrase naming a person (or a pronoun): whom a message is for."""
+    return isinstance(item, PP) and item.prep in ("to", "for") and item.np.kind in ("person", "pronoun")

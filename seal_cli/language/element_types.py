@@ -1,0 +1,76 @@
+"""The library's element types, asked the same few questions many times by the builder: memoised."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from seal_cli.frames.library import Library
+from seal_cli.frames.model import Frame
+
+__all__ = ["Types"]
+
+
+class Types:
+    """The library's taxonomy, asked the same few questions many times: memoised."""
+
+    def __init__(self, library: Library) -> None:
+        self.taxonomy = library.taxonomy
+        self._is_a: dict[tuple[str, str], bool | None] = {}
+        self._open: dict[str, bool] = {}
+        self._roles: dict[str, frozenset[str]] = {}
+        self._relations: dict[str, Any] = {}
+        self._states: dict[str, bool] = {}
+        self._evoked: dict[str, tuple[Frame, ...]] = {}
+        self._library = library
+
+    def evoked_by(self, unit: str) -> tuple[Frame, ...]:
+        """The frames a lexical unit evokes (:meth:`Library.evoked_by`, memoised by unit)."""
+        found = self._evoked.get(unit)
+        if found is None:
+            found = self._evoked[unit] = self._library.evoked_by(unit)
+        return found
+
+    def roles(self, frame: Frame) -> frozenset[str]:
+        """The frame's element roles (asked for every phrase of every clause: memoised by name)."""
+        found = self._roles.get(frame.name)
+        if found is None:
+            found = self._roles[frame.name] = frozenset(e.role for e in frame.elements)
+        return found
+
+    def makes_state(self, frame: Frame) -> bool:
+        """Whether the frame's result is a state of its first element and it puts it nowhere (Slice:
+        ``sliced(theme)``, no goal); memoised by name."""
+        found = self._states.get(frame.name)
+        if found is None:
+            first = frame.elements[0].role if frame.elements else None
+            found = self._states[frame.name] = "goal" not in self.roles(frame) and any(
+                not p.negated and p.args == (first,) for p in frame.postconditions)
+        return found
+
+    def relation(self, frame: Frame) -> Any:
+        """The frame's positive postcondition relating its first element to another
+        (``in(theme, goal)``), or None; memoised by name."""
+        if frame.name not in self._relations:
+            first = frame.elements[0].role if frame.elements else None
+            self._relations[frame.name] = next((p for p in frame.postconditions if not p.negated
+                                                and len(p.args) == 2 and p.args[0] == first), None)
+        return self._relations[frame.name]
+
+    def is_a(self, cls: str, type_: str) -> bool | None:
+        key = (cls, type_)
+        if key not in self._is_a:
+            self._is_a[key] = self.taxonomy.is_a(cls, type_)
+        return self._is_a[key]
+
+    def is_open(self, type_: str) -> bool:
+        if type_ not in self._open:
+            self._open[type_] = self.taxonomy.is_open(type_)
+        return self._open[type_]
+
+    def is_person(self, type_: str) -> bool:
+        """A type only people belong to (``person``)."""
+        return self.is_a("person", type_) is True and not self.is_open(type_)
+
+    def is_location(self, type_: str) -> bool:
+        """A type rooms belong to (``location``): where things are, not what they are."""
+        return not self.is_open(type_) and self.is_a("room", type_) is True

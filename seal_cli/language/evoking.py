@@ -1,0 +1,494 @@
+"""One clause → the frames it evokes: which frame of the verb (:meth:`Evoker.clause`), the frames
+that must come first (result words, contents, pieces to cut, things to hold: the implied frames),
+the clause's own frame with its elements as :class:`~seal_cli.language.values.Phrase` values, and
+what is put where after it. Role choice is :mod:`seal_cli.language.roles`, reference
+:mod:`seal_cli.language.reference`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import replace
+from typing import TYPE_CHECKING, Any
+
+from seal_cli.frames.library import Library
+from seal_cli.frames.model import Frame
+from seal_cli.language.element_types import Types
+from seal_cli.language.grounding import PIECES, PORTIONS
+from seal_cli.language.lexicon import Word, noun_lemma
+from seal_cli.language.morphology import is_gradable
+from seal_cli.language.reference import PLACES, Reference
+from seal_cli.language.roles import PUT_IN, TO, Roles
+from seal_cli.language.syntax import NP, PP, Clause
+from seal_cli.language.values import Evoked, Parse, Phrase
+
+if TYPE_CHECKING:
+    from seal_cli.language.grounding import Vocabulary
+
+__all__ = ["Evoker", "Fit"]
+
+
+Fit = tuple[tuple[float, ...], Frame, dict[str, Any], list[tuple[NP, PP]]]
+"""A frame chosen for a clause: its key (higher is better), the frame, its elements (role → phrase)
+and the phrases that describe a noun instead (:data:`seal_cli.language.roles.Assignment`)."""
+
+
+class Evoker:
+    """Builds the frames of one command's clauses, in order, into :attr:`frames`."""
+
+    def __init__(self, text: str, library: Library, types: Types, vocabulary: Vocabulary | None,
+                 words: Sequence[Word], remarks: Sequence[tuple[int, int]] = ()) -> None:
+        self.text = text
+        self.library = library
+        self.types = types
+        self.vocabulary = vocabulary
+        self.frames: list[Evoked] = []
+        self.reference = Reference(text, library, types, words, remarks, self.frames)
+        self.roles = Roles(types, vocabulary, self.reference, self.frames)
+        self.cut: set[int] = set()                     # noun phrases of pieces already seen to (cut_for)
+        self.clause_frames = 0                         # frames of the clauses before the one being built
+
+    def command(self, clauses: Iterable[Clause]) -> Parse:
+        """The parse of the clauses (in the order they are to be done)."""
+        for clause in clauses:
+            self.clause(clause)
+        return Parse(self.text, tuple(self.frames))
+
+    # -- one clause → frames -----------------------------------------------------------------
+    def clause(self, clause: Clause) -> None:
+        """The clause's frames: what it implies first (things held), then its own (:meth:`choose`)."""
+        self.clause_frames = len(self.frames)
+        unit = clause.unit or str(clause.verb.info)
+        frames = self.types.evoked_by(unit)
+        used = [x for x in clause.items if isinstance(x, PP) and x.lead and x.prep == "with"]
+        if used and not any("instrument" in self.types.roles(f) for f in frames):
+            clause.held += [x.np for x in used]             # "use a card to turn on the lamp": hold it
+            clause.items = [x for x in clause.items if not any(x is u for u in used)]
+        for np in clause.held:
+            self.hold(np)
+        if frames and all(self.makes_state(f) for f in frames):
+            clause.result = [x for x in clause.items if isinstance(x, PP) and self.is_form(x)]
+            clause.items = [x for x in clause.items if not any(x is r for r in clause.result)]
+        unit, best = self.choose(unit, self.accompanying(frames, clause) or frames, clause)
+        _, frame, roles, attached = self.moving(best, self.types.evoked_by(unit), clause)
+        self.first_into(frame, roles, attached)
+        self.emit(frame, unit, clause, roles, attached)
+
+    def choose(self, unit: str, frames: Sequence[Frame], clause: Clause) -> tuple[str, Fit]:
+        """The frame of the verb that takes the clause best (:meth:`best_fit`), with the lexical unit
+        said; when none takes every phrase, the one that takes the most."""
+        best = self.best_fit(frames, clause)
+        head = unit.split()[0]
+        if best is None and head != unit and self.types.evoked_by(head):
+            # "take the trash out to the garage": no frame of "take out" has a goal, one of "take" has
+            best = self.best_fit(self.types.evoked_by(head), clause)
+            if best is not None:
+                unit, frames = head, self.types.evoked_by(head)
+        if (best is None or "recipient" not in self.types.roles(best[1])) and self.recipient_said(clause):
+            brings = self.bringing(frames)   # "grab me a beer", "grab a beer from the fridge for me": Bring
+            found = self.best_fit(brings, clause) if brings else None
+            if found is not None:
+                best = found
+        if best is None:                     # no frame takes every phrase: the best that takes the most
+            for order, frame in enumerate(frames):
+                assigned = self.roles.assign(frame, clause, strict=False)
+                assert assigned is not None
+                roles, attached, score = assigned
+                key = (score - 5 * len(clause.items), -self.unfilled(frame, roles), -order)
+                if best is None or key > best[0]:
+                    best = (key, frame, roles, attached)
+        assert best is not None
+        return unit, best
+
+    def accompanying(self, frames: Sequence[Frame], clause: Clause) -> list[Frame] | None:
+        """"go *with Sam*", "walk with the visitor to the door": a verb of going somewhere, no object,
+        and "with" a person is moving together with them — the library's frames that move with a person
+        (the first element a person, and a goal). With a goal said, the one that brings the person
+        there (its result relates them to the goal: Guide's ``at(theme, goal)``); without, one that
+        does not (Follow: where they go). The person becomes the object; None when this is not it."""
+        if clause.objects or clause.message or not any(f.elements and f.elements[0].role == "goal" for f in frames) \
+                or any("instrument" in self.types.roles(f) for f in frames):
+            return None
+        company = next((x for x in clause.items if isinstance(x, PP) and x.prep == "with" and not x.lead and
+                        self.roles.kind(x.np, None, None) == "person"), None)
+        if company is None:
+            return None
+        together = [f for f in self.library.frames if f.elements and self.types.is_person(f.elements[0].type)
+                    and "goal" in self.types.roles(f)]
+        leading = [f for f in together if _relates_to_goal(self.types.relation(f))]
+        goal_said = any(isinstance(x, PP) and x.prep in TO for x in clause.items)
+        chosen = leading if goal_said else [f for f in together if f not in leading]
+        if not chosen:
+            return None
+        clause.items = [x for x in clause.items if x is not company]
+        clause.objects = [company.np]
+        return chosen
+
+    def moving(self, best: Fit, frames: Sequence[Frame], clause: Clause) -> Fit:
+        """"*get to* the kitchen", "get into the bedroom": a verb of taking (one of its ``frames`` gets its
+        theme in hand: Pick) said with no object, only where to, and nothing earlier to take along, is
+        going there — the library's frames whose first element is the goal (Go), when one takes the
+        clause; else the frame as chosen ("put in the cabinet" stays Place: "put" takes nothing)."""
+        _, frame, roles, _ = best
+        first = frame.elements[0].role if frame.elements else None
+        if first is None or first in roles or clause.objects or clause.message or not roles or \
+                any(role not in PLACES for role in roles) or not any(self.achieves_holding(f) for f in frames):
+            return best
+        if self.frames and self.roles.needs_in_hand(frame) and self.reference.implicit(frame, first) is not None:
+            return best                      # "pick up the cup and get [it] to the kitchen"
+        going = [f for f in self.library.frames if f.elements and f.elements[0].role == "goal"]
+        return self.best_fit(going, clause) or best
+
+    def makes_state(self, frame: Frame) -> bool:
+        """Whether the frame's result is a state of its first element and it puts it nowhere (Slice:
+        ``sliced(theme)``, no goal)."""
+        return self.types.makes_state(frame)
+
+    @staticmethod
+    def is_form(pp: PP) -> bool:
+        """Whether a phrase says the form the action leaves its theme in: "*into slices*", "into eight
+        pieces", "into cubes", "*in half*" (a portion, a number of things, or things said bare)."""
+        np = pp.np
+        if np.head is None or np.kind != "thing" or np.pronoun is not None or pp.prep not in ("into", "in"):
+            return False
+        head = noun_lemma(np.head.text)
+        if head in PORTIONS or head == "half":
+            return True
+        first = np.mods[0] if np.mods else np.head
+        bare_plural = np.plural and first.start == np.start and not np.of
+        return pp.prep == "into" and (np.quantity is not None or bare_plural)
+
+    def recipient_said(self, clause: Clause) -> bool:
+        """Whether the clause names someone to receive: an indirect object, or "for"/"to" a person."""
+        return len(clause.objects) >= 2 and self.roles.kind(clause.objects[0], None, None) == "person" or any(
+            isinstance(x, PP) and x.prep in ("for", "to") and self.roles.kind(x.np, None, None) == "person"
+            for x in clause.items)
+
+    def bringing(self, frames: Sequence[Frame]) -> list[Frame]:
+        """For a verb of taking (a frame of it gets its theme in hand: Pick), the frames that take a
+        thing in hand to someone (a recipient, and ``holding(theme)`` before): taking a thing for a
+        person is bringing it to them, so those that also say where it is taken from (a source) when
+        any does. Empty for any other verb."""
+        if not any(self.achieves_holding(f) for f in frames):
+            return []
+        handing = [f for f in self.library.frames if f not in frames and "recipient" in self.types.roles(f)
+                   and f.elements and any(p.predicate == "holding" and p.args == (f.elements[0].role,)
+                                          and not p.negated for p in f.preconditions)]
+        fetching = [f for f in handing if "source" in self.types.roles(f)]
+        return fetching or handing       # "grab me two eggs": taken from where they are, so Bring, not Give
+
+    @staticmethod
+    def achieves_holding(frame: Frame) -> bool:
+        first = frame.elements[0].role if frame.elements else None
+        return first is not None and any(p.predicate == "holding" and p.args == (first,) and not p.negated
+                                          for p in frame.postconditions)
+
+    def best_fit(self, frames: Sequence[Frame], clause: Clause) -> Fit | None:
+        """The frame that takes every phrase of the clause best (fewest elements left empty, then
+        library order), or None when none takes them all."""
+        best: Fit | None = None
+        for order, frame in enumerate(frames):
+            assigned = self.roles.assign(frame, clause, strict=True)
+            if assigned is None:
+                continue
+            roles, attached, score = assigned
+            key = (score, -self.unfilled(frame, roles), -order)
+            if best is None or key > best[0]:
+                best = (key, frame, roles, attached)
+        return best
+
+    def first_into(self, frame: Frame, roles: dict[str, Any], attached: list[tuple[NP, PP]]) -> None:
+        """"Put a spoon *in a bowl* into the sink": the spoon goes into the bowl, and the bowl (a
+        container) into the sink (:meth:`carry_on`)."""
+        relation = self.types.relation(frame)
+        if relation is None or not isinstance(roles.get(relation.args[1]), NP):
+            return
+        theme, goal = roles.get(relation.args[0]), roles[relation.args[1]]
+        for k, (host, pp) in enumerate(attached):
+            if host is theme and pp.prep in PUT_IN and pp.np.kind == "thing" and not pp.np.pronoun and \
+                    not pp.describes and \
+                    self.types.is_a(self.roles.class_or_head(pp.np), "container") is True:
+                roles[relation.args[1]] = pp.np
+                attached[k] = (pp.np, PP("into", goal, goal.start))
+                return
+
+    def unfilled(self, frame: Frame, roles: Mapping[str, Any]) -> int:
+        """Elements the clause leaves empty; an object left unsaid that the frame before has in hand
+        is not empty ("heat the mug, move [it] to the cabinet": Place, not Go)."""
+        first = frame.elements[0].role if frame.elements else None
+        held = first is not None and first not in roles and bool(self.frames) and any(
+            p.predicate == "holding" and p.args == (first,) for p in frame.preconditions) and \
+            self.reference.implicit(frame, first) is not None
+        return sum(1 for e in frame.elements if e.role not in roles) - int(held)
+
+    # -- frames out ----------------------------------------------------------------------------
+    def emit(self, frame: Frame, unit: str, clause: Clause, roles: dict[str, Any],
+             attached: list[tuple[NP, PP]]) -> None:
+        theme = frame.elements[0].role if frame.elements else ""
+        holds_nothing = "instrument" not in frame.roles and not any(
+            not p.negated and len(p.args) == 2 and p.args[0] == theme for p in frame.postconditions)
+        for host, pp in attached:
+            if pp.after_relative and host.relative is not None:
+                host.relative = self.text[host.relative_start:pp.np.end]
+                continue
+            host.end = max(host.end, pp.np.end)
+            if pp.prep == "with" and pp.np.kind != "person" and (host.kind != "person" or host.pronoun):
+                if holds_nothing and host is roles.get(theme) and pp.np.kind == "thing" and not pp.np.pronoun:
+                    self.hold(pp.np)     # "turn on the lamp with the remote": held while it is done
+                else:
+                    host.contents.append(pp.np)
+        self.asker(frame, roles)
+        # frames evoked by result words and contents, in the order of the words
+        for role in frame.roles:
+            np = roles.get(role)
+            if isinstance(np, NP):
+                self.prepare(np, frame, role, roles)
+        elements: dict[str, Phrase] = {}
+        for element in frame.elements:
+            np = roles.get(element.role)
+            if np is not None:
+                elements[element.role] = self.phrase(np, frame, element.role)
+        first = frame.elements[0] if frame.elements else None
+        if first is not None and first.role not in elements and self.frames and \
+                any(p.predicate == "holding" and p.args == (first.role,) for p in frame.preconditions):
+            implicit = self.reference.implicit(frame, first.role)
+            if implicit is not None:
+                elements = {first.role: implicit, **elements}
+        for element in frame.elements:
+            if element.role not in elements and element.default is not None:
+                elements[element.role] = Phrase(None, element.default, self.ground_name(element.default),
+                                                default=True)
+        ordered = {e.role: elements[e.role] for e in frame.elements if e.role in elements}
+        self.frames.append(Evoked(frame.name, unit, (clause.start, clause.end), ordered,
+                                  "; ".join(clause.conditions) or None,
+                                  " ".join(self.text[r.start:r.np.end] for r in clause.result) or None,
+                                  " ".join(w.text for w in clause.items if isinstance(w, Word) and w.info == "time")
+                                  or None))
+        self.carry_on(frame, roles, attached)
+
+    @staticmethod
+    def asker(frame: Frame, roles: dict[str, Any]) -> None:
+        """Whose question is answered gets the answer: "answer *Jorge*'s question", "answer the question *of
+        the girl in the kitchen*" (the possessor, or the person of an "of" phrase with what describes them,
+        is the recipient when none is said)."""
+        first = frame.elements[0] if frame.elements else None
+        theme = roles.get(first.role) if first is not None and first.type == "question" else None
+        if not isinstance(theme, NP) or "recipient" not in frame.roles or "recipient" in roles:
+            return
+        if theme.possessor is not None and theme.possessor.kind == "person":
+            roles["recipient"] = theme.possessor
+        elif theme.of is not None and theme.of.kind == "person" and theme.of.pronoun is None:
+            roles["recipient"] = replace(theme.of, end=max(theme.of.end, theme.end))
+
+    def carry_on(self, frame: Frame, roles: Mapping[str, Any], attached: list[tuple[NP, PP]]) -> None:
+        """"Put an apple in a pan *on the table*": a container the theme goes into, said to be in
+        or on a place, is put there too, after (a pan already there stays: the planner skips it).
+        Only when the frame's goal may be a place (a room is one): "pour water into the bowl *in
+        kennel 2*" says where the bowl is (Pour's goal is a container; the water is poured, not put)."""
+        first = frame.elements[0].role if frame.elements else None
+        relation = next((p for p in frame.postconditions if not p.negated and len(p.args) == 2
+                         and p.args[0] == first and isinstance(roles.get(p.args[1]), NP)), None)
+        if relation is None or self.types.is_a("room", frame.element(relation.args[1]).type) is not True:
+            return                                   # the goal may be no place: a container only
+        goal = roles[relation.args[1]]
+        for host, pp in attached:
+            if host is goal and pp.prep in PUT_IN and not pp.np.pronoun and goal.kind == "thing" and not pp.describes \
+                    and \
+                    self.types.is_a(self.roles.class_or_head(goal), "container") is True:
+                self.put(goal, pp.np, relation.predicate)
+                return
+
+    def prepare(self, np: NP, frame: Frame, role: str, roles: Mapping[str, Any]) -> None:
+        """Frames that must come first: result words ("heated") and contents ("with a fork")."""
+        cutting = self.cutting(noun_lemma(np.head.text)) if np.head is not None else None
+        if cutting is not None and cutting[0].name == frame.name and frame.elements and \
+                role == frame.elements[0].role:
+            self.cut.update(id(c) for c in (np, *np.conjuncts))   # "cut a tomato slice": this frame cuts it
+        for inner in np.inner:
+            self.results_of(inner)
+        if np.results and role == "instrument":
+            np.results = []              # "wipe the table with a clean cloth": the tool as it is, no Clean first
+        if np.results and frame.elements and role == frame.elements[0].role:
+            if "source" in roles:
+                np.results = []          # "take the clean mugs out of the dishwasher": the thing as it is
+            undone = {p.predicate for p in frame.postconditions if p.negated and p.args == (role,)}
+            np.results = [w for w in np.results if not undone & self.result_states(w)]   # "heat the frozen peas"
+        self.results_of(np)
+        if np.contents and role == (frame.elements[0].role if frame.elements else None):
+            relation = next((p for p in frame.postconditions if not p.negated and len(p.args) == 2
+                             and p.args[0] == role and p.args[1] in roles), None)
+            if relation is not None:
+                for content in np.contents:
+                    self.results_of(content)
+                    self.put(content, np, relation.predicate)
+
+    def result_states(self, word: Word) -> set[str]:
+        """The states a result word's frame gives its theme (``cold`` for "frozen")."""
+        frame = self.library.frame(word.info[0])  # type: ignore[index]
+        first = frame.elements[0].role if frame.elements else None
+        return {p.predicate for p in frame.postconditions if not p.negated and p.args == (first,)}
+
+    def results_of(self, np: NP) -> None:
+        if np.conjuncts:                 # "a heated apple and a chilled pear": each its own
+            for conjunct in np.conjuncts:
+                self.results_of(conjunct)
+            np.results = []
+            return
+        self.cut_for(np)
+        for word in np.results:
+            info: tuple[str, str] = word.info  # type: ignore[assignment]
+            frame_name, unit = info
+            frame = self.library.frame(frame_name)
+            first = frame.elements[0].role
+            theme = self.phrase(np, frame, first)
+            if any(e.frame == frame.name and first in e.elements and self.same_thing(e.elements[first], theme)
+                   for e in self.frames):
+                continue                 # "a chilled, cut slice": cut once
+            self.frames.append(Evoked(frame.name, unit, (word.start, word.end),
+                                      {first: theme} | self.defaults(frame, {first})))
+        np.results = []
+
+    def cutting(self, noun: str) -> tuple[Frame, str] | None:
+        """The frame that cuts a thing into pieces, and its lexical unit: the one the piece's noun
+        names ("slice"), else the one of "cut", whose result is a state of its theme (``sliced``)."""
+        for unit in (noun, "cut"):
+            for frame in self.types.evoked_by(unit):
+                first = frame.elements[0].role if frame.elements else None
+                if any(not p.negated and p.args == (first,) for p in frame.postconditions):
+                    return frame, unit
+        return None
+
+    def cut_for(self, np: NP) -> None:
+        """A piece cut from a whole ("an apple *slice*", "a *piece* of bread", ``grounding.PIECES``)
+        exists once the whole has been cut: the cutting frame comes first, on the whole, unless the
+        command has cut it already ("slice the bread and take a slice")."""
+        if np.head is None or np.head.tag != "WORD" or np.kind != "thing" or noun_lemma(np.head.text) not in PIECES \
+                or id(np) in self.cut:
+            return
+        self.cut.add(id(np))
+        found = self.cutting(noun_lemma(np.head.text))
+        if found is None:
+            return
+        frame, unit = found
+        first = frame.elements[0].role
+        whole = self.phrase(np, frame, first)
+        if whole.refers_to is not None or whole.cls is None and not (_whole_named(np) or np.of):
+            return                                         # no whole named: "take a (little) slice" (see phrase)
+        if any(e.frame == frame.name and first in e.elements and self.same_thing(e.elements[first], whole)
+               for e in self.frames):
+            return
+        self.frames.append(Evoked(frame.name, unit, (np.start, np.end), {first: whole} | self.defaults(frame, {first})))
+
+    def cut_from(self, np: NP) -> tuple[int, str] | None:
+        """For a piece that names no whole ("take *a slice*"), the theme of the latest frame that cut
+        something in this command: what the piece was cut from."""
+        if np.head is None or np.head.tag != "WORD" or _whole_named(np) or np.of is not None or \
+                noun_lemma(np.head.text) not in PIECES:
+            return None
+        found = self.cutting(noun_lemma(np.head.text))
+        if found is None:
+            return None
+        frame = found[0]
+        first = frame.elements[0].role
+        for index in range(len(self.frames) - 1, -1, -1):
+            if self.frames[index].frame == frame.name and first in self.frames[index].elements:
+                return index, first
+        return None
+
+    def same_thing(self, a: Phrase, b: Phrase) -> bool:
+        if a.refers_to is not None or b.refers_to is not None:
+            ra = a.refers_to or ()
+            rb = b.refers_to or ()
+            return bool(ra and ra == rb)
+        return (a.cls or a.head) == (b.cls or b.head)
+
+    def hold(self, np: NP) -> None:
+        """The frame that gets ``np`` in hand (``holding(theme)``: Pick), before the clause."""
+        for frame in sorted(self.library.achievers("holding"), key=lambda f: len(f.elements)):
+            first = frame.elements[0].role if frame.elements else None
+            if first is not None and any(p.predicate == "holding" and p.args == (first,) and not p.negated
+                                         for p in frame.postconditions):
+                self.results_of(np)
+                elements = {first: self.phrase(np, frame, first)}
+                last = (len(self.frames) - 1, first)
+                if self.frames and elements[first].refers_to == last and self.frames[-1].frame == frame.name:
+                    return                           # "pick up a card and use it to ...": in hand already
+                self.frames.append(Evoked(frame.name, frame.lexical_units[0].text if frame.lexical_units else "",
+                                          (np.start, np.end), elements | self.defaults(frame, elements)))
+                return
+
+    def put(self, content: NP, container: NP, predicate: str) -> None:
+        """The frame that makes ``predicate(content, container)`` true (Place for ``in``)."""
+        for frame in sorted(self.library.achievers(predicate), key=lambda f: len(f.elements)):
+            fact = next(p for p in frame.postconditions if p.predicate == predicate and not p.negated)
+            if len(fact.args) == 2 and fact.args[0] == frame.elements[0].role:
+                elements = {fact.args[0]: self.phrase(content, frame, fact.args[0]),
+                            fact.args[1]: self.phrase(container, frame, fact.args[1])}
+                self.frames.append(Evoked(frame.name, frame.lexical_units[0].text if frame.lexical_units else "",
+                                          (content.start, content.end), elements | self.defaults(frame, elements)))
+                return
+
+    def defaults(self, frame: Frame, have: Iterable[str]) -> dict[str, Phrase]:
+        have = set(have)
+        return {e.role: Phrase(None, e.default, self.ground_name(e.default), default=True)
+                for e in frame.elements if e.default is not None and e.role not in have}
+
+
+    def phrase(self, np: NP, frame: Frame, role: str) -> Phrase:
+        if np.pronoun is not None and (np.kind in ("pronoun", "thing") or np.pronoun in ("him", "her", "he", "she")) \
+                and np.pronoun not in ("something", "everything", "anything", "nothing"):
+            found = self.reference.antecedent(np, frame, role)
+            if found is not None:
+                index, name, _ = found
+                target = self.frames[index].elements[name]
+                ref = target.refers_to or (index, name)
+                root = self.frames[ref[0]].elements[ref[1]]
+                return Phrase(self.text[np.start:np.end], root.head, root.cls, found[2], ref, root.quantity,
+                              root.plural, span=(np.start, np.end))
+            said = self.reference.mentioned(np, frame, role)
+            if said is not None:                    # "Bogdan has a question; answer it for him"
+                person = said.name or self.types.is_a(noun_lemma(said.head), "person") is True
+                return Phrase(self.text[np.start:np.end], said.head if said.name else noun_lemma(said.head),
+                              None, "person" if person else "thing", span=(np.start, np.end))
+            return Phrase(self.text[np.start:np.end], np.head_text, None,
+                          "thing" if np.kind == "pronoun" and np.pronoun == "it" else
+                          "person" if np.kind == "pronoun" else np.kind, span=(np.start, np.end))
+        if np.there:
+            place = self.reference.place_before(self.clause_frames)
+            if place is not None:                   # "go to the garage and count the bikes there"
+                root = self.frames[place[0]].elements[place[1]]
+                return Phrase(self.text[np.start:np.end], root.head, root.cls, root.kind, place, root.quantity,
+                              root.plural, span=(np.start, np.end))
+        text = self.text[np.start:np.end]
+        cls = None
+        if self.vocabulary is not None and np.kind != "message":
+            cls = np.ground(self.vocabulary)
+        whole = self.cut_from(np) if cls is None else None
+        if whole is not None:                   # "slice the bread, take a slice": a slice of the bread
+            index, name = whole
+            root = self.frames[index].elements[name]
+            ref = root.refers_to or (index, name)
+            root = self.frames[ref[0]].elements[ref[1]]
+            return Phrase(text, root.head, root.cls, root.kind, ref, None, np.plural, span=(np.start, np.end))
+        modifiers = tuple(noun_lemma(w.text) if w.tag == "WORD" else w.lower for w in np.mods)
+        conjuncts = tuple(self.phrase(c, frame, role) for c in np.conjuncts) if len(np.conjuncts) > 1 else ()
+        return Phrase(text, np.head_text if np.kind != "message" else text, cls, np.kind, None, np.quantity,
+                      np.plural and np.kind != "message", modifiers, span=(np.start, np.end), conjuncts=conjuncts,
+                      relative=np.relative)
+
+
+    def ground_name(self, name: str) -> str | None:
+        if self.vocabulary is None:
+            return name
+        return self.vocabulary.ground_name(name) or name   # a default: the rules alone (langdata)
+
+
+def _whole_named(np: NP) -> bool:
+    """Whether a piece's modifiers name what it is cut from ("an *apple* slice"): a modifier that is no
+    gradable adjective ("the *little* piece", "a *thin* slice" say how it is, not of what)."""
+    return any(not is_gradable(m.lower) for m in np.mods)
+
+
+def _relates_to_goal(relation: Any) -> bool:
+    """Whether a frame's result relates its first element to its goal (``at(theme, goal)``)."""
+    return relation is not None and relation.args[1] == "goal"

@@ -1,0 +1,189 @@
+"""What a pronoun, a bare "there" or an object left unsaid refers to: an element of a frame built
+before (``refers_to``, as (frame index, element)).
+
+* **Pronouns** ("it", "them", "him", "one", ...) refer to the latest element of an earlier frame that
+  can be them (:meth:`Reference.antecedent`): a thing for "it", a person or a plural for "them",
+  preferring one that fits the element's type; a pronoun no frame's element can be stands for what a
+  statement or condition said before named (:meth:`Reference.mentioned`).
+* **A bare "there"** refers to the place named last in an earlier clause (:meth:`Reference.place_before`).
+* **An object left unsaid** refers to the object of the frame before (:meth:`Reference.implicit`), or
+  to the container it was just put in (:meth:`Reference.carried`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from seal_cli.frames.library import Library
+from seal_cli.frames.model import Frame
+from seal_cli.language.element_types import Types
+from seal_cli.language.english import PRONOUNS
+from seal_cli.language.lexicon import Mention, Word, mentions, noun_lemma
+from seal_cli.language.syntax import NP
+from seal_cli.language.values import Evoked, Phrase
+
+__all__ = ["PLACES", "Reference"]
+
+
+PLACES = ("goal", "ground", "source")
+"""The roles that say where (FrameNet's names)."""
+
+
+class Reference:
+    """Reference in one command: asked of the frames built so far (a list the builder appends to)."""
+
+    def __init__(self, text: str, library: Library, types: Types, words: Sequence[Word],
+                 remarks: Sequence[tuple[int, int]], frames: list[Evoked]) -> None:
+        self.text = text
+        self.library = library
+        self.types = types
+        self.words = words
+        self.remarks = remarks
+        self.frames = frames
+        self._mentions: list[Mention] | None = None
+
+    def antecedent(self, np: NP, frame: Frame | None, role: str | None) -> tuple[int, str, str] | None:
+        """(frame index, element, kind) of what a pronoun refers to: the latest element of an
+        earlier frame that can be it (a person for "him", a thing for "it"), fitting the role."""
+        wanted_person: bool | None = None
+        if frame is not None and role is not None:
+            type_ = frame.element(role).type
+            wanted_person = True if self.types.is_person(type_) else None if self.types.is_open(type_) else \
+                bool(self.types.is_a("person", type_))
+        carried = self.carried(frame, role) if np.pronoun in ("it", "them", "they", "both") else None
+        if carried is not None:
+            return carried
+        best: tuple[float, int, str, str] | None = None
+        for index in range(len(self.frames) - 1, -1, -1):
+            evoked = self.frames[index]
+            for rank, (name, phrase) in enumerate(evoked.elements.items()):
+                if phrase.default:
+                    continue
+                target = (index, name)
+                if phrase.refers_to is not None:     # "put it in the fridge, take it out": the apple again
+                    target = phrase.refers_to
+                    if not (0 <= target[0] < len(self.frames)) or target[1] not in self.frames[target[0]].elements:
+                        continue
+                    phrase = self.frames[target[0]].elements[target[1]]
+                kind = phrase.kind
+                if kind in ("message", "place"):
+                    continue
+                if kind == "thing" and np.pronoun in ("him", "her", "he", "she") and \
+                        self.person_by_role(target, phrase):
+                    kind = "person"                  # "meet the plumber ... and take him": a person there
+                if np.pronoun in ("it", "one", "this", "that") and kind == "person":
+                    continue
+                if np.pronoun in ("him", "her") and kind != "person":
+                    continue
+                if np.pronoun in ("them", "they", "ones") and kind != "person" and not phrase.plural \
+                        and wanted_person is not False:
+                    pass
+                score = -(len(self.frames) - index) * 2 - rank * 0.5
+                if self.types.is_location(self.library.frame(evoked.frame).element(name).type):
+                    score -= 1
+                if wanted_person is True:
+                    score += 3 if kind == "person" else -3
+                elif wanted_person is False and kind == "person":
+                    score -= 3
+                if np.pronoun in ("them", "they") and (kind == "person" or phrase.plural):
+                    score += 1
+                if wanted_person is False and kind == "thing" and frame is not None and role is not None:
+                    fits = self.types.is_a(phrase.cls or phrase.head, frame.element(role).type)
+                    score += 3.0 if fits else -3.0 if fits is False else 0.0   # "close it": the fridge
+                if frame is not None and role is not None and self.undoes(frame, role, evoked.frame, name):
+                    score += 3.0       # "open the shed, grab the trowel, then close it": the shed opened
+                if best is None or score > best[0]:
+                    best = (score, target[0], target[1], kind)
+        return None if best is None else best[1:]
+
+    def undoes(self, frame: Frame, role: str, earlier: str, name: str) -> bool:
+        """Whether ``frame`` ends, on its element ``role``, a state the ``earlier`` frame gave its element
+        ``name`` (Close's ``not open(theme)`` undoes Open's ``open(theme)``)."""
+        ended = {p.predicate for p in frame.postconditions if p.negated and p.args == (role,)}
+        return bool(ended) and any(not p.negated and p.args == (name,) and p.predicate in ended
+                                   for p in self.library.frame(earlier).postconditions)
+
+    def mentioned(self, np: NP, frame: Frame, role: str) -> Mention | None:
+        """What a pronoun no frame's element can be stands for in a statement or condition said before it
+        ("*My son Declan* arrives at six; meet him", "*When Ana* arrives, ...", "*The printer*'s jammed, fix
+        it"): him/her the latest person named, it the latest thing (one of the element's type first)."""
+        if self._mentions is None:
+            spans = [*self.remarks, *((w.start, w.end) for w in self.words if w.tag == "COND")]
+            self._mentions = sorted((m for a, b in spans for m in mentions(self.text, a, b)), key=lambda m: m.start)
+        pronoun = np.pronoun or ""
+        if pronoun not in ("him", "her", "he", "she", "it", "this", "that"):
+            return None
+        person = pronoun not in ("it", "this", "that")
+        said = [m for m in self._mentions if m.end <= np.start and
+                (m.name or self.types.is_a(noun_lemma(m.head), "person") is True) == person]
+        if not person:
+            type_ = frame.element(role).type
+            fitting = [m for m in said if noun_lemma(m.head) == type_ or not self.types.is_open(type_)
+                       and self.types.is_a(noun_lemma(m.head), type_) is True]
+            said = fitting or [m for m in said if m.determined and not m.oblique] or [m for m in said if m.determined]
+        return said[-1] if said else None
+
+    def person_by_role(self, target: tuple[int, str], phrase: Phrase) -> bool:
+        """Whether a noun the library does not know as a person is one by the element it fills: an
+        element typed person ("meet *the plumber*", Meet's theme), unless its class is known to be no
+        person; or a noun the taxonomy does not know at all that fills the first element, one a person may
+        fill ("find *the bellhop*": Find's theme is any thing; not "in the kitchen", where it is)."""
+        evoked = self.library.frame(self.frames[target[0]].frame)
+        type_ = evoked.element(target[1]).type
+        known = self.types.is_a(phrase.cls or phrase.head, "person")
+        if known is None and phrase.head.lower() not in PRONOUNS and target[1] == evoked.elements[0].role and \
+                self.types.is_a("person", type_) is True:
+            return True                               # "find the bellhop and tell him ...": one that may be a person
+        return self.types.is_person(type_) and known is not False
+
+    def carried(self, frame: Frame | None, role: str | None) -> tuple[int, str, str] | None:
+        """After "put the pen in a cup", the object of "and move it (them) to the desk" is the cup
+        with the pen in it: moving the pen again would undo what was just done. (Only when both
+        frames put their first element somewhere, and the place was a container.)"""
+        if frame is None or not self.frames or role != (frame.elements[0].role if frame.elements else None):
+            return None
+        if self.types.relation(frame) is None:
+            return None
+        last = self.frames[-1]
+        relation = self.types.relation(self.library.frame(last.frame))
+        if relation is None or relation.args[1] not in last.elements:
+            return None
+        goal = last.elements[relation.args[1]]
+        if goal.default or goal.kind != "thing" or goal.refers_to is not None or \
+                self.types.is_a(goal.cls or goal.head, "container") is not True:
+            return None
+        return len(self.frames) - 1, relation.args[1], "thing"
+    def implicit(self, frame: Frame, role: str) -> Phrase | None:
+        """An object left unsaid refers to the object of the frame before ("and put [it] away"),
+        or to the container it was just put in (:meth:`carried`)."""
+        carried = self.carried(frame, role)
+        if carried is not None:
+            index, name, _ = carried
+            root = self.frames[index].elements[name]
+            return Phrase("", root.head, root.cls, root.kind, (index, name), root.quantity, root.plural)
+        for index in range(len(self.frames) - 1, -1, -1):
+            evoked = self.frames[index]
+            if not evoked.elements:
+                continue
+            name, phrase = next(iter(evoked.elements.items()))
+            if phrase.kind != "thing" or phrase.default:
+                continue
+            target = phrase.refers_to or (index, name)
+            root = self.frames[target[0]].elements[target[1]]
+            return Phrase("", root.head, root.cls, root.kind, target, root.quantity, root.plural)
+        return None
+
+    def place_before(self, before: int) -> tuple[int, str] | None:
+        """The place named last in an earlier clause (a goal, ground or source said, not a default, and no
+        person; through a "there" or pronoun that stood for one), as (frame index, element); None."""
+        best: tuple[int, tuple[int, str]] | None = None
+        for index in range(before):
+            for role, phrase in self.frames[index].elements.items():
+                if phrase.default or phrase.span is None or role not in PLACES:
+                    continue
+                target = phrase.refers_to or (index, role)
+                if self.frames[target[0]].elements[target[1]].kind != "thing":
+                    continue                                  # a person, "here": no place named
+                if best is None or phrase.span[0] >= best[0]:
+                    best = (phrase.span[0], target)
+        return None if best is None else best[1]

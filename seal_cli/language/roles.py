@@ -1,0 +1,235 @@
+"""Which frame element each phrase of a clause fills, and how well it fits.
+
+The roles a preposition may name are data (:data:`PREPOSITION_ROLES`, FrameNet's names): *to/into/
+onto* → recipient (a person) or goal; *for* → recipient (a person); *from/out of/off* → source;
+*with* → instrument; a locative (*in/on/at/near/under...*) → ground, goal, instrument or source. The
+first the frame has and the clause has not filled yet is taken, after the rules of
+:meth:`Roles.role_for` that say when a phrase fills none (it describes the noun before it).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from seal_cli.frames.model import Frame
+from seal_cli.language.element_types import Types
+from seal_cli.language.english import PERSON_PRONOUNS
+from seal_cli.language.lexicon import noun_lemma
+from seal_cli.language.syntax import NP, PP, Clause
+
+if TYPE_CHECKING:
+    from seal_cli.language.grounding import Vocabulary
+    from seal_cli.language.reference import Reference
+    from seal_cli.language.values import Evoked
+
+__all__ = ["ATTACHABLE", "FROM", "LOCATIVE", "PREPOSITION_ROLES", "PUT_IN", "TO", "Assignment", "Roles", "Sense"]
+
+
+TO = ("to", "into", "onto")
+FROM = ("from", "out of", "off")
+LOCATIVE = ("in", "on", "at", "near", "under", "by", "inside", "behind", "above", "over", "in front of",
+            "between", "around", "across", "through", "along", "beyond", "against", "outside", "past")
+ATTACHABLE = LOCATIVE + ("with", "without", "about", "for", "via", "of")
+"""Prepositions whose phrase may describe the noun before it when it fills no element."""
+PUT_IN = ("in", "on", "inside", "into", "onto")
+"""Prepositions that say a thing is put in or on another."""
+
+
+@dataclass(frozen=True)
+class Sense:
+    """The roles a preposition's phrase may fill, in the order they are tried."""
+
+    person: tuple[str, ...]          # when its noun phrase is a person
+    thing: tuple[str, ...]           # otherwise
+
+
+_WHERE = ("ground", "goal", "instrument", "source")
+
+PREPOSITION_ROLES: Mapping[str, Sense] = {
+    **{p: Sense(("recipient", "goal"), ("goal",)) for p in TO},
+    "for": Sense(("recipient", "goal"), ()),
+    **{p: Sense(("source",), ("source",)) for p in FROM},
+    "with": Sense(("instrument",), ("instrument",)),
+    **{p: Sense(_WHERE, _WHERE) for p in LOCATIVE},
+}
+"""Preposition → the roles it may name (a preposition not listed names none)."""
+
+
+Assignment = tuple[dict[str, Any], list[tuple[NP, PP]], float]
+"""The elements a clause fills in a frame (role → phrase), the phrases that describe a noun
+instead (noun, phrase), and how well the elements fit (:meth:`Roles.fit`)."""
+
+
+class Roles:
+    """Role choice for the clauses of one command (pronouns are asked of its :class:`Reference`)."""
+
+    def __init__(self, types: Types, vocabulary: Vocabulary | None, reference: Reference,
+                 frames: list[Evoked]) -> None:
+        self.types = types
+        self.vocabulary = vocabulary
+        self.reference = reference
+        self.frames = frames             # the frames built so far (shared with the builder)
+
+    def assign(self, frame: Frame, clause: Clause, strict: bool) -> Assignment | None:
+        """Fill the frame's elements from the clause; None when a realised role does not fit."""
+        roles: dict[str, Any] = {}
+        attached: list[tuple[NP, PP]] = []
+        first = frame.elements[0].role if frame.elements else None
+        have = self.types.roles(frame)
+        objects = list(clause.objects)
+        seek = first == "theme" and "ground" in have and self.searches(frame, str(clause.verb.info)) and \
+            any(isinstance(x, PP) and x.prep == "for" for x in clause.items)
+        if seek and objects:                 # "search the kitchen for a can opener": the kitchen is searched
+            roles["ground"] = objects.pop(0)
+        if clause.message is not None and first is not None:
+            roles[first] = clause.message
+            if objects and "recipient" in have:
+                roles["recipient"] = objects.pop(0)
+        elif len(objects) >= 2:
+            if "recipient" in have:
+                roles["recipient"] = objects.pop(0)
+            elif strict:
+                return None
+        if objects and first is not None and first not in roles:
+            only = objects.pop(0)
+            if ("recipient" in have and only.kind == "person"
+                    and not self.types.is_person(frame.elements[0].type) and frame.elements[0].role != "goal"
+                    and not any(isinstance(x, PP) and x.prep == "to" for x in clause.items)):
+                roles["recipient"] = only            # "tell Robin", "give Maria": the person receives
+            else:
+                roles[first] = only
+        if objects and strict:
+            return None
+        previous: NP | None = clause.objects[-1] if clause.objects else None
+        has_to = any(isinstance(x, PP) and x.prep in TO for x in clause.items)
+        for item in clause.items:
+            if isinstance(item, NP):
+                if strict:
+                    return None
+                previous = item
+                continue
+            if not isinstance(item, PP):
+                continue
+            if seek and item.prep == "for" and "theme" not in roles:
+                roles["theme"] = item.np          # "... for a can opener", "look in the closet for my scarf"
+                previous = item.np
+                continue
+            role = None if item.describes else self.role_for(frame, item, previous, roles, has_to)
+            if item.after_relative and "recipient" in roles:
+                role = None                       # "bring me the book I left on the sofa": where it was left
+            if role is None and previous is None and first == "theme" and first not in roles and \
+                    item.prep in ("on", "at") and not item.lead and not item.describes and \
+                    not (self.frames and self.needs_in_hand(frame)):
+                role = first                      # "check on the baby": the verb's object after its preposition
+            if role is None and item.prep == "for" and item.np.pronoun in PERSON_PRONOUNS and not item.describes:
+                continue                          # "chop the carrots *for me* with the knife": for whom, no element
+            if role is not None:
+                roles[role] = item.np
+            elif previous is not None and (item.prep in ATTACHABLE or not strict or item.describes):
+                attached.append((previous, item))
+            elif strict:
+                return None
+            previous = item.np
+        score = sum(self.fit(frame, role, np) for role, np in roles.items())
+        return roles, attached, score
+
+    @staticmethod
+    def needs_in_hand(frame: Frame) -> bool:
+        """Whether the frame needs its first element in hand (``holding(theme)`` before it)."""
+        first = frame.elements[0].role if frame.elements else None
+        return any(p.predicate == "holding" and p.args == (first,) for p in frame.preconditions)
+
+    @staticmethod
+    def searches(frame: Frame, unit: str) -> bool:
+        """Whether the unit's object is the place searched: the frame also has the unit with "for"
+        ("search" beside "search for", "look" beside "look for"), so "search X for Y" is "search for Y
+        in X"."""
+        wanted = unit + " for"
+        return any(u.text == wanted for u in frame.lexical_units)
+
+    def role_for(self, frame: Frame, pp: PP, previous: NP | None, roles: Mapping[str, Any],
+                 has_to: bool = False) -> str | None:
+        """The element a prepositional phrase fills in this frame, or None (it describes a noun): the
+        first role of :data:`PREPOSITION_ROLES` the frame has and the clause has not filled, after the
+        rules below."""
+        sense = PREPOSITION_ROLES.get(pp.prep)
+        if sense is None:
+            return None
+        have = self.types.roles(frame)
+        np = pp.np
+        person = self.kind(np, frame, "recipient" if "recipient" in have else None) == "person"
+        options = sense.person if person else sense.thing
+        if pp.prep == "to" and not person and "goal" not in have and np.kind == "thing":
+            options = ("recipient",)     # "give the newspaper to grandpa": Give has no goal, only someone
+        elif pp.prep == "with":
+            if previous is not None and previous.kind == "person" and previous.pronoun is None and not (
+                    "instrument" in have and
+                    self.types.is_a(self.class_or_head(np), frame.element("instrument").type) is True):
+                return None              # "follow the woman *with the umbrella*": it describes her
+        elif pp.prep in LOCATIVE:
+            person_before = previous is not None and (previous.kind == "person" or (
+                frame.elements and roles.get(frame.elements[0].role) is previous
+                and self.types.is_person(frame.elements[0].type)))
+            if person_before and "ground" not in have:
+                return None              # "bring it to Adel *in the bathroom*": where she is
+            if previous is not None and previous.contents and np.pronoun in ("it", "them"):
+                return None              # "a pan with a spoon in it"
+            theme_type = frame.elements[0].type if frame.elements else None
+            if not ((theme_type is None or not self.types.is_person(theme_type) or frame.elements[0].role == "goal")
+                    and not has_to):
+                options = tuple(r for r in options if r != "goal")   # a person is no goal; nor, beside "to", a place
+        for role in options:
+            if role in have and role not in roles:
+                if role == "instrument" and pp.prep != "with" and not self.made_for(np, frame) and \
+                        self.types.is_a(self.class_or_head(np), frame.element(role).type) is not True:
+                    continue
+                return role
+        return None
+
+    def made_for(self, np: NP, frame: Frame) -> bool:
+        """Whether the noun names a thing made for doing the frame: its head is the agent noun of one of
+        the frame's verbs and the library knows no class of it ("in the blanket *warmer*": warm, Heat)."""
+        if np.head is None or np.kind != "thing" or "instrument" not in frame.roles or \
+                self.types.is_a(self.class_or_head(np), frame.element("instrument").type) is not None:
+            return False
+        head = noun_lemma(np.head.text.split()[-1].lower())
+        if not head.endswith("er") or len(head) < 5:
+            return False
+        stems = {head[:-2], head[:-1], head[:-3]}     # warmer, cooler: warm, cool; freezer: freeze; cutter: cut
+        return any(u.text in stems for u in frame.lexical_units)
+
+    def class_or_head(self, np: NP) -> str:
+        """The class the phrase denotes in the vocabulary, else its head."""
+        if self.vocabulary is not None:
+            found = np.ground(self.vocabulary)
+            if found:
+                return found
+        return np.head_text
+
+    def kind(self, np: NP, frame: Frame | None, role: str | None) -> str:
+        """The phrase's kind; a pronoun's is its antecedent's ("pronoun" when it has none)."""
+        if np.kind != "pronoun":
+            return np.kind
+        antecedent = self.reference.antecedent(np, frame, role)
+        return antecedent[2] if antecedent else "pronoun"
+
+    def fit(self, frame: Frame, role: str, np: NP) -> float:
+        """How well a phrase fits an element: +2 a person where a person is wanted, +1 a class of
+        the element's type, 0 unknown, -2 what cannot be (a thing where a person is wanted)."""
+        type_ = frame.element(role).type
+        kind = self.kind(np, frame, role)
+        person_type = self.types.is_person(type_)
+        if kind == "person":     # a person is somewhere too: "bring her to me" (Guide's goal)
+            return 2.0 if person_type else 0.0 if self.types.is_open(type_) or self.types.is_location(type_) \
+                else -2.0
+        if kind == "pronoun":
+            return 0.0
+        if person_type:          # a noun nobody called a thing may receive ("give the newspaper to grandpa"),
+            return 1.0 if role == "recipient" and kind == "thing" and \
+                self.types.is_a(self.class_or_head(np), type_) is None else -2.0   # as any noun may be a place
+        if kind in ("message", "place"):
+            return 0.5
+        found = self.types.is_a(self.class_or_head(np), type_)
+        return 1.0 if found else -2.0 if found is False else 0.0

@@ -1,0 +1,116 @@
+"""Clauses and their joints: sentence ends, separators ("and", "then", ","), subordinate clauses
+inside a clause, relative clauses, "until the corner", "something to drink"."""
+
+from __future__ import annotations
+
+from seal_cli.language.english import DETERMINERS, END_MARKS, POSSESSIVES, SEPARATOR_WORDS
+from seal_cli.language.morphology import verb_lemma
+from seal_cli.language.rule import AFTER_SEP, Example, Match, Rule
+from seal_cli.language.state import CLOSED, INDEFINITE, REL_FIRST, SEP_FIRST, SUB_FIRST, State, match_phrase, merge
+from seal_cli.language.tags import Tag
+from seal_cli.language.tokens import Word, capitalised
+
+
+def _end_mark(s: State, i: int) -> Match | None:
+    w = s.words[i]
+    if all(r.lower in END_MARKS or r.lower == "please" for r in s.words[i + 1:]):
+        return Match(1, (w.tagged(Tag.END),))
+    return Match(1, (w.tagged(Tag.SEP),), expect=True)            # "Go to the kitchen. Find Robin."
+
+
+def _something_to(s: State, i: int) -> Match | None:
+    out, words = s.out, s.words
+    if out and (out[-1].lower in INDEFINITE or len(out) > 1 and out[-1].tag == Tag.WORD and
+                out[-2].lower in INDEFINITE) and i + 1 < len(words) and \
+            verb_lemma(words[i + 1].lower) == words[i + 1].lower:
+        end = s.relative_end(i + 1)                               # "something to drink"
+        return s.emit(i, end - i, Tag.REL)
+    return None
+
+
+def _until_place(s: State, i: int) -> Match | None:
+    if s.until_place(i):
+        return Match(1, (s.words[i].tagged(Tag.PREP, "to"),))     # "follow me until the gate"
+    return None
+
+
+def _inner(s: State) -> bool:
+    return s.prev_tag() not in (Tag.DET, Tag.POSS, Tag.NUM, Tag.PREP)
+
+
+def _subordinate(s: State, i: int) -> Match | None:
+    if s.words[i].lower not in SUB_FIRST or not _inner(s):
+        return None
+    m = s.subordinate(i, start=False)
+    return Match(m.consumed, m.words, expect=AFTER_SEP) if m else None
+
+
+def _relative(s: State, i: int) -> Match | None:
+    if not _inner(s):
+        return None
+    m = s.relative(i)
+    return Match(m.consumed, m.words, expect=AFTER_SEP) if m else None
+
+
+def _separator(s: State, i: int) -> Match | None:
+    n = match_phrase(s.words, i, SEPARATOR_WORDS)
+    m = s.separator(i, n) if n else None
+    return Match(m.consumed, m.words, expect=AFTER_SEP) if m else None
+
+
+END_MARK = Rule("sentence end", _end_mark, (
+    Example("Go to the kitchen. Find Robin.", ".", Tag.SEP),
+    Example("close the door!", "!", Tag.END),
+), END_MARKS, "'.', '!', '?': the end of the command, or between two sentences of it")
+SOMETHING_TO = Rule("something to V", _something_to, (
+    Example("bring me something to drink", "to drink", Tag.REL),
+), frozenset(["to"]), "'to' and a verb after an indefinite pronoun: what it is for, kept whole")
+UNTIL_PLACE = Rule("until a place", _until_place, (
+    Example("follow me until the gate", "until", Tag.PREP),
+), frozenset(["until", "till"]), "'until' a noun phrase after a verb of motion: how far")
+SUBORDINATE_INSIDE = Rule("subordinate clause", _subordinate, (
+    Example("turn off the stove when the water boils", "when the water boils", Tag.COND),
+), SUB_FIRST | REL_FIRST, "a subordinate clause inside a clause: a condition, or a clause of the robot's own")
+RELATIVE = Rule("relative clause", _relative, (
+    Example("bring me the glass that I was drinking from", "that I was drinking from", Tag.REL),
+    Example("put the cup where it belongs", "where it belongs", Tag.HERE),
+), SUB_FIRST | REL_FIRST, "a relative clause after a noun, kept whole (or 'that is' dropped)")
+SEPARATOR = Rule("separator", _separator, (
+    Example("take the cup and put it on the table", "and", Tag.SEP),
+    Example("put the cup and the plate on the table", "and", Tag.AND_NP),
+), SEP_FIRST, "'and', ',', 'then', ... joining clauses or noun phrases")
+
+
+_OBJECT_STARTS = frozenset(["it", "them", "him", "her", "me", "us"])
+
+
+def _unjoined(s: State, i: int) -> Match | None:
+    """A verb of the library in its base form right after a phrase, before its own object ("meet Jo at the
+    counter *escort her* back", "pick up the cup *bring it* to me"): a new clause said without "and"."""
+    words = s.words
+    if s.verb_index < 0 or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL, Tag.PARTICLE, Tag.HERE):
+        return None
+    if words[i].lower not in s.lexicon.units:
+        return None                       # only a verb's base form starts a command
+    found = s.verb_at(i)
+    if found is None or found[2] is not None or words[i].lower != found[0].split()[0]:
+        return None
+    after = i + found[1]
+    if after >= len(words):
+        return None
+    nxt = words[after]
+    if not (nxt.lower in _OBJECT_STARTS or nxt.lower in DETERMINERS or nxt.lower in POSSESSIVES or
+            capitalised(nxt) and nxt.lower not in CLOSED):
+        return None
+    if nxt.lower in ("that", "this", "these", "those") and not s.noun_follows(after + 1):
+        return None                       # "a potato slice *that is* on a plate": a relative clause
+    unit = found[0]
+    w = words[i]
+    return Match(found[1], (Word("", w.start, w.start, Tag.SEP), merge(words, i, found[1], Tag.VERB, unit)),
+                 expect=False, verb=unit, using=False)
+
+
+UNJOINED = Rule("clause without a joint", _unjoined, (
+    Example("meet Jo at the counter escort her back", "escort", Tag.VERB),
+    Example("pick up the cup bring it to me", "bring", Tag.VERB),
+), None, "a verb of the library and its object right after a phrase: a clause of its own, not a noun")

@@ -1,0 +1,213 @@
+"""Function words inside a clause: time adverbials, "one" after adjectives, "that" opening
+reported speech, "of", "here"/"there", prepositions, particles, wh-words, "is", possessives,
+partitives, determiners, pronouns (closed classes: :mod:`seal_cli.language.english`)."""
+
+from __future__ import annotations
+
+from seal_cli.language.english import (
+    BE_WORDS,
+    CLOCK_PREPOSITIONS,
+    DETERMINERS,
+    HERE_WORDS,
+    NUMBERS,
+    PARTICLES,
+    PARTITIVES,
+    POSSESSIVES,
+    PREPOSITIONS,
+    PRONOUNS,
+    TIME_MEASURE,
+    TIME_UNITS,
+    TIME_WORDS,
+    WH_WORDS,
+)
+from seal_cli.language.rule import Example, Match, Rule
+from seal_cli.language.state import TIME_FIRST, State, match_phrase
+from seal_cli.language.tags import Tag
+from seal_cli.language.tokens import Word
+
+_HERE_FIRST = frozenset(p.split()[0] for p in HERE_WORDS)
+_PREP_FIRST = frozenset(p.split()[0] for p in PREPOSITIONS)
+
+
+def _time_word(s: State, i: int) -> Match | None:
+    if s.in_np():
+        return None
+    n = match_phrase(s.words, i, TIME_WORDS)
+    if n and (s.words[i].lower != "first" or s.prev_tag() not in (Tag.VERB, Tag.PREP)):
+        return s.emit(i, n, Tag.PARTICLE, "time")                 # "put it in the fridge right away"
+    return None
+
+
+def _for_a_time(s: State, i: int) -> Match | None:
+    words = s.words
+    if s.in_np() or s.prev_tag() in (Tag.VERB, Tag.PREP):
+        return None
+    k = i + 1                                                     # "for three minutes", "every few minutes"
+    while k < len(words) and (words[k].lower in TIME_MEASURE or words[k].lower in NUMBERS
+                              or words[k].lower.isdigit()):
+        k += 1
+    if k < len(words) and words[k].lower in TIME_UNITS:
+        return s.emit(i, k + 1 - i, Tag.PARTICLE, "time")
+    return None
+
+
+def _clock_time(s: State, i: int) -> Match | None:
+    if s.in_np() or s.prev_tag() == Tag.PREP:
+        return None
+    n = s.clock_time(i)
+    return s.emit(i, n, Tag.PARTICLE, "time") if n else None     # "meet her at three", "in ten minutes"
+
+
+def _one(s: State, i: int) -> Match | None:
+    if s.in_np() or s.prev_tag() not in (Tag.WORD, Tag.RESULT):
+        return None
+    k = len(s.out) - 1
+    while k >= 0 and s.out[k].tag in (Tag.WORD, Tag.RESULT):
+        k -= 1
+    if k >= 0 and s.out[k].tag in (Tag.DET, Tag.POSS, Tag.NUM):
+        return s.emit(i, 1, Tag.WORD)                             # "the red one"
+    return None
+
+
+def _that_said(s: State, i: int) -> Match | None:
+    words = s.words
+    if s.in_np() or not s.speech or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL) or \
+            not (s.np_starts(i + 1) or s.next_lower(i) == ","):
+        return None
+    start = i + 1                                                 # "tell the guest *that* dinner is ready":
+    while start < len(words) and words[start].lower == ",":      # what is said is any clause, kept whole
+        start += 1                                                # "tell her that, if it rains, ..."
+    end = s.speech_end(start)
+    that = words[i].tagged(Tag.WH)
+    if end > start:
+        return Match(end - i, (that, s.emit(start, end - start, Tag.SAID).words[0]))
+    return Match(start - i, (that,))
+
+
+def _particle_noun(s: State, i: int) -> Match | None:
+    if s.next_lower(i) == "of" and match_phrase(s.words, i, PREPOSITIONS) < 2:
+        return s.emit(i, 1, Tag.WORD)                             # "the back of the toilet"
+    return None
+
+
+def _of(s: State, i: int) -> Match | None:
+    return s.emit(i, 1, Tag.OF)
+
+
+def _determiner_in_np(s: State, i: int) -> Match | None:
+    low = s.words[i].lower
+    if s.in_np() and (low in DETERMINERS or low in POSSESSIVES) and s.noun_follows(i + 1):
+        return s.emit(i, 1, Tag.DET if low in DETERMINERS else Tag.POSS)
+    return None
+
+
+def _here(s: State, i: int) -> Match | None:
+    if s.in_np():
+        return None
+    low, nxt = s.words[i].lower, s.next_lower(i)
+    n = match_phrase(s.words, i, HERE_WORDS)
+    after_be = bool(s.out) and s.out[-1].tag == Tag.BE           # "how many cups are there in the kitchen"
+    if n and not (low == "there" and (nxt in BE_WORDS or after_be)):
+        found = s.emit(i, n, Tag.HERE)
+        if n == 2 and low == "in":                                # "in there": read as "there"
+            w = found.words[0]
+            return Match(n, (Word(w.text, w.start, w.end, w.tag, w.info, s.words[i + 1].lower),))
+        return found
+    if low == "there":
+        return s.emit(i, 1, Tag.THERE)
+    return None
+
+
+def _preposition(s: State, i: int) -> Match | None:
+    if s.in_np():
+        return None
+    words = s.words
+    n = match_phrase(words, i, PREPOSITIONS)
+    if not n:
+        return None
+    prep = PREPOSITIONS[" ".join(x.lower for x in words[i:i + n])]
+    has_object = s.np_starts(i + n) or i + n < len(words) and words[i + n].lower in ("here", "there")
+    if not has_object and prep == "outside":
+        return s.emit(i, n, Tag.HERE)                             # "take the trash bag outside"
+    return s.emit(i, n, Tag.PREP if has_object else Tag.PARTICLE, prep)   # "pick it up", "... from"
+
+
+def _particle(s: State, i: int) -> Match | None:
+    return None if s.in_np() else s.emit(i, 1, Tag.PARTICLE, s.words[i].lower)
+
+
+def _wh(s: State, i: int) -> Match | None:
+    return None if s.in_np() or s.prev_tag() == Tag.DET else s.emit(i, 1, Tag.WH)
+
+
+def _be(s: State, i: int) -> Match | None:
+    return None if s.in_np() else s.emit(i, 1, Tag.BE)
+
+
+def _possessive(s: State, i: int) -> Match | None:
+    if s.in_np() or s.words[i].lower == "her" and not s.noun_follows(i + 1):
+        return None
+    return s.emit(i, 1, Tag.POSS)
+
+
+def _partitive(s: State, i: int) -> Match | None:
+    nxt = s.next_lower(i)
+    if not s.in_np() and s.prev_tag() == Tag.VERB and not s.noun_follows(i + 1) and \
+            nxt not in DETERMINERS and nxt not in POSSESSIVES and nxt not in NUMBERS and nxt != "of":
+        return s.emit(i, 1, Tag.PRON)                             # "pour *some* into the cup": some of it
+    return None
+
+
+def _determiner(s: State, i: int) -> Match | None:
+    if s.in_np() or s.words[i].lower in ("that", "this", "these", "those") and not s.noun_follows(i + 1):
+        return None
+    return s.emit(i, 1, Tag.DET)
+
+
+def _pronoun(s: State, i: int) -> Match | None:
+    return None if s.in_np() else s.emit(i, 1, Tag.PRON)
+
+
+TIME_WORD = Rule("time word", _time_word, (
+    Example("put it in the fridge right away", "right away", Tag.PARTICLE),
+), TIME_FIRST, "a time adverbial ('now', 'right away', 'later')")
+FOR_A_TIME = Rule("for a time", _for_a_time, (
+    Example("stir the soup for three minutes", "for three minutes", Tag.PARTICLE),
+), frozenset(["for", "every", "each"]), "'for three minutes', 'every few minutes'")
+CLOCK_TIME = Rule("clock time", _clock_time, (
+    Example("meet her at three", "at three", Tag.PARTICLE),
+), CLOCK_PREPOSITIONS, "a time said with a number ('at three', 'in ten minutes')")
+ONE = Rule("the red one", _one, (
+    Example("bring me the red one", "one", Tag.WORD),
+), frozenset(["one", "ones"]), "'one' after adjectives after a determiner: a noun")
+THAT_SAID = Rule("that and what is said", _that_said, (
+    Example("tell the guest that dinner is ready", "dinner is ready", Tag.SAID),
+), frozenset(["that"]), "'that' after the person a verb of saying tells: what is said, kept whole")
+PARTICLE_NOUN = Rule("particle as a noun", _particle_noun, (
+    Example("clean the back of the toilet", "back", Tag.WORD),
+), PARTICLES, "a particle before 'of' is a noun ('the back of')")
+OF = Rule("of", _of, (Example("bring me a slice of apple", "of", Tag.OF),), frozenset(["of"]), "'of'")
+DETERMINER_IN_NP = Rule("determiner inside a noun phrase", _determiner_in_np, (
+    Example("bring me all the cups", "the", Tag.DET),
+), DETERMINERS | POSSESSIVES, "a determiner or possessive after another, before a noun")
+HERE = Rule("here and there", _here, (
+    Example("bring it here", "here", Tag.HERE),
+    Example("how many cups are there on the table", "there", Tag.THERE),
+    Example("go to the pantry and count the cans in there", "in there", Tag.HERE),
+), _HERE_FIRST, "'here', 'there', 'upstairs' (a place); 'there' before or after 'is' (existential)")
+PREPOSITION = Rule("preposition", _preposition, (
+    Example("put the cup on top of the fridge", "on top of", Tag.PREP),
+    Example("take the trash bag outside", "outside", Tag.HERE),
+), _PREP_FIRST, "a preposition with its object, else a particle")
+PARTICLE = Rule("particle", _particle, (Example("put it back", "back", Tag.PARTICLE),), PARTICLES,
+                "a particle with no verb of its own")
+WH = Rule("wh-word", _wh, (Example("tell me what time it is", "what", Tag.WH),), WH_WORDS, "'what', 'which', ...")
+BE = Rule("be", _be, (Example("tell me what time it is", "is", Tag.BE),), BE_WORDS, "'is', 'are', ...")
+POSSESSIVE = Rule("possessive", _possessive, (Example("bring me my coat", "my", Tag.POSS),), POSSESSIVES,
+                  "'my', 'their', 'her' before a noun")
+PARTITIVE = Rule("partitive pronoun", _partitive, (
+    Example("pour some into the cup", "some", Tag.PRON),
+), PARTITIVES, "'some', 'all' right after the verb with no noun: some of it")
+DETERMINER = Rule("determiner", _determiner, (Example("bring me the cup", "the", Tag.DET),), DETERMINERS,
+                  "a determiner ('that' only before a noun)")
+PRONOUN = Rule("pronoun", _pronoun, (Example("put it there", "it", Tag.PRON),), PRONOUNS, "a pronoun")

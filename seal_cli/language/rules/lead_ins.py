@@ -1,0 +1,128 @@
+"""Words before a clause's verb that are no verb and no politeness phrase: a comma after
+politeness ("First, open ..."), a sequencing word ("After that, ..."), a subordinate clause ("When
+you reach the kitchen, ..."), a manner adverb ("Gently place ..."), "be careful and", "start by
+opening", a light verb with a noun that is a lexical unit ("take a look at"), a polite frame
+ending in "you could" ("I was wondering if you could ...").
+
+Each rule applies only where the word is no verb, unless it is one of ``LEAD_FIRST`` (a verb of
+the library that also leads in: "start by", "take a look").
+"""
+
+from __future__ import annotations
+
+from seal_cli.language.english import END_MARKS, PARTICLES, PREPOSITIONS, SEPARATOR_WORDS
+from seal_cli.language.morphology import gerund_lemma, is_adverb
+from seal_cli.language.rule import Example, Match, Rule
+from seal_cli.language.state import CLOSED, LEAD_FIRST, State, match_phrase, merge
+from seal_cli.language.tags import Tag
+from seal_cli.language.tokens import Word
+
+
+def _not_a_verb(s: State, i: int) -> bool:
+    return s.words[i].lower in LEAD_FIRST or s.verb_at(i) is None
+
+
+def _comma_after_politeness(s: State, i: int) -> Match | None:
+    if s.prev_tag() in (Tag.POLITE, Tag.COND, Tag.SEP) and _not_a_verb(s, i):
+        return Match(1, last=s.extended(i, 1))
+    return None
+
+
+def _sequencing(s: State, i: int) -> Match | None:
+    words, low = s.words, s.words[i].lower
+    if not _not_a_verb(s, i):
+        return None
+    n = match_phrase(words, i, SEPARATOR_WORDS)
+    if n and low not in ("and", "or", "while", "before", "after", "as") or n > 1 and low in ("and", "after"):
+        k = i + n + (1 if i + n < len(words) and words[i + n].lower == "," else 0)
+        if s.verb_after(k):
+            if s.prev_tag() == Tag.SEP:        # "Take the cup to the sink. After that, wash it."
+                last = s.extended(i, k - i)
+                return Match(k - i, last=Word(last.text, last.start, last.end, last.tag, "then"))
+            return Match(k - i, (merge(words, i, k - i, Tag.POLITE),))
+    return None
+
+
+def _subordinate(s: State, i: int) -> Match | None:
+    return s.subordinate(i, start=True) if _not_a_verb(s, i) else None
+
+
+def _manner(s: State, i: int) -> Match | None:
+    low = s.words[i].lower
+    if low.isalpha() and low not in PARTICLES and is_adverb(low) and s.verb_after(i + 1) and _not_a_verb(s, i):
+        return s.emit(i, 1, Tag.POLITE)                           # "Gently place the eggs ..."
+    return None
+
+
+def _be_careful(s: State, i: int) -> Match | None:
+    words = s.words                                       # "Be careful and carry ...", "be a dear and hand me ..."
+    nxt = s.next_lower(i)
+    k = i + 1 + (1 if nxt in ("a", "an", "so", "extra", "very", "really") else 0)
+    while k < min(len(words), i + 5) and words[k].lower not in CLOSED and words[k].lower.isalpha() and \
+            words[k].lower not in ("and", "then"):
+        k += 1
+    if i + 1 < k < len(words) and words[k].lower in ("and", ",") and s.verb_after(k + 1):
+        return s.emit(i, k + 1 - i, Tag.POLITE)
+    return None
+
+
+def _start_by(s: State, i: int) -> Match | None:
+    words = s.words
+    if s.next_lower(i) == "by" and i + 2 < len(words) and gerund_lemma(words[i + 2].lower) and s.verb_at(i + 2):
+        return s.emit(i, 2, Tag.POLITE)                           # "Start by opening the window"
+    return None
+
+
+def _light_verb(s: State, i: int) -> Match | None:
+    words = s.words
+    if s.next_lower(i) not in ("a", "another"):
+        return None
+    for k in (i + 2, i + 3):                                      # "take a (quick) look at"
+        for unit in s.lexicon.units.get(words[k].lower if k < len(words) else "", ()):
+            if len(unit) > 1 and unit[1] in PREPOSITIONS and \
+                    all(k + m < len(words) and words[k + m].lower == unit[m] for m in range(len(unit))):
+                text = " ".join(unit)
+                return Match(k + len(unit) - i, (merge(words, i, k + len(unit) - i, Tag.VERB, text),),
+                             expect=False, verb=text)
+    return None
+
+
+def _polite_frame(s: State, i: int) -> Match | None:
+    words = s.words
+    if not all(t.tag == Tag.POLITE for t in s.out) or s.verb_at(i) is not None:
+        return None
+    for j in range(i, min(len(words) - 2, i + 12)):  # "It would be great if you could close ..."
+        if words[j].lower in (",", ";") or words[j].lower in END_MARKS:
+            break
+        if words[j].lower == "you" and words[j + 1].lower in ("could", "can", "would", "will", "might") \
+                and s.verb_after(j + 2):
+            return s.emit(i, j + 2 - i, Tag.POLITE)
+    return None
+
+
+COMMA_AFTER_POLITENESS = Rule("comma after politeness", _comma_after_politeness, (
+    Example("First, open the fridge", "First,", Tag.POLITE),
+), frozenset([",", ";", ":"]), "a comma after politeness, a condition or a separator joins it")
+SEQUENCING = Rule("sequencing word", _sequencing, (
+    Example("Take the cup to the sink. After that, wash it.", ". After that,", Tag.SEP),
+    Example("Next, open the door", "Next ,", Tag.POLITE),
+), None, "a sequencing word before the verb")
+SUBORDINATE = Rule("subordinate clause first", _subordinate, (
+    Example("If the door is open, close it", "If the door is open,", Tag.COND),
+    Example("When you reach the kitchen, open the fridge", "When you", Tag.POLITE),
+), None, "a condition, or a clause of the robot's own, before the verb")
+MANNER = Rule("manner adverb", _manner, (
+    Example("Gently place the eggs in the bowl", "Gently", Tag.POLITE),
+), None, "a manner adverb before the verb")
+BE_CAREFUL = Rule("be careful and", _be_careful, (
+    Example("Be careful and carry the tray to the table", "Be careful and", Tag.POLITE),
+), frozenset(["be"]), "'be careful and', 'be a dear and' before a verb")
+START_BY = Rule("start by", _start_by, (
+    Example("Start by opening the window", "Start by", Tag.POLITE),
+), frozenset(["start", "begin", "finish", "end", "continue"]), "'start by' a gerund of the library")
+LIGHT_VERB = Rule("take a look at", _light_verb, (
+    Example("take a quick look at the painting", "take a quick look at", Tag.VERB),
+), frozenset(["take", "have"]), "a light verb and a noun that is a lexical unit with its preposition")
+POLITE_FRAME = Rule("if you could", _polite_frame, (
+    Example("It would be great if you could close the door", "It would be great if you could", Tag.POLITE),
+), None, "a polite frame ending in 'you could' before the verb")

@@ -1,0 +1,104 @@
+"""Numbers and quantities: "two apples", "the two books", "room 214", "cut it into eight", "both of
+the cups", and the possessive "'s"."""
+
+from __future__ import annotations
+
+from seal_cli.language.english import DETERMINERS, NUMBERS, POSSESSIVES, PREPOSITIONS, QUANTIFIERS
+from seal_cli.language.rule import Example, Match, Rule
+from seal_cli.language.state import State, match_phrase
+from seal_cli.language.tags import Tag
+from seal_cli.language.tokens import Word
+
+_NUMBER_FIRST = frozenset(p.split()[0] for p in NUMBERS)
+
+
+def _digits_or_number(low: str) -> bool:
+    return low.isdigit() or low in NUMBERS
+
+
+def _number(s: State, i: int) -> tuple[int, object]:
+    n = match_phrase(s.words, i, NUMBERS)
+    return n, NUMBERS[" ".join(x.lower for x in s.words[i:i + n])] if n else None
+
+
+def _label(s: State, i: int) -> Match | None:
+    if s.prev_tag() in (Tag.WORD, Tag.NAME) and s.label_at(i):
+        return s.emit(i, 1, Tag.LABEL, s.words[i].lower)          # "room 214", "table 9": no count
+    return None
+
+
+def _number_as_noun(s: State, i: int) -> Match | None:
+    n, _ = _number(s, i)
+    if n and s.prev_tag() == Tag.PREP and not s.noun_follows(i + n) and s.words[i].lower not in ("one", "a", "an"):
+        return s.emit(i, n, Tag.WORD)                             # "cut it into eight": so many pieces, a noun
+    return None
+
+
+def _count(s: State, i: int) -> Match | None:
+    low, nxt = s.words[i].lower, s.next_lower(i)
+    n, value = _number(s, i)
+    if n and not s.in_np() and (low != "one" or s.np_starts(i + 1) and nxt not in PREPOSITIONS) and \
+            (n > 1 or low != "one" or s.noun_follows(i + 1)):
+        return s.emit(i, n, Tag.NUM, value)
+    return None
+
+
+def _count_after_article(s: State, i: int) -> Match | None:
+    n, value = _number(s, i)
+    if n and s.in_np() and s.words[i].lower != "one" and s.prev_tag() == Tag.DET and s.noun_follows(i + n):
+        return s.emit(i, n, Tag.NUM, value)                       # "the two books"
+    return None
+
+
+def _digits(s: State, i: int) -> Match | None:
+    low = s.words[i].lower
+    if not (low.isascii() and low.isdigit()):
+        return None
+    if s.prev_tag() == Tag.PREP and not s.noun_follows(i + 1):
+        return s.emit(i, 1, Tag.WORD)                             # "the guests in 305": a place named by its number
+    return s.emit(i, 1, Tag.NUM, int(low))
+
+
+def _apostrophe_s(s: State, i: int) -> Match | None:
+    words, nxt = s.words, s.next_lower(i)
+    last = s.out[-1] if s.out else None
+    if last is not None and last.tag in (Tag.NAME, Tag.WORD, Tag.PRON) and s.np_starts(i + 1) and \
+            nxt not in ("a", "an", "the"):
+        return Match(1, last=Word(f"{last.text}'s", last.start, words[i].end, Tag.POSS, last.text))
+    return s.emit(i, 1, Tag.BE)
+
+
+def _quantifier_of(s: State, i: int) -> Match | None:
+    words, low = s.words, s.words[i].lower
+    if not s.in_np() and s.next_lower(i) == "of" and i + 2 < len(words) and \
+            (words[i + 2].lower in DETERMINERS or words[i + 2].lower in POSSESSIVES):
+        number = NUMBERS.get(low)            # "both of the cups", "one of the books"
+        return s.emit(i, 2, Tag.DET if number is None else Tag.NUM, number)
+    return None
+
+
+LABEL = Rule("number naming a thing", _label, (
+    Example("go to room 214", "214", Tag.LABEL),
+    Example("clean meeting room three", "three", Tag.LABEL),
+), _digits_or_number, "a number after a noun names a numbered thing, unless a noun follows it")
+NUMBER_AS_NOUN = Rule("number as a noun", _number_as_noun, (
+    Example("cut it into eight", "eight", Tag.WORD),
+), _NUMBER_FIRST, "a number word after a preposition with no noun: so many pieces")
+COUNT = Rule("number", _count, (
+    Example("bring me two apples", "two", Tag.NUM),
+    Example("grab a couple of cups", "a couple of", Tag.NUM),
+), _NUMBER_FIRST, "a number word counting the noun after it")
+COUNT_AFTER_ARTICLE = Rule("number after an article", _count_after_article, (
+    Example("bring me the two books", "two", Tag.NUM),
+), _NUMBER_FIRST, "a number after 'the'")
+DIGITS = Rule("digits", _digits, (
+    Example("bring me 3 apples", "3", Tag.NUM),
+    Example("find the guests in 305", "305", Tag.WORD),
+), str.isdigit, "digits: a count, or a place named by its number after a preposition")
+APOSTROPHE_S = Rule("'s", _apostrophe_s, (
+    Example("bring me Roger's coat", "Roger's", Tag.POSS),
+), frozenset(["'s"]), "'s: a possessive before a noun phrase, else 'is'")
+QUANTIFIER_OF = Rule("quantifier of", _quantifier_of, (
+    Example("bring me both of the cups", "both of", Tag.DET),
+    Example("bring me one of the books", "one of", Tag.NUM),
+), QUANTIFIERS, "'both of the', 'one of the': a determiner or a number")

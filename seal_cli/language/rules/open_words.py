@@ -1,0 +1,96 @@
+"""Open-class words: participles after a noun, result words before one, adverbs, names, and every
+other word (a noun or an adjective). Nothing here lists a word."""
+
+from __future__ import annotations
+
+from seal_cli.language.english import PARTICLES, PREPOSITIONS
+from seal_cli.language.morphology import gerund_lemma, in_dictionary, is_adverb
+from seal_cli.language.rule import Example, Match, Rule
+from seal_cli.language.state import CLOSED, State
+from seal_cli.language.tags import Tag
+from seal_cli.language.tokens import Word, capitalised
+
+
+def _participle(s: State, i: int) -> Match | None:
+    low, nxt = s.words[i].lower, s.next_lower(i)
+    gerund = gerund_lemma(low)
+    if not gerund or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.BE):
+        return None
+    tag = Tag.VBG_T if s.np_starts(i + 1) and nxt not in PARTICLES else \
+        Tag.VBG_P if nxt in PREPOSITIONS and s.np_starts(i + 2) else Tag.VBG_I
+    return s.emit(i, 1, tag, gerund)
+
+
+def _result(s: State, i: int) -> Match | None:
+    words, low, nxt = s.words, s.words[i].lower, s.next_lower(i)
+    result = s.lexicon.results.get(low)
+    if not result:
+        return None
+    if s.noun_follows(i + 1):
+        return s.emit(i, 1, Tag.RESULT, result)
+    if nxt in PARTICLES and s.noun_follows(i + 2):
+        return s.emit(i, 2, Tag.RESULT, s.lexicon.results.get(f"{low} {nxt}", result))  # "a heated up potato"
+    if nxt == "," and i + 2 < len(words) and words[i + 2].lower in s.lexicon.results and s.noun_follows(i + 3):
+        return Match(2, s.emit(i, 1, Tag.RESULT, result).words)   # "a cooked, rinsed egg"
+    return None
+
+
+def _adverb(s: State, i: int) -> Match | None:
+    low = s.words[i].lower
+    if not s.in_np() and low.isalpha() and is_adverb(low) and s.prev_tag() != Tag.DET:
+        return s.emit(i, 1, Tag.PARTICLE)                         # "gather together", "put it carefully on ..."
+    return None
+
+
+def _name(s: State, i: int) -> Match | None:
+    w, low, nxt, prev = s.words[i], s.words[i].lower, s.next_lower(i), s.prev_tag()
+    if not capitalised(w) or s.in_np() or prev == Tag.WORD or low in CLOSED:
+        return None
+    if prev == Tag.PREP and low.endswith("s") and len(low) > 2 and s.noun_follows(i + 1) and \
+            not capitalised(s.words[i + 1]) and not gerund_lemma(nxt):
+        return s.emit(i, 1, Tag.POSS, w.text[:-1])                # "in *Emmas* room": a possessive lacking its '
+    if prev == Tag.NAME:                                          # "Mary Ann": one name
+        last = s.out[-1]
+        return Match(1, last=Word(s.text_of(last.start, w.end), last.start, w.end, Tag.NAME))
+    return s.emit(i, 1, Tag.NAME)
+
+
+def _lower_case_name(s: State, i: int) -> Match | None:
+    """A word neither an English dictionary nor the library's taxonomy lists, alone after "to" in a clause
+    whose verb may have a recipient ("deliver the knife to *jamie*"): a name written in lower case."""
+    w, low = s.words[i], s.words[i].lower
+    if s.prev_tag() != Tag.PREP or s.out[-1].info != "to" or s.verb_index < 0 or \
+            str(s.out[s.verb_index].info) not in s.lexicon.recipients or not low.isalpha() or \
+            w.text != low or low in CLOSED or in_dictionary(low) or low in s.lexicon.things or s.noun_follows(i + 1):
+        return None
+    return s.emit(i, 1, Tag.NAME)
+
+
+def _word(s: State, i: int) -> Match | None:
+    return s.emit(i, 1, Tag.WORD)
+
+
+PARTICIPLE = Rule("participle after a noun", _participle, (
+    Example("find the person wearing a red blouse", "wearing", Tag.VBG_T),
+    Example("find the person pointing to the left", "pointing", Tag.VBG_P),
+    Example("find the person sitting", "sitting", Tag.VBG_I),
+), lambda low: bool(gerund_lemma(low)),
+    "an -ing form after a noun, a pronoun or 'is': transitive, with a preposition, or bare")
+RESULT = Rule("result word", _result, (
+    Example("put a heated egg in the fridge", "heated", Tag.RESULT),
+    Example("put the heated up egg in the fridge", "heated up", Tag.RESULT),
+), None, "a participle of a lexical unit, or a frame's result adjective, before a noun")
+ADVERB = Rule("adverb", _adverb, (
+    Example("put it carefully on the shelf", "carefully", Tag.PARTICLE),
+), lambda low: low.isalpha() and is_adverb(low), "an adverb inside the clause")
+NAME = Rule("name", _name, (
+    Example("greet Mary Ann", "Mary Ann", Tag.NAME),
+    Example("go to Emmas room", "Emmas", Tag.POSS),
+), None, "a capitalised word where a noun phrase starts; two in a row are one name")
+LOWER_CASE_NAME = Rule("name in lower case", _lower_case_name, (
+    Example("deliver the parcel to jamie", "jamie", Tag.NAME),
+    Example("give the keys to priya in the hallway", "priya", Tag.NAME),
+), None, "a word no dictionary lists, alone after 'to' in a clause that may have a recipient: a name")
+WORD = Rule("open word", _word, (
+    Example("bring me the cup", "cup", Tag.WORD),
+), None, "every other word: a noun or an adjective")

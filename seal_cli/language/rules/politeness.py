@@ -1,0 +1,118 @@
+"""Politeness and address: what asks nicely and says no task ("could you", "please", "Robin, ...",
+"when you get a chance")."""
+
+from __future__ import annotations
+
+from seal_cli.language.english import END_MARKS, POLITE
+from seal_cli.language.morphology import is_adverb, verb_lemma
+from seal_cli.language.rule import Example, Match, Rule
+from seal_cli.language.state import FORMULA_FIRST, State, match_phrase, merge
+from seal_cli.language.tags import Tag
+from seal_cli.language.tokens import capitalised
+
+
+def _formula(s: State, i: int) -> Match | None:
+    n = s.formula(i)
+    if not n:
+        return None
+    if s.expect_verb:
+        return Match(n, (merge(s.words, i, n, Tag.POLITE),))     # "When you get a chance, could you ..."
+    return Match(n)                                               # "bring it to me when you can"
+
+
+def _while_holding(s: State, i: int) -> Match | None:
+    if not s.out and s.words[i].lower in ("while", "after") and s.verb_after(i + 1):
+        return s.emit(i, 1, Tag.POLITE)                           # "While holding a cup, ..."
+    return None
+
+
+def _adverb_comma(s: State, i: int) -> Match | None:
+    words, low = s.words, s.words[i].lower
+    if i + 2 < len(words) and words[i + 1].lower == "," and is_adverb(low) and \
+            (s.verb_after(i + 2) or words[i + 2].lower == "please"):
+        return Match(2, (merge(words, i, 2, Tag.POLITE),))        # "*Quietly,* please: turn off ..."
+    return None
+
+
+def _politeness(s: State, i: int) -> Match | None:
+    words, low = s.words, s.words[i].lower
+    n = match_phrase(words, i, POLITE)
+    if n and not (n == 1 and low in ("and", "then") and not s.out and not s.verb_after(i + 1)) and (
+            low in ("to", "and", "then") or s.verb_after(i + n) or i + n >= len(words) or not s.verb_at(i)):
+        return Match(n, (merge(words, i, n, Tag.POLITE),))
+    return None
+
+
+def _emphatic_do(s: State, i: int) -> Match | None:
+    words = s.words
+    if i + 1 < len(words) and "do" not in s.lexicon.units and \
+            verb_lemma(words[i + 1].lower) == words[i + 1].lower and s.verb_at(i + 1):
+        return s.emit(i, 1, Tag.POLITE)                           # emphatic "*Do* take his coat"
+    return None
+
+
+def _you_imperative(s: State, i: int) -> Match | None:
+    words = s.words
+    if i + 1 < len(words) and verb_lemma(words[i + 1].lower) == words[i + 1].lower and s.verb_at(i + 1):
+        return s.emit(i, 1, Tag.POLITE)                           # "You go to the hall", "please you bring ..."
+    return None
+
+
+def _vocative_name(s: State, i: int) -> Match | None:
+    words = s.words
+    if capitalised(words[i]) and i + 1 < len(words) and words[i + 1].lower == "," and s.verb_after(i + 2):
+        return Match(2, (merge(words, i, 2, Tag.POLITE),))        # "Robin, bring me a cup"
+    return None
+
+
+def _please_inside(s: State, i: int) -> Match | None:
+    words = s.words
+    if s.expect_verb or i + 1 >= len(words) or words[i + 1].lower in END_MARKS:
+        return None
+    n, spans = s.remark_after(i + 1) if words[i + 1].lower == "," else (0, ())
+    if n:
+        return Match(1 + n, remarks=spans)      # "turn the heater on please, *I'm shivering*"
+    return Match(2 if i + 2 < len(words) and words[i + 1].lower == "," else 1)
+    # "bring me, please, a glass of juice": politeness inside the clause
+
+
+def _thanks(s: State, i: int) -> Match | None:
+    words = s.words
+    k = i + 1
+    while k < len(words) and words[k].lower in ("you", "please", "thanks"):
+        k += 1
+    if all(r.lower in END_MARKS for r in words[k:]):
+        return Match(k - i, (merge(words, i, k - i, Tag.POLITE),))   # "... please", "..., thank you."
+    return None
+
+
+FORMULA = Rule("politeness formula", _formula, (
+    Example("When you get a chance, could you close the window?", "When you get a chance,", Tag.POLITE),
+    Example("bring it to me when you can", "when", ""),
+), FORMULA_FIRST, "politeness said as a clause of its own: before the command, politeness; after it, dropped")
+WHILE_HOLDING = Rule("while or after first", _while_holding, (
+    Example("While holding a cup, turn on the lamp", "While", Tag.POLITE),
+), frozenset(["while", "after"]), "'while'/'after' opening the command before a verb")
+ADVERB_COMMA = Rule("adverb and comma", _adverb_comma, (
+    Example("Quietly, please: turn off the radio", "Quietly ,", Tag.POLITE),
+), None, "a manner adverb and its comma before a request")
+POLITENESS = Rule("politeness", _politeness, (
+    Example("could you please bring me a cup", "could you please", Tag.POLITE),
+    Example("robot, go to the kitchen", "robot,", Tag.POLITE),
+), None, "politeness words and phrases before the verb (english.POLITE)")
+EMPHATIC_DO = Rule("emphatic do", _emphatic_do, (
+    Example("Do take his coat", "Do", Tag.POLITE),
+), frozenset(["do"]), "'do' before a verb's base form")
+YOU_IMPERATIVE = Rule("you before the verb", _you_imperative, (
+    Example("You go to the hall", "You", Tag.POLITE),
+), frozenset(["you"]), "'you' before a verb's base form: still a request")
+VOCATIVE_NAME = Rule("name addressed", _vocative_name, (
+    Example("Robin, bring me a cup", "Robin ,", Tag.POLITE),
+), None, "a capitalised name and a comma before the command: the robot addressed")
+PLEASE_INSIDE = Rule("please inside a clause", _please_inside, (
+    Example("bring me, please, a glass of juice", "please", ""),
+    Example("turn the heater on please, I'm shivering", "please", ""),
+), frozenset(["please"]), "politeness inside a clause, and a remark after it")
+THANKS = Rule("thanks at the end", _thanks, (
+    Example("bring me the cup thank you.", "thank you", Tag.POLITE),
+), frozenset(["please", "thanks", "thank"]), "'please', 'thanks', 'thank you' ending the command")

@@ -1,0 +1,207 @@
+"""Requests said without an imperative verb: a bare question ("What's on the table?", "Where is the
+cup?"), the speaker's wish ("I'd like the red mug", "Can I have a plate?"), and "let me know ...".
+
+Each is read as the plain command it means — "tell me ...", "find ...", "bring me ...", "tell me
+..." (the paraphrases are English, in :mod:`seal_cli.language.english`; their verb must be a
+lexical unit of the library). What the paraphrase adds and the command did not say (the verb of
+"What is on the table?", the "me" of "I'd like a cup") is a word of no width: an element that was
+left unsaid (its ``text`` is empty).
+"""
+
+from __future__ import annotations
+
+from seal_cli.language.english import (
+    END_MARKS,
+    LET_KNOW,
+    OBJECT_PRONOUNS,
+    PREPOSITIONS,
+    QUESTION_MEANS,
+    QUESTION_WORDS,
+    REQUEST_MEANS,
+    REQUESTS,
+    WHERE_MEANS,
+    WHERE_QUESTIONS,
+)
+from seal_cli.language.rule import Example, Match, Rule
+from seal_cli.language.state import State, match_phrase
+from seal_cli.language.tags import Tag
+from seal_cli.language.tokens import Word, capitalised
+
+_WHERE_FIRST = frozenset(p.split()[0] for p in WHERE_QUESTIONS)
+_REQUEST_FIRST = frozenset(p.split()[0] for p in REQUESTS)
+_SPEAKER = "me"
+
+
+def _unsaid(at: int, tag: str, info: object = None, lower: str = "") -> Word:
+    """A word the command implies but did not say, at character ``at``."""
+    return Word("", at, at, tag, info, lower)
+
+
+def _phrase(s: State, i: int, table: frozenset[str]) -> int:
+    """How many words of a phrase of ``table`` start at ``i`` (0: none), longest first."""
+    words = s.words
+    best = 0
+    for phrase in table:
+        parts = phrase.split()
+        n = len(parts)
+        if n > best and i + n <= len(words) and all(words[i + k].lower == parts[k] for k in range(n)):
+            best = n
+    return best
+
+
+def _sentence_asks_nothing_else(s: State, i: int) -> bool:
+    """Whether no clause with a verb of the library follows in the sentence from ``i`` ("I need a hand,
+    *could you bring* the box" is a statement and a request)."""
+    words = s.words
+    for k in range(i, len(words)):
+        low = words[k].lower
+        if low in END_MARKS:
+            return True
+        if low in (",", ";", "and", "then", "so") and s.verb_after(k + 1):
+            return False
+    return True
+
+
+def _question(s: State, i: int) -> Match | None:
+    words = s.words
+    if QUESTION_MEANS not in s.lexicon.units or i + 1 >= len(words) or words[i + 1].lower in END_MARKS:
+        return None
+    nxt = words[i + 1].lower
+    if nxt not in ("is", "are", "'s", "was", "were") and not nxt.isalpha():
+        return None
+    end = s.speech_end(i)                         # the question, whatever its shape, is what to tell
+    return Match(end - i, (_unsaid(words[i].start, Tag.VERB, QUESTION_MEANS), s.emit(i, end - i, Tag.SAID).words[0]),
+                 expect=False, verb=QUESTION_MEANS, using=False)
+
+
+def _where(s: State, i: int) -> Match | None:
+    words = s.words
+    n = _phrase(s, i, WHERE_QUESTIONS)
+    if not n or WHERE_MEANS not in s.lexicon.units or not s.np_starts(i + n):
+        return None
+    text = s.text_of(words[i].start, words[i + n - 1].end) or " ".join(w.text for w in words[i:i + n])
+    return Match(n, (Word(text, words[i].start, words[i + n - 1].end, Tag.VERB, WHERE_MEANS),), expect=False,
+                 verb=WHERE_MEANS, using=False)
+
+
+def _request(s: State, i: int) -> Match | None:
+    words = s.words
+    n = _phrase(s, i, REQUESTS)
+    if not n or REQUEST_MEANS not in s.lexicon.units or not s.np_starts(i + n) or \
+            words[i + n].lower in ("you", "to") or s.verb_at(i + n) is not None or \
+            not _sentence_asks_nothing_else(s, i + n):
+        return None
+    end = words[i + n - 1].end
+    text = s.text_of(words[i].start, end) or " ".join(w.text for w in words[i:i + n])
+    return Match(n, (Word(text, words[i].start, end, Tag.VERB, REQUEST_MEANS),
+                     _unsaid(end, Tag.PRON, None, _SPEAKER)), expect=False, verb=REQUEST_MEANS, using=False)
+
+
+def _let_know(s: State, i: int) -> Match | None:
+    words = s.words
+    if QUESTION_MEANS not in s.lexicon.units or i + 2 >= len(words):
+        return None
+    told = words[i + 1]
+    if not (told.lower in OBJECT_PRONOUNS and told.lower not in ("it", "this", "that") or capitalised(told)) or \
+            words[i + 2].lower != LET_KNOW[1]:
+        return None
+    k = i + 3                                     # "let me know how many": "tell me how many", a unit of its own
+    for unit in s.lexicon.units.get(QUESTION_MEANS, ()):
+        rest = unit[2:]
+        if len(unit) > 2 and unit[1] == told.lower and all(k + m < len(words) and words[k + m].lower == rest[m]
+                                                           for m in range(len(rest))):
+            end = words[k + len(rest) - 1].end
+            text = s.text_of(words[i].start, end)
+            return Match(k + len(rest) - i, (Word(text, words[i].start, end, Tag.VERB, " ".join(unit)),),
+                         expect=False, verb=" ".join(unit), using=False)
+    tag = Tag.PRON if told.lower in OBJECT_PRONOUNS else Tag.NAME
+    return Match(3, (words[i].tagged(Tag.VERB, QUESTION_MEANS), told.tagged(tag)), expect=False,
+                 verb=QUESTION_MEANS, using=False)
+
+
+QUESTION = Rule("bare question", _question, (
+    Example("What's the biggest thing on the shelf?", "What 's the biggest thing on the shelf", Tag.SAID),
+    Example("which of the bottles in the pantry is the biggest?", "", Tag.VERB),
+    Example("who is in the kitchen?", "", Tag.VERB),
+), QUESTION_WORDS, "a question where a command starts: 'tell me' and the question")
+WHERE = Rule("where is", _where, (
+    Example("where is the cup?", "where is", Tag.VERB),
+    Example("Is there a cup in the kitchen?", "Is there", Tag.VERB),
+), _WHERE_FIRST, "'where is X', 'is there X': find X")
+REQUEST = Rule("wish for a thing", _request, (
+    Example("I'd like the red mug", "I'd like", Tag.VERB),
+    Example("Can I have the big plate?", "Can I have", Tag.VERB),
+    Example("I need a pen.", "I need", Tag.VERB),
+), _REQUEST_FIRST, "'I'd like X', 'can I have X', 'I need X': bring X to the speaker")
+LET_KNOW_RULE = Rule("let me know", _let_know, (
+    Example("let me know when the laundry is done", "let", Tag.VERB),
+    Example("let me know how many bottles are in the fridge", "let me know how many", Tag.VERB),
+    Example("let Amara know that her package arrived", "Amara", Tag.NAME),
+), frozenset([LET_KNOW[0]]), "'let X know': tell X")
+
+
+_PHRASE_TAGS = frozenset({Tag.PREP, Tag.OF, Tag.DET, Tag.NUM, Tag.POSS, Tag.WORD, Tag.NAME, Tag.RESULT, Tag.LABEL,
+                          Tag.AND_NP, Tag.PRON})
+
+
+def _fronted_of(s: State, i: int) -> Match | None:
+    if not s.np_starts(i + 1) or not _fronted_ends(s, i + 1):
+        return None
+    return Match(1, (s.words[i].tagged(Tag.PREP, "of"),), expect=False)
+
+
+def _fronted_ends(s: State, i: int) -> bool:
+    """Whether a phrase from ``i`` ends at a comma before a clause in the same sentence."""
+    words = s.words
+    for k in range(i, len(words)):
+        if words[k].lower in END_MARKS or words[k].lower == ";":
+            return False
+        if words[k].lower == ",":
+            return _clause_at(s, k + 1)
+    return False
+
+
+def _clause_at(s: State, k: int) -> bool:
+    return k < len(s.words) and (s.verb_after(k) or s.words[k].lower in QUESTION_WORDS and _question(s, k) is not None
+                                 or _where(s, k) is not None)
+
+
+def _fronted_question(s: State, i: int) -> Match | None:
+    """A phrase said before a question ("*On the table,* which object is lightest?"): the phrase is part
+    of what to tell."""
+    words = s.words
+    if QUESTION_MEANS not in s.lexicon.units or not match_phrase(words, i, PREPOSITIONS) and words[i].lower != "of":
+        return None
+    k = i + 1
+    while k < len(words) and words[k].lower not in END_MARKS and words[k].lower not in (",", ";"):
+        k += 1
+    if k + 1 >= len(words) or words[k].lower != "," or words[k + 1].lower not in QUESTION_WORDS or \
+            _question(s, k + 1) is None:
+        return None
+    end = s.speech_end(k + 1)
+    return Match(end - i, (_unsaid(words[i].start, Tag.VERB, QUESTION_MEANS), s.emit(i, end - i, Tag.SAID).words[0]),
+                 expect=False, verb=QUESTION_MEANS, using=False)
+
+
+def _fronted_end(s: State, i: int) -> Match | None:
+    """A comma ending a phrase said before the clause's verb ("*From the cupboard,* give me the bowl", "*On
+    the table,* which object is lightest?"): the clause starts after it."""
+    out = s.out
+    k = len(out) - 1
+    while k >= 0 and out[k].tag in _PHRASE_TAGS:
+        k -= 1
+    if k == len(out) - 1 or out[k + 1].tag != Tag.PREP or not _clause_at(s, i + 1):
+        return None
+    return Match(1, (s.words[i].tagged(Tag.SEP),), expect=True)
+
+
+FRONTED_OF = Rule("of-phrase first", _fronted_of, (
+    Example("Of the people in the hall, how many are sitting?", "Of", Tag.PREP),
+), frozenset(["of"]), "'of' and a noun phrase before the clause ('Of the people in the hall, how many ...')")
+FRONTED_QUESTION = Rule("phrase said before a question", _fronted_question, (
+    Example("On the table, which object is lightest?", "On the table , which object is lightest", Tag.SAID),
+), frozenset(p.split()[0] for p in PREPOSITIONS) | {"of"},
+    "a phrase and a comma before a question: all of it is what to tell")
+FRONTED_END = Rule("phrase said first", _fronted_end, (
+    Example("From the cupboard, give me the bowl", ",", Tag.SEP),
+), frozenset([","]), "the comma after a phrase said before the verb: the clause starts after it")

@@ -1,0 +1,64 @@
+"""Statements said beside the command: a sentence with no verb of the library ("Good morning!"),
+words of address and statements after the request ("..., dear, I'm cold"), a clause after
+"because" or a subject contraction, and what is told without "that" ("tell mom *I'm late*")."""
+
+from __future__ import annotations
+
+from seal_cli.language.english import BECAUSE
+from seal_cli.language.rule import Example, Match, Rule
+from seal_cli.language.state import State, subject_word
+from seal_cli.language.tags import Tag
+
+
+def _aside(s: State, i: int) -> Match | None:
+    return s.aside(i)
+
+
+def _her_told(s: State, i: int) -> Match | None:
+    out = s.out
+    if s.speech and out and out[-1].lower == "her" and s.prev_tag() == Tag.POSS and subject_word(s.words[i]) and \
+            s.told_at(i):
+        return Match(0, last=out[-1].tagged(Tag.PRON))            # "tell *her* we're moving": her is the person told
+    return None
+
+
+def _told(s: State, i: int) -> Match | None:
+    if s.speech and s.prev_tag() in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL) and s.told_at(i):
+        end = s.speech_end(i)
+        return s.emit(i, end - i, Tag.SAID)                       # "tell him we need a cart": kept whole
+    return None
+
+
+def _remark_unmarked(s: State, i: int) -> Match | None:
+    low = s.words[i].lower
+    if s.expect_verb or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.PARTICLE, Tag.LABEL, Tag.HERE) or \
+            not (low in BECAUSE or "'" in low):
+        return None
+    n, spans = s.remark_unmarked(i)
+    return Match(n, remarks=spans) if n else None                 # "give the ball to Lily cos she wants it"
+
+
+def _remark_after(s: State, i: int) -> Match | None:
+    if s.expect_verb:
+        return None
+    n, spans = s.remark_after(i)
+    return Match(n, remarks=spans) if n else None   # "close the door, dear, I'm cold": address and statements dropped
+
+
+ASIDE = Rule("sentence beside the command", _aside, (
+    Example("Good morning! Could you open the window?", "Good morning !", Tag.POLITE),
+    Example("Bogdan has a question; answer it for him", "Bogdan has a question ;", Tag.POLITE),
+), None, "a greeting or statement with no verb of the library, where a command should start")
+HER_TOLD = Rule("her told", _her_told, (
+    Example("tell her we're moving", "her", Tag.PRON),
+), None, "'her' before a subject is the person a verb of saying tells, not a possessive")
+TOLD = Rule("told without that", _told, (
+    Example("tell mom I'm late", "I'm late", Tag.SAID),
+    Example("tell the kids dinner is ready", "dinner is ready", Tag.SAID),
+), None, "what is told without 'that', right after the person told")
+REMARK_UNMARKED = Rule("remark without a comma", _remark_unmarked, (
+    Example("give the ball to Lily cos she wants it", "cos", ""),
+), lambda low: low in BECAUSE or "'" in low, "'because' or a subject contraction after the request starts a statement")
+REMARK_AFTER = Rule("remark after a comma", _remark_after, (
+    Example("close the door, dear, I'm cold", "dear", ""),
+), frozenset([",", ";"]), "words of address and statements after a comma ending the request")

@@ -1,0 +1,63 @@
+"""Verbs: a lexical unit of the library starting a clause, its split particle, "use X to V", and
+"to" starting a clause of purpose or what is told."""
+
+from __future__ import annotations
+
+from seal_cli.language.rule import Example, Match, Rule
+from seal_cli.language.state import State, merge
+from seal_cli.language.tags import Tag
+from seal_cli.language.tokens import Word
+
+
+def _split_particle(s: State, i: int) -> Match | None:
+    unit = s.particles.get(i)
+    if unit is None:
+        return None
+    w = s.words[i]
+    return Match(1, (Word(w.text, w.start, w.end, Tag.PARTICLE, unit, w.lower),))
+
+
+def _use(s: State, i: int) -> Match | None:
+    if not s.use_at(i):
+        return None
+    return Match(1, (s.words[i].tagged(Tag.PREP, "with"),), expect=False, using=True)
+
+
+def _verb(s: State, i: int) -> Match | None:
+    found = s.verb_at(i)
+    if not found:
+        return None
+    unit, n, split = found
+    return Match(n, (merge(s.words, i, n, Tag.VERB, unit),), expect=False, verb=unit, using=False,
+                 particle=(split, unit) if split is not None else None)
+
+
+def _tell_to(s: State, i: int) -> Match | None:
+    if s.speech and s.prev_tag() in (Tag.WORD, Tag.NAME, Tag.PRON) and i + 1 < len(s.words) and s.verb_at(i + 1):
+        return s.emit(i, 1, Tag.WH)                               # "tell Maria *to* come downstairs"
+    return None
+
+
+def _purpose(s: State, i: int) -> Match | None:
+    if s.purpose(i):
+        return Match(1, (s.words[i].tagged(Tag.SEP),), expect=True)   # "take the remote to turn on the lamp"
+    return None
+
+
+SPLIT_PARTICLE = Rule("split particle", _split_particle, (
+    Example("pick the cup up", "up", Tag.PARTICLE),
+    Example("turn the lamp on", "on", Tag.PARTICLE),
+), None, "the particle of a verb split around its object, found when the verb was")
+USE = Rule("use X to V", _use, (
+    Example("use a knife to slice the apple", "use", Tag.PREP),
+), frozenset(["use", "using"]), "'use X to V': X is what V is done with")
+VERB = Rule("verb", _verb, (
+    Example("tell me how many cups are on the table", "tell me how many", Tag.VERB),
+    Example("putting the cup on the table", "putting", Tag.VERB),
+), None, "the longest lexical unit of the library starting at the word, in any inflection")
+TELL_TO = Rule("told to", _tell_to, (
+    Example("tell Maria to come downstairs", "to", Tag.WH),
+), frozenset(["to"]), "'to' after the person a verb of saying tells")
+PURPOSE = Rule("clause of purpose", _purpose, (
+    Example("take the remote to turn on the lamp", "to", Tag.SEP),
+), frozenset(["to"]), "'to' and a verb of the library with its object: a clause of its own")

@@ -1,0 +1,811 @@
+"""The tagger's state at a word, and the questions its rules ask of it.
+
+:class:`State` holds the words of one command, the tagged words so far (``out``), and what the
+clause being tagged has shown (its verb, whether it says something, whether "use X" came before);
+its methods look ahead and behind without changing anything (memoising the verbs found), so the
+rules of :mod:`seal_cli.language.rules` stay pure functions of it. The tagger
+(:class:`seal_cli.language.lexicon.Tagger`) applies what they match.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping, Sequence
+from typing import TYPE_CHECKING
+
+from seal_cli.language.english import (
+    AND_WORDS,
+    BASE_FORM_SUBJECTS,
+    BE_WORDS,
+    BECAUSE,
+    CLOCK_PREPOSITIONS,
+    CLOCK_WORDS,
+    CONTRACTED,
+    DETERMINERS,
+    END_MARKS,
+    FILLERS,
+    FINITE,
+    FREQUENCY_ADVERBS,
+    HERE_WORDS,
+    LINKING_VERBS,
+    NOMINATIVE,
+    NUMBERS,
+    OBJECT_PRONOUNS,
+    PARTICLES,
+    PATH_PREPOSITIONS,
+    POLITE,
+    POLITE_FORMULAE,
+    POSSESSIVES,
+    PREPOSITIONS,
+    PRONOUNS,
+    QUANTIFIERS,
+    QUESTION_WORDS,
+    RELATIVES,
+    REQUESTS,
+    SEPARATOR_WORDS,
+    STATEMENT_LINKS,
+    STATES_DONE,
+    SUBJECTS,
+    SUBORDINATORS,
+    THIRD_PERSON_SUBJECTS,
+    TIME_UNITS,
+    TIME_WORDS,
+    TITLES,
+    VAGUE_NUMBERS,
+    VOCATIVES,
+    WH_WORDS,
+    WHERE_QUESTIONS,
+)
+from seal_cli.language.morphology import gerund_lemma, is_adjective, is_adverb, is_plural, verb_lemma
+from seal_cli.language.rule import Match
+from seal_cli.language.tags import Tag
+from seal_cli.language.tokens import Word, capitalised
+
+if TYPE_CHECKING:
+    from seal_cli.language.lexicon import Lexicon
+
+__all__ = ["CLOSED", "State", "match_phrase", "merge"]
+
+# ---------------------------------------------------------------------------------------------
+# Phrases of closed-class words, and the first words of what the tagger looks at specially
+
+_PHRASES: dict[str, tuple[str, ...]] = {}
+for _table in (PREPOSITIONS, POLITE, POLITE_FORMULAE, SEPARATOR_WORDS, NUMBERS, HERE_WORDS, TIME_WORDS, SUBORDINATORS,
+               VOCATIVES):
+    for _phrase in _table:
+        _parts = tuple(_phrase.split())
+        if len(_parts) > 1:
+            _PHRASES.setdefault(_parts[0], ())
+            _PHRASES[_parts[0]] = (*_PHRASES[_parts[0]], _phrase)
+
+SUB_FIRST = frozenset(p.split()[0] for p in SUBORDINATORS)
+FORMULA_FIRST = frozenset(p.split()[0] for p in POLITE_FORMULAE)
+TIME_FIRST = frozenset(p.split()[0] for p in TIME_WORDS)
+SEP_FIRST = frozenset(p.split()[0] for p in SEPARATOR_WORDS)
+LEAD_FIRST = SUB_FIRST | SEP_FIRST | {",", ";", ":", "start", "begin", "finish", "end", "continue", "take", "have",
+                                     "be"}
+"""Words that may begin what a lead-in rule tags before a verb (besides adverbs and polite frames)."""
+REL_FIRST = RELATIVES | NOMINATIVE | {"where", "you"}
+INDEFINITE = frozenset(["something", "anything", "nothing", "everything", "someone", "somebody", "anyone",
+                        "anybody"])
+CLOSED = (DETERMINERS | POSSESSIVES | PRONOUNS | WH_WORDS | BE_WORDS | PARTICLES
+          | frozenset(p for p in PREPOSITIONS if " " not in p) | frozenset(NUMBERS))
+"""Every one-word closed-class word."""
+
+
+def match_phrase(words: Sequence[Word], i: int, table: Iterable[str] | Mapping[str, object]) -> int:
+    """How many words of a multiword (or one-word) phrase of ``table`` start at ``i`` (0: none)."""
+    first = words[i].lower
+    if first not in _PHRASES:
+        return 1 if first in table else 0
+    best = 0
+    for phrase in _PHRASES.get(first, ()):
+        if phrase in table:
+            parts = phrase.split()
+            n = len(parts)
+            if n > best and i + n <= len(words) and all(words[i + k].lower == parts[k] for k in range(n)):
+                best = n
+    if best == 0 and first in table:
+        best = 1
+    return best
+
+
+def merge(words: Sequence[Word], i: int, n: int, tag: str, info: object = None) -> Word:
+    """Words ``i .. i+n`` as one tagged word."""
+    return Word(" ".join(w.text for w in words[i:i + n]), words[i].start, words[i + n - 1].end, tag, info)
+
+
+def awaits_name(word: Word) -> bool:
+    """Whether a tagged word is a title whose name follows ("*Mr.* Hughes"): no noun phrase yet."""
+    return word.text.endswith(".") and word.lower.rstrip(".") in TITLES
+
+
+def subject_word(word: Word) -> bool:
+    """Whether a word may only start a clause: a subject pronoun or its contraction ("we're", "I'll")."""
+    low = word.lower
+    return low in SUBJECTS and low not in OBJECT_PRONOUNS or \
+        "'" in low and low.split("'")[0] in SUBJECTS and "'" + low.split("'", 1)[1] in CONTRACTED
+
+
+def statement_lead(word: Word, nxt: Word) -> bool:
+    """Whether a word may lead a statement said beside the command: a sentence adverb ("*apparently*
+    they're staying"), or "and"/"then"/"quick" before a comma, an adverb or a subject ("*and* quick, it's
+    the next shot", "and then *it* goes ...")."""
+    low, after = word.lower, nxt.lower
+    if is_adverb(low) and low.endswith("ly"):
+        return True
+    return low in ("and", "then", "quick") and (after in (",", "quick", "then") or is_adverb(after) or
+                                                after in SUBJECTS or subject_word(nxt))
+
+
+def inflected(low: str) -> bool:
+    """Whether a word is a verb's third-person or past form ("likes", "left"), not its base or -ing form."""
+    lemma = verb_lemma(low) if low.isalpha() else None
+    return bool(lemma) and lemma != low and not low.endswith("ing")
+
+
+def _its_is_it_is(words: Sequence[Word], k: int) -> bool:
+    """Whether "its" written without its apostrophe is "it's" ("*its* too loud", "*its* getting cold",
+    "*its* a mess"): a determiner, an adverb, a participle, or an adjective that ends the phrase follow it,
+    no noun ("its lid", "its red lid")."""
+    nxt = words[k + 1].lower if k + 1 < len(words) else ""
+    if not nxt.isalpha():
+        return False
+    if nxt in DETERMINERS or nxt in ("not", "been", "going", "gonna", "got") or gerund_lemma(nxt) or \
+            nxt not in CLOSED and is_adverb(nxt):
+        return True
+    after = words[k + 2].lower if k + 2 < len(words) else ""
+    return is_adjective(nxt) and (not after.isalpha() or after in CLOSED or after in SEPARATOR_WORDS)
+
+
+def _without_fillers(words: list[Word]) -> list[Word]:
+    """The words without hesitations ("um", "uh", ...) and the comma after one ("and, *um,* put it on the
+    bed"): they say nothing, so "and then, um, chill it" is "and then, chill it"."""
+    if not any(w.lower in FILLERS for w in words):
+        return words
+    kept: list[Word] = []
+    skip_comma = False
+    for w in words:
+        if w.lower in FILLERS:
+            skip_comma = True
+            continue
+        if not (skip_comma and w.lower == ","):
+            kept.append(w)
+        skip_comma = False
+    return kept
+
+
+def read_words(words: list[Word]) -> list[Word]:
+    """The words as the tagger reads them: without fillers, "its" read as "it's" where a noun cannot follow."""
+    words = _without_fillers(words)
+    if any(w.lower == "its" for w in words):
+        words = [Word(w.text, w.start, w.end, w.tag, w.info, "it's") if w.lower == "its" and _its_is_it_is(words, k)
+                 else w for k, w in enumerate(words)]      # "turn the radio off *its* too loud"
+    return words
+
+
+class State:
+    """What the tagger knows at a word of one command (see the module docstring)."""
+
+    def __init__(self, lexicon: Lexicon, words: list[Word], text: str = "") -> None:
+        self.text = text
+        self.lexicon = lexicon
+        self.words = read_words(words)
+        self.out: list[Word] = []
+        self._verbs: dict[int, tuple[str, int, int | None] | None] = {}
+        self.using = False                  # after "use X": "to" starts the clause of what X is used for
+        self.speech = False                 # the clause's verb says something ("tell"): a clause after it is said
+        self.verb_index = -1                # where in ``out`` the clause's verb is
+        self.expect_verb = True             # a clause starts here
+        self.particles: dict[int, str] = {}  # word index -> the unit of a split particle to come
+        self.remarks: list[tuple[int, int]] = []   # character spans of statements dropped beside the command
+
+    def verb_at(self, i: int) -> tuple[str, int, int | None] | None:
+        """The lexical unit starting at word ``i`` (memoised: the rules ask more than once)."""
+        if i not in self._verbs:
+            self._verbs[i] = self.lexicon.verb_at(self.words, i, self.clause_end(i + 1))
+        return self._verbs[i]
+
+    # -- reading the words -------------------------------------------------------------------
+    def emit(self, i: int, n: int, tag: str, info: object = None) -> Match:
+        """A match that tags words ``i .. i+n`` as one word."""
+        word = self.words[i]
+        return Match(n, (Word(word.text, word.start, word.end, tag, info) if n == 1 else
+                         merge(self.words, i, n, tag, info),))
+
+    def text_of(self, start: int, end: int) -> str:
+        return self.text[start:end] if self.text else ""
+
+    def prev_tag(self) -> str:
+        return self.out[-1].tag if self.out else ""
+
+    def in_np(self) -> bool:
+        """Whether the next word is inside a noun phrase, before its head."""
+        return self.prev_tag() in (Tag.DET, Tag.NUM, Tag.POSS, Tag.RESULT)
+
+    def next_lower(self, i: int) -> str:
+        return self.words[i + 1].lower if i + 1 < len(self.words) else ""
+
+    def extended(self, i: int, n: int) -> Word:
+        """The last tagged word taking in words ``i .. i+n`` ("First" + "," before a verb)."""
+        last = self.out[-1]
+        return Word(self.text_of(last.start, self.words[i + n - 1].end) or last.text, last.start,
+                    self.words[i + n - 1].end, last.tag, last.info)
+
+    def clause_end(self, i: int) -> int:
+        """Index of the first word at or after ``i`` that may end the clause."""
+        for j in range(i, len(self.words)):
+            if self.words[j].lower in (",", ";", ".", "!", "?", "then", "and"):
+                return j
+        return len(self.words)
+
+    def verb_after(self, i: int) -> bool:
+        """Whether a verb (a lexical unit) starts at ``i``, after any politeness words; or at ``i`` itself,
+        a verb that is politeness only before another ("and *go* to the hall", not "go and get")."""
+        start = i
+        while i < len(self.words):
+            n = match_phrase(self.words, i, POLITE)
+            if n and self.words[i].lower not in ("to", "and", "then"):
+                i += n
+                continue
+            break
+        if i < len(self.words) and (self.verb_at(i) is not None or self.use_at(i)):
+            return True
+        return start < i and start < len(self.words) and self.verb_at(start) is not None
+
+    def formula(self, i: int) -> int:
+        """How many words a politeness formula said as a whole clause takes at ``i`` (0: none): it
+        ends the command or is followed by punctuation, "and"/"then" or more politeness."""
+        words = self.words
+        if words[i].lower not in FORMULA_FIRST:
+            return 0
+        n = match_phrase(words, i, POLITE_FORMULAE)
+        if not n or i + n == len(words):
+            return n
+        nxt = words[i + n].lower
+        if nxt in END_MARKS or nxt in (",", ";", ":", "and", "then"):
+            return n
+        m = match_phrase(words, i + n, POLITE)
+        return n if m and nxt != "to" and self.verb_after(i + n) else 0
+
+    def statement_at(self, i: int) -> int:
+        """Whether a statement starts at ``i`` and where its clause ends (0: none): a subject (a pronoun,
+        a contraction "it's", "we're", "i'll"; or a noun phrase: "the bus", "my son Declan", "Bogdan") and
+        then a finite verb ("is", "has", "can't", "keeps", "arrives on"); a command starts with a verb's
+        base form instead. The clause ends at punctuation."""
+        words = self.words
+        if i >= len(words):
+            return 0
+        end = i
+        while end < len(words) and words[end].lower not in END_MARKS and words[end].lower not in (",", ";", ":"):
+            end += 1
+        first = words[i].lower
+        nxt = words[i + 1].lower if i + 1 < end else ""
+        if i + 1 < len(words) and statement_lead(words[i], words[i + 1]):
+            k = i + 1 + (words[i + 1].lower == ",")          # "..., *apparently* they're staying", "and quick, it's"
+            return self.statement_at(k) if k < len(words) and not (capitalised(words[i]) and k == i + 1) else 0
+        if nxt.isascii() and nxt.isdigit() and i + 2 < end and words[i + 2].lower in FINITE and \
+                first not in self.lexicon.units:
+            return end                                        # "Table 4 is ready", "room 12 has no towels"
+        if verb_lemma(first) == first and first not in SUBJECTS:
+            return 0                                          # "Grab the cup": a command, maybe an unknown verb
+        if first in BASE_FORM_SUBJECTS and nxt.isalpha() and nxt not in PREPOSITIONS:
+            return end                                        # "we open at six", "I need a hand": no command
+        if "'" in first and first.split("'")[0] in SUBJECTS | {"you", "who", "what", "here"} and \
+                "'" + first.split("'", 1)[1] in CONTRACTED:
+            return end                                        # "we're eating in ten", "i'll be right there"
+        if first in SUBJECTS or first == "you" and nxt not in ("can", "could", "will", "would", "should", "must"):
+            return end if nxt in FINITE or nxt in CONTRACTED or self.finite_form(i + 1, end) or \
+                first in THIRD_PERSON_SUBJECTS and inflected(nxt) else 0     # "he *likes* company", "it *smells* like"
+        partitive = first in QUANTIFIERS and nxt == "of"       # "one of its wheels squeaks"
+        if not (first in DETERMINERS or first in POSSESSIVES or capitalised(words[i]) or partitive):
+            return 0
+        for k in range(i + 1, end):
+            if words[k - 1].lower in DETERMINERS or words[k - 1].lower in POSSESSIVES:
+                continue                                      # "the plates": a noun
+            if words[k].lower in FINITE or self.finite_form(k, end) or \
+                    verb_lemma(words[k].lower) in LINKING_VERBS and inflected(words[k].lower):
+                return end                                    # "the fridge door's open", "the door *seems* loose"
+            if k == end - 1 and k > i + 1 and self.final_verb(k, partitive):
+                return end                                    # "the timer just went", "one of them squeaks"
+        return 0
+
+    def final_verb(self, k: int, partitive: bool) -> bool:
+        """Whether the word at ``k``, ending its clause after the subject, is a finite verb with nothing
+        after it: a past form ("the kettle *boiled*"), or a present form after an adverb ("the bell
+        *always rings*") or after a partitive subject ("one of its wheels *squeaks*"); a word ending in
+        s after a noun alone may be a plural noun ("the kitchen plates")."""
+        low = self.words[k].lower
+        lemma = verb_lemma(low) if low.isalpha() else None
+        if not lemma or lemma == low or low.endswith("ing"):
+            return False
+        before = self.words[k - 1].lower
+        return not low.endswith("s") or partitive or is_adverb(before) or before in FREQUENCY_ADVERBS
+
+
+
+    def told_at(self, i: int) -> bool:
+        """Whether a clause said without "that" starts at ``i``, right after the person a verb of saying
+        tells ("tell mom *I'm late*", "tell the waiter *table 4 is ready*"): a statement, and only one
+        noun phrase between the verb and it."""
+        if self.verb_index < 0 or awaits_name(self.out[-1]):
+            return False                                      # "tell Mr. | Hughes that ...": the title's name
+        if not self.statement_at(i) and not self.bare_subject(i):
+            return False
+        between = self.out[self.verb_index + 1:]
+        return all(t.tag in ("DET", "POSS", "WORD", "NAME", "PRON", "LABEL", "RESULT") for t in between) and \
+            sum(t.tag in ("PRON", "NAME") for t in between) <= 1
+
+    def bare_subject(self, i: int) -> bool:
+        """Whether a statement whose subject is a bare noun starts at ``i`` after a plural person noun
+        ("tell the kids *dinner is ready*"): one or two lowercase open words, then "is"/"has"/..."""
+        words, out = self.words, self.out
+        if len(out) < 2 or out[-1].tag != "WORD" or not is_plural(out[-1].lower) or \
+                out[-2].tag not in ("DET", "POSS", "NUM", "WORD"):
+            return False
+        for k in range(i, min(i + 2, len(words) - 1)):
+            low = words[k].lower
+            if not low.isalpha() or capitalised(words[k]) or low in DETERMINERS or low in PRONOUNS or \
+                    low in PREPOSITIONS or low in POSSESSIVES or low in self.lexicon.units:
+                return False
+            if words[k + 1].lower in FINITE:
+                return True
+        return False
+
+    def finite_form(self, k: int, end: int) -> bool:
+        """Whether the word at ``k`` is a verb's third-person or past form followed by what a verb takes
+        ("she *arrives on* the bus", "the light *keeps flashing*"), not a plural noun."""
+        low = self.words[k].lower if k < end else ""
+        lemma = verb_lemma(low) if low.isalpha() else None
+        if not lemma or lemma == low or low.endswith("ing"):
+            return False                                      # irregular pasts too: "left", "brought"
+        nxt = self.words[k + 1].lower if k + 1 < end else ""
+        return bool(nxt) and (nxt in PREPOSITIONS or nxt in DETERMINERS or nxt in POSSESSIVES or nxt == "to"
+                              or nxt in OBJECT_PRONOUNS or bool(gerund_lemma(nxt)))   # "a guest *left* it"
+
+    def vocatives_end(self, i: int) -> int:
+        """Where words of address and tag questions starting at ``i`` end, commas between ("..., *dear*",
+        "..., *would you*?"); ``i`` when none."""
+        words, k = self.words, i
+        while k < len(words):
+            n = match_phrase(words, k, VOCATIVES)
+            if n:
+                k += n
+            elif words[k].lower == "," and k > i:
+                k += 1
+            else:
+                break
+        return k
+
+    def remark_unmarked(self, i: int) -> tuple[int, tuple[tuple[int, int], ...]]:
+        """A statement after the request with no comma before it, started by "because"/"cos"/... or a subject
+        contraction ("give the ball to Lily *cos she wants it*", "turn the radio off *it's too loud*"): how
+        many words to drop (0: none). A bare "she"/"I" after a noun may start a relative clause ("the book *I
+        left* on the sofa"), so only these."""
+        low = self.words[i].lower
+        if low not in BECAUSE and not ("'" in low and low.split("'")[0] in SUBJECTS and
+                                        "'" + low.split("'", 1)[1] in CONTRACTED):
+            return 0, ()
+        n, spans = self.remark_after(i - 1)
+        return (n - 1, spans) if n else (0, ())
+
+    def remark_after(self, i: int) -> tuple[int, tuple[tuple[int, int], ...]]:
+        """After a comma that ends a request: words of address, tag questions and statements up to the end
+        of the sentence ("..., *dear*? ...", "..., *she's been waiting a while*.", "..., *we're eating in
+        ten*"), also after "or", "because", "so" ("..., *or it will melt*"); how many words to drop (0: none).
+        Only when nothing else follows in the sentence. Returns the count and the spans dropped."""
+        words = self.words
+        k, spans = i + 1, []
+        while True:
+            k = self.vocatives_end(k)
+            link = 1 if k < len(words) and words[k].lower in STATEMENT_LINKS and k + 1 < len(words) else 0
+            end = self.statement_at(k + link)
+            if not end:
+                break
+            spans.append((words[k].start, words[end - 1].end))
+            k = end
+            while k < len(words) and words[k].lower in (",", ";"):
+                k += 1
+            if spans and k < len(words) and (k + 1 == len(words) or words[k + 1].lower in END_MARKS) and \
+                    words[k].lower not in self.lexicon.units and \
+                    (is_adjective(words[k].lower) or words[k].lower.endswith("ing") and gerund_lemma(words[k].lower)):
+                spans.append((words[k].start, words[k].end))     # "..., someone left it open, *shocking*."
+                k += 1
+        if k < len(words) and words[k].lower not in END_MARKS or k == i + 1:
+            return 0, ()
+        return k - i, tuple(spans)
+
+    def aside(self, i: int) -> Match | None:
+        """A sentence said beside the command, with no verb of the library, at the start of a sentence
+        ("*Good morning!* Could you ...", "*Priya needs her laptop,* could you bring it to her?"): how many
+        words it takes, with its end mark (0: none). A greeting or a statement asks nothing of the
+        robot when another sentence holds the command; before a comma, only when a polite request
+        follows ("..., could you", "..., please"). Only a verb's base form makes a command: "my
+        brother is *freezing*" states. The match tags it as politeness and keeps it as a remark."""
+        words = self.words
+        k = len(self.out) - 1
+        while k >= 0 and self.out[k].tag == "POLITE":
+            k -= 1                                       # "... Sorry, *gross*": interjections start it
+        if k >= 0 and not (self.out[k].tag == "SEP" and self.out[k].lower in END_MARKS):
+            return None                                  # inside a sentence
+        stated = self.statement_at(i)
+        if stated and stated < len(words) and words[stated].lower in (",", ";") and self.verb_after(stated + 1):
+            return self._aside(i, stated + 1 - i, (words[i].start, words[stated - 1].end))
+            # "Bogdan has a question; answer it for him"
+        said = any(t.tag == "VERB" for t in self.out)
+        alone = i + 1 == len(words) or words[i + 1].lower in END_MARKS      # "... *Gross.*": an adjective alone
+        if verb_lemma(words[i].lower) == words[i].lower and not stated and not self.timed_noun(i) and \
+                not (said and alone and is_adjective(words[i].lower)):
+            return None                                  # "Grab the cup.": a verb the library lacks, an error
+        end, comma = i, -1
+        while end < len(words) and words[end].lower not in END_MARKS:
+            if not stated and (words[end].lower in self.lexicon.units and self.verb_at(end) is not None
+                               or self.use_at(end)):
+                return self._aside(i, comma + 1 - i) if comma > i and self.request_at(comma + 1) else None
+            if words[end].lower in (",", ";") and comma < 0:
+                comma = end
+            end += 1
+        if end >= len(words):
+            if not said or stated:
+                return None
+            return self._aside(i, end - i, (words[i].start, words[-1].end))
+            # "pour it into the cup... *the blue one*": a fragment after
+        while end + 1 < len(words) and words[end + 1].lower in END_MARKS:
+            end += 1
+        if not any(t.tag == "VERB" for t in self.out) and \
+                not any(self.verb_at(k) is not None or self.asks_at(k) for k in range(end + 1, len(words))):
+            return None                                  # no sentence holds a command: the error says so
+        return self._aside(i, end + 1 - i, (words[i].start, words[end].end))
+
+    def _aside(self, i: int, n: int, *remarks: tuple[int, int]) -> Match:
+        return Match(n, (merge(self.words, i, n, Tag.POLITE),), remarks=remarks)
+
+    def asks_at(self, k: int) -> bool:
+        """Whether a request said without an imperative may start at ``k`` (a bare question, "where is",
+        "I'd like"; :mod:`seal_cli.language.rules.requests` reads them)."""
+        words = self.words
+        if words[k].lower in QUESTION_WORDS:
+            return True
+        return any(all(k + m < len(words) and words[k + m].lower == part for m, part in enumerate(phrase.split()))
+                   for phrase in (*WHERE_QUESTIONS, *REQUESTS) if phrase.split()[0] == words[k].lower)
+
+    def until_place(self, i: int) -> bool:
+        """Whether "until"/"till" at ``i`` says how far a motion goes: after a verb of a frame with a goal,
+        a noun phrase with no verb and no time ("walk with her *until the corner*"); "until the bus
+        stops" (a noun then an -s form) stays a condition."""
+        words = self.words
+        if self.verb_index < 0 or str(self.out[self.verb_index].info) not in self.lexicon.goals or \
+                self.clock_time(i) or not self.np_starts(i + 1):
+            return False
+        end = self.cond_end(i + 1)
+        span = [w.lower for w in words[i + 1:end]]
+        if not span or any(x in FINITE or x in CONTRACTED or x in SUBJECTS or x in TIME_UNITS
+                           or x in ("you", "i") or x in STATES_DONE for x in span) or \
+                any(gerund_lemma(x) and (k == 0 or span[k - 1] not in DETERMINERS) for k, x in enumerate(span)):
+            return False
+        return not (len(span) > 1 and span[-1].endswith("s") and span[-2] not in DETERMINERS
+                    and span[-2] not in POSSESSIVES)
+
+    def timed_noun(self, i: int) -> bool:
+        """Whether the sentence at ``i`` is a word that is no verb of the library and a time, and nothing
+        else ("*Dinner at eight.*", "*Checkout in ten minutes!*"): a statement without a verb."""
+        words = self.words
+        if words[i].lower in self.lexicon.units or i + 1 >= len(words) or \
+                words[i + 1].lower not in CLOCK_PREPOSITIONS:
+            return False
+        n = self.clock_time(i + 1) or match_phrase(words, i + 1, TIME_WORDS)
+        return bool(n) and i + 1 + n < len(words) and words[i + 1 + n].lower in END_MARKS
+
+    def request_at(self, i: int) -> bool:
+        """Whether a polite request starts at ``i``: politeness ("could you", "please", "robot", commas
+        between) and then a verb."""
+        words, polite = self.words, False
+        while i < len(words):
+            n = match_phrase(words, i, POLITE)
+            if n and words[i].lower not in ("to", "and", "then", "go", "come", "now", "first", "just"):
+                polite, i = True, i + n
+            elif words[i].lower == ",":
+                i += 1
+            else:
+                break
+        return polite and i < len(words) and self.verb_at(i) is not None
+
+    def use_at(self, i: int) -> bool:
+        """Whether "use X to V ..." starts at ``i`` ("use a knife to slice the apple"): X is what V
+        is done with, so "use" is tagged as the preposition "with" before the clause of V."""
+        if self.words[i].lower not in ("use", "using") or not self.np_starts(i + 1):
+            return False
+        for j in range(i + 2, min(len(self.words) - 1, i + 9)):
+            low = self.words[j].lower
+            if low == "to":
+                return self.verb_at(j + 1) is not None
+            if low in (",", ";", ".", "!", "?", "and", "then"):
+                return False
+        return False
+
+    def purpose(self, i: int) -> bool:
+        """Whether "to" at ``i`` starts a clause of purpose ("... to put it in the sink"). With its object
+        unsaid ("put it in the fridge *to chill*", "pick up a bowl *to hold up* over the bin") or a bare
+        one ("pick up the knife *to slice bread*") only when the verb names no thing the library knows
+        ("move it to *microwave*" is a place)."""
+        words = self.words
+        if i + 1 < len(words) and self.using and self.verb_at(i + 1):
+            return True                    # "use a knife to slice apples"
+        if i + 1 >= len(words) or not self.out or self.out[-1].tag in ("VERB", "PREP"):
+            return False
+        found = self.verb_at(i + 1)
+        if not found:
+            return False
+        after = i + 1 + found[1]
+        thing = words[i + 1].lower in self.lexicon.things or self.out[-1].tag not in ("WORD", "NAME", "PRON",
+                                                                                       "PARTICLE", "LABEL")
+        if after >= len(words) or words[after].lower in END_MARKS or words[after].lower in (",", ";", "and", "then"):
+            return not thing and found[2] is None
+        nxt = words[after].lower
+        return nxt in DETERMINERS or nxt in POSSESSIVES or nxt in PRONOUNS or capitalised(words[after]) or (
+            nxt in PREPOSITIONS and self.np_starts(after + match_phrase(words, after, PREPOSITIONS))) or \
+            not thing and (nxt in PARTICLES or self.noun_follows(after) and nxt not in self.lexicon.units)
+
+    def np_starts(self, i: int) -> bool:
+        if i >= len(self.words):
+            return False
+        w = self.words[i]
+        low = w.lower
+        if low in END_MARKS or low in (",", ";", ":") or low in WH_WORDS or low in BE_WORDS:
+            return False
+        if low in PREPOSITIONS and low not in ("one",):
+            return False
+        return low not in ("and", "then", "please", "here", "there", "until", "till")
+
+    def has_object(self) -> bool:
+        """Whether the clause has a noun phrase after its verb yet."""
+        return self.verb_index >= 0 and any(t.tag in ("DET", "NUM", "POSS", "PRON", "NAME", "WORD")
+                                            for t in self.out[self.verb_index + 1:])
+
+    def cond_end(self, j: int) -> int:
+        """Where a clause said inside another ends: at punctuation, or at "and"/"then" before a verb."""
+        words = self.words
+        k = j
+        while k < len(words):
+            low = words[k].lower
+            if low in (",", ";", ":") or low in END_MARKS:
+                break
+            if low in ("and", "then", "but") and self.verb_after(k + 1):
+                break
+            k += 1
+        return k
+
+    def speech_end(self, j: int) -> int:
+        """Where reported speech that starts at ``j`` ends: at the end of the sentence, or where a
+        clause of the command's own follows ("tell him that, if it rains, the party is off | and
+        bring ..."); its own commas are inside it."""
+        words = self.words
+        k = j
+        while k < len(words):
+            low = words[k].lower
+            if low in END_MARKS and k > j:
+                break
+            if low in (",", ";") and k > j and k + 1 < len(words) and \
+                    words[k + 1].lower.split("'")[0] == "i" and self.statement_at(k + 1):
+                break                # "tell Sam that the dog needs a walk, *I can't do it today*": the speaker's
+            if low in (",", ";", ":", "and", "then", "but") and k > j:
+                n = match_phrase(words, k, SEPARATOR_WORDS) or 1
+                m = k + n
+                while m < len(words) and match_phrase(words, m, SEPARATOR_WORDS):
+                    m += match_phrase(words, m, SEPARATOR_WORDS)
+                if m < len(words) and (self.verb_at(m) is not None or self.verb_after(m)):
+                    break
+            k += 1
+        while k > j and words[k - 1].lower in (",", ";", ":"):
+            k -= 1                                           # a comma before the next clause is no speech
+        return k
+
+    def _subordinate_at(self, i: int) -> tuple[str, int, str] | None:
+        """A subordinate clause at ``i``: ("clause", end, subordinator) for one of the robot's own
+        ("after you wash them": the verb's clause follows), ("then", end, "then") for "once you're
+        done (with X)", ("cond", end, subordinator) for a condition on the world ("when the water
+        boils"); None when none starts here."""
+        words = self.words
+        n = match_phrase(words, i, SUBORDINATORS)
+        if not n or match_phrase(words, i, TIME_WORDS) > n or i + n >= len(words) or self.formula(i):
+            return None
+        sub = " ".join(w.lower for w in words[i:i + n])
+        j = i + n
+        subject = words[j].lower
+        if subject in ("you", "you've"):           # "before *we* open": the people's doing, a condition
+            k = j + 1
+            if subject == "you" and k < len(words) and words[k].lower in ("have", "had"):
+                k += 1
+            if k < len(words) and (self.verb_at(k) is not None or self.verb_after(k)):
+                return "clause", k, sub
+        state = j + 1 if subject in ("you're", "we're", "you've", "we've") else \
+            j + 2 if subject in ("you", "we") and j + 1 < len(words) and words[j + 1].lower in ("are", "have") \
+            else -1
+        if 0 <= state < len(words) and words[state].lower in STATES_DONE:
+            return "then", self.cond_end(state + 1), "then"
+        end = self.cond_end(j)
+        return ("cond", end, sub) if end > j else None
+
+    def subordinate(self, i: int, start: bool) -> Match | None:
+        """Tag a subordinate clause (see :meth:`_subordinate_at`; None: none here).
+        At a clause's start the subordinator is politeness before the verb (the grammar's ``pre``),
+        inside a clause a separator; a condition is one ``COND`` word."""
+        low = self.words[i].lower
+        if self.verb_after(i + 1) or not start and (self.speech and low in WH_WORDS or
+                                                    match_phrase(self.words, i, SEPARATOR_WORDS) > 1):
+            return None         # "tell me when ..." is what is said; "after heating it", "when done": separators
+        found = self._subordinate_at(i)
+        if found is None:
+            return None
+        kind, end, sub = found
+        tag = Tag.COND if kind == "cond" else Tag.POLITE if start else Tag.SEP
+        return Match(end - i, (merge(self.words, i, end - i, tag, sub),))
+
+    def relative(self, i: int) -> Match | None:
+        """A relative clause after a noun (None: none here). "the cup *that is* on the
+        table" and "the person *who is* waving" drop "that is" (the rest describes the noun as
+        usual); any other ("the glass *that I was drinking from*", "the book *I left on the sofa*",
+        "the bananas *that have gone bad*") is one ``REL`` word the noun keeps; "*where it belongs*"
+        names a place (``HERE``)."""
+        words, low, prev = self.words, self.words[i].lower, self.prev_tag()
+        nxt = words[i + 1].lower if i + 1 < len(words) else ""
+        if low == "where":
+            if self.speech or prev not in ("WORD", "NAME", "PRON", "PARTICLE", "HERE") or not self.has_object():
+                return None
+            end = self.cond_end(i + 1)
+            return self.emit(i, end - i, "HERE", "where") if end > i + 1 else None
+        if prev not in ("WORD", "NAME") and not (prev == "PRON" and low == "who" and self.out[-1].lower in (
+                "someone", "somebody", "anyone", "anybody", "everyone", "everybody", "those", "one")):
+            return None
+        if self.speech:
+            return None             # "tell the man (that) ...": what is said
+        if low in NOMINATIVE or low == "you" and verb_lemma(nxt):
+            end = self.relative_end(i + 1)
+            return self.emit(i, end - i, "REL") if end > i + 1 else None
+        if low not in RELATIVES or self.speech and low == "that" or not nxt or nxt in END_MARKS:
+            return None
+        if nxt in BE_WORDS and i + 2 < len(words):
+            after = words[i + 2].lower
+            n = match_phrase(words, i + 2, PREPOSITIONS)
+            if n and self.np_starts(i + 2 + n):
+                return self.emit(i, 2, "REL", "be")     # "the cup that is on the table": the PP describes it
+            if gerund_lemma(after):
+                return Match(2)  # "the person who is waving": "the person waving"
+            end = i + 2
+            results: list[tuple[str, str]] = []
+            while end < len(words) and (words[end].lower not in CLOSED or words[end].lower == "not") and \
+                    words[end].lower not in END_MARKS and words[end].lower not in (",", ";", ":", "then") and \
+                    not (words[end].lower in ("and", "or") and (end + 1 >= len(words) or words[end + 1].lower in
+                                                                CLOSED or self.verb_after(end + 1))):
+                low = words[end].lower                   # "that are black and white"
+                particle = words[end + 1].lower if end + 1 < len(words) else ""
+                found = self.lexicon.results.get(f"{low} {particle}") if particle in PARTICLES else None
+                if found:
+                    end += 1                         # "turned on", "turned off": the unit's own frame
+                found = found or self.lexicon.results.get(low)
+                if found:
+                    results.append(found)            # "a lamp that is turned on": a result, as "a lit lamp"
+                end += 1
+            if i + 2 < end < len(words) and words[end].lower in PARTICLES and verb_lemma(words[end - 1].lower) and (
+                    end + 1 == len(words) or words[end + 1].lower in END_MARKS or words[end + 1].lower in (",", ";")
+                    or match_phrase(words, end + 1, PREPOSITIONS)):
+                end += 1                             # "the charger that's plugged in | next to my bed"
+            return self.emit(i, max(end, i + 2) - i, "REL", tuple(results))
+        end = self.relative_end(i + 1)
+        return self.emit(i, end - i, "REL") if end > i + 1 else None
+
+    def relative_end(self, j: int) -> int:
+        """Where a relative clause with a verb of its own ends: where a clause would end, or before a
+        prepositional phrase, which the frame may take ("put the cup you used | in the sink") or give back
+        to the relative clause ("bring me the book I left | on the sofa")."""
+        words = self.words
+        end = self.cond_end(j)
+        for k in range(j + 1, end):
+            n = match_phrase(words, k, PREPOSITIONS)
+            if not n or not self.np_starts(k + n) or self.verb_at(k + n) is not None:
+                continue
+            if k + n < len(words) and words[k + n].lower in ("it", "them", "him", "her") and k + n + 1 < end:
+                continue         # "a box that has a candle in it | on the table"
+            return k             # "the book I left | on the sofa": the frame decides whose phrase it is
+        return end
+
+    def separator(self, i: int, n: int) -> Match | None:
+        """Tag a separator ("and", ",", "then", ", and then") as SEP, AND_NP or nothing;
+        None when it is no separator here."""
+        words = self.words
+        j = i + n
+        while j < len(words) and match_phrase(words, j, SEPARATOR_WORDS) and words[j].lower not in ("before",):
+            j += match_phrase(words, j, SEPARATOR_WORDS)
+        phrase = " ".join(w.lower for w in words[i:i + n])
+        low, span = ("and", j - i - n + 1) if phrase in AND_WORDS else (words[i].lower, j - i)
+        sub = self._subordinate_at(j) if j < len(words) and words[j].lower in SUB_FIRST and \
+            not (self.speech and words[j].lower in WH_WORDS) and not self.verb_after(j + 1) else None
+        if sub is not None and low in ("and", "then", ",", ";", "or", "and then"):
+            kind, end = sub[0], sub[1]
+            ends_clause = end < len(self.words) and self.words[end].lower == "," and self.verb_after(end + 1)
+            if low in (",", ";") and kind == "cond" and not ends_clause:
+                return Match(j - i)  # "turn off the stove, when the water boils": the condition of this clause
+            # "..., and once you're done, put them away"; "...; when it is warm, bring it"
+            return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
+        if self.verb_after(j):
+            return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
+        if phrase == "followed by":
+            return None              # "the cup followed by the plate": no clause follows
+        if j >= len(words) or words[j].lower in END_MARKS:
+            if low in (",", ";", ":"):
+                return Match(j - i)        # a trailing comma is nothing
+            return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
+        nxt = words[j].lower
+        if low == "," and gerund_lemma(nxt) and self.prev_tag() in ("WORD", "NAME"):
+            return Match(1)                # "a pan, containing a knife, in the fridge"
+        if low in (",", ";", ":") and (nxt in PREPOSITIONS or nxt == "please"):
+            return Match(1)                # "Put a pan with a spoon in it, in the sink"
+        if low in ("then", "after that", "afterwards", "finally", "after", "before", "while", "once done",
+                   "when done") or span > 1 and low != ",":
+            return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
+        if low in ("and", ",", "or") and self.np_starts(j) and self.prev_tag() in ("WORD", "NAME", "PRON"):
+            after = words[j + 1].lower if j + 1 < len(words) else ""
+            unknown_verb = (nxt not in DETERMINERS and nxt not in POSSESSIVES and nxt not in PRONOUNS
+                            and not capitalised(words[j]) and nxt not in NUMBERS
+                            and (after in DETERMINERS or after in POSSESSIVES or after in ("it", "them", "me")))
+            if not unknown_verb:
+                return Match(n, (merge(words, i, n, Tag.AND_NP),))
+        m = match_phrase(words, j, PREPOSITIONS) if low == "and" and n == 1 else 0
+        if m and self.prev_tag() in ("WORD", "NAME", "PRON") and self.np_starts(j + m) and \
+                PREPOSITIONS[" ".join(w.lower for w in words[j:j + m])] in PATH_PREPOSITIONS and \
+                not any(self.verb_at(k) for k in range(j, self.cond_end(j))):
+            return Match(n)      # "down from the shelf *and* over to my chair": one path, phrases in a row
+        if low == "or" and self.prev_tag() in ("WORD", "NAME", "PRON") and match_phrase(words, j, PREPOSITIONS):
+            k = j + match_phrase(words, j, PREPOSITIONS)
+            end = self.cond_end(k)
+            if self.np_starts(k) and not any(self.verb_at(m) for m in range(k, end)):
+                return Match(n, (merge(words, i, n, Tag.AND_NP),))    # "on the desk or in the bedroom"
+        if low in ("and", "then", ",", ";", "or"):
+            return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
+        return None
+
+    def clock_time(self, i: int) -> int:
+        """How many words a time said with a number take at ``i`` (0: none): "at three", "by 5 pm",
+        "at half past six", "until 4 o'clock", "in ten minutes", "in ten" (a number word; "in 305"
+        is a numbered place). Nothing noun-like may follow: "at three tables" counts tables."""
+        words, low = self.words, self.words[i].lower
+        k = i + 1
+        if k < len(words) and low != "in" and words[k].lower in ("half", "quarter") and k + 1 < len(words) and \
+                words[k + 1].lower in ("past", "to"):
+            k += 2                                              # "at half past six"
+        if k >= len(words) or not (words[k].lower in NUMBERS and words[k].lower not in VAGUE_NUMBERS
+                                   or words[k].lower.isascii() and words[k].lower.isdigit()):
+            return 0
+        digits = words[k].lower.isdigit()
+        k += 1
+        if k < len(words) and words[k].lower in TIME_UNITS:
+            return k + 1 - i                                    # "in ten minutes", "by 5 hours"
+        if low == "in" and digits:
+            return 0                                            # "the guests in 305": a place
+        while k < len(words) and words[k].lower in CLOCK_WORDS:
+            k += 1                                              # "at 5 pm", "at three thirty", "at 4 o'clock"
+        if k < len(words) and self.noun_follows(k) and words[k].lower not in NUMBERS:
+            return 0
+        return k - i
+
+    def label_at(self, i: int) -> bool:
+        """Whether the number at ``i`` names a numbered thing with the noun before it ("room *214*",
+        "meeting room *three*", "table *9*"): one number (digits, or a number word other than "one"),
+        with no noun after it to count ("give the kids *two* apples" counts)."""
+        low = self.words[i].lower
+        if not (low.isascii() and low.isdigit() or low in NUMBERS and low not in VAGUE_NUMBERS):
+            return False
+        if i + 1 < len(self.words) and self.words[i + 1].lower in TIME_UNITS:
+            return False                                        # "wait ten minutes"
+        return i + 1 >= len(self.words) or not self.noun_follows(i + 1) or self.words[i + 1].lower in NUMBERS
+
+    def noun_follows(self, i: int) -> bool:
+        """Whether an open-class word (a noun or adjective) starts at ``i``."""
+        if i >= len(self.words):
+            return False
+        low = self.words[i].lower
+        if low in CLOSED or low in END_MARKS or low in (",", ";", ":", "and", "then", "of", "please") or \
+                low in SUB_FIRST:                              # "on pallet 6 *before* they ship"
+            return low in NUMBERS and low != "one"
+        return low not in PREPOSITIONS
+
+

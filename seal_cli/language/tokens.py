@@ -1,0 +1,141 @@
+"""The words of a command: :class:`Word` (a frozen value) and :func:`tokenize`.
+
+A word is a span of the command with the part it plays (its :class:`~seal_cli.language.tags.Tag`,
+empty until tagged) and what the tag needs (``info``: the lexical unit of a verb, the number of a
+number, the preposition of a preposition). Words are values: the tagger makes new words rather
+than changing old ones.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from seal_cli.errors import SealError, Where
+from seal_cli.language.english import DETERMINERS, SPELLINGS, TITLES
+
+__all__ = ["MAX_LENGTH", "CommandError", "Word", "capitalised", "printable", "tokenize"]
+
+MAX_LENGTH = 1000
+"""The longest command accepted, in characters (a spoken command is far shorter)."""
+
+
+class CommandError(SealError):
+    """A command that cannot be parsed: where (column) and what was expected."""
+
+    def __init__(self, message: str, column: int, text: str, expected: Sequence[str] = ()) -> None:
+        super().__init__(message, Where(None, None, column), source_line=text)
+        self.expected = list(expected)
+        self.text = text
+
+    def to_json(self) -> dict[str, object]:
+        return {"message": self.message, "column": self.column, "expected": self.expected}
+
+
+_set = object.__setattr__
+
+
+@dataclass(frozen=True, slots=True, eq=False, init=False, repr=False)
+class Word:
+    """A word (or a merged multiword phrase) of the command, with its tag.
+
+    ``start``/``end`` are character offsets into the command. ``lower`` is the word as read: lower
+    case, the typographic apostrophe plain, a known spelling normalised ("pls": "please"); the
+    tagger may read a word otherwise ("its" as "it's") by passing ``lower``. Frozen, compared by
+    identity (two words of one command are two places in it).
+    """
+
+    text: str
+    start: int
+    end: int
+    tag: str
+    info: object
+    lower: str
+
+    def __init__(self, text: str, start: int, end: int, tag: str = "", info: object = None,
+                 lower: str | None = None) -> None:
+        _set(self, "text", text)
+        _set(self, "start", start)
+        _set(self, "end", end)
+        _set(self, "tag", tag)
+        _set(self, "info", info)
+        if lower is None:
+            lower = text.lower()
+            lower = lower.replace("’", "'") if "’" in lower else lower
+            lower = SPELLINGS.get(lower, lower)         # "pls": "please"
+        _set(self, "lower", lower)
+
+    def tagged(self, tag: str, info: object = None) -> Word:
+        """The same span with another tag (its text read afresh)."""
+        return Word(self.text, self.start, self.end, tag, info)
+
+    def __repr__(self) -> str:
+        return f"Word({self.text!r}, {self.start}, {self.end}, {str(self.tag)!r})"
+
+
+_TOKEN = re.compile(r"""
+    (?P<word>[^\W\d_]+(?:['’](?![sS]\b)[^\W\d_]+|-[^\W_]+)*|[0-9]+(?:-[^\W_]+)*)   # letters, inner ' and -
+                                                           # ("t-shirt", "under-12s", "covid-19"); numbers
+  | (?P<poss>['’]s\b)                                      # possessive 's (and is)
+  | (?P<amp>&)
+  | (?P<dash>[—–]|-{2,}|(?<=\s)-(?=\s))                   # a dash between clauses reads as ";"
+  | (?P<punct>[,;:.!?]+)
+  | (?P<quote>["“”'‘’`()\[\]])                             # quotes and brackets are ignored
+  | (?P<space>\s+)
+""", re.VERBOSE)
+_CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f]")
+_NAME_AFTER = re.compile(r"\s+[^\W\d_]")
+
+
+def tokenize(text: str) -> list[Word]:
+    """The words and punctuation of ``text``; anything else is a SealError at its column."""
+    if len(text) > MAX_LENGTH:
+        raise CommandError(f"command too long ({len(text)} characters; the limit is {MAX_LENGTH})", MAX_LENGTH + 1,
+                           text[:MAX_LENGTH + 20], ["a shorter command"])
+    bad = _CONTROL.search(text)
+    if bad:
+        raise CommandError(f"control character U+{ord(bad.group()):04X} in the command", bad.start() + 1,
+                           printable(text), ["a word"])
+    words: list[Word] = []
+    pos = 0
+    for match in _TOKEN.finditer(text):
+        if match.start() != pos:
+            raise CommandError(f"unexpected character {text[pos]!r}", pos + 1, text, ["a word"])
+        pos = match.end()
+        kind = match.lastgroup
+        if kind == "word":
+            words.append(Word(match.group(), match.start(), pos))
+        elif kind == "punct" and match.group() == "." and words and words[-1].end == match.start() and \
+                words[-1].lower in TITLES and capitalised(words[-1]) and _title_before_name(text, pos) and \
+                (len(words) < 2 or words[-2].lower not in DETERMINERS):     # "the Dr. Then ..." ends a sentence
+            title = words[-1]
+            words[-1] = Word(text[title.start:pos], title.start, pos)    # "Mr. Patel": the stop is the title's
+        elif kind == "punct":           # "..." and "?!" are one mark
+            words.append(Word(match.group()[0], match.start(), pos))
+        elif kind == "amp":
+            words.append(Word("and", match.start(), pos))
+        elif kind == "dash":
+            words.append(Word(";", match.start(), pos))
+        elif kind == "poss":
+            words.append(Word("'s", match.start(), pos))
+    if pos != len(text):
+        raise CommandError(f"unexpected character {text[pos]!r}", pos + 1, text, ["a word"])
+    return words
+
+
+def _title_before_name(text: str, pos: int) -> bool:
+    """Whether a capitalised word follows the title's stop at ``pos`` ("Mr. *Patel*"), not the end of the text."""
+    after = _NAME_AFTER.match(text, pos)
+    return after is not None and text[after.end() - 1].isupper()
+
+
+def capitalised(word: Word) -> bool:
+    """Whether a word is written with a capital and then lower case ("Robin"; not "TV")."""
+    text = word.text
+    return text[:1].isupper() and any(c.islower() for c in text[1:])
+
+
+def printable(text: str) -> str:
+    """The text with control characters as spaces (for a message's caret line)."""
+    return _CONTROL.sub(" ", text)

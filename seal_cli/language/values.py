@@ -1,0 +1,102 @@
+"""What a parse says: the frames a command evokes (:class:`Evoked`), the phrases that fill their
+elements (:class:`Phrase`), and the whole (:class:`Parse`), with the SPEC's JSON."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+__all__ = ["Evoked", "Parse", "Phrase"]
+
+
+@dataclass(frozen=True)
+class Phrase:
+    """What fills a frame element: the words, their head (lemma), the class they denote.
+
+    ``kind`` is "person", "thing", "place" (here, there) or "message"; ``refers_to`` names the
+    antecedent of a pronoun as (frame index, element); ``quantity`` a number said ("two
+    apples"); ``default`` marks an element filled from the frame's default, not said;
+    ``conjuncts`` are the phrases of a coordination ("the apple and the pear"), each grounded
+    (the phrase itself stands for the first).
+    """
+
+    text: str | None
+    head: str
+    cls: str | None = None
+    kind: str = "thing"
+    refers_to: tuple[int, str] | None = None
+    quantity: int | None = None
+    plural: bool = False
+    modifiers: tuple[str, ...] = ()
+    default: bool = False
+    span: tuple[int, int] | None = field(default=None, compare=False)
+    conjuncts: tuple[Phrase, ...] = ()
+    relative: str | None = None
+
+    def to_json(self) -> dict[str, Any]:
+        data: dict[str, Any] = {"text": self.text, "head": self.head, "class": self.cls}
+        if self.kind != "thing":
+            data["kind"] = self.kind
+        if self.refers_to is not None:
+            data["refers_to"] = list(self.refers_to)
+        if self.quantity is not None:
+            data["quantity"] = self.quantity
+        if self.plural:
+            data["number"] = "plural"
+        if self.modifiers:
+            data["modifiers"] = list(self.modifiers)
+        if self.default:
+            data["default"] = True
+        if self.conjuncts:
+            data["conjuncts"] = [c.to_json() for c in self.conjuncts]
+        if self.relative:
+            data["relative"] = self.relative
+        return data
+
+
+@dataclass(frozen=True)
+class Evoked:
+    """A frame evoked by a verb phrase (or by a result word), with its elements."""
+
+    frame: str
+    lexical_unit: str
+    span: tuple[int, int]
+    elements: Mapping[str, Phrase]
+    condition: str | None = None
+    result: str | None = None
+    time: str | None = None
+
+    def to_json(self) -> dict[str, Any]:
+        data = {"frame": self.frame, "lexical_unit": self.lexical_unit, "span": list(self.span),
+                "elements": {role: p.to_json() for role, p in self.elements.items()}}
+        for key in ("condition", "result", "time"):
+            if getattr(self, key):
+                data[key] = getattr(self, key)
+        return data
+
+
+@dataclass(frozen=True)
+class Parse:
+    """A parsed command: the frames it evokes, in the order they are to be done."""
+
+    text: str
+    frames: tuple[Evoked, ...]
+    remarks: tuple[str, ...] = ()
+    """What was said beside the command and dropped: statements, greetings ("*The grandchildren are
+    here.*", "..., *she's been waiting a while*")."""
+
+    def to_json(self) -> dict[str, Any]:
+        data: dict[str, Any] = {"text": self.text, "frames": [f.to_json() for f in self.frames]}
+        if self.remarks:
+            data["remarks"] = list(self.remarks)
+        return data
+
+    def resolve(self, phrase: Phrase) -> Phrase:
+        """The phrase a pronoun stands for (the phrase itself when it is not one)."""
+        seen = 0
+        while phrase.refers_to is not None and seen < len(self.frames):
+            index, role = phrase.refers_to
+            phrase = self.frames[index].elements[role]
+            seen += 1
+        return phrase

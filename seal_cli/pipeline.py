@@ -1,0 +1,140 @@
+"""The one way through: text → parse → ground → plan → SeFM (and, in the simulator, act).
+
+Each stage is a module of its own — :mod:`seal_cli.language.parser` (words → frames),
+:mod:`seal_cli.planning.problem` (frames + the robot's state + the map → grounded frames),
+:mod:`seal_cli.planning.plan` (A*), :mod:`seal_cli.sefm.filter` (beliefs), :mod:`seal_cli.sim.agent`
+(acting). This module strings them together the way ``seal parse``, ``seal plan``, ``seal localize``
+and ``seal run`` do, so that a program using seal as a library takes the same path::
+
+    from seal_cli import pipeline
+
+    result = pipeline.plan("stir the cup")                  # the standard library, no map
+    beliefs = pipeline.localise(the_map, ["stir the cup"], rng=np.random.default_rng(0))
+
+Where a function takes ``library=None`` it uses the shipped standard library
+(:func:`seal_cli.frames.reading.standard_library`, read once). Parsing and planning import no
+numpy: the maps, SeFM and the simulator are imported by the functions that need them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import replace
+from typing import TYPE_CHECKING, Any
+
+from seal_cli.frames.library import Library
+from seal_cli.frames.model import Binding
+from seal_cli.frames.reading import standard_library
+from seal_cli.language.grounding import Vocabulary, vocabulary_of_map
+from seal_cli.language.parser import Parse, parse_command
+from seal_cli.planning import plan as planning
+from seal_cli.planning.plan import MAX_NODES, Plan
+from seal_cli.planning.problem import Things, build_problem, problem_of_text
+from seal_cli.planning.state import State
+
+if TYPE_CHECKING:
+    import numpy as np
+
+    from seal_cli.maps.model import Map
+    from seal_cli.sefm.filter import Observer, SeFM, SeFMConfig
+    from seal_cli.sim.agent import Agent, Budget, Policy, Record, Result
+
+__all__ = ["frames_to_localise", "localise", "parse", "plan", "run_on_map"]
+
+
+def _or_standard(library: Library | None) -> Library:
+    return standard_library() if library is None else library
+
+
+def parse(text: str, library: Library | None = None, vocabulary: Vocabulary | None = None) -> Parse:
+    """The frames a command evokes, with their elements (and, with a vocabulary, the classes they denote)."""
+    return parse_command(text, _or_standard(library), vocabulary)
+
+
+def plan(text: str, library: Library | None = None, *, holding: str | None = None, done: Sequence[str] = (),
+         map: Map | None = None, vocabulary: Any = None, max_nodes: int = MAX_NODES) -> Plan:
+    """Parse a command, ground it in the robot's state and the map (:mod:`seal_cli.planning.problem`), plan it.
+
+    ``holding``: what the robot holds; ``done``: commands already carried out, in order."""
+    library = _or_standard(library)
+    problem = problem_of_text(text, library, holding=holding, done=done, map=map, vocabulary=vocabulary)
+    found = planning.plan(problem.commanded, library, problem.state, max_nodes=max_nodes, text=text)
+    return replace(found, warnings=problem.warnings) if problem.warnings else found
+
+
+def frames_to_localise(tasks: Sequence[str], library: Library, map: Map, *, holding: str | None = None,
+                       done: Sequence[str] = ()) -> tuple[list[Binding], State]:
+    """Every distinct grounded frame of the tasks' plans, in order, and the state they start from:
+    what ``seal localize`` keeps beliefs over.
+
+    Plans are made from what the robot knows (:meth:`Map.known <seal_cli.maps.model.Map.known>`): never
+    from the map's ground-truth objects, which only simulate what it sees. Without a task, the
+    state is the one the map, the hand and the commands already done leave.
+    """
+    vocabulary = vocabulary_of_map(map)
+    known = map.known()
+    bindings: list[Binding] = []
+    state: State | None = None
+    for text in tasks:
+        found = plan(text, library, holding=holding, done=tuple(done), map=known, vocabulary=vocabulary)
+        state = state or found.initial
+        bindings.extend(b for b in found.bindings if b not in bindings)
+    if state is not None:
+        return bindings, state
+    if not done:
+        return bindings, Things(library.taxonomy, known).state(holding)
+    problem = problem_of_text(done[-1], library, holding=holding, done=tuple(done[:-1]), map=known,
+                              vocabulary=vocabulary)
+    state = problem.state
+    for binding in problem.commanded:
+        state = state.apply(binding)
+    return bindings, state
+
+
+def localise(map: Map, tasks: Sequence[str], library: Library | None = None, *, rng: np.random.Generator,
+             config: SeFMConfig | None = None, observers: Sequence[Observer] = (), holding: str | None = None,
+             done: Sequence[str] = ()) -> SeFM:
+    """SeFM over every frame of the tasks' plans on a map (:func:`frames_to_localise`), ready for
+    :meth:`~seal_cli.sefm.filter.SeFM.update`. Without a task it believes in every class of the map's
+    priors and places (what ``seal localize`` does)."""
+    from seal_cli.sefm.filter import SeFM
+
+    library = _or_standard(library)
+    bindings, state = frames_to_localise(tasks, library, map, holding=holding, done=done)
+    classes = () if bindings else map.classes
+    return SeFM(map, bindings, state, rng, config, observers, classes=classes)
+
+
+def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.random.Generator,
+               holding: str | None = None, done: Sequence[str] = (), vocabulary: Any = None,
+               budget: Budget | None = None, observers: Sequence[Callable[[Record], None]] = ()
+               ) -> tuple[Agent, Result]:
+    """Carry out a command on a map whose ground-truth objects are the world (``seal run``).
+
+    The command and the ``done`` commands (already carried out) are parsed with the map's
+    vocabulary — or ``vocabulary``, restricted to the map's classes — and grounded on what the
+    robot knows of the map (its rooms, places and people: :mod:`seal_cli.planning.grounding`),
+    without the map's objects, which the robot must find; ``holding`` overrides what the map's
+    robot holds. A room or a fixed thing the map lacks raises SealError before anything moves; a
+    kind of thing the map knows nothing of is warned about and searched for in the whole house.
+    """
+    from seal_cli.maps.model import Robot
+    from seal_cli.planning.grounding import spoken
+    from seal_cli.sim.agent import Agent, scene_from_map
+    from seal_cli.sim.policies import make_policy
+
+    if holding is not None:
+        m = replace(m, robot=Robot(m.robot.pose, holding))
+    known = vocabulary_of_map(m)
+    vocabulary = known if vocabulary is None else vocabulary.restricted_to(known.classes)
+    parses = [parse_command(spoken(t), library, vocabulary) for t in (*done, text)]
+    problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=m.known(),
+                            vocabulary=vocabulary)
+    agent = Agent(scene_from_map(m, library), library, policy, rng=rng, budget=budget, observers=observers,
+                  classes=problem.state.classes, sweeper=lambda: make_policy("coverage"))
+    executed = [b for p in parses[:-1] for b in build_problem(p, library, map=m.known()).commanded]
+    for warning in problem.warnings:
+        agent.say("warn", f"warning: {warning}")
+    result = agent.run(problem.commanded, done=executed)
+    result.warnings = list(problem.warnings)
+    return agent, result

@@ -1,0 +1,90 @@
+"""What ``seal validate`` checks: frame files, folders of them and maps, every problem at once.
+
+Frame files are read by :mod:`seal_cli.frames.reading` and checked together (with the standard
+library, on request); a YAML file whose top-level keys are a map's (:data:`seal_cli.maps.formats.
+map_server.KEYS`) and none a frame file's is checked as a map.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import yaml
+
+from seal_cli.errors import SealError
+from seal_cli.fileio import LOADER, read_text
+from seal_cli.frames.reading import frame_files, read_library
+from seal_cli.maps.formats.map_server import KEYS, check_map_file
+from seal_cli.resources import framelib_dir
+
+__all__ = ["FRAME_FILE_KEYS", "Report", "is_map_file", "validate_paths"]
+
+FRAME_FILE_KEYS = frozenset({"frame", "frames", "categories", "world", "synonyms"})
+"""Top-level keys of frame files (:mod:`seal_cli.frames.formats.yamlfile`)."""
+
+_MAP_ONLY_KEYS = frozenset(KEYS) - {"name", "mode"}
+"""The map keys that say "map": a frame file may have a ``name`` too."""
+
+
+def is_map_file(path: Path) -> bool:
+    """Whether a YAML file is a map (top-level map keys and no frame keys) rather than frames."""
+    if path.suffix not in (".yaml", ".yml"):
+        return False
+    try:
+        node = yaml.compose(read_text(path), Loader=LOADER)
+    except (yaml.YAMLError, SealError):
+        return False
+    if not isinstance(node, yaml.MappingNode):
+        return False
+    keys = {k.value for k, _ in node.value if isinstance(k, yaml.ScalarNode)}
+    return bool(keys & _MAP_ONLY_KEYS) and not keys & FRAME_FILE_KEYS
+
+
+@dataclass
+class Report:
+    """What ``seal validate`` found."""
+
+    files: list[Path] = field(default_factory=list)
+    frames: int = 0
+    categories: int = 0
+    maps: int = 0
+    problems: list[SealError] = field(default_factory=list)
+
+    def summary(self) -> str:
+        found = (f"{_count(self.frames, 'frame')}, {_count(self.categories, 'category', 'categories')}, "
+                 f"{_count(self.maps, 'map')} in {_count(len(self.files), 'file')}")
+        if not self.problems:
+            return f"ok: {found}"
+        return f"{_count(len(self.problems), 'problem')} in {found}"
+
+    def to_json(self) -> dict[str, object]:
+        return {"ok": not self.problems, "files": [str(f) for f in self.files], "frames": self.frames,
+                "categories": self.categories, "maps": self.maps,
+                "problems": [p.to_json() for p in self.problems]}
+
+
+def _count(n: int, one: str, many: str | None = None) -> str:
+    return f"{n} {one if n == 1 else many or one + 's'}"
+
+
+def validate_paths(paths: Iterable[str | Path], with_stdlib: bool = False) -> Report:
+    """Check frame files, folders and maps; every problem, sorted by file, line and column."""
+    files, problems = frame_files(paths)
+    maps = [f for f in files if is_map_file(f)]
+    frame_paths = [f for f in files if f not in maps]
+    report = Report(files=files, maps=len(maps), problems=problems)
+    if frame_paths:
+        extra: list[Path] = []
+        if with_stdlib:
+            extra = [p for p in frame_files([framelib_dir()])[0] if p.resolve() not in
+                     {f.resolve() for f in frame_paths}]
+        library, found = read_library(extra + frame_paths)
+        report.frames = len(library) - (len(read_library(extra)[0]) if extra else 0)
+        report.categories = len(library.taxonomy.categories)
+        report.problems.extend(found)
+    for path in maps:
+        report.problems.extend(check_map_file(path))
+    report.problems.sort(key=lambda p: (p.file or "", p.line or 0, p.column or 0))
+    return report

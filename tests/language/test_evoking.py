@@ -1,0 +1,50 @@
+"""Which frame a clause evokes, where the verb alone would mislead: going with someone, getting somewhere."""
+
+from __future__ import annotations
+
+import pytest
+
+from seal_cli.frames.library import Library
+from seal_cli.language.parser import parse_command
+
+
+def _frames(text: str, library: Library) -> list[tuple[str, dict[str, str | None]]]:
+    return [(f.frame, {role: p.text for role, p in f.elements.items()}) for f in parse_command(text, library).frames]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("go with Sam", [("Follow", {"theme": "Sam"})]),                   # where Sam goes: follow
+    ("go with him", [("Follow", {"theme": "him"})]),
+    ("please come with the nurse", [("Follow", {"theme": "the nurse"})]),
+    ("go with the visitor to the door", [("Guide", {"theme": "the visitor", "goal": "the door"})]),   # bring there
+    ("walk with Lena to the car", [("Guide", {"theme": "Lena", "goal": "the car"})]),
+])
+def test_going_with_a_person_is_moving_together(library: Library, text: str, expected: list[object]) -> None:
+    assert _frames(text, library) == expected
+
+
+def test_going_with_a_thing_is_no_company(library: Library) -> None:
+    assert _frames("go to the kitchen", library) == [("Go", {"goal": "the kitchen"})]
+    assert [f for f, _ in _frames("go with the cart to the kitchen", library)] == ["Go"]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("get to the kitchen", [("Go", {"goal": "the kitchen"})]),
+    ("get into the bedroom", [("Go", {"goal": "the bedroom"})]),
+    ("get over to the garage", [("Go", {"goal": "the garage"})]),
+])
+def test_getting_somewhere_with_nothing_to_take_is_going(library: Library, text: str, expected: list[object]) -> None:
+    assert _frames(text, library) == expected
+
+
+def test_getting_a_thing_somewhere_is_still_bringing(library: Library) -> None:
+    assert _frames("get the mug to the office", library) == [("Bring", {"theme": "the mug", "goal": "the office"})]
+    picked, brought = parse_command("pick up the mug and get to the office", library).frames
+    assert (picked.frame, brought.frame) == ("Pick", "Bring")       # "get [it] to the office": the mug
+    assert brought.elements["theme"].refers_to == (0, "theme")
+    assert [f for f, _ in _frames("put in the cabinet", library)] == ["Place"]    # "put" takes nothing
+
+
+@pytest.mark.parametrize("text", ["take Sam", "take the visitor", "take her", "take Omar along"])
+def test_taking_a_person_with_no_goal_is_guiding(library: Library, text: str) -> None:
+    assert [f for f, _ in _frames(text, library)] == ["Guide"]

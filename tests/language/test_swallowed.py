@@ -1,0 +1,93 @@
+"""A verb inside an element's text is a clause of its own or an error at the verb, never dropped silently."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from seal_cli.frames.library import Library
+from seal_cli.language.lexicon import CommandError, tokenize
+from seal_cli.language.parser import CommandParser, parse_command
+from seal_cli.language.swallowed import swallowed
+from seal_cli.language.values import Evoked, Parse, Phrase
+
+
+def _one_element(text: str, frame: str, role: str, said: str) -> Parse:
+    """A parse whose one element holds ``said`` (as a parser that swallowed a clause would make it)."""
+    start = text.index(said)
+    phrase = Phrase(said, said.split()[-1], span=(start, start + len(said)))
+    return Parse(text, (Evoked(frame, frame.lower(), (0, len(text)), {role: phrase}),))
+
+
+@pytest.mark.parametrize(("text", "said", "verb"), [
+    ("go to the door to greet Maria", "the door to greet Maria", "greet"),     # an infinitive after the goal
+    ("take the box to the hall to open", "the hall to open", "open"),          # a purpose, its object unsaid
+    ("meet Ken by the desk escort him out", "the desk escort", "escort"),      # an imperative before its object
+    ("grab a mug from the shelf bring it here", "the shelf bring it", "bring"),
+    ("take a cup from the sink handing it to Ana", "the sink handing it", "handing"),   # a participle, its object
+])
+def test_a_verb_in_an_element_is_found(library: Library, text: str, said: str, verb: str) -> None:
+    parse = _one_element(text, "Go", "goal", said)
+    (found,) = swallowed(parse, tokenize(text), CommandParser.of(library).lexicon)
+    assert (found.frame, found.element, found.verb, found.start) == (0, "goal", verb, text.index(verb))
+
+
+@pytest.mark.parametrize(("text", "said"), [
+    ("put the hand soap on the sink", "the hand soap"),                   # a noun after a determiner
+    ("put a tray holding two cups on the table", "a tray holding two cups"),   # a participle: what it holds
+    ("put the keys back where you found them", "where you found them"),   # a verb with a subject says where
+    ("bring me a washed sliced pear", "a washed sliced pear"),            # results said before the noun
+    ("go to the light switch", "the light switch"),
+])
+def test_nouns_participles_and_subjects_verbs_are_no_swallowed_verbs(library: Library, text: str, said: str) -> None:
+    parse = _one_element(text, "Place", "theme", said)
+    assert swallowed(parse, tokenize(text), CommandParser.of(library).lexicon) == ()
+
+
+@pytest.mark.parametrize(("text", "verb"), [
+    ("go to the door to greet Maria", "greet"),
+    ("take the box to the hall to open", "open"),
+    ("meet Ken by the desk escort him out", "escort"),
+    ("grab the mug from the shelf bring it to me", "bring"),
+    ("walk to the bench to find Omar", "find"),
+])
+def test_the_parser_makes_it_a_clause_or_refuses_it(library: Library, text: str, verb: str) -> None:
+    try:
+        parse = parse_command(text, library)
+    except CommandError as error:
+        assert error.column == text.index(verb) + 1 and verb in error.message
+        assert error.expected == ["a clause of its own"]
+    else:
+        assert verb in [f.lexical_unit for f in parse.frames]
+        assert swallowed(parse, tokenize(text), CommandParser.of(library).lexicon) == ()
+
+
+@pytest.mark.parametrize("text", ["go to the bedroom and find Ana", "tell Ken to open the door",
+                                  "put a tray holding two cups on the table"])
+def test_commands_without_a_hidden_clause_parse(library: Library, text: str) -> None:
+    assert parse_command(text, library).frames
+
+
+def test_no_gpsr_command_swallows_a_clause(library: Library, shared_data) -> None:
+    texts = [json.loads(line)["text"] for line in (shared_data / "gpsr" / "dev.jsonl").open()][:600]
+    lexicon = CommandParser.of(library).lexicon
+    assert all(swallowed(parse_command(t, library), tokenize(t), lexicon) == () for t in texts)
+
+
+def test_the_command_line_reports_a_refused_one_as_an_error_object(library: Library) -> None:
+    from typer.testing import CliRunner
+
+    from seal_cli.cli import app
+
+    text = "take the box to the hall to open"
+    try:
+        parse_command(text, library)
+    except CommandError:
+        pass
+    else:
+        pytest.skip("the tagger now reads this purpose as a clause of its own")
+    result = CliRunner().invoke(app, ["parse", text, "--json"])
+    assert result.exit_code == 1
+    error = json.loads(result.stdout)["error"]
+    assert error["column"] == text.index("open") + 1 and "'open' is a verb inside the goal" in error["message"]
