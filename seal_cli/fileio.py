@@ -1,50 +1,138 @@
 """Reading the files users hand to seal, and writing output files whole or not at all.
 
 Every reader turns an unreadable or malformed file into a :class:`~seal_cli.errors.SealError`
-naming the file, line and column. Every writer goes through :func:`atomic_output`, so that a
-failure half-way leaves no half-written file behind.
+naming the file, line and column. Readers refuse what is not a regular file by its kind (a FIFO,
+``/dev/zero``, a socket) before opening it, and a file larger than :data:`MAX_INPUT_BYTES`, so
+that no input can hang seal or fill its memory.
+
+Every writer goes through :class:`Outputs` (or :func:`atomic_output`, one file): each output is
+written to a temporary file of our own naming beside it and renamed onto it only when the whole
+command succeeded. An :class:`Outputs` plan is checked before any work: each output is resolved
+and compared by path and inode with every input and every other output, its folder must exist and
+take a file (a temporary is created there at once), and its suffix must be the format's. A device
+such as ``/dev/null`` is written in place, not replaced by a rename. On SIGTERM, SIGINT or SIGHUP
+(see :func:`clean_up_on_signals`) and at exit, our temporaries are removed; temporaries left by a
+killed seal (``SIGKILL``) are swept on the next write of the same file.
 """
 
 from __future__ import annotations
 
+import atexit
 import contextlib
 import json
 import os
+import re
+import secrets
+import signal
+import stat
 import tempfile
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator, Mapping, Sequence
+from dataclasses import dataclass
 from pathlib import Path
+from types import TracebackType
 from typing import Any
 
 import yaml
 
 from seal_cli.errors import SealError, Where
 
-__all__ = ["LOADER", "atomic_output", "atomic_write_text", "read_json_lines", "read_text", "read_yaml"]
+__all__ = ["LOADER", "MAX_IMAGE_BYTES", "MAX_INPUT_BYTES", "Outputs", "atomic_output", "atomic_write_text",
+           "clean_up_on_signals", "decode", "read_bytes", "read_json_lines", "read_text", "read_yaml",
+           "remove_temporaries", "split_lines"]
 
 LOADER: type[yaml.SafeLoader] = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 """PyYAML's safe loader, in C (libyaml) when PyYAML has it: about 14 times faster at reading
 frame libraries and maps, with the same nodes and marks."""
 
+MAX_INPUT_BYTES = 16 * 2**20
+"""The largest text file seal reads (frame files, maps, observations, command files): 16 MiB."""
 
-def read_text(path: str | Path) -> str:
-    """A text file's contents; a missing or unreadable file is a SealError naming it."""
+MAX_IMAGE_BYTES = 256 * 2**20
+"""The largest map image seal reads: 256 MiB (a 16,000 × 16,000 PGM)."""
+
+_READ: dict[tuple[int, int], str] = {}
+"""(device, inode) → path of every file read through this module: no output may be written over one."""
+
+
+# -- reading ------------------------------------------------------------------------------------
+def _kind(mode: int) -> str:
+    for test, name in ((stat.S_ISFIFO, "a FIFO (named pipe)"), (stat.S_ISCHR, "a character device"),
+                       (stat.S_ISBLK, "a block device"), (stat.S_ISSOCK, "a socket"), (stat.S_ISDIR, "a folder")):
+        if test(mode):
+            return name
+    return "not a regular file"
+
+
+def read_bytes(path: str | Path, limit: int = MAX_INPUT_BYTES, what: str = "file") -> bytes:
+    """A regular file's bytes, at most ``limit`` of them; anything else is a SealError naming it."""
     path = Path(path)
+    where = Where(str(path))
     try:
-        return path.read_text(encoding="utf-8")
+        info = path.stat()
     except FileNotFoundError:
-        raise SealError(f"no such file: {path}", Where(str(path))) from None
-    except IsADirectoryError:
-        raise SealError(f"{path} is a folder, not a file", Where(str(path))) from None
-    except UnicodeDecodeError as exc:
-        raise SealError(f"{path} is not UTF-8 text (byte {exc.start})", Where(str(path))) from None
+        raise SealError(f"no such {what}", where) from None
     except OSError as exc:
-        raise SealError(f"cannot read {path}: {exc.strerror}", Where(str(path))) from None
+        raise SealError(f"cannot read this {what}: {exc.strerror}", where) from None
+    if stat.S_ISDIR(info.st_mode):
+        raise SealError(f"this is a folder, not a {what}", where)
+    if not stat.S_ISREG(info.st_mode):
+        raise SealError(f"cannot read this {what}: it is {_kind(info.st_mode)}, not a regular file", where)
+    if info.st_size > limit:
+        raise SealError(f"this {what} is {_size(info.st_size)}; seal reads {what}s of at most {_size(limit)}", where)
+    try:
+        with path.open("rb") as handle:
+            data = handle.read(limit + 1)
+    except OSError as exc:
+        raise SealError(f"cannot read this {what}: {exc.strerror}", where) from None
+    if len(data) > limit:  # it grew while we read it
+        raise SealError(f"this {what} is larger than {_size(limit)}, the most seal reads", where)
+    _READ[(info.st_dev, info.st_ino)] = str(path)
+    return data
+
+
+def _size(count: int) -> str:
+    for scale, unit in ((2**30, "GiB"), (2**20, "MiB"), (2**10, "KiB")):
+        if count >= scale:
+            return f"{count / scale:.1f} {unit}".replace(".0 ", " ")
+    return f"{count} bytes"
+
+
+def decode(data: bytes, file: str) -> str:
+    """UTF-8 text (a leading byte-order mark dropped); invalid UTF-8 is a SealError at its line and column."""
+    if data.startswith(b"\xef\xbb\xbf"):
+        data = data[3:]
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        line = data.count(b"\n", 0, exc.start) + 1
+        column = exc.start - (data.rfind(b"\n", 0, exc.start) + 1) + 1
+        raise SealError(f"this file is not UTF-8 text: byte 0x{data[exc.start]:02x} cannot be decoded",
+                        Where(file, line, column)) from None
+
+
+def read_text(path: str | Path, limit: int = MAX_INPUT_BYTES) -> str:
+    """A text file's contents; a missing, unreadable, special, oversized or non-UTF-8 file is a
+    SealError naming it."""
+    return decode(read_bytes(path, limit), str(path))
+
+
+def split_lines(text: str) -> list[str]:
+    """Lines separated by ``\\n`` (or ``\\r\\n``) and nothing else: unlike :meth:`str.splitlines`,
+    U+2028, form feeds, a lone ``\\r`` and the other Unicode breaks stay inside their line, so one
+    line in is one line out."""
+    lines = text.split("\n")
+    if lines and lines[-1] == "":
+        lines.pop()
+    return [line[:-1] if line.endswith("\r") else line for line in lines]
 
 
 def read_yaml(path: str | Path) -> Any:
     """A YAML file's data; syntax errors carry the line and column, with the line and a caret."""
+    from seal_cli.yamlnodes import check_size
+
     text = read_text(path)
     try:
+        check_size(yaml.compose(text, Loader=LOADER), str(path))  # no alias bomb is expanded
         return yaml.load(text, Loader=LOADER)  # noqa: S506 (a safe loader)
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
@@ -62,46 +150,277 @@ def read_json_lines(path: str | Path) -> list[Any]:
     """The JSON values of a JSON Lines file (blank lines skipped); a line that is not JSON is a
     SealError at its line and column."""
     values = []
-    for number, line in enumerate(read_text(path).splitlines(), 1):
+    for number, line in enumerate(split_lines(read_text(path)), 1):
         if not line.strip():
             continue
         try:
             values.append(json.loads(line))
         except json.JSONDecodeError as exc:
             raise SealError(f"not JSON: {exc.msg}", Where(str(path), number, exc.colno), source_line=line) from None
+        except RecursionError:
+            raise SealError("not JSON seal can read: nested too deeply", Where(str(path), number)) from None
     return values
+
+
+# -- writing ------------------------------------------------------------------------------------
+_LIVE: set[Path] = set()
+"""Our temporaries not yet renamed or removed: removed at exit and on a signal."""
+
+_TEMP = re.compile(r"\.seal(\d+)-[0-9a-f]{8}\.tmp")
+
+
+def remove_temporaries() -> None:
+    """Remove every temporary of ours not yet moved onto its target (a command that failed half-way)."""
+    for tmp in list(_LIVE):
+        with contextlib.suppress(OSError):
+            tmp.unlink()
+        _LIVE.discard(tmp)
+
+
+atexit.register(remove_temporaries)
+
+
+def clean_up_on_signals() -> None:
+    """Make SIGTERM and SIGHUP end this process as SIGINT does, by an exception, so that every
+    ``with`` block unwinds and our temporaries are removed (``timeout`` and CI send SIGTERM).
+    Processes forked from this one (worker pools) keep the default behaviour."""
+    main = os.getpid()
+
+    def stop(number: int, _frame: Any) -> None:
+        if os.getpid() != main:
+            signal.signal(number, signal.SIG_DFL)
+            os.kill(os.getpid(), number)
+            return
+        remove_temporaries()
+        raise SystemExit(128 + number)
+
+    for number in (signal.SIGTERM, signal.SIGHUP):
+        with contextlib.suppress(ValueError, OSError):  # not the main thread, or no such signal here
+            signal.signal(number, stop)
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except OSError:
+        return True
+    return True
+
+
+def _sweep(target: Path) -> None:
+    """Remove temporaries of ``target`` left by seal processes that no longer run."""
+    folder = target.parent
+    prefix = f".{target.name}.seal"
+    with contextlib.suppress(OSError):
+        for entry in os.scandir(folder):
+            if not entry.name.startswith(prefix):
+                continue
+            found = _TEMP.match(entry.name[len(target.name) + 1:])
+            if found and int(found.group(1)) != os.getpid() and not _alive(int(found.group(1))):
+                with contextlib.suppress(OSError):
+                    os.unlink(entry.path)
+
+
+def _identity(path: Path) -> tuple[int, int] | None:
+    try:
+        info = path.stat()
+    except OSError:
+        return None
+    return (info.st_dev, info.st_ino)
+
+
+@dataclass
+class _Output:
+    option: str
+    target: Path
+    tmp: Path
+    device: bool  # written in place (a character device or a pipe), not renamed onto
+
+
+class Outputs:
+    """The output files of one command, checked before any work and written whole or not at all.
+
+    ``outputs`` maps each option (``--png``) to its path (None: not asked for); ``inputs`` are the
+    files the command reads (files read through this module count as well); ``suffixes`` gives
+    the suffixes an option's format may carry (``{"--png": (".png",)}``); an option whose value
+    is a folder is named in ``folders`` with the file names written into it. Building the plan
+    refuses an output that is an input, two outputs that are one file, a missing or unwritable
+    folder, a wrong suffix and a target that is a folder, a block device or a socket; it creates
+    every temporary at once (``guard_read=False``: files read earlier may be overwritten).
+    ``plan[option]`` is the path to write; leaving the ``with`` block
+    without an exception moves every temporary onto its target, otherwise removes them all."""
+
+    def __init__(self, outputs: Mapping[str, str | Path | None], inputs: Iterable[str | Path | None] = (), *,
+                 suffixes: Mapping[str, Sequence[str]] | None = None,
+                 folders: Mapping[str, Sequence[str]] | None = None, guard_read: bool = True) -> None:
+        self._outputs: dict[str, _Output] = {}
+        self._folders: dict[str, Path] = {}
+        planned: list[tuple[str, Path]] = []
+        for option, value in outputs.items():
+            if value is None:
+                continue
+            if folders and option in folders:
+                folder = _folder(Path(value), option)
+                self._folders[option] = folder
+                planned.extend((f"{option} {name}", folder / name) for name in folders[option])
+            else:
+                _check_suffix(Path(value), option, (suffixes or {}).get(option, ()))
+                planned.append((option, Path(value)))
+        _check_distinct(planned, [Path(p) for p in inputs if p is not None], guard_read)
+        try:
+            for option, target in planned:
+                self._outputs[option] = _reserve(option, target)
+        except BaseException:
+            self.discard()
+            raise
+
+    def __getitem__(self, option: str) -> Path:
+        """The path a writer writes the output of ``option`` to (a folder for a folder option)."""
+        if option in self._folders:
+            raise KeyError(f"{option} is a folder: use plan.file({option!r}, name)")
+        return self._outputs[option].tmp
+
+    def file(self, option: str, name: str) -> Path:
+        """The path to write the file ``name`` of the folder option ``option`` to."""
+        return self._outputs[f"{option} {name}"].tmp
+
+    def get(self, option: str) -> Path | None:
+        return self._outputs[option].tmp if option in self._outputs else None
+
+    def __enter__(self) -> Outputs:
+        return self
+
+    def __exit__(self, kind: type[BaseException] | None, value: BaseException | None,
+                 trace: TracebackType | None) -> None:
+        if kind is None:
+            self.commit()
+        else:
+            self.discard()
+
+    def commit(self) -> None:
+        """Move every temporary onto its target (devices are written in place)."""
+        try:
+            for output in self._outputs.values():
+                _move(output)
+        finally:
+            self.discard()
+
+    def discard(self) -> None:
+        """Remove every temporary not yet moved."""
+        for output in self._outputs.values():
+            with contextlib.suppress(OSError):
+                output.tmp.unlink()
+            _LIVE.discard(output.tmp)
+
+
+def _folder(folder: Path, option: str) -> Path:
+    if not folder.is_dir():
+        what = "is a file, not a folder" if folder.exists() else "does not exist"
+        raise SealError(f"cannot write into {option} {folder}: it {what}")
+    return folder
+
+
+def _check_suffix(target: Path, option: str, allowed: Sequence[str]) -> None:
+    suffix = target.suffix.lower()
+    if allowed and suffix and suffix not in allowed and not _is_device(target):
+        formats = " or ".join(allowed)
+        raise SealError(f"{option} {target}: seal writes {formats[1:].upper()} files here; give a name ending in "
+                        f"{formats}, not {target.suffix}")
+
+
+def _is_device(path: Path) -> bool:
+    try:
+        mode = path.stat().st_mode
+    except OSError:
+        return False
+    return stat.S_ISCHR(mode) or stat.S_ISFIFO(mode)
+
+
+def _check_distinct(planned: list[tuple[str, Path]], inputs: list[Path], guard_read: bool) -> None:
+    """No output is an input, and no two outputs are one file (by resolved path or by inode)."""
+    read = {identity: str(path) for path in inputs if (identity := _identity(path)) is not None}
+    resolved_inputs = {os.path.realpath(p): str(p) for p in inputs}
+    seen: dict[str, str] = {}
+    seen_ids: dict[tuple[int, int], str] = {}
+    for option, target in planned:
+        real = os.path.realpath(target)
+        identity = _identity(target)
+        device = _is_device(target)
+        source = resolved_inputs.get(real) or (read.get(identity) if identity else None)
+        if source is None and guard_read and identity in _READ:
+            source = _READ[identity]
+        if source is not None and not device:
+            raise SealError(f"{option} {target} would overwrite the input {source}; give another file name")
+        other = seen.get(real) or (seen_ids.get(identity) if identity else None)
+        if other is not None and not device:
+            raise SealError(f"{option} and {other} name the same file ({target}); give each its own file")
+        seen[real] = option
+        if identity:
+            seen_ids[identity] = option
+
+
+def _reserve(option: str, target: Path) -> _Output:
+    """Create the temporary for ``target`` (which proves its folder takes a file)."""
+    try:
+        mode = target.stat().st_mode
+    except FileNotFoundError:
+        mode = None
+    except OSError as exc:
+        raise SealError(f"cannot write {option} {target}: {exc.strerror}") from None
+    if mode is not None and stat.S_ISDIR(mode):
+        raise SealError(f"cannot write {option} {target}: it is a folder; give a file name")
+    if mode is not None and not (stat.S_ISREG(mode) or stat.S_ISCHR(mode) or stat.S_ISFIFO(mode)):
+        raise SealError(f"cannot write {option} {target}: it is {_kind(mode)}")
+    device = mode is not None and not stat.S_ISREG(mode)
+    if device and stat.S_ISFIFO(mode or 0):
+        _check_reader(option, target)
+    folder = target.parent
+    if not device and not folder.is_dir():
+        raise SealError(f"cannot write {option} {target}: folder {folder} does not exist")
+    if not device:
+        _sweep(target)
+    name = f".{target.name}.seal{os.getpid()}-{secrets.token_hex(4)}.tmp{target.suffix}"
+    tmp = Path(tempfile.gettempdir() if device else folder) / name
+    try:
+        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)  # the mode a plain open() gives
+    except OSError as exc:
+        raise SealError(f"cannot write {option} {target}: {exc.strerror} (in folder {folder})") from None
+    os.close(fd)
+    _LIVE.add(tmp)
+    return _Output(option, target, tmp, device)
+
+
+def _check_reader(option: str, target: Path) -> None:
+    """A named pipe is written only if some process reads it (else opening it would wait forever)."""
+    try:
+        fd = os.open(target, os.O_WRONLY | os.O_NONBLOCK)
+    except OSError:
+        raise SealError(f"cannot write {option} {target}: it is a named pipe that no process reads") from None
+    os.close(fd)
+
+
+def _move(output: _Output) -> None:
+    try:
+        if output.device:
+            with output.tmp.open("rb") as source, output.target.open("wb") as sink:
+                while chunk := source.read(2**20):
+                    sink.write(chunk)
+        else:
+            os.replace(output.tmp, output.target)
+    except OSError as exc:
+        raise SealError(f"cannot write {output.option} {output.target}: {exc.strerror}") from None
+    _LIVE.discard(output.tmp)
 
 
 @contextlib.contextmanager
 def atomic_output(path: str | Path) -> Iterator[Path]:
-    """A temporary path beside ``path``; renamed onto it only if the block ends without error."""
-    target = Path(path)
-    folder = target.parent if str(target.parent) else Path(".")
-    if not folder.is_dir():
-        raise SealError(f"cannot write {target}: folder {folder} does not exist", Where(str(target)))
-    if target.is_dir():
-        raise SealError(f"cannot write {target}: it is a folder; give a file name", Where(str(target)))
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=target.suffix, dir=folder)
-    os.close(fd)
-    try:
-        yield Path(tmp)
-        os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes 0600; give the file the mode a plain open() would
-        try:
-            os.replace(tmp, target)
-        except OSError as exc:
-            raise SealError(f"cannot write {target}: {exc.strerror}", Where(str(target))) from None
-    except BaseException:
-        with contextlib.suppress(OSError):
-            os.unlink(tmp)
-        raise
+    """A temporary path for ``path``; moved onto it only if the block ends without error."""
+    with Outputs({"output": path}, guard_read=False) as plan:
+        yield plan["output"]
 
 
 def atomic_write_text(path: str | Path, text: str) -> None:
     with atomic_output(path) as tmp:
         tmp.write_text(text, encoding="utf-8")
-
-
-def _umask() -> int:
-    mask = os.umask(0)
-    os.umask(mask)
-    return mask

@@ -14,7 +14,7 @@ from pathlib import Path
 import yaml
 
 from seal_cli.errors import SealError
-from seal_cli.fileio import LOADER
+from seal_cli.fileio import LOADER, read_text
 from seal_cli.frames.reading import frame_files, read_library
 from seal_cli.maps.formats.map_server import KEYS, check_map_file
 from seal_cli.resources import framelib_dir
@@ -33,8 +33,8 @@ def is_map_file(path: Path) -> bool:
     if path.suffix not in (".yaml", ".yml"):
         return False
     try:
-        node = yaml.compose(path.read_text(encoding="utf-8"), Loader=LOADER)
-    except (yaml.YAMLError, OSError, UnicodeDecodeError):
+        node = yaml.compose(read_text(path), Loader=LOADER)
+    except (yaml.YAMLError, SealError):
         return False
     if not isinstance(node, yaml.MappingNode):
         return False
@@ -53,16 +53,20 @@ class Report:
     problems: list[SealError] = field(default_factory=list)
 
     def summary(self) -> str:
-        found = f"{self.frames} frames, {self.categories} categories, {self.maps} maps in {len(self.files)} files"
+        found = (f"{_count(self.frames, 'frame')}, {_count(self.categories, 'category', 'categories')}, "
+                 f"{_count(self.maps, 'map')} in {_count(len(self.files), 'file')}")
         if not self.problems:
             return f"ok: {found}"
-        count = len(self.problems)
-        return f"{count} problem{'s' if count != 1 else ''} in {found}"
+        return f"{_count(len(self.problems), 'problem')} in {found}"
 
     def to_json(self) -> dict[str, object]:
         return {"ok": not self.problems, "files": [str(f) for f in self.files], "frames": self.frames,
                 "categories": self.categories, "maps": self.maps,
                 "problems": [p.to_json() for p in self.problems]}
+
+
+def _count(n: int, one: str, many: str | None = None) -> str:
+    return f"{n} {one if n == 1 else many or one + 's'}"
 
 
 def validate_paths(paths: Iterable[str | Path], with_stdlib: bool = False) -> Report:

@@ -17,11 +17,51 @@ import yaml
 
 from seal_cli.errors import SealError, Where
 
-__all__ = ["NodeReader", "is_null", "shape", "suggest"]
+__all__ = ["MAX_VALUES", "NodeReader", "check_size", "is_null", "shape", "suggest"]
 
 T = TypeVar("T")
 
 NULL = "tag:yaml.org,2002:null"
+
+
+MAX_VALUES = 1_000_000
+"""The most values a YAML file may hold once its aliases are expanded (``*anchor`` repeats the
+whole anchored value): a file that expands beyond is refused before it is read."""
+
+
+def check_size(root: yaml.Node | None, file: str, limit: int = MAX_VALUES) -> None:
+    """Refuse a composed file whose values, aliases expanded, number more than ``limit``; linear
+    in the distinct nodes (each anchored node's expanded size is counted once and reused)."""
+    if root is None:
+        return
+    sizes: dict[int, int] = {}
+    open_: set[int] = set()  # on the path from the root: met again, an alias holds itself
+    stack: list[tuple[yaml.Node, bool]] = [(root, False)]
+    while stack:  # children before parents, each distinct node once, without recursion
+        node, finished = stack.pop()
+        if finished:
+            sizes[id(node)] = min(1 + sum(sizes[id(c)] for c in _children(node)), limit + 1)
+            open_.discard(id(node))
+            continue
+        if id(node) in sizes:
+            continue
+        if id(node) in open_:
+            raise SealError("an alias (*name) refers to a value that holds it: the value would be endless",
+                            Where(file, node.start_mark.line + 1, node.start_mark.column + 1))
+        open_.add(id(node))
+        stack.append((node, True))
+        stack.extend((child, False) for child in _children(node))
+    if sizes[id(root)] > limit:
+        raise SealError(f"this file holds more than {limit:,} values once its aliases (*name) are expanded; "
+                        "seal reads at most that many", Where(file))
+
+
+def _children(node: yaml.Node) -> list[yaml.Node]:
+    if isinstance(node, yaml.SequenceNode):
+        return list(node.value)
+    if isinstance(node, yaml.MappingNode):
+        return [n for pair in node.value for n in pair]
+    return []
 
 
 def is_null(node: yaml.Node) -> bool:
@@ -42,7 +82,7 @@ def shape(node: yaml.Node) -> str:
 
 def suggest(word: str, choices: Iterable[str]) -> str:
     """`` (did you mean 'x'?)`` for the closest choice, or nothing."""
-    close = difflib.get_close_matches(word, list(choices), n=1)
+    close = difflib.get_close_matches(word, [c for c in choices if c != word], n=1)
     return f" (did you mean {close[0]!r}?)" if close else ""
 
 

@@ -18,7 +18,7 @@ import pytest
 import seal_cli
 
 PACKAGE = Path(seal_cli.__file__).resolve().parent
-SUBPACKAGES = ("frames", "language", "planning", "maps", "sensing", "sefm", "sim", "bench", "cli")
+SUBPACKAGES = ("frames", "language", "planning", "maps", "sensing", "ros", "sefm", "sim", "bench", "cli")
 BASE = ("errors", "fileio", "yamlnodes", "resources")
 """Top-level modules every subpackage may import."""
 

@@ -10,10 +10,11 @@ May import anything; nothing imports it (but ``python -m seal_cli``).
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import json
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypeVar
 
@@ -25,7 +26,8 @@ from seal_cli.errors import SealError, SealErrors
 if TYPE_CHECKING:
     from rich.console import Console
 
-__all__ = ["app", "bench_app", "command", "emit_json", "err", "main", "out"]
+__all__ = ["MAX_PARTICLES", "MAX_STEPS", "OUTPUT_SUFFIXES", "app", "bench_app", "command", "emit_json", "err",
+           "main", "out", "progress_bar"]
 
 app = typer.Typer(
     name="seal",
@@ -83,6 +85,9 @@ def command(*args: Any, on: typer.Typer | None = None, **kwargs: Any) -> Callabl
     def decorate(function: F) -> F:
         @functools.wraps(function)
         def run(*a: Any, **kw: Any) -> Any:
+            from seal_cli.fileio import clean_up_on_signals, remove_temporaries
+
+            clean_up_on_signals()
             try:
                 return function(*a, **kw)
             except SealError as error:
@@ -93,11 +98,40 @@ def command(*args: Any, on: typer.Typer | None = None, **kwargs: Any) -> Callabl
                 raise typer.Exit(130) from None
             except BrokenPipeError:
                 raise typer.Exit(0) from None
+            except MemoryError:
+                err.print("error: out of memory: ask for less (fewer particles, steps, episodes or a smaller "
+                          "map)", markup=False)
+                raise typer.Exit(1) from None
+            except RecursionError:
+                err.print("error: the input is nested too deeply for seal to handle", markup=False)
+                raise typer.Exit(1) from None
+            finally:
+                remove_temporaries()  # of outputs planned but never written: the command failed first
 
         (on or app).command(*args, **kwargs)(run)
         return function
 
     return decorate
+
+
+@contextlib.contextmanager
+def progress_bar(what: str, total: int | None = None) -> Iterator[Callable[[int, int], None]]:
+    """``advance(done, total)`` for a bar with the count, the time taken and an estimate of the time
+    left: on stderr, and only when stderr is a terminal (nothing in a pipe, a file or a test)."""
+    from rich.progress import (
+        BarColumn,
+        MofNCompleteColumn,
+        Progress,
+        TextColumn,
+        TimeElapsedColumn,
+        TimeRemainingColumn,
+    )
+
+    with Progress(TextColumn(what), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), TextColumn("left"),
+                  TimeRemainingColumn(), console=err.console, transient=True,
+                  disable=not err.is_terminal) as progress:
+        bar = progress.add_task(what, total=total)
+        yield lambda done, total: progress.update(bar, completed=done, total=total)
 
 
 def emit_json(data: Any) -> None:
@@ -113,6 +147,15 @@ def framelib_paths(paths: list[Path] | None) -> list[Path] | None:
 FramelibOption = typer.Option(None, "--framelib", help="Frame library file or folder (repeatable); "
                               "default: the shipped standard library.", show_default=False)
 JsonOption = typer.Option(False, "--json", help="Machine-readable output on stdout.")
+
+MAX_PARTICLES = 100_000
+"""The most particles per object and per frame a command takes (a million per belief fills memory)."""
+
+MAX_STEPS = 100_000
+"""The most belief updates ``seal localize --steps`` takes (about ten minutes at 200 particles)."""
+
+OUTPUT_SUFFIXES = {"--png": (".png",), "--rrd": (".rrd",), "--episodes": (".jsonl", ".json")}
+"""The suffixes each output option's format may carry (``--png out.jpg`` is refused, not mislabelled)."""
 
 
 def _version(value: bool) -> None:

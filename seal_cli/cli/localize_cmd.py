@@ -2,13 +2,23 @@
 
 from __future__ import annotations
 
-import contextlib
+from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import typer
 
-from seal_cli.cli import FramelibOption, JsonOption, command, emit_json, framelib_paths, out
+from seal_cli.cli import (
+    MAX_PARTICLES,
+    MAX_STEPS,
+    FramelibOption,
+    JsonOption,
+    command,
+    emit_json,
+    framelib_paths,
+    out,
+    progress_bar,
+)
 
 if TYPE_CHECKING:
     from seal_cli.sensing.observations import Observation
@@ -47,6 +57,39 @@ def show(result: dict[str, Any]) -> None:
         out.print(objects)
 
 
+def _read_bag(bag: Path, pose_topic: str | None, detections_topic: str | None, frame: str, base_frame: str,
+              labels: Path | None) -> tuple[list[Observation], tuple[float, ...]]:
+    from seal_cli.cli import err
+    from seal_cli.ros.bags import TOLERANCE, read_run
+    from seal_cli.ros.labels import read_labels
+
+    names = read_labels(labels) if labels is not None else None
+    run = read_run(bag, pose_topic=pose_topic, detections_topic=detections_topic, frame=frame, base_frame=base_frame,
+                   labels=names)
+    err.print(f"{bag}: {len(run.observations)} detection messages on {run.detections_topic}, poses from "
+              f"{run.pose_source}", markup=False)
+    if run.skipped:
+        err.print(f"warning: {run.skipped} messages on {run.detections_topic} lie more than {TOLERANCE:g} s outside "
+                  f"the poses' time span and were skipped", markup=False)
+    return list(run.observations), run.stamps
+
+
+class Counter:
+    """Observer that reports each update to a progress bar's ``advance(done, total)``."""
+
+    def __init__(self, advance: Callable[[int, int], None], total: int) -> None:
+        self.advance, self.total = advance, total
+
+    def start(self, sefm: Any) -> None:
+        self.advance(0, self.total)
+
+    def update(self, sefm: Any, step: Any) -> None:
+        self.advance(step.index, self.total)
+
+    def finish(self, sefm: Any) -> None:
+        self.advance(self.total, self.total)
+
+
 @command("localize")
 def localize(
     map_name: str = typer.Option(..., "--map", help="The annotated map (a path or a shipped map's name)."),
@@ -62,8 +105,28 @@ def localize(
     observations: Path | None = typer.Option(None, "--observations", help="YAML list of {pose, detections: "
                                              "[{class, at}]}: real detections, one update each.",
                                              show_default=False),
-    steps: int = typer.Option(20, "--steps", min=0, help="Updates at the final pose (the paper uses 20)."),
-    particles: int = typer.Option(200, "--particles", min=1, help="Particles per object and per frame."),
+    bag: Path | None = typer.Option(None, "--bag", help="A ROS bag (ROS 1 .bag, ROS 2 folder, .db3 or .mcap): one "
+                                    "update per vision_msgs detection message, at the robot's pose then.",
+                                    show_default=False),
+    pose_topic: str | None = typer.Option(None, "--pose-topic", help="With --bag: the robot's pose (PoseStamped, "
+                                          "PoseWithCovarianceStamped, Odometry, or /tf); default: /tf if it "
+                                          "links --frame to base_link, else the bag's only pose topic.",
+                                          show_default=False),
+    detections_topic: str | None = typer.Option(None, "--detections-topic", help="With --bag: the vision_msgs "
+                                                "Detection2DArray/3DArray topic; default: the bag's only one.",
+                                                show_default=False),
+    frame: str = typer.Option("map", "--frame", help="With --bag: the map's TF frame (poses and detections are "
+                              "carried into it); also the frame of --goals."),
+    base_frame: str = typer.Option("base_link", "--base-frame", help="With --bag: the robot's TF frame."),
+    labels: Path | None = typer.Option(None, "--labels", help="With --bag: YAML {id: class} or [class, ...] naming "
+                                       "numeric class ids (ROS 1 vision_msgs, COCO ids).", show_default=False),
+    goals: Path | None = typer.Option(None, "--goals", help="Write per frame the pose to act from: YAML (.yaml) or "
+                                      "geometry_msgs/PoseStamped on /goal_pose in a bag (.bag, .mcap, a folder).",
+                                      show_default=False),
+    steps: int = typer.Option(20, "--steps", min=0, max=MAX_STEPS, help="Updates at the final pose (the paper "
+                              "uses 20)."),
+    particles: int = typer.Option(200, "--particles", min=1, max=MAX_PARTICLES, help="Particles per object and "
+                                  "per frame."),
     seed: int = typer.Option(0, "--seed", min=0, help="Seed of the one random generator."),
     rrd: Path | None = typer.Option(None, "--rrd", help="Write a Rerun recording of the run here.",
                                     show_default=False),
@@ -75,8 +138,9 @@ def localize(
     """Run SeFM: where each frame of the tasks' plans can be executed, and where each object is."""
     import numpy as np
 
+    from seal_cli.cli import OUTPUT_SUFFIXES
     from seal_cli.errors import SealError
-    from seal_cli.fileio import atomic_output
+    from seal_cli.fileio import Outputs
     from seal_cli.frames.reading import load_library
     from seal_cli.maps.formats.map_server import load_map
     from seal_cli.pipeline import frames_to_localise
@@ -84,34 +148,56 @@ def localize(
     from seal_cli.sefm.filter import SeFM, SeFMConfig
     from seal_cli.sensing.observations import check_inside, read_observations, read_trajectory
 
-    if trajectory is not None and observations is not None:
-        raise SealError("give --trajectory (simulated detections) or --observations (real ones), not both")
+    given = [name for name, v in (("--trajectory", trajectory), ("--observations", observations), ("--bag", bag))
+             if v is not None]
+    if len(given) > 1:
+        raise SealError(f"give one of --trajectory (simulated detections), --observations or --bag (real ones), "
+                        f"not both {' and '.join(given)}")
+    if bag is None and (pose_topic or detections_topic or labels):
+        raise SealError("--pose-topic, --detections-topic and --labels read a bag: give --bag too")
+    if goals is not None:
+        from seal_cli.ros.goals import check_goals_path
+
+        check_goals_path(goals, [bag, observations, trajectory, labels, rrd, png, *(framelib or []),
+                                 map_name if Path(map_name).exists() else None])
     library = load_library(framelib_paths(framelib))
     the_map = load_map(map_path(map_name))
     runs: list[Observation] = []
+    stamps: tuple[float, ...] = ()
     if trajectory is not None:
         runs = read_trajectory(trajectory)
     elif observations is not None:
         runs = read_observations(observations)
-    check_inside(runs, the_map.bounds, the_map.name)
+    elif bag is not None:
+        runs, stamps = _read_bag(bag, pose_topic, detections_topic, frame, base_frame, labels)
+    check_inside(runs, the_map.bounds, the_map.name, the_map.is_occupied)
     bindings, state = frames_to_localise(tasks or [], library, the_map, holding=holding, done=done or [])
+    if goals is not None and not bindings:
+        raise SealError("--goals writes a pose per frame, and there are none: give --task")
     rng = np.random.default_rng(seed)
-    with contextlib.ExitStack() as files:
-        observers: list[Any] = []
+    with Outputs({"--rrd": rrd, "--png": png}, [map_name, trajectory, observations, bag, labels, *(framelib or [])],
+                 suffixes=OUTPUT_SUFFIXES) as files, progress_bar("updates", len(runs) + steps) as advance:
+        observers: list[Any] = [Counter(advance, len(runs) + steps)]
         if rrd is not None:
             from seal_cli.sefm.observers.rerun import RerunRecorder
 
-            observers.append(RerunRecorder(files.enter_context(atomic_output(rrd))))
+            observers.append(RerunRecorder(files["--rrd"], stamps=stamps))
         if png is not None:
             from seal_cli.sefm.observers.png import PngDrawer
 
-            observers.append(PngDrawer(files.enter_context(atomic_output(png))))
+            observers.append(PngDrawer(files["--png"]))
         classes = () if bindings else the_map.classes
         sefm = SeFM(the_map, bindings, state, rng, SeFMConfig(particles=particles), observers, classes=classes)
         sefm.follow(runs, steps)
         sefm.close()
     result = {"map": the_map.name, "seed": seed, "steps": steps, "particles": particles,
               "updates": sefm.step, **sefm.to_json()}
+    if goals is not None:
+        from seal_cli.ros.goals import goals_for, write_goals
+
+        last = runs[-1].pose if runs else the_map.robot.pose
+        write_goals(goals, goals_for(the_map, sefm.frame_ids, result["frames"], last), frame,
+                    stamps[-1] if stamps else 0.0)
     if as_json:
         emit_json(result)
     else:

@@ -78,16 +78,19 @@ def map_command(
     as_json: bool = JsonOption,
 ) -> None:
     """Show what an annotated map holds: rooms, places, priors per room, objects, robot and sensor."""
+    from seal_cli.cli import OUTPUT_SUFFIXES
+    from seal_cli.fileio import Outputs
     from seal_cli.maps.formats.map_server import load_map
     from seal_cli.resources import map_path
 
     m = load_map(map_path(path))
     for warning in m.warnings:
         err.print(f"warning: {warning}", markup=False)
-    if png is not None:
-        from seal_cli.maps.drawing import save_map_png
+    with Outputs({"--png": png}, [map_path(path)], suffixes=OUTPUT_SUFFIXES) as outputs:
+        if png is not None:
+            from seal_cli.maps.drawing import save_map_png
 
-        save_map_png(m, png)
+            save_map_png(m, outputs["--png"])
     data = summary(m)
     if as_json:
         emit_json(data)

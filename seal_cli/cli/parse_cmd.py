@@ -48,11 +48,15 @@ def vocabulary_from(vocabulary: Path | None, map_name: str | None) -> Vocabulary
 
 
 def _read_lines(source: str) -> list[str]:
-    if source == "-":
-        return sys.stdin.read().splitlines()
-    from seal_cli.fileio import read_text
+    """The lines of a file or of standard input ('-'): one command per ``\\n``-separated line."""
+    from seal_cli.fileio import MAX_INPUT_BYTES, decode, read_text, split_lines
 
-    return read_text(source).splitlines()
+    if source != "-":
+        return split_lines(read_text(source))
+    data = sys.stdin.buffer.read(MAX_INPUT_BYTES + 1)
+    if len(data) > MAX_INPUT_BYTES:
+        raise SealError(f"standard input holds more than {MAX_INPUT_BYTES // 2**20} MiB; seal reads at most that")
+    return split_lines(decode(data, "<stdin>"))
 
 
 @command("parse")
@@ -71,7 +75,10 @@ def parse(
     from seal_cli.language.parser import parse_command, parse_lines
 
     if (text is None) == (file is None):
-        raise SealError("give either a command or --file FILE (one command per line; '-' reads standard input)")
+        import click
+
+        raise click.UsageError("give either a command or --file FILE (one command per line; '-' reads standard "
+                               "input)")
     library = load_library(framelib_paths(framelib))
     vocab = vocabulary_from(vocabulary, map_name)
     if file is not None:

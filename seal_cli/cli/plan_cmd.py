@@ -64,17 +64,21 @@ def plan(
     as_json: bool = JsonOption,
 ) -> None:
     """Plan a command: the frames it commands, in order, with the frames their preconditions need."""
+    from seal_cli.fileio import Outputs
     from seal_cli.frames.reading import load_library
     from seal_cli.pipeline import plan as plan_text
+    from seal_cli.planning.pddl import PDDL_FILES
 
     library = load_library(framelib_paths(framelib))
     world = _load_world(map_name)
+    outputs = Outputs({"--pddl": pddl}, [vocabulary, *(framelib or [])], folders={"--pddl": PDDL_FILES})
     result = plan_text(text, library, holding=holding, done=tuple(done or ()), map=world,
                        vocabulary=vocabulary_from(vocabulary, map_name), max_nodes=max_nodes)
-    if pddl is not None:
-        from seal_cli.planning.pddl import write_pddl
+    with outputs:  # both files or neither; a failure above leaves no temporary (they are removed at exit)
+        if pddl is not None:
+            from seal_cli.planning.pddl import write_pddl
 
-        write_pddl(pddl, library, result)
+            write_pddl(pddl, library, result, files=outputs)
     if as_json:
         emit_json(result.to_json())
     else:
@@ -99,9 +103,9 @@ def bench_plan(
     library = load_library(framelib_paths(framelib))
     world = _load_world(map_name)
     if file is not None:
-        from seal_cli.fileio import read_text
+        from seal_cli.fileio import read_text, split_lines
 
-        texts = [line.strip() for line in read_text(file).splitlines() if line.strip()]
+        texts = [line.strip() for line in split_lines(read_text(file)) if line.strip()]
         if not texts:
             from seal_cli.errors import SealError, Where
 

@@ -65,20 +65,25 @@ def run(
         from seal_cli.language.grounding import load_vocabulary
 
         vocabulary = load_vocabulary(vocabulary_file)
+    from seal_cli.cli import OUTPUT_SUFFIXES
+    from seal_cli.fileio import Outputs
+
     searcher = make_policy(policy, particles)
     searcher.keep_clouds = rrd is not None or png is not None
-    agent, result = run_on_map(the_map, text, library, searcher, rng=np.random.default_rng(seed), holding=holding,
-                               done=done or (), vocabulary=vocabulary,
-                               budget=Budget(steps=max_steps, metres=max_metres),
-                               observers=[] if as_json else [_narrate])
-    if rrd is not None:
-        from seal_cli.sim.record import write_rrd
+    with Outputs({"--rrd": rrd, "--png": png}, [map_name, vocabulary_file, *(framelib or [])],
+                 suffixes=OUTPUT_SUFFIXES) as outputs:
+        agent, result = run_on_map(the_map, text, library, searcher, rng=np.random.default_rng(seed),
+                                   holding=holding, done=done or (), vocabulary=vocabulary,
+                                   budget=Budget(steps=max_steps, metres=max_metres),
+                                   observers=[] if as_json else [_narrate])
+        if rrd is not None:
+            from seal_cli.sim.record import write_rrd
 
-        write_rrd(rrd, agent)
-    if png is not None:
-        from seal_cli.sim.record import write_png
+            write_rrd(outputs["--rrd"], agent)
+        if png is not None:
+            from seal_cli.sim.record import write_png
 
-        write_png(png, agent, f"{the_map.name}: {text}")
+            write_png(outputs["--png"], agent, f"{the_map.name}: {text}")
     if as_json:
         emit_json({"map": the_map.name, "text": text, "policy": policy, "seed": seed,
                    "completed": result.completed, "reason": result.reason, "path_m": round(result.path_m, 3),
@@ -147,6 +152,10 @@ def tasks(
     unknown = [name for name in names if name not in POLICIES]
     if unknown:
         raise SealError(f"--policies: unknown policy {unknown[0]!r}; known: {', '.join(POLICIES)}")
+    from seal_cli.cli import OUTPUT_SUFFIXES
+    from seal_cli.fileio import Outputs
+
+    outputs = Outputs({"--episodes": episodes}, [data, *(framelib or [])], suffixes=OUTPUT_SUFFIXES)
     outcomes: list[Outcome] = []
     with Progress(TextColumn("episodes"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), console=err.console,
                   transient=True, disable=not err.is_terminal) as progress:
@@ -176,10 +185,10 @@ def tasks(
                              jobs=jobs or os.cpu_count() or 1, particles=particles, framelib=libs,
                              progress=advance)
         outcomes.extend(runs)
-    if episodes is not None:
-        from seal_cli.fileio import atomic_write_text
-
-        atomic_write_text(episodes, "".join(json.dumps(o.to_json()) + "\n" for o in outcomes))
+    with outputs:  # a failure above leaves no temporary: they are removed at exit
+        if episodes is not None:
+            outputs["--episodes"].write_text("".join(json.dumps(o.to_json()) + "\n" for o in outcomes),
+                                             encoding="utf-8")
     report = summarise(outcomes, names)
     if suite == "map":
         report.update({"suite": suite, "map": map_name, "layouts": layouts, "seed": seed})

@@ -18,6 +18,7 @@ import re
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
+from typing import Any
 
 from seal_cli.errors import SealError, SealErrors, Where
 
@@ -200,6 +201,23 @@ class Frame:
                         yield SealError(f"{section} {item} names {arg!r}, which {self.name} lacks"
                                         f"{_suggest(arg, seen)}; its elements are {_listing(seen)}", item.where)
 
+    @classmethod
+    def salvage(cls, name: str, **fields: Any) -> Frame | None:
+        """The frame without what its own checks refuse (a second element or lexical unit of one
+        name, a fact or action naming an element it lacks), so that a library's checks across
+        frames still look at the rest of it; None when its name itself is wrong."""
+        if not FRAME_NAME.match(name):
+            return None
+        elements = tuple({e.role: e for e in reversed(fields.get("elements", ()))}.values())[::-1]
+        roles = {e.role for e in elements}
+        units = tuple({u.text: u for u in reversed(fields.get("lexical_units", ()))}.values())[::-1]
+        kept = {key: tuple(i for i in fields.get(key, ()) if set(i.args) <= roles)
+                for key in ("preconditions", "actions", "postconditions")}
+        try:
+            return cls(name, **{**fields, "elements": elements, "lexical_units": units, **kept})  # type: ignore[arg-type]
+        except SealError:
+            return None
+
     @property
     def roles(self) -> tuple[str, ...]:
         return tuple(e.role for e in self.elements)
@@ -271,5 +289,5 @@ def _listing(elements: Mapping[str, Element]) -> str:
 def _suggest(name: str, choices: Iterable[str]) -> str:
     import difflib
 
-    close = difflib.get_close_matches(name, list(choices), n=1)
+    close = difflib.get_close_matches(name, [c for c in choices if c != name], n=1)
     return f" (did you mean {close[0]!r}?)" if close else ""

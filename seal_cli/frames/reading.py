@@ -7,14 +7,17 @@ instead. Which files make up the standard library is :func:`seal_cli.resources.f
 
 from __future__ import annotations
 
+import dataclasses
+import difflib
 from collections.abc import Iterable, Mapping, Sequence
 from functools import cache
 from pathlib import Path
 
 from seal_cli.errors import SealError, SealErrors, Where
+from seal_cli.fileio import read_text
 from seal_cli.frames.formats import Contents, Reader, dsl, yamlfile
 from seal_cli.frames.library import Library
-from seal_cli.frames.model import Frame
+from seal_cli.frames.model import Frame, LexicalUnit
 from seal_cli.frames.validation import check_library
 from seal_cli.resources import framelib_dir
 
@@ -49,9 +52,9 @@ def read_files(files: Sequence[Path]) -> Contents:
     pieces = Contents()
     for path in files:
         try:
-            text = path.read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError) as exc:
-            pieces.problems.append(SealError(f"cannot read {path}: {exc}", Where(str(path))))
+            text = read_text(path)
+        except SealError as exc:
+            pieces.problems.append(exc)
             continue
         reader = READERS.get(path.suffix, yamlfile.read)
         pieces.add(reader(text, str(path)))
@@ -63,6 +66,7 @@ def read_library(paths: Iterable[str | Path]) -> tuple[Library, list[SealError]]
     files, problems = frame_files(paths)
     pieces = read_files(files)
     problems.extend(pieces.problems)
+    pieces.frames = _with_units(pieces.frames, pieces.units, problems)
     names: set[str] = set()
     unique: list[Frame] = []
     for frame in pieces.frames:
@@ -72,6 +76,39 @@ def read_library(paths: Iterable[str | Path]) -> tuple[Library, list[SealError]]
     library = Library(tuple(unique), pieces.taxonomy)
     problems.extend(check_library(pieces.frames, pieces.taxonomy))
     return library, problems
+
+
+def _with_units(frames: list[Frame], units: Sequence[tuple[str, LexicalUnit]],
+                problems: list[SealError]) -> list[Frame]:
+    """The frames with the lexical units other files add to them (``lexical_units:`` in a frame
+    file, as ``framelib/derived_units.yaml`` does); a unit for no frame, or one the frame lists
+    already, is a problem."""
+    added: dict[str, list[LexicalUnit]] = {}
+    names = {f.name for f in frames}
+    for name, unit in units:
+        if name not in names:
+            close = difflib.get_close_matches(name, sorted(names), n=1)
+            hint = f" (did you mean {close[0]!r}?)" if close else ""
+            problems.append(SealError(f"lexical unit {unit.text!r} is for frame {name!r}, which no file defines{hint}",
+                                      unit.where))
+            continue
+        added.setdefault(name, []).append(unit)
+    out = []
+    for frame in frames:
+        extra = added.pop(frame.name, None)
+        if extra:
+            own = {u.text for u in frame.lexical_units}
+            new: list[LexicalUnit] = []
+            for unit in extra:
+                if unit.text in own:
+                    problems.append(SealError(f"lexical unit {unit.text!r} is already one of {frame.name}'s",
+                                              unit.where))
+                else:
+                    new.append(unit)
+                    own.add(unit.text)
+            frame = dataclasses.replace(frame, lexical_units=frame.lexical_units + tuple(new))
+        out.append(frame)
+    return out
 
 
 def load_library(paths: Iterable[str | Path] | None = None) -> Library:

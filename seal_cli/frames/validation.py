@@ -50,7 +50,7 @@ def _duplicates(frames: Sequence[Frame]) -> Iterator[SealError]:
 
 
 def _suggest(word: str, choices: Iterable[str]) -> str:
-    close = difflib.get_close_matches(word, sorted(choices), n=1)
+    close = difflib.get_close_matches(word, sorted(set(choices) - {word}), n=1)
     return f" (did you mean {close[0]!r}?)" if close else ""
 
 
@@ -103,60 +103,141 @@ def _is_world(fact: Fact, taxonomy: Taxonomy) -> bool:
     return fact.predicate in taxonomy.world or (len(fact.args) == 1 and fact.predicate in taxonomy)
 
 
-def _achieves(frame: Frame, fact: Fact) -> bool:
-    return any(p.predicate == fact.predicate and p.negated == fact.negated and len(p.args) == len(fact.args)
-               for p in frame.postconditions)
-
-
 def _unachieved(frames: Sequence[Frame], taxonomy: Taxonomy) -> Iterator[SealError]:
+    achieved = {_key(p) for f in frames for p in f.postconditions}
+    produced = sorted({p.predicate for f in frames for p in f.postconditions if not p.negated})
     for frame in frames:
         for fact in frame.preconditions:
-            if not _is_world(fact, taxonomy) and not any(_achieves(other, fact) for other in frames):
-                produced = {p.predicate for f in frames for p in f.postconditions if not p.negated}
+            if not _is_world(fact, taxonomy) and _key(fact) not in achieved:
                 yield SealError(f"precondition {fact} of {frame.name} is achieved by no frame's postcondition "
-                                f"and is not a world fact{_suggest(fact.predicate, produced)}; "
+                                f"and is not a world fact{_near(fact, achieved, produced)}; "
                                 "declare it under 'world:' if the world or robot provides it", fact.where)
 
 
+def _near(fact: Fact, achieved: set[tuple[str, bool, int]], produced: Sequence[str]) -> str:
+    """What a frame does achieve of this predicate (another sign or number of arguments), else a
+    close name."""
+    forms = sorted((negated, arity) for name, negated, arity in achieved if name == fact.predicate)
+    if not forms:
+        return _suggest(fact.predicate, produced)
+    said = " or ".join(f"{'not ' if negated else ''}{fact.predicate} with {arity} argument{'s' * (arity != 1)}"
+                       for negated, arity in forms)
+    return f" (frames achieve only {said})"
+
+
+def _key(fact: Fact) -> tuple[str, bool, int]:
+    """What achieving a fact takes: a postcondition of its predicate, sign and arity."""
+    return (fact.predicate, fact.negated, len(fact.args))
+
+
 def _cycles(frames: Sequence[Frame], taxonomy: Taxonomy) -> Iterator[SealError]:
-    """Frames that can never run because what they need is only given by frames that need them."""
-    needs = {f.name: [fact for fact in f.preconditions if not _is_world(fact, taxonomy)] for f in frames}
+    """Frames that can never run because what they need is only given by frames that need them.
+
+    Linear in the size of the library: which frames can run is found by counting unmet needs (as
+    Horn clauses are solved), and the cycles among the rest are the strongly connected components
+    of the graph frame → need → achiever (Tarjan)."""
     unique = {f.name: f for f in frames}
-    runnable: set[str] = set()
-    changed = True
-    while changed:
-        changed = False
-        for name in unique:
-            if name not in runnable and all(any(_achieves(unique[o], fact) for o in runnable)
-                                            for fact in needs[name]):
-                runnable.add(name)
-                changed = True
-    stuck = [name for name in unique if name not in runnable
-             and all(any(_achieves(o, fact) for o in frames) for fact in needs[name])]
-    reported: set[frozenset[str]] = set()
-    for start in stuck:
-        path = _find_cycle(start, unique, needs, set(stuck))
-        if path and frozenset(path) not in reported:
-            reported.add(frozenset(path))
+    needs = {name: {_key(fact) for fact in f.preconditions if not _is_world(fact, taxonomy)}
+             for name, f in unique.items()}
+    achievers: dict[tuple[str, bool, int], list[str]] = {}
+    for name, frame in unique.items():
+        for key in dict.fromkeys(_key(p) for p in frame.postconditions):
+            achievers.setdefault(key, []).append(name)
+    runnable = _runnable(unique, needs)
+    stuck = [name for name in unique if name not in runnable and all(key in achievers for key in needs[name])]
+    stuck_set = set(stuck)
+    edges = {name: [other for key in sorted(needs[name]) for other in achievers[key] if other in stuck_set]
+             for name in stuck}
+    for component in _components(stuck, edges):
+        path = _shortest_cycle(component, edges)
+        if path:
             chain = " → ".join(path + [path[0]])
             yield SealError(f"precondition cycle: {chain}; none of these frames can ever run, because each needs "
                             "what only another one in the cycle achieves", unique[path[0]].where)
 
 
-def _find_cycle(start: str, frames: dict[str, Frame], needs: dict[str, list[Fact]], stuck: set[str]
-                ) -> list[str] | None:
-    """A path of stuck frames from ``start`` back to ``start``, each achieving a need of the one before."""
-    stack: list[tuple[str, list[str]]] = [(start, [start])]
-    visited: set[str] = set()
-    while stack:
-        name, path = stack.pop()
-        for fact in needs[name]:
-            for other in sorted(n for n in stuck if _achieves(frames[n], fact)):
+def _runnable(frames: dict[str, Frame], needs: dict[str, set[tuple[str, bool, int]]]) -> set[str]:
+    """The frames that can run from the world facts alone or after other runnable frames."""
+    unmet = {name: len(keys) for name, keys in needs.items()}
+    waiting: dict[tuple[str, bool, int], list[str]] = {}
+    for name, keys in needs.items():
+        for key in keys:
+            waiting.setdefault(key, []).append(name)
+    ready = [name for name, count in unmet.items() if count == 0]
+    runnable: set[str] = set(ready)
+    achieved: set[tuple[str, bool, int]] = set()
+    while ready:
+        for key in {_key(p) for p in frames[ready.pop()].postconditions} - achieved:
+            achieved.add(key)
+            for other in waiting.get(key, ()):
+                unmet[other] -= 1
+                if unmet[other] == 0:
+                    runnable.add(other)
+                    ready.append(other)
+    return runnable
+
+
+def _components(nodes: list[str], edges: dict[str, list[str]]) -> list[list[str]]:
+    """Tarjan's strongly connected components with a cycle (more than one node, or a self-loop),
+    each in ``nodes`` order; iterative, so a 10,000-frame chain needs no deep recursion."""
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    on_stack: set[str] = set()
+    found: list[list[str]] = []
+    order = {n: k for k, n in enumerate(nodes)}
+    for root in nodes:
+        if root in index:
+            continue
+        work = [(root, 0)]
+        while work:
+            node, i = work.pop()
+            if i == 0:
+                index[node] = low[node] = len(index)
+                stack.append(node)
+                on_stack.add(node)
+            if i < len(edges[node]):
+                work.append((node, i + 1))
+                other = edges[node][i]
+                if other not in index:
+                    work.append((other, 0))
+                elif other in on_stack:
+                    low[node] = min(low[node], index[other])
+                continue
+            if low[node] == index[node]:
+                members = []
+                while True:
+                    member = stack.pop()
+                    on_stack.discard(member)
+                    members.append(member)
+                    if member == node:
+                        break
+                if len(members) > 1 or node in edges[node]:
+                    found.append(sorted(members, key=order.__getitem__))
+            if work:
+                parent = work[-1][0]
+                low[parent] = min(low[parent], low[node])
+    return found
+
+
+def _shortest_cycle(component: list[str], edges: dict[str, list[str]]) -> list[str] | None:
+    """The shortest path from the component's first frame back to it, inside the component."""
+    start, inside = component[0], set(component)
+    previous: dict[str, str] = {}
+    frontier = [start]
+    while frontier:
+        following = []
+        for name in frontier:
+            for other in edges[name]:
                 if other == start:
-                    return path
-                if other not in visited:
-                    visited.add(other)
-                    stack.append((other, path + [other]))
+                    path = [name]
+                    while path[-1] != start:
+                        path.append(previous[path[-1]])
+                    return path[::-1]
+                if other in inside and other not in previous:
+                    previous[other] = name
+                    following.append(other)
+        frontier = following
     return None
 
 

@@ -13,7 +13,6 @@ from typing import TYPE_CHECKING, Any
 
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame
-from seal_cli.frames.taxonomy import class_words
 from seal_cli.language.element_types import Types
 from seal_cli.language.grounding import PIECES, PORTIONS
 from seal_cli.language.lexicon import Word, noun_lemma
@@ -481,7 +480,7 @@ class Evoker:
     def ground_name(self, name: str) -> str | None:
         if self.vocabulary is None:
             return name
-        return self.vocabulary.ground_words(class_words(name)) or name
+        return self.vocabulary.ground_name(name) or name   # a default: the rules alone (langdata)
 
 
 def _whole_named(np: NP) -> bool:

@@ -38,6 +38,7 @@ from typing import Any
 from seal_cli.errors import SealError, Where
 from seal_cli.frames.taxonomy import class_key, class_words
 from seal_cli.language.lexicon import noun_lemma
+from seal_cli.language.wordusage import WordUsage, shipped_word_usage
 
 __all__ = ["PIECES", "PORTIONS", "Vocabulary", "load_vocabulary", "vocabulary_of_map"]
 
@@ -58,6 +59,9 @@ piece exists once its whole has been cut, so naming one asks for the cutting (se
 :mod:`seal_cli.language.parser`)."""
 
 
+_RULES = WordUsage()
+
+
 def _lemmas(words: Iterable[str]) -> tuple[str, ...]:
     return tuple(noun_lemma(w) for w in words)
 
@@ -74,6 +78,11 @@ class Vocabulary:
     classes: tuple[str, ...]
     synonyms: tuple[tuple[str, ...], ...] = ()
     where: Where | None = field(default=None, compare=False)
+    usage: WordUsage | None = field(default=None, compare=False)
+    """Which class people mean by a word (:mod:`~seal_cli.language.wordusage`); None: the shipped tables."""
+    scene: bool = field(default=False, compare=False)
+    """Whether the classes are those of one scene (:meth:`restricted_to`): the statistics then ask
+    which class people mean by a word where it is present, not which one is meant most often."""
 
     def __post_init__(self) -> None:
         if not self.synonyms:
@@ -82,11 +91,28 @@ class Vocabulary:
             raise SealError("a vocabulary needs one list of synonyms per class", self.where)
 
     @classmethod
-    def of(cls, names: Iterable[str], synonyms: Mapping[str, Sequence[str]] | None = None) -> Vocabulary:
+    def of(cls, names: Iterable[str], synonyms: Mapping[str, Sequence[str]] | None = None,
+           usage: WordUsage | None = None) -> Vocabulary:
         """A vocabulary from class names (and optionally synonyms by class), duplicates dropped."""
         unique = tuple(dict.fromkeys(n for n in names if class_words(n)))
         extra = synonyms or {}
-        return cls(unique, tuple(tuple(extra.get(n, ())) for n in unique))
+        return cls(unique, tuple(tuple(extra.get(n, ())) for n in unique), usage=usage)
+
+    def with_usage(self, usage: WordUsage) -> Vocabulary:
+        """This vocabulary grounding with these word statistics (``WordUsage()``: the rules alone)."""
+        return Vocabulary(self.classes, self.synonyms, self.where, usage, self.scene)
+
+    @cached_property
+    def _usage(self) -> WordUsage:
+        return shipped_word_usage() if self.usage is None else self.usage
+
+    @cached_property
+    def _present(self) -> dict[str, str]:
+        """Class key → class, for the statistics (which count by class key)."""
+        present: dict[str, str] = {}
+        for name in self.classes:
+            present.setdefault(class_key(name), name)
+        return present
 
     @cached_property
     def _names(self) -> tuple[tuple[int, tuple[str, ...]], ...]:
@@ -142,7 +168,7 @@ class Vocabulary:
             if len(words) > 1 and noun_lemma(words[-1]) in PORTIONS and whole not in keys:
                 names += [whole.replace("_", " "), *synonyms.get(whole, ())]
             added.append(tuple(dict.fromkeys(n for n in names if class_key(n) != class_key(name))))
-        return Vocabulary(self.classes, tuple(added), self.where)
+        return Vocabulary(self.classes, tuple(added), self.where, self.usage, self.scene)
 
     def restricted_to(self, classes: Iterable[str]) -> Vocabulary:
         """The vocabulary of a scene: only the given classes (those present), each with the names
@@ -158,7 +184,8 @@ class Vocabulary:
                 names.setdefault(present[key], []).extend(synonyms)
         for cls in present.values():
             names.setdefault(cls, [])
-        return Vocabulary.of(list(names), names)
+        scene = Vocabulary.of(list(names), names, self.usage)
+        return Vocabulary(scene.classes, scene.synonyms, scene.where, scene.usage, True)
 
     def __len__(self) -> int:
         return len(self.classes)
@@ -177,6 +204,8 @@ class Vocabulary:
                 found = self._ground((*words[:end - 1], stem, *words[end:]), end, of) if len(stem) > 1 else None
                 if found is not None:
                     break
+        if words and not of and end == len(words) and words[-1] not in PORTIONS:
+            found = self._usage.choose(words, self._present, found, self.scene)
         return found
 
     def _ground(self, words: tuple[str, ...], end: int, of: tuple[str, ...]) -> str | None:
@@ -212,6 +241,15 @@ class Vocabulary:
             if best is not None and weight >= 4.0:
                 break
         return None if best is None else self.classes[best[1]]
+
+    def ground_name(self, name: str) -> str | None:
+        """The class a class name of the frame library denotes (a default: Slice's ``knife``): by
+        the rules alone, since nobody said it, the statistics of what people mean do not apply."""
+        return self._rules_alone.ground_words(class_words(name))
+
+    @cached_property
+    def _rules_alone(self) -> Vocabulary:
+        return self if self.usage is not None and not self.usage else self.with_usage(_RULES)
 
 
 def _entries(data: Any, where: Where) -> tuple[list[str], dict[str, list[str]]]:

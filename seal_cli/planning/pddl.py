@@ -30,8 +30,8 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from seal_cli.errors import SealError, Where
-from seal_cli.fileio import atomic_write_text
+from seal_cli.errors import SealError
+from seal_cli.fileio import Outputs
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding, Fact, Frame
 from seal_cli.frames.taxonomy import Taxonomy, class_key
@@ -345,18 +345,18 @@ def problem_pddl(library: Library, plan: Plan, *, name: str = "command", domain:
             f"  (:objects\n{objects}  )\n  (:init\n{init}  )\n  (:goal {goal})\n)\n")
 
 
-def write_pddl(directory: str | Path, library: Library, plan: Plan) -> tuple[Path, Path]:
-    """Write ``domain.pddl`` and ``problem.pddl`` into an existing folder, each whole or not at all."""
+PDDL_FILES = ("domain.pddl", "problem.pddl")
+"""The files ``write_pddl`` writes into its folder."""
+
+
+def write_pddl(directory: str | Path, library: Library, plan: Plan, files: Outputs | None = None) -> tuple[Path, Path]:
+    """Write ``domain.pddl`` and ``problem.pddl`` into an existing folder, both or neither: into the
+    ``--pddl`` temporaries of ``files`` when given (whose owner moves them), else on their own."""
+    if files is None:
+        with Outputs({"--pddl": directory}, folders={"--pddl": PDDL_FILES}) as own:
+            return write_pddl(directory, library, plan, own)
+    for name, text in zip(PDDL_FILES, (domain_pddl(library, plan), problem_pddl(library, plan)), strict=True):
+        files.file("--pddl", name).write_text(text, encoding="utf-8")
     folder = Path(directory)
-    if not folder.is_dir():
-        what = "is a file, not a folder" if folder.exists() else "does not exist"
-        raise SealError(f"cannot write PDDL into {folder}: it {what}", Where(str(folder)))
-    domain, problem = domain_pddl(library, plan), problem_pddl(library, plan)
-    paths = folder / "domain.pddl", folder / "problem.pddl"
-    try:
-        atomic_write_text(paths[0], domain)
-        atomic_write_text(paths[1], problem)
-    except OSError as exc:
-        raise SealError(f"cannot write PDDL into {folder}: {exc.strerror or exc}", Where(str(folder))) from None
-    return paths
+    return folder / PDDL_FILES[0], folder / PDDL_FILES[1]
 

@@ -25,6 +25,7 @@ Then the frames of each ``done`` command, grounded the same way, are applied in 
 from __future__ import annotations
 
 import itertools
+import math
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
@@ -44,7 +45,8 @@ if TYPE_CHECKING:
     from seal_cli.language.parser import Parse, Phrase
     from seal_cli.maps.model import Map
 
-__all__ = ["Problem", "Things", "build_problem", "commanded_frames", "instance_names", "problem_of_text"]
+__all__ = ["MAX_COMMANDED", "MAX_COUNT", "Problem", "Things", "build_problem", "commanded_frames", "instance_names",
+           "problem_of_text"]
 
 INDEFINITE = frozenset({"something", "anything", "everything", "nothing"})
 """Pronouns that name a thing of their own rather than an antecedent."""
@@ -148,6 +150,13 @@ class Things:
         return State.of(facts | robot_facts(name), self.taxonomy, self.closable, self.classes)
 
 
+MAX_COUNT = 100
+"""The most things one phrase may ask for ("put 100 apples in the fridge"); more is refused."""
+
+MAX_COMMANDED = 200
+"""The most grounded frames one command may command (counts and conjunctions multiply)."""
+
+
 def _located(message: str, phrase: Phrase | None, text: str) -> SealError:
     """An error about a phrase, with a caret under it when its place in the text is known."""
     if phrase is None or phrase.span is None:
@@ -180,7 +189,11 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
     value = phrase.cls or phrase.head
     if not class_key(value):
         raise _located(f"{phrase.text!r} names no thing", phrase, text)
-    return things.instances(value, _count(phrase, value))
+    count = _count(phrase, value)
+    if count > MAX_COUNT:
+        raise _located(f"{phrase.text!r} asks for {count:,} things; seal plans for at most {MAX_COUNT} "
+                       "of a kind", phrase, text)
+    return things.instances(value, count)
 
 
 def _count(phrase: Phrase, value: str) -> int:
@@ -230,6 +243,10 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         _check_types(frame, values, evoked.elements, things, parse.text)
         earlier.append(values)
         roles = [r for r in frame.roles if r in values]
+        if len(bindings) + math.prod(len(values[r]) for r in roles) > MAX_COMMANDED:
+            raise SealError(f"the command asks for more than {MAX_COMMANDED} frames (counted and joined things "
+                            f"multiply: {evoked.frame} alone is {math.prod(len(values[r]) for r in roles):,}); "
+                            "split it into smaller commands")
         for combination in itertools.product(*(values[r] for r in roles)):
             bindings.append(frame.bind(dict(zip(roles, combination, strict=True))))
     return bindings

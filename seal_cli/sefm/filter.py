@@ -26,6 +26,7 @@ update.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Protocol
@@ -33,6 +34,7 @@ from typing import Any, Protocol
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from seal_cli.errors import SealError
 from seal_cli.frames.model import Binding
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.model import Map
@@ -217,9 +219,9 @@ class SeFM:
     # -- one update -----------------------------------------------------------------------------
     def update(self, pose: ArrayLike, detections: Iterable[Any] = (), state: State | None = None) -> None:
         """One belief update from the robot's pose ``(x, y[, yaw])``, what it detected there, and its state."""
+        robot, seen = self._checked(pose, detections)
         if state is not None:
             self.state = state
-        robot, seen = as_pose(pose), _detections(detections)
         region = self._region(robot)
         self._observe(robot, region, seen)
         terms = self._relate()
@@ -229,6 +231,28 @@ class SeFM:
         record = Step(self.step, robot, seen, region)
         for observer in self.observers:
             observer.update(self, record)
+
+    def _checked(self, pose: ArrayLike, detections: Iterable[Any]
+                 ) -> tuple[tuple[float, float, float], tuple[tuple[str, tuple[float, float]], ...]]:
+        """The pose and detections, refused (a SealError) when not finite, off the map, or of a class
+        that neither the map nor the beliefs know: the filter never takes NaN or nonsense."""
+        try:
+            robot, seen = as_pose(pose), _detections(detections)
+        except (TypeError, ValueError, IndexError) as exc:
+            raise SealError(f"a pose is (x, y[, yaw]) and a detection (class, (x, y)): {exc}") from None
+        xmin, ymin, xmax, ymax = self.map.bounds
+        if not all(math.isfinite(v) for v in robot) or not (xmin <= robot[0] <= xmax and ymin <= robot[1] <= ymax):
+            raise SealError(f"pose {robot} is not a finite point inside map {self.map.name}'s bounds "
+                            f"[{xmin:g}, {ymin:g}, {xmax:g}, {ymax:g}]")
+        known = set(self.map.classes) | {source.key for source in self.sources}
+        for cls, (x, y) in seen:
+            if not (math.isfinite(x) and math.isfinite(y) and xmin <= x <= xmax and ymin <= y <= ymax):
+                raise SealError(f"a detection of {cls or '(no class)'} at ({x:g}, {y:g}) is not a finite point "
+                                f"inside map {self.map.name}'s bounds [{xmin:g}, {ymin:g}, {xmax:g}, {ymax:g}]")
+            if cls not in known:
+                raise SealError(f"a detection of {cls!r}: map {self.map.name} and the plan know no such class "
+                                f"(they know {', '.join(sorted(known)) or 'none'})")
+        return robot, seen
 
     def _observe(self, robot: tuple[float, float, float], region: VisibleRegion,
                  seen: tuple[tuple[str, tuple[float, float]], ...]) -> None:
@@ -337,7 +361,9 @@ class SeFM:
 
     def frame_json(self, i: int) -> dict[str, Any]:
         binding = self.bindings[i]
-        return {"frame": binding.frame.name, "elements": _in_role_order(binding), **self.frame_summary(i).to_json()}
+        summary = self.frame_summary(i).to_json()
+        summary["ess"] = round(float(self.frames.ess()[i]), 1)  # of the last reweighting: the particles weigh 1/P now
+        return {"frame": binding.frame.name, "elements": _in_role_order(binding), **summary}
 
     def object_json(self, cls: str) -> dict[str, Any]:
         summary = self.object_summary(cls).to_json()

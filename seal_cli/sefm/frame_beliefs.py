@@ -167,7 +167,11 @@ class FrameBeliefs:
         return int(self.X.shape[1])
 
     def ess(self) -> Array:
-        """The effective sample size of the last reweighting (before it was resampled)."""
+        """The effective sample size of the last reweighting (before it was resampled), in particles kept.
+
+        The reweighted set holds the P carried particles and the n fresh draws; its Kish ESS
+        ``1 / Σ W²`` counts all P + n, so it is scaled by ``P / (P + n)``: between P / (P + n) and
+        P, and P exactly when all weights are even."""
         return self.last_ess
 
     def shown_weights(self, i: int) -> Array:
@@ -218,8 +222,8 @@ class FrameBeliefs:
         weights[~(np.isfinite(weights) & (weights > 0))] = 0.0
         self.Z = np.maximum(weights.mean(axis=1), np.finfo(float).tiny)
         W = normalise(weights)
-        self.last_ess = ess(W)
         width = W.shape[1]
+        self.last_ess = ess(W) * (P / width)  # of P + n weighted particles, P are kept: at most P, even weights give P
         listed = (cell_order.order_of_cells(self.map, cells) + np.arange(F)[:, None] * width).ravel()  # flat indices
         chosen = systematic(W.ravel()[listed].reshape(F, width), rng, P)
         ancestors = listed[chosen + np.arange(F)[:, None] * width]

@@ -25,16 +25,24 @@ from __future__ import annotations
 
 import difflib
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import yaml
 
 from seal_cli.errors import SealError, Where
 from seal_cli.fileio import LOADER, read_text
+from seal_cli.yamlnodes import check_size
 
-__all__ = ["Observation", "check_inside", "read_observations", "read_trajectory"]
+MAX_OBSERVATIONS = 100_000
+"""The most poses a trajectory, or observations an observations file, may hold (one update each)."""
+
+MAX_DETECTIONS = 1_000
+"""The most detections one observation may hold."""
+
+__all__ = ["MAX_DETECTIONS", "MAX_OBSERVATIONS", "Observation", "check_inside", "read_observations", "read_trajectory"]
 
 
 @dataclass(frozen=True)
@@ -61,7 +69,7 @@ class _Reader:
 
     def root(self) -> yaml.Node | None:
         try:
-            return yaml.compose(self.text, Loader=LOADER)
+            root = yaml.compose(self.text, Loader=LOADER)
         except yaml.MarkedYAMLError as exc:
             mark = exc.problem_mark or exc.context_mark
             where = Where(self.file, mark.line + 1, mark.column + 1) if mark else Where(self.file)
@@ -69,6 +77,8 @@ class _Reader:
             raise SealError(f"YAML syntax error: {exc.problem or exc.context}", where, source_line=source) from None
         except yaml.YAMLError as exc:
             raise SealError(f"YAML error: {exc}", Where(self.file)) from None
+        check_size(root, self.file)
+        return root
 
     def number(self, node: yaml.Node, what: str) -> float:
         if isinstance(node, yaml.ScalarNode) and node.tag in ("tag:yaml.org,2002:int", "tag:yaml.org,2002:float"):
@@ -95,6 +105,8 @@ class _Reader:
         out: dict[str, yaml.Node] = {}
         for key_node, value in node.value:
             key = key_node.value if isinstance(key_node, yaml.ScalarNode) else None
+            if key in out:
+                raise self.error(f"{what} repeats the key {key!r}: give it once", key_node)
             if key not in keys:
                 close = difflib.get_close_matches(str(key), list(keys), n=1)
                 hint = f" (did you mean {close[0]!r}?)" if close else ""
@@ -118,6 +130,11 @@ def _empty(reader: _Reader, root: yaml.Node | None, what: str) -> SealError:
     return SealError(f"{reader.file} holds no {what}", Where(reader.file, 1, 1))
 
 
+def _bound(reader: _Reader, node: yaml.SequenceNode, limit: int, what: str) -> None:
+    if len(node.value) > limit:
+        raise reader.error(f"{len(node.value):,} {what}: seal takes at most {limit:,}", node)
+
+
 def read_trajectory(path: str | Path) -> list[Observation]:
     """The poses of a trajectory file (``poses: [[x, y], [x, y, yaw], ...]``), at least one."""
     reader = _Reader(path)
@@ -129,6 +146,7 @@ def read_trajectory(path: str | Path) -> list[Observation]:
         raise reader.error(f"poses must be a list of [x, y] or [x, y, yaw], not {_shape(poses)}", poses)
     if not poses.value:
         raise reader.error("poses is empty: give at least one pose", poses)
+    _bound(reader, poses, MAX_OBSERVATIONS, "poses")
     return [Observation(reader.pose(item, f"pose {i + 1}"), None, reader.where(item))
             for i, item in enumerate(poses.value)]
 
@@ -145,6 +163,7 @@ def read_observations(path: str | Path) -> list[Observation]:
         raise reader.error(f"observations must be a list of {{pose, detections}}, not {_shape(root)}", root)
     if not root.value:
         raise reader.error("the list of observations is empty: give at least one", root)
+    _bound(reader, root, MAX_OBSERVATIONS, "observations")
     out = []
     for i, item in enumerate(root.value):
         what = f"observation {i + 1}"
@@ -155,6 +174,7 @@ def read_observations(path: str | Path) -> list[Observation]:
         if seen is not None and not (isinstance(seen, yaml.ScalarNode) and seen.tag.endswith(":null")):
             if not isinstance(seen, yaml.SequenceNode):
                 raise reader.error(f"{what}'s detections must be a list of {{class, at}}, not {_shape(seen)}", seen)
+            _bound(reader, seen, MAX_DETECTIONS, f"detections in {what}")
             for j, node in enumerate(seen.value):
                 label = f"detection {j + 1} of {what}"
                 parts = reader.mapping(node, label, ("class", "at"), ("class", "at"))
@@ -166,8 +186,10 @@ def read_observations(path: str | Path) -> list[Observation]:
     return out
 
 
-def check_inside(observations: Sequence[Observation], bounds: Sequence[float], name: str) -> None:
-    """Refuse a pose or a detection outside the map's bounds, at its position in the file."""
+def check_inside(observations: Sequence[Observation], bounds: Sequence[float], name: str,
+                 is_occupied: Callable[[list[tuple[float, float]]], Any] | None = None) -> None:
+    """Refuse a pose or a detection outside the map's bounds, and (given the map's ``is_occupied``)
+    a pose inside a wall, at its position in the file."""
     xmin, ymin, xmax, ymax = bounds
 
     def inside(x: float, y: float) -> bool:
@@ -181,3 +203,9 @@ def check_inside(observations: Sequence[Observation], bounds: Sequence[float], n
             if not inside(x, y):
                 raise SealError(f"a detection of {cls} at [{x:g}, {y:g}] is outside map {name}'s bounds "
                                 f"[{xmin:g}, {ymin:g}, {xmax:g}, {ymax:g}]", obs.where)
+    if is_occupied is not None and observations:
+        walled = is_occupied([obs.pose[:2] for obs in observations])
+        for obs, wall in zip(observations, walled, strict=True):
+            if wall:
+                raise SealError(f"pose [{obs.pose[0]:g}, {obs.pose[1]:g}] is inside a wall or an obstacle of map "
+                                f"{name}: the robot cannot stand there", obs.where)

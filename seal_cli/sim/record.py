@@ -18,65 +18,100 @@ from seal_cli.sim.agent import Agent
 __all__ = ["write_png", "write_rrd"]
 
 
-def _weights_colours(W: np.ndarray) -> np.ndarray:
-    """RGBA per particle: light for small weights, deep red for the heaviest."""
-    w = W / W.max() if len(W) and W.max() > 0 else np.zeros(len(W))
-    colours = np.zeros((len(W), 4), dtype=np.uint8)
-    colours[:, 0] = 200
-    colours[:, 1] = (200 * (1 - w)).astype(np.uint8)
-    colours[:, 2] = (60 * (1 - w)).astype(np.uint8)
-    colours[:, 3] = 255
-    return colours
+ROBOT = (31, 119, 180)
+SEEN = (44, 160, 44)
 
 
 def write_rrd(path: str | Path, agent: Agent) -> None:
-    """A Rerun recording over the timeline ``step``: the map, the robot's pose and path, what it saw,
-    and the particle clouds of the frame at hand and of every object (when the policy kept them)."""
+    """A Rerun recording over the timeline ``step``, laid out as ``seal localize``'s
+    (:mod:`seal_cli.sefm.observers.rerun_scene`): the map image, rooms and places; the robot's pose,
+    path and narration (``robot/log``); what it saw; the path length (``metrics/path_m``); and — when
+    the policy kept them — the particle clouds of the frame at hand and of every object (class ids,
+    radius by weight, logged when the belief changed), the frame's room masses (``metrics/rooms/<frame>``)
+    and the objects' effective sample sizes (``metrics/ess``)."""
     import rerun as rr
 
-    scene = agent.scene
-    m = scene.map
-    stream = rr.RecordingStream("seal_run")
+    from seal_cli.sefm.modes import room_masses
+    from seal_cli.sefm.observers.rerun import CHANGE, cell_masses, radii, total_variation
+    from seal_cli.sefm.observers.rerun_scene import DRAW, Classes, batching, blueprint, log_map
+    from seal_cli.sefm.resampling import ess
+
+    m = agent.scene.map
+    clouds: list[dict[str, Any]] = agent.policy.clouds
+    frames = list(dict.fromkeys(c["frame"] for c in clouds if c["frame_particles"] is not None and c["frame"]))
+    objects = list(dict.fromkeys(cls for c in clouds for cls in c["objects"]))
+    classes = Classes(objects, frames)
+    panels = [("series", "path (m)", "/metrics/path_m"), ("log", "what the robot did", "/robot/log")]
+    if frames:
+        panels.insert(1, ("series", "room mass of the frame at hand", "/metrics/rooms"))
+    if objects:
+        panels.insert(2, ("series", "effective sample size", "/metrics/ess"))
+    stream = rr.RecordingStream("seal_run", recording_id=f"{m.name}-seal-run",
+                                batcher_config=batching(), send_properties=False)
     with atomic_output(path) as tmp:
         stream.save(str(tmp))
+        stream.set_log_time_enabled(False)
+        stream.set_log_tick_enabled(False)
+        stream.send_blueprint(blueprint(m, frames, panels))
+        classes.log(stream)
+        log_map(stream, m, [(i.id, i.at) for i in agent.world.items.values() if not i.movable])
         stream.set_time("step", sequence=0)
-        free = scene.grid.free_points
-        stream.log("map/occupancy", rr.Points2D(free, radii=scene.grid.resolution / 2, colors=[230, 230, 230]),
-                   static=True)
-        if m.rooms:
-            stream.log("map/rooms", rr.LineStrips2D([list(r.polygon) + [r.polygon[0]] for r in m.rooms],
-                                                    labels=[r.name for r in m.rooms]), static=True)
-        places = [i for i in agent.world.items.values() if not i.movable]
-        if places:
-            stream.log("map/places", rr.Points2D([p.at for p in places], labels=[p.id for p in places],
-                                                 radii=0.08, colors=[90, 90, 90]), static=True)
         trail: list[tuple[float, float]] = []
         for record in agent.records:
             stream.set_time("step", sequence=record.step)
-            trail.append((record.pose[0], record.pose[1]))
-            stream.log("robot/pose", rr.Points2D([record.pose[:2]], radii=0.12, colors=[31, 119, 180]))
-            if len(trail) > 1:
-                stream.log("robot/path", rr.LineStrips2D([trail], colors=[31, 119, 180]))
+            x, y, yaw = record.pose
+            if not trail or trail[-1] != (x, y):
+                trail.append((x, y))
+                stream.log("robot/pose", rr.Points2D([[x, y]], radii=0.12, colors=[ROBOT], draw_order=DRAW["robot"]),
+                           rr.Arrows2D(origins=[[x, y]], vectors=[[0.5 * np.cos(yaw), 0.5 * np.sin(yaw)]],
+                                       colors=[ROBOT], draw_order=DRAW["robot"]))
+                if len(trail) > 1:
+                    stream.log("robot/path", rr.LineStrips2D([trail], colors=[ROBOT], draw_order=DRAW["robot"]))
             stream.log("robot/log", rr.TextLog(f"{record.kind}: {record.text}"))
             stream.log("metrics/path_m", rr.Scalars(record.path_m))
             for item in record.data.get("seen", []):
-                at = agent.world.items[item].at
-                stream.log(f"observations/{agent.world.items[item].key}", rr.Points2D([at], radii=0.1,
-                                                                                   colors=[44, 160, 44]))
-        for cloud in agent.policy.clouds:
+                thing = agent.world.items[item]
+                stream.log(f"observations/{thing.key}", rr.Points2D([thing.at], radii=0.1, colors=[SEEN],
+                                                                   draw_order=DRAW["observations"]))
+        shown: dict[str, dict[int, float]] = {}  # what each cloud's masses were when it was last logged
+
+        def changed(key: str, X: np.ndarray, W: np.ndarray, last: bool) -> bool:
+            masses = cell_masses(X, W, m.bounds)
+            if last or key not in shown or total_variation(masses, shown[key]) > CHANGE:
+                shown[key] = masses
+                return True
+            return False
+
+        named: set[str] = set()  # the metrics whose series names went with their first values
+        for k, cloud in enumerate(clouds):
             stream.set_time("step", sequence=cloud["step"])
-            if cloud["frame_particles"] is not None:
+            last = k == len(clouds) - 1
+            if cloud["frame_particles"] is not None and cloud["frame"]:
                 X, W = cloud["frame_particles"]
-                stream.log(f"frames/{cloud['frame']}/particles", rr.Points2D(X, radii=0.03,
-                                                                             colors=_weights_colours(W)))
+                fid = cloud["frame"]
+                lines = [] if fid in named else [rr.SeriesLines(names=[*m.room_names, "_outside"])]
+                named.add(fid)
+                stream.log(f"metrics/rooms/{fid}", rr.Scalars(list(room_masses(m, X, W).values())), *lines)
+                if changed(f"frames/{fid}", X, W, last):
+                    stream.log(f"frames/{fid}/particles", rr.Points2D(X, radii=radii(W), class_ids=[classes.ids[fid]],
+                                                                     draw_order=DRAW["frames"]))
+            if cloud["objects"]:
+                lines = [] if "ess" in named else [rr.SeriesLines(names=objects)]
+                named.add("ess")
+                stream.log("metrics/ess", rr.Scalars([float(ess(cloud["objects"][c][1])) if c in cloud["objects"]
+                                                      else 0.0 for c in objects]), *lines)
             if cloud.get("commanded_particles") is not None:
                 X, W = cloud["commanded_particles"]
-                stream.log(f"commanded/{cloud['commanded']}/particles",
-                           rr.Points2D(X, radii=0.03, colors=_weights_colours(W)))
+                key = f"commanded/{cloud['commanded']}"
+                if changed(key, X, W, last):
+                    stream.log(f"{key}/particles", rr.Points2D(X, radii=radii(W), draw_order=DRAW["frames"]))
             for cls, (X, W) in cloud["objects"].items():
-                stream.log(f"objects/{cls}/particles", rr.Points2D(X, radii=0.03, colors=_weights_colours(W)))
+                if changed(f"objects/{cls}", X, W, last):
+                    stream.log(f"objects/{cls}/particles", rr.Points2D(X, radii=radii(W),
+                                                                      class_ids=[classes.ids[cls]],
+                                                                      draw_order=DRAW["objects"]))
         stream.flush()
-        del stream
+        stream.disconnect()
 
 
 def write_png(path: str | Path, agent: Agent, title: str = "") -> None:

@@ -202,7 +202,7 @@ def test_the_apartment_validates_clean() -> None:
     assert check_map_file(APARTMENT) == []
     result = CliRunner().invoke(app, ["validate", str(APARTMENT)])
     assert result.exit_code == 0, result.output
-    assert "1 maps" in result.output
+    assert "1 map in 1 file" in result.output
 
 
 def test_walls_doors_and_rooms_of_the_apartment(apartment: Map) -> None:

@@ -484,7 +484,7 @@ def test_cli_robot_state_options() -> None:
     (["put it in the fridge"], "cannot tell what 'it' refers to"),
     (["--max-nodes", "1", "slice the apple and put it in the fridge"], "search nodes"),
     (["--map", "no_such_map.yaml", "stir the cup"], "no_such_map"),
-    (["--pddl", "no/such/folder", "stir the cup"], "cannot write PDDL"),
+    (["--pddl", "no/such/folder", "stir the cup"], "cannot write into --pddl"),
 ])
 def test_cli_refusals_exit_1_without_a_traceback(args: list[str], message: str) -> None:
     result = runner.invoke(app, ["plan", *args])

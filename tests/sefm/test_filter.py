@@ -384,6 +384,50 @@ def test_weights_are_always_finite_and_normalised(library: Library, scenario: tu
         assert all(np.isfinite(summary.best))
 
 
+@st.composite
+def bad_updates(draw: st.DrawFn) -> tuple[tuple[float, ...], list[tuple[str, tuple[float, float]]], str]:
+    """A pose and detections of which exactly one thing is wrong, and what: NaN or infinity, off
+    the map (the scenario maps lie in [0, 12] × [0, 8]), or a class nobody knows."""
+    wrong = draw(st.sampled_from(["nan pose", "off-map pose", "nan detection", "off-map detection", "class"]))
+    bad_number = draw(st.sampled_from([float("nan"), float("inf"), -float("inf")]))
+    off = draw(st.one_of(st.floats(-1e12, -0.01), st.floats(12.01, 1e12)))
+    pose: tuple[float, ...] = (1.0, 1.0, 0.0)
+    seen = [("cup", (1.0, 1.0))]
+    if wrong == "nan pose":
+        pose = (bad_number, 1.0, 0.0) if draw(st.booleans()) else (1.0, 1.0, bad_number)
+    elif wrong == "off-map pose":
+        pose = (off, 1.0) if draw(st.booleans()) else (1.0, off)
+    elif wrong == "nan detection":
+        seen.append(("spoon", (bad_number, 1.0)))
+    elif wrong == "off-map detection":
+        seen.append(("cup", (1.0, off)))
+    else:
+        seen.append((draw(st.sampled_from(["zebra", "", "cupp"])), (1.0, 1.0)))
+    return pose, seen, wrong
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow,
+                                                                 HealthCheck.function_scoped_fixture])
+@given(scenario=scenarios(), bad=bad_updates(), seed=st.integers(0, 2 ** 16))
+def test_nan_off_map_and_unknown_class_are_refused_and_change_nothing(library: Library, scenario: tuple,
+                                                                       bad: tuple, seed: int) -> None:
+    from seal_cli.errors import SealError
+
+    m, steps = scenario
+    frames = [library.frame("Pick").bind({"theme": "spoon"}), library.frame("Stir").bind({"theme": "cup"})]
+    state = State.of(robot_facts(None), library.taxonomy)
+    sefm = SeFM(m, frames, state, np.random.default_rng(seed), SeFMConfig(particles=7))
+    pose, seen, wrong = bad
+    before = (sefm.objects.X.copy(), sefm.frames.W.copy(), sefm.step)
+    with pytest.raises(SealError):
+        sefm.update(pose, seen, state)
+    np.testing.assert_array_equal(sefm.objects.X, before[0])
+    np.testing.assert_array_equal(sefm.frames.W, before[1])
+    assert sefm.step == before[2]
+    sefm.update(steps[0][0], steps[0][1], state)  # and it goes on as if the bad update never came
+    assert np.all(np.isfinite(sefm.frames.W)) and np.all(np.isfinite(sefm.objects.X))
+
+
 def test_public_queries_agree_with_the_summaries() -> None:
     """What a searcher asks SeFM: particles, densities at points, closed places."""
     from seal_cli.frames.reading import load_library

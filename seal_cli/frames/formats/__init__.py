@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 from typing import Protocol
 
 from seal_cli.errors import SealError
-from seal_cli.frames.model import Frame
+from seal_cli.frames.model import Frame, LexicalUnit
 from seal_cli.frames.taxonomy import Taxonomy
 
 __all__ = ["Contents", "Reader"]
@@ -25,9 +25,12 @@ class Contents:
     frames: list[Frame] = field(default_factory=list)
     taxonomy: Taxonomy = field(default_factory=Taxonomy)
     problems: list[SealError] = field(default_factory=list)
+    units: list[tuple[str, LexicalUnit]] = field(default_factory=list)
+    """Lexical units a file adds to a frame defined elsewhere (frame name, unit)."""
 
     def add(self, other: Contents) -> None:
         self.frames.extend(other.frames)
+        self.units.extend(other.units)
         self.taxonomy = self.taxonomy.merged(other.taxonomy)
         self.problems.extend(other.problems)
 

@@ -7,6 +7,8 @@ load to equal frames. Reading never raises: problems are collected with their po
 from __future__ import annotations
 
 import json
+import re
+from collections.abc import Iterator
 from functools import cache
 from typing import Any
 
@@ -21,7 +23,8 @@ from seal_cli.resources import grammar_path
 __all__ = ["dump", "parser", "read"]
 
 # What a person calls the grammar's terminals in a message.
-_TERMINALS = {"NAME": "a name", "STRING": 'a "quoted" lexical unit', "LBRACE": "'{'", "RBRACE": "'}'",
+_TERMINALS = {"NAME": "a name (letters, digits and '_', not starting with a digit)",
+              "STRING": 'a "quoted" lexical unit', "LBRACE": "'{'", "RBRACE": "'}'",
               "LPAR": "'('", "RPAR": "')'", "COMMA": "','", "COLON": "':'", "EQUAL": "'='", "NOT": "'not'",
               "OPEN": "'*'", "$END": "the end of the file"}
 
@@ -37,6 +40,31 @@ def parser(strict: bool = False) -> Lark:
 def _describe(names: set[str] | frozenset[str]) -> str:
     words = sorted({_TERMINALS.get(n, repr(n.lower())) for n in names})
     return ", ".join(words[:-1]) + (" or " if len(words) > 1 else "") + words[-1] if words else "nothing"
+
+
+# Worked examples of each mistake, for lark's ``match_examples``: the error's parser state is
+# compared with theirs, and the label of the matching one says in words what to write.
+MISTAKES: dict[str, list[str]] = {
+    "an action cannot be negated: only facts take 'not' (write the undoing in 'ensures not ...')": [
+        'frame A { x: t\n do not a(x) }', 'frame A { x: t\n do a(x), not b(x) }'],
+    "a comma is missing between two facts or actions (write 'requires a(x), b(x)')": [
+        'frame A { x: t\n requires a(x) b(x) }', 'frame A { x: t\n ensures a(x) b(x) }',
+        'frame A { x: t\n do a(x) b(x) }', 'frame A { x: t\n requires a b(x) }'],
+    "an element is written 'role: category' (a colon between them)": [
+        'frame A { x t }', 'frame A { x: t\n y t }'],
+    "after '=' comes the default, a class name ('instrument: utensil = spoon')": [
+        'frame A { x: t = }', 'frame A { x: t = "s" }'],
+    "after ',' in an argument list comes another name ('stir(instrument, theme)')": [
+        'frame A { x: t\n requires a(x,) }', 'frame A { x: t\n do a(x,) }'],
+    "an action takes its arguments in parentheses ('navigate(theme)')": [
+        'frame A { x: t\n do a }', 'frame A { x: t\n do a, b(x) }'],
+    "the frame is not closed: add '}' after its last member": [
+        'frame A { x: t', 'frame A { x: t\n requires a(x)', 'frame A {'],
+    "a frame is 'frame Name \"unit\" ... {': a name, then quoted lexical units, then '{'": [
+        'frame "stir" { }', 'frame A stir { }', 'frame A "a" }', 'frame { }'],
+    "a lexical unit is written in double quotes ('\"pick up\"')": [
+        "frame A 'stir' { }"],
+}
 
 
 def _syntax_problem(exc: UnexpectedInput, text: str, file: str) -> SealError:
@@ -58,7 +86,46 @@ def _syntax_problem(exc: UnexpectedInput, text: str, file: str) -> SealError:
     expected = getattr(exc, "expected", None) or getattr(exc, "allowed", None)
     if expected:
         message += f"; expected {_describe(set(expected))}"
+    label = _mistake(exc)
+    if label:
+        message = f"{label} (found {found if isinstance(exc, UnexpectedCharacters | UnexpectedToken) else 'the end'})"
     return SealError(f"syntax error: {message}", Where(file, line, column), source_line=source)
+
+
+def _mistake(exc: UnexpectedInput) -> str | None:
+    """The mistake whose worked examples fail in the parser state where ``exc`` failed (and on the
+    same kind of token, when one does), if any. Lark's own ``match_examples`` compares whole
+    parser stacks, which differ with every statement before the mistake; the state on top is
+    what says where in a frame the parse stopped."""
+    key = _failure(exc)
+    if key is None:
+        return None
+    table = _mistake_table()
+    return table.get(key) or table.get((key[0], None))
+
+
+def _failure(exc: UnexpectedInput) -> tuple[int, str | None] | None:
+    state = getattr(exc, "state", None)
+    position = getattr(state, "position", None)
+    if not isinstance(position, int):
+        return None
+    token = getattr(exc, "token", None)
+    return (position, getattr(token, "type", None))
+
+
+@cache
+def _mistake_table() -> dict[tuple[int, str | None], str]:
+    table: dict[tuple[int, str | None], str] = {}
+    for label, examples in MISTAKES.items():
+        for example in examples:
+            try:
+                parser().parse(example)
+            except UnexpectedInput as exc:
+                key = _failure(exc)
+                if key is not None:
+                    table.setdefault(key, label)
+                    table.setdefault((key[0], None), label)
+    return table
 
 
 class _Builder:
@@ -77,6 +144,8 @@ class _Builder:
     def problem(self, exc: SealError, at: Tree | Token) -> None:
         for problem in getattr(exc, "problems", None) or [exc]:
             where = problem.where if problem.where.line else self.where(at)
+            if where.file is None:
+                where = Where(self.file, where.line, where.column)
             line = self.lines[where.line - 1] if where.line and where.line <= len(self.lines) else None
             self.contents.problems.append(SealError(problem.message, where, source_line=line))
 
@@ -114,7 +183,14 @@ class _Builder:
             except SealError as exc:
                 self.problem(exc, child)
         frozen: dict[str, Any] = {k: tuple(v) if isinstance(v, list) else v for k, v in fields.items()}
-        frame = Frame(str(name), where=self.where(name), **frozen)
+        try:
+            frame = Frame(str(name), where=self.where(name), **frozen)
+        except SealError as exc:  # still checked with the others, without the parts refused
+            self.problem(exc, tree)
+            salvaged = Frame.salvage(str(name), where=self.where(name), **frozen)
+            if salvaged is not None:
+                self.contents.frames.append(salvaged)
+            return
         self.contents.frames.append(frame)
 
     def fact(self, tree: Tree) -> Fact:
@@ -145,19 +221,73 @@ class _Builder:
 
 
 def _string(token: Any) -> str:
-    return str(json.loads(str(token)))
+    """A quoted string's text, with JSON's escapes (``\\"``, ``\\\\``, ``\\n``, ``\\u00e9``)."""
+    try:
+        return str(json.loads(str(token)))
+    except json.JSONDecodeError as exc:
+        bad = str(token)[exc.pos:exc.pos + 2] if exc.msg.startswith("Invalid \\escape") else str(token)[exc.pos]
+        line, column = getattr(token, "line", None), getattr(token, "column", None)
+        where = Where(None, line, column + exc.pos) if line is not None and column is not None else None
+        raise SealError(f"a quoted string may not hold {bad!r}: write a tab or a newline as \\t or \\n, a "
+                        "quote as \\\", a backslash as \\\\, any other character as itself or \\uXXXX",
+                        where) from None
 
 
 def read(text: str, file: str = "<frame>") -> Contents:
-    """The frames, categories and problems in a ``.frame`` file's text."""
+    """The frames, categories and problems in a ``.frame`` file's text. After a syntax error each
+    statement is parsed on its own, so that one mistake hides none of the file's other problems."""
     builder = _Builder(text, file)
     try:
         tree = parser().parse(text)
-    except UnexpectedInput as exc:
-        builder.contents.problems.append(_syntax_problem(exc, text, file))
+    except UnexpectedInput:
+        for offset, chunk in _statements(text):
+            try:
+                tree = parser().parse(chunk)
+            except UnexpectedInput as exc:
+                builder.contents.problems.append(_shifted(_syntax_problem(exc, chunk, file), offset, builder.lines))
+                continue
+            _shift(tree, offset)
+            builder.build(tree)
         return builder.contents
     builder.build(tree)
     return builder.contents
+
+
+_STATEMENT = re.compile(r"[ \t]*(frame|category|world|synonyms)[ \t]+[^:=\s]")
+
+
+def _statements(text: str) -> Iterator[tuple[int, str]]:
+    """(lines before it, text) of each top-level statement: a chunk starts at a line that opens
+    with a statement's keyword."""
+    lines = text.split("\n")
+    starts = [i for i, line in enumerate(lines) if _STATEMENT.match(line)]
+    if not starts or starts[0] != 0:
+        starts.insert(0, 0)
+    for start, end in zip(starts, [*starts[1:], len(lines)], strict=True):
+        chunk = "\n".join(lines[start:end])
+        if chunk.strip():
+            yield start, chunk
+
+
+def _shift(tree: Tree, lines: int) -> None:
+    """Move a chunk's positions down by the lines before it."""
+    for node in tree.iter_subtrees():
+        meta = node.meta
+        if not meta.empty:
+            meta.line += lines
+            meta.end_line += lines
+        for child in node.children:
+            if isinstance(child, Token) and child.line is not None:
+                child.line += lines
+                if child.end_line is not None:
+                    child.end_line += lines
+
+
+def _shifted(problem: SealError, lines: int, source: list[str]) -> SealError:
+    where = problem.where
+    line = (where.line or 1) + lines
+    return SealError(problem.message, Where(where.file, line, where.column),
+                     source_line=source[line - 1] if line <= len(source) else None)
 
 
 # -- writing --------------------------------------------------------------------------------

@@ -38,7 +38,8 @@ __all__ = ["FRAME_KEYS", "dump", "read"]
 FRAME_KEYS = ("frame", "description", "framenet", "lexical_units", "elements", "preconditions", "actions",
               "postconditions")
 ELEMENT_KEYS = ("type", "default")
-TOP_KEYS = ("frames", "categories", "world", "synonyms")
+TOP_KEYS = ("frames", "categories", "world", "synonyms", "lexical_units")
+UNIT_KEYS = ("frame", "unit", "source")
 
 T = TypeVar("T")
 
@@ -73,6 +74,8 @@ class _Reader(NodeReader):
                 self.categories(value)
             elif key == "synonyms":
                 self.synonyms(value)
+            elif key == "lexical_units":
+                self.units(value)
             elif key == "world":
                 world = tuple(w for w in (self.string(n, "a world predicate") for n in self.items(value, "world"))
                               if w)
@@ -100,6 +103,22 @@ class _Reader(NodeReader):
             if entry:
                 found.append(entry)
         self.contents.taxonomy = self.contents.taxonomy.merged(Taxonomy(synonyms=tuple(found)))
+
+    def units(self, node: yaml.Node) -> None:
+        """Lexical units added to frames defined elsewhere, each with where it comes from
+        (``framelib/derived_units.yaml``: ``{frame: Place, unit: relocate, source: ...}``)."""
+        for item in self.items(node, "lexical_units"):
+            found = {key: self.string(value, key) for key, _, value in self.pairs(item, "a lexical unit", UNIT_KEYS)}
+            if not isinstance(item, yaml.MappingNode):
+                continue
+            missing = [key for key in UNIT_KEYS if not found.get(key)]
+            if missing:
+                self.problem(f"a lexical unit needs {', '.join(repr(k) for k in missing)}: "
+                             "{frame: Name, unit: words, source: where it comes from}", item)
+                continue
+            unit = self.build(functools.partial(LexicalUnit, str(found["unit"]), self.where(item)), item)
+            if unit is not None:
+                self.contents.units.append((str(found["frame"]), unit))
 
     def frame(self, node: yaml.Node) -> None:
         fields: dict[str, object] = {}
@@ -129,6 +148,9 @@ class _Reader(NodeReader):
         built = self.build(lambda: Frame(str(name), description=str(description), where=self.where(name_node),
                                          **args),  # type: ignore[arg-type]
                            name_node)
+        if built is None:  # still checked with the others, without the parts refused above
+            built = Frame.salvage(str(name), description=str(description), where=self.where(name_node),
+                                  **args)
         if built:
             self.contents.frames.append(built)
 

@@ -45,7 +45,7 @@ import yaml
 from numpy.typing import NDArray
 
 from seal_cli.errors import SealError, SealErrors, Where
-from seal_cli.fileio import LOADER, read_text
+from seal_cli.fileio import LOADER, MAX_IMAGE_BYTES, read_bytes, read_text
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.geometry import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 from seal_cli.maps.model import Map, MapWarning, ObjectTruth, Place, Robot, Room, Sensor
@@ -58,7 +58,7 @@ __all__ = ["KEYS", "check_map_file", "load_map", "read_image", "read_map", "read
 
 MAP_SERVER_KEYS = ("image", "resolution", "origin", "negate", "occupied_thresh", "free_thresh", "mode")
 SEMANTIC_KEYS = ("name", "bounds", "rooms", "places", "priors", "objects", "robot", "sensor")
-KEYS = MAP_SERVER_KEYS + SEMANTIC_KEYS
+KEYS = MAP_SERVER_KEYS + ("occupancy",) + SEMANTIC_KEYS  # occupancy: a grid from a bag (formats/occupancy_bag)
 ROOM_KEYS = ("name", "polygon", "box")
 PLACE_KEYS = ("name", "class", "at", "openable", "open", "reach")
 OBJECT_KEYS = ("class", "at", "in")
@@ -140,12 +140,9 @@ def _read_png(path: Path) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
 def read_image(path: Path, negate: bool = False, occupied_thresh: float = 0.65, free_thresh: float = 0.196,
                mode: str = "trinary") -> NDArray[np.int8]:
     """Cells (FREE / OCCUPIED / UNKNOWN) of a map_server image, row 0 at the lowest y (flipped)."""
-    try:
-        data = path.read_bytes()
-    except FileNotFoundError:
-        raise SealError(f"image {path.name} does not exist (looked for {path})") from None
-    except OSError as exc:
-        raise SealError(f"cannot read image {path}: {exc.strerror}") from None
+    if not path.exists():
+        raise SealError(f"image {path.name} does not exist (looked for {path})")
+    data = read_bytes(path, MAX_IMAGE_BYTES, "map image")
     if data[:2] in (b"P5", b"P2"):
         grey, alpha = read_pgm(data), None
     elif data[:8] == b"\x89PNG\r\n\x1a\n":
@@ -261,10 +258,10 @@ class _Reader(NodeReader):
             fields["sensor"] = self.sensor(nodes["sensor"])
         if server is not None:
             fields["grid"] = server
-        elif "bounds" not in nodes and "image" not in nodes:
+        elif "bounds" not in nodes and "image" not in nodes and "occupancy" not in nodes:
             self.problem("a map needs bounds: [xmin, ymin, xmax, ymax] or an occupancy image", root)
             return None
-        if fields.get("bounds", "") is None or ("image" in nodes and server is None):
+        if fields.get("bounds", "") is None or (("image" in nodes or "occupancy" in nodes) and server is None):
             return None  # the bounds or the image are broken, already reported: nothing to check against
         try:
             built = Map(file=self.file, positions=self.positions, check=False,
@@ -278,6 +275,10 @@ class _Reader(NodeReader):
         return built.noting(p for p in found if isinstance(p, MapWarning))
 
     def map_server(self, nodes: dict[str, yaml.Node], root: yaml.Node) -> OccupancyGrid | None:
+        if "occupancy" in nodes:
+            from seal_cli.maps.formats.occupancy_bag import grid_from_bag
+
+            return grid_from_bag(self, nodes)
         if "image" not in nodes:
             for key in MAP_SERVER_KEYS[1:]:
                 if key in nodes and key not in ("resolution", "origin"):

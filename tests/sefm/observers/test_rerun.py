@@ -1,7 +1,9 @@
-"""The Rerun recording of a SeFM run, read back from the file."""
+"""The Rerun recording of a SeFM run, read back from the file: the map as one image, class colours, the
+default layout, beliefs logged when they change (and at the end), the metrics, and the time timeline."""
 
 from __future__ import annotations
 
+import io
 from collections import defaultdict
 from pathlib import Path
 from typing import Any
@@ -11,14 +13,20 @@ import pytest
 
 from seal_cli.frames.library import Library
 from seal_cli.maps.formats.map_server import load_map
+from seal_cli.maps.geometry import FREE, OCCUPIED
 from seal_cli.maps.model import Map
 from seal_cli.planning.state import State, robot_facts
 from seal_cli.resources import map_path
 from seal_cli.sefm.filter import SeFM, SeFMConfig
-from seal_cli.sefm.observers.metrics import Metrics, Trace, weight_colours
-from seal_cli.sefm.observers.rerun import RerunRecorder
+from seal_cli.sefm.observers.metrics import Metrics, Trace
+from seal_cli.sefm.observers.rerun import RerunRecorder, radii
 
 rr = pytest.importorskip("rerun")
+
+P = 120
+LOOKS = [((5.0, -4.5, 0.0), [("spoon", (8.3, -4.1))]), ((7.0, -3.0, 0.0), [("spoon", (8.3, -4.1))]),
+         ((0.5, 2.5, 1.5), []), ((0.5, 2.5, 1.5), []), ((0.5, 2.5, 1.5), [])]
+STAMPS = [1.7e9 + 0.5 * k for k in range(len(LOOKS))]
 
 
 @pytest.fixture(scope="module")
@@ -32,86 +40,161 @@ def recorded(tmp_path_factory: pytest.TempPathFactory, library: Library, apartme
     bindings = [library.frame("Pick").bind({"theme": "spoon"}), library.frame("Stir").bind({"theme": "cup"})]
     state = State.of(robot_facts(None), library.taxonomy)
     metrics, trace = Metrics(), Trace()
-    sefm = SeFM(apartment, bindings, state, np.random.default_rng(0), SeFMConfig(particles=120),
-                [RerunRecorder(path), metrics, trace])
-    sefm.update((5.0, -4.5, 0.0), [("spoon", (8.3, -4.1))])
-    sefm.update((7.0, -3.0, 0.0), [("spoon", (8.3, -4.1))])
-    sefm.update((0.5, 2.5, 1.5), [])
+    sefm = SeFM(apartment, bindings, state, np.random.default_rng(0), SeFMConfig(particles=P),
+                [RerunRecorder(path, stamps=STAMPS), metrics, trace])
+    for pose, seen in LOOKS:
+        sefm.update(pose, seen)
     sefm.close()
     return path, sefm, (metrics, trace)
 
 
-def rows(path: Path) -> dict[str, list[dict[str, Any]]]:
-    """Every logged row, by entity path, as plain Python values (without the log-time columns)."""
+def rows(path: Path, store: Any = None) -> dict[str, list[dict[str, Any]]]:
+    """Every logged row, by entity path, as plain Python values (without the log-time columns), in step order."""
     out: dict[str, list[dict[str, Any]]] = defaultdict(list)
-    for chunk in rr.chunk.RrdReader(str(path)).stream().to_chunks():
+    for chunk in rr.chunk.RrdReader(str(path)).stream(store=store).to_chunks():
         batch = chunk.to_record_batch()
         names = [n for n in batch.schema.names if n not in ("log_time", "log_tick")]
         table = batch.select(names).to_pydict()
         for i in range(chunk.num_rows):
             out[str(chunk.entity_path)].append({k: v[i] for k, v in table.items()})
+    for entity in out:
+        out[entity].sort(key=lambda r: r.get("step", -1))
     return out
 
 
 def test_collect_reads_the_recording_as_a_store(recorded: tuple[Path, SeFM, Any]) -> None:
     store = rr.chunk.RrdReader(str(recorded[0])).stream().collect()
-    assert "step" in str(store.schema())
+    schema = str(store.schema())
+    assert "step" in schema and "time" in schema
 
 
 def test_every_spec_entity_is_logged(recorded: tuple[Path, SeFM, Any]) -> None:
     logged = rows(recorded[0])
     for entity in ("/map/occupancy", "/map/rooms", "/map/places", "/robot/pose", "/robot/path",
                    "/objects/spoon/particles", "/objects/cup/particles", "/frames/pick_spoon/particles",
-                   "/frames/stir_cup_spoon/particles", "/frames/stir_cup_spoon/modes", "/observations/spoon",
-                   "/metrics/frames/stir_cup_spoon/ess", "/metrics/objects/spoon/ess"):
+                   "/frames/stir_cup_spoon/particles", "/frames/stir_cup_spoon/modes", "/frames/stir_cup_spoon/density",
+                   "/observations/spoon", "/metrics/rooms/stir_cup_spoon", "/metrics/ess"):
         assert entity in logged, entity
 
 
-def test_the_map_is_static_and_the_rooms_are_labelled(recorded: tuple[Path, SeFM, Any], apartment: Map) -> None:
-    logged = rows(recorded[0])
-    (rooms,) = logged["/map/rooms"]
-    assert "step" not in rooms
+def png_pixels(blob: Any) -> np.ndarray:
+    from PIL import Image
+
+    return np.asarray(Image.open(io.BytesIO(bytes(blob[0] if isinstance(blob[0], list) else blob))))
+
+
+def test_the_occupancy_is_one_image_placed_in_metres(recorded: tuple[Path, SeFM, Any], apartment: Map) -> None:
+    (occupancy,) = rows(recorded[0])["/map/occupancy"]
+    assert "step" not in occupancy  # static
+    assert occupancy["EncodedImage:media_type"] == ["image/png"]
+    pixels = png_pixels(occupancy["EncodedImage:blob"])
+    grid = apartment.grid
+    assert pixels.shape == grid.cells.shape  # one pixel per cell, row 0 the lowest y
+    assert (pixels[grid.cells == FREE] == 254).all() and (pixels[grid.cells == OCCUPIED] == 0).all()
+    assert occupancy["Transform3D:translation"] == [pytest.approx([grid.origin[0], grid.origin[1], 0.0])]
+    assert occupancy["Transform3D:scale"] == [pytest.approx([grid.resolution] * 3)]
+    assert occupancy["EncodedImage:draw_order"] == [-10.0]
+
+
+def test_rooms_are_labelled_closed_strips(recorded: tuple[Path, SeFM, Any], apartment: Map) -> None:
+    (rooms,) = rows(recorded[0])["/map/rooms"]
     assert rooms["LineStrips2D:labels"] == list(apartment.room_names)
-    assert len(rooms["LineStrips2D:strips"]) == len(apartment.rooms)
-    (occupancy,) = logged["/map/occupancy"]
-    assert len(occupancy["Points2D:positions"]) == len(apartment.free_centres) + int(apartment.grid.occupied_mask.sum())
+    strips = rooms["LineStrips2D:strips"]
+    assert len(strips) == len(apartment.rooms) and all(s[0] == s[-1] for s in strips)
 
 
-def test_particles_are_logged_at_every_step_with_weight_colours(recorded: tuple[Path, SeFM, Any]) -> None:
+def test_one_colour_per_class_and_particles_carry_class_ids(recorded: tuple[Path, SeFM, Any]) -> None:
     path, sefm, _ = recorded
     logged = rows(path)
-    frames = logged["/frames/stir_cup_spoon/particles"]
-    assert [r["step"] for r in frames] == [0, 1, 2, 3]
+    (context,) = logged["/"]
+    (described,) = context["AnnotationContext:context"]
+    classes = {c["class_description"]["info"]["label"]: c["class_description"]["info"] for c in described}
+    assert list(classes) == [*sefm.object_classes, *sefm.frame_ids]
+    assert len({c["color"] for c in classes.values()}) == len(classes)  # distinct colours: a legend
+    for name, entity in [("cup", "/objects/cup/particles"), ("stir_cup_spoon", "/frames/stir_cup_spoon/particles")]:
+        for row in logged[entity]:
+            assert row["Points2D:class_ids"] == [classes[name]["id"]]
+            assert row.get("Points2D:colors") is None  # the colour comes from the class
+
+
+def test_beliefs_are_logged_at_the_prior_when_they_change_and_at_the_end(recorded: tuple[Path, SeFM, Any]) -> None:
+    path, sefm, _ = recorded
+    frames = rows(path)["/frames/stir_cup_spoon/particles"]
+    steps = [r["step"] for r in frames]
+    assert steps[0] == 0 and steps[-1] == len(LOOKS) and 1 in steps  # the spoon seen at step 1 changes the frame
     last = frames[-1]
     np.testing.assert_allclose(np.array(last["Points2D:positions"]), sefm.frames.X[1], atol=1e-5)
-    colours = np.array(last["Points2D:colors"], dtype=np.uint32)
-    expected = weight_colours(sefm.frames.shown_weights(1)).astype(np.uint32)
-    packed = (expected[:, 0] << 24) | (expected[:, 1] << 16) | (expected[:, 2] << 8) | 255
-    np.testing.assert_array_equal(colours, packed)
-    assert len(logged["/objects/cup/particles"][0]["Points2D:positions"]) == 120
+    np.testing.assert_allclose(last["Points2D:radii"], radii(sefm.frames.shown_weights(1)), atol=1e-6)
+    spoon = rows(path)["/objects/spoon/particles"]
+    np.testing.assert_allclose(np.array(spoon[-1]["Points2D:positions"]), sefm.objects.X[sefm.objects.row("spoon")],
+                               atol=1e-5)
+    assert len(spoon[0]["Points2D:positions"]) == P
+
+
+def test_radii_grow_with_weight() -> None:
+    sizes = radii(np.array([0.0, 0.25, 1.0]))
+    assert sizes[0] == pytest.approx(0.03) and sizes[-1] == pytest.approx(0.12) and sizes[0] < sizes[1] < sizes[2]
+    even = radii(np.full(4, 0.25))
+    assert len(set(even.tolist())) == 1 and 0.05 < even[0] < 0.1  # even weights: one middle size
+
+
+def test_densities_are_images_in_the_frames_colour(recorded: tuple[Path, SeFM, Any], apartment: Map) -> None:
+    path, sefm, _ = recorded
+    density = rows(path)["/frames/pick_spoon/density"][-1]
+    pixels = png_pixels(density["EncodedImage:blob"])
+    xmin, ymin, xmax, ymax = apartment.bounds
+    assert pixels.shape == (round((ymax - ymin) / 0.2), round((xmax - xmin) / 0.2))
+    assert density["Transform3D:translation"] == [pytest.approx([xmin, ymin, 0.0])]
+    # the spoon was seen on the counter: Pick's density is highest around it
+    row, col = np.unravel_index(np.argmax(pixels), pixels.shape)
+    assert abs(xmin + (col + 0.5) * 0.2 - 8.3) < 1.0 and abs(ymin + (row + 0.5) * 0.2 + 4.1) < 1.0
 
 
 def test_robot_path_and_observations(recorded: tuple[Path, SeFM, Any]) -> None:
     logged = rows(recorded[0])
-    assert [r["step"] for r in logged["/robot/pose"]] == [1, 2, 3]
+    assert [r["step"] for r in logged["/robot/pose"]] == [1, 2, 3]  # logged when it moved
     np.testing.assert_allclose(logged["/robot/pose"][-1]["Points2D:positions"], [[0.5, 2.5]])
     np.testing.assert_allclose(logged["/robot/path"][-1]["LineStrips2D:strips"][0], [[5, -4.5], [7, -3], [0.5, 2.5]])
     spoon = logged["/observations/spoon"]
-    assert [len(r["Points2D:positions"] or []) for r in spoon] == [1, 1, 0]
+    assert [(r["step"], len(r["Points2D:positions"] or [])) for r in spoon] == [(1, 1), (2, 1), (3, 0)]
 
 
-def test_metrics_are_scalars_per_step(recorded: tuple[Path, SeFM, Any]) -> None:
+def test_metrics_are_series_per_step(recorded: tuple[Path, SeFM, Any]) -> None:
     path, sefm, (metrics, trace) = recorded
-    ess = rows(path)["/metrics/frames/stir_cup_spoon/ess"]
-    assert [r["step"] for r in ess] == [0, 1, 2, 3]
-    assert ess[-1]["Scalars:scalars"] == pytest.approx([sefm.frames.ess()[1]])
-    assert [row["step"] for row in metrics.rows] == [0, 1, 2, 3]
+    logged = rows(path)
+    ess = logged["/metrics/ess"]
+    assert [r["step"] for r in ess] == list(range(len(LOOKS) + 1))
+    assert ess[0]["SeriesLines:names"] == [*sefm.frame_ids, *sefm.object_classes]
+    assert ess[-1]["Scalars:scalars"][:2] == pytest.approx(list(sefm.frames.ess()))
+    rooms = logged["/metrics/rooms/stir_cup_spoon"]
+    assert rooms[0]["SeriesLines:names"] == [*sefm.map.room_names, "_outside"]
+    assert all(sum(r["Scalars:scalars"]) == pytest.approx(1.0, abs=1e-6) for r in rooms)
+    assert rooms[-1]["Scalars:scalars"] == pytest.approx(list(sefm.frame_summary(1).rooms.values()))
     assert metrics.rows[-1]["frames"]["stir_cup_spoon"]["ess"] == pytest.approx(sefm.frames.ess()[1])
-    assert trace.poses == [(5.0, -4.5, 0.0), (7.0, -3.0, 0.0), (0.5, 2.5, 1.5)]
+    assert trace.poses == [pose for pose, _ in LOOKS]
 
 
-def test_modes_carry_room_and_weight_labels(recorded: tuple[Path, SeFM, Any]) -> None:
-    path, sefm, _ = recorded
-    last = rows(path)["/frames/pick_spoon/modes"][-1]
-    summary = sefm.frame_summary(0)
-    assert last["Points2D:labels"] == [f"{m.room} {m.weight:.2f}" for m in summary.modes]
+def test_the_frame_ess_never_exceeds_the_particles(recorded: tuple[Path, SeFM, Any]) -> None:
+    """It is the reweighting's (carried and fresh particles together), in particles kept; the JSON reports it."""
+    path, sefm, (metrics, _) = recorded
+    assert [sefm.frame_json(i)["ess"] for i in range(2)] == [round(float(v), 1) for v in sefm.frames.ess()]
+    for row in rows(path)["/metrics/ess"]:
+        assert all(0 < v <= P + 1e-9 for v in row["Scalars:scalars"])
+    assert all(f["ess"] <= P + 1e-9 for row in metrics.rows for f in row["frames"].values())
+
+
+def test_the_time_timeline_follows_the_stamps(recorded: tuple[Path, SeFM, Any]) -> None:
+    ess = rows(recorded[0])["/metrics/ess"]
+    times = [r["time"] for r in ess]
+    assert [t.timestamp() if hasattr(t, "timestamp") else t for t in times][1:] == pytest.approx(STAMPS)
+
+
+def test_the_recording_opens_with_the_default_layout(recorded: tuple[Path, SeFM, Any]) -> None:
+    reader = rr.chunk.RrdReader(str(recorded[0]))
+    (blueprint,) = reader.blueprints()
+    logged = rows(recorded[0], blueprint)
+    views = {r["ViewBlueprint:display_name"][0]: (r["ViewBlueprint:class_identifier"][0],
+                                                  r["ViewBlueprint:space_origin"][0])
+             for entity, found in logged.items() for r in found if "ViewBlueprint:display_name" in r}
+    assert views == {"map apartment": ("2D", "/"), "room mass per frame": ("TimeSeries", "/metrics/rooms"),
+                     "effective sample size": ("TimeSeries", "/metrics/ess")}

@@ -1,0 +1,253 @@
+#!/usr/bin/env python3
+"""Rebuild ``seal_cli/language/word_classes/alfred_train.json``: which ALFRED class people mean by
+a word, counted on ALFRED's *train* goals only.
+
+Each train goal sentence ("Put the knife in the sink.") comes with its task's labels (object
+``ButterKnife``, receptacle ``SinkBasin``, movable receptacle, toggle target). The sentence is
+parsed by seal with the rules alone (no statistics), the phrase that fills each labelled field is
+found the way ALFRED parses are read back (the object: the theme of the first manipulating frame,
+of Slice when the object is sliced; the receptacle: the goal of the last Place; the movable
+receptacle: the goal of the first Place of two; the toggle target: the theme of ToggleOn), and the
+label is counted under the phrase's wording: its head lemma, and its last modifier with the head.
+
+    python scripts/build_word_classes.py                 # rewrite the shipped table
+    python scripts/build_word_classes.py --check         # exit 1 if the shipped table differs
+    python scripts/build_word_classes.py --dev 0.2       # fit on 80 % of train trials, score the rest
+
+``--data`` is the shared data folder (default ``../shared/data`` beside the project). ``--dev F``
+holds out a fraction F of the train trials (by a hash of the trial id), builds the table on the
+others and prints the five ALFRED fields on the held-out part with the rules alone and with the
+table, for each ``--min-support`` / ``--min-ratio`` given: the settings were chosen there, never on
+valid_seen.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import importlib.util
+import json
+import sys
+import zlib
+from collections import Counter
+from collections.abc import Callable, Iterable, Sequence
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+from seal_cli.frames.reading import load_library  # noqa: E402
+from seal_cli.frames.taxonomy import class_key  # noqa: E402
+from seal_cli.language.grounding import PORTIONS, Vocabulary  # noqa: E402
+from seal_cli.language.lexicon import noun_lemma  # noqa: E402
+from seal_cli.language.parser import CommandError, Parse, Phrase, parse_command  # noqa: E402
+from seal_cli.language.wordusage import FORMAT, MIN_RATIO, MIN_SUPPORT, SHIPPED, WordUsage  # noqa: E402
+
+OUT = SHIPPED / "alfred_train.json"
+MANIPULATE = ("Pick", "Heat", "Cool", "Clean", "LookAt", "Place")
+LABELS = ("object", "receptacle", "mrecep", "toggle")
+KEEP = 2
+"""A wording seen fewer times than this is left out of the file (it could never reach MIN_SUPPORT alone)."""
+
+
+def wording(phrase: Phrase) -> tuple[str, ...] | None:
+    """The lemmas grounding would look up for this phrase (None: a phrase the statistics skip, as
+    grounding does: a default, a person, a portion's head, an "of" phrase)."""
+    if phrase.default or phrase.kind != "thing" or not phrase.head or " of " in f" {phrase.text or ''} ".lower():
+        return None
+    lemmas = tuple(noun_lemma(w) for w in (*phrase.modifiers, phrase.head) if w)
+    if not lemmas or lemmas[-1] in PORTIONS:
+        return None
+    return lemmas
+
+
+def fields(parse: Parse, row: dict[str, str]) -> Iterable[tuple[Phrase, str]]:
+    """(phrase, labelled class) for each labelled field the parse has a phrase for."""
+    frames = parse.frames
+
+    def el(frame: object, role: str) -> Phrase | None:
+        phrase = getattr(frame, "elements", {}).get(role)
+        return None if phrase is None else parse.resolve(phrase)
+
+    places = [f for f in frames if f.frame == "Place"]
+    slices = [f for f in frames if f.frame == "Slice"]
+    sliced = row["sliced"] in ("1", "True", "true")
+    first = slices[0] if sliced and slices else next((f for f in frames if f.frame in MANIPULATE), None)
+    found = [(el(first, "theme") if first else None, row["object"])]
+    if row["task_type"] != "look_at_obj_in_light" and places:
+        found.append((el(places[-1], "goal"), row["receptacle"]))
+    if row["mrecep"] and len(places) >= 2:
+        found.append((el(places[0], "goal"), row["mrecep"]))
+    toggles = [f for f in frames if f.frame == "ToggleOn"]
+    if row["toggle"] and toggles:
+        found.append((el(toggles[0], "theme"), row["toggle"]))
+    for phrase, label in found:
+        if phrase is not None and label:
+            yield phrase, label
+
+
+def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
+          scenes: dict[str, frozenset[str]]) -> tuple[dict[str, Counter[str]], dict[str, Counter[str]]]:
+    """(wording → labelled classes, wording → the classes of the scenes it was said in)."""
+    library = load_library()
+    rules = vocabulary.with_usage(WordUsage())
+    counts: dict[str, Counter[str]] = {}
+    seen: dict[str, Counter[str]] = {}
+    for row in rows:
+        try:
+            parse = parse_command(" ".join(row["goal_sentence"].split()), library, rules)
+        except CommandError:
+            continue
+        for phrase, label in fields(parse, row):
+            lemmas = wording(phrase)
+            if lemmas is None:
+                continue
+            for size in (2, 1):
+                if len(lemmas) >= size:
+                    said = " ".join(lemmas[-size:])
+                    counts.setdefault(said, Counter())[label] += 1
+                    seen.setdefault(said, Counter()).update(scenes.get(row["floor_plan"], ()))
+    return counts, seen
+
+
+def scene_classes(data: Path, classes: Sequence[str]) -> dict[str, frozenset[str]]:
+    """Each floor plan's classes (its THOR object types and receptacles), spelled as ``classes``."""
+    path = data / "alfred2d" / "floorplans.json"
+    if not path.is_file():
+        return {}
+    spelling = {class_key(c): c for c in classes}
+    plans = json.loads(path.read_text())["floor_plans"]
+    return {name: frozenset(spelling[class_key(c)] for c in [*plan["object_types"],
+                                                             *(r["class"] for r in plan["receptacles"])]
+                            if class_key(c) in spelling)
+            for name, plan in plans.items()}
+
+
+def table(counts: dict[str, Counter[str]], seen: dict[str, Counter[str]], classes: Sequence[str],
+          source: str) -> dict[str, object]:
+    words = {w: dict(sorted(c.items(), key=lambda kv: (-kv[1], kv[0])))
+             for w, c in sorted(counts.items()) if sum(c.values()) >= KEEP}
+    where = {w: {c: seen[w][c] for c in by_class if seen.get(w, {}).get(c)} for w, by_class in words.items()}
+    return {"format": FORMAT, "source": source, "built_by": "scripts/build_word_classes.py",
+            "classes": list(classes), "words": words, "seen": {w: c for w, c in where.items() if c}}
+
+
+def dump(data: dict[str, object]) -> str:
+    """JSON with one wording a line, so that a rebuild's diff reads."""
+    head = {k: v for k, v in data.items() if k not in ("words", "seen")}
+    text = json.dumps(head, indent=1)[:-2]
+    for name in ("words", "seen"):
+        rows = data[name]
+        assert isinstance(rows, dict)
+        text += f',\n "{name}": {{\n' + ",\n".join(f"  {json.dumps(w)}: {json.dumps(c)}" for w, c in rows.items())
+        text += "\n }"
+    return text + "\n}\n"
+
+
+def read_rows(path: Path) -> list[dict[str, str]]:
+    with path.open(newline="") as handle:
+        return list(csv.DictReader(handle, delimiter="\t"))
+
+
+def scorer(data: Path):  # type: ignore[no-untyped-def]
+    path = data.parent / "eval" / "score_alfred_goals.py"
+    spec = importlib.util.spec_from_file_location("score_alfred_goals", path)
+    if spec is None or spec.loader is None:
+        raise SystemExit(f"error: {path}: cannot load the ALFRED scorer")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def score(rows: Sequence[dict[str, str]], vocabulary: Callable[[dict[str, str]], Vocabulary],
+          module) -> dict[str, float]:  # type: ignore[no-untyped-def]
+    """The scorer's five fields on these rows, each parsed with ``vocabulary(row)``."""
+    library = load_library()
+    hits: Counter[str] = Counter()
+    for row in rows:
+        try:
+            parse = parse_command(" ".join(row["goal_sentence"].split()), library, vocabulary(row)).to_json()
+        except CommandError:
+            parse = {}
+        want = module.gold(row)
+        got = module.read_back(parse) if parse.get("frames") else {f: None for f in module.FIELDS}
+        ok = {f: got[f] == want[f] for f in module.FIELDS}
+        hits.update(f for f, good in ok.items() if good)
+        hits["all"] += all(ok.values())
+    return {f: hits[f] / max(len(rows), 1) for f in ("all", *module.FIELDS)}
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--data", type=Path, default=ROOT.parent / "shared" / "data")
+    ap.add_argument("--out", type=Path, default=OUT)
+    ap.add_argument("--check", action="store_true", help="compare with the shipped table instead of writing it")
+    ap.add_argument("--dev", type=float, default=0.0, help="hold out this fraction of train trials and score it")
+    ap.add_argument("--min-support", type=int, nargs="*", default=[MIN_SUPPORT])
+    ap.add_argument("--min-ratio", type=float, nargs="*", default=[MIN_RATIO])
+    args = ap.parse_args()
+
+    goals = args.data / "alfred" / "goals_train.tsv"
+    constants = args.data / "alfred" / "alfred_constants.json"
+    for path in (goals, constants):
+        if not path.is_file():
+            print(f"error: {path}: no such file (the shared data folder is --data)", file=sys.stderr)
+            return 1
+    classes = json.loads(constants.read_text())["OBJECTS"]
+    vocabulary = Vocabulary.of(classes)
+    rows = [r for r in read_rows(goals) if r.get("split", "train") == "train"]
+    scenes = scene_classes(args.data, classes)
+
+    if args.dev:
+        held = {r["task_id"] for r in rows if zlib.crc32(r["task_id"].encode()) % 1000 < args.dev * 1000}
+        fit = [r for r in rows if r["task_id"] not in held]
+        dev = [r for r in rows if r["task_id"] in held]
+        counts, seen = count(fit, vocabulary, scenes)
+        module = scorer(args.data)
+        universe = frozenset(class_key(c) for c in classes)
+        words = {w: {class_key(c): n for c, n in by.items()} for w, by in counts.items()}
+        where = {w: {class_key(c): n for c, n in by.items()} for w, by in seen.items()}
+        print(f"fit {len(fit)} sentences, dev {len(dev)} sentences ({len(held)} trials)")
+
+        def show(name: str, figures: dict[str, float]) -> None:
+            print(f"{name:<34}" + " ".join(f"{k} {v:.3f}" for k, v in figures.items()))
+
+        show("rules alone", score(dev, lambda row: vocabulary.with_usage(WordUsage()), module))
+        for support in args.min_support:
+            for ratio in args.min_ratio:
+                tried = vocabulary.with_usage(WordUsage(words, universe, ("dev",), support, ratio, where))
+                show(f"support {support} ratio {ratio}", score(dev, lambda row, v=tried: v, module))
+        usage = WordUsage(words, universe, ("dev",), args.min_support[0], args.min_ratio[0], where)
+
+        def in_scene(row: dict[str, str], *, rates: bool, learned: bool = True) -> Vocabulary:
+            present = scenes.get(row["floor_plan"], frozenset()) | {row[k] for k in LABELS if row[k]}
+            scene = vocabulary.restricted_to(present)
+            scene = scene.with_usage(usage if learned else WordUsage())
+            return scene if rates else Vocabulary.of(scene.classes, usage=scene.usage)
+
+        print("in the scene's classes:")
+        show("  rules alone", score(dev, lambda row: in_scene(row, rates=True, learned=False), module))
+        show("  counts", score(dev, lambda row: in_scene(row, rates=False), module))
+        show("  rates where present", score(dev, lambda row: in_scene(row, rates=True), module))
+        return 0
+
+    source = (f"ALFRED train goals ({goals.name}: {len(rows)} human goal sentences with their task labels), "
+              "parsed by seal's rules; counts of the labelled class by the wording of the phrase that fills its field")
+    text = dump(table(*count(rows, vocabulary, scenes), classes, source))
+    if args.check:
+        shipped = args.out.read_text() if args.out.is_file() else ""
+        if shipped != text:
+            print(f"{args.out}: differs from what the train split gives (rebuild it)", file=sys.stderr)
+            return 1
+        print(f"{args.out}: up to date")
+        return 0
+    args.out.parent.mkdir(parents=True, exist_ok=True)
+    tmp = args.out.with_suffix(".json.tmp")
+    tmp.write_text(text)
+    tmp.replace(args.out)
+    print(f"wrote {args.out} ({len(text.splitlines()) - 7} wordings)")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,447 @@
+"""``seal bench reliability``: seal run as a hostile user runs it, counting what went wrong.
+
+Every case is one ``seal`` command run as a subprocess in a fresh folder, with a timeout. The
+cases are the defects of issue 14 replayed one by one, and hostile inputs generated from a seed:
+broken frame files, maps and observation files made by mutating good ones, hostile command
+texts, output paths that are inputs, devices, folders or wrong suffixes, out-of-bound options,
+and signals sent during a run. A case counts
+
+- a **traceback** when ``Traceback (most recent call last)`` reaches stderr;
+- a **hang** when it does not finish within its timeout;
+- a **wrong exit code** when its code is not one the case allows (0 or 1 for a bad input, 2 for
+  a bad option, 143 after SIGTERM, ...);
+- a **lost or partial file** when an input changed, a temporary of ours was left behind, an
+  output the case forbids exists, or a failed command left any new file;
+- **nondeterminism** when a case marked ``twice`` gives other output on a second run.
+
+A reliable seal counts zero of each; only ``tried`` grows.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import random
+import re
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+from collections.abc import Callable, Iterator
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass, field
+from pathlib import Path
+
+__all__ = ["Case", "Outcome", "cases", "run_case", "run_cases", "summarise"]
+
+TIMEOUT = 60.0
+"""Seconds any case may take (the bound every command must finish or refuse within)."""
+
+TRACEBACK = "Traceback (most recent call last)"
+TEMPORARY = re.compile(r"\.seal\d+-[0-9a-f]{8}\.tmp")
+
+FRAME = '''category container = cup, bowl
+category utensil = spoon, fork
+world holding, hand_empty
+frame Whisk "whisk" "beat" {
+  description "Whisk what is in a container."
+  theme: container
+  instrument: utensil = spoon
+  requires holding(instrument)
+  do navigate(theme), stir(instrument, theme)
+  ensures whisked(theme)
+}
+'''
+
+FRAME_YAML = '''categories:
+  container: [cup, bowl]
+  utensil: [spoon, fork]
+world: [holding, hand_empty]
+frames:
+  - frame: Whisk
+    lexical_units: [whisk, beat]
+    elements:
+      theme: {type: container}
+      instrument: {type: utensil, default: spoon}
+    preconditions: [holding(instrument)]
+    actions: [navigate(theme), stir(instrument, theme)]
+    postconditions: [whisked(theme)]
+'''
+
+OBSERVATIONS = '''- pose: [-6.0, -3.0, 0.0]
+  detections:
+    - {class: cup, at: [-5.0, -3.0]}
+- pose: [5.0, -4.5]
+  detections: []
+'''
+
+HOSTILE_CHARS = ["\t", "\x00", "\\q", "\u2028", "\ufeff", "{", "}", "(", ")", ":", ",", "=", '"', "'", "*", "&a",
+                 "*a", "!!python/object:os.system", "\r", "\x1c", "é", "-", "[", "]", "#", "%", "\\", "9" * 30,
+                 "nan", ".inf", "~", "null", "@@"]
+HOSTILE_WORDS = ["stir", "the", "cup", "café", "put", "99999999999", "apples", "in", "fridge", "and", "it", "\x00",
+                 "\u2028", "\t", "pick", "up", "spoon", "😀", "ʼ", "not", "1e308", "-5", "two", "bring", "me", "a",
+                 "(", ")", "[bold]", "\\", "NaN", "0", "sofa", "open", "table", "knife", "\r"]
+
+
+@dataclass(frozen=True)
+class Case:
+    """One command to run in a fresh folder holding ``files``, and what it may do.
+
+    A file's content is bytes, or ``"fifo"`` for a named pipe, or ``"link:TARGET"`` for a
+    symbolic link, or ``"hard:TARGET"`` for a hard link. ``keep``: files that must be unchanged
+    after; ``absent``: files that must not exist after; ``signal``: send it this many seconds
+    after the start."""
+
+    name: str
+    argv: tuple[str, ...]
+    files: tuple[tuple[str, bytes | str], ...] = ()
+    codes: tuple[int, ...] = (0, 1)
+    keep: tuple[str, ...] = ()
+    absent: tuple[str, ...] = ()
+    twice: bool = False
+    signal: tuple[int, float] | None = None
+    stdin: bytes | None = None
+    timeout: float = TIMEOUT
+
+
+@dataclass
+class Outcome:
+    """What one case did."""
+
+    case: str
+    code: int | None
+    seconds: float
+    problems: list[str] = field(default_factory=list)
+
+    @property
+    def kinds(self) -> set[str]:
+        return {p.split(":", 1)[0] for p in self.problems}
+
+
+# -- running ------------------------------------------------------------------------------------
+def _make(folder: Path, files: tuple[tuple[str, bytes | str], ...]) -> None:
+    for name, content in files:
+        path = folder / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        if content == "fifo":
+            os.mkfifo(path)
+        elif isinstance(content, str) and content.startswith("link:"):
+            path.symlink_to(content[5:])
+        elif isinstance(content, str) and content.startswith("hard:"):
+            os.link(folder / content[5:], path)
+        elif isinstance(content, bytes):
+            path.write_bytes(content)
+
+
+def _digest(path: Path) -> str | None:
+    try:
+        return hashlib.sha256(path.read_bytes()).hexdigest() if path.is_file() else None
+    except OSError:
+        return None
+
+
+def _listing(folder: Path) -> set[str]:
+    return {str(p.relative_to(folder)) for p in folder.rglob("*")}
+
+
+def _seal() -> list[str]:
+    return [sys.executable, "-m", "seal_cli"]
+
+
+def _once(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
+    env = {**os.environ, "COLUMNS": "200", "NO_COLOR": "1", "PYTHONWARNINGS": "ignore"}
+    start = time.perf_counter()
+    process = subprocess.Popen([*_seal(), *case.argv], cwd=folder, env=env, stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, stdin=subprocess.PIPE if case.stdin is not None
+                               else subprocess.DEVNULL, start_new_session=True)
+    try:
+        if case.signal is not None:
+            number, delay = case.signal
+            try:
+                process.wait(timeout=delay)
+            except subprocess.TimeoutExpired:
+                process.send_signal(number)
+        out, err = process.communicate(case.stdin, timeout=case.timeout)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        out, err = process.communicate()
+        return None, out, err, time.perf_counter() - start
+    return process.returncode, out, err, time.perf_counter() - start
+
+
+def run_case(case: Case) -> Outcome:
+    """Run one case in a fresh folder and judge what it did."""
+    with tempfile.TemporaryDirectory(prefix="seal-reliability-") as name:
+        folder = Path(name)
+        _make(folder, case.files)
+        before = _listing(folder)
+        kept = {k: _digest(folder / k) for k in case.keep}
+        code, out, err, seconds = _once(case, folder)
+        outcome = Outcome(case.name, code, seconds)
+        text = err.decode("utf-8", "replace")
+        if code is None:
+            outcome.problems.append(f"hang: no end within {case.timeout:g} s")
+        elif code not in case.codes:
+            outcome.problems.append(f"exit: {code}, expected {' or '.join(map(str, case.codes))}: {text[-300:]}")
+        if TRACEBACK in text or TRACEBACK in out.decode("utf-8", "replace"):
+            outcome.problems.append(f"traceback: {text[-500:]}")
+        for key, digest in kept.items():
+            if _digest(folder / key) != digest:
+                outcome.problems.append(f"lost: input {key} changed or vanished")
+        after = _listing(folder)
+        for left in sorted(after):
+            if TEMPORARY.search(left):
+                outcome.problems.append(f"partial: temporary {left} left behind")
+        for name_ in case.absent:
+            if (folder / name_).exists() and name_ not in before:
+                outcome.problems.append(f"partial: {name_} written though the command failed or was stopped")
+        if code not in (0, None):
+            for new in sorted(after - before):
+                if not TEMPORARY.search(new):
+                    outcome.problems.append(f"partial: {new} written by a failed command")
+        if case.twice and code is not None:
+            again = _once(case, folder)
+            if again[1] != out or again[0] != code:
+                outcome.problems.append("nondeterminism: a second run gave other output")
+        return outcome
+
+
+def run_cases(all_cases: list[Case], jobs: int = 1,
+              progress: Callable[[int, int], None] | None = None) -> list[Outcome]:
+    """Run every case (``jobs`` at a time), in order."""
+    outcomes: list[Outcome] = []
+    with ThreadPoolExecutor(max(1, jobs)) as pool:
+        for outcome in pool.map(run_case, all_cases):
+            outcomes.append(outcome)
+            if progress is not None:
+                progress(len(outcomes), len(all_cases))
+    return outcomes
+
+
+def summarise(outcomes: list[Outcome]) -> dict[str, object]:
+    """The counts the issue asks for, and every problem found."""
+    def count(kind: str) -> int:
+        return sum(kind in o.kinds for o in outcomes)
+
+    return {"tried": len(outcomes), "tracebacks": count("traceback"), "hangs": count("hang"),
+            "wrong_exit_codes": count("exit"), "lost_or_partial_files": count("lost") + count("partial"),
+            "nondeterministic": count("nondeterminism"),
+            "slowest_s": round(max((o.seconds for o in outcomes), default=0.0), 2),
+            "problems": [{"case": o.case, "problems": o.problems} for o in outcomes if o.problems]}
+
+
+# -- the cases ----------------------------------------------------------------------------------
+def _apartment() -> tuple[tuple[str, bytes], tuple[str, bytes]]:
+    from seal_cli.resources import maps_dir
+
+    folder = maps_dir()
+    return (("m.yaml", (folder / "apartment.yaml").read_bytes()), ("apartment.pgm",
+                                                                   (folder / "apartment.pgm").read_bytes()))
+
+
+def issue_cases() -> Iterator[Case]:
+    """Every case of issue 14, replayed."""
+    m, image = _apartment()
+    obs = ("obs.yaml", OBSERVATIONS.encode())
+    traj = ("traj.yaml", b"poses:\n  - [-6.0, -3.0]\n  - [5.0, -4.5, 1.57]\n")
+    loc = ("localize", "--map", "m.yaml", "--steps", "1", "--particles", "20")
+    inputs = ("m.yaml", "apartment.pgm", "obs.yaml", "traj.yaml")
+    both = (m, image, obs, traj)
+    # 1. outputs destroy inputs
+    yield Case("1 localize --png onto the map", (*loc, "--png", "m.yaml"), both, keep=inputs)
+    yield Case("1 localize --rrd onto the map's image", (*loc, "--rrd", "apartment.pgm"), both, keep=inputs)
+    yield Case("1 localize --png onto --observations", (*loc, "--observations", "obs.yaml", "--png", "obs.yaml"),
+               both, keep=inputs)
+    yield Case("1 localize --rrd onto --trajectory", (*loc, "--trajectory", "traj.yaml", "--rrd", "traj.yaml"),
+               both, keep=inputs)
+    yield Case("1 run --png onto the map", ("run", "stir the cup", "--map", "m.yaml", "--particles", "20", "--png",
+                                            "m.yaml"), both, keep=inputs)
+    yield Case("1 run --rrd onto the image", ("run", "stir the cup", "--map", "m.yaml", "--particles", "20",
+                                              "--rrd", "apartment.pgm"), both, keep=inputs)
+    yield Case("1 map --png onto its own map", ("map", "m.yaml", "--png", "m.yaml"), both, keep=inputs)
+    yield Case("1 map --png onto its image", ("map", "m.yaml", "--png", "apartment.pgm"), both, keep=inputs)
+    yield Case("1 --png and --rrd one path", (*loc, "--png", "out.png", "--rrd", "out.png"), both, keep=inputs,
+               absent=("out.png",))
+    yield Case("1 an output through a symlink to the map", (*loc, "--png", "link.png"),
+               (*both, ("link.png", "link:m.yaml")), keep=inputs)
+    yield Case("1 an output hard-linked to the image", (*loc, "--rrd", "hard.rrd"),
+               (*both, ("hard.rrd", "hard:apartment.pgm")), keep=inputs)
+    yield Case("1 /dev/null stays a device", (*loc, "--png", "/dev/null", "--rrd", "/dev/null"), both, codes=(0,),
+               keep=inputs)
+    # 2. tracebacks
+    for command in (("map", "m.yaml", "--png", "/proc/x.png"), (*loc, "--png", "/proc/x.png"),
+                    ("run", "stir the cup", "--map", "m.yaml", "--png", "/proc/x.png"),
+                    ("bench", "tasks", "--suite", "map", "--layouts", "1", "--episodes", "/proc/x.jsonl")):
+        yield Case(f"2 unwritable folder: {command[0]}", command, both, codes=(1,), keep=inputs)
+    for bad in ("\t", "\x00", "\\q"):
+        frame = FRAME.replace('"whisk"', f'"whi{bad}sk"').encode()
+        yield Case(f"2 .frame string with {bad!r}: validate", ("validate", "f.frame"), (("f.frame", frame),),
+                   codes=(1,), keep=("f.frame",))
+        yield Case(f"2 .frame string with {bad!r}: plan", ("plan", "--framelib", "f.frame", "whisk the cup"),
+                   (("f.frame", frame),), codes=(1,))
+    yield Case("2 a billion particles", (*loc, "--particles", "1000000000"), both, codes=(1, 2))
+    # 3. hangs
+    yield Case("3 put 99999999999 apples", ("plan", "put 99999999999 apples in the fridge"), codes=(1,))
+    yield Case("3 5000 apples and --max-nodes", ("plan", "--max-nodes", "100", "put 5000 apples in the fridge"),
+               codes=(1,))
+    yield Case("3 a 2,000-frame chain", ("validate", "chain.frame"), (("chain.frame", _chain(2000, False)),),
+               codes=(0,), timeout=120)
+    yield Case("3 a 2,000-frame cycle", ("validate", "cycle.frame"), (("cycle.frame", _chain(2000, True)),),
+               codes=(1,), timeout=120)
+    yield Case("3 map image /dev/zero", ("map", "z.yaml"), (("z.yaml", m[1].replace(b"apartment.pgm",
+                                                                                   b"/dev/zero")),), codes=(1,))
+    yield Case("3 map image a FIFO", ("map", "f.yaml"), (("f.yaml", m[1].replace(b"apartment.pgm", b"pipe.pgm")),
+                                                        ("pipe.pgm", "fifo")), codes=(1,))
+    yield Case("3 parse --file /dev/zero", ("parse", "--file", "/dev/zero"), codes=(1,))
+    yield Case("3 parse --file a FIFO", ("parse", "--file", "p.txt"), (("p.txt", "fifo"),), codes=(1,))
+    yield Case("3 observations with an anchor reused 1,000 times", (*loc, "--observations", "bomb.yaml"),
+               (*both, ("bomb.yaml", _anchor_bomb())), codes=(1,))
+    yield Case("3 --steps 100000000", (*loc, "--steps", "100000000"), both, codes=(1, 2))
+    # 4. one output line per input line
+    lines = "stir the cup\u2028pick up the cup\x0bstir\x0cthe cup\rstir\x1cthe cup\x1dx\x1ey\x85z\nstir the cup\n"
+    yield Case("4 odd line breaks", ("parse", "--file", "l.txt", "--json"), (("l.txt", lines.encode()),),
+               twice=True)
+    yield Case("4 a BOM", ("parse", "--file", "b.txt"), (("b.txt", b"\xef\xbb\xbfstir the cup\n"),), codes=(0,))
+    yield Case("4 invalid UTF-8 on stdin", ("parse", "--file", "-"), codes=(1,), stdin=b"stir the cup\n\xff\n")
+    # 5. partial files and signals
+    yield Case("5 --pddl into a missing folder", ("plan", "--pddl", "nope", "stir the cup"), codes=(1,))
+    yield Case("5 --pddl both or neither", ("plan", "--pddl", "out", "stir the cup"),
+               (("out/problem.pddl/x", b""),), codes=(1,), absent=("out/domain.pddl",))
+    for number in (signal.SIGTERM, signal.SIGINT):
+        yield Case(f"5 {signal.Signals(number).name} during localize --png --rrd",
+                   ("localize", "--map", "m.yaml", "--steps", "100000", "--png", "o.png", "--rrd", "o.rrd"), both,
+                   codes=(130, 143, -int(number)), keep=inputs, absent=("o.png", "o.rrd"), signal=(number, 6.0))
+    stale = ".o.png.seal999999-0123abcd.tmp.png"
+    yield Case("5 a stale temporary of a killed run is swept", ("map", "m.yaml", "--png", "o.png"),
+               (*both, (stale, b"half")), codes=(0,), absent=(stale,))
+    # 6. wrong or silent acceptance
+    yield Case("6 stir the café", ("plan", "stir the café"))
+    yield Case("6 contradictory --done", ("plan", "--done", "pick up the spoon", "--done", "pick up the knife",
+                                          "stir the cup"))
+    yield Case("6 parse without a command", ("parse",), codes=(2,))
+    yield Case("6 repeated key in observations", (*loc, "--observations", "d.yaml"),
+               (*both, ("d.yaml", b"- pose: [-6, -3]\n  pose: [5, -4.5]\n")), codes=(1,))
+    yield Case("6 pose inside a wall", (*loc, "--observations", "w.yaml"),
+               (*both, ("w.yaml", b"- pose: [-10.5, -5.5]\n")), codes=(1,))
+    # 7 and 8
+    yield Case("7 validate lists every problem", ("validate", "v.frame"),
+               (("v.frame", FRAME.replace("theme: container", "theme container").encode() + b"\nworld 5\n"),),
+               codes=(1,), twice=True)
+    yield Case("8 --png out.jpg", ("map", "m.yaml", "--png", "out.jpg"), both, codes=(1,), absent=("out.jpg",))
+
+
+def _chain(n: int, cycle: bool) -> bytes:
+    def word(i: int) -> str:
+        letters = ""
+        while True:
+            letters += chr(97 + i % 26)
+            i //= 26
+            if not i:
+                return letters
+
+    out = ["category thing = *"]
+    for i in range(n):
+        following = (i + 1) % n if cycle else i + 1
+        needs = f"  requires p{following}(x)\n" if cycle or i < n - 1 else ""
+        out.append(f'frame F{i} "verb{word(i)}" {{\n  x: thing\n{needs}  ensures p{i}(x)\n}}')
+    return "\n".join(out).encode()
+
+
+def _anchor_bomb() -> bytes:
+    head = "- &a {pose: [-6, -3], detections: [" + ", ".join(["{class: cup, at: [-5, -3]}"] * 1000) + "]}\n"
+    return (head + "- *a\n" * 1000).encode()
+
+
+def _mutate(text: str, rng: random.Random) -> str:
+    """One hostile edit of a text: a character inserted, deleted or repeated, a line dropped or
+    doubled, the text cut short."""
+    kind = rng.randrange(6)
+    at = rng.randrange(len(text) + 1)
+    if kind == 0:
+        return text[:at] + rng.choice(HOSTILE_CHARS) + text[at:]
+    if kind == 1:
+        return text[:at] + text[at + rng.randint(1, 8):]
+    if kind == 2:
+        return text[:at]
+    lines = text.split("\n")
+    line = rng.randrange(len(lines))
+    if kind == 3:
+        return "\n".join(lines[:line] + lines[line + 1:])
+    if kind == 4:
+        return "\n".join(lines[:line] + [lines[line]] * rng.randint(2, 4) + lines[line + 1:])
+    words = re.split(r"(\W+)", text)
+    spot = rng.randrange(len(words))
+    words[spot] = rng.choice(["nan", "-1", "1e308", "0", "~", "[]", "{}", "x" * 300, "é", "99999999999"])
+    return "".join(words)
+
+
+def generated_cases(seed: int = 0, count: int = 320) -> Iterator[Case]:
+    """``count`` hostile inputs drawn from ``seed``: frames, maps, observations, commands, output
+    paths and options, in turn."""
+    rng = random.Random(seed)
+    m, image = _apartment()
+    map_text = m[1].decode()
+    makers: list[Callable[[int], Case]] = []
+
+    def frame_dsl(i: int) -> Case:
+        text = FRAME
+        for _ in range(rng.randint(1, 3)):
+            text = _mutate(text, rng)
+        command = rng.choice([("validate", "f.frame"), ("plan", "--framelib", "f.frame", "whisk the cup")])
+        return Case(f"frame {i}", command, (("f.frame", text.encode()),), keep=("f.frame",), twice=i % 10 == 0)
+
+    def frame_yaml(i: int) -> Case:
+        text = FRAME_YAML
+        for _ in range(rng.randint(1, 3)):
+            text = _mutate(text, rng)
+        command = rng.choice([("validate", "f.yaml"), ("parse", "--framelib", "f.yaml", "whisk the bowl")])
+        return Case(f"frame yaml {i}", command, (("f.yaml", text.encode()),), keep=("f.yaml",))
+
+    def a_map(i: int) -> Case:
+        text = _mutate(map_text, rng)
+        command = rng.choice([("map", "m.yaml", "--json"), ("validate", "m.yaml"),
+                              ("plan", "--map", "m.yaml", "stir the cup")])
+        return Case(f"map {i}", command, (("m.yaml", text.encode()), image), keep=("m.yaml", "apartment.pgm"))
+
+    def observations(i: int) -> Case:
+        text = OBSERVATIONS
+        for _ in range(rng.randint(1, 2)):
+            text = _mutate(text, rng)
+        return Case(f"observations {i}", ("localize", "--map", "m.yaml", "--steps", "0", "--particles", "20",
+                                          "--observations", "o.yaml"), (m, image, ("o.yaml", text.encode())),
+                    keep=("o.yaml", "m.yaml"))
+
+    def command(i: int) -> Case:
+        words = " ".join(rng.choice(HOSTILE_WORDS) for _ in range(rng.randint(1, 9)))
+        verb = rng.choice([("parse",), ("parse", "--json"), ("plan",), ("plan", "--map", "apartment")])
+        return Case(f"command {i}", (*verb, words), twice=i % 7 == 0)
+
+    def output(i: int) -> Case:
+        target = rng.choice(["m.yaml", "apartment.pgm", "o.jpg", "sub", "missing/o.png", "/dev/null", "link.png",
+                             "hard.png", "fifo.png", "o.png", "o.rrd", "/proc/o.png", ""])
+        option = rng.choice(["--png", "--rrd"])
+        command = rng.choice([("localize", "--map", "m.yaml", "--steps", "0", "--particles", "10"),
+                              ("map", "m.yaml")])
+        if command[0] == "map":
+            option = "--png"
+        files = (m, image, ("sub/x", b""), ("link.png", "link:m.yaml"), ("hard.png", "hard:m.yaml"),
+                 ("fifo.png", "fifo"))
+        return Case(f"output {i}: {option} {target!r}", (*command, option, target), files,
+                    keep=("m.yaml", "apartment.pgm"))
+
+    def option(i: int) -> Case:
+        name, value = rng.choice([("--particles", rng.choice(["0", "-1", "1e9", "x", "1000000000000"])),
+                                  ("--steps", rng.choice(["-1", "99999999999", "x"])),
+                                  ("--seed", rng.choice(["-1", "x", "1" * 40]))])
+        return Case(f"option {i}: {name} {value}", ("localize", "--map", "apartment", name, value),
+                    codes=(1, 2))
+
+    makers = [frame_dsl, frame_yaml, a_map, observations, command, output, option]
+    for i in range(count):
+        yield makers[i % len(makers)](i)
+
+
+def cases(seed: int = 0, count: int = 320) -> list[Case]:
+    """The issue's cases, then ``count`` generated ones."""
+    return [*issue_cases(), *generated_cases(seed, count)]

@@ -1,0 +1,51 @@
+"""Class labels for detectors that name classes by number (ROS 1's vision_msgs, COCO-style ids).
+
+A labels file maps a detection's class id to a class name, either as a mapping or as a list
+whose position is the id (from 0)::
+
+    {1: spoon, 2: cup, 47: cup}          # or
+    [background, spoon, cup]
+
+An id the file does not list stays as it is (a class no belief is kept for).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import yaml
+
+from seal_cli.errors import SealError, SealErrors, Where
+from seal_cli.fileio import LOADER, read_text
+from seal_cli.yamlnodes import NodeReader, shape
+
+__all__ = ["read_labels"]
+
+
+def read_labels(path: str | Path) -> dict[str, str]:
+    """Class id (as text) → class name; every problem at its line and column."""
+    text = read_text(path)
+    reader = NodeReader(text, str(path))
+    try:
+        root = yaml.compose(text, Loader=LOADER)
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None)
+        where = Where(str(path), mark.line + 1, mark.column + 1) if mark else Where(str(path))
+        raise SealError(f"YAML syntax error: {getattr(exc, 'problem', exc)}", where) from None
+    labels: dict[str, str] = {}
+    if isinstance(root, yaml.SequenceNode):
+        for i, node in enumerate(root.value):
+            name = reader.string(node, f"label {i}")
+            if name is not None:
+                labels[str(i)] = name.strip()
+    elif isinstance(root, yaml.MappingNode):
+        for key, _, node in reader.pairs(root, "the labels"):
+            name = reader.string(node, f"the label of {key}")
+            if name is not None:
+                labels[key.strip()] = name.strip()
+    else:
+        reader.problem(f"a labels file is a mapping {{id: class}} or a list of classes, not "
+                       f"{'nothing' if root is None else shape(root)}", root)
+    if reader.problems:
+        raise reader.problems[0] if len(reader.problems) == 1 else SealErrors(reader.problems)
+    return labels

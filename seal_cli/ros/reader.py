@@ -1,0 +1,80 @@
+"""An open ROS bag: its topics and its messages deserialised, every failure one SealError naming the bag.
+
+:func:`open_bag` takes a ROS 1 ``.bag``, a ROS 2 bag folder (sqlite3 or MCAP), or a bare ``.db3`` /
+``.mcap`` file, with rosbags' ``AnyReader``; the message definitions the bag embeds are used, and
+:func:`~seal_cli.ros.messages.typestore` (vision_msgs included) for a bag that carries none.
+"""
+
+from __future__ import annotations
+
+import contextlib
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+from seal_cli.errors import SealError, Where
+from seal_cli.ros.messages import require_rosbags, typestore
+
+__all__ = ["Bag", "bag_topics", "open_bag"]
+
+
+class Bag:
+    """An open bag: its topics, and its messages deserialised, every failure a SealError."""
+
+    def __init__(self, reader: Any, path: Path) -> None:
+        self.reader, self.path = reader, path
+
+    @property
+    def topics(self) -> dict[str, str]:
+        return {c.topic: c.msgtype for c in self.reader.connections}
+
+    def error(self, message: str) -> SealError:
+        return SealError(message, Where(str(self.path)))
+
+    def messages(self, topic: str) -> Iterator[tuple[int, float, Any]]:
+        """``(index, log time s, message)`` of a topic, in log order."""
+        from rosbags.highlevel import AnyReaderError
+        from rosbags.serde import SerdeError
+
+        connections = [c for c in self.reader.connections if c.topic == topic]
+        try:
+            for i, (connection, logged, raw) in enumerate(self.reader.messages(connections=connections)):
+                try:
+                    message = self.reader.deserialize(raw, connection.msgtype)
+                except (AnyReaderError, SerdeError, ValueError, IndexError, KeyError) as exc:
+                    raise self.error(f"message {i + 1} on {topic} ({connection.msgtype}) cannot be decoded: "
+                                     f"{exc}") from None
+                yield i, logged * 1e-9, message
+        except SealError:
+            raise
+        except Exception as exc:  # rosbags' readers raise their own errors and sqlite's, lz4's, zstd's
+            raise self.error(f"cannot read {topic} from the bag: {exc}") from None
+
+
+@contextlib.contextmanager
+def open_bag(path: str | Path) -> Iterator[Bag]:
+    require_rosbags()
+    from rosbags.highlevel import AnyReader
+
+    path = Path(path)
+    if not path.exists():
+        raise SealError("no such bag", Where(str(path)))
+    ros1 = path.suffix == ".bag"
+    try:
+        reader = AnyReader([path], default_typestore=typestore(ros1))
+        reader.open()
+    except Exception as exc:  # a file that is not a bag fails in many ways inside rosbags
+        detail = " ".join(str(a) for a in getattr(exc, "args", ())) or type(exc).__name__
+        raise SealError(f"cannot read this as a ROS bag (ROS 1 .bag, ROS 2 folder, .db3 or .mcap): {detail}",
+                        Where(str(path))) from None
+    try:
+        yield Bag(reader, path)
+    finally:
+        with contextlib.suppress(Exception):
+            reader.close()
+
+
+def bag_topics(path: str | Path) -> dict[str, str]:
+    """Topic → message type of every connection in the bag."""
+    with open_bag(path) as bag:
+        return bag.topics

@@ -1,0 +1,149 @@
+"""What every seal recording shares: the map as one image, the classes' colours, and the default layout.
+
+Both recordings (``seal localize --rrd``, :mod:`seal_cli.sefm.observers.rerun`, and ``seal run --rrd``,
+:mod:`seal_cli.sim.record`) open with the same scene:
+
+- ``map/occupancy``: the occupancy grid as **one** PNG image in map_server's greys (free 254,
+  occupied 0, unknown 205), placed in metres by a ``Transform3D`` (translation = the grid's
+  origin, scale = its resolution), drawn beneath everything (draw order −10);
+- ``map/rooms``: each room's outline, a labelled closed ``LineStrips2D``; ``map/places``;
+- an ``AnnotationContext`` at the root giving each object class and each frame one id, label and
+  colour (a legend in the viewer), so that particle clouds carry class ids, not colours;
+- a default blueprint: the map view beside time series of each frame's room masses and of the
+  effective sample sizes.
+
+The map view is Rerun's 2-D view, whose y axis points down: the map appears mirrored top to
+bottom relative to RViz (north is at the bottom); positions are the map frame's metres as they are.
+"""
+
+from __future__ import annotations
+
+import io
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+
+from seal_cli.maps.geometry import FREE, OCCUPIED, OccupancyGrid
+from seal_cli.maps.model import Map
+
+__all__ = ["DRAW", "Classes", "batching", "blueprint", "log_grid_image", "log_map", "png", "series_colour"]
+
+DRAW = {"occupancy": -10.0, "density": -5.0, "rooms": 1.0, "places": 2.0, "objects": 3.0, "frames": 4.0,
+        "modes": 6.0, "observations": 7.0, "robot": 8.0}
+"""Draw orders: the map beneath, the beliefs over it, the robot on top."""
+
+PALETTE = np.array([[31, 119, 180], [255, 127, 14], [44, 160, 44], [214, 39, 40], [148, 103, 189], [140, 86, 75],
+                    [227, 119, 194], [127, 127, 127], [188, 189, 34], [23, 190, 207]], np.uint8)
+"""Matplotlib's tab10."""
+GREYS = {FREE: 254, OCCUPIED: 0}
+UNKNOWN_GREY = 205
+
+
+def batching() -> Any:
+    """Chunks of up to 8 MB per entity, never cut by time: every chunk carries a couple of kB of Arrow
+    schema, so a short run's recording is one chunk per entity instead of one per 200 ms."""
+    import datetime
+
+    import rerun as rr
+
+    return rr.ChunkBatcherConfig(flush_tick=datetime.timedelta(hours=24), flush_num_bytes=8 << 20,
+                                 flush_num_rows=1 << 31)
+
+
+def series_colour(i: int) -> tuple[int, int, int]:
+    r, g, b = PALETTE[i % len(PALETTE)]
+    return int(r), int(g), int(b)
+
+
+def png(image: np.ndarray, colour: tuple[int, int, int] | None = None) -> bytes:
+    """An (H, W) uint8 array as PNG bytes, row 0 first: grey levels, or — with ``colour`` — that colour
+    at the array's opacity (a 16-level palette with transparency: a density image of a few kB).
+
+    Written with Pillow, which matplotlib already depends on."""
+    from PIL import Image
+
+    buffer = io.BytesIO()
+    array = np.asarray(image, np.uint8)
+    if colour is None:
+        Image.fromarray(array, mode="L").save(buffer, format="PNG", optimize=True)
+        return buffer.getvalue()
+    levels = np.asarray(np.rint(array / 255 * 15), np.uint8)
+    picture = Image.fromarray(levels, mode="P")
+    picture.putpalette(list(colour) * 16)
+    picture.save(buffer, format="PNG", optimize=True, transparency=bytes(int(round(k * 255 / 15)) for k in range(16)))
+    return buffer.getvalue()
+
+
+class Classes:
+    """One annotation id and colour per object class and per frame, in the order given."""
+
+    def __init__(self, objects: Sequence[str], frames: Sequence[str]) -> None:
+        self.names = [*objects, *frames]
+        self.ids = {name: i + 1 for i, name in enumerate(self.names)}
+
+    def colour(self, name: str) -> tuple[int, int, int]:
+        return series_colour(self.ids[name] - 1)
+
+    def log(self, stream: Any) -> None:
+        import rerun as rr
+
+        stream.log("/", rr.AnnotationContext([rr.ClassDescription(info=rr.AnnotationInfo(
+            id=self.ids[n], label=n, color=self.colour(n))) for n in self.names]), static=True)
+
+
+def log_grid_image(stream: Any, entity: str, image: np.ndarray, resolution: float, origin: Sequence[float],
+                   draw_order: float, static: bool = True, colour: tuple[int, int, int] | None = None) -> None:
+    """An image whose pixel (col, row) is the cell at ``origin + (col, row) · resolution`` (row 0 the lowest y):
+    grey levels, or ``colour`` at the image's values as opacity."""
+    import rerun as rr
+
+    yaw = float(origin[2]) if len(origin) > 2 else 0.0
+    rotation = rr.RotationAxisAngle(axis=[0, 0, 1], radians=yaw) if yaw else None
+    stream.log(entity, rr.Transform3D(translation=[float(origin[0]), float(origin[1]), 0.0], scale=float(resolution),
+                                      rotation_axis_angle=rotation),
+               rr.EncodedImage(contents=png(image, colour), media_type="image/png", draw_order=draw_order),
+               static=static)
+
+
+def occupancy_image(grid: OccupancyGrid) -> np.ndarray:
+    cells = np.asarray(grid.cells)
+    out = np.full(cells.shape, UNKNOWN_GREY, np.uint8)
+    for value, grey in GREYS.items():
+        out[cells == value] = grey
+    return out
+
+
+def log_map(stream: Any, m: Map, places: Sequence[tuple[str, tuple[float, float]]] | None = None) -> None:
+    """The static map: the occupancy image, the labelled rooms, and the places (name, position)."""
+    import rerun as rr
+
+    grid = m.grid
+    log_grid_image(stream, "map/occupancy", occupancy_image(grid), grid.resolution, grid.origin, DRAW["occupancy"])
+    if m.rooms:
+        stream.log("map/rooms", rr.LineStrips2D([[*r.polygon, r.polygon[0]] for r in m.rooms],
+                                                labels=list(m.room_names), show_labels=True,
+                                                colors=[[90, 90, 200]], radii=rr.Radius.ui_points(1.5),
+                                                draw_order=DRAW["rooms"]), static=True)
+    shown = list(places) if places is not None else [(p.name, p.at) for p in m.places]
+    if shown:
+        stream.log("map/places", rr.Points2D([at for _, at in shown], labels=[name for name, _ in shown],
+                                             radii=0.1, colors=[[90, 90, 90]], draw_order=DRAW["places"]),
+                   static=True)
+
+
+def blueprint(m: Map, frame_ids: Sequence[str], panels: Sequence[tuple[str, str, str]] | None = None) -> Any:
+    """The default layout: the map view (left) and, on the right, time series.
+
+    By default two: every frame's room masses (``/metrics/rooms``: one series per frame and room)
+    and the effective sample sizes (``/metrics/ess``); ``panels`` gives others as (kind, name,
+    origin), kind ``series`` (a time series) or ``log`` (a text log)."""
+    import rerun.blueprint as rrb
+
+    view = rrb.Spatial2DView(name=f"map {m.name}", origin="/")  # framed on its content: the occupancy image
+    if panels is None:
+        panels = ([("series", "room mass per frame", "/metrics/rooms")] if frame_ids else []) + \
+            [("series", "effective sample size", "/metrics/ess")]
+    kinds = {"series": rrb.TimeSeriesView, "log": rrb.TextLogView}
+    shown = [kinds[kind](name=name, origin=origin) for kind, name, origin in panels]
+    return rrb.Blueprint(rrb.Horizontal(view, rrb.Vertical(*shown), column_shares=[3, 2]) if shown else view)

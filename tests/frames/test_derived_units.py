@@ -1,0 +1,82 @@
+"""Lexical units derived from the verb data (framelib/derived_units.yaml): they load, evoke the
+frame their FrameNet/VerbNet link names, keep the library valid, and their script rebuilds them."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import yaml
+
+from seal_cli.frames.library import Library
+from seal_cli.frames.reading import read_library
+from seal_cli.language.parser import parse_command
+
+ROOT = Path(__file__).resolve().parents[2]
+DERIVED = ROOT / "framelib" / "derived_units.yaml"
+FRAME = ("categories: {object: ~}\nframes:\n"
+         "  - frame: Give\n    lexical_units: [give, hand]\n    elements: {theme: {type: object}}\n")
+
+
+def test_every_derived_unit_has_its_source_and_evokes_its_frame(library: Library) -> None:
+    entries = yaml.safe_load(DERIVED.read_text())["lexical_units"]
+    assert entries, "the verb data gives some units"
+    for entry in entries:
+        assert entry["source"].startswith(f"propbank:{entry['unit'].replace(' ', '_')}.")
+        assert " -> FrameNet " in entry["source"] or " -> VerbNet " in entry["source"]
+        assert [f.name for f in library.evoked_by(entry["unit"])] == [entry["frame"]]
+
+
+@pytest.mark.parametrize(("command", "frame", "unit"), [
+    ("hand out the flyers to the guests", "Give", "hand out"),
+    ("slice up the bread with the big knife", "Slice", "slice up"),
+    ("give back the keys to Sam", "Give", "give back"),
+])
+def test_a_derived_unit_parses_as_its_frame(library: Library, command: str, frame: str, unit: str) -> None:
+    parse = parse_command(command, library)
+    assert (parse.frames[0].frame, parse.frames[0].lexical_unit) == (frame, unit)
+
+
+def test_the_standard_library_with_them_validates() -> None:
+    _, problems = read_library([ROOT / "framelib"])
+    assert problems == []
+
+
+def test_units_for_a_frame_of_another_file_join_it(tmp_path: Path) -> None:
+    (tmp_path / "give.yaml").write_text(FRAME)
+    (tmp_path / "more.yaml").write_text("lexical_units:\n  - {frame: Give, unit: pass on, source: mine}\n")
+    library, problems = read_library([tmp_path])
+    assert problems == []
+    assert [u.text for u in library.frame("Give").lexical_units] == ["give", "hand", "pass on"]
+
+
+@pytest.mark.parametrize(("units", "words", "line"), [
+    ("  - {frame: Gve, unit: pass on, source: mine}\n", "which no file defines (did you mean 'Give'?)", 2),
+    ("  - {frame: Give, unit: hand, source: mine}\n", "'hand' is already one of Give's", 2),
+    ("  - {frame: Give, unit: pass on, source: a}\n  - {frame: Give, unit: pass on, source: b}\n",
+     "'pass on' is already one of Give's", 3),
+    ("  - {frame: Give, unit: pass on}\n", "needs 'source'", 2),
+    ("  - {frame: Give, unit: pass on, source: a, weight: 2}\n", "weight", 2),
+    ("  - {frame: Give, unit: 'pass 2', source: a}\n", "one or more words of letters", 2),
+])
+def test_bad_units_are_problems_with_their_line(tmp_path: Path, units: str, words: str, line: int) -> None:
+    (tmp_path / "give.yaml").write_text(FRAME)
+    (tmp_path / "more.yaml").write_text("lexical_units:\n" + units)
+    library, problems = read_library([tmp_path])
+    assert len(problems) == 1 and words in problems[0].message, problems
+    assert (problems[0].file, problems[0].line) == (str(tmp_path / "more.yaml"), line)
+    assert "give" in [u.text for u in library.frame("Give").lexical_units]
+
+
+def test_the_build_script_reproduces_the_shipped_file(shared_data: Path) -> None:
+    run = subprocess.run([sys.executable, str(ROOT / "scripts" / "build_lexical_units.py"), "--check",
+                          "--data", str(shared_data)], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+
+
+def test_the_build_script_names_missing_data(tmp_path: Path) -> None:
+    run = subprocess.run([sys.executable, str(ROOT / "scripts" / "build_lexical_units.py"), "--data", str(tmp_path)],
+                         capture_output=True, text=True)
+    assert run.returncode == 1 and "propbank_rolesets.json: no such file" in run.stderr

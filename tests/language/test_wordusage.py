@@ -1,0 +1,162 @@
+"""Grounding statistics learned from a train split: the shipped table, how it changes grounding
+decisions (and when it must not), its file format, and that its script rebuilds it."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from seal_cli.errors import SealError
+from seal_cli.frames.library import Library
+from seal_cli.language.grounding import Vocabulary
+from seal_cli.language.parser import parse_command
+from seal_cli.language.wordusage import FORMAT, SHIPPED, WordUsage, load_word_usage, shipped_word_usage
+
+ROOT = Path(__file__).resolve().parents[2]
+RULES = WordUsage()
+
+
+def usage(counts: dict[str, dict[str, int]], universe: tuple[str, ...]) -> WordUsage:
+    return WordUsage(counts, frozenset(universe))
+
+
+TABLES = usage({"table": {"side_table": 10, "dining_table": 2, "coffee_table": 2}, "cup": {"mug": 9, "cup": 3},
+                "thing": {"box": 2, "cup": 2}, "rare": {"mug": 4}},
+               ("dining_table", "side_table", "coffee_table", "mug", "cup", "box"))
+
+
+def test_the_shipped_table_loads_with_its_source() -> None:
+    shipped = shipped_word_usage()
+    assert "sink_basin" in shipped.universe and "alarm_clock" in shipped.universe
+    assert shipped.sources and "ALFRED train" in shipped.sources[0]
+    assert shipped.seen["sink"]["sink_basin"] >= shipped.counts["sink"]["sink_basin"]   # said where it is
+    sink = shipped.counts["sink"]
+    assert max(sink, key=sink.__getitem__) == "sink_basin"      # people in THOR kitchens mean the basin
+
+
+def test_the_shipped_table_changes_a_grounding_decision() -> None:
+    vocab = Vocabulary.of(["Sink", "SinkBasin", "Chair", "ArmChair"])
+    assert vocab.ground_words(["sink"]) == "SinkBasin"           # learned: the rules said Sink
+    assert vocab.with_usage(RULES).ground_words(["sink"]) == "Sink"
+    assert vocab.ground_words(["chair"]) == "ArmChair"
+    assert Vocabulary.of(["Sink"]).ground_words(["sink"]) == "Sink"   # only among the classes present
+
+
+def test_it_changes_a_parse(library: Library) -> None:
+    vocab = Vocabulary.of(["ButterKnife", "Knife", "Sink", "SinkBasin"])
+    parse = parse_command("put the knife in the sink", library, vocab)
+    assert parse.frames[-1].elements["goal"].cls == "SinkBasin"
+    rules = parse_command("put the knife in the sink", library, vocab.with_usage(RULES))
+    assert rules.frames[-1].elements["goal"].cls == "Sink"
+
+
+def test_the_scene_decides_among_the_classes_it_holds() -> None:
+    vocab = Vocabulary.of(["DiningTable", "SideTable", "CoffeeTable"]).with_usage(TABLES)
+    assert vocab.ground_words(["table"]) == "SideTable"                      # 10 against the rules' 2
+    assert vocab.restricted_to(["DiningTable", "CoffeeTable"]).ground_words(["table"]) == "DiningTable"   # a tie
+    assert vocab.with_synonyms({"side_table": ["nightstand"]}).ground_words(["table"]) == "SideTable"     # kept
+
+
+def test_in_a_scene_a_class_is_judged_by_how_often_it_is_meant_where_it_is() -> None:
+    # dining tables are meant more often (10 against 6), but they are in most scenes (100 sayings of
+    # "table" where one was), side tables in few (20): where both are, people mean the side table
+    tables = WordUsage({"table": {"dining_table": 10, "side_table": 6}}, frozenset({"dining_table", "side_table"}),
+                       seen={"table": {"dining_table": 100, "side_table": 20}})
+    anywhere = Vocabulary.of(["DiningTable", "SideTable"]).with_usage(tables)
+    assert not anywhere.scene and anywhere.ground_words(["table"]) == "DiningTable"
+    scene = anywhere.restricted_to(["DiningTable", "SideTable"])
+    assert scene.scene and scene.ground_words(["table"]) == "SideTable"
+    assert scene.with_synonyms({"side_table": ["nightstand"]}).scene
+
+
+def test_the_rules_keep_what_the_data_does_not_make_clear() -> None:
+    vocab = Vocabulary.of(["Cup", "Mug", "Box", "CoffeeTable", "DiningTable"]).with_usage(TABLES)
+    assert vocab.ground_words(["cup"]) == "Mug"                   # 9 against 3
+    assert vocab.ground_words(["rare"]) is None                   # 4 observations: too few
+    assert vocab.ground_words(["coffee", "table"]) == "CoffeeTable"   # the rules matched more words than "table"
+    assert vocab.ground_words(["red", "cup"]) == "Mug"            # the head's wording when the pair is unknown
+
+
+def test_a_class_the_statistics_never_saw_is_not_overridden() -> None:
+    vocab = Vocabulary.of(["table", "SideTable"]).with_usage(TABLES)     # a GPSR arena's "table"
+    assert vocab.ground_words(["table"]) == "table"
+
+
+def test_a_phrase_the_rules_cannot_ground_takes_the_clear_majority() -> None:
+    counts = usage({"bin": {"garbage_can": 8, "box": 1}, "stuff": {"box": 7, "cup": 5}, "glass": {"cup": 90, "box": 2}},
+                   ("garbage_can", "box", "cup"))
+    vocab = Vocabulary.of(["GarbageCan", "Box", "Cup"]).with_usage(counts)
+    assert vocab.with_usage(RULES).ground_words(["stuff"]) is None
+    assert vocab.ground_words(["stuff"]) == "Box"                  # 7 of 12
+    assert vocab.ground_words(["bin"]) == "GarbageCan"
+    solo = Vocabulary.of(["Box", "Cup"]).with_usage(usage({"stuff": {"box": 6, "cup": 8}}, ("box", "cup")))
+    assert solo.ground_words(["stuff"]) == "Cup"
+    # no cup here: the two who meant a box by "glass" are too few to call a box a glass
+    assert Vocabulary.of(["Box"]).restricted_to(["Box"]).with_usage(counts).ground_words(["glass"]) is None
+
+
+def test_tables_in_a_folder_add_up(tmp_path: Path) -> None:
+    for name, n in (("a.json", 3), ("b.json", 4)):
+        (tmp_path / name).write_text(json.dumps({"format": FORMAT, "classes": ["Mug", "Cup"],
+                                                 "words": {"cup": {"Mug": n}}}))
+    merged = load_word_usage([tmp_path])
+    assert merged.counts["cup"]["mug"] == 7 and merged.universe == {"mug", "cup"}
+    assert Vocabulary.of(["Cup", "Mug"]).with_usage(merged).ground_words(["cup"]) == "Mug"
+
+
+@pytest.mark.parametrize(("content", "words"), [
+    ('{"format": "other"}', "not a word-class table"),
+    ('{"format": "seal-word-classes/1", "classes": "Mug", "words": {}}', '"classes" must be a list'),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": []}', '"words" must map'),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {"cup": {"Mug": 0}}}', "positive count"),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {"cup": {"Mug": true}}}', "positive count"),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {"cup": {"Cup": 2}}}', "'Cup' is not in"),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "seen": {"cup": {"Cup": 2}}}',
+     "seen 'cup': expected"),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "seen": []}', '"seen" must map'),
+])
+def test_bad_tables_are_clear_errors(tmp_path: Path, content: str, words: str) -> None:
+    path = tmp_path / "bad.json"
+    path.write_text(content)
+    with pytest.raises(SealError, match=words) as err:
+        load_word_usage([path])
+    assert err.value.file == str(path)
+
+
+def test_a_table_that_is_no_json_names_its_line_and_column(tmp_path: Path) -> None:
+    path = tmp_path / "bad.json"
+    path.write_text('{"format": "seal-word-classes/1",\n  "classes": [oops]}')
+    with pytest.raises(SealError, match="not JSON") as err:
+        load_word_usage([path])
+    assert (err.value.file, err.value.line, err.value.column) == (str(path), 2, 15)
+    with pytest.raises(SealError):
+        load_word_usage([tmp_path / "missing.json"])
+
+
+def test_the_build_script_reproduces_the_shipped_table(shared_data: Path, tmp_path: Path) -> None:
+    """Rebuilt from the train split, the table says what the shipped one says. The counts come from
+    parses, so a change of the parser moves a few of them (rebuild with the script, or check exactly
+    with ``--check``); what the table decides must not move: the most-meant class of every wording
+    said 20 times or more, and the total within 1 %."""
+    out = tmp_path / "rebuilt.json"
+    run = subprocess.run([sys.executable, str(ROOT / "scripts" / "build_word_classes.py"), "--out", str(out),
+                          "--data", str(shared_data)], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    shipped, rebuilt = (json.loads(p.read_text()) for p in (SHIPPED / "alfred_train.json", out))
+    assert shipped["classes"] == rebuilt["classes"] and shipped["source"] == rebuilt["source"]
+    old, new = shipped["words"], rebuilt["words"]
+    for wording, by_class in old.items():
+        if sum(by_class.values()) >= 20:
+            assert max(by_class, key=by_class.__getitem__) == max(new[wording], key=new[wording].__getitem__), wording
+    total_old, total_new = (sum(sum(c.values()) for c in t.values()) for t in (old, new))
+    assert abs(total_old - total_new) <= 0.01 * total_old
+
+
+def test_the_build_script_names_missing_data(tmp_path: Path) -> None:
+    run = subprocess.run([sys.executable, str(ROOT / "scripts" / "build_word_classes.py"), "--data", str(tmp_path)],
+                         capture_output=True, text=True)
+    assert run.returncode == 1 and "goals_train.tsv: no such file" in run.stderr and "Traceback" not in run.stderr

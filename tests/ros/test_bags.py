@@ -1,0 +1,196 @@
+"""Reading a robot's run out of bags that the tests write with rosbags: every format, every pose source,
+transforms chained and interpolated, and each kind of bad bag refused with one clear message."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+pytest.importorskip("rosbags")
+
+from seal_cli.errors import SealError  # noqa: E402
+from seal_cli.ros.bags import read_run  # noqa: E402
+from seal_cli.ros.grids import read_occupancy_grid  # noqa: E402
+from seal_cli.ros.messages import POSE_STAMPED  # noqa: E402
+from seal_cli.ros.writing import pose_stamped, write_bag  # noqa: E402
+from tests.ros.bagfiles import occupancy_grid, run_messages, store_for, write_run  # noqa: E402
+
+POSES = [(10.0 + 0.5 * i, -6.0 + 0.1 * i, -3.0, 0.1 * i) for i in range(20)]
+"""(t, x, y, yaw): base_link in map, along the living room, turning."""
+LOOKS = [(10.25 + i, "map", [("spoon", 7.0, -5.0, 0.8)]) for i in range(5)] + [(15.3, "base_link", [("cup", 1.0, 0.0,
+                                                                                                        0.5)])]
+NAMES = ["run.mcap", "run_db3", "run.bag"]
+"""A single MCAP file, a ROS 2 sqlite3 folder, a ROS 1 bag."""
+
+
+def expected_pose(t: float) -> tuple[float, float, float]:
+    f = (t - 10.0) / 0.5
+    return (-6.0 + 0.1 * f, -3.0, 0.1 * f)
+
+
+def looks_for(name: str) -> list:
+    """ROS 1's vision_msgs carry integer class ids: 1 stands for spoon, 2 for cup."""
+    if not name.endswith(".bag"):
+        return LOOKS
+    return [(t, frame, [({"spoon": 1, "cup": 2}[c], x, y, z) for c, x, y, z in seen]) for t, frame, seen in LOOKS]
+
+
+@pytest.mark.parametrize("source", ["pose", "odom", "tf"])
+@pytest.mark.parametrize("name", NAMES)
+def test_every_format_and_pose_source_gives_the_same_run(tmp_path: Path, name: str, source: str) -> None:
+    bag = write_run(tmp_path / name, POSES, looks_for(name), pose_source=source, odom=(1.0, 2.0, 0.5))
+    run = read_run(bag)
+    assert run.pose_source == {"pose": "/robot_pose", "odom": "/odom", "tf": "/tf"}[source]
+    assert run.detections_topic == "/detections" and run.skipped == 0
+    assert run.stamps == pytest.approx([t for t, _, _ in LOOKS])
+    for obs, (t, _, _) in zip(run.observations, LOOKS, strict=True):
+        assert obs.pose == pytest.approx(expected_pose(t), abs=1e-5)  # interpolated (nlerp) between two poses
+    spoon = "1" if name.endswith(".bag") else "spoon"
+    assert run.observations[0].detections == ((spoon, pytest.approx((7.0, -5.0))),)
+    # the cup was seen 1 m ahead of the robot: carried into the map through the pose at 15.3 s
+    x, y, yaw = expected_pose(15.3)
+    cls, at = run.observations[-1].detections[0]
+    assert cls == ("2" if name.endswith(".bag") else "cup")
+    assert at == pytest.approx((x + math.cos(yaw), y + math.sin(yaw)), abs=1e-5)
+
+
+def test_detection_2d_positions_come_from_the_hypothesis_pose(tmp_path: Path) -> None:
+    bag = write_run(tmp_path / "run.mcap", POSES, LOOKS, three_d=False)
+    run = read_run(bag)
+    assert run.observations[0].detections == (("spoon", pytest.approx((7.0, -5.0))),)
+
+
+def test_detections_in_a_camera_frame_are_chained_through_tf(tmp_path: Path) -> None:
+    """base_link → camera is static, 0.2 m ahead and turned left by 90°; odom → base_link moves."""
+    from seal_cli.ros.messages import TF
+    from tests.ros.bagfiles import tf_message
+
+    path = tmp_path / "run.mcap"
+    messages = run_messages(path, POSES, [(12.0, "camera", [("cup", 1.0, 0.0, 0.0)])], pose_source="tf")
+    store = store_for(path)
+    messages.insert(0, ("/tf_static", TF, 10.0, tf_message(store, 10.0, [("base_link", "camera", 0.2, 0.0,
+                                                                           math.pi / 2)], False)))
+    write_bag(path, messages, store)
+    run = read_run(path)
+    x, y, yaw = expected_pose(12.0)
+    ahead = (x + 0.2 * math.cos(yaw), y + 0.2 * math.sin(yaw))
+    assert run.observations[0].detections[0][1] == pytest.approx((ahead[0] - math.sin(yaw), ahead[1] + math.cos(yaw)))
+
+
+def test_an_empty_detection_array_is_a_look_that_saw_nothing(tmp_path: Path) -> None:
+    bag = write_run(tmp_path / "run.mcap", POSES, [(11.0, "map", [])])
+    assert read_run(bag).observations[0].detections == ()
+
+
+def test_detections_outside_the_poses_time_are_skipped(tmp_path: Path) -> None:
+    bag = write_run(tmp_path / "run.mcap", POSES, [(10.5, "map", []), (10.0 - 0.3, "map", []), (40.0, "map", [])])
+    run = read_run(bag)
+    assert run.skipped == 1 and run.stamps == pytest.approx([9.7, 10.5])  # within 0.5 s: held at the first pose
+    assert run.observations[0].pose == pytest.approx(expected_pose(10.0))
+
+
+def test_a_topic_named_explicitly_is_used(tmp_path: Path) -> None:
+    path = tmp_path / "run.mcap"
+    messages = run_messages(path, POSES, LOOKS)
+    store = store_for(path)
+    messages += [("/other_pose", POSE_STAMPED, t, pose_stamped(store, t, "map", 0.0, 0.0, 0.0, False))
+                 for t, *_ in POSES]
+    write_bag(path, sorted(messages, key=lambda m: m[2]), store)
+    with pytest.raises(SealError, match="several robot pose topics .*/other_pose, /robot_pose.*--pose-topic"):
+        read_run(path)
+    assert read_run(path, pose_topic="/other_pose").observations[0].pose == (0.0, 0.0, 0.0)
+
+
+# -- bad bags ----------------------------------------------------------------------------------------
+def message_of(path: Path, **kwargs: object) -> str:
+    with pytest.raises(SealError) as caught:
+        read_run(path, **kwargs)  # type: ignore[arg-type]
+    return str(caught.value)
+
+
+def test_not_a_bag(tmp_path: Path) -> None:
+    (tmp_path / "notes.bag").write_text("not a bag\n")
+    assert "cannot read this as a ROS bag" in message_of(tmp_path / "notes.bag")
+    (tmp_path / "cut.mcap").write_bytes(b"\x89MCAP0\r\n" + b"\x00" * 10)
+    assert "cannot read this as a ROS bag" in message_of(tmp_path / "cut.mcap")
+    assert message_of(tmp_path / "absent.mcap").endswith("no such bag")
+
+
+def test_missing_topics(tmp_path: Path) -> None:
+    bag = write_run(tmp_path / "run.mcap", POSES, LOOKS)
+    assert "no topic /camera/detections in the bag (its topics: /detections (vision_msgs/msg/Detection3DArray)" \
+        in message_of(bag, detections_topic="/camera/detections")
+    assert "/detections holds vision_msgs/msg/Detection3DArray, not robot pose" in message_of(bag,
+                                                                                               pose_topic="/detections")
+    only_poses = tmp_path / "poses.mcap"
+    write_bag(only_poses, [m for m in run_messages(only_poses, POSES, LOOKS) if m[0] != "/detections"])
+    assert "the bag has no detection topic" in message_of(only_poses)
+
+
+def test_unknown_frames(tmp_path: Path) -> None:
+    bag = write_run(tmp_path / "run.mcap", POSES, [(11.0, "camera", [("cup", 1.0, 0.0, 0.0)])], pose_source="tf")
+    assert "cannot carry the detections on frame 'camera' into 'map': frame 'camera' is not in the transforms " \
+           "(known frames: base_link, map, odom)" in message_of(bag)
+    assert "the transforms do not place 'base_link' in 'world'" in message_of(bag, frame="world")
+
+
+def test_clock_jumps(tmp_path: Path) -> None:
+    """The third detection message is logged at 14 s, but its header says 2 s."""
+    from seal_cli.ros.messages import DETECTION_3D
+    from tests.ros.bagfiles import detections
+
+    bag = tmp_path / "run.mcap"
+    store = store_for(bag)
+    messages = run_messages(bag, POSES, [(12.0, "map", []), (13.0, "map", [])])
+    messages.append(("/detections", DETECTION_3D, 14.0, detections(store, 2.0, "map", [], False)))
+    write_bag(bag, sorted(messages, key=lambda m: m[2]), store)
+    assert "the clock of /detections jumps back 11.000 s at message 3" in message_of(bag)
+
+
+def test_poses_and_detections_on_different_clocks(tmp_path: Path) -> None:
+    bag = write_run(tmp_path / "run.mcap", POSES, [(1.7e9 + t, "map", []) for t, _, _ in LOOKS])
+    assert "no message on /detections falls within the poses' time span [10.000, 19.500] s" in message_of(bag)
+    assert "different clocks" in message_of(bag)
+
+
+def test_a_grid_is_read_with_its_origin_and_rows(tmp_path: Path) -> None:
+    path = tmp_path / "map.mcap"
+    values = np.zeros((4, 6), np.int8)
+    values[0, :] = 100  # the lowest row is a wall
+    values[3, 5] = -1
+    store = store_for(path)
+    write_bag(path, [("/map", "nav_msgs/msg/OccupancyGrid", 1.0,
+                      occupancy_grid(store, 1.0, values, 0.5, (-1.0, -2.0, 0.0), False))], store)
+    grid = read_occupancy_grid(path)
+    assert grid.values.tolist() == values.tolist() and grid.resolution == 0.5 and grid.origin == (-1.0, -2.0, 0.0)
+    with pytest.raises(SealError, match="no topic /costmap in the bag \\(its occupancy grids: /map\\)"):
+        read_occupancy_grid(path, "/costmap")
+
+
+def test_a_single_moving_pose_places_only_what_is_near_its_stamp(tmp_path: Path) -> None:
+    """One message on /tf is not a static transform: detections far from its stamp are not placed at it."""
+    bag = write_run(tmp_path / "run.mcap", POSES[:1], [(10.2, "map", []), (30.0, "map", [])], pose_source="tf")
+    run = read_run(bag)
+    assert run.stamps == pytest.approx([10.2]) and run.skipped == 1
+
+
+def test_a_localiser_pose_over_odometry_transforms_carries_robot_frame_detections(tmp_path: Path) -> None:
+    """/robot_pose in map (a localiser), /tf only odom → base_link (drifted 1 m off): a detection in base_link
+    reaches map through the localiser's pose, not through the drifted odometry."""
+    from seal_cli.ros.messages import TF
+    from tests.ros.bagfiles import tf_message
+
+    path = tmp_path / "run.mcap"
+    store = store_for(path)
+    messages = run_messages(path, POSES, [(12.0, "base_link", [("cup", 1.0, 0.0, 0.0)])], pose_source="pose")
+    messages += [("/tf", TF, t, tf_message(store, t, [("odom", "base_link", x + 1.0, y, yaw)], False))
+                 for t, x, y, yaw in POSES]
+    write_bag(path, sorted(messages, key=lambda m: m[2]), store)
+    run = read_run(path)
+    assert run.pose_source == "/robot_pose"
+    x, y, yaw = expected_pose(12.0)
+    assert run.observations[0].pose == pytest.approx((x, y, yaw), abs=1e-5)
+    assert run.observations[0].detections[0][1] == pytest.approx((x + math.cos(yaw), y + math.sin(yaw)), abs=1e-5)

@@ -1,0 +1,190 @@
+"""``seal localize --bag`` / ``--goals`` and ``seal import-bag`` on bags the tests write: the beliefs follow
+the bag's detections, the goals read back as PoseStamped, and bad input exits 1 with one message and no file."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import pytest
+import yaml
+from typer.testing import CliRunner
+
+pytest.importorskip("rosbags")
+
+from seal_cli.cli import app  # noqa: E402
+from seal_cli.sensing.observations import read_observations  # noqa: E402
+from tests.ros.bagfiles import write_run  # noqa: E402
+
+runner = CliRunner()
+PATH = [(-6.0, -3.0), (-1.0, -2.5), (2.5, -4.7), (5.0, -4.5), (7.0, -3.0)]
+"""From the living room into the kitchen, where the spoon lies on the counter at (8.3, -4.1)."""
+
+
+def poses(n: int = 50) -> list[tuple[float, float, float, float]]:
+    out = []
+    for i in range(n):
+        f = i / (n - 1) * (len(PATH) - 1)
+        k = min(int(f), len(PATH) - 2)
+        (x0, y0), (x1, y1) = PATH[k], PATH[k + 1]
+        u = f - k
+        out.append((100.0 + i * 0.2, x0 + u * (x1 - x0), y0 + u * (y1 - y0), 0.0))
+    return out
+
+
+def kitchen_run(path: Path) -> Path:
+    """Detections every second; the spoon seen (in base_link) once the robot is within 5 m of it (in a ROS 1
+    bag, as class id 44, COCO's spoon)."""
+    track = poses()
+    looks = []
+    for t, x, y, _ in track[::5]:
+        near = (8.3 - x) ** 2 + (-4.1 - y) ** 2 < 4.5 ** 2
+        spoon = 44 if path.suffix == ".bag" else "spoon"
+        looks.append((t + 0.1, "base_link", [(spoon, 8.3 - x, -4.1 - y, 0.9)] if near else []))
+    return write_run(path, track, looks, pose_source="tf")
+
+
+def invoke(*args: str) -> Any:
+    return runner.invoke(app, list(args))
+
+
+def localize(*args: str) -> dict[str, Any]:
+    result = invoke("localize", "--map", "apartment", "--task", "stir the cup", "--steps", "0", *args, "--json")
+    assert result.exit_code == 0, result.output
+    return json.loads(result.stdout)
+
+
+@pytest.mark.parametrize("name", ["run.mcap", "run.bag"])
+def test_localize_from_a_bag_believes_what_it_saw(tmp_path: Path, name: str) -> None:
+    labels = tmp_path / "labels.yaml"
+    labels.write_text("{44: spoon, 47: cup}\n")
+    data = localize("--bag", str(kitchen_run(tmp_path / name)), "--labels", str(labels))
+    assert data["updates"] == 10
+    spoon = next(o for o in data["objects"] if o["class"] == "spoon")
+    assert spoon["rooms"]["kitchen"] > 0.95  # seen on the counter; the bedroom's prior is gone
+    assert abs(spoon["best"][0] - 8.3) < 0.5 and abs(spoon["best"][1] + 4.1) < 0.5
+
+
+def test_import_bag_gives_the_same_beliefs_as_the_bag(tmp_path: Path) -> None:
+    bag = kitchen_run(tmp_path / "run.mcap")
+    out = tmp_path / "observations.yaml"
+    result = invoke("import-bag", str(bag), "-o", str(out))
+    assert result.exit_code == 0, result.output
+    observations = read_observations(out)
+    assert len(observations) == 10 and observations[-1].detections[0][0] == "spoon"
+    assert localize("--observations", str(out)) == localize("--bag", str(bag))
+
+
+@pytest.mark.parametrize("name", ["goals.yaml", "goals.mcap", "goals.bag", "goals_db3"])
+def test_goals_read_back_as_pose_stamped(tmp_path: Path, name: str) -> None:
+    bag = kitchen_run(tmp_path / "run.mcap")
+    target = tmp_path / name
+    data = localize("--bag", str(bag), "--goals", str(target))
+    best = {f["frame"]: f["best"] for f in data["frames"]}
+    if name.endswith(".yaml"):
+        document = yaml.safe_load(target.read_text())
+        assert document["frame_id"] == "map"
+        goals = [(g["frame"], g["pose"]) for g in document["goals"]]
+        assert [g for g, _ in goals] == ["pick_spoon", "stir_cup_spoon"]
+        assert [v for _, p in goals for v in p[:2]] == pytest.approx([*best["Pick"], *best["Stir"]], abs=1e-3)
+        return
+    from rosbags.highlevel import AnyReader
+
+    from seal_cli.ros.messages import typestore
+    from seal_cli.ros.transforms import quaternion_yaw
+
+    with AnyReader([target], default_typestore=typestore(name.endswith(".bag"))) as reader:
+        assert [(c.topic, c.msgtype) for c in reader.connections] == [("/goal_pose", "geometry_msgs/msg/PoseStamped")]
+        messages = [reader.deserialize(raw, c.msgtype) for c, _, raw in reader.messages()]
+    assert [m.header.frame_id for m in messages] == ["map", "map"]
+    assert [v for m in messages for v in (m.pose.position.x, m.pose.position.y)] == pytest.approx(
+        [*best["Pick"], *best["Stir"]], abs=1e-3)
+    q = messages[0].pose.orientation
+    yaw = float(quaternion_yaw([[q.x, q.y, q.z, q.w]])[0])
+    assert -3.2 < yaw < 3.2 and abs(q.x) + abs(q.y) < 1e-9  # a turn about z only
+
+
+# -- bad input: one message, exit 1, no file --------------------------------------------------------
+def refused(*args: str, out: Path | None = None) -> str:
+    result = invoke(*args)
+    assert result.exit_code == 1, result.output
+    assert "Traceback" not in result.output
+    lines = [line for line in result.stderr.splitlines() if line.startswith("error:")]
+    assert len(lines) == 1, result.stderr
+    if out is not None:
+        assert not out.exists() and not [p for p in out.parent.iterdir() if p.name.startswith(f".{out.name}")]
+    return lines[0]
+
+
+def test_bad_bags_are_refused(tmp_path: Path) -> None:
+    (tmp_path / "notes.mcap").write_text("hello\n")
+    out = tmp_path / "obs.yaml"
+    assert "cannot read this as a ROS bag" in refused("import-bag", str(tmp_path / "notes.mcap"), "-o", str(out),
+                                                      out=out)
+    bag = kitchen_run(tmp_path / "run.mcap")
+    assert "no topic /dets in the bag" in refused("import-bag", str(bag), "-o", str(out), "--detections-topic",
+                                                  "/dets", out=out)
+    assert "'world'" in refused("import-bag", str(bag), "-o", str(out), "--frame", "world", out=out)
+    assert "is the bag itself" in refused("import-bag", str(bag), "-o", str(bag))
+    assert bag.is_file()
+
+
+def test_bad_labels_are_refused_at_their_line(tmp_path: Path) -> None:
+    bag = kitchen_run(tmp_path / "run.bag")
+    labels = tmp_path / "labels.yaml"
+    labels.write_text("44: spoon\n47: [cup, mug]\n")
+    assert refused("import-bag", str(bag), "-o", str(tmp_path / "o.yaml"), "--labels", str(labels)) == \
+        f"error: {labels}:2:5: the label of 47 must be a single value, not a list"
+
+
+def test_localize_refuses_conflicting_and_dangling_options(tmp_path: Path) -> None:
+    bag = kitchen_run(tmp_path / "run.mcap")
+    assert "not both --observations and --bag" in refused("localize", "--map", "apartment", "--bag", str(bag),
+                                                     "--observations", str(bag))
+    assert "give --bag too" in refused("localize", "--map", "apartment", "--pose-topic", "/odom")
+    goals = tmp_path / "goals.yaml"
+    assert "give --task" in refused("localize", "--map", "apartment", "--bag", str(bag), "--goals", str(goals),
+                                    out=goals)
+    rrd = tmp_path / "out.rrd"
+    message = refused("localize", "--map", "apartment", "--task", "stir the cup", "--bag", str(bag),
+                      "--detections-topic", "/nope", "--rrd", str(rrd), out=rrd)
+    assert "no topic /nope" in message
+    assert "folder" in refused("localize", "--map", "apartment", "--task", "stir the cup", "--bag", str(bag),
+                               "--goals", str(tmp_path / "missing" / "goals.yaml"))
+    before = bag.read_bytes()
+    assert "is an input or another output of the run" in refused("localize", "--map", "apartment", "--task",
+                                                                 "stir the cup", "--bag", str(bag), "--goals", str(bag))
+    assert bag.read_bytes() == before
+
+
+def test_without_rosbags_the_way_out_is_named(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    import sys
+
+    monkeypatch.setitem(sys.modules, "rosbags", None)  # import rosbags now raises ImportError
+    message = refused("import-bag", str(tmp_path / "run.mcap"), "-o", str(tmp_path / "o.yaml"))
+    assert "pip install 'seal[ros]'" in message
+
+
+def test_validate_reads_the_occupancy_from_the_bag(tmp_path: Path) -> None:
+    from tests.ros.test_occupancy_bag import apartment_with, saved_as_message
+
+    saved_as_message(tmp_path)
+    good = apartment_with(tmp_path, "occupancy: mapping.mcap")
+    assert invoke("validate", str(good)).exit_code == 0
+    bad = apartment_with(tmp_path, "occupancy: {bag: mapping.mcap, topic: /nope}")
+    result = invoke("validate", str(bad))
+    assert result.exit_code == 1 and "no topic /nope in the bag" in result.output
+
+
+def test_bench_ros_reads_and_filters_every_message() -> None:
+    result = invoke("bench", "ros", "--format", "mcap", "--format", "ros1", "--poses", "60", "--messages", "12",
+                    "--json")
+    assert result.exit_code == 0, result.output
+    runs = json.loads(result.stdout)["runs"]
+    assert [r["format"] for r in runs] == ["mcap", "ros1"]
+    for r in runs:
+        assert (r["poses"], r["messages"], r["updates"], r["frames"], r["objects"]) == (60, 12, 12, 3, 2)
+        assert r["detections"] > 0 and r["updates_per_s"] > 0  # the loop passes the spoon and the cup
+    assert runs[0]["detections"] == runs[1]["detections"]  # ROS 1's integer ids name the same classes
+    assert "unknown format" in refused("bench", "ros", "--format", "ros3")

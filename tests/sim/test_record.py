@@ -1,0 +1,46 @@
+"""``seal run --rrd``: the same scene as ``seal localize --rrd`` (map image, class colours, layout), read back."""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from pathlib import Path
+from typing import Any
+
+import pytest
+from typer.testing import CliRunner
+
+from seal_cli.cli import app
+
+rr = pytest.importorskip("rerun")
+
+
+def entities(path: Path, store: Any = None) -> dict[str, list[dict[str, Any]]]:
+    out: dict[str, list[dict[str, Any]]] = defaultdict(list)
+    for chunk in rr.chunk.RrdReader(str(path)).stream(store=store).to_chunks():
+        batch = chunk.to_record_batch()
+        table = batch.select([n for n in batch.schema.names if n not in ("log_time", "log_tick")]).to_pydict()
+        for i in range(chunk.num_rows):
+            out[str(chunk.entity_path)].append({k: v[i] for k, v in table.items()})
+    return out
+
+
+def test_run_recording_shares_the_localize_scene(tmp_path: Path) -> None:
+    rrd = tmp_path / "run.rrd"
+    result = CliRunner().invoke(app, ["run", "--map", "apartment", "stir the cup", "--rrd", str(rrd),
+                                      "--particles", "100"])
+    assert result.exit_code == 0, result.output
+    logged = entities(rrd)
+    (occupancy,) = logged["/map/occupancy"]
+    assert occupancy["EncodedImage:media_type"] == ["image/png"]
+    (context,) = logged["/"]
+    labels = [c["class_description"]["info"]["label"] for c in context["AnnotationContext:context"][0]]
+    assert "stir_cup_spoon" in labels and "spoon" in labels
+    ids = {c["class_description"]["info"]["label"]: c["class_id"] for c in context["AnnotationContext:context"][0]}
+    assert all(r["Points2D:class_ids"] == [ids["spoon"]] for r in logged["/objects/spoon/particles"])
+    assert logged["/robot/log"] and logged["/metrics/path_m"][-1]["Scalars:scalars"][0] > 0
+    rooms = logged["/metrics/rooms/stir_cup_spoon"]
+    assert all(sum(r["Scalars:scalars"]) == pytest.approx(1.0) for r in rooms)
+    (blueprint,) = rr.chunk.RrdReader(str(rrd)).blueprints()
+    names = {r["ViewBlueprint:display_name"][0] for found in entities(rrd, blueprint).values() for r in found
+             if "ViewBlueprint:display_name" in r}
+    assert {"map apartment", "path (m)", "what the robot did"} <= names
