@@ -99,9 +99,11 @@ def _shipped(name: str) -> Path:
 
 
 def _aws(folder: Path, data: Path) -> Path:
-    from seal_cli.bench.houses import aws_house
+    from seal_cli.bench.houses import AWS_ITEMS, AWS_OBJECTS, AWS_PEOPLE, AWS_PLACES, PAPER_PRIORS, aws_house
 
-    return aws_house(folder, data, "wings", AWS_ROBOT, furnished=True)
+    priors = {**PAPER_PRIORS, "apple": {"fridge": 0.5, "kitchen": 0.3}, "book": {"desk": 0.5, "bedroom": 0.3}}
+    return aws_house(folder, data, "wings", AWS_ROBOT, priors=priors, objects=[*AWS_OBJECTS, *AWS_ITEMS],
+                     places=AWS_PLACES, people=AWS_PEOPLE)
 
 
 def plan_steps(case: Case, the_map: Any, library: Any) -> tuple[bool, str]:

@@ -126,13 +126,12 @@ def aws_house(folder: Path, data: Path, layout: str, robot: tuple[float, float, 
               priors: Mapping[str, Mapping[str, float]] = PAPER_PRIORS,
               objects: Sequence[Mapping[str, object]] = AWS_OBJECTS,
               places: Sequence[Mapping[str, object]] = (), name: str | None = None,
-              furnished: bool = False) -> Path:
+              people: Sequence[Mapping[str, object]] = ()) -> Path:
     """Write an annotated map of the AWS house into ``folder`` (the image stays where the shared data is:
     ``data`` is the shared data folder, ``../shared/data`` from a checkout); by default the paper's
     priors and objects and no places (the context suite gives :data:`AWS_CONTEXT_PRIORS`,
-    :data:`AWS_CONTEXT_PLACES` and :data:`CONTEXT_OBJECTS`). ``furnished`` adds its places
-    (:data:`AWS_PLACES`), people (:data:`AWS_PEOPLE`), an apple and a book (:data:`AWS_ITEMS`) and priors
-    for them (the end-to-end suite's house)."""
+    :data:`AWS_CONTEXT_PLACES` and :data:`CONTEXT_OBJECTS`; the end-to-end suite :data:`AWS_PLACES`,
+    :data:`AWS_PEOPLE` and :data:`AWS_ITEMS`)."""
     name = name or f"aws_{layout}"
     doc = {"image": str((data / "maps" / "aws_small_house" / "map.pgm").resolve()), "resolution": 0.05,
            "origin": [-12.5, -12.5, 0.0], "negate": 0, "occupied_thresh": 0.65, "free_thresh": 0.196,
@@ -140,11 +139,8 @@ def aws_house(folder: Path, data: Path, layout: str, robot: tuple[float, float, 
            "places": [dict(p) for p in places], "priors": {c: dict(m) for c, m in priors.items()},
            "objects": [dict(o) for o in objects], "robot": {"pose": list(robot)},
            "sensor": {"range": 5.0, "fov": 360}}
-    if furnished:
-        doc.update(places=[dict(p) for p in AWS_PLACES], people=[dict(p) for p in AWS_PEOPLE],
-                   objects=[*AWS_OBJECTS, *AWS_ITEMS],
-                   priors={**PAPER_PRIORS, "apple": {"fridge": 0.5, "kitchen": 0.3}, "book": {"desk": 0.5,
-                                                                                             "bedroom": 0.3}})
+    if people:
+        doc["people"] = [dict(p) for p in people]
     path = folder / f"{name}.yaml"
     path.write_text(yaml.safe_dump(doc, sort_keys=False))
     return path

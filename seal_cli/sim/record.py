@@ -160,11 +160,18 @@ def _draw_run(ax: Any, agent: Agent) -> None:
     trail = np.asarray(agent.world.robot.trajectory)
     ax.plot(trail[:, 0], trail[:, 1], "-", color="#1f77b4", linewidth=2, zorder=4, label="path")
     ax.plot(*trail[0], "o", color="#1f77b4", markersize=8, zorder=5)
-    for record in agent.records:
-        if record.kind == "act":
-            ax.plot(record.pose[0], record.pose[1], "D", color="#2ca02c", markersize=6, zorder=6)
-            ax.annotate(record.text, record.pose[:2], xytext=(4, 4), textcoords="offset points", fontsize=6,
-                        color="#2ca02c", zorder=6)
+    stood: dict[tuple[float, float], list[str]] = {}      # where the robot stood for each action, numbered
+    acts = [r for r in agent.records if r.kind == "act"]
+    for n, record in enumerate(acts, 1):
+        stood.setdefault((round(record.pose[0], 2), round(record.pose[1], 2)), []).append(f"{n}. {record.text}")
+    for at, texts in stood.items():
+        ax.plot(at[0], at[1], "D", color="#2ca02c", markersize=6, zorder=6)
+        ax.annotate("\n".join(texts), at, xytext=(4, 4), textcoords="offset points", fontsize=6,
+                    color="#2ca02c", zorder=6)
     for item in agent.world.items.values():
-        if item.movable:
+        if item.key == "person" and not item.movable:     # the people, and the speaker ("me")
+            ax.plot(*item.at, "^", markersize=7, color="#9467bd", zorder=5)
+            ax.annotate(item.id, item.at, xytext=(4, -8), textcoords="offset points", fontsize=6,
+                        color="#9467bd", zorder=5)
+        elif item.movable:
             ax.plot(*agent.world.position(item.id), "*", markersize=6, color="#d62728", zorder=3)
