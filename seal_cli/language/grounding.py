@@ -206,6 +206,11 @@ class Vocabulary:
                     break
         if words and not of and end == len(words) and words[-1] not in PORTIONS:
             found = self._usage.choose(words, self._present, found, self.scene)
+        elif end == len(words) and words and words[-1] in PORTIONS:   # "the left side of the sink",
+            whole = of or words[:-1]                                     # "a chair seat": the whole decides
+            if whole and whole[-1] not in PORTIONS and (
+                    found == self._ground(whole, len(whole), ()) or not self._usage.meant(found)):
+                found = self._usage.choose(whole, self._present, found, self.scene)
         return found
 
     def _ground(self, words: tuple[str, ...], end: int, of: tuple[str, ...]) -> str | None:

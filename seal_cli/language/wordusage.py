@@ -27,7 +27,7 @@ from __future__ import annotations
 import json
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
-from functools import cache
+from functools import cache, cached_property
 from pathlib import Path
 from types import MappingProxyType
 from typing import Any
@@ -93,6 +93,15 @@ class WordUsage:
         return WordUsage(add(self.counts, other.counts), self.universe | other.universe,
                          self.sources + other.sources, self.min_support, self.min_ratio,
                          add(self.seen, other.seen))
+
+    @cached_property
+    def _meant(self) -> frozenset[str]:
+        return frozenset(key for by_class in self.counts.values() for key in by_class)
+
+    def meant(self, cls: str | None) -> bool:
+        """Whether anybody in the counts meant this class (by any wording): a class nobody meant (THOR's
+        ``ToiletPaperRoll``, beside the ``ToiletPaper`` people call a roll) is no evidence against the data."""
+        return cls is not None and class_key(cls) in self._meant
 
     def choose(self, lemmas: tuple[str, ...], present: Mapping[str, str], rule: str | None,
                scene: bool = False) -> str | None:

@@ -106,6 +106,22 @@ def test_a_phrase_the_rules_cannot_ground_takes_the_clear_majority() -> None:
     assert Vocabulary.of(["Box"]).restricted_to(["Box"]).with_usage(counts).ground_words(["glass"]) is None
 
 
+def test_a_part_of_a_thing_is_grounded_by_what_people_mean_by_the_whole() -> None:
+    counts = usage({"sink": {"sink_basin": 9, "sink": 1}, "toilet paper": {"toilet_paper": 8},
+                    "toilet": {"toilet": 30}}, ("sink", "sink_basin", "toilet", "toilet_paper", "toilet_paper_roll"))
+    vocab = Vocabulary.of(["Sink", "SinkBasin", "Toilet", "ToiletPaper", "ToiletPaperRoll"],
+                          {"ToiletPaper": ["toilet roll"]}).with_usage(counts)
+    assert vocab.with_usage(RULES).ground_words(["edge"], of=["sink"]) == "Sink"
+    assert vocab.ground_words(["edge"], of=["sink"]) == "SinkBasin"          # "the edge of the sink"
+    assert vocab.ground_words(["sink", "edge"]) == "SinkBasin"               # "the sink edge"
+    # the rules' exact name is a class nobody meant: what people mean by the whole decides
+    assert vocab.with_usage(RULES).ground_words(["toilet", "paper", "roll"]) == "ToiletPaperRoll"
+    assert vocab.ground_words(["toilet", "paper", "roll"]) == "ToiletPaper"
+    # a class people do mean, named with the part's word ("toilet roll"), stays: "toilet" alone is the toilet
+    assert vocab.ground_words(["toilet", "roll"]) == "ToiletPaper"
+    assert counts.meant("ToiletPaper") and not counts.meant("ToiletPaperRoll") and not counts.meant(None)
+
+
 UNSAID = usage({unsaid_wording("Place", "goal", "toss out"): {"garbage_can": 9},
                 unsaid_wording("Place", "goal", "tuck away"): {"drawer": 5, "cabinet": 4, "shelf": 3}},
                ("garbage_can", "drawer", "cabinet", "shelf", "box"))
