@@ -41,7 +41,7 @@ from seal_cli.frames.taxonomy import class_key  # noqa: E402
 from seal_cli.language.grounding import PORTIONS, Vocabulary  # noqa: E402
 from seal_cli.language.lexicon import noun_lemma  # noqa: E402
 from seal_cli.language.parser import CommandError, Parse, Phrase, parse_command  # noqa: E402
-from seal_cli.language.wordusage import FORMAT, MIN_RATIO, MIN_SUPPORT, SHIPPED, WordUsage  # noqa: E402
+from seal_cli.language.wordusage import FORMAT, MIN_RATIO, MIN_SUPPORT, SHIPPED, WordUsage, unsaid_wording  # noqa: E402
 
 OUT = SHIPPED / "alfred_train.json"
 MANIPULATE = ("Pick", "Heat", "Cool", "Clean", "LookAt", "Place")
@@ -98,6 +98,12 @@ def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
             parse = parse_command(" ".join(row["goal_sentence"].split()), library, rules)
         except CommandError:
             continue
+        places = [f for f in parse.frames if f.frame == "Place"]
+        if row["task_type"] != "look_at_obj_in_light" and row["receptacle"] and places \
+                and "goal" not in places[-1].elements:   # "throw away the towel": the goal it leaves unsaid
+            said = unsaid_wording("Place", "goal", places[-1].lexical_unit)
+            counts.setdefault(said, Counter())[row["receptacle"]] += 1
+            seen.setdefault(said, Counter()).update(scenes.get(row["floor_plan"], ()))
         for phrase, label in fields(parse, row):
             lemmas = wording(phrase)
             if lemmas is None:

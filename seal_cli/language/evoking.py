@@ -259,6 +259,10 @@ class Evoker:
             if element.role not in elements and element.default is not None:
                 elements[element.role] = Phrase(None, element.default, self.ground_name(element.default),
                                                 default=True)
+            elif element.role not in elements and self.vocabulary is not None:
+                unsaid = self.vocabulary.ground_unsaid(frame.name, element.role, unit)
+                if unsaid is not None:          # "throw away the towel": where people mean by it (learned)
+                    elements[element.role] = Phrase(None, unsaid, unsaid, default=True)
         ordered = {e.role: elements[e.role] for e in frame.elements if e.role in elements}
         self.frames.append(Evoked(frame.name, unit, (clause.start, clause.end), ordered,
                                   "; ".join(clause.conditions) or None,

@@ -38,7 +38,7 @@ from typing import Any
 from seal_cli.errors import SealError, Where
 from seal_cli.frames.taxonomy import class_key, class_words
 from seal_cli.language.lexicon import noun_lemma
-from seal_cli.language.wordusage import WordUsage, shipped_word_usage
+from seal_cli.language.wordusage import WordUsage, shipped_word_usage, unsaid_wording
 
 __all__ = ["PIECES", "PORTIONS", "Vocabulary", "load_vocabulary", "vocabulary_of_map"]
 
@@ -206,6 +206,11 @@ class Vocabulary:
                     break
         if words and not of and end == len(words) and words[-1] not in PORTIONS:
             found = self._usage.choose(words, self._present, found, self.scene)
+        elif end == len(words) and words and words[-1] in PORTIONS:   # "the left side of the sink",
+            whole = of or words[:-1]                                     # "a chair seat": the whole decides
+            if whole and whole[-1] not in PORTIONS and (
+                    found == self._ground(whole, len(whole), ()) or not self._usage.meant(found)):
+                found = self._usage.choose(whole, self._present, found, self.scene)
         return found
 
     def _ground(self, words: tuple[str, ...], end: int, of: tuple[str, ...]) -> str | None:
@@ -241,6 +246,13 @@ class Vocabulary:
             if best is not None and weight >= 4.0:
                 break
         return None if best is None else self.classes[best[1]]
+
+    def ground_unsaid(self, frame: str, role: str, unit: str) -> str | None:
+        """The class people most likely mean as ``frame``'s ``role`` when they use the lexical unit
+        ``unit`` and leave the element unsaid ("throw away the towel": the goal of Place by "throw
+        away"), by the statistics alone (:func:`~seal_cli.language.wordusage.unsaid_wording`): a
+        clear majority among the present classes, or None (the rules know no unsaid elements)."""
+        return self._usage.choose((unsaid_wording(frame, role, unit),), self._present, None, self.scene)
 
     def ground_name(self, name: str) -> str | None:
         """The class a class name of the frame library denotes (a default: Slice's ``knife``): by

@@ -27,7 +27,7 @@ from __future__ import annotations
 import json
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
-from functools import cache
+from functools import cache, cached_property
 from pathlib import Path
 from types import MappingProxyType
 from typing import Any
@@ -35,7 +35,8 @@ from typing import Any
 from seal_cli.errors import SealError, Where
 from seal_cli.frames.taxonomy import class_key
 
-__all__ = ["FORMAT", "MIN_RATIO", "MIN_SUPPORT", "SHIPPED", "WordUsage", "load_word_usage", "shipped_word_usage"]
+__all__ = ["FORMAT", "MIN_RATIO", "MIN_SUPPORT", "SHIPPED", "WordUsage", "load_word_usage", "shipped_word_usage",
+           "unsaid_wording"]
 
 FORMAT = "seal-word-classes/1"
 SHIPPED = Path(__file__).resolve().parent / "word_classes"
@@ -44,6 +45,14 @@ MIN_SUPPORT = 5
 MIN_RATIO = 1.2
 """How many times as often the learned class must be meant as the rules' class to replace it
 (chosen on train trials held out from the counts: 1.0–1.2 scored best, 1.5–3 about 0.6 points lower)."""
+
+
+def unsaid_wording(frame: str, role: str, unit: str) -> str:
+    """The table's key for an element a clause leaves unsaid: which class people meant as the ``role``
+    of ``frame`` when they used the lexical unit ``unit`` and did not say it ("throw away the towel":
+    the goal of Place by "throw away"). No noun phrase's lemmas contain ``<-``, so it cannot collide;
+    lower case, as the table's wordings are read."""
+    return " ".join(f"{frame}.{role} <- {unit}".lower().split())
 
 
 @dataclass(frozen=True)
@@ -84,6 +93,15 @@ class WordUsage:
         return WordUsage(add(self.counts, other.counts), self.universe | other.universe,
                          self.sources + other.sources, self.min_support, self.min_ratio,
                          add(self.seen, other.seen))
+
+    @cached_property
+    def _meant(self) -> frozenset[str]:
+        return frozenset(key for by_class in self.counts.values() for key in by_class)
+
+    def meant(self, cls: str | None) -> bool:
+        """Whether anybody in the counts meant this class (by any wording): a class nobody meant (THOR's
+        ``ToiletPaperRoll``, beside the ``ToiletPaper`` people call a roll) is no evidence against the data."""
+        return cls is not None and class_key(cls) in self._meant
 
     def choose(self, lemmas: tuple[str, ...], present: Mapping[str, str], rule: str | None,
                scene: bool = False) -> str | None:

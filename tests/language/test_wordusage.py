@@ -14,7 +14,14 @@ from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
 from seal_cli.language.grounding import Vocabulary
 from seal_cli.language.parser import parse_command
-from seal_cli.language.wordusage import FORMAT, SHIPPED, WordUsage, load_word_usage, shipped_word_usage
+from seal_cli.language.wordusage import (
+    FORMAT,
+    SHIPPED,
+    WordUsage,
+    load_word_usage,
+    shipped_word_usage,
+    unsaid_wording,
+)
 
 ROOT = Path(__file__).resolve().parents[2]
 RULES = WordUsage()
@@ -97,6 +104,49 @@ def test_a_phrase_the_rules_cannot_ground_takes_the_clear_majority() -> None:
     assert solo.ground_words(["stuff"]) == "Cup"
     # no cup here: the two who meant a box by "glass" are too few to call a box a glass
     assert Vocabulary.of(["Box"]).restricted_to(["Box"]).with_usage(counts).ground_words(["glass"]) is None
+
+
+def test_a_part_of_a_thing_is_grounded_by_what_people_mean_by_the_whole() -> None:
+    counts = usage({"sink": {"sink_basin": 9, "sink": 1}, "toilet paper": {"toilet_paper": 8},
+                    "toilet": {"toilet": 30}}, ("sink", "sink_basin", "toilet", "toilet_paper", "toilet_paper_roll"))
+    vocab = Vocabulary.of(["Sink", "SinkBasin", "Toilet", "ToiletPaper", "ToiletPaperRoll"],
+                          {"ToiletPaper": ["toilet roll"]}).with_usage(counts)
+    assert vocab.with_usage(RULES).ground_words(["edge"], of=["sink"]) == "Sink"
+    assert vocab.ground_words(["edge"], of=["sink"]) == "SinkBasin"          # "the edge of the sink"
+    assert vocab.ground_words(["sink", "edge"]) == "SinkBasin"               # "the sink edge"
+    # the rules' exact name is a class nobody meant: what people mean by the whole decides
+    assert vocab.with_usage(RULES).ground_words(["toilet", "paper", "roll"]) == "ToiletPaperRoll"
+    assert vocab.ground_words(["toilet", "paper", "roll"]) == "ToiletPaper"
+    # a class people do mean, named with the part's word ("toilet roll"), stays: "toilet" alone is the toilet
+    assert vocab.ground_words(["toilet", "roll"]) == "ToiletPaper"
+    assert counts.meant("ToiletPaper") and not counts.meant("ToiletPaperRoll") and not counts.meant(None)
+
+
+UNSAID = usage({unsaid_wording("Place", "goal", "toss out"): {"garbage_can": 9},
+                unsaid_wording("Place", "goal", "tuck away"): {"drawer": 5, "cabinet": 4, "shelf": 3}},
+               ("garbage_can", "drawer", "cabinet", "shelf", "box"))
+
+
+def test_an_unsaid_goal_is_where_people_meant_by_the_verb(library: Library) -> None:
+    vocab = Vocabulary.of(["GarbageCan", "Drawer", "Cabinet", "Shelf", "Box"]).with_usage(UNSAID)
+    assert vocab.ground_unsaid("Place", "goal", "toss out") == "GarbageCan"     # 9 of 9
+    assert vocab.ground_unsaid("Place", "goal", "tuck away") is None           # 5 of 12: no clear majority
+    assert vocab.ground_unsaid("Place", "goal", "put") is None                 # never seen
+    assert vocab.restricted_to(["Box", "Drawer"]).ground_unsaid("Place", "goal", "toss out") is None  # no bin here
+    assert vocab.with_usage(RULES).ground_unsaid("Place", "goal", "toss out") is None
+
+
+def test_the_shipped_table_says_where_a_thing_thrown_away_goes(library: Library) -> None:
+    vocab = Vocabulary.of(["GarbageCan", "Cabinet", "Drawer", "Shelf", "Candle", "Fork"])
+    for said in ("throw away the candle", "take the candle and throw it out"):
+        goal = parse_command(said, library, vocab).frames[-1].elements["goal"]
+        assert (goal.cls, goal.default, goal.text) == ("GarbageCan", True, None)
+        assert goal.to_json()["default"] is True                          # not said: marked as such
+    put_away = parse_command("put the fork away", library, vocab).frames[-1]
+    assert "goal" not in put_away.elements                         # a cabinet, a drawer, a shelf: unclear
+    assert parse_command("throw the candle in the drawer", library, vocab).frames[-1].elements["goal"].cls == "Drawer"
+    assert "goal" not in parse_command("throw away the candle", library, vocab.with_usage(RULES)).frames[-1].elements
+    assert "goal" not in parse_command("throw away the can", library, Vocabulary.of(["can", "bin"])).frames[-1].elements
 
 
 def test_tables_in_a_folder_add_up(tmp_path: Path) -> None:
