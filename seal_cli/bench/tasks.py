@@ -102,6 +102,11 @@ def run_episode(episode: Episode, suite: Suite, library: Library, policies: Sequ
     for name in policies:
         start = time.perf_counter()
         scene = build_scene(episode, plan, library, suite.priors)
+        policy = make_policy(name, particles)
+        if getattr(policy, "drives_itself", False):  # saycan: from the instruction text, not seal's frames
+            rng = np.random.default_rng(episode_seed(seed, episode))
+            outcomes.append(_run_skills(policy, episode, scene, library, goal, rng, start))
+            continue
         try:
             commanded, classes = commands_for(episode, library, scene.vocabulary, goal)
         except SealError as error:
@@ -110,7 +115,7 @@ def run_episode(episode: Episode, suite: Suite, library: Library, policies: Sequ
                                     time.perf_counter() - start))
             continue
         rng = np.random.default_rng(episode_seed(seed, episode))
-        agent = Agent(scene, library, make_policy(name, particles), rng=rng, budget=Budget(), classes=classes)
+        agent = Agent(scene, library, policy, rng=rng, budget=Budget(), classes=classes)
         result = agent.run(commanded)
         verdict = judge(episode.task, scene.world)
         reason = "success" if verdict.success else (result.reason if not result.completed else verdict.reason)
@@ -118,6 +123,25 @@ def run_episode(episode: Episode, suite: Suite, library: Library, policies: Sequ
                                 result.steps, reason, episode.expert_path_m, round(time.perf_counter() - start, 3),
                                 tuple(str(b) for b in commanded)))
     return outcomes
+
+
+def _run_skills(policy: Any, episode: Episode, scene: Any, library: Library, goal: str,
+                rng: np.random.Generator, start: float) -> Outcome:
+    """A policy that drives itself from the instruction text (``saycan``), judged the same way; its
+    failure kinds (:func:`seal_cli.sim.skills.failure_kinds`) lead the reason."""
+    from seal_cli.sim.agent import Budget
+    from seal_cli.sim.skills import failure_kinds, gold_instruction
+
+    t = episode.task
+    instruction = (gold_instruction(t.type, t.object, t.receptacle, t.mrecep, t.toggle, t.sliced)
+                   if goal == "gold" else (episode.goals[0] if episode.goals else ""))
+    result = policy.run(scene, library, instruction, rng=rng, budget=Budget())
+    verdict = judge(episode.task, scene.world)
+    kinds = failure_kinds(result, verdict.success)
+    reason = "success" if verdict.success else f"{'; '.join(kinds)}: {verdict.reason}"
+    return Outcome(episode.task_id, episode.group, policy.name, verdict.success, round(result.path_m, 3),
+                   result.steps, reason, episode.expert_path_m, round(time.perf_counter() - start, 3),
+                   (instruction,))
 
 
 # -- running many episodes ---------------------------------------------------------------------

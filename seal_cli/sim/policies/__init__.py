@@ -43,6 +43,8 @@ POLICIES: dict[str, Registered] = {
                            "the nearest unseen frontier or unopened receptacle"),
     "oracle": Registered("seal_cli.sim.policies.oracle", "OraclePolicy", "knows where everything is"),
     "uniform": Registered("seal_cli.sim.policies.uniform", "UniformPolicy", "SeFM without priors", default=False),
+    "saycan": Registered("seal_cli.sim.policies.saycan", "SayCanPolicy",
+                         "SayCan: language score x affordance over skills (the llm extra)", default=False),
 }
 """Every policy by name."""
 
