@@ -16,7 +16,7 @@ Both are :class:`SimilarityScorer` s: an embedding model is not a language model
 conditional ``p(option | instruction, history)`` is approximated as the *progress* the option makes: how much
 adding it to what has been done brings the sum of the history's line vectors closer (in cosine) to
 the instruction. ``done`` adds nothing, so it scores zero less a small margin and wins once no
-skill brings the history closer to the instruction; a skill already done (the same line) is
+skill brings the history closer to the instruction; the skill just done (the same line) is
 penalised, as an LLM conditioned on the history would not ask for it again. The scores are
 softmaxed at a temperature.
 """
@@ -97,8 +97,8 @@ class SimilarityScorer:
         rows = self.vectors(skills) if skills else np.zeros((0, len(instr)))
         after = np.array([_cos(instr, summed + row) for row in rows])
         gain = after - before
-        if done_lines and skills:   # a step already done is not asked for again
-            repeat = (rows @ self.vectors(done_lines).T).max(axis=1) > 0.999
+        if done_lines and skills:   # the step just done is not asked for again
+            repeat = rows @ self.vectors(done_lines[-1:])[0] > 0.999
             gain = gain - self.repeat_penalty * repeat
         it = iter(gain)
         scores = np.array([self.done_offset if o == DONE else next(it) for o in options])
