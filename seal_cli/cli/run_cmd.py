@@ -67,6 +67,26 @@ def run(
     from seal_cli.fileio import Outputs
 
     searcher = make_policy(policy, particles)
+    if getattr(searcher, "drives_itself", False):  # saycan: from the text alone, no frames to draw or record
+        from seal_cli.errors import SealError
+        from seal_cli.sim.skills import run_text_on_map
+
+        if rrd is not None or png is not None or done:
+            raise SealError(f"--policy {policy}: --rrd, --png and --done need seal's frames; this policy has none")
+        skills = run_text_on_map(the_map, text, library, searcher, rng=np.random.default_rng(seed), holding=holding,
+                                 budget=Budget(steps=max_steps, metres=max_metres),
+                                 observers=[] if as_json else [_narrate])
+        if as_json:
+            emit_json({"map": the_map.name, "text": text, "policy": policy, "seed": seed,
+                       "completed": skills.completed, "reason": skills.reason, "path_m": round(skills.path_m, 3),
+                       "steps": skills.steps, "skills": skills.history,
+                       "proposed_unafforded": skills.proposed_unafforded, "never_seen": skills.never_seen})
+        else:
+            out.print(f"{'said done' if skills.completed else skills.reason} — {skills.path_m:.2f} m driven, "
+                      f"{skills.steps} steps")
+        if not skills.completed:
+            raise typer.Exit(1)
+        return
     searcher.keep_clouds = rrd is not None or png is not None
     with Outputs({"--rrd": rrd, "--png": png}, [map_name, vocabulary_file, *(framelib or [])],
                  suffixes=OUTPUT_SUFFIXES) as outputs:

@@ -23,20 +23,26 @@ is the caller's judge's business; :func:`failure_kinds` names what went wrong fr
 from __future__ import annotations
 
 import re
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from seal_cli.frames.library import Library
 from seal_cli.frames.taxonomy import class_key
-from seal_cli.sim.agent import Agent, Budget, Known, Scene
+from seal_cli.sim.agent import Agent, Budget, Known, Record, Scene
 from seal_cli.sim.scorers import DONE, Scorer, prompt_for
 from seal_cli.sim.world import Outcome
 
-__all__ = ["AFFORDED", "UNAFFORDED", "Skill", "SkillResult", "SkillRunner", "failure_kinds"]
+if TYPE_CHECKING:
+    from seal_cli.maps.model import Map
+
+__all__ = ["AFFORDED", "UNAFFORDED", "Skill", "SkillResult", "SkillRunner", "failure_kinds", "gold_instruction",
+           "run_text_on_map"]
 
 AFFORDED = 1.0
-UNAFFORDED = 0.02
+UNAFFORDED = 0.001
 """Affordance of a skill that can succeed now, and of one that would fail (SayCan's value
 functions are near zero there, never exactly zero)."""
 
@@ -65,6 +71,7 @@ class SkillResult:
     proposed_unafforded: int = 0
     failed_skills: int = 0
     never_seen: list[str] = field(default_factory=list)
+    records: list[Record] = field(default_factory=list)
 
     @property
     def plan(self) -> list[str]:
@@ -96,10 +103,10 @@ class SkillRunner:
     """One SayCan run; see the module docstring."""
 
     def __init__(self, scene: Scene, library: Library, scorer: Scorer, *, rng: np.random.Generator,
-                 budget: Budget | None = None) -> None:
+                 budget: Budget | None = None, observers: Sequence[Callable[[Record], None]] = ()) -> None:
         from seal_cli.sim.policies.coverage import CoveragePolicy
 
-        self.agent = Agent(scene, library, CoveragePolicy(), rng=rng, budget=budget)
+        self.agent = Agent(scene, library, CoveragePolicy(), rng=rng, budget=budget, observers=observers)
         self.world = scene.world
         self.scorer = scorer
         vocabulary = scene.vocabulary or tuple(sorted({i.key for i in self.world.items.values()}))
@@ -229,7 +236,7 @@ class SkillRunner:
             self._look()
         named = self.named_classes(instruction)
         return SkillResult(said_done, reason, world.robot.path_m, world.step, history, unafforded, failed,
-                           sorted(c for c in named if c not in self.seen))
+                           sorted(c for c in named if c not in self.seen), agent.records)
 
     def _look(self) -> None:
         for d in self.agent.look(quiet=True):
@@ -259,3 +266,19 @@ def gold_instruction(kind: str, obj: str, receptacle: str | None = None, mrecep:
         "pick_clean_then_place_in_recep": f"clean the {o}, then put it in the {r}",
     }.get(kind, f"{kind.replace('_', ' ')} {o} {r}")
     return first + sentence
+
+
+def run_text_on_map(m: Map, text: str, library: Library, policy: Any, *, rng: np.random.Generator,
+                    holding: str | None = None, budget: Budget | None = None,
+                    observers: Sequence[Callable[[Record], None]] = ()) -> SkillResult:
+    """A self-driving policy (``saycan``) on a map whose ground-truth objects are the world (``seal run``)."""
+    from dataclasses import replace
+
+    from seal_cli.maps.model import Robot
+    from seal_cli.sim.agent import scene_from_map
+
+    if holding is not None:
+        m = replace(m, robot=Robot(m.robot.pose, holding))
+    result: SkillResult = policy.run(scene_from_map(m, library), library, text, rng=rng, budget=budget,
+                                     observers=observers)
+    return result

@@ -9,6 +9,7 @@ in the same world, perception and budget as every other policy. The language mod
 
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, ClassVar
 
 import numpy as np
@@ -18,7 +19,7 @@ from seal_cli.sim.policies.base import Policy
 if TYPE_CHECKING:
     from seal_cli.frames.library import Library
     from seal_cli.frames.model import Binding
-    from seal_cli.sim.agent import Agent, Budget, Scene, View
+    from seal_cli.sim.agent import Agent, Budget, Record, Scene, View
     from seal_cli.sim.scorers import Scorer
     from seal_cli.sim.skills import SkillResult
 
@@ -49,7 +50,7 @@ class SayCanPolicy(Policy):
         raise SealError("the saycan policy runs from the instruction text, not from seal's frames")
 
     def run(self, scene: Scene, library: Library, instruction: str, *, rng: np.random.Generator,
-            budget: Budget | None = None) -> SkillResult:
+            budget: Budget | None = None, observers: Sequence[Callable[[Record], None]] = ()) -> SkillResult:
         from seal_cli.sim.skills import SkillRunner
 
-        return SkillRunner(scene, library, self.scorer, rng=rng, budget=budget).run(instruction)
+        return SkillRunner(scene, library, self.scorer, rng=rng, budget=budget, observers=observers).run(instruction)
