@@ -95,14 +95,62 @@ AWS_TRAJECTORY = [(1.5, -4.0), (4.0, -3.0), (6.5, -2.5), (7.5, -3.5), (6.5, -2.0
 """Through the kitchen (four looks at the spoon), across the living room into the bedroom (three at the cup)."""
 
 
-def aws_house(folder: Path, data: Path, layout: str, robot: tuple[float, float, float]) -> Path:
+def aws_house(folder: Path, data: Path, layout: str, robot: tuple[float, float, float], *,
+              priors: Mapping[str, Mapping[str, float]] = PAPER_PRIORS,
+              objects: Sequence[Mapping[str, object]] = AWS_OBJECTS,
+              places: Sequence[Mapping[str, object]] = (), name: str | None = None) -> Path:
     """Write an annotated map of the AWS house into ``folder`` (the image stays where the shared data is:
-    ``data`` is the shared data folder, ``../shared/data`` from a checkout)."""
+    ``data`` is the shared data folder, ``../shared/data`` from a checkout); by default the paper's
+    priors and objects and no places (the context suite gives :data:`AWS_CONTEXT_PRIORS`,
+    :data:`AWS_CONTEXT_PLACES` and :data:`CONTEXT_OBJECTS`)."""
+    name = name or f"aws_{layout}"
     doc = {"image": str((data / "maps" / "aws_small_house" / "map.pgm").resolve()), "resolution": 0.05,
            "origin": [-12.5, -12.5, 0.0], "negate": 0, "occupied_thresh": 0.65, "free_thresh": 0.196,
-           "name": f"aws_{layout}", "rooms": [{"name": n, "box": list(b)} for n, b in AWS_LAYOUTS[layout].items()],
-           "priors": PAPER_PRIORS, "objects": list(AWS_OBJECTS), "robot": {"pose": list(robot)},
+           "name": name, "rooms": [{"name": n, "box": list(b)} for n, b in AWS_LAYOUTS[layout].items()],
+           "places": [dict(p) for p in places], "priors": {c: dict(m) for c, m in priors.items()},
+           "objects": [dict(o) for o in objects], "robot": {"pose": list(robot)},
            "sensor": {"range": 5.0, "fov": 360}}
-    path = folder / f"aws_{layout}.yaml"
+    path = folder / f"{name}.yaml"
     path.write_text(yaml.safe_dump(doc, sort_keys=False))
     return path
+
+
+# -- the context suite's things: two or more a command needs, whose priors overlap ---------------------------
+CONTEXT_PRIORS = {**PAPER_PRIORS, "mug": {"kitchen": 0.4, "dining_room": 0.3, "family_room": 0.3},
+                  "kettle": {"kitchen": 0.5, "dining_room": 0.5}}
+"""The paper's cup and spoon (the bedroom holds both) and two more: mugs in the kitchen (with the spoons),
+the dining room or the family room (with the cups); kettles in the kitchen or the dining room (with the mugs)."""
+
+CONTEXT_OBJECTS = ({"class": "spoon", "at": [0.0, 0.0]}, {"class": "cup", "at": [0.0, 0.0]},
+                   {"class": "mug", "at": [0.0, 0.0]}, {"class": "kettle", "at": [0.0, 0.0]})
+"""One thing of each class; the suite draws where each is from its prior, so the points here are placeholders."""
+
+AWS_CONTEXT_PLACES = ({"name": "dining_table_1", "class": "dining_table", "at": [7.0, 1.4]},
+                      {"name": "bed_1", "class": "bed", "at": [-7.6, 1.5]},
+                      {"name": "sofa_1", "class": "sofa", "at": [-6.0, -3.6]},
+                      {"name": "counter_1", "class": "counter", "at": [8.6, -3.4]})
+"""Furniture for the AWS house's "wings" reading: the dining table, the bed, a sofa in the family room,
+the cooking bench."""
+
+AWS_CONTEXT_STARTS = ((1.5, -4.0, 0.0), (0.0, 1.5, 0.0), (-3.5, 0.5, 0.0))
+"""The living room's south and north ends, and the door of the bedroom wing."""
+
+
+def cottage() -> Map:
+    """14 m × 10 m drawn for the context suite: a hall down the middle (the living room) with two rooms
+    on each side — bedroom and family room to the west, dining room and kitchen to the east, the
+    kitchen and the dining room joined by a door too. The robot starts in the hall."""
+    rooms = {"bedroom": (0.0, 0.0, 6.0, 5.0), "family_room": (0.0, 5.0, 6.0, 10.0),
+             "living_room": (6.0, 0.0, 9.0, 10.0), "dining_room": (9.0, 0.0, 14.0, 5.0),
+             "kitchen": (9.0, 5.0, 14.0, 10.0)}
+    doors = [(6.0, 2.5), (6.0, 7.5), (9.0, 2.5), (9.0, 7.5), (11.5, 5.0)]
+    places = (Place("dining_table_1", "dining_table", (11.5, 2.5)), Place("sink_1", "sink", (13.4, 9.4)),
+              Place("bed_1", "bed", (2.0, 2.5)), Place("sofa_1", "sofa", (2.0, 8.5)))
+    objects = tuple(ObjectTruth(str(o["class"]), (7.5, 5.0)) for o in CONTEXT_OBJECTS)
+    return walled_house("cottage", (14.0, 10.0), rooms, doors, objects=objects, places=places,
+                        robot=(7.5, 1.0, 0.0), priors=CONTEXT_PRIORS,
+                        furniture=((1.0, 1.8, 3.0, 3.2), (12.0, 1.8, 13.0, 3.2)))
+
+
+COTTAGE_STARTS = ((7.5, 1.0, 0.0), (7.5, 9.0, 0.0), (12.0, 7.0, 0.0))
+"""The hall's south and north ends, and the kitchen."""

@@ -11,6 +11,8 @@ import typer
 from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
 from seal_cli.sim.policies import DEFAULT_POLICIES, POLICIES
 
+SUITES = ("alfred2d", "map", "context")
+
 KIND_STYLE = {"plan": "bold", "frame": "bold cyan", "search": "yellow", "go": "", "see": "green", "look": "dim",
               "act": "green", "fail": "red", "replan": "magenta", "done": "bold green", "give_up": "bold red"}
 
@@ -119,9 +121,11 @@ def run(
 @command("tasks", on=bench_app)
 def tasks(
     suite: str = typer.Option("alfred2d", "--suite", help="alfred2d: ALFRED-2D's episodes; map: commands on "
-                              "one seal map over layouts drawn from its priors."),
+                              "one seal map over layouts drawn from its priors; context: commands needing two "
+                              "things with overlapping priors, on three houses from several starts."),
     data: Path | None = typer.Option(None, "--data", help="The ALFRED-2D folder (default: ../shared/data/alfred2d "
-                                     "beside the project).", show_default=False),
+                                     "beside the project); with --suite context the shared data folder (default "
+                                     "../shared/data), for the AWS house's map.", show_default=False),
     split: str = typer.Option("valid_seen", "--split", help="Which split's episodes to run (priors always come "
                               "from train)."),
     goal: str = typer.Option("gold", "--goal", help="gold: ALFRED's task labels; human: the first human goal "
@@ -135,8 +139,9 @@ def tasks(
     commands: list[str] | None = typer.Option(None, "--command", help="With --suite map: a command to run "
                                               "(repeatable; default: five household commands).",
                                               show_default=False),
-    layouts: int = typer.Option(10, "--layouts", min=1, help="With --suite map: object layouts drawn from the "
-                                "map's priors."),
+    layouts: int | None = typer.Option(None, "--layouts", min=1, help="With --suite map or context: object "
+                                       "layouts drawn from the priors (default 10 for map, 3 for context).",
+                                       show_default=False),
     policies: str = typer.Option(",".join(DEFAULT_POLICIES), "--policies",
                                  help="Comma-separated policies, of: " + ", ".join(POLICIES) + "."),
     jobs: int = typer.Option(0, "--jobs", min=0, help="Worker processes (0: one per core)."),
@@ -156,10 +161,11 @@ def tasks(
     from seal_cli.bench.tasks import Outcome, run_suite, summarise
     from seal_cli.errors import SealError
 
+    shared = Path(__file__).resolve().parents[2].parent / "shared" / "data"
     if data is None:
-        data = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "alfred2d"
-    if suite not in ("alfred2d", "map"):
-        raise SealError(f"unknown suite {suite!r}; the suites are alfred2d and map")
+        data = shared if suite == "context" else shared / "alfred2d"
+    if suite not in SUITES:
+        raise SealError(f"unknown suite {suite!r}; the suites are {', '.join(SUITES)}")
     names = [p.strip() for p in policies.split(",") if p.strip()]
     if not names:
         raise SealError("--policies names no policy")
@@ -183,9 +189,17 @@ def tasks(
             from seal_cli.bench.mapsuite import COMMANDS, run_map_suite
             from seal_cli.resources import map_path
 
+            layouts = layouts or 10
             runs = run_map_suite(str(map_path(map_name)), list(commands or COMMANDS), names, layouts=layouts,
                                  seed=seed, jobs=jobs or os.cpu_count() or 1, particles=particles, framelib=libs,
                                  progress=advance)
+        elif suite == "context":
+            from seal_cli.bench import context
+
+            layouts = layouts or 3
+            runs = context.run_context_suite(data, names, commands=list(commands or context.COMMANDS),
+                                             layouts=layouts, seed=seed, jobs=jobs or os.cpu_count() or 1,
+                                             particles=particles, framelib=libs, progress=advance)
         else:
             runs = run_suite(data, split, names, goal=goal, limit=limit, types=types, seed=seed,
                              jobs=jobs or os.cpu_count() or 1, particles=particles, framelib=libs,
@@ -198,6 +212,11 @@ def tasks(
     report = summarise(outcomes, names)
     if suite == "map":
         report.update({"suite": suite, "map": map_name, "layouts": layouts, "seed": seed})
+    elif suite == "context":
+        from seal_cli.bench.context import regroup
+
+        report.update({"suite": suite, "layouts": layouts, "seed": seed, "by_command": regroup(outcomes, names, 1),
+                       "by_house": regroup(outcomes, names, 0)})
     else:
         report.update({"suite": suite, "split": split, "goal": goal, "seed": seed, "limit": limit})
     if as_json:
@@ -211,14 +230,16 @@ def _table(report: dict[str, Any], names: list[str]) -> None:
 
     if report["suite"] == "map":
         title = f"map {report['map']}, {report['layouts']} layouts: success rate / mean path (m)"
+    elif report["suite"] == "context":
+        title = f"context suite, {report['layouts']} layouts: success rate / mean path (m)"
     else:
         title = f"ALFRED-2D {report['split']}, goals from {report['goal']}: success rate / mean path (m)"
     table = Table(title=title)
-    table.add_column("task type" if report["suite"] != "map" else "command", no_wrap=True)
+    table.add_column("task type" if report["suite"] == "alfred2d" else "command", no_wrap=True)
     table.add_column("n", justify="right", no_wrap=True)
     for name in names:
         table.add_column(name, justify="right", no_wrap=True)
-    expert_column = report["suite"] != "map"
+    expert_column = report["suite"] == "alfred2d"
     if expert_column:
         table.add_column("expert m", justify="right", no_wrap=True)
     for group, figures in report["groups"].items():

@@ -177,6 +177,10 @@ WHERE_QUESTIONS = frozenset(["where is", "where are", "where 's", "where's", "wh
 """Questions about where a thing is, or whether there is one ("*where is* the cup?", "*is there* a cup in the
 kitchen?"): they mean "find ..." (``WHERE_MEANS``)."""
 WHERE_MEANS = "find"
+WHERE_DID = (frozenset(["where"]), frozenset(["did", "do", "does", "have", "has"]),
+             frozenset(["i", "you", "we", "they", "he", "she"]))
+""""*Where did I leave* my glasses?", "*where do we keep* the batteries": where, an auxiliary, a subject and any
+verb, then what to find."""
 REQUESTS = frozenset(["i'd like", "i would like", "i'd love", "i would love", "i'd like to have",
                       "i would like to have", "can i have", "could i have", "may i have", "can i get", "could i get",
                       "can i please have", "could i please have", "may i please have", "i need", "i want",

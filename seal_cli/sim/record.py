@@ -100,6 +100,11 @@ def write_rrd(path: str | Path, agent: Agent) -> None:
                 named.add("ess")
                 stream.log("metrics/ess", rr.Scalars([float(ess(cloud["objects"][c][1])) if c in cloud["objects"]
                                                       else 0.0 for c in objects]), *lines)
+            if cloud.get("commanded_particles") is not None:
+                X, W = cloud["commanded_particles"]
+                key = f"commanded/{cloud['commanded']}"
+                if changed(key, X, W, last):
+                    stream.log(f"{key}/particles", rr.Points2D(X, radii=radii(W), draw_order=DRAW["frames"]))
             for cls, (X, W) in cloud["objects"].items():
                 if changed(f"objects/{cls}", X, W, last):
                     stream.log(f"objects/{cls}/particles", rr.Points2D(X, radii=radii(W),
@@ -110,7 +115,10 @@ def write_rrd(path: str | Path, agent: Agent) -> None:
 
 
 def write_png(path: str | Path, agent: Agent, title: str = "") -> None:
-    """The map, the robot's path and where it acted, and the last belief clouds (if kept)."""
+    """The map, the robot's path and where it acted; when the policy kept belief clouds, two panels:
+    the belief of a step after its last look (the last step that served another frame, such as
+    Pick(spoon) for Stir(cup), else the last step), and beside it the belief of the commanded frame
+    that step serves (the whole task's)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -120,28 +128,43 @@ def write_png(path: str | Path, agent: Agent, title: str = "") -> None:
 
     m = agent.scene.map
     xmin, ymin, xmax, ymax = m.bounds
-    fig, ax = plt.subplots(figsize=(9.0, max(3.0, 9.0 * (ymax - ymin) / (xmax - xmin) + 0.6)))
+    clouds: list[dict[str, Any]] = agent.policy.clouds
+    kept = [c for c in clouds if c["frame_particles"] is not None]
+    serving = [c for c in kept if c.get("commanded") and c["commanded"] != c["frame"]]
+    last = (serving or kept)[-1] if kept else None   # the last look for a step that serves another frame
+    panels = 2 if last is not None and last.get("commanded_particles") is not None else 1
+    width = 9.0 * panels
+    fig, axes = plt.subplots(1, panels, figsize=(width, max(3.0, 9.0 * (ymax - ymin) / (xmax - xmin) + 0.6)),
+                             squeeze=False)
     try:
-        draw_map(ax, m, objects=False, robot=False)
-        clouds: list[dict[str, Any]] = agent.policy.clouds
-        if clouds and clouds[-1]["frame_particles"] is not None:
-            X, W = clouds[-1]["frame_particles"]
-            ax.scatter(X[:, 0], X[:, 1], s=4 + 40 * W / max(W.max(), 1e-12), c="#ff7f0e", alpha=0.6, zorder=2,
-                       label=f"belief: {clouds[-1]['frame']}")
-        trail = np.asarray(agent.world.robot.trajectory)
-        ax.plot(trail[:, 0], trail[:, 1], "-", color="#1f77b4", linewidth=2, zorder=4, label="path")
-        ax.plot(*trail[0], "o", color="#1f77b4", markersize=8, zorder=5)
-        for record in agent.records:
-            if record.kind == "act":
-                ax.plot(record.pose[0], record.pose[1], "D", color="#2ca02c", markersize=6, zorder=6)
-                ax.annotate(record.text, record.pose[:2], xytext=(4, 4), textcoords="offset points", fontsize=6,
-                            color="#2ca02c", zorder=6)
-        for item in agent.world.items.values():
-            if item.movable:
-                ax.plot(*agent.world.position(item.id), "*", markersize=6, color="#d62728", zorder=3)
-        ax.set_title(title or m.name)
-        ax.legend(loc="upper right", fontsize=7)
+        beliefs = [("frame_particles", "frame", "step"), ("commanded_particles", "commanded", "commanded")][:panels]
+        for ax, (key, name, label) in zip(axes[0], beliefs, strict=True):
+            draw_map(ax, m, objects=False, robot=False)
+            if last is not None and last.get(key) is not None:
+                X, W = last[key]
+                ax.scatter(X[:, 0], X[:, 1], s=4 + 40 * W / max(W.max(), 1e-12), c="#ff7f0e", alpha=0.6, zorder=2,
+                           label=f"{label} belief: {last[name]}")
+            _draw_run(ax, agent)
+            ax.legend(loc="upper right", fontsize=7)
+        axes[0][0].set_title(title or m.name)
+        if panels == 2:
+            axes[0][1].set_title("the commanded frame's belief")
         with atomic_output(path) as tmp:
             fig.savefig(tmp, dpi=120, format="png", bbox_inches="tight")
     finally:
         plt.close(fig)
+
+
+def _draw_run(ax: Any, agent: Agent) -> None:
+    """The path, where the robot acted, and where the things are."""
+    trail = np.asarray(agent.world.robot.trajectory)
+    ax.plot(trail[:, 0], trail[:, 1], "-", color="#1f77b4", linewidth=2, zorder=4, label="path")
+    ax.plot(*trail[0], "o", color="#1f77b4", markersize=8, zorder=5)
+    for record in agent.records:
+        if record.kind == "act":
+            ax.plot(record.pose[0], record.pose[1], "D", color="#2ca02c", markersize=6, zorder=6)
+            ax.annotate(record.text, record.pose[:2], xytext=(4, 4), textcoords="offset points", fontsize=6,
+                        color="#2ca02c", zorder=6)
+    for item in agent.world.items.values():
+        if item.movable:
+            ax.plot(*agent.world.position(item.id), "*", markersize=6, color="#d62728", zorder=3)

@@ -68,4 +68,4 @@ def test_bench_tasks_map_suite_json() -> None:
     assert group["n"] == 1 and set(group["success"]) == {"oracle", "coverage"}
     assert group["path_m"]["oracle"] <= group["path_m"]["coverage"]
     bad = runner.invoke(app, ["bench", "tasks", "--suite", "nope"])
-    assert bad.exit_code == 1 and "the suites are alfred2d and map" in bad.stderr
+    assert bad.exit_code == 1 and "the suites are alfred2d, map, context" in bad.stderr

@@ -8,6 +8,7 @@ from pathlib import Path
 from typer.testing import CliRunner
 
 from seal_cli.cli import app
+from seal_cli.sim.policies import DEFAULT_POLICIES
 
 runner = CliRunner()
 
@@ -56,8 +57,8 @@ def test_bench_tasks_json_has_every_group(shared_data: Path) -> None:
     report = json.loads(result.stdout)
     assert list(report["groups"]) == ["look_at_obj_in_light", "pick_heat_then_place_in_recep", "all"]
     for figures in report["groups"].values():
-        assert set(figures["success"]) == {"sefm", "object_only", "coverage", "oracle"}
-        assert set(figures["path_m"]) == {"sefm", "object_only", "coverage", "oracle"}
+        assert set(figures["success"]) == set(DEFAULT_POLICIES)
+        assert set(figures["path_m"]) == set(DEFAULT_POLICIES)
 
 
 def test_bench_tasks_table_and_bad_options(shared_data: Path) -> None:

@@ -96,9 +96,10 @@ def test_a_noun_that_is_a_verb_stays_a_noun(library: Library) -> None:
     assert [f for f, _ in frames("put the cup under the light on the table", library)] == ["Place"]
 
 
-def test_no_question_without_a_clause(library: Library) -> None:
+@pytest.mark.parametrize("text", ["what?", "what is", "Who's?", "I'd like", "where is", "Of the", "can I have the"])
+def test_no_request_without_what_it_asks(text: str, library: Library) -> None:
     with pytest.raises(CommandError):
-        parse_command("what?", library)
+        parse_command(text, library)
 
 
 def test_go_with_someone_is_follow_and_get_to_is_go(library: Library) -> None:
@@ -154,4 +155,15 @@ def test_our_sets_of_peoples_wording_score(path: Path, library: Library) -> None
     right = sum(scorer.score_one(parse, scorer.expected_frames(item))[0]
                 for item, parse in zip(items, parse_lines([it["text"] for it in items], library), strict=True)
                 if "error" not in parse)
-    assert right / len(items) >= 0.85            # measured: 1.000, 0.867, 0.967 (docs/language.md)
+    assert right / len(items) >= 0.85            # measured: 1.000, 0.900, 0.933 (docs/language.md)
+
+
+def test_where_did_someone_put_it_asks_to_find(library: Library) -> None:
+    assert frames("where did you put the remote?", library) == [("Find", {"theme": "remote"})]
+    with pytest.raises(CommandError):
+        parse_command("where did you go", library)               # nothing to find
+
+
+def test_a_verb_of_motion_and_its_path_start_a_clause(library: Library) -> None:
+    assert [f for f, _ in frames("drop the keys on the table walk to the door", library)] == ["Place", "Go"]
+    assert [f for f, _ in frames("put the cup in a different place on the shelf", library)] == ["Place"]

@@ -46,6 +46,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.QUESTION,
     requests.FRONTED_QUESTION,
     requests.WHERE,
+    requests.WHERE_DID_RULE,
     requests.REQUEST,
     requests.LET_KNOW_RULE,
     requests.FRONTED_OF,

@@ -3,8 +3,8 @@ inside a clause, relative clauses, "until the corner", "something to drink"."""
 
 from __future__ import annotations
 
-from seal_cli.language.english import DETERMINERS, END_MARKS, POSSESSIVES, SEPARATOR_WORDS
-from seal_cli.language.morphology import verb_lemma
+from seal_cli.language.english import DETERMINERS, END_MARKS, POSSESSIVES, PREPOSITIONS, SEPARATOR_WORDS
+from seal_cli.language.morphology import is_adjective, verb_lemma
 from seal_cli.language.rule import AFTER_SEP, Example, Match, Rule
 from seal_cli.language.state import CLOSED, INDEFINITE, REL_FIRST, SEP_FIRST, SUB_FIRST, State, match_phrase, merge
 from seal_cli.language.tags import Tag
@@ -95,16 +95,19 @@ def _unjoined(s: State, i: int) -> Match | None:
     found = s.verb_at(i)
     if found is None or found[2] is not None or words[i].lower != found[0].split()[0]:
         return None
+    unit = found[0]
     after = i + found[1]
     if after >= len(words):
         return None
     nxt = words[after]
+    n = match_phrase(words, after, PREPOSITIONS)
+    path = n > 0 and unit in s.lexicon.goals and words[i].lower not in s.lexicon.things and \
+        not is_adjective(s.out[-1].lower) and s.np_starts(after + n)   # not "a different *place* on the counter"
     if not (nxt.lower in _OBJECT_STARTS or nxt.lower in DETERMINERS or nxt.lower in POSSESSIVES or
-            capitalised(nxt) and nxt.lower not in CLOSED):
-        return None
+            capitalised(nxt) and nxt.lower not in CLOSED or path):
+        return None                       # "put it in the fridge *go to* the kitchen": a verb of motion and its path
     if nxt.lower in ("that", "this", "these", "those") and not s.noun_follows(after + 1):
         return None                       # "a potato slice *that is* on a plate": a relative clause
-    unit = found[0]
     w = words[i]
     return Match(found[1], (Word("", w.start, w.start, Tag.SEP), merge(words, i, found[1], Tag.VERB, unit)),
                  expect=False, verb=unit, using=False)
@@ -113,4 +116,5 @@ def _unjoined(s: State, i: int) -> Match | None:
 UNJOINED = Rule("clause without a joint", _unjoined, (
     Example("meet Jo at the counter escort her back", "escort", Tag.VERB),
     Example("pick up the cup bring it to me", "bring", Tag.VERB),
+    Example("put the milk in the fridge go to the kitchen", "go", Tag.VERB),
 ), None, "a verb of the library and its object right after a phrase: a clause of its own, not a noun")

@@ -19,9 +19,11 @@ from seal_cli.language.english import (
     QUESTION_WORDS,
     REQUEST_MEANS,
     REQUESTS,
+    WHERE_DID,
     WHERE_MEANS,
     WHERE_QUESTIONS,
 )
+from seal_cli.language.morphology import verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import State, match_phrase
 from seal_cli.language.tags import Tag
@@ -70,6 +72,8 @@ def _question(s: State, i: int) -> Match | None:
     if nxt not in ("is", "are", "'s", "was", "were") and not nxt.isalpha():
         return None
     end = s.speech_end(i)                         # the question, whatever its shape, is what to tell
+    if end - i < 3 and words[end - 1].lower in ("is", "are", "'s", "was", "were"):
+        return None                               # "what is": no question yet
     return Match(end - i, (_unsaid(words[i].start, Tag.VERB, QUESTION_MEANS), s.emit(i, end - i, Tag.SAID).words[0]),
                  expect=False, verb=QUESTION_MEANS, using=False)
 
@@ -82,6 +86,18 @@ def _where(s: State, i: int) -> Match | None:
     text = s.text_of(words[i].start, words[i + n - 1].end) or " ".join(w.text for w in words[i:i + n])
     return Match(n, (Word(text, words[i].start, words[i + n - 1].end, Tag.VERB, WHERE_MEANS),), expect=False,
                  verb=WHERE_MEANS, using=False)
+
+
+def _where_did(s: State, i: int) -> Match | None:
+    words = s.words
+    where, auxiliaries, subjects = WHERE_DID
+    if i + 4 >= len(words) or WHERE_MEANS not in s.lexicon.units or words[i + 1].lower not in auxiliaries or \
+            words[i + 2].lower not in subjects or verb_lemma(words[i + 3].lower) != words[i + 3].lower or \
+            not s.np_starts(i + 4):
+        return None
+    end = words[i + 3].end
+    return Match(4, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, WHERE_MEANS),),
+                 expect=False, verb=WHERE_MEANS, using=False)
 
 
 def _request(s: State, i: int) -> Match | None:
@@ -128,6 +144,10 @@ WHERE = Rule("where is", _where, (
     Example("where is the cup?", "where is", Tag.VERB),
     Example("Is there a cup in the kitchen?", "Is there", Tag.VERB),
 ), _WHERE_FIRST, "'where is X', 'is there X': find X")
+WHERE_DID_RULE = Rule("where did I leave", _where_did, (
+    Example("Where did I leave my glasses?", "Where did I leave", Tag.VERB),
+    Example("where do we keep the batteries", "where do we keep", Tag.VERB),
+), WHERE_DID[0], "'where did I leave X', 'where do we keep X': find X")
 REQUEST = Rule("wish for a thing", _request, (
     Example("I'd like the red mug", "I'd like", Tag.VERB),
     Example("Can I have the big plate?", "Can I have", Tag.VERB),

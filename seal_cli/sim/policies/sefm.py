@@ -65,6 +65,7 @@ class SeFMPolicy(Policy):
         self.history: list[tuple[tuple[float, float, float], tuple[Detection, ...]]] = []
         self.tried: set[tuple[Cell, str | None]] = set()
         self.sefm: Any = None
+        self.planner: Any = None
         self.key: tuple[str, ...] = ()
         self.map = agent.scene.map
         if not self.priors:
@@ -109,16 +110,29 @@ class SeFMPolicy(Policy):
                 self.snapshot(agent)
 
     def snapshot(self, agent: Agent) -> None:
-        """The clouds now: the frame at hand, and every object believed in."""
+        """The clouds now: the frame at hand, the commanded frame it serves, and every object believed in."""
         sefm = self.sefm
         objects = {c: sefm.object_particles(c) for c in sefm.object_classes}
         from seal_cli.sefm.filter import frame_id
 
         index = min(agent.index, len(sefm.bindings) - 1)
-        frame = frame_id(sefm.bindings[index]) if sefm.bindings else ""
-        self._clouds.append({"step": agent.world.step, "frame": frame,
-                            "frame_particles": sefm.frame_particles(index)
-                            if sefm.bindings else None, "objects": objects})
+        commanded = self.commanded_index(agent)
+        self._clouds.append({
+            "step": agent.world.step,
+            "frame": frame_id(sefm.bindings[index]) if sefm.bindings else "",
+            "frame_particles": sefm.frame_particles(index) if sefm.bindings else None,
+            "commanded": frame_id(sefm.bindings[commanded]) if commanded is not None else "",
+            "commanded_particles": sefm.frame_particles(commanded) if commanded is not None else None,
+            "objects": objects})
+
+    def commanded_index(self, agent: Agent) -> int | None:
+        """The plan step of the commanded frame the step at hand serves (itself, if it is commanded)."""
+        if not self.sefm.bindings:
+            return None
+        for j in range(min(agent.index, len(self.sefm.bindings) - 1), len(agent.steps)):
+            if agent.todo and agent.steps[j] == agent.todo[0] and j < len(self.sefm.bindings):
+                return j
+        return len(self.sefm.bindings) - 1
 
     def cloud(self, agent: Agent, target: str) -> tuple[np.ndarray, np.ndarray, list[Any]]:
         """Where the thing sought is believed to be, as a weight per free cell of the map, and the
@@ -155,6 +169,49 @@ class SeFMPolicy(Policy):
         return agent.index
 
     def next_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
+        """With frames, the view that starts the shortest expected completion of the whole remaining
+        plan (:meth:`plan_view`); where that has nothing to say, and for object-only, :meth:`greedy_view`."""
+        if self.use_frames and self.whole_plan:
+            decision = self.plan_view(agent, binding, target)
+            if decision is not None:
+                self.tried.add((decision.view.cell, decision.view.open))
+                return decision.view
+        return self.greedy_view(agent, binding, target)
+
+    whole_plan = True
+    """Search for the whole remaining plan (off: the step's own belief, the search of earlier rounds)."""
+    min_rooms = 2
+    """The whole-plan search's regions are rooms a view sees whole and the places in them; on a map of
+    fewer rooms (ALFRED's single open rooms, seen 1.5 m at a time, where a look sees part of a room and
+    several places at once) that model is wrong, and the greedy view rule is kept (docs/benchmarks.md)."""
+
+    def plan_view(self, agent: Agent, binding: Binding, target: str) -> Any:
+        """The region to look at for the whole remaining plan (:class:`~seal_cli.sim.policies.whole_plan.
+        WholePlanSearch`) under SeFM's beliefs of the things still unknown — the commanded frames'
+        unknown elements, each SeFM's object belief after every look so far, as a mass per free cell."""
+        from seal_cli.sim.policies.whole_plan import WholePlanSearch
+
+        if len(self.map.rooms) < self.min_rooms:
+            return None
+        if self.planner is None:
+            self.planner = WholePlanSearch(agent)
+        sefm = self._beliefs(agent)
+        sefm.update(agent.world.robot.pose, (), self._state(agent))
+        points = self.map.free_centres
+
+        def weights(cls: str) -> np.ndarray:
+            if cls in sefm.object_classes:
+                w = np.asarray(sefm.object_density(cls, points), dtype=float)
+            else:
+                w = np.asarray(self.map.prior(cls).weights, dtype=float)
+            return np.where(np.isfinite(w) & (w > 0), w, 0.0)
+
+        decision = self.planner.choose(agent, binding, target, weights)
+        if decision is not None:
+            self.planner.looked.add(decision.region.name)
+        return decision
+
+    def greedy_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
         """The view that reveals the most belief per metre: opening a shut receptacle reveals the
         mass at it; standing on a mode reveals the mass the beliefs' sensor would see there and no
         shut receptacle hides."""

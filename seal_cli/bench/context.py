@@ -1,0 +1,157 @@
+"""The context suite: commands whose frames need two or more things with overlapping priors.
+
+This is where the paper's claim should show: "Stir Mug is more likely to be in a room that has
+both spoons and mugs". Each command needs two things the robot must find, and the two classes'
+priors share a room (spoons and cups both in the bedroom; spoons and mugs both in the kitchen;
+mugs and kettles both in the dining room), so a searcher that thinks about the whole plan can look
+where both may be, and one that looks for one thing at a time cannot.
+
+Houses (:func:`houses`): the shipped apartment (its own cup and spoon priors, and mugs and
+kettles added in code), the AWS RoboMaker small house's real occupancy map (the "wings" reading
+of :data:`~seal_cli.bench.houses.AWS_LAYOUTS`, with furniture and priors from
+:mod:`seal_cli.bench.houses`), and :func:`~seal_cli.bench.houses.cottage`, drawn for this suite.
+Each has several start poses. For each layout, every thing is drawn from its class's prior
+(:func:`~seal_cli.bench.mapsuite.sample_layout`); every command runs from every start with every
+policy on a fresh world of that layout, with the same generator seed for every policy.
+
+Groups are ``house · command · start``; ``all`` is everything; the JSON also has ``by_command``
+and ``by_house`` (the same figures folded another way).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import os
+import tempfile
+import time
+import zlib
+from collections.abc import Callable, Iterator, Sequence
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from seal_cli.bench.houses import (
+    AWS_CONTEXT_PLACES,
+    AWS_CONTEXT_STARTS,
+    CONTEXT_OBJECTS,
+    CONTEXT_PRIORS,
+    COTTAGE_STARTS,
+    aws_house,
+    cottage,
+)
+from seal_cli.bench.mapsuite import sample_layout
+from seal_cli.bench.tasks import Outcome, in_order, summarise
+from seal_cli.errors import SealError
+from seal_cli.frames.library import Library
+from seal_cli.frames.reading import load_library
+from seal_cli.maps.formats.map_server import load_map
+from seal_cli.maps.model import Map, ObjectTruth, Robot
+
+__all__ = ["COMMANDS", "House", "houses", "regroup", "run_context_suite"]
+
+COMMANDS = ("stir the cup", "put the spoon in the cup", "stir the mug", "pour the kettle into the mug")
+"""Spoon and cup (both likely in the bedroom), twice with different frames; spoon and mug (the
+kitchen); kettle and mug (the dining room)."""
+
+APARTMENT_STARTS = ((-6.0, -3.0, 0.0), (0.0, -3.0, 0.0), (6.0, 4.5, 0.0))
+"""The apartment's own start (the living room's west end), the living room by the kitchen door, the dining room."""
+
+
+@dataclasses.dataclass(frozen=True)
+class House:
+    """A map and the robot's start poses on it."""
+
+    map: Map
+    starts: tuple[tuple[float, float, float], ...]
+
+
+def houses(data: Path) -> list[House]:
+    """The suite's three houses (``data``: the shared data folder, for the AWS house's image)."""
+    from seal_cli.resources import map_path
+
+    apartment = load_map(map_path("apartment"))
+    extra = {c: m for c, m in CONTEXT_PRIORS.items() if c not in apartment.priors}
+    have = {o.cls for o in apartment.objects}
+    apartment = dataclasses.replace(
+        apartment, priors={**apartment.priors, **extra},
+        objects=apartment.objects + tuple(ObjectTruth(str(o["class"]), (0.0, 0.0)) for o in CONTEXT_OBJECTS
+                                          if o["class"] not in have))
+    image = data / "maps" / "aws_small_house" / "map.pgm"
+    if not image.is_file():
+        raise SealError(f"{image}: the AWS small house's map is not there (--data names the shared data folder)")
+    with tempfile.TemporaryDirectory() as folder:
+        aws = load_map(aws_house(Path(folder), data, "wings", AWS_CONTEXT_STARTS[0], priors=CONTEXT_PRIORS,
+                                 objects=CONTEXT_OBJECTS, places=AWS_CONTEXT_PLACES, name="aws_small_house"))
+    return [House(apartment, APARTMENT_STARTS), House(aws, AWS_CONTEXT_STARTS), House(cottage(), COTTAGE_STARTS)]
+
+
+def layout_seed(seed: int, layout: int, name: str) -> int:
+    """The generator seed of one layout of one house, the same whatever process draws it."""
+    return (seed * 1_000_003 + layout * 7_919 + zlib.crc32(name.encode())) % (2 ** 32)
+
+
+def run_house_layout(house: House, layout: int, commands: Sequence[str], library: Library,
+                     policies: Sequence[str], *, seed: int = 0, particles: int = 200) -> list[Outcome]:
+    """Every command from every start with every policy on one layout of one house."""
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.policies import make_policy
+
+    m = house.map
+    base = layout_seed(seed, layout, m.name)
+    world = sample_layout(m, np.random.default_rng(base))
+    outcomes = []
+    for s, pose in enumerate(house.starts):
+        start = dataclasses.replace(world, robot=Robot(pose))
+        for c, text in enumerate(commands):
+            group = f"{m.name} · {text} · start {s + 1}"
+            for name in policies:
+                began = time.perf_counter()
+                rng = np.random.default_rng(base + 1 + 97 * s + c)
+                _, result = run_on_map(start, text, library, make_policy(name, particles), rng=rng)
+                outcomes.append(Outcome(f"{m.name}-layout{layout}-start{s + 1}-{c}", group, name, result.completed,
+                                        round(result.path_m, 3), result.steps, result.reason, float("nan"),
+                                        round(time.perf_counter() - began, 3), tuple(result.plan)))
+    return outcomes
+
+
+_WORKER: dict[str, Any] = {}
+
+
+def _work(args: tuple[int, int, tuple[str, ...], tuple[str, ...], int, int]) -> tuple[int, list[Outcome]]:
+    index, layout, commands, policies, seed, particles = args
+    house = _WORKER["houses"][index % len(_WORKER["houses"])]
+    return index, run_house_layout(house, layout, commands, _WORKER["library"], policies, seed=seed,
+                                   particles=particles)
+
+
+def run_context_suite(data: Path, policies: Sequence[str], *, commands: Sequence[str] = COMMANDS,
+                      layouts: int = 3, seed: int = 0, jobs: int | None = None, particles: int = 200,
+                      framelib: Sequence[str] | None = None,
+                      progress: Callable[[int, int], None] | None = None) -> Iterator[Outcome]:
+    """Run the policies on the commands on every house, start and layout; yields the outcomes in
+    (layout, house) order. Every command is checked (parsed and planned) on every house first."""
+    from seal_cli.language.grounding import vocabulary_of_map
+    from seal_cli.pipeline import plan as plan_text
+
+    library = load_library(framelib)
+    built = houses(Path(data))
+    for house in built:
+        for text in commands:
+            plan_text(text, library, vocabulary=vocabulary_of_map(house.map))
+    work = [(layout * len(built) + h, layout, tuple(commands), tuple(policies), seed, particles)
+            for layout in range(layouts) for h in range(len(built))]
+    _WORKER.update(houses=built, library=library)
+    jobs = max(1, min(jobs or os.cpu_count() or 1, len(work) or 1))
+    import multiprocessing
+
+    if jobs == 1 or "fork" not in multiprocessing.get_all_start_methods():
+        yield from in_order(map(_work, work), len(work), progress)
+        return
+    with multiprocessing.get_context("fork").Pool(jobs) as pool:   # the workers inherit the houses
+        yield from in_order(pool.imap_unordered(_work, work), len(work), progress)
+
+
+def regroup(outcomes: Sequence[Outcome], policies: Sequence[str], part: int) -> dict[str, Any]:
+    """The figures by one part of the group name (0: house, 1: command)."""
+    return summarise([dataclasses.replace(o, group=o.group.split(" · ")[part]) for o in outcomes], policies)["groups"]

@@ -1,0 +1,232 @@
+"""The robot's side of :mod:`~seal_cli.sim.policies.completion`: regions of its map, the remaining plan
+as targets, and the view that minimises the expected drive to finish.
+
+:class:`WholePlanSearch` is shared by the policies that search for the whole remaining plan: SeFM
+(its beliefs) and ``prior_optimal`` (the map's priors with exact negative evidence). Each gives a
+weight per free cell of the map for each class sought; the rest — regions, distances, the plan's
+targets, the narration — is here.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from seal_cli.frames.model import Binding
+from seal_cli.frames.taxonomy import class_key
+from seal_cli.maps.priors import target_cells
+from seal_cli.sim.agent import Agent, View
+from seal_cli.sim.navigation import Cell
+from seal_cli.sim.policies.completion import MAX_REGIONS, Choice, Target, solve
+
+__all__ = ["Region", "WholePlanSearch"]
+
+
+@dataclass(frozen=True, eq=False)
+class Region:
+    """Somewhere one view reveals: a place (``place`` set; opened first if shut) or a room's free space."""
+
+    name: str
+    view: Cell
+    look_at: tuple[float, float]
+    cells: np.ndarray = field(repr=False)
+    """Indices into the map's free cells."""
+    place: str | None = None
+    views: tuple[Cell, ...] = ()
+    """Cells that see about as much of the region as :attr:`view` does (a room's); the robot looks
+    from the one it can reach soonest."""
+
+    def nearest_view(self, field_: np.ndarray) -> Cell:
+        """The view the robot reaches soonest, by the shortest-path field from where it is."""
+        options = (self.view, *self.views)
+        return min(options, key=lambda c: float(field_[c]))
+
+
+def _room_views(agent: Agent, inside: np.ndarray, room_cells: np.ndarray) -> list[Cell]:
+    """Cells of a room (rows of the agent's grid ``inside`` it) that each see at least 0.9 of what the
+    best of them sees of the room's free cells within sensor range and line of sight (on a sample
+    of both), the best first."""
+    if not len(inside):
+        return []
+    m = agent.scene.map
+    points = agent.grid.free_points[inside]
+    targets = m.free_centres[room_cells]
+    rng = np.random.default_rng(0)
+    if len(targets) > 200:
+        targets = targets[rng.choice(len(targets), 200, replace=False)]
+    candidates = np.arange(len(points))
+    if len(candidates) > 80:
+        candidates = rng.choice(len(candidates), 80, replace=False)
+    reach = m.sensor.range
+    counts = []
+    for c in candidates:
+        x, y = points[c]
+        near = np.hypot(targets[:, 0] - x, targets[:, 1] - y) <= reach
+        counts.append(int(m.line_of_sight((x, y), targets[near]).sum()) if near.any() else 0)
+    order = np.argsort(-np.asarray(counts), kind="stable")
+    best = counts[int(order[0])]
+    cells = agent.grid.free_cells[inside[candidates[order]]]
+    return [(int(i), int(j)) for (i, j), n in zip(cells, np.asarray(counts)[order], strict=True) if n >= 0.9 * best]
+
+
+def regions_of(agent: Agent) -> list[Region]:
+    """The rooms of the map, each seen from the cell that sees most of it, with the open places its
+    view sees (within sensor range and line of sight) merged in; every other place — shut ones,
+    which must be opened, and those no room's view sees — a region of its own, seen from its
+    stand cell nearest to it."""
+    m = agent.scene.map
+    out: list[Region] = []
+    place_cells = {p.name: target_cells(m, p.name) for p in m.places if p.name in agent.known}
+    in_room: dict[int, list[str]] = {}
+    views: dict[int, list[Cell]] = {}
+    for r, room in enumerate(m.rooms):
+        cells = np.flatnonzero(m.free_cell_room == r)
+        inside = np.flatnonzero(room.contains(agent.grid.free_points))
+        seen_from = _room_views(agent, inside, cells) if len(cells) else []
+        if not seen_from:
+            continue
+        views[r] = seen_from
+        at = agent.grid.point(seen_from[0])
+        for place in m.places:
+            known = agent.known.get(place.name)
+            if known is None or known.openable or not room.contains([place.at])[0]:
+                continue
+            if np.hypot(place.at[0] - at[0], place.at[1] - at[1]) <= m.sensor.range and \
+                    bool(m.line_of_sight(at, np.asarray([place.at]))[0]):
+                in_room.setdefault(r, []).append(place.name)
+    merged = {name for names in in_room.values() for name in names}
+    taken = np.zeros(len(m.free_centres), dtype=bool)
+    for place in m.places:
+        own = place_cells.get(place.name)
+        if own is None or not len(own) or place.name in merged:
+            continue
+        stands = agent.stand_cells(agent.known[place.name])
+        if not len(stands):
+            continue
+        pts = np.asarray([agent.grid.point((int(i), int(j))) for i, j in stands])
+        k = int(np.argmin(np.hypot(pts[:, 0] - place.at[0], pts[:, 1] - place.at[1])))
+        out.append(Region(place.name, (int(stands[k, 0]), int(stands[k, 1])), place.at, own, place.name))
+        taken[own] = True
+    for r, seen_from in views.items():
+        cells = np.flatnonzero((m.free_cell_room == r) & ~taken)
+        for name in in_room.get(r, []):
+            cells = np.union1d(cells, place_cells[name][~taken[place_cells[name]]])
+        out.append(Region(m.rooms[r].name, seen_from[0], agent.grid.point(seen_from[0]), cells,
+                          views=tuple(seen_from[1:])))
+    return out
+
+
+@dataclass(frozen=True)
+class Decision:
+    """A view chosen for the whole remaining plan, and why."""
+
+    view: View
+    region: Region
+    expected_m: float
+
+
+class WholePlanSearch:
+    """The regions of one run's map, and the choice of the next one to look at."""
+
+    def __init__(self, agent: Agent) -> None:
+        self.regions = regions_of(agent)
+        self.looked: set[str] = set()
+        """Regions already looked at from their view."""
+
+    def targets(self, agent: Agent, binding: Binding, target: str) -> list[tuple[str, str | None, list[Cell]]]:
+        """The remaining plan's stops from the thing sought now: (class, None, []) for an unknown
+        thing, (class, value, cells to stand at) for a known one. The horizon ends before a second
+        thing of a class already sought (the model has one thing per class)."""
+        out: list[tuple[str, str | None, list[Cell]]] = []
+        first = agent.class_of(target)
+        names: dict[str, str] = {first: class_key(target)}
+        out.append((first, None, []))
+        held = agent.held()
+        values: list[str] = []
+        started = False
+        for step in agent.remaining:
+            for action in step.actions:
+                if action.name not in ("navigate", "search"):
+                    continue
+                if not started:
+                    if step is binding and class_key(action.args[0]) == class_key(target):
+                        started = True
+                    continue
+                values.append(action.args[0])
+        for value in values:
+            cls = agent.class_of(value)
+            if cls in names and names[cls] != class_key(value):
+                break
+            if cls in names and names[cls] == class_key(value):
+                continue
+            names[cls] = class_key(value)
+            if held is not None and held.key == cls:
+                continue
+            room = agent.room(value)
+            if room is not None and not agent.instances(cls):
+                region = next((g for g in self.regions if g.place is None and g.name == room.name), None)
+                if region is not None:
+                    out.append((cls, value, [region.view]))
+                continue
+            usable = [k for k in agent.instances(cls) if not agent.spent(k.id, value)]
+            if usable:
+                cells = [c for k in usable[:4] if (c := agent.stand_cell(k)) is not None]
+                if cells:
+                    out.append((cls, value, cells))
+                continue
+            out.append((cls, None, []))
+        return out
+
+    def choose(self, agent: Agent, binding: Binding, target: str,
+               weights: Callable[[str], np.ndarray]) -> Decision | None:
+        """The region whose view starts the shortest expected completion; ``weights(cls)`` is the
+        belief of a class per free cell of the map."""
+        stops = self.targets(agent, binding, target)
+        sought = list(dict.fromkeys(c for c, v, _ in stops if v is None))
+        belief = {c: weights(c) for c in sought}
+        candidates = [g for g in self.regions if g.name not in self.looked]
+        mass = {c: np.array([float(belief[c][g.cells].sum()) for g in candidates]) for c in sought}
+        total = {c: float(belief[c].sum()) for c in sought}
+        keep = [i for i in range(len(candidates))
+                if any(total[c] > 0 and mass[c][i] / total[c] >= 0.01 for c in sought)]
+        here = agent.distances()
+        keep = [i for i in keep if np.isfinite(here[candidates[i].nearest_view(here)])]
+        keep.sort(key=lambda i: -max(mass[c][i] / total[c] if total[c] > 0 else 0.0 for c in sought))
+        keep = keep[:MAX_REGIONS]
+        if not keep:
+            return None
+        regions = [candidates[i] for i in keep]
+        cells: list[Cell] = [self.view_of(agent, g, here).cell for g in regions] + [agent.robot_cell()]
+        plan: list[Target] = []
+        for c, value, at in stops:
+            if value is None:
+                plan.append(Target(cls=c))
+            else:
+                plan.append(Target(at=tuple(range(len(cells), len(cells) + len(at)))))
+                cells.extend(at)
+        distance = np.array([agent.grid.distances(a)[[b[0] for b in cells], [b[1] for b in cells]] for a in cells])
+        distance = np.minimum(distance, distance.T)
+        choice: Choice | None = solve(distance, {c: mass[c][keep] for c in sought}, plan, start=len(regions),
+                                      regions=len(regions))
+        if choice is None:
+            return None
+        region = regions[choice.region]
+        view = self.view_of(agent, region, here)
+        shares = {c: float(mass[c][keep][choice.region] / mass[c][keep].sum()) for c in sought
+                  if mass[c][keep].sum() > 0}
+        there = " and ".join(f"{c} {p:.2f}" for c, p in shares.items() if p >= 0.005) or "little of anything"
+        why = (f"{region.name}: {there} there, {here[view.cell]:.1f} m "
+               f"(expected {choice.expected_m:.1f} m to finish the plan)")
+        return Decision(View(view.cell, view.look_at, view.open, why), region, choice.expected_m)
+
+    def view_of(self, agent: Agent, region: Region, field_: np.ndarray) -> View:
+        """Where to stand for a region: a place from its nearest stand cell (opening it if shut), a room
+        from its view."""
+        if region.place is not None:
+            known = agent.known[region.place]
+            cell = agent.stand_cell(known, field_) or region.view
+            shut = known.openable and known.id not in agent.opened and not agent.world.items[known.id].is_open
+            return View(cell, known.at, open=known.id if shut else None)
+        return View(region.nearest_view(field_), region.look_at)

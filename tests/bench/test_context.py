@@ -1,0 +1,73 @@
+"""The context suite: its houses, a layout run by every policy, and the command line's JSON."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from seal_cli.bench.context import COMMANDS, House, houses, regroup, run_house_layout
+from seal_cli.bench.houses import CONTEXT_PRIORS, COTTAGE_STARTS, cottage
+from seal_cli.bench.tasks import summarise
+from seal_cli.cli import app
+from seal_cli.errors import SealError
+from seal_cli.frames.library import Library
+from seal_cli.language.grounding import vocabulary_of_map
+from seal_cli.pipeline import plan as plan_text
+
+runner = CliRunner()
+
+
+def test_every_house_has_the_things_priors_and_starts_and_plans_every_command(shared_data: Path,
+                                                                               library: Library) -> None:
+    built = houses(shared_data)
+    assert [h.map.name for h in built] == ["apartment", "aws_small_house", "cottage"]
+    for house in built:
+        assert {"spoon", "cup", "mug", "kettle"} <= {o.cls for o in house.map.objects}
+        assert all(house.map.priors[c] for c in CONTEXT_PRIORS)
+        assert len(house.starts) >= 3
+        assert all(house.map.free_index([pose[:2]])[0] >= 0 for pose in house.starts)  # every start is free
+        for text in COMMANDS:
+            assert len(plan_text(text, library, vocabulary=vocabulary_of_map(house.map)).steps) == 2
+
+
+def test_the_aws_house_needs_the_shared_data(tmp_path: Path) -> None:
+    with pytest.raises(SealError, match="AWS small house"):
+        houses(tmp_path)
+
+
+def test_a_layout_runs_every_policy_on_the_same_worlds(library: Library) -> None:
+    house = House(cottage(), COTTAGE_STARTS[:2])
+    outcomes = run_house_layout(house, 0, ["stir the cup"], library, ["sefm", "prior_optimal", "oracle"],
+                                particles=100)
+    assert [o.policy for o in outcomes] == ["sefm", "prior_optimal", "oracle"] * 2
+    assert all(o.success for o in outcomes)
+    for start in (0, 3):
+        oracle = outcomes[start + 2].path_m
+        assert oracle <= outcomes[start].path_m and oracle <= outcomes[start + 1].path_m
+    report = summarise(outcomes, ["sefm", "prior_optimal", "oracle"])
+    assert set(report["groups"]) == {"cottage · stir the cup · start 1", "cottage · stir the cup · start 2", "all"}
+    assert regroup(outcomes, ["sefm"], 1)["stir the cup"]["n"] == 2
+    again = run_house_layout(house, 0, ["stir the cup"], library, ["sefm", "prior_optimal", "oracle"], particles=100)
+    assert [o.path_m for o in again] == [o.path_m for o in outcomes]
+
+
+def test_bench_tasks_context_refuses_an_unknown_policy_and_a_bad_command(shared_data: Path) -> None:
+    bad = runner.invoke(app, ["bench", "tasks", "--suite", "context", "--policies", "sefm,psychic"])
+    assert bad.exit_code == 1 and "unknown policy 'psychic'; known: sefm" in bad.stderr
+    unplannable = runner.invoke(app, ["bench", "tasks", "--suite", "context", "--command", "fly to the moon",
+                                      "--data", str(shared_data), "--jobs", "1"])
+    assert unplannable.exit_code == 1 and "unknown verb 'fly'" in unplannable.stderr
+    assert "Traceback" not in unplannable.output
+
+
+def test_bench_tasks_context_json(shared_data: Path) -> None:
+    result = runner.invoke(app, ["bench", "tasks", "--suite", "context", "--command", "stir the cup", "--layouts", "1",
+                                 "--policies", "oracle", "--jobs", "1", "--data", str(shared_data), "--json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert data["suite"] == "context" and "all" in data["groups"]
+    assert data["groups"]["all"]["n"] == 9 and set(data["by_house"]) == {"apartment", "aws_small_house", "cottage",
+                                                                          "all"}

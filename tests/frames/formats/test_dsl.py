@@ -1,0 +1,38 @@
+"""frames.formats.dsl: the ``.frame`` DSL read with positions; syntax errors say what was expected."""
+
+from __future__ import annotations
+
+from seal_cli.frames.formats import dsl
+from seal_cli.frames.formats.dsl import dump, read
+from seal_cli.frames.reading import standard_library
+
+WAVE = ('frame Wave "wave" "wave at" {\n  theme: person\n  do navigate(theme), greet(theme)\n'
+        '  ensures greeted(theme)\n}\n')
+
+
+def test_a_frame_reads_with_its_position_and_units() -> None:
+    (frame,) = read(WAVE, "w.frame").frames
+    assert frame.name == "Wave" and [u.text for u in frame.lexical_units] == ["wave", "wave at"]
+    assert [str(a) for a in frame.actions] == ["navigate(theme)", "greet(theme)"]
+    assert frame.where is not None and (frame.where.file, frame.where.line) == ("w.frame", 1)
+
+
+def test_a_syntax_error_is_located_and_says_what_to_write() -> None:
+    (problem,) = read('frame Wave "wave" {\n  theme person\n}\n', "w.frame").problems
+    assert (problem.file, problem.line, problem.column) == ("w.frame", 2, 9)
+    assert problem.message.startswith("syntax error") and "'role: category'" in problem.message
+    (cut,) = read(WAVE[: WAVE.index("}")], "w.frame").problems
+    assert "end of file" in cut.message and "'}'" in cut.message and cut.file == "w.frame"
+
+
+def test_a_bad_name_is_refused_where_it_is() -> None:
+    (problem,) = read("frame wave {}\n", "w.frame").problems
+    assert problem.line == 1 and problem.column == 7 and "capital letter" in problem.message
+
+
+def test_dump_reads_back_to_the_same_frames() -> None:
+    library = standard_library()
+    text = dump(list(library.frames), library.taxonomy)
+    again = read(text, "dumped.frame")
+    assert again.problems == [] and tuple(again.frames) == library.frames
+    assert dsl.parser() is dsl.parser()                         # built once per process

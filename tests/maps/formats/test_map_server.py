@@ -1,0 +1,73 @@
+"""maps.formats.map_server: map files read as ROS map_server reads them; every bad image one clear error."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from seal_cli.errors import SealError
+from seal_cli.maps.formats.map_server import KEYS, MAP_SERVER_KEYS, SEMANTIC_KEYS, load_map, read_image, read_pgm
+from seal_cli.maps.geometry import FREE, OCCUPIED, UNKNOWN
+from seal_cli.resources import maps_dir
+
+
+def test_the_keys_are_map_servers_then_seals() -> None:
+    assert KEYS == MAP_SERVER_KEYS + SEMANTIC_KEYS
+    assert {"image", "resolution", "origin", "negate", "occupied_thresh", "free_thresh"} <= set(MAP_SERVER_KEYS)
+    assert {"rooms", "places", "priors", "objects", "robot", "sensor"} <= set(SEMANTIC_KEYS)
+
+
+@pytest.mark.parametrize(("data", "says"), [
+    (b"P6\n1 1\n255\n\x00", "not a PGM image"),
+    (b"P5\n3\n", "cut short"),
+    (b"P5\n0 2\n255\n", "impossible values"),
+    (b"P5\n2 2\n70000\n", "impossible values"),
+    (b"P5\n2 2\n255\n\x00\x00", "truncated"),
+    (b"P2\n2 1\n255\n1 x\n", "whole numbers"),
+    (b"P2\n2 1\n255\n1\n", "only 1 values"),
+    (b"P2\n2 1\n100\n1 200\n", "exceeds the maximum 100"),
+])
+def test_a_broken_pgm_is_one_clear_error(data: bytes, says: str) -> None:
+    with pytest.raises(SealError, match=says):
+        read_pgm(data)
+
+
+def test_a_pgm_is_scaled_to_255_with_row_zero_on_top() -> None:
+    grey = read_pgm(b"P2\n2 2\n# max 10\n10\n0 10\n5 10\n")
+    assert grey.tolist() == [[0.0, 255.0], [127.5, 255.0]]
+
+
+def test_cells_follow_the_thresholds_and_the_image_is_flipped(tmp_path: Path) -> None:
+    path = tmp_path / "t.pgm"
+    path.write_bytes(b"P5\n3 2\n255\n" + bytes([0, 254, 205, 255, 0, 0]))
+    cells = read_image(path)
+    # image row 0 (the top) is the highest y: it becomes the last row of the grid
+    assert cells[1].tolist() == [OCCUPIED, FREE, UNKNOWN] and cells[0].tolist() == [FREE, OCCUPIED, OCCUPIED]
+    assert read_image(path, negate=True)[1].tolist() == [FREE, OCCUPIED, OCCUPIED]
+
+
+@pytest.mark.parametrize(("name", "data", "says"), [
+    ("missing.pgm", None, "does not exist"),
+    ("t.jpg", b"\xff\xd8\xff\xe0", "neither PGM"),
+    ("t.png", b"\x89PNG\r\n\x1a\nnot really", "cannot read image t.png"),
+])
+def test_an_unreadable_image_is_named(tmp_path: Path, name: str, data: bytes | None, says: str) -> None:
+    if data is not None:
+        (tmp_path / name).write_bytes(data)
+    with pytest.raises(SealError, match=says):
+        read_image(tmp_path / name)
+
+
+def test_a_map_file_naming_a_bad_image_says_where(tmp_path: Path) -> None:
+    (tmp_path / "m.yaml").write_text("image: gone.pgm\nresolution: 0.5\norigin: [0, 0, 0]\n")
+    with pytest.raises(SealError) as caught:
+        load_map(tmp_path / "m.yaml")
+    assert "gone.pgm" in str(caught.value) and caught.value.file == str(tmp_path / "m.yaml")
+
+
+def test_the_shipped_apartment_loads_by_name_and_path_alike() -> None:
+    by_name, by_path = load_map("apartment"), load_map(maps_dir() / "apartment.yaml")
+    assert by_name.name == by_path.name == "apartment"
+    assert np.array_equal(by_name.grid.cells, by_path.grid.cells)

@@ -1,0 +1,48 @@
+"""sefm.frame_beliefs: the potentials' terms, and frame beliefs that follow what is seen."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from seal_cli.maps.formats.map_server import load_map
+from seal_cli.pipeline import localise
+from seal_cli.sefm.filter import SeFMConfig
+from seal_cli.sefm.frame_beliefs import Terms
+
+
+def test_terms_are_flat_per_relation_and_drop_disjoint_ones() -> None:
+    terms = Terms.build(3, [[(0, 1.0), (1, 0.0)], [], [(1, 0.5)]], [[], [(3, 0.25)], []])
+    assert terms.meas_frame.tolist() == [0, 2] and terms.meas_source.tolist() == [0, 1]
+    assert terms.belief_total.tolist() == [1.0, 0.0, 0.5]
+    assert terms.has_context.tolist() == [False, True, False]
+    rows, beliefs = terms.measurement
+    assert rows.shape[0] == 3 and rows[1].max() == -1 and beliefs[0][rows[0] == 0].tolist() == [1.0]
+    empty = Terms.build(2, [[], []], [[], []])
+    assert empty.belief_total.tolist() == [0.0, 0.0] and not empty.has_context.any()
+
+
+def test_a_frames_belief_goes_where_its_object_is_seen() -> None:
+    apartment = load_map("apartment")
+    sefm = localise(apartment, ["pick up the apple"], rng=np.random.default_rng(0), config=SeFMConfig(particles=150))
+    (pick,) = [i for i, b in enumerate(sefm.bindings) if b.frame.name == "Pick"]
+    seen_at = np.array([0.2, 3.6])                     # on the coffee table, in the family room
+    for _ in range(5):
+        sefm.update((0.0, 2.5, 0.0), [("apple", tuple(seen_at))])
+    X, W = sefm.frames.X[pick], sefm.frames.W[pick]
+    assert np.isclose(W.sum(), 1.0) and np.all(W >= 0)
+    near = np.linalg.norm(X - seen_at, axis=1) < 1.0
+    assert float(W[near].sum()) > 0.6
+    assert sefm.frame_summary(pick).top_room == apartment.room_of(seen_at)[0] == "family_room"
+    assert 0 < sefm.frames.ess()[pick] <= 150
+
+
+def test_the_same_seed_gives_the_same_frame_beliefs() -> None:
+    apartment = load_map("apartment")
+    runs = []
+    for _ in range(2):
+        sefm = localise(apartment, ["stir the cup"], rng=np.random.default_rng(7), config=SeFMConfig(particles=40))
+        sefm.update((5.0, -3.0, 0.0), [("spoon", (8.3, -4.1))])
+        runs.append((sefm.frames.X.copy(), sefm.frames.W.copy()))
+    assert np.array_equal(runs[0][0], runs[1][0]) and np.array_equal(runs[0][1], runs[1][1])
+    assert runs[0][0].shape == (2, 40, 2) and pytest.approx(runs[0][1].sum(axis=1)) == [1.0, 1.0]

@@ -1,0 +1,34 @@
+"""errors: where a problem is, printed as compilers print it, and several problems sorted."""
+
+from __future__ import annotations
+
+from seal_cli.errors import SealError, SealErrors, Where, caret
+
+
+def test_where_prints_file_line_column_or_the_place_in_a_typed_command() -> None:
+    assert str(Where("lib.yaml", 3, 7)) == "lib.yaml:3:7"
+    assert str(Where("lib.yaml", 3)) == "lib.yaml:3" and str(Where("lib.yaml")) == "lib.yaml"
+    assert str(Where(None, None, 5)) == "column 5" and str(Where(None, 2, 5)) == "line 2, column 5"
+    assert str(Where()) == "<input>" and str(Where(None, 4)) == "line 4"
+
+
+def test_an_error_shows_its_source_line_with_a_caret_and_its_hint() -> None:
+    error = SealError("unexpected '}'", Where("a.frame", 2, 5), source_line="  x }\n", hint="close the frame")
+    assert str(error) == "a.frame:2:5: unexpected '}'\n  x }\n    ^\nclose the frame"
+    assert error.to_json() == {"file": "a.frame", "line": 2, "column": 5, "message": "unexpected '}'"}
+    assert str(SealError("no position")) == "no position" and SealError("x").where == Where()
+
+
+def test_the_caret_keeps_tabs_so_it_lines_up() -> None:
+    assert caret("\tab c", 4) == "\tab c\n\t  ^"
+
+
+def test_several_errors_are_sorted_by_file_line_and_column() -> None:
+    errors = SealErrors([SealError("c", Where("b", 1, 1)), SealError("b", Where("a", 2, 1)),
+                         SealError("a", Where("a", 1, 9))])
+    assert [p.message for p in errors.problems] == ["a", "b", "c"]
+    assert errors.message == "3 problems" and errors.where == Where("a", 1, 9)
+    assert str(errors) == "a:1:9: a\na:2:1: b\nb:1:1: c"
+    assert errors.to_json() == {"problems": [p.to_json() for p in errors.problems]}
+    assert SealErrors([SealError("one")]).message == "1 problem"
+    assert isinstance(errors, SealError)

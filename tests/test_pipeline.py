@@ -1,0 +1,80 @@
+"""pipeline: text → parse → ground → plan → SeFM (→ act), the same path the commands take."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from seal_cli import pipeline
+from seal_cli.errors import SealError
+from seal_cli.frames.library import Library
+from seal_cli.frames.reading import standard_library
+from seal_cli.language.grounding import Vocabulary
+from seal_cli.language.parser import parse_command
+from seal_cli.maps.formats.map_server import load_map
+from seal_cli.maps.model import Map
+from seal_cli.planning import plan as planning
+from seal_cli.planning.problem import problem_of_text
+from seal_cli.sefm.filter import SeFM, SeFMConfig
+from seal_cli.sim.policies import make_policy
+
+
+@pytest.fixture(scope="module")
+def apartment() -> Map:
+    return load_map("apartment")
+
+
+def steps(plan: planning.Plan) -> list[str]:
+    return [str(step) for step in plan.steps]
+
+
+def test_parse_uses_the_standard_library_unless_given_one(library: Library) -> None:
+    text = "bring me a cup from the kitchen"
+    assert pipeline.parse(text) == parse_command(text, standard_library()) == pipeline.parse(text, library)
+    vocabulary = Vocabulary.of(["mug"], {"mug": ["cup"]})
+    assert pipeline.parse(text, vocabulary=vocabulary).frames[0].elements["theme"].cls == "mug"
+
+
+def test_an_empty_library_is_used_as_given_not_replaced() -> None:
+    with pytest.raises(SealError):
+        pipeline.parse("stir the cup", Library())
+
+
+def test_plan_is_parse_ground_and_search(library: Library) -> None:
+    result = pipeline.plan("stir the cup")
+    problem = problem_of_text("stir the cup", library)
+    assert result == planning.plan(problem.commanded, library, problem.state, text="stir the cup")
+    assert steps(result) == ["Pick(theme=spoon)", "Stir(theme=cup, instrument=spoon)"]
+    assert steps(pipeline.plan("stir the cup", holding="spoon")) == ["Stir(theme=cup, instrument=spoon)"]
+    assert steps(pipeline.plan("stir the cup", done=["pick up the spoon"])) == ["Stir(theme=cup, instrument=spoon)"]
+    with pytest.raises(SealError, match="1 node"):
+        pipeline.plan("stir the cup", max_nodes=0)
+
+
+def test_frames_to_localise_are_the_distinct_frames_of_every_task(library: Library, apartment: Map) -> None:
+    bindings, state = pipeline.frames_to_localise(["stir the cup", "pick up the spoon"], library, apartment)
+    assert [b.frame.name for b in bindings] == ["Pick", "Stir"]          # the second task's Pick is the first's
+    assert any(f.predicate == "hand_empty" for f in state.facts)      # the apartment's robot holds nothing
+    nothing, start = pipeline.frames_to_localise([], library, apartment, holding="spoon")
+    assert nothing == [] and any(f.predicate == "holding" for f in start.facts)
+
+
+def test_localise_builds_sefm_over_the_plans_frames(apartment: Map) -> None:
+    sefm = pipeline.localise(apartment, ["stir the cup"], rng=np.random.default_rng(0),
+                             config=SeFMConfig(particles=50))
+    assert isinstance(sefm, SeFM) and [b.frame.name for b in sefm.bindings] == ["Pick", "Stir"]
+    sefm.update(apartment.robot.pose)
+    assert sefm.step == 1 and sum(sefm.frame_summary(1).rooms.values()) == pytest.approx(1.0)
+    again = pipeline.localise(apartment, ["stir the cup"], rng=np.random.default_rng(0),
+                              config=SeFMConfig(particles=50))
+    again.update(apartment.robot.pose)
+    assert np.array_equal(again.frames.X, sefm.frames.X)              # one generator: the same beliefs
+    classes = pipeline.localise(apartment, [], rng=np.random.default_rng(0), config=SeFMConfig(particles=20))
+    assert classes.bindings == () and set(classes.object_classes) >= {"spoon", "apple"}
+
+
+def test_run_on_map_carries_out_the_command(library: Library, apartment: Map) -> None:
+    agent, result = pipeline.run_on_map(apartment, "stir the cup", library, make_policy("oracle"),
+                                        rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    assert result.executed[-1].startswith("Stir") and agent.held() is not None

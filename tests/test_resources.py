@@ -1,0 +1,30 @@
+"""resources: the shipped grammars, frame library and maps, from a checkout or a wheel."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from seal_cli import resources
+from seal_cli.errors import SealError
+
+
+def test_the_shipped_folders_are_found() -> None:
+    assert (resources.grammar_path("command.lark")).is_file()
+    assert any(resources.framelib_dir().glob("*.yaml")) and (resources.maps_dir() / "apartment.yaml").is_file()
+
+
+def test_a_map_by_path_or_by_a_shipped_name(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(tmp_path)
+    shipped = resources.maps_dir() / "apartment.yaml"
+    assert resources.map_path("apartment") == shipped == resources.map_path("apartment.yaml")
+    (tmp_path / "apartment.yaml").write_text("")
+    assert resources.map_path("apartment.yaml") == Path("apartment.yaml")      # a file of that name first
+    assert resources.map_path("nowhere") == Path("nowhere")                    # left for the reader to refuse
+
+
+def test_a_missing_installation_folder_is_one_clear_error(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    monkeypatch.setattr(resources, "_PACKAGE", tmp_path / "seal_cli")
+    with pytest.raises(SealError, match="the shipped folder 'maps' is missing from this installation"):
+        resources.maps_dir()
