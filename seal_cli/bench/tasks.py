@@ -43,6 +43,8 @@ from seal_cli.frames.reading import load_library
 __all__ = ["GOALS", "Outcome", "commands_for", "in_order", "run_episode", "run_suite", "summarise"]
 
 GOALS = ("gold", "human")
+BACKENDS = ("process", "ray")
+"""Where episodes run: this machine's process pool, or Ray's drop-in pool (the ``ray`` extra)."""
 
 
 @dataclass(frozen=True)
@@ -165,9 +167,15 @@ def _work(args: tuple[int, Sequence[str], str, int, int]) -> tuple[int, list[Out
 def run_suite(data_dir: str | Path, split: str, policies: Sequence[str], *, goal: str = "gold",
               limit: int | None = None, types: Sequence[str] | None = None, seed: int = 0, jobs: int | None = None,
               particles: int = 200, framelib: Sequence[str] | None = None,
-              progress: Callable[[int, int], None] | None = None) -> Iterator[Outcome]:
+              progress: Callable[[int, int], None] | None = None, backend: str = "process") -> Iterator[Outcome]:
     """Run the policies on the split's episodes (``limit`` per task type), in ``jobs`` processes;
-    yields the outcomes in episode order, calling ``progress(done, total)`` as episodes finish."""
+    yields the outcomes in episode order, calling ``progress(done, total)`` as episodes finish.
+
+    ``backend``: ``process`` (this machine's process pool) or ``ray`` (``ray.util.multiprocessing.Pool``,
+    the ``ray`` extra: a local Ray, or the cluster ``RAY_ADDRESS`` names). Each episode's generator is
+    seeded from its id, so both give the same outcomes."""
+    if backend not in BACKENDS:
+        raise SealError(f"unknown backend {backend!r}; use one of {', '.join(BACKENDS)}")
     if goal not in GOALS:
         raise SealError(f"unknown goal source {goal!r}; use one of {', '.join(GOALS)}")
     suite = load_suite(data_dir, split, limit=limit, types=types, with_priors=False)
@@ -175,6 +183,14 @@ def run_suite(data_dir: str | Path, split: str, policies: Sequence[str], *, goal
     jobs = max(1, min(jobs or os.cpu_count() or 1, total or 1))
     work = [(i, tuple(policies), goal, seed, particles) for i in range(total)]
     init = (str(data_dir), split, limit, tuple(types) if types else None, tuple(framelib) if framelib else None)
+    if backend == "ray":
+        try:
+            from ray.util.multiprocessing import Pool as RayPool
+        except ImportError as error:
+            raise SealError("--backend ray needs the ray extra: pip install 'seal[ray]'") from error
+        with RayPool(jobs, initializer=_init_worker, initargs=init) as ray_pool:
+            yield from in_order(ray_pool.imap_unordered(_work, work), total, progress)
+        return
     if jobs == 1:
         _init_worker(*init)
         results: Iterable[tuple[int, list[Outcome]]] = map(_work, work)

@@ -145,6 +145,8 @@ def tasks(
     policies: str = typer.Option(",".join(DEFAULT_POLICIES), "--policies",
                                  help="Comma-separated policies, of: " + ", ".join(POLICIES) + "."),
     jobs: int = typer.Option(0, "--jobs", min=0, help="Worker processes (0: one per core)."),
+    backend: str = typer.Option("process", "--backend", help="With --suite alfred2d: process (this machine's "
+                                "pool) or ray (Ray's pool, the ray extra; a cluster via RAY_ADDRESS)."),
     seed: int = typer.Option(0, "--seed", min=0, help="Seed; each episode's generator is derived from it."),
     particles: int = typer.Option(200, "--particles", min=1, help="Particles per object and per frame."),
     episodes: Path | None = typer.Option(None, "--episodes", help="Also write every outcome here as JSON Lines.",
@@ -169,6 +171,8 @@ def tasks(
     names = [p.strip() for p in policies.split(",") if p.strip()]
     if not names:
         raise SealError("--policies names no policy")
+    if backend not in ("process", "ray") or (backend == "ray" and suite != "alfred2d"):
+        raise SealError(f"--backend {backend!r}: process, or ray with --suite alfred2d")
     unknown = [name for name in names if name not in POLICIES]
     if unknown:
         raise SealError(f"--policies: unknown policy {unknown[0]!r}; known: {', '.join(POLICIES)}")
@@ -203,7 +207,7 @@ def tasks(
         else:
             runs = run_suite(data, split, names, goal=goal, limit=limit, types=types, seed=seed,
                              jobs=jobs or os.cpu_count() or 1, particles=particles, framelib=libs,
-                             progress=advance)
+                             progress=advance, backend=backend)
         outcomes.extend(runs)
     with outputs:  # a failure above leaves no temporary: they are removed at exit
         if episodes is not None:

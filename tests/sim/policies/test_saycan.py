@@ -130,3 +130,4 @@ def test_wordllama_scores_offline() -> None:
     logp = WordLlamaScorer.shared().score("put the apple in the fridge",
                                           ["put the apple in the fridge", "turn on the television", DONE])
     assert int(np.argmax(logp)) == 0 and np.isclose(np.exp(logp).sum(), 1.0)
+
