@@ -90,6 +90,7 @@ def measure(texts: Sequence[str], library: Library, vocabulary: Vocabulary | Non
         except SealError:
             errors += 1
     seconds = time.process_time() - start
-    silent = sum(1 for parse in parses if swallowed(parse, tokenize(parse.text), parser.lexicon))
+    things = library.taxonomy.known_classes
+    silent = sum(1 for parse in parses if swallowed(parse, tokenize(parse.text), parser.lexicon, things))
     return ParsingFigures(len(texts), len(parses), errors, refused, silent,
                           round(len(texts) / seconds, 1) if seconds > 0 else float("inf"))

@@ -79,7 +79,7 @@ OBSERVATIONS = '''- pose: [-6.0, -3.0, 0.0]
 HOSTILE_CHARS = ["\t", "\x00", "\\q", "\u2028", "\ufeff", "{", "}", "(", ")", ":", ",", "=", '"', "'", "*", "&a",
                  "*a", "!!python/object:os.system", "\r", "\x1c", "é", "-", "[", "]", "#", "%", "\\", "9" * 30,
                  "nan", ".inf", "~", "null", "@@"]
-HOSTILE_WORDS = ["stir", "the", "cup", "café", "put", "99999999999", "apples", "in", "fridge", "and", "it", "\x00",
+HOSTILE_WORDS = ["stir", "the", "cup", "café", "put", "99999999999", "apples", "in", "fridge", "and", "it", "\x01",
                  "\u2028", "\t", "pick", "up", "spoon", "😀", "ʼ", "not", "1e308", "-5", "two", "bring", "me", "a",
                  "(", ")", "[bold]", "\\", "NaN", "0", "sofa", "open", "table", "knife", "\r"]
 
@@ -152,7 +152,8 @@ def _seal() -> list[str]:
 def _once(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
     env = {**os.environ, "COLUMNS": "200", "NO_COLOR": "1", "PYTHONWARNINGS": "ignore"}
     start = time.perf_counter()
-    process = subprocess.Popen([*_seal(), *case.argv], cwd=folder, env=env, stdout=subprocess.PIPE,
+    argv = [a.replace("\x00", "\x01") for a in case.argv]  # no shell can pass a NUL in an argument
+    process = subprocess.Popen([*_seal(), *argv], cwd=folder, env=env, stdout=subprocess.PIPE,
                                stderr=subprocess.PIPE, stdin=subprocess.PIPE if case.stdin is not None
                                else subprocess.DEVNULL, start_new_session=True)
     try:
@@ -415,7 +416,7 @@ def generated_cases(seed: int = 0, count: int = 320) -> Iterator[Case]:
     def command(i: int) -> Case:
         words = " ".join(rng.choice(HOSTILE_WORDS) for _ in range(rng.randint(1, 9)))
         verb = rng.choice([("parse",), ("parse", "--json"), ("plan",), ("plan", "--map", "apartment")])
-        return Case(f"command {i}", (*verb, words), twice=i % 7 == 0)
+        return Case(f"command {i}", (*verb, "--", words), twice=i % 7 == 0)  # "--": words may start with "-"
 
     def output(i: int) -> Case:
         target = rng.choice(["m.yaml", "apartment.pgm", "o.jpg", "sub", "missing/o.png", "/dev/null", "link.png",
@@ -433,7 +434,7 @@ def generated_cases(seed: int = 0, count: int = 320) -> Iterator[Case]:
     def option(i: int) -> Case:
         name, value = rng.choice([("--particles", rng.choice(["0", "-1", "1e9", "x", "1000000000000"])),
                                   ("--steps", rng.choice(["-1", "99999999999", "x"])),
-                                  ("--seed", rng.choice(["-1", "x", "1" * 40]))])
+                                  ("--seed", rng.choice(["-1", "x", "1.5"]))])
         return Case(f"option {i}: {name} {value}", ("localize", "--map", "apartment", name, value),
                     codes=(1, 2))
 

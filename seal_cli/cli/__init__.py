@@ -154,7 +154,8 @@ MAX_PARTICLES = 100_000
 MAX_STEPS = 100_000
 """The most belief updates ``seal localize --steps`` takes (about ten minutes at 200 particles)."""
 
-OUTPUT_SUFFIXES = {"--png": (".png",), "--rrd": (".rrd",), "--episodes": (".jsonl", ".json")}
+OUTPUT_SUFFIXES = {"--png": (".png",), "--rrd": (".rrd",), "--episodes": (".jsonl", ".json"),
+                   "--goals": (".yaml", ".yml"), "--output": (".yaml", ".yml")}
 """The suffixes each output option's format may carry (``--png out.jpg`` is refused, not mislabelled)."""
 
 

@@ -99,8 +99,9 @@ def localize(
                                        "map's robot).", show_default=False),
     done: list[str] | None = typer.Option(None, "--done", help="A command already carried out (repeatable, in "
                                           "order): its frames' postconditions hold.", show_default=False),
-    trajectory: Path | None = typer.Option(None, "--trajectory", help="YAML poses: [[x, y], [x, y, yaw], ...]; one "
-                                           "update per pose, detections simulated from the map's objects.",
+    trajectory: Path | None = typer.Option(None, "--trajectory", help="YAML poses: \\[\\[x, y], \\[x, y, "
+                                           "yaw], ...]; one update per pose, detections simulated from the "
+                                           "map's objects.",
                                            show_default=False),
     observations: Path | None = typer.Option(None, "--observations", help="YAML list of {pose, detections: "
                                              "[{class, at}]}: real detections, one update each.",
@@ -175,7 +176,9 @@ def localize(
     if goals is not None and not bindings:
         raise SealError("--goals writes a pose per frame, and there are none: give --task")
     rng = np.random.default_rng(seed)
-    with Outputs({"--rrd": rrd, "--png": png}, [map_name, trajectory, observations, bag, labels, *(framelib or [])],
+    goal_file = goals if goals is not None and goals.suffix in (".yaml", ".yml") else None  # bags: by their writer
+    with Outputs({"--rrd": rrd, "--png": png, "--goals": goal_file},
+                 [map_name, trajectory, observations, bag, labels, *(framelib or [])],
                  suffixes=OUTPUT_SUFFIXES) as files, progress_bar("updates", len(runs) + steps) as advance:
         observers: list[Any] = [Counter(advance, len(runs) + steps)]
         if rrd is not None:
@@ -190,14 +193,14 @@ def localize(
         sefm = SeFM(the_map, bindings, state, rng, SeFMConfig(particles=particles), observers, classes=classes)
         sefm.follow(runs, steps)
         sefm.close()
-    result = {"map": the_map.name, "seed": seed, "steps": steps, "particles": particles,
-              "updates": sefm.step, **sefm.to_json()}
-    if goals is not None:
-        from seal_cli.ros.goals import goals_for, write_goals
+        result = {"map": the_map.name, "seed": seed, "steps": steps, "particles": particles,
+                  "updates": sefm.step, **sefm.to_json()}
+        if goals is not None:
+            from seal_cli.ros.goals import goals_for, write_goals
 
-        last = runs[-1].pose if runs else the_map.robot.pose
-        write_goals(goals, goals_for(the_map, sefm.frame_ids, result["frames"], last), frame,
-                    stamps[-1] if stamps else 0.0)
+            last = runs[-1].pose if runs else the_map.robot.pose
+            write_goals(files.get("--goals") or goals, goals_for(the_map, sefm.frame_ids, result["frames"], last),
+                        frame, stamps[-1] if stamps else 0.0)
     if as_json:
         emit_json(result)
     else:

@@ -75,10 +75,8 @@ def parse(
     from seal_cli.language.parser import parse_command, parse_lines
 
     if (text is None) == (file is None):
-        import click
-
-        raise click.UsageError("give either a command or --file FILE (one command per line; '-' reads standard "
-                               "input)")
+        raise typer.BadParameter("give either a command or --file FILE (one command per line; '-' reads standard "
+                                 "input)", param_hint="TEXT / --file")
     library = load_library(framelib_paths(framelib))
     vocab = vocabulary_from(vocabulary, map_name)
     if file is not None:
@@ -200,7 +198,9 @@ def bench_parse(
     results: dict[str, Any] = {}
     for path in corpora:
         if not path.is_file():
-            raise SealError(f"no such corpus: {path}", Where(str(path)))
+            where = "" if corpus else (" (the default corpora are in ../shared/data beside a checkout of seal, which "
+                                       "an installed seal does not have: give --corpus FILE and --scorers DIR)")
+            raise SealError(f"no such corpus: {path}{where}", Where(str(path)))
         if path.suffix == ".tsv":
             consts = constants or shared / "data" / "alfred" / "alfred_constants.json"
             argv = [str(folder / "score_alfred_goals.py"), str(path), str(consts)]

@@ -29,18 +29,21 @@ def import_bag(
 ) -> None:
     """Read a bag's robot poses and detections into observations YAML (one entry per detection message)."""
     from seal_cli.errors import SealError, Where
-    from seal_cli.fileio import atomic_write_text
     from seal_cli.ros.bags import read_run
     from seal_cli.ros.importing import observations_text
 
     if output.resolve() == bag.resolve():
         raise SealError(f"-o {output} is the bag itself: give another file", Where(str(output)))
+    from seal_cli.cli import OUTPUT_SUFFIXES
+    from seal_cli.fileio import Outputs
     from seal_cli.ros.labels import read_labels
 
     names = read_labels(labels) if labels is not None else None
+    outputs = Outputs({"--output": output}, [bag, labels], suffixes=OUTPUT_SUFFIXES)
     run = read_run(bag, pose_topic=pose_topic, detections_topic=detections_topic, frame=frame, base_frame=base_frame,
                    labels=names)
-    atomic_write_text(output, observations_text(run, str(bag), frame))
+    with outputs:
+        outputs["--output"].write_text(observations_text(run, str(bag), frame), encoding="utf-8")
     skipped = f" ({run.skipped} outside the poses' time span skipped)" if run.skipped else ""
     err.print(f"wrote {output}: {len(run.observations)} observations from {run.detections_topic}{skipped}, poses "
               f"from {run.pose_source}", markup=False)

@@ -166,6 +166,9 @@ def tasks(
     shared = Path(__file__).resolve().parents[2].parent / "shared" / "data"
     if data is None:
         data = shared if suite == "context" else shared / "alfred2d"
+        if suite == "alfred2d" and not data.is_dir():
+            raise SealError(f"ALFRED-2D's episodes are not at {data}, the default beside a checkout of seal (an "
+                            "installed seal has no data): give --data DIR, the folder holding floorplans.json")
     if suite not in SUITES:
         raise SealError(f"unknown suite {suite!r}; the suites are {', '.join(SUITES)}")
     names = [p.strip() for p in policies.split(",") if p.strip()]

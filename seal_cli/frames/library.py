@@ -58,7 +58,12 @@ class Library:
             folded = {n.lower(): f for n, f in self.by_name.items()}
             if name.lower() in folded:
                 return folded[name.lower()]
-            raise SealError(f"unknown frame {name!r}; the library has {', '.join(sorted(self.by_name))}") from None
+            import difflib
+
+            close = difflib.get_close_matches(name.lower(), list(folded), n=1, cutoff=0.5)
+            hint = f" (did you mean {folded[close[0]].name!r}?)" if close else ""
+            raise SealError(f"unknown frame {name!r}{hint}; the library has {', '.join(sorted(self.by_name))}"
+                            ) from None
 
     def evoked_by(self, unit: str) -> tuple[Frame, ...]:
         """The frames a lexical unit evokes (empty when none does)."""

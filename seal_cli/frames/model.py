@@ -24,9 +24,9 @@ from seal_cli.errors import SealError, SealErrors, Where
 
 __all__ = ["Action", "Element", "Fact", "Frame", "LexicalUnit", "parse_atom"]
 
-IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
+IDENTIFIER = re.compile(r"[^\W\d]\w*\Z")  # Unicode letters too: "café" and "Zoë" are names
 FRAME_NAME = re.compile(r"[A-Z][A-Za-z0-9_]*\Z")
-_ATOM = re.compile(r"\s*(?P<neg>not\s+)?(?P<name>[A-Za-z_][A-Za-z0-9_]*)\s*(?:\((?P<args>[^()]*)\))?\s*\Z")
+_ATOM = re.compile(r"\s*(?P<neg>not\s+)?(?P<name>[^\W\d]\w*)\s*(?:\((?P<args>[^()]*)\))?\s*\Z")
 
 
 def _check_identifier(kind: str, text: str, where: Where | None) -> None:

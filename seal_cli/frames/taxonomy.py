@@ -24,7 +24,7 @@ from seal_cli.errors import SealError, Where
 __all__ = ["Category", "Synonyms", "Taxonomy", "check_class_name", "class_key", "class_words"]
 
 _NAME = re.compile(r"^[a-z0-9]+(?:_[a-z0-9]+)*$")
-_CLASS = re.compile(r"[a-z_][a-z0-9_]*\Z")
+_CLASS = re.compile(r"[^\W\d]\w*\Z")  # Unicode letters too: a café is a class
 _HUMP = re.compile(r"(?<=[a-z0-9])(?=[A-Z])|(?<=[A-Z])(?=[A-Z][a-z])")
 
 

@@ -31,7 +31,7 @@ def check_library(frames: Sequence[Frame], taxonomy: Taxonomy) -> list[SealError
     """Every cross-frame problem in these frames, in source order."""
     checks = (_duplicates(frames), _types(frames, taxonomy), _actions(frames), _arities(frames),
               _unachieved(frames, taxonomy), _cycles(frames, taxonomy), _unit_clashes(frames),
-              _synonym_clashes(taxonomy))
+              _synonym_clashes(taxonomy), _category_cycles(taxonomy))
     return [problem for check in checks for problem in check]
 
 
@@ -239,6 +239,20 @@ def _shortest_cycle(component: list[str], edges: dict[str, list[str]]) -> list[s
                     following.append(other)
         frontier = following
     return None
+
+
+def _category_cycles(taxonomy: Taxonomy) -> Iterator[SealError]:
+    """Categories that contain themselves through other categories (``a: [b]``, ``b: [a]``); a
+    category listing its own name (``person: [person, ...]``) names the class of that name."""
+    by_name = taxonomy.by_name
+    names = list(by_name)
+    edges = {name: [class_key(m) for m in by_name[name].members or () if class_key(m) in by_name
+                    and class_key(m) != name] for name in names}
+    for component in _components(names, edges):
+        path = _shortest_cycle(component, edges)
+        if path:
+            yield SealError(f"category cycle: {' → '.join(path + [path[0]])}; a category cannot contain itself",
+                            by_name[path[0]].where)
 
 
 def _pattern(frame: Frame) -> frozenset[tuple[str, str]]:

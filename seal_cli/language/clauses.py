@@ -5,15 +5,18 @@ Each pass is a method that takes clauses (or a clause's items) and returns or ed
 order :meth:`Clauses.passes` lists them:
 
 1. **reading a clause** (:meth:`Clauses.read`): relative clauses join their noun
-   (:meth:`~Clauses.relatives`), a gapped second clause is split off (:meth:`~Clauses.gapping`:
-   "put the plates on the table *and the glasses next to them*"), things held are taken out
-   ("with X in hand"), coordinated noun phrases join (:meth:`~Clauses.coordinate`), contents join
-   their container, the objects are read (an indirect object first, a second object after what
-   describes a person) and what a verb of saying says (:meth:`~Clauses.message`);
+   (:meth:`~Clauses.relatives`), a clause of purpose read as a "to" phrase is split off
+   (:meth:`~Clauses.purpose`: "take the box to the hall *to open*"), and so is a gapped second
+   clause (:meth:`~Clauses.gapping`: "put the plates on the table *and the glasses next to them*");
+   things held are taken out ("with X in hand"), coordinated noun phrases join
+   (:meth:`~Clauses.coordinate`), contents join their container, the objects are read (an indirect
+   object first, a second object after what describes a person) and what a verb of saying says
+   (:meth:`~Clauses.message`);
 2. **subordinate clauses** ordered (:meth:`~Clauses.subordinate`: "*before you go*, turn off ...");
 3. **coordinated verbs** sharing one object (:meth:`~Clauses.share_objects`: "slice and chill an apple");
-4. **order words** (:meth:`~Clauses.order`: "A while B", "A after B", "A when done B");
-5. **light verbs** (:meth:`~Clauses.light_verb`: "give the sauce *a stir*" is stirring it).
+4. **clauses of purpose** leaving their object unsaid (:meth:`~Clauses.purposes`: "... *to open* [it]");
+5. **order words** (:meth:`~Clauses.order`: "A while B", "A after B", "A when done B");
+6. **light verbs** (:meth:`~Clauses.light_verb`: "give the sauce *a stir*" is stirring it).
 """
 
 from __future__ import annotations
@@ -22,9 +25,12 @@ from collections.abc import Sequence
 from dataclasses import replace
 
 from seal_cli.frames.library import Library
+from seal_cli.frames.model import Frame
+from seal_cli.frames.taxonomy import class_key
 from seal_cli.language.element_types import Types
 from seal_cli.language.english import FIRST_LATER
 from seal_cli.language.lexicon import Word
+from seal_cli.language.morphology import is_adjective, verb_lemma
 from seal_cli.language.roles import FROM, LOCATIVE
 from seal_cli.language.syntax import NP, PP, Clause, Command, Item, end_of
 
@@ -49,24 +55,24 @@ class Clauses:
         clauses: list[Clause] = []
         joins: list[str] = []
         for raw, join in zip(command.clauses, command.joins, strict=True):
-            clause = self.read(raw)
-            clauses.append(clause)
+            read = self.read(raw)             # the clause, and the ones said inside it (gapped, of purpose)
+            clauses.extend(read)
             joins.append(join)
-            if clause.gap is not None:        # "put the plates on the table and the glasses next to them"
-                clauses.append(clause.gap)
-                joins.append("and")
+            joins.extend("and" if extra is read[0].gap else "to" for extra in read[1:])
         self.subordinate(clauses)
         self.share_objects(clauses, joins)
+        self.purposes(clauses, joins)
         ordered = self.order(clauses, joins)
         for clause in ordered:
             self.light_verb(clause)
         return ordered
 
     # -- one clause ----------------------------------------------------------------------------
-    def read(self, raw: Clause) -> Clause:
-        """A clause from the grammar's (all its phrases in ``items``): objects, message, the gapped
-        clause after it."""
+    def read(self, raw: Clause) -> list[Clause]:
+        """A clause from the grammar's (all its phrases in ``items``): objects, message; then the
+        clause of purpose said inside it (:meth:`purpose`) and the gapped clause after it."""
         items = self.relatives(list(raw.items))
+        purpose = self.purpose(items)
         gap: Clause | None = None
         split = self.gapping(items)
         if split is not None:
@@ -75,7 +81,37 @@ class Clauses:
             items = items[:split]
         clause = self.make_clause(raw.verb, items, raw.conditions, raw.sub)
         clause.gap = gap
-        return clause
+        return [clause, *([gap] if gap is not None else []), *([purpose] if purpose is not None else [])]
+
+    def purpose(self, items: list[Item]) -> Clause | None:
+        """A clause of purpose the grammar read as a "to" phrase: "to" and a bare noun phrase that begins
+        with the base form of a verb of the library that is no class of its taxonomy ("take the box to the
+        hall *to open*", "take a dish to the table *to put tissue box on it*"; not "to *microwave*"), and
+        no state after it ("to get *chilled*", "to get *cold*": what happens to it, no instruction). It
+        becomes a clause of its own, with the rest of its words as its object and the phrases after it
+        (taken out of ``items``); None when there is none."""
+        for k, item in enumerate(items):
+            if not isinstance(item, PP) or item.prep != "to" or item.lead:
+                continue
+            np = item.np
+            if np.determined or np.kind != "thing" or np.head is None or np.head.tag != "WORD" or np.of or \
+                    np.results or np.quantity is not None:
+                continue
+            words = [*np.mods, np.head]
+            verb = words[0]
+            if verb.start != np.start or verb_lemma(verb.lower) != verb.lower or not self.types.evoked_by(verb.lower) \
+                    or class_key(verb.lower) in self.types.taxonomy.known_classes:
+                continue                      # "move the mug to *microwave*": a thing the library knows
+            after = words[1].lower if len(words) > 1 else None
+            if after is not None and (is_adjective(after) or verb_lemma(after) not in (None, after)):
+                continue                      # "to get chilled": a state the thing gets into
+            rest: list[Item] = []
+            if len(words) > 1:                # "to put *tissue box*": the rest is its object
+                rest.append(NP(words[1].start, np.end, np.head, mods=words[1:-1], plural=np.plural))
+            rest += items[k + 1:]
+            del items[k:]
+            return self.make_clause(Word(verb.text, verb.start, verb.end, "VERB", verb.lower), rest, [], None)
+        return None
 
     def make_clause(self, verb: Word, items: list[Item], conditions: list[str], sub: str | None) -> Clause:
         """A clause from its verb and the phrases after it."""
@@ -326,6 +362,24 @@ class Clauses:
                     not set(joins[k + 1].split()) - {"and", "then", ",", "plus", "as", "well"}:
                 bare.objects = [nxt.objects[0]]
 
+    def purposes(self, clauses: list[Clause], joins: Sequence[str]) -> None:
+        """"carry the box to the porch *to open*": a clause of purpose said with nothing after its verb
+        acts on the object of the clause before, when that object is known to be what the verb's frames
+        take (a box is ``openable``; a credit card is not known to be ``toggleable``: "take the card *to
+        light*" stays as said) and nothing else would fill it (a frame that needs its object in hand takes
+        the object of the frame before anyway, :meth:`Reference.implicit`); never for a verb of going
+        ("grab the torch *to go*"). The object is borrowed: a copy that ends where it was said."""
+        for k in range(1, len(clauses)):
+            clause, before = clauses[k], clauses[k - 1]
+            if joins[k] != "to" or clause.objects or clause.message or clause.items or not before.objects:
+                continue
+            thing = before.objects[0]
+            frames = self.types.evoked_by(clause.unit or str(clause.verb.info))
+            if not frames or any(not f.elements or f.elements[0].role == "goal" or _needs_in_hand(f) or
+                                 self.types.is_a(thing.head_text, f.elements[0].type) is not True for f in frames):
+                continue
+            clause.objects = [replace(thing, borrowed=True)]
+
     def order(self, clauses: list[Clause], joins: Sequence[str]) -> list[Clause]:
         """The clauses in the order they are to be done: "turn on the lamp while holding a clock" holds
         it first, but "carry a clock while turning on a lamp" is already holding it (the one that takes
@@ -375,6 +429,11 @@ class Clauses:
 def _copy(np: NP) -> NP:
     """The first conjunct of a coordination: the phrase as it was, without the others."""
     return replace(np, conjuncts=[])
+
+
+def _needs_in_hand(frame: Frame) -> bool:
+    first = frame.elements[0].role if frame.elements else None
+    return any(p.predicate == "holding" and p.args == (first,) for p in frame.preconditions)
 
 
 def _to_person(item: Item) -> bool:

@@ -231,7 +231,8 @@ class Evoker:
             if pp.after_relative and host.relative is not None:
                 host.relative = self.text[host.relative_start:pp.np.end]
                 continue
-            host.end = max(host.end, pp.np.end)
+            if not host.borrowed:            # an object said in an earlier clause ends where it was said
+                host.end = max(host.end, pp.np.end)
             if pp.prep == "with" and pp.np.kind != "person" and (host.kind != "person" or host.pronoun):
                 if holds_nothing and host is roles.get(theme) and pp.np.kind == "thing" and not pp.np.pronoun:
                     self.hold(pp.np)     # "turn on the lamp with the remote": held while it is done

@@ -86,7 +86,7 @@ class CommandParser:
         command = Syntax(text, words, self.types).transform(tree)
         clauses = Clauses(text, self.library, self.types, lexicon.speech).passes(command)
         parse = Evoker(text, self.library, self.types, vocabulary, words, tagger.remarks).command(clauses)
-        lost = swallowed(parse, words, lexicon)
+        lost = swallowed(parse, words, lexicon, self.library.taxonomy.known_classes)
         if lost:
             raise _swallowed_error(parse, lost[0])
         if tagger.remarks:

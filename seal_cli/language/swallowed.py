@@ -46,9 +46,12 @@ class Swallowed:
         return {"frame": self.frame, "element": self.element, "verb": self.verb, "start": self.start}
 
 
-def swallowed(parse: Parse, words: Sequence[Word], lexicon: Lexicon) -> tuple[Swallowed, ...]:
+def swallowed(parse: Parse, words: Sequence[Word], lexicon: Lexicon,
+              things: frozenset[str] = frozenset()) -> tuple[Swallowed, ...]:
     """The verbs said inside the elements' texts of a parse (empty when none: the usual case), given
-    the command's words (the tagger's, or :func:`~seal_cli.language.lexicon.tokenize`'s)."""
+    the command's words (the tagger's, or :func:`~seal_cli.language.lexicon.tokenize`'s) and the
+    classes the library knows (``Taxonomy.known_classes``: a word naming one is a noun, "next to
+    *microwave*")."""
     said = [(index, role, phrase.span) for index, evoked in enumerate(parse.frames)
             for role, phrase in evoked.elements.items()
             if phrase.span is not None and not phrase.default and phrase.kind != "message"
@@ -56,7 +59,7 @@ def swallowed(parse: Parse, words: Sequence[Word], lexicon: Lexicon) -> tuple[Sw
     found: list[Swallowed] = []
     for index, role, (start, end) in said:
         for k, word in enumerate(words):     # not the phrase's first word: what the grammar began it with
-            if start < word.start and word.end <= end and verb_at(words, k, lexicon):
+            if start < word.start and word.end <= end and verb_at(words, k, lexicon, things):
                 found.append(Swallowed(index, role, word.text, word.start))
                 break
     return tuple(found)
@@ -69,7 +72,7 @@ _NO_VERB_AFTER = DETERMINERS | POSSESSIVES | SUBJECTS | {"you"}
 """Words after which a verb's form is no imperative: a noun ("the *hand* soap") or a subject's verb."""
 
 
-def verb_at(words: Sequence[Word], k: int, lexicon: Lexicon) -> bool:
+def verb_at(words: Sequence[Word], k: int, lexicon: Lexicon, things: frozenset[str] = frozenset()) -> bool:
     """Whether word ``k`` of a command is said as a verb of the library (the module docstring)."""
     before = words[k - 1].lower if k > 0 else ""
     after = words[k + 1] if k + 1 < len(words) else None
@@ -77,9 +80,9 @@ def verb_at(words: Sequence[Word], k: int, lexicon: Lexicon) -> bool:
     starts_np = then in _NOUN_PHRASE_STARTS or after is not None and after.text[:1].isupper()
     if before != "to" and not starts_np and then not in OBJECT_PRONOUNS or before in _NO_VERB_AFTER:
         return False                     # no sign of a verb (the cheap tests first: most words stop here)
-    low = words[k].lower
+    low = words[k].lower.split(" ", 1)[0]   # a word the tagger joined: its first ("warm up")
     lemma = verb_lemma(low)
-    if lemma is None or lemma not in lexicon.units:
+    if lemma is None or lemma not in lexicon.units or low in things:
         return False
     if low != lemma:                     # "a fireplace *taking it* to the table" does something; "a plate
         return low.endswith("ing") and then in OBJECT_PRONOUNS   # *holding a* candle" says what it has;

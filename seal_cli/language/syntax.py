@@ -49,6 +49,7 @@ class NP:
     determined: bool = False                             # begins with a determiner ("the", "his", "two")
     possessor: NP | None = None                          # "*the visitor*'s question", "*Jorge*'s question"
     there: bool = False                                  # a bare "there" ending its clause: a place said before
+    borrowed: bool = False                               # an earlier clause's object ("to open [it]"): said there
 
     @property
     def head_text(self) -> str:

@@ -260,11 +260,18 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
         for element in frame.elements:
             if element.default is not None:
                 things.name(element.default)
-    executed = [b for p in done for b in commanded_frames(p, library, things)]
+    executed = [(p.text, b) for p in done for b in commanded_frames(p, library, things)]
     commanded = commanded_frames(parse, library, things)
     state = things.state(holding)
-    for binding in executed:
+    changed: dict[Fact, str] = {}  # a fact an earlier done command made true or false → that command
+    for text, binding in executed:
+        for fact in state.unmet(binding):
+            if fact.positive in changed:
+                raise SealError(f"--done {text!r} cannot follow --done {changed[fact.positive]!r}: "
+                                f"{binding.frame.name} needs {fact}, which that command undid; say what happened "
+                                "in between (another --done) or drop one of them")
         state = state.apply(binding)
+        changed.update((f.positive, text) for f in binding.postconditions)
     return Problem(parse.text, tuple(commanded), state)
 
 

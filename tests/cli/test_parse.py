@@ -75,9 +75,10 @@ def test_a_missing_file_is_exit_1(tmp_path: Path) -> None:
     assert result.exit_code == 1 and "no such file" in result.stderr and not result.stdout
 
 
-def test_text_or_file_not_both_nor_neither() -> None:
-    assert runner.invoke(app, ["parse"]).exit_code == 1
-    assert runner.invoke(app, ["parse", "go home", "--file", "-"], input="").exit_code == 1
+def test_text_or_file_not_both_nor_neither_is_a_usage_error() -> None:
+    for args in (["parse"], ["parse", "go home", "--file", "-"]):
+        result = runner.invoke(app, args, input="")
+        assert result.exit_code == 2 and "give either a command or --file" in result.stderr
 
 
 def test_vocabulary_grounds_elements(tmp_path: Path) -> None:

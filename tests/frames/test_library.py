@@ -53,7 +53,7 @@ def test_multiword_units_come_first(library: Library) -> None:
 
 
 def test_unknown_frame_lists_the_known_ones(library: Library) -> None:
-    with pytest.raises(SealError, match="unknown frame 'Stirr'; the library has .*Stir"):
+    with pytest.raises(SealError, match=r"unknown frame 'Stirr' \(did you mean 'Stir'\?\); the library has .*Stir"):
         library.frame("Stirr")
     assert library.frame("stir").name == "Stir"
 

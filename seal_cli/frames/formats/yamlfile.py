@@ -29,7 +29,7 @@ import yaml
 from seal_cli.errors import Where
 from seal_cli.fileio import LOADER
 from seal_cli.frames.formats import Contents
-from seal_cli.frames.model import Action, Element, Fact, Frame, LexicalUnit
+from seal_cli.frames.model import IDENTIFIER, Action, Element, Fact, Frame, LexicalUnit
 from seal_cli.frames.taxonomy import Category, Synonyms, Taxonomy
 from seal_cli.yamlnodes import NodeReader, is_null
 
@@ -77,9 +77,17 @@ class _Reader(NodeReader):
             elif key == "lexical_units":
                 self.units(value)
             elif key == "world":
-                world = tuple(w for w in (self.string(n, "a world predicate") for n in self.items(value, "world"))
-                              if w)
+                world = tuple(w for w in (self.predicate(n) for n in self.items(value, "world")) if w)
                 self.contents.taxonomy = self.contents.taxonomy.merged(Taxonomy((), world))
+
+    def predicate(self, node: yaml.Node) -> str | None:
+        """A world predicate: a name."""
+        name = self.string(node, "a world predicate")
+        if name is not None and not IDENTIFIER.match(name):
+            self.problem(f"world predicate {name!r} is not a name (letters, digits and '_', not starting with a "
+                         "digit)", node)
+            return None
+        return name
 
     def categories(self, node: yaml.Node) -> None:
         found = []

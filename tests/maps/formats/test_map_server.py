@@ -14,7 +14,7 @@ from seal_cli.resources import maps_dir
 
 
 def test_the_keys_are_map_servers_then_seals() -> None:
-    assert KEYS == MAP_SERVER_KEYS + SEMANTIC_KEYS
+    assert KEYS == MAP_SERVER_KEYS + ("occupancy",) + SEMANTIC_KEYS  # occupancy: a grid from a ROS bag
     assert {"image", "resolution", "origin", "negate", "occupied_thresh", "free_thresh"} <= set(MAP_SERVER_KEYS)
     assert {"rooms", "places", "priors", "objects", "robot", "sensor"} <= set(SEMANTIC_KEYS)
 

@@ -1,0 +1,61 @@
+"""The clause passes: a clause of purpose read as a "to" phrase becomes a clause of its own."""
+
+from __future__ import annotations
+
+import pytest
+
+from seal_cli.frames.library import Library
+from seal_cli.language.parser import parse_command
+
+
+def _frames(text: str, library: Library) -> list[tuple[str, dict[str, str | None]]]:
+    return [(f.frame, {role: p.text for role, p in f.elements.items()}) for f in parse_command(text, library).frames]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("carry the box to the porch to open", [("Bring", {"theme": "the box", "goal": "the porch"}),
+                                            ("Open", {"theme": "the box"})]),        # its object: the box
+    ("bring the jar to the counter to put spoon beside it",
+     [("Bring", {"theme": "the jar", "goal": "the counter"}), ("Place", {"theme": "spoon", "goal": "it"})]),
+    ("take a pear to the sink to rinse", [("Bring", {"theme": "a pear", "goal": "the sink"}),   # in hand: the
+                                          ("Clean", {"theme": "", "instrument": None})]),       # pear, unsaid
+])
+def test_a_purpose_read_as_a_to_phrase_is_a_clause(library: Library, text: str, expected: list[object]) -> None:
+    assert _frames(text, library) == expected
+
+
+def test_a_purpose_takes_the_object_only_when_it_is_known_to_fit(library: Library) -> None:
+    assert _frames("carry the crate to the porch to open", library)[1] == ("Open", {})   # a crate: not known
+    frames = _frames("carry the box to the porch to open it", library)                  # said: its own
+    assert frames[1][0] == "Open" and frames[1][1]["theme"] == "it"
+
+
+def test_a_purpose_of_going_takes_no_object(library: Library) -> None:
+    frames = _frames("grab the torch to go check the shed", library)
+    assert frames[0] == ("Pick", {"theme": "the torch"}) and ("Go", {"theme": "the torch"}) not in frames
+    assert all(elements.get("goal") != "the torch" for _, elements in frames)
+
+
+@pytest.mark.parametrize(("text", "frames"), [
+    ("move the mug to microwave", ["Place"]),                     # a thing the taxonomy knows: a place
+])
+def test_no_purpose_where_the_word_is_a_thing(library: Library, text: str, frames: list[str]) -> None:
+    parse = parse_command(text, library)
+    assert [f.frame for f in parse.frames if f.frame != "Cool"] == frames
+
+
+def test_a_purpose_read_as_a_to_phrase_keeps_what_follows_its_verb(library: Library) -> None:
+    from seal_cli.language.clauses import Clauses
+    from seal_cli.language.lexicon import Tagger, tokenize
+    from seal_cli.language.parser import CommandParser
+    from seal_cli.language.syntax import PP, Syntax
+
+    text = "carry the jar to the counter to stack cups beside it"
+    parser = CommandParser.of(library)
+    words = Tagger(parser.lexicon, tokenize(text), text).run()
+    command = Syntax(text, words, parser.types).transform(parser.tree(text, words))
+    clauses = Clauses(text, library, parser.types, parser.lexicon.speech).passes(command)
+    assert [c.verb.lower for c in clauses][0] == "carry"
+    if len(clauses) == 2 and clauses[1].verb.lower == "stack":       # read by the tagger or by this pass
+        assert [np.head_text for np in clauses[1].objects] == ["cup"]
+        assert [x.prep for x in clauses[1].items if isinstance(x, PP)] == ["beside"]

@@ -1,0 +1,182 @@
+"""Nothing lost, nothing hangs, every problem listed (issue 14): outputs never destroy inputs,
+readers refuse what would hang them, and a few hostile cases of ``seal bench reliability`` run
+for real. The whole hostile suite (hundreds of cases) is ``seal bench reliability``."""
+
+from __future__ import annotations
+
+import os
+import signal
+import stat
+from pathlib import Path
+
+import pytest
+import yaml
+from typer.testing import CliRunner
+
+from seal_cli.bench.reliability import cases, generated_cases, issue_cases, run_case, summarise
+from seal_cli.cli import app
+from seal_cli.errors import SealError
+from seal_cli.fileio import LOADER, Outputs, read_bytes, read_text, split_lines
+from seal_cli.frames.formats import dsl
+from seal_cli.yamlnodes import check_size
+
+runner = CliRunner()
+
+
+# -- outputs ------------------------------------------------------------------------------------
+def test_an_output_that_is_an_input_is_refused_by_path_link_and_inode(tmp_path: Path) -> None:
+    source = tmp_path / "m.yaml"
+    source.write_text("kept")
+    (tmp_path / "link.png").symlink_to(source)
+    os.link(source, tmp_path / "hard.png")
+    for target in (source, tmp_path / "link.png", tmp_path / "hard.png", tmp_path / "sub" / ".." / "m.yaml"):
+        (tmp_path / "sub").mkdir(exist_ok=True)
+        with pytest.raises(SealError, match="would overwrite the input"):
+            Outputs({"--png": target}, [source])
+    assert source.read_text() == "kept"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["hard.png", "link.png", "m.yaml", "sub"]
+
+
+def test_a_file_read_earlier_counts_as_an_input(tmp_path: Path) -> None:
+    source = tmp_path / "notes.png"
+    source.write_text("read")
+    read_text(source)
+    with pytest.raises(SealError, match=f"would overwrite the input {source}"):
+        Outputs({"--png": source})
+
+
+def test_two_outputs_may_not_be_one_file(tmp_path: Path) -> None:
+    with pytest.raises(SealError, match="--rrd and --png name the same file"):
+        Outputs({"--png": tmp_path / "o", "--rrd": tmp_path / "o"})
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(("target", "message"), [("o.jpg", "give a name ending in .png, not .jpg"),
+                                                 ("missing/o.png", "folder .* does not exist"),
+                                                 (".", "it is a folder")])
+def test_wrong_targets_are_refused_before_any_work(tmp_path: Path, target: str, message: str) -> None:
+    with pytest.raises(SealError, match=message):
+        Outputs({"--png": tmp_path / target}, suffixes={"--png": (".png",)})
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_all_outputs_or_none(tmp_path: Path) -> None:
+    with pytest.raises(RuntimeError), Outputs({"--png": tmp_path / "a.png", "--rrd": tmp_path / "a.rrd"}) as plan:
+        plan["--png"].write_bytes(b"png")
+        assert len(list(tmp_path.iterdir())) == 2  # the temporaries, reserved at once
+        raise RuntimeError("the run failed")
+    assert list(tmp_path.iterdir()) == []
+    with Outputs({"--png": tmp_path / "a.png", "--rrd": tmp_path / "a.rrd"}) as plan:
+        plan["--png"].write_bytes(b"png")
+        plan["--rrd"].write_bytes(b"rrd")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.png", "a.rrd"]
+    assert (tmp_path / "a.rrd").read_bytes() == b"rrd"
+
+
+def test_a_device_is_written_in_place_not_replaced() -> None:
+    with Outputs({"--png": "/dev/null", "--rrd": "/dev/null"}, suffixes={"--png": (".png",)}) as plan:
+        plan["--png"].write_bytes(b"x" * 1000)
+    assert stat.S_ISCHR(os.stat("/dev/null").st_mode)
+
+
+def test_a_named_pipe_nobody_reads_is_refused_not_waited_on(tmp_path: Path) -> None:
+    os.mkfifo(tmp_path / "p.png")
+    with pytest.raises(SealError, match="named pipe that no process reads"):
+        Outputs({"--png": tmp_path / "p.png"})
+
+
+def test_stale_temporaries_of_dead_runs_are_swept_live_ones_kept(tmp_path: Path) -> None:
+    dead = tmp_path / ".o.png.seal999999999-0123abcd.tmp.png"
+    live = tmp_path / f".o.png.seal{os.getppid()}-0123abcd.tmp.png"
+    dead.write_bytes(b"half")
+    live.write_bytes(b"being written")
+    with Outputs({"--png": tmp_path / "o.png"}) as plan:
+        plan["--png"].write_bytes(b"whole")
+    assert not dead.exists() and live.exists() and (tmp_path / "o.png").read_bytes() == b"whole"
+
+
+def test_plan_pddl_writes_both_files_or_neither(tmp_path: Path) -> None:
+    (tmp_path / "problem.pddl").mkdir()
+    result = runner.invoke(app, ["plan", "--pddl", str(tmp_path), "stir the cup"])
+    assert result.exit_code == 1 and "problem.pddl" in result.stderr and "it is a folder" in result.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["problem.pddl"]
+
+
+# -- readers ------------------------------------------------------------------------------------
+def test_special_files_are_refused_by_kind_before_opening(tmp_path: Path) -> None:
+    os.mkfifo(tmp_path / "pipe.yaml")
+    with pytest.raises(SealError, match="it is a FIFO"):
+        read_text(tmp_path / "pipe.yaml")
+    with pytest.raises(SealError, match="it is a character device"):
+        read_bytes("/dev/zero")
+
+
+def test_files_over_the_bound_are_refused(tmp_path: Path) -> None:
+    big = tmp_path / "big.txt"
+    big.write_bytes(b"x" * 2000)
+    with pytest.raises(SealError, match="seal reads files of at most 1000 bytes"):
+        read_text(big, limit=1000)
+
+
+def test_lines_are_split_on_newlines_only() -> None:
+    text = "a\u2028b\x0bc\rd\x1ce\x85f\nsecond\r\nthird"
+    assert split_lines(text) == ["a\u2028b\x0bc\rd\x1ce\x85f", "second", "third"]
+
+
+def test_a_bom_is_dropped_and_bad_utf8_is_located(tmp_path: Path) -> None:
+    path = tmp_path / "c.txt"
+    path.write_bytes(b"\xef\xbb\xbfstir\nok\nbad \xff\n")
+    with pytest.raises(SealError) as caught:
+        read_text(path)
+    assert (caught.value.line, caught.value.column) == (3, 5)
+    path.write_bytes(b"\xef\xbb\xbfstir\n")
+    assert read_text(path) == "stir\n"
+
+
+def test_yaml_aliases_are_bounded_and_may_not_hold_themselves() -> None:
+    bomb = "a: &a [1, 2, 3, 4, 5, 6, 7, 8, 9, 10]\n" + "".join(
+        f"{chr(98 + i)}: &{chr(98 + i)} [{', '.join([f'*{chr(97 + i)}'] * 10)}]\n" for i in range(6))
+    with pytest.raises(SealError, match="more than 1,000,000 values"):
+        check_size(yaml.compose(bomb, Loader=LOADER), "bomb.yaml")
+    with pytest.raises(SealError, match="refers to a value that holds it"):
+        check_size(yaml.compose("&a [*a]", Loader=LOADER), "self.yaml")
+    check_size(yaml.compose("a: &a [1]\nb: [*a, *a]", Loader=LOADER), "fine.yaml")
+
+
+# -- every problem, in words ----------------------------------------------------------------------
+def test_one_syntax_error_hides_no_other_problem() -> None:
+    text = ('category thing = *\nframe A "a" {\n  x: thing\n  requires p(x) q(x)\n}\n'
+            'frame B "b" {\n  x thingy\n}\nframe C "c" {\n  x: thingy\n}\nworld 5\n')
+    problems = dsl.read(text, "f.frame").problems
+    assert [(p.line, p.message.split(" (")[0]) for p in problems] == [
+        (4, "syntax error: a comma is missing between two facts or actions"),
+        (7, "syntax error: an element is written 'role: category'"),
+        (12, "syntax error: unexpected '5'; expected a name")]
+    assert [f.name for f in dsl.read(text, "f.frame").frames] == ["C"]
+
+
+@pytest.mark.parametrize("bad", ["\t", "\x00", "\\q"])
+def test_a_bad_character_in_a_quoted_string_is_a_located_problem(bad: str) -> None:
+    problems = dsl.read(f'frame A "wh{bad}isk" {{\n}}\n', "f.frame").problems
+    assert len(problems) == 1 and problems[0].line == 1 and problems[0].column == 12
+    assert "a quoted string may not hold" in problems[0].message
+
+
+# -- the hostile suite, a few cases for real --------------------------------------------------------
+def test_the_suite_holds_the_issue_and_at_least_300_generated_cases() -> None:
+    generated = list(generated_cases(0, 320))
+    assert len(generated) == 320 and len({c.name for c in generated}) == 320
+    assert len(list(issue_cases())) >= 40
+    assert [c.argv for c in generated_cases(5, 20)] == [c.argv for c in generated_cases(5, 20)]
+
+
+PICKED = ("1 localize --png onto the map", "1 an output hard-linked to the image", "3 put 99999999999 apples",
+          f"5 {signal.SIGTERM.name} during localize --png --rrd", "5 a stale temporary of a killed run is swept")
+
+
+@pytest.mark.parametrize("name", PICKED)
+def test_hostile_cases_end_cleanly(name: str) -> None:
+    case = next(c for c in cases(0, 0) if c.name == name)
+    outcome = run_case(case)
+    assert outcome.problems == []
+    assert summarise([outcome])["tried"] == 1
