@@ -178,6 +178,12 @@ def run_suite(data_dir: str | Path, split: str, policies: Sequence[str], *, goal
         raise SealError(f"unknown backend {backend!r}; use one of {', '.join(BACKENDS)}")
     if goal not in GOALS:
         raise SealError(f"unknown goal source {goal!r}; use one of {', '.join(GOALS)}")
+    from seal_cli.sim.policies import make_policy
+
+    for name in policies:  # a missing extra (saycan's language model) fails here, before any worker starts
+        policy = make_policy(name, 1)
+        if getattr(policy, "drives_itself", False):
+            getattr(policy, "scorer", None)
     suite = load_suite(data_dir, split, limit=limit, types=types, with_priors=False)
     total = len(suite.episodes)
     jobs = max(1, min(jobs or os.cpu_count() or 1, total or 1))
