@@ -58,7 +58,8 @@ def plan(text: str, library: Library | None = None, *, holding: str | None = Non
     ``holding``: what the robot holds; ``done``: commands already carried out, in order."""
     library = _or_standard(library)
     problem = problem_of_text(text, library, holding=holding, done=done, map=map, vocabulary=vocabulary)
-    return planning.plan(problem.commanded, library, problem.state, max_nodes=max_nodes, text=text)
+    found = planning.plan(problem.commanded, library, problem.state, max_nodes=max_nodes, text=text)
+    return replace(found, warnings=problem.warnings) if problem.warnings else found
 
 
 def frames_to_localise(tasks: Sequence[str], library: Library, map: Map, *, holding: str | None = None,
@@ -111,19 +112,29 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
     """Carry out a command on a map whose ground-truth objects are the world (``seal run``).
 
     The command and the ``done`` commands (already carried out) are parsed with the map's
-    vocabulary — or ``vocabulary``, restricted to the map's classes — and grounded without the
-    map's objects, which the robot must find; ``holding`` overrides what the map's robot holds.
+    vocabulary — or ``vocabulary``, restricted to the map's classes — and grounded on what the
+    robot knows of the map (its rooms, places and people: :mod:`seal_cli.planning.grounding`),
+    without the map's objects, which the robot must find; ``holding`` overrides what the map's
+    robot holds. A room or a fixed thing the map lacks raises SealError before anything moves; a
+    kind of thing the map knows nothing of is warned about and searched for in the whole house.
     """
     from seal_cli.maps.model import Robot
+    from seal_cli.planning.grounding import spoken
     from seal_cli.sim.agent import Agent, scene_from_map
+    from seal_cli.sim.policies import make_policy
 
     if holding is not None:
         m = replace(m, robot=Robot(m.robot.pose, holding))
     known = vocabulary_of_map(m)
     vocabulary = known if vocabulary is None else vocabulary.restricted_to(known.classes)
-    parses = [parse_command(t, library, vocabulary) for t in (*done, text)]
-    problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1])
+    parses = [parse_command(spoken(t), library, vocabulary) for t in (*done, text)]
+    problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=m.known(),
+                            vocabulary=vocabulary)
     agent = Agent(scene_from_map(m, library), library, policy, rng=rng, budget=budget, observers=observers,
-                  classes=problem.state.classes)
-    executed = [b for p in parses[:-1] for b in build_problem(p, library).commanded]
-    return agent, agent.run(problem.commanded, done=executed)
+                  classes=problem.state.classes, sweeper=lambda: make_policy("coverage"))
+    executed = [b for p in parses[:-1] for b in build_problem(p, library, map=m.known()).commanded]
+    for warning in problem.warnings:
+        agent.say("warn", f"warning: {warning}")
+    result = agent.run(problem.commanded, done=executed)
+    result.warnings = list(problem.warnings)
+    return agent, result

@@ -95,14 +95,44 @@ AWS_TRAJECTORY = [(1.5, -4.0), (4.0, -3.0), (6.5, -2.5), (7.5, -3.5), (6.5, -2.0
 """Through the kitchen (four looks at the spoon), across the living room into the bedroom (three at the cup)."""
 
 
+AWS_PLACES = (
+    {"name": "bed_1", "class": "bed", "at": [-6.17, 2.03], "reach": 1.5},
+    {"name": "nightstand_1", "class": "nightstand", "at": [-7.73, 2.86]},
+    {"name": "nightstand_2", "class": "nightstand", "at": [-4.41, 2.86]},
+    {"name": "desk_1", "class": "desk", "at": [-8.99, 2.06]},
+    {"name": "wardrobe_1", "class": "wardrobe", "at": [-3.15, 2.48], "openable": True},
+    {"name": "coffee_table_1", "class": "coffee_table", "at": [1.51, -1.73]},
+    {"name": "sofa_1", "class": "sofa", "at": [0.33, -1.9], "reach": 1.2},
+    {"name": "tv_stand_1", "class": "tv_stand", "at": [0.63, -5.18]},
+    {"name": "tv_stand_2", "class": "tv_stand", "at": [-6.2, -1.39]},
+    {"name": "dining_table_1", "class": "dining_table", "at": [6.55, 0.95], "reach": 1.2},
+    {"name": "fridge_1", "class": "fridge", "at": [8.7, -1.03], "openable": True},
+    {"name": "counter_1", "class": "counter", "at": [9.04, -3.35]},
+    {"name": "cabinet_1", "class": "cabinet", "at": [8.0, -3.84], "openable": True},
+    {"name": "trash_can_1", "class": "trash_can", "at": [2.36, -0.8]},
+)
+"""The furniture of the AWS house's world file (``world_models.json``: Bed_01, NightStand_01, ReadingDesk_01,
+Wardrobe_01, CoffeeTable_01, SofaC_01, TVCabinet_01, KitchenTable_01, Refrigerator_01, CookingBench_01,
+KitchenCabinet_01, Trash_01) at the positions given there."""
+
+AWS_PEOPLE = ({"name": "Carla", "room": "kitchen"}, {"name": "Dev", "at": [-5.0, 0.0]})
+"""Two people: Carla somewhere in the kitchen, Dev in the left wing (the bedroom of ``wings``)."""
+
+AWS_ITEMS = ({"class": "apple", "in": "fridge_1"}, {"class": "book", "at": [-8.6, 2.0], "in": "desk_1"})
+"""Two more things for the end-to-end commands: an apple in the (closed) fridge, a book on the desk."""
+
+
 def aws_house(folder: Path, data: Path, layout: str, robot: tuple[float, float, float], *,
               priors: Mapping[str, Mapping[str, float]] = PAPER_PRIORS,
               objects: Sequence[Mapping[str, object]] = AWS_OBJECTS,
-              places: Sequence[Mapping[str, object]] = (), name: str | None = None) -> Path:
+              places: Sequence[Mapping[str, object]] = (), name: str | None = None,
+              furnished: bool = False) -> Path:
     """Write an annotated map of the AWS house into ``folder`` (the image stays where the shared data is:
     ``data`` is the shared data folder, ``../shared/data`` from a checkout); by default the paper's
     priors and objects and no places (the context suite gives :data:`AWS_CONTEXT_PRIORS`,
-    :data:`AWS_CONTEXT_PLACES` and :data:`CONTEXT_OBJECTS`)."""
+    :data:`AWS_CONTEXT_PLACES` and :data:`CONTEXT_OBJECTS`). ``furnished`` adds its places
+    (:data:`AWS_PLACES`), people (:data:`AWS_PEOPLE`), an apple and a book (:data:`AWS_ITEMS`) and priors
+    for them (the end-to-end suite's house)."""
     name = name or f"aws_{layout}"
     doc = {"image": str((data / "maps" / "aws_small_house" / "map.pgm").resolve()), "resolution": 0.05,
            "origin": [-12.5, -12.5, 0.0], "negate": 0, "occupied_thresh": 0.65, "free_thresh": 0.196,
@@ -110,6 +140,11 @@ def aws_house(folder: Path, data: Path, layout: str, robot: tuple[float, float, 
            "places": [dict(p) for p in places], "priors": {c: dict(m) for c, m in priors.items()},
            "objects": [dict(o) for o in objects], "robot": {"pose": list(robot)},
            "sensor": {"range": 5.0, "fov": 360}}
+    if furnished:
+        doc.update(places=[dict(p) for p in AWS_PLACES], people=[dict(p) for p in AWS_PEOPLE],
+                   objects=[*AWS_OBJECTS, *AWS_ITEMS],
+                   priors={**PAPER_PRIORS, "apple": {"fridge": 0.5, "kitchen": 0.3}, "book": {"desk": 0.5,
+                                                                                             "bedroom": 0.3}})
     path = folder / f"{name}.yaml"
     path.write_text(yaml.safe_dump(doc, sort_keys=False))
     return path

@@ -141,11 +141,21 @@ def emit_json(data: Any) -> None:
 
 
 def framelib_paths(paths: list[Path] | None) -> list[Path] | None:
-    return list(paths) if paths else None
+    """The library's files: as given, or the standard library and then each ``+PATH`` (which adds to
+    it instead of replacing it)."""
+    if not paths:
+        return None
+    added = [str(p).startswith("+") for p in paths]
+    if not any(added):
+        return list(paths)
+    from seal_cli.resources import framelib_dir
+
+    return [framelib_dir(), *(Path(str(p)[1:]) if plus else p for p, plus in zip(paths, added, strict=True))]
 
 
 FramelibOption = typer.Option(None, "--framelib", help="Frame library file or folder (repeatable); "
-                              "default: the shipped standard library.", show_default=False)
+                              "default: the shipped standard library. +PATH adds to the standard library.",
+                              show_default=False)
 JsonOption = typer.Option(False, "--json", help="Machine-readable output on stdout.")
 
 MAX_PARTICLES = 100_000

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 
 import typer
 
-from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, framelib_paths, out
+from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
 from seal_cli.cli.parse_cmd import VocabularyOption, vocabulary_from
 from seal_cli.planning.plan import MAX_NODES, Plan
 
@@ -79,6 +79,8 @@ def plan(
             from seal_cli.planning.pddl import write_pddl
 
             write_pddl(pddl, library, result, files=outputs)
+    for warning in result.warnings:
+        err.print(f"[yellow]warning:[/yellow] {warning}", markup=True)
     if as_json:
         emit_json(result.to_json())
     else:

@@ -13,8 +13,9 @@ from seal_cli.sim.policies import DEFAULT_POLICIES, POLICIES
 
 SUITES = ("alfred2d", "map", "context")
 
-KIND_STYLE = {"plan": "bold", "frame": "bold cyan", "search": "yellow", "go": "", "see": "green", "look": "dim",
-              "act": "green", "fail": "red", "replan": "magenta", "done": "bold green", "give_up": "bold red"}
+KIND_STYLE = {"warn": "yellow", "plan": "bold", "frame": "bold cyan", "search": "yellow", "go": "", "see": "green",
+              "look": "dim", "act": "green", "fail": "red", "replan": "magenta", "done": "bold green",
+              "give_up": "bold red"}
 
 
 def _narrate(record: Any) -> None:
@@ -108,9 +109,12 @@ def run(
         emit_json({"map": the_map.name, "text": text, "policy": policy, "seed": seed,
                    "completed": result.completed, "reason": result.reason, "path_m": round(result.path_m, 3),
                    "steps": result.steps, "plan": result.plan, "executed": result.executed,
+                   "answer": result.answer, "warnings": result.warnings, "why": result.why.value,
                    "records": [{"kind": r.kind, "text": r.text, "step": r.step, "path_m": round(r.path_m, 3),
                                 "pose": [round(v, 3) for v in r.pose]} for r in result.records]})
     else:
+        if result.answer:
+            out.print(f"[bold]answer:[/bold] {result.answer}", markup=True)
         verdict = "[bold green]done[/bold green]" if result.completed else \
             f"[bold red]not done[/bold red]: {result.reason}"
         out.print(f"{verdict} — {result.path_m:.2f} m driven, {result.steps} steps")
@@ -191,7 +195,7 @@ def tasks(
         def advance(done: int, total: int) -> None:
             progress.update(bar, completed=done, total=total)
 
-        libs = [str(p) for p in framelib] if framelib else None
+        libs = [str(p) for p in framelib_paths(framelib) or []] or None
         if suite == "map":
             from seal_cli.bench.mapsuite import COMMANDS, run_map_suite
             from seal_cli.resources import map_path
@@ -265,3 +269,59 @@ def _table(report: dict[str, Any], names: list[str]) -> None:
         from rich.console import Console
 
         Console(width=wide, highlight=False).print(table)
+
+
+@command("e2e", on=bench_app)
+def e2e(
+    map_name: str | None = typer.Option(None, "--map", help="Only this map's cases (apartment or aws).",
+                                        show_default=False),
+    limit: int | None = typer.Option(None, "--limit", min=1, help="At most this many cases per map.",
+                                     show_default=False),
+    file: Path | None = typer.Option(None, "--file", help="Cases from this YAML file instead of the shipped "
+                                     "suite.", show_default=False),
+    data: Path | None = typer.Option(None, "--data", help="The shared data folder (default: ../shared/data "
+                                     "beside the project).", show_default=False),
+    jobs: int = typer.Option(0, "--jobs", min=0, help="Worker processes (0: one per core)."),
+    seed: int = typer.Option(0, "--seed", min=0, help="Seed of each run's generator."),
+    particles: int = typer.Option(100, "--particles", min=1, help="Particles per object and per frame."),
+    framelib: list[Path] | None = FramelibOption,
+    as_json: bool = JsonOption,
+) -> None:
+    """Plain commands on the apartment and the AWS house: how many ground to the expected plan, how many
+    runs end as they must."""
+    from rich.table import Table
+
+    from seal_cli.bench.e2e import MAPS, load_cases, run_cases, summarise
+    from seal_cli.errors import SealError
+
+    if map_name is not None and map_name not in MAPS:
+        raise SealError(f"unknown map {map_name!r} for --map; the suite's maps are {', '.join(MAPS)}")
+    cases = [c for c in load_cases(file) if map_name is None or c.map == map_name]
+    if limit is not None:
+        by_map: dict[str, list[Any]] = {}
+        for case in cases:
+            by_map.setdefault(case.map, []).append(case)
+        cases = [c for c in cases if by_map[c.map].index(c) < limit]
+    if data is None:
+        data = Path(__file__).resolve().parents[2].parent / "shared" / "data"
+    libs = [str(p) for p in framelib_paths(framelib) or []] or None
+    verdicts = run_cases(cases, data, seed=seed, particles=particles, jobs=jobs or os.cpu_count() or 1,
+                         framelib=libs)
+    report = summarise(verdicts)
+    report.update({"seed": seed, "particles": particles})
+    if as_json:
+        emit_json(report)
+        return
+    table = Table(title="end-to-end commands: plan right / run ended as it must")
+    for column in ("map", "n", "plan right", "runs", "run completed"):
+        table.add_column(column, justify="left" if column == "map" else "right")
+    for name, g in report["groups"].items():
+        plan_rate = f"{g['plan_right']}/{g['n']} ({g['plan_rate']:.3f})" if g["n"] else "—"
+        run_rate = f"{g['run_completed']}/{g['runs']} ({g['run_rate']:.3f})" if g["runs"] else "—"
+        table.add_row(f"[bold]{name}[/bold]" if name == "all" else name, str(g["n"]), plan_rate, str(g["runs"]),
+                      run_rate)
+    out.print(table)
+    for miss in report["misses"]:
+        what = "plan" if not miss["plan_right"] else "run"
+        detail = miss["got"] if what == "plan" else miss["run_reason"]
+        out.print(f"[red]{what} miss[/red] {miss['map']}: {miss['text']!r} → {detail}", highlight=False)

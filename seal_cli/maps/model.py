@@ -9,6 +9,8 @@ A :class:`Map` is what SeFM, the planner and the simulator read about a building
 - ``places``: fixed furniture and receptacles (``fridge_1``, class ``fridge``), some openable;
 - ``priors``: per object class, probability mass per room, place name or place class;
 - ``objects``: the ground-truth objects, used only to simulate what a robot would see;
+- ``people``: who is where (:class:`Person`: a name and a point or a room), and the ``speaker``
+  ("me", "I", "us"), by default standing at the robot's start;
 - ``robot``: its pose ``(x, y, yaw)`` (yaw in radians) and what it holds;
 - ``sensor``: range (m), field of view (degrees) and the detection model.
 
@@ -50,8 +52,11 @@ from seal_cli.maps.geometry import (
 if TYPE_CHECKING:
     from seal_cli.maps.priors import Prior
 
-__all__ = ["OUTSIDE", "Map", "MapWarning", "ObjectTruth", "Place", "Robot", "Room", "Sensor", "prior_density",
-           "prior_sampler", "sample_prior"]
+__all__ = ["OUTSIDE", "SPEAKER", "Map", "MapWarning", "ObjectTruth", "Person", "Place", "Robot", "Room", "Sensor",
+           "prior_density", "prior_sampler", "sample_prior"]
+
+SPEAKER = "me"
+"""The name the person who gives the command goes by ("me", "I", "us")."""
 
 OVERLAP_TOLERANCE = 0.01
 """Square metres two rooms may share before they count as overlapping (drawing slack)."""
@@ -208,6 +213,29 @@ class ObjectTruth:
 
 
 @dataclass(frozen=True)
+class Person:
+    """Someone in the building: a name, and where they are, at a point (``at``) or in a ``room``
+    (then :meth:`Map.person_at` stands them at the room's free cell nearest its centre)."""
+
+    name: str
+    at: XY | None = None
+    room: str | None = None
+    where: Where | None = field(default=None, compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.name, str) or not class_key(self.name):
+            raise SealError(f"a person needs a name, not {self.name!r}", self.where)
+        if (self.at is None) == (self.room is None):
+            raise SealError(f"person {self.name} needs exactly one of at: [x, y] or room: <room>", self.where)
+        if self.at is not None:
+            object.__setattr__(self, "at", _xy(self.at, f"person {self.name}: at", self.where))
+
+    @property
+    def key(self) -> str:
+        return class_key(self.name)
+
+
+@dataclass(frozen=True)
 class Robot:
     """The robot's pose ``(x, y, yaw)`` (yaw in radians, counter-clockwise from +x) and what it holds.
 
@@ -301,6 +329,9 @@ class Map:
     grid: OccupancyGrid = None  # type: ignore[assignment]  # None: all of bounds free
     file: str | None = field(default=None, compare=False)
     positions: Mapping[tuple[str | int, ...], Where] = field(default_factory=dict, compare=False, repr=False)
+    people: tuple[Person, ...] = ()
+    speaker: XY | None = None
+    """Where the person giving the command stands; None: at the robot's start."""
     check: InitVar[bool] = True
     warnings: tuple[SealError, ...] = field(default=(), init=False, compare=False, repr=False)
     """What is odd about the map but does not stop it from being used (:class:`MapWarning`)."""
@@ -321,6 +352,9 @@ class Map:
             set_(self, "grid", OccupancyGrid.filled(self.bounds, resolution))
         set_(self, "rooms", tuple(self.rooms))
         set_(self, "objects", tuple(self.objects))
+        set_(self, "people", tuple(self.people))
+        if self.speaker is not None:
+            set_(self, "speaker", _xy(self.speaker, "speaker: at", self.where("speaker")))
         set_(self, "priors", self._checked_priors(self.priors))
         set_(self, "places", tuple(p if p.room is not None else replace(p, room=self._room_name(p.at))
                                    for p in self.places))
@@ -386,6 +420,28 @@ class Map:
         """What a robot knows of this map before it looks: everything but the ground-truth objects,
         which only simulate what it would see. Plans made for localising and searching use this."""
         return replace(self, objects=()) if self.objects else self
+
+    def person(self, name: str) -> Person | None:
+        """The person of that name, or None."""
+        key = class_key(name)
+        return next((p for p in self.people if p.key == key), None)
+
+    def person_at(self, person: Person) -> XY:
+        """Where a person stands: their point, else the free cell of their room nearest its centre."""
+        if person.at is not None:
+            return person.at
+        room = self.room(person.room or "")
+        centres = self.free_centres[room.contains(self.free_centres)] if len(self.free_centres) else np.zeros((0, 2))
+        if not len(centres):
+            return room.centroid
+        c = np.asarray(room.centroid)
+        best = centres[int(np.argmin(((centres - c) ** 2).sum(axis=1)))]
+        return (float(best[0]), float(best[1]))
+
+    @property
+    def speaker_at(self) -> XY:
+        """Where the speaker stands: ``speaker.at``, else the robot's start."""
+        return self.speaker if self.speaker is not None else self.robot.xy
 
     def where(self, *path: str | int) -> Where:
         """Where a part of the map (by YAML path) was written; the longest known prefix, else the file."""
@@ -666,6 +722,7 @@ def _problems(m: Map, known: set[str]) -> Iterator[SealError]:
     yield from _priors(m, known)
     yield from _objects(m, known)
     yield from _robot(m)
+    yield from _people(m)
     if len(m.free_centres) == 0:
         yield SealError(f"map {m.name} has no free space inside its bounds", m.where("bounds"))
 
@@ -782,6 +839,33 @@ def _robot(m: Map) -> Iterator[SealError]:
     elif m.is_occupied(np.array([xy]))[0]:
         yield MapWarning(f"robot pose {_pt(xy)} is inside a wall or an obstacle (an occupied cell of the map)",
                         m.where("robot", "pose"))
+
+
+def _people(m: Map) -> Iterator[SealError]:
+    seen: dict[str, int] = {}
+    names = set(m._room_by_key) | set(m._place_by_key)
+    for i, person in enumerate(m.people):
+        if person.key in seen or person.key == SPEAKER:
+            why = "is the speaker's name (\"me\")" if person.key == SPEAKER else \
+                f"is already the name of person {seen[person.key] + 1}"
+            yield SealError(f"person name {person.name!r} {why}; people's names must be unique",
+                            m.where("people", i, "name"))
+        elif person.key in names:
+            yield SealError(f"person name {person.name!r} is already the name of a room or place",
+                            m.where("people", i, "name"))
+        seen.setdefault(person.key, i)
+        if person.room is not None and m.room_id(person.room) is None:
+            yield SealError(f"person {person.name} is in room {person.room!r}, which is no room of this map"
+                            f"{_suggest(class_key(person.room), m._room_by_key)}; rooms: "
+                            f"{', '.join(m.room_names) or 'none'}", m.where("people", i, "room"))
+        elif person.at is not None and _outside(m, person.at):
+            yield MapWarning(f"person {person.name} at {_pt(person.at)} is outside the map's bounds",
+                             m.where("people", i, "at"))
+        elif person.at is not None and not m.is_free(np.array([person.at]))[0]:
+            yield MapWarning(f"person {person.name} at {_pt(person.at)} stands where the robot cannot drive "
+                             "(not free space)", m.where("people", i, "at"))
+    if m.speaker is not None and _outside(m, m.speaker):
+        yield MapWarning(f"speaker at {_pt(m.speaker)} is outside the map's bounds", m.where("speaker", "at"))
 
 
 # -- priors (implemented beside, in seal_cli.maps.priors) ----------------------------------------

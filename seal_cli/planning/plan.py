@@ -100,6 +100,8 @@ class Plan:
     text: str | None = None
     expanded: int = field(default=0, compare=False)
     """Search nodes expanded to find the plan."""
+    warnings: tuple[str, ...] = field(default=(), compare=False)
+    """What the map does not know of the command (``Problem.warnings``)."""
 
     @property
     def bindings(self) -> tuple[Binding, ...]:
@@ -118,8 +120,11 @@ class Plan:
 
     def to_json(self) -> dict[str, Any]:
         """The document ``seal plan --json`` prints (SPEC, "``seal plan --json``")."""
-        return {"text": self.text, "plan": [step.to_json() for step in self.steps],
-                "state": [str(f) for f in self.initial], "goal": [str(f) for f in self.goal]}
+        data: dict[str, Any] = {"text": self.text, "plan": [step.to_json() for step in self.steps],
+                                "state": [str(f) for f in self.initial], "goal": [str(f) for f in self.goal]}
+        if self.warnings:
+            data["warnings"] = list(self.warnings)
+        return data
 
     def __len__(self) -> int:
         return len(self.steps)

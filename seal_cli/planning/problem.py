@@ -15,6 +15,16 @@ the things a counted phrase ("two apples") asks for, so that on a map "two apple
 two apples. A frame whose element is counted is commanded once per thing, in order, and so is a
 frame whose pronoun refers to them ("find two apples and put them in the fridge").
 
+**On a map** (:mod:`seal_cli.planning.grounding`) a phrase names the map's room, place or person
+its words call ("the couch in the living room" → ``sofa_2``), "me" the speaker; a room or a fixed
+thing the map lacks is refused. A value of a class no prior, object or place of the map names is
+a *warning* (``Problem.warnings``): the robot will have to search the whole house for it. A frame
+whose element is only counted (Count) takes the class once, however many things the phrase says.
+
+**Fixed things.** A room, or a class of the library's ``fixed`` category (furniture, appliances),
+never fills an element of type ``object`` (what the robot takes into its hand): "clean the
+bathroom" is refused with the frame's own description.
+
 **State.** The robot holds ``holding`` (else the map's ``robot.holding``), else its hand is empty.
 The map's objects are ``in`` their places. A thing that opens and closes (a map place with
 ``openable: true``, else a class of the ``openable`` category) is closed unless the map says
@@ -34,6 +44,8 @@ from seal_cli.errors import SealError, Where
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding, Fact, Frame
 from seal_cli.frames.taxonomy import Taxonomy, check_class_name, class_key, class_words
+from seal_cli.maps.model import SPEAKER
+from seal_cli.planning.grounding import FIXED, is_room_word
 from seal_cli.planning.state import State, robot_facts
 
 OPENABLE = "openable"
@@ -65,6 +77,9 @@ class Problem:
     text: str
     commanded: tuple[Binding, ...]
     state: State
+    warnings: tuple[str, ...] = ()
+    """What the map does not know of the command: classes it has no prior or object of, people
+    nobody placed."""
 
 
 class Things:
@@ -72,13 +87,21 @@ class Things:
     close, and what the map says about them (``in`` and ``open`` facts)."""
 
     def __init__(self, taxonomy: Taxonomy, map: Map | None = None) -> None:
+        from seal_cli.planning.grounding import MapNames
+
         self.taxonomy = taxonomy
+        self.map = map
+        self.names = MapNames(map, taxonomy) if map is not None else None
         self.classes: dict[str, str] = {}
         self.closable: set[str] = set()
         self.fixed: set[str] = set()
         """The map's rooms and places: they stay where they are."""
         self.facts: set[Fact] = set()
         self.robot_holding: str | None = None
+        self.people: set[str] = set()
+        """The people the command names."""
+        self.synonyms: Mapping[str, tuple[str, ...]] = {}
+        """More names of classes (a vocabulary file's), by class key."""
         if map is not None:
             self._read_map(map)
 
@@ -101,6 +124,9 @@ class Things:
             if obj.inside is not None:
                 self.facts.add(Fact("in", (name, class_key(obj.inside))))
         self.robot_holding = map.robot.holding
+        for person in map.people:
+            self.classes[person.key] = "person"
+        self.classes.setdefault(SPEAKER, "person")
 
     def _fresh(self, cls: str, n: int) -> str:
         """Register a new thing of a class, the n-th if that name is free (else the next free one)."""
@@ -169,13 +195,14 @@ def _said(phrase: Phrase | None, name: str) -> str:
 
 
 def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], things: Things,
-            text: str) -> tuple[str, ...]:
-    """The things a phrase names: its antecedent's for a pronoun, else its class (counted if asked);
-    every conjunct's for a coordination."""
+            text: str, category: str = "thing") -> tuple[str, ...]:
+    """The things a phrase names: its antecedent's for a pronoun, else the map's thing it calls,
+    else its class (counted if asked); every conjunct's for a coordination."""
     from seal_cli.language.english import PERSON_PRONOUNS, PRONOUNS
 
     if phrase.conjuncts:        # "the apple and the pear": both
-        return tuple(dict.fromkeys(v for c in phrase.conjuncts for v in _values(c, earlier, things, text)))
+        return tuple(dict.fromkeys(v for c in phrase.conjuncts
+                                   for v in _values(c, earlier, things, text, category)))
     if phrase.refers_to is not None:
         index, role = phrase.refers_to
         if 0 <= index < len(earlier) and role in earlier[index]:
@@ -186,7 +213,11 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
     if word in PRONOUNS and word not in PERSON_PRONOUNS and word not in INDEFINITE:
         raise _located(f"cannot tell what {phrase.text!r} refers to: nothing before it in the command fits",
                        phrase, text)
+    if things.names is not None and (on_map := _on_map(phrase, things, text, category)) is not None:
+        return on_map
     value = phrase.cls or phrase.head
+    if things.names is not None and phrase.cls and not _names(phrase, phrase.cls, things):
+        value = phrase.head     # on a map, a class the words do not name is a guess: the thing said is sought
     if not class_key(value):
         raise _located(f"{phrase.text!r} names no thing", phrase, text)
     count = _count(phrase, value)
@@ -194,6 +225,45 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
         raise _located(f"{phrase.text!r} asks for {count:,} things; seal plans for at most {MAX_COUNT} "
                        "of a kind", phrase, text)
     return things.instances(value, count)
+
+
+def _names(phrase: Phrase, cls: str, things: Things) -> bool:
+    """Whether the phrase's words name the class: its own words or one of its synonyms' ("the couch": a
+    sofa), rather than a class a learned table guesses people meant ("the bowl": a cup)."""
+    from seal_cli.language.lexicon import noun_lemma
+
+    said = {noun_lemma(w) for w in class_words(phrase.text or phrase.head)} | {phrase.head}
+    names = [cls, *things.taxonomy.names.get(class_key(cls), ()), *things.synonyms.get(class_key(cls), ())]
+    return any(set(map(noun_lemma, class_words(n))) & said for n in names)
+
+
+def _on_map(phrase: Phrase, things: Things, text: str, category: str) -> tuple[str, ...] | None:
+    """The map's person, room or place a phrase names (see :mod:`seal_cli.planning.grounding`);
+    None for an object, which the robot must find."""
+    from seal_cli.planning.grounding import SPEAKER_WORDS, person_value
+
+    names = things.names
+    assert names is not None and things.map is not None
+    if phrase.head.lower() in SPEAKER_WORDS or phrase.kind == "person" \
+            or things.taxonomy.is_a(category, "person") is True and category != "thing":
+        value = person_value(phrase.text or phrase.head, phrase.head, {p.key: p for p in things.map.people})
+        things.people.add(value)    # only the map's people are of class person: another is searched for by name
+        return (value,)
+    if category in ("message", "question") or not phrase.text:
+        return None
+    kinds = ("room", "place", "person") if category == "thing" else ("room", "place")
+    try:
+        found = names.ground(phrase.text, category, kinds)
+    except SealError as wrong:
+        raise _located(wrong.message, phrase, text) from None
+    if found is not None:
+        return (found.id,)
+    if things.taxonomy.is_a(phrase.cls or phrase.head, "person") is True:
+        return None
+    refused = names.refusal(phrase.text, phrase.cls)
+    if refused is not None:
+        raise _located(refused.message, phrase, text)
+    return None
 
 
 def _count(phrase: Phrase, value: str) -> int:
@@ -220,14 +290,31 @@ def _check_types(frame: Frame, values: Mapping[str, tuple[str, ...]], phrases: M
         for name in names:
             if element.type == OPENABLE and name in things.closable:
                 continue
-            if element.type == OBJECT and name in things.fixed:
+            cls = things.class_of(name)
+            if element.type == OBJECT and (name in things.fixed or things.taxonomy.is_a(cls, FIXED) is True
+                                           or is_room_word(class_words(cls))):
                 phrase = phrases.get(role)
+                where = "fixed in the map" if name in things.fixed else \
+                    "a room" if is_room_word(class_words(cls)) else "fixed: it never moves"
+                what = frame.description.rstrip(".").lower() if frame.description else ""
                 raise _located(f"{frame.name} needs its {role} to be an object the robot can handle, and "
-                               f"{_said(phrase, name)} is fixed in the map", phrase, text)
+                               f"{_said(phrase, name)} is {where}" + (f" (the library's {frame.name}: {what})"
+                                                                      if what else ""), phrase, text)
             if things.taxonomy.is_a(things.class_of(name), element.type) is False:
                 phrase = phrases.get(role)
                 raise _located(f"{frame.name} needs its {role} to be {element.type}, and "
                                f"{_said(phrase, name)} is not", phrase, text)
+
+
+COUNTING = frozenset({"count"})
+"""Primitives whose argument is a kind of thing, counted, not one thing."""
+
+
+def _counted_roles(frame: Frame) -> set[str]:
+    """The elements the frame's actions only count: they stand for a kind, not for things."""
+    counted = {a for action in frame.actions if action.name in COUNTING for a in action.args}
+    other = {a for action in frame.actions if action.name not in COUNTING for a in action.args}
+    return counted - other
 
 
 def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Binding]:
@@ -236,7 +323,11 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
     bindings: list[Binding] = []
     for evoked in parse.frames:
         frame = library.frame(evoked.frame)
-        values = {role: _values(phrase, earlier, things, parse.text) for role, phrase in evoked.elements.items()}
+        values = {role: _values(phrase, earlier, things, parse.text, frame.element(role).type)
+                  for role, phrase in evoked.elements.items()}
+        for role in _counted_roles(frame):      # "count the cups": one Count of the class
+            if role in values:
+                values[role] = (things.class_of(values[role][0]),)
         for element in frame.elements:
             if element.role not in values and element.default is not None:
                 values[element.role] = (things.name(element.default),)
@@ -253,9 +344,12 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
 
 
 def build_problem(parse: Parse, library: Library, *, holding: str | None = None, done: Iterable[Parse] = (),
-                  map: Map | None = None) -> Problem:
+                  map: Map | None = None, vocabulary: Any = None) -> Problem:
     """The commanded frames of a parse and the state they start from (see the module's docstring)."""
     things = Things(library.taxonomy, map)
+    if vocabulary is not None:      # the names a vocabulary gives its classes name them too
+        things.synonyms = {class_key(c): tuple(n) for c, n in zip(vocabulary.classes, vocabulary.synonyms,
+                                                                   strict=True)}
     for frame in library:
         for element in frame.elements:
             if element.default is not None:
@@ -272,7 +366,32 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
                                 "in between (another --done) or drop one of them")
         state = state.apply(binding)
         changed.update((f.positive, text) for f in binding.postconditions)
-    return Problem(parse.text, tuple(commanded), state)
+    return Problem(parse.text, tuple(commanded), state, tuple(unknown_to_map(commanded, things)) if map else ())
+
+
+def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:
+    """The warnings of a plan on a map: each class a frame needs that no prior, object or place of
+    the map names, and each person nobody placed (the robot will have to search for them)."""
+    m = things.map
+    if m is None:
+        return []
+    known = set(m.priors) | {o.cls for o in m.objects} | {p.cls for p in m.places}
+    placed = {p.key for p in m.people} | {SPEAKER}
+    warnings: dict[str, None] = {}
+    for binding in commanded:
+        for role, value in binding.values:
+            category = binding.frame.element(role).type
+            if category in ("message", "question") or value in things.fixed:
+                continue
+            cls = things.class_of(value)
+            if value in things.people or cls == "person":
+                if value not in placed:
+                    warnings.setdefault(f"nobody on the map {m.name} is called {value}: seal run will search "
+                                        "the whole house for them", None)
+            elif cls not in known:
+                warnings.setdefault(f"the map {m.name} knows nothing of {cls} (no prior, object or place names "
+                                    "it): seal run will search the whole house for it", None)
+    return list(warnings)
 
 
 def problem_of_text(text: str, library: Library, *, holding: str | None = None, done: Sequence[str] = (),
@@ -285,5 +404,8 @@ def problem_of_text(text: str, library: Library, *, holding: str | None = None, 
         from seal_cli.language.grounding import vocabulary_of_map
 
         vocabulary = vocabulary_of_map(map)
-    parses = [parse_command(t, library, vocabulary) for t in (*done, text)]
-    return build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=map)
+    from seal_cli.planning.grounding import spoken
+
+    parses = [parse_command(spoken(t), library, vocabulary) for t in (*done, text)]
+    return build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=map,
+                         vocabulary=vocabulary if hasattr(vocabulary, "synonyms") else None)

@@ -38,11 +38,11 @@ from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Action, Binding, Fact
 from seal_cli.frames.taxonomy import class_key
-from seal_cli.maps.model import Map
+from seal_cli.maps.model import SPEAKER, Map
 from seal_cli.planning.state import State
 from seal_cli.sim.navigation import Cell, Grid
 from seal_cli.sim.policies.base import Policy
-from seal_cli.sim.world import HAND, Detection, Item, Outcome, World
+from seal_cli.sim.world import HAND, PERSON, Detection, Item, Outcome, Reason, World
 
 __all__ = ["Agent", "Budget", "Known", "Policy", "Record", "Result", "Scene", "View", "scene_from_map"]
 
@@ -80,7 +80,7 @@ class View:
 
 @dataclass(frozen=True)
 class Record:
-    """One line of what the robot did: ``kind`` is plan, go, look, see, act, fail, replan, done or give_up."""
+    """One line of what the robot did: ``kind`` is warn, plan, go, look, see, act, fail, replan, done or give_up."""
 
     kind: str
     text: str
@@ -102,6 +102,12 @@ class Result:
     plan: list[str]
     executed: list[str]
     records: list[Record]
+    answer: str | None = None
+    """What a question asked, found out: where a thing is, how many there are."""
+    warnings: list[str] = field(default_factory=list)
+    """What the map did not know of the command (classes it has no prior of, people nobody placed)."""
+    why: Reason = Reason.OK
+    """Why the run stopped short, for a program (``reason`` says it for people)."""
 
 
 @dataclass
@@ -125,7 +131,7 @@ class Agent:
     def __init__(self, scene: Scene, library: Library, policy: Policy, *, rng: np.random.Generator,
                  budget: Budget | None = None, planner: Callable[..., list[Binding]] | None = None,
                  observers: Sequence[Callable[[Record], None]] = (), look_every: float = 1.0,
-                 classes: Mapping[str, str] | None = None) -> None:
+                 classes: Mapping[str, str] | None = None, sweeper: Callable[[], Any] | None = None) -> None:
         self.scene = scene
         self.world = scene.world
         self.grid = scene.grid
@@ -136,6 +142,11 @@ class Agent:
         self.planner = planner or default_planner
         self.observers = list(observers)
         self.look_every = look_every
+        self.sweeper = sweeper
+        """Makes the search that looks all over the house (a coverage policy), for a kind of thing the
+        robot's perception does not know (``seal run``: the map names what it knows, a command may
+        name more) and to look all over a room before counting; None (a benchmark whose scene lists
+        every class there is): such a thing is refused at once, and counting counts what is in view."""
         self.records: list[Record] = []
         self.known: dict[str, Known] = {}
         self.unreachable: set[str] = set()
@@ -156,6 +167,10 @@ class Agent:
         self.index = 0
         self.todo: list[Binding] = []
         """The commanded frames not yet executed."""
+        self.answers: list[str] = []
+        """What the robot found out for a question (Find: where; Count: how many)."""
+        self.sweep: Any = None
+        """The whole-house search for what no prior or detector knows of, started when needed."""
         self._learn_places(policy.oracle)
 
     # -- knowledge ---------------------------------------------------------------------------
@@ -228,7 +243,7 @@ class Agent:
             steps = self.planner(todo, self.library, self.state)
         except SealError as error:
             self.say("fail", f"cannot plan: {error.message}")
-            return self._result(False, f"cannot plan: {error.message}", [])
+            return self._result(False, f"cannot plan: {error.message}", [], why=Reason.CANNOT)
         self.steps, self.index = steps, 0
         plan = [str(b) for b in steps]
         self.say("plan", "plan: " + ", ".join(plan) if plan else "nothing to do", plan=plan)
@@ -250,24 +265,26 @@ class Agent:
             if stop or isinstance(outcome, Fatal):
                 reason = stop or outcome.message
                 self.say("give_up", f"gives up: {reason}")
-                return self._result(False, reason, plan, executed)
+                return self._result(False, reason, plan, executed, Reason.BUDGET if stop else outcome.reason)
             replans += 1
             if replans > self.budget.replans:
                 self.say("give_up", f"gives up after {self.budget.replans} replans: {outcome.message}")
-                return self._result(False, outcome.message, plan, executed)
+                return self._result(False, outcome.message, plan, executed, outcome.reason)
             self.state = self.resync(self.state)
             try:
                 steps = self.planner(todo, self.library, self.state)
             except SealError as error:
                 self.say("give_up", f"cannot replan: {error.message}")
-                return self._result(False, f"cannot replan: {error.message}", plan, executed)
+                return self._result(False, f"cannot replan: {error.message}", plan, executed, Reason.CANNOT)
             self.steps, self.index = steps, 0
             self.say("replan", f"{outcome.message}; replans: " + ", ".join(str(b) for b in steps))
         return self._result(True, "done", plan, executed)
 
-    def _result(self, completed: bool, reason: str, plan: list[str], executed: list[str] | None = None) -> Result:
+    def _result(self, completed: bool, reason: str, plan: list[str], executed: list[str] | None = None,
+                why: Reason = Reason.OK) -> Result:
+        answer = "; ".join(self.answers) if self.answers else None
         return Result(completed, reason, self.world.robot.path_m, self.world.step, plan, executed or [],
-                      self.records)
+                      self.records, answer, why=why if not completed else Reason.OK)
 
     def resync(self, state: State) -> State:
         """The semantic state corrected by what the robot knows of its own hand."""
@@ -285,7 +302,11 @@ class Agent:
             if action.name == "navigate":
                 outcome = self.go_to(action.args[0], binding)
             else:
-                outcome = self.do(action, binding)
+                outcome = Outcome(True, "ok")
+                if action.name in GO_FIRST:      # drive up to the person, to where the person is led
+                    outcome = self.go_to(action.args[GO_FIRST[action.name]], binding)
+                if outcome.ok:
+                    outcome = self.do(action, binding)
                 acted = True
             if not outcome.ok:
                 return outcome
@@ -300,8 +321,10 @@ class Agent:
     def resolve(self, value: str, binding: Binding, role: str | None = None) -> str | None:
         """The instance that an element's value (a class, or an item's name) denotes now."""
         name = class_key(value)
-        if value in self.world.items and value in self.known and name not in self.classes:
-            return value  # an item named by itself (a place of the map), not a name the command made up
+        if value in self.world.items and value in self.known and (
+                name not in self.classes or not self.world.items[value].movable):
+            # an item named by itself (a place, a person of the map), not a name the command made up
+            return None if value in self.unreachable else value
         key = self.class_of(value)
         room = self.room(value)
         if room is not None and not self.instances(key):
@@ -364,7 +387,8 @@ class Agent:
         """Free cells (rows of i, j) from which the robot can reach the item."""
         pts = self.grid.free_points
         at = np.asarray(known.at)
-        near = np.hypot(pts[:, 0] - at[0], pts[:, 1] - at[1]) <= self.world.reach - 1e-6
+        reach = self.world.reach_of(known.id) if known.id in self.world.items else self.world.reach
+        near = np.hypot(pts[:, 0] - at[0], pts[:, 1] - at[1]) <= reach - 1e-6
         stands = list(known.access)
         if known.parent is not None and known.parent in self.known:
             stands += list(self.known[known.parent].access)
@@ -379,7 +403,8 @@ class Agent:
 
     def _reach_mask(self, known: Known) -> np.ndarray:
         pts = self.grid.free_points
-        mask = np.hypot(pts[:, 0] - known.at[0], pts[:, 1] - known.at[1]) <= self.world.reach - 1e-6
+        reach = self.world.reach_of(known.id) if known.id in self.world.items else self.world.reach
+        mask = np.hypot(pts[:, 0] - known.at[0], pts[:, 1] - known.at[1]) <= reach - 1e-6
         for a in known.access:
             mask |= np.hypot(pts[:, 0] - a[0], pts[:, 1] - a[1]) <= self.world.access_tolerance
         return mask
@@ -391,10 +416,19 @@ class Agent:
             return None
         field_ = self.distances() if field_ is None else field_
         costs = field_[cells[:, 0], cells[:, 1]]
-        k = int(np.argmin(costs))
-        if not np.isfinite(costs[k]):
-            return None
-        return (int(cells[k, 0]), int(cells[k, 1]))
+        if known.id in self.world.items:      # not behind a wall, seen from the thing
+            points = np.column_stack([self.grid.origin[0] + cells[:, 1] * self.grid.resolution,
+                                      self.grid.origin[1] + cells[:, 0] * self.grid.resolution])
+            clear = np.asarray(self.world.sensor.line_of_sight(known.at, points), dtype=bool)
+            if clear.any():
+                cells, costs = cells[clear], costs[clear]
+        for k in np.argsort(costs, kind="stable")[:STAND_TRIES]:
+            if not np.isfinite(costs[k]):
+                return None
+            cell = (int(cells[k, 0]), int(cells[k, 1]))
+            if known.id not in self.world.items or not self.world.walled(known.id, self.grid.point(cell)):
+                return cell
+        return None
 
     def go_to(self, value: str, binding: Binding) -> Outcome:
         """``navigate(value)``: find an instance (searching while none is known), drive within reach of it."""
@@ -410,7 +444,7 @@ class Agent:
                     self.say("fail", f"{target} cannot be reached from anywhere the robot can drive")
                     continue
                 self.chosen[class_key(value)] = target
-                self.drive_to(cell, f"goes to {target}")
+                self.drive_to(cell, f"goes to {'the speaker' if target == SPEAKER else target}")
                 self.world.face(self.known[target].at)
                 return Outcome(True, f"at {target}")
             if (stop := self.exhausted()) is not None:
@@ -433,10 +467,13 @@ class Agent:
         """One look for a thing of kind ``value``: go to the view the policy chooses, open what it
         says to open, and look. An Outcome when the search must stop instead."""
         if not self.recognises(value):
-            return Fatal(False, f"cannot recognise {value!r}: no class it knows is called that")
+            if self.sweeper is None:
+                return Fatal(False, f"cannot recognise {value!r}: no class it knows is called that",
+                             Reason.NOT_FOUND, value)
+            return self.sweep_once(value, binding)
         view = self.policy.next_view(self, binding, value)
         if view is None:
-            return Fatal(False, f"searched everywhere it could and found no {value}")
+            return Fatal(False, f"searched everywhere it could and found no {value}", Reason.NOT_FOUND, value)
         self.say("search", f"looks for {value}: {view.why}".rstrip(": "), target=value, view=view.cell)
         self.drive_to(view.cell, "goes to look")
         self.world.face(view.look_at)
@@ -445,18 +482,68 @@ class Agent:
         self.look()
         return None
 
+    def is_person(self, value: str) -> bool:
+        """Whether a value names a person of the world (by their own name)."""
+        item = self.world.items.get(value)
+        return item is not None and item.key == PERSON
+
+    def sweep_once(self, value: str, binding: Binding) -> Outcome | None:
+        """One look of the whole-house search for a kind of thing nothing tells the robot where to
+        look for (no prior, no class its perception knows): the nearest part of the house not yet
+        seen, or a closed receptacle not yet opened (the ``sweeper``'s policy),
+        within the run's budget. An Outcome when the house has been searched."""
+        if self.sweep is None:
+            assert self.sweeper is not None
+            self.sweep = self.sweeper()
+            self.sweep.begin(self)
+            for pose in self.looks:
+                self.sweep.seen |= self.world.sensor.visible(pose, self.sweep.lattice)
+        view = self.sweep.next_view(self, binding, value)
+        if view is None:
+            return Fatal(False, f"searched the whole house: no {self.said(value)}", Reason.NOT_FOUND, value)
+        self.say("search", f"searches the whole house for {self.said(value)}: {view.why}", target=value,
+                 view=view.cell)
+        self.drive_to(view.cell, "goes to look")
+        self.world.face(view.look_at)
+        if view.open is not None:
+            self.open_to_look(view.open)
+        self.look()
+        return None
+
+    def said(self, value: str) -> str:
+        """A value as a person would say it: its class, with spaces (``apple_2``: apple)."""
+        return self.class_of(value).replace("_", " ")
+
     def search_for(self, value: str, binding: Binding) -> Outcome:
         """``search(value)``: look (as ``navigate`` would) until a thing of that kind is known."""
         role = next((r for r, v in binding.values if v == value), None)
+        if self.is_person(value) and not self.world.within_reach(value):    # told where: goes to see them
+            went = self.go_to(value, binding)
+            if not went.ok:
+                return went
         while self.resolve(value, binding, role) is None:
             if (stop := self.exhausted()) is not None:
-                return Fatal(False, stop)
+                return Fatal(False, stop, Reason.BUDGET)
             if (ended := self.look_once(value, binding)) is not None:
                 return ended
         target = self.resolve(value, binding, role)
         if target is not None and target in self.known:
             self.world.face(self.known[target].at)
+            if (answer := self.where_is(target)) not in self.answers:
+                self.answers.append(answer)
         return Outcome(True, f"found {target}")
+
+    def where_is(self, item_id: str) -> str:
+        """Where a thing is, as the answer to "where is it?": on or in its place, in its room, at x, y."""
+        item = self.world.items[item_id]
+        x, y = self.world.position(item_id)
+        rooms = self.scene.map.room_of([(x, y)]) if self.scene.map.rooms else []
+        room = f" in the {rooms[0].replace('_', ' ')}" if rooms and not rooms[0].startswith("_") else ""
+        parent = self.world.items.get(item.parent) if item.parent and item.parent != HAND else None
+        if self.world.held_chain(item_id):
+            return f"{item_id} is in the robot's hand"
+        on = f" {'in' if parent.openable else 'on'} {parent.id}" if parent is not None else ""
+        return f"{item_id} is{on}{room} at ({x:.2f}, {y:.2f})"
 
     def recognises(self, value: str) -> bool:
         """Whether the robot could see a thing of this kind: its class is one of the scene's (the
@@ -510,6 +597,8 @@ class Agent:
                 new.append(d.id)
             self.known[d.id] = self._known(item)
         self.policy.observe(self, detections)
+        if self.sweep is not None:
+            self.sweep.observe(self, detections)
         if new:
             self.say("see", f"sees {', '.join(new)}", seen=new)
         elif not quiet:
@@ -524,32 +613,86 @@ class Agent:
                 found = self.search_for(action.args[0], binding)
                 if not found.ok:
                     return found
-            outcome = self.world.act(action.name, *(self.class_of(a) for a in action.args))
+            outcome = self.world.act(action.name, *(a if self.is_person(a) else self.class_of(a)
+                                                    for a in action.args))
             self.say("act" if outcome.ok else "fail", outcome.message, action=action.name, args=list(action.args))
+            if outcome.ok and action.name == "count" and (answer := self.how_many(action.args[0], binding)) \
+                    not in self.answers:
+                self.answers.append(answer)
             return outcome
         roles = {v: r for r, v in binding.values}
         args: list[str] = []
         for value in action.args:
+            if action.name == "lead" and args:       # where to: driven to after, by go_to
+                args.append(value)
+                continue
             target = self.resolve(value, binding, roles.get(value))
             if target is None:
-                return Outcome(False, f"knows no {value} to {action.name.replace('_', ' ')}")
+                return Outcome(False, f"knows no {value} to {action.name.replace('_', ' ')}", Reason.NOT_FOUND, value)
             args.append(target)
         outcome = self.world.act(action.name, *args)
-        if not outcome.ok and "which is closed" in outcome.message:
-            shut = outcome.message.split("inside ")[-1].split(",")[0]
-            self.open_to_look(shut)
+        if outcome.reason is Reason.INSIDE_CLOSED and outcome.about is not None:
+            self.open_to_look(outcome.about)
             outcome = self.world.act(action.name, *args)
-        if not outcome.ok and "is closed" in outcome.message and action.name == "place":
+        if outcome.reason is Reason.CLOSED and action.name == "place":
             self.open_to_look(args[1])
             outcome = self.world.act(action.name, *args)
-        if not outcome.ok and action.name == "place" and "nothing can be put in or on" in outcome.message:
+        if outcome.reason is Reason.NOT_RECEPTACLE and action.name == "place":
             outcome, args = self.put_beside(args[0], args[1], outcome)
+        if outcome.ok and action.name == "lead":     # the person follows the robot there
+            self.say("act", f"asks {args[0]} to follow", action="lead", args=args)
+            arrived = self.go_to(action.args[1], binding)
+            self.world.following = None
+            if not arrived.ok:
+                return arrived
+            outcome = Outcome(True, f"led {args[0]} to {action.args[1]}")
         self.say("act" if outcome.ok else "fail", outcome.message, action=action.name, args=args)
         if outcome.ok:
             self._after(action.name, args, binding)
-        elif "out of reach" in outcome.message:
+        elif outcome.reason in (Reason.OUT_OF_REACH, Reason.BEHIND_WALL):
             self.look()
         return outcome
+
+    def how_many(self, value: str, binding: Binding) -> str:
+        """How many things of a kind there are where the command says: in a room, every one the
+        robot has seen there once it has looked all over the room (:meth:`survey`); elsewhere,
+        those it sees from where it counts."""
+        key = self.class_of(value)
+        ground = binding.elements.get("ground")
+        room = self.room(ground) if ground else None
+        if room is not None and self.sweeper is not None:
+            self.survey(room)
+            n = sum(1 for k in self.known.values() if k.cls == key and k.movable
+                    and bool(room.contains([self.world.position(k.id)])[0]))
+        else:
+            n = sum(class_key(d.cls) == key for d in self.world.observe())
+        where = f" in the {ground.replace('_', ' ')}" if ground else ""
+        noun = key.replace("_", " ")
+        return f"{n} {noun}{'' if n == 1 else 's'}{where}"
+
+    def survey(self, room: Any, views: int | None = None) -> None:
+        """Look all over a room: to the nearest part of it not yet seen, until all of it is (at
+        most ``views`` views, default :data:`SURVEY_VIEWS`, within the budget)."""
+        assert self.sweeper is not None
+        sweep = self.sweeper()
+        sweep.begin(self)
+        sweep.seen |= ~room.contains(sweep.lattice)
+        for pose in self.looks:
+            sweep.seen |= self.world.sensor.visible(pose, sweep.lattice)
+        cells = self.grid.free_cells
+        for _ in range(SURVEY_VIEWS if views is None else views):
+            if self.exhausted() is not None:
+                return
+            field_ = self.distances()
+            found = sweep.frontier(self, field_[cells[:, 0], cells[:, 1]])
+            if found is None:
+                return
+            _, k, u = found
+            self.say("search", f"looks all over the {room.name.replace('_', ' ')}", target=room.name)
+            self.drive_to((int(cells[k, 0]), int(cells[k, 1])), "goes to look")
+            self.world.face(tuple(sweep.lattice[u]))
+            self.look()
+            sweep.seen |= self.world.sensor.visible(self.world.robot.pose, sweep.lattice)
 
     def _after(self, name: str, args: list[str], binding: Binding) -> None:
         """Keep the robot's own knowledge in step with what it just did."""
@@ -603,6 +746,15 @@ class Agent:
 WORDS = frozenset({"search", "count", "say", "answer"})
 """Primitives whose argument is a word (a kind of thing, a message), not an item of the world."""
 
+GO_FIRST = {"approach": 0, "follow": 0}
+"""Primitives the robot drives for first: up to the person (approach, follow)."""
+
+SURVEY_VIEWS = 12
+"""At most this many views to look all over a room (Count)."""
+
+STAND_TRIES = 400
+"""Stand cells tried, nearest first, for one that no wall cuts off from the thing."""
+
 
 class Fatal(Outcome):
     """A failure that replanning cannot mend (the search is exhausted, the budget spent)."""
@@ -610,52 +762,16 @@ class Fatal(Outcome):
 
 def default_planner(commanded: Sequence[Binding], library: Library, state: State) -> list[Binding]:
     """The project's planner (:func:`seal_cli.planning.plan.plan`) as a list of grounded frames."""
-    try:
-        from seal_cli.planning import plan as planning
-    except ImportError:
-        return chain_preconditions(commanded, library, state)
+    from seal_cli.planning import plan as planning
+
     result = planning.plan(list(commanded), library, state)
     return [step.binding for step in result.steps]
 
 
-def chain_preconditions(commanded: Sequence[Binding], library: Library, state: State) -> list[Binding]:
-    """A stand-in for the planner: before each commanded frame, achieve its unmet preconditions in
-    order, each by the first frame whose postconditions give it (recursively, depth-bounded)."""
-    steps: list[Binding] = []
-
-    def achieve(fact: Fact, depth: int) -> None:
-        nonlocal state
-        if state.holds(fact) or depth > 4:
-            return
-        if fact.predicate == "hand_empty" and not fact.negated:
-            held = next((f.args[0] for f in state.facts if f.predicate == "holding"), None)
-            if held:
-                run(library.frame("Place").bind({"theme": held}), depth + 1)
-                return
-        for frame in library.achievers(fact.predicate) if not fact.negated else ():
-            for post in frame.postconditions:
-                if post.predicate != fact.predicate or post.negated or len(post.args) != len(fact.args):
-                    continue
-                binding = frame.bind(dict(zip(post.args, fact.args, strict=True)))
-                if state.apply(binding).holds(fact):
-                    run(binding, depth + 1)
-                    return
-        raise SealError(f"no frame achieves {fact}")
-
-    def run(binding: Binding, depth: int) -> None:
-        nonlocal state
-        for fact in binding.preconditions:
-            achieve(fact, depth)
-        steps.append(binding)
-        state = state.apply(binding)
-
-    for binding in commanded:
-        run(binding, 0)
-    return steps
-
-
 def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Scene:
-    """A world built from a seal map's places and ground-truth objects, on its free space."""
+    """A world built from a seal map's places, ground-truth objects and people (the speaker, "me",
+    stands at ``speaker.at`` or where the robot starts), on its free space. A place's ``reach`` is
+    how far the robot can act on it and on what is in or on it."""
     from scipy.ndimage import binary_erosion
 
     from seal_cli.sensing.model import RangeSensor
@@ -663,7 +779,7 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
 
     taxonomy = library.taxonomy
     items = [Item(p.name, p.cls, p.at, movable=False, receptacle=True, openable=p.openable,
-                  toggleable=taxonomy.is_a(p.cls, "toggleable") is True) for p in m.places]
+                  toggleable=taxonomy.is_a(p.cls, "toggleable") is True, reach=p.reach) for p in m.places]
     for item, place in zip(items, m.places, strict=True):
         if place.openable and place.open:
             item.states.add("open")
@@ -674,6 +790,8 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
         parent = names.get(class_key(o.inside)) if o.inside else None
         items.append(Item(f"{o.cls}_{counts[o.cls]}", o.cls, o.at, movable=True, parent=parent,
                           receptacle=taxonomy.is_a(o.cls, "container") is True))
+    people = [(p.key, m.person_at(p)) for p in m.people]
+    items += [Item(key, PERSON, at, movable=False) for key, at in [*people, (SPEAKER, m.speaker_at)]]
     holding = None
     if m.robot.holding:
         holding = f"{m.robot.holding}_held"

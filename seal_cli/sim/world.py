@@ -22,6 +22,7 @@ gives the step at which an item's property last took its current value, so a tas
 
 from __future__ import annotations
 
+import enum
 import math
 from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass, field
@@ -33,12 +34,22 @@ from seal_cli.frames.actions import PRIMITIVES
 from seal_cli.frames.taxonomy import Taxonomy, class_key
 from seal_cli.sensing.model import RangeSensor, SensorModel
 
-__all__ = ["HAND", "Detection", "Event", "Item", "Outcome", "Robot", "World"]
+__all__ = ["HAND", "PERSON", "Detection", "Event", "Item", "Outcome", "Reason", "Robot", "World"]
 
 HAND = "@hand"
 """The parent of the item the robot holds."""
 
+PERSON = "person"
+"""The class of the people in the world: they stand where they are, take what is handed to them,
+and follow the robot when it leads them."""
+
 STATES = ("hot", "cold", "clean", "sliced", "on", "open")
+
+REACH_MARGIN = 0.3
+"""How close to a thing a wall may stand without cutting the robot's reach to it: the sight line
+from the robot is tested to the point this far short of the thing (for a place with its own
+reach, that reach less 0.5 m if more: :meth:`World.margin`), so the thing's own furniture (a
+counter a laser map marks occupied) does not hide it from the hand."""
 
 
 @dataclass
@@ -56,6 +67,9 @@ class Item:
     access: tuple[tuple[float, float], ...] = ()
     """Poses (x, y) from which a robot can reach a place that is larger than its arm's reach."""
     states: set[str] = field(default_factory=set)
+    reach: float | None = None
+    """How far from it the robot can act on it (m); None: the world's reach (a thing in or on a
+    place: the place's)."""
 
     def __post_init__(self) -> None:
         self.key = class_key(self.cls)
@@ -75,12 +89,36 @@ class Robot:
     trajectory: list[tuple[float, float]] = field(default_factory=list)
 
 
+class Reason(enum.Enum):
+    """Why an action did not happen, for the robot to act on (the message is for people)."""
+
+    OK = "ok"
+    UNKNOWN_ITEM = "unknown_item"
+    OUT_OF_REACH = "out_of_reach"
+    BEHIND_WALL = "behind_wall"
+    INSIDE_CLOSED = "inside_closed"
+    CLOSED = "closed"
+    NOT_RECEPTACLE = "not_receptacle"
+    FIXED = "fixed"
+    HAND_FULL = "hand_full"
+    NOT_HELD = "not_held"
+    WRONG_KIND = "wrong_kind"
+    NOT_SEEN = "not_seen"
+    NOT_FOUND = "not_found"
+    UNREACHABLE = "unreachable"
+    BUDGET = "budget"
+    CANNOT = "cannot"
+
+
 @dataclass(frozen=True)
 class Outcome:
-    """What an action did: ``ok``, and a sentence that says what happened or why it could not."""
+    """What an action did: ``ok``, a sentence that says what happened or why it could not, the
+    :class:`Reason` when it could not, and the item the reason is about (the closed fridge)."""
 
     ok: bool
     message: str
+    reason: Reason = Reason.OK
+    about: str | None = None
 
     def __bool__(self) -> bool:
         return self.ok
@@ -131,6 +169,8 @@ class World:
         self.reach = reach
         self.sensor: SensorModel = sensor or RangeSensor()
         self.access_tolerance = access_tolerance
+        self.following: str | None = None
+        """A person who walks with the robot (being led): where the robot drives, they go."""
         self.step = 0
         self.log: list[Event] = []
         self._since: dict[tuple[str, str], int] = {}
@@ -189,13 +229,45 @@ class World:
         if self.held_chain(item_id):
             return True
         item = self.items[item_id]
-        if math.dist(pose[:2], item.at) <= self.reach + 1e-9:
-            return True
+        if math.dist(pose[:2], item.at) <= self.reach_of(item_id) + 1e-9:
+            return not self.walled(item_id, pose)
         stands = list(item.access)
         parent = self.items.get(item.parent) if item.parent else None
         if parent is not None and not parent.movable:
             stands.extend(parent.access)
         return any(math.dist(pose[:2], a) <= self.access_tolerance for a in stands)
+
+    def reach_of(self, item_id: str) -> float:
+        """How far from the item the robot can act on it: its own reach, else its place's, else the world's."""
+        item = self.items[item_id]
+        parent = self.items.get(item.parent) if item.parent else None
+        for owner in (item, parent):
+            if owner is not None and owner.reach is not None:
+                return owner.reach
+        return self.reach
+
+    def walled(self, item_id: str, pose: Sequence[float] | None = None) -> bool:
+        """Whether a wall stands between the robot and the item: the sight line from the robot to
+        the point :data:`REACH_MARGIN` short of the item is blocked."""
+        pose = pose or self.robot.pose
+        at = self.items[item_id].at
+        d = math.dist(pose[:2], at)
+        margin = self.margin(item_id)
+        if d <= margin:
+            return False
+        f = (d - margin) / d
+        short = (pose[0] + (at[0] - pose[0]) * f, pose[1] + (at[1] - pose[1]) * f)
+        return not bool(np.asarray(self.sensor.line_of_sight(pose[:2], np.asarray([short], dtype=float)))[0])
+
+    def margin(self, item_id: str) -> float:
+        """How far short of the item the sight line for reach is tested: :data:`REACH_MARGIN` for a
+        thing, more for a place whose own reach is larger (a bed, a fridge drawn as a box: its
+        outline must not hide it from the hand), its reach less half a metre."""
+        item = self.items[item_id]
+        parent = self.items.get(item.parent) if item.parent else None
+        owner = item if item.reach is not None else parent if parent is not None and parent.reach is not None \
+            else None
+        return REACH_MARGIN if owner is None else max(REACH_MARGIN, float(owner.reach or 0.0) - 0.5)
 
     def observe(self, pose: Sequence[float] | None = None) -> list[Detection]:
         """The movable things the robot sees: not shut inside anything, and in its sensor's view or in
@@ -226,6 +298,8 @@ class World:
                 self.robot.trajectory.append((x, y))
         self.robot.pose = (x, y, yaw if heading is None else heading)
         self.robot.path_m += metres
+        if self.following is not None:
+            self.items[self.following].at = (x, y)
         self.step += 1
         return metres
 
@@ -249,7 +323,7 @@ class World:
         else:
             missing = [a for a in args if a not in self.items]
             if missing and name not in _TEXT_ARGS:
-                outcome = Outcome(False, f"there is no {missing[0]!r} here")
+                outcome = Outcome(False, f"there is no {missing[0]!r} here", Reason.UNKNOWN_ITEM, missing[0])
             else:
                 outcome = handler(*args)
         self.step += 1
@@ -271,11 +345,15 @@ class World:
         """None if the robot can touch the item, else why not."""
         item = self.items[item_id]
         if not self.within_reach(item_id):
-            return Outcome(False, f"{item.id} is {math.dist(self.robot.pose[:2], self.position(item_id)):.1f} m "
-                                  f"away, out of reach ({self.reach:g} m)")
+            d = math.dist(self.robot.pose[:2], self.position(item_id))
+            if d <= self.reach_of(item_id) + 1e-9 and self.walled(item_id):
+                return Outcome(False, f"{item.id} is {d:.1f} m away behind a wall: the robot cannot reach "
+                                      "through it", Reason.BEHIND_WALL, item.id)
+            return Outcome(False, f"{item.id} is {d:.1f} m away, out of reach ({self.reach_of(item_id):g} m)",
+                           Reason.OUT_OF_REACH, item.id)
         shut = self.enclosure(item_id)
         if shut is not None:
-            return Outcome(False, f"{item.id} is inside {shut.id}, which is closed")
+            return Outcome(False, f"{item.id} is inside {shut.id}, which is closed", Reason.INSIDE_CLOSED, shut.id)
         return None
 
     def _is(self, item: Item, category: str) -> bool:
@@ -284,9 +362,10 @@ class World:
     def _do_pick(self, obj: str) -> Outcome:
         item = self.items[obj]
         if not item.movable:
-            return Outcome(False, f"{obj} cannot be picked up")
+            return Outcome(False, f"{obj} cannot be picked up: it is fixed", Reason.FIXED, obj)
         if self.robot.holding is not None:
-            return Outcome(False, f"the hand is not empty: it holds {self.robot.holding}")
+            return Outcome(False, f"the hand is not empty: it holds {self.robot.holding}", Reason.HAND_FULL,
+                           self.robot.holding)
         if (why := self._reachable(obj)) is not None:
             return why
         source = item.parent
@@ -297,15 +376,16 @@ class World:
     def _do_place(self, obj: str, receptacle: str) -> Outcome:
         item, target = self.items[obj], self.items[receptacle]
         if self.robot.holding != obj:
-            return Outcome(False, f"the robot does not hold {obj}")
+            return Outcome(False, f"the robot does not hold {obj}", Reason.NOT_HELD, obj)
         if not target.receptacle:
-            return Outcome(False, f"nothing can be put in or on {receptacle}")
+            return Outcome(False, f"nothing can be put in or on {receptacle}", Reason.NOT_RECEPTACLE, receptacle)
         if receptacle == obj or self.held_chain(receptacle):
-            return Outcome(False, f"{obj} cannot be put into something the robot is carrying")
+            return Outcome(False, f"{obj} cannot be put into something the robot is carrying", Reason.CANNOT,
+                           receptacle)
         if (why := self._reachable(receptacle)) is not None:
             return why
         if not target.is_open:
-            return Outcome(False, f"{receptacle} is closed")
+            return Outcome(False, f"{receptacle} is closed", Reason.CLOSED, receptacle)
         self._move(item, receptacle, self._drop_point(target))
         self.robot.holding = None
         return Outcome(True, f"put {obj} {'in' if target.openable else 'on'} {receptacle}")
@@ -358,9 +438,9 @@ class World:
     def _treat(self, obj: str, appliance: str, category: str, state: str, clears: str | None) -> Outcome:
         item, tool = self.items[obj], self.items[appliance]
         if self.robot.holding != obj:
-            return Outcome(False, f"the robot does not hold {obj}")
+            return Outcome(False, f"the robot does not hold {obj}", Reason.NOT_HELD, obj)
         if not self._is(tool, category):
-            return Outcome(False, f"{appliance} is a {tool.cls}, not a {category}")
+            return Outcome(False, f"{appliance} is a {tool.cls}, not a {category}", Reason.WRONG_KIND, appliance)
         if (why := self._reachable(appliance)) is not None:
             return why
         self._set(item, state)
@@ -417,15 +497,60 @@ class World:
     def _do_search(self, thing: str) -> Outcome:
         key = class_key(thing)
         seen = [d.id for d in self.observe() if class_key(d.cls) == key]
-        return Outcome(bool(seen), f"sees {', '.join(seen)}" if seen else f"sees no {thing} from here")
+        if not seen and key in self.items and self.within_reach(key):      # a person, by name
+            seen = [key]
+        return Outcome(bool(seen), f"sees {', '.join(seen)}" if seen else f"sees no {thing} from here",
+                       Reason.OK if seen else Reason.NOT_SEEN, thing)
 
     def _do_count(self, thing: str) -> Outcome:
         key = class_key(thing)
         n = sum(class_key(d.cls) == key for d in self.observe())
         return Outcome(True, f"counted {n} {thing}")
 
+    def _person(self, person: str) -> Outcome | None:
+        """None if the item is a person within reach, else why not."""
+        if self.items[person].key != PERSON:
+            return Outcome(False, f"{person} is not a person", Reason.WRONG_KIND, person)
+        return self._reachable(person)
+
+    def _do_approach(self, person: str) -> Outcome:
+        why = self._person(person)
+        return why if why is not None else Outcome(True, f"is with {person}")
+
+    def _do_hand_over(self, obj: str, person: str) -> Outcome:
+        if self.robot.holding != obj:
+            return Outcome(False, f"the robot does not hold {obj}", Reason.NOT_HELD, obj)
+        if (why := self._person(person)) is not None:
+            return why
+        self._move(self.items[obj], person, self.items[person].at)
+        self.robot.holding = None
+        return Outcome(True, f"handed {obj} to {person}")
+
+    def _do_follow(self, person: str) -> Outcome:
+        why = self._person(person)
+        return why if why is not None else Outcome(True, f"followed {person}")
+
+    def _do_lead(self, person: str, target: str) -> Outcome:
+        """The person, within reach, walks with the robot from now on (:attr:`following`)."""
+        if (why := self._person(person)) is not None:
+            return why
+        self.following = person
+        self._since[(person, "at")] = self.step + 1
+        return Outcome(True, f"{person} follows the robot to {target}")
+
+    def _do_meet(self, person: str) -> Outcome:
+        why = self._person(person)
+        return why if why is not None else Outcome(True, f"met {person}")
+
+    def _do_greet(self, person: str) -> Outcome:
+        why = self._person(person)
+        return why if why is not None else Outcome(True, f"greeted {person}")
+
+    def _do_answer(self, question: str) -> Outcome:
+        return Outcome(True, f"answered {question!r}")
+
     def _do_say(self, message: str) -> Outcome:
         return Outcome(True, f"said {message!r}")
 
 
-_TEXT_ARGS = {"search", "count", "say", "answer"}
+_TEXT_ARGS = {"search", "count", "say", "answer", "lead"}

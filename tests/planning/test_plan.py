@@ -433,12 +433,14 @@ def test_map_places_open_and_robot_holding(library: Library, tmp_path: Path) -> 
                     "  - {class: apple, at: [3, 3], in: box_a}\n"
                     "robot: {pose: [2, 2], holding: spoon}\n", encoding="utf-8")
     tiny = load_map(path)
-    result = plan_text("put two apples on the counter", library, map=tiny)
+    with pytest.raises(SealError, match="the tiny has no counter; its places are fridge_a, box_a"):
+        plan_text("put two apples on the counter", library, map=tiny)        # fixed furniture the map lacks
+    result = plan_text("put two apples on the tray", library, map=tiny)
     assert [str(f) for f in result.initial] == ["holding(spoon)", "in(apple, fridge_a)", "in(apple_2, box_a)",
                                                 "open(fridge_a)"]
     assert steps(result) == ["Place(theme=spoon)", "Pick(theme=apple, source=fridge_a)",
-                             "Place(theme=apple, goal=counter)", "Open(theme=box_a)",
-                             "Pick(theme=apple_2, source=box_a)", "Place(theme=apple_2, goal=counter)"]
+                             "Place(theme=apple, goal=tray)", "Open(theme=box_a)",
+                             "Pick(theme=apple_2, source=box_a)", "Place(theme=apple_2, goal=tray)"]
     assert steps(plan_text("stir the cup", library, map=tiny, holding="knife"))[0] == "Place(theme=knife)"
 
 

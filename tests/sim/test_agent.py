@@ -8,15 +8,18 @@ import pytest
 from seal_cli.bench.alfred2d import Task, judge
 from seal_cli.frames.library import Library
 from seal_cli.planning.state import State
-from seal_cli.sim.agent import Agent, Budget, Record, chain_preconditions
+from seal_cli.sim.agent import Agent, Budget, Record
+from seal_cli.sim.policies import make_policy
 from seal_cli.sim.policies.sefm import SeFMPolicy
 from tests.scenes import kitchen
 
 
-def run(library: Library, commands: list[tuple[str, dict[str, str]]], **scene: object):  # type: ignore[no-untyped-def]
+def run(library: Library, commands: list[tuple[str, dict[str, str]]], search_unknown: bool = False,
+        **scene: object):  # type: ignore[no-untyped-def]
     s = kitchen(library, **scene)  # type: ignore[arg-type]
     heard: list[Record] = []
-    agent = Agent(s, library, SeFMPolicy(particles=100), rng=np.random.default_rng(1), observers=[heard.append])
+    agent = Agent(s, library, SeFMPolicy(particles=100), rng=np.random.default_rng(1), observers=[heard.append],
+                  sweeper=(lambda: make_policy("coverage")) if search_unknown else None)
     result = agent.run([library.frame(f).bind(v) for f, v in commands])
     return s, agent, result, heard
 
@@ -53,6 +56,9 @@ def test_gives_up_when_the_thing_does_not_exist(library: Library) -> None:
     assert not result.completed and "pineapple" in result.reason
     assert heard[-1].kind == "give_up"
     assert result.path_m == 0.0 and "cannot recognise" in result.reason   # no class of the scene: no search
+    s, agent, result, heard = run(library, [("Pick", {"theme": "pineapple"})], search_unknown=True)
+    assert result.reason == "searched the whole house: no pineapple" and result.why.value == "not_found"
+    assert result.path_m > 0.0 and agent.sweep is not None and agent.sweep.seen.all()   # all of it, once
     s = kitchen(library)
     s.vocabulary = ()                      # perception that knows every class: it searches, in vain
     blind = Agent(s, library, SeFMPolicy(particles=50), rng=np.random.default_rng(1)).run(
@@ -82,12 +88,12 @@ def test_uniform_prior_searches_longer_than_the_informed_one(library: Library) -
     assert informed.path_m <= blind.path_m
 
 
-def test_stand_in_planner_chains_preconditions(library: Library) -> None:
-    state = State.of([], library.taxonomy)
+def test_the_agent_plans_with_the_planner(library: Library) -> None:
     from seal_cli.frames.model import Fact
+    from seal_cli.sim.agent import default_planner
 
     state = State.of([Fact("hand_empty")], library.taxonomy, closable={"fridge"})
-    steps = chain_preconditions([library.frame("Place").bind({"theme": "egg", "goal": "fridge"})], library, state)
+    steps = default_planner([library.frame("Place").bind({"theme": "egg", "goal": "fridge"})], library, state)
     assert [str(b) for b in steps] == ["Pick(theme=egg)", "Open(theme=fridge)", "Place(theme=egg, goal=fridge)"]
 
 

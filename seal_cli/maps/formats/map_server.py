@@ -48,7 +48,7 @@ from seal_cli.errors import SealError, SealErrors, Where
 from seal_cli.fileio import LOADER, MAX_IMAGE_BYTES, read_bytes, read_text
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.geometry import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
-from seal_cli.maps.model import Map, MapWarning, ObjectTruth, Place, Robot, Room, Sensor
+from seal_cli.maps.model import Map, MapWarning, ObjectTruth, Person, Place, Robot, Room, Sensor
 from seal_cli.resources import map_path
 from seal_cli.yamlnodes import NodeReader
 from seal_cli.yamlnodes import is_null as _is_null
@@ -57,12 +57,14 @@ from seal_cli.yamlnodes import shape as _shape
 __all__ = ["KEYS", "check_map_file", "load_map", "read_image", "read_map", "read_pgm"]
 
 MAP_SERVER_KEYS = ("image", "resolution", "origin", "negate", "occupied_thresh", "free_thresh", "mode")
-SEMANTIC_KEYS = ("name", "bounds", "rooms", "places", "priors", "objects", "robot", "sensor")
+SEMANTIC_KEYS = ("name", "bounds", "rooms", "places", "priors", "objects", "robot", "sensor", "people", "speaker")
 KEYS = MAP_SERVER_KEYS + ("occupancy",) + SEMANTIC_KEYS  # occupancy: a grid from a bag (formats/occupancy_bag)
 ROOM_KEYS = ("name", "polygon", "box")
 PLACE_KEYS = ("name", "class", "at", "openable", "open", "reach")
 OBJECT_KEYS = ("class", "at", "in")
 ROBOT_KEYS = ("pose", "holding")
+PERSON_KEYS = ("name", "at", "room")
+SPEAKER_KEYS = ("at",)
 SENSOR_KEYS = ("range", "fov", "p_detect", "sigma", "noise")
 MAX_METRES = 1000.0
 """The largest sensor range and place reach a map may give: beyond it squared distances overflow
@@ -256,6 +258,10 @@ class _Reader(NodeReader):
             fields["robot"] = self.robot(nodes["robot"])
         if "sensor" in nodes:
             fields["sensor"] = self.sensor(nodes["sensor"])
+        if "people" in nodes:
+            fields["people"] = self.people(nodes["people"])
+        if "speaker" in nodes:
+            fields["speaker"] = self.speaker(nodes["speaker"])
         if server is not None:
             fields["grid"] = server
         elif "bounds" not in nodes and "image" not in nodes and "occupancy" not in nodes:
@@ -456,6 +462,34 @@ class _Reader(NodeReader):
             return None
         return self.build(lambda: Robot(tuple(pose) or None, holding, self.where(node)),  # type: ignore[arg-type]
                           node)
+
+    def people(self, node: yaml.Node) -> tuple[Person, ...]:
+        people = []
+        for i, item in enumerate(self.items(node, "people")):
+            self.positions[("people", i)] = self.where(item)
+            fields = {key: value for key, _, value in self.pairs_at(item, "a person", ("people", i), PERSON_KEYS)}
+            if not isinstance(item, yaml.MappingNode):
+                continue
+            if "name" not in fields:
+                self.problem("a person needs a name", item)
+                continue
+            name = self.string(fields["name"], "a person's name")
+            at = self.xy(fields["at"], f"person {name}: at") if "at" in fields else None
+            room = self.string(fields["room"], f"person {name}: room") if "room" in fields else None
+            if name and ("at" not in fields or at) and ("room" not in fields or room):
+                built = self.build(functools.partial(Person, name, at, room, self.where(item)), item)
+                if built is not None:
+                    people.append(built)
+        return tuple(people)
+
+    def speaker(self, node: yaml.Node) -> tuple[float, float] | None:
+        fields = {key: value for key, _, value in self.pairs_at(node, "speaker", ("speaker",), SPEAKER_KEYS)}
+        if not isinstance(node, yaml.MappingNode):
+            return None
+        if "at" not in fields:
+            self.problem("speaker needs at: [x, y]", node)
+            return None
+        return self.xy(fields["at"], "speaker: at")
 
     def sensor(self, node: yaml.Node) -> Sensor | None:
         fields = {key: value for key, _, value in self.pairs_at(node, "sensor", ("sensor",), SENSOR_KEYS)}

@@ -1,0 +1,182 @@
+"""The end-to-end suite: plain commands on a map, each with the plan it must ground to and how its run must end.
+
+A :class:`Case` is a command on one of the suite's maps (``apartment``: ``maps/apartment.yaml``;
+``aws``: the AWS small house annotated with rooms, places, people and things by
+:func:`seal_cli.bench.houses.aws_house`), and what must come of it:
+
+- ``plan``: the steps ``seal plan --map`` must print (frames and their map ids, in order); or
+  ``refused``: words the refusal must contain (a room the map lacks, a fixed thing to pick up);
+- ``run``: how ``seal run`` must end: ``done`` (every frame executed) or ``not_found`` (the
+  robot searched and the thing is not in the house); ``answer``: words the answer must contain.
+
+A case is **plan-right** when the plan is exactly the expected one (or the refusal says what
+it must), and **run-completed** when the run ends as expected. The cases are data
+(``seal_cli/bench/suites/e2e.yaml``), written from the maps, never from an evaluation set.
+"""
+
+from __future__ import annotations
+
+import tempfile
+from collections.abc import Callable, Iterable, Sequence
+from concurrent.futures import ProcessPoolExecutor
+from dataclasses import asdict, dataclass
+from pathlib import Path
+from typing import Any
+
+from seal_cli.errors import SealError, Where
+
+__all__ = ["AWS_ROBOT", "Case", "Verdict", "load_cases", "run_cases", "summarise"]
+
+AWS_ROBOT = (1.5, -4.0, 0.0)
+"""Where the robot starts in the AWS house: the living room, south of the sofa."""
+
+RUN_ENDS = ("done", "not_found")
+
+
+@dataclass(frozen=True)
+class Case:
+    """One command on one map and what must come of it (see the module docstring)."""
+
+    map: str
+    text: str
+    plan: tuple[str, ...] | None = None
+    refused: str | None = None
+    run: str | None = None
+    answer: str | None = None
+
+    def __post_init__(self) -> None:
+        if (self.plan is None) == (self.refused is None):
+            raise SealError(f"case {self.text!r}: give exactly one of plan and refused")
+        if self.run is not None and self.run not in RUN_ENDS:
+            raise SealError(f"case {self.text!r}: run is one of {', '.join(RUN_ENDS)}, not {self.run!r}")
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """What came of one case."""
+
+    map: str
+    text: str
+    plan_right: bool
+    got: str
+    run_ran: bool = False
+    run_completed: bool = False
+    run_reason: str = ""
+    answer: str | None = None
+    path_m: float = 0.0
+
+
+def load_cases(path: str | Path | None = None) -> list[Case]:
+    """The suite's cases (default: the shipped ``suites/e2e.yaml``)."""
+    from seal_cli.fileio import read_yaml
+
+    path = Path(path) if path is not None else Path(__file__).parent / "suites" / "e2e.yaml"
+    data = read_yaml(path)
+    entries = data.get("cases") if isinstance(data, dict) else None
+    if not isinstance(entries, list):
+        raise SealError("an end-to-end suite is a mapping with cases: [...]", Where(str(path)))
+    cases = []
+    for number, entry in enumerate(entries, 1):
+        if not isinstance(entry, dict) or not isinstance(entry.get("text"), str) or entry.get("map") not in MAPS:
+            raise SealError(f"case {number}: needs text and map (one of {', '.join(MAPS)})", Where(str(path)))
+        plan = entry.get("plan")
+        cases.append(Case(entry["map"], entry["text"], tuple(plan) if plan is not None else None,
+                          entry.get("refused"), entry.get("run"), entry.get("answer")))
+    return cases
+
+
+MAPS: dict[str, Callable[[Path, Path], Path]] = {
+    "apartment": lambda folder, data: _shipped("apartment"),
+    "aws": lambda folder, data: _aws(folder, data),
+}
+"""The suite's maps by name: each writes (or finds) its map file, given a scratch folder and the shared data."""
+
+
+def _shipped(name: str) -> Path:
+    from seal_cli.resources import map_path
+
+    return map_path(name)
+
+
+def _aws(folder: Path, data: Path) -> Path:
+    from seal_cli.bench.houses import aws_house
+
+    return aws_house(folder, data, "wings", AWS_ROBOT, furnished=True)
+
+
+def plan_steps(case: Case, the_map: Any, library: Any) -> tuple[bool, str]:
+    """Whether the case plans right, and what it planned (or the refusal)."""
+    from seal_cli.pipeline import plan as plan_text
+
+    try:
+        found = plan_text(case.text, library, map=the_map)
+    except SealError as error:
+        return case.refused is not None and case.refused in error.message, f"refused: {error.message}"
+    steps = tuple(str(step) for step in found.steps)
+    return case.plan == steps, "; ".join(steps)
+
+
+def judge(case: Case, map_file: str, seed: int, particles: int, framelib: Sequence[str] | None) -> Verdict:
+    """Plan the case, then run it if it says how the run must end (one worker's job)."""
+    import numpy as np
+
+    from seal_cli.frames.reading import load_library
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.agent import Budget
+    from seal_cli.sim.policies import make_policy
+
+    library = load_library(framelib)
+    the_map = load_map(map_file)
+    right, got = plan_steps(case, the_map, library)
+    if case.run is None or case.refused is not None:
+        return Verdict(case.map, case.text, right, got)
+    try:
+        _, result = run_on_map(the_map, case.text, library, make_policy("sefm", particles),
+                               rng=np.random.default_rng(seed), budget=Budget(steps=400, metres=300.0))
+    except SealError as error:
+        return Verdict(case.map, case.text, right, got, True, False, f"refused: {error.message}")
+    ended = result.completed if case.run == "done" else (not result.completed and result.why.value == "not_found")
+    answered = case.answer is None or (result.answer is not None and case.answer in result.answer)
+    return Verdict(case.map, case.text, right, got, True, ended and answered, result.reason, result.answer,
+                   round(result.path_m, 2))
+
+
+def run_cases(cases: Iterable[Case], data: Path, *, seed: int = 0, particles: int = 100, jobs: int = 1,
+              framelib: Sequence[str] | None = None,
+              progress: Callable[[int, int], None] | None = None) -> list[Verdict]:
+    """Every case's verdict, in order; ``jobs`` worker processes."""
+    cases = list(cases)
+    with tempfile.TemporaryDirectory(prefix="seal-e2e-") as scratch:
+        files = {name: str(MAPS[name](Path(scratch), data)) for name in {c.map for c in cases}}
+        args = [(c, files[c.map], seed, particles, framelib) for c in cases]
+        verdicts: list[Verdict] = []
+        if jobs <= 1:
+            for i, a in enumerate(args, 1):
+                verdicts.append(judge(*a))
+                if progress:
+                    progress(i, len(args))
+            return verdicts
+        with ProcessPoolExecutor(max_workers=jobs) as pool:
+            for i, verdict in enumerate(pool.map(judge, *zip(*args, strict=True)), 1):
+                verdicts.append(verdict)
+                if progress:
+                    progress(i, len(args))
+    return verdicts
+
+
+def summarise(verdicts: Sequence[Verdict]) -> dict[str, Any]:
+    """Plan-right and run-completed counts and rates per map and for ``all``, and the misses."""
+    groups: dict[str, list[Verdict]] = {"all": list(verdicts)}
+    for v in verdicts:
+        groups.setdefault(v.map, []).append(v)
+    report: dict[str, Any] = {"groups": {}}
+    for name, members in groups.items():
+        ran = [v for v in members if v.run_ran]
+        report["groups"][name] = {
+            "n": len(members), "plan_right": sum(v.plan_right for v in members),
+            "plan_rate": round(sum(v.plan_right for v in members) / len(members), 3) if members else None,
+            "runs": len(ran), "run_completed": sum(v.run_completed for v in ran),
+            "run_rate": round(sum(v.run_completed for v in ran) / len(ran), 3) if ran else None}
+    report["misses"] = [asdict(v) for v in verdicts if not v.plan_right or (v.run_ran and not v.run_completed)]
+    return report

@@ -1,0 +1,244 @@
+"""Map grounding: which room, place or person of a map a phrase of a command names.
+
+The words of a command name things of the map as people say them, not as the map file spells
+them. A map thing is called by (lemmatised words, articles and possessives dropped):
+
+- a **room** by its name ("living_room": "the living room", "the living_room" as written);
+- a **place** by its name without its number ("dining_table_1": "the dining table"), by its name
+  with the number ("sofa 2"), by its class and the class's other names in the library's synonyms
+  ("sofa": "the couch", "the settee"), and, less surely, by the last word of its name or class
+  ("the table" for a dining table, not for a nightstand that is also a "night table");
+- a **person** by their name ("Roger"); the **speaker** by "me", "I", "us" (:data:`SPEAKER`).
+
+A phrase is split at its first relational word ("the couch *in* the living room"): the words
+before it are the thing, the words after it say where it is. Among the things its words call
+best, a phrase names, in turn:
+
+1. the ones where it says they are: in that room, or in the room of that place (none there is
+   refused: "the table in the kitchen" when the kitchen has none);
+2. the ones the frame element can take (an ``openable`` element wants a place that opens; a
+   ``heater`` a place that heats, by the library's categories);
+3. the first in the map's order (the map lists the usual one first).
+
+A phrase whose words name no thing of the map is not grounded here (it is an object the robot
+must find, or a word of no class); but a room word ("garage", anything called a "room") or a
+fixed thing (the library's ``fixed`` category: furniture, appliances) that the map lacks is
+refused before anything moves, listing what the map has (:class:`Refusal`).
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass
+from functools import cached_property
+
+from seal_cli.errors import SealError
+from seal_cli.frames.taxonomy import Taxonomy, class_key, class_words
+from seal_cli.language.lexicon import noun_lemma
+from seal_cli.maps.model import SPEAKER, Map
+
+__all__ = ["FIXED", "ROOM_WORDS", "SPEAKER_WORDS", "MapNames", "Referent", "Refusal", "spoken"]
+
+FIXED = "fixed"
+"""The library category of what never moves: furniture, appliances, fixtures and rooms."""
+
+ROOM_WORDS = frozenset({"kitchen", "bathroom", "bedroom", "living_room", "dining_room", "family_room", "garage",
+    "hall", "hallway", "corridor", "office", "study", "attic", "basement", "cellar", "laundry", "laundry_room",
+    "utility_room", "garden", "balcony", "porch", "lounge", "den", "nursery", "playroom", "lobby", "entrance",
+    "foyer", "staircase", "terrace", "patio", "yard", "backyard", "guest_room", "washroom", "restroom",
+    "shower_room", "gym", "library", "toilet_room", "cloakroom", "conservatory", "sunroom", "workshop"})
+"""English names of the rooms of a house (general knowledge, not any corpus): a phrase ending in
+one, or in "room", names a room. Kept here, not in the library's types, because a class a category
+lists is known *not* to be in the others ("open the garage" must stay possible)."""
+
+SPEAKER_WORDS = frozenset({"me", "i", "us", "myself", "ourselves", "we"})
+"""Who the speaker is called in a command."""
+
+RELATIONS = ("next to", "close to", "in front of", "on top of", "in", "on", "at", "inside", "near", "by",
+             "beside", "under", "behind", "within", "from", "of")
+"""Words after which a phrase says where its thing is ("the couch in the living room")."""
+
+DROPPED = frozenset({"the", "a", "an", "my", "our", "your", "his", "her", "their", "this", "that", "these",
+                     "those", "some", "any"})
+
+
+class Refusal(SealError):
+    """A command that names a room or a fixed thing the map does not have."""
+
+
+def spoken(text: str) -> str:
+    """A command with a map's own spellings said as words ("the family_room": "the family room");
+    one character for one, so spans into the text stay right."""
+    return re.sub(r"(?<=[A-Za-z])_(?=[A-Za-z0-9])", " ", text)
+
+
+def words_of(text: str) -> tuple[str, ...]:
+    """The lemmatised words of a phrase, without articles and possessives."""
+    tokens = re.findall(r"[a-z0-9]+", text.lower().replace("_", " "))
+    return tuple(noun_lemma(t) for t in tokens if t not in DROPPED)
+
+
+@dataclass(frozen=True)
+class Referent:
+    """A thing of the map a phrase may name: ``kind`` is room, place or person."""
+
+    id: str
+    kind: str
+    cls: str
+    room: str | None
+    names: tuple[tuple[str, ...], ...]
+    """The word sequences that call it surely, best first."""
+    heads: frozenset[str]
+    """The single words that call it less surely (the last word of a name)."""
+
+
+def _split(words: tuple[str, ...]) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """The thing's words and the words that say where it is, at the first relational word."""
+    for i in range(1, len(words)):
+        for relation in RELATIONS:
+            rel = tuple(relation.split())
+            if words[i:i + len(rel)] == rel:
+                return words[:i], words[i + len(rel):]
+    return words, ()
+
+
+class MapNames:
+    """The rooms, places and people of a map, by the words that call them (see the module docstring)."""
+
+    def __init__(self, map: Map, taxonomy: Taxonomy) -> None:
+        self.map = map
+        self.taxonomy = taxonomy
+
+    @cached_property
+    def referents(self) -> tuple[Referent, ...]:
+        synonyms = self.taxonomy.names
+        found: list[Referent] = []
+        for room in self.map.rooms:
+            name = words_of(room.name)
+            found.append(Referent(class_key(room.name), "room", class_key(room.name), class_key(room.name),
+                                  (name,), frozenset()))
+        for place in self.map.places:
+            spelled = [re.sub(r"[_ ]?\d+$", "", place.name), place.name, place.cls,
+                       *synonyms.get(place.cls, ())]
+            names = tuple(dict.fromkeys(w for w in map(words_of, spelled) if w))
+            heads = frozenset(n[-1] for n in map(words_of, spelled[:3]) if n)     # not a synonym's: a "tv table"
+            found.append(Referent(class_key(place.name), "place", place.cls,
+                                  class_key(place.room) if place.room else None, names, heads))
+        for person in self.map.people:
+            room_name = person.room or self.map._room_name(self.map.person_at(person))
+            found.append(Referent(person.key, "person", "person", class_key(room_name) if room_name else None,
+                                  (words_of(person.name),), frozenset()))
+        return tuple(found)
+
+    def by_id(self, id_: str) -> Referent | None:
+        return next((r for r in self.referents if r.id == class_key(id_)), None)
+
+    @staticmethod
+    def _score(referent: Referent, words: tuple[str, ...]) -> int:
+        """How surely the words call the referent: 2 + the length of a name they end with, 1 for
+        a head word alone, 0 for nothing."""
+        best = 0
+        for name in referent.names:
+            said = len(name) <= len(words) and words[len(words) - len(name):] == name
+            if said or len(name) > 1 and words[-1:] == ("".join(name),):
+                best = max(best, 2 + len(name))
+        if not best and words and words[-1] in referent.heads:
+            best = 1
+        return best
+
+    def candidates(self, words: tuple[str, ...], kinds: Iterable[str] = ("room", "place", "person")
+                   ) -> list[Referent]:
+        """The referents the words call best, in the map's order."""
+        kinds = set(kinds)
+        scored = [(self._score(r, words), r) for r in self.referents if r.kind in kinds]
+        top = max((s for s, _ in scored), default=0)
+        return [r for s, r in scored if s == top and s > 0]
+
+    def ground(self, text: str, element_type: str, kinds: Iterable[str] = ("room", "place", "person")
+               ) -> Referent | None:
+        """The map thing a phrase names, for an element of this type; None if it names none."""
+        words = words_of(text)
+        if not words:
+            return None
+        thing, where = _split(words)
+        found = self.candidates(thing, kinds)
+        if not found:
+            return None
+        if where and (room := self._room_of_words(where)) is not None:
+            inside = [r for r in found if r.room == room or r.id == room]
+            if not inside:
+                what, there = " ".join(thing), room.replace("_", " ")
+                others = ", ".join(f"{r.id} ({r.room or 'in no room'})" for r in found)
+                raise Refusal(f"the {self.map.name} has no {what} in the {there}; it has {others}")
+            found = inside
+        typed = [r for r in found if r.kind != "place" or self.taxonomy.is_a(r.cls, element_type) is not False
+                 or (element_type == "openable" and self._openable(r.id))]
+        if element_type == "openable":
+            typed = [r for r in typed if r.kind == "place" and self._openable(r.id)] or typed
+        return (typed or found)[0]
+
+    def _room_of_words(self, words: tuple[str, ...]) -> str | None:
+        thing, _ = _split(words)
+        found = self.candidates(thing, ("room", "place"))
+        if not found:
+            return None
+        return found[0].id if found[0].kind == "room" else found[0].room
+
+    def _openable(self, id_: str) -> bool:
+        place = self.map.place(id_)
+        return place is not None and place.openable
+
+    def is_room_word(self, text: str) -> bool:
+        """Whether a phrase calls something a room ("the garage", "the games room")."""
+        thing, _ = _split(words_of(text))
+        if not thing:
+            return False
+        return is_room_word(thing)
+
+    def is_fixed_word(self, text: str, cls: str | None) -> bool:
+        """Whether a phrase calls something that never moves (furniture, an appliance)."""
+        thing, _ = _split(words_of(text))
+        names = [cls] if cls else []
+        if thing:
+            names += ["_".join(thing), thing[-1]]
+        return any(self.taxonomy.is_a(n, FIXED) is True for n in names if n)
+
+    def refusal(self, text: str, cls: str | None) -> Refusal | None:
+        """Why a phrase cannot be grounded on this map, when it names a room or fixed thing the map
+        lacks; None when it may be an object to search for."""
+        what = " ".join(_split(words_of(text))[0]) or text
+        if self.is_room_word(text):
+            rooms = ", ".join(r.name for r in self.map.rooms) or "none"
+            return Refusal(f"the {self.map.name} has no {what}; its rooms are {rooms}")
+        if self.is_fixed_word(text, cls):
+            places = ", ".join(p.name for p in self.map.places) or "none"
+            return Refusal(f"the {self.map.name} has no {what}; its places are {places}")
+        return None
+
+    def where_said(self, text: str) -> str | None:
+        """The room a phrase says its thing is in ("the cups in the family room": family_room)."""
+        _, where = _split(words_of(text))
+        return self._room_of_words(where) if where else None
+
+    def names_of_kind(self, kind: str) -> Sequence[str]:
+        return [r.id for r in self.referents if r.kind == kind]
+
+
+def is_room_word(words: Sequence[str]) -> bool:
+    """Whether words call something a room: "room" last, or a room's name (:data:`ROOM_WORDS`)."""
+    words = tuple(words)
+    return bool(words) and (words[-1] == "room" or "_".join(words) in ROOM_WORDS or words[-1] in ROOM_WORDS
+                            or "_".join(words[-2:]) in ROOM_WORDS)
+
+
+def person_value(text: str, head: str, people: Mapping[str, object] | None = None) -> str:
+    """The id a phrase for a person takes: the speaker's for "me", else the name's key."""
+    if head.lower() in SPEAKER_WORDS:
+        return SPEAKER
+    words = [w for w in class_words(text) if w not in DROPPED]
+    if people is not None:
+        for word in (*words, head):
+            if class_key(word) in people:
+                return class_key(word)
+    return class_key(head)

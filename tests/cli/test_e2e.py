@@ -1,0 +1,108 @@
+"""Everyday commands end to end on the shipped apartment: people, answers, warnings, refusals, the e2e bench."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from typer.testing import CliRunner
+
+from seal_cli.cli import app
+
+runner = CliRunner()
+FAST = ["--particles", "50", "--json"]
+
+
+def run_json(*args: str) -> dict:  # type: ignore[type-arg]
+    result = runner.invoke(app, ["run", "--map", "apartment", *args, *FAST])
+    return json.loads(result.stdout)
+
+
+def test_bring_me_hands_the_thing_to_the_speaker() -> None:
+    report = run_json("bring me the spoon")
+    assert report["completed"] and report["why"] == "ok" and report["warnings"] == []
+    assert any(r["text"] == "handed spoon_1 to me" for r in report["records"])
+    hand_over = next(r for r in report["records"] if r["text"] == "handed spoon_1 to me")
+    assert abs(hand_over["pose"][0] + 6.5) + abs(hand_over["pose"][1] + 4.0) < 2.0    # beside the speaker
+
+
+def test_questions_are_answered() -> None:
+    found = run_json("find Ben")
+    assert found["completed"] and found["answer"] == "ben is in the bedroom at (-7.00, 3.00)"
+    counted = run_json("count the cups in the family room")
+    assert counted["plan"] == ["Count(theme=cup, ground=family_room)"]
+    assert counted["answer"] == "1 cup in the family room"
+
+
+def test_a_kind_the_map_knows_nothing_of_is_warned_about_and_searched_for() -> None:
+    report = run_json("put the apple in the bowl", "--max-steps", "40")
+    assert not report["completed"] and report["warnings"] == [
+        "the map apartment knows nothing of bowl (no prior, object or place names it): seal run will search the "
+        "whole house for it"]
+    assert report["why"] in ("budget", "not_found")
+    assert any("searches the whole house for bowl" in r["text"] for r in report["records"])
+
+
+def test_what_the_map_lacks_is_refused_before_anything_moves() -> None:
+    result = runner.invoke(app, ["run", "--map", "apartment", "bring the cup to the garage"])
+    assert result.exit_code == 1 and "Traceback" not in result.output
+    assert "the apartment has no garage; its rooms are bedroom, family_room, dining_room, kitchen, living_room" \
+        in result.output
+    plan = runner.invoke(app, ["plan", "--map", "apartment", "clean the bathroom"])
+    assert plan.exit_code == 1 and "has no bathroom" in plan.output
+
+
+def test_framelib_plus_adds_to_the_standard_library(tmp_path: Path) -> None:
+    mine = tmp_path / "mine.yaml"
+    mine.write_text("frames:\n  - frame: Tidy\n    description: Tidy a room up.\n    lexical_units: [tidy up]\n"
+                    "    elements:\n      ground: {type: location}\n    preconditions: []\n"
+                    "    actions: [navigate(ground)]\n    postconditions: [tidied(ground)]\n", encoding="utf-8")
+    result = runner.invoke(app, ["plan", "--map", "apartment", "--framelib", f"+{mine}", "--json",
+                                 "tidy up the bedroom, then bring me the cup"])
+    assert result.exit_code == 0, result.output
+    assert [s["frame"] for s in json.loads(result.stdout)["plan"]] == ["Tidy", "Pick", "Bring"]
+    alone = runner.invoke(app, ["plan", "--framelib", str(mine), "bring me the cup"])
+    assert alone.exit_code == 1             # without +, the file is the whole library: no Bring
+    missing = runner.invoke(app, ["plan", "--framelib", f"+{tmp_path / 'nope.yaml'}", "go home"])
+    assert missing.exit_code == 1 and "no such file" in missing.output and "Traceback" not in missing.output
+
+
+def test_bench_e2e_counts_plans_and_runs(tmp_path: Path) -> None:
+    suite = tmp_path / "cases.yaml"
+    suite.write_text("cases:\n"
+                     "  - {map: apartment, text: go to the couch in the living room, plan: [Go(goal=sofa_2)], "
+                     "run: done}\n"
+                     "  - {map: apartment, text: bring the cup to the garage, refused: has no garage}\n"
+                     "  - {map: apartment, text: go to the couch, plan: [Go(goal=sofa_2)]}\n", encoding="utf-8")
+    result = runner.invoke(app, ["bench", "e2e", "--file", str(suite), "--jobs", "1", "--json", "--particles", "50"])
+    assert result.exit_code == 0, result.output
+    report = json.loads(result.stdout)
+    assert report["groups"]["all"] == {"n": 3, "plan_right": 2, "plan_rate": 0.667, "runs": 1, "run_completed": 1,
+                                       "run_rate": 1.0}
+    assert [m["text"] for m in report["misses"]] == ["go to the couch"]       # it is sofa_1: the miss is reported
+    table = runner.invoke(app, ["bench", "e2e", "--file", str(suite), "--jobs", "1", "--particles", "50"])
+    assert "plan miss" in table.stdout and "2/3" in table.stdout
+    bad = runner.invoke(app, ["bench", "e2e", "--map", "moon"])
+    assert bad.exit_code == 1 and "unknown map 'moon'" in bad.output
+
+
+def test_the_shipped_suite_is_large_and_its_plans_are_right(library: object) -> None:
+    from seal_cli.bench.e2e import MAPS, load_cases, plan_steps
+    from seal_cli.maps.formats.map_server import load_map
+
+    cases = [c for c in load_cases() if c.map == "apartment"]
+    assert len(load_cases()) >= 100 and {c.map for c in load_cases()} == set(MAPS)
+    the_map = load_map(Path(__file__).resolve().parents[2] / "maps" / "apartment.yaml")
+    wrong = [(c.text, got) for c in cases for right, got in [plan_steps(c, the_map, library)] if not right]
+    assert wrong == []
+
+
+def test_the_aws_house_plans_are_right(library: object, shared_data: Path, tmp_path: Path) -> None:
+    from seal_cli.bench.e2e import MAPS, load_cases, plan_steps
+    from seal_cli.maps.formats.map_server import load_map
+
+    the_map = load_map(MAPS["aws"](tmp_path, shared_data))
+    assert {p.name for p in the_map.people} == {"Carla", "Dev"} and len(the_map.places) == 14
+    wrong = [(c.text, got) for c in load_cases() if c.map == "aws"
+             for right, got in [plan_steps(c, the_map, library)] if not right]
+    assert wrong == []

@@ -1,0 +1,74 @@
+"""Map grounding: the rooms, places and people a command's words name on a map, and what is refused."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from seal_cli.errors import SealError
+from seal_cli.frames.library import Library
+from seal_cli.maps.formats.map_server import load_map
+from seal_cli.pipeline import plan as plan_text
+from seal_cli.planning.grounding import MapNames, spoken
+
+APARTMENT = Path(__file__).resolve().parents[2] / "maps" / "apartment.yaml"
+
+
+def steps(text: str, library: Library) -> list[str]:
+    return [str(s) for s in plan_text(text, library, map=load_map(APARTMENT)).steps]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("go to the living room", ["Go(goal=living_room)"]),               # two words, as people say it
+    ("go to the family_room", ["Go(goal=family_room)"]),               # the map's own spelling
+    ("go to the couch in the living room", ["Go(goal=sofa_2)"]),       # a synonym, placed by its room
+    ("go to the sofa in the family room", ["Go(goal=sofa_1)"]),
+    ("go to the couch", ["Go(goal=sofa_1)"]),                          # the first in the map's order
+    ("go to sofa 2", ["Go(goal=sofa_2)"]),                             # a place's name with its number
+    ("go to the dining table", ["Go(goal=dining_table_1)"]),
+    ("go to the tv stand", ["Go(goal=tv_stand_1)"]),
+    ("count the cups in the family room", ["Count(theme=cup, ground=family_room)"]),   # one Count of the class
+    ("bring me the cup", ["Pick(theme=cup, source=coffee_table_1)", "Bring(theme=cup, recipient=me)"]),
+    ("give the apple to Ben", ["Open(theme=fridge_1)", "Pick(theme=apple, source=fridge_1)",
+                               "Give(theme=apple, recipient=ben)"]),
+    ("guide Anna to the living room", ["Guide(theme=anna, goal=living_room)"]),
+])
+def test_words_ground_to_the_maps_ids(library: Library, text: str, expected: list[str]) -> None:
+    assert steps(text, library) == expected
+
+
+@pytest.mark.parametrize(("text", "message", "column"), [
+    ("bring the cup to the garage", "the apartment has no garage; its rooms are bedroom, family_room, "
+                                    "dining_room, kitchen, living_room", 18),
+    ("go to the table in the kitchen", "the apartment has no table in the kitchen; it has dining_table_1 "
+                                       "(dining_room), coffee_table_1 (family_room)", 7),
+    ("put the cup on the shelf", "the apartment has no shelf; its places are fridge_1", 16),
+    ("pick up the sofa", "'the sofa' (sofa_1) is fixed in the map", 9),
+    ("clean the bathroom", "the apartment has no bathroom", 7),
+])
+def test_what_the_map_lacks_is_refused_where_it_is_said(library: Library, text: str, message: str,
+                                                         column: int) -> None:
+    with pytest.raises(SealError, match=message.replace("(", r"\(").replace(")", r"\)")) as caught:
+        steps(text, library)
+    assert caught.value.column == column
+
+
+def test_what_the_map_knows_nothing_of_is_a_warning(library: Library) -> None:
+    plan = plan_text("put the apple in the bowl", library, map=load_map(APARTMENT))
+    assert plan.warnings == ("the map apartment knows nothing of bowl (no prior, object or place names it): "
+                             "seal run will search the whole house for it",)
+    assert plan.to_json()["warnings"] == list(plan.warnings)
+    roger = plan_text("give the cup to Roger", library, map=load_map(APARTMENT))
+    assert roger.warnings and "nobody on the map apartment is called roger" in roger.warnings[0]
+    assert not plan_text("bring me the cup", library, map=load_map(APARTMENT)).warnings
+
+
+def test_names_and_spellings(library: Library) -> None:
+    names = MapNames(load_map(APARTMENT), library.taxonomy)
+    assert spoken("go to the family_room") == "go to the family room"
+    assert names.ground("the settee in the living room", "location").id == "sofa_2"   # type: ignore[union-attr]
+    assert names.ground("the fridge", "openable").id == "fridge_1"                   # type: ignore[union-attr]
+    assert names.ground("Anna", "thing").kind == "person"                             # type: ignore[union-attr]
+    assert names.ground("the bowl", "location") is None                  # an object to find, not a place
+    assert names.where_said("the cups in the family room") == "family_room"
