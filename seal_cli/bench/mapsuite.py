@@ -25,6 +25,7 @@ from typing import Any
 import numpy as np
 
 from seal_cli.bench.tasks import Outcome, in_order
+from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
 from seal_cli.frames.reading import load_library
 from seal_cli.maps.formats.map_server import load_map
@@ -109,7 +110,12 @@ def run_map_suite(map_path: str, commands: Sequence[str], policies: Sequence[str
     so a bad one is an error before any run."""
     from seal_cli.language.grounding import vocabulary_of_map
     from seal_cli.pipeline import plan as plan_text
+    from seal_cli.sim.policies import make_policy
 
+    for name in policies:  # the map suite's success is "every frame executed": no judge for a frame-less run
+        if getattr(make_policy(name, 1), "drives_itself", False):
+            raise SealError(f"policy {name!r} runs from the text alone, and the map suite judges success by seal's "
+                            "frames; run it on --suite alfred2d, whose judge reads the world")
     m = load_map(map_path)
     library = load_library(framelib)
     vocabulary = vocabulary_of_map(m)

@@ -43,6 +43,8 @@ from seal_cli.frames.reading import load_library
 __all__ = ["GOALS", "Outcome", "commands_for", "in_order", "run_episode", "run_suite", "summarise"]
 
 GOALS = ("gold", "human")
+BACKENDS = ("process", "ray")
+"""Where episodes run: this machine's process pool, or Ray's drop-in pool (the ``ray`` extra)."""
 
 
 @dataclass(frozen=True)
@@ -102,6 +104,11 @@ def run_episode(episode: Episode, suite: Suite, library: Library, policies: Sequ
     for name in policies:
         start = time.perf_counter()
         scene = build_scene(episode, plan, library, suite.priors)
+        policy = make_policy(name, particles)
+        if getattr(policy, "drives_itself", False):  # saycan: from the instruction text, not seal's frames
+            rng = np.random.default_rng(episode_seed(seed, episode))
+            outcomes.append(_run_skills(policy, episode, scene, library, goal, rng, start))
+            continue
         try:
             commanded, classes = commands_for(episode, library, scene.vocabulary, goal)
         except SealError as error:
@@ -110,7 +117,7 @@ def run_episode(episode: Episode, suite: Suite, library: Library, policies: Sequ
                                     time.perf_counter() - start))
             continue
         rng = np.random.default_rng(episode_seed(seed, episode))
-        agent = Agent(scene, library, make_policy(name, particles), rng=rng, budget=Budget(), classes=classes)
+        agent = Agent(scene, library, policy, rng=rng, budget=Budget(), classes=classes)
         result = agent.run(commanded)
         verdict = judge(episode.task, scene.world)
         reason = "success" if verdict.success else (result.reason if not result.completed else verdict.reason)
@@ -118,6 +125,25 @@ def run_episode(episode: Episode, suite: Suite, library: Library, policies: Sequ
                                 result.steps, reason, episode.expert_path_m, round(time.perf_counter() - start, 3),
                                 tuple(str(b) for b in commanded)))
     return outcomes
+
+
+def _run_skills(policy: Any, episode: Episode, scene: Any, library: Library, goal: str,
+                rng: np.random.Generator, start: float) -> Outcome:
+    """A policy that drives itself from the instruction text (``saycan``), judged the same way; its
+    failure kinds (:func:`seal_cli.sim.skills.failure_kinds`) lead the reason."""
+    from seal_cli.sim.agent import Budget
+    from seal_cli.sim.skills import failure_kinds, gold_instruction
+
+    t = episode.task
+    instruction = (gold_instruction(t.type, t.object, t.receptacle, t.mrecep, t.toggle, t.sliced)
+                   if goal == "gold" else (episode.goals[0] if episode.goals else ""))
+    result = policy.run(scene, library, instruction, rng=rng, budget=Budget())
+    verdict = judge(episode.task, scene.world)
+    kinds = failure_kinds(result, verdict.success)
+    reason = "success" if verdict.success else f"{'; '.join(kinds)}: {verdict.reason}"
+    return Outcome(episode.task_id, episode.group, policy.name, verdict.success, round(result.path_m, 3),
+                   result.steps, reason, episode.expert_path_m, round(time.perf_counter() - start, 3),
+                   (instruction,))
 
 
 # -- running many episodes ---------------------------------------------------------------------
@@ -141,16 +167,36 @@ def _work(args: tuple[int, Sequence[str], str, int, int]) -> tuple[int, list[Out
 def run_suite(data_dir: str | Path, split: str, policies: Sequence[str], *, goal: str = "gold",
               limit: int | None = None, types: Sequence[str] | None = None, seed: int = 0, jobs: int | None = None,
               particles: int = 200, framelib: Sequence[str] | None = None,
-              progress: Callable[[int, int], None] | None = None) -> Iterator[Outcome]:
+              progress: Callable[[int, int], None] | None = None, backend: str = "process") -> Iterator[Outcome]:
     """Run the policies on the split's episodes (``limit`` per task type), in ``jobs`` processes;
-    yields the outcomes in episode order, calling ``progress(done, total)`` as episodes finish."""
+    yields the outcomes in episode order, calling ``progress(done, total)`` as episodes finish.
+
+    ``backend``: ``process`` (this machine's process pool) or ``ray`` (``ray.util.multiprocessing.Pool``,
+    the ``ray`` extra: a local Ray, or the cluster ``RAY_ADDRESS`` names). Each episode's generator is
+    seeded from its id, so both give the same outcomes."""
+    if backend not in BACKENDS:
+        raise SealError(f"unknown backend {backend!r}; use one of {', '.join(BACKENDS)}")
     if goal not in GOALS:
         raise SealError(f"unknown goal source {goal!r}; use one of {', '.join(GOALS)}")
+    from seal_cli.sim.policies import make_policy
+
+    for name in policies:  # a missing extra (saycan's language model) fails here, before any worker starts
+        policy = make_policy(name, 1)
+        if getattr(policy, "drives_itself", False):
+            getattr(policy, "scorer", None)
     suite = load_suite(data_dir, split, limit=limit, types=types, with_priors=False)
     total = len(suite.episodes)
     jobs = max(1, min(jobs or os.cpu_count() or 1, total or 1))
     work = [(i, tuple(policies), goal, seed, particles) for i in range(total)]
     init = (str(data_dir), split, limit, tuple(types) if types else None, tuple(framelib) if framelib else None)
+    if backend == "ray":
+        try:
+            from ray.util.multiprocessing import Pool as RayPool
+        except ImportError as error:
+            raise SealError("--backend ray needs the ray extra: pip install 'seal[ray]'") from error
+        with RayPool(jobs, initializer=_init_worker, initargs=init) as ray_pool:
+            yield from in_order(ray_pool.imap_unordered(_work, work), total, progress)
+        return
     if jobs == 1:
         _init_worker(*init)
         results: Iterable[tuple[int, list[Outcome]]] = map(_work, work)

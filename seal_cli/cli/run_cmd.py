@@ -70,6 +70,26 @@ def run(
     from seal_cli.fileio import Outputs
 
     searcher = make_policy(policy, particles)
+    if getattr(searcher, "drives_itself", False):  # saycan: from the text alone, no frames to draw or record
+        from seal_cli.errors import SealError
+        from seal_cli.sim.skills import run_text_on_map
+
+        if rrd is not None or png is not None or done:
+            raise SealError(f"--policy {policy}: --rrd, --png and --done need seal's frames; this policy has none")
+        skills = run_text_on_map(the_map, text, library, searcher, rng=np.random.default_rng(seed), holding=holding,
+                                 budget=Budget(steps=max_steps, metres=max_metres),
+                                 observers=[] if as_json else [_narrate])
+        if as_json:
+            emit_json({"map": the_map.name, "text": text, "policy": policy, "seed": seed,
+                       "completed": skills.completed, "reason": skills.reason, "path_m": round(skills.path_m, 3),
+                       "steps": skills.steps, "skills": skills.history,
+                       "proposed_unafforded": skills.proposed_unafforded, "never_seen": skills.never_seen})
+        else:
+            out.print(f"{'said done' if skills.completed else skills.reason} — {skills.path_m:.2f} m driven, "
+                      f"{skills.steps} steps")
+        if not skills.completed:
+            raise typer.Exit(1)
+        return
     searcher.keep_clouds = rrd is not None or png is not None
     with Outputs({"--rrd": rrd, "--png": png}, [map_name, vocabulary_file, *(framelib or [])],
                  suffixes=OUTPUT_SUFFIXES) as outputs:
@@ -129,6 +149,8 @@ def tasks(
     policies: str = typer.Option(",".join(DEFAULT_POLICIES), "--policies",
                                  help="Comma-separated policies, of: " + ", ".join(POLICIES) + "."),
     jobs: int = typer.Option(0, "--jobs", min=0, help="Worker processes (0: one per core)."),
+    backend: str = typer.Option("process", "--backend", help="With --suite alfred2d: process (this machine's "
+                                "pool) or ray (Ray's pool, the ray extra; a cluster via RAY_ADDRESS)."),
     seed: int = typer.Option(0, "--seed", min=0, help="Seed; each episode's generator is derived from it."),
     particles: int = typer.Option(200, "--particles", min=1, help="Particles per object and per frame."),
     episodes: Path | None = typer.Option(None, "--episodes", help="Also write every outcome here as JSON Lines.",
@@ -156,6 +178,8 @@ def tasks(
     names = [p.strip() for p in policies.split(",") if p.strip()]
     if not names:
         raise SealError("--policies names no policy")
+    if backend not in ("process", "ray") or (backend == "ray" and suite != "alfred2d"):
+        raise SealError(f"--backend {backend!r}: process, or ray with --suite alfred2d")
     unknown = [name for name in names if name not in POLICIES]
     if unknown:
         raise SealError(f"--policies: unknown policy {unknown[0]!r}; known: {', '.join(POLICIES)}")
@@ -190,7 +214,7 @@ def tasks(
         else:
             runs = run_suite(data, split, names, goal=goal, limit=limit, types=types, seed=seed,
                              jobs=jobs or os.cpu_count() or 1, particles=particles, framelib=libs,
-                             progress=advance)
+                             progress=advance, backend=backend)
         outcomes.extend(runs)
     with outputs:  # a failure above leaves no temporary: they are removed at exit
         if episodes is not None:

@@ -45,6 +45,8 @@ POLICIES: dict[str, Registered] = {
     "prior_optimal": Registered("seal_cli.sim.policies.prior_optimal", "PriorOptimalPolicy",
                                 "the exact expected-path search for the whole plan under the priors"),
     "uniform": Registered("seal_cli.sim.policies.uniform", "UniformPolicy", "SeFM without priors", default=False),
+    "saycan": Registered("seal_cli.sim.policies.saycan", "SayCanPolicy",
+                         "SayCan: language score x affordance over skills (the llm extra)", default=False),
 }
 """Every policy by name."""
 

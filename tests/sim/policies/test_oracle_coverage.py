@@ -27,7 +27,7 @@ def solve(library: Library, policy: str, apple_in: str = "fridge_1"):  # type: i
     return s, agent, result
 
 
-@pytest.mark.parametrize("policy", list(POLICIES))
+@pytest.mark.parametrize("policy", [p for p in POLICIES if p != "saycan"])  # saycan: no frames (test_saycan)
 def test_every_policy_solves_the_heat_task(library: Library, policy: str) -> None:
     s, _, result = solve(library, policy)
     assert result.completed, result.reason

@@ -1,0 +1,133 @@
+"""The SayCan baseline: scorers, affordances, failure kinds, and its place in the task suite."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from seal_cli.errors import SealError
+from seal_cli.frames.library import Library
+from seal_cli.frames.reading import load_library
+from seal_cli.sim.agent import Budget
+from seal_cli.sim.policies import DEFAULT_POLICIES, make_policy
+from seal_cli.sim.policies.saycan import SayCanPolicy
+from seal_cli.sim.scorers import DONE, BagOfWordsScorer, prompt_for, read_prompt
+from seal_cli.sim.skills import SkillResult, SkillRunner, failure_kinds, gold_instruction
+
+DATA = Path(__file__).resolve().parents[3] / ".." / "shared" / "data" / "alfred2d"
+
+
+@pytest.fixture(scope="module")
+def library() -> Library:
+    return load_library(None)
+
+
+class Scripted:
+    """A fake language model: the next step of a script when it is an option, else "explore"
+    (or, with ``explore=False``, the script's step whether or not it is an option)."""
+
+    def __init__(self, script: list[str], explore: bool = True) -> None:
+        self.script = script
+        self.explore = explore
+
+    def score(self, prompt: str, options: list[str]) -> np.ndarray:
+        _, history = read_prompt(prompt)
+        done = [h for h in history if h in self.script]
+        want = self.script[len(done)] if len(done) < len(self.script) else DONE
+        if want not in options and self.explore:
+            want = "explore"
+        s = np.array([5.0 if o == want else 0.0 for o in options])
+        return s - np.log(np.exp(s).sum())
+
+
+def kitchen(library: Library):
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.sim.agent import scene_from_map
+
+    return scene_from_map(load_map("apartment"), library)
+
+
+def test_prompt_round_trips_and_the_scorer_returns_log_probabilities() -> None:
+    prompt = prompt_for("heat the apple", ["go to the fridge", "pick up the apple"])
+    assert read_prompt(prompt) == ("heat the apple", ["go to the fridge", "pick up the apple"])
+    logp = BagOfWordsScorer().score(prompt, ["heat the apple with the microwave", "pick up the sofa", DONE])
+    assert logp.shape == (3,) and np.isclose(np.exp(logp).sum(), 1.0)
+    assert int(np.argmax(logp)) == 0   # the step that brings the history closer to the instruction
+    again = BagOfWordsScorer().score(prompt, ["pick up the apple", "heat the apple with the microwave"])
+    assert again[1] > again[0]         # what is done already is not asked for again
+    with pytest.raises(SealError, match="no options"):
+        BagOfWordsScorer().score(prompt, [])
+
+
+def test_gold_instruction_reads_like_alfreds_templates() -> None:
+    assert gold_instruction("pick_heat_then_place_in_recep", "Apple", "DiningTable") == \
+        "heat the apple, then put it in the dining table"
+    assert gold_instruction("pick_two_obj_and_place", "Book", "Desk", sliced=True).startswith("slice the book")
+
+
+def test_runner_executes_the_language_models_choice_times_affordance(library: Library) -> None:
+    scene = kitchen(library)
+    cup = next(i for i in scene.world.items.values() if i.key == "cup")
+    script = ["go to the cup", "pick up the cup"]
+    result = SkillRunner(scene, library, Scripted(script), rng=np.random.default_rng(0),
+                         budget=Budget()).run("pick up the cup")
+    assert result.completed and [h for h in result.history if not h.startswith("explored")] == script
+    assert scene.world.robot.holding == cup.id
+    assert result.never_seen == [] and failure_kinds(result, True) == []
+
+
+def test_an_unafforded_first_choice_is_counted_and_not_executed(library: Library) -> None:
+    scene = kitchen(library)
+    runner = SkillRunner(scene, library, Scripted(["pick up the cup"], explore=False), rng=np.random.default_rng(0),
+                         budget=Budget(steps=20))
+    result = runner.run("pick up the cup")   # wanted before the cup is in view or in reach
+    assert result.proposed_unafforded > 0    # counted ...
+    assert result.failed_skills == 0         # ... but the affordance made it explore instead
+    assert result.history[0] == "explored area 1"
+    assert "unafforded action proposed" in failure_kinds(result, False)
+
+
+def test_failure_kinds_name_what_went_wrong() -> None:
+    early = SkillResult(True, "said done", 1.0, 3, ["go to the fridge"], proposed_unafforded=0,
+                        never_seen=["apple"])
+    assert failure_kinds(early, False) == ["done too early", "object never found"]
+    spent = SkillResult(False, "out of steps", 1.0, 3, [], proposed_unafforded=2)
+    assert failure_kinds(spent, False) == ["unafforded action proposed", "out of budget"]
+
+
+def test_saycan_is_registered_but_not_run_by_default_and_refuses_the_agents_questions() -> None:
+    assert "saycan" not in DEFAULT_POLICIES
+    policy = SayCanPolicy(BagOfWordsScorer())
+    assert policy.drives_itself
+    with pytest.raises(SealError, match="instruction text"):
+        policy.next_view(None, None, "cup")  # type: ignore[arg-type]
+
+
+@pytest.mark.skipif(not DATA.is_dir(), reason="needs ../shared/data/alfred2d")
+def test_the_task_suite_runs_saycan_on_the_same_episodes(library: Library, monkeypatch: pytest.MonkeyPatch) -> None:
+    from seal_cli.bench import tasks
+    from seal_cli.bench.alfred2d import load_suite
+
+    suite = load_suite(DATA, "valid_seen", limit=1, types=["pick_and_place_simple"])
+    monkeypatch.setattr("seal_cli.sim.policies.make_policy",
+                        lambda name, particles=200: SayCanPolicy(BagOfWordsScorer()) if name == "saycan"
+                        else make_policy(name, particles))
+    first = tasks.run_episode(suite.episodes[0], suite, library, ["saycan", "oracle"], seed=3)
+    again = tasks.run_episode(suite.episodes[0], suite, library, ["saycan"], seed=3)
+    saycan = first[0]
+    assert saycan.policy == "saycan" and saycan.commanded == ("put the book in the side table",)
+    assert saycan.success or any(k in saycan.reason for k in ("done too early", "out of budget"))
+    assert (saycan.success, saycan.steps, saycan.path_m) == (again[0].success, again[0].steps, again[0].path_m)
+    assert first[1].policy == "oracle"
+
+
+def test_wordllama_scores_offline() -> None:
+    pytest.importorskip("wordllama")
+    from seal_cli.sim.scorers import WordLlamaScorer
+
+    logp = WordLlamaScorer.shared().score("put the apple in the fridge",
+                                          ["put the apple in the fridge", "turn on the television", DONE])
+    assert int(np.argmax(logp)) == 0 and np.isclose(np.exp(logp).sum(), 1.0)
+
