@@ -26,6 +26,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -102,14 +103,41 @@ class Prior:
 
     def room_masses(self) -> dict[str, float]:
         """The prior's mass per room name (and ``"_outside"``), exactly."""
+        sums = self._room_sums
+        masses = {name: float(sums[i + 1]) for i, name in enumerate(self.map.room_names)}
+        masses[OUTSIDE] = float(sums[0])
+        return masses
+
+    @cached_property
+    def _room_sums(self) -> NDArray[np.float64]:
+        """Mass per room index + 1 (0: outside every room)."""
         rooms = self.map.free_cell_room + 1
         size = len(self.map.rooms) + 1
         sums = np.bincount(rooms, minlength=size) * (self.uniform / max(self.free_cells, 1))
         for members, mass in self.components:
             sums = sums + np.bincount(rooms[members], minlength=size) * (mass / len(members))
-        masses = {name: float(sums[i + 1]) for i, name in enumerate(self.map.room_names)}
-        masses[OUTSIDE] = float(sums[0])
-        return masses
+        return np.asarray(sums, dtype=np.float64)
+
+    @cached_property
+    def rooms_touched(self) -> frozenset[int]:
+        """The room indices (-1: outside every room) holding cells of some target: elsewhere the prior is
+        uniform over the cells."""
+        rooms = self.map.free_cell_room
+        return frozenset(int(r) for members, _ in self.components for r in np.unique(rooms[members]))
+
+    def room_cdf(self, room: int, cells: NDArray[np.intp]) -> NDArray[np.float64]:
+        """The cumulative weights over ``cells`` — room ``room``'s free cells, in the caller's order —,
+        cached per room (the map does not change): what draws stratified within a room read."""
+        cache = self._room_cdfs
+        if room not in cache:
+            cdf = np.cumsum(self.cell_weights(cells))
+            cdf.setflags(write=False)
+            cache[room] = cdf
+        return cache[room]
+
+    @cached_property
+    def _room_cdfs(self) -> dict[int, NDArray[np.float64]]:
+        return {}
 
 
 def target_cells(m: Map, target: str) -> NDArray[np.intp]:

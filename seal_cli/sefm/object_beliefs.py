@@ -323,22 +323,27 @@ def _by_room(m: Map, cls: str, n: int, rng: np.random.Generator) -> NDArray[np.i
     """``n`` free cells drawn by the prior of ``cls``: each room gets its share of the draws to within
     one (systematic over rooms), and within a room the draws are stratified along the cells' order
     (:mod:`seal_cli.sefm.cell_order`): one independent draw in each of ``count`` runs of equal weight, so
-    each patch of the room gets its share without the particles falling on a lattice. The prior's
-    weights are evaluated only on the cells of the rooms that get draws, and not kept."""
+    each patch of the room gets its share without the particles falling on a lattice. In a room that no
+    target of the prior touches the weights are equal, and a draw is a position along the room's run; in
+    the others the prior's cumulative weight over the run is read (the prior keeps it per room)."""
     cells, starts = cell_order.by_room(m)
     prior = m.prior(cls)
     by_name = prior.room_masses()
     masses = np.array([by_name[OUTSIDE]] + [by_name[name] for name in m.room_names])  # runs: no room first
     counts = np.bincount(stratified(masses, n, rng), minlength=len(masses))
+    rank = np.arange(n) - np.repeat(np.cumsum(counts) - counts, counts)
+    u = (rank + rng.random(n)) / np.maximum(np.repeat(counts, counts), 1)
     out = np.empty(n, dtype=np.intp)
     done = 0
     for run in np.flatnonzero(counts):
         members = cells[starts[run]:starts[run + 1]]
-        cdf = np.cumsum(prior.cell_weights(members))
         k = int(counts[run])
-        u = (np.arange(k) + rng.random(k)) / k
-        index = np.searchsorted(cdf, u * cdf[-1], side="right")
+        share = u[done:done + k]
+        if run - 1 in prior.rooms_touched:
+            cdf = prior.room_cdf(int(run) - 1, members)
+            index = np.searchsorted(cdf, share * cdf[-1], side="right")
+        else:
+            index = (share * len(members)).astype(np.intp)
         out[done:done + k] = members[np.minimum(index, len(members) - 1)]
         done += k
     return out
-

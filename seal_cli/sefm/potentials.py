@@ -123,6 +123,10 @@ class ExactKernelSums(KernelSums):
         return out
 
 
+SET_CHUNK = 16
+"""Rows binned and smoothed together when a grid engine's rows are set."""
+
+
 class GridKernelSums(KernelSums):
     """Binned Gaussian smoothing on a grid over ``bounds`` (see the module docstring).
 
@@ -195,11 +199,15 @@ class GridKernelSums(KernelSums):
         return np.asarray(smooth)
 
     def set(self, rows: Sequence[int], positions: Array, weights: Array) -> None:
-        if len(rows) == 0:
-            return
-        i, j, fu, fv = self._cells(positions)
-        self.grids[list(rows)] = self._smooth(self._bin((len(rows), *self.shape), i, j, fu, fv, weights))
-        self.factor[list(rows)] = 1.0
+        """Bin and smooth the rows' particles, ``SET_CHUNK`` rows at a time (the binned masses and the
+        smoothing's intermediates are several times a grid: in chunks they stay small whatever the count)."""
+        rows = list(rows)
+        for start in range(0, len(rows), SET_CHUNK):
+            part = slice(start, start + SET_CHUNK)
+            i, j, fu, fv = self._cells(positions[part])
+            chunk = rows[part]
+            self.grids[chunk] = self._smooth(self._bin((len(chunk), *self.shape), i, j, fu, fv, weights[part]))
+            self.factor[chunk] = 1.0
 
     def reweight(self, changes: Sequence[Change]) -> None:
         """All the changes' particles are binned into windows of one size around them (one filter for all);
