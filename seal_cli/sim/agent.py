@@ -207,7 +207,7 @@ class Agent:
         robot = self.world.robot
         if self.world.step >= self.budget.steps:
             return f"out of steps ({self.budget.steps})"
-        if robot.path_m >= self.budget.metres:
+        if robot.path_m >= self.budget.metres - 1e-6:  # a leg cut at the budget ends on it, to rounding
             return f"out of path budget ({self.budget.metres:g} m)"
         return None
 
@@ -577,11 +577,31 @@ class Agent:
             prev = p
             since_look += step
             if since_look >= self.look_every and p != points[-1]:
-                metres += self.world.drive(chunk)
+                metres += self.world.drive(self._affordable(chunk))
                 chunk, since_look = [], 0.0
+                if self.exhausted():  # the budget is checked inside a leg, not only between legs
+                    break
                 self.look(quiet=True)
-        metres += self.world.drive(chunk)
-        self.say("go", f"{why} ({metres:.2f} m)", to=self.grid.point(cell), metres=metres)
+        else:
+            metres += self.world.drive(self._affordable(chunk))
+        self.say("go", f"{why} ({metres:.2f} m)", to=self.world.robot.pose[:2], metres=metres)
+
+    def _affordable(self, waypoints: list[tuple[float, float]]) -> list[tuple[float, float]]:
+        """The waypoints cut where the path budget runs out (the last one moved back along its segment)."""
+        left = self.budget.metres - self.world.robot.path_m
+        out: list[tuple[float, float]] = []
+        prev = self.world.robot.pose[:2]
+        for wp in waypoints:
+            step = math.dist(prev, wp)
+            if step >= left:
+                if left > 1e-9:
+                    f = left / step
+                    out.append((prev[0] + f * (wp[0] - prev[0]), prev[1] + f * (wp[1] - prev[1])))
+                return out
+            left -= step
+            out.append(wp)
+            prev = wp
+        return out
 
     def look(self, quiet: bool = False) -> list[Detection]:
         """Sense from where the robot is; remember what it sees; update the beliefs."""

@@ -81,3 +81,16 @@ def test_run_grounds_words_in_the_map_and_a_vocabulary_file(tmp_path: Path) -> N
     assert named["plan"] == ["Pick(theme=spoon)", "Stir(theme=cup, instrument=spoon)"]
     missing = runner.invoke(app, [*args, "--vocabulary", str(tmp_path / "none.yaml")])
     assert missing.exit_code == 1 and "Traceback" not in missing.output
+
+
+def test_the_budgets_are_kept_inside_a_leg() -> None:
+    """--max-metres 0.1 once drove 6.17 m and --max-steps 1 took 7: a leg is cut where the budget ends."""
+    runner = CliRunner()
+    for metres in ("0.1", "5"):
+        result = runner.invoke(app, ["run", "--map", "apartment", "stir the cup", "--max-metres", metres, "--json"])
+        data = json.loads(result.stdout)
+        assert result.exit_code == 1 and not data["completed"]
+        assert data["path_m"] <= float(metres) + 1e-6 and data["reason"] == f"out of path budget ({metres} m)"
+    result = runner.invoke(app, ["run", "--map", "apartment", "stir the cup", "--max-steps", "1", "--json"])
+    data = json.loads(result.stdout)
+    assert data["steps"] == 1 and data["reason"] == "out of steps (1)"
