@@ -13,6 +13,7 @@ from __future__ import annotations
 import contextlib
 import functools
 import json
+import os
 import sys
 from collections.abc import Callable, Iterator
 from pathlib import Path
@@ -44,6 +45,10 @@ app.add_typer(bench_app, name="bench")
 
 
 
+PIPE_WIDTH = 200
+"""Columns of the output when it is not a terminal (a file, a pipe) and ``COLUMNS`` is not set."""
+
+
 class LazyConsole:
     """A rich ``Console``, made when first used: importing rich costs more than ``seal --version`` and
     ``seal parse --json`` do in all, and they never print through it."""
@@ -58,7 +63,10 @@ class LazyConsole:
         if self._console is None:
             from rich.console import Console
 
-            self._console = Console(**self._options)
+            console = Console(**self._options)
+            if not console.is_terminal and "COLUMNS" not in os.environ:
+                console.width = PIPE_WIDTH  # rich's 80 columns would cut the tables of a redirected run
+            self._console = console
         return self._console
 
     def __getattr__(self, name: str) -> Any:

@@ -83,3 +83,16 @@ def test_the_console_script_runs_without_a_traceback(tmp_path: Path) -> None:
     assert run.returncode == 1
     assert f"{missing}: no such file or folder" in run.stdout
     assert "Traceback" not in run.stderr
+
+
+def test_tables_are_not_cut_when_the_output_is_not_a_terminal() -> None:
+    """A redirected table once truncated at rich's 80 columns ('holding(instru|ment)', 'particl…')."""
+    import os
+    import subprocess
+    import sys
+
+    env = {k: v for k, v in os.environ.items() if k != "COLUMNS"}
+    result = subprocess.run([sys.executable, "-m", "seal_cli", "frames"], capture_output=True, text=True, env=env,
+                            timeout=120, check=False)
+    assert result.returncode == 0, result.stderr
+    assert "holding(instrument)" in result.stdout and "…" not in result.stdout
