@@ -8,7 +8,17 @@ from typing import Any
 
 import typer
 
-from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
+from seal_cli.cli import (
+    MAX_PARTICLES,
+    FramelibOption,
+    JsonOption,
+    bench_app,
+    command,
+    emit_json,
+    err,
+    framelib_paths,
+    out,
+)
 from seal_cli.sim.policies import DEFAULT_POLICIES, POLICIES
 
 SUITES = ("alfred2d", "map", "context")
@@ -37,7 +47,8 @@ def run(
     policy: str = typer.Option("sefm", "--policy", help="Who searches: " + "; ".join(
         f"{name} ({entry.summary})" for name, entry in POLICIES.items()) + "."),
     seed: int = typer.Option(0, "--seed", min=0, help="Seed of the one random generator."),
-    particles: int = typer.Option(200, "--particles", min=1, help="Particles per object and per frame."),
+    particles: int = typer.Option(200, "--particles", min=1, max=MAX_PARTICLES,
+                                   help="Particles per object and per frame."),
     max_steps: int = typer.Option(400, "--max-steps", min=1, help="Give up after this many steps."),
     max_metres: float = typer.Option(300.0, "--max-metres", min=0.1, help="Give up after driving this far."),
     rrd: Path | None = typer.Option(None, "--rrd", help="Write a Rerun recording of the run here.",
@@ -152,7 +163,8 @@ def tasks(
     backend: str = typer.Option("process", "--backend", help="With --suite alfred2d: process (this machine's "
                                 "pool) or ray (Ray's pool, the ray extra; a cluster via RAY_ADDRESS)."),
     seed: int = typer.Option(0, "--seed", min=0, help="Seed; each episode's generator is derived from it."),
-    particles: int = typer.Option(200, "--particles", min=1, help="Particles per object and per frame."),
+    particles: int = typer.Option(200, "--particles", min=1, max=MAX_PARTICLES,
+                                   help="Particles per object and per frame."),
     episodes: Path | None = typer.Option(None, "--episodes", help="Also write every outcome here as JSON Lines.",
                                          show_default=False),
     framelib: list[Path] | None = FramelibOption,

@@ -94,3 +94,10 @@ def test_the_budgets_are_kept_inside_a_leg() -> None:
     result = runner.invoke(app, ["run", "--map", "apartment", "stir the cup", "--max-steps", "1", "--json"])
     data = json.loads(result.stdout)
     assert data["steps"] == 1 and data["reason"] == "out of steps (1)"
+
+
+def test_particles_are_bounded_like_localize() -> None:
+    runner = CliRunner()
+    for args in (["run", "--map", "apartment", "stir the cup"], ["bench", "tasks"]):
+        result = runner.invoke(app, [*args, "--particles", "1000000000"])
+        assert result.exit_code == 2 and "1<=x<=100000" in result.output
