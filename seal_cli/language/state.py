@@ -77,10 +77,15 @@ for _table in (PREPOSITIONS, POLITE, POLITE_FORMULAE, SEPARATOR_WORDS, NUMBERS, 
             _PHRASES.setdefault(_parts[0], ())
             _PHRASES[_parts[0]] = (*_PHRASES[_parts[0]], _phrase)
 
-SUB_FIRST = frozenset(p.split()[0] for p in SUBORDINATORS)
-FORMULA_FIRST = frozenset(p.split()[0] for p in POLITE_FORMULAE)
-TIME_FIRST = frozenset(p.split()[0] for p in TIME_WORDS)
-SEP_FIRST = frozenset(p.split()[0] for p in SEPARATOR_WORDS)
+def first_words(phrases: Iterable[str]) -> frozenset[str]:
+    """The words the phrases start with: where a rule reading them can start (its gate)."""
+    return frozenset(p.split()[0] for p in phrases)
+
+
+SUB_FIRST = first_words(SUBORDINATORS)
+FORMULA_FIRST = first_words(POLITE_FORMULAE)
+TIME_FIRST = first_words(TIME_WORDS)
+SEP_FIRST = first_words(SEPARATOR_WORDS)
 LEAD_FIRST = SUB_FIRST | SEP_FIRST | {",", ";", ":", "start", "begin", "finish", "end", "continue", "take", "have",
                                      "be"}
 """Words that may begin what a lead-in rule tags before a verb (besides adverbs and polite frames)."""

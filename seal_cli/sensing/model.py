@@ -31,7 +31,7 @@ from numpy.typing import ArrayLike, NDArray
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.geometry import as_points
 from seal_cli.maps.model import Map, ObjectTruth, Sensor
-from seal_cli.sensing.sensor import Detection, VisibleRegion, as_pose, in_view, visible_region
+from seal_cli.sensing.sensor import Detection, VisibleRegion, as_pose, fan_angles, in_view, visible_region
 
 __all__ = ["SENSORS", "RangeSensor", "SensorModel", "closed_places", "sensor_for", "simulate_detections",
            "visible_objects"]
@@ -122,12 +122,7 @@ class RangeSensor:
 
 def _open_region(spec: Sensor, pose: tuple[float, float, float], rays: int | None) -> VisibleRegion:
     """The fan of a sensor that nothing occludes: every ray reaches its full range."""
-    span = np.radians(min(spec.fov_deg, 360.0))
-    n = max(8, rays or 64)
-    if spec.fov_deg >= 360:
-        angles = np.asarray(-np.pi + np.arange(n) * (2 * np.pi / n), dtype=np.float64)
-    else:
-        angles = np.asarray(np.linspace(-span / 2, span / 2, max(n, 2)), dtype=np.float64)
+    angles = fan_angles(spec.fov_deg, max(8, rays or 64))
     return VisibleRegion(pose, spec.range, spec.fov_deg, angles, np.full(len(angles), spec.range))
 
 

@@ -32,7 +32,8 @@ from numpy.typing import ArrayLike, NDArray
 from seal_cli.maps.geometry import as_points, cast_rays
 from seal_cli.maps.model import Map, Sensor
 
-__all__ = ["Detection", "VisibleRegion", "as_pose", "in_view", "visible", "visible_mask", "visible_region"]
+__all__ = ["Detection", "VisibleRegion", "as_pose", "fan_angles", "in_view", "visible", "visible_mask",
+           "visible_region"]
 
 Pose = tuple[float, float, float]
 
@@ -125,6 +126,15 @@ class VisibleRegion:
         return float(0.5 * np.sum(self.reach ** 2 * weights))
 
 
+def fan_angles(fov_deg: float, rays: int) -> NDArray[np.float64]:
+    """The directions of a sensor's ``rays`` relative to its heading: evenly round a full circle, or
+    spanning the field of view edge to edge (at least two)."""
+    if fov_deg >= 360:
+        return np.asarray(-np.pi + np.arange(rays) * (2 * np.pi / rays), dtype=np.float64)
+    span = math.radians(fov_deg)
+    return np.asarray(np.linspace(-span / 2, span / 2, max(rays, 2)), dtype=np.float64)
+
+
 def visible_region(m: Map, pose: ArrayLike, sensor: Sensor | None = None, rays: int | None = None) -> VisibleRegion:
     """Cast the sensor's rays from ``pose`` through the map's grid once.
 
@@ -136,11 +146,7 @@ def visible_region(m: Map, pose: ArrayLike, sensor: Sensor | None = None, rays: 
     span = math.radians(s.fov_deg)
     if rays is None:
         rays = max(8, math.ceil(span * s.range / (m.grid.resolution / 2)))
-    angles: NDArray[np.float64]
-    if s.fov_deg >= 360:
-        angles = np.asarray(-np.pi + np.arange(rays) * (2 * np.pi / rays), dtype=np.float64)
-    else:
-        angles = np.asarray(np.linspace(-span / 2, span / 2, max(rays, 2)), dtype=np.float64)
+    angles = fan_angles(s.fov_deg, rays)
     reach = cast_rays(m.grid, (x, y), yaw + angles, s.range)
     return VisibleRegion((x, y, yaw), s.range, s.fov_deg, angles, reach)
 

@@ -21,12 +21,12 @@ from seal_cli.language.english import (
     WH_WORDS,
 )
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import TIME_FIRST, State, match_phrase
+from seal_cli.language.state import TIME_FIRST, State, first_words, match_phrase
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word
 
-_HERE_FIRST = frozenset(p.split()[0] for p in HERE_WORDS)
-_PREP_FIRST = frozenset(p.split()[0] for p in PREPOSITIONS)
+_HERE_FIRST = first_words(HERE_WORDS)
+_PREP_FIRST = first_words(PREPOSITIONS)
 
 
 def _time_word(s: State, i: int) -> Match | None:

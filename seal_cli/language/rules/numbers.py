@@ -5,11 +5,11 @@ from __future__ import annotations
 
 from seal_cli.language.english import DETERMINERS, NUMBERS, POSSESSIVES, PREPOSITIONS, QUANTIFIERS
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import State, match_phrase
+from seal_cli.language.state import State, first_words, match_phrase
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word
 
-_NUMBER_FIRST = frozenset(p.split()[0] for p in NUMBERS)
+_NUMBER_FIRST = first_words(NUMBERS)
 
 
 def _digits_or_number(low: str) -> bool:

@@ -25,12 +25,12 @@ from seal_cli.language.english import (
 )
 from seal_cli.language.morphology import verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import State, match_phrase
+from seal_cli.language.state import State, first_words, match_phrase
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 
-_WHERE_FIRST = frozenset(p.split()[0] for p in WHERE_QUESTIONS)
-_REQUEST_FIRST = frozenset(p.split()[0] for p in REQUESTS)
+_WHERE_FIRST = first_words(WHERE_QUESTIONS)
+_REQUEST_FIRST = first_words(REQUESTS)
 _SPEAKER = "me"
 
 
@@ -220,7 +220,7 @@ FRONTED_OF = Rule("of-phrase first", _fronted_of, (
 ), frozenset(["of"]), "'of' and a noun phrase before the clause ('Of the people in the hall, how many ...')")
 FRONTED_QUESTION = Rule("phrase said before a question", _fronted_question, (
     Example("On the table, which object is lightest?", "On the table , which object is lightest", Tag.SAID),
-), frozenset(p.split()[0] for p in PREPOSITIONS) | {"of"},
+), first_words(PREPOSITIONS) | {"of"},
     "a phrase and a comma before a question: all of it is what to tell")
 FRONTED_END = Rule("phrase said first", _fronted_end, (
     Example("From the cupboard, give me the bowl", ",", Tag.SEP),
