@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import atexit
 import contextlib
-import json
 import os
 import re
 import signal
@@ -168,6 +167,8 @@ def read_yaml(path: str | Path) -> Any:
 def read_json_lines(path: str | Path) -> list[Any]:
     """The JSON values of a JSON Lines file (blank lines skipped); a line that is not JSON is a
     SealError at its line and column."""
+    import json
+
     values = []
     for number, line in enumerate(split_lines(read_text(path)), 1):
         if not line.strip():

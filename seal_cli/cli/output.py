@@ -8,7 +8,6 @@ Imports no command-line framework (typer): ``seal parse TEXT`` prints through it
 from __future__ import annotations
 
 import contextlib
-import json
 import os
 import sys
 from collections.abc import Callable, Iterator
@@ -110,5 +109,7 @@ def progress_bar(what: str, total: int | None = None) -> Iterator[Callable[[int,
 
 def emit_json(data: Any) -> None:
     """One JSON document on stdout."""
+    import json
+
     sys.stdout.write(json.dumps(data, ensure_ascii=False) + "\n")
     sys.stdout.flush()
