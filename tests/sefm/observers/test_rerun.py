@@ -20,6 +20,7 @@ from seal_cli.resources import map_path
 from seal_cli.sefm.filter import SeFM, SeFMConfig
 from seal_cli.sefm.observers.metrics import Metrics, Trace
 from seal_cli.sefm.observers.rerun import RerunRecorder, radii
+from seal_cli.sefm.observers.rerun_scene import Classes
 
 rr = pytest.importorskip("rerun")
 
@@ -231,3 +232,13 @@ def test_the_recording_opens_with_the_default_layout(recorded: tuple[Path, SeFM,
              for entity, found in logged.items() for r in found if "ViewBlueprint:display_name" in r}
     assert views == {"map apartment": ("2D", "/"), "room mass per frame": ("TimeSeries", "/metrics/rooms"),
                      "effective sample size": ("TimeSeries", "/metrics/ess")}
+
+
+def test_the_modes_of_every_frame_in_one_entity(recorded: tuple[Path, SeFM, Any]) -> None:
+    path, sefm, _ = recorded
+    classes = Classes(sefm.object_classes, sefm.frame_ids)
+    last = rows(path)["/frames/modes"][-1]
+    modes = [(fid, mo) for i, fid in enumerate(sefm.frame_ids) for mo in sefm.frame_summary(i).modes]
+    assert modes and last["Points2D:class_ids"] == [classes.ids[fid] for fid, _ in modes]
+    assert last["Points2D:labels"] == [f"{mo.room} {mo.weight:.2f}" for _, mo in modes]
+    np.testing.assert_allclose(last["Points2D:positions"], [mo.mean for _, mo in modes], atol=1e-5)
