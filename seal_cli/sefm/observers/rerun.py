@@ -19,8 +19,9 @@ entity                                 what
 ``frames/particles``                   every frame's particles: its class id (one radius: they are
                                        resampled at every update, so all weigh 1/P)
 ``frames/<frame id>/density``          the frame's target density γ as an image in its colour
-``frames/modes``                       every frame's modes: its class id, sized by spread,
-                                       labelled room and weight
+``frames/modes``                       every frame's modes: outlined boxes of ±1 standard deviation
+                                       (at least 0.1 m) about each mean, its class id, labelled room
+                                       and weight (outlines, so the cloud beneath stays visible)
 ``observations``                       the detections of the step: class ids, labelled
 ``metrics/rooms``                      every frame's probability mass per room (Scalars, one
                                        series ``<frame id>: <room>`` each)
@@ -67,7 +68,7 @@ from seal_cli.sefm.observers.rerun_scene import (
 if TYPE_CHECKING:
     from seal_cli.sefm.filter import SeFM, Step
 
-__all__ = ["CHANGE", "RerunRecorder", "cell_masses", "radii", "total_variation"]
+__all__ = ["CHANGE", "RerunRecorder", "cell_masses", "radii", "spread", "total_variation"]
 
 ROBOT = (214, 39, 40)
 DETECTION = (255, 127, 14)
@@ -90,6 +91,12 @@ def radii(W: NDArray[np.float64], smallest: float = 0.03, largest: float = 0.12)
         return np.full(len(W), round((smallest + largest) / 2, 2), np.float32)
     share = np.sqrt(W / top)
     return np.asarray(np.round((smallest + (largest - smallest) * share) * 100) / 100, np.float32)
+
+
+def spread(cov: Sequence[Sequence[float]], smallest: float = 0.1) -> tuple[float, float]:
+    """A mode's half sizes along x and y: its standard deviations, at least ``smallest`` (m)."""
+    c = np.asarray(cov, float)
+    return float(max(np.sqrt(max(c[0, 0], 0.0)), smallest)), float(max(np.sqrt(max(c[1, 1], 0.0)), smallest))
 
 
 def cell_masses(X: NDArray[np.float64], W: NDArray[np.float64], bounds: Sequence[float]) -> dict[int, float]:
@@ -278,10 +285,11 @@ class RerunRecorder:
         clouds = [sefm.frames.X[i] for i in range(len(ids))]
         self._cloud("frames/particles", clouds, [radii(np.ones(1))], ids, DRAW["frames"])  # one radius for all
         modes = [(class_id, mo) for class_id, summary in zip(ids, summaries, strict=True) for mo in summary.modes]
-        self.stream.log("frames/modes", rr.Points2D(
-            np.array([mo.mean for _, mo in modes], float).reshape(-1, 2), class_ids=[c for c, _ in modes],
-            radii=[float(np.sqrt(max(np.trace(np.array(mo.cov)) / 2, 0.01))) for _, mo in modes],
-            labels=[f"{mo.room} {mo.weight:.2f}" for _, mo in modes], show_labels=True, draw_order=DRAW["modes"]))
+        self.stream.log("frames/modes", rr.Boxes2D(
+            centers=np.array([mo.mean for _, mo in modes], float).reshape(-1, 2), class_ids=[c for c, _ in modes],
+            half_sizes=np.array([spread(mo.cov) for _, mo in modes], float).reshape(-1, 2),
+            labels=[f"{mo.room} {mo.weight:.2f}" for _, mo in modes], show_labels=True,
+            radii=rr.Radius.ui_points(2.0), draw_order=DRAW["modes"]))
 
     def _changed(self, key: str, X: NDArray[np.float64], W: NDArray[np.float64], sefm: SeFM, force: bool,
                  only_pending: bool) -> bool:

@@ -19,7 +19,7 @@ from seal_cli.planning.state import State, robot_facts
 from seal_cli.resources import map_path
 from seal_cli.sefm.filter import SeFM, SeFMConfig
 from seal_cli.sefm.observers.metrics import Metrics, Trace
-from seal_cli.sefm.observers.rerun import RerunRecorder, radii
+from seal_cli.sefm.observers.rerun import RerunRecorder, radii, spread
 from seal_cli.sefm.observers.rerun_scene import Classes
 
 rr = pytest.importorskip("rerun")
@@ -239,6 +239,12 @@ def test_the_modes_of_every_frame_in_one_entity(recorded: tuple[Path, SeFM, Any]
     classes = Classes(sefm.object_classes, sefm.frame_ids)
     last = rows(path)["/frames/modes"][-1]
     modes = [(fid, mo) for i, fid in enumerate(sefm.frame_ids) for mo in sefm.frame_summary(i).modes]
-    assert modes and last["Points2D:class_ids"] == [classes.ids[fid] for fid, _ in modes]
-    assert last["Points2D:labels"] == [f"{mo.room} {mo.weight:.2f}" for _, mo in modes]
-    np.testing.assert_allclose(last["Points2D:positions"], [mo.mean for _, mo in modes], atol=1e-5)
+    assert modes and last["Boxes2D:class_ids"] == [classes.ids[fid] for fid, _ in modes]
+    assert last["Boxes2D:labels"] == [f"{mo.room} {mo.weight:.2f}" for _, mo in modes]
+    np.testing.assert_allclose(last["Boxes2D:centers"], [mo.mean for _, mo in modes], atol=1e-5)
+    np.testing.assert_allclose(last["Boxes2D:half_sizes"], [spread(mo.cov) for _, mo in modes], atol=1e-5)
+    assert all(min(half) >= 0.1 - 1e-6 for half in last["Boxes2D:half_sizes"])  # ±1 σ, at least 0.1 m
+
+
+def test_spread_is_the_standard_deviations() -> None:
+    assert spread([[0.25, 0.1], [0.1, 0.0001]]) == pytest.approx((0.5, 0.1))
