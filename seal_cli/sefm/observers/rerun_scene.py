@@ -66,7 +66,11 @@ def batching() -> Any:
 def _quiet_stderr() -> Iterator[None]:
     """File descriptor 2 to /dev/null for the duration: rerun's Rust side warns there, not through Python."""
     sys.stderr.flush()
-    saved, null = os.dup(2), os.open(os.devnull, os.O_WRONLY)
+    try:
+        saved, null = os.dup(2), os.open(os.devnull, os.O_WRONLY)
+    except OSError:  # no descriptor 2 to quiet (a daemon's): nothing would be shown anyway
+        yield
+        return
     os.dup2(null, 2)
     try:
         yield
