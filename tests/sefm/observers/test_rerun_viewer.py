@@ -77,18 +77,24 @@ def viewer(recording: Path) -> Iterator[tuple[Any, Any]]:
             try:
                 client = client or ViewerClient.connect(f"rerun+http://127.0.0.1:{port}/proxy")
                 state = client.get_state()
-                if state.views:
+                if state.views and state.recordings and not state.loading and _loaded(state):
                     break
             except Exception:  # not listening yet
                 pass
             time.sleep(0.5)
-        if state is None or not state.views:
-            pytest.fail(f"the viewer showed no views within {STARTUP_S:.0f} s")
+        if state is None or not state.views or not _loaded(state):
+            pytest.fail(f"the viewer had not shown the recording within {STARTUP_S:.0f} s: {state}")
         yield client, state
     finally:
         _stop(process)
         if process.stdout:
             process.stdout.close()
+
+
+def _loaded(state: Any) -> bool:
+    """Whether the recording has been read to its end (its last step is on the timeline)."""
+    timelines = {t.name: t for r in state.recordings for t in r.timelines}
+    return "step" in timelines and timelines["step"].end == 2 and "time" in timelines
 
 
 def _stop(process: subprocess.Popen[bytes]) -> None:
