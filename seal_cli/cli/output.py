@@ -44,6 +44,22 @@ class LazyConsole:
             self._console = console
         return self._console
 
+    def plain(self) -> bool:
+        """Whether the console, not yet made, would print text as it is: no colours or styles (its file
+        not a terminal, nor made one by ``FORCE_COLOR`` or ``TTY_COMPATIBLE``), UTF-8 (rich's tree
+        guides) and :data:`PIPE_WIDTH` columns wide (no ``COLUMNS``).
+        What prints then may skip importing rich (``seal parse TEXT`` into a pipe or a file)."""
+        if self._console is not None or self._options.get("stderr") or any(
+                name in os.environ for name in ("FORCE_COLOR", "TTY_COMPATIBLE", "COLUMNS")):
+            return False
+        stream = sys.stdout
+        try:
+            if stream.isatty():
+                return False
+        except (AttributeError, ValueError):
+            return False
+        return (getattr(stream, "encoding", None) or "utf-8").lower().startswith("utf")
+
     def __getattr__(self, name: str) -> Any:
         return getattr(self.console, name)
 

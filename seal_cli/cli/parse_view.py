@@ -6,9 +6,11 @@ Imports no command-line framework: ``seal parse TEXT`` prints through :func:`pri
 
 from __future__ import annotations
 
+import sys
+from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
-from seal_cli.cli.output import emit_json, out
+from seal_cli.cli.output import PIPE_WIDTH, emit_json, out
 from seal_cli.errors import SealError
 
 if TYPE_CHECKING:
@@ -16,7 +18,7 @@ if TYPE_CHECKING:
     from seal_cli.language.grounding import Vocabulary
     from seal_cli.language.parser import Parse
 
-__all__ = ["print_parse", "summary", "tree"]
+__all__ = ["plain_tree", "print_parse", "summary", "tree"]
 
 
 def print_parse(text: str, library: Library | None, vocabulary: Vocabulary | None, as_json: bool) -> int:
@@ -40,7 +42,11 @@ def print_parse(text: str, library: Library | None, vocabulary: Vocabulary | Non
     if as_json:
         emit_json(parsed.to_json())
     else:
-        out.print(tree(parsed))
+        plain = plain_tree(parsed) if out.plain() else None
+        if plain is None:
+            out.print(tree(parsed))
+        else:
+            sys.stdout.write(plain)
     return 0
 
 
@@ -64,15 +70,53 @@ def tree(parsed: Parse) -> Any:
     from rich.markup import escape
     from rich.tree import Tree
 
-    root = Tree(f"[bold]{escape(parsed.text)}[/bold]")
+    root_label, frames = _outline(parsed, escape, lambda style, text: f"[{style}]{text}[/{style}]")
+    root = Tree(root_label)
+    for label, elements in frames:
+        branch = root.add(label)
+        for element in elements:
+            branch.add(element)
+    return root
+
+
+def plain_tree(parsed: Parse) -> str | None:
+    """The lines rich prints for :func:`tree` on a console without colours (:meth:`LazyConsole.plain`),
+    made without importing rich; None when rich could print them otherwise (a ':' of an emoji code, a
+    tab or control character, a character beyond Latin whose width in columns rich decides, a line
+    longer than the console is wide), which rich then prints."""
+    said = [parsed.text]
+    for frame in parsed.frames:
+        said += [frame.frame, frame.lexical_unit]
+        for role, phrase in frame.elements.items():
+            said += [role, phrase.head, phrase.cls or "", phrase.kind, phrase.text or ""]
+    if any(":" in text or not text.isprintable() or max(text, default=" ") >= "\u0300" for text in said):
+        return None  # an emoji code, a tab or control character, a character maybe not one column wide
+    root_label, frames = _outline(parsed, str, lambda style, text: text)
+    lines = [root_label]
+    for index, (label, elements) in enumerate(frames):
+        last = index == len(frames) - 1
+        lines.append(("└── " if last else "├── ") + label)
+        for number, element in enumerate(elements):
+            lines.append(("    " if last else "│   ") + ("└── " if number == len(elements) - 1 else "├── ") + element)
+    if any(len(line) > PIPE_WIDTH for line in lines):
+        return None  # rich crops a line to the console's width
+    return "".join(line + "\n" for line in lines)
+
+
+def _outline(parsed: Parse, escape: Callable[[str], str],
+             tag: Callable[[str, str], str]) -> tuple[str, list[tuple[str, list[str]]]]:
+    """The tree's labels: the root's, and each frame's with its elements'; ``escape`` and ``tag``
+    (a style, text) make them rich markup or plain text."""
+    frames = []
     for index, frame in enumerate(parsed.frames):
         a, b = frame.span
-        branch = root.add(f"[bold cyan]{index}. {frame.frame}[/bold cyan]  [dim]'{escape(frame.lexical_unit)}' "
-                          f"· {escape(parsed.text[a:b])!s}[/dim]")
+        label = (tag("bold cyan", f"{index}. {frame.frame}") + "  "
+                 + tag("dim", f"'{escape(frame.lexical_unit)}' · {escape(parsed.text[a:b])!s}"))
+        elements = []
         for role, phrase in frame.elements.items():
-            facts = [f"head [green]{escape(phrase.head)}[/green]"]
+            facts = ["head " + tag("green", escape(phrase.head))]
             if phrase.cls:
-                facts.append(f"class [magenta]{escape(phrase.cls)}[/magenta]")
+                facts.append("class " + tag("magenta", escape(phrase.cls)))
             if phrase.kind != "thing":
                 facts.append(phrase.kind)
             if phrase.quantity is not None:
@@ -81,6 +125,7 @@ def tree(parsed: Parse) -> Any:
                 facts.append(f"→ frame {phrase.refers_to[0]} {phrase.refers_to[1]}")
             if phrase.default:
                 facts.append("default")
-            said = escape(phrase.text) if phrase.text else "[dim](unsaid)[/dim]"
-            branch.add(f"[yellow]{role}[/yellow]: {said}  [dim]{' · '.join(facts)}[/dim]")
-    return root
+            said = escape(phrase.text) if phrase.text else tag("dim", "(unsaid)")
+            elements.append(tag("yellow", role) + f": {said}  " + tag("dim", " · ".join(facts)))
+        frames.append((label, elements))
+    return tag("bold", escape(parsed.text)), frames

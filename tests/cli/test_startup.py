@@ -101,3 +101,58 @@ def test_each_command_is_found_in_the_module_the_table_names() -> None:
     assert command_modules(["parse", "x"]) == ["parse_cmd"]
     assert set(command_modules(["--help"])) == set(command_modules(["bench"])) == set(command_modules(["pars"])) \
         == set(HOMES.values()) | set(BENCH_HOMES.values())
+
+
+def _rich_tree(text: str) -> str:
+    """What rich prints for the parse of ``text`` on a console of the pipe's width and no colours."""
+    import io
+
+    from rich.console import Console
+
+    from seal_cli.cli.parse_view import tree
+    from seal_cli.frames.reading import load_library
+    from seal_cli.language.parser import parse_command
+
+    console = Console(file=io.StringIO(), soft_wrap=True, highlight=False, width=200)
+    console.print(tree(parse_command(text, load_library(), None)))
+    return console.file.getvalue()  # type: ignore[attr-defined]
+
+
+def _seal_rich(*argv: str, env: dict[str, str] | None = None) -> tuple[subprocess.CompletedProcess[str], bool]:
+    """Run ``seal ARGV`` into a pipe; the run and whether it imported rich."""
+    code = ("import sys\nfrom seal_cli.__main__ import main\ntry:\n    main()\nfinally:\n"
+            "    print('rich' in sys.modules, file=sys.stderr)")
+    run = subprocess.run([sys.executable, "-c", code, *argv], capture_output=True, text=True, env=env)
+    return run, run.stderr.splitlines()[-1] == "True"
+
+
+def _env(**extra: str) -> dict[str, str]:
+    import os
+
+    env = {k: v for k, v in os.environ.items() if k not in ("FORCE_COLOR", "TTY_COMPATIBLE", "COLUMNS")}
+    return {**env, "PYTHONIOENCODING": "utf-8", **extra}
+
+
+@pytest.mark.parametrize("text", ["bring me a cup from the kitchen", "stir the cup and put it on the table",
+                                  "bring Roger a coffee from the kitchen"])
+def test_a_tree_into_a_pipe_is_what_rich_prints_without_rich(text: str) -> None:
+    run, imported_rich = _seal_rich("parse", text, env=_env())
+    assert run.returncode == 0 and not imported_rich
+    assert run.stdout == _rich_tree(text)
+
+
+@pytest.mark.parametrize(("text", "extra"), [
+    ("bring me a cup at 5:30 from the kitchen", {}),  # ':' may start an emoji code
+    ("bring me a cup from the kitchen " + "very " * 40 + "big", {}),  # rich crops at the width
+    ("bring me a 杯 from the kitchen", {}),  # beyond Latin: rich decides how many columns it takes
+    ("bring me a cup from the kitchen", {"COLUMNS": "200"}),
+])
+def test_a_tree_rich_may_print_otherwise_is_printed_by_rich(text: str, extra: dict[str, str]) -> None:
+    run, imported_rich = _seal_rich("parse", text, env=_env(**extra))
+    assert run.returncode == 0 and imported_rich
+    assert run.stdout == _rich_tree(text)
+
+
+def test_forced_colours_are_rich_s() -> None:
+    run, imported_rich = _seal_rich("parse", "bring me a cup from the kitchen", env=_env(FORCE_COLOR="1"))
+    assert run.returncode == 0 and imported_rich and "\x1b[" in run.stdout
