@@ -10,8 +10,8 @@ compiles it), so that a checkout run with ``PYTHONDONTWRITEBYTECODE`` is not tim
 itself. The *cold* figure is ``seal parse TEXT`` with an empty cache of its own at every run (the
 library read and checked, the tables sorted, both written). The *stages* are what a warm
 ``seal parse`` pays for, in order: the frame library, parsing one command with it (the language's
-modules, the grammar, the tagger's tables, the parse), and the terminal library that prints the
-tree; each is what it adds to the stages before it.
+modules, the grammar, the tagger's tables, the parse), and the tree made as it is printed into a
+pipe (plain text, without rich); each is what it adds to the stages before it.
 """
 
 from __future__ import annotations
@@ -73,7 +73,8 @@ STAGES = {
     "frame library (from the cache)": "from seal_cli.frames.reading import load_library; load_library()",
     "parser: modules, grammar, tagger tables, one parse": f"from seal_cli.language.parser import parse_command; "
                                                           f"parse_command({COMMAND!r}, load_library())",
-    "rich: console and tree": "import rich.console, rich.tree",
+    "the tree, as printed into a pipe (without rich)": f"from seal_cli.cli.parse_view import plain_tree; "
+                                                       f"plain_tree(parse_command({COMMAND!r}, load_library()))",
 }
 """What a warm ``seal parse`` pays for, in the order it pays; each stage is measured with the ones
 before it, and its figure is what it adds."""
