@@ -59,7 +59,7 @@ OUT = SHIPPED / "alfred_train.json"
 MANIPULATE = ("Pick", "Heat", "Cool", "Clean", "LookAt", "Place")
 LABELS = ("object", "receptacle", "mrecep", "toggle")
 KEEP = 2
-SECTIONS = ("words", "seen", "context", "class_context")
+SECTIONS = ("words", "seen", "context", "class_context", "number")
 """A wording seen fewer times than this is left out of the file (it could never reach MIN_SUPPORT alone)."""
 
 
@@ -104,15 +104,17 @@ Context = dict[str, dict[str, Counter[str]]]
 
 
 def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
-          scenes: dict[str, frozenset[str]]) -> tuple[Counts, Counts, Context, Counts]:
+          scenes: dict[str, frozenset[str]]) -> tuple[Counts, Counts, Context, Counts, Counts]:
     """(wording → labelled classes, wording → the classes of the scenes it was said in, wording →
-    labelled class → the sentence's other words, labelled class → the same over its head wordings)."""
+    labelled class → the sentence's other words, labelled class → the same over its head wordings,
+    plural wording of the object → "one" or "several" things meant: the task picks two or not)."""
     library = load_library()
     rules = vocabulary.with_usage(WordUsage())
     counts: Counts = {}
     seen: Counts = {}
     context: Context = {}
     class_context: Counts = {}
+    number: Counts = {}
     for row in rows:
         text = " ".join(row["goal_sentence"].split())
         try:
@@ -127,6 +129,13 @@ def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
             counts.setdefault(said, Counter())[row["receptacle"]] += 1
             seen.setdefault(said, Counter()).update(scenes.get(row["floor_plan"], ()))
         for phrase, label in fields(parse, row):
+            if label == row["object"] and phrase.plural and phrase.quantity is None and not phrase.conjuncts \
+                    and not {"two", "both"} & set((phrase.text or "").lower().split()):
+                lemmas = wording(phrase)        # a plural object: one thing meant, or several?
+                for size in (2, 1):
+                    if lemmas is not None and len(lemmas) >= size:
+                        meant = "several" if row["task_type"] == "pick_two_obj_and_place" else "one"
+                        number.setdefault(" ".join(lemmas[-size:]), Counter())[meant] += 1
             lemmas = wording(phrase)
             if lemmas is None:
                 continue
@@ -138,7 +147,7 @@ def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
                     counts.setdefault(said, Counter())[label] += 1
                     seen.setdefault(said, Counter()).update(scenes.get(row["floor_plan"], ()))
                     context.setdefault(said, {}).setdefault(label, Counter()).update(others)
-    return counts, seen, context, class_context
+    return counts, seen, context, class_context, number
 
 
 def scene_classes(data: Path, classes: Sequence[str]) -> dict[str, frozenset[str]]:
@@ -154,8 +163,8 @@ def scene_classes(data: Path, classes: Sequence[str]) -> dict[str, frozenset[str
             for name, plan in plans.items()}
 
 
-def table(counts: Counts, seen: Counts, context: Context, class_context: Counts, classes: Sequence[str],
-          source: str) -> dict[str, object]:
+def table(counts: Counts, seen: Counts, context: Context, class_context: Counts, number: Counts,
+          classes: Sequence[str], source: str) -> dict[str, object]:
     words = {w: dict(sorted(c.items(), key=lambda kv: (-kv[1], kv[0])))
              for w, c in sorted(counts.items()) if sum(c.values()) >= KEEP}
     where = {w: {c: seen[w][c] for c in by_class if seen.get(w, {}).get(c)} for w, by_class in words.items()}
@@ -163,7 +172,8 @@ def table(counts: Counts, seen: Counts, context: Context, class_context: Counts,
             "classes": list(classes), "words": words, "seen": {w: c for w, c in where.items() if c},
             "context": pruned(context, words),
             "class_context": {c: ordered(Counter({w: n for w, n in by.items() if n >= KEEP}))
-                              for c, by in sorted(class_context.items())}}
+                              for c, by in sorted(class_context.items())},
+            "number": {w: ordered(by) for w, by in sorted(number.items()) if sum(by.values()) >= KEEP}}
 
 
 def ordered(words: Counter[str]) -> dict[str, int]:

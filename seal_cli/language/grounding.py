@@ -265,6 +265,12 @@ class Vocabulary:
                 break
         return None if best is None else self.classes[best[1]]
 
+    def names_one(self, words: Sequence[str]) -> bool:
+        """Whether a plural noun phrase with these words (modifiers, head) names one thing, as people
+        mean it: "the keys" are one key chain (:meth:`~seal_cli.language.wordusage.WordUsage.names_one`,
+        learned from a train split; the rules alone know no such plural)."""
+        return self._usage.names_one(_lemmas(w for w in words if w))
+
     def ground_unsaid(self, frame: str, role: str, unit: str) -> str | None:
         """The class people most likely mean as ``frame``'s ``role`` when they use the lexical unit
         ``unit`` and leave the element unsaid ("throw away the towel": the goal of Place by "throw

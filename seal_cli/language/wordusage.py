@@ -106,9 +106,13 @@ class WordUsage:
     """``class_context[class key][word]``: the same over every head wording of the class, which a
     wording's own counts are smoothed towards (:data:`CONTEXT_PRIOR`)."""
     context_weight: float = CONTEXT_WEIGHT
+    number: Mapping[str, Mapping[str, int]] = field(default_factory=dict)
+    """``number[wording]["one" | "several"]``: of the plural phrases with this wording that named the
+    task's object (no number said), how many meant one thing ("put the keys on the table": one key
+    chain) and how many several (:meth:`names_one`)."""
 
     def __post_init__(self) -> None:
-        for name in ("counts", "seen", "class_context"):
+        for name in ("counts", "seen", "class_context", "number"):
             table = getattr(self, name)
             object.__setattr__(self, name, MappingProxyType({w: MappingProxyType(dict(c)) for w, c in table.items()}))
         object.__setattr__(self, "context", MappingProxyType(
@@ -137,11 +141,27 @@ class WordUsage:
         return WordUsage(add(self.counts, other.counts), self.universe | other.universe,
                          self.sources + other.sources, self.min_support, self.min_ratio,
                          add(self.seen, other.seen), context, add(self.class_context, other.class_context),
-                         self.context_weight)
+                         self.context_weight, add(self.number, other.number))
+
+    def names_one(self, lemmas: tuple[str, ...]) -> bool:
+        """Whether a plural phrase whose words up to the head are ``lemmas`` names one thing, as
+        people meant it: "the keys" are one key chain, "the pencils" several pencils. The longest
+        wording with at least ``min_support`` observations decides: one, when at least
+        ``min_support`` people meant one thing and ``min_ratio`` times as many as meant several."""
+        for size in (2, 1):
+            if len(lemmas) < size:
+                continue
+            said = self.number.get(" ".join(lemmas[-size:]))
+            if not said or sum(said.values()) < self.min_support:
+                continue
+            one, several = said.get("one", 0), said.get("several", 0)
+            return one >= self.min_support and one >= self.min_ratio * several
+        return False
 
     def without_context(self) -> WordUsage:
         """These counts with the sentence not weighed (the wording alone decides)."""
-        return WordUsage(self.counts, self.universe, self.sources, self.min_support, self.min_ratio, self.seen)
+        return WordUsage(self.counts, self.universe, self.sources, self.min_support, self.min_ratio, self.seen,
+                         number=self.number)
 
     @cached_property
     def _class_phrases(self) -> dict[str, int]:
@@ -293,8 +313,13 @@ def _table(data: Any, where: Where) -> WordUsage:
             isinstance(c, str) and class_key(c) in universe and _word_counts(t) for c, t in raw.items()):
         raise SealError("\"class_context\" must map each class of \"classes\" to {word: positive count}", where)
     class_context = {class_key(c): dict(t) for c, t in raw.items()}
+    raw = data.get("number", {})
+    if not isinstance(raw, dict) or not all(
+            _word_counts(by) and set(by) <= {"one", "several"} for by in raw.values()):
+        raise SealError("\"number\" must map each wording to {\"one\": count, \"several\": count}", where)
+    number = {" ".join(str(w).lower().split()): dict(by) for w, by in raw.items()}
     return WordUsage(counts, universe, (str(data.get("source", where.file)),), seen=seen, context=context,
-                     class_context=class_context)
+                     class_context=class_context, number=number)
 
 
 def _word_counts(table: Any) -> bool:

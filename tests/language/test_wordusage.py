@@ -239,6 +239,10 @@ def test_tables_in_a_folder_add_up(tmp_path: Path) -> None:
      '"class_context" must map'),
     ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "class_context": {"Cup": {}}}',
      '"class_context" must map'),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "number": {"key": {"many": 3}}}',
+     '"number" must map'),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "number": {"key": {"one": -1}}}',
+     '"number" must map'),
 ])
 def test_bad_tables_are_clear_errors(tmp_path: Path, content: str, words: str) -> None:
     path = tmp_path / "bad.json"
@@ -291,3 +295,31 @@ def test_context_tables_in_a_folder_add_up(tmp_path: Path) -> None:
     merged = load_word_usage([tmp_path])
     assert merged.context["cup"]["mug"]["coffee"] == 7 and merged.context["cup"]["cup"]["sink"] == 2
     assert merged.class_context["mug"]["coffee"] == 7
+
+
+NUMBER = WordUsage({"key": {"key_chain": 30}, "pencil": {"pencil": 20}}, frozenset({"key_chain", "pencil"}),
+                   number={"key": {"one": 25, "several": 2}, "pencil": {"several": 12, "one": 1},
+                           "car key": {"several": 6}, "spoon": {"one": 4}})
+
+
+def test_a_plural_names_one_thing_where_people_meant_one(library: Library) -> None:
+    assert NUMBER.names_one(("key",)) and NUMBER.names_one(("red", "key"))       # the head's wording
+    assert not NUMBER.names_one(("pencil",))                                      # several pencils
+    assert not NUMBER.names_one(("car", "key"))                                   # the pair's wording decides
+    assert not NUMBER.names_one(("spoon",)) and not RULES.names_one(("key",))     # too few; the rules alone
+    vocab = Vocabulary.of(["KeyChain", "Pencil", "Sofa"]).with_usage(NUMBER)
+    keys = parse_command("put the keys on the sofa", library, vocab).frames[-1].elements["theme"]
+    assert (keys.cls, keys.plural, "number" in keys.to_json()) == ("KeyChain", False, False)
+    pencils = parse_command("put the pencils on the sofa", library, vocab).frames[-1].elements["theme"]
+    assert pencils.plural and pencils.to_json()["number"] == "plural"
+    assert parse_command("put two keys on the sofa", library, vocab).frames[-1].elements["theme"].quantity == 2
+    rules = parse_command("put the keys on the sofa", library, vocab.with_usage(RULES))
+    assert rules.frames[-1].elements["theme"].plural
+    # "them" still finds the keys
+    taken = parse_command("pick up the keys and put them on the sofa", library, vocab)
+    assert taken.resolve(taken.frames[-1].elements["theme"]).cls == "KeyChain"
+
+
+def test_the_shipped_table_says_the_keys_are_one_thing() -> None:
+    shipped = shipped_word_usage()
+    assert shipped.names_one(("key",)) and not shipped.names_one(("pencil",))
