@@ -9,6 +9,9 @@ found the way ALFRED parses are read back (the object: the theme of the first ma
 of Slice when the object is sliced; the receptacle: the goal of the last Place; the movable
 receptacle: the goal of the first Place of two; the toggle target: the theme of ToggleOn), and the
 label is counted under the phrase's wording: its head lemma, and its last modifier with the head.
+Also counted: the sentence's other words by wording and labelled class (``context``) and by class
+(``class_context``), which grounding weighs; and, for a plural object phrase with no number said,
+whether the task meant one thing or several (``number``: several when it picks two).
 
     python scripts/build_word_classes.py                 # rewrite the shipped table
     python scripts/build_word_classes.py --check         # exit 1 if the shipped table differs
