@@ -33,7 +33,6 @@ this module; every file there is read and their counts are added.
 
 from __future__ import annotations
 
-import json
 import math
 import re
 from collections.abc import Iterable, Mapping
@@ -329,6 +328,8 @@ def _word_counts(table: Any) -> bool:
 
 def load_word_usage(paths: Iterable[str | Path]) -> WordUsage:
     """The word-class tables in these files (or folders of ``*.json``), their counts added."""
+    import json
+
     from seal_cli.fileio import read_text
 
     usage = WordUsage()
