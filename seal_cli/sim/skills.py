@@ -31,9 +31,10 @@ import numpy as np
 
 from seal_cli.frames.library import Library
 from seal_cli.frames.taxonomy import class_key
+from seal_cli.maps.model import SPEAKER
 from seal_cli.sim.agent import Agent, Budget, Known, Record, Scene
 from seal_cli.sim.scorers import DONE, Example, Scorer, prompt_for
-from seal_cli.sim.world import Outcome
+from seal_cli.sim.world import PERSON, Outcome
 
 if TYPE_CHECKING:
     from seal_cli.maps.model import Map
@@ -72,6 +73,8 @@ class SkillResult:
     failed_skills: int = 0
     never_seen: list[str] = field(default_factory=list)
     records: list[Record] = field(default_factory=list)
+    known: list[str] = field(default_factory=list)
+    """The items the robot knew at the end (the map's and those it saw)."""
 
     @property
     def plan(self) -> list[str]:
@@ -121,6 +124,9 @@ class SkillRunner:
         self.focus = ""
         """The thing last gone to: what an ambiguous phrase ("pick up the book") means."""
         self.examples = tuple(examples)
+        self.rooms = tuple(r.name for r in scene.map.rooms if not r.name.startswith("_")) if len(scene.map.rooms) > 1 \
+            else ()
+        """The map's rooms, to go to ("go to the bedroom"); none on a one-room map (ALFRED's)."""
 
     # -- candidates ----------------------------------------------------------------------------
 
@@ -137,7 +143,7 @@ class SkillRunner:
             name = words(k.cls)
             item = world.items[k.id]
             near = self._reach(k)
-            if not k.movable:   # a thing is gone to by finding it (below); going where it stands is a no-op
+            if not k.movable and k.cls != PERSON:   # a thing is gone to by finding it (below); where it stands: a no-op
                 skills.append(Skill(f"go to the {name}", "go", (k.id,)))
             if k.movable:
                 ok = near and held is None
@@ -167,6 +173,24 @@ class SkillRunner:
                 if taxonomy.is_a(world.items[held].key, "cutter") is True and k.movable:
                     skills.append(Skill(f"slice the {name} with the {hname}", "slice", (k.id, held),
                                         AFFORDED if near else UNAFFORDED))
+                if taxonomy.is_a(world.items[held].key, "utensil") is True and \
+                        taxonomy.is_a(k.cls, "container") is True:
+                    skills.append(Skill(f"stir the {name} with the {hname}", "stir", (held, k.id),
+                                        AFFORDED if near else UNAFFORDED))
+                if k.cls == PERSON:
+                    person = "me" if k.id == SPEAKER else k.id
+                    skills.append(Skill(f"give the {hname} to {person}", "hand_over", (held, k.id),
+                                        AFFORDED if near else UNAFFORDED))
+            if k.cls == PERSON:
+                skills.append(Skill(f"go to {'me' if k.id == SPEAKER else k.id}", "go", (k.id,)))
+                continue
+        for room in self.rooms:
+            skills.append(Skill(f"go to the {words(room)}", "enter", (room,)))
+            if held is not None:   # put down in the room: on its nearest open place, if within reach
+                place = self.agent.surface_in(self.agent.room(room))
+                ok = place is not None and self._reach(self.agent.known[place])
+                skills.append(Skill(f"put the {words(world.items[held].key)} in the {words(room)}", "place",
+                                    (held, place or ""), AFFORDED if ok else UNAFFORDED))
         if held is not None:
             name = words(world.items[held].key)
             skills.append(Skill(f"look at the {name}", "look_at", (held,)))
@@ -224,6 +248,8 @@ class SkillRunner:
             return Outcome(True, "explored")
         if skill.action == "find":
             return self.find(skill.args[0])
+        if skill.action == "enter":
+            return self.enter(skill.args[0])
         if skill.action == "unseen":
             world.step += 1
             return Outcome(False, f"sees no {words(skill.args[0])}")
@@ -250,6 +276,25 @@ class SkillRunner:
         if outcome.ok and skill.action == "pick":
             self.placed.discard(skill.args[0])
         return outcome
+
+    def enter(self, name: str) -> Outcome:
+        """Go into a room of the map: to its nearest open place (where a thing can be put down), or
+        else to its nearest free cell."""
+        agent, world = self.agent, self.world
+        room = agent.room(name)
+        place = agent.surface_in(room)
+        if place is not None:
+            return self.execute(Skill(f"go to the {words(agent.known[place].cls)}", "go", (place,)))
+        inside = np.flatnonzero(room.contains(agent.grid.free_points))
+        cells = agent.grid.free_cells[inside]
+        field_ = agent.distances()
+        costs = field_[cells[:, 0], cells[:, 1]] if len(cells) else np.zeros(0)
+        if not len(costs) or not np.isfinite(costs.min()):
+            world.step += 1
+            return Outcome(False, f"cannot drive into the {words(name)}")
+        k = int(np.argmin(costs))
+        agent.drive_to((int(cells[k, 0]), int(cells[k, 1])), f"goes into {name}")
+        return Outcome(True, f"in {name}")
 
     def find(self, cls: str) -> Outcome:
         """Go to the nearest known thing of the class; with none known, explore (the coverage
@@ -317,7 +362,7 @@ class SkillRunner:
             self._look()
         named = self.named_classes(instruction)
         return SkillResult(said_done, reason, world.robot.path_m, world.step, history, unafforded, failed,
-                           sorted(c for c in named if c not in self.seen), agent.records)
+                           sorted(c for c in named if c not in self.seen), agent.records, sorted(agent.known))
 
     def _look(self) -> None:
         for d in self.agent.look(quiet=True):
