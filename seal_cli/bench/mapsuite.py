@@ -31,7 +31,7 @@ from seal_cli.frames.reading import load_library
 from seal_cli.maps.formats.map_server import load_map
 from seal_cli.maps.model import Map, ObjectTruth
 
-__all__ = ["COMMANDS", "run_map_suite", "sample_layout"]
+__all__ = ["COMMANDS", "commanded_frames", "run_judged", "run_map_suite", "sample_layout"]
 
 COMMANDS = ("stir the cup", "bring the apple to the bedroom", "put the spoon in the sink",
             "pick up the cup and put it on the dining table", "heat the apple")
@@ -70,37 +70,45 @@ def layout_seed(seed: int, layout: int, map_name: str) -> int:
 def run_layout(m: Map, layout: int, commands: Sequence[str], library: Library, policies: Sequence[str], *,
                seed: int = 0, particles: int = 200) -> list[Outcome]:
     """Every command with every policy on one layout of the map."""
+    base = layout_seed(seed, layout, m.name)
+    world = sample_layout(m, np.random.default_rng(base))
+    outcomes = []
+    for c, text in enumerate(commands):
+        asked = commanded_frames(world, text, library)
+        for name in policies:
+            start = time.perf_counter()
+            rng = np.random.default_rng(base + 1 + c)
+            success, path, steps, reason, plan = run_judged(world, text, library, name, rng=rng, particles=particles,
+                                                            asked=asked)
+            outcomes.append(Outcome(f"{m.name}-layout{layout}-{c}", text, name, success, round(path, 3), steps,
+                                    reason, float("nan"), round(time.perf_counter() - start, 3), plan))
+    return outcomes
+
+
+def run_judged(m: Map, text: str, library: Library, name: str, *, rng: np.random.Generator, particles: int = 200,
+               asked: tuple[list[Any], dict[str, str]] | None = None) -> tuple[bool, float, int, str, tuple[str, ...]]:
+    """One policy on one command on a map whose objects are the world, judged by the end state
+    (:func:`~seal_cli.bench.endstate.judge_end`): success, path, steps, reason, and the plan run (the
+    skills chosen, for ``saycan``). ``asked``: :func:`commanded_frames` of the command, if known."""
     from seal_cli.bench.endstate import judge_end
     from seal_cli.pipeline import run_on_map
     from seal_cli.sim.agent import Budget, scene_from_map
     from seal_cli.sim.policies import make_policy
     from seal_cli.sim.skills import failure_kinds
 
-    base = layout_seed(seed, layout, m.name)
-    world = sample_layout(m, np.random.default_rng(base))
-    outcomes = []
-    for c, text in enumerate(commands):
-        commanded, classes = commanded_frames(world, text, library)
-        for name in policies:
-            start = time.perf_counter()
-            rng = np.random.default_rng(base + 1 + c)
-            policy = make_policy(name, particles)
-            if getattr(policy, "drives_itself", False):  # saycan: from the text alone
-                scene = scene_from_map(world, library)
-                said = policy.run(scene, library, text, rng=rng, budget=Budget())  # type: ignore[attr-defined]
-                verdict = judge_end(scene.world, world, commanded, classes, said.known)
-                kinds = failure_kinds(said, verdict.success)
-                reason = "success" if verdict.success else f"{'; '.join(kinds)}: {verdict.reason}"
-                path, steps, plan = said.path_m, said.steps, tuple(said.history)
-            else:
-                agent, result = run_on_map(world, text, library, policy, rng=rng)
-                verdict = judge_end(agent.world, world, commanded, classes, agent.known)
-                reason = "success" if verdict.success else (result.reason if not result.completed
-                                                            else verdict.reason)
-                path, steps, plan = result.path_m, result.steps, tuple(result.plan)
-            outcomes.append(Outcome(f"{m.name}-layout{layout}-{c}", text, name, verdict.success, round(path, 3),
-                                    steps, reason, float("nan"), round(time.perf_counter() - start, 3), plan))
-    return outcomes
+    commanded, classes = asked or commanded_frames(m, text, library)
+    policy = make_policy(name, particles)
+    if getattr(policy, "drives_itself", False):  # saycan: from the text alone
+        scene = scene_from_map(m, library)
+        said = policy.run(scene, library, text, rng=rng, budget=Budget())  # type: ignore[attr-defined]
+        verdict = judge_end(scene.world, m, commanded, classes, said.known)
+        kinds = failure_kinds(said, verdict.success)
+        reason = "success" if verdict.success else f"{'; '.join(kinds)}: {verdict.reason}"
+        return verdict.success, said.path_m, said.steps, reason, tuple(said.history)
+    agent, result = run_on_map(m, text, library, policy, rng=rng)
+    verdict = judge_end(agent.world, m, commanded, classes, agent.known)
+    reason = "success" if verdict.success else (result.reason if not result.completed else verdict.reason)
+    return verdict.success, result.path_m, result.steps, reason, tuple(result.plan)
 
 
 def commanded_frames(m: Map, text: str, library: Library) -> tuple[list[Any], dict[str, str]]:
