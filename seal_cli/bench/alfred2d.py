@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import json
 import math
+import zlib
 from collections import Counter, defaultdict
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -273,8 +274,11 @@ def _episode(t: Mapping[str, Any], floor_plans: Mapping[str, FloorPlan]) -> Epis
 
 
 def load_suite(data_dir: str | Path, split: str, *, limit: int | None = None,
-               types: Sequence[str] | None = None, with_priors: bool = True) -> Suite:
-    """The split's episodes (the first ``limit`` of each task type, if given), with priors from ``train``."""
+               types: Sequence[str] | None = None, with_priors: bool = True, sample: int | None = None) -> Suite:
+    """The split's episodes (the first ``limit`` of each task type, if given), with priors from ``train``.
+
+    ``sample``: a stratified sample instead, ``sample`` episodes of each task type, those first in the
+    order of a hash of their id (the same sample whatever the seed; kept in the file's order)."""
     plans, movable = read_floorplans(data_dir)
     unknown = [t for t in types or () if t not in TASK_TYPES]
     if unknown:
@@ -288,10 +292,21 @@ def load_suite(data_dir: str | Path, split: str, *, limit: int | None = None,
             continue
         counts[episode.group] += 1
         episodes.append(episode)
+    if sample is not None:
+        episodes = _stratified(episodes, sample)
     suite = Suite(plans, episodes, Path(data_dir), movable)
     if with_priors:
         suite.priors = train_priors(data_dir)
     return suite
+
+
+def _stratified(episodes: list[Episode], per_group: int) -> list[Episode]:
+    by_group: dict[str, list[Episode]] = {}
+    for episode in episodes:
+        by_group.setdefault(episode.group, []).append(episode)
+    chosen = {e.task_id for group in by_group.values()
+              for e in sorted(group, key=lambda e: zlib.crc32(e.task_id.encode()))[:per_group]}
+    return [e for e in episodes if e.task_id in chosen]
 
 
 _PRIORS: dict[tuple[str, float], dict[str, dict[str, float]]] = {}

@@ -94,8 +94,7 @@ def layout_seed(seed: int, layout: int, name: str) -> int:
 def run_house_layout(house: House, layout: int, commands: Sequence[str], library: Library,
                      policies: Sequence[str], *, seed: int = 0, particles: int = 200) -> list[Outcome]:
     """Every command from every start with every policy on one layout of one house."""
-    from seal_cli.pipeline import run_on_map
-    from seal_cli.sim.policies import make_policy
+    from seal_cli.bench.mapsuite import commanded_frames, run_judged
 
     m = house.map
     base = layout_seed(seed, layout, m.name)
@@ -105,13 +104,14 @@ def run_house_layout(house: House, layout: int, commands: Sequence[str], library
         start = dataclasses.replace(world, robot=Robot(pose))
         for c, text in enumerate(commands):
             group = f"{m.name} · {text} · start {s + 1}"
-            for name in policies:
+            asked = commanded_frames(start, text, library)
+            for name in policies:   # judged by the end state, as the map suite (saycan too)
                 began = time.perf_counter()
                 rng = np.random.default_rng(base + 1 + 97 * s + c)
-                _, result = run_on_map(start, text, library, make_policy(name, particles), rng=rng)
-                outcomes.append(Outcome(f"{m.name}-layout{layout}-start{s + 1}-{c}", group, name, result.completed,
-                                        round(result.path_m, 3), result.steps, result.reason, float("nan"),
-                                        round(time.perf_counter() - began, 3), tuple(result.plan)))
+                ok, path, steps, reason, plan = run_judged(start, text, library, name, rng=rng, particles=particles,
+                                                           asked=asked)
+                outcomes.append(Outcome(f"{m.name}-layout{layout}-start{s + 1}-{c}", group, name, ok, round(path, 3),
+                                        steps, reason, float("nan"), round(time.perf_counter() - began, 3), plan))
     return outcomes
 
 

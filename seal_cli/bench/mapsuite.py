@@ -5,9 +5,10 @@ room to try first matters most. This suite runs on any seal map (the shipped apa
 default): for each layout, every ground-truth object of the map is moved to a point drawn from
 its class's prior (:func:`sample_layout`), so the placements are as varied as the priors say
 and the priors are right on average — the paper's setting. Each command then runs with every
-policy on a fresh world of that layout, from the map's start pose. A run succeeds when every frame
-of its plan was executed: the simulator refuses any action whose physical preconditions do not
-hold, so a completed plan is a done task.
+policy on a fresh world of that layout, from the map's start pose. A run succeeds when the world
+at the end is what the command asked for (:func:`seal_cli.bench.endstate.judge_end`: the
+commanded frames' effects hold, read from the world), for every policy alike — those that run
+seal's plan and ``saycan``, which drives itself from the text.
 
 Outcomes are :class:`~seal_cli.bench.tasks.Outcome` rows grouped by command, and
 :func:`~seal_cli.bench.tasks.summarise` folds them into the same JSON as ALFRED-2D's.
@@ -25,13 +26,12 @@ from typing import Any
 import numpy as np
 
 from seal_cli.bench.tasks import Outcome, in_order
-from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
 from seal_cli.frames.reading import load_library
 from seal_cli.maps.formats.map_server import load_map
 from seal_cli.maps.model import Map, ObjectTruth
 
-__all__ = ["COMMANDS", "run_map_suite", "sample_layout"]
+__all__ = ["COMMANDS", "commanded_frames", "run_judged", "run_map_suite", "sample_layout"]
 
 COMMANDS = ("stir the cup", "bring the apple to the bedroom", "put the spoon in the sink",
             "pick up the cup and put it on the dining table", "heat the apple")
@@ -70,21 +70,59 @@ def layout_seed(seed: int, layout: int, map_name: str) -> int:
 def run_layout(m: Map, layout: int, commands: Sequence[str], library: Library, policies: Sequence[str], *,
                seed: int = 0, particles: int = 200) -> list[Outcome]:
     """Every command with every policy on one layout of the map."""
-    from seal_cli.pipeline import run_on_map
-    from seal_cli.sim.policies import make_policy
-
     base = layout_seed(seed, layout, m.name)
     world = sample_layout(m, np.random.default_rng(base))
     outcomes = []
     for c, text in enumerate(commands):
+        asked = commanded_frames(world, text, library)
         for name in policies:
             start = time.perf_counter()
             rng = np.random.default_rng(base + 1 + c)
-            _, result = run_on_map(world, text, library, make_policy(name, particles), rng=rng)
-            outcomes.append(Outcome(f"{m.name}-layout{layout}-{c}", text, name, result.completed,
-                                    round(result.path_m, 3), result.steps, result.reason, float("nan"),
-                                    round(time.perf_counter() - start, 3), tuple(result.plan)))
+            success, path, steps, reason, plan = run_judged(world, text, library, name, rng=rng, particles=particles,
+                                                            asked=asked)
+            outcomes.append(Outcome(f"{m.name}-layout{layout}-{c}", text, name, success, round(path, 3), steps,
+                                    reason, float("nan"), round(time.perf_counter() - start, 3), plan))
     return outcomes
+
+
+def run_judged(m: Map, text: str, library: Library, name: str, *, rng: np.random.Generator, particles: int = 200,
+               asked: tuple[list[Any], dict[str, str]] | None = None) -> tuple[bool, float, int, str, tuple[str, ...]]:
+    """One policy on one command on a map whose objects are the world, judged by the end state
+    (:func:`~seal_cli.bench.endstate.judge_end`): success, path, steps, reason, and the plan run (the
+    skills chosen, for ``saycan``). ``asked``: :func:`commanded_frames` of the command, if known."""
+    from seal_cli.bench.endstate import judge_end
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.agent import Budget, scene_from_map
+    from seal_cli.sim.policies import make_policy
+    from seal_cli.sim.skills import failure_kinds
+
+    commanded, classes = asked or commanded_frames(m, text, library)
+    policy = make_policy(name, particles)
+    if getattr(policy, "drives_itself", False):  # saycan: from the text alone
+        scene = scene_from_map(m, library)
+        said = policy.run(scene, library, text, rng=rng, budget=Budget())  # type: ignore[attr-defined]
+        verdict = judge_end(scene.world, m, commanded, classes, said.known)
+        kinds = failure_kinds(said, verdict.success)
+        reason = "success" if verdict.success else f"{'; '.join(kinds)}: {verdict.reason}"
+        return verdict.success, said.path_m, said.steps, reason, tuple(said.history)
+    agent, result = run_on_map(m, text, library, policy, rng=rng)
+    verdict = judge_end(agent.world, m, commanded, classes, agent.known)
+    reason = "success" if verdict.success else (result.reason if not result.completed else verdict.reason)
+    return verdict.success, result.path_m, result.steps, reason, tuple(result.plan)
+
+
+def commanded_frames(m: Map, text: str, library: Library) -> tuple[list[Any], dict[str, str]]:
+    """The command's frames as ``seal run`` reads them on the map, and the class of each name
+    they use: what the end-state judge holds every policy's world to."""
+    from seal_cli.language.grounding import vocabulary_of_map
+    from seal_cli.language.parser import parse_command
+    from seal_cli.planning.grounding import spoken
+    from seal_cli.planning.problem import build_problem
+
+    vocabulary = vocabulary_of_map(m)
+    problem = build_problem(parse_command(spoken(text), library, vocabulary), library, map=m.known(),
+                            vocabulary=vocabulary)
+    return list(problem.commanded), dict(problem.state.classes)
 
 
 _WORKER: dict[str, Any] = {}
@@ -112,10 +150,10 @@ def run_map_suite(map_path: str, commands: Sequence[str], policies: Sequence[str
     from seal_cli.pipeline import plan as plan_text
     from seal_cli.sim.policies import make_policy
 
-    for name in policies:  # the map suite's success is "every frame executed": no judge for a frame-less run
-        if getattr(make_policy(name, 1), "drives_itself", False):
-            raise SealError(f"policy {name!r} runs from the text alone, and the map suite judges success by seal's "
-                            "frames; run it on --suite alfred2d, whose judge reads the world")
+    for name in policies:  # a missing extra (saycan's language model) fails here, before any worker starts
+        policy = make_policy(name, 1)
+        if getattr(policy, "drives_itself", False):
+            getattr(policy, "scorer", None)
     m = load_map(map_path)
     library = load_library(framelib)
     vocabulary = vocabulary_of_map(m)

@@ -152,8 +152,8 @@ _WORKER: dict[str, Any] = {}
 
 
 def _init_worker(data_dir: str, split: str, limit: int | None, types: Sequence[str] | None,
-                 framelib: Sequence[str] | None) -> None:
-    _WORKER["suite"] = load_suite(data_dir, split, limit=limit, types=types)
+                 framelib: Sequence[str] | None, sample: int | None = None) -> None:
+    _WORKER["suite"] = load_suite(data_dir, split, limit=limit, types=types, sample=sample)
     _WORKER["library"] = load_library(framelib)
 
 
@@ -167,8 +167,10 @@ def _work(args: tuple[int, Sequence[str], str, int, int]) -> tuple[int, list[Out
 def run_suite(data_dir: str | Path, split: str, policies: Sequence[str], *, goal: str = "gold",
               limit: int | None = None, types: Sequence[str] | None = None, seed: int = 0, jobs: int | None = None,
               particles: int = 200, framelib: Sequence[str] | None = None,
-              progress: Callable[[int, int], None] | None = None, backend: str = "process") -> Iterator[Outcome]:
-    """Run the policies on the split's episodes (``limit`` per task type), in ``jobs`` processes;
+              progress: Callable[[int, int], None] | None = None, backend: str = "process",
+              sample: int | None = None) -> Iterator[Outcome]:
+    """Run the policies on the split's episodes (``limit`` per task type, or a stratified ``sample``
+    per task type: :func:`~seal_cli.bench.alfred2d.load_suite`), in ``jobs`` processes;
     yields the outcomes in episode order, calling ``progress(done, total)`` as episodes finish.
 
     ``backend``: ``process`` (this machine's process pool) or ``ray`` (``ray.util.multiprocessing.Pool``,
@@ -184,11 +186,12 @@ def run_suite(data_dir: str | Path, split: str, policies: Sequence[str], *, goal
         policy = make_policy(name, 1)
         if getattr(policy, "drives_itself", False):
             getattr(policy, "scorer", None)
-    suite = load_suite(data_dir, split, limit=limit, types=types, with_priors=False)
+    suite = load_suite(data_dir, split, limit=limit, types=types, with_priors=False, sample=sample)
     total = len(suite.episodes)
     jobs = max(1, min(jobs or os.cpu_count() or 1, total or 1))
     work = [(i, tuple(policies), goal, seed, particles) for i in range(total)]
-    init = (str(data_dir), split, limit, tuple(types) if types else None, tuple(framelib) if framelib else None)
+    init = (str(data_dir), split, limit, tuple(types) if types else None, tuple(framelib) if framelib else None,
+            sample)
     if backend == "ray":
         try:
             from ray.util.multiprocessing import Pool as RayPool

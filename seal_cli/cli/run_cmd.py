@@ -147,6 +147,9 @@ def tasks(
                              "sentence, parsed."),
     limit: int | None = typer.Option(None, "--limit", min=1, help="At most this many episodes per task type.",
                                      show_default=False),
+    sample: int | None = typer.Option(None, "--sample", min=1, help="A stratified sample: this many episodes "
+                                      "per task type, the same whatever --seed (instead of the first --limit).",
+                                      show_default=False),
     types: list[str] | None = typer.Option(None, "--type", help="Only this task type (repeatable).",
                                            show_default=False),
     map_name: str = typer.Option("apartment", "--map", help="With --suite map: the map (a path or a shipped "
@@ -187,6 +190,9 @@ def tasks(
         if suite != "map" and not data.is_dir():
             raise SealError(f"the {suite} suite's data is not at {data}, the default beside a checkout of seal (an "
                             "installed seal has no data): give --data DIR")
+    if limit is not None and sample is not None:
+        raise SealError("give --limit (the first episodes of each task type) or --sample (a stratified sample), "
+                        "not both")
     names = [p.strip() for p in policies.split(",") if p.strip()]
     if not names:
         raise SealError("--policies names no policy")
@@ -226,7 +232,7 @@ def tasks(
         else:
             runs = run_suite(data, split, names, goal=goal, limit=limit, types=types, seed=seed,
                              jobs=jobs or os.cpu_count() or 1, particles=particles, framelib=libs,
-                             progress=advance, backend=backend)
+                             progress=advance, backend=backend, sample=sample)
         outcomes.extend(runs)
     with outputs:  # a failure above leaves no temporary: they are removed at exit
         if episodes is not None:
@@ -241,7 +247,7 @@ def tasks(
         report.update({"suite": suite, "layouts": layouts, "seed": seed, "by_command": regroup(outcomes, names, 1),
                        "by_house": regroup(outcomes, names, 0)})
     else:
-        report.update({"suite": suite, "split": split, "goal": goal, "seed": seed, "limit": limit})
+        report.update({"suite": suite, "split": split, "goal": goal, "seed": seed, "limit": limit, "sample": sample})
     if as_json:
         emit_json(report)
     else:

@@ -31,9 +31,10 @@ import numpy as np
 
 from seal_cli.frames.library import Library
 from seal_cli.frames.taxonomy import class_key
+from seal_cli.maps.model import SPEAKER
 from seal_cli.sim.agent import Agent, Budget, Known, Record, Scene
-from seal_cli.sim.scorers import DONE, Scorer, prompt_for
-from seal_cli.sim.world import Outcome
+from seal_cli.sim.scorers import DONE, Example, Scorer, prompt_for
+from seal_cli.sim.world import PERSON, Outcome
 
 if TYPE_CHECKING:
     from seal_cli.maps.model import Map
@@ -72,6 +73,8 @@ class SkillResult:
     failed_skills: int = 0
     never_seen: list[str] = field(default_factory=list)
     records: list[Record] = field(default_factory=list)
+    known: list[str] = field(default_factory=list)
+    """The items the robot knew at the end (the map's and those it saw)."""
 
     @property
     def plan(self) -> list[str]:
@@ -103,7 +106,8 @@ class SkillRunner:
     """One SayCan run; see the module docstring."""
 
     def __init__(self, scene: Scene, library: Library, scorer: Scorer, *, rng: np.random.Generator,
-                 budget: Budget | None = None, observers: Sequence[Callable[[Record], None]] = ()) -> None:
+                 budget: Budget | None = None, observers: Sequence[Callable[[Record], None]] = (),
+                 examples: Sequence[Example] = ()) -> None:
         from seal_cli.sim.policies.coverage import CoveragePolicy
 
         self.agent = Agent(scene, library, CoveragePolicy(), rng=rng, budget=budget, observers=observers)
@@ -112,6 +116,17 @@ class SkillRunner:
         vocabulary = scene.vocabulary or tuple(sorted({i.key for i in self.world.items.values()}))
         self.movable = sorted({i.key for i in self.world.items.values() if i.movable} & set(vocabulary))
         self.seen: set[str] = set()
+        self.placed: set[str] = set()
+        """Things this run has put down: a later "find" looks for another."""
+        self.explored_all = False
+        self.acted: dict[str, str] = {}
+        """The thing of each class last acted on: what "the apple" means after slicing one."""
+        self.focus = ""
+        """The thing last gone to: what an ambiguous phrase ("pick up the book") means."""
+        self.examples = tuple(examples)
+        self.rooms = tuple(r.name for r in scene.map.rooms if not r.name.startswith("_")) if len(scene.map.rooms) > 1 \
+            else ()
+        """The map's rooms, to go to ("go to the bedroom"); none on a one-room map (ALFRED's)."""
 
     # -- candidates ----------------------------------------------------------------------------
 
@@ -128,7 +143,8 @@ class SkillRunner:
             name = words(k.cls)
             item = world.items[k.id]
             near = self._reach(k)
-            skills.append(Skill(f"go to the {name}", "go", (k.id,), UNAFFORDED if near else AFFORDED))
+            if not k.movable and k.cls != PERSON:   # a thing is gone to by finding it (below); where it stands: a no-op
+                skills.append(Skill(f"go to the {name}", "go", (k.id,)))
             if k.movable:
                 ok = near and held is None
                 skills.append(Skill(f"pick up the {name}", "pick", (k.id,), AFFORDED if ok else UNAFFORDED))
@@ -157,17 +173,65 @@ class SkillRunner:
                 if taxonomy.is_a(world.items[held].key, "cutter") is True and k.movable:
                     skills.append(Skill(f"slice the {name} with the {hname}", "slice", (k.id, held),
                                         AFFORDED if near else UNAFFORDED))
+                if taxonomy.is_a(world.items[held].key, "utensil") is True and \
+                        taxonomy.is_a(k.cls, "container") is True:
+                    skills.append(Skill(f"stir the {name} with the {hname}", "stir", (held, k.id),
+                                        AFFORDED if near else UNAFFORDED))
+                if k.cls == PERSON:
+                    person = "me" if k.id == SPEAKER else k.id
+                    skills.append(Skill(f"give the {hname} to {person}", "hand_over", (held, k.id),
+                                        AFFORDED if near else UNAFFORDED))
+            if k.cls == PERSON:
+                skills.append(Skill(f"go to {'me' if k.id == SPEAKER else k.id}", "go", (k.id,)))
+                continue
+        for room in self.rooms:
+            skills.append(Skill(f"go to the {words(room)}", "enter", (room,)))
+            if held is not None:   # put down in the room: on its nearest open place, if within reach
+                place = self.agent.surface_in(self.agent.room(room))
+                ok = place is not None and self._reach(self.agent.known[place])
+                skills.append(Skill(f"put the {words(world.items[held].key)} in the {words(room)}", "place",
+                                    (held, place or ""), AFFORDED if ok else UNAFFORDED))
         if held is not None:
             name = words(world.items[held].key)
             skills.append(Skill(f"look at the {name}", "look_at", (held,)))
+            spot = self._put_down_spot(held)
+            skills.append(Skill(f"put down the {name}", "place", (held, spot or ""),
+                                AFFORDED if spot else UNAFFORDED))
         for cls in self.movable:
             if cls not in self.seen:
                 skills.append(Skill(f"pick up the {words(cls)}", "unseen", (cls,), UNAFFORDED))
+            skills.append(Skill(f"find the {words(cls)}", "find", (cls,), self._findable(cls)))
         unique: dict[str, Skill] = {}
-        for s in skills:   # two fridges are one phrase: keep the nearer-afforded one
-            if s.text not in unique or s.affordance > unique[s.text].affordance:
+        for s in skills:   # two fridges are one phrase: keep the afforded one, the one just gone to first
+            if s.text not in unique or self._rank(s) > self._rank(unique[s.text]):
                 unique[s.text] = s
         return list(unique.values())
+
+    def _rank(self, skill: Skill) -> tuple[float, bool, bool]:
+        first = skill.args[0] if skill.args else ""
+        return skill.affordance, first == self.focus, first not in self.placed
+
+    def _targets(self, cls: str) -> list[Known]:
+        """The things of a class the robot knows and may go to: not in hand, not put down by it."""
+        return [k for k in self.agent.known.values() if k.cls == cls and k.movable and k.id not in self.placed
+                and not self.world.held_chain(k.id)]
+
+    def _findable(self, cls: str) -> float:
+        """Finding is afforded while a thing of the class is known, or none is known and something
+        is left to explore; not while the hand holds one."""
+        held = self.world.robot.holding
+        if held is not None and self.world.items[held].key == cls:
+            return UNAFFORDED
+        return AFFORDED if self._targets(cls) or not self.explored_all else UNAFFORDED
+
+    def _put_down_spot(self, held: str) -> str | None:
+        """Where "put down" puts the thing in hand: the nearest open receptacle within reach."""
+        world = self.world
+        spots = [k for k in self.agent.known.values() if k.receptacle and k.id != held
+                 and not world.held_chain(k.id) and world.items[k.id].is_open and self._reach(k)]
+        here = world.robot.pose[:2]
+        return min(spots, key=lambda k: (np.hypot(k.at[0] - here[0], k.at[1] - here[1]), k.id)).id if spots \
+            else None
 
     # -- executing -----------------------------------------------------------------------------
 
@@ -182,6 +246,10 @@ class SkillRunner:
             if view.open is not None:
                 agent.open_to_look(view.open)
             return Outcome(True, "explored")
+        if skill.action == "find":
+            return self.find(skill.args[0])
+        if skill.action == "enter":
+            return self.enter(skill.args[0])
         if skill.action == "unseen":
             world.step += 1
             return Outcome(False, f"sees no {words(skill.args[0])}")
@@ -193,11 +261,69 @@ class SkillRunner:
                 return Outcome(False, f"cannot reach {known.id}")
             agent.drive_to(cell, f"goes to {known.id}")
             world.face(known.at)
+            self.focus = known.id
             return Outcome(True, f"at {known.id}")
+        if skill.action == "place" and not skill.args[1]:
+            world.step += 1
+            return Outcome(False, "nothing open within reach to put it down on")
         outcome = world.act(skill.action, *skill.args)
+        if outcome.ok:
+            for thing in skill.args:
+                self.acted[world.items[thing].key] = thing
         if outcome.ok and skill.action == "place":
             agent.known[skill.args[0]] = agent._known(world.items[skill.args[0]])
+            self.placed.add(skill.args[0])
+        if outcome.ok and skill.action == "pick":
+            self.placed.discard(skill.args[0])
         return outcome
+
+    def enter(self, name: str) -> Outcome:
+        """Go into a room of the map: to its nearest open place (where a thing can be put down), or
+        else to its nearest free cell."""
+        agent, world = self.agent, self.world
+        room = agent.room(name)
+        place = agent.surface_in(room)
+        if place is not None:
+            return self.execute(Skill(f"go to the {words(agent.known[place].cls)}", "go", (place,)))
+        inside = np.flatnonzero(room.contains(agent.grid.free_points))
+        cells = agent.grid.free_cells[inside]
+        field_ = agent.distances()
+        costs = field_[cells[:, 0], cells[:, 1]] if len(cells) else np.zeros(0)
+        if not len(costs) or not np.isfinite(costs.min()):
+            world.step += 1
+            return Outcome(False, f"cannot drive into the {words(name)}")
+        k = int(np.argmin(costs))
+        agent.drive_to((int(cells[k, 0]), int(cells[k, 1])), f"goes into {name}")
+        return Outcome(True, f"in {name}")
+
+    def find(self, cls: str) -> Outcome:
+        """Go to the nearest known thing of the class; with none known, explore (the coverage
+        searcher's views, looking all the way) until one is seen, then go to it."""
+        agent, world = self.agent, self.world
+        while not (targets := self._targets(cls)):
+            if agent.exhausted() is not None:
+                return Outcome(False, f"no {words(cls)} found within the budget")
+            view = agent.policy.next_view(agent, None, "")  # type: ignore[arg-type]  # coverage ignores both
+            if view is None:
+                self.explored_all = True
+                world.step += 1
+                return Outcome(False, f"explored everything: no {words(cls)}")
+            agent.drive_to(view.cell, f"looks for a {words(cls)}")
+            world.face(view.look_at)
+            if view.open is not None:
+                agent.open_to_look(view.open)
+            self._look()
+        here = world.robot.pose[:2]
+        target = min(targets, key=lambda k: (k.id != self.acted.get(cls),   # "the apple": the one last acted on
+                                             np.hypot(k.at[0] - here[0], k.at[1] - here[1]), k.id))
+        cell = agent.stand_cell(target)
+        if cell is None:
+            world.step += 1
+            return Outcome(False, f"cannot reach {target.id}")
+        agent.drive_to(cell, f"goes to {target.id}")
+        world.face(target.at)
+        self.focus = target.id
+        return Outcome(True, f"at {target.id}")
 
     def run(self, instruction: str) -> SkillResult:
         agent, world = self.agent, self.world
@@ -213,7 +339,7 @@ class SkillRunner:
                 reason = stop
                 break
             skills = self.candidates()
-            logp = self.scorer.score(prompt_for(instruction, history), [s.text for s in skills])
+            logp = self.scorer.score(prompt_for(instruction, history, self.examples), [s.text for s in skills])
             lm = np.exp(logp)
             combined = lm * np.array([s.affordance for s in skills])
             if skills[int(np.argmax(lm))].affordance < AFFORDED:
@@ -236,7 +362,7 @@ class SkillRunner:
             self._look()
         named = self.named_classes(instruction)
         return SkillResult(said_done, reason, world.robot.path_m, world.step, history, unafforded, failed,
-                           sorted(c for c in named if c not in self.seen), agent.records)
+                           sorted(c for c in named if c not in self.seen), agent.records, sorted(agent.known))
 
     def _look(self) -> None:
         for d in self.agent.look(quiet=True):

@@ -20,7 +20,7 @@ if TYPE_CHECKING:
     from seal_cli.frames.library import Library
     from seal_cli.frames.model import Binding
     from seal_cli.sim.agent import Agent, Budget, Record, Scene, View
-    from seal_cli.sim.scorers import Scorer
+    from seal_cli.sim.scorers import Example, Scorer
     from seal_cli.sim.skills import SkillResult
 
 __all__ = ["SayCanPolicy"]
@@ -33,16 +33,27 @@ class SayCanPolicy(Policy):
     drives_itself: ClassVar[bool] = True
     """Runs from the instruction text (:meth:`run`), not inside the agent's plan loop."""
 
-    def __init__(self, scorer: Scorer | None = None) -> None:
+    def __init__(self, scorer: Scorer | None = None, examples: Sequence[Example] | None = None) -> None:
         self._scorer = scorer
+        self._examples = None if examples is None else tuple(examples)
 
     @property
     def scorer(self) -> Scorer:
+        """The language model: WordLlama following the prompt's worked examples unless one was given."""
         if self._scorer is None:
-            from seal_cli.sim.scorers import WordLlamaScorer
+            from seal_cli.sim.scorers import ExampleScorer, WordLlamaScorer
 
-            self._scorer = WordLlamaScorer.shared()
+            self._scorer = ExampleScorer(WordLlamaScorer.shared())
         return self._scorer
+
+    @property
+    def examples(self) -> tuple[Example, ...]:
+        """The prompt's worked examples: the shipped ones (ALFRED train) unless others were given."""
+        if self._examples is None:
+            from seal_cli.sim.scorers import load_examples
+
+            self._examples = load_examples()
+        return self._examples
 
     def next_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
         from seal_cli.errors import SealError
@@ -53,4 +64,5 @@ class SayCanPolicy(Policy):
             budget: Budget | None = None, observers: Sequence[Callable[[Record], None]] = ()) -> SkillResult:
         from seal_cli.sim.skills import SkillRunner
 
-        return SkillRunner(scene, library, self.scorer, rng=rng, budget=budget, observers=observers).run(instruction)
+        return SkillRunner(scene, library, self.scorer, rng=rng, budget=budget, observers=observers,
+                           examples=self.examples).run(instruction)
