@@ -36,6 +36,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import re
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
@@ -216,6 +217,8 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
     if things.names is not None and (on_map := _on_map(phrase, things, text, category)) is not None:
         return on_map
     value = phrase.cls or phrase.head
+    if category in ("message", "question"):    # what is said, as a name: "what's on it?" what_s_on_it
+        value = " ".join(re.findall(r"[A-Za-z0-9]+", value))
     if things.names is not None and phrase.cls and not _names(phrase, phrase.cls, things):
         value = phrase.head     # on a map, a class the words do not name is a guess: the thing said is sought
     if not class_key(value):
