@@ -601,12 +601,13 @@ class Agent:
             return Outcome(True, no)
         return Fatal(False, no, Reason.NOT_FOUND, value)
 
-    def look_over(self, ground: str) -> tuple[str, list[Known], Outcome]:
-        """Look all over a room or at a place: how to say where (``in the kitchen``, ``on desk_1``),
-        the movable things the robot knows to be there, and whether it could look at all of it."""
+    def look_over(self, ground: str, peek: bool = True) -> tuple[str, list[Known], Outcome]:
+        """Look all over a room (with ``peek``, into its closed receptacles too) or at a place: how to
+        say where (``in the kitchen``, ``on desk_1``), the movable things the robot knows to be there,
+        and whether it could look at all of it."""
         room = self.room(ground)
         if room is not None:
-            complete = self.survey(room, peek=True) if self.sweeper is not None else Outcome(
+            complete = self.survey(room, peek=peek) if self.sweeper is not None else Outcome(
                 False, "it cannot survey a room in this world")
             inside = [k for k in self.known.values() if k.movable and k.id in self.world.items
                       and not self.world.held_chain(k.id)
@@ -646,16 +647,19 @@ class Agent:
             self.answers.append(text)
             self.say("answer", f"answer: {text}", answer=text)
 
-    def _act_words(self, name: str, args: list[str]) -> Outcome:
+    def _act_words(self, name: str, args: list[str], said: str | None = None) -> Outcome:
+        """A primitive on words (a kind of thing, a message); ``said``: what the record says the robot
+        did instead of the world's own words (the answer it gives, not the message's name)."""
         outcome = self.world.act(name, *(a if self.is_person(a) else self.class_of(a) for a in args))
-        self.say("act" if outcome.ok else "fail", outcome.message, action=name, args=list(args))
+        text = said if said is not None and outcome.ok else outcome.message
+        self.say("act" if outcome.ok else "fail", text, action=name, args=list(args))
         return outcome
 
     def answer_what(self, question: Question, binding: Binding) -> Outcome:
         """"What is on the dining table?", "who is in the kitchen?": go and look, then say what
         the robot saw there (and that it could not look at all of it, if so)."""
         assert question.about is not None
-        where, found, complete = self.look_over(question.about)
+        where, found, complete = self.look_over(question.about, peek=question.asks_for != "person")
         if question.asks_for == "person":
             room = self.room(question.about)
             people = [i.id for i in self.world.items.values() if i.key == PERSON and i.id != SPEAKER
@@ -674,7 +678,7 @@ class Agent:
             went = self.go_to(recipient, binding)
             if not went.ok:
                 return went
-        return self._act_words("say", [binding.elements.get("message", "answer")])
+        return self._act_words("say", [binding.elements.get("message", "answer")], f"says: {said}")
 
     def _seen_person(self, person: str) -> bool:
         at = np.asarray([self.world.items[person].at], dtype=float)
@@ -782,7 +786,9 @@ class Agent:
             if action.name == "say" and question is not None and question.kind == "what":
                 return self.answer_what(question, binding)
             if action.name == "count":
-                self.answer(self.how_many(action.args[0], binding))
+                counted = self.how_many(action.args[0], binding)
+                self.answer(counted)
+                return self._act_words(action.name, list(action.args), f"counted: {counted}")
             return self._act_words(action.name, list(action.args))
         roles = {v: r for r, v in binding.values}
         args: list[str] = []
@@ -866,15 +872,12 @@ class Agent:
                 ended = Outcome(True, "looked all over it")
                 break
             best = self._best_view(room, sweep.lattice[inside & ~sweep.seen], costs)
-            found = sweep.frontier(self, costs) if best is None else None
-            if best is None and found is None:
-                ended = Outcome(True, "looked all over it")
+            if best is None:        # what is left, no view in the room sees enough of
+                seen = share() >= SURVEY_SEEABLE
+                ended = Outcome(seen, "looked all over it" if seen else
+                                f"it saw {100 * share():.0f} % of it: no place it can drive to sees the rest")
                 break
-            if best is not None:
-                k, goal = best
-            else:
-                assert found is not None
-                k, goal = found[1], (float(sweep.lattice[found[2]][0]), float(sweep.lattice[found[2]][1]))
+            k, goal = best
             self.say("search", f"looks all over the {name}", target=room.name)
             self.drive_to((int(cells[k, 0]), int(cells[k, 1])), "goes to look")
             self.world.face(goal)
@@ -995,6 +998,10 @@ beat one across the room that sees much)."""
 SURVEY_NEAR = 0.6
 """What of a room there is to look at: the points within this many metres of free space (things
 stand on the floor or on furniture beside it, not inside walls or deep in a bed's blob)."""
+
+SURVEY_SEEABLE = 0.8
+"""When no view inside a room sees 3 more of its points, the room was looked all over if the robot
+saw this share of it (the rest is wall faces and the backs of furniture); else it says how much it saw."""
 
 SURVEY_SHARE = 0.95
 """A room is looked all over when the robot has seen this share of it (a lattice of 0.25 m over the
