@@ -9,8 +9,9 @@ Tell with the question as its message — but the *kind* of answer a person expe
   (and where) or no, from what the robot saw where the question asks;
 - ``how_many``: a Count; the answer is how many the robot saw there;
 - ``what``: a Tell whose message asks what is on, in or at a place or in a room ("what's in the
-  fridge?", "who is in the kitchen?"); ``about`` is the map's place or room, ``relation`` the
-  word that relates them. The robot goes and looks, and the answer lists what it saw.
+  fridge?", "who is in the kitchen?"), or a Find of nothing in particular somewhere ("look in the
+  fridge"); ``about`` is the map's place or room, ``relation`` the word that relates them. The
+  robot goes and looks, and the answer lists what it saw.
 
 A question is read from words only (the frame's span in the text, the message's words) and
 grounded with :class:`~seal_cli.planning.grounding.MapNames`: never from the map's objects.
@@ -74,6 +75,17 @@ def _what(message: str, names: MapNames | None) -> Question | None:
     return None
 
 
+def _looked_at(bindings: Sequence[Binding], names: MapNames | None) -> Question | None:
+    """A Find with a ground and no theme ("look in the fridge", "look around the kitchen") asks what
+    is there."""
+    ground = bindings[0].elements.get("ground") if bindings else None
+    referent = names.by_id(ground) if names is not None and ground is not None else None
+    if referent is None or referent.kind not in ("room", "place"):
+        return None
+    place = names.map.place(referent.id) if names is not None and referent.kind == "place" else None
+    return Question("what", referent.id, "on" if place is not None and not place.openable else "in")
+
+
 def read_questions(parse: Parse, commanded: Sequence[Binding], names: MapNames | None) -> dict[Binding, Question]:
     """The question each commanded frame answers (frames that answer none are left out).
 
@@ -87,7 +99,9 @@ def read_questions(parse: Parse, commanded: Sequence[Binding], names: MapNames |
             k += 1
         first = parse.text[evoked.span[0]:evoked.span[1]].lower().split()[:1]
         question: Question | None = None
-        if evoked.frame == "Find":
+        if evoked.frame == "Find" and "theme" not in evoked.elements:    # "look in the fridge": what is there
+            question = _looked_at(commanded[start:k], names)
+        elif evoked.frame == "Find":
             question = Question("whether" if first and first[0] in ASKING_WHETHER else "where")
         elif evoked.frame == "Count":
             question = Question("how_many")

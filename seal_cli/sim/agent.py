@@ -315,6 +315,11 @@ class Agent:
                 acted = True
             if not outcome.ok:
                 return outcome
+        question = self.questions.get(binding)
+        if question is not None and question.kind == "what" and not any(a.name == "say" for a in binding.actions):
+            answered = self.answer_what(question, binding)     # "look in the fridge": says what it saw
+            if not answered.ok:
+                return answered
         hand_empty = any(f.predicate == "hand_empty" and not f.negated for f in binding.postconditions)
         if hand_empty and self.world.robot.holding is not None and not any(
                 a.name in ("place", "hand_over") for a in binding.actions):
@@ -678,7 +683,9 @@ class Agent:
             went = self.go_to(recipient, binding)
             if not went.ok:
                 return went
-        return self._act_words("say", [binding.elements.get("message", "answer")], f"says: {said}")
+        if "message" not in binding.elements:
+            return Outcome(True, said)
+        return self._act_words("say", [binding.elements["message"]], f"says: {said}")
 
     def _seen_person(self, person: str) -> bool:
         at = np.asarray([self.world.items[person].at], dtype=float)

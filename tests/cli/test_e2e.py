@@ -191,3 +191,8 @@ def test_find_goes_back_to_where_it_saw_the_thing(library: object, shared_data: 
                                rng=np.random.default_rng(0))
     assert result.completed and result.answer == "cup_1 is in the bedroom at (-7.50, 2.50)"
     assert agent.in_view("cup_1")
+
+
+def test_look_in_a_place_says_what_is_there() -> None:
+    report = run_json("look in the fridge")
+    assert report["completed"] and report["answer"] == "in fridge_1: apple_1"

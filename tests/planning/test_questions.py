@@ -45,3 +45,8 @@ def test_a_message_that_asks_nothing_of_the_map_is_no_question(library: Library)
 def test_a_question_kind_is_checked() -> None:
     with pytest.raises(ValueError, match="one of where, whether, how_many, what"):
         Question("why")
+
+
+def test_looking_somewhere_for_nothing_in_particular_asks_what_is_there(library: Library) -> None:
+    assert asked("look in the fridge", library) == [("Find(ground=fridge_1)", Question("what", "fridge_1", "in"))]
+    assert asked("look around the kitchen", library) == [("Find(ground=kitchen)", Question("what", "kitchen", "in"))]
