@@ -344,6 +344,8 @@ def _counted_roles(frame: Frame) -> set[str]:
 
 def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Binding]:
     """The grounded frames a parse commands, in order; a counted element repeats its frame."""
+    from seal_cli.planning.questions import asks_whether
+
     earlier: list[dict[str, tuple[str, ...]]] = []
     bindings: list[Binding] = []
     for evoked in parse.frames:
@@ -353,6 +355,8 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         for role in _counted_roles(frame):      # "count the cups": one Count of the class
             if role in values:
                 values[role] = (things.class_of(values[role][0]),)
+        if "theme" in values and asks_whether(parse.text, evoked):    # "are there any cups ...?": one is enough
+            values["theme"] = values["theme"][:1]
         for element in frame.elements:
             if element.role not in values and element.default is not None:
                 values[element.role] = (things.name(element.default),)

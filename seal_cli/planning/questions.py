@@ -23,10 +23,10 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from seal_cli.frames.model import Binding
-from seal_cli.language.values import Parse
+from seal_cli.language.values import Evoked, Parse
 from seal_cli.planning.grounding import MapNames, words_of
 
-__all__ = ["KINDS", "Question", "read_questions"]
+__all__ = ["KINDS", "Question", "asks_whether", "read_questions"]
 
 KINDS = ("where", "whether", "how_many", "what")
 
@@ -55,6 +55,13 @@ class Question:
     def __post_init__(self) -> None:
         if self.kind not in KINDS:
             raise ValueError(f"a question is one of {', '.join(KINDS)}, not {self.kind!r}")
+
+
+def asks_whether(text: str, evoked: Evoked) -> bool:
+    """Whether a Find asks whether ("*is* there a cup ...?", "*are* there any spoons ...?"): at least one
+    is enough, so a plural asks for the kind once."""
+    first = text[evoked.span[0]:evoked.span[1]].lower().split()[:1]
+    return evoked.frame == "Find" and bool(first) and first[0] in ASKING_WHETHER
 
 
 def _what(message: str, names: MapNames | None) -> Question | None:
@@ -97,12 +104,11 @@ def read_questions(parse: Parse, commanded: Sequence[Binding], names: MapNames |
         start = k
         while k < len(commanded) and commanded[k].frame.name == evoked.frame:
             k += 1
-        first = parse.text[evoked.span[0]:evoked.span[1]].lower().split()[:1]
         question: Question | None = None
         if evoked.frame == "Find" and "theme" not in evoked.elements:    # "look in the fridge": what is there
             question = _looked_at(commanded[start:k], names)
         elif evoked.frame == "Find":
-            question = Question("whether" if first and first[0] in ASKING_WHETHER else "where")
+            question = Question("whether" if asks_whether(parse.text, evoked) else "where")
         elif evoked.frame == "Count":
             question = Question("how_many")
         elif evoked.frame == "Tell" and (message := evoked.elements.get("message")) is not None:
