@@ -81,7 +81,8 @@ class View:
 
 @dataclass(frozen=True)
 class Record:
-    """One line of what the robot did: ``kind`` is warn, plan, go, look, see, act, fail, replan, done or give_up."""
+    """One line of what the robot did: ``kind`` is warn, plan, frame, search, go, look, see, act,
+    answer, fail, replan, done or give_up."""
 
     kind: str
     text: str
