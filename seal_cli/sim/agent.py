@@ -588,6 +588,10 @@ class Agent:
         if found:
             target = self.nearest(found) or found[0].id
             self.chosen[class_key(value)] = target
+            if not self.in_view(target):         # seen earlier in the survey: back to it
+                went = self.go_to(value, binding)
+                if not went.ok:
+                    return went
             shut = self.world.enclosure(target)
             if shut is not None and self.world.within_reach(shut.id):     # seen inside: open it to show it
                 self.open_to_look(shut.id)
