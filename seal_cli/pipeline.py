@@ -117,9 +117,11 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
     without the map's objects, which the robot must find; ``holding`` overrides what the map's
     robot holds. A room or a fixed thing the map lacks raises SealError before anything moves; a
     kind of thing the map knows nothing of is warned about and searched for in the whole house.
+    A question (:mod:`seal_cli.planning.questions`) is answered from what the robot sees.
     """
     from seal_cli.maps.model import Robot
-    from seal_cli.planning.grounding import spoken
+    from seal_cli.planning.grounding import MapNames, spoken
+    from seal_cli.planning.questions import read_questions
     from seal_cli.sim.agent import Agent, scene_from_map
     from seal_cli.sim.policies import make_policy
 
@@ -130,8 +132,9 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
     parses = [parse_command(spoken(t), library, vocabulary) for t in (*done, text)]
     problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=m.known(),
                             vocabulary=vocabulary)
+    questions = read_questions(parses[-1], problem.commanded, MapNames(m, library.taxonomy))
     agent = Agent(scene_from_map(m, library), library, policy, rng=rng, budget=budget, observers=observers,
-                  classes=problem.state.classes, sweeper=lambda: make_policy("coverage"))
+                  classes=problem.state.classes, sweeper=lambda: make_policy("coverage"), questions=questions)
     executed = [b for p in parses[:-1] for b in build_problem(p, library, map=m.known()).commanded]
     for warning in problem.warnings:
         agent.say("warn", f"warning: {warning}")

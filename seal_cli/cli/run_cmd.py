@@ -25,7 +25,7 @@ SUITES = ("alfred2d", "map", "context")
 
 KIND_STYLE = {"warn": "yellow", "plan": "bold", "frame": "bold cyan", "search": "yellow", "go": "", "see": "green",
               "look": "dim", "act": "green", "fail": "red", "replan": "magenta", "done": "bold green",
-              "give_up": "bold red"}
+              "give_up": "bold red", "answer": "bold magenta"}
 
 
 def _narrate(record: Any) -> None:

@@ -7,7 +7,8 @@ them. A map thing is called by (lemmatised words, articles and possessives dropp
 - a **place** by its name without its number ("dining_table_1": "the dining table"), by its name
   with the number ("sofa 2"), by its class and the class's other names in the library's synonyms
   ("sofa": "the couch", "the settee"), and, less surely, by the last word of its name or class
-  ("the table" for a dining table, not for a nightstand that is also a "night table");
+  ("the table" for a dining table, not for a nightstand that is also a "night table") or by the
+  first words of a compound name ("the tv" for a tv stand: what the stand is for stands on it);
 - a **person** by their name ("Roger"); the **speaker** by "me", "I", "us" (:data:`SPEAKER`).
 
 A phrase is split at its first relational word ("the couch *in* the living room"): the words
@@ -38,7 +39,7 @@ from seal_cli.frames.taxonomy import Taxonomy, class_key, class_words
 from seal_cli.language.lexicon import noun_lemma
 from seal_cli.maps.model import SPEAKER, Map
 
-__all__ = ["FIXED", "ROOM_WORDS", "SPEAKER_WORDS", "MapNames", "Referent", "Refusal", "spoken"]
+__all__ = ["FIXED", "HERE", "ROOM_WORDS", "SPEAKER_WORDS", "MapNames", "Referent", "Refusal", "spoken"]
 
 FIXED = "fixed"
 """The library category of what never moves: furniture, appliances, fixtures and rooms."""
@@ -54,6 +55,9 @@ lists is known *not* to be in the others ("open the garage" must stay possible).
 
 SPEAKER_WORDS = frozenset({"me", "i", "us", "myself", "ourselves", "we"})
 """Who the speaker is called in a command."""
+
+HERE = frozenset({"here", "over here"})
+"""Where the speaker is ("come here", "bring the cup here"): a robot told "here" goes to the speaker."""
 
 RELATIONS = ("next to", "close to", "in front of", "on top of", "in", "on", "at", "inside", "near", "by",
              "beside", "under", "behind", "within", "from", "of")
@@ -145,6 +149,9 @@ class MapNames:
                 best = max(best, 2 + len(name))
         if not best and words and words[-1] in referent.heads:
             best = 1
+        if not best and words and any(len(name) > len(words) and name[:len(words)] == words
+                                      for name in referent.names[:3]):
+            best = 1            # "the tv": the tv stand (what a compound name is for stands on it)
         return best
 
     def candidates(self, words: tuple[str, ...], kinds: Iterable[str] = ("room", "place", "person")

@@ -36,6 +36,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import re
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
@@ -216,6 +217,8 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
     if things.names is not None and (on_map := _on_map(phrase, things, text, category)) is not None:
         return on_map
     value = phrase.cls or phrase.head
+    if category in ("message", "question"):    # what is said, as a name: "what's on it?" what_s_on_it
+        value = " ".join(re.findall(r"[A-Za-z0-9]+", value))
     if things.names is not None and phrase.cls and not _names(phrase, phrase.cls, things):
         value = phrase.head     # on a map, a class the words do not name is a guess: the thing said is sought
     if not class_key(value):
@@ -240,10 +243,13 @@ def _names(phrase: Phrase, cls: str, things: Things) -> bool:
 def _on_map(phrase: Phrase, things: Things, text: str, category: str) -> tuple[str, ...] | None:
     """The map's person, room or place a phrase names (see :mod:`seal_cli.planning.grounding`);
     None for an object, which the robot must find."""
-    from seal_cli.planning.grounding import SPEAKER_WORDS, person_value
+    from seal_cli.planning.grounding import HERE, SPEAKER_WORDS, person_value
 
     names = things.names
     assert names is not None and things.map is not None
+    if phrase.kind == "place" and phrase.head.lower() in HERE:    # "come here": where the speaker is
+        things.people.add(SPEAKER)
+        return (SPEAKER,)
     if phrase.head.lower() in SPEAKER_WORDS or phrase.kind == "person" \
             or things.taxonomy.is_a(category, "person") is True and category != "thing":
         value = person_value(phrase.text or phrase.head, phrase.head, {p.key: p for p in things.map.people})
@@ -300,10 +306,29 @@ def _check_types(frame: Frame, values: Mapping[str, tuple[str, ...]], phrases: M
                 raise _located(f"{frame.name} needs its {role} to be an object the robot can handle, and "
                                f"{_said(phrase, name)} is {where}" + (f" (the library's {frame.name}: {what})"
                                                                       if what else ""), phrase, text)
+            held = any(f.predicate == "holding" and f.args == (role,) and not f.negated for f in frame.preconditions)
+            if held and (name in things.fixed or things.taxonomy.is_a(cls, FIXED) is True):
+                phrase = phrases.get(role)
+                raise _located(f"{frame.name} needs to hold its {role}, and {_said(phrase, name)} is "
+                               f"{'fixed in the map' if name in things.fixed else 'fixed: it never moves'}",
+                               phrase, text)
             if things.taxonomy.is_a(things.class_of(name), element.type) is False:
                 phrase = phrases.get(role)
                 raise _located(f"{frame.name} needs its {role} to be {element.type}, and "
                                f"{_said(phrase, name)} is not", phrase, text)
+
+
+def _to_recipient(frame: Frame, values: dict[str, tuple[str, ...]], things: Things) -> None:
+    """A person said where a place was expected ("bring the cup *here*", to the speaker) is who
+    receives the thing, when the frame has an unfilled element for a person."""
+    for element in frame.elements:
+        if element.type != "location" or element.role not in values:
+            continue
+        if not all(v in things.people for v in values[element.role]):
+            continue
+        person = next((e.role for e in frame.elements if e.type == "person" and e.role not in values), None)
+        if person is not None:
+            values[person] = values.pop(element.role)
 
 
 COUNTING = frozenset({"count"})
@@ -319,6 +344,8 @@ def _counted_roles(frame: Frame) -> set[str]:
 
 def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Binding]:
     """The grounded frames a parse commands, in order; a counted element repeats its frame."""
+    from seal_cli.planning.questions import asks_whether
+
     earlier: list[dict[str, tuple[str, ...]]] = []
     bindings: list[Binding] = []
     for evoked in parse.frames:
@@ -328,9 +355,12 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         for role in _counted_roles(frame):      # "count the cups": one Count of the class
             if role in values:
                 values[role] = (things.class_of(values[role][0]),)
+        if "theme" in values and asks_whether(parse.text, evoked):    # "are there any cups ...?": one is enough
+            values["theme"] = values["theme"][:1]
         for element in frame.elements:
             if element.role not in values and element.default is not None:
                 values[element.role] = (things.name(element.default),)
+        _to_recipient(frame, values, things)
         _check_types(frame, values, evoked.elements, things, parse.text)
         earlier.append(values)
         roles = [r for r in frame.roles if r in values]

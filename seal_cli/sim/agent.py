@@ -39,6 +39,7 @@ from seal_cli.frames.library import Library
 from seal_cli.frames.model import Action, Binding, Fact
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.model import SPEAKER, Map
+from seal_cli.planning.questions import Question
 from seal_cli.planning.state import State
 from seal_cli.sim.navigation import Cell, Grid
 from seal_cli.sim.policies.base import Policy
@@ -80,7 +81,8 @@ class View:
 
 @dataclass(frozen=True)
 class Record:
-    """One line of what the robot did: ``kind`` is warn, plan, go, look, see, act, fail, replan, done or give_up."""
+    """One line of what the robot did: ``kind`` is warn, plan, frame, search, go, look, see, act,
+    answer, fail, replan, done or give_up."""
 
     kind: str
     text: str
@@ -131,7 +133,8 @@ class Agent:
     def __init__(self, scene: Scene, library: Library, policy: Policy, *, rng: np.random.Generator,
                  budget: Budget | None = None, planner: Callable[..., list[Binding]] | None = None,
                  observers: Sequence[Callable[[Record], None]] = (), look_every: float = 1.0,
-                 classes: Mapping[str, str] | None = None, sweeper: Callable[[], Any] | None = None) -> None:
+                 classes: Mapping[str, str] | None = None, sweeper: Callable[[], Any] | None = None,
+                 questions: Mapping[Binding, Question] | None = None) -> None:
         self.scene = scene
         self.world = scene.world
         self.grid = scene.grid
@@ -171,6 +174,9 @@ class Agent:
         """What the robot found out for a question (Find: where; Count: how many)."""
         self.sweep: Any = None
         """The whole-house search for what no prior or detector knows of, started when needed."""
+        self.questions: dict[Binding, Question] = dict(questions or {})
+        """What each commanded frame asks (:mod:`seal_cli.planning.questions`); a Find, Count or Tell
+        that asks nothing is a plain command."""
         self._learn_places(policy.oracle)
 
     # -- knowledge ---------------------------------------------------------------------------
@@ -310,6 +316,11 @@ class Agent:
                 acted = True
             if not outcome.ok:
                 return outcome
+        question = self.questions.get(binding)
+        if question is not None and question.kind == "what" and not any(a.name == "say" for a in binding.actions):
+            answered = self.answer_what(question, binding)     # "look in the fridge": says what it saw
+            if not answered.ok:
+                return answered
         hand_empty = any(f.predicate == "hand_empty" and not f.negated for f in binding.postconditions)
         if hand_empty and self.world.robot.holding is not None and not any(
                 a.name in ("place", "hand_over") for a in binding.actions):
@@ -515,8 +526,15 @@ class Agent:
         return self.class_of(value).replace("_", " ")
 
     def search_for(self, value: str, binding: Binding) -> Outcome:
-        """``search(value)``: look (as ``navigate`` would) until a thing of that kind is known."""
+        """``search(value)``: look (as ``navigate`` would) until a thing of that kind is known, go back
+        to where it was seen if it is out of sight now, and see it. With a ``ground`` (a room or a
+        place: "is there a cup in the kitchen?") only there (:meth:`search_in`)."""
         role = next((r for r, v in binding.values if v == value), None)
+        ground = binding.elements.get("ground")
+        question = self.questions.get(binding)
+        if ground is not None and not self.is_person(value) and (self.room(ground) is not None
+                                                                 or self._is_place(ground)):
+            return self.search_in(value, binding, ground, question)
         if self.is_person(value) and not self.world.within_reach(value):    # told where: goes to see them
             went = self.go_to(value, binding)
             if not went.ok:
@@ -525,13 +543,158 @@ class Agent:
             if (stop := self.exhausted()) is not None:
                 return Fatal(False, stop, Reason.BUDGET)
             if (ended := self.look_once(value, binding)) is not None:
+                if ended.reason is Reason.NOT_FOUND:
+                    self.answer(f"no {self.said(value)} found: {ended.message}")
                 return ended
         target = self.resolve(value, binding, role)
+        if target is not None and target in self.known and not self.in_view(target):
+            went = self.go_to(value, binding)     # seen before, from elsewhere: back to where it was seen
+            if not went.ok:
+                return went
         if target is not None and target in self.known:
             self.world.face(self.known[target].at)
-            if (answer := self.where_is(target)) not in self.answers:
-                self.answers.append(answer)
-        return Outcome(True, f"found {target}")
+            answer = self.where_is(target)
+            if question is not None and question.kind == "whether":
+                answer = self._whether_person(target, ground, answer)
+            self.answer(answer)
+        return self._act_words("search", [value])
+
+    def _is_place(self, value: str) -> bool:
+        item = self.world.items.get(value)
+        return item is not None and not item.movable and item.key != PERSON
+
+    def _whether_person(self, person: str, ground: str | None, where: str) -> str:
+        """Yes or no to "is Anna in the kitchen?", from where the robot found her."""
+        room = self.room(ground) if ground else None
+        if room is None:
+            return f"yes: {where}"
+        inside = bool(room.contains([self.world.position(person)])[0])
+        return f"yes: {where}" if inside else f"no: {where}"
+
+    def in_view(self, item_id: str) -> bool:
+        """Whether the robot sees the thing from where it stands (a person: has them within reach)."""
+        if self.is_person(item_id):
+            return self.world.within_reach(item_id)
+        return self.world.held_chain(item_id) or any(d.id == item_id for d in self.world.observe())
+
+    def search_in(self, value: str, binding: Binding, ground: str, question: Question | None) -> Outcome:
+        """Look for a thing where the command says, and only there: all over a room (and into its
+        closed receptacles), or at a place (into it if it opens). Yes and where, or no; a "no" is
+        the answer to a question ("is there ..."), and not found for a command ("find the cup in the
+        kitchen"). Things the robot saw elsewhere are mentioned, never the map's hidden truth."""
+        key = self.class_of(value)
+        where, found, complete = self.look_over(ground)
+        found = [k for k in found if k.cls == key]
+        if found:
+            target = self.nearest(found) or found[0].id
+            self.chosen[class_key(value)] = target
+            if not self.in_view(target):         # seen earlier in the survey: back to it
+                went = self.go_to(value, binding)
+                if not went.ok:
+                    return went
+            shut = self.world.enclosure(target)
+            if shut is not None and self.world.within_reach(shut.id):     # seen inside: open it to show it
+                self.open_to_look(shut.id)
+            self.world.face(self.known[target].at)
+            answer = self.where_is(target)
+            self.answer(f"yes: {answer}" if question is not None and question.kind == "whether" else answer)
+            return self._act_words("search", [value])
+        said = self.said(value)
+        elsewhere = [k.id for k in self.known.values() if k.cls == key and k.movable and k.id in self.world.items]
+        also = f"; elsewhere it saw: {'; '.join(self.where_is(i) for i in elsewhere[:3])}" if elsewhere else ""
+        if complete:
+            no = f"no {said} {where} (it looked all over it){also}"
+        else:
+            no = f"no {said} seen {where}, but it could not look all over it ({complete.message}){also}"
+        self.answer(no)
+        if question is not None and question.kind == "whether":
+            return Outcome(True, no)
+        return Fatal(False, no, Reason.NOT_FOUND, value)
+
+    def look_over(self, ground: str, peek: bool = True) -> tuple[str, list[Known], Outcome]:
+        """Look all over a room (with ``peek``, into its closed receptacles too) or at a place: how to
+        say where (``in the kitchen``, ``on desk_1``), the movable things the robot knows to be there,
+        and whether it could look at all of it."""
+        room = self.room(ground)
+        if room is not None:
+            complete = self.survey(room, peek=peek) if self.sweeper is not None else Outcome(
+                False, "it cannot survey a room in this world")
+            inside = [k for k in self.known.values() if k.movable and k.id in self.world.items
+                      and not self.world.held_chain(k.id)
+                      and bool(room.contains([self.world.position(k.id)])[0])]
+            return f"in the {room.name.replace('_', ' ')}", inside, complete
+        place = self.world.items[ground]
+        complete = Outcome(True, "looked")
+        if not self.world.within_reach(ground):
+            cell = self.stand_cell(self.known[ground])
+            if cell is None:
+                complete = Outcome(False, f"{ground} cannot be reached")
+            else:
+                self.drive_to(cell, f"goes to {ground}")
+        if complete.ok:
+            self.world.face(place.at)
+            complete = self.peek(ground) if place.openable and not place.is_open else Outcome(True, "looked")
+            self.look()
+        on = [k for k in self.known.values() if k.movable and k.parent == ground and k.id in self.world.items
+              and self.world.items[k.id].parent == ground]
+        return f"{'in' if place.openable else 'on'} {ground}", on, complete
+
+    def peek(self, place: str) -> Outcome:
+        """Open a closed place within reach, look inside, and close it again (as it was found)."""
+        opened = self.world.act("open", place)
+        self.say("act" if opened.ok else "fail", opened.message, action="open", args=[place])
+        if not opened.ok:
+            return Outcome(False, f"could not open {place}: {opened.message}")
+        self.opened.add(place)
+        self.look()
+        closed = self.world.act("close", place)
+        self.say("act" if closed.ok else "fail", closed.message, action="close", args=[place])
+        return Outcome(True, f"looked into {place}")
+
+    def answer(self, text: str) -> None:
+        """Keep what the robot found out for the question (said once)."""
+        if text not in self.answers:
+            self.answers.append(text)
+            self.say("answer", f"answer: {text}", answer=text)
+
+    def _act_words(self, name: str, args: list[str], said: str | None = None) -> Outcome:
+        """A primitive on words (a kind of thing, a message); ``said``: what the record says the robot
+        did instead of the world's own words (the answer it gives, not the message's name)."""
+        outcome = self.world.act(name, *(a if self.is_person(a) else self.class_of(a) for a in args))
+        text = said if said is not None and outcome.ok else outcome.message
+        self.say("act" if outcome.ok else "fail", text, action=name, args=list(args))
+        return outcome
+
+    def answer_what(self, question: Question, binding: Binding) -> Outcome:
+        """"What is on the dining table?", "who is in the kitchen?": go and look, then say what
+        the robot saw there (and that it could not look at all of it, if so)."""
+        assert question.about is not None
+        where, found, complete = self.look_over(question.about, peek=question.asks_for != "person")
+        if question.asks_for == "person":
+            room = self.room(question.about)
+            people = [i.id for i in self.world.items.values() if i.key == PERSON and i.id != SPEAKER
+                      and room is not None and bool(room.contains([i.at])[0]) and self._seen_person(i.id)]
+            names = people
+            nothing = f"nobody {where}"
+        else:
+            names = [k.id for k in found]
+            nothing = f"nothing {where}"
+        said = f"{where}: {', '.join(names)}" if names else nothing
+        if not complete:
+            said += f" (it could not look all over it: {complete.message})"
+        self.answer(said)
+        recipient = binding.elements.get("recipient")
+        if recipient is not None and recipient in self.world.items:
+            went = self.go_to(recipient, binding)
+            if not went.ok:
+                return went
+        if "message" not in binding.elements:
+            return Outcome(True, said)
+        return self._act_words("say", [binding.elements["message"]], f"says: {said}")
+
+    def _seen_person(self, person: str) -> bool:
+        at = np.asarray([self.world.items[person].at], dtype=float)
+        return any(bool(np.asarray(self.world.sensor.visible(pose, at))[0]) for pose in self.looks[-SURVEY_VIEWS * 4:])
 
     def where_is(self, item_id: str) -> str:
         """Where a thing is, as the answer to "where is it?": on or in its place, in its room, at x, y."""
@@ -630,16 +793,15 @@ class Agent:
         receptacle in the way is opened, and the action tried once more."""
         if action.name in WORDS:  # a message to say, a kind of thing to count: words, not items
             if action.name == "search":
-                found = self.search_for(action.args[0], binding)
-                if not found.ok:
-                    return found
-            outcome = self.world.act(action.name, *(a if self.is_person(a) else self.class_of(a)
-                                                    for a in action.args))
-            self.say("act" if outcome.ok else "fail", outcome.message, action=action.name, args=list(action.args))
-            if outcome.ok and action.name == "count" and (answer := self.how_many(action.args[0], binding)) \
-                    not in self.answers:
-                self.answers.append(answer)
-            return outcome
+                return self.search_for(action.args[0], binding)
+            question = self.questions.get(binding)
+            if action.name == "say" and question is not None and question.kind == "what":
+                return self.answer_what(question, binding)
+            if action.name == "count":
+                counted = self.how_many(action.args[0], binding)
+                self.answer(counted)
+                return self._act_words(action.name, list(action.args), f"counted: {counted}")
+            return self._act_words(action.name, list(action.args))
         roles = {v: r for r, v in binding.values}
         args: list[str] = []
         for value in action.args:
@@ -675,44 +837,113 @@ class Agent:
 
     def how_many(self, value: str, binding: Binding) -> str:
         """How many things of a kind there are where the command says: in a room, every one the
-        robot has seen there once it has looked all over the room (:meth:`survey`); elsewhere,
-        those it sees from where it counts."""
+        robot has seen there once it has looked all over the room and into its closed receptacles
+        (:meth:`look_over`); at a place, those on or in it; elsewhere, those it sees from where it
+        counts. Said with how far it could look, when it could not look at all of it."""
         key = self.class_of(value)
         ground = binding.elements.get("ground")
-        room = self.room(ground) if ground else None
-        if room is not None and self.sweeper is not None:
-            self.survey(room)
-            n = sum(1 for k in self.known.values() if k.cls == key and k.movable
-                    and bool(room.contains([self.world.position(k.id)])[0]))
-        else:
-            n = sum(class_key(d.cls) == key for d in self.world.observe())
-        where = f" in the {ground.replace('_', ' ')}" if ground else ""
         noun = key.replace("_", " ")
+        if ground is not None and (self._is_place(ground) or self.room(ground) is not None and self.sweeper):
+            where, found, complete = self.look_over(ground)
+            n = sum(1 for k in found if k.cls == key)
+            note = "" if complete else f" seen, but it could not look all over it ({complete.message})"
+            return f"{n} {noun}{'' if n == 1 else 's'} {where}{note}"
+        n = sum(class_key(d.cls) == key for d in self.world.observe())
+        where = f" in the {ground.replace('_', ' ')}" if ground else " in view"
         return f"{n} {noun}{'' if n == 1 else 's'}{where}"
 
-    def survey(self, room: Any, views: int | None = None) -> None:
+    def survey(self, room: Any, views: int | None = None, peek: bool = False) -> Outcome:
         """Look all over a room: to the nearest part of it not yet seen, until all of it is (at
-        most ``views`` views, default :data:`SURVEY_VIEWS`, within the budget)."""
+        most ``views`` views, default :data:`SURVEY_VIEWS`, within the budget); with ``peek``, then
+        into each closed receptacle in it not yet looked into. Ok when there was nothing more to
+        see; else why it stopped."""
         assert self.sweeper is not None
         sweep = self.sweeper()
         sweep.begin(self)
-        sweep.seen |= ~room.contains(sweep.lattice)
+        from scipy.spatial import cKDTree
+
+        near, _ = cKDTree(self.grid.free_points).query(sweep.lattice, distance_upper_bound=SURVEY_NEAR)
+        inside = room.contains(sweep.lattice) & np.isfinite(near)   # where things stand: beside free space
+        sweep.seen |= ~inside
         for pose in self.looks:
             sweep.seen |= self.world.sensor.visible(pose, sweep.lattice)
         cells = self.grid.free_cells
-        for _ in range(SURVEY_VIEWS if views is None else views):
-            if self.exhausted() is not None:
-                return
+        name = room.name.replace("_", " ")
+
+        def share() -> float:
+            return float(sweep.seen[inside].mean()) if inside.any() else 1.0
+
+        limit = SURVEY_VIEWS if views is None else views
+        ended = Outcome(False, f"it saw {100 * share():.0f} % of it in {limit} views")
+        for _ in range(limit):
+            if (stop := self.exhausted()) is not None:
+                return Outcome(False, f"{stop}; it saw {100 * share():.0f} % of it", Reason.BUDGET)
             field_ = self.distances()
-            found = sweep.frontier(self, field_[cells[:, 0], cells[:, 1]])
-            if found is None:
-                return
-            _, k, u = found
-            self.say("search", f"looks all over the {room.name.replace('_', ' ')}", target=room.name)
+            costs = field_[cells[:, 0], cells[:, 1]]
+            if share() >= SURVEY_SHARE:
+                ended = Outcome(True, "looked all over it")
+                break
+            best = self._best_view(room, sweep.lattice[inside & ~sweep.seen], costs)
+            if best is None:        # what is left, no view in the room sees enough of
+                seen = share() >= SURVEY_SEEABLE
+                ended = Outcome(seen, "looked all over it" if seen else
+                                f"it saw {100 * share():.0f} % of it: no place it can drive to sees the rest")
+                break
+            k, goal = best
+            self.say("search", f"looks all over the {name}", target=room.name)
             self.drive_to((int(cells[k, 0]), int(cells[k, 1])), "goes to look")
-            self.world.face(tuple(sweep.lattice[u]))
+            self.world.face(goal)
             self.look()
             sweep.seen |= self.world.sensor.visible(self.world.robot.pose, sweep.lattice)
+        else:
+            ended = Outcome(share() >= SURVEY_SHARE, f"it saw {100 * share():.0f} % of it in {limit} views")
+        if not peek:
+            return ended
+        shut = [k for k in self.known.values() if not k.movable and k.openable and k.id not in self.opened
+                and not self.world.items[k.id].is_open and bool(room.contains([k.at])[0])]
+        while shut:
+            if (stop := self.exhausted()) is not None:
+                return Outcome(False, stop, Reason.BUDGET)
+            field_ = self.distances()
+            box = min(shut, key=lambda s: field_[c] if (c := self.stand_cell(s, field_)) is not None else np.inf)
+            shut.remove(box)
+            cell = self.stand_cell(box, field_)
+            if cell is None:
+                ended = Outcome(False, f"{box.id} cannot be reached to look inside")
+                continue
+            self.say("search", f"looks into {box.id}", target=room.name)
+            self.drive_to(cell, f"goes to {box.id}")
+            self.world.face(box.at)
+            peeked = self.peek(box.id)
+            if not peeked.ok:
+                ended = peeked
+        return ended
+
+    def _best_view(self, room: Any, unseen: np.ndarray, costs: np.ndarray
+                   ) -> tuple[int, tuple[float, float]] | None:
+        """The next view to look all over a room from (next best view): among the free cells of the
+        room about a metre apart, the one that sees the most of what is unseen of it per metre
+        driven (plus :data:`VIEW_COST` for the look); None when no view there sees enough
+        (:data:`VIEW_GAIN` of the room's points, at least 3) to be worth the drive."""
+        if len(unseen) < 3:
+            return None
+        cells, points = self.grid.free_cells, self.grid.free_points
+        stride = max(1, round(1.0 / self.grid.resolution))
+        here = self.robot_cell()
+        pick = np.flatnonzero((cells[:, 0] % stride == 0) & (cells[:, 1] % stride == 0) & np.isfinite(costs)
+                              & ~((cells[:, 0] == here[0]) & (cells[:, 1] == here[1])) & room.contains(points))
+        best: tuple[float, int, int] | None = None
+        for k in pick:
+            x, y = points[k]
+            seen = np.flatnonzero(np.asarray(self.world.sensor.visible((x, y, 0.0), unseen), dtype=bool))
+            if len(seen) < 3:
+                continue
+            score = len(seen) / (float(costs[k]) + VIEW_COST)
+            if best is None or score > best[0]:
+                best = (score, int(k), int(seen[0]))
+        if best is None:
+            return None
+        return best[1], (float(unseen[best[2]][0]), float(unseen[best[2]][1]))
 
     def _after(self, name: str, args: list[str], binding: Binding) -> None:
         """Keep the robot's own knowledge in step with what it just did."""
@@ -769,8 +1000,25 @@ WORDS = frozenset({"search", "count", "say", "answer"})
 GO_FIRST = {"approach": 0, "follow": 0}
 """Primitives the robot drives for first: up to the person (approach, follow)."""
 
-SURVEY_VIEWS = 12
-"""At most this many views to look all over a room (Count)."""
+SURVEY_VIEWS = 30
+"""At most this many views to look all over a room (Count, "is there ... in the kitchen?")."""
+
+VIEW_COST = 2.0
+"""Metres a look is worth in :meth:`Agent._best_view` (so a view next door that sees a little does not
+beat one across the room that sees much)."""
+
+SURVEY_NEAR = 0.6
+"""What of a room there is to look at: the points within this many metres of free space (things
+stand on the floor or on furniture beside it, not inside walls or deep in a bed's blob)."""
+
+SURVEY_SEEABLE = 0.8
+"""When no view inside a room sees 3 more of its points, the room was looked all over if the robot
+saw this share of it (the rest is wall faces and the backs of furniture); else it says how much it saw."""
+
+SURVEY_SHARE = 0.95
+"""A room is looked all over when the robot has seen this share of it (a lattice of 0.25 m over the
+room, :class:`~seal_cli.sim.policies.coverage.CoveragePolicy`): the last corners behind furniture
+cost many short drives and hide nothing a camera at table height would miss."""
 
 STAND_TRIES = 400
 """Stand cells tried, nearest first, for one that no wall cuts off from the thing."""

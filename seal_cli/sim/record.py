@@ -145,7 +145,7 @@ def write_png(path: str | Path, agent: Agent, title: str = "") -> None:
                 ax.scatter(X[:, 0], X[:, 1], s=4 + 40 * W / max(W.max(), 1e-12), c="#ff7f0e", alpha=0.6, zorder=2,
                            label=f"{label} belief: {last[name]}")
             _draw_run(ax, agent)
-            ax.legend(loc="upper right", fontsize=7)
+            ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.09), ncol=3, fontsize=7, frameon=False)
         axes[0][0].set_title(title or m.name)
         if panels == 2:
             axes[0][1].set_title("the commanded frame's belief")
@@ -153,6 +153,14 @@ def write_png(path: str | Path, agent: Agent, title: str = "") -> None:
             fig.savefig(tmp, dpi=120, format="png", bbox_inches="tight")
     finally:
         plt.close(fig)
+
+
+LABEL_CHARS = 48
+"""An action's label on the picture is cut to this many characters (the narration has it whole)."""
+
+
+def _short(text: str) -> str:
+    return text if len(text) <= LABEL_CHARS else text[:LABEL_CHARS - 1] + "…"
 
 
 def _draw_run(ax: Any, agent: Agent) -> None:
@@ -164,10 +172,16 @@ def _draw_run(ax: Any, agent: Agent) -> None:
     acts = [r for r in agent.records if r.kind == "act"]
     for n, record in enumerate(acts, 1):
         stood.setdefault((round(record.pose[0], 2), round(record.pose[1], 2)), []).append(f"{n}. {record.text}")
+    xmin, _, xmax, _ = agent.scene.map.bounds
     for at, texts in stood.items():
-        ax.plot(at[0], at[1], "D", color="#2ca02c", markersize=6, zorder=6)
-        ax.annotate("\n".join(texts), at, xytext=(4, 4), textcoords="offset points", fontsize=6,
-                    color="#2ca02c", zorder=6)
+        ax.plot(at[0], at[1], "D", color="#2ca02c", markeredgecolor="black", markersize=7, zorder=7)
+        left = at[0] > (xmin + xmax) / 2           # labels point into the map, on a white card over it
+        ax.annotate("\n".join(_short(t) for t in texts), at, xytext=(-8 if left else 8, 6),
+                    textcoords="offset points", fontsize=7, color="#1a6e1a", zorder=8,
+                    ha="right" if left else "left", va="bottom",
+                    bbox={"boxstyle": "round,pad=0.25", "fc": "white", "ec": "#2ca02c", "alpha": 0.9, "lw": 0.6},
+                    arrowprops={"arrowstyle": "-", "color": "#2ca02c", "lw": 0.6})
+    ax.plot(*trail[-1], "s", color="#1f77b4", markersize=7, zorder=5, label="start (circle), end (square)")
     for item in agent.world.items.values():
         if item.key == "person" and not item.movable:     # the people, and the speaker ("me")
             ax.plot(*item.at, "^", markersize=7, color="#9467bd", zorder=5)

@@ -106,3 +106,93 @@ def test_the_aws_house_plans_are_right(library: object, shared_data: Path, tmp_p
     wrong = [(c.text, got) for c in load_cases() if c.map == "aws"
              for right, got in [plan_steps(c, the_map, library)] if not right]
     assert wrong == []
+
+
+def truth(map_file: str | Path = "apartment") -> list[tuple[str, tuple[float, float], str | None]]:
+    """The map's hidden truth: each object's class, position and place (what answers are checked against)."""
+    from seal_cli.maps.formats.map_server import load_map
+
+    return [(o.cls, o.at, o.inside) for o in load_map(map_file).objects]
+
+
+def in_room(room: str, at: tuple[float, float], map_file: str | Path = "apartment") -> bool:
+    from seal_cli.maps.formats.map_server import load_map
+
+    return load_map(map_file).room_of([at])[0] == room
+
+
+def test_yes_no_questions_are_true_on_the_map_and_answered_after_looking() -> None:
+    no = run_json("is there a cup in the kitchen?")
+    assert not any(c == "cup" and in_room("kitchen", at) for c, at, _ in truth())        # the truth: none there
+    assert no["completed"] and no["answer"] == "no cup in the kitchen (it looked all over it)"
+    texts = [r["text"] for r in no["records"]]
+    assert any(t.startswith("opened fridge_1") for t in texts) and any(t.startswith("opened microwave_1")
+                                                                          for t in texts)
+    assert "closed fridge_1" in texts             # it leaves the fridge as it found it
+    looks = [r["pose"] for r in no["records"] if r["kind"] == "search"]
+    assert looks and all(in_room("kitchen", (p[0], p[1])) or p == looks[0] for p in looks[1:])
+    yes = run_json("is there a cup in the family room?")
+    assert any(c == "cup" and in_room("family_room", at) for c, at, _ in truth())
+    assert yes["completed"] and yes["answer"].startswith("yes: cup_1 is on coffee_table_1 in the family room")
+
+
+def test_what_is_on_or_in_a_place_lists_what_the_robot_saw_there() -> None:
+    table = run_json("what is on the dining table?")
+    assert not any(place == "dining_table_1" for _, _, place in truth())
+    assert table["completed"] and table["answer"] == "nothing on dining_table_1"
+    fridge = run_json("what's in the fridge?")
+    assert [c for c, _, place in truth() if place == "fridge_1"] == ["apple"]
+    assert fridge["completed"] and fridge["answer"] == "in fridge_1: apple_1"
+    assert any(r["text"].startswith("opened fridge_1") for r in fridge["records"])
+    said = [r["text"] for r in fridge["records"] if r["kind"] == "act"][-1]
+    assert said == "says: in fridge_1: apple_1"
+
+
+def test_how_many_counts_what_it_saw_including_none() -> None:
+    zero = run_json("how many spoons are in the bedroom?")
+    assert not any(c == "spoon" and in_room("bedroom", at) for c, at, _ in truth())
+    assert zero["completed"] and zero["answer"] == "0 spoons in the bedroom"
+    inside = run_json("count the apples in the kitchen")        # the one apple is in the closed fridge
+    assert inside["answer"] == "1 apple in the kitchen"
+
+
+def test_an_answer_says_when_the_robot_could_not_look_everywhere() -> None:
+    short = run_json("is there a cup in the kitchen?", "--max-metres", "12")
+    assert short["answer"].startswith("no cup seen in the kitchen, but it could not look all over it")
+
+
+def test_answers_come_from_what_it_saw_not_from_the_map(tmp_path: Path) -> None:
+    """Priors say nothing of cups in the kitchen; the world has one there: it is seen, and so said."""
+    from seal_cli.resources import map_path
+
+    text = map_path("apartment").read_text(encoding="utf-8").replace(
+        "image: apartment.pgm", f"image: {map_path('apartment').with_suffix('.pgm')}").replace(
+        "  - {class: cup, at: [0.3, 3.6], in: coffee_table_1}", "  - {class: cup, at: [6.2, -5.5], in: sink_1}")
+    moved = tmp_path / "moved.yaml"
+    moved.write_text(text, encoding="utf-8")
+    result = runner.invoke(app, ["run", "--map", str(moved), "is there a cup in the kitchen?", *FAST])
+    report = json.loads(result.stdout)
+    assert report["answer"].startswith("yes: cup_1 is on sink_1 in the kitchen")
+    where = runner.invoke(app, ["run", "--map", str(moved), "what is on the coffee table?", *FAST])
+    assert json.loads(where.stdout)["answer"] == "nothing on coffee_table_1"
+
+
+def test_find_goes_back_to_where_it_saw_the_thing(library: object, shared_data: Path, tmp_path: Path) -> None:
+    """On the AWS house the robot sees the cup from afar while it searches, then goes to it (issue 11)."""
+    import numpy as np
+
+    from seal_cli.bench.e2e import MAPS
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.policies import make_policy
+
+    the_map = load_map(MAPS["aws"](tmp_path, shared_data))
+    agent, result = run_on_map(the_map, "find the cup", library, make_policy("sefm", 100),   # type: ignore[arg-type]
+                               rng=np.random.default_rng(0))
+    assert result.completed and result.answer == "cup_1 is in the bedroom at (-7.50, 2.50)"
+    assert agent.in_view("cup_1")
+
+
+def test_look_in_a_place_says_what_is_there() -> None:
+    report = run_json("look in the fridge")
+    assert report["completed"] and report["answer"] == "in fridge_1: apple_1"

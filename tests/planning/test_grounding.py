@@ -72,3 +72,33 @@ def test_names_and_spellings(library: Library) -> None:
     assert names.ground("Anna", "thing").kind == "person"                             # type: ignore[union-attr]
     assert names.ground("the bowl", "location") is None                  # an object to find, not a place
     assert names.where_said("the cups in the family room") == "family_room"
+
+
+def test_here_is_the_speaker_and_a_person_where_a_place_was_said_receives(library: object) -> None:
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan
+
+    m = load_map("apartment").known()
+    assert [str(s) for s in plan("come here", library, map=m).steps] == ["Go(goal=me)"]   # type: ignore[arg-type]
+    assert [str(s) for s in plan("bring the cup here", library, map=m).steps] == [    # type: ignore[arg-type]
+        "Pick(theme=cup)", "Bring(theme=cup, recipient=me)"]
+
+
+def test_the_first_words_of_a_compound_name_call_it_weakly(library: object) -> None:
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan
+
+    m = load_map("apartment").known()
+    assert [str(s) for s in plan("go to the tv", library, map=m).steps] == ["Go(goal=tv_stand_1)"]  # type: ignore[arg-type]
+    assert [str(s) for s in plan("go to the table", library, map=m).steps] == ["Go(goal=dining_table_1)"]  # type: ignore[arg-type]
+
+
+def test_a_frame_that_must_hold_a_fixed_thing_is_refused(library: object) -> None:
+    import pytest
+
+    from seal_cli.errors import SealError
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan
+
+    with pytest.raises(SealError, match=r"LookAt needs to hold its theme, and 'the fridge' \(fridge_1\) is fixed"):
+        plan("check the fridge", library, map=load_map("apartment").known())  # type: ignore[arg-type]

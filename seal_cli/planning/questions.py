@@ -1,0 +1,118 @@
+"""What a command asks: the question each commanded frame answers, read from the words that evoked it.
+
+The parser gives a question the frame that finds its answer — "where is the cup?" and "is there a
+cup in the kitchen?" are both Find, "how many cups ..." is Count, "what is on the dining table?" is
+Tell with the question as its message — but the *kind* of answer a person expects differs:
+
+- ``where``: a Find said as a command or as "where is ..."; the answer says where the thing is;
+- ``whether``: a Find said as "is there ...", "are there ...", "is Anna in ..."; the answer is yes
+  (and where) or no, from what the robot saw where the question asks;
+- ``how_many``: a Count; the answer is how many the robot saw there;
+- ``what``: a Tell whose message asks what is on, in or at a place or in a room ("what's in the
+  fridge?", "who is in the kitchen?"), or a Find of nothing in particular somewhere ("look in the
+  fridge"); ``about`` is the map's place or room, ``relation`` the word that relates them. The
+  robot goes and looks, and the answer lists what it saw.
+
+A question is read from words only (the frame's span in the text, the message's words) and
+grounded with :class:`~seal_cli.planning.grounding.MapNames`: never from the map's objects.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from seal_cli.frames.model import Binding
+from seal_cli.language.values import Evoked, Parse
+from seal_cli.planning.grounding import MapNames, words_of
+
+__all__ = ["KINDS", "Question", "asks_whether", "read_questions"]
+
+KINDS = ("where", "whether", "how_many", "what")
+
+ASKING_WHETHER = frozenset({"is", "are", "was", "were"})
+"""A Find whose words start with one of these asks whether ("*is* there a cup in the kitchen?")."""
+
+ASKING_WHAT = {"what": "thing", "whats": "thing", "who": "person", "whos": "person"}
+"""The first word of a message that asks what (or who) is somewhere, and what it asks for."""
+
+CONTAINING = ("on top of", "inside", "on", "in", "at")
+"""The words after which a "what is ..." question names where to look."""
+
+
+@dataclass(frozen=True)
+class Question:
+    """The question a commanded frame answers (see the module docstring)."""
+
+    kind: str
+    about: str | None = None
+    """``what``: the map id of the place or room asked about."""
+    relation: str = "on"
+    """``what``: on, in or at (as the question says it)."""
+    asks_for: str = "thing"
+    """``what``: thing (what is there) or person (who is there)."""
+
+    def __post_init__(self) -> None:
+        if self.kind not in KINDS:
+            raise ValueError(f"a question is one of {', '.join(KINDS)}, not {self.kind!r}")
+
+
+def asks_whether(text: str, evoked: Evoked) -> bool:
+    """Whether a Find asks whether ("*is* there a cup ...?", "*are* there any spoons ...?"): at least one
+    is enough, so a plural asks for the kind once."""
+    first = text[evoked.span[0]:evoked.span[1]].lower().split()[:1]
+    return evoked.frame == "Find" and bool(first) and first[0] in ASKING_WHETHER
+
+
+def _what(message: str, names: MapNames | None) -> Question | None:
+    """The ``what`` question a message asks, if it asks what or who is on, in or at a map place or room."""
+    words = message.lower().replace("'", "").replace("’", "").split()
+    if not words or words[0] not in ASKING_WHAT or names is None:
+        return None
+    for i in range(1, len(words)):
+        for relation in CONTAINING:
+            rel = relation.split()
+            if words[i:i + len(rel)] == rel:
+                phrase = " ".join(words[i + len(rel):])
+                found = names.ground(phrase, "location", ("room", "place")) if words_of(phrase) else None
+                if found is not None:
+                    said = "in" if relation in ("inside", "in") else "on" if relation in ("on", "on top of") else "at"
+                    return Question("what", found.id, said, ASKING_WHAT[words[0]])
+                return None
+    return None
+
+
+def _looked_at(bindings: Sequence[Binding], names: MapNames | None) -> Question | None:
+    """A Find with a ground and no theme ("look in the fridge", "look around the kitchen") asks what
+    is there."""
+    ground = bindings[0].elements.get("ground") if bindings else None
+    referent = names.by_id(ground) if names is not None and ground is not None else None
+    if referent is None or referent.kind not in ("room", "place"):
+        return None
+    place = names.map.place(referent.id) if names is not None and referent.kind == "place" else None
+    return Question("what", referent.id, "on" if place is not None and not place.openable else "in")
+
+
+def read_questions(parse: Parse, commanded: Sequence[Binding], names: MapNames | None) -> dict[Binding, Question]:
+    """The question each commanded frame answers (frames that answer none are left out).
+
+    The frames of one evoked verb phrase are consecutive in ``commanded`` and share its frame
+    (:func:`seal_cli.planning.problem.commanded_frames`); each takes the question its words ask."""
+    questions: dict[Binding, Question] = {}
+    k = 0
+    for evoked in parse.frames:
+        start = k
+        while k < len(commanded) and commanded[k].frame.name == evoked.frame:
+            k += 1
+        question: Question | None = None
+        if evoked.frame == "Find" and "theme" not in evoked.elements:    # "look in the fridge": what is there
+            question = _looked_at(commanded[start:k], names)
+        elif evoked.frame == "Find":
+            question = Question("whether" if asks_whether(parse.text, evoked) else "where")
+        elif evoked.frame == "Count":
+            question = Question("how_many")
+        elif evoked.frame == "Tell" and (message := evoked.elements.get("message")) is not None:
+            question = _what(message.text or message.head, names)
+        if question is not None:
+            questions.update((b, question) for b in commanded[start:k])
+    return questions

@@ -1,0 +1,52 @@
+"""What a command asks: the kind of answer each Find, Count or Tell wants, from the words that evoked it."""
+
+from __future__ import annotations
+
+import pytest
+
+from seal_cli.frames.library import Library
+from seal_cli.language.grounding import vocabulary_of_map
+from seal_cli.language.parser import parse_command
+from seal_cli.maps.formats.map_server import load_map
+from seal_cli.planning.grounding import MapNames
+from seal_cli.planning.problem import build_problem
+from seal_cli.planning.questions import Question, read_questions
+
+
+def asked(text: str, library: Library) -> list[tuple[str, Question]]:
+    m = load_map("apartment")
+    parse = parse_command(text, library, vocabulary_of_map(m))
+    commanded = build_problem(parse, library, map=m.known()).commanded
+    return [(str(b), q) for b, q in read_questions(parse, commanded, MapNames(m, library.taxonomy)).items()]
+
+
+@pytest.mark.parametrize(("text", "frame", "question"), [
+    ("is there a cup in the kitchen?", "Find(theme=cup, ground=kitchen)", Question("whether")),
+    ("are there any spoons in the bedroom?", "Find(theme=spoon, ground=bedroom)", Question("whether")),
+    ("where is the cup?", "Find(theme=cup)", Question("where")),
+    ("find the cup in the kitchen", "Find(theme=cup, ground=kitchen)", Question("where")),
+    ("how many cups are in the family room?", "Count(theme=cup, ground=family_room)", Question("how_many")),
+    ("what is on the dining table?", "Tell(message=what_is_on_the_dining_table)",
+     Question("what", "dining_table_1", "on")),
+    ("what's in the fridge?", "Tell(message=what_s_in_the_fridge)", Question("what", "fridge_1", "in")),
+    ("who is in the kitchen?", "Tell(message=who_is_in_the_kitchen)", Question("what", "kitchen", "in", "person")),
+])
+def test_each_question_is_read_from_its_words(text: str, frame: str, question: Question, library: Library) -> None:
+    assert asked(text, library) == [(frame, question)]
+
+
+def test_a_message_that_asks_nothing_of_the_map_is_no_question(library: Library) -> None:
+    assert asked("tell me a joke", library) == []
+    assert asked("what is the time?", library) == []               # no place or room asked about
+    assert asked("what is on the moon?", library) == []            # a place the map lacks: nothing to look at
+    assert asked("go to the kitchen", library) == []
+
+
+def test_a_question_kind_is_checked() -> None:
+    with pytest.raises(ValueError, match="one of where, whether, how_many, what"):
+        Question("why")
+
+
+def test_looking_somewhere_for_nothing_in_particular_asks_what_is_there(library: Library) -> None:
+    assert asked("look in the fridge", library) == [("Find(ground=fridge_1)", Question("what", "fridge_1", "in"))]
+    assert asked("look around the kitchen", library) == [("Find(ground=kitchen)", Question("what", "kitchen", "in"))]
