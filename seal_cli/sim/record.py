@@ -124,7 +124,7 @@ def write_png(path: str | Path, agent: Agent, title: str = "") -> None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from seal_cli.maps.drawing import draw_map
+    from seal_cli.maps.drawing import declutter, draw_map, legend_below
 
     m = agent.scene.map
     xmin, ymin, xmax, ymax = m.bounds
@@ -145,10 +145,12 @@ def write_png(path: str | Path, agent: Agent, title: str = "") -> None:
                 ax.scatter(X[:, 0], X[:, 1], s=4 + 40 * W / max(W.max(), 1e-12), c="#ff7f0e", alpha=0.6, zorder=2,
                            label=f"{label} belief: {last[name]}")
             _draw_run(ax, agent)
-            ax.legend(loc="upper right", fontsize=7)
+            legend_below(ax)  # under the map: no cloud covers it
         axes[0][0].set_title(title or m.name)
         if panels == 2:
             axes[0][1].set_title("the commanded frame's belief")
+        fig.tight_layout()
+        declutter(fig)
         with atomic_output(path) as tmp:
             fig.savefig(tmp, dpi=120, format="png", bbox_inches="tight")
     finally:
@@ -157,6 +159,8 @@ def write_png(path: str | Path, agent: Agent, title: str = "") -> None:
 
 def _draw_run(ax: Any, agent: Agent) -> None:
     """The path, where the robot acted, and where the things are."""
+    from seal_cli.maps.drawing import _HALO, LABEL, LABEL_Z
+
     trail = np.asarray(agent.world.robot.trajectory)
     ax.plot(trail[:, 0], trail[:, 1], "-", color="#1f77b4", linewidth=2, zorder=4, label="path")
     ax.plot(*trail[0], "o", color="#1f77b4", markersize=8, zorder=5)
@@ -167,11 +171,11 @@ def _draw_run(ax: Any, agent: Agent) -> None:
     for at, texts in stood.items():
         ax.plot(at[0], at[1], "D", color="#2ca02c", markersize=6, zorder=6)
         ax.annotate("\n".join(texts), at, xytext=(4, 4), textcoords="offset points", fontsize=6,
-                    color="#2ca02c", zorder=6)
+                    color="#2ca02c", zorder=LABEL_Z, gid=LABEL, bbox=_HALO)
     for item in agent.world.items.values():
         if item.key == "person" and not item.movable:     # the people, and the speaker ("me")
             ax.plot(*item.at, "^", markersize=7, color="#9467bd", zorder=5)
             ax.annotate(item.id, item.at, xytext=(4, -8), textcoords="offset points", fontsize=6,
-                        color="#9467bd", zorder=5)
+                        color="#9467bd", zorder=LABEL_Z, gid=LABEL, bbox=_HALO)
         elif item.movable:
             ax.plot(*agent.world.position(item.id), "*", markersize=6, color="#d62728", zorder=3)
