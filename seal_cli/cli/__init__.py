@@ -27,8 +27,8 @@ from seal_cli.errors import SealError, SealErrors
 if TYPE_CHECKING:
     from rich.console import Console
 
-__all__ = ["MAX_PARTICLES", "MAX_STEPS", "OUTPUT_SUFFIXES", "app", "bench_app", "command", "emit_json", "err",
-           "main", "out", "progress_bar"]
+__all__ = ["MAX_COUNT", "MAX_PARTICLES", "MAX_RUN_METRES", "MAX_RUN_STEPS", "MAX_STEPS", "OUTPUT_SUFFIXES",
+           "a_number", "app", "bench_app", "command", "emit_json", "err", "main", "out", "progress_bar"]
 
 app = typer.Typer(
     name="seal",
@@ -171,6 +171,23 @@ MAX_PARTICLES = 100_000
 
 MAX_STEPS = 100_000
 """The most belief updates ``seal localize --steps`` takes (about ten minutes at 200 particles)."""
+
+MAX_RUN_STEPS = 100_000
+"""The most steps ``seal run --max-steps`` allows (a run ends sooner when its task is done)."""
+
+MAX_RUN_METRES = 100_000.0
+"""The farthest ``seal run --max-metres`` lets the robot drive (100 km; NaN and infinity are refused)."""
+
+MAX_COUNT = 1_000
+"""The most layouts, repeats and runs a benchmark option takes (each is a whole run of its own)."""
+
+
+def a_number(value: float | None) -> float | None:
+    """An option's callback that refuses NaN (click's ranges let it through: no comparison holds)."""
+    if value is not None and value != value:
+        raise typer.BadParameter("must be a number, not nan")
+    return value
+
 
 OUTPUT_SUFFIXES = {"--png": (".png",), "--rrd": (".rrd",), "--episodes": (".jsonl", ".json"),
                    "--goals": (".yaml", ".yml"), "--output": (".yaml", ".yml")}
