@@ -454,7 +454,7 @@ def hostile_cases() -> Iterator[Case]:
                ("bench", "reliability", "--jobs"), ("bench", "maps", "--points"), ("bench", "maps", "--repeats"),
                ("bench", "perf", "--scale"), ("bench", "ros", "--poses"), ("bench", "startup", "--runs"),
                ("bench", "plan", "--repeat"), ("bench", "e2e", "--particles"), ("bench", "tasks", "--jobs")]
-    for k, argv in enumerate(options):
+    for argv in options:
         values = ("nan", "-inf", "1e400", "-5", "99999999999999999999")
         for value in values if argv[-1] != "--limit" else ("nan", "-5", "0"):
             huge_seed = argv[-1] in ("--seed", "--limit") and value.isdigit()  # any whole number is a seed;
