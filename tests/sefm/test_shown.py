@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import io
 import json
 
 import pytest
@@ -24,10 +25,17 @@ def test_rooms_modes_and_points() -> None:
     assert point([-6.025, 3.5]) == "(-6.03, 3.50)"
 
 
-def test_the_localize_table_writes_the_json_numbers_by_the_same_formatter() -> None:
+def test_the_localize_table_writes_the_json_numbers_by_the_same_formatter(monkeypatch) -> None:  # type: ignore[no-untyped-def]
+    from rich.console import Console
+
+    from seal_cli.cli import localize_cmd
+
     args = ["localize", "--map", "apartment", "--task", "stir the cup", "--steps", "3", "--particles", "200"]
-    runner = CliRunner()
-    data = json.loads(runner.invoke(app, [*args, "--json"]).output)
-    table = runner.invoke(app, args, env={"COLUMNS": "250"}).output
+    data = json.loads(CliRunner().invoke(app, [*args, "--json"]).output)
+    wide = Console(width=400, record=True, file=io.StringIO())
+    monkeypatch.setattr(localize_cmd, "out", wide)
+    localize_cmd.show(data)
+    table = wide.export_text()
+    assert data["frames"]
     for frame in data["frames"]:
         assert rooms_text(frame["rooms"]) in table and modes_text(frame["modes"]) in table
