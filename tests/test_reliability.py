@@ -13,7 +13,7 @@ import pytest
 import yaml
 from typer.testing import CliRunner
 
-from seal_cli.bench.reliability import cases, generated_cases, issue_cases, run_case, summarise
+from seal_cli.bench.reliability import Case, cases, generated_cases, hostile_cases, issue_cases, run_case, summarise
 from seal_cli.cli import app
 from seal_cli.errors import SealError
 from seal_cli.fileio import LOADER, Outputs, read_bytes, read_text, split_lines
@@ -168,10 +168,16 @@ def test_the_suite_holds_the_issue_and_at_least_300_generated_cases() -> None:
     assert len(generated) == 320 and len({c.name for c in generated}) == 320
     assert len(list(issue_cases())) >= 40
     assert [c.argv for c in generated_cases(5, 20)] == [c.argv for c in generated_cases(5, 20)]
+    written = list(hostile_cases())
+    assert len(written) >= 100 and len({c.name for c in written}) == len(written)
+    assert {c.name for c in written}.isdisjoint(c.name for c in issue_cases())
 
 
 PICKED = ("1 localize --png onto the map", "1 an output hard-linked to the image", "3 put 99999999999 apples",
-          f"5 {signal.SIGTERM.name} during localize --png --rrd", "5 a stale temporary of a killed run is swept")
+          f"5 {signal.SIGTERM.name} during localize --png --rrd", "5 a stale temporary of a killed run is swept",
+          "H three map --png at once onto one file", "H map through a link loop", "H map path with a newline",
+          "H option run apartment --max-metres nan", "H option bench map --layouts 99999999999999999999",
+          "H encoding utf-16: validate", "H a folder for a file: map map d.yaml")
 
 
 @pytest.mark.parametrize("name", PICKED)
@@ -180,3 +186,11 @@ def test_hostile_cases_end_cleanly(name: str) -> None:
     outcome = run_case(case)
     assert outcome.problems == []
     assert summarise([outcome])["tried"] == 1
+
+
+def test_the_judge_sees_a_partial_output_and_a_wrong_code(tmp_path: Path) -> None:
+    """The suite's own checks can fail: a whole file is required, a wrong exit code is counted."""
+    broken = Case("judge", ("validate", "f.frame"), (("f.frame", b"frame {"), ("o.png", b"\x89PNG\r\n\x1a\nhalf")),
+                  codes=(0,), whole=("o.png",))
+    outcome = run_case(broken)
+    assert outcome.kinds == {"exit", "partial"}

@@ -88,7 +88,7 @@ HOSTILE_WORDS = ["stir", "the", "cup", "café", "put", "99999999999", "apples", 
 class Case:
     """One command to run in a fresh folder holding ``files``, and what it may do.
 
-    A file's content is bytes, or ``"fifo"`` for a named pipe, or ``"link:TARGET"`` for a
+    A file's content is bytes, or ``"fifo"`` for a named pipe, ``"dir"`` for a folder, or ``"link:TARGET"`` for a
     symbolic link, or ``"hard:TARGET"`` for a hard link. ``keep``: files that must be unchanged
     after; ``absent``: files that must not exist after; ``signal``: send it this many seconds
     after the start."""
@@ -103,6 +103,10 @@ class Case:
     signal: tuple[int, float] | None = None
     stdin: bytes | None = None
     timeout: float = TIMEOUT
+    parallel: int = 1
+    """Run this many copies at once in the same folder (concurrent writers of one output)."""
+    whole: tuple[str, ...] = ()
+    """Files that must exist after and be complete (a PNG to its IEND, JSON that parses)."""
 
 
 @dataclass
@@ -126,6 +130,8 @@ def _make(folder: Path, files: tuple[tuple[str, bytes | str], ...]) -> None:
         path.parent.mkdir(parents=True, exist_ok=True)
         if content == "fifo":
             os.mkfifo(path)
+        elif content == "dir":
+            path.mkdir(parents=True, exist_ok=True)
         elif isinstance(content, str) and content.startswith("link:"):
             path.symlink_to(content[5:])
         elif isinstance(content, str) and content.startswith("hard:"):
@@ -149,7 +155,43 @@ def _seal() -> list[str]:
     return [sys.executable, "-m", "seal_cli"]
 
 
+def _complete(path: Path) -> bool:
+    """Whether an output file is whole: a PNG ends with its IEND chunk, JSON parses."""
+    import json
+
+    try:
+        data = path.read_bytes()
+    except OSError:
+        return False
+    if path.suffix == ".png":
+        return data.startswith(b"\x89PNG\r\n\x1a\n") and data.endswith(b"IEND\xaeB`\x82")
+    try:
+        if path.suffix == ".json":
+            json.loads(data)
+        elif path.suffix == ".jsonl":
+            [json.loads(line) for line in data.splitlines() if line.strip()]
+    except ValueError:
+        return False
+    return bool(data)
+
+
+def _parallel(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
+    """Run ``case.parallel`` copies at once; the worst exit code (None if any hung) and all stderr."""
+    runs: list[tuple[int | None, bytes, bytes, float]] = []
+    with ThreadPoolExecutor(case.parallel) as pool:
+        for run in pool.map(lambda _: _one(case, folder), range(case.parallel)):
+            runs.append(run)
+    codes = [r[0] for r in runs]
+    bad = [c for c in codes if c is None or c not in case.codes]
+    code = None if None in codes else (bad[0] if bad else codes[0])
+    return code, b"".join(r[1] for r in runs), b"".join(r[2] for r in runs), max(r[3] for r in runs)
+
+
 def _once(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
+    return _parallel(case, folder) if case.parallel > 1 else _one(case, folder)
+
+
+def _one(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
     env = {**os.environ, "COLUMNS": "200", "NO_COLOR": "1", "PYTHONWARNINGS": "ignore"}
     start = time.perf_counter()
     argv = [a.replace("\x00", "\x01") for a in case.argv]  # no shell can pass a NUL in an argument
@@ -194,10 +236,13 @@ def run_case(case: Case) -> Outcome:
         for left in sorted(after):
             if TEMPORARY.search(left):
                 outcome.problems.append(f"partial: temporary {left} left behind")
+        for name_ in case.whole:
+            if not _complete(folder / name_):
+                outcome.problems.append(f"partial: {name_} is missing or not whole")
         for name_ in case.absent:
             if (folder / name_).exists() and name_ not in before:
                 outcome.problems.append(f"partial: {name_} written though the command failed or was stopped")
-        if code not in (0, None):
+        if code not in (0, None) and case.parallel == 1:
             for new in sorted(after - before):
                 if not TEMPORARY.search(new):
                     outcome.problems.append(f"partial: {new} written by a failed command")
@@ -332,6 +377,177 @@ def issue_cases() -> Iterator[Case]:
     yield Case("8 --png out.jpg", ("map", "m.yaml", "--png", "out.jpg"), both, codes=(1,), absent=("out.jpg",))
 
 
+def _rooms(n: int) -> bytes:
+    rows = ["bounds: [0, 0, 1000, 1000]", "rooms:"]
+    rows += [f"  - {{name: r{i}, box: [{i % 100 * 10}, {i // 100 * 10}, {i % 100 * 10 + 10}, {i // 100 * 10 + 10}]}}"
+             for i in range(n)]
+    return ("\n".join(rows) + "\n").encode()
+
+
+def hostile_cases() -> Iterator[Case]:
+    """Hostile inputs written one by one, of kinds the mutations do not make: other encodings,
+    numbers that are huge, negative, NaN or infinite wherever a number goes, links, spaces and
+    newlines in paths, empty files, folders for files, concurrent writers of one output,
+    signals during each writing command, and every subcommand's options at their edges."""
+    m, image = _apartment()
+    text = m[1].decode()
+    both = (m, image)
+    inputs = ("m.yaml", "apartment.pgm")
+    loc = ("localize", "--map", "m.yaml", "--steps", "1", "--particles", "20")
+    frame = FRAME.encode()
+    # -- encodings: frames, maps, observations, commands -------------------------------------------
+    latin = FRAME.replace("Whisk what", "Wh\xe9sk").encode("latin-1")
+    encodings = {"utf-16": FRAME.encode("utf-16"), "utf-16-le": FRAME.encode("utf-16-le"),
+                 "utf-32": FRAME.encode("utf-32"), "latin-1 é": latin,
+                 "overlong NUL": frame.replace(b"Whisk what", b"Wh\xc0\x80isk"),
+                 "lone surrogate": frame.replace(b"Whisk what", b"Wh\xed\xa0\x80isk"),
+                 "CRLF": FRAME.replace("\n", "\r\n").encode(), "CR only": FRAME.replace("\n", "\r").encode(),
+                 "two BOMs": b"\xef\xbb\xbf\xef\xbb\xbf" + frame,
+                 "BOM inside": frame.replace(b"frame Whisk", b"frame \xef\xbb\xbfWhisk")}
+    for name, data in encodings.items():
+        yield Case(f"H encoding {name}: validate", ("validate", "f.frame"), (("f.frame", data),), keep=("f.frame",))
+    for name, data in (("utf-16 map", text.encode("utf-16")), ("latin-1 map", text.replace("apartment\n", "app\xe9\n")
+                                                                           .encode("latin-1")),
+                       ("CRLF map", text.replace("\n", "\r\n").encode())):
+        yield Case(f"H encoding {name}", ("validate", "m.yaml"), (("m.yaml", data), image), keep=inputs)
+    for name, data in (("utf-16 observations", OBSERVATIONS.encode("utf-16")),
+                       ("latin-1 observations", OBSERVATIONS.replace("cup", "c\xfcp").encode("latin-1"))):
+        yield Case(f"H encoding {name}", (*loc, "--observations", "o.yaml"), (*both, ("o.yaml", data)), codes=(1,),
+                   keep=("o.yaml", *inputs))
+    for name, data in (("utf-16", "stir the cup\n".encode("utf-16")), ("latin-1", b"stir the caf\xe9\n"),
+                       ("NULs", b"stir\x00the cup\n"),
+                       ("a BOM per line", b"\xef\xbb\xbfstir the cup\n\xef\xbb\xbfstir\n")):
+        yield Case(f"H encoding parse --file {name}", ("parse", "--file", "c.txt", "--json"), (("c.txt", data),),
+                   keep=("c.txt",), twice=True)
+    # -- numbers of a map: huge, negative, NaN, infinite ---------------------------------------------
+    numbers = ["1e309", "-1e309", ".nan", ".inf", "-.inf", "-0.0", "1e-320", "99999999999999999999999", "0x10", "1_000"]
+    spots = {"resolution": ("resolution: 0.05", "resolution: {}"),
+             "origin": ("origin: [-10.0, -7.0, 0.0]", "origin: [{}, -7.0, 0.0]"),
+             "bounds": ("bounds: [-9.0, -6.0, 9.0, 6.0]", "bounds: [-9.0, -6.0, {}, 6.0]"),
+             "a box": ("box: [-9.0, 0.5, -3.0, 6.0]", "box: [-9.0, 0.5, {}, 6.0]"),
+             "a place": ("at: [8.5, -0.8]", "at: [{}, -0.8]"),
+             "the robot": ("pose: [-6.0, -3.0, 0.0]", "pose: [-6.0, -3.0, {}]"),
+             "the sensor": ("range: 5.0", "range: {}"),
+             "a threshold": ("occupied_thresh: 0.65", "occupied_thresh: {}")}
+    for k, (spot, (old, new)) in enumerate(spots.items()):
+        for value in (numbers[k % len(numbers)], numbers[(k + 3) % len(numbers)], numbers[(k + 6) % len(numbers)]):
+            yield Case(f"H number {value} in {spot}", ("validate", "m.yaml"),
+                       (("m.yaml", text.replace(old, new.format(value)).encode()), image), keep=inputs)
+    # -- numbers of observations and trajectories --------------------------------------------------
+    for value in (".nan", ".inf", "-1e309", "1e308", "-0.0", "1e400", "[1, 2]", "{x: 1}", "true", "null"):
+        yield Case(f"H observation pose {value}", (*loc, "--observations", "o.yaml"),
+                   (*both, ("o.yaml", f"- pose: [{value}, -3.0]\n".encode())), keep=("o.yaml", *inputs))
+        yield Case(f"H detection at {value}", (*loc, "--observations", "o.yaml"),
+                   (*both, ("o.yaml", f"- pose: [-6, -3]\n  detections: [{{class: cup, at: [{value}, -3]}}]\n"
+                            .encode())), keep=("o.yaml", *inputs))
+    for value in (".nan", "1e309", "[]", "-9.0000001"):
+        yield Case(f"H trajectory pose {value}", (*loc, "--trajectory", "t.yaml"),
+                   (*both, ("t.yaml", f"poses:\n  - [{value}, -3.0]\n".encode())), keep=("t.yaml", *inputs))
+    # -- numbers of options ------------------------------------------------------------------------
+    options = [("localize", "--map", "apartment", "--particles"), ("localize", "--map", "apartment", "--steps"),
+               ("localize", "--map", "apartment", "--seed"), ("run", "stir the cup", "--map", "apartment", "--seed"),
+               ("run", "stir the cup", "--map", "apartment", "--max-steps"),
+               ("run", "stir the cup", "--map", "apartment", "--max-metres"),
+               ("run", "stir the cup", "--map", "apartment", "--particles"),
+               ("plan", "stir the cup", "--max-nodes"), ("bench", "tasks", "--suite", "map", "--layouts"),
+               ("bench", "tasks", "--suite", "map", "--limit"), ("bench", "reliability", "--count"),
+               ("bench", "reliability", "--jobs"), ("bench", "maps", "--points"), ("bench", "maps", "--repeats"),
+               ("bench", "perf", "--scale"), ("bench", "ros", "--poses"), ("bench", "startup", "--runs"),
+               ("bench", "plan", "--repeat"), ("bench", "e2e", "--particles"), ("bench", "tasks", "--jobs")]
+    for argv in options:
+        values = ("nan", "-inf", "1e400", "-5", "99999999999999999999")
+        for value in values if argv[-1] != "--limit" else ("nan", "-5", "0"):
+            huge_seed = argv[-1] in ("--seed", "--limit") and value.isdigit()  # any whole number is a seed;
+            # a limit beyond the cases is all of them (a long benchmark, not a hang): only bad values there
+            yield Case(f"H option {argv[0]} {argv[-2]} {argv[-1]} {value}", (*argv, value),
+                       codes=(0, 1, 2) if huge_seed else (1, 2), timeout=90)
+    # -- paths: links, spaces, newlines, empty files, folders ------------------------------------------
+    yield Case("H map through a dangling link", ("map", "l.yaml"), (("l.yaml", "link:nowhere.yaml"),), codes=(1,))
+    yield Case("H map through a link loop", ("map", "a.yaml"), (("a.yaml", "link:b.yaml"), ("b.yaml", "link:a.yaml")),
+               codes=(1,))
+    yield Case("H a frame folder holding a link loop", ("validate", "lib"),
+               (("lib/a.frame", frame), ("lib/loop", "link:.")), codes=(0, 1))
+    yield Case("H map path with spaces", ("map", "my map.yaml"), (("my map.yaml", m[1]), image), codes=(0,),
+               keep=("my map.yaml",))
+    yield Case("H map path with a newline", ("map", "my\nmap.yaml"), (("my\nmap.yaml", m[1]), image), codes=(0,))
+    yield Case("H image path with spaces", ("map", "m.yaml"),
+               (("m.yaml", m[1].replace(b"image: apartment.pgm", b"image: 'an image.pgm'")),
+                ("an image.pgm", image[1])),
+               codes=(0,))
+    yield Case("H --png path with spaces and a newline", ("map", "m.yaml", "--png", "out put\n.png"), both, codes=(0,),
+               whole=("out put\n.png",), keep=inputs)
+    command: tuple[str, ...]
+    for command in (("validate", "e.frame"), ("validate", "e.yaml"), ("map", "e.yaml"), ("parse", "--file", "e.txt"),
+                    (*loc, "--observations", "e.yaml"), (*loc, "--trajectory", "e.yaml"),
+                    ("plan", "--framelib", "e.frame", "stir the cup"), ("bench", "plan", "--file", "e.txt")):
+        yield Case(f"H empty file: {' '.join(command[:1] + command[-2:])}", command,
+                   (*both, ("e.frame", b""), ("e.yaml", b""), ("e.txt", b"")), codes=(0, 1), keep=inputs)
+    for command in (("map", "d.yaml"), ("parse", "--file", "d.yaml"), (*loc, "--observations", "d.yaml"),
+                    ("plan", "--map", "d.yaml", "stir the cup"), ("run", "stir the cup", "--map", "d.yaml"),
+                    ("localize", "--map", "m.yaml", "--labels", "d.yaml", "--bag", "d.yaml"),
+                    ("parse", "--vocabulary", "d.yaml", "stir the cup"), ("import-bag", "d.yaml", "-o", "o.yaml")):
+        yield Case(f"H a folder for a file: {' '.join(command[:1] + command[-2:])}", command,
+                   (*both, ("d.yaml", "dir")), codes=(1, 2))
+    yield Case("H map image is a folder", ("map", "m.yaml"), (("m.yaml", m[1]), ("apartment.pgm", "dir")), codes=(1,))
+    yield Case("H map image is the map itself", ("map", "m.yaml"),
+               (("m.yaml", m[1].replace(b"image: apartment.pgm", b"image: m.yaml")),), codes=(1,), keep=("m.yaml",))
+    yield Case("H --pddl onto a file", ("plan", "--pddl", "f.txt", "stir the cup"), (("f.txt", b"keep me"),),
+               codes=(1,), keep=("f.txt",))
+    yield Case("H --episodes onto the map", ("bench", "tasks", "--suite", "map", "--map", "m.yaml", "--layouts", "1",
+                                              "--episodes", "m.yaml"), both, codes=(1,), keep=inputs)
+    yield Case("H import-bag -o onto its bag", ("import-bag", "b.bag", "-o", "b.bag"), (("b.bag", b"not a bag"),),
+               codes=(1,), keep=("b.bag",))
+    yield Case("H --goals onto the map", (*loc, "--task", "stir the cup", "--goals", "m.yaml"), both, codes=(1,),
+               keep=inputs)
+    yield Case("H 10,000 rooms", ("validate", "r.yaml"), (("r.yaml", _rooms(10_000)),), codes=(0,), timeout=120)
+    # -- concurrent writers of one output ----------------------------------------------------------
+    yield Case("H three map --png at once onto one file", ("map", "m.yaml", "--png", "o.png"), both, codes=(0,),
+               parallel=3, whole=("o.png",), keep=inputs)
+    yield Case("H two localize --png --rrd at once", (*loc, "--png", "o.png", "--rrd", "o.rrd"), both, codes=(0,),
+               parallel=2, whole=("o.png", "o.rrd"), keep=inputs)
+    yield Case("H two plan --pddl at once", ("plan", "--pddl", "out", "stir the cup"), (("out", "dir"),), codes=(0,),
+               parallel=2, whole=("out/domain.pddl", "out/problem.pddl"))
+    yield Case("H two run --png at once", ("run", "stir the cup", "--map", "m.yaml", "--particles", "50", "--png",
+                                           "r.png"), both, codes=(0,), parallel=2, whole=("r.png",), keep=inputs)
+    # -- signals while writing -------------------------------------------------------------------------
+    writers = {"map --png": ("map", "m.yaml", "--png", "o.png"),
+               "run --png --rrd": ("run", "stir the cup", "--map", "m.yaml", "--png", "o.png", "--rrd", "o.rrd"),
+               "plan --pddl": ("plan", "--pddl", "out", "stir the cup"),
+               "bench tasks --episodes": ("bench", "tasks", "--suite", "map", "--map", "m.yaml", "--layouts", "3",
+                                          "--episodes", "o.jsonl")}
+    for k, (what, argv) in enumerate(writers.items()):
+        for number in (signal.SIGINT, signal.SIGHUP, signal.SIGTERM)[k % 2:k % 2 + 2]:
+            yield Case(f"H {signal.Signals(number).name} during {what}", argv, (*both, ("out", "dir")),
+                       codes=(0, 129, 130, 143, -int(number)), keep=inputs, signal=(number, 1.5 + k))
+    # -- every subcommand's options at their edges -----------------------------------------------------
+    edges = [("parse", "--vocabulary", "nope.yaml", "stir the cup"), ("parse", "--map", "nope", "stir the cup"),
+             ("parse", "--framelib", "nope.frame", "stir"), ("plan", "--holding", "😀", "stir the cup"),
+             ("plan", "--holding", "", "stir the cup"), ("plan", "--done", "", "stir the cup"),
+             ("plan", "--map", "apartment", "--done", "fly to the moon", "stir the cup"),
+             ("frames", "--framelib", "nope"), ("frames", "Nonexistent"), ("frames", ""), ("frames", "--json", "Stir"),
+             ("map", "apartment", "--json"), ("map", "nope"), ("map", ""), ("validate",), ("validate", "--stdlib"),
+             ("validate", "--json", "nope.frame"), ("validate", "x.txt"),
+             ("run", "stir the cup", "--map", "apartment", "--policy", "nope"),
+             ("run", "", "--map", "apartment"), ("run", "stir the cup", "--map", "apartment", "--holding", "spoon",
+                                                 "--done", "pick up the cup"),
+             ("localize", "--map", "apartment", "--task", "", "--steps", "0"),
+             ("localize", "--map", "apartment", "--task", "fly to the moon", "--steps", "0"),
+             ("localize", "--map", "apartment", "--frame", "", "--steps", "0"),
+             ("localize", "--map", "apartment", "--bag", "nope.bag"),
+             ("localize", "--map", "apartment", "--observations", "o.yaml", "--trajectory", "o.yaml"),
+             ("import-bag", "nope.bag", "-o", "o.yaml"), ("import-bag", "nope.bag"),
+             ("bench", "tasks", "--suite", "nope"), ("bench", "tasks", "--suite", "map", "--policies", "nope"),
+             ("bench", "tasks", "--suite", "map", "--backend", "nope"), ("bench", "tasks", "--split", "nope"),
+             ("bench", "tasks", "--data", "nowhere"), ("bench", "parse", "--corpus", "nope"),
+             ("bench", "parse", "--scorers", "nowhere"), ("bench", "e2e", "--map", "nope"),
+             ("bench", "e2e", "--file", "nope.txt"), ("bench", "maps", "--map", "nope"),
+             ("bench", "ros", "--format", "nope"), ("bench", "plan", "--file", "nope.txt"),
+             ("bench", "plan", "--map", "nope"), ("bench", "reliability", "--limit", "-1"), ("bench", "nope"),
+             ("nope",), ("--version",), ("-h",), ("parse", "-h"), ("bench", "tasks", "-h")]
+    for argv in edges:
+        yield Case(f"H option edge: {' '.join(argv)}", argv, codes=(0, 1, 2))
+
+
 def _chain(n: int, cycle: bool) -> bytes:
     def word(i: int) -> str:
         letters = ""
@@ -444,5 +660,5 @@ def generated_cases(seed: int = 0, count: int = 320) -> Iterator[Case]:
 
 
 def cases(seed: int = 0, count: int = 320) -> list[Case]:
-    """The issue's cases, then ``count`` generated ones."""
-    return [*issue_cases(), *generated_cases(seed, count)]
+    """The issue's cases, the hostile inputs written by hand, then ``count`` generated ones."""
+    return [*issue_cases(), *hostile_cases(), *generated_cases(seed, count)]

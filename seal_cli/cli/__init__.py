@@ -30,8 +30,9 @@ if TYPE_CHECKING:
     app: typer.Typer
     """The whole command line, every command registered (made when first asked for, see ``__getattr__``)."""
 
-__all__ = ["MAX_PARTICLES", "MAX_STEPS", "OUTPUT_SUFFIXES", "PIPE_WIDTH", "FramelibOption", "JsonOption",
-           "LazyConsole", "app", "bench_app", "command", "emit_json", "err", "main", "out", "progress_bar", "report"]
+__all__ = ["MAX_COUNT", "MAX_PARTICLES", "MAX_RUN_METRES", "MAX_RUN_STEPS", "MAX_STEPS", "OUTPUT_SUFFIXES",
+           "PIPE_WIDTH", "FramelibOption", "JsonOption", "LazyConsole", "a_number", "app", "bench_app", "command",
+           "emit_json", "err", "main", "out", "progress_bar", "report"]
 
 
 def framelib_paths(paths: list[Path] | None) -> list[Path] | None:
@@ -52,6 +53,25 @@ MAX_PARTICLES = 100_000
 
 MAX_STEPS = 100_000
 """The most belief updates ``seal localize --steps`` takes (about ten minutes at 200 particles)."""
+
+MAX_RUN_STEPS = 100_000
+"""The most steps ``seal run --max-steps`` allows (a run ends sooner when its task is done)."""
+
+MAX_RUN_METRES = 100_000.0
+"""The farthest ``seal run --max-metres`` lets the robot drive (100 km; NaN and infinity are refused)."""
+
+MAX_COUNT = 1_000
+"""The most layouts, repeats and runs a benchmark option takes (each is a whole run of its own)."""
+
+
+def a_number(value: float | None) -> float | None:
+    """An option's callback that refuses NaN (click's ranges let it through: no comparison holds)."""
+    if value is not None and value != value:
+        import typer
+
+        raise typer.BadParameter("must be a number, not nan")
+    return value
+
 
 OUTPUT_SUFFIXES = {"--png": (".png",), "--rrd": (".rrd",), "--episodes": (".jsonl", ".json"),
                    "--goals": (".yaml", ".yml"), "--output": (".yaml", ".yml")}

@@ -24,18 +24,11 @@ if TYPE_CHECKING:
     from seal_cli.sensing.observations import Observation
 
 
-def _rooms(rooms: dict[str, float], top: int = 3) -> str:
-    best = sorted(rooms.items(), key=lambda kv: -kv[1])[:top]
-    return ", ".join(f"{name} {mass:.2f}" for name, mass in best if mass >= 0.005) or "—"
-
-
-def _point(p: list[float]) -> str:
-    return f"({p[0]:.2f}, {p[1]:.2f})"
-
-
 def show(result: dict[str, Any]) -> None:
     """The frames and objects as two tables: top rooms, modes, best point."""
     from rich.table import Table
+
+    from seal_cli.sefm.shown import modes_text, point, rooms_text
 
     frames = Table(title=f"frames on {result['map']} after {result['updates']} updates "
                          f"({result['particles']} particles, seed {result['seed']})", title_justify="left")
@@ -43,16 +36,15 @@ def show(result: dict[str, Any]) -> None:
         frames.add_column(column, overflow="fold")
     for f in result["frames"]:
         name = f"{f['frame']}({', '.join(f'{r}={v}' for r, v in f['elements'].items())})"
-        modes = ", ".join(f"{m['weight']:.2f} {m['room']}" for m in f["modes"][:3]) or "—"
-        frames.add_row(name, _rooms(f["rooms"]), modes, _point(f["best"]), f"{f['ess']:.0f}")
+        frames.add_row(name, rooms_text(f["rooms"]) or "—", modes_text(f["modes"]) or "—", point(f["best"]),
+                       f"{f['ess']:.0f}")
     if result["frames"]:
         out.print(frames)
     objects = Table(title="objects", title_justify="left")
     for column in ("class", "rooms", "modes (weight room)", "best"):
         objects.add_column(column, overflow="fold")
     for o in result["objects"]:
-        modes = ", ".join(f"{m['weight']:.2f} {m['room']}" for m in o["modes"][:3]) or "—"
-        objects.add_row(o["class"], _rooms(o["rooms"]), modes, _point(o["best"]))
+        objects.add_row(o["class"], rooms_text(o["rooms"]) or "—", modes_text(o["modes"]) or "—", point(o["best"]))
     if result["objects"]:
         out.print(objects)
 

@@ -7,7 +7,7 @@ from typing import Any
 
 import typer
 
-from seal_cli.cli import JsonOption, bench_app, command, emit_json, err, out
+from seal_cli.cli import MAX_COUNT, JsonOption, bench_app, command, emit_json, err, out
 
 
 def summary(m: Any) -> dict[str, Any]:
@@ -101,8 +101,10 @@ def map_command(
 @command("maps", on=bench_app)
 def bench_maps(
     path: str = typer.Option("apartment", "--map", help="A map file, or the name of a shipped map."),
-    repeats: int = typer.Option(5, "--repeats", min=1, help="Calls per figure (the median is reported)."),
-    points: list[int] | None = typer.Option(None, "--points", min=1, help="Numbers of points to time each query "
+    repeats: int = typer.Option(5, "--repeats", min=1, max=MAX_COUNT,
+                                help="Calls per figure (the median is reported)."),
+    points: list[int] | None = typer.Option(None, "--points", min=1, max=1_000_000,
+                                            help="Numbers of points to time each query "
                                             "on (repeatable; default 1000 and 60000).", show_default=False),
     as_json: bool = JsonOption,
 ) -> None:

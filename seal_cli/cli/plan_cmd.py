@@ -8,9 +8,12 @@ from typing import TYPE_CHECKING
 
 import typer
 
-from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
+from seal_cli.cli import MAX_COUNT, FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
 from seal_cli.cli.parse_cmd import VocabularyOption, vocabulary_from
 from seal_cli.planning.plan import MAX_NODES, Plan
+
+MAX_MAX_NODES = 10_000_000
+"""The most search nodes ``--max-nodes`` allows (each holds a state: about 2 GB at this bound)."""
 
 if TYPE_CHECKING:
     from seal_cli.maps.model import Map
@@ -58,7 +61,8 @@ def plan(
     vocabulary: Path | None = VocabularyOption,
     pddl: Path | None = typer.Option(None, "--pddl", help="Also write domain.pddl and problem.pddl into this "
                                      "existing folder.", show_default=False),
-    max_nodes: int = typer.Option(MAX_NODES, "--max-nodes", min=1, help="Give up after expanding this many "
+    max_nodes: int = typer.Option(MAX_NODES, "--max-nodes", min=1, max=MAX_MAX_NODES,
+                                  help="Give up after expanding this many "
                                   "search nodes."),
     framelib: list[Path] | None = FramelibOption,
     as_json: bool = JsonOption,
@@ -92,7 +96,7 @@ def bench_plan(
     file: Path | None = typer.Option(None, "--file", "-f", help="Time these commands (one per line) instead of "
                                      "the built-in ones.", show_default=False),
     map_name: str | None = MapOption,
-    repeat: int = typer.Option(5, "--repeat", min=1, help="Runs per command; the median is reported."),
+    repeat: int = typer.Option(5, "--repeat", min=1, max=MAX_COUNT, help="Runs per command; the median is reported."),
     framelib: list[Path] | None = FramelibOption,
     as_json: bool = JsonOption,
 ) -> None:

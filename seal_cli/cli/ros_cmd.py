@@ -53,8 +53,9 @@ def import_bag(
 def bench_ros(
     formats: list[str] | None = typer.Option(None, "--format", help="mcap, sqlite3 or ros1 (repeatable; default "
                                              "mcap).", show_default=False),
-    poses: int = typer.Option(1000, "--poses", min=2, help="Robot poses in the bag (10 Hz)."),
-    messages: int = typer.Option(200, "--messages", min=1, help="Detection messages in the bag: one update each."),
+    poses: int = typer.Option(1000, "--poses", min=2, max=1_000_000, help="Robot poses in the bag (10 Hz)."),
+    messages: int = typer.Option(200, "--messages", min=1, max=100_000,
+                                 help="Detection messages in the bag: one update each."),
     seed: int = typer.Option(0, "--seed", min=0, help="Seed of the random generators."),
     as_json: bool = JsonOption,
 ) -> None:

@@ -9,9 +9,13 @@ from typing import Any
 import typer
 
 from seal_cli.cli import (
+    MAX_COUNT,
     MAX_PARTICLES,
+    MAX_RUN_METRES,
+    MAX_RUN_STEPS,
     FramelibOption,
     JsonOption,
+    a_number,
     bench_app,
     command,
     emit_json,
@@ -49,8 +53,10 @@ def run(
     seed: int = typer.Option(0, "--seed", min=0, help="Seed of the one random generator."),
     particles: int = typer.Option(200, "--particles", min=1, max=MAX_PARTICLES,
                                    help="Particles per object and per frame."),
-    max_steps: int = typer.Option(400, "--max-steps", min=1, help="Give up after this many steps."),
-    max_metres: float = typer.Option(300.0, "--max-metres", min=0.1, help="Give up after driving this far."),
+    max_steps: int = typer.Option(400, "--max-steps", min=1, max=MAX_RUN_STEPS,
+                                   help="Give up after this many steps."),
+    max_metres: float = typer.Option(300.0, "--max-metres", min=0.1, max=MAX_RUN_METRES,
+                                      callback=a_number, help="Give up after driving this far."),
     rrd: Path | None = typer.Option(None, "--rrd", help="Write a Rerun recording of the run here.",
                                     show_default=False),
     png: Path | None = typer.Option(None, "--png", help="Write a picture of the run here.", show_default=False),
@@ -157,12 +163,13 @@ def tasks(
     commands: list[str] | None = typer.Option(None, "--command", help="With --suite map: a command to run "
                                               "(repeatable; default: five household commands).",
                                               show_default=False),
-    layouts: int | None = typer.Option(None, "--layouts", min=1, help="With --suite map or context: object "
+    layouts: int | None = typer.Option(None, "--layouts", min=1, max=MAX_COUNT,
+                                       help="With --suite map or context: object "
                                        "layouts drawn from the priors (default 10 for map, 3 for context).",
                                        show_default=False),
     policies: str = typer.Option(",".join(DEFAULT_POLICIES), "--policies",
                                  help="Comma-separated policies, of: " + ", ".join(POLICIES) + "."),
-    jobs: int = typer.Option(0, "--jobs", min=0, help="Worker processes (0: one per core)."),
+    jobs: int = typer.Option(0, "--jobs", min=0, max=64, help="Worker processes (0: one per core)."),
     backend: str = typer.Option("process", "--backend", help="With --suite alfred2d: process (this machine's "
                                 "pool) or ray (Ray's pool, the ray extra; a cluster via RAY_ADDRESS)."),
     seed: int = typer.Option(0, "--seed", min=0, help="Seed; each episode's generator is derived from it."),
@@ -299,9 +306,10 @@ def e2e(
                                      "suite.", show_default=False),
     data: Path | None = typer.Option(None, "--data", help="The shared data folder (default: ../shared/data "
                                      "beside the project).", show_default=False),
-    jobs: int = typer.Option(0, "--jobs", min=0, help="Worker processes (0: one per core)."),
+    jobs: int = typer.Option(0, "--jobs", min=0, max=64, help="Worker processes (0: one per core)."),
     seed: int = typer.Option(0, "--seed", min=0, help="Seed of each run's generator."),
-    particles: int = typer.Option(100, "--particles", min=1, help="Particles per object and per frame."),
+    particles: int = typer.Option(100, "--particles", min=1, max=MAX_PARTICLES,
+                                  help="Particles per object and per frame."),
     framelib: list[Path] | None = FramelibOption,
     as_json: bool = JsonOption,
 ) -> None:

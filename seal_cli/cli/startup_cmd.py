@@ -4,12 +4,13 @@ from __future__ import annotations
 
 import typer
 
-from seal_cli.cli import JsonOption, bench_app, command, emit_json, err, out
+from seal_cli.cli import MAX_COUNT, JsonOption, bench_app, command, emit_json, err, out
 
 
 @command("startup", on=bench_app)
 def startup(
-    runs: int = typer.Option(20, "--runs", min=1, help="Fresh interpreters per figure (the median is kept)."),
+    runs: int = typer.Option(20, "--runs", min=1, max=MAX_COUNT,
+                             help="Fresh interpreters per figure (the median is kept)."),
     as_json: bool = JsonOption,
 ) -> None:
     """CPU (user + system) of `seal --version` and `seal parse TEXT` as multiples of `python -c pass` (warm:

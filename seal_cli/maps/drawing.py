@@ -15,7 +15,16 @@ import numpy as np
 from seal_cli.maps.geometry import FREE, OCCUPIED
 from seal_cli.maps.model import Map
 
-__all__ = ["draw_map", "room_colour", "save_map_png"]
+__all__ = ["LABEL", "declutter", "draw_map", "legend_below", "room_colour", "save_map_png"]
+
+LABEL = "seal-label"
+"""The ``gid`` of the names written on a map; :func:`declutter` moves those that are annotations."""
+LABEL_Z = 20
+"""Labels are drawn above everything else (particles, ellipses): a cloud never hides a name."""
+_HALO: dict[str, Any] = {"boxstyle": "round,pad=0.1", "facecolor": "white", "edgecolor": "none", "alpha": 0.7}
+_OFFSETS = ((3, 3), (3, -9), (-3, 3), (-3, -9), (6, -3), (-6, -3), (0, 9), (0, -15), (10, 10), (-10, 10),
+            (10, -16), (-10, -16))
+"""Where a name may stand beside its point, in points, nearest first."""
 
 _PALETTE = ("#4e79a7", "#f28e2b", "#59a14f", "#e15759", "#b07aa1", "#76b7b2", "#edc948", "#ff9da7", "#9c755f",
             "#bab0ac")
@@ -52,19 +61,20 @@ def draw_map(ax: Any, m: Map, *, rooms: bool = True, places: bool = True, object
             ax.add_patch(Polygon(room.vertices, closed=True, facecolor=colour, alpha=0.12, edgecolor=colour,
                                  linewidth=1.5, zorder=1))
             x, y, ha, va = _label_point(m, i)
-            ax.text(x, y, room.name, ha=ha, va=va, fontsize=9, color=colour, weight="bold", zorder=5)
+            ax.text(x, y, room.name, ha=ha, va=va, fontsize=9, color=colour, weight="bold", zorder=LABEL_Z,
+                    gid=LABEL, bbox=_HALO)
     if places:
         for place in m.places:
             marker = "s" if place.openable else "o"
             ax.plot(*place.at, marker=marker, markersize=5, markerfacecolor="white" if place.closed else "#555",
                     markeredgecolor="#555", zorder=3)
             ax.annotate(place.name, place.at, xytext=(3, 3), textcoords="offset points", fontsize=6, color="#555",
-                        zorder=5)
+                        zorder=LABEL_Z, gid=LABEL, bbox=_HALO)
     if objects:
         for obj in m.objects:
             ax.plot(*obj.at, marker="*", markersize=11, color="#d62728", markeredgecolor="black", zorder=4)
             ax.annotate(obj.cls, obj.at, xytext=(4, -9), textcoords="offset points", fontsize=7, color="#d62728",
-                        zorder=5)
+                        zorder=LABEL_Z, gid=LABEL, bbox=_HALO)
     if robot:
         x, y, yaw = m.robot.pose
         if visible:
@@ -81,6 +91,51 @@ def draw_map(ax: Any, m: Map, *, rooms: bool = True, places: bool = True, object
     ax.set_aspect("equal")
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
+    ax.tick_params(labelsize=7)
+
+
+def legend_below(ax: Any, **options: Any) -> None:
+    """The axes' legend under the map, outside it, so no cloud of particles covers it."""
+    handles, labels = ax.get_legend_handles_labels()
+    if handles:
+        ax.legend(handles, labels, loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=min(len(handles), 4),
+                  fontsize=7, frameon=False, **options)
+
+
+def declutter(fig: Any) -> None:
+    """Move the names beside points (annotations with ``gid=LABEL``) so that no two overlap and none
+    leaves its axes: each, in order, takes the first of a few offsets that meets no name already
+    placed (room names stay where they are), else the one that overlaps least. Call it after the
+    layout is final (after ``tight_layout``), just before saving."""
+    from matplotlib.text import Annotation
+
+    renderer = fig.canvas.get_renderer()
+    for ax in fig.axes:
+        names = [t for t in ax.texts if t.get_gid() == LABEL]
+        taken = [t.get_window_extent(renderer) for t in names if not isinstance(t, Annotation)]
+        frame = ax.get_window_extent(renderer)
+        for label in (t for t in names if isinstance(t, Annotation)):
+            best: tuple[float, tuple[int, int]] | None = None
+            for offset in _OFFSETS:
+                label.xyann = offset
+                label.set_horizontalalignment("left" if offset[0] >= 0 else "right")
+                box = label.get_window_extent(renderer)
+                clash = sum(_overlap(box, other) for other in taken) + box.width * box.height - _overlap(box, frame)
+                if best is None or clash < best[0]:
+                    best = (clash, offset)
+                if clash == 0:
+                    break
+            assert best is not None
+            label.xyann = best[1]
+            label.set_horizontalalignment("left" if best[1][0] >= 0 else "right")
+            taken.append(label.get_window_extent(renderer))
+
+
+def _overlap(a: Any, b: Any) -> float:
+    """The area two display boxes share."""
+    w = min(a.x1, b.x1) - max(a.x0, b.x0)
+    h = min(a.y1, b.y1) - max(a.y0, b.y0)
+    return max(w, 0.0) * max(h, 0.0)
 
 
 def _label_point(m: Map, index: int) -> tuple[float, float, str, str]:
@@ -119,6 +174,7 @@ def save_map_png(m: Map, path: str | Path, *, visible: bool = True, dpi: int = 1
         draw_map(ax, m, visible=visible)
         ax.set_title(m.name)
         fig.tight_layout()
+        declutter(fig)
         with atomic_output(path) as tmp:
             fig.savefig(tmp, dpi=dpi, format="png")
     finally:

@@ -124,7 +124,7 @@ def write_png(path: str | Path, agent: Agent, title: str = "") -> None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from seal_cli.maps.drawing import draw_map
+    from seal_cli.maps.drawing import declutter, draw_map, legend_below
 
     m = agent.scene.map
     xmin, ymin, xmax, ymax = m.bounds
@@ -145,10 +145,12 @@ def write_png(path: str | Path, agent: Agent, title: str = "") -> None:
                 ax.scatter(X[:, 0], X[:, 1], s=4 + 40 * W / max(W.max(), 1e-12), c="#ff7f0e", alpha=0.6, zorder=2,
                            label=f"{label} belief: {last[name]}")
             _draw_run(ax, agent)
-            ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.09), ncol=3, fontsize=7, frameon=False)
+            legend_below(ax)  # under the map: no cloud covers it
         axes[0][0].set_title(title or m.name)
         if panels == 2:
             axes[0][1].set_title("the commanded frame's belief")
+        fig.tight_layout()
+        declutter(fig)
         with atomic_output(path) as tmp:
             fig.savefig(tmp, dpi=120, format="png", bbox_inches="tight")
     finally:
@@ -165,6 +167,8 @@ def _short(text: str) -> str:
 
 def _draw_run(ax: Any, agent: Agent) -> None:
     """The path, where the robot acted, and where the things are."""
+    from seal_cli.maps.drawing import _HALO, LABEL, LABEL_Z
+
     trail = np.asarray(agent.world.robot.trajectory)
     ax.plot(trail[:, 0], trail[:, 1], "-", color="#1f77b4", linewidth=2, zorder=4, label="path")
     ax.plot(*trail[0], "o", color="#1f77b4", markersize=8, zorder=5)
@@ -177,7 +181,7 @@ def _draw_run(ax: Any, agent: Agent) -> None:
         ax.plot(at[0], at[1], "D", color="#2ca02c", markeredgecolor="black", markersize=7, zorder=7)
         left = at[0] > (xmin + xmax) / 2           # labels point into the map, on a white card over it
         ax.annotate("\n".join(_short(t) for t in texts), at, xytext=(-8 if left else 8, 6),
-                    textcoords="offset points", fontsize=7, color="#1a6e1a", zorder=8,
+                    textcoords="offset points", fontsize=7, color="#1a6e1a", zorder=LABEL_Z, gid=LABEL,
                     ha="right" if left else "left", va="bottom",
                     bbox={"boxstyle": "round,pad=0.25", "fc": "white", "ec": "#2ca02c", "alpha": 0.9, "lw": 0.6},
                     arrowprops={"arrowstyle": "-", "color": "#2ca02c", "lw": 0.6})
@@ -186,6 +190,6 @@ def _draw_run(ax: Any, agent: Agent) -> None:
         if item.key == "person" and not item.movable:     # the people, and the speaker ("me")
             ax.plot(*item.at, "^", markersize=7, color="#9467bd", zorder=5)
             ax.annotate(item.id, item.at, xytext=(4, -8), textcoords="offset points", fontsize=6,
-                        color="#9467bd", zorder=5)
+                        color="#9467bd", zorder=LABEL_Z, gid=LABEL, bbox=_HALO)
         elif item.movable:
             ax.plot(*agent.world.position(item.id), "*", markersize=6, color="#d62728", zorder=3)

@@ -318,12 +318,12 @@ def test_a_bad_map_in_code_raises_every_problem() -> None:
             priors={"cup": {"garage": 0.5, "a": -1.0}, "mug": {"b": 0.7, "a": 0.6}},
             objects=(ObjectTruth("cup", (11.0, 1.0)),))
     messages = [p.message for p in caught.value.problems]
-    assert len(messages) == 3  # the overlap and the object off the map are warnings, not errors
+    assert len(messages) == 4  # the overlap is a warning; the object off the map an error
     assert any("garage" in m for m in messages) and any("-1" in m for m in messages)
-    assert any("sum to 1.3" in m for m in messages)
+    assert any("sum to 1.3" in m for m in messages) and any("outside the map's bounds" in m for m in messages)
     odd = Map("odd", (0.0, 0.0, 10.0, 10.0), rooms=(Room.box("a", 0, 0, 5, 5), Room.box("b", 4, 4, 8, 8)),
-              objects=(ObjectTruth("cup", (11.0, 1.0)),))
-    assert [type(w) for w in odd.warnings] == [MapWarning, MapWarning]
+              objects=(ObjectTruth("cup", (5.0, 1.0)),))
+    assert [type(w) for w in odd.warnings] == [MapWarning]
     assert odd.room_of([[4.5, 4.5]]) == ["a"]  # the room listed first wins where they overlap
     with pytest.raises(SealError, match="bounds"):
         Map("nothing")
@@ -640,3 +640,50 @@ def test_a_class_a_plan_cannot_name_is_refused_where_it_is(tmp_path: Path, old: 
         assert result.exit_code == 1, result.output
         assert f"{bad}{where} {message}" in result.stderr
         assert "Traceback" not in result.stderr
+
+
+# -- many rooms: the room lookup and the overlap check scale with rooms plus points ----------------
+def _rooms_by_brute_force(m: Map, points: np.ndarray) -> np.ndarray:
+    out = np.full(len(points), -1)
+    for index, room in enumerate(m.rooms):
+        todo = out < 0
+        out[np.flatnonzero(todo)[room.contains(points[todo])]] = index
+    return out
+
+
+@pytest.mark.parametrize("points", [50, 30_000])  # all against all, and the bucket grid
+def test_room_lookup_by_buckets_is_the_brute_force_answer(points: int) -> None:
+    rng = np.random.default_rng(3)
+    rooms = []
+    for i in range(300):  # overlapping boxes and triangles of every size: the first room listed wins
+        x, y = rng.uniform(0, 50, 2)
+        w, h = rng.uniform(0.5, 15, 2)
+        triangle = ((x, y), (x + w, y), (x, y + h))
+        rooms.append(Room.box(f"r{i}", x, y, x + w, y + h) if i % 2 else Room(f"r{i}", triangle))
+    m = Map("many", (0.0, 0.0, 70.0, 70.0), rooms=tuple(rooms), check=False)
+    p = np.vstack([rng.uniform(-5, 75, (points, 2)), [[np.nan, 1.0], [np.inf, 2.0]],
+                   [r.polygon[0] for r in rooms]])  # vertices: on the edges, where half-open rules decide
+    assert np.array_equal(m._room_index_exact(p), _rooms_by_brute_force(m, p))
+
+
+def test_overlapping_rooms_are_found_by_a_sweep_not_all_pairs() -> None:
+    from seal_cli.maps.model import _box_pairs
+
+    rng = np.random.default_rng(4)
+    lo = rng.uniform(0, 100, (400, 2))
+    boxes = np.hstack([lo, lo + rng.uniform(0.1, 10, (400, 2))])
+    brute = [(i, j) for i in range(400) for j in range(i + 1, 400)
+             if boxes[i, 0] < boxes[j, 2] and boxes[j, 0] < boxes[i, 2]
+             and boxes[i, 1] < boxes[j, 3] and boxes[j, 1] < boxes[i, 3]]
+    assert _box_pairs(boxes) == brute and brute
+
+
+def test_thousands_of_rooms_validate(tmp_path: Path) -> None:  # 10,000: `seal bench reliability`
+    rows = ["bounds: [0, 0, 100, 20]", "rooms:"]
+    rows += [f"  - {{name: r{i}, box: [{i % 100}, {i // 100}, {i % 100 + 1}, {i // 100 + 1}]}}" for i in range(2_000)]
+    rows += ["  - {name: extra, box: [0.5, 0.5, 1.5, 1.5]}"]  # overlaps four rooms
+    path = tmp_path / "many.yaml"
+    path.write_text("\n".join(rows) + "\n")
+    problems = check_map_file(path)
+    assert [p.line for p in problems] == [2_003] * 4 and all("overlaps" in p.message for p in problems)
+    assert load_map(path).room_of([[99.5, 19.5], [1.2, 1.2]]) == ["r1999", "r101"]

@@ -264,6 +264,8 @@ class _Reader(NodeReader):
             fields["speaker"] = self.speaker(nodes["speaker"])
         if server is not None:
             fields["grid"] = server
+            if "bounds" not in nodes:
+                fields["bounds"] = server.bounds  # the image's extent: it never grows to take in a stray place
         elif "bounds" not in nodes and "image" not in nodes and "occupancy" not in nodes:
             self.problem("a map needs bounds: [xmin, ymin, xmax, ymax] or an occupancy image", root)
             return None
@@ -417,7 +419,12 @@ class _Reader(NodeReader):
             first[key] = cls
             self.positions[("priors", key)] = self.where(key_node)
             masses: dict[str, float] = {}
-            for target, target_node, mass_node in self.pairs_at(value, f"the prior of {cls}", ("priors_raw", cls)):
+            if _is_null(value):  # "cup:" with nothing after it: a prior left unwritten, not "anywhere"
+                self.problem(f"the prior of {cls} is empty; give a mass per room, place or place class "
+                             f"({cls}: {{kitchen: 0.5}}), or {{}} for anywhere in the free space", value)
+                continue
+            for target, target_node, mass_node in self.pairs(value, f"the prior of {cls}"):
+                self.positions[("priors_raw", cls, target)] = self.where(target_node)
                 self.positions[("priors", key, target)] = self.where(target_node)
                 mass = self.number(mass_node, f"the mass of {target} in the prior of {cls}")
                 if mass is not None:
