@@ -118,6 +118,10 @@ def regions_of(agent: Agent) -> list[Region]:
     return out
 
 
+ViewFor = Callable[[Agent, Region, np.ndarray, np.ndarray], View | None]
+"""Where to look at a region from now, given the sought things' unseen belief and the robot's distance field."""
+
+
 @dataclass(frozen=True)
 class Decision:
     """A view chosen for the whole remaining plan, and why."""
@@ -179,10 +183,13 @@ class WholePlanSearch:
             out.append((cls, None, []))
         return out
 
-    def choose(self, agent: Agent, binding: Binding, target: str,
-               weights: Callable[[str], np.ndarray]) -> Decision | None:
+    def choose(self, agent: Agent, binding: Binding, target: str, weights: Callable[[str], np.ndarray],
+               view_for: ViewFor | None = None) -> Decision | None:
         """The region whose view starts the shortest expected completion; ``weights(cls)`` is the
-        belief of a class per free cell of the map."""
+        belief of a class per free cell of the map. ``view_for(agent, region, unseen, field)``, when
+        given, says where to look at a region from now (None: nowhere would reveal more of it), from
+        ``unseen``, the sought things' beliefs (each normalised) summed per free cell; otherwise a
+        region is seen from its fixed view (:meth:`view_of`)."""
         stops = self.targets(agent, binding, target)
         sought = list(dict.fromkeys(c for c, v, _ in stops if v is None))
         belief = {c: weights(c) for c in sought}
@@ -194,11 +201,23 @@ class WholePlanSearch:
         here = agent.distances()
         keep = [i for i in keep if np.isfinite(here[candidates[i].nearest_view(here)])]
         keep.sort(key=lambda i: -max(mass[c][i] / total[c] if total[c] > 0 else 0.0 for c in sought))
-        keep = keep[:MAX_REGIONS]
+        if view_for is None:
+            keep = keep[:MAX_REGIONS]
+            views = {i: self.view_of(agent, candidates[i], here) for i in keep}
+        else:
+            unseen = sum((belief[c] / total[c] for c in sought if total[c] > 0),
+                         np.zeros(len(agent.scene.map.free_centres)))
+            views = {}
+            for i in keep:
+                if len(views) == MAX_REGIONS:
+                    break
+                if (v := view_for(agent, candidates[i], unseen, here)) is not None:
+                    views[i] = v
+            keep = list(views)
         if not keep:
             return None
         regions = [candidates[i] for i in keep]
-        cells: list[Cell] = [self.view_of(agent, g, here).cell for g in regions] + [agent.robot_cell()]
+        cells: list[Cell] = [views[i].cell for i in keep] + [agent.robot_cell()]
         plan: list[Target] = []
         for c, value, at in stops:
             if value is None:
@@ -213,7 +232,7 @@ class WholePlanSearch:
         if choice is None:
             return None
         region = regions[choice.region]
-        view = self.view_of(agent, region, here)
+        view = views[keep[choice.region]]
         shares = {c: float(mass[c][keep][choice.region] / mass[c][keep].sum()) for c in sought
                   if mass[c][keep].sum() > 0}
         there = " and ".join(f"{c} {p:.2f}" for c, p in shares.items() if p >= 0.005) or "little of anything"
