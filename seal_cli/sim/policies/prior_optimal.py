@@ -67,6 +67,8 @@ class PriorOptimalPolicy(Policy):
         self.used: set[tuple[str, Cell]] = set()
         """Views looked from, per region (never chosen again for it)."""
         self.pending: tuple[str, Cell] | None = None
+        self.scored: dict[str, tuple[tuple[int, float], list[Cell], list[float]]] = {}
+        """Per region, the candidate views' scores, kept while its unseen mass is unchanged."""
         self.fallback = CoveragePolicy()
         self.fallback.begin(agent)
 
@@ -135,28 +137,36 @@ class PriorOptimalPolicy(Policy):
         cells = region.cells[unseen[region.cells] > 0]
         if not len(cells):
             return None
-        m = self.map
-        rng = np.random.default_rng(len(cells))
         w = unseen[cells]
-        targets = m.free_centres[cells if len(cells) <= SAMPLE else rng.choice(cells, SAMPLE, p=w / w.sum())]
-        weight = w if len(cells) <= SAMPLE else np.full(len(targets), w.sum() / len(targets))
-        options = self._candidates(agent, region)
-        options = [c for c in options if np.isfinite(field_[c]) and (region.name, c) not in self.used]
-        if not options:
+        key = (len(cells), round(float(w.sum()), 9))
+        cached = self.scored.get(region.name)
+        if cached is None or cached[0] != key:
+            cached = (key, *self._score(agent, region, cells, w))
+            self.scored[region.name] = cached
+        _, candidates, scores = cached
+        fresh = [(c, s) for c, s in zip(candidates, scores, strict=True)
+                 if np.isfinite(field_[c]) and (region.name, c) not in self.used]
+        best = max((s for _, s in fresh), default=0.0)
+        if best <= 0:
             return None
+        cell = min((c for c, s in fresh if s >= 0.9 * best), key=lambda c: float(field_[c]))
+        return View(cell, region.look_at if region.place is not None else agent.grid.point(cell))
+
+    def _score(self, agent: Agent, region: Region, cells: np.ndarray, w: np.ndarray) -> tuple[list[Cell], list[float]]:
+        """Each candidate view of a region and the unseen mass (``w`` on ``cells``) it would see, on a sample."""
+        rng = np.random.default_rng(len(cells))
+        targets = self.map.free_centres[cells if len(cells) <= SAMPLE else rng.choice(cells, SAMPLE, p=w / w.sum())]
+        weight = w if len(cells) <= SAMPLE else np.full(len(targets), w.sum() / len(targets))
+        candidates = self._candidates(agent, region)
         reach = agent.world.sensor.range
         scores = []
-        for c in options:
+        for c in candidates:
             x, y = agent.grid.point(c)
             near = np.flatnonzero(np.hypot(targets[:, 0] - x, targets[:, 1] - y) <= reach)
             if len(near):
                 near = near[np.asarray(agent.world.sensor.visible((x, y, 0.0), targets[near]), dtype=bool)]
             scores.append(float(weight[near].sum()))
-        best = max(scores)
-        if best <= 0:
-            return None
-        cell = min((c for c, s in zip(options, scores, strict=True) if s >= 0.9 * best), key=lambda c: float(field_[c]))
-        return View(cell, region.look_at if region.place is not None else agent.grid.point(cell))
+        return candidates, scores
 
     def _candidates(self, agent: Agent, region: Region) -> list[Cell]:
         """The cells a region may be looked at from: a place's stand cells, a sample of a room's free cells."""

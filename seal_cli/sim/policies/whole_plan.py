@@ -71,12 +71,27 @@ def _room_views(agent: Agent, inside: np.ndarray, room_cells: np.ndarray) -> lis
     return [(int(i), int(j)) for (i, j), n in zip(cells, np.asarray(counts)[order], strict=True) if n >= 0.9 * best]
 
 
-def regions_of(agent: Agent) -> list[Region]:
+def _place_region(agent: Agent, name: str, cells: np.ndarray) -> Region | None:
+    """A place as a region of its own, seen from its stand cell nearest to it (None: nowhere to stand)."""
+    stands = agent.stand_cells(agent.known[name]) if len(cells) else np.zeros((0, 2), dtype=int)
+    if not len(stands):
+        return None
+    at = agent.known[name].at
+    pts = np.asarray([agent.grid.point((int(i), int(j))) for i, j in stands])
+    k = int(np.argmin(np.hypot(pts[:, 0] - at[0], pts[:, 1] - at[1])))
+    return Region(name, (int(stands[k, 0]), int(stands[k, 1])), at, cells, name)
+
+
+def regions_of(agent: Agent, places_only: bool = False) -> list[Region]:
     """The rooms of the map, each seen from the cell that sees most of it, with the open places its
     view sees (within sensor range and line of sight) merged in; every other place — shut ones,
     which must be opened, and those no room's view sees — a region of its own, seen from its
-    stand cell nearest to it."""
+    stand cell nearest to it. ``places_only``: every place a region of its own, and no room (a
+    single open room whose things all lie in or on its places, as in ALFRED)."""
     m = agent.scene.map
+    if places_only:
+        return [g for place in m.places if place.name in agent.known
+                and (g := _place_region(agent, place.name, target_cells(m, place.name))) is not None]
     out: list[Region] = []
     place_cells = {p.name: target_cells(m, p.name) for p in m.places if p.name in agent.known}
     in_room: dict[int, list[str]] = {}
@@ -102,12 +117,10 @@ def regions_of(agent: Agent) -> list[Region]:
         own = place_cells.get(place.name)
         if own is None or not len(own) or place.name in merged:
             continue
-        stands = agent.stand_cells(agent.known[place.name])
-        if not len(stands):
+        region = _place_region(agent, place.name, own)
+        if region is None:
             continue
-        pts = np.asarray([agent.grid.point((int(i), int(j))) for i, j in stands])
-        k = int(np.argmin(np.hypot(pts[:, 0] - place.at[0], pts[:, 1] - place.at[1])))
-        out.append(Region(place.name, (int(stands[k, 0]), int(stands[k, 1])), place.at, own, place.name))
+        out.append(region)
         taken[own] = True
     for r, seen_from in views.items():
         cells = np.flatnonzero((m.free_cell_room == r) & ~taken)
@@ -134,8 +147,8 @@ class Decision:
 class WholePlanSearch:
     """The regions of one run's map, and the choice of the next one to look at."""
 
-    def __init__(self, agent: Agent) -> None:
-        self.regions = regions_of(agent)
+    def __init__(self, agent: Agent, places_only: bool = False) -> None:
+        self.regions = regions_of(agent, places_only)
         self.looked: set[str] = set()
         """Regions already looked at from their view."""
 
