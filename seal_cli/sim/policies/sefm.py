@@ -100,9 +100,8 @@ class SeFMPolicy(Policy):
 
     def observe(self, agent: Agent, detections: Sequence[Detection]) -> None:
         self.fallback.observe(agent, detections)
-        if self.pending is not None and self.planner is not None and agent.robot_cell() == self.pending[1]:
-            self.planner.looked.add(self.pending[0])
-            self.pending = None
+        if self.planner is not None:
+            self.planner.observe(agent)
         pose = agent.world.robot.pose
         self.history.append((pose, tuple(detections)))
         if self.sefm is None and self.keep_clouds and agent.steps:
@@ -205,6 +204,8 @@ class SeFMPolicy(Policy):
             return None
         if self.planner is None:
             self.planner = WholePlanSearch(agent, places_only=single)
+            for pose, _ in self.history:
+                self.planner.see(agent, pose)
         sefm = self._beliefs(agent)
         sefm.update(agent.world.robot.pose, (), self._state(agent))
         points = self.map.free_centres
@@ -216,13 +217,7 @@ class SeFMPolicy(Policy):
                 w = np.asarray(self.map.prior(cls).weights, dtype=float)
             return np.where(np.isfinite(w) & (w > 0), w, 0.0)
 
-        decision = self.planner.choose(agent, binding, target, weights)
-        self.pending = None if decision is None else (decision.region.name, decision.view.cell)
-        return decision
-
-    pending: tuple[str, Cell] | None = None
-    """The region chosen last and its view: marked looked at once the robot looks from there (a drive
-    that stops short, the thing sought seen on the way, leaves it unlooked)."""
+        return self.planner.choose(agent, binding, target, weights)
 
     def greedy_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
         """The view that reveals the most belief per metre: opening a shut receptacle reveals the

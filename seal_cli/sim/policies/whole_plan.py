@@ -21,7 +21,12 @@ from seal_cli.sim.agent import Agent, View
 from seal_cli.sim.navigation import Cell
 from seal_cli.sim.policies.completion import MAX_REGIONS, Choice, Target, solve
 
-__all__ = ["Region", "WholePlanSearch"]
+__all__ = ["CANDIDATES", "SAMPLE", "Region", "WholePlanSearch"]
+
+CANDIDATES = 80
+"""Free cells of a room tried as its view (a fixed sample when the room has more)."""
+SAMPLE = 200
+"""Points of a region's belief on which a candidate view is scored (drawn by their weight)."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -131,10 +136,6 @@ def regions_of(agent: Agent, places_only: bool = False) -> list[Region]:
     return out
 
 
-ViewFor = Callable[[Agent, Region, np.ndarray, np.ndarray], View | None]
-"""Where to look at a region from now, given the sought things' unseen belief and the robot's distance field."""
-
-
 @dataclass(frozen=True)
 class Decision:
     """A view chosen for the whole remaining plan, and why."""
@@ -149,8 +150,34 @@ class WholePlanSearch:
 
     def __init__(self, agent: Agent, places_only: bool = False) -> None:
         self.regions = regions_of(agent, places_only)
-        self.looked: set[str] = set()
-        """Regions already looked at from their view."""
+        self.map = agent.scene.map
+        self.used: set[tuple[str, Cell]] = set()
+        """Views looked from, per region (never chosen again for it)."""
+        self.pending: tuple[str, Cell] | None = None
+        """The region chosen last and its view, until the robot looks from there (a drive that stops
+        short, the thing sought seen on the way, leaves it unused)."""
+        self.scored: dict[str, tuple[tuple[int, float], list[Cell], list[float]]] = {}
+        """Per region, its candidate views' scores, kept while its belief is unchanged."""
+
+        self.seen = np.zeros(len(self.map.free_centres), dtype=bool)
+        """Free cells the sensor has seen (in range and in line of sight, up to its fan of rays)."""
+
+    def observe(self, agent: Agent) -> np.ndarray:
+        """The robot has looked: the free cells it saw (indices, returned, and added to :attr:`seen`);
+        the view chosen last is used once the robot has looked from it."""
+        if self.pending is not None and agent.robot_cell() == self.pending[1]:
+            self.used.add(self.pending)
+            self.pending = None
+        return self.see(agent, agent.world.robot.pose)
+
+    def see(self, agent: Agent, pose: tuple[float, float, float]) -> np.ndarray:
+        """The free cells the sensor sees from ``pose`` (indices), added to :attr:`seen`."""
+        centres = self.map.free_centres
+        near = np.flatnonzero(np.hypot(centres[:, 0] - pose[0], centres[:, 1] - pose[1]) <= agent.world.sensor.range)
+        if len(near):
+            near = near[np.asarray(agent.world.sensor.region(pose).contains(centres[near]), dtype=bool)]
+        self.seen[near] = True
+        return near
 
     def targets(self, agent: Agent, binding: Binding, target: str) -> list[tuple[str, str | None, list[Cell]]]:
         """The remaining plan's stops from the thing sought now: (class, None, []) for an unknown
@@ -196,17 +223,19 @@ class WholePlanSearch:
             out.append((cls, None, []))
         return out
 
-    def choose(self, agent: Agent, binding: Binding, target: str, weights: Callable[[str], np.ndarray],
-               view_for: ViewFor | None = None) -> Decision | None:
+    def choose(self, agent: Agent, binding: Binding, target: str,
+               weights: Callable[[str], np.ndarray]) -> Decision | None:
         """The region whose view starts the shortest expected completion; ``weights(cls)`` is the
-        belief of a class per free cell of the map. ``view_for(agent, region, unseen, field)``, when
-        given, says where to look at a region from now (None: nowhere would reveal more of it), from
-        ``unseen``, the sought things' beliefs (each normalised) summed per free cell; otherwise a
-        region is seen from its fixed view (:meth:`view_of`)."""
+        belief of a class per free cell of the map. Each region is looked at from its view as
+        :meth:`fresh_view` finds it now; a region no view would reveal more of is left out."""
         stops = self.targets(agent, binding, target)
         sought = list(dict.fromkeys(c for c, v, _ in stops if v is None))
-        belief = {c: weights(c) for c in sought}
-        candidates = [g for g in self.regions if g.name not in self.looked]
+        looked = self.seen.copy()      # a shut place not yet looked into hides what it holds
+        for g in self.regions:
+            if g.place is not None and agent.known[g.place].openable and g.place not in agent.inspected:
+                looked[g.cells] = False
+        belief = {c: np.where(looked, 0.0, weights(c)) for c in sought}
+        candidates = self.regions
         mass = {c: np.array([float(belief[c][g.cells].sum()) for g in candidates]) for c in sought}
         total = {c: float(belief[c].sum()) for c in sought}
         keep = [i for i in range(len(candidates))
@@ -214,19 +243,14 @@ class WholePlanSearch:
         here = agent.distances()
         keep = [i for i in keep if np.isfinite(here[candidates[i].nearest_view(here)])]
         keep.sort(key=lambda i: -max(mass[c][i] / total[c] if total[c] > 0 else 0.0 for c in sought))
-        if view_for is None:
-            keep = keep[:MAX_REGIONS]
-            views = {i: self.view_of(agent, candidates[i], here) for i in keep}
-        else:
-            unseen = sum((belief[c] / total[c] for c in sought if total[c] > 0),
-                         np.zeros(len(agent.scene.map.free_centres)))
-            views = {}
-            for i in keep:
-                if len(views) == MAX_REGIONS:
-                    break
-                if (v := view_for(agent, candidates[i], unseen, here)) is not None:
-                    views[i] = v
-            keep = list(views)
+        unseen = sum((belief[c] / total[c] for c in sought if total[c] > 0), np.zeros(len(self.map.free_centres)))
+        views: dict[int, View] = {}
+        for i in keep:
+            if len(views) == MAX_REGIONS:
+                break
+            if (view := self.fresh_view(agent, candidates[i], unseen, here)) is not None:
+                views[i] = view
+        keep = list(views)
         if not keep:
             return None
         regions = [candidates[i] for i in keep]
@@ -251,7 +275,66 @@ class WholePlanSearch:
         there = " and ".join(f"{c} {p:.2f}" for c, p in shares.items() if p >= 0.005) or "little of anything"
         why = (f"{region.name}: {there} there, {here[view.cell]:.1f} m "
                f"(expected {choice.expected_m:.1f} m to finish the plan)")
+        self.pending = (region.name, view.cell)
         return Decision(View(view.cell, view.look_at, view.open, why), region, choice.expected_m)
+
+    def fresh_view(self, agent: Agent, region: Region, belief: np.ndarray, field_: np.ndarray) -> View | None:
+        """Where to look at a region from now, given ``belief`` (the sought things' beliefs, each
+        normalised, summed per free cell): a place not yet looked into, from its nearest stand cell
+        (opening it if shut); otherwise the view not yet used for it that sees most of its belief on
+        cells not seen yet (on a sample), the nearest by path of those that see at least 0.9 of that;
+        None when no view would reveal any of it. So a region stays a candidate while it has belief
+        where the robot has not looked, and a room its first view saw only part of is looked at again
+        from where the rest is seen; what a belief keeps where the robot has looked (a detector that
+        may miss) is left to the policy's fallback."""
+        if region.place is not None and region.place not in agent.inspected:
+            view = self.view_of(agent, region, field_)
+            return None if (region.name, view.cell) in self.used else view
+        cells = region.cells[(belief[region.cells] > 0) & ~self.seen[region.cells]]
+        if not len(cells):
+            return None
+        w = belief[cells]
+        key = (len(cells), round(float(w.sum()), 9))
+        cached = self.scored.get(region.name)
+        if cached is None or cached[0] != key:
+            cached = (key, *self._score(agent, region, cells, w))
+            self.scored[region.name] = cached
+        _, options, scores = cached
+        fresh = [(c, s) for c, s in zip(options, scores, strict=True)
+                 if np.isfinite(field_[c]) and (region.name, c) not in self.used]
+        best = max((s for _, s in fresh), default=0.0)
+        if best <= 0:
+            return None
+        cell = min((c for c, s in fresh if s >= 0.9 * best), key=lambda c: float(field_[c]))
+        return View(cell, region.look_at if region.place is not None else agent.grid.point(cell))
+
+    def _score(self, agent: Agent, region: Region, cells: np.ndarray, w: np.ndarray) -> tuple[list[Cell], list[float]]:
+        """Each candidate view of a region and the belief (``w`` on ``cells``) it would see, on a sample
+        of :data:`SAMPLE` points drawn by their weight."""
+        rng = np.random.default_rng(len(cells))
+        targets = self.map.free_centres[cells if len(cells) <= SAMPLE else rng.choice(cells, SAMPLE, p=w / w.sum())]
+        weight = w if len(cells) <= SAMPLE else np.full(len(targets), w.sum() / len(targets))
+        options = self._candidates(agent, region)
+        reach = agent.world.sensor.range
+        scores = []
+        for c in options:
+            x, y = agent.grid.point(c)
+            near = np.flatnonzero(np.hypot(targets[:, 0] - x, targets[:, 1] - y) <= reach)
+            if len(near):
+                near = near[np.asarray(agent.world.sensor.visible((x, y, 0.0), targets[near]), dtype=bool)]
+            scores.append(float(weight[near].sum()))
+        return options, scores
+
+    def _candidates(self, agent: Agent, region: Region) -> list[Cell]:
+        """The cells a region may be looked at from: a place's stand cells; a room's views and a fixed
+        sample of :data:`CANDIDATES` of its free cells."""
+        if region.place is not None:
+            return [(int(i), int(j)) for i, j in agent.stand_cells(agent.known[region.place])]
+        room = next(r for r in self.map.rooms if r.name == region.name)
+        inside = np.flatnonzero(room.contains(agent.grid.free_points))
+        if len(inside) > CANDIDATES:
+            inside = np.random.default_rng(0).choice(inside, CANDIDATES, replace=False)
+        return [region.view, *region.views, *((int(i), int(j)) for i, j in agent.grid.free_cells[inside])]
 
     def view_of(self, agent: Agent, region: Region, field_: np.ndarray) -> View:
         """Where to stand for a region: a place from its nearest stand cell (opening it if shut), a room
