@@ -230,11 +230,7 @@ class WholePlanSearch:
         :meth:`fresh_view` finds it now; a region no view would reveal more of is left out."""
         stops = self.targets(agent, binding, target)
         sought = list(dict.fromkeys(c for c, v, _ in stops if v is None))
-        looked = self.seen.copy()      # a shut place not yet looked into hides what it holds
-        for g in self.regions:
-            if g.place is not None and agent.known[g.place].openable and g.place not in agent.inspected:
-                looked[g.cells] = False
-        belief = {c: np.where(looked, 0.0, weights(c)) for c in sought}
+        belief = {c: weights(c) for c in sought}
         candidates = self.regions
         mass = {c: np.array([float(belief[c][g.cells].sum()) for g in candidates]) for c in sought}
         total = {c: float(belief[c].sum()) for c in sought}
