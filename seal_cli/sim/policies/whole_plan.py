@@ -281,8 +281,8 @@ class WholePlanSearch:
         cells not seen yet (on a sample), the nearest by path of those that see at least 0.9 of that;
         None when no view would reveal any of it. So a region stays a candidate while it has belief
         where the robot has not looked, and a room its first view saw only part of is looked at again
-        from where the rest is seen; what a belief keeps where the robot has looked (a detector that
-        may miss) is left to the policy's fallback."""
+        from where the rest is seen. A region whose belief lies only where the robot has looked (a
+        detector that may miss) has no fresh view and drops out; that is left to the policy's fallback."""
         if region.place is not None and region.place not in agent.inspected:
             view = self.view_of(agent, region, field_)
             return None if (region.name, view.cell) in self.used else view
