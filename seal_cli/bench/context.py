@@ -48,7 +48,7 @@ from seal_cli.frames.reading import load_library
 from seal_cli.maps.formats.map_server import load_map
 from seal_cli.maps.model import Map, ObjectTruth, Robot
 
-__all__ = ["COMMANDS", "House", "houses", "regroup", "run_context_suite"]
+__all__ = ["COMMANDS", "House", "houses", "paired", "regroup", "run_context_suite"]
 
 COMMANDS = ("stir the cup", "put the spoon in the cup", "stir the mug", "pour the kettle into the mug")
 """Spoon and cup (both likely in the bedroom), twice with different frames; spoon and mug (the
@@ -155,3 +155,29 @@ def run_context_suite(data: Path, policies: Sequence[str], *, commands: Sequence
 def regroup(outcomes: Sequence[Outcome], policies: Sequence[str], part: int) -> dict[str, Any]:
     """The figures by one part of the group name (0: house, 1: command)."""
     return summarise([dataclasses.replace(o, group=o.group.split(" · ")[part]) for o in outcomes], policies)["groups"]
+
+
+def paired(outcomes: Sequence[Outcome], policies: Sequence[str], reference: str = "prior_optimal",
+           part: int = 1) -> dict[str, dict[str, dict[str, float]]]:
+    """Each policy's path minus the reference's on the same episode, folded by one part of the group
+    name (0: house, 1: command; ``all`` too): ``{group: {policy: {"n", "mean_m", "se_m"}}}``, over the
+    episodes both completed. A policy without full knowledge whose mean is below the reference's by
+    more than about two standard errors beats the prior optimum: a bug in one of them."""
+    if reference not in policies:
+        return {}
+    ref = {o.task_id: o for o in outcomes if o.policy == reference}
+    diffs: dict[str, dict[str, list[float]]] = {}
+    for o in outcomes:
+        r = ref.get(o.task_id)
+        if o.policy == reference or r is None or not (o.success and r.success):
+            continue
+        for group in (o.group.split(" · ")[part], "all"):
+            diffs.setdefault(group, {}).setdefault(o.policy, []).append(o.path_m - r.path_m)
+    out: dict[str, dict[str, dict[str, float]]] = {}
+    for group, by_policy in sorted(diffs.items()):
+        for name, d in by_policy.items():
+            a = np.asarray(d, dtype=float)
+            se = float(a.std(ddof=1) / np.sqrt(len(a))) if len(a) > 1 else float("nan")
+            out.setdefault(group, {})[name] = {"n": len(a), "mean_m": round(float(a.mean()), 3),
+                                               "se_m": round(se, 3)}
+    return out

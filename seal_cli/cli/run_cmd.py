@@ -249,10 +249,10 @@ def tasks(
     if suite == "map":
         report.update({"suite": suite, "map": map_name, "layouts": layouts, "seed": seed})
     elif suite == "context":
-        from seal_cli.bench.context import regroup
+        from seal_cli.bench.context import paired, regroup
 
         report.update({"suite": suite, "layouts": layouts, "seed": seed, "by_command": regroup(outcomes, names, 1),
-                       "by_house": regroup(outcomes, names, 0)})
+                       "by_house": regroup(outcomes, names, 0), "against_prior_optimal": paired(outcomes, names)})
     else:
         report.update({"suite": suite, "split": split, "goal": goal, "seed": seed, "limit": limit, "sample": sample})
     if as_json:

@@ -486,7 +486,9 @@ class Agent:
         if view is None:
             return Fatal(False, f"searched everywhere it could and found no {value}", Reason.NOT_FOUND, value)
         self.say("search", f"looks for {value}: {view.why}".rstrip(": "), target=value, view=view.cell)
-        self.drive_to(view.cell, "goes to look")
+        role = next((r for r, v in binding.values if v == value), None)
+        if self.drive_to(view.cell, "goes to look", until=lambda: self.resolve(value, binding, role) is not None):
+            return None
         self.world.face(view.look_at)
         if view.open is not None:
             self.open_to_look(view.open)
@@ -723,11 +725,12 @@ class Agent:
             self.state = State.of(set(self.state.facts) | {Fact("open", (self.world.items[place].key,))},
                                   self.state.taxonomy, closable=self.state.closable, classes=self.state.classes)
 
-    def drive_to(self, cell: Cell, why: str) -> None:
-        """Drive the shortest path to the cell, looking every ``look_every`` metres and at the end."""
+    def drive_to(self, cell: Cell, why: str, until: Callable[[], bool] | None = None) -> bool:
+        """Drive the shortest path to the cell, looking every ``look_every`` metres and at the end. A drive
+        to look for something stops at the look that finds it (``until()`` true): returns whether it stopped short."""
         start = self.robot_cell()
         if cell == start:
-            return
+            return False
         path = self.grid.path(start, cell)
         points = [self.grid.point(c) for c in path[1:]]
         metres = 0.0
@@ -745,9 +748,14 @@ class Agent:
                 if self.exhausted():  # the budget is checked inside a leg, not only between legs
                     break
                 self.look(quiet=True)
+                if until is not None and until():
+                    self.say("go", f"{why} ({metres:.2f} m): stops, what it looks for is in sight",
+                             to=self.world.robot.pose[:2], metres=metres)
+                    return True
         else:
             metres += self.world.drive(self._affordable(chunk))
         self.say("go", f"{why} ({metres:.2f} m)", to=self.world.robot.pose[:2], metres=metres)
+        return False
 
     def _affordable(self, waypoints: list[tuple[float, float]]) -> list[tuple[float, float]]:
         """The waypoints cut where the path budget runs out (the last one moved back along its segment)."""

@@ -71,3 +71,21 @@ def test_bench_tasks_context_json(shared_data: Path) -> None:
     assert data["suite"] == "context" and "all" in data["groups"]
     assert data["groups"]["all"]["n"] == 9 and set(data["by_house"]) == {"apartment", "aws_small_house", "cottage",
                                                                           "all"}
+
+
+def test_paired_differences_against_prior_optimal_are_per_episode_and_fold_by_command() -> None:
+    from seal_cli.bench.context import paired
+    from seal_cli.bench.tasks import Outcome
+
+    def o(task: str, command: str, policy: str, path: float, ok: bool = True) -> Outcome:
+        return Outcome(task, f"cottage · {command} · start 1", policy, ok, path, 1, "", float("nan"), 0.0)
+
+    runs = [o("a", "stir the cup", "prior_optimal", 10.0), o("a", "stir the cup", "sefm", 12.0),
+            o("b", "stir the cup", "prior_optimal", 10.0), o("b", "stir the cup", "sefm", 8.0),
+            o("c", "stir the mug", "prior_optimal", 5.0), o("c", "stir the mug", "sefm", 9.0),
+            o("d", "stir the mug", "prior_optimal", 5.0), o("d", "stir the mug", "sefm", 1.0, ok=False)]
+    got = paired(runs, ["sefm", "prior_optimal"])
+    assert got["stir the cup"]["sefm"] == {"n": 2, "mean_m": 0.0, "se_m": 2.0}
+    assert got["stir the mug"]["sefm"]["n"] == 1 and got["stir the mug"]["sefm"]["mean_m"] == 4.0  # d failed
+    assert got["all"]["sefm"]["n"] == 3 and got["all"]["sefm"]["mean_m"] == pytest.approx(4 / 3, abs=1e-3)
+    assert paired(runs, ["sefm"]) == {}

@@ -84,6 +84,10 @@ class OraclePolicy(Policy):
         a few centimetres of path)."""
         if known.id not in self._cells:
             cells = agent.stand_cells(known)
+            if known.id in agent.world.items and len(cells):   # not where a wall stands between (as Agent.stand_cell)
+                clear = np.array([not agent.world.walled(known.id, agent.grid.point((int(i), int(j))))
+                                  for i, j in cells], dtype=bool)
+                cells = cells[clear] if clear.any() else cells
             thin = cells[one_per_quarter_metre(cells, agent.grid.resolution)]
             self._cells[known.id] = thin if len(thin) else cells
         return self._cells[known.id]

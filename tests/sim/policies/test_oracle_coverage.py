@@ -99,3 +99,24 @@ def test_coverage_looks_from_a_cell_with_a_line_of_sight_never_from_where_it_sta
     assert views and all(here != cell for here, cell, _ in views)
     for _, cell, at in views:
         assert apartment.line_of_sight(agent.grid.point(cell), np.array([at]))[0]
+
+
+def test_the_oracle_never_stands_behind_a_wall_from_its_thing(library: Library) -> None:
+    # a mug on the kitchen side of the wall the dining room shares with it: cells of the dining room lie
+    # within reach of it, but the hand cannot go through the wall (the apartment, context-suite layout)
+    import dataclasses
+
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.maps.model import ObjectTruth, Robot
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.resources import map_path
+    from seal_cli.sim.policies import make_policy
+
+    m = load_map(map_path("apartment"))
+    where = {"spoon": (-8.0, 2.9), "cup": (-8.8, 1.0), "mug": (5.26, -0.45), "kettle": (4.84, 2.18)}
+    priors = {**{c: {"kitchen": 1.0} for c in where if c not in m.priors}, **m.priors}
+    world = dataclasses.replace(m, priors=priors, robot=Robot((6.0, 4.5, 0.0)),
+                                objects=tuple(ObjectTruth(c, at) for c, at in where.items()))
+    _, result = run_on_map(world, "pour the kettle into the mug", library, make_policy("oracle"),
+                           rng=np.random.default_rng(0))
+    assert result.completed, result.reason
