@@ -18,7 +18,6 @@ A :class:`CommandParser` (one per frame library) runs the stages, one module eac
 
 from __future__ import annotations
 
-import difflib
 from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import replace
 from typing import TYPE_CHECKING, Any
@@ -232,6 +231,8 @@ def _swallowed_error(parse: Parse, lost: Swallowed) -> CommandError:
 
 def _some_verbs(lexicon: Lexicon, near: str | None = None) -> str:
     verbs = [v for v in lexicon.verbs]
+    import difflib
+
     close = difflib.get_close_matches(near, verbs, n=3, cutoff=0.6) if near else []
     shown = close + [v for v in ("bring", "find", "go", "pick up", "put", "follow", "tell") if v in verbs
                      and v not in close]

@@ -24,7 +24,6 @@ this module; every file there is read and their counts are added.
 
 from __future__ import annotations
 
-import json
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from functools import cache, cached_property
@@ -188,6 +187,8 @@ def _table(data: Any, where: Where) -> WordUsage:
 
 def load_word_usage(paths: Iterable[str | Path]) -> WordUsage:
     """The word-class tables in these files (or folders of ``*.json``), their counts added."""
+    import json
+
     from seal_cli.fileio import read_text
 
     usage = WordUsage()
