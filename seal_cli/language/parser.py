@@ -81,7 +81,7 @@ class CommandParser:
                                _first_column(text), text, ["a verb"])
         tree = self.tree(text, words)
         if vocabulary is not None:
-            vocabulary = self.with_library_synonyms(vocabulary)
+            vocabulary = self.with_library_synonyms(vocabulary).in_context(text)   # the sentence weighs
         command = Syntax(text, words, self.types).transform(tree)
         clauses = Clauses(text, self.library, self.types, lexicon.speech).passes(command)
         parse = Evoker(text, self.library, self.types, vocabulary, words, tagger.remarks).command(clauses)
