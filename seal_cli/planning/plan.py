@@ -24,7 +24,11 @@ from the fact they achieve):
    undoes what is there: Pick's source is where the theme is (``not in(theme, source)`` against
    ``in(apple, fridge_1)``), Place's theme is what the hand holds (``not holding(theme)``);
 3. a role still open takes the value of N's element of the same name, if it fits the type
-   (Bring(cup, source=kitchen) needs holding(cup) → Pick(cup, source=kitchen));
+   (Bring(cup, source=kitchen) needs holding(cup) → Pick(cup, source=kitchen)); and a role rule 2
+   filled takes it too when the state knows (its ``rooms``, from a map) that rule 2's place does
+   not lie in N's: with in(cup, coffee_table_1) in the family room, Bring(cup, source=kitchen)
+   still gives Pick(cup, source=kitchen) — the robot looks for a cup there — while with
+   in(apple, fridge_1) and fridge_1 in the kitchen it gives the precise Pick(apple, source=fridge_1);
 4. then the frame's defaults (the thing of that class the state knows, else the class);
 5. any other role stays unfilled, and the facts and actions naming it drop out
    (the knife is put down with Place(theme=knife) and no goal).
@@ -201,6 +205,7 @@ class Achievers:
             if values is None:
                 continue
             for m, partial in enumerate(_from_deletions(frame, values, state)):
+                self._as_said(frame, values, partial, needer, state)
                 binding = frame.bind(self._complete(frame, partial, needer, state))
                 key = _key(binding)
                 if key == _key(needer) or key in found or not self.well_typed(binding, state) \
@@ -208,6 +213,20 @@ class Achievers:
                     continue
                 found[key] = ((len(frame.elements) - len(binding.values), order, n, m), binding)
         return [binding for _, binding in sorted(found.values(), key=lambda rank_binding: rank_binding[0])]
+
+    def _as_said(self, frame: Frame, values: Mapping[str, str], partial: dict[str, str], needer: Binding,
+                 state: State) -> None:
+        """Rule 2 yields to rule 3 where they disagree: a role a stored fact filled takes the needing
+        frame's same-named element instead when that fact's place does not lie in it (the cup the
+        state knows is on the coffee table, and the command says from the kitchen)."""
+        said = needer.elements
+        for element in frame.elements:
+            role = element.role
+            if role in values or role not in partial or role not in said or partial[role] == said[role]:
+                continue
+            if state.within(partial[role], said[role]) is False and fits(said[role], element.type, state,
+                                                                         self.taxonomy):
+                partial[role] = said[role]
 
     def _complete(self, frame: Frame, values: dict[str, str], needer: Binding, state: State) -> dict[str, str]:
         """Open roles: from the needing frame's same-named element, then from the default."""

@@ -97,6 +97,8 @@ class Things:
         self.closable: set[str] = set()
         self.fixed: set[str] = set()
         """The map's rooms and places: they stay where they are."""
+        self.rooms: dict[str, str] = {}
+        """The room of each of the map's places that lies in one."""
         self.facts: set[Fact] = set()
         self.robot_holding: str | None = None
         self.people: set[str] = set()
@@ -114,6 +116,8 @@ class Things:
             name = class_key(place.name)
             self.classes[name] = place.cls
             self.fixed.add(name)
+            if place.room:
+                self.rooms[name] = class_key(place.room)
             if place.openable:
                 self.closable.add(name)
                 if place.open:
@@ -174,7 +178,7 @@ class Things:
         held = holding or self.robot_holding
         name = self.name(held) if held else None
         facts = {f for f in self.facts if not (f.predicate == "in" and f.args[0] == name)}
-        return State.of(facts | robot_facts(name), self.taxonomy, self.closable, self.classes)
+        return State.of(facts | robot_facts(name), self.taxonomy, self.closable, self.classes, self.rooms)
 
 
 MAX_COUNT = 100

@@ -41,16 +41,26 @@ class State:
     when None, ``open`` is an ordinary stored fact."""
     classes: Mapping[str, str] = field(default_factory=dict, compare=False, repr=False)
     """The class of each thing whose name is not its class (``fridge_1`` → ``fridge``, ``apple_2`` → ``apple``)."""
+    rooms: Mapping[str, str] = field(default_factory=dict, compare=False, repr=False)
+    """The room each place lies in (``fridge_1`` → ``kitchen``), as a map says; empty without one."""
 
     @classmethod
     def of(cls, facts: Iterable[Fact], taxonomy: Taxonomy | None = None,
-           closable: Iterable[str] | None = None, classes: Mapping[str, str] | None = None) -> State:
+           closable: Iterable[str] | None = None, classes: Mapping[str, str] | None = None,
+           rooms: Mapping[str, str] | None = None) -> State:
         return cls(frozenset(f.positive for f in facts if not f.negated), taxonomy,
-                   None if closable is None else frozenset(closable), dict(classes or {}))
+                   None if closable is None else frozenset(closable), dict(classes or {}), dict(rooms or {}))
 
     def class_of(self, name: str) -> str:
         """The class of a thing: its entry in ``classes``, else its own name."""
         return self.classes.get(name, name)
+
+    def within(self, place: str, where: str) -> bool | None:
+        """Whether a place is ``where`` or lies in it (``fridge_1`` in ``kitchen``); None when the
+        state knows the room of neither (no map)."""
+        if place == where or self.rooms.get(place) == where:
+            return True
+        return False if place in self.rooms or where in self.rooms else None
 
     def holds(self, fact: Fact) -> bool:
         """Whether a grounded fact is true here (a negated fact: whether its positive is false)."""
@@ -76,7 +86,7 @@ class State:
         post = binding.postconditions
         deletes = {f.positive for f in post if f.negated}
         adds = {f for f in post if not f.negated}
-        return State((self.facts - deletes) | adds, self.taxonomy, self.closable, self.classes)
+        return State((self.facts - deletes) | adds, self.taxonomy, self.closable, self.classes, self.rooms)
 
     def achieves(self, binding: Binding, fact: Fact) -> bool:
         """Whether running the grounded frame here makes ``fact`` hold."""

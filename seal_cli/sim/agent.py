@@ -350,11 +350,52 @@ class Agent:
         taking = role == "theme" and any(a.name == "pick" for a in binding.actions)
         if taking:   # a thing put in place is not taken again, unless the command names it again
             candidates = [k for k in candidates if k.id not in self.placed or k.id == previous]
+        if (source := self.source_room(binding, role)) is not None:  # "a cup from the kitchen": one there
+            candidates = [k for k in candidates if bool(source.contains([self.world.position(k.id)])[0])]
         if not candidates:
             return None
         if previous is not None and any(k.id == previous for k in candidates):
             return previous
         return self.policy.choose(self, key, candidates) or self.nearest(candidates)
+
+    def source_room(self, binding: Binding, role: str | None) -> Any:
+        """The room a frame that picks its theme up takes it from, when its source names a room
+        ("bring me a cup from the kitchen": Pick(cup, source=kitchen)); else None."""
+        if role != "theme" or not any(a.name == "pick" for a in binding.actions):
+            return None
+        source = binding.elements.get("source")
+        return self.room(source) if source else None
+
+    def look_in(self, room: Any, value: str, binding: Binding, role: str | None) -> Outcome | None:
+        """Look for a thing in the room it is to be taken from, until one of its kind is known there:
+        all over the room a view at a time (:meth:`survey`, at most :data:`SURVEY_VIEWS` views), then
+        into its closed receptacles, the nearest first. An Outcome when none is there."""
+        views = 0
+        while self.resolve(value, binding, role) is None:
+            if (stop := self.exhausted()) is not None:
+                return Fatal(False, stop, Reason.BUDGET)
+            looked = len(self.looks)
+            if views < SURVEY_VIEWS:
+                self.survey(room, views=1)
+                views += 1
+            if len(self.looks) > looked:
+                continue
+            closed = [k for k in self.known.values() if not k.movable and k.openable and k.id not in self.opened
+                      and k.id not in self.unreachable and not self.world.items[k.id].is_open
+                      and bool(room.contains([k.at])[0])]
+            place = self.nearest(closed) if closed else None
+            if place is None:
+                return Fatal(False, f"no {self.said(value)} in the {room.name.replace('_', ' ')}",
+                             Reason.NOT_FOUND, value)
+            cell = self.policy.stand(self, self.known[place])
+            if cell is not None:
+                self.drive_to(cell, f"goes to {place}")
+                self.world.face(self.known[place].at)
+                self.open_to_look(place)
+                self.look()
+            if place not in self.opened:  # out of reach, or it would not open: not tried again
+                self.unreachable.add(place)
+        return None
 
     def room(self, value: str) -> Any:
         """The map's room a value names, if it names one."""
@@ -471,6 +512,10 @@ class Agent:
                 k = int(np.argmin(costs))
                 self.drive_to((int(cells[k, 0]), int(cells[k, 1])), f"goes into {value}")
                 return Outcome(True, f"in {value}")
+            if (source := self.source_room(binding, role)) is not None and self.sweeper is not None:
+                if (ended := self.look_in(source, value, binding, role)) is not None:
+                    return ended
+                continue
             if (ended := self.look_once(value, binding)) is not None:
                 return ended
 

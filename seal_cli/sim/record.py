@@ -24,30 +24,53 @@ SEEN = (44, 160, 44)
 
 def write_rrd(path: str | Path, agent: Agent) -> None:
     """A Rerun recording over the timeline ``step``, laid out as ``seal localize``'s
-    (:mod:`seal_cli.sefm.observers.rerun_scene`): the map image, rooms and places; the robot's pose,
-    path and narration (``robot/log``); what it saw; the path length (``metrics/path_m``); and — when
-    the policy kept them — the particle clouds of the frame at hand and of every object (class ids,
-    radius by weight, logged when the belief changed), the frame's room masses (``metrics/rooms/<frame>``)
-    and the objects' effective sample sizes (``metrics/ess``)."""
+    (:mod:`seal_cli.sefm.observers.rerun`, whose helpers it uses): the map image, rooms and places;
+    the robot's pose, path (a point every 0.25 m) and narration (``robot/log``); what it saw
+    (``observations``: one entity, class ids); and — when the policy kept them — the particle clouds
+    of every object (``objects/particles``) and of the frame at hand with the commanded frame it
+    serves (``frames/particles``), each point with its class's id, radius by weight, logged when a
+    belief changed. The metrics — the path length (``metrics/path_m``), the room masses of each frame
+    while at hand (``metrics/rooms/<frame>``) and the objects' effective sample sizes
+    (``metrics/ess``) — are sent at the end, one chunk each with all steps in columns. No footer."""
     import rerun as rr
 
     from seal_cli.sefm.modes import room_masses
-    from seal_cli.sefm.observers.rerun import CHANGE, cell_masses, radii, total_variation
-    from seal_cli.sefm.observers.rerun_scene import DRAW, Classes, batching, blueprint, log_map, save
+    from seal_cli.sefm.observers.rerun import (
+        CHANGE,
+        TRAIL_STEP,
+        cell_masses,
+        log_clouds,
+        log_detections,
+        radii,
+        total_variation,
+    )
+    from seal_cli.sefm.observers.rerun_scene import (
+        DRAW,
+        Classes,
+        batching,
+        blueprint,
+        log_map,
+        save,
+        send_series,
+        series_colour,
+    )
     from seal_cli.sefm.resampling import ess
 
     m = agent.scene.map
     clouds: list[dict[str, Any]] = agent.policy.clouds
-    frames = list(dict.fromkeys(c["frame"] for c in clouds if c["frame_particles"] is not None and c["frame"]))
+    at_hand = [c["frame"] for c in clouds if c["frame_particles"] is not None and c["frame"]]
+    commanded = [c["commanded"] for c in clouds if c.get("commanded_particles") is not None and c["commanded"]]
+    frames = list(dict.fromkeys([*at_hand, *commanded]))
     objects = list(dict.fromkeys(cls for c in clouds for cls in c["objects"]))
     classes = Classes(objects, frames)
     panels = [("series", "path (m)", "/metrics/path_m"), ("log", "what the robot did", "/robot/log")]
-    if frames:
+    if at_hand:
         panels.insert(1, ("series", "room mass of the frame at hand", "/metrics/rooms"))
     if objects:
         panels.insert(2, ("series", "effective sample size", "/metrics/ess"))
     stream = rr.RecordingStream("seal_run", recording_id=f"{m.name}-seal-run",
                                 batcher_config=batching(), send_properties=False)
+    rooms = [*m.room_names, "_outside"]
     with atomic_output(path) as tmp:
         save(stream, tmp)  # without rerun's footer, as seal localize's
         stream.set_log_time_enabled(False)
@@ -57,22 +80,26 @@ def write_rrd(path: str | Path, agent: Agent) -> None:
         log_map(stream, m, [(i.id, i.at) for i in agent.world.items.values() if not i.movable])
         stream.set_time("step", sequence=0)
         trail: list[tuple[float, float]] = []
+        pose: tuple[float, float, float] | None = None
+        seen = 0
         for record in agent.records:
             stream.set_time("step", sequence=record.step)
             x, y, yaw = record.pose
-            if not trail or trail[-1] != (x, y):
-                trail.append((x, y))
+            if record.pose != pose:
+                pose = record.pose
                 stream.log("robot/pose", rr.Points2D([[x, y]], radii=0.12, colors=[ROBOT], draw_order=DRAW["robot"]),
                            rr.Arrows2D(origins=[[x, y]], vectors=[[0.5 * np.cos(yaw), 0.5 * np.sin(yaw)]],
                                        colors=[ROBOT], draw_order=DRAW["robot"]))
+            far = not trail or np.hypot(x - trail[-1][0], y - trail[-1][1]) >= TRAIL_STEP
+            if far or (record is agent.records[-1] and trail[-1] != (x, y)):  # and where it ended
+                trail.append((x, y))
                 if len(trail) > 1:
                     stream.log("robot/path", rr.LineStrips2D([trail], colors=[ROBOT], draw_order=DRAW["robot"]))
             stream.log("robot/log", rr.TextLog(f"{record.kind}: {record.text}"))
-            stream.log("metrics/path_m", rr.Scalars(record.path_m))
-            for item in record.data.get("seen", []):
-                thing = agent.world.items[item]
-                stream.log(f"observations/{thing.key}", rr.Points2D([thing.at], radii=0.1, colors=[SEEN],
-                                                                   draw_order=DRAW["observations"]))
+            things = [agent.world.items[item] for item in record.data.get("seen", [])]
+            if things or seen:
+                seen = len(things)
+                log_detections(stream, [(thing.key, thing.at) for thing in things], classes, SEEN)
         shown: dict[str, dict[int, float]] = {}  # what each cloud's masses were when it was last logged
 
         def changed(key: str, X: np.ndarray, W: np.ndarray, last: bool) -> bool:
@@ -82,34 +109,40 @@ def write_rrd(path: str | Path, agent: Agent) -> None:
                 return True
             return False
 
-        named: set[str] = set()  # the metrics whose series names went with their first values
+        masses: dict[str, list[tuple[int, list[float]]]] = {}  # frame: (step, its room masses) while at hand
+        sizes: list[tuple[int, list[float]]] = []  # (step, every object's ESS)
         for k, cloud in enumerate(clouds):
             stream.set_time("step", sequence=cloud["step"])
             last = k == len(clouds) - 1
+            beliefs = []  # the frame at hand, and the commanded frame it serves
             if cloud["frame_particles"] is not None and cloud["frame"]:
                 X, W = cloud["frame_particles"]
-                fid = cloud["frame"]
-                lines = [] if fid in named else [rr.SeriesLines(names=[*m.room_names, "_outside"])]
-                named.add(fid)
-                stream.log(f"metrics/rooms/{fid}", rr.Scalars(list(room_masses(m, X, W).values())), *lines)
-                if changed(f"frames/{fid}", X, W, last):
-                    stream.log(f"frames/{fid}/particles", rr.Points2D(X, radii=radii(W), class_ids=[classes.ids[fid]],
-                                                                     draw_order=DRAW["frames"]))
+                masses.setdefault(cloud["frame"], []).append((cloud["step"], list(room_masses(m, X, W).values())))
+                beliefs.append((cloud["frame"], X, W))
+            if cloud.get("commanded_particles") is not None and cloud["commanded"] not in ("", cloud["frame"]):
+                beliefs.append((cloud["commanded"], *cloud["commanded_particles"]))
+            if any([changed(f"frames/{fid}", X, W, last) for fid, X, W in beliefs]):
+                log_clouds(stream, "frames/particles", [X for _, X, _ in beliefs], [radii(W) for _, _, W in beliefs],
+                           [classes.ids[fid] for fid, _, _ in beliefs], DRAW["frames"])
             if cloud["objects"]:
-                lines = [] if "ess" in named else [rr.SeriesLines(names=objects)]
-                named.add("ess")
-                stream.log("metrics/ess", rr.Scalars([float(ess(cloud["objects"][c][1])) if c in cloud["objects"]
-                                                      else 0.0 for c in objects]), *lines)
-            if cloud.get("commanded_particles") is not None:
-                X, W = cloud["commanded_particles"]
-                key = f"commanded/{cloud['commanded']}"
-                if changed(key, X, W, last):
-                    stream.log(f"{key}/particles", rr.Points2D(X, radii=radii(W), draw_order=DRAW["frames"]))
-            for cls, (X, W) in cloud["objects"].items():
-                if changed(f"objects/{cls}", X, W, last):
-                    stream.log(f"objects/{cls}/particles", rr.Points2D(X, radii=radii(W),
-                                                                      class_ids=[classes.ids[cls]],
-                                                                      draw_order=DRAW["objects"]))
+                sizes.append((cloud["step"], [float(ess(cloud["objects"][c][1])) if c in cloud["objects"] else 0.0
+                                              for c in objects]))
+                if any([changed(f"objects/{c}", X, W, last) for c, (X, W) in cloud["objects"].items()]):
+                    log_clouds(stream, "objects/particles", [X for X, _ in cloud["objects"].values()],
+                               [radii(W) for _, W in cloud["objects"].values()],
+                               [classes.ids[c] for c in cloud["objects"]], DRAW["objects"])
+
+        def series(entity: str, found: list[tuple[int, list[float]]], names: list[str],
+                   colours: list[tuple[int, int, int]]) -> None:
+            if found:
+                send_series(stream, entity, [rr.TimeColumn("step", sequence=[step for step, _ in found])],
+                            np.array([values for _, values in found], float), names, colours)
+
+        series("metrics/path_m", [(r.step, [r.path_m]) for r in agent.records], ["path (m)"], [ROBOT])
+        for fid, found in masses.items():
+            series(f"metrics/rooms/{fid}", found, [f"{fid}: {room}" for room in rooms],
+                   [series_colour(i) for i in range(len(rooms))])
+        series("metrics/ess", sizes, objects, [classes.colour(c) for c in objects])
         stream.flush()
         stream.disconnect()
 

@@ -36,10 +36,24 @@ def test_run_recording_shares_the_localize_scene(tmp_path: Path) -> None:
     labels = [c["class_description"]["info"]["label"] for c in context["AnnotationContext:context"][0]]
     assert "stir_cup_spoon" in labels and "spoon" in labels
     ids = {c["class_description"]["info"]["label"]: c["class_id"] for c in context["AnnotationContext:context"][0]}
-    assert all(r["Points2D:class_ids"] == [ids["spoon"]] for r in logged["/objects/spoon/particles"])
+    objects = logged["/objects/particles"]  # one entity for every class, told apart by class ids
+    assert objects and all(set(r["Points2D:class_ids"]) <= {ids["spoon"], ids["cup"]} for r in objects)
+    assert any(ids["spoon"] in r["Points2D:class_ids"] for r in objects)
+    assert all(len(r["Points2D:class_ids"]) == len(r["Points2D:positions"]) for r in objects)
+    frames = logged["/frames/particles"]  # the frame at hand, and the commanded frame it serves
+    assert {ids["pick_spoon"], ids["stir_cup_spoon"]} <= {c for r in frames for c in r["Points2D:class_ids"]}
+    assert not [e for e in logged if e.startswith(("/objects/", "/frames/", "/observations/", "/commanded"))
+                and e not in ("/objects/particles", "/frames/particles")]
+    seen = logged["/observations"]
+    assert {"spoon", "cup"} <= {label for r in seen for label in (r["Points2D:labels"] or [])}
     assert logged["/robot/log"] and logged["/metrics/path_m"][-1]["Scalars:scalars"][0] > 0
     rooms = logged["/metrics/rooms/stir_cup_spoon"]
     assert all(sum(r["Scalars:scalars"]) == pytest.approx(1.0) for r in rooms)
+    assert all(name.startswith("stir_cup_spoon: ") for name in rooms[0]["SeriesLines:names"])
+    assert all(r["SeriesLines:names"] is None for r in rooms[1:])  # the names once, with the first values
+    chunks = list(rr.chunk.RrdReader(str(rrd)).stream().to_chunks())
+    assert len(chunks) == len({str(c.entity_path) for c in chunks})  # one chunk per entity, metrics included
+    assert not rrd.read_bytes().endswith(b"RRF2FOOT\x01\x00\x00\x00")  # rerun's footer trailer
     (blueprint,) = rr.chunk.RrdReader(str(rrd)).blueprints()
     names = {r["ViewBlueprint:display_name"][0] for found in entities(rrd, blueprint).values() for r in found
              if "ViewBlueprint:display_name" in r}

@@ -68,7 +68,8 @@ from seal_cli.sefm.observers.rerun_scene import (
 if TYPE_CHECKING:
     from seal_cli.sefm.filter import SeFM, Step
 
-__all__ = ["CHANGE", "RerunRecorder", "cell_masses", "radii", "spread", "total_variation"]
+__all__ = ["CHANGE", "TRAIL_STEP", "RerunRecorder", "cell_masses", "log_clouds", "log_detections", "radii", "spread",
+           "total_variation"]
 
 ROBOT = (214, 39, 40)
 DETECTION = (255, 127, 14)
@@ -114,6 +115,34 @@ def cell_masses(X: NDArray[np.float64], W: NDArray[np.float64], bounds: Sequence
 def total_variation(a: dict[int, float], b: dict[int, float]) -> float:
     """½ Σ |a − b| over the cells of two :func:`cell_masses`."""
     return 0.5 * sum(abs(a.get(k, 0.0) - b.get(k, 0.0)) for k in set(a) | set(b))
+
+
+def log_clouds(stream: Any, entity: str, clouds: Sequence[NDArray[np.float64]], sizes: Sequence[NDArray[np.float32]],
+               class_ids: Sequence[int], draw_order: float) -> None:
+    """Several classes' particles as one ``Points2D``: positions, a class id per point, and radii (one
+    per point, or a single one for all: given when every point's is the same)."""
+    import rerun as rr
+
+    every = np.concatenate(sizes) if sizes else np.zeros(0, np.float32)
+    if len(every) and np.all(every == every[0]):
+        sizes = [every[:1]]
+    stream.log(entity, rr.Points2D(
+        np.concatenate([np.asarray(X, float).reshape(-1, 2) for X in clouds]) if clouds else np.zeros((0, 2)),
+        radii=np.concatenate(sizes) if sizes else [],
+        class_ids=np.repeat(np.asarray(class_ids, np.uint16), [len(X) for X in clouds]),
+        draw_order=draw_order))
+
+
+def log_detections(stream: Any, seen: Sequence[tuple[str, Sequence[float]]], classes: Classes,
+                   colour: tuple[int, int, int]) -> None:
+    """What was seen at a step (class, position), as the one entity ``observations``: labelled with the
+    class and carrying its id (0 for a class without one); nothing seen clears what was shown."""
+    import rerun as rr
+
+    names = [name for name, _ in seen]
+    stream.log("observations", rr.Points2D(
+        np.array([at for _, at in seen], float).reshape(-1, 2), radii=0.12, colors=[colour], labels=names,
+        class_ids=[classes.ids.get(n, 0) for n in names], draw_order=DRAW["observations"]))
 
 
 class RerunRecorder:
@@ -236,15 +265,10 @@ class RerunRecorder:
     def _observations(self, step: Step) -> None:
         """The step's detections, one entity for all classes (class ids, labelled); an empty log clears
         the last step's."""
-        import rerun as rr
-
         if not step.detections and not self._seen:
             return  # nothing seen now, nothing shown: nothing to clear
         self._seen = len(step.detections)
-        names = [class_key(cls) for cls, _ in step.detections]
-        self.stream.log("observations", rr.Points2D(
-            np.array([at for _, at in step.detections], float).reshape(-1, 2), radii=0.12, colors=[DETECTION],
-            labels=names, class_ids=[self.classes.ids.get(n, 0) for n in names], draw_order=DRAW["observations"]))
+        log_detections(self.stream, [(class_key(cls), at) for cls, at in step.detections], self.classes, DETECTION)
 
     def _beliefs(self, sefm: SeFM, force: bool = False, only_pending: bool = False, metrics: bool = True) -> None:
         ess = [*(float(v) for v in sefm.frames.ess()), *(float(sefm.objects.ess()[sefm.objects.row(c)])
@@ -315,15 +339,7 @@ class RerunRecorder:
 
     def _cloud(self, entity: str, clouds: Sequence[NDArray[np.float64]], sizes: Sequence[NDArray[np.float32]],
                class_ids: Sequence[int], draw_order: float) -> None:
-        """Several classes' particles as one ``Points2D``: positions, a class id per point, and radii (one
-        per point, or a single one for all)."""
-        import rerun as rr
-
-        self.stream.log(entity, rr.Points2D(
-            np.concatenate([np.asarray(X, float).reshape(-1, 2) for X in clouds]) if clouds else np.zeros((0, 2)),
-            radii=np.concatenate(sizes) if sizes else [],
-            class_ids=np.repeat(np.asarray(class_ids, np.uint16), [len(X) for X in clouds]),
-            draw_order=draw_order))
+        log_clouds(self.stream, entity, clouds, sizes, class_ids, draw_order)
 
     def _density(self, sefm: SeFM, i: int, fid: str) -> None:
         """Frame i's target density γ on a 0.2 m grid over the map's bounds, as an RGBA image in its colour."""
