@@ -62,7 +62,10 @@ POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "wi
                     "do me a favour and", "don't forget to", "do not forget to", "help me", "help me to", "help us",
                     "make sure you", "see that you", "hi", "hello", "hi there", "hello there", "hey there",
                     "excuse me", "maybe", "perhaps", "oh", "ah",
-                    "ahh", "aw", "ugh", "urgh", "argh", "oops", "whoops", "sorry", "well", "gosh", "so"])
+                    "ahh", "aw", "ugh", "urgh", "argh", "oops", "whoops", "sorry", "well", "gosh", "so",
+                    "i'd appreciate it if you", "i would appreciate it if you", "i'd really appreciate it if you",
+                    "i would really appreciate it if you", "would it be possible to",
+                    "is it possible to", "is it possible for you to", "would it be possible for you to"])
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
     "when you have a moment", "when you have a minute", "when you have a second", "when you have time",
@@ -142,6 +145,12 @@ FIRST_LATER = frozenset(["after", "when", "whenever", "once", "as soon as"])
 TIME_UNITS = frozenset(["second", "seconds", "minute", "minutes", "hour", "hours", "moment", "moments", "while",
                         "day", "days", "week", "weeks"])
 """Measures of time: "for *three minutes*", "every *few minutes*" say how long or how often."""
+TIME_ASKED = (frozenset(["when", "whenever", "if", "once"]), frozenset(["get", "have", "find", "got"]),
+              frozenset(["a", "an", "the", "some", "any", "spare", "free", "quick", "little", "few"]),
+              TIME_UNITS | frozenset(["chance", "opportunity", "sec", "secs", "min", "mins", "tick"]))
+"""The robot's time asked for in a clause of the robot's own: "*when you get a sec*", "*if you have a spare
+minute*", "*once you find the time*": a subordinator, "you", a verb of having, a few words of quantity, a
+measure of time or a chance. Politeness like ``POLITE_FORMULAE``, not a condition (and no Pick of "a sec")."""
 NOMINATIVE = frozenset(["i", "he", "she", "we", "they"])
 """Subject pronouns: never an object, so after a noun one starts a clause ("the book *I* left on the sofa")."""
 RELATIVES = frozenset(["that", "which", "who", "whom", "whose"])
@@ -177,10 +186,11 @@ WHERE_QUESTIONS = frozenset(["where is", "where are", "where 's", "where's", "wh
 """Questions about where a thing is, or whether there is one ("*where is* the cup?", "*is there* a cup in the
 kitchen?"): they mean "find ..." (``WHERE_MEANS``)."""
 WHERE_MEANS = "find"
-WHERE_DID = (frozenset(["where"]), frozenset(["did", "do", "does", "have", "has"]),
+WHERE_DID = (frozenset(["where"]), frozenset(["did", "do", "does", "have", "has", "can", "could", "should",
+                                              "would", "will", "might", "may"]),
              frozenset(["i", "you", "we", "they", "he", "she"]))
-""""*Where did I leave* my glasses?", "*where do we keep* the batteries": where, an auxiliary, a subject and any
-verb, then what to find."""
+""""*Where did I leave* my glasses?", "*where do we keep* the batteries", "*where can I find* the sponge": where,
+an auxiliary or a modal, a subject and any verb, then what to find."""
 REQUESTS = frozenset(["i'd like", "i would like", "i'd love", "i would love", "i'd like to have",
                       "i would like to have", "can i have", "could i have", "may i have", "can i get", "could i get",
                       "can i please have", "could i please have", "may i please have", "i need", "i want",

@@ -47,6 +47,7 @@ from seal_cli.language.english import (
     SUBJECTS,
     SUBORDINATORS,
     THIRD_PERSON_SUBJECTS,
+    TIME_ASKED,
     TIME_UNITS,
     TIME_WORDS,
     TITLES,
@@ -83,7 +84,7 @@ def first_words(phrases: Iterable[str]) -> frozenset[str]:
 
 
 SUB_FIRST = first_words(SUBORDINATORS)
-FORMULA_FIRST = first_words(POLITE_FORMULAE)
+FORMULA_FIRST = first_words(POLITE_FORMULAE) | TIME_ASKED[0]
 TIME_FIRST = first_words(TIME_WORDS)
 SEP_FIRST = first_words(SEPARATOR_WORDS)
 LEAD_FIRST = SUB_FIRST | SEP_FIRST | {",", ";", ":", "start", "begin", "finish", "end", "continue", "take", "have",
@@ -112,6 +113,18 @@ def match_phrase(words: Sequence[Word], i: int, table: Iterable[str] | Mapping[s
     if best == 0 and first in table:
         best = 1
     return best
+
+
+def time_asked(words: Sequence[Word], i: int) -> int:
+    """How many words "when you get a sec" (``english.TIME_ASKED``) takes at ``i`` (0: none)."""
+    subordinators, verbs, quantity, measures = TIME_ASKED
+    if i + 3 >= len(words) or words[i].lower not in subordinators or words[i + 1].lower != "you" or \
+            words[i + 2].lower not in verbs:
+        return 0
+    k = i + 3
+    while k < len(words) and words[k].lower in quantity:
+        k += 1
+    return k + 1 - i if k < len(words) and words[k].lower in measures else 0
 
 
 def merge(words: Sequence[Word], i: int, n: int, tag: str, info: object = None) -> Word:
@@ -263,7 +276,7 @@ class State:
         words = self.words
         if words[i].lower not in FORMULA_FIRST:
             return 0
-        n = match_phrase(words, i, POLITE_FORMULAE)
+        n = match_phrase(words, i, POLITE_FORMULAE) or time_asked(words, i)
         if not n or i + n == len(words):
             return n
         nxt = words[i + n].lower

@@ -138,7 +138,8 @@ def test_a_greeting_before_a_question(library: Library) -> None:
     assert frames("where're the car keys", library) == [("Find", {"theme": "key"})]
 
 
-SETS = sorted((Path(__file__).parents[1] / "data").glob("wording_questions*.jsonl"))
+SETS = sorted([*(Path(__file__).parents[1] / "data").glob("wording_questions*.jsonl"),
+               *(Path(__file__).parents[1] / "data").glob("wording_paraphrases*.jsonl")])
 SCORER = Path(__file__).resolve().parents[2].parent / "shared" / "eval" / "score_parse.py"
 
 
@@ -155,7 +156,7 @@ def test_our_sets_of_peoples_wording_score(path: Path, library: Library) -> None
     right = sum(scorer.score_one(parse, scorer.expected_frames(item))[0]
                 for item, parse in zip(items, parse_lines([it["text"] for it in items], library), strict=True)
                 if "error" not in parse)
-    assert right / len(items) >= 0.85            # measured: 1.000, 0.900, 0.933 (docs/language.md)
+    assert right / len(items) >= 0.85            # measured: 1.000, 0.900, 0.933; 0.922, 0.919 (docs/language.md)
 
 
 def test_where_did_someone_put_it_asks_to_find(library: Library) -> None:

@@ -59,8 +59,10 @@ word is tagged as what it is (``INSIDE``), and the grammar reports the missing v
 
 INSIDE: tuple[Rule, ...] = (
     clauses.END_MARK,
+    requests.KNOW_AFTER_LET,
     statements.HER_TOLD,
     statements.TOLD,
+    statements.TOLD_HOW_TO,
     politeness.PLEASE_INSIDE,
     clauses.SOMETHING_TO,
     verbs.TELL_TO,
@@ -71,6 +73,7 @@ INSIDE: tuple[Rule, ...] = (
     statements.REMARK_UNMARKED,
     requests.FRONTED_END,
     statements.REMARK_AFTER,
+    clauses.COMMA_RELATIVE,
     clauses.SEPARATOR,
     politeness.THANKS,
     clauses.UNJOINED,

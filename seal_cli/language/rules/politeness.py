@@ -88,6 +88,7 @@ def _thanks(s: State, i: int) -> Match | None:
 
 FORMULA = Rule("politeness formula", _formula, (
     Example("When you get a chance, could you close the window?", "When you get a chance,", Tag.POLITE),
+    Example("Hey, when you get a sec, could you grab me a soda?", "when you get a sec,", Tag.POLITE),
     Example("bring it to me when you can", "when", ""),
 ), FORMULA_FIRST, "politeness said as a clause of its own: before the command, politeness; after it, dropped")
 WHILE_HOLDING = Rule("while or after first", _while_holding, (

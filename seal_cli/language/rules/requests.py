@@ -11,9 +11,11 @@ left unsaid (its ``text`` is empty).
 from __future__ import annotations
 
 from seal_cli.language.english import (
+    DETERMINERS,
     END_MARKS,
     LET_KNOW,
     OBJECT_PRONOUNS,
+    POSSESSIVES,
     PREPOSITIONS,
     QUESTION_MEANS,
     QUESTION_WORDS,
@@ -118,6 +120,8 @@ def _let_know(s: State, i: int) -> Match | None:
     if QUESTION_MEANS not in s.lexicon.units or i + 2 >= len(words):
         return None
     told = words[i + 1]
+    if told.lower in DETERMINERS or told.lower in POSSESSIVES:
+        return _let_phrase_know(s, i)
     if not (told.lower in OBJECT_PRONOUNS and told.lower not in ("it", "this", "that") or capitalised(told)) or \
             words[i + 2].lower != LET_KNOW[1]:
         return None
@@ -135,6 +139,31 @@ def _let_know(s: State, i: int) -> Match | None:
                  verb=QUESTION_MEANS, using=False)
 
 
+_LET_PHRASE_WORDS = 8
+
+
+def _let_phrase_know(s: State, i: int) -> Match | None:
+    """"*let* the person at the chairs *know* ...": "let" is "tell" when "know" ends a noun phrase after it (a few
+    words of no verb, in the sentence); the "know" is dropped where it comes (``KNOW_AFTER_LET``)."""
+    words = s.words
+    for k in range(i + 2, min(len(words), i + 2 + _LET_PHRASE_WORDS)):
+        low = words[k].lower
+        if low == LET_KNOW[1]:
+            return Match(1, (words[i].tagged(Tag.VERB, QUESTION_MEANS),), expect=False, verb=QUESTION_MEANS,
+                         using=False)
+        if low in END_MARKS or low in (",", ";", "and", "then") or s.verb_at(k) is not None and \
+                words[k - 1].lower not in DETERMINERS:
+            return None
+    return None
+
+
+def _know_after_let(s: State, i: int) -> Match | None:
+    if s.verb_index < 0 or s.out[s.verb_index].lower != LET_KNOW[0] or \
+            s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.LABEL):
+        return None
+    return Match(1)                               # "let the person at the chairs *know* what ...": dropped
+
+
 QUESTION = Rule("bare question", _question, (
     Example("What's the biggest thing on the shelf?", "What 's the biggest thing on the shelf", Tag.SAID),
     Example("which of the bottles in the pantry is the biggest?", "", Tag.VERB),
@@ -147,6 +176,7 @@ WHERE = Rule("where is", _where, (
 WHERE_DID_RULE = Rule("where did I leave", _where_did, (
     Example("Where did I leave my glasses?", "Where did I leave", Tag.VERB),
     Example("where do we keep the batteries", "where do we keep", Tag.VERB),
+    Example("Where can I find the sponge?", "Where can I find", Tag.VERB),
 ), WHERE_DID[0], "'where did I leave X', 'where do we keep X': find X")
 REQUEST = Rule("wish for a thing", _request, (
     Example("I'd like the red mug", "I'd like", Tag.VERB),
@@ -157,7 +187,11 @@ LET_KNOW_RULE = Rule("let me know", _let_know, (
     Example("let me know when the laundry is done", "let", Tag.VERB),
     Example("let me know how many bottles are in the fridge", "let me know how many", Tag.VERB),
     Example("let Amara know that her package arrived", "Amara", Tag.NAME),
+    Example("let the person at the chairs know what gesture the person at the sofa is making", "let", Tag.VERB),
 ), frozenset([LET_KNOW[0]]), "'let X know': tell X")
+KNOW_AFTER_LET = Rule("know after let X", _know_after_let, (
+    Example("let the people in the hall know that dinner is ready", "know", ""),
+), frozenset([LET_KNOW[1]]), "the 'know' of 'let the guests know ...', dropped: 'let' was read as 'tell'")
 
 
 _PHRASE_TAGS = frozenset({Tag.PREP, Tag.OF, Tag.DET, Tag.NUM, Tag.POSS, Tag.WORD, Tag.NAME, Tag.RESULT, Tag.LABEL,
