@@ -31,7 +31,8 @@ of a library verb it means, through WordNet's synonyms and hypernyms, when all o
    (``english.py``: "near" is a preposition before it is a verb of going);
 2. its *first* sense (WordNet orders senses by how often they were tagged) shares its synset with a
    lexical unit *u* of the library, or is one of its hyponyms (a way of doing *u*: "announce" is a
-   way of informing);
+   way of informing); for a verb none of whose senses was ever tagged (the order then says nothing
+   of use), its first sense that does ("relocate": its second, a way of moving something);
 3. that synset is one of *u*'s own first two senses (the meaning the library's verb is used in,
    not a rare one: "choose, take, select" is the tenth sense of "take");
 4. it keeps those of *u*'s frames that *another* verb, evoking only that frame, supports near the
@@ -174,6 +175,20 @@ class WordNet:
                     self.down[offset].append(target)
         self.senses = self._index(folder / "index.verb")
         self.noun_senses = self._index(folder / "index.noun")
+        self.counts: dict[tuple[str, int], int] = {}      # (verb, sense number) -> times tagged
+        for line in (folder / "cntlist.rev").read_text(encoding="latin-1").splitlines():
+            key, number, count = line.split()
+            lemma, _, kind = key.partition("%")
+            if kind.startswith("2:"):
+                self.counts[(lemma.replace("_", " "), int(number))] = int(count)
+
+    def frequent(self, verb: str) -> list[str]:
+        """The senses a verb is known by: its most tagged one, first in WordNet's order; all of them, in
+        that order, when none was ever tagged (then the order says nothing about use)."""
+        offsets = self.senses[verb][1]
+        if any(self.counts.get((verb, n), 0) for n in range(1, len(offsets) + 1)):
+            return offsets[:1]
+        return list(offsets)
 
     @staticmethod
     def _index(path: Path) -> dict[str, tuple[int, list[str]]]:
@@ -226,15 +241,14 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[str, str, s
         noun = wordnet.noun_senses.get(verb)
         if noun is not None and tagged <= noun[0]:
             continue                                       # mostly a noun ("cup", "table", "knife")
-        first = offsets[0]
-        for synset in (first, *wordnet.up[first]):
-            hit = frames_at(synset)
+        for sense in wordnet.frequent(verb):
+            hit = next(((synset, h) for synset in (sense, *wordnet.up[sense]) if (h := frames_at(synset))), None)
             if hit is None:
                 continue
-            lemma, frames = hit
-            how = "=" if synset == first else "<"
+            synset, (lemma, frames) = hit
+            how = "=" if synset == sense else "<"
             for frame in frames:
-                found.append((frame, verb, f"wordnet:{wordnet.name(verb, first)} {how} "
+                found.append((frame, verb, f"wordnet:{wordnet.name(verb, sense)} {how} "
                                            f"{wordnet.name(lemma, synset)} ({lemma})"))
             break
     return sorted(found)
