@@ -198,5 +198,10 @@ REQUESTS = frozenset(["i'd like", "i would like", "i'd love", "i would love", "i
 """A request for a thing said as the speaker's wish ("*I'd like* the red mug", "*Can I have* the big plate",
 "*I need* a pen"): it means "bring me ..." (``REQUEST_MEANS``, with the speaker as recipient)."""
 REQUEST_MEANS = "bring"
+KNOW_WISHES = frozenset(["i'd like to know", "i would like to know", "i want to know", "i wanna know", "i need to know",
+                         "i'd love to know", "i would love to know", "do you know", "i wonder", "i'm wondering",
+                         "i am wondering", "i was wondering", "i'm curious", "i'm curious about"])
+"""The speaker's wish to know, said where a command starts ("*I'd like to know* the heaviest object on the
+shelf", "*do you know* how many cups are left"): it means "tell me ..." (``QUESTION_MEANS``)."""
 LET_KNOW = ("let", "know")
 """"*let* me *know* ...", "*let* Amara *know* that ...": "tell me ...", "tell Amara that ..." (``QUESTION_MEANS``)."""

@@ -120,8 +120,9 @@ class Roles:
             nxt = items[at + 1] if at + 1 < len(items) else None
             place_next = isinstance(nxt, PP) and nxt.prep in LOCATIVE and not nxt.describes
             role = None if item.describes else self.role_for(frame, item, previous, roles, has_to, place_next)
-            if item.after_relative and "recipient" in roles:
+            if item.after_relative and "recipient" in roles and item.prep not in FROM:
                 role = None                       # "bring me the book I left on the sofa": where it was left
+                #                                   ("something to eat *from the kitchen*": where to take it from)
             if role is None and previous is None and first == "theme" and first not in roles and \
                     item.prep in ("on", "at") and not item.lead and not item.describes and \
                     not (self.frames and self.needs_in_hand(frame)):

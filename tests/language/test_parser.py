@@ -591,7 +591,7 @@ def elements_text(text: str, library: Library) -> list[tuple[str, dict[str, str]
                                                    ("Tell", {"message": "dinner is ready", "recipient": "Tom"})]),
     ("Tell the guest that dinner is ready", [("Tell", {"message": "dinner is ready", "recipient": "the guest"})]),
     ("Tell my sister to come downstairs", [("Tell", {"message": "come downstairs", "recipient": "my sister"})]),
-    ("Count how many books are on the shelf", [("Count", {"theme": "many books", "ground": "the shelf"})]),
+    ("Count how many books are on the shelf", [("Count", {"theme": "books", "ground": "the shelf"})]),
     ("Go check on the baby", [("LookAt", {"theme": "the baby"})]),
     ("Could you take a look at the sink?", [("LookAt", {"theme": "the sink"})]),
     ("Bring me the red one", [("Bring", {"theme": "the red one", "recipient": "me"})]),

@@ -47,6 +47,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.FRONTED_QUESTION,
     requests.WHERE,
     requests.WHERE_DID_RULE,
+    requests.KNOW_WISH,
     requests.REQUEST,
     requests.LET_KNOW_RULE,
     requests.FRONTED_OF,

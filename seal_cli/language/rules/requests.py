@@ -13,6 +13,7 @@ from __future__ import annotations
 from seal_cli.language.english import (
     DETERMINERS,
     END_MARKS,
+    KNOW_WISHES,
     LET_KNOW,
     OBJECT_PRONOUNS,
     POSSESSIVES,
@@ -115,6 +116,25 @@ def _request(s: State, i: int) -> Match | None:
                      _unsaid(end, Tag.PRON, None, _SPEAKER)), expect=False, verb=REQUEST_MEANS, using=False)
 
 
+def _know_wish(s: State, i: int) -> Match | None:
+    words = s.words
+    n = _phrase(s, i, KNOW_WISHES)
+    if not n or QUESTION_MEANS not in s.lexicon.units or i + n >= len(words) or words[i + n].lower in END_MARKS:
+        return None
+    k = i + n
+    end = words[k - 1].end
+    for unit in s.lexicon.units.get(QUESTION_MEANS, ()):         # "do you know how many": "tell me how many"
+        rest = unit[2:]
+        if len(unit) > 2 and unit[1] == _SPEAKER and all(k + m < len(words) and words[k + m].lower == rest[m]
+                                                          for m in range(len(rest))):
+            last = words[k + len(rest) - 1].end
+            return Match(n + len(rest), (Word(s.text_of(words[i].start, last), words[i].start, last, Tag.VERB,
+                                              " ".join(unit)),), expect=False, verb=" ".join(unit), using=False)
+    text = s.text_of(words[i].start, end) or " ".join(w.text for w in words[i:k])
+    return Match(n, (Word(text, words[i].start, end, Tag.VERB, QUESTION_MEANS), _unsaid(end, Tag.PRON, None, _SPEAKER)),
+                 expect=False, verb=QUESTION_MEANS, using=False)
+
+
 def _let_know(s: State, i: int) -> Match | None:
     words = s.words
     if QUESTION_MEANS not in s.lexicon.units or i + 2 >= len(words):
@@ -183,6 +203,11 @@ REQUEST = Rule("wish for a thing", _request, (
     Example("Can I have the big plate?", "Can I have", Tag.VERB),
     Example("I need a pen.", "I need", Tag.VERB),
 ), _REQUEST_FIRST, "'I'd like X', 'can I have X', 'I need X': bring X to the speaker")
+KNOW_WISH = Rule("wish to know", _know_wish, (
+    Example("I'd like to know the heaviest object on the bookshelf.", "I'd like to know", Tag.VERB),
+    Example("Do you know how many people in the bedroom are wearing white jackets?", "Do you know how many",
+            Tag.VERB),
+), first_words(KNOW_WISHES), "'I'd like to know X', 'do you know X': tell me X")
 LET_KNOW_RULE = Rule("let me know", _let_know, (
     Example("let me know when the laundry is done", "let", Tag.VERB),
     Example("let me know how many bottles are in the fridge", "let me know how many", Tag.VERB),
