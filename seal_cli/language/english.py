@@ -64,7 +64,8 @@ POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "wi
                     "excuse me", "maybe", "perhaps", "oh", "ah",
                     "ahh", "aw", "ugh", "urgh", "argh", "oops", "whoops", "sorry", "well", "gosh", "so",
                     "i'd appreciate it if you", "i would appreciate it if you", "i'd really appreciate it if you",
-                    "i would really appreciate it if you", "would it be possible to",
+                    "i would really appreciate it if you", "would it be possible to", "would you be able to",
+                    "could you be able to", "are you able to", "will you be able to", "would you be willing to",
                     "is it possible to", "is it possible for you to", "would it be possible for you to"])
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",

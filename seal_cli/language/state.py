@@ -115,6 +115,10 @@ def match_phrase(words: Sequence[Word], i: int, table: Iterable[str] | Mapping[s
     return best
 
 
+_DISLOCATED_WORDS = 12
+"""How far a phrase said first may run before its comma ("the dice on the sofa in the living room,")."""
+
+
 def time_asked(words: Sequence[Word], i: int) -> int:
     """How many words "when you get a sec" (``english.TIME_ASKED``) takes at ``i`` (0: none)."""
     subordinators, verbs, quantity, measures = TIME_ASKED
@@ -473,6 +477,33 @@ class State:
                 not any(self.verb_at(k) is not None or self.asks_at(k) for k in range(end + 1, len(words))):
             return None                                  # no sentence holds a command: the error says so
         return self._aside(i, end + 1 - i, (words[i].start, words[end].end))
+
+    def dislocated(self, i: int) -> Match | None:
+        """A noun phrase said first, then a comma and a command that takes it up by a pronoun ("*The sponge
+        on the cabinet,* bring it to me", "*That dice on the sofa,* could you bring it to me?"): the phrase is
+        a remark, which the pronoun names (:meth:`~seal_cli.language.reference.Reference.mentioned`)."""
+        words = self.words
+        if self.out and not (self.out[-1].tag == "SEP" and self.out[-1].lower in END_MARKS) or \
+                words[i].lower not in DETERMINERS and words[i].lower not in POSSESSIVES:
+            return None
+        comma = -1
+        for k in range(i + 1, min(len(words), i + _DISLOCATED_WORDS)):
+            low = words[k].lower
+            if low in END_MARKS or low in (";", ":", "and", "then"):
+                return None
+            if low == ",":
+                comma = k
+                break
+            if self.verb_at(k) is not None and words[k - 1].lower not in DETERMINERS:
+                return None                              # a clause, not a phrase
+        if comma < 0 or not self.verb_after(comma + 1):
+            return None
+        for k in range(comma + 1, len(words)):
+            if words[k].lower in END_MARKS:
+                break
+            if words[k].lower in ("it", "them", "him", "her", "one"):
+                return self._aside(i, comma + 1 - i, (words[i].start, words[comma - 1].end))
+        return None
 
     def _aside(self, i: int, n: int, *remarks: tuple[int, int]) -> Match:
         return Match(n, (merge(self.words, i, n, Tag.POLITE),), remarks=remarks)

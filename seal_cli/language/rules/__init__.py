@@ -53,6 +53,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.FRONTED_OF,
     verbs.USE,
     verbs.VERB,
+    statements.DISLOCATED,
     statements.ASIDE,
 )
 """Where a clause starts: what may come before its verb, and the verb. When none matches, the
@@ -61,6 +62,7 @@ word is tagged as what it is (``INSIDE``), and the grammar reports the missing v
 INSIDE: tuple[Rule, ...] = (
     clauses.END_MARK,
     requests.KNOW_AFTER_LET,
+    clauses.PARTITIVE_OF,
     statements.HER_TOLD,
     statements.TOLD,
     statements.TOLD_HOW_TO,

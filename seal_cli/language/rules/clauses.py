@@ -52,6 +52,19 @@ def _relative(s: State, i: int) -> Match | None:
     return Match(m.consumed, m.words, expect=AFTER_SEP) if m else None
 
 
+def _partitive_of(s: State, i: int) -> Match | None:
+    out = s.out
+    if not out or s.verb_index != len(out) - 1 or out[-1].tag != Tag.VERB or \
+            str(out[-1].info).split()[-1] not in ("many", "much"):
+        return None
+    return Match(1)                   # "how many *of* the people in the hall ...": of them, the people counted
+
+
+PARTITIVE_OF = Rule("of after how many", _partitive_of, (
+    Example("How many of the people in the bedroom are wearing white jackets?", "of", ""),
+), frozenset(["of"]), "'of' right after 'how many' (a unit of counting): the part counted is the phrase after it")
+
+
 _COMMA_RELATIVES = frozenset(["who", "whom", "whose", "which"])
 
 

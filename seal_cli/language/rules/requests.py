@@ -159,7 +159,7 @@ def _let_know(s: State, i: int) -> Match | None:
                  verb=QUESTION_MEANS, using=False)
 
 
-_LET_PHRASE_WORDS = 8
+_LET_PHRASE_WORDS = 12
 
 
 def _let_phrase_know(s: State, i: int) -> Match | None:

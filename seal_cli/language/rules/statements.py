@@ -55,6 +55,14 @@ def _told_how_to(s: State, i: int) -> Match | None:
     return s.emit(i, end - i, Tag.SAID)
 
 
+def _dislocated(s: State, i: int) -> Match | None:
+    return s.dislocated(i)
+
+
+DISLOCATED = Rule("phrase said first, taken up by a pronoun", _dislocated, (
+    Example("The sponge on the cabinet, bring it to me.", "The sponge on the cabinet ,", Tag.POLITE),
+    Example("That dice on the sofa, could you bring it to me?", "That dice on the sofa ,", Tag.POLITE),
+), None, "a noun phrase and a comma before a command whose pronoun takes it up: a remark it names")
 ASIDE = Rule("sentence beside the command", _aside, (
     Example("Good morning! Could you open the window?", "Good morning !", Tag.POLITE),
     Example("Bogdan has a question; answer it for him", "Bogdan has a question ;", Tag.POLITE),
