@@ -204,5 +204,11 @@ KNOW_WISHES = frozenset(["i'd like to know", "i would like to know", "i want to 
                          "i am wondering", "i was wondering", "i'm curious", "i'm curious about"])
 """The speaker's wish to know, said where a command starts ("*I'd like to know* the heaviest object on the
 shelf", "*do you know* how many cups are left"): it means "tell me ..." (``QUESTION_MEANS``)."""
+NUMBER_OF = frozenset(["tell me the number of", "tell me the total number of", "what is the number of",
+                       "what 's the number of", "what is the total number of", "what 's the total number of",
+                       "what number of", "give me the number of", "tell me the count of", "report the number of"])
+"""Asking for a count by its number ("*tell me the number of* toys on the desk", "*what number of* people
+..."): it means "tell me how many ..." (``NUMBER_MEANS``, a unit of counting when the library has it)."""
+NUMBER_MEANS = "tell me how many"
 LET_KNOW = ("let", "know")
 """"*let* me *know* ...", "*let* Amara *know* that ...": "tell me ...", "tell Amara that ..." (``QUESTION_MEANS``)."""

@@ -43,6 +43,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     lead_ins.LIGHT_VERB,
     lead_ins.POLITE_FRAME,
     politeness.VOCATIVE_NAME,
+    requests.NUMBER_OF_RULE,
     requests.QUESTION,
     requests.FRONTED_QUESTION,
     requests.WHERE,

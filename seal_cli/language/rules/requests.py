@@ -15,6 +15,8 @@ from seal_cli.language.english import (
     END_MARKS,
     KNOW_WISHES,
     LET_KNOW,
+    NUMBER_MEANS,
+    NUMBER_OF,
     OBJECT_PRONOUNS,
     POSSESSIVES,
     PREPOSITIONS,
@@ -135,6 +137,17 @@ def _know_wish(s: State, i: int) -> Match | None:
                  expect=False, verb=QUESTION_MEANS, using=False)
 
 
+def _number_of(s: State, i: int) -> Match | None:
+    words = s.words
+    n = _phrase(s, i, NUMBER_OF)
+    unit = tuple(NUMBER_MEANS.split())
+    if not n or unit not in s.lexicon.units.get(unit[0], ()) or not s.np_starts(i + n):
+        return None
+    end = words[i + n - 1].end
+    return Match(n, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, NUMBER_MEANS),),
+                 expect=False, verb=NUMBER_MEANS, using=False)
+
+
 def _let_know(s: State, i: int) -> Match | None:
     words = s.words
     if QUESTION_MEANS not in s.lexicon.units or i + 2 >= len(words):
@@ -208,6 +221,10 @@ KNOW_WISH = Rule("wish to know", _know_wish, (
     Example("Do you know how many people in the bedroom are wearing white jackets?", "Do you know how many",
             Tag.VERB),
 ), first_words(KNOW_WISHES), "'I'd like to know X', 'do you know X': tell me X")
+NUMBER_OF_RULE = Rule("the number of", _number_of, (
+    Example("Tell me the total number of snacks on the desk.", "Tell me the total number of", Tag.VERB),
+    Example("What number of people in the bedroom wear white jackets?", "What number of", Tag.VERB),
+), first_words(NUMBER_OF), "'tell me the number of X', 'what number of X': tell me how many X")
 LET_KNOW_RULE = Rule("let me know", _let_know, (
     Example("let me know when the laundry is done", "let", Tag.VERB),
     Example("let me know how many bottles are in the fridge", "let me know how many", Tag.VERB),
