@@ -660,19 +660,45 @@ class State:
         sub = " ".join(w.lower for w in words[i:i + n])
         j = i + n
         subject = words[j].lower
+        if subject in ("there", "here") and self._clause_follows(j + 1):
+            return "then", j + 1, "then"            # "go to the kitchen and *once there* find a cup"
         if subject in ("you", "you've"):           # "before *we* open": the people's doing, a condition
             k = j + 1
             if subject == "you" and k < len(words) and words[k].lower in ("have", "had"):
                 k += 1
+            arrived = self._arrival_end(k)
+            if arrived:
+                return "then", arrived, "then"      # "when you get there", "once you arrive,": arrived where we went
             if k < len(words) and (self.verb_at(k) is not None or self.verb_after(k)):
                 return "clause", k, sub
         state = j + 1 if subject in ("you're", "we're", "you've", "we've") else \
             j + 2 if subject in ("you", "we") and j + 1 < len(words) and words[j + 1].lower in ("are", "have") \
             else -1
         if 0 <= state < len(words) and words[state].lower in STATES_DONE:
+            if self._clause_follows(state + 1):
+                return "then", state + 1, "then"    # "when you're there look for a cup": the clause is its own
             return "then", self.cond_end(state + 1), "then"
         end = self.cond_end(j)
         return ("cond", end, sub) if end > j else None
+
+    def _clause_follows(self, k: int) -> bool:
+        """Whether a clause of the command starts at ``k``, maybe after a comma."""
+        if k < len(self.words) and self.words[k].lower == ",":
+            k += 1
+        return k < len(self.words) and self.verb_after(k)
+
+    def _arrival_end(self, k: int) -> int:
+        """Where "get there", "arrive", "reach it" ends at ``k``: a verb of going (a unit of a frame with a
+        goal) with no place but "there"/"here"/"it", then a comma or a clause (0: none). Arriving where the
+        command went is no motion of its own."""
+        words = self.words
+        found = self.verb_at(k) if k < len(words) else None
+        if found is None or found[2] is not None or found[0] not in self.lexicon.goals:
+            return 0
+        after = k + found[1]
+        if after < len(words) and words[after].lower in ("there", "here", "it"):
+            after += 1
+        return after if self._clause_follows(after) else 0
 
     def subordinate(self, i: int, start: bool) -> Match | None:
         """Tag a subordinate clause (see :meth:`_subordinate_at`; None: none here).
