@@ -47,7 +47,11 @@ BE_WORDS = _closed_class("is are was were be am 's been being")
 SEPARATOR_WORDS = frozenset(["and", "then", ",", ";", ":", "after that", "afterwards", "next", "finally",
                              "and then", "and after that", "after", "also", "once done", "when done",
                              "and finally", "before", "while", "or", "as well as", "plus", "followed by",
-                             "as you", "while you", "so you can", "so that you can"])
+                             "as you", "while you", "so you can", "so that you can", "following that",
+                             "after this", "after doing that", "having done that", "after you've done that",
+                             "after you have done that", "once you've done that", "once you have done that",
+                             "when you've done that", "when you have done that", "once that's done",
+                             "once that is done"])
 AND_WORDS = frozenset(["and", "as well as", "plus"])
 """Words that join like "and" (clauses or noun phrases)."""
 POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "will you", "would you mind",
