@@ -27,8 +27,9 @@ With ``--wordnet DIR`` (a WordNet 3.0 ``dict`` folder: Debian's ``wordnet-base``
 of a library verb it means, through WordNet's synonyms and hypernyms, when all of this holds:
 
 1. the verb is mostly a verb (WordNet's tagged senses count more for it as a verb than as a noun,
-   or it is no noun at all), of one word of letters, and no word of English's closed classes
-   (``english.py``: "near" is a preposition before it is a verb of going);
+   or it is no noun at all), of one word of letters, a verb of the English tables the parser reads
+   (lemminflect's: "discerp" is none, and its forms would need lemminflect's model at start-up), and
+   no word of English's closed classes (``english.py``: "near" is a preposition before a verb);
 2. its *first* sense (WordNet orders senses by how often they were tagged) shares its synset with a
    lexical unit *u* of the library, or is one of its hyponyms (a way of doing *u*: "announce" is a
    way of informing); for a verb none of whose senses was ever tagged (the order then says nothing
@@ -61,6 +62,7 @@ sys.path.insert(0, str(ROOT))
 from seal_cli.frames.library import Library  # noqa: E402
 from seal_cli.frames.reading import load_library  # noqa: E402
 from seal_cli.language import english  # noqa: E402
+from seal_cli.language.morphology import in_verb_tables  # noqa: E402
 
 OUT = ROOT / "framelib" / "derived_units.yaml"
 WORDNET_OUT = ROOT / "framelib" / "wordnet_units.yaml"
@@ -236,7 +238,7 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[str, str, s
 
     found = []
     for verb, (tagged, offsets) in sorted(wordnet.senses.items()):
-        if verb in units or verb in closed or not verb.isalpha() or not offsets:
+        if verb in units or verb in closed or not verb.isalpha() or not offsets or not in_verb_tables(verb):
             continue
         noun = wordnet.noun_senses.get(verb)
         if noun is not None and tagged <= noun[0]:
