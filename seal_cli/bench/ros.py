@@ -10,6 +10,9 @@ Timed (CPU seconds of this process): :func:`~seal_cli.ros.bags.read_run` (open, 
 chain the transforms, interpolate a pose per message, carry the detections into ``map``) and
 then one SeFM update per observation with the paper's frames — Pick(cup), Pick(spoon), Stir(cup,
 spoon), 2 object classes, 200 particles. ``updates_per_s`` is messages over the two together.
+Then the same updates again with the Rerun recorder (``seal localize --rrd``; the extra ``rrd`` extra's
+rerun-sdk): ``recorded_updates_per_s`` (reading included, the recording written and closed) and the
+file's size, ``rrd_bytes`` (``None`` without rerun).
 """
 
 from __future__ import annotations
@@ -98,8 +101,31 @@ def measure(m: Map, library: Library, fmt: str = "mcap", poses: int = 1000, mess
     sefm.follow(list(run.observations), 0)
     t3 = time.process_time()
     updates = len(run.observations)
+    recorded = _recorded(m, bindings, library, run, seed, particles)
     return {"format": fmt, "poses": poses, "messages": messages, "bag_bytes": size, "updates": updates,
             "frames": len(bindings), "objects": len(sefm.object_classes), "particles": particles,
             "read_s": round(t1 - t0, 3), "filter_s": round(t3 - t2, 3),
             "updates_per_s": round(updates / max(t1 - t0 + t3 - t2, 1e-9), 1),
+            "recorded_updates_per_s": None if recorded is None else
+            round(updates / max(t1 - t0 + recorded[0], 1e-9), 1),
+            "rrd_bytes": None if recorded is None else recorded[1],
             "detections": sum(len(o.detections or ()) for o in run.observations)}
+
+
+def _recorded(m: Map, bindings: Any, library: Library, run: Any, seed: int,
+              particles: int) -> tuple[float, int] | None:
+    """The same updates with the Rerun recorder: (CPU seconds, file bytes), or None without rerun."""
+    try:
+        import rerun  # noqa: F401
+    except ImportError:
+        return None
+    from seal_cli.sefm.observers.rerun import RerunRecorder
+
+    with tempfile.TemporaryDirectory(prefix="seal-bench-rrd-") as folder:
+        path = Path(folder) / "run.rrd"
+        t0 = time.process_time()
+        sefm = SeFM(m, bindings, State.of(robot_facts(None), library.taxonomy), np.random.default_rng(seed),
+                    SeFMConfig(particles=particles), [RerunRecorder(path, stamps=run.stamps)])
+        sefm.follow(list(run.observations), 0)
+        sefm.close()
+        return time.process_time() - t0, path.stat().st_size

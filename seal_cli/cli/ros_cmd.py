@@ -78,9 +78,13 @@ def bench_ros(
         return
     table = Table(title="a bag read and filtered (paper scale: 3 frames, 2 objects, 200 particles)",
                   title_justify="left")
-    for column in ("format", "poses", "messages", "bag kB", "read s", "filter s", "updates/s"):
+    for column in ("format", "poses", "messages", "bag kB", "read s", "filter s", "updates/s", "with --rrd /s",
+                   "rrd kB"):
         table.add_column(column, justify="left" if column == "format" else "right")
     for r in results:
+        recorded = r["recorded_updates_per_s"] is not None
         table.add_row(r["format"], str(r["poses"]), str(r["messages"]), f"{r['bag_bytes'] / 1000:.0f}",
-                      f"{r['read_s']:.2f}", f"{r['filter_s']:.2f}", f"{r['updates_per_s']:.1f}")
+                      f"{r['read_s']:.2f}", f"{r['filter_s']:.2f}", f"{r['updates_per_s']:.1f}",
+                      f"{r['recorded_updates_per_s']:.1f}" if recorded else "-",
+                      f"{r['rrd_bytes'] / 1000:.0f}" if recorded else "-")
     out.print(table)

@@ -33,7 +33,7 @@ def write_rrd(path: str | Path, agent: Agent) -> None:
 
     from seal_cli.sefm.modes import room_masses
     from seal_cli.sefm.observers.rerun import CHANGE, cell_masses, radii, total_variation
-    from seal_cli.sefm.observers.rerun_scene import DRAW, Classes, batching, blueprint, log_map
+    from seal_cli.sefm.observers.rerun_scene import DRAW, Classes, batching, blueprint, log_map, save
     from seal_cli.sefm.resampling import ess
 
     m = agent.scene.map
@@ -49,7 +49,7 @@ def write_rrd(path: str | Path, agent: Agent) -> None:
     stream = rr.RecordingStream("seal_run", recording_id=f"{m.name}-seal-run",
                                 batcher_config=batching(), send_properties=False)
     with atomic_output(path) as tmp:
-        stream.save(str(tmp))
+        save(stream, tmp)  # without rerun's footer, as seal localize's
         stream.set_log_time_enabled(False)
         stream.set_log_tick_enabled(False)
         stream.send_blueprint(blueprint(m, frames, panels))

@@ -186,5 +186,6 @@ def test_bench_ros_reads_and_filters_every_message() -> None:
     for r in runs:
         assert (r["poses"], r["messages"], r["updates"], r["frames"], r["objects"]) == (60, 12, 12, 3, 2)
         assert r["detections"] > 0 and r["updates_per_s"] > 0  # the loop passes the spoon and the cup
+        assert r["recorded_updates_per_s"] > 0 and 10_000 < r["rrd_bytes"] < r["bag_bytes"] * 10  # a recording
     assert runs[0]["detections"] == runs[1]["detections"]  # ROS 1's integer ids name the same classes
     assert "unknown format" in refused("bench", "ros", "--format", "ros3")

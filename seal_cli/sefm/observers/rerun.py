@@ -1,11 +1,11 @@
 """A Rerun recording of a SeFM run: an observer that logs the map, the robot and every belief.
 
 :class:`RerunRecorder` is passed to :class:`~seal_cli.sefm.filter.SeFM` like any observer. It opens an
-explicit ``rr.RecordingStream``, saves it to the given file *before* logging anything, sends the
-default blueprint (:func:`~seal_cli.sefm.observers.rerun_scene.blueprint`: the map view beside the
-room masses and effective sample sizes) and logs on the timeline ``step`` (0 is the prior, before
-any update) and, when the run came from a bag, on the timeline ``time`` too (the detection
-messages' stamps):
+explicit ``rr.RecordingStream``, saves it to the given file *before* logging anything (without
+rerun's footer: :func:`~seal_cli.sefm.observers.rerun_scene.save`), sends the default blueprint
+(:func:`~seal_cli.sefm.observers.rerun_scene.blueprint`: the map view beside the room masses and
+effective sample sizes) and logs on the timeline ``step`` (0 is the prior, before any update) and,
+when the run came from a bag, on the timeline ``time`` too (the detection messages' stamps):
 
 =====================================  ======================================================
 entity                                 what
@@ -15,28 +15,32 @@ entity                                 what
 ``/`` (AnnotationContext)              one id, label and colour per object class and frame
 ``robot/pose``                         where the robot is (a point) and which way it faces (an arrow)
 ``robot/path``                         where it has been (LineStrips2D, a point every 0.25 m)
-``objects/<class>/particles``          each object's particles: its class id, radius by weight
-``frames/<frame id>/particles``        each frame's particles: its class id, radius by weight γ
+``objects/particles``                  every object's particles: its class id, radius by weight
+``frames/particles``                   every frame's particles: its class id (one radius: they are
+                                       resampled at every update, so all weigh 1/P)
 ``frames/<frame id>/density``          the frame's target density γ as an image in its colour
-``frames/<frame id>/modes``            the modes, coloured by weight, labelled room and weight
-``observations/<class>``               the detections of the step
-``metrics/rooms/<frame id>``           the frame's probability mass per room (Scalars, one series a room)
+``frames/modes``                       every frame's modes: outlined boxes of ±1 standard deviation
+                                       (at least 0.1 m) about each mean, its class id, labelled room
+                                       and weight (outlines, so the cloud beneath stays visible)
+``observations``                       the detections of the step: class ids, labelled
+``metrics/rooms``                      every frame's probability mass per room (Scalars, one
+                                       series ``<frame id>: <room>`` each)
 ``metrics/ess``                        effective sample size of every belief (one series each: the
                                        frames' last reweighting, the objects' weights)
 =====================================  ======================================================
 
-The metrics are logged at every step. A belief's particles, density and modes are logged when
-the belief has changed since they were last logged — by more than ``CHANGE`` in total variation
-over 0.5 m cells, between the particles' masses for an object and between the target densities
-γ for a frame (its particles are redrawn at every update, so their masses carry sampling noise
-even when the belief stands still) — and at the last step: between two such logs the latest
-logged cloud *is* a sample of the belief shown (Rerun shows the latest value at the time
-cursor), and the recording of a run that has settled stays small. Positions are re-sent only
-when they moved (an object cloud that is only reweighted sends its radii). A frame's particles
-are resampled at every update, so they all weigh 1/P; they are sized by the weight each would
-carry if it had not been (its normalised γ), which is what a weighted particle set of the same
-belief would show. Log time and log ticks are off, so the same run gives the same content. Read
-a file back with ``rr.chunk.RrdReader(path).stream().collect()``.
+One entity holds every class (told apart by their class ids and the annotation context's legend)
+rather than one entity per class: each entity costs a chunk and its Arrow schema, a kB or two,
+more than the data of a cloud. The metrics are kept while the run goes and sent at its end as one
+chunk per metric, all steps in columns (``send_columns``). A belief's particles, density and modes
+are logged when it has changed since they were last logged — by more than ``CHANGE`` in total
+variation over 0.5 m cells, between the particles' masses for an object and between the target
+densities γ for a frame (its particles are redrawn at every update, so their masses carry sampling
+noise even when the belief stands still) — and at the last step; a change of one class logs the
+clouds of all the classes of its entity. Between two such logs the latest logged cloud *is* a
+sample of the belief shown (Rerun shows the latest value at the time cursor), and the recording of
+a run that has settled stays small. Log time and log ticks are off, so the same run gives the same
+content. Read a file back with ``rr.chunk.RrdReader(path).stream().collect()``.
 """
 
 from __future__ import annotations
@@ -49,13 +53,22 @@ import numpy as np
 from numpy.typing import NDArray
 
 from seal_cli.frames.taxonomy import class_key
-from seal_cli.sefm.observers.metrics import weight_colours
-from seal_cli.sefm.observers.rerun_scene import DRAW, Classes, batching, blueprint, log_grid_image, log_map
+from seal_cli.sefm.observers.rerun_scene import (
+    DRAW,
+    Classes,
+    batching,
+    blueprint,
+    log_grid_image,
+    log_map,
+    save,
+    send_series,
+    series_colour,
+)
 
 if TYPE_CHECKING:
     from seal_cli.sefm.filter import SeFM, Step
 
-__all__ = ["CHANGE", "RerunRecorder", "cell_masses", "radii", "total_variation"]
+__all__ = ["CHANGE", "RerunRecorder", "cell_masses", "radii", "spread", "total_variation"]
 
 ROBOT = (214, 39, 40)
 DETECTION = (255, 127, 14)
@@ -78,6 +91,12 @@ def radii(W: NDArray[np.float64], smallest: float = 0.03, largest: float = 0.12)
         return np.full(len(W), round((smallest + largest) / 2, 2), np.float32)
     share = np.sqrt(W / top)
     return np.asarray(np.round((smallest + (largest - smallest) * share) * 100) / 100, np.float32)
+
+
+def spread(cov: Sequence[Sequence[float]], smallest: float = 0.1) -> tuple[float, float]:
+    """A mode's half sizes along x and y: its standard deviations, at least ``smallest`` (m)."""
+    c = np.asarray(cov, float)
+    return float(max(np.sqrt(max(c[0, 0], 0.0)), smallest)), float(max(np.sqrt(max(c[1, 1], 0.0)), smallest))
 
 
 def cell_masses(X: NDArray[np.float64], W: NDArray[np.float64], bounds: Sequence[float]) -> dict[int, float]:
@@ -111,18 +130,20 @@ class RerunRecorder:
         self.trail: list[tuple[float, float]] = []
         self.classes = Classes((), ())
         self._shown: dict[str, dict[int, float]] = {}
-        self._seen: dict[str, int] = {}
+        self._seen = 0
         self._pending: set[str] = set()
         self._coarse: NDArray[np.float64] | None = None
-        self._series_lines: dict[str, Any] = {}
         self._pose: tuple[float, float, float] | None = None
+        self._index = 0
+        self._metrics: dict[str, list[tuple[int, list[float]]]] = {}
+        self._series_lines: dict[str, tuple[list[str], list[tuple[int, int, int]]]] = {}
 
     def start(self, sefm: SeFM) -> None:
         import rerun as rr
 
         self.stream = rr.RecordingStream(self.application_id, recording_id=f"{sefm.map.name}-seal",
                                          batcher_config=batching(), send_properties=False)
-        self.stream.save(str(self.path))
+        save(self.stream, self.path)
         self.stream.set_log_time_enabled(False)
         self.stream.set_log_tick_enabled(False)
         self.classes = Classes(sefm.object_classes, sefm.frame_ids)
@@ -131,53 +152,70 @@ class RerunRecorder:
         log_map(self.stream, sefm.map)
         self._at(0)
         self._series(sefm)
-        self.trail, self._shown, self._seen = [], {}, {}
+        self.trail, self._shown, self._seen, self._metrics = [], {}, 0, {}
         self._beliefs(sefm, force=True)
 
     def update(self, sefm: SeFM, step: Step) -> None:
         self._at(step.index)
         self._robot(step)
-        self._observations(sefm, step)
+        self._observations(step)
         self._beliefs(sefm)
 
     def finish(self, sefm: SeFM) -> None:
         if self.stream is not None:
             self._beliefs(sefm, force=True, only_pending=True, metrics=False)
+            self._send_metrics()
             self.stream.flush()
             self.stream.disconnect()
             self.stream = None
 
     # -- timelines -----------------------------------------------------------------------------------
+    def _time(self, index: int) -> tuple[str, float] | None:
+        """The ``time`` timeline's kind and value (s) at an update's index, when the run has stamps."""
+        if not self.stamps:
+            return None
+        t = self.stamps[min(max(index - 1, 0), len(self.stamps) - 1)]
+        return ("timestamp" if t > 1e8 else "duration"), t  # after 1973: a wall-clock stamp; else from zero
+
     def _at(self, index: int) -> None:
+        self._index = index
         self.stream.set_time("step", sequence=index)
-        if self.stamps:
-            t = self.stamps[min(max(index - 1, 0), len(self.stamps) - 1)]
-            if t > 1e8:  # after 1973: a wall-clock stamp
-                self.stream.set_time("time", timestamp=t)
-            else:  # simulated time from zero
-                self.stream.set_time("time", duration=t)
+        time = self._time(index)
+        if time is not None:
+            self.stream.set_time("time", **{time[0]: time[1]})
 
     # -- what is logged ------------------------------------------------------------------------------
     def _series(self, sefm: SeFM) -> None:
-        """Names and colours of the metrics' series, logged with their first values (one chunk per entity)."""
+        """Names and colours of the metrics' series: ``<frame id>: <room>`` coloured by room, and one
+        series per frame and object for the ESS, in its class's colour."""
+        rooms = [*sefm.map.room_names, "_outside"]
+        self._series_lines = {}
+        if sefm.frame_ids:
+            self._series_lines["metrics/rooms"] = ([f"{fid}: {room}" for fid in sefm.frame_ids for room in rooms],
+                                                   [series_colour(k) for _ in sefm.frame_ids
+                                                    for k in range(len(rooms))])
+        names = [*sefm.frame_ids, *sefm.object_classes]
+        if names:
+            self._series_lines["metrics/ess"] = (names, [self.classes.colour(n) for n in names])
+
+    def _send_metrics(self) -> None:
+        """Every metric kept during the run, as one chunk each (all steps in columns)."""
         import rerun as rr
 
-        from seal_cli.sefm.observers.rerun_scene import series_colour
-
-        rooms = [*sefm.map.room_names, "_outside"]
-        colours = [series_colour(k) for k in range(len(rooms))]
-        self._series_lines = {f"metrics/rooms/{fid}": rr.SeriesLines(names=rooms, colors=colours)
-                              for fid in sefm.frame_ids}
-        names = [*sefm.frame_ids, *sefm.object_classes]
-        self._series_lines["metrics/ess"] = rr.SeriesLines(names=names, colors=[self.classes.colour(n) for n in names])
+        for entity, found in self._metrics.items():
+            steps = [index for index, _ in found]
+            indexes = [rr.TimeColumn("step", sequence=steps)]
+            times = [self._time(index) for index in steps]
+            if times and times[0] is not None:
+                kind = times[0][0]
+                indexes.append(rr.TimeColumn("time", **{kind: [t[1] for t in times if t is not None]}))
+            names, colours = self._series_lines[entity]
+            send_series(self.stream, entity, indexes, np.array([values for _, values in found], float), names,
+                        colours)
 
     def _scalars(self, entity: str, values: Sequence[float]) -> None:
-        """Values of a metric's series; its names and colours go with the first (one chunk per entity)."""
-        import rerun as rr
-
-        lines = self._series_lines.pop(entity, None)
-        extra = [lines] if lines is not None else []
-        self.stream.log(entity, rr.Scalars([float(v) for v in values]), *extra)
+        """A metric's values at this step, kept until the end (:meth:`_send_metrics`)."""
+        self._metrics.setdefault(entity, []).append((self._index, [float(v) for v in values]))
 
     def _robot(self, step: Step) -> None:
         import rerun as rr
@@ -195,52 +233,63 @@ class RerunRecorder:
             if len(self.trail) > 1:
                 s.log("robot/path", rr.LineStrips2D([self.trail], colors=[ROBOT], draw_order=DRAW["robot"]))
 
-    def _observations(self, sefm: SeFM, step: Step) -> None:
+    def _observations(self, step: Step) -> None:
+        """The step's detections, one entity for all classes (class ids, labelled); an empty log clears
+        the last step's."""
         import rerun as rr
 
-        seen: dict[str, list[tuple[float, float]]] = {}
-        for cls, at in step.detections:
-            seen.setdefault(class_key(cls), []).append(at)
-        for cls in sorted(set(seen) | set(sefm.object_classes)):
-            points = seen.get(cls, [])
-            if not points and not self._seen.get(cls):
-                continue  # nothing seen now, nothing shown: nothing to clear
-            self._seen[cls] = len(points)
-            self.stream.log(f"observations/{cls}", rr.Points2D(np.array(points).reshape(-1, 2), radii=0.12,
-                                                               colors=[DETECTION], labels=[cls] * len(points),
-                                                               draw_order=DRAW["observations"]))
+        if not step.detections and not self._seen:
+            return  # nothing seen now, nothing shown: nothing to clear
+        self._seen = len(step.detections)
+        names = [class_key(cls) for cls, _ in step.detections]
+        self.stream.log("observations", rr.Points2D(
+            np.array([at for _, at in step.detections], float).reshape(-1, 2), radii=0.12, colors=[DETECTION],
+            labels=names, class_ids=[self.classes.ids.get(n, 0) for n in names], draw_order=DRAW["observations"]))
 
     def _beliefs(self, sefm: SeFM, force: bool = False, only_pending: bool = False, metrics: bool = True) -> None:
-        import rerun as rr
-
-        s = self.stream
         ess = [*(float(v) for v in sefm.frames.ess()), *(float(sefm.objects.ess()[sefm.objects.row(c)])
                                                         for c in sefm.object_classes)]
         if ess and metrics:
             self._scalars("metrics/ess", ess)
-        for cls in sefm.object_classes:
-            row = sefm.objects.row(cls)
-            X, W = sefm.objects.X[row], sefm.objects.W[row]
-            if self._changed(f"objects/{cls}", X, W, sefm, force, only_pending):
-                self._cloud(f"objects/{cls}/particles", X, W, self.classes.ids[cls], DRAW["objects"])
+        changed = [self._changed(f"objects/{cls}", *self._object(sefm, cls), sefm, force, only_pending)
+                   for cls in sefm.object_classes]
+        if any(changed):
+            self._objects(sefm)
+        summaries = [sefm.frame_summary(i) for i in range(len(sefm.frame_ids))]
+        if summaries and metrics:
+            self._scalars("metrics/rooms", [v for summary in summaries for v in summary.rooms.values()])
+        changed = [self._changed(f"frames/{fid}", *self._target(sefm, i), sefm, force, only_pending)
+                   for i, fid in enumerate(sefm.frame_ids)]
+        if any(changed):
+            self._frames(sefm, summaries)
         for i, fid in enumerate(sefm.frame_ids):
-            summary = sefm.frame_summary(i)
-            if metrics:
-                self._scalars(f"metrics/rooms/{fid}", list(summary.rooms.values()))
-            if not self._changed(f"frames/{fid}", *self._target(sefm, i), sefm, force, only_pending):
-                continue
-            self._cloud(f"frames/{fid}/particles", sefm.frames.X[i], sefm.frames.shown_weights(i),
-                        self.classes.ids[fid], DRAW["frames"])
-            self._density(sefm, i, fid)
-            modes = summary.modes
-            if modes:
-                weights = np.array([mo.weight for mo in modes])
-                s.log(f"frames/{fid}/modes", rr.Points2D(
-                    [mo.mean for mo in modes], colors=weight_colours(weights), draw_order=DRAW["modes"],
-                    radii=[float(np.sqrt(max(np.trace(np.array(mo.cov)) / 2, 0.01))) for mo in modes],
-                    labels=[f"{mo.room} {mo.weight:.2f}" for mo in modes], show_labels=True))
-            else:
-                s.log(f"frames/{fid}/modes", rr.Clear(recursive=False))
+            if changed[i]:
+                self._density(sefm, i, fid)
+
+    @staticmethod
+    def _object(sefm: SeFM, cls: str) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        row = sefm.objects.row(cls)
+        return sefm.objects.X[row], sefm.objects.W[row]
+
+    def _objects(self, sefm: SeFM) -> None:
+        """Every object's particles, one entity: the class id of each, a radius by its weight in its class."""
+        clouds = [self._object(sefm, cls) for cls in sefm.object_classes]
+        self._cloud("objects/particles", [X for X, _ in clouds], [radii(W) for _, W in clouds],
+                    [self.classes.ids[cls] for cls in sefm.object_classes], DRAW["objects"])
+
+    def _frames(self, sefm: SeFM, summaries: Sequence[Any]) -> None:
+        """Every frame's particles (one middle radius: resampled, they weigh the same) and modes."""
+        import rerun as rr
+
+        ids = [self.classes.ids[fid] for fid in sefm.frame_ids]
+        clouds = [sefm.frames.X[i] for i in range(len(ids))]
+        self._cloud("frames/particles", clouds, [radii(np.ones(1))], ids, DRAW["frames"])  # one radius for all
+        modes = [(class_id, mo) for class_id, summary in zip(ids, summaries, strict=True) for mo in summary.modes]
+        self.stream.log("frames/modes", rr.Boxes2D(
+            centers=np.array([mo.mean for _, mo in modes], float).reshape(-1, 2), class_ids=[c for c, _ in modes],
+            half_sizes=np.array([spread(mo.cov) for _, mo in modes], float).reshape(-1, 2),
+            labels=[f"{mo.room} {mo.weight:.2f}" for _, mo in modes], show_labels=True,
+            radii=rr.Radius.ui_points(2.0), draw_order=DRAW["modes"]))
 
     def _changed(self, key: str, X: NDArray[np.float64], W: NDArray[np.float64], sefm: SeFM, force: bool,
                  only_pending: bool) -> bool:
@@ -264,11 +313,17 @@ class RerunRecorder:
             self._coarse = free[np.unique(cells, axis=0, return_index=True)[1]]
         return self._coarse, sefm.frame_density(i, self._coarse)
 
-    def _cloud(self, entity: str, X: NDArray[np.float64], W: NDArray[np.float64], class_id: int,
-               draw_order: float) -> None:
+    def _cloud(self, entity: str, clouds: Sequence[NDArray[np.float64]], sizes: Sequence[NDArray[np.float32]],
+               class_ids: Sequence[int], draw_order: float) -> None:
+        """Several classes' particles as one ``Points2D``: positions, a class id per point, and radii (one
+        per point, or a single one for all)."""
         import rerun as rr
 
-        self.stream.log(entity, rr.Points2D(X, radii=radii(W), class_ids=[class_id], draw_order=draw_order))
+        self.stream.log(entity, rr.Points2D(
+            np.concatenate([np.asarray(X, float).reshape(-1, 2) for X in clouds]) if clouds else np.zeros((0, 2)),
+            radii=np.concatenate(sizes) if sizes else [],
+            class_ids=np.repeat(np.asarray(class_ids, np.uint16), [len(X) for X in clouds]),
+            draw_order=draw_order))
 
     def _density(self, sefm: SeFM, i: int, fid: str) -> None:
         """Frame i's target density γ on a 0.2 m grid over the map's bounds, as an RGBA image in its colour."""

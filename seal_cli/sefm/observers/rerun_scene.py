@@ -12,6 +12,12 @@ Both recordings (``seal localize --rrd``, :mod:`seal_cli.sefm.observers.rerun`, 
 - a default blueprint: the map view beside time series of each frame's room masses and of the
   effective sample sizes.
 
+The file is written without rerun's footer (:func:`save`): the footer is a manifest of every chunk
+for random access into large recordings (remote stores, lazy loading), and on a run of a few
+dozen chunks it was half the file (64 kB of the README run's 131 kB). The viewer, ``rerun rrd
+print`` and ``rr.chunk.RrdReader`` read the file from the start as a stream, as they read any
+stream; ``rerun rrd verify`` reports the missing footer unless given ``--check-footers false``.
+
 The map view is Rerun's 2-D view, whose y axis points down: the map appears mirrored top to
 bottom relative to RViz (north is at the bottom); positions are the map frame's metres as they are.
 """
@@ -19,7 +25,11 @@ bottom relative to RViz (north is at the bottom); positions are the map frame's 
 from __future__ import annotations
 
 import io
-from collections.abc import Sequence
+import os
+import sys
+from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -27,7 +37,8 @@ import numpy as np
 from seal_cli.maps.geometry import FREE, OCCUPIED, OccupancyGrid
 from seal_cli.maps.model import Map
 
-__all__ = ["DRAW", "Classes", "batching", "blueprint", "log_grid_image", "log_map", "png", "series_colour"]
+__all__ = ["DRAW", "Classes", "batching", "blueprint", "log_grid_image", "log_map", "png", "save", "send_series",
+           "series_colour"]
 
 DRAW = {"occupancy": -10.0, "density": -5.0, "rooms": 1.0, "places": 2.0, "objects": 3.0, "frames": 4.0,
         "modes": 6.0, "observations": 7.0, "robot": 8.0}
@@ -49,6 +60,52 @@ def batching() -> Any:
 
     return rr.ChunkBatcherConfig(flush_tick=datetime.timedelta(hours=24), flush_num_bytes=8 << 20,
                                  flush_num_rows=1 << 31)
+
+
+@contextmanager
+def _quiet_stderr() -> Iterator[None]:
+    """File descriptor 2 to /dev/null for the duration: rerun's Rust side warns there, not through Python."""
+    sys.stderr.flush()
+    try:
+        saved, null = os.dup(2), os.open(os.devnull, os.O_WRONLY)
+    except OSError:  # no descriptor 2 to quiet (a daemon's): nothing would be shown anyway
+        yield
+        return
+    os.dup2(null, 2)
+    try:
+        yield
+    finally:
+        os.dup2(saved, 2)
+        os.close(saved)
+        os.close(null)
+
+
+def save(stream: Any, path: str | Path) -> None:
+    """Stream the recording to ``path``, without the footer (see the module docstring). Rerun warns on
+    stderr, at this call, that a file without a footer loses random access; the choice is made here on
+    purpose, so the warning is not shown."""
+    with _quiet_stderr():
+        stream.save(str(path), write_footer=False)
+
+
+def send_series(stream: Any, entity: str, indexes: Sequence[Any], values: np.ndarray, names: Sequence[str],
+                colours: Sequence[tuple[int, int, int]]) -> None:
+    """A metric's whole run as **one** chunk: ``values`` (one row per time in ``indexes``, one column per
+    series) as ``Scalars``, and the series' names and colours (``SeriesLines``) in the first row only
+    (null after it, which keeps them, where an empty list would clear them)."""
+    import pyarrow as pa
+    import rerun as rr
+
+    rows, k = values.shape
+    chunk = rr.chunk.Chunk.from_columns(entity, indexes, [
+        *rr.Scalars.columns(scalars=np.asarray(values, float).ravel()).partition([k] * rows),
+        *rr.SeriesLines.columns(names=list(names), colors=list(colours)).partition([k] + [0] * (rows - 1))])
+    batch = chunk.to_record_batch()
+    later = pa.array([row > 0 for row in range(rows)])
+    columns = [pa.ListArray.from_arrays(column.offsets, column.values, mask=later)
+               if field.name.startswith("SeriesLines:") else column
+               for field, column in zip(batch.schema, batch.columns, strict=True)]
+    stream.send_chunks(rr.chunk.Chunk.from_record_batch(pa.RecordBatch.from_arrays(columns, schema=batch.schema)))
 
 
 def series_colour(i: int) -> tuple[int, int, int]:

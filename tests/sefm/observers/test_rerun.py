@@ -19,7 +19,8 @@ from seal_cli.planning.state import State, robot_facts
 from seal_cli.resources import map_path
 from seal_cli.sefm.filter import SeFM, SeFMConfig
 from seal_cli.sefm.observers.metrics import Metrics, Trace
-from seal_cli.sefm.observers.rerun import RerunRecorder, radii
+from seal_cli.sefm.observers.rerun import RerunRecorder, radii, spread
+from seal_cli.sefm.observers.rerun_scene import Classes
 
 rr = pytest.importorskip("rerun")
 
@@ -70,11 +71,36 @@ def test_collect_reads_the_recording_as_a_store(recorded: tuple[Path, SeFM, Any]
 
 def test_every_spec_entity_is_logged(recorded: tuple[Path, SeFM, Any]) -> None:
     logged = rows(recorded[0])
-    for entity in ("/map/occupancy", "/map/rooms", "/map/places", "/robot/pose", "/robot/path",
-                   "/objects/spoon/particles", "/objects/cup/particles", "/frames/pick_spoon/particles",
-                   "/frames/stir_cup_spoon/particles", "/frames/stir_cup_spoon/modes", "/frames/stir_cup_spoon/density",
-                   "/observations/spoon", "/metrics/rooms/stir_cup_spoon", "/metrics/ess"):
-        assert entity in logged, entity
+    assert set(logged) == {"/", "/map/occupancy", "/map/rooms", "/map/places", "/robot/pose", "/robot/path",
+                           "/objects/particles", "/frames/particles", "/frames/modes", "/frames/pick_spoon/density",
+                           "/frames/stir_cup_spoon/density", "/observations", "/metrics/rooms", "/metrics/ess"}
+
+
+def chunks_per_entity(path: Path, store: Any = None) -> dict[str, int]:
+    found: dict[str, int] = defaultdict(int)
+    for chunk in rr.chunk.RrdReader(str(path)).stream(store=store).to_chunks():
+        found[str(chunk.entity_path)] += 1
+    return dict(found)
+
+
+def test_one_chunk_per_entity_and_no_footer(recorded: tuple[Path, SeFM, Any]) -> None:
+    """Every entity is one chunk (one Arrow schema), the metrics' steps included; the file has no footer."""
+    path = recorded[0]
+    assert set(chunks_per_entity(path).values()) == {1}
+    (blueprint,) = rr.chunk.RrdReader(str(path)).blueprints()
+    assert set(chunks_per_entity(path, blueprint).values()) == {1}
+    assert not path.read_bytes().endswith(b"RRF2FOOT\x01\x00\x00\x00")  # rerun's footer trailer
+
+
+def test_no_rerun_warning_on_stderr(tmp_path: Path, library: Library, apartment: Map,
+                                    capfd: pytest.CaptureFixture[str]) -> None:
+    bindings = [library.frame("Pick").bind({"theme": "spoon"})]
+    sefm = SeFM(apartment, bindings, State.of(robot_facts(None), library.taxonomy), np.random.default_rng(0),
+                SeFMConfig(particles=20), [RerunRecorder(tmp_path / "quiet.rrd")])
+    sefm.update((5.0, -4.5, 0.0), [])
+    sefm.close()
+    assert capfd.readouterr().err == ""
+    assert "/frames/particles" in rows(tmp_path / "quiet.rrd")
 
 
 def png_pixels(blob: Any) -> np.ndarray:
@@ -111,24 +137,27 @@ def test_one_colour_per_class_and_particles_carry_class_ids(recorded: tuple[Path
     classes = {c["class_description"]["info"]["label"]: c["class_description"]["info"] for c in described}
     assert list(classes) == [*sefm.object_classes, *sefm.frame_ids]
     assert len({c["color"] for c in classes.values()}) == len(classes)  # distinct colours: a legend
-    for name, entity in [("cup", "/objects/cup/particles"), ("stir_cup_spoon", "/frames/stir_cup_spoon/particles")]:
-        for row in logged[entity]:
-            assert row["Points2D:class_ids"] == [classes[name]["id"]]
+    for names, entity in [(sefm.object_classes, "/objects/particles"), (sefm.frame_ids, "/frames/particles")]:
+        for row in logged[entity]:  # every class's particles in one entity, told apart by their class ids
+            assert row["Points2D:class_ids"] == [classes[n]["id"] for n in names for _ in range(P)]
             assert row.get("Points2D:colors") is None  # the colour comes from the class
 
 
 def test_beliefs_are_logged_at_the_prior_when_they_change_and_at_the_end(recorded: tuple[Path, SeFM, Any]) -> None:
     path, sefm, _ = recorded
-    frames = rows(path)["/frames/stir_cup_spoon/particles"]
+    frames = rows(path)["/frames/particles"]
     steps = [r["step"] for r in frames]
     assert steps[0] == 0 and steps[-1] == len(LOOKS) and 1 in steps  # the spoon seen at step 1 changes the frame
     last = frames[-1]
-    np.testing.assert_allclose(np.array(last["Points2D:positions"]), sefm.frames.X[1], atol=1e-5)
-    np.testing.assert_allclose(last["Points2D:radii"], radii(sefm.frames.shown_weights(1)), atol=1e-6)
-    spoon = rows(path)["/objects/spoon/particles"]
-    np.testing.assert_allclose(np.array(spoon[-1]["Points2D:positions"]), sefm.objects.X[sefm.objects.row("spoon")],
-                               atol=1e-5)
-    assert len(spoon[0]["Points2D:positions"]) == P
+    np.testing.assert_allclose(np.array(last["Points2D:positions"]), np.concatenate(sefm.frames.X), atol=1e-5)
+    assert last["Points2D:radii"] == [pytest.approx(radii(np.ones(1))[0])]  # resampled: one size for all
+    objects = rows(path)["/objects/particles"]
+    spoon = sefm.object_classes.index("spoon")
+    np.testing.assert_allclose(np.array(objects[-1]["Points2D:positions"][spoon * P:(spoon + 1) * P]),
+                               sefm.objects.X[sefm.objects.row("spoon")], atol=1e-5)
+    np.testing.assert_allclose(objects[-1]["Points2D:radii"][spoon * P:(spoon + 1) * P],
+                               radii(sefm.objects.W[sefm.objects.row("spoon")]), atol=1e-6)
+    assert len(objects[0]["Points2D:positions"]) == P * len(sefm.object_classes)
 
 
 def test_radii_grow_with_weight() -> None:
@@ -155,8 +184,9 @@ def test_robot_path_and_observations(recorded: tuple[Path, SeFM, Any]) -> None:
     assert [r["step"] for r in logged["/robot/pose"]] == [1, 2, 3]  # logged when it moved
     np.testing.assert_allclose(logged["/robot/pose"][-1]["Points2D:positions"], [[0.5, 2.5]])
     np.testing.assert_allclose(logged["/robot/path"][-1]["LineStrips2D:strips"][0], [[5, -4.5], [7, -3], [0.5, 2.5]])
-    spoon = logged["/observations/spoon"]
-    assert [(r["step"], len(r["Points2D:positions"] or [])) for r in spoon] == [(1, 1), (2, 1), (3, 0)]
+    seen = logged["/observations"]
+    assert [(r["step"], r["Points2D:labels"] or []) for r in seen] == [(1, ["spoon"]), (2, ["spoon"]), (3, [])]
+    np.testing.assert_allclose(seen[0]["Points2D:positions"], [[8.3, -4.1]], atol=1e-5)
 
 
 def test_metrics_are_series_per_step(recorded: tuple[Path, SeFM, Any]) -> None:
@@ -165,11 +195,15 @@ def test_metrics_are_series_per_step(recorded: tuple[Path, SeFM, Any]) -> None:
     ess = logged["/metrics/ess"]
     assert [r["step"] for r in ess] == list(range(len(LOOKS) + 1))
     assert ess[0]["SeriesLines:names"] == [*sefm.frame_ids, *sefm.object_classes]
+    assert all(r["SeriesLines:names"] is None for r in ess[1:])  # null: the names stand, not cleared
     assert ess[-1]["Scalars:scalars"][:2] == pytest.approx(list(sefm.frames.ess()))
-    rooms = logged["/metrics/rooms/stir_cup_spoon"]
-    assert rooms[0]["SeriesLines:names"] == [*sefm.map.room_names, "_outside"]
-    assert all(sum(r["Scalars:scalars"]) == pytest.approx(1.0, abs=1e-6) for r in rooms)
-    assert rooms[-1]["Scalars:scalars"] == pytest.approx(list(sefm.frame_summary(1).rooms.values()))
+    rooms = logged["/metrics/rooms"]
+    names = [*sefm.map.room_names, "_outside"]
+    assert rooms[0]["SeriesLines:names"] == [f"{fid}: {room}" for fid in sefm.frame_ids for room in names]
+    k = len(names)
+    assert all(sum(r["Scalars:scalars"][i * k:(i + 1) * k]) == pytest.approx(1.0, abs=1e-6)
+               for r in rooms for i in range(len(sefm.frame_ids)))
+    assert rooms[-1]["Scalars:scalars"][k:] == pytest.approx(list(sefm.frame_summary(1).rooms.values()))
     assert metrics.rows[-1]["frames"]["stir_cup_spoon"]["ess"] == pytest.approx(sefm.frames.ess()[1])
     assert trace.poses == [pose for pose, _ in LOOKS]
 
@@ -198,3 +232,19 @@ def test_the_recording_opens_with_the_default_layout(recorded: tuple[Path, SeFM,
              for entity, found in logged.items() for r in found if "ViewBlueprint:display_name" in r}
     assert views == {"map apartment": ("2D", "/"), "room mass per frame": ("TimeSeries", "/metrics/rooms"),
                      "effective sample size": ("TimeSeries", "/metrics/ess")}
+
+
+def test_the_modes_of_every_frame_in_one_entity(recorded: tuple[Path, SeFM, Any]) -> None:
+    path, sefm, _ = recorded
+    classes = Classes(sefm.object_classes, sefm.frame_ids)
+    last = rows(path)["/frames/modes"][-1]
+    modes = [(fid, mo) for i, fid in enumerate(sefm.frame_ids) for mo in sefm.frame_summary(i).modes]
+    assert modes and last["Boxes2D:class_ids"] == [classes.ids[fid] for fid, _ in modes]
+    assert last["Boxes2D:labels"] == [f"{mo.room} {mo.weight:.2f}" for _, mo in modes]
+    np.testing.assert_allclose(last["Boxes2D:centers"], [mo.mean for _, mo in modes], atol=1e-5)
+    np.testing.assert_allclose(last["Boxes2D:half_sizes"], [spread(mo.cov) for _, mo in modes], atol=1e-5)
+    assert all(min(half) >= 0.1 - 1e-6 for half in last["Boxes2D:half_sizes"])  # ±1 σ, at least 0.1 m
+
+
+def test_spread_is_the_standard_deviations() -> None:
+    assert spread([[0.25, 0.1], [0.1, 0.0001]]) == pytest.approx((0.5, 0.1))
