@@ -9,6 +9,9 @@ found the way ALFRED parses are read back (the object: the theme of the first ma
 of Slice when the object is sliced; the receptacle: the goal of the last Place; the movable
 receptacle: the goal of the first Place of two; the toggle target: the theme of ToggleOn), and the
 label is counted under the phrase's wording: its head lemma, and its last modifier with the head.
+Also counted: the sentence's other words by wording and labelled class (``context``) and by class
+(``class_context``), which grounding weighs; and, for a plural object phrase with no number said,
+whether the task meant one thing or several (``number``: several when it picks two).
 
     python scripts/build_word_classes.py                 # rewrite the shipped table
     python scripts/build_word_classes.py --check         # exit 1 if the shipped table differs
@@ -17,8 +20,8 @@ label is counted under the phrase's wording: its head lemma, and its last modifi
 ``--data`` is the shared data folder (default ``../shared/data`` beside the project). ``--dev F``
 holds out a fraction F of the train trials (by a hash of the trial id), builds the table on the
 others and prints the five ALFRED fields on the held-out part with the rules alone and with the
-table, for each ``--min-support`` / ``--min-ratio`` given: the settings were chosen there, never on
-valid_seen.
+table, for each ``--min-support`` / ``--min-ratio`` / ``--context-weight`` given: the settings
+were chosen there, never on valid_seen.
 """
 
 from __future__ import annotations
@@ -28,9 +31,11 @@ import csv
 import importlib.util
 import json
 import sys
+import tempfile
 import zlib
 from collections import Counter
 from collections.abc import Callable, Iterable, Sequence
+from dataclasses import replace
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -41,12 +46,23 @@ from seal_cli.frames.taxonomy import class_key  # noqa: E402
 from seal_cli.language.grounding import PORTIONS, Vocabulary  # noqa: E402
 from seal_cli.language.lexicon import noun_lemma  # noqa: E402
 from seal_cli.language.parser import CommandError, Parse, Phrase, parse_command  # noqa: E402
-from seal_cli.language.wordusage import FORMAT, MIN_RATIO, MIN_SUPPORT, SHIPPED, WordUsage, unsaid_wording  # noqa: E402
+from seal_cli.language.wordusage import (  # noqa: E402
+    CONTEXT_WEIGHT,
+    FORMAT,
+    MIN_RATIO,
+    MIN_SUPPORT,
+    SHIPPED,
+    WordUsage,
+    context_words,
+    load_word_usage,
+    unsaid_wording,
+)
 
 OUT = SHIPPED / "alfred_train.json"
 MANIPULATE = ("Pick", "Heat", "Cool", "Clean", "LookAt", "Place")
 LABELS = ("object", "receptacle", "mrecep", "toggle")
 KEEP = 2
+SECTIONS = ("words", "seen", "context", "class_context", "number")
 """A wording seen fewer times than this is left out of the file (it could never reach MIN_SUPPORT alone)."""
 
 
@@ -86,18 +102,29 @@ def fields(parse: Parse, row: dict[str, str]) -> Iterable[tuple[Phrase, str]]:
             yield phrase, label
 
 
+Counts = dict[str, Counter[str]]
+Context = dict[str, dict[str, Counter[str]]]
+
+
 def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
-          scenes: dict[str, frozenset[str]]) -> tuple[dict[str, Counter[str]], dict[str, Counter[str]]]:
-    """(wording → labelled classes, wording → the classes of the scenes it was said in)."""
+          scenes: dict[str, frozenset[str]]) -> tuple[Counts, Counts, Context, Counts, Counts]:
+    """(wording → labelled classes, wording → the classes of the scenes it was said in, wording →
+    labelled class → the sentence's other words, labelled class → the same over its head wordings,
+    plural wording of the object → "one" or "several" things meant: the task picks two or not)."""
     library = load_library()
     rules = vocabulary.with_usage(WordUsage())
-    counts: dict[str, Counter[str]] = {}
-    seen: dict[str, Counter[str]] = {}
+    counts: Counts = {}
+    seen: Counts = {}
+    context: Context = {}
+    class_context: Counts = {}
+    number: Counts = {}
     for row in rows:
+        text = " ".join(row["goal_sentence"].split())
         try:
-            parse = parse_command(" ".join(row["goal_sentence"].split()), library, rules)
+            parse = parse_command(text, library, rules)
         except CommandError:
             continue
+        words = context_words(text)
         places = [f for f in parse.frames if f.frame == "Place"]
         if row["task_type"] != "look_at_obj_in_light" and row["receptacle"] and places \
                 and "goal" not in places[-1].elements:   # "throw away the towel": the goal it leaves unsaid
@@ -105,15 +132,25 @@ def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
             counts.setdefault(said, Counter())[row["receptacle"]] += 1
             seen.setdefault(said, Counter()).update(scenes.get(row["floor_plan"], ()))
         for phrase, label in fields(parse, row):
+            if label == row["object"] and phrase.plural and phrase.quantity is None and not phrase.conjuncts \
+                    and not {"two", "both"} & set((phrase.text or "").lower().split()):
+                lemmas = wording(phrase)        # a plural object: one thing meant, or several?
+                for size in (2, 1):
+                    if lemmas is not None and len(lemmas) >= size:
+                        meant = "several" if row["task_type"] == "pick_two_obj_and_place" else "one"
+                        number.setdefault(" ".join(lemmas[-size:]), Counter())[meant] += 1
             lemmas = wording(phrase)
             if lemmas is None:
                 continue
+            others = words - set(lemmas)             # the sentence's other words, as grounding reads them
+            class_context.setdefault(label, Counter()).update(others)
             for size in (2, 1):
                 if len(lemmas) >= size:
                     said = " ".join(lemmas[-size:])
                     counts.setdefault(said, Counter())[label] += 1
                     seen.setdefault(said, Counter()).update(scenes.get(row["floor_plan"], ()))
-    return counts, seen
+                    context.setdefault(said, {}).setdefault(label, Counter()).update(others)
+    return counts, seen, context, class_context, number
 
 
 def scene_classes(data: Path, classes: Sequence[str]) -> dict[str, frozenset[str]]:
@@ -129,20 +166,48 @@ def scene_classes(data: Path, classes: Sequence[str]) -> dict[str, frozenset[str
             for name, plan in plans.items()}
 
 
-def table(counts: dict[str, Counter[str]], seen: dict[str, Counter[str]], classes: Sequence[str],
-          source: str) -> dict[str, object]:
+def table(counts: Counts, seen: Counts, context: Context, class_context: Counts, number: Counts,
+          classes: Sequence[str], source: str) -> dict[str, object]:
     words = {w: dict(sorted(c.items(), key=lambda kv: (-kv[1], kv[0])))
              for w, c in sorted(counts.items()) if sum(c.values()) >= KEEP}
     where = {w: {c: seen[w][c] for c in by_class if seen.get(w, {}).get(c)} for w, by_class in words.items()}
     return {"format": FORMAT, "source": source, "built_by": "scripts/build_word_classes.py",
-            "classes": list(classes), "words": words, "seen": {w: c for w, c in where.items() if c}}
+            "classes": list(classes), "words": words, "seen": {w: c for w, c in where.items() if c},
+            "context": pruned(context, words),
+            "class_context": {c: ordered(Counter({w: n for w, n in by.items() if n >= KEEP}))
+                              for c, by in sorted(class_context.items())},
+            "number": {w: ordered(by) for w, by in sorted(number.items()) if sum(by.values()) >= KEEP}}
+
+
+def ordered(words: Counter[str]) -> dict[str, int]:
+    return dict(sorted(words.items(), key=lambda kv: (-kv[1], kv[0])))
+
+
+def pruned(context: Context, words: dict[str, dict[str, int]]) -> dict[str, dict[str, dict[str, int]]]:
+    """The context counts that can matter: of wordings kept that meant two classes or more, the
+    words said with the wording at least ``KEEP`` times."""
+    out: dict[str, dict[str, dict[str, int]]] = {}
+    for wording in words:
+        by_class = context.get(wording, {})
+        if len(words[wording]) < 2:
+            continue
+        together: Counter[str] = Counter()
+        for said in by_class.values():
+            together.update(said)
+        row = {c: ordered(Counter({w: n for w, n in said.items() if together[w] >= KEEP}))
+               for c, said in sorted(by_class.items(), key=lambda kv: (-words[wording].get(kv[0], 0), kv[0]))
+               if c in words[wording]}
+        row = {c: said for c, said in row.items() if said}
+        if row:
+            out[wording] = row
+    return out
 
 
 def dump(data: dict[str, object]) -> str:
     """JSON with one wording a line, so that a rebuild's diff reads."""
-    head = {k: v for k, v in data.items() if k not in ("words", "seen")}
+    head = {k: v for k, v in data.items() if k not in SECTIONS}
     text = json.dumps(head, indent=1)[:-2]
-    for name in ("words", "seen"):
+    for name in SECTIONS:
         rows = data[name]
         assert isinstance(rows, dict)
         text += f',\n "{name}": {{\n' + ",\n".join(f"  {json.dumps(w)}: {json.dumps(c)}" for w, c in rows.items())
@@ -191,6 +256,7 @@ def main() -> int:
     ap.add_argument("--dev", type=float, default=0.0, help="hold out this fraction of train trials and score it")
     ap.add_argument("--min-support", type=int, nargs="*", default=[MIN_SUPPORT])
     ap.add_argument("--min-ratio", type=float, nargs="*", default=[MIN_RATIO])
+    ap.add_argument("--context-weight", type=float, nargs="*", default=[CONTEXT_WEIGHT])
     args = ap.parse_args()
 
     goals = args.data / "alfred" / "goals_train.tsv"
@@ -208,11 +274,11 @@ def main() -> int:
         held = {r["task_id"] for r in rows if zlib.crc32(r["task_id"].encode()) % 1000 < args.dev * 1000}
         fit = [r for r in rows if r["task_id"] not in held]
         dev = [r for r in rows if r["task_id"] in held]
-        counts, seen = count(fit, vocabulary, scenes)
         module = scorer(args.data)
-        universe = frozenset(class_key(c) for c in classes)
-        words = {w: {class_key(c): n for c, n in by.items()} for w, by in counts.items()}
-        where = {w: {class_key(c): n for c, n in by.items()} for w, by in seen.items()}
+        with tempfile.TemporaryDirectory() as folder:      # the table as it would ship, read as it is read
+            path = Path(folder) / "dev.json"
+            path.write_text(dump(table(*count(fit, vocabulary, scenes), classes, "dev")))
+            fitted = load_word_usage([path])
         print(f"fit {len(fit)} sentences, dev {len(dev)} sentences ({len(held)} trials)")
 
         def show(name: str, figures: dict[str, float]) -> None:
@@ -221,9 +287,13 @@ def main() -> int:
         show("rules alone", score(dev, lambda row: vocabulary.with_usage(WordUsage()), module))
         for support in args.min_support:
             for ratio in args.min_ratio:
-                tried = vocabulary.with_usage(WordUsage(words, universe, ("dev",), support, ratio, where))
-                show(f"support {support} ratio {ratio}", score(dev, lambda row, v=tried: v, module))
-        usage = WordUsage(words, universe, ("dev",), args.min_support[0], args.min_ratio[0], where)
+                for weight in args.context_weight:
+                    tried = vocabulary.with_usage(replace(fitted, min_support=support, min_ratio=ratio,
+                                                          context_weight=weight))
+                    show(f"support {support} ratio {ratio} context {weight}",
+                         score(dev, lambda row, v=tried: v, module))
+        usage = replace(fitted, min_support=args.min_support[0], min_ratio=args.min_ratio[0],
+                        context_weight=args.context_weight[0])
 
         def in_scene(row: dict[str, str], *, rates: bool, learned: bool = True) -> Vocabulary:
             present = scenes.get(row["floor_plan"], frozenset()) | {row[k] for k in LABELS if row[k]}
@@ -238,7 +308,8 @@ def main() -> int:
         return 0
 
     source = (f"ALFRED train goals ({goals.name}: {len(rows)} human goal sentences with their task labels), "
-              "parsed by seal's rules; counts of the labelled class by the wording of the phrase that fills its field")
+              "parsed by seal's rules; counts of the labelled class by the wording of the phrase that fills its field, "
+              "and of the sentence's other words by wording and class")
     text = dump(table(*count(rows, vocabulary, scenes), classes, source))
     if args.check:
         shipped = args.out.read_text() if args.out.is_file() else ""
@@ -251,7 +322,7 @@ def main() -> int:
     tmp = args.out.with_suffix(".json.tmp")
     tmp.write_text(text)
     tmp.replace(args.out)
-    print(f"wrote {args.out} ({len(text.splitlines()) - 7} wordings)")
+    print(f"wrote {args.out} ({len(json.loads(text)['words'])} wordings)")
     return 0
 
 

@@ -19,30 +19,45 @@ from __future__ import annotations
 
 import atexit
 import contextlib
-import json
 import os
 import re
-import secrets
 import signal
 import stat
-import tempfile
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from types import TracebackType
-from typing import Any
-
-import yaml
+from typing import TYPE_CHECKING, Any
 
 from seal_cli.errors import SealError, Where
+
+if TYPE_CHECKING:
+    import yaml
 
 __all__ = ["LOADER", "MAX_IMAGE_BYTES", "MAX_INPUT_BYTES", "Outputs", "atomic_output", "atomic_write_text",
            "clean_up_on_signals", "decode", "read_bytes", "read_json_lines", "read_text", "read_yaml",
            "remove_temporaries", "split_lines"]
 
-LOADER: type[yaml.SafeLoader] = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
-"""PyYAML's safe loader, in C (libyaml) when PyYAML has it: about 14 times faster at reading
-frame libraries and maps, with the same nodes and marks."""
+if TYPE_CHECKING:
+    LOADER: type[yaml.SafeLoader]
+    """PyYAML's safe loader, in C (libyaml) when PyYAML has it: about 14 times faster at reading
+    frame libraries and maps, with the same nodes and marks."""
+
+
+def _loader() -> type[yaml.SafeLoader]:
+    import yaml
+
+    loader: type[yaml.SafeLoader] = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+    globals()["LOADER"] = loader
+    return loader
+
+
+def __getattr__(name: str) -> Any:
+    """``LOADER``, imported with PyYAML when first asked for: what reads no YAML (``seal parse`` with
+    its library from the cache) does not pay for PyYAML (~8 ms)."""
+    if name == "LOADER":
+        return _loader()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 MAX_INPUT_BYTES = 16 * 2**20
 """The largest text file seal reads (frame files, maps, observations, command files): 16 MiB."""
@@ -128,12 +143,15 @@ def split_lines(text: str) -> list[str]:
 
 def read_yaml(path: str | Path) -> Any:
     """A YAML file's data; syntax errors carry the line and column, with the line and a caret."""
+    import yaml
+
     from seal_cli.yamlnodes import check_size
 
     text = read_text(path)
+    loader = _loader()
     try:
-        check_size(yaml.compose(text, Loader=LOADER), str(path))  # no alias bomb is expanded
-        return yaml.load(text, Loader=LOADER)  # noqa: S506 (a safe loader)
+        check_size(yaml.compose(text, Loader=loader), str(path))  # no alias bomb is expanded
+        return yaml.load(text, Loader=loader)  # noqa: S506 (a safe loader)
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
         lines = text.splitlines()
@@ -149,6 +167,8 @@ def read_yaml(path: str | Path) -> Any:
 def read_json_lines(path: str | Path) -> list[Any]:
     """The JSON values of a JSON Lines file (blank lines skipped); a line that is not JSON is a
     SealError at its line and column."""
+    import json
+
     values = []
     for number, line in enumerate(split_lines(read_text(path)), 1):
         if not line.strip():
@@ -381,6 +401,9 @@ def _reserve(option: str, target: Path) -> _Output:
         raise SealError(f"cannot write {option} {target}: folder {folder} does not exist")
     if not device:
         _sweep(target)
+    import secrets
+    import tempfile
+
     name = f".{target.name}.seal{os.getpid()}-{secrets.token_hex(4)}.tmp{target.suffix}"
     tmp = Path(tempfile.gettempdir() if device else folder) / name
     try:

@@ -1,151 +1,37 @@
 """The ``seal`` command line: option parsing and output formatting only.
 
-Each command lives in a module of this package and registers itself on :data:`app`. Commands
-call plain engine functions, print results on stdout (JSON with ``--json``) and diagnostics on
-stderr. A :class:`~seal_cli.errors.SealError` becomes one clear message and exit code 1; usage
-errors are typer's own (exit 2); nothing else may escape as a traceback.
+Each command lives in a module of this package and registers itself on :data:`app`
+(:mod:`~seal_cli.cli.framework`: typer). Commands call plain engine functions, print results on stdout
+(JSON with ``--json``) and diagnostics on stderr (:mod:`~seal_cli.cli.output`). A
+:class:`~seal_cli.errors.SealError` becomes one clear message and exit code 1; usage errors are typer's
+own (exit 2); nothing else may escape as a traceback.
+
+A command line imports only the module of the command it names (:func:`command_modules`), and the
+commonest one, ``seal parse TEXT`` (``--json``), is answered without typer at all (:func:`main`):
+the same function prints the same parse, through the same failure handling.
 
 May import anything; nothing imports it (but ``python -m seal_cli``).
 """
 
 from __future__ import annotations
 
-import contextlib
-import functools
-import json
 import os
 import sys
-from collections.abc import Callable, Iterator
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, TypeVar
+from typing import TYPE_CHECKING, Any
 
-import typer
-
-from seal_cli import __version__
-from seal_cli.errors import SealError, SealErrors
+from seal_cli.cli.output import PIPE_WIDTH, LazyConsole, emit_json, err, out, progress_bar, report
 
 if TYPE_CHECKING:
-    from rich.console import Console
+    import typer
 
-__all__ = ["MAX_PARTICLES", "MAX_STEPS", "OUTPUT_SUFFIXES", "app", "bench_app", "command", "emit_json", "err",
-           "main", "out", "progress_bar"]
+    from seal_cli.cli.framework import FramelibOption, JsonOption, bench_app, command
 
-app = typer.Typer(
-    name="seal",
-    help="SEAL: parse robot commands into semantic frames, plan them, and localise where each can be executed.",
-    add_completion=False,
-    no_args_is_help=True,
-    pretty_exceptions_enable=False,
-    context_settings={"help_option_names": ["-h", "--help"]},
-)
+    app: typer.Typer
+    """The whole command line, every command registered (made when first asked for, see ``__getattr__``)."""
 
-bench_app = typer.Typer(help="Benchmarks: parsing corpora, the task suite with baselines, belief-update speed.",
-                        no_args_is_help=True)
-app.add_typer(bench_app, name="bench")
-
-
-
-PIPE_WIDTH = 200
-"""Columns of the output when it is not a terminal (a file, a pipe) and ``COLUMNS`` is not set."""
-
-
-class LazyConsole:
-    """A rich ``Console``, made when first used: importing rich costs more than ``seal --version`` and
-    ``seal parse --json`` do in all, and they never print through it."""
-
-    def __init__(self, **options: Any) -> None:
-        self._options = options
-        self._console: Console | None = None
-
-    @property
-    def console(self) -> Console:
-        """The console itself (for what wants one: a ``rich.progress.Progress``)."""
-        if self._console is None:
-            from rich.console import Console
-
-            console = Console(**self._options)
-            if not console.is_terminal and "COLUMNS" not in os.environ:
-                console.width = PIPE_WIDTH  # rich's 80 columns would cut the tables of a redirected run
-            self._console = console
-        return self._console
-
-    def __getattr__(self, name: str) -> Any:
-        return getattr(self.console, name)
-
-
-out = LazyConsole(soft_wrap=True, highlight=False)
-err = LazyConsole(stderr=True, soft_wrap=True, highlight=False)
-
-F = TypeVar("F", bound=Callable[..., Any])
-
-
-def report(error: SealError) -> None:
-    """Print a SealError (or each of several) on stderr, plainly."""
-    problems = error.problems if isinstance(error, SealErrors) else [error]
-    for problem in problems:
-        err.print(f"error: {problem}", markup=False)
-
-
-def command(*args: Any, on: typer.Typer | None = None, **kwargs: Any) -> Callable[[F], F]:
-    """``@app.command`` (or a command of the sub-app ``on``, e.g. ``bench_app``) that turns
-    SealError into a message on stderr and exit code 1."""
-
-    def decorate(function: F) -> F:
-        @functools.wraps(function)
-        def run(*a: Any, **kw: Any) -> Any:
-            from seal_cli.fileio import clean_up_on_signals, remove_temporaries
-
-            clean_up_on_signals()
-            try:
-                return function(*a, **kw)
-            except SealError as error:
-                report(error)
-                raise typer.Exit(1) from None
-            except KeyboardInterrupt:
-                err.print("interrupted")
-                raise typer.Exit(130) from None
-            except BrokenPipeError:
-                raise typer.Exit(0) from None
-            except MemoryError:
-                err.print("error: out of memory: ask for less (fewer particles, steps, episodes or a smaller "
-                          "map)", markup=False)
-                raise typer.Exit(1) from None
-            except RecursionError:
-                err.print("error: the input is nested too deeply for seal to handle", markup=False)
-                raise typer.Exit(1) from None
-            finally:
-                remove_temporaries()  # of outputs planned but never written: the command failed first
-
-        (on or app).command(*args, **kwargs)(run)
-        return function
-
-    return decorate
-
-
-@contextlib.contextmanager
-def progress_bar(what: str, total: int | None = None) -> Iterator[Callable[[int, int], None]]:
-    """``advance(done, total)`` for a bar with the count, the time taken and an estimate of the time
-    left: on stderr, and only when stderr is a terminal (nothing in a pipe, a file or a test)."""
-    from rich.progress import (
-        BarColumn,
-        MofNCompleteColumn,
-        Progress,
-        TextColumn,
-        TimeElapsedColumn,
-        TimeRemainingColumn,
-    )
-
-    with Progress(TextColumn(what), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), TextColumn("left"),
-                  TimeRemainingColumn(), console=err.console, transient=True,
-                  disable=not err.is_terminal) as progress:
-        bar = progress.add_task(what, total=total)
-        yield lambda done, total: progress.update(bar, completed=done, total=total)
-
-
-def emit_json(data: Any) -> None:
-    """One JSON document on stdout."""
-    sys.stdout.write(json.dumps(data, ensure_ascii=False) + "\n")
-    sys.stdout.flush()
+__all__ = ["MAX_PARTICLES", "MAX_STEPS", "OUTPUT_SUFFIXES", "PIPE_WIDTH", "FramelibOption", "JsonOption",
+           "LazyConsole", "app", "bench_app", "command", "emit_json", "err", "main", "out", "progress_bar", "report"]
 
 
 def framelib_paths(paths: list[Path] | None) -> list[Path] | None:
@@ -161,11 +47,6 @@ def framelib_paths(paths: list[Path] | None) -> list[Path] | None:
     return [framelib_dir(), *(Path(str(p)[1:]) if plus else p for p, plus in zip(paths, added, strict=True))]
 
 
-FramelibOption = typer.Option(None, "--framelib", help="Frame library file or folder (repeatable); "
-                              "default: the shipped standard library. +PATH adds to the standard library.",
-                              show_default=False)
-JsonOption = typer.Option(False, "--json", help="Machine-readable output on stdout.")
-
 MAX_PARTICLES = 100_000
 """The most particles per object and per frame a command takes (a million per belief fills memory)."""
 
@@ -177,36 +58,89 @@ OUTPUT_SUFFIXES = {"--png": (".png",), "--rrd": (".rrd",), "--episodes": (".json
 """The suffixes each output option's format may carry (``--png out.jpg`` is refused, not mislabelled)."""
 
 
-def _version(value: bool) -> None:
-    if value:
-        typer.echo(f"seal {__version__}")
-        raise typer.Exit()
-
-
-@app.callback()
-def _root(version: bool = typer.Option(False, "--version", callback=_version, is_eager=True,
-                                       help="Print the version and exit.")) -> None:
-    """SEAL: Semantic Frame Execution And Localization."""
-
-
-def _register() -> None:
-    """Import the command modules so that they register on ``app``."""
-    import importlib
-    import pkgutil
-
-    found = {m.name for m in pkgutil.iter_modules(__path__) if m.name.endswith("_cmd")}
-    order = [m for m in COMMAND_ORDER if m in found] + sorted(found - set(COMMAND_ORDER))
-    for module in order:
-        importlib.import_module(f"{__name__}.{module}")
-
-
 COMMAND_ORDER = ("parse_cmd", "plan_cmd", "localize_cmd", "run_cmd", "library_cmd", "map_cmd")
 """The order commands appear in ``seal --help``: the pipeline first, then the tools."""
 
+HOMES = {"parse": "parse_cmd", "plan": "plan_cmd", "localize": "localize_cmd", "run": "run_cmd",
+         "frames": "library_cmd", "validate": "library_cmd", "map": "map_cmd", "import-bag": "ros_cmd"}
+"""The module of each command (``tests/cli`` checks this against what the modules register)."""
 
-_register()
+BENCH_HOMES = {"parse": "parse_cmd", "plan": "plan_cmd", "maps": "map_cmd", "perf": "perf_cmd",
+               "reliability": "reliability_cmd", "ros": "ros_cmd", "tasks": "run_cmd", "e2e": "run_cmd",
+               "startup": "startup_cmd"}
+"""The module of each ``seal bench`` command."""
+
+
+def command_modules(argv: list[str] | None = None) -> list[str]:
+    """The command modules a command line needs: only its command's module when it names one
+    (``seal parse ...`` needs ``parse_cmd``, ``seal bench perf ...`` ``perf_cmd``), every module
+    otherwise (``seal --help``, a misspelt command: its message lists them all). Importing one module
+    instead of eleven, and typer making one command instead of twenty, is a fifth of ``seal parse``'s
+    start (``seal bench startup``)."""
+    import pkgutil
+
+    found = {m.name for m in pkgutil.iter_modules(__path__) if m.name.endswith("_cmd")}
+    every = [m for m in COMMAND_ORDER if m in found] + sorted(found - set(COMMAND_ORDER))
+    argv = argv or []
+    home = HOMES.get(argv[0]) if argv else None
+    if argv[:1] == ["bench"] and len(argv) > 1:
+        home = BENCH_HOMES.get(argv[1])
+    return [home] if home in found else every
+
+
+_registered: set[str] = set()
+
+
+def register(modules: list[str] | None = None) -> typer.Typer:
+    """Import command modules (default: all) so that they register on the app; the app."""
+    import importlib
+
+    from seal_cli.cli import framework
+
+    for module in command_modules() if modules is None else modules:
+        if module not in _registered:
+            importlib.import_module(f"{__name__}.{module}")
+            _registered.add(module)
+    return framework.app
+
+
+_FRAMEWORK = ("FramelibOption", "JsonOption", "bench_app", "command")
+
+
+def __getattr__(name: str) -> Any:
+    """``app``, the whole command line with every command registered (what tests and ``--help`` see),
+    and the framework's names the command modules use: typer is imported when first asked for."""
+    if name == "app":
+        return register()
+    if name in _FRAMEWORK:
+        from seal_cli.cli import framework
+
+        return getattr(framework, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def plain_parse(argv: list[str]) -> tuple[str, bool] | None:
+    """``(TEXT, as_json)`` when the command line is ``parse TEXT`` with at most ``--json`` beside it
+    (TEXT not starting with '-'), which :func:`main` answers without typer; None for anything else
+    (other options, ``--help``, shell completion), which typer answers."""
+    if argv[:1] != ["parse"] or "_SEAL_COMPLETE" in os.environ:
+        return None
+    rest = argv[1:]
+    words = [a for a in rest if a != "--json"]
+    if len(words) != 1 or words[0].startswith("-") or len(rest) - len(words) > 1:
+        return None
+    return words[0], len(rest) > 1
 
 
 def main() -> None:
-    """Entry point of the ``seal`` console script."""
-    app()
+    """Entry point of the ``seal`` console script: the app with the commands this command line needs;
+    ``seal parse TEXT`` without typer (the same function prints the same parse, see
+    :func:`seal_cli.cli.parse_view.print_parse`)."""
+    plain = plain_parse(sys.argv[1:])
+    if plain is not None:
+        from seal_cli.cli.output import run_command
+        from seal_cli.cli.parse_view import print_parse
+
+        text, as_json = plain
+        sys.exit(run_command(lambda: print_parse(text, None, None, as_json)))  # the standard library
+    register(command_modules(sys.argv[1:]))()

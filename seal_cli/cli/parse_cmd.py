@@ -11,11 +11,11 @@ from typing import TYPE_CHECKING, Any
 import typer
 
 from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
+from seal_cli.cli.parse_view import _escape, print_parse, summary
 from seal_cli.errors import SealError, Where
 
 if TYPE_CHECKING:
     from seal_cli.language.grounding import Vocabulary
-    from seal_cli.language.parser import Parse
 
 VocabularyOption = typer.Option(None, "--vocabulary", help="YAML list of object classes (each a name or "
                                 "{class: NAME, synonyms: [...]}) to ground elements in.", show_default=False)
@@ -72,7 +72,7 @@ def parse(
 ) -> None:
     """Parse a command into the frames it evokes, with their elements."""
     from seal_cli.frames.reading import load_library
-    from seal_cli.language.parser import parse_command, parse_lines
+    from seal_cli.language.parser import parse_lines
 
     if (text is None) == (file is None):
         raise typer.BadParameter("give either a command or --file FILE (one command per line; '-' reads standard "
@@ -94,61 +94,9 @@ def parse(
                 out.print(f"{number}: {_escape(summary(result))}")
         return
     assert text is not None
-    try:
-        parsed = parse_command(text, library, vocab)
-    except SealError as error:
-        if as_json:
-            from seal_cli.language.parser import _error_json
-
-            emit_json({"text": text, "error": _error_json(error)})
-            raise typer.Exit(1) from None
-        raise
-    if as_json:
-        emit_json(parsed.to_json())
-    else:
-        out.print(tree(parsed))
-
-
-def _escape(text: str) -> str:
-    from rich.markup import escape
-
-    return escape(text)
-
-
-def summary(result: dict[str, Any]) -> str:
-    """``Bring(theme=coffee, recipient=Roger) Place(...)``: a parse on one line."""
-    parts = []
-    for frame in result["frames"]:
-        inner = ", ".join(f"{role}={e.get('class') or e['head']}" for role, e in frame["elements"].items())
-        parts.append(f"{frame['frame']}({inner})")
-    return " ".join(parts)
-
-
-def tree(parsed: Parse) -> Any:
-    """The parse as a rich tree: frames, their elements, and what each element is."""
-    from rich.markup import escape
-    from rich.tree import Tree
-
-    root = Tree(f"[bold]{escape(parsed.text)}[/bold]")
-    for index, frame in enumerate(parsed.frames):
-        a, b = frame.span
-        branch = root.add(f"[bold cyan]{index}. {frame.frame}[/bold cyan]  [dim]'{escape(frame.lexical_unit)}' "
-                          f"· {escape(parsed.text[a:b])!s}[/dim]")
-        for role, phrase in frame.elements.items():
-            facts = [f"head [green]{escape(phrase.head)}[/green]"]
-            if phrase.cls:
-                facts.append(f"class [magenta]{escape(phrase.cls)}[/magenta]")
-            if phrase.kind != "thing":
-                facts.append(phrase.kind)
-            if phrase.quantity is not None:
-                facts.append(f"×{phrase.quantity}")
-            if phrase.refers_to is not None:
-                facts.append(f"→ frame {phrase.refers_to[0]} {phrase.refers_to[1]}")
-            if phrase.default:
-                facts.append("default")
-            said = escape(phrase.text) if phrase.text else "[dim](unsaid)[/dim]"
-            branch.add(f"[yellow]{role}[/yellow]: {said}  [dim]{' · '.join(facts)}[/dim]")
-    return root
+    code = print_parse(text, library, vocab, as_json)
+    if code:
+        raise typer.Exit(code)
 
 
 # ---------------------------------------------------------------------------------------------

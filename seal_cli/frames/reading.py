@@ -3,30 +3,53 @@
 :func:`read_library` reads frame files (YAML or the ``.frame`` DSL) and folders of them and
 returns the library together with every problem found; :func:`load_library` raises them
 instead. Which files make up the standard library is :func:`seal_cli.resources.framelib_dir`.
+
+:func:`load_library` keeps each library it read without a problem in seal's cross-process cache
+(:mod:`seal_cli.cache`), stamped with the names and contents of the files it was read from and the
+code that read it; a later process whose files and code are the same unpickles it (~2 ms) instead
+of reading and checking them again (~100 ms, most of ``seal parse``'s start). Any change to a
+file, a file added to or removed from a folder, or another version of seal reads the files anew.
 """
 
 from __future__ import annotations
 
 import dataclasses
-import difflib
+import os
 from collections.abc import Iterable, Mapping, Sequence
 from functools import cache
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 from seal_cli.errors import SealError, SealErrors, Where
-from seal_cli.fileio import read_text
-from seal_cli.frames.formats import Contents, Reader, dsl, yamlfile
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame, LexicalUnit
-from seal_cli.frames.validation import check_library
-from seal_cli.resources import framelib_dir
+from seal_cli.resources import framelib_dir, grammar_path
+
+if TYPE_CHECKING:
+    from seal_cli.frames.formats import Contents, Reader
+
+    READERS: Mapping[str, Reader]
+    """The frame file formats, by file suffix (made when first asked for, see ``__getattr__``)."""
 
 __all__ = ["FRAME_SUFFIXES", "READERS", "frame_files", "load_library", "read_files", "read_library", "standard_library"]
 
-READERS: Mapping[str, Reader] = {".yaml": yamlfile.read, ".yml": yamlfile.read, ".frame": dsl.read}
-"""The frame file formats, by file suffix."""
+FRAME_SUFFIXES = (".yaml", ".yml", ".frame")
+"""The suffixes of frame files (the keys of :data:`READERS`)."""
 
-FRAME_SUFFIXES = tuple(READERS)
+
+@cache
+def _readers() -> Mapping[str, Reader]:
+    from seal_cli.frames.formats import dsl, yamlfile
+
+    return {".yaml": yamlfile.read, ".yml": yamlfile.read, ".frame": dsl.read}
+
+
+def __getattr__(name: str) -> Any:
+    """``READERS``, the frame file formats by file suffix, made when first asked for: the formats'
+    modules (PyYAML, the DSL's grammar) are imported only when a file is read, not from the cache."""
+    if name == "READERS":
+        return _readers()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def frame_files(paths: Iterable[str | Path]) -> tuple[list[Path], list[SealError]]:
@@ -49,6 +72,10 @@ def frame_files(paths: Iterable[str | Path]) -> tuple[list[Path], list[SealError
 
 def read_files(files: Sequence[Path]) -> Contents:
     """Read each file with the reader its suffix names (YAML for any other); problems are collected, not raised."""
+    from seal_cli.fileio import read_text
+    from seal_cli.frames.formats import Contents
+
+    readers = _readers()
     pieces = Contents()
     for path in files:
         try:
@@ -56,14 +83,19 @@ def read_files(files: Sequence[Path]) -> Contents:
         except SealError as exc:
             pieces.problems.append(exc)
             continue
-        reader = READERS.get(path.suffix, yamlfile.read)
+        reader = readers.get(path.suffix, readers[".yaml"])
         pieces.add(reader(text, str(path)))
     return pieces
 
 
 def read_library(paths: Iterable[str | Path]) -> tuple[Library, list[SealError]]:
     """The library in these files and folders, and every problem found in it."""
-    files, problems = frame_files(paths)
+    return _read(*frame_files(paths))
+
+
+def _read(files: Sequence[Path], problems: list[SealError]) -> tuple[Library, list[SealError]]:
+    from seal_cli.frames.validation import check_library
+
     pieces = read_files(files)
     problems.extend(pieces.problems)
     pieces.frames = _with_units(pieces.frames, pieces.units, problems)
@@ -87,6 +119,8 @@ def _with_units(frames: list[Frame], units: Sequence[tuple[str, LexicalUnit]],
     names = {f.name for f in frames}
     for name, unit in units:
         if name not in names:
+            import difflib
+
             close = difflib.get_close_matches(name, sorted(names), n=1)
             hint = f" (did you mean {close[0]!r}?)" if close else ""
             problems.append(SealError(f"lexical unit {unit.text!r} is for frame {name!r}, which no file defines{hint}",
@@ -112,11 +146,89 @@ def _with_units(frames: list[Frame], units: Sequence[tuple[str, LexicalUnit]],
 
 
 def load_library(paths: Iterable[str | Path] | None = None) -> Library:
-    """The library in these files and folders (default: the standard library); raises on any problem."""
-    library, problems = read_library([framelib_dir()] if paths is None else paths)
+    """The library in these files and folders (default: the standard library); raises on any problem.
+    Served from the cache when the files and the code are those it was read from (see above)."""
+    given = [framelib_dir()] if paths is None else list(paths)
+    files, problems = frame_files(given)
+    entry = None if problems else _Entry.of(given, files)
+    if entry is not None:
+        cached = entry.load()
+        if cached is not None:
+            return cached
+    library, problems = _read(files, problems)
     if problems:
         raise problems[0] if len(problems) == 1 else SealErrors(problems)
+    if entry is not None:
+        entry.store(library)
     return library
+
+
+@dataclasses.dataclass(frozen=True)
+class _Entry:
+    """Where a library read from these paths is cached, and the stamp of what it was read from."""
+
+    name: str
+    stamp: str
+
+    @classmethod
+    def of(cls, given: Sequence[str | Path], files: Sequence[Path]) -> _Entry | None:
+        """The entry of a library read from ``files`` (found under the paths ``given``), or None when a
+        file cannot be read (reading it again reports why)."""
+        from seal_cli import cache
+        from seal_cli.fileio import read_bytes
+
+        named = [str(p) for p in given]
+        if not all(os.path.isabs(p) for p in named):
+            named.append(os.getcwd())  # relative paths name other files elsewhere
+        parts = [_code_stamp()]
+        for path in files:
+            try:
+                parts += [str(path).encode(), read_bytes(path)]
+            except SealError:
+                return None
+        return cls(f"library-{cache.digest(*(p.encode() for p in named))[:24]}.pickle", cache.digest(*parts))
+
+    def load(self) -> Library | None:
+        """The cached library, or None when there is none of this stamp or it cannot be unpickled."""
+        import pickle
+
+        from seal_cli import cache
+
+        payload = cache.read(self.name, self.stamp)
+        if payload is None:
+            return None
+        try:
+            library = pickle.loads(payload)
+        except Exception:  # a corrupt entry (any error unpickling it) is one to make again
+            return None
+        return library if isinstance(library, Library) else None
+
+    def store(self, library: Library) -> None:
+        import pickle
+
+        from seal_cli import cache
+
+        cache.write(self.name, self.stamp, pickle.dumps(library, protocol=pickle.HIGHEST_PROTOCOL))
+
+
+def _code_stamp() -> bytes:
+    """What identifies the code that reads libraries and defines their values: seal's version and the
+    size and modification time of each of its source files that do (a changed reader or model
+    makes a new entry; an installed seal changes them only with its version)."""
+    from seal_cli import __version__
+
+    package = Path(__file__).resolve().parents[1]
+    sources = [package / name for name in ("errors.py", "fileio.py", "yamlnodes.py", "resources.py")]
+    sources += sorted((package / "frames").rglob("*.py"))
+    sources.append(grammar_path("frames.lark"))
+    stamp = [__version__]
+    for source in sources:
+        try:
+            info = source.stat()
+        except OSError:
+            continue
+        stamp.append(f"{source.name} {info.st_size} {info.st_mtime_ns}")
+    return "\n".join(stamp).encode()
 
 
 @cache

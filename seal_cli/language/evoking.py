@@ -477,8 +477,11 @@ class Evoker:
             return Phrase(text, root.head, root.cls, root.kind, ref, None, np.plural, span=(np.start, np.end))
         modifiers = tuple(noun_lemma(w.text) if w.tag == "WORD" else w.lower for w in np.mods)
         conjuncts = tuple(self.phrase(c, frame, role) for c in np.conjuncts) if len(np.conjuncts) > 1 else ()
+        plural = np.plural and np.kind != "message" and not (   # "the keys": one key chain, as people mean it
+            np.quantity is None and not np.conjuncts and self.vocabulary is not None and np.head is not None
+            and self.vocabulary.names_one([w.text for w in np.mods] + [np.head.text]))
         return Phrase(text, np.head_text if np.kind != "message" else text, cls, np.kind, None, np.quantity,
-                      np.plural and np.kind != "message", modifiers, span=(np.start, np.end), conjuncts=conjuncts,
+                      plural, modifiers, span=(np.start, np.end), conjuncts=conjuncts,
                       relative=np.relative)
 
 

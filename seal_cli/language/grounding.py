@@ -38,7 +38,7 @@ from typing import Any
 from seal_cli.errors import SealError, Where
 from seal_cli.frames.taxonomy import class_key, class_words
 from seal_cli.language.lexicon import noun_lemma
-from seal_cli.language.wordusage import WordUsage, shipped_word_usage, unsaid_wording
+from seal_cli.language.wordusage import WordUsage, context_words, shipped_word_usage, unsaid_wording
 
 __all__ = ["PIECES", "PORTIONS", "Vocabulary", "load_vocabulary", "vocabulary_of_map"]
 
@@ -60,6 +60,8 @@ piece exists once its whole has been cut, so naming one asks for the cutting (se
 
 
 _RULES = WordUsage()
+_INDEXES = ("_usage", "_present", "_names", "_own", "_exact", "_by_word", "_rules_alone")
+"""The cached indexes a vocabulary builds from its classes and usage, which do not depend on the sentence."""
 
 
 def _lemmas(words: Iterable[str]) -> tuple[str, ...]:
@@ -83,6 +85,9 @@ class Vocabulary:
     scene: bool = field(default=False, compare=False)
     """Whether the classes are those of one scene (:meth:`restricted_to`): the statistics then ask
     which class people mean by a word where it is present, not which one is meant most often."""
+    context: frozenset[str] = field(default=frozenset(), compare=False)
+    """The words of the sentence being grounded (:meth:`in_context`), which the statistics weigh
+    (:meth:`~seal_cli.language.wordusage.WordUsage.context_factor`); empty: the phrase alone."""
 
     def __post_init__(self) -> None:
         if not self.synonyms:
@@ -101,6 +106,19 @@ class Vocabulary:
     def with_usage(self, usage: WordUsage) -> Vocabulary:
         """This vocabulary grounding with these word statistics (``WordUsage()``: the rules alone)."""
         return Vocabulary(self.classes, self.synonyms, self.where, usage, self.scene)
+
+    def in_context(self, text: str) -> Vocabulary:
+        """This vocabulary grounding the phrases of the sentence ``text``: the statistics weigh its
+        other words ("the cup" in "put the cup in the coffee machine"). Made once per sentence, so
+        it shares this vocabulary's indexes of names instead of building them again."""
+        words = context_words(text)
+        if words == self.context:
+            return self
+        made = Vocabulary(self.classes, self.synonyms, self.where, self.usage, self.scene, words)
+        for name in _INDEXES:
+            if name in self.__dict__:
+                made.__dict__[name] = self.__dict__[name]
+        return made
 
     @cached_property
     def _usage(self) -> WordUsage:
@@ -205,12 +223,12 @@ class Vocabulary:
                 if found is not None:
                     break
         if words and not of and end == len(words) and words[-1] not in PORTIONS:
-            found = self._usage.choose(words, self._present, found, self.scene)
+            found = self._usage.choose(words, self._present, found, self.scene, self.context)
         elif end == len(words) and words and words[-1] in PORTIONS:   # "the left side of the sink",
             whole = of or words[:-1]                                     # "a chair seat": the whole decides
             if whole and whole[-1] not in PORTIONS and (
                     found == self._ground(whole, len(whole), ()) or not self._usage.meant(found)):
-                found = self._usage.choose(whole, self._present, found, self.scene)
+                found = self._usage.choose(whole, self._present, found, self.scene, self.context)
         return found
 
     def _ground(self, words: tuple[str, ...], end: int, of: tuple[str, ...]) -> str | None:
@@ -246,6 +264,12 @@ class Vocabulary:
             if best is not None and weight >= 4.0:
                 break
         return None if best is None else self.classes[best[1]]
+
+    def names_one(self, words: Sequence[str]) -> bool:
+        """Whether a plural noun phrase with these words (modifiers, head) names one thing, as people
+        mean it: "the keys" are one key chain (:meth:`~seal_cli.language.wordusage.WordUsage.names_one`,
+        learned from a train split; the rules alone know no such plural)."""
+        return self._usage.names_one(_lemmas(w for w in words if w))
 
     def ground_unsaid(self, frame: str, role: str, unit: str) -> str | None:
         """The class people most likely mean as ``frame``'s ``role`` when they use the lexical unit

@@ -17,6 +17,7 @@ from __future__ import annotations
 import bisect
 import gzip
 import importlib.util
+import mmap
 from functools import lru_cache
 from pathlib import Path
 
@@ -25,25 +26,84 @@ __all__ = ["gerund_lemma", "is_adjective", "is_adverb", "is_gradable", "is_plura
 
 
 class _Table:
-    """A lemminflect table as sorted lines, looked up by word."""
+    """A lemminflect table as sorted lines, looked up by word by bisection.
+
+    The sorted lines are kept in seal's cache (:mod:`seal_cli.cache`) and looked up there in place,
+    mapped into memory: a new process opens them in microseconds instead of decompressing and
+    sorting the table (~30 ms). Without a usable cache they are sorted in memory, as they are to
+    make the entry; the lines found are the same either way."""
 
     def __init__(self, name: str) -> None:
         self.name = name
         self._lines: list[str] | None = None
+        self._mapped: tuple[mmap.mmap, int] | None = None
+        self._tried = False
+
+    def _source(self) -> Path:
+        spec = importlib.util.find_spec("lemminflect")
+        folder = Path(next(iter(spec.submodule_search_locations or ()))) if spec else Path()
+        return folder / "resources" / self.name
 
     @property
     def lines(self) -> list[str]:
+        """The table's lines, sorted (read from lemminflect's file)."""
         if self._lines is None:
-            spec = importlib.util.find_spec("lemminflect")
-            folder = Path(next(iter(spec.submodule_search_locations or ()))) if spec else Path()
-            with gzip.open(folder / "resources" / self.name, "rt", encoding="utf-8") as handle:
+            with gzip.open(self._source(), "rt", encoding="utf-8") as handle:
                 lines = handle.read().split("\n")
             lines.sort()
             self._lines = lines
         return self._lines
 
+    def _sorted(self) -> tuple[mmap.mmap, int] | None:
+        """The sorted lines as one buffer (each line ending in a newline) and where they start: the
+        cache's entry, made when missing or stale; None when the cache cannot be used."""
+        if not self._tried:
+            self._tried = True
+            from seal_cli import __version__, cache
+
+            source = self._source()
+            try:
+                info = source.stat()
+            except OSError:
+                return None
+            stamp = cache.digest(__version__.encode(), str(source).encode(), str(info.st_size).encode(),
+                                 str(info.st_mtime_ns).encode(), _FORMAT)
+            name = f"words-{self.name.split('.')[0]}-{cache.digest(str(source).encode())[:16]}.txt"
+            found = cache.read_mapped(name, stamp)
+            if found is None:
+                cache.write(name, stamp, "".join(line + "\n" for line in self.lines).encode("utf-8"))
+                found = cache.read_mapped(name, stamp)
+            self._mapped = found
+            if found is not None:
+                self._lines = None  # looked up in the entry from now on
+        return self._mapped
+
     def entries(self, word: str) -> list[list[str]]:
         """``[category, field, ...]`` for each line of ``word``."""
+        mapped = self._sorted()
+        if mapped is None:
+            return self._entries_in_memory(word)
+        data, lo = mapped
+        if "\n" in word:  # no line holds one (in memory, none would be found either)
+            return []
+        key = (word + ",").encode("utf-8")
+        hi = len(data)
+        while lo < hi:  # the first line >= key: lines wholly before lo are < key, lines from hi on are >= key
+            mid = (lo + hi) // 2
+            start = data.rfind(b"\n", lo, mid) + 1 or lo
+            end = data.find(b"\n", start)
+            if data[start:end] < key:
+                lo = end + 1
+            else:
+                hi = start
+        found = []
+        while data[lo:lo + len(key)] == key:
+            end = data.find(b"\n", lo)
+            found.append(data[lo + len(key):end].decode("utf-8").split(","))
+            lo = end + 1
+        return found
+
+    def _entries_in_memory(self, word: str) -> list[list[str]]:
         lines = self.lines
         key = word + ","
         found = []
@@ -52,6 +112,10 @@ class _Table:
             found.append(lines[i][len(key):].split(","))
             i += 1
         return found
+
+
+_FORMAT = b"sorted lines 1"
+"""The layout of the cached tables (part of their stamp: a new layout makes new entries)."""
 
 
 _WORDS = _Table("lemma_lu.csv.gz")

@@ -18,7 +18,6 @@ A :class:`CommandParser` (one per frame library) runs the stages, one module eac
 
 from __future__ import annotations
 
-import difflib
 from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import replace
 from typing import TYPE_CHECKING, Any
@@ -82,7 +81,7 @@ class CommandParser:
                                _first_column(text), text, ["a verb"])
         tree = self.tree(text, words)
         if vocabulary is not None:
-            vocabulary = self.with_library_synonyms(vocabulary)
+            vocabulary = self.with_library_synonyms(vocabulary).in_context(text)   # the sentence weighs
         command = Syntax(text, words, self.types).transform(tree)
         clauses = Clauses(text, self.library, self.types, lexicon.speech).passes(command)
         parse = Evoker(text, self.library, self.types, vocabulary, words, tagger.remarks).command(clauses)
@@ -232,6 +231,8 @@ def _swallowed_error(parse: Parse, lost: Swallowed) -> CommandError:
 
 def _some_verbs(lexicon: Lexicon, near: str | None = None) -> str:
     verbs = [v for v in lexicon.verbs]
+    import difflib
+
     close = difflib.get_close_matches(near, verbs, n=3, cutoff=0.6) if near else []
     shown = close + [v for v in ("bring", "find", "go", "pick up", "put", "follow", "tell") if v in verbs
                      and v not in close]

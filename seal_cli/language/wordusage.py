@@ -18,13 +18,23 @@ class, and that class meant at least ``MIN_RATIO`` times as often as the class t
 (half of the present classes' share when the rules found none). A class the statistics never
 saw (no class of the split's vocabulary: a GPSR arena's "table") is never overridden.
 
+**The rest of the sentence.** The same word means different classes in different sentences: a
+"cup" put in the coffee machine is more often a ``Mug``, the "table" where a lamp is turned on a
+``SideTable``. A table may also count, for each wording and class, the other words of the
+sentences that meant it (:attr:`WordUsage.context`, the words of :func:`context_words`, and over
+all wordings of a class: :attr:`WordUsage.class_context`); each class's count (or rate) is then
+weighed by how much more often than the wording's other classes its sentences held the words of
+this one, a naive Bayes factor damped by ``CONTEXT_WEIGHT`` (:meth:`WordUsage.context_factor`),
+before the same thresholds decide.
+
 Tables are JSON files (``format: seal-word-classes/1``) in the folder ``word_classes/`` beside
 this module; every file there is read and their counts are added.
 """
 
 from __future__ import annotations
 
-import json
+import math
+import re
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from functools import cache, cached_property
@@ -34,9 +44,10 @@ from typing import Any
 
 from seal_cli.errors import SealError, Where
 from seal_cli.frames.taxonomy import class_key
+from seal_cli.language.morphology import noun_lemma
 
-__all__ = ["FORMAT", "MIN_RATIO", "MIN_SUPPORT", "SHIPPED", "WordUsage", "load_word_usage", "shipped_word_usage",
-           "unsaid_wording"]
+__all__ = ["CONTEXT_PRIOR", "CONTEXT_WEIGHT", "FORMAT", "MIN_RATIO", "MIN_SUPPORT", "SHIPPED", "WordUsage",
+           "context_words", "load_word_usage", "shipped_word_usage", "unsaid_wording"]
 
 FORMAT = "seal-word-classes/1"
 SHIPPED = Path(__file__).resolve().parent / "word_classes"
@@ -45,6 +56,21 @@ MIN_SUPPORT = 5
 MIN_RATIO = 1.2
 """How many times as often the learned class must be meant as the rules' class to replace it
 (chosen on train trials held out from the counts: 1.0–1.2 scored best, 1.5–3 about 0.6 points lower)."""
+CONTEXT_WEIGHT = 0.3
+"""How much the sentence's other words weigh (the exponent of the naive Bayes factor: 0 ignores
+them, 1 is plain naive Bayes, which trusts the words' independence far too much; chosen on train
+trials held out from the counts, see docs/language.md)."""
+CONTEXT_PRIOR = 5.0
+"""How many phrases' worth of the class's rate over all its wordings a wording's own rate of a
+context word is smoothed with (a wording said few times borrows from its class)."""
+
+_WORD = re.compile(r"[a-z]+")
+
+
+def context_words(text: str) -> frozenset[str]:
+    """The words of a sentence as :attr:`WordUsage.context` counts them: lower-case letters only,
+    each as its noun lemma ("Put two mugs in the coffee machine" → put, two, mug, in, the, ...)."""
+    return frozenset(noun_lemma(w) for w in _WORD.findall(text.lower()))
 
 
 def unsaid_wording(frame: str, role: str, unit: str) -> str:
@@ -71,11 +97,26 @@ class WordUsage:
     """``seen[wording][class key]``: how often the wording was said in a scene that held the class.
     In a scene, a class is judged by its rate (``counts / seen``): how often people mean it when it
     is there, not how often it is there."""
+    context: Mapping[str, Mapping[str, Mapping[str, int]]] = field(default_factory=dict)
+    """``context[wording][class key][word]``: of the phrases with this wording that meant the class,
+    how many were said in a sentence with the word (:func:`context_words`, the phrase's own words
+    left out). Empty: the sentence is not weighed."""
+    class_context: Mapping[str, Mapping[str, int]] = field(default_factory=dict)
+    """``class_context[class key][word]``: the same over every head wording of the class, which a
+    wording's own counts are smoothed towards (:data:`CONTEXT_PRIOR`)."""
+    context_weight: float = CONTEXT_WEIGHT
+    number: Mapping[str, Mapping[str, int]] = field(default_factory=dict)
+    """``number[wording]["one" | "several"]``: of the plural phrases with this wording that named the
+    task's object (no number said), how many meant one thing ("put the keys on the table": one key
+    chain) and how many several (:meth:`names_one`)."""
 
     def __post_init__(self) -> None:
-        for name in ("counts", "seen"):
+        for name in ("counts", "seen", "class_context", "number"):
             table = getattr(self, name)
             object.__setattr__(self, name, MappingProxyType({w: MappingProxyType(dict(c)) for w, c in table.items()}))
+        object.__setattr__(self, "context", MappingProxyType(
+            {w: MappingProxyType({c: MappingProxyType(dict(t)) for c, t in by.items()})
+             for w, by in self.context.items()}))
 
     def __bool__(self) -> bool:
         return bool(self.counts)
@@ -90,9 +131,76 @@ class WordUsage:
                     row[name] = row.get(name, 0) + n
             return out
 
+        context: dict[str, dict[str, dict[str, int]]] = {}
+        for table in (self.context, other.context):
+            for wording, by_class in table.items():
+                row = context.setdefault(wording, {})
+                for key, words in add(row, by_class).items():
+                    row[key] = words
         return WordUsage(add(self.counts, other.counts), self.universe | other.universe,
                          self.sources + other.sources, self.min_support, self.min_ratio,
-                         add(self.seen, other.seen))
+                         add(self.seen, other.seen), context, add(self.class_context, other.class_context),
+                         self.context_weight, add(self.number, other.number))
+
+    def names_one(self, lemmas: tuple[str, ...]) -> bool:
+        """Whether a plural phrase whose words up to the head are ``lemmas`` names one thing, as
+        people meant it: "the keys" are one key chain, "the pencils" several pencils. The longest
+        wording with at least ``min_support`` observations decides: one, when at least
+        ``min_support`` people meant one thing and ``min_ratio`` times as many as meant several."""
+        for size in (2, 1):
+            if len(lemmas) < size:
+                continue
+            said = self.number.get(" ".join(lemmas[-size:]))
+            if not said or sum(said.values()) < self.min_support:
+                continue
+            one, several = said.get("one", 0), said.get("several", 0)
+            return one >= self.min_support and one >= self.min_ratio * several
+        return False
+
+    def without_context(self) -> WordUsage:
+        """These counts with the sentence not weighed (the wording alone decides)."""
+        return WordUsage(self.counts, self.universe, self.sources, self.min_support, self.min_ratio, self.seen,
+                         number=self.number)
+
+    @cached_property
+    def _class_phrases(self) -> dict[str, int]:
+        """How many phrases meant each class: its counts over the one-word (head) wordings."""
+        total: dict[str, int] = {}
+        for wording, by_class in self.counts.items():
+            if " " not in wording:
+                for key, n in by_class.items():
+                    total[key] = total.get(key, 0) + n
+        return total
+
+    def context_factor(self, wording: str, keys: Iterable[str], words: Iterable[str]) -> dict[str, float]:
+        """For each class key, how much the sentence's other ``words`` favour it as the meaning of
+        ``wording`` over the wording's other classes: the product over the words of
+        P(word | class, wording) / P(word | wording), smoothed towards P(word | class) over all the
+        class's wordings, raised to ``context_weight``. 1.0 for every class when nothing is known.
+        The head word of a class's own name is left out: "pot" in "put a knife and a pot ..." names
+        the other phrase, and counting it would make a knife a pot wherever a label mixed the two up
+        (a modifier stays: the "desk" of "the lamp on the desk" is evidence for a ``DeskLamp``)."""
+        keys = list(keys)
+        by_class = self.context.get(wording)
+        counts = self.counts.get(wording, {})
+        if not by_class or not self.context_weight or len(keys) < 2:
+            return {key: 1.0 for key in keys}
+        said = sum(counts.values())
+        logs = dict.fromkeys(keys, 0.0)
+        named = {key.split("_")[-1] for key in keys}
+        for word in words:
+            if word in named:
+                continue       # "a knife and a pot": a word naming a class there is another phrase's, no evidence
+            together = sum(c.get(word, 0) for c in by_class.values())
+            if not together:
+                continue                                  # a word never said with this wording
+            p_word = (together + CONTEXT_PRIOR * 0.01) / (said + CONTEXT_PRIOR)
+            for key in keys:
+                n = counts.get(key, 0)
+                overall = (self.class_context.get(key, {}).get(word, 0) + 0.1) / (self._class_phrases.get(key, 0) + 1)
+                p = (by_class.get(key, {}).get(word, 0) + CONTEXT_PRIOR * overall) / (n + CONTEXT_PRIOR)
+                logs[key] += math.log(p) - math.log(p_word)
+        return {key: math.exp(self.context_weight * v) for key, v in logs.items()}
 
     @cached_property
     def _meant(self) -> frozenset[str]:
@@ -104,11 +212,13 @@ class WordUsage:
         return cls is not None and class_key(cls) in self._meant
 
     def choose(self, lemmas: tuple[str, ...], present: Mapping[str, str], rule: str | None,
-               scene: bool = False) -> str | None:
+               scene: bool = False, context: Iterable[str] = ()) -> str | None:
         """The class meant by a phrase whose words up to the head are ``lemmas``, among ``present``
         (class key → the vocabulary's spelling), given what the rules found (``rule``, or None).
         ``scene``: the present classes are those of one scene (compare rates, see :attr:`seen`);
-        otherwise any (compare counts: how often each is meant, wherever).
+        otherwise any (compare counts: how often each is meant, wherever). ``context``: the other
+        words of the sentence (:func:`context_words`), which weigh each class by
+        :meth:`context_factor`.
 
         The longest wording with support decides: the last modifier and the head, else the head. A
         wording shorter than the class name the rules matched in the phrase ("coffee table" →
@@ -133,6 +243,9 @@ class WordUsage:
                 return rule                               # the rules matched more of the phrase
             wording = " ".join(lemmas[-size:])
             scored = self._scored(wording, seen) if scene else [(float(n), key) for n, key in seen]
+            if context and self.context:
+                factor = self.context_factor(wording, (key for _, key in scored), set(context) - set(lemmas))
+                scored = [(s * factor[key], key) for s, key in scored]
             total = sum(s for s, _ in scored)
             s_best, best = max(scored, key=lambda s: (s[0], s[1] == rule_key))
             s_rule = next((s for s, key in scored if key == rule_key), 0.0)
@@ -183,11 +296,40 @@ def _table(data: Any, where: Where) -> WordUsage:
                 and n > 0 for c, n in by_class.items()):
             raise SealError(f"seen {wording!r}: expected {{class of \"classes\": positive count}}", where)
         seen[" ".join(str(wording).lower().split())] = {class_key(c): n for c, n in by_class.items()}
-    return WordUsage(counts, universe, (str(data.get("source", where.file)),), seen=seen)
+    context: dict[str, dict[str, dict[str, int]]] = {}
+    raw = data.get("context", {})
+    if not isinstance(raw, dict):
+        raise SealError("\"context\" must map each wording to {class: {word: count}}", where)
+    for wording, by_class in raw.items():
+        if not isinstance(by_class, dict) or not all(
+                isinstance(c, str) and class_key(c) in universe and _word_counts(t) for c, t in by_class.items()):
+            raise SealError(f"context {wording!r}: expected {{class of \"classes\": {{word: positive count}}}}",
+                            where)
+        context[" ".join(str(wording).lower().split())] = {class_key(c): dict(t) for c, t in by_class.items()}
+    class_context: dict[str, dict[str, int]] = {}
+    raw = data.get("class_context", {})
+    if not isinstance(raw, dict) or not all(
+            isinstance(c, str) and class_key(c) in universe and _word_counts(t) for c, t in raw.items()):
+        raise SealError("\"class_context\" must map each class of \"classes\" to {word: positive count}", where)
+    class_context = {class_key(c): dict(t) for c, t in raw.items()}
+    raw = data.get("number", {})
+    if not isinstance(raw, dict) or not all(
+            _word_counts(by) and set(by) <= {"one", "several"} for by in raw.values()):
+        raise SealError("\"number\" must map each wording to {\"one\": count, \"several\": count}", where)
+    number = {" ".join(str(w).lower().split()): dict(by) for w, by in raw.items()}
+    return WordUsage(counts, universe, (str(data.get("source", where.file)),), seen=seen, context=context,
+                     class_context=class_context, number=number)
+
+
+def _word_counts(table: Any) -> bool:
+    return isinstance(table, dict) and all(
+        isinstance(w, str) and isinstance(n, int) and not isinstance(n, bool) and n > 0 for w, n in table.items())
 
 
 def load_word_usage(paths: Iterable[str | Path]) -> WordUsage:
     """The word-class tables in these files (or folders of ``*.json``), their counts added."""
+    import json
+
     from seal_cli.fileio import read_text
 
     usage = WordUsage()

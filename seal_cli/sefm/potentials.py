@@ -162,8 +162,9 @@ class GridKernelSums(KernelSums):
         """Lower-left cell indices and fractional offsets of points (clamped into the grid)."""
         u = (xy[..., 0] - self.origin[0]) * (1 / self.cell)
         v = (xy[..., 1] - self.origin[1]) * (1 / self.cell)
-        np.clip(u, 0, self.shape[0] - 1.0001, out=u)
-        np.clip(v, 0, self.shape[1] - 1.0001, out=v)
+        for w, top in ((u, self.shape[0] - 1.0001), (v, self.shape[1] - 1.0001)):  # np.clip, without its wrapper
+            np.maximum(w, 0, out=w)
+            np.minimum(w, top, out=w)
         i, j = u.astype(np.intp), v.astype(np.intp)  # truncation is floor: u, v >= 0
         return i, j, u - i, v - j
 
@@ -173,10 +174,18 @@ class GridKernelSums(KernelSums):
         (count, P); with ``flat``, ``i`` already counts rows across the layers (``layer * nx + i``)."""
         count, nx, ny = shape
         layers = 0 if flat else np.arange(count).reshape(-1, *([1] * (i.ndim - 1))) * nx
-        base = (layers + i) * ny + j
-        index = np.concatenate([base.ravel(), (base + ny).ravel(), (base + 1).ravel(), (base + ny + 1).ravel()])
-        share = np.concatenate([((1 - fu) * (1 - fv) * weights).ravel(), (fu * (1 - fv) * weights).ravel(),
-                                ((1 - fu) * fv * weights).ravel(), (fu * fv * weights).ravel()])
+        base = ((layers + i) * ny + j).ravel()
+        n = len(base)
+        index = np.empty(4 * n, base.dtype)  # the four corners' cells and shares, one after the other
+        np.add(base, ny, out=index[n:2 * n])
+        np.add(base, 1, out=index[2 * n:3 * n])
+        np.add(base, ny + 1, out=index[3 * n:])
+        index[:n] = base
+        gu, gv = 1 - fu, 1 - fv
+        share = np.empty(4 * n, np.result_type(fu, fv, weights))
+        spread = np.broadcast_to(weights, gu.shape).ravel()
+        for k, (a, b) in enumerate(((gu, gv), (fu, gv), (gu, fv), (fu, fv))):
+            np.multiply(np.multiply(a, b).ravel(), spread, out=share[k * n:(k + 1) * n])
         mass = np.bincount(index, share, minlength=count * nx * ny)
         return np.asarray(mass, dtype=self.grids.dtype).reshape(shape)
 
@@ -244,14 +253,15 @@ class GridKernelSums(KernelSums):
         sources = np.asarray(sources, np.intp)
         coef = (np.asarray(weights) * self.factor[np.maximum(sources, 0)] * (sources >= 0)).astype(dtype)
         flat = self.grids.reshape(-1)
+        right, up, both = flat[ny:], flat[1:], flat[ny + 1:]  # a corner's neighbours at the same index
         out = np.zeros(base.shape, dtype)
         for s in range(sources.shape[1]):
             live = np.flatnonzero(sources[:, s] >= 0)
             every = len(live) == len(base)
             at = base if every else base[live]
             corner = at + (sources[live, s] * (nx * ny))[:, None]
-            a, b = np.take(flat, corner), np.take(flat, corner + ny)
-            c, d = np.take(flat, corner + 1), np.take(flat, corner + ny + 1)
+            a, b = np.take(flat, corner), np.take(right, corner)
+            c, d = np.take(up, corner), np.take(both, corner)
             u, v = (fu, fv) if every else (fu[live], fv[live])
             a += (b - a) * u                    # along x at the lower row of cells
             c += (d - c) * u                    # ... and at the upper row

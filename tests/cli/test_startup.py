@@ -6,6 +6,7 @@ import json
 import subprocess
 import sys
 
+import pytest
 from typer.testing import CliRunner
 
 from seal_cli.cli import app
@@ -42,3 +43,61 @@ def test_bench_startup_prints_the_ratios() -> None:
 def test_bench_startup_refuses_zero_runs() -> None:
     result = runner.invoke(app, ["bench", "startup", "--runs", "0"])
     assert result.exit_code == 2
+
+
+# -- seal parse TEXT without typer, and one command module per command line ------------------------
+def _seal(*argv: str, env: dict[str, str] | None = None) -> subprocess.CompletedProcess[str]:
+    code = ("import sys\nfrom seal_cli.__main__ import main\ntry:\n    main()\nfinally:\n    print(sorted(m for m in "
+            "sys.modules if m == 'typer' or m.endswith('_cmd')), file=sys.stderr)")
+    return subprocess.run([sys.executable, "-c", code, *argv], capture_output=True, text=True, env=env)
+
+
+def _by_typer(*argv: str) -> tuple[int, str, str]:
+    result = CliRunner().invoke(app, list(argv))
+    return result.exit_code, result.stdout, result.stderr
+
+
+@pytest.mark.parametrize("argv", [["parse", "bring me a cup from the kitchen"], ["parse", "--json", "stir the cup"],
+                                  ["parse", "stir the cup", "--json"], ["parse", "juggle the cup"],
+                                  ["parse", "--json", "juggle the cup"], ["parse", ""], ["parse", "x [bold]y[/bold]"]])
+def test_plain_parse_is_answered_without_typer_as_typer_answers_it(argv: list[str]) -> None:
+    from seal_cli.cli import plain_parse
+
+    assert plain_parse(argv) is not None
+    run = _seal(*argv)
+    *printed, modules = run.stderr.splitlines() or [""]
+    code, stdout, stderr = _by_typer(*argv)
+    assert (run.returncode, run.stdout, "\n".join(printed) + ("\n" if printed else "")) == (code, stdout, stderr)
+    assert "Traceback" not in run.stderr
+
+
+def test_anything_but_plain_parse_goes_to_typer_with_its_command_module_only() -> None:
+    from seal_cli.cli import plain_parse
+
+    for argv in (["parse"], ["parse", "-f", "x"], ["parse", "--help"], ["parse", "a", "b"], ["parse", "--json"],
+                 ["parse", "--json", "--json", "a"], ["plan", "a"], ["--help"]):
+        assert plain_parse(argv) is None, argv
+    run = _seal("parse", "--json", "--vocabulary", "missing.yaml", "stir the cup")
+    assert run.returncode == 1 and run.stderr.splitlines()[-1] == "['seal_cli.cli.parse_cmd', 'typer']"
+    assert run.stderr.startswith("error: ")
+
+
+def test_the_plain_parse_imports_neither_typer_nor_any_command_module() -> None:
+    run = _seal("parse", "--json", "stir the cup")
+    assert run.returncode == 0 and run.stderr.splitlines()[-1] == "[]"
+    assert json.loads(run.stdout)["frames"][0]["frame"] == "Stir"
+
+
+def test_each_command_is_found_in_the_module_the_table_names() -> None:
+    from seal_cli.cli import BENCH_HOMES, HOMES, command_modules, register
+    from seal_cli.cli.framework import bench_app
+
+    whole = register()
+    top = {c.name or c.callback.__name__: c.callback.__module__ for c in whole.registered_commands}  # type: ignore
+    bench = {c.name or c.callback.__name__: c.callback.__module__ for c in bench_app.registered_commands}  # type: ignore
+    assert {name: f"seal_cli.cli.{module}" for name, module in HOMES.items()} == top
+    assert {name: f"seal_cli.cli.{module}" for name, module in BENCH_HOMES.items()} == bench
+    assert command_modules(["bench", "perf", "--scale", "large"]) == ["perf_cmd"]
+    assert command_modules(["parse", "x"]) == ["parse_cmd"]
+    assert set(command_modules(["--help"])) == set(command_modules(["bench"])) == set(command_modules(["pars"])) \
+        == set(HOMES.values()) | set(BENCH_HOMES.values())

@@ -98,3 +98,118 @@ def test_the_standard_library_is_read_once_and_is_the_default() -> None:
     assert isinstance(standard_library(), Library)
     assert load_library() == standard_library() == load_library([framelib_dir()])
     assert {"Pick", "Place", "Stir", "Bring"} <= set(standard_library().by_name)
+
+
+# -- the cross-process cache of read libraries ---------------------------------------------------
+@pytest.fixture
+def own_cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    folder = tmp_path / "cache"
+    monkeypatch.setenv("SEAL_CACHE_DIR", str(folder))
+    monkeypatch.delenv("SEAL_NO_CACHE", raising=False)
+    return folder
+
+
+def _reads(monkeypatch: pytest.MonkeyPatch) -> list[int]:
+    """Count the times the files are really read (not served from the cache)."""
+    import seal_cli.frames.reading as reading
+
+    counted: list[int] = []
+    real = reading._read
+
+    def counting(*args: object) -> object:
+        counted.append(1)
+        return real(*args)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(reading, "_read", counting)
+    return counted
+
+
+def test_a_library_is_read_once_and_then_served_from_the_cache(own_cache: Path, monkeypatch: pytest.MonkeyPatch,
+                                                               tmp_path: Path) -> None:
+    reads = _reads(monkeypatch)
+    first = load_library()
+    assert len(reads) == 1 and [p.name for p in own_cache.glob("library-*.pickle")]
+    again = load_library()
+    assert len(reads) == 1
+    assert again == first == read_library([framelib_dir()])[0]
+    assert [u.where for f in again for u in f.lexical_units] == [u.where for f in first for u in f.lexical_units]
+
+
+WHISK_YAML = STIR_YAML.replace("Stir", "Whisk").replace("[stir]", "[whisk]") \
+    .replace("stirred", "whisked")
+"""A frame the standard library lacks, typed in its categories."""
+
+
+def test_a_changed_frame_file_is_read_again(own_cache: Path, monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    folder = tmp_path / "lib"
+    folder.mkdir()
+    (folder / "whisk.yaml").write_text(WHISK_YAML)
+    reads = _reads(monkeypatch)
+    assert load_library([framelib_dir(), folder]).frame("Whisk").lexical_units[0].text == "whisk"
+    # the same size and, on a coarse clock, the same modification time: only the contents tell
+    (folder / "whisk.yaml").write_text(WHISK_YAML.replace("[whisk]", "[froth]"))
+    assert load_library([framelib_dir(), folder]).frame("Whisk").lexical_units[0].text == "froth"
+    assert len(reads) == 2
+    assert load_library([framelib_dir(), folder]).frame("Whisk").lexical_units[0].text == "froth"
+    assert len(reads) == 2
+
+
+def test_a_file_added_to_or_removed_from_a_folder_is_seen(own_cache: Path, tmp_path: Path) -> None:
+    folder = tmp_path / "lib"
+    folder.mkdir()
+    (folder / "whisk.yaml").write_text(WHISK_YAML)
+    standard = len(load_library())
+    assert len(load_library([framelib_dir(), folder])) == standard + 1
+    (folder / "wave.frame").write_text(WAVE_DSL.replace("greet(theme)", "navigate(theme)")
+                                       .replace("greeted(theme)", "waved(theme)"))
+    assert {"Whisk", "Wave"} <= set(load_library([framelib_dir(), folder]).by_name)
+    (folder / "whisk.yaml").unlink()
+    assert "Whisk" not in load_library([framelib_dir(), folder])
+
+
+def test_framelib_libraries_are_cached_apart_and_name_their_files_as_given(own_cache: Path, tmp_path: Path,
+                                                                         monkeypatch: pytest.MonkeyPatch) -> None:
+    (tmp_path / "a").mkdir()
+    (tmp_path / "b").mkdir()
+    (tmp_path / "a" / "lib.yaml").write_text(WHISK_YAML)
+    (tmp_path / "b" / "lib.yaml").write_text(WHISK_YAML.replace("[whisk]", "[froth]"))
+    standard = framelib_dir()
+    monkeypatch.chdir(tmp_path / "a")
+    assert load_library([standard, "lib.yaml"]).frame("Whisk").lexical_units[0].text == "whisk"
+    monkeypatch.chdir(tmp_path / "b")
+    assert load_library([standard, "lib.yaml"]).frame("Whisk").lexical_units[0].text == "froth"  # another file
+    monkeypatch.chdir(tmp_path)
+    whisk = load_library([standard, "a"]).frame("Whisk")
+    assert whisk.lexical_units[0].where.file == str(Path("a") / "lib.yaml")  # named as in this run
+    assert load_library([standard, tmp_path / "a"]).frame("Whisk").lexical_units[0].where.file == \
+        str(tmp_path / "a" / "lib.yaml")
+    assert len(list(own_cache.glob("library-*.pickle"))) == 4
+
+
+def test_a_corrupt_cached_library_is_ignored_and_made_again(own_cache: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    first = load_library()
+    (entry,) = own_cache.glob("library-*.pickle")
+    header, _, payload = entry.read_bytes().partition(b"\n")
+    entry.write_bytes(header + b"\n" + bytes(len(payload)))  # whole, of the right length, but not a pickle
+    reads = _reads(monkeypatch)
+    assert load_library() == first
+    assert len(reads) == 1
+    assert load_library() == first
+    assert len(reads) == 1  # made again, and whole
+
+
+def test_a_library_with_problems_is_not_cached(own_cache: Path, tmp_path: Path) -> None:
+    (tmp_path / "bad.yaml").write_text("frame: Stir\nlexical_units: [stir]\nelements: {theme: {type: nope}}\n")
+    for _ in range(2):
+        with pytest.raises((SealError, SealErrors)):
+            load_library([tmp_path / "bad.yaml"])
+    assert not list(own_cache.glob("library-*"))
+
+
+def test_a_read_only_or_missing_cache_changes_nothing(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    blocked = tmp_path / "a file"
+    blocked.write_text("")
+    monkeypatch.setenv("SEAL_CACHE_DIR", str(blocked / "seal"))
+    assert load_library() == read_library([framelib_dir()])[0]
+    monkeypatch.setenv("SEAL_NO_CACHE", "1")
+    assert load_library() == read_library([framelib_dir()])[0]

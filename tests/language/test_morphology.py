@@ -2,7 +2,12 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
+import pytest
+
 from seal_cli.language.morphology import (
+    _Table,
     gerund_lemma,
     is_adjective,
     is_adverb,
@@ -30,3 +35,33 @@ def test_adjectives_adverbs_and_gradable_words() -> None:
     assert is_adjective("hot") and is_adjective("clean") and not is_adjective("fridge")
     assert is_adverb("together") and not is_adverb("hot")
     assert is_gradable("warm") and not is_gradable("wooden")
+
+
+def test_tables_looked_up_in_the_cache_find_what_the_sorted_lines_do(tmp_path: Path,
+                                                                    monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv("SEAL_CACHE_DIR", str(tmp_path))
+    monkeypatch.delenv("SEAL_NO_CACHE", raising=False)
+    for name in ("lemma_lu.csv.gz", "infl_lu.csv.gz"):
+        cached, memory = _Table(name), _Table(name)
+        lines = memory.lines
+        words = [line.split(",")[0] for line in lines[::97]] + ["", "a", "zzzz", "knive", "café", "\uffff", "a\nb"]
+        assert [cached.entries(w) for w in words] == [memory._entries_in_memory(w) for w in words]
+        assert cached._mapped is not None and cached._lines is None   # looked up in the entry, not in memory
+        assert any(cached.entries(w) for w in words)
+
+
+def test_a_corrupt_or_unwritable_table_cache_falls_back_to_the_sorted_lines(tmp_path: Path,
+                                                                           monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv("SEAL_CACHE_DIR", str(tmp_path))
+    monkeypatch.delenv("SEAL_NO_CACHE", raising=False)
+    _Table("lemma_lu.csv.gz").entries("knives")
+    (entry,) = tmp_path.glob("words-lemma_lu-*.txt")
+    entry.write_bytes(entry.read_bytes()[:-10])            # cut short
+    table = _Table("lemma_lu.csv.gz")
+    assert table.entries("knives") == [["noun", "knife"]]   # made again
+    assert table._mapped is not None
+    blocked = tmp_path / "a file"
+    blocked.write_text("")
+    monkeypatch.setenv("SEAL_CACHE_DIR", str(blocked))
+    table = _Table("lemma_lu.csv.gz")
+    assert table.entries("knives") == [["noun", "knife"]] and table._mapped is None

@@ -18,6 +18,7 @@ from seal_cli.language.wordusage import (
     FORMAT,
     SHIPPED,
     WordUsage,
+    context_words,
     load_word_usage,
     shipped_word_usage,
     unsaid_wording,
@@ -122,6 +123,64 @@ def test_a_part_of_a_thing_is_grounded_by_what_people_mean_by_the_whole() -> Non
     assert counts.meant("ToiletPaper") and not counts.meant("ToiletPaperRoll") and not counts.meant(None)
 
 
+# "cup" alone: 12 cups and 10 mugs; but 9 of the 10 mugs were said with "coffee", 1 of the 12 cups
+CUPS = WordUsage({"cup": {"cup": 12, "mug": 10}}, frozenset({"cup", "mug"}),
+                 context={"cup": {"cup": {"coffee": 1, "sink": 8, "put": 12}, "mug": {"coffee": 9, "put": 10}}},
+                 class_context={"cup": {"coffee": 1, "sink": 8, "put": 12}, "mug": {"coffee": 9, "put": 10}})
+
+
+def test_the_other_words_of_the_sentence_weigh_the_classes() -> None:
+    vocab = Vocabulary.of(["Cup", "Mug"]).with_usage(CUPS)
+    assert vocab.ground_words(["cup"]) == "Cup"                                  # 12 against 10
+    assert vocab.in_context("put the cup in the coffee machine").ground_words(["cup"]) == "Mug"
+    assert vocab.in_context("put the cup in the sink").ground_words(["cup"]) == "Cup"
+    assert vocab.in_context("put the cup on the shelf").ground_words(["cup"]) == "Cup"   # "shelf": never said
+    factor = CUPS.context_factor("cup", ["cup", "mug"], {"coffee"})
+    assert factor["mug"] > 1.0 > factor["cup"]
+    assert CUPS.context_factor("cup", ["cup", "mug"], {"shelf", "unknown"}) == {"cup": 1.0, "mug": 1.0}
+    assert CUPS.context_factor("mug", ["cup", "mug"], {"coffee"}) == {"cup": 1.0, "mug": 1.0}   # no such wording
+    # the weight: 0 ignores the sentence; the table without its context is the wording alone
+    from dataclasses import replace
+    assert vocab.with_usage(replace(CUPS, context_weight=0.0)).in_context("a coffee cup").ground_words(["cup"]) == "Cup"
+    assert vocab.with_usage(CUPS.without_context()).in_context("the coffee cup").ground_words(["cup"]) == "Cup"
+
+
+def test_the_phrase_s_own_words_are_not_its_context() -> None:
+    # "coffee" inside the phrase is the two-word wording's business, not the sentence's
+    vocab = Vocabulary.of(["Cup", "Mug"]).with_usage(CUPS)
+    assert vocab.in_context("put the coffee cup away").ground_words(["coffee", "cup"]) == "Cup"
+    assert vocab.in_context("put the coffee cup away").ground_words(["cup"]) == "Mug"
+
+
+def test_a_vocabulary_in_context_shares_its_indexes() -> None:
+    vocab = Vocabulary.of(["Cup", "Mug", "KitchenSink"]).with_usage(CUPS)
+    assert vocab.ground_words(["sink"]) == "KitchenSink"     # by the head word: builds the indexes
+    made = vocab.in_context("Put two Mugs in the sink!")
+    assert made.context == {"put", "two", "mug", "in", "the", "sink"} == context_words("Put two Mugs in the sink!")
+    assert made._exact is vocab._exact and made._by_word is vocab._by_word
+    assert made == vocab and made.in_context("put two mugs in the sink") is made
+    assert Vocabulary.of(["Cup"]).in_context("a cup").ground_words(["cup"]) == "Cup"   # nothing built before
+
+
+def test_a_parse_is_grounded_in_its_sentence(library: Library) -> None:
+    vocab = Vocabulary.of(["Cup", "Mug", "CoffeeMachine", "Sink"]).with_usage(CUPS)
+    coffee = parse_command("put the cup in the coffee machine", library, vocab)
+    assert coffee.frames[-1].elements["theme"].cls == "Mug"
+    sink = parse_command("put the cup in the sink", library, vocab)
+    assert sink.frames[-1].elements["theme"].cls == "Cup"
+
+
+def test_the_shipped_table_weighs_the_sentence(library: Library) -> None:
+    vocab = Vocabulary.of(["Cup", "Mug", "CoffeeMachine", "SinkBasin", "DiningTable", "CoffeeTable", "Sofa"])
+    assert shipped_word_usage().context["cup"] and shipped_word_usage().class_context["mug"]
+    theme = parse_command("put the cup in the coffee maker", library, vocab).frames[-1].elements["theme"]
+    assert theme.cls == "Mug"
+    goal = parse_command("put the remote on the table by the couch", library, vocab).frames[-1].elements["goal"]
+    assert goal.cls == "CoffeeTable"
+    assert parse_command("put the apple on the table", library, vocab).frames[-1].elements["goal"].cls \
+        == "DiningTable"
+
+
 UNSAID = usage({unsaid_wording("Place", "goal", "toss out"): {"garbage_can": 9},
                 unsaid_wording("Place", "goal", "tuck away"): {"drawer": 5, "cabinet": 4, "shelf": 3}},
                ("garbage_can", "drawer", "cabinet", "shelf", "box"))
@@ -155,6 +214,7 @@ def test_tables_in_a_folder_add_up(tmp_path: Path) -> None:
                                                  "words": {"cup": {"Mug": n}}}))
     merged = load_word_usage([tmp_path])
     assert merged.counts["cup"]["mug"] == 7 and merged.universe == {"mug", "cup"}
+    assert not merged.context
     assert Vocabulary.of(["Cup", "Mug"]).with_usage(merged).ground_words(["cup"]) == "Mug"
 
 
@@ -168,6 +228,21 @@ def test_tables_in_a_folder_add_up(tmp_path: Path) -> None:
     ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "seen": {"cup": {"Cup": 2}}}',
      "seen 'cup': expected"),
     ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "seen": []}', '"seen" must map'),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "context": []}', '"context" must map'),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "context": {"cup": {"Cup": {"a": 1}}}}',
+     "context 'cup': expected"),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "context": {"cup": {"Mug": {"a": 0}}}}',
+     "context 'cup': expected"),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "context": {"cup": {"Mug": [1]}}}',
+     "context 'cup': expected"),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "class_context": {"Mug": {"a": true}}}',
+     '"class_context" must map'),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "class_context": {"Cup": {}}}',
+     '"class_context" must map'),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "number": {"key": {"many": 3}}}',
+     '"number" must map'),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "number": {"key": {"one": -1}}}',
+     '"number" must map'),
 ])
 def test_bad_tables_are_clear_errors(tmp_path: Path, content: str, words: str) -> None:
     path = tmp_path / "bad.json"
@@ -210,3 +285,41 @@ def test_the_build_script_names_missing_data(tmp_path: Path) -> None:
     run = subprocess.run([sys.executable, str(ROOT / "scripts" / "build_word_classes.py"), "--data", str(tmp_path)],
                          capture_output=True, text=True)
     assert run.returncode == 1 and "goals_train.tsv: no such file" in run.stderr and "Traceback" not in run.stderr
+
+
+def test_context_tables_in_a_folder_add_up(tmp_path: Path) -> None:
+    for name, n in (("a.json", 3), ("b.json", 4)):
+        (tmp_path / name).write_text(json.dumps({
+            "format": FORMAT, "classes": ["Mug", "Cup"], "words": {"cup": {"Mug": n, "Cup": 1}},
+            "context": {"cup": {"Mug": {"coffee": n}, "Cup": {"sink": 1}}}, "class_context": {"Mug": {"coffee": n}}}))
+    merged = load_word_usage([tmp_path])
+    assert merged.context["cup"]["mug"]["coffee"] == 7 and merged.context["cup"]["cup"]["sink"] == 2
+    assert merged.class_context["mug"]["coffee"] == 7
+
+
+NUMBER = WordUsage({"key": {"key_chain": 30}, "pencil": {"pencil": 20}}, frozenset({"key_chain", "pencil"}),
+                   number={"key": {"one": 25, "several": 2}, "pencil": {"several": 12, "one": 1},
+                           "car key": {"several": 6}, "spoon": {"one": 4}})
+
+
+def test_a_plural_names_one_thing_where_people_meant_one(library: Library) -> None:
+    assert NUMBER.names_one(("key",)) and NUMBER.names_one(("red", "key"))       # the head's wording
+    assert not NUMBER.names_one(("pencil",))                                      # several pencils
+    assert not NUMBER.names_one(("car", "key"))                                   # the pair's wording decides
+    assert not NUMBER.names_one(("spoon",)) and not RULES.names_one(("key",))     # too few; the rules alone
+    vocab = Vocabulary.of(["KeyChain", "Pencil", "Sofa"]).with_usage(NUMBER)
+    keys = parse_command("put the keys on the sofa", library, vocab).frames[-1].elements["theme"]
+    assert (keys.cls, keys.plural, "number" in keys.to_json()) == ("KeyChain", False, False)
+    pencils = parse_command("put the pencils on the sofa", library, vocab).frames[-1].elements["theme"]
+    assert pencils.plural and pencils.to_json()["number"] == "plural"
+    assert parse_command("put two keys on the sofa", library, vocab).frames[-1].elements["theme"].quantity == 2
+    rules = parse_command("put the keys on the sofa", library, vocab.with_usage(RULES))
+    assert rules.frames[-1].elements["theme"].plural
+    # "them" still finds the keys
+    taken = parse_command("pick up the keys and put them on the sofa", library, vocab)
+    assert taken.resolve(taken.frames[-1].elements["theme"]).cls == "KeyChain"
+
+
+def test_the_shipped_table_says_the_keys_are_one_thing() -> None:
+    shipped = shipped_word_usage()
+    assert shipped.names_one(("key",)) and not shipped.names_one(("pencil",))

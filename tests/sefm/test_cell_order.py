@@ -59,3 +59,15 @@ def test_prior_draws_give_every_part_of_a_room_its_share(rooms: Map) -> None:
         west = X[X[:, 0] < 4]
         counts.append(int(np.sum((west[:, 0] < 2) & (west[:, 1] < 2))))
     assert all(abs(c - 12.5) <= 2.6 for c in counts), counts
+
+
+@pytest.mark.parametrize("shape", [(5, 300), (1, 7), (3, 1), (40, 1100), (2, 0), (9,)])
+def test_the_order_is_exactly_a_stable_sort_of_the_ranks(rooms: Map, shape: tuple[int, ...]) -> None:
+    rng = np.random.default_rng(3)
+    ranks = cell_order.rank(rooms)
+    cells = rng.integers(-1, len(ranks), shape)
+    cells[..., : shape[-1] // 3] = cells[..., :1]           # many ties, of a cell and of off free space
+    key = np.where(cells >= 0, ranks[np.maximum(cells, 0)], -1)
+    order = cell_order.order_of_cells(rooms, cells)
+    assert order.dtype == np.intp
+    assert np.array_equal(order, np.argsort(key, axis=-1, kind="stable"))

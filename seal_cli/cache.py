@@ -1,0 +1,123 @@
+"""A cross-process cache of what seal derives from files: the read frame library, the word tables.
+
+``seal parse`` starts many times a minute from scripts, and most of its start-up went into
+work whose result only changes when a file does: reading and checking the frame library, and
+decompressing and sorting lemminflect's word tables. Such a result is kept as one *entry*, a file
+in the user's cache folder (``$XDG_CACHE_HOME/seal``, else ``~/.cache/seal``; ``SEAL_CACHE_DIR``
+names another; ``SEAL_NO_CACHE=1`` turns the cache off):
+
+    entry file:  ``seal-cache 1 <stamp> <payload length>\\n`` then the payload's bytes
+
+The *stamp* is a digest of everything the result was made from (the files' contents and names,
+the package's version, the code that made it): an entry whose stamp differs is stale, and one
+whose header or length is wrong is corrupt; either is ignored and made again. Entries are written
+whole or not at all (a temporary file renamed onto the entry), so concurrent processes only ever
+see a complete one. The cache is never required: a folder that cannot be made or written, or an
+entry that cannot be read, costs the time of making the result, never an error. Entries are read
+only from the user's own cache folder (the same trust as the files they were made from).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import mmap
+import os
+from pathlib import Path
+
+__all__ = ["digest", "folder", "read", "read_mapped", "write"]
+
+MAGIC = b"seal-cache 1 "
+"""The start of every entry's header (the number is the format's version)."""
+
+
+def folder() -> Path | None:
+    """The cache folder, or None when the cache is turned off (``SEAL_NO_CACHE`` set and not ``0``)."""
+    if os.environ.get("SEAL_NO_CACHE", "0") not in ("", "0"):
+        return None
+    chosen = os.environ.get("SEAL_CACHE_DIR")
+    if chosen:
+        return Path(chosen)
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return Path(base) / "seal"
+
+
+def digest(*parts: bytes) -> str:
+    """A hex digest of the parts (each length-prefixed, so that no two sequences of parts collide)."""
+    import hashlib
+
+    h = hashlib.blake2b(digest_size=20)
+    for part in parts:
+        h.update(len(part).to_bytes(8, "little"))
+        h.update(part)
+    return h.hexdigest()
+
+
+def _header(stamp: str, length: int) -> bytes:
+    return MAGIC + f"{stamp} {length}\n".encode("ascii")
+
+
+def _payload_start(data: bytes | mmap.mmap, stamp: str) -> int | None:
+    """Where the payload starts if ``data`` is a whole entry of this stamp, else None."""
+    end = data.find(b"\n", 0, 128)
+    if end < 0:
+        return None
+    head = bytes(data[:end + 1])
+    if not head.startswith(MAGIC + stamp.encode("ascii") + b" "):
+        return None
+    try:
+        length = int(head[len(MAGIC) + len(stamp) + 1:-1])
+    except ValueError:
+        return None
+    return end + 1 if len(data) - (end + 1) == length else None
+
+
+def read(name: str, stamp: str) -> bytes | None:
+    """The payload of the entry ``name`` if it is whole and of this stamp; None otherwise (none,
+    stale, corrupt, unreadable or the cache off)."""
+    where = folder()
+    if where is None:
+        return None
+    try:
+        data = (where / name).read_bytes()
+    except (OSError, ValueError):
+        return None
+    start = _payload_start(data, stamp)
+    return None if start is None else data[start:]
+
+
+def read_mapped(name: str, stamp: str) -> tuple[mmap.mmap, int] | None:
+    """The entry ``name`` mapped into memory (read only) and where its payload starts, if it is whole
+    and of this stamp; None otherwise. For large payloads looked up in place, never read whole."""
+    where = folder()
+    if where is None:
+        return None
+    try:
+        with open(where / name, "rb") as handle:
+            mapped = mmap.mmap(handle.fileno(), 0, access=mmap.ACCESS_READ)
+    except (OSError, ValueError):  # no such entry, or an empty file (mmap refuses length 0)
+        return None
+    start = _payload_start(mapped, stamp)
+    if start is None:
+        mapped.close()
+        return None
+    return mapped, start
+
+
+def write(name: str, stamp: str, payload: bytes) -> bool:
+    """Store ``payload`` as the entry ``name`` of this stamp, atomically; whether it was stored (a
+    cache that is off, or a folder that cannot be written, is not an error)."""
+    where = folder()
+    if where is None:
+        return False
+    tmp = where / f".{name}.{os.getpid()}.tmp"
+    try:
+        where.mkdir(parents=True, exist_ok=True)
+        with open(tmp, "wb") as handle:
+            handle.write(_header(stamp, len(payload)))
+            handle.write(payload)
+        os.replace(tmp, where / name)
+    except OSError:
+        with contextlib.suppress(OSError):
+            tmp.unlink()
+        return False
+    return True

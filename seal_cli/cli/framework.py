@@ -1,0 +1,71 @@
+"""The command line's framework: typer's app, the decorator that registers a command on it, and the
+options several commands share.
+
+Imported by the command modules (through :mod:`seal_cli.cli`), never by ``seal --version`` or
+``seal parse TEXT``, which are answered without typer (:func:`seal_cli.cli.main`).
+"""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Callable
+from typing import Any, TypeVar
+
+import typer
+
+from seal_cli import __version__
+from seal_cli.cli.output import run_command
+
+__all__ = ["FramelibOption", "JsonOption", "app", "bench_app", "command"]
+
+app = typer.Typer(
+    name="seal",
+    help="SEAL: parse robot commands into semantic frames, plan them, and localise where each can be executed.",
+    add_completion=False,
+    no_args_is_help=True,
+    pretty_exceptions_enable=False,
+    context_settings={"help_option_names": ["-h", "--help"]},
+)
+
+bench_app = typer.Typer(help="Benchmarks: parsing corpora, the task suite with baselines, belief-update speed.",
+                        no_args_is_help=True)
+app.add_typer(bench_app, name="bench")
+
+
+F = TypeVar("F", bound=Callable[..., Any])
+
+
+def command(*args: Any, on: typer.Typer | None = None, **kwargs: Any) -> Callable[[F], F]:
+    """``@app.command`` (or a command of the sub-app ``on``, e.g. ``bench_app``) that turns
+    SealError into a message on stderr and exit code 1 (and the other failures
+    :func:`~seal_cli.cli.output.run_command` names into theirs)."""
+
+    def decorate(function: F) -> F:
+        @functools.wraps(function)
+        def run(*a: Any, **kw: Any) -> None:
+            code = run_command(lambda: function(*a, **kw))
+            if code:
+                raise typer.Exit(code)
+
+        (on or app).command(*args, **kwargs)(run)
+        return function
+
+    return decorate
+
+
+FramelibOption = typer.Option(None, "--framelib", help="Frame library file or folder (repeatable); "
+                              "default: the shipped standard library. +PATH adds to the standard library.",
+                              show_default=False)
+JsonOption = typer.Option(False, "--json", help="Machine-readable output on stdout.")
+
+
+def _version(value: bool) -> None:
+    if value:
+        typer.echo(f"seal {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _root(version: bool = typer.Option(False, "--version", callback=_version, is_eager=True,
+                                       help="Print the version and exit.")) -> None:
+    """SEAL: Semantic Frame Execution And Localization."""

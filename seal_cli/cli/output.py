@@ -1,0 +1,115 @@
+"""What every command prints through: rich consoles on stdout and stderr made when first used, JSON
+on stdout, progress bars, and the failures every command shares turned into a message and an exit code.
+
+Imports no command-line framework (typer): ``seal parse TEXT`` prints through it without one
+(:func:`seal_cli.cli.main`).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import sys
+from collections.abc import Callable, Iterator
+from typing import TYPE_CHECKING, Any
+
+from seal_cli.errors import SealError, SealErrors
+
+if TYPE_CHECKING:
+    from rich.console import Console
+
+__all__ = ["PIPE_WIDTH", "LazyConsole", "emit_json", "err", "out", "progress_bar", "report", "run_command"]
+
+PIPE_WIDTH = 200
+"""Columns of the output when it is not a terminal (a file, a pipe) and ``COLUMNS`` is not set."""
+
+
+class LazyConsole:
+    """A rich ``Console``, made when first used: importing rich costs more than ``seal --version`` and
+    ``seal parse --json`` do in all, and they never print through it."""
+
+    def __init__(self, **options: Any) -> None:
+        self._options = options
+        self._console: Console | None = None
+
+    @property
+    def console(self) -> Console:
+        """The console itself (for what wants one: a ``rich.progress.Progress``)."""
+        if self._console is None:
+            from rich.console import Console
+
+            console = Console(**self._options)
+            if not console.is_terminal and "COLUMNS" not in os.environ:
+                console.width = PIPE_WIDTH  # rich's 80 columns would cut the tables of a redirected run
+            self._console = console
+        return self._console
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self.console, name)
+
+
+out = LazyConsole(soft_wrap=True, highlight=False)
+err = LazyConsole(stderr=True, soft_wrap=True, highlight=False)
+
+def report(error: SealError) -> None:
+    """Print a SealError (or each of several) on stderr, plainly."""
+    problems = error.problems if isinstance(error, SealErrors) else [error]
+    for problem in problems:
+        err.print(f"error: {problem}", markup=False)
+
+
+def run_command(function: Callable[[], int | None]) -> int:
+    """Run a command's body; its exit code. The failures every command shares become one message on
+    stderr and an exit code: a SealError 1, an interrupt 130, a closed pipe 0 (the reader has what it
+    wanted), memory or nesting that runs out 1; our temporaries of outputs never written are removed."""
+    from seal_cli.fileio import clean_up_on_signals, remove_temporaries
+
+    clean_up_on_signals()
+    try:
+        code = function()
+        return code if isinstance(code, int) else 0
+    except SealError as error:
+        report(error)
+        return 1
+    except KeyboardInterrupt:
+        err.print("interrupted")
+        return 130
+    except BrokenPipeError:
+        return 0
+    except MemoryError:
+        err.print("error: out of memory: ask for less (fewer particles, steps, episodes or a smaller "
+                  "map)", markup=False)
+        return 1
+    except RecursionError:
+        err.print("error: the input is nested too deeply for seal to handle", markup=False)
+        return 1
+    finally:
+        remove_temporaries()  # of outputs planned but never written: the command failed first
+
+
+@contextlib.contextmanager
+def progress_bar(what: str, total: int | None = None) -> Iterator[Callable[[int, int], None]]:
+    """``advance(done, total)`` for a bar with the count, the time taken and an estimate of the time
+    left: on stderr, and only when stderr is a terminal (nothing in a pipe, a file or a test)."""
+    from rich.progress import (
+        BarColumn,
+        MofNCompleteColumn,
+        Progress,
+        TextColumn,
+        TimeElapsedColumn,
+        TimeRemainingColumn,
+    )
+
+    with Progress(TextColumn(what), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), TextColumn("left"),
+                  TimeRemainingColumn(), console=err.console, transient=True,
+                  disable=not err.is_terminal) as progress:
+        bar = progress.add_task(what, total=total)
+        yield lambda done, total: progress.update(bar, completed=done, total=total)
+
+
+def emit_json(data: Any) -> None:
+    """One JSON document on stdout."""
+    import json
+
+    sys.stdout.write(json.dumps(data, ensure_ascii=False) + "\n")
+    sys.stdout.flush()
