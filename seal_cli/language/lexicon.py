@@ -114,8 +114,8 @@ class Lexicon:
         for unit in candidates:
             n = len(unit)
             if i + n <= len(words) and all(words[i + k].lower == unit[k] for k in range(1, n)):
-                if i + n < len(words) and words[i + n].lower in ("of", "'s"):
-                    return None                  # "slice of apple", "the light's": a noun
+                if i + n < len(words) and words[i + n].lower in ("of", "'s") and unit[-1] not in ("many", "much"):
+                    return None                  # "slice of apple", "the light's": a noun ("how many of": a part)
                 if n > 1 or not self._split(words, i, stop, candidates):
                     return " ".join(unit), n, None
                 break

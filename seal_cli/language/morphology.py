@@ -205,6 +205,12 @@ def is_gradable(word: str) -> bool:
     return any(entry[0] == "adj" and len(entry) > 1 and entry[1] for entry in _LEMMAS.entries(word.lower()))
 
 
+def in_verb_tables(word: str) -> bool:
+    """Whether lemminflect's shipped tables list the word as a verb with its past forms (so its
+    participles need no model: :func:`participles` reads them there)."""
+    return any(entry[0] == "verb" and len(entry) >= 3 for entry in _LEMMAS.entries(word.lower()))
+
+
 @lru_cache(maxsize=4096)
 def participles(verb: str) -> frozenset[str]:
     """Past forms and past participles of a verb: ``light`` → {lit, lighted}, ``cut`` → {cut}."""

@@ -104,7 +104,8 @@ class Roles:
             return None
         previous: NP | None = clause.objects[-1] if clause.objects else None
         has_to = any(isinstance(x, PP) and x.prep in TO for x in clause.items)
-        for item in clause.items:
+        items = clause.items
+        for at, item in enumerate(items):
             if isinstance(item, NP):
                 if strict:
                     return None
@@ -116,9 +117,12 @@ class Roles:
                 roles["theme"] = item.np          # "... for a can opener", "look in the closet for my scarf"
                 previous = item.np
                 continue
-            role = None if item.describes else self.role_for(frame, item, previous, roles, has_to)
-            if item.after_relative and "recipient" in roles:
+            nxt = items[at + 1] if at + 1 < len(items) else None
+            place_next = isinstance(nxt, PP) and nxt.prep in LOCATIVE and not nxt.describes
+            role = None if item.describes else self.role_for(frame, item, previous, roles, has_to, place_next)
+            if item.after_relative and "recipient" in roles and item.prep not in FROM:
                 role = None                       # "bring me the book I left on the sofa": where it was left
+                #                                   ("something to eat *from the kitchen*": where to take it from)
             if role is None and previous is None and first == "theme" and first not in roles and \
                     item.prep in ("on", "at") and not item.lead and not item.describes and \
                     not (self.frames and self.needs_in_hand(frame)):
@@ -150,10 +154,10 @@ class Roles:
         return any(u.text == wanted for u in frame.lexical_units)
 
     def role_for(self, frame: Frame, pp: PP, previous: NP | None, roles: Mapping[str, Any],
-                 has_to: bool = False) -> str | None:
+                 has_to: bool = False, place_next: bool = False) -> str | None:
         """The element a prepositional phrase fills in this frame, or None (it describes a noun): the
         first role of :data:`PREPOSITION_ROLES` the frame has and the clause has not filled, after the
-        rules below."""
+        rules below. ``place_next``: another locative phrase follows this one."""
         sense = PREPOSITION_ROLES.get(pp.prep)
         if sense is None:
             return None
@@ -174,6 +178,10 @@ class Roles:
                 and self.types.is_person(frame.elements[0].type)))
             if person_before and "ground" not in have:
                 return None              # "bring it to Adel *in the bathroom*": where she is
+            if previous is not None and previous.kind == "person" and place_next and "ground" not in roles and \
+                    previous.head is not None and previous.head.tag != "NAME" and \
+                    np.head_text not in self.types.taxonomy.known_classes:
+                return None              # "greet the person *in the white jacket* in the bedroom": the last is where
             if previous is not None and previous.contents and np.pronoun in ("it", "them"):
                 return None              # "a pan with a spoon in it"
             theme_type = frame.elements[0].type if frame.elements else None

@@ -47,6 +47,7 @@ from seal_cli.language.english import (
     SUBJECTS,
     SUBORDINATORS,
     THIRD_PERSON_SUBJECTS,
+    TIME_ASKED,
     TIME_UNITS,
     TIME_WORDS,
     TITLES,
@@ -83,7 +84,7 @@ def first_words(phrases: Iterable[str]) -> frozenset[str]:
 
 
 SUB_FIRST = first_words(SUBORDINATORS)
-FORMULA_FIRST = first_words(POLITE_FORMULAE)
+FORMULA_FIRST = first_words(POLITE_FORMULAE) | TIME_ASKED[0]
 TIME_FIRST = first_words(TIME_WORDS)
 SEP_FIRST = first_words(SEPARATOR_WORDS)
 LEAD_FIRST = SUB_FIRST | SEP_FIRST | {",", ";", ":", "start", "begin", "finish", "end", "continue", "take", "have",
@@ -112,6 +113,22 @@ def match_phrase(words: Sequence[Word], i: int, table: Iterable[str] | Mapping[s
     if best == 0 and first in table:
         best = 1
     return best
+
+
+_DISLOCATED_WORDS = 12
+"""How far a phrase said first may run before its comma ("the dice on the sofa in the living room,")."""
+
+
+def time_asked(words: Sequence[Word], i: int) -> int:
+    """How many words "when you get a sec" (``english.TIME_ASKED``) takes at ``i`` (0: none)."""
+    subordinators, verbs, quantity, measures = TIME_ASKED
+    if i + 3 >= len(words) or words[i].lower not in subordinators or words[i + 1].lower != "you" or \
+            words[i + 2].lower not in verbs:
+        return 0
+    k = i + 3
+    while k < len(words) and words[k].lower in quantity:
+        k += 1
+    return k + 1 - i if k < len(words) and words[k].lower in measures else 0
 
 
 def merge(words: Sequence[Word], i: int, n: int, tag: str, info: object = None) -> Word:
@@ -263,7 +280,7 @@ class State:
         words = self.words
         if words[i].lower not in FORMULA_FIRST:
             return 0
-        n = match_phrase(words, i, POLITE_FORMULAE)
+        n = match_phrase(words, i, POLITE_FORMULAE) or time_asked(words, i)
         if not n or i + n == len(words):
             return n
         nxt = words[i + n].lower
@@ -461,6 +478,33 @@ class State:
             return None                                  # no sentence holds a command: the error says so
         return self._aside(i, end + 1 - i, (words[i].start, words[end].end))
 
+    def dislocated(self, i: int) -> Match | None:
+        """A noun phrase said first, then a comma and a command that takes it up by a pronoun ("*The sponge
+        on the cabinet,* bring it to me", "*That dice on the sofa,* could you bring it to me?"): the phrase is
+        a remark, which the pronoun names (:meth:`~seal_cli.language.reference.Reference.mentioned`)."""
+        words = self.words
+        if self.out and not (self.out[-1].tag == "SEP" and self.out[-1].lower in END_MARKS) or \
+                words[i].lower not in DETERMINERS and words[i].lower not in POSSESSIVES:
+            return None
+        comma = -1
+        for k in range(i + 1, min(len(words), i + _DISLOCATED_WORDS)):
+            low = words[k].lower
+            if low in END_MARKS or low in (";", ":", "and", "then"):
+                return None
+            if low == ",":
+                comma = k
+                break
+            if self.verb_at(k) is not None and words[k - 1].lower not in DETERMINERS:
+                return None                              # a clause, not a phrase
+        if comma < 0 or not self.verb_after(comma + 1):
+            return None
+        for k in range(comma + 1, len(words)):
+            if words[k].lower in END_MARKS:
+                break
+            if words[k].lower in ("it", "them", "him", "her", "one"):
+                return self._aside(i, comma + 1 - i, (words[i].start, words[comma - 1].end))
+        return None
+
     def _aside(self, i: int, n: int, *remarks: tuple[int, int]) -> Match:
         return Match(n, (merge(self.words, i, n, Tag.POLITE),), remarks=remarks)
 
@@ -616,19 +660,45 @@ class State:
         sub = " ".join(w.lower for w in words[i:i + n])
         j = i + n
         subject = words[j].lower
+        if subject in ("there", "here") and self._clause_follows(j + 1):
+            return "then", j + 1, "then"            # "go to the kitchen and *once there* find a cup"
         if subject in ("you", "you've"):           # "before *we* open": the people's doing, a condition
             k = j + 1
             if subject == "you" and k < len(words) and words[k].lower in ("have", "had"):
                 k += 1
+            arrived = self._arrival_end(k)
+            if arrived:
+                return "then", arrived, "then"      # "when you get there", "once you arrive,": arrived where we went
             if k < len(words) and (self.verb_at(k) is not None or self.verb_after(k)):
                 return "clause", k, sub
         state = j + 1 if subject in ("you're", "we're", "you've", "we've") else \
             j + 2 if subject in ("you", "we") and j + 1 < len(words) and words[j + 1].lower in ("are", "have") \
             else -1
         if 0 <= state < len(words) and words[state].lower in STATES_DONE:
+            if self._clause_follows(state + 1):
+                return "then", state + 1, "then"    # "when you're there look for a cup": the clause is its own
             return "then", self.cond_end(state + 1), "then"
         end = self.cond_end(j)
         return ("cond", end, sub) if end > j else None
+
+    def _clause_follows(self, k: int) -> bool:
+        """Whether a clause of the command starts at ``k``, maybe after a comma."""
+        if k < len(self.words) and self.words[k].lower == ",":
+            k += 1
+        return k < len(self.words) and self.verb_after(k)
+
+    def _arrival_end(self, k: int) -> int:
+        """Where "get there", "arrive", "reach it" ends at ``k``: a verb of going (a unit of a frame with a
+        goal) with no place but "there"/"here"/"it", then a comma or a clause (0: none). Arriving where the
+        command went is no motion of its own."""
+        words = self.words
+        found = self.verb_at(k) if k < len(words) else None
+        if found is None or found[2] is not None or found[0] not in self.lexicon.goals:
+            return 0
+        after = k + found[1]
+        if after < len(words) and words[after].lower in ("there", "here", "it"):
+            after += 1
+        return after if self._clause_follows(after) else 0
 
     def subordinate(self, i: int, start: bool) -> Match | None:
         """Tag a subordinate clause (see :meth:`_subordinate_at`; None: none here).

@@ -54,8 +54,8 @@ def test_every_policy_runs_on_the_same_layouts_and_the_oracle_is_shortest() -> N
 
 
 def test_a_command_that_cannot_be_planned_fails_before_any_run() -> None:
-    with pytest.raises(SealError, match="unknown verb 'fly'"):
-        list(run_map_suite(str(map_path("apartment")), ["fly to the moon"], ["sefm"], layouts=1, jobs=1))
+    with pytest.raises(SealError, match="unknown verb 'launch'"):
+        list(run_map_suite(str(map_path("apartment")), ["launch the rocket"], ["sefm"], layouts=1, jobs=1))
 
 
 def test_bench_tasks_map_suite_json() -> None:

@@ -80,3 +80,45 @@ def test_the_build_script_names_missing_data(tmp_path: Path) -> None:
     run = subprocess.run([sys.executable, str(ROOT / "scripts" / "build_lexical_units.py"), "--data", str(tmp_path)],
                          capture_output=True, text=True)
     assert run.returncode == 1 and "propbank_rolesets.json: no such file" in run.stderr
+
+
+WORDNET = ROOT / "framelib" / "wordnet_units.yaml"
+WORDNET_DICT = Path("/usr/share/wordnet")          # Debian's wordnet-base
+
+
+def test_every_wordnet_unit_has_its_source_and_evokes_its_frames(library: Library) -> None:
+    entries = yaml.safe_load(WORDNET.read_text())["lexical_units"]
+    by_unit: dict[str, set[str]] = {}
+    for entry in entries:
+        assert entry["source"].startswith(f"wordnet:{entry['unit']}.v."), entry
+        by_unit.setdefault(entry["unit"], set()).add(entry["frame"])
+    assert {"announce", "explain", "relocate"} <= set(by_unit)
+    for unit, frames in by_unit.items():
+        assert {f.name for f in library.evoked_by(unit)} == frames
+    assert not {"near", "back", "sound", "cup", "table", "knife"} & set(by_unit)   # closed class, nouns
+
+
+@pytest.mark.parametrize(("command", "frame"), [
+    ("announce the time to everyone in the living room", "Tell"),
+    ("explain to the person in the hallway what day it is", "Tell"),
+    ("relocate the cup to the cabinet", "Place"),             # relocate evokes Go and Place, as "move" does
+    ("relocate to the office", "Go"),
+])
+def test_a_wordnet_unit_parses_as_its_frame(library: Library, command: str, frame: str) -> None:
+    assert [f.frame for f in parse_command(command, library).frames] == [frame]
+
+
+def test_the_build_script_reproduces_the_wordnet_file() -> None:
+    if not (WORDNET_DICT / "data.verb").is_file():
+        pytest.skip("WordNet 3.0 is not installed (apt-get install wordnet-base)")
+    run = subprocess.run([sys.executable, str(ROOT / "scripts" / "build_lexical_units.py"), "--check",
+                          "--wordnet", str(WORDNET_DICT)], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+
+
+def test_the_build_script_names_a_missing_wordnet(tmp_path: Path) -> None:
+    out = tmp_path / "out.yaml"
+    run = subprocess.run([sys.executable, str(ROOT / "scripts" / "build_lexical_units.py"), "--wordnet",
+                          str(tmp_path), "--out", str(out)], capture_output=True, text=True)
+    assert run.returncode == 1 and "data.verb: no such file" in run.stderr and "Traceback" not in run.stderr
+    assert not out.exists()

@@ -138,7 +138,8 @@ def test_a_greeting_before_a_question(library: Library) -> None:
     assert frames("where're the car keys", library) == [("Find", {"theme": "key"})]
 
 
-SETS = sorted((Path(__file__).parents[1] / "data").glob("wording_questions*.jsonl"))
+SETS = sorted([*(Path(__file__).parents[1] / "data").glob("wording_questions*.jsonl"),
+               *(Path(__file__).parents[1] / "data").glob("wording_paraphrases*.jsonl")])
 SCORER = Path(__file__).resolve().parents[2].parent / "shared" / "eval" / "score_parse.py"
 
 
@@ -155,7 +156,7 @@ def test_our_sets_of_peoples_wording_score(path: Path, library: Library) -> None
     right = sum(scorer.score_one(parse, scorer.expected_frames(item))[0]
                 for item, parse in zip(items, parse_lines([it["text"] for it in items], library), strict=True)
                 if "error" not in parse)
-    assert right / len(items) >= 0.85            # measured: 1.000, 0.900, 0.933 (docs/language.md)
+    assert right / len(items) >= 0.85            # measured: 1.000, 0.900, 0.933; 0.922, 0.919 (docs/language.md)
 
 
 def test_where_did_someone_put_it_asks_to_find(library: Library) -> None:
@@ -167,3 +168,30 @@ def test_where_did_someone_put_it_asks_to_find(library: Library) -> None:
 def test_a_verb_of_motion_and_its_path_start_a_clause(library: Library) -> None:
     assert [f for f, _ in frames("drop the keys on the table walk to the door", library)] == ["Place", "Go"]
     assert [f for f, _ in frames("put the cup in a different place on the shelf", library)] == ["Place"]
+
+
+def texts(text: str, library: Library) -> list[tuple[str, dict[str, str]]]:
+    """Each frame with the texts of its said elements."""
+    return [(f.frame, {role: e.text for role, e in f.elements.items() if not e.default})
+            for f in parse_command(text, library).frames]
+
+
+def test_what_a_person_wears_describes_them_and_the_last_place_is_where(library: Library) -> None:
+    assert texts("greet the person in the white jacket in the bedroom", library) == [
+        ("Greet", {"theme": "the person in the white jacket", "ground": "the bedroom"})]
+    assert texts("meet Jane at the bookshelf in the bedroom", library) == [      # a name, a known place: as before
+        ("Meet", {"theme": "Jane", "ground": "the bookshelf in the bedroom"})]
+
+
+def test_paraphrased_requests_of_gpsr_commands(library: Library) -> None:
+    assert [f for f, _ in frames("Find the soup, then take it to Adel, who's in the bathroom.", library)] == \
+        ["Find", "Bring"]
+    assert texts("Let the person at the chairs know what gesture the person at the sofa is making.", library) == [
+        ("Tell", {"message": "what gesture the person at the sofa is making", "recipient": "the person at the chairs"})]
+    assert texts("Explain to Robin how to get to the kitchen.", library) == [
+        ("Tell", {"message": "how to get to the kitchen", "recipient": "Robin"})]
+    assert texts("Where can I find the sponge?", library) == [("Find", {"theme": "the sponge"})]
+    assert [f for f, _ in frames("Hey, when you get a sec, could you grab me a soda?", library)] == ["Bring"]
+    assert [f for f, _ in frames("I'd really appreciate it if you brought me a toy.", library)] == ["Bring"]
+    assert texts("go with sam to the bedroom", library) == [("Guide", {"theme": "sam", "goal": "the bedroom"})]
+    assert texts("go with milk to the kitchen", library) == [("Go", {"goal": "the kitchen"})]   # a word: no one

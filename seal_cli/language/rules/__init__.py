@@ -43,15 +43,18 @@ CLAUSE_START: tuple[Rule, ...] = (
     lead_ins.LIGHT_VERB,
     lead_ins.POLITE_FRAME,
     politeness.VOCATIVE_NAME,
+    requests.NUMBER_OF_RULE,
     requests.QUESTION,
     requests.FRONTED_QUESTION,
     requests.WHERE,
     requests.WHERE_DID_RULE,
+    requests.KNOW_WISH,
     requests.REQUEST,
     requests.LET_KNOW_RULE,
     requests.FRONTED_OF,
     verbs.USE,
     verbs.VERB,
+    statements.DISLOCATED,
     statements.ASIDE,
 )
 """Where a clause starts: what may come before its verb, and the verb. When none matches, the
@@ -59,8 +62,11 @@ word is tagged as what it is (``INSIDE``), and the grammar reports the missing v
 
 INSIDE: tuple[Rule, ...] = (
     clauses.END_MARK,
+    requests.KNOW_AFTER_LET,
+    clauses.PARTITIVE_OF,
     statements.HER_TOLD,
     statements.TOLD,
+    statements.TOLD_HOW_TO,
     politeness.PLEASE_INSIDE,
     clauses.SOMETHING_TO,
     verbs.TELL_TO,
@@ -71,6 +77,7 @@ INSIDE: tuple[Rule, ...] = (
     statements.REMARK_UNMARKED,
     requests.FRONTED_END,
     statements.REMARK_AFTER,
+    clauses.COMMA_RELATIVE,
     clauses.SEPARATOR,
     politeness.THANKS,
     clauses.UNJOINED,

@@ -52,6 +52,33 @@ def _relative(s: State, i: int) -> Match | None:
     return Match(m.consumed, m.words, expect=AFTER_SEP) if m else None
 
 
+def _partitive_of(s: State, i: int) -> Match | None:
+    out = s.out
+    if not out or s.verb_index != len(out) - 1 or out[-1].tag != Tag.VERB or \
+            str(out[-1].info).split()[-1] not in ("many", "much"):
+        return None
+    return Match(1)                   # "how many *of* the people in the hall ...": of them, the people counted
+
+
+PARTITIVE_OF = Rule("of after how many", _partitive_of, (
+    Example("How many of the people in the bedroom are wearing white jackets?", "of", ""),
+), frozenset(["of"]), "'of' right after 'how many' (a unit of counting): the part counted is the phrase after it")
+
+
+_COMMA_RELATIVES = frozenset(["who", "whom", "whose", "which"])
+
+
+def _comma_relative(s: State, i: int) -> Match | None:
+    """A relative clause set off by a comma after a name or a noun ("take it to Adel*, who's in the bathroom*"):
+    it describes the noun as one without the comma does, and asks nothing (no question to tell)."""
+    words = s.words
+    if i + 2 >= len(words) or words[i + 1].lower not in _COMMA_RELATIVES or s.verb_index < 0 or \
+            s.prev_tag() not in (Tag.NAME, Tag.WORD):
+        return None
+    m = s.relative(i + 1)
+    return Match(1 + m.consumed, m.words, expect=AFTER_SEP) if m else None
+
+
 def _separator(s: State, i: int) -> Match | None:
     n = match_phrase(s.words, i, SEPARATOR_WORDS)
     m = s.separator(i, n) if n else None
@@ -75,6 +102,10 @@ RELATIVE = Rule("relative clause", _relative, (
     Example("bring me the glass that I was drinking from", "that I was drinking from", Tag.REL),
     Example("put the cup where it belongs", "where it belongs", Tag.HERE),
 ), SUB_FIRST | REL_FIRST, "a relative clause after a noun, kept whole (or 'that is' dropped)")
+COMMA_RELATIVE = Rule("relative clause after a comma", _comma_relative, (
+    Example("take it to Adel, who's in the bathroom.", "who 's", Tag.REL),
+    Example("give the cup to the man, who is sitting on the sofa", "sitting", Tag.VBG_P),
+), frozenset([","]), "', who is ...' after a name or a noun: a relative clause describing it, not a question")
 SEPARATOR = Rule("separator", _separator, (
     Example("take the cup and put it on the table", "and", Tag.SEP),
     Example("put the cup and the plate on the table", "and", Tag.AND_NP),

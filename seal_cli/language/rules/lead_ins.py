@@ -110,7 +110,10 @@ SEQUENCING = Rule("sequencing word", _sequencing, (
 SUBORDINATE = Rule("subordinate clause first", _subordinate, (
     Example("If the door is open, close it", "If the door is open,", Tag.COND),
     Example("When you reach the kitchen, open the fridge", "When you", Tag.POLITE),
-), None, "a condition, or a clause of the robot's own, before the verb")
+    Example("Go to the kitchen and when you get there, pick up the cup.", "when you get there,", Tag.POLITE),
+    Example("go to the kitchen and when you're there look for a cup", "look for", Tag.VERB),
+    Example("Go to the kitchen and once there find a cup", "once there", Tag.POLITE),
+), None, "a condition, or a clause of the robot's own, before the verb (arriving where it went: none)")
 MANNER = Rule("manner adverb", _manner, (
     Example("Gently place the eggs in the bowl", "Gently", Tag.POLITE),
 ), None, "a manner adverb before the verb")

@@ -21,8 +21,8 @@ def _formula(s: State, i: int) -> Match | None:
 
 
 def _while_holding(s: State, i: int) -> Match | None:
-    if not s.out and s.words[i].lower in ("while", "after") and s.verb_after(i + 1):
-        return s.emit(i, 1, Tag.POLITE)                           # "While holding a cup, ..."
+    if not s.out and s.words[i].lower in ("while", "after", "having") and s.verb_after(i + 1):
+        return s.emit(i, 1, Tag.POLITE)                           # "While holding a cup, ...", "Having grabbed"
     return None
 
 
@@ -88,11 +88,13 @@ def _thanks(s: State, i: int) -> Match | None:
 
 FORMULA = Rule("politeness formula", _formula, (
     Example("When you get a chance, could you close the window?", "When you get a chance,", Tag.POLITE),
+    Example("Hey, when you get a sec, could you grab me a soda?", "when you get a sec,", Tag.POLITE),
     Example("bring it to me when you can", "when", ""),
 ), FORMULA_FIRST, "politeness said as a clause of its own: before the command, politeness; after it, dropped")
 WHILE_HOLDING = Rule("while or after first", _while_holding, (
     Example("While holding a cup, turn on the lamp", "While", Tag.POLITE),
-), frozenset(["while", "after"]), "'while'/'after' opening the command before a verb")
+    Example("Having grabbed the cup, put it on the table.", "Having", Tag.POLITE),
+), frozenset(["while", "after", "having"]), "'while'/'after'/'having' opening the command before a verb")
 ADVERB_COMMA = Rule("adverb and comma", _adverb_comma, (
     Example("Quietly, please: turn off the radio", "Quietly ,", Tag.POLITE),
 ), None, "a manner adverb and its comma before a request")

@@ -11,9 +11,14 @@ left unsaid (its ``text`` is empty).
 from __future__ import annotations
 
 from seal_cli.language.english import (
+    DETERMINERS,
     END_MARKS,
+    KNOW_WISHES,
     LET_KNOW,
+    NUMBER_MEANS,
+    NUMBER_OF,
     OBJECT_PRONOUNS,
+    POSSESSIVES,
     PREPOSITIONS,
     QUESTION_MEANS,
     QUESTION_WORDS,
@@ -113,11 +118,43 @@ def _request(s: State, i: int) -> Match | None:
                      _unsaid(end, Tag.PRON, None, _SPEAKER)), expect=False, verb=REQUEST_MEANS, using=False)
 
 
+def _know_wish(s: State, i: int) -> Match | None:
+    words = s.words
+    n = _phrase(s, i, KNOW_WISHES)
+    if not n or QUESTION_MEANS not in s.lexicon.units or i + n >= len(words) or words[i + n].lower in END_MARKS:
+        return None
+    k = i + n
+    end = words[k - 1].end
+    for unit in s.lexicon.units.get(QUESTION_MEANS, ()):         # "do you know how many": "tell me how many"
+        rest = unit[2:]
+        if len(unit) > 2 and unit[1] == _SPEAKER and all(k + m < len(words) and words[k + m].lower == rest[m]
+                                                          for m in range(len(rest))):
+            last = words[k + len(rest) - 1].end
+            return Match(n + len(rest), (Word(s.text_of(words[i].start, last), words[i].start, last, Tag.VERB,
+                                              " ".join(unit)),), expect=False, verb=" ".join(unit), using=False)
+    text = s.text_of(words[i].start, end) or " ".join(w.text for w in words[i:k])
+    return Match(n, (Word(text, words[i].start, end, Tag.VERB, QUESTION_MEANS), _unsaid(end, Tag.PRON, None, _SPEAKER)),
+                 expect=False, verb=QUESTION_MEANS, using=False)
+
+
+def _number_of(s: State, i: int) -> Match | None:
+    words = s.words
+    n = _phrase(s, i, NUMBER_OF)
+    unit = tuple(NUMBER_MEANS.split())
+    if not n or unit not in s.lexicon.units.get(unit[0], ()) or not s.np_starts(i + n):
+        return None
+    end = words[i + n - 1].end
+    return Match(n, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, NUMBER_MEANS),),
+                 expect=False, verb=NUMBER_MEANS, using=False)
+
+
 def _let_know(s: State, i: int) -> Match | None:
     words = s.words
     if QUESTION_MEANS not in s.lexicon.units or i + 2 >= len(words):
         return None
     told = words[i + 1]
+    if told.lower in DETERMINERS or told.lower in POSSESSIVES:
+        return _let_phrase_know(s, i)
     if not (told.lower in OBJECT_PRONOUNS and told.lower not in ("it", "this", "that") or capitalised(told)) or \
             words[i + 2].lower != LET_KNOW[1]:
         return None
@@ -135,6 +172,31 @@ def _let_know(s: State, i: int) -> Match | None:
                  verb=QUESTION_MEANS, using=False)
 
 
+_LET_PHRASE_WORDS = 12
+
+
+def _let_phrase_know(s: State, i: int) -> Match | None:
+    """"*let* the person at the chairs *know* ...": "let" is "tell" when "know" ends a noun phrase after it (a few
+    words of no verb, in the sentence); the "know" is dropped where it comes (``KNOW_AFTER_LET``)."""
+    words = s.words
+    for k in range(i + 2, min(len(words), i + 2 + _LET_PHRASE_WORDS)):
+        low = words[k].lower
+        if low == LET_KNOW[1]:
+            return Match(1, (words[i].tagged(Tag.VERB, QUESTION_MEANS),), expect=False, verb=QUESTION_MEANS,
+                         using=False)
+        if low in END_MARKS or low in (",", ";", "and", "then") or s.verb_at(k) is not None and \
+                words[k - 1].lower not in DETERMINERS:
+            return None
+    return None
+
+
+def _know_after_let(s: State, i: int) -> Match | None:
+    if s.verb_index < 0 or s.out[s.verb_index].lower != LET_KNOW[0] or \
+            s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.LABEL):
+        return None
+    return Match(1)                               # "let the person at the chairs *know* what ...": dropped
+
+
 QUESTION = Rule("bare question", _question, (
     Example("What's the biggest thing on the shelf?", "What 's the biggest thing on the shelf", Tag.SAID),
     Example("which of the bottles in the pantry is the biggest?", "", Tag.VERB),
@@ -147,17 +209,31 @@ WHERE = Rule("where is", _where, (
 WHERE_DID_RULE = Rule("where did I leave", _where_did, (
     Example("Where did I leave my glasses?", "Where did I leave", Tag.VERB),
     Example("where do we keep the batteries", "where do we keep", Tag.VERB),
+    Example("Where can I find the sponge?", "Where can I find", Tag.VERB),
 ), WHERE_DID[0], "'where did I leave X', 'where do we keep X': find X")
 REQUEST = Rule("wish for a thing", _request, (
     Example("I'd like the red mug", "I'd like", Tag.VERB),
     Example("Can I have the big plate?", "Can I have", Tag.VERB),
     Example("I need a pen.", "I need", Tag.VERB),
 ), _REQUEST_FIRST, "'I'd like X', 'can I have X', 'I need X': bring X to the speaker")
+KNOW_WISH = Rule("wish to know", _know_wish, (
+    Example("I'd like to know the heaviest object on the bookshelf.", "I'd like to know", Tag.VERB),
+    Example("Do you know how many people in the bedroom are wearing white jackets?", "Do you know how many",
+            Tag.VERB),
+), first_words(KNOW_WISHES), "'I'd like to know X', 'do you know X': tell me X")
+NUMBER_OF_RULE = Rule("the number of", _number_of, (
+    Example("Tell me the total number of snacks on the desk.", "Tell me the total number of", Tag.VERB),
+    Example("What number of people in the bedroom wear white jackets?", "What number of", Tag.VERB),
+), first_words(NUMBER_OF), "'tell me the number of X', 'what number of X': tell me how many X")
 LET_KNOW_RULE = Rule("let me know", _let_know, (
     Example("let me know when the laundry is done", "let", Tag.VERB),
     Example("let me know how many bottles are in the fridge", "let me know how many", Tag.VERB),
     Example("let Amara know that her package arrived", "Amara", Tag.NAME),
+    Example("let the person at the chairs know what gesture the person at the sofa is making", "let", Tag.VERB),
 ), frozenset([LET_KNOW[0]]), "'let X know': tell X")
+KNOW_AFTER_LET = Rule("know after let X", _know_after_let, (
+    Example("let the people in the hall know that dinner is ready", "know", ""),
+), frozenset([LET_KNOW[1]]), "the 'know' of 'let the guests know ...', dropped: 'let' was read as 'tell'")
 
 
 _PHRASE_TAGS = frozenset({Tag.PREP, Tag.OF, Tag.DET, Tag.NUM, Tag.POSS, Tag.WORD, Tag.NAME, Tag.RESULT, Tag.LABEL,

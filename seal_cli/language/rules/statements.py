@@ -4,7 +4,8 @@ words of address and statements after the request ("..., dear, I'm cold"), a cla
 
 from __future__ import annotations
 
-from seal_cli.language.english import BECAUSE
+from seal_cli.language.english import BECAUSE, WH_WORDS
+from seal_cli.language.morphology import verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import State, subject_word
 from seal_cli.language.tags import Tag
@@ -45,6 +46,23 @@ def _remark_after(s: State, i: int) -> Match | None:
     return Match(n, remarks=spans) if n else None   # "close the door, dear, I'm cold": address and statements dropped
 
 
+def _told_how_to(s: State, i: int) -> Match | None:
+    words = s.words
+    if not s.speech or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL, Tag.VERB) or \
+            i + 2 >= len(words) or words[i + 1].lower != "to" or verb_lemma(words[i + 2].lower) != words[i + 2].lower:
+        return None
+    end = s.speech_end(i)                                         # "explain to Robin *how to get to the kitchen*"
+    return s.emit(i, end - i, Tag.SAID)
+
+
+def _dislocated(s: State, i: int) -> Match | None:
+    return s.dislocated(i)
+
+
+DISLOCATED = Rule("phrase said first, taken up by a pronoun", _dislocated, (
+    Example("The sponge on the cabinet, bring it to me.", "The sponge on the cabinet ,", Tag.POLITE),
+    Example("That dice on the sofa, could you bring it to me?", "That dice on the sofa ,", Tag.POLITE),
+), None, "a noun phrase and a comma before a command whose pronoun takes it up: a remark it names")
 ASIDE = Rule("sentence beside the command", _aside, (
     Example("Good morning! Could you open the window?", "Good morning !", Tag.POLITE),
     Example("Bogdan has a question; answer it for him", "Bogdan has a question ;", Tag.POLITE),
@@ -56,6 +74,10 @@ TOLD = Rule("told without that", _told, (
     Example("tell mom I'm late", "I'm late", Tag.SAID),
     Example("tell the kids dinner is ready", "dinner is ready", Tag.SAID),
 ), None, "what is told without 'that', right after the person told")
+TOLD_HOW_TO = Rule("how to, told", _told_how_to, (
+    Example("Explain to Robin how to get to the kitchen.", "how to get to the kitchen", Tag.SAID),
+    Example("tell me where to put the plates", "where to put the plates", Tag.SAID),
+), WH_WORDS, "'how to V', 'where to V' after a verb of saying: what is said, not a clause of purpose")
 REMARK_UNMARKED = Rule("remark without a comma", _remark_unmarked, (
     Example("give the ball to Lily cos she wants it", "cos", ""),
 ), lambda low: low in BECAUSE or "'" in low, "'because' or a subject contraction after the request starts a statement")
