@@ -32,6 +32,10 @@ def test_questions_are_answered() -> None:
     counted = run_json("count the cups in the family room")
     assert counted["plan"] == ["Count(theme=cup, ground=family_room)"]
     assert counted["answer"] == "1 cup in the family room"
+    there = run_json("is Anna in the kitchen?")
+    assert there["completed"] and there["answer"].startswith("yes: anna is in the kitchen")
+    elsewhere = run_json("is Ben in the kitchen?")
+    assert elsewhere["completed"] and elsewhere["answer"] == "no: ben is in the bedroom at (-7.00, 3.00)"
 
 
 def test_a_kind_the_map_knows_nothing_of_is_warned_about_and_searched_for() -> None:

@@ -48,6 +48,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.FRONTED_QUESTION,
     requests.WHERE,
     requests.WHERE_DID_RULE,
+    requests.WHETHER_IS_RULE,
     requests.KNOW_WISH,
     requests.REQUEST,
     requests.LET_KNOW_RULE,

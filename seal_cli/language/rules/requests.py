@@ -105,6 +105,29 @@ def _where_did(s: State, i: int) -> Match | None:
                  expect=False, verb=WHERE_MEANS, using=False)
 
 
+_WHETHER_IS = frozenset(["is", "are"])
+_WHETHER_WHERE = frozenset(["in", "on", "at", "inside", "near", "by", "under", "beside", "behind"])
+
+
+def _whether_is(s: State, i: int) -> Match | None:
+    """"*Is* Ben in the kitchen?", "*are* the apples in the fridge?": whether a thing or person is somewhere,
+    asked as "find ..." (``WHERE_MEANS``); a phrase must follow, and a preposition of place after it in the
+    same sentence, before any other verb."""
+    words = s.words
+    if WHERE_MEANS not in s.lexicon.units or not s.np_starts(i + 1) or words[i + 1].lower in _WHETHER_IS:
+        return None
+    for k in range(i + 2, len(words)):
+        low = words[k].lower
+        if low in END_MARKS or low in (",", ";", "and", "then") or s.verb_at(k) is not None:
+            return None
+        if low in _WHETHER_WHERE:
+            if not s.np_starts(k + 1):
+                return None
+            return Match(1, (words[i].tagged(Tag.VERB, WHERE_MEANS),), expect=False, verb=WHERE_MEANS,
+                         using=False)
+    return None
+
+
 def _request(s: State, i: int) -> Match | None:
     words = s.words
     n = _phrase(s, i, REQUESTS)
@@ -211,6 +234,10 @@ WHERE_DID_RULE = Rule("where did I leave", _where_did, (
     Example("where do we keep the batteries", "where do we keep", Tag.VERB),
     Example("Where can I find the sponge?", "Where can I find", Tag.VERB),
 ), WHERE_DID[0], "'where did I leave X', 'where do we keep X': find X")
+WHETHER_IS_RULE = Rule("is X somewhere", _whether_is, (
+    Example("Is Ben in the kitchen?", "Is", Tag.VERB),
+    Example("are the apples in the fridge?", "are", Tag.VERB),
+), _WHETHER_IS, "'is X in Y?': find X in Y, and answer whether it is there")
 REQUEST = Rule("wish for a thing", _request, (
     Example("I'd like the red mug", "I'd like", Tag.VERB),
     Example("Can I have the big plate?", "Can I have", Tag.VERB),
