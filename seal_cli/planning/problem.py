@@ -56,6 +56,7 @@ as the SPEC says) are never one."""
 
 if TYPE_CHECKING:
     from seal_cli.language.parser import Parse, Phrase
+    from seal_cli.language.values import Evoked
     from seal_cli.maps.model import Map
 
 __all__ = ["MAX_COMMANDED", "MAX_COUNT", "Problem", "Things", "build_problem", "commanded_frames", "instance_names",
@@ -335,6 +336,16 @@ def _to_recipient(frame: Frame, values: dict[str, tuple[str, ...]], things: Thin
             values[person] = values.pop(element.role)
 
 
+RETURNING = frozenset({"come", "return"})
+"""Verbs of motion toward the speaker: said with no goal ("come back", "return", and "go back"), on a map
+the goal is the speaker, who gave the command (by default where the robot started)."""
+
+
+def _returning(evoked: Evoked) -> bool:
+    unit = evoked.lexical_unit.split()
+    return bool(unit) and (unit[0] in RETURNING or unit[-1] == "back")
+
+
 COUNTING = frozenset({"count"})
 """Primitives whose argument is a kind of thing, counted, not one thing."""
 
@@ -364,6 +375,9 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         for element in frame.elements:
             if element.role not in values and element.default is not None:
                 values[element.role] = (things.name(element.default),)
+        if things.map is not None and "goal" in frame.roles and "goal" not in values and _returning(evoked):
+            things.people.add(SPEAKER)          # "go to the kitchen and come back": back to whoever asked
+            values["goal"] = (SPEAKER,)
         _to_recipient(frame, values, things)
         _check_types(frame, values, evoked.elements, things, parse.text)
         earlier.append(values)

@@ -26,6 +26,13 @@ def test_bring_me_hands_the_thing_to_the_speaker() -> None:
     assert abs(hand_over["pose"][0] + 6.5) + abs(hand_over["pose"][1] + 4.0) < 2.0    # beside the speaker
 
 
+def test_come_back_returns_to_the_speaker() -> None:
+    report = run_json("go to the kitchen and then come back")
+    assert report["plan"] == ["Go(goal=kitchen)", "Go(goal=me)"] and report["completed"]
+    end = report["records"][-1]["pose"]
+    assert abs(end[0] + 6.5) + abs(end[1] + 4.0) < 2.0      # beside the speaker, in the living room
+
+
 def test_questions_are_answered() -> None:
     found = run_json("find Ben")
     assert found["completed"] and found["answer"] == "ben is in the bedroom at (-7.00, 3.00)"
