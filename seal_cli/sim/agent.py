@@ -39,6 +39,7 @@ from seal_cli.frames.library import Library
 from seal_cli.frames.model import Action, Binding, Fact
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.model import SPEAKER, Map
+from seal_cli.planning.grounding import spoken
 from seal_cli.planning.questions import Question
 from seal_cli.planning.state import State
 from seal_cli.sim.navigation import Cell, Grid
@@ -496,7 +497,9 @@ class Agent:
                     self.say("fail", f"{target} cannot be reached from anywhere the robot can drive")
                     continue
                 self.chosen[class_key(value)] = target
-                self.drive_to(cell, f"goes to {'the speaker' if target == SPEAKER else target}")
+                said = "the speaker" if target == SPEAKER else \
+                    f"the {spoken(value)} (by {target})" if target != value and self.room(value) is not None else target
+                self.drive_to(cell, f"goes to {said}")
                 self.world.face(self.known[target].at)
                 return Outcome(True, f"at {target}")
             if (stop := self.exhausted()) is not None:

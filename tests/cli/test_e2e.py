@@ -26,6 +26,12 @@ def test_bring_me_hands_the_thing_to_the_speaker() -> None:
     assert abs(hand_over["pose"][0] + 6.5) + abs(hand_over["pose"][1] + 4.0) < 2.0    # beside the speaker
 
 
+def test_going_to_a_room_says_the_room_and_where_in_it() -> None:
+    report = run_json("go to the dining room")
+    assert report["completed"] and report["plan"] == ["Go(goal=dining_room)"]
+    assert any(r["text"].startswith("goes to the dining room (by dining_table_1) (") for r in report["records"])
+
+
 def test_come_back_returns_to_the_speaker() -> None:
     report = run_json("go to the kitchen and then come back")
     assert report["plan"] == ["Go(goal=kitchen)", "Go(goal=me)"] and report["completed"]
