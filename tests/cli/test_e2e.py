@@ -32,6 +32,12 @@ def test_going_to_a_room_says_the_room_and_where_in_it() -> None:
     assert any(r["text"].startswith("goes to the dining room (by dining_table_1) (") for r in report["records"])
 
 
+def test_a_persons_wish_is_brought_to_them() -> None:
+    report = run_json("Anna wants the cup")
+    assert report["plan"][-1] == "Bring(theme=cup, recipient=anna)" and report["completed"]
+    assert any(r["text"] == "handed cup_1 to anna" for r in report["records"])
+
+
 def test_come_back_returns_to_the_speaker() -> None:
     report = run_json("go to the kitchen and then come back")
     assert report["plan"] == ["Go(goal=kitchen)", "Go(goal=me)"] and report["completed"]

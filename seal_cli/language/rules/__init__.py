@@ -51,6 +51,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.WHETHER_IS_RULE,
     requests.KNOW_WISH,
     requests.REQUEST,
+    requests.WISH_OF,
     requests.LET_KNOW_RULE,
     requests.FRONTED_OF,
     verbs.USE,

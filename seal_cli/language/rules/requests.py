@@ -141,6 +141,25 @@ def _request(s: State, i: int) -> Match | None:
                      _unsaid(end, Tag.PRON, None, _SPEAKER)), expect=False, verb=REQUEST_MEANS, using=False)
 
 
+_WISHES_OF = (("wants",), ("needs",), ("would", "like"))
+"""A named person's wish for a thing ("*Anna wants* the cup"): bring it to them (``REQUEST_MEANS``)."""
+
+
+def _wish_of(s: State, i: int) -> Match | None:
+    words = s.words
+    if REQUEST_MEANS not in s.lexicon.units or not capitalised(words[i]) or s.verb_at(i) is not None:
+        return None
+    for wish in _WISHES_OF:
+        n = 1 + len(wish)
+        if i + n < len(words) and all(words[i + 1 + k].lower == w for k, w in enumerate(wish)) and \
+                s.np_starts(i + n) and words[i + n].lower not in ("you", "to") and s.verb_at(i + n) is None and \
+                _sentence_asks_nothing_else(s, i + n):
+            end = words[i + n - 1].end
+            return Match(n, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, REQUEST_MEANS),
+                             words[i].tagged(Tag.NAME)), expect=False, verb=REQUEST_MEANS, using=False)
+    return None
+
+
 def _know_wish(s: State, i: int) -> Match | None:
     words = s.words
     n = _phrase(s, i, KNOW_WISHES)
@@ -243,6 +262,11 @@ REQUEST = Rule("wish for a thing", _request, (
     Example("Can I have the big plate?", "Can I have", Tag.VERB),
     Example("I need a pen.", "I need", Tag.VERB),
 ), _REQUEST_FIRST, "'I'd like X', 'can I have X', 'I need X': bring X to the speaker")
+WISH_OF = Rule("a person's wish for a thing", _wish_of, (
+    Example("Anna wants the cup", "Anna wants", Tag.VERB),
+    Example("Ben needs a towel.", "Ben needs", Tag.VERB),
+    Example("Anna would like the red mug", "Anna would like", Tag.VERB),
+), None, "'Anna wants X', 'Ben needs X': bring X to the person")
 KNOW_WISH = Rule("wish to know", _know_wish, (
     Example("I'd like to know the heaviest object on the bookshelf.", "I'd like to know", Tag.VERB),
     Example("Do you know how many people in the bedroom are wearing white jackets?", "Do you know how many",
