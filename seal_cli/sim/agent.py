@@ -904,9 +904,30 @@ class Agent:
             n = sum(1 for k in found if k.cls == key)
             note = "" if complete else f" seen, but it could not look all over it ({complete.message})"
             return f"{n} {noun}{'' if n == 1 else 's'} {where}{note}"
+        if ground is None and self.sweeper is not None and self.scene.map.rooms:
+            return self._count_in_house(key, noun)
         n = sum(class_key(d.cls) == key for d in self.world.observe())
         where = f" in the {ground.replace('_', ' ')}" if ground else " in view"
         return f"{n} {noun}{'' if n == 1 else 's'}{where}"
+
+    def _count_in_house(self, key: str, noun: str) -> str:
+        """"How many cups are there?": every room looked all over (nearest room first, as the crow
+        flies), then the things of the kind the robot knows, wherever it saw them."""
+        left = list(self.scene.map.rooms)
+        unseen: list[str] = []
+        while left:
+            here = np.asarray(self.world.robot.pose[:2], dtype=float)
+            room = min(left, key=lambda r: float(np.hypot(*(np.mean(np.asarray(r.polygon), axis=0) - here))))
+            left.remove(room)
+            _, _, complete = self.look_over(room.name)
+            if not complete.ok:
+                unseen.append(room.name.replace("_", " "))
+            if self.exhausted() is not None:
+                unseen.extend(r.name.replace("_", " ") for r in left)
+                break
+        n = sum(1 for k in self.known.values() if k.movable and k.cls == key and k.id in self.world.items)
+        note = f" seen, but it could not look all over {', '.join(unseen)}" if unseen else ""
+        return f"{n} {noun}{'' if n == 1 else 's'} in the house{note}"
 
     def survey(self, room: Any, views: int | None = None, peek: bool = False) -> Outcome:
         """Look all over a room: to the nearest part of it not yet seen, until all of it is (at

@@ -38,6 +38,15 @@ def test_a_persons_wish_is_brought_to_them() -> None:
     assert any(r["text"] == "handed cup_1 to anna" for r in report["records"])
 
 
+def test_how_many_with_nowhere_said_looks_over_the_whole_house() -> None:
+    report = run_json("how many cups are there?")
+    assert report["completed"] and report["answer"] == "1 cup in the house"
+    looked = {r["text"] for r in report["records"]}
+    assert {"looks all over the kitchen", "looks all over the bedroom"} <= looked
+    short = run_json("how many spoons are there?", "--max-metres", "5")
+    assert short["answer"].startswith("0 spoons in the house seen, but it could not look all over ")
+
+
 def test_come_back_returns_to_the_speaker() -> None:
     report = run_json("go to the kitchen and then come back")
     assert report["plan"] == ["Go(goal=kitchen)", "Go(goal=me)"] and report["completed"]
