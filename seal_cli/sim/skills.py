@@ -254,15 +254,7 @@ class SkillRunner:
             world.step += 1
             return Outcome(False, f"sees no {words(skill.args[0])}")
         if skill.action == "go":
-            known = agent.known[skill.args[0]]
-            cell = agent.stand_cell(known)
-            if cell is None:
-                world.step += 1
-                return Outcome(False, f"cannot reach {known.id}")
-            agent.drive_to(cell, f"goes to {known.id}")
-            world.face(known.at)
-            self.focus = known.id
-            return Outcome(True, f"at {known.id}")
+            return self._approach(agent.known[skill.args[0]])
         if skill.action == "place" and not skill.args[1]:
             world.step += 1
             return Outcome(False, "nothing open within reach to put it down on")
@@ -316,14 +308,18 @@ class SkillRunner:
         here = world.robot.pose[:2]
         target = min(targets, key=lambda k: (k.id != self.acted.get(cls),   # "the apple": the one last acted on
                                              np.hypot(k.at[0] - here[0], k.at[1] - here[1]), k.id))
-        cell = agent.stand_cell(target)
+        return self._approach(target)
+
+    def _approach(self, known: Known) -> Outcome:
+        """Drive to where the robot can act on a known thing, face it, and keep it in focus."""
+        cell = self.agent.stand_cell(known)
         if cell is None:
-            world.step += 1
-            return Outcome(False, f"cannot reach {target.id}")
-        agent.drive_to(cell, f"goes to {target.id}")
-        world.face(target.at)
-        self.focus = target.id
-        return Outcome(True, f"at {target.id}")
+            self.world.step += 1
+            return Outcome(False, f"cannot reach {known.id}")
+        self.agent.drive_to(cell, f"goes to {known.id}")
+        self.world.face(known.at)
+        self.focus = known.id
+        return Outcome(True, f"at {known.id}")
 
     def run(self, instruction: str) -> SkillResult:
         agent, world = self.agent, self.world
