@@ -166,19 +166,19 @@ def _write(path: Path, messages: Sequence[Message], store: Any, ros1: bool, mcap
         from rosbags.rosbag1 import Writer as Writer1
 
         with Writer1(path) as bag1:
-            connections = {}
-            for topic, msgtype, _, _ in messages:
-                if topic not in connections:
-                    connections[topic] = bag1.add_connection(topic, msgtype, typestore=store)
-            for topic, msgtype, stamp, message in messages:
-                bag1.write(connections[topic], int(round(stamp * 1e9)), store.serialize_ros1(message, msgtype))
+            _fill(bag1, messages, store, store.serialize_ros1)
         return
     from rosbags.rosbag2 import StoragePlugin, Writer
 
     with Writer(path, version=8, storage_plugin=StoragePlugin.MCAP if mcap else StoragePlugin.SQLITE3) as bag2:
-        conns = {}
-        for topic, msgtype, _, _ in messages:
-            if topic not in conns:
-                conns[topic] = bag2.add_connection(topic, msgtype, typestore=store)
-        for topic, msgtype, stamp, message in messages:
-            bag2.write(conns[topic], int(round(stamp * 1e9)), store.serialize_cdr(message, msgtype))
+        _fill(bag2, messages, store, store.serialize_cdr)
+
+
+def _fill(bag: Any, messages: Sequence[Message], store: Any, serialize: Any) -> None:
+    """One connection per topic, in the order topics first come, then every message at its stamp."""
+    connections = {}
+    for topic, msgtype, _, _ in messages:
+        if topic not in connections:
+            connections[topic] = bag.add_connection(topic, msgtype, typestore=store)
+    for topic, msgtype, stamp, message in messages:
+        bag.write(connections[topic], int(round(stamp * 1e9)), serialize(message, msgtype))
