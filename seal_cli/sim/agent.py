@@ -917,7 +917,7 @@ class Agent:
         unseen: list[str] = []
         while left:
             here = np.asarray(self.world.robot.pose[:2], dtype=float)
-            room = min(left, key=lambda r: float(np.hypot(*(np.mean(np.asarray(r.polygon), axis=0) - here))))
+            room = min(left, key=lambda r: float(np.hypot(r.centroid[0] - here[0], r.centroid[1] - here[1])))
             left.remove(room)
             _, _, complete = self.look_over(room.name)
             if not complete.ok:
