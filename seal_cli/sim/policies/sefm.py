@@ -9,18 +9,31 @@ is measured against are registered beside it in :data:`seal_cli.sim.policies.POL
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from seal_cli.frames.model import Binding, Fact
+from seal_cli.frames.taxonomy import class_key
 from seal_cli.planning.state import State
-from seal_cli.sim.agent import Agent, View
+from seal_cli.sim.agent import Agent, Known, View
 from seal_cli.sim.navigation import Cell
 from seal_cli.sim.policies.base import Policy
-from seal_cli.sim.world import Detection
+from seal_cli.sim.world import PERSON, Detection
 
-__all__ = ["SeFMPolicy"]
+__all__ = ["Look", "SeFMPolicy"]
+
+
+@dataclass(frozen=True, eq=False)
+class Look:
+    """A look the search may take: the belief it would reveal, the metres to drive there, the view,
+    and what it reveals of each place (None: a look that no place's share describes, a belief mode)."""
+
+    mass: float
+    metres: float
+    view: View
+    reveals: np.ndarray | None = None
 
 
 class SeFMPolicy(Policy):
@@ -41,12 +54,13 @@ class SeFMPolicy(Policy):
     use_frames = True
 
     def __init__(self, *, particles: int = 200, priors: bool = True, bandwidth: float = 0.5,
-                 distance_scale: float = 1.0) -> None:
+                 distance_scale: float = 0.5) -> None:
         self.particles = particles
         self.priors = priors
         self.bandwidth = bandwidth
         self.distance_scale = distance_scale
-        """A view's utility is the belief mass it reveals / (metres to drive there + scale)."""
+        """A view's utility is the belief mass it reveals / (metres to drive there + scale): what a look
+        costs beside its drive (0.5 m, chosen on ALFRED-2D's train split: docs/benchmarks.md)."""
         self._clouds: list[dict[str, Any]] = []
 
     @classmethod
@@ -64,6 +78,14 @@ class SeFMPolicy(Policy):
         self.fallback.begin(agent)
         self.history: list[tuple[tuple[float, float, float], tuple[Detection, ...]]] = []
         self.tried: set[tuple[Cell, str | None]] = set()
+        self._stands: dict[str, list[Cell]] = {}
+        self._reach_ids: tuple[str, ...] = ()
+        self._rows: dict[Cell, np.ndarray] = {}
+        from seal_cli.sim.policies.oracle import OraclePolicy
+
+        self._tours = OraclePolicy()
+        self._tours.begin(agent)
+        self._stood: dict[str, tuple[float, float]] = {}
         self.sefm: Any = None
         self.planner: Any = None
         self.key: tuple[str, ...] = ()
@@ -170,6 +192,41 @@ class SeFMPolicy(Policy):
                     return j
         return agent.index
 
+    stand_ahead = 2
+    """How many known stops after the one at hand the choice of a stand cell looks ahead to (:meth:`stand`)."""
+
+    def stand(self, agent: Agent, known: Known) -> Cell | None:
+        """The cell to act on ``known`` from that makes the drive on through the next known stops of the
+        plan shortest (the sink to clean the apple at, the table to put it on: exactly, by the oracle's
+        dynamic programme over stand cells, :meth:`~seal_cli.sim.policies.oracle.OraclePolicy.tour`); the
+        nearest cell when the next stop is not known yet — what is unknown is never a reason to stand
+        elsewhere."""
+        from seal_cli.sim.policies.oracle import navigation_targets
+
+        stops = [known]
+        held = agent.held()
+        targets = [agent.class_of(t) for t in navigation_targets(agent)]
+        while targets and targets[0] == known.cls:
+            targets.pop(0)
+        for cls in targets[: self.stand_ahead]:
+            if held is not None and held.key == cls:
+                continue
+            pool = [k for k in agent.instances(cls) if k.id != known.id and k.id not in agent.unreachable
+                    and not agent.world.held_chain(k.id) and not agent.spent(k.id, cls)]
+            if not pool:
+                break
+            last = stops[-1].at
+            stops.append(min(pool, key=lambda k: (k.at[0] - last[0]) ** 2 + (k.at[1] - last[1]) ** 2))
+        if len(stops) == 1:
+            return agent.stand_cell(known)
+        for stop in stops:   # a thing moved since (put down, carried) has other stand cells now
+            if self._stood.setdefault(stop.id, stop.at) != stop.at:
+                self._stood[stop.id] = stop.at
+                self._tours._cells.pop(stop.id, None)
+                self._tours._pairs = {k: v for k, v in self._tours._pairs.items() if stop.id not in k}
+        metres, cell = self._tours.tour(agent, stops)
+        return cell if np.isfinite(metres) and cell is not None else agent.stand_cell(known)
+
     def next_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
         """With frames, the view that starts the shortest expected completion of the whole remaining
         plan (:meth:`plan_view`); where that has nothing to say, and for object-only, :meth:`greedy_view`."""
@@ -220,9 +277,8 @@ class SeFMPolicy(Policy):
         return self.planner.choose(agent, binding, target, weights)
 
     def greedy_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
-        """The view that reveals the most belief per metre: opening a shut receptacle reveals the
-        mass at it; standing on a mode reveals the mass the beliefs' sensor would see there and no
-        shut receptacle hides."""
+        """The look that reveals the most belief per metre driven (:meth:`_looks`); the belief's modes
+        where the map has no places; the nearest frontier when no look is worth :attr:`min_mass`."""
         field_ = agent.distances()
         X, W, modes = self.cloud(agent, target)
         W = W.copy()
@@ -232,31 +288,17 @@ class SeFMPolicy(Policy):
         hidden = np.zeros(len(X), dtype=bool)
         for x, y, r in self.sefm.hidden_places():
             hidden |= np.hypot(X[:, 0] - x, X[:, 1] - y) <= r
+        options = self._looks(agent, target, X, W, field_)
         seeing = self.map.sensor.range
-        options: list[tuple[float, float, View]] = []
-        for place in agent.known.values():  # every place is somewhere to look: what is in or on it
-            if place.movable or place.id in agent.inspected:
-                continue
-            where = self.map.place(place.id)
-            reach = where.reach if where is not None else agent.world.reach
-            near = np.hypot(X[:, 0] - place.at[0], X[:, 1] - place.at[1]) <= reach + 0.25
-            cell = agent.stand_cell(place, field_)
-            if cell is None:
-                continue
-            shut = place.openable and place.id not in agent.opened and not agent.world.items[place.id].is_open
-            mass = float(W[near].sum() if shut else W[near & ~hidden].sum())
-            why = f"opens {place.id}, where the belief is" if shut else f"looks at {place.id}, where the belief is"
-            options.append((mass, float(field_[cell]), View(cell, place.at, open=place.id if shut else None,
-                                                             why=why)))
         for mode in modes if self.modes_too or not options else ():  # the belief's modes, wherever they are
             view = self._view_of(agent, mode.mean, field_)
             if view is not None:
                 at = agent.grid.point(view.cell)
                 mass = float(W[(np.hypot(X[:, 0] - at[0], X[:, 1] - at[1]) <= seeing) & ~hidden].sum())
-                options.append((mass, float(field_[view.cell]), view))
-        fresh = [o for o in options if (o[2].cell, o[2].open) not in self.tried and o[0] > self.min_mass]
+                options.append(Look(mass, float(field_[view.cell]), view))
+        fresh = [o for o in options if (o.view.cell, o.view.open) not in self.tried and o.mass > self.min_mass]
         if fresh:
-            view = max(fresh, key=lambda o: o[0] / (o[1] + self.distance_scale))[2]
+            view = self._first_of_tour(agent, fresh)
         else:
             fallback = self.fallback.next_view(agent, binding, target)
             if fallback is None:
@@ -264,6 +306,180 @@ class SeFMPolicy(Policy):
             view = View(fallback.cell, fallback.look_at, fallback.open, f"{fallback.why} (the belief is spent)")
         self.tried.add((view.cell, view.open))
         return view
+
+    tour_views = 8
+    """How many of the best looks (by belief per metre) the search orders as a tour before taking the
+    first (:meth:`_first_of_tour`); 1 is the greedy rule."""
+
+    def _first_of_tour(self, agent: Agent, looks: Sequence[Look]) -> View:
+        """The first look of the shortest expected search through the best :attr:`tour_views` looks.
+
+        Searching for one thing, an order of looks v1, v2, ... costs, in expectation, each drive times
+        the chance the thing is still unfound when it starts: E = Σ_k (d(v_k-1, v_k) + scale) · (1 − Σ_j<k
+        p_j), where p_j is the belief look j reveals that the looks before it have not (a look from one
+        cell sees every place within reach of it, so a place two looks reach counts once). One greedy
+        step (the most belief per metre) can leave a near, fairly likely place behind, to be driven back
+        to later; the order is built greedily from where the robot is and then improved by moving one
+        look at a time to wherever E falls most (or-opt), and the robot goes to the first look.
+        Approximations: the looks are the best few, not all; what is seen on the way is not counted."""
+        best = sorted(looks, key=lambda o: -o.mass / (o.metres + self.distance_scale))[: self.tour_views]
+        if len(best) < 2:
+            return best[0].view
+        n = len(best)
+        here = np.array([o.metres for o in best])
+        between = np.array([agent.grid.distances(o.view.cell)[[b.view.cell[0] for b in best],
+                                                             [b.view.cell[1] for b in best]] for o in best])
+        shown = [o.reveals for o in best]
+
+        def cost(order: Sequence[int]) -> float:
+            seen: dict[int, float] = {}
+            left, total, prev = 1.0, 0.0, -1
+            for k in order:
+                d = here[k] if prev < 0 else between[prev, k]
+                total += (d + self.distance_scale) * left
+                r = shown[k]
+                if r is None:
+                    gain = best[k].mass
+                else:
+                    gain = 0.0
+                    for j in np.flatnonzero(r):
+                        if j not in seen:
+                            seen[int(j)] = float(r[j])
+                            gain += float(r[j])
+                left = max(0.0, left - gain)
+                prev = k
+            return total
+
+        order: list[int] = []
+        todo = set(range(n))
+        while todo:   # greedy from where the robot is: the most new belief per metre
+            prev = order[-1] if order else -1
+            revealed = {int(j) for k in order if (r := shown[k]) is not None for j in np.flatnonzero(r)}
+
+            def ratio(k: int, prev: int = prev, revealed: set[int] = revealed) -> float:
+                r = shown[k]
+                gain = best[k].mass if r is None else float(sum(r[j] for j in np.flatnonzero(r) if j not in revealed))
+                return gain / ((here[k] if prev < 0 else between[prev, k]) + self.distance_scale)
+
+            k = max(sorted(todo), key=ratio)
+            order.append(k)
+            todo.remove(k)
+        current = cost(order)
+        for _ in range(4 * n):   # or-opt: move one look elsewhere while that shortens the expected search
+            moves = [(cost(o), o) for i in range(n) for j in range(n) if i != j
+                     for o in [order[:i] + order[i + 1:]] for o in [o[:j] + [order[i]] + o[j:]]]
+            value, candidate = min(moves, key=lambda m: m[0])
+            if value >= current - 1e-9:
+                break
+            current, order = value, candidate
+        return best[order[0]].view
+
+    def _places(self, agent: Agent) -> list[Known]:
+        """The places a look can reveal the contents of (not people, not things)."""
+        return [k for k in agent.known.values() if not k.movable and agent.world.items[k.id].key != PERSON]
+
+    def _shares(self, agent: Agent, places: Sequence[Known], X: np.ndarray, W: np.ndarray, cls: str) -> np.ndarray:
+        """The belief mass each place holds. A belief point is a pose to act from, within a place's
+        reach (+ one cell) of it, and may serve several places at once (a counter, the cabinet under
+        it, the microwave on it); it is shared among them as the class's prior shares it — in
+        proportion to the prior density each place's target puts there (a microwave's 0.12 on its few
+        cells outweighs one of twenty cabinets' share of 0.13) — and equally where the prior names
+        none of them (a room-level prior)."""
+        covers = np.zeros((len(X), len(places)), dtype=bool)
+        for j, place in enumerate(places):
+            where = self.map.place(place.id)
+            reach = where.reach if where is not None else agent.world.reach
+            covers[:, j] = np.hypot(X[:, 0] - place.at[0], X[:, 1] - place.at[1]) <= reach + 0.25
+        density = np.zeros((len(X), len(places)))
+        column = {class_key(p.id): j for j, p in enumerate(places)}
+        for name, mass in self.map.priors.get(cls, {}).items():
+            resolved = self.map.prior_target(name)
+            cells = self.map.target_cells(name)
+            if resolved is None or resolved[0] == "room" or mass <= 0 or not len(cells):
+                continue
+            members = [column[k] for i in resolved[1] if (k := class_key(self.map.places[i].name)) in column]
+            if members:
+                shared = covers[:, members].sum(axis=1, keepdims=True)
+                density[:, members] += np.where(covers[:, members], mass / len(cells) / np.maximum(shared, 1), 0.0)
+        named = density.sum(axis=1, keepdims=True)
+        split = np.where(named > 0, density / np.where(named > 0, named, 1.0),
+                         covers / np.maximum(covers.sum(axis=1, keepdims=True), 1))
+        return np.asarray(W @ split, dtype=float)
+
+    @staticmethod
+    def _shut(agent: Agent, place: Known) -> bool:
+        return place.openable and place.id not in agent.opened and not agent.world.items[place.id].is_open
+
+    def _looks(self, agent: Agent, target: str, X: np.ndarray, W: np.ndarray,
+               field_: np.ndarray) -> list[Look]:
+        """Every look worth considering: the belief it reveals, the metres to drive there, the view.
+
+        A look from a cell reveals what is in or on *every* open place within reach of it, not only
+        the one it was chosen for (in ALFRED's open rooms a stand cell is within reach of two or three
+        receptacles), and what the shut place it opens holds (the heaviest one within reach); a place
+        the robot has looked at from within reach while it was open holds nothing more to see. The
+        cells are each place's nearest stand cell by path and, on a 0.25 m lattice, every cell within
+        reach of a place, so a cell that reaches two likely places beats the nearest cell of either."""
+        places = self._places(agent)
+        share = self._shares(agent, places, X, W, agent.class_of(target))
+        live = np.array([p.id not in agent.inspected for p in places], dtype=bool) & (share > 0)
+        if not live.any():
+            return []
+        shut = np.array([self._shut(agent, p) for p in places], dtype=bool)
+        cells = self._lattice(agent, [p for p, ok in zip(places, live, strict=True) if ok])
+        for place in (p for p, ok in zip(places, live, strict=True) if ok):
+            cell = agent.stand_cell(place, field_)
+            if cell is not None:
+                cells.append(cell)
+        cells = list(dict.fromkeys(c for c in cells if np.isfinite(field_[c])))
+        if not cells:
+            return []
+        reach = self._reach_rows(agent, places, cells)
+        opens = np.where(reach & (live & ~shut)[None, :], share[None, :], 0.0)
+        boxes = np.where(reach & (live & shut)[None, :], share[None, :], 0.0)
+        best_box = np.argmax(boxes, axis=1)
+        options = []
+        for i, cell in enumerate(cells):
+            seen = opens[i].sum()
+            box = places[int(best_box[i])] if boxes[i, best_box[i]] > 0 else None
+            mass = float(seen + (boxes[i, best_box[i]] if box is not None else 0.0))
+            if mass <= 0:
+                continue
+            shown = [places[j].id for j in np.argsort(-opens[i]) if opens[i, j] > 0][:3]
+            look_at = box.at if box is not None else places[int(np.argmax(opens[i]))].at
+            why = (f"opens {box.id}" + (f" and looks at {', '.join(shown)}" if shown else "") if box is not None
+                   else f"looks at {', '.join(shown)}") + ", where the belief is"
+            reveals = opens[i].copy()
+            if box is not None:
+                reveals[int(best_box[i])] = boxes[i, best_box[i]]
+            options.append(Look(mass, float(field_[cell]), View(cell, look_at, open=box.id if box else None, why=why),
+                                reveals))
+        return options
+
+    def _lattice(self, agent: Agent, places: Sequence[Known]) -> list[Cell]:
+        """The free cells within reach of the places, one per 0.25 m."""
+        from seal_cli.sim.policies.coverage import one_per_quarter_metre
+
+        out: list[Cell] = []
+        for place in places:
+            if place.id not in self._stands:
+                cells = agent.stand_cells(place)
+                cells = cells[one_per_quarter_metre(cells, agent.grid.resolution)]
+                self._stands[place.id] = [(int(i), int(j)) for i, j in cells]
+            out.extend(self._stands[place.id])
+        return out
+
+    def _reach_rows(self, agent: Agent, places: Sequence[Known], cells: Sequence[Cell]) -> np.ndarray:
+        """Which places the robot can act on (and so see into or onto) from each cell: the world's
+        own rule (:meth:`~seal_cli.sim.world.World.within_reach`), kept per cell for the run."""
+        ids = tuple(p.id for p in places)
+        if ids != self._reach_ids:
+            self._reach_ids, self._rows = ids, {}
+        todo = [c for c in cells if c not in self._rows]
+        for cell in todo:
+            x, y = agent.grid.point(cell)
+            self._rows[cell] = np.array([agent.world.within_reach(i, (x, y, 0.0)) for i in ids], dtype=bool)
+        return np.array([self._rows[c] for c in cells], dtype=bool).reshape(len(cells), len(ids))
 
     min_mass = 1e-3
     """A view that would reveal less belief than this is not worth the drive."""
