@@ -277,8 +277,11 @@ class SeFMPolicy(Policy):
         return self.planner.choose(agent, binding, target, weights)
 
     def greedy_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
-        """The look that reveals the most belief per metre driven (:meth:`_looks`); the belief's modes
-        where the map has no places; the nearest frontier when no look is worth :attr:`min_mass`."""
+        """The first look of the shortest expected search through the looks that reveal the most belief
+        per metre (:meth:`_looks`, :meth:`_first_of_tour`); the belief's modes where the map has no places;
+        the nearest frontier when no look is worth :attr:`min_mass` — also once every place has been
+        looked at, for a thing that stands on none of them (the modes of a belief whose places are spent
+        lie where it has looked already, and chasing them wandered for tens of metres)."""
         field_ = agent.distances()
         X, W, modes = self.cloud(agent, target)
         W = W.copy()
@@ -290,7 +293,7 @@ class SeFMPolicy(Policy):
             hidden |= np.hypot(X[:, 0] - x, X[:, 1] - y) <= r
         options = self._looks(agent, target, X, W, field_)
         seeing = self.map.sensor.range
-        for mode in modes if self.modes_too or not options else ():  # the belief's modes, wherever they are
+        for mode in modes if self.modes_too or not self._places(agent) else ():  # the belief's modes, wherever they are
             view = self._view_of(agent, mode.mean, field_)
             if view is not None:
                 at = agent.grid.point(view.cell)
