@@ -201,22 +201,7 @@ class SeFMPolicy(Policy):
         dynamic programme over stand cells, :meth:`~seal_cli.sim.policies.oracle.OraclePolicy.tour`); the
         nearest cell when the next stop is not known yet — what is unknown is never a reason to stand
         elsewhere."""
-        from seal_cli.sim.policies.oracle import navigation_targets
-
-        stops = [known]
-        held = agent.held()
-        targets = [agent.class_of(t) for t in navigation_targets(agent)]
-        while targets and targets[0] == known.cls:
-            targets.pop(0)
-        for cls in targets[: self.stand_ahead]:
-            if held is not None and held.key == cls:
-                continue
-            pool = [k for k in agent.instances(cls) if k.id != known.id and k.id not in agent.unreachable
-                    and not agent.world.held_chain(k.id) and not agent.spent(k.id, cls)]
-            if not pool:
-                break
-            last = stops[-1].at
-            stops.append(min(pool, key=lambda k: (k.at[0] - last[0]) ** 2 + (k.at[1] - last[1]) ** 2))
+        stops = [known, *self._ahead(agent, known.cls, known.at, known.id)]
         if len(stops) == 1:
             return agent.stand_cell(known)
         for stop in stops:   # a thing moved since (put down, carried) has other stand cells now
@@ -226,6 +211,27 @@ class SeFMPolicy(Policy):
                 self._tours._pairs = {k: v for k, v in self._tours._pairs.items() if stop.id not in k}
         metres, cell = self._tours.tour(agent, stops)
         return cell if np.isfinite(metres) and cell is not None else agent.stand_cell(known)
+
+    def _ahead(self, agent: Agent, cls: str, at: tuple[float, float], skip: str | None = None) -> list[Known]:
+        """The known stops of the plan after the one for ``cls`` (at most :attr:`stand_ahead`), each the
+        instance nearest the stop before it; up to the first stop of which no instance is known."""
+        from seal_cli.sim.policies.oracle import navigation_targets
+
+        held = agent.held()
+        targets = [agent.class_of(t) for t in navigation_targets(agent)]
+        while targets and targets[0] == cls:
+            targets.pop(0)
+        stops: list[Known] = []
+        for name in targets[: self.stand_ahead]:
+            if held is not None and held.key == name:
+                continue
+            pool = [k for k in agent.instances(name) if k.id != skip and k.id not in agent.unreachable
+                    and not agent.world.held_chain(k.id) and not agent.spent(k.id, name)]
+            if not pool:
+                break
+            last = stops[-1].at if stops else at
+            stops.append(min(pool, key=lambda k: (k.at[0] - last[0]) ** 2 + (k.at[1] - last[1]) ** 2))
+        return stops
 
     def next_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
         """With frames, the view that starts the shortest expected completion of the whole remaining
@@ -284,7 +290,7 @@ class SeFMPolicy(Policy):
         lie where it has looked already, and chasing them wandered for tens of metres)."""
         field_ = agent.distances()
         X, W, modes = self.cloud(agent, target)
-        W = W.copy()
+        W = above_floor(W)
         for k in agent.instances(agent.class_of(target)):
             if agent.spent(k.id, target):  # the belief is right there, but that one will not do
                 W[np.hypot(X[:, 0] - k.at[0], X[:, 1] - k.at[1]) <= agent.world.reach] = 0.0
@@ -301,7 +307,7 @@ class SeFMPolicy(Policy):
                 options.append(Look(mass, float(field_[view.cell]), view))
         fresh = [o for o in options if (o.view.cell, o.view.open) not in self.tried and o.mass > self.min_mass]
         if fresh:
-            view = self._first_of_tour(agent, fresh)
+            view = self._first_of_tour(agent, fresh, target)
         else:
             fallback = self.fallback.next_view(agent, binding, target)
             if fallback is None:
@@ -314,7 +320,7 @@ class SeFMPolicy(Policy):
     """How many of the best looks (by belief per metre) the search orders as a tour before taking the
     first (:meth:`_first_of_tour`); 1 is the greedy rule."""
 
-    def _first_of_tour(self, agent: Agent, looks: Sequence[Look]) -> View:
+    def _first_of_tour(self, agent: Agent, looks: Sequence[Look], target: str) -> View:
         """The first look of the shortest expected search through the best :attr:`tour_views` looks.
 
         Searching for one thing, an order of looks v1, v2, ... costs, in expectation, each drive times
@@ -324,14 +330,32 @@ class SeFMPolicy(Policy):
         step (the most belief per metre) can leave a near, fairly likely place behind, to be driven back
         to later; the order is built greedily from where the robot is and then improved by moving one
         look at a time to wherever E falls most (or-opt), and the robot goes to the first look.
-        Approximations: the looks are the best few, not all; what is seen on the way is not counted."""
-        best = sorted(looks, key=lambda o: -o.mass / (o.metres + self.distance_scale))[: self.tour_views]
+        Of looks equally good (the same belief for the same drive: the cells all round a fridge), the one
+        nearer the plan's next known stop — a tie-break, so a known goal never draws the
+        robot away from where the thing is likelier. Approximations: the looks are the best few, not all;
+        what is seen on the way is not counted."""
+
+        def score(o: Look) -> float:   # equal to rounding: the same looks for SeFM and object-only
+            return round(o.mass / (o.metres + self.distance_scale), 6)
+
+        ranked = sorted(looks, key=lambda o: -score(o))
+        pool = ranked[: self.tour_views]
+        pool += [o for o in ranked[len(pool):] if score(o) == score(pool[-1])][: self.tour_views]
+        fields = {o.view.cell: agent.grid.distances(o.view.cell) for o in pool}
+        ahead = self._ahead(agent, agent.class_of(target), agent.world.robot.pose[:2])[:1]
+        stands = agent.stand_cells(ahead[0]) if ahead else np.zeros((0, 2), dtype=int)
+
+        def onward(o: Look) -> float:   # metres on to the plan's next known stop
+            f = fields[o.view.cell][stands[:, 0], stands[:, 1]] if len(stands) else np.zeros(1)
+            return float(f.min())
+
+        best = sorted(pool, key=lambda o: (-score(o), onward(o)))[: self.tour_views]
         if len(best) < 2:
             return best[0].view
         n = len(best)
         here = np.array([o.metres for o in best])
-        between = np.array([agent.grid.distances(o.view.cell)[[b.view.cell[0] for b in best],
-                                                             [b.view.cell[1] for b in best]] for o in best])
+        between = np.array([fields[o.view.cell][[b.view.cell[0] for b in best], [b.view.cell[1] for b in best]]
+                            for o in best])
         shown = [o.reveals for o in best]
 
         def cost(order: Sequence[int]) -> float:
@@ -351,7 +375,7 @@ class SeFMPolicy(Policy):
                             gain += float(r[j])
                 left = max(0.0, left - gain)
                 prev = k
-            return total
+            return round(total, 6)   # equal to rounding: the same order for SeFM and object-only
 
         order: list[int] = []
         todo = set(range(n))
@@ -502,3 +526,14 @@ class SeFMPolicy(Policy):
                 k = int(near[np.argmin(costs[near])])
                 return View((int(cells[k, 0]), int(cells[k, 1])), point, why="goes to the belief's best mode")
         return None
+
+
+def above_floor(W: np.ndarray) -> np.ndarray:
+    """A belief over free cells less its uniform floor (its least value), renormalised: a share that is
+    the same everywhere is no reason to look anywhere, and counted per cell it would favour the places
+    with the most cells around them. A frame belief with no context is its object's belief plus the
+    frame potential's floor, so with the floor taken off SeFM searches for the first thing of a plan
+    exactly as object-only does, and parts from it only where the frame's context says something."""
+    rest = W - W.min() if len(W) else W.copy()
+    total = rest.sum()
+    return rest / total if total > 0 else W.copy()
