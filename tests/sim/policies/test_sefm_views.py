@@ -1,0 +1,163 @@
+"""SeFM's greedy search (``SeFMPolicy.greedy_view``): what a look reveals, the short tour, where to stand."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from seal_cli.frames.library import Library
+from seal_cli.maps.geometry import OccupancyGrid
+from seal_cli.maps.model import Map, ObjectTruth, Place, Robot, Room, Sensor
+from seal_cli.sensing.model import RangeSensor
+from seal_cli.sim.agent import Agent, Scene, View
+from seal_cli.sim.navigation import Grid
+from seal_cli.sim.policies.object_only import ObjectOnlyPolicy
+from seal_cli.sim.policies.sefm import Look, SeFMPolicy, above_floor
+from seal_cli.sim.world import Item, World
+from seal_cli.sim.world import Robot as WorldRobot
+
+PLACES = [("shelf_1", "shelf", (1.0, 1.4), False), ("shelf_2", "shelf", (2.0, 1.4), False),
+          ("microwave_1", "microwave", (4.0, 1.4), True), ("cabinet_1", "cabinet", (4.0, 1.3), True),
+          ("cabinet_2", "cabinet", (7.0, 1.4), True), ("table_1", "dining_table", (7.5, 1.4), False)]
+
+
+def corridor(library: Library, priors: dict[str, dict[str, float]], start: float = 0.0,
+             apple_on: str = "cabinet_2") -> Scene:
+    """A corridor of free cells 8 m x 1 m (0.25 m), its places along the north side, the robot at the west."""
+    pts = [(x, y) for x in np.arange(0.0, 8.01, 0.25) for y in np.arange(0.0, 1.01, 0.25)]
+    items = [Item(n, c, at, movable=False, receptacle=True, openable=o) for n, c, at, o in PLACES]
+    where = dict((n, at) for n, _, at, _ in PLACES)[apple_on]
+    items.append(Item("apple_1", "apple", (where[0], where[1] - 0.1), parent=apple_on))
+    world = World(items, WorldRobot(pose=(start, 0.5, 0.0)), taxonomy=library.taxonomy, reach=1.5,
+                  sensor=RangeSensor(Sensor(range=1.5)))
+    m = Map("corridor", (-0.5, -0.5, 8.5, 2.0), rooms=(Room.box("kitchen", -0.5, -0.5, 8.5, 2.0),),
+            places=tuple(Place(n, c, at, openable=o, reach=0.75) for n, c, at, o in PLACES), priors=priors,
+            objects=tuple(ObjectTruth(i.key, i.at, i.parent) for i in items if i.movable),
+            robot=Robot((start, 0.5, 0.0)), sensor=Sensor(range=0.75), grid=OccupancyGrid.from_cells(pts, 0.25))
+    return Scene(world, m, Grid.from_points(pts, 0.25, connectivity=4), tuple(sorted({i.key for i in items})),
+                 "corridor")
+
+
+def ready(library: Library, scene: Scene, policy: SeFMPolicy, frames: list[tuple[str, dict[str, str]]]) -> Agent:
+    """An agent with its plan made and its first look taken, as the run leaves it before searching."""
+    agent = Agent(scene, library, policy, rng=np.random.default_rng(0))
+    agent.state = agent.initial_state()
+    policy.begin(agent)
+    agent.look()
+    commanded = [library.frame(f).bind(v) for f, v in frames]
+    agent.todo, agent.steps, agent.index = list(commanded), agent.planner(commanded, library, agent.state), 0
+    return agent
+
+
+def shares(policy: SeFMPolicy, agent: Agent) -> dict[str, float]:
+    X, W, _ = policy.cloud(agent, "apple")
+    places = policy._places(agent)
+    return dict(zip([p.id for p in places], policy._shares(agent, places, X, above_floor(W), "apple"),
+                    strict=True))
+
+
+def test_a_belief_point_that_serves_several_places_is_shared_as_the_prior_shares_it(library: Library) -> None:
+    """The microwave and a cabinet stand together: the microwave's 0.4 on its own cells outweighs the
+    cabinets' 0.4, spread over two cabinets, where both claim the same cells."""
+    scene = corridor(library, {"apple": {"microwave": 0.4, "cabinet": 0.4, "dining_table": 0.1}})
+    policy = SeFMPolicy(particles=300)
+    got = shares(policy, ready(library, scene, policy, [("Pick", {"theme": "apple"})]))
+    # nearly the same cells: the microwave's density there is 0.4 / its cells, the cabinets' 0.4 / twice as many
+    assert got["microwave_1"] / got["cabinet_1"] == pytest.approx(2.0, rel=0.15)
+    assert got["microwave_1"] + got["cabinet_1"] + got["cabinet_2"] + got["table_1"] <= 1.0 + 1e-9
+    assert got["shelf_1"] == pytest.approx(0.0, abs=0.02)   # the prior puts nothing there
+
+
+def test_a_look_reveals_every_open_place_within_reach_of_its_cell(library: Library) -> None:
+    scene = corridor(library, {"apple": {"shelf": 0.8}}, start=5.0)
+    policy = SeFMPolicy(particles=300)
+    agent = ready(library, scene, policy, [("Pick", {"theme": "apple"})])
+    X, W, _ = policy.cloud(agent, "apple")
+    looks = policy._looks(agent, "apple", X, above_floor(W), agent.distances())
+    ids = [p.id for p in policy._places(agent)]
+    both = [o for o in looks if o.reveals is not None and o.reveals[ids.index("shelf_1")] > 0
+            and o.reveals[ids.index("shelf_2")] > 0]
+    one = [o for o in looks if o.reveals is not None and o.reveals[ids.index("shelf_2")] == 0]
+    assert both and one
+    assert max(o.mass for o in both) == pytest.approx(sum(shares(policy, agent)[s] for s in ("shelf_1", "shelf_2")))
+    assert max(o.mass for o in both) > max(o.mass for o in one) + 0.2
+    assert all(o.view.open is None for o in both)            # shelves do not open
+
+
+def test_a_shut_place_in_reach_is_opened_by_the_look(library: Library) -> None:
+    scene = corridor(library, {"apple": {"microwave": 0.9}}, start=4.0)
+    policy = SeFMPolicy(particles=300)
+    agent = ready(library, scene, policy, [("Pick", {"theme": "apple"})])
+    view = policy.greedy_view(agent, agent.steps[0], "apple")
+    assert view is not None and view.open == "microwave_1"
+    assert view.cell == agent.robot_cell()                    # it is in reach already: no drive
+    assert "opens microwave_1" in view.why
+
+
+def test_the_tour_goes_to_a_near_likely_place_before_a_better_one_that_leads_away(library: Library) -> None:
+    """Greedy by belief per metre goes east to the 0.3 first and leaves the 0.15 at the robot's back,
+    to be driven back to; the expected cost of the whole order says take the near one on the way."""
+    scene = corridor(library, {"apple": {"shelf": 0.8}}, start=3.0)
+    policy = SeFMPolicy(particles=50)
+    agent = ready(library, scene, policy, [("Pick", {"theme": "apple"})])
+    places = policy._places(agent)
+    ids = [p.id for p in places]
+
+    def look(x: float, mass: float, place: str) -> Look:
+        reveals = np.zeros(len(places))
+        reveals[ids.index(place)] = mass
+        cell = agent.grid.cell((x, 0.5))
+        return Look(mass, float(agent.distances()[cell]), View(cell, (x, 1.4)), reveals)
+
+    near, east, far = look(2.0, 0.15, "shelf_2"), look(4.5, 0.3, "microwave_1"), look(6.0, 0.3, "cabinet_2")
+    greedy = max([near, east, far], key=lambda o: o.mass / (o.metres + policy.distance_scale))
+    assert greedy is east
+    assert policy._first_of_tour(agent, [near, east, far], "apple") == near.view
+    policy.tour_views = 1
+    assert policy._first_of_tour(agent, [near, east, far], "apple") == east.view
+
+
+def test_the_stand_cell_is_the_one_nearest_the_next_known_stop(library: Library) -> None:
+    """The apple is known (seen from afar); the table it goes on is known: of the cells within reach of
+    the apple, the one that makes the drive there and on to the table shortest."""
+    scene = corridor(library, {"apple": {"shelf": 0.9}}, start=5.0, apple_on="shelf_1")
+    policy = SeFMPolicy(particles=50)
+    agent = ready(library, scene, policy, [("Place", {"theme": "apple", "goal": "dining_table"})])
+    agent.known["apple_1"] = agent._known(scene.world.items["apple_1"])
+    apple = agent.known["apple_1"]
+    cell = policy.stand(agent, apple)
+    here, table = agent.distances(), agent.stand_cells(agent.known["table_1"])
+    cells = agent.stand_cells(apple)
+    total = [here[tuple(c)] + agent.grid.distances((int(c[0]), int(c[1])))[table[:, 0], table[:, 1]].min()
+             for c in cells]
+    assert cell is not None and here[cell] + agent.grid.distances(cell)[table[:, 0], table[:, 1]].min() == \
+        pytest.approx(min(total))
+    policy.stand_ahead = 0
+    assert policy.stand(agent, apple) == agent.stand_cell(apple)
+
+
+def test_once_every_place_is_looked_at_it_searches_the_frontier_not_the_spent_modes(library: Library) -> None:
+    scene = corridor(library, {"apple": {"shelf": 0.8}})
+    policy = SeFMPolicy(particles=100)
+    agent = ready(library, scene, policy, [("Pick", {"theme": "apple"})])
+    agent.inspected |= {p.id for p in policy._places(agent)}
+    view = policy.greedy_view(agent, agent.steps[0], "apple")
+    assert view is not None and view.why.endswith("(the belief is spent)")
+
+
+def test_with_no_context_sefm_and_object_only_look_the_same(library: Library) -> None:
+    """The first Pick's frame belief is its object's belief plus the frame potential's floor: with the
+    floor off, the two searches see the same numbers and choose the same look."""
+    priors = {"apple": {"microwave": 0.4, "cabinet": 0.4, "shelf": 0.1}}
+    views = []
+    for policy in (SeFMPolicy(particles=200), ObjectOnlyPolicy(particles=200)):
+        agent = ready(library, corridor(library, priors), policy, [("Pick", {"theme": "apple"})])
+        X, W, _ = policy.cloud(agent, "apple")
+        views.append((policy.greedy_view(agent, agent.steps[0], "apple"), above_floor(W)))
+    assert views[0][0] == views[1][0]
+    assert np.abs(views[0][1] - views[1][1]).max() < 1e-6
+
+
+def test_above_floor_takes_off_the_least_value_and_renormalises() -> None:
+    assert above_floor(np.array([0.1, 0.3, 0.5])) == pytest.approx([0.0, 1 / 3, 2 / 3])
+    assert above_floor(np.full(4, 0.25)) == pytest.approx([0.25] * 4)    # nothing above the floor: as it was
