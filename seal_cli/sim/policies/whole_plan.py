@@ -45,7 +45,8 @@ COVER_SAMPLE = 40
 
 @dataclass(frozen=True, eq=False)
 class Region:
-    """Somewhere one view reveals: a place (``place`` set; opened first if shut) or a room's free space."""
+    """A room (its free space, seen from its best-seeing cells) or a place (``place`` set), whose views
+    are candidates of the search."""
 
     name: str
     view: Cell
@@ -54,13 +55,7 @@ class Region:
     """Indices into the map's free cells."""
     place: str | None = None
     views: tuple[Cell, ...] = ()
-    """Cells that see about as much of the region as :attr:`view` does (a room's); the robot looks
-    from the one it can reach soonest."""
-
-    def nearest_view(self, field_: np.ndarray) -> Cell:
-        """The view the robot reaches soonest, by the shortest-path field from where it is."""
-        options = (self.view, *self.views)
-        return min(options, key=lambda c: float(field_[c]))
+    """Cells that see about as much of the region as :attr:`view` does (a room's), the best first."""
 
 
 def _room_views(agent: Agent, inside: np.ndarray, room_cells: np.ndarray) -> list[Cell]:
