@@ -104,10 +104,10 @@ Tables = Callable[[int], DriveTable]
 
 
 def greedy_tour(tables: Tables, nodes: Sequence[int], belief: np.ndarray, start: int, *,
-                first: int | None = None, exclude: frozenset[int] = frozenset()) -> Tour:
+                first: int | None = None) -> Tour:
     """The greedy search for one thing from node ``start``: each next view (an index into the candidate
     ``nodes``) the one whose drive and look reveal the most of ``belief`` not yet seen per metre;
-    ``first``: the view to start with, whatever the rule says; ``exclude``: views never taken."""
+    ``first``: the view to start with, whatever the rule says. The rule never takes the view it is at."""
     n = len(belief)
     seen_at = np.full(n, np.inf)
     look = np.full(n, -1, dtype=np.int64)
@@ -124,7 +124,7 @@ def greedy_tour(tables: Tables, nodes: Sequence[int], belief: np.ndarray, start:
         else:
             mass = hit.astype(float) @ belief
             score = np.where(np.isfinite(table.length), mass / (np.nan_to_num(table.length, posinf=0.0) + SCALE), -1.0)
-            for k in exclude | {i for i, node in enumerate(nodes) if node == at}:
+            for k in (i for i, node in enumerate(nodes) if node == at):
                 score[k] = -1.0
             v = int(np.argmax(score))
             if score[v] <= 0 or mass[v] <= 0:

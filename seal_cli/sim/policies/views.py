@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from seal_cli.sim.navigation import Cell, Grid
+from seal_cli.sim.navigation import Grid
 
 __all__ = ["SPACING", "DriveTable", "Lattice", "lattice_of"]
 
@@ -196,7 +196,3 @@ def lattice_of(grid: Grid, sees: Callable[[tuple[float, float], np.ndarray], np.
     _LATTICES[key] = lattice
     return lattice
 
-
-def cell_node(lattice: Lattice, grid: Grid, cell: Cell) -> int:
-    """The node of a grid cell."""
-    return int(lattice.node_of(np.asarray([grid.point(cell)]))[0])
