@@ -292,9 +292,10 @@ class SeFMPolicy(Policy):
     def greedy_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
         """The first look of the shortest expected search through the looks that reveal the most belief
         per metre (:meth:`_looks`, :meth:`_first_of_tour`); the belief's modes where the map has no places;
-        the nearest frontier when no look is worth :attr:`min_mass` — also once every place has been
-        looked at, for a thing that stands on none of them (the modes of a belief whose places are spent
-        lie where it has looked already, and chasing them wandered for tens of metres)."""
+        the nearest frontier when no look is worth :attr:`min_mass`. Once every place has been looked at:
+        the belief's modes where the class's prior names a room (the thing may stand anywhere in it), the
+        frontier where the prior names only places (ALFRED's rooms: the modes of a belief whose places
+        are spent lie where it has looked already, and chasing them wandered for tens of metres)."""
         field_ = agent.distances()
         X, W, modes = self.cloud(agent, target)
         W = above_floor(W)
@@ -306,7 +307,9 @@ class SeFMPolicy(Policy):
             hidden |= np.hypot(X[:, 0] - x, X[:, 1] - y) <= r
         options = self._looks(agent, target, X, W, field_)
         seeing = self.map.sensor.range
-        for mode in modes if self.modes_too or not self._places(agent) else ():  # the belief's modes, wherever they are
+        roomy = any((t := self.map.prior_target(name)) is not None and t[0] == "room"
+                    for name in self.map.priors.get(agent.class_of(target), {}))
+        for mode in modes if self.modes_too or not self._places(agent) or (not options and roomy) else ():
             view = self._view_of(agent, mode.mean, field_)
             if view is not None:
                 at = agent.grid.point(view.cell)
