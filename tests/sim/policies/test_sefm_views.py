@@ -161,3 +161,14 @@ def test_with_no_context_sefm_and_object_only_look_the_same(library: Library) ->
 def test_above_floor_takes_off_the_least_value_and_renormalises() -> None:
     assert above_floor(np.array([0.1, 0.3, 0.5])) == pytest.approx([0.0, 1 / 3, 2 / 3])
     assert above_floor(np.full(4, 0.25)) == pytest.approx([0.25] * 4)    # nothing above the floor: as it was
+
+
+def test_once_every_place_is_looked_at_a_room_level_prior_still_leads_to_its_modes(library: Library) -> None:
+    """In a house the prior names rooms: the thing may stand anywhere in the room, not at a place, so
+    the belief's modes stay the places to look (the frontier there is blind to the prior)."""
+    scene = corridor(library, {"apple": {"kitchen": 0.8}})
+    policy = SeFMPolicy(particles=100)
+    agent = ready(library, scene, policy, [("Pick", {"theme": "apple"})])
+    agent.inspected |= {p.id for p in policy._places(agent)}
+    view = policy.greedy_view(agent, agent.steps[0], "apple")
+    assert view is not None and view.why == "goes to the belief's best mode"
