@@ -205,9 +205,9 @@ class SeFMPolicy(Policy):
         nearest cell when the next stop is not known yet — what is unknown is never a reason to stand
         elsewhere — and on a grid finer than :data:`THINNED`, where the tour's stand cells are thinned to
         one per 0.25 m and lose more than looking ahead saves (the apartment's 5 cm grid: 0.1–0.2 m a
-        command on the map suite)."""
+        command on the map suite) — and in houses (maps of :attr:`min_rooms` rooms or more), as before."""
         stops = [known, *self._ahead(agent, known.cls, known.at, known.id)]
-        if len(stops) == 1 or agent.grid.resolution < THINNED:
+        if len(stops) == 1 or agent.grid.resolution < THINNED or len(self.map.rooms) >= self.min_rooms:
             return agent.stand_cell(known)
         for stop in stops:   # a thing moved since (put down, carried) has other stand cells now
             if self._stood.setdefault(stop.id, stop.at) != stop.at:
@@ -296,6 +296,8 @@ class SeFMPolicy(Policy):
         the belief's modes where the class's prior names a room (the thing may stand anywhere in it), the
         frontier where the prior names only places (ALFRED's rooms: the modes of a belief whose places
         are spent lie where it has looked already, and chasing them wandered for tens of metres)."""
+        if len(self.map.rooms) >= self.min_rooms:
+            return self._house_view(agent, binding, target)
         field_ = agent.distances()
         X, W, modes = self.cloud(agent, target)
         W = above_floor(W)
@@ -517,6 +519,57 @@ class SeFMPolicy(Policy):
             x, y = agent.grid.point(cell)
             self._rows[cell] = np.array([agent.world.within_reach(i, (x, y, 0.0)) for i in ids], dtype=bool)
         return np.array([self._rows[c] for c in cells], dtype=bool).reshape(len(cells), len(ids))
+
+    def _house_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
+        """The greedy view of earlier rounds, kept for maps of :attr:`min_rooms` rooms or more: each place
+        not yet looked into or onto, scored by the belief mass at it (for a shut one, all of it) per
+        metre (+ :attr:`house_scale`) to its nearest stand cell; the belief's modes when no place is
+        left. The single-room view (what a look reveals of every place in reach, the short tour, the
+        frontier once the places are spent) was longer in houses, where a look from a place's stand
+        cell reaches no other place and the prior names rooms (docs/benchmarks.md: the context suite)."""
+        field_ = agent.distances()
+        X, W, modes = self.cloud(agent, target)
+        W = W.copy()
+        for k in agent.instances(agent.class_of(target)):
+            if agent.spent(k.id, target):
+                W[np.hypot(X[:, 0] - k.at[0], X[:, 1] - k.at[1]) <= agent.world.reach] = 0.0
+        hidden = np.zeros(len(X), dtype=bool)
+        for x, y, r in self.sefm.hidden_places():
+            hidden |= np.hypot(X[:, 0] - x, X[:, 1] - y) <= r
+        options: list[tuple[float, float, View]] = []
+        for place in agent.known.values():
+            if place.movable or place.id in agent.inspected:
+                continue
+            where = self.map.place(place.id)
+            reach = where.reach if where is not None else agent.world.reach
+            near = np.hypot(X[:, 0] - place.at[0], X[:, 1] - place.at[1]) <= reach + 0.25
+            cell = agent.stand_cell(place, field_)
+            if cell is None:
+                continue
+            shut = self._shut(agent, place)
+            mass = float(W[near].sum() if shut else W[near & ~hidden].sum())
+            why = f"opens {place.id}, where the belief is" if shut else f"looks at {place.id}, where the belief is"
+            options.append((mass, float(field_[cell]), View(cell, place.at, open=place.id if shut else None,
+                                                             why=why)))
+        for mode in modes if self.modes_too or not options else ():
+            view = self._view_of(agent, mode.mean, field_)
+            if view is not None:
+                at = agent.grid.point(view.cell)
+                seen = (np.hypot(X[:, 0] - at[0], X[:, 1] - at[1]) <= self.map.sensor.range) & ~hidden
+                options.append((float(W[seen].sum()), float(field_[view.cell]), view))
+        fresh = [o for o in options if (o[2].cell, o[2].open) not in self.tried and o[0] > self.min_mass]
+        if fresh:
+            view = max(fresh, key=lambda o: o[0] / (o[1] + self.house_scale))[2]
+        else:
+            fallback = self.fallback.next_view(agent, binding, target)
+            if fallback is None:
+                return None
+            view = View(fallback.cell, fallback.look_at, fallback.open, f"{fallback.why} (the belief is spent)")
+        self.tried.add((view.cell, view.open))
+        return view
+
+    house_scale = 1.0
+    """The metres a look costs beside its drive in :meth:`_house_view` (earlier rounds' choice)."""
 
     min_mass = 1e-3
     """A view that would reveal less belief than this is not worth the drive."""
