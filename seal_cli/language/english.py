@@ -214,5 +214,10 @@ NUMBER_OF = frozenset(["tell me the number of", "tell me the total number of", "
 """Asking for a count by its number ("*tell me the number of* toys on the desk", "*what number of* people
 ..."): it means "tell me how many ..." (``NUMBER_MEANS``, a unit of counting when the library has it)."""
 NUMBER_MEANS = "tell me how many"
+BEING_AT = (frozenset(["once", "when", "as soon as", "after"]), frozenset(["you're", "you are", "you 're"]),
+            frozenset(["in", "at", "inside", "by", "near", "next to", "beside", "into"]))
+""""*Once you're in* the living room, find Peyton": the robot is to be there first, "go to the living room, then
+..." (``BEING_MEANS``): a subordinator, "you're", a preposition of place, a phrase, then the clause."""
+BEING_MEANS = "go"
 LET_KNOW = ("let", "know")
 """"*let* me *know* ...", "*let* Amara *know* that ...": "tell me ...", "tell Amara that ..." (``QUESTION_MEANS``)."""

@@ -816,12 +816,15 @@ class State:
             return Match(1)                # "Put a pan with a spoon in it, in the sink"
         if low in ("then", "after that", "afterwards", "finally", "after", "before", "while", "once done",
                    "when done") or span > 1 and low != ",":
+            again = self._path_again(j)
+            if again:                      # "go to the kitchen and then *to the bedroom*": the verb again
+                return Match(j - i, (merge(words, i, j - i, Tag.SEP), Word("", words[j].start, words[j].start,
+                                                                            Tag.VERB, again)),
+                             expect=False, verb=again, using=False)
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
         if low in ("and", ",", "or") and self.np_starts(j) and self.prev_tag() in ("WORD", "NAME", "PRON"):
-            after = words[j + 1].lower if j + 1 < len(words) else ""
             unknown_verb = (nxt not in DETERMINERS and nxt not in POSSESSIVES and nxt not in PRONOUNS
-                            and not capitalised(words[j]) and nxt not in NUMBERS
-                            and (after in DETERMINERS or after in POSSESSIVES or after in ("it", "them", "me")))
+                            and not capitalised(words[j]) and nxt not in NUMBERS and self._object_after(j + 1))
             if not unknown_verb:
                 return Match(n, (merge(words, i, n, Tag.AND_NP),))
         m = match_phrase(words, j, PREPOSITIONS) if low == "and" and n == 1 else 0
@@ -837,6 +840,34 @@ class State:
         if low in ("and", "then", ",", ";", "or"):
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
         return None
+
+    def _path_again(self, j: int) -> str | None:
+        """The verb of the clause before when a path without a verb follows a separator of sequence: "go to
+        the kitchen and then *to the bedroom*", "walk to the door, then back to the sofa" (a verb of motion,
+        a frame with a goal, and only a path phrase after: the same verb said again); None."""
+        words = self.words
+        if self.verb_index < 0 or str(self.out[self.verb_index].info) not in self.lexicon.goals:
+            return None
+        k = j + (1 if j < len(words) and words[j].lower == "back" else 0)
+        n = match_phrase(words, k, PREPOSITIONS) if k < len(words) else 0
+        if not n or PREPOSITIONS[" ".join(w.lower for w in words[k:k + n])] not in PATH_PREPOSITIONS or \
+                not self.np_starts(k + n):
+            return None
+        return str(self.out[self.verb_index].info)
+
+    def _object_after(self, k: int) -> bool:
+        """Whether what starts at ``k`` is the object of a verb said just before it: a determiner, a
+        possessive, an object pronoun or a name ("..., and *let Kim* know"), after a particle too
+        ("..., *track down the* towel"): the word before is then a verb, not a noun of a list."""
+        words = self.words
+        if k + 1 < len(words) and words[k].lower in PARTICLES and words[k].lower not in PREPOSITIONS and \
+                verb_lemma(words[k - 1].lower) and words[k - 1].lower not in self.lexicon.things:
+            k += 1                       # "track *down* the towel": the particle of a verb, not "fork *in* the"
+        if k >= len(words):
+            return False
+        low = words[k].lower
+        return low in DETERMINERS or low in POSSESSIVES or low in ("it", "them", "me") or \
+            capitalised(words[k]) and low not in self.lexicon.things and verb_lemma(words[k - 1].lower) is not None
 
     def clock_time(self, i: int) -> int:
         """How many words a time said with a number take at ``i`` (0: none): "at three", "by 5 pm",

@@ -195,3 +195,46 @@ def test_paraphrased_requests_of_gpsr_commands(library: Library) -> None:
     assert [f for f, _ in frames("I'd really appreciate it if you brought me a toy.", library)] == ["Bring"]
     assert texts("go with sam to the bedroom", library) == [("Guide", {"theme": "sam", "goal": "the bedroom"})]
     assert texts("go with milk to the kitchen", library) == [("Go", {"goal": "the kitchen"})]   # a word: no one
+
+
+def test_being_somewhere_before_a_clause_is_going_there_first(library: Library) -> None:
+    assert texts("Once you're in the garage, find the drill", library) == [
+        ("Go", {"goal": "the garage"}), ("Find", {"theme": "the drill"})]
+    assert [f for f, _ in frames("when you are at the gate, wave to Lea", library)] == ["Go", "Greet"]
+    assert [f for f, _ in frames("once you're done, find the drill", library)] == ["Find"]   # no place: as before
+    with pytest.raises(CommandError):
+        parse_command("once you're in the garage the door is shut", library)           # no clause follows
+
+
+def test_a_path_after_then_repeats_the_verb_of_motion(library: Library) -> None:
+    assert texts("walk to the porch and then to the shed", library) == [
+        ("Go", {"goal": "the porch"}), ("Go", {"goal": "the shed"})]
+    assert texts("drive to the gate, then back to the barn", library) == [
+        ("Go", {"goal": "the gate"}), ("Go", {"goal": "the barn"})]
+    assert [f for f, _ in frames("go to the attic and then find the lamp", library)] == ["Go", "Find"]
+
+
+def test_a_verb_no_frame_lists_after_and_is_no_noun_of_a_list(library: Library) -> None:
+    with pytest.raises(CommandError, match="unknown verb 'hunt'"):   # it was "the porch, hunt" (the goal), Find lost
+        parse_command("go to the porch, hunt down the cat, and hand it to me", library)
+    assert texts("go to the attic and let Mia know that lunch is ready", library) == [
+        ("Go", {"goal": "the attic"}), ("Tell", {"message": "lunch is ready", "recipient": "Mia"})]
+    assert texts("put the fork and spoon in the drawer", library) == [      # a noun that is also a verb: a noun
+        ("Place", {"theme": "the fork and spoon", "goal": "the drawer"})]
+
+
+def test_a_place_said_after_where_from_describes_the_source(library: Library) -> None:
+    assert texts("take the jar from the shelf in the pantry", library) == [
+        ("Pick", {"theme": "the jar", "source": "the shelf in the pantry"})]
+    assert texts("take the jar from the shelf to the pantry", library) == [
+        ("Bring", {"theme": "the jar", "goal": "the pantry", "source": "the shelf"})]
+
+
+def test_greeting_and_making_your_way_are_units_of_the_library(library: Library) -> None:
+    assert [f for f, _ in frames("find Noor in the den and say hello", library)] == ["Find", "Greet"]
+    assert texts("make your way to the porch", library) == [("Go", {"goal": "the porch"})]
+
+
+def test_a_lower_case_name_after_for_is_whom_it_is_for(library: Library) -> None:
+    assert texts("fetch a blanket for zia", library) == [("Bring", {"theme": "a blanket", "recipient": "zia"})]
+    assert texts("get a cup for cleaning", library) == [("Pick", {"theme": "a cup for cleaning"})]   # a word

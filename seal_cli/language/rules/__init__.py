@@ -36,6 +36,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     politeness.YOU_IMPERATIVE,
     lead_ins.COMMA_AFTER_POLITENESS,
     lead_ins.SEQUENCING,
+    lead_ins.BEING_AT_RULE,
     lead_ins.SUBORDINATE,
     lead_ins.MANNER,
     lead_ins.BE_CAREFUL,
