@@ -219,5 +219,12 @@ BEING_AT = (frozenset(["once", "when", "as soon as", "after"]), frozenset(["you'
 """"*Once you're in* the living room, find Peyton": the robot is to be there first, "go to the living room, then
 ..." (``BEING_MEANS``): a subordinator, "you're", a preposition of place, a phrase, then the clause."""
 BEING_MEANS = "go"
+PATH_ALONE = frozenset(["to", "into", "onto"])
+""""*To* the bathroom", "*back to* the kitchen, please": a command that is only where to go (the preposition's
+canonical form, ``PREPOSITIONS``) is going there (``PATH_MEANS``)."""
+PATH_MEANS = "go"
+ASKED_ALONE = frozenset(["please"])
+""""Milk from the fridge, *please*", "the remote, please": a noun phrase and "please" with no verb in the
+sentence is a request for the thing, "bring me ..." (``REQUEST_MEANS``)."""
 LET_KNOW = ("let", "know")
 """"*let* me *know* ...", "*let* Amara *know* that ...": "tell me ...", "tell Amara that ..." (``QUESTION_MEANS``)."""

@@ -238,3 +238,22 @@ def test_greeting_and_making_your_way_are_units_of_the_library(library: Library)
 def test_a_lower_case_name_after_for_is_whom_it_is_for(library: Library) -> None:
     assert texts("fetch a blanket for zia", library) == [("Bring", {"theme": "a blanket", "recipient": "zia"})]
     assert texts("get a cup for cleaning", library) == [("Pick", {"theme": "a cup for cleaning"})]   # a word
+
+
+def test_a_path_alone_is_going_there(library: Library) -> None:
+    assert texts("to the greenhouse", library) == [("Go", {"goal": "the greenhouse"})]
+    assert texts("Back to the porch, please.", library) == [("Go", {"goal": "the porch"})]
+    assert [f for f, _ in frames("into the shed and then find the rake", library)] == ["Go", "Find"]
+    for text in ("To fill a bowl with water and put it in the cabinet.",     # an infinitive, no path
+                 "To the shed, carry the rake"):                             # a phrase said before a verb
+        with pytest.raises(CommandError):
+            parse_command(text, library)
+
+
+def test_a_thing_and_please_with_no_verb_is_asked_for(library: Library) -> None:
+    (bring,) = parse_command("the stapler from the desk, please", library).frames
+    assert bring.frame == "Bring" and bring.elements["theme"].text == "the stapler"
+    assert bring.elements["source"].text == "the desk" and bring.elements["recipient"].head == "me"
+    assert frames("please, a towel", library) == [("Bring", {"theme": "towel", "recipient": "me"})]
+    with pytest.raises(CommandError):
+        parse_command("the stapler is on the desk, please", library)         # a statement: no request read

@@ -29,6 +29,7 @@ ANYWHERE: tuple[Rule, ...] = (verbs.SPLIT_PARTICLE, politeness.FORMULA)
 """At every word, first."""
 
 CLAUSE_START: tuple[Rule, ...] = (
+    requests.PATH_ALONE_RULE,
     politeness.WHILE_HOLDING,
     politeness.ADVERB_COMMA,
     politeness.POLITENESS,
@@ -55,6 +56,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.WISH_OF,
     requests.LET_KNOW_RULE,
     requests.FRONTED_OF,
+    requests.ASKED_ALONE_RULE,
     verbs.USE,
     verbs.VERB,
     statements.DISLOCATED,

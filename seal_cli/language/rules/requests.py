@@ -11,6 +11,8 @@ left unsaid (its ``text`` is empty).
 from __future__ import annotations
 
 from seal_cli.language.english import (
+    ASKED_ALONE,
+    BE_WORDS,
     DETERMINERS,
     END_MARKS,
     KNOW_WISHES,
@@ -18,8 +20,11 @@ from seal_cli.language.english import (
     NUMBER_MEANS,
     NUMBER_OF,
     OBJECT_PRONOUNS,
+    PATH_ALONE,
+    PATH_MEANS,
     POSSESSIVES,
     PREPOSITIONS,
+    PRONOUNS,
     QUESTION_MEANS,
     QUESTION_WORDS,
     REQUEST_MEANS,
@@ -30,7 +35,7 @@ from seal_cli.language.english import (
 )
 from seal_cli.language.morphology import verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import State, first_words, match_phrase
+from seal_cli.language.state import State, first_words, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 
@@ -139,6 +144,57 @@ def _request(s: State, i: int) -> Match | None:
     text = s.text_of(words[i].start, end) or " ".join(w.text for w in words[i:i + n])
     return Match(n, (Word(text, words[i].start, end, Tag.VERB, REQUEST_MEANS),
                      _unsaid(end, Tag.PRON, None, _SPEAKER)), expect=False, verb=REQUEST_MEANS, using=False)
+
+
+def _sentence_end(s: State, i: int) -> int:
+    words = s.words
+    return next((k for k in range(i, len(words)) if words[k].lower in END_MARKS), len(words))
+
+
+def _path_alone(s: State, i: int) -> Match | None:
+    """"*To* the bathroom", "back to the kitchen, please", "into the garden and then find the dog": a clause
+    that is only a path to somewhere, with no verb in it, is going there (``PATH_MEANS``)."""
+    words = s.words
+    n = match_phrase(words, i, PREPOSITIONS)
+    if not n or PREPOSITIONS[" ".join(w.lower for w in words[i:i + n])] not in PATH_ALONE or \
+            PATH_MEANS not in s.lexicon.units or not s.np_starts(i + n) or \
+            not all(t.tag in (Tag.POLITE, Tag.SEP) for t in s.out[-1:]):
+        return None
+    first = words[i + n]
+    if first.lower not in DETERMINERS and first.lower not in POSSESSIVES and not capitalised(first) and \
+            verb_lemma(first.lower) == first.lower:
+        return None                               # "To fill a bowl with water ...": an infinitive
+    end = s.cond_end(i + n)
+    if any(s.verb_at(k) and words[k - 1].lower not in DETERMINERS and words[k - 1].lower not in POSSESSIVES
+           for k in range(i + n, end)):
+        return None                               # a verb in it ("the shed" is a noun)
+    k = end
+    while k < len(words) and words[k].lower in ASKED_ALONE | {","}:
+        k += 1
+    if not (k >= len(words) or words[k].lower in END_MARKS or words[k].lower in ("and", "then", ";") and
+            s.verb_after(k + 1) or words[k - 1].lower in ASKED_ALONE and s.verb_after(k)):
+        return None                               # "To the kitchen, bring the cup": a phrase said first
+    w = words[i]
+    prep = PREPOSITIONS[" ".join(x.lower for x in words[i:i + n])]
+    return Match(n, (_unsaid(w.start, Tag.VERB, PATH_MEANS), merge(words, i, n, Tag.PREP, prep)), expect=False,
+                 verb=PATH_MEANS, using=False)
+
+
+def _asked_alone(s: State, i: int) -> Match | None:
+    """"Milk from the fridge, please", "the remote please": a noun phrase and "please" (``ASKED_ALONE``), no
+    verb anywhere in the sentence, is a request for the thing: "bring me ..." (``REQUEST_MEANS``)."""
+    words = s.words
+    if any(t.tag != Tag.POLITE for t in s.out) or REQUEST_MEANS not in s.lexicon.units or \
+            words[i].lower in PRONOUNS or not s.np_starts(i):
+        return None
+    end = _sentence_end(s, i)
+    if not any(words[k].lower in ASKED_ALONE for k in range(end)) or \
+            any(s.verb_at(k) or words[k].lower in BE_WORDS or words[k].lower in QUESTION_WORDS
+                for k in range(i, end)):
+        return None
+    return Match(0, (_unsaid(words[i].start, Tag.VERB, REQUEST_MEANS),
+                     _unsaid(words[i].start, Tag.PRON, None, _SPEAKER)), expect=False, verb=REQUEST_MEANS,
+                 using=False)
 
 
 _WISHES_OF = (("wants",), ("needs",), ("would", "like"))
@@ -267,6 +323,15 @@ WISH_OF = Rule("a person's wish for a thing", _wish_of, (
     Example("Ben needs a towel.", "Ben needs", Tag.VERB),
     Example("Anna would like the red mug", "Anna would like", Tag.VERB),
 ), None, "'Anna wants X', 'Ben needs X': bring X to the person")
+PATH_ALONE_RULE = Rule("a path alone", _path_alone, (
+    Example("to the bathroom", "to", Tag.PREP),
+    Example("back to the kitchen, please", "back to", Tag.PREP),
+    Example("into the garden and then find the dog", "", Tag.VERB),
+), first_words(p for p, canonical in PREPOSITIONS.items() if canonical in PATH_ALONE), "'to X' with no verb: go to X")
+ASKED_ALONE_RULE = Rule("a thing asked for alone", _asked_alone, (
+    Example("milk from the fridge, please", "", Tag.VERB),
+    Example("The remote please.", "", Tag.PRON),
+), None, "a noun phrase and 'please' with no verb: bring it to the speaker")
 KNOW_WISH = Rule("wish to know", _know_wish, (
     Example("I'd like to know the heaviest object on the bookshelf.", "I'd like to know", Tag.VERB),
     Example("Do you know how many people in the bedroom are wearing white jackets?", "Do you know how many",
