@@ -168,6 +168,9 @@ CLOCK_WORDS = frozenset(["am", "pm", "a.m.", "p.m.", "o'clock", "oclock", "sharp
 TIME_MEASURE = frozenset(["a", "an", "few", "couple", "of", "several", "another", "other", "more", "little", "short",
                            "good", "long"])
 """Words between "for"/"every" and a unit of time ("for *a little* while", "every *few* minutes")."""
+NOT_PLACES = frozenset(["for", "with", "until", "till", "about"])
+"""Prepositions that say no place: after "and" and a verb's base form ("and *wait for* me") they begin the
+verb's complement, not where a list of things goes ("a bowl and pen *on* the desk")."""
 PATH_PREPOSITIONS = frozenset(["to", "into", "onto", "from", "out of", "off", "through", "via", "past", "across",
                                "along"])
 """Prepositions of a path: "down from the shelf *and over to* my chair" goes on one path."""
@@ -226,5 +229,9 @@ PATH_MEANS = "go"
 ASKED_ALONE = frozenset(["please"])
 """"Milk from the fridge, *please*", "the remote, please": a noun phrase and "please" with no verb in the
 sentence is a request for the thing, "bring me ..." (``REQUEST_MEANS``)."""
+CHECK_WHETHER = (frozenset(["check", "see", "find out", "look and see", "go and see", "go and check"]),
+                 frozenset(["if", "whether"]), frozenset(["there is", "there are", "there 's", "there's"]))
+""""*See if* anyone is in the kitchen", "*check whether* there is milk in the fridge": the question whether
+it is there, asked as "find ..." (``WHERE_MEANS``), as "is anyone in the kitchen?" is."""
 LET_KNOW = ("let", "know")
 """"*let* me *know* ...", "*let* Amara *know* that ...": "tell me ...", "tell Amara that ..." (``QUESTION_MEANS``)."""

@@ -28,6 +28,7 @@ from seal_cli.language.english import (
     HERE_WORDS,
     LINKING_VERBS,
     NOMINATIVE,
+    NOT_PLACES,
     NUMBERS,
     OBJECT_PRONOUNS,
     PARTICLES,
@@ -824,7 +825,8 @@ class State:
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
         if low in ("and", ",", "or") and self.np_starts(j) and self.prev_tag() in ("WORD", "NAME", "PRON"):
             unknown_verb = (nxt not in DETERMINERS and nxt not in POSSESSIVES and nxt not in PRONOUNS
-                            and not capitalised(words[j]) and nxt not in NUMBERS and self._object_after(j + 1))
+                            and not capitalised(words[j]) and nxt not in NUMBERS and
+                            (self._object_after(j + 1) or self._verb_and_path(j)))
             if not unknown_verb:
                 return Match(n, (merge(words, i, n, Tag.AND_NP),))
         m = match_phrase(words, j, PREPOSITIONS) if low == "and" and n == 1 else 0
@@ -854,6 +856,16 @@ class State:
                 not self.np_starts(k + n):
             return None
         return str(self.out[self.verb_index].info)
+
+    def _verb_and_path(self, j: int) -> bool:
+        """Whether word ``j``, after "and", is a verb's base form that names no thing the library knows, with
+        a preposition of no place after it (``NOT_PLACES``): "go to the office and *wait for* me there", "wash
+        a mug and *fill with* water" (a clause, not a noun of a list; "a bowl and *pen on* the desk": where
+        the list goes)."""
+        words = self.words
+        low = words[j].lower
+        return j + 1 < len(words) and words[j - 1].lower == "and" and words[j + 1].lower in NOT_PLACES and \
+            low.isalpha() and low not in self.lexicon.things and verb_lemma(low) == low
 
     def _object_after(self, k: int) -> bool:
         """Whether what starts at ``k`` is the object of a verb said just before it: a determiner, a

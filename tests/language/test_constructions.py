@@ -257,3 +257,22 @@ def test_a_thing_and_please_with_no_verb_is_asked_for(library: Library) -> None:
     assert frames("please, a towel", library) == [("Bring", {"theme": "towel", "recipient": "me"})]
     with pytest.raises(CommandError):
         parse_command("the stapler is on the desk, please", library)         # a statement: no request read
+
+
+def test_seeing_whether_something_is_somewhere_asks_to_find_it(library: Library) -> None:
+    assert texts("could you see if anyone is in the attic?", library) == [
+        ("Find", {"theme": "anyone", "ground": "the attic"})]
+    assert texts("check whether there's a ladder in the shed", library) == [
+        ("Find", {"theme": "a ladder", "ground": "the shed"})]
+    assert texts("check the shed", library) == [("LookAt", {"theme": "the shed"})]      # no question: as before
+    with pytest.raises(CommandError):
+        parse_command("see if the soup is hot", library)                  # no place asked of: 'see' no verb
+
+
+def test_a_verb_after_and_before_a_preposition_of_no_place_is_a_clause(library: Library) -> None:
+    with pytest.raises(CommandError, match="unknown verb 'wait'"):     # it was the goal 'the porch and wait ...'
+        parse_command("go to the porch and wait for me there", library)
+    assert texts("put the mug and scoop in the sink", library) == [
+        ("Place", {"theme": "the mug and scoop", "goal": "the sink"})]
+    assert [f for f, _ in frames("slice a pear, put it in the fridge and into the microwave", library)] == [
+        "Slice", "Place", "Place"]

@@ -56,6 +56,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.WISH_OF,
     requests.LET_KNOW_RULE,
     requests.FRONTED_OF,
+    requests.CHECK_WHETHER_RULE,
     requests.ASKED_ALONE_RULE,
     verbs.USE,
     verbs.VERB,
@@ -68,6 +69,7 @@ word is tagged as what it is (``INSIDE``), and the grammar reports the missing v
 INSIDE: tuple[Rule, ...] = (
     clauses.END_MARK,
     requests.KNOW_AFTER_LET,
+    requests.WHETHER_BE,
     clauses.PARTITIVE_OF,
     statements.HER_TOLD,
     statements.TOLD,

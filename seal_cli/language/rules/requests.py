@@ -13,6 +13,7 @@ from __future__ import annotations
 from seal_cli.language.english import (
     ASKED_ALONE,
     BE_WORDS,
+    CHECK_WHETHER,
     DETERMINERS,
     END_MARKS,
     KNOW_WISHES,
@@ -133,6 +134,35 @@ def _whether_is(s: State, i: int) -> Match | None:
     return None
 
 
+def _check_whether(s: State, i: int) -> Match | None:
+    """"*See if* anyone is in the kitchen", "*check whether there's* a book on the shelf": whether someone or
+    something is somewhere, asked as "find ..." (``WHERE_MEANS``); "there is" is read with the words before,
+    and the "is" after a phrase is dropped (``WHETHER_BE``)."""
+    words = s.words
+    checks, ifs, there_is = CHECK_WHETHER
+    n = _phrase(s, i, checks)
+    if not n or i + n + 1 >= len(words) or words[i + n].lower not in ifs or WHERE_MEANS not in s.lexicon.units:
+        return None
+    k = i + n + 1
+    m = _phrase(s, k, there_is)
+    if m and s.np_starts(k + m):
+        k += m                                    # "check if there's ...": "is there ..."
+    elif not s.np_starts(k) or not any(words[j].lower in _WHETHER_IS and words[j + 1].lower in _WHETHER_WHERE
+                                       for j in range(k + 1, min(len(words) - 1, s.cond_end(k)))):
+        return None                               # "see if the soup is hot": no place asked of
+    end = words[k - 1].end
+    return Match(k - i, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, WHERE_MEANS),),
+                 expect=False, verb=WHERE_MEANS, using=False)
+
+
+def _whether_be(s: State, i: int) -> Match | None:
+    if s.verb_index < 0 or s.out[s.verb_index].info != WHERE_MEANS or \
+            s.out[s.verb_index].lower.split()[-1] not in CHECK_WHETHER[1] or \
+            s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON) or s.next_lower(i) not in _WHETHER_WHERE:
+        return None
+    return Match(1)                               # "see if anyone *is* in the kitchen": dropped
+
+
 def _request(s: State, i: int) -> Match | None:
     words = s.words
     n = _phrase(s, i, REQUESTS)
@@ -153,7 +183,8 @@ def _sentence_end(s: State, i: int) -> int:
 
 def _path_alone(s: State, i: int) -> Match | None:
     """"*To* the bathroom", "back to the kitchen, please", "into the garden and then find the dog": a clause
-    that is only a path to somewhere, with no verb in it, is going there (``PATH_MEANS``)."""
+    that is only a path to somewhere, with no verb in it, is going there (``PATH_MEANS``); after a clause
+    whose verb has a goal, it is that verb again ("put it in the fridge and *into* the microwave")."""
     words = s.words
     n = match_phrase(words, i, PREPOSITIONS)
     if not n or PREPOSITIONS[" ".join(w.lower for w in words[i:i + n])] not in PATH_ALONE or \
@@ -176,8 +207,10 @@ def _path_alone(s: State, i: int) -> Match | None:
         return None                               # "To the kitchen, bring the cup": a phrase said first
     w = words[i]
     prep = PREPOSITIONS[" ".join(x.lower for x in words[i:i + n])]
-    return Match(n, (_unsaid(w.start, Tag.VERB, PATH_MEANS), merge(words, i, n, Tag.PREP, prep)), expect=False,
-                 verb=PATH_MEANS, using=False)
+    before = next((t for t in reversed(s.out) if t.tag == Tag.VERB), None)
+    verb = str(before.info) if before is not None and str(before.info) in s.lexicon.goals else PATH_MEANS
+    return Match(n, (_unsaid(w.start, Tag.VERB, verb), merge(words, i, n, Tag.PREP, prep)), expect=False,
+                 verb=verb, using=False)    # "put it in the fridge, and *into* the microwave": the verb again
 
 
 def _asked_alone(s: State, i: int) -> Match | None:
@@ -332,6 +365,13 @@ ASKED_ALONE_RULE = Rule("a thing asked for alone", _asked_alone, (
     Example("milk from the fridge, please", "", Tag.VERB),
     Example("The remote please.", "", Tag.PRON),
 ), None, "a noun phrase and 'please' with no verb: bring it to the speaker")
+CHECK_WHETHER_RULE = Rule("check whether it is there", _check_whether, (
+    Example("Can you see if anyone is in the kitchen?", "see if", Tag.VERB),
+    Example("check whether there's a book on the shelf", "check whether there's", Tag.VERB),
+), first_words(CHECK_WHETHER[0]), "'see if X is in Y', 'check whether there is X': find X in Y")
+WHETHER_BE = Rule("is, after see if X", _whether_be, (
+    Example("see if the cat is in the garden", "is", ""),
+), _WHETHER_IS, "the 'is' of 'see if X is in Y', dropped: 'see if' was read as 'find'")
 KNOW_WISH = Rule("wish to know", _know_wish, (
     Example("I'd like to know the heaviest object on the bookshelf.", "I'd like to know", Tag.VERB),
     Example("Do you know how many people in the bedroom are wearing white jackets?", "Do you know how many",
