@@ -68,7 +68,10 @@ POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "wi
                     "excuse me", "maybe", "perhaps", "oh", "ah",
                     "ahh", "aw", "ugh", "urgh", "argh", "oops", "whoops", "sorry", "well", "gosh", "so",
                     "i'd appreciate it if you", "i would appreciate it if you", "i'd really appreciate it if you",
-                    "i would really appreciate it if you", "would it be possible to", "would you be able to",
+                    "i would really appreciate it if you", "i'd appreciate it if you could",
+                    "i would appreciate it if you could", "i'd really appreciate it if you could",
+                    "i would really appreciate it if you could", "i'd appreciate it if you would",
+                    "i would appreciate it if you would", "would it be possible to", "would you be able to",
                     "could you be able to", "are you able to", "will you be able to", "would you be willing to",
                     "is it possible to", "is it possible for you to", "would it be possible for you to"])
 POLITE_FORMULAE = frozenset([

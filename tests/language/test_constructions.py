@@ -276,3 +276,12 @@ def test_a_verb_after_and_before_a_preposition_of_no_place_is_a_clause(library: 
         ("Place", {"theme": "the mug and scoop", "goal": "the sink"})]
     assert [f for f, _ in frames("slice a pear, put it in the fridge and into the microwave", library)] == [
         "Slice", "Place", "Place"]
+
+
+def test_a_particle_between_the_person_and_the_thing_is_only_a_direction(library: Library) -> None:
+    assert texts("bring me back the stapler", library) == [("Bring", {"theme": "the stapler", "recipient": "me"})]
+    assert texts("give Noor back her scarf", library) == [("Give", {"theme": "her scarf", "recipient": "Noor"})]
+
+
+def test_appreciating_what_you_could_do_is_politeness(library: Library) -> None:
+    assert texts("I'd appreciate it if you could locate my wallet.", library) == [("Find", {"theme": "my wallet"})]

@@ -71,6 +71,7 @@ INSIDE: tuple[Rule, ...] = (
     requests.KNOW_AFTER_LET,
     requests.WHETHER_BE,
     clauses.PARTITIVE_OF,
+    clauses.PARTICLE_BETWEEN_OBJECTS,
     statements.HER_TOLD,
     statements.TOLD,
     statements.TOLD_HOW_TO,
