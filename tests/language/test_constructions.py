@@ -139,7 +139,8 @@ def test_a_greeting_before_a_question(library: Library) -> None:
 
 
 SETS = sorted([*(Path(__file__).parents[1] / "data").glob("wording_questions*.jsonl"),
-               *(Path(__file__).parents[1] / "data").glob("wording_paraphrases*.jsonl")])
+               *(Path(__file__).parents[1] / "data").glob("wording_paraphrases*.jsonl"),
+               *(Path(__file__).parents[1] / "data").glob("wording_fragments*.jsonl")])
 SCORER = Path(__file__).resolve().parents[2].parent / "shared" / "eval" / "score_parse.py"
 
 
@@ -156,7 +157,8 @@ def test_our_sets_of_peoples_wording_score(path: Path, library: Library) -> None
     right = sum(scorer.score_one(parse, scorer.expected_frames(item))[0]
                 for item, parse in zip(items, parse_lines([it["text"] for it in items], library), strict=True)
                 if "error" not in parse)
-    assert right / len(items) >= 0.85            # measured: 1.000, 0.900, 0.933; 0.922, 0.919 (docs/language.md)
+    least = 0.80 if "fragments" in path.name else 0.85   # fragments: verbless, unknown verbs (docs/language.md)
+    assert right / len(items) >= least           # measured: 1.000, 0.900, 0.933, 1.000; 0.938, 0.935, 0.986; 0.822
 
 
 def test_where_did_someone_put_it_asks_to_find(library: Library) -> None:
