@@ -415,7 +415,8 @@ class State:
         """After a comma that ends a request: words of address, tag questions and statements up to the end
         of the sentence ("..., *dear*? ...", "..., *she's been waiting a while*.", "..., *we're eating in
         ten*"), also after "or", "because", "so" ("..., *or it will melt*"); how many words to drop (0: none).
-        Only when nothing else follows in the sentence. Returns the count and the spans dropped."""
+        Only when nothing else follows in the sentence, or a clause after a comma ("find Jane, *she's in the
+        bedroom*, and tell her ..."). Returns the count and the spans dropped."""
         words = self.words
         k, spans = i + 1, []
         while True:
@@ -433,6 +434,9 @@ class State:
                     (is_adjective(words[k].lower) or words[k].lower.endswith("ing") and gerund_lemma(words[k].lower)):
                 spans.append((words[k].start, words[k].end))     # "..., someone left it open, *shocking*."
                 k += 1
+        if spans and k < len(words) and words[k - 1].lower in (",", ";") and \
+                (words[k].lower in ("and", "then") and self.verb_after(k + 1) or self.verb_after(k)):
+            return k - 1 - i, tuple(spans)  # "find Jane, *she's in the bedroom*, and tell her ...": the clause goes on
         if k < len(words) and words[k].lower not in END_MARKS or k == i + 1:
             return 0, ()
         return k - i, tuple(spans)

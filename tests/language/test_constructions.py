@@ -287,3 +287,10 @@ def test_a_particle_between_the_person_and_the_thing_is_only_a_direction(library
 
 def test_appreciating_what_you_could_do_is_politeness(library: Library) -> None:
     assert texts("I'd appreciate it if you could locate my wallet.", library) == [("Find", {"theme": "my wallet"})]
+
+
+def test_a_statement_between_commas_before_the_next_clause_is_a_remark(library: Library) -> None:
+    parse = parse_command("Find Noor, she's in the den, and tell her lunch is served.", library)
+    assert [(f.frame, {r: e.text for r, e in f.elements.items()}) for f in parse.frames] == [
+        ("Find", {"theme": "Noor"}), ("Tell", {"message": "lunch is served", "recipient": "her"})]
+    assert parse.remarks == ("she's in the den",)
