@@ -73,7 +73,9 @@ POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "wi
                     "i would really appreciate it if you could", "i'd appreciate it if you would",
                     "i would appreciate it if you would", "would it be possible to", "would you be able to",
                     "could you be able to", "are you able to", "will you be able to", "would you be willing to",
-                    "is it possible to", "is it possible for you to", "would it be possible for you to"])
+                    "is it possible to", "is it possible for you to", "would it be possible for you to",
+                    "your task is to", "your job is to", "the task is to", "your next task is to",
+                    "i would like for you to", "i'd like for you to", "i want for you to"])
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
     "when you have a moment", "when you have a minute", "when you have a second", "when you have time",

@@ -863,12 +863,13 @@ class State:
 
     def _verb_and_path(self, j: int) -> bool:
         """Whether word ``j``, after "and", is a verb's base form that names no thing the library knows, with
-        a preposition of no place after it (``NOT_PLACES``): "go to the office and *wait for* me there", "wash
-        a mug and *fill with* water" (a clause, not a noun of a list; "a bowl and *pen on* the desk": where
-        the list goes)."""
+        a preposition of no place after it (``NOT_PLACES``) or a wh-word: "go to the office and *wait for* me
+        there", "wash a mug and *fill with* water", "go into the office and *see who* is there" (a clause, not
+        a noun of a list; "a bowl and *pen on* the desk": where the list goes)."""
         words = self.words
         low = words[j].lower
-        return j + 1 < len(words) and words[j - 1].lower == "and" and words[j + 1].lower in NOT_PLACES and \
+        return j + 1 < len(words) and words[j - 1].lower == "and" and \
+            (words[j + 1].lower in NOT_PLACES or words[j + 1].lower in WH_WORDS) and \
             low.isalpha() and low not in self.lexicon.things and verb_lemma(low) == low
 
     def _object_after(self, k: int) -> bool:

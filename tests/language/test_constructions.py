@@ -294,3 +294,11 @@ def test_a_statement_between_commas_before_the_next_clause_is_a_remark(library: 
     assert [(f.frame, {r: e.text for r, e in f.elements.items()}) for f in parse.frames] == [
         ("Find", {"theme": "Noor"}), ("Tell", {"message": "lunch is served", "recipient": "her"})]
     assert parse.remarks == ("she's in the den",)
+
+
+def test_stating_the_task_is_politeness(library: Library) -> None:
+    assert [f for f, _ in frames("Your task is to go to the attic and find a lamp.", library)] == ["Go", "Find"]
+    assert texts("I would like for you to bring me a quilt.", library) == [
+        ("Bring", {"theme": "a quilt", "recipient": "me"})]
+    with pytest.raises(CommandError, match="unknown verb 'see'"):   # it was the goal 'the den and see who ...'
+        parse_command("go into the den and see who is in there", library)
