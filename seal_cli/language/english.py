@@ -75,7 +75,9 @@ POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "wi
                     "could you be able to", "are you able to", "will you be able to", "would you be willing to",
                     "is it possible to", "is it possible for you to", "would it be possible for you to",
                     "your task is to", "your job is to", "the task is to", "your next task is to",
-                    "i would like for you to", "i'd like for you to", "i want for you to"])
+                    "i would like for you to", "i'd like for you to", "i want for you to", "i'll need you to",
+                    "i will need you to", "we need you to", "we'll need you to", "wanna", "do you wanna",
+                    "you wanna"])
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
     "when you have a moment", "when you have a minute", "when you have a second", "when you have time",
@@ -90,7 +92,7 @@ POLITE_FORMULAE = frozenset([
 mind*"): the robot's time is asked for, not a condition or a task. Only a whole clause: "if you can"
 followed by more of its clause ("if you can reach the shelf, ...") is a condition."""
 SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "thanks", "thanx": "thanks",
-             "u": "you", "ur": "your", "n": "and", "im": "i'm", "ive": "i've", "youre": "you're",
+             "u": "you", "ya": "you", "ur": "your", "n": "and", "im": "i'm", "ive": "i've", "youre": "you're",
              "theyre": "they're", "thats": "that's", "dont": "don't", "doesnt": "doesn't", "didnt": "didn't",
              "isnt": "isn't", "arent": "aren't", "wasnt": "wasn't", "havent": "haven't", "couldnt": "couldn't",
              "wouldnt": "wouldn't", "shouldnt": "shouldn't", "shes": "she's", "hes": "he's", "whats": "what's",
@@ -207,7 +209,9 @@ an auxiliary or a modal, a subject and any verb, then what to find."""
 REQUESTS = frozenset(["i'd like", "i would like", "i'd love", "i would love", "i'd like to have",
                       "i would like to have", "can i have", "could i have", "may i have", "can i get", "could i get",
                       "can i please have", "could i please have", "may i please have", "i need", "i want",
-                      "i'll have", "i will have", "i'll take", "can we have", "could we have", "we need", "we'd like"])
+                      "i'll have", "i will have", "i'll take", "can we have", "could we have", "we need", "we'd like",
+                      "i'll need", "i will need", "we'll need", "we will need", "i'm gonna need", "we're gonna need",
+                      "i'm going to need", "we're going to need"])
 """A request for a thing said as the speaker's wish ("*I'd like* the red mug", "*Can I have* the big plate",
 "*I need* a pen"): it means "bring me ..." (``REQUEST_MEANS``, with the speaker as recipient)."""
 REQUEST_MEANS = "bring"

@@ -302,3 +302,10 @@ def test_stating_the_task_is_politeness(library: Library) -> None:
         ("Bring", {"theme": "a quilt", "recipient": "me"})]
     with pytest.raises(CommandError, match="unknown verb 'see'"):   # it was the goal 'the den and see who ...'
         parse_command("go into the den and see who is in there", library)
+
+
+def test_needs_said_in_the_future_and_casual_asks(library: Library) -> None:
+    assert texts("We're gonna need the ladder from the shed.", library)[0][0] == "Bring"
+    assert [f for f, _ in frames("I'll need you to carry the chairs to the porch.", library)] == ["Bring"]
+    assert texts("Could ya grab me the rake?", library) == [("Bring", {"theme": "the rake", "recipient": "me"})]
+    assert texts("Wanna bring me a quilt?", library) == [("Bring", {"theme": "a quilt", "recipient": "me"})]
