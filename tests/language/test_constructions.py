@@ -309,3 +309,10 @@ def test_needs_said_in_the_future_and_casual_asks(library: Library) -> None:
     assert [f for f, _ in frames("I'll need you to carry the chairs to the porch.", library)] == ["Bring"]
     assert texts("Could ya grab me the rake?", library) == [("Bring", {"theme": "the rake", "recipient": "me"})]
     assert texts("Wanna bring me a quilt?", library) == [("Bring", {"theme": "a quilt", "recipient": "me"})]
+
+
+def test_how_many_after_a_verb_of_saying(library: Library) -> None:
+    assert texts("Report to me how many mugs are in the sink.", library) == [
+        ("Count", {"theme": "mugs", "ground": "the sink"})]
+    assert texts("tell Noor how many cups are left", library) == [       # the message was lost
+        ("Tell", {"message": "how many cups are left", "recipient": "Noor"})]

@@ -163,6 +163,42 @@ def _whether_be(s: State, i: int) -> Match | None:
     return Match(1)                               # "see if anyone *is* in the kitchen": dropped
 
 
+_TOLD_PEOPLE = frozenset(["me", "us", "to me", "to us"])
+
+
+def _told_how_many(s: State, i: int) -> Match | None:
+    """"*Report to me how many* cups are in the sink", "say how many people are in the hall": a verb of saying
+    (a unit of a frame whose first element is what is said) and "how many" is the unit of counting that
+    says it ("tell me how many", ``NUMBER_MEANS``), as "let me know how many" is; the people told (the
+    speaker) are the unit's."""
+    words = s.words
+    found = s.verb_at(i)
+    if found is None or found[0] not in s.lexicon.speech or found[2] is not None or \
+            NUMBER_MEANS.split()[0] not in s.lexicon.units or \
+            tuple(NUMBER_MEANS.split()) not in s.lexicon.units[NUMBER_MEANS.split()[0]]:
+        return None
+    k = i + found[1]
+    m = _phrase(s, k, _TOLD_PEOPLE)
+    k += m
+    if k + 1 >= len(words) or words[k].lower != "how" or words[k + 1].lower != "many" or \
+            found[0] == NUMBER_MEANS.split()[0] and m:
+        return None                               # "tell me how many": the unit itself, read as it is
+    end = words[k + 1].end
+    return Match(k + 2 - i, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, NUMBER_MEANS),),
+                 expect=False, verb=NUMBER_MEANS, using=False)
+
+
+def _how_many_said(s: State, i: int) -> Match | None:
+    """"tell Anna *how many cups are left*", "tell the guests how many chairs are free": after a verb of saying
+    and the person told, "how many ..." is what is said, kept whole (the message was lost)."""
+    words = s.words
+    if not s.speech or s.verb_index < 0 or s.prev_tag() not in (Tag.NAME, Tag.PRON, Tag.WORD) or \
+            i + 2 >= len(words) or words[i + 1].lower != "many":
+        return None
+    end = s.speech_end(i)
+    return s.emit(i, end - i, Tag.SAID)
+
+
 def _request(s: State, i: int) -> Match | None:
     words = s.words
     n = _phrase(s, i, REQUESTS)
@@ -372,6 +408,13 @@ CHECK_WHETHER_RULE = Rule("check whether it is there", _check_whether, (
 WHETHER_BE = Rule("is, after see if X", _whether_be, (
     Example("see if the cat is in the garden", "is", ""),
 ), _WHETHER_IS, "the 'is' of 'see if X is in Y', dropped: 'see if' was read as 'find'")
+TOLD_HOW_MANY = Rule("said how many", _told_how_many, (
+    Example("Report to me how many cups are in the sink.", "Report to me how many", Tag.VERB),
+    Example("say how many people are in the hall", "say how many", Tag.VERB),
+), None, "a verb of saying and 'how many': tell me how many (Count)")
+HOW_MANY_SAID = Rule("how many, said", _how_many_said, (
+    Example("tell Anna how many cups are left", "how many cups are left", Tag.SAID),
+), frozenset(["how"]), "'how many ...' after a verb of saying and the person told: what is said")
 KNOW_WISH = Rule("wish to know", _know_wish, (
     Example("I'd like to know the heaviest object on the bookshelf.", "I'd like to know", Tag.VERB),
     Example("Do you know how many people in the bedroom are wearing white jackets?", "Do you know how many",
