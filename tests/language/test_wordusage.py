@@ -172,7 +172,8 @@ def test_a_parse_is_grounded_in_its_sentence(library: Library) -> None:
 
 def test_the_shipped_table_weighs_the_sentence(library: Library) -> None:
     vocab = Vocabulary.of(["Cup", "Mug", "CoffeeMachine", "SinkBasin", "DiningTable", "CoffeeTable", "Sofa"])
-    assert shipped_word_usage().context["cup"] and shipped_word_usage().class_context["mug"]
+    coffee = shipped_word_usage().weights["w:coffee"]      # the discriminative chooser: "coffee" says mug
+    assert coffee["mug"] > 0 > coffee["cup"]
     theme = parse_command("put the cup in the coffee maker", library, vocab).frames[-1].elements["theme"]
     assert theme.cls == "Mug"
     goal = parse_command("put the remote on the table by the couch", library, vocab).frames[-1].elements["goal"]
@@ -243,6 +244,13 @@ def test_tables_in_a_folder_add_up(tmp_path: Path) -> None:
      '"number" must map'),
     ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "number": {"key": {"one": -1}}}',
      '"number" must map'),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "weights": {"w:a": {"Cup": 0.5}}}',
+     '"weights" must map'),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "weights": {"w:a": {"Mug": "x"}}}',
+     '"weights" must map'),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "weights": {"w:a": {"Mug": NaN}}}',
+     '"weights" must map'),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "weights": []}', '"weights" must map'),
 ])
 def test_bad_tables_are_clear_errors(tmp_path: Path, content: str, words: str) -> None:
     path = tmp_path / "bad.json"
