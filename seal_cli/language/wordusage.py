@@ -25,7 +25,8 @@ sentences that meant it (:attr:`WordUsage.context`, the words of :func:`context_
 all wordings of a class: :attr:`WordUsage.class_context`); each class's count (or rate) is then
 weighed by how much more often than the wording's other classes its sentences held the words of
 this one, a naive Bayes factor damped by ``CONTEXT_WEIGHT`` (:meth:`WordUsage.context_factor`),
-before the same thresholds decide.
+before the same thresholds decide. A table with ``weights`` (the shipped one) weighs the sentence by
+the discriminative chooser of :mod:`seal_cli.language.chooser` instead (:meth:`WordUsage.sentence_factor`).
 
 Tables are JSON files (``format: seal-word-classes/1``) in the folder ``word_classes/`` beside
 this module; every file there is read and their counts are added.
