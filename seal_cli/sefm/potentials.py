@@ -257,20 +257,19 @@ class GridKernelSums(KernelSums):
         out = np.zeros(base.shape, dtype)
         for s in range(sources.shape[1]):
             live = np.flatnonzero(sources[:, s] >= 0)
-            every = len(live) == len(base)
-            at = base if every else base[live]
-            corner = at + (sources[live, s] * (nx * ny))[:, None]
+            if len(live) == 0:
+                continue
+            # the rows holding a term: a run of rows (a slice, no copies) when they are consecutive
+            at: slice | Index = slice(live[0], live[-1] + 1) if live[-1] - live[0] + 1 == len(live) else live
+            corner = base[at] + (sources[at, s] * (nx * ny))[:, None]
             a, b = np.take(flat, corner), np.take(right, corner)
             c, d = np.take(up, corner), np.take(both, corner)
-            u, v = (fu, fv) if every else (fu[live], fv[live])
+            u, v = fu[at], fv[at]
             a += (b - a) * u                    # along x at the lower row of cells
             c += (d - c) * u                    # ... and at the upper row
             a += (c - a) * v                    # along y
-            a *= coef[live, s, None]
-            if every:
-                out += a
-            else:
-                out[live] += a
+            a *= coef[at, s, None]
+            out[at] += a
         return out
 
 
