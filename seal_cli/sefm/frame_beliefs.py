@@ -67,6 +67,8 @@ __all__ = ["FrameBeliefs", "FrameModel", "Terms"]
 
 Array = NDArray[np.float64]
 Index = NDArray[np.intp]
+Change = tuple[Index, Array, Index, Array]
+"""Particles gone and come in an update: the frame of each and where it was (gone) or is (come)."""
 
 
 @dataclass(frozen=True)
@@ -148,6 +150,8 @@ class FrameBeliefs:
     last_ess: Array = field(default_factory=lambda: np.zeros(0))
     cell: Index = field(default_factory=lambda: np.zeros((0, 0), np.intp))
     """The free cell of each particle (an index into the map's free cells)."""
+    change: Change | None = None
+    """What the last update changed, as particles gone and particles come (None: no update yet)."""
 
     @classmethod
     def start(cls, m: Map, noise: Sequence[float], particles: int, terms: Terms, kernel: KernelSums,
@@ -160,6 +164,7 @@ class FrameBeliefs:
         beliefs.cell = np.zeros((F, particles), np.intp)
         if F:
             beliefs._resample_move(*beliefs._fresh(terms, kernel, sources, particles, rng), terms, kernel, rng)
+            beliefs.change = None  # drawn afresh: nothing to compare with
         return beliefs
 
     @property
@@ -195,7 +200,7 @@ class FrameBeliefs:
         self._resample_move(np.concatenate([self.X, X], axis=1), np.concatenate([self.cell, cells], axis=1),
                             np.concatenate([gamma, fresh_gamma], axis=1),
                             np.concatenate([self.Z[:, None] * self.W * P * ratio, fresh_weights], axis=1),
-                            terms, kernel, rng)
+                            terms, kernel, rng, carried=P)
 
     def _fresh(self, terms: Terms, kernel: KernelSums, sources: tuple[Array, Array], n: int,
                rng: np.random.Generator) -> tuple[Array, Index, Array, Array]:
@@ -216,8 +221,11 @@ class FrameBeliefs:
         return np.where(g > 0, gamma / np.where(g > 0, g, 1.0), 0.0)
 
     def _resample_move(self, X: Array, cells: Index, gamma: Array, weights: Array, terms: Terms,
-                       kernel: KernelSums, rng: np.random.Generator) -> None:
-        """Keep P of the weighted particles by systematic resampling in cell order, then move the copies."""
+                       kernel: KernelSums, rng: np.random.Generator, carried: int = 0) -> None:
+        """Keep P of the weighted particles by systematic resampling in cell order, then move the copies.
+
+        The first ``carried`` of each row are the particles of the previous update (each weighing 1/P):
+        :attr:`change` then tells which of them are gone and which particles are new."""
         F, P = self.W.shape
         weights[~(np.isfinite(weights) & (weights > 0))] = 0.0
         self.Z = np.maximum(weights.mean(axis=1), np.finfo(float).tiny)
@@ -235,6 +243,8 @@ class FrameBeliefs:
         copies[:, 1:] = chosen[:, 1:] == chosen[:, :-1]  # the draws are sorted: a copy follows its original
         f, k = np.nonzero(copies)
         self._move(f, k, terms, kernel, rng)
+        if carried:
+            self.change = _change(X, ancestors - np.arange(F)[:, None] * width, copies, carried, self.X)
 
     def _move(self, f: Index, k: Index, terms: Terms, kernel: KernelSums, rng: np.random.Generator) -> None:
         """Move particles ``k`` of frames ``f`` by the prediction potential, each move accepted by a
@@ -330,6 +340,17 @@ class FrameBeliefs:
         particle = np.clip(np.searchsorted(cdf, points, side="right") - row * P, 0, P - 1)
         drawn = np.take(positions.reshape(-1, 2), row * P + particle, axis=0)
         return np.asarray(drawn + rng.normal(0.0, self.sigma, drawn.shape))
+
+
+def _change(before: Array, ancestor: Index, copies: NDArray[np.bool_], carried: int, after: Array) -> Change:
+    """The particles gone (carried ones no draw chose) and come (every other new particle: fresh draws and
+    the copies, moved or not); the first draw of a carried particle is that particle, where it was."""
+    F = len(ancestor)
+    chosen = np.zeros((F, before.shape[1]), bool)
+    chosen[np.arange(F)[:, None], ancestor] = True
+    gone_f, gone_k = np.nonzero(~chosen[:, :carried])
+    come_f, come_k = np.nonzero(copies | (ancestor >= carried))
+    return (gone_f, before[gone_f, gone_k], come_f, after[come_f, come_k])
 
 
 def _slots(frame: Index, source: Index, weight: Array, rows: Index) -> tuple[Index, Array]:

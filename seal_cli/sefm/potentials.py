@@ -50,6 +50,8 @@ Array = NDArray[np.float64]
 Index = NDArray[np.intp]
 Change = tuple[int, Index, Array, Array, float]
 """``(row, particle indices, their positions, weight increments before normalising, the normaliser)``."""
+Moved = tuple[Index, Array, Array]
+"""Particles put in or taken out of rows: ``(row of each, positions (m, 2), weights (m,))``."""
 
 
 class KernelSums(ABC):
@@ -60,6 +62,11 @@ class KernelSums(ABC):
     @abstractmethod
     def set(self, rows: Sequence[int], positions: Array, weights: Array) -> None:
         """Rows ``rows`` now hold these particle sets: ``positions`` (R, P, 2), normalised ``weights`` (R, P)."""
+
+    def move(self, rows: Sequence[int], positions: Array, weights: Array, gone: Moved, come: Moved) -> None:
+        """Rows ``rows`` now hold these particle sets, which differ from what they held by the particles
+        ``gone`` and ``come`` (each ``(row, positions (m, 2), weights (m,))``). By default: :meth:`set`."""
+        self.set(rows, positions, weights)
 
     @abstractmethod
     def reweight(self, changes: Sequence[Change]) -> None:
@@ -125,6 +132,10 @@ class ExactKernelSums(KernelSums):
 
 SET_CHUNK = 16
 """Rows binned and smoothed together when a grid engine's rows are set."""
+STAMP_COST = 3.0
+"""What adding one cell of a particle's stamp costs, in cells of a whole-grid smoothing (measured)."""
+RESET_AFTER = 16
+"""Moves a row takes by stamps before it is set afresh (float32 sums drift, if only by ~1e-7 a move)."""
 
 
 class GridKernelSums(KernelSums):
@@ -157,6 +168,8 @@ class GridKernelSums(KernelSums):
         """How far (cells) the filter reaches."""
         self.factor = np.ones(count)
         """Each row's grid times its factor is its K (a reweighting divides the factor, not the grid)."""
+        self.moves = np.zeros(count, np.intp)
+        """Moves by stamps each row has taken since it was last set."""
 
     def _cells(self, xy: Array) -> tuple[Index, Index, Array, Array]:
         """Lower-left cell indices and fractional offsets of points (clamped into the grid)."""
@@ -217,6 +230,45 @@ class GridKernelSums(KernelSums):
             chunk = rows[part]
             self.grids[chunk] = self._smooth(self._bin((len(chunk), *self.shape), i, j, fu, fv, weights[part]))
             self.factor[chunk] = 1.0
+            self.moves[chunk] = 0
+
+    def move(self, rows: Sequence[int], positions: Array, weights: Array, gone: Moved, come: Moved) -> None:
+        """When the particles that changed are few against the grid's cells (a large map), each one's
+        smoothed mass — its *stamp*, the filter's taps around its four binning corners: ``2·radius + 2``
+        cells a side — is taken out of (gone) or added to (come) its row's grid; otherwise, and every
+        ``RESET_AFTER`` moves, the rows are set afresh. K is linear in the particles, so both give the same
+        grids (to float32 rounding)."""
+        rows = list(rows)
+        side = 2 * self.radius + 2
+        changed = len(gone[0]) + len(come[0])
+        if (not rows or changed * side * side * STAMP_COST > len(rows) * self.shape[0] * self.shape[1]
+                or self.moves[rows].max() >= RESET_AFTER):
+            self.set(rows, positions, weights)
+            return
+        self._stamp(np.concatenate([gone[0], come[0]]), np.concatenate([gone[1], come[1]]),
+                    np.concatenate([-np.asarray(gone[2], float), np.asarray(come[2], float)]))
+        self.moves[rows] += 1
+
+    def _stamp(self, rows: Index, positions: Array, weights: Array) -> None:
+        """Add each particle's smoothed mass (weight ``weights[n]`` at ``positions[n]``) to row ``rows[n]``:
+        what binning it and smoothing the grid would add there."""
+        nx, ny = self.shape
+        r = self.radius
+        taps = _band(2 * r + 1, self.filter_sigma, self.truncate, self.grids.dtype.type)[r]  # k(t), t = −r … r
+        low, high = np.append(taps, 0), np.insert(taps, 0, 0)  # k(m − r) and k(m − r − 1), m = 0 … 2r + 1
+        i, j, fu, fv = self._cells(positions)
+        along_i = (1 - fu)[:, None] * low + fu[:, None] * high  # the corners i and i + 1 (shares 1 − fu, fu) filtered
+        along_j = (1 - fv)[:, None] * low + fv[:, None] * high
+        scale = self.scale * np.asarray(weights, float) / self.factor[rows]
+        stamp = (scale[:, None, None] * along_i[:, :, None] * along_j[:, None, :]).astype(self.grids.dtype)
+        offset = np.arange(2 * r + 2) - r
+        ci, cj = i[:, None] + offset, j[:, None] + offset
+        inside = ((ci >= 0) & (ci < nx))[:, :, None] & ((cj >= 0) & (cj < ny))[:, None, :]
+        cell = ((rows[:, None, None] * nx + ci[:, :, None]) * ny + cj[:, None, :])
+        if inside.all():
+            np.add.at(self.grids.reshape(-1), cell.ravel(), stamp.ravel())
+        else:
+            np.add.at(self.grids.reshape(-1), cell[inside], stamp[inside])
 
     def reweight(self, changes: Sequence[Change]) -> None:
         """All the changes' particles are binned into windows of one size around them (one filter for all);
@@ -293,6 +345,14 @@ class SplitKernelSums(KernelSums):
             self.low.set([int(r) for r in index[below]], positions[below], weights[below])
         if (~below).any():
             self.high.set([int(r) - self.split for r in index[~below]], positions[~below], weights[~below])
+
+    def move(self, rows: Sequence[int], positions: Array, weights: Array, gone: Moved, come: Moved) -> None:
+        index = np.asarray(list(rows), np.intp)
+        if (index < self.split).any() or (gone[0] < self.split).any() or (come[0] < self.split).any():
+            self.set(rows, positions, weights)  # the low rows take no moves: set them all
+            return
+        self.high.move([int(r) - self.split for r in index], positions, weights,
+                       (gone[0] - self.split, gone[1], gone[2]), (come[0] - self.split, come[1], come[2]))
 
     def reweight(self, changes: Sequence[Change]) -> None:
         self.low.reweight([c for c in changes if c[0] < self.split])

@@ -46,3 +46,26 @@ def test_the_same_seed_gives_the_same_frame_beliefs() -> None:
         runs.append((sefm.frames.X.copy(), sefm.frames.W.copy()))
     assert np.array_equal(runs[0][0], runs[1][0]) and np.array_equal(runs[0][1], runs[1][1])
     assert runs[0][0].shape == (2, 40, 2) and pytest.approx(runs[0][1].sum(axis=1)) == [1.0, 1.0]
+
+
+def _multiset(points: np.ndarray) -> list[tuple[float, float]]:
+    return sorted(map(tuple, points.tolist()))
+
+
+def test_an_update_says_which_particles_went_and_which_came() -> None:
+    """Before − gone + come is after, particle for particle, in every frame (what a kernel that follows the
+    beliefs by their differences relies on); nothing is said after the first draw."""
+    apartment = load_map("apartment")
+    sefm = localise(apartment, ["stir the cup"], rng=np.random.default_rng(3), config=SeFMConfig(particles=120))
+    assert sefm.frames.change is None
+    for pose, seen in [((5.0, -3.0, 0.0), [("spoon", (8.3, -4.1))]), ((0.0, 2.5, 0.0), [])]:
+        before = sefm.frames.X.copy()
+        sefm.update(pose, seen)
+        assert sefm.frames.change is not None
+        gone_f, gone_x, come_f, come_x = sefm.frames.change
+        assert 0 < len(come_f) < 2 * 120 * len(before)
+        for i in range(len(before)):
+            kept = _multiset(before[i])
+            for x in gone_x[gone_f == i].tolist():
+                kept.remove(tuple(x))                   # each gone particle was there
+            assert sorted(kept + _multiset(come_x[come_f == i])) == _multiset(sefm.frames.X[i])
