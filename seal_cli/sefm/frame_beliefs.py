@@ -152,6 +152,8 @@ class FrameBeliefs:
     """The free cell of each particle (an index into the map's free cells)."""
     change: Change | None = None
     """What the last update changed, as particles gone and particles come (None: no update yet)."""
+    _seen: tuple[Terms, Index | None] | None = None
+    """The terms and the kernel's row versions γ was last evaluated with."""
 
     @classmethod
     def start(cls, m: Map, noise: Sequence[float], particles: int, terms: Terms, kernel: KernelSums,
@@ -193,7 +195,7 @@ class FrameBeliefs:
         F, P = self.W.shape
         if F == 0:
             return
-        gamma = self.gamma_at(terms, kernel, self.X, free=self.cell >= 0)
+        gamma = self._gamma_now(terms, kernel)
         ratio = np.divide(gamma, self.gamma, out=np.zeros((F, P)), where=self.gamma > 0)
         X, cells, fresh_gamma, fresh_weights = self._fresh(terms, kernel, sources,
                                                            max(1, int(round(self.model.fresh_share * P))), rng)
@@ -201,6 +203,26 @@ class FrameBeliefs:
                             np.concatenate([gamma, fresh_gamma], axis=1),
                             np.concatenate([self.Z[:, None] * self.W * P * ratio, fresh_weights], axis=1),
                             terms, kernel, rng, carried=P)
+
+    def _gamma_now(self, terms: Terms, kernel: KernelSums) -> Array:
+        """γ of the current target at every particle. A frame without context whose sources' K are all as
+        they were at the last update (the same relations, no row of them set or reweighted since) has the
+        same γ where its particles are: it is kept, not evaluated again (the same numbers, bit for bit)."""
+        versions = kernel.versions()
+        seen, self._seen = self._seen, (terms, versions)
+        if versions is None or seen is None or seen[0] is not terms or seen[1] is None:
+            return self.gamma_at(terms, kernel, self.X, free=self.cell >= 0)
+        sources = terms.measurement[0]
+        changed = versions != seen[1]
+        stale = terms.has_context | ((sources >= 0) & changed[np.maximum(sources, 0)]).any(axis=1)
+        rows = np.flatnonzero(stale)
+        if len(rows) == len(stale):
+            return self.gamma_at(terms, kernel, self.X, free=self.cell >= 0)
+        gamma = self.gamma.copy()
+        if len(rows):
+            gamma[rows] = self.gamma_at(terms, kernel, np.take(self.X, rows, axis=0), rows,
+                                        free=np.take(self.cell, rows, axis=0) >= 0)
+        return gamma
 
     def _fresh(self, terms: Terms, kernel: KernelSums, sources: tuple[Array, Array], n: int,
                rng: np.random.Generator) -> tuple[Array, Index, Array, Array]:
@@ -227,7 +249,7 @@ class FrameBeliefs:
         The first ``carried`` of each row are the particles of the previous update (each weighing 1/P):
         :attr:`change` then tells which of them are gone and which particles are new."""
         F, P = self.W.shape
-        weights[~(np.isfinite(weights) & (weights > 0))] = 0.0
+        np.copyto(weights, 0.0, where=~((weights > 0) & (weights < np.inf)))  # no NaN, infinite or negative weight
         self.Z = np.maximum(weights.mean(axis=1), np.finfo(float).tiny)
         W = normalise(weights)
         width = W.shape[1]
@@ -289,10 +311,15 @@ class FrameBeliefs:
         rows = np.arange(terms.frames) if frames is None else frames
         total = terms.belief_total[rows, None]
         floor = self.model.floor_share * total * 2 * np.pi * self.sigma ** 2 / self.free_area
-        meas = np.where(total > 0, measurement.astype(float) + floor, 1.0)
+        meas = measurement.astype(float) + floor
+        if not (total > 0).all():
+            meas = np.where(total > 0, meas, 1.0)
+        has = terms.has_context[rows, None]
+        if not has.any():
+            return np.asarray(meas)
         c0 = max(self.model.context_floor, 1e-12)
-        ctx = np.where(terms.has_context[rows, None], c0 + context, 1.0)
-        return np.asarray(meas * ctx)
+        meas *= np.where(has, c0 + context, 1.0)
+        return np.asarray(meas)
 
     def gamma_at(self, terms: Terms, kernel: KernelSums, X: Array, frames: Index | None = None,
                  free: NDArray[np.bool_] | None = None) -> Array:

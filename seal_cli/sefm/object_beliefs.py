@@ -214,7 +214,9 @@ class ObjectBeliefs:
         total = raw.sum(axis=1)
         W = normalise(raw)
         low = ess(W) < self.model.resample_below * self.particles
-        windowed = ~low & ~np.isin(rows, detected)  # the rows whose particles stay where they are
+        is_detected = np.zeros(len(self.sources), bool)
+        is_detected[detected] = True
+        windowed = ~low & ~is_detected[rows]  # the rows whose particles stay where they are
         kept = np.flatnonzero(windowed)
         reweighted = _changes(rows[kept], np.take(self.W, rows[kept], axis=0), np.take(L, kept, axis=0), total[kept])
         self.W[rows] = W

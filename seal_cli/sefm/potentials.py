@@ -78,6 +78,10 @@ class KernelSums(ABC):
         """``out[r, q] = Σ_s weights[r, s] · K_{sources[r, s]}(points[r, q])`` for points (R, Q, 2) and
         sources, weights (R, S); a source of −1 is no term. Shape (R, Q)."""
 
+    def versions(self) -> Index | None:
+        """A number per row that changes whenever the row's K does (None: not kept, so any row may have)."""
+        return None
+
     def sample(self, which: Index, points: Array, rows: Index | None = None) -> Array:
         """``out[t, q] = K_{which[t]}(points[t, q])`` for points (T, Q, 2): shape (T, Q). With ``rows``
         (T,), points are (R, Q, 2) and query t is at ``points[rows[t]]``."""
@@ -170,6 +174,7 @@ class GridKernelSums(KernelSums):
         """Each row's grid times its factor is its K (a reweighting divides the factor, not the grid)."""
         self.moves = np.zeros(count, np.intp)
         """Moves by stamps each row has taken since it was last set."""
+        self._versions = np.zeros(count, np.intp)
 
     def _cells(self, xy: Array) -> tuple[Index, Index, Array, Array]:
         """Lower-left cell indices and fractional offsets of points (clamped into the grid)."""
@@ -231,6 +236,10 @@ class GridKernelSums(KernelSums):
             self.grids[chunk] = self._smooth(self._bin((len(chunk), *self.shape), i, j, fu, fv, weights[part]))
             self.factor[chunk] = 1.0
             self.moves[chunk] = 0
+            self._versions[chunk] += 1
+
+    def versions(self) -> Index:
+        return self._versions.copy()
 
     def move(self, rows: Sequence[int], positions: Array, weights: Array, gone: Moved, come: Moved) -> None:
         """When the particles that changed are few against the grid's cells (a large map), each one's
@@ -248,6 +257,7 @@ class GridKernelSums(KernelSums):
         self._stamp(np.concatenate([gone[0], come[0]]), np.concatenate([gone[1], come[1]]),
                     np.concatenate([-np.asarray(gone[2], float), np.asarray(come[2], float)]))
         self.moves[rows] += 1
+        self._versions[rows] += 1
 
     def _stamp(self, rows: Index, positions: Array, weights: Array) -> None:
         """Add each particle's smoothed mass (weight ``weights[n]`` at ``positions[n]``) to row ``rows[n]``:
@@ -292,8 +302,10 @@ class GridKernelSums(KernelSums):
             smooth = self._smooth(mass)
             for k, row in enumerate(rows):
                 self.grids[row, corner_i[k]:corner_i[k] + span_i, corner_j[k]:corner_j[k] + span_j] += smooth[k]
-        for row, _, _, _, total in changes:
-            self.factor[row] /= total
+        if changes:
+            rows = np.array([c[0] for c in changes], np.intp)
+            self.factor[rows] /= np.array([c[4] for c in changes], float)
+            self._versions[rows] += 1
 
     def combine(self, sources: Index, weights: Array, points: Array) -> Array:
         """Bilinear reads of the sources' grids at the points, one term (a column of ``sources``) at a time."""
@@ -353,6 +365,10 @@ class SplitKernelSums(KernelSums):
             return
         self.high.move([int(r) - self.split for r in index], positions, weights,
                        (gone[0] - self.split, gone[1], gone[2]), (come[0] - self.split, come[1], come[2]))
+
+    def versions(self) -> Index | None:
+        low, high = self.low.versions(), self.high.versions()
+        return None if low is None or high is None else np.concatenate([low, high])
 
     def reweight(self, changes: Sequence[Change]) -> None:
         self.low.reweight([c for c in changes if c[0] < self.split])
