@@ -218,8 +218,12 @@ class SeFM:
             C = len(self.sources)
             frames = rows - C
             X, W = np.take(self.frames.X, frames, axis=0), np.take(self.frames.W, frames, axis=0)
-            change = self.frames.change
-            if change is None or not np.array_equal(rows, self._context_rows):
+            changed = self.frames.changed()
+            change = None
+            if changed is not None and np.array_equal(rows, self._context_rows) and \
+                    self.kernel.takes_moves(list(rows), int(changed[frames].sum())):
+                change = self.frames.change
+            if change is None:
                 self.kernel.set(list(rows), X, W)
             else:  # the same rows as at the last update: what changed in them is enough
                 P = self.frames.particles

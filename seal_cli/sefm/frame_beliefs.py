@@ -150,8 +150,9 @@ class FrameBeliefs:
     last_ess: Array = field(default_factory=lambda: np.zeros(0))
     cell: Index = field(default_factory=lambda: np.zeros((0, 0), np.intp))
     """The free cell of each particle (an index into the map's free cells)."""
-    change: Change | None = None
-    """What the last update changed, as particles gone and particles come (None: no update yet)."""
+    _moved: tuple[Array, Index, NDArray[np.bool_], int] | None = None
+    """What :attr:`change` is read from: the particles before the last update, each new particle's
+    ancestor among them and the fresh draws (a column), which new particles are copies, how many were carried."""
     _seen: tuple[Terms, Index | None] | None = None
     """The terms and the kernel's row versions γ was last evaluated with."""
 
@@ -166,12 +167,35 @@ class FrameBeliefs:
         beliefs.cell = np.zeros((F, particles), np.intp)
         if F:
             beliefs._resample_move(*beliefs._fresh(terms, kernel, sources, particles, rng), terms, kernel, rng)
-            beliefs.change = None  # drawn afresh: nothing to compare with
+            beliefs._moved = None  # drawn afresh: nothing to compare with
         return beliefs
 
     @property
     def particles(self) -> int:
         return int(self.X.shape[1])
+
+    @property
+    def change(self) -> Change | None:
+        """What the last update changed: the particles gone (carried ones no draw chose) and come (every other
+        new particle: fresh draws and copies, moved or not), each with its frame; the first draw of a
+        carried particle is that particle, where it was. None before the first update."""
+        if self._moved is None:
+            return None
+        before, ancestor, copies, carried = self._moved
+        F, width = ancestor.shape[0], before.shape[1]
+        chosen = np.zeros(F * width, bool)
+        chosen[(ancestor + np.arange(F)[:, None] * width).ravel()] = True
+        gone_f, gone_k = np.nonzero(~chosen.reshape(F, width)[:, :carried])
+        come_f, come_k = np.nonzero(copies | (ancestor >= carried))
+        return (gone_f, np.take(before.reshape(-1, 2), gone_f * width + gone_k, axis=0),
+                come_f, np.take(self.X.reshape(-1, 2), come_f * self.particles + come_k, axis=0))
+
+    def changed(self) -> Index | None:
+        """How many particles of each frame the last update changed (gone plus come), None before the first."""
+        if self._moved is None:
+            return None
+        _, ancestor, copies, carried = self._moved
+        return np.asarray(2 * (copies | (ancestor >= carried)).sum(axis=1))
 
     def ess(self) -> Array:
         """The effective sample size of the last reweighting (before it was resampled), in particles kept.
@@ -265,8 +289,7 @@ class FrameBeliefs:
         copies[:, 1:] = chosen[:, 1:] == chosen[:, :-1]  # the draws are sorted: a copy follows its original
         f, k = np.nonzero(copies)
         self._move(f, k, terms, kernel, rng)
-        if carried:
-            self.change = _change(X, ancestors - np.arange(F)[:, None] * width, copies, carried, self.X)
+        self._moved = (X, ancestors - np.arange(F)[:, None] * width, copies, carried) if carried else None
 
     def _move(self, f: Index, k: Index, terms: Terms, kernel: KernelSums, rng: np.random.Generator) -> None:
         """Move particles ``k`` of frames ``f`` by the prediction potential, each move accepted by a
@@ -367,17 +390,6 @@ class FrameBeliefs:
         particle = np.clip(np.searchsorted(cdf, points, side="right") - row * P, 0, P - 1)
         drawn = np.take(positions.reshape(-1, 2), row * P + particle, axis=0)
         return np.asarray(drawn + rng.normal(0.0, self.sigma, drawn.shape))
-
-
-def _change(before: Array, ancestor: Index, copies: NDArray[np.bool_], carried: int, after: Array) -> Change:
-    """The particles gone (carried ones no draw chose) and come (every other new particle: fresh draws and
-    the copies, moved or not); the first draw of a carried particle is that particle, where it was."""
-    F = len(ancestor)
-    chosen = np.zeros((F, before.shape[1]), bool)
-    chosen[np.arange(F)[:, None], ancestor] = True
-    gone_f, gone_k = np.nonzero(~chosen[:, :carried])
-    come_f, come_k = np.nonzero(copies | (ancestor >= carried))
-    return (gone_f, before[gone_f, gone_k], come_f, after[come_f, come_k])
 
 
 def _slots(frame: Index, source: Index, weight: Array, rows: Index) -> tuple[Index, Array]:

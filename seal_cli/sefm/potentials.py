@@ -68,6 +68,11 @@ class KernelSums(ABC):
         ``gone`` and ``come`` (each ``(row, positions (m, 2), weights (m,))``). By default: :meth:`set`."""
         self.set(rows, positions, weights)
 
+    def takes_moves(self, rows: Sequence[int], changed: int) -> bool:
+        """Whether :meth:`move` would use the particles that changed (``changed`` of them in all) rather
+        than set the rows afresh: if not, there is no need to list them."""
+        return False
+
     @abstractmethod
     def reweight(self, changes: Sequence[Change]) -> None:
         """For each change ``(row, index, positions, delta, total)``: the weights of particles ``index``
@@ -248,16 +253,19 @@ class GridKernelSums(KernelSums):
         ``RESET_AFTER`` moves, the rows are set afresh. K is linear in the particles, so both give the same
         grids (to float32 rounding)."""
         rows = list(rows)
-        side = 2 * self.radius + 2
-        changed = len(gone[0]) + len(come[0])
-        if (not rows or changed * side * side * STAMP_COST > len(rows) * self.shape[0] * self.shape[1]
-                or self.moves[rows].max() >= RESET_AFTER):
+        if not self.takes_moves(rows, len(gone[0]) + len(come[0])):
             self.set(rows, positions, weights)
             return
         self._stamp(np.concatenate([gone[0], come[0]]), np.concatenate([gone[1], come[1]]),
                     np.concatenate([-np.asarray(gone[2], float), np.asarray(come[2], float)]))
         self.moves[rows] += 1
         self._versions[rows] += 1
+
+    def takes_moves(self, rows: Sequence[int], changed: int) -> bool:
+        side = 2 * self.radius + 2
+        rows = list(rows)
+        return bool(rows) and changed * side * side * STAMP_COST <= len(rows) * self.shape[0] * self.shape[1] \
+            and int(self.moves[rows].max()) < RESET_AFTER
 
     def _stamp(self, rows: Index, positions: Array, weights: Array) -> None:
         """Add each particle's smoothed mass (weight ``weights[n]`` at ``positions[n]``) to row ``rows[n]``:
@@ -357,6 +365,10 @@ class SplitKernelSums(KernelSums):
             self.low.set([int(r) for r in index[below]], positions[below], weights[below])
         if (~below).any():
             self.high.set([int(r) - self.split for r in index[~below]], positions[~below], weights[~below])
+
+    def takes_moves(self, rows: Sequence[int], changed: int) -> bool:
+        index = np.asarray(list(rows), np.intp)
+        return not (index < self.split).any() and self.high.takes_moves([int(r) - self.split for r in index], changed)
 
     def move(self, rows: Sequence[int], positions: Array, weights: Array, gone: Moved, come: Moved) -> None:
         index = np.asarray(list(rows), np.intp)
