@@ -39,7 +39,7 @@ from seal_cli.frames.taxonomy import Taxonomy, class_key, class_words
 from seal_cli.language.lexicon import noun_lemma
 from seal_cli.maps.model import SPEAKER, Map
 
-__all__ = ["FIXED", "HERE", "ROOM_WORDS", "SPEAKER_WORDS", "MapNames", "Referent", "Refusal", "spoken"]
+__all__ = ["FIXED", "HERE", "ROOM_WORDS", "SPEAKER_WORDS", "MapNames", "Referent", "Refusal", "kind_of", "spoken"]
 
 FIXED = "fixed"
 """The library category of what never moves: furniture, appliances, fixtures and rooms."""
@@ -179,7 +179,7 @@ class MapNames:
                 others = ", ".join(f"{r.id} ({r.room or 'in no room'})" for r in found)
                 raise Refusal(f"the {self.map.name} has no {what} in the {there}; it has {others}")
             found = inside
-        typed = [r for r in found if r.kind != "place" or self.taxonomy.is_a(r.cls, element_type) is not False
+        typed = [r for r in found if r.kind != "place" or kind_of(self.taxonomy, r.cls, element_type) is not False
                  or (element_type == "openable" and self._openable(r.id))]
         if element_type == "openable":
             typed = [r for r in typed if r.kind == "place" and self._openable(r.id)] or typed
@@ -209,7 +209,7 @@ class MapNames:
         names = [cls] if cls else []
         if thing:
             names += ["_".join(thing), thing[-1]]
-        return any(self.taxonomy.is_a(n, FIXED) is True for n in names if n)
+        return any(kind_of(self.taxonomy, n, FIXED) is True for n in names if n)
 
     def refusal(self, text: str, cls: str | None) -> Refusal | None:
         """Why a phrase cannot be grounded on this map, when it names a room or fixed thing the map
@@ -230,6 +230,17 @@ class MapNames:
 
     def names_of_kind(self, kind: str) -> Sequence[str]:
         return [r.id for r in self.referents if r.kind == kind]
+
+
+def kind_of(taxonomy: Taxonomy, cls: str, category: str) -> bool | None:
+    """Whether a class is of a category, as the library's taxonomy says; for a compound class the
+    taxonomy does not list, as its head (the last word) is: a ``bunk_bed`` is a bed (furniture: it
+    does not switch on), a ``chest_freezer`` a freezer, a ``filing_cabinet`` a cabinet."""
+    known = taxonomy.is_a(cls, category)
+    words = class_words(cls)
+    if known is None and len(words) > 1:
+        return taxonomy.is_a(words[-1], category)
+    return known
 
 
 def is_room_word(words: Sequence[str]) -> bool:
