@@ -27,6 +27,7 @@ What happened is reported to observers (``observe=callable(Record)``) and kept i
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -491,10 +492,12 @@ class Agent:
 
     def go_to(self, value: str, binding: Binding) -> Outcome:
         """``navigate(value)``: find an instance (searching while none is known), drive within reach of
-        it; a room the robot is in already needs no drive."""
+        it; a room the robot is in already needs no drive (unless a thing is to be put down there:
+        then to a surface in it)."""
         role = next((r for r, v in binding.values if v == value), None)
         room = self.room(value)
-        if room is not None and bool(room.contains([self.world.robot.pose[:2]])[0]):
+        puts = any(a.name == "place" and role in a.args for a in binding.frame.actions)   # onto a surface there
+        if room is not None and not puts and bool(room.contains([self.world.robot.pose[:2]])[0]):
             self.say("go", f"is in the {spoken(value)} already", to=self.world.robot.pose[:2], metres=0.0)
             return Outcome(True, f"in {value}")
         while True:
@@ -567,14 +570,12 @@ class Agent:
         run's budget. One line a room; the drives and looks of the survey are details. An Outcome
         once the house has been searched."""
         if self.sweep is None:
-            self.sweep = [*self.scene.map.rooms, _Rest(self.scene.map.rooms)]
+            self.sweep = [*self.room_tour(self.scene.map.rooms), _Rest(self.scene.map.rooms)]
             self.swept = []
         if not self.sweep:
             return Fatal(False, self._swept_house(value), Reason.NOT_FOUND, value)
-        field_ = self.distances()
-        region = min(self.sweep, key=lambda r: self._drive_into(r, field_))
-        self.sweep.remove(region)
-        if not np.isfinite(self._drive_into(region, field_)):
+        region = self.sweep.pop(0)
+        if not np.isfinite(self._drive_into(region, self.distances())):
             return None
         self.say("search", f"searches the whole house for {self.said(value)}: looks all over the "
                  f"{region.name.replace('_', ' ')}", target=value, room=region.name)
@@ -589,13 +590,40 @@ class Agent:
         return None
 
     def _drive_into(self, region: Any, field_: np.ndarray) -> float:
-        """Metres to the nearest free cell of a region (inf when none can be reached); the rest of
-        the house comes after every room."""
+        """Metres to the nearest free cell of a region (inf when none can be reached)."""
         cells, points = self.grid.free_cells, self.grid.free_points
         inside = np.asarray(region.contains(points), dtype=bool)
         costs = field_[cells[inside, 0], cells[inside, 1]]
-        best = float(costs.min()) if len(costs) else math.inf
-        return best + (1e6 if isinstance(region, _Rest) and np.isfinite(best) else 0.0)
+        return float(costs.min()) if len(costs) else math.inf
+
+    def room_tour(self, rooms: Sequence[Any]) -> list[Any]:
+        """The rooms in the order that drives least from where the robot is to each room's middle
+        (its free cell nearest its centroid) in turn: every order when there are at most
+        :data:`TOUR_EXACT` rooms, else the nearest room next. Rooms it cannot drive into go last."""
+        cells, points = self.grid.free_cells, self.grid.free_points
+        middles: list[Cell] = []
+        for room in rooms:
+            inside = np.flatnonzero(np.asarray(room.contains(points), dtype=bool))
+            if not len(inside):
+                middles.append(self.robot_cell())
+                continue
+            k = inside[int(np.argmin(np.hypot(*(points[inside] - np.asarray(room.centroid)).T)))]
+            middles.append((int(cells[k, 0]), int(cells[k, 1])))
+        start = self.distances()
+        fields = [self.grid.distances(c) for c in middles]
+        first = np.array([start[c] for c in middles])
+        between = np.array([[f[c] for c in middles] for f in fields])
+        reachable = [i for i in range(len(rooms)) if np.isfinite(first[i])]
+        if len(reachable) <= TOUR_EXACT:
+            order = min(itertools.permutations(reachable), default=(), key=lambda o: first[o[0]] + sum(
+                between[a, b] for a, b in itertools.pairwise(o)))
+        else:
+            order, left = (), set(reachable)
+            while left:
+                here = first if not order else between[order[-1]]
+                order += (min(left, key=lambda i: here[i]),)
+                left.discard(order[-1])
+        return [rooms[i] for i in order] + [r for i, r in enumerate(rooms) if i not in order]
 
     def _swept_house(self, value: str) -> str:
         """The one sentence that ends a whole-house search that found nothing."""
@@ -755,7 +783,10 @@ class Agent:
         did instead of the world's own words (the answer it gives, not the message's name)."""
         outcome = self.world.act(name, *(a if self.is_person(a) else self.class_of(a) for a in args))
         text = said if said is not None and outcome.ok else outcome.message
-        self.say("act" if outcome.ok else "fail", text, action=name, args=list(args))
+        again = text in {r.text for r in self.records[-3:]} or any(text.endswith(f": {a}") for a in self.answers)
+        # "sees spoon_1" said by the look just now, "says: <the answer>": kept, not narrated twice
+        self.say("act" if outcome.ok else "fail", text, action=name, args=list(args),
+                 **({"detail": True} if again else {}))
         return outcome
 
     def answer_what(self, question: Question, binding: Binding) -> Outcome:
@@ -1144,6 +1175,9 @@ WORDS = frozenset({"search", "count", "say", "answer"})
 
 GO_FIRST = {"approach": 0, "follow": 0}
 """Primitives the robot drives for first: up to the person (approach, follow)."""
+
+TOUR_EXACT = 7
+"""Up to this many rooms, the whole-house search tries every order of them (7! = 5,040)."""
 
 DETAIL_KINDS = frozenset({"go", "look", "search"})
 """The kinds of record that are details of a survey's line (not narrated, kept in the records)."""

@@ -515,7 +515,7 @@ class World:
 
     def _do_approach(self, person: str) -> Outcome:
         why = self._person(person)
-        return why if why is not None else Outcome(True, f"is with {person}")
+        return why if why is not None else Outcome(True, f"is with {'the speaker' if person == 'me' else person}")
 
     def _do_hand_over(self, obj: str, person: str) -> Outcome:
         if self.robot.holding != obj:
