@@ -237,12 +237,14 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
 
 def _names(phrase: Phrase, cls: str, things: Things) -> bool:
     """Whether the phrase's words name the class: its own words or one of its synonyms' ("the couch": a
-    sofa), rather than a class a learned table guesses people meant ("the bowl": a cup)."""
+    sofa), rather than a class a learned table guesses people meant ("the bowl": a cup). A name of
+    several words is named by its head, the last ("the bottle": a water bottle; "a coffee" is no
+    coffee machine)."""
     from seal_cli.language.lexicon import noun_lemma
 
     said = {noun_lemma(w) for w in class_words(phrase.text or phrase.head)} | {phrase.head}
     names = [cls, *things.taxonomy.names.get(class_key(cls), ()), *things.synonyms.get(class_key(cls), ())]
-    return any(set(map(noun_lemma, class_words(n))) & said for n in names)
+    return any(noun_lemma(class_words(n)[-1]) in said for n in names if class_words(n))
 
 
 def _on_map(phrase: Phrase, things: Things, text: str, category: str) -> tuple[str, ...] | None:

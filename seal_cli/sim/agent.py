@@ -783,7 +783,8 @@ class Agent:
         did instead of the world's own words (the answer it gives, not the message's name)."""
         outcome = self.world.act(name, *(a if self.is_person(a) else self.class_of(a) for a in args))
         text = said if said is not None and outcome.ok else outcome.message
-        again = text in {r.text for r in self.records[-3:]} or any(text.endswith(f": {a}") for a in self.answers)
+        again = text in {r.text for r in self.records[-3:]} or any(text.endswith(f": {a}") for a in self.answers) \
+            or name == "search" and outcome.ok and bool(self.answers)     # the answer said where it is
         # "sees spoon_1" said by the look just now, "says: <the answer>": kept, not narrated twice
         self.say("act" if outcome.ok else "fail", text, action=name, args=list(args),
                  **({"detail": True} if again else {}))
