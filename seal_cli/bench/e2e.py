@@ -69,11 +69,20 @@ class Verdict:
     path_m: float = 0.0
 
 
+SHIPPED = ("e2e.yaml", "e2e_houses.yaml")
+"""The shipped suite's files in ``suites/``: the apartment and the AWS house; the example houses."""
+
+
 def load_cases(path: str | Path | None = None) -> list[Case]:
-    """The suite's cases (default: the shipped ``suites/e2e.yaml``)."""
+    """The cases of a suite file (default: the shipped suite, every file of :data:`SHIPPED`)."""
+    if path is None:
+        return [c for name in SHIPPED for c in load_cases(Path(__file__).parent / "suites" / name)]
+    return _load(Path(path))
+
+
+def _load(path: Path) -> list[Case]:
     from seal_cli.fileio import read_yaml
 
-    path = Path(path) if path is not None else Path(__file__).parent / "suites" / "e2e.yaml"
     data = read_yaml(path)
     entries = data.get("cases") if isinstance(data, dict) else None
     if not isinstance(entries, list):

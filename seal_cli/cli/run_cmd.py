@@ -130,7 +130,8 @@ def run(
                    "steps": result.steps, "plan": result.plan, "executed": result.executed,
                    "answer": result.answer, "warnings": result.warnings, "why": result.why.value,
                    "records": [{"kind": r.kind, "text": r.text, "step": r.step, "path_m": round(r.path_m, 3),
-                                "pose": [round(v, 3) for v in r.pose]} for r in result.records]})
+                                "pose": [round(v, 3) for v in r.pose], **({"detail": True} if r.data.get("detail")
+                                                                          else {})} for r in result.records]})
     else:
         if result.answer:
             out.print(f"[bold]answer:[/bold] {result.answer}", markup=True)
