@@ -30,9 +30,9 @@ if TYPE_CHECKING:
     app: typer.Typer
     """The whole command line, every command registered (made when first asked for, see ``__getattr__``)."""
 
-__all__ = ["MAX_COUNT", "MAX_PARTICLES", "MAX_RUN_METRES", "MAX_RUN_STEPS", "MAX_STEPS", "OUTPUT_SUFFIXES",
-           "PIPE_WIDTH", "FramelibOption", "JsonOption", "LazyConsole", "a_number", "app", "bench_app", "command",
-           "emit_json", "err", "main", "out", "progress_bar", "report"]
+__all__ = ["DETECTIONS_TOPIC_HELP", "MAX_COUNT", "MAX_PARTICLES", "MAX_RUN_METRES", "MAX_RUN_STEPS", "MAX_STEPS",
+           "OUTPUT_SUFFIXES", "PIPE_WIDTH", "POSE_TOPIC_HELP", "FramelibOption", "JsonOption", "LazyConsole",
+           "a_number", "app", "bench_app", "command", "emit_json", "err", "main", "out", "progress_bar", "report"]
 
 
 def framelib_paths(paths: list[Path] | None) -> list[Path] | None:
@@ -53,6 +53,13 @@ MAX_PARTICLES = 100_000
 
 MAX_STEPS = 100_000
 """The most belief updates ``seal localize --steps`` takes (about ten minutes at 200 particles)."""
+
+POSE_TOPIC_HELP = ("the robot's pose (PoseStamped, PoseWithCovarianceStamped, Odometry, or /tf); default: /tf if it "
+                   "links --frame to base_link, else the bag's only pose topic.")
+"""``--pose-topic``'s help, shared by ``seal localize --bag`` and ``seal import-bag``."""
+
+DETECTIONS_TOPIC_HELP = "the vision_msgs Detection2DArray/3DArray topic; default: the bag's only one."
+"""``--detections-topic``'s help, shared likewise."""
 
 MAX_RUN_STEPS = 100_000
 """The most steps ``seal run --max-steps`` allows (a run ends sooner when its task is done)."""

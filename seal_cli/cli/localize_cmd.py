@@ -9,8 +9,10 @@ from typing import TYPE_CHECKING, Any
 import typer
 
 from seal_cli.cli import (
+    DETECTIONS_TOPIC_HELP,
     MAX_PARTICLES,
     MAX_STEPS,
+    POSE_TOPIC_HELP,
     FramelibOption,
     JsonOption,
     command,
@@ -101,12 +103,9 @@ def localize(
     bag: Path | None = typer.Option(None, "--bag", help="A ROS bag (ROS 1 .bag, ROS 2 folder, .db3 or .mcap): one "
                                     "update per vision_msgs detection message, at the robot's pose then.",
                                     show_default=False),
-    pose_topic: str | None = typer.Option(None, "--pose-topic", help="With --bag: the robot's pose (PoseStamped, "
-                                          "PoseWithCovarianceStamped, Odometry, or /tf); default: /tf if it "
-                                          "links --frame to base_link, else the bag's only pose topic.",
+    pose_topic: str | None = typer.Option(None, "--pose-topic", help=f"With --bag: {POSE_TOPIC_HELP}",
                                           show_default=False),
-    detections_topic: str | None = typer.Option(None, "--detections-topic", help="With --bag: the vision_msgs "
-                                                "Detection2DArray/3DArray topic; default: the bag's only one.",
+    detections_topic: str | None = typer.Option(None, "--detections-topic", help=f"With --bag: {DETECTIONS_TOPIC_HELP}",
                                                 show_default=False),
     frame: str = typer.Option("map", "--frame", help="With --bag: the map's TF frame (poses and detections are "
                               "carried into it); also the frame of --goals."),

@@ -8,20 +8,17 @@ from pathlib import Path
 import typer
 from rich.table import Table
 
-from seal_cli.cli import JsonOption, bench_app, command, emit_json, err, out
+from seal_cli.cli import DETECTIONS_TOPIC_HELP, POSE_TOPIC_HELP, JsonOption, bench_app, command, emit_json, err, out
 
 
 @command("import-bag")
 def import_bag(
     bag: Path = typer.Argument(..., help="A ROS bag: ROS 1 .bag, ROS 2 folder, .db3 or .mcap.", show_default=False),
     output: Path = typer.Option(..., "-o", "--output", help="The observations YAML to write.", show_default=False),
-    pose_topic: str | None = typer.Option(None, "--pose-topic", help="The robot's pose (PoseStamped, "
-                                          "PoseWithCovarianceStamped, Odometry, or /tf); default: /tf if it links "
-                                          "--frame to base_link, else the bag's only pose topic.",
+    pose_topic: str | None = typer.Option(None, "--pose-topic", help=f"From the bag: {POSE_TOPIC_HELP}",
                                           show_default=False),
-    detections_topic: str | None = typer.Option(None, "--detections-topic", help="The vision_msgs "
-                                                "Detection2DArray/3DArray topic; default: the bag's only one.",
-                                                show_default=False),
+    detections_topic: str | None = typer.Option(None, "--detections-topic",
+                                                help=f"From the bag: {DETECTIONS_TOPIC_HELP}", show_default=False),
     frame: str = typer.Option("map", "--frame", help="The map's TF frame: poses and detections are carried into it."),
     base_frame: str = typer.Option("base_link", "--base-frame", help="The robot's TF frame."),
     labels: Path | None = typer.Option(None, "--labels", help="YAML {id: class} or [class, ...] naming numeric "

@@ -411,10 +411,13 @@ class Agent:
         return self.scene.map.rooms[index] if index is not None else None
 
     def surface_in(self, room: Any) -> str | None:
-        """Where to go in a room, or to put a thing down there: the nearest open place in it."""
+        """Where to go in a room, or to put a thing down there: the nearest surface in it (a place
+        that does not open, such as a counter), else the nearest open receptacle in it (a fridge the
+        robot left open is no place to put down what it was asked to bring to the kitchen)."""
         places = [k for k in self.known.values() if not k.movable and k.receptacle
                   and self.world.items[k.id].is_open and bool(room.contains([k.at])[0])]
-        return self.nearest(places) if places else None
+        surfaces = [k for k in places if not k.openable]
+        return self.nearest(surfaces or places) if places else None
 
     def spent(self, item: str, value: str) -> bool:
         """Whether a known instance cannot serve as ``value`` (put in place already, out of reach,

@@ -276,3 +276,10 @@ def test_find_goes_back_to_where_it_saw_the_thing(library: object, shared_data: 
 def test_look_in_a_place_says_what_is_there() -> None:
     report = run_json("look in the fridge")
     assert report["completed"] and report["answer"] == "in fridge_1: apple_1"
+
+
+def test_a_thing_brought_to_a_room_is_put_on_a_surface_there_not_back_where_it_was() -> None:
+    report = run_json("please bring the apple to the kitchen")     # the apple is in the fridge, in the kitchen
+    texts = [r["text"] for r in report["records"]]
+    assert report["completed"] and "picked up apple_1 from fridge_1" in texts
+    assert "put apple_1 on counter_1" in texts and "put apple_1 in fridge_1" not in texts
