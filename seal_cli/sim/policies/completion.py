@@ -1,51 +1,66 @@
-"""The expected cost to complete the remaining plan, and the search order that minimises it.
+"""The expected cost to complete the remaining plan, and the next view that minimises it.
 
 A plan drives to its targets in order (Pick(spoon), then Stir(cup): the spoon, then the cup).
 Some targets are known — a place of the map, a thing already seen — and are positions; the others
-are unknown and are beliefs. This module answers, for a robot at a point: *which region should it
-look at next, so that the whole remaining plan is done by the shortest expected drive?*
+are unknown and are beliefs. This module answers, for a robot at a node of a
+:class:`~seal_cli.sim.policies.views.Lattice`: *from which candidate view should it look next, so
+that the whole remaining plan is done by the shortest expected drive?*
 
 The model (the approximation, stated once):
 
-- **Regions.** The map is cut into regions a single view reveals: every place (the free space
-  within its reach, where a thing on or in it is taken from; a shut one is revealed by opening it)
-  and every room (its free space outside the places). Looking from a region's view reveals whether
-  each sought thing is in that region, with certainty; a thing found in a region is at its view.
-- **Beliefs.** Each unknown thing is in exactly one region, with probability proportional to the
-  belief's mass there (what is believed to be outside every region is left out: the beliefs are
-  conditioned on the regions), and different things are independent — the factorised form of the
-  commanded frame's belief over its unknown elements.
-- **Costs.** Driving between views, the start and the known targets costs the shortest-path
-  metres on the grid; acting costs nothing.
+- **Views and looks.** The robot drives shortest paths between nodes and looks every metre on the
+  way and at the end (as the agent does); a look sees the nodes the sensor sees from it, except
+  those in a shut receptacle, which the look at a view that opens it sees. A search drive stops at
+  the first look that sees the thing sought, and the robot drives to it (the lattice's distance).
+- **Beliefs.** Each unknown thing is at one node, with probability proportional to its belief's
+  mass there; different things are independent (the commanded frame's belief over its unknown
+  elements in factorised form; the frame's relation — the things near each other — enters through
+  the path costs between them). The detector does not miss.
+- **Costs.** Metres driven; acting and turning cost nothing.
 
-Under that model the optimal adaptive search is a finite-horizon MDP whose state is the robot's
-location, the set of regions seen, how far along the plan it is and where each thing seen so far
-was found; :func:`solve` computes its value exactly by dynamic programming (memoised recursion).
-When the robot finds the thing at hand it serves it and moves on, and everything it saw on the
-way counts: a cup seen while looking for the spoon is a known position for Stir. It is exact for
-the model; it stops being exact where the model does — a view that sees less than its whole region
-(a large or L-shaped room), things that stand between regions, a detector that misses, two things
-of one class, and more regions than :data:`MAX_REGIONS` (then only the heaviest are kept).
+For one thing, the optimal search is an ordering of views (nothing is learnt until it is found), and
+its expected cost follows from when each node is first seen. For the whole plan the exact
+optimum is out of reach (a look can reveal any subset of the things), so :func:`choose` is a
+**one-step rollout**: for each candidate first view ``u`` it evaluates, exactly under the model,
+the policy "drive to ``u``, then search on by the greedy tour" — the tour that takes next the view
+revealing the most of the thing's belief per metre on its drive and look — and the rest of the plan
+once the thing is found. It picks the best ``u`` and is run again after every look with the new
+beliefs (receding horizon). A rollout is never worse, under the model, than the tour it rolls
+out. The rest of the plan after the thing sought now is valued as:
+
+- a known target: the distance to the nearest of its positions;
+- the next unknown thing: if it was seen on the drive before the thing sought now was found, the
+  distance to it; otherwise its own greedy tour from the candidate view nearest to where the first
+  was found (the tour planned with the beliefs of now, not with what the first search saw);
+- any unknown thing after that: its greedy tour from the candidate view nearest to the thing before,
+  with no credit for having been seen on the way.
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 
-__all__ = ["MAX_REGIONS", "Choice", "Target", "solve"]
+from seal_cli.sim.policies.views import DriveTable
 
-MAX_REGIONS = 9
-"""The most regions the exact search considers (the heaviest, by the largest mass of any thing sought)."""
+__all__ = ["MAX_TOUR", "Choice", "Target", "Tour", "choose", "greedy_tour", "quantiles"]
+
+MAX_TOUR = 12
+"""The most views of a greedy tour (it also ends when its belief is spent)."""
+SPENT = 1e-3
+"""A tour ends when less than this share of its belief is left unseen."""
+SAMPLES = 300
+"""Nodes at which a belief is represented for the rest of the plan: at its mass's quantiles (see :func:`quantiles`)."""
+SCALE = 1.0
+"""Metres added to every drive in the greedy tour's mass-per-metre rule (a view at the robot's feet is not free)."""
 
 
 @dataclass(frozen=True)
 class Target:
-    """One stop of the remaining plan: an unknown thing (``cls``), or known positions (``at``: indices of
-    locations, the robot goes to the nearest)."""
+    """One stop of the remaining plan: an unknown thing (``cls``), or known positions (``at``: nodes, the
+    robot goes to the nearest)."""
 
     cls: str | None = None
     at: tuple[int, ...] = ()
@@ -53,84 +68,185 @@ class Target:
 
 @dataclass(frozen=True)
 class Choice:
-    """The region to look at next (an index into the regions) and the expected metres to finish from here."""
+    """The candidate view to look from next (an index into the candidates), the expected metres to finish
+    the plan from here, and the share of each sought class's belief the drive there and its look reveal."""
 
-    region: int
+    view: int
     expected_m: float
+    shares: Mapping[str, float]
 
 
-def solve(distance: np.ndarray, masses: Mapping[str, np.ndarray], targets: Sequence[Target], *, start: int,
-          regions: int, seen: frozenset[int] = frozenset()) -> Choice | None:
-    """The exact adaptive search of the module's model.
+@dataclass(frozen=True)
+class Tour:
+    """A search's drives: per node, the metres from the tour's start when it is first seen (inf: never),
+    the node it is seen from; the views in order, where the tour ends and its length."""
 
-    ``distance[a, b]``: metres between locations; locations ``0 .. regions-1`` are the regions'
-    views, the others the start and the known targets' positions. ``masses[cls][r]``: the belief
-    that the thing of class ``cls`` is in region ``r`` (unnormalised; only its ratios count).
-    ``targets``: the remaining plan's stops in order; the first must be unknown. ``seen``: regions
-    already looked at (nothing sought is there). None when the first target has no belief left."""
-    classes = sorted({t.cls for t in targets if t.cls is not None})
-    index = {c: k for k, c in enumerate(classes)}
-    mass = np.zeros((len(classes), regions))
-    for c, k in index.items():
-        m = np.asarray(masses[c], dtype=float)[:regions].copy()
-        m[list(seen)] = 0.0
-        mass[k] = np.where(np.isfinite(m) & (m > 0), m, 0.0)
-    plan = [(index[t.cls] if t.cls is not None else -1, t.at) for t in targets]
-    seen_mask = sum(1 << r for r in seen)
-    memo: dict[tuple[Any, ...], tuple[float, int]] = {}
+    seen_at: np.ndarray
+    look: np.ndarray
+    views: tuple[int, ...]
+    end: int
+    length: float
 
-    def left(k: int, mask: int) -> float:
-        row = mass[k]
-        return float(sum(row[r] for r in range(regions) if not mask >> r & 1))
+    def cost(self, distance: np.ndarray) -> np.ndarray:
+        """Per node, the metres until a thing there is reached: seen, then driven to; a node the tour
+        never sees is driven to after it."""
+        out = np.empty(len(self.seen_at))
+        seen = np.isfinite(self.seen_at)
+        idx = np.flatnonzero(seen)
+        out[idx] = self.seen_at[idx] + distance[self.look[idx], idx]
+        rest = np.flatnonzero(~seen)
+        out[rest] = self.length + distance[self.end, rest]
+        return out
 
-    def value(loc: int, mask: int, i: int, found: tuple[int, ...]) -> tuple[float, int]:
-        key = (loc, mask, i, found)
-        if key in memo:
-            return memo[key]
-        cost = 0.0
-        while i < len(plan):
-            k, at = plan[i]
-            if k < 0:
-                nxt = min(at, key=lambda a: distance[loc, a])
-            elif found[k] >= 0:
-                nxt = found[k]
-            else:
+
+Tables = Callable[[int], DriveTable]
+"""The drives from a node to every candidate view (:meth:`~seal_cli.sim.policies.views.Lattice.drive_table`)."""
+
+
+def greedy_tour(tables: Tables, nodes: Sequence[int], belief: np.ndarray, start: int, *,
+                first: int | None = None) -> Tour:
+    """The greedy search for one thing from node ``start``: each next view (an index into the candidate
+    ``nodes``) the one whose drive and look reveal the most of ``belief`` not yet seen per metre;
+    ``first``: the view to start with, whatever the rule says. The rule never takes the view it is at."""
+    n = len(belief)
+    seen_at = np.full(n, np.inf)
+    look = np.full(n, -1, dtype=np.int64)
+    total = float(belief.sum())
+    left = total
+    at, elapsed = start, 0.0
+    views: list[int] = []
+    seen = np.zeros(n, dtype=bool)
+    while len(views) < MAX_TOUR and total > 0 and left > SPENT * total:
+        table = tables(at)
+        hit = np.isfinite(table.seen_at) & ~seen
+        if first is not None and not views:
+            v = first
+        else:
+            mass = hit.astype(float) @ belief
+            score = np.where(np.isfinite(table.length), mass / (np.nan_to_num(table.length, posinf=0.0) + SCALE), -1.0)
+            for k in (i for i, node in enumerate(nodes) if node == at):
+                score[k] = -1.0
+            v = int(np.argmax(score))
+            if score[v] <= 0 or mass[v] <= 0:
                 break
-            cost += float(distance[loc, nxt])
-            loc, i = nxt, i + 1
-        if i == len(plan):
-            memo[key] = (cost, -1)
-            return memo[key]
-        k = plan[i][0]
-        sought = sorted({plan[j][0] for j in range(i, len(plan)) if plan[j][0] >= 0 and found[plan[j][0]] < 0})
-        remaining = {s: left(s, mask) for s in sought}
-        best, choice = np.inf, -1
-        for r in range(regions):
-            if mask >> r & 1 or mass[k, r] <= 0:
-                continue
-            expected = float(distance[loc, r])
-            outcomes: list[tuple[float, tuple[int, ...]]] = [(1.0, found)]
-            for s in sought:
-                p = mass[s, r] / remaining[s] if remaining[s] > 0 else 0.0
-                p = 1.0 if p > 1 - 1e-9 else p
-                split = []
-                for prob, f in outcomes:
-                    if p > 0:
-                        split.append((prob * p, f[:s] + (r,) + f[s + 1:]))
-                    if p < 1:
-                        split.append((prob * (1 - p), f))
-                outcomes = split
-            for prob, f in outcomes:
-                if prob > 1e-12:
-                    expected += prob * value(r, mask | 1 << r, i, f)[0]
-            if expected < best:
-                best, choice = expected, r
-        memo[key] = (cost + best, choice)
-        return memo[key]
+        row = hit[v]
+        seen_at[row] = elapsed + table.seen_at[v, row]
+        look[row] = table.look[v, row]
+        seen |= row
+        left -= float(belief[row].sum())
+        elapsed += float(table.length[v])
+        at = int(nodes[v])
+        views.append(v)
+    return Tour(seen_at, look, tuple(views), at, elapsed)
 
-    if not plan or plan[0][0] < 0 or mass[plan[0][0]].sum() <= 0:
+
+def choose(tables: Tables, nodes: Sequence[int], distance: np.ndarray, beliefs: Mapping[str, np.ndarray],
+           targets: Sequence[Target], *, start: int, allowed: Sequence[int]) -> Choice | None:
+    """The one-step rollout of the module's model: the candidate view (of ``allowed``, indices into
+    ``nodes``) to look from next. ``beliefs[cls]``: per node, the belief that the thing of class ``cls``
+    is there (unnormalised). ``targets``: the remaining plan's stops in order, the first unknown (the
+    thing sought now). None when it has no belief left, or no candidate reveals any of it."""
+    if not targets or targets[0].cls is None:
         return None
-    total, region = value(start, seen_mask, 0, tuple(-1 for _ in classes))
-    if region < 0 or not np.isfinite(total):
+    sought = targets[0].cls
+    reachable = np.isfinite(distance[start])     # belief where the robot cannot go is no use to it
+    q = {c: np.where(np.isfinite(b) & (b > 0) & reachable, b, 0.0) for c, b in beliefs.items()}
+    q = {c: b / b.sum() for c, b in q.items() if b.sum() > 0}
+    if sought not in q:
         return None
-    return Choice(region, total)
+    here = tables(start)
+    reveal = np.isfinite(here.seen_at)
+    share = {c: reveal.astype(float) @ b for c, b in q.items()}
+    options = [v for v in allowed if np.isfinite(here.length[v]) and share[sought][v] > 0]
+    if not options:
+        return None
+    q1 = q[sought]
+    rest = targets[1:]
+    later = _Later(tables, nodes, distance, q, rest)
+    sample = quantiles(q1, SAMPLES)
+    support = np.flatnonzero(q1 > 0)
+    best: tuple[float, int] | None = None
+    for v in options:
+        tour = greedy_tour(tables, nodes, q1, start, first=v)
+        expected = float(q1[support] @ tour.cost(distance)[support])
+        if rest:
+            expected += float(later.after(tour, sample).mean())
+        if best is None or expected < best[0]:
+            best = (expected, v)
+    assert best is not None
+    expected, v = best
+    return Choice(v, expected, {c: float(share[c][v]) for c in q})
+
+
+def quantiles(belief: np.ndarray, k: int) -> np.ndarray:
+    """``k`` nodes standing for a belief, each with weight 1/k: the nodes at the quantiles (i + 1/2)/k of its
+    cumulative mass, in node order (systematic sampling, with no random draw; a node may come twice)."""
+    cumulative = np.cumsum(belief / belief.sum())
+    index = np.searchsorted(cumulative, (np.arange(k) + 0.5) / k)
+    return np.asarray(np.minimum(index, len(belief) - 1), dtype=np.intp)
+
+
+class _Later:
+    """The expected cost of the plan's stops after the thing sought now (see the module docstring)."""
+
+    def __init__(self, tables: Tables, nodes: Sequence[int], distance: np.ndarray, q: Mapping[str, np.ndarray],
+                 stops: Sequence[Target]) -> None:
+        self.tables, self.nodes, self.distance, self.q, self.stops = tables, nodes, distance, q, list(stops)
+        self.tours: dict[tuple[str, int], np.ndarray] = {}
+        views = np.asarray(nodes)
+        self.anchor = views[np.argmin(distance[:, views], axis=1)]
+        """Per node, the candidate view nearest to it, where a search from there starts."""
+
+    def _tour(self, cls: str, anchor: int) -> np.ndarray:
+        """Per node, the metres to reach a thing of ``cls`` there by its greedy tour from view node ``anchor``."""
+        key = (cls, anchor)
+        if key not in self.tours:
+            self.tours[key] = greedy_tour(self.tables, self.nodes, self.q[cls], anchor).cost(self.distance)
+        return self.tours[key]
+
+    def _search(self, cls: str, starts: np.ndarray, w: np.ndarray) -> np.ndarray:
+        """(len(starts), len(w)): the metres from each start to reach a thing of ``cls`` at each node of ``w``:
+        to the start's nearest view, then that view's greedy tour."""
+        anchors = self.anchor[starts]
+        out = np.empty((len(starts), len(w)))
+        for a in np.unique(anchors):
+            rows = np.flatnonzero(anchors == a)
+            out[rows] = self.distance[starts[rows], int(a)][:, None] + self._tour(cls, int(a))[w][None, :]
+        return out
+
+    def after(self, tour: Tour, found_at: np.ndarray) -> np.ndarray:
+        """For the thing sought now found at each node of ``found_at`` by ``tour``: the expected metres of
+        the rest of the plan from there."""
+        cost = np.zeros(len(found_at))
+        rows: np.ndarray | None = found_at.copy()   # each row's own position, until an unknown thing is reached
+        spread: np.ndarray = np.zeros(0)            # then: a distribution over nodes, the same for every row
+        samples = {c: quantiles(b, SAMPLES) for c, b in self.q.items()}
+        for stop in self.stops:
+            if stop.cls is None:
+                at = np.asarray(stop.at, dtype=np.intp)
+                if not len(at):
+                    continue
+                if rows is not None:
+                    gap = self.distance[np.ix_(rows, at)]
+                    cost += gap.min(axis=1)
+                    rows = at[np.argmin(gap, axis=1)]
+                else:
+                    gap = self.distance[:, at]
+                    cost += float(spread @ gap.min(axis=1))
+                    spread = np.bincount(at[np.argmin(gap, axis=1)], weights=spread, minlength=len(spread))
+                continue
+            b = self.q.get(stop.cls)
+            if b is None:
+                continue
+            w = samples[stop.cls]
+            if rows is not None:
+                # the next unknown thing: seen on the drive before the first was found, or searched for from there
+                before = tour.seen_at[w][None, :] <= tour.seen_at[found_at][:, None]
+                direct = self.distance[np.ix_(rows, w)]
+                cost += np.where(before, direct, self._search(stop.cls, rows, w)).mean(axis=1)
+                rows = None
+            else:
+                starts = np.flatnonzero(spread > 0)
+                cost += float(spread[starts] @ self._search(stop.cls, starts, w).mean(axis=1))
+            spread = np.bincount(w, minlength=len(self.distance)) / len(w)
+        return cost

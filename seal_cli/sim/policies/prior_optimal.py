@@ -11,23 +11,24 @@ robot looked into from within reach (what is in or on it is seen at hand). Where
 lie" follows the layouts' own rule (:func:`~seal_cli.bench.mapsuite.sample_layout`): a point within
 reach of a place the class's prior names is in or on the nearest such place.
 
-It looks where the exact dynamic programme of :mod:`~seal_cli.sim.policies.completion` says — the
-adaptive region order that minimises the expected drive to finish the whole remaining plan, with
-independent objects — and solves it again after every look (receding horizon). A region is never
-marked done by having been looked at: it stays a candidate while any prior mass in it is unseen,
-and each time it is chosen its view is chosen afresh, as the cell that sees most of its unseen
-mass (among those that see at least 0.9 of that, the nearest by path); a region of which no cell
-would reveal anything more is dropped. When nothing of what it seeks is left in any region it
-sweeps the frontier (:class:`~seal_cli.sim.policies.coverage.CoveragePolicy`), so it is complete.
+It looks where the view model of :mod:`~seal_cli.sim.policies.completion` says — the candidate
+view whose drive, look and greedy continuation give the shortest expected drive to finish the
+whole remaining plan, counting what is seen on the way (a drive is a sequence of looks, and stops at
+the one that finds the thing) — and chooses again after every look with the exact posterior
+(receding horizon). When nothing of what it seeks is left anywhere it can reach it sweeps the
+frontier (:class:`~seal_cli.sim.policies.coverage.CoveragePolicy`), so it is complete.
 
-**Where it is exact.** The posterior is exact (for this detector). The choice is the exact optimum
-of the model of :mod:`~seal_cli.sim.policies.completion` — a region's view reveals all of it, a
-thing lies in one region, one thing per class, independent classes, at most
-:data:`~seal_cli.sim.policies.completion.MAX_REGIONS` regions with belief — so it is the exact
-prior-optimal search on a map whose regions are each seen whole by one view (every place, and a
-room within sensor range of one cell with nothing in the way). Where a view sees only part of a
-room the model overrates that view; the error is bounded by re-planning with the exact posterior
-after the look (the room stays, with its unseen mass), but the order is then no longer proven optimal.
+**Where it is exact, and where it stops being.** The posterior is exact (for this detector). The
+sensing model of the choice is exact up to the lattice: a look sees what the sensor sees from the
+lattice node nearest the robot (nodes about 0.25 m apart), and the drive's looks fall on the lattice
+path's nodes a metre apart. The choice itself is not the optimal adaptive search: it is one step of
+policy improvement (a rollout) over the greedy mass-per-metre tour, so, under the model, it is never
+worse than that tour and may be worse than the optimum; the rest of the plan is valued with the
+approximations listed in :mod:`~seal_cli.sim.policies.completion` (the next thing's search planned
+with the beliefs of now; the things after it with no credit for being seen on the way). It is the
+reference of what search achieves with the priors, not a proven bound: a searcher without full
+knowledge beating it by more than about two standard errors would point at one of those
+approximations (``against_prior_optimal`` in the context suite's JSON).
 """
 
 from __future__ import annotations
@@ -46,7 +47,7 @@ from seal_cli.sim.world import Detection
 __all__ = ["PriorOptimalPolicy"]
 
 class PriorOptimalPolicy(Policy):
-    """The exact region-level search for the whole plan under the priors (see the module docstring)."""
+    """The view-model search for the whole plan under the priors, with the exact posterior (module docstring)."""
 
     name = "prior_optimal"
 

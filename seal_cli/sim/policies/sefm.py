@@ -183,9 +183,9 @@ class SeFMPolicy(Policy):
     whole_plan = True
     """Search for the whole remaining plan (off: the step's own belief, the search of earlier rounds)."""
     min_rooms = 2
-    """The whole-plan search's regions are rooms a view sees whole and the places in them; on a map of
-    fewer rooms (ALFRED's single open rooms, seen 1.5 m at a time, where a look sees part of a room and
-    several places at once) that model is wrong, and the greedy view rule is kept (docs/benchmarks.md)."""
+    """The whole-plan search runs on maps of this many rooms or more; on fewer (ALFRED's single open rooms,
+    seen 1.5 m at a time) the greedy view rule is kept: the region model of earlier rounds was longer
+    there, and the view model that replaced it has not been measured there (docs/benchmarks.md)."""
 
     places_in_one_room = False
     """On a map of one room, search for the whole plan over its places (each a region seen from its stand
@@ -194,9 +194,11 @@ class SeFMPolicy(Policy):
     model counts only the one it stands at (docs/benchmarks.md)."""
 
     def plan_view(self, agent: Agent, binding: Binding, target: str) -> Any:
-        """The region to look at for the whole remaining plan (:class:`~seal_cli.sim.policies.whole_plan.
-        WholePlanSearch`) under SeFM's beliefs of the things still unknown — the commanded frames'
-        unknown elements, each SeFM's object belief after every look so far, as a mass per free cell."""
+        """The view to look from for the whole remaining plan (:class:`~seal_cli.sim.policies.whole_plan.
+        WholePlanSearch`, the view model of :mod:`~seal_cli.sim.policies.completion`) under SeFM's beliefs
+        of the things still unknown — the commanded frames' unknown elements, each SeFM's object belief
+        after every look so far (its detector may miss, so a place looked at keeps some), as a mass per
+        free cell."""
         from seal_cli.sim.policies.whole_plan import WholePlanSearch
 
         single = len(self.map.rooms) < self.min_rooms

@@ -1,10 +1,16 @@
-"""The robot's side of :mod:`~seal_cli.sim.policies.completion`: regions of its map, the remaining plan
-as targets, and the view that minimises the expected drive to finish.
+"""The robot's side of :mod:`~seal_cli.sim.policies.completion`: the candidate views of its map, the
+remaining plan as targets, and the view that minimises the expected drive to finish.
 
 :class:`WholePlanSearch` is shared by the policies that search for the whole remaining plan: SeFM
 (its beliefs) and ``prior_optimal`` (the map's priors with exact negative evidence). Each gives a
-weight per free cell of the map for each class sought; the rest — regions, distances, the plan's
-targets, the narration — is here.
+weight per free cell of the map for each class sought; the rest — the lattice the search runs on
+(:mod:`~seal_cli.sim.policies.views`), the candidate views, the plan's targets, the narration — is here.
+
+The candidate views (a modest set, about ten per room): each room's cells that see most of it
+(:func:`regions_of`, up to :data:`ROOM_VIEWS` of them), every place's stand cell nearest to it (a
+shut one opened from there), and both sides of every doorway (the lattice's nodes of two rooms
+that touch, grouped into doors :data:`DOOR_GAP` metres apart), so that a peek through a door is a
+view of its own. What the drives between them see on the way is counted by the model itself.
 """
 
 from __future__ import annotations
@@ -19,19 +25,28 @@ from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.priors import target_cells
 from seal_cli.sim.agent import Agent, View
 from seal_cli.sim.navigation import Cell
-from seal_cli.sim.policies.completion import MAX_REGIONS, Choice, Target, solve
+from seal_cli.sim.policies.completion import Choice, Target, choose
+from seal_cli.sim.policies.views import DriveTable, Lattice, lattice_of
 
-__all__ = ["CANDIDATES", "SAMPLE", "Region", "WholePlanSearch"]
+__all__ = ["COVER_SAMPLE", "DOOR_GAP", "MORE_VIEWS", "ROOM_VIEWS", "UNCOVERED", "Candidate", "Region",
+           "WholePlanSearch"]
 
-CANDIDATES = 80
-"""Free cells of a room tried as its view (a fixed sample when the room has more)."""
-SAMPLE = 200
-"""Points of a region's belief on which a candidate view is scored (drawn by their weight)."""
+ROOM_VIEWS = 4
+"""The most views of a room among the candidates (its best-seeing cells, the best first)."""
+DOOR_GAP = 1.5
+"""Metres between two touching stretches of a pair of rooms for them to be two doors."""
+UNCOVERED = 0.01
+"""The share of a belief the candidates may leave unseen before views are added (:meth:`WholePlanSearch._cover`)."""
+MORE_VIEWS = 3
+"""The most views added at one choice."""
+COVER_SAMPLE = 40
+"""Nodes tried for each added view (drawn by the belief no candidate sees)."""
 
 
 @dataclass(frozen=True, eq=False)
 class Region:
-    """Somewhere one view reveals: a place (``place`` set; opened first if shut) or a room's free space."""
+    """A room (its free space, seen from its best-seeing cells) or a place (``place`` set), whose views
+    are candidates of the search."""
 
     name: str
     view: Cell
@@ -40,13 +55,7 @@ class Region:
     """Indices into the map's free cells."""
     place: str | None = None
     views: tuple[Cell, ...] = ()
-    """Cells that see about as much of the region as :attr:`view` does (a room's); the robot looks
-    from the one it can reach soonest."""
-
-    def nearest_view(self, field_: np.ndarray) -> Cell:
-        """The view the robot reaches soonest, by the shortest-path field from where it is."""
-        options = (self.view, *self.views)
-        return min(options, key=lambda c: float(field_[c]))
+    """Cells that see about as much of the region as :attr:`view` does (a room's), the best first."""
 
 
 def _room_views(agent: Agent, inside: np.ndarray, room_cells: np.ndarray) -> list[Cell]:
@@ -137,35 +146,127 @@ def regions_of(agent: Agent, places_only: bool = False) -> list[Region]:
 
 
 @dataclass(frozen=True)
+class Candidate:
+    """A view the search may take: a cell of the robot's grid, its lattice node, what to face, the
+    room (or place) it is named by, and the shut place it opens (None: just looks)."""
+
+    cell: Cell
+    node: int
+    look_at: tuple[float, float]
+    name: str
+    open: str | None = None
+
+
+@dataclass(frozen=True)
 class Decision:
     """A view chosen for the whole remaining plan, and why."""
 
     view: View
-    region: Region
+    candidate: Candidate
     expected_m: float
 
 
 class WholePlanSearch:
-    """The regions of one run's map, and the choice of the next one to look at."""
+    """The candidate views of one run's map, and the choice of the next one to look from."""
 
     def __init__(self, agent: Agent, places_only: bool = False) -> None:
+        m = agent.scene.map
+        self.map = m
+        sensor = agent.world.sensor
+        self.lattice: Lattice = lattice_of(agent.grid, lambda p, pts: sensor.visible((p[0], p[1], 0.0), pts),
+                                           f"{m.name}|{m.bounds}|{m.sensor!r}", sensor.range, agent.look_every)
         self.regions = regions_of(agent, places_only)
-        self.map = agent.scene.map
-        self.used: set[tuple[str, Cell]] = set()
-        """Views looked from, per region (never chosen again for it)."""
-        self.pending: tuple[str, Cell] | None = None
-        """The region chosen last and its view, until the robot looks from there (a drive that stops
-        short, the thing sought seen on the way, leaves it unused)."""
-        self.scored: dict[str, tuple[tuple[int, float], list[Cell], list[float]]] = {}
-        """Per region, its candidate views' scores, kept while its belief is unchanged."""
-
-        self.seen = np.zeros(len(self.map.free_centres), dtype=bool)
+        self.candidates = self._candidates(agent)
+        self.nodes = [c.node for c in self.candidates]
+        self.belief_node = self.lattice.node_of(m.free_centres)
+        """Per free cell of the map, its lattice node (beliefs are summed onto the nodes)."""
+        self.used: set[Cell] = set()
+        """Candidate cells looked from (never chosen again)."""
+        self.pending: Cell | None = None
+        """The view chosen last, until the robot looks from there (a drive that stops short leaves it unused)."""
+        self._tables: dict[tuple[int, frozenset[str]], DriveTable] = {}
+        self._covered: np.ndarray | None = None
+        """Nodes some candidate's look sees."""
+        self.seen = np.zeros(len(m.free_centres), dtype=bool)
         """Free cells the sensor has seen (in range and in line of sight, up to its fan of rays)."""
+
+    def _candidates(self, agent: Agent) -> list[Candidate]:
+        m = self.map
+        lattice = self.lattice
+        out: dict[Cell, Candidate] = {}
+
+        def add(cell: Cell, look_at: tuple[float, float], name: str, open_: str | None = None) -> None:
+            if cell not in out or open_ is not None:
+                node = int(lattice.node_of(np.asarray([agent.grid.point(cell)]))[0])
+                out[cell] = Candidate(cell, node, look_at, name, open_)
+
+        for region in self.regions:
+            if region.place is None:
+                for cell in (region.view, *region.views)[:ROOM_VIEWS]:
+                    add(cell, agent.grid.point(cell), region.name)
+        for place in m.places:
+            known = agent.known.get(place.name)
+            if known is None or known.movable:
+                continue
+            stands = agent.stand_cells(known)
+            if not len(stands):
+                continue
+            pts = np.asarray([agent.grid.point((int(i), int(j))) for i, j in stands])
+            k = int(np.argmin(np.hypot(pts[:, 0] - known.at[0], pts[:, 1] - known.at[1])))
+            add((int(stands[k, 0]), int(stands[k, 1])), known.at, place.name,
+                place.name if known.openable else None)
+        for node in self._doorways():
+            cell = (int(lattice.cells[node, 0]), int(lattice.cells[node, 1]))
+            if agent.grid.is_free(cell):
+                room = self._room_of(np.asarray([lattice.points[node]]))[0]
+                add(cell, agent.grid.point(cell), m.rooms[room].name if room >= 0 else "the doorway")
+        return list(out.values())
+
+    def _room_of(self, points: np.ndarray) -> np.ndarray:
+        out = np.full(len(points), -1, dtype=np.intp)
+        for r, room in enumerate(self.map.rooms):
+            inside = np.asarray(room.contains(points), dtype=bool) & (out < 0)
+            out[inside] = r
+        return out
+
+    def _doorways(self) -> list[int]:
+        """Both sides of every door: for each pair of rooms whose nodes touch, the touching stretches grouped
+        into doors :data:`DOOR_GAP` apart, and on each side of each door the node nearest its middle."""
+        from scipy.spatial import cKDTree
+
+        lattice = self.lattice
+        room = self._room_of(lattice.points)
+        step = float(np.min(lattice.distance[lattice.distance > 0])) if lattice.size > 1 else 0.0
+        pairs = cKDTree(lattice.points).query_pairs(step * 1.5, output_type="ndarray")
+        if not len(pairs):
+            return []
+        a, b = pairs[:, 0], pairs[:, 1]
+        touch = (room[a] >= 0) & (room[b] >= 0) & (room[a] != room[b]) & \
+            np.isclose(lattice.distance[a, b], np.hypot(*(lattice.points[a] - lattice.points[b]).T), atol=1e-3)
+        out: list[int] = []
+        by_pair: dict[tuple[int, int], list[tuple[int, int]]] = {}
+        for u, v in pairs[touch]:
+            key = (int(min(room[u], room[v])), int(max(room[u], room[v])))
+            by_pair.setdefault(key, []).append((int(u), int(v)))
+        for links in by_pair.values():
+            mids = np.asarray([(lattice.points[u] + lattice.points[v]) / 2 for u, v in links])
+            door = np.full(len(links), -1)
+            for k in range(len(links)):
+                if door[k] < 0:
+                    near = np.hypot(*(mids - mids[k]).T) <= DOOR_GAP
+                    door[near & (door < 0)] = k
+            for d in np.unique(door):
+                members = np.flatnonzero(door == d)
+                centre = mids[members].mean(axis=0)
+                for side in (0, 1):
+                    ends = np.asarray([links[k][side] for k in members])
+                    out.append(int(ends[np.argmin(np.hypot(*(lattice.points[ends] - centre).T))]))
+        return out
 
     def observe(self, agent: Agent) -> np.ndarray:
         """The robot has looked: the free cells it saw (indices, returned, and added to :attr:`seen`);
         the view chosen last is used once the robot has looked from it."""
-        if self.pending is not None and agent.robot_cell() == self.pending[1]:
+        if self.pending is not None and agent.robot_cell() == self.pending:
             self.used.add(self.pending)
             self.pending = None
         return self.see(agent, agent.world.robot.pose)
@@ -223,121 +324,101 @@ class WholePlanSearch:
             out.append((cls, None, []))
         return out
 
+    def _shut(self, agent: Agent) -> dict[str, np.ndarray]:
+        """The shut receptacles the robot knows of and the lattice nodes a thing in each would be at (within
+        its reach, the nearest such receptacle's)."""
+        points = self.lattice.points
+        best = np.full(len(points), np.inf)
+        owner = np.full(len(points), -1)
+        names: list[str] = []
+        for known in agent.known.values():
+            if known.movable or not known.openable or known.id in agent.opened or agent.world.items[known.id].is_open:
+                continue
+            where = self.map.place(known.id)
+            reach = where.reach if where is not None else agent.world.reach
+            d = np.hypot(points[:, 0] - known.at[0], points[:, 1] - known.at[1])
+            closer = (d <= reach + 0.25) & (d < best)
+            owner[closer], best[closer] = len(names), d[closer]
+            names.append(known.id)
+        return {name: owner == k for k, name in enumerate(names)}
+
+    def _cover(self, agent: Agent, beliefs: dict[str, np.ndarray]) -> None:
+        """Add views until the candidates' looks see all but :data:`UNCOVERED` of each belief (at most
+        :data:`MORE_VIEWS` of them each time): each the node, of a sample of those near the belief no
+        candidate sees, that sees most of it (a room its views see only part of, a short-range sensor)."""
+        lattice = self.lattice
+        if self._covered is None:
+            self._covered = np.zeros(lattice.size, dtype=bool)
+            for node in self.nodes:
+                self._covered |= lattice.visible(node)
+        added = False
+        for _ in range(MORE_VIEWS):
+            left = {c: float(b[~self._covered].sum() / b.sum()) for c, b in beliefs.items() if b.sum() > 0}
+            if not left or max(left.values()) <= UNCOVERED:
+                break
+            weight = sum((b / b.sum() for b in beliefs.values() if b.sum() > 0), np.zeros(lattice.size))
+            weight = np.where(self._covered, 0.0, weight)
+            near = np.flatnonzero(weight > 0)
+            rng = np.random.default_rng(len(self.nodes))
+            pick = near if len(near) <= COVER_SAMPLE else rng.choice(near, COVER_SAMPLE, replace=False,
+                                                                     p=weight[near] / weight[near].sum())
+            field_ = agent.distances()
+            options = [int(k) for k in pick if np.isfinite(field_[tuple(lattice.cells[k])])]
+            if not options:
+                break
+            best = max(options, key=lambda k: float(weight[lattice.visible(k)].sum()))
+            cell = (int(lattice.cells[best, 0]), int(lattice.cells[best, 1]))
+            room = self._room_of(lattice.points[best:best + 1])[0]
+            self.candidates.append(Candidate(cell, best, agent.grid.point(cell),
+                                             self.map.rooms[room].name if room >= 0 else "the open floor"))
+            self.nodes.append(best)
+            self._covered |= lattice.visible(best)
+            added = True
+        if added:
+            self._tables.clear()
+
     def choose(self, agent: Agent, binding: Binding, target: str,
                weights: Callable[[str], np.ndarray]) -> Decision | None:
-        """The region whose view starts the shortest expected completion; ``weights(cls)`` is the
-        belief of a class per free cell of the map. Each region is looked at from its view as
-        :meth:`fresh_view` finds it now; a region no view would reveal more of is left out."""
+        """The candidate view that starts the shortest expected completion (:func:`~seal_cli.sim.policies.
+        completion.choose`); ``weights(cls)`` is the belief of a class per free cell of the map."""
         stops = self.targets(agent, binding, target)
         sought = list(dict.fromkeys(c for c, v, _ in stops if v is None))
-        belief = {c: weights(c) for c in sought}
-        candidates = self.regions
-        mass = {c: np.array([float(belief[c][g.cells].sum()) for g in candidates]) for c in sought}
-        total = {c: float(belief[c].sum()) for c in sought}
-        keep = [i for i in range(len(candidates))
-                if any(total[c] > 0 and mass[c][i] / total[c] >= 0.01 for c in sought)]
-        here = agent.distances()
-        keep = [i for i in keep if np.isfinite(here[candidates[i].nearest_view(here)])]
-        keep.sort(key=lambda i: -max(mass[c][i] / total[c] if total[c] > 0 else 0.0 for c in sought))
-        unseen = sum((belief[c] / total[c] for c in sought if total[c] > 0), np.zeros(len(self.map.free_centres)))
-        views: dict[int, View] = {}
-        for i in keep:
-            if len(views) == MAX_REGIONS:
-                break
-            if (view := self.fresh_view(agent, candidates[i], unseen, here)) is not None:
-                views[i] = view
-        keep = list(views)
-        if not keep:
-            return None
-        regions = [candidates[i] for i in keep]
-        cells: list[Cell] = [views[i].cell for i in keep] + [agent.robot_cell()]
+        n = self.lattice.size
+        beliefs = {c: np.bincount(self.belief_node, weights=np.where(np.isfinite(w := weights(c)) & (w > 0), w, 0.0),
+                                  minlength=n) for c in sought}
+        self._cover(agent, beliefs)
+        shut = self._shut(agent)
+        hidden = np.zeros(n, dtype=bool)
+        for mask in shut.values():
+            hidden |= mask
+        key = frozenset(shut)
+        reveals = [shut.get(c.open) if c.open is not None else None for c in self.candidates]
+        lattice = self.lattice
+
+        def tables(origin: int) -> DriveTable:
+            if (origin, key) not in self._tables:
+                self._tables[(origin, key)] = lattice.drive_table(origin, self.nodes, reveals, hidden)
+            return self._tables[(origin, key)]
+
         plan: list[Target] = []
         for c, value, at in stops:
             if value is None:
                 plan.append(Target(cls=c))
             else:
-                plan.append(Target(at=tuple(range(len(cells), len(cells) + len(at)))))
-                cells.extend(at)
-        distance = np.array([agent.grid.distances(a)[[b[0] for b in cells], [b[1] for b in cells]] for a in cells])
-        distance = np.minimum(distance, distance.T)
-        choice: Choice | None = solve(distance, {c: mass[c][keep] for c in sought}, plan, start=len(regions),
-                                      regions=len(regions))
+                plan.append(Target(at=tuple(int(k) for k in lattice.node_of(
+                    np.asarray([agent.grid.point(cell) for cell in at])))))
+        here = agent.robot_cell()
+        field_ = agent.distances()
+        allowed = [k for k, c in enumerate(self.candidates) if c.cell not in self.used and c.cell != here
+                   and np.isfinite(field_[c.cell]) and (c.open is None or c.open in shut)]
+        start = int(lattice.node_of(np.asarray([agent.grid.point(here)]))[0])
+        choice: Choice | None = choose(tables, self.nodes, lattice.distance, beliefs, plan, start=start,
+                                       allowed=allowed)
         if choice is None:
             return None
-        region = regions[choice.region]
-        view = views[keep[choice.region]]
-        shares = {c: float(mass[c][keep][choice.region] / mass[c][keep].sum()) for c in sought
-                  if mass[c][keep].sum() > 0}
-        there = " and ".join(f"{c} {p:.2f}" for c, p in shares.items() if p >= 0.005) or "little of anything"
-        why = (f"{region.name}: {there} there, {here[view.cell]:.1f} m "
+        candidate = self.candidates[choice.view]
+        there = " and ".join(f"{c} {p:.2f}" for c, p in choice.shares.items() if p >= 0.005) or "little of anything"
+        why = (f"{candidate.name}: {there} there, {field_[candidate.cell]:.1f} m "
                f"(expected {choice.expected_m:.1f} m to finish the plan)")
-        self.pending = (region.name, view.cell)
-        return Decision(View(view.cell, view.look_at, view.open, why), region, choice.expected_m)
-
-    def fresh_view(self, agent: Agent, region: Region, belief: np.ndarray, field_: np.ndarray) -> View | None:
-        """Where to look at a region from now, given ``belief`` (the sought things' beliefs, each
-        normalised, summed per free cell): a place not yet looked into, from its nearest stand cell
-        (opening it if shut); otherwise the view not yet used for it that sees most of its belief on
-        cells not seen yet (on a sample), the nearest by path of those that see at least 0.9 of that;
-        None when no view would reveal any of it. So a region stays a candidate while it has belief
-        where the robot has not looked, and a room its first view saw only part of is looked at again
-        from where the rest is seen. A region whose belief lies only where the robot has looked (a
-        detector that may miss) has no fresh view and drops out; that is left to the policy's fallback."""
-        if region.place is not None and region.place not in agent.inspected:
-            view = self.view_of(agent, region, field_)
-            return None if (region.name, view.cell) in self.used else view
-        cells = region.cells[(belief[region.cells] > 0) & ~self.seen[region.cells]]
-        if not len(cells):
-            return None
-        w = belief[cells]
-        key = (len(cells), round(float(w.sum()), 9))
-        cached = self.scored.get(region.name)
-        if cached is None or cached[0] != key:
-            cached = (key, *self._score(agent, region, cells, w))
-            self.scored[region.name] = cached
-        _, options, scores = cached
-        fresh = [(c, s) for c, s in zip(options, scores, strict=True)
-                 if np.isfinite(field_[c]) and (region.name, c) not in self.used]
-        best = max((s for _, s in fresh), default=0.0)
-        if best <= 0:
-            return None
-        cell = min((c for c, s in fresh if s >= 0.9 * best), key=lambda c: float(field_[c]))
-        return View(cell, region.look_at if region.place is not None else agent.grid.point(cell))
-
-    def _score(self, agent: Agent, region: Region, cells: np.ndarray, w: np.ndarray) -> tuple[list[Cell], list[float]]:
-        """Each candidate view of a region and the belief (``w`` on ``cells``) it would see, on a sample
-        of :data:`SAMPLE` points drawn by their weight."""
-        rng = np.random.default_rng(len(cells))
-        targets = self.map.free_centres[cells if len(cells) <= SAMPLE else rng.choice(cells, SAMPLE, p=w / w.sum())]
-        weight = w if len(cells) <= SAMPLE else np.full(len(targets), w.sum() / len(targets))
-        options = self._candidates(agent, region)
-        reach = agent.world.sensor.range
-        scores = []
-        for c in options:
-            x, y = agent.grid.point(c)
-            near = np.flatnonzero(np.hypot(targets[:, 0] - x, targets[:, 1] - y) <= reach)
-            if len(near):
-                near = near[np.asarray(agent.world.sensor.visible((x, y, 0.0), targets[near]), dtype=bool)]
-            scores.append(float(weight[near].sum()))
-        return options, scores
-
-    def _candidates(self, agent: Agent, region: Region) -> list[Cell]:
-        """The cells a region may be looked at from: a place's stand cells; a room's views and a fixed
-        sample of :data:`CANDIDATES` of its free cells."""
-        if region.place is not None:
-            return [(int(i), int(j)) for i, j in agent.stand_cells(agent.known[region.place])]
-        room = next(r for r in self.map.rooms if r.name == region.name)
-        inside = np.flatnonzero(room.contains(agent.grid.free_points))
-        if len(inside) > CANDIDATES:
-            inside = np.random.default_rng(0).choice(inside, CANDIDATES, replace=False)
-        return [region.view, *region.views, *((int(i), int(j)) for i, j in agent.grid.free_cells[inside])]
-
-    def view_of(self, agent: Agent, region: Region, field_: np.ndarray) -> View:
-        """Where to stand for a region: a place from its nearest stand cell (opening it if shut), a room
-        from its view."""
-        if region.place is not None:
-            known = agent.known[region.place]
-            cell = agent.stand_cell(known, field_) or region.view
-            shut = known.openable and known.id not in agent.opened and not agent.world.items[known.id].is_open
-            return View(cell, known.at, open=known.id if shut else None)
-        return View(region.nearest_view(field_), region.look_at)
+        self.pending = candidate.cell
+        return Decision(View(candidate.cell, candidate.look_at, candidate.open, why), candidate, choice.expected_m)

@@ -1,61 +1,89 @@
-"""The exact expected-drive search: against brute force, and on the cases it is for."""
+"""The view model's expected-completion search, on a corridor where every figure can be worked by hand."""
 
 from __future__ import annotations
 
-import itertools
-
 import numpy as np
 
-from seal_cli.sim.policies.completion import Target, solve
+from seal_cli.sim.policies.completion import Target, choose, greedy_tour, quantiles
+from seal_cli.sim.policies.views import Lattice
 
 
-def _line(points: list[float]) -> np.ndarray:
-    """Distances between points on a line."""
-    p = np.asarray(points)
-    return np.abs(p[:, None] - p[None, :])
+def _corridor(xs: range, sight: float = 0.4) -> Lattice:
+    """Nodes one metre apart on a line; a look sees only the node it is at (``sight`` < 1 m)."""
+    x = np.asarray(xs, dtype=float)
+    n = len(x)
+    distance = np.abs(x[:, None] - x[None, :]).astype(np.float32)
+    idx = np.arange(n)
+    previous = np.where(idx[None, :] > idx[:, None], idx[None, :] - 1, idx[None, :] + 1).astype(np.int32)
+    points = np.stack([x, np.zeros(n)], axis=1)
+    return Lattice(points, np.stack([idx, idx], axis=1), distance, previous,
+                   lambda p, pts: np.ones(len(pts), dtype=bool), sight)
 
 
-def test_one_thing_matches_the_best_visit_order_by_brute_force() -> None:
-    rng = np.random.default_rng(4)
-    for _ in range(5):
-        xy = rng.uniform(0, 10, (6, 2))            # five regions and the start
-        distance = np.hypot(*(xy[:, None, :] - xy[None, :, :]).transpose(2, 0, 1))
-        mass = rng.uniform(0.05, 1, 5)
-        best = np.inf
-        for order in itertools.permutations(range(5)):
-            here, walked, expected = 5, 0.0, 0.0
-            for r in order:
-                walked += distance[here, r]
-                here = r
-                expected += mass[r] / mass.sum() * walked
-            best = min(best, expected)
-        choice = solve(distance, {"spoon": mass}, [Target("spoon")], start=5, regions=5)
-        assert choice is not None and abs(choice.expected_m - best) < 1e-9
+def _tables(lattice: Lattice, nodes: list[int]):  # type: ignore[no-untyped-def]
+    hidden = np.zeros(lattice.size, dtype=bool)
+    return lambda origin: lattice.drive_table(origin, nodes, [None] * len(nodes), hidden)
 
 
-def test_two_things_go_first_where_both_may_be() -> None:
-    # kitchen 0 (spoon), bedroom 1 (spoon and cup), family room 2 (cup); the start 3 is nearer the kitchen
-    xy = np.array([[0.0, 0.0], [6.0, 3.0], [12.0, 0.0], [1.5, 4.0]])
-    distance = np.hypot(*(xy[:, None, :] - xy[None, :, :]).transpose(2, 0, 1))
-    masses = {"spoon": np.array([0.5, 0.5, 0.0]), "cup": np.array([0.0, 0.5, 0.5])}
-    choice = solve(distance, masses, [Target("spoon"), Target("cup")], start=3, regions=3)
-    assert choice is not None and choice.region == 1
-    alone = solve(distance, {"spoon": masses["spoon"]}, [Target("spoon")], start=3, regions=3)
-    assert alone is not None and alone.region == 0      # for the spoon alone the kitchen is first
+def test_a_drive_sees_on_the_way_and_a_thing_seen_there_ends_the_search() -> None:
+    lattice = _corridor(range(11))                       # x = 0 .. 10
+    nodes = [10]
+    table = _tables(lattice, nodes)(5)
+    assert table.length[0] == 5.0
+    assert list(table.seen_at[0, 6:]) == [1.0, 2.0, 3.0, 4.0, 5.0] and not np.isfinite(table.seen_at[0, :5]).any()
+    belief = np.zeros(11)
+    belief[[7, 10]] = 0.5
+    tour = greedy_tour(_tables(lattice, nodes), nodes, belief, 5)
+    assert tour.views == (0,) and tour.end == 10
+    cost = tour.cost(lattice.distance)
+    assert cost[7] == 2.0 and cost[10] == 5.0             # the one at 7 is seen 2 m into the drive to 10
+    assert abs(cost[3] - (5.0 + 7.0)) < 1e-9              # never seen: driven to after the tour
 
 
-def test_a_known_goal_is_a_cost_not_a_place_to_search() -> None:
-    # the spoon is surely in region 1; the sink (location 3) is beside region 0, where no spoon is
-    distance = _line([0.0, 10.0, 5.0, 0.5])
-    choice = solve(distance, {"spoon": np.array([0.0, 1.0])}, [Target("spoon"), Target(at=(3,))], start=2,
-                   regions=2)
-    assert choice is not None and choice.region == 1
-    assert abs(choice.expected_m - (5.0 + 9.5)) < 1e-9
+def test_two_things_go_first_where_both_may_be_and_one_alone_does_not() -> None:
+    # family room at x=-3 (cups), kitchen at 0 (spoons), bedroom at 10 (both); the robot at 5, halfway
+    lattice = _corridor(range(-3, 11))
+    node = {x: x + 3 for x in range(-3, 11)}
+    nodes = [node[-3], node[0], node[10]]
+    spoon, cup = np.zeros(lattice.size), np.zeros(lattice.size)
+    spoon[[node[0], node[10]]] = 0.5
+    cup[[node[-3], node[10]]] = 0.5
+    tables = _tables(lattice, nodes)
+    both = choose(tables, nodes, lattice.distance, {"spoon": spoon, "cup": cup}, [Target("spoon"), Target("cup")],
+                  start=node[5], allowed=[0, 1, 2])
+    # bedroom first: 5 m; the spoon there (1/2): the cup there too (1/2) or 13 m on; the spoon in the kitchen
+    # (found at 15 m): the cup in the bedroom was seen (10 m back) or in the family room (3 m): 10 + 6.5 = 16.5
+    assert both is not None and both.view == 2 and abs(both.expected_m - 16.5) < 1e-6
+    assert both.shares == {"spoon": 0.5, "cup": 0.5}
+    # kitchen first is 10 + 0.5 * (3 + 0.5 * 13) + 0.5 * (0.5 * 13) = 18
+    kitchen = choose(tables, nodes, lattice.distance, {"spoon": spoon, "cup": cup}, [Target("spoon"), Target("cup")],
+                     start=node[5], allowed=[1])
+    assert kitchen is not None and abs(kitchen.expected_m - 18.0) < 1e-6
 
 
-def test_what_was_seen_is_not_searched_again_and_nothing_left_is_none() -> None:
-    distance = _line([0.0, 4.0, 1.0])
-    masses = {"cup": np.array([0.6, 0.4])}
-    choice = solve(distance, masses, [Target("cup")], start=2, regions=2, seen=frozenset({0}))
-    assert choice is not None and choice.region == 1 and abs(choice.expected_m - 3.0) < 1e-9
-    assert solve(distance, masses, [Target("cup")], start=2, regions=2, seen=frozenset({0, 1})) is None
+def test_a_known_goal_is_a_cost_after_the_search_not_a_place_to_search() -> None:
+    lattice = _corridor(range(11))
+    nodes = [0, 10]
+    spoon = np.zeros(11)
+    spoon[10] = 1.0
+    got = choose(_tables(lattice, nodes), nodes, lattice.distance, {"spoon": spoon}, [Target("spoon"), Target(at=(1,))],
+                 start=4, allowed=[0, 1])
+    assert got is not None and got.view == 1 and abs(got.expected_m - (6.0 + 9.0)) < 1e-6
+
+
+def test_nothing_left_to_find_or_nowhere_to_look_is_none() -> None:
+    lattice = _corridor(range(11))
+    nodes = [0, 10]
+    tables = _tables(lattice, nodes)
+    assert choose(tables, nodes, lattice.distance, {"spoon": np.zeros(11)}, [Target("spoon")], start=5,
+                  allowed=[0, 1]) is None
+    spoon = np.zeros(11)
+    spoon[2] = 1.0
+    assert choose(tables, nodes, lattice.distance, {"spoon": spoon}, [Target("spoon")], start=5, allowed=[1]) is None
+    assert choose(tables, nodes, lattice.distance, {"spoon": spoon}, [Target(at=(3,))], start=5, allowed=[0]) is None
+
+
+def test_quantiles_stand_for_the_belief_in_proportion() -> None:
+    belief = np.array([0.0, 3.0, 0.0, 1.0])
+    picked = quantiles(belief, 8)
+    assert sorted(picked.tolist()) == [1] * 6 + [3] * 2

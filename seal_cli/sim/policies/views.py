@@ -1,0 +1,198 @@
+"""The geometry of the view model: a coarse lattice of the free space, what each node of it sees, and
+the looks a drive between two nodes takes.
+
+The whole-plan search (:mod:`~seal_cli.sim.policies.completion`) values a view by what the robot sees
+*on the way to it and from it*. That needs, for many pairs of cells, the shortest path, the looks
+the agent takes along it (one every ``look_every`` metres and one at the end, as
+:meth:`~seal_cli.sim.agent.Agent.drive_to` does) and what each look sees. On the robot's own grid
+(5 cm cells, 50 000–80 000 of them) that is far too slow, so it is done on a :class:`Lattice`: the
+grid's free cells grouped in blocks of about :data:`SPACING` metres, one node per block, linked where
+the grid links their cells, with all-pairs shortest paths. A node sees another when the map's sensor
+sees the other's point from its point (range, field of view, line of sight: the sensor's exact
+model). Beliefs, sightings and distances of the search are all on the nodes.
+
+Building a lattice costs a few seconds on the apartment (the all-pairs paths, then one sensor
+query per node looked from), so lattices are kept per grid and sensor (:func:`lattice_of`): the runs
+of a benchmark on one house share one.
+"""
+
+from __future__ import annotations
+
+import hashlib
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from seal_cli.sim.navigation import Grid
+
+__all__ = ["SPACING", "DriveTable", "Lattice", "lattice_of"]
+
+SPACING = 0.25
+"""The lattice's block side in metres (the grid's cells are grouped into blocks of about this size)."""
+
+
+@dataclass(frozen=True)
+class DriveTable:
+    """What the drives from one node to each of a set of candidate nodes see: ``seen_at[v, z]`` the metres
+    driven when node ``z`` is first seen on the drive to candidate ``v`` (inf: not seen), ``look[v, z]``
+    the node it is first seen from, ``length[v]`` the drive's metres."""
+
+    seen_at: np.ndarray
+    look: np.ndarray
+    length: np.ndarray
+
+
+@dataclass(eq=False)
+class Lattice:
+    """A coarse graph of a grid's free space (see the module docstring)."""
+
+    points: np.ndarray
+    """(N, 2) each node's point (its block's free cell nearest the block's centre)."""
+    cells: np.ndarray
+    """(N, 2) that cell of the grid."""
+    distance: np.ndarray = field(repr=False)
+    """(N, N) shortest-path metres between nodes (inf: not connected)."""
+    previous: np.ndarray = field(repr=False)
+    """(N, N) predecessors of the all-pairs shortest paths (scipy's convention, -9999 for none)."""
+    sees: Callable[[tuple[float, float], np.ndarray], np.ndarray] = field(repr=False)
+    """The sensor: which of some points a look from a point sees."""
+    range: float
+    look_every: float = 1.0
+    _seen: dict[int, np.ndarray] = field(default_factory=dict, repr=False)
+
+    @property
+    def size(self) -> int:
+        return len(self.points)
+
+    def node_of(self, points: np.ndarray) -> np.ndarray:
+        """The nearest node of each point."""
+        from scipy.spatial import cKDTree
+
+        tree = getattr(self, "_tree", None)
+        if tree is None:
+            tree = cKDTree(self.points)
+            self._tree = tree
+        _, index = tree.query(np.asarray(points, dtype=float).reshape(-1, 2))
+        return np.asarray(index, dtype=np.intp)
+
+    def visible(self, node: int) -> np.ndarray:
+        """The nodes a look from ``node`` sees (a bool mask, kept)."""
+        out = self._seen.get(node)
+        if out is None:
+            x, y = self.points[node]
+            near = np.flatnonzero(np.hypot(self.points[:, 0] - x, self.points[:, 1] - y) <= self.range)
+            out = np.zeros(self.size, dtype=bool)
+            if len(near):
+                out[near[np.asarray(self.sees((float(x), float(y)), self.points[near]), dtype=bool)]] = True
+            out[node] = True
+            self._seen[node] = out
+        return out
+
+    def path(self, a: int, b: int) -> list[int]:
+        """The nodes of a shortest path from ``a`` to ``b``, both included ([] if none)."""
+        if a == b:
+            return [a]
+        if not np.isfinite(self.distance[a, b]):
+            return []
+        out = [b]
+        while out[-1] != a:
+            out.append(int(self.previous[a, out[-1]]))
+        return out[::-1]
+
+    def looks(self, a: int, b: int) -> tuple[list[int], list[float]]:
+        """The looks of a drive from ``a`` to ``b``: the nodes looked from (one every :attr:`look_every`
+        metres and the end) and the metres driven at each."""
+        nodes = self.path(a, b)
+        if len(nodes) < 2:
+            return [], []
+        out, metres = [], []
+        along, since = 0.0, 0.0
+        for u, v in zip(nodes, nodes[1:], strict=False):
+            step = float(self.distance[u, v])
+            along += step
+            since += step
+            if since >= self.look_every and v != nodes[-1]:
+                out.append(v)
+                metres.append(along)
+                since = 0.0
+        out.append(nodes[-1])
+        metres.append(along)
+        return out, metres
+
+    def drive_table(self, origin: int, candidates: Sequence[int], reveals: Sequence[np.ndarray | None],
+                    hidden: np.ndarray) -> DriveTable:
+        """The drives from ``origin`` to each candidate (see :class:`DriveTable`). A look does not see
+        ``hidden`` nodes (in a shut receptacle); the look at the end of the drive to candidate ``v`` also
+        sees ``reveals[v]`` (what opening a receptacle there shows)."""
+        k, n = len(candidates), self.size
+        seen_at = np.full((k, n), np.inf, dtype=np.float32)
+        look = np.full((k, n), -1, dtype=np.int32)
+        length = np.full(k, np.inf)
+        for v, target in enumerate(candidates):
+            nodes, metres = self.looks(origin, int(target))
+            if not nodes:
+                if origin == target:
+                    length[v] = 0.0
+                    masks = [(origin, 0.0, reveals[v])]
+                else:
+                    continue
+            else:
+                length[v] = metres[-1]
+                masks = [(u, m, None) for u, m in zip(nodes, metres, strict=True)]
+                masks[-1] = (masks[-1][0], masks[-1][1], reveals[v])
+            row, at = seen_at[v], look[v]
+            for u, m, extra in masks:
+                fresh = self.visible(u) & ~hidden
+                if extra is not None:
+                    fresh = fresh | extra
+                fresh &= ~np.isfinite(row)
+                row[fresh] = m
+                at[fresh] = u
+        return DriveTable(seen_at, look, length)
+
+
+_LATTICES: dict[bytes, Lattice] = {}
+"""Lattices by grid and sensor (the last few), shared by the runs of one process on one house."""
+
+
+def lattice_of(grid: Grid, sees: Callable[[tuple[float, float], np.ndarray], np.ndarray], sensor_key: str,
+               reach: float, look_every: float = 1.0) -> Lattice:
+    """The lattice of a grid's free space with a sensor (``sees``, ``reach`` its range; ``sensor_key``
+    names the sensor and the map whose walls cut its view), built once per grid and sensor."""
+    key = hashlib.blake2b(np.packbits(grid.free).tobytes() + repr((grid.shape, grid.resolution, sensor_key,
+                                                                   reach, look_every)).encode()).digest()
+    found = _LATTICES.get(key)
+    if found is not None:
+        return found
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import dijkstra
+
+    side = max(1, int(np.ceil(SPACING / grid.resolution - 1e-9)))
+    cells = grid.free_cells
+    blocks = cells // side
+    width = int(blocks[:, 1].max()) + 1
+    block_id = blocks[:, 0] * width + blocks[:, 1]
+    unique, node_of_cell = np.unique(block_id, return_inverse=True)
+    centre = (np.stack([unique // width, unique % width], axis=1) + 0.5) * side - 0.5
+    gap = np.hypot(*(cells - centre[node_of_cell]).T)
+    order = np.lexsort((gap, node_of_cell))
+    first = order[np.r_[0, np.flatnonzero(np.diff(node_of_cell[order])) + 1]]
+    rep_cells = cells[first]
+    points = np.asarray([grid.point((int(i), int(j))) for i, j in rep_cells], dtype=float)
+    graph, _ = grid._graph
+    coo = graph.tocoo()  # type: ignore[attr-defined]
+    a, b = node_of_cell[coo.row], node_of_cell[coo.col]
+    keep = a != b
+    pairs = np.unique(np.stack([a[keep], b[keep]], axis=1), axis=0)
+    weight = np.hypot(*(points[pairs[:, 0]] - points[pairs[:, 1]]).T)
+    n = len(points)
+    coarse = coo_matrix((weight, (pairs[:, 0], pairs[:, 1])), shape=(n, n)).tocsr()
+    distance, previous = dijkstra(coarse, directed=False, return_predecessors=True)
+    lattice = Lattice(points, rep_cells, distance.astype(np.float32), previous.astype(np.int32), sees, reach,
+                      look_every)
+    if len(_LATTICES) >= 4:
+        _LATTICES.pop(next(iter(_LATTICES)))
+    _LATTICES[key] = lattice
+    return lattice
+

@@ -1,0 +1,71 @@
+"""The view model's lattice and candidate views on a drawn house: paths round walls, looks through doors."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from seal_cli.bench.houses import cottage
+from seal_cli.frames.library import Library
+from seal_cli.sim.agent import Agent, scene_from_map
+from seal_cli.sim.policies import make_policy
+from seal_cli.sim.policies.whole_plan import WholePlanSearch
+
+
+def _search(library: Library) -> tuple[Agent, WholePlanSearch]:
+    m = cottage()
+    agent = Agent(scene_from_map(m, library), library, make_policy("prior_optimal"), rng=np.random.default_rng(0))
+    return agent, WholePlanSearch(agent)
+
+
+def test_the_lattice_drives_round_walls_and_sees_through_doors_only(library: Library) -> None:
+    agent, search = _search(library)
+    lattice = search.lattice
+    bed, fam = (int(k) for k in lattice.node_of(np.asarray([[3.0, 4.4], [3.0, 5.6]])))
+    # the wall between the bedroom and the family room: 1.2 m apart, but the drive goes out by the hall
+    assert abs(np.hypot(*(lattice.points[bed] - lattice.points[fam])) - 1.2) < 0.3
+    assert lattice.distance[bed, fam] > 6.0
+    assert np.allclose(lattice.distance, lattice.distance.T)
+    assert not lattice.visible(bed)[fam]
+    hall, door_in = (int(k) for k in lattice.node_of(np.asarray([[7.5, 2.5], [4.5, 2.5]])))
+    assert lattice.visible(hall)[door_in]                       # straight through the bedroom's door
+    nodes, metres = lattice.looks(hall, bed)
+    assert nodes[-1] == bed and all(b > a for a, b in zip(metres, metres[1:], strict=False))
+    assert 0.9 <= metres[0] <= 1.5 and abs(metres[-1] - lattice.distance[hall, bed]) < 1e-3
+
+
+def test_the_candidates_are_room_views_places_and_both_sides_of_every_door(library: Library) -> None:
+    agent, search = _search(library)
+    names = [c.name for c in search.candidates]
+    for room in ("bedroom", "family_room", "living_room", "dining_room", "kitchen"):
+        assert room in names
+    for place in ("bed_1", "sofa_1", "dining_table_1", "sink_1"):
+        assert place in names
+    points = search.lattice.points[[c.node for c in search.candidates]]
+    for door in [(6.0, 2.5), (6.0, 7.5), (9.0, 2.5), (9.0, 7.5), (11.5, 5.0)]:
+        near = np.hypot(points[:, 0] - door[0], points[:, 1] - door[1]) <= 0.8
+        assert near.sum() >= 2, door
+    for c in search.candidates:
+        assert agent.grid.is_free(c.cell) and c.open is None       # nothing in the cottage opens
+
+
+def test_a_shut_receptacle_is_seen_into_only_from_the_view_that_opens_it(library: Library) -> None:
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+
+    m = load_map(map_path("apartment"))
+    agent = Agent(scene_from_map(m, library), library, make_policy("prior_optimal"), rng=np.random.default_rng(0))
+    search = WholePlanSearch(agent)
+    shut = search._shut(agent)
+    assert "fridge_1" in shut and shut["fridge_1"].any()
+    k = next(i for i, c in enumerate(search.candidates) if c.open == "fridge_1")
+    hidden = np.zeros(search.lattice.size, dtype=bool)
+    for mask in shut.values():
+        hidden |= mask
+    reveals = [shut.get(c.open) if c.open is not None else None for c in search.candidates]
+    start = int(search.lattice.node_of(np.asarray([agent.grid.point(agent.robot_cell())]))[0])
+    table = search.lattice.drive_table(start, search.nodes, reveals, hidden)
+    inside = shut["fridge_1"]
+    assert np.isfinite(table.seen_at[k, inside]).all()
+    assert np.allclose(table.seen_at[k, inside], table.length[k])     # at the end, when it is opened
+    others = [i for i in range(len(search.candidates)) if i != k and search.candidates[i].open is None]
+    assert not np.isfinite(table.seen_at[np.ix_(others, np.flatnonzero(inside))]).any()
