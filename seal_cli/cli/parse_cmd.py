@@ -25,6 +25,8 @@ MapOption = typer.Option(None, "--map", help="Ground elements in the classes of 
 
 def vocabulary_from(vocabulary: Path | None, map_name: str | None) -> Vocabulary | None:
     """The vocabulary named by ``--vocabulary`` and/or ``--map`` (both: their union)."""
+    from dataclasses import replace
+
     from seal_cli.language.grounding import Vocabulary, load_vocabulary, vocabulary_of_map
 
     found: list[Vocabulary] = []
@@ -44,7 +46,7 @@ def vocabulary_from(vocabulary: Path | None, map_name: str | None) -> Vocabulary
     for v in found:
         for name, extra in zip(v.classes, v.synonyms, strict=True):
             synonyms.setdefault(name, []).extend(extra)
-    return Vocabulary.of(names, synonyms)
+    return replace(Vocabulary.of(names, synonyms), people=frozenset(p for v in found for p in v.people))
 
 
 def _read_lines(source: str) -> list[str]:

@@ -68,9 +68,16 @@ POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "wi
                     "excuse me", "maybe", "perhaps", "oh", "ah",
                     "ahh", "aw", "ugh", "urgh", "argh", "oops", "whoops", "sorry", "well", "gosh", "so",
                     "i'd appreciate it if you", "i would appreciate it if you", "i'd really appreciate it if you",
-                    "i would really appreciate it if you", "would it be possible to", "would you be able to",
+                    "i would really appreciate it if you", "i'd appreciate it if you could",
+                    "i would appreciate it if you could", "i'd really appreciate it if you could",
+                    "i would really appreciate it if you could", "i'd appreciate it if you would",
+                    "i would appreciate it if you would", "would it be possible to", "would you be able to",
                     "could you be able to", "are you able to", "will you be able to", "would you be willing to",
-                    "is it possible to", "is it possible for you to", "would it be possible for you to"])
+                    "is it possible to", "is it possible for you to", "would it be possible for you to",
+                    "your task is to", "your job is to", "the task is to", "your next task is to",
+                    "i would like for you to", "i'd like for you to", "i want for you to", "i'll need you to",
+                    "i will need you to", "we need you to", "we'll need you to", "wanna", "do you wanna",
+                    "you wanna"])
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
     "when you have a moment", "when you have a minute", "when you have a second", "when you have time",
@@ -85,7 +92,7 @@ POLITE_FORMULAE = frozenset([
 mind*"): the robot's time is asked for, not a condition or a task. Only a whole clause: "if you can"
 followed by more of its clause ("if you can reach the shelf, ...") is a condition."""
 SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "thanks", "thanx": "thanks",
-             "u": "you", "ur": "your", "n": "and", "im": "i'm", "ive": "i've", "youre": "you're",
+             "u": "you", "ya": "you", "ur": "your", "n": "and", "im": "i'm", "ive": "i've", "youre": "you're",
              "theyre": "they're", "thats": "that's", "dont": "don't", "doesnt": "doesn't", "didnt": "didn't",
              "isnt": "isn't", "arent": "aren't", "wasnt": "wasn't", "havent": "haven't", "couldnt": "couldn't",
              "wouldnt": "wouldn't", "shouldnt": "shouldn't", "shes": "she's", "hes": "he's", "whats": "what's",
@@ -168,6 +175,9 @@ CLOCK_WORDS = frozenset(["am", "pm", "a.m.", "p.m.", "o'clock", "oclock", "sharp
 TIME_MEASURE = frozenset(["a", "an", "few", "couple", "of", "several", "another", "other", "more", "little", "short",
                            "good", "long"])
 """Words between "for"/"every" and a unit of time ("for *a little* while", "every *few* minutes")."""
+NOT_PLACES = frozenset(["for", "with", "until", "till", "about"])
+"""Prepositions that say no place: after "and" and a verb's base form ("and *wait for* me") they begin the
+verb's complement, not where a list of things goes ("a bowl and pen *on* the desk")."""
 PATH_PREPOSITIONS = frozenset(["to", "into", "onto", "from", "out of", "off", "through", "via", "past", "across",
                                "along"])
 """Prepositions of a path: "down from the shelf *and over to* my chair" goes on one path."""
@@ -199,7 +209,9 @@ an auxiliary or a modal, a subject and any verb, then what to find."""
 REQUESTS = frozenset(["i'd like", "i would like", "i'd love", "i would love", "i'd like to have",
                       "i would like to have", "can i have", "could i have", "may i have", "can i get", "could i get",
                       "can i please have", "could i please have", "may i please have", "i need", "i want",
-                      "i'll have", "i will have", "i'll take", "can we have", "could we have", "we need", "we'd like"])
+                      "i'll have", "i will have", "i'll take", "can we have", "could we have", "we need", "we'd like",
+                      "i'll need", "i will need", "we'll need", "we will need", "i'm gonna need", "we're gonna need",
+                      "i'm going to need", "we're going to need"])
 """A request for a thing said as the speaker's wish ("*I'd like* the red mug", "*Can I have* the big plate",
 "*I need* a pen"): it means "bring me ..." (``REQUEST_MEANS``, with the speaker as recipient)."""
 REQUEST_MEANS = "bring"
@@ -214,5 +226,21 @@ NUMBER_OF = frozenset(["tell me the number of", "tell me the total number of", "
 """Asking for a count by its number ("*tell me the number of* toys on the desk", "*what number of* people
 ..."): it means "tell me how many ..." (``NUMBER_MEANS``, a unit of counting when the library has it)."""
 NUMBER_MEANS = "tell me how many"
+BEING_AT = (frozenset(["once", "when", "as soon as", "after"]), frozenset(["you're", "you are", "you 're"]),
+            frozenset(["in", "at", "inside", "by", "near", "next to", "beside", "into"]))
+""""*Once you're in* the living room, find Peyton": the robot is to be there first, "go to the living room, then
+..." (``BEING_MEANS``): a subordinator, "you're", a preposition of place, a phrase, then the clause."""
+BEING_MEANS = "go"
+PATH_ALONE = frozenset(["to", "into", "onto"])
+""""*To* the bathroom", "*back to* the kitchen, please": a command that is only where to go (the preposition's
+canonical form, ``PREPOSITIONS``) is going there (``PATH_MEANS``)."""
+PATH_MEANS = "go"
+ASKED_ALONE = frozenset(["please"])
+""""Milk from the fridge, *please*", "the remote, please": a noun phrase and "please" with no verb in the
+sentence is a request for the thing, "bring me ..." (``REQUEST_MEANS``)."""
+CHECK_WHETHER = (frozenset(["check", "see", "find out", "look and see", "go and see", "go and check"]),
+                 frozenset(["if", "whether"]), frozenset(["there is", "there are", "there 's", "there's"]))
+""""*See if* anyone is in the kitchen", "*check whether* there is milk in the fridge": the question whether
+it is there, asked as "find ..." (``WHERE_MEANS``), as "is anyone in the kitchen?" is."""
 LET_KNOW = ("let", "know")
 """"*let* me *know* ...", "*let* Amara *know* that ...": "tell me ...", "tell Amara that ..." (``QUESTION_MEANS``)."""

@@ -30,7 +30,7 @@ Vocabulary files are YAML lists: ``- cup`` or ``- {class: Fridge, synonyms: [ref
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 from pathlib import Path
 from typing import Any
@@ -88,6 +88,9 @@ class Vocabulary:
     context: frozenset[str] = field(default=frozenset(), compare=False)
     """The words of the sentence being grounded (:meth:`in_context`), which the statistics weigh
     (:meth:`~seal_cli.language.wordusage.WordUsage.context_factor`); empty: the phrase alone."""
+    people: frozenset[str] = field(default=frozenset(), compare=False)
+    """The names of the people of this world, lower case (a map's ``people``, a vocabulary file's
+    ``people:``): the parser reads them as names however they are written ("take *sam*")."""
 
     def __post_init__(self) -> None:
         if not self.synonyms:
@@ -105,7 +108,7 @@ class Vocabulary:
 
     def with_usage(self, usage: WordUsage) -> Vocabulary:
         """This vocabulary grounding with these word statistics (``WordUsage()``: the rules alone)."""
-        return Vocabulary(self.classes, self.synonyms, self.where, usage, self.scene)
+        return Vocabulary(self.classes, self.synonyms, self.where, usage, self.scene, people=self.people)
 
     def in_context(self, text: str) -> Vocabulary:
         """This vocabulary grounding the phrases of the sentence ``text``: the statistics weigh its
@@ -114,7 +117,7 @@ class Vocabulary:
         words = context_words(text)
         if words == self.context:
             return self
-        made = Vocabulary(self.classes, self.synonyms, self.where, self.usage, self.scene, words)
+        made = Vocabulary(self.classes, self.synonyms, self.where, self.usage, self.scene, words, self.people)
         for name in _INDEXES:
             if name in self.__dict__:
                 made.__dict__[name] = self.__dict__[name]
@@ -186,7 +189,7 @@ class Vocabulary:
             if len(words) > 1 and noun_lemma(words[-1]) in PORTIONS and whole not in keys:
                 names += [whole.replace("_", " "), *synonyms.get(whole, ())]
             added.append(tuple(dict.fromkeys(n for n in names if class_key(n) != class_key(name))))
-        return Vocabulary(self.classes, tuple(added), self.where, self.usage, self.scene)
+        return Vocabulary(self.classes, tuple(added), self.where, self.usage, self.scene, people=self.people)
 
     def restricted_to(self, classes: Iterable[str]) -> Vocabulary:
         """The vocabulary of a scene: only the given classes (those present), each with the names
@@ -203,7 +206,7 @@ class Vocabulary:
         for cls in present.values():
             names.setdefault(cls, [])
         scene = Vocabulary.of(list(names), names, self.usage)
-        return Vocabulary(scene.classes, scene.synonyms, scene.where, scene.usage, True)
+        return Vocabulary(scene.classes, scene.synonyms, scene.where, scene.usage, True, people=self.people)
 
     def __len__(self) -> int:
         return len(self.classes)
@@ -318,8 +321,12 @@ def load_vocabulary(path: str | Path) -> Vocabulary:
     from seal_cli.fileio import read_yaml
 
     where = Where(str(path))
-    names, synonyms = _entries(read_yaml(path), where)
-    return Vocabulary.of(names, synonyms)
+    data = read_yaml(path)
+    names, synonyms = _entries(data, where)
+    people = data.get("people", []) if isinstance(data, dict) else []
+    if not isinstance(people, list) or not all(isinstance(p, str) and p.strip() for p in people):
+        raise SealError("people: must be a list of names", where)
+    return replace(Vocabulary.of(names, synonyms), people=frozenset(p.strip().lower() for p in people))
 
 
 def vocabulary_of_map(map_: Any) -> Vocabulary:
@@ -327,4 +334,5 @@ def vocabulary_of_map(map_: Any) -> Vocabulary:
     names = [p.cls for p in getattr(map_, "places", ())]
     names += [o.cls for o in getattr(map_, "objects", ())]
     names += list(getattr(map_, "priors", {}) or {})
-    return Vocabulary.of(names)
+    people = frozenset(p.name.lower() for p in getattr(map_, "people", ()) if getattr(p, "name", None))
+    return replace(Vocabulary.of(names), people=people)

@@ -74,7 +74,10 @@ class CommandParser:
         if not text.strip():
             raise CommandError("empty command: expected a verb, such as " + _some_verbs(lexicon), 1, text,
                                ["a verb"])
-        tagger = Tagger(lexicon, tokenize(text), text)
+        tokens = tokenize(text)
+        if vocabulary is not None and vocabulary.people:
+            tokens = [_as_name(w) if w.lower in vocabulary.people else w for w in tokens]
+        tagger = Tagger(lexicon, tokens, text)
         words = tagger.run()
         if not words:
             raise CommandError("no words in the command: expected a verb, such as " + _some_verbs(lexicon),
@@ -199,6 +202,12 @@ def parse_lines(lines: Iterable[str], library: Library,
             yield parse_command(text, library, vocabulary).to_json()
         except SealError as error:
             yield {"text": text, "error": _error_json(error)}
+
+
+def _as_name(word: Word) -> Word:
+    """A word that names a person of the world, written as a name ("take *sam*": Sam) for the tagger; the
+    command's text, which the elements quote, is unchanged."""
+    return Word(word.text[:1].upper() + word.text[1:], word.start, word.end, word.tag, word.info, word.lower)
 
 
 def _error_json(error: SealError) -> dict[str, object]:

@@ -120,6 +120,10 @@ class Roles:
             nxt = items[at + 1] if at + 1 < len(items) else None
             place_next = isinstance(nxt, PP) and nxt.prep in LOCATIVE and not nxt.describes
             role = None if item.describes else self.role_for(frame, item, previous, roles, has_to, place_next)
+            before = items[at - 1] if at else None
+            if role == "goal" and item.prep in LOCATIVE and isinstance(before, PP) and before.prep in FROM and \
+                    roles.get("source") is before.np:
+                role = None                       # "take the umbrella from the shelf *in the hall*": where it is
             if item.after_relative and "recipient" in roles and item.prep not in FROM:
                 role = None                       # "bring me the book I left on the sofa": where it was left
                 #                                   ("something to eat *from the kitchen*": where to take it from)

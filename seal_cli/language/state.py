@@ -28,6 +28,7 @@ from seal_cli.language.english import (
     HERE_WORDS,
     LINKING_VERBS,
     NOMINATIVE,
+    NOT_PLACES,
     NUMBERS,
     OBJECT_PRONOUNS,
     PARTICLES,
@@ -414,7 +415,8 @@ class State:
         """After a comma that ends a request: words of address, tag questions and statements up to the end
         of the sentence ("..., *dear*? ...", "..., *she's been waiting a while*.", "..., *we're eating in
         ten*"), also after "or", "because", "so" ("..., *or it will melt*"); how many words to drop (0: none).
-        Only when nothing else follows in the sentence. Returns the count and the spans dropped."""
+        Only when nothing else follows in the sentence, or a clause after a comma ("find Jane, *she's in the
+        bedroom*, and tell her ..."). Returns the count and the spans dropped."""
         words = self.words
         k, spans = i + 1, []
         while True:
@@ -432,6 +434,9 @@ class State:
                     (is_adjective(words[k].lower) or words[k].lower.endswith("ing") and gerund_lemma(words[k].lower)):
                 spans.append((words[k].start, words[k].end))     # "..., someone left it open, *shocking*."
                 k += 1
+        if spans and k < len(words) and words[k - 1].lower in (",", ";") and \
+                (words[k].lower in ("and", "then") and self.verb_after(k + 1) or self.verb_after(k)):
+            return k - 1 - i, tuple(spans)  # "find Jane, *she's in the bedroom*, and tell her ...": the clause goes on
         if k < len(words) and words[k].lower not in END_MARKS or k == i + 1:
             return 0, ()
         return k - i, tuple(spans)
@@ -816,12 +821,16 @@ class State:
             return Match(1)                # "Put a pan with a spoon in it, in the sink"
         if low in ("then", "after that", "afterwards", "finally", "after", "before", "while", "once done",
                    "when done") or span > 1 and low != ",":
+            again = self._path_again(j)
+            if again:                      # "go to the kitchen and then *to the bedroom*": the verb again
+                return Match(j - i, (merge(words, i, j - i, Tag.SEP), Word("", words[j].start, words[j].start,
+                                                                            Tag.VERB, again)),
+                             expect=False, verb=again, using=False)
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
         if low in ("and", ",", "or") and self.np_starts(j) and self.prev_tag() in ("WORD", "NAME", "PRON"):
-            after = words[j + 1].lower if j + 1 < len(words) else ""
             unknown_verb = (nxt not in DETERMINERS and nxt not in POSSESSIVES and nxt not in PRONOUNS
-                            and not capitalised(words[j]) and nxt not in NUMBERS
-                            and (after in DETERMINERS or after in POSSESSIVES or after in ("it", "them", "me")))
+                            and not capitalised(words[j]) and nxt not in NUMBERS and
+                            (self._object_after(j + 1) or self._verb_and_path(j)))
             if not unknown_verb:
                 return Match(n, (merge(words, i, n, Tag.AND_NP),))
         m = match_phrase(words, j, PREPOSITIONS) if low == "and" and n == 1 else 0
@@ -837,6 +846,45 @@ class State:
         if low in ("and", "then", ",", ";", "or"):
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
         return None
+
+    def _path_again(self, j: int) -> str | None:
+        """The verb of the clause before when a path without a verb follows a separator of sequence: "go to
+        the kitchen and then *to the bedroom*", "walk to the door, then back to the sofa" (a verb of motion,
+        a frame with a goal, and only a path phrase after: the same verb said again); None."""
+        words = self.words
+        if self.verb_index < 0 or str(self.out[self.verb_index].info) not in self.lexicon.goals:
+            return None
+        k = j + (1 if j < len(words) and words[j].lower == "back" else 0)
+        n = match_phrase(words, k, PREPOSITIONS) if k < len(words) else 0
+        if not n or PREPOSITIONS[" ".join(w.lower for w in words[k:k + n])] not in PATH_PREPOSITIONS or \
+                not self.np_starts(k + n):
+            return None
+        return str(self.out[self.verb_index].info)
+
+    def _verb_and_path(self, j: int) -> bool:
+        """Whether word ``j``, after "and", is a verb's base form that names no thing the library knows, with
+        a preposition of no place after it (``NOT_PLACES``) or a wh-word: "go to the office and *wait for* me
+        there", "wash a mug and *fill with* water", "go into the office and *see who* is there" (a clause, not
+        a noun of a list; "a bowl and *pen on* the desk": where the list goes)."""
+        words = self.words
+        low = words[j].lower
+        return j + 1 < len(words) and words[j - 1].lower == "and" and \
+            (words[j + 1].lower in NOT_PLACES or words[j + 1].lower in WH_WORDS) and \
+            low.isalpha() and low not in self.lexicon.things and verb_lemma(low) == low
+
+    def _object_after(self, k: int) -> bool:
+        """Whether what starts at ``k`` is the object of a verb said just before it: a determiner, a
+        possessive, an object pronoun or a name ("..., and *let Kim* know"), after a particle too
+        ("..., *track down the* towel"): the word before is then a verb, not a noun of a list."""
+        words = self.words
+        if k + 1 < len(words) and words[k].lower in PARTICLES and words[k].lower not in PREPOSITIONS and \
+                verb_lemma(words[k - 1].lower) and words[k - 1].lower not in self.lexicon.things:
+            k += 1                       # "track *down* the towel": the particle of a verb, not "fork *in* the"
+        if k >= len(words):
+            return False
+        low = words[k].lower
+        return low in DETERMINERS or low in POSSESSIVES or low in ("it", "them", "me") or \
+            capitalised(words[k]) and low not in self.lexicon.things and verb_lemma(words[k - 1].lower) is not None
 
     def clock_time(self, i: int) -> int:
         """How many words a time said with a number take at ``i`` (0: none): "at three", "by 5 pm",

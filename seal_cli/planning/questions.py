@@ -23,6 +23,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from seal_cli.frames.model import Binding
+from seal_cli.language.english import CHECK_WHETHER
 from seal_cli.language.values import Evoked, Parse
 from seal_cli.planning.grounding import MapNames, words_of
 
@@ -60,8 +61,10 @@ class Question:
 def asks_whether(text: str, evoked: Evoked) -> bool:
     """Whether a Find asks whether ("*is* there a cup ...?", "*are* there any spoons ...?"): at least one
     is enough, so a plural asks for the kind once."""
-    first = text[evoked.span[0]:evoked.span[1]].lower().split()[:1]
-    return evoked.frame == "Find" and bool(first) and first[0] in ASKING_WHETHER
+    first = text[evoked.span[0]:evoked.span[1]].lower().split()[:4]
+    checks, ifs, _ = CHECK_WHETHER                      # "*see if* anyone is in the kitchen"
+    return evoked.frame == "Find" and bool(first) and (first[0] in ASKING_WHETHER or any(
+        first[k] in ifs and " ".join(first[:k]) in checks for k in range(1, len(first))))
 
 
 def _what(message: str, names: MapNames | None) -> Question | None:

@@ -139,7 +139,8 @@ def test_a_greeting_before_a_question(library: Library) -> None:
 
 
 SETS = sorted([*(Path(__file__).parents[1] / "data").glob("wording_questions*.jsonl"),
-               *(Path(__file__).parents[1] / "data").glob("wording_paraphrases*.jsonl")])
+               *(Path(__file__).parents[1] / "data").glob("wording_paraphrases*.jsonl"),
+               *(Path(__file__).parents[1] / "data").glob("wording_fragments*.jsonl")])
 SCORER = Path(__file__).resolve().parents[2].parent / "shared" / "eval" / "score_parse.py"
 
 
@@ -156,7 +157,8 @@ def test_our_sets_of_peoples_wording_score(path: Path, library: Library) -> None
     right = sum(scorer.score_one(parse, scorer.expected_frames(item))[0]
                 for item, parse in zip(items, parse_lines([it["text"] for it in items], library), strict=True)
                 if "error" not in parse)
-    assert right / len(items) >= 0.85            # measured: 1.000, 0.900, 0.933; 0.922, 0.919 (docs/language.md)
+    least = 0.80 if "fragments" in path.name else 0.85   # fragments: verbless, unknown verbs (docs/language.md)
+    assert right / len(items) >= least           # measured: 1.000, 0.900, 0.933, 1.000; 0.938, 0.935, 0.986; 0.822
 
 
 def test_where_did_someone_put_it_asks_to_find(library: Library) -> None:
@@ -195,3 +197,122 @@ def test_paraphrased_requests_of_gpsr_commands(library: Library) -> None:
     assert [f for f, _ in frames("I'd really appreciate it if you brought me a toy.", library)] == ["Bring"]
     assert texts("go with sam to the bedroom", library) == [("Guide", {"theme": "sam", "goal": "the bedroom"})]
     assert texts("go with milk to the kitchen", library) == [("Go", {"goal": "the kitchen"})]   # a word: no one
+
+
+def test_being_somewhere_before_a_clause_is_going_there_first(library: Library) -> None:
+    assert texts("Once you're in the garage, find the drill", library) == [
+        ("Go", {"goal": "the garage"}), ("Find", {"theme": "the drill"})]
+    assert [f for f, _ in frames("when you are at the gate, wave to Lea", library)] == ["Go", "Greet"]
+    assert [f for f, _ in frames("once you're done, find the drill", library)] == ["Find"]   # no place: as before
+    with pytest.raises(CommandError):
+        parse_command("once you're in the garage the door is shut", library)           # no clause follows
+
+
+def test_a_path_after_then_repeats_the_verb_of_motion(library: Library) -> None:
+    assert texts("walk to the porch and then to the shed", library) == [
+        ("Go", {"goal": "the porch"}), ("Go", {"goal": "the shed"})]
+    assert texts("drive to the gate, then back to the barn", library) == [
+        ("Go", {"goal": "the gate"}), ("Go", {"goal": "the barn"})]
+    assert [f for f, _ in frames("go to the attic and then find the lamp", library)] == ["Go", "Find"]
+
+
+def test_a_verb_no_frame_lists_after_and_is_no_noun_of_a_list(library: Library) -> None:
+    with pytest.raises(CommandError, match="unknown verb 'hunt'"):   # it was "the porch, hunt" (the goal), Find lost
+        parse_command("go to the porch, hunt down the cat, and hand it to me", library)
+    assert texts("go to the attic and let Mia know that lunch is ready", library) == [
+        ("Go", {"goal": "the attic"}), ("Tell", {"message": "lunch is ready", "recipient": "Mia"})]
+    assert texts("put the fork and spoon in the drawer", library) == [      # a noun that is also a verb: a noun
+        ("Place", {"theme": "the fork and spoon", "goal": "the drawer"})]
+
+
+def test_a_place_said_after_where_from_describes_the_source(library: Library) -> None:
+    assert texts("take the jar from the shelf in the pantry", library) == [
+        ("Pick", {"theme": "the jar", "source": "the shelf in the pantry"})]
+    assert texts("take the jar from the shelf to the pantry", library) == [
+        ("Bring", {"theme": "the jar", "goal": "the pantry", "source": "the shelf"})]
+
+
+def test_greeting_and_making_your_way_are_units_of_the_library(library: Library) -> None:
+    assert [f for f, _ in frames("find Noor in the den and say hello", library)] == ["Find", "Greet"]
+    assert texts("make your way to the porch", library) == [("Go", {"goal": "the porch"})]
+
+
+def test_a_lower_case_name_after_for_is_whom_it_is_for(library: Library) -> None:
+    assert texts("fetch a blanket for zia", library) == [("Bring", {"theme": "a blanket", "recipient": "zia"})]
+    assert texts("get a cup for cleaning", library) == [("Pick", {"theme": "a cup for cleaning"})]   # a word
+
+
+def test_a_path_alone_is_going_there(library: Library) -> None:
+    assert texts("to the greenhouse", library) == [("Go", {"goal": "the greenhouse"})]
+    assert texts("Back to the porch, please.", library) == [("Go", {"goal": "the porch"})]
+    assert [f for f, _ in frames("into the shed and then find the rake", library)] == ["Go", "Find"]
+    for text in ("To fill a bowl with water and put it in the cabinet.",     # an infinitive, no path
+                 "To the shed, carry the rake"):                             # a phrase said before a verb
+        with pytest.raises(CommandError):
+            parse_command(text, library)
+
+
+def test_a_thing_and_please_with_no_verb_is_asked_for(library: Library) -> None:
+    (bring,) = parse_command("the stapler from the desk, please", library).frames
+    assert bring.frame == "Bring" and bring.elements["theme"].text == "the stapler"
+    assert bring.elements["source"].text == "the desk" and bring.elements["recipient"].head == "me"
+    assert frames("please, a towel", library) == [("Bring", {"theme": "towel", "recipient": "me"})]
+    with pytest.raises(CommandError):
+        parse_command("the stapler is on the desk, please", library)         # a statement: no request read
+
+
+def test_seeing_whether_something_is_somewhere_asks_to_find_it(library: Library) -> None:
+    assert texts("could you see if anyone is in the attic?", library) == [
+        ("Find", {"theme": "anyone", "ground": "the attic"})]
+    assert texts("check whether there's a ladder in the shed", library) == [
+        ("Find", {"theme": "a ladder", "ground": "the shed"})]
+    assert texts("check the shed", library) == [("LookAt", {"theme": "the shed"})]      # no question: as before
+    with pytest.raises(CommandError):
+        parse_command("see if the soup is hot", library)                  # no place asked of: 'see' no verb
+
+
+def test_a_verb_after_and_before_a_preposition_of_no_place_is_a_clause(library: Library) -> None:
+    with pytest.raises(CommandError, match="unknown verb 'wait'"):     # it was the goal 'the porch and wait ...'
+        parse_command("go to the porch and wait for me there", library)
+    assert texts("put the mug and scoop in the sink", library) == [
+        ("Place", {"theme": "the mug and scoop", "goal": "the sink"})]
+    assert [f for f, _ in frames("slice a pear, put it in the fridge and into the microwave", library)] == [
+        "Slice", "Place", "Place"]
+
+
+def test_a_particle_between_the_person_and_the_thing_is_only_a_direction(library: Library) -> None:
+    assert texts("bring me back the stapler", library) == [("Bring", {"theme": "the stapler", "recipient": "me"})]
+    assert texts("give Noor back her scarf", library) == [("Give", {"theme": "her scarf", "recipient": "Noor"})]
+
+
+def test_appreciating_what_you_could_do_is_politeness(library: Library) -> None:
+    assert texts("I'd appreciate it if you could locate my wallet.", library) == [("Find", {"theme": "my wallet"})]
+
+
+def test_a_statement_between_commas_before_the_next_clause_is_a_remark(library: Library) -> None:
+    parse = parse_command("Find Noor, she's in the den, and tell her lunch is served.", library)
+    assert [(f.frame, {r: e.text for r, e in f.elements.items()}) for f in parse.frames] == [
+        ("Find", {"theme": "Noor"}), ("Tell", {"message": "lunch is served", "recipient": "her"})]
+    assert parse.remarks == ("she's in the den",)
+
+
+def test_stating_the_task_is_politeness(library: Library) -> None:
+    assert [f for f, _ in frames("Your task is to go to the attic and find a lamp.", library)] == ["Go", "Find"]
+    assert texts("I would like for you to bring me a quilt.", library) == [
+        ("Bring", {"theme": "a quilt", "recipient": "me"})]
+    with pytest.raises(CommandError, match="unknown verb 'see'"):   # it was the goal 'the den and see who ...'
+        parse_command("go into the den and see who is in there", library)
+
+
+def test_needs_said_in_the_future_and_casual_asks(library: Library) -> None:
+    assert texts("We're gonna need the ladder from the shed.", library)[0][0] == "Bring"
+    assert [f for f, _ in frames("I'll need you to carry the chairs to the porch.", library)] == ["Bring"]
+    assert texts("Could ya grab me the rake?", library) == [("Bring", {"theme": "the rake", "recipient": "me"})]
+    assert texts("Wanna bring me a quilt?", library) == [("Bring", {"theme": "a quilt", "recipient": "me"})]
+
+
+def test_how_many_after_a_verb_of_saying(library: Library) -> None:
+    assert texts("Report to me how many mugs are in the sink.", library) == [
+        ("Count", {"theme": "mugs", "ground": "the sink"})]
+    assert texts("tell Noor how many cups are left", library) == [       # the message was lost
+        ("Tell", {"message": "how many cups are left", "recipient": "Noor"})]

@@ -217,3 +217,26 @@ def test_pieces_are_portions() -> None:
 
     assert PIECES <= PORTIONS
     assert Vocabulary.of(["Apple"]).ground_words(["apple", "section"]) == "Apple"
+
+
+def test_the_people_of_a_map_or_a_vocabulary_are_names_however_written(library: Library, tmp_path: Path) -> None:
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+
+    world = vocabulary_of_map(load_map(map_path("apartment")))          # Anna and Ben live there
+    assert world.people == frozenset({"anna", "ben"})
+    parse = parse_command("take anna to the kitchen", library, world)
+    assert [(f.frame, {r: e.text for r, e in f.elements.items()}) for f in parse.frames] == [
+        ("Guide", {"theme": "anna", "goal": "the kitchen"})]             # the text as said
+    assert parse_command("take anna", library, world).frames[0].frame == "Guide"
+    assert parse_command("take anna", library).frames[0].frame == "Pick"  # no world: a word no one names
+    path = tmp_path / "v.yaml"
+    path.write_text("classes: [knife]\npeople: [Robin]\n")
+    vocab = load_vocabulary(path)
+    (bring,) = parse_command("deliver the knife to robin", library, vocab).frames
+    assert bring.elements["recipient"].text == "robin"                     # a bird to the dictionary, a name here
+    assert "recipient" not in parse_command("deliver the knife to robin", library).frames[0].elements
+    path.write_text("classes: [knife]\npeople: [Robin, 3]\n")
+    with pytest.raises(SealError, match="people: must be a list of names") as err:
+        load_vocabulary(path)
+    assert err.value.file == str(path)

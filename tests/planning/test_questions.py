@@ -52,3 +52,13 @@ def test_a_question_kind_is_checked() -> None:
 def test_looking_somewhere_for_nothing_in_particular_asks_what_is_there(library: Library) -> None:
     assert asked("look in the fridge", library) == [("Find(ground=fridge_1)", Question("what", "fridge_1", "in"))]
     assert asked("look around the kitchen", library) == [("Find(ground=kitchen)", Question("what", "kitchen", "in"))]
+
+
+def test_seeing_whether_asks_whether(library: Library) -> None:
+    from seal_cli.planning.questions import asks_whether
+
+    for text, whether in (("see if anyone is in the kitchen", True),
+                          ("check whether there is milk in the fridge", True),
+                          ("find Anna if she is in the kitchen", False), ("find the cup", False)):
+        (find,) = parse_command(text, library).frames
+        assert asks_whether(text, find) is whether, text

@@ -29,6 +29,7 @@ ANYWHERE: tuple[Rule, ...] = (verbs.SPLIT_PARTICLE, politeness.FORMULA)
 """At every word, first."""
 
 CLAUSE_START: tuple[Rule, ...] = (
+    requests.PATH_ALONE_RULE,
     politeness.WHILE_HOLDING,
     politeness.ADVERB_COMMA,
     politeness.POLITENESS,
@@ -36,6 +37,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     politeness.YOU_IMPERATIVE,
     lead_ins.COMMA_AFTER_POLITENESS,
     lead_ins.SEQUENCING,
+    lead_ins.BEING_AT_RULE,
     lead_ins.SUBORDINATE,
     lead_ins.MANNER,
     lead_ins.BE_CAREFUL,
@@ -54,6 +56,9 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.WISH_OF,
     requests.LET_KNOW_RULE,
     requests.FRONTED_OF,
+    requests.CHECK_WHETHER_RULE,
+    requests.TOLD_HOW_MANY,
+    requests.ASKED_ALONE_RULE,
     verbs.USE,
     verbs.VERB,
     statements.DISLOCATED,
@@ -65,10 +70,13 @@ word is tagged as what it is (``INSIDE``), and the grammar reports the missing v
 INSIDE: tuple[Rule, ...] = (
     clauses.END_MARK,
     requests.KNOW_AFTER_LET,
+    requests.WHETHER_BE,
     clauses.PARTITIVE_OF,
+    clauses.PARTICLE_BETWEEN_OBJECTS,
     statements.HER_TOLD,
     statements.TOLD,
     statements.TOLD_HOW_TO,
+    requests.HOW_MANY_SAID,
     politeness.PLEASE_INSIDE,
     clauses.SOMETHING_TO,
     verbs.TELL_TO,

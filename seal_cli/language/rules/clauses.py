@@ -3,7 +3,15 @@ inside a clause, relative clauses, "until the corner", "something to drink"."""
 
 from __future__ import annotations
 
-from seal_cli.language.english import DETERMINERS, END_MARKS, POSSESSIVES, PREPOSITIONS, SEPARATOR_WORDS
+from seal_cli.language.english import (
+    DETERMINERS,
+    END_MARKS,
+    PARTICLES,
+    PERSON_PRONOUNS,
+    POSSESSIVES,
+    PREPOSITIONS,
+    SEPARATOR_WORDS,
+)
 from seal_cli.language.morphology import is_adjective, verb_lemma
 from seal_cli.language.rule import AFTER_SEP, Example, Match, Rule
 from seal_cli.language.state import CLOSED, INDEFINITE, REL_FIRST, SEP_FIRST, SUB_FIRST, State, match_phrase, merge
@@ -60,6 +68,19 @@ def _partitive_of(s: State, i: int) -> Match | None:
     return Match(1)                   # "how many *of* the people in the hall ...": of them, the people counted
 
 
+def _particle_between_objects(s: State, i: int) -> Match | None:
+    """"bring me *back* the book", "give him back the keys": a particle between the person and the thing of a
+    verb that may have a recipient says only the direction; it is dropped (it was read as "bring back" a
+    person, Guide). Not a word that may be a preposition ("bring Cell Phones *on* the bed")."""
+    if s.words[i].lower in PREPOSITIONS or s.verb_index < 0 or len(s.out) != s.verb_index + 2 or \
+            str(s.out[s.verb_index].info) not in s.lexicon.recipients or not s.np_starts(i + 1):
+        return None
+    person = s.out[-1]
+    if not (person.tag == Tag.PRON and person.lower in PERSON_PRONOUNS or person.tag == Tag.NAME):
+        return None
+    return Match(1)
+
+
 PARTITIVE_OF = Rule("of after how many", _partitive_of, (
     Example("How many of the people in the bedroom are wearing white jackets?", "of", ""),
 ), frozenset(["of"]), "'of' right after 'how many' (a unit of counting): the part counted is the phrase after it")
@@ -89,6 +110,9 @@ END_MARK = Rule("sentence end", _end_mark, (
     Example("Go to the kitchen. Find Robin.", ".", Tag.SEP),
     Example("close the door!", "!", Tag.END),
 ), END_MARKS, "'.', '!', '?': the end of the command, or between two sentences of it")
+PARTICLE_BETWEEN_OBJECTS = Rule("particle between the objects", _particle_between_objects, (
+    Example("bring me back the book", "back", ""),
+), PARTICLES, "'bring me back X': the particle between the person and the thing, dropped")
 SOMETHING_TO = Rule("something to V", _something_to, (
     Example("bring me something to drink", "to drink", Tag.REL),
 ), frozenset(["to"]), "'to' and a verb after an indefinite pronoun: what it is for, kept whole")

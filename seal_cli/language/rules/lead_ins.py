@@ -10,10 +10,10 @@ the library that also leads in: "start by", "take a look").
 
 from __future__ import annotations
 
-from seal_cli.language.english import END_MARKS, PARTICLES, PREPOSITIONS, SEPARATOR_WORDS
+from seal_cli.language.english import BEING_AT, BEING_MEANS, END_MARKS, PARTICLES, PREPOSITIONS, SEPARATOR_WORDS
 from seal_cli.language.morphology import gerund_lemma, is_adverb
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import CLOSED, LEAD_FIRST, State, match_phrase, merge
+from seal_cli.language.state import CLOSED, LEAD_FIRST, State, first_words, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word
 
@@ -45,6 +45,32 @@ def _sequencing(s: State, i: int) -> Match | None:
 
 def _subordinate(s: State, i: int) -> Match | None:
     return s.subordinate(i, start=True) if _not_a_verb(s, i) else None
+
+
+def _longest(s: State, i: int, table: frozenset[str]) -> int:
+    """How many words of the longest phrase of ``table`` start at ``i`` (0: none)."""
+    words = s.words
+    return max((len(p.split()) for p in table if i + len(p.split()) <= len(words) and
+                all(words[i + k].lower == w for k, w in enumerate(p.split()))), default=0)
+
+
+def _being_at(s: State, i: int) -> Match | None:
+    """"*Once you're in* the living room, find Peyton": to be somewhere before a clause is to go there first;
+    the subordinator and "you're" are read as ``BEING_MEANS`` (a verb of the library), the place as its
+    path, and the comma or "then" after it joins the clause that follows."""
+    words = s.words
+    subordinators, subjects, places = BEING_AT
+    n = _longest(s, i, subordinators)
+    m = _longest(s, i + n, subjects) if n else 0
+    k = _longest(s, i + n + m, places) if m else 0
+    if not k or BEING_MEANS not in s.lexicon.units or not s.np_starts(i + n + m + k):
+        return None
+    end = s.cond_end(i + n + m + k)
+    if end >= len(words) or words[end].lower not in (",", ";") or not s.verb_after(end + 1):
+        return None                     # "once you're in the kitchen the light is off": no clause follows
+    last = words[i + n + m - 1].end
+    return Match(n + m, (Word(s.text_of(words[i].start, last), words[i].start, last, Tag.VERB, BEING_MEANS),),
+                 expect=False, verb=BEING_MEANS, using=False)
 
 
 def _manner(s: State, i: int) -> Match | None:
@@ -107,6 +133,10 @@ SEQUENCING = Rule("sequencing word", _sequencing, (
     Example("Take the cup to the sink. After that, wash it.", ". After that,", Tag.SEP),
     Example("Next, open the door", "Next ,", Tag.POLITE),
 ), None, "a sequencing word before the verb")
+BEING_AT_RULE = Rule("being somewhere first", _being_at, (
+    Example("Once you're in the living room, find Peyton", "Once you're", Tag.VERB),
+    Example("when you are at the door, greet the visitor", "when you are", Tag.VERB),
+), first_words(BEING_AT[0]), "'once you're in X, ...': go to X, then the clause")
 SUBORDINATE = Rule("subordinate clause first", _subordinate, (
     Example("If the door is open, close it", "If the door is open,", Tag.COND),
     Example("When you reach the kitchen, open the fridge", "When you", Tag.POLITE),

@@ -56,14 +56,16 @@ def _name(s: State, i: int) -> Match | None:
 
 
 def _lower_case_name(s: State, i: int) -> Match | None:
-    """A word neither an English dictionary nor the library's taxonomy lists, alone after "to" in a clause
-    whose verb may have a recipient ("deliver the knife to *jamie*"), or after "with" in one whose verb
-    has a goal ("go with *sam*": who goes along): a name written in lower case."""
+    """A word neither an English dictionary nor the library's taxonomy lists, alone after "to" or "for" in a
+    clause whose verb may have a recipient ("deliver the knife to *jamie*", "fetch a towel for *jo*"), or
+    after "with" in one whose verb has a goal ("go with *sam*": who goes along): a name written in lower
+    case. A word the map or the vocabulary names as a person is a name wherever it is (the parser writes
+    it capitalised for the tagger)."""
     w, low = s.words[i], s.words[i].lower
     if s.prev_tag() != Tag.PREP or s.verb_index < 0:
         return None
     verb = str(s.out[s.verb_index].info)
-    if not (s.out[-1].info == "to" and verb in s.lexicon.recipients or
+    if not (s.out[-1].info in ("to", "for") and verb in s.lexicon.recipients or
             s.out[-1].info == "with" and verb in s.lexicon.goals) or not low.isalpha() or \
             w.text != low or low in CLOSED or in_dictionary(low) or low in s.lexicon.things or s.noun_follows(i + 1):
         return None
@@ -94,9 +96,10 @@ NAME = Rule("name", _name, (
 LOWER_CASE_NAME = Rule("name in lower case", _lower_case_name, (
     Example("deliver the parcel to jamie", "jamie", Tag.NAME),
     Example("give the keys to priya in the hallway", "priya", Tag.NAME),
+    Example("fetch a towel for jo", "jo", Tag.NAME),
     Example("go with sam to the bedroom", "sam", Tag.NAME),
-), None, "a word no dictionary lists, alone after 'to' (a clause that may have a recipient) or 'with' (one that "
-         "has a goal): a name")
+), None, "a word no dictionary lists, alone after 'to' or 'for' (a clause that may have a recipient) or "
+         "'with' (one that has a goal): a name")
 WORD = Rule("open word", _word, (
     Example("bring me the cup", "cup", Tag.WORD),
 ), None, "every other word: a noun or an adjective")

@@ -11,6 +11,9 @@ left unsaid (its ``text`` is empty).
 from __future__ import annotations
 
 from seal_cli.language.english import (
+    ASKED_ALONE,
+    BE_WORDS,
+    CHECK_WHETHER,
     DETERMINERS,
     END_MARKS,
     KNOW_WISHES,
@@ -18,8 +21,11 @@ from seal_cli.language.english import (
     NUMBER_MEANS,
     NUMBER_OF,
     OBJECT_PRONOUNS,
+    PATH_ALONE,
+    PATH_MEANS,
     POSSESSIVES,
     PREPOSITIONS,
+    PRONOUNS,
     QUESTION_MEANS,
     QUESTION_WORDS,
     REQUEST_MEANS,
@@ -30,7 +36,7 @@ from seal_cli.language.english import (
 )
 from seal_cli.language.morphology import verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import State, first_words, match_phrase
+from seal_cli.language.state import State, first_words, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 
@@ -128,6 +134,71 @@ def _whether_is(s: State, i: int) -> Match | None:
     return None
 
 
+def _check_whether(s: State, i: int) -> Match | None:
+    """"*See if* anyone is in the kitchen", "*check whether there's* a book on the shelf": whether someone or
+    something is somewhere, asked as "find ..." (``WHERE_MEANS``); "there is" is read with the words before,
+    and the "is" after a phrase is dropped (``WHETHER_BE``)."""
+    words = s.words
+    checks, ifs, there_is = CHECK_WHETHER
+    n = _phrase(s, i, checks)
+    if not n or i + n + 1 >= len(words) or words[i + n].lower not in ifs or WHERE_MEANS not in s.lexicon.units:
+        return None
+    k = i + n + 1
+    m = _phrase(s, k, there_is)
+    if m and s.np_starts(k + m):
+        k += m                                    # "check if there's ...": "is there ..."
+    elif not s.np_starts(k) or not any(words[j].lower in _WHETHER_IS and words[j + 1].lower in _WHETHER_WHERE
+                                       for j in range(k + 1, min(len(words) - 1, s.cond_end(k)))):
+        return None                               # "see if the soup is hot": no place asked of
+    end = words[k - 1].end
+    return Match(k - i, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, WHERE_MEANS),),
+                 expect=False, verb=WHERE_MEANS, using=False)
+
+
+def _whether_be(s: State, i: int) -> Match | None:
+    if s.verb_index < 0 or s.out[s.verb_index].info != WHERE_MEANS or \
+            s.out[s.verb_index].lower.split()[-1] not in CHECK_WHETHER[1] or \
+            s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON) or s.next_lower(i) not in _WHETHER_WHERE:
+        return None
+    return Match(1)                               # "see if anyone *is* in the kitchen": dropped
+
+
+_TOLD_PEOPLE = frozenset(["me", "us", "to me", "to us"])
+
+
+def _told_how_many(s: State, i: int) -> Match | None:
+    """"*Report to me how many* cups are in the sink", "say how many people are in the hall": a verb of saying
+    (a unit of a frame whose first element is what is said) and "how many" is the unit of counting that
+    says it ("tell me how many", ``NUMBER_MEANS``), as "let me know how many" is; the people told (the
+    speaker) are the unit's."""
+    words = s.words
+    found = s.verb_at(i)
+    if found is None or found[0] not in s.lexicon.speech or found[2] is not None or \
+            NUMBER_MEANS.split()[0] not in s.lexicon.units or \
+            tuple(NUMBER_MEANS.split()) not in s.lexicon.units[NUMBER_MEANS.split()[0]]:
+        return None
+    k = i + found[1]
+    m = _phrase(s, k, _TOLD_PEOPLE)
+    k += m
+    if k + 1 >= len(words) or words[k].lower != "how" or words[k + 1].lower != "many" or \
+            found[0] == NUMBER_MEANS.split()[0] and m:
+        return None                               # "tell me how many": the unit itself, read as it is
+    end = words[k + 1].end
+    return Match(k + 2 - i, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, NUMBER_MEANS),),
+                 expect=False, verb=NUMBER_MEANS, using=False)
+
+
+def _how_many_said(s: State, i: int) -> Match | None:
+    """"tell Anna *how many cups are left*", "tell the guests how many chairs are free": after a verb of saying
+    and the person told, "how many ..." is what is said, kept whole (the message was lost)."""
+    words = s.words
+    if not s.speech or s.verb_index < 0 or s.prev_tag() not in (Tag.NAME, Tag.PRON, Tag.WORD) or \
+            i + 2 >= len(words) or words[i + 1].lower != "many":
+        return None
+    end = s.speech_end(i)
+    return s.emit(i, end - i, Tag.SAID)
+
+
 def _request(s: State, i: int) -> Match | None:
     words = s.words
     n = _phrase(s, i, REQUESTS)
@@ -139,6 +210,60 @@ def _request(s: State, i: int) -> Match | None:
     text = s.text_of(words[i].start, end) or " ".join(w.text for w in words[i:i + n])
     return Match(n, (Word(text, words[i].start, end, Tag.VERB, REQUEST_MEANS),
                      _unsaid(end, Tag.PRON, None, _SPEAKER)), expect=False, verb=REQUEST_MEANS, using=False)
+
+
+def _sentence_end(s: State, i: int) -> int:
+    words = s.words
+    return next((k for k in range(i, len(words)) if words[k].lower in END_MARKS), len(words))
+
+
+def _path_alone(s: State, i: int) -> Match | None:
+    """"*To* the bathroom", "back to the kitchen, please", "into the garden and then find the dog": a clause
+    that is only a path to somewhere, with no verb in it, is going there (``PATH_MEANS``); after a clause
+    whose verb has a goal, it is that verb again ("put it in the fridge and *into* the microwave")."""
+    words = s.words
+    n = match_phrase(words, i, PREPOSITIONS)
+    if not n or PREPOSITIONS[" ".join(w.lower for w in words[i:i + n])] not in PATH_ALONE or \
+            PATH_MEANS not in s.lexicon.units or not s.np_starts(i + n) or \
+            not all(t.tag in (Tag.POLITE, Tag.SEP) for t in s.out[-1:]):
+        return None
+    first = words[i + n]
+    if first.lower not in DETERMINERS and first.lower not in POSSESSIVES and not capitalised(first) and \
+            verb_lemma(first.lower) == first.lower:
+        return None                               # "To fill a bowl with water ...": an infinitive
+    end = s.cond_end(i + n)
+    if any(s.verb_at(k) and words[k - 1].lower not in DETERMINERS and words[k - 1].lower not in POSSESSIVES
+           for k in range(i + n, end)):
+        return None                               # a verb in it ("the shed" is a noun)
+    k = end
+    while k < len(words) and words[k].lower in ASKED_ALONE | {","}:
+        k += 1
+    if not (k >= len(words) or words[k].lower in END_MARKS or words[k].lower in ("and", "then", ";") and
+            s.verb_after(k + 1) or words[k - 1].lower in ASKED_ALONE and s.verb_after(k)):
+        return None                               # "To the kitchen, bring the cup": a phrase said first
+    w = words[i]
+    prep = PREPOSITIONS[" ".join(x.lower for x in words[i:i + n])]
+    before = next((t for t in reversed(s.out) if t.tag == Tag.VERB), None)
+    verb = str(before.info) if before is not None and str(before.info) in s.lexicon.goals else PATH_MEANS
+    return Match(n, (_unsaid(w.start, Tag.VERB, verb), merge(words, i, n, Tag.PREP, prep)), expect=False,
+                 verb=verb, using=False)    # "put it in the fridge, and *into* the microwave": the verb again
+
+
+def _asked_alone(s: State, i: int) -> Match | None:
+    """"Milk from the fridge, please", "the remote please": a noun phrase and "please" (``ASKED_ALONE``), no
+    verb anywhere in the sentence, is a request for the thing: "bring me ..." (``REQUEST_MEANS``)."""
+    words = s.words
+    if any(t.tag != Tag.POLITE for t in s.out) or REQUEST_MEANS not in s.lexicon.units or \
+            words[i].lower in PRONOUNS or not s.np_starts(i):
+        return None
+    end = _sentence_end(s, i)
+    if not any(words[k].lower in ASKED_ALONE for k in range(end)) or \
+            any(s.verb_at(k) or words[k].lower in BE_WORDS or words[k].lower in QUESTION_WORDS
+                for k in range(i, end)):
+        return None
+    return Match(0, (_unsaid(words[i].start, Tag.VERB, REQUEST_MEANS),
+                     _unsaid(words[i].start, Tag.PRON, None, _SPEAKER)), expect=False, verb=REQUEST_MEANS,
+                 using=False)
 
 
 _WISHES_OF = (("wants",), ("needs",), ("would", "like"))
@@ -267,6 +392,29 @@ WISH_OF = Rule("a person's wish for a thing", _wish_of, (
     Example("Ben needs a towel.", "Ben needs", Tag.VERB),
     Example("Anna would like the red mug", "Anna would like", Tag.VERB),
 ), None, "'Anna wants X', 'Ben needs X': bring X to the person")
+PATH_ALONE_RULE = Rule("a path alone", _path_alone, (
+    Example("to the bathroom", "to", Tag.PREP),
+    Example("back to the kitchen, please", "back to", Tag.PREP),
+    Example("into the garden and then find the dog", "", Tag.VERB),
+), first_words(p for p, canonical in PREPOSITIONS.items() if canonical in PATH_ALONE), "'to X' with no verb: go to X")
+ASKED_ALONE_RULE = Rule("a thing asked for alone", _asked_alone, (
+    Example("milk from the fridge, please", "", Tag.VERB),
+    Example("The remote please.", "", Tag.PRON),
+), None, "a noun phrase and 'please' with no verb: bring it to the speaker")
+CHECK_WHETHER_RULE = Rule("check whether it is there", _check_whether, (
+    Example("Can you see if anyone is in the kitchen?", "see if", Tag.VERB),
+    Example("check whether there's a book on the shelf", "check whether there's", Tag.VERB),
+), first_words(CHECK_WHETHER[0]), "'see if X is in Y', 'check whether there is X': find X in Y")
+WHETHER_BE = Rule("is, after see if X", _whether_be, (
+    Example("see if the cat is in the garden", "is", ""),
+), _WHETHER_IS, "the 'is' of 'see if X is in Y', dropped: 'see if' was read as 'find'")
+TOLD_HOW_MANY = Rule("said how many", _told_how_many, (
+    Example("Report to me how many cups are in the sink.", "Report to me how many", Tag.VERB),
+    Example("say how many people are in the hall", "say how many", Tag.VERB),
+), None, "a verb of saying and 'how many': tell me how many (Count)")
+HOW_MANY_SAID = Rule("how many, said", _how_many_said, (
+    Example("tell Anna how many cups are left", "how many cups are left", Tag.SAID),
+), frozenset(["how"]), "'how many ...' after a verb of saying and the person told: what is said")
 KNOW_WISH = Rule("wish to know", _know_wish, (
     Example("I'd like to know the heaviest object on the bookshelf.", "I'd like to know", Tag.VERB),
     Example("Do you know how many people in the bedroom are wearing white jackets?", "Do you know how many",

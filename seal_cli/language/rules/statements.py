@@ -4,11 +4,12 @@ words of address and statements after the request ("..., dear, I'm cold"), a cla
 
 from __future__ import annotations
 
-from seal_cli.language.english import BECAUSE, WH_WORDS
+from seal_cli.language.english import BECAUSE, FINITE, WH_WORDS
 from seal_cli.language.morphology import verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import State, subject_word
+from seal_cli.language.state import CLOSED, State, subject_word
 from seal_cli.language.tags import Tag
+from seal_cli.language.tokens import capitalised
 
 
 def _aside(s: State, i: int) -> Match | None:
@@ -17,10 +18,20 @@ def _aside(s: State, i: int) -> Match | None:
 
 def _her_told(s: State, i: int) -> Match | None:
     out = s.out
-    if s.speech and out and out[-1].lower == "her" and s.prev_tag() == Tag.POSS and subject_word(s.words[i]) and \
-            s.told_at(i):
+    if not (s.speech and out and out[-1].lower == "her" and s.prev_tag() == Tag.POSS):
+        return None
+    if subject_word(s.words[i]) and s.told_at(i) or _bare_noun_is(s, i):
         return Match(0, last=out[-1].tagged(Tag.PRON))            # "tell *her* we're moving": her is the person told
     return None
+
+
+def _bare_noun_is(s: State, i: int) -> bool:
+    """Whether a bare noun and a finite verb start at ``i`` ("tell her *dinner's* ready", "tell her *lunch is*
+    served"): a statement, so the "her" before it is the person told, not whose dinner."""
+    words = s.words
+    low = words[i].lower
+    return i + 1 < len(words) and low.isalpha() and low not in CLOSED and not capitalised(words[i]) and \
+        low not in s.lexicon.units and words[i + 1].lower in FINITE
 
 
 def _told(s: State, i: int) -> Match | None:
@@ -69,6 +80,7 @@ ASIDE = Rule("sentence beside the command", _aside, (
 ), None, "a greeting or statement with no verb of the library, where a command should start")
 HER_TOLD = Rule("her told", _her_told, (
     Example("tell her we're moving", "her", Tag.PRON),
+    Example("tell her dinner's ready", "her", Tag.PRON),
 ), None, "'her' before a subject is the person a verb of saying tells, not a possessive")
 TOLD = Rule("told without that", _told, (
     Example("tell mom I'm late", "I'm late", Tag.SAID),
