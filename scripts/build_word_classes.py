@@ -30,6 +30,7 @@ import argparse
 import csv
 import importlib.util
 import json
+import math
 import sys
 import tempfile
 import zlib
@@ -43,6 +44,7 @@ sys.path.insert(0, str(ROOT))
 
 from seal_cli.frames.reading import load_library  # noqa: E402
 from seal_cli.frames.taxonomy import class_key  # noqa: E402
+from seal_cli.language.chooser import Instance, features, fit  # noqa: E402
 from seal_cli.language.grounding import PORTIONS, Vocabulary  # noqa: E402
 from seal_cli.language.lexicon import noun_lemma  # noqa: E402
 from seal_cli.language.parser import CommandError, Parse, Phrase, parse_command  # noqa: E402
@@ -62,8 +64,10 @@ OUT = SHIPPED / "alfred_train.json"
 MANIPULATE = ("Pick", "Heat", "Cool", "Clean", "LookAt", "Place")
 LABELS = ("object", "receptacle", "mrecep", "toggle")
 KEEP = 2
-SECTIONS = ("words", "seen", "context", "class_context", "number")
 """A wording seen fewer times than this is left out of the file (it could never reach MIN_SUPPORT alone)."""
+SECTIONS = ("words", "seen", "context", "class_context", "number", "weights")
+L2 = 1.0
+"""The chooser's L2 penalty (chosen on train trials held out from the fit, ``--dev 0.2 --l2 ...``)."""
 
 
 def wording(phrase: Phrase) -> tuple[str, ...] | None:
@@ -104,13 +108,16 @@ def fields(parse: Parse, row: dict[str, str]) -> Iterable[tuple[Phrase, str]]:
 
 Counts = dict[str, Counter[str]]
 Context = dict[str, dict[str, Counter[str]]]
+Said = tuple[tuple[str, ...], str, frozenset[str]]
+"""A labelled phrase as the chooser learns from it: its lemmas, the class meant, the sentence's words."""
 
 
 def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
-          scenes: dict[str, frozenset[str]]) -> tuple[Counts, Counts, Context, Counts, Counts]:
+          scenes: dict[str, frozenset[str]]) -> tuple[Counts, Counts, Context, Counts, Counts, list[Said]]:
     """(wording → labelled classes, wording → the classes of the scenes it was said in, wording →
     labelled class → the sentence's other words, labelled class → the same over its head wordings,
-    plural wording of the object → "one" or "several" things meant: the task picks two or not)."""
+    plural wording of the object → "one" or "several" things meant: the task picks two or not,
+    and every labelled phrase for the chooser)."""
     library = load_library()
     rules = vocabulary.with_usage(WordUsage())
     counts: Counts = {}
@@ -118,6 +125,7 @@ def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
     context: Context = {}
     class_context: Counts = {}
     number: Counts = {}
+    said_phrases: list[Said] = []
     for row in rows:
         text = " ".join(row["goal_sentence"].split())
         try:
@@ -143,6 +151,7 @@ def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
             if lemmas is None:
                 continue
             others = words - set(lemmas)             # the sentence's other words, as grounding reads them
+            said_phrases.append((lemmas, label, words))
             class_context.setdefault(label, Counter()).update(others)
             for size in (2, 1):
                 if len(lemmas) >= size:
@@ -150,7 +159,28 @@ def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
                     counts.setdefault(said, Counter())[label] += 1
                     seen.setdefault(said, Counter()).update(scenes.get(row["floor_plan"], ()))
                     context.setdefault(said, {}).setdefault(label, Counter()).update(others)
-    return counts, seen, context, class_context, number
+    return counts, seen, context, class_context, number, said_phrases
+
+
+def instances(said: Iterable[Said], counts: Counts, support: int = MIN_SUPPORT) -> list[Instance]:
+    """The chooser's train instances: each labelled phrase whose wording (the longest with support,
+    as grounding picks it; the phrase itself left out of the counts) meant two classes or more."""
+    out = []
+    for lemmas, label, words in said:
+        for size in (2, 1):
+            if len(lemmas) < size:
+                continue
+            by_class = counts.get(" ".join(lemmas[-size:]))
+            if not by_class or sum(by_class.values()) - 1 < support:
+                continue
+            left = {c: n - (c == label) for c, n in by_class.items() if n - (c == label) > 0}
+            if len(left) >= 2 and label in left:
+                keys = sorted(left)
+                candidates = tuple(class_key(k) for k in keys)
+                out.append(Instance(candidates, tuple(math.log(left[k]) for k in keys), keys.index(label),
+                                    features(lemmas, words, candidates)))
+            break
+    return out
 
 
 def scene_classes(data: Path, classes: Sequence[str]) -> dict[str, frozenset[str]]:
@@ -167,16 +197,21 @@ def scene_classes(data: Path, classes: Sequence[str]) -> dict[str, frozenset[str
 
 
 def table(counts: Counts, seen: Counts, context: Context, class_context: Counts, number: Counts,
-          classes: Sequence[str], source: str) -> dict[str, object]:
+          said: list[Said], classes: Sequence[str], source: str, l2: float | None = L2) -> dict[str, object]:
+    """The table's sections; ``l2``: the chooser's penalty (None: no chooser, the naive Bayes context)."""
+    spelling = {class_key(c): c for c in classes}
+    weights = {} if l2 is None else {
+        f: {spelling[k]: w for k, w in by.items()} for f, by in fit(instances(said, counts), l2).items()}
     words = {w: dict(sorted(c.items(), key=lambda kv: (-kv[1], kv[0])))
              for w, c in sorted(counts.items()) if sum(c.values()) >= KEEP}
     where = {w: {c: seen[w][c] for c in by_class if seen.get(w, {}).get(c)} for w, by_class in words.items()}
     return {"format": FORMAT, "source": source, "built_by": "scripts/build_word_classes.py",
             "classes": list(classes), "words": words, "seen": {w: c for w, c in where.items() if c},
-            "context": pruned(context, words),
-            "class_context": {c: ordered(Counter({w: n for w, n in by.items() if n >= KEEP}))
-                              for c, by in sorted(class_context.items())},
-            "number": {w: ordered(by) for w, by in sorted(number.items()) if sum(by.values()) >= KEEP}}
+            "context": {} if weights else pruned(context, words),        # the chooser weighs the sentence
+            "class_context": {} if weights else {c: ordered(Counter({w: n for w, n in by.items() if n >= KEEP}))
+                                                 for c, by in sorted(class_context.items())},
+            "number": {w: ordered(by) for w, by in sorted(number.items()) if sum(by.values()) >= KEEP},
+            "weights": weights}
 
 
 def ordered(words: Counter[str]) -> dict[str, int]:
@@ -231,8 +266,9 @@ def scorer(data: Path):  # type: ignore[no-untyped-def]
 
 
 def score(rows: Sequence[dict[str, str]], vocabulary: Callable[[dict[str, str]], Vocabulary],
-          module) -> dict[str, float]:  # type: ignore[no-untyped-def]
-    """The scorer's five fields on these rows, each parsed with ``vocabulary(row)``."""
+          module, errors: list[str] | None = None) -> dict[str, float]:  # type: ignore[no-untyped-def]
+    """The scorer's five fields on these rows, each parsed with ``vocabulary(row)``; each row scored
+    wrong is added to ``errors`` (a TSV line: the fields wrong, the sentence, what was read, the gold)."""
     library = load_library()
     hits: Counter[str] = Counter()
     for row in rows:
@@ -245,6 +281,9 @@ def score(rows: Sequence[dict[str, str]], vocabulary: Callable[[dict[str, str]],
         ok = {f: got[f] == want[f] for f in module.FIELDS}
         hits.update(f for f, good in ok.items() if good)
         hits["all"] += all(ok.values())
+        if errors is not None and not all(ok.values()):
+            wrong = ",".join(f for f, good in ok.items() if not good)
+            errors.append("\t".join([wrong, row["goal_sentence"].strip(), json.dumps(got), json.dumps(want)]))
     return {f: hits[f] / max(len(rows), 1) for f in ("all", *module.FIELDS)}
 
 
@@ -257,6 +296,11 @@ def main() -> int:
     ap.add_argument("--min-support", type=int, nargs="*", default=[MIN_SUPPORT])
     ap.add_argument("--min-ratio", type=float, nargs="*", default=[MIN_RATIO])
     ap.add_argument("--context-weight", type=float, nargs="*", default=[CONTEXT_WEIGHT])
+    ap.add_argument("--l2", type=float, nargs="*", default=[L2], help="the chooser's L2 penalties to try")
+    ap.add_argument("--errors", type=Path, help="with --dev: write the held-out sentences scored wrong here (TSV)")
+    ap.add_argument("--errors-of", default=None, help="with --dev: the table whose errors --errors writes "
+                    "('naive Bayes', 'chooser l2 1.0'; default: the first chooser)")
+    ap.add_argument("--scenes", action="store_true", help="with --dev: also score in each sentence's scene")
     args = ap.parse_args()
 
     goals = args.data / "alfred" / "goals_train.tsv"
@@ -271,29 +315,43 @@ def main() -> int:
     scenes = scene_classes(args.data, classes)
 
     if args.dev:
+        args.errors_of = args.errors_of or f"chooser l2 {args.l2[0]}"
+        errors: list[str] = []
         held = {r["task_id"] for r in rows if zlib.crc32(r["task_id"].encode()) % 1000 < args.dev * 1000}
-        fit = [r for r in rows if r["task_id"] not in held]
+        fit_rows = [r for r in rows if r["task_id"] not in held]
         dev = [r for r in rows if r["task_id"] in held]
         module = scorer(args.data)
-        with tempfile.TemporaryDirectory() as folder:      # the table as it would ship, read as it is read
-            path = Path(folder) / "dev.json"
-            path.write_text(dump(table(*count(fit, vocabulary, scenes), classes, "dev")))
-            fitted = load_word_usage([path])
-        print(f"fit {len(fit)} sentences, dev {len(dev)} sentences ({len(held)} trials)")
+        counted = count(fit_rows, vocabulary, scenes)
+        print(f"fit {len(fit_rows)} sentences, dev {len(dev)} sentences ({len(held)} trials)")
+
+        def fitted(l2: float | None) -> WordUsage:
+            with tempfile.TemporaryDirectory() as folder:      # the table as it would ship, read as it is read
+                path = Path(folder) / "dev.json"
+                path.write_text(dump(table(*counted, classes, "dev", l2)))
+                return load_word_usage([path])
 
         def show(name: str, figures: dict[str, float]) -> None:
-            print(f"{name:<34}" + " ".join(f"{k} {v:.3f}" for k, v in figures.items()))
+            print(f"{name:<34}" + " ".join(f"{k} {v:.3f}" for k, v in figures.items()), flush=True)
 
         show("rules alone", score(dev, lambda row: vocabulary.with_usage(WordUsage()), module))
-        for support in args.min_support:
-            for ratio in args.min_ratio:
-                for weight in args.context_weight:
-                    tried = vocabulary.with_usage(replace(fitted, min_support=support, min_ratio=ratio,
-                                                          context_weight=weight))
-                    show(f"support {support} ratio {ratio} context {weight}",
-                         score(dev, lambda row, v=tried: v, module))
-        usage = replace(fitted, min_support=args.min_support[0], min_ratio=args.min_ratio[0],
-                        context_weight=args.context_weight[0])
+        tables = {"naive Bayes": fitted(None), **{f"chooser l2 {l2}": fitted(l2) for l2 in args.l2}}
+        for name, table_ in tables.items():
+            for support in args.min_support:
+                for ratio in args.min_ratio:
+                    for weight in args.context_weight:
+                        tried = vocabulary.with_usage(replace(table_, min_support=support, min_ratio=ratio,
+                                                              context_weight=weight))
+                        show(f"{name}, support {support} ratio {ratio}" + ("" if table_.weights else
+                                                                         f" context {weight}"),
+                             score(dev, lambda row, v=tried: v, module,
+                                   errors if name == args.errors_of else None))
+        if args.errors is not None:
+            args.errors.write_text("".join(line + "\n" for line in errors))
+            print(f"wrote {args.errors} ({len(errors)} sentences of {args.errors_of} scored wrong)")
+        if not args.scenes:
+            return 0
+        usage = replace(tables[args.errors_of or "naive Bayes"], min_support=args.min_support[0],
+                        min_ratio=args.min_ratio[0], context_weight=args.context_weight[0])
 
         def in_scene(row: dict[str, str], *, rates: bool, learned: bool = True) -> Vocabulary:
             present = scenes.get(row["floor_plan"], frozenset()) | {row[k] for k in LABELS if row[k]}

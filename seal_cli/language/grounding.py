@@ -118,9 +118,8 @@ class Vocabulary:
         if words == self.context:
             return self
         made = Vocabulary(self.classes, self.synonyms, self.where, self.usage, self.scene, words, self.people)
-        for name in _INDEXES:
-            if name in self.__dict__:
-                made.__dict__[name] = self.__dict__[name]
+        for name in _INDEXES:      # built here once, on this vocabulary: built on each copy, every sentence built them
+            made.__dict__[name] = getattr(self, name)
         return made
 
     @cached_property

@@ -70,11 +70,19 @@ def order_of_cells(m: Map, cells: Index) -> Index:
     cells = np.asarray(cells)
     ranks = rank(m)
     width = cells.shape[-1] if cells.ndim else 1
-    key = np.where(cells >= 0, ranks[np.maximum(cells, 0)] + 1, 0)
     dtype = np.int32 if (len(ranks) + 1) * max(width, 1) + width < 2**31 else np.int64
+    key = _keys(m, dtype)[cells + 1]  # rank + 1, and 0 off free space (-1)
     step = np.asarray(width, dtype)
-    unique = np.add(np.multiply(key.astype(dtype), step), np.arange(width, dtype=dtype))
+    unique = np.add(np.multiply(key, step), np.arange(width, dtype=dtype))
     return np.asarray(np.remainder(np.sort(unique, axis=-1), step), np.intp)
+
+
+@lru_cache(maxsize=8)
+def _keys(m: Map, dtype: type) -> NDArray[np.integer]:
+    """0, then each free cell's rank + 1: the sort key of a free cell index + 1 (-1, off free space, gives 0)."""
+    out: NDArray[np.integer] = np.concatenate([[0], rank(m) + 1]).astype(dtype)
+    out.setflags(write=False)
+    return out
 
 
 def order_of_points(m: Map, X: NDArray[np.float64]) -> Index:

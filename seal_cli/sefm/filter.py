@@ -153,6 +153,8 @@ class SeFM:
         self.kernel.set(range(len(self.sources)), self.objects.X, self.objects.W)
         self.relations = relations(self.bindings, state, self.config.other)
         self._related = state.facts
+        self._context_rows = np.zeros(0, np.intp)
+        """The kernel rows the context was last refreshed in."""
         terms = self._terms = self.terms()
         self.frames = FrameBeliefs.start(m, self._noise(), P, terms, self.kernel, (self.objects.X, self.objects.W),
                                          rng, self.config.frames)
@@ -213,8 +215,26 @@ class SeFM:
         """The kernel rows of the frames that are some frame's context now hold their new beliefs."""
         rows = np.unique(terms.ctx_source)
         if len(rows):
-            frames = rows - len(self.sources)
-            self.kernel.set(list(rows), self.frames.X[frames], self.frames.W[frames])
+            C = len(self.sources)
+            frames = rows - C
+            X, W = np.take(self.frames.X, frames, axis=0), np.take(self.frames.W, frames, axis=0)
+            changed = self.frames.changed()
+            change = None
+            if changed is not None and np.array_equal(rows, self._context_rows) and \
+                    self.kernel.takes_moves(list(rows), int(changed[frames].sum())):
+                change = self.frames.change
+            if change is None:
+                self.kernel.set(list(rows), X, W)
+            else:  # the same rows as at the last update: what changed in them is enough
+                P = self.frames.particles
+                context = np.zeros(len(self.bindings), bool)
+                context[frames] = True
+                moved = []
+                for f, where in ((change[0], change[1]), (change[2], change[3])):
+                    keep = np.flatnonzero(context[f])
+                    moved.append((f[keep] + C, np.take(where, keep, axis=0), np.full(len(keep), 1.0 / P)))
+                self.kernel.move(list(rows), X, W, moved[0], moved[1])
+        self._context_rows = rows
 
     # -- one update -----------------------------------------------------------------------------
     def update(self, pose: ArrayLike, detections: Iterable[Any] = (), state: State | None = None) -> None:
@@ -381,10 +401,10 @@ def _within_range(region: VisibleRegion) -> Region:
 
     def contains(points: Array) -> NDArray[np.bool_]:
         d = points - (x, y)
-        near = np.einsum("ij,ij->i", d, d) <= region.range ** 2
+        near = np.flatnonzero(np.einsum("ij,ij->i", d, d) <= region.range ** 2)
         out = np.zeros(len(points), bool)
-        if near.any():
-            out[near] = region.contains(points[near])
+        if len(near):
+            out[near] = region.contains(np.take(points, near, axis=0))  # np.take: a boolean row gather is slower
         return out
 
     return contains

@@ -67,6 +67,8 @@ __all__ = ["FrameBeliefs", "FrameModel", "Terms"]
 
 Array = NDArray[np.float64]
 Index = NDArray[np.intp]
+Change = tuple[Index, Array, Index, Array]
+"""Particles gone and come in an update: the frame of each and where it was (gone) or is (come)."""
 
 
 @dataclass(frozen=True)
@@ -148,6 +150,11 @@ class FrameBeliefs:
     last_ess: Array = field(default_factory=lambda: np.zeros(0))
     cell: Index = field(default_factory=lambda: np.zeros((0, 0), np.intp))
     """The free cell of each particle (an index into the map's free cells)."""
+    _moved: tuple[Array, Index, NDArray[np.bool_], int] | None = None
+    """What :attr:`change` is read from: the particles before the last update, each new particle's
+    ancestor among them and the fresh draws (a column), which new particles are copies, how many were carried."""
+    _seen: tuple[Terms, Index | None] | None = None
+    """The terms and the kernel's row versions γ was last evaluated with."""
 
     @classmethod
     def start(cls, m: Map, noise: Sequence[float], particles: int, terms: Terms, kernel: KernelSums,
@@ -160,11 +167,35 @@ class FrameBeliefs:
         beliefs.cell = np.zeros((F, particles), np.intp)
         if F:
             beliefs._resample_move(*beliefs._fresh(terms, kernel, sources, particles, rng), terms, kernel, rng)
+            beliefs._moved = None  # drawn afresh: nothing to compare with
         return beliefs
 
     @property
     def particles(self) -> int:
         return int(self.X.shape[1])
+
+    @property
+    def change(self) -> Change | None:
+        """What the last update changed: the particles gone (carried ones no draw chose) and come (every other
+        new particle: fresh draws and copies, moved or not), each with its frame; the first draw of a
+        carried particle is that particle, where it was. None before the first update."""
+        if self._moved is None:
+            return None
+        before, ancestor, copies, carried = self._moved
+        F, width = ancestor.shape[0], before.shape[1]
+        chosen = np.zeros(F * width, bool)
+        chosen[(ancestor + np.arange(F)[:, None] * width).ravel()] = True
+        gone_f, gone_k = np.nonzero(~chosen.reshape(F, width)[:, :carried])
+        come_f, come_k = np.nonzero(copies | (ancestor >= carried))
+        return (gone_f, np.take(before.reshape(-1, 2), gone_f * width + gone_k, axis=0),
+                come_f, np.take(self.X.reshape(-1, 2), come_f * self.particles + come_k, axis=0))
+
+    def changed(self) -> Index | None:
+        """How many particles of each frame the last update changed (gone plus come), None before the first."""
+        if self._moved is None:
+            return None
+        _, ancestor, copies, carried = self._moved
+        return np.asarray(2 * (copies | (ancestor >= carried)).sum(axis=1))
 
     def ess(self) -> Array:
         """The effective sample size of the last reweighting (before it was resampled), in particles kept.
@@ -188,14 +219,34 @@ class FrameBeliefs:
         F, P = self.W.shape
         if F == 0:
             return
-        gamma = self.gamma_at(terms, kernel, self.X, free=self.cell >= 0)
+        gamma = self._gamma_now(terms, kernel)
         ratio = np.divide(gamma, self.gamma, out=np.zeros((F, P)), where=self.gamma > 0)
         X, cells, fresh_gamma, fresh_weights = self._fresh(terms, kernel, sources,
                                                            max(1, int(round(self.model.fresh_share * P))), rng)
         self._resample_move(np.concatenate([self.X, X], axis=1), np.concatenate([self.cell, cells], axis=1),
                             np.concatenate([gamma, fresh_gamma], axis=1),
                             np.concatenate([self.Z[:, None] * self.W * P * ratio, fresh_weights], axis=1),
-                            terms, kernel, rng)
+                            terms, kernel, rng, carried=P)
+
+    def _gamma_now(self, terms: Terms, kernel: KernelSums) -> Array:
+        """γ of the current target at every particle. A frame without context whose sources' K are all as
+        they were at the last update (the same relations, no row of them set or reweighted since) has the
+        same γ where its particles are: it is kept, not evaluated again (the same numbers, bit for bit)."""
+        versions = kernel.versions()
+        seen, self._seen = self._seen, (terms, versions)
+        if versions is None or seen is None or seen[0] is not terms or seen[1] is None:
+            return self.gamma_at(terms, kernel, self.X, free=self.cell >= 0)
+        sources = terms.measurement[0]
+        changed = versions != seen[1]
+        stale = terms.has_context | ((sources >= 0) & changed[np.maximum(sources, 0)]).any(axis=1)
+        rows = np.flatnonzero(stale)
+        if len(rows) == len(stale):
+            return self.gamma_at(terms, kernel, self.X, free=self.cell >= 0)
+        gamma = self.gamma.copy()
+        if len(rows):
+            gamma[rows] = self.gamma_at(terms, kernel, np.take(self.X, rows, axis=0), rows,
+                                        free=np.take(self.cell, rows, axis=0) >= 0)
+        return gamma
 
     def _fresh(self, terms: Terms, kernel: KernelSums, sources: tuple[Array, Array], n: int,
                rng: np.random.Generator) -> tuple[Array, Index, Array, Array]:
@@ -216,10 +267,13 @@ class FrameBeliefs:
         return np.where(g > 0, gamma / np.where(g > 0, g, 1.0), 0.0)
 
     def _resample_move(self, X: Array, cells: Index, gamma: Array, weights: Array, terms: Terms,
-                       kernel: KernelSums, rng: np.random.Generator) -> None:
-        """Keep P of the weighted particles by systematic resampling in cell order, then move the copies."""
+                       kernel: KernelSums, rng: np.random.Generator, carried: int = 0) -> None:
+        """Keep P of the weighted particles by systematic resampling in cell order, then move the copies.
+
+        The first ``carried`` of each row are the particles of the previous update (each weighing 1/P):
+        :attr:`change` then tells which of them are gone and which particles are new."""
         F, P = self.W.shape
-        weights[~(np.isfinite(weights) & (weights > 0))] = 0.0
+        np.copyto(weights, 0.0, where=~((weights > 0) & (weights < np.inf)))  # no NaN, infinite or negative weight
         self.Z = np.maximum(weights.mean(axis=1), np.finfo(float).tiny)
         W = normalise(weights)
         width = W.shape[1]
@@ -227,7 +281,7 @@ class FrameBeliefs:
         listed = (cell_order.order_of_cells(self.map, cells) + np.arange(F)[:, None] * width).ravel()  # flat indices
         chosen = systematic(W.ravel()[listed].reshape(F, width), rng, P)
         ancestors = listed[chosen + np.arange(F)[:, None] * width]
-        self.X = X.reshape(-1, 2)[ancestors]
+        self.X = np.take(X.reshape(-1, 2), ancestors, axis=0)  # np.take: a row gather ``[ancestors]`` is ~10× slower
         self.cell = cells.ravel()[ancestors]
         self.gamma = gamma.ravel()[ancestors]
         self.W = np.full((F, P), 1.0 / P)
@@ -235,18 +289,22 @@ class FrameBeliefs:
         copies[:, 1:] = chosen[:, 1:] == chosen[:, :-1]  # the draws are sorted: a copy follows its original
         f, k = np.nonzero(copies)
         self._move(f, k, terms, kernel, rng)
+        self._moved = (X, ancestors - np.arange(F)[:, None] * width, copies, carried) if carried else None
 
     def _move(self, f: Index, k: Index, terms: Terms, kernel: KernelSums, rng: np.random.Generator) -> None:
         """Move particles ``k`` of frames ``f`` by the prediction potential, each move accepted by a
         Metropolis–Hastings test against γ (so the belief stays what it is)."""
         if len(f) == 0:
             return
-        proposal = self.X[f, k] + rng.standard_normal((len(f), 2)) * self.noise[f, None]
+        flat = f * self.particles + k
+        X = self.X.reshape(-1, 2)
+        proposal = np.take(X, flat, axis=0) + rng.standard_normal((len(f), 2)) * self.noise[f, None]
         moved = self.map.free_index(proposal).astype(np.intp)
         proposed = self.gamma_at(terms, kernel, proposal[:, None], f, free=moved[:, None] >= 0)[:, 0]
-        accept = rng.random(len(f)) * self.gamma[f, k] < proposed
-        f, k = f[accept], k[accept]
-        self.X[f, k], self.cell[f, k], self.gamma[f, k] = proposal[accept], moved[accept], proposed[accept]
+        accept = np.flatnonzero(rng.random(len(f)) * np.take(self.gamma, flat) < proposed)
+        flat = flat[accept]
+        X[flat] = np.take(proposal, accept, axis=0)
+        self.cell.reshape(-1)[flat], self.gamma.reshape(-1)[flat] = moved[accept], proposed[accept]
 
     @property
     def free_area(self) -> float:
@@ -261,9 +319,11 @@ class FrameBeliefs:
         sources, beliefs = terms.measurement
         measurement = kernel.combine(sources[rows], beliefs[rows], X)
         context = np.zeros_like(measurement)
-        some = terms.has_context[rows]
-        if some.any():
+        live = np.flatnonzero(terms.has_context[rows])
+        if len(live):
             sources, beliefs = terms.context
+            # a run of rows is read and written through a slice (no copies)
+            some = slice(live[0], live[-1] + 1) if live[-1] - live[0] + 1 == len(live) else live
             at = rows[some]
             context[some] = kernel.combine(sources[at], beliefs[at], X[some])
         return measurement, context
@@ -274,10 +334,15 @@ class FrameBeliefs:
         rows = np.arange(terms.frames) if frames is None else frames
         total = terms.belief_total[rows, None]
         floor = self.model.floor_share * total * 2 * np.pi * self.sigma ** 2 / self.free_area
-        meas = np.where(total > 0, measurement.astype(float) + floor, 1.0)
+        meas = measurement.astype(float) + floor
+        if not (total > 0).all():
+            meas = np.where(total > 0, meas, 1.0)
+        has = terms.has_context[rows, None]
+        if not has.any():
+            return np.asarray(meas)
         c0 = max(self.model.context_floor, 1e-12)
-        ctx = np.where(terms.has_context[rows, None], c0 + context, 1.0)
-        return np.asarray(meas * ctx)
+        meas *= np.where(has, c0 + context, 1.0)
+        return np.asarray(meas)
 
     def gamma_at(self, terms: Terms, kernel: KernelSums, X: Array, frames: Index | None = None,
                  free: NDArray[np.bool_] | None = None) -> Array:
@@ -300,8 +365,8 @@ class FrameBeliefs:
         uniform = np.arange(n)[None, :] < n_uniform[:, None]
         X = np.zeros((F, n, 2))
         count = int(uniform.sum())
-        if count:
-            X[uniform] = self.map.sample_free(rng, count)
+        if count:  # uniform over free space (``Map.sample_free``, without listing every free cell)
+            X[uniform] = self.map.jitter_in_cells(rng, rng.integers(0, len(self.map.free_centres), size=count))
         if count < F * n:
             X[~uniform] = self._near_elements(terms, sources, n - n_uniform, rng)
         return X
@@ -323,7 +388,7 @@ class FrameBeliefs:
         cdf = (cdf / cdf[:, -1:] + np.arange(S)[:, None]).ravel()
         points = row + (rank + rng.random(len(order))[owner]) / np.maximum(per_term[owner], 1)
         particle = np.clip(np.searchsorted(cdf, points, side="right") - row * P, 0, P - 1)
-        drawn = positions[row, particle]
+        drawn = np.take(positions.reshape(-1, 2), row * P + particle, axis=0)
         return np.asarray(drawn + rng.normal(0.0, self.sigma, drawn.shape))
 
 

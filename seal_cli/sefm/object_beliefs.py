@@ -210,12 +210,15 @@ class ObjectBeliefs:
         self._place_on_detections(detected, seen, rng)
         new_view = self.views.first_look(pose, hidden)
         L = self._likelihood(rows, contains if new_view else None, seen, hidden)
-        raw = self.W[rows] * L
+        raw = np.take(self.W, rows, axis=0) * L
         total = raw.sum(axis=1)
         W = normalise(raw)
         low = ess(W) < self.model.resample_below * self.particles
-        windowed = ~low & ~np.isin(rows, detected)  # the rows whose particles stay where they are
-        reweighted = _changes(rows[windowed], self.W[rows[windowed]], L[windowed], total[windowed])
+        is_detected = np.zeros(len(self.sources), bool)
+        is_detected[detected] = True
+        windowed = ~low & ~is_detected[rows]  # the rows whose particles stay where they are
+        kept = np.flatnonzero(windowed)
+        reweighted = _changes(rows[kept], np.take(self.W, rows[kept], axis=0), np.take(L, kept, axis=0), total[kept])
         self.W[rows] = W
         self._resample(rows[low], rng)
         return Update(tuple(sorted({*detected, *(int(r) for r in rows[low])})), reweighted)
@@ -243,7 +246,7 @@ class ObjectBeliefs:
     def _likelihood(self, rows: NDArray[np.intp], contains: Region | None, seen: dict[str, Array],
                     hidden: Hidden) -> Array:
         """L of the module docstring at the rows' particles; ``contains`` None: a view already used (v = 0)."""
-        X = self.X[rows]
+        X = np.take(self.X, rows, axis=0)
         p = min(self.model.p_detect, self.model.max_p_detect)
         L = np.ones(X.shape[:2])
         if contains is not None:
@@ -281,9 +284,10 @@ class ObjectBeliefs:
     def _sort(self, rows: NDArray[np.intp]) -> None:
         """Keep the rows in cell order (:mod:`seal_cli.sefm.cell_order`), so that systematic resampling keeps each
         room's share, and each patch's."""
-        order = cell_order.order_of_points(self.map, self.X[rows])
-        self.X[rows] = np.take_along_axis(self.X[rows], order[..., None], axis=1)
-        self.W[rows] = np.take_along_axis(self.W[rows], order, axis=1)
+        P = self.particles
+        order = (cell_order.order_of_points(self.map, np.take(self.X, rows, axis=0)) + (rows * P)[:, None]).ravel()
+        self.X[rows] = np.take(self.X.reshape(-1, 2), order, axis=0).reshape(len(rows), P, 2)
+        self.W[rows] = np.take(self.W, order).reshape(len(rows), P)
 
     def _inside(self, X: Array) -> Array:
         xmin, ymin, xmax, ymax = self.map.bounds
@@ -294,12 +298,11 @@ def _changes(rows: NDArray[np.intp], W: Array, L: Array,
              total: Array) -> tuple[tuple[int, NDArray[np.intp], Array, float], ...]:
     """Each row's reweighting as :attr:`Update.reweighted`: the particles whose weight changed (L ≠ 1),
     their increments W·(L − 1) before normalising, and the normaliser."""
-    out = []
-    for k, row in enumerate(rows):
-        changed = np.flatnonzero(L[k] != 1.0)
-        if len(changed):
-            out.append((int(row), changed, W[k, changed] * (L[k, changed] - 1.0), float(total[k])))
-    return tuple(out)
+    k, index = np.nonzero(L != 1.0)  # row by row, each row's particles in order
+    delta = W[k, index] * (L[k, index] - 1.0)
+    start = np.searchsorted(k, np.arange(len(rows) + 1))
+    return tuple((int(rows[r]), index[a:b], delta[a:b], float(total[r]))
+                 for r, (a, b) in enumerate(zip(start[:-1].tolist(), start[1:].tolist(), strict=True)) if b > a)
 
 
 def _by_class(detections: Iterable[tuple[str, tuple[float, float]]]) -> dict[str, Array]:

@@ -50,6 +50,8 @@ Array = NDArray[np.float64]
 Index = NDArray[np.intp]
 Change = tuple[int, Index, Array, Array, float]
 """``(row, particle indices, their positions, weight increments before normalising, the normaliser)``."""
+Moved = tuple[Index, Array, Array]
+"""Particles put in or taken out of rows: ``(row of each, positions (m, 2), weights (m,))``."""
 
 
 class KernelSums(ABC):
@@ -61,6 +63,16 @@ class KernelSums(ABC):
     def set(self, rows: Sequence[int], positions: Array, weights: Array) -> None:
         """Rows ``rows`` now hold these particle sets: ``positions`` (R, P, 2), normalised ``weights`` (R, P)."""
 
+    def move(self, rows: Sequence[int], positions: Array, weights: Array, gone: Moved, come: Moved) -> None:
+        """Rows ``rows`` now hold these particle sets, which differ from what they held by the particles
+        ``gone`` and ``come`` (each ``(row, positions (m, 2), weights (m,))``). By default: :meth:`set`."""
+        self.set(rows, positions, weights)
+
+    def takes_moves(self, rows: Sequence[int], changed: int) -> bool:
+        """Whether :meth:`move` would use the particles that changed (``changed`` of them in all) rather
+        than set the rows afresh: if not, there is no need to list them."""
+        return False
+
     @abstractmethod
     def reweight(self, changes: Sequence[Change]) -> None:
         """For each change ``(row, index, positions, delta, total)``: the weights of particles ``index``
@@ -70,6 +82,10 @@ class KernelSums(ABC):
     def combine(self, sources: Index, weights: Array, points: Array) -> Array:
         """``out[r, q] = Σ_s weights[r, s] · K_{sources[r, s]}(points[r, q])`` for points (R, Q, 2) and
         sources, weights (R, S); a source of −1 is no term. Shape (R, Q)."""
+
+    def versions(self) -> Index | None:
+        """A number per row that changes whenever the row's K does (None: not kept, so any row may have)."""
+        return None
 
     def sample(self, which: Index, points: Array, rows: Index | None = None) -> Array:
         """``out[t, q] = K_{which[t]}(points[t, q])`` for points (T, Q, 2): shape (T, Q). With ``rows``
@@ -125,6 +141,10 @@ class ExactKernelSums(KernelSums):
 
 SET_CHUNK = 16
 """Rows binned and smoothed together when a grid engine's rows are set."""
+STAMP_COST = 3.0
+"""What adding one cell of a particle's stamp costs, in cells of a whole-grid smoothing (measured)."""
+RESET_AFTER = 16
+"""Moves a row takes by stamps before it is set afresh (float32 sums drift, if only by ~1e-7 a move)."""
 
 
 class GridKernelSums(KernelSums):
@@ -157,6 +177,9 @@ class GridKernelSums(KernelSums):
         """How far (cells) the filter reaches."""
         self.factor = np.ones(count)
         """Each row's grid times its factor is its K (a reweighting divides the factor, not the grid)."""
+        self.moves = np.zeros(count, np.intp)
+        """Moves by stamps each row has taken since it was last set."""
+        self._versions = np.zeros(count, np.intp)
 
     def _cells(self, xy: Array) -> tuple[Index, Index, Array, Array]:
         """Lower-left cell indices and fractional offsets of points (clamped into the grid)."""
@@ -217,6 +240,53 @@ class GridKernelSums(KernelSums):
             chunk = rows[part]
             self.grids[chunk] = self._smooth(self._bin((len(chunk), *self.shape), i, j, fu, fv, weights[part]))
             self.factor[chunk] = 1.0
+            self.moves[chunk] = 0
+            self._versions[chunk] += 1
+
+    def versions(self) -> Index:
+        return self._versions.copy()
+
+    def move(self, rows: Sequence[int], positions: Array, weights: Array, gone: Moved, come: Moved) -> None:
+        """When the particles that changed are few against the grid's cells (a large map), each one's
+        smoothed mass — its *stamp*, the filter's taps around its four binning corners: ``2·radius + 2``
+        cells a side — is taken out of (gone) or added to (come) its row's grid; otherwise, and every
+        ``RESET_AFTER`` moves, the rows are set afresh. K is linear in the particles, so both give the same
+        grids (to float32 rounding)."""
+        rows = list(rows)
+        if not self.takes_moves(rows, len(gone[0]) + len(come[0])):
+            self.set(rows, positions, weights)
+            return
+        self._stamp(np.concatenate([gone[0], come[0]]), np.concatenate([gone[1], come[1]]),
+                    np.concatenate([-np.asarray(gone[2], float), np.asarray(come[2], float)]))
+        self.moves[rows] += 1
+        self._versions[rows] += 1
+
+    def takes_moves(self, rows: Sequence[int], changed: int) -> bool:
+        side = 2 * self.radius + 2
+        rows = list(rows)
+        return bool(rows) and changed * side * side * STAMP_COST <= len(rows) * self.shape[0] * self.shape[1] \
+            and int(self.moves[rows].max()) < RESET_AFTER
+
+    def _stamp(self, rows: Index, positions: Array, weights: Array) -> None:
+        """Add each particle's smoothed mass (weight ``weights[n]`` at ``positions[n]``) to row ``rows[n]``:
+        what binning it and smoothing the grid would add there."""
+        nx, ny = self.shape
+        r = self.radius
+        taps = _band(2 * r + 1, self.filter_sigma, self.truncate, self.grids.dtype.type)[r]  # k(t), t = −r … r
+        low, high = np.append(taps, 0), np.insert(taps, 0, 0)  # k(m − r) and k(m − r − 1), m = 0 … 2r + 1
+        i, j, fu, fv = self._cells(positions)
+        along_i = (1 - fu)[:, None] * low + fu[:, None] * high  # the corners i and i + 1 (shares 1 − fu, fu) filtered
+        along_j = (1 - fv)[:, None] * low + fv[:, None] * high
+        scale = self.scale * np.asarray(weights, float) / self.factor[rows]
+        stamp = (scale[:, None, None] * along_i[:, :, None] * along_j[:, None, :]).astype(self.grids.dtype)
+        offset = np.arange(2 * r + 2) - r
+        ci, cj = i[:, None] + offset, j[:, None] + offset
+        inside = ((ci >= 0) & (ci < nx))[:, :, None] & ((cj >= 0) & (cj < ny))[:, None, :]
+        cell = ((rows[:, None, None] * nx + ci[:, :, None]) * ny + cj[:, None, :])
+        if inside.all():
+            np.add.at(self.grids.reshape(-1), cell.ravel(), stamp.ravel())
+        else:
+            np.add.at(self.grids.reshape(-1), cell[inside], stamp[inside])
 
     def reweight(self, changes: Sequence[Change]) -> None:
         """All the changes' particles are binned into windows of one size around them (one filter for all);
@@ -240,8 +310,10 @@ class GridKernelSums(KernelSums):
             smooth = self._smooth(mass)
             for k, row in enumerate(rows):
                 self.grids[row, corner_i[k]:corner_i[k] + span_i, corner_j[k]:corner_j[k] + span_j] += smooth[k]
-        for row, _, _, _, total in changes:
-            self.factor[row] /= total
+        if changes:
+            rows = np.array([c[0] for c in changes], np.intp)
+            self.factor[rows] /= np.array([c[4] for c in changes], float)
+            self._versions[rows] += 1
 
     def combine(self, sources: Index, weights: Array, points: Array) -> Array:
         """Bilinear reads of the sources' grids at the points, one term (a column of ``sources``) at a time."""
@@ -257,20 +329,19 @@ class GridKernelSums(KernelSums):
         out = np.zeros(base.shape, dtype)
         for s in range(sources.shape[1]):
             live = np.flatnonzero(sources[:, s] >= 0)
-            every = len(live) == len(base)
-            at = base if every else base[live]
-            corner = at + (sources[live, s] * (nx * ny))[:, None]
+            if len(live) == 0:
+                continue
+            # the rows holding a term: a run of rows (a slice, no copies) when they are consecutive
+            at: slice | Index = slice(live[0], live[-1] + 1) if live[-1] - live[0] + 1 == len(live) else live
+            corner = base[at] + (sources[at, s] * (nx * ny))[:, None]
             a, b = np.take(flat, corner), np.take(right, corner)
             c, d = np.take(up, corner), np.take(both, corner)
-            u, v = (fu, fv) if every else (fu[live], fv[live])
+            u, v = fu[at], fv[at]
             a += (b - a) * u                    # along x at the lower row of cells
             c += (d - c) * u                    # ... and at the upper row
             a += (c - a) * v                    # along y
-            a *= coef[live, s, None]
-            if every:
-                out += a
-            else:
-                out[live] += a
+            a *= coef[at, s, None]
+            out[at] += a
         return out
 
 
@@ -294,6 +365,22 @@ class SplitKernelSums(KernelSums):
             self.low.set([int(r) for r in index[below]], positions[below], weights[below])
         if (~below).any():
             self.high.set([int(r) - self.split for r in index[~below]], positions[~below], weights[~below])
+
+    def takes_moves(self, rows: Sequence[int], changed: int) -> bool:
+        index = np.asarray(list(rows), np.intp)
+        return not (index < self.split).any() and self.high.takes_moves([int(r) - self.split for r in index], changed)
+
+    def move(self, rows: Sequence[int], positions: Array, weights: Array, gone: Moved, come: Moved) -> None:
+        index = np.asarray(list(rows), np.intp)
+        if (index < self.split).any() or (gone[0] < self.split).any() or (come[0] < self.split).any():
+            self.set(rows, positions, weights)  # the low rows take no moves: set them all
+            return
+        self.high.move([int(r) - self.split for r in index], positions, weights,
+                       (gone[0] - self.split, gone[1], gone[2]), (come[0] - self.split, come[1], come[2]))
+
+    def versions(self) -> Index | None:
+        low, high = self.low.versions(), self.high.versions()
+        return None if low is None or high is None else np.concatenate([low, high])
 
     def reweight(self, changes: Sequence[Change]) -> None:
         self.low.reweight([c for c in changes if c[0] < self.split])

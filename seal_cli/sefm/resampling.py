@@ -40,14 +40,20 @@ def systematic(weights: NDArray[np.float64], rng: np.random.Generator, count: in
     cumulative = np.cumsum(weights, axis=1)
     total = cumulative[:, -1:]
     good = np.isfinite(total) & (total > 0)
-    cumulative = np.where(good, cumulative * (count / np.where(good, total, 1.0)),
-                          np.arange(1, size + 1) * (count / size))
+    if good.all():  # (in place: these passes over every particle are most of the work)
+        cumulative *= count / total
+    else:
+        cumulative = np.where(good, cumulative * (count / np.where(good, total, 1.0)),
+                              np.arange(1, size + 1) * (count / size))
     cumulative[:, -1] = count  # exactly: rounding must not make count + 1 draws
-    u = rng.random((rows, 1))
-    drawn_below = np.ceil(cumulative - u).astype(np.intp)  # draws at or below each particle's upper edge
-    copies = np.diff(drawn_below, axis=1, prepend=0)
+    cumulative -= rng.random((rows, 1))
+    drawn_below = np.ceil(cumulative, out=cumulative).astype(np.intp)  # draws at or below each particle's upper edge
+    copies = np.empty_like(drawn_below)
+    copies[:, 0] = drawn_below[:, 0]
+    np.subtract(drawn_below[:, 1:], drawn_below[:, :-1], out=copies[:, 1:])
     ancestors = np.repeat(np.arange(rows * size), copies.ravel()).reshape(rows, count)
-    return np.asarray(ancestors - np.arange(rows)[:, None] * size)
+    ancestors -= np.arange(rows)[:, None] * size
+    return ancestors
 
 
 def grouped_systematic(weights: NDArray[np.float64], group: NDArray[np.intp], counts: NDArray[np.intp],

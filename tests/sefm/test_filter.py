@@ -454,3 +454,26 @@ def test_public_queries_agree_with_the_summaries() -> None:
     cups = sefm.object_density("cup", points)
     assert cups[rooms == names.index("kitchen")].sum() < 0.05 * cups.sum()
     assert [(x, y) for x, y, _ in sefm.hidden_places()] == [tuple(p.at) for p in m.places if p.openable]
+
+
+def test_on_a_large_floor_the_context_follows_the_frames_by_their_changes(library: Library) -> None:
+    """On a 60 m × 40 m floor the context rows are stamped with what each update changed rather than
+    smoothed over the whole grid again: after some updates they hold what setting them afresh gives."""
+    from seal_cli.bench.perf import building
+    from seal_cli.sefm.potentials import GridKernelSums, SplitKernelSums
+
+    m = building(np.random.default_rng(1), classes=4, columns=12, rows=8)
+    things = sorted(m.priors)
+    bindings = [library.frame("Pick").bind({"theme": things[0]}),
+                library.frame("Stir").bind({"theme": things[1], "instrument": things[0]})]
+    state = State.of(robot_facts(None), library.taxonomy)
+    rng = np.random.default_rng(2)
+    sefm = SeFM(m, bindings, state, rng, SeFMConfig(particles=200))
+    for pose in [(2.5, 2.5, 0.0), (5.0, 2.5, 0.0), (7.5, 2.5, 0.0)]:
+        sefm.update(pose, simulate_detections(m, pose, sefm.open_places(), rng), state)
+    assert isinstance(sefm.kernel, SplitKernelSums) and isinstance(sefm.kernel.high, GridKernelSums)
+    high, row = sefm.kernel.high, 0                    # Pick's row among the frames: Stir's context
+    assert high.moves[row] == 3
+    fresh = GridKernelSums(2, m.bounds, sefm.config.sigma, cell=sefm.config.sigma)
+    fresh.set([row], sefm.frames.X[[row]], sefm.frames.W[[row]])
+    np.testing.assert_allclose(high.grids[row], fresh.grids[row], atol=1e-6 * fresh.grids[row].max())

@@ -46,3 +46,61 @@ def test_the_same_seed_gives_the_same_frame_beliefs() -> None:
         runs.append((sefm.frames.X.copy(), sefm.frames.W.copy()))
     assert np.array_equal(runs[0][0], runs[1][0]) and np.array_equal(runs[0][1], runs[1][1])
     assert runs[0][0].shape == (2, 40, 2) and pytest.approx(runs[0][1].sum(axis=1)) == [1.0, 1.0]
+
+
+def _multiset(points: np.ndarray) -> list[tuple[float, float]]:
+    return sorted(map(tuple, points.tolist()))
+
+
+def test_an_update_says_which_particles_went_and_which_came() -> None:
+    """Before − gone + come is after, particle for particle, in every frame (what a kernel that follows the
+    beliefs by their differences relies on); nothing is said after the first draw."""
+    apartment = load_map("apartment")
+    sefm = localise(apartment, ["stir the cup"], rng=np.random.default_rng(3), config=SeFMConfig(particles=120))
+    assert sefm.frames.change is None
+    for pose, seen in [((5.0, -3.0, 0.0), [("spoon", (8.3, -4.1))]), ((0.0, 2.5, 0.0), [])]:
+        before = sefm.frames.X.copy()
+        sefm.update(pose, seen)
+        assert sefm.frames.change is not None
+        gone_f, gone_x, come_f, come_x = sefm.frames.change
+        assert 0 < len(come_f) < 2 * 120 * len(before)
+        for i in range(len(before)):
+            kept = _multiset(before[i])
+            for x in gone_x[gone_f == i].tolist():
+                kept.remove(tuple(x))                   # each gone particle was there
+            assert sorted(kept + _multiset(come_x[come_f == i])) == _multiset(sefm.frames.X[i])
+
+
+def test_frames_whose_sources_did_not_change_keep_their_gamma_bit_for_bit(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A frame without context whose sources' grids are as they were keeps its γ rather than evaluating it
+    again: the beliefs are the very same as when every frame is evaluated at every update."""
+    from seal_cli.sefm.frame_beliefs import FrameBeliefs
+    from seal_cli.sefm.potentials import SplitKernelSums
+
+    apartment = load_map("apartment")
+    texts = ["pick up the apple", "grasp the spoon", "stir the cup"]
+    looks = [((0.0, 2.5, 0.0), [("apple", (0.2, 3.6))]), ((0.0, 2.6, 0.0), []), ((-6.0, -3.0, 0.0), []),
+             ((-6.0, -3.0, 0.0), [])]
+    evaluated: list[int] = []
+    gamma_at = FrameBeliefs.gamma_at
+
+    def counted(self: FrameBeliefs, *args: object, **kwargs: object) -> np.ndarray:
+        points = np.asarray(args[2])
+        if points.shape[1] > 1:                          # the reweighting (a move asks about one point per copy)
+            evaluated.append(len(points))
+        return gamma_at(self, *args, **kwargs)  # type: ignore[arg-type]
+
+    runs = []
+    for versions in (True, False):
+        if not versions:
+            monkeypatch.setattr(SplitKernelSums, "versions", lambda self: None)
+        monkeypatch.setattr(FrameBeliefs, "gamma_at", counted)
+        evaluated.clear()
+        sefm = localise(apartment, texts, rng=np.random.default_rng(5), config=SeFMConfig(particles=60))
+        frames = len(sefm.bindings)
+        for pose, seen in looks:
+            sefm.update(pose, seen)
+        runs.append((sefm.frames.X.copy(), sefm.frames.gamma.copy(), list(evaluated), frames))
+    (X, gamma, kept, frames), (X_all, gamma_all, every, _) = runs
+    assert np.array_equal(X, X_all) and np.array_equal(gamma, gamma_all)
+    assert min(kept) < frames <= min(every)               # some update evaluated fewer frames than all

@@ -134,3 +134,47 @@ def test_the_grid_smoothing_is_the_gaussian_filter(banded: bool, monkeypatch: py
     want = ndimage.gaussian_filter(mass.astype(float), (0, grid.filter_sigma, grid.filter_sigma), mode="constant",
                                    truncate=grid.truncate) * grid.scale
     np.testing.assert_allclose(grid._smooth(mass), want, rtol=1e-5, atol=1e-5 * want.max())
+
+
+def test_moving_particles_by_stamps_equals_setting_again() -> None:
+    """On a large map, a few particles taken out and put in are stamped into the grid, not smoothed over
+    the whole of it; the grid is what setting the rows afresh gives (particles at the grid's very edges
+    too), and after ``RESET_AFTER`` moves the rows are set afresh."""
+    import seal_cli.sefm.potentials as potentials
+
+    rng = np.random.default_rng(8)
+    bounds, P = (0.0, 0.0, 60.0, 40.0), 400
+    X = rng.uniform(bounds[:2], bounds[2:], (2, P, 2))
+    X[0, :3] = [[0.0, 0.0], [60.0, 40.0], [-3.0, 45.0]]  # at the corners, and off the map (clamped)
+    W = np.full((2, P), 1.0 / P)
+    grid = GridKernelSums(2, bounds, 0.3, cell=0.3)
+    grid.set([0, 1], X, W)
+    for step in range(3):
+        k = rng.choice(P, 30, replace=False)
+        rows = np.repeat([0, 1], 30)
+        gone = X[rows, np.tile(k, 2)].copy()
+        X[rows, np.tile(k, 2)] = rng.uniform(bounds[:2], bounds[2:], (60, 2))
+        come = X[rows, np.tile(k, 2)]
+        grid.move([0, 1], X, W, (rows, gone, np.full(60, 1.0 / P)), (rows, come, np.full(60, 1.0 / P)))
+        assert grid.moves.tolist() == [step + 1] * 2
+    fresh = GridKernelSums(2, bounds, 0.3, cell=0.3)
+    fresh.set([0, 1], X, W)
+    np.testing.assert_allclose(grid.grids, fresh.grids, atol=1e-6 * fresh.grids.max())
+    grid.moves[:] = potentials.RESET_AFTER
+    grid.move([0, 1], X, W, (np.zeros(0, np.intp), np.zeros((0, 2)), np.zeros(0)),
+              (np.zeros(0, np.intp), np.zeros((0, 2)), np.zeros(0)))
+    assert grid.moves.tolist() == [0, 0] and np.array_equal(grid.grids, fresh.grids)
+
+
+def test_on_a_small_map_moving_particles_sets_the_rows_afresh() -> None:
+    """Where smoothing the whole grid costs less than the stamps, a move is a set: the same numbers, bit for bit."""
+    rng = np.random.default_rng(9)
+    X, W = clouds(rng, 1, 300)
+    grid, fresh = GridKernelSums(1, BOUNDS, 0.3, cell=0.3), GridKernelSums(1, BOUNDS, 0.3, cell=0.3)
+    grid.set([0], X, W)
+    moved = X.copy()
+    moved[0, :200] = rng.uniform(BOUNDS[:2], BOUNDS[2:], (200, 2))
+    rows = np.zeros(200, np.intp)
+    grid.move([0], moved, W, (rows, X[0, :200], W[0, :200]), (rows, moved[0, :200], W[0, :200]))
+    fresh.set([0], moved, W)
+    assert grid.moves.tolist() == [0] and np.array_equal(grid.grids, fresh.grids)

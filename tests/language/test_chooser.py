@@ -1,0 +1,57 @@
+"""The discriminative chooser: features, fitting, and the weights grounding then uses."""
+
+from __future__ import annotations
+
+import math
+
+from seal_cli.frames.reading import Library
+from seal_cli.language.chooser import Instance, features, fit, logits
+from seal_cli.language.grounding import Vocabulary
+from seal_cli.language.parser import parse_command
+from seal_cli.language.wordusage import WordUsage
+
+
+def test_features_are_the_other_words_and_the_modifiers_but_no_candidate_s_name() -> None:
+    said = features(("coffee", "cup"), {"put", "the", "coffee", "cup", "in", "pot", "machine"}, ("cup", "pot"))
+    assert said == ("w:in", "w:machine", "w:put", "w:the", "m:coffee")
+
+
+def _cups(n: int) -> list[Instance]:
+    """Cups said beside "coffee" are mugs, beside "sink" cups; priors even (log 1 each)."""
+    out = []
+    for k in range(n):
+        mug = k % 2 == 0
+        said = features(("cup",), {"put", "coffee" if mug else "sink"})
+        out.append(Instance(("cup", "mug"), (0.0, 0.0), int(mug), said))
+    return out
+
+
+def test_fit_learns_which_words_say_which_class() -> None:
+    weights = fit(_cups(40), l2=1.0)
+    z = logits(weights, ["cup", "mug"], features(("cup",), {"put", "coffee"}))
+    assert z["mug"] > z["cup"] + 2
+    z = logits(weights, ["cup", "mug"], features(("cup",), {"put", "sink"}))
+    assert z["cup"] > z["mug"] + 2
+    put = weights.get("w:put", {})                                # said with both: no evidence
+    assert abs(put.get("cup", 0.0) - put.get("mug", 0.0)) < 0.01
+    assert fit(_cups(40), l2=1.0) == weights                    # deterministic
+
+
+def test_a_stronger_penalty_keeps_weights_smaller_and_rare_pairs_get_none() -> None:
+    weak, strong = fit(_cups(40), l2=0.1), fit(_cups(40), l2=10.0)
+    assert abs(strong["w:coffee"]["mug"]) < abs(weak["w:coffee"]["mug"])
+    rare = [*_cups(10), Instance(("cup", "mug"), (0.0, 0.0), 0, ("w:once",))]
+    assert "w:once" not in fit(rare, min_count=2)
+    assert fit([Instance(("cup",), (0.0,), 0, ("w:a",))]) == {}   # one candidate: nothing to choose
+
+
+def test_the_weights_decide_against_the_counts_prior(library: Library) -> None:
+    usage = WordUsage({"cup": {"cup": 30, "mug": 20}}, frozenset({"cup", "mug", "coffee_machine", "sink"}),
+                      weights={"w:coffee": {"mug": 1.5, "cup": -0.5}})
+    vocab = Vocabulary.of(["Cup", "Mug", "CoffeeMachine", "Sink"]).with_usage(usage)
+    coffee = parse_command("put the cup in the coffee machine", library, vocab)
+    assert coffee.frames[-1].elements["theme"].cls == "Mug"          # 20 e^1.5 against 30 e^-0.5
+    sink = parse_command("put the cup in the sink", library, vocab)
+    assert sink.frames[-1].elements["theme"].cls == "Cup"
+    factor = usage.sentence_factor("cup", ("cup",), ["cup", "mug"], {"coffee"})
+    assert math.isclose(factor["mug"] / factor["cup"], math.exp(2.0))
