@@ -2,7 +2,8 @@
 
 A :class:`Case` is a command on one of the suite's maps (``apartment``: ``maps/apartment.yaml``;
 ``aws``: the AWS small house annotated with rooms, places, people and things by
-:func:`seal_cli.bench.houses.aws_house`), and what must come of it:
+:func:`seal_cli.bench.houses.aws_house`; any other map shipped in ``maps/``, such as ``cottage``; or a
+map file, by its path from the cases file), and what must come of it:
 
 - ``plan``: the steps ``seal plan --map`` must print (frames and their map ids, in order); or
   ``refused``: words the refusal must contain (a room the map lacks, a fixed thing to pick up);
@@ -43,6 +44,8 @@ class Case:
     refused: str | None = None
     run: str | None = None
     answer: str | None = None
+    file: str | None = None
+    """The map file, for a map that is not one of :data:`MAPS` (a shipped map, or a user's own)."""
 
     def __post_init__(self) -> None:
         if (self.plan is None) == (self.refused is None):
@@ -66,23 +69,50 @@ class Verdict:
     path_m: float = 0.0
 
 
+SHIPPED = ("e2e.yaml", "e2e_houses.yaml")
+"""The shipped suite's files in ``suites/``: the apartment and the AWS house; the example houses."""
+
+
 def load_cases(path: str | Path | None = None) -> list[Case]:
-    """The suite's cases (default: the shipped ``suites/e2e.yaml``)."""
+    """The cases of a suite file (default: the shipped suite, every file of :data:`SHIPPED`)."""
+    if path is None:
+        return [c for name in SHIPPED for c in load_cases(Path(__file__).parent / "suites" / name)]
+    return _load(Path(path))
+
+
+def _load(path: Path) -> list[Case]:
     from seal_cli.fileio import read_yaml
 
-    path = Path(path) if path is not None else Path(__file__).parent / "suites" / "e2e.yaml"
     data = read_yaml(path)
     entries = data.get("cases") if isinstance(data, dict) else None
     if not isinstance(entries, list):
         raise SealError("an end-to-end suite is a mapping with cases: [...]", Where(str(path)))
     cases = []
     for number, entry in enumerate(entries, 1):
-        if not isinstance(entry, dict) or not isinstance(entry.get("text"), str) or entry.get("map") not in MAPS:
-            raise SealError(f"case {number}: needs text and map (one of {', '.join(MAPS)})", Where(str(path)))
+        if not isinstance(entry, dict) or not isinstance(entry.get("text"), str) or not isinstance(
+                entry.get("map"), str):
+            raise SealError(f"case {number}: needs text and map (one of {', '.join(MAPS)}, a shipped map or a "
+                            "map file)", Where(str(path)))
         plan = entry.get("plan")
         cases.append(Case(entry["map"], entry["text"], tuple(plan) if plan is not None else None,
-                          entry.get("refused"), entry.get("run"), entry.get("answer")))
+                          entry.get("refused"), entry.get("run"), entry.get("answer"),
+                          _map_file(entry["map"], path.parent, number, path)))
     return cases
+
+
+def _map_file(name: str, base: Path, number: int, suite: Path) -> str | None:
+    """Where a case's map is: None for one of :data:`MAPS`; else a map file beside the cases file, or a
+    shipped map; a name that is neither is refused, naming the case."""
+    if name in MAPS:
+        return None
+    from seal_cli.resources import map_path
+
+    beside = base / name
+    found = beside if beside.is_file() else map_path(name)
+    if not found.is_file():
+        raise SealError(f"case {number}: no map {name!r} (the suite's maps are {', '.join(MAPS)}; a shipped map "
+                        "or a map file, relative to the cases file, also works)", Where(str(suite)))
+    return str(found.resolve())
 
 
 MAPS: dict[str, Callable[[Path, Path], Path]] = {
@@ -150,7 +180,7 @@ def run_cases(cases: Iterable[Case], data: Path, *, seed: int = 0, particles: in
     """Every case's verdict, in order; ``jobs`` worker processes."""
     cases = list(cases)
     with tempfile.TemporaryDirectory(prefix="seal-e2e-") as scratch:
-        files = {name: str(MAPS[name](Path(scratch), data)) for name in {c.map for c in cases}}
+        files = {c.map: c.file or str(MAPS[c.map](Path(scratch), data)) for c in cases}
         args = [(c, files[c.map], seed, particles, framelib) for c in cases]
         verdicts: list[Verdict] = []
         if jobs <= 1:

@@ -33,6 +33,8 @@ KIND_STYLE = {"warn": "yellow", "plan": "bold", "frame": "bold cyan", "search": 
 
 
 def _narrate(record: Any) -> None:
+    if record.data.get("detail"):      # a survey's drives and looks: in --json and the recording, not said
+        return
     style = KIND_STYLE.get(record.kind, "")
     where = f"[dim]({record.pose[0]:.2f}, {record.pose[1]:.2f}) {record.path_m:6.2f} m[/dim]"
     text = record.text.replace("[", r"\[")
@@ -128,7 +130,8 @@ def run(
                    "steps": result.steps, "plan": result.plan, "executed": result.executed,
                    "answer": result.answer, "warnings": result.warnings, "why": result.why.value,
                    "records": [{"kind": r.kind, "text": r.text, "step": r.step, "path_m": round(r.path_m, 3),
-                                "pose": [round(v, 3) for v in r.pose]} for r in result.records]})
+                                "pose": [round(v, 3) for v in r.pose], **({"detail": True} if r.data.get("detail")
+                                                                          else {})} for r in result.records]})
     else:
         if result.answer:
             out.print(f"[bold]answer:[/bold] {result.answer}", markup=True)
@@ -298,7 +301,7 @@ def _table(report: dict[str, Any], names: list[str]) -> None:
 
 @command("e2e", on=bench_app)
 def e2e(
-    map_name: str | None = typer.Option(None, "--map", help="Only this map's cases (apartment or aws).",
+    map_name: str | None = typer.Option(None, "--map", help="Only this map's cases (apartment, aws, cottage, ...).",
                                         show_default=False),
     limit: int | None = typer.Option(None, "--limit", min=1, help="At most this many cases per map.",
                                      show_default=False),
@@ -317,12 +320,14 @@ def e2e(
     runs end as they must."""
     from rich.table import Table
 
-    from seal_cli.bench.e2e import MAPS, load_cases, run_cases, summarise
+    from seal_cli.bench.e2e import load_cases, run_cases, summarise
     from seal_cli.errors import SealError
 
-    if map_name is not None and map_name not in MAPS:
-        raise SealError(f"unknown map {map_name!r} for --map; the suite's maps are {', '.join(MAPS)}")
-    cases = [c for c in load_cases(file) if map_name is None or c.map == map_name]
+    cases = load_cases(file)
+    names = list(dict.fromkeys(c.map for c in cases))
+    if map_name is not None and map_name not in names:
+        raise SealError(f"unknown map {map_name!r} for --map; the suite's maps are {', '.join(names)}")
+    cases = [c for c in cases if map_name is None or c.map == map_name]
     if limit is not None:
         by_map: dict[str, list[Any]] = {}
         for case in cases:

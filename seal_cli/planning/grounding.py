@@ -39,7 +39,10 @@ from seal_cli.frames.taxonomy import Taxonomy, class_key, class_words
 from seal_cli.language.lexicon import noun_lemma
 from seal_cli.maps.model import SPEAKER, Map
 
-__all__ = ["FIXED", "HERE", "ROOM_WORDS", "SPEAKER_WORDS", "MapNames", "Referent", "Refusal", "spoken"]
+__all__ = ["FIXED", "HERE", "ROOM_WORDS", "SPEAKER_WORDS", "MapNames", "Referent", "Refusal", "kind_of", "spoken"]
+
+OBJECT = "object"
+"""The library category of what the robot handles (the theme of Pick, Bring, Place)."""
 
 FIXED = "fixed"
 """The library category of what never moves: furniture, appliances, fixtures and rooms."""
@@ -139,9 +142,9 @@ class MapNames:
         return next((r for r in self.referents if r.id == class_key(id_)), None)
 
     @staticmethod
-    def _score(referent: Referent, words: tuple[str, ...]) -> int:
+    def _score(referent: Referent, words: tuple[str, ...], prefix: bool = True) -> int:
         """How surely the words call the referent: 2 + the length of a name they end with, 1 for
-        a head word alone, 0 for nothing."""
+        a head word alone (or, with ``prefix``, the first words of a compound name), 0 for nothing."""
         best = 0
         for name in referent.names:
             said = len(name) <= len(words) and words[len(words) - len(name):] == name
@@ -149,16 +152,16 @@ class MapNames:
                 best = max(best, 2 + len(name))
         if not best and words and words[-1] in referent.heads:
             best = 1
-        if not best and words and any(len(name) > len(words) and name[:len(words)] == words
+        if not best and prefix and words and any(len(name) > len(words) and name[:len(words)] == words
                                       for name in referent.names[:3]):
             best = 1            # "the tv": the tv stand (what a compound name is for stands on it)
         return best
 
-    def candidates(self, words: tuple[str, ...], kinds: Iterable[str] = ("room", "place", "person")
-                   ) -> list[Referent]:
-        """The referents the words call best, in the map's order."""
+    def candidates(self, words: tuple[str, ...], kinds: Iterable[str] = ("room", "place", "person"),
+                   prefix: bool = True) -> list[Referent]:
+        """The referents the words call best, in the map's order (``prefix``: see :meth:`_score`)."""
         kinds = set(kinds)
-        scored = [(self._score(r, words), r) for r in self.referents if r.kind in kinds]
+        scored = [(self._score(r, words, prefix), r) for r in self.referents if r.kind in kinds]
         top = max((s for s, _ in scored), default=0)
         return [r for s, r in scored if s == top and s > 0]
 
@@ -169,7 +172,7 @@ class MapNames:
         if not words:
             return None
         thing, where = _split(words)
-        found = self.candidates(thing, kinds)
+        found = self.candidates(thing, kinds, prefix=element_type != OBJECT)   # "a coffee" is no coffee machine
         if not found:
             return None
         if where and (room := self._room_of_words(where)) is not None:
@@ -179,7 +182,7 @@ class MapNames:
                 others = ", ".join(f"{r.id} ({r.room or 'in no room'})" for r in found)
                 raise Refusal(f"the {self.map.name} has no {what} in the {there}; it has {others}")
             found = inside
-        typed = [r for r in found if r.kind != "place" or self.taxonomy.is_a(r.cls, element_type) is not False
+        typed = [r for r in found if r.kind != "place" or kind_of(self.taxonomy, r.cls, element_type) is not False
                  or (element_type == "openable" and self._openable(r.id))]
         if element_type == "openable":
             typed = [r for r in typed if r.kind == "place" and self._openable(r.id)] or typed
@@ -209,7 +212,7 @@ class MapNames:
         names = [cls] if cls else []
         if thing:
             names += ["_".join(thing), thing[-1]]
-        return any(self.taxonomy.is_a(n, FIXED) is True for n in names if n)
+        return any(kind_of(self.taxonomy, n, FIXED) is True for n in names if n)
 
     def refusal(self, text: str, cls: str | None) -> Refusal | None:
         """Why a phrase cannot be grounded on this map, when it names a room or fixed thing the map
@@ -230,6 +233,17 @@ class MapNames:
 
     def names_of_kind(self, kind: str) -> Sequence[str]:
         return [r.id for r in self.referents if r.kind == kind]
+
+
+def kind_of(taxonomy: Taxonomy, cls: str, category: str) -> bool | None:
+    """Whether a class is of a category, as the library's taxonomy says; for a compound class the
+    taxonomy does not list, as its head (the last word) is: a ``bunk_bed`` is a bed (furniture: it
+    does not switch on), a ``chest_freezer`` a freezer, a ``filing_cabinet`` a cabinet."""
+    known = taxonomy.is_a(cls, category)
+    words = class_words(cls)
+    if known is None and len(words) > 1:
+        return taxonomy.is_a(words[-1], category)
+    return known
 
 
 def is_room_word(words: Sequence[str]) -> bool:

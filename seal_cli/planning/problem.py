@@ -46,7 +46,7 @@ from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding, Fact, Frame
 from seal_cli.frames.taxonomy import Taxonomy, check_class_name, class_key, class_words
 from seal_cli.maps.model import SPEAKER
-from seal_cli.planning.grounding import FIXED, is_room_word
+from seal_cli.planning.grounding import FIXED, is_room_word, kind_of, words_of
 from seal_cli.planning.state import State, robot_facts
 
 OPENABLE = "openable"
@@ -237,12 +237,14 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
 
 def _names(phrase: Phrase, cls: str, things: Things) -> bool:
     """Whether the phrase's words name the class: its own words or one of its synonyms' ("the couch": a
-    sofa), rather than a class a learned table guesses people meant ("the bowl": a cup)."""
+    sofa), rather than a class a learned table guesses people meant ("the bowl": a cup). A name of
+    several words is named by its head, the last ("the bottle": a water bottle; "a coffee" is no
+    coffee machine)."""
     from seal_cli.language.lexicon import noun_lemma
 
     said = {noun_lemma(w) for w in class_words(phrase.text or phrase.head)} | {phrase.head}
     names = [cls, *things.taxonomy.names.get(class_key(cls), ()), *things.synonyms.get(class_key(cls), ())]
-    return any(set(map(noun_lemma, class_words(n))) & said for n in names)
+    return any(noun_lemma(class_words(n)[-1]) in said for n in names if class_words(n))
 
 
 def _on_map(phrase: Phrase, things: Things, text: str, category: str) -> tuple[str, ...] | None:
@@ -302,7 +304,7 @@ def _check_types(frame: Frame, values: Mapping[str, tuple[str, ...]], phrases: M
             if element.type == OPENABLE and name in things.closable:
                 continue
             cls = things.class_of(name)
-            if element.type == OBJECT and (name in things.fixed or things.taxonomy.is_a(cls, FIXED) is True
+            if element.type == OBJECT and (name in things.fixed or kind_of(things.taxonomy, cls, FIXED) is True
                                            or is_room_word(class_words(cls))):
                 phrase = phrases.get(role)
                 where = "fixed in the map" if name in things.fixed else \
@@ -312,12 +314,12 @@ def _check_types(frame: Frame, values: Mapping[str, tuple[str, ...]], phrases: M
                                f"{_said(phrase, name)} is {where}" + (f" (the library's {frame.name}: {what})"
                                                                       if what else ""), phrase, text)
             held = any(f.predicate == "holding" and f.args == (role,) and not f.negated for f in frame.preconditions)
-            if held and (name in things.fixed or things.taxonomy.is_a(cls, FIXED) is True):
+            if held and (name in things.fixed or kind_of(things.taxonomy, cls, FIXED) is True):
                 phrase = phrases.get(role)
                 raise _located(f"{frame.name} needs to hold its {role}, and {_said(phrase, name)} is "
                                f"{'fixed in the map' if name in things.fixed else 'fixed: it never moves'}",
                                phrase, text)
-            if things.taxonomy.is_a(things.class_of(name), element.type) is False:
+            if kind_of(things.taxonomy, cls, element.type) is False:
                 phrase = phrases.get(role)
                 raise _located(f"{frame.name} needs its {role} to be {element.type}, and "
                                f"{_said(phrase, name)} is not", phrase, text)
@@ -364,6 +366,8 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
     earlier: list[dict[str, tuple[str, ...]]] = []
     bindings: list[Binding] = []
     for evoked in parse.frames:
+        if _in_a_name(evoked, parse, things):
+            continue
         frame = library.frame(evoked.frame)
         values = {role: _values(phrase, earlier, things, parse.text, frame.element(role).type)
                   for role, phrase in evoked.elements.items()}
@@ -389,6 +393,31 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         for combination in itertools.product(*(values[r] for r in roles)):
             bindings.append(frame.bind(dict(zip(roles, combination, strict=True))))
     return bindings
+
+
+def _in_a_name(evoked: Evoked, parse: Parse, things: Things) -> bool:
+    """Whether a frame was evoked by a word of a map thing's name, said inside another frame's
+    element ("go to the *open* office" on a map with an ``open_office``): the word names the room,
+    it asks for nothing to be opened."""
+    if things.names is None:
+        return False
+    unit = words_of(evoked.lexical_unit)
+    for other in parse.frames:
+        for phrase in other.elements.values() if other is not evoked else ():
+            span, text = phrase.span, phrase.text
+            if span is None or text is None or not (span[0] <= evoked.span[0] and evoked.span[1] <= span[1]):
+                continue
+            try:
+                referent = things.names.ground(text, "thing", ("room", "place"))
+            except SealError:
+                continue
+            if referent is not None and any(_contains(name, unit) for name in referent.names):
+                return True
+    return False
+
+
+def _contains(words: tuple[str, ...], part: tuple[str, ...]) -> bool:
+    return bool(part) and any(words[i:i + len(part)] == part for i in range(len(words) - len(part) + 1))
 
 
 def build_problem(parse: Parse, library: Library, *, holding: str | None = None, done: Iterable[Parse] = (),

@@ -27,6 +27,7 @@ What happened is reported to observers (``observe=callable(Record)``) and kept i
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -39,7 +40,7 @@ from seal_cli.frames.library import Library
 from seal_cli.frames.model import Action, Binding, Fact
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.model import SPEAKER, Map
-from seal_cli.planning.grounding import spoken
+from seal_cli.planning.grounding import kind_of, spoken
 from seal_cli.planning.questions import Question
 from seal_cli.planning.state import State
 from seal_cli.sim.navigation import Cell, Grid
@@ -174,6 +175,10 @@ class Agent:
         self.answers: list[str] = []
         """What the robot found out for a question (Find: where; Count: how many)."""
         self.sweep: Any = None
+        """What is left of the whole-house search (rooms, then the rest of the house); None before it."""
+        self.swept: list[tuple[str, Outcome]] = []
+        self.detail = False
+        """Whether what the robot does now is a detail of a line already said (a survey's drives and looks)."""
         """The whole-house search for what no prior or detector knows of, started when needed."""
         self.questions: dict[Binding, Question] = dict(questions or {})
         """What each commanded frame asks (:mod:`seal_cli.planning.questions`); a Find, Count or Tell
@@ -202,6 +207,8 @@ class Agent:
     # -- records -----------------------------------------------------------------------------
 
     def say(self, kind: str, text: str, **data: Any) -> None:
+        if self.detail and kind in DETAIL_KINDS:
+            data["detail"] = True       # a step of a survey said a line for: kept, not narrated
         robot = self.world.robot
         record = Record(kind, text, self.world.step, robot.path_m, robot.pose, data)
         self.records.append(record)
@@ -487,8 +494,15 @@ class Agent:
         return None
 
     def go_to(self, value: str, binding: Binding) -> Outcome:
-        """``navigate(value)``: find an instance (searching while none is known), drive within reach of it."""
+        """``navigate(value)``: find an instance (searching while none is known), drive within reach of
+        it; a room the robot is in already needs no drive (unless a thing is to be put down there:
+        then to a surface in it)."""
         role = next((r for r, v in binding.values if v == value), None)
+        room = self.room(value)
+        puts = any(a.name == "place" and role in a.args for a in binding.frame.actions)   # onto a surface there
+        if room is not None and not puts and bool(room.contains([self.world.robot.pose[:2]])[0]):
+            self.say("go", f"is in the {spoken(value)} already", to=self.world.robot.pose[:2], metres=0.0)
+            return Outcome(True, f"in {value}")
         while True:
             target = self.resolve(value, binding, role)
             if target is not None:
@@ -552,27 +566,82 @@ class Agent:
         return item is not None and item.key == PERSON
 
     def sweep_once(self, value: str, binding: Binding) -> Outcome | None:
-        """One look of the whole-house search for a kind of thing nothing tells the robot where to
-        look for (no prior, no class its perception knows): the nearest part of the house not yet
-        seen, or a closed receptacle not yet opened (the ``sweeper``'s policy),
-        within the run's budget. An Outcome when the house has been searched."""
+        """One room of the whole-house search for a kind of thing nothing tells the robot where to
+        look for (no prior, no class its perception knows): the nearest room not yet looked over
+        (by the drive to it), surveyed with next-best views and into its closed receptacles
+        (:meth:`survey`), then the rest of the house outside every room the same way, within the
+        run's budget. One line a room; the drives and looks of the survey are details. An Outcome
+        once the house has been searched."""
         if self.sweep is None:
-            assert self.sweeper is not None
-            self.sweep = self.sweeper()
-            self.sweep.begin(self)
-            for pose in self.looks:
-                self.sweep.seen |= self.world.sensor.visible(pose, self.sweep.lattice)
-        view = self.sweep.next_view(self, binding, value)
-        if view is None:
-            return Fatal(False, f"searched the whole house: no {self.said(value)}", Reason.NOT_FOUND, value)
-        self.say("search", f"searches the whole house for {self.said(value)}: {view.why}", target=value,
-                 view=view.cell)
-        self.drive_to(view.cell, "goes to look")
-        self.world.face(view.look_at)
-        if view.open is not None:
-            self.open_to_look(view.open)
-        self.look()
+            self.sweep = [*self.room_tour(self.scene.map.rooms), _Rest(self.scene.map.rooms)]
+            self.swept = []
+        if not self.sweep:
+            return Fatal(False, self._swept_house(value), Reason.NOT_FOUND, value)
+        region = self.sweep.pop(0)
+        if not np.isfinite(self._drive_into(region, self.distances())):
+            return None
+        self.say("search", f"searches the whole house for {self.said(value)}: looks all over the "
+                 f"{region.name.replace('_', ' ')}", target=value, room=region.name)
+        self.detail = True
+        try:
+            looked = self.survey(region, peek=True)
+        finally:
+            self.detail = False
+        self.swept.append((region.name.replace("_", " "), looked))
+        if looked.reason is Reason.BUDGET:
+            return Fatal(False, looked.message, Reason.BUDGET)
         return None
+
+    def _drive_into(self, region: Any, field_: np.ndarray) -> float:
+        """Metres to the nearest free cell of a region (inf when none can be reached)."""
+        cells, points = self.grid.free_cells, self.grid.free_points
+        inside = np.asarray(region.contains(points), dtype=bool)
+        costs = field_[cells[inside, 0], cells[inside, 1]]
+        return float(costs.min()) if len(costs) else math.inf
+
+    def room_tour(self, rooms: Sequence[Any]) -> list[Any]:
+        """The rooms in the order that drives least from where the robot is to each room's middle
+        (its free cell nearest its centroid) in turn: every order when there are at most
+        :data:`TOUR_EXACT` rooms, else the nearest room next. Rooms it cannot drive into go last."""
+        cells, points = self.grid.free_cells, self.grid.free_points
+        middles: list[Cell] = []
+        for room in rooms:
+            inside = np.flatnonzero(np.asarray(room.contains(points), dtype=bool))
+            if not len(inside):
+                middles.append(self.robot_cell())
+                continue
+            k = inside[int(np.argmin(np.hypot(*(points[inside] - np.asarray(room.centroid)).T)))]
+            middles.append((int(cells[k, 0]), int(cells[k, 1])))
+        start = self.distances()
+        fields = [self.grid.distances(c) for c in middles]
+        first = np.array([start[c] for c in middles])
+        between = np.array([[f[c] for c in middles] for f in fields])
+        reachable = [i for i in range(len(rooms)) if np.isfinite(first[i])]
+        if len(reachable) <= TOUR_EXACT:
+            order = min(itertools.permutations(reachable), default=(), key=lambda o: first[o[0]] + sum(
+                between[a, b] for a, b in itertools.pairwise(o)))
+        else:
+            order, left = (), set(reachable)
+            while left:
+                here = first if not order else between[order[-1]]
+                order += (min(left, key=lambda i: here[i]),)
+                left.discard(order[-1])
+        return [rooms[i] for i in order] + [r for i, r in enumerate(rooms) if i not in order]
+
+    def _swept_house(self, value: str) -> str:
+        """The one sentence that ends a whole-house search that found nothing."""
+        rooms = [name for name, _ in self.swept if name != _Rest.name]
+        partly = [name for name, looked in self.swept if not looked.ok]
+        opened = sorted(self.opened)
+        said = f"searched the whole house: no {self.said(value)}"
+        detail = []
+        if rooms:
+            detail.append(f"looked all over {len(rooms)} room{'' if len(rooms) == 1 else 's'}")
+        if opened:
+            detail.append(f"into {', '.join(opened)}")
+        if partly:
+            detail.append(f"could not see all of {', '.join(partly)}")
+        return f"{said} ({'; '.join(detail)})" if detail else said
 
     def said(self, value: str) -> str:
         """A value as a person would say it: its class, with spaces (``apple_2``: apple)."""
@@ -597,7 +666,8 @@ class Agent:
                 return Fatal(False, stop, Reason.BUDGET)
             if (ended := self.look_once(value, binding)) is not None:
                 if ended.reason is Reason.NOT_FOUND:
-                    self.answer(f"no {self.said(value)} found: {ended.message}")
+                    self.answer(ended.message if ended.message.startswith("searched the whole house") else
+                                f"no {self.said(value)} found: {ended.message}")
                 return ended
         target = self.resolve(value, binding, role)
         if target is not None and target in self.known and not self.in_view(target):
@@ -701,7 +771,8 @@ class Agent:
         self.opened.add(place)
         self.look()
         closed = self.world.act("close", place)
-        self.say("act" if closed.ok else "fail", closed.message, action="close", args=[place])
+        self.say("act" if closed.ok else "fail", closed.message, action="close", args=[place],
+                 **({"detail": True} if self.detail and closed.ok else {}))
         return Outcome(True, f"looked into {place}")
 
     def answer(self, text: str) -> None:
@@ -715,7 +786,11 @@ class Agent:
         did instead of the world's own words (the answer it gives, not the message's name)."""
         outcome = self.world.act(name, *(a if self.is_person(a) else self.class_of(a) for a in args))
         text = said if said is not None and outcome.ok else outcome.message
-        self.say("act" if outcome.ok else "fail", text, action=name, args=list(args))
+        again = text in {r.text for r in self.records[-3:]} or any(text.endswith(f": {a}") for a in self.answers) \
+            or name == "search" and outcome.ok and bool(self.answers)     # the answer said where it is
+        # "sees spoon_1" said by the look just now, "says: <the answer>": kept, not narrated twice
+        self.say("act" if outcome.ok else "fail", text, action=name, args=list(args),
+                 **({"detail": True} if again else {}))
         return outcome
 
     def answer_what(self, question: Question, binding: Binding) -> Outcome:
@@ -839,8 +914,6 @@ class Agent:
                 new.append(d.id)
             self.known[d.id] = self._known(item)
         self.policy.observe(self, detections)
-        if self.sweep is not None:
-            self.sweep.observe(self, detections)
         if new:
             self.say("see", f"sees {', '.join(new)}", seen=new)
         elif not quiet:
@@ -938,43 +1011,46 @@ class Agent:
         into each closed receptacle in it not yet looked into. Ok when there was nothing more to
         see; else why it stopped."""
         assert self.sweeper is not None
+        limit = SURVEY_VIEWS if views is None else views
         sweep = self.sweeper()
         sweep.begin(self)
         from scipy.spatial import cKDTree
 
         near, _ = cKDTree(self.grid.free_points).query(sweep.lattice, distance_upper_bound=SURVEY_NEAR)
-        inside = room.contains(sweep.lattice) & np.isfinite(near)   # where things stand: beside free space
-        sweep.seen |= ~inside
+        points = sweep.lattice[room.contains(sweep.lattice) & np.isfinite(near)]   # where things stand
+        seen = np.zeros(len(points), dtype=bool)
         for pose in self.looks:
-            sweep.seen |= self.world.sensor.visible(pose, sweep.lattice)
+            seen |= self.world.sensor.visible(pose, points)
         cells = self.grid.free_cells
+        field_ = self.distances()
+        candidates, sees = self._views(room, points, field_[cells[:, 0], cells[:, 1]])
+        seeable = seen | sees.any(axis=0)
         name = room.name.replace("_", " ")
 
         def share() -> float:
-            return float(sweep.seen[inside].mean()) if inside.any() else 1.0
+            return float(seen[seeable].mean()) if seeable.any() else 1.0
 
-        limit = SURVEY_VIEWS if views is None else views
         ended = Outcome(False, f"it saw {100 * share():.0f} % of it in {limit} views")
         for _ in range(limit):
             if (stop := self.exhausted()) is not None:
                 return Outcome(False, f"{stop}; it saw {100 * share():.0f} % of it", Reason.BUDGET)
-            field_ = self.distances()
-            costs = field_[cells[:, 0], cells[:, 1]]
             if share() >= SURVEY_SHARE:
                 ended = Outcome(True, "looked all over it")
                 break
-            best = self._best_view(room, sweep.lattice[inside & ~sweep.seen], costs)
+            field_ = self.distances()
+            best = self._best_view(candidates, sees, points, ~seen & seeable, field_[cells[:, 0], cells[:, 1]])
             if best is None:        # what is left, no view in the room sees enough of
-                seen = share() >= SURVEY_SEEABLE
-                ended = Outcome(seen, "looked all over it" if seen else
+                ok = share() >= SURVEY_SEEABLE
+                ended = Outcome(ok, "looked all over it" if ok else
                                 f"it saw {100 * share():.0f} % of it: no place it can drive to sees the rest")
                 break
             k, goal = best
             self.say("search", f"looks all over the {name}", target=room.name)
+            before = len(self.looks)
             self.drive_to((int(cells[k, 0]), int(cells[k, 1])), "goes to look")
-            self.world.face(goal)
-            self.look()
-            sweep.seen |= self.world.sensor.visible(self.world.robot.pose, sweep.lattice)
+            self.look_round(goal)
+            for pose in self.looks[before:]:
+                seen |= self.world.sensor.visible(pose, points)
         else:
             ended = Outcome(share() >= SURVEY_SHARE, f"it saw {100 * share():.0f} % of it in {limit} views")
         if not peek:
@@ -999,31 +1075,55 @@ class Agent:
                 ended = peeked
         return ended
 
-    def _best_view(self, room: Any, unseen: np.ndarray, costs: np.ndarray
-                   ) -> tuple[int, tuple[float, float]] | None:
-        """The next view to look all over a room from (next best view): among the free cells of the
-        room about a metre apart, the one that sees the most of what is unseen of it per metre
-        driven (plus :data:`VIEW_COST` for the look); None when no view there sees enough
-        (:data:`VIEW_GAIN` of the room's points, at least 3) to be worth the drive."""
-        if len(unseen) < 3:
-            return None
-        cells, points = self.grid.free_cells, self.grid.free_points
+    def _views(self, room: Any, points: np.ndarray, costs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Where a room can be looked over from: its free cells about a metre apart that the robot
+        can drive to, and which of the points each sees all round (in range and in line of sight;
+        a robot with a narrower field of view turns on the spot to look round, :meth:`look_round`)."""
+        cells, free = self.grid.free_cells, self.grid.free_points
         stride = max(1, round(1.0 / self.grid.resolution))
-        here = self.robot_cell()
         pick = np.flatnonzero((cells[:, 0] % stride == 0) & (cells[:, 1] % stride == 0) & np.isfinite(costs)
-                              & ~((cells[:, 0] == here[0]) & (cells[:, 1] == here[1])) & room.contains(points))
-        best: tuple[float, int, int] | None = None
-        for k in pick:
-            x, y = points[k]
-            seen = np.flatnonzero(np.asarray(self.world.sensor.visible((x, y, 0.0), unseen), dtype=bool))
-            if len(seen) < 3:
-                continue
-            score = len(seen) / (float(costs[k]) + VIEW_COST)
-            if best is None or score > best[0]:
-                best = (score, int(k), int(seen[0]))
-        if best is None:
+                              & np.asarray(room.contains(free), dtype=bool))
+        sensor = self.world.sensor
+        sees = np.zeros((len(pick), len(points)), dtype=bool)
+        for row, k in enumerate(pick):
+            near = np.flatnonzero(np.hypot(*(points - free[k]).T) <= sensor.range)
+            if len(near):
+                sees[row, near] = sensor.line_of_sight(free[k], points[near])
+        return pick, sees
+
+    def _best_view(self, candidates: np.ndarray, sees: np.ndarray, points: np.ndarray, unseen: np.ndarray,
+                   costs: np.ndarray) -> tuple[int, tuple[float, float]] | None:
+        """The next view to look all over a room from (next best view): the candidate view that
+        sees the most of what is still unseen per metre driven (plus :data:`VIEW_COST` for the
+        look), with the point to face, the middle of what it will see; None when no view sees 3 of
+        the unseen points. ``unseen`` holds only points some view can see, so the survey never
+        drives to chase what no place in the room shows (the inside of a sofa on a laser map)."""
+        here = self.robot_cell()
+        cells = self.grid.free_cells
+        away = ~((cells[candidates, 0] == here[0]) & (cells[candidates, 1] == here[1]))
+        gains = (sees & unseen).sum(axis=1)
+        useful = np.flatnonzero(away & (gains >= 3))
+        if not len(useful):
             return None
-        return best[1], (float(unseen[best[2]][0]), float(unseen[best[2]][1]))
+        j = int(max(useful, key=lambda c: gains[c] / (float(costs[candidates[c]]) + VIEW_COST)))
+        seen = points[sees[j] & unseen]
+        centre = seen.mean(axis=0)
+        look = seen[int(np.argmin(np.hypot(*(seen - centre).T)))]
+        return int(candidates[j]), (float(look[0]), float(look[1]))
+
+    def look_round(self, goal: tuple[float, float]) -> None:
+        """Face a point and look; a sensor that does not see all round then turns on the spot and
+        looks again until it has looked all round (turning costs no path)."""
+        self.world.face(goal)
+        self.look()
+        fov = self.world.sensor.spec.fov_deg
+        if fov >= 360:
+            return
+        x, y, yaw = self.world.robot.pose
+        for turn in range(1, math.ceil(360 / fov)):
+            heading = yaw + math.radians(fov) * turn
+            self.world.face((x + math.cos(heading), y + math.sin(heading)))
+            self.look(quiet=True)
 
     def _after(self, name: str, args: list[str], binding: Binding) -> None:
         """Keep the robot's own knowledge in step with what it just did."""
@@ -1080,6 +1180,12 @@ WORDS = frozenset({"search", "count", "say", "answer"})
 GO_FIRST = {"approach": 0, "follow": 0}
 """Primitives the robot drives for first: up to the person (approach, follow)."""
 
+TOUR_EXACT = 7
+"""Up to this many rooms, the whole-house search tries every order of them (7! = 5,040)."""
+
+DETAIL_KINDS = frozenset({"go", "look", "search"})
+"""The kinds of record that are details of a survey's line (not narrated, kept in the records)."""
+
 SURVEY_VIEWS = 30
 """At most this many views to look all over a room (Count, "is there ... in the kitchen?")."""
 
@@ -1104,6 +1210,23 @@ STAND_TRIES = 400
 """Stand cells tried, nearest first, for one that no wall cuts off from the thing."""
 
 
+class _Rest:
+    """The part of the house outside every room (all of it, on a map without rooms): what the
+    whole-house search looks over after the rooms."""
+
+    name = "rest of the house"
+
+    def __init__(self, rooms: Sequence[Any]) -> None:
+        self.rooms = tuple(rooms)
+
+    def contains(self, points: Any) -> np.ndarray:
+        points = np.asarray(points, dtype=float).reshape(-1, 2)
+        inside = np.zeros(len(points), dtype=bool)
+        for room in self.rooms:
+            inside |= np.asarray(room.contains(points), dtype=bool)
+        return ~inside
+
+
 class Fatal(Outcome):
     """A failure that replanning cannot mend (the search is exhausted, the budget spent)."""
 
@@ -1119,7 +1242,8 @@ def default_planner(commanded: Sequence[Binding], library: Library, state: State
 def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Scene:
     """A world built from a seal map's places, ground-truth objects and people (the speaker, "me",
     stands at ``speaker.at`` or where the robot starts), on its free space. A place's ``reach`` is
-    how far the robot can act on it and on what is in or on it."""
+    how far the robot can act on it and on what is in or on it. A place switches on and off unless
+    the library knows its class does not (a table; a dryer nobody lists does, as the planner allows)."""
     from scipy.ndimage import binary_erosion
 
     from seal_cli.sensing.model import RangeSensor
@@ -1127,7 +1251,7 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
 
     taxonomy = library.taxonomy
     items = [Item(p.name, p.cls, p.at, movable=False, receptacle=True, openable=p.openable,
-                  toggleable=taxonomy.is_a(p.cls, "toggleable") is True, reach=p.reach) for p in m.places]
+                  toggleable=kind_of(taxonomy, p.cls, "toggleable") is not False, reach=p.reach) for p in m.places]
     for item, place in zip(items, m.places, strict=True):
         if place.openable and place.open:
             item.states.add("open")

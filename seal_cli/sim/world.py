@@ -515,7 +515,7 @@ class World:
 
     def _do_approach(self, person: str) -> Outcome:
         why = self._person(person)
-        return why if why is not None else Outcome(True, f"is with {person}")
+        return why if why is not None else Outcome(True, f"is with {'the speaker' if person == 'me' else person}")
 
     def _do_hand_over(self, obj: str, person: str) -> Outcome:
         if self.robot.holding != obj:
@@ -547,10 +547,10 @@ class World:
         return why if why is not None else Outcome(True, f"greeted {person}")
 
     def _do_answer(self, question: str) -> Outcome:
-        return Outcome(True, f"answered {question!r}")
+        return Outcome(True, f"answered \"{question.replace('_', ' ')}\"")
 
     def _do_say(self, message: str) -> Outcome:
-        return Outcome(True, f"said {message!r}")
+        return Outcome(True, f"said \"{message.replace('_', ' ')}\"")     # the message's name, as words
 
 
 _TEXT_ARGS = {"search", "count", "say", "answer", "lead"}

@@ -123,7 +123,7 @@ def test_the_shipped_suite_is_large_and_its_plans_are_right(library: object) -> 
     from seal_cli.maps.formats.map_server import load_map
 
     cases = [c for c in load_cases() if c.map == "apartment"]
-    assert len(load_cases()) >= 100 and {c.map for c in load_cases()} == set(MAPS)
+    assert len(load_cases()) >= 100 and {c.map for c in load_cases()} == {*MAPS, "cottage", "office_floor"}
     the_map = load_map(Path(__file__).resolve().parents[2] / "maps" / "apartment.yaml")
     wrong = [(c.text, got) for c in cases for right, got in [plan_steps(c, the_map, library)] if not right]
     assert wrong == []
@@ -138,6 +138,54 @@ def test_the_aws_house_plans_are_right(library: object, shared_data: Path, tmp_p
     wrong = [(c.text, got) for c in load_cases() if c.map == "aws"
              for right, got in [plan_steps(c, the_map, library)] if not right]
     assert wrong == []
+
+
+def test_the_example_houses_plans_are_right(library: object) -> None:
+    from seal_cli.bench.e2e import load_cases, plan_steps
+    from seal_cli.maps.formats.map_server import load_map
+
+    cases = [c for c in load_cases() if c.map in ("cottage", "office_floor")]
+    assert len(cases) >= 60 and all(c.file is not None and Path(c.file).is_file() for c in cases)
+    maps = {c.map: load_map(c.file) for c in cases if c.file is not None}
+    wrong = [(c.text, got) for c in cases for right, got in [plan_steps(c, maps[c.map], library)] if not right]
+    assert wrong == []
+
+
+def test_bench_e2e_runs_cases_on_a_users_own_map_file(tmp_path: Path) -> None:
+    from seal_cli.resources import map_path
+
+    house = tmp_path / "houses" / "mine.yaml"
+    house.parent.mkdir()
+    house.write_text(map_path("cottage").read_text(encoding="utf-8").replace(
+        "image: cottage.pgm", f"image: {map_path('cottage').with_suffix('.pgm')}"), encoding="utf-8")
+    suite = tmp_path / "cases.yaml"
+    suite.write_text("cases:\n"
+                     "  - {map: houses/mine.yaml, text: go to the laundry room, plan: [Go(goal=laundry_room)], "
+                     "run: done}\n"
+                     "  - {map: office_floor, text: go to the garage, refused: has no garage}\n", encoding="utf-8")
+    result = runner.invoke(app, ["bench", "e2e", "--file", str(suite), "--jobs", "1", "--json", "--particles", "50"])
+    assert result.exit_code == 0, result.output
+    report = json.loads(result.stdout)
+    assert report["groups"]["houses/mine.yaml"]["run_completed"] == 1 and report["groups"]["office_floor"]["n"] == 1
+    assert report["groups"]["all"]["plan_right"] == 2 and report["misses"] == []
+    suite.write_text("cases:\n  - {map: attic.yaml, text: go to the attic, refused: no attic}\n", encoding="utf-8")
+    bad = runner.invoke(app, ["bench", "e2e", "--file", str(suite)])
+    assert bad.exit_code == 1 and "case 1: no map 'attic.yaml'" in bad.output and "Traceback" not in bad.output
+
+
+def test_a_whole_house_search_reads_as_one_line_a_room_and_ends_in_one_sentence() -> None:
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+
+    report = run_json("find my keys")
+    rooms = [r.name for r in load_map(map_path("apartment")).rooms]
+    said = [r for r in report["records"] if not r.get("detail")]     # what the narration prints
+    lines = [r["text"] for r in report["records"] if r["kind"] == "search"]
+    assert report["why"] == "not_found" and report["answer"].startswith(
+        "searched the whole house: no key (looked all over 5 rooms; into fridge_1, microwave_1)")
+    per_room = [t for t in lines if t.startswith("searches the whole house for key: looks all over the ")]
+    assert sorted(t.rsplit("the ", 1)[1].replace(" ", "_") for t in per_room) == sorted(rooms)   # each room once
+    assert len(said) < 40 and report["path_m"] < 60.0      # not the old 0.25 m frontier steps (~100 lines, 77 m)
 
 
 def truth(map_file: str | Path = "apartment") -> list[tuple[str, tuple[float, float], str | None]]:

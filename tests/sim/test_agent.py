@@ -57,8 +57,13 @@ def test_gives_up_when_the_thing_does_not_exist(library: Library) -> None:
     assert heard[-1].kind == "give_up"
     assert result.path_m == 0.0 and "cannot recognise" in result.reason   # no class of the scene: no search
     s, agent, result, heard = run(library, [("Pick", {"theme": "pineapple"})], search_unknown=True)
-    assert result.reason == "searched the whole house: no pineapple" and result.why.value == "not_found"
-    assert result.path_m > 0.0 and agent.sweep is not None and agent.sweep.seen.all()   # all of it, once
+    assert result.reason.startswith("searched the whole house: no pineapple (looked all over 1 room; into ")
+    assert result.why.value == "not_found" and result.path_m > 0.0
+    assert agent.swept and all(looked.ok for _, looked in agent.swept)     # every room, then the rest, all over
+    openable = {i.id for i in s.world.items.values() if i.openable}
+    assert openable and agent.opened == openable                          # and into every closed receptacle
+    narrated = [r for r in heard if not r.data.get("detail")]
+    assert sum(r.kind == "search" for r in narrated) == len(agent.swept)  # one line a room
     s = kitchen(library)
     s.vocabulary = ()                      # perception that knows every class: it searches, in vain
     blind = Agent(s, library, SeFMPolicy(particles=50), rng=np.random.default_rng(1)).run(

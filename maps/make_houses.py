@@ -1,0 +1,114 @@
+"""Draw the occupancy images of the example houses ``cottage.yaml`` and ``office_floor.yaml``
+(run once; the PGMs are committed next to this script).
+
+    python maps/make_houses.py          # rewrites maps/cottage.pgm and maps/office_floor.pgm
+
+Each house is a plan on paper, as a user would draw their own: the outer walls, the inner walls
+(centre lines, each with its doors as gaps), and the solid blocks a laser sees (a car, a server
+rack, a bookcase). Walls are 0.15 m thick. Furniture that things stand on (desks, tables, beds,
+benches) is left free: the robot sees over it. Pixel values follow ROS map_server: 0 occupied,
+254 free, 205 unknown (outside the house); row 0 is the highest y, the lower-left pixel sits at
+the house's ``origin``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+RESOLUTION = 0.05
+WALL = 0.15
+MARGIN = 1.0
+FREE, UNKNOWN, OCCUPIED = 254, 205, 0
+
+Segment = tuple[float, float, float, float]
+
+
+@dataclass(frozen=True)
+class House:
+    """A house on paper: its outline (xmin, ymin, xmax, ymax), its inner walls (each a centre line
+    with its door gaps along it) and its solid blocks (boxes)."""
+
+    name: str
+    outline: Segment
+    walls: tuple[tuple[Segment, tuple[tuple[float, float], ...]], ...]
+    blocks: tuple[Segment, ...] = ()
+
+    @property
+    def origin(self) -> tuple[float, float]:
+        return self.outline[0] - MARGIN, self.outline[1] - MARGIN
+
+
+COTTAGE = House(
+    "cottage", (0.0, 0.0, 14.0, 10.0),
+    walls=(
+        ((5.0, 0.0, 5.0, 10.0), ((2.0, 3.0), (7.0, 8.0))),     # garage | hallway, laundry room | hallway
+        ((0.0, 5.0, 5.0, 5.0), ()),                            # garage | laundry room
+        ((7.0, 0.0, 7.0, 10.0), ((2.0, 3.0), (6.5, 7.5))),     # hallway | bathroom, hallway | study
+        ((7.0, 5.0, 14.0, 5.0), ((12.0, 13.0),)),              # bathroom, guest room | study
+        ((10.0, 0.0, 10.0, 5.0), ()),                          # bathroom | guest room
+    ),
+    blocks=(
+        (1.0, 1.0, 2.8, 4.0),      # the car in the garage
+        (8.0, 9.6, 10.0, 9.925),   # the bookcase against the study's north wall
+    ),
+)
+
+OFFICE_FLOOR = House(
+    "office_floor", (0.0, 0.0, 16.0, 8.0),
+    walls=(
+        ((4.0, 0.0, 4.0, 8.0), ((3.4, 4.6),)),                  # reception | corridor
+        ((4.0, 3.0, 16.0, 3.0), ((6.0, 7.0), (10.0, 11.0), (13.5, 14.5))),  # corridor | break, server room, office
+        ((4.0, 5.0, 16.0, 5.0), ((5.0, 6.5), (13.0, 14.0))),   # corridor | open office, meeting room
+        ((11.0, 5.0, 11.0, 8.0), ()),                          # open office | meeting room
+        ((9.0, 0.0, 9.0, 3.0), ()),                            # break room | server room
+        ((12.0, 0.0, 12.0, 3.0), ()),                          # server room | office
+    ),
+    blocks=(
+        (9.3, 0.1, 10.0, 2.2),     # the server rack
+        (11.5, 0.1, 11.925, 1.5),  # a cupboard of the server room
+    ),
+)
+
+HOUSES = (COTTAGE, OFFICE_FLOOR)
+
+
+def draw(house: House) -> np.ndarray:
+    """The image as rows of pixels, row 0 the highest y."""
+    x0, y0, x1, y1 = house.outline
+    width = round((x1 - x0 + 2 * MARGIN) / RESOLUTION)
+    height = round((y1 - y0 + 2 * MARGIN) / RESOLUTION)
+    ox, oy = house.origin
+    xs = ox + (np.arange(width) + 0.5) * RESOLUTION
+    ys = oy + (np.arange(height)[::-1] + 0.5) * RESOLUTION  # row 0 at the top
+    x, y = np.meshgrid(xs, ys)
+    image = np.full((height, width), UNKNOWN, dtype=np.uint8)
+
+    def box(a: float, b: float, c: float, d: float) -> np.ndarray:
+        return (x >= min(a, c)) & (x <= max(a, c)) & (y >= min(b, d)) & (y <= max(b, d))
+
+    image[box(*house.outline)] = FREE
+    outer = ((x0, y0, x1, y0), ()), ((x0, y1, x1, y1), ()), ((x0, y0, x0, y1), ()), ((x1, y0, x1, y1), ())
+    half = WALL / 2
+    for (a, b, c, d), doors in (*outer, *house.walls):
+        solid = box(a - half, b - half, c + half, d + half)
+        along = x if b == d else y
+        for start, end in doors:
+            solid &= ~((along > start) & (along < end))
+        image[solid] = OCCUPIED
+    for block in house.blocks:
+        image[box(*block)] = OCCUPIED
+    return image
+
+
+def write_pgm(path: Path, image: np.ndarray) -> None:
+    height, width = image.shape
+    header = f"P5\n# {path.name}: drawn by make_houses.py, {RESOLUTION:.3f} m/pix\n{width} {height}\n255\n"
+    path.write_bytes(header.encode("ascii") + image.tobytes())
+
+
+if __name__ == "__main__":
+    for house in HOUSES:
+        write_pgm(Path(__file__).with_name(f"{house.name}.pgm"), draw(house))

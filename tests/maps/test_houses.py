@@ -1,0 +1,50 @@
+"""The example houses a user would draw (maps/cottage.yaml, maps/office_floor.yaml): their images
+are what make_houses.py draws, and they are clean, sensible maps."""
+
+from __future__ import annotations
+
+import importlib.util
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from seal_cli.maps.formats.map_server import load_map, read_pgm
+
+MAPS = Path(__file__).resolve().parents[2] / "maps"
+
+
+def make_houses():  # type: ignore[no-untyped-def]
+    spec = importlib.util.spec_from_file_location("make_houses", MAPS / "make_houses.py")
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    sys.modules.setdefault("make_houses", module)     # its dataclass looks itself up there
+    spec.loader.exec_module(module)
+    return module
+
+
+@pytest.mark.parametrize("name", ["cottage", "office_floor"])
+def test_the_committed_image_is_what_the_script_draws(name: str) -> None:
+    module = make_houses()
+    house = next(h for h in module.HOUSES if h.name == name)
+    drawn = module.draw(house)
+    assert np.array_equal(read_pgm((MAPS / f"{name}.pgm").read_bytes()), drawn.astype(float))
+
+
+@pytest.mark.parametrize("name", ["cottage", "office_floor"])
+def test_a_house_is_a_clean_map_whose_rooms_are_joined_by_doors(name: str) -> None:
+    from seal_cli.frames.reading import standard_library
+    from seal_cli.sim.agent import scene_from_map
+
+    m = load_map(MAPS / f"{name}.yaml")
+    assert m.problems() == [] and m.warnings == ()
+    scene = scene_from_map(m, standard_library())
+    reach = scene.grid.distances(scene.grid.cell(m.robot.xy))
+    for room in m.rooms:          # every room can be driven into from where the robot starts
+        inside = room.contains(scene.grid.free_points)
+        cells = scene.grid.free_cells[inside]
+        assert np.isfinite(reach[cells[:, 0], cells[:, 1]]).any(), room.name
+    for place in m.places:        # and every place is in a room, with the robot able to stand by it
+        assert place.room is not None, place.name
+    assert len({p.name for p in m.people}) >= 2 and any(len(r.name.split("_")) > 1 for r in m.rooms)

@@ -1,0 +1,49 @@
+"""Grounding on houses a user drew (maps/cottage.yaml, maps/office_floor.yaml): words of a map's
+names, compound classes by their head, and what a place can do."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from seal_cli.errors import SealError
+from seal_cli.frames.library import Library
+from seal_cli.maps.formats.map_server import load_map
+from seal_cli.pipeline import plan as plan_text
+from seal_cli.planning.grounding import kind_of
+
+MAPS = Path(__file__).resolve().parents[2] / "maps"
+
+
+def steps(text: str, library: Library, house: str) -> list[str]:
+    return [str(s) for s in plan_text(text, library, map=load_map(MAPS / f"{house}.yaml")).steps]
+
+
+def test_a_word_of_a_rooms_name_evokes_no_frame(library: Library) -> None:
+    assert steps("go to the open office", library, "office_floor") == ["Go(goal=open_office)"]
+    assert steps("open the filing cabinet and go to the open office", library, "office_floor") == [
+        "Open(theme=filing_cabinet_1)", "Go(goal=open_office)"]
+    assert steps("open the safe", library, "office_floor") == ["Open(theme=safe_1)"]       # a verb still is one
+    # without a map nothing names an open office: "open" there is the frame's result word, as before
+    assert [str(s).split("(")[0] for s in plan_text("go to the open office", library).steps] == ["Open", "Go"]
+
+
+def test_a_compound_class_is_of_the_kinds_of_its_head(library: Library) -> None:
+    taxonomy = library.taxonomy
+    assert taxonomy.is_a("bunk_bed", "furniture") is None and kind_of(taxonomy, "bunk_bed", "furniture") is True
+    assert kind_of(taxonomy, "bunk_bed", "toggleable") is False
+    assert kind_of(taxonomy, "chest_freezer", "fixed") is True and kind_of(taxonomy, "dryer", "toggleable") is None
+    with pytest.raises(SealError, match="ToggleOn needs its theme to be toggleable, and 'the bunk bed'"):
+        steps("turn on the bunk bed", library, "cottage")
+    with pytest.raises(SealError, match="chest_freezer_1.*is fixed in the map"):
+        steps("pick up the chest freezer", library, "cottage")
+    assert steps("turn on the dryer", library, "cottage") == ["ToggleOn(theme=dryer_1)"]   # nobody says it cannot
+
+
+def test_a_compound_name_is_called_by_its_head(library: Library) -> None:
+    assert steps("bring me the bottle", library, "office_floor")[-1] == "Bring(theme=water_bottle, recipient=me)"
+    coffee = plan_text("bring me a coffee", library, map=load_map(MAPS / "office_floor.yaml"))
+    assert [str(s) for s in coffee.steps] == ["Pick(theme=coffee)", "Bring(theme=coffee, recipient=me)"]
+    assert any("knows nothing of coffee" in w for w in coffee.warnings)       # no coffee machine to carry
+    assert steps("go to the coffee machine", library, "office_floor") == ["Go(goal=coffee_machine_1)"]
