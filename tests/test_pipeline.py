@@ -73,6 +73,17 @@ def test_localise_builds_sefm_over_the_plans_frames(apartment: Map) -> None:
     assert classes.bindings == () and set(classes.object_classes) >= {"spoon", "apple"}
 
 
+def test_run_on_map_warns_of_a_condition_it_cannot_check(library: Library, apartment: Map) -> None:
+    _, result = pipeline.run_on_map(apartment, "when the water boils, turn off the stove", library,
+                                    make_policy("oracle"), rng=np.random.default_rng(0))
+    assert result.completed and result.executed == ["ToggleOff(theme=stove_1)"]
+    assert result.warnings == ["ToggleOff ('turn off') is said with the condition 'when the water boils', which "
+                               "seal run cannot check: it carries the frame out now"]
+    _, plain = pipeline.run_on_map(apartment, "turn off the stove", library, make_policy("oracle"),
+                                   rng=np.random.default_rng(0))
+    assert plain.warnings == []
+
+
 def test_run_on_map_carries_out_the_command(library: Library, apartment: Map) -> None:
     agent, result = pipeline.run_on_map(apartment, "stir the cup", library, make_policy("oracle"),
                                         rng=np.random.default_rng(0))

@@ -89,6 +89,7 @@ def plain_tree(parsed: Parse) -> str | None:
         said += [frame.frame, frame.lexical_unit]
         for role, phrase in frame.elements.items():
             said += [role, phrase.head, phrase.cls or "", phrase.kind, phrase.text or ""]
+        said.append(frame.condition or "")
     if any(":" in text or not text.isprintable() or max(text, default=" ") >= "\u0300" for text in said):
         return None  # an emoji code, a tab or control character, a character maybe not one column wide
     root_label, frames = _outline(parsed, str, lambda style, text: text)
@@ -127,5 +128,7 @@ def _outline(parsed: Parse, escape: Callable[[str], str],
                 facts.append("default")
             said = escape(phrase.text) if phrase.text else tag("dim", "(unsaid)")
             elements.append(tag("yellow", role) + f": {said}  " + tag("dim", " · ".join(facts)))
+        if frame.condition:
+            elements.append(tag("yellow", "condition") + f": {escape(frame.condition)}")
         frames.append((label, elements))
     return tag("bold", escape(parsed.text)), frames

@@ -30,6 +30,12 @@ def test_parse_prints_a_tree_without_json() -> None:
         assert words in result.stdout
 
 
+def test_the_tree_shows_a_condition_on_the_world() -> None:
+    result = runner.invoke(app, ["parse", "when the water boils, turn off the stove"])
+    assert result.exit_code == 0, result.output
+    assert result.stdout.splitlines()[-1] == "    └── condition: when the water boils"
+
+
 def test_an_unparsable_command_is_a_message_with_a_caret_and_exit_1() -> None:
     result = runner.invoke(app, ["parse", "launch the rocket"])
     assert result.exit_code == 1
