@@ -253,10 +253,16 @@ def is_room_word(words: Sequence[str]) -> bool:
                             or "_".join(words[-2:]) in ROOM_WORDS)
 
 
+SOME_PERSON = frozenset({"someone", "somebody", "anyone", "anybody"})
+"""Pronouns that name any person ("find *someone* in the hall"): the class person, as "a person"."""
+
+
 def person_value(text: str, head: str, people: Mapping[str, object] | None = None) -> str:
     """The id a phrase for a person takes: the speaker's for "me", else the name's key."""
     if head.lower() in SPEAKER_WORDS:
         return SPEAKER
+    if head.lower() in SOME_PERSON:    # "is there anyone in the kitchen?": a person, as "a person" is
+        return "person"
     words = [w for w in class_words(text) if w not in DROPPED]
     if people is not None:
         for word in (*words, head):

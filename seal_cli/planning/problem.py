@@ -462,7 +462,7 @@ def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:
                 continue
             cls = things.class_of(value)
             if value in things.people or cls == "person":
-                if value not in placed:
+                if value not in placed and value != "person":     # "a person", "anyone": whoever is there
                     warnings.setdefault(f"nobody on the map {m.name} is called {value}: seal run will search "
                                         "the whole house for them", None)
             elif cls not in known:

@@ -682,6 +682,32 @@ class Agent:
             self.answer(answer)
         return self._act_words("search", [value])
 
+    def _search_people(self, value: str, binding: Binding, ground: str, question: Question | None) -> Outcome:
+        """Anyone in a room: look all over it, and go to the nearest person seen there (yes, and
+        where), or say nobody is there (the answer to a question, not found for a command)."""
+        where, _, complete = self.look_over(ground, peek=False)
+        people = self.people_seen_in(self.room(ground))
+        if people:
+            target = self.nearest([self.known[p] for p in people if p in self.known]) or people[0]
+            self.chosen[class_key(value)] = target
+            went = self.go_to(target, binding)
+            if not went.ok:
+                return went
+            answer = self.where_is(target)
+            self.answer(f"yes: {answer}" if question is not None and question.kind == "whether" else answer)
+            return Outcome(True, answer)
+        no = f"nobody {where} (it looked all over it)" if complete else \
+            f"nobody seen {where}, but it could not look all over it ({complete.message})"
+        self.answer(no)
+        if question is not None and question.kind == "whether":
+            return Outcome(True, no)
+        return Fatal(False, no, Reason.NOT_FOUND, value)
+
+    def people_seen_in(self, room: Any) -> list[str]:
+        """The people (not the speaker) the robot's last looks saw in a room."""
+        return [i.id for i in self.world.items.values() if i.key == PERSON and i.id != SPEAKER
+                and room is not None and bool(room.contains([i.at])[0]) and self._seen_person(i.id)]
+
     def _is_place(self, value: str) -> bool:
         item = self.world.items.get(value)
         return item is not None and not item.movable and item.key != PERSON
@@ -706,6 +732,8 @@ class Agent:
         the answer to a question ("is there ..."), and not found for a command ("find the cup in the
         kitchen"). Things the robot saw elsewhere are mentioned, never the map's hidden truth."""
         key = self.class_of(value)
+        if key == PERSON and self.room(ground) is not None:      # "is there anyone in the kitchen?"
+            return self._search_people(value, binding, ground, question)
         where, found, complete = self.look_over(ground)
         found = [k for k in found if k.cls == key]
         if found:
@@ -799,10 +827,7 @@ class Agent:
         assert question.about is not None
         where, found, complete = self.look_over(question.about, peek=question.asks_for != "person")
         if question.asks_for == "person":
-            room = self.room(question.about)
-            people = [i.id for i in self.world.items.values() if i.key == PERSON and i.id != SPEAKER
-                      and room is not None and bool(room.contains([i.at])[0]) and self._seen_person(i.id)]
-            names = people
+            names = self.people_seen_in(self.room(question.about))
             nothing = f"nobody {where}"
         else:
             names = [k.id for k in found]

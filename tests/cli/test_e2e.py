@@ -283,3 +283,13 @@ def test_a_thing_brought_to_a_room_is_put_on_a_surface_there_not_back_where_it_w
     texts = [r["text"] for r in report["records"]]
     assert report["completed"] and "picked up apple_1 from fridge_1" in texts
     assert "put apple_1 on counter_1" in texts and "put apple_1 in fridge_1" not in texts
+
+
+def test_anyone_in_a_room_is_whoever_the_robot_sees_there() -> None:
+    yes = run_json("is there anyone in the kitchen?")
+    assert yes["completed"] and yes["warnings"] == [] and yes["plan"] == ["Find(theme=person, ground=kitchen)"]
+    assert yes["answer"] == "yes: anna is in the kitchen at (5.53, -3.02)"
+    no = run_json("is there a person in the dining room?")
+    assert no["completed"] and no["answer"] == "nobody in the dining room (it looked all over it)"
+    found = run_json("find somebody in the bedroom")
+    assert found["completed"] and found["answer"] == "ben is in the bedroom at (-7.00, 3.00)"
