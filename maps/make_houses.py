@@ -1,7 +1,7 @@
-"""Draw the occupancy images of the example houses ``cottage.yaml`` and ``office_floor.yaml``
+"""Draw the occupancy images of the example houses ``townhouse.yaml`` and ``office_floor.yaml``
 (run once; the PGMs are committed next to this script).
 
-    python maps/make_houses.py          # rewrites maps/cottage.pgm and maps/office_floor.pgm
+    python maps/make_houses.py          # rewrites maps/townhouse.pgm and maps/office_floor.pgm
 
 Each house is a plan on paper, as a user would draw their own: the outer walls, the inner walls
 (centre lines, each with its doors as gaps), and the solid blocks a laser sees (a car, a server
@@ -42,7 +42,7 @@ class House:
 
 
 COTTAGE = House(
-    "cottage", (0.0, 0.0, 14.0, 10.0),
+    "townhouse", (0.0, 0.0, 14.0, 10.0),
     walls=(
         ((5.0, 0.0, 5.0, 10.0), ((2.0, 3.0), (7.0, 8.0))),     # garage | hallway, laundry room | hallway
         ((0.0, 5.0, 5.0, 5.0), ()),                            # garage | laundry room

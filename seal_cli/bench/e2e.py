@@ -2,7 +2,7 @@
 
 A :class:`Case` is a command on one of the suite's maps (``apartment``: ``maps/apartment.yaml``;
 ``aws``: the AWS small house annotated with rooms, places, people and things by
-:func:`seal_cli.bench.houses.aws_house`; any other map shipped in ``maps/``, such as ``cottage``; or a
+:func:`seal_cli.bench.houses.aws_house`; any other map shipped in ``maps/``, such as ``townhouse``; or a
 map file, by its path from the cases file), and what must come of it:
 
 - ``plan``: the steps ``seal plan --map`` must print (frames and their map ids, in order); or

@@ -301,7 +301,7 @@ def _table(report: dict[str, Any], names: list[str]) -> None:
 
 @command("e2e", on=bench_app)
 def e2e(
-    map_name: str | None = typer.Option(None, "--map", help="Only this map's cases (apartment, aws, cottage, ...).",
+    map_name: str | None = typer.Option(None, "--map", help="Only this map's cases (apartment, aws, townhouse, ...).",
                                         show_default=False),
     limit: int | None = typer.Option(None, "--limit", min=1, help="At most this many cases per map.",
                                      show_default=False),

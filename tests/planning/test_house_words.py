@@ -1,4 +1,4 @@
-"""Grounding on houses a user drew (maps/cottage.yaml, maps/office_floor.yaml): words of a map's
+"""Grounding on houses a user drew (maps/townhouse.yaml, maps/office_floor.yaml): words of a map's
 names, compound classes by their head, and what a place can do."""
 
 from __future__ import annotations
@@ -35,10 +35,10 @@ def test_a_compound_class_is_of_the_kinds_of_its_head(library: Library) -> None:
     assert kind_of(taxonomy, "bunk_bed", "toggleable") is False
     assert kind_of(taxonomy, "chest_freezer", "fixed") is True and kind_of(taxonomy, "dryer", "toggleable") is None
     with pytest.raises(SealError, match="ToggleOn needs its theme to be toggleable, and 'the bunk bed'"):
-        steps("turn on the bunk bed", library, "cottage")
+        steps("turn on the bunk bed", library, "townhouse")
     with pytest.raises(SealError, match="chest_freezer_1.*is fixed in the map"):
-        steps("pick up the chest freezer", library, "cottage")
-    assert steps("turn on the dryer", library, "cottage") == ["ToggleOn(theme=dryer_1)"]   # nobody says it cannot
+        steps("pick up the chest freezer", library, "townhouse")
+    assert steps("turn on the dryer", library, "townhouse") == ["ToggleOn(theme=dryer_1)"]   # nobody says it cannot
 
 
 def test_a_compound_name_is_called_by_its_head(library: Library) -> None:
