@@ -318,15 +318,7 @@ class SeFMPolicy(Policy):
                 mass = float(W[(np.hypot(X[:, 0] - at[0], X[:, 1] - at[1]) <= seeing) & ~hidden].sum())
                 options.append(Look(mass, float(field_[view.cell]), view))
         fresh = [o for o in options if (o.view.cell, o.view.open) not in self.tried and o.mass > self.min_mass]
-        if fresh:
-            view = self._first_of_tour(agent, fresh, target)
-        else:
-            fallback = self.fallback.next_view(agent, binding, target)
-            if fallback is None:
-                return None
-            view = View(fallback.cell, fallback.look_at, fallback.open, f"{fallback.why} (the belief is spent)")
-        self.tried.add((view.cell, view.open))
-        return view
+        return self._taken(agent, binding, target, self._first_of_tour(agent, fresh, target) if fresh else None)
 
     tour_views = 8
     """How many of the best looks (by belief per metre) the search orders as a tour before taking the
@@ -558,9 +550,12 @@ class SeFMPolicy(Policy):
                 seen = (np.hypot(X[:, 0] - at[0], X[:, 1] - at[1]) <= self.map.sensor.range) & ~hidden
                 options.append((float(W[seen].sum()), float(field_[view.cell]), view))
         fresh = [o for o in options if (o[2].cell, o[2].open) not in self.tried and o[0] > self.min_mass]
-        if fresh:
-            view = max(fresh, key=lambda o: o[0] / (o[1] + self.house_scale))[2]
-        else:
+        best = max(fresh, key=lambda o: o[0] / (o[1] + self.house_scale))[2] if fresh else None
+        return self._taken(agent, binding, target, best)
+
+    def _taken(self, agent: Agent, binding: Binding, target: str, view: View | None) -> View | None:
+        """The view chosen (marked tried), or, when no fresh look is left, the frontier sweep's."""
+        if view is None:
             fallback = self.fallback.next_view(agent, binding, target)
             if fallback is None:
                 return None
