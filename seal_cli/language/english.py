@@ -25,6 +25,8 @@ PRONOUNS = _closed_class("it them him her me you us they he she yourself myself 
                          "anything anyone anybody nothing one ones this that those these")
 PERSON_PRONOUNS = _closed_class("him her me you us he she yourself myself himself herself themselves ourselves",
                                 "yourselves someone somebody everyone everybody anyone anybody")
+SOME_PERSON = _closed_class("someone somebody anyone anybody")
+"""Pronouns that name any person ("find *someone* in the hall"): grounded as the class person, as "a person"."""
 PREPOSITIONS = {
     "to": "to", "into": "into", "onto": "onto", "from": "from", "in": "in", "on": "on", "at": "at",
     "under": "under", "underneath": "under", "beneath": "under", "below": "under", "with": "with",

@@ -36,6 +36,7 @@ from functools import cached_property
 
 from seal_cli.errors import SealError
 from seal_cli.frames.taxonomy import Taxonomy, class_key, class_words
+from seal_cli.language.english import SOME_PERSON
 from seal_cli.language.lexicon import noun_lemma
 from seal_cli.maps.model import SPEAKER, Map
 
@@ -251,10 +252,6 @@ def is_room_word(words: Sequence[str]) -> bool:
     words = tuple(words)
     return bool(words) and (words[-1] == "room" or "_".join(words) in ROOM_WORDS or words[-1] in ROOM_WORDS
                             or "_".join(words[-2:]) in ROOM_WORDS)
-
-
-SOME_PERSON = frozenset({"someone", "somebody", "anyone", "anybody"})
-"""Pronouns that name any person ("find *someone* in the hall"): the class person, as "a person"."""
 
 
 def person_value(text: str, head: str, people: Mapping[str, object] | None = None) -> str:
