@@ -244,5 +244,23 @@ CHECK_WHETHER = (frozenset(["check", "see", "find out", "look and see", "go and 
                  frozenset(["if", "whether"]), frozenset(["there is", "there are", "there 's", "there's"]))
 """"*See if* anyone is in the kitchen", "*check whether* there is milk in the fridge": the question whether
 it is there, asked as "find ..." (``WHERE_MEANS``), as "is anyone in the kitchen?" is."""
+STATE_MEANS = "check"
+""""*Is* the fridge *open*?", "check *whether* the door is *closed*": a yes/no question about a thing's state means
+"check the fridge" (a unit of LookAt in the standard library), the state asked kept beside the frame."""
+STATE_ASKERS = frozenset(["tell me", "let me know", "let us know", "do you know", "i'd like to know",
+                          "i would like to know", "i want to know", "i wonder", "i was wondering", "find out",
+                          "check", "see", "look and see", "go and see", "go and check", "go check", "go see",
+                          "make sure", "check and see"])
+"""What asks whether something holds, before "if"/"whether" ("*tell me* if the keys are on the table",
+"*let me know* whether the stove is on", "*find out* if Tom is in the kitchen"): the question, not the verb
+of saying, is the frame (Find of a place, LookAt of a state)."""
+STATE_PARTICLES = frozenset(["on", "off", "open", "shut"])
+"""Words that end a question of state though lemminflect lists them as no adjective ("is the TV *on*?")."""
+STATE_ADVERBS = frozenset(["still", "already", "yet", "now", "really", "currently", "properly", "all", "fully",
+                           "completely"])
+"""Adverbs said before the state asked ("is the light *still* on?"), part of it."""
+FOUND_OUT = frozenset(["who", "what", "which", "whose", "what's", "who's"])
+""""*find out who* is in the hall", "*check what* is in the fridge", "see who's at the door": a verb of checking
+and a question word asks the question (``QUESTION_MEANS``): "tell me who is in the hall"."""
 LET_KNOW = ("let", "know")
 """"*let* me *know* ...", "*let* Amara *know* that ...": "tell me ...", "tell Amara that ..." (``QUESTION_MEANS``)."""

@@ -268,7 +268,7 @@ class Evoker:
                                   "; ".join(clause.conditions) or None,
                                   " ".join(self.text[r.start:r.np.end] for r in clause.result) or None,
                                   " ".join(w.text for w in clause.items if isinstance(w, Word) and w.info == "time")
-                                  or None))
+                                  or None, clause.asked))
         self.carry_on(frame, roles, attached)
 
     @staticmethod

@@ -108,6 +108,7 @@ class Clause:
     gap: Clause | None = None                        # "... and the glasses next to them": the verb again
     result: list[PP] = field(default_factory=list)   # "cut the cake *into slices*"
     unit: str | None = None                          # the lexical unit when not the verb's ("give it a *stir*")
+    asked: str | None = None                         # the state a yes/no question asks ("is the fridge *open*?")
 
 
 @dataclass(frozen=True)
@@ -203,6 +204,7 @@ class Syntax(Transformer[Token, Command]):
         verb, items = next(c for c in children if isinstance(c, tuple))
         sub: str | None = None
         conditions: list[str] = []
+        asked: str | None = None
         for child in children:
             if isinstance(child, _Lead):         # "with a clock in hand, turn on the lamp": as if said after
                 items.extend(replace(pp, lead=True) for pp in child.pps)
@@ -210,9 +212,11 @@ class Syntax(Transformer[Token, Command]):
                 for word in child.words:
                     if isinstance(word.info, str) and word.info in SUBORDINATORS:
                         sub = word.info          # "before you go to the garage, ..."
+            elif isinstance(child, Word) and child.tag == "COND" and child.info == "asked":
+                asked = child.text           # "is the fridge *open*?": the state asked, no condition
             elif isinstance(child, Word) and child.tag == "COND":
                 conditions.append(child.text.rstrip(",;: "))
-        return Clause(verb, [], items, None, verb.start, verb.end, [], sub, conditions)
+        return Clause(verb, [], items, None, verb.start, verb.end, [], sub, conditions, asked=asked)
 
     def verb_phrase(self, children: list[Any]) -> tuple[Word, list[Item]]:
         return children[0], children[1:]

@@ -16,6 +16,8 @@ from seal_cli.language.english import (
     CHECK_WHETHER,
     DETERMINERS,
     END_MARKS,
+    FOUND_OUT,
+    HERE_WORDS,
     KNOW_WISHES,
     LET_KNOW,
     NUMBER_MEANS,
@@ -30,11 +32,15 @@ from seal_cli.language.english import (
     QUESTION_WORDS,
     REQUEST_MEANS,
     REQUESTS,
+    STATE_ADVERBS,
+    STATE_ASKERS,
+    STATE_MEANS,
+    STATE_PARTICLES,
     WHERE_DID,
     WHERE_MEANS,
     WHERE_QUESTIONS,
 )
-from seal_cli.language.morphology import verb_lemma
+from seal_cli.language.morphology import gerund_lemma, is_adjective, participles, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import State, first_words, match_phrase, merge
 from seal_cli.language.tags import Tag
@@ -124,8 +130,9 @@ def _whether_is(s: State, i: int) -> Match | None:
         return None
     for k in range(i + 2, len(words)):
         low = words[k].lower
-        if low in END_MARKS or low in (",", ";", "and", "then") or s.verb_at(k) is not None:
-            return None
+        if low in END_MARKS or low in (",", ";", "and", "then") or s.verb_at(k) is not None and \
+                words[k - 1].lower not in DETERMINERS and words[k - 1].lower not in POSSESSIVES:
+            return None                           # a verb ("the *pan*": a noun after a determiner)
         if low in _WHETHER_WHERE:
             if not s.np_starts(k + 1):
                 return None
@@ -134,13 +141,111 @@ def _whether_is(s: State, i: int) -> Match | None:
     return None
 
 
-def _check_whether(s: State, i: int) -> Match | None:
+ASKED = "asked"
+"""The info of the ``COND`` word that keeps the state a yes/no question asks ("open" of "is the fridge open?")."""
+
+
+def _is_state(s: State, low: str) -> bool:
+    """Whether a word can be the state a yes/no question asks of a thing: an adjective ("open", "clean",
+    "empty"), a particle of state ("on", "off"), a frame's result word, or a participle ("locked", "shut",
+    "running"); never a place word ("upstairs") or a preposition."""
+    if low in HERE_WORDS or low in PREPOSITIONS or low in DETERMINERS or low in BE_WORDS:
+        return low in STATE_PARTICLES
+    if low in STATE_PARTICLES or low in s.lexicon.results or is_adjective(low):
+        return True
+    lemma = verb_lemma(low)
+    return lemma is not None and lemma != low and (low in participles(lemma) or gerund_lemma(low) == lemma)
+
+
+def _state_from(s: State, k: int, end: int) -> int | None:
+    """Where the state said from word ``k`` begins, when words ``k .. end`` are adverbs of degree or time
+    ("still") and then one word of state ending the clause at ``end``; else None."""
+    words = s.words
+    if end - 1 < k or not _is_state(s, words[end - 1].lower):
+        return None
+    q = end - 1
+    while q > k and words[q - 1].lower in STATE_ADVERBS:
+        q -= 1
+    return q if q == k else None
+
+
+def _state_question_end(s: State, i: int) -> int | None:
+    """The end of the clause from ``i`` when it is a phrase and then a state: "the fridge | open", "the cup on
+    the table | clean", "the kitchen light | still on"; the index where the state begins, else None."""
+    words = s.words
+    if not s.np_starts(i) or words[i].lower in ("there", "you", "i", "we"):
+        return None
+    end = s.cond_end(i)
+    for q in range(end - 1, i, -1):              # the state's first word: adverbs, then the state
+        if _state_from(s, q, end) is None:
+            continue
+        before = words[q - 1].lower
+        if before in DETERMINERS or before in POSSESSIVES or before in PREPOSITIONS or before in BE_WORDS or \
+                before.isdigit():
+            return None                          # "is the cup on *the counter*": a noun in a phrase
+        if any(s.verb_at(k) and words[k - 1].lower not in DETERMINERS and words[k - 1].lower not in POSSESSIVES
+               and not s.np_starts(k - 1) for k in range(i + 1, q)):
+            return None
+        return q
+    return None
+
+
+def _state_question(s: State, i: int) -> Match | None:
+    """"*Is* the fridge open?", "are the windows in the bedroom shut", "is the kitchen light still on?": a
+    yes/no question about a thing's state is checking the thing (``STATE_MEANS``, a unit of LookAt); the state
+    is kept (``ASKED``, by :data:`STATE_ASKED`)."""
+    if STATE_MEANS not in s.lexicon.units or _state_question_end(s, i + 1) is None:
+        return None
+    return Match(1, (s.words[i].tagged(Tag.VERB, STATE_MEANS),), expect=False, verb=STATE_MEANS, using=False)
+
+
+_ASKERS = CHECK_WHETHER[0] | STATE_ASKERS
+
+
+def _asked_whether(s: State, i: int) -> Match | None:
+    """"*Check if* the door is closed", "*tell me whether* the stove is on", "*let me know if* the keys are on the
+    table", "*do you know if* the kettle is on": whether a thing is in a state is checking it (LookAt, the
+    state kept); whether it is somewhere is finding it there (Find), as the question said alone is. The verb
+    of saying or asking is no frame of its own: the question is the instruction."""
+    words = s.words
+    n = _phrase(s, i, _ASKERS)
+    if not n or i + n + 1 >= len(words) or words[i + n].lower not in CHECK_WHETHER[1]:
+        return None
+    k = i + n + 1
+    end = s.cond_end(k)
+    be = next((j for j in range(k + 1, end) if words[j].lower in _WHETHER_IS), None)
+    if be is not None and STATE_MEANS in s.lexicon.units and s.np_starts(k) and \
+            _state_from(s, be + 1, end) is not None:
+        last = words[k - 1].end
+        return Match(k - i, (Word(s.text_of(words[i].start, last), words[i].start, last, Tag.VERB, STATE_MEANS),),
+                     expect=False, verb=STATE_MEANS, using=False)
+    return _check_whether(s, i, _ASKERS)
+
+
+def _state_asked(s: State, i: int) -> Match | None:
+    """The state a yes/no question asks ("open" of "is the fridge open?", "is closed" of "check if the door is
+    closed"): one ``COND`` word of info ``ASKED``, the "is" dropped."""
+    if s.verb_index < 0:
+        return None
+    verb = s.out[s.verb_index]
+    if verb.info != STATE_MEANS or not (verb.lower in _WHETHER_IS or verb.lower.split()[-1] in CHECK_WHETHER[1]):
+        return None
+    words = s.words
+    k = i + 1 if words[i].lower in _WHETHER_IS and verb.lower not in _WHETHER_IS else i
+    end = s.cond_end(k)
+    if k >= end or _state_from(s, k, end) is None:
+        return None
+    text = s.text_of(words[k].start, words[end - 1].end)
+    return Match(end - i, (Word(text, words[k].start, words[end - 1].end, Tag.COND, ASKED),))
+
+
+def _check_whether(s: State, i: int, checks: frozenset[str] | None = None) -> Match | None:
     """"*See if* anyone is in the kitchen", "*check whether there's* a book on the shelf": whether someone or
     something is somewhere, asked as "find ..." (``WHERE_MEANS``); "there is" is read with the words before,
     and the "is" after a phrase is dropped (``WHETHER_BE``)."""
     words = s.words
-    checks, ifs, there_is = CHECK_WHETHER
-    n = _phrase(s, i, checks)
+    default, ifs, there_is = CHECK_WHETHER
+    n = _phrase(s, i, checks or default)
     if not n or i + n + 1 >= len(words) or words[i + n].lower not in ifs or WHERE_MEANS not in s.lexicon.units:
         return None
     k = i + n + 1
@@ -153,6 +258,22 @@ def _check_whether(s: State, i: int) -> Match | None:
     end = words[k - 1].end
     return Match(k - i, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, WHERE_MEANS),),
                  expect=False, verb=WHERE_MEANS, using=False)
+
+
+def _found_out(s: State, i: int) -> Match | None:
+    """"*Find out who* is in the hall", "check what's in the fridge", "see who is at the door": a verb of checking
+    and a question word asks the question: "tell me who is in the hall" (``QUESTION_MEANS``, the question said)."""
+    words = s.words
+    n = _phrase(s, i, CHECK_WHETHER[0])
+    if not n or QUESTION_MEANS not in s.lexicon.units or i + n >= len(words) or words[i + n].lower not in FOUND_OUT:
+        return None
+    end = s.speech_end(i + n)
+    if end - (i + n) < 2:
+        return None
+    last = words[i + n - 1].end
+    return Match(end - i, (Word(s.text_of(words[i].start, last), words[i].start, last, Tag.VERB, QUESTION_MEANS),
+                           _unsaid(last, Tag.PRON, None, _SPEAKER), s.emit(i + n, end - i - n, Tag.SAID).words[0]),
+                 expect=False, verb=QUESTION_MEANS, using=False)
 
 
 def _whether_be(s: State, i: int) -> Match | None:
@@ -401,10 +522,27 @@ ASKED_ALONE_RULE = Rule("a thing asked for alone", _asked_alone, (
     Example("milk from the fridge, please", "", Tag.VERB),
     Example("The remote please.", "", Tag.PRON),
 ), None, "a noun phrase and 'please' with no verb: bring it to the speaker")
-CHECK_WHETHER_RULE = Rule("check whether it is there", _check_whether, (
+STATE_QUESTION = Rule("is X in a state", _state_question, (
+    Example("Is the fridge open?", "Is", Tag.VERB),
+    Example("is the kitchen light still on?", "still on", Tag.COND),
+    Example("Is the cup on the table clean?", "clean", Tag.COND),
+), _WHETHER_IS, "'is X open?': check X (LookAt), the state asked kept")
+ASKED_WHETHER = Rule("asked whether", _asked_whether, (
+    Example("Could you check if the door is closed?", "check if", Tag.VERB),
+    Example("tell me whether the stove is still on", "tell me whether", Tag.VERB),
+    Example("Let me know if there is a pen on the desk.", "Let me know if there is", Tag.VERB),
+    Example("Tell me if the keys are on the table.", "Tell me if", Tag.VERB),
     Example("Can you see if anyone is in the kitchen?", "see if", Tag.VERB),
     Example("check whether there's a book on the shelf", "check whether there's", Tag.VERB),
-), first_words(CHECK_WHETHER[0]), "'see if X is in Y', 'check whether there is X': find X in Y")
+), first_words(_ASKERS), "'tell me / check / do you know if X is open' (LookAt), '... if X is in Y' (Find)")
+STATE_ASKED = Rule("the state asked", _state_asked, (
+    Example("do you know if the kettle is on", "on", Tag.COND),
+    Example("are the windows in the bedroom shut", "shut", Tag.COND),
+), None, "the state of 'is X open?', 'check if X is closed': kept beside the frame, the 'is' dropped")
+FOUND_OUT_RULE = Rule("find out who", _found_out, (
+    Example("Find out who is in the hall.", "who is in the hall", Tag.SAID),
+    Example("go to the hall and see who is there", "see", Tag.VERB),
+), first_words(CHECK_WHETHER[0]), "'find out who ...', 'check what ...': tell me who ...")
 WHETHER_BE = Rule("is, after see if X", _whether_be, (
     Example("see if the cat is in the garden", "is", ""),
 ), _WHETHER_IS, "the 'is' of 'see if X is in Y', dropped: 'see if' was read as 'find'")
