@@ -144,6 +144,9 @@ HERE_WORDS = frozenset(["here", "there", "over here", "over there", "upstairs", 
 """Words that name a place by themselves (deictic and directional adverbs): "come *here*", "bring it
 *upstairs*". "in there" and "in here" are read as "there" and "here" ("count the cans *in there*": the
 place named before)."""
+DIRECTIONS = frozenset(["upstairs", "downstairs", "indoors", "outdoors"])
+"""Place words that say where a motion goes ("carry the box *upstairs*", "go *outside*"): a goal, or where
+something is looked for ("find the cat *downstairs*"), never where it is taken from (that is "from upstairs")."""
 TIME_WORDS = frozenset(["now", "later", "soon", "today", "tonight", "tomorrow", "again", "too", "first",
                         "right away", "right now", "at once", "as well", "as soon as possible", "asap", "meanwhile",
                         "in a minute", "in a moment", "for now", "this morning", "this evening", "tonight"])
@@ -259,6 +262,9 @@ STATE_PARTICLES = frozenset(["on", "off", "open", "shut"])
 STATE_ADVERBS = frozenset(["still", "already", "yet", "now", "really", "currently", "properly", "all", "fully",
                            "completely"])
 """Adverbs said before the state asked ("is the light *still* on?"), part of it."""
+SWITCHED_MEANS = {"on": "turn on", "off": "turn off"}
+""""*Lights off* in the hall", "the TV on, please": a thing and "on"/"off", no verb, is switching it so
+("turn the lights off"): the particle's unit, when the library has it."""
 FOUND_OUT = frozenset(["who", "what", "which", "whose", "what's", "who's"])
 """"*find out who* is in the hall", "*check what* is in the fridge", "see who's at the door": a verb of checking
 and a question word asks the question (``QUESTION_MEANS``): "tell me who is in the hall"."""

@@ -53,6 +53,7 @@ PREPOSITION_ROLES: Mapping[str, Sense] = {
     **{p: Sense(("source",), ("source",)) for p in FROM},
     "with": Sense(("instrument",), ("instrument",)),
     **{p: Sense(_WHERE, _WHERE) for p in LOCATIVE},
+    "toward": Sense(("goal", "ground"), ("goal", "ground")),     # "upstairs", "outside": where a motion goes
 }
 """Preposition → the roles it may name (a preposition not listed names none)."""
 

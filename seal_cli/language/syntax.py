@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 from lark import Token, Transformer, Tree
 
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import PERSON_PRONOUNS, SUBORDINATORS
+from seal_cli.language.english import DIRECTIONS, PERSON_PRONOUNS, SUBORDINATORS
 from seal_cli.language.lexicon import Word, is_plural, noun_lemma
 
 if TYPE_CHECKING:
@@ -184,7 +184,8 @@ class Syntax(Transformer[Token, Command]):
         while nxt < len(self.words) and self.words[nxt].info == "time":
             nxt += 1                          # "... there too", "... there right away"
         there = word.lower == "there" and (nxt == len(self.words) or self.words[nxt].tag in ("SEP", "END"))
-        return PP("at", NP(word.start, word.end, word, "place", there=there), word.start)
+        prep = "toward" if word.lower in DIRECTIONS else "at"   # "carry the box *upstairs*": where it goes
+        return PP(prep, NP(word.start, word.end, word, "place", there=there), word.start)
 
     # -- the command and its clauses -----------------------------------------------------------
     def start(self, children: list[Any]) -> Command:

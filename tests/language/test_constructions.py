@@ -348,3 +348,35 @@ def test_checking_who_or_what_asks_the_question(library: Library) -> None:
         ("Tell", {"message": "who is waiting in the lobby", "recipient": ""})]
     assert [f for f, _ in frames("go to the garage and check what is on the bench", library)] == ["Go", "Tell"]
     assert [f for f, _ in frames("find out how many chairs are in the den", library)] == ["Count"]   # a unit
+
+
+def test_a_list_of_three_things_keeps_every_one_and_whose_is_no_statement(library: Library) -> None:
+    parse = parse_command("put the spoon, the bowl and Omar's mug in the sink", library)
+    assert parse.remarks == ()                                   # "Omar's mug in the sink" was dropped as "Omar is"
+    theme = parse.frames[0].elements["theme"]
+    assert [c.text for c in theme.conjuncts] == ["the spoon", "the bowl", "Omar's mug"]
+    assert parse.frames[0].elements["goal"].text == "the sink"
+    assert parse_command("close the window, the garage door's open", library).remarks == ("the garage door's open",)
+
+
+def test_moving_a_person_to_a_place_is_guiding_them(library: Library) -> None:
+    assert texts("get Omar to the lobby", library) == [("Guide", {"theme": "Omar", "goal": "the lobby"})]
+    assert texts("deliver the visitor to the exit", library)[0][0] == "Guide"
+    assert texts("get the mug to the lobby", library)[0][0] == "Bring"          # a thing: as before
+
+
+def test_a_direction_is_where_a_motion_goes_not_where_from(library: Library) -> None:
+    assert texts("carry the basket downstairs", library) == [
+        ("Bring", {"theme": "the basket", "goal": "downstairs"})]          # it was Pick from downstairs
+    assert texts("look for the dog upstairs", library) == [("Find", {"theme": "the dog", "ground": "upstairs"})]
+
+
+def test_a_thing_and_on_or_off_is_switching_it(library: Library) -> None:
+    assert texts("Heater off in the study.", library)[0][0] == "ToggleOff"
+    assert texts("the desk lamp on, please", library) == [("ToggleOn", {"theme": "the desk lamp"})]
+    assert texts("the mug please", library)[0][0] == "Bring"                   # no particle: asked for
+
+
+def test_please_and_a_verb_no_frame_lists_is_an_error_not_a_thing_asked_for(library: Library) -> None:
+    with pytest.raises(CommandError, match="unknown verb 'enumerate'"):    # it was Bring of "enumerate"
+        parse_command("please enumerate the books on the shelf", library)

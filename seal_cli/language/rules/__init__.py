@@ -60,6 +60,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.LET_KNOW_RULE,
     requests.FRONTED_OF,
     requests.TOLD_HOW_MANY,
+    requests.SWITCHED_ALONE,
     requests.ASKED_ALONE_RULE,
     verbs.USE,
     verbs.VERB,

@@ -36,6 +36,7 @@ from seal_cli.language.english import (
     STATE_ASKERS,
     STATE_MEANS,
     STATE_PARTICLES,
+    SWITCHED_MEANS,
     WHERE_DID,
     WHERE_MEANS,
     WHERE_QUESTIONS,
@@ -377,6 +378,9 @@ def _asked_alone(s: State, i: int) -> Match | None:
     if any(t.tag != Tag.POLITE for t in s.out) or REQUEST_MEANS not in s.lexicon.units or \
             words[i].lower in PRONOUNS or not s.np_starts(i):
         return None
+    if verb_lemma(words[i].lower) == words[i].lower and i + 1 < len(words) and \
+            (words[i + 1].lower in DETERMINERS or words[i + 1].lower in POSSESSIVES):
+        return None                               # "please *list the* things": an imperative, its verb unknown
     end = _sentence_end(s, i)
     if not any(words[k].lower in ASKED_ALONE for k in range(end)) or \
             any(s.verb_at(k) or words[k].lower in BE_WORDS or words[k].lower in QUESTION_WORDS
@@ -385,6 +389,43 @@ def _asked_alone(s: State, i: int) -> Match | None:
     return Match(0, (_unsaid(words[i].start, Tag.VERB, REQUEST_MEANS),
                      _unsaid(words[i].start, Tag.PRON, None, _SPEAKER)), expect=False, verb=REQUEST_MEANS,
                  using=False)
+
+
+_SWITCHED_WORDS = 4
+
+
+def _switched_alone(s: State, i: int) -> Match | None:
+    """"*Lights off* in the hall", "the TV on, please", "kitchen lights off": a short noun phrase (no verb's base
+    form first) and "on"/"off", then only where (a preposition and a phrase) or "please" to the sentence's end,
+    is switching the thing so (``SWITCHED_MEANS``: "turn the lights off"), the particle read as the verb's."""
+    words = s.words
+    first = words[i].lower
+    nxt = s.next_lower(i)
+    if not s.np_starts(i) or first in PRONOUNS or first in QUESTION_WORDS or gerund_lemma(first) is not None or \
+            verb_lemma(first) == first and (nxt in DETERMINERS or nxt in POSSESSIVES or nxt in PRONOUNS):
+        return None                               # "flip the lamp off", "turning the light on": a verb first
+    found = s.verb_at(i)
+    if found is not None and found[2] is not None:
+        return None                               # "switch the radio on": the verb and its split particle
+    end = _sentence_end(s, i)
+    k = next((k for k in range(i + 1, min(end, i + 1 + _SWITCHED_WORDS)) if words[k].lower in SWITCHED_MEANS), None)
+    if k is None or words[k - 1].lower in DETERMINERS or words[k - 1].lower in POSSESSIVES or \
+            any(words[j].lower in BE_WORDS or words[j].lower in PREPOSITIONS for j in range(i, k)):
+        return None
+    unit = SWITCHED_MEANS[words[k].lower]
+    parts = tuple(unit.split())
+    if parts not in s.lexicon.units.get(parts[0], ()):
+        return None
+    rest = k + 1
+    if rest < end and words[rest].lower not in ASKED_ALONE | {","}:
+        n = match_phrase(words, rest, PREPOSITIONS)
+        if not n or not s.np_starts(rest + n) or any(
+                s.verb_at(j) and words[j - 1].lower not in DETERMINERS and words[j - 1].lower not in POSSESSIVES
+                for j in range(rest + n, end)):
+            return None                           # "lights off in the hall": only where may follow
+    tag = Tag.DET if first in DETERMINERS else Tag.POSS if first in POSSESSIVES else Tag.WORD
+    return Match(1, (_unsaid(words[i].start, Tag.VERB, unit), words[i].tagged(tag)), expect=False, verb=unit,
+                 using=False, particle=(k, unit))    # its first word tagged here: "Lights" is no verb
 
 
 _WISHES_OF = (("wants",), ("needs",), ("would", "like"))
@@ -508,6 +549,10 @@ REQUEST = Rule("wish for a thing", _request, (
     Example("Can I have the big plate?", "Can I have", Tag.VERB),
     Example("I need a pen.", "I need", Tag.VERB),
 ), _REQUEST_FIRST, "'I'd like X', 'can I have X', 'I need X': bring X to the speaker")
+SWITCHED_ALONE = Rule("a thing switched on or off", _switched_alone, (
+    Example("Lights off in the hall.", "Lights", Tag.WORD),
+    Example("the porch lamp on, please", "on", Tag.PARTICLE),
+), None, "'lights off (in the hall)': turn the lights off")
 WISH_OF = Rule("a person's wish for a thing", _wish_of, (
     Example("Anna wants the cup", "Anna wants", Tag.VERB),
     Example("Ben needs a towel.", "Ben needs", Tag.VERB),
