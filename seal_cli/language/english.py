@@ -144,6 +144,10 @@ HERE_WORDS = frozenset(["here", "there", "over here", "over there", "upstairs", 
 """Words that name a place by themselves (deictic and directional adverbs): "come *here*", "bring it
 *upstairs*". "in there" and "in here" are read as "there" and "here" ("count the cans *in there*": the
 place named before)."""
+LOCATIVE = ("in", "on", "at", "near", "under", "by", "inside", "behind", "above", "over", "in front of",
+            "between", "around", "across", "through", "along", "beyond", "against", "outside", "past")
+"""Prepositions (canonical forms) that say where something is ("*on* the sofa"): the roles they may name are
+in ``roles.PREPOSITION_ROLES``."""
 DIRECTIONS = frozenset(["upstairs", "downstairs", "indoors", "outdoors"])
 """Place words that say where a motion goes ("carry the box *upstairs*", "go *outside*"): a goal, or where
 something is looked for ("find the cat *downstairs*"), never where it is taken from (that is "from upstairs")."""

@@ -328,8 +328,9 @@ class Evoker:
         if np.results and role == "instrument":
             np.results = []              # "wipe the table with a clean cloth": the tool as it is, no Clean first
         if np.results and frame.elements and role == frame.elements[0].role:
-            if "source" in roles:
-                np.results = []          # "take the clean mugs out of the dishwasher": the thing as it is
+            if "source" in roles or "ground" in self.types.roles(frame):
+                np.results = []          # "take the clean mugs out of the dishwasher", "are there any clean towels
+                #                          in the cupboard?", "count the clean plates": the thing as it is (sought)
             undone = {p.predicate for p in frame.postconditions if p.negated and p.args == (role,)}
             np.results = [w for w in np.results if not undone & self.result_states(w)]   # "heat the frozen peas"
         self.results_of(np)

@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import PERSON_PRONOUNS
+from seal_cli.language.english import LOCATIVE, PERSON_PRONOUNS
 from seal_cli.language.lexicon import noun_lemma
 from seal_cli.language.syntax import NP, PP, Clause
 
@@ -29,8 +29,6 @@ __all__ = ["ATTACHABLE", "FROM", "LOCATIVE", "PREPOSITION_ROLES", "PUT_IN", "TO"
 
 TO = ("to", "into", "onto")
 FROM = ("from", "out of", "off")
-LOCATIVE = ("in", "on", "at", "near", "under", "by", "inside", "behind", "above", "over", "in front of",
-            "between", "around", "across", "through", "along", "beyond", "against", "outside", "past")
 ATTACHABLE = LOCATIVE + ("with", "without", "about", "for", "via", "of")
 """Prepositions whose phrase may describe the noun before it when it fills no element."""
 PUT_IN = ("in", "on", "inside", "into", "onto")

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 from lark import Token, Transformer, Tree
 
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import DIRECTIONS, PERSON_PRONOUNS, SUBORDINATORS
+from seal_cli.language.english import DIRECTIONS, LOCATIVE, PERSON_PRONOUNS, SUBORDINATORS
 from seal_cli.language.lexicon import Word, is_plural, noun_lemma
 
 if TYPE_CHECKING:
@@ -220,7 +220,10 @@ class Syntax(Transformer[Token, Command]):
         return Clause(verb, [], items, None, verb.start, verb.end, [], sub, conditions, asked=asked)
 
     def verb_phrase(self, children: list[Any]) -> tuple[Word, list[Item]]:
-        return children[0], children[1:]
+        items: list[Item] = []
+        for child in children[1:]:
+            items.extend(child if isinstance(child, list) else [child])   # a predicate and where (below)
+        return children[0], items
 
     def polite(self, children: list[Word]) -> _Polite:
         return _Polite(children)
@@ -235,9 +238,14 @@ class Syntax(Transformer[Token, Command]):
         prep, np = children
         return PP(str(prep.info), np, prep.start)
 
-    def predicate(self, children: list[Any]) -> Word:
-        """A participle that describes a noun away from it ("are *wearing hats*"): one word."""
+    def predicate(self, children: list[Any]) -> Word | list[Any]:
+        """A participle that describes a noun away from it ("are *wearing hats*"): one word. Said with a place
+        ("how many people are *sitting on the sofa*"), the place is a phrase of the clause (where they are:
+        Count's ground), after the participle's word."""
         first = children[0]
+        if first.tag == "VBG_P" and len(children) == 2 and isinstance(children[1], PP) and \
+                children[1].prep in LOCATIVE:
+            return [Word(first.text, first.start, first.end, "PREDICATE", first.info), children[1]]
         end = first.end
         for child in children[1:]:
             end = max(end, end_of(child))

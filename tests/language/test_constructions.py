@@ -380,3 +380,17 @@ def test_a_thing_and_on_or_off_is_switching_it(library: Library) -> None:
 def test_please_and_a_verb_no_frame_lists_is_an_error_not_a_thing_asked_for(library: Library) -> None:
     with pytest.raises(CommandError, match="unknown verb 'enumerate'"):    # it was Bring of "enumerate"
         parse_command("please enumerate the books on the shelf", library)
+
+
+def test_where_people_are_doing_something_is_where_to_count_them(library: Library) -> None:
+    assert texts("how many guests are waiting in the lobby?", library) == [
+        ("Count", {"theme": "guests", "ground": "the lobby"})]                # the lobby was lost in the participle
+    assert texts("find a person standing in the corridor", library) == [       # right after the noun: describes it
+        ("Find", {"theme": "a person standing in the corridor"})]
+
+
+def test_a_thing_sought_is_sought_as_it_is_and_us_is_the_speaker(library: Library) -> None:
+    assert [f for f, _ in frames("are there any clean plates in the rack?", library)] == ["Find"]   # no Clean first
+    assert [f for f, _ in frames("count the washed cups on the tray", library)] == ["Count"]
+    assert [f for f, _ in frames("put a washed cup on the tray", library)] == ["Clean", "Place"]     # as before
+    assert [f for f, _ in frames("let us know how many chairs are free", library)] == ["Count"]

@@ -490,8 +490,9 @@ def _let_know(s: State, i: int) -> Match | None:
     k = i + 3                                     # "let me know how many": "tell me how many", a unit of its own
     for unit in s.lexicon.units.get(QUESTION_MEANS, ()):
         rest = unit[2:]
-        if len(unit) > 2 and unit[1] == told.lower and all(k + m < len(words) and words[k + m].lower == rest[m]
-                                                           for m in range(len(rest))):
+        speaker = _SPEAKER if told.lower == "us" else told.lower          # "let us know how many": the speakers
+        if len(unit) > 2 and unit[1] == speaker and all(k + m < len(words) and words[k + m].lower == rest[m]
+                                                        for m in range(len(rest))):
             end = words[k + len(rest) - 1].end
             text = s.text_of(words[i].start, end)
             return Match(k + len(rest) - i, (Word(text, words[i].start, end, Tag.VERB, " ".join(unit)),),
