@@ -95,6 +95,7 @@ INSIDE: tuple[Rule, ...] = (
     clauses.SEPARATOR,
     politeness.THANKS,
     clauses.UNJOINED,
+    clauses.UNKNOWN_UNJOINED,
 )
 """Inside a clause, before the word is tagged by ``WORDS``."""
 
