@@ -394,3 +394,11 @@ def test_a_thing_sought_is_sought_as_it_is_and_us_is_the_speaker(library: Librar
     assert [f for f, _ in frames("count the washed cups on the tray", library)] == ["Count"]
     assert [f for f, _ in frames("put a washed cup on the tray", library)] == ["Clean", "Place"]     # as before
     assert [f for f, _ in frames("let us know how many chairs are free", library)] == ["Count"]
+
+
+def test_a_verb_no_frame_lists_before_its_object_is_reported_not_lost(library: Library) -> None:
+    with pytest.raises(CommandError, match="unknown verb 'hang'"):          # it was the theme "the towel hang"
+        parse_command("grab the coat hang it in the hall", library)
+    with pytest.raises(CommandError, match="unknown verb 'wake'"):          # it was the goal "the den to wake"
+        parse_command("go to the den to wake up Omar", library)
+    assert texts("take the mug to sink", library) == [("Bring", {"theme": "the mug", "goal": "sink"})]

@@ -177,9 +177,10 @@ def _unknown_unjoined(s: State, i: int) -> Match | None:
     *hang it* on the rack"), or after "to" and before its object ("head to the bedroom *to wake up* Jonas"): a clause
     of its own, so its unknown verb is reported, not read as a noun of the phrase (the verb was lost)."""
     words = s.words
-    if s.verb_index < 0 or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL, Tag.PARTICLE, Tag.HERE):
-        return None
     to = words[i].lower == "to"
+    if not to and (i + 1 >= len(words) or words[i + 1].lower not in _NO_NOUN_AFTER) or s.verb_index < 0 or \
+            s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL, Tag.PARTICLE, Tag.HERE):
+        return None
     k = i + 1 if to else i
     if k + 1 >= len(words):
         return None

@@ -201,6 +201,7 @@ def _state_question(s: State, i: int) -> Match | None:
 
 
 _ASKERS = CHECK_WHETHER[0] | STATE_ASKERS
+_ASKER_WORDS = max(len(p.split()) for p in _ASKERS)
 
 
 def _asked_whether(s: State, i: int) -> Match | None:
@@ -209,6 +210,8 @@ def _asked_whether(s: State, i: int) -> Match | None:
     state kept); whether it is somewhere is finding it there (Find), as the question said alone is. The verb
     of saying or asking is no frame of its own: the question is the instruction."""
     words = s.words
+    if not any(w.lower in CHECK_WHETHER[1] for w in words[i + 1:i + 2 + _ASKER_WORDS]):
+        return None                               # no "if"/"whether" near: nothing asked (the common case)
     n = _phrase(s, i, _ASKERS)
     if not n or i + n + 1 >= len(words) or words[i + n].lower not in CHECK_WHETHER[1]:
         return None
@@ -399,6 +402,8 @@ def _switched_alone(s: State, i: int) -> Match | None:
     form first) and "on"/"off", then only where (a preposition and a phrase) or "please" to the sentence's end,
     is switching the thing so (``SWITCHED_MEANS``: "turn the lights off"), the particle read as the verb's."""
     words = s.words
+    if not any(w.lower in SWITCHED_MEANS for w in words[i + 1:i + 1 + _SWITCHED_WORDS]):
+        return None                               # no "on"/"off" near (the common case)
     first = words[i].lower
     nxt = s.next_lower(i)
     if not s.np_starts(i) or first in PRONOUNS or first in QUESTION_WORDS or gerund_lemma(first) is not None or \
