@@ -206,9 +206,10 @@ QUESTION_WORDS = frozenset(["what", "who", "which", "whose", "whom", "what's", "
 shelf?", "*Who* is in the kitchen?"): a bare question means "tell me ..." (``QUESTION_MEANS``)."""
 QUESTION_MEANS = "tell"
 WHERE_QUESTIONS = frozenset(["where is", "where are", "where 's", "where's", "where're", "is there", "are there",
-                             "is there any", "are there any"])
+                             "is there any", "are there any", "do we have", "do we have any", "have we got",
+                             "have we got any", "do we still have", "do we still have any"])
 """Questions about where a thing is, or whether there is one ("*where is* the cup?", "*is there* a cup in the
-kitchen?"): they mean "find ..." (``WHERE_MEANS``)."""
+kitchen?", "*do we have any* eggs?"): they mean "find ..." (``WHERE_MEANS``)."""
 WHERE_MEANS = "find"
 WHERE_DID = (frozenset(["where"]), frozenset(["did", "do", "does", "have", "has", "can", "could", "should",
                                               "would", "will", "might", "may"]),

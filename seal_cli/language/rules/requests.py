@@ -540,6 +540,7 @@ QUESTION = Rule("bare question", _question, (
 WHERE = Rule("where is", _where, (
     Example("where is the cup?", "where is", Tag.VERB),
     Example("Is there a cup in the kitchen?", "Is there", Tag.VERB),
+    Example("Do we have any eggs?", "Do we have any", Tag.VERB),
 ), _WHERE_FIRST, "'where is X', 'is there X': find X")
 WHERE_DID_RULE = Rule("where did I leave", _where_did, (
     Example("Where did I leave my glasses?", "Where did I leave", Tag.VERB),
