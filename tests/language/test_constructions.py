@@ -402,3 +402,13 @@ def test_a_verb_no_frame_lists_before_its_object_is_reported_not_lost(library: L
     with pytest.raises(CommandError, match="unknown verb 'wake'"):          # it was the goal "the den to wake"
         parse_command("go to the den to wake up Omar", library)
     assert texts("take the mug to sink", library) == [("Bring", {"theme": "the mug", "goal": "sink"})]
+
+
+def test_a_question_of_state_ends_where_the_next_clause_begins(library: Library) -> None:
+    with pytest.raises(CommandError, match="unknown verb 'lock'"):         # it was a condition "... and lock it"
+        parse_command("check if the gate is shut and lock it", library)
+    parse = parse_command("see if the tap is off, then go to the garage", library)
+    assert [(f.frame, f.asked) for f in parse.frames] == [("LookAt", "off"), ("Go", None)]
+    parse = parse_command("is the oven on and is the freezer open?", library)
+    assert [(f.frame, f.elements["theme"].text, f.asked) for f in parse.frames] == [
+        ("LookAt", "the oven", "on"), ("LookAt", "the freezer", "open")]

@@ -170,13 +170,20 @@ def _state_from(s: State, k: int, end: int) -> int | None:
     return q if q == k else None
 
 
+def _clause_stop(s: State, k: int) -> int:
+    """Where a question said from ``k`` ends: the clause's end, or an "and"/"then" before it ("check if the door
+    is closed *and* lock it": the next clause, whatever its verb)."""
+    end = s.cond_end(k)
+    return next((j for j in range(k, end) if s.words[j].lower in ("and", "then")), end)
+
+
 def _state_question_end(s: State, i: int) -> int | None:
     """The end of the clause from ``i`` when it is a phrase and then a state: "the fridge | open", "the cup on
     the table | clean", "the kitchen light | still on"; the index where the state begins, else None."""
     words = s.words
     if not s.np_starts(i) or words[i].lower in ("there", "you", "i", "we"):
         return None
-    end = s.cond_end(i)
+    end = _clause_stop(s, i)
     for q in range(end - 1, i, -1):              # the state's first word: adverbs, then the state
         if _state_from(s, q, end) is None:
             continue
@@ -216,7 +223,7 @@ def _asked_whether(s: State, i: int) -> Match | None:
     if not n or i + n + 1 >= len(words) or words[i + n].lower not in CHECK_WHETHER[1]:
         return None
     k = i + n + 1
-    end = s.cond_end(k)
+    end = _clause_stop(s, k)
     be = next((j for j in range(k + 1, end) if words[j].lower in _WHETHER_IS), None)
     if be is not None and STATE_MEANS in s.lexicon.units and s.np_starts(k) and \
             _state_from(s, be + 1, end) is not None:
@@ -236,7 +243,7 @@ def _state_asked(s: State, i: int) -> Match | None:
         return None
     words = s.words
     k = i + 1 if words[i].lower in _WHETHER_IS and verb.lower not in _WHETHER_IS else i
-    end = s.cond_end(k)
+    end = _clause_stop(s, k)
     if k >= end or _state_from(s, k, end) is None:
         return None
     text = s.text_of(words[k].start, words[end - 1].end)
