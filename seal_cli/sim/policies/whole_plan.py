@@ -351,7 +351,6 @@ class WholePlanSearch:
             self._covered = np.zeros(lattice.size, dtype=bool)
             for node in self.nodes:
                 self._covered |= lattice.visible(node)
-        added = False
         for _ in range(MORE_VIEWS):
             left = {c: float(b[~self._covered].sum() / b.sum()) for c, b in beliefs.items() if b.sum() > 0}
             if not left or max(left.values()) <= UNCOVERED:
@@ -373,20 +372,33 @@ class WholePlanSearch:
                                              self.map.rooms[room].name if room >= 0 else "the open floor"))
             self.nodes.append(best)
             self._covered |= lattice.visible(best)
-            added = True
-        if added:
-            self._tables.clear()
+
+    def _add(self, agent: Agent, view: View) -> None:
+        """A view of another rule (the greedy place view) among the candidates, kept for the run."""
+        if any(c.cell == view.cell and c.open == view.open for c in self.candidates):
+            return
+        node = int(self.lattice.node_of(np.asarray([agent.grid.point(view.cell)]))[0])
+        room = self._room_of(self.lattice.points[node:node + 1])[0]
+        name = view.open or (self.map.rooms[room].name if room >= 0 else "the open floor")
+        self.candidates.append(Candidate(view.cell, node, view.look_at, name, view.open))
+        self.nodes.append(node)
+        if self._covered is not None:
+            self._covered |= self.lattice.visible(node)
 
     def choose(self, agent: Agent, binding: Binding, target: str,
-               weights: Callable[[str], np.ndarray]) -> Decision | None:
+               weights: Callable[[str], np.ndarray], also: View | None = None) -> Decision | None:
         """The candidate view that starts the shortest expected completion (:func:`~seal_cli.sim.policies.
-        completion.choose`); ``weights(cls)`` is the belief of a class per free cell of the map."""
+        completion.choose`); ``weights(cls)`` is the belief of a class per free cell of the map. ``also``: a
+        view another rule would take now (the greedy place view), weighed among the candidates on the same
+        footing, so the choice is never worse than it under the model."""
         stops = self.targets(agent, binding, target)
         sought = list(dict.fromkeys(c for c, v, _ in stops if v is None))
         n = self.lattice.size
         beliefs = {c: np.bincount(self.belief_node, weights=np.where(np.isfinite(w := weights(c)) & (w > 0), w, 0.0),
                                   minlength=n) for c in sought}
         self._cover(agent, beliefs)
+        if also is not None:
+            self._add(agent, also)
         shut = self._shut(agent)
         hidden = np.zeros(n, dtype=bool)
         for mask in shut.values():
@@ -395,10 +407,17 @@ class WholePlanSearch:
         reveals = [shut.get(c.open) if c.open is not None else None for c in self.candidates]
         lattice = self.lattice
 
-        def tables(origin: int) -> DriveTable:
-            if (origin, key) not in self._tables:
-                self._tables[(origin, key)] = lattice.drive_table(origin, self.nodes, reveals, hidden)
-            return self._tables[(origin, key)]
+        def tables(origin: int) -> DriveTable:   # kept across choices; rows added for candidates added since
+            table = self._tables.get((origin, key))
+            done = 0 if table is None else len(table.length)
+            if done < len(self.nodes):
+                more = lattice.drive_table(origin, self.nodes[done:], reveals[done:], hidden)
+                table = more if table is None else DriveTable(np.concatenate([table.seen_at, more.seen_at]),
+                                                              np.concatenate([table.look, more.look]),
+                                                              np.concatenate([table.length, more.length]))
+                self._tables[(origin, key)] = table
+            assert table is not None
+            return table
 
         plan: list[Target] = []
         for c, value, at in stops:
