@@ -126,7 +126,7 @@ class SeFMPolicy(Policy):
     def observe(self, agent: Agent, detections: Sequence[Detection]) -> None:
         self.fallback.observe(agent, detections)
         if self.planner is not None:
-            self.planner.observe(agent)
+            self.planner.observe(agent, see=False)
         pose = agent.world.robot.pose
         self.history.append((pose, tuple(detections)))
         if self.sefm is None and self.keep_clouds and agent.steps:
@@ -274,8 +274,6 @@ class SeFMPolicy(Policy):
             return None
         if self.planner is None:
             self.planner = WholePlanSearch(agent, places_only=single)
-            for pose, _ in self.history:
-                self.planner.see(agent, pose)
         sefm = self._beliefs(agent)
         sefm.update(agent.world.robot.pose, (), self._state(agent))
         points = self.map.free_centres

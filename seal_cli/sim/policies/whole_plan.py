@@ -175,8 +175,13 @@ class WholePlanSearch:
         sensor = agent.world.sensor
         self.lattice: Lattice = lattice_of(agent.grid, lambda p, pts: sensor.visible((p[0], p[1], 0.0), pts),
                                            f"{m.name}|{m.bounds}|{m.sensor!r}", sensor.range, agent.look_every)
-        self.regions = regions_of(agent, places_only)
-        self.candidates = self._candidates(agent)
+        known = tuple(sorted((k.id, k.cls, k.at, k.openable) for k in agent.known.values() if not k.movable))
+        kept = self.lattice.kept.get((places_only, known))
+        if kept is None:   # the same for every run on one house: kept with its lattice
+            self.regions = regions_of(agent, places_only)
+            kept = self.lattice.kept[(places_only, known)] = (self.regions, tuple(self._candidates(agent)))
+        self.regions = kept[0]
+        self.candidates = list(kept[1])
         self.nodes = [c.node for c in self.candidates]
         self.belief_node = self.lattice.node_of(m.free_centres)
         """Per free cell of the map, its lattice node (beliefs are summed onto the nodes)."""
@@ -263,13 +268,14 @@ class WholePlanSearch:
                     out.append(int(ends[np.argmin(np.hypot(*(lattice.points[ends] - centre).T))]))
         return out
 
-    def observe(self, agent: Agent) -> np.ndarray:
-        """The robot has looked: the free cells it saw (indices, returned, and added to :attr:`seen`);
-        the view chosen last is used once the robot has looked from it."""
+    def observe(self, agent: Agent, see: bool = True) -> np.ndarray:
+        """The robot has looked: the free cells it saw (indices, returned, and added to :attr:`seen`; none
+        when not ``see``: a searcher with beliefs of its own, SeFM, needs only the views used); the view
+        chosen last is used once the robot has looked from it."""
         if self.pending is not None and agent.robot_cell() == self.pending:
             self.used.add(self.pending)
             self.pending = None
-        return self.see(agent, agent.world.robot.pose)
+        return self.see(agent, agent.world.robot.pose) if see else np.zeros(0, dtype=np.intp)
 
     def see(self, agent: Agent, pose: tuple[float, float, float]) -> np.ndarray:
         """The free cells the sensor sees from ``pose`` (indices), added to :attr:`seen`."""
