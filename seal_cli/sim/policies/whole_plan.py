@@ -26,7 +26,7 @@ from seal_cli.maps.priors import target_cells
 from seal_cli.sim.agent import Agent, View
 from seal_cli.sim.navigation import Cell
 from seal_cli.sim.policies.completion import Choice, Target, choose
-from seal_cli.sim.policies.views import DriveTable, Lattice, lattice_of
+from seal_cli.sim.policies.views import SPACING, DriveTable, Lattice, lattice_of
 
 __all__ = ["COVER_SAMPLE", "DOOR_GAP", "MORE_VIEWS", "ROOM_VIEWS", "UNCOVERED", "Candidate", "Region",
            "WholePlanSearch"]
@@ -396,7 +396,8 @@ class WholePlanSearch:
         """The candidate view that starts the shortest expected completion (:func:`~seal_cli.sim.policies.
         completion.choose`); ``weights(cls)`` is the belief of a class per free cell of the map. ``also``: a
         view another rule would take now (the greedy place view), weighed among the candidates on the same
-        footing, so the choice is never worse than it under the model."""
+        footing, so the choice is never worse than it under the model, and taken when the model cannot tell
+        it from the best (within the lattice's :data:`~seal_cli.sim.policies.views.SPACING`)."""
         stops = self.targets(agent, binding, target)
         sought = list(dict.fromkeys(c for c, v, _ in stops if v is None))
         n = self.lattice.size
@@ -437,8 +438,10 @@ class WholePlanSearch:
         allowed = [k for k, c in enumerate(self.candidates) if c.cell not in self.used and c.cell != here
                    and np.isfinite(field_[c.cell]) and (c.open is None or c.open in shut)]
         start = int(lattice.node_of(np.asarray([agent.grid.point(here)]))[0])
+        prefer = next((k for k, c in enumerate(self.candidates) if also is not None and c.cell == also.cell
+                       and c.open == also.open), None)
         choice: Choice | None = choose(tables, self.nodes, lattice.distance, beliefs, plan, start=start,
-                                       allowed=allowed)
+                                       allowed=allowed, prefer=prefer, tie=SPACING)
         if choice is None:
             return None
         candidate = self.candidates[choice.view]
