@@ -263,6 +263,25 @@ def review_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read
         yield Case(f"R option {' '.join(argv[:2])} {argv[-1]} {value}", (*argv, value), codes=(1, 2),
                    says=_named(argv[-1]))
 
+    dsl_numbers = {"a category of numbers": FRAME.replace("cup, bowl", "1e309, nan, -5"),
+                   "an element typed by a number": FRAME.replace("theme: container", "theme: 1e309"),
+                   "a default that is a number": FRAME.replace("= spoon", "= -.inf"),
+                   "a fact of a number": FRAME.replace("whisked(theme)", "whisked(1e309)"),
+                   "a frame named by a number": FRAME.replace("frame Whisk", "frame 1e309"),
+                   "a world predicate of a number": FRAME.replace("world holding", "world 99999999999999999999")}
+    for what, source in dsl_numbers.items():
+        yield Case(f"R DSL: {what}", ("validate", "f.frame"), (("f.frame", source.encode()),), codes=(1,),
+                   keep=("f.frame",), says=_at("f.frame"))
+    yaml_numbers = {"a lexical unit of 1e309": FRAME_YAML.replace("[whisk, beat]", "[whisk, 1e309]"),
+                    "a type of NaN": FRAME_YAML.replace("{type: container}", "{type: .nan}"),
+                    "a default of -inf": FRAME_YAML.replace("default: spoon", "default: -.inf"),
+                    "a category member of 0x10": FRAME_YAML.replace("[cup, bowl]", "[cup, 0x10]")}
+    for what, source in yaml_numbers.items():
+        yield Case(f"R frame YAML: {what}", ("validate", "f.yaml"), (("f.yaml", source.encode()),), codes=(1,),
+                   keep=("f.yaml",), says=_at("f.yaml"))
+    for amount in ("1e309", "-5", "nan", "0", "1e400", "two hundred"):
+        yield Case(f"R a command asking for {amount} cups", ("plan", f"put {amount} cups in the sink"), codes=(0, 1))
+
     # -- YAML made hostile -----------------------------------------------------------------------------
     for name, argv, data in (("m.yaml", ("validate", "m.yaml"), _nested(10_000)),
                              ("o.yaml", (*loc, "--observations", "o.yaml"), _nested(10_000)),
