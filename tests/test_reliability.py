@@ -13,8 +13,8 @@ import pytest
 import yaml
 from typer.testing import CliRunner
 
-from seal_cli.bench.reliability import Case, cases, generated_cases, hostile_cases, issue_cases, run_case, summarise
-from seal_cli.bench.reliability_review import review_cases
+from seal_cli.bench.reliability import Case, generated_cases, hostile_cases, issue_cases, run_case, summarise
+from seal_cli.bench.reliability_review import cases, review_cases
 from seal_cli.cli import app
 from seal_cli.errors import SealError
 from seal_cli.fileio import LOADER, Outputs, read_bytes, read_text, split_lines

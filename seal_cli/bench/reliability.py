@@ -35,7 +35,8 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 
-__all__ = ["Case", "Outcome", "cases", "run_case", "run_cases", "summarise"]
+__all__ = ["Case", "Outcome", "generated_cases", "hostile_cases", "issue_cases", "run_case", "run_cases",
+           "summarise"]
 
 TIMEOUT = 60.0
 """Seconds any case may take (the bound every command must finish or refuse within)."""
@@ -684,10 +685,3 @@ def generated_cases(seed: int = 0, count: int = 320) -> Iterator[Case]:
     for i in range(count):
         yield makers[i % len(makers)](i)
 
-
-def cases(seed: int = 0, count: int = 320) -> list[Case]:
-    """The issue's cases, the hostile inputs written by hand, the reviewer's (each with the shape of
-    its message), then ``count`` generated ones."""
-    from seal_cli.bench.reliability_review import review_cases
-
-    return [*issue_cases(), *hostile_cases(), *review_cases(), *generated_cases(seed, count)]

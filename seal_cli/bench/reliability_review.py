@@ -15,6 +15,9 @@ writing option, concurrent writers, SIGINT while writing), standard streams (std
 stdout closed, stdout ``/dev/full``), sizes (10,000 frames, a command of 100,000 characters, a
 file of 5,000 commands), maps whose rooms do not hold their places, unknown map names,
 detections of classes nobody knows, and bags (if the ``ros`` extra is installed).
+
+:func:`cases` is the whole suite: the issue's cases, the hostile inputs written by hand, these,
+then the generated ones.
 """
 
 from __future__ import annotations
@@ -22,9 +25,18 @@ from __future__ import annotations
 import signal
 from collections.abc import Iterator
 
-from seal_cli.bench.reliability import FRAME, FRAME_YAML, OBSERVATIONS, Case, _apartment
+from seal_cli.bench.reliability import (
+    FRAME,
+    FRAME_YAML,
+    OBSERVATIONS,
+    Case,
+    _apartment,
+    generated_cases,
+    hostile_cases,
+    issue_cases,
+)
 
-__all__ = ["review_cases"]
+__all__ = ["cases", "review_cases"]
 
 WHERE = r"(?m)^(error: )?{}:\d+:\d+: "
 """A refusal naming ``file:line:col`` (the file's name filled in, escaped)."""
@@ -514,3 +526,9 @@ def _enforced() -> bool:
     import os
 
     return hasattr(os, "geteuid") and os.geteuid() != 0
+
+
+def cases(seed: int = 0, count: int = 320) -> list[Case]:
+    """The issue's cases, the hostile inputs written by hand, the reviewer's (each with the shape of
+    its message), then ``count`` generated ones."""
+    return [*issue_cases(), *hostile_cases(), *review_cases(), *generated_cases(seed, count)]

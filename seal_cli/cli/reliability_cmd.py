@@ -23,7 +23,8 @@ def reliability(
     files and nondeterminism (all should be zero)."""
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
 
-    from seal_cli.bench.reliability import cases, run_cases, summarise
+    from seal_cli.bench.reliability import run_cases, summarise
+    from seal_cli.bench.reliability_review import cases
 
     todo = [c for c in cases(seed, count) if match is None or match in c.name][:limit]
     with Progress(TextColumn("cases"), BarColumn(), MofNCompleteColumn(), TimeRemainingColumn(),
