@@ -88,3 +88,89 @@ def _row_total(weights, r):
     for k in range(weights.shape[1]):
         total += weights[r, k]
     return total
+
+
+@numba.njit(cache=True, nogil=True)  # type: ignore[untyped-decorator, unused-ignore]
+def bin_points(positions, origin_x, origin_y, inverse_cell, top_u, top_v, weights, ny, mass):
+    """``GridKernelSums._cells`` then ``_bin`` of rows of points (R, P, 2) with weights (R, P) into the stack
+    ``mass`` (flat, zeros; row r's grid starts at ``r · nx · ny``): the same numbers, with no array between."""
+    rows, P = weights.shape
+    cells = mass.shape[0] // rows
+    for corner in range(4):
+        offset = (ny if corner == 1 or corner == 3 else 0) + (1 if corner >= 2 else 0)
+        for r in range(rows):
+            for p in range(P):
+                u = min(max((positions[r, p, 0] - origin_x) * inverse_cell, 0.0), top_u)
+                v = min(max((positions[r, p, 1] - origin_y) * inverse_cell, 0.0), top_v)
+                i = int(u)
+                j = int(v)
+                fu = u - i
+                fv = v - j
+                a = fu if corner == 1 or corner == 3 else 1 - fu
+                b = fv if corner >= 2 else 1 - fv
+                mass[r * cells + i * ny + j + offset] += a * b * weights[r, p]
+
+
+@numba.njit(cache=True, nogil=True)  # type: ignore[untyped-decorator, unused-ignore]
+def order_keys(table, cells, out):
+    """``table[cells + 1] · width + position`` for rows of cells (R, width): ``cell_order.order_of_cells``'s keys."""
+    rows, width = cells.shape
+    for r in range(rows):
+        for k in range(width):
+            out[r, k] = table[cells[r, k] + 1] * width + k
+
+
+@numba.njit(cache=True, nogil=True)  # type: ignore[untyped-decorator, unused-ignore]
+def positions_of(keys, out):
+    """The positions the sorted keys (R, width) carry (each key modulo the width)."""
+    rows, width = keys.shape
+    for r in range(rows):
+        for k in range(width):
+            out[r, k] = keys[r, k] % width
+
+
+@numba.njit(cache=True, nogil=True)  # type: ignore[untyped-decorator, unused-ignore]
+def gather_rows(values, order, out):
+    """``out[r, k] = values[r, order[r, k]]``."""
+    rows, width = order.shape
+    for r in range(rows):
+        for k in range(width):
+            out[r, k] = values[r, order[r, k]]
+
+
+@numba.njit(cache=True, nogil=True)  # type: ignore[untyped-decorator, unused-ignore]
+def gather_resampled(order, chosen, X, cells, gamma, X_out, cells_out, gamma_out, ancestors, copies):
+    """What resampling keeps: draw k of row r is particle ``order[r, chosen[r, k]]`` of the row, with its
+    position, free cell and γ; a draw equal to the one before it is a copy."""
+    rows, count = chosen.shape
+    for r in range(rows):
+        for k in range(count):
+            a = order[r, chosen[r, k]]
+            ancestors[r, k] = a
+            X_out[r, k, 0] = X[r, a, 0]
+            X_out[r, k, 1] = X[r, a, 1]
+            cells_out[r, k] = cells[r, a]
+            gamma_out[r, k] = gamma[r, a]
+            copies[r, k] = k > 0 and chosen[r, k] == chosen[r, k - 1]
+
+
+@numba.njit(cache=True, nogil=True)  # type: ignore[untyped-decorator, unused-ignore]
+def draw_in_rows(weights, row, points, particle):
+    """For each query n, the particle of row ``row[n]`` whose cumulative share (plus the row's number) first
+    exceeds ``points[n]`` — ``np.searchsorted`` over ``FrameBeliefs._near_elements``' flat cdf of every row,
+    clipped into the row — with only the rows asked about summed."""
+    S, P = weights.shape
+    used = np.zeros(S, np.bool_)
+    for n in range(row.shape[0]):
+        used[row[n]] = True
+    cdf = np.empty((S, P))
+    for r in range(S):
+        if used[r]:
+            total = _row_total(weights, r)
+            running = 0.0
+            for k in range(P):
+                running += weights[r, k]
+                cdf[r, k] = running / total + r
+    for n in range(row.shape[0]):
+        k = np.searchsorted(cdf[row[n]], points[n], side="right")
+        particle[n] = min(max(k, 0), P - 1)

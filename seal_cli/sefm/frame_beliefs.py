@@ -59,7 +59,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from seal_cli.maps.model import Map
-from seal_cli.sefm import cell_order
+from seal_cli.sefm import cell_order, compiled
 from seal_cli.sefm.potentials import KernelSums
 from seal_cli.sefm.resampling import ess, grouped_systematic, normalise, systematic
 
@@ -278,18 +278,29 @@ class FrameBeliefs:
         W = normalise(weights)
         width = W.shape[1]
         self.last_ess = ess(W) * (P / width)  # of P + n weighted particles, P are kept: at most P, even weights give P
-        listed = (cell_order.order_of_cells(self.map, cells) + np.arange(F)[:, None] * width).ravel()  # flat indices
-        chosen = systematic(W.ravel()[listed].reshape(F, width), rng, P)
-        ancestors = listed[chosen + np.arange(F)[:, None] * width]
-        self.X = np.take(X.reshape(-1, 2), ancestors, axis=0)  # np.take: a row gather ``[ancestors]`` is ~10× slower
-        self.cell = cells.ravel()[ancestors]
-        self.gamma = gamma.ravel()[ancestors]
+        order = cell_order.order_of_cells(self.map, cells)
+        jit = compiled.kernels()
+        if jit is not None and X.dtype == W.dtype == gamma.dtype == np.float64:  # the same gathers, in one pass
+            listed = np.empty((F, width))
+            jit.gather_rows(W, order, listed)
+            chosen = systematic(listed, rng, P)
+            self.X, self.cell, self.gamma = np.empty((F, P, 2)), np.empty((F, P), cells.dtype), np.empty((F, P))
+            ancestors, copies = np.empty((F, P), np.intp), np.empty((F, P), bool)
+            jit.gather_resampled(order, chosen, X, cells, gamma, self.X, self.cell, self.gamma, ancestors, copies)
+        else:
+            flat = (order + np.arange(F)[:, None] * width).ravel()  # flat indices
+            chosen = systematic(W.ravel()[flat].reshape(F, width), rng, P)
+            listed = flat[chosen + np.arange(F)[:, None] * width]
+            self.X = np.take(X.reshape(-1, 2), listed, axis=0)  # np.take: a row gather ``[listed]`` is ~10× slower
+            self.cell = cells.ravel()[listed]
+            self.gamma = gamma.ravel()[listed]
+            ancestors = listed - np.arange(F)[:, None] * width
+            copies = np.zeros((F, P), bool)
+            copies[:, 1:] = chosen[:, 1:] == chosen[:, :-1]  # the draws are sorted: a copy follows its original
         self.W = np.full((F, P), 1.0 / P)
-        copies = np.zeros((F, P), bool)
-        copies[:, 1:] = chosen[:, 1:] == chosen[:, :-1]  # the draws are sorted: a copy follows its original
         f, k = np.nonzero(copies)
         self._move(f, k, terms, kernel, rng)
-        self._moved = (X, ancestors - np.arange(F)[:, None] * width, copies, carried) if carried else None
+        self._moved = (X, ancestors, copies, carried) if carried else None
 
     def _move(self, f: Index, k: Index, terms: Terms, kernel: KernelSums, rng: np.random.Generator) -> None:
         """Move particles ``k`` of frames ``f`` by the prediction potential, each move accepted by a
@@ -384,10 +395,15 @@ class FrameBeliefs:
         owner = np.repeat(np.arange(len(order)), per_term)
         rank = np.arange(len(owner)) - np.repeat(np.cumsum(per_term) - per_term, per_term)
         row = source_of[owner]
-        cdf = np.cumsum(weights, axis=1)
-        cdf = (cdf / cdf[:, -1:] + np.arange(S)[:, None]).ravel()
         points = row + (rank + rng.random(len(order))[owner]) / np.maximum(per_term[owner], 1)
-        particle = np.clip(np.searchsorted(cdf, points, side="right") - row * P, 0, P - 1)
+        jit = compiled.kernels()
+        if jit is not None and weights.dtype == np.float64 and np.isfinite(points).all():
+            particle = np.empty(len(row), np.intp)
+            jit.draw_in_rows(np.ascontiguousarray(weights), row, points, particle)  # the same, summing only these rows
+        else:
+            cdf = np.cumsum(weights, axis=1)
+            cdf = (cdf / cdf[:, -1:] + np.arange(S)[:, None]).ravel()
+            particle = np.clip(np.searchsorted(cdf, points, side="right") - row * P, 0, P - 1)
         drawn = np.take(positions.reshape(-1, 2), row * P + particle, axis=0)
         return np.asarray(drawn + rng.normal(0.0, self.sigma, drawn.shape))
 

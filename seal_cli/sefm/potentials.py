@@ -222,6 +222,17 @@ class GridKernelSums(KernelSums):
         mass = np.bincount(index, share, minlength=count * nx * ny)
         return np.asarray(mass, dtype=self.grids.dtype).reshape(shape)
 
+    def _bin_points(self, positions: Array, weights: Array) -> Array:
+        """:meth:`_bin` of rows of points (R, P, 2) with weights (R, P), from their positions."""
+        jit = compiled.kernels()
+        if jit is None or positions.dtype != np.float64:
+            return self._bin((len(positions), *self.shape), *self._cells(positions), weights)
+        binned = np.zeros(len(positions) * self.shape[0] * self.shape[1])
+        jit.bin_points(np.ascontiguousarray(positions), float(self.origin[0]), float(self.origin[1]), 1 / self.cell,
+                       float(self._top[0]), float(self._top[1]), np.ascontiguousarray(weights, float),
+                       self.shape[1], binned)
+        return np.asarray(binned, dtype=self.grids.dtype).reshape(len(positions), *self.shape)
+
     def _smooth(self, mass: Array) -> Array:
         """The binned masses (R, nx', ny') smoothed along both grid axes by the Gaussian filter, as two
         products with banded matrices (each entry a tap of the filter's kernel, as ``scipy.ndimage``'s
@@ -246,9 +257,8 @@ class GridKernelSums(KernelSums):
         rows = list(rows)
         for start in range(0, len(rows), SET_CHUNK):
             part = slice(start, start + SET_CHUNK)
-            i, j, fu, fv = self._cells(positions[part])
             chunk = rows[part]
-            self.grids[chunk] = self._smooth(self._bin((len(chunk), *self.shape), i, j, fu, fv, weights[part]))
+            self.grids[chunk] = self._smooth(self._bin_points(positions[part], weights[part]))
             self.factor[chunk] = 1.0
             self.moves[chunk] = 0
             self._versions[chunk] += 1

@@ -140,3 +140,16 @@ def test_without_numba_numpy_runs(numpy_only: None) -> None:
     grid = grid_with_rows(rng)
     out = grid.combine(np.array([[0, 1]]), np.ones((1, 2)), rng.uniform((0, 0), (12, 8), (1, 50, 2)))
     assert out.shape == (1, 50) and out.max() > 0
+
+
+@pytest.mark.parametrize("shape", [(5, 300), (1, 7), (40, 1100), (9,)])
+def test_the_cell_order_is_the_numpy_order(shape: tuple[int, ...], monkeypatch: pytest.MonkeyPatch) -> None:
+    from seal_cli.bench.perf import building
+    from seal_cli.sefm.cell_order import order_of_cells
+
+    m = building(np.random.default_rng(0), classes=3, columns=2, rows=2)
+    cells = np.random.default_rng(1).integers(-1, len(m.free_centres), shape)
+    cells[..., : shape[-1] // 3] = cells[..., :1]    # ties, of a cell or of off free space
+    fast, slow = both(lambda: order_of_cells(m, cells), monkeypatch)
+    np.testing.assert_array_equal(fast, slow)
+    assert fast.shape == shape and fast.dtype == np.intp
