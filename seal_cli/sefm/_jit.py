@@ -174,3 +174,39 @@ def draw_in_rows(weights, row, points, particle):
     for n in range(row.shape[0]):
         k = np.searchsorted(cdf[row[n]], points[n], side="right")
         particle[n] = min(max(k, 0), P - 1)
+
+
+@numba.njit(cache=True, nogil=True)  # type: ignore[untyped-decorator, unused-ignore]
+def assemble(X, fresh_X, cells, fresh_cells, gamma, last_gamma, fresh_gamma, Z, W, P, fresh_weights,
+             X_out, cells_out, gamma_out, weights_out):
+    """The carried particles then the fresh draws of each row, with their γ and weights: the carried ones
+    weigh ``Ẑ · W · P · γ / γ_last`` (0 where γ_last is not positive), as ``FrameBeliefs.update`` forms them."""
+    rows, carried = W.shape
+    fresh = fresh_weights.shape[1]
+    for r in range(rows):
+        for k in range(carried):
+            X_out[r, k, 0] = X[r, k, 0]
+            X_out[r, k, 1] = X[r, k, 1]
+            cells_out[r, k] = cells[r, k]
+            gamma_out[r, k] = gamma[r, k]
+            ratio = gamma[r, k] / last_gamma[r, k] if last_gamma[r, k] > 0 else 0.0
+            weights_out[r, k] = Z[r] * W[r, k] * P * ratio
+        for k in range(fresh):
+            X_out[r, carried + k, 0] = fresh_X[r, k, 0]
+            X_out[r, carried + k, 1] = fresh_X[r, k, 1]
+            cells_out[r, carried + k] = fresh_cells[r, k]
+            gamma_out[r, carried + k] = fresh_gamma[r, k]
+            weights_out[r, carried + k] = fresh_weights[r, k]
+
+
+@numba.njit(cache=True, nogil=True)  # type: ignore[untyped-decorator, unused-ignore]
+def within(points, x, y, reach2, out):
+    """The indices of the points (N, 2) within ``√reach2`` of (x, y), in order, into ``out``; how many."""
+    n = 0
+    for k in range(points.shape[0]):
+        dx = points[k, 0] - x
+        dy = points[k, 1] - y
+        if dx * dx + dy * dy <= reach2:
+            out[n] = k
+            n += 1
+    return n

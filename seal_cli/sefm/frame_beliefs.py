@@ -220,9 +220,20 @@ class FrameBeliefs:
         if F == 0:
             return
         gamma = self._gamma_now(terms, kernel)
-        ratio = np.divide(gamma, self.gamma, out=np.zeros((F, P)), where=self.gamma > 0)
         X, cells, fresh_gamma, fresh_weights = self._fresh(terms, kernel, sources,
                                                            max(1, int(round(self.model.fresh_share * P))), rng)
+        jit = compiled.kernels()
+        arrays = (self.X, X, gamma, self.gamma, fresh_gamma, self.Z, self.W, fresh_weights)
+        if jit is not None and all(a.dtype == np.float64 and a.flags.c_contiguous for a in arrays) \
+                and self.cell.dtype == cells.dtype:  # the same arrays as below, in one pass
+            width = P + X.shape[1]
+            both = (np.empty((F, width, 2)), np.empty((F, width), cells.dtype), np.empty((F, width)),
+                    np.empty((F, width)))
+            jit.assemble(self.X, X, self.cell, cells, gamma, self.gamma, fresh_gamma, self.Z, self.W, P, fresh_weights,
+                         *both)
+            self._resample_move(*both, terms, kernel, rng, carried=P)
+            return
+        ratio = np.divide(gamma, self.gamma, out=np.zeros((F, P)), where=self.gamma > 0)
         self._resample_move(np.concatenate([self.X, X], axis=1), np.concatenate([self.cell, cells], axis=1),
                             np.concatenate([gamma, fresh_gamma], axis=1),
                             np.concatenate([self.Z[:, None] * self.W * P * ratio, fresh_weights], axis=1),
