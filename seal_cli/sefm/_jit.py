@@ -210,3 +210,20 @@ def within(points, x, y, reach2, out):
             out[n] = k
             n += 1
     return n
+
+
+@numba.njit(cache=True, nogil=True)  # type: ignore[untyped-decorator, unused-ignore]
+def gamma(measurement, context, floor, positive, has, c0, free, out):
+    """``FrameBeliefs.gamma_of`` then zero off free space, for float32 potentials: the measurement (as
+    float64) plus the row's floor, 1 where the row has no element; times ``c0 + context`` (in float32)
+    where the row has context."""
+    rows, Q = measurement.shape
+    for r in range(rows):
+        for q in range(Q):
+            if not free[r, q]:
+                out[r, q] = 0.0
+                continue
+            value = np.float64(measurement[r, q]) + floor[r] if positive[r] else 1.0
+            if has[r]:
+                value *= np.float64(c0 + context[r, q])
+            out[r, q] = value

@@ -266,7 +266,7 @@ class FrameBeliefs:
         X = self._draw(terms, sources, n, rng)
         cells = self.map.free_index(X.reshape(-1, 2)).reshape(X.shape[:2]).astype(np.intp)
         measurement, context = self.potentials(terms, kernel, X)
-        gamma = np.where(cells >= 0, self.gamma_of(terms, measurement, context), 0.0)
+        gamma = self.gamma_of(terms, measurement, context, free=cells >= 0)
         return X, cells, gamma, self._importance(terms, gamma, measurement, cells >= 0)
 
     def _importance(self, terms: Terms, gamma: Array, measurement: Array, free: NDArray[np.bool_]) -> Array:
@@ -350,12 +350,24 @@ class FrameBeliefs:
             context[some] = kernel.combine(sources[at], beliefs[at], X[some])
         return measurement, context
 
-    def gamma_of(self, terms: Terms, measurement: Array, context: Array, frames: Index | None = None) -> Array:
-        """γ from the two potentials of the frames ``frames`` (default: every frame), before restricting
-        to free space."""
+    def gamma_of(self, terms: Terms, measurement: Array, context: Array, frames: Index | None = None,
+                 free: NDArray[np.bool_] | None = None) -> Array:
+        """γ from the two potentials of the frames ``frames`` (default: every frame); zero where not
+        ``free`` when it is given."""
         rows = np.arange(terms.frames) if frames is None else frames
         total = terms.belief_total[rows, None]
         floor = self.model.floor_share * total * 2 * np.pi * self.sigma ** 2 / self.free_area
+        jit = compiled.kernels()
+        if jit is not None and free is not None and measurement.dtype == context.dtype == np.float32 \
+                and measurement.ndim == 2:  # the same numbers, in one pass
+            out = np.empty(measurement.shape)
+            jit.gamma(np.ascontiguousarray(measurement), np.ascontiguousarray(context),
+                      np.ascontiguousarray(floor[:, 0]), total[:, 0] > 0, terms.has_context[rows],
+                      np.float32(max(self.model.context_floor, 1e-12)),
+                      np.ascontiguousarray(np.broadcast_to(free, measurement.shape)), out)
+            return out
+        if free is not None:
+            return np.where(free, self.gamma_of(terms, measurement, context, frames), 0.0)
         meas = measurement.astype(float) + floor
         if not (total > 0).all():
             meas = np.where(total > 0, meas, 1.0)
@@ -372,7 +384,7 @@ class FrameBeliefs:
         (``free``, when the points' free cells are known)."""
         if free is None:
             free = self.map.is_free(X.reshape(-1, 2)).reshape(X.shape[:2])
-        return np.where(free, self.gamma_of(terms, *self.potentials(terms, kernel, X, frames), frames), 0.0)
+        return self.gamma_of(terms, *self.potentials(terms, kernel, X, frames), frames, free=free)
 
     def _draw(self, terms: Terms, sources: tuple[Array, Array], n: int, rng: np.random.Generator) -> Array:
         """``n`` points per frame from the proposal g.
