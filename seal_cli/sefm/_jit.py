@@ -227,3 +227,38 @@ def gamma(measurement, context, floor, positive, has, c0, free, out):
             if has[r]:
                 value *= np.float64(c0 + context[r, q])
             out[r, q] = value
+
+
+def warm() -> None:
+    """Call every loop once on tiny arrays of the types the engine passes, so that each is compiled (or read
+    from numba's cache on disk) now, when the kernels are first asked for, not inside a timed update."""
+    f8, f4, ip = np.float64, np.float32, np.intp
+
+    def frozen(a: np.ndarray) -> np.ndarray:  # read-only arrays are a type of their own to numba
+        a.setflags(write=False)
+        return a
+
+    grids = np.zeros((1, 3, 3), f4)
+    read(grids, 0.0, 0.0, 1.0, 1.0, 1.0, np.zeros((1, 1), ip), np.ones((1, 1), f4), np.zeros((1, 1, 2)),
+         np.empty((1, 1), f4))
+    for spread in (np.ones(1), frozen(np.ones(1))):  # (broadcast weights are read-only)
+        bin_corners(np.zeros(1, ip), 3, np.zeros(1), np.zeros(1), spread, np.zeros(9))
+    bin_points(np.zeros((1, 1, 2)), 0.0, 0.0, 1.0, 1.0, 1.0, np.ones((1, 1)), 3, np.zeros(9))
+    systematic(np.ones((1, 2)), np.zeros((1, 1))[:, 0], 2, np.empty((1, 2), ip))
+    for key in (np.int32, np.int64):
+        keys = np.empty((1, 1), key)
+        order_keys(frozen(np.zeros(2, key)), np.zeros((1, 1), ip), keys)  # (the cached table is read-only)
+        positions_of(keys, np.empty((1, 1), ip))
+    gather_rows(np.zeros((1, 1)), np.zeros((1, 1), ip), np.empty((1, 1)))
+    gather_resampled(np.zeros((1, 1), ip), np.zeros((1, 1), ip), np.zeros((1, 1, 2)), np.zeros((1, 1), ip),
+                     np.zeros((1, 1)), np.empty((1, 1, 2)), np.empty((1, 1), ip), np.empty((1, 1)),
+                     np.empty((1, 1), ip),
+                     np.empty((1, 1), np.bool_))
+    draw_in_rows(np.ones((1, 1)), np.zeros(1, ip), np.zeros(1), np.empty(1, ip))
+    assemble(np.zeros((1, 1, 2)), np.zeros((1, 1, 2)), np.zeros((1, 1), ip), np.zeros((1, 1), ip), np.zeros((1, 1)),
+             np.zeros((1, 1)), np.zeros((1, 1)), np.ones(1), np.ones((1, 1)), 1, np.zeros((1, 1)),
+             np.empty((1, 2, 2)), np.empty((1, 2), ip), np.empty((1, 2)), np.empty((1, 2)))
+    within(np.zeros((1, 2)), 0.0, 0.0, 1.0, np.empty(1, ip))
+    for free in (np.ones((1, 1), np.bool_), frozen(np.ones((1, 1), np.bool_))):  # (a broadcast mask is read-only)
+        gamma(np.zeros((1, 1), f4), np.zeros((1, 1), f4), np.zeros(1), np.ones(1, np.bool_), np.ones(1, np.bool_),
+              f4(1.0), free, np.empty((1, 1), f8))

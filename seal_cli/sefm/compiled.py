@@ -8,7 +8,9 @@ binning of particles onto the grids (``GridKernelSums._bin``) and systematic res
 environment variable ``SEAL_NUMPY_ONLY=1`` keeps numpy even when numba is there (to compare the two).
 
 numba is imported on first use, not with the package: ``seal --version`` and ``seal parse`` never pay
-for it, a run that builds SeFM pays ~0.3 s once (the compiled loops are cached on disk).
+for it, a run that builds SeFM pays ~0.3 s once. The loops are compiled when first asked for (all at
+once, :func:`seal_cli.sefm._jit.warm`: never inside an update) and cached on disk by numba, so later
+processes read them back instead (the first run after installing compiles them: a few seconds).
 """
 
 from __future__ import annotations
@@ -30,4 +32,5 @@ def kernels() -> ModuleType | None:
         from seal_cli.sefm import _jit
     except ImportError:
         return None
+    _jit.warm()
     return _jit
