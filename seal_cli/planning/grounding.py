@@ -71,6 +71,10 @@ DROPPED = frozenset({"the", "a", "an", "my", "our", "your", "his", "her", "their
                      "those", "some", "any"})
 
 
+WHERE_TYPES = frozenset({"location", "place", "room"})
+"""The element types that say where to be (Go's goal, Find's ground), not what to act on."""
+
+
 class Refusal(SealError):
     """A command that names a room or a fixed thing the map does not have."""
 
@@ -173,7 +177,9 @@ class MapNames:
         if not words:
             return None
         thing, where = _split(words)
-        found = self.candidates(thing, kinds, prefix=element_type != OBJECT)   # "a coffee" is no coffee machine
+        # the first words of a compound name call it only where to go ("go to the tv": the tv stand);
+        # a thing is named by its head ("a coffee" is no coffee machine, "turn off the tv" no tv stand)
+        found = self.candidates(thing, kinds, prefix=element_type in WHERE_TYPES)
         if not found:
             return None
         if where and (room := self._room_of_words(where)) is not None:
