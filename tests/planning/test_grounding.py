@@ -123,3 +123,13 @@ def test_a_frame_that_must_hold_a_fixed_thing_is_refused(library: object) -> Non
 
     with pytest.raises(SealError, match=r"LookAt needs to hold its theme, and 'the fridge' \(fridge_1\) is fixed"):
         plan("check the fridge", library, map=load_map("apartment").known())  # type: ignore[arg-type]
+
+
+def test_a_places_own_name_calls_it_before_another_places_synonym(library: Library) -> None:
+    """The cafe has a kitchen sink and a restroom washbasin, and "washbasin" is a synonym of sink:
+    "the washbasin" is the washbasin, "the sink" the sink; on a map with only a sink, the synonym
+    still calls the sink."""
+    cafe = load_map("cafe")
+    assert [str(s) for s in plan_text("go to the washbasin", library, map=cafe).steps] == ["Go(goal=washbasin_1)"]
+    assert [str(s) for s in plan_text("go to the sink", library, map=cafe).steps] == ["Go(goal=sink_1)"]
+    assert steps("go to the washbasin", library) == ["Go(goal=sink_1)"]
