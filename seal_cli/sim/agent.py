@@ -1000,7 +1000,9 @@ class Agent:
         open?": "no: fridge_1 is closed"), from what it sees (:data:`STATE_WORDS`); what it cannot
         sense, or a state the thing never has, is said as such."""
         item = self.world.items[item_id]
-        state, holds = STATE_WORDS.get(word.lower(), (None, True))
+        words = word.lower().split() or [""]         # "still on": on; "not open": whether it is closed
+        state, holds = STATE_WORDS.get(words[-1], (None, True))
+        holds = holds != ("not" in words[:-1] or "n't" in words[:-1])
         if state is None:
             return (f"it cannot tell whether {item_id} is {word}: it sees whether a thing is "
                     "open, on, clean, hot, cold, sliced or empty")
@@ -1014,8 +1016,8 @@ class Agent:
             return f"{'yes' if yes else 'no'}: " + (f"{item_id} holds {', '.join(inside)}" if inside
                                                      else f"{item_id} is empty")
         now = item.is_open if state == "open" else state in item.states
-        said = {"open": ("open", "closed"), "on": ("on", "off")}.get(state, (state, f"not {state}"))
-        return f"{'yes' if now == holds else 'no'}: {item_id} is {said[0] if now else said[1]}"
+        yes_no = {"open": ("open", "closed"), "on": ("on", "off")}.get(state, (state, f"not {state}"))
+        return f"{'yes' if now == holds else 'no'}: {item_id} is {yes_no[0] if now else yes_no[1]}"
 
     def how_many(self, value: str, binding: Binding) -> str:
         """How many things of a kind there are where the command says: in a room, every one the
