@@ -201,16 +201,18 @@ def _short(text: str) -> str:
 
 
 def _acts(records: Sequence[Record]) -> list[tuple[tuple[float, float, float], str]]:
-    """What the robot did, to label where it did it: each action, and where a frame that only drives
-    (Go) ended, with the drive's line ("goes to the bedroom (by desk_1)", its distance left off)."""
+    """What the robot did, to label where it did it: each action and answer, and where a frame that only
+    drives (Go) ended, with the drive's line ("goes to the bedroom (by desk_1)", its distance left off)."""
     out: list[tuple[tuple[float, float, float], str]] = []
     drive: Record | None = None
     acted = False
     for record in records:
         if record.kind == "frame":
             drive, acted = None, False
-        elif record.kind == "act":
-            out.append((record.pose, record.text))
+        elif record.kind in ("act", "answer"):     # what it did, and what it found out there
+            said = record.text.split(": ", 1)[-1]      # "answer: 1 cup ..." and "counted: 1 cup ...": once
+            if not (out and out[-1][1].split(": ", 1)[-1] == said and ": " in record.text):
+                out.append((record.pose, record.text))
             acted = True
         elif record.kind == "go":
             drive = record

@@ -79,3 +79,9 @@ def test_the_png_labels_where_a_go_ended_as_well_as_each_action(library: Any) ->
     assert labels[1:] == ["is with ben", 'said "time"']
     bedroom = apartment.room("bedroom")
     assert all(bedroom.contains([pose[:2]])[0] for pose, _ in _acts(agent.records))
+    asked, counted = pipeline.run_on_map(apartment, "how many cups are in the family room?", library,
+                                         make_policy("oracle"), rng=np.random.default_rng(0))
+    assert [text for _, text in _acts(asked.records)] == [f"answer: {counted.answer}"]   # said once
+    state, _ = pipeline.run_on_map(apartment, "is the fridge open?", library, make_policy("oracle"),
+                                   rng=np.random.default_rng(0))
+    assert [text for _, text in _acts(state.records)] == ["looked at fridge_1", "answer: no: fridge_1 is closed"]
