@@ -1,7 +1,7 @@
-"""Draw the occupancy images of the example houses ``townhouse.yaml`` and ``office_floor.yaml``
-(run once; the PGMs are committed next to this script).
+"""Draw the occupancy images of the example houses ``townhouse.yaml``, ``office_floor.yaml`` and
+``cafe.yaml`` (run once; the PGMs are committed next to this script).
 
-    python maps/make_houses.py          # rewrites maps/townhouse.pgm and maps/office_floor.pgm
+    python maps/make_houses.py          # rewrites maps/townhouse.pgm, maps/office_floor.pgm, maps/cafe.pgm
 
 Each house is a plan on paper, as a user would draw their own: the outer walls, the inner walls
 (centre lines, each with its doors as gaps), and the solid blocks a laser sees (a car, a server
@@ -72,7 +72,22 @@ OFFICE_FLOOR = House(
     ),
 )
 
-HOUSES = (COTTAGE, OFFICE_FLOOR)
+CAFE = House(
+    "cafe", (0.0, 0.0, 16.0, 10.0),
+    walls=(
+        ((10.0, 0.0, 10.0, 6.0), ((2.0, 5.0),)),               # seating area | bar: a wide opening
+        ((0.0, 6.0, 16.0, 6.0), ((1.0, 2.0), (11.0, 12.0), (14.5, 15.5))),  # restroom; kitchen, office from the bar
+        ((3.0, 6.0, 3.0, 10.0), ()),                           # restroom | storeroom
+        ((8.0, 6.0, 8.0, 10.0), ((7.0, 8.0),)),                # storeroom | kitchen
+        ((13.0, 6.0, 13.0, 10.0), ()),                         # kitchen | office
+    ),
+    blocks=(
+        (5.0, 2.8, 5.4, 3.2),      # a pillar in the seating area
+        (3.1, 9.55, 7.9, 9.925),   # the storeroom's shelving rack along its north wall
+    ),
+)
+
+HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE)
 
 
 def draw(house: House) -> np.ndarray:

@@ -8,7 +8,8 @@ map file, by its path from the cases file), and what must come of it:
 - ``plan``: the steps ``seal plan --map`` must print (frames and their map ids, in order); or
   ``refused``: words the refusal must contain (a room the map lacks, a fixed thing to pick up);
 - ``run``: how ``seal run`` must end: ``done`` (every frame executed) or ``not_found`` (the
-  robot searched and the thing is not in the house); ``answer``: words the answer must contain.
+  robot searched and the thing is not in the house); ``answer``: words the answer must contain;
+  ``says``: words a line the run prints must contain ("put spoon_1 in sink_1").
 
 A case is **plan-right** when the plan is exactly the expected one (or the refusal says what
 it must), and **run-completed** when the run ends as expected. The cases are data
@@ -46,6 +47,7 @@ class Case:
     answer: str | None = None
     file: str | None = None
     """The map file, for a map that is not one of :data:`MAPS` (a shipped map, or a user's own)."""
+    says: str | None = None
 
     def __post_init__(self) -> None:
         if (self.plan is None) == (self.refused is None):
@@ -69,8 +71,8 @@ class Verdict:
     path_m: float = 0.0
 
 
-SHIPPED = ("e2e.yaml", "e2e_houses.yaml")
-"""The shipped suite's files in ``suites/``: the apartment and the AWS house; the example houses."""
+SHIPPED = ("e2e.yaml", "e2e_houses.yaml", "e2e_cafe.yaml")
+"""The shipped suite's files in ``suites/``: the apartment and the AWS house; the example houses; the cafe."""
 
 
 def load_cases(path: str | Path | None = None) -> list[Case]:
@@ -96,7 +98,7 @@ def _load(path: Path) -> list[Case]:
         plan = entry.get("plan")
         cases.append(Case(entry["map"], entry["text"], tuple(plan) if plan is not None else None,
                           entry.get("refused"), entry.get("run"), entry.get("answer"),
-                          _map_file(entry["map"], path.parent, number, path)))
+                          _map_file(entry["map"], path.parent, number, path), entry.get("says")))
     return cases
 
 
@@ -167,12 +169,13 @@ def judge(case: Case, map_file: str, seed: int, particles: int, framelib: Sequen
     if case.run is None or case.refused is not None:
         return Verdict(case.map, case.text, right, got)
     try:
-        _, result = run_on_map(the_map, case.text, library, make_policy("sefm", particles),
+        agent, result = run_on_map(the_map, case.text, library, make_policy("sefm", particles),
                                rng=np.random.default_rng(seed), budget=Budget(steps=400, metres=300.0))
     except SealError as error:
         return Verdict(case.map, case.text, right, got, True, False, f"refused: {error.message}")
     ended = result.completed if case.run == "done" else (not result.completed and result.why.value == "not_found")
     answered = case.answer is None or (result.answer is not None and case.answer in result.answer)
+    answered = answered and (case.says is None or any(case.says in r.text for r in agent.records))
     return Verdict(case.map, case.text, right, got, True, ended and answered, result.reason, result.answer,
                    round(result.path_m, 2))
 

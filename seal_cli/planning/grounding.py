@@ -71,6 +71,10 @@ DROPPED = frozenset({"the", "a", "an", "my", "our", "your", "his", "her", "their
                      "those", "some", "any"})
 
 
+WHERE_TYPES = frozenset({"location", "place", "room"})
+"""The element types that say where to be (Go's goal, Find's ground), not what to act on."""
+
+
 class Refusal(SealError):
     """A command that names a room or a fixed thing the map does not have."""
 
@@ -99,6 +103,10 @@ class Referent:
     """The word sequences that call it surely, best first."""
     heads: frozenset[str]
     """The single words that call it less surely (the last word of a name)."""
+    own: int = 0
+    """How many of ``names`` are its own (its name and class); the rest are its class's synonyms,
+    which call it less surely than another thing's own name ("the washbasin": washbasin_1, not the
+    sink, whose synonym it is)."""
 
 
 def _split(words: tuple[str, ...]) -> tuple[tuple[str, ...], tuple[str, ...]]:
@@ -130,9 +138,10 @@ class MapNames:
             spelled = [re.sub(r"[_ ]?\d+$", "", place.name), place.name, place.cls,
                        *synonyms.get(place.cls, ())]
             names = tuple(dict.fromkeys(w for w in map(words_of, spelled) if w))
+            own = len(dict.fromkeys(w for w in map(words_of, spelled[:3]) if w))
             heads = frozenset(n[-1] for n in map(words_of, spelled[:3]) if n)     # not a synonym's: a "tv table"
             found.append(Referent(class_key(place.name), "place", place.cls,
-                                  class_key(place.room) if place.room else None, names, heads))
+                                  class_key(place.room) if place.room else None, names, heads, own))
         for person in self.map.people:
             room_name = person.room or self.map._room_name(self.map.person_at(person))
             found.append(Referent(person.key, "person", "person", class_key(room_name) if room_name else None,
@@ -144,13 +153,15 @@ class MapNames:
 
     @staticmethod
     def _score(referent: Referent, words: tuple[str, ...], prefix: bool = True) -> int:
-        """How surely the words call the referent: 2 + the length of a name they end with, 1 for
-        a head word alone (or, with ``prefix``, the first words of a compound name), 0 for nothing."""
+        """How surely the words call the referent: twice (2 + the length of a name they end with),
+        and 1 more for its own name than for a synonym's; 1 for a head word alone (or, with ``prefix``,
+        the first words of a compound name); 0 for nothing."""
         best = 0
-        for name in referent.names:
+        for k, name in enumerate(referent.names):
             said = len(name) <= len(words) and words[len(words) - len(name):] == name
-            if said or len(name) > 1 and words[-1:] == ("".join(name),):
-                best = max(best, 2 + len(name))
+            joined = len(name) > 1 and words[-1:] == ("".join(name),)       # "washbasin": wash basin, one word
+            if said or joined:
+                best = max(best, 2 * (2 + (len(name) if said else 1)) + (k < referent.own or not referent.own))
         if not best and words and words[-1] in referent.heads:
             best = 1
         if not best and prefix and words and any(len(name) > len(words) and name[:len(words)] == words
@@ -173,7 +184,9 @@ class MapNames:
         if not words:
             return None
         thing, where = _split(words)
-        found = self.candidates(thing, kinds, prefix=element_type != OBJECT)   # "a coffee" is no coffee machine
+        # the first words of a compound name call it only where to go ("go to the tv": the tv stand);
+        # a thing is named by its head ("a coffee" is no coffee machine, "turn off the tv" no tv stand)
+        found = self.candidates(thing, kinds, prefix=element_type in WHERE_TYPES)
         if not found:
             return None
         if where and (room := self._room_of_words(where)) is not None:

@@ -201,14 +201,16 @@ def _said(phrase: Phrase | None, name: str) -> str:
 
 
 def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], things: Things,
-            text: str, category: str = "thing") -> tuple[str, ...]:
+            text: str, category: str = "thing", asked: bool = False) -> tuple[str, ...]:
     """The things a phrase names: its antecedent's for a pronoun, else the map's thing it calls,
-    else its class (counted if asked); every conjunct's for a coordination."""
+    else its class (counted if asked); every conjunct's for a coordination. ``asked``: the phrase is
+    what a question asks about ("how many chairs ...?", "is there a chair ...?"), so a fixed thing
+    the map lacks is no refusal but a class to look for (the answer may be none)."""
     from seal_cli.language.english import PERSON_PRONOUNS, PRONOUNS
 
     if phrase.conjuncts:        # "the apple and the pear": both
         return tuple(dict.fromkeys(v for c in phrase.conjuncts
-                                   for v in _values(c, earlier, things, text, category)))
+                                   for v in _values(c, earlier, things, text, category, asked)))
     if phrase.refers_to is not None:
         index, role = phrase.refers_to
         if 0 <= index < len(earlier) and role in earlier[index]:
@@ -219,7 +221,7 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
     if word in PRONOUNS and word not in PERSON_PRONOUNS and word not in INDEFINITE:
         raise _located(f"cannot tell what {phrase.text!r} refers to: nothing before it in the command fits",
                        phrase, text)
-    if things.names is not None and (on_map := _on_map(phrase, things, text, category)) is not None:
+    if things.names is not None and (on_map := _on_map(phrase, things, text, category, asked)) is not None:
         return on_map
     value = phrase.cls or phrase.head
     if category in ("message", "question"):    # what is said, as a name: "what's on it?" what_s_on_it
@@ -247,7 +249,8 @@ def _names(phrase: Phrase, cls: str, things: Things) -> bool:
     return any(noun_lemma(class_words(n)[-1]) in said for n in names if class_words(n))
 
 
-def _on_map(phrase: Phrase, things: Things, text: str, category: str) -> tuple[str, ...] | None:
+def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: bool = False
+            ) -> tuple[str, ...] | None:
     """The map's person, room or place a phrase names (see :mod:`seal_cli.planning.grounding`);
     None for an object, which the robot must find."""
     from seal_cli.planning.grounding import HERE, SPEAKER_WORDS, person_value
@@ -273,7 +276,7 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str) -> tuple[s
         return (found.id,)
     if things.taxonomy.is_a(phrase.cls or phrase.head, "person") is True:
         return None
-    refused = names.refusal(phrase.text, phrase.cls)
+    refused = None if asked else names.refusal(phrase.text, phrase.cls)
     if refused is not None:
         raise _located(refused.message, phrase, text)
     return None
@@ -361,7 +364,7 @@ def _counted_roles(frame: Frame) -> set[str]:
 
 def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Binding]:
     """The grounded frames a parse commands, in order; a counted element repeats its frame."""
-    from seal_cli.planning.questions import asks_whether
+    from seal_cli.planning.questions import asks_whether, looking
 
     earlier: list[dict[str, tuple[str, ...]]] = []
     bindings: list[Binding] = []
@@ -369,7 +372,10 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         if _in_a_name(evoked, parse, things):
             continue
         frame = library.frame(evoked.frame)
-        values = {role: _values(phrase, earlier, things, parse.text, frame.element(role).type)
+        if getattr(evoked, "asked", None) and "theme" in frame.roles:     # "is the fridge open?": looked at
+            frame = looking(frame)
+        asked = _counted_roles(frame) | ({"theme"} if asks_whether(parse.text, evoked) else set())
+        values = {role: _values(phrase, earlier, things, parse.text, frame.element(role).type, role in asked)
                   for role, phrase in evoked.elements.items()}
         for role in _counted_roles(frame):      # "count the cups": one Count of the class
             if role in values:
@@ -466,8 +472,10 @@ def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:
                     warnings.setdefault(f"nobody on the map {m.name} is called {value}: seal run will search "
                                         "the whole house for them", None)
             elif cls not in known:
+                ground = binding.elements.get("ground")
+                where = f"look for it in {ground}" if ground and role != "ground" else "search the whole house for it"
                 warnings.setdefault(f"the map {m.name} knows nothing of {cls} (no prior, object or place names "
-                                    "it): seal run will search the whole house for it", None)
+                                    f"it): seal run will {where}", None)
     return list(warnings)
 
 

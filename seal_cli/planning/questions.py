@@ -11,7 +11,11 @@ Tell with the question as its message — but the *kind* of answer a person expe
 - ``what``: a Tell whose message asks what is on, in or at a place or in a room ("what's in the
   fridge?", "who is in the kitchen?"), or a Find of nothing in particular somewhere ("look in the
   fridge"); ``about`` is the map's place or room, ``relation`` the word that relates them. The
-  robot goes and looks, and the answer lists what it saw.
+  robot goes and looks, and the answer lists what it saw;
+- ``state``: a yes/no question about a thing's state ("is the fridge open?", "check if the stove is
+  on"), which the parser gives as LookAt with the state asked (``Evoked.asked``); ``relation`` is the
+  state word. The thing is looked at where it is (:func:`looking`: not taken into the hand), and the
+  answer is yes or no with what the robot saw (:data:`STATE_WORDS`).
 
 A question is read from words only (the frame's span in the text, the message's words) and
 grounded with :class:`~seal_cli.planning.grounding.MapNames`: never from the map's objects.
@@ -20,16 +24,25 @@ grounded with :class:`~seal_cli.planning.grounding.MapNames`: never from the map
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
-from seal_cli.frames.model import Binding
+from seal_cli.frames.model import Action, Binding, Frame
 from seal_cli.language.english import CHECK_WHETHER
 from seal_cli.language.values import Evoked, Parse
 from seal_cli.planning.grounding import MapNames, words_of
 
-__all__ = ["KINDS", "Question", "asks_whether", "read_questions"]
+__all__ = ["KINDS", "STATE_WORDS", "Question", "asks_whether", "looking", "read_questions"]
 
-KINDS = ("where", "whether", "how_many", "what")
+KINDS = ("where", "whether", "how_many", "what", "state")
+
+STATE_WORDS = {"open": ("open", True), "opened": ("open", True), "closed": ("open", False),
+               "shut": ("open", False), "on": ("on", True), "running": ("on", True), "off": ("on", False),
+               "clean": ("clean", True), "washed": ("clean", True), "dirty": ("clean", False),
+               "hot": ("hot", True), "warm": ("hot", True), "heated": ("hot", True), "cold": ("cold", True),
+               "cool": ("cold", True), "chilled": ("cold", True), "sliced": ("sliced", True),
+               "cut": ("sliced", True), "empty": ("empty", True), "full": ("empty", False)}
+"""A state word a question asks → the simulator's state (:data:`seal_cli.sim.world.STATES`, or
+``empty``: holds nothing) and whether the word says it holds. English, not any corpus's."""
 
 ASKING_WHETHER = frozenset({"is", "are", "was", "were"})
 """A Find whose words start with one of these asks whether ("*is* there a cup in the kitchen?")."""
@@ -49,13 +62,23 @@ class Question:
     about: str | None = None
     """``what``: the map id of the place or room asked about."""
     relation: str = "on"
-    """``what``: on, in or at (as the question says it)."""
+    """``what``: on, in or at (as the question says it); ``state``: the state word asked."""
     asks_for: str = "thing"
     """``what``: thing (what is there) or person (who is there)."""
 
     def __post_init__(self) -> None:
         if self.kind not in KINDS:
             raise ValueError(f"a question is one of {', '.join(KINDS)}, not {self.kind!r}")
+
+
+def looking(frame: Frame) -> Frame:
+    """A frame as a state question needs it: its theme looked at where it stands, driven up to first
+    (LookAt's ``holding(theme)`` is ALFRED's looking at a thing in the light; "is the fridge open?"
+    does not pick the fridge up)."""
+    kept = tuple(f for f in frame.preconditions if "theme" not in f.args)
+    actions = frame.actions if any(a.name == "navigate" and a.args == ("theme",) for a in frame.actions) \
+        else (Action("navigate", ("theme",)), *frame.actions)
+    return replace(frame, preconditions=kept, actions=actions)
 
 
 def asks_whether(text: str, evoked: Evoked) -> bool:
@@ -108,7 +131,9 @@ def read_questions(parse: Parse, commanded: Sequence[Binding], names: MapNames |
         while k < len(commanded) and commanded[k].frame.name == evoked.frame:
             k += 1
         question: Question | None = None
-        if evoked.frame == "Find" and "theme" not in evoked.elements:    # "look in the fridge": what is there
+        if (asked := getattr(evoked, "asked", None)) and "theme" in evoked.elements:   # "is the fridge open?"
+            question = Question("state", relation=asked)
+        elif evoked.frame == "Find" and "theme" not in evoked.elements:    # "look in the fridge": what is there
             question = _looked_at(commanded[start:k], names)
         elif evoked.frame == "Find":
             question = Question("whether" if asks_whether(parse.text, evoked) else "where")

@@ -37,7 +37,7 @@ from numpy.typing import ArrayLike, NDArray
 from seal_cli.errors import SealError
 from seal_cli.frames.model import Binding
 from seal_cli.frames.taxonomy import class_key
-from seal_cli.maps.model import Map
+from seal_cli.maps.model import SPEAKER, Map
 from seal_cli.planning.state import State
 from seal_cli.sefm import compiled
 from seal_cli.sefm.frame_beliefs import FrameBeliefs, FrameModel, Terms
@@ -173,11 +173,15 @@ class SeFM:
         return tuple(seen.values())
 
     def _source(self, value: str) -> Source:
-        """A value names a place or room of the map by name, else a thing whose class the state knows
+        """A value names a place, room or person of the map by name, else a thing whose class the state knows
         (``cup_2`` is a cup), else a class."""
-        if self.map.place(value) is not None or self.map.room_id(value) is not None:
+        if self.map.place(value) is not None or self.map.room_id(value) is not None or self._someone(value):
             return source_for(self.map, value)
         return source_for(self.map, self.state.class_of(value))
+
+    def _someone(self, value: str) -> bool:
+        """Whether a value is a person the map places, or the speaker ("me"): known where they stand."""
+        return self.map.person(value) is not None or class_key(value) == SPEAKER
 
     @property
     def frame_ids(self) -> tuple[str, ...]:

@@ -55,7 +55,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from seal_cli.frames.taxonomy import class_key
-from seal_cli.maps.model import OUTSIDE, Map, Sensor
+from seal_cli.maps.model import OUTSIDE, SPEAKER, Map, Sensor
 from seal_cli.sefm import cell_order
 from seal_cli.sefm.resampling import ess, normalise, stratified, systematic
 
@@ -84,8 +84,12 @@ class Source:
 
 
 def source_for(m: Map, value: str) -> Source:
-    """What a value names: a place (by name, then by class), a room, or else an object class."""
+    """What a value names: a place (by name, then by class), a room, a person the map places (known
+    where they stand, as a place is: "me" is the speaker), or else an object class."""
     key = class_key(value)
+    person = m.person(value)
+    if person is not None or key == SPEAKER:
+        return Source(key, "place", (m.person_at(person) if person is not None else m.speaker_at,))
     place = m.place(value)
     places = (place,) if place is not None else m.places_of_class(value)
     if places:

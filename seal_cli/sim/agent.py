@@ -41,7 +41,7 @@ from seal_cli.frames.model import Action, Binding, Fact
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.model import SPEAKER, Map
 from seal_cli.planning.grounding import kind_of, spoken
-from seal_cli.planning.questions import Question
+from seal_cli.planning.questions import STATE_WORDS, Question
 from seal_cli.planning.state import State
 from seal_cli.sim.navigation import Cell, Grid
 from seal_cli.sim.policies.base import Policy
@@ -988,9 +988,36 @@ class Agent:
         self.say("act" if outcome.ok else "fail", outcome.message, action=action.name, args=args)
         if outcome.ok:
             self._after(action.name, args, binding)
+            question = self.questions.get(binding)
+            if action.name == "look_at" and question is not None and question.kind == "state":
+                self.answer(self.state_answer(args[0], question.relation))
         elif outcome.reason in (Reason.OUT_OF_REACH, Reason.BEHIND_WALL):
             self.look()
         return outcome
+
+    def state_answer(self, item_id: str, word: str) -> str:
+        """Whether a thing the robot is looking at is in the state a question asks ("is the fridge
+        open?": "no: fridge_1 is closed"), from what it sees (:data:`STATE_WORDS`); what it cannot
+        sense, or a state the thing never has, is said as such."""
+        item = self.world.items[item_id]
+        words = word.lower().split() or [""]         # "still on": on; "not open": whether it is closed
+        state, holds = STATE_WORDS.get(words[-1], (None, True))
+        holds = holds != ("not" in words[:-1] or "n't" in words[:-1])
+        if state is None:
+            return (f"it cannot tell whether {item_id} is {word}: it sees whether a thing is "
+                    "open, on, clean, hot, cold, sliced or empty")
+        if state == "open" and not item.openable or state == "on" and not item.toggleable:
+            return f"{item_id} does not {'open or close' if state == 'open' else 'switch on or off'}"
+        if state == "empty":
+            if item.openable and not item.is_open:
+                self.peek(item_id)            # looks inside, and closes it again
+            inside = sorted(i.id for i in self.world.items.values() if i.parent == item_id and i.id in self.known)
+            yes = not inside if holds else bool(inside)
+            return f"{'yes' if yes else 'no'}: " + (f"{item_id} holds {', '.join(inside)}" if inside
+                                                     else f"{item_id} is empty")
+        now = item.is_open if state == "open" else state in item.states
+        yes_no = {"open": ("open", "closed"), "on": ("on", "off")}.get(state, (state, f"not {state}"))
+        return f"{'yes' if now == holds else 'no'}: {item_id} is {yes_no[0] if now else yes_no[1]}"
 
     def how_many(self, value: str, binding: Binding) -> str:
         """How many things of a kind there are where the command says: in a room, every one the
@@ -1000,11 +1027,13 @@ class Agent:
         key = self.class_of(value)
         ground = binding.elements.get("ground")
         noun = key.replace("_", " ")
+        if self._is_place_class(key) and (ground is None or self.room(ground) is not None):
+            return self._count_places(key, noun, ground)      # the map says where its furniture stands
         if ground is not None and (self._is_place(ground) or self.room(ground) is not None and self.sweeper):
             where, found, complete = self.look_over(ground)
-            n = sum(1 for k in found if k.cls == key)
+            n = sum(1 for k in found if k.cls == key) + len(self._fixed_in(key, ground))
             note = "" if complete else f" seen, but it could not look all over it ({complete.message})"
-            return f"{n} {noun}{'' if n == 1 else 's'} {where}{note}"
+            return f"{n} {noun}{'' if n == 1 else 's'} {where}{note}{self._none_known(key, noun, n)}"
         if ground is None and self.sweeper is not None and self.scene.map.rooms:
             return self._count_in_house(key, noun)
         n = sum(class_key(d.cls) == key for d in self.world.observe())
@@ -1026,9 +1055,37 @@ class Agent:
             if self.exhausted() is not None:
                 unseen.extend(r.name.replace("_", " ") for r in left)
                 break
-        n = sum(1 for k in self.known.values() if k.movable and k.cls == key and k.id in self.world.items)
+        n = sum(1 for k in self.known.values() if k.cls == key and k.id in self.world.items)
         note = f" seen, but it could not look all over {', '.join(unseen)}" if unseen else ""
-        return f"{n} {noun}{'' if n == 1 else 's'} in the house{note}"
+        return f"{n} {noun}{'' if n == 1 else 's'} in the house{note}{self._none_known(key, noun, n)}"
+
+    def _is_place_class(self, key: str) -> bool:
+        """Whether a class is one of the map's places' (a sofa, a bed): known from the map, not sought."""
+        return any(not k.movable and k.cls == key for k in self.known.values())
+
+    def _count_places(self, key: str, noun: str, ground: str | None) -> str:
+        """How many places of a class the map has, in a room or in the house, without a look."""
+        if ground is None:
+            n = sum(1 for k in self.known.values() if not k.movable and k.cls == key and k.id in self.world.items)
+            return f"{n} {noun}{'' if n == 1 else 's'} in the house, by the map"
+        n = len(self._fixed_in(key, ground))
+        return f"{n} {noun}{'' if n == 1 else 's'} in the {ground.replace('_', ' ')}, by the map"
+
+    def _fixed_in(self, key: str, ground: str) -> list[str]:
+        """The places of a class in a room ("how many beds are in the bedroom?"): the map says where
+        furniture stands, so they are counted without being seen; none at a place."""
+        room = self.room(ground)
+        if room is None:
+            return []
+        return [k.id for k in self.known.values() if not k.movable and k.cls == key and k.id in self.world.items
+                and bool(room.contains([k.at])[0])]
+
+    def _none_known(self, key: str, noun: str, n: int) -> str:
+        """What a count of none adds when the robot knows of no such thing anywhere (the map has no
+        chair, and it saw none): said, so a 0 is not taken for a room that merely lacks one."""
+        if n or any(k.cls == key for k in self.known.values()) or key in {class_key(c) for c in self.scene.map.priors}:
+            return ""
+        return f"; it knows of no {noun}s anywhere"
 
     def survey(self, room: Any, views: int | None = None, peek: bool = False) -> Outcome:
         """Look all over a room: to the nearest part of it not yet seen, until all of it is (at

@@ -7,13 +7,15 @@ belief update. Rerun and matplotlib are imported only here, inside the functions
 
 from __future__ import annotations
 
+import re
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from seal_cli.fileio import atomic_output
-from seal_cli.sim.agent import Agent
+from seal_cli.sim.agent import Agent, Record
 
 __all__ = ["write_png", "write_rrd"]
 
@@ -198,6 +200,27 @@ def _short(text: str) -> str:
     return text if len(text) <= LABEL_CHARS else text[:LABEL_CHARS - 1] + "…"
 
 
+def _acts(records: Sequence[Record]) -> list[tuple[tuple[float, float, float], str]]:
+    """What the robot did, to label where it did it: each action and answer, and where a frame that only
+    drives (Go) ended, with the drive's line ("goes to the bedroom (by desk_1)", its distance left off)."""
+    out: list[tuple[tuple[float, float, float], str]] = []
+    drive: Record | None = None
+    acted = False
+    for record in records:
+        if record.kind == "frame":
+            drive, acted = None, False
+        elif record.kind in ("act", "answer"):     # what it did, and what it found out there
+            said = record.text.split(": ", 1)[-1]      # "answer: 1 cup ..." and "counted: 1 cup ...": once
+            if not (out and out[-1][1].split(": ", 1)[-1] == said and ": " in record.text):
+                out.append((record.pose, record.text))
+            acted = True
+        elif record.kind == "go":
+            drive = record
+        elif record.kind == "done" and drive is not None and not acted:
+            out.append((record.pose, re.sub(r" \([\d.]+ m\)$", "", drive.text)))
+    return out
+
+
 def _draw_run(ax: Any, agent: Agent) -> None:
     """The path, where the robot acted, and where the things are."""
     from seal_cli.maps.drawing import _HALO, LABEL, LABEL_Z
@@ -206,9 +229,8 @@ def _draw_run(ax: Any, agent: Agent) -> None:
     ax.plot(trail[:, 0], trail[:, 1], "-", color="#1f77b4", linewidth=2, zorder=4, label="path")
     ax.plot(*trail[0], "o", color="#1f77b4", markersize=8, zorder=5)
     stood: dict[tuple[float, float], list[str]] = {}      # where the robot stood for each action, numbered
-    acts = [r for r in agent.records if r.kind == "act"]
-    for n, record in enumerate(acts, 1):
-        stood.setdefault((round(record.pose[0], 2), round(record.pose[1], 2)), []).append(f"{n}. {record.text}")
+    for n, (pose, text) in enumerate(_acts(agent.records), 1):
+        stood.setdefault((round(pose[0], 2), round(pose[1], 2)), []).append(f"{n}. {text}")
     xmin, _, xmax, _ = agent.scene.map.bounds
     for at, texts in stood.items():
         ax.plot(at[0], at[1], "D", color="#2ca02c", markeredgecolor="black", markersize=7, zorder=7)

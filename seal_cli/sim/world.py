@@ -32,6 +32,7 @@ import numpy as np
 from seal_cli.errors import SealError
 from seal_cli.frames.actions import PRIMITIVES
 from seal_cli.frames.taxonomy import Taxonomy, class_key
+from seal_cli.planning.grounding import kind_of
 from seal_cli.sensing.model import RangeSensor, SensorModel
 
 __all__ = ["HAND", "PERSON", "Detection", "Event", "Item", "Outcome", "Reason", "Robot", "World"]
@@ -388,7 +389,12 @@ class World:
             return Outcome(False, f"{receptacle} is closed", Reason.CLOSED, receptacle)
         self._move(item, receptacle, self._drop_point(target))
         self.robot.holding = None
-        return Outcome(True, f"put {obj} {'in' if target.openable else 'on'} {receptacle}")
+        return Outcome(True, f"put {obj} {'in' if self.hollow(target) else 'on'} {receptacle}")
+
+    def hollow(self, target: Item) -> bool:
+        """Whether a thing is put *in* the target (a fridge, a sink, a cup, a laundry basket) or *on* it
+        (a table, a shelf): openable, or of the taxonomy's ``hollow`` kinds (a compound by its head)."""
+        return target.openable or kind_of(self.taxonomy, target.cls, "hollow") is True
 
     def _drop_point(self, target: Item) -> tuple[float, float]:
         """Where a thing put on a place ends up: the place's centre, or the edge nearest the robot."""

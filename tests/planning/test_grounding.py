@@ -93,6 +93,27 @@ def test_the_first_words_of_a_compound_name_call_it_weakly(library: object) -> N
     assert [str(s) for s in plan("go to the table", library, map=m).steps] == ["Go(goal=dining_table_1)"]  # type: ignore[arg-type]
 
 
+def test_a_thing_acted_on_is_named_by_its_head_not_by_the_first_words_of_a_place(library: Library) -> None:
+    """"turn off the tv": the apartment's tv stand is a stand, not a tv, so the tv is refused (not
+    the stand switched); where to go ("go to the tv") the stand is still meant."""
+    with pytest.raises(SealError, match="the apartment has no tv") as caught:
+        steps("turn off the tv", library)
+    assert caught.value.column == 10
+    assert steps("go to the tv", library) == ["Go(goal=tv_stand_1)"]
+
+
+def test_a_question_about_what_the_map_lacks_is_asked_not_refused(library: Library) -> None:
+    """"how many chairs ...?", "is there a chair ...?" on a map without chairs: a class to look for
+    in the room (the warning says where), while "go to the chair" is still refused."""
+    counted = plan_text("how many chairs are in the dining room", library, map=load_map(APARTMENT))
+    assert [str(s) for s in counted.steps] == ["Count(theme=chair, ground=dining_room)"]
+    assert counted.warnings == ("the map apartment knows nothing of chair (no prior, object or place names it): "
+                                "seal run will look for it in dining_room",)
+    assert steps("is there a chair in the kitchen?", library) == ["Find(theme=chair, ground=kitchen)"]
+    with pytest.raises(SealError, match="the apartment has no chair"):
+        steps("go to the chair", library)
+
+
 def test_a_frame_that_must_hold_a_fixed_thing_is_refused(library: object) -> None:
     import pytest
 
@@ -102,3 +123,13 @@ def test_a_frame_that_must_hold_a_fixed_thing_is_refused(library: object) -> Non
 
     with pytest.raises(SealError, match=r"LookAt needs to hold its theme, and 'the fridge' \(fridge_1\) is fixed"):
         plan("check the fridge", library, map=load_map("apartment").known())  # type: ignore[arg-type]
+
+
+def test_a_places_own_name_calls_it_before_another_places_synonym(library: Library) -> None:
+    """The cafe has a kitchen sink and a restroom washbasin, and "washbasin" is a synonym of sink:
+    "the washbasin" is the washbasin, "the sink" the sink; on a map with only a sink, the synonym
+    still calls the sink."""
+    cafe = load_map("cafe")
+    assert [str(s) for s in plan_text("go to the washbasin", library, map=cafe).steps] == ["Go(goal=washbasin_1)"]
+    assert [str(s) for s in plan_text("go to the sink", library, map=cafe).steps] == ["Go(goal=sink_1)"]
+    assert steps("go to the washbasin", library) == ["Go(goal=sink_1)"]

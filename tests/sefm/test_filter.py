@@ -477,3 +477,23 @@ def test_on_a_large_floor_the_context_follows_the_frames_by_their_changes(librar
     fresh = GridKernelSums(2, m.bounds, sefm.config.sigma, cell=sefm.config.sigma)
     fresh.set([row], sefm.frames.X[[row]], sefm.frames.W[[row]])
     np.testing.assert_allclose(high.grids[row], fresh.grids[row], atol=1e-6 * fresh.grids[row].max())
+
+
+def test_a_person_the_map_places_is_a_known_position_not_a_class_spread_over_the_house(library: Library) -> None:
+    """Tell(recipient=anna) sits where Anna is (the map puts her in the kitchen), and Bring to "me" has
+    the speaker as a second mode: neither believes in a class "person" spread over the whole house."""
+    from seal_cli.maps.formats.map_server import load_map
+
+    m = load_map("apartment")
+    for text, room in (("tell Anna the time", "kitchen"), ("tell Ben the time", "bedroom")):
+        found = plan_text(text, library, map=m.known())
+        sefm = run(m, list(found.bindings), found.initial, 0, steps=3)
+        assert "person" not in sefm.object_classes
+        masses = room_masses(m, *sefm.frame_particles(0))
+        assert masses[room] > 0.9, (text, masses)
+    found = plan_text("bring me the cup", library, map=m.known())
+    sefm = run(m, list(found.bindings), found.initial, 0, steps=3)
+    assert "person" not in sefm.object_classes
+    X, W = sefm.frame_particles(len(found.bindings) - 1)
+    near_speaker = np.linalg.norm(X - np.asarray(m.speaker_at), axis=1) < 1.0
+    assert W[near_speaker].sum() > 0.1

@@ -136,3 +136,47 @@ def test_a_thing_set_down_to_free_the_hand_is_found_where_it_was_put(library: Li
     assert s.world.items["apple_1"].parent == "table_1"
     put = agent.known["apple_1"]
     assert put.parent == "table_1" and put.at == s.world.items["apple_1"].at
+
+
+def _ask(library: Library, theme: str, word: str, opened: bool = False):  # type: ignore[no-untyped-def]
+    """A state question on the apartment, as the parser gives it (LookAt with the state asked)."""
+    from dataclasses import replace
+
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.planning.questions import Question, looking
+    from seal_cli.sim.agent import scene_from_map
+
+    m = load_map("apartment")
+    if opened:
+        m = replace(m, places=tuple(replace(p, open=True) if p.name == theme else p for p in m.places))
+    binding = looking(library.frame("LookAt")).bind({"theme": theme})
+    agent = Agent(scene_from_map(m, library), library, make_policy("oracle"), rng=np.random.default_rng(0),
+                  questions={binding: Question("state", relation=word)})
+    return agent, agent.run([binding])
+
+
+def test_a_state_question_is_answered_from_what_the_robot_sees_without_taking_the_thing(library: Library) -> None:
+    agent, result = _ask(library, "fridge_1", "open")
+    assert result.completed and result.plan == ["LookAt(theme=fridge_1)"] and agent.held() is None
+    assert agent.answers == ["no: fridge_1 is closed"]
+    assert agent.world.within_reach("fridge_1")            # it went to look
+    assert _ask(library, "fridge_1", "open", opened=True)[0].answers == ["yes: fridge_1 is open"]
+    assert _ask(library, "fridge_1", "closed")[0].answers == ["yes: fridge_1 is closed"]
+    assert _ask(library, "stove_1", "on")[0].answers == ["no: stove_1 is off"]
+    empty, _ = _ask(library, "fridge_1", "empty")         # looks inside, and closes it again
+    assert empty.answers == ["no: fridge_1 holds apple_1"] and not empty.world.items["fridge_1"].is_open
+    assert _ask(library, "dining_table_1", "open")[0].answers == ["dining_table_1 does not open or close"]
+    assert _ask(library, "fridge_1", "locked")[0].answers[0].startswith("it cannot tell whether fridge_1 is locked")
+
+
+def test_counting_furniture_reads_the_map_and_a_class_nobody_knows_is_none_anywhere(library: Library) -> None:
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    m = load_map("apartment")
+    sweep = make_policy("oracle")
+    _, sofas = pipeline.run_on_map(m, "how many sofas are there?", library, sweep, rng=np.random.default_rng(0))
+    assert sofas.completed and sofas.answer == "2 sofas in the house, by the map" and sofas.path_m == 0
+    _, chairs = pipeline.run_on_map(m, "how many chairs are in the dining room", library, make_policy("sefm"),
+                                    rng=np.random.default_rng(0))
+    assert chairs.completed and chairs.answer == "0 chairs in the dining room; it knows of no chairs anywhere"

@@ -58,3 +58,30 @@ def test_run_recording_shares_the_localize_scene(tmp_path: Path) -> None:
     names = {r["ViewBlueprint:display_name"][0] for found in entities(rrd, blueprint).values() for r in found
              if "ViewBlueprint:display_name" in r}
     assert {"map apartment", "path (m)", "what the robot did"} <= names
+
+
+def test_the_png_labels_where_a_go_ended_as_well_as_each_action(library: Any) -> None:
+    """A frame that only drives (Go) is labelled where it ended, with the drive's line; every action
+    where it was done: "go to the bedroom and tell Ben the time" is three labels, in order."""
+    import numpy as np
+
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.sim.policies import make_policy
+    from seal_cli.sim.record import _acts
+
+    apartment = load_map("apartment")
+    agent, result = pipeline.run_on_map(apartment, "go to the bedroom and tell Ben the time", library,
+                                        make_policy("oracle"), rng=np.random.default_rng(0))
+    assert result.completed
+    labels = [text for _, text in _acts(agent.records)]
+    assert labels[0].startswith("goes to the bedroom") and not labels[0].endswith(" m)")
+    assert labels[1:] == ["is with ben", 'said "time"']
+    bedroom = apartment.room("bedroom")
+    assert all(bedroom.contains([pose[:2]])[0] for pose, _ in _acts(agent.records))
+    asked, counted = pipeline.run_on_map(apartment, "how many cups are in the family room?", library,
+                                         make_policy("oracle"), rng=np.random.default_rng(0))
+    assert [text for _, text in _acts(asked.records)] == [f"answer: {counted.answer}"]   # said once
+    state, _ = pipeline.run_on_map(apartment, "is the fridge open?", library, make_policy("oracle"),
+                                   rng=np.random.default_rng(0))
+    assert [text for _, text in _acts(state.records)] == ["looked at fridge_1", "answer: no: fridge_1 is closed"]

@@ -121,3 +121,21 @@ def test_robot_may_start_holding(library: Library) -> None:
     world = kitchen(library, holding="knife_1")
     assert world.items["knife_1"].parent == HAND
     assert not world.act("pick", "pan_1")
+
+
+def test_a_thing_is_put_in_what_is_hollow_and_on_what_is_not(library: Library) -> None:
+    """The receptacle's kind decides the preposition: in a sink, a pan, an opened fridge or a wicker
+    basket (a compound, by its head); on a counter."""
+    world = kitchen(library)
+    world.items["basket_1"] = Item("basket_1", "wicker_basket", (0.5, 0.5), movable=False, receptacle=True)
+    goto(world, 0.0, 0.5)
+    assert world.act("pick", "knife_1")
+    said = []
+    for target in ("sink_1", "counter_1", "pan_1", "basket_1"):
+        said.append(world.act("place", "knife_1", target).message)
+        assert world.act("pick", "knife_1")
+    assert said == ["put knife_1 in sink_1", "put knife_1 on counter_1", "put knife_1 in pan_1",
+                    "put knife_1 in basket_1"]
+    goto(world, 2.0, 0.0)
+    assert world.act("open", "fridge_1")
+    assert world.act("place", "knife_1", "fridge_1").message == "put knife_1 in fridge_1"

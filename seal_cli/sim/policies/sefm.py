@@ -112,7 +112,8 @@ class SeFMPolicy(Policy):
         """SeFM over the current plan (rebuilt, and the looks replayed, when the plan changes)."""
         from seal_cli.sefm.filter import SeFM, SeFMConfig
 
-        bindings = [b.frame.bind({r: agent.class_of(v) for r, v in b.values}) for b in agent.steps]
+        bindings = [b.frame.bind({r: v if agent.is_person(v) else agent.class_of(v) for r, v in b.values})
+                    for b in agent.steps]     # a person of the map is where they stand, not any person
         key = tuple(str(b) for b in bindings)
         if self.sefm is None or key != self.key:
             state = self._state(agent)
