@@ -89,6 +89,7 @@ class SeFMPolicy(Policy):
         self._tours = OraclePolicy()
         self._tours.begin(agent)
         self._stood: dict[str, tuple[float, float]] = {}
+        self._onward: dict[tuple[str, tuple[float, float]], np.ndarray] = {}
         self.sefm: Any = None
         self.planner: Any = None
         self.key: tuple[str, ...] = ()
@@ -324,6 +325,21 @@ class SeFMPolicy(Policy):
     """How many of the best looks (by belief per metre) the search orders as a tour before taking the
     first (:meth:`_first_of_tour`); 1 is the greedy rule."""
 
+    onward = 1.0
+    """SeFM's frame context in one room: a look is worth its belief per metre of the drive there *and on*,
+    (+ :attr:`distance_scale`) to the plan's next known stop (the lamp to look at the thing under, the
+    fridge to put it in), and the tour's expected cost adds the drive on from where the thing would be
+    found (:meth:`_first_of_tour`). 0: the object's search alone, as object-only searches (chosen on
+    ALFRED-2D's train split: docs/benchmarks.md)."""
+
+    def _onward_field(self, agent: Agent, stop: Known) -> np.ndarray:
+        """Metres from every cell to the nearest cell to act on ``stop`` from (kept per stop and place)."""
+        key = (stop.id, stop.at)
+        if key not in self._onward:
+            fields = [agent.grid.distances((int(i), int(j))) for i, j in agent.stand_cells(stop)]
+            self._onward[key] = np.min(fields, axis=0) if fields else np.full(agent.grid.shape, np.inf)
+        return self._onward[key]
+
     def _first_of_tour(self, agent: Agent, looks: Sequence[Look], target: str) -> View:
         """The first look of the shortest expected search through the best :attr:`tour_views` looks.
 
@@ -339,21 +355,29 @@ class SeFMPolicy(Policy):
         robot away from where the thing is likelier. Approximations: the looks are the best few, not all;
         what is seen on the way is not counted."""
 
-        def score(o: Look) -> float:   # equal to rounding: the same looks for SeFM and object-only
+        ahead = self._ahead(agent, agent.class_of(target), agent.world.robot.pose[:2])[:1]
+        stands = agent.stand_cells(ahead[0]) if ahead else np.zeros((0, 2), dtype=int)
+        then = self._onward_field(agent, ahead[0]) if ahead and self.use_frames and self.onward > 0 else None
+
+        def plain(o: Look) -> float:   # equal to rounding: the same looks for SeFM and object-only
             return round(o.mass / (o.metres + self.distance_scale), 6)
+
+        def score(o: Look) -> float:
+            on = self.onward * float(then[o.view.cell]) if then is not None else 0.0
+            return round(o.mass / (o.metres + self.distance_scale + (on if np.isfinite(on) else 0.0)), 6)
 
         ranked = sorted(looks, key=lambda o: -score(o))
         pool = ranked[: self.tour_views]
         pool += [o for o in ranked[len(pool):] if score(o) == score(pool[-1])][: self.tour_views]
+        if then is not None:   # and the best looks for the thing alone: the tour's cost decides between them
+            pool += [o for o in sorted(looks, key=lambda o: -plain(o))[: self.tour_views] if o not in pool]
         fields = {o.view.cell: agent.grid.distances(o.view.cell) for o in pool}
-        ahead = self._ahead(agent, agent.class_of(target), agent.world.robot.pose[:2])[:1]
-        stands = agent.stand_cells(ahead[0]) if ahead else np.zeros((0, 2), dtype=int)
 
         def onward(o: Look) -> float:   # metres on to the plan's next known stop
             f = fields[o.view.cell][stands[:, 0], stands[:, 1]] if len(stands) else np.zeros(1)
             return float(f.min())
 
-        best = sorted(pool, key=lambda o: (-score(o), onward(o)))[: self.tour_views]
+        best = sorted(pool, key=lambda o: (-score(o), onward(o)))[: self.tour_views * (1 if then is None else 2)]
         if len(best) < 2:
             return best[0].view
         n = len(best)
@@ -361,6 +385,8 @@ class SeFMPolicy(Policy):
         between = np.array([fields[o.view.cell][[b.view.cell[0] for b in best], [b.view.cell[1] for b in best]]
                             for o in best])
         shown = [o.reveals for o in best]
+
+        on = np.array([onward(o) for o in best]) if then is not None and len(stands) else np.zeros(n)
 
         def cost(order: Sequence[int]) -> float:
             seen: dict[int, float] = {}
@@ -377,6 +403,8 @@ class SeFMPolicy(Policy):
                         if j not in seen:
                             seen[int(j)] = float(r[j])
                             gain += float(r[j])
+                gain = min(gain, left)
+                total += self.onward * gain * on[k]
                 left = max(0.0, left - gain)
                 prev = k
             return round(total, 6)   # equal to rounding: the same order for SeFM and object-only
