@@ -66,11 +66,13 @@ class Evoked:
     condition: str | None = None
     result: str | None = None
     time: str | None = None
+    asked: str | None = None
+    """The state a yes/no question asks of the frame's theme ("open" of "is the fridge open?")."""
 
     def to_json(self) -> dict[str, Any]:
         data = {"frame": self.frame, "lexical_unit": self.lexical_unit, "span": list(self.span),
                 "elements": {role: p.to_json() for role, p in self.elements.items()}}
-        for key in ("condition", "result", "time"):
+        for key in ("condition", "result", "time", "asked"):
             if getattr(self, key):
                 data[key] = getattr(self, key)
         return data
