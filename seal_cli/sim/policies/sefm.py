@@ -89,6 +89,7 @@ class SeFMPolicy(Policy):
         self._tours = OraclePolicy()
         self._tours.begin(agent)
         self._stood: dict[str, tuple[float, float]] = {}
+        self._onward: dict[tuple[str, tuple[float, float]], np.ndarray] = {}
         self.sefm: Any = None
         self.planner: Any = None
         self.key: tuple[str, ...] = ()
@@ -329,6 +330,53 @@ class SeFMPolicy(Policy):
     """How many of the best looks (by belief per metre) the search orders as a tour before taking the
     first (:meth:`_first_of_tour`); 1 is the greedy rule."""
 
+    onward = 1.0
+    """SeFM's frame context in one room: the search is for where the frame can be done, so the drive on to
+    the plan's next stop (the fridge to put the apple in, the lamp to look at it under; where no instance
+    is known yet, the stop's belief: :meth:`_onward_belief`) counts. The looks the tour is made of are
+    the best by belief per metre of the drive there *and on* (this weight), with the best by belief per
+    metre there alone, and the tour's expected cost adds, for the belief each look would be the first
+    to reveal, the drive on from it (:meth:`_first_of_tour`). 0: the thing's search alone, as
+    object-only searches. Chosen on ALFRED-2D's train split (docs/benchmarks.md)."""
+
+    def _onward_field(self, agent: Agent, stop: Known) -> np.ndarray:
+        """Metres from every cell to the nearest cell to act on ``stop`` from (kept per stop and place)."""
+        key = (stop.id, stop.at)
+        if key not in self._onward:
+            fields = [agent.grid.distances((int(i), int(j))) for i, j in agent.stand_cells(stop)]
+            self._onward[key] = np.min(fields, axis=0) if fields else np.full(agent.grid.shape, np.inf)
+        return self._onward[key]
+
+    onward_points = 24
+    """At most this many of the heaviest points of a stop's belief (:meth:`_onward_belief`)."""
+
+    def _onward_belief(self, agent: Agent, target: str) -> np.ndarray | None:
+        """The expected metres from every cell on to the plan's next stop after ``target`` when no instance
+        of it is known yet (the lamp LookAt(pen, lamp) needs, not yet seen): the stop's SeFM belief above
+        its floor, its heaviest points (up to 90 % of it, at most :attr:`onward_points`), each the drive
+        to it weighted by its mass. None: no such stop, or no belief of it."""
+        from seal_cli.sim.policies.oracle import navigation_targets
+
+        cls = agent.class_of(target)
+        targets = [agent.class_of(t) for t in navigation_targets(agent)]
+        while targets and targets[0] == cls:
+            targets.pop(0)
+        held = agent.held()
+        if not targets or (held is not None and held.key == targets[0]) or targets[0] not in self.sefm.object_classes:
+            return None
+        X = self.map.free_centres
+        w = np.asarray(self.sefm.object_density(targets[0], X), dtype=float)
+        w = np.where(np.isfinite(w) & (w > 0), w, 0.0)
+        if w.sum() <= 0:
+            return None
+        w = above_floor(w / w.sum())
+        top = np.argsort(-w, kind="stable")[: self.onward_points]
+        top = top[: int(np.searchsorted(np.cumsum(w[top]), 0.9 * w[top].sum())) + 1]
+        total = np.zeros(agent.grid.shape)
+        for k in top:
+            total += w[k] * agent.grid.distances(agent.grid.nearest_free(X[k]))
+        return np.asarray(total / w[top].sum())
+
     def _first_of_tour(self, agent: Agent, looks: Sequence[Look], target: str) -> View:
         """The first look of the shortest expected search through the best :attr:`tour_views` looks.
 
@@ -341,24 +389,37 @@ class SeFMPolicy(Policy):
         look at a time to wherever E falls most (or-opt), and the robot goes to the first look.
         Of looks equally good (the same belief for the same drive: the cells all round a fridge), the one
         nearer the plan's next known stop — a tie-break, so a known goal never draws the
-        robot away from where the thing is likelier. Approximations: the looks are the best few, not all;
-        what is seen on the way is not counted."""
+        robot away from where the thing is likelier. SeFM (:attr:`onward` > 0) adds to E, for the belief
+        p_j each look reveals first, p_j times the drive on from it to the next stop: a place two looks
+        see is best seen from the one nearer where the frame goes on; and it draws the tour's looks from
+        the best by belief per metre there and on as well as from the best by belief per metre there.
+        Approximations: the looks are the best few, not all; what is seen on the way is not counted."""
 
-        def score(o: Look) -> float:   # equal to rounding: the same looks for SeFM and object-only
+        ahead = self._ahead(agent, agent.class_of(target), agent.world.robot.pose[:2])[:1]
+        stands = agent.stand_cells(ahead[0]) if ahead else np.zeros((0, 2), dtype=int)
+        then = None
+        if self.use_frames and self.onward > 0:
+            then = self._onward_field(agent, ahead[0]) if ahead else self._onward_belief(agent, target)
+
+        def plain(o: Look) -> float:   # equal to rounding: the same looks for SeFM and object-only
             return round(o.mass / (o.metres + self.distance_scale), 6)
+
+        def score(o: Look) -> float:
+            on = self.onward * float(then[o.view.cell]) if then is not None else 0.0
+            return round(o.mass / (o.metres + self.distance_scale + (on if np.isfinite(on) else 0.0)), 6)
 
         ranked = sorted(looks, key=lambda o: -score(o))
         pool = ranked[: self.tour_views]
         pool += [o for o in ranked[len(pool):] if score(o) == score(pool[-1])][: self.tour_views]
+        if then is not None:   # and the best looks for the thing alone: the tour's cost decides between them
+            pool += [o for o in sorted(looks, key=lambda o: -plain(o))[: self.tour_views] if o not in pool]
         fields = {o.view.cell: agent.grid.distances(o.view.cell) for o in pool}
-        ahead = self._ahead(agent, agent.class_of(target), agent.world.robot.pose[:2])[:1]
-        stands = agent.stand_cells(ahead[0]) if ahead else np.zeros((0, 2), dtype=int)
 
         def onward(o: Look) -> float:   # metres on to the plan's next known stop
             f = fields[o.view.cell][stands[:, 0], stands[:, 1]] if len(stands) else np.zeros(1)
             return float(f.min())
 
-        best = sorted(pool, key=lambda o: (-score(o), onward(o)))[: self.tour_views]
+        best = sorted(pool, key=lambda o: (-score(o), onward(o)))[: self.tour_views * (1 if then is None else 2)]
         if len(best) < 2:
             return best[0].view
         n = len(best)
@@ -366,6 +427,9 @@ class SeFMPolicy(Policy):
         between = np.array([fields[o.view.cell][[b.view.cell[0] for b in best], [b.view.cell[1] for b in best]]
                             for o in best])
         shown = [o.reveals for o in best]
+
+        on = np.array([float(then[o.view.cell]) for o in best]) if then is not None else np.zeros(n)
+        on = np.where(np.isfinite(on), on, 0.0)
 
         def cost(order: Sequence[int]) -> float:
             seen: dict[int, float] = {}
@@ -382,6 +446,8 @@ class SeFMPolicy(Policy):
                         if j not in seen:
                             seen[int(j)] = float(r[j])
                             gain += float(r[j])
+                gain = min(gain, left)
+                total += self.onward * gain * on[k]
                 left = max(0.0, left - gain)
                 prev = k
             return round(total, 6)   # equal to rounding: the same order for SeFM and object-only

@@ -172,3 +172,58 @@ def test_once_every_place_is_looked_at_a_room_level_prior_still_leads_to_its_mod
     agent.inspected |= {p.id for p in policy._places(agent)}
     view = policy.greedy_view(agent, agent.steps[0], "apple")
     assert view is not None and view.why == "goes to the belief's best mode"
+
+
+def test_the_drive_on_is_metres_to_the_nearest_cell_to_act_on_the_next_stop_from(library: Library) -> None:
+    scene = corridor(library, {"apple": {"shelf": 0.9}}, start=3.0)
+    policy = SeFMPolicy(particles=100)
+    agent = ready(library, scene, policy, [("Place", {"theme": "apple", "goal": "dining_table"})])
+    field_ = policy._onward_field(agent, agent.known["table_1"])
+    along = [float(field_[agent.grid.cell((x, 0.5))]) for x in (0.0, 2.0, 4.0, 6.0, 7.5)]
+    assert along == sorted(along, reverse=True) and along[-1] == 0.0   # the table is acted on from 7.5
+    assert along[0] - along[2] == pytest.approx(4.0)                    # 4 m of corridor, 0.25 m steps
+    assert policy._onward_field(agent, agent.known["table_1"]) is field_   # kept for the run
+
+
+def test_an_unknown_next_stop_is_expected_where_its_belief_is(library: Library) -> None:
+    """Place(apple, bowl) with no bowl seen: the drive on from a cell is its expected drive to the bowl's
+    belief (by the prior, at the cabinets at 4 m and 7 m), shortest between them, longest at the far west."""
+    scene = corridor(library, {"apple": {"shelf": 0.9}, "bowl": {"cabinet": 0.9}}, start=3.0)
+    policy = SeFMPolicy(particles=300)
+    agent = ready(library, scene, policy, [("Place", {"theme": "apple", "goal": "bowl"})])
+    policy._beliefs(agent)
+    field_ = policy._onward_belief(agent, "apple")
+    assert field_ is not None
+    on = {x: float(field_[agent.grid.cell((x, 0.5))]) for x in (0.0, 2.0, 5.0, 8.0)}
+    assert on[5.0] < on[8.0] < on[2.0] < on[0.0]
+    assert on[0.0] - on[2.0] == pytest.approx(2.0, abs=0.05)           # every point of the belief is east of both
+    alone = SeFMPolicy(particles=100)
+    picking = ready(library, scene, alone, [("Pick", {"theme": "apple"})])
+    alone._beliefs(picking)
+    assert alone._onward_belief(picking, "apple") is None                # nothing comes after the apple
+
+
+def test_sefm_finds_the_thing_from_the_look_nearer_the_next_stop(library: Library) -> None:
+    """Two cells see the same cabinet, the west one nearer the robot, the east one nearer the table the
+    apple goes to. Object-only takes the nearer; SeFM, whose expected cost adds the drive on from where
+    the apple would be found, takes the one that leaves less to drive on; with ``onward = 0`` it is
+    object-only again."""
+    scene = corridor(library, {"apple": {"cabinet": 0.8}}, start=3.75)
+    frames = [("Place", {"theme": "apple", "goal": "dining_table"})]
+
+    def first(policy: SeFMPolicy) -> tuple[float, float]:
+        agent = ready(library, scene, policy, frames)
+        places = policy._places(agent)
+        reveals = np.zeros(len(places))
+        reveals[[p.id for p in places].index("cabinet_1")] = 0.6
+
+        def look(x: float) -> Look:
+            cell = agent.grid.cell((x, 0.5))
+            return Look(0.6, float(agent.distances()[cell]), View(cell, (4.0, 1.3), open="cabinet_1"), reveals)
+
+        return agent.grid.point(policy._first_of_tour(agent, [look(3.25), look(4.75)], "apple").cell)
+
+    plain = SeFMPolicy(particles=50)
+    plain.onward = 0.0
+    assert first(ObjectOnlyPolicy(particles=50)) == first(plain) == (3.25, 0.5)
+    assert first(SeFMPolicy(particles=50)) == (4.75, 0.5)
