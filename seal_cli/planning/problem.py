@@ -38,7 +38,7 @@ import itertools
 import math
 import re
 from collections.abc import Iterable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any
 
 from seal_cli.errors import SealError, Where
@@ -375,7 +375,8 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         if getattr(evoked, "asked", None) and "theme" in frame.roles:     # "is the fridge open?": looked at
             frame = looking(frame)
         asked = _counted_roles(frame) | ({"theme"} if asks_whether(parse.text, evoked) else set())
-        values = {role: _values(phrase, earlier, things, parse.text, frame.element(role).type, role in asked)
+        values = {role: _values(_sought_where(evoked, role, things), earlier, things, parse.text,
+                                frame.element(role).type, role in asked)
                   for role, phrase in evoked.elements.items()}
         for role in _counted_roles(frame):      # "count the cups": one Count of the class
             if role in values:
@@ -420,6 +421,23 @@ def _in_a_name(evoked: Evoked, parse: Parse, things: Things) -> bool:
             if referent is not None and any(_contains(name, unit) for name in referent.names):
                 return True
     return False
+
+
+def _sought_where(evoked: Evoked, role: str, things: Things) -> Phrase:
+    """The phrase of a role, with the frame's ground said after a theme that says no room of its own:
+    "find the sofa in the living room" seeks the living room's sofa (``sofa_2``), not the map's first;
+    a movable thing is not a map referent, so its phrase grounds as before."""
+    phrase = evoked.elements[role]
+    ground = evoked.elements.get("ground")
+    if (role != "theme" or ground is None or not ground.text or not phrase.text or phrase.conjuncts
+            or phrase.refers_to is not None or things.names is None or things.names.where_said(phrase.text)):
+        return phrase
+    there = replace(phrase, text=f"{phrase.text} in {ground.text}")
+    try:
+        found = things.names.ground(there.text or "", "thing", ("place",))
+    except SealError:
+        return there            # "find the sofa in the kitchen": refused, naming the sofas there are
+    return there if found is not None else phrase
 
 
 def _contains(words: tuple[str, ...], part: tuple[str, ...]) -> bool:

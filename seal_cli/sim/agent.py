@@ -654,8 +654,8 @@ class Agent:
         role = next((r for r, v in binding.values if v == value), None)
         ground = binding.elements.get("ground")
         question = self.questions.get(binding)
-        if ground is not None and not self.is_person(value) and (self.room(ground) is not None
-                                                                 or self._is_place(ground)):
+        if ground is not None and not self.is_person(value) and not self._is_place(value) \
+                and (self.room(ground) is not None or self._is_place(ground)):     # a map place: known
             return self.search_in(value, binding, ground, question)
         if self.is_person(value) and not self.world.within_reach(value):    # told where: goes to see them
             went = self.go_to(value, binding)

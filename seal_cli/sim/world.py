@@ -503,8 +503,11 @@ class World:
     def _do_search(self, thing: str) -> Outcome:
         key = class_key(thing)
         seen = [d.id for d in self.observe() if class_key(d.cls) == key]
-        if not seen and key in self.items and self.within_reach(key):      # a person, by name
+        if not seen and key in self.items and self.within_reach(key):      # a person or a place, by name
             seen = [key]
+        if not seen:                                                        # a place of the class, at hand
+            seen = [i.id for i in self.items.values()
+                    if not i.movable and class_key(i.cls) == key and self.within_reach(i.id)]
         return Outcome(bool(seen), f"sees {', '.join(seen)}" if seen else f"sees no {thing} from here",
                        Reason.OK if seen else Reason.NOT_SEEN, thing)
 

@@ -86,3 +86,19 @@ def test_a_maps_rooms_and_places_are_not_objects_to_handle(library: Library) -> 
                       ("clean the bathroom", "'the bathroom' (bathroom) is a room")):
         with pytest.raises(SealError, match=re.escape(why)):     # without a map, the library says so
             problem_of_text(text, library)
+
+
+def test_a_place_sought_in_a_room_is_that_rooms_place(library: Library) -> None:
+    """"find the sofa in the living room": the frame's ground picks which of the map's sofas; an
+    object sought in a room stays its class; a room without one is refused naming where they are."""
+    from seal_cli.errors import SealError
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+
+    apartment = load_map(map_path("apartment"))
+    for text, plan in (("find the sofa in the living room", "Find(theme=sofa_2, ground=living_room)"),
+                       ("find the couch in the family room", "Find(theme=sofa_1, ground=family_room)"),
+                       ("find the cup in the living room", "Find(theme=cup, ground=living_room)")):
+        assert [str(b) for b in problem_of_text(text, library, map=apartment).commanded] == [plan]
+    with pytest.raises(SealError, match=re.escape("has no sofa in the kitchen; it has sofa_1 (family_room)")):
+        problem_of_text("find the sofa in the kitchen", library, map=apartment)

@@ -139,3 +139,14 @@ def test_a_thing_is_put_in_what_is_hollow_and_on_what_is_not(library: Library) -
     goto(world, 2.0, 0.0)
     assert world.act("open", "fridge_1")
     assert world.act("place", "knife_1", "fridge_1").message == "put knife_1 in fridge_1"
+
+
+def test_search_for_a_place_by_its_class_succeeds_at_the_place(library: Library) -> None:
+    world = kitchen(library)
+    goto(world, 6.0, 3.0)                       # far from the fridge and out of its reach
+    far = world.act("search", "fridge")
+    assert not far and "sees no fridge" in far.message
+    goto(world, 2.0, 0.0)                       # at the fridge's stand cell
+    found = world.act("search", "fridge")
+    assert found and "fridge_1" in found.message
+    assert world.act("search", "fridge_1")      # by its id, too
