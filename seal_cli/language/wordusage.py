@@ -47,6 +47,7 @@ from seal_cli.errors import SealError, Where
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.language.chooser import features, logits
 from seal_cli.language.morphology import noun_lemma
+from seal_cli.language.steps import NONE, STEPS, StepModel
 
 __all__ = ["CONTEXT_PRIOR", "CONTEXT_WEIGHT", "FORMAT", "MIN_RATIO", "MIN_SUPPORT", "SHIPPED", "WordUsage",
            "context_words", "load_word_usage", "shipped_word_usage", "unsaid_wording"]
@@ -117,6 +118,9 @@ class WordUsage:
     """``weights[feature][class key]``: the discriminative chooser's weights
     (:mod:`~seal_cli.language.chooser`), which weigh the sentence in place of :meth:`context_factor`
     when a table has them."""
+    steps: StepModel = field(default_factory=StepModel)
+    """Which step a sentence that places a thing and says none most likely means
+    (:mod:`~seal_cli.language.steps`); empty: none is inferred."""
 
     def __post_init__(self) -> None:
         for name in ("counts", "seen", "class_context", "number", "weights"):
@@ -149,7 +153,9 @@ class WordUsage:
                          self.sources + other.sources, self.min_support, self.min_ratio,
                          add(self.seen, other.seen), context, add(self.class_context, other.class_context),
                          self.context_weight, add(self.number, other.number),
-                         add(self.weights, other.weights))
+                         add(self.weights, other.weights),
+                         StepModel(add({"": self.steps.prior}, {"": other.steps.prior}).get("", {}),
+                                   add(self.steps.weights, other.steps.weights), self.steps.threshold))
 
     def names_one(self, lemmas: tuple[str, ...]) -> bool:
         """Whether a plural phrase whose words up to the head are ``lemmas`` names one thing, as
@@ -169,7 +175,7 @@ class WordUsage:
     def without_context(self) -> WordUsage:
         """These counts with the sentence not weighed (the wording alone decides)."""
         return WordUsage(self.counts, self.universe, self.sources, self.min_support, self.min_ratio, self.seen,
-                         number=self.number)
+                         number=self.number, steps=self.steps)
 
     def sentence_factor(self, wording: str, lemmas: tuple[str, ...], keys: Iterable[str],
                         words: Iterable[str]) -> dict[str, float]:
@@ -347,7 +353,21 @@ def _table(data: Any, where: Where) -> WordUsage:
         raise SealError("\"weights\" must map each feature to {class of \"classes\": finite number}", where)
     weights = {str(f): {class_key(c): float(v) for c, v in by.items()} for f, by in raw.items()}
     return WordUsage(counts, universe, (str(data.get("source", where.file)),), seen=seen, context=context,
-                     class_context=class_context, number=number, weights=weights)
+                     class_context=class_context, number=number, weights=weights, steps=_steps(data, where))
+
+
+def _steps(data: dict[str, Any], where: Where) -> StepModel:
+    """The unsaid-step model of a table (``step_prior``: {step: count}, ``step_weights``: {feature: {step: w}})."""
+    names = {*STEPS, NONE}
+    prior = data.get("step_prior", {})
+    if not _word_counts(prior) or not set(prior) <= names:
+        raise SealError(f"\"step_prior\" must map each of {', '.join(sorted(names))} to a positive count", where)
+    raw = data.get("step_weights", {})
+    if not isinstance(raw, dict) or not all(
+            isinstance(by, dict) and all(c in names and isinstance(v, int | float) and not isinstance(v, bool)
+                                         and math.isfinite(v) for c, v in by.items()) for by in raw.values()):
+        raise SealError("\"step_weights\" must map each feature to {step: finite number}", where)
+    return StepModel(prior, {str(f): {c: float(v) for c, v in by.items()} for f, by in raw.items()})
 
 
 def _word_counts(table: Any) -> bool:
