@@ -228,6 +228,10 @@ class Vocabulary:
                     break
         if words and not of and end == len(words) and words[-1] not in PORTIONS:
             found = self._usage.choose(words, self._present, found, self.scene, self.context)
+            if found is None:                # "the stovve": a word nobody's class names, misspelling one people say
+                said = self._usage.respelled(words[-1])
+                if said is not None:
+                    found = self._usage.choose((said,), self._present, None, self.scene, self.context)
         elif end == len(words) and words and words[-1] in PORTIONS:   # "the left side of the sink",
             whole = of or words[:-1]                                     # "a chair seat": the whole decides
             if whole and whole[-1] not in PORTIONS and (

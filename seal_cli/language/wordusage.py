@@ -69,6 +69,10 @@ CONTEXT_PRIOR = 5.0
 """How many phrases' worth of the class's rate over all its wordings a wording's own rate of a
 context word is smoothed with (a wording said few times borrows from its class)."""
 
+SPELLING = 0.85
+"""How similar (``difflib``'s ratio) a word no class names must be to a wording people said to be read as
+its misspelling ("stovve" → stove 0.91, "cabinst" → cabinet 0.86; "pencil" for "parcel" is 0.67)."""
+
 _WORD = re.compile(r"[a-z]+")
 
 
@@ -229,6 +233,31 @@ class WordUsage:
                 p = (by_class.get(key, {}).get(word, 0) + CONTEXT_PRIOR * overall) / (n + CONTEXT_PRIOR)
                 logs[key] += math.log(p) - math.log(p_word)
         return {key: math.exp(self.context_weight * v) for key, v in logs.items()}
+
+    @cached_property
+    def _heads(self) -> tuple[str, ...]:
+        """The one-word wordings people said at least ``min_support`` times, which a misspelling is matched against."""
+        return tuple(w for w, by in self.counts.items() if " " not in w and "<-" not in w and w.isalpha()
+                     and sum(by.values()) >= self.min_support)
+
+    @cached_property
+    def _spelled(self) -> dict[str, str | None]:
+        return {}
+
+    def respelled(self, word: str) -> str | None:
+        """The word people said that ``word`` most likely misspells ("stovve": stove, "cabinst":
+        cabinet), or None: the one wording of the table within :data:`SPELLING` similarity
+        (``difflib``'s ratio) of a word of at least 5 letters, closer than any other."""
+        if len(word) < 5 or not word.isalpha() or word in self.counts:
+            return None
+        cache = self._spelled
+        if word not in cache:
+            import difflib
+
+            close = difflib.get_close_matches(word, self._heads, n=2, cutoff=SPELLING)
+            ratios = [difflib.SequenceMatcher(None, word, c).ratio() for c in close]
+            cache[word] = close[0] if close and (len(close) == 1 or ratios[0] > ratios[1]) else None
+        return cache[word]
 
     @cached_property
     def _meant(self) -> frozenset[str]:
