@@ -34,9 +34,9 @@ from seal_cli.errors import SealError, Where
 if TYPE_CHECKING:
     import yaml
 
-__all__ = ["LOADER", "MAX_IMAGE_BYTES", "MAX_INPUT_BYTES", "Outputs", "atomic_output", "atomic_write_text",
-           "clean_up_on_signals", "decode", "read_bytes", "read_json_lines", "read_text", "read_yaml",
-           "remove_temporaries", "split_lines"]
+__all__ = ["LOADER", "MAX_IMAGE_BYTES", "MAX_INPUT_BYTES", "YAML_BREAKS", "Outputs", "atomic_output",
+           "atomic_write_text", "clean_up_on_signals", "decode", "read_bytes", "read_json_lines", "read_text",
+           "read_yaml", "remove_temporaries", "split_lines", "yaml_problem"]
 
 if TYPE_CHECKING:
     LOADER: type[yaml.SafeLoader]
@@ -141,6 +141,33 @@ def split_lines(text: str) -> list[str]:
     return [line[:-1] if line.endswith("\r") else line for line in lines]
 
 
+YAML_BREAKS = re.compile("\r\n|[\n\r\x85\u2028\u2029]")
+"""What YAML counts as a line break (its marks count lines by these)."""
+
+
+def yaml_problem(exc: Exception, text: str, file: str) -> SealError:
+    """One YAML reader's failure as a SealError at its line and column, with the line and a caret:
+    a syntax error at its mark, a character YAML refuses (a NUL, a control character) at its
+    position, anything else at the file. Every YAML reader of seal words its failures here."""
+    import yaml
+
+    lines = YAML_BREAKS.split(text)
+    if isinstance(exc, yaml.MarkedYAMLError):
+        mark = exc.problem_mark or exc.context_mark
+        what = f"YAML syntax error: {exc.problem or exc.context}"
+        if mark is None:
+            return SealError(what, Where(file))
+        source = lines[mark.line] if mark.line < len(lines) else None
+        return SealError(what, Where(file, mark.line + 1, mark.column + 1), source_line=source)
+    if isinstance(exc, yaml.reader.ReaderError) and isinstance(exc.character, (int, str)):
+        code = exc.character if isinstance(exc.character, int) else ord(exc.character)
+        before = YAML_BREAKS.split(text[:exc.position])
+        line, column = len(before), len(before[-1]) + 1
+        return SealError(f"YAML does not allow the control character {chr(code)!r} (U+{code:04X}) in a file",
+                         Where(file, line, column), source_line=lines[line - 1].replace(chr(code), " "))
+    return SealError(f"YAML error: {exc}", Where(file))
+
+
 def read_yaml(path: str | Path) -> Any:
     """A YAML file's data; syntax errors carry the line and column, with the line and a caret."""
     import yaml
@@ -152,16 +179,8 @@ def read_yaml(path: str | Path) -> Any:
     try:
         check_size(yaml.compose(text, Loader=loader), str(path))  # no alias bomb is expanded
         return yaml.load(text, Loader=loader)  # noqa: S506 (a safe loader)
-    except yaml.MarkedYAMLError as exc:
-        mark = exc.problem_mark or exc.context_mark
-        lines = text.splitlines()
-        if mark is None:
-            raise SealError(f"YAML syntax error: {exc.problem}", Where(str(path))) from None
-        source = lines[mark.line] if mark.line < len(lines) else None
-        raise SealError(f"YAML syntax error: {exc.problem or exc.context}",
-                        Where(str(path), mark.line + 1, mark.column + 1), source_line=source) from None
     except yaml.YAMLError as exc:
-        raise SealError(f"YAML error: {exc}", Where(str(path))) from None
+        raise yaml_problem(exc, text, str(path)) from None
 
 
 def read_json_lines(path: str | Path) -> list[Any]:

@@ -11,7 +11,7 @@ from pathlib import Path
 
 from seal_cli.errors import SealError
 
-__all__ = ["data_dir", "framelib_dir", "grammar_path", "map_path", "maps_dir"]
+__all__ = ["data_dir", "framelib_dir", "grammar_path", "map_path", "maps_dir", "shipped_maps"]
 
 _PACKAGE = Path(__file__).resolve().parent
 
@@ -37,10 +37,29 @@ def maps_dir() -> Path:
     return data_dir("maps")
 
 
+def shipped_maps() -> list[str]:
+    """The names of the maps shipped with seal."""
+    return sorted(p.stem for p in maps_dir().glob("*.yaml"))
+
+
 def map_path(name: str) -> Path:
-    """A map file by path, or by the name of a shipped map (``apartment``)."""
+    """A map file by path, or by the name of a shipped map (``apartment``: a plain name, no folder).
+    A name that is neither is a SealError listing the shipped maps (the closest first)."""
+    import difflib
+    import os
+
+    if not name.strip():
+        raise SealError(f"the map's name is empty: give a map file or a shipped map ({', '.join(shipped_maps())})")
     path = Path(name)
-    if path.exists():
+    try:
+        if os.path.lexists(path) or os.sep in name or (os.altsep or os.sep) in name:
+            return path  # a path: the reader says what is wrong with it
+    except (OSError, ValueError):
         return path
     shipped = maps_dir() / (name if name.endswith((".yaml", ".yml")) else f"{name}.yaml")
-    return shipped if shipped.exists() else path
+    if shipped.exists():
+        return shipped
+    names = shipped_maps()
+    close = difflib.get_close_matches(name.lower().removesuffix(".yaml"), names, n=1)
+    raise SealError(f"{name}: no such map file, nor a map shipped with seal"
+                    f"{f' (did you mean {close[0]!r}?)' if close else ''}; shipped maps: {', '.join(names)}")

@@ -94,3 +94,14 @@ def test_json_lines_errors_carry_line_and_column(tmp_path: Path) -> None:
     assert (info.value.line, info.value.column) == (3, 7) and "not JSON" in info.value.message
     path.write_text('{"a": 1}\n\n[2]\n', encoding="utf-8")
     assert read_json_lines(path) == [{"a": 1}, [2]]
+
+
+@pytest.mark.parametrize(("text", "line", "column"), [("a: 1\nb: [x,\x00 y]\n", 2, 7), ("a: 1\rb: \x01\r", 2, 4),
+                                                     ("\x07", 1, 1)])
+def test_a_control_character_yaml_refuses_is_located(tmp_path: Path, text: str, line: int, column: int) -> None:
+    path = tmp_path / "c.yaml"
+    path.write_text(text, newline="")
+    with pytest.raises(SealError) as caught:
+        read_yaml(path)
+    assert (caught.value.line, caught.value.column) == (line, column)
+    assert "control character" in caught.value.message and "<unicode string>" not in str(caught.value)

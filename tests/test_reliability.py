@@ -13,7 +13,8 @@ import pytest
 import yaml
 from typer.testing import CliRunner
 
-from seal_cli.bench.reliability import Case, cases, generated_cases, hostile_cases, issue_cases, run_case, summarise
+from seal_cli.bench.reliability import Case, generated_cases, hostile_cases, issue_cases, run_case, summarise
+from seal_cli.bench.reliability_review import cases, review_cases
 from seal_cli.cli import app
 from seal_cli.errors import SealError
 from seal_cli.fileio import LOADER, Outputs, read_bytes, read_text, split_lines
@@ -171,13 +172,20 @@ def test_the_suite_holds_the_issue_and_at_least_300_generated_cases() -> None:
     written = list(hostile_cases())
     assert len(written) >= 100 and len({c.name for c in written}) == len(written)
     assert {c.name for c in written}.isdisjoint(c.name for c in issue_cases())
+    reviewed = list(review_cases())
+    assert len(reviewed) >= 120 and len({c.name for c in reviewed}) == len(reviewed)
+    assert {c.name for c in reviewed}.isdisjoint(c.name for c in [*written, *issue_cases()])
+    assert sum(c.says is not None for c in reviewed) >= 100  # most say what the message must name
 
 
 PICKED = ("1 localize --png onto the map", "1 an output hard-linked to the image", "3 put 99999999999 apples",
           f"5 {signal.SIGTERM.name} during localize --png --rrd", "5 a stale temporary of a killed run is swept",
           "H three map --png at once onto one file", "H map through a link loop", "H map path with a newline",
           "H option run apartment --max-metres nan", "H option bench map --layouts 99999999999999999999",
-          "H encoding utf-16: validate", "H a folder for a file: map map d.yaml")
+          "H encoding utf-16: validate", "H a folder for a file: map map d.yaml",
+          "R a NUL byte in the observations", "R stdin closed: parse --file -", "R stdout /dev/full: validate",
+          "R a path of 300 characters", "R seal run --map 'apartmnt'", "R map image: 100,000 by 100,000 declared",
+          "R frame YAML: a category member of 0x10", "R an output onto an input: --episodes hard-linked to the map")
 
 
 @pytest.mark.parametrize("name", PICKED)
@@ -194,3 +202,11 @@ def test_the_judge_sees_a_partial_output_and_a_wrong_code(tmp_path: Path) -> Non
                   codes=(0,), whole=("o.png",))
     outcome = run_case(broken)
     assert outcome.kinds == {"exit", "partial"}
+
+
+def test_the_judge_sees_an_unclear_message() -> None:
+    """A refusal must say what the case says it must (``says``), and say something."""
+    vague = Case("judge", ("validate", "f.frame"), (("f.frame", b"frame {"),), codes=(1,), says=r"nowhere\.txt:\d+")
+    assert run_case(vague).kinds == {"message"}
+    silent = Case("judge", ("map", "nope.yaml"), codes=(1,), stream="closed-stderr")
+    assert run_case(silent).problems == []  # stderr closed: nothing can be said, nothing is asked

@@ -21,7 +21,19 @@ def test_a_map_by_path_or_by_a_shipped_name(tmp_path: Path, monkeypatch: pytest.
     assert resources.map_path("apartment") == shipped == resources.map_path("apartment.yaml")
     (tmp_path / "apartment.yaml").write_text("")
     assert resources.map_path("apartment.yaml") == Path("apartment.yaml")      # a file of that name first
-    assert resources.map_path("nowhere") == Path("nowhere")                    # left for the reader to refuse
+    assert resources.map_path("sub/nowhere") == Path("sub/nowhere")            # a path: left for the reader
+    assert resources.map_path("../maps/apartment") == Path("../maps/apartment")  # never a shipped map's folder
+
+
+@pytest.mark.parametrize(("name", "message"), [("apartmnt", "did you mean 'apartment'.*shipped maps: apartment"),
+                                               ("APARTMENT", "did you mean 'apartment'"),
+                                               ("zzzz", r"nor a map shipped with seal; shipped maps: apartment"),
+                                               ("", "the map's name is empty"), ("  ", "the map's name is empty")])
+def test_a_name_that_is_no_file_and_no_shipped_map_lists_them(name: str, message: str, tmp_path: Path,
+                                                              monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(SealError, match=message):
+        resources.map_path(name)
 
 
 def test_a_missing_installation_folder_is_one_clear_error(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:

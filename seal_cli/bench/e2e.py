@@ -108,7 +108,10 @@ def _map_file(name: str, base: Path, number: int, suite: Path) -> str | None:
     from seal_cli.resources import map_path
 
     beside = base / name
-    found = beside if beside.is_file() else map_path(name)
+    try:
+        found = beside if beside.is_file() else map_path(name)
+    except SealError:  # neither a file nor a shipped map: said below, with the case's number
+        found = beside
     if not found.is_file():
         raise SealError(f"case {number}: no map {name!r} (the suite's maps are {', '.join(MAPS)}; a shipped map "
                         "or a map file, relative to the cases file, also works)", Where(str(suite)))

@@ -185,3 +185,24 @@ def cottage() -> Map:
 
 COTTAGE_STARTS = ((7.5, 1.0, 0.0), (7.5, 9.0, 0.0), (12.0, 7.0, 0.0))
 """The hall's south and north ends, and the kitchen."""
+
+
+def bungalow() -> Map:
+    """16 m × 11 m, drawn to check the context suite's figures on a house its policies were never run on
+    before: three rooms in a row along the south wall (living room, dining room, kitchen), the bedroom
+    and a wide family room along the north; the kitchen and the family room are reached only through
+    the dining room, the bedroom only from the living room."""
+    rooms = {"living_room": (0.0, 0.0, 6.0, 5.0), "dining_room": (6.0, 0.0, 10.0, 5.0),
+             "kitchen": (10.0, 0.0, 16.0, 5.0), "bedroom": (0.0, 5.0, 7.0, 11.0),
+             "family_room": (7.0, 5.0, 16.0, 11.0)}
+    doors = [(6.0, 2.5), (10.0, 2.0), (2.0, 5.0), (8.5, 5.0)]
+    places = (Place("coffee_table_1", "coffee_table", (3.0, 2.0)), Place("dining_table_1", "dining_table", (8.0, 2.5)),
+              Place("counter_1", "counter", (15.3, 2.5)), Place("bed_1", "bed", (2.0, 9.0)),
+              Place("sofa_1", "sofa", (11.5, 8.5)))
+    objects = tuple(ObjectTruth(str(o["class"]), (3.0, 3.0)) for o in CONTEXT_OBJECTS)
+    return walled_house("bungalow", (16.0, 11.0), rooms, doors, objects=objects, places=places,
+                        robot=(3.0, 3.5, 0.0), priors=CONTEXT_PRIORS, furniture=((1.0, 9.5, 3.0, 10.8),))
+
+
+BUNGALOW_STARTS = ((3.0, 3.5, 0.0), (8.0, 1.0, 0.0), (13.0, 9.0, 0.0))
+"""The living room, the dining room's south side, the family room's east end."""

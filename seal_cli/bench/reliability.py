@@ -12,7 +12,9 @@ and signals sent during a run. A case counts
   a bad option, 143 after SIGTERM, ...);
 - a **lost or partial file** when an input changed, a temporary of ours was left behind, an
   output the case forbids exists, or a failed command left any new file;
-- **nondeterminism** when a case marked ``twice`` gives other output on a second run.
+- **nondeterminism** when a case marked ``twice`` gives other output on a second run;
+- an **unclear message** when a refusal (exit code 1 or 2) says nothing on stderr, or not what
+  the case says it must (``Case.says``: the file, line and column, or the option).
 
 A reliable seal counts zero of each; only ``tried`` grows.
 """
@@ -33,7 +35,8 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 
-__all__ = ["Case", "Outcome", "cases", "run_case", "run_cases", "summarise"]
+__all__ = ["Case", "Outcome", "generated_cases", "hostile_cases", "issue_cases", "run_case", "run_cases",
+           "summarise"]
 
 TIMEOUT = 60.0
 """Seconds any case may take (the bound every command must finish or refuse within)."""
@@ -89,9 +92,9 @@ class Case:
     """One command to run in a fresh folder holding ``files``, and what it may do.
 
     A file's content is bytes, or ``"fifo"`` for a named pipe, ``"dir"`` for a folder, or ``"link:TARGET"`` for a
-    symbolic link, or ``"hard:TARGET"`` for a hard link. ``keep``: files that must be unchanged
-    after; ``absent``: files that must not exist after; ``signal``: send it this many seconds
-    after the start."""
+    symbolic link, or ``"hard:TARGET"`` for a hard link, or ``"ro-dir"`` for a read-only folder.
+    ``keep``: files that must be unchanged after; ``absent``: files that must not exist after;
+    ``signal``: send it this many seconds after the start."""
 
     name: str
     argv: tuple[str, ...]
@@ -107,6 +110,13 @@ class Case:
     """Run this many copies at once in the same folder (concurrent writers of one output)."""
     whole: tuple[str, ...] = ()
     """Files that must exist after and be complete (a PNG to its IEND, JSON that parses)."""
+    says: str | None = None
+    """A pattern the command's messages (stderr, and stdout for ``seal validate``'s listing) must
+    hold: when it refuses (exit code 1 or 2), its refusal's shape (``file:line:col:``, the option's
+    name); for a case that must succeed (``codes == (0,)``), its warning."""
+    stream: str = ""
+    """Standard streams made hostile: ``closed-stdin``, ``closed-stdout``, ``closed-stderr``,
+    ``full-stdout`` (``/dev/full``: every write fails), ``open-stdin`` (a pipe nobody writes to)."""
 
 
 @dataclass
@@ -132,6 +142,9 @@ def _make(folder: Path, files: tuple[tuple[str, bytes | str], ...]) -> None:
             os.mkfifo(path)
         elif content == "dir":
             path.mkdir(parents=True, exist_ok=True)
+        elif content == "ro-dir":
+            path.mkdir(parents=True, exist_ok=True)
+            path.chmod(0o555)
         elif isinstance(content, str) and content.startswith("link:"):
             path.symlink_to(content[5:])
         elif isinstance(content, str) and content.startswith("hard:"):
@@ -191,12 +204,20 @@ def _once(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
     return _parallel(case, folder) if case.parallel > 1 else _one(case, folder)
 
 
+STREAMS = {"closed-stdin": "<&-", "closed-stdout": ">&-", "closed-stderr": "2>&-", "full-stdout": ">/dev/full",
+           "open-stdin": "", "": ""}
+"""The shell redirection of each hostile ``Case.stream``."""
+
+
 def _one(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
     env = {**os.environ, "COLUMNS": "200", "NO_COLOR": "1", "PYTHONWARNINGS": "ignore"}
     start = time.perf_counter()
-    argv = [a.replace("\x00", "\x01") for a in case.argv]  # no shell can pass a NUL in an argument
-    process = subprocess.Popen([*_seal(), *argv], cwd=folder, env=env, stdout=subprocess.PIPE,
-                               stderr=subprocess.PIPE, stdin=subprocess.PIPE if case.stdin is not None
+    argv = [*_seal(), *(a.replace("\x00", "\x01") for a in case.argv)]  # no shell can pass a NUL in an argument
+    if STREAMS[case.stream]:
+        argv = ["/bin/sh", "-c", f'exec "$@" {STREAMS[case.stream]}', "sh", *argv]
+    piped = case.stdin is not None or case.stream == "open-stdin"
+    process = subprocess.Popen(argv, cwd=folder, env=env, stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, stdin=subprocess.PIPE if piped
                                else subprocess.DEVNULL, start_new_session=True)
     try:
         if case.signal is not None:
@@ -229,6 +250,12 @@ def run_case(case: Case) -> Outcome:
             outcome.problems.append(f"exit: {code}, expected {' or '.join(map(str, case.codes))}: {text[-300:]}")
         if TRACEBACK in text or TRACEBACK in out.decode("utf-8", "replace"):
             outcome.problems.append(f"traceback: {text[-500:]}")
+        said = text + out.decode("utf-8", "replace")
+        if code in (1, 2) and case.stream != "closed-stderr" and not said.strip():
+            outcome.problems.append("message: the command failed and said nothing")
+        elif case.says is not None and (code in (1, 2) or (code == 0 and case.codes == (0,))) \
+                and not re.search(case.says, said):
+            outcome.problems.append(f"message: what it said does not match {case.says!r}: {said[-300:]}")
         for key, digest in kept.items():
             if _digest(folder / key) != digest:
                 outcome.problems.append(f"lost: input {key} changed or vanished")
@@ -272,7 +299,7 @@ def summarise(outcomes: list[Outcome]) -> dict[str, object]:
 
     return {"tried": len(outcomes), "tracebacks": count("traceback"), "hangs": count("hang"),
             "wrong_exit_codes": count("exit"), "lost_or_partial_files": count("lost") + count("partial"),
-            "nondeterministic": count("nondeterminism"),
+            "nondeterministic": count("nondeterminism"), "unclear_messages": count("message"),
             "slowest_s": round(max((o.seconds for o in outcomes), default=0.0), 2),
             "problems": [{"case": o.case, "problems": o.problems} for o in outcomes if o.problems]}
 
@@ -658,7 +685,3 @@ def generated_cases(seed: int = 0, count: int = 320) -> Iterator[Case]:
     for i in range(count):
         yield makers[i % len(makers)](i)
 
-
-def cases(seed: int = 0, count: int = 320) -> list[Case]:
-    """The issue's cases, the hostile inputs written by hand, then ``count`` generated ones."""
-    return [*issue_cases(), *hostile_cases(), *generated_cases(seed, count)]

@@ -17,6 +17,7 @@ from seal_cli.cli import (
     JsonOption,
     command,
     emit_json,
+    err,
     framelib_paths,
     out,
     progress_bar,
@@ -154,6 +155,8 @@ def localize(
                                  map_name if Path(map_name).exists() else None])
     library = load_library(framelib_paths(framelib))
     the_map = load_map(map_path(map_name))
+    for warning in the_map.warnings:  # odd but usable (a place in no room): said, not refused
+        err.print(f"warning: {warning}", markup=False)
     runs: list[Observation] = []
     stamps: tuple[float, ...] = ()
     if trajectory is not None:

@@ -81,8 +81,11 @@ def run_command(function: Callable[[], int | None]) -> int:
     from seal_cli.fileio import clean_up_on_signals, remove_temporaries
 
     clean_up_on_signals()
+    _closed_streams_to_null()
     try:
         code = function()
+        if code in (0, None):
+            sys.stdout.flush()  # a full disk must fail the command, not the interpreter's exit
         return code if isinstance(code, int) else 0
     except SealError as error:
         report(error)
@@ -99,8 +102,30 @@ def run_command(function: Callable[[], int | None]) -> int:
     except RecursionError:
         err.print("error: the input is nested too deeply for seal to handle", markup=False)
         return 1
+    except OSError as error:  # what the system refuses: a name too long, a full disk under stdout, ...
+        if error.filename is None:  # writing standard output failed (a full disk, a broken device)
+            _stdout_to_null()
+            err.print(f"error: cannot write the output: {error.strerror or error}", markup=False)
+        else:
+            err.print(f"error: {error.filename}: {error.strerror or error}", markup=False)
+        return 1
     finally:
         remove_temporaries()  # of outputs planned but never written: the command failed first
+
+
+def _closed_streams_to_null() -> None:
+    """A standard output or error the command was started without (``>&-``) reads as ``/dev/null``:
+    what is printed there is lost, as the caller asked, instead of failing the command."""
+    for name in ("stdout", "stderr"):
+        if getattr(sys, name) is None:
+            setattr(sys, name, open(os.devnull, "w", encoding="utf-8"))  # noqa: SIM115 - lives as long as seal
+
+
+def _stdout_to_null() -> None:
+    """After a write to standard output failed: drop what is still buffered, so that the interpreter's
+    exit does not fail again (and print a traceback) flushing it."""
+    with contextlib.suppress(OSError, ValueError):
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
 
 
 @contextlib.contextmanager

@@ -55,6 +55,8 @@ def _read_lines(source: str) -> list[str]:
 
     if source != "-":
         return split_lines(read_text(source))
+    if sys.stdin is None:  # started with its standard input closed
+        raise SealError("--file -: standard input is closed; pipe the commands in, or give a file")
     data = sys.stdin.buffer.read(MAX_INPUT_BYTES + 1)
     if len(data) > MAX_INPUT_BYTES:
         raise SealError(f"standard input holds more than {MAX_INPUT_BYTES // 2**20} MiB; seal reads at most that")

@@ -132,5 +132,7 @@ def _outline(parsed: Parse, escape: Callable[[str], str],
             elements.append(tag("yellow", role) + f": {said}  " + tag("dim", " · ".join(facts)))
         if frame.condition:
             elements.append(tag("yellow", "condition") + f": {escape(frame.condition)}")
+        if frame.asked:
+            elements.append(tag("yellow", "asked") + f": {escape(frame.asked)}")   # "is the fridge open?"
         frames.append((label, elements))
     return tag("bold", escape(parsed.text)), frames

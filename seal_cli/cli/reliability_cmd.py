@@ -15,15 +15,18 @@ def reliability(
     limit: int | None = typer.Option(None, "--limit", min=1, help="Run only the first N cases.",
                                      show_default=False),
     jobs: int = typer.Option(2, "--jobs", min=1, max=64, help="Cases run at once."),
+    match: str | None = typer.Option(None, "--match", help="Run only the cases whose name holds this text "
+                                     "(e.g. 'R ' for the reviewer's).", show_default=False),
     as_json: bool = JsonOption,
 ) -> None:
     """Run seal as a hostile user would: count tracebacks, hangs, wrong exit codes, lost or partial
     files and nondeterminism (all should be zero)."""
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
 
-    from seal_cli.bench.reliability import cases, run_cases, summarise
+    from seal_cli.bench.reliability import run_cases, summarise
+    from seal_cli.bench.reliability_review import cases
 
-    todo = cases(seed, count)[:limit]
+    todo = [c for c in cases(seed, count) if match is None or match in c.name][:limit]
     with Progress(TextColumn("cases"), BarColumn(), MofNCompleteColumn(), TimeRemainingColumn(),
                   console=err.console, transient=True, disable=not err.is_terminal) as progress:
         bar = progress.add_task("cases", total=len(todo))
@@ -37,8 +40,8 @@ def reliability(
                 out.print(f"{item['case']}: {problem}", markup=False)
         out.print(" ".join(f"{key} {report[key]}" for key in ("tried", "tracebacks", "hangs", "wrong_exit_codes",
                                                               "lost_or_partial_files", "nondeterministic",
-                                                              "slowest_s")), markup=False)
+                                                              "unclear_messages", "slowest_s")), markup=False)
     failed = any(report[k] for k in ("tracebacks", "hangs", "wrong_exit_codes", "lost_or_partial_files",
-                                     "nondeterministic"))
+                                     "nondeterministic", "unclear_messages"))
     if failed:
         raise typer.Exit(1)

@@ -80,6 +80,8 @@ def run(
 
     library = load_library(framelib_paths(framelib))
     the_map = load_map(map_path(map_name))
+    for warning in the_map.warnings:  # odd but usable (a place in no room): said, not refused
+        err.print(f"warning: {warning}", markup=False)
     vocabulary = None
     if vocabulary_file is not None:
         from seal_cli.language.grounding import load_vocabulary
@@ -213,8 +215,10 @@ def tasks(
         raise SealError(f"--policies: unknown policy {unknown[0]!r}; known: {', '.join(POLICIES)}")
     from seal_cli.cli import OUTPUT_SUFFIXES
     from seal_cli.fileio import Outputs
+    from seal_cli.resources import map_path
 
-    outputs = Outputs({"--episodes": episodes}, [data, *(framelib or [])], suffixes=OUTPUT_SUFFIXES)
+    the_map = map_path(map_name) if suite == "map" else None  # an input too: --episodes must not replace it
+    outputs = Outputs({"--episodes": episodes}, [data, the_map, *(framelib or [])], suffixes=OUTPUT_SUFFIXES)
     outcomes: list[Outcome] = []
     with Progress(TextColumn("episodes"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), console=err.console,
                   transient=True, disable=not err.is_terminal) as progress:
@@ -226,10 +230,9 @@ def tasks(
         libs = [str(p) for p in framelib_paths(framelib) or []] or None
         if suite == "map":
             from seal_cli.bench.mapsuite import COMMANDS, run_map_suite
-            from seal_cli.resources import map_path
 
             layouts = layouts or 10
-            runs = run_map_suite(str(map_path(map_name)), list(commands or COMMANDS), names, layouts=layouts,
+            runs = run_map_suite(str(the_map), list(commands or COMMANDS), names, layouts=layouts,
                                  seed=seed, jobs=jobs or os.cpu_count() or 1, particles=particles, framelib=libs,
                                  progress=advance)
         elif suite == "context":

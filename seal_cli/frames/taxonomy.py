@@ -64,6 +64,10 @@ class Category:
         object.__setattr__(self, "name", class_key(self.name))
         if self.members is not None:
             object.__setattr__(self, "members", tuple(class_key(m) for m in self.members))
+        odd = [n for n in (self.name, *(self.members or ())) if not _CLASS.match(n)]
+        if odd:  # a number ("0x10", "1e309") is no class
+            raise SealError(f"category {self.name}: {odd[0]!r} is not a class name (letters, digits and '_', not "
+                            "starting with a digit)", self.where)
 
     @property
     def is_open(self) -> bool:

@@ -81,6 +81,7 @@ class Clauses:
             items = items[:split]
         clause = self.make_clause(raw.verb, items, raw.conditions, raw.sub)
         clause.gap = gap
+        clause.asked = raw.asked
         return [clause, *([gap] if gap is not None else []), *([purpose] if purpose is not None else [])]
 
     def purpose(self, items: list[Item]) -> Clause | None:

@@ -145,6 +145,13 @@ HERE_WORDS = frozenset(["here", "there", "over here", "over there", "upstairs", 
 """Words that name a place by themselves (deictic and directional adverbs): "come *here*", "bring it
 *upstairs*". "in there" and "in here" are read as "there" and "here" ("count the cans *in there*": the
 place named before)."""
+LOCATIVE = ("in", "on", "at", "near", "under", "by", "inside", "behind", "above", "over", "in front of",
+            "between", "around", "across", "through", "along", "beyond", "against", "outside", "past")
+"""Prepositions (canonical forms) that say where something is ("*on* the sofa"): the roles they may name are
+in ``roles.PREPOSITION_ROLES``."""
+DIRECTIONS = frozenset(["upstairs", "downstairs", "indoors", "outdoors"])
+"""Place words that say where a motion goes ("carry the box *upstairs*", "go *outside*"): a goal, or where
+something is looked for ("find the cat *downstairs*"), never where it is taken from (that is "from upstairs")."""
 TIME_WORDS = frozenset(["now", "later", "soon", "today", "tonight", "tomorrow", "again", "too", "first",
                         "right away", "right now", "at once", "as well", "as soon as possible", "asap", "meanwhile",
                         "in a minute", "in a moment", "for now", "this morning", "this evening", "tonight"])
@@ -200,9 +207,10 @@ QUESTION_WORDS = frozenset(["what", "who", "which", "whose", "whom", "what's", "
 shelf?", "*Who* is in the kitchen?"): a bare question means "tell me ..." (``QUESTION_MEANS``)."""
 QUESTION_MEANS = "tell"
 WHERE_QUESTIONS = frozenset(["where is", "where are", "where 's", "where's", "where're", "is there", "are there",
-                             "is there any", "are there any"])
+                             "is there any", "are there any", "do we have", "do we have any", "have we got",
+                             "have we got any", "do we still have", "do we still have any"])
 """Questions about where a thing is, or whether there is one ("*where is* the cup?", "*is there* a cup in the
-kitchen?"): they mean "find ..." (``WHERE_MEANS``)."""
+kitchen?", "*do we have any* eggs?"): they mean "find ..." (``WHERE_MEANS``)."""
 WHERE_MEANS = "find"
 WHERE_DID = (frozenset(["where"]), frozenset(["did", "do", "does", "have", "has", "can", "could", "should",
                                               "would", "will", "might", "may"]),
@@ -245,5 +253,26 @@ CHECK_WHETHER = (frozenset(["check", "see", "find out", "look and see", "go and 
                  frozenset(["if", "whether"]), frozenset(["there is", "there are", "there 's", "there's"]))
 """"*See if* anyone is in the kitchen", "*check whether* there is milk in the fridge": the question whether
 it is there, asked as "find ..." (``WHERE_MEANS``), as "is anyone in the kitchen?" is."""
+STATE_MEANS = "check"
+""""*Is* the fridge *open*?", "check *whether* the door is *closed*": a yes/no question about a thing's state means
+"check the fridge" (a unit of LookAt in the standard library), the state asked kept beside the frame."""
+STATE_ASKERS = frozenset(["tell me", "let me know", "let us know", "do you know", "i'd like to know",
+                          "i would like to know", "i want to know", "i wonder", "i was wondering", "find out",
+                          "check", "see", "look and see", "go and see", "go and check", "go check", "go see",
+                          "make sure", "check and see"])
+"""What asks whether something holds, before "if"/"whether" ("*tell me* if the keys are on the table",
+"*let me know* whether the stove is on", "*find out* if Tom is in the kitchen"): the question, not the verb
+of saying, is the frame (Find of a place, LookAt of a state)."""
+STATE_PARTICLES = frozenset(["on", "off", "open", "shut"])
+"""Words that end a question of state though lemminflect lists them as no adjective ("is the TV *on*?")."""
+STATE_ADVERBS = frozenset(["still", "already", "yet", "now", "really", "currently", "properly", "all", "fully",
+                           "completely"])
+"""Adverbs said before the state asked ("is the light *still* on?"), part of it."""
+SWITCHED_MEANS = {"on": "turn on", "off": "turn off"}
+""""*Lights off* in the hall", "the TV on, please": a thing and "on"/"off", no verb, is switching it so
+("turn the lights off"): the particle's unit, when the library has it."""
+FOUND_OUT = frozenset(["who", "what", "which", "whose", "what's", "who's"])
+""""*find out who* is in the hall", "*check what* is in the fridge", "see who's at the door": a verb of checking
+and a question word asks the question (``QUESTION_MEANS``): "tell me who is in the hall"."""
 LET_KNOW = ("let", "know")
 """"*let* me *know* ...", "*let* Amara *know* that ...": "tell me ...", "tell Amara that ..." (``QUESTION_MEANS``)."""

@@ -70,7 +70,7 @@ class Evoker:
             clause.result = [x for x in clause.items if isinstance(x, PP) and self.is_form(x)]
             clause.items = [x for x in clause.items if not any(x is r for r in clause.result)]
         unit, best = self.choose(unit, self.accompanying(frames, clause) or frames, clause)
-        _, frame, roles, attached = self.moving(best, self.types.evoked_by(unit), clause)
+        _, frame, roles, attached = self.escorting(self.moving(best, self.types.evoked_by(unit), clause), clause)
         self.first_into(frame, roles, attached)
         self.emit(frame, unit, clause, roles, attached)
 
@@ -138,6 +138,20 @@ class Evoker:
             return best                      # "pick up the cup and get [it] to the kitchen"
         going = [f for f in self.library.frames if f.elements and f.elements[0].role == "goal"]
         return self.best_fit(going, clause) or best
+
+    def escorting(self, best: Fit, clause: Clause) -> Fit:
+        """"*get Jane to* the kitchen", "deliver the guest to the lobby": a frame that moves a thing to a goal,
+        said of a person (one object, a person, where the frame wants no person) with the goal said, is
+        bringing the person there — the library's frames whose first element is a person and whose result
+        relates them to the goal (Guide's ``at(theme, goal)``), as "take" and "bring" are listed there."""
+        _, frame, roles, _ = best
+        first = frame.elements[0] if frame.elements else None
+        if first is None or self.types.is_person(first.type) or "goal" not in roles or len(clause.objects) != 1 \
+                or self.roles.kind(clause.objects[0], None, None) != "person":
+            return best
+        leading = [f for f in self.library.frames if f.elements and self.types.is_person(f.elements[0].type)
+                   and "goal" in self.types.roles(f) and _relates_to_goal(self.types.relation(f))]
+        return self.best_fit(leading, clause) or best
 
     def makes_state(self, frame: Frame) -> bool:
         """Whether the frame's result is a state of its first element and it puts it nowhere (Slice:
@@ -271,7 +285,7 @@ class Evoker:
                                   "; ".join(clause.conditions) or None,
                                   " ".join(self.text[r.start:r.np.end] for r in clause.result) or None,
                                   " ".join(w.text for w in clause.items if isinstance(w, Word) and w.info == "time")
-                                  or None))
+                                  or None, clause.asked))
         self.carry_on(frame, roles, attached)
 
     @staticmethod
@@ -317,8 +331,9 @@ class Evoker:
         if np.results and role == "instrument":
             np.results = []              # "wipe the table with a clean cloth": the tool as it is, no Clean first
         if np.results and frame.elements and role == frame.elements[0].role:
-            if "source" in roles:
-                np.results = []          # "take the clean mugs out of the dishwasher": the thing as it is
+            if "source" in roles or "ground" in self.types.roles(frame):
+                np.results = []          # "take the clean mugs out of the dishwasher", "are there any clean towels
+                #                          in the cupboard?", "count the clean plates": the thing as it is (sought)
             undone = {p.predicate for p in frame.postconditions if p.negated and p.args == (role,)}
             np.results = [w for w in np.results if not undone & self.result_states(w)]   # "heat the frozen peas"
         self.results_of(np)

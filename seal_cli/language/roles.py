@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import PERSON_PRONOUNS
+from seal_cli.language.english import LOCATIVE, PERSON_PRONOUNS
 from seal_cli.language.lexicon import noun_lemma
 from seal_cli.language.syntax import NP, PP, Clause
 
@@ -29,8 +29,6 @@ __all__ = ["ATTACHABLE", "FROM", "LOCATIVE", "PREPOSITION_ROLES", "PUT_IN", "TO"
 
 TO = ("to", "into", "onto")
 FROM = ("from", "out of", "off")
-LOCATIVE = ("in", "on", "at", "near", "under", "by", "inside", "behind", "above", "over", "in front of",
-            "between", "around", "across", "through", "along", "beyond", "against", "outside", "past")
 ATTACHABLE = LOCATIVE + ("with", "without", "about", "for", "via", "of")
 """Prepositions whose phrase may describe the noun before it when it fills no element."""
 PUT_IN = ("in", "on", "inside", "into", "onto")
@@ -53,6 +51,7 @@ PREPOSITION_ROLES: Mapping[str, Sense] = {
     **{p: Sense(("source",), ("source",)) for p in FROM},
     "with": Sense(("instrument",), ("instrument",)),
     **{p: Sense(_WHERE, _WHERE) for p in LOCATIVE},
+    "toward": Sense(("goal", "ground"), ("goal", "ground")),     # "upstairs", "outside": where a motion goes
 }
 """Preposition → the roles it may name (a preposition not listed names none)."""
 

@@ -290,6 +290,19 @@ class State:
         m = match_phrase(words, i + n, POLITE)
         return n if m and nxt != "to" and self.verb_after(i + n) else 0
 
+    def possessed_at(self, k: int, end: int) -> bool:
+        """Whether the word at ``k``, after "'s", is what someone has ("Anna's *cup*", "the guest's *red* coat"): a
+        noun or adjectives then a noun, no word of state or verb form ending the clause ("the door's *open*",
+        "the dog's *barking*")."""
+        words = self.words
+        if k >= end:
+            return False
+        low = words[k].lower
+        if low in DETERMINERS or low in BE_WORDS or low in PREPOSITIONS or low in FINITE or is_adverb(low) or \
+                gerund_lemma(low) is not None or verb_lemma(low) not in (None, low):
+            return False
+        return not is_adjective(low) or k + 1 < end and self.possessed_at(k + 1, end)
+
     def statement_at(self, i: int) -> int:
         """Whether a statement starts at ``i`` and where its clause ends (0: none): a subject (a pronoun,
         a contraction "it's", "we're", "i'll"; or a noun phrase: "the bus", "my son Declan", "Bogdan") and
@@ -325,6 +338,8 @@ class State:
         for k in range(i + 1, end):
             if words[k - 1].lower in DETERMINERS or words[k - 1].lower in POSSESSIVES:
                 continue                                      # "the plates": a noun
+            if words[k].lower == "'s" and self.possessed_at(k + 1, end):
+                continue                                      # "the knife and Anna's *cup*": whose, not "is"
             if words[k].lower in FINITE or self.finite_form(k, end) or \
                     verb_lemma(words[k].lower) in LINKING_VERBS and inflected(words[k].lower):
                 return end                                    # "the fridge door's open", "the door *seems* loose"

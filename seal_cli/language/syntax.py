@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 from lark import Token, Transformer, Tree
 
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import PERSON_PRONOUNS, SUBORDINATORS
+from seal_cli.language.english import DIRECTIONS, LOCATIVE, PERSON_PRONOUNS, SUBORDINATORS
 from seal_cli.language.lexicon import Word, is_plural, noun_lemma
 
 if TYPE_CHECKING:
@@ -108,6 +108,7 @@ class Clause:
     gap: Clause | None = None                        # "... and the glasses next to them": the verb again
     result: list[PP] = field(default_factory=list)   # "cut the cake *into slices*"
     unit: str | None = None                          # the lexical unit when not the verb's ("give it a *stir*")
+    asked: str | None = None                         # the state a yes/no question asks ("is the fridge *open*?")
 
 
 @dataclass(frozen=True)
@@ -183,7 +184,8 @@ class Syntax(Transformer[Token, Command]):
         while nxt < len(self.words) and self.words[nxt].info == "time":
             nxt += 1                          # "... there too", "... there right away"
         there = word.lower == "there" and (nxt == len(self.words) or self.words[nxt].tag in ("SEP", "END"))
-        return PP("at", NP(word.start, word.end, word, "place", there=there), word.start)
+        prep = "toward" if word.lower in DIRECTIONS else "at"   # "carry the box *upstairs*": where it goes
+        return PP(prep, NP(word.start, word.end, word, "place", there=there), word.start)
 
     # -- the command and its clauses -----------------------------------------------------------
     def start(self, children: list[Any]) -> Command:
@@ -203,6 +205,7 @@ class Syntax(Transformer[Token, Command]):
         verb, items = next(c for c in children if isinstance(c, tuple))
         sub: str | None = None
         conditions: list[str] = []
+        asked: str | None = None
         for child in children:
             if isinstance(child, _Lead):         # "with a clock in hand, turn on the lamp": as if said after
                 items.extend(replace(pp, lead=True) for pp in child.pps)
@@ -210,12 +213,17 @@ class Syntax(Transformer[Token, Command]):
                 for word in child.words:
                     if isinstance(word.info, str) and word.info in SUBORDINATORS:
                         sub = word.info          # "before you go to the garage, ..."
+            elif isinstance(child, Word) and child.tag == "COND" and child.info == "asked":
+                asked = child.text           # "is the fridge *open*?": the state asked, no condition
             elif isinstance(child, Word) and child.tag == "COND":
                 conditions.append(child.text.rstrip(",;: "))
-        return Clause(verb, [], items, None, verb.start, verb.end, [], sub, conditions)
+        return Clause(verb, [], items, None, verb.start, verb.end, [], sub, conditions, asked=asked)
 
     def verb_phrase(self, children: list[Any]) -> tuple[Word, list[Item]]:
-        return children[0], children[1:]
+        items: list[Item] = []
+        for child in children[1:]:
+            items.extend(child if isinstance(child, list) else [child])   # a predicate and where (below)
+        return children[0], items
 
     def polite(self, children: list[Word]) -> _Polite:
         return _Polite(children)
@@ -230,9 +238,14 @@ class Syntax(Transformer[Token, Command]):
         prep, np = children
         return PP(str(prep.info), np, prep.start)
 
-    def predicate(self, children: list[Any]) -> Word:
-        """A participle that describes a noun away from it ("are *wearing hats*"): one word."""
+    def predicate(self, children: list[Any]) -> Word | list[Any]:
+        """A participle that describes a noun away from it ("are *wearing hats*"): one word. Said with a place
+        ("how many people are *sitting on the sofa*"), the place is a phrase of the clause (where they are:
+        Count's ground), after the participle's word."""
         first = children[0]
+        if first.tag == "VBG_P" and len(children) == 2 and isinstance(children[1], PP) and \
+                children[1].prep in LOCATIVE:
+            return [Word(first.text, first.start, first.end, "PREDICATE", first.info), children[1]]
         end = first.end
         for child in children[1:]:
             end = max(end, end_of(child))

@@ -853,9 +853,13 @@ def _outside(m: Map, xy: XY) -> bool:
 
 
 def _places(m: Map) -> Iterator[SealError]:
-    for i, place in enumerate(m.places):
+    rooms = m.room_of([p.at for p in m.places]) if m.rooms and m.places else [OUTSIDE] * len(m.places)
+    for i, (place, room) in enumerate(zip(m.places, rooms, strict=True)):
         if _outside(m, place.at):
             yield SealError(f"place {place.name} at {_pt(place.at)} is {_off(m)}", m.where("places", i, "at"))
+        elif m.rooms and room == OUTSIDE:  # a map with rooms: each place belongs to one
+            yield MapWarning(f"place {place.name} at {_pt(place.at)} is in no room of this map, so a command naming "
+                             "its room never finds it; draw the room around it", m.where("places", i, "at"))
 
 
 def _priors(m: Map, known: set[str]) -> Iterator[SealError]:

@@ -15,8 +15,8 @@ from pathlib import Path
 
 import yaml
 
-from seal_cli.errors import SealError, SealErrors, Where
-from seal_cli.fileio import LOADER, read_text
+from seal_cli.errors import SealErrors
+from seal_cli.fileio import LOADER, read_text, yaml_problem
 from seal_cli.yamlnodes import NodeReader, shape
 
 __all__ = ["read_labels"]
@@ -29,9 +29,7 @@ def read_labels(path: str | Path) -> dict[str, str]:
     try:
         root = yaml.compose(text, Loader=LOADER)
     except yaml.YAMLError as exc:
-        mark = getattr(exc, "problem_mark", None)
-        where = Where(str(path), mark.line + 1, mark.column + 1) if mark else Where(str(path))
-        raise SealError(f"YAML syntax error: {getattr(exc, 'problem', exc)}", where) from None
+        raise yaml_problem(exc, text, str(path)) from None
     labels: dict[str, str] = {}
     if isinstance(root, yaml.SequenceNode):
         for i, node in enumerate(root.value):

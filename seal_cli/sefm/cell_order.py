@@ -24,6 +24,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from seal_cli.maps.model import Map
+from seal_cli.sefm import compiled
 
 __all__ = ["by_room", "hilbert_index", "order_of_cells", "order_of_points", "rank"]
 
@@ -71,6 +72,15 @@ def order_of_cells(m: Map, cells: Index) -> Index:
     ranks = rank(m)
     width = cells.shape[-1] if cells.ndim else 1
     dtype = np.int32 if (len(ranks) + 1) * max(width, 1) + width < 2**31 else np.int64
+    jit = compiled.kernels()
+    if jit is not None and cells.ndim and width and cells.dtype.kind == "i":  # the same keys, in one pass each way
+        rows = cells.reshape(-1, width)
+        unique = np.empty(rows.shape, dtype)
+        jit.order_keys(_keys(m, dtype), rows, unique)
+        unique.sort(axis=-1)
+        out = np.empty(rows.shape, np.intp)
+        jit.positions_of(unique, out)
+        return out.reshape(cells.shape)
     key = _keys(m, dtype)[cells + 1]  # rank + 1, and 0 off free space (-1)
     step = np.asarray(width, dtype)
     unique = np.add(np.multiply(key, step), np.arange(width, dtype=dtype))

@@ -39,6 +39,7 @@ from seal_cli.frames.model import Binding
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.model import Map
 from seal_cli.planning.state import State
+from seal_cli.sefm import compiled
 from seal_cli.sefm.frame_beliefs import FrameBeliefs, FrameModel, Terms
 from seal_cli.sefm.modes import Summary, summarise
 from seal_cli.sefm.object_beliefs import ObjectBeliefs, ObjectModel, Region, Source, source_for
@@ -400,8 +401,13 @@ def _within_range(region: VisibleRegion) -> Region:
     x, y, _ = region.pose
 
     def contains(points: Array) -> NDArray[np.bool_]:
-        d = points - (x, y)
-        near = np.flatnonzero(np.einsum("ij,ij->i", d, d) <= region.range ** 2)
+        jit = compiled.kernels()
+        if jit is not None and points.dtype == np.float64:  # the same points, in one pass
+            near = np.empty(len(points), np.intp)
+            near = near[:jit.within(np.ascontiguousarray(points), x, y, region.range ** 2, near)]
+        else:
+            d = points - (x, y)
+            near = np.flatnonzero(np.einsum("ij,ij->i", d, d) <= region.range ** 2)
         out = np.zeros(len(points), bool)
         if len(near):
             out[near] = region.contains(np.take(points, near, axis=0))  # np.take: a boolean row gather is slower

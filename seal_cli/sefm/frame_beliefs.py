@@ -59,7 +59,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from seal_cli.maps.model import Map
-from seal_cli.sefm import cell_order
+from seal_cli.sefm import cell_order, compiled
 from seal_cli.sefm.potentials import KernelSums
 from seal_cli.sefm.resampling import ess, grouped_systematic, normalise, systematic
 
@@ -220,9 +220,20 @@ class FrameBeliefs:
         if F == 0:
             return
         gamma = self._gamma_now(terms, kernel)
-        ratio = np.divide(gamma, self.gamma, out=np.zeros((F, P)), where=self.gamma > 0)
         X, cells, fresh_gamma, fresh_weights = self._fresh(terms, kernel, sources,
                                                            max(1, int(round(self.model.fresh_share * P))), rng)
+        jit = compiled.kernels()
+        arrays = (self.X, X, gamma, self.gamma, fresh_gamma, self.Z, self.W, fresh_weights)
+        if jit is not None and all(a.dtype == np.float64 and a.flags.c_contiguous for a in arrays) \
+                and self.cell.dtype == cells.dtype:  # the same arrays as below, in one pass
+            width = P + X.shape[1]
+            both = (np.empty((F, width, 2)), np.empty((F, width), cells.dtype), np.empty((F, width)),
+                    np.empty((F, width)))
+            jit.assemble(self.X, X, self.cell, cells, gamma, self.gamma, fresh_gamma, self.Z, self.W, P, fresh_weights,
+                         *both)
+            self._resample_move(*both, terms, kernel, rng, carried=P)
+            return
+        ratio = np.divide(gamma, self.gamma, out=np.zeros((F, P)), where=self.gamma > 0)
         self._resample_move(np.concatenate([self.X, X], axis=1), np.concatenate([self.cell, cells], axis=1),
                             np.concatenate([gamma, fresh_gamma], axis=1),
                             np.concatenate([self.Z[:, None] * self.W * P * ratio, fresh_weights], axis=1),
@@ -255,7 +266,7 @@ class FrameBeliefs:
         X = self._draw(terms, sources, n, rng)
         cells = self.map.free_index(X.reshape(-1, 2)).reshape(X.shape[:2]).astype(np.intp)
         measurement, context = self.potentials(terms, kernel, X)
-        gamma = np.where(cells >= 0, self.gamma_of(terms, measurement, context), 0.0)
+        gamma = self.gamma_of(terms, measurement, context, free=cells >= 0)
         return X, cells, gamma, self._importance(terms, gamma, measurement, cells >= 0)
 
     def _importance(self, terms: Terms, gamma: Array, measurement: Array, free: NDArray[np.bool_]) -> Array:
@@ -278,18 +289,29 @@ class FrameBeliefs:
         W = normalise(weights)
         width = W.shape[1]
         self.last_ess = ess(W) * (P / width)  # of P + n weighted particles, P are kept: at most P, even weights give P
-        listed = (cell_order.order_of_cells(self.map, cells) + np.arange(F)[:, None] * width).ravel()  # flat indices
-        chosen = systematic(W.ravel()[listed].reshape(F, width), rng, P)
-        ancestors = listed[chosen + np.arange(F)[:, None] * width]
-        self.X = np.take(X.reshape(-1, 2), ancestors, axis=0)  # np.take: a row gather ``[ancestors]`` is ~10× slower
-        self.cell = cells.ravel()[ancestors]
-        self.gamma = gamma.ravel()[ancestors]
+        order = cell_order.order_of_cells(self.map, cells)
+        jit = compiled.kernels()
+        if jit is not None and X.dtype == W.dtype == gamma.dtype == np.float64:  # the same gathers, in one pass
+            listed = np.empty((F, width))
+            jit.gather_rows(W, order, listed)
+            chosen = systematic(listed, rng, P)
+            self.X, self.cell, self.gamma = np.empty((F, P, 2)), np.empty((F, P), cells.dtype), np.empty((F, P))
+            ancestors, copies = np.empty((F, P), np.intp), np.empty((F, P), bool)
+            jit.gather_resampled(order, chosen, X, cells, gamma, self.X, self.cell, self.gamma, ancestors, copies)
+        else:
+            flat = (order + np.arange(F)[:, None] * width).ravel()  # flat indices
+            chosen = systematic(W.ravel()[flat].reshape(F, width), rng, P)
+            listed = flat[chosen + np.arange(F)[:, None] * width]
+            self.X = np.take(X.reshape(-1, 2), listed, axis=0)  # np.take: a row gather ``[listed]`` is ~10× slower
+            self.cell = cells.ravel()[listed]
+            self.gamma = gamma.ravel()[listed]
+            ancestors = listed - np.arange(F)[:, None] * width
+            copies = np.zeros((F, P), bool)
+            copies[:, 1:] = chosen[:, 1:] == chosen[:, :-1]  # the draws are sorted: a copy follows its original
         self.W = np.full((F, P), 1.0 / P)
-        copies = np.zeros((F, P), bool)
-        copies[:, 1:] = chosen[:, 1:] == chosen[:, :-1]  # the draws are sorted: a copy follows its original
         f, k = np.nonzero(copies)
         self._move(f, k, terms, kernel, rng)
-        self._moved = (X, ancestors - np.arange(F)[:, None] * width, copies, carried) if carried else None
+        self._moved = (X, ancestors, copies, carried) if carried else None
 
     def _move(self, f: Index, k: Index, terms: Terms, kernel: KernelSums, rng: np.random.Generator) -> None:
         """Move particles ``k`` of frames ``f`` by the prediction potential, each move accepted by a
@@ -328,12 +350,24 @@ class FrameBeliefs:
             context[some] = kernel.combine(sources[at], beliefs[at], X[some])
         return measurement, context
 
-    def gamma_of(self, terms: Terms, measurement: Array, context: Array, frames: Index | None = None) -> Array:
-        """γ from the two potentials of the frames ``frames`` (default: every frame), before restricting
-        to free space."""
+    def gamma_of(self, terms: Terms, measurement: Array, context: Array, frames: Index | None = None,
+                 free: NDArray[np.bool_] | None = None) -> Array:
+        """γ from the two potentials of the frames ``frames`` (default: every frame); zero where not
+        ``free`` when it is given."""
         rows = np.arange(terms.frames) if frames is None else frames
         total = terms.belief_total[rows, None]
         floor = self.model.floor_share * total * 2 * np.pi * self.sigma ** 2 / self.free_area
+        jit = compiled.kernels()
+        if jit is not None and free is not None and measurement.dtype == context.dtype == np.float32 \
+                and measurement.ndim == 2:  # the same numbers, in one pass
+            out = np.empty(measurement.shape)
+            jit.gamma(np.ascontiguousarray(measurement), np.ascontiguousarray(context),
+                      np.ascontiguousarray(floor[:, 0]), total[:, 0] > 0, terms.has_context[rows],
+                      np.float32(max(self.model.context_floor, 1e-12)),
+                      np.ascontiguousarray(np.broadcast_to(free, measurement.shape)), out)
+            return out
+        if free is not None:
+            return np.where(free, self.gamma_of(terms, measurement, context, frames), 0.0)
         meas = measurement.astype(float) + floor
         if not (total > 0).all():
             meas = np.where(total > 0, meas, 1.0)
@@ -350,7 +384,7 @@ class FrameBeliefs:
         (``free``, when the points' free cells are known)."""
         if free is None:
             free = self.map.is_free(X.reshape(-1, 2)).reshape(X.shape[:2])
-        return np.where(free, self.gamma_of(terms, *self.potentials(terms, kernel, X, frames), frames), 0.0)
+        return self.gamma_of(terms, *self.potentials(terms, kernel, X, frames), frames, free=free)
 
     def _draw(self, terms: Terms, sources: tuple[Array, Array], n: int, rng: np.random.Generator) -> Array:
         """``n`` points per frame from the proposal g.
@@ -384,10 +418,15 @@ class FrameBeliefs:
         owner = np.repeat(np.arange(len(order)), per_term)
         rank = np.arange(len(owner)) - np.repeat(np.cumsum(per_term) - per_term, per_term)
         row = source_of[owner]
-        cdf = np.cumsum(weights, axis=1)
-        cdf = (cdf / cdf[:, -1:] + np.arange(S)[:, None]).ravel()
         points = row + (rank + rng.random(len(order))[owner]) / np.maximum(per_term[owner], 1)
-        particle = np.clip(np.searchsorted(cdf, points, side="right") - row * P, 0, P - 1)
+        jit = compiled.kernels()
+        if jit is not None and weights.dtype == np.float64 and np.isfinite(points).all():
+            particle = np.empty(len(row), np.intp)
+            jit.draw_in_rows(np.ascontiguousarray(weights), row, points, particle)  # the same, summing only these rows
+        else:
+            cdf = np.cumsum(weights, axis=1)
+            cdf = (cdf / cdf[:, -1:] + np.arange(S)[:, None]).ravel()
+            particle = np.clip(np.searchsorted(cdf, points, side="right") - row * P, 0, P - 1)
         drawn = np.take(positions.reshape(-1, 2), row * P + particle, axis=0)
         return np.asarray(drawn + rng.normal(0.0, self.sigma, drawn.shape))
 

@@ -43,6 +43,8 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from seal_cli.sefm import compiled
+
 __all__ = ["ExactKernelSums", "GridKernelSums", "KernelSums", "SplitKernelSums", "exact_kernel_sum",
            "make_kernel_sums"]
 
@@ -167,6 +169,8 @@ class GridKernelSums(KernelSums):
         self.truncate = float(truncate)
         self.origin = np.array([xmin - pad, ymin - pad])
         self.shape = (int(math.ceil(width / cell)) + 2, int(math.ceil(height / cell)) + 2)
+        self._top = (self.shape[0] - 1.0001, self.shape[1] - 1.0001)
+        """The largest cell coordinates a point is clamped to (a corner's neighbours stay in the grid)."""
         self.filter_sigma = math.sqrt(max((sigma / cell) ** 2 - 1 / 3, 0.25))
         self.halo = int(math.ceil(truncate * self.filter_sigma)) + 1
         self.scale = 2 * math.pi * sigma ** 2 / cell ** 2
@@ -185,7 +189,7 @@ class GridKernelSums(KernelSums):
         """Lower-left cell indices and fractional offsets of points (clamped into the grid)."""
         u = (xy[..., 0] - self.origin[0]) * (1 / self.cell)
         v = (xy[..., 1] - self.origin[1]) * (1 / self.cell)
-        for w, top in ((u, self.shape[0] - 1.0001), (v, self.shape[1] - 1.0001)):  # np.clip, without its wrapper
+        for w, top in ((u, self._top[0]), (v, self._top[1])):  # np.clip, without its wrapper
             np.maximum(w, 0, out=w)
             np.minimum(w, top, out=w)
         i, j = u.astype(np.intp), v.astype(np.intp)  # truncation is floor: u, v >= 0
@@ -198,6 +202,12 @@ class GridKernelSums(KernelSums):
         count, nx, ny = shape
         layers = 0 if flat else np.arange(count).reshape(-1, *([1] * (i.ndim - 1))) * nx
         base = ((layers + i) * ny + j).ravel()
+        jit = compiled.kernels()
+        if jit is not None:  # the same sums, added in the same order, in one loop
+            binned = np.zeros(count * nx * ny)
+            spread = np.broadcast_to(weights, i.shape)
+            jit.bin_corners(base, ny, *(np.ascontiguousarray(a, float).ravel() for a in (fu, fv, spread)), binned)
+            return np.asarray(binned, dtype=self.grids.dtype).reshape(shape)
         n = len(base)
         index = np.empty(4 * n, base.dtype)  # the four corners' cells and shares, one after the other
         np.add(base, ny, out=index[n:2 * n])
@@ -211,6 +221,17 @@ class GridKernelSums(KernelSums):
             np.multiply(np.multiply(a, b).ravel(), spread, out=share[k * n:(k + 1) * n])
         mass = np.bincount(index, share, minlength=count * nx * ny)
         return np.asarray(mass, dtype=self.grids.dtype).reshape(shape)
+
+    def _bin_points(self, positions: Array, weights: Array) -> Array:
+        """:meth:`_bin` of rows of points (R, P, 2) with weights (R, P), from their positions."""
+        jit = compiled.kernels()
+        if jit is None or positions.dtype != np.float64:
+            return self._bin((len(positions), *self.shape), *self._cells(positions), weights)
+        binned = np.zeros(len(positions) * self.shape[0] * self.shape[1])
+        jit.bin_points(np.ascontiguousarray(positions), float(self.origin[0]), float(self.origin[1]), 1 / self.cell,
+                       float(self._top[0]), float(self._top[1]), np.ascontiguousarray(weights, float),
+                       self.shape[1], binned)
+        return np.asarray(binned, dtype=self.grids.dtype).reshape(len(positions), *self.shape)
 
     def _smooth(self, mass: Array) -> Array:
         """The binned masses (R, nx', ny') smoothed along both grid axes by the Gaussian filter, as two
@@ -236,9 +257,8 @@ class GridKernelSums(KernelSums):
         rows = list(rows)
         for start in range(0, len(rows), SET_CHUNK):
             part = slice(start, start + SET_CHUNK)
-            i, j, fu, fv = self._cells(positions[part])
             chunk = rows[part]
-            self.grids[chunk] = self._smooth(self._bin((len(chunk), *self.shape), i, j, fu, fv, weights[part]))
+            self.grids[chunk] = self._smooth(self._bin_points(positions[part], weights[part]))
             self.factor[chunk] = 1.0
             self.moves[chunk] = 0
             self._versions[chunk] += 1
@@ -316,13 +336,21 @@ class GridKernelSums(KernelSums):
             self._versions[rows] += 1
 
     def combine(self, sources: Index, weights: Array, points: Array) -> Array:
-        """Bilinear reads of the sources' grids at the points, one term (a column of ``sources``) at a time."""
-        i, j, fu, fv = self._cells(points)
+        """Bilinear reads of the sources' grids at the points, one term (a column of ``sources``) at a time
+        (compiled: every term of a point at once, :mod:`seal_cli.sefm.compiled`)."""
         dtype = self.grids.dtype
+        sources = np.asarray(sources, np.intp)
+        jit = compiled.kernels()
+        if jit is not None and dtype == np.float32 and points.dtype == np.float64:
+            coef = (np.asarray(weights) * self.factor[np.maximum(sources, 0)] * (sources >= 0)).astype(dtype)
+            out = np.empty(points.shape[:2], dtype)
+            jit.read(self.grids, float(self.origin[0]), float(self.origin[1]), 1 / self.cell, float(self._top[0]),
+                     float(self._top[1]), np.ascontiguousarray(sources), coef, np.ascontiguousarray(points), out)
+            return out
+        i, j, fu, fv = self._cells(points)
         nx, ny = self.shape
         base = i * ny + j
         fu, fv = fu.astype(dtype), fv.astype(dtype)
-        sources = np.asarray(sources, np.intp)
         coef = (np.asarray(weights) * self.factor[np.maximum(sources, 0)] * (sources >= 0)).astype(dtype)
         flat = self.grids.reshape(-1)
         right, up, both = flat[ny:], flat[1:], flat[ny + 1:]  # a corner's neighbours at the same index

@@ -9,6 +9,8 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
+from seal_cli.sefm import compiled
+
 __all__ = ["ess", "grouped_systematic", "normalise", "stratified", "systematic"]
 
 
@@ -37,6 +39,12 @@ def systematic(weights: NDArray[np.float64], rng: np.random.Generator, count: in
     """
     rows, size = weights.shape
     count = size if count is None else count
+    u = rng.random((rows, 1))
+    jit = compiled.kernels()
+    if jit is not None and size and weights.dtype == np.float64:
+        ancestors = np.empty((rows, count), np.intp)
+        if jit.systematic(np.ascontiguousarray(weights), u[:, 0], count, ancestors):  # every row's sum is positive
+            return ancestors
     cumulative = np.cumsum(weights, axis=1)
     total = cumulative[:, -1:]
     good = np.isfinite(total) & (total > 0)
@@ -46,7 +54,7 @@ def systematic(weights: NDArray[np.float64], rng: np.random.Generator, count: in
         cumulative = np.where(good, cumulative * (count / np.where(good, total, 1.0)),
                               np.arange(1, size + 1) * (count / size))
     cumulative[:, -1] = count  # exactly: rounding must not make count + 1 draws
-    cumulative -= rng.random((rows, 1))
+    cumulative -= u
     drawn_below = np.ceil(cumulative, out=cumulative).astype(np.intp)  # draws at or below each particle's upper edge
     copies = np.empty_like(drawn_below)
     copies[:, 0] = drawn_below[:, 0]

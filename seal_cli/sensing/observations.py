@@ -33,7 +33,7 @@ from typing import Any
 import yaml
 
 from seal_cli.errors import SealError, Where
-from seal_cli.fileio import LOADER, read_text
+from seal_cli.fileio import LOADER, read_text, yaml_problem
 from seal_cli.yamlnodes import check_size
 
 MAX_OBSERVATIONS = 100_000
@@ -70,13 +70,8 @@ class _Reader:
     def root(self) -> yaml.Node | None:
         try:
             root = yaml.compose(self.text, Loader=LOADER)
-        except yaml.MarkedYAMLError as exc:
-            mark = exc.problem_mark or exc.context_mark
-            where = Where(self.file, mark.line + 1, mark.column + 1) if mark else Where(self.file)
-            source = self.lines[mark.line] if mark and mark.line < len(self.lines) else None
-            raise SealError(f"YAML syntax error: {exc.problem or exc.context}", where, source_line=source) from None
         except yaml.YAMLError as exc:
-            raise SealError(f"YAML error: {exc}", Where(self.file)) from None
+            raise yaml_problem(exc, self.text, self.file) from None
         check_size(root, self.file)
         return root
 

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from seal_cli.bench.context import COMMANDS, House, houses, regroup, run_house_layout
+from seal_cli.bench.context import COMMANDS, House, houses, regroup, run_house_layout, unseen_houses
 from seal_cli.bench.houses import CONTEXT_PRIORS, COTTAGE_STARTS, cottage
 from seal_cli.bench.tasks import summarise
 from seal_cli.cli import app
@@ -31,6 +31,27 @@ def test_every_house_has_the_things_priors_and_starts_and_plans_every_command(sh
         assert all(house.map.free_index([pose[:2]])[0] >= 0 for pose in house.starts)  # every start is free
         for text in COMMANDS:
             assert len(plan_text(text, library, vocabulary=vocabulary_of_map(house.map)).steps) == 2
+
+
+def test_the_unseen_house_is_one_room_graph_with_free_starts_and_plans_every_command(library: Library) -> None:
+    import numpy as np
+
+    from seal_cli.sim.agent import Agent, scene_from_map
+    from seal_cli.sim.policies import make_policy
+
+    (house,) = unseen_houses()
+    m = house.map
+    assert m.name == "bungalow" and {r.name for r in m.rooms} >= set(next(iter(CONTEXT_PRIORS.values())))
+    assert {"spoon", "cup", "mug", "kettle"} <= {o.cls for o in m.objects}
+    agent = Agent(scene_from_map(m, library), library, make_policy("oracle"), rng=np.random.default_rng(0))
+    field_ = agent.distances()
+    free = agent.grid.free_cells
+    assert np.isfinite(field_[free[:, 0], free[:, 1]]).all()          # every room reachable through its doors
+    kitchen, family = (agent.grid.cell(p) for p in [(13.0, 2.5), (11.5, 8.0)])
+    assert field_[kitchen] > 9.0 and field_[family] > 9.0           # both only through the dining room
+    assert all(m.free_index([pose[:2]])[0] >= 0 for pose in house.starts)
+    for text in COMMANDS:
+        assert len(plan_text(text, library, vocabulary=vocabulary_of_map(m)).steps) == 2
 
 
 def test_the_aws_house_needs_the_shared_data(tmp_path: Path) -> None:

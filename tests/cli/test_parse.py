@@ -36,6 +36,14 @@ def test_the_tree_shows_a_condition_on_the_world() -> None:
     assert result.stdout.splitlines()[-1] == "    └── condition: when the water boils"
 
 
+def test_the_tree_and_the_json_show_the_state_a_question_asks() -> None:
+    result = runner.invoke(app, ["parse", "is the garage door still open?"])
+    assert result.exit_code == 0, result.output
+    assert result.stdout.splitlines()[-1] == "    └── asked: still open"
+    data = json.loads(runner.invoke(app, ["parse", "is the garage door still open?", "--json"]).stdout)
+    assert data["frames"][0]["frame"] == "LookAt" and data["frames"][0]["asked"] == "still open"
+
+
 def test_an_unparsable_command_is_a_message_with_a_caret_and_exit_1() -> None:
     result = runner.invoke(app, ["parse", "launch the rocket"])
     assert result.exit_code == 1

@@ -72,3 +72,15 @@ def test_bad_synonym_entries_are_refused() -> None:
                                ("knife", ("chef's knife",), "is not a name")]:
         with pytest.raises(SealError, match=words):
             Synonyms(name, names)
+
+
+def test_a_category_member_that_is_a_number_is_refused() -> None:
+    import pytest
+
+    from seal_cli.errors import SealError
+    from seal_cli.frames.taxonomy import Category
+
+    for odd in ("0x10", "1e309", "5"):
+        with pytest.raises(SealError, match=f"category container: '{odd}' is not a class name"):
+            Category("container", ("cup", odd))
+    assert Category("container", ("cup", "café", "Sink Basin")).members == ("cup", "café", "sink_basin")

@@ -687,3 +687,20 @@ def test_thousands_of_rooms_validate(tmp_path: Path) -> None:  # 10,000: `seal b
     problems = check_map_file(path)
     assert [p.line for p in problems] == [2_003] * 4 and all("overlaps" in p.message for p in problems)
     assert load_map(path).room_of([[99.5, 19.5], [1.2, 1.2]]) == ["r1999", "r101"]
+
+
+def test_a_place_in_no_room_is_a_located_warning_and_the_map_still_loads(tmp_path: Path) -> None:
+    path = _edited_apartment(tmp_path, "roomless.yaml", "  - {name: kitchen, box: [2.0, -6.0, 9.0, 0.0]}\n", "")
+    text = path.read_text().replace("kitchen: 0.5, ", "").replace(", kitchen: 0.2", "")
+    path.write_text(text.replace("room: kitchen", "room: bedroom"))
+    problems = check_map_file(path)
+    assert [p.message.split(" at ")[0] for p in problems] == [f"place {name}" for name in
+                                                              ("fridge_1", "counter_1", "stove_1", "sink_1",
+                                                               "microwave_1")]
+    assert all(isinstance(p, MapWarning) and "in no room of this map" in p.message for p in problems)
+    assert (problems[0].line, problems[0].column) == (text.split("\n").index(
+        "  - {name: fridge_1, class: fridge, at: [8.5, -0.8], openable: true}") + 1, 37)
+    assert len(load_map(path).warnings) == 5
+    result = CliRunner().invoke(app, ["localize", "--map", str(path), "--steps", "0", "--particles", "10"])
+    assert result.exit_code == 0
+    assert f"warning: {path}:{problems[0].line}:37: place fridge_1" in result.stderr

@@ -27,7 +27,7 @@ from typing import TypeVar
 import yaml
 
 from seal_cli.errors import Where
-from seal_cli.fileio import LOADER
+from seal_cli.fileio import LOADER, yaml_problem
 from seal_cli.frames.formats import Contents
 from seal_cli.frames.model import IDENTIFIER, Action, Element, Fact, Frame, LexicalUnit
 from seal_cli.frames.taxonomy import Category, Synonyms, Taxonomy
@@ -215,13 +215,9 @@ def read(text: str, file: str = "<yaml>") -> Contents:
     reader = _Reader(text, file)
     try:
         documents = list(yaml.compose_all(text, Loader=LOADER))
-    except yaml.MarkedYAMLError as exc:
-        mark = exc.problem_mark or exc.context_mark
-        where = Where(file, mark.line + 1, mark.column + 1) if mark else Where(file)
-        reader.problem(f"YAML syntax error: {exc.problem or exc.context}", where=where)
-        return reader.contents
     except yaml.YAMLError as exc:
-        reader.problem(f"YAML error: {exc}")
+        problem = yaml_problem(exc, text, file)
+        reader.problem(problem.message, where=problem.where)
         return reader.contents
     for document in documents:
         if document is not None:

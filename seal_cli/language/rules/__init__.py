@@ -52,14 +52,17 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.FRONTED_QUESTION,
     requests.WHERE,
     requests.WHERE_DID_RULE,
+    requests.STATE_QUESTION,
+    requests.ASKED_WHETHER,
+    requests.FOUND_OUT_RULE,
     requests.WHETHER_IS_RULE,
     requests.KNOW_WISH,
     requests.REQUEST,
     requests.WISH_OF,
     requests.LET_KNOW_RULE,
     requests.FRONTED_OF,
-    requests.CHECK_WHETHER_RULE,
     requests.TOLD_HOW_MANY,
+    requests.SWITCHED_ALONE,
     requests.ASKED_ALONE_RULE,
     verbs.USE,
     verbs.VERB,
@@ -72,6 +75,7 @@ word is tagged as what it is (``INSIDE``), and the grammar reports the missing v
 INSIDE: tuple[Rule, ...] = (
     clauses.END_MARK,
     requests.KNOW_AFTER_LET,
+    requests.STATE_ASKED,
     requests.WHETHER_BE,
     clauses.PARTITIVE_OF,
     clauses.PARTICLE_BETWEEN_OBJECTS,
@@ -93,6 +97,7 @@ INSIDE: tuple[Rule, ...] = (
     clauses.SEPARATOR,
     politeness.THANKS,
     clauses.UNJOINED,
+    clauses.UNKNOWN_UNJOINED,
 )
 """Inside a clause, before the word is tagged by ``WORDS``."""
 

@@ -168,8 +168,41 @@ def _unjoined(s: State, i: int) -> Match | None:
                  expect=False, verb=unit, using=False)
 
 
+_NO_NOUN_AFTER = frozenset(["it", "them", "him", "her"])
+"""Object pronouns, which never go on a noun phrase: a verb's object ("grab the towel *hang it* on the rack")."""
+
+
+def _unknown_unjoined(s: State, i: int) -> Match | None:
+    """A verb's base form that no frame lists, right after a phrase and before an object pronoun ("grab the towel
+    *hang it* on the rack"), or after "to" and before its object ("head to the bedroom *to wake up* Jonas"): a clause
+    of its own, so its unknown verb is reported, not read as a noun of the phrase (the verb was lost)."""
+    words = s.words
+    to = words[i].lower == "to"
+    if not to and (i + 1 >= len(words) or words[i + 1].lower not in _NO_NOUN_AFTER) or s.verb_index < 0 or \
+            s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL, Tag.PARTICLE, Tag.HERE):
+        return None
+    k = i + 1 if to else i
+    if k + 1 >= len(words):
+        return None
+    verb, nxt = words[k].lower, words[k + 1]
+    if verb_lemma(verb) != verb or verb in s.lexicon.units or verb in CLOSED or verb in s.lexicon.things:
+        return None
+    if to and not (nxt.lower in PARTICLES or nxt.lower in DETERMINERS or nxt.lower in POSSESSIVES or
+                   nxt.lower in _NO_NOUN_AFTER or capitalised(nxt) and nxt.lower not in CLOSED):
+        return None
+    if not to and nxt.lower not in _NO_NOUN_AFTER:
+        return None
+    if to:
+        return Match(1, (words[i].tagged(Tag.SEP),), expect=True)
+    return Match(0, (Word("", words[i].start, words[i].start, Tag.SEP),), expect=True)
+
+
 UNJOINED = Rule("clause without a joint", _unjoined, (
     Example("meet Jo at the counter escort her back", "escort", Tag.VERB),
     Example("pick up the cup bring it to me", "bring", Tag.VERB),
     Example("put the milk in the fridge go to the kitchen", "go", Tag.VERB),
 ), None, "a verb of the library and its object right after a phrase: a clause of its own, not a noun")
+UNKNOWN_UNJOINED = Rule("unknown verb without a joint", _unknown_unjoined, (
+    Example("grab the towel hang it on the rack", "hang", Tag.WORD),
+    Example("head to the bedroom to wake up Jonas", "to", Tag.SEP),
+), None, "a verb no frame lists before its object, after a phrase: a clause of its own")

@@ -16,6 +16,8 @@ from seal_cli.language.english import (
     CHECK_WHETHER,
     DETERMINERS,
     END_MARKS,
+    FOUND_OUT,
+    HERE_WORDS,
     KNOW_WISHES,
     LET_KNOW,
     NUMBER_MEANS,
@@ -30,11 +32,16 @@ from seal_cli.language.english import (
     QUESTION_WORDS,
     REQUEST_MEANS,
     REQUESTS,
+    STATE_ADVERBS,
+    STATE_ASKERS,
+    STATE_MEANS,
+    STATE_PARTICLES,
+    SWITCHED_MEANS,
     WHERE_DID,
     WHERE_MEANS,
     WHERE_QUESTIONS,
 )
-from seal_cli.language.morphology import verb_lemma
+from seal_cli.language.morphology import gerund_lemma, is_adjective, participles, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import State, first_words, match_phrase, merge
 from seal_cli.language.tags import Tag
@@ -124,8 +131,9 @@ def _whether_is(s: State, i: int) -> Match | None:
         return None
     for k in range(i + 2, len(words)):
         low = words[k].lower
-        if low in END_MARKS or low in (",", ";", "and", "then") or s.verb_at(k) is not None:
-            return None
+        if low in END_MARKS or low in (",", ";", "and", "then") or s.verb_at(k) is not None and \
+                words[k - 1].lower not in DETERMINERS and words[k - 1].lower not in POSSESSIVES:
+            return None                           # a verb ("the *pan*": a noun after a determiner)
         if low in _WHETHER_WHERE:
             if not s.np_starts(k + 1):
                 return None
@@ -134,13 +142,121 @@ def _whether_is(s: State, i: int) -> Match | None:
     return None
 
 
-def _check_whether(s: State, i: int) -> Match | None:
+ASKED = "asked"
+"""The info of the ``COND`` word that keeps the state a yes/no question asks ("open" of "is the fridge open?")."""
+
+
+def _is_state(s: State, low: str) -> bool:
+    """Whether a word can be the state a yes/no question asks of a thing: an adjective ("open", "clean",
+    "empty"), a particle of state ("on", "off"), a frame's result word, or a participle ("locked", "shut",
+    "running"); never a place word ("upstairs") or a preposition."""
+    if low in HERE_WORDS or low in PREPOSITIONS or low in DETERMINERS or low in BE_WORDS:
+        return low in STATE_PARTICLES
+    if low in STATE_PARTICLES or low in s.lexicon.results or is_adjective(low):
+        return True
+    lemma = verb_lemma(low)
+    return lemma is not None and lemma != low and (low in participles(lemma) or gerund_lemma(low) == lemma)
+
+
+def _state_from(s: State, k: int, end: int) -> int | None:
+    """Where the state said from word ``k`` begins, when words ``k .. end`` are adverbs of degree or time
+    ("still") and then one word of state ending the clause at ``end``; else None."""
+    words = s.words
+    if end - 1 < k or not _is_state(s, words[end - 1].lower):
+        return None
+    q = end - 1
+    while q > k and words[q - 1].lower in STATE_ADVERBS:
+        q -= 1
+    return q if q == k else None
+
+
+def _clause_stop(s: State, k: int) -> int:
+    """Where a question said from ``k`` ends: the clause's end, or an "and"/"then" before it ("check if the door
+    is closed *and* lock it": the next clause, whatever its verb)."""
+    end = s.cond_end(k)
+    return next((j for j in range(k, end) if s.words[j].lower in ("and", "then")), end)
+
+
+def _state_question_end(s: State, i: int) -> int | None:
+    """The end of the clause from ``i`` when it is a phrase and then a state: "the fridge | open", "the cup on
+    the table | clean", "the kitchen light | still on"; the index where the state begins, else None."""
+    words = s.words
+    if not s.np_starts(i) or words[i].lower in ("there", "you", "i", "we"):
+        return None
+    end = _clause_stop(s, i)
+    for q in range(end - 1, i, -1):              # the state's first word: adverbs, then the state
+        if _state_from(s, q, end) is None:
+            continue
+        before = words[q - 1].lower
+        if before in DETERMINERS or before in POSSESSIVES or before in PREPOSITIONS or before in BE_WORDS or \
+                before.isdigit():
+            return None                          # "is the cup on *the counter*": a noun in a phrase
+        if any(s.verb_at(k) and words[k - 1].lower not in DETERMINERS and words[k - 1].lower not in POSSESSIVES
+               and not s.np_starts(k - 1) for k in range(i + 1, q)):
+            return None
+        return q
+    return None
+
+
+def _state_question(s: State, i: int) -> Match | None:
+    """"*Is* the fridge open?", "are the windows in the bedroom shut", "is the kitchen light still on?": a
+    yes/no question about a thing's state is checking the thing (``STATE_MEANS``, a unit of LookAt); the state
+    is kept (``ASKED``, by :data:`STATE_ASKED`)."""
+    if STATE_MEANS not in s.lexicon.units or _state_question_end(s, i + 1) is None:
+        return None
+    return Match(1, (s.words[i].tagged(Tag.VERB, STATE_MEANS),), expect=False, verb=STATE_MEANS, using=False)
+
+
+_ASKERS = CHECK_WHETHER[0] | STATE_ASKERS
+_ASKER_WORDS = max(len(p.split()) for p in _ASKERS)
+
+
+def _asked_whether(s: State, i: int) -> Match | None:
+    """"*Check if* the door is closed", "*tell me whether* the stove is on", "*let me know if* the keys are on the
+    table", "*do you know if* the kettle is on": whether a thing is in a state is checking it (LookAt, the
+    state kept); whether it is somewhere is finding it there (Find), as the question said alone is. The verb
+    of saying or asking is no frame of its own: the question is the instruction."""
+    words = s.words
+    if not any(w.lower in CHECK_WHETHER[1] for w in words[i + 1:i + 2 + _ASKER_WORDS]):
+        return None                               # no "if"/"whether" near: nothing asked (the common case)
+    n = _phrase(s, i, _ASKERS)
+    if not n or i + n + 1 >= len(words) or words[i + n].lower not in CHECK_WHETHER[1]:
+        return None
+    k = i + n + 1
+    end = _clause_stop(s, k)
+    be = next((j for j in range(k + 1, end) if words[j].lower in _WHETHER_IS), None)
+    if be is not None and STATE_MEANS in s.lexicon.units and s.np_starts(k) and \
+            _state_from(s, be + 1, end) is not None:
+        last = words[k - 1].end
+        return Match(k - i, (Word(s.text_of(words[i].start, last), words[i].start, last, Tag.VERB, STATE_MEANS),),
+                     expect=False, verb=STATE_MEANS, using=False)
+    return _check_whether(s, i, _ASKERS)
+
+
+def _state_asked(s: State, i: int) -> Match | None:
+    """The state a yes/no question asks ("open" of "is the fridge open?", "is closed" of "check if the door is
+    closed"): one ``COND`` word of info ``ASKED``, the "is" dropped."""
+    if s.verb_index < 0:
+        return None
+    verb = s.out[s.verb_index]
+    if verb.info != STATE_MEANS or not (verb.lower in _WHETHER_IS or verb.lower.split()[-1] in CHECK_WHETHER[1]):
+        return None
+    words = s.words
+    k = i + 1 if words[i].lower in _WHETHER_IS and verb.lower not in _WHETHER_IS else i
+    end = _clause_stop(s, k)
+    if k >= end or _state_from(s, k, end) is None:
+        return None
+    text = s.text_of(words[k].start, words[end - 1].end)
+    return Match(end - i, (Word(text, words[k].start, words[end - 1].end, Tag.COND, ASKED),))
+
+
+def _check_whether(s: State, i: int, checks: frozenset[str] | None = None) -> Match | None:
     """"*See if* anyone is in the kitchen", "*check whether there's* a book on the shelf": whether someone or
     something is somewhere, asked as "find ..." (``WHERE_MEANS``); "there is" is read with the words before,
     and the "is" after a phrase is dropped (``WHETHER_BE``)."""
     words = s.words
-    checks, ifs, there_is = CHECK_WHETHER
-    n = _phrase(s, i, checks)
+    default, ifs, there_is = CHECK_WHETHER
+    n = _phrase(s, i, checks or default)
     if not n or i + n + 1 >= len(words) or words[i + n].lower not in ifs or WHERE_MEANS not in s.lexicon.units:
         return None
     k = i + n + 1
@@ -153,6 +269,22 @@ def _check_whether(s: State, i: int) -> Match | None:
     end = words[k - 1].end
     return Match(k - i, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, WHERE_MEANS),),
                  expect=False, verb=WHERE_MEANS, using=False)
+
+
+def _found_out(s: State, i: int) -> Match | None:
+    """"*Find out who* is in the hall", "check what's in the fridge", "see who is at the door": a verb of checking
+    and a question word asks the question: "tell me who is in the hall" (``QUESTION_MEANS``, the question said)."""
+    words = s.words
+    n = _phrase(s, i, CHECK_WHETHER[0])
+    if not n or QUESTION_MEANS not in s.lexicon.units or i + n >= len(words) or words[i + n].lower not in FOUND_OUT:
+        return None
+    end = s.speech_end(i + n)
+    if end - (i + n) < 2:
+        return None
+    last = words[i + n - 1].end
+    return Match(end - i, (Word(s.text_of(words[i].start, last), words[i].start, last, Tag.VERB, QUESTION_MEANS),
+                           _unsaid(last, Tag.PRON, None, _SPEAKER), s.emit(i + n, end - i - n, Tag.SAID).words[0]),
+                 expect=False, verb=QUESTION_MEANS, using=False)
 
 
 def _whether_be(s: State, i: int) -> Match | None:
@@ -256,6 +388,9 @@ def _asked_alone(s: State, i: int) -> Match | None:
     if any(t.tag != Tag.POLITE for t in s.out) or REQUEST_MEANS not in s.lexicon.units or \
             words[i].lower in PRONOUNS or not s.np_starts(i):
         return None
+    if verb_lemma(words[i].lower) == words[i].lower and i + 1 < len(words) and \
+            (words[i + 1].lower in DETERMINERS or words[i + 1].lower in POSSESSIVES):
+        return None                               # "please *list the* things": an imperative, its verb unknown
     end = _sentence_end(s, i)
     if not any(words[k].lower in ASKED_ALONE for k in range(end)) or \
             any(s.verb_at(k) or words[k].lower in BE_WORDS or words[k].lower in QUESTION_WORDS
@@ -264,6 +399,45 @@ def _asked_alone(s: State, i: int) -> Match | None:
     return Match(0, (_unsaid(words[i].start, Tag.VERB, REQUEST_MEANS),
                      _unsaid(words[i].start, Tag.PRON, None, _SPEAKER)), expect=False, verb=REQUEST_MEANS,
                  using=False)
+
+
+_SWITCHED_WORDS = 4
+
+
+def _switched_alone(s: State, i: int) -> Match | None:
+    """"*Lights off* in the hall", "the TV on, please", "kitchen lights off": a short noun phrase (no verb's base
+    form first) and "on"/"off", then only where (a preposition and a phrase) or "please" to the sentence's end,
+    is switching the thing so (``SWITCHED_MEANS``: "turn the lights off"), the particle read as the verb's."""
+    words = s.words
+    if not any(w.lower in SWITCHED_MEANS for w in words[i + 1:i + 1 + _SWITCHED_WORDS]):
+        return None                               # no "on"/"off" near (the common case)
+    first = words[i].lower
+    nxt = s.next_lower(i)
+    if not s.np_starts(i) or first in PRONOUNS or first in QUESTION_WORDS or gerund_lemma(first) is not None or \
+            verb_lemma(first) == first and (nxt in DETERMINERS or nxt in POSSESSIVES or nxt in PRONOUNS):
+        return None                               # "flip the lamp off", "turning the light on": a verb first
+    found = s.verb_at(i)
+    if found is not None and found[2] is not None:
+        return None                               # "switch the radio on": the verb and its split particle
+    end = _sentence_end(s, i)
+    k = next((k for k in range(i + 1, min(end, i + 1 + _SWITCHED_WORDS)) if words[k].lower in SWITCHED_MEANS), None)
+    if k is None or words[k - 1].lower in DETERMINERS or words[k - 1].lower in POSSESSIVES or \
+            any(words[j].lower in BE_WORDS or words[j].lower in PREPOSITIONS for j in range(i, k)):
+        return None
+    unit = SWITCHED_MEANS[words[k].lower]
+    parts = tuple(unit.split())
+    if parts not in s.lexicon.units.get(parts[0], ()):
+        return None
+    rest = k + 1
+    if rest < end and words[rest].lower not in ASKED_ALONE | {","}:
+        n = match_phrase(words, rest, PREPOSITIONS)
+        if not n or not s.np_starts(rest + n) or any(
+                s.verb_at(j) and words[j - 1].lower not in DETERMINERS and words[j - 1].lower not in POSSESSIVES
+                for j in range(rest + n, end)):
+            return None                           # "lights off in the hall": only where may follow
+    tag = Tag.DET if first in DETERMINERS else Tag.POSS if first in POSSESSIVES else Tag.WORD
+    return Match(1, (_unsaid(words[i].start, Tag.VERB, unit), words[i].tagged(tag)), expect=False, verb=unit,
+                 using=False, particle=(k, unit))    # its first word tagged here: "Lights" is no verb
 
 
 _WISHES_OF = (("wants",), ("needs",), ("would", "like"))
@@ -328,8 +502,9 @@ def _let_know(s: State, i: int) -> Match | None:
     k = i + 3                                     # "let me know how many": "tell me how many", a unit of its own
     for unit in s.lexicon.units.get(QUESTION_MEANS, ()):
         rest = unit[2:]
-        if len(unit) > 2 and unit[1] == told.lower and all(k + m < len(words) and words[k + m].lower == rest[m]
-                                                           for m in range(len(rest))):
+        speaker = _SPEAKER if told.lower == "us" else told.lower          # "let us know how many": the speakers
+        if len(unit) > 2 and unit[1] == speaker and all(k + m < len(words) and words[k + m].lower == rest[m]
+                                                        for m in range(len(rest))):
             end = words[k + len(rest) - 1].end
             text = s.text_of(words[i].start, end)
             return Match(k + len(rest) - i, (Word(text, words[i].start, end, Tag.VERB, " ".join(unit)),),
@@ -372,6 +547,7 @@ QUESTION = Rule("bare question", _question, (
 WHERE = Rule("where is", _where, (
     Example("where is the cup?", "where is", Tag.VERB),
     Example("Is there a cup in the kitchen?", "Is there", Tag.VERB),
+    Example("Do we have any eggs?", "Do we have any", Tag.VERB),
 ), _WHERE_FIRST, "'where is X', 'is there X': find X")
 WHERE_DID_RULE = Rule("where did I leave", _where_did, (
     Example("Where did I leave my glasses?", "Where did I leave", Tag.VERB),
@@ -387,6 +563,10 @@ REQUEST = Rule("wish for a thing", _request, (
     Example("Can I have the big plate?", "Can I have", Tag.VERB),
     Example("I need a pen.", "I need", Tag.VERB),
 ), _REQUEST_FIRST, "'I'd like X', 'can I have X', 'I need X': bring X to the speaker")
+SWITCHED_ALONE = Rule("a thing switched on or off", _switched_alone, (
+    Example("Lights off in the hall.", "Lights", Tag.WORD),
+    Example("the porch lamp on, please", "on", Tag.PARTICLE),
+), None, "'lights off (in the hall)': turn the lights off")
 WISH_OF = Rule("a person's wish for a thing", _wish_of, (
     Example("Anna wants the cup", "Anna wants", Tag.VERB),
     Example("Ben needs a towel.", "Ben needs", Tag.VERB),
@@ -401,10 +581,27 @@ ASKED_ALONE_RULE = Rule("a thing asked for alone", _asked_alone, (
     Example("milk from the fridge, please", "", Tag.VERB),
     Example("The remote please.", "", Tag.PRON),
 ), None, "a noun phrase and 'please' with no verb: bring it to the speaker")
-CHECK_WHETHER_RULE = Rule("check whether it is there", _check_whether, (
+STATE_QUESTION = Rule("is X in a state", _state_question, (
+    Example("Is the fridge open?", "Is", Tag.VERB),
+    Example("is the kitchen light still on?", "still on", Tag.COND),
+    Example("Is the cup on the table clean?", "clean", Tag.COND),
+), _WHETHER_IS, "'is X open?': check X (LookAt), the state asked kept")
+ASKED_WHETHER = Rule("asked whether", _asked_whether, (
+    Example("Could you check if the door is closed?", "check if", Tag.VERB),
+    Example("tell me whether the stove is still on", "tell me whether", Tag.VERB),
+    Example("Let me know if there is a pen on the desk.", "Let me know if there is", Tag.VERB),
+    Example("Tell me if the keys are on the table.", "Tell me if", Tag.VERB),
     Example("Can you see if anyone is in the kitchen?", "see if", Tag.VERB),
     Example("check whether there's a book on the shelf", "check whether there's", Tag.VERB),
-), first_words(CHECK_WHETHER[0]), "'see if X is in Y', 'check whether there is X': find X in Y")
+), first_words(_ASKERS), "'tell me / check / do you know if X is open' (LookAt), '... if X is in Y' (Find)")
+STATE_ASKED = Rule("the state asked", _state_asked, (
+    Example("do you know if the kettle is on", "on", Tag.COND),
+    Example("are the windows in the bedroom shut", "shut", Tag.COND),
+), None, "the state of 'is X open?', 'check if X is closed': kept beside the frame, the 'is' dropped")
+FOUND_OUT_RULE = Rule("find out who", _found_out, (
+    Example("Find out who is in the hall.", "who is in the hall", Tag.SAID),
+    Example("go to the hall and see who is there", "see", Tag.VERB),
+), first_words(CHECK_WHETHER[0]), "'find out who ...', 'check what ...': tell me who ...")
 WHETHER_BE = Rule("is, after see if X", _whether_be, (
     Example("see if the cat is in the garden", "is", ""),
 ), _WHETHER_IS, "the 'is' of 'see if X is in Y', dropped: 'see if' was read as 'find'")

@@ -45,7 +45,7 @@ import yaml
 from numpy.typing import NDArray
 
 from seal_cli.errors import SealError, SealErrors, Where
-from seal_cli.fileio import LOADER, MAX_IMAGE_BYTES, read_bytes, read_text
+from seal_cli.fileio import LOADER, MAX_IMAGE_BYTES, read_bytes, read_text, yaml_problem
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.geometry import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
 from seal_cli.maps.model import Map, MapWarning, ObjectTruth, Person, Place, Robot, Room, Sensor
@@ -532,16 +532,8 @@ def read_map(path: str | Path) -> tuple[Map | None, list[SealError]]:
         return None, [exc]
     try:
         root = yaml.compose(text, Loader=LOADER)
-    except yaml.MarkedYAMLError as exc:
-        mark = exc.problem_mark or exc.context_mark
-        lines = text.splitlines()
-        if mark is None:
-            return None, [SealError(f"YAML syntax error: {exc.problem}", Where(str(path)))]
-        source = lines[mark.line] if mark.line < len(lines) else None
-        return None, [SealError(f"YAML syntax error: {exc.problem or exc.context}",
-                                Where(str(path), mark.line + 1, mark.column + 1), source_line=source)]
     except yaml.YAMLError as exc:
-        return None, [SealError(f"YAML error: {exc}", Where(str(path)))]
+        return None, [yaml_problem(exc, text, str(path))]
     if root is None:
         return None, [SealError("the map file is empty", Where(str(path)))]
     reader = _Reader(text, path)

@@ -141,11 +141,14 @@ def greedy_tour(tables: Tables, nodes: Sequence[int], belief: np.ndarray, start:
 
 
 def choose(tables: Tables, nodes: Sequence[int], distance: np.ndarray, beliefs: Mapping[str, np.ndarray],
-           targets: Sequence[Target], *, start: int, allowed: Sequence[int]) -> Choice | None:
+           targets: Sequence[Target], *, start: int, allowed: Sequence[int], prefer: int | None = None,
+           tie: float = 0.0) -> Choice | None:
     """The one-step rollout of the module's model: the candidate view (of ``allowed``, indices into
     ``nodes``) to look from next. ``beliefs[cls]``: per node, the belief that the thing of class ``cls``
     is there (unnormalised). ``targets``: the remaining plan's stops in order, the first unknown (the
-    thing sought now). None when it has no belief left, or no candidate reveals any of it."""
+    thing sought now). ``prefer``: a candidate taken if its expected cost is within ``tie`` metres of the
+    best (what the model cannot tell apart: its paths run on a lattice). None when it has no belief
+    left, or no candidate reveals any of it."""
     if not targets or targets[0].cls is None:
         return None
     sought = targets[0].cls
@@ -166,14 +169,18 @@ def choose(tables: Tables, nodes: Sequence[int], distance: np.ndarray, beliefs: 
     sample = quantiles(q1, SAMPLES)
     support = np.flatnonzero(q1 > 0)
     best: tuple[float, int] | None = None
+    costs: dict[int, float] = {}
     for v in options:
         tour = greedy_tour(tables, nodes, q1, start, first=v)
         expected = float(q1[support] @ tour.cost(distance)[support])
         if rest:
             expected += float(later.after(tour, sample).mean())
+        costs[v] = expected
         if best is None or expected < best[0]:
             best = (expected, v)
     assert best is not None
+    if prefer is not None and prefer in costs and costs[prefer] <= best[0] + tie:
+        best = (costs[prefer], prefer)
     expected, v = best
     return Choice(v, expected, {c: float(share[c][v]) for c in q})
 

@@ -126,7 +126,7 @@ class SeFMPolicy(Policy):
     def observe(self, agent: Agent, detections: Sequence[Detection]) -> None:
         self.fallback.observe(agent, detections)
         if self.planner is not None:
-            self.planner.observe(agent)
+            self.planner.observe(agent, see=False)
         pose = agent.world.robot.pose
         self.history.append((pose, tuple(detections)))
         if self.sefm is None and self.keep_clouds and agent.steps:
@@ -274,8 +274,6 @@ class SeFMPolicy(Policy):
             return None
         if self.planner is None:
             self.planner = WholePlanSearch(agent, places_only=single)
-            for pose, _ in self.history:
-                self.planner.see(agent, pose)
         sefm = self._beliefs(agent)
         sefm.update(agent.world.robot.pose, (), self._state(agent))
         points = self.map.free_centres
@@ -287,7 +285,13 @@ class SeFMPolicy(Policy):
                 w = np.asarray(self.map.prior(cls).weights, dtype=float)
             return np.where(np.isfinite(w) & (w > 0), w, 0.0)
 
-        return self.planner.choose(agent, binding, target, weights)
+        sought = agent.class_of(target)
+        greedy = None
+        if sought in sefm.object_classes:   # object-only's choice now, weighed among the candidates
+            w = weights(sought)
+            if w.sum() > 0:
+                greedy = self._house_best(agent, target, points, w / w.sum(), list(sefm.object_summary(sought).modes))
+        return self.planner.choose(agent, binding, target, weights, also=greedy)
 
     def greedy_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
         """The first look of the shortest expected search through the looks that reveal the most belief
@@ -519,8 +523,13 @@ class SeFMPolicy(Policy):
         left. The single-room view (what a look reveals of every place in reach, the short tour, the
         frontier once the places are spent) was longer in houses, where a look from a place's stand
         cell reaches no other place and the prior names rooms (docs/benchmarks.md: the context suite)."""
-        field_ = agent.distances()
         X, W, modes = self.cloud(agent, target)
+        return self._taken(agent, binding, target, self._house_best(agent, target, X, W, modes))
+
+    def _house_best(self, agent: Agent, target: str, X: np.ndarray, W: np.ndarray, modes: Sequence[Any]) -> View | None:
+        """:meth:`_house_view`'s choice under the belief ``W`` over the points ``X`` (None: no fresh look
+        is worth :attr:`min_mass`), with nothing marked tried."""
+        field_ = agent.distances()
         W = W.copy()
         for k in agent.instances(agent.class_of(target)):
             if agent.spent(k.id, target):
@@ -550,8 +559,7 @@ class SeFMPolicy(Policy):
                 seen = (np.hypot(X[:, 0] - at[0], X[:, 1] - at[1]) <= self.map.sensor.range) & ~hidden
                 options.append((float(W[seen].sum()), float(field_[view.cell]), view))
         fresh = [o for o in options if (o[2].cell, o[2].open) not in self.tried and o[0] > self.min_mass]
-        best = max(fresh, key=lambda o: o[0] / (o[1] + self.house_scale))[2] if fresh else None
-        return self._taken(agent, binding, target, best)
+        return max(fresh, key=lambda o: o[0] / (o[1] + self.house_scale))[2] if fresh else None
 
     def _taken(self, agent: Agent, binding: Binding, target: str, view: View | None) -> View | None:
         """The view chosen (marked tried), or, when no fresh look is left, the frontier sweep's."""

@@ -21,6 +21,7 @@ from __future__ import annotations
 import hashlib
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -60,6 +61,9 @@ class Lattice:
     range: float
     look_every: float = 1.0
     _seen: dict[int, np.ndarray] = field(default_factory=dict, repr=False)
+    kept: dict[Any, Any] = field(default_factory=dict, repr=False)
+    """What the users of a lattice derive from it alone and keep with it (the whole-plan search's
+    regions and candidate views, by the places known)."""
 
     @property
     def size(self) -> int:

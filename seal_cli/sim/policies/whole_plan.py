@@ -26,7 +26,7 @@ from seal_cli.maps.priors import target_cells
 from seal_cli.sim.agent import Agent, View
 from seal_cli.sim.navigation import Cell
 from seal_cli.sim.policies.completion import Choice, Target, choose
-from seal_cli.sim.policies.views import DriveTable, Lattice, lattice_of
+from seal_cli.sim.policies.views import SPACING, DriveTable, Lattice, lattice_of
 
 __all__ = ["COVER_SAMPLE", "DOOR_GAP", "MORE_VIEWS", "ROOM_VIEWS", "UNCOVERED", "Candidate", "Region",
            "WholePlanSearch"]
@@ -175,8 +175,13 @@ class WholePlanSearch:
         sensor = agent.world.sensor
         self.lattice: Lattice = lattice_of(agent.grid, lambda p, pts: sensor.visible((p[0], p[1], 0.0), pts),
                                            f"{m.name}|{m.bounds}|{m.sensor!r}", sensor.range, agent.look_every)
-        self.regions = regions_of(agent, places_only)
-        self.candidates = self._candidates(agent)
+        known = tuple(sorted((k.id, k.cls, k.at, k.openable) for k in agent.known.values() if not k.movable))
+        kept = self.lattice.kept.get((places_only, known))
+        if kept is None:   # the same for every run on one house: kept with its lattice
+            self.regions = regions_of(agent, places_only)
+            kept = self.lattice.kept[(places_only, known)] = (self.regions, tuple(self._candidates(agent)))
+        self.regions = kept[0]
+        self.candidates = list(kept[1])
         self.nodes = [c.node for c in self.candidates]
         self.belief_node = self.lattice.node_of(m.free_centres)
         """Per free cell of the map, its lattice node (beliefs are summed onto the nodes)."""
@@ -263,13 +268,14 @@ class WholePlanSearch:
                     out.append(int(ends[np.argmin(np.hypot(*(lattice.points[ends] - centre).T))]))
         return out
 
-    def observe(self, agent: Agent) -> np.ndarray:
-        """The robot has looked: the free cells it saw (indices, returned, and added to :attr:`seen`);
-        the view chosen last is used once the robot has looked from it."""
+    def observe(self, agent: Agent, see: bool = True) -> np.ndarray:
+        """The robot has looked: the free cells it saw (indices, returned, and added to :attr:`seen`; none
+        when not ``see``: a searcher with beliefs of its own, SeFM, needs only the views used); the view
+        chosen last is used once the robot has looked from it."""
         if self.pending is not None and agent.robot_cell() == self.pending:
             self.used.add(self.pending)
             self.pending = None
-        return self.see(agent, agent.world.robot.pose)
+        return self.see(agent, agent.world.robot.pose) if see else np.zeros(0, dtype=np.intp)
 
     def see(self, agent: Agent, pose: tuple[float, float, float]) -> np.ndarray:
         """The free cells the sensor sees from ``pose`` (indices), added to :attr:`seen`."""
@@ -351,7 +357,6 @@ class WholePlanSearch:
             self._covered = np.zeros(lattice.size, dtype=bool)
             for node in self.nodes:
                 self._covered |= lattice.visible(node)
-        added = False
         for _ in range(MORE_VIEWS):
             left = {c: float(b[~self._covered].sum() / b.sum()) for c, b in beliefs.items() if b.sum() > 0}
             if not left or max(left.values()) <= UNCOVERED:
@@ -373,20 +378,34 @@ class WholePlanSearch:
                                              self.map.rooms[room].name if room >= 0 else "the open floor"))
             self.nodes.append(best)
             self._covered |= lattice.visible(best)
-            added = True
-        if added:
-            self._tables.clear()
+
+    def _add(self, agent: Agent, view: View) -> None:
+        """A view of another rule (the greedy place view) among the candidates, kept for the run."""
+        if any(c.cell == view.cell and c.open == view.open for c in self.candidates):
+            return
+        node = int(self.lattice.node_of(np.asarray([agent.grid.point(view.cell)]))[0])
+        room = self._room_of(self.lattice.points[node:node + 1])[0]
+        name = view.open or (self.map.rooms[room].name if room >= 0 else "the open floor")
+        self.candidates.append(Candidate(view.cell, node, view.look_at, name, view.open))
+        self.nodes.append(node)
+        if self._covered is not None:
+            self._covered |= self.lattice.visible(node)
 
     def choose(self, agent: Agent, binding: Binding, target: str,
-               weights: Callable[[str], np.ndarray]) -> Decision | None:
+               weights: Callable[[str], np.ndarray], also: View | None = None) -> Decision | None:
         """The candidate view that starts the shortest expected completion (:func:`~seal_cli.sim.policies.
-        completion.choose`); ``weights(cls)`` is the belief of a class per free cell of the map."""
+        completion.choose`); ``weights(cls)`` is the belief of a class per free cell of the map. ``also``: a
+        view another rule would take now (the greedy place view), weighed among the candidates on the same
+        footing, so the choice is never worse than it under the model, and taken when the model cannot tell
+        it from the best (within the lattice's :data:`~seal_cli.sim.policies.views.SPACING`)."""
         stops = self.targets(agent, binding, target)
         sought = list(dict.fromkeys(c for c, v, _ in stops if v is None))
         n = self.lattice.size
         beliefs = {c: np.bincount(self.belief_node, weights=np.where(np.isfinite(w := weights(c)) & (w > 0), w, 0.0),
                                   minlength=n) for c in sought}
         self._cover(agent, beliefs)
+        if also is not None:
+            self._add(agent, also)
         shut = self._shut(agent)
         hidden = np.zeros(n, dtype=bool)
         for mask in shut.values():
@@ -395,10 +414,17 @@ class WholePlanSearch:
         reveals = [shut.get(c.open) if c.open is not None else None for c in self.candidates]
         lattice = self.lattice
 
-        def tables(origin: int) -> DriveTable:
-            if (origin, key) not in self._tables:
-                self._tables[(origin, key)] = lattice.drive_table(origin, self.nodes, reveals, hidden)
-            return self._tables[(origin, key)]
+        def tables(origin: int) -> DriveTable:   # kept across choices; rows added for candidates added since
+            table = self._tables.get((origin, key))
+            done = 0 if table is None else len(table.length)
+            if done < len(self.nodes):
+                more = lattice.drive_table(origin, self.nodes[done:], reveals[done:], hidden)
+                table = more if table is None else DriveTable(np.concatenate([table.seen_at, more.seen_at]),
+                                                              np.concatenate([table.look, more.look]),
+                                                              np.concatenate([table.length, more.length]))
+                self._tables[(origin, key)] = table
+            assert table is not None
+            return table
 
         plan: list[Target] = []
         for c, value, at in stops:
@@ -412,8 +438,10 @@ class WholePlanSearch:
         allowed = [k for k, c in enumerate(self.candidates) if c.cell not in self.used and c.cell != here
                    and np.isfinite(field_[c.cell]) and (c.open is None or c.open in shut)]
         start = int(lattice.node_of(np.asarray([agent.grid.point(here)]))[0])
+        prefer = next((k for k, c in enumerate(self.candidates) if also is not None and c.cell == also.cell
+                       and c.open == also.open), None)
         choice: Choice | None = choose(tables, self.nodes, lattice.distance, beliefs, plan, start=start,
-                                       allowed=allowed)
+                                       allowed=allowed, prefer=prefer, tie=SPACING)
         if choice is None:
             return None
         candidate = self.candidates[choice.view]

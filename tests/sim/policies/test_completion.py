@@ -61,6 +61,25 @@ def test_two_things_go_first_where_both_may_be_and_one_alone_does_not() -> None:
     assert kitchen is not None and abs(kitchen.expected_m - 18.0) < 1e-6
 
 
+def test_a_preferred_view_is_taken_only_within_the_tie_of_the_best() -> None:
+    # bedroom first 16.5 m, kitchen first 18.0 m (above): the kitchen is preferred only when 1.5 m is a tie
+    lattice = _corridor(range(-3, 11))
+    node = {x: x + 3 for x in range(-3, 11)}
+    nodes = [node[-3], node[0], node[10]]
+    spoon, cup = np.zeros(lattice.size), np.zeros(lattice.size)
+    spoon[[node[0], node[10]]] = 0.5
+    cup[[node[-3], node[10]]] = 0.5
+    tables = _tables(lattice, nodes)
+    beliefs, plan = {"spoon": spoon, "cup": cup}, [Target("spoon"), Target("cup")]
+    for tie, view, metres in ((0.0, 2, 16.5), (1.4, 2, 16.5), (1.6, 1, 18.0)):
+        got = choose(tables, nodes, lattice.distance, beliefs, plan, start=node[5], allowed=[0, 1, 2], prefer=1,
+                     tie=tie)
+        assert got is not None and got.view == view and abs(got.expected_m - metres) < 1e-6, tie
+    # a preferred view that is not allowed is not taken
+    got = choose(tables, nodes, lattice.distance, beliefs, plan, start=node[5], allowed=[0, 2], prefer=1, tie=9.0)
+    assert got is not None and got.view == 2
+
+
 def test_a_known_goal_is_a_cost_after_the_search_not_a_place_to_search() -> None:
     lattice = _corridor(range(11))
     nodes = [0, 10]

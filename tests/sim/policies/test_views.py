@@ -69,3 +69,35 @@ def test_a_shut_receptacle_is_seen_into_only_from_the_view_that_opens_it(library
     assert np.allclose(table.seen_at[k, inside], table.length[k])     # at the end, when it is opened
     others = [i for i in range(len(search.candidates)) if i != k and search.candidates[i].open is None]
     assert not np.isfinite(table.seen_at[np.ix_(others, np.flatnonzero(inside))]).any()
+
+
+def test_a_view_of_another_rule_is_weighed_on_the_same_footing_and_the_tables_grow_to_it(library: Library) -> None:
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.agent import View
+
+    agent, _ = run_on_map(cottage(), "pick up the spoon", library, make_policy("prior_optimal"),
+                          rng=np.random.default_rng(0))
+    weights = agent.policy.weights  # type: ignore[attr-defined]
+    search = WholePlanSearch(agent)
+    first = search.choose(agent, agent.steps[0], "spoon", weights)
+    assert first is not None
+    grown = dict(search._tables)
+    # a cell no candidate stands on, in the hall: weighed among the candidates, the model's cost no worse
+    cell = agent.grid.cell((7.5, 3.0))
+    assert all(c.cell != cell for c in search.candidates)
+    n = len(search.candidates)
+    with_it = search.choose(agent, agent.steps[0], "spoon", weights, also=View(cell, (7.5, 3.0)))
+    assert with_it is not None and len(search.candidates) == n + 1 and search.candidates[-1].cell == cell
+    assert with_it.expected_m <= first.expected_m + 1e-9
+    # the tables kept from the first choice grew by the added candidate's row: the tables drawn afresh
+    shut = search._shut(agent)
+    hidden = np.zeros(search.lattice.size, dtype=bool)
+    for mask in shut.values():
+        hidden |= mask
+    reveals = [shut.get(c.open) if c.open is not None else None for c in search.candidates]
+    assert grown and all(len(t.length) == n for t in grown.values())
+    for origin, _ in list(grown)[:5]:
+        table = search._tables[(origin, frozenset(shut))]
+        whole = search.lattice.drive_table(origin, search.nodes, reveals, hidden)
+        assert len(table.length) == n + 1
+        assert np.array_equal(table.seen_at, whole.seen_at) and np.array_equal(table.length, whole.length)

@@ -1,0 +1,46 @@
+#!/usr/bin/env python3
+"""The context suite on houses its policies were not developed on (``seal_cli.bench.context.unseen_houses``):
+the same commands, layouts drawn from the same priors, starts fixed with the house; the same JSON as
+``seal bench tasks --suite context --json``.
+
+    python scripts/context_unseen.py --layouts 3 --jobs 2 --policies sefm,object_only,prior_optimal > unseen.json
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+from seal_cli.bench import context  # noqa: E402
+from seal_cli.bench.tasks import summarise  # noqa: E402
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--layouts", type=int, default=3)
+    parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument("--policies", default="sefm,object_only,prior_optimal")
+    parser.add_argument("--episodes", type=Path, help="also write every outcome here as JSON Lines")
+    args = parser.parse_args()
+    names = [n.strip() for n in args.policies.split(",") if n.strip()]
+    outcomes = list(context.run_context_suite(ROOT / ".." / "shared" / "data", names, layouts=args.layouts,
+                                              seed=args.seed, jobs=args.jobs, on=context.unseen_houses()))
+    if args.episodes is not None:
+        args.episodes.write_text("".join(json.dumps(o.to_json()) + "\n" for o in outcomes), encoding="utf-8")
+    report = summarise(outcomes, names)
+    report.update({"suite": "context (unseen houses)", "layouts": args.layouts, "seed": args.seed,
+                   "by_command": context.regroup(outcomes, names, 1), "by_house": context.regroup(outcomes, names, 0),
+                   "against_prior_optimal": context.paired(outcomes, names)})
+    json.dump(report, sys.stdout, indent=1)
+    print()
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
