@@ -48,6 +48,8 @@ from seal_cli.language.chooser import Instance, features, fit  # noqa: E402
 from seal_cli.language.grounding import PORTIONS, Vocabulary  # noqa: E402
 from seal_cli.language.lexicon import noun_lemma  # noqa: E402
 from seal_cli.language.parser import CommandError, Parse, Phrase, parse_command  # noqa: E402
+from seal_cli.language.steps import NONE, STEPS, eligible, step_features  # noqa: E402
+from seal_cli.language.steps import THRESHOLD as STEP_THRESHOLD  # noqa: E402
 from seal_cli.language.wordusage import (  # noqa: E402
     CONTEXT_WEIGHT,
     FORMAT,
@@ -65,7 +67,10 @@ MANIPULATE = ("Pick", "Heat", "Cool", "Clean", "LookAt", "Place")
 LABELS = ("object", "receptacle", "mrecep", "toggle")
 KEEP = 2
 """A wording seen fewer times than this is left out of the file (it could never reach MIN_SUPPORT alone)."""
-SECTIONS = ("words", "seen", "context", "class_context", "number", "weights")
+SECTIONS = ("words", "seen", "context", "class_context", "number", "weights", "step_prior", "step_weights")
+STEP_OF = {"pick_heat_then_place_in_recep": "Heat", "pick_cool_then_place_in_recep": "Cool",
+           "pick_clean_then_place_in_recep": "Clean"}
+"""The step each ALFRED task type has (the others: none)."""
 L2 = 1.0
 """The chooser's L2 penalty (chosen on train trials held out from the fit, ``--dev 0.2 --l2 ...``)."""
 
@@ -214,6 +219,43 @@ def table(counts: Counts, seen: Counts, context: Context, class_context: Counts,
             "weights": weights}
 
 
+def usage_of(data: dict[str, object]) -> WordUsage:
+    """A table's statistics, read back as they are read when shipped."""
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / "table.json"
+        path.write_text(dump(data))
+        return load_word_usage([path])
+
+
+def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
+               l2: float = L2) -> dict[str, object]:
+    """The table with its unsaid-step model: each row's sentence parsed with the table's grounding
+    (no step inferred), and, where the parse places one thing and says no step
+    (:func:`~seal_cli.language.steps.eligible`), the task's step (or none) learned from the
+    sentence's words and the classes put and where (:func:`~seal_cli.language.steps.step_features`)."""
+    library = load_library()
+    grounded = vocabulary.with_usage(usage_of(data))
+    said: list[tuple[str, tuple[str, ...]]] = []
+    for row in rows:
+        text = " ".join(row["goal_sentence"].split())
+        try:
+            parse = parse_command(text, library, grounded, infer_steps=False)
+        except CommandError:
+            continue
+        at = eligible(parse)
+        if at is None:
+            continue
+        place = parse.frames[at]
+        feats = step_features(context_words(text), parse.resolve(place.elements["theme"]).cls,
+                              parse.resolve(place.elements["goal"]).cls)
+        said.append((STEP_OF.get(row["task_type"], NONE), feats))
+    prior = Counter(step for step, _ in said)
+    keys = tuple(k for k in (*STEPS, NONE) if prior[k])
+    offsets = tuple(math.log(prior[k]) for k in keys)
+    weights = fit([Instance(keys, offsets, keys.index(step), feats) for step, feats in said], l2)
+    return {**data, "step_prior": {k: prior[k] for k in keys}, "step_weights": weights}
+
+
 def ordered(words: Counter[str]) -> dict[str, int]:
     return dict(sorted(words.items(), key=lambda kv: (-kv[1], kv[0])))
 
@@ -243,7 +285,7 @@ def dump(data: dict[str, object]) -> str:
     head = {k: v for k, v in data.items() if k not in SECTIONS}
     text = json.dumps(head, indent=1)[:-2]
     for name in SECTIONS:
-        rows = data[name]
+        rows = data.get(name, {})
         assert isinstance(rows, dict)
         text += f',\n "{name}": {{\n' + ",\n".join(f"  {json.dumps(w)}: {json.dumps(c)}" for w, c in rows.items())
         text += "\n }"
@@ -297,6 +339,8 @@ def main() -> int:
     ap.add_argument("--min-ratio", type=float, nargs="*", default=[MIN_RATIO])
     ap.add_argument("--context-weight", type=float, nargs="*", default=[CONTEXT_WEIGHT])
     ap.add_argument("--l2", type=float, nargs="*", default=[L2], help="the chooser's L2 penalties to try")
+    ap.add_argument("--step-threshold", type=float, nargs="*", default=[STEP_THRESHOLD],
+                    help="the least probability at which an unsaid step is added (2: never); those to try")
     ap.add_argument("--errors", type=Path, help="with --dev: write the held-out sentences scored wrong here (TSV)")
     ap.add_argument("--errors-of", default=None, help="with --dev: the table whose errors --errors writes "
                     "('naive Bayes', 'chooser l2 1.0'; default: the first chooser)")
@@ -325,10 +369,8 @@ def main() -> int:
         print(f"fit {len(fit_rows)} sentences, dev {len(dev)} sentences ({len(held)} trials)")
 
         def fitted(l2: float | None) -> WordUsage:
-            with tempfile.TemporaryDirectory() as folder:      # the table as it would ship, read as it is read
-                path = Path(folder) / "dev.json"
-                path.write_text(dump(table(*counted, classes, "dev", l2)))
-                return load_word_usage([path])
+            data = table(*counted, classes, "dev", l2)    # the table as it would ship, read as it is read
+            return usage_of(with_steps(data, fit_rows, vocabulary) if l2 is not None else data)
 
         def show(name: str, figures: dict[str, float]) -> None:
             print(f"{name:<34}" + " ".join(f"{k} {v:.3f}" for k, v in figures.items()), flush=True)
@@ -339,12 +381,16 @@ def main() -> int:
             for support in args.min_support:
                 for ratio in args.min_ratio:
                     for weight in args.context_weight:
-                        tried = vocabulary.with_usage(replace(table_, min_support=support, min_ratio=ratio,
-                                                              context_weight=weight))
-                        show(f"{name}, support {support} ratio {ratio}" + ("" if table_.weights else
-                                                                         f" context {weight}"),
-                             score(dev, lambda row, v=tried: v, module,
-                                   errors if name == args.errors_of else None))
+                        for threshold in args.step_threshold:
+                            tried = vocabulary.with_usage(replace(
+                                table_, min_support=support, min_ratio=ratio, context_weight=weight,
+                                steps=replace(table_.steps, threshold=threshold)))
+                            show(f"{name}, support {support} ratio {ratio}" + ("" if table_.weights else
+                                                                             f" context {weight}")
+                                 + (f" step {threshold}" if table_.steps else ""),
+                                 score(dev, lambda row, v=tried: v, module,
+                                       errors if name == args.errors_of and threshold == args.step_threshold[0]
+                                       else None))
         if args.errors is not None:
             args.errors.write_text("".join(line + "\n" for line in errors))
             print(f"wrote {args.errors} ({len(errors)} sentences of {args.errors_of} scored wrong)")
@@ -368,7 +414,7 @@ def main() -> int:
     source = (f"ALFRED train goals ({goals.name}: {len(rows)} human goal sentences with their task labels), "
               "parsed by seal's rules; counts of the labelled class by the wording of the phrase that fills its field, "
               "and of the sentence's other words by wording and class")
-    text = dump(table(*count(rows, vocabulary, scenes), classes, source))
+    text = dump(with_steps(table(*count(rows, vocabulary, scenes), classes, source), rows, vocabulary))
     if args.check:
         shipped = args.out.read_text() if args.out.is_file() else ""
         if shipped != text:

@@ -113,6 +113,13 @@ def unchecked_conditions(parse: Any) -> list[str]:
             "which seal run cannot check: it carries the frame out now" for frame in parse.frames if frame.condition]
 
 
+def inferred_steps(parse: Any) -> list[str]:
+    """A note for each frame the parse inferred rather than read (:mod:`seal_cli.language.steps`: the
+    step a sentence most likely leaves unsaid), so that ``seal run`` says what it adds on its own."""
+    return [f"(inferred: {frame.lexical_unit} it first, {frame.inferred:.2f})" for frame in parse.frames
+            if getattr(frame, "inferred", None) is not None]
+
+
 def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.random.Generator,
                holding: str | None = None, done: Sequence[str] = (), vocabulary: Any = None,
                budget: Budget | None = None, observers: Sequence[Callable[[Record], None]] = ()
@@ -147,6 +154,9 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
     warnings = [*problem.warnings, *unchecked_conditions(parses[-1])]
     for warning in warnings:
         agent.say("warn", f"warning: {warning}")
+    notes = inferred_steps(parses[-1])
+    for note in notes:
+        agent.say("warn", note)
     result = agent.run(problem.commanded, done=executed)
-    result.warnings = warnings
+    result.warnings = [*warnings, *notes]
     return agent, result

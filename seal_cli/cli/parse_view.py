@@ -113,6 +113,8 @@ def _outline(parsed: Parse, escape: Callable[[str], str],
         a, b = frame.span
         label = (tag("bold cyan", f"{index}. {frame.frame}") + "  "
                  + tag("dim", f"'{escape(frame.lexical_unit)}' · {escape(parsed.text[a:b])!s}"))
+        if frame.inferred is not None:
+            label += "  " + tag("dim", f"(inferred, {frame.inferred:.2f}: not said)")
         elements = []
         for role, phrase in frame.elements.items():
             facts = ["head " + tag("green", escape(phrase.head))]

@@ -245,11 +245,14 @@ class Evoker:
             if pp.after_relative and host.relative is not None:
                 host.relative = self.text[host.relative_start:pp.np.end]
                 continue
-            if not host.borrowed:            # an object said in an earlier clause ends where it was said
+            again = pp.prep == "with" and _named_again(pp.np, roles.get(theme), host, attached)
+            if not host.borrowed and not again:   # an object said in an earlier clause ends where it was said
                 host.end = max(host.end, pp.np.end)
             if pp.prep == "with" and pp.np.kind != "person" and (host.kind != "person" or host.pronoun):
                 if holds_nothing and host is roles.get(theme) and pp.np.kind == "thing" and not pp.np.pronoun:
                     self.hold(pp.np)     # "turn on the lamp with the remote": held while it is done
+                elif again:
+                    roles[theme].contents.append(pp.np)   # "a pan on the table with an apple on the pan"
                 else:
                     host.contents.append(pp.np)
         self.asker(frame, roles)
@@ -515,3 +518,14 @@ def _whole_named(np: NP) -> bool:
 def _relates_to_goal(relation: Any) -> bool:
     """Whether a frame's result relates its first element to its goal (``at(theme, goal)``)."""
     return relation is not None and relation.args[1] == "goal"
+
+
+def _named_again(content: NP, theme: Any, host: NP, attached: Sequence[tuple[NP, PP]]) -> bool:
+    """Whether "with X" said after another phrase belongs to the theme because it names the theme
+    again: "put a pan on the table with an apple *on the pan*" is "a pan with an apple on it" (the
+    contents construction with the noun repeated instead of "it"), not a table with an apple."""
+    if not isinstance(theme, NP) or host is theme or theme.head is None or theme.pronoun:
+        return False
+    head = noun_lemma(theme.head.text)
+    return any(h is content and p.prep in PUT_IN and p.np.head is not None and not p.np.pronoun
+               and noun_lemma(p.np.head.text) == head for h, p in attached)

@@ -38,6 +38,7 @@ from typing import Any
 from seal_cli.errors import SealError, Where
 from seal_cli.frames.taxonomy import class_key, class_words
 from seal_cli.language.lexicon import noun_lemma
+from seal_cli.language.steps import StepModel
 from seal_cli.language.wordusage import WordUsage, context_words, shipped_word_usage, unsaid_wording
 
 __all__ = ["PIECES", "PORTIONS", "Vocabulary", "load_vocabulary", "vocabulary_of_map"]
@@ -60,6 +61,7 @@ piece exists once its whole has been cut, so naming one asks for the cutting (se
 
 
 _RULES = WordUsage()
+_NO_STEPS = StepModel()
 _INDEXES = ("_usage", "_present", "_names", "_own", "_exact", "_by_word", "_rules_alone")
 """The cached indexes a vocabulary builds from its classes and usage, which do not depend on the sentence."""
 
@@ -226,6 +228,10 @@ class Vocabulary:
                     break
         if words and not of and end == len(words) and words[-1] not in PORTIONS:
             found = self._usage.choose(words, self._present, found, self.scene, self.context)
+            if found is None:                # "the stovve": a word nobody's class names, misspelling one people say
+                said = self._usage.respelled(words[-1])
+                if said is not None:
+                    found = self._usage.choose((said,), self._present, None, self.scene, self.context)
         elif end == len(words) and words and words[-1] in PORTIONS:   # "the left side of the sink",
             whole = of or words[:-1]                                     # "a chair seat": the whole decides
             if whole and whole[-1] not in PORTIONS and (
@@ -279,6 +285,16 @@ class Vocabulary:
         away"), by the statistics alone (:func:`~seal_cli.language.wordusage.unsaid_wording`): a
         clear majority among the present classes, or None (the rules know no unsaid elements)."""
         return self._usage.choose((unsaid_wording(frame, role, unit),), self._present, None, self.scene)
+
+    @property
+    def step_model(self) -> StepModel:
+        """Which step a sentence leaves unsaid (:mod:`~seal_cli.language.steps`), from the statistics:
+        only when every class of this vocabulary is one they were counted over (ALFRED's classes, or
+        a scene's of them), else an empty model (a GPSR arena, a shipped map: no step is inferred)."""
+        usage = self._usage
+        if not usage.steps or not set(self._present) <= usage.universe:
+            return _NO_STEPS
+        return usage.steps
 
     def ground_name(self, name: str) -> str | None:
         """The class a class name of the frame library denotes (a default: Slice's ``knife``): by

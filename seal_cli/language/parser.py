@@ -30,6 +30,7 @@ from seal_cli.language.clauses import Clauses
 from seal_cli.language.element_types import Types
 from seal_cli.language.evoking import Evoker
 from seal_cli.language.lexicon import CommandError, Lexicon, Tagger, Word, tokenize
+from seal_cli.language.steps import infer_step
 from seal_cli.language.swallowed import Swallowed, swallowed
 from seal_cli.language.syntax import NP, Syntax
 from seal_cli.language.values import Evoked, Parse, Phrase
@@ -67,9 +68,10 @@ class CommandParser:
         parser = _PARSERS[id(library)] = cls(library)
         return parser
 
-    def parse(self, text: str, vocabulary: Vocabulary | None = None) -> Parse:
+    def parse(self, text: str, vocabulary: Vocabulary | None = None, infer_steps: bool = True) -> Parse:
         """The frames a command evokes. Raises :class:`CommandError` (a SealError with a column and
-        what was expected) when it cannot be parsed."""
+        what was expected) when it cannot be parsed. ``infer_steps``: add the step a sentence most
+        likely leaves unsaid, where the vocabulary's statistics know it (:mod:`~seal_cli.language.steps`)."""
         lexicon = self.lexicon
         if not text.strip():
             raise CommandError("empty command: expected a verb, such as " + _some_verbs(lexicon), 1, text,
@@ -91,6 +93,8 @@ class CommandParser:
         lost = swallowed(parse, words, lexicon, self.library.taxonomy.known_classes)
         if lost:
             raise _swallowed_error(parse, lost[0])
+        if infer_steps and vocabulary is not None:
+            parse = infer_step(parse, self.library, vocabulary, vocabulary.step_model, vocabulary.context)
         if tagger.remarks:
             parse = replace(parse, remarks=tuple(text[a:b] for a, b in tagger.remarks))
         return parse
@@ -128,10 +132,12 @@ _PARSERS: dict[int, CommandParser] = {}
 """The parser of each library object (by identity: a library is a value, costly to hash)."""
 
 
-def parse_command(text: str, library: Library, vocabulary: Vocabulary | None = None) -> Parse:
+def parse_command(text: str, library: Library, vocabulary: Vocabulary | None = None,
+                  infer_steps: bool = True) -> Parse:
     """The frames a command evokes. Raises :class:`CommandError` (a SealError with a column and
-    what was expected) when it cannot be parsed."""
-    return CommandParser.of(library).parse(text, vocabulary)
+    what was expected) when it cannot be parsed. ``infer_steps=False``: never add an unsaid step
+    (:mod:`~seal_cli.language.steps`), even where the statistics know one."""
+    return CommandParser.of(library).parse(text, vocabulary, infer_steps)
 
 
 def lexicon_of(library: Library) -> tuple[Lexicon, Types]:

@@ -68,13 +68,19 @@ class Evoked:
     time: str | None = None
     asked: str | None = None
     """The state a yes/no question asks of the frame's theme ("open" of "is the fridge open?")."""
+    inferred: float | None = None
+    """Not said but inferred, with this probability: the step a sentence most likely leaves unsaid
+    (:mod:`~seal_cli.language.steps`: "put an apple in the fridge" → Cool it first). None: said."""
 
     def to_json(self) -> dict[str, Any]:
-        data = {"frame": self.frame, "lexical_unit": self.lexical_unit, "span": list(self.span),
-                "elements": {role: p.to_json() for role, p in self.elements.items()}}
+        data: dict[str, Any] = {"frame": self.frame, "lexical_unit": self.lexical_unit, "span": list(self.span),
+                                "elements": {role: p.to_json() for role, p in self.elements.items()}}
         for key in ("condition", "result", "time", "asked"):
             if getattr(self, key):
                 data[key] = getattr(self, key)
+        if self.inferred is not None:
+            data["inferred"] = True
+            data["probability"] = self.inferred
         return data
 
 

@@ -47,6 +47,7 @@ from seal_cli.errors import SealError, Where
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.language.chooser import features, logits
 from seal_cli.language.morphology import noun_lemma
+from seal_cli.language.steps import NONE, STEPS, StepModel
 
 __all__ = ["CONTEXT_PRIOR", "CONTEXT_WEIGHT", "FORMAT", "MIN_RATIO", "MIN_SUPPORT", "SHIPPED", "WordUsage",
            "context_words", "load_word_usage", "shipped_word_usage", "unsaid_wording"]
@@ -67,6 +68,10 @@ trials held out from the counts, see docs/language.md)."""
 CONTEXT_PRIOR = 5.0
 """How many phrases' worth of the class's rate over all its wordings a wording's own rate of a
 context word is smoothed with (a wording said few times borrows from its class)."""
+
+SPELLING = 0.85
+"""How similar (``difflib``'s ratio) a word no class names must be to a wording people said to be read as
+its misspelling ("stovve" → stove 0.91, "cabinst" → cabinet 0.86; "pencil" for "parcel" is 0.67)."""
 
 _WORD = re.compile(r"[a-z]+")
 
@@ -117,6 +122,9 @@ class WordUsage:
     """``weights[feature][class key]``: the discriminative chooser's weights
     (:mod:`~seal_cli.language.chooser`), which weigh the sentence in place of :meth:`context_factor`
     when a table has them."""
+    steps: StepModel = field(default_factory=StepModel)
+    """Which step a sentence that places a thing and says none most likely means
+    (:mod:`~seal_cli.language.steps`); empty: none is inferred."""
 
     def __post_init__(self) -> None:
         for name in ("counts", "seen", "class_context", "number", "weights"):
@@ -149,7 +157,9 @@ class WordUsage:
                          self.sources + other.sources, self.min_support, self.min_ratio,
                          add(self.seen, other.seen), context, add(self.class_context, other.class_context),
                          self.context_weight, add(self.number, other.number),
-                         add(self.weights, other.weights))
+                         add(self.weights, other.weights),
+                         StepModel(add({"": self.steps.prior}, {"": other.steps.prior}).get("", {}),
+                                   add(self.steps.weights, other.steps.weights), self.steps.threshold))
 
     def names_one(self, lemmas: tuple[str, ...]) -> bool:
         """Whether a plural phrase whose words up to the head are ``lemmas`` names one thing, as
@@ -169,7 +179,7 @@ class WordUsage:
     def without_context(self) -> WordUsage:
         """These counts with the sentence not weighed (the wording alone decides)."""
         return WordUsage(self.counts, self.universe, self.sources, self.min_support, self.min_ratio, self.seen,
-                         number=self.number)
+                         number=self.number, steps=self.steps)
 
     def sentence_factor(self, wording: str, lemmas: tuple[str, ...], keys: Iterable[str],
                         words: Iterable[str]) -> dict[str, float]:
@@ -223,6 +233,31 @@ class WordUsage:
                 p = (by_class.get(key, {}).get(word, 0) + CONTEXT_PRIOR * overall) / (n + CONTEXT_PRIOR)
                 logs[key] += math.log(p) - math.log(p_word)
         return {key: math.exp(self.context_weight * v) for key, v in logs.items()}
+
+    @cached_property
+    def _heads(self) -> tuple[str, ...]:
+        """The one-word wordings people said at least ``min_support`` times, which a misspelling is matched against."""
+        return tuple(w for w, by in self.counts.items() if " " not in w and "<-" not in w and w.isalpha()
+                     and sum(by.values()) >= self.min_support)
+
+    @cached_property
+    def _spelled(self) -> dict[str, str | None]:
+        return {}
+
+    def respelled(self, word: str) -> str | None:
+        """The word people said that ``word`` most likely misspells ("stovve": stove, "cabinst":
+        cabinet), or None: the one wording of the table within :data:`SPELLING` similarity
+        (``difflib``'s ratio) of a word of at least 5 letters, closer than any other."""
+        if len(word) < 5 or not word.isalpha() or word in self.counts:
+            return None
+        cache = self._spelled
+        if word not in cache:
+            import difflib
+
+            close = difflib.get_close_matches(word, self._heads, n=2, cutoff=SPELLING)
+            ratios = [difflib.SequenceMatcher(None, word, c).ratio() for c in close]
+            cache[word] = close[0] if close and (len(close) == 1 or ratios[0] > ratios[1]) else None
+        return cache[word]
 
     @cached_property
     def _meant(self) -> frozenset[str]:
@@ -347,7 +382,21 @@ def _table(data: Any, where: Where) -> WordUsage:
         raise SealError("\"weights\" must map each feature to {class of \"classes\": finite number}", where)
     weights = {str(f): {class_key(c): float(v) for c, v in by.items()} for f, by in raw.items()}
     return WordUsage(counts, universe, (str(data.get("source", where.file)),), seen=seen, context=context,
-                     class_context=class_context, number=number, weights=weights)
+                     class_context=class_context, number=number, weights=weights, steps=_steps(data, where))
+
+
+def _steps(data: dict[str, Any], where: Where) -> StepModel:
+    """The unsaid-step model of a table (``step_prior``: {step: count}, ``step_weights``: {feature: {step: w}})."""
+    names = {*STEPS, NONE}
+    prior = data.get("step_prior", {})
+    if not _word_counts(prior) or not set(prior) <= names:
+        raise SealError(f"\"step_prior\" must map each of {', '.join(sorted(names))} to a positive count", where)
+    raw = data.get("step_weights", {})
+    if not isinstance(raw, dict) or not all(
+            isinstance(by, dict) and all(c in names and isinstance(v, int | float) and not isinstance(v, bool)
+                                         and math.isfinite(v) for c, v in by.items()) for by in raw.values()):
+        raise SealError("\"step_weights\" must map each feature to {step: finite number}", where)
+    return StepModel(prior, {str(f): {c: float(v) for c, v in by.items()} for f, by in raw.items()})
 
 
 def _word_counts(table: Any) -> bool:

@@ -331,3 +331,15 @@ def test_a_plural_names_one_thing_where_people_meant_one(library: Library) -> No
 def test_the_shipped_table_says_the_keys_are_one_thing() -> None:
     shipped = shipped_word_usage()
     assert shipped.names_one(("key",)) and not shipped.names_one(("pencil",))
+
+
+def test_a_misspelling_is_read_as_the_word_people_say_only_when_nothing_matches() -> None:
+    usage_ = usage({"stove": {"stove_burner": 20}, "cabinet": {"cabinet": 30}, "table": {"dining_table": 9}},
+                   ("stove_burner", "cabinet", "dining_table"))
+    assert usage_.respelled("stovve") == "stove" and usage_.respelled("cabinst") == "cabinet"
+    assert usage_.respelled("parcel") is None and usage_.respelled("tabl") is None      # too far, too short
+    assert usage_.respelled("stove") is None                                          # a wording itself
+    vocab = Vocabulary.of(["StoveBurner", "Cabinet", "DiningTable"], usage=usage_)
+    assert vocab.ground_words(["stovve"]) == "StoveBurner"
+    assert vocab.with_usage(RULES).ground_words(["stovve"]) is None                   # the rules alone: unknown
+    assert Vocabulary.of(["parcel", "DiningTable"], usage=usage_).ground_words(["parcel"]) == "parcel"

@@ -13,6 +13,7 @@ from __future__ import annotations
 from seal_cli.language.rule import Rule
 from seal_cli.language.rules import (
     clauses,
+    fronted,
     function_words,
     lead_ins,
     numbers,
@@ -31,6 +32,7 @@ ANYWHERE: tuple[Rule, ...] = (verbs.SPLIT_PARTICLE, politeness.FORMULA)
 CLAUSE_START: tuple[Rule, ...] = (
     requests.PATH_ALONE_RULE,
     politeness.WHILE_HOLDING,
+    fronted.FRONTED_WITH,
     politeness.ADVERB_COMMA,
     politeness.POLITENESS,
     politeness.EMPHATIC_DO,
