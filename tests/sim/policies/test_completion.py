@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from seal_cli.sim.policies.completion import Target, choose, greedy_tour, quantiles
@@ -40,15 +42,21 @@ def test_a_drive_sees_on_the_way_and_a_thing_seen_there_ends_the_search() -> Non
     assert abs(cost[3] - (5.0 + 7.0)) < 1e-9              # never seen: driven to after the tour
 
 
-def test_two_things_go_first_where_both_may_be_and_one_alone_does_not() -> None:
-    # family room at x=-3 (cups), kitchen at 0 (spoons), bedroom at 10 (both); the robot at 5, halfway
+def _spoons_and_cups() -> tuple[Any, dict[int, int], list[int], dict[str, np.ndarray], Any]:
+    """Family room at x=-3 (cups), kitchen at 0 (spoons), bedroom at 10 (both), on a corridor."""
     lattice = _corridor(range(-3, 11))
     node = {x: x + 3 for x in range(-3, 11)}
     nodes = [node[-3], node[0], node[10]]
     spoon, cup = np.zeros(lattice.size), np.zeros(lattice.size)
     spoon[[node[0], node[10]]] = 0.5
     cup[[node[-3], node[10]]] = 0.5
-    tables = _tables(lattice, nodes)
+    return lattice, node, nodes, {"spoon": spoon, "cup": cup}, _tables(lattice, nodes)
+
+
+def test_two_things_go_first_where_both_may_be_and_one_alone_does_not() -> None:
+    # family room at x=-3 (cups), kitchen at 0 (spoons), bedroom at 10 (both); the robot at 5, halfway
+    lattice, node, nodes, beliefs, tables = _spoons_and_cups()
+    spoon, cup = beliefs["spoon"], beliefs["cup"]
     both = choose(tables, nodes, lattice.distance, {"spoon": spoon, "cup": cup}, [Target("spoon"), Target("cup")],
                   start=node[5], allowed=[0, 1, 2])
     # bedroom first: 5 m; the spoon there (1/2): the cup there too (1/2) or 13 m on; the spoon in the kitchen
@@ -63,13 +71,8 @@ def test_two_things_go_first_where_both_may_be_and_one_alone_does_not() -> None:
 
 def test_a_preferred_view_is_taken_only_within_the_tie_of_the_best() -> None:
     # bedroom first 16.5 m, kitchen first 18.0 m (above): the kitchen is preferred only when 1.5 m is a tie
-    lattice = _corridor(range(-3, 11))
-    node = {x: x + 3 for x in range(-3, 11)}
-    nodes = [node[-3], node[0], node[10]]
-    spoon, cup = np.zeros(lattice.size), np.zeros(lattice.size)
-    spoon[[node[0], node[10]]] = 0.5
-    cup[[node[-3], node[10]]] = 0.5
-    tables = _tables(lattice, nodes)
+    lattice, node, nodes, beliefs, tables = _spoons_and_cups()
+    spoon, cup = beliefs["spoon"], beliefs["cup"]
     beliefs, plan = {"spoon": spoon, "cup": cup}, [Target("spoon"), Target("cup")]
     for tie, view, metres in ((0.0, 2, 16.5), (1.4, 2, 16.5), (1.6, 1, 18.0)):
         got = choose(tables, nodes, lattice.distance, beliefs, plan, start=node[5], allowed=[0, 1, 2], prefer=1,
