@@ -411,17 +411,25 @@ def _rooms(n: int) -> bytes:
     return ("\n".join(rows) + "\n").encode()
 
 
+Setting = tuple[tuple[str, bytes], tuple[str, bytes], str, tuple[tuple[str, bytes], ...], tuple[str, ...],
+                tuple[str, ...], bytes]
+
+
+def hostile_setting() -> Setting:
+    """What the hand-written hostile cases start from: the apartment's map and image (as files, and
+    the map's text), both files, their names (kept unchanged by every case), a one-step localize
+    command on them, and the frame DSL's bytes."""
+    m, image = _apartment()
+    loc = ("localize", "--map", "m.yaml", "--steps", "1", "--particles", "20")
+    return m, image, m[1].decode(), (m, image), ("m.yaml", "apartment.pgm"), loc, FRAME.encode()
+
+
 def hostile_cases() -> Iterator[Case]:
     """Hostile inputs written one by one, of kinds the mutations do not make: other encodings,
     numbers that are huge, negative, NaN or infinite wherever a number goes, links, spaces and
     newlines in paths, empty files, folders for files, concurrent writers of one output,
     signals during each writing command, and every subcommand's options at their edges."""
-    m, image = _apartment()
-    text = m[1].decode()
-    both = (m, image)
-    inputs = ("m.yaml", "apartment.pgm")
-    loc = ("localize", "--map", "m.yaml", "--steps", "1", "--particles", "20")
-    frame = FRAME.encode()
+    m, image, text, both, inputs, loc, frame = hostile_setting()
     # -- encodings: frames, maps, observations, commands -------------------------------------------
     latin = FRAME.replace("Whisk what", "Wh\xe9sk").encode("latin-1")
     encodings = {"utf-16": FRAME.encode("utf-16"), "utf-16-le": FRAME.encode("utf-16-le"),

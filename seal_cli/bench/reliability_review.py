@@ -30,9 +30,9 @@ from seal_cli.bench.reliability import (
     FRAME_YAML,
     OBSERVATIONS,
     Case,
-    _apartment,
     generated_cases,
     hostile_cases,
+    hostile_setting,
     issue_cases,
 )
 
@@ -152,12 +152,7 @@ def _bag_cases(both: tuple[tuple[str, bytes], ...]) -> Iterator[Case]:
 
 def review_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read top to bottom
     """The reviewer's cases, kind by kind (see the module's description)."""
-    m, image = _apartment()
-    text = m[1].decode()
-    both = (m, image)
-    inputs = ("m.yaml", "apartment.pgm")
-    loc = ("localize", "--map", "m.yaml", "--steps", "1", "--particles", "20")
-    frame = FRAME.encode()
+    m, image, text, both, inputs, loc, frame = hostile_setting()
     argv: tuple[str, ...]
     data: bytes | str
     files: tuple[tuple[str, bytes | str], ...]
