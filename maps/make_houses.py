@@ -1,7 +1,7 @@
 """Draw the occupancy images of the example houses ``townhouse.yaml``, ``office_floor.yaml`` and
-``cafe.yaml`` (run once; the PGMs are committed next to this script).
+``cafe.yaml`` and ``clinic.yaml`` (run once; the PGMs are committed next to this script).
 
-    python maps/make_houses.py          # rewrites maps/townhouse.pgm, maps/office_floor.pgm, maps/cafe.pgm
+    python maps/make_houses.py          # rewrites maps/townhouse.pgm, maps/office_floor.pgm, maps/cafe.pgm, maps/clinic.pgm
 
 Each house is a plan on paper, as a user would draw their own: the outer walls, the inner walls
 (centre lines, each with its doors as gaps), and the solid blocks a laser sees (a car, a server
@@ -87,7 +87,24 @@ CAFE = House(
     ),
 )
 
-HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE)
+CLINIC = House(
+    "clinic", (0.0, 0.0, 16.0, 10.0),
+    walls=(
+        ((0.0, 5.0, 16.0, 5.0), ((5.0, 6.0), (8.0, 9.5), (13.0, 14.0))),  # waiting room, reception, staff room | corridor
+        ((7.0, 0.0, 7.0, 5.0), ((1.0, 4.0),)),                 # waiting room | reception: a wide opening
+        ((11.0, 0.0, 11.0, 5.0), ()),                          # reception | staff room
+        ((0.0, 6.5, 16.0, 6.5), ((1.0, 2.0), (4.5, 5.5), (9.0, 10.0), (13.5, 14.5))),  # corridor | the back rooms
+        ((3.0, 6.5, 3.0, 10.0), ()),                           # restroom | exam room
+        ((7.5, 6.5, 7.5, 10.0), ()),                           # exam room | treatment room
+        ((12.0, 6.5, 12.0, 10.0), ()),                         # treatment room | supply room
+    ),
+    blocks=(
+        (12.1, 9.55, 15.0, 9.925),  # the supply room's shelving rack along its north wall
+        (0.1, 0.1, 0.5, 0.5),       # a pot plant in the waiting room's corner
+    ),
+)
+
+HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC)
 
 
 def draw(house: House) -> np.ndarray:
