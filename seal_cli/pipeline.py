@@ -33,6 +33,8 @@ from seal_cli.planning.problem import Things, build_problem, problem_of_text
 from seal_cli.planning.state import State
 
 if TYPE_CHECKING:
+    from datetime import datetime
+
     import numpy as np
 
     from seal_cli.maps.model import Map
@@ -122,8 +124,8 @@ def inferred_steps(parse: Any) -> list[str]:
 
 def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.random.Generator,
                holding: str | None = None, done: Sequence[str] = (), vocabulary: Any = None,
-               budget: Budget | None = None, observers: Sequence[Callable[[Record], None]] = ()
-               ) -> tuple[Agent, Result]:
+               budget: Budget | None = None, observers: Sequence[Callable[[Record], None]] = (),
+               clock: datetime | None = None) -> tuple[Agent, Result]:
     """Carry out a command on a map whose ground-truth objects are the world (``seal run``).
 
     The command and the ``done`` commands (already carried out) are parsed with the map's
@@ -132,7 +134,8 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
     without the map's objects, which the robot must find; ``holding`` overrides what the map's
     robot holds. A room or a fixed thing the map lacks raises SealError before anything moves; a
     kind of thing the map knows nothing of is warned about and searched for in the whole house.
-    A question (:mod:`seal_cli.planning.questions`) is answered from what the robot sees.
+    A question (:mod:`seal_cli.planning.questions`) is answered from what the robot sees; ``clock`` is
+    what the robot's clock reads at the start (None: the computer's), for "tell Anna the time".
     """
     from seal_cli.maps.model import Robot
     from seal_cli.planning.grounding import MapNames, spoken
@@ -149,7 +152,8 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
                             vocabulary=vocabulary)
     questions = read_questions(parses[-1], problem.commanded, MapNames(m, library.taxonomy))
     agent = Agent(scene_from_map(m, library), library, policy, rng=rng, budget=budget, observers=observers,
-                  classes=problem.state.classes, sweeper=lambda: make_policy("coverage"), questions=questions)
+                  classes=problem.state.classes, sweeper=lambda: make_policy("coverage"), questions=questions,
+                  clock=clock)
     executed = [b for p in parses[:-1] for b in build_problem(p, library, map=m.known()).commanded]
     warnings = [*problem.warnings, *unchecked_conditions(parses[-1])]
     for warning in warnings:

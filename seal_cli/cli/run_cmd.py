@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+from datetime import datetime
 from pathlib import Path
 from typing import Any
 
@@ -41,6 +42,21 @@ def _narrate(record: Any) -> None:
     out.print(f"{where}  [{style}]{text}[/{style}]" if style else f"{where}  {text}")
 
 
+def read_clock(text: str | None) -> datetime | None:
+    """``--clock``: a time of today (HH:MM) or a date and time (YYYY-MM-DDTHH:MM); a bad one is refused."""
+    from seal_cli.errors import SealError
+
+    if text is None:
+        return None
+    try:
+        if "T" in text or "-" in text:
+            return datetime.fromisoformat(text)
+        hours, minutes = (int(part) for part in text.split(":"))
+        return datetime.now().replace(hour=hours, minute=minutes, second=0, microsecond=0)
+    except ValueError:
+        raise SealError(f"--clock: {text!r} is no time; give HH:MM (14:05) or YYYY-MM-DDTHH:MM") from None
+
+
 @command("run")
 def run(
     text: str = typer.Argument(..., help="The command, e.g. \"stir the cup\"."),
@@ -65,6 +81,9 @@ def run(
     vocabulary_file: Path | None = typer.Option(None, "--vocabulary", help="Also call the map's classes by the "
                                                 "names this vocabulary file gives them (the map's classes only).",
                                                 show_default=False),
+    clock: str | None = typer.Option(None, "--clock", help="What the robot's clock reads at the start (HH:MM, or "
+                                     "YYYY-MM-DDTHH:MM); it tells the time from it. Default: the computer's clock.",
+                                     show_default=False),
     framelib: list[Path] | None = FramelibOption,
     as_json: bool = JsonOption,
 ) -> None:
@@ -78,6 +97,7 @@ def run(
     from seal_cli.sim.agent import Budget
     from seal_cli.sim.policies import make_policy
 
+    start_clock = read_clock(clock)
     library = load_library(framelib_paths(framelib))
     the_map = load_map(map_path(map_name))
     for warning in the_map.warnings:  # odd but usable (a place in no room): said, not refused
@@ -117,7 +137,7 @@ def run(
         agent, result = run_on_map(the_map, text, library, searcher, rng=np.random.default_rng(seed),
                                    holding=holding, done=done or (), vocabulary=vocabulary,
                                    budget=Budget(steps=max_steps, metres=max_metres),
-                                   observers=[] if as_json else [_narrate])
+                                   observers=[] if as_json else [_narrate], clock=start_clock)
         if rrd is not None:
             from seal_cli.sim.record import write_rrd
 

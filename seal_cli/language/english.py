@@ -266,8 +266,8 @@ of saying, is the frame (Find of a place, LookAt of a state)."""
 STATE_PARTICLES = frozenset(["on", "off", "open", "shut"])
 """Words that end a question of state though lemminflect lists them as no adjective ("is the TV *on*?")."""
 STATE_ADVERBS = frozenset(["still", "already", "yet", "now", "really", "currently", "properly", "all", "fully",
-                           "completely"])
-"""Adverbs said before the state asked ("is the light *still* on?"), part of it."""
+                           "completely", "not"])
+"""Adverbs said before the state asked ("is the light *still* on?", "is the fridge *not* open?"), part of it."""
 SWITCHED_MEANS = {"on": "turn on", "off": "turn off"}
 """"*Lights off* in the hall", "the TV on, please": a thing and "on"/"off", no verb, is switching it so
 ("turn the lights off"): the particle's unit, when the library has it."""

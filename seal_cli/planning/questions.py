@@ -15,7 +15,10 @@ Tell with the question as its message — but the *kind* of answer a person expe
 - ``state``: a yes/no question about a thing's state ("is the fridge open?", "check if the stove is
   on"), which the parser gives as LookAt with the state asked (``Evoked.asked``); ``relation`` is the
   state word. The thing is looked at where it is (:func:`looking`: not taken into the hand), and the
-  answer is yes or no with what the robot saw (:data:`STATE_WORDS`).
+  answer is yes or no with what the robot saw (:data:`STATE_WORDS`);
+- ``fact``: a Tell whose message asks for something the robot knows without looking — the time, the
+  date, the day ("tell Anna the time", "what time is it?"); ``relation`` is the fact (:data:`FACTS`).
+  The robot says it (its clock: ``seal run --clock``), never the message's name.
 
 A question is read from words only (the frame's span in the text, the message's words) and
 grounded with :class:`~seal_cli.planning.grounding.MapNames`: never from the map's objects.
@@ -31,9 +34,17 @@ from seal_cli.language.english import CHECK_WHETHER
 from seal_cli.language.values import Evoked, Parse
 from seal_cli.planning.grounding import MapNames, words_of
 
-__all__ = ["KINDS", "STATE_WORDS", "Question", "asks_whether", "looking", "read_questions"]
+__all__ = ["FACTS", "KINDS", "STATE_WORDS", "Question", "asks_whether", "fact_asked", "looking", "read_questions"]
 
-KINDS = ("where", "whether", "how_many", "what", "state")
+KINDS = ("where", "whether", "how_many", "what", "state", "fact")
+
+FACTS = frozenset({"time", "date", "day"})
+"""What a robot tells from its clock, not from looking: "the *time*", "what *day* it is"."""
+
+FACT_FILLER = frozenset({"what", "the", "a", "is", "it", "its", "it's", "s", "'s", "current", "right", "now",
+                         "today", "todays", "today's", "of", "week", "exact"})
+"""Words around a fact asked for that ask nothing more ("what time is it right now", "today's date",
+"the day of the week"). English, not any corpus's."""
 
 STATE_WORDS = {"open": ("open", True), "opened": ("open", True), "closed": ("open", False),
                "shut": ("open", False), "on": ("on", True), "running": ("on", True), "off": ("on", False),
@@ -90,6 +101,12 @@ def asks_whether(text: str, evoked: Evoked) -> bool:
         first[k] in ifs and " ".join(first[:k]) in checks for k in range(1, len(first))))
 
 
+def fact_asked(message: str) -> str | None:
+    """The fact a message asks for (:data:`FACTS`: "the time", "what time it is", "today's date"), else None."""
+    words = [w for w in message.lower().replace("_", " ").replace("?", " ").split() if w not in FACT_FILLER]
+    return words[0] if len(words) == 1 and words[0] in FACTS else None
+
+
 def _what(message: str, names: MapNames | None) -> Question | None:
     """The ``what`` question a message asks, if it asks what or who is on, in or at a map place or room."""
     words = message.lower().replace("'", "").replace("’", "").split()
@@ -140,7 +157,8 @@ def read_questions(parse: Parse, commanded: Sequence[Binding], names: MapNames |
         elif evoked.frame == "Count":
             question = Question("how_many")
         elif evoked.frame == "Tell" and (message := evoked.elements.get("message")) is not None:
-            question = _what(message.text or message.head, names)
+            fact = fact_asked(message.text or message.head)
+            question = Question("fact", relation=fact) if fact else _what(message.text or message.head, names)
         if question is not None:
             questions.update((b, question) for b in commanded[start:k])
     return questions

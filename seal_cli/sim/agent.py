@@ -31,6 +31,7 @@ import itertools
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
+from datetime import datetime, timedelta
 from typing import Any
 
 import numpy as np
@@ -136,7 +137,7 @@ class Agent:
                  budget: Budget | None = None, planner: Callable[..., list[Binding]] | None = None,
                  observers: Sequence[Callable[[Record], None]] = (), look_every: float = 1.0,
                  classes: Mapping[str, str] | None = None, sweeper: Callable[[], Any] | None = None,
-                 questions: Mapping[Binding, Question] | None = None) -> None:
+                 questions: Mapping[Binding, Question] | None = None, clock: datetime | None = None) -> None:
         self.scene = scene
         self.world = scene.world
         self.grid = scene.grid
@@ -183,6 +184,9 @@ class Agent:
         self.questions: dict[Binding, Question] = dict(questions or {})
         """What each commanded frame asks (:mod:`seal_cli.planning.questions`); a Find, Count or Tell
         that asks nothing is a plain command."""
+        self.clock = clock
+        """The time the run starts at (what "tell Anna the time" tells, plus the driving since, at
+        :data:`ROBOT_SPEED`); None: the computer's clock when the robot tells it."""
         self._learn_places(policy.oracle)
 
     # -- knowledge ---------------------------------------------------------------------------
@@ -954,6 +958,8 @@ class Agent:
             question = self.questions.get(binding)
             if action.name == "say" and question is not None and question.kind == "what":
                 return self.answer_what(question, binding)
+            if action.name == "say" and question is not None and question.kind == "fact":
+                return self.tell_fact(question.relation, binding)
             if action.name == "count":
                 counted = self.how_many(action.args[0], binding)
                 self.answer(counted)
@@ -994,6 +1000,23 @@ class Agent:
         elif outcome.reason in (Reason.OUT_OF_REACH, Reason.BEHIND_WALL):
             self.look()
         return outcome
+
+    def now(self) -> datetime:
+        """The robot's clock: the run's start and the time its driving has taken, or the computer's."""
+        if self.clock is None:
+            return datetime.now()
+        return self.clock + timedelta(seconds=self.world.robot.path_m / ROBOT_SPEED)
+
+    def tell_fact(self, fact: str, binding: Binding) -> Outcome:
+        """Say what the robot knows without looking ("the time is 14:05", "the date is 2 December 2026");
+        to the speaker (no recipient, or "me") it is also the answer."""
+        now = self.now()
+        said = {"time": f"the time is {now:%H:%M}", "date": f"the date is {now.day} {now:%B %Y}",
+                "day": f"today is {now:%A}"}[fact]
+        recipient = binding.elements.get("recipient")
+        if recipient is None or recipient == SPEAKER:
+            self.answer(said)
+        return self._act_words("say", [binding.elements.get("message", fact)], f'said "{said}"')
 
     def state_answer(self, item_id: str, word: str) -> str:
         """Whether a thing the robot is looking at is in the state a question asks ("is the fridge
@@ -1261,6 +1284,9 @@ WORDS = frozenset({"search", "count", "say", "answer"})
 
 GO_FIRST = {"approach": 0, "follow": 0}
 """Primitives the robot drives for first: up to the person (approach, follow)."""
+
+ROBOT_SPEED = 0.5
+"""Metres a second the robot's clock counts for its driving (a household robot's cruising speed)."""
 
 TOUR_EXACT = 7
 """Up to this many rooms, the whole-house search tries every order of them (7! = 5,040)."""

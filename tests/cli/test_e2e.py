@@ -123,7 +123,8 @@ def test_the_shipped_suite_is_large_and_its_plans_are_right(library: object) -> 
     from seal_cli.maps.formats.map_server import load_map
 
     cases = [c for c in load_cases() if c.map == "apartment"]
-    assert len(load_cases()) >= 100 and {c.map for c in load_cases()} == {*MAPS, "townhouse", "office_floor", "cafe"}
+    houses = {*MAPS, "townhouse", "office_floor", "cafe", "clinic"}
+    assert len(load_cases()) >= 100 and {c.map for c in load_cases()} == houses
     the_map = load_map(Path(__file__).resolve().parents[2] / "maps" / "apartment.yaml")
     wrong = [(c.text, got) for c in cases for right, got in [plan_steps(c, the_map, library)] if not right]
     assert wrong == []
@@ -144,7 +145,7 @@ def test_the_example_houses_plans_are_right(library: object) -> None:
     from seal_cli.bench.e2e import load_cases, plan_steps
     from seal_cli.maps.formats.map_server import load_map
 
-    cases = [c for c in load_cases() if c.map in ("townhouse", "office_floor", "cafe")]
+    cases = [c for c in load_cases() if c.map in ("townhouse", "office_floor", "cafe", "clinic")]
     assert len(cases) >= 120 and all(c.file is not None and Path(c.file).is_file() for c in cases)
     maps = {c.map: load_map(c.file) for c in cases if c.file is not None}
     wrong = [(c.text, got) for c in cases for right, got in [plan_steps(c, maps[c.map], library)] if not right]
@@ -293,3 +294,24 @@ def test_anyone_in_a_room_is_whoever_the_robot_sees_there() -> None:
     assert no["completed"] and no["answer"] == "nobody in the dining room (it looked all over it)"
     found = run_json("find somebody in the bedroom")
     assert found["completed"] and found["answer"] == "ben is in the bedroom at (-7.00, 3.00)"
+
+
+def test_telling_the_time_says_the_robots_clock_not_the_word() -> None:
+    report = run_json("tell anna the time", "--clock", "14:05")
+    said = [r["text"] for r in report["records"] if r["text"].startswith("said ")]
+    assert report["completed"] and said == ['said "the time is 14:05"']   # 11.8 m at 0.5 m/s: still 14:05
+    asked = run_json("what time is it?", "--clock", "2026-12-02T09:30")
+    assert asked["answer"] == "the time is 09:30"
+    dated = run_json("tell me the date", "--clock", "2026-12-02T09:30")
+    assert dated["answer"] == "the date is 2 December 2026"
+
+
+def test_a_bad_clock_is_refused_naming_the_option() -> None:
+    result = runner.invoke(app, ["run", "--map", "apartment", "tell me the time", "--clock", "25:00"])
+    assert result.exit_code == 1 and "--clock" in result.stderr and "Traceback" not in result.stderr
+
+
+def test_a_negated_state_question_keeps_its_not() -> None:
+    assert run_json("is the fridge open?")["answer"] == "no: fridge_1 is closed"
+    assert run_json("is the fridge not open?")["answer"] == "yes: fridge_1 is closed"
+    assert run_json("isn't the microwave open?")["answer"] == "yes: microwave_1 is closed"

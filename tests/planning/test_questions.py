@@ -10,7 +10,7 @@ from seal_cli.language.parser import parse_command
 from seal_cli.maps.formats.map_server import load_map
 from seal_cli.planning.grounding import MapNames
 from seal_cli.planning.problem import build_problem
-from seal_cli.planning.questions import Question, read_questions
+from seal_cli.planning.questions import Question, fact_asked, read_questions
 
 
 def asked(text: str, library: Library) -> list[tuple[str, Question]]:
@@ -39,9 +39,18 @@ def test_each_question_is_read_from_its_words(text: str, frame: str, question: Q
 
 def test_a_message_that_asks_nothing_of_the_map_is_no_question(library: Library) -> None:
     assert asked("tell me a joke", library) == []
-    assert asked("what is the time?", library) == []               # no place or room asked about
     assert asked("what is on the moon?", library) == []            # a place the map lacks: nothing to look at
     assert asked("go to the kitchen", library) == []
+
+
+def test_the_time_or_the_date_asked_for_is_a_fact_the_robot_tells(library: Library) -> None:
+    time = Question("fact", relation="time")
+    assert asked("what is the time?", library) == [("Tell(message=what_is_the_time)", time)]
+    assert asked("tell Anna the time", library) == [("Tell(message=time, recipient=anna)", time)]
+    assert [q for _, q in asked("tell Ben what day it is", library)] == [Question("fact", relation="day")]
+    assert [q for _, q in asked("tell me the date", library)] == [Question("fact", relation="date")]
+    assert fact_asked("the time of the meeting") is None             # more than the time: no fact of the clock
+    assert fact_asked("time") == "time" and fact_asked("what time is it right now") == "time"
 
 
 def test_a_question_kind_is_checked() -> None:

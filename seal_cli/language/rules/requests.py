@@ -118,7 +118,7 @@ def _where_did(s: State, i: int) -> Match | None:
                  expect=False, verb=WHERE_MEANS, using=False)
 
 
-_WHETHER_IS = frozenset(["is", "are"])
+_WHETHER_IS = frozenset(["is", "are", "isn't", "aren't"])
 _WHETHER_WHERE = frozenset(["in", "on", "at", "inside", "near", "by", "under", "beside", "behind"])
 
 
@@ -247,6 +247,8 @@ def _state_asked(s: State, i: int) -> Match | None:
     if k >= end or _state_from(s, k, end) is None:
         return None
     text = s.text_of(words[k].start, words[end - 1].end)
+    if verb.lower.split()[0].endswith("n't") or words[i].lower.endswith("n't"):
+        text = f"not {text}"                      # "isn't the fridge open?": whether it is not
     return Match(end - i, (Word(text, words[k].start, words[end - 1].end, Tag.COND, ASKED),))
 
 
@@ -597,6 +599,8 @@ ASKED_WHETHER = Rule("asked whether", _asked_whether, (
 STATE_ASKED = Rule("the state asked", _state_asked, (
     Example("do you know if the kettle is on", "on", Tag.COND),
     Example("are the windows in the bedroom shut", "shut", Tag.COND),
+    Example("is the fridge not open?", "not open", Tag.COND),
+    Example("isn't the oven on?", "not on", Tag.COND),
 ), None, "the state of 'is X open?', 'check if X is closed': kept beside the frame, the 'is' dropped")
 FOUND_OUT_RULE = Rule("find out who", _found_out, (
     Example("Find out who is in the hall.", "who is in the hall", Tag.SAID),
