@@ -40,7 +40,8 @@ from seal_cli.language.english import SOME_PERSON
 from seal_cli.language.lexicon import noun_lemma
 from seal_cli.maps.model import SPEAKER, Map
 
-__all__ = ["FIXED", "HERE", "ROOM_WORDS", "SPEAKER_WORDS", "MapNames", "Referent", "Refusal", "kind_of", "spoken"]
+__all__ = ["FIXED", "HERE", "PAIRED", "ROOM_WORDS", "SPEAKER_WORDS", "MapNames", "Referent", "Refusal", "kind_of",
+           "spoken"]
 
 OBJECT = "object"
 """The library category of what the robot handles (the theme of Pick, Bring, Place)."""
@@ -56,6 +57,12 @@ ROOM_WORDS = frozenset({"kitchen", "bathroom", "bedroom", "living_room", "dining
 """English names of the rooms of a house (general knowledge, not any corpus): a phrase ending in
 one, or in "room", names a room. Kept here, not in the library's types, because a class a category
 lists is known *not* to be in the others ("open the garage" must stay possible)."""
+
+PAIRED = frozenset({"glove", "mitten", "sock", "shoe", "boot", "slipper", "sandal", "sneaker", "trainer", "earring",
+                    "chopstick", "skate", "ski", "earbud", "earphone", "headphone", "glass", "spectacle", "goggle",
+                    "scissor", "scissors", "pliers", "tong", "tongs", "trouser", "pant", "jean", "short"})
+"""English nouns of things that come in pairs (general knowledge, not any corpus): "the gloves", "a pair of
+gloves", "my glasses" is one pair, one thing on a map; "two gloves" says a number of its own."""
 
 SPEAKER_WORDS = frozenset({"me", "i", "us", "myself", "ourselves", "we"})
 """Who the speaker is called in a command."""

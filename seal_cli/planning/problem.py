@@ -46,7 +46,7 @@ from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding, Fact, Frame
 from seal_cli.frames.taxonomy import Taxonomy, check_class_name, class_key, class_words
 from seal_cli.maps.model import SPEAKER
-from seal_cli.planning.grounding import FIXED, is_room_word, kind_of, words_of
+from seal_cli.planning.grounding import FIXED, PAIRED, is_room_word, kind_of, words_of
 from seal_cli.planning.state import State, robot_facts
 
 OPENABLE = "openable"
@@ -108,6 +108,10 @@ class Things:
         """More names of classes (a vocabulary file's), by class key."""
         if map is not None:
             self._read_map(map)
+
+    def is_place(self, name: str) -> bool:
+        """Whether a value is one of the map's places (not a room, not a thing)."""
+        return self.map is not None and any(class_key(p.name) == name for p in self.map.places)
 
     def _read_map(self, map: Map) -> None:
         for room in map.rooms:
@@ -284,7 +288,8 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
 
 def _count(phrase: Phrase, value: str) -> int:
     """How many things a phrase asks for: the number said ("two apples"); at least two for a plural
-    that names the class by its head ("the books", "both books"; not "the keys" of a key chain);
+    that names the class by its head ("the books", "both books"; not "the keys" of a key chain; not
+    "the gloves" or "a pair of gloves", one pair: :data:`~seal_cli.planning.grounding.PAIRED`);
     one whole for pieces cut from it ("two slices of apple": one apple, sliced; but "two sets of
     keys" are two key chains)."""
     from seal_cli.language.grounding import PIECES
@@ -292,6 +297,9 @@ def _count(phrase: Phrase, value: str) -> int:
     named = class_words(value)[-1:] == (phrase.head,)
     if phrase.head in PIECES and not named:
         return 1
+    a_pair = phrase.quantity == 2 and "pair" in words_of(phrase.text or "")
+    if phrase.head in PAIRED and (phrase.quantity is None or a_pair):
+        return 1                      # "the gloves", "a pair of gloves": one pair
     if phrase.quantity is not None:
         return max(1, phrase.quantity)
     return 2 if phrase.plural and named else 1
@@ -307,6 +315,9 @@ def _check_types(frame: Frame, values: Mapping[str, tuple[str, ...]], phrases: M
             if element.type == OPENABLE and name in things.closable:
                 continue
             cls = things.class_of(name)
+            if element.type == OPENABLE and things.is_place(name):     # the map says which of its places open
+                raise _located(f"{frame.name} needs its {role} to open and close, and {_said(phrases.get(role), name)}"
+                               " does not (the map does not mark it openable)", phrases.get(role), text)
             if element.type == OBJECT and (name in things.fixed or kind_of(things.taxonomy, cls, FIXED) is True
                                            or is_room_word(class_words(cls))):
                 phrase = phrases.get(role)

@@ -71,7 +71,7 @@ class Question:
 
     kind: str
     about: str | None = None
-    """``what``: the map id of the place or room asked about."""
+    """``what``: the map id of the place or room asked about; ``state``: where the thing is said to be."""
     relation: str = "on"
     """``what``: on, in or at (as the question says it); ``state``: the state word asked."""
     asks_for: str = "thing"
@@ -125,6 +125,18 @@ def _what(message: str, names: MapNames | None) -> Question | None:
     return None
 
 
+def _state(asked: str, names: MapNames | None) -> Question:
+    """A state question: the state asked, and where the thing is when a place follows it ("is the window open
+    *in the bedroom*?": ``about`` the bedroom, where the robot looks for it)."""
+    words = asked.split()
+    for i, word in enumerate(words):
+        if word.lower() in ("in", "on", "at", "inside") and i:
+            phrase = " ".join(words[i + 1:])
+            found = names.ground(phrase, "location", ("room", "place")) if names and words_of(phrase) else None
+            return Question("state", found.id if found is not None else None, " ".join(words[:i]))
+    return Question("state", relation=asked)
+
+
 def _looked_at(bindings: Sequence[Binding], names: MapNames | None) -> Question | None:
     """A Find with a ground and no theme ("look in the fridge", "look around the kitchen") asks what
     is there."""
@@ -149,7 +161,7 @@ def read_questions(parse: Parse, commanded: Sequence[Binding], names: MapNames |
             k += 1
         question: Question | None = None
         if (asked := getattr(evoked, "asked", None)) and "theme" in evoked.elements:   # "is the fridge open?"
-            question = Question("state", relation=asked)
+            question = _state(asked, names)
         elif evoked.frame == "Find" and "theme" not in evoked.elements:    # "look in the fridge": what is there
             question = _looked_at(commanded[start:k], names)
         elif evoked.frame == "Find":

@@ -316,9 +316,16 @@ class Agent:
     def execute(self, binding: Binding) -> Outcome:
         """Run the grounded frame's primitive actions in the world."""
         acted = False
+        question = self.questions.get(binding)
+        if question is not None and question.kind == "state" and (absent := self.state_absent(binding, question)):
+            return absent
         for action in binding.actions:
             if action.name == "navigate":
                 outcome = self.go_to(action.args[0], binding)
+                if not outcome.ok and outcome.reason is Reason.NOT_FOUND and question is not None \
+                        and question.kind == "state":         # "is the window open?" with no window: the answer
+                    self.answer(outcome.message)
+                    return Outcome(True, outcome.message)
             else:
                 outcome = Outcome(True, "ok")
                 if action.name in GO_FIRST:      # drive up to the person, to where the person is led
@@ -1017,6 +1024,23 @@ class Agent:
         if recipient is None or recipient == SPEAKER:
             self.answer(said)
         return self._act_words("say", [binding.elements.get("message", fact)], f'said "{said}"')
+
+    def state_absent(self, binding: Binding, question: Question) -> Outcome | None:
+        """A state question about a thing said to be somewhere ("is the window open in the bedroom?"): the
+        robot looks there first; a thing it does not find there is the answer ("no window in the bedroom
+        (it looked all over it)"), else None and the thing is looked at as found."""
+        theme = binding.elements.get("theme")
+        if question.about is None or theme is None or self._is_place(theme) or theme in self.world.items:
+            return None
+        where, found, complete = self.look_over(question.about)
+        found = [k for k in found if k.cls == self.class_of(theme)]
+        if found:
+            self.chosen[class_key(theme)] = self.nearest(found) or found[0].id
+            return None
+        no = f"no {self.said(theme)} {where}" + (" (it looked all over it)" if complete else
+                                                f", but it could not look all over it ({complete.message})")
+        self.answer(no)
+        return Outcome(True, no)
 
     def state_answer(self, item_id: str, word: str) -> str:
         """Whether a thing the robot is looking at is in the state a question asks ("is the fridge

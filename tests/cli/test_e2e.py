@@ -315,3 +315,22 @@ def test_a_negated_state_question_keeps_its_not() -> None:
     assert run_json("is the fridge open?")["answer"] == "no: fridge_1 is closed"
     assert run_json("is the fridge not open?")["answer"] == "yes: fridge_1 is closed"
     assert run_json("isn't the microwave open?")["answer"] == "yes: microwave_1 is closed"
+
+
+def test_a_state_question_with_a_place_looks_there_and_says_when_there_is_none() -> None:
+    report = run_json("Is the window open in the bedroom?")      # the apartment has no window
+    assert report["completed"] and report["answer"] == "no window in the bedroom (it looked all over it)"
+    assert report["path_m"] < 15.0                                 # the bedroom only, not the whole house
+    assert run_json("is the spoon clean in the kitchen?")["answer"] == "no: spoon_1 is not clean"
+
+
+def test_a_place_the_map_does_not_mark_openable_is_refused_as_opened() -> None:
+    result = runner.invoke(app, ["plan", "--map", "clinic", "open the hand dryer"])
+    assert result.exit_code == 1 and "hand_dryer_1) does not (the map does not mark it openable)" in result.stderr
+    lacking = runner.invoke(app, ["plan", "--map", "office_floor", "open the dryer"])   # an appliance: refused
+    assert lacking.exit_code == 1 and "the office_floor has no dryer" in lacking.stderr
+
+
+def test_a_pair_of_gloves_is_one_thing_to_fetch() -> None:
+    result = runner.invoke(app, ["plan", "--map", "clinic", "--json", "get me a pair of gloves"])
+    assert [s["frame"] for s in json.loads(result.stdout)["plan"]] == ["Open", "Pick", "Bring"]

@@ -71,3 +71,10 @@ def test_seeing_whether_asks_whether(library: Library) -> None:
                           ("find Anna if she is in the kitchen", False), ("find the cup", False)):
         (find,) = parse_command(text, library).frames
         assert asks_whether(text, find) is whether, text
+
+
+def test_a_state_question_keeps_where_the_thing_is(library: Library) -> None:
+    assert asked("is the window open in the bedroom?", library) == [
+        ("LookAt(theme=window)", Question("state", "bedroom", "open"))]
+    negated = Question("state", None, "not open")
+    assert asked("is the fridge not open?", library) == [("LookAt(theme=fridge_1)", negated)]

@@ -177,13 +177,27 @@ def _clause_stop(s: State, k: int) -> int:
     return next((j for j in range(k, end) if s.words[j].lower in ("and", "then")), end)
 
 
+def _state_stop(s: State, k: int) -> int:
+    """Where the state asked from ``k`` ends: the clause's end (:func:`_clause_stop`), or a place said after the
+    state ("is the window open *in the bedroom*?"), which is where the thing is, not part of the state."""
+    end = _clause_stop(s, k)
+    words = s.words
+    for p in range(k + 1, end - 1):
+        if words[p].lower in _WHETHER_WHERE and s.np_starts(p + 1) and _state_from(s, k, end) is None and \
+                any(_state_from(s, q, p) is not None for q in range(k, p)) and \
+                not any(s.verb_at(j) for j in range(p + 1, end)):
+            return p
+    return end
+
+
 def _state_question_end(s: State, i: int) -> int | None:
     """The end of the clause from ``i`` when it is a phrase and then a state: "the fridge | open", "the cup on
-    the table | clean", "the kitchen light | still on"; the index where the state begins, else None."""
+    the table | clean", "the kitchen light | still on", "the window | open | in the bedroom"; the index where
+    the state begins, else None."""
     words = s.words
     if not s.np_starts(i) or words[i].lower in ("there", "you", "i", "we"):
         return None
-    end = _clause_stop(s, i)
+    end = _state_stop(s, i)
     for q in range(end - 1, i, -1):              # the state's first word: adverbs, then the state
         if _state_from(s, q, end) is None:
             continue
@@ -243,10 +257,11 @@ def _state_asked(s: State, i: int) -> Match | None:
         return None
     words = s.words
     k = i + 1 if words[i].lower in _WHETHER_IS and verb.lower not in _WHETHER_IS else i
-    end = _clause_stop(s, k)
+    end = _state_stop(s, k)
     if k >= end or _state_from(s, k, end) is None:
         return None
-    text = s.text_of(words[k].start, words[end - 1].end)
+    end = _clause_stop(s, k)                      # a place said after the state is kept with it ("open in the
+    text = s.text_of(words[k].start, words[end - 1].end)   # bedroom"): where the thing is, for the question
     if verb.lower.split()[0].endswith("n't") or words[i].lower.endswith("n't"):
         text = f"not {text}"                      # "isn't the fridge open?": whether it is not
     return Match(end - i, (Word(text, words[k].start, words[end - 1].end, Tag.COND, ASKED),))
@@ -601,6 +616,7 @@ STATE_ASKED = Rule("the state asked", _state_asked, (
     Example("are the windows in the bedroom shut", "shut", Tag.COND),
     Example("is the fridge not open?", "not open", Tag.COND),
     Example("isn't the oven on?", "not on", Tag.COND),
+    Example("Is the window open in the bedroom?", "open in the bedroom", Tag.COND),
 ), None, "the state of 'is X open?', 'check if X is closed': kept beside the frame, the 'is' dropped")
 FOUND_OUT_RULE = Rule("find out who", _found_out, (
     Example("Find out who is in the hall.", "who is in the hall", Tag.SAID),
