@@ -227,24 +227,35 @@ def _draw_run(ax: Any, agent: Agent) -> None:
 
     trail = np.asarray(agent.world.robot.trajectory)
     ax.plot(trail[:, 0], trail[:, 1], "-", color="#1f77b4", linewidth=2, zorder=4, label="path")
-    ax.plot(*trail[0], "o", color="#1f77b4", markersize=8, zorder=5)
+    ends = {"markeredgecolor": "white", "markeredgewidth": 1.2, "zorder": LABEL_Z + 1}   # over labels and acts
+    ax.plot(*trail[0], "o", color="#1f77b4", markersize=9, label="start", **ends)
     stood: dict[tuple[float, float], list[str]] = {}      # where the robot stood for each action, numbered
     for n, (pose, text) in enumerate(_acts(agent.records), 1):
         stood.setdefault((round(pose[0], 2), round(pose[1], 2)), []).append(f"{n}. {text}")
     xmin, _, xmax, _ = agent.scene.map.bounds
-    for at, texts in stood.items():
-        ax.plot(at[0], at[1], "D", color="#2ca02c", markeredgecolor="black", markersize=7, zorder=7)
+    for k, (at, texts) in enumerate(stood.items()):
+        ax.plot(at[0], at[1], "D", color="#2ca02c", markeredgecolor="black", markersize=7, zorder=7,
+                **({"label": "where it acted (numbered)"} if k == 0 else {}))
         left = at[0] > (xmin + xmax) / 2           # labels point into the map, on a white card over it
         ax.annotate("\n".join(_short(t) for t in texts), at, xytext=(-8 if left else 8, 6),
                     textcoords="offset points", fontsize=7, color="#1a6e1a", zorder=LABEL_Z, gid=LABEL,
                     ha="right" if left else "left", va="bottom",
                     bbox={"boxstyle": "round,pad=0.25", "fc": "white", "ec": "#2ca02c", "alpha": 0.9, "lw": 0.6},
                     arrowprops={"arrowstyle": "-", "color": "#2ca02c", "lw": 0.6})
-    ax.plot(*trail[-1], "s", color="#1f77b4", markersize=7, zorder=5, label="start (circle), end (square)")
+    ax.plot(*trail[-1], "s", markersize=13, markerfacecolor="none", markeredgecolor="#1f77b4", markeredgewidth=2,
+            zorder=LABEL_Z + 1, label="end")            # hollow: the last action's diamond shows inside it
+    legend: set[str] = set()
+
+    def once(what: str) -> dict[str, str]:          # each kind of mark named once in the legend
+        first = what not in legend
+        legend.add(what)
+        return {"label": what} if first else {}
+
     for item in agent.world.items.values():
         if item.key == "person" and not item.movable:     # the people, and the speaker ("me")
-            ax.plot(*item.at, "^", markersize=7, color="#9467bd", zorder=5)
+            ax.plot(*item.at, "^", markersize=7, color="#9467bd", zorder=5, **once("people"))
             ax.annotate(item.id, item.at, xytext=(4, -8), textcoords="offset points", fontsize=6,
                         color="#9467bd", zorder=LABEL_Z, gid=LABEL, bbox=_HALO)
         elif item.movable:
-            ax.plot(*agent.world.position(item.id), "*", markersize=6, color="#d62728", zorder=3)
+            ax.plot(*agent.world.position(item.id), "*", markersize=6, color="#d62728", zorder=3,
+                    **once("things, where they truly are"))

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections import defaultdict
+from datetime import datetime
 from pathlib import Path
 from typing import Any
 
@@ -72,11 +73,12 @@ def test_the_png_labels_where_a_go_ended_as_well_as_each_action(library: Any) ->
 
     apartment = load_map("apartment")
     agent, result = pipeline.run_on_map(apartment, "go to the bedroom and tell Ben the time", library,
-                                        make_policy("oracle"), rng=np.random.default_rng(0))
+                                        make_policy("oracle"), rng=np.random.default_rng(0),
+                                        clock=datetime(2026, 12, 2, 9, 0))
     assert result.completed
     labels = [text for _, text in _acts(agent.records)]
     assert labels[0].startswith("goes to the bedroom") and not labels[0].endswith(" m)")
-    assert labels[1:] == ["is with ben", 'said "time"']
+    assert labels[1:] == ["is with ben", 'said "the time is 09:00"']
     bedroom = apartment.room("bedroom")
     assert all(bedroom.contains([pose[:2]])[0] for pose, _ in _acts(agent.records))
     asked, counted = pipeline.run_on_map(apartment, "how many cups are in the family room?", library,
@@ -85,3 +87,33 @@ def test_the_png_labels_where_a_go_ended_as_well_as_each_action(library: Any) ->
     state, _ = pipeline.run_on_map(apartment, "is the fridge open?", library, make_policy("oracle"),
                                    rng=np.random.default_rng(0))
     assert [text for _, text in _acts(state.records)] == ["looked at fridge_1", "answer: no: fridge_1 is closed"]
+
+
+def test_the_png_legend_names_every_mark_and_the_end_is_drawn_over_the_last_action(library: Any) -> None:
+    """The red stars (where things truly are), the green diamonds, the people, the start and the end are all
+    in the legend; the end's square is hollow and above the last action's diamond, so both show."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.sim.policies import make_policy
+    from seal_cli.sim.record import _draw_run
+
+    agent, result = pipeline.run_on_map(load_map("apartment"), "bring me the spoon", library, make_policy("oracle"),
+                                        rng=np.random.default_rng(0))
+    fig, ax = plt.subplots()
+    try:
+        _draw_run(ax, agent)
+        handles, labels = ax.get_legend_handles_labels()
+        assert {"path", "start", "end", "where it acted (numbered)", "things, where they truly are",
+                "people"} <= set(labels) and len(labels) == len(set(labels))
+        end = handles[labels.index("end")]
+        acted = handles[labels.index("where it acted (numbered)")]
+        assert end.get_zorder() > acted.get_zorder() and end.get_markerfacecolor() == "none"
+        assert tuple(end.get_xydata()[-1]) == tuple(agent.world.robot.trajectory[-1])
+    finally:
+        plt.close(fig)
