@@ -745,7 +745,7 @@ class Agent:
         key = self.class_of(value)
         if key == PERSON and self.room(ground) is not None:      # "is there anyone in the kitchen?"
             return self._search_people(value, binding, ground, question)
-        where, found, complete = self.look_over(ground)
+        where, found, complete = self.look_over(ground, sought=key)
         found = [k for k in found if k.cls == key]
         if found:
             target = self.nearest(found) or found[0].id
@@ -773,13 +773,19 @@ class Agent:
             return Outcome(True, no)
         return Fatal(False, no, Reason.NOT_FOUND, value)
 
-    def look_over(self, ground: str, peek: bool = True) -> tuple[str, list[Known], Outcome]:
+    def look_over(self, ground: str, peek: bool = True, sought: str | None = None) -> tuple[str, list[Known], Outcome]:
         """Look all over a room (with ``peek``, into its closed receptacles too) or at a place: how to
         say where (``in the kitchen``, ``on desk_1``), the movable things the robot knows to be there,
-        and whether it could look at all of it."""
+        and whether it could look at all of it. ``sought``: a class whose first sight in the room ends
+        the survey ("is there a spoon in the kitchen?" needs one spoon, not the rest of the room)."""
         room = self.room(ground)
         if room is not None:
-            complete = self.survey(room, peek=peek) if self.sweeper is not None else Outcome(
+            def seen() -> bool:
+                return any(k.cls == sought and k.movable and k.id in self.world.items
+                           and bool(room.contains([self.world.position(k.id)])[0]) for k in self.known.values())
+
+            until = seen if sought is not None else None
+            complete = self.survey(room, peek=peek, until=until) if self.sweeper is not None else Outcome(
                 False, "it cannot survey a room in this world")
             inside = [k for k in self.known.values() if k.movable and k.id in self.world.items
                       and not self.world.held_chain(k.id)
@@ -1134,11 +1140,12 @@ class Agent:
             return ""
         return f"; it knows of no {noun}s anywhere"
 
-    def survey(self, room: Any, views: int | None = None, peek: bool = False) -> Outcome:
+    def survey(self, room: Any, views: int | None = None, peek: bool = False,
+               until: Callable[[], bool] | None = None) -> Outcome:
         """Look all over a room: to the nearest part of it not yet seen, until all of it is (at
         most ``views`` views, default :data:`SURVEY_VIEWS`, within the budget); with ``peek``, then
         into each closed receptacle in it not yet looked into. Ok when there was nothing more to
-        see; else why it stopped."""
+        see; else why it stopped. ``until``: stop as soon as it holds (what was sought is seen)."""
         assert self.sweeper is not None
         limit = SURVEY_VIEWS if views is None else views
         sweep = self.sweeper()
@@ -1161,6 +1168,8 @@ class Agent:
 
         ended = Outcome(False, f"it saw {100 * share():.0f} % of it in {limit} views")
         for _ in range(limit):
+            if until is not None and until():
+                return Outcome(True, "saw what it looked for")
             if (stop := self.exhausted()) is not None:
                 return Outcome(False, f"{stop}; it saw {100 * share():.0f} % of it", Reason.BUDGET)
             if share() >= SURVEY_SHARE:
@@ -1187,6 +1196,8 @@ class Agent:
         shut = [k for k in self.known.values() if not k.movable and k.openable and k.id not in self.opened
                 and not self.world.items[k.id].is_open and bool(room.contains([k.at])[0])]
         while shut:
+            if until is not None and until():
+                return Outcome(True, "saw what it looked for")
             if (stop := self.exhausted()) is not None:
                 return Outcome(False, stop, Reason.BUDGET)
             field_ = self.distances()

@@ -334,3 +334,11 @@ def test_a_place_the_map_does_not_mark_openable_is_refused_as_opened() -> None:
 def test_a_pair_of_gloves_is_one_thing_to_fetch() -> None:
     result = runner.invoke(app, ["plan", "--map", "clinic", "--json", "get me a pair of gloves"])
     assert [s["frame"] for s in json.loads(result.stdout)["plan"]] == ["Open", "Pick", "Bring"]
+
+
+def test_is_there_stops_looking_once_it_sees_one() -> None:
+    report = run_json("is there a spoon in the kitchen?")     # the spoon is on the counter, in plain view
+    assert report["completed"] and report["answer"].startswith("yes: spoon_1 is on counter_1")
+    assert not any(r["text"].startswith("opened") for r in report["records"])   # no fridge, no microwave
+    assert report["path_m"] < 15.0                                              # was 19.9 m
+    assert run_json("is there a cup in the kitchen?")["answer"] == "no cup in the kitchen (it looked all over it)"
