@@ -544,19 +544,26 @@ class SeFMPolicy(Policy):
         for i, cell in enumerate(cells):
             seen = opens[i].sum()
             box = places[int(best_box[i])] if boxes[i, best_box[i]] > 0 else None
-            mass = float(seen + (boxes[i, best_box[i]] if box is not None else 0.0))
+            shut_mass = boxes[i].sum() if self.open_all else (boxes[i, best_box[i]] if box is not None else 0.0)
+            mass = float(seen + shut_mass)
             if mass <= 0:
                 continue
             shown = [places[j].id for j in np.argsort(-opens[i]) if opens[i, j] > 0][:3]
             look_at = box.at if box is not None else places[int(np.argmax(opens[i]))].at
             why = (f"opens {box.id}" + (f" and looks at {', '.join(shown)}" if shown else "") if box is not None
                    else f"looks at {', '.join(shown)}") + ", where the belief is"
-            reveals = opens[i].copy()
-            if box is not None:
+            reveals = opens[i] + boxes[i] if self.open_all else opens[i].copy()
+            if box is not None and not self.open_all:
                 reveals[int(best_box[i])] = boxes[i, best_box[i]]
             options.append(Look(mass, float(field_[cell]), View(cell, look_at, open=box.id if box else None, why=why),
                                 reveals))
         return options
+
+    open_all = True
+    """A look from a cell reveals every shut place within reach of it as well as the open ones: the robot
+    opens them one after another from where it stands (the view names the heaviest; the next choice,
+    with no drive, the next), and opening costs no metres. Off: only the heaviest shut one counts, and
+    a cell beside five drawers is worth one drawer's share (the rule of earlier rounds)."""
 
     def _lattice(self, agent: Agent, places: Sequence[Known]) -> list[Cell]:
         """The free cells within reach of the places, one per 0.25 m."""
