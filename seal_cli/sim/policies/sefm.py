@@ -426,27 +426,25 @@ class SeFMPolicy(Policy):
         here = np.array([o.metres for o in best])
         between = np.array([fields[o.view.cell][[b.view.cell[0] for b in best], [b.view.cell[1] for b in best]]
                             for o in best])
-        shown = [o.reveals for o in best]
+        width = max((len(o.reveals) for o in best if o.reveals is not None), default=0)
+        R = np.zeros((n, width + n))   # what each look reveals; a look no place's share describes, its own mass
+        for k, o in enumerate(best):
+            if o.reveals is None:
+                R[k, width + k] = o.mass
+            else:
+                R[k, : len(o.reveals)] = o.reveals
 
         on = np.array([float(then[o.view.cell]) for o in best]) if then is not None else np.zeros(n)
         on = np.where(np.isfinite(on), on, 0.0)
 
         def cost(order: Sequence[int]) -> float:
-            seen: dict[int, float] = {}
+            seen = np.zeros(R.shape[1], dtype=bool)
             left, total, prev = 1.0, 0.0, -1
             for k in order:
                 d = here[k] if prev < 0 else between[prev, k]
                 total += (d + self.distance_scale) * left
-                r = shown[k]
-                if r is None:
-                    gain = best[k].mass
-                else:
-                    gain = 0.0
-                    for j in np.flatnonzero(r):
-                        if j not in seen:
-                            seen[int(j)] = float(r[j])
-                            gain += float(r[j])
-                gain = min(gain, left)
+                gain = min(float(R[k][~seen].sum()), left)
+                seen |= R[k] > 0
                 total += self.onward * gain * on[k]
                 left = max(0.0, left - gain)
                 prev = k
@@ -454,18 +452,18 @@ class SeFMPolicy(Policy):
 
         order: list[int] = []
         todo = set(range(n))
+        revealed = np.zeros(R.shape[1], dtype=bool)
         while todo:   # greedy from where the robot is: the most new belief per metre
             prev = order[-1] if order else -1
-            revealed = {int(j) for k in order if (r := shown[k]) is not None for j in np.flatnonzero(r)}
 
-            def ratio(k: int, prev: int = prev, revealed: set[int] = revealed) -> float:
-                r = shown[k]
-                gain = best[k].mass if r is None else float(sum(r[j] for j in np.flatnonzero(r) if j not in revealed))
+            def ratio(k: int, prev: int = prev, revealed: np.ndarray = revealed) -> float:
+                gain = float(R[k][~revealed].sum())
                 return gain / ((here[k] if prev < 0 else between[prev, k]) + self.distance_scale)
 
             k = max(sorted(todo), key=ratio)
             order.append(k)
             todo.remove(k)
+            revealed = revealed | (R[k] > 0)
         current = cost(order)
         for _ in range(4 * n):   # or-opt: move one look elsewhere while that shortens the expected search
             moves = [(cost(o), o) for i in range(n) for j in range(n) if i != j
