@@ -57,13 +57,15 @@ class SeFMPolicy(Policy):
     use_frames = True
 
     def __init__(self, *, particles: int = 200, priors: bool = True, bandwidth: float = 0.5,
-                 distance_scale: float = 0.5) -> None:
+                 distance_scale: float = 0.1) -> None:
         self.particles = particles
         self.priors = priors
         self.bandwidth = bandwidth
         self.distance_scale = distance_scale
         """A view's utility is the belief mass it reveals / (metres to drive there + scale): what a look
-        costs beside its drive (0.5 m, chosen on ALFRED-2D's train split: docs/benchmarks.md)."""
+        costs beside its drive (0.1 m, chosen on ALFRED-2D's train split: docs/benchmarks.md; a look costs no
+        metres, and once a look opens every shut place within reach, 0.5 m overcharged the cells beside
+        several of them)."""
         self._clouds: list[dict[str, Any]] = []
 
     @classmethod
