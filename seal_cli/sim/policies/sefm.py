@@ -57,13 +57,15 @@ class SeFMPolicy(Policy):
     use_frames = True
 
     def __init__(self, *, particles: int = 200, priors: bool = True, bandwidth: float = 0.5,
-                 distance_scale: float = 0.5) -> None:
+                 distance_scale: float = 0.1) -> None:
         self.particles = particles
         self.priors = priors
         self.bandwidth = bandwidth
         self.distance_scale = distance_scale
         """A view's utility is the belief mass it reveals / (metres to drive there + scale): what a look
-        costs beside its drive (0.5 m, chosen on ALFRED-2D's train split: docs/benchmarks.md)."""
+        costs beside its drive (0.1 m, chosen on ALFRED-2D's train split: docs/benchmarks.md; a look costs no
+        metres, and once a look opens every shut place within reach, 0.5 m overcharged the cells beside
+        several of them)."""
         self._clouds: list[dict[str, Any]] = []
 
     @classmethod
@@ -426,27 +428,25 @@ class SeFMPolicy(Policy):
         here = np.array([o.metres for o in best])
         between = np.array([fields[o.view.cell][[b.view.cell[0] for b in best], [b.view.cell[1] for b in best]]
                             for o in best])
-        shown = [o.reveals for o in best]
+        width = max((len(o.reveals) for o in best if o.reveals is not None), default=0)
+        R = np.zeros((n, width + n))   # what each look reveals; a look no place's share describes, its own mass
+        for k, o in enumerate(best):
+            if o.reveals is None:
+                R[k, width + k] = o.mass
+            else:
+                R[k, : len(o.reveals)] = o.reveals
 
         on = np.array([float(then[o.view.cell]) for o in best]) if then is not None else np.zeros(n)
         on = np.where(np.isfinite(on), on, 0.0)
 
         def cost(order: Sequence[int]) -> float:
-            seen: dict[int, float] = {}
+            seen = np.zeros(R.shape[1], dtype=bool)
             left, total, prev = 1.0, 0.0, -1
             for k in order:
                 d = here[k] if prev < 0 else between[prev, k]
                 total += (d + self.distance_scale) * left
-                r = shown[k]
-                if r is None:
-                    gain = best[k].mass
-                else:
-                    gain = 0.0
-                    for j in np.flatnonzero(r):
-                        if j not in seen:
-                            seen[int(j)] = float(r[j])
-                            gain += float(r[j])
-                gain = min(gain, left)
+                gain = min(float(R[k][~seen].sum()), left)
+                seen |= R[k] > 0
                 total += self.onward * gain * on[k]
                 left = max(0.0, left - gain)
                 prev = k
@@ -454,18 +454,18 @@ class SeFMPolicy(Policy):
 
         order: list[int] = []
         todo = set(range(n))
+        revealed = np.zeros(R.shape[1], dtype=bool)
         while todo:   # greedy from where the robot is: the most new belief per metre
             prev = order[-1] if order else -1
-            revealed = {int(j) for k in order if (r := shown[k]) is not None for j in np.flatnonzero(r)}
 
-            def ratio(k: int, prev: int = prev, revealed: set[int] = revealed) -> float:
-                r = shown[k]
-                gain = best[k].mass if r is None else float(sum(r[j] for j in np.flatnonzero(r) if j not in revealed))
+            def ratio(k: int, prev: int = prev, revealed: np.ndarray = revealed) -> float:
+                gain = float(R[k][~revealed].sum())
                 return gain / ((here[k] if prev < 0 else between[prev, k]) + self.distance_scale)
 
             k = max(sorted(todo), key=ratio)
             order.append(k)
             todo.remove(k)
+            revealed = revealed | (R[k] > 0)
         current = cost(order)
         for _ in range(4 * n):   # or-opt: move one look elsewhere while that shortens the expected search
             moves = [(cost(o), o) for i in range(n) for j in range(n) if i != j
@@ -544,19 +544,26 @@ class SeFMPolicy(Policy):
         for i, cell in enumerate(cells):
             seen = opens[i].sum()
             box = places[int(best_box[i])] if boxes[i, best_box[i]] > 0 else None
-            mass = float(seen + (boxes[i, best_box[i]] if box is not None else 0.0))
+            shut_mass = boxes[i].sum() if self.open_all else (boxes[i, best_box[i]] if box is not None else 0.0)
+            mass = float(seen + shut_mass)
             if mass <= 0:
                 continue
             shown = [places[j].id for j in np.argsort(-opens[i]) if opens[i, j] > 0][:3]
             look_at = box.at if box is not None else places[int(np.argmax(opens[i]))].at
             why = (f"opens {box.id}" + (f" and looks at {', '.join(shown)}" if shown else "") if box is not None
                    else f"looks at {', '.join(shown)}") + ", where the belief is"
-            reveals = opens[i].copy()
-            if box is not None:
+            reveals = opens[i] + boxes[i] if self.open_all else opens[i].copy()
+            if box is not None and not self.open_all:
                 reveals[int(best_box[i])] = boxes[i, best_box[i]]
             options.append(Look(mass, float(field_[cell]), View(cell, look_at, open=box.id if box else None, why=why),
                                 reveals))
         return options
+
+    open_all = True
+    """A look from a cell reveals every shut place within reach of it as well as the open ones: the robot
+    opens them one after another from where it stands (the view names the heaviest; the next choice,
+    with no drive, the next), and opening costs no metres. Off: only the heaviest shut one counts, and
+    a cell beside five drawers is worth one drawer's share (the rule of earlier rounds)."""
 
     def _lattice(self, agent: Agent, places: Sequence[Known]) -> list[Cell]:
         """The free cells within reach of the places, one per 0.25 m."""

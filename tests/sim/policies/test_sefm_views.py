@@ -94,6 +94,27 @@ def test_a_shut_place_in_reach_is_opened_by_the_look(library: Library) -> None:
     assert "opens microwave_1" in view.why
 
 
+def test_a_look_reveals_every_shut_place_within_reach_not_only_the_heaviest(library: Library) -> None:
+    """The microwave and a cabinet stand together: a look from beside them opens both, one after the
+    other, with no drive between, so it is worth both shares; with ``open_all`` off, the heavier alone."""
+    priors = {"apple": {"microwave": 0.45, "cabinet": 0.45}}
+    masses = {}
+    for open_all in (True, False):
+        policy = SeFMPolicy(particles=300)
+        policy.open_all = open_all
+        agent = ready(library, corridor(library, priors, start=4.0), policy, [("Pick", {"theme": "apple"})])
+        X, W, _ = policy.cloud(agent, "apple")
+        here = [o for o in policy._looks(agent, "apple", X, above_floor(W), agent.distances())
+                if o.view.cell == agent.robot_cell()]
+        assert len(here) == 1 and here[0].view.open == "microwave_1"   # the heavier is opened first
+        got = shares(policy, agent)
+        masses[open_all] = (here[0].mass, got["microwave_1"], got["cabinet_1"])
+    mass, microwave, cabinet = masses[True]
+    assert cabinet > 0.05 and mass == pytest.approx(microwave + cabinet)
+    mass, microwave, cabinet = masses[False]
+    assert mass == pytest.approx(max(microwave, cabinet))
+
+
 def test_the_tour_goes_to_a_near_likely_place_before_a_better_one_that_leads_away(library: Library) -> None:
     """Greedy by belief per metre goes east to the 0.3 first and leaves the 0.15 at the robot's back,
     to be driven back to; the expected cost of the whole order says take the near one on the way."""
