@@ -208,6 +208,18 @@ def test_being_somewhere_before_a_clause_is_going_there_first(library: Library) 
         parse_command("once you're in the garage the door is shut", library)           # no clause follows
 
 
+def test_being_somewhere_then_a_clause_without_a_comma(library: Library) -> None:
+    assert texts("once youre in the living room look for Skyler", library) == [          # both kept, none lost
+        ("Go", {"goal": "the living room"}), ("Find", {"theme": "Skyler"})]
+    assert [f for f, _ in frames("when you're at the front door greet the visitor", library)] == ["Go", "Greet"]
+
+
+def test_seeing_whether_someone_is_there(library: Library) -> None:
+    assert texts("Go to the kitchen and see if anyone is there", library) == [
+        ("Go", {"goal": "the kitchen"}), ("Find", {"theme": "anyone", "ground": "there"})]
+    assert [f for f, _ in frames("check whether anyone is there", library)] == ["Find"]   # not LookAt of "whether"
+
+
 def test_a_path_after_then_repeats_the_verb_of_motion(library: Library) -> None:
     assert texts("walk to the porch and then to the shed", library) == [
         ("Go", {"goal": "the porch"}), ("Go", {"goal": "the shed"})]

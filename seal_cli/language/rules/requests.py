@@ -120,6 +120,8 @@ def _where_did(s: State, i: int) -> Match | None:
 
 _WHETHER_IS = frozenset(["is", "are"])
 _WHETHER_WHERE = frozenset(["in", "on", "at", "inside", "near", "by", "under", "beside", "behind"])
+_WHETHER_THERE = _WHETHER_WHERE | frozenset(["there", "here"])
+"""After "see if anyone is": a place said, or pointed at ("... is *there*", where the robot went)."""
 
 
 def _whether_is(s: State, i: int) -> Match | None:
@@ -263,7 +265,7 @@ def _check_whether(s: State, i: int, checks: frozenset[str] | None = None) -> Ma
     m = _phrase(s, k, there_is)
     if m and s.np_starts(k + m):
         k += m                                    # "check if there's ...": "is there ..."
-    elif not s.np_starts(k) or not any(words[j].lower in _WHETHER_IS and words[j + 1].lower in _WHETHER_WHERE
+    elif not s.np_starts(k) or not any(words[j].lower in _WHETHER_IS and words[j + 1].lower in _WHETHER_THERE
                                        for j in range(k + 1, min(len(words) - 1, s.cond_end(k)))):
         return None                               # "see if the soup is hot": no place asked of
     end = words[k - 1].end
@@ -290,7 +292,7 @@ def _found_out(s: State, i: int) -> Match | None:
 def _whether_be(s: State, i: int) -> Match | None:
     if s.verb_index < 0 or s.out[s.verb_index].info != WHERE_MEANS or \
             s.out[s.verb_index].lower.split()[-1] not in CHECK_WHETHER[1] or \
-            s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON) or s.next_lower(i) not in _WHETHER_WHERE:
+            s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON) or s.next_lower(i) not in _WHETHER_THERE:
         return None
     return Match(1)                               # "see if anyone *is* in the kitchen": dropped
 
@@ -593,6 +595,7 @@ ASKED_WHETHER = Rule("asked whether", _asked_whether, (
     Example("Tell me if the keys are on the table.", "Tell me if", Tag.VERB),
     Example("Can you see if anyone is in the kitchen?", "see if", Tag.VERB),
     Example("check whether there's a book on the shelf", "check whether there's", Tag.VERB),
+    Example("go to the kitchen and see if anyone is there", "see if", Tag.VERB),
 ), first_words(_ASKERS), "'tell me / check / do you know if X is open' (LookAt), '... if X is in Y' (Find)")
 STATE_ASKED = Rule("the state asked", _state_asked, (
     Example("do you know if the kettle is on", "on", Tag.COND),
