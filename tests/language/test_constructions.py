@@ -424,3 +424,19 @@ def test_a_question_of_state_ends_where_the_next_clause_begins(library: Library)
     parse = parse_command("is the oven on and is the freezer open?", library)
     assert [(f.frame, f.elements["theme"].text, f.asked) for f in parse.frames] == [
         ("LookAt", "the oven", "on"), ("LookAt", "the freezer", "open")]
+
+
+def test_a_wish_said_of_a_person_named_by_a_phrase(library: Library) -> None:
+    assert texts("the person at the armchair needs a towel", library) == [
+        ("Bring", {"theme": "a towel", "recipient": "the person at the armchair"})]
+    assert texts("my son wants a glass of water", library) == [
+        ("Bring", {"theme": "a glass of water", "recipient": "my son"})]
+    for said in ("the plant needs water", "the cup needs a wash", "the person at the door wants to come in"):
+        with pytest.raises(CommandError):          # no person, or no thing wished for: no request read
+            parse_command(said, library)
+
+
+def test_a_lower_case_name_right_after_a_verb_of_escorting(library: Library) -> None:
+    assert texts("take jordan to the bedroom", library) == [("Guide", {"theme": "jordan", "goal": "the bedroom"})]
+    assert [f for f, _ in frames("take cheezits to the kitchen", library)] == ["Bring"]   # a plural: a thing
+    assert [f for f, _ in frames("take milk to the kitchen", library)] == ["Bring"]       # a word of English
