@@ -236,6 +236,15 @@ class Evoker:
         return sum(1 for e in frame.elements if e.role not in roles) - int(held)
 
     # -- frames out ----------------------------------------------------------------------------
+    @staticmethod
+    def located_ground(frame: Frame, roles: dict[str, Any]) -> None:
+        """"Look for a person *standing in the corridor*", "count the kids playing in the yard": where the
+        participle says the theme is, is where to seek it (the frame's ``ground``, when nothing else is)."""
+        theme = roles.get(frame.elements[0].role) if frame.elements else None
+        if "ground" in frame.roles and roles.get("ground") is None and isinstance(theme, NP) and \
+                theme.located is not None:
+            roles["ground"] = theme.located
+
     def emit(self, frame: Frame, unit: str, clause: Clause, roles: dict[str, Any],
              attached: list[tuple[NP, PP]]) -> None:
         theme = frame.elements[0].role if frame.elements else ""
@@ -256,6 +265,7 @@ class Evoker:
                 else:
                     host.contents.append(pp.np)
         self.asker(frame, roles)
+        self.located_ground(frame, roles)
         # frames evoked by result words and contents, in the order of the words
         for role in frame.roles:
             np = roles.get(role)

@@ -50,6 +50,7 @@ class NP:
     possessor: NP | None = None                          # "*the visitor*'s question", "*Jorge*'s question"
     there: bool = False                                  # a bare "there" ending its clause: a place said before
     borrowed: bool = False                               # an earlier clause's object ("to open [it]"): said there
+    located: NP | None = None                            # "a person standing *in the corridor*": where it is
 
     @property
     def head_text(self) -> str:
@@ -326,6 +327,8 @@ class Syntax(Transformer[Token, Command]):
                     np.contents.append(item)
             elif isinstance(item, PP):
                 np.inner.append(item.np)
+                if first.tag == "VBG_P" and item.prep in LOCATIVE:
+                    np.located = item.np           # "the kids playing *in the yard*": where they are
             end = max(end, end_of(item))
         np.end = end
 

@@ -397,8 +397,8 @@ def test_please_and_a_verb_no_frame_lists_is_an_error_not_a_thing_asked_for(libr
 def test_where_people_are_doing_something_is_where_to_count_them(library: Library) -> None:
     assert texts("how many guests are waiting in the lobby?", library) == [
         ("Count", {"theme": "guests", "ground": "the lobby"})]                # the lobby was lost in the participle
-    assert texts("find a person standing in the corridor", library) == [       # right after the noun: describes it
-        ("Find", {"theme": "a person standing in the corridor"})]
+    assert texts("find a person standing in the corridor", library) == [       # right after the noun: describes it,
+        ("Find", {"theme": "a person standing in the corridor", "ground": "the corridor"})]   # and says where
 
 
 def test_a_thing_sought_is_sought_as_it_is_and_us_is_the_speaker(library: Library) -> None:
@@ -440,3 +440,10 @@ def test_a_lower_case_name_right_after_a_verb_of_escorting(library: Library) -> 
     assert texts("take jordan to the bedroom", library) == [("Guide", {"theme": "jordan", "goal": "the bedroom"})]
     assert [f for f, _ in frames("take cheezits to the kitchen", library)] == ["Bring"]   # a plural: a thing
     assert [f for f, _ in frames("take milk to the kitchen", library)] == ["Bring"]       # a word of English
+
+
+def test_where_a_participle_says_the_person_is_is_where_to_seek_them(library: Library) -> None:
+    assert texts("look for a person standing in the corridor", library) == [
+        ("Find", {"theme": "a person standing in the corridor", "ground": "the corridor"})]
+    assert texts("count the kids playing in the yard", library)[0][1]["ground"] == "the yard"
+    assert "ground" not in texts("find the person pointing to the left", library)[0][1]   # a direction, no place
