@@ -447,3 +447,13 @@ def test_where_a_participle_says_the_person_is_is_where_to_seek_them(library: Li
         ("Find", {"theme": "a person standing in the corridor", "ground": "the corridor"})]
     assert texts("count the kids playing in the yard", library)[0][1]["ground"] == "the yard"
     assert "ground" not in texts("find the person pointing to the left", library)[0][1]   # a direction, no place
+
+
+def test_where_a_relative_clause_says_the_thing_is_is_where_to_take_it_from(library: Library) -> None:
+    assert texts("Could you bring me the dice that's on the sofa?", library)[0][1]["source"] == "the sofa"
+    assert texts("find the cup that is on the table", library)[0][1]["ground"] == "the table"
+    assert texts("bring me the cup on the sofa", library) == [           # the goal is me: the sofa is where it is
+        ("Bring", {"theme": "the cup", "recipient": "me", "source": "the sofa"})]
+    assert texts("give me the object behind the mug from the desk", library) == [   # "from" says where
+        ("Bring", {"theme": "the object behind the mug", "recipient": "me", "source": "the desk"})]
+    assert "source" not in texts("carry the pot turning on a lamp", library)[0][1]     # "turn on": no place
