@@ -40,6 +40,14 @@ of a library verb it means, through WordNet's synonyms and hypernyms, when all o
    synset (in it, its hypernym or its hyponyms): "leave, go forth, go away" is no Place although Place
    lists "leave", because nothing evoking only Place is near it, but "go" is.
 
+A verb whose first sense fails rule 3 may still take a frame from it by **corroboration** (rule 5):
+the synset names two verbs of the library — a lexical unit itself, and a unit or a particle verb of
+one ("pick out" of "pick") whose *first* sense the synset is (what that verb mostly means) — and the
+frames those verbs evoke share exactly one. "choose, take, select, pick out" is "take"'s tenth
+sense but "pick out"'s first, and "take" and "pick" share only Pick: "select" and "choose" are
+Picks. "lift up, pick up, elate" is the first sense of neither, and "bring off, carry off, manage"
+names no unit itself, so neither gives a unit.
+
 The parser then chooses among the frames a unit evokes by its elements, as it does for "move"
 (Go, Place). Each unit keeps its source (``wordnet:announce.v.01 < inform.v.01 (Tell)``).
 
@@ -236,6 +244,25 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[str, str, s
                     return lemma, kept
         return None
 
+    def library_verb(lemma: str) -> str | None:
+        """The library verb a synset's lemma names: a unit itself, or a unit and a particle."""
+        words = lemma.split()
+        if lemma in units:
+            return lemma
+        if len(words) == 2 and words[0] in units and words[1] in english.PARTICLES:
+            return words[0]
+        return None
+
+    def corroborated(verb: str, offset: str) -> tuple[str, list[str], list[str]] | None:
+        """Rule 5: two library verbs of the synset, one a unit itself, one in its first sense, agree
+        on exactly one frame: (that lemma, the frames, the lemmas naming library verbs)."""
+        named = {lemma: v for lemma in wordnet.lemmas[offset] if lemma != verb and (v := library_verb(lemma))}
+        first = [lemma for lemma in named if wordnet.senses[lemma][1][:1] == [offset]]
+        if len(set(named.values())) < 2 or not any(lemma in units for lemma in named) or not first:
+            return None
+        common = set.intersection(*(set(units[v]) for v in named.values()))
+        return (first[0], sorted(common), sorted(named)) if len(common) == 1 else None
+
     found = []
     for verb, (tagged, offsets) in sorted(wordnet.senses.items()):
         if verb in units or verb in closed or not verb.isalpha() or not offsets or not in_verb_tables(verb):
@@ -245,6 +272,12 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[str, str, s
             continue                                       # mostly a noun ("cup", "table", "knife")
         for sense in wordnet.frequent(verb):
             hit = next(((synset, h) for synset in (sense, *wordnet.up[sense]) if (h := frames_at(synset))), None)
+            if hit is None and (agreed := corroborated(verb, sense)) is not None:
+                lemma, frames, named = agreed
+                for frame in frames:
+                    found.append((frame, verb, f"wordnet:{wordnet.name(verb, sense)} = "
+                                               f"{wordnet.name(lemma, sense)} ({', '.join(named)})"))
+                break
             if hit is None:
                 continue
             synset, (lemma, frames) = hit

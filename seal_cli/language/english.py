@@ -149,6 +149,9 @@ LOCATIVE = ("in", "on", "at", "near", "under", "by", "inside", "behind", "above"
             "between", "around", "across", "through", "along", "beyond", "against", "outside", "past")
 """Prepositions (canonical forms) that say where something is ("*on* the sofa"): the roles they may name are
 in ``roles.PREPOSITION_ROLES``."""
+LOCATED = ("in", "on", "at", "inside")
+"""Of those, the ones that say what place a thing is in ("standing *in* the corridor", "that's *on* the sofa"):
+where to seek it or take it from ("next to the sink" is near a place, not in it)."""
 DIRECTIONS = frozenset(["upstairs", "downstairs", "indoors", "outdoors"])
 """Place words that say where a motion goes ("carry the box *upstairs*", "go *outside*"): a goal, or where
 something is looked for ("find the cat *downstairs*"), never where it is taken from (that is "from upstairs")."""

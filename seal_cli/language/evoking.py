@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Any
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
+from seal_cli.language.english import LOCATED
 from seal_cli.language.grounding import PIECES, PORTIONS
 from seal_cli.language.lexicon import Word, noun_lemma
 from seal_cli.language.morphology import is_gradable
@@ -236,12 +237,26 @@ class Evoker:
         return sum(1 for e in frame.elements if e.role not in roles) - int(held)
 
     # -- frames out ----------------------------------------------------------------------------
+    @staticmethod
+    def located_ground(frame: Frame, roles: dict[str, Any]) -> None:
+        """"Look for a person *standing in the corridor*", "bring me the dice *that's on the sofa*": where a
+        participle or a relative clause of being says the theme is, is where to seek it or take it from
+        (the frame's ``ground`` or ``source``, when nothing else fills it)."""
+        theme = roles.get(frame.elements[0].role) if frame.elements else None
+        if not isinstance(theme, NP) or theme.located is None:
+            return
+        role = next((r for r in ("ground", "source") if r in frame.roles), None)
+        if role is not None and roles.get(role) is None:
+            roles[role] = theme.located
+
     def emit(self, frame: Frame, unit: str, clause: Clause, roles: dict[str, Any],
              attached: list[tuple[NP, PP]]) -> None:
         theme = frame.elements[0].role if frame.elements else ""
         holds_nothing = "instrument" not in frame.roles and not any(
             not p.negated and len(p.args) == 2 and p.args[0] == theme for p in frame.postconditions)
         for host, pp in attached:
+            if pp.describes and pp.prep in LOCATED and host.located is None:
+                host.located = pp.np             # "the dice *that's on the sofa*": where it is
             if pp.after_relative and host.relative is not None:
                 host.relative = self.text[host.relative_start:pp.np.end]
                 continue
@@ -256,6 +271,7 @@ class Evoker:
                 else:
                     host.contents.append(pp.np)
         self.asker(frame, roles)
+        self.located_ground(frame, roles)
         # frames evoked by result words and contents, in the order of the words
         for role in frame.roles:
             np = roles.get(role)

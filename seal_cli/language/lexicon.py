@@ -82,6 +82,10 @@ class Lexicon:
     goals: frozenset[str] = frozenset()
     recipients: frozenset[str] = frozenset()
     things: frozenset[str] = frozenset()
+    people: frozenset[str] = frozenset()
+    """The nouns the taxonomy lists as people ("guest", "son", "person"): "the guest wants tea"."""
+    escorts: frozenset[str] = frozenset()
+    """Units of frames whose first element is a person ("take", "follow", "meet"): "take *jordan* there"."""
 
     @classmethod
     def of(cls, library: Library) -> Lexicon:
@@ -97,8 +101,11 @@ class Lexicon:
                                if any(e.role == "recipient" for e in frame.elements) for unit in frame.lexical_units)
         taxonomy = library.taxonomy
         things = frozenset(word for name in (*taxonomy.known_classes, *taxonomy.names) for word in name.split("_"))
+        people = frozenset({"person", *taxonomy.members("person")}) if "person" in taxonomy else frozenset()
+        escorts = frozenset(unit.text for frame in library.frames if frame.elements and
+                            frame.elements[0].type == "person" for unit in frame.lexical_units)
         return cls({w: tuple(us) for w, us in units.items()}, _result_words(library),
-                   tuple(sorted(library.by_unit)), speech, goals, recipients, things)
+                   tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts)
 
     def verb_at(self, words: Sequence[Word], i: int, stop: int) -> tuple[str, int, int | None] | None:
         """The lexical unit that starts at word ``i``: (unit, words it covers contiguously,

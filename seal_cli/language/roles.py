@@ -123,6 +123,9 @@ class Roles:
             if role == "goal" and item.prep in LOCATIVE and isinstance(before, PP) and before.prep in FROM and \
                     roles.get("source") is before.np:
                 role = None                       # "take the umbrella from the shelf *in the hall*": where it is
+            if role == "source" and item.prep in LOCATIVE and \
+                    any(isinstance(x, PP) and x.prep in FROM for x in items[at + 1:]):
+                role = None                       # "the object *at the left of* the mug from the desk": "from" says
             if item.after_relative and "recipient" in roles and item.prep not in FROM:
                 role = None                       # "bring me the book I left on the sofa": where it was left
                 #                                   ("something to eat *from the kitchen*": where to take it from)
@@ -191,6 +194,8 @@ class Roles:
             if not ((theme_type is None or not self.types.is_person(theme_type) or frame.elements[0].role == "goal")
                     and not has_to):
                 options = tuple(r for r in options if r != "goal")   # a person is no goal; nor, beside "to", a place
+            elif roles.get("recipient") is not None and "goal" in options:
+                options = tuple(r for r in options if r != "goal")   # "bring me the cup *on the sofa*": where it is
         for role in options:
             if role in have and role not in roles:
                 if role == "instrument" and pp.prep != "with" and not self.made_for(np, frame) and \

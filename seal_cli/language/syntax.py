@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 from lark import Token, Transformer, Tree
 
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import DIRECTIONS, LOCATIVE, PERSON_PRONOUNS, SUBORDINATORS
+from seal_cli.language.english import DIRECTIONS, LOCATED, LOCATIVE, PERSON_PRONOUNS, SUBORDINATORS
 from seal_cli.language.lexicon import Word, is_plural, noun_lemma
 
 if TYPE_CHECKING:
@@ -50,6 +50,7 @@ class NP:
     possessor: NP | None = None                          # "*the visitor*'s question", "*Jorge*'s question"
     there: bool = False                                  # a bare "there" ending its clause: a place said before
     borrowed: bool = False                               # an earlier clause's object ("to open [it]"): said there
+    located: NP | None = None                            # "a person standing *in the corridor*": where it is
 
     @property
     def head_text(self) -> str:
@@ -308,8 +309,7 @@ class Syntax(Transformer[Token, Command]):
             not self.types.is_open("person") else "thing"
         return np
 
-    @staticmethod
-    def _postmod(np: NP, postmod: _Postmod) -> None:
+    def _postmod(self, np: NP, postmod: _Postmod) -> None:
         first = postmod.first
         if first.tag == "OF":
             inner = postmod.items[0]
@@ -326,6 +326,9 @@ class Syntax(Transformer[Token, Command]):
                     np.contents.append(item)
             elif isinstance(item, PP):
                 np.inner.append(item.np)
+                verb_of_its_own = self.types.evoked_by(f"{first.info} {item.prep}")   # "turning on a lamp"
+                if first.tag == "VBG_P" and item.prep in LOCATED and not verb_of_its_own:
+                    np.located = item.np           # "the kids playing *in the yard*": where they are
             end = max(end, end_of(item))
         np.end = end
 

@@ -208,6 +208,18 @@ def test_being_somewhere_before_a_clause_is_going_there_first(library: Library) 
         parse_command("once you're in the garage the door is shut", library)           # no clause follows
 
 
+def test_being_somewhere_then_a_clause_without_a_comma(library: Library) -> None:
+    assert texts("once youre in the living room look for Skyler", library) == [          # both kept, none lost
+        ("Go", {"goal": "the living room"}), ("Find", {"theme": "Skyler"})]
+    assert [f for f, _ in frames("when you're at the front door greet the visitor", library)] == ["Go", "Greet"]
+
+
+def test_seeing_whether_someone_is_there(library: Library) -> None:
+    assert texts("Go to the kitchen and see if anyone is there", library) == [
+        ("Go", {"goal": "the kitchen"}), ("Find", {"theme": "anyone", "ground": "there"})]
+    assert [f for f, _ in frames("check whether anyone is there", library)] == ["Find"]   # not LookAt of "whether"
+
+
 def test_a_path_after_then_repeats_the_verb_of_motion(library: Library) -> None:
     assert texts("walk to the porch and then to the shed", library) == [
         ("Go", {"goal": "the porch"}), ("Go", {"goal": "the shed"})]
@@ -385,8 +397,8 @@ def test_please_and_a_verb_no_frame_lists_is_an_error_not_a_thing_asked_for(libr
 def test_where_people_are_doing_something_is_where_to_count_them(library: Library) -> None:
     assert texts("how many guests are waiting in the lobby?", library) == [
         ("Count", {"theme": "guests", "ground": "the lobby"})]                # the lobby was lost in the participle
-    assert texts("find a person standing in the corridor", library) == [       # right after the noun: describes it
-        ("Find", {"theme": "a person standing in the corridor"})]
+    assert texts("find a person standing in the corridor", library) == [       # right after the noun: describes it,
+        ("Find", {"theme": "a person standing in the corridor", "ground": "the corridor"})]   # and says where
 
 
 def test_a_thing_sought_is_sought_as_it_is_and_us_is_the_speaker(library: Library) -> None:
@@ -412,3 +424,36 @@ def test_a_question_of_state_ends_where_the_next_clause_begins(library: Library)
     parse = parse_command("is the oven on and is the freezer open?", library)
     assert [(f.frame, f.elements["theme"].text, f.asked) for f in parse.frames] == [
         ("LookAt", "the oven", "on"), ("LookAt", "the freezer", "open")]
+
+
+def test_a_wish_said_of_a_person_named_by_a_phrase(library: Library) -> None:
+    assert texts("the person at the armchair needs a towel", library) == [
+        ("Bring", {"theme": "a towel", "recipient": "the person at the armchair"})]
+    assert texts("my son wants a glass of water", library) == [
+        ("Bring", {"theme": "a glass of water", "recipient": "my son"})]
+    for said in ("the plant needs water", "the cup needs a wash", "the person at the door wants to come in"):
+        with pytest.raises(CommandError):          # no person, or no thing wished for: no request read
+            parse_command(said, library)
+
+
+def test_a_lower_case_name_right_after_a_verb_of_escorting(library: Library) -> None:
+    assert texts("take jordan to the bedroom", library) == [("Guide", {"theme": "jordan", "goal": "the bedroom"})]
+    assert [f for f, _ in frames("take cheezits to the kitchen", library)] == ["Bring"]   # a plural: a thing
+    assert [f for f, _ in frames("take milk to the kitchen", library)] == ["Bring"]       # a word of English
+
+
+def test_where_a_participle_says_the_person_is_is_where_to_seek_them(library: Library) -> None:
+    assert texts("look for a person standing in the corridor", library) == [
+        ("Find", {"theme": "a person standing in the corridor", "ground": "the corridor"})]
+    assert texts("count the kids playing in the yard", library)[0][1]["ground"] == "the yard"
+    assert "ground" not in texts("find the person pointing to the left", library)[0][1]   # a direction, no place
+
+
+def test_where_a_relative_clause_says_the_thing_is_is_where_to_take_it_from(library: Library) -> None:
+    assert texts("Could you bring me the dice that's on the sofa?", library)[0][1]["source"] == "the sofa"
+    assert texts("find the cup that is on the table", library)[0][1]["ground"] == "the table"
+    assert texts("bring me the cup on the sofa", library) == [           # the goal is me: the sofa is where it is
+        ("Bring", {"theme": "the cup", "recipient": "me", "source": "the sofa"})]
+    assert texts("give me the object behind the mug from the desk", library) == [   # "from" says where
+        ("Bring", {"theme": "the object behind the mug", "recipient": "me", "source": "the desk"})]
+    assert "source" not in texts("carry the pot turning on a lamp", library)[0][1]     # "turn on": no place

@@ -229,7 +229,8 @@ def test_the_people_of_a_map_or_a_vocabulary_are_names_however_written(library: 
     assert [(f.frame, {r: e.text for r, e in f.elements.items()}) for f in parse.frames] == [
         ("Guide", {"theme": "anna", "goal": "the kitchen"})]             # the text as said
     assert parse_command("take anna", library, world).frames[0].frame == "Guide"
-    assert parse_command("take anna", library).frames[0].frame == "Pick"  # no world: a word no one names
+    assert parse_command("take anna", library).frames[0].frame == "Guide"  # no world: a word no dictionary has
+    assert parse_command("take apples", library).frames[0].frame == "Pick"  # a word of English: a thing
     path = tmp_path / "v.yaml"
     path.write_text("classes: [knife]\npeople: [Robin]\n")
     vocab = load_vocabulary(path)

@@ -10,7 +10,17 @@ the library that also leads in: "start by", "take a look").
 
 from __future__ import annotations
 
-from seal_cli.language.english import BEING_AT, BEING_MEANS, END_MARKS, PARTICLES, PREPOSITIONS, SEPARATOR_WORDS
+from seal_cli.language.english import (
+    BE_WORDS,
+    BEING_AT,
+    BEING_MEANS,
+    DETERMINERS,
+    END_MARKS,
+    PARTICLES,
+    POSSESSIVES,
+    PREPOSITIONS,
+    SEPARATOR_WORDS,
+)
 from seal_cli.language.morphology import gerund_lemma, is_adverb
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import CLOSED, LEAD_FIRST, State, first_words, match_phrase, merge
@@ -66,11 +76,30 @@ def _being_at(s: State, i: int) -> Match | None:
     if not k or BEING_MEANS not in s.lexicon.units or not s.np_starts(i + n + m + k):
         return None
     end = s.cond_end(i + n + m + k)
-    if end >= len(words) or words[end].lower not in (",", ";") or not s.verb_after(end + 1):
+    if (end >= len(words) or words[end].lower not in (",", ";") or not s.verb_after(end + 1)) and \
+            _run_on_verb(s, i + n + m + k, end) is None:
         return None                     # "once you're in the kitchen the light is off": no clause follows
     last = words[i + n + m - 1].end
     return Match(n + m, (Word(s.text_of(words[i].start, last), words[i].start, last, Tag.VERB, BEING_MEANS),),
                  expect=False, verb=BEING_MEANS, using=False)
+
+
+def _run_on_verb(s: State, np: int, end: int) -> int | None:
+    """Where a clause said without a comma starts after the noun phrase at ``np`` ("once you're in the
+    living room *look for* Skyler"): a verb of the library in its base form, after a word of the phrase
+    that is no determiner, possessive or preposition; None when no such verb comes before ``end``, or a
+    verb of being does first ("once you're in the garage the door *is* shut": a statement, no clause)."""
+    words = s.words
+    for j in range(np + 1, end):
+        before = words[j - 1].lower
+        if before in BE_WORDS:
+            return None
+        if not before.isalpha() or before in DETERMINERS or before in POSSESSIVES or before in PREPOSITIONS:
+            continue
+        found = s.verb_at(j)
+        if found is not None and found[0].split()[0] == words[j].lower:
+            return j
+    return None
 
 
 def _manner(s: State, i: int) -> Match | None:
@@ -136,6 +165,7 @@ SEQUENCING = Rule("sequencing word", _sequencing, (
 BEING_AT_RULE = Rule("being somewhere first", _being_at, (
     Example("Once you're in the living room, find Peyton", "Once you're", Tag.VERB),
     Example("when you are at the door, greet the visitor", "when you are", Tag.VERB),
+    Example("once youre in the living room look for Skyler", "once youre", Tag.VERB),   # no comma: a run-on
 ), first_words(BEING_AT[0]), "'once you're in X, ...': go to X, then the clause")
 SUBORDINATE = Rule("subordinate clause first", _subordinate, (
     Example("If the door is open, close it", "If the door is open,", Tag.COND),

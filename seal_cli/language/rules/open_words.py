@@ -58,15 +58,20 @@ def _name(s: State, i: int) -> Match | None:
 def _lower_case_name(s: State, i: int) -> Match | None:
     """A word neither an English dictionary nor the library's taxonomy lists, alone after "to" or "for" in a
     clause whose verb may have a recipient ("deliver the knife to *jamie*", "fetch a towel for *jo*"), or
-    after "with" in one whose verb has a goal ("go with *sam*": who goes along): a name written in lower
-    case. A word the map or the vocabulary names as a person is a name wherever it is (the parser writes
-    it capitalised for the tagger)."""
+    after "with" in one whose verb has a goal ("go with *sam*": who goes along), or right after a verb whose
+    frame's first element is a person ("take *jordan* to the bedroom", unless it ends in "s" as plurals do:
+    "take cheezits to the kitchen" stays a thing): a name written in lower case. A word the map or the
+    vocabulary names as a person is a name wherever it is (the parser writes it capitalised for the
+    tagger)."""
     w, low = s.words[i], s.words[i].lower
-    if s.prev_tag() != Tag.PREP or s.verb_index < 0:
-        return None
+    if s.verb_index < 0 or s.prev_tag() != Tag.PREP and not (
+            s.verb_index == len(s.out) - 1 and s.prev_tag() == Tag.VERB and str(s.out[-1].info) in s.lexicon.escorts):
+        return None                      # "take *jordan* to the bedroom": right after a verb whose object is a person
     verb = str(s.out[s.verb_index].info)
-    if not (s.out[-1].info in ("to", "for") and verb in s.lexicon.recipients or
-            s.out[-1].info == "with" and verb in s.lexicon.goals) or not low.isalpha() or \
+    if s.prev_tag() == Tag.VERB and low.endswith("s"):
+        return None
+    if s.prev_tag() == Tag.PREP and not (s.out[-1].info in ("to", "for") and verb in s.lexicon.recipients or
+                                         s.out[-1].info == "with" and verb in s.lexicon.goals) or not low.isalpha() or \
             w.text != low or low in CLOSED or in_dictionary(low) or low in s.lexicon.things or s.noun_follows(i + 1):
         return None
     return s.emit(i, 1, Tag.NAME)
@@ -98,6 +103,7 @@ LOWER_CASE_NAME = Rule("name in lower case", _lower_case_name, (
     Example("give the keys to priya in the hallway", "priya", Tag.NAME),
     Example("fetch a towel for jo", "jo", Tag.NAME),
     Example("go with sam to the bedroom", "sam", Tag.NAME),
+    Example("take jordan to the bedroom", "jordan", Tag.NAME),
 ), None, "a word no dictionary lists, alone after 'to' or 'for' (a clause that may have a recipient) or "
          "'with' (one that has a goal): a name")
 WORD = Rule("open word", _word, (

@@ -41,7 +41,7 @@ from seal_cli.language.english import (
     WHERE_MEANS,
     WHERE_QUESTIONS,
 )
-from seal_cli.language.morphology import gerund_lemma, is_adjective, participles, verb_lemma
+from seal_cli.language.morphology import gerund_lemma, is_adjective, noun_lemma, participles, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import State, first_words, match_phrase, merge
 from seal_cli.language.tags import Tag
@@ -120,6 +120,8 @@ def _where_did(s: State, i: int) -> Match | None:
 
 _WHETHER_IS = frozenset(["is", "are", "isn't", "aren't"])
 _WHETHER_WHERE = frozenset(["in", "on", "at", "inside", "near", "by", "under", "beside", "behind"])
+_WHETHER_THERE = _WHETHER_WHERE | frozenset(["there", "here"])
+"""After "see if anyone is": a place said, or pointed at ("... is *there*", where the robot went)."""
 
 
 def _whether_is(s: State, i: int) -> Match | None:
@@ -280,7 +282,7 @@ def _check_whether(s: State, i: int, checks: frozenset[str] | None = None) -> Ma
     m = _phrase(s, k, there_is)
     if m and s.np_starts(k + m):
         k += m                                    # "check if there's ...": "is there ..."
-    elif not s.np_starts(k) or not any(words[j].lower in _WHETHER_IS and words[j + 1].lower in _WHETHER_WHERE
+    elif not s.np_starts(k) or not any(words[j].lower in _WHETHER_IS and words[j + 1].lower in _WHETHER_THERE
                                        for j in range(k + 1, min(len(words) - 1, s.cond_end(k)))):
         return None                               # "see if the soup is hot": no place asked of
     end = words[k - 1].end
@@ -307,7 +309,7 @@ def _found_out(s: State, i: int) -> Match | None:
 def _whether_be(s: State, i: int) -> Match | None:
     if s.verb_index < 0 or s.out[s.verb_index].info != WHERE_MEANS or \
             s.out[s.verb_index].lower.split()[-1] not in CHECK_WHETHER[1] or \
-            s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON) or s.next_lower(i) not in _WHETHER_WHERE:
+            s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON) or s.next_lower(i) not in _WHETHER_THERE:
         return None
     return Match(1)                               # "see if anyone *is* in the kitchen": dropped
 
@@ -476,6 +478,55 @@ def _wish_of(s: State, i: int) -> Match | None:
     return None
 
 
+_WISHED = frozenset(w for wish in _WISHES_OF for w in wish[:1]) | frozenset(["want", "need"])
+
+
+def _wish_at(s: State, k: int) -> int:
+    """How many words of a wish ("wants", "needs", "would like"; "want", "need" after a plural) start at ``k``."""
+    words = s.words
+    for wish in (*_WISHES_OF, ("want",), ("need",)):
+        if all(k + m < len(words) and words[k + m].lower == w for m, w in enumerate(wish)):
+            return len(wish)
+    return 0
+
+
+def _wish_of_phrase(s: State, i: int) -> Match | None:
+    """"*The person at the armchair needs* a towel", "my son wants a glass of water": a wish said of a
+    person named by a noun phrase (its head a person of the taxonomy, a phrase of place after it) is
+    bringing them the thing, as "Anna wants the cup" is; the verb is unsaid before the phrase, and the
+    wish is dropped after it (``WISH_DROPPED``)."""
+    words = s.words
+    if REQUEST_MEANS not in s.lexicon.units or words[i].lower not in DETERMINERS | POSSESSIVES or \
+            s.verb_at(i) is not None:
+        return None
+    head = next((k for k in range(i + 1, min(len(words), i + 4))
+                 if noun_lemma(words[k].lower) in s.lexicon.people or words[k].lower in s.lexicon.people), None)
+    if head is None or any(not words[j].lower.isalpha() for j in range(i + 1, head)):
+        return None
+    k = head + 1
+    while k < min(len(words), head + 8) and not _wish_at(s, k):
+        if not words[k].lower.isalpha() or words[k].lower in BE_WORDS or \
+                (s.verb_at(k) is not None and words[k - 1].lower not in DETERMINERS):
+            return None
+        k += 1
+    n = _wish_at(s, k)
+    if not n or k + n >= len(words) or not s.np_starts(k + n) or words[k + n].lower in ("you", "to") or \
+            s.verb_at(k + n) is not None or not _sentence_asks_nothing_else(s, k + n):
+        return None
+    tag = Tag.DET if words[i].lower in DETERMINERS else Tag.POSS
+    return Match(1, (_unsaid(words[i].start, Tag.VERB, REQUEST_MEANS), words[i].tagged(tag)), expect=False,
+                 verb=REQUEST_MEANS, using=False)
+
+
+def _wish_dropped(s: State, i: int) -> Match | None:
+    verb = next((t for t in reversed(s.out) if t.tag == Tag.VERB), None)
+    n = _wish_at(s, i)
+    if verb is None or verb.info != REQUEST_MEANS or verb.text or s.prev_tag() not in (Tag.WORD, Tag.NAME) or \
+            not n or not s.np_starts(i + n):
+        return None
+    return Match(n)                               # "the guest *wants* tea": dropped, "bring" was unsaid before
+
+
 def _know_wish(s: State, i: int) -> Match | None:
     words = s.words
     n = _phrase(s, i, KNOW_WISHES)
@@ -589,6 +640,14 @@ WISH_OF = Rule("a person's wish for a thing", _wish_of, (
     Example("Ben needs a towel.", "Ben needs", Tag.VERB),
     Example("Anna would like the red mug", "Anna would like", Tag.VERB),
 ), None, "'Anna wants X', 'Ben needs X': bring X to the person")
+WISH_OF_PHRASE = Rule("a wish said of a person's phrase", _wish_of_phrase, (
+    Example("the person at the armchair needs a towel", "the", Tag.DET),
+    Example("my son wants a glass of water", "my", Tag.POSS),
+    Example("the guests in the hall would like some coffee", "the", Tag.DET),
+), None, "'the person at the armchair needs X': bring X to the person")
+WISH_DROPPED = Rule("the wish after a person's phrase", _wish_dropped, (
+    Example("the person at the armchair needs a towel", "needs", ""),
+), _WISHED | frozenset(["would"]), "the 'needs' of 'the guest needs X', dropped: 'bring' was read before the phrase")
 PATH_ALONE_RULE = Rule("a path alone", _path_alone, (
     Example("to the bathroom", "to", Tag.PREP),
     Example("back to the kitchen, please", "back to", Tag.PREP),
@@ -610,6 +669,7 @@ ASKED_WHETHER = Rule("asked whether", _asked_whether, (
     Example("Tell me if the keys are on the table.", "Tell me if", Tag.VERB),
     Example("Can you see if anyone is in the kitchen?", "see if", Tag.VERB),
     Example("check whether there's a book on the shelf", "check whether there's", Tag.VERB),
+    Example("go to the kitchen and see if anyone is there", "see if", Tag.VERB),
 ), first_words(_ASKERS), "'tell me / check / do you know if X is open' (LookAt), '... if X is in Y' (Find)")
 STATE_ASKED = Rule("the state asked", _state_asked, (
     Example("do you know if the kettle is on", "on", Tag.COND),
