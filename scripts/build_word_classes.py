@@ -29,6 +29,7 @@ from __future__ import annotations
 import argparse
 import csv
 import importlib.util
+import itertools
 import json
 import math
 import sys
@@ -48,6 +49,8 @@ from seal_cli.language.chooser import Instance, features, fit  # noqa: E402
 from seal_cli.language.grounding import PORTIONS, Vocabulary  # noqa: E402
 from seal_cli.language.lexicon import noun_lemma  # noqa: E402
 from seal_cli.language.parser import CommandError, Parse, Phrase, parse_command  # noqa: E402
+from seal_cli.language.stacking import THRESHOLD as STACK_THRESHOLD  # noqa: E402
+from seal_cli.language.stacking import coordinated  # noqa: E402
 from seal_cli.language.steps import NONE, STEPS, eligible, step_features  # noqa: E402
 from seal_cli.language.steps import THRESHOLD as STEP_THRESHOLD  # noqa: E402
 from seal_cli.language.wordusage import (  # noqa: E402
@@ -67,7 +70,8 @@ MANIPULATE = ("Pick", "Heat", "Cool", "Clean", "LookAt", "Place")
 LABELS = ("object", "receptacle", "mrecep", "toggle")
 KEEP = 2
 """A wording seen fewer times than this is left out of the file (it could never reach MIN_SUPPORT alone)."""
-SECTIONS = ("words", "seen", "context", "class_context", "number", "weights", "step_prior", "step_weights")
+SECTIONS = ("words", "seen", "context", "class_context", "number", "weights", "step_prior", "step_weights",
+            "stacks")
 STEP_OF = {"pick_heat_then_place_in_recep": "Heat", "pick_cool_then_place_in_recep": "Cool",
            "pick_clean_then_place_in_recep": "Clean"}
 """The step each ALFRED task type has (the others: none)."""
@@ -229,19 +233,29 @@ def usage_of(data: dict[str, object]) -> WordUsage:
 
 def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
                l2: float = L2) -> dict[str, object]:
-    """The table with its unsaid-step model: each row's sentence parsed with the table's grounding
-    (no step inferred), and, where the parse places one thing and says no step
+    """The table with its unsaid-step and unsaid-stack models: each row's sentence parsed with the
+    table's grounding (nothing inferred); where the parse places one thing and says no step
     (:func:`~seal_cli.language.steps.eligible`), the task's step (or none) learned from the
-    sentence's words and the classes put and where (:func:`~seal_cli.language.steps.step_features`)."""
+    sentence's words and the classes put and where (:func:`~seal_cli.language.steps.step_features`);
+    where it places two things of different classes together (:func:`~seal_cli.language.stacking.coordinated`),
+    each conjunct's class counted as said, and as holding when the task carried the other in it."""
     library = load_library()
     grounded = vocabulary.with_usage(usage_of(data))
     said: list[tuple[str, tuple[str, ...]]] = []
+    stacks: dict[str, Counter[str]] = {}
     for row in rows:
         text = " ".join(row["goal_sentence"].split())
         try:
             parse = parse_command(text, library, grounded, infer_steps=False)
         except CommandError:
             continue
+        pair = coordinated(parse)
+        for phrase in pair[1:] if pair else ():
+            by = stacks.setdefault(phrase.cls or "", Counter())
+            by["said"] += 1
+            if row["task_type"] == "pick_and_place_with_movable_recep" and \
+                    class_key(row["mrecep"]) == class_key(phrase.cls or ""):
+                by["holds"] += 1
         at = eligible(parse)
         if at is None:
             continue
@@ -253,7 +267,9 @@ def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabula
     keys = tuple(k for k in (*STEPS, NONE) if prior[k])
     offsets = tuple(math.log(prior[k]) for k in keys)
     weights = fit([Instance(keys, offsets, keys.index(step), feats) for step, feats in said], l2)
-    return {**data, "step_prior": {k: prior[k] for k in keys}, "step_weights": weights}
+    return {**data, "step_prior": {k: prior[k] for k in keys}, "step_weights": weights,
+            "stacks": {c: dict(sorted(by.items(), reverse=True)) for c, by in sorted(stacks.items())
+                       if by["said"] >= KEEP}}
 
 
 def ordered(words: Counter[str]) -> dict[str, int]:
@@ -341,6 +357,8 @@ def main() -> int:
     ap.add_argument("--l2", type=float, nargs="*", default=[L2], help="the chooser's L2 penalties to try")
     ap.add_argument("--step-threshold", type=float, nargs="*", default=[STEP_THRESHOLD],
                     help="the least probability at which an unsaid step is added (2: never); those to try")
+    ap.add_argument("--stack-threshold", type=float, nargs="*", default=[STACK_THRESHOLD],
+                    help="the least rate at which a coordination is read as a stack (2: never); those to try")
     ap.add_argument("--errors", type=Path, help="with --dev: write the held-out sentences scored wrong here (TSV)")
     ap.add_argument("--errors-of", default=None, help="with --dev: the table whose errors --errors writes "
                     "('naive Bayes', 'chooser l2 1.0'; default: the first chooser)")
@@ -381,16 +399,18 @@ def main() -> int:
             for support in args.min_support:
                 for ratio in args.min_ratio:
                     for weight in args.context_weight:
-                        for threshold in args.step_threshold:
+                        for threshold, stacking in itertools.product(args.step_threshold, args.stack_threshold):
                             tried = vocabulary.with_usage(replace(
                                 table_, min_support=support, min_ratio=ratio, context_weight=weight,
-                                steps=replace(table_.steps, threshold=threshold)))
+                                steps=replace(table_.steps, threshold=threshold),
+                                stacks=replace(table_.stacks, threshold=stacking)))
+                            first = (threshold, stacking) == (args.step_threshold[0], args.stack_threshold[0])
                             show(f"{name}, support {support} ratio {ratio}" + ("" if table_.weights else
                                                                              f" context {weight}")
-                                 + (f" step {threshold}" if table_.steps else ""),
+                                 + (f" step {threshold}" if table_.steps else "")
+                                 + (f" stack {stacking}" if table_.stacks else ""),
                                  score(dev, lambda row, v=tried: v, module,
-                                       errors if name == args.errors_of and threshold == args.step_threshold[0]
-                                       else None))
+                                       errors if name == args.errors_of and first else None))
         if args.errors is not None:
             args.errors.write_text("".join(line + "\n" for line in errors))
             print(f"wrote {args.errors} ({len(errors)} sentences of {args.errors_of} scored wrong)")

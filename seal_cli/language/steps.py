@@ -45,7 +45,7 @@ if TYPE_CHECKING:
     from seal_cli.frames.library import Library
     from seal_cli.language.grounding import Vocabulary
 
-__all__ = ["NONE", "STEPS", "THRESHOLD", "StepModel", "eligible", "infer_step", "step_features"]
+__all__ = ["BLOCKING", "NONE", "STEPS", "THRESHOLD", "StepModel", "eligible", "infer_step", "shifted", "step_features"]
 
 STEPS = ("Clean", "Cool", "Heat")
 """The steps a sentence may leave unsaid (frames of the library), in the model's order."""
@@ -54,7 +54,7 @@ NONE = "none"
 THRESHOLD = 0.8
 """The least probability at which the step is added (chosen on held-out train: at 0.8 it fixed 39
 sentences and broke none; at 0.5 65 and 3)."""
-_BLOCKING = frozenset((*STEPS, "LookAt", "ToggleOn", "ToggleOff"))
+BLOCKING = frozenset((*STEPS, "LookAt", "ToggleOn", "ToggleOff"))
 """Frames whose presence means the sentence said what it does to the thing (or is about looking)."""
 
 
@@ -102,7 +102,7 @@ def eligible(parse: Parse) -> int | None:
     (its Places' themes are one class, not plural, not two) in a goal with a class, and evokes no
     step, look or switch."""
     frames = parse.frames
-    if any(f.frame in _BLOCKING for f in frames):
+    if any(f.frame in BLOCKING for f in frames):
         return None
     places = [i for i, f in enumerate(frames) if f.frame == "Place"]
     if not places:
@@ -150,11 +150,11 @@ def infer_step(parse: Parse, library: Library, vocabulary: Vocabulary, model: St
             elements[e.role] = Phrase(None, e.default, cls, default=True)
     unit = frame.lexical_units[0].text if frame.lexical_units else best.lower()
     step = Evoked(best, unit, place.span, elements, inferred=round(p[best], 3))
-    frames = [_shifted(f, at) for f in parse.frames]
+    frames = [shifted(f, at) for f in parse.frames]
     return replace(parse, frames=(*frames[:at], step, *frames[at:]))
 
 
-def _shifted(frame: Evoked, at: int) -> Evoked:
+def shifted(frame: Evoked, at: int) -> Evoked:
     """The frame with its references to frames from index ``at`` on moved one later."""
     moved = {role: _moved(p, at) for role, p in frame.elements.items()}
     return frame if all(moved[r] is frame.elements[r] for r in moved) else replace(frame, elements=moved)

@@ -47,6 +47,7 @@ from seal_cli.errors import SealError, Where
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.language.chooser import features, logits
 from seal_cli.language.morphology import noun_lemma
+from seal_cli.language.stacking import StackModel
 from seal_cli.language.steps import NONE, STEPS, StepModel
 
 __all__ = ["CONTEXT_PRIOR", "CONTEXT_WEIGHT", "FORMAT", "MIN_RATIO", "MIN_SUPPORT", "SHIPPED", "WordUsage",
@@ -125,6 +126,9 @@ class WordUsage:
     steps: StepModel = field(default_factory=StepModel)
     """Which step a sentence that places a thing and says none most likely means
     (:mod:`~seal_cli.language.steps`); empty: none is inferred."""
+    stacks: StackModel = field(default_factory=StackModel)
+    """Which of two things placed together holds the other (:mod:`~seal_cli.language.stacking`);
+    empty: no stack is read."""
 
     def __post_init__(self) -> None:
         for name in ("counts", "seen", "class_context", "number", "weights"):
@@ -159,7 +163,10 @@ class WordUsage:
                          self.context_weight, add(self.number, other.number),
                          add(self.weights, other.weights),
                          StepModel(add({"": self.steps.prior}, {"": other.steps.prior}).get("", {}),
-                                   add(self.steps.weights, other.steps.weights), self.steps.threshold))
+                                   add(self.steps.weights, other.steps.weights), self.steps.threshold),
+                         StackModel(add({"": self.stacks.said}, {"": other.stacks.said}).get("", {}),
+                                    add({"": self.stacks.holds}, {"": other.stacks.holds}).get("", {}),
+                                    self.stacks.threshold, self.stacks.min_support))
 
     def names_one(self, lemmas: tuple[str, ...]) -> bool:
         """Whether a plural phrase whose words up to the head are ``lemmas`` names one thing, as
@@ -179,7 +186,7 @@ class WordUsage:
     def without_context(self) -> WordUsage:
         """These counts with the sentence not weighed (the wording alone decides)."""
         return WordUsage(self.counts, self.universe, self.sources, self.min_support, self.min_ratio, self.seen,
-                         number=self.number, steps=self.steps)
+                         number=self.number, steps=self.steps, stacks=self.stacks)
 
     def sentence_factor(self, wording: str, lemmas: tuple[str, ...], keys: Iterable[str],
                         words: Iterable[str]) -> dict[str, float]:
@@ -382,7 +389,8 @@ def _table(data: Any, where: Where) -> WordUsage:
         raise SealError("\"weights\" must map each feature to {class of \"classes\": finite number}", where)
     weights = {str(f): {class_key(c): float(v) for c, v in by.items()} for f, by in raw.items()}
     return WordUsage(counts, universe, (str(data.get("source", where.file)),), seen=seen, context=context,
-                     class_context=class_context, number=number, weights=weights, steps=_steps(data, where))
+                     class_context=class_context, number=number, weights=weights, steps=_steps(data, where),
+                     stacks=_stacks(data, universe, where))
 
 
 def _steps(data: dict[str, Any], where: Where) -> StepModel:
@@ -397,6 +405,17 @@ def _steps(data: dict[str, Any], where: Where) -> StepModel:
                                          and math.isfinite(v) for c, v in by.items()) for by in raw.values()):
         raise SealError("\"step_weights\" must map each feature to {step: finite number}", where)
     return StepModel(prior, {str(f): {c: float(v) for c, v in by.items()} for f, by in raw.items()})
+
+
+def _stacks(data: dict[str, Any], universe: frozenset[str], where: Where) -> StackModel:
+    """The unsaid-stack model of a table (``stacks``: {class: {"said": count, "holds": count}})."""
+    raw = data.get("stacks", {})
+    if not isinstance(raw, dict) or not all(
+            isinstance(c, str) and class_key(c) in universe and _word_counts(by) and set(by) <= {"said", "holds"}
+            and by.get("holds", 0) <= by.get("said", 0) for c, by in raw.items()):
+        raise SealError("\"stacks\" must map each class of \"classes\" to {\"said\": count, \"holds\": count "
+                        "no greater}", where)
+    return StackModel({c: by.get("said", 0) for c, by in raw.items()}, {c: by.get("holds", 0) for c, by in raw.items()})
 
 
 def _word_counts(table: Any) -> bool:
