@@ -324,9 +324,13 @@ def scorer(data: Path):  # type: ignore[no-untyped-def]
 
 
 def score(rows: Sequence[dict[str, str]], vocabulary: Callable[[dict[str, str]], Vocabulary],
-          module, errors: list[str] | None = None) -> dict[str, float]:  # type: ignore[no-untyped-def]
-    """The scorer's five fields on these rows, each parsed with ``vocabulary(row)``; each row scored
-    wrong is added to ``errors`` (a TSV line: the fields wrong, the sentence, what was read, the gold)."""
+          module, errors: list[str] | None = None,  # type: ignore[no-untyped-def]
+          bring_goal: bool = False) -> dict[str, float | int]:
+    """The scorer's five fields on these rows, each parsed with ``vocabulary(row)``, and how many
+    parses had a frame inferred (``inferred``) and were then of the task's type (``inferred_right``);
+    each row scored wrong is added to ``errors`` (a TSV line: the fields wrong, the sentence, what was
+    read, the gold). ``bring_goal``: read a Bring to a place (a goal, no recipient) as the scorer reads
+    a Place (the scorer itself reads Place only)."""
     library = load_library()
     hits: Counter[str] = Counter()
     for row in rows:
@@ -334,15 +338,24 @@ def score(rows: Sequence[dict[str, str]], vocabulary: Callable[[dict[str, str]],
             parse = parse_command(" ".join(row["goal_sentence"].split()), library, vocabulary(row)).to_json()
         except CommandError:
             parse = {}
+        if bring_goal:
+            parse = {**parse, "frames": [{**f, "frame": "Place"} if f["frame"] == "Bring" and "goal" in f["elements"]
+                                         and "recipient" not in f["elements"] else f
+                                         for f in parse.get("frames", [])]}
         want = module.gold(row)
         got = module.read_back(parse) if parse.get("frames") else {f: None for f in module.FIELDS}
         ok = {f: got[f] == want[f] for f in module.FIELDS}
         hits.update(f for f, good in ok.items() if good)
         hits["all"] += all(ok.values())
+        if any(f.get("inferred") for f in parse.get("frames", [])):
+            hits["inferred"] += 1
+            hits["inferred_right"] += ok["type"]
         if errors is not None and not all(ok.values()):
             wrong = ",".join(f for f, good in ok.items() if not good)
             errors.append("\t".join([wrong, row["goal_sentence"].strip(), json.dumps(got), json.dumps(want)]))
-    return {f: hits[f] / max(len(rows), 1) for f in ("all", *module.FIELDS)}
+    n = max(len(rows), 1)
+    return {**{f: hits[f] / n for f in ("all", *module.FIELDS)},
+            "inferred": hits["inferred"], "inferred_right": hits["inferred_right"]}
 
 
 def main() -> int:
@@ -359,6 +372,8 @@ def main() -> int:
                     help="the least probability at which an unsaid step is added (2: never); those to try")
     ap.add_argument("--stack-threshold", type=float, nargs="*", default=[STACK_THRESHOLD],
                     help="the least rate at which a coordination is read as a stack (2: never); those to try")
+    ap.add_argument("--bring-goal", action="store_true", help="with --dev: score a Bring to a place (goal, "
+                    "no recipient) as the scorer scores a Place")
     ap.add_argument("--errors", type=Path, help="with --dev: write the held-out sentences scored wrong here (TSV)")
     ap.add_argument("--errors-of", default=None, help="with --dev: the table whose errors --errors writes "
                     "('naive Bayes', 'chooser l2 1.0'; default: the first chooser)")
@@ -390,8 +405,9 @@ def main() -> int:
             data = table(*counted, classes, "dev", l2)    # the table as it would ship, read as it is read
             return usage_of(with_steps(data, fit_rows, vocabulary) if l2 is not None else data)
 
-        def show(name: str, figures: dict[str, float]) -> None:
-            print(f"{name:<34}" + " ".join(f"{k} {v:.3f}" for k, v in figures.items()), flush=True)
+        def show(name: str, figures: dict[str, float | int]) -> None:
+            print(f"{name:<34}" + " ".join(f"{k} {v:.3f}" if isinstance(v, float) else f"{k} {v}"
+                                           for k, v in figures.items()), flush=True)
 
         show("rules alone", score(dev, lambda row: vocabulary.with_usage(WordUsage()), module))
         tables = {"naive Bayes": fitted(None), **{f"chooser l2 {l2}": fitted(l2) for l2 in args.l2}}
@@ -399,7 +415,9 @@ def main() -> int:
             for support in args.min_support:
                 for ratio in args.min_ratio:
                     for weight in args.context_weight:
-                        for threshold, stacking in itertools.product(args.step_threshold, args.stack_threshold):
+                        tries = itertools.product(args.step_threshold, args.stack_threshold) if table_.steps \
+                            else [(args.step_threshold[0], args.stack_threshold[0])]
+                        for threshold, stacking in tries:
                             tried = vocabulary.with_usage(replace(
                                 table_, min_support=support, min_ratio=ratio, context_weight=weight,
                                 steps=replace(table_.steps, threshold=threshold),
@@ -410,7 +428,7 @@ def main() -> int:
                                  + (f" step {threshold}" if table_.steps else "")
                                  + (f" stack {stacking}" if table_.stacks else ""),
                                  score(dev, lambda row, v=tried: v, module,
-                                       errors if name == args.errors_of and first else None))
+                                       errors if name == args.errors_of and first else None, args.bring_goal))
         if args.errors is not None:
             args.errors.write_text("".join(line + "\n" for line in errors))
             print(f"wrote {args.errors} ({len(errors)} sentences of {args.errors_of} scored wrong)")
