@@ -51,7 +51,7 @@ from seal_cli.language.lexicon import noun_lemma  # noqa: E402
 from seal_cli.language.parser import CommandError, Parse, Phrase, parse_command  # noqa: E402
 from seal_cli.language.stacking import THRESHOLD as STACK_THRESHOLD  # noqa: E402
 from seal_cli.language.stacking import coordinated  # noqa: E402
-from seal_cli.language.steps import NONE, STEPS, eligible, step_features  # noqa: E402
+from seal_cli.language.steps import NONE, STEPS, eligible, ends_at_steps, step_features  # noqa: E402
 from seal_cli.language.steps import THRESHOLD as STEP_THRESHOLD  # noqa: E402
 from seal_cli.language.wordusage import (  # noqa: E402
     CONTEXT_WEIGHT,
@@ -71,7 +71,7 @@ LABELS = ("object", "receptacle", "mrecep", "toggle")
 KEEP = 2
 """A wording seen fewer times than this is left out of the file (it could never reach MIN_SUPPORT alone)."""
 SECTIONS = ("words", "seen", "context", "class_context", "number", "weights", "step_prior", "step_weights",
-            "stacks")
+            "stacks", "step_left")
 STEP_OF = {"pick_heat_then_place_in_recep": "Heat", "pick_cool_then_place_in_recep": "Cool",
            "pick_clean_then_place_in_recep": "Clean"}
 """The step each ALFRED task type has (the others: none)."""
@@ -205,6 +205,19 @@ def scene_classes(data: Path, classes: Sequence[str]) -> dict[str, frozenset[str
             for name, plan in plans.items()}
 
 
+def scenery(data: Path, classes: Sequence[str]) -> list[str]:
+    """The classes of ALFRED's floor plans that are none of ``classes`` (THOR's ``Faucet``, ``ShowerHead``):
+    parts of a scene no sentence names as a task's thing, listed so that a scene's vocabulary is still
+    one the statistics know (:attr:`~seal_cli.language.wordusage.WordUsage.scenery`)."""
+    path = data / "alfred2d" / "floorplans.json"
+    if not path.is_file():
+        return []
+    known = {class_key(c) for c in classes}
+    plans = json.loads(path.read_text())["floor_plans"]
+    found = {c for plan in plans.values() for c in [*plan["object_types"], *(r["class"] for r in plan["receptacles"])]}
+    return sorted(c for c in found if class_key(c) not in known)
+
+
 def table(counts: Counts, seen: Counts, context: Context, class_context: Counts, number: Counts,
           said: list[Said], classes: Sequence[str], source: str, l2: float | None = L2) -> dict[str, object]:
     """The table's sections; ``l2``: the chooser's penalty (None: no chooser, the naive Bayes context)."""
@@ -238,11 +251,14 @@ def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabula
     (:func:`~seal_cli.language.steps.eligible`), the task's step (or none) learned from the
     sentence's words and the classes put and where (:func:`~seal_cli.language.steps.step_features`);
     where it places two things of different classes together (:func:`~seal_cli.language.stacking.coordinated`),
-    each conjunct's class counted as said, and as holding when the task carried the other in it."""
+    each conjunct's class counted as said, and as holding when the task carried the other in it; where
+    it ends at two steps (:func:`~seal_cli.language.steps.ends_at_steps`), the last step counted as
+    ended, and as left when the task left the thing in that step's instrument."""
     library = load_library()
     grounded = vocabulary.with_usage(usage_of(data))
     said: list[tuple[str, tuple[str, ...]]] = []
     stacks: dict[str, Counter[str]] = {}
+    ended: dict[str, Counter[str]] = {}
     for row in rows:
         text = " ".join(row["goal_sentence"].split())
         try:
@@ -256,6 +272,13 @@ def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabula
             if row["task_type"] == "pick_and_place_with_movable_recep" and \
                     class_key(row["mrecep"]) == class_key(phrase.cls or ""):
                 by["holds"] += 1
+        last = ends_at_steps(parse)
+        if last is not None:
+            step = parse.frames[last]
+            by = ended.setdefault(step.frame, Counter())
+            by["ended"] += 1
+            if class_key(parse.resolve(step.elements["instrument"]).cls or "") == class_key(row["receptacle"]):
+                by["left"] += 1
         at = eligible(parse)
         if at is None:
             continue
@@ -269,7 +292,8 @@ def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabula
     weights = fit([Instance(keys, offsets, keys.index(step), feats) for step, feats in said], l2)
     return {**data, "step_prior": {k: prior[k] for k in keys}, "step_weights": weights,
             "stacks": {c: dict(sorted(by.items(), reverse=True)) for c, by in sorted(stacks.items())
-                       if by["said"] >= KEEP}}
+                       if by["said"] >= KEEP},
+            "step_left": {s: dict(sorted(by.items())) for s, by in sorted(ended.items()) if by["ended"] >= KEEP}}
 
 
 def ordered(words: Counter[str]) -> dict[str, int]:
@@ -452,7 +476,8 @@ def main() -> int:
     source = (f"ALFRED train goals ({goals.name}: {len(rows)} human goal sentences with their task labels), "
               "parsed by seal's rules; counts of the labelled class by the wording of the phrase that fills its field, "
               "and of the sentence's other words by wording and class")
-    text = dump(with_steps(table(*count(rows, vocabulary, scenes), classes, source), rows, vocabulary))
+    text = dump({**with_steps(table(*count(rows, vocabulary, scenes), classes, source), rows, vocabulary),
+                 "scenery": scenery(args.data, classes)})
     if args.check:
         shipped = args.out.read_text() if args.out.is_file() else ""
         if shipped != text:

@@ -292,9 +292,10 @@ class Vocabulary:
     def step_model(self) -> StepModel:
         """Which step a sentence leaves unsaid (:mod:`~seal_cli.language.steps`), from the statistics:
         only when every class of this vocabulary is one they were counted over (ALFRED's classes, or
-        a scene's of them), else an empty model (a GPSR arena, a shipped map: no step is inferred)."""
+        a scene's of them, with its scenery: :attr:`~seal_cli.language.wordusage.WordUsage.scenery`),
+        else an empty model (a GPSR arena, a shipped map: no step is inferred)."""
         usage = self._usage
-        if not usage.steps or not set(self._present) <= usage.universe:
+        if not usage.steps or not set(self._present) <= usage.universe | usage.scenery:
             return _NO_STEPS
         return usage.steps
 
@@ -304,7 +305,7 @@ class Vocabulary:
         scoped as :attr:`step_model` is: empty unless every class of this vocabulary is one the
         statistics were counted over."""
         usage = self._usage
-        if not usage.stacks or not set(self._present) <= usage.universe:
+        if not usage.stacks or not set(self._present) <= usage.universe | usage.scenery:
             return _NO_STACKS
         return usage.stacks
 

@@ -129,6 +129,9 @@ class WordUsage:
     stacks: StackModel = field(default_factory=StackModel)
     """Which of two things placed together holds the other (:mod:`~seal_cli.language.stacking`);
     empty: no stack is read."""
+    scenery: frozenset[str] = frozenset()
+    """Class keys of the scenes the statistics were counted in that no count is of (ALFRED's ``faucet``):
+    a vocabulary of these and :attr:`universe` is one the unsaid step and stack may be inferred in."""
 
     def __post_init__(self) -> None:
         for name in ("counts", "seen", "class_context", "number", "weights"):
@@ -163,10 +166,13 @@ class WordUsage:
                          self.context_weight, add(self.number, other.number),
                          add(self.weights, other.weights),
                          StepModel(add({"": self.steps.prior}, {"": other.steps.prior}).get("", {}),
-                                   add(self.steps.weights, other.steps.weights), self.steps.threshold),
+                                   add(self.steps.weights, other.steps.weights), self.steps.threshold,
+                                   add({"": self.steps.ended}, {"": other.steps.ended}).get("", {}),
+                                   add({"": self.steps.left}, {"": other.steps.left}).get("", {})),
                          StackModel(add({"": self.stacks.said}, {"": other.stacks.said}).get("", {}),
                                     add({"": self.stacks.holds}, {"": other.stacks.holds}).get("", {}),
-                                    self.stacks.threshold, self.stacks.min_support))
+                                    self.stacks.threshold, self.stacks.min_support),
+                         self.scenery | other.scenery)
 
     def names_one(self, lemmas: tuple[str, ...]) -> bool:
         """Whether a plural phrase whose words up to the head are ``lemmas`` names one thing, as
@@ -186,7 +192,7 @@ class WordUsage:
     def without_context(self) -> WordUsage:
         """These counts with the sentence not weighed (the wording alone decides)."""
         return WordUsage(self.counts, self.universe, self.sources, self.min_support, self.min_ratio, self.seen,
-                         number=self.number, steps=self.steps, stacks=self.stacks)
+                         number=self.number, steps=self.steps, stacks=self.stacks, scenery=self.scenery)
 
     def sentence_factor(self, wording: str, lemmas: tuple[str, ...], keys: Iterable[str],
                         words: Iterable[str]) -> dict[str, float]:
@@ -390,7 +396,7 @@ def _table(data: Any, where: Where) -> WordUsage:
     weights = {str(f): {class_key(c): float(v) for c, v in by.items()} for f, by in raw.items()}
     return WordUsage(counts, universe, (str(data.get("source", where.file)),), seen=seen, context=context,
                      class_context=class_context, number=number, weights=weights, steps=_steps(data, where),
-                     stacks=_stacks(data, universe, where))
+                     stacks=_stacks(data, universe, where), scenery=_scenery(data, where))
 
 
 def _steps(data: dict[str, Any], where: Where) -> StepModel:
@@ -404,7 +410,22 @@ def _steps(data: dict[str, Any], where: Where) -> StepModel:
             isinstance(by, dict) and all(c in names and isinstance(v, int | float) and not isinstance(v, bool)
                                          and math.isfinite(v) for c, v in by.items()) for by in raw.values()):
         raise SealError("\"step_weights\" must map each feature to {step: finite number}", where)
-    return StepModel(prior, {str(f): {c: float(v) for c, v in by.items()} for f, by in raw.items()})
+    weights = {str(f): {c: float(v) for c, v in by.items()} for f, by in raw.items()}
+    raw = data.get("step_left", {})
+    if not isinstance(raw, dict) or not all(
+            c in STEPS and _word_counts(by) and set(by) <= {"ended", "left"} and by.get("left", 0) <= by.get("ended", 0)
+            for c, by in raw.items()):
+        raise SealError(f"\"step_left\" must map each of {', '.join(STEPS)} to {{\"ended\": count, \"left\": count "
+                        "no greater}", where)
+    return StepModel(prior, weights, ended={c: by.get("ended", 0) for c, by in raw.items()},
+                     left={c: by.get("left", 0) for c, by in raw.items()})
+
+
+def _scenery(data: dict[str, Any], where: Where) -> frozenset[str]:
+    raw = data.get("scenery", [])
+    if not isinstance(raw, list) or not all(isinstance(c, str) and c for c in raw):
+        raise SealError("\"scenery\" must be a list of class names", where)
+    return frozenset(class_key(c) for c in raw)
 
 
 def _stacks(data: dict[str, Any], universe: frozenset[str], where: Where) -> StackModel:

@@ -111,4 +111,4 @@ def test_seal_run_says_what_it_put_where(library: Library) -> None:
     from seal_cli.pipeline import inferred_steps
 
     parse = parse_command("move a knife and a cup to the sink", library, kitchen())
-    assert inferred_steps(parse) == ["(inferred: move a knife in a cup first, 0.75)"]
+    assert inferred_steps(parse) == ["(inferred: move a knife in a cup, 0.75)"]
