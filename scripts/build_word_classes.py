@@ -29,6 +29,7 @@ from __future__ import annotations
 import argparse
 import csv
 import importlib.util
+import itertools
 import json
 import math
 import sys
@@ -48,7 +49,9 @@ from seal_cli.language.chooser import Instance, features, fit  # noqa: E402
 from seal_cli.language.grounding import PORTIONS, Vocabulary  # noqa: E402
 from seal_cli.language.lexicon import noun_lemma  # noqa: E402
 from seal_cli.language.parser import CommandError, Parse, Phrase, parse_command  # noqa: E402
-from seal_cli.language.steps import NONE, STEPS, eligible, step_features  # noqa: E402
+from seal_cli.language.stacking import THRESHOLD as STACK_THRESHOLD  # noqa: E402
+from seal_cli.language.stacking import coordinated  # noqa: E402
+from seal_cli.language.steps import NONE, STEPS, eligible, ends_at_steps, step_features  # noqa: E402
 from seal_cli.language.steps import THRESHOLD as STEP_THRESHOLD  # noqa: E402
 from seal_cli.language.wordusage import (  # noqa: E402
     CONTEXT_WEIGHT,
@@ -67,7 +70,8 @@ MANIPULATE = ("Pick", "Heat", "Cool", "Clean", "LookAt", "Place")
 LABELS = ("object", "receptacle", "mrecep", "toggle")
 KEEP = 2
 """A wording seen fewer times than this is left out of the file (it could never reach MIN_SUPPORT alone)."""
-SECTIONS = ("words", "seen", "context", "class_context", "number", "weights", "step_prior", "step_weights")
+SECTIONS = ("words", "seen", "context", "class_context", "number", "weights", "step_prior", "step_weights",
+            "stacks", "step_left")
 STEP_OF = {"pick_heat_then_place_in_recep": "Heat", "pick_cool_then_place_in_recep": "Cool",
            "pick_clean_then_place_in_recep": "Clean"}
 """The step each ALFRED task type has (the others: none)."""
@@ -201,6 +205,19 @@ def scene_classes(data: Path, classes: Sequence[str]) -> dict[str, frozenset[str
             for name, plan in plans.items()}
 
 
+def scenery(data: Path, classes: Sequence[str]) -> list[str]:
+    """The classes of ALFRED's floor plans that are none of ``classes`` (THOR's ``Faucet``, ``ShowerHead``):
+    parts of a scene no sentence names as a task's thing, listed so that a scene's vocabulary is still
+    one the statistics know (:attr:`~seal_cli.language.wordusage.WordUsage.scenery`)."""
+    path = data / "alfred2d" / "floorplans.json"
+    if not path.is_file():
+        return []
+    known = {class_key(c) for c in classes}
+    plans = json.loads(path.read_text())["floor_plans"]
+    found = {c for plan in plans.values() for c in [*plan["object_types"], *(r["class"] for r in plan["receptacles"])]}
+    return sorted(c for c in found if class_key(c) not in known)
+
+
 def table(counts: Counts, seen: Counts, context: Context, class_context: Counts, number: Counts,
           said: list[Said], classes: Sequence[str], source: str, l2: float | None = L2) -> dict[str, object]:
     """The table's sections; ``l2``: the chooser's penalty (None: no chooser, the naive Bayes context)."""
@@ -229,19 +246,39 @@ def usage_of(data: dict[str, object]) -> WordUsage:
 
 def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
                l2: float = L2) -> dict[str, object]:
-    """The table with its unsaid-step model: each row's sentence parsed with the table's grounding
-    (no step inferred), and, where the parse places one thing and says no step
+    """The table with its unsaid-step and unsaid-stack models: each row's sentence parsed with the
+    table's grounding (nothing inferred); where the parse places one thing and says no step
     (:func:`~seal_cli.language.steps.eligible`), the task's step (or none) learned from the
-    sentence's words and the classes put and where (:func:`~seal_cli.language.steps.step_features`)."""
+    sentence's words and the classes put and where (:func:`~seal_cli.language.steps.step_features`);
+    where it places two things of different classes together (:func:`~seal_cli.language.stacking.coordinated`),
+    each conjunct's class counted as said, and as holding when the task carried the other in it; where
+    it ends at two steps (:func:`~seal_cli.language.steps.ends_at_steps`), the last step counted as
+    ended, and as left when the task left the thing in that step's instrument."""
     library = load_library()
     grounded = vocabulary.with_usage(usage_of(data))
     said: list[tuple[str, tuple[str, ...]]] = []
+    stacks: dict[str, Counter[str]] = {}
+    ended: dict[str, Counter[str]] = {}
     for row in rows:
         text = " ".join(row["goal_sentence"].split())
         try:
             parse = parse_command(text, library, grounded, infer_steps=False)
         except CommandError:
             continue
+        pair = coordinated(parse)
+        for phrase in pair[1:] if pair else ():
+            by = stacks.setdefault(phrase.cls or "", Counter())
+            by["said"] += 1
+            if row["task_type"] == "pick_and_place_with_movable_recep" and \
+                    class_key(row["mrecep"]) == class_key(phrase.cls or ""):
+                by["holds"] += 1
+        last = ends_at_steps(parse)
+        if last is not None:
+            step = parse.frames[last]
+            by = ended.setdefault(step.frame, Counter())
+            by["ended"] += 1
+            if class_key(parse.resolve(step.elements["instrument"]).cls or "") == class_key(row["receptacle"]):
+                by["left"] += 1
         at = eligible(parse)
         if at is None:
             continue
@@ -253,7 +290,10 @@ def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabula
     keys = tuple(k for k in (*STEPS, NONE) if prior[k])
     offsets = tuple(math.log(prior[k]) for k in keys)
     weights = fit([Instance(keys, offsets, keys.index(step), feats) for step, feats in said], l2)
-    return {**data, "step_prior": {k: prior[k] for k in keys}, "step_weights": weights}
+    return {**data, "step_prior": {k: prior[k] for k in keys}, "step_weights": weights,
+            "stacks": {c: dict(sorted(by.items(), reverse=True)) for c, by in sorted(stacks.items())
+                       if by["said"] >= KEEP},
+            "step_left": {s: dict(sorted(by.items())) for s, by in sorted(ended.items()) if by["ended"] >= KEEP}}
 
 
 def ordered(words: Counter[str]) -> dict[str, int]:
@@ -308,9 +348,13 @@ def scorer(data: Path):  # type: ignore[no-untyped-def]
 
 
 def score(rows: Sequence[dict[str, str]], vocabulary: Callable[[dict[str, str]], Vocabulary],
-          module, errors: list[str] | None = None) -> dict[str, float]:  # type: ignore[no-untyped-def]
-    """The scorer's five fields on these rows, each parsed with ``vocabulary(row)``; each row scored
-    wrong is added to ``errors`` (a TSV line: the fields wrong, the sentence, what was read, the gold)."""
+          module, errors: list[str] | None = None,  # type: ignore[no-untyped-def]
+          bring_goal: bool = False) -> dict[str, float | int]:
+    """The scorer's five fields on these rows, each parsed with ``vocabulary(row)``, and how many
+    parses had a frame inferred (``inferred``) and were then of the task's type (``inferred_right``);
+    each row scored wrong is added to ``errors`` (a TSV line: the fields wrong, the sentence, what was
+    read, the gold). ``bring_goal``: read a Bring to a place (a goal, no recipient) as the scorer reads
+    a Place (the scorer itself reads Place only)."""
     library = load_library()
     hits: Counter[str] = Counter()
     for row in rows:
@@ -318,15 +362,24 @@ def score(rows: Sequence[dict[str, str]], vocabulary: Callable[[dict[str, str]],
             parse = parse_command(" ".join(row["goal_sentence"].split()), library, vocabulary(row)).to_json()
         except CommandError:
             parse = {}
+        if bring_goal:
+            parse = {**parse, "frames": [{**f, "frame": "Place"} if f["frame"] == "Bring" and "goal" in f["elements"]
+                                         and "recipient" not in f["elements"] else f
+                                         for f in parse.get("frames", [])]}
         want = module.gold(row)
         got = module.read_back(parse) if parse.get("frames") else {f: None for f in module.FIELDS}
         ok = {f: got[f] == want[f] for f in module.FIELDS}
         hits.update(f for f, good in ok.items() if good)
         hits["all"] += all(ok.values())
+        if any(f.get("inferred") for f in parse.get("frames", [])):
+            hits["inferred"] += 1
+            hits["inferred_right"] += ok["type"]
         if errors is not None and not all(ok.values()):
             wrong = ",".join(f for f, good in ok.items() if not good)
             errors.append("\t".join([wrong, row["goal_sentence"].strip(), json.dumps(got), json.dumps(want)]))
-    return {f: hits[f] / max(len(rows), 1) for f in ("all", *module.FIELDS)}
+    n = max(len(rows), 1)
+    return {**{f: hits[f] / n for f in ("all", *module.FIELDS)},
+            "inferred": hits["inferred"], "inferred_right": hits["inferred_right"]}
 
 
 def main() -> int:
@@ -341,6 +394,10 @@ def main() -> int:
     ap.add_argument("--l2", type=float, nargs="*", default=[L2], help="the chooser's L2 penalties to try")
     ap.add_argument("--step-threshold", type=float, nargs="*", default=[STEP_THRESHOLD],
                     help="the least probability at which an unsaid step is added (2: never); those to try")
+    ap.add_argument("--stack-threshold", type=float, nargs="*", default=[STACK_THRESHOLD],
+                    help="the least rate at which a coordination is read as a stack (2: never); those to try")
+    ap.add_argument("--bring-goal", action="store_true", help="with --dev: score a Bring to a place (goal, "
+                    "no recipient) as the scorer scores a Place")
     ap.add_argument("--errors", type=Path, help="with --dev: write the held-out sentences scored wrong here (TSV)")
     ap.add_argument("--errors-of", default=None, help="with --dev: the table whose errors --errors writes "
                     "('naive Bayes', 'chooser l2 1.0'; default: the first chooser)")
@@ -372,8 +429,9 @@ def main() -> int:
             data = table(*counted, classes, "dev", l2)    # the table as it would ship, read as it is read
             return usage_of(with_steps(data, fit_rows, vocabulary) if l2 is not None else data)
 
-        def show(name: str, figures: dict[str, float]) -> None:
-            print(f"{name:<34}" + " ".join(f"{k} {v:.3f}" for k, v in figures.items()), flush=True)
+        def show(name: str, figures: dict[str, float | int]) -> None:
+            print(f"{name:<34}" + " ".join(f"{k} {v:.3f}" if isinstance(v, float) else f"{k} {v}"
+                                           for k, v in figures.items()), flush=True)
 
         show("rules alone", score(dev, lambda row: vocabulary.with_usage(WordUsage()), module))
         tables = {"naive Bayes": fitted(None), **{f"chooser l2 {l2}": fitted(l2) for l2 in args.l2}}
@@ -381,16 +439,20 @@ def main() -> int:
             for support in args.min_support:
                 for ratio in args.min_ratio:
                     for weight in args.context_weight:
-                        for threshold in args.step_threshold:
+                        tries = itertools.product(args.step_threshold, args.stack_threshold) if table_.steps \
+                            else [(args.step_threshold[0], args.stack_threshold[0])]
+                        for threshold, stacking in tries:
                             tried = vocabulary.with_usage(replace(
                                 table_, min_support=support, min_ratio=ratio, context_weight=weight,
-                                steps=replace(table_.steps, threshold=threshold)))
+                                steps=replace(table_.steps, threshold=threshold),
+                                stacks=replace(table_.stacks, threshold=stacking)))
+                            first = (threshold, stacking) == (args.step_threshold[0], args.stack_threshold[0])
                             show(f"{name}, support {support} ratio {ratio}" + ("" if table_.weights else
                                                                              f" context {weight}")
-                                 + (f" step {threshold}" if table_.steps else ""),
+                                 + (f" step {threshold}" if table_.steps else "")
+                                 + (f" stack {stacking}" if table_.stacks else ""),
                                  score(dev, lambda row, v=tried: v, module,
-                                       errors if name == args.errors_of and threshold == args.step_threshold[0]
-                                       else None))
+                                       errors if name == args.errors_of and first else None, args.bring_goal))
         if args.errors is not None:
             args.errors.write_text("".join(line + "\n" for line in errors))
             print(f"wrote {args.errors} ({len(errors)} sentences of {args.errors_of} scored wrong)")
@@ -414,7 +476,8 @@ def main() -> int:
     source = (f"ALFRED train goals ({goals.name}: {len(rows)} human goal sentences with their task labels), "
               "parsed by seal's rules; counts of the labelled class by the wording of the phrase that fills its field, "
               "and of the sentence's other words by wording and class")
-    text = dump(with_steps(table(*count(rows, vocabulary, scenes), classes, source), rows, vocabulary))
+    text = dump({**with_steps(table(*count(rows, vocabulary, scenes), classes, source), rows, vocabulary),
+                 "scenery": scenery(args.data, classes)})
     if args.check:
         shipped = args.out.read_text() if args.out.is_file() else ""
         if shipped != text:

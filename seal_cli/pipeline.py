@@ -117,9 +117,18 @@ def unchecked_conditions(parse: Any) -> list[str]:
 
 def inferred_steps(parse: Any) -> list[str]:
     """A note for each frame the parse inferred rather than read (:mod:`seal_cli.language.steps`: the
-    step a sentence most likely leaves unsaid), so that ``seal run`` says what it adds on its own."""
-    return [f"(inferred: {frame.lexical_unit} it first, {frame.inferred:.2f})" for frame in parse.frames
+    step a sentence most likely leaves unsaid; :mod:`seal_cli.language.stacking`: one thing put in the
+    other it was said with), so that ``seal run`` says what it adds on its own."""
+    return [f"(inferred: {_inferred_act(frame)}, {frame.inferred:.2f})" for frame in parse.frames
             if getattr(frame, "inferred", None) is not None]
+
+
+def _inferred_act(frame: Any) -> str:
+    """What an inferred frame does, in words: "cool it first" (a step), "put the apple in the fridge"."""
+    theme, goal = frame.elements.get("theme"), frame.elements.get("goal")
+    if frame.frame == "Place" and theme is not None and goal is not None:
+        return f"{frame.lexical_unit} {theme.text or theme.head} in {goal.text or 'the ' + goal.head}"
+    return f"{frame.lexical_unit} it first"
 
 
 def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.random.Generator,

@@ -38,6 +38,7 @@ from typing import Any
 from seal_cli.errors import SealError, Where
 from seal_cli.frames.taxonomy import class_key, class_words
 from seal_cli.language.lexicon import noun_lemma
+from seal_cli.language.stacking import StackModel
 from seal_cli.language.steps import StepModel
 from seal_cli.language.wordusage import WordUsage, context_words, shipped_word_usage, unsaid_wording
 
@@ -62,6 +63,7 @@ piece exists once its whole has been cut, so naming one asks for the cutting (se
 
 _RULES = WordUsage()
 _NO_STEPS = StepModel()
+_NO_STACKS = StackModel()
 _INDEXES = ("_usage", "_present", "_names", "_own", "_exact", "_by_word", "_rules_alone")
 """The cached indexes a vocabulary builds from its classes and usage, which do not depend on the sentence."""
 
@@ -290,11 +292,22 @@ class Vocabulary:
     def step_model(self) -> StepModel:
         """Which step a sentence leaves unsaid (:mod:`~seal_cli.language.steps`), from the statistics:
         only when every class of this vocabulary is one they were counted over (ALFRED's classes, or
-        a scene's of them), else an empty model (a GPSR arena, a shipped map: no step is inferred)."""
+        a scene's of them, with its scenery: :attr:`~seal_cli.language.wordusage.WordUsage.scenery`),
+        else an empty model (a GPSR arena, a shipped map: no step is inferred)."""
         usage = self._usage
-        if not usage.steps or not set(self._present) <= usage.universe:
+        if not usage.steps or not set(self._present) <= usage.universe | usage.scenery:
             return _NO_STEPS
         return usage.steps
+
+    @property
+    def stack_model(self) -> StackModel:
+        """Which of two things placed together holds the other (:mod:`~seal_cli.language.stacking`),
+        scoped as :attr:`step_model` is: empty unless every class of this vocabulary is one the
+        statistics were counted over."""
+        usage = self._usage
+        if not usage.stacks or not set(self._present) <= usage.universe | usage.scenery:
+            return _NO_STACKS
+        return usage.stacks
 
     def ground_name(self, name: str) -> str | None:
         """The class a class name of the frame library denotes (a default: Slice's ``knife``): by

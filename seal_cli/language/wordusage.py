@@ -47,6 +47,7 @@ from seal_cli.errors import SealError, Where
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.language.chooser import features, logits
 from seal_cli.language.morphology import noun_lemma
+from seal_cli.language.stacking import StackModel
 from seal_cli.language.steps import NONE, STEPS, StepModel
 
 __all__ = ["CONTEXT_PRIOR", "CONTEXT_WEIGHT", "FORMAT", "MIN_RATIO", "MIN_SUPPORT", "SHIPPED", "WordUsage",
@@ -125,6 +126,12 @@ class WordUsage:
     steps: StepModel = field(default_factory=StepModel)
     """Which step a sentence that places a thing and says none most likely means
     (:mod:`~seal_cli.language.steps`); empty: none is inferred."""
+    stacks: StackModel = field(default_factory=StackModel)
+    """Which of two things placed together holds the other (:mod:`~seal_cli.language.stacking`);
+    empty: no stack is read."""
+    scenery: frozenset[str] = frozenset()
+    """Class keys of the scenes the statistics were counted in that no count is of (ALFRED's ``faucet``):
+    a vocabulary of these and :attr:`universe` is one the unsaid step and stack may be inferred in."""
 
     def __post_init__(self) -> None:
         for name in ("counts", "seen", "class_context", "number", "weights"):
@@ -159,7 +166,13 @@ class WordUsage:
                          self.context_weight, add(self.number, other.number),
                          add(self.weights, other.weights),
                          StepModel(add({"": self.steps.prior}, {"": other.steps.prior}).get("", {}),
-                                   add(self.steps.weights, other.steps.weights), self.steps.threshold))
+                                   add(self.steps.weights, other.steps.weights), self.steps.threshold,
+                                   add({"": self.steps.ended}, {"": other.steps.ended}).get("", {}),
+                                   add({"": self.steps.left}, {"": other.steps.left}).get("", {})),
+                         StackModel(add({"": self.stacks.said}, {"": other.stacks.said}).get("", {}),
+                                    add({"": self.stacks.holds}, {"": other.stacks.holds}).get("", {}),
+                                    self.stacks.threshold, self.stacks.min_support),
+                         self.scenery | other.scenery)
 
     def names_one(self, lemmas: tuple[str, ...]) -> bool:
         """Whether a plural phrase whose words up to the head are ``lemmas`` names one thing, as
@@ -179,7 +192,7 @@ class WordUsage:
     def without_context(self) -> WordUsage:
         """These counts with the sentence not weighed (the wording alone decides)."""
         return WordUsage(self.counts, self.universe, self.sources, self.min_support, self.min_ratio, self.seen,
-                         number=self.number, steps=self.steps)
+                         number=self.number, steps=self.steps, stacks=self.stacks, scenery=self.scenery)
 
     def sentence_factor(self, wording: str, lemmas: tuple[str, ...], keys: Iterable[str],
                         words: Iterable[str]) -> dict[str, float]:
@@ -382,7 +395,8 @@ def _table(data: Any, where: Where) -> WordUsage:
         raise SealError("\"weights\" must map each feature to {class of \"classes\": finite number}", where)
     weights = {str(f): {class_key(c): float(v) for c, v in by.items()} for f, by in raw.items()}
     return WordUsage(counts, universe, (str(data.get("source", where.file)),), seen=seen, context=context,
-                     class_context=class_context, number=number, weights=weights, steps=_steps(data, where))
+                     class_context=class_context, number=number, weights=weights, steps=_steps(data, where),
+                     stacks=_stacks(data, universe, where), scenery=_scenery(data, where))
 
 
 def _steps(data: dict[str, Any], where: Where) -> StepModel:
@@ -396,7 +410,33 @@ def _steps(data: dict[str, Any], where: Where) -> StepModel:
             isinstance(by, dict) and all(c in names and isinstance(v, int | float) and not isinstance(v, bool)
                                          and math.isfinite(v) for c, v in by.items()) for by in raw.values()):
         raise SealError("\"step_weights\" must map each feature to {step: finite number}", where)
-    return StepModel(prior, {str(f): {c: float(v) for c, v in by.items()} for f, by in raw.items()})
+    weights = {str(f): {c: float(v) for c, v in by.items()} for f, by in raw.items()}
+    raw = data.get("step_left", {})
+    if not isinstance(raw, dict) or not all(
+            c in STEPS and _word_counts(by) and set(by) <= {"ended", "left"} and by.get("left", 0) <= by.get("ended", 0)
+            for c, by in raw.items()):
+        raise SealError(f"\"step_left\" must map each of {', '.join(STEPS)} to {{\"ended\": count, \"left\": count "
+                        "no greater}", where)
+    return StepModel(prior, weights, ended={c: by.get("ended", 0) for c, by in raw.items()},
+                     left={c: by.get("left", 0) for c, by in raw.items()})
+
+
+def _scenery(data: dict[str, Any], where: Where) -> frozenset[str]:
+    raw = data.get("scenery", [])
+    if not isinstance(raw, list) or not all(isinstance(c, str) and c for c in raw):
+        raise SealError("\"scenery\" must be a list of class names", where)
+    return frozenset(class_key(c) for c in raw)
+
+
+def _stacks(data: dict[str, Any], universe: frozenset[str], where: Where) -> StackModel:
+    """The unsaid-stack model of a table (``stacks``: {class: {"said": count, "holds": count}})."""
+    raw = data.get("stacks", {})
+    if not isinstance(raw, dict) or not all(
+            isinstance(c, str) and class_key(c) in universe and _word_counts(by) and set(by) <= {"said", "holds"}
+            and by.get("holds", 0) <= by.get("said", 0) for c, by in raw.items()):
+        raise SealError("\"stacks\" must map each class of \"classes\" to {\"said\": count, \"holds\": count "
+                        "no greater}", where)
+    return StackModel({c: by.get("said", 0) for c, by in raw.items()}, {c: by.get("holds", 0) for c, by in raw.items()})
 
 
 def _word_counts(table: Any) -> bool:

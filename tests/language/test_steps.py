@@ -14,7 +14,7 @@ from seal_cli.frames.library import Library
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.language.grounding import Vocabulary
 from seal_cli.language.parser import parse_command
-from seal_cli.language.steps import NONE, StepModel, eligible, infer_step, step_features
+from seal_cli.language.steps import NONE, StepModel, eligible, ends_at_steps, infer_left_in, infer_step, step_features
 from seal_cli.language.wordusage import WordUsage, context_words, load_word_usage, shipped_word_usage
 
 KITCHEN = ("Apple", "Fridge", "Microwave", "SinkBasin", "CounterTop", "Mug", "CoffeeMachine", "Potato")
@@ -145,3 +145,57 @@ def test_the_shipped_table_infers_a_step_from_alfred_words(library: Library) -> 
     assert parse.resolve(parse.frames[1].elements["theme"]).cls == "Apple"
     gpsr = Vocabulary.of(["apple", "counter", "fridge", "person"])
     assert [f.frame for f in parse_command(text, library, gpsr).frames] == ["Place", "Place"]
+
+
+LEFT = replace(MODEL, ended={"Cool": 40, "Heat": 3}, left={"Cool": 36, "Heat": 3})
+
+
+def test_a_sentence_that_ends_at_two_steps_leaves_the_thing_in_the_last_one_s_instrument(library: Library) -> None:
+    parse = parse_command("heat and chill an apple", library, kitchen(LEFT))
+    assert [f.frame for f in parse.frames] == ["Heat", "Cool", "Place"]
+    place = parse.frames[2]
+    assert place.inferred == 0.9
+    assert parse.resolve(place.elements["theme"]).cls == "Apple"
+    assert parse.resolve(place.elements["goal"]).cls == "Fridge"
+    assert parse.to_json()["frames"][2]["inferred"] is True
+
+
+def test_no_place_left_unsaid_after_one_step_a_place_said_too_few_or_off(library: Library) -> None:
+    assert [f.frame for f in parse_command("chill an apple", library, kitchen(LEFT)).frames] == ["Cool"]
+    assert [f.frame for f in parse_command("chill and heat an apple", library, kitchen(LEFT)).frames] == \
+        ["Cool", "Heat"]                                          # three such sentences: too few to trust
+    said = parse_command("heat and chill an apple, then put it on the counter", library, kitchen(LEFT))
+    assert [f.frame for f in said.frames] == ["Heat", "Cool", "Place"] and said.frames[2].inferred is None
+    assert ends_at_steps(said) is None
+    off = parse_command("heat and chill an apple", library, kitchen(LEFT), infer_steps=False)
+    assert ends_at_steps(off) == 1 and infer_left_in(off, library, StepModel()) is off
+
+
+def test_a_table_s_left_counts_are_read_and_checked(tmp_path: Path) -> None:
+    path = tmp_path / "t.json"
+    path.write_text(json.dumps({"format": "seal-word-classes/1", "classes": ["Mug"], "words": {},
+                                "step_left": {"Cool": {"ended": 8, "left": 6}}}))
+    assert load_word_usage([path]).steps.left_rate("Cool") == 0.75
+    path.write_text(json.dumps({"format": "seal-word-classes/1", "classes": ["Mug"], "words": {},
+                                "step_left": {"Cool": {"ended": 2, "left": 6}}}))
+    with pytest.raises(SealError, match='"step_left" must map'):
+        load_word_usage([path])
+
+
+def test_a_scene_s_scenery_keeps_its_vocabulary_one_the_statistics_know(tmp_path: Path) -> None:
+    with_faucet = Vocabulary.of([*KITCHEN, "Faucet"], usage=usage())
+    assert not with_faucet.step_model
+    scenic = Vocabulary.of([*KITCHEN, "Faucet"], usage=replace(usage(), scenery=frozenset({"faucet"})))
+    assert scenic.step_model is MODEL and scenic.stack_model is not None
+    path = tmp_path / "t.json"
+    path.write_text(json.dumps({"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "scenery": "Faucet"}))
+    with pytest.raises(SealError, match='"scenery" must be a list'):
+        load_word_usage([path])
+
+
+def test_the_alfred2d_suite_s_scenes_get_the_shipped_models() -> None:
+    from seal_cli.bench.alfred2d import suite_vocabulary
+
+    suite = suite_vocabulary()
+    assert "faucet" in {c.lower() for c in suite.classes}
+    assert suite.step_model and suite.stack_model
