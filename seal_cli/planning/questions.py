@@ -130,7 +130,8 @@ def _state(asked: str, names: MapNames | None) -> Question:
     *in the bedroom*?": ``about`` the bedroom, where the robot looks for it)."""
     words = asked.split()
     for i, word in enumerate(words):
-        if word.lower() in ("in", "on", "at", "inside") and i:
+        after_state = 0 < i < len(words) - 1 and words[i - 1].lower() in STATE_WORDS
+        if word.lower() in ("in", "on", "at", "inside") and after_state:
             phrase = " ".join(words[i + 1:])
             found = names.ground(phrase, "location", ("room", "place")) if names and words_of(phrase) else None
             return Question("state", found.id if found is not None else None, " ".join(words[:i]))

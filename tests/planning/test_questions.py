@@ -76,5 +76,8 @@ def test_seeing_whether_asks_whether(library: Library) -> None:
 def test_a_state_question_keeps_where_the_thing_is(library: Library) -> None:
     assert asked("is the window open in the bedroom?", library) == [
         ("LookAt(theme=window)", Question("state", "bedroom", "open"))]
+    assert asked("is the stove still on in the kitchen?", library) == [
+        ("LookAt(theme=stove_1)", Question("state", "kitchen", "still on"))]
+    assert asked("is the stove still on?", library) == [("LookAt(theme=stove_1)", Question("state", None, "still on"))]
     negated = Question("state", None, "not open")
     assert asked("is the fridge not open?", library) == [("LookAt(theme=fridge_1)", negated)]
