@@ -1,0 +1,37 @@
+"""The shipped word-class table is what ``scripts/build_word_classes.py`` gives on ALFRED's train split:
+a change to the parser or the chooser that shifts a count must ship the rebuilt table with it."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from seal_cli.language.wordusage import SHIPPED
+
+ROOT = Path(__file__).resolve().parents[2]
+SCRIPT = ROOT / "scripts" / "build_word_classes.py"
+
+
+def test_the_shipped_table_is_what_the_train_split_gives(shared_data: Path, tmp_path: Path) -> None:
+    if not (shared_data / "alfred" / "goals_train.tsv").is_file():
+        pytest.skip("no ALFRED train goals")
+    out = tmp_path / "alfred_train.json"
+    done = subprocess.run([sys.executable, str(SCRIPT), "--data", str(shared_data), "--out", str(out)],
+                          capture_output=True, text=True, timeout=900)
+    assert done.returncode == 0, done.stdout + done.stderr
+    shipped = (SHIPPED / "alfred_train.json").read_text()
+    assert out.read_text() == shipped, "the shipped table is stale: run python scripts/build_word_classes.py"
+    out.write_text(shipped.replace('"cabinet": {"Cabinet": ', '"cabinet": {"Cabinet": 1', 1))
+    check = subprocess.run([sys.executable, str(SCRIPT), "--check", "--data", str(shared_data), "--out", str(out)],
+                           capture_output=True, text=True, timeout=900)
+    assert check.returncode == 1 and "differs" in check.stderr
+
+
+def test_a_missing_data_folder_is_named(tmp_path: Path) -> None:
+    done = subprocess.run([sys.executable, str(SCRIPT), "--check", "--data", str(tmp_path)],
+                          capture_output=True, text=True, timeout=60)
+    assert done.returncode == 1
+    assert str(tmp_path / "alfred" / "goals_train.tsv") in done.stderr and "Traceback" not in done.stderr
