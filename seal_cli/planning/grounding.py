@@ -126,6 +126,11 @@ def _split(words: tuple[str, ...]) -> tuple[tuple[str, ...], tuple[str, ...]]:
     return words, ()
 
 
+def where_words(text: str) -> str:
+    """The words of a phrase that say where its thing is ("the cup in the bedroom": "bedroom"); "" for none."""
+    return " ".join(_split(words_of(text))[1])
+
+
 class MapNames:
     """The rooms, places and people of a map, by the words that call them (see the module docstring)."""
 

@@ -46,7 +46,7 @@ from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding, Fact, Frame
 from seal_cli.frames.taxonomy import Taxonomy, check_class_name, class_key, class_words
 from seal_cli.maps.model import SPEAKER
-from seal_cli.planning.grounding import FIXED, PAIRED, is_room_word, kind_of, words_of
+from seal_cli.planning.grounding import FIXED, PAIRED, is_room_word, kind_of, where_words, words_of
 from seal_cli.planning.state import State, robot_facts
 
 OPENABLE = "openable"
@@ -402,6 +402,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
             values["goal"] = (SPEAKER,)
         _to_recipient(frame, values, things)
         _check_types(frame, values, evoked.elements, things, parse.text)
+        bindings.extend(_where_said_first(frame, evoked, values, library, things, parse.text))
         earlier.append(values)
         roles = [r for r in frame.roles if r in values]
         if len(bindings) + math.prod(len(values[r]) for r in roles) > MAX_COMMANDED:
@@ -451,6 +452,43 @@ def _sought_where(evoked: Evoked, role: str, things: Things) -> Phrase:
     return there if found is not None else phrase
 
 
+def _where_said_first(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]], library: Library,
+                      things: Things, text: str) -> list[Binding]:
+    """The frames that take a theme from where its phrase says it is, for a frame with no element to
+    carry that: "wash the cup in the bedroom" picks the cup up there first (Pick with the room as its
+    source), "switch on the lamp in the study" finds the lamp there first (Find with the room or place
+    as its ground). A where the map lacks is refused ("the townhouse has no living room"), never
+    dropped. Nothing for a frame with a source or a ground of its own, which the parser fills."""
+    names = things.names
+    phrase = evoked.elements.get("theme")
+    if (names is None or phrase is None or not phrase.text or phrase.conjuncts or "theme" not in values
+            or {"source", "ground"} & set(frame.roles)):
+        return []
+    said = where_words(phrase.text)
+    if not said:
+        return []
+    try:
+        there = names.ground(said, "location", ("room", "place"))
+    except SealError as wrong:
+        raise _located(wrong.message, phrase, text) from None
+    if there is None:
+        refused = names.refusal(said, None)
+        if refused is not None:
+            raise _located(refused.message, phrase, text)
+        return []                           # "the cup of tea", "the book with the red cover": no where
+    room = there.id if there.kind == "room" else there.room
+    held = any(f.predicate == "holding" and f.args == ("theme",) for f in frame.preconditions)
+    first: list[Binding] = []
+    for value in values["theme"]:
+        if names.by_id(value) is not None or value in things.people:     # a map thing: it stays where it is
+            continue
+        if held and room is not None:
+            first.append(library.frame("Pick").bind({"theme": value, "source": room}))
+        elif not held:
+            first.append(library.frame("Find").bind({"theme": value, "ground": there.id}))
+    return first
+
+
 def _contains(words: tuple[str, ...], part: tuple[str, ...]) -> bool:
     return bool(part) and any(words[i:i + len(part)] == part for i in range(len(words) - len(part) + 1))
 
@@ -490,6 +528,7 @@ def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:
     known = set(m.priors) | {o.cls for o in m.objects} | {p.cls for p in m.places}
     placed = {p.key for p in m.people} | {SPEAKER}
     warnings: dict[str, None] = {}
+    unknown: set[str] = set()
     for binding in commanded:
         for role, value in binding.values:
             category = binding.frame.element(role).type
@@ -500,9 +539,10 @@ def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:
                 if value not in placed and value != "person":     # "a person", "anyone": whoever is there
                     warnings.setdefault(f"nobody on the map {m.name} is called {value}: seal run will search "
                                         "the whole house for them", None)
-            elif cls not in known:
+            elif cls not in known and cls not in unknown:    # said once, where it is first looked for
                 ground = binding.elements.get("ground")
                 where = f"look for it in {ground}" if ground and role != "ground" else "search the whole house for it"
+                unknown.add(cls)
                 warnings.setdefault(f"the map {m.name} knows nothing of {cls} (no prior, object or place names "
                                     f"it): seal run will {where}", None)
     return list(warnings)

@@ -102,3 +102,25 @@ def test_a_place_sought_in_a_room_is_that_rooms_place(library: Library) -> None:
         assert [str(b) for b in problem_of_text(text, library, map=apartment).commanded] == [plan]
     with pytest.raises(SealError, match=re.escape("has no sofa in the kitchen; it has sofa_1 (family_room)")):
         problem_of_text("find the sofa in the kitchen", library, map=apartment)
+
+
+def test_where_a_theme_is_said_to_be_is_where_it_is_taken_from(library: Library) -> None:
+    """A frame with no source or ground of its own takes its theme from where the phrase says it is:
+    held, a Pick from that room first; not held, a Find there first. A where the map lacks is refused
+    with a caret under it, never dropped; a phrase that says no where ("a cup of coffee") is left alone."""
+    from seal_cli.errors import SealError
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+
+    apartment = load_map(map_path("apartment"))
+    for text, plan in (("wash the cup in the bedroom", ["Pick(theme=cup, source=bedroom)",
+                                                         "Clean(theme=cup, instrument=sink_1)"]),
+                       ("put the cup from the bedroom on the dining table",
+                        ["Pick(theme=cup, source=bedroom)", "Place(theme=cup, goal=dining_table_1)"]),
+                       ("switch on the radio in the kitchen", ["Find(theme=radio, ground=kitchen)",
+                                                               "ToggleOn(theme=radio)"]),
+                       ("bring me a cup of coffee", ["Bring(theme=cup, recipient=me)"])):
+        assert [str(b) for b in problem_of_text(text, library, map=apartment).commanded] == plan, text
+    with pytest.raises(SealError, match=re.escape("the apartment has no garage; its rooms are")) as refused:
+        problem_of_text("wash the cup in the garage", library, map=apartment)
+    assert refused.value.where is not None and refused.value.where.column == 6
