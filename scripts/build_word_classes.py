@@ -111,8 +111,19 @@ def fields(parse: Parse, row: dict[str, str]) -> Iterable[tuple[Phrase, str]]:
     if row["toggle"] and toggles:
         found.append((el(toggles[0], "theme"), row["toggle"]))
     for phrase, label in found:
+        if phrase is not None and phrase.conjuncts:
+            phrase = labelled_conjunct(phrase, label)
         if phrase is not None and label:
             yield phrase, label
+
+
+def labelled_conjunct(phrase: Phrase, label: str) -> Phrase | None:
+    """The conjunct of a coordination the label names: the one the rules ground as the labelled class.
+    A coordination stands for its first conjunct, but "move a pen and mug to the dresser" labels the pen
+    as the object and "move a mug and pen" too: the first conjunct would teach that a mug said beside
+    "and" is a Pen. The coordination itself (its first conjunct) when no one conjunct is the label's."""
+    named = [c for c in phrase.conjuncts if c.cls is not None and class_key(c.cls) == class_key(label)]
+    return named[0] if len(named) == 1 else phrase
 
 
 Counts = dict[str, Counter[str]]

@@ -229,11 +229,26 @@ REQUESTS = frozenset(["i'd like", "i would like", "i'd love", "i would love", "i
 """A request for a thing said as the speaker's wish ("*I'd like* the red mug", "*Can I have* the big plate",
 "*I need* a pen"): it means "bring me ..." (``REQUEST_MEANS``, with the speaker as recipient)."""
 REQUEST_MEANS = "bring"
+WISHED_PLACED = frozenset(["i want", "i'd like", "i would like", "we want", "we'd like", "we would like"])
+WISHED_PLACES = frozenset(["on", "onto", "in", "into", "inside", "under"])
+PLACE_MEANS = "put"
+""""*I want* the mug *on* the shelf", "I'd like the books in the box": the speaker's wish for where a thing is,
+a phrase and a preposition of place (canonical, ``PREPOSITIONS``) with its phrase ending the sentence, means
+"put the mug on the shelf" (``PLACE_MEANS``); "I need the scissors *from* the drawer" stays a request."""
 KNOW_WISHES = frozenset(["i'd like to know", "i would like to know", "i want to know", "i wanna know", "i need to know",
                          "i'd love to know", "i would love to know", "do you know", "i wonder", "i'm wondering",
                          "i am wondering", "i was wondering", "i'm curious", "i'm curious about"])
 """The speaker's wish to know, said where a command starts ("*I'd like to know* the heaviest object on the
 shelf", "*do you know* how many cups are left"): it means "tell me ..." (``QUESTION_MEANS``)."""
+WHERE_ASKERS = frozenset(["tell me", "tell us", "show me", "show us", "any idea", "have you any idea",
+                          "do you have any idea", "would you know", "do you happen to know",
+                          "let me know", "let us know", "know"]) | KNOW_WISHES
+"""A question about the robot's knowledge of where a thing is ("*do you know* where the tea spoon is?", "*can
+you tell me* where the keys are?", "*show me* where the remote is"): a request to find it and say where it is,
+read as "where is ..." ("find ...", ``WHERE_MEANS``); the verb of being after the thing is dropped
+(``WHERE_BE``). Said before "where" only; "do you know how many ..." stays a wish to know."""
+WHERE_BE = frozenset(["is", "are", "'s", "was", "were", "went", "goes", "go", "got to", "has gone", "have gone",
+                      "ended up", "has got to", "have got to", "might be", "could be", "would be", "can be"])
 NUMBER_OF = frozenset(["tell me the number of", "tell me the total number of", "what is the number of",
                        "what 's the number of", "what is the total number of", "what 's the total number of",
                        "what number of", "give me the number of", "tell me the count of", "report the number of"])
@@ -259,6 +274,10 @@ it is there, asked as "find ..." (``WHERE_MEANS``), as "is anyone in the kitchen
 STATE_MEANS = "check"
 """"*Is* the fridge *open*?", "check *whether* the door is *closed*": a yes/no question about a thing's state means
 "check the fridge" (a unit of LookAt in the standard library), the state asked kept beside the frame."""
+ENSURED = frozenset(["make sure", "make certain", "ensure", "be sure", "see to it", "check that", "double check that"])
+""""*Make sure* the stove is off", "*ensure* the door is closed": the state asked for is what to bring about,
+the verb whose result it is ("turn off": ``SWITCHED_MEANS``; "closed": "close", the verb of the participle,
+when it is a lexical unit of the library); "that" may follow ("make sure *that* the lamp is on")."""
 STATE_ASKERS = frozenset(["tell me", "let me know", "let us know", "do you know", "i'd like to know",
                           "i would like to know", "i want to know", "i wonder", "i was wondering", "find out",
                           "check", "see", "look and see", "go and see", "go and check", "go check", "go see",

@@ -457,3 +457,26 @@ def test_where_a_relative_clause_says_the_thing_is_is_where_to_take_it_from(libr
     assert texts("give me the object behind the mug from the desk", library) == [   # "from" says where
         ("Bring", {"theme": "the object behind the mug", "recipient": "me", "source": "the desk"})]
     assert "source" not in texts("carry the pot turning on a lamp", library)[0][1]     # "turn on": no place
+
+
+def test_a_question_about_what_the_robot_knows_of_where_asks_to_find(library: Library) -> None:
+    assert frames("Do you know where the tea spoon is?", library) == [("Find", {"theme": "spoon"})]
+    assert frames("can you tell me where the keys are?", library) == [("Find", {"theme": "key"})]
+    assert frames("Would you know where I left my phone?", library) == [("Find", {"theme": "phone"})]
+    assert frames("would you mind showing me where the remote is", library) == [("Find", {"theme": "remote"})]
+    assert [f for f, _ in frames("do you know how many cups are left", library)] == ["Count"]   # no "where"
+
+
+def test_making_sure_of_a_state_is_the_verb_whose_result_it_is(library: Library) -> None:
+    assert frames("please make sure the stove is off", library) == [("ToggleOff", {"theme": "stove"})]
+    assert frames("Please make sure the door is closed", library) == [("Close", {"theme": "door"})]
+    assert frames("ensure that the lights are turned off", library) == [("ToggleOff", {"theme": "light"})]
+    assert [f for f, _ in frames("make sure the window is open and bring me the milk", library)] == ["Open", "Bring"]
+    with pytest.raises(CommandError):
+        parse_command("make sure the cat is happy", library)      # no verb's result: an error, not a guess
+
+
+def test_a_wish_for_where_a_thing_is_puts_it_there(library: Library) -> None:
+    assert frames("I want the mug on the shelf", library) == [("Place", {"theme": "mug", "goal": "shelf"})]
+    assert [f for f, _ in frames("I need the scissors from the drawer", library)] == ["Bring"]
+    assert [f for f, _ in frames("I'd like the red mug please", library)] == ["Bring"]

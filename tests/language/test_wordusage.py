@@ -343,3 +343,10 @@ def test_a_misspelling_is_read_as_the_word_people_say_only_when_nothing_matches(
     assert vocab.ground_words(["stovve"]) == "StoveBurner"
     assert vocab.with_usage(RULES).ground_words(["stovve"]) is None                   # the rules alone: unknown
     assert Vocabulary.of(["parcel", "DiningTable"], usage=usage_).ground_words(["parcel"]) == "parcel"
+
+
+def test_a_second_conjunct_is_not_grounded_as_the_first(library: Library) -> None:
+    vocabulary = Vocabulary.of(["Pen", "Pencil", "Mug", "Cup", "Dresser", "ButterKnife", "Knife", "SinkBasin"])
+    parse = parse_command("Move a pen and mug to a dresser", library, vocabulary)
+    said = [c.cls for f in parse.frames for e in f.elements.values() for c in (e, *e.conjuncts)]
+    assert "Mug" in said and "Pen" in said      # the table learned "mug" beside "and" as Pen (the stack's label)

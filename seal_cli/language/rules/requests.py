@@ -16,6 +16,7 @@ from seal_cli.language.english import (
     CHECK_WHETHER,
     DETERMINERS,
     END_MARKS,
+    ENSURED,
     FOUND_OUT,
     HERE_WORDS,
     KNOW_WISHES,
@@ -25,6 +26,7 @@ from seal_cli.language.english import (
     OBJECT_PRONOUNS,
     PATH_ALONE,
     PATH_MEANS,
+    PLACE_MEANS,
     POSSESSIVES,
     PREPOSITIONS,
     PRONOUNS,
@@ -37,9 +39,13 @@ from seal_cli.language.english import (
     STATE_MEANS,
     STATE_PARTICLES,
     SWITCHED_MEANS,
+    WHERE_ASKERS,
+    WHERE_BE,
     WHERE_DID,
     WHERE_MEANS,
     WHERE_QUESTIONS,
+    WISHED_PLACED,
+    WISHED_PLACES,
 )
 from seal_cli.language.morphology import gerund_lemma, is_adjective, noun_lemma, participles, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
@@ -116,6 +122,51 @@ def _where_did(s: State, i: int) -> Match | None:
     end = words[i + 3].end
     return Match(4, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, WHERE_MEANS),),
                  expect=False, verb=WHERE_MEANS, using=False)
+
+
+def _where_asker(s: State, i: int) -> int:
+    """How many words of a lead-in asking where start at ``i``: a phrase of ``WHERE_ASKERS``, or its verb
+    as a gerund after "would you mind" ("*showing me* where the remote is")."""
+    n = _phrase(s, i, WHERE_ASKERS)
+    if n or i + 1 >= len(s.words):
+        return n
+    lemma = gerund_lemma(s.words[i].lower)
+    return 2 if lemma and f"{lemma} {s.words[i + 1].lower}" in WHERE_ASKERS else 0
+
+
+def _asked_where(s: State, i: int) -> Match | None:
+    """"*Do you know where* the tea spoon is?", "*can you tell me where* the keys are?", "*would you know
+    where I left* my phone?": a question about what the robot knows of where a thing is asks it to find
+    the thing (``WHERE_MEANS``), as "where is the tea spoon?" does. The lead-in, "where" and, when a
+    subject and its verb follow ("where *I left*"), those are the verb; a phrase must follow."""
+    words = s.words
+    n = _where_asker(s, i)
+    k = i + n
+    if not n or WHERE_MEANS not in s.lexicon.units or k >= len(words) or words[k].lower != "where":
+        return None
+    k += 1
+    subjects, verb = WHERE_DID[2], k + 1
+    if k < len(words) and words[k].lower in subjects and verb < len(words) and words[verb].lower.isalpha() and \
+            words[verb].lower not in DETERMINERS and words[verb].lower not in WHERE_BE:
+        k = verb + 1                              # "where *I left* my phone"
+    if not s.np_starts(k) or words[k].lower in PRONOUNS:
+        return None                               # "tell me where *it* is": what was found, told
+    end = words[k - 1].end
+    return Match(k - i, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, WHERE_MEANS),),
+                 expect=False, verb=WHERE_MEANS, using=False)
+
+
+def _where_be(s: State, i: int) -> Match | None:
+    """The "is" of "do you know where the tea spoon *is*?": after the thing asked about, at the end of the
+    sentence, dropped ("where" was read as "find")."""
+    if s.verb_index < 0 or s.out[s.verb_index].info != WHERE_MEANS or \
+            "where" not in s.out[s.verb_index].lower.split()[:-1] and \
+            s.out[s.verb_index].lower.split()[-1] != "where" or s.prev_tag() not in (Tag.WORD, Tag.NAME):
+        return None
+    n = _phrase(s, i, WHERE_BE)
+    if not n or i + n < len(s.words) and s.words[i + n].lower not in END_MARKS:
+        return None
+    return Match(n)
 
 
 _WHETHER_IS = frozenset(["is", "are", "isn't", "aren't"])
@@ -212,6 +263,64 @@ def _state_question_end(s: State, i: int) -> int | None:
             return None
         return q
     return None
+
+
+_ENSURED_BE = BE_WORDS | frozenset(["gets", "get", "stays", "stay", "remains", "remain"])
+
+
+def _ensured_state(s: State, j: int) -> tuple[str, int] | None:
+    """At the verb of being of "make sure the door *is closed*": the unit whose result the state is, and how
+    many words (the verb of being, adverbs, the state) it takes to the clause's end; None when the state is no
+    result of a lexical unit. "on"/"off" are switching (``SWITCHED_MEANS``), a participle its verb ("closed":
+    "close"; "turned off": "turn off"), an adjective that is a verb's base form its verb ("open", "clean")."""
+    words = s.words
+    if j >= len(words) or words[j].lower not in _ENSURED_BE:
+        return None
+    end = _clause_stop(s, j)
+    while end > j and words[end - 1].lower in (",", "please"):
+        end -= 1
+    k = j + 1
+    while k < end and words[k].lower in STATE_ADVERBS:
+        k += 1
+    state = [w.lower for w in words[k:end]]
+    if state and state[-1] in ("now", "again"):
+        state.pop()
+    if len(state) == 1 and state[0] in SWITCHED_MEANS:
+        unit = SWITCHED_MEANS[state[0]]
+    elif len(state) in (1, 2) and (len(state) == 1 or state[1] in SWITCHED_MEANS):
+        unit = " ".join([verb_lemma(state[0]) or state[0], *state[1:]])
+    else:
+        return None
+    parts = tuple(unit.split())
+    return (unit, end - j) if parts in s.lexicon.units.get(parts[0], ()) else None
+
+
+def _ensured(s: State, i: int) -> Match | None:
+    """"*Make sure* the stove is off", "please ensure the door is closed": a state to bring about is the verb
+    whose result it is (:func:`_ensured_state`), said of the phrase before the verb of being; "make sure" is
+    that verb, and the state is dropped after the phrase (:data:`ENSURED_STATE`)."""
+    words = s.words
+    n = _phrase(s, i, ENSURED)
+    k = i + n
+    if n and k < len(words) and words[k].lower == "that":
+        k += 1
+    if not n or not s.np_starts(k) or words[k].lower in ("you", "i", "we", "there"):
+        return None
+    be = next((j for j in range(k + 1, _clause_stop(s, k)) if words[j].lower in _ENSURED_BE), None)
+    found = None if be is None else _ensured_state(s, be)
+    if found is None:
+        return None
+    end = words[k - 1].end
+    return Match(k - i, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, found[0]),),
+                 expect=False, verb=found[0], using=False)
+
+
+def _ensured_dropped(s: State, i: int) -> Match | None:
+    verb = s.out[s.verb_index] if s.verb_index >= 0 else None
+    if verb is None or not any(verb.lower.startswith(p) for p in ENSURED) or s.prev_tag() not in (Tag.WORD, Tag.NAME):
+        return None
+    found = _ensured_state(s, i)
+    return None if found is None or found[0] != verb.info else Match(found[1])
 
 
 def _state_question(s: State, i: int) -> Match | None:
@@ -361,6 +470,29 @@ def _request(s: State, i: int) -> Match | None:
     text = s.text_of(words[i].start, end) or " ".join(w.text for w in words[i:i + n])
     return Match(n, (Word(text, words[i].start, end, Tag.VERB, REQUEST_MEANS),
                      _unsaid(end, Tag.PRON, None, _SPEAKER)), expect=False, verb=REQUEST_MEANS, using=False)
+
+
+def _wished_placed(s: State, i: int) -> Match | None:
+    """"*I want* the mug on the shelf": a wish for a thing to be somewhere is putting it there (``PLACE_MEANS``):
+    a phrase, then one preposition of place (``WISHED_PLACES``) whose phrase ends the sentence, no verb
+    between; the wish is the verb."""
+    words = s.words
+    n = _phrase(s, i, WISHED_PLACED)
+    k = i + n
+    if not n or (PLACE_MEANS,) not in s.lexicon.units.get(PLACE_MEANS, ()) or not s.np_starts(k) or \
+            words[k].lower in ("you", "to", "it", "them") or s.verb_at(k) is not None:
+        return None
+    end = _sentence_end(s, k)
+    while end > k and words[end - 1].lower in (",", "please"):
+        end -= 1
+    at = [p for p in range(k + 1, end) if words[p].lower in PREPOSITIONS or words[p].lower in (",", "and", "then")
+          or s.verb_at(p) is not None and words[p - 1].lower not in DETERMINERS and
+          words[p - 1].lower not in POSSESSIVES]
+    if len(at) != 1 or PREPOSITIONS.get(words[at[0]].lower) not in WISHED_PLACES or not s.np_starts(at[0] + 1):
+        return None
+    start, stop = words[i].start, words[k - 1].end
+    return Match(n, (Word(s.text_of(start, stop), start, stop, Tag.VERB, PLACE_MEANS),), expect=False,
+                 verb=PLACE_MEANS, using=False)
 
 
 def _sentence_end(s: State, i: int) -> int:
@@ -626,6 +758,10 @@ WHETHER_IS_RULE = Rule("is X somewhere", _whether_is, (
     Example("Is Ben in the kitchen?", "Is", Tag.VERB),
     Example("are the apples in the fridge?", "are", Tag.VERB),
 ), _WHETHER_IS, "'is X in Y?': find X in Y, and answer whether it is there")
+WISHED_PLACED_RULE = Rule("a wish for where a thing is", _wished_placed, (
+    Example("I want the mug on the shelf", "I want", Tag.VERB),
+    Example("I'd like the books in the box, please", "I'd like", Tag.VERB),
+), first_words(WISHED_PLACED), "'I want X on Y': put X on Y")
 REQUEST = Rule("wish for a thing", _request, (
     Example("I'd like the red mug", "I'd like", Tag.VERB),
     Example("Can I have the big plate?", "Can I have", Tag.VERB),
@@ -692,6 +828,24 @@ TOLD_HOW_MANY = Rule("said how many", _told_how_many, (
 HOW_MANY_SAID = Rule("how many, said", _how_many_said, (
     Example("tell Anna how many cups are left", "how many cups are left", Tag.SAID),
 ), frozenset(["how"]), "'how many ...' after a verb of saying and the person told: what is said")
+ASKED_WHERE = Rule("asked where", _asked_where, (
+    Example("Do you know where the tea spoon is?", "Do you know where", Tag.VERB),
+    Example("can you tell me where the keys are?", "tell me where", Tag.VERB),
+    Example("Would you know where I left my phone?", "know where I left", Tag.VERB),
+    Example("would you mind showing me where the remote is", "showing me where", Tag.VERB),
+), None, "'do you know / tell me where X is': find X")
+WHERE_BE_DROPPED = Rule("is, after asked where", _where_be, (
+    Example("do you know where the tea spoon is", "is", ""),
+    Example("do u know where the remote went", "went", ""),
+), None, "the 'is' of 'do you know where X is', dropped: 'do you know where' was read as 'find'")
+ENSURED_RULE = Rule("make sure of a state", _ensured, (
+    Example("please make sure the stove is off", "make sure", Tag.VERB),
+    Example("Please make sure the door is closed", "make sure", Tag.VERB),
+    Example("ensure that the lights are turned off", "ensure that", Tag.VERB),
+), first_words(ENSURED), "'make sure X is off / closed': turn X off, close X")
+ENSURED_STATE = Rule("the state made sure of", _ensured_dropped, (
+    Example("make sure the lamp is on", "is on", ""),
+), _ENSURED_BE, "the 'is closed' of 'make sure the door is closed', dropped: it was read as the verb")
 KNOW_WISH = Rule("wish to know", _know_wish, (
     Example("I'd like to know the heaviest object on the bookshelf.", "I'd like to know", Tag.VERB),
     Example("Do you know how many people in the bedroom are wearing white jackets?", "Do you know how many",
