@@ -44,8 +44,8 @@ if TYPE_CHECKING:
 
 __all__ = ["FOUR", "GRID", "MOVABLE_RECEPTACLES", "TASK_TYPES", "Condition", "Episode", "FloorPlan", "Placement",
            "Receptacle", "Suite", "Task", "build_scene", "build_world", "estimate_priors", "gold_commands",
-           "gold_classes", "goal_conditions", "judge", "load_suite", "read_floorplans", "read_trials", "scene_priors",
-           "scene_vocabulary", "suite_vocabulary", "thor_yaw", "train_priors"]
+           "gold_classes", "goal_conditions", "judge", "load_suite", "open_floor", "read_floorplans", "read_trials",
+           "scene_priors", "scene_vocabulary", "suite_vocabulary", "thor_yaw", "train_priors"]
 
 GRID = 0.25
 """ALFRED's agent grid, metres."""
@@ -350,6 +350,23 @@ def scene_priors(priors: Mapping[str, Mapping[str, float]], plan: FloorPlan, cla
     return out
 
 
+def open_floor(priors: Mapping[str, Mapping[str, float]], plan: FloorPlan, classes: Iterable[str],
+               floor: float = 0.02) -> dict[str, float]:
+    """Per class, the learnt chance that a thing of it lies on no receptacle of this floor plan (``"_none"``
+    of :func:`estimate_priors`: a baseball bat or a tennis racket on the floor), restricted to this plan
+    as :func:`scene_priors` restricts the rest: the none share against it plus the present receptacle
+    classes' (each at least ``floor``). The search of the open floor reads it
+    (:attr:`~seal_cli.sim.agent.Scene.open_floor`); classes never on the floor are left out."""
+    present = sorted({class_key(r.cls) for r in plan.receptacles if r.receptacle})
+    out = {}
+    for cls in classes:
+        learnt = priors.get(class_key(cls), {})
+        none = float(learnt.get("_none", 0.0))
+        if none > 0:
+            out[class_key(cls)] = none / (none + sum(max(learnt.get(rec, 0.0), floor) for rec in present))
+    return out
+
+
 # -- the world --------------------------------------------------------------------------------------
 
 def build_scene(episode: Episode, plan: FloorPlan, library: Library, priors: Mapping[str, Mapping[str, float]],
@@ -380,7 +397,8 @@ def build_scene(episode: Episode, plan: FloorPlan, library: Library, priors: Map
                   robot=MapRobot(episode.start), sensor=MapSensor(range=BELIEF_RANGE, fov_deg=s.spec.fov_deg),
                   grid=occupancy)
     vocabulary = tuple(sorted({i.key for i in world.items.values()}))
-    return Scene(world, the_map, grid, vocabulary, f"{episode.task_dir} ({episode.task_id})")
+    return Scene(world, the_map, grid, vocabulary, f"{episode.task_dir} ({episode.task_id})",
+                 open_floor=open_floor(priors, plan, movable))
 
 
 def _place_reach(item: Item, grid: Grid) -> float:

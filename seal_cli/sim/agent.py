@@ -61,6 +61,10 @@ class Scene:
     vocabulary: tuple[str, ...] = ()
     """The classes present, which the robot's perception knows (empty: any)."""
     title: str = ""
+    open_floor: Mapping[str, float] = field(default_factory=dict)
+    """Per class, the share of its prior that lies on no place at all: anywhere on the open floor
+    (ALFRED-2D: a baseball bat 0.65, a box 0.19, learnt on the train split). The map's priors name
+    places only; this share is what a search of the floor may find (empty: none)."""
 
 
 @dataclass(frozen=True)

@@ -18,6 +18,7 @@ from seal_cli.bench.alfred2d import (
     gold_commands,
     judge,
     load_suite,
+    open_floor,
     read_floorplans,
     scene_priors,
     scene_vocabulary,
@@ -52,6 +53,15 @@ def test_priors_come_from_train_and_put_apples_in_fridges(suite) -> None:  # typ
     assert set(local["apple"]) == {class_key(r.cls) for r in plan.receptacles if r.receptacle}
     for masses in local.values():
         assert sum(masses.values()) == pytest.approx(1.0) and min(masses.values()) > 0
+
+
+def test_the_open_floor_share_is_the_none_share_against_the_rooms_receptacle_classes(suite) -> None:  # type: ignore[no-untyped-def]
+    plan = suite.floor_plans[suite.episodes[0].floor_plan]
+    present = {class_key(r.cls) for r in plan.receptacles if r.receptacle}
+    priors = {"bat": {"_none": 0.6, sorted(present)[0]: 0.4}, "apple": {sorted(present)[0]: 1.0}}
+    got = open_floor(priors, plan, ["bat", "apple"])
+    assert set(got) == {"bat"}   # never on the floor: left out
+    assert got["bat"] == pytest.approx(0.6 / (0.6 + 0.4 + 0.02 * (len(present) - 1)))
 
 
 def test_estimate_priors_counts_parents(suite) -> None:  # type: ignore[no-untyped-def]

@@ -92,6 +92,8 @@ class SeFMPolicy(Policy):
         self._tours.begin(agent)
         self._stood: dict[str, tuple[float, float]] = {}
         self._onward: dict[tuple[str, tuple[float, float]], np.ndarray] = {}
+        self._floor_sight: dict[Cell, np.ndarray] = {}
+        self._prior_shares: dict[str, np.ndarray] = {}
         self.sefm: Any = None
         self.planner: Any = None
         self.key: tuple[str, ...] = ()
@@ -315,7 +317,7 @@ class SeFMPolicy(Policy):
         hidden = np.zeros(len(X), dtype=bool)
         for x, y, r in self.sefm.hidden_places():
             hidden |= np.hypot(X[:, 0] - x, X[:, 1] - y) <= r
-        options = self._looks(agent, target, X, W, field_)
+        options = self._looks(agent, target, X, W, field_, self.floor_share(agent, target, X))
         seeing = self.map.sensor.range
         roomy = any((t := self.map.prior_target(name)) is not None and t[0] == "room"
                     for name in self.map.priors.get(agent.class_of(target), {}))
@@ -513,7 +515,7 @@ class SeFMPolicy(Policy):
         return place.openable and place.id not in agent.opened and not agent.world.items[place.id].is_open
 
     def _looks(self, agent: Agent, target: str, X: np.ndarray, W: np.ndarray,
-               field_: np.ndarray) -> list[Look]:
+               field_: np.ndarray, floor: float = 0.0) -> list[Look]:
         """Every look worth considering: the belief it reveals, the metres to drive there, the view.
 
         A look from a cell reveals what is in or on *every* open place within reach of it, not only
@@ -521,12 +523,15 @@ class SeFMPolicy(Policy):
         receptacles), and what the shut place it opens holds (the heaviest one within reach); a place
         the robot has looked at from within reach while it was open holds nothing more to see. The
         cells are each place's nearest stand cell by path and, on a 0.25 m lattice, every cell within
-        reach of a place, so a cell that reaches two likely places beats the nearest cell of either."""
+        reach of a place, so a cell that reaches two likely places beats the nearest cell of either.
+        With ``floor`` (the chance the thing lies on the open floor, :meth:`floor_share`) the places hold
+        1 − ``floor`` of the belief, and every look also reveals the floor's share of the unseen floor
+        points in sight of it (:meth:`_floor_looks`, which adds the looks from open floor)."""
         places = self._places(agent)
-        share = self._shares(agent, places, X, W, agent.class_of(target))
+        share = self._shares(agent, places, X, W, agent.class_of(target)) * (1.0 - floor)
         live = np.array([p.id not in agent.inspected for p in places], dtype=bool) & (share > 0)
         if not live.any():
-            return []
+            return self._floor_looks(agent, [], len(places), floor, field_)
         shut = np.array([self._shut(agent, p) for p in places], dtype=bool)
         cells = self._lattice(agent, [p for p, ok in zip(places, live, strict=True) if ok])
         for place in (p for p, ok in zip(places, live, strict=True) if ok):
@@ -557,7 +562,74 @@ class SeFMPolicy(Policy):
                 reveals[int(best_box[i])] = boxes[i, best_box[i]]
             options.append(Look(mass, float(field_[cell]), View(cell, look_at, open=box.id if box else None, why=why),
                                 reveals))
-        return options
+        return self._floor_looks(agent, options, len(places), floor, field_)
+
+    floor_min = 0.1
+    """The least learnt open-floor share (:attr:`~seal_cli.sim.agent.Scene.open_floor`) for which the floor
+    is searched as a place of its own (below it, the frontier sweep once the places are spent, as
+    before). Chosen on ALFRED-2D's train split (docs/benchmarks.md)."""
+
+    def floor_share(self, agent: Agent, target: str, X: np.ndarray) -> float:
+        """The chance the thing sought lies on the open floor, given that it has not been seen yet.
+
+        Bayes, with a perfect detector: the prior puts f (the scene's learnt :attr:`~seal_cli.sim.agent.
+        Scene.open_floor` share) on the floor, uniformly over its free cells, and 1 − f on the places as
+        the map's priors share it. Not having seen it leaves f·u on the floor (u: the fraction of the floor
+        not yet in sight) and (1 − f)·r on the places (r: the prior share of the places not yet looked
+        into or onto), so the floor's share is f·u / (f·u + (1 − f)·r). 0 below :attr:`floor_min`."""
+        cls = agent.class_of(target)
+        f = float(agent.scene.open_floor.get(cls, 0.0))
+        if f < self.floor_min or f <= 0:
+            return 0.0
+        u = float(np.mean(~self.fallback.seen)) if len(self.fallback.seen) else 0.0
+        places = self._places(agent)
+        if cls not in self._prior_shares or len(self._prior_shares[cls]) != len(places):
+            w = np.asarray(self.map.prior(cls).weights, dtype=float)
+            w = np.where(np.isfinite(w) & (w > 0), w, 0.0)
+            self._prior_shares[cls] = self._shares(agent, places, X, above_floor(w / w.sum()) if w.sum() > 0
+                                                   else np.zeros(len(X)), cls)
+        prior = self._prior_shares[cls]
+        live = np.array([p.id not in agent.inspected for p in places], dtype=bool)
+        r = float(prior[live].sum() / prior.sum()) if prior.sum() > 0 else 0.0
+        on_floor, on_places = f * u, (1.0 - f) * r
+        return on_floor / (on_floor + on_places) if on_floor > 0 else 0.0
+
+    def _floor_looks(self, agent: Agent, looks: list[Look], width: int, floor: float,
+                     field_: np.ndarray) -> list[Look]:
+        """The looks with what each reveals of the open floor: ``floor`` spread evenly over the floor
+        points not yet in sight (the frontier sweep's lattice, :class:`~seal_cli.sim.policies.coverage.
+        CoveragePolicy`: every point within sight of free space), each point its own column after the
+        ``width`` places' (so a point two looks see counts once in the tour); and looks from open floor,
+        one free cell per 0.5 m, that reveal only floor. Unchanged when ``floor`` is 0."""
+        unseen = ~self.fallback.seen
+        if floor <= 0 or not unseen.any():
+            return looks
+        each = floor / float(unseen.sum())
+
+        def floor_of(cell: Cell) -> np.ndarray:
+            if cell not in self._floor_sight:
+                x, y = agent.grid.point(cell)
+                self._floor_sight[cell] = agent.world.sensor.visible((x, y, 0.0), self.fallback.lattice)
+            return np.where(self._floor_sight[cell] & unseen, each, 0.0)
+
+        out = []
+        for o in looks:
+            extra = floor_of(o.view.cell)
+            reveals = np.concatenate([o.reveals if o.reveals is not None else np.zeros(width), extra])
+            out.append(Look(o.mass + float(extra.sum()), o.metres, o.view, reveals))
+        stride = max(1, round(0.5 / agent.grid.resolution))
+        taken = {o.view.cell for o in looks}
+        for i, j in agent.grid.free_cells:
+            cell = (int(i), int(j))
+            if i % stride or j % stride or cell in taken or not np.isfinite(field_[cell]):
+                continue
+            extra = floor_of(cell)
+            if extra.sum() > 0:
+                x, y = agent.grid.point(cell)
+                why = f"looks over the open floor ({floor:.2f} of the belief is there)"
+                out.append(Look(float(extra.sum()), float(field_[cell]), View(cell, (x, y), why=why),
+                                np.concatenate([np.zeros(width), extra])))
+        return out
 
     open_all = True
     """A look from a cell reveals every shut place within reach of it as well as the open ones: the robot

@@ -248,3 +248,36 @@ def test_sefm_finds_the_thing_from_the_look_nearer_the_next_stop(library: Librar
     plain.onward = 0.0
     assert first(ObjectOnlyPolicy(particles=50)) == first(plain) == (3.25, 0.5)
     assert first(SeFMPolicy(particles=50)) == (4.75, 0.5)
+
+
+def test_the_floor_share_is_bayes_over_what_is_still_unseen(library: Library) -> None:
+    """f on the floor, 1 - f on the places: unseen, the floor keeps f·u (u: the floor not yet in sight) and
+    the places (1 - f)·r (r: the prior share of the places not looked at); below floor_min, nothing."""
+    from dataclasses import replace
+
+    scene = replace(corridor(library, {"apple": {"shelf": 0.5, "cabinet": 0.5}}), open_floor={"apple": 0.4})
+    policy = SeFMPolicy(particles=100)
+    agent = ready(library, scene, policy, [("Pick", {"theme": "apple"})])
+    X = policy.map.free_centres
+    agent.inspected.clear()   # no place looked at yet: r = 1
+    u = float(np.mean(~policy.fallback.seen))
+    assert 0.0 < u < 1.0
+    assert policy.floor_share(agent, "apple", X) == pytest.approx(0.4 * u / (0.4 * u + 0.6))
+    agent.inspected |= {p.id for p in policy._places(agent)}
+    assert policy.floor_share(agent, "apple", X) == pytest.approx(1.0)
+    policy.floor_min = 0.5
+    assert policy.floor_share(agent, "apple", X) == 0.0
+
+
+def test_with_the_places_spent_a_thing_often_on_the_floor_is_looked_for_over_the_floor(library: Library) -> None:
+    from dataclasses import replace
+
+    scene = replace(corridor(library, {"apple": {"shelf": 0.8}}), open_floor={"apple": 0.4})
+    policy = SeFMPolicy(particles=100)
+    agent = ready(library, scene, policy, [("Pick", {"theme": "apple"})])
+    agent.inspected |= {p.id for p in policy._places(agent)}
+    view = policy.greedy_view(agent, agent.steps[0], "apple")
+    assert view is not None and "open floor (1.00 of the belief" in view.why
+    x, y = agent.grid.point(view.cell)
+    assert policy.fallback.seen.size and not policy.fallback.seen[
+        np.hypot(policy.fallback.lattice[:, 0] - x, policy.fallback.lattice[:, 1] - y) <= 1.5].all()
