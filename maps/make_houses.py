@@ -1,7 +1,8 @@
-"""Draw the occupancy images of the example houses ``townhouse.yaml``, ``office_floor.yaml`` and
-``cafe.yaml`` and ``clinic.yaml`` (run once; the PGMs are committed next to this script).
+"""Draw the occupancy images of the example houses ``townhouse.yaml``, ``office_floor.yaml``,
+``cafe.yaml`` and ``clinic.yaml``, and of the context suite's unseen houses ``farmhouse.yaml`` and
+``terrace.yaml`` (run once; the PGMs are committed next to this script).
 
-    python maps/make_houses.py          # rewrites maps/townhouse.pgm, maps/office_floor.pgm, maps/cafe.pgm, maps/clinic.pgm
+    python maps/make_houses.py          # rewrites maps/<house>.pgm for each of HOUSES
 
 Each house is a plan on paper, as a user would draw their own: the outer walls, the inner walls
 (centre lines, each with its doors as gaps), and the solid blocks a laser sees (a car, a server
@@ -90,7 +91,7 @@ CAFE = House(
 CLINIC = House(
     "clinic", (0.0, 0.0, 16.0, 10.0),
     walls=(
-        ((0.0, 5.0, 16.0, 5.0), ((5.0, 6.0), (8.0, 9.5), (13.0, 14.0))),  # waiting room, reception, staff room | corridor
+        ((0.0, 5.0, 16.0, 5.0), ((5.0, 6.0), (8.0, 9.5), (13.0, 14.0))),  # waiting, reception, staff | corridor
         ((7.0, 0.0, 7.0, 5.0), ((1.0, 4.0),)),                 # waiting room | reception: a wide opening
         ((11.0, 0.0, 11.0, 5.0), ()),                          # reception | staff room
         ((0.0, 6.5, 16.0, 6.5), ((1.0, 2.0), (4.5, 5.5), (9.0, 10.0), (13.5, 14.5))),  # corridor | the back rooms
@@ -104,7 +105,35 @@ CLINIC = House(
     ),
 )
 
-HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC)
+FARMHOUSE = House(
+    "farmhouse", (0.0, 0.0, 18.0, 12.0),
+    walls=(
+        ((8.0, 0.0, 8.0, 6.0), ((2.0, 3.0),)),                 # kitchen | dining room
+        ((13.0, 0.0, 13.0, 6.0), ()),                          # dining room | bedroom
+        ((0.0, 6.0, 18.0, 6.0), ((2.0, 3.0), (10.0, 11.0), (15.0, 16.0))),  # kitchen, dining, bedroom | north
+        ((6.0, 6.0, 6.0, 12.0), ((9.0, 10.0),)),               # living room | family room
+    ),
+    blocks=(
+        (0.1, 4.4, 1.4, 5.9),      # the range cooker in the kitchen's corner
+        (17.5, 0.1, 17.925, 2.0),  # the bedroom's wardrobe
+    ),
+)
+
+TERRACE = House(
+    "terrace", (0.0, 0.0, 8.0, 20.0),
+    walls=(
+        ((1.5, 0.0, 1.5, 20.0), ((2.0, 3.0), (6.5, 7.5), (10.5, 11.5), (14.0, 15.0))),  # passage | the rooms
+        ((1.5, 5.0, 8.0, 5.0), ()),                            # living room | bedroom
+        ((1.5, 9.0, 8.0, 9.0), ()),                            # bedroom | dining room
+        ((1.5, 13.0, 8.0, 13.0), ((5.0, 6.0),)),               # dining room | kitchen
+        ((1.5, 16.5, 8.0, 16.5), ((4.0, 5.5),)),               # kitchen | family room (the back extension)
+    ),
+    blocks=(
+        (7.5, 5.1, 7.925, 6.8),    # the bedroom's wardrobe
+    ),
+)
+
+HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC, FARMHOUSE, TERRACE)
 
 
 def draw(house: House) -> np.ndarray:

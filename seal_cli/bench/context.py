@@ -38,6 +38,8 @@ from seal_cli.bench.houses import (
     CONTEXT_OBJECTS,
     CONTEXT_PRIORS,
     COTTAGE_STARTS,
+    FARMHOUSE_STARTS,
+    TERRACE_STARTS,
     aws_house,
     bungalow,
     cottage,
@@ -90,8 +92,12 @@ def houses(data: Path) -> list[House]:
 
 def unseen_houses() -> list[House]:
     """Houses the suite's policies were not developed on, to check that its figures hold
-    (:func:`~seal_cli.bench.houses.bungalow`, drawn after the suite's figures were taken, run once)."""
-    return [House(bungalow(), BUNGALOW_STARTS)]
+    (:func:`~seal_cli.bench.houses.bungalow`, drawn after the suite's figures were taken, and the shipped
+    ``farmhouse`` and ``terrace`` maps, drawn later still; each run once, nothing tuned on them)."""
+    from seal_cli.resources import map_path
+
+    return [House(bungalow(), BUNGALOW_STARTS), House(load_map(map_path("farmhouse")), FARMHOUSE_STARTS),
+            House(load_map(map_path("terrace")), TERRACE_STARTS)]
 
 
 def layout_seed(seed: int, layout: int, name: str) -> int:

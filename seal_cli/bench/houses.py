@@ -206,3 +206,11 @@ def bungalow() -> Map:
 
 BUNGALOW_STARTS = ((3.0, 3.5, 0.0), (8.0, 1.0, 0.0), (13.0, 9.0, 0.0))
 """The living room, the dining room's south side, the family room's east end."""
+
+
+FARMHOUSE_STARTS = ((4.0, 2.0, 0.0), (3.0, 9.0, 0.0), (15.0, 9.0, 0.0))
+"""``maps/farmhouse.yaml`` (drawn by ``maps/make_houses.py``, an unseen house): the kitchen, the living room,
+the family room's east end."""
+
+TERRACE_STARTS = ((0.75, 1.0, 0.0), (5.0, 2.5, 0.0), (5.0, 15.0, 0.0))
+"""``maps/terrace.yaml`` (an unseen house): the passage by the front door, the living room, the kitchen."""

@@ -567,7 +567,8 @@ class Agent:
             return Fatal(False, f"searched everywhere it could and found no {value}", Reason.NOT_FOUND, value)
         self.say("search", f"looks for {value}: {view.why}".rstrip(": "), target=value, view=view.cell)
         role = next((r for r, v in binding.values if v == value), None)
-        if self.drive_to(view.cell, "goes to look", until=lambda: self.resolve(value, binding, role) is not None):
+        if self.drive_to(view.cell, "goes to look", until=lambda: self.resolve(value, binding, role) is not None,
+                         rethink=lambda: self.policy.reconsider(self, binding, value, view)):
             return None
         self.world.face(view.look_at)
         if view.open is not None:
@@ -897,9 +898,11 @@ class Agent:
             self.state = State.of(set(self.state.facts) | {Fact("open", (self.world.items[place].key,))},
                                   self.state.taxonomy, closable=self.state.closable, classes=self.state.classes)
 
-    def drive_to(self, cell: Cell, why: str, until: Callable[[], bool] | None = None) -> bool:
+    def drive_to(self, cell: Cell, why: str, until: Callable[[], bool] | None = None,
+                 rethink: Callable[[], str | None] | None = None) -> bool:
         """Drive the shortest path to the cell, looking every ``look_every`` metres and at the end. A drive
-        to look for something stops at the look that finds it (``until()`` true): returns whether it stopped short."""
+        to look for something stops at the look that finds it (``until()`` true), or where what it saw on
+        the way makes another view better (``rethink()`` says why): returns whether it stopped short."""
         start = self.robot_cell()
         if cell == start:
             return False
@@ -923,6 +926,10 @@ class Agent:
                 if until is not None and until():
                     self.say("go", f"{why} ({metres:.2f} m): stops, what it looks for is in sight",
                              to=self.world.robot.pose[:2], metres=metres)
+                    return True
+                if rethink is not None and (reason := rethink()) is not None:
+                    self.say("go", f"{why} ({metres:.2f} m): stops, {reason}", to=self.world.robot.pose[:2],
+                             metres=metres)
                     return True
         else:
             metres += self.world.drive(self._affordable(chunk))

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import json
 from pathlib import Path
 
@@ -15,6 +16,7 @@ from seal_cli.cli import app
 from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
 from seal_cli.language.grounding import vocabulary_of_map
+from seal_cli.maps.model import Robot
 from seal_cli.pipeline import plan as plan_text
 
 runner = CliRunner()
@@ -33,25 +35,36 @@ def test_every_house_has_the_things_priors_and_starts_and_plans_every_command(sh
             assert len(plan_text(text, library, vocabulary=vocabulary_of_map(house.map)).steps) == 2
 
 
-def test_the_unseen_house_is_one_room_graph_with_free_starts_and_plans_every_command(library: Library) -> None:
+# where each unseen house's rooms are reached only through another (a point in it, and the least metres
+# from the house's first start): the bungalow's kitchen and family room through the dining room, the
+# farmhouse's bedroom through the family room, the terrace's family room through the kitchen
+ONLY_THROUGH = {"bungalow": [((13.0, 2.5), 9.0), ((11.5, 8.0), 9.0)], "farmhouse": [((15.5, 3.0), 14.0)],
+                "terrace": [((4.5, 18.5), 15.0)]}
+
+
+def test_the_unseen_houses_are_room_graphs_with_free_starts_and_plan_every_command(library: Library) -> None:
     import numpy as np
 
     from seal_cli.sim.agent import Agent, scene_from_map
     from seal_cli.sim.policies import make_policy
 
-    (house,) = unseen_houses()
-    m = house.map
-    assert m.name == "bungalow" and {r.name for r in m.rooms} >= set(next(iter(CONTEXT_PRIORS.values())))
-    assert {"spoon", "cup", "mug", "kettle"} <= {o.cls for o in m.objects}
-    agent = Agent(scene_from_map(m, library), library, make_policy("oracle"), rng=np.random.default_rng(0))
-    field_ = agent.distances()
-    free = agent.grid.free_cells
-    assert np.isfinite(field_[free[:, 0], free[:, 1]]).all()          # every room reachable through its doors
-    kitchen, family = (agent.grid.cell(p) for p in [(13.0, 2.5), (11.5, 8.0)])
-    assert field_[kitchen] > 9.0 and field_[family] > 9.0           # both only through the dining room
-    assert all(m.free_index([pose[:2]])[0] >= 0 for pose in house.starts)
-    for text in COMMANDS:
-        assert len(plan_text(text, library, vocabulary=vocabulary_of_map(m)).steps) == 2
+    unseen = unseen_houses()
+    assert [h.map.name for h in unseen] == ["bungalow", "farmhouse", "terrace"]
+    for house in unseen:
+        m = house.map
+        assert {r.name for r in m.rooms} >= {room for prior in CONTEXT_PRIORS.values() for room in prior}
+        assert {c: dict(p) for c, p in m.priors.items()} == {c: dict(p) for c, p in CONTEXT_PRIORS.items()}
+        assert {"spoon", "cup", "mug", "kettle"} <= {o.cls for o in m.objects}
+        agent = Agent(scene_from_map(dataclasses.replace(m, robot=Robot(house.starts[0])), library),
+                      library, make_policy("oracle"), rng=np.random.default_rng(0))
+        field_ = agent.distances()
+        free = agent.grid.free_cells
+        assert np.isfinite(field_[free[:, 0], free[:, 1]]).all(), m.name    # every room reachable through its doors
+        for point, metres in ONLY_THROUGH[m.name]:
+            assert field_[agent.grid.cell(point)] > metres, (m.name, point, float(field_[agent.grid.cell(point)]))
+        assert all(m.free_index([pose[:2]])[0] >= 0 for pose in house.starts)
+        for text in COMMANDS:
+            assert len(plan_text(text, library, vocabulary=vocabulary_of_map(m)).steps) == 2
 
 
 def test_the_aws_house_needs_the_shared_data(tmp_path: Path) -> None:

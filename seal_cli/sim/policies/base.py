@@ -58,6 +58,11 @@ class Policy:
         """Where to look next for a thing of kind ``target`` that ``binding`` needs; None: nowhere left."""
         raise NotImplementedError(f"policy {self.name!r} does not say where to look")
 
+    def reconsider(self, agent: Agent, binding: Binding, target: str, view: View) -> str | None:
+        """On the drive to ``view`` (chosen by :meth:`next_view`), after a look on the way: why to stop and
+        choose again (what it saw makes another view better), or None to drive on."""
+        return None
+
     def choose(self, agent: Agent, cls: str, candidates: Sequence[Known]) -> str | None:
         """Which of the known candidates of ``cls`` to use; None leaves it to the agent (the nearest)."""
         return None

@@ -31,13 +31,17 @@ out. The rest of the plan after the thing sought now is valued as:
 - a known target: the distance to the nearest of its positions;
 - the next unknown thing: if it was seen on the drive before the thing sought now was found, the
   distance to it; otherwise its own greedy tour from the candidate view nearest to where the first
-  was found (the tour planned with the beliefs of now, not with what the first search saw);
+  was found, planned with its belief *given what the first search saw*: the nodes the first tour's
+  looks saw up to the look that found the first thing hold none of it (that belief renormalised; a
+  tour per look that can find the first thing, :data:`LEVELS` of them at most, the rest grouped
+  with the look before them);
 - any unknown thing after that: its greedy tour from the candidate view nearest to the thing before,
   with no credit for having been seen on the way.
 """
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
@@ -55,6 +59,9 @@ SAMPLES = 300
 """Nodes at which a belief is represented for the rest of the plan: at its mass's quantiles (see :func:`quantiles`)."""
 SCALE = 1.0
 """Metres added to every drive in the greedy tour's mass-per-metre rule (a view at the robot's feet is not free)."""
+LEVELS = 16
+"""The most looks of the first search after which the next thing's tour is planned anew (each with the
+nodes seen up to that look taken out of its belief); a look beyond them shares the tour of the one before."""
 
 
 @dataclass(frozen=True)
@@ -74,6 +81,8 @@ class Choice:
     view: int
     expected_m: float
     shares: Mapping[str, float]
+    costs: Mapping[int, float] = dataclasses.field(default_factory=dict)
+    """Every candidate weighed and its expected metres to finish the plan (what :func:`choose` compared)."""
 
 
 @dataclass(frozen=True)
@@ -182,7 +191,7 @@ def choose(tables: Tables, nodes: Sequence[int], distance: np.ndarray, beliefs: 
     if prefer is not None and prefer in costs and costs[prefer] <= best[0] + tie:
         best = (costs[prefer], prefer)
     expected, v = best
-    return Choice(v, expected, {c: float(share[c][v]) for c in q})
+    return Choice(v, expected, {c: float(share[c][v]) for c in q}, costs)
 
 
 def quantiles(belief: np.ndarray, k: int) -> np.ndarray:
@@ -199,27 +208,48 @@ class _Later:
     def __init__(self, tables: Tables, nodes: Sequence[int], distance: np.ndarray, q: Mapping[str, np.ndarray],
                  stops: Sequence[Target]) -> None:
         self.tables, self.nodes, self.distance, self.q, self.stops = tables, nodes, distance, q, list(stops)
-        self.tours: dict[tuple[str, int], np.ndarray] = {}
+        self.tours: dict[tuple[str, int, tuple[tuple[int, ...], float] | None], np.ndarray] = {}
         views = np.asarray(nodes)
         self.anchor = views[np.argmin(distance[:, views], axis=1)]
         """Per node, the candidate view nearest to it, where a search from there starts."""
 
-    def _tour(self, cls: str, anchor: int) -> np.ndarray:
-        """Per node, the metres to reach a thing of ``cls`` there by its greedy tour from view node ``anchor``."""
-        key = (cls, anchor)
+    def _tour(self, cls: str, anchor: int, seen: tuple[Tour, float] | None = None) -> np.ndarray:
+        """Per node, the metres to reach a thing of ``cls`` there by its greedy tour from view node ``anchor``;
+        ``seen``: a first tour and the metres of it driven, whose looks so far saw none of it (the tour is
+        planned with the belief without the nodes they saw)."""
+        key = (cls, anchor, None if seen is None else (seen[0].views, seen[1]))
         if key not in self.tours:
-            self.tours[key] = greedy_tour(self.tables, self.nodes, self.q[cls], anchor).cost(self.distance)
+            belief = self.q[cls]
+            if seen is not None:
+                kept = np.where(seen[0].seen_at <= seen[1], 0.0, belief)
+                belief = kept if kept.sum() > 0 else belief
+            self.tours[key] = greedy_tour(self.tables, self.nodes, belief, anchor).cost(self.distance)
         return self.tours[key]
 
-    def _search(self, cls: str, starts: np.ndarray, w: np.ndarray) -> np.ndarray:
+    def _search(self, cls: str, starts: np.ndarray, w: np.ndarray, tour: Tour | None = None,
+                levels: np.ndarray | None = None) -> np.ndarray:
         """(len(starts), len(w)): the metres from each start to reach a thing of ``cls`` at each node of ``w``:
-        to the start's nearest view, then that view's greedy tour."""
+        to the start's nearest view, then that view's greedy tour (``levels``: per start, the metres of the
+        first ``tour`` driven when it found the first thing, whose looks so far are taken out of the belief)."""
         anchors = self.anchor[starts]
         out = np.empty((len(starts), len(w)))
-        for a in np.unique(anchors):
-            rows = np.flatnonzero(anchors == a)
-            out[rows] = self.distance[starts[rows], int(a)][:, None] + self._tour(cls, int(a))[w][None, :]
+        keys = np.zeros(len(starts)) if levels is None else levels
+        for a, level in {(int(a), float(k)) for a, k in zip(anchors, keys, strict=True)}:
+            rows = np.flatnonzero((anchors == a) & (keys == level))
+            seen = None if tour is None else (tour, level)
+            out[rows] = self.distance[starts[rows], a][:, None] + self._tour(cls, a, seen)[w][None, :]
         return out
+
+    @staticmethod
+    def _levels(tour: Tour, found_at: np.ndarray) -> np.ndarray:
+        """Per node of ``found_at``, the metres of ``tour`` driven at the look that finds it (the looks
+        beyond the first :data:`LEVELS` grouped with the one before them; never seen: the whole tour)."""
+        at = np.where(np.isfinite(tour.seen_at[found_at]), tour.seen_at[found_at], tour.length)
+        marks = np.unique(at)
+        if len(marks) > LEVELS:
+            keep = marks[np.linspace(0, len(marks) - 1, LEVELS).round().astype(int)]
+            at = keep[np.searchsorted(keep, at, side="right") - 1]
+        return np.asarray(at, dtype=float)
 
     def after(self, tour: Tour, found_at: np.ndarray) -> np.ndarray:
         """For the thing sought now found at each node of ``found_at`` by ``tour``: the expected metres of
@@ -250,7 +280,8 @@ class _Later:
                 # the next unknown thing: seen on the drive before the first was found, or searched for from there
                 before = tour.seen_at[w][None, :] <= tour.seen_at[found_at][:, None]
                 direct = self.distance[np.ix_(rows, w)]
-                cost += np.where(before, direct, self._search(stop.cls, rows, w)).mean(axis=1)
+                search = self._search(stop.cls, rows, w, tour, self._levels(tour, found_at))
+                cost += np.where(before, direct, search).mean(axis=1)
                 rows = None
             else:
                 starts = np.flatnonzero(spread > 0)

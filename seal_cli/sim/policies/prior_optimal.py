@@ -25,7 +25,8 @@ path's nodes a metre apart. The choice itself is not the optimal adaptive search
 policy improvement (a rollout) over the greedy mass-per-metre tour, so, under the model, it is never
 worse than that tour and may be worse than the optimum; the rest of the plan is valued with the
 approximations listed in :mod:`~seal_cli.sim.policies.completion` (the next thing's search planned
-with the beliefs of now; the things after it with no credit for being seen on the way). It is the
+with its belief given what the first search saw, from the view nearest where the first was found;
+the things after it with no credit for being seen on the way). It is the
 reference of what search achieves with the priors, not a proven bound: a searcher without full
 knowledge beating it by more than about two standard errors would point at one of those
 approximations (``against_prior_optimal`` in the context suite's JSON).

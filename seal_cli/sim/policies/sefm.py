@@ -96,6 +96,11 @@ class SeFMPolicy(Policy):
         self._prior_shares: dict[str, np.ndarray] = {}
         self.sefm: Any = None
         self.planner: Any = None
+        self._news = False
+        """A look since the last choice saw a thing it had not seen (what may make another view better)."""
+        self._things: set[str] = set()
+        self._chosen: tuple[Cell, str, Any] | None = None
+        """A choice made on the drive (:meth:`reconsider`) that stopped it: where, for what, the decision."""
         self.key: tuple[str, ...] = ()
         self.map = agent.scene.map
         if not self.priors:
@@ -131,6 +136,10 @@ class SeFMPolicy(Policy):
 
     def observe(self, agent: Agent, detections: Sequence[Detection]) -> None:
         self.fallback.observe(agent, detections)
+        fresh = {d.id for d in detections if agent.world.items[d.id].movable} - self._things
+        if fresh:
+            self._things |= fresh
+            self._news = True
         if self.planner is not None:
             self.planner.observe(agent, see=False)
         pose = agent.world.robot.pose
@@ -248,11 +257,42 @@ class SeFMPolicy(Policy):
         """With frames, the view that starts the shortest expected completion of the whole remaining
         plan (:meth:`plan_view`); where that has nothing to say, and for object-only, :meth:`greedy_view`."""
         if self.use_frames and self.whole_plan:
-            decision = self.plan_view(agent, binding, target)
+            chosen, self._chosen = self._chosen, None
+            if chosen is not None and chosen[:2] == (agent.robot_cell(), target):   # on the drive, nothing seen since
+                decision = chosen[2]
+                self.planner.pending = decision.candidate.cell
+            else:
+                decision = self.plan_view(agent, binding, target)
+            self._news = False
             if decision is not None:
                 self.tried.add((decision.view.cell, decision.view.open))
                 return decision.view
         return self.greedy_view(agent, binding, target)
+
+    rethink_m = 1.0
+    """Metres of expected drive to finish the plan by which another view must beat the one driven to, after a
+    look on the way saw a thing not seen before, for the drive to stop and look from there instead
+    (:meth:`reconsider`; the rollout's lattice paths differ from the robot's by a fraction of a metre)."""
+
+    def reconsider(self, agent: Agent, binding: Binding, target: str, view: View) -> str | None:
+        """The whole-plan search's drive stops when a look on the way saw something new (a thing of the plan:
+        the cup while looking for the spoon) and, with it, another view finishes the plan more than
+        :attr:`rethink_m` sooner than driving on to ``view``; the new choice is the next view."""
+        if self.planner is None or not self._news or not (self.use_frames and self.whole_plan):
+            return None
+        self._news = False
+        pending = self.planner.pending
+        decision = self.plan_view(agent, binding, target)
+        self.planner.pending = pending
+        if decision is None or decision.view.cell == view.cell:
+            return None
+        lost = decision.regret(view)
+        if lost <= self.rethink_m:
+            return None
+        self._chosen = (agent.robot_cell(), target, decision)
+        return (f"what it saw makes {decision.candidate.name} better ({decision.expected_m:.1f} m expected to finish,"
+                f" {lost:.1f} m less than driving on)" if np.isfinite(lost) else
+                f"what it saw leaves nothing to see from there ({decision.candidate.name} now)")
 
     whole_plan = True
     """Search for the whole remaining plan (off: the step's own belief, the search of earlier rounds)."""

@@ -15,7 +15,7 @@ view of its own. What the drives between them see on the way is counted by the m
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -164,6 +164,12 @@ class Decision:
     view: View
     candidate: Candidate
     expected_m: float
+    costs: Mapping[tuple[Cell, str | None], float] = field(default_factory=dict)
+    """Every candidate weighed (by its cell and the place it opens) and its expected metres to finish."""
+
+    def regret(self, view: View) -> float:
+        """The expected metres lost by looking from ``view`` rather than from this decision's (inf: not weighed)."""
+        return self.costs.get((view.cell, view.open), float("inf")) - self.expected_m
 
 
 class WholePlanSearch:
@@ -449,4 +455,6 @@ class WholePlanSearch:
         why = (f"{candidate.name}: {there} there, {field_[candidate.cell]:.1f} m "
                f"(expected {choice.expected_m:.1f} m to finish the plan)")
         self.pending = candidate.cell
-        return Decision(View(candidate.cell, candidate.look_at, candidate.open, why), candidate, choice.expected_m)
+        costs = {(self.candidates[k].cell, self.candidates[k].open): m for k, m in choice.costs.items()}
+        return Decision(View(candidate.cell, candidate.look_at, candidate.open, why), candidate, choice.expected_m,
+                        costs)

@@ -109,3 +109,29 @@ def test_quantiles_stand_for_the_belief_in_proportion() -> None:
     belief = np.array([0.0, 3.0, 0.0, 1.0])
     picked = quantiles(belief, 8)
     assert sorted(picked.tolist()) == [1] * 6 + [3] * 2
+
+
+
+def test_the_next_things_search_is_planned_given_what_the_first_search_saw() -> None:
+    # cups at x=0 and x=12 (1/2 each), views at 0, 7 and 12; the spoon found at 8, so the cup's search
+    # starts at the view at 7 (1 m). Planned with the beliefs of now it looks at 12 first (5 m, more mass
+    # per metre) and then at 0 (12 m on): a cup at 0 costs 1 + 17 m. If the spoon's search saw 12 before
+    # it found the spoon (and no cup there), the cup is at 0, and its search drives there straight: 1 + 7 m.
+    from seal_cli.sim.policies.completion import Tour, _Later
+
+    lattice = _corridor(range(13))
+    nodes = [0, 7, 12]
+    cup = np.zeros(13)
+    cup[[0, 12]] = 0.5
+    later = _Later(_tables(lattice, nodes), nodes, lattice.distance, {"cup": cup}, [Target("cup")])
+    seen_at = np.full(13, np.inf)
+    seen_at[12], seen_at[8] = 3.0, 7.0
+    first = Tour(seen_at, np.where(np.isfinite(seen_at), np.arange(13), -1), (2,), 8, 7.0)   # 12 at 3 m, 8 at 7 m
+    now = later._search("cup", np.asarray([8]), np.asarray([0]))
+    given = later._search("cup", np.asarray([8]), np.asarray([0]), first, np.asarray([7.0]))
+    assert now[0, 0] == 18.0 and given[0, 0] == 8.0
+    before = later._search("cup", np.asarray([8]), np.asarray([0]), first, np.asarray([2.0]))
+    assert before[0, 0] == 18.0                       # found before 12 was seen: nothing to take out
+    # the looks that can find the first thing, each a level of its own up to LEVELS of them
+    levels = _Later._levels(first, np.asarray([8, 12, 3]))
+    assert list(levels) == [7.0, 3.0, 7.0]            # a node the tour never sees: after the whole tour

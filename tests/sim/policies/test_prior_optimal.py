@@ -66,7 +66,11 @@ def test_the_whole_plan_search_looks_again_at_a_room_its_view_saw_only_part_of(l
     assert result.completed, result.reason
     searches = [r.text for r in agent.records if r.kind == "search"]
     assert not any("are spent" in t or "is spent" in t for t in searches), searches
-    assert any(": bedroom: cup" in t for t in searches), searches   # the cup's corner, from a view added for it
+    if name == "prior_optimal":       # the cup's corner, from a view added for it
+        assert any(": bedroom: cup" in t for t in searches), searches
+    # SeFM plans the cup's search given what the spoon's saw: into the bedroom for the spoon, where the
+    # cup is seen on the way (it took the kitchen twice and the family room three times, 47 m, before)
+    assert agent.world.robot.path_m < 30.0, searches
     looked_from = [r.data["to"] for r in agent.records if r.kind == "go" and r.text.startswith("goes to look")
                    and "stops" not in r.text]
     assert len(set(map(tuple, looked_from))) == len(looked_from), looked_from     # never from one cell twice

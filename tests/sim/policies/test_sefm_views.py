@@ -281,3 +281,30 @@ def test_with_the_places_spent_a_thing_often_on_the_floor_is_looked_for_over_the
     x, y = agent.grid.point(view.cell)
     assert policy.fallback.seen.size and not policy.fallback.seen[
         np.hypot(policy.fallback.lattice[:, 0] - x, policy.fallback.lattice[:, 1] - y) <= 1.5].all()
+
+
+def test_the_drive_stops_to_choose_again_when_what_it_saw_makes_another_view_better(library: Library) -> None:
+    # the cottage, layout 0, from the hall's north end, "stir the mug": the drive to the dining room (for the
+    # spoon) sees the mug a metre in; with the mug known the bedroom (spoons) is better than the dining room
+    # by more than rethink_m, so the drive stops and turns there; driving on costs 1.6 m more
+    import dataclasses
+
+    from seal_cli.bench.houses import cottage
+    from seal_cli.bench.mapsuite import sample_layout
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.policies import make_policy
+
+    world = dataclasses.replace(sample_layout(cottage(), np.random.default_rng(0)), robot=Robot((7.5, 9.0, 0.0)))
+    paths = {}
+    for rethink in (1.0, float("inf")):
+        policy = make_policy("sefm", 100)
+        policy.rethink_m = rethink  # type: ignore[attr-defined]
+        agent, result = run_on_map(world, "stir the mug", library, policy, rng=np.random.default_rng(1))
+        assert result.completed, result.reason
+        stops = [r.text for r in agent.records if r.kind == "go" and "what it saw makes" in r.text]
+        assert bool(stops) == (rethink == 1.0), stops
+        paths[rethink] = agent.world.robot.path_m
+        if stops:
+            later = [r.text for r in agent.records if r.kind == "search"]
+            assert "makes bedroom better" in stops[0] and any(t.startswith("looks for spoon: bedroom") for t in later)
+    assert paths[1.0] < paths[float("inf")] - 1.0, paths
