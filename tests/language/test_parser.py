@@ -1303,3 +1303,14 @@ def test_a_verb_then_a_number_is_the_verb_not_a_thing_switched_on(text: str, hea
     assert frames_of(text, library) == ["Place"]
     assert elements(text, library) == heads
     assert frames_of("two lamps on, please", library) == ["ToggleOn"]
+
+
+@pytest.mark.parametrize("text, role, head", [
+    ("tell me today's date", "message", "date"),
+    ("bring me tonight's menu", "theme", "menu"),
+])
+def test_a_time_word_before_apostrophe_s_is_a_possessor_not_when(text: str, role: str, head: str,
+                                                                library: Library) -> None:
+    parse = parse_command(text, library)
+    assert parse.frames[0].elements[role].head == head
+    assert parse.frames[0].elements[role].text.startswith(text.split()[2])
