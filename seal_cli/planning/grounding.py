@@ -146,7 +146,9 @@ class MapNames:
                        *synonyms.get(place.cls, ())]
             names = tuple(dict.fromkeys(w for w in map(words_of, spelled) if w))
             own = len(dict.fromkeys(w for w in map(words_of, spelled[:3]) if w))
-            heads = frozenset(n[-1] for n in map(words_of, spelled[:3]) if n)     # not a synonym's: a "tv table"
+            closed = {"".join(n) for n in map(words_of, spelled[:3]) if n}
+            heads = frozenset(n[-1] for n in map(words_of, spelled) if n and (     # not a synonym's: a "tv table";
+                n in names[:own] or "".join(n) in closed))    # but "arm chair" is "armchair" spelt apart: a chair
             found.append(Referent(class_key(place.name), "place", place.cls,
                                   class_key(place.room) if place.room else None, names, heads, own))
         for person in self.map.people:

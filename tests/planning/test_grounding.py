@@ -133,3 +133,12 @@ def test_a_places_own_name_calls_it_before_another_places_synonym(library: Libra
     assert [str(s) for s in plan_text("go to the washbasin", library, map=cafe).steps] == ["Go(goal=washbasin_1)"]
     assert [str(s) for s in plan_text("go to the sink", library, map=cafe).steps] == ["Go(goal=sink_1)"]
     assert steps("go to the washbasin", library) == ["Go(goal=sink_1)"]
+
+
+def test_a_compound_spelt_apart_in_the_synonyms_gives_the_place_its_head(library: Library) -> None:
+    """The library spells "armchair" also "arm chair": the armchair is called "the chair" (the
+    townhouse's only chair), while a synonym that is another word ("tv table") still gives no head."""
+    townhouse = load_map(APARTMENT.parent / "townhouse.yaml")
+    assert [str(s) for s in plan_text("go to the chair", library, map=townhouse).steps] == ["Go(goal=armchair_1)"]
+    names = MapNames(load_map(APARTMENT), library.taxonomy)
+    assert "table" not in names.by_id("tv_stand_1").heads
