@@ -142,3 +142,14 @@ def test_a_compound_spelt_apart_in_the_synonyms_gives_the_place_its_head(library
     assert [str(s) for s in plan_text("go to the chair", library, map=townhouse).steps] == ["Go(goal=armchair_1)"]
     names = MapNames(load_map(APARTMENT), library.taxonomy)
     assert "table" not in names.by_id("tv_stand_1").heads
+
+
+def test_a_compound_of_another_kind_is_not_the_place_sharing_its_head(library: Library) -> None:
+    """"the hand dryer" on the townhouse is not its (tumble) dryer: refused, naming what was said; a
+    describing word ("the red dryer") or a word of the map ("the bathroom sink") still finds the place."""
+    townhouse = load_map(APARTMENT.parent / "townhouse.yaml")
+    with pytest.raises(SealError, match="the townhouse has no hand dryer"):
+        plan_text("open the hand dryer", library, map=townhouse)
+    for text, step in [("open the dryer", "Open(theme=dryer_1)"), ("open the red dryer", "Open(theme=dryer_1)"),
+                       ("go to the bathroom sink", "Go(goal=bathroom_sink_1)")]:
+        assert [str(s) for s in plan_text(text, library, map=townhouse).steps] == [step]
