@@ -1,7 +1,7 @@
 """Draw the occupancy images of the example houses ``townhouse.yaml``, ``office_floor.yaml`` and
 ``cafe.yaml`` and ``clinic.yaml`` (run once; the PGMs are committed next to this script).
 
-    python maps/make_houses.py          # rewrites maps/townhouse.pgm, maps/office_floor.pgm, maps/cafe.pgm, maps/clinic.pgm
+    python maps/make_houses.py    # rewrites maps/townhouse.pgm, office_floor.pgm, cafe.pgm and clinic.pgm
 
 Each house is a plan on paper, as a user would draw their own: the outer walls, the inner walls
 (centre lines, each with its doors as gaps), and the solid blocks a laser sees (a car, a server
@@ -90,7 +90,7 @@ CAFE = House(
 CLINIC = House(
     "clinic", (0.0, 0.0, 16.0, 10.0),
     walls=(
-        ((0.0, 5.0, 16.0, 5.0), ((5.0, 6.0), (8.0, 9.5), (13.0, 14.0))),  # waiting room, reception, staff room | corridor
+        ((0.0, 5.0, 16.0, 5.0), ((5.0, 6.0), (8.0, 9.5), (13.0, 14.0))),  # waiting, reception, staff room | corridor
         ((7.0, 0.0, 7.0, 5.0), ((1.0, 4.0),)),                 # waiting room | reception: a wide opening
         ((11.0, 0.0, 11.0, 5.0), ()),                          # reception | staff room
         ((0.0, 6.5, 16.0, 6.5), ((1.0, 2.0), (4.5, 5.5), (9.0, 10.0), (13.5, 14.5))),  # corridor | the back rooms

@@ -1,6 +1,7 @@
 """A recording opened in Rerun's own viewer, headless: the layout is the blueprint's, the timeline is there,
 and it paints. Needs a graphics adapter (a GPU, or Mesa's lavapipe: ``apt install mesa-vulkan-drivers``);
-skipped cleanly without one (or with one it cannot render with), or without the ``rerun`` executable of the rerun-sdk wheel."""
+skipped cleanly without one (or with one it cannot render with), or without the ``rerun`` executable of the
+rerun-sdk wheel."""
 
 from __future__ import annotations
 
