@@ -801,20 +801,29 @@ class Agent:
                 self.drive_to(cell, f"goes to {ground}")
         if complete.ok:
             self.world.face(place.at)
-            complete = self.peek(ground) if place.openable and not place.is_open else Outcome(True, "looked")
+
+            def found_inside() -> bool:                # what it looks for is inside: kept open to show it
+                return sought is not None and any(k.cls == sought and k.movable and k.parent == ground
+                                                  for k in self.known.values())
+
+            complete = self.peek(ground, found_inside) if place.openable and not place.is_open else \
+                Outcome(True, "looked")
             self.look()
         on = [k for k in self.known.values() if k.movable and k.parent == ground and k.id in self.world.items
               and self.world.items[k.id].parent == ground]
         return f"{'in' if place.openable else 'on'} {ground}", on, complete
 
-    def peek(self, place: str) -> Outcome:
-        """Open a closed place within reach, look inside, and close it again (as it was found)."""
+    def peek(self, place: str, keep_open: Callable[[], bool] | None = None) -> Outcome:
+        """Open a closed place within reach, look inside, and close it again (as it was found), unless
+        ``keep_open()`` says what it saw is to be shown there."""
         opened = self.world.act("open", place)
         self.say("act" if opened.ok else "fail", opened.message, action="open", args=[place])
         if not opened.ok:
             return Outcome(False, f"could not open {place}: {opened.message}")
         self.opened.add(place)
         self.look()
+        if keep_open is not None and keep_open():
+            return Outcome(True, f"looked into {place}")
         closed = self.world.act("close", place)
         self.say("act" if closed.ok else "fail", closed.message, action="close", args=[place],
                  **({"detail": True} if self.detail and closed.ok else {}))
