@@ -153,3 +153,13 @@ def test_a_compound_of_another_kind_is_not_the_place_sharing_its_head(library: L
     for text, step in [("open the dryer", "Open(theme=dryer_1)"), ("open the red dryer", "Open(theme=dryer_1)"),
                        ("go to the bathroom sink", "Go(goal=bathroom_sink_1)")]:
         assert [str(s) for s in plan_text(text, library, map=townhouse).steps] == [step]
+
+
+def test_a_thing_already_in_the_room_it_is_taken_to_is_left_there_with_a_warning(library: Library) -> None:
+    townhouse = load_map(APARTMENT.parent / "townhouse.yaml")
+    found = plan_text("take the umbrella to the hallway", library, map=townhouse)
+    assert found.steps == () and found.warnings == (
+        "Bring(theme=umbrella, goal=hallway) is not done: in(umbrella, hallway), hand_empty holds already",)
+    assert len(plan_text("take the umbrella to the garage", library, map=townhouse).steps) == 2
+    apple = plan_text("bring the apple to the kitchen", library, map=load_map(APARTMENT))   # shut in the fridge
+    assert [s.binding.frame.name for s in apple.steps] == ["Open", "Pick", "Bring"]
