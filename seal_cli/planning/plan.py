@@ -425,7 +425,8 @@ def _already_so(commanded: Sequence[Binding], state: State) -> tuple[Binding, ..
     done: list[Binding] = []
     for binding in commanded:
         results = [f for f in binding.postconditions if not f.negated]
-        if not results or not state.unmet(binding) or not all(state.holds(f) for f in results):
+        into_room = any(f.predicate == "in" and len(f.args) == 2 and f.args[1] in state.rooms.values() for f in results)
+        if not into_room or not state.unmet(binding) or not all(state.holds(f) for f in results):
             break
         done.append(binding)
     return tuple(done)

@@ -1288,12 +1288,6 @@ def test_found_for_me_then_given_by_pronoun_keeps_the_thing(library: Library) ->
     assert elements("get us two apples", library)["theme"] == "apple"
 
 
-@pytest.mark.parametrize("text", ["go with the plumber", "come with Anna", "go with him"])
-def test_going_with_a_person_follows_them(text: str, library: Library) -> None:
-    assert frames_of(text, library) == ["Follow"]
-    assert "theme" in elements(text, library)
-
-
 @pytest.mark.parametrize("text, heads", [
     ("put two cell phones on to the bed", {"theme": "phone", "goal": "bed"}),
     ("place 3 books on the desk", {"theme": "book", "goal": "desk"}),
