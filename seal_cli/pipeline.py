@@ -61,7 +61,7 @@ def plan(text: str, library: Library | None = None, *, holding: str | None = Non
     library = _or_standard(library)
     problem = problem_of_text(text, library, holding=holding, done=done, map=map, vocabulary=vocabulary)
     found = planning.plan(problem.commanded, library, problem.state, max_nodes=max_nodes, text=text)
-    return replace(found, warnings=problem.warnings) if problem.warnings else found
+    return replace(found, warnings=(*problem.warnings, *found.warnings)) if problem.warnings else found
 
 
 def frames_to_localise(tasks: Sequence[str], library: Library, map: Map, *, holding: str | None = None,

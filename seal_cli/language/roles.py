@@ -89,6 +89,8 @@ class Roles:
         elif len(objects) >= 2:
             if "recipient" in have:
                 roles["recipient"] = objects.pop(0)
+            elif objects[0].pronoun in PERSON_PRONOUNS:
+                objects.pop(0)                   # "find me a thermometer": for whom, no element of the frame
             elif strict:
                 return None
         if objects and first is not None and first not in roles:

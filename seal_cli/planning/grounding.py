@@ -36,8 +36,9 @@ from functools import cached_property
 
 from seal_cli.errors import SealError
 from seal_cli.frames.taxonomy import Taxonomy, class_key, class_words
-from seal_cli.language.english import SOME_PERSON
+from seal_cli.language.english import NUMBERS, SOME_PERSON
 from seal_cli.language.lexicon import noun_lemma
+from seal_cli.language.morphology import is_adjective
 from seal_cli.maps.model import SPEAKER, Map
 
 __all__ = ["FIXED", "HERE", "PAIRED", "ROOM_WORDS", "SPEAKER_WORDS", "MapNames", "Referent", "Refusal", "kind_of",
@@ -73,6 +74,9 @@ HERE = frozenset({"here", "over here"})
 RELATIONS = ("next to", "close to", "in front of", "on top of", "in", "on", "at", "inside", "near", "by",
              "beside", "under", "behind", "within", "from", "of")
 """Words after which a phrase says where its thing is ("the couch in the living room")."""
+
+DESCRIBING = frozenset({"other", "same", "next", "last", "bottom", "far", "near", "middle"})
+"""English words before a thing's name that pick one of its kind ("the *other* table"), not a kind."""
 
 DROPPED = frozenset({"the", "a", "an", "my", "our", "your", "his", "her", "their", "this", "that", "these",
                      "those", "some", "any"})
@@ -151,7 +155,9 @@ class MapNames:
                        *synonyms.get(place.cls, ())]
             names = tuple(dict.fromkeys(w for w in map(words_of, spelled) if w))
             own = len(dict.fromkeys(w for w in map(words_of, spelled[:3]) if w))
-            heads = frozenset(n[-1] for n in map(words_of, spelled[:3]) if n)     # not a synonym's: a "tv table"
+            closed = {"".join(n) for n in map(words_of, spelled[:3]) if n}
+            heads = frozenset(n[-1] for n in map(words_of, spelled) if n and (     # not a synonym's: a "tv table";
+                n in names[:own] or "".join(n) in closed))    # but "arm chair" is "armchair" spelt apart: a chair
             found.append(Referent(class_key(place.name), "place", place.cls,
                                   class_key(place.room) if place.room else None, names, heads, own))
         for person in self.map.people:
@@ -185,9 +191,30 @@ class MapNames:
                    prefix: bool = True) -> list[Referent]:
         """The referents the words call best, in the map's order (``prefix``: see :meth:`_score`)."""
         kinds = set(kinds)
-        scored = [(self._score(r, words, prefix), r) for r in self.referents if r.kind in kinds]
+        scored = [(0 if self._another_compound(r, words) else self._score(r, words, prefix), r)
+                  for r in self.referents if r.kind in kinds]
         top = max((s for s, _ in scored), default=0)
         return [r for s, r in scored if s == top and s > 0]
+
+    @cached_property
+    def _describing(self) -> frozenset[str]:
+        """Words that say which of the map's things, not what kind: the words of its rooms' and places'
+        names, classes and synonyms, and of English room names."""
+        said = {w for r in self.referents for name in r.names for w in name}
+        return frozenset(said | {w for room in ROOM_WORDS for w in room.split("_")} | DESCRIBING)
+
+    def _another_compound(self, referent: Referent, words: tuple[str, ...]) -> bool:
+        """Whether the words name a compound of another kind that shares the place's head: a noun
+        before it that is no adjective and no word of the map ("the *hand* dryer" is no tumble dryer,
+        while "the kitchen sink", "the red chair" and "the other table" are the map's)."""
+        if referent.kind != "place" or len(words) < 2:
+            return False
+        ends = [len(n) for n in referent.names if len(n) <= len(words) and words[len(words) - len(n):] == n]
+        left = words[:len(words) - max(ends, default=1)]
+        if not left or (not ends and words[-1] not in referent.heads):
+            return False
+        word = left[-1]
+        return not (is_adjective(word) or word in self._describing or word.isdigit() or word in NUMBERS)
 
     def ground(self, text: str, element_type: str, kinds: Iterable[str] = ("room", "place", "person")
                ) -> Referent | None:

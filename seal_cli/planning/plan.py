@@ -405,13 +405,31 @@ def plan(commanded: Sequence[Binding], library: Library, state: State, *, max_no
         raise SealError(f"the search bound must be at least 1 node, not {max_nodes}")
     commanded = tuple(commanded)
     _check_types(commanded, state, library.taxonomy)
+    already = _already_so(commanded, state)
+    commanded = commanded[len(already):]
     path, expanded = _Search(commanded, library, max_nodes).run(state) if commanded else ([], 0)
     bindings = [binding for binding, _ in path]
     states = [state]
     for binding in bindings:
         states.append(states[-1].apply(binding))
     steps = tuple(Step(b, c, None if c else _because(i, bindings, states)) for i, (b, c) in enumerate(path))
-    return Plan(steps, state, _goal(steps, states), text, expanded)
+    notes = tuple(f"{b} is not done: {', '.join(str(f) for f in b.postconditions if not f.negated)} "
+                  "holds already" for b in already)
+    return Plan(steps, state, _goal(steps, states), text, expanded, notes)
+
+
+def _already_so(commanded: Sequence[Binding], state: State) -> tuple[Binding, ...]:
+    """The commanded frames, from the first, whose results hold already while what they need does
+    not ("take the umbrella to the hallway" with the umbrella on the hallway's coat rack: picking it up
+    to put it back would change nothing)."""
+    done: list[Binding] = []
+    for binding in commanded:
+        results = [f for f in binding.postconditions if not f.negated]
+        into_room = any(f.predicate == "in" and len(f.args) == 2 and f.args[1] in state.rooms.values() for f in results)
+        if not into_room or not state.unmet(binding) or not all(state.holds(f) for f in results):
+            break
+        done.append(binding)
+    return tuple(done)
 
 
 def explain(plan: Plan) -> Iterator[str]:

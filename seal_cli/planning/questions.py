@@ -103,7 +103,8 @@ def asks_whether(text: str, evoked: Evoked) -> bool:
 
 def fact_asked(message: str) -> str | None:
     """The fact a message asks for (:data:`FACTS`: "the time", "what time it is", "today's date"), else None."""
-    words = [w for w in message.lower().replace("_", " ").replace("?", " ").split() if w not in FACT_FILLER]
+    said = message.lower().replace("_", " ").replace("?", " ").replace("’", "'").replace("'s", " 's")
+    words = [w for w in said.split() if w not in FACT_FILLER]      # "what's today's date": what 's today 's date
     return words[0] if len(words) == 1 and words[0] in FACTS else None
 
 

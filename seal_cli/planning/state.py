@@ -71,8 +71,19 @@ class State:
                 and fact.args[0] not in self.closable:
             truth = True
         else:
-            truth = fact.positive in self.facts
+            truth = fact.positive in self.facts or self._in_room(fact.positive)
         return truth != fact.negated
+
+    def _in_room(self, fact: Fact) -> bool:
+        """Whether ``in(x, room)`` holds because x is in or on a place that lies in the room and is
+        not shut (an umbrella on the hallway's coat rack is in the hallway; an apple in the closed
+        fridge is still to be brought out)."""
+        if fact.predicate != "in" or len(fact.args) != 2 or fact.args[1] not in self.rooms.values():
+            return False
+        thing, room = fact.args
+        return any(f.predicate in ("in", "on") and len(f.args) == 2 and f.args[0] == thing
+                   and self.rooms.get(f.args[1]) == room and self.holds(Fact("open", (f.args[1],)))
+                   for f in self.facts)
 
     def unmet(self, binding: Binding) -> tuple[Fact, ...]:
         """The grounded frame's preconditions that do not hold, in the frame's order."""

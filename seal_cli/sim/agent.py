@@ -247,6 +247,20 @@ class Agent:
         facts |= {Fact("open", (i.key,)) for i in self.world.items.values() if i.openable and i.is_open}
         return State.of(facts, self.library.taxonomy, closable=closable, classes=self.classes)
 
+    def already_so(self, binding: Binding) -> str | None:
+        """What the robot sees that makes a frame's result hold already, when all it does is bring a
+        thing into a room it is in ("take the umbrella to the hallway", the umbrella on the hallway's
+        coat rack); None otherwise."""
+        results = [f for f in binding.postconditions if not f.negated]
+        into = [f for f in results if f.predicate == "in" and len(f.args) == 2 and self.room(f.args[1]) is not None]
+        if len(into) != 1 or any(not self.state.holds(f) for f in results if f is not into[0]):
+            return None
+        thing, room = self.class_of(into[0].args[0]), self.room(into[0].args[1])
+        there = [k.id for k in self.known.values() if k.cls == thing and k.movable and k.id in self.world.items
+                 and not self.world.held_chain(k.id) and self.world.enclosure(k.id) is None
+                 and bool(room.contains([self.world.position(k.id)])[0])]
+        return f"{there[0]} is in the {room.name.replace('_', ' ')} already" if there else None
+
     def class_of(self, value: str) -> str:
         key = class_key(value)
         return self.classes.get(key, key)
@@ -260,6 +274,9 @@ class Agent:
         self.policy.begin(self)
         self.look()
         todo = list(commanded)
+        while todo and (already := self.already_so(todo[0])) is not None:
+            skipped = todo.pop(0)
+            self.say("done", f"{already}: {skipped} is not done", frame=str(skipped))
         self.todo = todo
         try:
             steps = self.planner(todo, self.library, self.state)
@@ -806,20 +823,29 @@ class Agent:
                 self.drive_to(cell, f"goes to {ground}")
         if complete.ok:
             self.world.face(place.at)
-            complete = self.peek(ground) if place.openable and not place.is_open else Outcome(True, "looked")
+
+            def found_inside() -> bool:                # what it looks for is inside: kept open to show it
+                return sought is not None and any(k.cls == sought and k.movable and k.parent == ground
+                                                  for k in self.known.values())
+
+            complete = self.peek(ground, found_inside) if place.openable and not place.is_open else \
+                Outcome(True, "looked")
             self.look()
         on = [k for k in self.known.values() if k.movable and k.parent == ground and k.id in self.world.items
               and self.world.items[k.id].parent == ground]
         return f"{'in' if place.openable else 'on'} {ground}", on, complete
 
-    def peek(self, place: str) -> Outcome:
-        """Open a closed place within reach, look inside, and close it again (as it was found)."""
+    def peek(self, place: str, keep_open: Callable[[], bool] | None = None) -> Outcome:
+        """Open a closed place within reach, look inside, and close it again (as it was found), unless
+        ``keep_open()`` says what it saw is to be shown there."""
         opened = self.world.act("open", place)
         self.say("act" if opened.ok else "fail", opened.message, action="open", args=[place])
         if not opened.ok:
             return Outcome(False, f"could not open {place}: {opened.message}")
         self.opened.add(place)
         self.look()
+        if keep_open is not None and keep_open():
+            return Outcome(True, f"looked into {place}")
         closed = self.world.act("close", place)
         self.say("act" if closed.ok else "fail", closed.message, action="close", args=[place],
                  **({"detail": True} if self.detail and closed.ok else {}))

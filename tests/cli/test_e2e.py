@@ -342,3 +342,13 @@ def test_is_there_stops_looking_once_it_sees_one() -> None:
     assert not any(r["text"].startswith("opened") for r in report["records"])   # no fridge, no microwave
     assert report["path_m"] < 15.0                                              # was 19.9 m
     assert run_json("is there a cup in the kitchen?")["answer"] == "no cup in the kitchen (it looked all over it)"
+
+
+def test_asked_whether_a_thing_is_in_a_closed_place_the_robot_opens_it_once_and_shows_it() -> None:
+    report = run_json("is there an apple in the fridge?")
+    texts = [r["text"] for r in report["records"]]
+    assert report["answer"].startswith("yes: apple_1 is in fridge_1")
+    assert sum(t.startswith("opened fridge_1") for t in texts) == 1 and "closed fridge_1" not in texts
+    report = run_json("is there a spoon in the fridge?")                 # nothing to show: closed as found
+    texts = [r["text"] for r in report["records"]]
+    assert report["answer"].startswith("no spoon in fridge_1") and texts.count("closed fridge_1") == 1

@@ -1272,3 +1272,39 @@ def test_in_a_thing_named_for_the_frames_verb_is_its_instrument(library: Library
     assert (frame.elements["theme"].text, frame.elements["instrument"].head) == ("the towels", "warmer")
     (frame,) = parse_command("heat the soup in the pot", library).frames      # a pot is no heater: where it is
     assert frame.elements["theme"].text == "the soup in the pot" and frame.elements["instrument"].default
+
+
+@pytest.mark.parametrize("text, theme", [("find me a thermometer", "thermometer"), ("find us the keys", "key")])
+def test_a_person_pronoun_before_a_second_object_is_for_whom_when_the_frame_has_no_recipient(
+        text: str, theme: str, library: Library) -> None:
+    assert frames_of(text, library) == ["Find"]
+    assert elements(text, library) == {"theme": theme}
+
+
+def test_found_for_me_then_given_by_pronoun_keeps_the_thing(library: Library) -> None:
+    parse = parse_command("find me a thermometer and give it to Nora", library)
+    assert [f.frame for f in parse.frames] == ["Find", "Give"]
+    assert parse.frames[1].elements["theme"].head == "thermometer"
+    assert elements("get us two apples", library)["theme"] == "apple"
+
+
+@pytest.mark.parametrize("text, heads", [
+    ("put two cell phones on to the bed", {"theme": "phone", "goal": "bed"}),
+    ("place 3 books on the desk", {"theme": "book", "goal": "desk"}),
+])
+def test_a_verb_then_a_number_is_the_verb_not_a_thing_switched_on(text: str, heads: dict[str, str],
+                                                                   library: Library) -> None:
+    assert frames_of(text, library) == ["Place"]
+    assert elements(text, library) == heads
+    assert frames_of("two lamps on, please", library) == ["ToggleOn"]
+
+
+@pytest.mark.parametrize("text, role, head", [
+    ("tell me today's date", "message", "date"),
+    ("bring me tonight's menu", "theme", "menu"),
+])
+def test_a_time_word_before_apostrophe_s_is_a_possessor_not_when(text: str, role: str, head: str,
+                                                                library: Library) -> None:
+    parse = parse_command(text, library)
+    assert parse.frames[0].elements[role].head == head
+    assert parse.frames[0].elements[role].text.startswith(text.split()[2])

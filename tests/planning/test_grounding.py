@@ -133,3 +133,33 @@ def test_a_places_own_name_calls_it_before_another_places_synonym(library: Libra
     assert [str(s) for s in plan_text("go to the washbasin", library, map=cafe).steps] == ["Go(goal=washbasin_1)"]
     assert [str(s) for s in plan_text("go to the sink", library, map=cafe).steps] == ["Go(goal=sink_1)"]
     assert steps("go to the washbasin", library) == ["Go(goal=sink_1)"]
+
+
+def test_a_compound_spelt_apart_in_the_synonyms_gives_the_place_its_head(library: Library) -> None:
+    """The library spells "armchair" also "arm chair": the armchair is called "the chair" (the
+    townhouse's only chair), while a synonym that is another word ("tv table") still gives no head."""
+    townhouse = load_map(APARTMENT.parent / "townhouse.yaml")
+    assert [str(s) for s in plan_text("go to the chair", library, map=townhouse).steps] == ["Go(goal=armchair_1)"]
+    names = MapNames(load_map(APARTMENT), library.taxonomy)
+    assert "table" not in names.by_id("tv_stand_1").heads
+
+
+def test_a_compound_of_another_kind_is_not_the_place_sharing_its_head(library: Library) -> None:
+    """"the hand dryer" on the townhouse is not its (tumble) dryer: refused, naming what was said; a
+    describing word ("the red dryer") or a word of the map ("the bathroom sink") still finds the place."""
+    townhouse = load_map(APARTMENT.parent / "townhouse.yaml")
+    with pytest.raises(SealError, match="the townhouse has no hand dryer"):
+        plan_text("open the hand dryer", library, map=townhouse)
+    for text, step in [("open the dryer", "Open(theme=dryer_1)"), ("open the red dryer", "Open(theme=dryer_1)"),
+                       ("go to the bathroom sink", "Go(goal=bathroom_sink_1)")]:
+        assert [str(s) for s in plan_text(text, library, map=townhouse).steps] == [step]
+
+
+def test_a_thing_already_in_the_room_it_is_taken_to_is_left_there_with_a_warning(library: Library) -> None:
+    townhouse = load_map(APARTMENT.parent / "townhouse.yaml")
+    found = plan_text("take the umbrella to the hallway", library, map=townhouse)
+    assert found.steps == () and found.warnings == (
+        "Bring(theme=umbrella, goal=hallway) is not done: in(umbrella, hallway), hand_empty holds already",)
+    assert len(plan_text("take the umbrella to the garage", library, map=townhouse).steps) == 2
+    apple = plan_text("bring the apple to the kitchen", library, map=load_map(APARTMENT))   # shut in the fridge
+    assert [s.binding.frame.name for s in apple.steps] == ["Open", "Pick", "Bring"]

@@ -53,6 +53,14 @@ def test_the_time_or_the_date_asked_for_is_a_fact_the_robot_tells(library: Libra
     assert fact_asked("time") == "time" and fact_asked("what time is it right now") == "time"
 
 
+def test_a_fact_asked_of_today_is_told_however_the_possessive_is_written(library: Library) -> None:
+    date = Question("fact", relation="date")
+    assert [q for _, q in asked("tell me today's date", library)] == [date]     # "today" was read as when
+    assert [q for _, q in asked("what's today's date?", library)] == [date]
+    assert fact_asked("what’s the time") == "time"
+    assert fact_asked("tomorrow's date") is None                     # not the clock's date: nothing made up
+
+
 def test_a_question_kind_is_checked() -> None:
     with pytest.raises(ValueError, match="one of where, whether, how_many, what"):
         Question("why")

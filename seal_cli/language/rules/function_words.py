@@ -33,6 +33,8 @@ def _time_word(s: State, i: int) -> Match | None:
     if s.in_np():
         return None
     n = match_phrase(s.words, i, TIME_WORDS)
+    if n and s.next_lower(i + n - 1) == "'s":
+        return None                                               # "today's date": whose, not when
     if n and (s.words[i].lower != "first" or s.prev_tag() not in (Tag.VERB, Tag.PREP)):
         return s.emit(i, n, Tag.PARTICLE, "time")                 # "put it in the fridge right away"
     return None

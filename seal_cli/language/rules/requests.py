@@ -23,6 +23,7 @@ from seal_cli.language.english import (
     LET_KNOW,
     NUMBER_MEANS,
     NUMBER_OF,
+    NUMBERS,
     OBJECT_PRONOUNS,
     PATH_ALONE,
     PATH_MEANS,
@@ -565,8 +566,9 @@ def _switched_alone(s: State, i: int) -> Match | None:
     first = words[i].lower
     nxt = s.next_lower(i)
     if not s.np_starts(i) or first in PRONOUNS or first in QUESTION_WORDS or gerund_lemma(first) is not None or \
-            verb_lemma(first) == first and (nxt in DETERMINERS or nxt in POSSESSIVES or nxt in PRONOUNS):
-        return None                               # "flip the lamp off", "turning the light on": a verb first
+            verb_lemma(first) == first and (nxt in DETERMINERS or nxt in POSSESSIVES or nxt in PRONOUNS
+                                            or nxt in NUMBERS or nxt.isdigit()):
+        return None                               # "flip the lamp off", "put two phones on the bed": a verb first
     found = s.verb_at(i)
     if found is not None and found[2] is not None:
         return None                               # "switch the radio on": the verb and its split particle
