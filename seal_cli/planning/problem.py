@@ -465,7 +465,8 @@ def _where_said_first(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[s
             or {"source", "ground"} & set(frame.roles)):
         return []
     said = where_words(phrase.text)
-    if not said:
+    if not said or any(words_of(other.text or "") == tuple(said.split()) for role, other in evoked.elements.items()
+                       if role != "theme"):   # the where is the frame's own goal (a stack: "... in the cup in the X")
         return []
     try:
         there = names.ground(said, "location", ("room", "place"))

@@ -119,7 +119,9 @@ def test_where_a_theme_is_said_to_be_is_where_it_is_taken_from(library: Library)
                         ["Pick(theme=cup, source=bedroom)", "Place(theme=cup, goal=dining_table_1)"]),
                        ("switch on the radio in the kitchen", ["Find(theme=radio, ground=kitchen)",
                                                                "ToggleOn(theme=radio)"]),
-                       ("bring me a cup of coffee", ["Bring(theme=cup, recipient=me)"])):
+                       ("bring me a cup of coffee", ["Bring(theme=cup, recipient=me)"]),
+                       ("put the spoon in the cup in the family room",     # a stack: the where is its goal
+                        ["Place(theme=spoon, goal=cup)", "Place(theme=cup, goal=family_room)"])):
         assert [str(b) for b in problem_of_text(text, library, map=apartment).commanded] == plan, text
     with pytest.raises(SealError, match=re.escape("the apartment has no garage; its rooms are")) as refused:
         problem_of_text("wash the cup in the garage", library, map=apartment)
