@@ -201,6 +201,10 @@ class Frame:
                         yield SealError(f"{section} {item} names {arg!r}, which {self.name} lacks"
                                         f"{_suggest(arg, seen)}; its elements are {_listing(seen)}", item.where)
 
+    def needs_held(self, role: str) -> bool:
+        """Whether the frame needs the robot to hold its ``role`` first (a ``holding(role)`` precondition)."""
+        return any(f.predicate == "holding" and f.args == (role,) and not f.negated for f in self.preconditions)
+
     @classmethod
     def salvage(cls, name: str, **fields: Any) -> Frame | None:
         """The frame without what its own checks refuse (a second element or lexical unit of one

@@ -130,9 +130,9 @@ def _split(words: tuple[str, ...]) -> tuple[tuple[str, ...], tuple[str, ...]]:
     return words, ()
 
 
-def where_words(text: str) -> str:
-    """The words of a phrase that say where its thing is ("the cup in the bedroom": "bedroom"); "" for none."""
-    return " ".join(_split(words_of(text))[1])
+def where_words(text: str) -> tuple[str, ...]:
+    """The words of a phrase that say where its thing is ("the cup in the bedroom": ``("bedroom",)``)."""
+    return _split(words_of(text))[1]
 
 
 class MapNames:
@@ -281,7 +281,7 @@ class MapNames:
 
     def where_said(self, text: str) -> str | None:
         """The room a phrase says its thing is in ("the cups in the family room": family_room)."""
-        _, where = _split(words_of(text))
+        where = where_words(text)
         return self._room_of_words(where) if where else None
 
     def names_of_kind(self, kind: str) -> Sequence[str]:

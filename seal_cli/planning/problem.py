@@ -327,8 +327,7 @@ def _check_types(frame: Frame, values: Mapping[str, tuple[str, ...]], phrases: M
                 raise _located(f"{frame.name} needs its {role} to be an object the robot can handle, and "
                                f"{_said(phrase, name)} is {where}" + (f" (the library's {frame.name}: {what})"
                                                                       if what else ""), phrase, text)
-            held = any(f.predicate == "holding" and f.args == (role,) and not f.negated for f in frame.preconditions)
-            if held and (name in things.fixed or kind_of(things.taxonomy, cls, FIXED) is True):
+            if frame.needs_held(role) and (name in things.fixed or kind_of(things.taxonomy, cls, FIXED) is True):
                 phrase = phrases.get(role)
                 raise _located(f"{frame.name} needs to hold its {role}, and {_said(phrase, name)} is "
                                f"{'fixed in the map' if name in things.fixed else 'fixed: it never moves'}",
@@ -464,10 +463,11 @@ def _where_said_first(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[s
     if (names is None or phrase is None or not phrase.text or phrase.conjuncts or "theme" not in values
             or {"source", "ground"} & set(frame.roles)):
         return []
-    said = where_words(phrase.text)
-    if not said or any(words_of(other.text or "") == tuple(said.split()) for role, other in evoked.elements.items()
-                       if role != "theme"):   # the where is the frame's own goal (a stack: "... in the cup in the X")
+    where = where_words(phrase.text)
+    if not where or any(words_of(other.text or "") == where for role, other in evoked.elements.items()
+                        if role != "theme"):   # the where is the frame's own goal (a stack: "... in the cup in the X")
         return []
+    said = " ".join(where)
     try:
         there = names.ground(said, "location", ("room", "place"))
     except SealError as wrong:
@@ -478,7 +478,7 @@ def _where_said_first(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[s
             raise _located(refused.message, phrase, text)
         return []                           # "the cup of tea", "the book with the red cover": no where
     room = there.id if there.kind == "room" else there.room
-    held = any(f.predicate == "holding" and f.args == ("theme",) for f in frame.preconditions)
+    held = frame.needs_held("theme")
     first: list[Binding] = []
     for value in values["theme"]:
         if names.by_id(value) is not None or value in things.people:     # a map thing: it stays where it is
