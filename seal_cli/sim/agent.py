@@ -1310,8 +1310,9 @@ class Agent:
                 self.placed.add(args[0])
         elif name == "pick":
             self.placed.discard(args[0])
-        elif name == "open":
+        elif name == "open":           # what the opening shows is seen, as when it peeks
             self.opened.add(args[0])
+            self.look(quiet=True)
 
     def put_beside(self, thing: str, target: str, refused: Outcome) -> tuple[Outcome, list[str]]:
         """"Put the keys on the laptop", "to the right of the knife", "take the bowl to the lamp":

@@ -180,3 +180,16 @@ def test_counting_furniture_reads_the_map_and_a_class_nobody_knows_is_none_anywh
     _, chairs = pipeline.run_on_map(m, "how many chairs are in the dining room", library, make_policy("sefm"),
                                     rng=np.random.default_rng(0))
     assert chairs.completed and chairs.answer == "0 chairs in the dining room; it knows of no chairs anywhere"
+
+
+def test_what_an_opening_shows_is_seen_so_the_next_step_needs_no_search(library: Library) -> None:
+    """"Open the fridge, take out the apple": the apple inside is seen when the fridge opens, so
+    the Pick that follows takes it from there, with no look elsewhere and no metre driven."""
+    s, agent, result, heard = run(library, [("Open", {"theme": "fridge"}), ("Pick", {"theme": "apple"})])
+    assert result.completed, result.reason
+    texts = [r.text for r in heard]
+    opened = next(i for i, t in enumerate(texts) if t.startswith("opened fridge_1; inside: apple_1"))
+    assert texts[opened + 1] == "sees apple_1"
+    picked = next(r for r in heard if r.text.startswith("picked up apple_1"))
+    assert not any(r.kind in ("go", "search") for r in heard[opened:heard.index(picked)])
+    assert s.world.robot.holding == "apple_1"
