@@ -22,7 +22,8 @@ def kitchen(library: Library, *, apple_in: str = "fridge_1", priors: bool = True
     places = [("fridge_1", "fridge", (5.9, 1.0), True), ("counter_1", "counter_top", (0.1, 1.0), False),
               ("table_1", "dining_table", (3.0, 3.9), False), ("cabinet_1", "cabinet", (0.1, 2.5), True),
               ("microwave_1", "microwave", (0.1, 3.5), True)]
-    items = [Item(n, c, at, movable=False, receptacle=True, openable=o) for n, c, at, o in places]
+    items = [Item(n, c, at, movable=False, receptacle=True, openable=o, toggleable=c == "microwave")
+             for n, c, at, o in places]
     spot = {"fridge_1": (5.8, 1.1), "counter_1": (0.2, 1.1), "table_1": (3.0, 3.8), "cabinet_1": (0.2, 2.5)}
     items += [Item("apple_1", "apple", spot[apple_in], parent=apple_in),
               Item("knife_1", "knife", (0.2, 0.9), parent="counter_1"),

@@ -924,6 +924,15 @@ class Agent:
             self.state = State.of(set(self.state.facts) | {Fact("open", (self.world.items[place].key,))},
                                   self.state.taxonomy, closable=self.state.closable, classes=self.state.classes)
 
+    def close_to_use(self, place: str) -> None:
+        """Close what must be shut for the action (a microwave before it is switched on)."""
+        outcome = self.world.act("close", place)
+        self.say("act" if outcome.ok else "fail", outcome.message, action="close", args=[place])
+        if outcome.ok:
+            key = self.world.items[place].key
+            self.state = State.of(set(self.state.facts) - {Fact("open", (key,))}, self.state.taxonomy,
+                                  closable=self.state.closable, classes=self.state.classes)
+
     def drive_to(self, cell: Cell, why: str, until: Callable[[], bool] | None = None,
                  rethink: Callable[[], str | None] | None = None) -> bool:
         """Drive the shortest path to the cell, looking every ``look_every`` metres and at the end. A drive
@@ -1031,6 +1040,9 @@ class Agent:
             outcome = self.world.act(action.name, *args)
         if outcome.reason is Reason.CLOSED and action.name == "place":
             self.open_to_look(args[1])
+            outcome = self.world.act(action.name, *args)
+        if outcome.reason is Reason.OPEN and outcome.about is not None:   # a microwave left open: shut it first
+            self.close_to_use(outcome.about)
             outcome = self.world.act(action.name, *args)
         if outcome.reason is Reason.NOT_RECEPTACLE and action.name == "place":
             outcome, args = self.put_beside(args[0], args[1], outcome)

@@ -99,6 +99,7 @@ class Reason(enum.Enum):
     BEHIND_WALL = "behind_wall"
     INSIDE_CLOSED = "inside_closed"
     CLOSED = "closed"
+    OPEN = "open"
     NOT_RECEPTACLE = "not_receptacle"
     FIXED = "fixed"
     HAND_FULL = "hand_full"
@@ -431,7 +432,7 @@ class World:
         if (why := self._reachable(thing)) is not None:
             return why
         if item.openable and on and item.is_open and self._is(item, "heater"):
-            return Outcome(False, f"{thing} must be closed before it is switched on")
+            return Outcome(False, f"{thing} must be closed before it is switched on", Reason.OPEN, thing)
         self._set(item, "on", on)
         return Outcome(True, f"switched {thing} {'on' if on else 'off'}")
 

@@ -193,3 +193,15 @@ def test_what_an_opening_shows_is_seen_so_the_next_step_needs_no_search(library:
     picked = next(r for r in heard if r.text.startswith("picked up apple_1"))
     assert not any(r.kind in ("go", "search") for r in heard[opened:heard.index(picked)])
     assert s.world.robot.holding == "apple_1"
+
+
+def test_a_heater_left_open_is_closed_before_it_is_switched_on(library: Library) -> None:
+    """"Put the apple in the microwave and turn it on": the door the Place opened is shut before the
+    switch, not refused and replanned until the replans run out."""
+    s, agent, result, heard = run(library, [("Place", {"theme": "apple", "goal": "microwave"}),
+                                            ("ToggleOn", {"theme": "microwave"})], apple_in="counter_1")
+    assert result.completed, result.reason
+    acts = [r.text for r in heard if r.kind == "act"]
+    assert acts.index("closed microwave_1") + 1 == acts.index("switched microwave_1 on")
+    assert s.world.has("microwave_1", "on") and not s.world.items["microwave_1"].is_open
+    assert s.world.items["apple_1"].parent == "microwave_1"
