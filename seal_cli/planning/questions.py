@@ -18,7 +18,11 @@ Tell with the question as its message — but the *kind* of answer a person expe
   answer is yes or no with what the robot saw (:data:`STATE_WORDS`);
 - ``fact``: a Tell whose message asks for something the robot knows without looking — the time, the
   date, the day ("tell Anna the time", "what time is it?"); ``relation`` is the fact (:data:`FACTS`).
-  The robot says it (its clock: ``seal run --clock``), never the message's name.
+  The robot says it (its clock: ``seal run --clock``), never the message's name;
+- ``report``: a Tell, after a frame of the same command that answers a question, whose message asks
+  (begins with a question word: "tell me *where* it is", "... *what* you found", "... *how many*") or
+  points back at what was sought ("report *its* location"): the robot says what the earlier frames
+  found out, never the message's words. Any other message ("tell Jo hello") is said as it is.
 
 A question is read from words only (the frame's span in the text, the message's words) and
 grounded with :class:`~seal_cli.planning.grounding.MapNames`: never from the map's objects.
@@ -30,13 +34,14 @@ from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
 from seal_cli.frames.model import Action, Binding, Frame
-from seal_cli.language.english import CHECK_WHETHER
+from seal_cli.language.english import CHECK_WHETHER, WH_WORDS
 from seal_cli.language.values import Evoked, Parse
 from seal_cli.planning.grounding import MapNames, words_of
 
-__all__ = ["FACTS", "KINDS", "STATE_WORDS", "Question", "asks_whether", "fact_asked", "looking", "read_questions"]
+__all__ = ["FACTS", "KINDS", "STATE_WORDS", "Question", "asks_whether", "fact_asked", "looking", "read_questions",
+           "reports"]
 
-KINDS = ("where", "whether", "how_many", "what", "state", "fact")
+KINDS = ("where", "whether", "how_many", "what", "state", "fact", "report")
 
 FACTS = frozenset({"time", "date", "day"})
 """What a robot tells from its clock, not from looking: "the *time*", "what *day* it is"."""
@@ -60,6 +65,9 @@ ASKING_WHETHER = frozenset({"is", "are", "was", "were"})
 
 ASKING_WHAT = {"what": "thing", "whats": "thing", "who": "person", "whos": "person"}
 """The first word of a message that asks what (or who) is somewhere, and what it asks for."""
+
+POINTING_BACK = frozenset({"it", "its", "they", "them", "their"})
+"""The pronouns and possessives by which a message refers to a thing sought before ("report *its* location")."""
 
 CONTAINING = ("on top of", "inside", "on", "in", "at")
 """The words after which a "what is ..." question names where to look."""
@@ -106,6 +114,14 @@ def fact_asked(message: str) -> str | None:
     said = message.lower().replace("_", " ").replace("?", " ").replace("’", "'").replace("'s", " 's")
     words = [w for w in said.split() if w not in FACT_FILLER]      # "what's today's date": what 's today 's date
     return words[0] if len(words) == 1 and words[0] in FACTS else None
+
+
+def reports(message: str) -> bool:
+    """Whether a message, said after a question of the same command was answered, asks for that answer:
+    it begins with a question word ("*where* it is", "*what* you found") or refers back with a pronoun or a
+    possessive ("*its* location", "where *they* are")."""
+    words = message.lower().replace("_", " ").replace("?", " ").split()
+    return bool(words) and (words[0] in WH_WORDS or any(w in POINTING_BACK for w in words))
 
 
 def _what(message: str, names: MapNames | None) -> Question | None:
@@ -156,6 +172,7 @@ def read_questions(parse: Parse, commanded: Sequence[Binding], names: MapNames |
     The frames of one evoked verb phrase are consecutive in ``commanded`` and share its frame
     (:func:`seal_cli.planning.problem.commanded_frames`); each takes the question its words ask."""
     questions: dict[Binding, Question] = {}
+    answered = False                  # an earlier frame of the command answers a question
     k = 0
     for evoked in parse.frames:
         start = k
@@ -171,8 +188,12 @@ def read_questions(parse: Parse, commanded: Sequence[Binding], names: MapNames |
         elif evoked.frame == "Count":
             question = Question("how_many")
         elif evoked.frame == "Tell" and (message := evoked.elements.get("message")) is not None:
-            fact = fact_asked(message.text or message.head)
-            question = Question("fact", relation=fact) if fact else _what(message.text or message.head, names)
+            said = message.text or message.head
+            fact = fact_asked(said)
+            question = Question("fact", relation=fact) if fact else _what(said, names)
+            if question is None and answered and reports(said):           # "find the cup and tell me where it is"
+                question = Question("report")
         if question is not None:
             questions.update((b, question) for b in commanded[start:k])
+            answered = answered or question.kind != "report"
     return questions

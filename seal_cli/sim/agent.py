@@ -1019,6 +1019,8 @@ class Agent:
                 return self.answer_what(question, binding)
             if action.name == "say" and question is not None and question.kind == "fact":
                 return self.tell_fact(question.relation, binding)
+            if action.name == "say" and question is not None and question.kind == "report":
+                return self.report(binding)
             if action.name == "count":
                 counted = self.how_many(action.args[0], binding)
                 self.answer(counted)
@@ -1068,6 +1070,12 @@ class Agent:
         if self.clock is None:
             return datetime.now()
         return self.clock + timedelta(seconds=self.world.robot.path_m / ROBOT_SPEED)
+
+    def report(self, binding: Binding) -> Outcome:
+        """Say what the command's earlier frames found out ("find the cup and tell me where it is"), not the
+        message's words; said to someone else, it is not the speaker's answer again."""
+        said = "; ".join(self.answers) if self.answers else "it found out nothing to tell"
+        return self._act_words("say", [binding.elements.get("message", "report")], f'said "{said}"')
 
     def tell_fact(self, fact: str, binding: Binding) -> Outcome:
         """Say what the robot knows without looking ("the time is 14:05", "the date is 2 December 2026");

@@ -352,3 +352,15 @@ def test_asked_whether_a_thing_is_in_a_closed_place_the_robot_opens_it_once_and_
     report = run_json("is there a spoon in the fridge?")                 # nothing to show: closed as found
     texts = [r["text"] for r in report["records"]]
     assert report["answer"].startswith("no spoon in fridge_1") and texts.count("closed fridge_1") == 1
+
+
+def test_telling_where_a_thing_found_is_says_what_was_found_not_the_words() -> None:
+    report = run_json("find the cup and tell me where it is")
+    said = [r["text"] for r in report["records"] if r["text"].startswith("said ")]
+    assert report["completed"] and said == [f'said "{report["answer"]}"']
+    assert report["answer"].startswith("cup_1 is on coffee_table_1 in the family room")
+    told = run_json("look for the apple and report its location to ben")
+    said = [r["text"] for r in told["records"] if r["text"].startswith("said ")]
+    assert told["completed"] and said == ['said "apple_1 is in fridge_1 in the kitchen at (8.50, -0.80)"']
+    hello = run_json("find the cup and tell me hello")
+    assert [r["text"] for r in hello["records"] if r["text"].startswith("said ")] == ['said "hello"']

@@ -10,7 +10,7 @@ from seal_cli.language.parser import parse_command
 from seal_cli.maps.formats.map_server import load_map
 from seal_cli.planning.grounding import MapNames
 from seal_cli.planning.problem import build_problem
-from seal_cli.planning.questions import Question, fact_asked, read_questions
+from seal_cli.planning.questions import Question, fact_asked, read_questions, reports
 
 
 def asked(text: str, library: Library) -> list[tuple[str, Question]]:
@@ -89,3 +89,17 @@ def test_a_state_question_keeps_where_the_thing_is(library: Library) -> None:
     assert asked("is the stove still on?", library) == [("LookAt(theme=stove_1)", Question("state", None, "still on"))]
     negated = Question("state", None, "not open")
     assert asked("is the fridge not open?", library) == [("LookAt(theme=fridge_1)", negated)]
+
+
+def test_a_message_asking_for_what_an_earlier_frame_found_reports_it(library: Library) -> None:
+    """"find the cup and tell me where it is": the Tell reports the Find's answer; a message that asks
+    nothing ("hello") or a Tell with no question before it is said as it is."""
+    report = Question("report")
+    assert [q for _, q in asked("find the cup and tell me where it is", library)] == [Question("where"), report]
+    assert [q for _, q in asked("look for the spoon and tell me what you found", library)][-1] == report
+    assert [q for _, q in asked("find the apple and report its location to me", library)][-1] == report
+    assert [q for _, q in asked("find the cup and tell Ben where it is", library)][-1] == report
+    assert [q for _, q in asked("find the cup and tell me hello", library)] == [Question("where")]
+    assert asked("go to the kitchen and tell me where you are", library) == []   # nothing asked before it
+    assert reports("where it is") and reports("its location") and not reports("hello")
+    assert not reports("that you are here")     # a pronoun of the speaker or the robot points at nothing sought
