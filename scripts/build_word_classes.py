@@ -331,6 +331,38 @@ def pruned(context: Context, words: dict[str, dict[str, int]]) -> dict[str, dict
     return out
 
 
+FITTED_TOLERANCE = 0.005
+"""How far a fitted weight may differ from the shipped one in ``--check``: L-BFGS stops at a
+gradient tolerance, so another scipy or BLAS moves the third decimal of a few weights (and drops or
+adds a weight that rounds to zero). Every count must be the same."""
+
+
+def differences(shipped: object, built: object, path: str = "") -> list[str]:
+    """Where two tables differ: any count, word or key, or a fitted number by more than
+    :data:`FITTED_TOLERANCE` (a number missing on one side counts as zero)."""
+    def small(value: object) -> bool:
+        return isinstance(value, float) and abs(value) <= FITTED_TOLERANCE
+
+    if isinstance(shipped, dict) and isinstance(built, dict):
+        out: list[str] = []
+        for key in sorted(set(shipped) | set(built)):
+            if key not in shipped or key not in built:
+                if not small(shipped.get(key, built.get(key))):
+                    out.append(f"{path}/{key} only in the {'new' if key not in shipped else 'shipped'} table")
+                continue
+            out += differences(shipped[key], built[key], f"{path}/{key}")
+        return out
+    if isinstance(shipped, list) and isinstance(built, list):
+        if len(shipped) != len(built):
+            return [f"{path}: {len(shipped)} entries shipped, {len(built)} built"]
+        pairs = enumerate(zip(shipped, built, strict=True))
+        return [d for k, (a, b) in pairs for d in differences(a, b, f"{path}[{k}]")]
+    if isinstance(shipped, float) and isinstance(built, float):
+        return [] if abs(shipped - built) <= FITTED_TOLERANCE else [f"{path}: {shipped} shipped, {built} built"]
+    same = shipped == built and type(shipped) is type(built)
+    return [] if same else [f"{path}: {shipped!r} shipped, {built!r} built"]
+
+
 def dump(data: dict[str, object]) -> str:
     """JSON with one wording a line, so that a rebuild's diff reads."""
     head = {k: v for k, v in data.items() if k not in SECTIONS}
@@ -491,8 +523,13 @@ def main() -> int:
                  "scenery": scenery(args.data, classes)})
     if args.check:
         shipped = args.out.read_text() if args.out.is_file() else ""
-        if shipped != text:
-            print(f"{args.out}: differs from what the train split gives (rebuild it)", file=sys.stderr)
+        try:
+            problems = differences(json.loads(shipped), json.loads(text)) if shipped else ["(no table)"]
+        except json.JSONDecodeError as error:
+            problems = [f"not JSON: {error}"]
+        if problems:
+            print(f"{args.out}: differs from what the train split gives (rebuild it): "
+                  f"{'; '.join(problems[:5])}{' ...' if len(problems) > 5 else ''}", file=sys.stderr)
             return 1
         print(f"{args.out}: up to date")
         return 0
