@@ -351,9 +351,12 @@ class SeFMPolicy(Policy):
         field_ = agent.distances()
         X, W, modes = self.cloud(agent, target)
         W = above_floor(W)
-        for k in agent.instances(agent.class_of(target)):
-            if agent.spent(k.id, target):  # the belief is right there, but that one will not do
-                W[np.hypot(X[:, 0] - k.at[0], X[:, 1] - k.at[1]) <= agent.world.reach] = 0.0
+        if self.further_prior and self.further(agent, target):   # the found ones are not in it: nothing to cut
+            W = self.further_belief(agent, X, agent.class_of(target))
+        else:
+            for k in agent.instances(agent.class_of(target)):
+                if agent.spent(k.id, target):  # the belief is right there, but that one will not do
+                    W[np.hypot(X[:, 0] - k.at[0], X[:, 1] - k.at[1]) <= agent.world.reach] = 0.0
         hidden = np.zeros(len(X), dtype=bool)
         for x, y, r in self.sefm.hidden_places():
             hidden |= np.hypot(X[:, 0] - x, X[:, 1] - y) <= r
@@ -369,6 +372,41 @@ class SeFMPolicy(Policy):
                 options.append(Look(mass, float(field_[view.cell]), view))
         fresh = [o for o in options if (o.view.cell, o.view.open) not in self.tried and o.mass > self.min_mass]
         return self._taken(agent, binding, target, self._first_of_tour(agent, fresh, target) if fresh else None)
+
+    further_prior = True
+    """Search for a further instance of a class (the second laptop, once the first is found and put
+    down) by the class's prior over the places not yet looked at (:meth:`further_belief`), not by the
+    filter's belief of the class, which the first instance's detection has drawn onto it; the places
+    around the found ones keep their prior (the belief there was the found one's, and it is not in this
+    one). Off: the filter's belief with everything within reach of a found instance cut out (earlier
+    rounds), which also cut the places beside it."""
+
+    @staticmethod
+    def further(agent: Agent, target: str) -> bool:
+        """Whether ``target`` must be an instance of its class other than every one seen: some seen one
+        is spent for it (put in place already, out of reach, or chosen for another name)."""
+        return any(agent.spent(k.id, target) for k in agent.instances(agent.class_of(target)))
+
+    def further_belief(self, agent: Agent, X: np.ndarray, cls: str) -> np.ndarray:
+        """Where a further instance of ``cls`` may be, as a weight per point of ``X`` (the map's free
+        cells): the class's prior above its floor.
+
+        SeFM keeps one belief per class (one object, after SLiM): a detection puts its particles on the
+        instance seen, and what is left elsewhere is the prior's redrawn 5 % at 1 % of the weight and
+        whatever negative information has done to it — the wrong belief for *another* instance, and one
+        whose residue ranks places by sampling noise (in one train episode the two armchairs by the bed,
+        while the counter top the prior favours had none left above the floor). Taking the instances to
+        be placed independently by the prior, with a detector that sees all a place holds once the robot
+        has looked into or onto it from within reach, the posterior of a further instance is the prior
+        restricted to the places not yet so looked at — which is what the search's places model does with
+        this belief (:meth:`_looks` keeps only the places not inspected). The approximation: looks from
+        beyond reach (a place 1.5 m off seen from across the room) and the detector's misses are not
+        counted against a place."""
+        w = np.asarray(self.map.prior(cls).weights, dtype=float)
+        w = np.where(np.isfinite(w) & (w > 0), w, 0.0)
+        if len(w) != len(X) or w.sum() <= 0:
+            return np.zeros(len(X))
+        return above_floor(w / w.sum())
 
     tour_views = 8
     """How many of the best looks (by belief per metre) the search orders as a tour before taking the

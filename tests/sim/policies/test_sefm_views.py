@@ -308,3 +308,36 @@ def test_the_drive_stops_to_choose_again_when_what_it_saw_makes_another_view_bet
             later = [r.text for r in agent.records if r.kind == "search"]
             assert "makes bedroom better" in stops[0] and any(t.startswith("looks for spoon: bedroom") for t in later)
     assert paths[1.0] < paths[float("inf")] - 1.0, paths
+
+
+def test_a_further_instance_is_looked_for_by_the_prior_not_by_the_found_ones_belief(library: Library) -> None:
+    """The first apple seen on the table and put in place: the filter's one belief of the class is where
+    that apple was (the shelves keep under 0.05 of it), and cutting it out cut the cabinet beside the
+    table too. A second apple is looked for by the prior over the places not looked at: the shelves and
+    cabinets a quarter each, so the first look opens the cabinet half a metre off."""
+    scene = corridor(library, {"apple": {"shelf": 0.5, "cabinet": 0.5}}, start=6.5, apple_on="table_1")
+    views = {}
+    for further in (True, False):
+        policy = SeFMPolicy(particles=200)
+        policy.further_prior = further
+        agent = Agent(scene, library, policy, rng=np.random.default_rng(0), classes={"apple_2": "apple"})
+        agent.state = agent.initial_state()
+        policy.begin(agent)
+        agent.look()
+        assert "apple_1" in agent.known
+        agent.placed.add("apple_1")
+        commanded = [library.frame("Pick").bind({"theme": "apple_2"})]
+        agent.todo, agent.steps, agent.index = list(commanded), agent.planner(commanded, library, agent.state), 0
+        assert policy.further(agent, "apple_2")
+        X, W, _ = policy.cloud(agent, "apple_2")
+        places = policy._places(agent)
+        ids = [p.id for p in places]
+        filtered = policy._shares(agent, places, X, above_floor(W), "apple")
+        assert filtered[ids.index("shelf_1")] + filtered[ids.index("shelf_2")] < 0.05
+        prior = dict(zip(ids, policy._shares(agent, places, X, policy.further_belief(agent, X, "apple"), "apple"),
+                         strict=True))
+        assert prior["shelf_1"] == pytest.approx(0.25, abs=0.02) and prior["shelf_2"] == pytest.approx(0.25, abs=0.02)
+        assert prior["cabinet_1"] + prior["cabinet_2"] == pytest.approx(0.5, abs=0.02)
+        views[further] = policy.greedy_view(agent, agent.steps[0], "apple_2")
+    assert views[True] is not None and views[True].open == "cabinet_2"
+    assert views[False] is not None and views[False].open != "cabinet_2"
