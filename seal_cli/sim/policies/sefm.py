@@ -415,11 +415,21 @@ class SeFMPolicy(Policy):
     onward = 1.0
     """SeFM's frame context in one room: the search is for where the frame can be done, so the drive on to
     the plan's next stop (the fridge to put the apple in, the lamp to look at it under; where no instance
-    is known yet, the stop's belief: :meth:`_onward_belief`) counts. The looks the tour is made of are
-    the best by belief per metre of the drive there *and on* (this weight), with the best by belief per
-    metre there alone, and the tour's expected cost adds, for the belief each look would be the first
-    to reveal, the drive on from it (:meth:`_first_of_tour`). 0: the thing's search alone, as
-    object-only searches. Chosen on ALFRED-2D's train split (docs/benchmarks.md)."""
+    is known yet, the stop's belief: :meth:`_onward_belief`) counts: the tour's expected cost adds, for the
+    belief each look would be the first to reveal, this weight times the drive on from it, and the looks
+    the tour is made of are also drawn by belief per metre there and on (:meth:`_first_of_tour`,
+    :attr:`onward_pool`). 0: the thing's search alone, as object-only searches. Chosen on ALFRED-2D's
+    train split (docs/benchmarks.md)."""
+
+    onward_pool = True
+    """Also draw the tour's looks from the best by belief per metre of the drive there *and on*. Off: the
+    looks are the best by belief per metre there, for SeFM as for object-only, and the drive on counts only
+    in the tour's expected cost. Under the model the drive on is paid once, from the look that finds the
+    thing, so for looks that reveal different places Σ p_k · on(v_k) is the same in every order and cannot
+    choose the looks; but ALFRED's things often have several instances (the first found is the one used)
+    and the drive sees things on the way, neither of which the model counts, and on train the looks near
+    the next stop paid: off, 3.33 m against 3.29 over the seven task types (shorter in cooling and
+    pick-two, longer in the others; docs/benchmarks.md), so on."""
 
     def _onward_field(self, agent: Agent, stop: Known) -> np.ndarray:
         """Metres from every cell to the nearest cell to act on ``stop`` from (kept per stop and place)."""
@@ -473,9 +483,11 @@ class SeFMPolicy(Policy):
         nearer the plan's next known stop — a tie-break, so a known goal never draws the
         robot away from where the thing is likelier. SeFM (:attr:`onward` > 0) adds to E, for the belief
         p_j each look reveals first, p_j times the drive on from it to the next stop: a place two looks
-        see is best seen from the one nearer where the frame goes on; and it draws the tour's looks from
-        the best by belief per metre there and on as well as from the best by belief per metre there.
-        Approximations: the looks are the best few, not all; what is seen on the way is not counted."""
+        see is best seen from the one nearer where the frame goes on (for looks that reveal different
+        places that sum is the same in every order: the drive on is paid once); and it draws the tour's
+        looks from the best by belief per metre there and on as well as from the best by belief per metre
+        there (:attr:`onward_pool`). Approximations: the looks are the best few, not all; what is seen on
+        the way is not counted; the belief the tour leaves unrevealed adds nothing to E; one instance."""
 
         ahead = self._ahead(agent, agent.class_of(target), agent.world.robot.pose[:2])[:1]
         stands = agent.stand_cells(ahead[0]) if ahead else np.zeros((0, 2), dtype=int)
@@ -490,11 +502,16 @@ class SeFMPolicy(Policy):
             on = self.onward * float(then[o.view.cell]) if then is not None else 0.0
             return round(o.mass / (o.metres + self.distance_scale + (on if np.isfinite(on) else 0.0)), 6)
 
-        ranked = sorted(looks, key=lambda o: -score(o))
-        pool = ranked[: self.tour_views]
-        pool += [o for o in ranked[len(pool):] if score(o) == score(pool[-1])][: self.tour_views]
-        if then is not None:   # and the best looks for the thing alone: the tour's cost decides between them
+        if self.onward_pool and then is not None:
+            ranked = sorted(looks, key=lambda o: -score(o))
+            pool = ranked[: self.tour_views]
+            pool += [o for o in ranked[len(pool):] if score(o) == score(pool[-1])][: self.tour_views]
+            # and the best looks for the thing alone: the tour's cost decides between them
             pool += [o for o in sorted(looks, key=lambda o: -plain(o))[: self.tour_views] if o not in pool]
+        else:   # the looks the search itself values; the drive on enters through the tour's expected cost
+            ranked = sorted(looks, key=lambda o: -plain(o))
+            pool = ranked[: self.tour_views]
+            pool += [o for o in ranked[len(pool):] if plain(o) == plain(pool[-1])][: self.tour_views]
         fields = {o.view.cell: agent.grid.distances(o.view.cell) for o in pool}
 
         def onward(o: Look) -> float:   # metres on to the plan's next known stop

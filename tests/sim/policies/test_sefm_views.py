@@ -341,3 +341,31 @@ def test_a_further_instance_is_looked_for_by_the_prior_not_by_the_found_ones_bel
         views[further] = policy.greedy_view(agent, agent.steps[0], "apple_2")
     assert views[True] is not None and views[True].open == "cabinet_2"
     assert views[False] is not None and views[False].open != "cabinet_2"
+
+
+def test_looks_at_different_places_are_ordered_as_object_only_orders_them(library: Library) -> None:
+    """Nine looks, each revealing a place of its own, the table the apple goes to known at the east end.
+    Whichever look finds the apple, the drive on is paid once from there, so the drive on adds the same
+    to every order and SeFM's first look is object-only's. Drawing the tour's looks by belief per metre
+    there *and on* as well (``onward_pool``, kept on: on ALFRED's train split it paid, for reasons the
+    model does not count) puts the unlikely looks near the table into the tour and changes the first look."""
+    scene = corridor(library, {"apple": {"shelf": 0.8}}, start=3.0)
+    frames = [("Place", {"theme": "apple", "goal": "dining_table"})]
+    spots = [(0.25, 0.15), (1.25, 0.02), (2.75, 0.01), (3.0, 0.01), (3.25, 0.01), (3.5, 0.1), (5.0, 0.47),
+             (6.0, 0.1), (6.75, 0.02)]
+
+    def first(policy: SeFMPolicy) -> tuple[float, float]:
+        agent = ready(library, scene, policy, frames)
+        width = len(policy._places(agent))
+        looks = []
+        for k, (x, mass) in enumerate(spots):
+            reveals = np.zeros(width + len(spots))
+            reveals[width + k] = mass
+            cell = agent.grid.cell((x, 0.5))
+            looks.append(Look(mass, float(agent.distances()[cell]), View(cell, (x, 1.4)), reveals))
+        return agent.grid.point(policy._first_of_tour(agent, looks, "apple").cell)
+
+    alone = SeFMPolicy(particles=50)
+    alone.onward_pool = False
+    assert first(alone) == first(ObjectOnlyPolicy(particles=50)) == (3.5, 0.5)
+    assert first(SeFMPolicy(particles=50)) != (3.5, 0.5)
