@@ -351,9 +351,12 @@ class SeFMPolicy(Policy):
         field_ = agent.distances()
         X, W, modes = self.cloud(agent, target)
         W = above_floor(W)
-        for k in agent.instances(agent.class_of(target)):
-            if agent.spent(k.id, target):  # the belief is right there, but that one will not do
-                W[np.hypot(X[:, 0] - k.at[0], X[:, 1] - k.at[1]) <= agent.world.reach] = 0.0
+        if self.further_prior and self.further(agent, target):   # the found ones are not in it: nothing to cut
+            W = self.further_belief(agent, X, agent.class_of(target))
+        else:
+            for k in agent.instances(agent.class_of(target)):
+                if agent.spent(k.id, target):  # the belief is right there, but that one will not do
+                    W[np.hypot(X[:, 0] - k.at[0], X[:, 1] - k.at[1]) <= agent.world.reach] = 0.0
         hidden = np.zeros(len(X), dtype=bool)
         for x, y, r in self.sefm.hidden_places():
             hidden |= np.hypot(X[:, 0] - x, X[:, 1] - y) <= r
@@ -370,6 +373,41 @@ class SeFMPolicy(Policy):
         fresh = [o for o in options if (o.view.cell, o.view.open) not in self.tried and o.mass > self.min_mass]
         return self._taken(agent, binding, target, self._first_of_tour(agent, fresh, target) if fresh else None)
 
+    further_prior = True
+    """Search for a further instance of a class (the second laptop, once the first is found and put
+    down) by the class's prior over the places not yet looked at (:meth:`further_belief`), not by the
+    filter's belief of the class, which the first instance's detection has drawn onto it; the places
+    around the found ones keep their prior (the belief there was the found one's, and it is not in this
+    one). Off: the filter's belief with everything within reach of a found instance cut out (earlier
+    rounds), which also cut the places beside it."""
+
+    @staticmethod
+    def further(agent: Agent, target: str) -> bool:
+        """Whether ``target`` must be an instance of its class other than every one seen: some seen one
+        is spent for it (put in place already, out of reach, or chosen for another name)."""
+        return any(agent.spent(k.id, target) for k in agent.instances(agent.class_of(target)))
+
+    def further_belief(self, agent: Agent, X: np.ndarray, cls: str) -> np.ndarray:
+        """Where a further instance of ``cls`` may be, as a weight per point of ``X`` (the map's free
+        cells): the class's prior above its floor.
+
+        SeFM keeps one belief per class (one object, after SLiM): a detection puts its particles on the
+        instance seen, and what is left elsewhere is the prior's redrawn 5 % at 1 % of the weight and
+        whatever negative information has done to it — the wrong belief for *another* instance, and one
+        whose residue ranks places by sampling noise (in one train episode the two armchairs by the bed,
+        while the counter top the prior favours had none left above the floor). Taking the instances to
+        be placed independently by the prior, with a detector that sees all a place holds once the robot
+        has looked into or onto it from within reach, the posterior of a further instance is the prior
+        restricted to the places not yet so looked at — which is what the search's places model does with
+        this belief (:meth:`_looks` keeps only the places not inspected). The approximation: looks from
+        beyond reach (a place 1.5 m off seen from across the room) and the detector's misses are not
+        counted against a place."""
+        w = np.asarray(self.map.prior(cls).weights, dtype=float)
+        w = np.where(np.isfinite(w) & (w > 0), w, 0.0)
+        if len(w) != len(X) or w.sum() <= 0:
+            return np.zeros(len(X))
+        return above_floor(w / w.sum())
+
     tour_views = 8
     """How many of the best looks (by belief per metre) the search orders as a tour before taking the
     first (:meth:`_first_of_tour`); 1 is the greedy rule."""
@@ -377,11 +415,21 @@ class SeFMPolicy(Policy):
     onward = 1.0
     """SeFM's frame context in one room: the search is for where the frame can be done, so the drive on to
     the plan's next stop (the fridge to put the apple in, the lamp to look at it under; where no instance
-    is known yet, the stop's belief: :meth:`_onward_belief`) counts. The looks the tour is made of are
-    the best by belief per metre of the drive there *and on* (this weight), with the best by belief per
-    metre there alone, and the tour's expected cost adds, for the belief each look would be the first
-    to reveal, the drive on from it (:meth:`_first_of_tour`). 0: the thing's search alone, as
-    object-only searches. Chosen on ALFRED-2D's train split (docs/benchmarks.md)."""
+    is known yet, the stop's belief: :meth:`_onward_belief`) counts: the tour's expected cost adds, for the
+    belief each look would be the first to reveal, this weight times the drive on from it, and the looks
+    the tour is made of are also drawn by belief per metre there and on (:meth:`_first_of_tour`,
+    :attr:`onward_pool`). 0: the thing's search alone, as object-only searches. Chosen on ALFRED-2D's
+    train split (docs/benchmarks.md)."""
+
+    onward_pool = True
+    """Also draw the tour's looks from the best by belief per metre of the drive there *and on*. Off: the
+    looks are the best by belief per metre there, for SeFM as for object-only, and the drive on counts only
+    in the tour's expected cost. Under the model the drive on is paid once, from the look that finds the
+    thing, so for looks that reveal different places Σ p_k · on(v_k) is the same in every order and cannot
+    choose the looks; but ALFRED's things often have several instances (the first found is the one used)
+    and the drive sees things on the way, neither of which the model counts, and on train the looks near
+    the next stop paid: off, 3.33 m against 3.29 over the seven task types (shorter in cooling and
+    pick-two, longer in the others; docs/benchmarks.md), so on."""
 
     def _onward_field(self, agent: Agent, stop: Known) -> np.ndarray:
         """Metres from every cell to the nearest cell to act on ``stop`` from (kept per stop and place)."""
@@ -435,9 +483,11 @@ class SeFMPolicy(Policy):
         nearer the plan's next known stop — a tie-break, so a known goal never draws the
         robot away from where the thing is likelier. SeFM (:attr:`onward` > 0) adds to E, for the belief
         p_j each look reveals first, p_j times the drive on from it to the next stop: a place two looks
-        see is best seen from the one nearer where the frame goes on; and it draws the tour's looks from
-        the best by belief per metre there and on as well as from the best by belief per metre there.
-        Approximations: the looks are the best few, not all; what is seen on the way is not counted."""
+        see is best seen from the one nearer where the frame goes on (for looks that reveal different
+        places that sum is the same in every order: the drive on is paid once); and it draws the tour's
+        looks from the best by belief per metre there and on as well as from the best by belief per metre
+        there (:attr:`onward_pool`). Approximations: the looks are the best few, not all; what is seen on
+        the way is not counted; the belief the tour leaves unrevealed adds nothing to E; one instance."""
 
         ahead = self._ahead(agent, agent.class_of(target), agent.world.robot.pose[:2])[:1]
         stands = agent.stand_cells(ahead[0]) if ahead else np.zeros((0, 2), dtype=int)
@@ -452,11 +502,16 @@ class SeFMPolicy(Policy):
             on = self.onward * float(then[o.view.cell]) if then is not None else 0.0
             return round(o.mass / (o.metres + self.distance_scale + (on if np.isfinite(on) else 0.0)), 6)
 
-        ranked = sorted(looks, key=lambda o: -score(o))
-        pool = ranked[: self.tour_views]
-        pool += [o for o in ranked[len(pool):] if score(o) == score(pool[-1])][: self.tour_views]
-        if then is not None:   # and the best looks for the thing alone: the tour's cost decides between them
+        if self.onward_pool and then is not None:
+            ranked = sorted(looks, key=lambda o: -score(o))
+            pool = ranked[: self.tour_views]
+            pool += [o for o in ranked[len(pool):] if score(o) == score(pool[-1])][: self.tour_views]
+            # and the best looks for the thing alone: the tour's cost decides between them
             pool += [o for o in sorted(looks, key=lambda o: -plain(o))[: self.tour_views] if o not in pool]
+        else:   # the looks the search itself values; the drive on enters through the tour's expected cost
+            ranked = sorted(looks, key=lambda o: -plain(o))
+            pool = ranked[: self.tour_views]
+            pool += [o for o in ranked[len(pool):] if plain(o) == plain(pool[-1])][: self.tour_views]
         fields = {o.view.cell: agent.grid.distances(o.view.cell) for o in pool}
 
         def onward(o: Look) -> float:   # metres on to the plan's next known stop
