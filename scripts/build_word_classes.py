@@ -49,6 +49,8 @@ from seal_cli.language.chooser import Instance, features, fit  # noqa: E402
 from seal_cli.language.grounding import PORTIONS, Vocabulary  # noqa: E402
 from seal_cli.language.lexicon import noun_lemma  # noqa: E402
 from seal_cli.language.parser import CommandError, Parse, Phrase, parse_command  # noqa: E402
+from seal_cli.language.slicing import SLICED, WHOLE, slice_features, uncut  # noqa: E402
+from seal_cli.language.slicing import THRESHOLD as SLICE_THRESHOLD  # noqa: E402
 from seal_cli.language.stacking import THRESHOLD as STACK_THRESHOLD  # noqa: E402
 from seal_cli.language.stacking import coordinated  # noqa: E402
 from seal_cli.language.steps import NONE, STEPS, eligible, ends_at_steps, step_features  # noqa: E402
@@ -71,7 +73,7 @@ LABELS = ("object", "receptacle", "mrecep", "toggle")
 KEEP = 2
 """A wording seen fewer times than this is left out of the file (it could never reach MIN_SUPPORT alone)."""
 SECTIONS = ("words", "seen", "context", "class_context", "number", "weights", "step_prior", "step_weights",
-            "stacks", "step_left")
+            "stacks", "step_left", "slice_prior", "slice_weights")
 STEP_OF = {"pick_heat_then_place_in_recep": "Heat", "pick_cool_then_place_in_recep": "Cool",
            "pick_clean_then_place_in_recep": "Clean"}
 """The step each ALFRED task type has (the others: none)."""
@@ -264,12 +266,17 @@ def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabula
     where it places two things of different classes together (:func:`~seal_cli.language.stacking.coordinated`),
     each conjunct's class counted as said, and as holding when the task carried the other in it; where
     it ends at two steps (:func:`~seal_cli.language.steps.ends_at_steps`), the last step counted as
-    ended, and as left when the task left the thing in that step's instrument."""
+    ended, and as left when the task left the thing in that step's instrument; where it says no cutting
+    of a thing of a class train tasks sliced (:func:`~seal_cli.language.slicing.uncut`), whether the task
+    sliced it, learned from the sentence's words, the thing's class and the frames evoked
+    (:func:`~seal_cli.language.slicing.slice_features`)."""
     library = load_library()
     grounded = vocabulary.with_usage(usage_of(data))
     said: list[tuple[str, tuple[str, ...]]] = []
     stacks: dict[str, Counter[str]] = {}
     ended: dict[str, Counter[str]] = {}
+    sliceable = sorted({class_key(r["object"]) for r in rows if r["sliced"] in ("1", "True", "true")})
+    cut: list[tuple[str, tuple[str, ...]]] = []
     for row in rows:
         text = " ".join(row["goal_sentence"].split())
         try:
@@ -290,6 +297,11 @@ def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabula
             by["ended"] += 1
             if class_key(parse.resolve(step.elements["instrument"]).cls or "") == class_key(row["receptacle"]):
                 by["left"] += 1
+        first = uncut(parse, sliceable)
+        if first is not None:
+            thing = parse.resolve(parse.frames[first].elements["theme"]).cls
+            cut.append((SLICED if row["sliced"] in ("1", "True", "true") else WHOLE,
+                        slice_features(context_words(text), thing, (f.frame for f in parse.frames))))
         at = eligible(parse)
         if at is None:
             continue
@@ -301,7 +313,14 @@ def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabula
     keys = tuple(k for k in (*STEPS, NONE) if prior[k])
     offsets = tuple(math.log(prior[k]) for k in keys)
     weights = fit([Instance(keys, offsets, keys.index(step), feats) for step, feats in said], l2)
-    return {**data, "step_prior": {k: prior[k] for k in keys}, "step_weights": weights,
+    kinds = Counter(kind for kind, _ in cut)
+    cuts = (SLICED, WHOLE)
+    cut_offsets = tuple(math.log(max(kinds[k], 1)) for k in cuts)
+    cut_weights = fit([Instance(cuts, cut_offsets, cuts.index(kind), feats) for kind, feats in cut], l2)
+    spelling = {class_key(c): c for c in data["classes"]}  # type: ignore[union-attr]
+    return {**data, "slice_classes": [spelling[k] for k in sliceable if k in spelling],
+            "slice_prior": {k: kinds[k] for k in cuts if kinds[k]}, "slice_weights": cut_weights,
+            "step_prior": {k: prior[k] for k in keys}, "step_weights": weights,
             "stacks": {c: dict(sorted(by.items(), reverse=True)) for c, by in sorted(stacks.items())
                        if by["said"] >= KEEP},
             "step_left": {s: dict(sorted(by.items())) for s, by in sorted(ended.items()) if by["ended"] >= KEEP}}
@@ -439,6 +458,8 @@ def main() -> int:
                     help="the least probability at which an unsaid step is added (2: never); those to try")
     ap.add_argument("--stack-threshold", type=float, nargs="*", default=[STACK_THRESHOLD],
                     help="the least rate at which a coordination is read as a stack (2: never); those to try")
+    ap.add_argument("--slice-threshold", type=float, nargs="*", default=[SLICE_THRESHOLD],
+                    help="the least probability at which an unsaid slice is added (2: never); those to try")
     ap.add_argument("--bring-goal", action="store_true", help="with --dev: score a Bring to a place (goal, "
                     "no recipient) as the scorer scores a Place")
     ap.add_argument("--errors", type=Path, help="with --dev: write the held-out sentences scored wrong here (TSV)")
@@ -482,18 +503,22 @@ def main() -> int:
             for support in args.min_support:
                 for ratio in args.min_ratio:
                     for weight in args.context_weight:
-                        tries = itertools.product(args.step_threshold, args.stack_threshold) if table_.steps \
-                            else [(args.step_threshold[0], args.stack_threshold[0])]
-                        for threshold, stacking in tries:
+                        tries = itertools.product(args.step_threshold, args.stack_threshold, args.slice_threshold) \
+                            if table_.steps else [(args.step_threshold[0], args.stack_threshold[0],
+                                                   args.slice_threshold[0])]
+                        for threshold, stacking, slicing in tries:
                             tried = vocabulary.with_usage(replace(
                                 table_, min_support=support, min_ratio=ratio, context_weight=weight,
                                 steps=replace(table_.steps, threshold=threshold),
-                                stacks=replace(table_.stacks, threshold=stacking)))
-                            first = (threshold, stacking) == (args.step_threshold[0], args.stack_threshold[0])
+                                stacks=replace(table_.stacks, threshold=stacking),
+                                slices=replace(table_.slices, threshold=slicing)))
+                            first = (threshold, stacking, slicing) == (
+                                args.step_threshold[0], args.stack_threshold[0], args.slice_threshold[0])
                             show(f"{name}, support {support} ratio {ratio}" + ("" if table_.weights else
                                                                              f" context {weight}")
                                  + (f" step {threshold}" if table_.steps else "")
-                                 + (f" stack {stacking}" if table_.stacks else ""),
+                                 + (f" stack {stacking}" if table_.stacks else "")
+                                 + (f" slice {slicing}" if table_.slices else ""),
                                  score(dev, lambda row, v=tried: v, module,
                                        errors if name == args.errors_of and first else None, args.bring_goal))
         if args.errors is not None:

@@ -118,7 +118,8 @@ def unchecked_conditions(parse: Any) -> list[str]:
 def inferred_steps(parse: Any) -> list[str]:
     """A note for each frame the parse inferred rather than read (:mod:`seal_cli.language.steps`: the
     step a sentence most likely leaves unsaid; :mod:`seal_cli.language.stacking`: one thing put in the
-    other it was said with), so that ``seal run`` says what it adds on its own."""
+    other it was said with; :mod:`seal_cli.language.slicing`: the slice it leaves unsaid), so that
+    ``seal run`` says what it adds on its own."""
     return [f"(inferred: {_inferred_act(frame)}, {frame.inferred:.2f})" for frame in parse.frames
             if getattr(frame, "inferred", None) is not None]
 

@@ -71,6 +71,7 @@ class Evoker:
             clause.result = [x for x in clause.items if isinstance(x, PP) and self.is_form(x)]
             clause.items = [x for x in clause.items if not any(x is r for r in clause.result)]
         unit, best = self.choose(unit, self.accompanying(frames, clause) or frames, clause)
+        best = self.moved_object(best, self.types.evoked_by(unit), clause)
         _, frame, roles, attached = self.escorting(self.moving(best, self.types.evoked_by(unit), clause), clause)
         self.first_into(frame, roles, attached)
         self.emit(frame, unit, clause, roles, attached)
@@ -124,6 +125,22 @@ class Evoker:
         clause.items = [x for x in clause.items if x is not company]
         clause.objects = [company.np]
         return chosen
+
+    def moved_object(self, best: Fit, frames: Sequence[Frame], clause: Clause) -> Fit:
+        """"*move the bowl*", "return the mug", "push the cart": a verb both of going (a frame whose first
+        element is the goal: Go) and of moving a thing (one whose first element is the theme: Place, Bring)
+        said with one bare object, a thing that can be moved (no person, nothing ``fixed``), moves that
+        thing: the best of the theme frames when one takes the clause; else the frame as chosen ("move
+        to the kitchen" has no object, "reach the table" is of going only)."""
+        _, frame, roles, _ = best
+        if not frame.elements or frame.elements[0].role != "goal" or len(clause.objects) != 1 or clause.message:
+            return best
+        np = clause.objects[0]
+        if roles.get("goal") is not np or self.roles.kind(np, None, None) != "thing" or \
+                self.types.is_a(self.roles.class_or_head(np), "fixed") is True:
+            return best
+        handling = [f for f in frames if f.elements and f.elements[0].role == "theme"]
+        return (self.best_fit(handling, clause) or best) if handling else best
 
     def moving(self, best: Fit, frames: Sequence[Frame], clause: Clause) -> Fit:
         """"*get to* the kitchen", "get into the bedroom": a verb of taking (one of its ``frames`` gets its

@@ -38,6 +38,7 @@ from typing import Any
 from seal_cli.errors import SealError, Where
 from seal_cli.frames.taxonomy import class_key, class_words
 from seal_cli.language.lexicon import noun_lemma
+from seal_cli.language.slicing import SliceModel
 from seal_cli.language.stacking import StackModel
 from seal_cli.language.steps import StepModel
 from seal_cli.language.wordusage import WordUsage, context_words, shipped_word_usage, unsaid_wording
@@ -64,6 +65,7 @@ piece exists once its whole has been cut, so naming one asks for the cutting (se
 _RULES = WordUsage()
 _NO_STEPS = StepModel()
 _NO_STACKS = StackModel()
+_NO_SLICES = SliceModel()
 _INDEXES = ("_usage", "_present", "_names", "_own", "_exact", "_by_word", "_rules_alone")
 """The cached indexes a vocabulary builds from its classes and usage, which do not depend on the sentence."""
 
@@ -308,6 +310,15 @@ class Vocabulary:
         if not usage.stacks or not set(self._present) <= usage.universe | usage.scenery:
             return _NO_STACKS
         return usage.stacks
+
+    @property
+    def slice_model(self) -> SliceModel:
+        """Whether a sentence means its thing sliced though it says no cutting
+        (:mod:`~seal_cli.language.slicing`), scoped as :attr:`step_model` is."""
+        usage = self._usage
+        if not usage.slices or not set(self._present) <= usage.universe | usage.scenery:
+            return _NO_SLICES
+        return usage.slices
 
     def ground_name(self, name: str) -> str | None:
         """The class a class name of the frame library denotes (a default: Slice's ``knife``): by

@@ -30,6 +30,7 @@ from seal_cli.language.clauses import Clauses
 from seal_cli.language.element_types import Types
 from seal_cli.language.evoking import Evoker
 from seal_cli.language.lexicon import CommandError, Lexicon, Tagger, Word, tokenize
+from seal_cli.language.slicing import infer_slice
 from seal_cli.language.stacking import infer_stack
 from seal_cli.language.steps import infer_left_in, infer_step
 from seal_cli.language.swallowed import Swallowed, swallowed
@@ -95,6 +96,7 @@ class CommandParser:
         if lost:
             raise _swallowed_error(parse, lost[0])
         if infer_steps and vocabulary is not None:
+            parse = infer_slice(parse, self.library, vocabulary, vocabulary.slice_model, vocabulary.context)
             parse = infer_stack(parse, vocabulary.stack_model)
             parse = infer_left_in(parse, self.library, vocabulary.step_model)
             parse = infer_step(parse, self.library, vocabulary, vocabulary.step_model, vocabulary.context)

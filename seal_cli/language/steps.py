@@ -46,7 +46,7 @@ if TYPE_CHECKING:
     from seal_cli.language.grounding import Vocabulary
 
 __all__ = ["BLOCKING", "LEFT_SUPPORT", "LEFT_THRESHOLD", "NONE", "STEPS", "THRESHOLD", "StepModel", "eligible",
-           "ends_at_steps", "infer_left_in", "infer_step", "shifted", "step_features"]
+           "ends_at_steps", "infer_left_in", "infer_step", "moved_phrase", "shifted", "step_features"]
 
 STEPS = ("Clean", "Cool", "Heat")
 """The steps a sentence may leave unsaid (frames of the library), in the model's order."""
@@ -197,7 +197,7 @@ def infer_step(parse: Parse, library: Library, vocabulary: Vocabulary, model: St
     role = next((e.role for e in frame.elements if e.role == "theme"), None)
     if role is None:
         return parse
-    elements: dict[str, Phrase] = {role: _moved(theme, at)}
+    elements: dict[str, Phrase] = {role: moved_phrase(theme, at)}
     for e in frame.elements:
         if e.default is not None and e.role not in elements:
             cls = vocabulary.ground_name(e.default) or e.default
@@ -210,12 +210,13 @@ def infer_step(parse: Parse, library: Library, vocabulary: Vocabulary, model: St
 
 def shifted(frame: Evoked, at: int) -> Evoked:
     """The frame with its references to frames from index ``at`` on moved one later."""
-    moved = {role: _moved(p, at) for role, p in frame.elements.items()}
+    moved = {role: moved_phrase(p, at) for role, p in frame.elements.items()}
     return frame if all(moved[r] is frame.elements[r] for r in moved) else replace(frame, elements=moved)
 
 
-def _moved(phrase: Phrase, at: int) -> Phrase:
-    conjuncts = tuple(_moved(c, at) for c in phrase.conjuncts)
+def moved_phrase(phrase: Phrase, at: int) -> Phrase:
+    """The phrase with its references (and its conjuncts') to frames from index ``at`` on moved one later."""
+    conjuncts = tuple(moved_phrase(c, at) for c in phrase.conjuncts)
     ref = phrase.refers_to
     if ref is not None and ref[0] >= at:
         ref = (ref[0] + 1, ref[1])

@@ -47,6 +47,7 @@ from seal_cli.errors import SealError, Where
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.language.chooser import features, logits
 from seal_cli.language.morphology import noun_lemma
+from seal_cli.language.slicing import KINDS, SliceModel
 from seal_cli.language.stacking import StackModel
 from seal_cli.language.steps import NONE, STEPS, StepModel
 
@@ -129,6 +130,9 @@ class WordUsage:
     stacks: StackModel = field(default_factory=StackModel)
     """Which of two things placed together holds the other (:mod:`~seal_cli.language.stacking`);
     empty: no stack is read."""
+    slices: SliceModel = field(default_factory=SliceModel)
+    """Whether a sentence that says no cutting most likely means the thing sliced
+    (:mod:`~seal_cli.language.slicing`); empty: no slice is inferred."""
     scenery: frozenset[str] = frozenset()
     """Class keys of the scenes the statistics were counted in that no count is of (ALFRED's ``faucet``):
     a vocabulary of these and :attr:`universe` is one the unsaid step and stack may be inferred in."""
@@ -172,6 +176,9 @@ class WordUsage:
                          StackModel(add({"": self.stacks.said}, {"": other.stacks.said}).get("", {}),
                                     add({"": self.stacks.holds}, {"": other.stacks.holds}).get("", {}),
                                     self.stacks.threshold, self.stacks.min_support),
+                         SliceModel(add({"": self.slices.prior}, {"": other.slices.prior}).get("", {}),
+                                    add(self.slices.weights, other.slices.weights),
+                                    self.slices.classes | other.slices.classes, self.slices.threshold),
                          self.scenery | other.scenery)
 
     def names_one(self, lemmas: tuple[str, ...]) -> bool:
@@ -192,7 +199,8 @@ class WordUsage:
     def without_context(self) -> WordUsage:
         """These counts with the sentence not weighed (the wording alone decides)."""
         return WordUsage(self.counts, self.universe, self.sources, self.min_support, self.min_ratio, self.seen,
-                         number=self.number, steps=self.steps, stacks=self.stacks, scenery=self.scenery)
+                         number=self.number, steps=self.steps, stacks=self.stacks, slices=self.slices,
+                         scenery=self.scenery)
 
     def sentence_factor(self, wording: str, lemmas: tuple[str, ...], keys: Iterable[str],
                         words: Iterable[str]) -> dict[str, float]:
@@ -396,7 +404,8 @@ def _table(data: Any, where: Where) -> WordUsage:
     weights = {str(f): {class_key(c): float(v) for c, v in by.items()} for f, by in raw.items()}
     return WordUsage(counts, universe, (str(data.get("source", where.file)),), seen=seen, context=context,
                      class_context=class_context, number=number, weights=weights, steps=_steps(data, where),
-                     stacks=_stacks(data, universe, where), scenery=_scenery(data, where))
+                     stacks=_stacks(data, universe, where), slices=_slices(data, universe, where),
+                     scenery=_scenery(data, where))
 
 
 def _steps(data: dict[str, Any], where: Where) -> StepModel:
@@ -437,6 +446,24 @@ def _stacks(data: dict[str, Any], universe: frozenset[str], where: Where) -> Sta
         raise SealError("\"stacks\" must map each class of \"classes\" to {\"said\": count, \"holds\": count "
                         "no greater}", where)
     return StackModel({c: by.get("said", 0) for c, by in raw.items()}, {c: by.get("holds", 0) for c, by in raw.items()})
+
+
+def _slices(data: dict[str, Any], universe: frozenset[str], where: Where) -> SliceModel:
+    """The unsaid-slice model of a table (``slice_prior``: {"sliced" | "whole": count}, ``slice_weights``:
+    {feature: {kind: w}}, ``slice_classes``: [class of "classes"])."""
+    prior = data.get("slice_prior", {})
+    if not _word_counts(prior) or not set(prior) <= set(KINDS):
+        raise SealError(f"\"slice_prior\" must map each of {', '.join(KINDS)} to a positive count", where)
+    raw = data.get("slice_weights", {})
+    if not isinstance(raw, dict) or not all(
+            isinstance(by, dict) and all(k in KINDS and isinstance(v, int | float) and not isinstance(v, bool)
+                                         and math.isfinite(v) for k, v in by.items()) for by in raw.values()):
+        raise SealError(f"\"slice_weights\" must map each feature to {{{' | '.join(KINDS)}: finite number}}", where)
+    classes = data.get("slice_classes", [])
+    if not isinstance(classes, list) or not all(isinstance(c, str) and class_key(c) in universe for c in classes):
+        raise SealError("\"slice_classes\" must be a list of classes of \"classes\"", where)
+    return SliceModel(prior, {str(f): {k: float(v) for k, v in by.items()} for f, by in raw.items()},
+                      frozenset(classes))
 
 
 def _word_counts(table: Any) -> bool:

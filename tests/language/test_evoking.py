@@ -49,3 +49,25 @@ def test_getting_a_thing_somewhere_is_still_bringing(library: Library) -> None:
 @pytest.mark.parametrize("text", ["take Sam", "take the visitor", "take her", "take Omar along"])
 def test_taking_a_person_with_no_goal_is_guiding(library: Library, text: str) -> None:
     assert [f for f, _ in _frames(text, library)] == ["Guide"]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("move the bowl", [("Place", {"theme": "the bowl"})]),            # the thing moved, not a place gone to
+    ("relocate a cup", [("Place", {"theme": "a cup"})]),
+    ("return the mug", [("Bring", {"theme": "the mug"})]),
+    ("return it", [("Bring", {"theme": "it"})]),
+])
+def test_a_verb_of_going_and_of_moving_moves_its_bare_object(library: Library, text: str,
+                                                           expected: list[object]) -> None:
+    assert _frames(text, library) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("move to the kitchen", [("Go", {"goal": "the kitchen"})]),       # no object: going
+    ("return to the kitchen", [("Go", {"goal": "the kitchen"})]),
+    ("move the chair", [("Go", {"goal": "the chair"})]),              # furniture is fixed: a place
+    ("reach the table", [("Go", {"goal": "the table"})]),             # a verb of going only
+    ("move the bowl to the sink", [("Place", {"theme": "the bowl", "goal": "the sink"})]),
+])
+def test_going_stays_going_without_a_movable_object(library: Library, text: str, expected: list[object]) -> None:
+    assert _frames(text, library) == expected
