@@ -133,9 +133,9 @@ class Evoker:
         _, frame, roles, _ = best
         first = frame.elements[0].role if frame.elements else None
         if first is None or first in roles or clause.objects or clause.message or not roles or \
-                any(role not in PLACES for role in roles) or not any(self.achieves_holding(f) for f in frames):
+                any(role not in PLACES for role in roles) or not any(f.gets_held() for f in frames):
             return best
-        if self.frames and self.roles.needs_in_hand(frame) and self.reference.implicit(frame, first) is not None:
+        if self.frames and frame.needs_held() and self.reference.implicit(frame, first) is not None:
             return best                      # "pick up the cup and get [it] to the kitchen"
         going = [f for f in self.library.frames if f.elements and f.elements[0].role == "goal"]
         return self.best_fit(going, clause) or best
@@ -184,19 +184,12 @@ class Evoker:
         thing in hand to someone (a recipient, and ``holding(theme)`` before): taking a thing for a
         person is bringing it to them, so those that also say where it is taken from (a source) when
         any does. Empty for any other verb."""
-        if not any(self.achieves_holding(f) for f in frames):
+        if not any(f.gets_held() for f in frames):
             return []
         handing = [f for f in self.library.frames if f not in frames and "recipient" in self.types.roles(f)
-                   and f.elements and any(p.predicate == "holding" and p.args == (f.elements[0].role,)
-                                          and not p.negated for p in f.preconditions)]
+                   and f.needs_held()]
         fetching = [f for f in handing if "source" in self.types.roles(f)]
         return fetching or handing       # "grab me two eggs": taken from where they are, so Bring, not Give
-
-    @staticmethod
-    def achieves_holding(frame: Frame) -> bool:
-        first = frame.elements[0].role if frame.elements else None
-        return first is not None and any(p.predicate == "holding" and p.args == (first,) and not p.negated
-                                          for p in frame.postconditions)
 
     def best_fit(self, frames: Sequence[Frame], clause: Clause) -> Fit | None:
         """The frame that takes every phrase of the clause best (fewest elements left empty, then
@@ -231,8 +224,7 @@ class Evoker:
         """Elements the clause leaves empty; an object left unsaid that the frame before has in hand
         is not empty ("heat the mug, move [it] to the cabinet": Place, not Go)."""
         first = frame.elements[0].role if frame.elements else None
-        held = first is not None and first not in roles and bool(self.frames) and any(
-            p.predicate == "holding" and p.args == (first,) for p in frame.preconditions) and \
+        held = first is not None and first not in roles and bool(self.frames) and frame.needs_held() and \
             self.reference.implicit(frame, first) is not None
         return sum(1 for e in frame.elements if e.role not in roles) - int(held)
 
@@ -283,8 +275,7 @@ class Evoker:
             if np is not None:
                 elements[element.role] = self.phrase(np, frame, element.role)
         first = frame.elements[0] if frame.elements else None
-        if first is not None and first.role not in elements and self.frames and \
-                any(p.predicate == "holding" and p.args == (first.role,) for p in frame.preconditions):
+        if first is not None and first.role not in elements and self.frames and frame.needs_held():
             implicit = self.reference.implicit(frame, first.role)
             if implicit is not None:
                 elements = {first.role: implicit, **elements}
@@ -444,9 +435,8 @@ class Evoker:
     def hold(self, np: NP) -> None:
         """The frame that gets ``np`` in hand (``holding(theme)``: Pick), before the clause."""
         for frame in sorted(self.library.achievers("holding"), key=lambda f: len(f.elements)):
-            first = frame.elements[0].role if frame.elements else None
-            if first is not None and any(p.predicate == "holding" and p.args == (first,) and not p.negated
-                                         for p in frame.postconditions):
+            first = frame.first_role
+            if first is not None and frame.gets_held():
                 self.results_of(np)
                 elements = {first: self.phrase(np, frame, first)}
                 last = (len(self.frames) - 1, first)
