@@ -29,6 +29,24 @@ def test_going_with_a_thing_is_no_company(library: Library) -> None:
 
 
 @pytest.mark.parametrize(("text", "expected"), [
+    # nouns WordNet names only people (framelib/wordnet_people.yaml), beside the household ones of types.yaml
+    ("go with the plumber", [("Follow", {"theme": "the plumber"})]),
+    ("walk with the courier to the gate", [("Guide", {"theme": "the courier", "goal": "the gate"})]),
+    ("go along with the janitor", [("Follow", {"theme": "the janitor"})]),
+    ("go with my friend", [("Follow", {"theme": "my friend"})]),
+    ("go with the woman to the lobby", [("Guide", {"theme": "the woman", "goal": "the lobby"})]),
+])
+def test_going_with_a_person_noun_is_moving_together(library: Library, text: str, expected: list[object]) -> None:
+    assert _frames(text, library) == expected
+
+
+@pytest.mark.parametrize("text", ["go with the trolley to the garage", "go with the pitcher to the sink",
+                                  "go with the controller to the couch"])
+def test_a_noun_that_is_also_a_thing_keeps_going_with_it_a_go(library: Library, text: str) -> None:
+    assert [f for f, _ in _frames(text, library)] == ["Go"]      # a pitcher is a jug too: no company
+
+
+@pytest.mark.parametrize(("text", "expected"), [
     ("get to the kitchen", [("Go", {"goal": "the kitchen"})]),
     ("get into the bedroom", [("Go", {"goal": "the bedroom"})]),
     ("get over to the garage", [("Go", {"goal": "the garage"})]),
