@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import LOCATED
+from seal_cli.language.english import LOCATED, ROUTE_NOUNS, is_room_word
 from seal_cli.language.grounding import PIECES, PORTIONS
 from seal_cli.language.lexicon import Word, noun_lemma
 from seal_cli.language.morphology import is_gradable
@@ -71,7 +71,8 @@ class Evoker:
             clause.result = [x for x in clause.items if isinstance(x, PP) and self.is_form(x)]
             clause.items = [x for x in clause.items if not any(x is r for r in clause.result)]
         unit, best = self.choose(unit, self.accompanying(frames, clause) or frames, clause)
-        _, frame, roles, attached = self.escorting(self.moving(best, self.types.evoked_by(unit), clause), clause)
+        best = self.escorting(self.moving(best, self.types.evoked_by(unit), clause), clause)
+        _, frame, roles, attached = self.showing(best, clause)
         self.first_into(frame, roles, attached)
         self.emit(frame, unit, clause, roles, attached)
 
@@ -154,6 +155,27 @@ class Evoker:
                    and "goal" in self.types.roles(f) and _relates_to_goal(self.types.relation(f))]
         return self.best_fit(leading, clause) or best
 
+    def showing(self, best: Fit, clause: Clause) -> Fit:
+        """"*show me* the remote", "show the photo to Jo": a frame that moves a person (Guide: "show" is
+        one of its units), said of a thing and someone to see it (an indirect object, or "to" a person), is
+        bringing the thing to them — a thing cannot be led, and what the robot holds before someone they
+        see (the library's frames that take a thing in hand to a recipient, :meth:`handing`). Said of a
+        room ("show me the kitchen"), it is leading them there: the room becomes the goal; "the way"
+        (:data:`~seal_cli.language.english.ROUTE_NOUNS`) is no thing either ("show them the way": Guide)."""
+        _, frame, _, _ = best
+        first = frame.elements[0] if frame.elements else None
+        if first is None or not self.types.is_person(first.type) or not clause.objects or \
+                self.roles.kind(clause.objects[-1], None, None) == "person" or not self.recipient_said(clause):
+            return best
+        thing = clause.objects[-1]
+        if thing.head_text in ROUTE_NOUNS:
+            return best                      # "show them the way (to the kitchen)": leading them, as chosen
+        if len(clause.objects) == 2 and is_room_word([m.lower for m in thing.mods] + [thing.head_text]):
+            clause.objects = clause.objects[:1]
+            clause.items = [*clause.items, PP("to", thing, thing.start)]
+            return self.best_fit([frame], clause) or best
+        return self.best_fit(self.handing(), clause) or best
+
     def makes_state(self, frame: Frame) -> bool:
         """Whether the frame's result is a state of its first element and it puts it nowhere (Slice:
         ``sliced(theme)``, no goal)."""
@@ -186,10 +208,14 @@ class Evoker:
         any does. Empty for any other verb."""
         if not any(f.gets_held() for f in frames):
             return []
-        handing = [f for f in self.library.frames if f not in frames and "recipient" in self.types.roles(f)
+        return self.handing(frames)      # "grab me two eggs": taken from where they are, so Bring, not Give
+
+    def handing(self, besides: Sequence[Frame] = ()) -> list[Frame]:
+        """The library's frames (other than ``besides``) that take a thing in hand to someone (a recipient,
+        and ``holding(theme)`` before): those that also say where it is taken from (a source) when any does."""
+        handing = [f for f in self.library.frames if f not in besides and "recipient" in self.types.roles(f)
                    and f.needs_held()]
-        fetching = [f for f in handing if "source" in self.types.roles(f)]
-        return fetching or handing       # "grab me two eggs": taken from where they are, so Bring, not Give
+        return [f for f in handing if "source" in self.types.roles(f)] or handing
 
     def best_fit(self, frames: Sequence[Frame], clause: Clause) -> Fit | None:
         """The frame that takes every phrase of the clause best (fewest elements left empty, then

@@ -67,3 +67,19 @@ def test_getting_a_thing_somewhere_is_still_bringing(library: Library) -> None:
 @pytest.mark.parametrize("text", ["take Sam", "take the visitor", "take her", "take Omar along"])
 def test_taking_a_person_with_no_goal_is_guiding(library: Library, text: str) -> None:
     assert [f for f, _ in _frames(text, library)] == ["Guide"]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a thing cannot be led: shown to someone, it is brought to them
+    ("show me the remote", [("Bring", {"theme": "the remote", "recipient": "me"})]),
+    ("show grandma the photos", [("Bring", {"theme": "the photos", "recipient": "grandma"})]),
+    ("show the letter to Jo", [("Bring", {"theme": "the letter", "recipient": "Jo"})]),
+    # a room is where they are led; the way there is no thing; a person is led as before
+    ("show me the kitchen", [("Guide", {"theme": "me", "goal": "the kitchen"})]),
+    ("show the visitor the laundry room", [("Guide", {"theme": "the visitor", "goal": "the laundry room"})]),
+    ("show them the way to the garage", [("Guide", {"theme": "them", "goal": "the garage"})]),
+    ("show the guest to the living room", [("Guide", {"theme": "the guest", "goal": "the living room"})]),
+])
+def test_showing_a_thing_brings_it_and_showing_a_room_leads_there(library: Library, text: str,
+                                                                  expected: list[object]) -> None:
+    assert _frames(text, library) == expected
