@@ -68,11 +68,14 @@ The verb's main sense is its first roleset (PropBank numbers the commonest ``.01
 classes whose signature stands for a frame is a vote; the verb takes the frame of the most votes when
 one frame has more than any other ("reveal.01": Tell in ``say-37.7-1`` and ``confess-37.10``, Give in
 ``reflexive_appearance-48.1.2``, so Tell; "announce.01": one each, so nothing). The verb must be one
-word of letters, a verb of lemminflect's tables and no closed-class word, as for WordNet.
+word of letters, a verb of lemminflect's tables, no closed-class word, and mostly a verb by WordNet's
+tagged senses (rule 1 of the WordNet units, so ``--propbank`` needs ``--wordnet`` too): "phone" and
+"credit" have Tell's and Give's roles, but read as verbs they split "put the bowl and *phone* on the
+desk" into two clauses.
 
     python scripts/build_lexical_units.py [--data ../shared/data] [--check]
     python scripts/build_lexical_units.py --wordnet /usr/share/wordnet [--check]
-    python scripts/build_lexical_units.py --propbank propbank-frames [--check]
+    python scripts/build_lexical_units.py --propbank propbank-frames --wordnet /usr/share/wordnet [--check]
 """
 
 from __future__ import annotations
@@ -220,6 +223,11 @@ class WordNet:
             if kind.startswith("2:"):
                 self.counts[(lemma.replace("_", " "), int(number))] = int(count)
 
+    def mostly_verb(self, word: str) -> bool:
+        """Whether WordNet tagged more senses of the word as a verb than as a noun (or it is no noun)."""
+        verb, noun = self.senses.get(word), self.noun_senses.get(word)
+        return verb is not None and (noun is None or verb[0] > noun[0])
+
     def frequent(self, verb: str) -> list[str]:
         """The senses a verb is known by: its most tagged one, first in WordNet's order; all of them, in
         that order, when none was ever tagged (then the order says nothing about use)."""
@@ -292,11 +300,10 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[str, str, s
         return (first[0], sorted(common), sorted(named)) if len(common) == 1 else None
 
     found = []
-    for verb, (tagged, offsets) in sorted(wordnet.senses.items()):
+    for verb, (_, offsets) in sorted(wordnet.senses.items()):
         if verb in units or verb in closed or not verb.isalpha() or not offsets or not in_verb_tables(verb):
             continue
-        noun = wordnet.noun_senses.get(verb)
-        if noun is not None and tagged <= noun[0]:
+        if not wordnet.mostly_verb(verb):
             continue                                       # mostly a noun ("cup", "table", "knife")
         for sense in wordnet.frequent(verb):
             hit = next(((synset, h) for synset in (sense, *wordnet.up[sense]) if (h := frames_at(synset))), None)
@@ -355,7 +362,7 @@ def family(vn: str) -> str:
 
 
 def derive_roles(rolesets: dict[str, list[dict[str, Any]]], signatures: Signatures, library: Library,
-                 own: Library) -> list[tuple[str, str, str]]:
+                 own: Library, wordnet: WordNet) -> list[tuple[str, str, str]]:
     """(frame, unit, source) for every verb whose main sense has the roles of one frame's verbs (the
     module's rules for ``--propbank``): the verbs of ``own`` (the frame files, no derived units) give
     the signatures; a verb ``library`` lists already takes none."""
@@ -383,7 +390,8 @@ def derive_roles(rolesets: dict[str, list[dict[str, Any]]], signatures: Signatur
     closed = closed_class_words()
     found = []
     for lemma, roleset in sorted(main.items()):
-        if lemma in units or not lemma.isalpha() or lemma in closed or not in_verb_tables(lemma):
+        if lemma in units or not lemma.isalpha() or lemma in closed or not in_verb_tables(lemma) or \
+                not wordnet.mostly_verb(lemma):
             continue
         votes: Counter[str] = Counter()
         why: dict[str, str] = {}
@@ -431,9 +439,14 @@ def main() -> int:
             print(f"error: {frames}: no PropBank frame files (*.xml) there (--propbank is a propbank-frames "
                   "checkout)", file=sys.stderr)
             return 1
+        if args.wordnet is None or not (args.wordnet / "index.noun").is_file():
+            print("error: --propbank needs --wordnet DIR too (a WordNet 3.0 dict folder: a verb that is mostly a "
+                  "noun is left out)", file=sys.stderr)
+            return 1
         rolesets, signatures = read_propbank(frames)
         own = library_without(args.out, ROLES_OUT, OUT, WORDNET_OUT)
-        text = render(derive_roles(rolesets, signatures, library_without(args.out, ROLES_OUT), own), ROLES_HEADER)
+        text = render(derive_roles(rolesets, signatures, library_without(args.out, ROLES_OUT), own,
+                                   WordNet(args.wordnet)), ROLES_HEADER)
     elif args.wordnet is not None:
         if args.out == OUT:
             args.out = WORDNET_OUT

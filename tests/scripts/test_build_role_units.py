@@ -49,6 +49,7 @@ def tiny_propbank(folder: Path) -> Path:
         "proclaim": roleset("proclaim.01", "", say="agent topic recipient", fulfil="agent theme recipient"),
         "bleat": roleset("bleat.01", "", sound="agent theme recipient"),   # Give's roles, another Levin class
         "snip": roleset("snip.01", "", cut="agent patient"),               # no recipient: stands for nothing
+        "cable": roleset("cable.01", "", tell="agent topic recipient"),    # Tell's roles, but mostly a noun
     }
     for name, text in files.items():
         for short, vn in VN.items():
@@ -58,22 +59,44 @@ def tiny_propbank(folder: Path) -> Path:
     return folder
 
 
+VERBS = ["proffer", "blurt", "proclaim", "bleat", "snip", "cable", "give", "tell"]
+
+
+def tiny_wordnet(folder: Path) -> Path:
+    """A WordNet of one synset per verb: each mostly a verb, but "cable" mostly a noun (a wire)."""
+    folder.mkdir()
+    data, index = ["  1 licence line"], ["  1 licence line"]
+    for n, verb in enumerate(VERBS):
+        offset = f"{2000000 + n:08d}"
+        data.append(f"{offset} 32 v 01 {verb} 0 000 | to {verb}")
+        index.append(f"{verb} v 1 0 1 1 {offset}")
+    (folder / "data.verb").write_text("\n".join(data) + "\n")
+    (folder / "index.verb").write_text("\n".join(sorted(index)) + "\n")
+    (folder / "index.noun").write_text("  1 licence line\ncable n 2 0 2 2 03000001 03000002\n")
+    (folder / "cntlist.rev").write_text("")
+    return folder
+
+
 def run(*args: str) -> subprocess.CompletedProcess[str]:
     return subprocess.run([sys.executable, str(SCRIPT), *args], capture_output=True, text=True, timeout=300)
 
 
 def test_a_verb_takes_the_frame_whose_verbs_have_its_roles(tmp_path: Path) -> None:
-    out = tmp_path / "units.yaml"
-    done = run("--propbank", str(tiny_propbank(tmp_path)), "--out", str(out))
+    out, frames = tmp_path / "units.yaml", tiny_propbank(tmp_path)
+    wordnet = str(tiny_wordnet(tmp_path / "wordnet"))
+    done = run("--propbank", str(frames), "--wordnet", wordnet, "--out", str(out))
     assert done.returncode == 0, done.stderr
     assert "broken.xml:1:" in done.stderr and "skipped" in done.stderr
     units = {e["unit"]: e for e in yaml.safe_load(out.read_text())["lexical_units"]}
-    # proclaim: a vote each (a tie), bleat: Give's roles in a class of sounds, snip: nobody receives
+    # proclaim: a vote each (a tie); bleat: Give's roles in a class of sounds; snip: nobody receives;
+    # cable: mostly a noun
     assert sorted(units) == ["blurt", "proffer"]
     assert (units["proffer"]["frame"], units["blurt"]["frame"]) == ("Give", "Tell")
     assert units["proffer"]["source"] == ("propbank:proffer.01 -> VerbNet fulfilling-13.4.1 "
                                           "(agent, recipient, theme: as give.01)")
-    assert run("--propbank", str(tmp_path), "--out", str(out), "--check").returncode == 0
+    assert run("--propbank", str(frames), "--wordnet", wordnet, "--out", str(out), "--check").returncode == 0
+    alone = run("--propbank", str(frames), "--out", str(out))
+    assert alone.returncode == 1 and "--propbank needs --wordnet" in alone.stderr
 
 
 def test_a_folder_without_frame_files_is_named(tmp_path: Path) -> None:
@@ -85,5 +108,7 @@ def test_the_shipped_file_is_what_propbank_gives() -> None:
     checkout = os.environ.get("PROPBANK_FRAMES")          # a propbank-frames checkout @ c66e0cc
     if not checkout or not Path(checkout, "frames").is_dir():
         pytest.skip("no propbank-frames checkout (set PROPBANK_FRAMES)")
-    done = run("--propbank", checkout, "--check")
+    if not Path("/usr/share/wordnet/index.noun").is_file():
+        pytest.skip("WordNet 3.0 is not installed (apt-get install wordnet-base)")
+    done = run("--propbank", checkout, "--wordnet", "/usr/share/wordnet", "--check")
     assert done.returncode == 0, done.stderr
