@@ -63,7 +63,7 @@ VERBS = ["proffer", "blurt", "proclaim", "bleat", "snip", "cable", "give", "tell
 
 
 def tiny_wordnet(folder: Path) -> Path:
-    """A WordNet of one synset per verb: each mostly a verb, but "cable" mostly a noun (a wire)."""
+    """A WordNet of one synset per verb, each used as a verb three times; "cable" nine times as a noun."""
     folder.mkdir()
     data, index = ["  1 licence line"], ["  1 licence line"]
     for n, verb in enumerate(VERBS):
@@ -73,7 +73,8 @@ def tiny_wordnet(folder: Path) -> Path:
     (folder / "data.verb").write_text("\n".join(data) + "\n")
     (folder / "index.verb").write_text("\n".join(sorted(index)) + "\n")
     (folder / "index.noun").write_text("  1 licence line\ncable n 2 0 2 2 03000001 03000002\n")
-    (folder / "cntlist.rev").write_text("")
+    uses = [f"{verb}%2:32:00:: 1 3" for verb in VERBS] + ["cable%1:06:00:: 1 9"]   # cable: a wire, mostly
+    (folder / "cntlist.rev").write_text("\n".join(uses) + "\n")
     return folder
 
 
