@@ -51,8 +51,32 @@ names no unit itself, so neither gives a unit.
 The parser then chooses among the frames a unit evokes by its elements, as it does for "move"
 (Go, Place). Each unit keeps its source (``wordnet:announce.v.01 < inform.v.01 (Tell)``).
 
+With ``--propbank DIR`` (a checkout of propbank/propbank-frames: its ``frames/*.xml``, about 11,000
+rolesets; CC BY-SA 4.0) it writes ``framelib/role_units.yaml``: a verb no frame lists (nor the two files
+above) takes frame F by the **roles of its main sense**. PropBank links each argument of a roleset to
+the thematic role it plays in each VerbNet class of the roleset ("reveal.01": ARG0 agent, ARG1 topic,
+ARG2 recipient in ``say-37.7-1``). A role signature (the set of roles in one class) stands for F when
+
+1. a roleset of a verb F lists, linked to F's FrameNet frame, has it in some class (``tell.01`` in
+   ``transfer_mesg-37.1.1-1-1``: agent, recipient, topic → Tell; ``give.01``: agent, recipient,
+   theme → Give), and no other frame's verb does;
+2. it names a ``recipient``: who receives is what tells a transfer of a message (a topic) from one
+   of a thing (a theme); a signature of an agent and a patient is done to anything, and stands for
+   no frame ("bite" would be a Slice).
+
+The verb's main sense is its first roleset (PropBank numbers the commonest ``.01``). Each of its VerbNet
+classes whose signature stands for a frame is a vote; the verb takes the frame of the most votes when
+one frame has more than any other ("reveal.01": Tell in ``say-37.7-1`` and ``confess-37.10``, Give in
+``reflexive_appearance-48.1.2``, so Tell; "announce.01": one each, so nothing). The verb must be one
+word of letters, a verb of lemminflect's tables, no closed-class word, and used more often as a verb
+than as a noun in WordNet's tagged corpus (so ``--propbank`` needs ``--wordnet`` too; a verb never
+tagged is left out): "phone", "credit" and "lecture" have Tell's and Give's roles, but read as verbs
+they split "put the bowl and *phone* on the desk" and "take the visitor to *lecture* hall four" into
+two clauses.
+
     python scripts/build_lexical_units.py [--data ../shared/data] [--check]
     python scripts/build_lexical_units.py --wordnet /usr/share/wordnet [--check]
+    python scripts/build_lexical_units.py --propbank propbank-frames --wordnet /usr/share/wordnet [--check]
 """
 
 from __future__ import annotations
@@ -60,7 +84,8 @@ from __future__ import annotations
 import argparse
 import json
 import sys
-from collections import defaultdict
+import xml.etree.ElementTree as ET
+from collections import Counter, defaultdict
 from pathlib import Path
 from typing import Any
 
@@ -74,6 +99,13 @@ from seal_cli.language.morphology import in_verb_tables  # noqa: E402
 
 OUT = ROOT / "framelib" / "derived_units.yaml"
 WORDNET_OUT = ROOT / "framelib" / "wordnet_units.yaml"
+ROLES_OUT = ROOT / "framelib" / "role_units.yaml"
+ROLES_HEADER = """\
+# Lexical units derived from the thematic roles of PropBank's rolesets (propbank/propbank-frames @ c66e0cc,
+# CC BY-SA 4.0: frames/*.xml, the VerbNet role links of each argument) for verbs no other file lists:
+# a verb's main sense takes the frame whose verbs have its roles in the same VerbNet classes.
+# Written by scripts/build_lexical_units.py --propbank DIR: rebuild it, do not edit it by hand.
+"""
 WORDNET_HEADER = """\
 # Lexical units derived from WordNet 3.0's synonyms and hypernyms (Princeton University,
 # WordNet 3.0 license) for verbs no frame lists: each takes the frames of a library verb it means.
@@ -186,11 +218,26 @@ class WordNet:
         self.senses = self._index(folder / "index.verb")
         self.noun_senses = self._index(folder / "index.noun")
         self.counts: dict[tuple[str, int], int] = {}      # (verb, sense number) -> times tagged
+        self.uses: dict[tuple[str, str], int] = defaultdict(int)   # (word, "v" or "n") -> times tagged
         for line in (folder / "cntlist.rev").read_text(encoding="latin-1").splitlines():
             key, number, count = line.split()
             lemma, _, kind = key.partition("%")
+            word = lemma.replace("_", " ")
             if kind.startswith("2:"):
-                self.counts[(lemma.replace("_", " "), int(number))] = int(count)
+                self.counts[(word, int(number))] = int(count)
+                self.uses[(word, "v")] += int(count)
+            elif kind.startswith("1:"):
+                self.uses[(word, "n")] += int(count)
+
+    def mostly_verb(self, word: str) -> bool:
+        """Whether WordNet tagged more senses of the word as a verb than as a noun (or it is no noun)."""
+        verb, noun = self.senses.get(word), self.noun_senses.get(word)
+        return verb is not None and (noun is None or verb[0] > noun[0])
+
+    def used_as_verb(self, word: str) -> bool:
+        """Whether WordNet's corpus used the word more often as a verb than as a noun ("reveal" 61 to 0,
+        "whisper" 22 to 6; "phone" 7 to 13, "question" 41 to 148)."""
+        return self.uses[(word, "v")] > self.uses[(word, "n")]
 
     def frequent(self, verb: str) -> list[str]:
         """The senses a verb is known by: its most tagged one, first in WordNet's order; all of them, in
@@ -264,11 +311,10 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[str, str, s
         return (first[0], sorted(common), sorted(named)) if len(common) == 1 else None
 
     found = []
-    for verb, (tagged, offsets) in sorted(wordnet.senses.items()):
+    for verb, (_, offsets) in sorted(wordnet.senses.items()):
         if verb in units or verb in closed or not verb.isalpha() or not offsets or not in_verb_tables(verb):
             continue
-        noun = wordnet.noun_senses.get(verb)
-        if noun is not None and tagged <= noun[0]:
+        if not wordnet.mostly_verb(verb):
             continue                                       # mostly a noun ("cup", "table", "knife")
         for sense in wordnet.frequent(verb):
             hit = next(((synset, h) for synset in (sense, *wordnet.up[sense]) if (h := frames_at(synset))), None)
@@ -286,6 +332,91 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[str, str, s
                 found.append((frame, verb, f"wordnet:{wordnet.name(verb, sense)} {how} "
                                            f"{wordnet.name(lemma, synset)} ({lemma})"))
             break
+    return sorted(found)
+
+
+Signatures = dict[str, dict[str, frozenset[str]]]
+"""Roleset id → VerbNet class → the thematic roles its arguments play there."""
+
+
+def read_propbank(folder: Path) -> tuple[dict[str, list[dict[str, Any]]], Signatures]:
+    """The rolesets of PropBank's frame files (as ``propbank_rolesets.json`` holds them: id, aliases
+    ``lemma.pos``, lexlinks) grouped by file, in file order, and each roleset's role signatures."""
+    rolesets: dict[str, list[dict[str, Any]]] = {}
+    signatures: Signatures = {}
+    for path in sorted(folder.glob("*.xml")):
+        try:
+            root = ET.parse(path).getroot()
+        except ET.ParseError as error:        # the checkout holds a malformed file or two: said and skipped
+            line, column = error.position
+            print(f"warning: {path}:{line}:{column}: not well-formed XML, skipped", file=sys.stderr)
+            continue
+        for roleset in root.iter("roleset"):
+            ident = str(roleset.get("id"))
+            aliases = [f"{a.text.strip()}.{a.get('pos')}" for a in roleset.iter("alias") if a.text]
+            lexlinks = [{"resource": link.get("resource"), "class": link.get("class")}
+                        for link in roleset.iter("lexlink")]
+            rolesets.setdefault(path.stem, []).append({"id": ident, "aliases": aliases, "lexlinks": lexlinks})
+            found: dict[str, set[str]] = defaultdict(set)
+            for link in roleset.iter("rolelink"):
+                if link.get("resource") == "VerbNet" and link.text and link.text.strip():
+                    found[str(link.get("class"))].add(link.text.strip().lower())
+            signatures[ident] = {vn: frozenset(roles) for vn, roles in found.items()}
+    return rolesets, signatures
+
+
+def family(vn: str) -> str:
+    """The Levin class a VerbNet class belongs to, its number before the first dot ("give-13.1-1" → "13":
+    verbs of change of possession; "say-37.7-1" → "37": verbs of communication); "" for none."""
+    number = vn.partition("-")[2].split(".")[0].split("-")[0]
+    return number if number.isdigit() else ""
+
+
+def derive_roles(rolesets: dict[str, list[dict[str, Any]]], signatures: Signatures, library: Library,
+                 own: Library, wordnet: WordNet) -> list[tuple[str, str, str]]:
+    """(frame, unit, source) for every verb whose main sense has the roles of one frame's verbs (the
+    module's rules for ``--propbank``): the verbs of ``own`` (the frame files, no derived units) give
+    the signatures; a verb ``library`` lists already takes none."""
+    by_framenet: dict[str, set[str]] = defaultdict(set)
+    for frame in own.frames:
+        if frame.framenet:
+            by_framenet[frame.framenet].add(frame.name)
+    units = library.by_unit
+    main: dict[str, dict[str, Any]] = {}
+    stands: dict[tuple[str, frozenset[str]], set[str]] = defaultdict(set)
+    example: dict[tuple[str, frozenset[str]], str] = {}
+    for group in rolesets.values():
+        for roleset in group:
+            lemma = lemma_of(roleset)
+            if lemma is None:
+                continue
+            main.setdefault(lemma, roleset)
+            listed = {f.name for f in own.by_unit.get(lemma, ())}
+            frames = {f for fn in links(roleset, "FrameNet") for f in by_framenet.get(fn, set()) & listed}
+            for vn, roles in signatures.get(str(roleset["id"]), {}).items():
+                takers = {f for f in frames if "recipient" in own.by_name[f].roles}
+                if "recipient" in roles and takers and family(vn):
+                    stands[(family(vn), roles)] |= takers
+                    example.setdefault((family(vn), roles), str(roleset["id"]))
+    closed = closed_class_words()
+    found = []
+    for lemma, roleset in sorted(main.items()):
+        if lemma in units or not lemma.isalpha() or lemma in closed or not in_verb_tables(lemma) or \
+                not wordnet.used_as_verb(lemma):
+            continue
+        votes: Counter[str] = Counter()
+        why: dict[str, str] = {}
+        for vn, roles in sorted(signatures.get(str(roleset["id"]), {}).items()):
+            key = (family(vn), roles)
+            if len(stands.get(key, ())) == 1:
+                frame = next(iter(stands[key]))
+                votes[frame] += 1
+                why.setdefault(frame, f"propbank:{roleset['id']} -> VerbNet {vn} ({', '.join(sorted(roles))}: "
+                                      f"as {example[key]})")
+        ranked = votes.most_common(2)
+        if ranked and (len(ranked) == 1 or ranked[0][1] > ranked[1][1]):
+            frame = ranked[0][0]
+            found.append((frame, lemma, why[frame]))
     return sorted(found)
 
 
@@ -307,9 +438,27 @@ def main() -> int:
     ap.add_argument("--data", type=Path, default=ROOT.parent / "shared" / "data")
     ap.add_argument("--out", type=Path, default=OUT)
     ap.add_argument("--wordnet", type=Path, help="a WordNet 3.0 dict folder: write the WordNet units instead")
+    ap.add_argument("--propbank", type=Path,
+                    help="a propbank-frames checkout (its frames/*.xml): write the role units instead")
     ap.add_argument("--check", action="store_true", help="compare with the shipped file instead of writing it")
     args = ap.parse_args()
-    if args.wordnet is not None:
+    if args.propbank is not None:
+        if args.out == OUT:
+            args.out = ROLES_OUT
+        frames = args.propbank / "frames" if (args.propbank / "frames").is_dir() else args.propbank
+        if not any(frames.glob("*.xml")):
+            print(f"error: {frames}: no PropBank frame files (*.xml) there (--propbank is a propbank-frames "
+                  "checkout)", file=sys.stderr)
+            return 1
+        if args.wordnet is None or not (args.wordnet / "index.noun").is_file():
+            print("error: --propbank needs --wordnet DIR too (a WordNet 3.0 dict folder: a verb that is mostly a "
+                  "noun is left out)", file=sys.stderr)
+            return 1
+        rolesets, signatures = read_propbank(frames)
+        own = library_without(args.out, ROLES_OUT, OUT, WORDNET_OUT)
+        text = render(derive_roles(rolesets, signatures, library_without(args.out, ROLES_OUT), own,
+                                   WordNet(args.wordnet)), ROLES_HEADER)
+    elif args.wordnet is not None:
         if args.out == OUT:
             args.out = WORDNET_OUT
         missing = [args.wordnet / name for name in ("data.verb", "index.verb", "index.noun")
@@ -317,14 +466,14 @@ def main() -> int:
         if missing:
             print(f"error: {missing[0]}: no such file (--wordnet is a WordNet 3.0 dict folder)", file=sys.stderr)
             return 1
-        text = render(derive_wordnet(WordNet(args.wordnet), library_without(args.out)), WORDNET_HEADER)
+        text = render(derive_wordnet(WordNet(args.wordnet), library_without(args.out, ROLES_OUT)), WORDNET_HEADER)
     else:
         path = args.data / "lexicon" / "propbank_rolesets.json"
         if not path.is_file():
             print(f"error: {path}: no such file (the shared data folder is --data)", file=sys.stderr)
             return 1
         # the PropBank units come first: the WordNet file must not count as listed already either
-        text = render(derive(json.loads(path.read_text()), library_without(args.out, WORDNET_OUT)))
+        text = render(derive(json.loads(path.read_text()), library_without(args.out, WORDNET_OUT, ROLES_OUT)))
     if args.check:
         if not args.out.is_file() or args.out.read_text() != text:
             print(f"{args.out}: differs from what the verb data gives (rebuild it)", file=sys.stderr)

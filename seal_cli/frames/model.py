@@ -201,9 +201,20 @@ class Frame:
                         yield SealError(f"{section} {item} names {arg!r}, which {self.name} lacks"
                                         f"{_suggest(arg, seen)}; its elements are {_listing(seen)}", item.where)
 
-    def needs_held(self, role: str) -> bool:
-        """Whether the frame needs the robot to hold its ``role`` first (a ``holding(role)`` precondition)."""
-        return any(f.predicate == "holding" and f.args == (role,) and not f.negated for f in self.preconditions)
+    def needs_held(self, role: str | None = None) -> bool:
+        """Whether the frame needs the robot to hold its ``role`` (by default its first element) first:
+        a ``holding(role)`` precondition (Place, Heat; Stir for its instrument)."""
+        return _holds(self.preconditions, role or self.first_role)
+
+    def gets_held(self, role: str | None = None) -> bool:
+        """Whether the frame leaves the robot holding its ``role`` (by default its first element): a
+        ``holding(role)`` postcondition (Pick)."""
+        return _holds(self.postconditions, role or self.first_role)
+
+    @property
+    def first_role(self) -> str | None:
+        """The role of the frame's first element (what its verb acts on), None for a frame without any."""
+        return self.elements[0].role if self.elements else None
 
     @classmethod
     def salvage(cls, name: str, **fields: Any) -> Frame | None:
@@ -295,3 +306,8 @@ def _suggest(name: str, choices: Iterable[str]) -> str:
 
     close = difflib.get_close_matches(name, [c for c in choices if c != name], n=1)
     return f" (did you mean {close[0]!r}?)" if close else ""
+
+
+def _holds(facts: Iterable[Fact], role: str | None) -> bool:
+    """Whether ``facts`` assert ``holding(role)`` (not its negation)."""
+    return role is not None and any(f.predicate == "holding" and f.args == (role,) and not f.negated for f in facts)

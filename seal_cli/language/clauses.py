@@ -25,7 +25,6 @@ from collections.abc import Sequence
 from dataclasses import replace
 
 from seal_cli.frames.library import Library
-from seal_cli.frames.model import Frame
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.language.element_types import Types
 from seal_cli.language.english import FIRST_LATER
@@ -376,7 +375,7 @@ class Clauses:
                 continue
             thing = before.objects[0]
             frames = self.types.evoked_by(clause.unit or str(clause.verb.info))
-            if not frames or any(not f.elements or f.elements[0].role == "goal" or _needs_in_hand(f) or
+            if not frames or any(not f.elements or f.elements[0].role == "goal" or f.needs_held() or
                                  self.types.is_a(thing.head_text, f.elements[0].type) is not True for f in frames):
                 continue
             clause.objects = [replace(thing, borrowed=True)]
@@ -404,9 +403,7 @@ class Clauses:
     def takes(self, clause: Clause) -> bool:
         """Whether the clause's verb takes a thing in hand (a frame of it has ``holding(theme)`` as a
         result: "hold", "carry", "pick up")."""
-        return any(frame.elements and any(p.predicate == "holding" and not p.negated and
-                                          p.args == (frame.elements[0].role,) for p in frame.postconditions)
-                   for frame in self.types.evoked_by(str(clause.verb.info)))
+        return any(frame.gets_held() for frame in self.types.evoked_by(str(clause.verb.info)))
 
     def light_verb(self, clause: Clause) -> None:
         """"give the sauce *a quick stir*": "give" with a thing and "a" (adjectives) and a noun that is a lexical
@@ -430,11 +427,6 @@ class Clauses:
 def _copy(np: NP) -> NP:
     """The first conjunct of a coordination: the phrase as it was, without the others."""
     return replace(np, conjuncts=[])
-
-
-def _needs_in_hand(frame: Frame) -> bool:
-    first = frame.elements[0].role if frame.elements else None
-    return any(p.predicate == "holding" and p.args == (first,) for p in frame.preconditions)
 
 
 def _to_person(item: Item) -> bool:

@@ -10,6 +10,8 @@ you") are matched as phrases by the tagger.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 
 def _closed_class(*lines: str) -> frozenset[str]:
     return frozenset(" ".join(lines).split())
@@ -298,3 +300,23 @@ FOUND_OUT = frozenset(["who", "what", "which", "whose", "what's", "who's"])
 and a question word asks the question (``QUESTION_MEANS``): "tell me who is in the hall"."""
 LET_KNOW = ("let", "know")
 """"*let* me *know* ...", "*let* Amara *know* that ...": "tell me ...", "tell Amara that ..." (``QUESTION_MEANS``)."""
+
+ROOM_WORDS = frozenset({"kitchen", "bathroom", "bedroom", "living_room", "dining_room", "family_room", "garage",
+    "hall", "hallway", "corridor", "office", "study", "attic", "basement", "cellar", "laundry", "laundry_room",
+    "utility_room", "garden", "balcony", "porch", "lounge", "den", "nursery", "playroom", "lobby", "entrance",
+    "foyer", "staircase", "terrace", "patio", "yard", "backyard", "guest_room", "washroom", "restroom",
+    "shower_room", "gym", "library", "toilet_room", "cloakroom", "conservatory", "sunroom", "workshop"})
+"""English names of the rooms of a house (general knowledge, not any corpus): a phrase ending in
+one, or in "room", names a room. Kept in English, not in the library's types, because a class a category
+lists is known *not* to be in the others ("open the garage" must stay possible)."""
+
+
+def is_room_word(words: Sequence[str]) -> bool:
+    """Whether words call something a room: "room" last, or a room's name (:data:`ROOM_WORDS`)."""
+    words = tuple(words)
+    return bool(words) and (words[-1] == "room" or "_".join(words) in ROOM_WORDS or words[-1] in ROOM_WORDS
+                            or "_".join(words[-2:]) in ROOM_WORDS)
+
+
+ROUTE_NOUNS = frozenset({"way", "route", "path"})
+"""Nouns naming the route to a place, not a thing: "show them *the way* to the kitchen" leads them there."""

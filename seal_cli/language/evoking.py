@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import LOCATED
+from seal_cli.language.english import LOCATED, ROUTE_NOUNS, is_room_word
 from seal_cli.language.grounding import PIECES, PORTIONS
 from seal_cli.language.lexicon import Word, noun_lemma
 from seal_cli.language.morphology import is_gradable
@@ -72,7 +72,8 @@ class Evoker:
             clause.items = [x for x in clause.items if not any(x is r for r in clause.result)]
         unit, best = self.choose(unit, self.accompanying(frames, clause) or frames, clause)
         best = self.moved_object(best, self.types.evoked_by(unit), clause)
-        _, frame, roles, attached = self.escorting(self.moving(best, self.types.evoked_by(unit), clause), clause)
+        best = self.escorting(self.moving(best, self.types.evoked_by(unit), clause), clause)
+        _, frame, roles, attached = self.showing(best, clause)
         self.first_into(frame, roles, attached)
         self.emit(frame, unit, clause, roles, attached)
 
@@ -150,9 +151,9 @@ class Evoker:
         _, frame, roles, _ = best
         first = frame.elements[0].role if frame.elements else None
         if first is None or first in roles or clause.objects or clause.message or not roles or \
-                any(role not in PLACES for role in roles) or not any(self.achieves_holding(f) for f in frames):
+                any(role not in PLACES for role in roles) or not any(f.gets_held() for f in frames):
             return best
-        if self.frames and self.roles.needs_in_hand(frame) and self.reference.implicit(frame, first) is not None:
+        if self.frames and frame.needs_held() and self.reference.implicit(frame, first) is not None:
             return best                      # "pick up the cup and get [it] to the kitchen"
         going = [f for f in self.library.frames if f.elements and f.elements[0].role == "goal"]
         return self.best_fit(going, clause) or best
@@ -170,6 +171,27 @@ class Evoker:
         leading = [f for f in self.library.frames if f.elements and self.types.is_person(f.elements[0].type)
                    and "goal" in self.types.roles(f) and _relates_to_goal(self.types.relation(f))]
         return self.best_fit(leading, clause) or best
+
+    def showing(self, best: Fit, clause: Clause) -> Fit:
+        """"*show me* the remote", "show the photo to Jo": a frame that moves a person (Guide: "show" is
+        one of its units), said of a thing and someone to see it (an indirect object, or "to" a person), is
+        bringing the thing to them — a thing cannot be led, and what the robot holds before someone they
+        see (the library's frames that take a thing in hand to a recipient, :meth:`handing`). Said of a
+        room ("show me the kitchen"), it is leading them there: the room becomes the goal; "the way"
+        (:data:`~seal_cli.language.english.ROUTE_NOUNS`) is no thing either ("show them the way": Guide)."""
+        _, frame, _, _ = best
+        first = frame.elements[0] if frame.elements else None
+        if first is None or not self.types.is_person(first.type) or not clause.objects or \
+                self.roles.kind(clause.objects[-1], None, None) == "person" or not self.recipient_said(clause):
+            return best
+        thing = clause.objects[-1]
+        if thing.head_text in ROUTE_NOUNS:
+            return best                      # "show them the way (to the kitchen)": leading them, as chosen
+        if len(clause.objects) == 2 and is_room_word([m.lower for m in thing.mods] + [thing.head_text]):
+            clause.objects = clause.objects[:1]
+            clause.items = [*clause.items, PP("to", thing, thing.start)]
+            return self.best_fit([frame], clause) or best
+        return self.best_fit(self.handing(), clause) or best
 
     def makes_state(self, frame: Frame) -> bool:
         """Whether the frame's result is a state of its first element and it puts it nowhere (Slice:
@@ -201,19 +223,16 @@ class Evoker:
         thing in hand to someone (a recipient, and ``holding(theme)`` before): taking a thing for a
         person is bringing it to them, so those that also say where it is taken from (a source) when
         any does. Empty for any other verb."""
-        if not any(self.achieves_holding(f) for f in frames):
+        if not any(f.gets_held() for f in frames):
             return []
-        handing = [f for f in self.library.frames if f not in frames and "recipient" in self.types.roles(f)
-                   and f.elements and any(p.predicate == "holding" and p.args == (f.elements[0].role,)
-                                          and not p.negated for p in f.preconditions)]
-        fetching = [f for f in handing if "source" in self.types.roles(f)]
-        return fetching or handing       # "grab me two eggs": taken from where they are, so Bring, not Give
+        return self.handing(frames)      # "grab me two eggs": taken from where they are, so Bring, not Give
 
-    @staticmethod
-    def achieves_holding(frame: Frame) -> bool:
-        first = frame.elements[0].role if frame.elements else None
-        return first is not None and any(p.predicate == "holding" and p.args == (first,) and not p.negated
-                                          for p in frame.postconditions)
+    def handing(self, besides: Sequence[Frame] = ()) -> list[Frame]:
+        """The library's frames (other than ``besides``) that take a thing in hand to someone (a recipient,
+        and ``holding(theme)`` before): those that also say where it is taken from (a source) when any does."""
+        handing = [f for f in self.library.frames if f not in besides and "recipient" in self.types.roles(f)
+                   and f.needs_held()]
+        return [f for f in handing if "source" in self.types.roles(f)] or handing
 
     def best_fit(self, frames: Sequence[Frame], clause: Clause) -> Fit | None:
         """The frame that takes every phrase of the clause best (fewest elements left empty, then
@@ -248,8 +267,7 @@ class Evoker:
         """Elements the clause leaves empty; an object left unsaid that the frame before has in hand
         is not empty ("heat the mug, move [it] to the cabinet": Place, not Go)."""
         first = frame.elements[0].role if frame.elements else None
-        held = first is not None and first not in roles and bool(self.frames) and any(
-            p.predicate == "holding" and p.args == (first,) for p in frame.preconditions) and \
+        held = first is not None and first not in roles and bool(self.frames) and frame.needs_held() and \
             self.reference.implicit(frame, first) is not None
         return sum(1 for e in frame.elements if e.role not in roles) - int(held)
 
@@ -300,8 +318,7 @@ class Evoker:
             if np is not None:
                 elements[element.role] = self.phrase(np, frame, element.role)
         first = frame.elements[0] if frame.elements else None
-        if first is not None and first.role not in elements and self.frames and \
-                any(p.predicate == "holding" and p.args == (first.role,) for p in frame.preconditions):
+        if first is not None and first.role not in elements and self.frames and frame.needs_held():
             implicit = self.reference.implicit(frame, first.role)
             if implicit is not None:
                 elements = {first.role: implicit, **elements}
@@ -461,9 +478,8 @@ class Evoker:
     def hold(self, np: NP) -> None:
         """The frame that gets ``np`` in hand (``holding(theme)``: Pick), before the clause."""
         for frame in sorted(self.library.achievers("holding"), key=lambda f: len(f.elements)):
-            first = frame.elements[0].role if frame.elements else None
-            if first is not None and any(p.predicate == "holding" and p.args == (first,) and not p.negated
-                                         for p in frame.postconditions):
+            first = frame.first_role
+            if first is not None and frame.gets_held():
                 self.results_of(np)
                 elements = {first: self.phrase(np, frame, first)}
                 last = (len(self.frames) - 1, first)

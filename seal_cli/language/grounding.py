@@ -355,12 +355,27 @@ def _entries(data: Any, where: Where) -> tuple[list[str], dict[str, list[str]]]:
     return names, synonyms
 
 
+ARENA_CLASSES = ("objects", "locations", "placement_locations", "rooms")
+"""The keys of a RoboCup@Home arena's vocabulary (its ``names`` are people) that hold classes."""
+
+
+def _arena(data: dict[str, Any]) -> dict[str, Any]:
+    """A RoboCup@Home arena's vocabulary (``names``, ``objects``, ``locations``, ``rooms``: the
+    competition's own JSON) as a vocabulary mapping: its classes, and its names as ``people``."""
+    classes = [c for key in ARENA_CLASSES for c in data.get(key) or () if isinstance(c, str)]
+    return {"classes": list(dict.fromkeys(classes)), "people": data.get("names", [])}
+
+
 def load_vocabulary(path: str | Path) -> Vocabulary:
-    """Read a vocabulary file (YAML list of classes, each a name or ``{class, synonyms}``)."""
+    """Read a vocabulary file: a YAML list of classes, each a name or ``{class, synonyms}``; or a
+    mapping of ``classes`` and ``people``; or a RoboCup@Home arena's vocabulary (``names``, ``objects``,
+    ``locations``, ``rooms``)."""
     from seal_cli.fileio import read_yaml
 
     where = Where(str(path))
     data = read_yaml(path)
+    if isinstance(data, dict) and "classes" not in data and "names" in data:
+        data = _arena(data)
     names, synonyms = _entries(data, where)
     people = data.get("people", []) if isinstance(data, dict) else []
     if not isinstance(people, list) or not all(isinstance(p, str) and p.strip() for p in people):

@@ -133,7 +133,7 @@ class Roles:
                 #                                   ("something to eat *from the kitchen*": where to take it from)
             if role is None and previous is None and first == "theme" and first not in roles and \
                     item.prep in ("on", "at") and not item.lead and not item.describes and \
-                    not (self.frames and self.needs_in_hand(frame)):
+                    not (self.frames and frame.needs_held()):
                 role = first                      # "check on the baby": the verb's object after its preposition
             if role is None and item.prep == "for" and item.np.pronoun in PERSON_PRONOUNS and not item.describes:
                 continue                          # "chop the carrots *for me* with the knife": for whom, no element
@@ -146,12 +146,6 @@ class Roles:
             previous = item.np
         score = sum(self.fit(frame, role, np) for role, np in roles.items())
         return roles, attached, score
-
-    @staticmethod
-    def needs_in_hand(frame: Frame) -> bool:
-        """Whether the frame needs its first element in hand (``holding(theme)`` before it)."""
-        first = frame.elements[0].role if frame.elements else None
-        return any(p.predicate == "holding" and p.args == (first,) for p in frame.preconditions)
 
     @staticmethod
     def searches(frame: Frame, unit: str) -> bool:

@@ -36,7 +36,7 @@ from functools import cached_property
 
 from seal_cli.errors import SealError
 from seal_cli.frames.taxonomy import Taxonomy, class_key, class_words
-from seal_cli.language.english import NUMBERS, SOME_PERSON
+from seal_cli.language.english import NUMBERS, ROOM_WORDS, SOME_PERSON, is_room_word
 from seal_cli.language.lexicon import noun_lemma
 from seal_cli.language.morphology import is_adjective
 from seal_cli.maps.model import SPEAKER, Map
@@ -50,14 +50,6 @@ OBJECT = "object"
 FIXED = "fixed"
 """The library category of what never moves: furniture, appliances, fixtures and rooms."""
 
-ROOM_WORDS = frozenset({"kitchen", "bathroom", "bedroom", "living_room", "dining_room", "family_room", "garage",
-    "hall", "hallway", "corridor", "office", "study", "attic", "basement", "cellar", "laundry", "laundry_room",
-    "utility_room", "garden", "balcony", "porch", "lounge", "den", "nursery", "playroom", "lobby", "entrance",
-    "foyer", "staircase", "terrace", "patio", "yard", "backyard", "guest_room", "washroom", "restroom",
-    "shower_room", "gym", "library", "toilet_room", "cloakroom", "conservatory", "sunroom", "workshop"})
-"""English names of the rooms of a house (general knowledge, not any corpus): a phrase ending in
-one, or in "room", names a room. Kept here, not in the library's types, because a class a category
-lists is known *not* to be in the others ("open the garage" must stay possible)."""
 
 PAIRED = frozenset({"glove", "mitten", "sock", "shoe", "boot", "slipper", "sandal", "sneaker", "trainer", "earring",
                     "chopstick", "skate", "ski", "earbud", "earphone", "headphone", "glass", "spectacle", "goggle",
@@ -297,13 +289,6 @@ def kind_of(taxonomy: Taxonomy, cls: str, category: str) -> bool | None:
     if known is None and len(words) > 1:
         return taxonomy.is_a(words[-1], category)
     return known
-
-
-def is_room_word(words: Sequence[str]) -> bool:
-    """Whether words call something a room: "room" last, or a room's name (:data:`ROOM_WORDS`)."""
-    words = tuple(words)
-    return bool(words) and (words[-1] == "room" or "_".join(words) in ROOM_WORDS or words[-1] in ROOM_WORDS
-                            or "_".join(words[-2:]) in ROOM_WORDS)
 
 
 def person_value(text: str, head: str, people: Mapping[str, object] | None = None) -> str:

@@ -125,3 +125,33 @@ def test_the_build_script_names_a_missing_wordnet(tmp_path: Path) -> None:
                           str(tmp_path), "--out", str(out)], capture_output=True, text=True)
     assert run.returncode == 1 and "data.verb: no such file" in run.stderr and "Traceback" not in run.stderr
     assert not out.exists()
+
+
+ROLE_UNITS = ROOT / "framelib" / "role_units.yaml"
+
+
+def test_every_role_unit_has_its_source_and_evokes_its_frame(library: Library) -> None:
+    entries = yaml.safe_load(ROLE_UNITS.read_text())["lexical_units"]
+    for entry in entries:
+        assert entry["source"].startswith(f"propbank:{entry['unit']}.") and " -> VerbNet " in entry["source"]
+        assert "recipient" in entry["source"]                   # a signature names who receives
+        assert [f.name for f in library.evoked_by(entry["unit"])] == [entry["frame"]]
+    units = {e["unit"] for e in entries}
+    assert {"reveal", "present", "mention", "shout"} <= units
+    assert not {"bite", "smile", "turn", "announce", "neigh"} & units   # no recipient, a gesture, listed, a sound
+    assert not {"phone", "credit", "wire", "voice", "lecture", "question"} & units   # used mostly as nouns
+
+
+@pytest.mark.parametrize(("command", "frame", "elements"), [
+    ("reveal the name of the person in the kitchen", "Tell", {"message": "the name of the person in the kitchen"}),
+    ("reveal to me what is in the box", "Tell", {"message": "what is in the box", "recipient": "me"}),
+    ("present the flowers to Angel", "Give", {"theme": "the flowers", "recipient": "Angel"}),
+    ("mention to Robin that the taxi is here", "Tell", {"message": "the taxi is here", "recipient": "Robin"}),
+    ("shout to grandma that lunch is ready", "Tell", {"message": "lunch is ready", "recipient": "grandma"}),
+    ("donate the old coat to the neighbor", "Give", {"theme": "the old coat", "recipient": "the neighbor"}),
+])
+def test_a_role_unit_parses_as_its_frame(library: Library, command: str, frame: str,
+                                         elements: dict[str, str]) -> None:
+    (evoked,) = parse_command(command, library).frames
+    assert evoked.frame == frame
+    assert {role: evoked.elements[role].text for role in elements if role in evoked.elements} == elements

@@ -94,3 +94,20 @@ def test_element_lookup_names_the_known_roles() -> None:
     assert stir().element("instrument").default == "spoon"
     with pytest.raises(KeyError, match="theme, instrument"):
         stir().element("goal")
+
+
+def pick() -> Frame:
+    return Frame("Pick", (LexicalUnit("pick up"),), (Element("theme", "object"), Element("source", "place")),
+                 (Fact.parse("hand_empty"),), (Action.parse("grasp(theme)"),),
+                 (Fact.parse("holding(theme)"), Fact.parse("not hand_empty")))
+
+
+def test_needs_held_and_gets_held_read_holding_before_and_after() -> None:
+    assert stir().needs_held("instrument") and not stir().needs_held() and not stir().needs_held("theme")
+    assert pick().gets_held() and pick().gets_held("theme") and not pick().needs_held()
+    assert not stir().gets_held("instrument") and not pick().gets_held("source")
+    dropping = Frame("Drop", (LexicalUnit("drop"),), (Element("theme", "object"),),
+                     (Fact.parse("not holding(theme)"),), (), (Fact.parse("not holding(theme)"),))
+    assert not dropping.needs_held() and not dropping.gets_held()     # a negation is not holding
+    assert Frame("Wait", (LexicalUnit("wait"),), (), (), (), ()).first_role is None
+    assert not Frame("Wait", (LexicalUnit("wait"),), (), (), (), ()).needs_held()

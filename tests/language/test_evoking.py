@@ -29,6 +29,24 @@ def test_going_with_a_thing_is_no_company(library: Library) -> None:
 
 
 @pytest.mark.parametrize(("text", "expected"), [
+    # nouns WordNet names only people (framelib/wordnet_people.yaml), beside the household ones of types.yaml
+    ("go with the plumber", [("Follow", {"theme": "the plumber"})]),
+    ("walk with the courier to the gate", [("Guide", {"theme": "the courier", "goal": "the gate"})]),
+    ("go along with the janitor", [("Follow", {"theme": "the janitor"})]),
+    ("go with my friend", [("Follow", {"theme": "my friend"})]),
+    ("go with the woman to the lobby", [("Guide", {"theme": "the woman", "goal": "the lobby"})]),
+])
+def test_going_with_a_person_noun_is_moving_together(library: Library, text: str, expected: list[object]) -> None:
+    assert _frames(text, library) == expected
+
+
+@pytest.mark.parametrize("text", ["go with the trolley to the garage", "go with the pitcher to the sink",
+                                  "go with the controller to the couch"])
+def test_a_noun_that_is_also_a_thing_keeps_going_with_it_a_go(library: Library, text: str) -> None:
+    assert [f for f, _ in _frames(text, library)] == ["Go"]      # a pitcher is a jug too: no company
+
+
+@pytest.mark.parametrize(("text", "expected"), [
     ("get to the kitchen", [("Go", {"goal": "the kitchen"})]),
     ("get into the bedroom", [("Go", {"goal": "the bedroom"})]),
     ("get over to the garage", [("Go", {"goal": "the garage"})]),
@@ -70,4 +88,20 @@ def test_a_verb_of_going_and_of_moving_moves_its_bare_object(library: Library, t
     ("move the bowl to the sink", [("Place", {"theme": "the bowl", "goal": "the sink"})]),
 ])
 def test_going_stays_going_without_a_movable_object(library: Library, text: str, expected: list[object]) -> None:
+    assert _frames(text, library) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a thing cannot be led: shown to someone, it is brought to them
+    ("show me the remote", [("Bring", {"theme": "the remote", "recipient": "me"})]),
+    ("show grandma the photos", [("Bring", {"theme": "the photos", "recipient": "grandma"})]),
+    ("show the letter to Jo", [("Bring", {"theme": "the letter", "recipient": "Jo"})]),
+    # a room is where they are led; the way there is no thing; a person is led as before
+    ("show me the kitchen", [("Guide", {"theme": "me", "goal": "the kitchen"})]),
+    ("show the visitor the laundry room", [("Guide", {"theme": "the visitor", "goal": "the laundry room"})]),
+    ("show them the way to the garage", [("Guide", {"theme": "them", "goal": "the garage"})]),
+    ("show the guest to the living room", [("Guide", {"theme": "the guest", "goal": "the living room"})]),
+])
+def test_showing_a_thing_brings_it_and_showing_a_room_leads_there(library: Library, text: str,
+                                                                  expected: list[object]) -> None:
     assert _frames(text, library) == expected

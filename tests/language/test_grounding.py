@@ -110,6 +110,36 @@ def test_vocabulary_files(tmp_path: Path, library: Library) -> None:
     assert load_vocabulary(mapping).classes == ("cup", "plate")
 
 
+ARENA = ('{"names": ["Robin", "Jules"], "objects": ["knife", "orange juice"], "locations": ["sink", "desk"],'
+         ' "rooms": ["kitchen"], "verb_dict": {"take": ["take"]}}')
+
+
+def _recipient_or_goal(text: str, library: Library, vocab: Vocabulary | None) -> tuple[str, str, str | None]:
+    (bring,) = parse_command(text, library, vocab).frames
+    role = "recipient" if "recipient" in bring.elements else "goal"
+    return role, bring.elements[role].head, bring.elements[role].kind
+
+
+def test_an_arena_vocabulary_names_its_people_whatever_their_case(tmp_path: Path, library: Library) -> None:
+    path = tmp_path / "arena.json"               # RoboCup@Home's own vocabulary file, as the generator reads it
+    path.write_text(ARENA, encoding="utf-8")
+    vocab = load_vocabulary(path)
+    assert vocab.classes == ("knife", "orange juice", "sink", "desk", "kitchen")
+    assert vocab.people == {"robin", "jules"}
+    assert _recipient_or_goal("deliver the knife to robin", library, vocab) == ("recipient", "Robin", "person")
+    assert _recipient_or_goal("take the orange juice to jules", library, vocab)[0] == "recipient"
+    assert _recipient_or_goal("deliver the knife to the sink", library, vocab)[0] == "goal"
+    # without a vocabulary naming them, an unknown lower-case word is read as before: where it goes
+    assert _recipient_or_goal("deliver the knife to robin", library, None) == ("goal", "robin", "thing")
+
+
+def test_a_maps_people_are_recipients_whatever_their_case(library: Library) -> None:
+    from seal_cli.maps.formats.map_server import load_map
+
+    vocab = vocabulary_of_map(load_map(Path(__file__).resolve().parents[2] / "maps" / "apartment.yaml"))
+    assert _recipient_or_goal("deliver the cup to anna", library, vocab) == ("recipient", "Anna", "person")
+
+
 @pytest.mark.parametrize(("content", "words"), [
     ("cup: 1\n", "YAML list"),
     ("[]\n", "no class"),

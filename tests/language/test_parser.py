@@ -1308,3 +1308,18 @@ def test_a_time_word_before_apostrophe_s_is_a_possessor_not_when(text: str, role
     parse = parse_command(text, library)
     assert parse.frames[0].elements[role].head == head
     assert parse.frames[0].elements[role].text.startswith(text.split()[2])
+
+
+@pytest.mark.parametrize("text", ["please list everything in the fridge", "please list all the cups",
+                                  "please tabulate something for me"])
+def test_an_unknown_verb_before_a_pronoun_or_determiner_is_no_noun_asked_for(library: Library, text: str) -> None:
+    """"please list everything": an imperative whose verb is unknown, an error at the verb — not "bring me
+    the list" (a noun takes no pronoun or determiner after it)."""
+    with pytest.raises(CommandError) as caught:
+        parse_command(text, library)
+    assert "unknown verb" in str(caught.value) and caught.value.column == 8
+
+
+def test_a_thing_asked_for_alone_is_still_a_request(library: Library) -> None:
+    assert [(f.frame, f.elements["theme"].head) for f in parse_command("milk from the fridge please", library).frames] \
+        == [("Bring", "milk")]

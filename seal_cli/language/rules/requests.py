@@ -541,8 +541,9 @@ def _asked_alone(s: State, i: int) -> Match | None:
             words[i].lower in PRONOUNS or not s.np_starts(i):
         return None
     if verb_lemma(words[i].lower) == words[i].lower and i + 1 < len(words) and \
-            (words[i + 1].lower in DETERMINERS or words[i + 1].lower in POSSESSIVES):
-        return None                               # "please *list the* things": an imperative, its verb unknown
+            (words[i + 1].lower in DETERMINERS or words[i + 1].lower in POSSESSIVES or words[i + 1].lower in PRONOUNS):
+        return None                               # "please *list the* things", "please list *everything*": an
+        #                                           imperative, its verb unknown (a noun takes no pronoun after it)
     end = _sentence_end(s, i)
     if not any(words[k].lower in ASKED_ALONE for k in range(end)) or \
             any(s.verb_at(k) or words[k].lower in BE_WORDS or words[k].lower in QUESTION_WORDS

@@ -1,0 +1,136 @@
+#!/usr/bin/env python3
+"""Rebuild ``framelib/wordnet_people.yaml``: the nouns that name people, from WordNet 3.0's noun
+hierarchy, added to the library's ``person`` category (``framelib/types.yaml`` lists the household
+ones by hand: guest, son, nurse, ...).
+
+A phrase whose head is a person noun is a person to the parser ("go with *the plumber*" is Follow,
+as "go with Sam" is; "go with the cart" stays a Go). A noun is written when, conservatively:
+
+1. it is one word of letters, written in lower case (no proper name, no "Floridian"), and WordNet's
+   corpus tagged at least one of its senses (a noun nobody was seen using is left out);
+2. *every* sense of it is a hyponym of ``person.n.01``: "pitcher" (a ballplayer and a jug),
+   "cleaner" (a worker and a substance), "batter" (a ballplayer and a mixture), "controller" (an
+   accountant and a device), "maker" are out, since a thing the robot handles must never be read
+   as a person (requiring only the *tagged* senses to be people let "batter", "controller" and
+   "maker" in: WordNet's corpus tagged few senses of things);
+3. no sense of it carries a usage label (WordNet's ``;u`` pointer: ethnic slur, slang,
+   disparagement) or a gloss saying it is offensive, derogatory, slang or informal.
+
+Each noun is written once, sorted, with the header naming the source; the data itself (WordNet's
+files) is read only here, never by the parser. ``--check`` exits 1 when the shipped file differs.
+
+    python scripts/build_person_nouns.py --wordnet /usr/share/wordnet [--check]
+
+(Debian's ``wordnet-base`` installs WordNet 3.0 at ``/usr/share/wordnet``.)
+"""
+
+from __future__ import annotations
+
+import argparse
+import re
+import sys
+from collections import defaultdict
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+OUT = ROOT / "framelib" / "wordnet_people.yaml"
+PERSON = "00007846"                      # person.n.01: a human being
+RUDE = re.compile(r"offensive|derogatory|disparag|slang|vulgar|contempt|obscen|insult|abusive|informal")
+HEADER = """\
+# Nouns that name people, derived from WordNet 3.0's noun hierarchy (Princeton University, WordNet 3.0
+# license): every sense of each is a kind of person.n.01.
+# Written by scripts/build_person_nouns.py --wordnet DIR: rebuild it, do not edit it by hand.
+# The category merges with `person` of types.yaml (a category declared twice takes the union).
+"""
+
+
+class Nouns:
+    """WordNet's noun synsets: each one's hypernyms, whether it is labelled rude, and each noun's
+    senses in WordNet's order with how often each was tagged."""
+
+    def __init__(self, folder: Path) -> None:
+        self.up: dict[str, list[str]] = defaultdict(list)
+        self.rude: set[str] = set()
+        self.lower: set[str] = set()                       # nouns WordNet writes in lower case somewhere
+        for line in (folder / "data.noun").read_text(encoding="latin-1").splitlines():
+            if line.startswith(" "):
+                continue                                   # the licence, at the top
+            fields, _, gloss = line.partition(" | ")
+            head = fields.split()
+            offset, at = head[0], 4 + 2 * int(head[3], 16)
+            self.lower.update(word for word in head[4:at:2] if word.islower())
+            for j in range(int(head[at])):
+                symbol, target, pos = head[at + 1 + 4 * j: at + 4 + 4 * j]
+                if pos == "n" and symbol == "@":
+                    self.up[offset].append(target)
+                elif symbol == ";u":
+                    self.rude.add(offset)                  # a usage label: slur, slang, disparagement
+            if RUDE.search(gloss):
+                self.rude.add(offset)
+        self.senses: dict[str, list[str]] = {}
+        for line in (folder / "index.noun").read_text(encoding="latin-1").splitlines():
+            if line.startswith(" "):
+                continue
+            parts = line.split()
+            count, pointers = int(parts[2]), int(parts[3])
+            self.senses[parts[0]] = parts[6 + pointers: 6 + pointers + count]
+        self.tagged: set[tuple[str, int]] = set()          # (noun, sense number) tagged at least once
+        for line in (folder / "cntlist.rev").read_text(encoding="latin-1").splitlines():
+            key, number, count = line.split()
+            lemma, _, kind = key.partition("%")
+            if kind.startswith("1:") and int(count) > 0:
+                self.tagged.add((lemma, int(number)))
+        self._person: dict[str, bool] = {PERSON: True}
+
+    def is_person(self, offset: str) -> bool:
+        """Whether the synset is person.n.01 or a hyponym of it (through its hypernyms)."""
+        if offset not in self._person:
+            self._person[offset] = False                   # cut cycles while the answer is open
+            self._person[offset] = any(self.is_person(up) for up in self.up[offset])
+        return self._person[offset]
+
+
+def person_nouns(nouns: Nouns) -> list[str]:
+    """The nouns the module's rules keep, sorted."""
+    found = []
+    for noun, offsets in nouns.senses.items():
+        tagged = any((noun, n) in nouns.tagged for n in range(1, len(offsets) + 1))
+        if noun.isalpha() and noun in nouns.lower and tagged and all(nouns.is_person(o) for o in offsets) \
+                and not any(o in nouns.rude for o in offsets):
+            found.append(noun)
+    return sorted(found)
+
+
+def render(found: list[str]) -> str:
+    lines = [HEADER, "categories:", "  person:"]
+    lines += [f"    - {noun}" for noun in found]
+    return "\n".join(lines) + "\n"
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--wordnet", type=Path, required=True, help="a WordNet 3.0 dict folder")
+    ap.add_argument("--out", type=Path, default=OUT)
+    ap.add_argument("--check", action="store_true", help="compare with the shipped file instead of writing it")
+    args = ap.parse_args()
+    missing = [args.wordnet / name for name in ("data.noun", "index.noun", "cntlist.rev")
+               if not (args.wordnet / name).is_file()]
+    if missing:
+        print(f"error: {missing[0]}: no such file (--wordnet is a WordNet 3.0 dict folder)", file=sys.stderr)
+        return 1
+    text = render(person_nouns(Nouns(args.wordnet)))
+    if args.check:
+        if not args.out.is_file() or args.out.read_text() != text:
+            print(f"{args.out}: differs from what WordNet gives (rebuild it)", file=sys.stderr)
+            return 1
+        print(f"{args.out}: up to date")
+        return 0
+    tmp = args.out.with_suffix(".yaml.tmp")
+    tmp.write_text(text)
+    tmp.replace(args.out)
+    print(f"wrote {args.out} ({text.count(chr(10) + '    - ')} nouns)")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
