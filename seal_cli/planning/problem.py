@@ -104,6 +104,8 @@ class Things:
         self.robot_holding: str | None = None
         self.people: set[str] = set()
         """The people the command names."""
+        self.roles_said: set[str] = set()
+        """The people the command calls by a noun ("the nurse"), not by a name."""
         self.synonyms: Mapping[str, tuple[str, ...]] = {}
         """More names of classes (a vocabulary file's), by class key."""
         if map is not None:
@@ -257,15 +259,25 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
             ) -> tuple[str, ...] | None:
     """The map's person, room or place a phrase names (see :mod:`seal_cli.planning.grounding`);
     None for an object, which the robot must find."""
-    from seal_cli.planning.grounding import HERE, SPEAKER_WORDS, person_value
+    from seal_cli.planning.grounding import DROPPED, HERE, SPEAKER_WORDS, person_value
 
     names = things.names
     assert names is not None and things.map is not None
     if phrase.kind == "place" and phrase.head.lower() in HERE:    # "come here": where the speaker is
         things.people.add(SPEAKER)
         return (SPEAKER,)
+    if category not in ("message", "question") and phrase.text:
+        try:
+            called = names.with_role(phrase.text)         # "the nurse": whoever the map says is the nurse
+        except SealError as wrong:
+            raise _located(wrong.message, phrase, text) from None
+        if called:
+            things.people.add(called[0])
+            return called
     if phrase.head.lower() in SPEAKER_WORDS or phrase.kind == "person" \
             or things.taxonomy.is_a(category, "person") is True and category != "thing":
+        if phrase.text and phrase.text.split()[0].lower() in DROPPED:
+            things.roles_said.add(class_key(phrase.head))     # "the nurse" on a map without one
         value = person_value(phrase.text or phrase.head, phrase.head, {p.key: p for p in things.map.people})
         things.people.add(value)    # only the map's people are of class person: another is searched for by name
         return (value,)
@@ -538,7 +550,9 @@ def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:
             cls = things.class_of(value)
             if value in things.people or cls == "person":
                 if value not in placed and value != "person":     # "a person", "anyone": whoever is there
-                    warnings.setdefault(f"nobody on the map {m.name} is called {value}: seal run will search "
+                    called = f"is the {value.replace('_', ' ')} (no person has that role)" \
+                        if value in things.roles_said else f"is called {value}"
+                    warnings.setdefault(f"nobody on the map {m.name} {called}: seal run will search "
                                         "the whole house for them", None)
             elif cls not in known and cls not in unknown:    # said once, where it is first looked for
                 ground = binding.elements.get("ground")
