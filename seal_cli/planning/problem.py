@@ -99,7 +99,7 @@ class Things:
         self.fixed: set[str] = set()
         """The map's rooms and places: they stay where they are."""
         self.rooms: dict[str, str] = {}
-        """The room of each of the map's places that lies in one."""
+        """The room of each of the map's places that lies in one, and of each of its things on no place."""
         self.facts: set[Fact] = set()
         self.robot_holding: str | None = None
         self.people: set[str] = set()
@@ -135,6 +135,8 @@ class Things:
             name = self._fresh(obj.cls, counts[obj.cls])
             if obj.inside is not None:
                 self.facts.add(Fact("in", (name, class_key(obj.inside))))
+            elif (room := map._room_name(obj.at)) is not None:
+                self.rooms[name] = class_key(room)      # on no place: on the room's floor
         self.robot_holding = map.robot.holding
         for person in map.people:
             self.classes[person.key] = "person"

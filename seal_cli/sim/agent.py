@@ -30,7 +30,7 @@ from __future__ import annotations
 import itertools
 import math
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from datetime import datetime, timedelta
 from typing import Any
 
@@ -42,6 +42,7 @@ from seal_cli.frames.model import Action, Binding, Fact
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.model import SPEAKER, Map
 from seal_cli.planning.grounding import kind_of, spoken
+from seal_cli.planning.plan import already_so
 from seal_cli.planning.questions import STATE_WORDS, Question
 from seal_cli.planning.state import State
 from seal_cli.sim.navigation import Cell, Grid
@@ -248,18 +249,28 @@ class Agent:
         return State.of(facts, self.library.taxonomy, closable=closable, classes=self.classes)
 
     def already_so(self, binding: Binding) -> str | None:
-        """What the robot sees that makes a frame's result hold already, when all it does is bring a
-        thing into a room it is in ("take the umbrella to the hallway", the umbrella on the hallway's
-        coat rack); None otherwise."""
-        results = [f for f in binding.postconditions if not f.negated]
-        into = [f for f in results if f.predicate == "in" and len(f.args) == 2 and self.room(f.args[1]) is not None]
-        if len(into) != 1 or any(not self.state.holds(f) for f in results if f is not into[0]):
+        """What the robot sees that makes a frame pointless, by the planner's rule
+        (:func:`seal_cli.planning.plan.already_so`) asked of what it has seen: "umbrella_1 is in the
+        hallway already" when the frame would only bring a thing into a room where one it knows of lies
+        free (not held, not shut in); None otherwise."""
+        results = [f for f in binding.postconditions if not f.negated and f.predicate == "in" and len(f.args) == 2]
+        rooms = {class_key(p.name): class_key(p.room) for p in self.scene.map.places if p.room}
+        seen: dict[str, str] = {}
+        for fact in results:
+            room = self.room(fact.args[1])
+            if room is None:
+                continue
+            there = [k.id for k in self.known.values() if k.cls == self.class_of(fact.args[0]) and k.movable
+                     and k.id in self.world.items and not self.world.held_chain(k.id)
+                     and self.world.enclosure(k.id) is None and bool(room.contains([self.world.position(k.id)])[0])]
+            if there:
+                rooms[fact.args[0]] = class_key(room.name)
+                seen[fact.args[0]] = there[0]
+        state = replace(self.state, rooms=rooms)
+        made = already_so(binding, state)
+        if made is None or made.args[0] not in seen:
             return None
-        thing, room = self.class_of(into[0].args[0]), self.room(into[0].args[1])
-        there = [k.id for k in self.known.values() if k.cls == thing and k.movable and k.id in self.world.items
-                 and not self.world.held_chain(k.id) and self.world.enclosure(k.id) is None
-                 and bool(room.contains([self.world.position(k.id)])[0])]
-        return f"{there[0]} is in the {room.name.replace('_', ' ')} already" if there else None
+        return f"{seen[made.args[0]]} is in the {self.room(made.args[1]).name.replace('_', ' ')} already"
 
     def class_of(self, value: str) -> str:
         key = class_key(value)
@@ -299,6 +310,15 @@ class Agent:
                 if todo and binding == todo[0]:
                     todo.pop(0)
                 self.say("done", f"done: {binding}", frame=str(binding))
+                continue
+            if outcome.reason is Reason.ALREADY:     # what the next commanded frame would do is so already
+                skipped = todo.pop(0)
+                self.say("done", f"{outcome.message}: {skipped} is not done", frame=str(skipped))
+                try:
+                    self.steps, self.index = self.planner(todo, self.library, self.resync(self.state)), 0
+                except SealError as error:
+                    self.say("give_up", f"cannot replan: {error.message}")
+                    return self._result(False, f"cannot replan: {error.message}", plan, executed, Reason.CANNOT)
                 continue
             stop = self.exhausted()
             if stop or isinstance(outcome, Fatal):
@@ -540,6 +560,8 @@ class Agent:
             if target is not None:
                 if self.world.held_chain(target):
                     return Outcome(True, f"holds {target}")
+                if self.todo and binding != self.todo[0] and (already := self.already_so(self.todo[0])):
+                    return Outcome(False, already, Reason.ALREADY)   # seen where the command wants it
                 cell = self.policy.stand(self, self.known[target])
                 if cell is None:
                     self.unreachable.add(target)

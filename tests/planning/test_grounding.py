@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import pytest
@@ -227,3 +228,32 @@ def test_a_role_nobody_has_is_warned_about_like_a_name_nobody_has(library: Libra
     named = plan_text("bring the cup to Roger", library, map=load_map(APARTMENT))
     assert named.warnings == ("nobody on the map apartment is called roger: seal run will search the whole house "
                               "for them",)
+
+
+def test_a_thing_on_no_place_in_the_room_is_there_already_for_plan_and_run_alike(library: Library) -> None:
+    """One rule (``planning.plan.already_so``) for ``seal plan`` (the map's state) and ``seal run`` (what the
+    robot sees): the clinic's umbrella lies on the waiting room's floor, on no place."""
+    from typer.testing import CliRunner
+
+    from seal_cli.cli import app
+    from seal_cli.frames.model import Fact
+    from seal_cli.planning.plan import already_so
+    from seal_cli.planning.problem import problem_of_text
+
+    clinic = load_map(CLINIC)
+    plan = plan_text("take the umbrella to the waiting room", library, map=clinic)
+    assert plan.steps == () and plan.warnings == ("Bring(theme=umbrella, goal=waiting_room) is not done: "
+                                                  "in(umbrella, waiting_room), hand_empty holds already",)
+    problem = problem_of_text("take the umbrella to the staff room", library, map=clinic)
+    bring = problem.commanded[0]
+    assert already_so(bring, problem.state) is None       # another room: it is brought
+    assert problem.state.holds(Fact("in", ("umbrella", "waiting_room")))
+    held = problem.state.apply(library.frame("Pick").bind({"theme": "umbrella"}))
+    assert not held.holds(Fact("in", ("umbrella", "waiting_room")))   # once picked up, it is in the hand
+    run = CliRunner().invoke(app, ["run", "--map", str(CLINIC), "take the umbrella to the waiting room",
+                                   "--particles", "50", "--json"])
+    report = json.loads(run.stdout)
+    assert report["completed"] and report["executed"] == []
+    assert any(r["text"] == "umbrella_1 is in the waiting room already: Bring(theme=umbrella, goal=waiting_room) "
+               "is not done" for r in report["records"])
+    assert not any("picked up" in r["text"] for r in report["records"])
