@@ -28,9 +28,10 @@ def summary(m: Any) -> dict[str, Any]:
         "robot": {"pose": list(m.robot.pose), "holding": m.robot.holding, "room": m.room_of([m.robot.xy])[0]},
         "sensor": {"range": m.sensor.range, "fov": m.sensor.fov_deg, "p_detect": m.sensor.p_detect,
                    "sigma": m.sensor.sigma, "noise": m.sensor.noise},
-        "people": [{"name": p.name, "at": [round(v, 3) for v in m.person_at(p)], "room": m.room_of([m.person_at(p)])[0],
-                    "roles": list(p.roles)} for p in m.people],
-        "speaker": {"at": [round(v, 3) for v in m.speaker_at], "room": m.room_of([m.speaker_at])[0], "roles": list(m.speaker_roles)},
+        "people": [{"name": p.name, "at": [round(v, 3) for v in m.person_at(p)],
+                    "room": m.room_of([m.person_at(p)])[0], "roles": list(p.roles)} for p in m.people],
+        "speaker": {"at": [round(v, 3) for v in m.speaker_at], "room": m.room_of([m.speaker_at])[0],
+                    "roles": list(m.speaker_roles)},
     }
 
 

@@ -967,7 +967,8 @@ def _people(m: Map) -> Iterator[SealError]:
 
 def _roles(m: Map, names: set[str], people: Mapping[str, int]) -> Iterator[SealError]:
     """A role must call only people: not be a room's, a place's or another person's name, nor "me"."""
-    holders = [(f"person {p.name}", p.roles, ("people", i, "role")) for i, p in enumerate(m.people)]
+    holders: list[tuple[str, tuple[str, ...], tuple[str | int, ...]]] = [
+        (f"person {p.name}", p.roles, ("people", i, "role")) for i, p in enumerate(m.people)]
     holders.append(("the speaker", m.speaker_roles, ("speaker", "role")))
     for who, roles, path in holders:
         for role in roles:

@@ -188,9 +188,8 @@ class MapNames:
                               f"{self._who(found)}")
             found = inside
         if len(found) > 1:
-            said = " ".join(thing)
-            raise Refusal(f"'the {said}' could be {self._who(found, ' or ')}: the {self.map.name} has {len(found)} "
-                          f"people with the role {what}; say which one by name")
+            raise Refusal(f"'the {' '.join(thing)}' could be {self._who(found, ' or ')}: the {self.map.name} has "
+                          f"{len(found)} people with the role {what}; say which one by name")
         return found
 
     def _room_of_person(self, id_: str) -> str | None:

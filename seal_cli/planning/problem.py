@@ -135,8 +135,8 @@ class Things:
             name = self._fresh(obj.cls, counts[obj.cls])
             if obj.inside is not None:
                 self.facts.add(Fact("in", (name, class_key(obj.inside))))
-            elif (room := map._room_name(obj.at)) is not None:
-                self.rooms[name] = class_key(room)      # on no place: on the room's floor
+            elif (floor := map._room_name(obj.at)) is not None:
+                self.rooms[name] = class_key(floor)     # on no place: on the room's floor
         self.robot_holding = map.robot.holding
         for person in map.people:
             self.classes[person.key] = "person"

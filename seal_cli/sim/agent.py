@@ -47,6 +47,7 @@ from seal_cli.planning.questions import STATE_WORDS, Question
 from seal_cli.planning.state import State
 from seal_cli.sim.navigation import Cell, Grid
 from seal_cli.sim.policies.base import Policy
+from seal_cli.sim.unsearched import Unsearched
 from seal_cli.sim.world import HAND, PERSON, Detection, Item, Outcome, Reason, World
 
 __all__ = ["Agent", "Budget", "Known", "Policy", "Record", "Result", "Scene", "View", "scene_from_map"]
@@ -142,7 +143,8 @@ class Agent:
                  budget: Budget | None = None, planner: Callable[..., list[Binding]] | None = None,
                  observers: Sequence[Callable[[Record], None]] = (), look_every: float = 1.0,
                  classes: Mapping[str, str] | None = None, sweeper: Callable[[], Any] | None = None,
-                 questions: Mapping[Binding, Question] | None = None, clock: datetime | None = None) -> None:
+                 questions: Mapping[Binding, Question] | None = None, clock: datetime | None = None,
+                 search_end: float | None = None) -> None:
         self.scene = scene
         self.world = scene.world
         self.grid = scene.grid
@@ -192,6 +194,11 @@ class Agent:
         self.clock = clock
         """The time the run starts at (what "tell Anna the time" tells, plus the driving since, at
         :data:`ROBOT_SPEED`); None: the computer's clock when the robot tells it."""
+        self.search_end = search_end
+        """End a search for a thing of a kind the map has a prior of once less than this share of the
+        prior is left unsearched (:mod:`seal_cli.sim.unsearched`); None: search within the budget only."""
+        self.unsearched: dict[str, Unsearched] = {}
+        """Per class the robot searches for, the prior mass it has not searched yet (with ``search_end``)."""
         self._learn_places(policy.oracle)
 
     # -- knowledge ---------------------------------------------------------------------------
@@ -272,6 +279,31 @@ class Agent:
             return None
         return f"{seen[made.args[0]]} is in the {self.room(made.args[1]).name.replace('_', ' ')} already"
 
+    def _track_searches(self, commanded: Sequence[Binding]) -> None:
+        """Keep the unsearched prior of each kind of thing a commanded frame names that the map has a
+        prior of (and its perception knows), from the first look on."""
+        m = self.scene.map
+        shut = [i.id for i in self.world.items.values() if i.openable and not i.is_open]
+        priors = {class_key(c) for c in m.priors}
+        for binding in commanded:
+            for _, value in binding.values:
+                key = self.class_of(value)
+                if key in priors and key not in self.unsearched and self.recognises(value):
+                    self.unsearched[key] = Unsearched.of(m, key, shut)
+
+    def search_ended(self, value: str) -> Outcome | None:
+        """Not found, when less than ``search_end`` of the prior of the thing's kind is left unsearched:
+        "no sandwich found: searched the staff room, ..., looked into fridge_1 (...)"."""
+        left = self.unsearched.get(self.class_of(value))
+        if self.search_end is None or left is None or left.left >= self.search_end:
+            return None
+        rooms = [r.replace("_", " ") for r in left.searched_rooms()]
+        opened = sorted(p for p in self.opened if p in left.inside)
+        said = ", ".join(f"the {r}" for r in rooms) or "where it looked"
+        into = f"; looked into {', '.join(opened)}" if opened else ""
+        return Fatal(False, f"no {self.said(value)} found: searched {said}{into} (had the {self.scene.map.name} "
+                     f"one, it would have been seen with probability {1 - left.left:.2f})", Reason.NOT_FOUND, value)
+
     def class_of(self, value: str) -> str:
         key = class_key(value)
         return self.classes.get(key, key)
@@ -282,6 +314,8 @@ class Agent:
         self.state = self.initial_state()
         for binding in done:
             self.state = self.state.apply(binding)
+        if self.search_end is not None:
+            self._track_searches(commanded)
         self.policy.begin(self)
         self.look()
         todo = list(commanded)
@@ -601,6 +635,8 @@ class Agent:
                 return Fatal(False, f"cannot recognise {value!r}: no class it knows is called that",
                              Reason.NOT_FOUND, value)
             return self.sweep_once(value, binding)
+        if (ended := self.search_ended(value)) is not None:
+            return ended
         view = self.policy.next_view(self, binding, value)
         if view is None:
             return Fatal(False, f"searched everywhere it could and found no {value}", Reason.NOT_FOUND, value)
@@ -721,8 +757,8 @@ class Agent:
                 return Fatal(False, stop, Reason.BUDGET)
             if (ended := self.look_once(value, binding)) is not None:
                 if ended.reason is Reason.NOT_FOUND:
-                    self.answer(ended.message if ended.message.startswith("searched the whole house") else
-                                f"no {self.said(value)} found: {ended.message}")
+                    said = ended.message.startswith(("searched the whole house", f"no {self.said(value)} found"))
+                    self.answer(ended.message if said else f"no {self.said(value)} found: {ended.message}")
                 return ended
         target = self.resolve(value, binding, role)
         if target is not None and target in self.known and not self.in_view(target):
@@ -1006,8 +1042,14 @@ class Agent:
         pose = self.world.robot.pose
         detections = self.world.observe()
         self.looks.append(pose)
-        self.inspected |= {k.id for k in self.known.values() if not k.movable and self.world.items[k.id].is_open
-                           and self.world.within_reach(k.id, pose)}
+        at_hand = {k.id for k in self.known.values() if not k.movable and self.world.items[k.id].is_open
+                   and self.world.within_reach(k.id, pose)}
+        self.inspected |= at_hand
+        if self.unsearched:
+            region = self.world.sensor.region(pose)
+            seen = region.contains(self.scene.map.free_centres)
+            for left in self.unsearched.values():
+                left.saw(seen, at_hand)
         new = []
         for d in detections:
             item = self.world.items[d.id]
@@ -1479,4 +1521,5 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
     grid = Grid(free.astype(bool), (m.grid.origin[0] + res / 2, m.grid.origin[1] + res / 2), res, 8)
     world = World(items, Robot(pose=m.robot.pose, holding=holding), taxonomy=taxonomy,
                   sensor=RangeSensor.on_map(m))
-    return Scene(world, m, grid, tuple(sorted({i.key for i in items})), m.name)
+    known = {i.key for i in items} | {class_key(c) for c in m.priors}   # what the map has priors of, it knows
+    return Scene(world, m, grid, tuple(sorted(known)), m.name)
