@@ -429,14 +429,16 @@ def _already_so(commanded: Sequence[Binding], state: State) -> tuple[Binding, ..
 
 
 def already_so(binding: Binding, state: State) -> Fact | None:
-    """The result that makes a frame pointless here: its ``in(thing, room)``, when that and all its
-    other results hold already while what it needs does not ("take the umbrella to the hallway" with
-    the umbrella on the hallway's coat rack, or lying on its floor: picking it up to put it back would
-    change nothing); None otherwise. ``seal plan`` asks it of the map's state, ``seal run`` of what the
-    robot has seen (:meth:`seal_cli.sim.agent.Agent.already_so`): one rule for both."""
+    """The result that makes a frame pointless here: its ``in(thing, where)`` — where a room or a place
+    of the map (one the state knows the room of) —, when that and all its other results hold already
+    while what it needs does not ("take the umbrella to the hallway" with the umbrella on the hallway's
+    coat rack, or lying on its floor; "put the cup back on the coffee table" with the cup on it: picking
+    it up to put it back would change nothing); None otherwise. ``seal plan`` asks it of the map's
+    state, ``seal run`` of what the robot has seen (:meth:`seal_cli.sim.agent.Agent.already_so`): one
+    rule for both."""
     results = [f for f in binding.postconditions if not f.negated]
-    rooms = set(state.rooms.values())
-    into = [f for f in results if f.predicate == "in" and len(f.args) == 2 and f.args[1] in rooms]
+    known = set(state.rooms.values()) | set(state.rooms)
+    into = [f for f in results if f.predicate == "in" and len(f.args) == 2 and f.args[1] in known]
     if not into or not state.unmet(binding) or not all(state.holds(f) for f in results):
         return None
     return into[0]

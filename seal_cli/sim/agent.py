@@ -259,25 +259,44 @@ class Agent:
         """What the robot sees that makes a frame pointless, by the planner's rule
         (:func:`seal_cli.planning.plan.already_so`) asked of what it has seen: "umbrella_1 is in the
         hallway already" when the frame would only bring a thing into a room where one it knows of lies
-        free (not held, not shut in); None otherwise."""
+        free (not held, not shut in), or put it in or on a place where one it knows of is; None otherwise."""
         results = [f for f in binding.postconditions if not f.negated and f.predicate == "in" and len(f.args) == 2]
         rooms = {class_key(p.name): class_key(p.room) for p in self.scene.map.places if p.room}
+        facts = set(self.state.facts)
         seen: dict[str, str] = {}
         for fact in results:
-            room = self.room(fact.args[1])
-            if room is None:
+            thing, where = fact.args
+            room, place = self.room(where), self._place_of(where)
+            free = [k.id for k in self.known.values() if k.cls == self.class_of(thing) and k.movable
+                    and k.id in self.world.items and not self.world.held_chain(k.id)]
+            if room is not None:
+                there = [i for i in free if self.world.enclosure(i) is None
+                         and bool(room.contains([self.world.position(i)])[0])]
+                rooms[thing] = class_key(room.name)
+            elif place is not None:
+                there = [i for i in free if self.world.items[i].parent == place]
+                if there:
+                    facts.add(Fact("in", (thing, where)))
+            else:
                 continue
-            there = [k.id for k in self.known.values() if k.cls == self.class_of(fact.args[0]) and k.movable
-                     and k.id in self.world.items and not self.world.held_chain(k.id)
-                     and self.world.enclosure(k.id) is None and bool(room.contains([self.world.position(k.id)])[0])]
             if there:
-                rooms[fact.args[0]] = class_key(room.name)
-                seen[fact.args[0]] = there[0]
-        state = replace(self.state, rooms=rooms)
-        made = already_so(binding, state)
+                seen[thing] = there[0]
+            else:
+                rooms.pop(thing, None)
+        made = already_so(binding, replace(self.state, facts=frozenset(facts), rooms=rooms))
         if made is None or made.args[0] not in seen:
             return None
-        return f"{seen[made.args[0]]} is in the {self.room(made.args[1]).name.replace('_', ' ')} already"
+        thing, where = made.args
+        room = self.room(where)
+        if room is not None:
+            return f"{seen[thing]} is in the {room.name.replace('_', ' ')} already"
+        place = self.world.items[seen[thing]].parent or where
+        return f"{seen[thing]} is {'in' if self.world.hollow(self.world.items[place]) else 'on'} {place} already"
+
+    def _place_of(self, value: str) -> str | None:
+        """The map's place a value names (``coffee_table_1``), if it names one."""
+        item = self.world.items.get(value)
+        return value if item is not None and not item.movable and item.key != PERSON else None
 
     def _track_searches(self, commanded: Sequence[Binding]) -> None:
         """Keep the unsearched prior of each kind of thing a commanded frame names that the map has a
