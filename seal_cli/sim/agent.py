@@ -165,6 +165,10 @@ class Agent:
         self.unreachable: set[str] = set()
         self.opened: set[str] = set()
         """Receptacles the robot has opened (and so looked into)."""
+        self.left_open: set[str] = {i.id for i in self.world.items.values() if i.openable and i.is_open}
+        """Receptacles open as the command found them or as a frame opened them, not only to look in: what is
+        in them is where it lies (an apple in a fridge the robot opened to look for it is still to be brought
+        out, as the planner says)."""
         self.placed: set[str] = set()
         """Things the robot has put where a frame wanted them: not to be taken away again."""
         self.chosen: dict[str, str] = {}
@@ -269,10 +273,14 @@ class Agent:
             room, place = self.room(where), self._place_of(where)
             free = [k.id for k in self.known.values() if k.cls == self.class_of(thing) and k.movable
                     and k.id in self.world.items and not self.world.held_chain(k.id)]
-            if room is not None:
-                there = [i for i in free if self.world.enclosure(i) is None
-                         and bool(room.contains([self.world.position(i)])[0])]
-                rooms[thing] = class_key(room.name)
+            if room is not None:      # on no place there (the room's floor), or in or on a place there
+                there = [i for i in free if bool(room.contains([self.world.position(i)])[0])]
+                loose = [i for i in there if self._place_of(self.world.items[i].parent or "") is None]
+                if loose:
+                    rooms[thing], there = class_key(room.name), loose
+                else:                 # in a place only if the state says the place is open (as seal plan)
+                    there = [i for i in there if self._parent(i).id in self.left_open]
+                    facts |= {Fact("in", (thing, class_key(self._parent(i).id))) for i in there}
             elif place is not None:
                 there = [i for i in free if self.world.items[i].parent == place]
                 if there:
@@ -292,6 +300,9 @@ class Agent:
             return f"{seen[thing]} is in the {room.name.replace('_', ' ')} already"
         place = self.world.items[seen[thing]].parent or where
         return f"{seen[thing]} is {'in' if self.world.hollow(self.world.items[place]) else 'on'} {place} already"
+
+    def _parent(self, item_id: str) -> Item:
+        return self.world.items[self.world.items[item_id].parent or ""]
 
     def _place_of(self, value: str) -> str | None:
         """The map's place a value names (``coffee_table_1``), if it names one."""
@@ -1330,7 +1341,7 @@ class Agent:
             self.say("search", f"looks into {box.id}", target=room.name)
             self.drive_to(cell, f"goes to {box.id}")
             self.world.face(box.at)
-            peeked = self.peek(box.id)
+            peeked = self.peek(box.id, until)       # what was sought is inside: kept open to show it
             if not peeked.ok:
                 ended = peeked
         return ended
@@ -1395,6 +1406,7 @@ class Agent:
             self.placed.discard(args[0])
         elif name == "open":
             self.opened.add(args[0])
+            self.left_open.add(args[0])
 
     def put_beside(self, thing: str, target: str, refused: Outcome) -> tuple[Outcome, list[str]]:
         """"Put the keys on the laptop", "to the right of the knife", "take the bowl to the lamp":
