@@ -151,7 +151,8 @@ def run(
         if png is not None:
             from seal_cli.sim.record import write_png
 
-            write_png(outputs["--png"], agent, f"{the_map.name}: {text}")
+            ended = "done" if result.completed else result.reason.split(":")[0]     # "no sandwich found"
+            write_png(outputs["--png"], agent, f"{the_map.name}: {text} ({ended}, {result.path_m:.1f} m)")
     if as_json:
         emit_json({"map": the_map.name, "text": text, "policy": policy, "seed": seed,
                    "completed": result.completed, "reason": result.reason, "path_m": round(result.path_m, 3),
