@@ -279,7 +279,7 @@ class Agent:
                 if loose:
                     rooms[thing], there = class_key(room.name), loose
                 else:                 # in a place only if the state says the place is open (as seal plan)
-                    there = [i for i in there if self._parent(i).id in self.left_open]
+                    there = [i for i in there if self._parent(i).id in self.left_open or not self._parent(i).openable]
                     facts |= {Fact("in", (thing, class_key(self._parent(i).id))) for i in there}
             elif place is not None:
                 there = [i for i in free if self.world.items[i].parent == place]
