@@ -31,6 +31,7 @@ from seal_cli.planning import plan as planning
 from seal_cli.planning.plan import MAX_NODES, Plan
 from seal_cli.planning.problem import Things, build_problem, problem_of_text
 from seal_cli.planning.state import State
+from seal_cli.sim.unsearched import SEARCH_END
 
 if TYPE_CHECKING:
     from datetime import datetime
@@ -135,7 +136,7 @@ def _inferred_act(frame: Any) -> str:
 def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.random.Generator,
                holding: str | None = None, done: Sequence[str] = (), vocabulary: Any = None,
                budget: Budget | None = None, observers: Sequence[Callable[[Record], None]] = (),
-               clock: datetime | None = None) -> tuple[Agent, Result]:
+               clock: datetime | None = None, search_end: float | None = SEARCH_END) -> tuple[Agent, Result]:
     """Carry out a command on a map whose ground-truth objects are the world (``seal run``).
 
     The command and the ``done`` commands (already carried out) are parsed with the map's
@@ -145,7 +146,9 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
     robot holds. A room or a fixed thing the map lacks raises SealError before anything moves; a
     kind of thing the map knows nothing of is warned about and searched for in the whole house.
     A question (:mod:`seal_cli.planning.questions`) is answered from what the robot sees; ``clock`` is
-    what the robot's clock reads at the start (None: the computer's), for "tell Anna the time".
+    what the robot's clock reads at the start (None: the computer's), for "tell Anna the time". A search
+    for a kind of thing the map has a prior of ends, not found, once less than ``search_end`` of that
+    prior is left unsearched (:mod:`seal_cli.sim.unsearched`; None: only the budget ends it).
     """
     from seal_cli.maps.model import Robot
     from seal_cli.planning.grounding import MapNames, spoken
@@ -163,7 +166,7 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
     questions = read_questions(parses[-1], problem.commanded, MapNames(m, library.taxonomy))
     agent = Agent(scene_from_map(m, library), library, policy, rng=rng, budget=budget, observers=observers,
                   classes=problem.state.classes, sweeper=lambda: make_policy("coverage"), questions=questions,
-                  clock=clock)
+                  clock=clock, search_end=search_end)
     executed = [b for p in parses[:-1] for b in build_problem(p, library, map=m.known()).commanded]
     warnings = [*problem.warnings, *unchecked_conditions(parses[-1])]
     for warning in warnings:

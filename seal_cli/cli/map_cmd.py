@@ -28,6 +28,10 @@ def summary(m: Any) -> dict[str, Any]:
         "robot": {"pose": list(m.robot.pose), "holding": m.robot.holding, "room": m.room_of([m.robot.xy])[0]},
         "sensor": {"range": m.sensor.range, "fov": m.sensor.fov_deg, "p_detect": m.sensor.p_detect,
                    "sigma": m.sensor.sigma, "noise": m.sensor.noise},
+        "people": [{"name": p.name, "at": [round(v, 3) for v in m.person_at(p)],
+                    "room": m.room_of([m.person_at(p)])[0], "roles": list(p.roles)} for p in m.people],
+        "speaker": {"at": [round(v, 3) for v in m.speaker_at], "room": m.room_of([m.speaker_at])[0],
+                    "roles": list(m.speaker_roles)},
     }
 
 
@@ -53,6 +57,13 @@ def show(data: dict[str, Any]) -> None:
         for o in data["objects"]:
             objects.add_row(o["class"], _xy(o["at"]), o["room"], o["in"] or "")
         out.print(objects)
+    if data["people"]:
+        people = Table("person", "at", "room", "role")
+        for p in data["people"]:
+            people.add_row(p["name"], _xy(p["at"]), p["room"], ", ".join(p["roles"]))
+        speaker = data["speaker"]
+        people.add_row("(speaker: me)", _xy(speaker["at"]), speaker["room"], ", ".join(speaker["roles"]))
+        out.print(people)
     robot, sensor = data["robot"], data["sensor"]
     out.print(f"robot at {_xy(robot['pose'][:2])} yaw {robot['pose'][2]:g} in {robot['room']}, holding "
               f"{robot['holding'] or 'nothing'}; sensor {sensor['range']:g} m, {sensor['fov']:g}°, "

@@ -25,6 +25,7 @@ from seal_cli.cli import (
     out,
 )
 from seal_cli.sim.policies import DEFAULT_POLICIES, POLICIES
+from seal_cli.sim.unsearched import SEARCH_END
 
 SUITES = ("alfred2d", "map", "context")
 
@@ -75,6 +76,10 @@ def run(
                                    help="Give up after this many steps."),
     max_metres: float = typer.Option(300.0, "--max-metres", min=0.1, max=MAX_RUN_METRES,
                                       callback=a_number, help="Give up after driving this far."),
+    search_end: float = typer.Option(SEARCH_END, "--search-end", min=0.0, max=1.0, callback=a_number,
+                                     help="End a search for a kind of thing the map has a prior of, not found, once "
+                                     "less than this share of its prior is left unsearched (0: only the budget "
+                                     "ends it)."),
     rrd: Path | None = typer.Option(None, "--rrd", help="Write a Rerun recording of the run here.",
                                     show_default=False),
     png: Path | None = typer.Option(None, "--png", help="Write a picture of the run here.", show_default=False),
@@ -137,7 +142,8 @@ def run(
         agent, result = run_on_map(the_map, text, library, searcher, rng=np.random.default_rng(seed),
                                    holding=holding, done=done or (), vocabulary=vocabulary,
                                    budget=Budget(steps=max_steps, metres=max_metres),
-                                   observers=[] if as_json else [_narrate], clock=start_clock)
+                                   observers=[] if as_json else [_narrate], clock=start_clock,
+                                   search_end=search_end)
         if rrd is not None:
             from seal_cli.sim.record import write_rrd
 
@@ -145,7 +151,8 @@ def run(
         if png is not None:
             from seal_cli.sim.record import write_png
 
-            write_png(outputs["--png"], agent, f"{the_map.name}: {text}")
+            ended = "done" if result.completed else result.reason.split(":")[0]     # "no sandwich found"
+            write_png(outputs["--png"], agent, f"{the_map.name}: {text} ({ended}, {result.path_m:.1f} m)")
     if as_json:
         emit_json({"map": the_map.name, "text": text, "policy": policy, "seed": seed,
                    "completed": result.completed, "reason": result.reason, "path_m": round(result.path_m, 3),

@@ -213,15 +213,26 @@ class ObjectTruth:
         object.__setattr__(self, "at", _xy(self.at, f"object {self.cls}: at", self.where))
 
 
+def role_keys(roles: str | Sequence[str], what: str, where: Where | None = None) -> tuple[str, ...]:
+    """Roles as class keys, each once, in the order given: a noun or a list of nouns ("nurse",
+    ["cook", "chef"], "head nurse")."""
+    listed = [roles] if isinstance(roles, str) else list(roles)
+    if not all(isinstance(r, str) and class_key(r) for r in listed):
+        raise SealError(f"{what} must be a noun or a list of nouns, not {roles!r}", where)
+    return tuple(dict.fromkeys(class_key(r) for r in listed))
+
+
 @dataclass(frozen=True)
 class Person:
     """Someone in the building: a name, and where they are, at a point (``at``) or in a ``room``
-    (then :meth:`Map.person_at` stands them at the room's free cell nearest its centre)."""
+    (then :meth:`Map.person_at` stands them at the room's free cell nearest its centre); ``roles``
+    are the nouns they are also called by ("the nurse"), as class keys (``head_nurse``)."""
 
     name: str
     at: XY | None = None
     room: str | None = None
     where: Where | None = field(default=None, compare=False, repr=False)
+    roles: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         if not isinstance(self.name, str) or not class_key(self.name):
@@ -230,6 +241,7 @@ class Person:
             raise SealError(f"person {self.name} needs exactly one of at: [x, y] or room: <room>", self.where)
         if self.at is not None:
             object.__setattr__(self, "at", _xy(self.at, f"person {self.name}: at", self.where))
+        object.__setattr__(self, "roles", role_keys(self.roles, f"person {self.name}: role", self.where))
 
     @property
     def key(self) -> str:
@@ -333,6 +345,8 @@ class Map:
     people: tuple[Person, ...] = ()
     speaker: XY | None = None
     """Where the person giving the command stands; None: at the robot's start."""
+    speaker_roles: tuple[str, ...] = ()
+    """The nouns the speaker is also called by (the clinic's speaker is "the doctor"), as class keys."""
     check: InitVar[bool] = True
     warnings: tuple[SealError, ...] = field(default=(), init=False, compare=False, repr=False)
     """What is odd about the map but does not stop it from being used (:class:`MapWarning`)."""
@@ -356,6 +370,7 @@ class Map:
         set_(self, "people", tuple(self.people))
         if self.speaker is not None:
             set_(self, "speaker", _xy(self.speaker, "speaker: at", self.where("speaker")))
+        set_(self, "speaker_roles", role_keys(self.speaker_roles, "speaker: role", self.where("speaker", "role")))
         set_(self, "priors", self._checked_priors(self.priors))
         set_(self, "places", tuple(p if p.room is not None else replace(p, room=self._room_name(p.at))
                                    for p in self.places))
@@ -438,6 +453,17 @@ class Map:
         c = np.asarray(room.centroid)
         best = centres[int(np.argmin(((centres - c) ** 2).sum(axis=1)))]
         return (float(best[0]), float(best[1]))
+
+    def with_role(self, role: str) -> tuple[str, ...]:
+        """Who has this role, by id (a person's key, :data:`SPEAKER` for the speaker), in the map's order."""
+        key = class_key(role)
+        found = tuple(p.key for p in self.people if key in p.roles)
+        return found + ((SPEAKER,) if key in self.speaker_roles else ())
+
+    @property
+    def roles(self) -> frozenset[str]:
+        """Every role someone of the map has."""
+        return frozenset(r for p in self.people for r in p.roles) | frozenset(self.speaker_roles)
 
     @property
     def speaker_at(self) -> XY:
@@ -936,6 +962,22 @@ def _people(m: Map) -> Iterator[SealError]:
                              "(not free space)", m.where("people", i, "at"))
     if m.speaker is not None and _outside(m, m.speaker):
         yield SealError(f"speaker at {_pt(m.speaker)} is {_off(m)}", m.where("speaker", "at"))
+    yield from _roles(m, names, seen)
+
+
+def _roles(m: Map, names: set[str], people: Mapping[str, int]) -> Iterator[SealError]:
+    """A role must call only people: not be a room's, a place's or another person's name, nor "me"."""
+    holders: list[tuple[str, tuple[str, ...], tuple[str | int, ...]]] = [
+        (f"person {p.name}", p.roles, ("people", i, "role")) for i, p in enumerate(m.people)]
+    holders.append(("the speaker", m.speaker_roles, ("speaker", "role")))
+    for who, roles, path in holders:
+        for role in roles:
+            clash = ("the speaker's name (\"me\")" if role == SPEAKER else
+                     f"the name of person {m.people[people[role]].name}" if role in people else
+                     "the name of a room or place of this map" if role in names else None)
+            if clash is not None:
+                yield SealError(f"{who} has the role {role!r}, which is {clash}; a role must call only people",
+                                m.where(*path))
 
 
 # -- priors (implemented beside, in seal_cli.maps.priors) ----------------------------------------

@@ -9,7 +9,9 @@ them. A map thing is called by (lemmatised words, articles and possessives dropp
   ("sofa": "the couch", "the settee"), and, less surely, by the last word of its name or class
   ("the table" for a dining table, not for a nightstand that is also a "night table") or by the
   first words of a compound name ("the tv" for a tv stand: what the stand is for stands on it);
-- a **person** by their name ("Roger"); the **speaker** by "me", "I", "us" (:data:`SPEAKER`).
+- a **person** by their name ("Roger"), or by a role the map gives them ("the nurse": the map's
+  ``role: nurse``; :meth:`MapNames.with_role`); the **speaker** by "me", "I", "us"
+  (:data:`SPEAKER`), and by the speaker's roles ("the doctor" on the clinic).
 
 A phrase is split at its first relational word ("the couch *in* the living room"): the words
 before it are the thing, the words after it say where it is. Among the things its words call
@@ -157,6 +159,42 @@ class MapNames:
             found.append(Referent(person.key, "person", "person", class_key(room_name) if room_name else None,
                                   (words_of(person.name),), frozenset()))
         return tuple(found)
+
+    def with_role(self, text: str) -> tuple[str, ...]:
+        """Who a phrase calls by a role of the map ("the nurse", "the head nurse", "the cook in the
+        kitchen"): the ids of the people (and :data:`SPEAKER`) whose role its thing's last words are,
+        in the map's order; empty when it names no role of the map. Where the phrase says they are
+        narrows them; nobody there is refused. Several left is refused too, naming them: a robot
+        must not guess whom a thing is for."""
+        thing, where = _split(words_of(text))
+        said = ["_".join(thing[k:]) for k in range(len(thing))]
+        role = next((r for r in said if r in self.map.roles), None)
+        if role is None:
+            return ()
+        found = self.map.with_role(role)
+        what = role.replace("_", " ")
+        if where and (room := self._room_of_words(where)) is not None:
+            inside = tuple(p for p in found if self._room_of_person(p) == room)
+            if not inside:
+                raise Refusal(f"the {self.map.name} has no {what} in the {room.replace('_', ' ')}; it has "
+                              f"{self._who(found)}")
+            found = inside
+        if len(found) > 1:
+            raise Refusal(f"'the {' '.join(thing)}' could be {self._who(found, ' or ')}: the {self.map.name} has "
+                          f"{len(found)} people with the role {what}; say which one by name")
+        return found
+
+    def _room_of_person(self, id_: str) -> str | None:
+        if id_ == SPEAKER:
+            room = self.map._room_name(self.map.speaker_at)
+        else:
+            person = self.map.person(id_)
+            room = None if person is None else person.room or self.map._room_name(self.map.person_at(person))
+        return class_key(room) if room else None
+
+    def _who(self, ids: Sequence[str], joint: str = ", ") -> str:
+        """People as the refusals list things: ``nora (treatment_room)``, the speaker as ``me``."""
+        return joint.join(f"{i} ({self._room_of_person(i) or 'in no room'})" for i in ids)
 
     def by_id(self, id_: str) -> Referent | None:
         return next((r for r in self.referents if r.id == class_key(id_)), None)

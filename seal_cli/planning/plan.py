@@ -60,7 +60,7 @@ from seal_cli.planning.state import State
 if TYPE_CHECKING:
     pass
 
-__all__ = ["MAX_NODES", "Plan", "Step", "explain", "plan"]
+__all__ = ["MAX_NODES", "Plan", "Step", "already_so", "explain", "plan"]
 
 MAX_NODES = 20_000
 """Default bound on the nodes the search expands before it gives up."""
@@ -419,17 +419,29 @@ def plan(commanded: Sequence[Binding], library: Library, state: State, *, max_no
 
 
 def _already_so(commanded: Sequence[Binding], state: State) -> tuple[Binding, ...]:
-    """The commanded frames, from the first, whose results hold already while what they need does
-    not ("take the umbrella to the hallway" with the umbrella on the hallway's coat rack: picking it up
-    to put it back would change nothing)."""
+    """The commanded frames, from the first, that are :func:`already_so`."""
     done: list[Binding] = []
     for binding in commanded:
-        results = [f for f in binding.postconditions if not f.negated]
-        into_room = any(f.predicate == "in" and len(f.args) == 2 and f.args[1] in state.rooms.values() for f in results)
-        if not into_room or not state.unmet(binding) or not all(state.holds(f) for f in results):
+        if already_so(binding, state) is None:
             break
         done.append(binding)
     return tuple(done)
+
+
+def already_so(binding: Binding, state: State) -> Fact | None:
+    """The result that makes a frame pointless here: its ``in(thing, where)`` — where a room or a place
+    of the map (one the state knows the room of) —, when that and all its other results hold already
+    while what it needs does not ("take the umbrella to the hallway" with the umbrella on the hallway's
+    coat rack, or lying on its floor; "put the cup back on the coffee table" with the cup on it: picking
+    it up to put it back would change nothing); None otherwise. ``seal plan`` asks it of the map's
+    state, ``seal run`` of what the robot has seen (:meth:`seal_cli.sim.agent.Agent.already_so`): one
+    rule for both."""
+    results = [f for f in binding.postconditions if not f.negated]
+    known = set(state.rooms.values()) | set(state.rooms)
+    into = [f for f in results if f.predicate == "in" and len(f.args) == 2 and f.args[1] in known]
+    if not into or not state.unmet(binding) or not all(state.holds(f) for f in results):
+        return None
+    return into[0]
 
 
 def explain(plan: Plan) -> Iterator[str]:

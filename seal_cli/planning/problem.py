@@ -99,11 +99,13 @@ class Things:
         self.fixed: set[str] = set()
         """The map's rooms and places: they stay where they are."""
         self.rooms: dict[str, str] = {}
-        """The room of each of the map's places that lies in one."""
+        """The room of each of the map's places that lies in one, and of each of its things on no place."""
         self.facts: set[Fact] = set()
         self.robot_holding: str | None = None
         self.people: set[str] = set()
         """The people the command names."""
+        self.roles_said: set[str] = set()
+        """The people the command calls by a noun ("the nurse"), not by a name."""
         self.synonyms: Mapping[str, tuple[str, ...]] = {}
         """More names of classes (a vocabulary file's), by class key."""
         if map is not None:
@@ -133,6 +135,8 @@ class Things:
             name = self._fresh(obj.cls, counts[obj.cls])
             if obj.inside is not None:
                 self.facts.add(Fact("in", (name, class_key(obj.inside))))
+            elif (floor := map._room_name(obj.at)) is not None:
+                self.rooms[name] = class_key(floor)     # on no place: on the room's floor
         self.robot_holding = map.robot.holding
         for person in map.people:
             self.classes[person.key] = "person"
@@ -193,6 +197,26 @@ MAX_COMMANDED = 200
 """The most grounded frames one command may command (counts and conjunctions multiply)."""
 
 
+def _default(frame: Frame, element: Any, evoked: Any, things: Things, text: str) -> str:
+    """What an element the command leaves out takes: its default, the map's thing of that class if it has
+    one. A map without one that has a place of the element's type gives its first (the cafe's oven heats
+    as a microwave would); a map with neither, for a default that is fixed (a sink, a fridge: furniture the
+    map would list), refuses, naming the frame's verb: the robot would search the house for it in vain."""
+    value = things.name(element.default)
+    if things.map is None or value in things.fixed:
+        return value
+    fits = [class_key(p.name) for p in things.map.places if kind_of(things.taxonomy, p.cls, element.type) is True]
+    if fits:
+        return fits[0]
+    if kind_of(things.taxonomy, element.default, FIXED) is not True:
+        return value
+    places = ", ".join(p.name for p in things.map.places) or "none"
+    span = getattr(evoked, "span", None)
+    raise SealError(f"{frame.name} needs a {element.type} as its {element.role} (a {element.default} unless one "
+                    f"is said), and the {things.map.name} has none; its places are {places}",
+                    Where(None, 1, span[0] + 1) if span else None, source_line=text if span else None)
+
+
 def _located(message: str, phrase: Phrase | None, text: str) -> SealError:
     """An error about a phrase, with a caret under it when its place in the text is known."""
     if phrase is None or phrase.span is None:
@@ -241,6 +265,21 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
     return things.instances(value, count)
 
 
+APPLIANCE_KINDS = (FIXED, "furniture", "openable", "toggleable", "heater", "cooler", "washer")
+"""The library's categories of what stands in a house rather than what the robot carries."""
+
+
+def _may_be_fixed(phrase: Phrase, cls: str, things: Things) -> bool:
+    """Whether the class the parse gave a phrase may say it is a fixed thing the map lacks: the words
+    name it ("the couch"), share a word with it ("the tv": a tv stand), or name a kind of appliance or
+    furniture themselves ("the microwave", which the learned table reads as the cafe's fridge). Not a
+    learned guess that turns a thing to carry into furniture ("the apple" on the terrace, read as its
+    dining table, is an apple to search for)."""
+    if _names(phrase, cls, things) or set(class_words(cls)) & set(words_of(phrase.text or "")):
+        return True
+    return any(things.taxonomy.is_a(phrase.head, kind) is True for kind in APPLIANCE_KINDS)
+
+
 def _names(phrase: Phrase, cls: str, things: Things) -> bool:
     """Whether the phrase's words name the class: its own words or one of its synonyms' ("the couch": a
     sofa), rather than a class a learned table guesses people meant ("the bowl": a cup). A name of
@@ -257,15 +296,25 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
             ) -> tuple[str, ...] | None:
     """The map's person, room or place a phrase names (see :mod:`seal_cli.planning.grounding`);
     None for an object, which the robot must find."""
-    from seal_cli.planning.grounding import HERE, SPEAKER_WORDS, person_value
+    from seal_cli.planning.grounding import DROPPED, HERE, SPEAKER_WORDS, person_value
 
     names = things.names
     assert names is not None and things.map is not None
     if phrase.kind == "place" and phrase.head.lower() in HERE:    # "come here": where the speaker is
         things.people.add(SPEAKER)
         return (SPEAKER,)
+    if category not in ("message", "question") and phrase.text:
+        try:
+            called = names.with_role(phrase.text)         # "the nurse": whoever the map says is the nurse
+        except SealError as wrong:
+            raise _located(wrong.message, phrase, text) from None
+        if called:
+            things.people.add(called[0])
+            return called
     if phrase.head.lower() in SPEAKER_WORDS or phrase.kind == "person" \
             or things.taxonomy.is_a(category, "person") is True and category != "thing":
+        if phrase.text and phrase.text.split()[0].lower() in DROPPED:
+            things.roles_said.add(class_key(phrase.head))     # "the nurse" on a map without one
         value = person_value(phrase.text or phrase.head, phrase.head, {p.key: p for p in things.map.people})
         things.people.add(value)    # only the map's people are of class person: another is searched for by name
         return (value,)
@@ -280,7 +329,8 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
         return (found.id,)
     if things.taxonomy.is_a(phrase.cls or phrase.head, "person") is True:
         return None
-    refused = None if asked else names.refusal(phrase.text, phrase.cls)
+    said = phrase.cls if phrase.cls and _may_be_fixed(phrase, phrase.cls, things) else None
+    refused = None if asked else names.refusal(phrase.text, said)
     if refused is not None:
         raise _located(refused.message, phrase, text)
     return None
@@ -388,6 +438,9 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         values = {role: _values(_sought_where(evoked, role, things), earlier, things, parse.text,
                                 frame.element(role).type, role in asked)
                   for role, phrase in evoked.elements.items()}
+        for role, phrase in evoked.elements.items():     # a default the parse filled: the map's own, if any
+            if phrase.default and things.map is not None and frame.element(role).default is not None:
+                values[role] = (_default(frame, frame.element(role), evoked, things, parse.text),)
         for role in _counted_roles(frame):      # "count the cups": one Count of the class
             if role in values:
                 values[role] = (things.class_of(values[role][0]),)
@@ -395,7 +448,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
             values["theme"] = values["theme"][:1]
         for element in frame.elements:
             if element.role not in values and element.default is not None:
-                values[element.role] = (things.name(element.default),)
+                values[element.role] = (_default(frame, element, evoked, things, parse.text),)
         if things.map is not None and "goal" in frame.roles and "goal" not in values and _returning(evoked):
             things.people.add(SPEAKER)          # "go to the kitchen and come back": back to whoever asked
             values["goal"] = (SPEAKER,)
@@ -538,7 +591,9 @@ def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:
             cls = things.class_of(value)
             if value in things.people or cls == "person":
                 if value not in placed and value != "person":     # "a person", "anyone": whoever is there
-                    warnings.setdefault(f"nobody on the map {m.name} is called {value}: seal run will search "
+                    called = f"is the {value.replace('_', ' ')} (no person has that role)" \
+                        if value in things.roles_said else f"is called {value}"
+                    warnings.setdefault(f"nobody on the map {m.name} {called}: seal run will search "
                                         "the whole house for them", None)
             elif cls not in known and cls not in unknown:    # said once, where it is first looked for
                 ground = binding.elements.get("ground")

@@ -42,7 +42,8 @@ class State:
     classes: Mapping[str, str] = field(default_factory=dict, compare=False, repr=False)
     """The class of each thing whose name is not its class (``fridge_1`` → ``fridge``, ``apple_2`` → ``apple``)."""
     rooms: Mapping[str, str] = field(default_factory=dict, compare=False, repr=False)
-    """The room each place lies in (``fridge_1`` → ``kitchen``), as a map says; empty without one."""
+    """The room each place lies in (``fridge_1`` → ``kitchen``), as a map says, and each thing that
+    lies on no place (a towel on the restroom's floor → ``restroom``); empty without a map."""
 
     @classmethod
     def of(cls, facts: Iterable[Fact], taxonomy: Taxonomy | None = None,
@@ -77,13 +78,15 @@ class State:
     def _in_room(self, fact: Fact) -> bool:
         """Whether ``in(x, room)`` holds because x is in or on a place that lies in the room and is
         not shut (an umbrella on the hallway's coat rack is in the hallway; an apple in the closed
-        fridge is still to be brought out)."""
+        fridge is still to be brought out), or lies there on no place: ``rooms`` says so, nobody
+        holds it and no fact puts it in or on anything (once moved, the facts say where it is)."""
         if fact.predicate != "in" or len(fact.args) != 2 or fact.args[1] not in self.rooms.values():
             return False
         thing, room = fact.args
-        return any(f.predicate in ("in", "on") and len(f.args) == 2 and f.args[0] == thing
-                   and self.rooms.get(f.args[1]) == room and self.holds(Fact("open", (f.args[1],)))
-                   for f in self.facts)
+        put = [f for f in self.facts if f.predicate in ("in", "on") and len(f.args) == 2 and f.args[0] == thing]
+        if not put:
+            return self.rooms.get(thing) == room and Fact("holding", (thing,)) not in self.facts
+        return any(self.rooms.get(f.args[1]) == room and self.holds(Fact("open", (f.args[1],))) for f in put)
 
     def unmet(self, binding: Binding) -> tuple[Fact, ...]:
         """The grounded frame's preconditions that do not hold, in the frame's order."""

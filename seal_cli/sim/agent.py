@@ -30,7 +30,7 @@ from __future__ import annotations
 import itertools
 import math
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from datetime import datetime, timedelta
 from typing import Any
 
@@ -42,10 +42,12 @@ from seal_cli.frames.model import Action, Binding, Fact
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.model import SPEAKER, Map
 from seal_cli.planning.grounding import kind_of, spoken
+from seal_cli.planning.plan import already_so
 from seal_cli.planning.questions import STATE_WORDS, Question
 from seal_cli.planning.state import State
 from seal_cli.sim.navigation import Cell, Grid
 from seal_cli.sim.policies.base import Policy
+from seal_cli.sim.unsearched import Unsearched
 from seal_cli.sim.world import HAND, PERSON, Detection, Item, Outcome, Reason, World
 
 __all__ = ["Agent", "Budget", "Known", "Policy", "Record", "Result", "Scene", "View", "scene_from_map"]
@@ -141,7 +143,8 @@ class Agent:
                  budget: Budget | None = None, planner: Callable[..., list[Binding]] | None = None,
                  observers: Sequence[Callable[[Record], None]] = (), look_every: float = 1.0,
                  classes: Mapping[str, str] | None = None, sweeper: Callable[[], Any] | None = None,
-                 questions: Mapping[Binding, Question] | None = None, clock: datetime | None = None) -> None:
+                 questions: Mapping[Binding, Question] | None = None, clock: datetime | None = None,
+                 search_end: float | None = None) -> None:
         self.scene = scene
         self.world = scene.world
         self.grid = scene.grid
@@ -162,6 +165,10 @@ class Agent:
         self.unreachable: set[str] = set()
         self.opened: set[str] = set()
         """Receptacles the robot has opened (and so looked into)."""
+        self.left_open: set[str] = {i.id for i in self.world.items.values() if i.openable and i.is_open}
+        """Receptacles open as the command found them or as a frame opened them, not only to look in: what is
+        in them is where it lies (an apple in a fridge the robot opened to look for it is still to be brought
+        out, as the planner says)."""
         self.placed: set[str] = set()
         """Things the robot has put where a frame wanted them: not to be taken away again."""
         self.chosen: dict[str, str] = {}
@@ -191,6 +198,11 @@ class Agent:
         self.clock = clock
         """The time the run starts at (what "tell Anna the time" tells, plus the driving since, at
         :data:`ROBOT_SPEED`); None: the computer's clock when the robot tells it."""
+        self.search_end = search_end
+        """End a search for a thing of a kind the map has a prior of once less than this share of the
+        prior is left unsearched (:mod:`seal_cli.sim.unsearched`); None: search within the budget only."""
+        self.unsearched: dict[str, Unsearched] = {}
+        """Per class the robot searches for, the prior mass it has not searched yet (with ``search_end``)."""
         self._learn_places(policy.oracle)
 
     # -- knowledge ---------------------------------------------------------------------------
@@ -248,18 +260,79 @@ class Agent:
         return State.of(facts, self.library.taxonomy, closable=closable, classes=self.classes)
 
     def already_so(self, binding: Binding) -> str | None:
-        """What the robot sees that makes a frame's result hold already, when all it does is bring a
-        thing into a room it is in ("take the umbrella to the hallway", the umbrella on the hallway's
-        coat rack); None otherwise."""
-        results = [f for f in binding.postconditions if not f.negated]
-        into = [f for f in results if f.predicate == "in" and len(f.args) == 2 and self.room(f.args[1]) is not None]
-        if len(into) != 1 or any(not self.state.holds(f) for f in results if f is not into[0]):
+        """What the robot sees that makes a frame pointless, by the planner's rule
+        (:func:`seal_cli.planning.plan.already_so`) asked of what it has seen: "umbrella_1 is in the
+        hallway already" when the frame would only bring a thing into a room where one it knows of lies
+        free (not held, not shut in), or put it in or on a place where one it knows of is; None otherwise."""
+        results = [f for f in binding.postconditions if not f.negated and f.predicate == "in" and len(f.args) == 2]
+        rooms = {class_key(p.name): class_key(p.room) for p in self.scene.map.places if p.room}
+        facts = set(self.state.facts)
+        seen: dict[str, str] = {}
+        for fact in results:
+            thing, where = fact.args
+            room, place = self.room(where), self._place_of(where)
+            free = [k.id for k in self.known.values() if k.cls == self.class_of(thing) and k.movable
+                    and k.id in self.world.items and not self.world.held_chain(k.id)]
+            if room is not None:      # on no place there (the room's floor), or in or on a place there
+                there = [i for i in free if bool(room.contains([self.world.position(i)])[0])]
+                loose = [i for i in there if self._place_of(self.world.items[i].parent or "") is None]
+                if loose:
+                    rooms[thing], there = class_key(room.name), loose
+                else:                 # in a place only if the state says the place is open (as seal plan)
+                    there = [i for i in there if self._parent(i).id in self.left_open or not self._parent(i).openable]
+                    facts |= {Fact("in", (thing, class_key(self._parent(i).id))) for i in there}
+            elif place is not None:
+                there = [i for i in free if self.world.items[i].parent == place]
+                if there:
+                    facts.add(Fact("in", (thing, where)))
+            else:
+                continue
+            if there:
+                seen[thing] = there[0]
+            else:
+                rooms.pop(thing, None)
+        made = already_so(binding, replace(self.state, facts=frozenset(facts), rooms=rooms))
+        if made is None or made.args[0] not in seen:
             return None
-        thing, room = self.class_of(into[0].args[0]), self.room(into[0].args[1])
-        there = [k.id for k in self.known.values() if k.cls == thing and k.movable and k.id in self.world.items
-                 and not self.world.held_chain(k.id) and self.world.enclosure(k.id) is None
-                 and bool(room.contains([self.world.position(k.id)])[0])]
-        return f"{there[0]} is in the {room.name.replace('_', ' ')} already" if there else None
+        thing, where = made.args
+        room = self.room(where)
+        if room is not None:
+            return f"{seen[thing]} is in the {room.name.replace('_', ' ')} already"
+        place = self.world.items[seen[thing]].parent or where
+        return f"{seen[thing]} is {'in' if self.world.hollow(self.world.items[place]) else 'on'} {place} already"
+
+    def _parent(self, item_id: str) -> Item:
+        return self.world.items[self.world.items[item_id].parent or ""]
+
+    def _place_of(self, value: str) -> str | None:
+        """The map's place a value names (``coffee_table_1``), if it names one."""
+        item = self.world.items.get(value)
+        return value if item is not None and not item.movable and item.key != PERSON else None
+
+    def _track_searches(self, commanded: Sequence[Binding]) -> None:
+        """Keep the unsearched prior of each kind of thing a commanded frame names that the map has a
+        prior of (and its perception knows), from the first look on."""
+        m = self.scene.map
+        shut = [i.id for i in self.world.items.values() if i.openable and not i.is_open]
+        priors = {class_key(c) for c in m.priors}
+        for binding in commanded:
+            for _, value in binding.values:
+                key = self.class_of(value)
+                if key in priors and key not in self.unsearched and self.recognises(value):
+                    self.unsearched[key] = Unsearched.of(m, key, shut)
+
+    def search_ended(self, value: str) -> Outcome | None:
+        """Not found, when less than ``search_end`` of the prior of the thing's kind is left unsearched:
+        "no sandwich found: searched the staff room, ..., looked into fridge_1 (...)"."""
+        left = self.unsearched.get(self.class_of(value))
+        if self.search_end is None or left is None or left.left >= self.search_end:
+            return None
+        rooms = [r.replace("_", " ") for r in left.searched_rooms()]
+        opened = sorted(p for p in self.opened if p in left.inside)
+        said = ", ".join(f"the {r}" for r in rooms) or "where it looked"
+        into = f"; looked into {', '.join(opened)}" if opened else ""
+        return Fatal(False, f"no {self.said(value)} found: searched {said}{into} (had the {self.scene.map.name} "
+                     f"one, it would have been seen with probability {1 - left.left:.2f})", Reason.NOT_FOUND, value)
 
     def class_of(self, value: str) -> str:
         key = class_key(value)
@@ -271,6 +344,8 @@ class Agent:
         self.state = self.initial_state()
         for binding in done:
             self.state = self.state.apply(binding)
+        if self.search_end is not None:
+            self._track_searches(commanded)
         self.policy.begin(self)
         self.look()
         todo = list(commanded)
@@ -299,6 +374,15 @@ class Agent:
                 if todo and binding == todo[0]:
                     todo.pop(0)
                 self.say("done", f"done: {binding}", frame=str(binding))
+                continue
+            if outcome.reason is Reason.ALREADY:     # what the next commanded frame would do is so already
+                skipped = todo.pop(0)
+                self.say("done", f"{outcome.message}: {skipped} is not done", frame=str(skipped))
+                try:
+                    self.steps, self.index = self.planner(todo, self.library, self.resync(self.state)), 0
+                except SealError as error:
+                    self.say("give_up", f"cannot replan: {error.message}")
+                    return self._result(False, f"cannot replan: {error.message}", plan, executed, Reason.CANNOT)
                 continue
             stop = self.exhausted()
             if stop or isinstance(outcome, Fatal):
@@ -540,6 +624,8 @@ class Agent:
             if target is not None:
                 if self.world.held_chain(target):
                     return Outcome(True, f"holds {target}")
+                if self.todo and binding != self.todo[0] and (already := self.already_so(self.todo[0])):
+                    return Outcome(False, already, Reason.ALREADY)   # seen where the command wants it
                 cell = self.policy.stand(self, self.known[target])
                 if cell is None:
                     self.unreachable.add(target)
@@ -579,6 +665,8 @@ class Agent:
                 return Fatal(False, f"cannot recognise {value!r}: no class it knows is called that",
                              Reason.NOT_FOUND, value)
             return self.sweep_once(value, binding)
+        if (ended := self.search_ended(value)) is not None:
+            return ended
         view = self.policy.next_view(self, binding, value)
         if view is None:
             return Fatal(False, f"searched everywhere it could and found no {value}", Reason.NOT_FOUND, value)
@@ -699,8 +787,8 @@ class Agent:
                 return Fatal(False, stop, Reason.BUDGET)
             if (ended := self.look_once(value, binding)) is not None:
                 if ended.reason is Reason.NOT_FOUND:
-                    self.answer(ended.message if ended.message.startswith("searched the whole house") else
-                                f"no {self.said(value)} found: {ended.message}")
+                    said = ended.message.startswith(("searched the whole house", f"no {self.said(value)} found"))
+                    self.answer(ended.message if said else f"no {self.said(value)} found: {ended.message}")
                 return ended
         target = self.resolve(value, binding, role)
         if target is not None and target in self.known and not self.in_view(target):
@@ -929,6 +1017,7 @@ class Agent:
         outcome = self.world.act("close", place)
         self.say("act" if outcome.ok else "fail", outcome.message, action="close", args=[place])
         if outcome.ok:
+            self.left_open.discard(place)
             key = self.world.items[place].key
             self.state = State.of(set(self.state.facts) - {Fact("open", (key,))}, self.state.taxonomy,
                                   closable=self.state.closable, classes=self.state.classes)
@@ -993,8 +1082,14 @@ class Agent:
         pose = self.world.robot.pose
         detections = self.world.observe()
         self.looks.append(pose)
-        self.inspected |= {k.id for k in self.known.values() if not k.movable and self.world.items[k.id].is_open
-                           and self.world.within_reach(k.id, pose)}
+        at_hand = {k.id for k in self.known.values() if not k.movable and self.world.items[k.id].is_open
+                   and self.world.within_reach(k.id, pose)}
+        self.inspected |= at_hand
+        if self.unsearched:
+            region = self.world.sensor.region(pose)
+            seen = region.contains(self.scene.map.free_centres)
+            for left in self.unsearched.values():
+                left.saw(seen, at_hand)
         new = []
         for d in detections:
             item = self.world.items[d.id]
@@ -1267,7 +1362,7 @@ class Agent:
             self.say("search", f"looks into {box.id}", target=room.name)
             self.drive_to(cell, f"goes to {box.id}")
             self.world.face(box.at)
-            peeked = self.peek(box.id)
+            peeked = self.peek(box.id, until)       # what was sought is inside: kept open to show it
             if not peeked.ok:
                 ended = peeked
         return ended
@@ -1332,6 +1427,7 @@ class Agent:
             self.placed.discard(args[0])
         elif name == "open":           # what the opening shows is seen, as when it peeks
             self.opened.add(args[0])
+            self.left_open.add(args[0])
             self.look(quiet=True)
 
     def put_beside(self, thing: str, target: str, refused: Outcome) -> tuple[Outcome, list[str]]:
@@ -1478,4 +1574,5 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
     grid = Grid(free.astype(bool), (m.grid.origin[0] + res / 2, m.grid.origin[1] + res / 2), res, 8)
     world = World(items, Robot(pose=m.robot.pose, holding=holding), taxonomy=taxonomy,
                   sensor=RangeSensor.on_map(m))
-    return Scene(world, m, grid, tuple(sorted({i.key for i in items})), m.name)
+    known = {i.key for i in items} | {class_key(c) for c in m.priors}   # what the map has priors of, it knows
+    return Scene(world, m, grid, tuple(sorted(known)), m.name)

@@ -110,6 +110,8 @@ class Reason(enum.Enum):
     UNREACHABLE = "unreachable"
     BUDGET = "budget"
     CANNOT = "cannot"
+    ALREADY = "already"
+    """What the frame is for holds already (the thing is where the command wants it): not a failure."""
 
 
 @dataclass(frozen=True)

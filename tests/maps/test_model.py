@@ -26,6 +26,7 @@ from seal_cli.maps.model import (
     Map,
     MapWarning,
     ObjectTruth,
+    Person,
     Place,
     Robot,
     Room,
@@ -704,3 +705,21 @@ def test_a_place_in_no_room_is_a_located_warning_and_the_map_still_loads(tmp_pat
     result = CliRunner().invoke(app, ["localize", "--map", str(path), "--steps", "0", "--particles", "10"])
     assert result.exit_code == 0
     assert f"warning: {path}:{problems[0].line}:37: place fridge_1" in result.stderr
+
+
+def test_people_have_roles_and_the_speaker_too(tmp_path: Path) -> None:
+    """``role:`` is a noun or a list of nouns, kept as class keys; ``seal map --json`` lists them."""
+    path = write_map(tmp_path, "bounds: [0, 0, 10, 5]\nrooms:\n  - {name: ward, box: [0, 0, 5, 5]}\n"
+                     "people:\n  - {name: Nora, room: ward, role: nurse}\n"
+                     "  - {name: Ida, at: [6, 2], role: [Nurse, head nurse]}\n  - {name: Ben, at: [7, 2]}\n"
+                     "speaker: {role: doctor}\n")
+    m = load_map(path)
+    assert [p.roles for p in m.people] == [("nurse",), ("nurse", "head_nurse"), ()]
+    assert m.speaker is None and m.speaker_roles == ("doctor",) and m.speaker_at == m.robot.xy
+    assert m.with_role("nurse") == ("nora", "ida") and m.with_role("Doctor") == ("me",) and m.with_role("cook") == ()
+    result = CliRunner().invoke(app, ["map", str(path), "--json"])
+    data = json.loads(result.stdout)
+    assert data["people"][1] == {"name": "Ida", "at": [6.0, 2.0], "room": "_outside", "roles": ["nurse", "head_nurse"]}
+    assert data["speaker"]["roles"] == ["doctor"]
+    with pytest.raises(SealError, match="person Eve: role must be a noun or a list of nouns"):
+        Map("m", bounds=(0, 0, 5, 5), people=(Person("Eve", (1.0, 1.0), roles=(3,)),))  # type: ignore[arg-type]

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import pytest
@@ -163,3 +164,96 @@ def test_a_thing_already_in_the_room_it_is_taken_to_is_left_there_with_a_warning
     assert len(plan_text("take the umbrella to the garage", library, map=townhouse).steps) == 2
     apple = plan_text("bring the apple to the kitchen", library, map=load_map(APARTMENT))   # shut in the fridge
     assert [s.binding.frame.name for s in apple.steps] == ["Open", "Pick", "Bring"]
+
+
+# -- people called by their roles ("the nurse") ----------------------------------------------------
+CLINIC = APARTMENT.parent / "clinic.yaml"
+TWO_NURSES = """\
+bounds: [0, 0, 10, 5]
+rooms:
+  - {name: ward, box: [0, 0, 5, 5]}
+  - {name: office, box: [5, 0, 10, 5]}
+priors: {cup: {ward: 0.5}}
+people:
+  - {name: Nora, room: ward, role: nurse}
+  - {name: Ida, room: office, role: [nurse, head nurse]}
+  - {name: Ben, room: office, role: cook}
+speaker: {role: [doctor, boss]}
+"""
+
+
+def two_nurses(tmp_path: Path) -> Path:
+    path = tmp_path / "ward.yaml"
+    path.write_text(TWO_NURSES)
+    return path
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("bring the mug to the nurse", ["Pick(theme=mug, source=table_1)", "Bring(theme=mug, recipient=nora)"]),
+    ("give the nurse the pen", ["Pick(theme=pen, source=desk_1)", "Give(theme=pen, recipient=nora)"]),
+    ("bring the pen to the receptionist", ["Pick(theme=pen, source=desk_1)", "Bring(theme=pen, recipient=victor)"]),
+    ("guide the nurse to the staff room", ["Guide(theme=nora, goal=staff_room)"]),
+    ("find the nurse", ["Find(theme=nora)"]),
+    # the speaker is the clinic's doctor: "the doctor" is "me"
+    ("bring the stethoscope to the doctor", ["Pick(theme=stethoscope, source=exam_table_1)",
+                                             "Bring(theme=stethoscope, recipient=me)"]),
+])
+def test_a_person_is_called_by_the_role_the_map_gives_them(library: Library, text: str, expected: list[str]) -> None:
+    assert [str(s) for s in plan_text(text, library, map=load_map(CLINIC)).steps] == expected
+
+
+def test_a_role_several_people_have_is_refused_naming_them_and_a_room_said_narrows_it(
+        library: Library, tmp_path: Path) -> None:
+    ward = load_map(two_nurses(tmp_path))
+    with pytest.raises(SealError, match=r"'the nurse' could be nora \(ward\) or ida \(office\): the ward has 2 "
+                                        r"people with the role nurse; say which one by name") as caught:
+        plan_text("bring the cup to the nurse", library, map=ward)
+    assert caught.value.column == 18
+    said = plan_text("bring the cup to the nurse in the office", library, map=ward)
+    assert str(said.steps[-1]) == "Bring(theme=cup, recipient=ida)"
+    assert str(plan_text("bring the cup to the head nurse", library, map=ward).steps[-1]) == \
+        "Bring(theme=cup, recipient=ida)"
+    # a role the parser reads as a place ("to the cook") is still the person, and receives
+    assert str(plan_text("take the cup to the cook", library, map=ward).steps[-1]) == "Bring(theme=cup, recipient=ben)"
+    assert str(plan_text("bring the cup to the boss", library, map=ward).steps[-1]) == "Bring(theme=cup, recipient=me)"
+    with pytest.raises(SealError, match=r"the ward has no cook in the ward; it has ben \(office\)"):
+        plan_text("follow the cook in the ward", library, map=ward)
+
+
+def test_a_role_nobody_has_is_warned_about_like_a_name_nobody_has(library: Library) -> None:
+    plan = plan_text("bring the cup to the nurse", library, map=load_map(APARTMENT))
+    assert str(plan.steps[-1]) == "Bring(theme=cup, recipient=nurse)"
+    assert plan.warnings == ("nobody on the map apartment is the nurse (no person has that role): seal run will "
+                             "search the whole house for them",)
+    named = plan_text("bring the cup to Roger", library, map=load_map(APARTMENT))
+    assert named.warnings == ("nobody on the map apartment is called roger: seal run will search the whole house "
+                              "for them",)
+
+
+def test_a_thing_on_no_place_in_the_room_is_there_already_for_plan_and_run_alike(library: Library) -> None:
+    """One rule (``planning.plan.already_so``) for ``seal plan`` (the map's state) and ``seal run`` (what the
+    robot sees): the clinic's umbrella lies on the waiting room's floor, on no place."""
+    from typer.testing import CliRunner
+
+    from seal_cli.cli import app
+    from seal_cli.frames.model import Fact
+    from seal_cli.planning.plan import already_so
+    from seal_cli.planning.problem import problem_of_text
+
+    clinic = load_map(CLINIC)
+    plan = plan_text("take the umbrella to the waiting room", library, map=clinic)
+    assert plan.steps == () and plan.warnings == ("Bring(theme=umbrella, goal=waiting_room) is not done: "
+                                                  "in(umbrella, waiting_room), hand_empty holds already",)
+    problem = problem_of_text("take the umbrella to the staff room", library, map=clinic)
+    bring = problem.commanded[0]
+    assert already_so(bring, problem.state) is None       # another room: it is brought
+    assert problem.state.holds(Fact("in", ("umbrella", "waiting_room")))
+    held = problem.state.apply(library.frame("Pick").bind({"theme": "umbrella"}))
+    assert not held.holds(Fact("in", ("umbrella", "waiting_room")))   # once picked up, it is in the hand
+    run = CliRunner().invoke(app, ["run", "--map", str(CLINIC), "take the umbrella to the waiting room",
+                                   "--particles", "50", "--json"])
+    report = json.loads(run.stdout)
+    assert report["completed"] and report["executed"] == []
+    assert any(r["text"] == "umbrella_1 is in the waiting room already: Bring(theme=umbrella, goal=waiting_room) "
+               "is not done" for r in report["records"])
+    assert not any("picked up" in r["text"] for r in report["records"])

@@ -36,6 +36,7 @@ from __future__ import annotations
 import contextlib
 import functools
 import math
+import re
 from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any, TypeVar
@@ -63,8 +64,8 @@ ROOM_KEYS = ("name", "polygon", "box")
 PLACE_KEYS = ("name", "class", "at", "openable", "open", "reach")
 OBJECT_KEYS = ("class", "at", "in")
 ROBOT_KEYS = ("pose", "holding")
-PERSON_KEYS = ("name", "at", "room")
-SPEAKER_KEYS = ("at",)
+PERSON_KEYS = ("name", "at", "room", "role")
+SPEAKER_KEYS = ("at", "role")
 SENSOR_KEYS = ("range", "fov", "p_detect", "sigma", "noise")
 MAX_METRES = 1000.0
 """The largest sensor range and place reach a map may give: beyond it squared distances overflow
@@ -261,7 +262,7 @@ class _Reader(NodeReader):
         if "people" in nodes:
             fields["people"] = self.people(nodes["people"])
         if "speaker" in nodes:
-            fields["speaker"] = self.speaker(nodes["speaker"])
+            fields["speaker"], fields["speaker_roles"] = self.speaker(nodes["speaker"])
         if server is not None:
             fields["grid"] = server
             if "bounds" not in nodes:
@@ -483,20 +484,42 @@ class _Reader(NodeReader):
             name = self.string(fields["name"], "a person's name")
             at = self.xy(fields["at"], f"person {name}: at") if "at" in fields else None
             room = self.string(fields["room"], f"person {name}: room") if "room" in fields else None
+            roles = self.roles(fields["role"], f"person {name}: role") if "role" in fields else ()
             if name and ("at" not in fields or at) and ("room" not in fields or room):
-                built = self.build(functools.partial(Person, name, at, room, self.where(item)), item)
+                built = self.build(functools.partial(Person, name, at, room, self.where(item), roles or ()), item)
                 if built is not None:
                     people.append(built)
         return tuple(people)
 
-    def speaker(self, node: yaml.Node) -> tuple[float, float] | None:
+    def speaker(self, node: yaml.Node) -> tuple[tuple[float, float] | None, tuple[str, ...]]:
+        """Where the speaker stands (None: where the robot starts) and the roles they are called by."""
         fields = {key: value for key, _, value in self.pairs_at(node, "speaker", ("speaker",), SPEAKER_KEYS)}
         if not isinstance(node, yaml.MappingNode):
-            return None
+            return None, ()
+        roles = (self.roles(fields["role"], "speaker: role") or ()) if "role" in fields else ()
         if "at" not in fields:
-            self.problem("speaker needs at: [x, y]", node)
+            if not roles:
+                self.problem("speaker needs at: [x, y] (or a role: without it, the speaker stands where the "
+                             "robot starts)", node)
+            return None, roles
+        return self.xy(fields["at"], "speaker: at"), roles
+
+    def roles(self, node: yaml.Node, what: str) -> tuple[str, ...] | None:
+        """A role, or a list of roles: each a noun (``nurse``, ``head nurse``); None when it is not."""
+        items = self.items(node, what, single=True) if isinstance(node, yaml.SequenceNode | yaml.ScalarNode) \
+            else None
+        if items is None or not items:
+            self.problem(f"{what} must be a noun or a list of nouns, not {_shape(node)}", node)
             return None
-        return self.xy(fields["at"], "speaker: at")
+        roles = []
+        for item in items:
+            value = self.value(item) if isinstance(item, yaml.ScalarNode) else None
+            if not isinstance(value, str) or not class_key(value) or not re.fullmatch(r"[^\W\d_][\w '-]*", value):
+                shown = repr(item.value) if isinstance(item, yaml.ScalarNode) else _shape(item)
+                self.problem(f"{what} must be a noun or a list of nouns, not {shown}", item)
+                return None
+            roles.append(value)
+        return tuple(roles)
 
     def sensor(self, node: yaml.Node) -> Sensor | None:
         fields = {key: value for key, _, value in self.pairs_at(node, "sensor", ("sensor",), SENSOR_KEYS)}
