@@ -69,3 +69,26 @@ def test_bench_tasks_map_suite_json() -> None:
     assert group["path_m"]["oracle"] <= group["path_m"]["coverage"]
     bad = runner.invoke(app, ["bench", "tasks", "--suite", "nope"])
     assert bad.exit_code == 1 and "the suites are alfred2d, map, context" in bad.stderr
+
+
+def test_a_thing_where_its_prior_is_small_is_searched_for_to_the_end() -> None:
+    """A layout drawn from the priors may put the cup in the dining room (prior 0.01): the suite measures
+    the search to the end, where seal run's search end (--search-end) gives up on it."""
+    from dataclasses import replace
+
+    from seal_cli.bench.mapsuite import run_judged
+    from seal_cli.frames.reading import load_library
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.policies import make_policy
+
+    library = load_library()
+    apartment = load_map(map_path("apartment"))
+    at = (5.0, 3.5)
+    assert apartment.is_free(np.array([at]))[0] and apartment.room_of(np.array([at]))[0] == "dining_room"
+    m = replace(apartment, objects=tuple(replace(o, at=at, inside=None) if o.cls == "cup" else o
+                                         for o in apartment.objects))
+    success, path, _, reason, _ = run_judged(m, "find the cup", library, "sefm", rng=np.random.default_rng(0),
+                                             particles=100)
+    assert success and reason == "success" and path > 0
+    _, given_up = run_on_map(m, "find the cup", library, make_policy("sefm", 100), rng=np.random.default_rng(0))
+    assert not given_up.completed and given_up.reason.startswith("no cup found: searched ")
