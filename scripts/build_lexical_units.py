@@ -89,6 +89,8 @@ from collections import Counter, defaultdict
 from pathlib import Path
 from typing import Any
 
+from rebuilt import write_or_check  # scripts/rebuilt.py, beside this script
+
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
@@ -474,17 +476,8 @@ def main() -> int:
             return 1
         # the PropBank units come first: the WordNet file must not count as listed already either
         text = render(derive(json.loads(path.read_text()), library_without(args.out, WORDNET_OUT, ROLES_OUT)))
-    if args.check:
-        if not args.out.is_file() or args.out.read_text() != text:
-            print(f"{args.out}: differs from what the verb data gives (rebuild it)", file=sys.stderr)
-            return 1
-        print(f"{args.out}: up to date")
-        return 0
-    tmp = args.out.with_suffix(".yaml.tmp")
-    tmp.write_text(text)
-    tmp.replace(args.out)
-    print(f"wrote {args.out} ({text.count('frame:')} units)")
-    return 0
+    return write_or_check(args.out, text, check=args.check, made_from="the verb data",
+                          summary=f"{text.count('frame:')} units")
 
 
 if __name__ == "__main__":

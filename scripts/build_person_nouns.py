@@ -32,6 +32,8 @@ import sys
 from collections import defaultdict
 from pathlib import Path
 
+from rebuilt import write_or_check  # scripts/rebuilt.py, beside this script
+
 ROOT = Path(__file__).resolve().parent.parent
 OUT = ROOT / "framelib" / "wordnet_people.yaml"
 PERSON = "00007846"                      # person.n.01: a human being
@@ -119,17 +121,8 @@ def main() -> int:
         print(f"error: {missing[0]}: no such file (--wordnet is a WordNet 3.0 dict folder)", file=sys.stderr)
         return 1
     text = render(person_nouns(Nouns(args.wordnet)))
-    if args.check:
-        if not args.out.is_file() or args.out.read_text() != text:
-            print(f"{args.out}: differs from what WordNet gives (rebuild it)", file=sys.stderr)
-            return 1
-        print(f"{args.out}: up to date")
-        return 0
-    tmp = args.out.with_suffix(".yaml.tmp")
-    tmp.write_text(text)
-    tmp.replace(args.out)
-    print(f"wrote {args.out} ({text.count(chr(10) + '    - ')} nouns)")
-    return 0
+    return write_or_check(args.out, text, check=args.check, made_from="WordNet",
+                          summary=f"{text.count(chr(10) + '    - ')} nouns")
 
 
 if __name__ == "__main__":
