@@ -1005,22 +1005,24 @@ class Agent:
         return not known or self.class_of(value) in {class_key(c) for c in known}
 
     def open_to_look(self, place: str) -> None:
-        outcome = self.world.act("open", place)
-        self.say("act" if outcome.ok else "fail", outcome.message, action="open", args=[place])
-        if outcome.ok:
+        if self._open_or_close(place, True):
             self.opened.add(place)
-            self.state = State.of(set(self.state.facts) | {Fact("open", (self.world.items[place].key,))},
-                                  self.state.taxonomy, closable=self.state.closable, classes=self.state.classes)
 
     def close_to_use(self, place: str) -> None:
         """Close what must be shut for the action (a microwave before it is switched on)."""
-        outcome = self.world.act("close", place)
-        self.say("act" if outcome.ok else "fail", outcome.message, action="close", args=[place])
-        if outcome.ok:
+        if self._open_or_close(place, False):
             self.left_open.discard(place)
-            key = self.world.items[place].key
-            self.state = State.of(set(self.state.facts) - {Fact("open", (key,))}, self.state.taxonomy,
-                                  closable=self.state.closable, classes=self.state.classes)
+
+    def _open_or_close(self, place: str, opening: bool) -> bool:
+        """Open or close a place, say so, and keep the planning state's ``open`` fact in step; whether it did."""
+        name = "open" if opening else "close"
+        outcome = self.world.act(name, place)
+        self.say("act" if outcome.ok else "fail", outcome.message, action=name, args=[place])
+        if outcome.ok:
+            fact = Fact("open", (self.world.items[place].key,))
+            facts = set(self.state.facts) | {fact} if opening else set(self.state.facts) - {fact}
+            self.state = State.of(facts, self.state.taxonomy, closable=self.state.closable, classes=self.state.classes)
+        return outcome.ok
 
     def drive_to(self, cell: Cell, why: str, until: Callable[[], bool] | None = None,
                  rethink: Callable[[], str | None] | None = None) -> bool:
