@@ -29,7 +29,7 @@ from seal_cli.language.grounding import Vocabulary, vocabulary_of_map
 from seal_cli.language.parser import Parse, parse_command
 from seal_cli.planning import plan as planning
 from seal_cli.planning.plan import MAX_NODES, Plan
-from seal_cli.planning.problem import Things, build_problem, problem_of_text
+from seal_cli.planning.problem import Things, build_problem, parse_to_plan, problem_of_text
 from seal_cli.planning.state import State
 from seal_cli.sim.unsearched import SEARCH_END
 
@@ -151,7 +151,7 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
     prior is left unsearched (:mod:`seal_cli.sim.unsearched`; None: only the budget ends it).
     """
     from seal_cli.maps.model import Robot
-    from seal_cli.planning.grounding import MapNames, spoken
+    from seal_cli.planning.grounding import MapNames
     from seal_cli.planning.questions import read_questions
     from seal_cli.sim.agent import Agent, scene_from_map
     from seal_cli.sim.policies import make_policy
@@ -160,7 +160,7 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
         m = replace(m, robot=Robot(m.robot.pose, holding))
     known = vocabulary_of_map(m)
     vocabulary = known if vocabulary is None else vocabulary.restricted_to(known.classes)
-    parses = [parse_command(spoken(t), library, vocabulary) for t in (*done, text)]
+    parses = [parse_to_plan(t, library, vocabulary) for t in (*done, text)]
     problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=m.known(),
                             vocabulary=vocabulary)
     questions = read_questions(parses[-1], problem.commanded, MapNames(m, library.taxonomy))

@@ -117,12 +117,10 @@ def commanded_frames(m: Map, text: str, library: Library) -> tuple[list[Any], di
     """The command's frames as ``seal run`` reads them on the map, and the class of each name
     they use: what the end-state judge holds every policy's world to."""
     from seal_cli.language.grounding import vocabulary_of_map
-    from seal_cli.language.parser import parse_command
-    from seal_cli.planning.grounding import spoken
-    from seal_cli.planning.problem import build_problem
+    from seal_cli.planning.problem import build_problem, parse_to_plan
 
     vocabulary = vocabulary_of_map(m)
-    problem = build_problem(parse_command(spoken(text), library, vocabulary), library, map=m.known(),
+    problem = build_problem(parse_to_plan(text, library, vocabulary), library, map=m.known(),
                             vocabulary=vocabulary)
     return list(problem.commanded), dict(problem.state.classes)
 

@@ -60,7 +60,7 @@ if TYPE_CHECKING:
     from seal_cli.maps.model import Map
 
 __all__ = ["MAX_COMMANDED", "MAX_COUNT", "Problem", "Things", "build_problem", "commanded_frames", "instance_names",
-           "problem_of_text"]
+           "parse_to_plan", "problem_of_text"]
 
 INDEFINITE = frozenset({"something", "anything", "everything", "nothing"})
 """Pronouns that name a thing of their own rather than an antecedent."""
@@ -608,14 +608,22 @@ def problem_of_text(text: str, library: Library, *, holding: str | None = None, 
                     map: Map | None = None, vocabulary: Any = None) -> Problem:
     """Parse the command and the ``done`` commands (with the map's vocabulary unless one is
     given), then :func:`build_problem`."""
-    from seal_cli.language.parser import parse_command
-
     if vocabulary is None and map is not None:
         from seal_cli.language.grounding import vocabulary_of_map
 
         vocabulary = vocabulary_of_map(map)
-    from seal_cli.planning.grounding import spoken
-
-    parses = [parse_command(spoken(t), library, vocabulary) for t in (*done, text)]
+    parses = [parse_to_plan(t, library, vocabulary) for t in (*done, text)]
     return build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=map,
                          vocabulary=vocabulary if hasattr(vocabulary, "synonyms") else None)
+
+
+def parse_to_plan(text: str, library: Library, vocabulary: Any = None) -> Parse:
+    """A command as the planner reads it: parsed as said aloud (:func:`~seal_cli.planning.grounding.spoken`),
+    each question told to someone found out first (:func:`~seal_cli.planning.questions.told_first`:
+    "tell Ben where the spoon is" finds the spoon, then tells Ben where it is)."""
+    from seal_cli.language.parser import parse_command
+    from seal_cli.planning.grounding import spoken
+    from seal_cli.planning.questions import told_first
+
+    return told_first(parse_command(spoken(text), library, vocabulary),
+                      lambda said: parse_command(said, library, vocabulary))

@@ -24,22 +24,28 @@ Tell with the question as its message — but the *kind* of answer a person expe
   points back at what was sought ("report *its* location"): the robot says what the earlier frames
   found out, never the message's words. Any other message ("tell Jo hello") is said as it is.
 
+A question told to someone ("tell Ben *where the spoon is*", "tell Anna *how many cups are in the
+kitchen*") is found out first: :func:`told_first` puts the frames that answer it (the Find or Count
+the same words ask of the robot: "do you know where the spoon is?") before the Tell, which then
+reports them. What and who questions need no frame of their own (``what``: the Tell looks).
+
 A question is read from words only (the frame's span in the text, the message's words) and
 grounded with :class:`~seal_cli.planning.grounding.MapNames`: never from the map's objects.
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 
+from seal_cli.errors import SealError
 from seal_cli.frames.model import Action, Binding, Frame
 from seal_cli.language.english import CHECK_WHETHER, WH_WORDS
-from seal_cli.language.values import Evoked, Parse
+from seal_cli.language.values import Evoked, Parse, Phrase
 from seal_cli.planning.grounding import MapNames, words_of
 
 __all__ = ["FACTS", "KINDS", "STATE_WORDS", "Question", "asks_whether", "fact_asked", "looking", "read_questions",
-           "reports"]
+           "reports", "told_first"]
 
 KINDS = ("where", "whether", "how_many", "what", "state", "fact", "report")
 
@@ -71,6 +77,13 @@ POINTING_BACK = frozenset({"it", "its", "they", "them", "their"})
 
 CONTAINING = ("on top of", "inside", "on", "in", "at")
 """The words after which a "what is ..." question names where to look."""
+
+ASKED_OF_ROBOT = "do you know "
+"""The lead-in by which a question told to someone ("where the spoon is") is asked of the robot instead
+("*do you know* where the spoon is?"), so that the parser gives the frames that find its answer."""
+
+FOUND_OUT_BY = frozenset({"Find", "Count", "LookAt"})
+"""The frames that find out what a question told to someone asks (where a thing is, how many, a state)."""
 
 
 @dataclass(frozen=True)
@@ -197,3 +210,54 @@ def read_questions(parse: Parse, commanded: Sequence[Binding], names: MapNames |
             questions.update((b, question) for b in commanded[start:k])
             answered = answered or question.kind != "report"
     return questions
+
+
+def told_first(parse: Parse, parse_text: Callable[[str], Parse]) -> Parse:
+    """The parse with each question told to someone found out first: before a Tell whose message asks where
+    a thing is, how many there are or whether a thing is so ("tell Ben *where the spoon is*"), and that no
+    earlier frame of the command answers, the frames that answer it, as the parser reads the same words
+    asked of the robot (``parse_text``: "do you know where the spoon is?" is Find the spoon), their spans
+    moved onto the message's words. The Tell then reports what they found (``report``). A message that
+    asks what or who is somewhere, asks a fact, points back at something or cannot be asked of the robot
+    is left to the Tell."""
+    frames: list[Evoked] = []
+    for evoked in parse.frames:
+        asked = _found_out_by(evoked, parse.text, parse_text) \
+            if not any(f.frame in FOUND_OUT_BY for f in frames) else None
+        frames.extend(asked or ())
+        frames.append(evoked)
+    return parse if len(frames) == len(parse.frames) else replace(parse, frames=tuple(frames))
+
+
+def _found_out_by(evoked: Evoked, text: str, parse_text: Callable[[str], Parse]) -> tuple[Evoked, ...] | None:
+    """The frames that answer the question a Tell's message asks, placed on the message's words, or None."""
+    message = evoked.elements.get("message") if evoked.frame == "Tell" else None
+    said = (message.text or "") if message is not None else ""
+    words = said.lower().replace("_", " ").replace("?", " ").split()
+    if not words or words[0] not in WH_WORDS or words[0] in ASKING_WHAT or fact_asked(said) \
+            or any(w in POINTING_BACK for w in words):
+        return None
+    start = text.find(said, evoked.span[0])
+    if start < 0:
+        return None
+    try:
+        found = parse_text(ASKED_OF_ROBOT + said).frames
+    except SealError:
+        return None
+    if not found or any(f.frame not in FOUND_OUT_BY or "theme" not in f.elements
+                        or f.frame == "LookAt" and not f.asked for f in found):
+        return None
+    shift = start - len(ASKED_OF_ROBOT)
+    return tuple(_moved(f, shift, start, start + len(said)) for f in found)
+
+
+def _moved(evoked: Evoked, shift: int, start: int, end: int) -> Evoked:
+    """A frame parsed from the message asked of the robot, placed on the message's words in the command."""
+    def at(span: tuple[int, int] | None) -> tuple[int, int] | None:
+        return None if span is None else (max(start, span[0] + shift), min(end, span[1] + shift))
+
+    def moved(phrase: Phrase) -> Phrase:
+        return replace(phrase, span=at(phrase.span), conjuncts=tuple(moved(c) for c in phrase.conjuncts))
+
+    return replace(evoked, span=at(evoked.span) or (start, end),
+                   elements={role: moved(p) for role, p in evoked.elements.items()})

@@ -425,6 +425,8 @@ class Agent:
         if question is not None and question.kind == "state" and (absent := self.state_absent(binding, question)):
             return absent
         for action in binding.actions:
+            if action.name == "approach" and question is not None and question.kind == "what":
+                continue            # "tell Ben what is on the table": looked first, then told (answer_what)
             if action.name == "navigate":
                 outcome = self.go_to(action.args[0], binding)
                 if not outcome.ok and outcome.reason is Reason.NOT_FOUND and question is not None \
@@ -979,7 +981,8 @@ class Agent:
                 return went
         if "message" not in binding.elements:
             return Outcome(True, said)
-        return self._act_words("say", [binding.elements["message"]], f"says: {said}")
+        told = f'said "{said}"' if recipient is not None and recipient != SPEAKER else f"says: {said}"
+        return self._act_words("say", [binding.elements["message"]], told)   # to another: narrated
 
     def _seen_person(self, person: str) -> bool:
         at = np.asarray([self.world.items[person].at], dtype=float)

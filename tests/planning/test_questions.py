@@ -9,8 +9,8 @@ from seal_cli.language.grounding import vocabulary_of_map
 from seal_cli.language.parser import parse_command
 from seal_cli.maps.formats.map_server import load_map
 from seal_cli.planning.grounding import MapNames
-from seal_cli.planning.problem import build_problem
-from seal_cli.planning.questions import Question, fact_asked, read_questions, reports
+from seal_cli.planning.problem import build_problem, parse_to_plan
+from seal_cli.planning.questions import Question, fact_asked, read_questions, reports, told_first
 
 
 def asked(text: str, library: Library) -> list[tuple[str, Question]]:
@@ -103,3 +103,52 @@ def test_a_message_asking_for_what_an_earlier_frame_found_reports_it(library: Li
     assert asked("go to the kitchen and tell me where you are", library) == []   # nothing asked before it
     assert reports("where it is") and reports("its location") and not reports("hello")
     assert not reports("that you are here")     # a pronoun of the speaker or the robot points at nothing sought
+
+
+def told(text: str, library: Library) -> list[tuple[str, Question | None]]:
+    """Each commanded frame of ``text`` as the planner reads it on the apartment, with its question."""
+    m = load_map("apartment")
+    parse = parse_to_plan(text, library, vocabulary_of_map(m))
+    commanded = build_problem(parse, library, map=m.known()).commanded
+    questions = read_questions(parse, commanded, MapNames(m, library.taxonomy))
+    return [(str(b), questions.get(b)) for b in commanded]
+
+
+@pytest.mark.parametrize(("text", "first", "question"), [
+    ("tell Ben where the spoon is", "Find(theme=spoon)", Question("where")),
+    ("tell Anna where Ben is", "Find(theme=ben)", Question("where")),
+    ("tell Anna how many cups are in the family room", "Count(theme=cup, ground=family_room)",
+     Question("how_many")),
+    ("tell Ben whether the fridge is open", "LookAt(theme=fridge_1)", Question("state", None, "open")),
+])
+def test_a_question_told_to_someone_is_found_out_first_and_then_reported(
+        text: str, first: str, question: Question, library: Library) -> None:
+    """"tell Ben where the spoon is": the robot finds the spoon (as for "do you know where the spoon is?"),
+    then tells Ben what it found, not the words "where the spoon is"."""
+    steps = told(text, library)
+    assert steps[0] == (first, question)
+    assert steps[-1][0].startswith("Tell(") and steps[-1][1] == Question("report")
+
+
+@pytest.mark.parametrize("text", ["tell Ben hello", "tell Anna the time", "tell Ben what is on the dining table",
+                                  "tell Ben who is in the kitchen", "find the cup and tell Ben where it is",
+                                  "tell Ben where you are going"])
+def test_a_message_that_the_tell_answers_itself_or_that_asks_nothing_findable_gets_no_frame_first(
+        text: str, library: Library) -> None:
+    """Said as it is, a fact of the clock, what or who is somewhere (the Tell looks), a question already
+    answered by an earlier frame, or one whose words the robot cannot ask of itself."""
+    m = load_map("apartment")
+    parse = parse_command(text, library, vocabulary_of_map(m))
+    assert parse_to_plan(text, library, vocabulary_of_map(m)) == parse
+
+
+def test_the_frames_found_out_first_lie_on_the_message_words(library: Library) -> None:
+    m = load_map("apartment")
+    text = "please tell Ben where the spoon is"
+    parse = told_first(parse_command(text, library, vocabulary_of_map(m)),
+                       lambda said: parse_command(said, library, vocabulary_of_map(m)))
+    find, tell = parse.frames
+    assert find.frame == "Find" and tell.frame == "Tell"
+    assert text[find.span[0]:find.span[1]] in ("where the spoon", "where the spoon is")   # the parser drops "is"
+    theme = find.elements["theme"]
+    assert theme.span is None or text[theme.span[0]:theme.span[1]] == "the spoon"

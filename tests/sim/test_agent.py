@@ -205,3 +205,27 @@ def test_a_heater_left_open_is_closed_before_it_is_switched_on(library: Library)
     assert acts.index("closed microwave_1") + 1 == acts.index("switched microwave_1 on")
     assert s.world.has("microwave_1", "on") and not s.world.items["microwave_1"].is_open
     assert s.world.items["apple_1"].parent == "microwave_1"
+
+
+def test_a_question_told_to_someone_is_found_out_then_told_and_a_what_question_looks_before_going(
+        library: Library) -> None:
+    """"tell Ben where the spoon is": the robot finds the spoon, then goes to Ben and says where it is, not
+    the message's words. "tell Ben what is on the dining table": it looks at the table first, then goes to
+    Ben once (not to Ben, the table and Ben again), and tells him."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    m = load_map("apartment")
+    heard: list = []
+    _, result = pipeline.run_on_map(m, "tell Ben where the spoon is", library, make_policy("sefm"),
+                                    rng=np.random.default_rng(0), observers=[heard.append])
+    assert result.completed, result.reason
+    said = [r.text for r in heard if r.text.startswith('said "')]
+    assert said == ['said "spoon_1 is on counter_1 in the kitchen at (8.30, -4.10)"']
+    heard.clear()
+    _, result = pipeline.run_on_map(m, "tell Ben what is on the dining table", library, make_policy("sefm"),
+                                    rng=np.random.default_rng(0), observers=[heard.append])
+    assert result.completed, result.reason
+    went = [r.text for r in heard if r.text.startswith("goes to ") and "look" not in r.text]
+    assert [t.split(" (")[0] for t in went] == ["goes to dining_table_1", "goes to ben"]
+    assert 'said "nothing on dining_table_1"' in [r.text for r in heard]
