@@ -334,7 +334,28 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[str, str, s
                 found.append((frame, verb, f"wordnet:{wordnet.name(verb, sense)} {how} "
                                            f"{wordnet.name(lemma, synset)} ({lemma})"))
             break
-    return sorted(found)
+    return sorted(found + reflexive(wordnet, library, closed))
+
+
+def reflexive(wordnet: WordNet, library: Library, closed: frozenset[str]) -> list[tuple[str, str, str]]:
+    """Rule 6: a unit said of the robot itself ("introduce *yourself* to") is said so by each verb that shares
+    the first sense of its verb ("introduce, present, acquaint": "present yourself to" is a Greet), where that
+    sense is the other verb's too. The verb alone keeps its own frames ("present the cake to Ana" is a Give)."""
+    found = []
+    for unit, frames in library.by_unit.items():
+        words = unit.split()
+        if len(words) < 2 or words[1] != "yourself" or words[0] not in wordnet.senses:
+            continue
+        first = wordnet.senses[words[0]][1][0]
+        for lemma in wordnet.lemmas[first]:
+            said = " ".join((lemma, *words[1:]))
+            if lemma == words[0] or not lemma.isalpha() or lemma in closed or not in_verb_tables(lemma) or \
+                    said in library.by_unit:
+                continue
+            for frame in frames:
+                found.append((frame.name, said, f"wordnet:{wordnet.name(lemma, first)} = "
+                                                f"{wordnet.name(words[0], first)} ({unit})"))
+    return found
 
 
 Signatures = dict[str, dict[str, frozenset[str]]]
@@ -360,11 +381,32 @@ def read_propbank(folder: Path) -> tuple[dict[str, list[dict[str, Any]]], Signat
                         for link in roleset.iter("lexlink")]
             rolesets.setdefault(path.stem, []).append({"id": ident, "aliases": aliases, "lexlinks": lexlinks})
             found: dict[str, set[str]] = defaultdict(set)
-            for link in roleset.iter("rolelink"):
-                if link.get("resource") == "VerbNet" and link.text and link.text.strip():
-                    found[str(link.get("class"))].add(link.text.strip().lower())
+            for role in roleset.iter("role"):
+                for link in role.iter("rolelink"):
+                    if link.get("resource") == "VerbNet" and link.text and link.text.strip():
+                        played = link.text.strip().lower()
+                        found[str(link.get("class"))].add(played)
+                        if role.get("n") == "1" and played == "destination":   # the object is where it goes
+                            found[str(link.get("class"))].add(OBJECT_DESTINATION)
             signatures[ident] = {vn: frozenset(roles) for vn, roles in found.items()}
     return rolesets, signatures
+
+
+# The thematic roles that say where a transfer ends, each with the frame role that stands for it: who
+# receives (a message or a thing), or where the thing ends up ("hang.01" in ``put_spatial-9.2-1``: agent,
+# theme, destination, as ``put.01`` in ``put-9.1``).
+ENDPOINTS = {"recipient": "recipient", "destination": "goal"}
+# Marks a class in which the direct object (ARG1) is the destination: "fill the glass with water",
+# "butter the bread", "paint the wall" (``fill-9.8``, ``butter-9.9``) say where something goes, but their
+# object is not what moves, so they are no Place of what they say.
+OBJECT_DESTINATION = "object=destination"
+
+
+def ends(roles: frozenset[str]) -> set[str]:
+    """The roles of a signature that say where a transfer ends (a destination only while the object is
+    not it)."""
+    found = roles & ENDPOINTS.keys()
+    return found - {"destination"} if OBJECT_DESTINATION in roles else found
 
 
 def family(vn: str) -> str:
@@ -396,8 +438,8 @@ def derive_roles(rolesets: dict[str, list[dict[str, Any]]], signatures: Signatur
             listed = {f.name for f in own.by_unit.get(lemma, ())}
             frames = {f for fn in links(roleset, "FrameNet") for f in by_framenet.get(fn, set()) & listed}
             for vn, roles in signatures.get(str(roleset["id"]), {}).items():
-                takers = {f for f in frames if "recipient" in own.by_name[f].roles}
-                if "recipient" in roles and takers and family(vn):
+                takers = {f for f in frames if any(ENDPOINTS[end] in own.by_name[f].roles for end in ends(roles))}
+                if takers and family(vn):
                     stands[(family(vn), roles)] |= takers
                     example.setdefault((family(vn), roles), str(roleset["id"]))
     closed = closed_class_words()
@@ -408,13 +450,17 @@ def derive_roles(rolesets: dict[str, list[dict[str, Any]]], signatures: Signatur
             continue
         votes: Counter[str] = Counter()
         why: dict[str, str] = {}
+        framenet = set(links(roleset, "FrameNet"))
         for vn, roles in sorted(signatures.get(str(roleset["id"]), {}).items()):
             key = (family(vn), roles)
             if len(stands.get(key, ())) == 1:
                 frame = next(iter(stands[key]))
+                if "recipient" not in ends(roles) and own.by_name[frame].framenet not in framenet:
+                    continue      # a destination alone is said by many verbs: FrameNet must name the frame too
                 votes[frame] += 1
-                why.setdefault(frame, f"propbank:{roleset['id']} -> VerbNet {vn} ({', '.join(sorted(roles))}: "
-                                      f"as {example[key]})")
+                agrees = "" if "recipient" in ends(roles) else f", FrameNet {own.by_name[frame].framenet}"
+                shown = ", ".join(sorted(roles - {OBJECT_DESTINATION}))
+                why.setdefault(frame, f"propbank:{roleset['id']} -> VerbNet {vn} ({shown}: as {example[key]}{agrees})")
         ranked = votes.most_common(2)
         if ranked and (len(ranked) == 1 or ranked[0][1] > ranked[1][1]):
             frame = ranked[0][0]

@@ -222,6 +222,11 @@ WHERE_DID = (frozenset(["where"]), frozenset(["did", "do", "does", "have", "has"
              frozenset(["i", "you", "we", "they", "he", "she"]))
 """"*Where did I leave* my glasses?", "*where do we keep* the batteries", "*where can I find* the sponge": where,
 an auxiliary or a modal, a subject and any verb, then what to find."""
+SEEN_ASKED = (frozenset(["have", "has", "did"]), frozenset(["you", "anyone", "anybody", "someone", "somebody"]),
+              frozenset(["see", "notice", "spot", "find", "come across"]))
+""""*Have you seen* my phone?", "*did you notice* the keys anywhere?", "*has anyone found* my glasses?": a
+question whether the thing was seen (an auxiliary of the past, a subject, a verb of perceiving or finding) asks
+to find it (``WHERE_MEANS``)."""
 REQUESTS = frozenset(["i'd like", "i would like", "i'd love", "i would love", "i'd like to have",
                       "i would like to have", "can i have", "could i have", "may i have", "can i get", "could i get",
                       "can i please have", "could i please have", "may i please have", "i need", "i want",

@@ -52,6 +52,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.FRONTED_QUESTION,
     requests.WHERE,
     requests.WHERE_DID_RULE,
+    requests.SEEN_ASKED_RULE,
     requests.ASKED_WHERE,
     requests.STATE_QUESTION,
     requests.ENSURED_RULE,

@@ -35,6 +35,7 @@ from seal_cli.language.english import (
     QUESTION_WORDS,
     REQUEST_MEANS,
     REQUESTS,
+    SEEN_ASKED,
     STATE_ADVERBS,
     STATE_ASKERS,
     STATE_MEANS,
@@ -50,7 +51,7 @@ from seal_cli.language.english import (
 )
 from seal_cli.language.morphology import gerund_lemma, is_adjective, noun_lemma, participles, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import State, first_words, match_phrase, merge
+from seal_cli.language.state import CLOSED, State, first_words, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 
@@ -123,6 +124,23 @@ def _where_did(s: State, i: int) -> Match | None:
     end = words[i + 3].end
     return Match(4, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, WHERE_MEANS),),
                  expect=False, verb=WHERE_MEANS, using=False)
+
+
+def _seen_asked(s: State, i: int) -> Match | None:
+    words = s.words
+    auxiliaries, subjects, seeing = SEEN_ASKED
+    if i + 3 >= len(words) or WHERE_MEANS not in s.lexicon.units or words[i].lower not in auxiliaries or \
+            words[i + 1].lower not in subjects:
+        return None
+    for n in (2, 1):                                 # "come across" before "see"
+        if i + 2 + n > len(words):
+            continue
+        said = [verb_lemma(words[i + 2].lower), *(w.lower for w in words[i + 3:i + 2 + n])]
+        if " ".join(said) in seeing and i + 2 + n < len(words) and s.np_starts(i + 2 + n):
+            end = words[i + 1 + n].end
+            return Match(2 + n, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, WHERE_MEANS),),
+                         expect=False, verb=WHERE_MEANS, using=False)
+    return None
 
 
 def _where_asker(s: State, i: int) -> int:
@@ -699,8 +717,8 @@ def _let_know(s: State, i: int) -> Match | None:
     told = words[i + 1]
     if told.lower in DETERMINERS or told.lower in POSSESSIVES:
         return _let_phrase_know(s, i)
-    if not (told.lower in OBJECT_PRONOUNS and told.lower not in ("it", "this", "that") or capitalised(told)) or \
-            words[i + 2].lower != LET_KNOW[1]:
+    if words[i + 2].lower != LET_KNOW[1] or not (told.lower in OBJECT_PRONOUNS and told.lower not in ("it", "this", "that")
+                                                  or capitalised(told) or _one_told(told)):
         return None
     k = i + 3                                     # "let me know how many": "tell me how many", a unit of its own
     for unit in s.lexicon.units.get(QUESTION_MEANS, ()):
@@ -718,6 +736,12 @@ def _let_know(s: State, i: int) -> Match | None:
 
 
 _LET_PHRASE_WORDS = 12
+
+
+def _one_told(word: Word) -> bool:
+    """One word of letters, of no closed class, alone between "let" and "know" is who is told, whatever its
+    case: a name written in lower case ("let *maria* know"), a bare noun of kin ("let *grandpa* know")."""
+    return word.lower.isalpha() and word.lower not in CLOSED
 
 
 def _let_phrase_know(s: State, i: int) -> Match | None:
@@ -757,6 +781,11 @@ WHERE_DID_RULE = Rule("where did I leave", _where_did, (
     Example("where do we keep the batteries", "where do we keep", Tag.VERB),
     Example("Where can I find the sponge?", "Where can I find", Tag.VERB),
 ), WHERE_DID[0], "'where did I leave X', 'where do we keep X': find X")
+SEEN_ASKED_RULE = Rule("have you seen", _seen_asked, (
+    Example("have you seen my phone anywhere", "have you seen", Tag.VERB),
+    Example("Did you notice the keys in the hall?", "Did you notice", Tag.VERB),
+    Example("has anyone come across my glasses", "has anyone come across", Tag.VERB),
+), SEEN_ASKED[0], "'have you seen X', 'did you notice X': find X")
 WHETHER_IS_RULE = Rule("is X somewhere", _whether_is, (
     Example("Is Ben in the kitchen?", "Is", Tag.VERB),
     Example("are the apples in the fridge?", "are", Tag.VERB),
@@ -862,6 +891,8 @@ LET_KNOW_RULE = Rule("let me know", _let_know, (
     Example("let me know when the laundry is done", "let", Tag.VERB),
     Example("let me know how many bottles are in the fridge", "let me know how many", Tag.VERB),
     Example("let Amara know that her package arrived", "Amara", Tag.NAME),
+    Example("let maria know dinner is ready", "maria", Tag.NAME),
+    Example("let grandpa know that his taxi is here", "grandpa", Tag.NAME),
     Example("let the person at the chairs know what gesture the person at the sofa is making", "let", Tag.VERB),
 ), frozenset([LET_KNOW[0]]), "'let X know': tell X")
 KNOW_AFTER_LET = Rule("know after let X", _know_after_let, (
