@@ -135,7 +135,7 @@ def _seen_asked(s: State, i: int) -> Match | None:
     for n in (2, 1):                                 # "come across" before "see"
         if i + 2 + n > len(words):
             continue
-        said = [verb_lemma(words[i + 2].lower), *(w.lower for w in words[i + 3:i + 2 + n])]
+        said = [verb_lemma(words[i + 2].lower) or words[i + 2].lower, *(w.lower for w in words[i + 3:i + 2 + n])]
         if " ".join(said) in seeing and i + 2 + n < len(words) and s.np_starts(i + 2 + n):
             end = words[i + 1 + n].end
             return Match(2 + n, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, WHERE_MEANS),),
@@ -717,8 +717,8 @@ def _let_know(s: State, i: int) -> Match | None:
     told = words[i + 1]
     if told.lower in DETERMINERS or told.lower in POSSESSIVES:
         return _let_phrase_know(s, i)
-    if words[i + 2].lower != LET_KNOW[1] or not (told.lower in OBJECT_PRONOUNS and told.lower not in ("it", "this", "that")
-                                                  or capitalised(told) or _one_told(told)):
+    pronoun = told.lower in OBJECT_PRONOUNS and told.lower not in ("it", "this", "that")
+    if words[i + 2].lower != LET_KNOW[1] or not (pronoun or capitalised(told) or _one_told(told)):
         return None
     k = i + 3                                     # "let me know how many": "tell me how many", a unit of its own
     for unit in s.lexicon.units.get(QUESTION_MEANS, ()):
