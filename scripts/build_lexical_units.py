@@ -18,6 +18,12 @@ gets a lexical unit of frame F when, conservatively:
    adds a direction or an aspect, not another event ("turn over" is linked to Giving, but "turn"
    evokes no giving, and turning a mattress over is none).
 
+4. a verb whose main sense's object (ARG1) is the *goal* of its FrameNet frame and another argument its
+   theme ("fill.01": the container and the substance, FrameNet's Filling) takes the one library frame
+   with a theme and a goal whose FrameNet frame FrameNet relates to that one ("See also", "Inherits
+   from": Filling → Placing, so Place), with ``object: goal``: the parser reads "fill the glass with
+   water" as Place(theme water, goal glass).
+
 Each unit is written with its source (``propbank:give_out.06 -> FrameNet Giving``); the data
 itself is never copied. ``--check`` exits 1 when the shipped file differs from what the data gives.
 
@@ -48,6 +54,10 @@ sense but "pick out"'s first, and "take" and "pick" share only Pick: "select" an
 Picks. "lift up, pick up, elate" is the first sense of neither, and "bring off, carry off, manage"
 names no unit itself, so neither gives a unit.
 
+A unit said of the robot itself ("introduce *yourself* to", Greet) is said so too by each verb that shares
+its verb's first sense (rule 6: "introduce, present, acquaint", so "present yourself to" is a Greet, while
+"present" alone stays a Give).
+
 The parser then chooses among the frames a unit evokes by its elements, as it does for "move"
 (Go, Place). Each unit keeps its source (``wordnet:announce.v.01 < inform.v.01 (Tell)``).
 
@@ -62,7 +72,13 @@ ARG2 recipient in ``say-37.7-1``). A role signature (the set of roles in one cla
    theme → Give), and no other frame's verb does;
 2. it names a ``recipient``: who receives is what tells a transfer of a message (a topic) from one
    of a thing (a theme); a signature of an agent and a patient is done to anything, and stands for
-   no frame ("bite" would be a Slice).
+   no frame ("bite" would be a Slice). Or it names a ``destination`` (where the thing ends up:
+   ``put.01`` in ``put-9.1``, Place) while its object is not the destination ("fill the glass",
+   "paint the wall", ``fill-9.8``/``butter-9.9``, move nothing the object names), and the verb's main
+   sense is linked to the frame's FrameNet frame too: a destination is said by many verbs ("polish",
+   "stand", "sign" share Place's signature), so FrameNet must agree ("hang.01": ``put_spatial-9.2-1``
+   and FrameNet Placing, so Place; 12 verbs: cram, file, hang, immerse, implant, inject, jam, perch,
+   rub, smear, stack, tuck).
 
 The verb's main sense is its first roleset (PropBank numbers the commonest ``.01``). Each of its VerbNet
 classes whose signature stands for a frame is a vote; the verb takes the frame of the most votes when
@@ -86,6 +102,7 @@ import json
 import sys
 import xml.etree.ElementTree as ET
 from collections import Counter, defaultdict
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
@@ -95,6 +112,7 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from seal_cli.frames.library import Library  # noqa: E402
+from seal_cli.frames.model import Frame  # noqa: E402
 from seal_cli.frames.reading import load_library  # noqa: E402
 from seal_cli.language import english  # noqa: E402
 from seal_cli.language.morphology import in_verb_tables  # noqa: E402
@@ -194,6 +212,40 @@ def derive(rolesets: dict[str, list[dict[str, Any]]], library: Library) -> list[
             continue
         found.append((frame, lemma, source))
     return sorted(found)
+
+
+def derive_objects(rolesets: dict[str, list[dict[str, Any]]], relations: dict[str, dict[str, Any]],
+                   library: Library) -> list[tuple[str, str, str, str]]:
+    """(frame, unit, source, object) for every verb no frame lists whose main sense's object is the *goal*
+    of its FrameNet frame and another argument its theme ("fill.01": ARG1 the container, the Filling's
+    goal; ARG2 the substance, its theme), where FrameNet relates that frame ("See also", "Inherits from")
+    to exactly one library frame's FrameNet frame whose frame has a theme and a goal (Filling → Placing:
+    Place). The unit's object then fills the goal and "with" says the theme ("fill the glass with water")."""
+    by_framenet: dict[str, list[Frame]] = defaultdict(list)
+    for frame in library.frames:
+        if frame.framenet:
+            by_framenet[frame.framenet].append(frame)
+    found = []
+    for verb, group in sorted(rolesets.items()):
+        main = next((r for r in group if lemma_of(r) == verb), None)
+        if main is None or verb in library.by_unit:
+            continue
+        played: dict[str, set[tuple[str, str]]] = defaultdict(set)
+        for role in main.get("roles", ()):
+            for resource, cls, name in role.get("links", ()):
+                if resource == "FrameNet":
+                    played[str(role["n"])].add((cls, name.lower()))
+        for fn, name in sorted(played.get("1", ())):
+            if name != "goal" or not any((fn, "theme") in roles for n, roles in played.items() if n not in "01"):
+                continue
+            related = relations.get(fn, {}).get("relations", {})
+            near = {r for kind in ("See also", "Inherits from") for r in related.get(kind, ())}
+            takers = [f for r in sorted(near) for f in by_framenet.get(r, ())
+                      if {"theme", "goal"} <= {e.role for e in f.elements}]
+            if len(takers) == 1:
+                found.append((takers[0].name, verb, f"propbank:{main['id']} -> FrameNet {fn} (object: goal) -> "
+                                                    f"{takers[0].framenet}", "goal"))
+    return found
 
 
 class WordNet:
@@ -468,9 +520,11 @@ def derive_roles(rolesets: dict[str, list[dict[str, Any]]], signatures: Signatur
     return sorted(found)
 
 
-def render(found: list[tuple[str, str, str]], header: str = HEADER) -> str:
+def render(found: Sequence[tuple[str, ...]], header: str = HEADER) -> str:
     lines = [header, "lexical_units:"]
-    lines += [f"  - {{frame: {frame}, unit: {unit}, source: {json.dumps(source)}}}" for frame, unit, source in found]
+    for frame, unit, source, *said in found:
+        told = f", object: {said[0]}" if said else ""
+        lines.append(f"  - {{frame: {frame}, unit: {unit}, source: {json.dumps(source)}{told}}}")
     return "\n".join(lines) + "\n"
 
 
@@ -520,8 +574,15 @@ def main() -> int:
         if not path.is_file():
             print(f"error: {path}: no such file (the shared data folder is --data)", file=sys.stderr)
             return 1
+        relations = args.data / "lexicon" / "framenet_frames.json"
+        if not relations.is_file():
+            print(f"error: {relations}: no such file (the shared data folder is --data)", file=sys.stderr)
+            return 1
         # the PropBank units come first: the WordNet file must not count as listed already either
-        text = render(derive(json.loads(path.read_text()), library_without(args.out, WORDNET_OUT, ROLES_OUT)))
+        rolesets, own = json.loads(path.read_text()), library_without(args.out, WORDNET_OUT, ROLES_OUT)
+        found: list[tuple[str, ...]] = [*derive(rolesets, own),
+                                        *derive_objects(rolesets, json.loads(relations.read_text())["frames"], own)]
+        text = render(sorted(found))
     return write_or_check(args.out, text, check=args.check, made_from="the verb data",
                           summary=f"{text.count('frame:')} units")
 

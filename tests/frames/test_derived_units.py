@@ -27,6 +27,24 @@ def test_every_derived_unit_has_its_source_and_evokes_its_frame(library: Library
         assert entry["source"].startswith(f"propbank:{entry['unit'].replace(' ', '_')}.")
         assert " -> FrameNet " in entry["source"] or " -> VerbNet " in entry["source"]
         assert [f.name for f in library.evoked_by(entry["unit"])] == [entry["frame"]]
+    said = {e["unit"]: (e["frame"], e["object"]) for e in entries if "object" in e}
+    assert said == {"fill": ("Place", "goal")}        # FrameNet's Filling: the object is the goal
+
+
+@pytest.mark.parametrize(("command", "elements"), [
+    ("fill the glass with water", {"theme": "water", "goal": "the glass"}),
+    ("please fill the dog's bowl with fresh water", {"theme": "fresh water", "goal": "the dog's bowl"}),
+    ("fill the kettle", {"goal": "the kettle"}),
+])
+def test_a_unit_whose_object_is_its_goal_says_its_theme_with_with(library: Library, command: str,
+                                                                  elements: dict[str, str]) -> None:
+    (place,) = parse_command(command, library).frames
+    assert place.frame == "Place" and {r: e.text for r, e in place.elements.items() if not e.default} == elements
+
+
+def test_a_pronoun_object_of_fill_is_the_goal(library: Library) -> None:
+    pick, place = parse_command("fetch a bowl and fill it with cereal", library).frames
+    assert place.elements["goal"].refers_to == (0, "theme") and place.elements["theme"].text == "cereal"
 
 
 @pytest.mark.parametrize(("command", "frame", "unit"), [
@@ -60,6 +78,7 @@ def test_units_for_a_frame_of_another_file_join_it(tmp_path: Path) -> None:
     ("  - {frame: Give, unit: pass on}\n", "needs 'source'", 2),
     ("  - {frame: Give, unit: pass on, source: a, weight: 2}\n", "weight", 2),
     ("  - {frame: Give, unit: 'pass 2', source: a}\n", "one or more words of letters", 2),
+    ("  - {frame: Give, unit: pass on, source: a, object: goal}\n", "Give has no element 'goal' for its object", 2),
 ])
 def test_bad_units_are_problems_with_their_line(tmp_path: Path, units: str, words: str, line: int) -> None:
     (tmp_path / "give.yaml").write_text(FRAME)

@@ -259,10 +259,12 @@ def test_a_path_alone_is_going_there(library: Library) -> None:
     assert texts("to the greenhouse", library) == [("Go", {"goal": "the greenhouse"})]
     assert texts("Back to the porch, please.", library) == [("Go", {"goal": "the porch"})]
     assert [f for f, _ in frames("into the shed and then find the rake", library)] == ["Go", "Find"]
-    for text in ("To fill a bowl with water and put it in the cabinet.",     # an infinitive, no path
+    for text in ("To fold a towel and put it in the cabinet.",                # an infinitive, no path
                  "To the shed, carry the rake"):                             # a phrase said before a verb
         with pytest.raises(CommandError):
             parse_command(text, library)
+    assert [f for f, _ in frames("To fill a bowl with water and put it in the cabinet.", library)] == \
+        ["Place", "Place"]                                                   # "fill" is a verb now: its infinitive
 
 
 def test_a_thing_and_please_with_no_verb_is_asked_for(library: Library) -> None:
