@@ -17,6 +17,7 @@ from seal_cli.language.english import (
     DETERMINERS,
     END_MARKS,
     ENSURED,
+    FINITE,
     FOUND_OUT,
     HERE_WORDS,
     KNOW_WISHES,
@@ -41,6 +42,7 @@ from seal_cli.language.english import (
     STATE_MEANS,
     STATE_PARTICLES,
     SWITCHED_MEANS,
+    WH_WORDS,
     WHERE_ASKERS,
     WHERE_BE,
     WHERE_DID,
@@ -715,7 +717,8 @@ def _let_know(s: State, i: int) -> Match | None:
     if QUESTION_MEANS not in s.lexicon.units or i + 2 >= len(words):
         return None
     told = words[i + 1]
-    if told.lower in DETERMINERS or told.lower in POSSESSIVES:
+    if told.lower in DETERMINERS or told.lower in POSSESSIVES or \
+            words[i + 2].lower != LET_KNOW[1] and _one_told(told):      # "let mum and dad know"
         return _let_phrase_know(s, i)
     pronoun = told.lower in OBJECT_PRONOUNS and told.lower not in ("it", "this", "that")
     if words[i + 2].lower != LET_KNOW[1] or not (pronoun or capitalised(told) or _one_told(told)):
@@ -753,7 +756,8 @@ def _let_phrase_know(s: State, i: int) -> Match | None:
         if low == LET_KNOW[1]:
             return Match(1, (words[i].tagged(Tag.VERB, QUESTION_MEANS),), expect=False, verb=QUESTION_MEANS,
                          using=False)
-        if low in END_MARKS or low in (",", ";", "and", "then") or s.verb_at(k) is not None and \
+        joined = low == "and" and k + 1 < len(words) and s.verb_at(k + 1) is None      # "mum *and* dad"
+        if low in END_MARKS or low in (",", ";", "and", "then") and not joined or s.verb_at(k) is not None and \
                 words[k - 1].lower not in DETERMINERS:
             return None
     return None
@@ -763,7 +767,16 @@ def _know_after_let(s: State, i: int) -> Match | None:
     if s.verb_index < 0 or s.out[s.verb_index].lower != LET_KNOW[0] or \
             s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.LABEL):
         return None
+    k = i + 1                                     # "let mum and dad know *dinner is ready*": what is told
+    if s.speech and k < len(s.words) and s.words[k].lower not in _TOLD_LEADS and s.words[k].lower not in END_MARKS \
+            and s.verb_at(k) is None and any(w.lower in BE_WORDS or w.lower in FINITE for w in s.words[k:k + 4]):
+        said = s.emit(k, s.speech_end(k) - k, Tag.SAID)
+        return Match(1 + said.consumed, said.words)
     return Match(1)                               # "let the person at the chairs *know* what ...": dropped
+
+
+_TOLD_LEADS = WH_WORDS | {"that", "if", "whether", "how", ",", "about"}
+"""Words that begin what "let X know" tells in a way other rules read (a question, "that", whether ...)."""
 
 
 QUESTION = Rule("bare question", _question, (
@@ -893,10 +906,12 @@ LET_KNOW_RULE = Rule("let me know", _let_know, (
     Example("let Amara know that her package arrived", "Amara", Tag.NAME),
     Example("let maria know dinner is ready", "maria", Tag.NAME),
     Example("let grandpa know that his taxi is here", "grandpa", Tag.NAME),
+    Example("let mum and dad know dinner is ready", "let", Tag.VERB),
     Example("let the person at the chairs know what gesture the person at the sofa is making", "let", Tag.VERB),
 ), frozenset([LET_KNOW[0]]), "'let X know': tell X")
 KNOW_AFTER_LET = Rule("know after let X", _know_after_let, (
     Example("let the people in the hall know that dinner is ready", "know", ""),
+    Example("let mum and dad know dinner is ready", "dinner is ready", Tag.SAID),
 ), frozenset([LET_KNOW[1]]), "the 'know' of 'let the guests know ...', dropped: 'let' was read as 'tell'")
 
 
