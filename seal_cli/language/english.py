@@ -249,7 +249,8 @@ KNOW_WISHES = frozenset(["i'd like to know", "i would like to know", "i want to 
 shelf", "*do you know* how many cups are left"): it means "tell me ..." (``QUESTION_MEANS``)."""
 WHERE_ASKERS = frozenset(["tell me", "tell us", "show me", "show us", "any idea", "have you any idea",
                           "do you have any idea", "would you know", "do you happen to know",
-                          "let me know", "let us know", "know"]) | KNOW_WISHES
+                          "let me know", "let us know", "know", "did you see", "have you seen", "did you notice",
+                          "have you noticed"]) | KNOW_WISHES
 """A question about the robot's knowledge of where a thing is ("*do you know* where the tea spoon is?", "*can
 you tell me* where the keys are?", "*show me* where the remote is"): a request to find it and say where it is,
 read as "where is ..." ("find ...", ``WHERE_MEANS``); the verb of being after the thing is dropped

@@ -877,6 +877,7 @@ ASKED_WHERE = Rule("asked where", _asked_where, (
     Example("Do you know where the tea spoon is?", "Do you know where", Tag.VERB),
     Example("can you tell me where the keys are?", "tell me where", Tag.VERB),
     Example("Would you know where I left my phone?", "know where I left", Tag.VERB),
+    Example("did you see where I put my wallet", "did you see where I put", Tag.VERB),
     Example("would you mind showing me where the remote is", "showing me where", Tag.VERB),
 ), None, "'do you know / tell me where X is': find X")
 WHERE_BE_DROPPED = Rule("is, after asked where", _where_be, (

@@ -93,6 +93,7 @@ HER_TOLD = Rule("her told", _her_told, (
 TOLD = Rule("told without that", _told, (
     Example("tell mom I'm late", "I'm late", Tag.SAID),
     Example("tell the kids dinner is ready", "dinner is ready", Tag.SAID),
+    Example("tell grandma lunch is ready", "lunch is ready", Tag.SAID),
 ), None, "what is told without 'that', right after the person told")
 TOLD_HOW_TO = Rule("how to, told", _told_how_to, (
     Example("Explain to Robin how to get to the kitchen.", "how to get to the kitchen", Tag.SAID),
