@@ -105,6 +105,10 @@ SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "tha
              "ill": "i'll", "id": "i'd", "youll": "you'll", "weve": "we've", "theyve": "they've", "itll": "it'll"}
 """Texting spellings of function words ("turn the lights off *pls*", "open it *n* wipe it", "tell her
 *im* late"): read as the word they spell."""
+TAG_QUESTIONS = frozenset(["would you", "could you", "will you", "can you", "won't you", "wouldn't you",
+                           "would you please", "will you please", "could you please"])
+""""fetch me a spoon from the cabinet *would you*": a modal and "you" ending the request, with or without a
+comma before it, ask nothing more (the politeness of a tag question)."""
 VOCATIVES = frozenset(["dear", "dearie", "love", "darling", "sweetheart", "sweetie", "honey", "hun", "pet", "mate",
                        "buddy", "pal", "sir", "madam", "ma'am", "miss", "robot", "friend", "my dear", "my friend",
                        "my love", "old friend", "thanks", "thank you", "please", "would you", "could you",

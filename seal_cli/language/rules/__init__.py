@@ -103,6 +103,7 @@ INSIDE: tuple[Rule, ...] = (
     statements.REMARK_AFTER,
     clauses.COMMA_RELATIVE,
     clauses.SEPARATOR,
+    politeness.TAG_QUESTION,
     politeness.THANKS,
     clauses.UNJOINED,
     clauses.UNKNOWN_UNJOINED,
