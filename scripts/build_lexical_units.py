@@ -18,6 +18,12 @@ gets a lexical unit of frame F when, conservatively:
    adds a direction or an aspect, not another event ("turn over" is linked to Giving, but "turn"
    evokes no giving, and turning a mattress over is none).
 
+4. a verb whose main sense's object (ARG1) is the *goal* of its FrameNet frame and another argument its
+   theme ("fill.01": the container and the substance, FrameNet's Filling) takes the one library frame
+   with a theme and a goal whose FrameNet frame FrameNet relates to that one ("See also", "Inherits
+   from": Filling → Placing, so Place), with ``object: goal``: the parser reads "fill the glass with
+   water" as Place(theme water, goal glass).
+
 Each unit is written with its source (``propbank:give_out.06 -> FrameNet Giving``); the data
 itself is never copied. ``--check`` exits 1 when the shipped file differs from what the data gives.
 
@@ -48,6 +54,10 @@ sense but "pick out"'s first, and "take" and "pick" share only Pick: "select" an
 Picks. "lift up, pick up, elate" is the first sense of neither, and "bring off, carry off, manage"
 names no unit itself, so neither gives a unit.
 
+A unit said of the robot itself ("introduce *yourself* to", Greet) is said so too by each verb that shares
+its verb's first sense (rule 6: "introduce, present, acquaint", so "present yourself to" is a Greet, while
+"present" alone stays a Give).
+
 The parser then chooses among the frames a unit evokes by its elements, as it does for "move"
 (Go, Place). Each unit keeps its source (``wordnet:announce.v.01 < inform.v.01 (Tell)``).
 
@@ -62,7 +72,13 @@ ARG2 recipient in ``say-37.7-1``). A role signature (the set of roles in one cla
    theme → Give), and no other frame's verb does;
 2. it names a ``recipient``: who receives is what tells a transfer of a message (a topic) from one
    of a thing (a theme); a signature of an agent and a patient is done to anything, and stands for
-   no frame ("bite" would be a Slice).
+   no frame ("bite" would be a Slice). Or it names a ``destination`` (where the thing ends up:
+   ``put.01`` in ``put-9.1``, Place) while its object is not the destination ("fill the glass",
+   "paint the wall", ``fill-9.8``/``butter-9.9``, move nothing the object names), and the verb's main
+   sense is linked to the frame's FrameNet frame too: a destination is said by many verbs ("polish",
+   "stand", "sign" share Place's signature), so FrameNet must agree ("hang.01": ``put_spatial-9.2-1``
+   and FrameNet Placing, so Place; 12 verbs: cram, file, hang, immerse, implant, inject, jam, perch,
+   rub, smear, stack, tuck).
 
 The verb's main sense is its first roleset (PropBank numbers the commonest ``.01``). Each of its VerbNet
 classes whose signature stands for a frame is a vote; the verb takes the frame of the most votes when
@@ -86,6 +102,7 @@ import json
 import sys
 import xml.etree.ElementTree as ET
 from collections import Counter, defaultdict
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
@@ -95,6 +112,7 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from seal_cli.frames.library import Library  # noqa: E402
+from seal_cli.frames.model import Frame  # noqa: E402
 from seal_cli.frames.reading import load_library  # noqa: E402
 from seal_cli.language import english  # noqa: E402
 from seal_cli.language.morphology import in_verb_tables  # noqa: E402
@@ -194,6 +212,40 @@ def derive(rolesets: dict[str, list[dict[str, Any]]], library: Library) -> list[
             continue
         found.append((frame, lemma, source))
     return sorted(found)
+
+
+def derive_objects(rolesets: dict[str, list[dict[str, Any]]], relations: dict[str, dict[str, Any]],
+                   library: Library) -> list[tuple[str, str, str, str]]:
+    """(frame, unit, source, object) for every verb no frame lists whose main sense's object is the *goal*
+    of its FrameNet frame and another argument its theme ("fill.01": ARG1 the container, the Filling's
+    goal; ARG2 the substance, its theme), where FrameNet relates that frame ("See also", "Inherits from")
+    to exactly one library frame's FrameNet frame whose frame has a theme and a goal (Filling → Placing:
+    Place). The unit's object then fills the goal and "with" says the theme ("fill the glass with water")."""
+    by_framenet: dict[str, list[Frame]] = defaultdict(list)
+    for frame in library.frames:
+        if frame.framenet:
+            by_framenet[frame.framenet].append(frame)
+    found = []
+    for verb, group in sorted(rolesets.items()):
+        main = next((r for r in group if lemma_of(r) == verb), None)
+        if main is None or verb in library.by_unit:
+            continue
+        played: dict[str, set[tuple[str, str]]] = defaultdict(set)
+        for role in main.get("roles", ()):
+            for resource, cls, name in role.get("links", ()):
+                if resource == "FrameNet":
+                    played[str(role["n"])].add((cls, name.lower()))
+        for fn, name in sorted(played.get("1", ())):
+            if name != "goal" or not any((fn, "theme") in roles for n, roles in played.items() if n not in "01"):
+                continue
+            related = relations.get(fn, {}).get("relations", {})
+            near = {r for kind in ("See also", "Inherits from") for r in related.get(kind, ())}
+            takers = [f for r in sorted(near) for f in by_framenet.get(r, ())
+                      if {"theme", "goal"} <= {e.role for e in f.elements}]
+            if len(takers) == 1:
+                found.append((takers[0].name, verb, f"propbank:{main['id']} -> FrameNet {fn} (object: goal) -> "
+                                                    f"{takers[0].framenet}", "goal"))
+    return found
 
 
 class WordNet:
@@ -334,7 +386,28 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[str, str, s
                 found.append((frame, verb, f"wordnet:{wordnet.name(verb, sense)} {how} "
                                            f"{wordnet.name(lemma, synset)} ({lemma})"))
             break
-    return sorted(found)
+    return sorted(found + reflexive(wordnet, library, closed))
+
+
+def reflexive(wordnet: WordNet, library: Library, closed: frozenset[str]) -> list[tuple[str, str, str]]:
+    """Rule 6: a unit said of the robot itself ("introduce *yourself* to") is said so by each verb that shares
+    the first sense of its verb ("introduce, present, acquaint": "present yourself to" is a Greet), where that
+    sense is the other verb's too. The verb alone keeps its own frames ("present the cake to Ana" is a Give)."""
+    found = []
+    for unit, frames in library.by_unit.items():
+        words = unit.split()
+        if len(words) < 2 or words[1] != "yourself" or words[0] not in wordnet.senses:
+            continue
+        first = wordnet.senses[words[0]][1][0]
+        for lemma in wordnet.lemmas[first]:
+            said = " ".join((lemma, *words[1:]))
+            if lemma == words[0] or not lemma.isalpha() or lemma in closed or not in_verb_tables(lemma) or \
+                    said in library.by_unit:
+                continue
+            for frame in frames:
+                found.append((frame.name, said, f"wordnet:{wordnet.name(lemma, first)} = "
+                                                f"{wordnet.name(words[0], first)} ({unit})"))
+    return found
 
 
 Signatures = dict[str, dict[str, frozenset[str]]]
@@ -360,11 +433,32 @@ def read_propbank(folder: Path) -> tuple[dict[str, list[dict[str, Any]]], Signat
                         for link in roleset.iter("lexlink")]
             rolesets.setdefault(path.stem, []).append({"id": ident, "aliases": aliases, "lexlinks": lexlinks})
             found: dict[str, set[str]] = defaultdict(set)
-            for link in roleset.iter("rolelink"):
-                if link.get("resource") == "VerbNet" and link.text and link.text.strip():
-                    found[str(link.get("class"))].add(link.text.strip().lower())
+            for role in roleset.iter("role"):
+                for link in role.iter("rolelink"):
+                    if link.get("resource") == "VerbNet" and link.text and link.text.strip():
+                        played = link.text.strip().lower()
+                        found[str(link.get("class"))].add(played)
+                        if role.get("n") == "1" and played == "destination":   # the object is where it goes
+                            found[str(link.get("class"))].add(OBJECT_DESTINATION)
             signatures[ident] = {vn: frozenset(roles) for vn, roles in found.items()}
     return rolesets, signatures
+
+
+# The thematic roles that say where a transfer ends, each with the frame role that stands for it: who
+# receives (a message or a thing), or where the thing ends up ("hang.01" in ``put_spatial-9.2-1``: agent,
+# theme, destination, as ``put.01`` in ``put-9.1``).
+ENDPOINTS = {"recipient": "recipient", "destination": "goal"}
+# Marks a class in which the direct object (ARG1) is the destination: "fill the glass with water",
+# "butter the bread", "paint the wall" (``fill-9.8``, ``butter-9.9``) say where something goes, but their
+# object is not what moves, so they are no Place of what they say.
+OBJECT_DESTINATION = "object=destination"
+
+
+def ends(roles: frozenset[str]) -> set[str]:
+    """The roles of a signature that say where a transfer ends (a destination only while the object is
+    not it)."""
+    found = roles & ENDPOINTS.keys()
+    return found - {"destination"} if OBJECT_DESTINATION in roles else found
 
 
 def family(vn: str) -> str:
@@ -396,8 +490,8 @@ def derive_roles(rolesets: dict[str, list[dict[str, Any]]], signatures: Signatur
             listed = {f.name for f in own.by_unit.get(lemma, ())}
             frames = {f for fn in links(roleset, "FrameNet") for f in by_framenet.get(fn, set()) & listed}
             for vn, roles in signatures.get(str(roleset["id"]), {}).items():
-                takers = {f for f in frames if "recipient" in own.by_name[f].roles}
-                if "recipient" in roles and takers and family(vn):
+                takers = {f for f in frames if any(ENDPOINTS[end] in own.by_name[f].roles for end in ends(roles))}
+                if takers and family(vn):
                     stands[(family(vn), roles)] |= takers
                     example.setdefault((family(vn), roles), str(roleset["id"]))
     closed = closed_class_words()
@@ -408,13 +502,17 @@ def derive_roles(rolesets: dict[str, list[dict[str, Any]]], signatures: Signatur
             continue
         votes: Counter[str] = Counter()
         why: dict[str, str] = {}
+        framenet = set(links(roleset, "FrameNet"))
         for vn, roles in sorted(signatures.get(str(roleset["id"]), {}).items()):
             key = (family(vn), roles)
             if len(stands.get(key, ())) == 1:
                 frame = next(iter(stands[key]))
+                if "recipient" not in ends(roles) and own.by_name[frame].framenet not in framenet:
+                    continue      # a destination alone is said by many verbs: FrameNet must name the frame too
                 votes[frame] += 1
-                why.setdefault(frame, f"propbank:{roleset['id']} -> VerbNet {vn} ({', '.join(sorted(roles))}: "
-                                      f"as {example[key]})")
+                agrees = "" if "recipient" in ends(roles) else f", FrameNet {own.by_name[frame].framenet}"
+                shown = ", ".join(sorted(roles - {OBJECT_DESTINATION}))
+                why.setdefault(frame, f"propbank:{roleset['id']} -> VerbNet {vn} ({shown}: as {example[key]}{agrees})")
         ranked = votes.most_common(2)
         if ranked and (len(ranked) == 1 or ranked[0][1] > ranked[1][1]):
             frame = ranked[0][0]
@@ -422,9 +520,11 @@ def derive_roles(rolesets: dict[str, list[dict[str, Any]]], signatures: Signatur
     return sorted(found)
 
 
-def render(found: list[tuple[str, str, str]], header: str = HEADER) -> str:
+def render(found: Sequence[tuple[str, ...]], header: str = HEADER) -> str:
     lines = [header, "lexical_units:"]
-    lines += [f"  - {{frame: {frame}, unit: {unit}, source: {json.dumps(source)}}}" for frame, unit, source in found]
+    for frame, unit, source, *said in found:
+        told = f", object: {said[0]}" if said else ""
+        lines.append(f"  - {{frame: {frame}, unit: {unit}, source: {json.dumps(source)}{told}}}")
     return "\n".join(lines) + "\n"
 
 
@@ -474,8 +574,15 @@ def main() -> int:
         if not path.is_file():
             print(f"error: {path}: no such file (the shared data folder is --data)", file=sys.stderr)
             return 1
+        relations = args.data / "lexicon" / "framenet_frames.json"
+        if not relations.is_file():
+            print(f"error: {relations}: no such file (the shared data folder is --data)", file=sys.stderr)
+            return 1
         # the PropBank units come first: the WordNet file must not count as listed already either
-        text = render(derive(json.loads(path.read_text()), library_without(args.out, WORDNET_OUT, ROLES_OUT)))
+        rolesets, own = json.loads(path.read_text()), library_without(args.out, WORDNET_OUT, ROLES_OUT)
+        found: list[tuple[str, ...]] = [*derive(rolesets, own),
+                                        *derive_objects(rolesets, json.loads(relations.read_text())["frames"], own)]
+        text = render(sorted(found))
     return write_or_check(args.out, text, check=args.check, made_from="the verb data",
                           summary=f"{text.count('frame:')} units")
 

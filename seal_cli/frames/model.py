@@ -141,15 +141,20 @@ def normalize_unit(text: str) -> str:
 
 @dataclass(frozen=True)
 class LexicalUnit:
-    """A verb lemma, possibly of several words ("pick up", "look for"), that evokes a frame."""
+    """A verb lemma, possibly of several words ("pick up", "look for"), that evokes a frame. ``object``:
+    the element its direct object fills when that is not the frame's first ("fill the glass with water":
+    the glass is where the water goes, FrameNet's Filling), its theme then said with "with"."""
 
     text: str
     where: Where | None = field(default=None, compare=False, repr=False)
+    object: str | None = field(default=None, compare=False)   # only added units say it: dumps leave it out
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "text", normalize_unit(self.text))
         if not self.text or not all(re.fullmatch(r"[a-z][a-z'-]*", w) for w in self.words):
             raise SealError(f"lexical unit {self.text!r} must be one or more words of letters", self.where)
+        if self.object is not None:
+            _check_identifier("object", self.object, self.where)
 
     @property
     def words(self) -> tuple[str, ...]:

@@ -137,6 +137,9 @@ def _with_units(frames: list[Frame], units: Sequence[tuple[str, LexicalUnit]],
                 if unit.text in own:
                     problems.append(SealError(f"lexical unit {unit.text!r} is already one of {frame.name}'s",
                                               unit.where))
+                elif unit.object is not None and unit.object not in {e.role for e in frame.elements}:
+                    problems.append(SealError(f"lexical unit {unit.text!r}: {frame.name} has no element "
+                                              f"{unit.object!r} for its object", unit.where))
                 else:
                     new.append(unit)
                     own.add(unit.text)

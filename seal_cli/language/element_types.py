@@ -21,7 +21,16 @@ class Types:
         self._relations: dict[str, Any] = {}
         self._states: dict[str, bool] = {}
         self._evoked: dict[str, tuple[Frame, ...]] = {}
+        self._objects: dict[str, str | None] = {}
         self._library = library
+
+    def object_role(self, unit: str) -> str | None:
+        """The element the unit's direct object fills in every frame it evokes, when its entry names one
+        (``object: goal`` of "fill"), else None: the frame's first element, as for every other verb."""
+        if unit not in self._objects:
+            said = {u.object for f in self.evoked_by(unit) for u in f.lexical_units if u.text == unit}
+            self._objects[unit] = next(iter(said)) if len(said) == 1 else None
+        return self._objects[unit]
 
     def evoked_by(self, unit: str) -> tuple[Frame, ...]:
         """The frames a lexical unit evokes (:meth:`Library.evoked_by`, memoised by unit)."""

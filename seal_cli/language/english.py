@@ -105,6 +105,10 @@ SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "tha
              "ill": "i'll", "id": "i'd", "youll": "you'll", "weve": "we've", "theyve": "they've", "itll": "it'll"}
 """Texting spellings of function words ("turn the lights off *pls*", "open it *n* wipe it", "tell her
 *im* late"): read as the word they spell."""
+TAG_QUESTIONS = frozenset(["would you", "could you", "will you", "can you", "won't you", "wouldn't you",
+                           "would you please", "will you please", "could you please"])
+""""fetch me a spoon from the cabinet *would you*": a modal and "you" ending the request, with or without a
+comma before it, ask nothing more (the politeness of a tag question)."""
 VOCATIVES = frozenset(["dear", "dearie", "love", "darling", "sweetheart", "sweetie", "honey", "hun", "pet", "mate",
                        "buddy", "pal", "sir", "madam", "ma'am", "miss", "robot", "friend", "my dear", "my friend",
                        "my love", "old friend", "thanks", "thank you", "please", "would you", "could you",
@@ -222,6 +226,11 @@ WHERE_DID = (frozenset(["where"]), frozenset(["did", "do", "does", "have", "has"
              frozenset(["i", "you", "we", "they", "he", "she"]))
 """"*Where did I leave* my glasses?", "*where do we keep* the batteries", "*where can I find* the sponge": where,
 an auxiliary or a modal, a subject and any verb, then what to find."""
+SEEN_ASKED = (frozenset(["have", "has", "did"]), frozenset(["you", "anyone", "anybody", "someone", "somebody"]),
+              frozenset(["see", "notice", "spot", "find", "come across"]))
+""""*Have you seen* my phone?", "*did you notice* the keys anywhere?", "*has anyone found* my glasses?": a
+question whether the thing was seen (an auxiliary of the past, a subject, a verb of perceiving or finding) asks
+to find it (``WHERE_MEANS``)."""
 REQUESTS = frozenset(["i'd like", "i would like", "i'd love", "i would love", "i'd like to have",
                       "i would like to have", "can i have", "could i have", "may i have", "can i get", "could i get",
                       "can i please have", "could i please have", "may i please have", "i need", "i want",
@@ -244,7 +253,8 @@ KNOW_WISHES = frozenset(["i'd like to know", "i would like to know", "i want to 
 shelf", "*do you know* how many cups are left"): it means "tell me ..." (``QUESTION_MEANS``)."""
 WHERE_ASKERS = frozenset(["tell me", "tell us", "show me", "show us", "any idea", "have you any idea",
                           "do you have any idea", "would you know", "do you happen to know",
-                          "let me know", "let us know", "know"]) | KNOW_WISHES
+                          "let me know", "let us know", "know", "did you see", "have you seen", "did you notice",
+                          "have you noticed"]) | KNOW_WISHES
 """A question about the robot's knowledge of where a thing is ("*do you know* where the tea spoon is?", "*can
 you tell me* where the keys are?", "*show me* where the remote is"): a request to find it and say where it is,
 read as "where is ..." ("find ...", ``WHERE_MEANS``); the verb of being after the thing is dropped

@@ -19,7 +19,7 @@ from seal_cli.language.grounding import PIECES, PORTIONS
 from seal_cli.language.lexicon import Word, noun_lemma
 from seal_cli.language.morphology import is_gradable
 from seal_cli.language.reference import PLACES, Reference
-from seal_cli.language.roles import PUT_IN, TO, Roles
+from seal_cli.language.roles import PUT_IN, ROLE_PREPOSITIONS, TO, Roles
 from seal_cli.language.syntax import NP, PP, Clause
 from seal_cli.language.values import Evoked, Parse, Phrase
 
@@ -61,6 +61,9 @@ class Evoker:
         self.clause_frames = len(self.frames)
         unit = clause.unit or str(clause.verb.info)
         frames = self.types.evoked_by(unit)
+        role = self.types.object_role(unit)
+        if role is not None:
+            self.object_as(role, clause)
         used = [x for x in clause.items if isinstance(x, PP) and x.lead and x.prep == "with"]
         if used and not any("instrument" in self.types.roles(f) for f in frames):
             clause.held += [x.np for x in used]             # "use a card to turn on the lamp": hold it
@@ -76,6 +79,30 @@ class Evoker:
         _, frame, roles, attached = self.showing(best, clause)
         self.first_into(frame, roles, attached)
         self.emit(frame, unit, clause, roles, attached)
+
+    @staticmethod
+    def object_as(role: str, clause: Clause) -> None:
+        """A unit whose direct object fills another element than the frame's first ("fill *the glass* with
+        water": the goal, FrameNet's Filling): the object is said as that element's phrase ("into the
+        glass"), and what comes with "with" — a phrase of the verb, or the object's content ("the glass
+        with water") — as the object ("pour water into the glass")."""
+        prep = ROLE_PREPOSITIONS.get(role)
+        with_pp = next((x for x in clause.items if isinstance(x, PP) and x.prep == "with" and not x.lead), None)
+        if prep is None or not clause.objects:
+            if prep is not None and with_pp is not None:          # "fill with water": the goal left unsaid
+                clause.items = [x for x in clause.items if x is not with_pp]
+                clause.objects = [with_pp.np]
+            return
+        said = clause.objects[0]
+        if with_pp is not None:
+            clause.items = [x for x in clause.items if x is not with_pp]
+            theme: NP | None = with_pp.np
+        elif len(said.contents) == 1:
+            theme, said.contents = said.contents[0], []
+        else:
+            theme = None
+        clause.objects = [theme, *clause.objects[1:]] if theme is not None else clause.objects[1:]
+        clause.items = [PP(prep, said, said.start), *clause.items]
 
     def choose(self, unit: str, frames: Sequence[Frame], clause: Clause) -> tuple[str, Fit]:
         """The frame of the verb that takes the clause best (:meth:`best_fit`), with the lexical unit
@@ -318,7 +345,10 @@ class Evoker:
             if np is not None:
                 elements[element.role] = self.phrase(np, frame, element.role)
         first = frame.elements[0] if frame.elements else None
-        if first is not None and first.role not in elements and self.frames and frame.needs_held():
+        said = self.types.object_role(unit)            # "fill [it] with water": the goal is what is unsaid
+        if said is not None:
+            first = next((e for e in frame.elements if e.role == said), first)
+        if first is not None and first.role not in elements and self.frames and (frame.needs_held() or said):
             implicit = self.reference.implicit(frame, first.role)
             if implicit is not None:
                 elements = {first.role: implicit, **elements}

@@ -149,7 +149,8 @@ class Reference:
         if relation is None or relation.args[1] not in last.elements:
             return None
         goal = last.elements[relation.args[1]]
-        if goal.default or goal.kind != "thing" or goal.refers_to is not None or \
+        if goal.default or goal.kind != "thing" or goal.refers_to is not None and \
+                self.types.object_role(last.lexical_unit) != relation.args[1] or \
                 self.types.is_a(goal.cls or goal.head, "container") is not True:
             return None
         return len(self.frames) - 1, relation.args[1], "thing"

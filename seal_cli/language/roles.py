@@ -24,13 +24,17 @@ if TYPE_CHECKING:
     from seal_cli.language.reference import Reference
     from seal_cli.language.values import Evoked
 
-__all__ = ["ATTACHABLE", "FROM", "LOCATIVE", "PREPOSITION_ROLES", "PUT_IN", "TO", "Assignment", "Roles", "Sense"]
+__all__ = ["ATTACHABLE", "FROM", "LOCATIVE", "PREPOSITION_ROLES", "PUT_IN", "ROLE_PREPOSITIONS", "TO", "Assignment",
+           "Roles", "Sense"]
 
 
 TO = ("to", "into", "onto")
 FROM = ("from", "out of", "off")
 ATTACHABLE = LOCATIVE + ("with", "without", "about", "for", "via", "of")
 """Prepositions whose phrase may describe the noun before it when it fills no element."""
+ROLE_PREPOSITIONS = {"goal": "into", "source": "from", "recipient": "to", "instrument": "with", "ground": "in"}
+"""The preposition that says each role, for a phrase said as a verb's object whose unit gives it that role
+("fill *the glass* with water" is said as "... *into* the glass")."""
 PUT_IN = ("in", "on", "inside", "into", "onto")
 """Prepositions that say a thing is put in or on another."""
 

@@ -57,7 +57,7 @@ from seal_cli.language.english import (
     WH_WORDS,
     WHERE_QUESTIONS,
 )
-from seal_cli.language.morphology import gerund_lemma, is_adjective, is_adverb, is_plural, verb_lemma
+from seal_cli.language.morphology import gerund_lemma, is_adjective, is_adverb, is_plural, noun_lemma, verb_lemma
 from seal_cli.language.rule import Match
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
@@ -375,10 +375,13 @@ class State:
 
     def bare_subject(self, i: int) -> bool:
         """Whether a statement whose subject is a bare noun starts at ``i`` after a plural person noun
-        ("tell the kids *dinner is ready*"): one or two lowercase open words, then "is"/"has"/..."""
+        ("tell the kids *dinner is ready*") or a person noun said alone after the verb ("tell grandma *lunch
+        is ready*", a noun of kin used as a name): one or two lowercase open words, then "is"/"has"/..."""
         words, out = self.words, self.out
-        if len(out) < 2 or out[-1].tag != "WORD" or not is_plural(out[-1].lower) or \
-                out[-2].tag not in ("DET", "POSS", "NUM", "WORD"):
+        alone = len(out) >= 2 and out[-1].tag == "WORD" and out[-2] is out[self.verb_index] and \
+            noun_lemma(out[-1].lower) in self.lexicon.people        # "tell grandma *lunch is ready*"
+        if not alone and (len(out) < 2 or out[-1].tag != "WORD" or not is_plural(out[-1].lower) or
+                          out[-2].tag not in ("DET", "POSS", "NUM", "WORD")):
             return False
         for k in range(i, min(i + 2, len(words) - 1)):
             low = words[k].lower

@@ -140,7 +140,8 @@ def test_a_greeting_before_a_question(library: Library) -> None:
 
 SETS = sorted([*(Path(__file__).parents[1] / "data").glob("wording_questions*.jsonl"),
                *(Path(__file__).parents[1] / "data").glob("wording_paraphrases*.jsonl"),
-               *(Path(__file__).parents[1] / "data").glob("wording_fragments*.jsonl")])
+               *(Path(__file__).parents[1] / "data").glob("wording_fragments*.jsonl"),
+               *(Path(__file__).parents[1] / "data").glob("wording_home*.jsonl")])
 SCORER = Path(__file__).resolve().parents[2].parent / "shared" / "eval" / "score_parse.py"
 
 
@@ -258,10 +259,12 @@ def test_a_path_alone_is_going_there(library: Library) -> None:
     assert texts("to the greenhouse", library) == [("Go", {"goal": "the greenhouse"})]
     assert texts("Back to the porch, please.", library) == [("Go", {"goal": "the porch"})]
     assert [f for f, _ in frames("into the shed and then find the rake", library)] == ["Go", "Find"]
-    for text in ("To fill a bowl with water and put it in the cabinet.",     # an infinitive, no path
+    for text in ("To fold a towel and put it in the cabinet.",                # an infinitive, no path
                  "To the shed, carry the rake"):                             # a phrase said before a verb
         with pytest.raises(CommandError):
             parse_command(text, library)
+    assert [f for f, _ in frames("To fill a bowl with water and put it in the cabinet.", library)] == \
+        ["Place", "Place"]                                                   # "fill" is a verb now: its infinitive
 
 
 def test_a_thing_and_please_with_no_verb_is_asked_for(library: Library) -> None:
@@ -409,8 +412,9 @@ def test_a_thing_sought_is_sought_as_it_is_and_us_is_the_speaker(library: Librar
 
 
 def test_a_verb_no_frame_lists_before_its_object_is_reported_not_lost(library: Library) -> None:
-    with pytest.raises(CommandError, match="unknown verb 'hang'"):          # it was the theme "the towel hang"
-        parse_command("grab the coat hang it in the hall", library)
+    with pytest.raises(CommandError, match="unknown verb 'fold'"):          # it was the theme "the towel fold"
+        parse_command("grab the coat fold it in the hall", library)
+    assert [f for f, _ in frames("grab the coat hang it in the hall", library)] == ["Pick", "Place"]  # a verb now
     with pytest.raises(CommandError, match="unknown verb 'wake'"):          # it was the goal "the den to wake"
         parse_command("go to the den to wake up Omar", library)
     assert texts("take the mug to sink", library) == [("Bring", {"theme": "the mug", "goal": "sink"})]

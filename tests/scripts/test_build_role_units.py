@@ -35,7 +35,7 @@ def frameset(*rolesets: str) -> str:
 VN = {  # VerbNet class names hold dashes, which a keyword argument cannot: short names, replaced in the files
     "give": "give-13.1", "tell": "transfer_mesg-37.1.1", "fulfil": "fulfilling-13.4.1", "say": "say-37.7-1",
     "confess": "confess-37.10", "appear": "reflexive_appearance-48.1.2", "sound": "animal_sounds-38",
-    "cut": "cut-21.1-1",
+    "cut": "cut-21.1-1", "put": "put-9.1", "spatial": "put_spatial-9.2-1", "fill": "fill-9.8",
 }
 
 
@@ -50,6 +50,10 @@ def tiny_propbank(folder: Path) -> Path:
         "bleat": roleset("bleat.01", "", sound="agent theme recipient"),   # Give's roles, another Levin class
         "snip": roleset("snip.01", "", cut="agent patient"),               # no recipient: stands for nothing
         "cable": roleset("cable.01", "", tell="agent topic recipient"),    # Tell's roles, but mostly a noun
+        "put": roleset("put.01", "Placing", put="agent theme destination"),
+        "drape": roleset("drape.01", "Placing", spatial="agent theme destination"),   # Place by where it goes
+        "prop": roleset("prop.01", "", spatial="agent theme destination"),   # where, but FrameNet says no Placing
+        "stuff": roleset("stuff.01", "Placing", fill="agent destination theme"),   # its object is where: no Place
     }
     for name, text in files.items():
         for short, vn in VN.items():
@@ -59,7 +63,7 @@ def tiny_propbank(folder: Path) -> Path:
     return folder
 
 
-VERBS = ["proffer", "blurt", "proclaim", "bleat", "snip", "cable", "give", "tell"]
+VERBS = ["proffer", "blurt", "proclaim", "bleat", "snip", "cable", "give", "tell", "put", "drape", "prop", "stuff"]
 
 
 def tiny_wordnet(folder: Path) -> Path:
@@ -90,9 +94,11 @@ def test_a_verb_takes_the_frame_whose_verbs_have_its_roles(tmp_path: Path) -> No
     assert "broken.xml:1:" in done.stderr and "skipped" in done.stderr
     units = {e["unit"]: e for e in yaml.safe_load(out.read_text())["lexical_units"]}
     # proclaim: a vote each (a tie); bleat: Give's roles in a class of sounds; snip: nobody receives;
-    # cable: mostly a noun
-    assert sorted(units) == ["blurt", "proffer"]
-    assert (units["proffer"]["frame"], units["blurt"]["frame"]) == ("Give", "Tell")
+    # cable: mostly a noun; prop: a destination, but no FrameNet Placing; stuff: its object is the destination
+    assert sorted(units) == ["blurt", "drape", "proffer"]
+    assert (units["proffer"]["frame"], units["blurt"]["frame"], units["drape"]["frame"]) == ("Give", "Tell", "Place")
+    assert units["drape"]["source"] == ("propbank:drape.01 -> VerbNet put_spatial-9.2-1 "
+                                        "(agent, destination, theme: as put.01, FrameNet Placing)")
     assert units["proffer"]["source"] == ("propbank:proffer.01 -> VerbNet fulfilling-13.4.1 "
                                           "(agent, recipient, theme: as give.01)")
     assert run("--propbank", str(frames), "--wordnet", wordnet, "--out", str(out), "--check").returncode == 0

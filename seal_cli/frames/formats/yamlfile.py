@@ -40,6 +40,8 @@ FRAME_KEYS = ("frame", "description", "framenet", "lexical_units", "elements", "
 ELEMENT_KEYS = ("type", "default")
 TOP_KEYS = ("frames", "categories", "world", "synonyms", "lexical_units")
 UNIT_KEYS = ("frame", "unit", "source")
+UNIT_OPTIONAL = ("object",)
+"""An added unit may say which element its direct object fills (``object: goal``)."""
 
 T = TypeVar("T")
 
@@ -116,7 +118,8 @@ class _Reader(NodeReader):
         """Lexical units added to frames defined elsewhere, each with where it comes from
         (``framelib/derived_units.yaml``: ``{frame: Place, unit: relocate, source: ...}``)."""
         for item in self.items(node, "lexical_units"):
-            found = {key: self.string(value, key) for key, _, value in self.pairs(item, "a lexical unit", UNIT_KEYS)}
+            found = {key: self.string(value, key)
+                     for key, _, value in self.pairs(item, "a lexical unit", UNIT_KEYS + UNIT_OPTIONAL)}
             if not isinstance(item, yaml.MappingNode):
                 continue
             missing = [key for key in UNIT_KEYS if not found.get(key)]
@@ -124,7 +127,9 @@ class _Reader(NodeReader):
                 self.problem(f"a lexical unit needs {', '.join(repr(k) for k in missing)}: "
                              "{frame: Name, unit: words, source: where it comes from}", item)
                 continue
-            unit = self.build(functools.partial(LexicalUnit, str(found["unit"]), self.where(item)), item)
+            said = found.get("object")
+            unit = self.build(functools.partial(LexicalUnit, str(found["unit"]), self.where(item),
+                                                str(said) if said else None), item)
             if unit is not None:
                 self.contents.units.append((str(found["frame"]), unit))
 

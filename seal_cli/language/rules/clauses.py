@@ -169,12 +169,12 @@ def _unjoined(s: State, i: int) -> Match | None:
 
 
 _NO_NOUN_AFTER = frozenset(["it", "them", "him", "her"])
-"""Object pronouns, which never go on a noun phrase: a verb's object ("grab the towel *hang it* on the rack")."""
+"""Object pronouns, which never go on a noun phrase: a verb's object ("grab the towel *fold it* on the rack")."""
 
 
 def _unknown_unjoined(s: State, i: int) -> Match | None:
     """A verb's base form that no frame lists, right after a phrase and before an object pronoun ("grab the towel
-    *hang it* on the rack"), or after "to" and before its object ("head to the bedroom *to wake up* Jonas"): a clause
+    *fold it* on the rack"), or after "to" and before its object ("head to the bedroom *to wake up* Jonas"): a clause
     of its own, so its unknown verb is reported, not read as a noun of the phrase (the verb was lost)."""
     words = s.words
     to = words[i].lower == "to"
@@ -203,6 +203,6 @@ UNJOINED = Rule("clause without a joint", _unjoined, (
     Example("put the milk in the fridge go to the kitchen", "go", Tag.VERB),
 ), None, "a verb of the library and its object right after a phrase: a clause of its own, not a noun")
 UNKNOWN_UNJOINED = Rule("unknown verb without a joint", _unknown_unjoined, (
-    Example("grab the towel hang it on the rack", "hang", Tag.WORD),
+    Example("grab the towel fold it on the rack", "fold", Tag.WORD),
     Example("head to the bedroom to wake up Jonas", "to", Tag.SEP),
 ), None, "a verb no frame lists before its object, after a phrase: a clause of its own")

@@ -3,7 +3,7 @@
 
 from __future__ import annotations
 
-from seal_cli.language.english import END_MARKS, POLITE
+from seal_cli.language.english import END_MARKS, POLITE, TAG_QUESTIONS
 from seal_cli.language.morphology import is_adverb, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import FORMULA_FIRST, State, match_phrase, merge
@@ -86,6 +86,14 @@ def _thanks(s: State, i: int) -> Match | None:
     return None
 
 
+def _tag_question(s: State, i: int) -> Match | None:
+    words = s.words
+    n = 0 if s.expect_verb else match_phrase(words, i, TAG_QUESTIONS)
+    if n and all(w.lower in END_MARKS for w in words[i + n:]):
+        return Match(n, (merge(words, i, n, Tag.POLITE),))        # "fetch me a spoon from the cabinet *would you*"
+    return None
+
+
 FORMULA = Rule("politeness formula", _formula, (
     Example("When you get a chance, could you close the window?", "When you get a chance,", Tag.POLITE),
     Example("Hey, when you get a sec, could you grab me a soda?", "when you get a sec,", Tag.POLITE),
@@ -115,6 +123,10 @@ PLEASE_INSIDE = Rule("please inside a clause", _please_inside, (
     Example("bring me, please, a glass of juice", "please", ""),
     Example("turn the heater on please, I'm shivering", "please", ""),
 ), frozenset(["please"]), "politeness inside a clause, and a remark after it")
+TAG_QUESTION = Rule("tag question", _tag_question, (
+    Example("fetch me a spoon from the cabinet would you", "would you", Tag.POLITE),
+    Example("close the door will you?", "will you", Tag.POLITE),
+), frozenset(w.split()[0] for w in TAG_QUESTIONS), "'..., would you?' ending a request: politeness")
 THANKS = Rule("thanks at the end", _thanks, (
     Example("bring me the cup thank you.", "thank you", Tag.POLITE),
 ), frozenset(["please", "thanks", "thank"]), "'please', 'thanks', 'thank you' ending the command")

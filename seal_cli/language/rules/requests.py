@@ -17,6 +17,7 @@ from seal_cli.language.english import (
     DETERMINERS,
     END_MARKS,
     ENSURED,
+    FINITE,
     FOUND_OUT,
     HERE_WORDS,
     KNOW_WISHES,
@@ -35,11 +36,13 @@ from seal_cli.language.english import (
     QUESTION_WORDS,
     REQUEST_MEANS,
     REQUESTS,
+    SEEN_ASKED,
     STATE_ADVERBS,
     STATE_ASKERS,
     STATE_MEANS,
     STATE_PARTICLES,
     SWITCHED_MEANS,
+    WH_WORDS,
     WHERE_ASKERS,
     WHERE_BE,
     WHERE_DID,
@@ -50,7 +53,7 @@ from seal_cli.language.english import (
 )
 from seal_cli.language.morphology import gerund_lemma, is_adjective, noun_lemma, participles, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import State, first_words, match_phrase, merge
+from seal_cli.language.state import CLOSED, State, first_words, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 
@@ -123,6 +126,23 @@ def _where_did(s: State, i: int) -> Match | None:
     end = words[i + 3].end
     return Match(4, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, WHERE_MEANS),),
                  expect=False, verb=WHERE_MEANS, using=False)
+
+
+def _seen_asked(s: State, i: int) -> Match | None:
+    words = s.words
+    auxiliaries, subjects, seeing = SEEN_ASKED
+    if i + 3 >= len(words) or WHERE_MEANS not in s.lexicon.units or words[i].lower not in auxiliaries or \
+            words[i + 1].lower not in subjects:
+        return None
+    for n in (2, 1):                                 # "come across" before "see"
+        if i + 2 + n > len(words):
+            continue
+        said = [verb_lemma(words[i + 2].lower) or words[i + 2].lower, *(w.lower for w in words[i + 3:i + 2 + n])]
+        if " ".join(said) in seeing and i + 2 + n < len(words) and s.np_starts(i + 2 + n):
+            end = words[i + 1 + n].end
+            return Match(2 + n, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, WHERE_MEANS),),
+                         expect=False, verb=WHERE_MEANS, using=False)
+    return None
 
 
 def _where_asker(s: State, i: int) -> int:
@@ -697,10 +717,11 @@ def _let_know(s: State, i: int) -> Match | None:
     if QUESTION_MEANS not in s.lexicon.units or i + 2 >= len(words):
         return None
     told = words[i + 1]
-    if told.lower in DETERMINERS or told.lower in POSSESSIVES:
+    if told.lower in DETERMINERS or told.lower in POSSESSIVES or \
+            words[i + 2].lower != LET_KNOW[1] and _one_told(told):      # "let mum and dad know"
         return _let_phrase_know(s, i)
-    if not (told.lower in OBJECT_PRONOUNS and told.lower not in ("it", "this", "that") or capitalised(told)) or \
-            words[i + 2].lower != LET_KNOW[1]:
+    pronoun = told.lower in OBJECT_PRONOUNS and told.lower not in ("it", "this", "that")
+    if words[i + 2].lower != LET_KNOW[1] or not (pronoun or capitalised(told) or _one_told(told)):
         return None
     k = i + 3                                     # "let me know how many": "tell me how many", a unit of its own
     for unit in s.lexicon.units.get(QUESTION_MEANS, ()):
@@ -720,6 +741,12 @@ def _let_know(s: State, i: int) -> Match | None:
 _LET_PHRASE_WORDS = 12
 
 
+def _one_told(word: Word) -> bool:
+    """One word of letters, of no closed class, alone between "let" and "know" is who is told, whatever its
+    case: a name written in lower case ("let *maria* know"), a bare noun of kin ("let *grandpa* know")."""
+    return word.lower.isalpha() and word.lower not in CLOSED
+
+
 def _let_phrase_know(s: State, i: int) -> Match | None:
     """"*let* the person at the chairs *know* ...": "let" is "tell" when "know" ends a noun phrase after it (a few
     words of no verb, in the sentence); the "know" is dropped where it comes (``KNOW_AFTER_LET``)."""
@@ -729,7 +756,8 @@ def _let_phrase_know(s: State, i: int) -> Match | None:
         if low == LET_KNOW[1]:
             return Match(1, (words[i].tagged(Tag.VERB, QUESTION_MEANS),), expect=False, verb=QUESTION_MEANS,
                          using=False)
-        if low in END_MARKS or low in (",", ";", "and", "then") or s.verb_at(k) is not None and \
+        joined = low == "and" and k + 1 < len(words) and s.verb_at(k + 1) is None      # "mum *and* dad"
+        if low in END_MARKS or low in (",", ";", "and", "then") and not joined or s.verb_at(k) is not None and \
                 words[k - 1].lower not in DETERMINERS:
             return None
     return None
@@ -739,7 +767,16 @@ def _know_after_let(s: State, i: int) -> Match | None:
     if s.verb_index < 0 or s.out[s.verb_index].lower != LET_KNOW[0] or \
             s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.LABEL):
         return None
+    k = i + 1                                     # "let mum and dad know *dinner is ready*": what is told
+    if s.speech and k < len(s.words) and s.words[k].lower not in _TOLD_LEADS and s.words[k].lower not in END_MARKS \
+            and s.verb_at(k) is None and any(w.lower in BE_WORDS or w.lower in FINITE for w in s.words[k:k + 4]):
+        said = s.emit(k, s.speech_end(k) - k, Tag.SAID)
+        return Match(1 + said.consumed, said.words)
     return Match(1)                               # "let the person at the chairs *know* what ...": dropped
+
+
+_TOLD_LEADS = WH_WORDS | {"that", "if", "whether", "how", ",", "about"}
+"""Words that begin what "let X know" tells in a way other rules read (a question, "that", whether ...)."""
 
 
 QUESTION = Rule("bare question", _question, (
@@ -757,6 +794,11 @@ WHERE_DID_RULE = Rule("where did I leave", _where_did, (
     Example("where do we keep the batteries", "where do we keep", Tag.VERB),
     Example("Where can I find the sponge?", "Where can I find", Tag.VERB),
 ), WHERE_DID[0], "'where did I leave X', 'where do we keep X': find X")
+SEEN_ASKED_RULE = Rule("have you seen", _seen_asked, (
+    Example("have you seen my phone anywhere", "have you seen", Tag.VERB),
+    Example("Did you notice the keys in the hall?", "Did you notice", Tag.VERB),
+    Example("has anyone come across my glasses", "has anyone come across", Tag.VERB),
+), SEEN_ASKED[0], "'have you seen X', 'did you notice X': find X")
 WHETHER_IS_RULE = Rule("is X somewhere", _whether_is, (
     Example("Is Ben in the kitchen?", "Is", Tag.VERB),
     Example("are the apples in the fridge?", "are", Tag.VERB),
@@ -835,6 +877,7 @@ ASKED_WHERE = Rule("asked where", _asked_where, (
     Example("Do you know where the tea spoon is?", "Do you know where", Tag.VERB),
     Example("can you tell me where the keys are?", "tell me where", Tag.VERB),
     Example("Would you know where I left my phone?", "know where I left", Tag.VERB),
+    Example("did you see where I put my wallet", "did you see where I put", Tag.VERB),
     Example("would you mind showing me where the remote is", "showing me where", Tag.VERB),
 ), None, "'do you know / tell me where X is': find X")
 WHERE_BE_DROPPED = Rule("is, after asked where", _where_be, (
@@ -862,10 +905,14 @@ LET_KNOW_RULE = Rule("let me know", _let_know, (
     Example("let me know when the laundry is done", "let", Tag.VERB),
     Example("let me know how many bottles are in the fridge", "let me know how many", Tag.VERB),
     Example("let Amara know that her package arrived", "Amara", Tag.NAME),
+    Example("let maria know dinner is ready", "maria", Tag.NAME),
+    Example("let grandpa know that his taxi is here", "grandpa", Tag.NAME),
+    Example("let mum and dad know dinner is ready", "let", Tag.VERB),
     Example("let the person at the chairs know what gesture the person at the sofa is making", "let", Tag.VERB),
 ), frozenset([LET_KNOW[0]]), "'let X know': tell X")
 KNOW_AFTER_LET = Rule("know after let X", _know_after_let, (
     Example("let the people in the hall know that dinner is ready", "know", ""),
+    Example("let mum and dad know dinner is ready", "dinner is ready", Tag.SAID),
 ), frozenset([LET_KNOW[1]]), "the 'know' of 'let the guests know ...', dropped: 'let' was read as 'tell'")
 
 

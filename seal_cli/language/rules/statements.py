@@ -4,7 +4,7 @@ words of address and statements after the request ("..., dear, I'm cold"), a cla
 
 from __future__ import annotations
 
-from seal_cli.language.english import BECAUSE, FINITE, WH_WORDS
+from seal_cli.language.english import BECAUSE, FINITE, LET_KNOW, WH_WORDS
 from seal_cli.language.morphology import verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import CLOSED, State, subject_word
@@ -34,8 +34,16 @@ def _bare_noun_is(s: State, i: int) -> bool:
         low not in s.lexicon.units and words[i + 1].lower in FINITE
 
 
+def _before_know(s: State, i: int) -> bool:
+    """Whether the clause's verb is the "let" of "let X know" and its "know" is still to come ("let mum *and* dad
+    know ...": what is told begins after it)."""
+    return s.verb_index >= 0 and s.out[s.verb_index].lower == LET_KNOW[0] and \
+        any(w.lower == LET_KNOW[1] for w in s.words[i:i + 12])
+
+
 def _told(s: State, i: int) -> Match | None:
-    if s.speech and s.prev_tag() in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL) and s.told_at(i):
+    if s.speech and s.prev_tag() in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL) and s.told_at(i) and \
+            not _before_know(s, i):
         end = s.speech_end(i)
         return s.emit(i, end - i, Tag.SAID)                       # "tell him we need a cart": kept whole
     return None
@@ -85,6 +93,7 @@ HER_TOLD = Rule("her told", _her_told, (
 TOLD = Rule("told without that", _told, (
     Example("tell mom I'm late", "I'm late", Tag.SAID),
     Example("tell the kids dinner is ready", "dinner is ready", Tag.SAID),
+    Example("tell grandma lunch is ready", "lunch is ready", Tag.SAID),
 ), None, "what is told without 'that', right after the person told")
 TOLD_HOW_TO = Rule("how to, told", _told_how_to, (
     Example("Explain to Robin how to get to the kitchen.", "how to get to the kitchen", Tag.SAID),
