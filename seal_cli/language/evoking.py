@@ -15,7 +15,7 @@ from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
 from seal_cli.language.english import BESIDE, LOCATED, ROUTE_NOUNS, is_room_word
-from seal_cli.language.grounding import PIECES, PORTIONS
+from seal_cli.language.grounding import PARTS, PIECES, PORTIONS
 from seal_cli.language.lexicon import Word, noun_lemma
 from seal_cli.language.morphology import is_gradable
 from seal_cli.language.reference import PLACES, Reference
@@ -318,6 +318,9 @@ class Evoker:
             again = pp.prep == "with" and _named_again(pp.np, roles.get(theme), host, attached)
             if not host.borrowed and not again:   # an object said in an earlier clause ends where it was said
                 host.end = max(host.end, pp.np.end)
+            if pp.prep == "with" and pp.np.head is not None and pp.np.kind == "thing" and not pp.np.conjuncts \
+                    and noun_lemma(pp.np.head.text) in PARTS:
+                continue                         # "a spoon with a blue handle": described by its part, nothing in it
             if pp.prep == "with" and pp.np.kind != "person" and (host.kind != "person" or host.pronoun):
                 if holds_nothing and host is roles.get(theme) and pp.np.kind == "thing" and not pp.np.pronoun:
                     self.hold(pp.np)     # "turn on the lamp with the remote": held while it is done

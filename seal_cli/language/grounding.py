@@ -45,13 +45,16 @@ from seal_cli.language.stacking import StackModel
 from seal_cli.language.steps import StepModel
 from seal_cli.language.wordusage import WordUsage, context_words, shipped_word_usage, unsaid_wording
 
-__all__ = ["PIECES", "PORTIONS", "Vocabulary", "load_vocabulary", "vocabulary_of_map"]
+__all__ = ["PARTS", "PIECES", "PORTIONS", "Vocabulary", "load_vocabulary", "vocabulary_of_map"]
 
 
+PARTS = frozenset(["lid", "door", "handle", "seat", "tank", "cover", "basin"])
+"""The portions that are parts a thing is made with ("the fridge *door*", "a spoon with a blue *handle*"):
+a thing said "with" one is described, not given contents."""
 PORTIONS = frozenset(" ".join((
     "slice piece bit chunk half part portion wedge segment section sliver strip lump cube quarter crumb",
     "top side edge corner middle centre center end bottom surface back front",
-    "lid door handle seat tank cover basin",
+    " ".join(sorted(PARTS)),
     "set bunch pair pack group collection stack pile handful roll")).split())
 """English nouns that name a portion, a region, a part or a group of something else ("an apple
 *slice*", "the table *top*", "the fridge *door*", "a *set* of keys"): with one of these as its

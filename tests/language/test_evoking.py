@@ -118,3 +118,12 @@ def test_showing_a_thing_brings_it_and_showing_a_room_leads_there(library: Libra
 ])
 def test_a_thing_put_beside_another_ends_where_the_other_is(library: Library, text: str, goal: str) -> None:
     assert [(f, e.get("goal")) for f, e in _frames(text, library)][0] == ("Place", goal)
+
+
+@pytest.mark.parametrize(("text", "frames"), [
+    ("put a spoon with a blue handle in the drawer", ["Place"]),           # its part: nothing in it
+    ("put the box with a lid on the shelf", ["Place"]),
+    ("put the box with a pen in it on the shelf", ["Place", "Place"]),     # contents: put in first
+])
+def test_a_thing_said_with_its_part_has_no_contents(library: Library, text: str, frames: list[str]) -> None:
+    assert [f for f, _ in _frames(text, library)] == frames
