@@ -46,6 +46,8 @@ sys.path.insert(0, str(ROOT))
 from seal_cli.frames.reading import load_library  # noqa: E402
 from seal_cli.frames.taxonomy import class_key  # noqa: E402
 from seal_cli.language.chooser import Instance, features, fit  # noqa: E402
+from seal_cli.language.goals import NOWHERE, goal_features, goalless  # noqa: E402
+from seal_cli.language.goals import THRESHOLD as GOAL_THRESHOLD  # noqa: E402
 from seal_cli.language.grounding import PORTIONS, Vocabulary  # noqa: E402
 from seal_cli.language.lexicon import noun_lemma  # noqa: E402
 from seal_cli.language.parser import CommandError, Parse, Phrase, parse_command  # noqa: E402
@@ -73,7 +75,7 @@ LABELS = ("object", "receptacle", "mrecep", "toggle")
 KEEP = 2
 """A wording seen fewer times than this is left out of the file (it could never reach MIN_SUPPORT alone)."""
 SECTIONS = ("words", "seen", "context", "class_context", "number", "weights", "step_prior", "step_weights",
-            "stacks", "step_left", "slice_prior", "slice_weights")
+            "stacks", "step_left", "slice_prior", "slice_weights", "goal_prior", "goal_weights")
 STEP_OF = {"pick_heat_then_place_in_recep": "Heat", "pick_cool_then_place_in_recep": "Cool",
            "pick_clean_then_place_in_recep": "Clean"}
 """The step each ALFRED task type has (the others: none)."""
@@ -277,6 +279,8 @@ def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabula
     ended: dict[str, Counter[str]] = {}
     sliceable = sorted({class_key(r["object"]) for r in rows if r["sliced"] in ("1", "True", "true")})
     cut: list[tuple[str, tuple[str, ...]]] = []
+    put: list[tuple[str, tuple[str, ...]]] = []
+    spelling = {class_key(c): c for c in data["classes"]}  # type: ignore[union-attr]
     for row in rows:
         text = " ".join(row["goal_sentence"].split())
         try:
@@ -302,6 +306,11 @@ def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabula
             thing = parse.resolve(parse.frames[first].elements["theme"]).cls
             cut.append((SLICED if row["sliced"] in ("1", "True", "true") else WHOLE,
                         slice_features(context_words(text), thing, (f.frame for f in parse.frames))))
+        handled = goalless(parse)
+        if handled is not None and (row["task_type"] == "look_at_obj_in_light" or row["receptacle"]):
+            goal = NOWHERE if row["task_type"] == "look_at_obj_in_light" else spelling[class_key(row["receptacle"])]
+            thing = parse.resolve(parse.frames[handled].elements["theme"]).cls
+            put.append((goal, goal_features(context_words(text), thing, (f.frame for f in parse.frames))))
         at = eligible(parse)
         if at is None:
             continue
@@ -317,13 +326,17 @@ def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabula
     cuts = (SLICED, WHOLE)
     cut_offsets = tuple(math.log(max(kinds[k], 1)) for k in cuts)
     cut_weights = fit([Instance(cuts, cut_offsets, cuts.index(kind), feats) for kind, feats in cut], l2)
-    spelling = {class_key(c): c for c in data["classes"]}  # type: ignore[union-attr]
+    goals = Counter(goal for goal, _ in put)
+    goal_keys = tuple(sorted(goals))
+    goal_weights = fit([Instance(goal_keys, tuple(math.log(goals[k]) for k in goal_keys), goal_keys.index(goal), feats)
+                        for goal, feats in put], l2)
     return {**data, "slice_classes": [spelling[k] for k in sliceable if k in spelling],
             "slice_prior": {k: kinds[k] for k in cuts if kinds[k]}, "slice_weights": cut_weights,
             "step_prior": {k: prior[k] for k in keys}, "step_weights": weights,
             "stacks": {c: dict(sorted(by.items(), reverse=True)) for c, by in sorted(stacks.items())
                        if by["said"] >= KEEP},
-            "step_left": {s: dict(sorted(by.items())) for s, by in sorted(ended.items()) if by["ended"] >= KEEP}}
+            "step_left": {s: dict(sorted(by.items())) for s, by in sorted(ended.items()) if by["ended"] >= KEEP},
+            "goal_prior": {k: goals[k] for k in goal_keys}, "goal_weights": goal_weights}
 
 
 def ordered(words: Counter[str]) -> dict[str, int]:
@@ -460,6 +473,8 @@ def main() -> int:
                     help="the least rate at which a coordination is read as a stack (2: never); those to try")
     ap.add_argument("--slice-threshold", type=float, nargs="*", default=[SLICE_THRESHOLD],
                     help="the least probability at which an unsaid slice is added (2: never); those to try")
+    ap.add_argument("--goal-threshold", type=float, nargs="*", default=[GOAL_THRESHOLD],
+                    help="the least probability at which an unsaid goal is added (2: never); those to try")
     ap.add_argument("--bring-goal", action="store_true", help="with --dev: score a Bring to a place (goal, "
                     "no recipient) as the scorer scores a Place")
     ap.add_argument("--errors", type=Path, help="with --dev: write the held-out sentences scored wrong here (TSV)")
@@ -503,22 +518,26 @@ def main() -> int:
             for support in args.min_support:
                 for ratio in args.min_ratio:
                     for weight in args.context_weight:
-                        tries = itertools.product(args.step_threshold, args.stack_threshold, args.slice_threshold) \
+                        tries = itertools.product(args.step_threshold, args.stack_threshold, args.slice_threshold,
+                                                  args.goal_threshold) \
                             if table_.steps else [(args.step_threshold[0], args.stack_threshold[0],
-                                                   args.slice_threshold[0])]
-                        for threshold, stacking, slicing in tries:
+                                                   args.slice_threshold[0], args.goal_threshold[0])]
+                        for threshold, stacking, slicing, putting in tries:
                             tried = vocabulary.with_usage(replace(
                                 table_, min_support=support, min_ratio=ratio, context_weight=weight,
                                 steps=replace(table_.steps, threshold=threshold),
                                 stacks=replace(table_.stacks, threshold=stacking),
-                                slices=replace(table_.slices, threshold=slicing)))
-                            first = (threshold, stacking, slicing) == (
-                                args.step_threshold[0], args.stack_threshold[0], args.slice_threshold[0])
+                                slices=replace(table_.slices, threshold=slicing),
+                                goals=replace(table_.goals, threshold=putting)))
+                            first = (threshold, stacking, slicing, putting) == (
+                                args.step_threshold[0], args.stack_threshold[0], args.slice_threshold[0],
+                                args.goal_threshold[0])
                             show(f"{name}, support {support} ratio {ratio}" + ("" if table_.weights else
                                                                              f" context {weight}")
                                  + (f" step {threshold}" if table_.steps else "")
                                  + (f" stack {stacking}" if table_.stacks else "")
-                                 + (f" slice {slicing}" if table_.slices else ""),
+                                 + (f" slice {slicing}" if table_.slices else "")
+                                 + (f" goal {putting}" if table_.goals else ""),
                                  score(dev, lambda row, v=tried: v, module,
                                        errors if name == args.errors_of and first else None, args.bring_goal))
         if args.errors is not None:

@@ -14,8 +14,8 @@ from typing import TYPE_CHECKING, Any
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import LOCATED, ROUTE_NOUNS, is_room_word
-from seal_cli.language.grounding import PIECES, PORTIONS
+from seal_cli.language.english import BESIDE, LOCATED, ROUTE_NOUNS, is_room_word
+from seal_cli.language.grounding import PARTS, PIECES, PORTIONS
 from seal_cli.language.lexicon import Word, noun_lemma
 from seal_cli.language.morphology import is_gradable
 from seal_cli.language.reference import PLACES, Reference
@@ -78,6 +78,7 @@ class Evoker:
         best = self.escorting(self.moving(best, self.types.evoked_by(unit), clause), clause)
         _, frame, roles, attached = self.showing(best, clause)
         self.first_into(frame, roles, attached)
+        self.beside_on(frame, clause, roles, attached)
         self.emit(frame, unit, clause, roles, attached)
 
     @staticmethod
@@ -290,6 +291,25 @@ class Evoker:
                 attached[k] = (pp.np, PP("into", goal, goal.start))
                 return
 
+    def beside_on(self, frame: Frame, clause: Clause, roles: dict[str, Any], attached: list[tuple[NP, PP]]) -> None:
+        """"Put the newspaper *next to the remote on the sofa*": a thing put beside, in front of or behind
+        another thing said to be on or in something ends on or in that something (the sofa holds it; the
+        remote is where on the sofa). The goal is the place the landmark is said to be at, when the goal
+        was said with such a preposition (:data:`~seal_cli.language.english.BESIDE`) and that place is a
+        thing, not a room ("next to the sink in the kitchen" stays the sink)."""
+        relation = self.types.relation(frame)
+        if relation is None or not isinstance(roles.get(relation.args[1]), NP):
+            return
+        goal = roles[relation.args[1]]
+        said = next((x for x in clause.items if isinstance(x, PP) and x.np is goal), None)
+        if said is None or said.prep not in BESIDE or goal.kind != "thing" or goal.pronoun or goal.conjuncts:
+            return
+        for host, pp in attached:
+            if host is goal and pp.prep in LOCATED and pp.np.kind == "thing" and not pp.np.pronoun \
+                    and pp.np.head is not None and not is_room_word((*(w.lower for w in pp.np.mods), pp.np.head_text)):
+                roles[relation.args[1]] = pp.np
+                return
+
     def unfilled(self, frame: Frame, roles: Mapping[str, Any]) -> int:
         """Elements the clause leaves empty; an object left unsaid that the frame before has in hand
         is not empty ("heat the mug, move [it] to the cabinet": Place, not Go)."""
@@ -325,6 +345,9 @@ class Evoker:
             again = pp.prep == "with" and _named_again(pp.np, roles.get(theme), host, attached)
             if not host.borrowed and not again:   # an object said in an earlier clause ends where it was said
                 host.end = max(host.end, pp.np.end)
+            if pp.prep == "with" and pp.np.head is not None and pp.np.kind == "thing" and not pp.np.conjuncts \
+                    and noun_lemma(pp.np.head.text) in PARTS:
+                continue                         # "a spoon with a blue handle": described by its part, nothing in it
             if pp.prep == "with" and pp.np.kind != "person" and (host.kind != "person" or host.pronoun):
                 if holds_nothing and host is roles.get(theme) and pp.np.kind == "thing" and not pp.np.pronoun:
                     self.hold(pp.np)     # "turn on the lamp with the remote": held while it is done

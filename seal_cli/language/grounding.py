@@ -33,23 +33,28 @@ from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from functools import cached_property
 from pathlib import Path
+from types import MappingProxyType
 from typing import Any
 
 from seal_cli.errors import SealError, Where
 from seal_cli.frames.taxonomy import class_key, class_words
+from seal_cli.language.goals import GoalModel
 from seal_cli.language.lexicon import noun_lemma
 from seal_cli.language.slicing import SliceModel
 from seal_cli.language.stacking import StackModel
 from seal_cli.language.steps import StepModel
 from seal_cli.language.wordusage import WordUsage, context_words, shipped_word_usage, unsaid_wording
 
-__all__ = ["PIECES", "PORTIONS", "Vocabulary", "load_vocabulary", "vocabulary_of_map"]
+__all__ = ["PARTS", "PIECES", "PORTIONS", "Vocabulary", "load_vocabulary", "vocabulary_of_map"]
 
 
+PARTS = frozenset(["lid", "door", "handle", "seat", "tank", "cover", "basin"])
+"""The portions that are parts a thing is made with ("the fridge *door*", "a spoon with a blue *handle*"):
+a thing said "with" one is described, not given contents."""
 PORTIONS = frozenset(" ".join((
     "slice piece bit chunk half part portion wedge segment section sliver strip lump cube quarter crumb",
     "top side edge corner middle centre center end bottom surface back front",
-    "lid door handle seat tank cover basin",
+    " ".join(sorted(PARTS)),
     "set bunch pair pack group collection stack pile handful roll")).split())
 """English nouns that name a portion, a region, a part or a group of something else ("an apple
 *slice*", "the table *top*", "the fridge *door*", "a *set* of keys"): with one of these as its
@@ -66,7 +71,8 @@ _RULES = WordUsage()
 _NO_STEPS = StepModel()
 _NO_STACKS = StackModel()
 _NO_SLICES = SliceModel()
-_INDEXES = ("_usage", "_present", "_names", "_own", "_exact", "_by_word", "_rules_alone")
+_NO_GOALS = GoalModel()
+_INDEXES = ("_usage", "_present", "_names", "_own", "_exact", "_by_word", "_rules_alone", "_in_scope")
 """The cached indexes a vocabulary builds from its classes and usage, which do not depend on the sentence."""
 
 
@@ -297,9 +303,7 @@ class Vocabulary:
         a scene's of them, with its scenery: :attr:`~seal_cli.language.wordusage.WordUsage.scenery`),
         else an empty model (a GPSR arena, a shipped map: no step is inferred)."""
         usage = self._usage
-        if not usage.steps or not set(self._present) <= usage.universe | usage.scenery:
-            return _NO_STEPS
-        return usage.steps
+        return usage.steps if usage.steps and self._in_scope else _NO_STEPS
 
     @property
     def stack_model(self) -> StackModel:
@@ -307,18 +311,34 @@ class Vocabulary:
         scoped as :attr:`step_model` is: empty unless every class of this vocabulary is one the
         statistics were counted over."""
         usage = self._usage
-        if not usage.stacks or not set(self._present) <= usage.universe | usage.scenery:
-            return _NO_STACKS
-        return usage.stacks
+        return usage.stacks if usage.stacks and self._in_scope else _NO_STACKS
 
     @property
     def slice_model(self) -> SliceModel:
         """Whether a sentence means its thing sliced though it says no cutting
         (:mod:`~seal_cli.language.slicing`), scoped as :attr:`step_model` is."""
         usage = self._usage
-        if not usage.slices or not set(self._present) <= usage.universe | usage.scenery:
-            return _NO_SLICES
-        return usage.slices
+        return usage.slices if usage.slices and self._in_scope else _NO_SLICES
+
+    @property
+    def goal_model(self) -> GoalModel:
+        """Where a sentence that puts its thing nowhere means it put (:mod:`~seal_cli.language.goals`),
+        scoped as :attr:`step_model` is."""
+        usage = self._usage
+        return usage.goals if usage.goals and self._in_scope else _NO_GOALS
+
+    @property
+    def by_key(self) -> Mapping[str, str]:
+        """Class key → this vocabulary's spelling of the class, for each of its classes."""
+        return MappingProxyType(self._present)
+
+    @cached_property
+    def _in_scope(self) -> bool:
+        """Whether every class of this vocabulary is one the statistics were counted over, or part of
+        their scenes' scenery: where the unsaid step, stack, slice and goal may be inferred (asked once
+        per vocabulary, shared by its copies for each sentence)."""
+        usage = self._usage
+        return set(self._present) <= usage.universe | usage.scenery
 
     def ground_name(self, name: str) -> str | None:
         """The class a class name of the frame library denotes (a default: Slice's ``knife``): by

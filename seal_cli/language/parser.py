@@ -29,6 +29,7 @@ from seal_cli.frames.library import Library
 from seal_cli.language.clauses import Clauses
 from seal_cli.language.element_types import Types
 from seal_cli.language.evoking import Evoker
+from seal_cli.language.goals import infer_goal
 from seal_cli.language.lexicon import CommandError, Lexicon, Tagger, Word, tokenize
 from seal_cli.language.slicing import infer_slice
 from seal_cli.language.stacking import infer_stack
@@ -100,6 +101,7 @@ class CommandParser:
             parse = infer_stack(parse, vocabulary.stack_model)
             parse = infer_left_in(parse, self.library, vocabulary.step_model)
             parse = infer_step(parse, self.library, vocabulary, vocabulary.step_model, vocabulary.context)
+            parse = infer_goal(parse, self.library, vocabulary.by_key, vocabulary.goal_model, vocabulary.context)
         if tagger.remarks:
             parse = replace(parse, remarks=tuple(text[a:b] for a, b in tagger.remarks))
         return parse

@@ -46,6 +46,7 @@ from typing import Any
 from seal_cli.errors import SealError, Where
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.language.chooser import features, logits
+from seal_cli.language.goals import NOWHERE, GoalModel
 from seal_cli.language.morphology import noun_lemma
 from seal_cli.language.slicing import KINDS, SliceModel
 from seal_cli.language.stacking import StackModel
@@ -133,6 +134,9 @@ class WordUsage:
     slices: SliceModel = field(default_factory=SliceModel)
     """Whether a sentence that says no cutting most likely means the thing sliced
     (:mod:`~seal_cli.language.slicing`); empty: no slice is inferred."""
+    goals: GoalModel = field(default_factory=GoalModel)
+    """Where a sentence that handles a thing and puts it nowhere most likely means it put
+    (:mod:`~seal_cli.language.goals`); empty: no goal is inferred."""
     scenery: frozenset[str] = frozenset()
     """Class keys of the scenes the statistics were counted in that no count is of (ALFRED's ``faucet``):
     a vocabulary of these and :attr:`universe` is one the unsaid step and stack may be inferred in."""
@@ -179,6 +183,8 @@ class WordUsage:
                          SliceModel(add({"": self.slices.prior}, {"": other.slices.prior}).get("", {}),
                                     add(self.slices.weights, other.slices.weights),
                                     self.slices.classes | other.slices.classes, self.slices.threshold),
+                         GoalModel(add({"": self.goals.prior}, {"": other.goals.prior}).get("", {}),
+                                   add(self.goals.weights, other.goals.weights), self.goals.threshold),
                          self.scenery | other.scenery)
 
     def names_one(self, lemmas: tuple[str, ...]) -> bool:
@@ -200,7 +206,7 @@ class WordUsage:
         """These counts with the sentence not weighed (the wording alone decides)."""
         return WordUsage(self.counts, self.universe, self.sources, self.min_support, self.min_ratio, self.seen,
                          number=self.number, steps=self.steps, stacks=self.stacks, slices=self.slices,
-                         scenery=self.scenery)
+                         goals=self.goals, scenery=self.scenery)
 
     def sentence_factor(self, wording: str, lemmas: tuple[str, ...], keys: Iterable[str],
                         words: Iterable[str]) -> dict[str, float]:
@@ -405,7 +411,7 @@ def _table(data: Any, where: Where) -> WordUsage:
     return WordUsage(counts, universe, (str(data.get("source", where.file)),), seen=seen, context=context,
                      class_context=class_context, number=number, weights=weights, steps=_steps(data, where),
                      stacks=_stacks(data, universe, where), slices=_slices(data, universe, where),
-                     scenery=_scenery(data, where))
+                     goals=_goals(data, universe, where), scenery=_scenery(data, where))
 
 
 def _steps(data: dict[str, Any], where: Where) -> StepModel:
@@ -464,6 +470,26 @@ def _slices(data: dict[str, Any], universe: frozenset[str], where: Where) -> Sli
         raise SealError("\"slice_classes\" must be a list of classes of \"classes\"", where)
     return SliceModel(prior, {str(f): {k: float(v) for k, v in by.items()} for f, by in raw.items()},
                       frozenset(classes))
+
+
+def _goals(data: dict[str, Any], universe: frozenset[str], where: Where) -> GoalModel:
+    """The unsaid-goal model of a table (``goal_prior``: {class of "classes" | "none": count}, ``goal_weights``:
+    {feature: {class | "none": w}})."""
+    def known(name: Any) -> bool:
+        return isinstance(name, str) and (name == NOWHERE or class_key(name) in universe)
+
+    prior = data.get("goal_prior", {})
+    if not _word_counts(prior) or not all(known(c) for c in prior):
+        raise SealError(f"\"goal_prior\" must map each class of \"classes\" or \"{NOWHERE}\" to a positive count",
+                        where)
+    raw = data.get("goal_weights", {})
+    if not isinstance(raw, dict) or not all(
+            isinstance(by, dict) and all(known(c) and isinstance(v, int | float) and not isinstance(v, bool)
+                                         and math.isfinite(v) for c, v in by.items()) for by in raw.values()):
+        raise SealError(f"\"goal_weights\" must map each feature to {{class of \"classes\" | \"{NOWHERE}\": finite "
+                        "number}", where)
+    return GoalModel(prior, {str(f): {(c if c == NOWHERE else class_key(c)): float(v) for c, v in by.items()}
+                             for f, by in raw.items()})
 
 
 def _word_counts(table: Any) -> bool:

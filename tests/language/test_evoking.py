@@ -105,3 +105,25 @@ def test_going_stays_going_without_a_movable_object(library: Library, text: str,
 def test_showing_a_thing_brings_it_and_showing_a_room_leads_there(library: Library, text: str,
                                                                   expected: list[object]) -> None:
     assert _frames(text, library) == expected
+
+
+@pytest.mark.parametrize(("text", "goal"), [
+    ("put the newspaper next to the remote on the sofa", "the sofa"),      # the sofa holds it
+    ("place two clocks in front of the phone on the desk", "the desk"),
+    ("put the mug to the left of the bread on the counter", "the counter"),
+    ("put the book under the pillow on the bed", "the bed"),
+    ("put the newspaper next to the remote", "the remote"),                # nothing said to hold it: as said
+    ("put the cup next to the sink in the kitchen", "the sink in the kitchen"),   # a room says where, not on what
+    ("put the cup on the plate on the table", "the plate on the table"),   # on it: the plate holds it (then the table)
+])
+def test_a_thing_put_beside_another_ends_where_the_other_is(library: Library, text: str, goal: str) -> None:
+    assert [(f, e.get("goal")) for f, e in _frames(text, library)][0] == ("Place", goal)
+
+
+@pytest.mark.parametrize(("text", "frames"), [
+    ("put a spoon with a blue handle in the drawer", ["Place"]),           # its part: nothing in it
+    ("put the box with a lid on the shelf", ["Place"]),
+    ("put the box with a pen in it on the shelf", ["Place", "Place"]),     # contents: put in first
+])
+def test_a_thing_said_with_its_part_has_no_contents(library: Library, text: str, frames: list[str]) -> None:
+    assert [f for f, _ in _frames(text, library)] == frames
