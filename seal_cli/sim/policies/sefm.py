@@ -416,20 +416,19 @@ class SeFMPolicy(Policy):
     """SeFM's frame context in one room: the search is for where the frame can be done, so the drive on to
     the plan's next stop (the fridge to put the apple in, the lamp to look at it under; where no instance
     is known yet, the stop's belief: :meth:`_onward_belief`) counts: the tour's expected cost adds, for the
-    belief each look would be the first to reveal, this weight times the drive on from it, and the looks
-    the tour is made of are also drawn by belief per metre there and on (:meth:`_first_of_tour`,
-    :attr:`onward_pool`). 0: the thing's search alone, as object-only searches. Chosen on ALFRED-2D's
-    train split (docs/benchmarks.md)."""
+    belief each look would be the first to reveal, this weight times the drive on from it, and SeFM's first
+    look departs from object-only's only where that expected cost says so by more than :attr:`defer_m`
+    (:meth:`_first_of_tour`). 0: the thing's search alone, as object-only searches."""
 
     onward_pool = False
-    """Also draw the tour's looks from the best by belief per metre of the drive there *and on*. Off: the
-    looks are the best by belief per metre there, for SeFM as for object-only, and the drive on counts only
-    in the tour's expected cost. Under the model the drive on is paid once, from the look that finds the
+    """Also draw the tour's looks from the best by belief per metre of the drive there *and on*, mass /
+    (metres + scale + on) (earlier rounds: on). Off: SeFM's looks are object-only's, the best by belief per
+    metre there, and the drive on counts only in the tour's expected cost. That ratio is not an expected
+    cost: it favours looks beside a known stop (the garbage can by the fridge) whatever their mass, and the
+    tour's E over a larger set of looks is not comparable with object-only's (the belief a tour leaves
+    unrevealed counts nothing). Under the model the drive on is paid once, from the look that finds the
     thing, so for looks that reveal different places Σ p_k · on(v_k) is the same in every order and cannot
-    choose the looks; but ALFRED's things often have several instances (the first found is the one used)
-    and the drive sees things on the way, neither of which the model counts, and on train the looks near
-    the next stop paid: off, 3.33 m against 3.29 over the seven task types (shorter in cooling and
-    pick-two, longer in the others; docs/benchmarks.md), so on."""
+    choose the looks (docs/benchmarks.md, "This round (search9)")."""
 
     def _onward_field(self, agent: Agent, stop: Known) -> np.ndarray:
         """Metres from every cell to the nearest cell to act on ``stop`` from (kept per stop and place)."""
@@ -484,10 +483,12 @@ class SeFMPolicy(Policy):
         robot away from where the thing is likelier. SeFM (:attr:`onward` > 0) adds to E, for the belief
         p_j each look reveals first, p_j times the drive on from it to the next stop: a place two looks
         see is best seen from the one nearer where the frame goes on (for looks that reveal different
-        places that sum is the same in every order: the drive on is paid once); and it draws the tour's
-        looks from the best by belief per metre there and on as well as from the best by belief per metre
-        there (:attr:`onward_pool`). Approximations: the looks are the best few, not all; what is seen on
-        the way is not counted; the belief the tour leaves unrevealed adds nothing to E; one instance."""
+        places that sum is the same in every order: the drive on is paid once). SeFM's looks are
+        object-only's (with :attr:`onward_pool`, also the best by belief per metre there and on), and its
+        first look is object-only's — the first of the tour of the same looks with no drive on — unless the
+        best order's E beats the best order that starts with object-only's look by more than :attr:`defer_m`.
+        Approximations: the looks are the best few, not all; what is seen on the way is not counted; the
+        belief the tour leaves unrevealed adds nothing to E; one instance."""
 
         ahead = self._ahead(agent, agent.class_of(target), agent.world.robot.pose[:2])[:1]
         stands = agent.stand_cells(ahead[0]) if ahead else np.zeros((0, 2), dtype=int)
