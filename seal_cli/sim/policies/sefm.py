@@ -416,20 +416,19 @@ class SeFMPolicy(Policy):
     """SeFM's frame context in one room: the search is for where the frame can be done, so the drive on to
     the plan's next stop (the fridge to put the apple in, the lamp to look at it under; where no instance
     is known yet, the stop's belief: :meth:`_onward_belief`) counts: the tour's expected cost adds, for the
-    belief each look would be the first to reveal, this weight times the drive on from it, and the looks
-    the tour is made of are also drawn by belief per metre there and on (:meth:`_first_of_tour`,
-    :attr:`onward_pool`). 0: the thing's search alone, as object-only searches. Chosen on ALFRED-2D's
-    train split (docs/benchmarks.md)."""
+    belief each look would be the first to reveal, this weight times the drive on from it, and SeFM's first
+    look departs from object-only's only where that expected cost says so by more than :attr:`defer_m`
+    (:meth:`_first_of_tour`). 0: the thing's search alone, as object-only searches."""
 
-    onward_pool = True
-    """Also draw the tour's looks from the best by belief per metre of the drive there *and on*. Off: the
-    looks are the best by belief per metre there, for SeFM as for object-only, and the drive on counts only
-    in the tour's expected cost. Under the model the drive on is paid once, from the look that finds the
+    onward_pool = False
+    """Also draw the tour's looks from the best by belief per metre of the drive there *and on*, mass /
+    (metres + scale + on) (earlier rounds: on). Off: SeFM's looks are object-only's, the best by belief per
+    metre there, and the drive on counts only in the tour's expected cost. That ratio is not an expected
+    cost: it favours looks beside a known stop (the garbage can by the fridge) whatever their mass, and the
+    tour's E over a larger set of looks is not comparable with object-only's (the belief a tour leaves
+    unrevealed counts nothing). Under the model the drive on is paid once, from the look that finds the
     thing, so for looks that reveal different places Σ p_k · on(v_k) is the same in every order and cannot
-    choose the looks; but ALFRED's things often have several instances (the first found is the one used)
-    and the drive sees things on the way, neither of which the model counts, and on train the looks near
-    the next stop paid: off, 3.33 m against 3.29 over the seven task types (shorter in cooling and
-    pick-two, longer in the others; docs/benchmarks.md), so on."""
+    choose the looks (docs/benchmarks.md, "This round (search9)")."""
 
     def _onward_field(self, agent: Agent, stop: Known) -> np.ndarray:
         """Metres from every cell to the nearest cell to act on ``stop`` from (kept per stop and place)."""
@@ -484,10 +483,12 @@ class SeFMPolicy(Policy):
         robot away from where the thing is likelier. SeFM (:attr:`onward` > 0) adds to E, for the belief
         p_j each look reveals first, p_j times the drive on from it to the next stop: a place two looks
         see is best seen from the one nearer where the frame goes on (for looks that reveal different
-        places that sum is the same in every order: the drive on is paid once); and it draws the tour's
-        looks from the best by belief per metre there and on as well as from the best by belief per metre
-        there (:attr:`onward_pool`). Approximations: the looks are the best few, not all; what is seen on
-        the way is not counted; the belief the tour leaves unrevealed adds nothing to E; one instance."""
+        places that sum is the same in every order: the drive on is paid once). SeFM's looks are
+        object-only's (with :attr:`onward_pool`, also the best by belief per metre there and on), and its
+        first look is object-only's — the first of the tour of the same looks with no drive on — unless the
+        best order's E beats the best order that starts with object-only's look by more than :attr:`defer_m`.
+        Approximations: the looks are the best few, not all; what is seen on the way is not counted; the
+        belief the tour leaves unrevealed adds nothing to E; one instance."""
 
         ahead = self._ahead(agent, agent.class_of(target), agent.world.robot.pose[:2])[:1]
         stands = agent.stand_cells(ahead[0]) if ahead else np.zeros((0, 2), dtype=int)
@@ -502,26 +503,52 @@ class SeFMPolicy(Policy):
             on = self.onward * float(then[o.view.cell]) if then is not None else 0.0
             return round(o.mass / (o.metres + self.distance_scale + (on if np.isfinite(on) else 0.0)), 6)
 
-        if self.onward_pool and then is not None:
+        # object-only's looks: the best by belief per metre (ties at the last kept, then the nearer the next stop)
+        ranked = sorted(looks, key=lambda o: -plain(o))
+        pool = ranked[: self.tour_views]
+        pool += [o for o in ranked[len(pool):] if plain(o) == plain(pool[-1])][: self.tour_views]
+        extra: list[Look] = []
+        if self.onward_pool and then is not None:   # and the best by belief per metre there and on
             ranked = sorted(looks, key=lambda o: -score(o))
-            pool = ranked[: self.tour_views]
-            pool += [o for o in ranked[len(pool):] if score(o) == score(pool[-1])][: self.tour_views]
-            # and the best looks for the thing alone: the tour's cost decides between them
-            pool += [o for o in sorted(looks, key=lambda o: -plain(o))[: self.tour_views] if o not in pool]
-        else:   # the looks the search itself values; the drive on enters through the tour's expected cost
-            ranked = sorted(looks, key=lambda o: -plain(o))
-            pool = ranked[: self.tour_views]
-            pool += [o for o in ranked[len(pool):] if plain(o) == plain(pool[-1])][: self.tour_views]
-        fields = {o.view.cell: agent.grid.distances(o.view.cell) for o in pool}
+            extra = ranked[: self.tour_views]
+            extra += [o for o in ranked[len(extra):] if score(o) == score(extra[-1])][: self.tour_views]
+        fields = {o.view.cell: agent.grid.distances(o.view.cell) for o in [*pool, *extra]}
 
         def onward(o: Look) -> float:   # metres on to the plan's next known stop
             f = fields[o.view.cell][stands[:, 0], stands[:, 1]] if len(stands) else np.zeros(1)
             return float(f.min())
 
-        best = sorted(pool, key=lambda o: (-score(o), onward(o)))[: self.tour_views * (1 if then is None else 2)]
-        if len(best) < 2:
-            return best[0].view
+        plain_best = sorted(pool, key=lambda o: (-plain(o), onward(o)))[: self.tour_views]
+        if then is None:
+            return self._tour(agent, plain_best, fields, None)[0].view
+        best = plain_best + [o for o in sorted(extra, key=lambda o: (-score(o), onward(o))) if o not in plain_best]
+        best = best[: 2 * self.tour_views]
+        if self.defer_m is None:
+            return self._tour(agent, best, fields, then)[0].view
+        # the look object-only's rule takes under this belief, and what SeFM's expected cost says of it
+        alone = self._tour(agent, plain_best, fields, None)[0]
+        first, expected = self._tour(agent, best, fields, then)
+        if first is alone:
+            return first.view
+        _, deferred = self._tour(agent, best, fields, then, first=best.index(alone))
+        return alone.view if deferred - expected <= self.defer_m else first.view
+
+    defer_m: float | None = 0.25
+    """SeFM's first look in one room is object-only's under the same belief (the best tour by belief per metre,
+    with no drive on) unless SeFM's expected cost of finishing the plan — the search, and the drive on from
+    where the thing is found — is lower by more than this many metres with another first look. Where the
+    frame gives no reason to differ the two drive alike, and the drive on to a known stop (the fridge, the
+    sink) cannot draw the robot to a look beside it that the model values within a lattice step of
+    object-only's. None: SeFM's best first look, whatever the margin (earlier rounds)."""
+
+    def _tour(self, agent: Agent, best: Sequence[Look], fields: dict[Cell, np.ndarray], then: np.ndarray | None,
+              first: int | None = None) -> tuple[Look, float]:
+        """The first look of the shortest expected search through ``best``, and its expected cost (with
+        ``then``, the drive on from where the thing is found to the plan's next stop, SeFM's; ``first``: the
+        best order that starts with that look)."""
         n = len(best)
+        if n < 2:
+            return best[0], 0.0
         here = np.array([o.metres for o in best])
         between = np.array([fields[o.view.cell][[b.view.cell[0] for b in best], [b.view.cell[1] for b in best]]
                             for o in best])
@@ -549,9 +576,9 @@ class SeFMPolicy(Policy):
                 prev = k
             return round(total, 6)   # equal to rounding: the same order for SeFM and object-only
 
-        order: list[int] = []
-        todo = set(range(n))
-        revealed = np.zeros(R.shape[1], dtype=bool)
+        order: list[int] = [first] if first is not None else []
+        todo = set(range(n)) - set(order)
+        revealed = R[first] > 0 if first is not None else np.zeros(R.shape[1], dtype=bool)
         while todo:   # greedy from where the robot is: the most new belief per metre
             prev = order[-1] if order else -1
 
@@ -564,14 +591,17 @@ class SeFMPolicy(Policy):
             todo.remove(k)
             revealed = revealed | (R[k] > 0)
         current = cost(order)
+        fixed = 0 if first is None else 1
         for _ in range(4 * n):   # or-opt: move one look elsewhere while that shortens the expected search
-            moves = [(cost(o), o) for i in range(n) for j in range(n) if i != j
+            moves = [(cost(o), o) for i in range(fixed, n) for j in range(fixed, n) if i != j
                      for o in [order[:i] + order[i + 1:]] for o in [o[:j] + [order[i]] + o[j:]]]
+            if not moves:
+                break
             value, candidate = min(moves, key=lambda m: m[0])
             if value >= current - 1e-9:
                 break
             current, order = value, candidate
-        return best[order[0]].view
+        return best[order[0]], current
 
     def _places(self, agent: Agent) -> list[Known]:
         """The places a look can reveal the contents of (not people, not things)."""
