@@ -229,16 +229,17 @@ def _said(phrase: Phrase | None, name: str) -> str:
 
 
 def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], things: Things,
-            text: str, category: str = "thing", asked: bool = False) -> tuple[str, ...]:
+            text: str, category: str = "thing", asked: bool = False, carried: bool = False) -> tuple[str, ...]:
     """The things a phrase names: its antecedent's for a pronoun, else the map's thing it calls,
     else its class (counted if asked); every conjunct's for a coordination. ``asked``: the phrase is
     what a question asks about ("how many chairs ...?", "is there a chair ...?"), so a fixed thing
-    the map lacks is no refusal but a class to look for (the answer may be none)."""
+    the map lacks is no refusal but a class to look for (the answer may be none). ``carried``: the
+    frame takes the thing into the hand, so only its own words can make it furniture the map lacks."""
     from seal_cli.language.english import PERSON_PRONOUNS, PRONOUNS
 
     if phrase.conjuncts:        # "the apple and the pear": both
         return tuple(dict.fromkeys(v for c in phrase.conjuncts
-                                   for v in _values(c, earlier, things, text, category, asked)))
+                                   for v in _values(c, earlier, things, text, category, asked, carried)))
     if phrase.refers_to is not None:
         index, role = phrase.refers_to
         if 0 <= index < len(earlier) and role in earlier[index]:
@@ -249,7 +250,7 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
     if word in PRONOUNS and word not in PERSON_PRONOUNS and word not in INDEFINITE:
         raise _located(f"cannot tell what {phrase.text!r} refers to: nothing before it in the command fits",
                        phrase, text)
-    if things.names is not None and (on_map := _on_map(phrase, things, text, category, asked)) is not None:
+    if things.names is not None and (on_map := _on_map(phrase, things, text, category, asked, carried)) is not None:
         return on_map
     value = phrase.cls or phrase.head
     if category in ("message", "question"):    # what is said, as a name: "what's on it?" what_s_on_it
@@ -292,10 +293,13 @@ def _names(phrase: Phrase, cls: str, things: Things) -> bool:
     return any(noun_lemma(class_words(n)[-1]) in said for n in names if class_words(n))
 
 
-def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: bool = False
+def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: bool = False, carried: bool = False
             ) -> tuple[str, ...] | None:
     """The map's person, room or place a phrase names (see :mod:`seal_cli.planning.grounding`);
-    None for an object, which the robot must find."""
+    None for an object, which the robot must find. A thing to carry (``carried``) is refused as furniture
+    or an appliance the map lacks only when its words name that class ("bring me the sofa"), never by a
+    learned guess nor by the head's kind ("bring me the laptop": a laptop opens and switches on, and
+    is carried)."""
     from seal_cli.planning.grounding import DROPPED, HERE, SPEAKER_WORDS, person_value
 
     names = things.names
@@ -329,7 +333,9 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
         return (found.id,)
     if things.taxonomy.is_a(phrase.cls or phrase.head, "person") is True:
         return None
-    said = phrase.cls if phrase.cls and _may_be_fixed(phrase, phrase.cls, things) else None
+    cls = phrase.cls
+    fixed = cls is not None and (_names(phrase, cls, things) if carried else _may_be_fixed(phrase, cls, things))
+    said = cls if fixed else None
     refused = None if asked else names.refusal(phrase.text, said)
     if refused is not None:
         raise _located(refused.message, phrase, text)
@@ -436,7 +442,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
             frame = looking(frame)
         asked = _counted_roles(frame) | ({"theme"} if asks_whether(parse.text, evoked) else set())
         values = {role: _values(_sought_where(evoked, role, things), earlier, things, parse.text,
-                                frame.element(role).type, role in asked)
+                                frame.element(role).type, role in asked, _carried(frame, role))
                   for role, phrase in evoked.elements.items()}
         for role, phrase in evoked.elements.items():     # a default the parse filled: the map's own, if any
             if phrase.default and things.map is not None and frame.element(role).default is not None:
@@ -464,6 +470,11 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         for combination in itertools.product(*(values[r] for r in roles)):
             bindings.append(frame.bind(dict(zip(roles, combination, strict=True))))
     return bindings
+
+
+def _carried(frame: Frame, role: str) -> bool:
+    """Whether the frame takes its ``role`` into the hand (needs it held, or leaves it held)."""
+    return frame.needs_held(role) or frame.gets_held(role)
 
 
 def _in_a_name(evoked: Evoked, parse: Parse, things: Things) -> bool:

@@ -126,3 +126,32 @@ def test_where_a_theme_is_said_to_be_is_where_it_is_taken_from(library: Library)
     with pytest.raises(SealError, match=re.escape("the apartment has no garage; its rooms are")) as refused:
         problem_of_text("wash the cup in the garage", library, map=apartment)
     assert refused.value.where is not None and refused.value.where.column == 6
+
+
+def test_a_thing_to_carry_is_refused_as_missing_furniture_only_by_its_own_words(library: Library) -> None:
+    """A learned guess that reads "the laptop" as the apartment's desk, and the laptop's kinds (it opens
+    and switches on), do not make a thing to bring into furniture the map lacks: it is searched for.
+    "Open the laptop" (not carried) and "bring me the dishwasher" (its own words) are still refused."""
+    from seal_cli.errors import SealError
+    from seal_cli.language.values import Evoked, Parse, Phrase
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.planning.problem import build_problem
+
+    m = load_map("apartment")
+    text = "bring me the laptop"
+    guessed = Phrase("the laptop", "laptop", "desk", span=(9, 19))
+    me = Phrase("me", "me", None, kind="person", span=(6, 8))
+    parse = Parse(text, (Evoked("Bring", "bring", (0, 19), {"theme": guessed, "recipient": me}),))
+    assert [str(b) for b in build_problem(parse, library, map=m.known()).commanded] == \
+        ["Bring(theme=laptop, recipient=me)"]
+    opened = Parse("open the laptop", (Evoked("Open", "open", (0, 15), {"theme": replace_span(guessed, 5)}),))
+    with pytest.raises(SealError, match="has no laptop"):
+        build_problem(opened, library, map=m.known())
+    with pytest.raises(SealError, match="has no dishwasher"):
+        problem_of_text("bring me the dishwasher", library, map=m)
+
+
+def replace_span(phrase, start: int):  # type: ignore[no-untyped-def]
+    from dataclasses import replace
+
+    return replace(phrase, span=(start, start + len(phrase.text)))
