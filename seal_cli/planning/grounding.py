@@ -140,10 +140,10 @@ class MapNames:
     def referents(self) -> tuple[Referent, ...]:
         synonyms = self.taxonomy.names
         found: list[Referent] = []
-        for room in self.map.rooms:
-            name = words_of(room.name)
+        for room in self.map.rooms:        # a room by its name, then its kind's other names ("the lounge")
+            said = (words_of(room.name), *map(words_of, synonyms.get(class_key(room.name), ())))
             found.append(Referent(class_key(room.name), "room", class_key(room.name), class_key(room.name),
-                                  (name,), frozenset()))
+                                  tuple(dict.fromkeys(w for w in said if w)), frozenset(), 1))
         for place in self.map.places:
             spelled = [re.sub(r"[_ ]?\d+$", "", place.name), place.name, place.cls,
                        *synonyms.get(place.cls, ())]

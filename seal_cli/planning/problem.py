@@ -228,6 +228,15 @@ def _said(phrase: Phrase | None, name: str) -> str:
     return f"{phrase.text!r} ({name})" if phrase is not None and phrase.text else name
 
 
+def _unnamed_kind(phrase: Phrase, map: Map) -> str:
+    """The refusal of "something", "anything" as the thing of a frame on a map: no kind to look for
+    (a search for a class called "something" would sweep the house and say "no something")."""
+    kinds = sorted({class_key(c) for c in (*map.priors, *(o.cls for o in map.objects))})
+    known = f" (the {map.name} knows of {', '.join(kinds)})" if kinds else ""
+    return (f"{phrase.text!r} does not say what kind of thing: name it{known}, or ask what is on or in "
+            "a place (\"what is in the fridge?\")")
+
+
 def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], things: Things,
             text: str, category: str = "thing", asked: bool = False) -> tuple[str, ...]:
     """The things a phrase names: its antecedent's for a pronoun, else the map's thing it calls,
@@ -246,6 +255,8 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
         raise _located(f"{phrase.text!r} refers to the {role} of frame {index + 1}, which the command lacks",
                        phrase, text)
     word = phrase.head.lower()
+    if word in INDEFINITE and things.map is not None and category not in ("message", "question"):
+        raise _located(_unnamed_kind(phrase, things.map), phrase, text)
     if word in PRONOUNS and word not in PERSON_PRONOUNS and word not in INDEFINITE:
         raise _located(f"cannot tell what {phrase.text!r} refers to: nothing before it in the command fits",
                        phrase, text)
