@@ -34,10 +34,11 @@ Then the frames of each ``done`` command, grounded the same way, are applied in 
 
 from __future__ import annotations
 
+import contextlib
 import itertools
 import math
 import re
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any
 
@@ -627,6 +628,26 @@ def problem_of_text(text: str, library: Library, *, holding: str | None = None, 
         vocabulary = vocabulary_of_map(map)
     from seal_cli.planning.grounding import spoken
 
-    parses = [parse_command(spoken(t), library, vocabulary) for t in (*done, text)]
-    return build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=map,
-                         vocabulary=vocabulary if hasattr(vocabulary, "synonyms") else None)
+    with naming_done(done, text):
+        parses = [parse_command(spoken(t), library, vocabulary) for t in (*done, text)]
+        return build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=map,
+                             vocabulary=vocabulary if hasattr(vocabulary, "synonyms") else None)
+
+
+@contextlib.contextmanager
+def naming_done(done: Sequence[str], text: str) -> Iterator[None]:
+    """Say which ``--done`` command a refusal is about: a SealError located in one of them (not in the
+    command itself) gets ``in --done '...':`` before its message, so "column 7" points into that one."""
+    from seal_cli.planning.grounding import spoken
+
+    try:
+        yield
+    except SealError as exc:
+        line = exc.source_line      # the text, or its start (a command too long is shown cut)
+        which = None if line is None or spoken(text).startswith(line) else \
+            next((t for t in done if spoken(t).startswith(line)), None)
+        if which is None:
+            raise
+        shown = which if len(which) <= 60 else which[:57] + "..."
+        raise SealError(f"in --done {shown!r}: {exc.message}", exc.where, source_line=line,
+                        hint=exc.hint) from None

@@ -126,3 +126,28 @@ def test_where_a_theme_is_said_to_be_is_where_it_is_taken_from(library: Library)
     with pytest.raises(SealError, match=re.escape("the apartment has no garage; its rooms are")) as refused:
         problem_of_text("wash the cup in the garage", library, map=apartment)
     assert refused.value.where is not None and refused.value.where.column == 6
+
+
+def test_a_refusal_in_a_done_command_names_the_done_option(library: Library) -> None:
+    """``--done "go to the garage"`` on a map without one: the column points into the --done text, so
+    the message says which it is; a refusal of the command itself stays as it was."""
+    from seal_cli.errors import SealError
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.policies import make_policy
+
+    m = load_map("apartment")
+    with pytest.raises(SealError) as done:
+        problem_of_text("go to the kitchen", library, done=["go to the garage"], map=m.known())
+    assert done.value.message.startswith("in --done 'go to the garage': the apartment has no garage")
+    assert done.value.column == 7 and done.value.source_line == "go to the garage"
+    with pytest.raises(SealError) as itself:
+        problem_of_text("go to the garage", library, done=["go to the kitchen"], map=m.known())
+    assert itself.value.message.startswith("the apartment has no garage")
+    with pytest.raises(SealError, match=r"in --done 'x{57}\.\.\.': command too long"):
+        problem_of_text("go to the kitchen", library, done=["x" * 2000])
+    import numpy as np
+
+    with pytest.raises(SealError, match="in --done 'fly me to the garage'"):
+        run_on_map(m, "go to the kitchen", library, make_policy("sefm"), rng=np.random.default_rng(0),
+                   done=["fly me to the garage"])
