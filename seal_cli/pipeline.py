@@ -157,6 +157,7 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
     from seal_cli.sim.policies import make_policy
 
     if holding is not None:
+        m.check_holding(holding)
         m = replace(m, robot=Robot(m.robot.pose, holding))
     known = vocabulary_of_map(m)
     vocabulary = known if vocabulary is None else vocabulary.restricted_to(known.classes)

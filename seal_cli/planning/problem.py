@@ -67,6 +67,10 @@ INDEFINITE = frozenset({"something", "anything", "everything", "nothing"})
 """Pronouns that name a thing of their own rather than an antecedent."""
 
 
+HELD_PRONOUNS = frozenset({"it", "this", "that"})
+"""Pronouns that, with nothing before them in the command, call what the robot holds."""
+
+
 def instance_names(cls: str, n: int) -> tuple[str, ...]:
     """The names of ``n`` things of a class when nothing else is named: ``apple``, ``apple_2``, …"""
     key = class_key(cls)
@@ -103,6 +107,9 @@ class Things:
         """The room of each of the map's places that lies in one, and of each of its things on no place."""
         self.facts: set[Fact] = set()
         self.robot_holding: str | None = None
+        self.held: str | None = None
+        """What the robot holds as the command starts (``--holding``, else the map's robot): what "it" calls
+        when nothing before it in the command does ("put it in the sink")."""
         self.people: set[str] = set()
         """The people the command names."""
         self.roles_said: set[str] = set()
@@ -185,6 +192,8 @@ class Things:
         """The world's facts and the robot's hand; ``holding`` (a class) overrides the map's robot."""
         if holding:
             check_class_name(holding, "holding")
+            if self.map is not None:
+                self.map.check_holding(holding)
         held = holding or self.robot_holding
         name = self.name(held) if held else None
         facts = {f for f in self.facts if not (f.predicate == "in" and f.args[0] == name)}
@@ -259,6 +268,8 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
     if word in INDEFINITE and things.map is not None and category not in ("message", "question"):
         raise _located(_unnamed_kind(phrase, things.map), phrase, text)
     if word in PRONOUNS and word not in PERSON_PRONOUNS and word not in INDEFINITE:
+        if things.held and word in HELD_PRONOUNS:
+            return (things.name(things.held),)
         raise _located(f"cannot tell what {phrase.text!r} refers to: nothing before it in the command fits",
                        phrase, text)
     if things.names is not None and (on_map := _on_map(phrase, things, text, category, asked)) is not None:
@@ -563,6 +574,11 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
                   map: Map | None = None, vocabulary: Any = None) -> Problem:
     """The commanded frames of a parse and the state they start from (see the module's docstring)."""
     things = Things(library.taxonomy, map)
+    if holding:
+        check_class_name(holding, "holding")
+        if map is not None:
+            map.check_holding(holding)
+    things.held = holding or things.robot_holding
     if vocabulary is not None:      # the names a vocabulary gives its classes name them too
         things.synonyms = {class_key(c): tuple(n) for c, n in zip(vocabulary.classes, vocabulary.synonyms,
                                                                    strict=True)}

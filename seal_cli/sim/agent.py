@@ -1565,7 +1565,7 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
     items += [Item(key, PERSON, at, movable=False) for key, at in [*people, (SPEAKER, m.speaker_at)]]
     holding = None
     if m.robot.holding:
-        holding = f"{m.robot.holding}_held"
+        holding = f"{m.robot.holding}_{counts.get(m.robot.holding, 0) + 1}"   # the next of its class: "cup_2"
         items.append(Item(holding, m.robot.holding, m.robot.xy, movable=True, parent=HAND))
     grid_free = np.asarray(m.grid.free_mask, dtype=bool)
     cells = max(0, int(math.ceil(robot_radius / m.grid.resolution)) - 1)

@@ -151,3 +151,24 @@ def test_a_refusal_in_a_done_command_names_the_done_option(library: Library) -> 
     with pytest.raises(SealError, match="in --done 'fly me to the garage'"):
         run_on_map(m, "go to the kitchen", library, make_policy("sefm"), rng=np.random.default_rng(0),
                    done=["fly me to the garage"])
+
+
+@pytest.mark.parametrize(("holding", "why"), [
+    ("fridge_1", "a place of this map (fixed)"), ("kitchen", "a room of this map"), ("Anna", "a person of this map"),
+    ("me", "a person of this map"), ("sofa", "the class of the place sofa_1 (fixed)")])
+def test_holding_what_cannot_be_held_is_refused_naming_the_option(library: Library, holding: str, why: str) -> None:
+    """``--holding fridge_1`` planned "Place(theme=fridge_1)" and the run put the fridge on the sofa."""
+    import numpy as np
+
+    from seal_cli.errors import SealError
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.policies import make_policy
+
+    m = load_map("apartment")
+    message = f"--holding {holding!r} is {why}; the robot can hold only a thing it picks up"
+    with pytest.raises(SealError, match=re.escape(message)):
+        problem_of_text("put it on the sofa", library, holding=holding, map=m.known())
+    with pytest.raises(SealError, match=re.escape(message)):
+        run_on_map(m, "go to the kitchen", library, make_policy("sefm"), rng=np.random.default_rng(0), holding=holding)
+    assert problem_of_text("put it in the sink", library, holding="cup", map=m.known()).commanded
