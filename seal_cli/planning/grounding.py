@@ -73,7 +73,7 @@ DESCRIBING = frozenset({"other", "same", "next", "last", "bottom", "far", "near"
 """English words before a thing's name that pick one of its kind ("the *other* table"), not a kind."""
 
 DROPPED = frozenset({"the", "a", "an", "my", "our", "your", "his", "her", "their", "this", "that", "these",
-                     "those", "some", "any"})
+                     "those", "some", "any", "all", "every", "each", "both"})
 
 
 WHERE_TYPES = frozenset({"location", "place", "room"})

@@ -351,7 +351,7 @@ class Agent:
         todo = list(commanded)
         while todo and (already := self.already_so(todo[0])) is not None:
             skipped = todo.pop(0)
-            self.say("done", f"{already}: {skipped} is not done", frame=str(skipped))
+            self.say("done", f"{already}, so {skipped} needs no doing", frame=str(skipped))
         self.todo = todo
         try:
             steps = self.planner(todo, self.library, self.state)
@@ -377,7 +377,7 @@ class Agent:
                 continue
             if outcome.reason is Reason.ALREADY:     # what the next commanded frame would do is so already
                 skipped = todo.pop(0)
-                self.say("done", f"{outcome.message}: {skipped} is not done", frame=str(skipped))
+                self.say("done", f"{outcome.message}, so {skipped} needs no doing", frame=str(skipped))
                 try:
                     self.steps, self.index = self.planner(todo, self.library, self.resync(self.state)), 0
                 except SealError as error:

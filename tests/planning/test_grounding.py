@@ -263,6 +263,6 @@ def test_a_thing_on_no_place_in_the_room_is_there_already_for_plan_and_run_alike
                                    "--particles", "50", "--json"])
     report = json.loads(run.stdout)
     assert report["completed"] and report["executed"] == []
-    assert any(r["text"] == "umbrella_1 is in the waiting room already: Bring(theme=umbrella, goal=waiting_room) "
-               "is not done" for r in report["records"])
+    assert any(r["text"] == "umbrella_1 is in the waiting room already, so Bring(theme=umbrella, goal=waiting_room) "
+               "needs no doing" for r in report["records"])
     assert not any("picked up" in r["text"] for r in report["records"])
