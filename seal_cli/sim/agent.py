@@ -817,12 +817,20 @@ class Agent:
             answer = self.where_is(target)
             self.answer(f"yes: {answer}" if question is not None and question.kind == "whether" else answer)
             return Outcome(True, answer)
-        no = f"nobody {where} (it looked all over it)" if complete else \
-            f"nobody seen {where}, but it could not look all over it ({complete.message})"
+        but = self.but_you(self.room(ground))
+        no = f"nobody {where}{but} (it looked all over it)" if complete else \
+            f"nobody seen {where}{but}, but it could not look all over it ({complete.message})"
         self.answer(no)
         if question is not None and question.kind == "whether":
             return Outcome(True, no)
         return Fatal(False, no, Reason.NOT_FOUND, value)
+
+    def but_you(self, room: Any) -> str:
+        """" but you" when the speaker stands in the room asked about ("is anyone in the living room?" said
+        there: "nobody in the living room but you"), else ""."""
+        speaker = self.world.items.get(SPEAKER)
+        return " but you" if speaker is not None and room is not None and bool(room.contains([speaker.at])[0]) \
+            else ""
 
     def people_seen_in(self, room: Any) -> list[str]:
         """The people (not the speaker) the robot's last looks saw in a room."""
@@ -964,7 +972,7 @@ class Agent:
         where, found, complete = self.look_over(question.about, peek=question.asks_for != "person")
         if question.asks_for == "person":
             names = self.people_seen_in(self.room(question.about))
-            nothing = f"nobody {where}"
+            nothing = f"nobody {where}{self.but_you(self.room(question.about))}"
         else:
             names = [k.id for k in found]
             nothing = f"nothing {where}"

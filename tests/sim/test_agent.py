@@ -205,3 +205,17 @@ def test_a_heater_left_open_is_closed_before_it_is_switched_on(library: Library)
     assert acts.index("closed microwave_1") + 1 == acts.index("switched microwave_1 on")
     assert s.world.has("microwave_1", "on") and not s.world.items["microwave_1"].is_open
     assert s.world.items["apple_1"].parent == "microwave_1"
+
+
+@pytest.mark.parametrize(("text", "answer"), [
+    ("is anyone in the living room?", "nobody in the living room but you (it looked all over it)"),
+    ("who is in the living room?", "nobody in the living room but you"),
+    ("is anyone in the dining room?", "nobody in the dining room (it looked all over it)"),
+])
+def test_nobody_but_the_speaker_is_said_so(library: Library, text: str, answer: str) -> None:
+    """The apartment's speaker stands in the living room: "nobody" there is "nobody but you"."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
+
+    agent, result = run_on_map(load_map("apartment"), text, library, make_policy("sefm"), rng=np.random.default_rng(0))
+    assert result.completed and agent.answers == [answer]
