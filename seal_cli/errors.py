@@ -40,10 +40,21 @@ class Where:
         return ":".join(parts)
 
 
+EXCERPT = 100
+"""The most characters of a source line a message shows: a longer line (a minified file, 20,000 brackets)
+is cut to this many around the column, with "…" where it was cut."""
+
+
 def caret(source_line: str, column: int) -> str:
-    """The source line with a caret under the 1-based column."""
+    """The source line (cut to :data:`EXCERPT` characters around the column) with a caret under the
+    1-based column."""
     line = source_line.rstrip("\n")
-    pad = "".join("\t" if ch == "\t" else " " for ch in line[: max(column - 1, 0)])
+    before = max(column - 1, 0)
+    if len(line) > EXCERPT:
+        start = max(0, min(before - EXCERPT // 2, len(line) - EXCERPT))
+        head, tail = ("…" if start else ""), ("…" if start + EXCERPT < len(line) else "")
+        line, before = head + line[start:start + EXCERPT] + tail, before - start + len(head)
+    pad = "".join("\t" if ch == "\t" else " " for ch in line[:before])
     return f"{line}\n{pad}^"
 
 

@@ -300,6 +300,10 @@ class Outputs:
         for option, value in outputs.items():
             if value is None:
                 continue
+            if str(value).strip() in ("", "-"):     # "-" would be a file called "-", not standard output
+                kind = "folder" if folders and option in folders else "file"
+                raise SealError(f"{option} {str(value)!r}: seal writes this output into a {kind}, not to standard "
+                                f"output; give a {kind} name")
             if folders and option in folders:
                 folder = _folder(Path(value), option)
                 self._folders[option] = folder

@@ -29,7 +29,7 @@ from seal_cli.language.grounding import Vocabulary, vocabulary_of_map
 from seal_cli.language.parser import Parse, parse_command
 from seal_cli.planning import plan as planning
 from seal_cli.planning.plan import MAX_NODES, Plan
-from seal_cli.planning.problem import Things, build_problem, parse_to_plan, problem_of_text
+from seal_cli.planning.problem import Things, build_problem, naming_done, parse_to_plan, problem_of_text
 from seal_cli.planning.state import State
 from seal_cli.sim.unsearched import SEARCH_END
 
@@ -157,12 +157,14 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
     from seal_cli.sim.policies import make_policy
 
     if holding is not None:
+        m.check_holding(holding)
         m = replace(m, robot=Robot(m.robot.pose, holding))
     known = vocabulary_of_map(m)
     vocabulary = known if vocabulary is None else vocabulary.restricted_to(known.classes)
-    parses = [parse_to_plan(t, library, vocabulary) for t in (*done, text)]
-    problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=m.known(),
-                            vocabulary=vocabulary)
+    with naming_done(done, text):
+        parses = [parse_to_plan(t, library, vocabulary) for t in (*done, text)]
+        problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=m.known(),
+                                vocabulary=vocabulary)
     questions = read_questions(parses[-1], problem.commanded, MapNames(m, library.taxonomy))
     agent = Agent(scene_from_map(m, library), library, policy, rng=rng, budget=budget, observers=observers,
                   classes=problem.state.classes, sweeper=lambda: make_policy("coverage"), questions=questions,

@@ -32,3 +32,15 @@ def test_several_errors_are_sorted_by_file_line_and_column() -> None:
     assert errors.to_json() == {"problems": [p.to_json() for p in errors.problems]}
     assert SealErrors([SealError("one")]).message == "1 problem"
     assert isinstance(errors, SealError)
+
+
+def test_a_long_source_line_is_cut_around_the_column() -> None:
+    """20,000 brackets on one line: the message shows a window around the column, the caret under it."""
+    from seal_cli.errors import EXCERPT
+
+    line = "[" * 10_000 + "x" + "]" * 10_000
+    shown, mark = caret(line, 10_001).split("\n")
+    assert shown.startswith("…") and shown.endswith("…") and len(shown) == EXCERPT + 2
+    assert shown[len(mark) - 1] == "x" and mark.strip() == "^"
+    start, _ = caret("y" + "a" * 500, 1).split("\n")
+    assert start.startswith("y") and start.endswith("…") and caret("short", 3) == "short\n  ^"

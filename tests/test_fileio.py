@@ -105,3 +105,15 @@ def test_a_control_character_yaml_refuses_is_located(tmp_path: Path, text: str, 
         read_yaml(path)
     assert (caught.value.line, caught.value.column) == (line, column)
     assert "control character" in caught.value.message and "<unicode string>" not in str(caught.value)
+
+
+def test_a_dash_for_an_output_is_refused_not_written_as_a_file(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """``--png -`` would write a file called "-"; seal's outputs are files (or folders), never standard output."""
+    from seal_cli.fileio import Outputs
+
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(SealError, match=r"--png '-': seal writes this output into a file, not to standard output"):
+        Outputs({"--png": "-"})
+    with pytest.raises(SealError, match=r"--pddl ' ': seal writes this output into a folder"):
+        Outputs({"--pddl": " "}, folders={"--pddl": ("domain.pddl",)})
+    assert list(tmp_path.iterdir()) == []

@@ -524,6 +524,8 @@ def _enforced() -> bool:
 
 
 def cases(seed: int = 0, count: int = 320) -> list[Case]:
-    """The issue's cases, the hostile inputs written by hand, the reviewer's (each with the shape of
-    its message), then ``count`` generated ones."""
-    return [*issue_cases(), *hostile_cases(), *review_cases(), *generated_cases(seed, count)]
+    """The issue's cases, the hostile inputs written by hand, the reviewer's and a new user's (each with the
+    shape of its message), then ``count`` generated ones."""
+    from seal_cli.bench.reliability_users import user_cases
+
+    return [*issue_cases(), *hostile_cases(), *review_cases(), *user_cases(), *generated_cases(seed, count)]

@@ -318,7 +318,8 @@ ROOM_WORDS = frozenset({"kitchen", "bathroom", "bedroom", "living_room", "dining
     "hall", "hallway", "corridor", "office", "study", "attic", "basement", "cellar", "laundry", "laundry_room",
     "utility_room", "garden", "balcony", "porch", "lounge", "den", "nursery", "playroom", "lobby", "entrance",
     "foyer", "staircase", "terrace", "patio", "yard", "backyard", "guest_room", "washroom", "restroom",
-    "shower_room", "gym", "library", "toilet_room", "cloakroom", "conservatory", "sunroom", "workshop"})
+    "shower_room", "gym", "library", "toilet_room", "cloakroom", "conservatory", "sunroom", "workshop", "upstairs",
+    "downstairs"})
 """English names of the rooms of a house (general knowledge, not any corpus): a phrase ending in
 one, or in "room", names a room. Kept in English, not in the library's types, because a class a category
 lists is known *not* to be in the others ("open the garage" must stay possible)."""

@@ -507,6 +507,25 @@ class Map:
         """The place of that name, or None."""
         return self._place_by_key.get(class_key(name))
 
+    def unholdable(self, name: str) -> str | None:
+        """Why the robot cannot hold a thing of this name on this map, or None: it names a room, a place,
+        a person (or the speaker), or the class of a place (a fixed thing: "fridge" where fridge_1 stands)."""
+        key = class_key(name)
+        if key in self._room_by_key:
+            return "a room of this map"
+        if key in self._place_by_key:
+            return "a place of this map (fixed)"
+        if key == SPEAKER or self.person(name) is not None:
+            return "a person of this map"
+        fixed = next((p.name for p in self.places if p.cls == key), None)
+        return None if fixed is None else f"the class of the place {fixed} (fixed)"
+
+    def check_holding(self, holding: str) -> None:
+        """Refuse ``--holding`` naming what the robot cannot hold on this map (:meth:`unholdable`)."""
+        why = self.unholdable(holding)
+        if why is not None:
+            raise SealError(f"--holding {holding!r} is {why}; the robot can hold only a thing it picks up")
+
     def places_of_class(self, cls: str) -> tuple[Place, ...]:
         key = class_key(cls)
         return tuple(p for p in self.places if p.cls == key)
@@ -913,7 +932,15 @@ def _priors(m: Map, known: set[str]) -> Iterator[SealError]:
 
 
 def _objects(m: Map, known: set[str]) -> Iterator[SealError]:
+    taken = {class_key(p.name): "place" for p in m.places} | {p.key: "person" for p in m.people}
+    counts: dict[str, int] = {}
     for i, obj in enumerate(m.objects):
+        counts[obj.cls] = counts.get(obj.cls, 0) + 1      # the world calls it cls_N (sim.agent.scene_from_map)
+        called = f"{obj.cls}_{counts[obj.cls]}"
+        if class_key(called) in taken:
+            yield SealError(f"object {obj.cls} is called {called} in a run, which is already the name of a "
+                            f"{taken[class_key(called)]}; rename the {taken[class_key(called)]} or give the object "
+                            "another class", m.where("objects", i, "class"))
         point = np.array([obj.at])
         if _outside(m, obj.at):
             yield SealError(f"object {obj.cls} at {_pt(obj.at)} is {_off(m)}", m.where("objects", i, "at"))
@@ -930,6 +957,10 @@ def _objects(m: Map, known: set[str]) -> Iterator[SealError]:
 
 def _robot(m: Map) -> Iterator[SealError]:
     xy = m.robot.xy
+    why = m.unholdable(m.robot.holding) if m.robot.holding else None
+    if why is not None:
+        yield SealError(f"the robot holds {m.robot.holding!r}, which is {why}; it can hold only a thing it picks up",
+                        m.where("robot", "holding"))
     if _outside(m, xy):
         yield SealError(f"robot pose {_pt(xy)} is {_off(m)}", m.where("robot", "pose"))
     elif m.is_occupied(np.array([xy]))[0]:

@@ -73,7 +73,7 @@ DESCRIBING = frozenset({"other", "same", "next", "last", "bottom", "far", "near"
 """English words before a thing's name that pick one of its kind ("the *other* table"), not a kind."""
 
 DROPPED = frozenset({"the", "a", "an", "my", "our", "your", "his", "her", "their", "this", "that", "these",
-                     "those", "some", "any"})
+                     "those", "some", "any", "all", "every", "each", "both"})
 
 
 WHERE_TYPES = frozenset({"location", "place", "room"})
@@ -140,10 +140,10 @@ class MapNames:
     def referents(self) -> tuple[Referent, ...]:
         synonyms = self.taxonomy.names
         found: list[Referent] = []
-        for room in self.map.rooms:
-            name = words_of(room.name)
+        for room in self.map.rooms:        # a room by its name, then its kind's other names ("the lounge")
+            said = (words_of(room.name), *map(words_of, synonyms.get(class_key(room.name), ())))
             found.append(Referent(class_key(room.name), "room", class_key(room.name), class_key(room.name),
-                                  (name,), frozenset()))
+                                  tuple(dict.fromkeys(w for w in said if w)), frozenset(), 1))
         for place in self.map.places:
             spelled = [re.sub(r"[_ ]?\d+$", "", place.name), place.name, place.cls,
                        *synonyms.get(place.cls, ())]

@@ -34,10 +34,11 @@ Then the frames of each ``done`` command, grounded the same way, are applied in 
 
 from __future__ import annotations
 
+import contextlib
 import itertools
 import math
 import re
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any
 
@@ -64,6 +65,10 @@ __all__ = ["MAX_COMMANDED", "MAX_COUNT", "Problem", "Things", "build_problem", "
 
 INDEFINITE = frozenset({"something", "anything", "everything", "nothing"})
 """Pronouns that name a thing of their own rather than an antecedent."""
+
+
+HELD_PRONOUNS = frozenset({"it", "this", "that"})
+"""Pronouns that, with nothing before them in the command, call what the robot holds."""
 
 
 def instance_names(cls: str, n: int) -> tuple[str, ...]:
@@ -102,6 +107,9 @@ class Things:
         """The room of each of the map's places that lies in one, and of each of its things on no place."""
         self.facts: set[Fact] = set()
         self.robot_holding: str | None = None
+        self.held: str | None = None
+        """What the robot holds as the command starts (``--holding``, else the map's robot): what "it" calls
+        when nothing before it in the command does ("put it in the sink")."""
         self.people: set[str] = set()
         """The people the command names."""
         self.roles_said: set[str] = set()
@@ -184,6 +192,8 @@ class Things:
         """The world's facts and the robot's hand; ``holding`` (a class) overrides the map's robot."""
         if holding:
             check_class_name(holding, "holding")
+            if self.map is not None:
+                self.map.check_holding(holding)
         held = holding or self.robot_holding
         name = self.name(held) if held else None
         facts = {f for f in self.facts if not (f.predicate == "in" and f.args[0] == name)}
@@ -228,6 +238,15 @@ def _said(phrase: Phrase | None, name: str) -> str:
     return f"{phrase.text!r} ({name})" if phrase is not None and phrase.text else name
 
 
+def _unnamed_kind(phrase: Phrase, map: Map) -> str:
+    """The refusal of "something", "anything" as the thing of a frame on a map: no kind to look for
+    (a search for a class called "something" would sweep the house and say "no something")."""
+    kinds = sorted({class_key(c) for c in (*map.priors, *(o.cls for o in map.objects))})
+    known = f" (the {map.name} knows of {', '.join(kinds)})" if kinds else ""
+    return (f"{phrase.text!r} does not say what kind of thing: name it{known}, or ask what is on or in "
+            "a place (\"what is in the fridge?\")")
+
+
 def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], things: Things,
             text: str, category: str = "thing", asked: bool = False, carried: bool = False) -> tuple[str, ...]:
     """The things a phrase names: its antecedent's for a pronoun, else the map's thing it calls,
@@ -247,7 +266,11 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
         raise _located(f"{phrase.text!r} refers to the {role} of frame {index + 1}, which the command lacks",
                        phrase, text)
     word = phrase.head.lower()
+    if word in INDEFINITE and things.map is not None and category not in ("message", "question"):
+        raise _located(_unnamed_kind(phrase, things.map), phrase, text)
     if word in PRONOUNS and word not in PERSON_PRONOUNS and word not in INDEFINITE:
+        if things.held and word in HELD_PRONOUNS:
+            return (things.name(things.held),)
         raise _located(f"cannot tell what {phrase.text!r} refers to: nothing before it in the command fits",
                        phrase, text)
     if things.names is not None and (on_map := _on_map(phrase, things, text, category, asked, carried)) is not None:
@@ -562,6 +585,11 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
                   map: Map | None = None, vocabulary: Any = None) -> Problem:
     """The commanded frames of a parse and the state they start from (see the module's docstring)."""
     things = Things(library.taxonomy, map)
+    if holding:
+        check_class_name(holding, "holding")
+        if map is not None:
+            map.check_holding(holding)
+    things.held = holding or things.robot_holding
     if vocabulary is not None:      # the names a vocabulary gives its classes name them too
         things.synonyms = {class_key(c): tuple(n) for c, n in zip(vocabulary.classes, vocabulary.synonyms,
                                                                    strict=True)}
@@ -623,9 +651,29 @@ def problem_of_text(text: str, library: Library, *, holding: str | None = None, 
         from seal_cli.language.grounding import vocabulary_of_map
 
         vocabulary = vocabulary_of_map(map)
-    parses = [parse_to_plan(t, library, vocabulary) for t in (*done, text)]
-    return build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=map,
-                         vocabulary=vocabulary if hasattr(vocabulary, "synonyms") else None)
+    with naming_done(done, text):
+        parses = [parse_to_plan(t, library, vocabulary) for t in (*done, text)]
+        return build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=map,
+                             vocabulary=vocabulary if hasattr(vocabulary, "synonyms") else None)
+
+
+@contextlib.contextmanager
+def naming_done(done: Sequence[str], text: str) -> Iterator[None]:
+    """Say which ``--done`` command a refusal is about: a SealError located in one of them (not in the
+    command itself) gets ``in --done '...':`` before its message, so "column 7" points into that one."""
+    from seal_cli.planning.grounding import spoken
+
+    try:
+        yield
+    except SealError as exc:
+        line = exc.source_line      # the text, or its start (a command too long is shown cut)
+        which = None if line is None or spoken(text).startswith(line) else \
+            next((t for t in done if spoken(t).startswith(line)), None)
+        if which is None:
+            raise
+        shown = which if len(which) <= 60 else which[:57] + "..."
+        raise SealError(f"in --done {shown!r}: {exc.message}", exc.where, source_line=line,
+                        hint=exc.hint) from None
 
 
 def parse_to_plan(text: str, library: Library, vocabulary: Any = None) -> Parse:

@@ -351,7 +351,7 @@ class Agent:
         todo = list(commanded)
         while todo and (already := self.already_so(todo[0])) is not None:
             skipped = todo.pop(0)
-            self.say("done", f"{already}: {skipped} is not done", frame=str(skipped))
+            self.say("done", f"{already}, so {skipped} needs no doing", frame=str(skipped))
         self.todo = todo
         try:
             steps = self.planner(todo, self.library, self.state)
@@ -377,7 +377,7 @@ class Agent:
                 continue
             if outcome.reason is Reason.ALREADY:     # what the next commanded frame would do is so already
                 skipped = todo.pop(0)
-                self.say("done", f"{outcome.message}: {skipped} is not done", frame=str(skipped))
+                self.say("done", f"{outcome.message}, so {skipped} needs no doing", frame=str(skipped))
                 try:
                     self.steps, self.index = self.planner(todo, self.library, self.resync(self.state)), 0
                 except SealError as error:
@@ -819,12 +819,20 @@ class Agent:
             answer = self.where_is(target)
             self.answer(f"yes: {answer}" if question is not None and question.kind == "whether" else answer)
             return Outcome(True, answer)
-        no = f"nobody {where} (it looked all over it)" if complete else \
-            f"nobody seen {where}, but it could not look all over it ({complete.message})"
+        but = self.but_you(self.room(ground))
+        no = f"nobody {where}{but} (it looked all over it)" if complete else \
+            f"nobody seen {where}{but}, but it could not look all over it ({complete.message})"
         self.answer(no)
         if question is not None and question.kind == "whether":
             return Outcome(True, no)
         return Fatal(False, no, Reason.NOT_FOUND, value)
+
+    def but_you(self, room: Any) -> str:
+        """" but you" when the speaker stands in the room asked about ("is anyone in the living room?" said
+        there: "nobody in the living room but you"), else ""."""
+        speaker = self.world.items.get(SPEAKER)
+        return " but you" if speaker is not None and room is not None and bool(room.contains([speaker.at])[0]) \
+            else ""
 
     def people_seen_in(self, room: Any) -> list[str]:
         """The people (not the speaker) the robot's last looks saw in a room."""
@@ -966,7 +974,7 @@ class Agent:
         where, found, complete = self.look_over(question.about, peek=question.asks_for != "person")
         if question.asks_for == "person":
             names = self.people_seen_in(self.room(question.about))
-            nothing = f"nobody {where}"
+            nothing = f"nobody {where}{self.but_you(self.room(question.about))}"
         else:
             names = [k.id for k in found]
             nothing = f"nothing {where}"
@@ -1568,7 +1576,7 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
     items += [Item(key, PERSON, at, movable=False) for key, at in [*people, (SPEAKER, m.speaker_at)]]
     holding = None
     if m.robot.holding:
-        holding = f"{m.robot.holding}_held"
+        holding = f"{m.robot.holding}_{counts.get(m.robot.holding, 0) + 1}"   # the next of its class: "cup_2"
         items.append(Item(holding, m.robot.holding, m.robot.xy, movable=True, parent=HAND))
     grid_free = np.asarray(m.grid.free_mask, dtype=bool)
     cells = max(0, int(math.ceil(robot_radius / m.grid.resolution)) - 1)

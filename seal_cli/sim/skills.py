@@ -400,6 +400,7 @@ def run_text_on_map(m: Map, text: str, library: Library, policy: Any, *, rng: np
     from seal_cli.sim.agent import scene_from_map
 
     if holding is not None:
+        m.check_holding(holding)
         m = replace(m, robot=Robot(m.robot.pose, holding))
     result: SkillResult = policy.run(scene_from_map(m, library), library, text, rng=rng, budget=budget,
                                      observers=observers)

@@ -155,3 +155,49 @@ def replace_span(phrase, start: int):  # type: ignore[no-untyped-def]
     from dataclasses import replace
 
     return replace(phrase, span=(start, start + len(phrase.text)))
+
+
+def test_a_refusal_in_a_done_command_names_the_done_option(library: Library) -> None:
+    """``--done "go to the garage"`` on a map without one: the column points into the --done text, so
+    the message says which it is; a refusal of the command itself stays as it was."""
+    from seal_cli.errors import SealError
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.policies import make_policy
+
+    m = load_map("apartment")
+    with pytest.raises(SealError) as done:
+        problem_of_text("go to the kitchen", library, done=["go to the garage"], map=m.known())
+    assert done.value.message.startswith("in --done 'go to the garage': the apartment has no garage")
+    assert done.value.column == 7 and done.value.source_line == "go to the garage"
+    with pytest.raises(SealError) as itself:
+        problem_of_text("go to the garage", library, done=["go to the kitchen"], map=m.known())
+    assert itself.value.message.startswith("the apartment has no garage")
+    with pytest.raises(SealError, match=r"in --done 'x{57}\.\.\.': command too long"):
+        problem_of_text("go to the kitchen", library, done=["x" * 2000])
+    import numpy as np
+
+    with pytest.raises(SealError, match="in --done 'fly me to the garage'"):
+        run_on_map(m, "go to the kitchen", library, make_policy("sefm"), rng=np.random.default_rng(0),
+                   done=["fly me to the garage"])
+
+
+@pytest.mark.parametrize(("holding", "why"), [
+    ("fridge_1", "a place of this map (fixed)"), ("kitchen", "a room of this map"), ("Anna", "a person of this map"),
+    ("me", "a person of this map"), ("sofa", "the class of the place sofa_1 (fixed)")])
+def test_holding_what_cannot_be_held_is_refused_naming_the_option(library: Library, holding: str, why: str) -> None:
+    """``--holding fridge_1`` planned "Place(theme=fridge_1)" and the run put the fridge on the sofa."""
+    import numpy as np
+
+    from seal_cli.errors import SealError
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.policies import make_policy
+
+    m = load_map("apartment")
+    message = f"--holding {holding!r} is {why}; the robot can hold only a thing it picks up"
+    with pytest.raises(SealError, match=re.escape(message)):
+        problem_of_text("put it on the sofa", library, holding=holding, map=m.known())
+    with pytest.raises(SealError, match=re.escape(message)):
+        run_on_map(m, "go to the kitchen", library, make_policy("sefm"), rng=np.random.default_rng(0), holding=holding)
+    assert problem_of_text("put it in the sink", library, holding="cup", map=m.known()).commanded

@@ -229,3 +229,17 @@ def test_a_question_told_to_someone_is_found_out_then_told_and_a_what_question_l
     went = [r.text for r in heard if r.text.startswith("goes to ") and "look" not in r.text]
     assert [t.split(" (")[0] for t in went] == ["goes to dining_table_1", "goes to ben"]
     assert 'said "nothing on dining_table_1"' in [r.text for r in heard]
+
+
+@pytest.mark.parametrize(("text", "answer"), [
+    ("is anyone in the living room?", "nobody in the living room but you (it looked all over it)"),
+    ("who is in the living room?", "nobody in the living room but you"),
+    ("is anyone in the dining room?", "nobody in the dining room (it looked all over it)"),
+])
+def test_nobody_but_the_speaker_is_said_so(library: Library, text: str, answer: str) -> None:
+    """The apartment's speaker stands in the living room: "nobody" there is "nobody but you"."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
+
+    agent, result = run_on_map(load_map("apartment"), text, library, make_policy("sefm"), rng=np.random.default_rng(0))
+    assert result.completed and agent.answers == [answer]
