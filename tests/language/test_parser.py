@@ -247,6 +247,20 @@ def test_result_words_listed_with_commas(library: Library) -> None:
     assert frames_of("Put a cooked, rinsed egg on the counter", library) == ["Heat", "Clean", "Place"]
 
 
+def test_a_comma_between_adjectives_is_one_noun_phrase(library: Library) -> None:
+    assert elements("pick up a round, gold object", library) == {"theme": "object"}
+    assert elements("put the potato on the small, black shelf", library) == {"theme": "potato", "goal": "shelf"}
+    theme = parse_command("put a red, green and blue cup on the table", library).frames[0].elements["theme"]
+    assert [c.head for c in theme.conjuncts] == ["red", "green", "cup"]     # "and" closes a list: as before
+    theme = parse_command("take the knife, fork and spoon to the sink", library).frames[0].elements["theme"]
+    assert [c.head for c in theme.conjuncts] == ["knife", "fork", "spoon"]
+
+
+def test_an_adverb_before_a_place_keeps_the_noun_the_head(library: Library) -> None:
+    assert elements("place the pen on the shelf just below the keys", library)["goal"] == "shelf"
+    assert elements("grab a cleaning supply in the kitchen", library)["theme"] == "supply"   # a noun too
+
+
 def test_use_without_a_purpose_is_no_verb(library: Library) -> None:
     with pytest.raises(CommandError, match="unknown verb 'use'"):
         parse_command("use the phone", library)

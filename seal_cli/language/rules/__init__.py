@@ -138,6 +138,7 @@ WORDS: tuple[Rule, ...] = (
     open_words.PARTICIPLE,
     open_words.RESULT,
     open_words.ADVERB,
+    open_words.ADVERB_OF_PLACE,
     open_words.NAME,
     open_words.LOWER_CASE_NAME,
     open_words.WORD,

@@ -3,10 +3,10 @@ other word (a noun or an adjective). Nothing here lists a word."""
 
 from __future__ import annotations
 
-from seal_cli.language.english import PARTICLES, PREPOSITIONS
-from seal_cli.language.morphology import gerund_lemma, in_dictionary, is_adverb
+from seal_cli.language.english import LOCATIVE, PARTICLES, PREPOSITIONS
+from seal_cli.language.morphology import adverb_no_noun, gerund_lemma, in_dictionary, is_adverb
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import CLOSED, State
+from seal_cli.language.state import CLOSED, State, match_phrase
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 
@@ -40,6 +40,21 @@ def _adverb(s: State, i: int) -> Match | None:
     if not s.in_np() and low.isalpha() and is_adverb(low) and s.prev_tag() != Tag.DET:
         return s.emit(i, 1, Tag.PARTICLE)                         # "gather together", "put it carefully on ..."
     return None
+
+
+def _adverb_of_place(s: State, i: int) -> Match | None:
+    """A word that may be an adverb and is no noun, between a noun and a phrase of where: it says how near,
+    not what ("the shelf *just* below the keys", "a cabinet *directly* under the sink"); the noun before stays
+    the head ("a cleaning *supply* in the kitchen": "supply" is a noun too, the head)."""
+    low = s.words[i].lower
+    if s.prev_tag() not in (Tag.WORD, Tag.NAME) or not low.isalpha() or not adverb_no_noun(low) or \
+            low in s.lexicon.things or low in CLOSED:
+        return None
+    n = match_phrase(s.words, i + 1, PREPOSITIONS) if i + 1 < len(s.words) else 0
+    if not n or PREPOSITIONS[" ".join(w.lower for w in s.words[i + 1:i + 1 + n])] not in LOCATIVE or \
+            not s.np_starts(i + 1 + n):
+        return None
+    return s.emit(i, 1, Tag.PARTICLE)
 
 
 def _name(s: State, i: int) -> Match | None:
@@ -94,6 +109,11 @@ RESULT = Rule("result word", _result, (
 ADVERB = Rule("adverb", _adverb, (
     Example("put it carefully on the shelf", "carefully", Tag.PARTICLE),
 ), lambda low: low.isalpha() and is_adverb(low), "an adverb inside the clause")
+ADVERB_OF_PLACE = Rule("adverb of place", _adverb_of_place, (
+    Example("place the pen on the shelf just below the keys", "just", Tag.PARTICLE),
+    Example("put the mug in the cabinet just above the sink", "just", Tag.PARTICLE),
+), lambda low: low.isalpha() and adverb_no_noun(low),
+    "a word that may be an adverb and is no noun, after a noun and before a phrase of where: how near, not the head")
 NAME = Rule("name", _name, (
     Example("greet Mary Ann", "Mary Ann", Tag.NAME),
     Example("go to Emmas room", "Emmas", Tag.POSS),
