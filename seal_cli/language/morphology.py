@@ -22,7 +22,7 @@ from functools import lru_cache
 from pathlib import Path
 
 __all__ = ["adverb_no_noun", "gerund_lemma", "is_adjective", "is_adverb", "is_gradable", "is_plural", "noun_lemma",
-           "participles", "verb_lemma"]
+           "participles", "verb_lemma", "word_entries"]
 
 
 class _Table:
@@ -196,6 +196,11 @@ def is_adverb(word: str) -> bool:
     "carefully"; not "upright", also an adjective and a noun)."""
     entries = _WORDS.entries(word.lower())
     return bool(entries) and all(entry[0] == "adv" for entry in entries)
+
+
+def word_entries(word: str) -> list[list[str]]:
+    """lemminflect's entries for the word: [part of speech, lemma], one per reading."""
+    return list(_WORDS.entries(word.lower()))
 
 
 @lru_cache(maxsize=65536)

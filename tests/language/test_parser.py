@@ -261,6 +261,13 @@ def test_an_adverb_before_a_place_keeps_the_noun_the_head(library: Library) -> N
     assert elements("grab a cleaning supply in the kitchen", library)["theme"] == "supply"   # a noun too
 
 
+def test_an_ing_form_after_adjectives_names_a_kind_of_thing(library: Library) -> None:
+    assert elements("put the bottle in the blue recycling bin", library)["goal"] == "bin"
+    assert elements("put the mug on a small black shelving unit", library)["goal"] == "unit"
+    assert parse_command("find the person wearing glasses", library).frames[0].elements["theme"].head == "person"
+    assert parse_command("find the patient wearing glasses", library).frames[0].elements["theme"].head == "patient"
+
+
 def test_use_without_a_purpose_is_no_verb(library: Library) -> None:
     with pytest.raises(CommandError, match="unknown verb 'use'"):
         parse_command("use the phone", library)

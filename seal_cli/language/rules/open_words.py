@@ -4,7 +4,14 @@ other word (a noun or an adjective). Nothing here lists a word."""
 from __future__ import annotations
 
 from seal_cli.language.english import LOCATIVE, PARTICLES, PREPOSITIONS
-from seal_cli.language.morphology import adverb_no_noun, gerund_lemma, in_dictionary, is_adverb
+from seal_cli.language.morphology import (
+    adverb_no_noun,
+    gerund_lemma,
+    in_dictionary,
+    is_adverb,
+    is_gradable,
+    word_entries,
+)
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import CLOSED, State, match_phrase
 from seal_cli.language.tags import Tag
@@ -19,6 +26,30 @@ def _participle(s: State, i: int) -> Match | None:
     tag = Tag.VBG_T if s.np_starts(i + 1) and nxt not in PARTICLES else \
         Tag.VBG_P if nxt in PREPOSITIONS and s.np_starts(i + 2) else Tag.VBG_I
     return s.emit(i, 1, tag, gerund)
+
+
+def _noun_modifier(s: State, i: int) -> bool:
+    """Whether the -ing form at ``i`` says what kind of thing the noun after it is, in a phrase whose words
+    before it are adjectives ("the blue *recycling* bin", "a small black *shelving* unit", "the wooden
+    *dining* table"): a determiner, a number or a possessive, then adjectives (each gradable, or nothing
+    else: no noun such as "patient" or "the elderly"), then a noun. After a noun it stays a participle ("the
+    person *wearing* glasses")."""
+    out = s.out
+    if not gerund_lemma(s.words[i].lower) or not s.noun_follows(i + 1):
+        return False
+    k = len(out) - 1
+    while k >= 0 and out[k].tag == Tag.WORD and _adjective_only(s, out[k].lower):
+        k -= 1
+    return k < len(out) - 1 and k >= 0 and out[k].tag in (Tag.DET, Tag.NUM, Tag.POSS)
+
+
+def _adjective_only(s: State, low: str) -> bool:
+    kinds = {entry[0] for entry in word_entries(low)}
+    return "adj" in kinds and (is_gradable(low) or kinds == {"adj"}) and low not in s.lexicon.things
+
+
+def _kind_gerund(s: State, i: int) -> Match | None:
+    return s.emit(i, 1, Tag.WORD) if _noun_modifier(s, i) else None
 
 
 def _result(s: State, i: int) -> Match | None:
@@ -102,6 +133,11 @@ PARTICIPLE = Rule("participle after a noun", _participle, (
     Example("find the person sitting", "sitting", Tag.VBG_I),
 ), lambda low: bool(gerund_lemma(low)),
     "an -ing form after a noun, a pronoun or 'is': transitive, with a preposition, or bare")
+KIND_GERUND = Rule("-ing form of a kind of thing", _kind_gerund, (
+    Example("put the bottle in the blue recycling bin", "recycling", Tag.WORD),
+    Example("put the mug on a small black shelving unit", "shelving", Tag.WORD),
+), lambda low: bool(gerund_lemma(low)),
+    "an -ing form after an adjective that follows a determiner, before a noun: what kind of thing, no participle")
 RESULT = Rule("result word", _result, (
     Example("put a heated egg in the fridge", "heated", Tag.RESULT),
     Example("put the heated up egg in the fridge", "heated up", Tag.RESULT),
