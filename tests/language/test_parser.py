@@ -106,7 +106,8 @@ def test_particles_before_or_after_the_object(library: Library) -> None:
     for text in ("pick up the cup", "pick the cup up", "Pick the cup up from the table"):
         frame = parse_command(text, library).frames[0]
         assert (frame.frame, frame.lexical_unit, frame.elements["theme"].head) == ("Pick", "pick up", "cup")
-    for text in ("turn on the lamp", "turn the lamp on", "switch the lamp on please"):
+    for text in ("turn on the lamp", "turn the lamp on", "switch the lamp on please",
+                 "turn the lamp on that is on the table", "turn the lamp on that's on the desk"):
         frame = parse_command(text, library).frames[0]
         assert frame.frame == "ToggleOn" and frame.elements["theme"].head == "lamp"
 
