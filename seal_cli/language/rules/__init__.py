@@ -135,6 +135,7 @@ WORDS: tuple[Rule, ...] = (
     function_words.PARTITIVE,
     function_words.DETERMINER,
     function_words.PRONOUN,
+    open_words.FILLED_WITH,
     open_words.KIND_GERUND,
     open_words.PARTICIPLE,
     open_words.RESULT,

@@ -10,6 +10,7 @@ from seal_cli.language.morphology import (
     in_dictionary,
     is_adverb,
     is_gradable,
+    verb_lemma,
     word_entries,
 )
 from seal_cli.language.rule import Example, Match, Rule
@@ -46,6 +47,18 @@ def _noun_modifier(s: State, i: int) -> bool:
 def _adjective_only(s: State, low: str) -> bool:
     kinds = {entry[0] for entry in word_entries(low)}
     return "adj" in kinds and (is_gradable(low) or kinds == {"adj"}) and low not in s.lexicon.things
+
+
+def _filled_with(s: State, i: int) -> Match | None:
+    """A past participle between a noun and "with" and a noun phrase says what the thing holds, as "with"
+    alone does ("a bowl *filled* with water", "a plate *covered* with foil": "a bowl with water"): it is
+    dropped, the noun before stays the head."""
+    low = s.words[i].lower
+    if s.prev_tag() not in (Tag.WORD, Tag.NAME) or not low.endswith("ed") or s.next_lower(i) != "with" or \
+            not s.np_starts(i + 2):
+        return None
+    lemma = verb_lemma(low)
+    return Match(1) if lemma and lemma != low else None
 
 
 def _kind_gerund(s: State, i: int) -> Match | None:
@@ -133,6 +146,9 @@ PARTICIPLE = Rule("participle after a noun", _participle, (
     Example("find the person sitting", "sitting", Tag.VBG_I),
 ), lambda low: bool(gerund_lemma(low)),
     "an -ing form after a noun, a pronoun or 'is': transitive, with a preposition, or bare")
+FILLED_WITH = Rule("participle before with", _filled_with, (
+    Example("put a bowl filled with water in the cabinet", "filled", ""),
+), lambda low: low.endswith("ed"), "a past participle between a noun and 'with': what the thing holds, as 'with'")
 KIND_GERUND = Rule("-ing form of a kind of thing", _kind_gerund, (
     Example("put the bottle in the blue recycling bin", "recycling", Tag.WORD),
     Example("put the mug on a small black shelving unit", "shelving", Tag.WORD),
