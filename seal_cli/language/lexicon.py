@@ -28,6 +28,7 @@ from dataclasses import dataclass
 
 from seal_cli.frames.library import Library
 from seal_cli.language.english import (
+    BE_WORDS,
     BECAUSE,
     DETERMINERS,
     FINITE,
@@ -148,6 +149,8 @@ def _stands_alone(words: Sequence[Word], j: int) -> bool:
     if j + 1 >= len(words):
         return True
     after = words[j + 1].lower
+    if after in ("that", "which") and j + 2 < len(words) and words[j + 2].lower in BE_WORDS:
+        return True            # "turn the lamp on *that is* on the table": a relative clause of the noun before
     return after in (",", ".", "!", "?", ";", "please") or after in PREPOSITIONS or after in SEPARATOR_WORDS or \
         after in BECAUSE or "'" in after and after.split("'")[0] in SUBJECTS     # "turn it off *it's* too loud"
 

@@ -21,8 +21,8 @@ import mmap
 from functools import lru_cache
 from pathlib import Path
 
-__all__ = ["gerund_lemma", "is_adjective", "is_adverb", "is_gradable", "is_plural", "noun_lemma", "participles",
-           "verb_lemma"]
+__all__ = ["adverb_no_noun", "gerund_lemma", "is_adjective", "is_adverb", "is_gradable", "is_plural", "noun_lemma",
+           "participles", "verb_lemma", "word_entries"]
 
 
 class _Table:
@@ -196,6 +196,19 @@ def is_adverb(word: str) -> bool:
     "carefully"; not "upright", also an adjective and a noun)."""
     entries = _WORDS.entries(word.lower())
     return bool(entries) and all(entry[0] == "adv" for entry in entries)
+
+
+def word_entries(word: str) -> list[list[str]]:
+    """lemminflect's entries for the word: [part of speech, lemma], one per reading."""
+    return list(_WORDS.entries(word.lower()))
+
+
+@lru_cache(maxsize=65536)
+def adverb_no_noun(word: str) -> bool:
+    """Whether lemminflect lists the word as an adverb and never as a noun, whatever else ("just",
+    "directly"; not "right" or "supply", nouns too)."""
+    kinds = {entry[0] for entry in _WORDS.entries(word.lower())}
+    return "adv" in kinds and "noun" not in kinds
 
 
 @lru_cache(maxsize=4096)

@@ -845,6 +845,8 @@ class State:
                                                                             Tag.VERB, again)),
                              expect=False, verb=again, using=False)
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
+        if low == "," and span == 1 and self._between_adjectives(i, j):
+            return Match(1)                # "a round, gold object": one noun phrase, its head "object"
         if low in ("and", ",", "or") and self.np_starts(j) and self.prev_tag() in ("WORD", "NAME", "PRON"):
             unknown_verb = (nxt not in DETERMINERS and nxt not in POSSESSIVES and nxt not in PRONOUNS
                             and not capitalised(words[j]) and nxt not in NUMBERS and
@@ -864,6 +866,22 @@ class State:
         if low in ("and", "then", ",", ";", "or"):
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
         return None
+
+    def _between_adjectives(self, i: int, j: int) -> bool:
+        """Whether the comma at ``i`` stands between two adjectives of one noun phrase ("a round, gold object",
+        "the small, black shelf"): the word before it is an adjective, no noun the library names, right after
+        a determiner, a number or a possessive; open-class words follow up to the phrase's end, with no "and"
+        or "or" closing a list ("a red, a blue and a green cup"; "a bowl, cup and plate" stays a list)."""
+        words, out = self.words, self.out
+        if len(out) < 2 or out[-1].tag != Tag.WORD or out[-2].tag not in (Tag.DET, Tag.NUM, Tag.POSS):
+            return False
+        before = words[i - 1].lower
+        if not is_adjective(before) or before in self.lexicon.things or not self.noun_follows(j):
+            return False
+        k = j
+        while k < len(words) and self.noun_follows(k) and words[k].lower not in NUMBERS:
+            k += 1
+        return k > j and (k >= len(words) or words[k].lower not in ("and", "or", ","))
 
     def _path_again(self, j: int) -> str | None:
         """The verb of the clause before when a path without a verb follows a separator of sequence: "go to

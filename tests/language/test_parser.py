@@ -106,7 +106,8 @@ def test_particles_before_or_after_the_object(library: Library) -> None:
     for text in ("pick up the cup", "pick the cup up", "Pick the cup up from the table"):
         frame = parse_command(text, library).frames[0]
         assert (frame.frame, frame.lexical_unit, frame.elements["theme"].head) == ("Pick", "pick up", "cup")
-    for text in ("turn on the lamp", "turn the lamp on", "switch the lamp on please"):
+    for text in ("turn on the lamp", "turn the lamp on", "switch the lamp on please",
+                 "turn the lamp on that is on the table", "turn the lamp on that's on the desk"):
         frame = parse_command(text, library).frames[0]
         assert frame.frame == "ToggleOn" and frame.elements["theme"].head == "lamp"
 
@@ -245,6 +246,27 @@ def test_adverbs_are_no_nouns(library: Library) -> None:
 
 def test_result_words_listed_with_commas(library: Library) -> None:
     assert frames_of("Put a cooked, rinsed egg on the counter", library) == ["Heat", "Clean", "Place"]
+
+
+def test_a_comma_between_adjectives_is_one_noun_phrase(library: Library) -> None:
+    assert elements("pick up a round, gold object", library) == {"theme": "object"}
+    assert elements("put the potato on the small, black shelf", library) == {"theme": "potato", "goal": "shelf"}
+    theme = parse_command("put a red, green and blue cup on the table", library).frames[0].elements["theme"]
+    assert [c.head for c in theme.conjuncts] == ["red", "green", "cup"]     # "and" closes a list: as before
+    theme = parse_command("take the knife, fork and spoon to the sink", library).frames[0].elements["theme"]
+    assert [c.head for c in theme.conjuncts] == ["knife", "fork", "spoon"]
+
+
+def test_an_adverb_before_a_place_keeps_the_noun_the_head(library: Library) -> None:
+    assert elements("place the pen on the shelf just below the keys", library)["goal"] == "shelf"
+    assert elements("grab a cleaning supply in the kitchen", library)["theme"] == "supply"   # a noun too
+
+
+def test_an_ing_form_after_adjectives_names_a_kind_of_thing(library: Library) -> None:
+    assert elements("put the bottle in the blue recycling bin", library)["goal"] == "bin"
+    assert elements("put the mug on a small black shelving unit", library)["goal"] == "unit"
+    assert parse_command("find the person wearing glasses", library).frames[0].elements["theme"].head == "person"
+    assert parse_command("find the patient wearing glasses", library).frames[0].elements["theme"].head == "patient"
 
 
 def test_use_without_a_purpose_is_no_verb(library: Library) -> None:

@@ -14,7 +14,16 @@ from seal_cli.frames.library import Library
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.language.grounding import Vocabulary
 from seal_cli.language.parser import parse_command
-from seal_cli.language.steps import NONE, StepModel, eligible, ends_at_steps, infer_left_in, infer_step, step_features
+from seal_cli.language.steps import (
+    NONE,
+    StepModel,
+    eligible,
+    ends_at_steps,
+    filling,
+    infer_left_in,
+    infer_step,
+    step_features,
+)
 from seal_cli.language.wordusage import WordUsage, context_words, load_word_usage, shipped_word_usage
 
 KITCHEN = ("Apple", "Fridge", "Microwave", "SinkBasin", "CounterTop", "Mug", "CoffeeMachine", "Potato")
@@ -69,6 +78,26 @@ def test_no_step_when_the_sentence_says_one_or_places_two(library: Library) -> N
     assert [f.frame for f in said.frames] == ["Heat", "Place"] and all(f.inferred is None for f in said.frames)
     two = parse_command("put two apples in the fridge", library, kitchen())
     assert eligible(two) is None and all(f.frame != "Cool" for f in two.frames)
+
+
+def test_filling_a_thing_with_a_substance_puts_no_second_thing(library: Library) -> None:
+    model = StepModel({"Clean": 30, NONE: 70}, {"w:water": {"Clean": 4.0, NONE: -1.0}})
+    classes = (*KITCHEN, "Bowl", "Cabinet")
+    vocabulary = Vocabulary.of(classes, usage=WordUsage({}, frozenset(class_key(c) for c in classes), steps=model))
+    parse = parse_command("fill a bowl with water and put it in the fridge", library, vocabulary)
+    assert filling(parse.frames[-2]) and not filling(parse.frames[-1])
+    assert [f.frame for f in parse.frames] == ["Clean", "Place", "Place"]     # washed, filled, then put
+    clean = parse.frames[0]
+    assert clean.inferred is not None and parse.resolve(clean.elements["theme"]).cls == "Bowl"
+    assert parse.resolve(parse.frames[2].elements["theme"]).cls == "Bowl"
+    for text in ("put a bowl with water in it in the cabinet", "put a bowl filled with water in the cabinet"):
+        with_it = parse_command(text, library, vocabulary)
+        assert [f.frame for f in with_it.frames] == ["Clean", "Place", "Place"]
+        assert with_it.frames[2].elements["theme"].head == "bowl"
+    things = parse_command("fill the bowl with apples and put it in the fridge", library, vocabulary)
+    assert not filling(things.frames[0]) and eligible(things) is None    # apples are things: a stack
+    an_apple = parse_command("put an apple in a bowl and put the bowl in the fridge", library, vocabulary)
+    assert not filling(an_apple.frames[0]) and [f.frame for f in an_apple.frames] == ["Place", "Place"]
 
 
 def test_the_off_switch_and_the_rules_alone_add_no_step(library: Library) -> None:

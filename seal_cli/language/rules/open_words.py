@@ -3,10 +3,18 @@ other word (a noun or an adjective). Nothing here lists a word."""
 
 from __future__ import annotations
 
-from seal_cli.language.english import PARTICLES, PREPOSITIONS
-from seal_cli.language.morphology import gerund_lemma, in_dictionary, is_adverb
+from seal_cli.language.english import LOCATIVE, PARTICLES, PREPOSITIONS
+from seal_cli.language.morphology import (
+    adverb_no_noun,
+    gerund_lemma,
+    in_dictionary,
+    is_adverb,
+    is_gradable,
+    verb_lemma,
+    word_entries,
+)
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import CLOSED, State
+from seal_cli.language.state import CLOSED, State, match_phrase
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 
@@ -19,6 +27,42 @@ def _participle(s: State, i: int) -> Match | None:
     tag = Tag.VBG_T if s.np_starts(i + 1) and nxt not in PARTICLES else \
         Tag.VBG_P if nxt in PREPOSITIONS and s.np_starts(i + 2) else Tag.VBG_I
     return s.emit(i, 1, tag, gerund)
+
+
+def _noun_modifier(s: State, i: int) -> bool:
+    """Whether the -ing form at ``i`` says what kind of thing the noun after it is, in a phrase whose words
+    before it are adjectives ("the blue *recycling* bin", "a small black *shelving* unit", "the wooden
+    *dining* table"): a determiner, a number or a possessive, then adjectives (each gradable, or nothing
+    else: no noun such as "patient" or "the elderly"), then a noun. After a noun it stays a participle ("the
+    person *wearing* glasses")."""
+    out = s.out
+    if not gerund_lemma(s.words[i].lower) or not s.noun_follows(i + 1):
+        return False
+    k = len(out) - 1
+    while k >= 0 and out[k].tag == Tag.WORD and _adjective_only(s, out[k].lower):
+        k -= 1
+    return k < len(out) - 1 and k >= 0 and out[k].tag in (Tag.DET, Tag.NUM, Tag.POSS)
+
+
+def _adjective_only(s: State, low: str) -> bool:
+    kinds = {entry[0] for entry in word_entries(low)}
+    return "adj" in kinds and (is_gradable(low) or kinds == {"adj"}) and low not in s.lexicon.things
+
+
+def _filled_with(s: State, i: int) -> Match | None:
+    """A past participle between a noun and "with" and a noun phrase says what the thing holds, as "with"
+    alone does ("a bowl *filled* with water", "a plate *covered* with foil": "a bowl with water"): it is
+    dropped, the noun before stays the head."""
+    low = s.words[i].lower
+    if s.prev_tag() not in (Tag.WORD, Tag.NAME) or not low.endswith("ed") or s.next_lower(i) != "with" or \
+            not s.np_starts(i + 2):
+        return None
+    lemma = verb_lemma(low)
+    return Match(1) if lemma and lemma != low else None
+
+
+def _kind_gerund(s: State, i: int) -> Match | None:
+    return s.emit(i, 1, Tag.WORD) if _noun_modifier(s, i) else None
 
 
 def _result(s: State, i: int) -> Match | None:
@@ -40,6 +84,21 @@ def _adverb(s: State, i: int) -> Match | None:
     if not s.in_np() and low.isalpha() and is_adverb(low) and s.prev_tag() != Tag.DET:
         return s.emit(i, 1, Tag.PARTICLE)                         # "gather together", "put it carefully on ..."
     return None
+
+
+def _adverb_of_place(s: State, i: int) -> Match | None:
+    """A word that may be an adverb and is no noun, between a noun and a phrase of where: it says how near,
+    not what ("the shelf *just* below the keys", "a cabinet *directly* under the sink"); the noun before stays
+    the head ("a cleaning *supply* in the kitchen": "supply" is a noun too, the head)."""
+    low = s.words[i].lower
+    if s.prev_tag() not in (Tag.WORD, Tag.NAME) or not low.isalpha() or not adverb_no_noun(low) or \
+            low in s.lexicon.things or low in CLOSED:
+        return None
+    n = match_phrase(s.words, i + 1, PREPOSITIONS) if i + 1 < len(s.words) else 0
+    if not n or PREPOSITIONS[" ".join(w.lower for w in s.words[i + 1:i + 1 + n])] not in LOCATIVE or \
+            not s.np_starts(i + 1 + n):
+        return None
+    return s.emit(i, 1, Tag.PARTICLE)
 
 
 def _name(s: State, i: int) -> Match | None:
@@ -87,6 +146,14 @@ PARTICIPLE = Rule("participle after a noun", _participle, (
     Example("find the person sitting", "sitting", Tag.VBG_I),
 ), lambda low: bool(gerund_lemma(low)),
     "an -ing form after a noun, a pronoun or 'is': transitive, with a preposition, or bare")
+FILLED_WITH = Rule("participle before with", _filled_with, (
+    Example("put a bowl filled with water in the cabinet", "filled", ""),
+), lambda low: low.endswith("ed"), "a past participle between a noun and 'with': what the thing holds, as 'with'")
+KIND_GERUND = Rule("-ing form of a kind of thing", _kind_gerund, (
+    Example("put the bottle in the blue recycling bin", "recycling", Tag.WORD),
+    Example("put the mug on a small black shelving unit", "shelving", Tag.WORD),
+), lambda low: bool(gerund_lemma(low)),
+    "an -ing form after an adjective that follows a determiner, before a noun: what kind of thing, no participle")
 RESULT = Rule("result word", _result, (
     Example("put a heated egg in the fridge", "heated", Tag.RESULT),
     Example("put the heated up egg in the fridge", "heated up", Tag.RESULT),
@@ -94,6 +161,11 @@ RESULT = Rule("result word", _result, (
 ADVERB = Rule("adverb", _adverb, (
     Example("put it carefully on the shelf", "carefully", Tag.PARTICLE),
 ), lambda low: low.isalpha() and is_adverb(low), "an adverb inside the clause")
+ADVERB_OF_PLACE = Rule("adverb of place", _adverb_of_place, (
+    Example("place the pen on the shelf just below the keys", "just", Tag.PARTICLE),
+    Example("put the mug in the cabinet just above the sink", "just", Tag.PARTICLE),
+), lambda low: low.isalpha() and adverb_no_noun(low),
+    "a word that may be an adverb and is no noun, after a noun and before a phrase of where: how near, not the head")
 NAME = Rule("name", _name, (
     Example("greet Mary Ann", "Mary Ann", Tag.NAME),
     Example("go to Emmas room", "Emmas", Tag.POSS),
