@@ -317,7 +317,7 @@ class SeFMPolicy(Policy):
         fresh = self._fresh(agent, target)
         driven = next((o for o in fresh if (o.view.cell, o.view.open) == key), None)
         choice = self._first_of_tour(agent, fresh, target, incumbent=driven) if driven is not None else view
-        if choice == view:
+        if (choice.cell, choice.open) == key:
             self.tried.add(key)
             return None
         return "what it saw of the plan's next stop makes another look better"
@@ -519,6 +519,8 @@ class SeFMPolicy(Policy):
         object-only's (with :attr:`onward_pool`, also the best by belief per metre there and on), and its
         first look is object-only's — the first of the tour of the same looks with no drive on — unless the
         best order's E beats the best order that starts with object-only's look by more than :attr:`defer_m`.
+        With ``incumbent`` (the look being driven to, :meth:`_reconsider_in_room`), that look stands in for
+        object-only's in the comparison.
         Approximations: the looks are the best few, not all; what is seen on the way is not counted; the
         belief the tour leaves unrevealed adds nothing to E; one instance."""
 
