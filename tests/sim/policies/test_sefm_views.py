@@ -377,7 +377,6 @@ def test_a_known_stop_beside_unlikely_looks_does_not_draw_sefm_away_from_the_lik
     assert first(earlier) != (3.5, 0.5)
 
 
-
 def test_a_look_chosen_with_the_next_stop_unseen_is_chosen_again_when_the_drive_sees_it(library: Library) -> None:
     """Place(apple, bowl): a look for the apple chosen while no bowl was seen (its drive on counted from the bowl's
     belief) is weighed again once the drive brings a bowl into sight: SeFM's expected cost of finishing from here
@@ -386,18 +385,22 @@ def test_a_look_chosen_with_the_next_stop_unseen_is_chosen_again_when_the_drive_
     priors = {"apple": {"shelf": 0.45, "dining_table": 0.45}, "bowl": {"dining_table": 0.9}}
     frames = [("Place", {"theme": "apple", "goal": "bowl"})]
 
-    def stops(policy: SeFMPolicy, x: float) -> str | None:
+    def stops(policy: SeFMPolicy, x: float | None) -> str | None:
         scene = corridor(library, priors, start=3.0, apple_on="shelf_1", extra=(Item("bowl_1", "bowl", (5.25, 1.0)),))
         agent = ready(library, scene, policy, frames)
         assert "bowl_1" not in agent.known
         policy.greedy_view(agent, agent.steps[0], "apple")       # chosen with the bowl unseen
-        view = View(agent.grid.cell((x, 0.5)), (1.0, 1.4), why="the look driven to")
         agent.world.robot.pose = (4.0, 0.5, 0.0)                 # a metre into the drive the bowl comes into sight
         agent.look()
         assert "bowl_1" in agent.known
+        if x is None:   # driving to the look SeFM would choose from here anyway
+            view = policy._first_of_tour(agent, policy._fresh(agent, "apple"), "apple")
+        else:
+            view = View(agent.grid.cell((x, 0.5)), (1.0, 1.4), why="the look driven to")
         return policy.reconsider(agent, agent.steps[0], "apple", view)
 
     assert (why := stops(SeFMPolicy(particles=300), 0.0)) is not None and "next stop" in why   # 4 m west: not now
+    assert stops(SeFMPolicy(particles=300), None) is None
     off = SeFMPolicy(particles=300)
     off.reconsider_in_room = False
     assert stops(off, 0.0) is None
