@@ -98,6 +98,8 @@ class SeFMPolicy(Policy):
         self.planner: Any = None
         self._news = False
         """A look since the last choice saw a thing it had not seen (what may make another view better)."""
+        self._blind: str | None = None
+        """The thing whose last look was chosen with the plan's next stop unseen (:meth:`_reconsider_in_room`)."""
         self._things: set[str] = set()
         self._chosen: tuple[Cell, str, Any] | None = None
         """A choice made on the drive (:meth:`reconsider`) that stopped it: where, for what, the decision."""
@@ -278,6 +280,8 @@ class SeFMPolicy(Policy):
         """The whole-plan search's drive stops when a look on the way saw something new (a thing of the plan:
         the cup while looking for the spoon) and, with it, another view finishes the plan more than
         :attr:`rethink_m` sooner than driving on to ``view``; the new choice is the next view."""
+        if len(self.map.rooms) < self.min_rooms:
+            return self._reconsider_in_room(agent, target, view)
         if self.planner is None or not self._news or not (self.use_frames and self.whole_plan):
             return None
         self._news = False
@@ -293,6 +297,30 @@ class SeFMPolicy(Policy):
         return (f"what it saw makes {decision.candidate.name} better ({decision.expected_m:.1f} m expected to finish,"
                 f" {lost:.1f} m less than driving on)" if np.isfinite(lost) else
                 f"what it saw leaves nothing to see from there ({decision.candidate.name} now)")
+
+    reconsider_in_room = True
+    """In one room, a look chosen while the plan's next stop was unseen (its drive on counted from the stop's
+    belief) is chosen again when the drive brings an instance of that stop into sight (:meth:`_reconsider_in_room`)."""
+
+    def _reconsider_in_room(self, agent: Agent, target: str, view: View) -> str | None:
+        """The drive to ``view`` stops when the look was chosen with the plan's next stop unseen and the drive has
+        now seen it, and SeFM's expected cost of finishing the plan (:meth:`_first_of_tour`) from here is lower
+        by more than :attr:`defer_m` with another first look than with driving on to ``view``."""
+        if not (self.reconsider_in_room and self.use_frames and self._blind == target and self._news):
+            return None
+        self._news = False
+        if not self._ahead(agent, agent.class_of(target), agent.world.robot.pose[:2])[:1]:
+            return None
+        self._blind = None
+        key = (view.cell, view.open)
+        self.tried.discard(key)
+        fresh = self._fresh(agent, target)
+        driven = next((o for o in fresh if (o.view.cell, o.view.open) == key), None)
+        choice = self._first_of_tour(agent, fresh, target, incumbent=driven) if driven is not None else view
+        if (choice.cell, choice.open) == key:
+            self.tried.add(key)
+            return None
+        return "what it saw of the plan's next stop makes another look better"
 
     whole_plan = True
     """Search for the whole remaining plan (off: the step's own belief, the search of earlier rounds)."""
@@ -348,6 +376,11 @@ class SeFMPolicy(Policy):
         are spent lie where it has looked already, and chasing them wandered for tens of metres)."""
         if len(self.map.rooms) >= self.min_rooms:
             return self._house_view(agent, binding, target)
+        fresh = self._fresh(agent, target)
+        return self._taken(agent, binding, target, self._first_of_tour(agent, fresh, target) if fresh else None)
+
+    def _fresh(self, agent: Agent, target: str) -> list[Look]:
+        """The looks :meth:`greedy_view` chooses among: not yet tried, each worth :attr:`min_mass`."""
         field_ = agent.distances()
         X, W, modes = self.cloud(agent, target)
         W = above_floor(W)
@@ -370,8 +403,7 @@ class SeFMPolicy(Policy):
                 at = agent.grid.point(view.cell)
                 mass = float(W[(np.hypot(X[:, 0] - at[0], X[:, 1] - at[1]) <= seeing) & ~hidden].sum())
                 options.append(Look(mass, float(field_[view.cell]), view))
-        fresh = [o for o in options if (o.view.cell, o.view.open) not in self.tried and o.mass > self.min_mass]
-        return self._taken(agent, binding, target, self._first_of_tour(agent, fresh, target) if fresh else None)
+        return [o for o in options if (o.view.cell, o.view.open) not in self.tried and o.mass > self.min_mass]
 
     further_prior = True
     """Search for a further instance of a class (the second laptop, once the first is found and put
@@ -468,7 +500,7 @@ class SeFMPolicy(Policy):
             total += w[k] * agent.grid.distances(agent.grid.nearest_free(X[k]))
         return np.asarray(total / w[top].sum())
 
-    def _first_of_tour(self, agent: Agent, looks: Sequence[Look], target: str) -> View:
+    def _first_of_tour(self, agent: Agent, looks: Sequence[Look], target: str, incumbent: Look | None = None) -> View:
         """The first look of the shortest expected search through the best :attr:`tour_views` looks.
 
         Searching for one thing, an order of looks v1, v2, ... costs, in expectation, each drive times
@@ -487,6 +519,8 @@ class SeFMPolicy(Policy):
         object-only's (with :attr:`onward_pool`, also the best by belief per metre there and on), and its
         first look is object-only's — the first of the tour of the same looks with no drive on — unless the
         best order's E beats the best order that starts with object-only's look by more than :attr:`defer_m`.
+        With ``incumbent`` (the look being driven to, :meth:`_reconsider_in_room`), that look stands in for
+        object-only's in the comparison.
         Approximations: the looks are the best few, not all; what is seen on the way is not counted; the
         belief the tour leaves unrevealed adds nothing to E; one instance."""
 
@@ -495,6 +529,7 @@ class SeFMPolicy(Policy):
         then = None
         if self.use_frames and self.onward > 0:
             then = self._onward_field(agent, ahead[0]) if ahead else self._onward_belief(agent, target)
+            self._blind = target if then is not None and not ahead else None
 
         def plain(o: Look) -> float:   # equal to rounding: the same looks for SeFM and object-only
             return round(o.mass / (o.metres + self.distance_scale), 6)
@@ -525,12 +560,15 @@ class SeFMPolicy(Policy):
         best = best[: 2 * self.tour_views]
         if self.defer_m is None:
             return self._tour(agent, best, fields, then)[0].view
-        # the look object-only's rule takes under this belief, and what SeFM's expected cost says of it
-        alone = self._tour(agent, plain_best, fields, None)[0]
+        # the look object-only's rule takes under this belief (or the one driven to), and what SeFM's cost says of it
+        alone = self._tour(agent, plain_best, fields, None)[0] if incumbent is None else incumbent
+        if not any(o is alone for o in best):
+            best = [*best, alone]
+            fields.setdefault(alone.view.cell, agent.grid.distances(alone.view.cell))
         first, expected = self._tour(agent, best, fields, then)
         if first is alone:
             return first.view
-        _, deferred = self._tour(agent, best, fields, then, first=best.index(alone))
+        _, deferred = self._tour(agent, best, fields, then, first=next(k for k, o in enumerate(best) if o is alone))
         return alone.view if deferred - expected <= self.defer_m else first.view
 
     defer_m: float | None = 0.25

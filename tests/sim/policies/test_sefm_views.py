@@ -22,17 +22,18 @@ PLACES = [("shelf_1", "shelf", (1.0, 1.4), False), ("shelf_2", "shelf", (2.0, 1.
 
 
 def corridor(library: Library, priors: dict[str, dict[str, float]], start: float = 0.0,
-             apple_on: str = "cabinet_2") -> Scene:
+             apple_on: str = "cabinet_2", extra: tuple[Item, ...] = ()) -> Scene:
     """A corridor of free cells 8 m x 1 m (0.25 m), its places along the north side, the robot at the west."""
     pts = [(x, y) for x in np.arange(0.0, 8.01, 0.25) for y in np.arange(0.0, 1.01, 0.25)]
     items = [Item(n, c, at, movable=False, receptacle=True, openable=o) for n, c, at, o in PLACES]
     where = dict((n, at) for n, _, at, _ in PLACES)[apple_on]
     items.append(Item("apple_1", "apple", (where[0], where[1] - 0.1), parent=apple_on))
+    items.extend(extra)
     world = World(items, WorldRobot(pose=(start, 0.5, 0.0)), taxonomy=library.taxonomy, reach=1.5,
                   sensor=RangeSensor(Sensor(range=1.5)))
     m = Map("corridor", (-0.5, -0.5, 8.5, 2.0), rooms=(Room.box("kitchen", -0.5, -0.5, 8.5, 2.0),),
             places=tuple(Place(n, c, at, openable=o, reach=0.75) for n, c, at, o in PLACES), priors=priors,
-            objects=tuple(ObjectTruth(i.key, i.at, i.parent) for i in items if i.movable),
+            objects=tuple(ObjectTruth(i.key, i.at, i.parent) for i in items if i.movable and i not in extra),
             robot=Robot((start, 0.5, 0.0)), sensor=Sensor(range=0.75), grid=OccupancyGrid.from_cells(pts, 0.25))
     return Scene(world, m, Grid.from_points(pts, 0.25, connectivity=4), tuple(sorted({i.key for i in items})),
                  "corridor")
@@ -374,3 +375,33 @@ def test_a_known_stop_beside_unlikely_looks_does_not_draw_sefm_away_from_the_lik
     earlier = SeFMPolicy(particles=50)
     earlier.onward_pool, earlier.defer_m = True, None
     assert first(earlier) != (3.5, 0.5)
+
+
+def test_a_look_chosen_with_the_next_stop_unseen_is_chosen_again_when_the_drive_sees_it(library: Library) -> None:
+    """Place(apple, bowl): a look for the apple chosen while no bowl was seen (its drive on counted from the bowl's
+    belief) is weighed again once the drive brings a bowl into sight: SeFM's expected cost of finishing from here
+    with another first look against driving on to that one; the drive stops when the other is better by more than
+    ``defer_m``. A look still as good is driven on to; object-only, and the rule switched off, drive on."""
+    priors = {"apple": {"shelf": 0.45, "dining_table": 0.45}, "bowl": {"dining_table": 0.9}}
+    frames = [("Place", {"theme": "apple", "goal": "bowl"})]
+
+    def stops(policy: SeFMPolicy, x: float | None) -> str | None:
+        scene = corridor(library, priors, start=3.0, apple_on="shelf_1", extra=(Item("bowl_1", "bowl", (5.25, 1.0)),))
+        agent = ready(library, scene, policy, frames)
+        assert "bowl_1" not in agent.known
+        policy.greedy_view(agent, agent.steps[0], "apple")       # chosen with the bowl unseen
+        agent.world.robot.pose = (4.0, 0.5, 0.0)                 # a metre into the drive the bowl comes into sight
+        agent.look()
+        assert "bowl_1" in agent.known
+        if x is None:   # driving to the look SeFM would choose from here anyway
+            view = policy._first_of_tour(agent, policy._fresh(agent, "apple"), "apple")
+        else:
+            view = View(agent.grid.cell((x, 0.5)), (1.0, 1.4), why="the look driven to")
+        return policy.reconsider(agent, agent.steps[0], "apple", view)
+
+    assert (why := stops(SeFMPolicy(particles=300), 0.0)) is not None and "next stop" in why   # 4 m west: not now
+    assert stops(SeFMPolicy(particles=300), None) is None
+    off = SeFMPolicy(particles=300)
+    off.reconsider_in_room = False
+    assert stops(off, 0.0) is None
+    assert stops(ObjectOnlyPolicy(particles=300), 0.0) is None
