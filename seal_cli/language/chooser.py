@@ -22,7 +22,7 @@ from collections import Counter
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
-__all__ = ["Instance", "features", "fit", "logits"]
+__all__ = ["Instance", "features", "fit", "logits", "sentence_features"]
 
 
 def features(lemmas: Sequence[str], context: Iterable[str], candidates: Iterable[str] = ()) -> tuple[str, ...]:
@@ -41,6 +41,19 @@ def features(lemmas: Sequence[str], context: Iterable[str], candidates: Iterable
     own = set(lemmas) | {w for key in candidates for w in key.split("_")}
     out = [f"w:{w}" for w in sorted(set(context) - own)]
     out += [f"m:{m}" for m in dict.fromkeys(lemmas[:-1])]
+    return tuple(out)
+
+
+def sentence_features(words: Iterable[str], thing: str | None, frames: Iterable[str]) -> tuple[str, ...]:
+    """The features of a whole sentence for the unsaid slice and the unsaid goal: ``w:`` each of its words
+    (:func:`~seal_cli.language.wordusage.context_words`), ``o:`` the class key of the thing it handles,
+    ``f:`` each frame the parse evokes (said ones, for the goal)."""
+    from seal_cli.frames.taxonomy import class_key
+
+    out = [f"w:{w}" for w in sorted(set(words))]
+    if thing:
+        out.append(f"o:{class_key(thing)}")
+    out += [f"f:{name}" for name in sorted(set(frames))]
     return tuple(out)
 
 

@@ -33,7 +33,7 @@ from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 from seal_cli.frames.taxonomy import class_key, class_words
-from seal_cli.language.chooser import logits
+from seal_cli.language.chooser import logits, sentence_features
 from seal_cli.language.values import Evoked, Parse, Phrase
 
 if TYPE_CHECKING:
@@ -52,14 +52,8 @@ PUTTING = frozenset(("Bring", "Give", "LookAt", "ToggleOn", "ToggleOff"))
 """Frames that say where the thing goes, or that the sentence is about looking (then nothing is added)."""
 
 
-def goal_features(words: Iterable[str], thing: str | None, frames: Iterable[str]) -> tuple[str, ...]:
-    """The features of a sentence: ``w:`` each of its words (:func:`~seal_cli.language.wordusage.context_words`),
-    ``o:`` the class key of the thing, ``f:`` each frame the sentence said."""
-    out = [f"w:{w}" for w in sorted(set(words))]
-    if thing:
-        out.append(f"o:{class_key(thing)}")
-    out += [f"f:{name}" for name in sorted(set(frames))]
-    return tuple(out)
+goal_features = sentence_features
+"""The sentence's features (:func:`~seal_cli.language.chooser.sentence_features`)."""
 
 
 @dataclass(frozen=True)

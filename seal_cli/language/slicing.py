@@ -31,7 +31,7 @@ from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 from seal_cli.frames.taxonomy import class_key
-from seal_cli.language.chooser import logits
+from seal_cli.language.chooser import logits, sentence_features
 from seal_cli.language.steps import moved_phrase, shifted
 from seal_cli.language.values import Evoked, Parse, Phrase
 
@@ -53,14 +53,8 @@ HANDLING = ("Pick", "Heat", "Cool", "Clean", "LookAt", "Place")
 """Frames whose theme is the thing a task handles (the first of them names it)."""
 
 
-def slice_features(words: Iterable[str], thing: str | None, frames: Iterable[str]) -> tuple[str, ...]:
-    """The features of a sentence: ``w:`` each of its words (:func:`~seal_cli.language.wordusage.context_words`),
-    ``o:`` the class key of the thing, ``f:`` each frame the parse evokes."""
-    out = [f"w:{w}" for w in sorted(set(words))]
-    if thing:
-        out.append(f"o:{class_key(thing)}")
-    out += [f"f:{name}" for name in sorted(set(frames))]
-    return tuple(out)
+slice_features = sentence_features
+"""The sentence's features (:func:`~seal_cli.language.chooser.sentence_features`)."""
 
 
 @dataclass(frozen=True)
