@@ -780,6 +780,13 @@ class Agent:
         if ground is not None and not self.is_person(value) and not self._is_place(value) \
                 and (self.room(ground) is not None or self._is_place(ground)):     # a map place: known
             return self.search_in(value, binding, ground, question)
+        if ground is None and (room := self.room(value)) is not None:      # "where is the kitchen?": the map's
+            went = self.go_to(value, binding)                                # room, driven into, not searched for
+            if not went.ok:
+                return went
+            x, y = room.centroid
+            self.answer(f"the {spoken(value)} is the room around ({x:.2f}, {y:.2f})")
+            return Outcome(True, f"is in the {spoken(value)}")
         if self.is_person(value) and not self.world.within_reach(value):    # told where: goes to see them
             went = self.go_to(value, binding)
             if not went.ok:

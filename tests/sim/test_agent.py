@@ -243,3 +243,17 @@ def test_nobody_but_the_speaker_is_said_so(library: Library, text: str, answer: 
 
     agent, result = run_on_map(load_map("apartment"), text, library, make_policy("sefm"), rng=np.random.default_rng(0))
     assert result.completed and agent.answers == [answer]
+
+
+def test_a_room_asked_for_is_the_maps_room_gone_to_not_a_thing_searched_for(library: Library) -> None:
+    """"where is the kitchen?" drove to the sink, answered where the sink is and gave up after 8 replans
+    ("sees no kitchen from here"): a room is known from the map, driven into, and its answer says where it is."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    m = load_map("apartment")
+    agent, result = pipeline.run_on_map(m, "where is the kitchen?", library, make_policy("sefm"),
+                                        rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    assert result.answer == "the kitchen is the room around (5.50, -3.00)"
+    assert m.room_of([agent.world.robot.pose[:2]]) == ["kitchen"]
