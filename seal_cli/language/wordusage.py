@@ -36,7 +36,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 from functools import cache, cached_property
 from pathlib import Path
@@ -402,10 +402,7 @@ def _table(data: Any, where: Where) -> WordUsage:
         raise SealError("\"number\" must map each wording to {\"one\": count, \"several\": count}", where)
     number = {" ".join(str(w).lower().split()): dict(by) for w, by in raw.items()}
     raw = data.get("weights", {})
-    if not isinstance(raw, dict) or not all(
-            isinstance(by, dict) and all(isinstance(c, str) and class_key(c) in universe and isinstance(v, int | float)
-                                         and not isinstance(v, bool) and math.isfinite(v) for c, v in by.items())
-            for by in raw.values()):
+    if not _weight_table(raw, lambda c: isinstance(c, str) and class_key(c) in universe):
         raise SealError("\"weights\" must map each feature to {class of \"classes\": finite number}", where)
     weights = {str(f): {class_key(c): float(v) for c, v in by.items()} for f, by in raw.items()}
     return WordUsage(counts, universe, (str(data.get("source", where.file)),), seen=seen, context=context,
@@ -421,9 +418,7 @@ def _steps(data: dict[str, Any], where: Where) -> StepModel:
     if not _word_counts(prior) or not set(prior) <= names:
         raise SealError(f"\"step_prior\" must map each of {', '.join(sorted(names))} to a positive count", where)
     raw = data.get("step_weights", {})
-    if not isinstance(raw, dict) or not all(
-            isinstance(by, dict) and all(c in names and isinstance(v, int | float) and not isinstance(v, bool)
-                                         and math.isfinite(v) for c, v in by.items()) for by in raw.values()):
+    if not _weight_table(raw, lambda c: c in names):
         raise SealError("\"step_weights\" must map each feature to {step: finite number}", where)
     weights = {str(f): {c: float(v) for c, v in by.items()} for f, by in raw.items()}
     raw = data.get("step_left", {})
@@ -461,9 +456,7 @@ def _slices(data: dict[str, Any], universe: frozenset[str], where: Where) -> Sli
     if not _word_counts(prior) or not set(prior) <= set(KINDS):
         raise SealError(f"\"slice_prior\" must map each of {', '.join(KINDS)} to a positive count", where)
     raw = data.get("slice_weights", {})
-    if not isinstance(raw, dict) or not all(
-            isinstance(by, dict) and all(k in KINDS and isinstance(v, int | float) and not isinstance(v, bool)
-                                         and math.isfinite(v) for k, v in by.items()) for by in raw.values()):
+    if not _weight_table(raw, lambda k: k in KINDS):
         raise SealError(f"\"slice_weights\" must map each feature to {{{' | '.join(KINDS)}: finite number}}", where)
     classes = data.get("slice_classes", [])
     if not isinstance(classes, list) or not all(isinstance(c, str) and class_key(c) in universe for c in classes):
@@ -483,13 +476,18 @@ def _goals(data: dict[str, Any], universe: frozenset[str], where: Where) -> Goal
         raise SealError(f"\"goal_prior\" must map each class of \"classes\" or \"{NOWHERE}\" to a positive count",
                         where)
     raw = data.get("goal_weights", {})
-    if not isinstance(raw, dict) or not all(
-            isinstance(by, dict) and all(known(c) and isinstance(v, int | float) and not isinstance(v, bool)
-                                         and math.isfinite(v) for c, v in by.items()) for by in raw.values()):
+    if not _weight_table(raw, known):
         raise SealError(f"\"goal_weights\" must map each feature to {{class of \"classes\" | \"{NOWHERE}\": finite "
                         "number}", where)
     return GoalModel(prior, {str(f): {(c if c == NOWHERE else class_key(c)): float(v) for c, v in by.items()}
                              for f, by in raw.items()})
+
+
+def _weight_table(table: Any, known: Callable[[Any], bool]) -> bool:
+    """Whether a fitted model's weights are {feature: {class the model knows: finite number}}."""
+    return isinstance(table, dict) and all(
+        isinstance(by, dict) and all(known(c) and isinstance(v, int | float) and not isinstance(v, bool)
+                                     and math.isfinite(v) for c, v in by.items()) for by in table.values())
 
 
 def _word_counts(table: Any) -> bool:
