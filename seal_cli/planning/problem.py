@@ -188,14 +188,19 @@ class Things:
             known.append(self._fresh(cls, len(known) + 1))
         return tuple(known[:n])
 
-    def state(self, holding: str | None = None) -> State:
-        """The world's facts and the robot's hand; ``holding`` (a class) overrides the map's robot."""
+    def hold(self, holding: str | None) -> None:
+        """Keep what the robot holds as the command starts (:attr:`held`): ``holding`` (a class, refused if
+        malformed or a room, place or person of the map), else the map's robot's."""
         if holding:
             check_class_name(holding, "holding")
             if self.map is not None:
                 self.map.check_holding(holding)
-        held = holding or self.robot_holding
-        name = self.name(held) if held else None
+        self.held = holding or self.robot_holding
+
+    def state(self, holding: str | None = None) -> State:
+        """The world's facts and the robot's hand; ``holding`` (a class) overrides the map's robot."""
+        self.hold(holding)
+        name = self.name(self.held) if self.held else None
         facts = {f for f in self.facts if not (f.predicate == "in" and f.args[0] == name)}
         return State.of(facts | robot_facts(name), self.taxonomy, self.closable, self.classes, self.rooms)
 
@@ -585,11 +590,7 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
                   map: Map | None = None, vocabulary: Any = None) -> Problem:
     """The commanded frames of a parse and the state they start from (see the module's docstring)."""
     things = Things(library.taxonomy, map)
-    if holding:
-        check_class_name(holding, "holding")
-        if map is not None:
-            map.check_holding(holding)
-    things.held = holding or things.robot_holding
+    things.hold(holding)            # before the frames: "put it in the sink" calls what the robot holds
     if vocabulary is not None:      # the names a vocabulary gives its classes name them too
         things.synonyms = {class_key(c): tuple(n) for c, n in zip(vocabulary.classes, vocabulary.synonyms,
                                                                    strict=True)}
