@@ -22,7 +22,7 @@ from functools import lru_cache
 from pathlib import Path
 
 __all__ = ["adverb_no_noun", "gerund_lemma", "is_adjective", "is_adverb", "is_gradable", "is_plural", "noun_lemma",
-           "participles", "verb_lemma", "word_entries"]
+           "participles", "parts_of_speech", "verb_lemma"]
 
 
 class _Table:
@@ -187,27 +187,26 @@ def in_dictionary(word: str) -> bool:
 @lru_cache(maxsize=65536)
 def is_adjective(word: str) -> bool:
     """Whether lemminflect lists the word as an adjective ("hot", "clean")."""
-    return any(entry[0] == "adj" for entry in _WORDS.entries(word.lower()))
+    return "adj" in parts_of_speech(word)
 
 
 @lru_cache(maxsize=65536)
 def is_adverb(word: str) -> bool:
     """Whether lemminflect lists the word as an adverb and as nothing else ("together",
     "carefully"; not "upright", also an adjective and a noun)."""
-    entries = _WORDS.entries(word.lower())
-    return bool(entries) and all(entry[0] == "adv" for entry in entries)
-
-
-def word_entries(word: str) -> list[list[str]]:
-    """lemminflect's entries for the word: [part of speech, lemma], one per reading."""
-    return list(_WORDS.entries(word.lower()))
+    return parts_of_speech(word) == {"adv"}
 
 
 @lru_cache(maxsize=65536)
+def parts_of_speech(word: str) -> frozenset[str]:
+    """The parts of speech lemminflect lists the word as ("adj", "adv", "noun", "verb", ...)."""
+    return frozenset(entry[0] for entry in _WORDS.entries(word.lower()))
+
+
 def adverb_no_noun(word: str) -> bool:
     """Whether lemminflect lists the word as an adverb and never as a noun, whatever else ("just",
     "directly"; not "right" or "supply", nouns too)."""
-    kinds = {entry[0] for entry in _WORDS.entries(word.lower())}
+    kinds = parts_of_speech(word)
     return "adv" in kinds and "noun" not in kinds
 
 

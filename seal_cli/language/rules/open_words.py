@@ -10,8 +10,8 @@ from seal_cli.language.morphology import (
     in_dictionary,
     is_adverb,
     is_gradable,
+    parts_of_speech,
     verb_lemma,
-    word_entries,
 )
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import CLOSED, State, match_phrase
@@ -45,7 +45,7 @@ def _noun_modifier(s: State, i: int) -> bool:
 
 
 def _adjective_only(s: State, low: str) -> bool:
-    kinds = {entry[0] for entry in word_entries(low)}
+    kinds = parts_of_speech(low)
     return "adj" in kinds and (is_gradable(low) or kinds == {"adj"}) and low not in s.lexicon.things
 
 
