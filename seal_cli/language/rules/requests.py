@@ -775,7 +775,7 @@ def _know_after_let(s: State, i: int) -> Match | None:
     return Match(1)                               # "let the person at the chairs *know* what ...": dropped
 
 
-_TOLD_LEADS = WH_WORDS | {"that", "if", "whether", "how", ",", "about"}
+_TOLD_LEADS = WH_WORDS | {"that", ",", "about"}       # WH_WORDS holds "if", "whether", "how"
 """Words that begin what "let X know" tells in a way other rules read (a question, "that", whether ...)."""
 
 
