@@ -142,6 +142,8 @@ THIRD_PERSON_SUBJECTS = frozenset(["he", "she", "it", "someone", "somebody", "ev
 """Subjects of a third-person verb: any inflected verb after them is finite ("he *likes* company")."""
 LINKING_VERBS = frozenset(["seem", "appear", "look", "sound", "feel", "smell", "taste", "become", "remain"])
 """Linking verbs: their finite form makes a statement whatever follows ("the door *seems* loose")."""
+SPEAKER_PRONOUNS = frozenset(["me", "us"])
+"""Who speaks, as an object: going "with *me*" somewhere, the speaker leads."""
 OBJECT_PRONOUNS = frozenset(["it", "them", "him", "her", "me", "us", "this", "that"])
 BASE_FORM_SUBJECTS = frozenset(["i", "we", "they"])
 """Subjects whose verb has its base form ("we *open* at six"): after them, any verb is finite."""
@@ -181,7 +183,7 @@ TIME_UNITS = frozenset(["second", "seconds", "minute", "minutes", "hour", "hours
 """Measures of time: "for *three minutes*", "every *few minutes*" say how long or how often."""
 TIME_ASKED = (frozenset(["when", "whenever", "if", "once"]), frozenset(["get", "have", "find", "got"]),
               frozenset(["a", "an", "the", "some", "any", "spare", "free", "quick", "little", "few"]),
-              TIME_UNITS | frozenset(["chance", "opportunity", "sec", "secs", "min", "mins", "tick"]))
+              TIME_UNITS | frozenset(["chance", "opportunity", "sec", "secs", "min", "mins", "tick", "time"]))
 """The robot's time asked for in a clause of the robot's own: "*when you get a sec*", "*if you have a spare
 minute*", "*once you find the time*": a subordinator, "you", a verb of having, a few words of quantity, a
 measure of time or a chance. Politeness like ``POLITE_FORMULAE``, not a condition (and no Pick of "a sec")."""
@@ -275,6 +277,10 @@ BEING_AT = (frozenset(["once", "when", "as soon as", "after"]), frozenset(["you'
 """"*Once you're in* the living room, find Peyton": the robot is to be there first, "go to the living room, then
 ..." (``BEING_MEANS``): a subordinator, "you're", a preposition of place, a phrase, then the clause."""
 BEING_MEANS = "go"
+HAVING_FIRST = (frozenset(["once", "when", "as soon as", "after"]), frozenset(["you have", "you've", "you 've"]))
+""""*Once you have* the spoon, put it in the dishwasher": the robot is to hold the thing first, "get the spoon,
+then ..." (``HAVING_MEANS``): a subordinator, "you have" (no participle after it), a phrase, then the clause."""
+HAVING_MEANS = "get"
 PATH_ALONE = frozenset(["to", "into", "onto"])
 """"*To* the bathroom", "*back to* the kitchen, please": a command that is only where to go (the preposition's
 canonical form, ``PREPOSITIONS``) is going there (``PATH_MEANS``)."""

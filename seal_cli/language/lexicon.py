@@ -87,6 +87,9 @@ class Lexicon:
     """The nouns the taxonomy lists as people ("guest", "son", "person"): "the guest wants tea"."""
     escorts: frozenset[str] = frozenset()
     """Units of frames whose first element is a person ("take", "follow", "meet"): "take *jordan* there"."""
+    can: tuple[str, ...] = ()
+    """What the robot can do: each frame's first lexical unit, in the library's order ("go", "find", "pick up"),
+    named by the error for a verb no frame lists."""
 
     @classmethod
     def of(cls, library: Library) -> Lexicon:
@@ -105,8 +108,9 @@ class Lexicon:
         people = frozenset({"person", *taxonomy.members("person")}) if "person" in taxonomy else frozenset()
         escorts = frozenset(unit.text for frame in library.frames if frame.elements and
                             frame.elements[0].type == "person" for unit in frame.lexical_units)
+        can = tuple(dict.fromkeys(frame.lexical_units[0].text for frame in library.frames if frame.lexical_units))
         return cls({w: tuple(us) for w, us in units.items()}, _result_words(library),
-                   tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts)
+                   tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts, can)
 
     def verb_at(self, words: Sequence[Word], i: int, stop: int) -> tuple[str, int, int | None] | None:
         """The lexical unit that starts at word ``i``: (unit, words it covers contiguously,

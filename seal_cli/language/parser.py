@@ -262,6 +262,18 @@ def _some_verbs(lexicon: Lexicon, near: str | None = None) -> str:
     return ", ".join(shown[:8]) + (f" ({len(verbs)} in all; `seal frames` lists them)" if len(verbs) > 8 else "")
 
 
+def _unknown_verb(lexicon: Lexicon, word: str) -> str:
+    """The message for a verb no frame lists: the known verbs spelt like it first ("brin": bring), else what the
+    robot can do, one verb for each frame of the library ("tidy", "wait", "print": none of them)."""
+    import difflib
+
+    close = difflib.get_close_matches(word, lexicon.verbs, n=3, cutoff=0.75)
+    if close or not lexicon.can:
+        return f"unknown verb {word!r}; known verbs include {_some_verbs(lexicon, word)}"
+    return (f"unknown verb {word!r}: no frame of the library does it; the robot can {_either(list(lexicon.can))} "
+            f"({len(lexicon.verbs)} verbs in all; `seal frames` lists them)")
+
+
 def _first_column(text: str) -> int:
     stripped = len(text) - len(text.lstrip())
     return stripped + 1
@@ -279,8 +291,7 @@ def _explain(error: Any, text: str, words: Sequence[Word], lexicon: Lexicon) -> 
     wants_verb = "VERB" in (error.expected or ())
     if wants_verb and not at_end and token.type not in ("END", "SEP"):
         word = str(token).split()[0].lower()
-        return CommandError(f"unknown verb {word!r}; known verbs include {_some_verbs(lexicon, word)}",
-                            column, text, ["a verb"])
+        return CommandError(_unknown_verb(lexicon, word), column, text, ["a verb"])
     before = _word_before(words, words[token.start_pos].start if not at_end else len(text))
     after = f" after {before!r}" if before else ""
     if wants_verb:

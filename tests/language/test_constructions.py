@@ -484,3 +484,34 @@ def test_a_wish_for_where_a_thing_is_puts_it_there(library: Library) -> None:
     assert frames("I want the mug on the shelf", library) == [("Place", {"theme": "mug", "goal": "shelf"})]
     assert [f for f, _ in frames("I need the scissors from the drawer", library)] == ["Bring"]
     assert [f for f, _ in frames("I'd like the red mug please", library)] == ["Bring"]
+
+
+def test_a_wish_for_a_state_is_the_verb_whose_result_it_is(library: Library) -> None:
+    assert frames("I'd like the blinds closed", library) == [("Close", {"theme": "blind"})]
+    assert frames("I want the lights off, please", library) == [("ToggleOff", {"theme": "light"})]
+    assert frames("I need the door open", library) == [("Open", {"theme": "door"})]
+    assert [f for f, _ in frames("I'd like the bread sliced", library)] == ["Slice"]
+    assert frames("I'd like the red mug", library)[0][0] == "Bring"            # no state: a request, as before
+    assert frames("I want the mug on the shelf", library)[0][0] == "Place"
+
+
+def test_coming_with_the_speaker_is_following_them(library: Library) -> None:
+    assert frames("come with me to the garden", library) == [("Follow", {"theme": "me", "goal": "garden"})]
+    assert frames("walk with us to the door", library)[0][0] == "Follow"
+    assert frames("go with Lena to the car", library)[0][0] == "Guide"        # someone else: taken there
+
+
+def test_having_a_thing_first_is_getting_it(library: Library) -> None:
+    assert frames("once you have the spoon, put it in the dishwasher", library) == [
+        ("Pick", {"theme": "spoon"}), ("Place", {"theme": "spoon", "goal": "dishwasher"})]
+    assert [f for f, _ in frames("after you have the milk then pour it into the bowl", library)] == ["Pick", "Pour"]
+    assert [f for f, _ in frames("once you have washed the pan, put it on the rack", library)] == ["Clean", "Place"]
+    assert [f for f, _ in frames("when you have the time, close the door", library)] == ["Close"]   # politeness
+
+
+def test_an_unknown_verb_says_what_the_robot_can_do(library: Library) -> None:
+    with pytest.raises(CommandError) as caught:
+        parse_command("tidy up the living room", library)
+    message = caught.value.message
+    assert message.startswith("unknown verb 'tidy': no frame of the library does it; the robot can ")
+    assert all(verb in message for verb in ("go", "pick up", "put", "bring", "turn on", "tell", "count"))

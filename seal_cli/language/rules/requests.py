@@ -516,6 +516,48 @@ def _wished_placed(s: State, i: int) -> Match | None:
                  verb=PLACE_MEANS, using=False)
 
 
+def _state_unit(s: State, low: str) -> str | None:
+    """The lexical unit whose result the one word of state ``low`` is: "on"/"off" are switching
+    (``SWITCHED_MEANS``), a participle its verb ("closed": "close"), an adjective that is a verb's base form
+    its verb ("open", "clean"); None when it is no result of a unit of the library."""
+    unit = SWITCHED_MEANS.get(low) or verb_lemma(low) or low
+    if unit == low and low not in SWITCHED_MEANS and low not in STATE_PARTICLES and not is_adjective(low):
+        return None                              # a verb's base form that is no adjective ("move"): no state
+    parts = tuple(unit.split())
+    return unit if parts in s.lexicon.units.get(parts[0], ()) else None
+
+
+_WISHED_STATES = WISHED_PLACED | frozenset(["i need", "we need"])
+
+
+def _wished_state(s: State, i: int) -> Match | None:
+    """"*I'd like* the blinds closed", "I want the lights off", "we'd like the door open": a wish for a thing to
+    be in a state, a phrase and then one word of state ending the sentence, is the verb whose result the state
+    is (:func:`_state_unit`), as "make sure the door is closed" is; the wish is the verb, the state its split
+    particle."""
+    words = s.words
+    n = _phrase(s, i, _WISHED_STATES)
+    k = i + n
+    if not n or not s.np_starts(k) or words[k].lower in ("you", "to") or s.verb_at(k) is not None:
+        return None
+    end = _sentence_end(s, k)
+    while end > k and words[end - 1].lower in (",", "please"):
+        end -= 1
+    q = end - 1
+    if q <= k:
+        return None
+    unit = _state_unit(s, words[q].lower)
+    before = words[q - 1].lower
+    if unit is None or before in DETERMINERS or before in POSSESSIVES or before in PREPOSITIONS or \
+            any(words[p].lower in BE_WORDS or words[p].lower in (",", "and", "then") or
+                s.verb_at(p) is not None and words[p - 1].lower not in DETERMINERS and
+                words[p - 1].lower not in POSSESSIVES for p in range(k + 1, q)):
+        return None
+    start, stop = words[i].start, words[k - 1].end
+    return Match(n, (Word(s.text_of(start, stop), start, stop, Tag.VERB, unit),), expect=False, verb=unit,
+                 using=False, particle=(q, unit))
+
+
 def _sentence_end(s: State, i: int) -> int:
     words = s.words
     return next((k for k in range(i, len(words)) if words[k].lower in END_MARKS), len(words))
@@ -803,6 +845,11 @@ WHETHER_IS_RULE = Rule("is X somewhere", _whether_is, (
     Example("Is Ben in the kitchen?", "Is", Tag.VERB),
     Example("are the apples in the fridge?", "are", Tag.VERB),
 ), _WHETHER_IS, "'is X in Y?': find X in Y, and answer whether it is there")
+WISHED_STATE = Rule("a wish for a thing's state", _wished_state, (
+    Example("I'd like the blinds closed", "I'd like", Tag.VERB),
+    Example("I want the lights off, please", "off", Tag.PARTICLE),
+    Example("I need the door open", "I need", Tag.VERB),
+), first_words(_WISHED_STATES), "'I'd like X closed', 'I want X off': close X, turn X off")
 WISHED_PLACED_RULE = Rule("a wish for where a thing is", _wished_placed, (
     Example("I want the mug on the shelf", "I want", Tag.VERB),
     Example("I'd like the books in the box, please", "I'd like", Tag.VERB),
