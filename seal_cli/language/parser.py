@@ -26,11 +26,13 @@ from lark import Tree
 
 from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
+from seal_cli.language.asked import thing_asked
 from seal_cli.language.clauses import Clauses
 from seal_cli.language.element_types import Types
 from seal_cli.language.evoking import Evoker
 from seal_cli.language.goals import infer_goal
 from seal_cli.language.lexicon import CommandError, Lexicon, Tagger, Word, tokenize
+from seal_cli.language.phrasal import phrasal_verb
 from seal_cli.language.slicing import infer_slice
 from seal_cli.language.stacking import infer_stack
 from seal_cli.language.steps import infer_left_in, infer_step
@@ -87,6 +89,9 @@ class CommandParser:
         if not words:
             raise CommandError("no words in the command: expected a verb, such as " + _some_verbs(lexicon),
                                _first_column(text), text, ["a verb"])
+        phrasal = phrasal_verb(words, lexicon)
+        if phrasal is not None:
+            raise _phrasal_error(text, lexicon, *phrasal)
         tree = self.tree(text, words)
         if vocabulary is not None:
             vocabulary = self.with_library_synonyms(vocabulary).in_context(text)   # the sentence weighs
@@ -96,6 +101,9 @@ class CommandParser:
         lost = swallowed(parse, words, lexicon, self.library.taxonomy.known_classes)
         if lost:
             raise _swallowed_error(parse, lost[0])
+        thing = thing_asked(parse, self.library, lexicon)
+        if thing is not None:
+            raise _thing_asked_error(text, lexicon, *thing)
         if infer_steps and vocabulary is not None:
             parse = infer_slice(parse, self.library, vocabulary, vocabulary.slice_model, vocabulary.context)
             parse = infer_stack(parse, vocabulary.stack_model)
@@ -260,6 +268,21 @@ def _some_verbs(lexicon: Lexicon, near: str | None = None) -> str:
                      and v not in close]
     shown += [v for v in verbs if v not in shown][: max(0, 8 - len(shown))]
     return ", ".join(shown[:8]) + (f" ({len(verbs)} in all; `seal frames` lists them)" if len(verbs) > 8 else "")
+
+
+def _phrasal_error(text: str, lexicon: Lexicon, verb: Word, particle: Word) -> CommandError:
+    """A verb made another by its particle ("hang up the phone"): refused at the verb, with what the robot can do."""
+    said = f"{verb.text.lower()} {particle.lower}"
+    return CommandError(f"{said!r} is a verb of its own, not {str(verb.info)!r}: no frame of the library does it; "
+                        f"the robot can {_either(list(lexicon.can))}", verb.start + 1, text, ["a verb"])
+
+
+def _thing_asked_error(text: str, lexicon: Lexicon, evoked: Evoked, role: str) -> CommandError:
+    """A thing where words are asked ("answer the door"): refused at the verb, with what the robot can do."""
+    phrase = evoked.elements[role]
+    return CommandError(f"{phrase.text!r} is a thing, not a question to {evoked.lexical_unit}: "
+                        f"'{evoked.lexical_unit} {phrase.text}' is no frame of the library; "
+                        f"the robot can {_either(list(lexicon.can))}", evoked.span[0] + 1, text, ["a question"])
 
 
 def _unknown_verb(lexicon: Lexicon, word: str) -> str:

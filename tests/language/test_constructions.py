@@ -515,3 +515,14 @@ def test_an_unknown_verb_says_what_the_robot_can_do(library: Library) -> None:
     message = caught.value.message
     assert message.startswith("unknown verb 'tidy': no frame of the library does it; the robot can ")
     assert all(verb in message for verb in ("go", "pick up", "put", "bring", "turn on", "tell", "count"))
+
+
+@pytest.mark.parametrize("text", ["answer the door", "answer the phone, please", "go to the hall and answer the door"])
+def test_a_thing_is_no_question_to_answer(text: str, library: Library) -> None:
+    with pytest.raises(CommandError, match="is a thing, not a question to answer"):
+        parse_command(text, library)
+
+
+def test_a_question_said_in_words_is_answered(library: Library) -> None:
+    assert frames("answer the question of the person at the door", library)[0][0] == "Answer"
+    assert frames("answer Sam's question", library)[0][0] == "Answer"
