@@ -32,6 +32,7 @@ from seal_cli.language.element_types import Types
 from seal_cli.language.evoking import Evoker
 from seal_cli.language.goals import infer_goal
 from seal_cli.language.lexicon import CommandError, Lexicon, Tagger, Word, tokenize
+from seal_cli.language.morphology import in_verb_tables
 from seal_cli.language.phrasal import phrasal_verb
 from seal_cli.language.slicing import infer_slice
 from seal_cli.language.stacking import infer_stack
@@ -286,12 +287,13 @@ def _thing_asked_error(text: str, lexicon: Lexicon, evoked: Evoked, role: str) -
 
 
 def _unknown_verb(lexicon: Lexicon, word: str) -> str:
-    """The message for a verb no frame lists: the known verbs spelt like it first ("brin": bring), else what the
-    robot can do, one verb for each frame of the library ("tidy", "wait", "print": none of them)."""
+    """The message for a verb no frame lists: the known verbs spelt like it first, when it is no verb of English
+    ("brin": bring), else what the robot can do, one verb for each frame of the library ("tidy", "wait", "make":
+    none of them)."""
     import difflib
 
-    close = difflib.get_close_matches(word, lexicon.verbs, n=3, cutoff=0.75)
-    if close or not lexicon.can:
+    close = [] if in_verb_tables(word) else difflib.get_close_matches(word, lexicon.verbs, n=3, cutoff=0.75)
+    if close or not lexicon.can:                 # "make" is a verb of English, no misspelt "take"
         return f"unknown verb {word!r}; known verbs include {_some_verbs(lexicon, word)}"
     return (f"unknown verb {word!r}: no frame of the library does it; the robot can {_either(list(lexicon.can))} "
             f"({len(lexicon.verbs)} verbs in all; `seal frames` lists them)")

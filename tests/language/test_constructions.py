@@ -526,3 +526,16 @@ def test_a_thing_is_no_question_to_answer(text: str, library: Library) -> None:
 def test_a_question_said_in_words_is_answered(library: Library) -> None:
     assert frames("answer the question of the person at the door", library)[0][0] == "Answer"
     assert frames("answer Sam's question", library)[0][0] == "Answer"
+
+
+def test_a_verb_of_english_is_no_misspelling(library: Library) -> None:
+    with pytest.raises(CommandError) as caught:
+        parse_command("make the bed", library)                   # not "take" misspelt
+    assert "the robot can" in caught.value.message and "known verbs include" not in caught.value.message
+    with pytest.raises(CommandError, match="known verbs include bring"):
+        parse_command("brin me the cup", library)
+
+
+def test_a_wished_state_may_say_where_the_thing_is(library: Library) -> None:
+    assert frames("we'd like the lights on in the living room", library)[0][0] == "ToggleOn"
+    assert frames("I want the lamp by the sofa off", library) == [("ToggleOff", {"theme": "lamp"})]

@@ -22,6 +22,7 @@ from seal_cli.language.english import (
     HERE_WORDS,
     KNOW_WISHES,
     LET_KNOW,
+    LOCATED,
     NUMBER_MEANS,
     NUMBER_OF,
     NUMBERS,
@@ -543,9 +544,11 @@ def _wished_state(s: State, i: int) -> Match | None:
     end = _sentence_end(s, k)
     while end > k and words[end - 1].lower in (",", "please"):
         end -= 1
-    q = end - 1
-    if q <= k:
-        return None
+    places = [p - 1 for p in range(k + 2, end - 1) if PREPOSITIONS.get(words[p].lower) in LOCATED and
+              s.np_starts(p + 1) and not any(s.verb_at(j) for j in range(p + 1, end))]
+    q = next((q for q in (*places, end - 1) if _state_unit(s, words[q].lower) is not None), end - 1)
+    if q <= k:                                   # the state ends the sentence, or a place follows it ("the
+        return None                              # lights on in the living room": where they are)
     unit = _state_unit(s, words[q].lower)
     before = words[q - 1].lower
     if unit is None or before in DETERMINERS or before in POSSESSIVES or before in PREPOSITIONS or \
@@ -849,6 +852,7 @@ WISHED_STATE = Rule("a wish for a thing's state", _wished_state, (
     Example("I'd like the blinds closed", "I'd like", Tag.VERB),
     Example("I want the lights off, please", "off", Tag.PARTICLE),
     Example("I need the door open", "I need", Tag.VERB),
+    Example("we'd like the lights on in the living room", "on", Tag.PARTICLE),
 ), first_words(_WISHED_STATES), "'I'd like X closed', 'I want X off': close X, turn X off")
 WISHED_PLACED_RULE = Rule("a wish for where a thing is", _wished_placed, (
     Example("I want the mug on the shelf", "I want", Tag.VERB),
