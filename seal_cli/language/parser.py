@@ -36,6 +36,7 @@ from seal_cli.language.morphology import in_verb_tables
 from seal_cli.language.phrasal import phrasal_verb
 from seal_cli.language.slicing import infer_slice
 from seal_cli.language.stacking import infer_stack
+from seal_cli.language.state import CLOSED
 from seal_cli.language.steps import infer_left_in, infer_step
 from seal_cli.language.swallowed import Swallowed, swallowed
 from seal_cli.language.syntax import NP, Syntax
@@ -292,7 +293,8 @@ def _unknown_verb(lexicon: Lexicon, word: str) -> str:
     none of them)."""
     import difflib
 
-    close = [] if in_verb_tables(word) else difflib.get_close_matches(word, lexicon.verbs, n=3, cutoff=0.75)
+    english = in_verb_tables(word) and word not in CLOSED                   # "this", "it": no verbs here
+    close = [] if english else difflib.get_close_matches(word, lexicon.verbs, n=3, cutoff=0.75)
     if close or not lexicon.can:                 # "make" is a verb of English, no misspelt "take"
         return f"unknown verb {word!r}; known verbs include {_some_verbs(lexicon, word)}"
     return (f"unknown verb {word!r}: no frame of the library does it; the robot can {_either(list(lexicon.can))} "

@@ -31,6 +31,7 @@ from seal_cli.language.english import (
     NOT_PLACES,
     NUMBERS,
     OBJECT_PRONOUNS,
+    OBLIGED,
     PARTICLES,
     PATH_PREPOSITIONS,
     POLITE,
@@ -490,10 +491,11 @@ class State:
                 comma = end
             end += 1
         if end >= len(words):
-            if not said or stated:
-                return None
+            if not said or stated and any(self.verb_at(k) is not None and words[k - 1].lower not in DETERMINERS and
+                                          words[k - 1].lower not in POSSESSIVES for k in range(i + 1, end)):
+                return None                              # a statement with a verb of the library in it: said
             return self._aside(i, end - i, (words[i].start, words[-1].end))
-            # "pour it into the cup... *the blue one*": a fragment after
+            # "pour it into the cup... *the blue one*": a fragment after; "follow Adel? *He is at the entrance*"
         while end + 1 < len(words) and words[end + 1].lower in END_MARKS:
             end += 1
         if not any(t.tag == "VERB" for t in self.out) and \
@@ -847,6 +849,8 @@ class State:
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
         if low == "," and span == 1 and self._between_adjectives(i, j):
             return Match(1)                # "a round, gold object": one noun phrase, its head "object"
+        if low in ("and", ",", ";") and self._obliged_at(j):
+            return Match(j - i, (merge(words, i, j - i, Tag.SEP),), expect=True)   # "..., the cups go on the shelf"
         if low in ("and", ",", "or") and self.np_starts(j) and self.prev_tag() in ("WORD", "NAME", "PRON"):
             unknown_verb = (nxt not in DETERMINERS and nxt not in POSSESSIVES and nxt not in PRONOUNS
                             and not capitalised(words[j]) and nxt not in NUMBERS and
@@ -866,6 +870,20 @@ class State:
         if low in ("and", "then", ",", ";", "or"):
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
         return None
+
+    def _obliged_at(self, j: int) -> bool:
+        """Whether a noun phrase and what it should do ("the cups *go* on the shelf", ``english.OBLIGED``) start at
+        ``j``: a clause of its own, said as a statement (the rule ``where a thing should go``)."""
+        words = self.words
+        if j >= len(words) or words[j].lower not in DETERMINERS and words[j].lower not in POSSESSIVES:
+            return False
+        for k in range(j + 1, min(len(words), j + 8)):
+            if match_phrase(words, k, OBLIGED):
+                return words[k - 1].lower not in DETERMINERS and words[k - 1].lower not in POSSESSIVES and \
+                    k + 1 < len(words)
+            if not words[k].lower.isalpha() or words[k].lower in PREPOSITIONS or words[k].lower in CLOSED:
+                return False
+        return False
 
     def _between_adjectives(self, i: int, j: int) -> bool:
         """Whether the comma at ``i`` stands between two adjectives of one noun phrase ("a round, gold object",

@@ -539,3 +539,22 @@ def test_a_verb_of_english_is_no_misspelling(library: Library) -> None:
 def test_a_wished_state_may_say_where_the_thing_is(library: Library) -> None:
     assert frames("we'd like the lights on in the living room", library)[0][0] == "ToggleOn"
     assert frames("I want the lamp by the sofa off", library) == [("ToggleOff", {"theme": "lamp"})]
+
+
+def test_where_a_thing_should_go_is_putting_it_there(library: Library) -> None:
+    assert frames("the bowl should go in the dishwasher", library) == [
+        ("Place", {"theme": "bowl", "goal": "dishwasher"})]
+    assert frames("The milk belongs in the fridge.", library) == [("Place", {"theme": "milk", "goal": "fridge"})]
+    assert frames("the strawberry jello needs to go to the pantry", library)[0][0] == "Place"
+    assert frames("the front door should be closed", library) == [("Close", {"theme": "door"})]
+    assert frames("the lights need to be off", library) == [("ToggleOff", {"theme": "light"})]
+    assert [f for f, _ in frames("the dishes go in the sink, the cups go on the shelf", library)] == ["Place", "Place"]
+    assert [f for f, _ in frames("Put the cup in the sink. This needs to go in the bin", library)] == ["Place", "Place"]
+
+
+def test_where_a_thing_should_be_is_where_to_look_and_people_are_not_put(library: Library) -> None:
+    assert [f for f, _ in frames("Could you locate the tea spoon? It should be in the dining room.", library)] == \
+        ["Find"]                                                    # a supposition, no putting
+    for text in ("the guest should go to the living room", "the bus goes at six"):
+        with pytest.raises(CommandError):
+            parse_command(text, library)
