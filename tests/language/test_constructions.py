@@ -558,3 +558,9 @@ def test_where_a_thing_should_be_is_where_to_look_and_people_are_not_put(library
     for text in ("the guest should go to the living room", "the bus goes at six"):
         with pytest.raises(CommandError):
             parse_command(text, library)
+
+
+def test_introducing_yourself_is_greeting_with_or_without_to(library: Library) -> None:
+    assert [f for f, _ in frames("Locate the person pointing to the left and introduce yourself", library)] == \
+        ["Find", "Greet"]
+    assert frames("introduce yourself to Jane", library) == [("Greet", {"theme": "Jane"})]
