@@ -57,6 +57,10 @@ SEPARATOR_WORDS = frozenset(["and", "then", ",", ";", ":", "after that", "afterw
                              "when you've done that", "when you have done that", "once that's done",
                              "once that is done"])
 AND_WORDS = frozenset(["and", "as well as", "plus"])
+ADDITIVES = frozenset(["too", "as well", "also"])
+""""..., and the cereal *too*", "and the fork *as well*": a noun phrase with one of these ending its clause after a
+separator is one more object of the clause before's verb, said again (a clause of its own), never a conjunct of
+the phrase before it ("the kitchen table and the cereal")."""
 """Words that join like "and" (clauses or noun phrases)."""
 POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "will you", "would you mind",
                     "could you please", "i want you to", "i need you to", "i would like you to",

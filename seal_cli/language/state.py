@@ -13,6 +13,7 @@ from collections.abc import Iterable, Mapping, Sequence
 from typing import TYPE_CHECKING
 
 from seal_cli.language.english import (
+    ADDITIVES,
     AND_WORDS,
     BASE_FORM_SUBJECTS,
     BE_WORDS,
@@ -849,6 +850,11 @@ class State:
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
         if low == "," and span == 1 and self._between_adjectives(i, j):
             return Match(1)                # "a round, gold object": one noun phrase, its head "object"
+        again = self._object_again(j) if low in ("and", ",", ";", "and then", "then", ", and", ", then") else None
+        if again:                          # "bring the milk to the table and the cereal too": the verb again
+            return Match(j - i, (merge(words, i, j - i, Tag.SEP), Word("", words[j].start, words[j].start,
+                                                                        Tag.VERB, again)),
+                         expect=False, verb=again, using=False)
         if low in ("and", ",", ";") and self._obliged_at(j):
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),), expect=True)   # "..., the cups go on the shelf"
         if low in ("and", ",", "or") and self.np_starts(j) and self.prev_tag() in ("WORD", "NAME", "PRON"):
@@ -914,6 +920,27 @@ class State:
                 not self.np_starts(k + n):
             return None
         return str(self.out[self.verb_index].info)
+
+    def _object_again(self, j: int) -> str | None:
+        """The verb of the clause before when one more object of it follows a separator ("..., and the cereal *too*",
+        "and the fork as well", ``ADDITIVES``): a noun phrase (a determiner or a possessive first) and then only the
+        additive to the sentence's end or the next separator; None."""
+        words = self.words
+        if self.verb_index < 0 or j >= len(words) or \
+                words[j].lower not in DETERMINERS and words[j].lower not in POSSESSIVES:
+            return None
+        for k in range(j + 1, min(len(words), j + 8)):
+            n = match_phrase(words, k, ADDITIVES)
+            if n:
+                end = k + n
+                if words[k - 1].lower in DETERMINERS or words[k - 1].lower in POSSESSIVES or not (
+                        end >= len(words) or words[end].lower in END_MARKS or words[end].lower in (",", ";", "please")):
+                    return None
+                return str(self.out[self.verb_index].info)
+            low = words[k].lower
+            if not low.isalpha() or low in CLOSED or self.verb_at(k) is not None:
+                return None
+        return None
 
     def _verb_and_path(self, j: int) -> bool:
         """Whether word ``j``, after "and", is a verb's base form that names no thing the library knows, with

@@ -564,3 +564,13 @@ def test_introducing_yourself_is_greeting_with_or_without_to(library: Library) -
     assert [f for f, _ in frames("Locate the person pointing to the left and introduce yourself", library)] == \
         ["Find", "Greet"]
     assert frames("introduce yourself to Jane", library) == [("Greet", {"theme": "Jane"})]
+
+
+def test_one_more_object_with_too_is_the_verb_again_with_the_rest_of_its_clause(library: Library) -> None:
+    assert frames("bring the milk to the kitchen table and the cereal too", library) == [
+        ("Bring", {"theme": "milk", "goal": "table"}), ("Bring", {"theme": "cereal", "goal": "table"})]
+    assert frames("grab me a coke, and a juice as well", library) == [
+        ("Bring", {"theme": "coke", "recipient": "me"}), ("Bring", {"theme": "juice", "recipient": "me"})]
+    assert frames("put the milk in the fridge, and the butter too", library)[1] == \
+        ("Place", {"theme": "butter", "goal": "fridge"})
+    assert [f for f, _ in frames("pick up the apple and the banana", library)] == ["Pick"]   # no additive: one list
