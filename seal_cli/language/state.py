@@ -840,6 +840,12 @@ class State:
             return Match(1)                # "a pan, containing a knife, in the fridge"
         if low in (",", ";", ":") and (nxt in PREPOSITIONS or nxt == "please"):
             return Match(1)                # "Put a pan with a spoon in it, in the sink"
+        then = any(w.lower == "then" for w in words[i:j])
+        again = self._object_again(j, then) if low in ("and", ",", ";", "then") else None
+        if again:                          # "bring the milk to the table and the cereal too": the verb again
+            return Match(j - i, (merge(words, i, j - i, Tag.SEP), Word("", words[j].start, words[j].start,
+                                                                        Tag.VERB, again)),
+                         expect=False, verb=again, using=False)
         if low in ("then", "after that", "afterwards", "finally", "after", "before", "while", "once done",
                    "when done") or span > 1 and low != ",":
             again = self._path_again(j)
@@ -850,11 +856,6 @@ class State:
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
         if low == "," and span == 1 and self._between_adjectives(i, j):
             return Match(1)                # "a round, gold object": one noun phrase, its head "object"
-        again = self._object_again(j) if low in ("and", ",", ";", "and then", "then", ", and", ", then") else None
-        if again:                          # "bring the milk to the table and the cereal too": the verb again
-            return Match(j - i, (merge(words, i, j - i, Tag.SEP), Word("", words[j].start, words[j].start,
-                                                                        Tag.VERB, again)),
-                         expect=False, verb=again, using=False)
         if low in ("and", ",", ";") and self._obliged_at(j):
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),), expect=True)   # "..., the cups go on the shelf"
         if low in ("and", ",", "or") and self.np_starts(j) and self.prev_tag() in ("WORD", "NAME", "PRON"):
@@ -921,26 +922,28 @@ class State:
             return None
         return str(self.out[self.verb_index].info)
 
-    def _object_again(self, j: int) -> str | None:
+    def _object_again(self, j: int, then: bool = False) -> str | None:
         """The verb of the clause before when one more object of it follows a separator ("..., and the cereal *too*",
-        "and the fork as well", ``ADDITIVES``): a noun phrase (a determiner or a possessive first) and then only the
-        additive to the sentence's end or the next separator; None."""
+        "and the fork as well", ``ADDITIVES``; after "then" no additive is needed: "put the milk in the fridge and
+        then the butter"): a noun phrase (a determiner or a possessive first) of open-class words, and then only
+        the additive to the sentence's end or the next separator; None."""
         words = self.words
         if self.verb_index < 0 or j >= len(words) or \
                 words[j].lower not in DETERMINERS and words[j].lower not in POSSESSIVES:
             return None
-        for k in range(j + 1, min(len(words), j + 8)):
-            n = match_phrase(words, k, ADDITIVES)
-            if n:
-                end = k + n
-                if words[k - 1].lower in DETERMINERS or words[k - 1].lower in POSSESSIVES or not (
-                        end >= len(words) or words[end].lower in END_MARKS or words[end].lower in (",", ";", "please")):
-                    return None
-                return str(self.out[self.verb_index].info)
-            low = words[k].lower
-            if not low.isalpha() or low in CLOSED or self.verb_at(k) is not None:
-                return None
-        return None
+        k = j + 1
+        while k < min(len(words), j + 8) and words[k].lower.isalpha() and words[k].lower not in CLOSED and \
+                not match_phrase(words, k, ADDITIVES) and self.verb_at(k) is None:
+            k += 1
+        if k == j + 1:
+            return None                                   # a determiner alone
+        n = match_phrase(words, k, ADDITIVES) if k < len(words) else 0
+        if not n and not then:
+            return None
+        end = k + n
+        if end < len(words) and words[end].lower not in END_MARKS and words[end].lower not in (",", ";", "please"):
+            return None
+        return str(self.out[self.verb_index].info)
 
     def _verb_and_path(self, j: int) -> bool:
         """Whether word ``j``, after "and", is a verb's base form that names no thing the library knows, with

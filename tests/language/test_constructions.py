@@ -574,3 +574,10 @@ def test_one_more_object_with_too_is_the_verb_again_with_the_rest_of_its_clause(
     assert frames("put the milk in the fridge, and the butter too", library)[1] == \
         ("Place", {"theme": "butter", "goal": "fridge"})
     assert [f for f, _ in frames("pick up the apple and the banana", library)] == ["Pick"]   # no additive: one list
+
+
+def test_after_then_a_noun_phrase_alone_is_the_verb_again(library: Library) -> None:
+    assert frames("put the milk in the fridge and then the butter", library) == [
+        ("Place", {"theme": "milk", "goal": "fridge"}), ("Place", {"theme": "butter", "goal": "fridge"})]
+    assert frames("go to the kitchen and then the bedroom", library) == [
+        ("Go", {"goal": "kitchen"}), ("Go", {"goal": "bedroom"})]
