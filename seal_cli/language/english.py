@@ -264,11 +264,12 @@ thing said to belong somewhere is putting it there (``PLACE_MEANS``, a prepositi
 "to"), and one said to be in a state is the verb whose result the state is ("close")."""
 KNOW_WISHES = frozenset(["i'd like to know", "i would like to know", "i want to know", "i wanna know", "i need to know",
                          "i'd love to know", "i would love to know", "do you know", "i wonder", "i'm wondering",
-                         "i am wondering", "i was wondering", "i'm curious", "i'm curious about"])
+                         "i am wondering", "i was wondering", "i'm curious", "i'm curious about", "any idea",
+                         "have you any idea", "do you have any idea", "got any idea", "would you know",
+                         "do you happen to know"])
 """The speaker's wish to know, said where a command starts ("*I'd like to know* the heaviest object on the
 shelf", "*do you know* how many cups are left"): it means "tell me ..." (``QUESTION_MEANS``)."""
-WHERE_ASKERS = frozenset(["tell me", "tell us", "show me", "show us", "any idea", "have you any idea",
-                          "do you have any idea", "would you know", "do you happen to know",
+WHERE_ASKERS = frozenset(["tell me", "tell us", "show me", "show us",
                           "let me know", "let us know", "know", "did you see", "have you seen", "did you notice",
                           "have you noticed"]) | KNOW_WISHES
 """A question about the robot's knowledge of where a thing is ("*do you know* where the tea spoon is?", "*can

@@ -1049,7 +1049,8 @@ KNOW_WISH = Rule("wish to know", _know_wish, (
     Example("I'd like to know the heaviest object on the bookshelf.", "I'd like to know", Tag.VERB),
     Example("Do you know how many people in the bedroom are wearing white jackets?", "Do you know how many",
             Tag.VERB),
-), first_words(KNOW_WISHES), "'I'd like to know X', 'do you know X': tell me X")
+    Example("Any idea how many drinks are in the fridge?", "Any idea how many", Tag.VERB),
+), first_words(KNOW_WISHES), "'I'd like to know X', 'do you know X', 'any idea X': tell me X")
 NUMBER_OF_RULE = Rule("the number of", _number_of, (
     Example("Tell me the total number of snacks on the desk.", "Tell me the total number of", Tag.VERB),
     Example("What number of people in the bedroom wear white jackets?", "What number of", Tag.VERB),
