@@ -90,6 +90,13 @@ tagged is left out): "phone", "credit" and "lecture" have Tell's and Give's role
 they split "put the bowl and *phone* on the desk" and "take the visitor to *lecture* hall four" into
 two clauses.
 
+Such a unit also says the particles with which its verb is **another verb** (``apart: "on out up"``): PropBank
+gives a phrasal verb a roleset of its own when its meaning is not the verb's ("hang_up.03": terminate a phone
+call; "hang_out.06": spend time socially; "tuck_in.03": put your shirt in your pants), so a particle of
+English's closed class whose rolesets, in the verb's frame file, none links to the frame's FrameNet frame is
+apart; the parser refuses "hang up the phone" and "tuck in the kids" at the verb instead of reading a Place
+(``seal_cli/language/phrasal.py``), and keeps "hang up the coat on the hook" (a place said) a Place.
+
     python scripts/build_lexical_units.py [--data ../shared/data] [--check]
     python scripts/build_lexical_units.py --wordnet /usr/share/wordnet [--check]
     python scripts/build_lexical_units.py --propbank propbank-frames --wordnet /usr/share/wordnet [--check]
@@ -469,7 +476,7 @@ def family(vn: str) -> str:
 
 
 def derive_roles(rolesets: dict[str, list[dict[str, Any]]], signatures: Signatures, library: Library,
-                 own: Library, wordnet: WordNet) -> list[tuple[str, str, str]]:
+                 own: Library, wordnet: WordNet) -> list[tuple[str, ...]]:
     """(frame, unit, source) for every verb whose main sense has the roles of one frame's verbs (the
     module's rules for ``--propbank``): the verbs of ``own`` (the frame files, no derived units) give
     the signatures; a verb ``library`` lists already takes none."""
@@ -516,14 +523,35 @@ def derive_roles(rolesets: dict[str, list[dict[str, Any]]], signatures: Signatur
         ranked = votes.most_common(2)
         if ranked and (len(ranked) == 1 or ranked[0][1] > ranked[1][1]):
             frame = ranked[0][0]
-            found.append((frame, lemma, why[frame]))
+            apart = phrasal_apart(lemma, rolesets, own.by_name[frame].framenet)
+            source = why[frame]
+            if apart:
+                source += "; with " + ", ".join(f"{p} ({' '.join(ids)})" for p, ids in apart.items()) + \
+                    " a verb of its own"
+            found.append((frame, lemma, source, "", " ".join(apart)))
     return sorted(found)
+
+
+def phrasal_apart(lemma: str, rolesets: dict[str, list[dict[str, Any]]], framenet: str | None) -> dict[str, list[str]]:
+    """The particles with which a verb is a verb of its own, each with its PropBank rolesets (``apart``, see the
+    module's docstring): a phrasal roleset of the verb's frame file (``hang_up.03``, "terminate a phone call")
+    with a particle of English's closed class, when no roleset of that phrasal verb is linked to the frame's
+    FrameNet frame. "hang up" and "hang out" are not hanging; a phrasal roleset linked to Placing would be."""
+    by_particle: dict[str, list[dict[str, Any]]] = defaultdict(list)
+    for roleset in rolesets.get(lemma, ()):
+        name = str(roleset["id"]).rsplit(".", 1)[0]
+        verb, _, particle = name.partition("_")
+        if verb == lemma and particle in english.PARTICLES and f"{name}.v" in roleset.get("aliases", ()):
+            by_particle[particle].append(roleset)
+    return {particle: [str(r["id"]) for r in found] for particle, found in sorted(by_particle.items())
+            if not any(framenet in links(r, "FrameNet") for r in found)}
 
 
 def render(found: Sequence[tuple[str, ...]], header: str = HEADER) -> str:
     lines = [header, "lexical_units:"]
     for frame, unit, source, *said in found:
-        told = f", object: {said[0]}" if said else ""
+        told = f", object: {said[0]}" if said and said[0] else ""
+        told += f", apart: {json.dumps(said[1])}" if len(said) > 1 and said[1] else ""
         lines.append(f"  - {{frame: {frame}, unit: {unit}, source: {json.dumps(source)}{told}}}")
     return "\n".join(lines) + "\n"
 

@@ -143,11 +143,14 @@ def normalize_unit(text: str) -> str:
 class LexicalUnit:
     """A verb lemma, possibly of several words ("pick up", "look for"), that evokes a frame. ``object``:
     the element its direct object fills when that is not the frame's first ("fill the glass with water":
-    the glass is where the water goes, FrameNet's Filling), its theme then said with "with"."""
+    the glass is where the water goes, FrameNet's Filling), its theme then said with "with". ``apart``: the
+    particles with which the verb is a verb of its own that the frame is not ("hang *up*": end a phone call,
+    PropBank's ``hang_up.03``), unless a place is said ("hang up the coat *on the hook*")."""
 
     text: str
     where: Where | None = field(default=None, compare=False, repr=False)
     object: str | None = field(default=None, compare=False)   # only added units say it: dumps leave it out
+    apart: tuple[str, ...] = field(default=(), compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "text", normalize_unit(self.text))
@@ -155,6 +158,9 @@ class LexicalUnit:
             raise SealError(f"lexical unit {self.text!r} must be one or more words of letters", self.where)
         if self.object is not None:
             _check_identifier("object", self.object, self.where)
+        if not all(re.fullmatch(r"[a-z]+", p) for p in self.apart):
+            raise SealError(f"lexical unit {self.text!r}: apart must be particles, words of letters "
+                            f"({' '.join(self.apart)!r})", self.where)
 
     @property
     def words(self) -> tuple[str, ...]:

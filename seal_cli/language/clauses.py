@@ -59,6 +59,7 @@ class Clauses:
             joins.append(join)
             joins.extend("and" if extra is read[0].gap else "to" for extra in read[1:])
         self.subordinate(clauses)
+        self.one_more(clauses)
         self.share_objects(clauses, joins)
         self.purposes(clauses, joins)
         ordered = self.order(clauses, joins)
@@ -352,6 +353,21 @@ class Clauses:
             if sub is not None and k + 1 == len(clauses) and k > 0 and sub in FIRST_LATER:
                 clauses[k - 1], clauses[k] = clauses[k], clauses[k - 1]
             k += 1
+
+    @staticmethod
+    def one_more(clauses: list[Clause]) -> None:
+        """"bring the milk to the table *and the cereal too*", "grab me a coke, and a juice as well": the verb said
+        again with one more object (the tagger's ``english.ADDITIVES``, an unsaid verb of the clause before) takes
+        the rest of that clause too — its other objects ("me") and its phrases ("to the table"), borrowed —
+        with the new object in place of the last one."""
+        for k in range(1, len(clauses)):
+            clause, before = clauses[k], clauses[k - 1]
+            if clause.verb.text or clause.verb.info != before.verb.info or len(clause.objects) != 1 or \
+                    any(not isinstance(x, Word) for x in clause.items) or clause.message or not before.objects:
+                continue                                    # only the additive ("too": a particle) after it
+            clause.objects = [*(replace(o, borrowed=True) for o in before.objects[:-1]), clause.objects[0]]
+            clause.items = [*(replace(item, np=replace(item.np, borrowed=True)) for item in before.items
+                              if isinstance(item, PP)), *clause.items]
 
     @staticmethod
     def share_objects(clauses: list[Clause], joins: Sequence[str]) -> None:

@@ -57,6 +57,10 @@ SEPARATOR_WORDS = frozenset(["and", "then", ",", ";", ":", "after that", "afterw
                              "when you've done that", "when you have done that", "once that's done",
                              "once that is done"])
 AND_WORDS = frozenset(["and", "as well as", "plus"])
+ADDITIVES = frozenset(["too", "as well", "also"])
+""""..., and the cereal *too*", "and the fork *as well*": a noun phrase with one of these ending its clause after a
+separator is one more object of the clause before's verb, said again (a clause of its own), never a conjunct of
+the phrase before it ("the kitchen table and the cereal")."""
 """Words that join like "and" (clauses or noun phrases)."""
 POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "will you", "would you mind",
                     "could you please", "i want you to", "i need you to", "i would like you to",
@@ -142,6 +146,8 @@ THIRD_PERSON_SUBJECTS = frozenset(["he", "she", "it", "someone", "somebody", "ev
 """Subjects of a third-person verb: any inflected verb after them is finite ("he *likes* company")."""
 LINKING_VERBS = frozenset(["seem", "appear", "look", "sound", "feel", "smell", "taste", "become", "remain"])
 """Linking verbs: their finite form makes a statement whatever follows ("the door *seems* loose")."""
+SPEAKER_PRONOUNS = frozenset(["me", "us"])
+"""Who speaks, as an object: going "with *me*" somewhere, the speaker leads."""
 OBJECT_PRONOUNS = frozenset(["it", "them", "him", "her", "me", "us", "this", "that"])
 BASE_FORM_SUBJECTS = frozenset(["i", "we", "they"])
 """Subjects whose verb has its base form ("we *open* at six"): after them, any verb is finite."""
@@ -181,7 +187,7 @@ TIME_UNITS = frozenset(["second", "seconds", "minute", "minutes", "hour", "hours
 """Measures of time: "for *three minutes*", "every *few minutes*" say how long or how often."""
 TIME_ASKED = (frozenset(["when", "whenever", "if", "once"]), frozenset(["get", "have", "find", "got"]),
               frozenset(["a", "an", "the", "some", "any", "spare", "free", "quick", "little", "few"]),
-              TIME_UNITS | frozenset(["chance", "opportunity", "sec", "secs", "min", "mins", "tick"]))
+              TIME_UNITS | frozenset(["chance", "opportunity", "sec", "secs", "min", "mins", "tick", "time"]))
 """The robot's time asked for in a clause of the robot's own: "*when you get a sec*", "*if you have a spare
 minute*", "*once you find the time*": a subordinator, "you", a verb of having, a few words of quantity, a
 measure of time or a chance. Politeness like ``POLITE_FORMULAE``, not a condition (and no Pick of "a sec")."""
@@ -249,13 +255,21 @@ PLACE_MEANS = "put"
 """"*I want* the mug *on* the shelf", "I'd like the books in the box": the speaker's wish for where a thing is,
 a phrase and a preposition of place (canonical, ``PREPOSITIONS``) with its phrase ending the sentence, means
 "put the mug on the shelf" (``PLACE_MEANS``); "I need the scissors *from* the drawer" stays a request."""
+OBLIGED = frozenset(["goes", "go", "belongs", "belong", "needs to go", "need to go", "should go", "has to go",
+                     "have to go", "must go", "ought to go", "can go", "needs to be", "need to be", "should be",
+                     "has to be", "have to be", "must be", "ought to be", "needs to be put", "need to be put",
+                     "should be put", "has to be put", "must be put", "should be left", "needs to be left"])
+""""The bowl *should go* in the dishwasher", "the milk *belongs* in the fridge", "the door *should be* closed": a
+thing said to belong somewhere is putting it there (``PLACE_MEANS``, a preposition of ``WISHED_PLACES`` or
+"to"), and one said to be in a state is the verb whose result the state is ("close")."""
 KNOW_WISHES = frozenset(["i'd like to know", "i would like to know", "i want to know", "i wanna know", "i need to know",
                          "i'd love to know", "i would love to know", "do you know", "i wonder", "i'm wondering",
-                         "i am wondering", "i was wondering", "i'm curious", "i'm curious about"])
+                         "i am wondering", "i was wondering", "i'm curious", "i'm curious about", "any idea",
+                         "have you any idea", "do you have any idea", "got any idea", "would you know",
+                         "do you happen to know"])
 """The speaker's wish to know, said where a command starts ("*I'd like to know* the heaviest object on the
 shelf", "*do you know* how many cups are left"): it means "tell me ..." (``QUESTION_MEANS``)."""
-WHERE_ASKERS = frozenset(["tell me", "tell us", "show me", "show us", "any idea", "have you any idea",
-                          "do you have any idea", "would you know", "do you happen to know",
+WHERE_ASKERS = frozenset(["tell me", "tell us", "show me", "show us",
                           "let me know", "let us know", "know", "did you see", "have you seen", "did you notice",
                           "have you noticed"]) | KNOW_WISHES
 """A question about the robot's knowledge of where a thing is ("*do you know* where the tea spoon is?", "*can
@@ -275,6 +289,10 @@ BEING_AT = (frozenset(["once", "when", "as soon as", "after"]), frozenset(["you'
 """"*Once you're in* the living room, find Peyton": the robot is to be there first, "go to the living room, then
 ..." (``BEING_MEANS``): a subordinator, "you're", a preposition of place, a phrase, then the clause."""
 BEING_MEANS = "go"
+HAVING_FIRST = (frozenset(["once", "when", "as soon as", "after"]), frozenset(["you have", "you've", "you 've"]))
+""""*Once you have* the spoon, put it in the dishwasher": the robot is to hold the thing first, "get the spoon,
+then ..." (``HAVING_MEANS``): a subordinator, "you have" (no participle after it), a phrase, then the clause."""
+HAVING_MEANS = "get"
 PATH_ALONE = frozenset(["to", "into", "onto"])
 """"*To* the bathroom", "*back to* the kitchen, please": a command that is only where to go (the preposition's
 canonical form, ``PREPOSITIONS``) is going there (``PATH_MEANS``)."""

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import BESIDE, LOCATED, ROUTE_NOUNS, is_room_word
+from seal_cli.language.english import BESIDE, LOCATED, ROUTE_NOUNS, SPEAKER_PRONOUNS, is_room_word
 from seal_cli.language.grounding import PARTS, PIECES, PORTIONS
 from seal_cli.language.lexicon import Word, noun_lemma
 from seal_cli.language.morphology import is_gradable
@@ -135,8 +135,9 @@ class Evoker:
         """"go *with Sam*", "walk with the visitor to the door": a verb of going somewhere, no object,
         and "with" a person is moving together with them — the library's frames that move with a person
         (the first element a person, and a goal). With a goal said, the one that brings the person
-        there (its result relates them to the goal: Guide's ``at(theme, goal)``); without, one that
-        does not (Follow: where they go). The person becomes the object; None when this is not it."""
+        there (its result relates them to the goal: Guide's ``at(theme, goal)``); without, or with the
+        speaker ("come with *me* to the garden": who speaks knows the way), one that does not (Follow:
+        where they go). The person becomes the object; None when this is not it."""
         if clause.objects or clause.message or not any(f.elements and f.elements[0].role == "goal" for f in frames) \
                 or any("instrument" in self.types.roles(f) for f in frames):
             return None
@@ -148,6 +149,8 @@ class Evoker:
                     and "goal" in self.types.roles(f)]
         leading = [f for f in together if _relates_to_goal(self.types.relation(f))]
         goal_said = any(isinstance(x, PP) and x.prep in TO for x in clause.items)
+        if company.np.pronoun in SPEAKER_PRONOUNS:
+            goal_said = False                # "come with me to the garden": the speaker leads, the robot follows
         chosen = leading if goal_said else [f for f in together if f not in leading]
         if not chosen:
             return None

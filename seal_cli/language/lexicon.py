@@ -24,7 +24,7 @@ noun, by looking one or two words ahead.
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from seal_cli.frames.library import Library
 from seal_cli.language.english import (
@@ -87,6 +87,12 @@ class Lexicon:
     """The nouns the taxonomy lists as people ("guest", "son", "person"): "the guest wants tea"."""
     escorts: frozenset[str] = frozenset()
     """Units of frames whose first element is a person ("take", "follow", "meet"): "take *jordan* there"."""
+    apart: Mapping[str, frozenset[str]] = field(default_factory=dict)
+    """A unit → the particles with which its verb is another verb, which no frame has ("hang" → up: end a phone
+    call; :mod:`seal_cli.language.phrasal`)."""
+    can: tuple[str, ...] = ()
+    """What the robot can do: each frame's first lexical unit, in the library's order ("go", "find", "pick up"),
+    named by the error for a verb no frame lists."""
 
     @classmethod
     def of(cls, library: Library) -> Lexicon:
@@ -105,8 +111,11 @@ class Lexicon:
         people = frozenset({"person", *taxonomy.members("person")}) if "person" in taxonomy else frozenset()
         escorts = frozenset(unit.text for frame in library.frames if frame.elements and
                             frame.elements[0].type == "person" for unit in frame.lexical_units)
+        can = tuple(dict.fromkeys(frame.lexical_units[0].text for frame in library.frames if frame.lexical_units))
+        apart = {unit.text: frozenset(unit.apart) for frame in library.frames for unit in frame.lexical_units
+                 if unit.apart}
         return cls({w: tuple(us) for w, us in units.items()}, _result_words(library),
-                   tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts)
+                   tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts, apart, can)
 
     def verb_at(self, words: Sequence[Word], i: int, stop: int) -> tuple[str, int, int | None] | None:
         """The lexical unit that starts at word ``i``: (unit, words it covers contiguously,

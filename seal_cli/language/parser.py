@@ -26,13 +26,17 @@ from lark import Tree
 
 from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
+from seal_cli.language.asked import thing_asked
 from seal_cli.language.clauses import Clauses
 from seal_cli.language.element_types import Types
 from seal_cli.language.evoking import Evoker
 from seal_cli.language.goals import infer_goal
 from seal_cli.language.lexicon import CommandError, Lexicon, Tagger, Word, tokenize
+from seal_cli.language.morphology import in_verb_tables
+from seal_cli.language.phrasal import phrasal_verb
 from seal_cli.language.slicing import infer_slice
 from seal_cli.language.stacking import infer_stack
+from seal_cli.language.state import CLOSED
 from seal_cli.language.steps import infer_left_in, infer_step
 from seal_cli.language.swallowed import Swallowed, swallowed
 from seal_cli.language.syntax import NP, Syntax
@@ -87,6 +91,9 @@ class CommandParser:
         if not words:
             raise CommandError("no words in the command: expected a verb, such as " + _some_verbs(lexicon),
                                _first_column(text), text, ["a verb"])
+        phrasal = phrasal_verb(words, lexicon)
+        if phrasal is not None:
+            raise _phrasal_error(text, lexicon, *phrasal)
         tree = self.tree(text, words)
         if vocabulary is not None:
             vocabulary = self.with_library_synonyms(vocabulary).in_context(text)   # the sentence weighs
@@ -96,6 +103,9 @@ class CommandParser:
         lost = swallowed(parse, words, lexicon, self.library.taxonomy.known_classes)
         if lost:
             raise _swallowed_error(parse, lost[0])
+        thing = thing_asked(parse, self.library, lexicon)
+        if thing is not None:
+            raise _thing_asked_error(text, lexicon, *thing)
         if infer_steps and vocabulary is not None:
             parse = infer_slice(parse, self.library, vocabulary, vocabulary.slice_model, vocabulary.context)
             parse = infer_stack(parse, vocabulary.stack_model)
@@ -262,6 +272,35 @@ def _some_verbs(lexicon: Lexicon, near: str | None = None) -> str:
     return ", ".join(shown[:8]) + (f" ({len(verbs)} in all; `seal frames` lists them)" if len(verbs) > 8 else "")
 
 
+def _phrasal_error(text: str, lexicon: Lexicon, verb: Word, particle: Word) -> CommandError:
+    """A verb made another by its particle ("hang up the phone"): refused at the verb, with what the robot can do."""
+    said = f"{verb.text.lower()} {particle.lower}"
+    return CommandError(f"{said!r} is a verb of its own, not {str(verb.info)!r}: no frame of the library does it; "
+                        f"the robot can {_either(list(lexicon.can))}", verb.start + 1, text, ["a verb"])
+
+
+def _thing_asked_error(text: str, lexicon: Lexicon, evoked: Evoked, role: str) -> CommandError:
+    """A thing where words are asked ("answer the door"): refused at the verb, with what the robot can do."""
+    phrase = evoked.elements[role]
+    return CommandError(f"{phrase.text!r} is a thing, not a question to {evoked.lexical_unit}: "
+                        f"'{evoked.lexical_unit} {phrase.text}' is no frame of the library; "
+                        f"the robot can {_either(list(lexicon.can))}", evoked.span[0] + 1, text, ["a question"])
+
+
+def _unknown_verb(lexicon: Lexicon, word: str) -> str:
+    """The message for a verb no frame lists: the known verbs spelt like it first, when it is no verb of English
+    ("brin": bring), else what the robot can do, one verb for each frame of the library ("tidy", "wait", "make":
+    none of them)."""
+    import difflib
+
+    english = in_verb_tables(word) and word not in CLOSED                   # "this", "it": no verbs here
+    close = [] if english else difflib.get_close_matches(word, lexicon.verbs, n=3, cutoff=0.75)
+    if close or not lexicon.can:                 # "make" is a verb of English, no misspelt "take"
+        return f"unknown verb {word!r}; known verbs include {_some_verbs(lexicon, word)}"
+    return (f"unknown verb {word!r}: no frame of the library does it; the robot can {_either(list(lexicon.can))} "
+            f"({len(lexicon.verbs)} verbs in all; `seal frames` lists them)")
+
+
 def _first_column(text: str) -> int:
     stripped = len(text) - len(text.lstrip())
     return stripped + 1
@@ -279,8 +318,7 @@ def _explain(error: Any, text: str, words: Sequence[Word], lexicon: Lexicon) -> 
     wants_verb = "VERB" in (error.expected or ())
     if wants_verb and not at_end and token.type not in ("END", "SEP"):
         word = str(token).split()[0].lower()
-        return CommandError(f"unknown verb {word!r}; known verbs include {_some_verbs(lexicon, word)}",
-                            column, text, ["a verb"])
+        return CommandError(_unknown_verb(lexicon, word), column, text, ["a verb"])
     before = _word_before(words, words[token.start_pos].start if not at_end else len(text))
     after = f" after {before!r}" if before else ""
     if wants_verb:

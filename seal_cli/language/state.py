@@ -13,6 +13,7 @@ from collections.abc import Iterable, Mapping, Sequence
 from typing import TYPE_CHECKING
 
 from seal_cli.language.english import (
+    ADDITIVES,
     AND_WORDS,
     BASE_FORM_SUBJECTS,
     BE_WORDS,
@@ -31,6 +32,7 @@ from seal_cli.language.english import (
     NOT_PLACES,
     NUMBERS,
     OBJECT_PRONOUNS,
+    OBLIGED,
     PARTICLES,
     PATH_PREPOSITIONS,
     POLITE,
@@ -490,10 +492,11 @@ class State:
                 comma = end
             end += 1
         if end >= len(words):
-            if not said or stated:
-                return None
+            if not said or stated and any(self.verb_at(k) is not None and words[k - 1].lower not in DETERMINERS and
+                                          words[k - 1].lower not in POSSESSIVES for k in range(i + 1, end)):
+                return None                              # a statement with a verb of the library in it: said
             return self._aside(i, end - i, (words[i].start, words[-1].end))
-            # "pour it into the cup... *the blue one*": a fragment after
+            # "pour it into the cup... *the blue one*": a fragment after; "follow Adel? *He is at the entrance*"
         while end + 1 < len(words) and words[end + 1].lower in END_MARKS:
             end += 1
         if not any(t.tag == "VERB" for t in self.out) and \
@@ -837,6 +840,12 @@ class State:
             return Match(1)                # "a pan, containing a knife, in the fridge"
         if low in (",", ";", ":") and (nxt in PREPOSITIONS or nxt == "please"):
             return Match(1)                # "Put a pan with a spoon in it, in the sink"
+        then = any(w.lower == "then" for w in words[i:j])
+        again = self._object_again(j, then) if low in ("and", ",", ";", "then") else None
+        if again:                          # "bring the milk to the table and the cereal too": the verb again
+            return Match(j - i, (merge(words, i, j - i, Tag.SEP), Word("", words[j].start, words[j].start,
+                                                                        Tag.VERB, again)),
+                         expect=False, verb=again, using=False)
         if low in ("then", "after that", "afterwards", "finally", "after", "before", "while", "once done",
                    "when done") or span > 1 and low != ",":
             again = self._path_again(j)
@@ -847,6 +856,8 @@ class State:
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
         if low == "," and span == 1 and self._between_adjectives(i, j):
             return Match(1)                # "a round, gold object": one noun phrase, its head "object"
+        if low in ("and", ",", ";") and self._obliged_at(j):
+            return Match(j - i, (merge(words, i, j - i, Tag.SEP),), expect=True)   # "..., the cups go on the shelf"
         if low in ("and", ",", "or") and self.np_starts(j) and self.prev_tag() in ("WORD", "NAME", "PRON"):
             unknown_verb = (nxt not in DETERMINERS and nxt not in POSSESSIVES and nxt not in PRONOUNS
                             and not capitalised(words[j]) and nxt not in NUMBERS and
@@ -866,6 +877,20 @@ class State:
         if low in ("and", "then", ",", ";", "or"):
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
         return None
+
+    def _obliged_at(self, j: int) -> bool:
+        """Whether a noun phrase and what it should do ("the cups *go* on the shelf", ``english.OBLIGED``) start at
+        ``j``: a clause of its own, said as a statement (the rule ``where a thing should go``)."""
+        words = self.words
+        if j >= len(words) or words[j].lower not in DETERMINERS and words[j].lower not in POSSESSIVES:
+            return False
+        for k in range(j + 1, min(len(words), j + 8)):
+            if match_phrase(words, k, OBLIGED):
+                return words[k - 1].lower not in DETERMINERS and words[k - 1].lower not in POSSESSIVES and \
+                    k + 1 < len(words)
+            if not words[k].lower.isalpha() or words[k].lower in PREPOSITIONS or words[k].lower in CLOSED:
+                return False
+        return False
 
     def _between_adjectives(self, i: int, j: int) -> bool:
         """Whether the comma at ``i`` stands between two adjectives of one noun phrase ("a round, gold object",
@@ -894,6 +919,29 @@ class State:
         n = match_phrase(words, k, PREPOSITIONS) if k < len(words) else 0
         if not n or PREPOSITIONS[" ".join(w.lower for w in words[k:k + n])] not in PATH_PREPOSITIONS or \
                 not self.np_starts(k + n):
+            return None
+        return str(self.out[self.verb_index].info)
+
+    def _object_again(self, j: int, then: bool = False) -> str | None:
+        """The verb of the clause before when one more object of it follows a separator ("..., and the cereal *too*",
+        "and the fork as well", ``ADDITIVES``; after "then" no additive is needed: "put the milk in the fridge and
+        then the butter"): a noun phrase (a determiner or a possessive first) of open-class words, and then only
+        the additive to the sentence's end or the next separator; None."""
+        words = self.words
+        if self.verb_index < 0 or j >= len(words) or \
+                words[j].lower not in DETERMINERS and words[j].lower not in POSSESSIVES:
+            return None
+        k = j + 1
+        while k < min(len(words), j + 8) and words[k].lower.isalpha() and words[k].lower not in CLOSED and \
+                not match_phrase(words, k, ADDITIVES) and self.verb_at(k) is None:
+            k += 1
+        if k == j + 1:
+            return None                                   # a determiner alone
+        n = match_phrase(words, k, ADDITIVES) if k < len(words) else 0
+        if not n and not then:
+            return None
+        end = k + n
+        if end < len(words) and words[end].lower not in END_MARKS and words[end].lower not in (",", ";", "please"):
             return None
         return str(self.out[self.verb_index].info)
 

@@ -13,6 +13,7 @@ import yaml
 from seal_cli.frames.library import Library
 from seal_cli.frames.reading import read_library
 from seal_cli.language.parser import parse_command
+from seal_cli.language.tokens import CommandError
 
 ROOT = Path(__file__).resolve().parents[2]
 DERIVED = ROOT / "framelib" / "derived_units.yaml"
@@ -153,10 +154,15 @@ ROLE_UNITS = ROOT / "framelib" / "role_units.yaml"
 def test_every_role_unit_has_its_source_and_evokes_its_frame(library: Library) -> None:
     entries = yaml.safe_load(ROLE_UNITS.read_text())["lexical_units"]
     for entry in entries:
-        assert entry["source"].startswith(f"propbank:{entry['unit']}.") and " -> VerbNet " in entry["source"]
-        assert "recipient" in entry["source"] or "destination" in entry["source"] and \
-            entry["source"].endswith(", FrameNet Placing)")          # who receives, or where it goes and FrameNet
+        main, _, phrasal = entry["source"].partition("; with ")
+        assert main.startswith(f"propbank:{entry['unit']}.") and " -> VerbNet " in main
+        assert "recipient" in main or "destination" in main and \
+            main.endswith(", FrameNet Placing)")          # who receives, or where it goes and FrameNet
         assert [f.name for f in library.evoked_by(entry["unit"])] == [entry["frame"]]
+        for particle in entry.get("apart", "").split():   # each particle apart with its phrasal rolesets named
+            assert f"{particle} ({entry['unit']}_{particle}." in phrasal
+    apart = {e["unit"]: e.get("apart", "").split() for e in entries}
+    assert "up" in apart["hang"] and "in" in apart["tuck"] and apart["present"] == []   # hang_up.03: a phone call
     units = {e["unit"] for e in entries}
     assert {"reveal", "present", "mention", "shout", "hang", "tuck", "stack"} <= units
     assert not {"fill", "paint", "polish", "stand", "spread"} & units   # the object is where; FrameNet: no Placing
@@ -179,3 +185,21 @@ def test_a_role_unit_parses_as_its_frame(library: Library, command: str, frame: 
     (evoked,) = parse_command(command, library).frames
     assert evoked.frame == frame
     assert {role: evoked.elements[role].text for role in elements if role in evoked.elements} == elements
+
+
+@pytest.mark.parametrize("command", ["hang up the phone", "hang the phone up", "hang up", "tuck in the kids",
+                                     "tuck the kids in and go to the kitchen"])
+def test_a_particle_that_makes_a_verb_of_its_own_is_refused_at_the_verb(command: str, library: Library) -> None:
+    with pytest.raises(CommandError) as caught:
+        parse_command(command, library)
+    assert "is a verb of its own" in caught.value.message and "the robot can" in caught.value.message
+    assert caught.value.column == 1
+
+
+@pytest.mark.parametrize(("command", "frame"), [
+    ("hang up the coat on the hook", "Place"),           # a place said: the unit's own hanging
+    ("tuck the blanket under the mattress", "Place"),
+    ("hang your coat on the rack by the door", "Place"),
+])
+def test_with_a_place_said_the_particle_is_the_units_own(command: str, frame: str, library: Library) -> None:
+    assert [f.frame for f in parse_command(command, library).frames] == [frame]

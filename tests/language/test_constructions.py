@@ -484,3 +484,100 @@ def test_a_wish_for_where_a_thing_is_puts_it_there(library: Library) -> None:
     assert frames("I want the mug on the shelf", library) == [("Place", {"theme": "mug", "goal": "shelf"})]
     assert [f for f, _ in frames("I need the scissors from the drawer", library)] == ["Bring"]
     assert [f for f, _ in frames("I'd like the red mug please", library)] == ["Bring"]
+
+
+def test_a_wish_for_a_state_is_the_verb_whose_result_it_is(library: Library) -> None:
+    assert frames("I'd like the blinds closed", library) == [("Close", {"theme": "blind"})]
+    assert frames("I want the lights off, please", library) == [("ToggleOff", {"theme": "light"})]
+    assert frames("I need the door open", library) == [("Open", {"theme": "door"})]
+    assert [f for f, _ in frames("I'd like the bread sliced", library)] == ["Slice"]
+    assert frames("I'd like the red mug", library)[0][0] == "Bring"            # no state: a request, as before
+    assert frames("I want the mug on the shelf", library)[0][0] == "Place"
+
+
+def test_coming_with_the_speaker_is_following_them(library: Library) -> None:
+    assert frames("come with me to the garden", library) == [("Follow", {"theme": "me", "goal": "garden"})]
+    assert frames("walk with us to the door", library)[0][0] == "Follow"
+    assert frames("go with Lena to the car", library)[0][0] == "Guide"        # someone else: taken there
+
+
+def test_having_a_thing_first_is_getting_it(library: Library) -> None:
+    assert frames("once you have the spoon, put it in the dishwasher", library) == [
+        ("Pick", {"theme": "spoon"}), ("Place", {"theme": "spoon", "goal": "dishwasher"})]
+    assert [f for f, _ in frames("after you have the milk then pour it into the bowl", library)] == ["Pick", "Pour"]
+    assert [f for f, _ in frames("once you have washed the pan, put it on the rack", library)] == ["Clean", "Place"]
+    assert [f for f, _ in frames("when you have the time, close the door", library)] == ["Close"]   # politeness
+
+
+def test_an_unknown_verb_says_what_the_robot_can_do(library: Library) -> None:
+    with pytest.raises(CommandError) as caught:
+        parse_command("tidy up the living room", library)
+    message = caught.value.message
+    assert message.startswith("unknown verb 'tidy': no frame of the library does it; the robot can ")
+    assert all(verb in message for verb in ("go", "pick up", "put", "bring", "turn on", "tell", "count"))
+
+
+@pytest.mark.parametrize("text", ["answer the door", "answer the phone, please", "go to the hall and answer the door"])
+def test_a_thing_is_no_question_to_answer(text: str, library: Library) -> None:
+    with pytest.raises(CommandError, match="is a thing, not a question to answer"):
+        parse_command(text, library)
+
+
+def test_a_question_said_in_words_is_answered(library: Library) -> None:
+    assert frames("answer the question of the person at the door", library)[0][0] == "Answer"
+    assert frames("answer Sam's question", library)[0][0] == "Answer"
+
+
+def test_a_verb_of_english_is_no_misspelling(library: Library) -> None:
+    with pytest.raises(CommandError) as caught:
+        parse_command("make the bed", library)                   # not "take" misspelt
+    assert "the robot can" in caught.value.message and "known verbs include" not in caught.value.message
+    with pytest.raises(CommandError, match="known verbs include bring"):
+        parse_command("brin me the cup", library)
+
+
+def test_a_wished_state_may_say_where_the_thing_is(library: Library) -> None:
+    assert frames("we'd like the lights on in the living room", library)[0][0] == "ToggleOn"
+    assert frames("I want the lamp by the sofa off", library) == [("ToggleOff", {"theme": "lamp"})]
+
+
+def test_where_a_thing_should_go_is_putting_it_there(library: Library) -> None:
+    assert frames("the bowl should go in the dishwasher", library) == [
+        ("Place", {"theme": "bowl", "goal": "dishwasher"})]
+    assert frames("The milk belongs in the fridge.", library) == [("Place", {"theme": "milk", "goal": "fridge"})]
+    assert frames("the strawberry jello needs to go to the pantry", library)[0][0] == "Place"
+    assert frames("the front door should be closed", library) == [("Close", {"theme": "door"})]
+    assert frames("the lights need to be off", library) == [("ToggleOff", {"theme": "light"})]
+    assert [f for f, _ in frames("the dishes go in the sink, the cups go on the shelf", library)] == ["Place", "Place"]
+    assert [f for f, _ in frames("Put the cup in the sink. This needs to go in the bin", library)] == ["Place", "Place"]
+
+
+def test_where_a_thing_should_be_is_where_to_look_and_people_are_not_put(library: Library) -> None:
+    assert [f for f, _ in frames("Could you locate the tea spoon? It should be in the dining room.", library)] == \
+        ["Find"]                                                    # a supposition, no putting
+    for text in ("the guest should go to the living room", "the bus goes at six"):
+        with pytest.raises(CommandError):
+            parse_command(text, library)
+
+
+def test_introducing_yourself_is_greeting_with_or_without_to(library: Library) -> None:
+    assert [f for f, _ in frames("Locate the person pointing to the left and introduce yourself", library)] == \
+        ["Find", "Greet"]
+    assert frames("introduce yourself to Jane", library) == [("Greet", {"theme": "Jane"})]
+
+
+def test_one_more_object_with_too_is_the_verb_again_with_the_rest_of_its_clause(library: Library) -> None:
+    assert frames("bring the milk to the kitchen table and the cereal too", library) == [
+        ("Bring", {"theme": "milk", "goal": "table"}), ("Bring", {"theme": "cereal", "goal": "table"})]
+    assert frames("grab me a coke, and a juice as well", library) == [
+        ("Bring", {"theme": "coke", "recipient": "me"}), ("Bring", {"theme": "juice", "recipient": "me"})]
+    assert frames("put the milk in the fridge, and the butter too", library)[1] == \
+        ("Place", {"theme": "butter", "goal": "fridge"})
+    assert [f for f, _ in frames("pick up the apple and the banana", library)] == ["Pick"]   # no additive: one list
+
+
+def test_after_then_a_noun_phrase_alone_is_the_verb_again(library: Library) -> None:
+    assert frames("put the milk in the fridge and then the butter", library) == [
+        ("Place", {"theme": "milk", "goal": "fridge"}), ("Place", {"theme": "butter", "goal": "fridge"})]
+    assert frames("go to the kitchen and then the bedroom", library) == [
+        ("Go", {"goal": "kitchen"}), ("Go", {"goal": "bedroom"})]

@@ -40,8 +40,9 @@ FRAME_KEYS = ("frame", "description", "framenet", "lexical_units", "elements", "
 ELEMENT_KEYS = ("type", "default")
 TOP_KEYS = ("frames", "categories", "world", "synonyms", "lexical_units")
 UNIT_KEYS = ("frame", "unit", "source")
-UNIT_OPTIONAL = ("object",)
-"""An added unit may say which element its direct object fills (``object: goal``)."""
+UNIT_OPTIONAL = ("object", "apart")
+"""An added unit may say which element its direct object fills (``object: goal``), and the particles with which
+its verb is another verb (``apart: "on out up"``, words separated by spaces)."""
 
 T = TypeVar("T")
 
@@ -128,8 +129,9 @@ class _Reader(NodeReader):
                              "{frame: Name, unit: words, source: where it comes from}", item)
                 continue
             said = found.get("object")
+            apart = tuple(str(found.get("apart") or "").split())
             unit = self.build(functools.partial(LexicalUnit, str(found["unit"]), self.where(item),
-                                                str(said) if said else None), item)
+                                                str(said) if said else None, apart), item)
             if unit is not None:
                 self.contents.units.append((str(found["frame"]), unit))
 

@@ -16,6 +16,8 @@ from seal_cli.language.english import (
     BEING_MEANS,
     DETERMINERS,
     END_MARKS,
+    HAVING_FIRST,
+    HAVING_MEANS,
     PARTICLES,
     POSSESSIVES,
     PREPOSITIONS,
@@ -162,6 +164,31 @@ SEQUENCING = Rule("sequencing word", _sequencing, (
     Example("Take the cup to the sink. After that, wash it.", ". After that,", Tag.SEP),
     Example("Next, open the door", "Next ,", Tag.POLITE),
 ), None, "a sequencing word before the verb")
+def _having_first(s: State, i: int) -> Match | None:
+    """"*Once you have* the spoon, put it in the dishwasher": to have a thing before a clause is to get it first
+    (``HAVING_MEANS``); the subordinator and "you have" are read as that verb, the phrase as its object, and the
+    comma or "then" after it joins the clause that follows. "once you have washed it" is a clause of its own."""
+    words = s.words
+    subordinators, havings = HAVING_FIRST
+    n = _longest(s, i, subordinators)
+    m = _longest(s, i + n, havings) if n else 0
+    k = i + n + m
+    if not m or HAVING_MEANS not in s.lexicon.units or not s.np_starts(k) or s.verb_at(k) is not None or \
+            words[k].lower in ("to", "been", "got", "done", "finished") or s.formula(i):
+        return None                     # "once you have the time": politeness (``TIME_ASKED``)
+    end = s.cond_end(k)
+    if (end >= len(words) or words[end].lower not in (",", ";", "then", "and") or not s.verb_after(end + 1)) and \
+            _run_on_verb(s, k, end) is None:
+        return None                     # "once you have the time": no clause follows, or politeness
+    last = words[k - 1].end
+    return Match(k - i, (Word(s.text_of(words[i].start, last), words[i].start, last, Tag.VERB, HAVING_MEANS),),
+                 expect=False, verb=HAVING_MEANS, using=False)
+
+
+HAVING_FIRST_RULE = Rule("having a thing first", _having_first, (
+    Example("Once you have the spoon, put it in the dishwasher", "Once you have", Tag.VERB),
+    Example("when you've the keys, bring them to me", "when you've", Tag.VERB),
+), first_words(HAVING_FIRST[0]), "'once you have X, ...': get X, then the clause")
 BEING_AT_RULE = Rule("being somewhere first", _being_at, (
     Example("Once you're in the living room, find Peyton", "Once you're", Tag.VERB),
     Example("when you are at the door, greet the visitor", "when you are", Tag.VERB),

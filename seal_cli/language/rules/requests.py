@@ -22,10 +22,12 @@ from seal_cli.language.english import (
     HERE_WORDS,
     KNOW_WISHES,
     LET_KNOW,
+    LOCATED,
     NUMBER_MEANS,
     NUMBER_OF,
     NUMBERS,
     OBJECT_PRONOUNS,
+    OBLIGED,
     PATH_ALONE,
     PATH_MEANS,
     PLACE_MEANS,
@@ -516,6 +518,141 @@ def _wished_placed(s: State, i: int) -> Match | None:
                  verb=PLACE_MEANS, using=False)
 
 
+def _state_unit(s: State, low: str) -> str | None:
+    """The lexical unit whose result the one word of state ``low`` is: "on"/"off" are switching
+    (``SWITCHED_MEANS``), a participle its verb ("closed": "close"), an adjective that is a verb's base form
+    its verb ("open", "clean"); None when it is no result of a unit of the library."""
+    unit = SWITCHED_MEANS.get(low) or verb_lemma(low) or low
+    if unit == low and low not in SWITCHED_MEANS and low not in STATE_PARTICLES and not is_adjective(low):
+        return None                              # a verb's base form that is no adjective ("move"): no state
+    parts = tuple(unit.split())
+    return unit if parts in s.lexicon.units.get(parts[0], ()) else None
+
+
+_WISHED_STATES = WISHED_PLACED | frozenset(["i need", "we need"])
+
+
+def _wished_state(s: State, i: int) -> Match | None:
+    """"*I'd like* the blinds closed", "I want the lights off", "we'd like the door open": a wish for a thing to
+    be in a state, a phrase and then one word of state ending the sentence, is the verb whose result the state
+    is (:func:`_state_unit`), as "make sure the door is closed" is; the wish is the verb, the state its split
+    particle."""
+    words = s.words
+    n = _phrase(s, i, _WISHED_STATES)
+    k = i + n
+    if not n or not s.np_starts(k) or words[k].lower in ("you", "to") or s.verb_at(k) is not None:
+        return None
+    end = _sentence_end(s, k)
+    while end > k and words[end - 1].lower in (",", "please"):
+        end -= 1
+    places = [p - 1 for p in range(k + 2, end - 1) if PREPOSITIONS.get(words[p].lower) in LOCATED and
+              s.np_starts(p + 1) and not any(s.verb_at(j) for j in range(p + 1, end))]
+    q = next((q for q in (*places, end - 1) if _state_unit(s, words[q].lower) is not None), end - 1)
+    if q <= k:                                   # the state ends the sentence, or a place follows it ("the
+        return None                              # lights on in the living room": where they are)
+    unit = _state_unit(s, words[q].lower)
+    before = words[q - 1].lower
+    if unit is None or before in DETERMINERS or before in POSSESSIVES or before in PREPOSITIONS or \
+            any(words[p].lower in BE_WORDS or words[p].lower in (",", "and", "then") or
+                s.verb_at(p) is not None and words[p - 1].lower not in DETERMINERS and
+                words[p - 1].lower not in POSSESSIVES for p in range(k + 1, q)):
+        return None
+    start, stop = words[i].start, words[k - 1].end
+    return Match(n, (Word(s.text_of(start, stop), start, stop, Tag.VERB, unit),), expect=False, verb=unit,
+                 using=False, particle=(q, unit))
+
+
+_OBLIGED_SUBJECTS = frozenset(["it", "this", "these", "those", "that"])
+_SUPPOSED = frozenset(["should be", "must be", "ought to be"])
+"""Said of where a thing is, these suppose ("locate the spoon? It *should be* in the dining room"), they ask no
+putting; of a state they ask it ("the door should be closed")."""
+_OBLIGED_WORDS = 8
+"""The most words the thing's noun phrase may have before what it should do."""
+
+
+def _obliged_phrase(s: State, i: int) -> tuple[int, int] | None:
+    """Where the obligation of "the bowl *should go* in the dishwasher" starts after the phrase at ``i``, and how
+    many words it has; None when no such phrase and obligation start here."""
+    words = s.words
+    first = words[i].lower
+    if not (first in DETERMINERS or first in POSSESSIVES or first in _OBLIGED_SUBJECTS) or s.verb_at(i) is not None:
+        return None
+    for k in range(i + 1, min(len(words), i + _OBLIGED_WORDS)):
+        n = _phrase(s, k, OBLIGED)
+        if n:
+            before = words[k - 1].lower
+            alone = k - 1 == i and first in _OBLIGED_SUBJECTS             # "*this* needs to go in the bin"
+            return (k, n) if alone or before not in DETERMINERS and before not in POSSESSIVES else None
+        low = words[k].lower
+        if not low.isalpha() or low in BE_WORDS or low in QUESTION_WORDS or low in s.lexicon.people or \
+                noun_lemma(low) in s.lexicon.people or \
+                s.verb_at(k) is not None and words[k - 1].lower not in DETERMINERS:
+            return None                           # "the guest should go to ...": a person, no thing put
+    return None
+
+
+def _obliged_unit(s: State, k: int, n: int) -> tuple[str, int | None] | None:
+    """What the obligation at ``k`` (``n`` words) asks: (``PLACE_MEANS``, None) for a place the phrase ending the
+    clause names ("in the dishwasher"), (the unit, the state's index) for one word of state after "be" ("closed",
+    "off"); None for anything else ("the bus goes at six")."""
+    words = s.words
+    m = k + n
+    end = _clause_stop(s, m)
+    while end > m and words[end - 1].lower in (",", "please"):
+        end -= 1
+    if m >= end:
+        return None
+    prep = PREPOSITIONS.get(words[m].lower)
+    to_place = prep in WISHED_PLACES or prep == "to" and m + 1 < end and not capitalised(words[m + 1])
+    if " ".join(w.lower for w in words[k:m]) in _SUPPOSED:
+        to_place = False                          # "it should be in the dining room": where to look, no command
+    if to_place and m + 1 < end and s.np_starts(m + 1) and words[m + 1].lower not in PRONOUNS and \
+            noun_lemma(words[end - 1].lower) not in s.lexicon.people and \
+            not any(s.verb_at(j) is not None and words[j - 1].lower not in DETERMINERS and
+                    words[j - 1].lower not in POSSESSIVES or words[j].lower in (",", "and", "then")
+                    for j in range(m + 1, end)) and (PLACE_MEANS,) in s.lexicon.units.get(PLACE_MEANS, ()):
+        return PLACE_MEANS, None
+    if words[k + n - 1].lower != "be":
+        return None
+    q = m
+    while q < end - 1 and words[q].lower in STATE_ADVERBS:
+        q += 1
+    unit = _state_unit(s, words[q].lower) if q == end - 1 else None
+    return (unit, q) if unit is not None else None
+
+
+def _obliged(s: State, i: int) -> Match | None:
+    """"*The bowl should go* in the dishwasher", "the milk belongs in the fridge", "it needs to go on the table",
+    "the front door should be closed": a thing said to belong somewhere, or to be in a state, is a command to
+    put it there (``PLACE_MEANS``) or to bring the state about (its verb, :func:`_state_unit`): the verb is
+    unsaid before the phrase, the obligation dropped after it (``OBLIGED_DROPPED``), a state word its particle."""
+    found = _obliged_phrase(s, i)
+    if found is None:
+        return None
+    asked = _obliged_unit(s, *found)
+    if asked is None:
+        return None
+    unit, state = asked
+    w = s.words[i]
+    alone = found[0] == i + 1 and w.lower in _OBLIGED_SUBJECTS             # "*this* needs to go in the bin"
+    tag = Tag.PRON if alone else Tag.DET if w.lower in DETERMINERS else Tag.POSS if w.lower in POSSESSIVES else \
+        Tag.PRON
+    return Match(1, (_unsaid(w.start, Tag.VERB, unit), w.tagged(tag)), expect=False, verb=unit, using=False,
+                 particle=(state, unit) if state is not None else None)
+
+
+def _obliged_dropped(s: State, i: int) -> Match | None:
+    at = next((k for k in range(len(s.out) - 1, -1, -1) if s.out[k].tag == Tag.VERB), -1)
+    if at < 0 or at + 1 >= len(s.out) or s.out[at].text or \
+            s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL):
+        return None
+    first = next((k for k, w in enumerate(s.words) if w.start == s.out[at + 1].start), -1)
+    found = _obliged_phrase(s, first) if first >= 0 else None
+    if found is None or found[0] != i or _obliged_unit(s, *found) is None:
+        return None                               # only the obligation of the unsaid verb's own phrase
+    return Match(found[1])                        # "the bowl *should go* in ...": dropped, "put" was unsaid before
+
+
 def _sentence_end(s: State, i: int) -> int:
     words = s.words
     return next((k for k in range(i, len(words)) if words[k].lower in END_MARKS), len(words))
@@ -803,6 +940,22 @@ WHETHER_IS_RULE = Rule("is X somewhere", _whether_is, (
     Example("Is Ben in the kitchen?", "Is", Tag.VERB),
     Example("are the apples in the fridge?", "are", Tag.VERB),
 ), _WHETHER_IS, "'is X in Y?': find X in Y, and answer whether it is there")
+WISHED_STATE = Rule("a wish for a thing's state", _wished_state, (
+    Example("I'd like the blinds closed", "I'd like", Tag.VERB),
+    Example("I want the lights off, please", "off", Tag.PARTICLE),
+    Example("I need the door open", "I need", Tag.VERB),
+    Example("we'd like the lights on in the living room", "on", Tag.PARTICLE),
+), first_words(_WISHED_STATES), "'I'd like X closed', 'I want X off': close X, turn X off")
+OBLIGED_RULE = Rule("where a thing should go", _obliged, (
+    Example("the bowl should go in the dishwasher", "", Tag.VERB),
+    Example("The milk belongs in the fridge.", "The", Tag.DET),
+    Example("the strawberry jello needs to go to the pantry", "", Tag.VERB),
+    Example("the front door should be closed", "closed", Tag.PARTICLE),
+), lambda low: low in DETERMINERS or low in POSSESSIVES or low in _OBLIGED_SUBJECTS,
+    "'X should go in Y', 'X belongs in Y': put X in Y; 'X should be closed': close X")
+OBLIGED_DROPPED = Rule("the obligation after the thing", _obliged_dropped, (
+    Example("the bowl should go in the dishwasher", "should go", ""),
+), first_words(OBLIGED), "the 'should go' of 'the bowl should go in Y', dropped: 'put' was unsaid before")
 WISHED_PLACED_RULE = Rule("a wish for where a thing is", _wished_placed, (
     Example("I want the mug on the shelf", "I want", Tag.VERB),
     Example("I'd like the books in the box, please", "I'd like", Tag.VERB),
@@ -896,7 +1049,8 @@ KNOW_WISH = Rule("wish to know", _know_wish, (
     Example("I'd like to know the heaviest object on the bookshelf.", "I'd like to know", Tag.VERB),
     Example("Do you know how many people in the bedroom are wearing white jackets?", "Do you know how many",
             Tag.VERB),
-), first_words(KNOW_WISHES), "'I'd like to know X', 'do you know X': tell me X")
+    Example("Any idea how many drinks are in the fridge?", "Any idea how many", Tag.VERB),
+), first_words(KNOW_WISHES), "'I'd like to know X', 'do you know X', 'any idea X': tell me X")
 NUMBER_OF_RULE = Rule("the number of", _number_of, (
     Example("Tell me the total number of snacks on the desk.", "Tell me the total number of", Tag.VERB),
     Example("What number of people in the bedroom wear white jackets?", "What number of", Tag.VERB),
