@@ -53,8 +53,10 @@ REGIONS = _closed_class("top bottom front back middle centre center far near low
 the counter" (there "left of" is no preposition: the phrase is a region of the stove, as "the back of" is)."""
 SIDES = _closed_class("left right")
 """The sides of a thing, as regions: "the front *left* of the stove", "the *left* of the sink"."""
-PREPOSITIONS.update({f"to the {region} {side} of": "by" for region in REGIONS for side in SIDES})
-"""... and "to the bottom left of the sink" is where "to the left of" is: by it."""
+PREPOSITIONS.update({f"to {article}{region} {side} of": "by" for article in ("the ", "") for region in REGIONS
+                     for side in SIDES} | {f"to {side} of": "by" for side in SIDES})
+"""... and "to the bottom left of the sink" is where "to the left of" is: by it (so is "to left of", "to front
+left of": the article left out)."""
 WH_WORDS = _closed_class("what which who whom whose where when why how whether if")
 BE_WORDS = _closed_class("is are was were be am 's been being")
 SEPARATOR_WORDS = frozenset(["and", "then", ",", ";", ":", "after that", "afterwards", "next", "finally",

@@ -276,8 +276,10 @@ def test_the_people_of_a_map_or_a_vocabulary_are_names_however_written(library: 
     assert err.value.file == str(path)
 
 
-def test_to_a_region_and_side_of_a_thing_is_beside_it(library: Library) -> None:
-    frames = parse_command("put the soap in the cabinet to the bottom left of the sink", library, ALFRED_LIKE).frames
+@pytest.mark.parametrize("where", ["to the bottom left of the sink", "to bottom left of the sink",
+                                   "to left of the sink", "to the left of the sink"])
+def test_to_a_region_and_side_of_a_thing_is_beside_it(library: Library, where: str) -> None:
+    frames = parse_command(f"put the soap in the cabinet {where}", library, ALFRED_LIKE).frames
     assert [f.frame for f in frames] == ["Place"]
     goal = frames[0].elements["goal"]
-    assert (goal.head, goal.text) == ("cabinet", "the cabinet to the bottom left of the sink")   # said where it is
+    assert (goal.head, goal.text) == ("cabinet", f"the cabinet {where}")   # said where it is
