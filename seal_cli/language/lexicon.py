@@ -87,6 +87,9 @@ class Lexicon:
     """The nouns the taxonomy lists as people ("guest", "son", "person"): "the guest wants tea"."""
     escorts: frozenset[str] = frozenset()
     """Units of frames whose first element is a person ("take", "follow", "meet"): "take *jordan* there"."""
+    puts: frozenset[str] = frozenset()
+    """Units of frames that put their first element in their goal (``in(theme, goal)``: "put", "bring"): "put
+    the pan in the fridge, then *on the stove*" says the verb again with the same thing."""
 
     @classmethod
     def of(cls, library: Library) -> Lexicon:
@@ -106,7 +109,10 @@ class Lexicon:
         escorts = frozenset(unit.text for frame in library.frames if frame.elements and
                             frame.elements[0].type == "person" for unit in frame.lexical_units)
         return cls({w: tuple(us) for w, us in units.items()}, _result_words(library),
-                   tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts)
+                   tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts,
+                   frozenset(unit.text for frame in library.frames if frame.elements and any(
+                       not p.negated and p.predicate == "in" and p.args == (frame.elements[0].role, "goal")
+                       for p in frame.postconditions) for unit in frame.lexical_units))
 
     def verb_at(self, words: Sequence[Word], i: int, stop: int) -> tuple[str, int, int | None] | None:
         """The lexical unit that starts at word ``i``: (unit, words it covers contiguously,
