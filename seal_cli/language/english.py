@@ -41,11 +41,22 @@ PREPOSITIONS = {
     "on top of": "on", "inside of": "inside", "off of": "off", "away from": "from", "in between": "between",
     "on to": "onto", "in to": "into", "up to": "to", "down to": "to", "over to": "to", "out from": "from",
     "from inside": "from", "from within": "from", "from on top of": "from", "from under": "from",
+    "from next to": "from", "from beside": "from", "from behind": "from", "from in front of": "from",
+    "from near": "from", "to next to": "near", "to beside": "near",
     "back to": "to", "back into": "into", "back onto": "onto", "back in": "in", "back on": "on",
     "left of": "by", "right of": "by", "to the left of": "by", "to the right of": "by",
     "on the left of": "by", "on the right of": "by",
 }
 PARTICLES = _closed_class("up down out off away back over on in around about aside along")
+REGIONS = _closed_class("top bottom front back middle centre center far near lower upper")
+"""Words that say which region of a thing, before a side: "the *front* left of the stove", "the *lower* right of
+the counter" (there "left of" is no preposition: the phrase is a region of the stove, as "the back of" is)."""
+SIDES = _closed_class("left right")
+"""The sides of a thing, as regions: "the front *left* of the stove", "the *left* of the sink"."""
+PREPOSITIONS.update({f"to {article}{region} {side} of": "by" for article in ("the ", "") for region in REGIONS
+                     for side in SIDES} | {f"to {side} of": "by" for side in SIDES})
+"""... and "to the bottom left of the sink" is where "to the left of" is: by it (so is "to left of", "to front
+left of": the article left out)."""
 WH_WORDS = _closed_class("what which who whom whose where when why how whether if")
 BE_WORDS = _closed_class("is are was were be am 's been being")
 SEPARATOR_WORDS = frozenset(["and", "then", ",", ";", ":", "after that", "afterwards", "next", "finally",

@@ -432,6 +432,8 @@ class Evoker:
         if cutting is not None and cutting[0].name == frame.name and frame.elements and \
                 role == frame.elements[0].role:
             self.cut.update(id(c) for c in (np, *np.conjuncts))   # "cut a tomato slice": this frame cuts it
+        if np.inner and not np.conjuncts:
+            self.cut_for(np)             # "a slice of cooked bread": the slice is what is cooked, so cut first
         for inner in np.inner:
             self.results_of(inner)
         if np.results and role == "instrument":
@@ -464,7 +466,11 @@ class Evoker:
             np.results = []
             return
         self.cut_for(np)
-        for word in np.results:
+        cutting = self.cutting("cut")
+        cut_name = cutting[0].name if cutting is not None else None
+        # "cold sliced lettuce", "a clean, sliced potato": the words' order says nothing of which came first, and
+        # the thing they name is the pieces, which have the other states: the cut first
+        for word in sorted(np.results, key=lambda w: w.info[0] != cut_name):  # type: ignore[index]
             info: tuple[str, str] = word.info  # type: ignore[assignment]
             frame_name, unit = info
             frame = self.library.frame(frame_name)

@@ -247,6 +247,13 @@ class Vocabulary:
             if whole and whole[-1] not in PORTIONS and (
                     found == self._ground(whole, len(whole), ()) or not self._usage.meant(found)):
                 found = self._usage.choose(whole, self._present, found, self.scene, self.context)
+        elif of and end == len(words) and found is not None and of[-1] not in PORTIONS and \
+                words[-1] != noun_lemma(class_words(found)[-1]) and \
+                found == self._ground(words, end, ()) == self._ground(of, len(of), ()):
+            # "the light of a tall lamp": the head alone names what the whole alone names (a lamp's light is the
+            # lamp) by another word than the class's own head, so the whole's words decide ("a bar of soap", "a
+            # box of tissues" are the class's own names, SoapBar and TissueBox: they stay)
+            found = self._usage.choose(of, self._present, found, self.scene, self.context)
         return found
 
     def _ground(self, words: tuple[str, ...], end: int, of: tuple[str, ...]) -> str | None:

@@ -93,6 +93,9 @@ class Lexicon:
     can: tuple[str, ...] = ()
     """What the robot can do: each frame's first lexical unit, in the library's order ("go", "find", "pick up"),
     named by the error for a verb no frame lists."""
+    puts: frozenset[str] = frozenset()
+    """Units of frames that put their first element in their goal (``in(theme, goal)``: "put", "bring"): "put
+    the pan in the fridge, then *on the stove*" says the verb again with the same thing."""
 
     @classmethod
     def of(cls, library: Library) -> Lexicon:
@@ -114,8 +117,11 @@ class Lexicon:
         can = tuple(dict.fromkeys(frame.lexical_units[0].text for frame in library.frames if frame.lexical_units))
         apart = {unit.text: frozenset(unit.apart) for frame in library.frames for unit in frame.lexical_units
                  if unit.apart}
+        puts = frozenset(unit.text for frame in library.frames if frame.elements and any(
+            not p.negated and p.predicate == "in" and p.args == (frame.elements[0].role, "goal")
+            for p in frame.postconditions) for unit in frame.lexical_units)
         return cls({w: tuple(us) for w, us in units.items()}, _result_words(library),
-                   tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts, apart, can)
+                   tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts, apart, can, puts)
 
     def verb_at(self, words: Sequence[Word], i: int, stop: int) -> tuple[str, int, int | None] | None:
         """The lexical unit that starts at word ``i``: (unit, words it covers contiguously,

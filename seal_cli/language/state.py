@@ -64,6 +64,9 @@ from seal_cli.language.rule import Match
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 
+_PUT_IN = frozenset(["in", "on", "inside"])
+"""Prepositions (canonical) of where a thing is put, besides those of a path ("into", "onto")."""
+
 if TYPE_CHECKING:
     from seal_cli.language.lexicon import Lexicon
 
@@ -869,6 +872,12 @@ class State:
                 PREPOSITIONS[" ".join(w.lower for w in words[j:j + m])] in PATH_PREPOSITIONS and \
                 not any(self.verb_at(k) for k in range(j, self.cond_end(j))):
             return Match(n)      # "down from the shelf *and* over to my chair": one path, phrases in a row
+        again = self._path_again(j) if m and self.prev_tag() in ("WORD", "NAME", "PRON") else None
+        if again in self.lexicon.puts and PREPOSITIONS[" ".join(w.lower for w in words[j:j + m])] in _PUT_IN and \
+                not any(self.verb_at(k) and words[k].lower not in self.lexicon.things
+                        for k in range(j + m, self.cond_end(j))):    # "in (the) microwave": a thing, no verb
+            return Match(n, (merge(words, i, n, Tag.SEP), Word("", words[j].start, words[j].start, Tag.VERB, again)),
+                         expect=False, verb=again, using=False)   # "put a cup in the fridge *and in* the microwave"
         if low == "or" and self.prev_tag() in ("WORD", "NAME", "PRON") and match_phrase(words, j, PREPOSITIONS):
             k = j + match_phrase(words, j, PREPOSITIONS)
             end = self.cond_end(k)
@@ -917,10 +926,12 @@ class State:
             return None
         k = j + (1 if j < len(words) and words[j].lower == "back" else 0)
         n = match_phrase(words, k, PREPOSITIONS) if k < len(words) else 0
-        if not n or PREPOSITIONS[" ".join(w.lower for w in words[k:k + n])] not in PATH_PREPOSITIONS or \
+        unit = str(self.out[self.verb_index].info)
+        prep = PREPOSITIONS[" ".join(w.lower for w in words[k:k + n])] if n else None
+        if prep is None or not (prep in PATH_PREPOSITIONS or unit in self.lexicon.puts and prep in _PUT_IN) or \
                 not self.np_starts(k + n):
-            return None
-        return str(self.out[self.verb_index].info)
+            return None              # "put the pan in the fridge, then *on the stove*": where it is put next
+        return unit
 
     def _object_again(self, j: int, then: bool = False) -> str | None:
         """The verb of the clause before when one more object of it follows a separator ("..., and the cereal *too*",

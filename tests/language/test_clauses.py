@@ -59,3 +59,18 @@ def test_a_purpose_read_as_a_to_phrase_keeps_what_follows_its_verb(library: Libr
     if len(clauses) == 2 and clauses[1].verb.lower == "fold":       # read by the tagger or by this pass
         assert [np.head_text for np in clauses[1].objects] == ["cup"]
         assert [x.prep for x in clauses[1].items if isinstance(x, PP)] == ["beside"]
+
+
+@pytest.mark.parametrize(("text", "goals"), [
+    ("put the pan in the fridge, then on the stove", ["the fridge", "the stove"]),       # the verb left out
+    ("put a cup in the fridge and in the microwave", ["the fridge", "the microwave"]),
+    ("put the bowl in fridge and then in cabinet", ["fridge", "cabinet"]),
+    ("put a cup in fridge and in microwave", ["fridge", "microwave"]),                  # a thing, no verb
+])
+def test_a_second_place_said_without_the_verb_puts_the_same_thing(library: Library, text: str,
+                                                                   goals: list[str]) -> None:
+    parse = parse_command(text, library)
+    places = [f for f in parse.frames if f.frame == "Place" and not f.inferred]
+    assert [p.elements["goal"].text for p in places] == goals
+    assert {parse.resolve(p.elements["theme"]).text for p in places} == {places[0].elements["theme"].text}
+

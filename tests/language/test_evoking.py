@@ -127,3 +127,29 @@ def test_a_thing_put_beside_another_ends_where_the_other_is(library: Library, te
 ])
 def test_a_thing_said_with_its_part_has_no_contents(library: Library, text: str, frames: list[str]) -> None:
     assert [f for f, _ in _frames(text, library)] == frames
+
+
+@pytest.mark.parametrize(("text", "frames"), [
+    ("put a slice of cooked bread on the table", ["Slice", "Heat", "Place"]),      # the slice is what was cooked
+    ("put a heated slice of bread on the table", ["Slice", "Heat", "Place"]),
+    ("put cold sliced lettuce on the table", ["Slice", "Cool", "Place"]),           # the adjectives' order: none
+    ("put a clean, sliced potato in the fridge", ["Slice", "Clean", "Place"]),
+    ("heat the bread, then slice it", ["Heat", "Slice"]),                           # said in order: kept
+    ("put the heated bread on the table", ["Heat", "Place"]),
+])
+def test_pieces_are_cut_before_the_states_their_phrase_gives_them(library: Library, text: str,
+                                                                  frames: list[str]) -> None:
+    assert [f for f, _ in _frames(text, library)] == frames
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("move the towel from next to the mirror to the bathtub",
+     [("Place", {"theme": "the towel from next to the mirror", "goal": "the bathtub"})]),
+    ("move the towel from the mirror to the bathtub",
+     [("Place", {"theme": "the towel from the mirror", "goal": "the bathtub"})]),
+    ("move the bottle from behind the toilet to the sink",
+     [("Place", {"theme": "the bottle from behind the toilet", "goal": "the sink"})]),
+])
+def test_from_a_place_said_by_another_preposition_is_where_it_was(library: Library, text: str,
+                                                                   expected: list[object]) -> None:
+    assert _frames(text, library) == expected

@@ -58,6 +58,9 @@ def theme_class(text: str, library: Library, vocabulary: Vocabulary = ALFRED_LIK
     ("the couch", "Sofa"),
     ("a waste bin", "GarbageCan"),
     ("the bin", "GarbageCan"),                # the head of a synonym ("trash bin"), like a class name's head
+    ("the front left of the counter", "CounterTop"),   # a side of a region ("left of" is no preposition there)
+    ("the lower right of the sink", "Sink"),
+    ("the far left of the dresser", "Dresser"),
 ])
 def test_noun_phrases_ground_to_classes(library: Library, phrase: str, cls: str | None) -> None:
     assert theme_class(phrase, library) == cls
@@ -271,3 +274,12 @@ def test_the_people_of_a_map_or_a_vocabulary_are_names_however_written(library: 
     with pytest.raises(SealError, match="people: must be a list of names") as err:
         load_vocabulary(path)
     assert err.value.file == str(path)
+
+
+@pytest.mark.parametrize("where", ["to the bottom left of the sink", "to bottom left of the sink",
+                                   "to left of the sink", "to the left of the sink"])
+def test_to_a_region_and_side_of_a_thing_is_beside_it(library: Library, where: str) -> None:
+    frames = parse_command(f"put the soap in the cabinet {where}", library, ALFRED_LIKE).frames
+    assert [f.frame for f in frames] == ["Place"]
+    goal = frames[0].elements["goal"]
+    assert (goal.head, goal.text) == ("cabinet", f"the cabinet {where}")   # said where it is

@@ -123,6 +123,17 @@ def test_a_part_of_a_thing_is_grounded_by_what_people_mean_by_the_whole() -> Non
     assert counts.meant("ToiletPaper") and not counts.meant("ToiletPaperRoll") and not counts.meant(None)
 
 
+
+def test_what_a_thing_gives_is_grounded_by_what_people_mean_by_the_thing() -> None:
+    counts = usage({"tall lamp": {"floor_lamp": 9}, "lamp": {"desk_lamp": 6, "floor_lamp": 5},
+                    "soap": {"soap_bottle": 9}}, ("desk_lamp", "floor_lamp", "soap_bar", "soap_bottle"))
+    vocab = Vocabulary.of(["DeskLamp", "FloorLamp", "SoapBar", "SoapBottle"],
+                          {"DeskLamp": ["light"]}).with_usage(counts)
+    assert vocab.with_usage(RULES).ground_words(["light"], of=["tall", "lamp"]) == "DeskLamp"
+    assert vocab.ground_words(["light"], of=["tall", "lamp"]) == "FloorLamp"    # "the light of a tall lamp"
+    assert vocab.ground_words(["tall", "lamp"]) == "FloorLamp"
+    assert vocab.ground_words(["bar"], of=["soap"]) == "SoapBar"                # the class's own head: a name
+
 # "cup" alone: 12 cups and 10 mugs; but 9 of the 10 mugs were said with "coffee", 1 of the 12 cups
 CUPS = WordUsage({"cup": {"cup": 12, "mug": 10}}, frozenset({"cup", "mug"}),
                  context={"cup": {"cup": {"coffee": 1, "sink": 8, "put": 12}, "mug": {"coffee": 9, "put": 10}}},

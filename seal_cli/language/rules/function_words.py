@@ -15,6 +15,8 @@ from seal_cli.language.english import (
     POSSESSIVES,
     PREPOSITIONS,
     PRONOUNS,
+    REGIONS,
+    SIDES,
     TIME_MEASURE,
     TIME_UNITS,
     TIME_WORDS,
@@ -89,6 +91,13 @@ def _that_said(s: State, i: int) -> Match | None:
 def _particle_noun(s: State, i: int) -> Match | None:
     if s.next_lower(i) == "of" and match_phrase(s.words, i, PREPOSITIONS) < 2:
         return s.emit(i, 1, Tag.WORD)                             # "the back of the toilet"
+    return None
+
+
+def _side_of_region(s: State, i: int) -> Match | None:
+    if s.next_lower(i) == "of" and len(s.out) >= 2 and s.out[-1].tag == Tag.WORD and \
+            s.out[-1].lower in REGIONS and s.out[-2].tag in (Tag.DET, Tag.POSS):
+        return s.emit(i, 1, Tag.WORD)                             # "the front left of the stove": a region of it
     return None
 
 
@@ -188,6 +197,11 @@ THAT_SAID = Rule("that and what is said", _that_said, (
 PARTICLE_NOUN = Rule("particle as a noun", _particle_noun, (
     Example("clean the back of the toilet", "back", Tag.WORD),
 ), PARTICLES, "a particle before 'of' is a noun ('the back of')")
+SIDE_OF_REGION = Rule("side of a region", _side_of_region, (
+    Example("put the pot on the front left of the stove", "left", Tag.WORD),
+    Example("put the soap on the back right of the counter", "right", Tag.WORD),
+    Example("put the pan on the lower right of the stove", "right", Tag.WORD),
+), SIDES, "'left'/'right' before 'of' after a region word ('the front left of'): a noun, not 'left of'")
 OF = Rule("of", _of, (Example("bring me a slice of apple", "of", Tag.OF),), frozenset(["of"]), "'of'")
 DETERMINER_IN_NP = Rule("determiner inside a noun phrase", _determiner_in_np, (
     Example("bring me all the cups", "the", Tag.DET),
