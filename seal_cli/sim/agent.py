@@ -161,6 +161,8 @@ class Agent:
         name more) and to look all over a room before counting; None (a benchmark whose scene lists
         every class there is): such a thing is refused at once, and counting counts what is in view."""
         self.records: list[Record] = []
+        self.started = {i.id: i.at for i in self.world.items.values() if i.movable}
+        """Where each thing was as the run started (the picture shows where the moved ones came from)."""
         self.known: dict[str, Known] = {}
         self.unreachable: set[str] = set()
         self.opened: set[str] = set()
@@ -465,7 +467,8 @@ class Agent:
         key = self.class_of(value)
         room = self.room(value)
         if room is not None and not self.instances(key):
-            return self.surface_in(room)
+            theme = binding.elements.get("theme") if role != "theme" else None
+            return self.surface_in(room, self.class_of(theme) if theme else None)
         others = {i for n, i in self.chosen.items() if n != name and self.class_of(n) == key}
         held = self.held()
         if held is not None and held.key == key and held.id not in others:
@@ -528,10 +531,27 @@ class Agent:
         index = self.scene.map.room_id(value)
         return self.scene.map.rooms[index] if index is not None else None
 
-    def surface_in(self, room: Any) -> str | None:
+    def surface_in(self, room: Any, cls: str | None = None) -> str | None:
         """Where to go in a room, or to put a thing down there: the nearest surface in it (a place
         that does not open, such as a counter), else the nearest open receptacle in it (a fridge the
-        robot left open is no place to put down what it was asked to bring to the kitchen)."""
+        robot left open is no place to put down what it was asked to bring to the kitchen). For a thing
+        of class ``cls`` brought there, the room's place where such a thing is put, open or not
+        (:func:`seal_cli.planning.keeping.put_in_room`: a counter, not the sink; the closed cabinet is
+        opened to put it in), the nearest among equals."""
+        if cls is not None:
+            from seal_cli.planning.keeping import Spot, put_in_room
+
+            field_ = self.distances()
+            spots, distance = [], {}
+            for k in self.known.values():
+                if k.movable or not k.receptacle or not bool(room.contains([k.at])[0]) or k.id in self.unreachable:
+                    continue
+                spots.append(Spot(k.id, k.cls, room.name, k.at))
+                if (cell := self.stand_cell(k, field_)) is not None and math.isfinite(field_[cell]):
+                    distance[k.id] = float(field_[cell])
+            best = put_in_room(self.library.taxonomy, self.scene.map.priors, cls, spots, distance)
+            if best is not None:
+                return best.name
         places = [k for k in self.known.values() if not k.movable and k.receptacle
                   and self.world.items[k.id].is_open and bool(room.contains([k.at])[0])]
         surfaces = [k for k in places if not k.openable]
