@@ -322,7 +322,7 @@ def _comes_from(value: str, things: Things) -> list[Any]:
     assert m is not None
     key = class_key(value)
     said = class_words(key)
-    known = {class_key(c) for c in m.priors} | {class_key(o.cls) for o in m.objects} | {class_key(p.cls) for p in m.places}
+    known = {class_key(c) for c in (*m.priors, *(o.cls for o in m.objects), *(p.cls for p in m.places))}
     if not said or key in known:
         return []
     return [p for p in m.places if len(words := class_words(p.cls)) > len(said) and words[:len(said)] == said
