@@ -18,27 +18,37 @@ nearest place, which may be its sink. Both rank the candidate places the same wa
 A class is read as the library reads a compound it does not list: by its head (a ``bathroom_sink`` is
 a sink, a ``reception_desk`` a desk: :func:`~seal_cli.planning.grounding.kind_of`).
 
-**Put away** takes only places some prior mass points at (the place, its class or its room) and that
-are no appliance (tiers 0 to 3), other than the place the thing lies on now, ranked a little
-differently: a place the prior names first, seats last, and between them more mass before a better
-tier (a towel believed to be kept in the bathroom goes into its cabinet, not onto a table of the
-laundry room where it is less likely kept); then tier and nearness to the thing. Never the place
-it lies on now: "put away" says the thing
-is out of place, so it is never put straight back. With no such place (the map has no prior of the
-class, or the prior names nothing but where the thing is) there is no answer, and the planner refuses,
-naming the classes the map does know where to keep.
+**Put away** leaves a thing where it is when it lies on a place the prior names (or whose class it
+names): the apple in the fridge is put away already, and the planner says so rather than moving it.
+Otherwise it takes a place other than where the thing lies, that some prior mass points at (the
+place, its class or its room) and that is a table, a shelf or storage (tiers 0 to 2: never a seat
+or a bed, never an appliance), ranked a little differently from a room's: a place the prior names
+first, then more mass before a better tier (a towel believed kept in the bathroom goes into its
+cabinet, not onto a table of a room where it is less likely kept), then tier and nearness to the
+robot. With no such place (the map has no prior of the class, or its rooms hold no table, shelf or
+cupboard but where the thing lies) there is no answer, and the planner refuses, saying what it knows.
+
+``seal run`` grounds the command before the robot has seen the thing, so it cannot exclude where the
+thing lies: it takes the best place overall, and when the robot finds the thing there, the thing
+needs no moving. The plan and the run agree whenever the thing lies on a place the prior names or on
+none of the candidates; they differ only when the thing lies on the very table the ranking would
+choose without knowing it (not the case on the shipped maps' priors).
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from seal_cli.frames.taxonomy import Taxonomy, class_key, class_words
 from seal_cli.planning.grounding import kind_of
 
-__all__ = ["APPLIANCES", "STORING_UNITS", "Spot", "kept_place", "put_in_room", "rank"]
+if TYPE_CHECKING:
+    from seal_cli.maps.model import Map
+
+__all__ = ["APPLIANCES", "STORING_UNITS", "Spot", "kept_place", "put_in_room", "rank", "spots_of", "where_kept"]
 
 APPLIANCES = ("washer", "heater", "cooler", "toggleable")
 """The library's categories of places for doing something to a thing, not for leaving it."""
@@ -96,17 +106,21 @@ def prior_of(priors: Mapping[str, Mapping[str, float]], cls: str) -> dict[str, f
 
 def kept_place(taxonomy: Taxonomy, priors: Mapping[str, Mapping[str, float]], cls: str, spots: Sequence[Spot],
                *, lies: str | None = None, near: tuple[float, float] | None = None) -> Spot | None:
-    """Where "put away" puts a thing of ``cls``: the best spot some prior mass points at that is no
-    appliance, other than ``lies`` (where the thing is now); nearest ``near`` among equals; None if none."""
+    """Where "put away" puts a thing of ``cls`` that lies on ``lies`` (None: not known): that place itself
+    when the prior names it or its class (the thing is put away already); else the best other spot some
+    prior mass points at that is a table, a shelf or storage (no seat, no appliance), nearest ``near``
+    among equals; None if there is none."""
     prior = prior_of(priors, cls)
-    fits = [s for s in spots if s.name != lies and mass(prior, s) > 0 and tier(taxonomy, prior, s) < 4]
+    here = next((s for s in spots if s.name == lies), None)
+    if here is not None and tier(taxonomy, prior, here) == 0:
+        return here
+    fits = [s for s in spots if s.name != lies and mass(prior, s) > 0 and tier(taxonomy, prior, s) < 3]
     if not fits:
         return None
 
     def key(s: Spot) -> tuple[int, float, int, float, str]:
         level = tier(taxonomy, prior, s)
-        return ({0: 0, 3: 2}.get(level, 1), -round(mass(prior, s), 9), level, math.dist(s.at, near) if near else 0.0,
-                s.name)
+        return (min(level, 1), -round(mass(prior, s), 9), level, math.dist(s.at, near) if near else 0.0, s.name)
 
     return min(fits, key=key)
 
@@ -122,3 +136,20 @@ def put_in_room(taxonomy: Taxonomy, priors: Mapping[str, Mapping[str, float]], c
         return None
     return min(reachable, key=lambda s: (rank(taxonomy, prior, s), distance[s.name], s.name))
 
+
+
+def spots_of(m: Map) -> list[Spot]:
+    """A map's places as spots (named by class key, with their rooms)."""
+    return [Spot(class_key(p.name), p.cls, p.room or m._room_name(p.at), p.at) for p in m.places]
+
+
+def where_kept(taxonomy: Taxonomy, m: Map, cls: str) -> Callable[[str | None], str | None]:
+    """"Put away" a thing of ``cls`` on ``m`` as a function of where it lies: :func:`kept_place`'s name, or
+    None when no place fits (what ``seal run``'s robot asks once it knows where the thing lay)."""
+    spots = spots_of(m)
+
+    def choose(lies: str | None) -> str | None:
+        spot = kept_place(taxonomy, m.priors, cls, spots, lies=class_key(lies) if lies else None, near=m.robot.xy)
+        return spot.name if spot is not None else None
+
+    return choose

@@ -91,6 +91,9 @@ class Problem:
     warnings: tuple[str, ...] = ()
     """What the map does not know of the command: classes it has no prior or object of, people
     nobody placed."""
+    put_away: tuple[Binding, ...] = ()
+    """The commanded Place frames whose goal "put away" chose (:mod:`seal_cli.planning.keeping`): ``seal
+    run`` chooses again once the robot knows where the thing lay."""
 
 
 class Things:
@@ -120,6 +123,8 @@ class Things:
         """The people the command calls by a noun ("the nurse"), not by a name."""
         self.synonyms: Mapping[str, tuple[str, ...]] = {}
         """More names of classes (a vocabulary file's), by class key."""
+        self.put_away: list[Binding] = []
+        """The commanded frames whose goal "put away" chose."""
         if map is not None:
             self._read_map(map)
 
@@ -535,6 +540,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
             said = dict(zip(roles, combination, strict=True))
             if kept:        # "put away the cup and the spoon": each where it is kept
                 said["goal"] = kept[said["theme"]]
+                things.put_away.append(frame.bind(said))
             bindings.append(frame.bind(said))
     return bindings
 
@@ -547,7 +553,7 @@ def _put_away(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]
     keep, when no place fits. A goal the parser guessed from its learned table (``default``: "put away"
     goes into a side table or a cabinet, whatever the thing) gives way to the map's prior of the thing's
     class, and stands when the map has none. Empty for any other frame."""
-    from seal_cli.planning.keeping import STORING_UNITS, Spot, kept_place, prior_of
+    from seal_cli.planning.keeping import STORING_UNITS, kept_place, prior_of, spots_of
 
     m = things.map
     said = evoked.elements.get("goal")
@@ -555,20 +561,20 @@ def _put_away(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]
     if (m is None or "goal" not in frame.roles or ("goal" in values and not guessed) or "theme" not in values
             or " ".join(words_of(evoked.lexical_unit)) not in STORING_UNITS):
         return {}
-    spots = [Spot(class_key(p.name), p.cls, p.room or m._room_name(p.at), p.at) for p in m.places]
-    at = {s.name: s for s in spots}
+    spots = spots_of(m)
     kept: dict[str, str] = {}
     for theme in values["theme"]:
         cls = things.class_of(theme)
         lies = next((f.args[1] for f in things.facts if f.predicate == "in" and f.args[0] == theme), None)
-        near = at[lies].at if lies in at else m.robot.xy
-        spot = kept_place(things.taxonomy, m.priors, cls, spots, lies=lies, near=near)
+        spot = kept_place(things.taxonomy, m.priors, cls, spots, lies=lies, near=m.robot.xy)
         if spot is None and guessed:    # no prior of the class: the guess stands (what "put away" goes in)
             return {}
         if spot is None:
             known = sorted(class_key(c) for c in m.priors)
-            why = (f"the {m.name}'s priors name no place for a {cls} but {lies}, where it is" if prior_of(m.priors, cls)
-                   else f"the {m.name} has no prior of where a {cls} is kept")
+            targets = " or ".join(t.replace("_", " ") for t in prior_of(m.priors, cls))
+            but = f" but {lies}, where it is" if lies else ""
+            why = (f"the {m.name} keeps a {cls} in the {targets}, and there is no table, shelf or cupboard there{but}"
+                   if targets else f"the {m.name} has no prior of where a {cls} is kept")
             listed = f" (it knows where to keep {', '.join(known)})" if known else ""
             raise _located(f"cannot tell where to put away {_said(evoked.elements.get('theme'), theme)}: {why}"
                            f"{listed}; say where to put it", evoked.elements.get("theme"), text)
@@ -686,7 +692,8 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
                                 "in between (another --done) or drop one of them")
         state = state.apply(binding)
         changed.update((f.positive, text) for f in binding.postconditions)
-    return Problem(parse.text, tuple(commanded), state, tuple(unknown_to_map(commanded, things)) if map else ())
+    return Problem(parse.text, tuple(commanded), state, tuple(unknown_to_map(commanded, things)) if map else (),
+                   tuple(b for b in things.put_away if b in commanded))
 
 
 def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:
