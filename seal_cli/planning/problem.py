@@ -527,8 +527,8 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
             things.people.add(SPEAKER)          # "go to the kitchen and come back": back to whoever asked
             values["goal"] = (SPEAKER,)
         _to_recipient(frame, values, things)
-        kept = _put_away(frame, evoked, values, things, parse.text)
         _check_types(frame, values, evoked.elements, things, parse.text)
+        kept = _put_away(frame, evoked, values, things, parse.text)
         bindings.extend(_where_said_first(frame, evoked, values, library, things, parse.text))
         earlier.append(values)
         roles = [r for r in frame.roles if r in values]

@@ -105,13 +105,15 @@ def test_the_robot_chooses_again_once_it_knows_where_the_thing_lay(library: Libr
     """The run grounds "put away the cup" before the robot has seen it, so its first choice may be the desk the
     cup lies on; once the robot has picked it up from there it puts it away elsewhere, as the plan does."""
     text = (MAPS / "apartment.yaml").read_text().replace("image: apartment.pgm", f"image: {MAPS / 'apartment.pgm'}")
-    moved = text.replace("{class: cup, at: [0.3, 3.6], in: coffee_table_1}", "{class: cup, at: [-8.3, 1.4], in: desk_1}")
+    moved = text.replace("{class: cup, at: [0.3, 3.6], in: coffee_table_1}",
+                         "{class: cup, at: [-8.3, 1.4], in: desk_1}")
     assert moved != text
     (tmp_path / "desk.yaml").write_text(moved)
     house = load_map(tmp_path / "desk.yaml")
     assert [str(s) for s in plan_text("put away the cup", library, map=house).steps][-1] == \
         "Place(theme=cup, goal=nightstand_1)"
-    agent, result = run_on_map(house, "put away the cup", library, make_policy("sefm", 50), rng=np.random.default_rng(0))
+    agent, result = run_on_map(house, "put away the cup", library, make_policy("sefm", 50),
+                               rng=np.random.default_rng(0))
     said = [r.text for r in agent.records]
     assert result.completed and "cup_1 lay on desk_1: puts it away on nightstand_1" in " ".join(said)
     assert agent.world.items["cup_1"].parent == "nightstand_1"
