@@ -323,7 +323,8 @@ class Agent:
             if (k.movable and k.cls == self.class_of(theme) and k.id in self.world.items
                     and not self.world.held_chain(k.id) and (place := self.world.items[k.id].parent) is not None
                     and place in self.known and choose(place) == class_key(place)):
-                return f"{k.id} is {'in' if self.world.hollow(self.world.items[place]) else 'on'} {place} already"
+                on = "in" if self.world.hollow(self.world.items[place]) else "on"
+                return f"{k.id} is {on} {place} already, where a {spoken(k.cls)} is kept"
         return None
 
     def _put_away_again(self, todo: list[Binding]) -> str | None:
