@@ -585,7 +585,8 @@ class Agent:
         robot left open is no place to put down what it was asked to bring to the kitchen). For a thing
         of class ``cls`` brought there, the room's place where such a thing is put, open or not
         (:func:`seal_cli.planning.keeping.put_in_room`: a counter, not the sink; the closed cabinet is
-        opened to put it in), the nearest among equals."""
+        opened to put it in), the nearest among equals, other than the place the thing in hand was taken
+        from (the apple brought from the fridge to the kitchen goes on the counter, not back in)."""
         if cls is not None:
             from seal_cli.planning.keeping import Spot, put_in_room
 
@@ -597,6 +598,10 @@ class Agent:
                 spots.append(Spot(k.id, k.cls, room.name, k.at))
                 if (cell := self.stand_cell(k, field_)) is not None and math.isfinite(field_[cell]):
                     distance[k.id] = float(field_[cell])
+            held = self.held()
+            lay = self.picked_from.get(held.id) if held is not None else None
+            if any(s.name != lay for s in spots if s.name in distance):     # not back where it was taken from
+                spots = [s for s in spots if s.name != lay]
             best = put_in_room(self.library.taxonomy, self.scene.map.priors, cls, spots, distance)
             if best is not None:
                 return best.name
