@@ -554,6 +554,32 @@ def hostile_cases() -> Iterator[Case]:
         for number in (signal.SIGINT, signal.SIGHUP, signal.SIGTERM)[k % 2:k % 2 + 2]:
             yield Case(f"H {signal.Signals(number).name} during {what}", argv, (*both, ("out", "dir")),
                        codes=(0, 129, 130, 143, -int(number)), keep=inputs, signal=(number, 1.5 + k))
+    # -- where a thing is put (e2e10): "put away", a room as a goal, "there", a picture's crop -------------------
+    priors = "priors:\n  cup: {family_room: 0.5, bedroom: 0.5}\n  spoon: {kitchen: 0.5, bedroom: 0.5}\n" \
+             "  apple: {fridge: 0.4, counter: 0.4, kitchen: 0.2}\n"
+    odd_priors = {"zero mass": "priors:\n  cup: {bedroom: 0.0}\n", "no priors": "priors: {}\n",
+                  "a prior naming only where the cup lies": "priors:\n  cup: {coffee_table_1: 1.0}\n",
+                  "a prior of a class named like a place": "priors:\n  cup: {sofa: 1.0}\n  sofa_1: {bedroom: 1.0}\n"}
+    for what, block in odd_priors.items():
+        changed = text.replace(priors, block)
+        assert changed != text, "the apartment's priors changed: update the hostile put-away cases"
+        for said in ("put away the cup", "store the cup and the spoon", "take the cup to the bedroom"):
+            yield Case(f"H put away, {what}: {said}", ("run", said, "--map", "p.yaml", "--particles", "20",
+                                                       "--max-steps", "60"),
+                       (("p.yaml", changed.encode()), image), keep=("p.yaml", "apartment.pgm"))
+    no_places = re.sub(r"places:\n(  - .*\n)+", "places: []\n", text).replace("in: coffee_table_1", "in: null") \
+        .replace("in: counter_1", "in: null").replace("in: fridge_1", "in: null").replace("{class: apple, in: null}",
+                                                                                          "{class: apple, at: [8, -3]}")
+    yield Case("H put away on a map with no places", ("plan", "put away the cup", "--map", "n.yaml"),
+               (("n.yaml", no_places.encode()), image), keep=("n.yaml",))
+    for said in ("put away it", "put away", "store everything", "put the cup in there", "put it over there",
+                 "put away the cup in there", "put the cup there and put it away", "take the cup there",
+                 "put away the fridge", "put away the kitchen", "bring a coffee", "bring the coffee table a coffee",
+                 "put away " + "the cup and " * 60 + "the spoon"):
+        yield Case(f"H where to put: {said[:40]}", ("plan", "--map", "apartment", said), says=None)
+    unknown = b"P5\n400 280\n255\n" + b"\xcd" * (400 * 280)      # every pixel unknown grey: nothing to crop to
+    yield Case("H map --png of a map whose image is all unknown", ("map", "m.yaml", "--png", "o.png"),
+               (m, ("apartment.pgm", unknown)), codes=(0, 1), keep=inputs)
     # -- every subcommand's options at their edges -----------------------------------------------------
     edges = [("parse", "--vocabulary", "nope.yaml", "stir the cup"), ("parse", "--map", "nope", "stir the cup"),
              ("parse", "--framelib", "nope.frame", "stir"), ("plan", "--holding", "😀", "stir the cup"),

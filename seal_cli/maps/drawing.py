@@ -15,7 +15,7 @@ import numpy as np
 from seal_cli.maps.geometry import FREE, OCCUPIED
 from seal_cli.maps.model import Map
 
-__all__ = ["LABEL", "declutter", "draw_map", "legend_below", "room_colour", "save_map_png"]
+__all__ = ["LABEL", "MARGIN", "declutter", "draw_map", "legend_below", "room_colour", "save_map_png", "shown_extent"]
 
 LABEL = "seal-label"
 """The ``gid`` of the names written on a map; :func:`declutter` moves those that are annotations."""
@@ -33,6 +33,27 @@ _PALETTE = ("#4e79a7", "#f28e2b", "#59a14f", "#e15759", "#b07aa1", "#76b7b2", "#
 def room_colour(index: int) -> str:
     """The colour of the index-th room (a 10-colour palette, repeating)."""
     return _PALETTE[index % len(_PALETTE)]
+
+
+MARGIN = 0.5
+"""Metres of the picture around what the map shows (its known cells, rooms, places, things and people)."""
+
+
+def shown_extent(m: Map) -> tuple[float, float, float, float]:
+    """What a picture of the map shows: the part of its bounds that holds known cells (free or occupied),
+    rooms, places, things, people and the robot, plus :data:`MARGIN` — not the wide unknown border a
+    laser map is saved with (the AWS house's 25 m square holds a 16 m × 9 m house)."""
+    grid = m.grid
+    known = np.argwhere((grid.cells == FREE) | (grid.cells == OCCUPIED))
+    points = [grid.cell_centres(known[:, 0], known[:, 1])] if len(known) else []
+    points += [room.vertices for room in m.rooms if not room.name.startswith("_")]
+    points += [np.asarray([p.at for p in m.places] + [o.at for o in m.objects] + [m.robot.xy], float)]
+    points += [np.asarray([m.person_at(p) for p in m.people], float).reshape(-1, 2)]
+    xy = np.vstack([np.asarray(p, float).reshape(-1, 2) for p in points])
+    xmin, ymin, xmax, ymax = m.bounds
+    lo = np.maximum(xy.min(axis=0) - MARGIN, (xmin, ymin))
+    hi = np.minimum(xy.max(axis=0) + MARGIN, (xmax, ymax))
+    return (float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1]))
 
 
 def occupancy_image(m: Map) -> np.ndarray:
@@ -84,7 +105,7 @@ def draw_map(ax: Any, m: Map, *, rooms: bool = True, places: bool = True, object
             ax.add_patch(Polygon(outline, closed=True, facecolor="#ffd700", alpha=0.25, edgecolor="none", zorder=2))
         ax.plot(x, y, marker="o", markersize=8, color="#1f77b4", markeredgecolor="black", zorder=4)
         ax.arrow(x, y, 0.6 * np.cos(yaw), 0.6 * np.sin(yaw), width=0.05, color="#1f77b4", zorder=4)
-    xmin, ymin, xmax, ymax = m.bounds
+    xmin, ymin, xmax, ymax = shown_extent(m)
     pad = 0.02 * max(xmax - xmin, ymax - ymin)
     ax.set_xlim(xmin - pad, xmax + pad)
     ax.set_ylim(ymin - pad, ymax + pad)
@@ -166,7 +187,7 @@ def save_map_png(m: Map, path: str | Path, *, visible: bool = True, dpi: int = 1
 
     from seal_cli.fileio import atomic_output
 
-    xmin, ymin, xmax, ymax = m.bounds
+    xmin, ymin, xmax, ymax = shown_extent(m)
     width = 9.0
     height = max(3.0, width * (ymax - ymin) / (xmax - xmin) + 0.6)
     fig, ax = plt.subplots(figsize=(width, height))

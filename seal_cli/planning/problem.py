@@ -67,6 +67,10 @@ INDEFINITE = frozenset({"something", "anything", "everything", "nothing"})
 """Pronouns that name a thing of their own rather than an antecedent."""
 
 
+THERE = frozenset({"there", "over there", "in there", "yonder"})
+"""Words that point at a place and name none: with no place before them in the command (the parser's
+``refers_to``), where they point is unknown ("put the cup in there" alone), and the command is refused."""
+
 HELD_PRONOUNS = frozenset({"it", "this", "that"})
 """Pronouns that, with nothing before them in the command, call what the robot holds."""
 
@@ -87,6 +91,9 @@ class Problem:
     warnings: tuple[str, ...] = ()
     """What the map does not know of the command: classes it has no prior or object of, people
     nobody placed."""
+    put_away: tuple[Binding, ...] = ()
+    """The commanded Place frames whose goal "put away" chose (:mod:`seal_cli.planning.keeping`): ``seal
+    run`` chooses again once the robot knows where the thing lay."""
 
 
 class Things:
@@ -116,6 +123,8 @@ class Things:
         """The people the command calls by a noun ("the nurse"), not by a name."""
         self.synonyms: Mapping[str, tuple[str, ...]] = {}
         """More names of classes (a vocabulary file's), by class key."""
+        self.put_away: list[Binding] = []
+        """The commanded frames whose goal "put away" chose."""
         if map is not None:
             self._read_map(map)
 
@@ -271,6 +280,11 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
         raise _located(f"{phrase.text!r} refers to the {role} of frame {index + 1}, which the command lacks",
                        phrase, text)
     word = phrase.head.lower()
+    if word in THERE and category in ("location", "place", "room"):
+        where = f" (the {things.map.name}'s places are {', '.join(p.name for p in things.map.places)})" \
+            if things.map is not None and things.map.places else ""
+        raise _located(f"cannot tell where {phrase.text!r} is: no place before it in the command says; name the "
+                       f"place{where}", phrase, text)
     if word in INDEFINITE and things.map is not None and category not in ("message", "question"):
         raise _located(_unnamed_kind(phrase, things.map), phrase, text)
     if word in PRONOUNS and word not in PERSON_PRONOUNS and word not in INDEFINITE:
@@ -287,11 +301,37 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
         value = phrase.head     # on a map, a class the words do not name is a guess: the thing said is sought
     if not class_key(value):
         raise _located(f"{phrase.text!r} names no thing", phrase, text)
+    if carried and not asked and things.map is not None and (sources := _comes_from(value, things)):
+        m = things.map
+        where = ", ".join(f"{p.name} (in the {(p.room or m._room_name(p.at) or '?').replace('_', ' ')})"
+                          for p in sources)
+        kinds = sorted({class_key(c) for c in (*m.priors, *(o.cls for o in m.objects))})
+        known = f"; the things it knows of are {', '.join(kinds)}" if kinds else ""
+        word = " ".join(class_words(value))
+        raise _located(f"the {m.name} has no {word} to carry, only {where}, which the robot cannot get {word} "
+                       f"from{known}", phrase, text)
     count = _count(phrase, value)
     if count > MAX_COUNT:
         raise _located(f"{phrase.text!r} asks for {count:,} things; seal plans for at most {MAX_COUNT} "
                        "of a kind", phrase, text)
     return things.instances(value, count)
+
+
+def _comes_from(value: str, things: Things) -> list[Any]:
+    """The map's places a thing to carry comes out of, when the map knows nothing else of its class: places
+    (no furniture) whose class is the thing's class and a head ("coffee" and the ``coffee_machine``, "ice"
+    and an ``ice_maker``; not the ``coffee_table``). The robot takes things from places and does not work
+    machines to make them, so "bring a coffee" there is refused at once, naming the machine and what the map
+    does know of, rather than searching the house for a cup of coffee lying about."""
+    m = things.map
+    assert m is not None
+    key = class_key(value)
+    said = class_words(key)
+    known = {class_key(c) for c in (*m.priors, *(o.cls for o in m.objects), *(p.cls for p in m.places))}
+    if not said or key in known:
+        return []
+    return [p for p in m.places if len(words := class_words(p.cls)) > len(said) and words[:len(said)] == said
+            and kind_of(things.taxonomy, p.cls, "furniture") is not True]
 
 
 APPLIANCE_KINDS = (FIXED, "furniture", "openable", "toggleable", "heater", "cooler", "washer")
@@ -488,6 +528,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
             values["goal"] = (SPEAKER,)
         _to_recipient(frame, values, things)
         _check_types(frame, values, evoked.elements, things, parse.text)
+        kept = _put_away(frame, evoked, values, things, parse.text)
         bindings.extend(_where_said_first(frame, evoked, values, library, things, parse.text))
         earlier.append(values)
         roles = [r for r in frame.roles if r in values]
@@ -496,8 +537,49 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
                             f"multiply: {evoked.frame} alone is {math.prod(len(values[r]) for r in roles):,}); "
                             "split it into smaller commands")
         for combination in itertools.product(*(values[r] for r in roles)):
-            bindings.append(frame.bind(dict(zip(roles, combination, strict=True))))
+            said = dict(zip(roles, combination, strict=True))
+            if kept:        # "put away the cup and the spoon": each where it is kept
+                said["goal"] = kept[said["theme"]]
+                things.put_away.append(frame.bind(said))
+            bindings.append(frame.bind(said))
     return bindings
+
+
+def _put_away(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]], things: Things,
+              text: str) -> dict[str, str]:
+    """The goal of each theme of a Place said with a storing verb and no goal ("put away the cup",
+    "store the apple") on a map: where the map's prior says such a thing is kept, other than where it
+    lies (:func:`seal_cli.planning.keeping.kept_place`); refused, naming what the map does know where to
+    keep, when no place fits. A goal the parser guessed from its learned table (``default``: "put away"
+    goes into a side table or a cabinet, whatever the thing) gives way to the map's prior of the thing's
+    class, and stands when the map has none. Empty for any other frame."""
+    from seal_cli.planning.keeping import STORING_UNITS, kept_place, prior_of, spots_of
+
+    m = things.map
+    said = evoked.elements.get("goal")
+    guessed = said is not None and bool(said.default)     # the parser's learned guess of a goal, not words
+    if (m is None or "goal" not in frame.roles or ("goal" in values and not guessed) or "theme" not in values
+            or " ".join(words_of(evoked.lexical_unit)) not in STORING_UNITS):
+        return {}
+    spots = spots_of(m)
+    kept: dict[str, str] = {}
+    for theme in values["theme"]:
+        cls = things.class_of(theme)
+        lies = next((f.args[1] for f in things.facts if f.predicate == "in" and f.args[0] == theme), None)
+        spot = kept_place(things.taxonomy, m.priors, cls, spots, lies=lies, near=m.robot.xy)
+        if spot is None and guessed:    # no prior of the class: the guess stands (what "put away" goes in)
+            return {}
+        if spot is None:
+            known = sorted(class_key(c) for c in m.priors)
+            targets = " or ".join(t.replace("_", " ") for t in prior_of(m.priors, cls))
+            but = f" but {lies}, where it is" if lies else ""
+            why = (f"the {m.name} keeps a {cls} in the {targets}, and there is no table, shelf or cupboard there{but}"
+                   if targets else f"the {m.name} has no prior of where a {cls} is kept")
+            listed = f" (it knows where to keep {', '.join(known)})" if known else ""
+            raise _located(f"cannot tell where to put away {_said(evoked.elements.get('theme'), theme)}: {why}"
+                           f"{listed}; say where to put it", evoked.elements.get("theme"), text)
+        kept[theme] = spot.name
+    return kept
 
 
 def _carried(frame: Frame, role: str) -> bool:
@@ -610,7 +692,8 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
                                 "in between (another --done) or drop one of them")
         state = state.apply(binding)
         changed.update((f.positive, text) for f in binding.postconditions)
-    return Problem(parse.text, tuple(commanded), state, tuple(unknown_to_map(commanded, things)) if map else ())
+    return Problem(parse.text, tuple(commanded), state, tuple(unknown_to_map(commanded, things)) if map else (),
+                   tuple(b for b in things.put_away if b in commanded))
 
 
 def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:

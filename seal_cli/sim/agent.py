@@ -144,7 +144,8 @@ class Agent:
                  observers: Sequence[Callable[[Record], None]] = (), look_every: float = 1.0,
                  classes: Mapping[str, str] | None = None, sweeper: Callable[[], Any] | None = None,
                  questions: Mapping[Binding, Question] | None = None, clock: datetime | None = None,
-                 search_end: float | None = None) -> None:
+                 search_end: float | None = None,
+                 put_away: Mapping[Binding, Callable[[str | None], str | None]] | None = None) -> None:
         self.scene = scene
         self.world = scene.world
         self.grid = scene.grid
@@ -161,6 +162,14 @@ class Agent:
         name more) and to look all over a room before counting; None (a benchmark whose scene lists
         every class there is): such a thing is refused at once, and counting counts what is in view."""
         self.records: list[Record] = []
+        self.put_away: dict[Binding, Callable[[str | None], str | None]] = dict(put_away or {})
+        """Each commanded frame whose goal "put away" chose, and where it would put the thing, as a function
+        of where the thing lay (:func:`seal_cli.planning.keeping.where_kept`): the command was grounded
+        before the robot saw the thing, so it chooses again once it knows."""
+        self.picked_from: dict[str, str | None] = {}
+        """Where each thing the robot picked up lay."""
+        self.started = {i.id: i.at for i in self.world.items.values() if i.movable}
+        """Where each thing was as the run started (the picture shows where the moved ones came from)."""
         self.known: dict[str, Known] = {}
         self.unreachable: set[str] = set()
         self.opened: set[str] = set()
@@ -264,6 +273,8 @@ class Agent:
         (:func:`seal_cli.planning.plan.already_so`) asked of what it has seen: "umbrella_1 is in the
         hallway already" when the frame would only bring a thing into a room where one it knows of lies
         free (not held, not shut in), or put it in or on a place where one it knows of is; None otherwise."""
+        if binding in self.put_away:        # put away: already so only where such a thing is kept
+            return self._kept_already(binding)
         results = [f for f in binding.postconditions if not f.negated and f.predicate == "in" and len(f.args) == 2]
         rooms = {class_key(p.name): class_key(p.room) for p in self.scene.map.places if p.room}
         facts = set(self.state.facts)
@@ -300,6 +311,38 @@ class Agent:
             return f"{seen[thing]} is in the {room.name.replace('_', ' ')} already"
         place = self.world.items[seen[thing]].parent or where
         return f"{seen[thing]} is {'in' if self.world.hollow(self.world.items[place]) else 'on'} {place} already"
+
+    def _kept_already(self, binding: Binding) -> str | None:
+        """"pen_1 is on desk_1 already", for a frame "put away" chose the goal of, when the robot sees a
+        thing of its kind lying free where such a thing is kept (a place its prior names); None otherwise."""
+        choose = self.put_away.get(binding)
+        theme = binding.elements.get("theme")
+        if choose is None or theme is None:
+            return None
+        for k in self.known.values():
+            if (k.movable and k.cls == self.class_of(theme) and k.id in self.world.items
+                    and not self.world.held_chain(k.id) and (place := self.world.items[k.id].parent) is not None
+                    and place in self.known and choose(place) == class_key(place)):
+                on = "in" if self.world.hollow(self.world.items[place]) else "on"
+                return f"{k.id} is {on} {place} already, where a {spoken(k.cls)} is kept"
+        return None
+
+    def _put_away_again(self, todo: list[Binding]) -> str | None:
+        """Choose again where the next commanded frame puts away the thing just picked up, now that the
+        robot knows where it lay ("put away the cup": not back on the table it was on); the reason to
+        replan, or None when the goal stands."""
+        if not todo or (choose := self.put_away.get(todo[0])) is None or (held := self.held()) is None:
+            return None
+        if held.key != self.class_of(todo[0].elements.get("theme", "")):
+            return None
+        lay = self.picked_from.get(held.id)
+        goal = choose(lay)
+        if goal is None or goal == todo[0].elements.get("goal"):
+            return None
+        again = todo[0].frame.bind({**todo[0].elements, "goal": goal})
+        self.put_away[again] = self.put_away.pop(todo[0])
+        todo[0] = again
+        return f"{held.id} lay on {lay}: puts it away on {goal}"
 
     def _parent(self, item_id: str) -> Item:
         return self.world.items[self.world.items[item_id].parent or ""]
@@ -374,6 +417,13 @@ class Agent:
                 if todo and binding == todo[0]:
                     todo.pop(0)
                 self.say("done", f"done: {binding}", frame=str(binding))
+                if (again := self._put_away_again(todo)) is not None:
+                    try:
+                        self.steps, self.index = self.planner(todo, self.library, self.resync(self.state)), 0
+                    except SealError as error:
+                        self.say("give_up", f"cannot replan: {error.message}")
+                        return self._result(False, f"cannot replan: {error.message}", plan, executed, Reason.CANNOT)
+                    self.say("replan", f"{again}; replans: " + ", ".join(str(b) for b in self.steps))
                 continue
             if outcome.reason is Reason.ALREADY:     # what the next commanded frame would do is so already
                 skipped = todo.pop(0)
@@ -465,7 +515,8 @@ class Agent:
         key = self.class_of(value)
         room = self.room(value)
         if room is not None and not self.instances(key):
-            return self.surface_in(room)
+            theme = binding.elements.get("theme") if role != "theme" else None
+            return self.surface_in(room, self.class_of(theme) if theme else None)
         others = {i for n, i in self.chosen.items() if n != name and self.class_of(n) == key}
         held = self.held()
         if held is not None and held.key == key and held.id not in others:
@@ -528,10 +579,32 @@ class Agent:
         index = self.scene.map.room_id(value)
         return self.scene.map.rooms[index] if index is not None else None
 
-    def surface_in(self, room: Any) -> str | None:
+    def surface_in(self, room: Any, cls: str | None = None) -> str | None:
         """Where to go in a room, or to put a thing down there: the nearest surface in it (a place
         that does not open, such as a counter), else the nearest open receptacle in it (a fridge the
-        robot left open is no place to put down what it was asked to bring to the kitchen)."""
+        robot left open is no place to put down what it was asked to bring to the kitchen). For a thing
+        of class ``cls`` brought there, the room's place where such a thing is put, open or not
+        (:func:`seal_cli.planning.keeping.put_in_room`: a counter, not the sink; the closed cabinet is
+        opened to put it in), the nearest among equals, other than the place the thing in hand was taken
+        from (the apple brought from the fridge to the kitchen goes on the counter, not back in)."""
+        if cls is not None:
+            from seal_cli.planning.keeping import Spot, put_in_room
+
+            field_ = self.distances()
+            spots, distance = [], {}
+            for k in self.known.values():
+                if k.movable or not k.receptacle or not bool(room.contains([k.at])[0]) or k.id in self.unreachable:
+                    continue
+                spots.append(Spot(k.id, k.cls, room.name, k.at))
+                if (cell := self.stand_cell(k, field_)) is not None and math.isfinite(field_[cell]):
+                    distance[k.id] = float(field_[cell])
+            held = self.held()
+            lay = self.picked_from.get(held.id) if held is not None else None
+            if any(s.name != lay for s in spots if s.name in distance):     # not back where it was taken from
+                spots = [s for s in spots if s.name != lay]
+            best = put_in_room(self.library.taxonomy, self.scene.map.priors, cls, spots, distance)
+            if best is not None:
+                return best.name
         places = [k for k in self.known.values() if not k.movable and k.receptacle
                   and self.world.items[k.id].is_open and bool(room.contains([k.at])[0])]
         surfaces = [k for k in places if not k.openable]
@@ -1151,7 +1224,10 @@ class Agent:
             if target is None:
                 return Outcome(False, f"knows no {value} to {action.name.replace('_', ' ')}", Reason.NOT_FOUND, value)
             args.append(target)
+        lay = self.world.items[args[0]].parent if action.name == "pick" and args[0] in self.world.items else None
         outcome = self.world.act(action.name, *args)
+        if outcome.ok and action.name == "pick":
+            self.picked_from[args[0]] = lay
         if outcome.reason is Reason.INSIDE_CLOSED and outcome.about is not None:
             self.open_to_look(outcome.about)
             outcome = self.world.act(action.name, *args)

@@ -7,6 +7,7 @@ belief update. Rerun and matplotlib are imported only here, inside the functions
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Sequence
 from pathlib import Path
@@ -159,10 +160,10 @@ def write_png(path: str | Path, agent: Agent, title: str = "") -> None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from seal_cli.maps.drawing import declutter, draw_map, legend_below
+    from seal_cli.maps.drawing import declutter, draw_map, legend_below, shown_extent
 
     m = agent.scene.map
-    xmin, ymin, xmax, ymax = m.bounds
+    xmin, ymin, xmax, ymax = shown_extent(m)
     clouds: list[dict[str, Any]] = agent.policy.clouds
     kept = [c for c in clouds if c["frame_particles"] is not None]
     serving = [c for c in kept if c.get("commanded") and c["commanded"] != c["frame"]]
@@ -257,5 +258,11 @@ def _draw_run(ax: Any, agent: Agent) -> None:
             ax.annotate(item.id, item.at, xytext=(4, -8), textcoords="offset points", fontsize=6,
                         color="#9467bd", zorder=LABEL_Z, gid=LABEL, bbox=_HALO)
         elif item.movable:
-            ax.plot(*agent.world.position(item.id), "*", markersize=6, color="#d62728", zorder=3,
-                    **once("things, where they truly are"))
+            end = agent.world.position(item.id)
+            start = agent.started.get(item.id)
+            if start is not None and math.dist(start, end) > 0.05:     # moved: from where it was, dotted
+                ax.plot(*start, "*", markersize=7, markerfacecolor="none", markeredgecolor="#d62728", zorder=3,
+                        **once("a moved thing, where it was at the start"))
+                ax.plot([start[0], end[0]], [start[1], end[1]], ":", color="#d62728", linewidth=1, zorder=3)
+            ax.plot(*end, "*", markersize=7, color="#d62728", markeredgecolor="black", markeredgewidth=0.4,
+                    zorder=LABEL_Z + 2, **once("things, where they are at the end"))

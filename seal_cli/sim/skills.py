@@ -186,8 +186,8 @@ class SkillRunner:
                 continue
         for room in self.rooms:
             skills.append(Skill(f"go to the {words(room)}", "enter", (room,)))
-            if held is not None:   # put down in the room: on its nearest open place, if within reach
-                place = self.agent.surface_in(self.agent.room(room))
+            if held is not None:   # put down in the room: where such a thing is put there, if within reach
+                place = self.agent.surface_in(self.agent.room(room), world.items[held].key)
                 ok = place is not None and self._reach(self.agent.known[place])
                 skills.append(Skill(f"put the {words(world.items[held].key)} in the {words(room)}", "place",
                                     (held, place or ""), AFFORDED if ok else UNAFFORDED))

@@ -109,11 +109,29 @@ def test_the_png_legend_names_every_mark_and_the_end_is_drawn_over_the_last_acti
     try:
         _draw_run(ax, agent)
         handles, labels = ax.get_legend_handles_labels()
-        assert {"path", "start", "end", "where it acted (numbered)", "things, where they truly are",
-                "people"} <= set(labels) and len(labels) == len(set(labels))
+        assert {"path", "start", "end", "where it acted (numbered)", "things, where they are at the end",
+                "a moved thing, where it was at the start", "people"} <= set(labels) and len(labels) == len(set(labels))
+        spoon = agent.started["spoon_1"]       # the spoon moved: a hollow star where it was, a full one where it ended
+        assert tuple(handles[labels.index("a moved thing, where it was at the start")].get_xydata()[0]) == spoon
+        ends = [tuple(line.get_xydata()[0]) for line in ax.get_lines() if line.get_marker() == "*"
+                and line.get_markerfacecolor() != "none"]
+        assert agent.world.position("spoon_1") in ends and spoon not in ends
         end = handles[labels.index("end")]
         acted = handles[labels.index("where it acted (numbered)")]
         assert end.get_zorder() > acted.get_zorder() and end.get_markerfacecolor() == "none"
         assert tuple(end.get_xydata()[-1]) == tuple(agent.world.robot.trajectory[-1])
     finally:
         plt.close(fig)
+
+
+def test_a_picture_shows_the_house_not_the_unknown_border_of_a_laser_map(shared_data: Path) -> None:
+    """The AWS house's 25 m square map holds a house of about 20 m x 12 m: the picture is cropped to its known
+    cells, rooms, places and things plus half a metre (``shown_extent``), never beyond the bounds."""
+    from seal_cli.maps.drawing import MARGIN, shown_extent
+    from seal_cli.maps.formats.map_server import load_map
+
+    aws = load_map(shared_data / "maps" / "aws_small_house" / "map.yaml")
+    xmin, ymin, xmax, ymax = shown_extent(aws)
+    assert -11.0 < xmin < -9.0 and 9.0 < xmax < 11.0 and -7.5 < ymin < -5.0 and 5.0 < ymax < 7.5
+    apartment = load_map("apartment")       # known all over its bounds: the bounds
+    assert shown_extent(apartment) == pytest.approx(apartment.bounds, abs=MARGIN)
