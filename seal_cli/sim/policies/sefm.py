@@ -592,6 +592,25 @@ class SeFMPolicy(Policy):
     """The bearings from a place's pivot at which a thing on it is taken to lie, equally likely (the map does
     not say which way a place runs)."""
 
+    lie_along = False
+    """A thing on a place lies along the side the place is used from — the line through its pivot square to
+    the way to its access pose (else its nearest free cell): a shelf or a sofa against a wall is used from
+    the front and runs along it (:meth:`_along`). Off: :attr:`lie_directions` bearings all round."""
+
+    @staticmethod
+    def _along(agent: Agent, place: Known, pts: np.ndarray) -> np.ndarray:
+        """The two bearings along the side ``place`` is used from (rows of unit vectors)."""
+        at = np.asarray(place.at)
+        if place.access:
+            toward = np.asarray(place.access[0]) - at
+        else:
+            toward = pts[int(np.argmin(np.hypot(pts[:, 0] - at[0], pts[:, 1] - at[1])))] - at
+        norm = float(np.hypot(*toward))
+        if norm <= 1e-9:
+            return np.array([[1.0, 0.0], [-1.0, 0.0], [0.0, 1.0], [0.0, -1.0]])
+        t = np.array([-toward[1], toward[0]]) / norm
+        return np.array([t, -t])
+
     def _acted_rows(self, agent: Agent, best: Sequence[Look], fields: dict[Cell, np.ndarray],
                     then: np.ndarray | None) -> dict[int, np.ndarray] | None:
         """Per look of ``best`` (by position), per place it reveals, the expected metres from the look to
@@ -621,7 +640,8 @@ class SeFMPolicy(Policy):
                 far = lie.get(agent.world.items[place.id].key, ())
                 if not far:
                     continue
-                at = np.asarray(place.at) + (np.asarray(far)[:, None, None] * bearings[None, :, :]).reshape(-1, 2)
+                ways = self._along(agent, place, pts) if self.lie_along else bearings
+                at = np.asarray(place.at) + (np.asarray(far)[:, None, None] * ways[None, :, :]).reshape(-1, 2)
                 reach = agent.world.reach_of(place.id)
                 near = np.hypot(pts[None, :, 0] - at[:, 0, None], pts[None, :, 1] - at[:, 1, None]) <= reach + 1e-9
                 for a in place.access:
