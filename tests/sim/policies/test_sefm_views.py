@@ -283,6 +283,18 @@ def test_the_drive_on_is_from_where_on_the_place_the_thing_would_lie(library: Li
     assert acted({})[1] is None
 
 
+def test_a_thing_lies_along_the_side_a_place_is_used_from() -> None:
+    """A place used from the south (its access pose below its pivot) runs east-west; with no access pose, the
+    way to its nearest free cell says the same."""
+    from seal_cli.sim.agent import Known
+
+    pts = np.array([[0.0, 0.0], [3.0, 3.0]])
+    front = SeFMPolicy._along(None, Known("sofa_1", "sofa", (0.0, 1.0), False, access=((0.0, 0.25),)), pts)  # type: ignore[arg-type]
+    assert np.allclose(np.abs(front), [[1.0, 0.0], [1.0, 0.0]]) and np.allclose(front[0], -front[1])
+    bare = SeFMPolicy._along(None, Known("sofa_1", "sofa", (0.0, 1.0), False), pts)  # type: ignore[arg-type]
+    assert np.allclose(np.abs(bare), [[1.0, 0.0], [1.0, 0.0]])
+
+
 def test_the_floor_share_is_bayes_over_what_is_still_unseen(library: Library) -> None:
     """f on the floor, 1 - f on the places: unseen, the floor keeps f·u (u: the floor not yet in sight) and
     the places (1 - f)·r (r: the prior share of the places not looked at); below floor_min, nothing."""
