@@ -598,7 +598,7 @@ class SeFMPolicy(Policy):
     the front and runs along it (:meth:`_along`). Off: :attr:`lie_directions` bearings all round."""
 
     @staticmethod
-    def _along(agent: Agent, place: Known, pts: np.ndarray) -> np.ndarray:
+    def _along(place: Known, pts: np.ndarray) -> np.ndarray:
         """The two bearings along the side ``place`` is used from (rows of unit vectors)."""
         at = np.asarray(place.at)
         if place.access:
@@ -640,7 +640,7 @@ class SeFMPolicy(Policy):
                 far = lie.get(agent.world.items[place.id].key, ())
                 if not far:
                     continue
-                ways = self._along(agent, place, pts) if self.lie_along else bearings
+                ways = self._along(place, pts) if self.lie_along else bearings
                 at = np.asarray(place.at) + (np.asarray(far)[:, None, None] * ways[None, :, :]).reshape(-1, 2)
                 reach = agent.world.reach_of(place.id)
                 near = np.hypot(pts[None, :, 0] - at[:, 0, None], pts[None, :, 1] - at[:, 1, None]) <= reach + 1e-9

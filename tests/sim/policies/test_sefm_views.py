@@ -289,9 +289,9 @@ def test_a_thing_lies_along_the_side_a_place_is_used_from() -> None:
     from seal_cli.sim.agent import Known
 
     pts = np.array([[0.0, 0.0], [3.0, 3.0]])
-    front = SeFMPolicy._along(None, Known("sofa_1", "sofa", (0.0, 1.0), False, access=((0.0, 0.25),)), pts)  # type: ignore[arg-type]
+    front = SeFMPolicy._along(Known("sofa_1", "sofa", (0.0, 1.0), False, access=((0.0, 0.25),)), pts)
     assert np.allclose(np.abs(front), [[1.0, 0.0], [1.0, 0.0]]) and np.allclose(front[0], -front[1])
-    bare = SeFMPolicy._along(None, Known("sofa_1", "sofa", (0.0, 1.0), False), pts)  # type: ignore[arg-type]
+    bare = SeFMPolicy._along(Known("sofa_1", "sofa", (0.0, 1.0), False), pts)
     assert np.allclose(np.abs(bare), [[1.0, 0.0], [1.0, 0.0]])
 
 
