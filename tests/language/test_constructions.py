@@ -581,3 +581,13 @@ def test_after_then_a_noun_phrase_alone_is_the_verb_again(library: Library) -> N
         ("Place", {"theme": "milk", "goal": "fridge"}), ("Place", {"theme": "butter", "goal": "fridge"})]
     assert frames("go to the kitchen and then the bedroom", library) == [
         ("Go", {"goal": "kitchen"}), ("Go", {"goal": "bedroom"})]
+
+
+def test_told_to_do_what_no_frame_does_is_what_is_said(library: Library) -> None:
+    (tell,) = parse_command("Remind Anna to call her mother.", library).frames
+    assert tell.frame == "Tell" and tell.elements["recipient"].text == "Anna"
+    assert tell.elements["message"].text == "call her mother"
+    (tell,) = parse_command("tell Anna to water the plants", library).frames       # "water" was the recipient
+    assert tell.elements["recipient"].text == "Anna" and tell.elements["message"].text == "water the plants"
+    assert [f for f, _ in frames("tell Sam to visit his aunt and bring me a cup", library)] == ["Tell", "Bring"]
+    assert frames("tell Anna to take her pills", library)[0][1]["message"] == "take her pills"   # a verb of ours

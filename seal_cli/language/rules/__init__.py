@@ -98,6 +98,7 @@ INSIDE: tuple[Rule, ...] = (
     politeness.PLEASE_INSIDE,
     clauses.SOMETHING_TO,
     verbs.TELL_TO,
+    verbs.TOLD_TO_DO,
     verbs.PURPOSE,
     clauses.UNTIL_PLACE,
     clauses.SUBORDINATE_INSIDE,
