@@ -422,7 +422,8 @@ def prepositional(wordnet: WordNet, library: Library, closed: frozenset[str]) ->
                     if len(words) != 2 or words[1] in english.PARTICLES or lemma not in units or unit in units or \
                             synset not in wordnet.senses[lemma][1][:2]:
                         continue
-                    if not any(m.group(1).lower() == words[1] for e in wordnet.examples[sense] for m in said.finditer(e)):
+                    if not any(m.group(1).lower() == words[1]
+                               for e in wordnet.examples[sense] for m in said.finditer(e)):
                         continue
                     how = "=" if synset == sense else "<"
                     for frame in units[lemma]:
