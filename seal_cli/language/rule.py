@@ -34,9 +34,9 @@ class Match:
     of the table is tried). ``words``: the tagged words it emits, in order. ``last``: a word that
     replaces the last tagged word (the last ``replaces`` of them), before ``words``. ``remarks``:
     character spans of statements dropped beside the command. ``expect``: whether a verb is expected
-    next (``None``: unchanged, ``AFTER_SEP``: when the last tag is then ``SEP``). ``verb``: the lexical unit of a clause's verb
-    it emitted (the last of ``words``); ``particle``: (word index, unit) of a split particle to come;
-    ``using``: after "use X", "to" starts the clause of what X is used for.
+    next (``None``: unchanged, ``AFTER_SEP``: when the last tag is then ``SEP``). ``verb``: the
+    lexical unit of a clause's verb it emitted (the last of ``words``); ``particle``: (word index,
+    unit) of a split particle to come; ``using``: after "use X", "to" starts the clause of what X is used for.
     """
 
     consumed: int
