@@ -613,3 +613,12 @@ def test_a_compound_noun_owns_what_follows_its_apostrophe_s(library: Library) ->
     assert goal.text == "the coffee maker's spout" and goal.head == "spout"       # was "the coffee", spout lost
     assert frames("open the kitchen cabinet's door", library) == [("Open", {"theme": "door"})]
     assert frames("bring me Roger's cup", library) == [("Bring", {"theme": "cup", "recipient": "me"})]
+
+
+def test_a_thing_and_where_it_goes_with_no_verb_is_putting_it_there(library: Library) -> None:
+    assert frames("mug in the sink", library) == [("Place", {"theme": "mug", "goal": "sink"})]
+    assert frames("the dirty cups in the dishwasher.", library) == [("Place", {"theme": "cup", "goal": "dishwasher"})]
+    assert frames("Set plate on the kitchen table", library)[0][0] == "Place"        # a verb said stays the verb
+    for text in ("the mug sitting in the sink", "Load toilet paper onto the black holder."):
+        with pytest.raises(CommandError):                # a participle, a verb no frame has: no thing to put
+            parse_command(text, library)

@@ -62,6 +62,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.WHETHER_IS_RULE,
     requests.KNOW_WISH,
     requests.WISHED_PLACED_RULE,
+    requests.THING_PLACED,
     requests.WISHED_STATE,
     requests.OBLIGED_RULE,
     requests.REQUEST,
