@@ -106,6 +106,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import re
 import sys
 import xml.etree.ElementTree as ET
 from collections import Counter, defaultdict
@@ -261,13 +262,16 @@ class WordNet:
 
     def __init__(self, folder: Path) -> None:
         self.lemmas: dict[str, list[str]] = {}
+        self.examples: dict[str, list[str]] = {}          # synset -> its quoted examples of use
         self.up: dict[str, list[str]] = defaultdict(list)
         self.down: dict[str, list[str]] = defaultdict(list)
         for line in (folder / "data.verb").read_text(encoding="latin-1").splitlines():
             if line.startswith(" "):
                 continue                                   # the licence, at the top
-            head = line.split(" | ", 1)[0].split()
+            data, _, gloss = line.partition(" | ")
+            head = data.split()
             offset, count = head[0], int(head[3], 16)
+            self.examples[offset] = re.findall(r'"([^"]*)"', gloss)
             self.lemmas[offset] = [head[4 + 2 * i].lower().replace("_", " ") for i in range(count)]
             at = 4 + 2 * count
             for j in range(int(head[at])):
@@ -393,7 +397,39 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[str, str, s
                 found.append((frame, verb, f"wordnet:{wordnet.name(verb, sense)} {how} "
                                            f"{wordnet.name(lemma, synset)} ({lemma})"))
             break
-    return sorted(found + reflexive(wordnet, library, closed))
+    alone = {(frame, unit) for frame, unit, _ in found}       # "grope" is a Find already: "grope for" adds nothing
+    said_with = [u for u in prepositional(wordnet, library, closed) if (u[0], u[1].split()[0]) not in alone]
+    return sorted(found + reflexive(wordnet, library, closed) + said_with)
+
+
+def prepositional(wordnet: WordNet, library: Library, closed: frozenset[str]) -> list[tuple[str, str, str]]:
+    """Rule 7: a verb and a preposition ("hunt *for*") take the frame of a library unit of a verb and that same
+    preposition ("look for", Find) when a sense of the verb is that unit's synset or a hyponym of it, the synset
+    one of the unit's first two senses, and WordNet's own example of the sense says the verb with the preposition
+    ("She *hunted for* her reading glasses"): the preposition picks the sense, whichever its rank. A particle
+    ("out", "away") is left out: it changes the verb's meaning ("give out"), it does not select a sense."""
+    units = {unit: [f.name for f in frames] for unit, frames in library.by_unit.items()}
+    found = []
+    for verb, (_, offsets) in sorted(wordnet.senses.items()):
+        if verb in units or verb in closed or not verb.isalpha() or not in_verb_tables(verb):
+            continue
+        said = re.compile(rf"\b{re.escape(verb[:-1] if verb.endswith('e') else verb)}\w* (\w+)\b", re.IGNORECASE)
+        for sense in offsets:
+            for synset in (sense, *wordnet.up[sense]):
+                for lemma in wordnet.lemmas[synset]:
+                    words = lemma.split()
+                    unit = f"{verb} {words[-1]}"
+                    if len(words) != 2 or words[1] in english.PARTICLES or lemma not in units or unit in units or \
+                            synset not in wordnet.senses[lemma][1][:2]:
+                        continue
+                    if not any(m.group(1).lower() == words[1]
+                               for e in wordnet.examples[sense] for m in said.finditer(e)):
+                        continue
+                    how = "=" if synset == sense else "<"
+                    for frame in units[lemma]:
+                        found.append((frame, unit, f"wordnet:{wordnet.name(verb, sense)} {how} "
+                                                   f"{wordnet.name(lemma, synset)} ({lemma}), said with '{words[1]}'"))
+    return sorted(set(found))
 
 
 def reflexive(wordnet: WordNet, library: Library, closed: frozenset[str]) -> list[tuple[str, str, str]]:

@@ -255,7 +255,7 @@ class Tagger(State):
     def apply(self, found: Match, i: int) -> None:
         """Make what a rule matched at word ``i`` part of the state."""
         if found.last is not None:
-            self.out[-1] = found.last
+            self.out[len(self.out) - found.replaces:] = [found.last]
         self.out.extend(found.words)
         if found.remarks:
             self.remarks.extend(found.remarks)

@@ -32,16 +32,17 @@ class Match:
 
     ``consumed``: how many input words it takes (0: it only retags the last word, and the next rule
     of the table is tried). ``words``: the tagged words it emits, in order. ``last``: a word that
-    replaces the last tagged word, before ``words``. ``remarks``: character spans of statements
-    dropped beside the command. ``expect``: whether a verb is expected next (``None``: unchanged,
-    ``AFTER_SEP``: when the last tag is then ``SEP``). ``verb``: the lexical unit of a clause's verb
-    it emitted (the last of ``words``); ``particle``: (word index, unit) of a split particle to come;
-    ``using``: after "use X", "to" starts the clause of what X is used for.
+    replaces the last tagged word (the last ``replaces`` of them), before ``words``. ``remarks``:
+    character spans of statements dropped beside the command. ``expect``: whether a verb is expected
+    next (``None``: unchanged, ``AFTER_SEP``: when the last tag is then ``SEP``). ``verb``: the
+    lexical unit of a clause's verb it emitted (the last of ``words``); ``particle``: (word index,
+    unit) of a split particle to come; ``using``: after "use X", "to" starts the clause of what X is used for.
     """
 
     consumed: int
     words: tuple[Word, ...] = ()
     last: Word | None = None
+    replaces: int = 1
     remarks: tuple[tuple[int, int], ...] = ()
     expect: bool | str | None = None
     verb: str | None = None

@@ -844,7 +844,8 @@ class State:
         if low in (",", ";", ":") and (nxt in PREPOSITIONS or nxt == "please"):
             return Match(1)                # "Put a pan with a spoon in it, in the sink"
         then = any(w.lower == "then" for w in words[i:j])
-        again = self._object_again(j, then) if low in ("and", ",", ";", "then") else None
+        again = self._object_again(j, then, any(w.lower in (",", ";") for w in words[i:j])) \
+            if low in ("and", ",", ";", "then") else None
         if again:                          # "bring the milk to the table and the cereal too": the verb again
             return Match(j - i, (merge(words, i, j - i, Tag.SEP), Word("", words[j].start, words[j].start,
                                                                         Tag.VERB, again)),
@@ -933,7 +934,7 @@ class State:
             return None              # "put the pan in the fridge, then *on the stove*": where it is put next
         return unit
 
-    def _object_again(self, j: int, then: bool = False) -> str | None:
+    def _object_again(self, j: int, then: bool = False, comma: bool = False) -> str | None:
         """The verb of the clause before when one more object of it follows a separator ("..., and the cereal *too*",
         "and the fork as well", ``ADDITIVES``; after "then" no additive is needed: "put the milk in the fridge and
         then the butter"): a noun phrase (a determiner or a possessive first) of open-class words, and then only
@@ -944,17 +945,43 @@ class State:
             return None
         k = j + 1
         while k < min(len(words), j + 8) and words[k].lower.isalpha() and words[k].lower not in CLOSED and \
-                not match_phrase(words, k, ADDITIVES) and self.verb_at(k) is None:
-            k += 1
+                not match_phrase(words, k, ADDITIVES) and \
+                (self.verb_at(k) is None or words[k].lower in self.lexicon.things):
+            k += 1                                        # "and a *pan* too": a thing, though a verb of English
         if k == j + 1:
             return None                                   # a determiner alone
         n = match_phrase(words, k, ADDITIVES) if k < len(words) else 0
         if not n and not then:
-            return None
+            return self._placed_again(j) if comma else None
         end = k + n
         if end < len(words) and words[end].lower not in END_MARKS and words[end].lower not in (",", ";", "please"):
             return None
         return str(self.out[self.verb_index].info)
+
+    def _placed_again(self, j: int) -> str | None:
+        """The verb of the clause before when, after a comma, one more object and where it goes follow, with
+        no verb ("put the fork on the table, *and a knife on the plate*", "put the cup in the sink, the plate
+        in the rack", "..., and a warm slice of bread in the bin"): the verb puts a thing somewhere, its clause
+        said a place already, and the new noun phrase (a determiner at ``j``, open-class words, an "of" phrase)
+        is followed only by a place phrase of putting or of a path to the clause's end; None."""
+        words = self.words
+        unit = str(self.out[self.verb_index].info)
+        k = j + 1
+        while k < min(len(words), j + 10) and (words[k].lower.isalpha() and words[k].lower not in CLOSED or
+                                                 words[k].lower == "of" and k > j + 1):
+            k += 1                                        # "a cold potato *slice*": a verb of ours inside the phrase
+        if k == j + 1 or words[k - 1].lower == "of":
+            return None
+        m = match_phrase(words, k, PREPOSITIONS) if k < len(words) else 0
+        prep = PREPOSITIONS[" ".join(w.lower for w in words[k:k + m])] if m else None
+        if prep is None or not (prep in PATH_PREPOSITIONS or prep in _PUT_IN) or unit not in self.lexicon.goals or \
+                not any(w.tag == Tag.PREP for w in self.out[self.verb_index + 1:]) or not self.np_starts(k + m):
+            return None
+        end = self.cond_end(k + m)
+        if any(self.verb_at(x) and words[x].lower not in self.lexicon.things for x in range(k + m, end)) or \
+                any(words[x].lower in ("and", "or") for x in range(k + m, end)):
+            return None                                   # "..., and the knife on the plate and wash it": a clause
+        return unit
 
     def _verb_and_path(self, j: int) -> bool:
         """Whether word ``j``, after "and", is a verb's base form that names no thing the library knows, with

@@ -115,6 +115,8 @@ def test_every_wordnet_unit_has_its_source_and_evokes_its_frames(library: Librar
     assert {"announce", "explain", "relocate", "select", "choose"} <= set(by_unit)
     assert by_unit["present yourself to"] == {"Greet"}                       # rule 6: as "introduce yourself to"
     assert not {"elate", "manage", "neglect", "uplift"} & set(by_unit)      # rule 5 refuses them
+    assert by_unit["hunt for"] == {"Find"} and "hunt" not in by_unit      # rule 7: the example says "hunted for"
+    assert not {"pursue for", "consider at", "succeed after", "grope for"} & set(by_unit)   # no example; a Find already
     for unit, frames in by_unit.items():
         assert {f.name for f in library.evoked_by(unit)} == frames
     assert not {"near", "back", "sound", "cup", "table", "knife"} & set(by_unit)   # closed class, nouns
@@ -127,6 +129,7 @@ def test_every_wordnet_unit_has_its_source_and_evokes_its_frames(library: Librar
     ("relocate to the office", "Go"),
     ("select a cup from the shelf", "Pick"),                  # rule 5: "pick out"'s first sense, with "take"
     ("choose the biggest apple", "Pick"),
+    ("hunt for my glasses in the bedroom", "Find"),           # rule 7: "hunt for" as "look for"
 ])
 def test_a_wordnet_unit_parses_as_its_frame(library: Library, command: str, frame: str) -> None:
     assert [f.frame for f in parse_command(command, library).frames] == [frame]

@@ -581,3 +581,44 @@ def test_after_then_a_noun_phrase_alone_is_the_verb_again(library: Library) -> N
         ("Place", {"theme": "milk", "goal": "fridge"}), ("Place", {"theme": "butter", "goal": "fridge"})]
     assert frames("go to the kitchen and then the bedroom", library) == [
         ("Go", {"goal": "kitchen"}), ("Go", {"goal": "bedroom"})]
+
+
+def test_told_to_do_what_no_frame_does_is_what_is_said(library: Library) -> None:
+    (tell,) = parse_command("Remind Anna to call her mother.", library).frames
+    assert tell.frame == "Tell" and tell.elements["recipient"].text == "Anna"
+    assert tell.elements["message"].text == "call her mother"
+    (tell,) = parse_command("tell Anna to water the plants", library).frames       # "water" was the recipient
+    assert tell.elements["recipient"].text == "Anna" and tell.elements["message"].text == "water the plants"
+    assert [f for f, _ in frames("tell Sam to visit his aunt and bring me a cup", library)] == ["Tell", "Bring"]
+    assert frames("tell Anna to take her pills", library)[0][1]["message"] == "take her pills"   # a verb of ours
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("put the fork on the table, and a knife on the plate",
+     [("Place", {"theme": "fork", "goal": "table"}), ("Place", {"theme": "knife", "goal": "plate"})]),
+    ("put the cup in the sink, the plate in the rack",
+     [("Place", {"theme": "cup", "goal": "sink"}), ("Place", {"theme": "plate", "goal": "rack"})]),
+    ("move the bowl to the shelf, and the pan to the stove",           # "pan": a thing, though a verb too
+     [("Place", {"theme": "bowl", "goal": "shelf"}), ("Place", {"theme": "pan", "goal": "stove"})]),
+])
+def test_after_a_comma_one_more_object_and_its_place_say_the_verb_again(library: Library, text: str,
+                                                                         expected: list[tuple[str, dict[str, str]]]
+                                                                         ) -> None:
+    assert frames(text, library) == expected
+
+
+def test_a_compound_noun_owns_what_follows_its_apostrophe_s(library: Library) -> None:
+    (place,) = parse_command("put the cup under the coffee maker's spout", library).frames
+    goal = place.elements["goal"]
+    assert goal.text == "the coffee maker's spout" and goal.head == "spout"       # was "the coffee", spout lost
+    assert frames("open the kitchen cabinet's door", library) == [("Open", {"theme": "door"})]
+    assert frames("bring me Roger's cup", library) == [("Bring", {"theme": "cup", "recipient": "me"})]
+
+
+def test_a_thing_and_where_it_goes_with_no_verb_is_putting_it_there(library: Library) -> None:
+    assert frames("mug in the sink", library) == [("Place", {"theme": "mug", "goal": "sink"})]
+    assert frames("the dirty cups in the dishwasher.", library) == [("Place", {"theme": "cup", "goal": "dishwasher"})]
+    assert frames("Set plate on the kitchen table", library)[0][0] == "Place"        # a verb said stays the verb
+    for text in ("the mug sitting in the sink", "Load toilet paper onto the black holder."):
+        with pytest.raises(CommandError):                # a participle, a verb no frame has: no thing to put
+            parse_command(text, library)

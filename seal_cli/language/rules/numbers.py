@@ -7,7 +7,7 @@ from seal_cli.language.english import DETERMINERS, NUMBERS, POSSESSIVES, PREPOSI
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import State, first_words, match_phrase
 from seal_cli.language.tags import Tag
-from seal_cli.language.tokens import Word
+from seal_cli.language.tokens import Word, capitalised
 
 _NUMBER_FIRST = first_words(NUMBERS)
 
@@ -64,7 +64,14 @@ def _apostrophe_s(s: State, i: int) -> Match | None:
     last = s.out[-1] if s.out else None
     if last is not None and last.tag in (Tag.NAME, Tag.WORD, Tag.PRON) and s.np_starts(i + 1) and \
             nxt not in ("a", "an", "the"):
-        return Match(1, last=Word(f"{last.text}'s", last.start, words[i].end, Tag.POSS, last.text))
+        n = 1
+        while last.tag == Tag.WORD and not capitalised(last) and n < len(s.out) and s.out[-n - 1].tag == Tag.WORD \
+                and not capitalised(s.out[-n - 1]):
+            n += 1                                # "the *coffee maker's* spout": the compound is whose
+        if n > 1 and (n == len(s.out) or s.out[-n - 1].tag not in (Tag.DET, Tag.NUM, Tag.POSS)):
+            n = 1                                 # "tell sophie *dinner's* ready": no determiner, no compound
+        owner = " ".join(w.text for w in s.out[len(s.out) - n:])
+        return Match(1, last=Word(f"{owner}'s", s.out[-n].start, words[i].end, Tag.POSS, owner), replaces=n)
     return s.emit(i, 1, Tag.BE)
 
 
@@ -97,6 +104,7 @@ DIGITS = Rule("digits", _digits, (
 ), str.isdigit, "digits: a count, or a place named by its number after a preposition")
 APOSTROPHE_S = Rule("'s", _apostrophe_s, (
     Example("bring me Roger's coat", "Roger's", Tag.POSS),
+    Example("put the mug under the coffee maker's spout", "coffee maker's", Tag.POSS),
 ), frozenset(["'s"]), "'s: a possessive before a noun phrase, else 'is'")
 QUANTIFIER_OF = Rule("quantifier of", _quantifier_of, (
     Example("bring me both of the cups", "both of", Tag.DET),

@@ -518,6 +518,37 @@ def _wished_placed(s: State, i: int) -> Match | None:
                  verb=PLACE_MEANS, using=False)
 
 
+def _thing_placed(s: State, i: int) -> Match | None:
+    """"*mug in the sink*", "the dirty cups in the dishwasher": a sentence of nothing but a thing and where it goes
+    asks to put it there (``PLACE_MEANS``, unsaid before the thing): the sentence starts at ``i``, the thing's
+    head is a class the library knows, one preposition of place (``WISHED_PLACES``) and its phrase end the
+    sentence, and no verb is said ("the mug sitting in the sink", "cups in the sink need washing" stay as
+    they are)."""
+    words = s.words
+    if s.out and s.out[-1].tag not in (Tag.END, Tag.POLITE) or PLACE_MEANS not in s.lexicon.units or \
+            s.verb_at(i) is not None:
+        return None
+    end = _sentence_end(s, i)
+    while end > i and words[end - 1].lower in (",", "please", "now"):
+        end -= 1
+    k = i + (1 if words[i].lower in DETERMINERS or words[i].lower in POSSESSIVES else 0)
+    start = k
+    while k < end and words[k].lower.isalpha() and words[k].lower not in CLOSED:
+        k += 1
+    head = words[k - 1].lower if k > start else ""
+    if k == start or k >= end or noun_lemma(head) not in s.lexicon.things or gerund_lemma(head) or \
+            start == i and noun_lemma(words[i].lower) not in s.lexicon.things or \
+            PREPOSITIONS.get(words[k].lower) not in WISHED_PLACES or not s.np_starts(k + 1):
+        return None                               # bare, the first word a thing too: "*load* paper onto ..." is none
+    rest = range(k + 1, end)
+    if any(not words[p].lower.isalpha() or words[p].lower in PREPOSITIONS or words[p].lower in ("and", "or") or
+           s.verb_at(p) is not None and words[p].lower not in s.lexicon.things and
+           words[p - 1].lower not in DETERMINERS and words[p - 1].lower not in POSSESSIVES for p in rest):
+        return None
+    w = words[i]
+    return Match(0, (_unsaid(w.start, Tag.VERB, PLACE_MEANS),), expect=False, verb=PLACE_MEANS, using=False)
+
+
 def _state_unit(s: State, low: str) -> str | None:
     """The lexical unit whose result the one word of state ``low`` is: "on"/"off" are switching
     (``SWITCHED_MEANS``), a participle its verb ("closed": "close"), an adjective that is a verb's base form
@@ -960,6 +991,10 @@ WISHED_PLACED_RULE = Rule("a wish for where a thing is", _wished_placed, (
     Example("I want the mug on the shelf", "I want", Tag.VERB),
     Example("I'd like the books in the box, please", "I'd like", Tag.VERB),
 ), first_words(WISHED_PLACED), "'I want X on Y': put X on Y")
+THING_PLACED = Rule("a thing and where it goes, no verb", _thing_placed, (
+    Example("mug in the sink", "", Tag.VERB),
+    Example("the dirty cups in the dishwasher.", "", Tag.VERB),
+), None, "'mug in the sink': a sentence of only a thing and a place of putting is putting it there")
 REQUEST = Rule("wish for a thing", _request, (
     Example("I'd like the red mug", "I'd like", Tag.VERB),
     Example("Can I have the big plate?", "Can I have", Tag.VERB),

@@ -3,10 +3,11 @@
 
 from __future__ import annotations
 
+from seal_cli.language.morphology import in_verb_tables, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import State, merge
+from seal_cli.language.state import CLOSED, State, merge
 from seal_cli.language.tags import Tag
-from seal_cli.language.tokens import Word
+from seal_cli.language.tokens import Word, capitalised
 
 
 def _split_particle(s: State, i: int) -> Match | None:
@@ -38,6 +39,18 @@ def _tell_to(s: State, i: int) -> Match | None:
     return None
 
 
+def _told_to_do(s: State, i: int) -> Match | None:
+    words = s.words
+    if not (s.speech and s.prev_tag() in (Tag.WORD, Tag.NAME, Tag.PRON) and i + 1 < len(words)):
+        return None
+    low = words[i + 1].lower
+    if capitalised(words[i + 1]) or low in CLOSED or verb_lemma(low) != low or not in_verb_tables(low) or \
+            s.verb_at(i + 1):
+        return None
+    end = s.speech_end(i + 1)                                     # "remind Anna to *call her mother*"
+    return Match(end - i, (words[i].tagged(Tag.WH), s.emit(i + 1, end - i - 1, Tag.SAID).words[0]))
+
+
 def _purpose(s: State, i: int) -> Match | None:
     if s.purpose(i):
         return Match(1, (s.words[i].tagged(Tag.SEP),), expect=True)   # "take the remote to turn on the lamp"
@@ -58,6 +71,11 @@ VERB = Rule("verb", _verb, (
 TELL_TO = Rule("told to", _tell_to, (
     Example("tell Maria to come downstairs", "to", Tag.WH),
 ), frozenset(["to"]), "'to' after the person a verb of saying tells")
+TOLD_TO_DO = Rule("told to do what the robot cannot", _told_to_do, (
+    Example("remind Anna to call her mother", "call her mother", Tag.SAID),
+    Example("tell the guest to wait", "wait", Tag.SAID),
+), frozenset(["to"]), "'to' and a verb of English no frame has, after the person a verb of saying tells: what is "
+   "said (what Anna is to do, not the robot)")
 PURPOSE = Rule("clause of purpose", _purpose, (
     Example("take the remote to turn on the lamp", "to", Tag.SEP),
 ), frozenset(["to"]), "'to' and a verb of the library with its object: a clause of its own")
