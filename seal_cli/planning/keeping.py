@@ -19,20 +19,20 @@ A class is read as the library reads a compound it does not list: by its head (a
 a sink, a ``reception_desk`` a desk: :func:`~seal_cli.planning.grounding.kind_of`).
 
 **Put away** leaves a thing where it is when it lies on a place the prior names (or whose class it
-names): the apple in the fridge is put away already, and the planner says so rather than moving it.
-Otherwise it takes a place other than where the thing lies, that some prior mass points at (the
-place, its class or its room) and that is a table, a shelf or storage (tiers 0 to 2: never a seat
-or a bed, never an appliance), ranked a little differently from a room's: a place the prior names
-first, then more mass before a better tier (a towel believed kept in the bathroom goes into its
-cabinet, not onto a table of a room where it is less likely kept), then tier and nearness to the
+names), or on a table, a shelf or storage with as much prior mass as any such place (the spoon on the
+kitchen counter, where spoons are kept as likely as anywhere): it is put away already, and the planner
+says so rather than moving it. Otherwise it takes a place other than where the thing lies, that some
+prior mass points at (the place, its class or its room) and that is a table, a shelf or storage (tiers 0
+to 2: never a seat or a bed, never an appliance), ranked a little differently from a room's: a place the
+prior names first, then more mass before a better tier (a towel believed kept in the bathroom goes into
+its cabinet, not onto a table of a room where it is less likely kept), then tier and nearness to the
 robot. With no such place (the map has no prior of the class, or its rooms hold no table, shelf or
 cupboard but where the thing lies) there is no answer, and the planner refuses, saying what it knows.
 
 ``seal run`` grounds the command before the robot has seen the thing, so it cannot exclude where the
 thing lies: it takes the best place overall, and when the robot finds the thing there, the thing
-needs no moving. The plan and the run agree whenever the thing lies on a place the prior names or on
-none of the candidates; they differ only when the thing lies on the very table the ranking would
-choose without knowing it (not the case on the shipped maps' priors).
+needs no moving: a thing lying on the place the ranking chooses without knowing where it lies has as
+much prior mass as any, so it is put away already, and the plan and the run agree.
 """
 
 from __future__ import annotations
@@ -112,7 +112,7 @@ def kept_place(taxonomy: Taxonomy, priors: Mapping[str, Mapping[str, float]], cl
     among equals; None if there is none."""
     prior = prior_of(priors, cls)
     here = next((s for s in spots if s.name == lies), None)
-    if here is not None and tier(taxonomy, prior, here) == 0:
+    if here is not None and _kept_already(taxonomy, prior, here, spots):
         return here
     fits = [s for s in spots if s.name != lies and mass(prior, s) > 0 and tier(taxonomy, prior, s) < 3]
     if not fits:
@@ -123,6 +123,19 @@ def kept_place(taxonomy: Taxonomy, priors: Mapping[str, Mapping[str, float]], cl
         return (min(level, 1), -round(mass(prior, s), 9), level, math.dist(s.at, near) if near else 0.0, s.name)
 
     return min(fits, key=key)
+
+
+def _kept_already(taxonomy: Taxonomy, prior: Mapping[str, float], here: Spot, spots: Sequence[Spot]) -> bool:
+    """Whether a thing lying on ``here`` is put away already: the prior names the place or its class, or the
+    place is a table, a shelf or storage (no seat, no appliance) with as much prior mass as any such place
+    (the spoon on the counter of the kitchen, where spoons are most likely kept)."""
+    level = tier(taxonomy, prior, here)
+    if level == 0:
+        return True
+    if level >= 3 or mass(prior, here) <= 0:
+        return False
+    best = max(mass(prior, s) for s in spots if tier(taxonomy, prior, s) < 3)
+    return mass(prior, here) >= best - 1e-9
 
 
 def put_in_room(taxonomy: Taxonomy, priors: Mapping[str, Mapping[str, float]], cls: str | None,

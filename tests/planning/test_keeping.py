@@ -3,6 +3,7 @@ kitchen's counter, not in its sink (seal_cli/planning/keeping.py, and its use by
 
 from __future__ import annotations
 
+import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -11,6 +12,7 @@ import pytest
 from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
 from seal_cli.maps.formats.map_server import load_map
+from seal_cli.maps.model import Map
 from seal_cli.pipeline import plan as plan_text
 from seal_cli.pipeline import run_on_map
 from seal_cli.planning.keeping import Spot, kept_place, put_in_room, tier
@@ -34,15 +36,21 @@ def test_tiers_put_a_prior_first_then_tables_then_storage_then_seats_then_applia
 
 def test_put_away_never_puts_the_thing_back_where_it_lies_nor_in_an_appliance(library: Library) -> None:
     spots = [Spot("table_1", "table", "den", (0.0, 0.0)), Spot("sink_1", "sink", "kitchen", (1.0, 0.0)),
-             Spot("shelf_1", "shelf", "den", (9.0, 0.0)), Spot("sofa_1", "sofa", "den", (0.5, 0.0))]
-    priors = {"cup": {"den": 0.5, "sink": 0.0, "kitchen": 0.5}}
+             Spot("shelf_1", "shelf", "den", (9.0, 0.0)), Spot("sofa_1", "sofa", "den", (0.5, 0.0)),
+             Spot("cupboard_1", "cupboard", "kitchen", (12.0, 0.0))]
+    priors = {"cup": {"den": 0.4, "kitchen": 0.6}}
     found = kept_place(library.taxonomy, priors, "cup", spots, lies="table_1", near=(0.0, 0.0))
-    assert found is not None and found.name == "shelf_1"       # a table-like place beats the nearer sofa
+    assert found is not None and found.name == "cupboard_1"    # more mass before a better tier; never the sink
+    found = kept_place(library.taxonomy, priors, "cup", spots[:4], lies="table_1", near=(0.0, 0.0))
+    assert found is not None and found.name == "table_1"       # the den is as likely as any room with storage
+    assert kept_place(library.taxonomy, priors, "cup", spots[:4], lies="sofa_1", near=(0.0, 0.0)) == spots[0]
     assert kept_place(library.taxonomy, priors, "book", spots, lies=None, near=(0.0, 0.0)) is None   # no prior
     kept_there = {"cup": {"table_1": 1.0}}     # lies where the prior keeps it: put away already
     assert kept_place(library.taxonomy, kept_there, "cup", spots, lies="table_1", near=(0.0, 0.0)) == spots[0]
-    seats = {"cup": {"den": 1.0}}               # the den has a sofa besides the shelf: never onto a seat
-    assert kept_place(library.taxonomy, seats, "cup", spots[:2] + spots[3:], lies="table_1", near=(0.0, 0.0)) is None
+    seats = {"cup": {"den": 1.0}}               # the den has a sofa besides the table: never onto a seat
+    assert kept_place(library.taxonomy, seats, "cup", spots[:2] + spots[3:4], lies="sofa_1", near=(0.0, 0.0)) == \
+        spots[0]
+    assert kept_place(library.taxonomy, seats, "cup", spots[1:2] + spots[3:4], lies="sofa_1", near=(0.0, 0.0)) is None
 
 
 def test_a_room_goal_takes_the_rooms_place_for_such_a_thing_then_the_nearest(library: Library) -> None:
@@ -57,14 +65,17 @@ def test_a_room_goal_takes_the_rooms_place_for_such_a_thing_then_the_nearest(lib
 
 
 def test_put_away_plans_a_goal_from_the_maps_priors_other_than_where_the_thing_lies(library: Library) -> None:
-    assert steps("put away the cup", library) == ["Pick(theme=cup, source=coffee_table_1)",
-                                                  "Place(theme=cup, goal=desk_1)"]      # cups: family room or bedroom
+    # the apartment keeps cups in the family room or the bedroom, spoons in the kitchen or the bedroom: the cup on
+    # the family room's coffee table and the spoon on the kitchen counter are put away already
+    assert steps("put away the cup", library) == []
     assert steps("put the apple away", library) == []      # in the fridge, where apples are kept: put away already
-    assert steps("store the spoon", library)[-1] == "Place(theme=spoon, goal=desk_1)"
-    assert steps("put away the cup and the spoon", library)[1::2] == ["Place(theme=cup, goal=desk_1)",
-                                                                      "Place(theme=spoon, goal=desk_1)"]
+    assert steps("store the spoon", library) == []
     assert steps("put down the cup", library)[-1] == "Place(theme=cup)"      # down, here: no goal to choose
     assert steps("put away the towel", library, "townhouse")[-1] == "Place(theme=towel, goal=medicine_cabinet_1)"
+    tv = _moved(library, "{class: cup, at: [0.3, 3.6], in: coffee_table_1}", "{class: cup, at: [-4.9, -0.9], in: "
+                "tv_stand_1}")
+    assert [str(s) for s in plan_text("put away the cup", library, map=tv).steps] == \
+        ["Pick(theme=cup, source=tv_stand_1)", "Place(theme=cup, goal=desk_1)"]   # the nearest of the likeliest
     with pytest.raises(SealError, match=r"cannot tell where to put away 'the book' \(book\): the apartment has no "
                                         r"prior of where a book is kept \(it knows where to keep apple, cup, spoon\)"):
         steps("put away the book", library)
@@ -101,19 +112,29 @@ def test_put_away_leaves_a_thing_where_its_prior_keeps_it_in_the_plan_and_the_ru
     assert result.executed == []
 
 
-def test_the_robot_chooses_again_once_it_knows_where_the_thing_lay(library: Library, tmp_path: Path) -> None:
-    """The run grounds "put away the cup" before the robot has seen it, so its first choice may be the desk the
-    cup lies on; once the robot has picked it up from there it puts it away elsewhere, as the plan does."""
+def _moved(library: Library, was: str, now: str, tmp: Path | None = None) -> Map:
+    """The apartment with one of its things lying elsewhere."""
     text = (MAPS / "apartment.yaml").read_text().replace("image: apartment.pgm", f"image: {MAPS / 'apartment.pgm'}")
-    moved = text.replace("{class: cup, at: [0.3, 3.6], in: coffee_table_1}",
-                         "{class: cup, at: [-8.3, 1.4], in: desk_1}")
+    moved = text.replace(was, now)
     assert moved != text
-    (tmp_path / "desk.yaml").write_text(moved)
-    house = load_map(tmp_path / "desk.yaml")
-    assert [str(s) for s in plan_text("put away the cup", library, map=house).steps][-1] == \
-        "Place(theme=cup, goal=nightstand_1)"
+    folder = Path(tempfile.mkdtemp()) if tmp is None else tmp
+    (folder / "moved.yaml").write_text(moved)
+    return load_map(folder / "moved.yaml")
+
+
+def test_the_robot_chooses_again_once_it_knows_where_the_thing_lay(library: Library, tmp_path: Path) -> None:
+    """The run grounds "put away the cup" before the robot has seen it, on the likeliest place overall; once the
+    robot knows where the cup lay it chooses again: a cup lying on the bedroom's desk (a room as likely as any)
+    is put away already, in the plan and in the run; one on the living room's TV stand is put on the desk."""
+    house = _moved(library, "{class: cup, at: [0.3, 3.6], in: coffee_table_1}",
+                   "{class: cup, at: [-8.3, 1.4], in: desk_1}", tmp_path)
+    assert plan_text("put away the cup", library, map=house).steps == ()
     agent, result = run_on_map(house, "put away the cup", library, make_policy("sefm", 50),
                                rng=np.random.default_rng(0))
-    said = [r.text for r in agent.records]
-    assert result.completed and "cup_1 lay on desk_1: puts it away on nightstand_1" in " ".join(said)
-    assert agent.world.items["cup_1"].parent == "nightstand_1"
+    assert result.completed and any("cup_1 is on desk_1 already" in r.text for r in agent.records)
+    assert agent.world.items["cup_1"].parent == "desk_1" and result.executed == []
+    tv = _moved(library, "{class: cup, at: [0.3, 3.6], in: coffee_table_1}", "{class: cup, at: [-4.9, -0.9], in: "
+                "tv_stand_1}")
+    agent, result = run_on_map(tv, "put away the cup", library, make_policy("sefm", 50),
+                               rng=np.random.default_rng(0))
+    assert result.completed and agent.world.items["cup_1"].parent == "desk_1"
