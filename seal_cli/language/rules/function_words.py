@@ -150,6 +150,8 @@ def _back(s: State, i: int) -> Match | None:
     if s.in_np() or s.verb_index < 0 or str(s.out[s.verb_index].info) not in s.lexicon.puts or \
             s.prev_tag() == Tag.VERB:
         return None                                               # "put back the mug": a particle, as before
+    if s.noun_follows(i + 1) or str(s.out[s.verb_index].info) in s.lexicon.escorts:
+        return None                               # "the left back burner": a noun's; "take them back": a person
     rest = s.words[i + 1:s.clause_end(i + 1)]
     if any(w.lower in _PREP_FIRST or w.lower in _HERE_FIRST or w.lower in PARTICLES for w in rest):
         return None                                               # "put it back on the shelf": the place said
