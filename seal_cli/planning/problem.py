@@ -514,7 +514,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
                                 frame.element(role).type, role in asked, _carried(frame, role))
                   for role, phrase in evoked.elements.items() if not back_unplaced(phrase)}
         for role, phrase in evoked.elements.items():     # "put it back", no place taken from said
-            if back_unplaced(phrase):
+            if back_unplaced(phrase) and things.map is not None:    # with no map: unsaid, as it always was
                 values[role] = _back_to(phrase, values.get("theme", ()), bindings, things, parse.text)
         for role, phrase in evoked.elements.items():     # a default the parse filled: the map's own, if any
             if phrase.default and things.map is not None and frame.element(role).default is not None:
@@ -554,7 +554,8 @@ def _back_to(phrase: Phrase, themes: Sequence[str], bindings: Sequence[Binding],
     """Where "back" is when the command said no place the thing was taken from (the parser's ``refers_to``
     gives that one): on a map, the place the thing lies on, if the robot holds it by then (it held it as
     the command started, or an earlier frame of the command took it: "take the cup and put it back").
-    Otherwise refused: a thing that lies somewhere is not put *back* there, and a guess would move it."""
+    Otherwise refused: a thing that lies somewhere is not put *back* there, and a guess would move it. (With no
+    map the element is left unsaid, as before: ALFRED's episodes are planned so.)"""
     places: dict[str, None] = {}
     for theme in themes:
         taken = theme == (things.name(things.held) if things.held else None) or any(
@@ -562,9 +563,10 @@ def _back_to(phrase: Phrase, themes: Sequence[str], bindings: Sequence[Binding],
         lay = next((f.args[1] for f in sorted(things.facts, key=str) if f.predicate == "in" and f.args[0] == theme),
                    None)
         if not taken or lay is None:
+            m = things.map
             why = "no place it was taken from is said before it in the command" + (
-                "" if things.map is None else f", and the robot does not hold {theme}" if not taken else
-                f", and the {things.map.name} does not say where {theme} lay")
+                "" if m is None else f", and the robot does not hold {theme}" if not taken else
+                f", and the {m.name} does not say where {theme} lay")
             raise _located(f"cannot tell where {phrase.text!r} is: {why}; say where it was (\"take it from the "
                            "table and put it back\") or where to put it", phrase, text)
         places[lay] = None
