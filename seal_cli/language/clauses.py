@@ -359,15 +359,20 @@ class Clauses:
         """"bring the milk to the table *and the cereal too*", "grab me a coke, and a juice as well": the verb said
         again with one more object (the tagger's ``english.ADDITIVES``, an unsaid verb of the clause before) takes
         the rest of that clause too — its other objects ("me") and its phrases ("to the table"), borrowed —
-        with the new object in place of the last one."""
+        with the new object in place of the last one. One said with a place of its own ("bring me the cup, *and a
+        knife from the kitchen*") borrows the other objects only."""
         for k in range(1, len(clauses)):
             clause, before = clauses[k], clauses[k - 1]
             if clause.verb.text or clause.verb.info != before.verb.info or len(clause.objects) != 1 or \
-                    any(not isinstance(x, Word) for x in clause.items) or clause.message or not before.objects:
-                continue                                    # only the additive ("too": a particle) after it
+                    clause.message or not before.objects:
+                continue
+            placed = any(isinstance(x, PP) for x in clause.items)     # "..., and a knife from the kitchen"
+            if placed and any(isinstance(x, NP) for x in clause.items):
+                continue
             clause.objects = [*(replace(o, borrowed=True) for o in before.objects[:-1]), clause.objects[0]]
-            clause.items = [*(replace(item, np=replace(item.np, borrowed=True)) for item in before.items
-                              if isinstance(item, PP)), *clause.items]
+            if not placed:                                  # only the additive ("too": a particle) after it
+                clause.items = [*(replace(item, np=replace(item.np, borrowed=True)) for item in before.items
+                                  if isinstance(item, PP)), *clause.items]
 
     @staticmethod
     def share_objects(clauses: list[Clause], joins: Sequence[str]) -> None:

@@ -587,6 +587,12 @@ class Evoker:
             return Phrase(self.text[np.start:np.end], np.head_text, None,
                           "thing" if np.kind == "pronoun" and np.pronoun == "it" else
                           "person" if np.kind == "pronoun" else np.kind, span=(np.start, np.end))
+        if np.kind == "place" and np.head is not None and np.head.info == "back":
+            source = self.reference.source_before(self.clause_frames)
+            if source is not None:                  # "take the cup from the table and put it back": the table
+                root = self.frames[source[0]].elements[source[1]]
+                return Phrase(self.text[np.start:np.end], root.head, root.cls, root.kind, source, root.quantity,
+                              root.plural, span=(np.start, np.end))
         if np.there:
             place = self.reference.place_before(self.clause_frames)
             if place is not None:                   # "go to the garage and count the bikes there"

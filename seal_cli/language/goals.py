@@ -34,6 +34,7 @@ from typing import TYPE_CHECKING
 
 from seal_cli.frames.taxonomy import class_key, class_words
 from seal_cli.language.chooser import logits, sentence_features
+from seal_cli.language.reference import back_unplaced
 from seal_cli.language.values import Evoked, Parse, Phrase
 
 if TYPE_CHECKING:
@@ -89,11 +90,11 @@ class GoalModel:
 def goalless(parse: Parse) -> int | None:
     """The index of the last frame that handles the thing when the parse handles one grounded thing and
     puts it nowhere: no Place with a goal, no Bring or Give, no look or switching ("wash the kettle on the
-    stove", "heat a mug and put it back"); else None."""
+    stove", "heat a mug and put it back": a "back" no source places is nowhere said); else None."""
     frames = parse.frames
     if not frames or any(f.frame in PUTTING for f in frames):
         return None
-    if any(f.frame == "Place" and "goal" in f.elements for f in frames):
+    if any(f.frame == "Place" and "goal" in f.elements and not back_unplaced(f.elements["goal"]) for f in frames):
         return None
     handling = [i for i, f in enumerate(frames) if f.frame in HANDLING and "theme" in f.elements]
     if not handling:

@@ -6,6 +6,8 @@ before (``refers_to``, as (frame index, element)).
   preferring one that fits the element's type; a pronoun no frame's element can be stands for what a
   statement or condition said before named (:meth:`Reference.mentioned`).
 * **A bare "there"** refers to the place named last in an earlier clause (:meth:`Reference.place_before`).
+* **"Back"** ("put it back") refers to the place a thing was taken from, said last in an earlier clause
+  (:meth:`Reference.source_before`).
 * **An object left unsaid** refers to the object of the frame before (:meth:`Reference.implicit`), or
   to the container it was just put in (:meth:`Reference.carried`).
 """
@@ -22,11 +24,17 @@ from seal_cli.language.lexicon import Mention, Word, mentions, noun_lemma
 from seal_cli.language.syntax import NP
 from seal_cli.language.values import Evoked, Phrase
 
-__all__ = ["PLACES", "Reference"]
+__all__ = ["PLACES", "Reference", "back_unplaced"]
 
 
 PLACES = ("goal", "ground", "source")
 """The roles that say where (FrameNet's names)."""
+
+
+def back_unplaced(phrase: Phrase) -> bool:
+    """Whether a phrase is a bare "back" no source said before it places ("put the mug back"): where the
+    thing goes is where it was, which only the world can say (the planner's, on a map)."""
+    return phrase.refers_to is None and phrase.kind == "place" and phrase.head.lower() == "back"
 
 
 class Reference:
@@ -188,3 +196,15 @@ class Reference:
                 if best is None or phrase.span[0] >= best[0]:
                     best = (phrase.span[0], target)
         return None if best is None else best[1]
+
+    def source_before(self, before: int) -> tuple[int, str] | None:
+        """Where "back" is: the source said last in an earlier clause ("take the cup *from the table* and put
+        it back"; not a default, no person), as (frame index, element); None when no clause says one."""
+        for index in range(before - 1, -1, -1):
+            phrase = self.frames[index].elements.get("source")
+            if phrase is None or phrase.default or phrase.span is None:
+                continue
+            target = phrase.refers_to or (index, "source")
+            if self.frames[target[0]].elements[target[1]].kind == "thing":
+                return target
+        return None

@@ -66,6 +66,8 @@ from seal_cli.language.tokens import Word, capitalised
 
 _PUT_IN = frozenset(["in", "on", "inside"])
 """Prepositions (canonical) of where a thing is put, besides those of a path ("into", "onto")."""
+_SOURCES = frozenset(["from", "out of", "off"])
+"""Prepositions (canonical) of where a path starts: where a thing is taken from."""
 
 if TYPE_CHECKING:
     from seal_cli.language.lexicon import Lexicon
@@ -962,7 +964,8 @@ class State:
         """The verb of the clause before when, after a comma, one more object and where it goes follow, with
         no verb ("put the fork on the table, *and a knife on the plate*", "put the cup in the sink, the plate
         in the rack", "..., and a warm slice of bread in the bin"): the verb puts a thing somewhere, its clause
-        said a place already, and the new noun phrase (a determiner at ``j``, open-class words, an "of" phrase)
+        said a place already (or the new one says where it comes from: "bring me the cup, *and a knife from the
+        kitchen*"), and the new noun phrase (a determiner at ``j``, open-class words, an "of" phrase)
         is followed only by a place phrase of putting or of a path to the clause's end; None."""
         words = self.words
         unit = str(self.out[self.verb_index].info)
@@ -975,8 +978,9 @@ class State:
         m = match_phrase(words, k, PREPOSITIONS) if k < len(words) else 0
         prep = PREPOSITIONS[" ".join(w.lower for w in words[k:k + m])] if m else None
         if prep is None or not (prep in PATH_PREPOSITIONS or prep in _PUT_IN) or unit not in self.lexicon.goals or \
-                not any(w.tag == Tag.PREP for w in self.out[self.verb_index + 1:]) or not self.np_starts(k + m):
-            return None
+                not (prep in _SOURCES or any(w.tag == Tag.PREP for w in self.out[self.verb_index + 1:])) or \
+                not self.np_starts(k + m):
+            return None               # a source needs no place said before: "bring me the cup, and a knife *from* ..."
         end = self.cond_end(k + m)
         if any(self.verb_at(x) and words[x].lower not in self.lexicon.things for x in range(k + m, end)) or \
                 any(words[x].lower in ("and", "or") for x in range(k + m, end)):

@@ -498,6 +498,7 @@ def _counted_roles(frame: Frame) -> set[str]:
 
 def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Binding]:
     """The grounded frames a parse commands, in order; a counted element repeats its frame."""
+    from seal_cli.language.reference import back_unplaced
     from seal_cli.planning.questions import asks_whether, looking
 
     earlier: list[dict[str, tuple[str, ...]]] = []
@@ -511,7 +512,10 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         asked = _counted_roles(frame) | ({"theme"} if asks_whether(parse.text, evoked) else set())
         values = {role: _values(_sought_where(evoked, role, things), earlier, things, parse.text,
                                 frame.element(role).type, role in asked, _carried(frame, role))
-                  for role, phrase in evoked.elements.items()}
+                  for role, phrase in evoked.elements.items() if not back_unplaced(phrase)}
+        for role, phrase in evoked.elements.items():     # "put it back", no place taken from said
+            if back_unplaced(phrase) and things.map is not None:    # with no map: unsaid, as it always was
+                values[role] = _back_to(phrase, values.get("theme", ()), bindings, things, parse.text)
         for role, phrase in evoked.elements.items():     # a default the parse filled: the map's own, if any
             if phrase.default and things.map is not None and frame.element(role).default is not None:
                 values[role] = (_default(frame, frame.element(role), evoked, things, parse.text),)
@@ -543,6 +547,32 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
                 things.put_away.append(frame.bind(said))
             bindings.append(frame.bind(said))
     return bindings
+
+
+def _back_to(phrase: Phrase, themes: Sequence[str], bindings: Sequence[Binding], things: Things,
+             text: str) -> tuple[str, ...]:
+    """Where "back" is when the command said no place the thing was taken from (the parser's ``refers_to``
+    gives that one): on a map, the place the thing lies on, if the robot holds it by then (it held it as
+    the command started, or an earlier frame of the command took it: "take the cup and put it back").
+    Otherwise refused: a thing that lies somewhere is not put *back* there, and a guess would move it. (With no
+    map the element is left unsaid, as before: ALFRED's episodes are planned so.)"""
+    places: dict[str, None] = {}
+    for theme in themes:
+        taken = theme == (things.name(things.held) if things.held else None) or any(
+            b.frame.gets_held("theme") and b.elements.get("theme") == theme for b in bindings)
+        lay = next((f.args[1] for f in sorted(things.facts, key=str) if f.predicate == "in" and f.args[0] == theme),
+                   None)
+        if not taken or lay is None:
+            m = things.map
+            why = "no place it was taken from is said before it in the command" + (
+                "" if m is None else f", and the robot does not hold {theme}" if not taken else
+                f", and the {m.name} does not say where {theme} lay")
+            raise _located(f"cannot tell where {phrase.text!r} is: {why}; say where it was (\"take it from the "
+                           "table and put it back\") or where to put it", phrase, text)
+        places[lay] = None
+    if not places:
+        raise _located(f"cannot tell where {phrase.text!r} is: nothing is put back", phrase, text)
+    return tuple(places)
 
 
 def _put_away(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]], things: Things,

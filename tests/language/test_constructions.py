@@ -622,3 +622,39 @@ def test_a_thing_and_where_it_goes_with_no_verb_is_putting_it_there(library: Lib
     for text in ("the mug sitting in the sink", "Load toilet paper onto the black holder."):
         with pytest.raises(CommandError):                # a participle, a verb no frame has: no thing to put
             parse_command(text, library)
+
+
+def test_back_is_where_the_thing_was_taken_from(library: Library) -> None:
+    parse = parse_command("take the cup from the table and put it back", library)
+    goal = parse.frames[1].elements["goal"]
+    assert goal.text == "back" and goal.refers_to == (0, "source") and goal.head == "table"
+    assert frames("take the mug off the shelf, wash it and put it back", library)[-1] == \
+        ("Place", {"theme": "mug", "goal": "shelf"})
+    # no source said: a bare "back", which the planner resolves on a map or refuses
+    (put,) = parse_command("put the mug back", library).frames
+    assert put.elements["goal"].text == "back" and put.elements["goal"].refers_to is None
+    # a place said after "back" is the goal; "back" right after the verb stays a particle
+    assert frames("put the mug back on the shelf", library) == [("Place", {"theme": "mug", "goal": "shelf"})]
+    assert frames("put back the mug", library) == [("Place", {"theme": "mug"})]
+    # only after a verb of putting: "come back" is no place of a thing
+    assert frames("go to the kitchen and come back", library)[-1] == ("Go", {})
+
+
+def test_one_more_object_after_a_comma_with_where_it_comes_from(library: Library) -> None:
+    assert frames("bring me the cup, and a knife from the kitchen", library) == [
+        ("Bring", {"theme": "cup", "recipient": "me"}),
+        ("Bring", {"theme": "knife", "recipient": "me", "source": "kitchen"})]
+    assert frames("take the mug, and the plate off the shelf", library) == [
+        ("Pick", {"theme": "mug"}), ("Pick", {"theme": "plate", "source": "shelf"})]
+    assert frames("bring me the cup and a knife from the kitchen", library) == [   # no comma: one list, as before
+        ("Bring", {"theme": "cup", "recipient": "me", "source": "kitchen"})]
+
+
+def test_a_place_pointed_at_may_be_said_first(library: Library) -> None:
+    assert frames("go to the kitchen. In there, find the sponge", library) == [
+        ("Go", {"goal": "kitchen"}), ("Find", {"theme": "sponge", "ground": "kitchen"})]
+    assert frames("go to the garage and there, count the bikes", library) == [
+        ("Go", {"goal": "garage"}), ("Count", {"theme": "bike", "ground": "garage"})]
+    parse = parse_command("in there, find the sponge", library)       # nothing before: the planner refuses
+    assert parse.frames[0].elements["ground"].refers_to is None
+    assert frames("in the kitchen, find the sponge", library) == [("Find", {"theme": "sponge", "ground": "kitchen"})]

@@ -201,3 +201,37 @@ def test_holding_what_cannot_be_held_is_refused_naming_the_option(library: Libra
     with pytest.raises(SealError, match=re.escape(message)):
         run_on_map(m, "go to the kitchen", library, make_policy("sefm"), rng=np.random.default_rng(0), holding=holding)
     assert problem_of_text("put it in the sink", library, holding="cup", map=m.known()).commanded
+
+
+def _goals(text: str, library: Library, house: str = "apartment", holding: str | None = None) -> list[str | None]:
+    from seal_cli.maps.formats.map_server import load_map
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / f"{house}.yaml")
+    return [b.elements.get("goal") for b in problem_of_text(text, library, map=m, holding=holding).commanded]
+
+
+def test_back_is_where_the_thing_was_taken_from(library: Library) -> None:
+    from seal_cli.errors import SealError
+
+    # said: the source of the earlier Pick, whatever the map says
+    assert _goals("take the cup from the table and put it back", library) == [None, "dining_table_1"]
+    # implied: the command takes it, so it goes back where the map says it lay
+    assert _goals("take the cup and put it back", library) == [None, "coffee_table_1"]
+    # held as the command starts: where it lay
+    assert _goals("put it back", library, "cafe", holding="mug") == ["counter_1"]
+    with pytest.raises(SealError, match=r"column 13: cannot tell where 'back' is: no place it was taken from is "
+                                        r"said before it in the command, and the robot does not hold cup"):
+        _goals("put the cup back", library)
+    with pytest.raises(SealError, match=r"cannot tell where 'back' is: .*the cafe does not say where cup lay"):
+        _goals("take the cup and put it back", library, "cafe")
+
+
+def test_a_place_pointed_at_first_is_the_place_before_it_or_refused(library: Library) -> None:
+    from seal_cli.errors import SealError
+    from seal_cli.maps.formats.map_server import load_map
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "apartment.yaml")
+    found = problem_of_text("go to the kitchen. In there, find the spoon", library, map=m).commanded[-1]
+    assert found.elements["ground"] == "kitchen"
+    with pytest.raises(SealError, match=r"column 1: cannot tell where 'in there' is: no place before it"):
+        problem_of_text("in there, find the spoon", library, map=m)

@@ -134,6 +134,7 @@ WORDS: tuple[Rule, ...] = (
     function_words.ONE,
     function_words.THAT_SAID,
     function_words.HERE,
+    function_words.BACK,
     function_words.PREPOSITION,
     function_words.PARTICLE,
     function_words.WH,

@@ -143,6 +143,21 @@ def _preposition(s: State, i: int) -> Match | None:
     return s.emit(i, n, Tag.PREP if has_object else Tag.PARTICLE, prep)   # "pick it up", "... from"
 
 
+def _back(s: State, i: int) -> Match | None:
+    """"put the mug *back*": "back" after the object of a verb that puts its thing in its goal, with no
+    place said in the rest of the clause, is where the thing goes: back where it was taken from (a place, as
+    "here" is; what it refers to is :meth:`seal_cli.language.reference.Reference.source_before`'s)."""
+    if s.in_np() or s.verb_index < 0 or str(s.out[s.verb_index].info) not in s.lexicon.puts or \
+            s.prev_tag() == Tag.VERB:
+        return None                                               # "put back the mug": a particle, as before
+    if s.noun_follows(i + 1) or str(s.out[s.verb_index].info) in s.lexicon.escorts:
+        return None                               # "the left back burner": a noun's; "take them back": a person
+    rest = s.words[i + 1:s.clause_end(i + 1)]
+    if any(w.lower in _PREP_FIRST or w.lower in _HERE_FIRST or w.lower in PARTICLES for w in rest):
+        return None                                               # "put it back on the shelf": the place said
+    return s.emit(i, 1, Tag.HERE, "back")
+
+
 def _particle(s: State, i: int) -> Match | None:
     return None if s.in_np() else s.emit(i, 1, Tag.PARTICLE, s.words[i].lower)
 
@@ -215,7 +230,11 @@ PREPOSITION = Rule("preposition", _preposition, (
     Example("put the cup on top of the fridge", "on top of", Tag.PREP),
     Example("take the trash bag outside", "outside", Tag.HERE),
 ), _PREP_FIRST, "a preposition with its object, else a particle")
-PARTICLE = Rule("particle", _particle, (Example("put it back", "back", Tag.PARTICLE),), PARTICLES,
+BACK = Rule("back, where it was", _back, (
+    Example("put the mug back", "back", Tag.HERE),
+    Example("take the cup from the table and put it back", "back", Tag.HERE),
+), frozenset(["back"]), "'back' after a verb of putting with no place said: back where the thing was taken from")
+PARTICLE = Rule("particle", _particle, (Example("put back the mug", "back", Tag.PARTICLE),), PARTICLES,
                 "a particle with no verb of its own")
 WH = Rule("wh-word", _wh, (Example("tell me what time it is", "what", Tag.WH),), WH_WORDS, "'what', 'which', ...")
 BE = Rule("be", _be, (Example("tell me what time it is", "is", Tag.BE),), BE_WORDS, "'is', 'are', ...")

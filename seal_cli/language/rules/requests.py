@@ -1155,7 +1155,9 @@ def _fronted_end(s: State, i: int) -> Match | None:
     k = len(out) - 1
     while k >= 0 and out[k].tag in _PHRASE_TAGS:
         k -= 1
-    if k == len(out) - 1 or out[k + 1].tag != Tag.PREP or not _clause_at(s, i + 1):
+    if k == len(out) - 1 and not (out and out[-1].tag == Tag.HERE and (k == 0 or out[k - 1].tag == Tag.SEP)):
+        return None                               # "*in there,* find the sponge": a place pointed at, said first
+    if k < len(out) - 1 and out[k + 1].tag != Tag.PREP or not _clause_at(s, i + 1):
         return None
     return Match(1, (s.words[i].tagged(Tag.SEP),), expect=True)
 
@@ -1169,4 +1171,5 @@ FRONTED_QUESTION = Rule("phrase said before a question", _fronted_question, (
     "a phrase and a comma before a question: all of it is what to tell")
 FRONTED_END = Rule("phrase said first", _fronted_end, (
     Example("From the cupboard, give me the bowl", ",", Tag.SEP),
+    Example("go to the kitchen. In there, find the sponge", ",", Tag.SEP),
 ), frozenset([","]), "the comma after a phrase said before the verb: the clause starts after it")
