@@ -8,9 +8,12 @@ turn: "stir the cup" is Pick(spoon), Stir(cup). What a frame needs and does is
 
 **Search.** A* over nodes (facts, k), k being the number of commanded frames already run. From a
 node, bₖ₊₁ runs if it is applicable (and then nothing else is tried: a commanded frame runs as soon
-as it can); otherwise one of the *achievers* of its unmet preconditions is inserted. Every frame
-costs 1, and h = (n − k) + [bₖ₊₁ is not applicable] never overestimates and is consistent, so the
-plan found has the fewest frames. Paths are compared, after their cost, as sequences of successor
+as it can); otherwise one of the *achievers* of its unmet preconditions is inserted. A commanded
+frame that is :func:`already_so` at its turn (once the one before it has run) is passed over, wherever
+it stands, and noted. Every frame costs 1, and h = 1 + (commanded frames after bₖ₊₁ not already so)
++ [bₖ₊₁ is not applicable] never overestimates (but where earlier frames' results make a later
+one pointless: counted once too many, alike on every path through them), so the plan found has the
+fewest frames. Paths are compared, after their cost, as sequences of successor
 ranks, so among the shortest plans the search returns the first in the order successors are
 generated: achievers of a frame come right before it, in the order of its preconditions, and the
 same inputs always give the same plan. The search gives up after ``max_nodes`` expansions.
