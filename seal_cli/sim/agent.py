@@ -287,7 +287,8 @@ class Agent:
             thing, where = fact.args
             room, place = self.room(where), self._place_of(where)
             free = [k.id for k in self.known.values() if k.cls == self.class_of(thing) and k.movable
-                    and k.id in self.world.items and not self.world.held_chain(k.id)]
+                    and k.id in self.world.items and not self.world.held_chain(k.id)
+                    and not self._chosen_as_other(k.id, thing)]
             if room is not None:      # on no place there (the room's floor), or in or on a place there
                 there = [i for i in free if bool(room.contains([self.world.position(i)])[0])]
                 loose = [i for i in there if self._place_of(self.world.items[i].parent or "") is None]
@@ -325,11 +326,18 @@ class Agent:
             return None
         for k in self.known.values():
             if (k.movable and k.cls == self.class_of(theme) and k.id in self.world.items
-                    and not self.world.held_chain(k.id) and (place := self.world.items[k.id].parent) is not None
+                    and not self.world.held_chain(k.id) and not self._chosen_as_other(k.id, theme)
+                    and (place := self.world.items[k.id].parent) is not None
                     and place in self.known and choose(place) == class_key(place)):
                 on = "in" if self.world.hollow(self.world.items[place]) else "on"
                 return f"{k.id} is {on} {place} already, where a {spoken(k.cls)} is kept"
         return None
+
+    def _chosen_as_other(self, item: str, value: str) -> bool:
+        """Whether an instance was chosen for another name of its class (the sock put on the bed for
+        "sock" is not "sock_2" lying there already)."""
+        name = class_key(value)
+        return any(i == item and n != name for n, i in self.chosen.items())
 
     def _put_away_again(self, todo: list[Binding]) -> str | None:
         """Choose again where the next commanded frame puts away the thing just picked up, now that the

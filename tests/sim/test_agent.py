@@ -287,3 +287,16 @@ def test_going_to_a_room_ends_at_its_middle_not_at_an_appliance_nor_on_someone(l
     brought, done = pipeline.run_on_map(m, "bring the apple to the kitchen", library, make_policy("sefm"),
                                         rng=np.random.default_rng(0))
     assert done.completed and brought.world.items["apple_1"].parent in {p.name for p in places}
+
+
+def test_a_thing_put_in_place_for_one_name_does_not_make_the_next_names_frame_already_so(library: Library) -> None:
+    """"put two socks on to the bunk bed" on the townhouse (one sock): the sock put on the bed for the
+    first frame is not the second sock lying there already; the robot looks for a second and says none
+    is found, rather than "sock_1 is on bunk_bed_1 already, so Place(theme=sock_2, ...) needs no doing"."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    agent, result = pipeline.run_on_map(load_map("townhouse"), "put two socks on to the bunk bed", library,
+                                        make_policy("sefm"), rng=np.random.default_rng(0))
+    assert not result.completed and "no sock found" in result.reason
+    assert not any("needs no doing" in r.text for r in agent.records)
