@@ -8,9 +8,12 @@ turn: "stir the cup" is Pick(spoon), Stir(cup). What a frame needs and does is
 
 **Search.** A* over nodes (facts, k), k being the number of commanded frames already run. From a
 node, bₖ₊₁ runs if it is applicable (and then nothing else is tried: a commanded frame runs as soon
-as it can); otherwise one of the *achievers* of its unmet preconditions is inserted. Every frame
-costs 1, and h = (n − k) + [bₖ₊₁ is not applicable] never overestimates and is consistent, so the
-plan found has the fewest frames. Paths are compared, after their cost, as sequences of successor
+as it can); otherwise one of the *achievers* of its unmet preconditions is inserted. A commanded
+frame that is :func:`already_so` at its turn (once the one before it has run) is passed over, wherever
+it stands, and noted. Every frame costs 1, and h = 1 + (commanded frames after bₖ₊₁ not already so)
++ [bₖ₊₁ is not applicable] never overestimates (but where earlier frames' results make a later
+one pointless: counted once too many, alike on every path through them), so the plan found has the
+fewest frames. Paths are compared, after their cost, as sequences of successor
 ranks, so among the shortest plans the search returns the first in the order successors are
 generated: achievers of a frame come right before it, in the order of its preconditions, and the
 same inputs always give the same plan. The search gives up after ``max_nodes`` expansions.
@@ -269,9 +272,21 @@ class _Search:
         self.trace = _Trace()
 
     def h(self, state: State, k: int) -> int:
-        """Frames still to run: the commanded ones, plus one if the next cannot run yet."""
-        left = len(self.commanded) - k
-        return left + (1 if left and state.unmet(self.commanded[k]) else 0)
+        """Frames still to run: the next commanded one and those after it not pointless here (:meth:`skip`),
+        plus one if the next cannot run yet."""
+        if k == len(self.commanded):
+            return 0
+        later = sum(1 for b in self.commanded[k + 1:] if already_so(b, state) is None)
+        return 1 + later + (1 if state.unmet(self.commanded[k]) else 0)
+
+    def skip(self, state: State, k: int) -> int:
+        """The first commanded frame from the ``k``-th on that is not :func:`already_so` in ``state``:
+        a frame whose results hold at its turn (once the frame before it has run, before any frame
+        inserted for it: the fridge opened to take the apple out does not make "bring the apple to the
+        kitchen" pointless), and whose needs do not, is passed over there."""
+        while k < len(self.commanded) and already_so(self.commanded[k], state) is not None:
+            k += 1
+        return k
 
     def successors(self, state: State, k: int) -> list[tuple[Binding, bool]]:
         """The next commanded frame if it can run, else the achievers that can run now, in order."""
@@ -301,11 +316,14 @@ class _Search:
                 else:
                     self._relevant(option, state, k, found, facts, tried)
 
-    def run(self, initial: State) -> tuple[list[tuple[Binding, bool]], int]:
-        start: Node = (initial.facts, 0)
+    def run(self, initial: State) -> tuple[list[tuple[Binding, bool]], tuple[Binding, ...], int]:
+        """The path (frames, whether commanded), the commanded frames passed over on it (in order), and
+        the nodes expanded."""
+        start: Node = (initial.facts, self.skip(initial, 0))
         best: dict[Node, tuple[int, tuple[int, ...]]] = {start: (0, ())}
         parent: dict[Node, tuple[Node, Binding, bool]] = {}
-        heap: list[tuple[int, tuple[int, ...], int, Node, State]] = [(self.h(initial, 0), (), 0, start, initial)]
+        heap: list[tuple[int, tuple[int, ...], int, Node, State]] = [
+            (self.h(initial, start[1]), (), 0, start, initial)]
         closed: set[Node] = set()
         expanded = 0
         while heap:
@@ -317,19 +335,31 @@ class _Search:
             if k > self.trace.deepest or self.trace.stuck is None:
                 self.trace.deepest, self.trace.stuck = k, state
             if k == len(self.commanded):
-                return self._path(parent, node), expanded
+                path = self._path(parent, node)
+                return path, self._skipped(parent, node, start), expanded
             expanded += 1
             if expanded > self.max_nodes:
                 raise self._gave_up(state, k)
             for rank, (binding, is_commanded) in enumerate(self.successors(state, k)):
                 after = state.apply(binding)
-                child: Node = (after.facts, k + is_commanded)
+                child: Node = (after.facts, self.skip(after, k + 1) if is_commanded else k)   # at its turn only
                 cost = (g + 1, ranks + (rank,))
                 if child in closed or (child in best and best[child] <= cost):
                     continue
                 best[child], parent[child] = cost, (node, binding, is_commanded)
                 heapq.heappush(heap, (g + 1 + self.h(after, child[1]), cost[1], g + 1, child, after))
         raise self._no_plan()
+
+    def _skipped(self, parent: Mapping[Node, tuple[Node, Binding, bool]], node: Node, start: Node) -> tuple[
+            Binding, ...]:
+        """The commanded frames the path from ``start`` to ``node`` passed over: those between where
+        each step left the count of commanded frames run and where the node after it stands."""
+        passed: list[Binding] = []
+        while node in parent:
+            before, _, is_commanded = parent[node]
+            passed[:0] = self.commanded[before[1] + is_commanded:node[1]]
+            node = before
+        return tuple(self.commanded[:start[1]]) + tuple(passed)
 
     @staticmethod
     def _path(parent: Mapping[Node, tuple[Node, Binding, bool]], node: Node) -> list[tuple[Binding, bool]]:
@@ -405,9 +435,7 @@ def plan(commanded: Sequence[Binding], library: Library, state: State, *, max_no
         raise SealError(f"the search bound must be at least 1 node, not {max_nodes}")
     commanded = tuple(commanded)
     _check_types(commanded, state, library.taxonomy)
-    already = _already_so(commanded, state)
-    commanded = commanded[len(already):]
-    path, expanded = _Search(commanded, library, max_nodes).run(state) if commanded else ([], 0)
+    path, already, expanded = _Search(commanded, library, max_nodes).run(state) if commanded else ([], (), 0)
     bindings = [binding for binding, _ in path]
     states = [state]
     for binding in bindings:
@@ -416,16 +444,6 @@ def plan(commanded: Sequence[Binding], library: Library, state: State, *, max_no
     notes = tuple(f"{b} is not done: {', '.join(str(f) for f in b.postconditions if not f.negated)} "
                   "holds already" for b in already)
     return Plan(steps, state, _goal(steps, states), text, expanded, notes)
-
-
-def _already_so(commanded: Sequence[Binding], state: State) -> tuple[Binding, ...]:
-    """The commanded frames, from the first, that are :func:`already_so`."""
-    done: list[Binding] = []
-    for binding in commanded:
-        if already_so(binding, state) is None:
-            break
-        done.append(binding)
-    return tuple(done)
 
 
 def already_so(binding: Binding, state: State) -> Fact | None:

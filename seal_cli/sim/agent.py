@@ -287,7 +287,8 @@ class Agent:
             thing, where = fact.args
             room, place = self.room(where), self._place_of(where)
             free = [k.id for k in self.known.values() if k.cls == self.class_of(thing) and k.movable
-                    and k.id in self.world.items and not self.world.held_chain(k.id)]
+                    and k.id in self.world.items and not self.world.held_chain(k.id)
+                    and not self._chosen_as_other(k.id, thing)]
             if room is not None:      # on no place there (the room's floor), or in or on a place there
                 there = [i for i in free if bool(room.contains([self.world.position(i)])[0])]
                 loose = [i for i in there if self._place_of(self.world.items[i].parent or "") is None]
@@ -325,11 +326,18 @@ class Agent:
             return None
         for k in self.known.values():
             if (k.movable and k.cls == self.class_of(theme) and k.id in self.world.items
-                    and not self.world.held_chain(k.id) and (place := self.world.items[k.id].parent) is not None
+                    and not self.world.held_chain(k.id) and not self._chosen_as_other(k.id, theme)
+                    and (place := self.world.items[k.id].parent) is not None
                     and place in self.known and choose(place) == class_key(place)):
                 on = "in" if self.world.hollow(self.world.items[place]) else "on"
                 return f"{k.id} is {on} {place} already, where a {spoken(k.cls)} is kept"
         return None
+
+    def _chosen_as_other(self, item: str, value: str) -> bool:
+        """Whether an instance was chosen for another name of its class (the sock put on the bed for
+        "sock" is not "sock_2" lying there already)."""
+        name = class_key(value)
+        return any(i == item and n != name for n, i in self.chosen.items())
 
     def _put_away_again(self, todo: list[Binding]) -> str | None:
         """Choose again where the next commanded frame puts away the thing just picked up, now that the
@@ -418,9 +426,22 @@ class Agent:
                 self.state = self.state.apply(binding)
                 executed.append(str(binding))
                 self.index += 1
+                passed = False
                 if todo and binding == todo[0]:
                     todo.pop(0)
-                self.say("done", f"done: {binding}", frame=str(binding))
+                    self.say("done", f"done: {binding}", frame=str(binding))
+                    while todo and (already := self.already_so(todo[0])) is not None:   # so by its turn
+                        skipped, passed = todo.pop(0), True
+                        self.say("done", f"{already}, so {skipped} needs no doing", frame=str(skipped))
+                else:
+                    self.say("done", f"done: {binding}", frame=str(binding))
+                if passed:
+                    try:
+                        self.steps, self.index = self.planner(todo, self.library, self.resync(self.state)), 0
+                    except SealError as error:
+                        self.say("give_up", f"cannot replan: {error.message}")
+                        return self._result(False, f"cannot replan: {error.message}", plan, executed, Reason.CANNOT)
+                    continue
                 if (again := self._put_away_again(todo)) is not None:
                     try:
                         self.steps, self.index = self.planner(todo, self.library, self.resync(self.state)), 0
@@ -698,6 +719,8 @@ class Agent:
         if room is not None and not puts and bool(room.contains([self.world.robot.pose[:2]])[0]):
             self.say("go", f"is in the {spoken(value)} already", to=self.world.robot.pose[:2], metres=0.0)
             return Outcome(True, f"in {value}")
+        if room is not None and not puts:      # into the room, not to an appliance of it
+            return self.into_room(room, value)
         while True:
             target = self.resolve(value, binding, role)
             if target is not None:
@@ -720,21 +743,47 @@ class Agent:
                 return Fatal(False, stop)
             room = self.room(value)
             if room is not None:  # a room with no open place in it: drive into it
-                inside = np.flatnonzero(room.contains(self.grid.free_points))
-                field_ = self.distances()
-                cells = self.grid.free_cells[inside]
-                costs = field_[cells[:, 0], cells[:, 1]] if len(cells) else np.zeros(0)
-                if not len(costs) or not np.isfinite(costs.min()):
-                    return Fatal(False, f"cannot drive into {value}")
-                k = int(np.argmin(costs))
-                self.drive_to((int(cells[k, 0]), int(cells[k, 1])), f"goes into {value}")
-                return Outcome(True, f"in {value}")
+                return self.into_room(room, value)
             if (source := self.source_room(binding, role)) is not None and self.sweeper is not None:
                 if (ended := self.look_in(source, value, binding, role)) is not None:
                     return ended
                 continue
             if (ended := self.look_once(value, binding)) is not None:
                 return ended
+
+    def room_spot(self, room: Any) -> Cell | None:
+        """Where "go to the kitchen" ends: the free cell of the room the robot can drive to that lies
+        nearest the room's centre (the point "where is the kitchen?" answers with), the shorter drive
+        among equals, not within :data:`ROOM_SPOT_CLEARANCE` of a person; None when the robot can
+        drive to no cell of the room."""
+        inside = np.flatnonzero(room.contains(self.grid.free_points))
+        if not len(inside):
+            return None
+        cells = self.grid.free_cells[inside]
+        field_ = self.distances()
+        costs = field_[cells[:, 0], cells[:, 1]]
+        reach = np.isfinite(costs)
+        if not reach.any():
+            return None
+        points, cells, costs = self.grid.free_points[inside][reach], cells[reach], costs[reach]
+        people = [self.world.position(i.id) for i in self.world.items.values() if i.key == PERSON]
+        clear = np.ones(len(points), dtype=bool)      # not where someone stands (the robot would see them)
+        for at in people:
+            clear &= np.hypot(points[:, 0] - at[0], points[:, 1] - at[1]) > ROOM_SPOT_CLEARANCE
+        if clear.any():
+            points, cells, costs = points[clear], cells[clear], costs[clear]
+        x, y = room.centroid
+        off = np.round(np.hypot(points[:, 0] - x, points[:, 1] - y) / self.grid.resolution)   # in cells
+        k = int(np.lexsort((costs, off))[0])
+        return int(cells[k, 0]), int(cells[k, 1])
+
+    def into_room(self, room: Any, value: str) -> Outcome:
+        """Drive into a room, to :meth:`room_spot`: "goes to the kitchen (near its middle)"."""
+        cell = self.room_spot(room)
+        if cell is None:
+            return Fatal(False, f"cannot drive into {value}")
+        self.drive_to(cell, f"goes to the {spoken(value)} (near its middle)")
+        return Outcome(True, f"in {value}")
 
     def look_once(self, value: str, binding: Binding) -> Outcome | None:
         """One look for a thing of kind ``value``: go to the view the policy chooses, open what it
@@ -1676,3 +1725,7 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
                   sensor=RangeSensor.on_map(m))
     known = {i.key for i in items} | {class_key(c) for c in m.priors}   # what the map has priors of, it knows
     return Scene(world, m, grid, tuple(sorted(known)), m.name)
+
+ROOM_SPOT_CLEARANCE = 0.6
+"""Metres from anyone standing in a room that :meth:`Agent.room_spot` keeps ("go to the kitchen" does not
+end on Anna's toes at the kitchen's middle)."""

@@ -55,6 +55,29 @@ def test_stir_the_cup_needs_a_spoon_first(library: Library) -> None:
         '"instrument": "spoon"}}], "state": ["hand_empty"], "goal": ["stirred(cup)"]}')
 
 
+def test_a_commanded_frame_whose_results_hold_at_its_turn_is_passed_over_wherever_it_stands(library: Library) -> None:
+    """Not only the leading ones: "put the apple on the counter and the cup on the table" with the cup
+    on the table already plans the apple's Pick and Place only, and notes the cup's Place; a frame
+    whose results the plan itself has made true by its turn is passed over too, and one whose needs
+    hold (the cup in hand) is still done."""
+    rooms = {"counter": "kitchen", "table": "kitchen", "shelf": "kitchen"}
+    state = State.of({*robot_facts(None), Fact("in", ("apple", "shelf")), Fact("in", ("cup", "table"))},
+                     library.taxonomy, (), rooms=rooms)
+    apple = bind(library, "Place", theme="apple", goal="counter")
+    cup = bind(library, "Place", theme="cup", goal="table")
+    result = plan([apple, cup], library, state)
+    assert steps(result) == ["Pick(theme=apple, source=shelf)", "Place(theme=apple, goal=counter)"]
+    assert result.warnings == ("Place(theme=cup, goal=table) is not done: in(cup, table), hand_empty holds already",)
+    twice = plan([apple, apple, bind(library, "Place", theme="cup", goal="counter")], library, state)
+    assert steps(twice) == ["Pick(theme=apple, source=shelf)", "Place(theme=apple, goal=counter)",
+                            "Pick(theme=cup, source=table)", "Place(theme=cup, goal=counter)"]
+    assert twice.warnings == ("Place(theme=apple, goal=counter) is not done: in(apple, counter), hand_empty "
+                           "holds already",)
+    held = State.of({*robot_facts("cup"), Fact("in", ("apple", "shelf"))}, library.taxonomy, (), rooms=rooms)
+    kept = plan([cup], library, held)
+    assert steps(kept) == ["Place(theme=cup, goal=table)"] and not kept.warnings
+
+
 def test_a_robot_holding_the_spoon_just_stirs(library: Library) -> None:
     result = plan([bind(library, "Stir", theme="cup")], library, start(library, "spoon"))
     assert steps(result) == ["Stir(theme=cup, instrument=spoon)"]

@@ -257,3 +257,46 @@ def test_a_room_asked_for_is_the_maps_room_gone_to_not_a_thing_searched_for(libr
     assert result.completed, result.reason
     assert result.answer == "the kitchen is the room around (5.50, -3.00)"
     assert m.room_of([agent.world.robot.pose[:2]]) == ["kitchen"]
+
+
+def test_going_to_a_room_ends_at_its_middle_not_at_an_appliance_nor_on_someone(library: Library) -> None:
+    """"go to the kitchen" on the apartment ends inside the kitchen, nearer its centre than any of its
+    places (it drove to the sink before), clear of Anna who stands there; "where is the kitchen?" goes
+    to the same spot and answers with the centre; "bring the apple to the kitchen" still puts it on a
+    surface there."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.sim.agent import ROOM_SPOT_CLEARANCE
+
+    m = load_map("apartment")
+    kitchen = m.room("kitchen")
+    cx, cy = kitchen.centroid
+    went, result = pipeline.run_on_map(m, "go to the kitchen", library, make_policy("sefm"),
+                                       rng=np.random.default_rng(0))
+    x, y = went.world.robot.pose[:2]
+    assert result.completed and kitchen.contains([(x, y)])[0]
+    places = [p for p in m.places if p.room == "kitchen"]
+    assert places and all(np.hypot(x - cx, y - cy) < np.hypot(p.at[0] - cx, p.at[1] - cy) for p in places)
+    anna = went.world.position("anna")
+    assert np.hypot(x - anna[0], y - anna[1]) > ROOM_SPOT_CLEARANCE
+    assert any(r.text.startswith("goes to the kitchen (near its middle)") for r in went.records)
+    asked, answered = pipeline.run_on_map(m, "where is the kitchen?", library, make_policy("sefm"),
+                                          rng=np.random.default_rng(0))
+    assert answered.answer == f"the kitchen is the room around ({cx:.2f}, {cy:.2f})"
+    assert np.allclose(asked.world.robot.pose[:2], (x, y))
+    brought, done = pipeline.run_on_map(m, "bring the apple to the kitchen", library, make_policy("sefm"),
+                                        rng=np.random.default_rng(0))
+    assert done.completed and brought.world.items["apple_1"].parent in {p.name for p in places}
+
+
+def test_a_thing_put_in_place_for_one_name_does_not_make_the_next_names_frame_already_so(library: Library) -> None:
+    """"put two socks on to the bunk bed" on the townhouse (one sock): the sock put on the bed for the
+    first frame is not the second sock lying there already; the robot looks for a second and says none
+    is found, rather than "sock_1 is on bunk_bed_1 already, so Place(theme=sock_2, ...) needs no doing"."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    agent, result = pipeline.run_on_map(load_map("townhouse"), "put two socks on to the bunk bed", library,
+                                        make_policy("sefm"), rng=np.random.default_rng(0))
+    assert not result.completed and "no sock found" in result.reason
+    assert not any("needs no doing" in r.text for r in agent.records)
