@@ -436,28 +436,19 @@ class Agent:
                 else:
                     self.say("done", f"done: {binding}", frame=str(binding))
                 if passed:
-                    try:
-                        self.steps, self.index = self.planner(todo, self.library, self.resync(self.state)), 0
-                    except SealError as error:
-                        self.say("give_up", f"cannot replan: {error.message}")
-                        return self._result(False, f"cannot replan: {error.message}", plan, executed, Reason.CANNOT)
+                    if (failed := self._replan(todo, self.resync(self.state))) is not None:
+                        return self._result(False, failed, plan, executed, Reason.CANNOT)
                     continue
                 if (again := self._put_away_again(todo)) is not None:
-                    try:
-                        self.steps, self.index = self.planner(todo, self.library, self.resync(self.state)), 0
-                    except SealError as error:
-                        self.say("give_up", f"cannot replan: {error.message}")
-                        return self._result(False, f"cannot replan: {error.message}", plan, executed, Reason.CANNOT)
+                    if (failed := self._replan(todo, self.resync(self.state))) is not None:
+                        return self._result(False, failed, plan, executed, Reason.CANNOT)
                     self.say("replan", f"{again}; replans: " + ", ".join(str(b) for b in self.steps))
                 continue
             if outcome.reason is Reason.ALREADY:     # what the next commanded frame would do is so already
                 skipped = todo.pop(0)
                 self.say("done", f"{outcome.message}, so {skipped} needs no doing", frame=str(skipped))
-                try:
-                    self.steps, self.index = self.planner(todo, self.library, self.resync(self.state)), 0
-                except SealError as error:
-                    self.say("give_up", f"cannot replan: {error.message}")
-                    return self._result(False, f"cannot replan: {error.message}", plan, executed, Reason.CANNOT)
+                if (failed := self._replan(todo, self.resync(self.state))) is not None:
+                    return self._result(False, failed, plan, executed, Reason.CANNOT)
                 continue
             stop = self.exhausted()
             if stop or isinstance(outcome, Fatal):
@@ -469,14 +460,19 @@ class Agent:
                 self.say("give_up", f"gives up after {self.budget.replans} replans: {outcome.message}")
                 return self._result(False, outcome.message, plan, executed, outcome.reason)
             self.state = self.resync(self.state)
-            try:
-                steps = self.planner(todo, self.library, self.state)
-            except SealError as error:
-                self.say("give_up", f"cannot replan: {error.message}")
-                return self._result(False, f"cannot replan: {error.message}", plan, executed, Reason.CANNOT)
-            self.steps, self.index = steps, 0
-            self.say("replan", f"{outcome.message}; replans: " + ", ".join(str(b) for b in steps))
+            if (failed := self._replan(todo, self.state)) is not None:
+                return self._result(False, failed, plan, executed, Reason.CANNOT)
+            self.say("replan", f"{outcome.message}; replans: " + ", ".join(str(b) for b in self.steps))
         return self._result(True, "done", plan, executed)
+
+    def _replan(self, todo: Sequence[Binding], state: State) -> str | None:
+        """Plan what is left to do from ``state`` and start on it; the reason to give up (said) if no plan is found."""
+        try:
+            self.steps, self.index = self.planner(todo, self.library, state), 0
+        except SealError as error:
+            self.say("give_up", f"cannot replan: {error.message}")
+            return f"cannot replan: {error.message}"
+        return None
 
     def _result(self, completed: bool, reason: str, plan: list[str], executed: list[str] | None = None,
                 why: Reason = Reason.OK) -> Result:
