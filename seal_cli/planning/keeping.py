@@ -152,8 +152,8 @@ def put_in_room(taxonomy: Taxonomy, priors: Mapping[str, Mapping[str, float]], c
 
 
 def spots_of(m: Map) -> list[Spot]:
-    """A map's places as spots (named by class key, with their rooms)."""
-    return [Spot(class_key(p.name), p.cls, p.room or m._room_name(p.at), p.at) for p in m.places]
+    """A map's places as spots (named by class key, with their rooms: the map fills in a place's room)."""
+    return [Spot(class_key(p.name), p.cls, p.room, p.at) for p in m.places]
 
 
 def where_kept(taxonomy: Taxonomy, m: Map, cls: str) -> Callable[[str | None], str | None]:

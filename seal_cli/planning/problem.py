@@ -252,10 +252,15 @@ def _said(phrase: Phrase | None, name: str) -> str:
     return f"{phrase.text!r} ({name})" if phrase is not None and phrase.text else name
 
 
+def _kinds_known(map: Map) -> list[str]:
+    """The kinds of thing a map knows of, by class key: its priors' classes and its objects'."""
+    return sorted({class_key(c) for c in (*map.priors, *(o.cls for o in map.objects))})
+
+
 def _unnamed_kind(phrase: Phrase, map: Map) -> str:
     """The refusal of "something", "anything" as the thing of a frame on a map: no kind to look for
     (a search for a class called "something" would sweep the house and say "no something")."""
-    kinds = sorted({class_key(c) for c in (*map.priors, *(o.cls for o in map.objects))})
+    kinds = _kinds_known(map)
     known = f" (the {map.name} knows of {', '.join(kinds)})" if kinds else ""
     return (f"{phrase.text!r} does not say what kind of thing: name it{known}, or ask what is on or in "
             "a place (\"what is in the fridge?\")")
@@ -303,9 +308,8 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
         raise _located(f"{phrase.text!r} names no thing", phrase, text)
     if carried and not asked and things.map is not None and (sources := _comes_from(value, things)):
         m = things.map
-        where = ", ".join(f"{p.name} (in the {(p.room or m._room_name(p.at) or '?').replace('_', ' ')})"
-                          for p in sources)
-        kinds = sorted({class_key(c) for c in (*m.priors, *(o.cls for o in m.objects))})
+        where = ", ".join(f"{p.name} (in the {(p.room or '?').replace('_', ' ')})" for p in sources)
+        kinds = _kinds_known(m)
         known = f"; the things it knows of are {', '.join(kinds)}" if kinds else ""
         word = " ".join(class_words(value))
         raise _located(f"the {m.name} has no {word} to carry, only {where}, which the robot cannot get {word} "
