@@ -870,13 +870,13 @@ class State:
                             (self._object_after(j + 1) or self._verb_and_path(j)))
             if not unknown_verb:
                 return Match(n, (merge(words, i, n, Tag.AND_NP),))
-        m = match_phrase(words, j, PREPOSITIONS) if low == "and" and n == 1 else 0
+        m, prep = self.preposition(j) if low == "and" and n == 1 else (0, None)
         if m and self.prev_tag() in ("WORD", "NAME", "PRON") and self.np_starts(j + m) and \
-                PREPOSITIONS[" ".join(w.lower for w in words[j:j + m])] in PATH_PREPOSITIONS and \
+                prep in PATH_PREPOSITIONS and \
                 not any(self.verb_at(k) for k in range(j, self.cond_end(j))):
             return Match(n)      # "down from the shelf *and* over to my chair": one path, phrases in a row
         again = self._path_again(j) if m and self.prev_tag() in ("WORD", "NAME", "PRON") else None
-        if again in self.lexicon.puts and PREPOSITIONS[" ".join(w.lower for w in words[j:j + m])] in _PUT_IN and \
+        if again in self.lexicon.puts and prep in _PUT_IN and \
                 not any(self.verb_at(k) and words[k].lower not in self.lexicon.things
                         for k in range(j + m, self.cond_end(j))):    # "in (the) microwave": a thing, no verb
             return Match(n, (merge(words, i, n, Tag.SEP), Word("", words[j].start, words[j].start, Tag.VERB, again)),
@@ -928,13 +928,19 @@ class State:
         if self.verb_index < 0 or str(self.out[self.verb_index].info) not in self.lexicon.goals:
             return None
         k = j + (1 if j < len(words) and words[j].lower == "back" else 0)
-        n = match_phrase(words, k, PREPOSITIONS) if k < len(words) else 0
+        n, prep = self.preposition(k)
         unit = str(self.out[self.verb_index].info)
-        prep = PREPOSITIONS[" ".join(w.lower for w in words[k:k + n])] if n else None
         if prep is None or not (prep in PATH_PREPOSITIONS or unit in self.lexicon.puts and prep in _PUT_IN) or \
                 not self.np_starts(k + n):
             return None              # "put the pan in the fridge, then *on the stove*": where it is put next
         return unit
+
+    def preposition(self, k: int) -> tuple[int, str | None]:
+        """The preposition that starts at word ``k``: how many words it takes and its canonical form
+        (``english.PREPOSITIONS``: "inside of" is "in"); (0, None) when none starts there."""
+        words = self.words
+        n = match_phrase(words, k, PREPOSITIONS) if k < len(words) else 0
+        return n, (PREPOSITIONS[" ".join(w.lower for w in words[k:k + n])] if n else None)
 
     def _object_again(self, j: int, then: bool = False, comma: bool = False) -> str | None:
         """The verb of the clause before when one more object of it follows a separator ("..., and the cereal *too*",
@@ -975,8 +981,7 @@ class State:
             k += 1                                        # "a cold potato *slice*": a verb of ours inside the phrase
         if k == j + 1 or words[k - 1].lower == "of":
             return None
-        m = match_phrase(words, k, PREPOSITIONS) if k < len(words) else 0
-        prep = PREPOSITIONS[" ".join(w.lower for w in words[k:k + m])] if m else None
+        m, prep = self.preposition(k)
         if prep is None or not (prep in PATH_PREPOSITIONS or prep in _PUT_IN) or unit not in self.lexicon.goals or \
                 not (prep in _SOURCES or any(w.tag == Tag.PREP for w in self.out[self.verb_index + 1:])) or \
                 not self.np_starts(k + m):
