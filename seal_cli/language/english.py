@@ -22,6 +22,9 @@ NUMBERS = {"zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six
            "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "a couple of": 2, "a pair of": 2, "couple": 2,
            "several": 3, "few": 3, "many": 3}
 POSSESSIVES = _closed_class("my your his her its our their")
+NP_OPENERS = DETERMINERS | POSSESSIVES
+"""Words that open a noun phrase: a determiner or a possessive ("*the* cup", "*my* keys"). A verb's form right
+after one is a noun ("the *lights*", "my *drink*"); a noun phrase after a verb starts with one."""
 PRONOUNS = _closed_class("it them him her me you us they he she yourself myself himself herself themselves",
                          "itself ourselves yourselves something someone somebody everything everyone everybody",
                          "anything anyone anybody nothing one ones this that those these")

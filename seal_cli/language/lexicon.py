@@ -30,11 +30,10 @@ from seal_cli.frames.library import Library
 from seal_cli.language.english import (
     BE_WORDS,
     BECAUSE,
-    DETERMINERS,
     FINITE,
     NOMINATIVE,
+    NP_OPENERS,
     PARTICLES,
-    POSSESSIVES,
     PREPOSITIONS,
     SEPARATOR_WORDS,
     SUBJECTS,
@@ -312,7 +311,7 @@ def mentions(text: str, start: int, end: int) -> list[Mention]:
     k = 0
     while k < len(words):
         low = words[k].lower
-        determined = low in DETERMINERS or low in POSSESSIVES
+        determined = low in NP_OPENERS
         if not (determined or capitalised(words[k]) and low not in CLOSED and low not in NOMINATIVE):
             k += 1
             continue

@@ -30,6 +30,7 @@ from seal_cli.language.english import (
     LINKING_VERBS,
     NOMINATIVE,
     NOT_PLACES,
+    NP_OPENERS,
     NUMBERS,
     OBJECT_PRONOUNS,
     OBLIGED,
@@ -37,7 +38,6 @@ from seal_cli.language.english import (
     PATH_PREPOSITIONS,
     POLITE,
     POLITE_FORMULAE,
-    POSSESSIVES,
     PREPOSITIONS,
     PRONOUNS,
     QUANTIFIERS,
@@ -101,7 +101,7 @@ LEAD_FIRST = SUB_FIRST | SEP_FIRST | {",", ";", ":", "start", "begin", "finish",
 REL_FIRST = RELATIVES | NOMINATIVE | {"where", "you"}
 INDEFINITE = frozenset(["something", "anything", "nothing", "everything", "someone", "somebody", "anyone",
                         "anybody"])
-CLOSED = (DETERMINERS | POSSESSIVES | PRONOUNS | WH_WORDS | BE_WORDS | PARTICLES
+CLOSED = (NP_OPENERS | PRONOUNS | WH_WORDS | BE_WORDS | PARTICLES
           | frozenset(p for p in PREPOSITIONS if " " not in p) | frozenset(NUMBERS))
 """Every one-word closed-class word."""
 
@@ -340,10 +340,10 @@ class State:
             return end if nxt in FINITE or nxt in CONTRACTED or self.finite_form(i + 1, end) or \
                 first in THIRD_PERSON_SUBJECTS and inflected(nxt) else 0     # "he *likes* company", "it *smells* like"
         partitive = first in QUANTIFIERS and nxt == "of"       # "one of its wheels squeaks"
-        if not (first in DETERMINERS or first in POSSESSIVES or capitalised(words[i]) or partitive):
+        if not (first in NP_OPENERS or capitalised(words[i]) or partitive):
             return 0
         for k in range(i + 1, end):
-            if words[k - 1].lower in DETERMINERS or words[k - 1].lower in POSSESSIVES:
+            if words[k - 1].lower in NP_OPENERS:
                 continue                                      # "the plates": a noun
             if words[k].lower == "'s" and self.possessed_at(k + 1, end):
                 continue                                      # "the knife and Anna's *cup*": whose, not "is"
@@ -392,8 +392,8 @@ class State:
             return False
         for k in range(i, min(i + 2, len(words) - 1)):
             low = words[k].lower
-            if not low.isalpha() or capitalised(words[k]) or low in DETERMINERS or low in PRONOUNS or \
-                    low in PREPOSITIONS or low in POSSESSIVES or low in self.lexicon.units:
+            if not low.isalpha() or capitalised(words[k]) or low in NP_OPENERS or low in PRONOUNS or \
+                    low in PREPOSITIONS or low in self.lexicon.units:
                 return False
             if words[k + 1].lower in FINITE:
                 return True
@@ -407,7 +407,7 @@ class State:
         if not lemma or lemma == low or low.endswith("ing"):
             return False                                      # irregular pasts too: "left", "brought"
         nxt = self.words[k + 1].lower if k + 1 < end else ""
-        return bool(nxt) and (nxt in PREPOSITIONS or nxt in DETERMINERS or nxt in POSSESSIVES or nxt == "to"
+        return bool(nxt) and (nxt in PREPOSITIONS or nxt in NP_OPENERS or nxt == "to"
                               or nxt in OBJECT_PRONOUNS or bool(gerund_lemma(nxt)))   # "a guest *left* it"
 
     def vocatives_end(self, i: int) -> int:
@@ -497,8 +497,8 @@ class State:
                 comma = end
             end += 1
         if end >= len(words):
-            if not said or stated and any(self.verb_at(k) is not None and words[k - 1].lower not in DETERMINERS and
-                                          words[k - 1].lower not in POSSESSIVES for k in range(i + 1, end)):
+            if not said or stated and any(self.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS
+                                          for k in range(i + 1, end)):
                 return None                              # a statement with a verb of the library in it: said
             return self._aside(i, end - i, (words[i].start, words[-1].end))
             # "pour it into the cup... *the blue one*": a fragment after; "follow Adel? *He is at the entrance*"
@@ -515,7 +515,7 @@ class State:
         a remark, which the pronoun names (:meth:`~seal_cli.language.reference.Reference.mentioned`)."""
         words = self.words
         if self.out and not (self.out[-1].tag == "SEP" and self.out[-1].lower in END_MARKS) or \
-                words[i].lower not in DETERMINERS and words[i].lower not in POSSESSIVES:
+                words[i].lower not in NP_OPENERS:
             return None
         comma = -1
         for k in range(i + 1, min(len(words), i + _DISLOCATED_WORDS)):
@@ -562,8 +562,7 @@ class State:
                            or x in ("you", "i") or x in STATES_DONE for x in span) or \
                 any(gerund_lemma(x) and (k == 0 or span[k - 1] not in DETERMINERS) for k, x in enumerate(span)):
             return False
-        return not (len(span) > 1 and span[-1].endswith("s") and span[-2] not in DETERMINERS
-                    and span[-2] not in POSSESSIVES)
+        return not (len(span) > 1 and span[-1].endswith("s") and span[-2] not in NP_OPENERS)
 
     def timed_noun(self, i: int) -> bool:
         """Whether the sentence at ``i`` is a word that is no verb of the library and a time, and nothing
@@ -621,7 +620,7 @@ class State:
         if after >= len(words) or words[after].lower in END_MARKS or words[after].lower in (",", ";", "and", "then"):
             return not thing and found[2] is None
         nxt = words[after].lower
-        return nxt in DETERMINERS or nxt in POSSESSIVES or nxt in PRONOUNS or capitalised(words[after]) or (
+        return nxt in NP_OPENERS or nxt in PRONOUNS or capitalised(words[after]) or (
             nxt in PREPOSITIONS and self.np_starts(after + match_phrase(words, after, PREPOSITIONS))) or \
             not thing and (nxt in PARTICLES or self.noun_follows(after) and nxt not in self.lexicon.units)
 
@@ -865,7 +864,7 @@ class State:
         if low in ("and", ",", ";") and self._obliged_at(j):
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),), expect=True)   # "..., the cups go on the shelf"
         if low in ("and", ",", "or") and self.np_starts(j) and self.prev_tag() in ("WORD", "NAME", "PRON"):
-            unknown_verb = (nxt not in DETERMINERS and nxt not in POSSESSIVES and nxt not in PRONOUNS
+            unknown_verb = (nxt not in NP_OPENERS and nxt not in PRONOUNS
                             and not capitalised(words[j]) and nxt not in NUMBERS and
                             (self._object_after(j + 1) or self._verb_and_path(j)))
             if not unknown_verb:
@@ -894,11 +893,11 @@ class State:
         """Whether a noun phrase and what it should do ("the cups *go* on the shelf", ``english.OBLIGED``) start at
         ``j``: a clause of its own, said as a statement (the rule ``where a thing should go``)."""
         words = self.words
-        if j >= len(words) or words[j].lower not in DETERMINERS and words[j].lower not in POSSESSIVES:
+        if j >= len(words) or words[j].lower not in NP_OPENERS:
             return False
         for k in range(j + 1, min(len(words), j + 8)):
             if match_phrase(words, k, OBLIGED):
-                return words[k - 1].lower not in DETERMINERS and words[k - 1].lower not in POSSESSIVES and \
+                return words[k - 1].lower not in NP_OPENERS and \
                     k + 1 < len(words)
             if not words[k].lower.isalpha() or words[k].lower in PREPOSITIONS or words[k].lower in CLOSED:
                 return False
@@ -949,7 +948,7 @@ class State:
         the additive to the sentence's end or the next separator; None."""
         words = self.words
         if self.verb_index < 0 or j >= len(words) or \
-                words[j].lower not in DETERMINERS and words[j].lower not in POSSESSIVES:
+                words[j].lower not in NP_OPENERS:
             return None
         k = j + 1
         while k < min(len(words), j + 8) and words[k].lower.isalpha() and words[k].lower not in CLOSED and \
@@ -1014,7 +1013,7 @@ class State:
         if k >= len(words):
             return False
         low = words[k].lower
-        return low in DETERMINERS or low in POSSESSIVES or low in ("it", "them", "me") or \
+        return low in NP_OPENERS or low in ("it", "them", "me") or \
             capitalised(words[k]) and low not in self.lexicon.things and verb_lemma(words[k - 1].lower) is not None
 
     def clock_time(self, i: int) -> int:

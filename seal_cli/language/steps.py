@@ -39,7 +39,7 @@ from typing import TYPE_CHECKING
 
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.language.chooser import logits
-from seal_cli.language.english import DETERMINERS, NUMBERS, POSSESSIVES
+from seal_cli.language.english import NP_OPENERS, NUMBERS
 from seal_cli.language.values import Evoked, Parse, Phrase
 
 if TYPE_CHECKING:
@@ -133,7 +133,7 @@ def filling(frame: Evoked) -> bool:
             or theme.plural or theme.quantity is not None or theme.conjuncts or not theme.text:
         return False
     first = theme.text.lower().split()[0]
-    return goal.span[0] < theme.span[0] and first not in DETERMINERS and first not in POSSESSIVES and \
+    return goal.span[0] < theme.span[0] and first not in NP_OPENERS and \
         first not in NUMBERS
 
 

@@ -25,7 +25,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from seal_cli.language.english import DETERMINERS, OBJECT_PRONOUNS, POSSESSIVES, SUBJECTS
+from seal_cli.language.english import DETERMINERS, NP_OPENERS, OBJECT_PRONOUNS, SUBJECTS
 from seal_cli.language.lexicon import Lexicon, Word
 from seal_cli.language.morphology import verb_lemma
 from seal_cli.language.values import Parse
@@ -68,7 +68,7 @@ def swallowed(parse: Parse, words: Sequence[Word], lexicon: Lexicon,
 _NOUN_PHRASE_STARTS = (OBJECT_PRONOUNS | DETERMINERS) - {"that", "this"}
 """Words that begin a noun phrase and are no noun: after a verb, its object ("this", "that" may be
 relative pronouns or demonstratives: left out)."""
-_NO_VERB_AFTER = DETERMINERS | POSSESSIVES | SUBJECTS | {"you"}
+_NO_VERB_AFTER = NP_OPENERS | SUBJECTS | {"you"}
 """Words after which a verb's form is no imperative: a noun ("the *hand* soap") or a subject's verb."""
 
 

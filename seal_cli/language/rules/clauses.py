@@ -4,11 +4,10 @@ inside a clause, relative clauses, "until the corner", "something to drink"."""
 from __future__ import annotations
 
 from seal_cli.language.english import (
-    DETERMINERS,
     END_MARKS,
+    NP_OPENERS,
     PARTICLES,
     PERSON_PRONOUNS,
-    POSSESSIVES,
     PREPOSITIONS,
     SEPARATOR_WORDS,
 )
@@ -158,7 +157,7 @@ def _unjoined(s: State, i: int) -> Match | None:
     n = match_phrase(words, after, PREPOSITIONS)
     path = n > 0 and unit in s.lexicon.goals and words[i].lower not in s.lexicon.things and \
         not is_adjective(s.out[-1].lower) and s.np_starts(after + n)   # not "a different *place* on the counter"
-    if not (nxt.lower in _OBJECT_STARTS or nxt.lower in DETERMINERS or nxt.lower in POSSESSIVES or
+    if not (nxt.lower in _OBJECT_STARTS or nxt.lower in NP_OPENERS or
             capitalised(nxt) and nxt.lower not in CLOSED or path):
         return None                       # "put it in the fridge *go to* the kitchen": a verb of motion and its path
     if nxt.lower in ("that", "this", "these", "those") and not s.noun_follows(after + 1):
@@ -187,7 +186,7 @@ def _unknown_unjoined(s: State, i: int) -> Match | None:
     verb, nxt = words[k].lower, words[k + 1]
     if verb_lemma(verb) != verb or verb in s.lexicon.units or verb in CLOSED or verb in s.lexicon.things:
         return None
-    if to and not (nxt.lower in PARTICLES or nxt.lower in DETERMINERS or nxt.lower in POSSESSIVES or
+    if to and not (nxt.lower in PARTICLES or nxt.lower in NP_OPENERS or
                    nxt.lower in _NO_NOUN_AFTER or capitalised(nxt) and nxt.lower not in CLOSED):
         return None
     if not to and nxt.lower not in _NO_NOUN_AFTER:

@@ -9,6 +9,7 @@ from seal_cli.language.english import (
     CLOCK_PREPOSITIONS,
     DETERMINERS,
     HERE_WORDS,
+    NP_OPENERS,
     NUMBERS,
     PARTICLES,
     PARTITIVES,
@@ -107,7 +108,7 @@ def _of(s: State, i: int) -> Match | None:
 
 def _determiner_in_np(s: State, i: int) -> Match | None:
     low = s.words[i].lower
-    if s.in_np() and (low in DETERMINERS or low in POSSESSIVES) and s.noun_follows(i + 1):
+    if s.in_np() and low in NP_OPENERS and s.noun_follows(i + 1):
         return s.emit(i, 1, Tag.DET if low in DETERMINERS else Tag.POSS)
     return None
 
@@ -179,7 +180,7 @@ def _possessive(s: State, i: int) -> Match | None:
 def _partitive(s: State, i: int) -> Match | None:
     nxt = s.next_lower(i)
     if not s.in_np() and s.prev_tag() == Tag.VERB and not s.noun_follows(i + 1) and \
-            nxt not in DETERMINERS and nxt not in POSSESSIVES and nxt not in NUMBERS and nxt != "of":
+            nxt not in NP_OPENERS and nxt not in NUMBERS and nxt != "of":
         return s.emit(i, 1, Tag.PRON)                             # "pour *some* into the cup": some of it
     return None
 
@@ -220,7 +221,7 @@ SIDE_OF_REGION = Rule("side of a region", _side_of_region, (
 OF = Rule("of", _of, (Example("bring me a slice of apple", "of", Tag.OF),), frozenset(["of"]), "'of'")
 DETERMINER_IN_NP = Rule("determiner inside a noun phrase", _determiner_in_np, (
     Example("bring me all the cups", "the", Tag.DET),
-), DETERMINERS | POSSESSIVES, "a determiner or possessive after another, before a noun")
+), NP_OPENERS, "a determiner or possessive after another, before a noun")
 HERE = Rule("here and there", _here, (
     Example("bring it here", "here", Tag.HERE),
     Example("how many cups are there on the table", "there", Tag.THERE),

@@ -14,12 +14,11 @@ from seal_cli.language.english import (
     BE_WORDS,
     BEING_AT,
     BEING_MEANS,
-    DETERMINERS,
     END_MARKS,
     HAVING_FIRST,
     HAVING_MEANS,
+    NP_OPENERS,
     PARTICLES,
-    POSSESSIVES,
     PREPOSITIONS,
     SEPARATOR_WORDS,
 )
@@ -96,7 +95,7 @@ def _run_on_verb(s: State, np: int, end: int) -> int | None:
         before = words[j - 1].lower
         if before in BE_WORDS:
             return None
-        if not before.isalpha() or before in DETERMINERS or before in POSSESSIVES or before in PREPOSITIONS:
+        if not before.isalpha() or before in NP_OPENERS or before in PREPOSITIONS:
             continue
         found = s.verb_at(j)
         if found is not None and found[0].split()[0] == words[j].lower:

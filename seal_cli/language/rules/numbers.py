@@ -3,7 +3,7 @@ the cups", and the possessive "'s"."""
 
 from __future__ import annotations
 
-from seal_cli.language.english import DETERMINERS, NUMBERS, POSSESSIVES, PREPOSITIONS, QUANTIFIERS
+from seal_cli.language.english import NP_OPENERS, NUMBERS, PREPOSITIONS, QUANTIFIERS
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import State, first_words, match_phrase
 from seal_cli.language.tags import Tag
@@ -78,7 +78,7 @@ def _apostrophe_s(s: State, i: int) -> Match | None:
 def _quantifier_of(s: State, i: int) -> Match | None:
     words, low = s.words, s.words[i].lower
     if not s.in_np() and s.next_lower(i) == "of" and i + 2 < len(words) and \
-            (words[i + 2].lower in DETERMINERS or words[i + 2].lower in POSSESSIVES):
+            (words[i + 2].lower in NP_OPENERS):
         number = NUMBERS.get(low)            # "both of the cups", "one of the books"
         return s.emit(i, 2, Tag.DET if number is None else Tag.NUM, number)
     return None

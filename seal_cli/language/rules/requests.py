@@ -23,6 +23,7 @@ from seal_cli.language.english import (
     KNOW_WISHES,
     LET_KNOW,
     LOCATED,
+    NP_OPENERS,
     NUMBER_MEANS,
     NUMBER_OF,
     NUMBERS,
@@ -208,7 +209,7 @@ def _whether_is(s: State, i: int) -> Match | None:
     for k in range(i + 2, len(words)):
         low = words[k].lower
         if low in END_MARKS or low in (",", ";", "and", "then") or s.verb_at(k) is not None and \
-                words[k - 1].lower not in DETERMINERS and words[k - 1].lower not in POSSESSIVES:
+                words[k - 1].lower not in NP_OPENERS:
             return None                           # a verb ("the *pan*": a noun after a determiner)
         if low in _WHETHER_WHERE:
             if not s.np_starts(k + 1):
@@ -278,10 +279,10 @@ def _state_question_end(s: State, i: int) -> int | None:
         if _state_from(s, q, end) is None:
             continue
         before = words[q - 1].lower
-        if before in DETERMINERS or before in POSSESSIVES or before in PREPOSITIONS or before in BE_WORDS or \
+        if before in NP_OPENERS or before in PREPOSITIONS or before in BE_WORDS or \
                 before.isdigit():
             return None                          # "is the cup on *the counter*": a noun in a phrase
-        if any(s.verb_at(k) and words[k - 1].lower not in DETERMINERS and words[k - 1].lower not in POSSESSIVES
+        if any(s.verb_at(k) and words[k - 1].lower not in NP_OPENERS
                and not s.np_starts(k - 1) for k in range(i + 1, q)):
             return None
         return q
@@ -509,8 +510,7 @@ def _wished_placed(s: State, i: int) -> Match | None:
     while end > k and words[end - 1].lower in (",", "please"):
         end -= 1
     at = [p for p in range(k + 1, end) if words[p].lower in PREPOSITIONS or words[p].lower in (",", "and", "then")
-          or s.verb_at(p) is not None and words[p - 1].lower not in DETERMINERS and
-          words[p - 1].lower not in POSSESSIVES]
+          or s.verb_at(p) is not None and words[p - 1].lower not in NP_OPENERS]
     if len(at) != 1 or PREPOSITIONS.get(words[at[0]].lower) not in WISHED_PLACES or not s.np_starts(at[0] + 1):
         return None
     start, stop = words[i].start, words[k - 1].end
@@ -531,7 +531,7 @@ def _thing_placed(s: State, i: int) -> Match | None:
     end = _sentence_end(s, i)
     while end > i and words[end - 1].lower in (",", "please", "now"):
         end -= 1
-    k = i + (1 if words[i].lower in DETERMINERS or words[i].lower in POSSESSIVES else 0)
+    k = i + (1 if words[i].lower in NP_OPENERS else 0)
     start = k
     while k < end and words[k].lower.isalpha() and words[k].lower not in CLOSED:
         k += 1
@@ -543,7 +543,7 @@ def _thing_placed(s: State, i: int) -> Match | None:
     rest = range(k + 1, end)
     if any(not words[p].lower.isalpha() or words[p].lower in PREPOSITIONS or words[p].lower in ("and", "or") or
            s.verb_at(p) is not None and words[p].lower not in s.lexicon.things and
-           words[p - 1].lower not in DETERMINERS and words[p - 1].lower not in POSSESSIVES for p in rest):
+           words[p - 1].lower not in NP_OPENERS for p in rest):
         return None
     w = words[i]
     return Match(0, (_unsaid(w.start, Tag.VERB, PLACE_MEANS),), expect=False, verb=PLACE_MEANS, using=False)
@@ -583,10 +583,9 @@ def _wished_state(s: State, i: int) -> Match | None:
         return None                              # lights on in the living room": where they are)
     unit = _state_unit(s, words[q].lower)
     before = words[q - 1].lower
-    if unit is None or before in DETERMINERS or before in POSSESSIVES or before in PREPOSITIONS or \
+    if unit is None or before in NP_OPENERS or before in PREPOSITIONS or \
             any(words[p].lower in BE_WORDS or words[p].lower in (",", "and", "then") or
-                s.verb_at(p) is not None and words[p - 1].lower not in DETERMINERS and
-                words[p - 1].lower not in POSSESSIVES for p in range(k + 1, q)):
+                s.verb_at(p) is not None and words[p - 1].lower not in NP_OPENERS for p in range(k + 1, q)):
         return None
     start, stop = words[i].start, words[k - 1].end
     return Match(n, (Word(s.text_of(start, stop), start, stop, Tag.VERB, unit),), expect=False, verb=unit,
@@ -606,14 +605,14 @@ def _obliged_phrase(s: State, i: int) -> tuple[int, int] | None:
     many words it has; None when no such phrase and obligation start here."""
     words = s.words
     first = words[i].lower
-    if not (first in DETERMINERS or first in POSSESSIVES or first in _OBLIGED_SUBJECTS) or s.verb_at(i) is not None:
+    if not (first in NP_OPENERS or first in _OBLIGED_SUBJECTS) or s.verb_at(i) is not None:
         return None
     for k in range(i + 1, min(len(words), i + _OBLIGED_WORDS)):
         n = _phrase(s, k, OBLIGED)
         if n:
             before = words[k - 1].lower
             alone = k - 1 == i and first in _OBLIGED_SUBJECTS             # "*this* needs to go in the bin"
-            return (k, n) if alone or before not in DETERMINERS and before not in POSSESSIVES else None
+            return (k, n) if alone or before not in NP_OPENERS else None
         low = words[k].lower
         if not low.isalpha() or low in BE_WORDS or low in QUESTION_WORDS or low in s.lexicon.people or \
                 noun_lemma(low) in s.lexicon.people or \
@@ -639,9 +638,9 @@ def _obliged_unit(s: State, k: int, n: int) -> tuple[str, int | None] | None:
         to_place = False                          # "it should be in the dining room": where to look, no command
     if to_place and m + 1 < end and s.np_starts(m + 1) and words[m + 1].lower not in PRONOUNS and \
             noun_lemma(words[end - 1].lower) not in s.lexicon.people and \
-            not any(s.verb_at(j) is not None and words[j - 1].lower not in DETERMINERS and
-                    words[j - 1].lower not in POSSESSIVES or words[j].lower in (",", "and", "then")
-                    for j in range(m + 1, end)) and (PLACE_MEANS,) in s.lexicon.units.get(PLACE_MEANS, ()):
+            not any(s.verb_at(j) is not None and words[j - 1].lower not in NP_OPENERS
+                    or words[j].lower in (",", "and", "then") for j in range(m + 1, end)) and \
+            (PLACE_MEANS,) in s.lexicon.units.get(PLACE_MEANS, ()):
         return PLACE_MEANS, None
     if words[k + n - 1].lower != "be":
         return None
@@ -700,11 +699,11 @@ def _path_alone(s: State, i: int) -> Match | None:
             not all(t.tag in (Tag.POLITE, Tag.SEP) for t in s.out[-1:]):
         return None
     first = words[i + n]
-    if first.lower not in DETERMINERS and first.lower not in POSSESSIVES and not capitalised(first) and \
+    if first.lower not in NP_OPENERS and not capitalised(first) and \
             verb_lemma(first.lower) == first.lower:
         return None                               # "To fill a bowl with water ...": an infinitive
     end = s.cond_end(i + n)
-    if any(s.verb_at(k) and words[k - 1].lower not in DETERMINERS and words[k - 1].lower not in POSSESSIVES
+    if any(s.verb_at(k) and words[k - 1].lower not in NP_OPENERS
            for k in range(i + n, end)):
         return None                               # a verb in it ("the shed" is a noun)
     k = end
@@ -729,7 +728,7 @@ def _asked_alone(s: State, i: int) -> Match | None:
             words[i].lower in PRONOUNS or not s.np_starts(i):
         return None
     if verb_lemma(words[i].lower) == words[i].lower and i + 1 < len(words) and \
-            (words[i + 1].lower in DETERMINERS or words[i + 1].lower in POSSESSIVES or words[i + 1].lower in PRONOUNS):
+            (words[i + 1].lower in NP_OPENERS or words[i + 1].lower in PRONOUNS):
         return None                               # "please *list the* things", "please list *everything*": an
         #                                           imperative, its verb unknown (a noun takes no pronoun after it)
     end = _sentence_end(s, i)
@@ -755,7 +754,7 @@ def _switched_alone(s: State, i: int) -> Match | None:
     first = words[i].lower
     nxt = s.next_lower(i)
     if not s.np_starts(i) or first in PRONOUNS or first in QUESTION_WORDS or gerund_lemma(first) is not None or \
-            verb_lemma(first) == first and (nxt in DETERMINERS or nxt in POSSESSIVES or nxt in PRONOUNS
+            verb_lemma(first) == first and (nxt in NP_OPENERS or nxt in PRONOUNS
                                             or nxt in NUMBERS or nxt.isdigit()):
         return None                               # "flip the lamp off", "put two phones on the bed": a verb first
     found = s.verb_at(i)
@@ -763,7 +762,7 @@ def _switched_alone(s: State, i: int) -> Match | None:
         return None                               # "switch the radio on": the verb and its split particle
     end = _sentence_end(s, i)
     k = next((k for k in range(i + 1, min(end, i + 1 + _SWITCHED_WORDS)) if words[k].lower in SWITCHED_MEANS), None)
-    if k is None or words[k - 1].lower in DETERMINERS or words[k - 1].lower in POSSESSIVES or \
+    if k is None or words[k - 1].lower in NP_OPENERS or \
             any(words[j].lower in BE_WORDS or words[j].lower in PREPOSITIONS for j in range(i, k)):
         return None
     unit = SWITCHED_MEANS[words[k].lower]
@@ -774,7 +773,7 @@ def _switched_alone(s: State, i: int) -> Match | None:
     if rest < end and words[rest].lower not in ASKED_ALONE | {","}:
         n = match_phrase(words, rest, PREPOSITIONS)
         if not n or not s.np_starts(rest + n) or any(
-                s.verb_at(j) and words[j - 1].lower not in DETERMINERS and words[j - 1].lower not in POSSESSIVES
+                s.verb_at(j) and words[j - 1].lower not in NP_OPENERS
                 for j in range(rest + n, end)):
             return None                           # "lights off in the hall": only where may follow
     tag = Tag.DET if first in DETERMINERS else Tag.POSS if first in POSSESSIVES else Tag.WORD
@@ -819,7 +818,7 @@ def _wish_of_phrase(s: State, i: int) -> Match | None:
     bringing them the thing, as "Anna wants the cup" is; the verb is unsaid before the phrase, and the
     wish is dropped after it (``WISH_DROPPED``)."""
     words = s.words
-    if REQUEST_MEANS not in s.lexicon.units or words[i].lower not in DETERMINERS | POSSESSIVES or \
+    if REQUEST_MEANS not in s.lexicon.units or words[i].lower not in NP_OPENERS or \
             s.verb_at(i) is not None:
         return None
     head = next((k for k in range(i + 1, min(len(words), i + 4))
@@ -885,7 +884,7 @@ def _let_know(s: State, i: int) -> Match | None:
     if QUESTION_MEANS not in s.lexicon.units or i + 2 >= len(words):
         return None
     told = words[i + 1]
-    if told.lower in DETERMINERS or told.lower in POSSESSIVES or \
+    if told.lower in NP_OPENERS or \
             words[i + 2].lower != LET_KNOW[1] and _one_told(told):      # "let mum and dad know"
         return _let_phrase_know(s, i)
     pronoun = told.lower in OBJECT_PRONOUNS and told.lower not in ("it", "this", "that")
@@ -982,7 +981,7 @@ OBLIGED_RULE = Rule("where a thing should go", _obliged, (
     Example("The milk belongs in the fridge.", "The", Tag.DET),
     Example("the strawberry jello needs to go to the pantry", "", Tag.VERB),
     Example("the front door should be closed", "closed", Tag.PARTICLE),
-), lambda low: low in DETERMINERS or low in POSSESSIVES or low in _OBLIGED_SUBJECTS,
+), lambda low: low in NP_OPENERS or low in _OBLIGED_SUBJECTS,
     "'X should go in Y', 'X belongs in Y': put X in Y; 'X should be closed': close X")
 OBLIGED_DROPPED = Rule("the obligation after the thing", _obliged_dropped, (
     Example("the bowl should go in the dishwasher", "should go", ""),
