@@ -254,6 +254,12 @@ SEEN_ASKED = (frozenset(["have", "has", "did"]), frozenset(["you", "anyone", "an
 """"*Have you seen* my phone?", "*did you notice* the keys anywhere?", "*has anyone found* my glasses?": a
 question whether the thing was seen (an auxiliary of the past, a subject, a verb of perceiving or finding) asks
 to find it (``WHERE_MEANS``)."""
+LEFT_ASKED = (frozenset(["did", "have", "has", "didn't", "haven't", "hasn't"]),
+              frozenset(["i", "you", "we", "he", "she", "they", "anyone", "anybody", "someone", "somebody"]),
+              frozenset(["leave", "left"]))
+""""*Did I leave* the stove on?", "*has someone left* the door open?": a question whether someone left a thing
+in a state (an auxiliary, a subject, "leave") asks about the thing's state, as "is the stove on?" does: check
+the thing (``STATE_MEANS``), the state kept."""
 REQUESTS = frozenset(["i'd like", "i would like", "i'd love", "i would love", "i'd like to have",
                       "i would like to have", "can i have", "could i have", "may i have", "can i get", "could i get",
                       "can i please have", "could i please have", "may i please have", "i need", "i want",

@@ -21,6 +21,7 @@ from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
 from seal_cli.language.english import PRONOUNS
 from seal_cli.language.lexicon import Mention, Word, mentions, noun_lemma
+from seal_cli.language.morphology import is_plural
 from seal_cli.language.syntax import NP
 from seal_cli.language.values import Evoked, Phrase
 
@@ -119,6 +120,10 @@ class Reference:
             spans = [*self.remarks, *((w.start, w.end) for w in self.words if w.tag == "COND")]
             self._mentions = sorted((m for a, b in spans for m in mentions(self.text, a, b)), key=lambda m: m.start)
         pronoun = np.pronoun or ""
+        if pronoun in ("them", "they"):              # "*The plants on the balcony*, bring them inside": a plural
+            plural = [m for m in self._mentions if m.end <= np.start and m.determined and not m.oblique and
+                      not m.name and is_plural(m.head.lower())]
+            return plural[-1] if plural else None
         if pronoun not in ("him", "her", "he", "she", "it", "this", "that"):
             return None
         person = pronoun not in ("it", "this", "that")

@@ -229,7 +229,13 @@ class Roles:
         if np.kind != "pronoun":
             return np.kind
         antecedent = self.reference.antecedent(np, frame, role)
-        return antecedent[2] if antecedent else "pronoun"
+        if antecedent:
+            return antecedent[2]
+        if np.pronoun in ("them", "they") and frame is not None and role is not None:
+            said = self.reference.mentioned(np, frame, role)     # "*the plants*, bring them inside": things
+            if said is not None:
+                return "person" if self.types.is_a(noun_lemma(said.head), "person") is True else "thing"
+        return "pronoun"
 
     def fit(self, frame: Frame, role: str, np: NP) -> float:
         """How well a phrase fits an element: +2 a person where a person is wanted, +1 a class of

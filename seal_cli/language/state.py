@@ -548,21 +548,38 @@ class State:
         return any(all(k + m < len(words) and words[k + m].lower == part for m, part in enumerate(phrase.split()))
                    for phrase in (*WHERE_QUESTIONS, *REQUESTS) if phrase.split()[0] == words[k].lower)
 
-    def until_place(self, i: int) -> bool:
+    def until_place(self, i: int, at: int = 0) -> bool:
         """Whether "until"/"till" at ``i`` says how far a motion goes: after a verb of a frame with a goal,
-        a noun phrase with no verb and no time ("walk with her *until the corner*"); "until the bus
-        stops" (a noun then an -s form) stays a condition."""
+        a noun phrase (at ``at``, the next word if 0) with no verb and no time ("walk with her *until the
+        corner*"); "until the bus stops" (a noun then an -s form) stays a condition."""
         words = self.words
+        at = at or i + 1
         if self.verb_index < 0 or str(self.out[self.verb_index].info) not in self.lexicon.goals or \
-                self.clock_time(i) or not self.np_starts(i + 1):
+                self.clock_time(i) or not self.np_starts(at):
             return False
-        end = self.cond_end(i + 1)
-        span = [w.lower for w in words[i + 1:end]]
+        end = self.cond_end(at)
+        span = [w.lower for w in words[at:end]]
         if not span or any(x in FINITE or x in CONTRACTED or x in SUBJECTS or x in TIME_UNITS
                            or x in ("you", "i") or x in STATES_DONE for x in span) or \
                 any(gerund_lemma(x) and (k == 0 or span[k - 1] not in DETERMINERS) for k, x in enumerate(span)):
             return False
         return not (len(span) > 1 and span[-1].endswith("s") and span[-2] not in NP_OPENERS)
+
+    def until_arrival(self, i: int) -> int:
+        """How many words "until you reach", "till we get to", "until you arrive at" take at ``i`` when what
+        follows is a place the motion goes to ("follow him *until you reach* the patio"): the subject, a verb
+        of a frame with a goal and its preposition say how far, as "until the gate" does (0: none)."""
+        words = self.words
+        k = i + 1
+        if k >= len(words) or words[k].lower not in ("you", "we"):
+            return 0
+        found = self.verb_at(k + 1) if k + 1 < len(words) else None
+        if found is None or found[2] is not None or found[0] not in self.lexicon.goals:
+            return 0
+        at = k + 1 + found[1]
+        if at < len(words) and words[at].lower in PREPOSITIONS and words[at].lower not in NOT_PLACES:
+            at += 1
+        return at - i if self.until_place(i, at) else 0
 
     def timed_noun(self, i: int) -> bool:
         """Whether the sentence at ``i`` is a word that is no verb of the library and a time, and nothing

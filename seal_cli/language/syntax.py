@@ -236,7 +236,10 @@ class Syntax(Transformer[Token, Command]):
         return _Lead([c for c in children if isinstance(c, PP)])
 
     def pp(self, children: list[Any]) -> PP:
-        prep, np = children
+        prep, np, *described = children
+        if described:                        # "for someone *sitting (on the sofa)*": the pronoun's description
+            np = replace(np, end=max(end_of(x) for x in (described[0] if isinstance(described[0], list)
+                                                         else described)))
         return PP(str(prep.info), np, prep.start)
 
     def predicate(self, children: list[Any]) -> Word | list[Any]:

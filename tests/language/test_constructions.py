@@ -658,3 +658,41 @@ def test_a_place_pointed_at_may_be_said_first(library: Library) -> None:
     parse = parse_command("in there, find the sponge", library)       # nothing before: the planner refuses
     assert parse.frames[0].elements["ground"].refers_to is None
     assert frames("in the kitchen, find the sponge", library) == [("Find", {"theme": "sponge", "ground": "kitchen"})]
+
+
+def test_until_you_reach_a_place_is_how_far_the_motion_goes(library: Library) -> None:
+    assert texts("follow the man in blue until you reach the patio", library) == [
+        ("Follow", {"theme": "the man in blue", "goal": "the patio"})]
+    assert texts("lead Jo till we get to the exit", library) == [("Guide", {"theme": "Jo", "goal": "the exit"})]
+    assert [f for f, _ in frames("follow me until you reach the kitchen and then grab a cup", library)] == \
+        ["Follow", "Pick"]
+    assert [f for f, _ in frames("walk until you see the door", library)] == ["Go"]    # no arriving: a condition
+
+
+def test_did_someone_leave_a_thing_in_a_state_checks_it(library: Library) -> None:
+    assert frames("did I leave the stove on", library) == [("LookAt", {"theme": "stove"})]
+    (look,) = parse_command("has anyone left the back door open?", library).frames
+    assert look.frame == "LookAt" and look.asked == "open"
+    assert frames("did I leave my keys in the car?", library) == [("Find", {"theme": "key", "ground": "car"})]
+    with pytest.raises(CommandError):
+        parse_command("did I leave", library)
+
+
+def test_a_state_a_frame_leaves_its_theme_in_is_wished_or_made_sure_of(library: Library) -> None:
+    assert [f for f, _ in frames("I'd like my tea hot", library)] == ["Heat"]
+    assert [f for f, _ in frames("I'd like the beer cold", library)] == ["Cool"]
+    assert [f for f, _ in frames("make sure the soup is hot", library)] == ["Heat"]
+    assert [f for f, _ in frames("I'd like the blinds closed", library)] == ["Close"]      # as before
+
+
+def test_them_takes_up_a_plural_phrase_said_first(library: Library) -> None:
+    assert frames("the plants on the balcony, bring them inside", library) == [("Bring", {"theme": "plant"})]
+    assert [f for f, _ in frames("the guests at the door, take them to the lounge", library)] == ["Guide"]
+    assert [f for f, _ in frames("bring them to the kitchen", library)] == ["Guide"]    # no phrase: as before
+
+
+def test_a_pronoun_after_a_preposition_may_be_described(library: Library) -> None:
+    assert texts("look around the garden for someone who's sitting", library) == [
+        ("Find", {"theme": "someone who's sitting", "ground": "the garden"})]
+    assert texts("search the kitchen for someone wearing a hat", library) == [
+        ("Find", {"theme": "someone wearing a hat", "ground": "the kitchen"})]

@@ -35,6 +35,11 @@ def _something_to(s: State, i: int) -> Match | None:
     return None
 
 
+def _until_arrival(s: State, i: int) -> Match | None:
+    n = s.until_arrival(i)
+    return s.emit(i, n, Tag.PREP, "to") if n else None        # "follow him until you reach the patio"
+
+
 def _until_place(s: State, i: int) -> Match | None:
     if s.until_place(i):
         return Match(1, (s.words[i].tagged(Tag.PREP, "to"),))     # "follow me until the gate"
@@ -115,6 +120,10 @@ PARTICLE_BETWEEN_OBJECTS = Rule("particle between the objects", _particle_betwee
 SOMETHING_TO = Rule("something to V", _something_to, (
     Example("bring me something to drink", "to drink", Tag.REL),
 ), frozenset(["to"]), "'to' and a verb after an indefinite pronoun: what it is for, kept whole")
+UNTIL_ARRIVAL = Rule("until you reach a place", _until_arrival, (
+    Example("follow the man in blue until you reach the patio", "until you reach", Tag.PREP),
+    Example("lead Jo till we get to the exit", "till we get to", Tag.PREP),
+), frozenset(["until", "till"]), "'until you reach/get to/arrive at' a noun phrase after a verb of motion: how far")
 UNTIL_PLACE = Rule("until a place", _until_place, (
     Example("follow me until the gate", "until", Tag.PREP),
 ), frozenset(["until", "till"]), "'until' a noun phrase after a verb of motion: how far")

@@ -21,6 +21,7 @@ from seal_cli.language.english import (
     FOUND_OUT,
     HERE_WORDS,
     KNOW_WISHES,
+    LEFT_ASKED,
     LET_KNOW,
     LOCATED,
     NP_OPENERS,
@@ -204,19 +205,25 @@ def _whether_is(s: State, i: int) -> Match | None:
     asked as "find ..." (``WHERE_MEANS``); a phrase must follow, and a preposition of place after it in the
     same sentence, before any other verb."""
     words = s.words
-    if WHERE_MEANS not in s.lexicon.units or not s.np_starts(i + 1) or words[i + 1].lower in _WHETHER_IS:
+    if WHERE_MEANS not in s.lexicon.units or words[i + 1].lower in _WHETHER_IS or not _place_asked(s, i + 1):
         return None
-    for k in range(i + 2, len(words)):
+    return Match(1, (words[i].tagged(Tag.VERB, WHERE_MEANS),), expect=False, verb=WHERE_MEANS, using=False)
+
+
+def _place_asked(s: State, j: int) -> bool:
+    """Whether a phrase starts at ``j`` and a preposition of place and its phrase follow it in the same sentence,
+    before any other verb ("Ben | in the kitchen", "my keys | in the car")."""
+    words = s.words
+    if not s.np_starts(j):
+        return False
+    for k in range(j + 1, len(words)):
         low = words[k].lower
         if low in END_MARKS or low in (",", ";", "and", "then") or s.verb_at(k) is not None and \
                 words[k - 1].lower not in NP_OPENERS:
-            return None                           # a verb ("the *pan*": a noun after a determiner)
+            return False                          # a verb ("the *pan*": a noun after a determiner)
         if low in _WHETHER_WHERE:
-            if not s.np_starts(k + 1):
-                return None
-            return Match(1, (words[i].tagged(Tag.VERB, WHERE_MEANS),), expect=False, verb=WHERE_MEANS,
-                         using=False)
-    return None
+            return s.np_starts(k + 1)
+    return False
 
 
 ASKED = "asked"
@@ -296,7 +303,8 @@ def _ensured_state(s: State, j: int) -> tuple[str, int] | None:
     """At the verb of being of "make sure the door *is closed*": the unit whose result the state is, and how
     many words (the verb of being, adverbs, the state) it takes to the clause's end; None when the state is no
     result of a lexical unit. "on"/"off" are switching (``SWITCHED_MEANS``), a participle its verb ("closed":
-    "close"; "turned off": "turn off"), an adjective that is a verb's base form its verb ("open", "clean")."""
+    "close"; "turned off": "turn off"), an adjective that is a verb's base form its verb ("open", "clean"), one a
+    frame's postcondition says of its theme that frame's first unit ("hot": "heat")."""
     words = s.words
     if j >= len(words) or words[j].lower not in _ENSURED_BE:
         return None
@@ -316,7 +324,10 @@ def _ensured_state(s: State, j: int) -> tuple[str, int] | None:
     else:
         return None
     parts = tuple(unit.split())
-    return (unit, end - j) if parts in s.lexicon.units.get(parts[0], ()) else None
+    if parts not in s.lexicon.units.get(parts[0], ()):
+        result = s.lexicon.results.get(state[0]) if len(state) == 1 and is_adjective(state[0]) else None
+        return (result[1], end - j) if result is not None else None    # "make sure the soup is *hot*": heat it
+    return unit, end - j
 
 
 def _ensured(s: State, i: int) -> Match | None:
@@ -356,6 +367,25 @@ def _state_question(s: State, i: int) -> Match | None:
     return Match(1, (s.words[i].tagged(Tag.VERB, STATE_MEANS),), expect=False, verb=STATE_MEANS, using=False)
 
 
+def _left_asked(s: State, i: int) -> Match | None:
+    """"*Did I leave* the stove on?", "*has anyone left* the back door open": whether someone left a thing in a
+    state is whether it is in it (``LEFT_ASKED``): check the thing, the state kept (``STATE_ASKED``)."""
+    words = s.words
+    auxiliaries, subjects, left = LEFT_ASKED
+    if i + 3 >= len(words) or STATE_MEANS not in s.lexicon.units or words[i].lower not in auxiliaries or \
+            words[i + 1].lower not in subjects or words[i + 2].lower not in left:
+        return None
+    if _state_question_end(s, i + 3) is not None:
+        means = STATE_MEANS
+    elif WHERE_MEANS in s.lexicon.units and _place_asked(s, i + 3):
+        means = WHERE_MEANS                       # "did I leave my keys in the car?": is it there, find it
+    else:
+        return None
+    end = words[i + 2].end
+    return Match(3, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, means),),
+                 expect=False, verb=means, using=False)
+
+
 _ASKERS = CHECK_WHETHER[0] | STATE_ASKERS
 _ASKER_WORDS = max(len(p.split()) for p in _ASKERS)
 
@@ -388,7 +418,8 @@ def _state_asked(s: State, i: int) -> Match | None:
     if s.verb_index < 0:
         return None
     verb = s.out[s.verb_index]
-    if verb.info != STATE_MEANS or not (verb.lower in _WHETHER_IS or verb.lower.split()[-1] in CHECK_WHETHER[1]):
+    if verb.info != STATE_MEANS or not (verb.lower in _WHETHER_IS or verb.lower.split()[-1] in CHECK_WHETHER[1]
+                                        or verb.lower.split()[-1] in LEFT_ASKED[2]):
         return None
     words = s.words
     k = i + 1 if words[i].lower in _WHETHER_IS and verb.lower not in _WHETHER_IS else i
@@ -552,12 +583,17 @@ def _thing_placed(s: State, i: int) -> Match | None:
 def _state_unit(s: State, low: str) -> str | None:
     """The lexical unit whose result the one word of state ``low`` is: "on"/"off" are switching
     (``SWITCHED_MEANS``), a participle its verb ("closed": "close"), an adjective that is a verb's base form
-    its verb ("open", "clean"); None when it is no result of a unit of the library."""
+    its verb ("open", "clean"), an adjective a frame's postcondition says of its theme that frame's first unit
+    ("hot": ``hot(theme)`` of Heat, "heat"; :attr:`Lexicon.results`); None when it is no result of a unit of the
+    library."""
     unit = SWITCHED_MEANS.get(low) or verb_lemma(low) or low
     if unit == low and low not in SWITCHED_MEANS and low not in STATE_PARTICLES and not is_adjective(low):
         return None                              # a verb's base form that is no adjective ("move"): no state
     parts = tuple(unit.split())
-    return unit if parts in s.lexicon.units.get(parts[0], ()) else None
+    if parts in s.lexicon.units.get(parts[0], ()):
+        return unit
+    result = s.lexicon.results.get(low) if is_adjective(low) else None
+    return result[1] if result is not None else None        # "I'd like my tea *hot*": heat it
 
 
 _WISHED_STATES = WISHED_PLACED | frozenset(["i need", "we need"])
@@ -966,6 +1002,11 @@ SEEN_ASKED_RULE = Rule("have you seen", _seen_asked, (
     Example("Did you notice the keys in the hall?", "Did you notice", Tag.VERB),
     Example("has anyone come across my glasses", "has anyone come across", Tag.VERB),
 ), SEEN_ASKED[0], "'have you seen X', 'did you notice X': find X")
+LEFT_ASKED_RULE = Rule("did someone leave X in a state", _left_asked, (
+    Example("did I leave the stove on", "did I leave", Tag.VERB),
+    Example("Has anyone left the back door open?", "open", Tag.COND),
+    Example("did I leave my keys in the car?", "did I leave", Tag.VERB),
+), LEFT_ASKED[0], "'did I leave X on?': check X (LookAt), the state asked kept; 'did I leave X in Y?': find X in Y")
 WHETHER_IS_RULE = Rule("is X somewhere", _whether_is, (
     Example("Is Ben in the kitchen?", "Is", Tag.VERB),
     Example("are the apples in the fridge?", "are", Tag.VERB),
@@ -975,6 +1016,7 @@ WISHED_STATE = Rule("a wish for a thing's state", _wished_state, (
     Example("I want the lights off, please", "off", Tag.PARTICLE),
     Example("I need the door open", "I need", Tag.VERB),
     Example("we'd like the lights on in the living room", "on", Tag.PARTICLE),
+    Example("I'd like my tea hot", "hot", Tag.PARTICLE),
 ), first_words(_WISHED_STATES), "'I'd like X closed', 'I want X off': close X, turn X off")
 OBLIGED_RULE = Rule("where a thing should go", _obliged, (
     Example("the bowl should go in the dishwasher", "", Tag.VERB),
@@ -1075,6 +1117,7 @@ ENSURED_RULE = Rule("make sure of a state", _ensured, (
     Example("please make sure the stove is off", "make sure", Tag.VERB),
     Example("Please make sure the door is closed", "make sure", Tag.VERB),
     Example("ensure that the lights are turned off", "ensure that", Tag.VERB),
+    Example("make sure the soup is hot", "make sure", Tag.VERB),
 ), first_words(ENSURED), "'make sure X is off / closed': turn X off, close X")
 ENSURED_STATE = Rule("the state made sure of", _ensured_dropped, (
     Example("make sure the lamp is on", "is on", ""),
