@@ -205,7 +205,7 @@ def _whether_is(s: State, i: int) -> Match | None:
     asked as "find ..." (``WHERE_MEANS``); a phrase must follow, and a preposition of place after it in the
     same sentence, before any other verb."""
     words = s.words
-    if WHERE_MEANS not in s.lexicon.units or words[i + 1].lower in _WHETHER_IS or not _place_asked(s, i + 1):
+    if WHERE_MEANS not in s.lexicon.units or not _place_asked(s, i + 1) or words[i + 1].lower in _WHETHER_IS:
         return None
     return Match(1, (words[i].tagged(Tag.VERB, WHERE_MEANS),), expect=False, verb=WHERE_MEANS, using=False)
 
