@@ -184,9 +184,13 @@ class Roles:
                 and self.types.is_person(frame.elements[0].type)))
             if person_before and "ground" not in have:
                 return None              # "bring it to Adel *in the bathroom*": where she is
+            if person_before and pp.prep == "in" and np.pronoun is None and np.head is not None and \
+                    self.types.is_a(noun_lemma(np.head_text.lower()), "clothing") is True:
+                return None              # "greet the man *in the black jacket*": what he wears, not where he is
             if previous is not None and previous.kind == "person" and place_next and "ground" not in roles and \
                     previous.head is not None and previous.head.tag != "NAME" and \
-                    np.head_text not in self.types.taxonomy.known_classes:
+                    (np.head_text not in self.types.taxonomy.known_classes or
+                     self.types.is_a(noun_lemma(np.head_text.lower()), "clothing") is True):
                 return None              # "greet the person *in the white jacket* in the bedroom": the last is where
             if previous is not None and previous.contents and np.pronoun in ("it", "them"):
                 return None              # "a pan with a spoon in it"

@@ -696,3 +696,14 @@ def test_a_pronoun_after_a_preposition_may_be_described(library: Library) -> Non
         ("Find", {"theme": "someone who's sitting", "ground": "the garden"})]
     assert texts("search the kitchen for someone wearing a hat", library) == [
         ("Find", {"theme": "someone wearing a hat", "ground": "the kitchen"})]
+
+
+def test_what_a_person_wears_said_alone_describes_them(library: Library) -> None:
+    assert texts("greet the man in the black jacket", library) == [
+        ("Greet", {"theme": "the man in the black jacket"})]
+    assert texts("say hi to the woman in the red dress", library) == [
+        ("Greet", {"theme": "the woman in the red dress"})]
+    assert texts("find the girl in the blue shoes in the office", library) == [
+        ("Find", {"theme": "the girl in the blue shoes", "ground": "the office"})]
+    assert texts("meet the man in the kitchen", library) == [("Meet", {"theme": "the man", "ground": "the kitchen"})]
+    assert frames("put the socks in the drawer", library) == [("Place", {"theme": "sock", "goal": "drawer"})]

@@ -1,0 +1,80 @@
+#!/usr/bin/env python3
+"""Rebuild ``framelib/wordnet_clothing.yaml``: the nouns that name what people wear, from WordNet 3.0's
+noun hierarchy, as the library's ``clothing`` category.
+
+After a person, "in" and such a noun say what the person wears, not where they are: "greet the man *in the
+black jacket*" (the theme described, no ground), while "greet the man in the kitchen" says where. A noun is
+written when it is one word of letters, written in lower case, and either its first sense (WordNet orders
+senses by how often they were tagged; at least one was) or, for a noun never tagged, every sense of it is a
+hyponym of one of :data:`WORN` — clothing.n.01 ("jacket", "hat", "dress"), footwear.n.02 ("shoe", "boot")
+or handwear.n.01 ("glove"). The first sense decides for tagged nouns because a person "in a coat" means
+the garment, not a coat of paint ("jacket", "coat" and "hat" have senses of other kinds). The data itself
+(WordNet's files) is read only here, never by the parser. ``--check`` exits 1 when the shipped file differs.
+
+    python scripts/build_clothing_nouns.py --wordnet /usr/share/wordnet [--check]
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from build_person_nouns import Nouns  # scripts/build_person_nouns.py, beside this script
+from rebuilt import write_or_check  # scripts/rebuilt.py, beside this script
+
+ROOT = Path(__file__).resolve().parent.parent
+OUT = ROOT / "framelib" / "wordnet_clothing.yaml"
+WORN = ("03051540", "03380867", "02799897")     # clothing.n.01, footwear.n.02, handwear.n.01
+HEADER = """\
+# Nouns that name what people wear, derived from WordNet 3.0's noun hierarchy (Princeton University,
+# WordNet 3.0 license): the first sense of each (every sense, for a noun never tagged) is a kind of
+# clothing.n.01, footwear.n.02 or handwear.n.01.
+# Written by scripts/build_clothing_nouns.py --wordnet DIR: rebuild it, do not edit it by hand.
+"""
+
+
+def clothing_nouns(nouns: Nouns, roots: tuple[str, ...] = WORN) -> list[str]:
+    """The nouns the module's rules keep, sorted."""
+    worn: dict[str, bool] = dict.fromkeys(roots, True)
+
+    def is_worn(offset: str) -> bool:
+        if offset not in worn:
+            worn[offset] = False                           # cut cycles while the answer is open
+            worn[offset] = any(is_worn(up) for up in nouns.up[offset])
+        return worn[offset]
+
+    found = []
+    for noun, offsets in nouns.senses.items():
+        if not (noun.isalpha() and noun in nouns.lower and offsets):
+            continue
+        tagged = any((noun, n) in nouns.tagged for n in range(1, len(offsets) + 1))
+        if is_worn(offsets[0]) if tagged else all(is_worn(o) for o in offsets):
+            found.append(noun)
+    return sorted(found)
+
+
+def render(found: list[str]) -> str:
+    lines = [HEADER, "categories:", "  clothing:"]
+    lines += [f"    - {noun}" for noun in found]
+    return "\n".join(lines) + "\n"
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--wordnet", type=Path, required=True, help="a WordNet 3.0 dict folder")
+    ap.add_argument("--out", type=Path, default=OUT)
+    ap.add_argument("--check", action="store_true", help="compare with the shipped file instead of writing it")
+    args = ap.parse_args()
+    missing = [args.wordnet / name for name in ("data.noun", "index.noun", "cntlist.rev")
+               if not (args.wordnet / name).is_file()]
+    if missing:
+        print(f"error: {missing[0]}: no such file (--wordnet is a WordNet 3.0 dict folder)", file=sys.stderr)
+        return 1
+    text = render(clothing_nouns(Nouns(args.wordnet)))
+    return write_or_check(args.out, text, check=args.check, made_from="WordNet",
+                          summary=f"{text.count(chr(10) + '    - ')} nouns")
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
