@@ -320,7 +320,8 @@ PATH_MEANS = "go"
 ASKED_ALONE = frozenset(["please"])
 """"Milk from the fridge, *please*", "the remote, please": a noun phrase and "please" with no verb in the
 sentence is a request for the thing, "bring me ..." (``REQUEST_MEANS``)."""
-CHECK_WHETHER = (frozenset(["check", "see", "find out", "look and see", "go and see", "go and check"]),
+CHECK_WHETHER = (frozenset(["check", "see", "find out", "look and see", "go and see", "go and check", "go see",
+                            "go check"]),
                  frozenset(["if", "whether"]), frozenset(["there is", "there are", "there 's", "there's"]))
 """"*See if* anyone is in the kitchen", "*check whether* there is milk in the fridge": the question whether
 it is there, asked as "find ..." (``WHERE_MEANS``), as "is anyone in the kitchen?" is."""

@@ -707,3 +707,12 @@ def test_what_a_person_wears_said_alone_describes_them(library: Library) -> None
         ("Find", {"theme": "the girl in the blue shoes", "ground": "the office"})]
     assert texts("meet the man in the kitchen", library) == [("Meet", {"theme": "the man", "ground": "the kitchen"})]
     assert frames("put the socks in the drawer", library) == [("Place", {"theme": "sock", "goal": "drawer"})]
+
+
+def test_a_verb_of_going_then_a_verb_no_frame_has_is_an_error_not_a_goal(library: Library) -> None:
+    for text in ("the person in the living room needs help, go see them", "come help me", "go feed the cat"):
+        with pytest.raises(CommandError, match="unknown verb"):
+            parse_command(text, library)                 # was Go(goal "see"): an instruction dropped silently
+    assert [f for f, _ in frames("go see who's at the door", library)] == ["Tell"]   # as "go and see who"
+    assert [f for f, _ in frames("go check the door", library)] == ["LookAt"]        # a verb of the library
+    assert frames("go round the corner", library)[0][0] == "Go"                     # an adverb too: a path

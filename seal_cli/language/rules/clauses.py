@@ -11,7 +11,7 @@ from seal_cli.language.english import (
     PREPOSITIONS,
     SEPARATOR_WORDS,
 )
-from seal_cli.language.morphology import is_adjective, verb_lemma
+from seal_cli.language.morphology import is_adjective, parts_of_speech, verb_lemma
 from seal_cli.language.rule import AFTER_SEP, Example, Match, Rule
 from seal_cli.language.state import CLOSED, INDEFINITE, REL_FIRST, SEP_FIRST, SUB_FIRST, State, match_phrase, merge
 from seal_cli.language.tags import Tag
@@ -180,14 +180,35 @@ _NO_NOUN_AFTER = frozenset(["it", "them", "him", "her"])
 """Object pronouns, which never go on a noun phrase: a verb's object ("grab the towel *fold it* on the rack")."""
 
 
+_SPEAKER_OBJECTS = frozenset(["me", "us"])
+_VERB_OR_NOUN = frozenset(["verb", "noun"])
+"""Who speaks, as an object: after a verb of going and a verb's base form, that verb's ("come *help* me")."""
+
+
+def _going_only(s: State, unit: str) -> bool:
+    """Whether a unit is of going only: its frames have a goal, and none has a recipient or puts a thing ("go",
+    "come", "head"; not "take", "bring", "put")."""
+    return unit in s.lexicon.goals and unit not in s.lexicon.recipients and unit not in s.lexicon.puts
+
+
 def _unknown_unjoined(s: State, i: int) -> Match | None:
     """A verb's base form that no frame lists, right after a phrase and before an object pronoun ("grab the towel
     *fold it* on the rack"), or after "to" and before its object ("head to the bedroom *to wake up* Jonas"): a clause
     of its own, so its unknown verb is reported, not read as a noun of the phrase (the verb was lost)."""
     words = s.words
     to = words[i].lower == "to"
-    if not to and (i + 1 >= len(words) or words[i + 1].lower not in _NO_NOUN_AFTER) or s.verb_index < 0 or \
-            s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL, Tag.PARTICLE, Tag.HERE):
+    if s.verb_index < 0 or not to and (i + 1 >= len(words) or words[i + 1].lower not in _NO_NOUN_AFTER and
+                                       words[i + 1].lower not in _SPEAKER_OBJECTS and
+                                       words[i + 1].lower not in NP_OPENERS):
+        return None
+    if not to and s.prev_tag() == Tag.VERB and _going_only(s, str(s.out[s.verb_index].info)):
+        low = words[i].lower            # "go *see* them": a verb of going, then another verb's own clause
+        if verb_lemma(low) == low and s.verb_at(i) is None and low not in CLOSED and low not in s.lexicon.things and \
+                (words[i + 1].lower not in NP_OPENERS or parts_of_speech(low) <= _VERB_OR_NOUN):
+            return Match(0, (Word("", words[i].start, words[i].start, Tag.SEP),), expect=True)
+        return None             # "go *round* the corner": an adverb or adjective too, a path
+    if s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL, Tag.PARTICLE, Tag.HERE) or \
+            not to and words[i + 1].lower not in _NO_NOUN_AFTER:
         return None
     k = i + 1 if to else i
     if k + 1 >= len(words):
@@ -213,4 +234,7 @@ UNJOINED = Rule("clause without a joint", _unjoined, (
 UNKNOWN_UNJOINED = Rule("unknown verb without a joint", _unknown_unjoined, (
     Example("grab the towel fold it on the rack", "fold", Tag.WORD),
     Example("head to the bedroom to wake up Jonas", "to", Tag.SEP),
+    Example("the person in the hall needs help, go see them", "see", Tag.WORD),
+    Example("come help me", "help", Tag.WORD),
+    Example("go feed the cat", "feed", Tag.WORD),
 ), None, "a verb no frame lists before its object, after a phrase: a clause of its own")
