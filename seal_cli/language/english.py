@@ -127,6 +127,10 @@ TAG_QUESTIONS = frozenset(["would you", "could you", "will you", "can you", "won
                            "would you please", "will you please", "could you please"])
 """"fetch me a spoon from the cabinet *would you*": a modal and "you" ending the request, with or without a
 comma before it, ask nothing more (the politeness of a tag question)."""
+ASKED_AGAIN = frozenset(["tell me", "tell us", "let me know", "let us know", "know", "any idea", "you know",
+                         "tell me please", "please tell me"])
+""""Which drink is the heaviest, *can you tell me*?", "who's at the door, *do you know*?": after a question and
+its comma, the question asked again (a modal and "you" first, or not) and nothing after it asks nothing more."""
 VOCATIVES = frozenset(["dear", "dearie", "love", "darling", "sweetheart", "sweetie", "honey", "hun", "pet", "mate",
                        "buddy", "pal", "sir", "madam", "ma'am", "miss", "robot", "friend", "my dear", "my friend",
                        "my love", "old friend", "thanks", "thank you", "please", "would you", "could you",

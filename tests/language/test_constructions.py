@@ -716,3 +716,24 @@ def test_a_verb_of_going_then_a_verb_no_frame_has_is_an_error_not_a_goal(library
     assert [f for f, _ in frames("go see who's at the door", library)] == ["Tell"]   # as "go and see who"
     assert [f for f, _ in frames("go check the door", library)] == ["LookAt"]        # a verb of the library
     assert frames("go round the corner", library)[0][0] == "Go"                     # an adverb too: a path
+
+
+def test_an_unknown_verb_and_its_particle_after_please_is_no_thing_asked_for(library: Library) -> None:
+    for text in ("Please tidy up the bedroom", "please tidy up"):
+        with pytest.raises(CommandError, match="unknown verb 'tidy'"):
+            parse_command(text, library)                 # was Bring(theme "tidy")
+    assert frames("the spoon back, please", library) == [("Bring", {"theme": "spoon", "recipient": "me"})]
+
+
+def test_among_or_out_of_a_group_before_a_question(library: Library) -> None:
+    assert frames("Among the people in the kitchen, how many are standing?", library) == [
+        ("Count", {"ground": "kitchen"})]
+    assert frames("out of the people in the office, how many are waving?", library) == [
+        ("Count", {"ground": "office"})]
+    assert frames("out of the fridge, take the milk", library) == [("Pick", {"theme": "milk", "source": "fridge"})]
+
+
+def test_a_question_asked_again_after_its_comma_asks_nothing_more(library: Library) -> None:
+    assert [f for f, _ in frames("What's the largest snack in the pantry, can you tell me?", library)] == ["Tell"]
+    assert [f for f, _ in frames("how many cups are on the table, could you tell me", library)] == ["Count"]
+    assert [f for f, _ in frames("go to the kitchen, tell me", library)] == ["Go", "Tell"]   # no question before

@@ -31,6 +31,7 @@ ANYWHERE: tuple[Rule, ...] = (verbs.SPLIT_PARTICLE, politeness.FORMULA)
 
 CLAUSE_START: tuple[Rule, ...] = (
     requests.PATH_ALONE_RULE,
+    politeness.ASKED_AGAIN_RULE,
     politeness.WHILE_HOLDING,
     fronted.FRONTED_WITH,
     politeness.ADVERB_COMMA,

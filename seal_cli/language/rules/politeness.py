@@ -3,12 +3,43 @@
 
 from __future__ import annotations
 
-from seal_cli.language.english import END_MARKS, POLITE, TAG_QUESTIONS
+from seal_cli.language.english import (
+    ASKED_AGAIN,
+    END_MARKS,
+    NUMBER_MEANS,
+    POLITE,
+    QUESTION_MEANS,
+    TAG_QUESTIONS,
+    WHERE_MEANS,
+)
 from seal_cli.language.morphology import is_adverb, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import FORMULA_FIRST, State, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import capitalised
+
+_ASKING = frozenset([QUESTION_MEANS, WHERE_MEANS, NUMBER_MEANS, "how many"])
+_DO_YOU = frozenset(["do you", "would you", "does anyone"])
+
+
+def _said(s: State, i: int, table: frozenset[str]) -> int:
+    """How many words of the longest phrase of ``table`` start at ``i`` (0: none)."""
+    return max((len(parts) for parts in map(str.split, table) if i + len(parts) <= len(s.words) and
+                all(s.words[i + k].lower == part for k, part in enumerate(parts))), default=0)
+
+
+def _asked_again(s: State, i: int) -> Match | None:
+    """"Which drink is the heaviest, *can you tell me*?": the question asked again after its comma, nothing after
+    it: politeness ending the command (``ASKED_AGAIN``), not a clause that tells nothing."""
+    words = s.words
+    if not s.out or s.out[-1].tag != Tag.SEP or s.out[-1].lower != "," or \
+            not any(w.tag == Tag.VERB and w.info in _ASKING for w in s.out):
+        return None
+    n = _said(s, i, TAG_QUESTIONS | _DO_YOU)
+    m = _said(s, i + n, ASKED_AGAIN)
+    if not m or not all(w.lower in END_MARKS for w in words[i + n + m:]):
+        return None
+    return Match(n + m, (merge(words, i, n + m, Tag.POLITE),))
 
 
 def _formula(s: State, i: int) -> Match | None:
@@ -94,6 +125,10 @@ def _tag_question(s: State, i: int) -> Match | None:
     return None
 
 
+ASKED_AGAIN_RULE = Rule("the question asked again", _asked_again, (
+    Example("What's the largest snack in the pantry, can you tell me?", "can you tell me", Tag.POLITE),
+    Example("how many cups are on the table, could you tell me", "could you tell me", Tag.POLITE),
+), None, "'..., can you tell me?' after a question: politeness, nothing more asked")
 FORMULA = Rule("politeness formula", _formula, (
     Example("When you get a chance, could you close the window?", "When you get a chance,", Tag.POLITE),
     Example("Hey, when you get a sec, could you grab me a soda?", "when you get a sec,", Tag.POLITE),

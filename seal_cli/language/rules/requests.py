@@ -30,6 +30,7 @@ from seal_cli.language.english import (
     NUMBERS,
     OBJECT_PRONOUNS,
     OBLIGED,
+    PARTICLES,
     PATH_ALONE,
     PATH_MEANS,
     PLACE_MEANS,
@@ -763,10 +764,13 @@ def _asked_alone(s: State, i: int) -> Match | None:
     if any(t.tag != Tag.POLITE for t in s.out) or REQUEST_MEANS not in s.lexicon.units or \
             words[i].lower in PRONOUNS or not s.np_starts(i):
         return None
-    if verb_lemma(words[i].lower) == words[i].lower and i + 1 < len(words) and \
-            (words[i + 1].lower in NP_OPENERS or words[i + 1].lower in PRONOUNS):
-        return None                               # "please *list the* things", "please list *everything*": an
-        #                                           imperative, its verb unknown (a noun takes no pronoun after it)
+    particle = i + 1 < len(words) and words[i + 1].lower in PARTICLES and words[i + 1].lower not in PREPOSITIONS
+    if verb_lemma(words[i].lower) == words[i].lower and (particle or i + 1 < len(words) and
+                                                         (words[i + 1].lower in NP_OPENERS or
+                                                          words[i + 1].lower in PRONOUNS)):
+        return None                               # "please *list the* things", "please list *everything*", "please
+        #                                           tidy *up the* room": an imperative, its verb unknown (a noun takes
+        #                                           no pronoun after it, nor a particle and a phrase)
     end = _sentence_end(s, i)
     if not any(words[k].lower in ASKED_ALONE for k in range(end)) or \
             any(s.verb_at(k) or words[k].lower in BE_WORDS or words[k].lower in QUESTION_WORDS
@@ -1065,6 +1069,7 @@ PATH_ALONE_RULE = Rule("a path alone", _path_alone, (
 ), first_words(p for p, canonical in PREPOSITIONS.items() if canonical in PATH_ALONE), "'to X' with no verb: go to X")
 ASKED_ALONE_RULE = Rule("a thing asked for alone", _asked_alone, (
     Example("milk from the fridge, please", "", Tag.VERB),
+    Example("the spoon back, please", "", Tag.VERB),
     Example("The remote please.", "", Tag.PRON),
 ), None, "a noun phrase and 'please' with no verb: bring it to the speaker")
 STATE_QUESTION = Rule("is X in a state", _state_question, (
@@ -1152,9 +1157,14 @@ _PHRASE_TAGS = frozenset({Tag.PREP, Tag.OF, Tag.DET, Tag.NUM, Tag.POSS, Tag.WORD
 
 
 def _fronted_of(s: State, i: int) -> Match | None:
-    if not s.np_starts(i + 1) or not _fronted_ends(s, i + 1):
+    n = 2 if s.words[i].lower == "out" else 1     # "*out of* the people in the hall, how many ...": "of"
+    if n == 2 and s.next_lower(i) != "of" or not s.np_starts(i + n) or not _fronted_ends(s, i + n):
         return None
-    return Match(1, (s.words[i].tagged(Tag.PREP, "of"),), expect=False)
+    if s.words[i].lower != "of":                  # "out of the fridge, take the milk": where from, as said
+        comma = next(k for k in range(i + n, len(s.words)) if s.words[k].lower == ",")
+        if comma + 1 >= len(s.words) or s.words[comma + 1].lower not in WH_WORDS:
+            return None
+    return s.emit(i, n, Tag.PREP, "of")
 
 
 def _fronted_ends(s: State, i: int) -> bool:
@@ -1206,7 +1216,10 @@ def _fronted_end(s: State, i: int) -> Match | None:
 
 FRONTED_OF = Rule("of-phrase first", _fronted_of, (
     Example("Of the people in the hall, how many are sitting?", "Of", Tag.PREP),
-), frozenset(["of"]), "'of' and a noun phrase before the clause ('Of the people in the hall, how many ...')")
+    Example("Among the people in the kitchen, how many are standing?", "Among", Tag.PREP),
+    Example("out of the people in the office, how many are waving?", "out of", Tag.PREP),
+), frozenset(["of", "among", "amongst", "out"]),
+    "'of' ('among', 'out of') and a noun phrase before the clause ('Of the people in the hall, how many ...')")
 FRONTED_QUESTION = Rule("phrase said before a question", _fronted_question, (
     Example("On the table, which object is lightest?", "On the table , which object is lightest", Tag.SAID),
 ), first_words(PREPOSITIONS) | {"of"},
