@@ -304,7 +304,9 @@ WHERE_BE = frozenset(["is", "are", "'s", "was", "were", "went", "goes", "go", "g
                       "ended up", "has got to", "have got to", "might be", "could be", "would be", "can be"])
 NUMBER_OF = frozenset(["tell me the number of", "tell me the total number of", "what is the number of",
                        "what 's the number of", "what is the total number of", "what 's the total number of",
-                       "what number of", "give me the number of", "tell me the count of", "report the number of"])
+                       "what number of", "give me the number of", "tell me the count of", "report the number of",
+                       "count the number of", "count the total number of", "find out the number of",
+                       "check the number of", "figure out the number of", "work out the number of"])
 """Asking for a count by its number ("*tell me the number of* toys on the desk", "*what number of* people
 ..."): it means "tell me how many ..." (``NUMBER_MEANS``, a unit of counting when the library has it)."""
 NUMBER_MEANS = "tell me how many"

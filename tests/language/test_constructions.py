@@ -737,3 +737,10 @@ def test_a_question_asked_again_after_its_comma_asks_nothing_more(library: Libra
     assert [f for f, _ in frames("What's the largest snack in the pantry, can you tell me?", library)] == ["Tell"]
     assert [f for f, _ in frames("how many cups are on the table, could you tell me", library)] == ["Count"]
     assert [f for f, _ in frames("go to the kitchen, tell me", library)] == ["Go", "Tell"]   # no question before
+
+
+def test_counting_the_number_of_things_counts_the_things(library: Library) -> None:
+    assert frames("Count the number of people wearing glasses in the kitchen", library) == [
+        ("Count", {"theme": "person", "ground": "kitchen"})]
+    assert frames("find out the number of chairs in the office", library) == [
+        ("Count", {"theme": "chair", "ground": "office"})]

@@ -1136,6 +1136,7 @@ KNOW_WISH = Rule("wish to know", _know_wish, (
 NUMBER_OF_RULE = Rule("the number of", _number_of, (
     Example("Tell me the total number of snacks on the desk.", "Tell me the total number of", Tag.VERB),
     Example("What number of people in the bedroom wear white jackets?", "What number of", Tag.VERB),
+    Example("Count the number of people wearing glasses in the kitchen", "Count the number of", Tag.VERB),
 ), first_words(NUMBER_OF), "'tell me the number of X', 'what number of X': tell me how many X")
 LET_KNOW_RULE = Rule("let me know", _let_know, (
     Example("let me know when the laundry is done", "let", Tag.VERB),
