@@ -37,6 +37,7 @@ from seal_cli.language.english import (
     PREPOSITIONS,
     SEPARATOR_WORDS,
     SUBJECTS,
+    SUBORDINATORS,
     TIME_WORDS,
 )
 from seal_cli.language.morphology import (
@@ -166,7 +167,8 @@ def _stands_alone(words: Sequence[Word], j: int) -> bool:
     if after in ("that", "which") and j + 2 < len(words) and words[j + 2].lower in BE_WORDS:
         return True            # "turn the lamp on *that is* on the table": a relative clause of the noun before
     return after in (",", ".", "!", "?", ";", "please") or after in PREPOSITIONS or after in SEPARATOR_WORDS or \
-        after in BECAUSE or "'" in after and after.split("'")[0] in SUBJECTS     # "turn it off *it's* too loud"
+        after in BECAUSE or "'" in after and after.split("'")[0] in SUBJECTS or \
+        match_phrase(words, j + 1, SUBORDINATORS) > 0     # "turn it off *it's* too loud", "switch it off *when* ..."
 
 
 def _result_words(library: Library) -> dict[str, tuple[str, str]]:

@@ -744,3 +744,8 @@ def test_counting_the_number_of_things_counts_the_things(library: Library) -> No
         ("Count", {"theme": "person", "ground": "kitchen"})]
     assert frames("find out the number of chairs in the office", library) == [
         ("Count", {"theme": "chair", "ground": "office"})]
+
+
+def test_a_split_particle_before_a_condition(library: Library) -> None:
+    assert frames("switch the oven off when the timer rings", library) == [("ToggleOff", {"theme": "oven"})]
+    assert frames("turn the lamp on if it gets dark", library) == [("ToggleOn", {"theme": "lamp"})]
