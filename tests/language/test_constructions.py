@@ -749,3 +749,9 @@ def test_counting_the_number_of_things_counts_the_things(library: Library) -> No
 def test_a_split_particle_before_a_condition(library: Library) -> None:
     assert frames("switch the oven off when the timer rings", library) == [("ToggleOff", {"theme": "oven"})]
     assert frames("turn the lamp on if it gets dark", library) == [("ToggleOn", {"theme": "lamp"})]
+
+
+def test_left_after_the_thing_a_question_asks_about_says_it_remains(library: Library) -> None:
+    assert texts("is there any bread left?", library) == [("Find", {"theme": "bread"})]
+    assert frames("are there any eggs left in the fridge", library) == [("Find", {"theme": "egg", "ground": "fridge"})]
+    assert frames("is there a cup on the left", library) == [("Find", {"theme": "cup", "ground": "left"})]

@@ -88,6 +88,7 @@ INSIDE: tuple[Rule, ...] = (
     requests.KNOW_AFTER_LET,
     requests.STATE_ASKED,
     requests.WHETHER_BE,
+    requests.REMAINING,
     requests.WHERE_BE_DROPPED,
     requests.ENSURED_STATE,
     requests.WISH_DROPPED,

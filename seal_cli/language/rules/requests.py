@@ -471,6 +471,22 @@ def _found_out(s: State, i: int) -> Match | None:
                  expect=False, verb=QUESTION_MEANS, using=False)
 
 
+_REMAINING = frozenset(["left", "remaining"])
+_ASKS_WHAT_IS = frozenset([WHERE_MEANS, NUMBER_MEANS, "how many"])
+
+
+def _remaining(s: State, i: int) -> Match | None:
+    """"Is there any bread *left*?", "are there any eggs left in the fridge": after the thing a question asks
+    about, "left" says it remains — no head of the phrase (the bread is what to find); dropped."""
+    if s.verb_index < 0 or s.out[s.verb_index].info not in _ASKS_WHAT_IS or s.prev_tag() != Tag.WORD or \
+            s.out[-1].lower in _REMAINING:
+        return None
+    nxt = s.next_lower(i)
+    if nxt and nxt not in END_MARKS and nxt not in (",", ";") and nxt not in PREPOSITIONS:
+        return None
+    return Match(1)
+
+
 def _whether_be(s: State, i: int) -> Match | None:
     if s.verb_index < 0 or s.out[s.verb_index].info != WHERE_MEANS or \
             s.out[s.verb_index].lower.split()[-1] not in CHECK_WHETHER[1] or \
@@ -1097,6 +1113,10 @@ FOUND_OUT_RULE = Rule("find out who", _found_out, (
     Example("Find out who is in the hall.", "who is in the hall", Tag.SAID),
     Example("go to the hall and see who is there", "see", Tag.VERB),
 ), first_words(CHECK_WHETHER[0]), "'find out who ...', 'check what ...': tell me who ...")
+REMAINING = Rule("what is left", _remaining, (
+    Example("is there any bread left?", "left", ""),
+    Example("are there any eggs left in the fridge", "left", ""),
+), _REMAINING, "'left' after the thing a question asks about: it remains, dropped")
 WHETHER_BE = Rule("is, after see if X", _whether_be, (
     Example("see if the cat is in the garden", "is", ""),
 ), _WHETHER_IS, "the 'is' of 'see if X is in Y', dropped: 'see if' was read as 'find'")
