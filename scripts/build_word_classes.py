@@ -130,16 +130,6 @@ def labelled_conjunct(phrase: Phrase, label: str) -> Phrase | None:
     return named[0] if len(named) == 1 else phrase
 
 
-def names_another_field(phrase: Phrase, label: str, row: dict[str, str]) -> bool:
-    """Whether the phrase read for a field names, by the rules, the class another field of the same task is
-    labelled with: "move a mug from the TV stand to the counter", labelled object Pen and movable receptacle
-    Mug, says the mug and leaves the pen unsaid, so its "mug" is no evidence that people call a pen a mug
-    (counted, it made "the mug" a pen in bedrooms that hold both). Such a phrase is not counted."""
-    if phrase.cls is None or class_key(phrase.cls) == class_key(label):
-        return False
-    return class_key(phrase.cls) in {class_key(row[k]) for k in LABELS if row.get(k)}
-
-
 Counts = dict[str, Counter[str]]
 Context = dict[str, dict[str, Counter[str]]]
 Said = tuple[tuple[str, ...], str, frozenset[str]]
@@ -173,8 +163,7 @@ def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
             said = unsaid_wording("Place", "goal", places[-1].lexical_unit)
             counts.setdefault(said, Counter())[row["receptacle"]] += 1
             seen.setdefault(said, Counter()).update(scenes.get(row["floor_plan"], ()))
-        found = [(phrase, label) for phrase, label in fields(parse, row) if not names_another_field(phrase, label, row)]
-        for phrase, label in found:
+        for phrase, label in fields(parse, row):
             if label == row["object"] and phrase.plural and phrase.quantity is None and not phrase.conjuncts \
                     and not {"two", "both"} & set((phrase.text or "").lower().split()):
                 lemmas = wording(phrase)        # a plural object: one thing meant, or several?

@@ -59,18 +59,6 @@ def test_a_missing_data_folder_is_named(tmp_path: Path) -> None:
     assert str(tmp_path / "alfred" / "goals_train.tsv") in done.stderr and "Traceback" not in done.stderr
 
 
-def test_a_phrase_that_names_another_field_s_class_is_not_counted() -> None:
-    from seal_cli.language.values import Phrase
-
-    names_another = builder().names_another_field
-    row = {"object": "Pen", "receptacle": "CounterTop", "mrecep": "Mug", "toggle": ""}
-    mug = Phrase("a mug", "mug", "Mug")
-    assert names_another(mug, "Pen", row)                        # the mug is the stack's container, the pen unsaid
-    assert not names_another(mug, "Mug", row)                    # the mug's own field
-    assert not names_another(Phrase("a cup", "cup", "Cup"), "Pen", row)     # another class: what people call it
-    assert not names_another(Phrase("a thing", "thing"), "Pen", row)        # nothing the rules ground
-
-
 def test_train_trials_or_whole_floor_plans_are_held_out() -> None:
     held_out = builder().held_out
     rows = [{"task_id": f"trial_{k}", "floor_plan": f"FloorPlan{k % 30}"} for k in range(600)]
