@@ -407,6 +407,14 @@ def dump(data: dict[str, object]) -> str:
     return text + "\n}\n"
 
 
+def held_out(rows: Sequence[dict[str, str]], fraction: float, unit: str = "trials") -> set[str]:
+    """The task ids held out for ``--dev``: a ``fraction`` of the trials, or of the floor plans (``unit``
+    "floor-plans": every trial of a held-out floor plan, so that no room of theirs was fitted on, as on the
+    unseen split), chosen by a hash of the trial id or the floor plan's name."""
+    key = "task_id" if unit == "trials" else "floor_plan"
+    return {r["task_id"] for r in rows if zlib.crc32(r[key].encode()) % 1000 < fraction * 1000}
+
+
 def read_rows(path: Path) -> list[dict[str, str]]:
     with path.open(newline="") as handle:
         return list(csv.DictReader(handle, delimiter="\t"))
@@ -463,6 +471,9 @@ def main() -> int:
     ap.add_argument("--out", type=Path, default=OUT)
     ap.add_argument("--check", action="store_true", help="compare with the shipped table instead of writing it")
     ap.add_argument("--dev", type=float, default=0.0, help="hold out this fraction of train trials and score it")
+    ap.add_argument("--hold-out", choices=("trials", "floor-plans"), default="trials",
+                    help="with --dev: hold out trials (of floor plans the fit also saw, as valid_seen) or whole floor "
+                         "plans (none of whose rooms the fit saw, as the unseen split)")
     ap.add_argument("--min-support", type=int, nargs="*", default=[MIN_SUPPORT])
     ap.add_argument("--min-ratio", type=float, nargs="*", default=[MIN_RATIO])
     ap.add_argument("--context-weight", type=float, nargs="*", default=[CONTEXT_WEIGHT])
@@ -481,6 +492,8 @@ def main() -> int:
     ap.add_argument("--errors-of", default=None, help="with --dev: the table whose errors --errors writes "
                     "('naive Bayes', 'chooser l2 1.0'; default: the first chooser)")
     ap.add_argument("--scenes", action="store_true", help="with --dev: also score in each sentence's scene")
+    ap.add_argument("--scene-errors", type=Path, help="with --dev --scenes: write the held-out sentences scored wrong "
+                    "in their scenes (rates where present) here (TSV)")
     args = ap.parse_args()
 
     goals = args.data / "alfred" / "goals_train.tsv"
@@ -497,7 +510,7 @@ def main() -> int:
     if args.dev:
         args.errors_of = args.errors_of or f"chooser l2 {args.l2[0]}"
         errors: list[str] = []
-        held = {r["task_id"] for r in rows if zlib.crc32(r["task_id"].encode()) % 1000 < args.dev * 1000}
+        held = held_out(rows, args.dev, args.hold_out)
         fit_rows = [r for r in rows if r["task_id"] not in held]
         dev = [r for r in rows if r["task_id"] in held]
         module = scorer(args.data)
@@ -557,7 +570,11 @@ def main() -> int:
         print("in the scene's classes:")
         show("  rules alone", score(dev, lambda row: in_scene(row, rates=True, learned=False), module))
         show("  counts", score(dev, lambda row: in_scene(row, rates=False), module))
-        show("  rates where present", score(dev, lambda row: in_scene(row, rates=True), module))
+        wrong: list[str] = []
+        show("  rates where present", score(dev, lambda row: in_scene(row, rates=True), module, wrong))
+        if args.scene_errors is not None:
+            args.scene_errors.write_text("".join(line + "\n" for line in wrong))
+            print(f"wrote {args.scene_errors} ({len(wrong)} sentences scored wrong in their scenes)")
         return 0
 
     source = (f"ALFRED train goals ({goals.name}: {len(rows)} human goal sentences with their task labels), "

@@ -57,3 +57,14 @@ def test_a_missing_data_folder_is_named(tmp_path: Path) -> None:
                           capture_output=True, text=True, timeout=60)
     assert done.returncode == 1
     assert str(tmp_path / "alfred" / "goals_train.tsv") in done.stderr and "Traceback" not in done.stderr
+
+
+def test_train_trials_or_whole_floor_plans_are_held_out() -> None:
+    held_out = builder().held_out
+    rows = [{"task_id": f"trial_{k}", "floor_plan": f"FloorPlan{k % 30}"} for k in range(600)]
+    trials = held_out(rows, 0.2)
+    plans = held_out(rows, 0.2, "floor-plans")
+    assert 60 < len(trials) < 180 and 0 < len(plans) < 600
+    fitted = {r["floor_plan"] for r in rows if r["task_id"] not in plans}
+    assert not fitted & {r["floor_plan"] for r in rows if r["task_id"] in plans}     # no room seen on both sides
+    assert fitted & {r["floor_plan"] for r in rows if r["task_id"] in trials}       # held-out trials share rooms
