@@ -17,7 +17,8 @@ SHIPPED = Path(__file__).resolve().parent / "verb_usage.tsv"
 VERB_SHARE = 0.6
 """How likely a form must be used as a verb to be read as one where nothing else tells (:func:`mostly_verb`):
 "wait" 0.969, "dance" 0.610 are; "pepper" 0.500, "fork" 0.235, "plate" 0.030 are not. Chosen on every corpus we
-have (docs/language.md, words14): 0.5 to 0.6 change the same parses."""
+have (docs/language.md, words14): 0.5 to 0.8 change the same parses there; 0.6 keeps "pepper" (0.500) a noun and
+"dance" (0.610) a verb."""
 MIN_VERB_TAGS = 1
 """How often the form must have been seen used as a verb (:func:`verb_tags`): a form never tagged has a share
 from its numbers of senses only ("the toilet paper and *spool*": 0.667, never tagged)."""
