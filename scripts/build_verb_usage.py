@@ -15,7 +15,7 @@ Then, with ``t`` the tag counts of the lemmas' senses and ``n`` their numbers of
     P(verb | form) = (t_verb + ALPHA * n_verb) / (t_all + ALPHA * n_all)
 
 where ``all`` sums nouns, verbs, adjectives and adverbs: each sense counts ALPHA times as if tagged, so a form
-whose senses were never tagged ("pepper" the noun: five senses, none tagged; the verb two tags) is judged by
+whose senses were never tagged ("pepper" the noun: four senses, none tagged; the verb two tags) is judged by
 how many senses it has of each kind rather than by one or two tags. A form is written when it is one word of
 lower-case letters and has a verb sense, with the probability to three places and the two tag counts; the data
 itself (WordNet's files) is read only here, never by the parser. ``--check`` exits 1 when the shipped file
