@@ -71,6 +71,9 @@ SEPARATOR_WORDS = frozenset(["and", "then", ",", ";", ":", "after that", "afterw
                              "when you've done that", "when you have done that", "once that's done",
                              "once that is done"])
 AND_WORDS = frozenset(["and", "as well as", "plus"])
+VERB_JOINTS = frozenset(["and", "then", ","])
+"""Joints after which a bare word used mostly as a verb starts a clause of its own ("go to the kitchen *and* wait
+there"; rule ``verb after a joint``)."""
 ADDITIVES = frozenset(["too", "as well", "also"])
 """"..., and the cereal *too*", "and the fork *as well*": a noun phrase with one of these ending its clause after a
 separator is one more object of the clause before's verb, said again (a clause of its own), never a conjunct of
@@ -379,3 +382,9 @@ def is_room_word(words: Sequence[str]) -> bool:
 
 ROUTE_NOUNS = frozenset({"way", "route", "path"})
 """Nouns naming the route to a place, not a thing: "show them *the way* to the kitchen" leads them there."""
+
+
+VERB_TAKES = (NP_OPENERS | PRONOUNS | PARTICLES | END_MARKS | frozenset(["please"])
+              | frozenset(w for w in HERE_WORDS if " " not in w) | frozenset(p for p in PREPOSITIONS if " " not in p))
+"""One-word openers of what a verb takes after it: an object (a determiner, a possessive, a pronoun), "here" or
+"there", "please", a preposition or a particle, or the end of the sentence ("and *wait there*", "and *fold it*")."""

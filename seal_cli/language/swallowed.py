@@ -13,6 +13,11 @@ begins one of the library's lexical units and, in the command, it is said as a v
 * a participle before an object pronoun: "a fireplace *taking it* to the table" (but "a plate
   *holding a candle*" says what the plate holds);
 
+or, whether the library lists it or not, a bare word used mostly as a verb
+(:func:`~seal_cli.language.verb_usage.mostly_verb`, from WordNet's tag counts) in its base form right after "and",
+"then" or "," and before what a verb takes or the end ("the kitchen and *wait there*": a verb read as a noun of
+a list; "the cup and *plate*" is a list);
+
 and never after a determiner or a possessive ("the *hand* soap": a noun) or a subject ("where *you
 found* them" says where, it asks nothing).
 
@@ -25,10 +30,12 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from seal_cli.language.english import DETERMINERS, NP_OPENERS, OBJECT_PRONOUNS, SUBJECTS
+from seal_cli.language.english import DETERMINERS, NP_OPENERS, OBJECT_PRONOUNS, SUBJECTS, VERB_JOINTS, VERB_TAKES
 from seal_cli.language.lexicon import Lexicon, Word
 from seal_cli.language.morphology import verb_lemma
+from seal_cli.language.state import CLOSED
 from seal_cli.language.values import Parse
+from seal_cli.language.verb_usage import mostly_verb
 
 __all__ = ["Swallowed", "swallowed", "verb_at"]
 
@@ -77,6 +84,9 @@ def verb_at(words: Sequence[Word], k: int, lexicon: Lexicon, things: frozenset[s
     before = words[k - 1].lower if k > 0 else ""
     after = words[k + 1] if k + 1 < len(words) else None
     then = after.lower if after is not None else ""
+    if before in VERB_JOINTS and (after is None or then in VERB_TAKES) and \
+            _verb_after_joint(words[k], things, lexicon):
+        return True                      # "go to the kitchen and *wait* there"
     starts_np = then in _NOUN_PHRASE_STARTS or after is not None and after.text[:1].isupper()
     if before != "to" and not starts_np and then not in OBJECT_PRONOUNS or before in _NO_VERB_AFTER:
         return False                     # no sign of a verb (the cheap tests first: most words stop here)
@@ -87,3 +97,11 @@ def verb_at(words: Sequence[Word], k: int, lexicon: Lexicon, things: frozenset[s
     if low != lemma:                     # "a fireplace *taking it* to the table" does something; "a plate
         return low.endswith("ing") and then in OBJECT_PRONOUNS   # *holding a* candle" says what it has;
     return before == "to" or starts_np   # "washed *sliced* Apple" is a result said before its noun
+
+
+def _verb_after_joint(word: Word, things: frozenset[str], lexicon: Lexicon) -> bool:
+    """Whether a word after "and", "then" or "," is a bare verb's base form (mostly used as one, no thing the
+    library knows, no closed-class word), said as the tagger's rule ``verb after a joint`` reads it."""
+    low = word.lower
+    return low.isalpha() and not word.text[:1].isupper() and low not in CLOSED and low not in things and \
+        low not in lexicon.things and verb_lemma(low) == low and mostly_verb(low)

@@ -26,6 +26,8 @@ def _one_element(text: str, frame: str, role: str, said: str) -> Parse:
     ("meet Ken by the desk escort him out", "the desk escort", "escort"),      # an imperative before its object
     ("grab a mug from the shelf bring it here", "the shelf bring it", "bring"),
     ("take a cup from the sink handing it to Ana", "the sink handing it", "handing"),   # a participle, its object
+    ("go to the kitchen and wait there", "the kitchen and wait there", "wait"),   # mostly a verb, after "and"
+    ("go to the hall and dance", "the hall and dance", "dance"),                 # ... before the end
 ])
 def test_a_verb_in_an_element_is_found(library: Library, text: str, said: str, verb: str) -> None:
     parse = _one_element(text, "Go", "goal", said)
@@ -39,6 +41,9 @@ def test_a_verb_in_an_element_is_found(library: Library, text: str, said: str, v
     ("put the keys back where you found them", "where you found them"),   # a verb with a subject says where
     ("bring me a washed sliced pear", "a washed sliced pear"),            # results said before the noun
     ("go to the light switch", "the light switch"),
+    ("bring the cup and plate", "the cup and plate"),                    # mostly a noun after "and": a list
+    ("bring the salt and pepper to me", "the salt and pepper"),
+    ("go to the kitchen and Wait there", "the kitchen and Wait there"),  # a name, not a verb
 ])
 def test_nouns_participles_and_subjects_verbs_are_no_swallowed_verbs(library: Library, text: str, said: str) -> None:
     parse = _one_element(text, "Place", "theme", said)
@@ -111,3 +116,28 @@ def test_the_command_line_reports_a_refused_one_as_an_error_object(library: Libr
     assert result.exit_code == 1
     error = json.loads(result.stdout)["error"]
     assert error["column"] == text.index("handing") + 1 and "'handing' is a verb inside the source" in error["message"]
+
+
+@pytest.mark.parametrize(("text", "verb"), [
+    ("go to the kitchen and wait there", "wait"),
+    ("take the cup and dance", "dance"),
+    ("grab the towel, and kneel down", "kneel"),
+    ("go to the door and knock", "knock"),
+])
+def test_a_verb_after_and_is_a_clause_and_its_unknown_verb_an_error(library: Library, text: str, verb: str) -> None:
+    with pytest.raises(CommandError) as raised:
+        parse_command(text, library)
+    assert f"unknown verb {verb!r}" in raised.value.message and raised.value.column == text.index(verb) + 1
+
+
+@pytest.mark.parametrize(("text", "theme"), [
+    ("bring the cup and plate", ["cup", "plate"]),
+    ("bring the salt and pepper", ["salt", "pepper"]),
+    ("take a knife and fork", ["knife", "fork"]),
+    ("bring me fish and chips", ["fish", "chip"]),
+    ("bring the bread and butter", ["bread", "butter"]),
+])
+def test_nouns_after_and_stay_a_list(library: Library, text: str, theme: list[str]) -> None:
+    (frame,) = parse_command(text, library).frames
+    phrase = frame.elements["theme"]
+    assert [c.head for c in phrase.conjuncts] == theme

@@ -112,6 +112,7 @@ INSIDE: tuple[Rule, ...] = (
     requests.FRONTED_END,
     statements.REMARK_AFTER,
     clauses.COMMA_RELATIVE,
+    clauses.VERB_AFTER_JOINT,
     clauses.SEPARATOR,
     politeness.TAG_QUESTION,
     politeness.THANKS,

@@ -5,17 +5,21 @@ from __future__ import annotations
 
 from seal_cli.language.english import (
     END_MARKS,
+    HERE_WORDS,
     NP_OPENERS,
     PARTICLES,
     PERSON_PRONOUNS,
     PREPOSITIONS,
     SEPARATOR_WORDS,
+    VERB_JOINTS,
+    VERB_TAKES,
 )
 from seal_cli.language.morphology import is_adjective, parts_of_speech, verb_lemma
 from seal_cli.language.rule import AFTER_SEP, Example, Match, Rule
 from seal_cli.language.state import CLOSED, INDEFINITE, REL_FIRST, SEP_FIRST, SUB_FIRST, State, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
+from seal_cli.language.verb_usage import mostly_verb
 
 
 def _end_mark(s: State, i: int) -> Match | None:
@@ -226,6 +230,41 @@ def _unknown_unjoined(s: State, i: int) -> Match | None:
     return Match(0, (Word("", words[i].start, words[i].start, Tag.SEP),), expect=True)
 
 
+def _verb_after_joint(s: State, i: int) -> Match | None:
+    """After "and", "then" or "," inside a clause, a bare word (no determiner) that is mostly used as a verb, in its
+    base form, and names no thing the library knows, before what a verb takes (a determiner, a pronoun, "here" or
+    "there", "please", a preposition or a particle, or the end of the command): a clause of its own ("go to the
+    kitchen and *wait* there", "take the cup and *dance*"), so its verb is a frame's or reported as unknown, never
+    read as a noun of a list ("bring the cup and *plate*", "the salt and *pepper*")."""
+    words = s.words
+    n = match_phrase(words, i, SEPARATOR_WORDS)
+    if not n or s.verb_index < 0 or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.HERE, Tag.PARTICLE):
+        return None
+    j = i + n
+    while j < len(words) and match_phrase(words, j, SEPARATOR_WORDS):
+        j += match_phrase(words, j, SEPARATOR_WORDS)
+    if j >= len(words) or not all(w.lower in VERB_JOINTS for w in words[i:j]):
+        return None
+    w = words[j]
+    low = w.lower
+    if not low.isalpha() or capitalised(w) or low in CLOSED or low in s.lexicon.things or verb_lemma(low) != low or \
+            not mostly_verb(low) or s.verb_after(j):
+        return None                       # a verb of the library: the separator's ("and *put* it on the table")
+    k = j + 1
+    if not (k >= len(words) or words[k].lower in VERB_TAKES or match_phrase(words, k, HERE_WORDS) or
+            match_phrase(words, k, PREPOSITIONS)):
+        return None
+    return Match(j - i, (merge(words, i, j - i, Tag.SEP),), expect=True)
+
+
+VERB_AFTER_JOINT = Rule("verb after a joint", _verb_after_joint, (
+    Example("go to the kitchen and wait there", "wait", Tag.WORD),
+    Example("take the cup and dance", "dance", Tag.WORD),
+    Example("grab the towel, and kneel down", "kneel", Tag.WORD),
+    Example("go to the sofa and sit", "sit", Tag.WORD),
+    Example("grab the mug then sit down", "sit", Tag.WORD),
+), frozenset(VERB_JOINTS), "a bare word mostly used as a verb after 'and', 'then' or ',', before what a verb takes: "
+   "a clause of its own, not a noun of a list")
 UNJOINED = Rule("clause without a joint", _unjoined, (
     Example("meet Jo at the counter escort her back", "escort", Tag.VERB),
     Example("pick up the cup bring it to me", "bring", Tag.VERB),
