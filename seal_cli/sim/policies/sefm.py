@@ -8,6 +8,7 @@ is measured against are registered beside it in :data:`seal_cli.sim.policies.POL
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -37,6 +38,116 @@ class Look:
     metres: float
     view: View
     reveals: np.ndarray | None = None
+
+
+@dataclass
+class _TourModel:
+    """One thing searched for through a few looks (:meth:`SeFMPolicy._first_of_tour`): ``here`` the metres
+    from the robot to each look, ``between`` from look to look, ``R[k, c]`` the belief look k reveals of
+    column c (a place, or a look's own mass), ``ON[k, c]`` the (weighted) drive on when look k is the first
+    to reveal column c; ``scale`` what a look costs beside its drive."""
+
+    here: np.ndarray
+    between: np.ndarray
+    R: np.ndarray
+    ON: np.ndarray
+    scale: float
+    by_column: bool = False
+    way: dict[tuple[int, int], list[tuple[float, np.ndarray, float]]] | None = None
+    """Per drive (from look a, or -1 the robot, to look b), the looks the robot takes on the way: metres
+    from a, which columns that look reveals (a place within reach and open), and the drive on from there."""
+    mass: np.ndarray | None = None
+    """Per column, the belief a look on the way reveals of it (with :attr:`way`)."""
+
+    def _legs(self, prev: int, k: int) -> list[tuple[float, np.ndarray, float]]:
+        return self.way.get((prev, k), []) if self.way is not None else []
+
+    def cost(self, order: Sequence[int]) -> float:
+        """E = Σ_k (d(v_k-1, v_k) + scale) · (1 − Σ_j<k p_j) + Σ_k p_k · on_k."""
+        R = self.R
+        seen = np.zeros(R.shape[1], dtype=bool)
+        left, total, prev = 1.0, 0.0, -1
+        for k in order:
+            d = self.here[k] if prev < 0 else self.between[prev, k]
+            done = 0.0
+            for at, cols, on in self._legs(prev, k):   # a look on the way, and the drive stops when it finds it
+                total += (at - done) * left
+                done = at
+                gain = min(float(self.mass[cols & ~seen].sum()) if self.mass is not None else 0.0, left)
+                seen |= cols
+                total += gain * on
+                left = max(0.0, left - gain)
+            total += (d - done + self.scale) * left
+            new = np.where(seen, 0.0, R[k])
+            found = float(new.sum())
+            gain = min(found, left)
+            seen |= R[k] > 0
+            if not self.by_column:
+                total += gain * self.ON[k, 0]
+            elif found > 0:
+                total += gain * float(new @ self.ON[k]) / found
+            left = max(0.0, left - gain)
+            prev = k
+        return round(total, 6)   # equal to rounding: the same order for SeFM and object-only
+
+    def outcomes(self, order: Sequence[int]) -> tuple[np.ndarray, np.ndarray]:
+        """Where the thing may be under the model, and the metres the order costs if it is there: per column,
+        its mass as first revealed and the drives to the look that reveals it plus the drive on from there;
+        last, the belief no look reveals, which costs the whole tour. The masses' mean of the costs is
+        :meth:`cost` (but where the looks reveal more than the whole belief)."""
+        R = self.R
+        mass = np.zeros(R.shape[1] + 1)
+        metres = np.zeros(R.shape[1] + 1)
+        seen = np.zeros(R.shape[1], dtype=bool)
+        driven, prev = 0.0, -1
+        for k in order:
+            for at, cols, on in self._legs(prev, k):
+                new = cols & ~seen
+                if self.mass is not None:
+                    mass[:-1][new] = self.mass[new]
+                metres[:-1][new] = driven + at + on
+                seen |= cols
+            driven += (self.here[k] if prev < 0 else self.between[prev, k]) + self.scale
+            new = (R[k] > 0) & ~seen
+            mass[:-1][new] = R[k][new]
+            metres[:-1][new] = driven + self.ON[k][new]
+            seen |= R[k] > 0
+            prev = k
+        mass[-1] = max(0.0, 1.0 - float(mass[:-1].sum()))
+        metres[-1] = driven
+        return mass, metres
+
+    def best(self, first: int | None = None) -> tuple[list[int], float]:
+        """The order of least :meth:`cost`: built greedily from where the robot is (the most new belief per
+        metre), then improved by moving one look at a time to wherever E falls most (or-opt); with ``first``,
+        the best that starts with that look."""
+        n, R = len(self.here), self.R
+        order: list[int] = [first] if first is not None else []
+        todo = set(range(n)) - set(order)
+        revealed = R[first] > 0 if first is not None else np.zeros(R.shape[1], dtype=bool)
+        while todo:   # greedy from where the robot is: the most new belief per metre
+            prev = order[-1] if order else -1
+
+            def ratio(k: int, prev: int = prev, revealed: np.ndarray = revealed) -> float:
+                gain = float(R[k][~revealed].sum())
+                return gain / ((self.here[k] if prev < 0 else self.between[prev, k]) + self.scale)
+
+            k = max(sorted(todo), key=ratio)
+            order.append(k)
+            todo.remove(k)
+            revealed = revealed | (R[k] > 0)
+        current = self.cost(order)
+        fixed = 0 if first is None else 1
+        for _ in range(4 * n):   # or-opt: move one look elsewhere while that shortens the expected search
+            moves = [(self.cost(o), o) for i in range(fixed, n) for j in range(fixed, n) if i != j
+                     for o in [order[:i] + order[i + 1:]] for o in [o[:j] + [order[i]] + o[j:]]]
+            if not moves:
+                break
+            value, candidate = min(moves, key=lambda m: m[0])
+            if value >= current - 1e-9:
+                break
+            current, order = value, candidate
+        return order, current
 
 
 class SeFMPolicy(Policy):
@@ -101,6 +212,11 @@ class SeFMPolicy(Policy):
         self._blind: str | None = None
         """The thing whose last look was chosen with the plan's next stop unseen (:meth:`_reconsider_in_room`)."""
         self._things: set[str] = set()
+        self.departures: list[dict[str, Any]] = []
+        self._ways: dict[tuple[Cell, Cell], list[tuple[float, Cell]]] = {}
+        self._reach_cache: dict[tuple[Cell, str], bool] = {}
+        """Each choice in one room where SeFM's best first look was not object-only's: the gap, both orders'
+        outcomes (:meth:`_TourModel.outcomes`) and whether SeFM departed (read by tracing scripts)."""
         self._chosen: tuple[Cell, str, Any] | None = None
         """A choice made on the drive (:meth:`reconsider`) that stopped it: where, for what, the decision."""
         self.key: tuple[str, ...] = ()
@@ -567,12 +683,22 @@ class SeFMPolicy(Policy):
             best = [*best, alone]
             fields.setdefault(alone.view.cell, agent.grid.distances(alone.view.cell))
         rows = self._acted_rows(agent, best, fields, then) if self.lie_onward else None
-        first, expected = self._tour(agent, best, fields, then, rows=rows)
-        if first is alone:
-            return first.view
-        _, deferred = self._tour(agent, best, fields, then, first=next(k for k, o in enumerate(best) if o is alone),
-                                 rows=rows)
-        return alone.view if deferred - expected <= self.defer_m else first.view
+        model = self._tour_model(best, fields, then, rows)
+        if self.see_on_the_way and then is not None:
+            model = self._on_the_way(agent, best, model, then)
+        order, expected = model.best()
+        if best[order[0]] is alone:
+            return alone.view
+        other, deferred = model.best(first=next(k for k, o in enumerate(best) if o is alone))
+        departs = self._departs(model, order, other, deferred - expected)
+        self.departures.append({"target": target, "gap": round(deferred - expected, 4),
+                                "outcomes": (model.outcomes(order), model.outcomes(other)), "departs": departs})
+        return best[order[0]].view if departs else alone.view
+
+    def _departs(self, model: _TourModel, order: Sequence[int], other: Sequence[int], gap: float) -> bool:
+        """Whether SeFM's best order ``order`` is taken over ``other``, the best that starts with object-only's look:
+        the expected saving ``gap`` exceeds :attr:`defer_m`."""
+        return self.defer_m is not None and gap > self.defer_m
 
     defer_m: float | None = 0.25
     """SeFM's first look in one room is object-only's under the same belief (the best tour by belief per metre,
@@ -658,9 +784,16 @@ class SeFMPolicy(Policy):
         ``then``, the drive on from where the thing is found to the plan's next stop, SeFM's; with ``rows``,
         per look and place revealed, the drive on from where on that place the thing would lie,
         :meth:`_acted_rows`; ``first``: the best order that starts with that look)."""
-        n = len(best)
-        if n < 2:
+        if len(best) < 2:
             return best[0], 0.0
+        model = self._tour_model(best, fields, then, rows)
+        order, current = model.best(first)
+        return best[order[0]], current
+
+    def _tour_model(self, best: Sequence[Look], fields: dict[Cell, np.ndarray], then: np.ndarray | None,
+                    rows: dict[int, np.ndarray] | None = None) -> _TourModel:
+        """The expected-cost model of searching through ``best`` (:class:`_TourModel`)."""
+        n = len(best)
         here = np.array([o.metres for o in best])
         between = np.array([fields[o.view.cell][[b.view.cell[0] for b in best], [b.view.cell[1] for b in best]]
                             for o in best])
@@ -671,57 +804,92 @@ class SeFMPolicy(Policy):
                 R[k, width + k] = o.mass
             else:
                 R[k, : len(o.reveals)] = o.reveals
-
         on = np.array([float(then[o.view.cell]) for o in best]) if then is not None else np.zeros(n)
         on = np.where(np.isfinite(on), on, 0.0)
         ON = np.repeat(on[:, None], R.shape[1], axis=1)   # the drive on when look k is the first to reveal column c
         for k, row in (rows or {}).items():
             ON[k, : len(row)] = np.where(np.isfinite(row), row, on[k])
+        return _TourModel(here, between, R, self.onward * ON, self.distance_scale, by_column=bool(rows))
 
-        def cost(order: Sequence[int]) -> float:
-            seen = np.zeros(R.shape[1], dtype=bool)
-            left, total, prev = 1.0, 0.0, -1
-            for k in order:
-                d = here[k] if prev < 0 else between[prev, k]
-                total += (d + self.distance_scale) * left
-                new = np.where(seen, 0.0, R[k])
-                found = float(new.sum())
-                gain = min(found, left)
-                seen |= R[k] > 0
-                if not rows:
-                    total += self.onward * gain * on[k]
-                elif found > 0:
-                    total += self.onward * gain * float(new @ ON[k]) / found
-                left = max(0.0, left - gain)
-                prev = k
-            return round(total, 6)   # equal to rounding: the same order for SeFM and object-only
+    see_on_the_way = True
+    """SeFM's expected cost when it weighs its own first look against object-only's counts what the drives see
+    on the way (:meth:`_on_the_way`): the robot looks every metre of a drive, sees into or onto every open
+    place within reach of where it stands, and a search drive stops at the look that finds the thing. Off:
+    a drive reveals only what its last look does (earlier rounds)."""
 
-        order: list[int] = [first] if first is not None else []
-        todo = set(range(n)) - set(order)
-        revealed = R[first] > 0 if first is not None else np.zeros(R.shape[1], dtype=bool)
-        while todo:   # greedy from where the robot is: the most new belief per metre
-            prev = order[-1] if order else -1
+    def _on_the_way(self, agent: Agent, best: Sequence[Look], model: _TourModel, then: np.ndarray) -> _TourModel:
+        """``model`` with the looks every drive between ``best``'s looks (and from the robot) takes on the way,
+        and what each reveals: the places (not the floor) within the world's reach of it, open and holding
+        belief — the belief of a place is what the looks of ``best`` say it holds — with the drive on from
+        there. Paths are the grid's shortest ones, looks every :attr:`~seal_cli.sim.agent.Agent.look_every`
+        metres as :meth:`~seal_cli.sim.agent.Agent.drive_to` takes them."""
+        from dataclasses import replace
 
-            def ratio(k: int, prev: int = prev, revealed: np.ndarray = revealed) -> float:
-                gain = float(R[k][~revealed].sum())
-                return gain / ((here[k] if prev < 0 else between[prev, k]) + self.distance_scale)
+        places = self._places(agent)
+        width = model.R.shape[1]
+        mass = np.zeros(width)
+        for o in best:
+            if o.reveals is not None:
+                mass[: len(places)] = np.maximum(mass[: len(places)], o.reveals[: len(places)])
+        shut = np.array([self._shut(agent, p) for p in places], dtype=bool)
+        mass[: len(places)][shut] = 0.0
+        if not mass.any():
+            return model
+        live = np.flatnonzero(mass[: len(places)] > 0)
+        starts = [(-1, agent.robot_cell()), *((k, o.view.cell) for k, o in enumerate(best))]
+        way: dict[tuple[int, int], list[tuple[float, np.ndarray, float]]] = {}
+        for a, start in starts:
+            for b, o in enumerate(best):
+                if a == b or start == o.view.cell:
+                    continue
+                key = (start, o.view.cell)
+                if key not in self._ways:
+                    self._ways[key] = self._stops(agent, start, o.view.cell)
+                legs = []
+                for at, cell in self._stops_of(key):
+                    cols = np.zeros(width, dtype=bool)
+                    cols[live] = self._reach_at(agent, places, live, cell)
+                    if cols.any():
+                        on = float(then[cell]) if np.isfinite(then[cell]) else 0.0
+                        legs.append((at, cols, self.onward * on))
+                if legs:
+                    way[(a, b)] = legs
+        return replace(model, way=way, mass=mass)
 
-            k = max(sorted(todo), key=ratio)
-            order.append(k)
-            todo.remove(k)
-            revealed = revealed | (R[k] > 0)
-        current = cost(order)
-        fixed = 0 if first is None else 1
-        for _ in range(4 * n):   # or-opt: move one look elsewhere while that shortens the expected search
-            moves = [(cost(o), o) for i in range(fixed, n) for j in range(fixed, n) if i != j
-                     for o in [order[:i] + order[i + 1:]] for o in [o[:j] + [order[i]] + o[j:]]]
-            if not moves:
-                break
-            value, candidate = min(moves, key=lambda m: m[0])
-            if value >= current - 1e-9:
-                break
-            current, order = value, candidate
-        return best[order[0]], current
+    def _stops_of(self, key: tuple[Cell, Cell]) -> list[tuple[float, Cell]]:
+        return self._ways[key]
+
+    def _stops(self, agent: Agent, start: Cell, goal: Cell) -> list[tuple[float, Cell]]:
+        """Where a drive from ``start`` to ``goal`` looks on the way: (metres from ``start``, cell)."""
+        try:
+            path = agent.grid.path(start, goal)
+        except Exception:   # no path: the tour's drive tables say inf already
+            return []
+        out, metres, since = [], 0.0, 0.0
+        prev = agent.grid.point(path[0])
+        for cell in path[1:-1]:
+            p = agent.grid.point(cell)
+            step = math.dist(prev, p)
+            prev, metres, since = p, metres + step, since + step
+            if since >= agent.look_every:
+                out.append((metres, cell))
+                since = 0.0
+        return out
+
+    def _reach_at(self, agent: Agent, places: Sequence[Known], live: np.ndarray, cell: Cell) -> np.ndarray:
+        """Which of the places ``live`` (indices into ``places``) the robot can act on from ``cell`` (kept per cell
+        and place)."""
+        x, y = agent.grid.point(cell)
+        out = np.zeros(len(live), dtype=bool)
+        for i, j in enumerate(live):
+            place = places[int(j)]
+            key = (cell, place.id)
+            if key not in self._reach_cache:
+                near = (math.dist((x, y), place.at) <= agent.world.reach_of(place.id) + 1e-9
+                        or any(math.dist((x, y), a) <= agent.world.access_tolerance + 1e-9 for a in place.access))
+                self._reach_cache[key] = near and agent.world.within_reach(place.id, (x, y, 0.0))
+            out[i] = self._reach_cache[key]
+        return out
 
     def _places(self, agent: Agent) -> list[Known]:
         """The places a look can reveal the contents of (not people, not things)."""

@@ -446,3 +446,52 @@ def test_a_look_chosen_with_the_next_stop_unseen_is_chosen_again_when_the_drive_
     off.reconsider_in_room = False
     assert stops(off, 0.0) is None
     assert stops(ObjectOnlyPolicy(particles=300), 0.0) is None
+
+
+def test_the_tour_model_s_outcomes_average_to_its_expected_cost() -> None:
+    """Per column, the mass a look first reveals and the metres the order costs if the thing is there (the
+    drives to that look, a look's cost each, and the drive on); what no look reveals costs the whole tour. Their
+    mean is the model's E."""
+    from seal_cli.sim.policies.sefm import _TourModel
+
+    R = np.array([[0.3, 0.2, 0.0], [0.0, 0.2, 0.4]])
+    ON = np.array([[1.0, 1.0, 1.0], [2.0, 2.0, 2.0]])
+    model = _TourModel(np.array([1.0, 3.0]), np.array([[0.0, 2.5], [2.5, 0.0]]), R, ON, 0.1)
+    for order in ([0, 1], [1, 0]):
+        mass, metres = model.outcomes(order)
+        assert mass.sum() == pytest.approx(1.0)
+        assert float(mass @ metres) == pytest.approx(model.cost(order))
+    mass, metres = model.outcomes([0, 1])
+    assert metres.tolist() == pytest.approx([1.1 + 1.0, 1.1 + 1.0, 1.1 + 2.6 + 2.0, 3.7])
+
+
+def test_a_drive_that_passes_a_place_within_reach_reveals_it_on_the_way(library: Library) -> None:
+    """The robot looks every metre of a drive and sees onto every open place within reach: the drive from the
+    west end to the cabinet at the east passes both shelves, and a thing on the first is found 1 m into it, not
+    after the 7 m the model of earlier rounds charged (the look at the end). So the tour that drives east first is
+    cheaper with the looks on the way counted, and a tour's order is weighed with them."""
+    from dataclasses import replace
+
+    scene = corridor(library, {"apple": {"shelf": 0.4, "cabinet": 0.4}})
+    policy = SeFMPolicy(particles=50)
+    agent = ready(library, scene, policy, [("Place", {"theme": "apple", "goal": "dining_table"})])
+    places = policy._places(agent)
+    ids = [p.id for p in places]
+
+    def look(x: float, place: str, mass: float) -> Look:
+        reveals = np.zeros(len(places))
+        reveals[ids.index(place)] = mass
+        cell = agent.grid.cell((x, 0.5))
+        return Look(mass, float(agent.distances()[cell]), View(cell, (x, 1.4)), reveals)
+
+    best = [look(1.0, "shelf_1", 0.4), look(7.0, "cabinet_2", 0.4)]
+    fields = {o.view.cell: agent.grid.distances(o.view.cell) for o in best}
+    then = policy._onward_field(agent, agent.known["table_1"])
+    plain = policy._tour_model(best, fields, then)
+    seeing = policy._on_the_way(agent, best, plain, then)
+    assert seeing.way is not None and (-1, 1) in seeing.way
+    at, cols, _ = seeing.way[(-1, 1)][0]
+    assert at == pytest.approx(1.0) and cols[ids.index("shelf_1")]
+    mass, metres = seeing.outcomes([1, 0])
+    assert metres[ids.index("shelf_1")] < 7.0 < replace(seeing, way=None).outcomes([1, 0])[1][ids.index("shelf_1")]
+    assert seeing.cost([1, 0]) < plain.cost([1, 0])
