@@ -44,15 +44,14 @@ class Look:
 class _TourModel:
     """One thing searched for through a few looks (:meth:`SeFMPolicy._first_of_tour`): ``here`` the metres
     from the robot to each look, ``between`` from look to look, ``R[k, c]`` the belief look k reveals of
-    column c (a place, or a look's own mass), ``ON[k, c]`` the (weighted) drive on when look k is the first
-    to reveal column c; ``scale`` what a look costs beside its drive."""
+    column c (a place, or a look's own mass), ``on[k]`` the (weighted) drive on from look k to the plan's next
+    stop; ``scale`` what a look costs beside its drive."""
 
     here: np.ndarray
     between: np.ndarray
     R: np.ndarray
-    ON: np.ndarray
+    on: np.ndarray
     scale: float
-    by_column: bool = False
     way: dict[tuple[int, int], list[tuple[float, np.ndarray, float]]] | None = None
     """Per drive (from look a, or -1 the robot, to look b), the looks the robot takes on the way: metres
     from a, which columns that look reveals (a place within reach and open), and the drive on from there."""
@@ -82,10 +81,7 @@ class _TourModel:
             found = float(new.sum())
             gain = min(found, left)
             seen |= R[k] > 0
-            if not self.by_column:
-                total += gain * self.ON[k, 0]
-            elif found > 0:
-                total += gain * float(new @ self.ON[k]) / found
+            total += gain * self.on[k]
             left = max(0.0, left - gain)
             prev = k
         return round(total, 6)   # equal to rounding: the same order for SeFM and object-only
@@ -110,7 +106,7 @@ class _TourModel:
             driven += (self.here[k] if prev < 0 else self.between[prev, k]) + self.scale
             new = (R[k] > 0) & ~seen
             mass[:-1][new] = R[k][new]
-            metres[:-1][new] = driven + self.ON[k][new]
+            metres[:-1][new] = driven + self.on[k]
             seen |= R[k] > 0
             prev = k
         mass[-1] = max(0.0, 1.0 - float(mass[:-1].sum()))
@@ -675,15 +671,13 @@ class SeFMPolicy(Policy):
         best = plain_best + [o for o in sorted(extra, key=lambda o: (-score(o), onward(o))) if o not in plain_best]
         best = best[: 2 * self.tour_views]
         if self.defer_m is None:
-            rows = self._acted_rows(agent, best, fields, then) if self.lie_onward else None
-            return self._tour(agent, best, fields, then, rows=rows)[0].view
+            return self._tour(agent, best, fields, then)[0].view
         # the look object-only's rule takes under this belief (or the one driven to), and what SeFM's cost says of it
         alone = self._tour(agent, plain_best, fields, None)[0] if incumbent is None else incumbent
         if not any(o is alone for o in best):
             best = [*best, alone]
             fields.setdefault(alone.view.cell, agent.grid.distances(alone.view.cell))
-        rows = self._acted_rows(agent, best, fields, then) if self.lie_onward else None
-        model = self._tour_model(best, fields, then, rows)
+        model = self._tour_model(best, fields, then)
         if self.see_on_the_way and then is not None:
             model = self._on_the_way(agent, best, model, then)
         order, expected = model.best()
@@ -708,90 +702,18 @@ class SeFMPolicy(Policy):
     sink) cannot draw the robot to a look beside it that the model values within a lattice step of
     object-only's. None: SeFM's best first look, whatever the margin (earlier rounds)."""
 
-    lie_onward = False
-    """SeFM's drive on from where the thing would lie on the place a look reveals, not from the look
-    (:meth:`_acted_rows`). Off: from the look, as earlier rounds. On, it was no shorter on ALFRED-2D's train
-    split (a stratified 1,050: −12.75 against −12.5 m beside object-only, 4 episodes longer against 5, 15
-    shorter against 19) and on valid_seen 0.006 m longer (docs/benchmarks.md, "This round (search11)")."""
-
-    lie_directions = 8
-    """The bearings from a place's pivot at which a thing on it is taken to lie, equally likely (the map does
-    not say which way a place runs)."""
-
-    lie_along = False
-    """A thing on a place lies along the side the place is used from — the line through its pivot square to
-    the way to its access pose (else its nearest free cell): a shelf or a sofa against a wall is used from
-    the front and runs along it (:meth:`_along`). Off: :attr:`lie_directions` bearings all round."""
-
-    @staticmethod
-    def _along(place: Known, pts: np.ndarray) -> np.ndarray:
-        """The two bearings along the side ``place`` is used from (rows of unit vectors)."""
-        at = np.asarray(place.at)
-        if place.access:
-            toward = np.asarray(place.access[0]) - at
-        else:
-            toward = pts[int(np.argmin(np.hypot(pts[:, 0] - at[0], pts[:, 1] - at[1])))] - at
-        norm = float(np.hypot(*toward))
-        if norm <= 1e-9:
-            return np.array([[1.0, 0.0], [-1.0, 0.0], [0.0, 1.0], [0.0, -1.0]])
-        t = np.array([-toward[1], toward[0]]) / norm
-        return np.array([t, -t])
-
-    def _acted_rows(self, agent: Agent, best: Sequence[Look], fields: dict[Cell, np.ndarray],
-                    then: np.ndarray | None) -> dict[int, np.ndarray] | None:
-        """Per look of ``best`` (by position), per place it reveals, the expected metres from the look to
-        finishing the plan's next stop when the thing is found on that place: the thing is acted on where it
-        lies, not where the robot looked from, so the drive on is, over where on the place it may lie, the
-        least of d(look, c) + on(c) over the cells c it can be acted on from (within the world's reach of it,
-        or at the place's own access pose) — on(look) itself when the look is one of them, more when the
-        thing lies beyond reach of the look (the far end of a sofa). Where it lies: at each of the scene's
-        learnt distances from the place's pivot (:attr:`~seal_cli.sim.agent.Scene.lie`, equally likely) in
-        each of :attr:`lie_directions` bearings. None: no such distances (the drive on from the look)."""
-        lie = agent.scene.lie
-        if then is None or not lie:
-            return None
-        places = self._places(agent)
-        pts, cells = agent.grid.free_points, agent.grid.free_cells
-        onward = then[cells[:, 0], cells[:, 1]]
-        angles = np.arange(self.lie_directions) * (2 * np.pi / self.lie_directions)
-        bearings = np.column_stack([np.cos(angles), np.sin(angles)])
-        rows: dict[int, np.ndarray] = {}
-        for k, o in enumerate(best):
-            if o.reveals is None or not np.isfinite(then[o.view.cell]):
-                continue
-            row = np.full(len(o.reveals), float(then[o.view.cell]))
-            total = fields[o.view.cell][cells[:, 0], cells[:, 1]] + onward
-            for j in np.flatnonzero(o.reveals[: len(places)] > 0):
-                place = places[int(j)]
-                far = lie.get(agent.world.items[place.id].key, ())
-                if not far:
-                    continue
-                ways = self._along(place, pts) if self.lie_along else bearings
-                at = np.asarray(place.at) + (np.asarray(far)[:, None, None] * ways[None, :, :]).reshape(-1, 2)
-                reach = agent.world.reach_of(place.id)
-                near = np.hypot(pts[None, :, 0] - at[:, 0, None], pts[None, :, 1] - at[:, 1, None]) <= reach + 1e-9
-                for a in place.access:
-                    near |= (np.hypot(pts[:, 0] - a[0], pts[:, 1] - a[1]) <= agent.world.access_tolerance)[None, :]
-                values = np.where(near, total[None, :], np.inf).min(axis=1)
-                values = np.where(np.isfinite(values), values, row[j])
-                row[j] = float(values.mean())
-            rows[k] = row
-        return rows
-
     def _tour(self, agent: Agent, best: Sequence[Look], fields: dict[Cell, np.ndarray], then: np.ndarray | None,
-              first: int | None = None, rows: dict[int, np.ndarray] | None = None) -> tuple[Look, float]:
+              first: int | None = None) -> tuple[Look, float]:
         """The first look of the shortest expected search through ``best``, and its expected cost (with
-        ``then``, the drive on from where the thing is found to the plan's next stop, SeFM's; with ``rows``,
-        per look and place revealed, the drive on from where on that place the thing would lie,
-        :meth:`_acted_rows`; ``first``: the best order that starts with that look)."""
+        ``then``, the drive on from where the thing is found to the plan's next stop, SeFM's; ``first``: the
+        best order that starts with that look)."""
         if len(best) < 2:
             return best[0], 0.0
-        model = self._tour_model(best, fields, then, rows)
+        model = self._tour_model(best, fields, then)
         order, current = model.best(first)
         return best[order[0]], current
 
-    def _tour_model(self, best: Sequence[Look], fields: dict[Cell, np.ndarray], then: np.ndarray | None,
-                    rows: dict[int, np.ndarray] | None = None) -> _TourModel:
+    def _tour_model(self, best: Sequence[Look], fields: dict[Cell, np.ndarray], then: np.ndarray | None) -> _TourModel:
         """The expected-cost model of searching through ``best`` (:class:`_TourModel`)."""
         n = len(best)
         here = np.array([o.metres for o in best])
@@ -806,10 +728,7 @@ class SeFMPolicy(Policy):
                 R[k, : len(o.reveals)] = o.reveals
         on = np.array([float(then[o.view.cell]) for o in best]) if then is not None else np.zeros(n)
         on = np.where(np.isfinite(on), on, 0.0)
-        ON = np.repeat(on[:, None], R.shape[1], axis=1)   # the drive on when look k is the first to reveal column c
-        for k, row in (rows or {}).items():
-            ON[k, : len(row)] = np.where(np.isfinite(row), row, on[k])
-        return _TourModel(here, between, R, self.onward * ON, self.distance_scale, by_column=bool(rows))
+        return _TourModel(here, between, R, self.onward * on, self.distance_scale)
 
     see_on_the_way = True
     """SeFM's expected cost when it weighs its own first look against object-only's counts what the drives see
