@@ -632,8 +632,9 @@ class SeFMPolicy(Policy):
         first look is object-only's — the first of the tour of the same looks with no drive on — unless the
         best order's E beats the best order that starts with object-only's look by more than :attr:`defer_m`.
         With ``incumbent`` (the look being driven to, :meth:`_reconsider_in_room`), that look stands in for
-        object-only's in the comparison.
-        Approximations: the looks are the best few, not all; what is seen on the way is not counted; the
+        object-only's in the comparison, and (:attr:`see_on_the_way`) both orders' E count what their drives
+        see on the way (:meth:`_on_the_way`); object-only's own order does not.
+        Approximations: the looks are the best few, not all; on the way, only places within reach; the
         belief the tour leaves unrevealed adds nothing to E; one instance."""
 
         ahead = self._ahead(agent, agent.class_of(target), agent.world.robot.pose[:2])[:1]
@@ -765,7 +766,7 @@ class SeFMPolicy(Policy):
                 if key not in self._ways:
                     self._ways[key] = self._stops(agent, start, o.view.cell)
                 legs = []
-                for at, cell in self._stops_of(key):
+                for at, cell in self._ways[key]:
                     cols = np.zeros(width, dtype=bool)
                     cols[live] = self._reach_at(agent, places, live, cell)
                     if cols.any():
@@ -775,14 +776,13 @@ class SeFMPolicy(Policy):
                     way[(a, b)] = legs
         return replace(model, way=way, mass=mass)
 
-    def _stops_of(self, key: tuple[Cell, Cell]) -> list[tuple[float, Cell]]:
-        return self._ways[key]
-
     def _stops(self, agent: Agent, start: Cell, goal: Cell) -> list[tuple[float, Cell]]:
         """Where a drive from ``start`` to ``goal`` looks on the way: (metres from ``start``, cell)."""
+        from seal_cli.errors import SealError
+
         try:
             path = agent.grid.path(start, goal)
-        except Exception:   # no path: the tour's drive tables say inf already
+        except SealError:   # no path: the tour's drive tables say inf already
             return []
         out, metres, since = [], 0.0, 0.0
         prev = agent.grid.point(path[0])
