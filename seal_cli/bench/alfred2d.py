@@ -43,9 +43,9 @@ if TYPE_CHECKING:
     from seal_cli.sim.agent import Scene
 
 __all__ = ["FOUR", "GRID", "MOVABLE_RECEPTACLES", "TASK_TYPES", "Condition", "Episode", "FloorPlan", "Placement",
-           "Receptacle", "Suite", "Task", "build_scene", "build_world", "estimate_lie", "estimate_priors",
+           "Receptacle", "Suite", "Task", "build_scene", "build_world", "estimate_priors",
            "gold_commands", "gold_classes", "goal_conditions", "judge", "load_suite", "open_floor", "read_floorplans",
-           "read_trials", "scene_priors", "scene_vocabulary", "suite_vocabulary", "thor_yaw", "train_lie",
+           "read_trials", "scene_priors", "scene_vocabulary", "suite_vocabulary", "thor_yaw",
            "train_priors"]
 
 GRID = 0.25
@@ -191,8 +191,6 @@ class Suite:
     data_dir: Path
     movable_classes: tuple[str, ...] = ()
     priors: dict[str, dict[str, float]] = field(default_factory=dict)
-    lie: dict[str, tuple[float, ...]] = field(default_factory=dict)
-    """Per place class, how far from a place's pivot the things on it lie (:func:`estimate_lie`, train)."""
 
 
 def thor_yaw(rotation_deg: float) -> float:
@@ -300,7 +298,6 @@ def load_suite(data_dir: str | Path, split: str, *, limit: int | None = None,
     suite = Suite(plans, episodes, Path(data_dir), movable)
     if with_priors:
         suite.priors = train_priors(data_dir)
-        suite.lie = train_lie(data_dir)
     return suite
 
 
@@ -313,50 +310,18 @@ def _stratified(episodes: list[Episode], per_group: int) -> list[Episode]:
     return [e for e in episodes if e.task_id in chosen]
 
 
-_TRAIN: dict[tuple[str, float], tuple[dict[str, dict[str, float]], dict[str, tuple[float, ...]]]] = {}
+_TRAIN: dict[tuple[str, float], dict[str, dict[str, float]]] = {}
 
 
-def _train_statistics(data_dir: str | Path) -> tuple[dict[str, dict[str, float]], dict[str, tuple[float, ...]]]:
-    """:func:`estimate_priors` and :func:`estimate_lie` over the ``train`` split (one reading, kept per
-    process: reading it takes a while)."""
+def train_priors(data_dir: str | Path) -> dict[str, dict[str, float]]:
+    """:func:`estimate_priors` over the ``train`` split (one reading, kept per process: reading it takes a
+    while)."""
     path = Path(data_dir) / "trials_train.jsonl"
     key = (str(path.resolve()), path.stat().st_mtime if path.exists() else 0.0)
     if key not in _TRAIN:
         plans, _ = read_floorplans(data_dir)
-        episodes = list(read_trials(data_dir, "train", plans))
-        _TRAIN[key] = estimate_priors(episodes, plans), estimate_lie(episodes, plans)
+        _TRAIN[key] = estimate_priors(read_trials(data_dir, "train", plans), plans)
     return _TRAIN[key]
-
-
-def train_priors(data_dir: str | Path) -> dict[str, dict[str, float]]:
-    """:func:`estimate_priors` over the ``train`` split."""
-    return _train_statistics(data_dir)[0]
-
-
-def train_lie(data_dir: str | Path) -> dict[str, tuple[float, ...]]:
-    """:func:`estimate_lie` over the ``train`` split."""
-    return _train_statistics(data_dir)[1]
-
-
-LIE_QUANTILES = (0.1, 0.3, 0.5, 0.7, 0.9)
-"""The quantiles of a place class's distances (:func:`estimate_lie`): five equally likely distances."""
-
-
-def estimate_lie(episodes: Iterable[Episode], floor_plans: Mapping[str, FloorPlan]) -> dict[str, tuple[float, ...]]:
-    """Per receptacle class, how far from the receptacle's pivot a thing in or on it lies (metres, in the
-    plane), as the distances at :data:`LIE_QUANTILES` over the given episodes (the ``train`` split, with
-    the same parent assignment as the scenes): a sofa's things lie 0.5 m from its pivot half the time and
-    0.8 m one time in ten, a drawer's 0.2 and 0.4. The map gives a place a pivot and a reach, not a
-    length; this is its extent as the things on it show it, the same for every floor plan."""
-    found: dict[str, list[float]] = defaultdict(list)
-    for episode in episodes:
-        places = floor_plans[episode.floor_plan].by_id()
-        for obj in episode.objects:
-            place = places.get(obj.parent or "")
-            if place is not None:
-                found[class_key(place.cls)].append(math.dist(obj.at, place.at))
-    return {cls: tuple(round(float(q), 3) for q in np.quantile(d, LIE_QUANTILES))
-            for cls, d in sorted(found.items())}
 
 
 # -- priors -----------------------------------------------------------------------------------------
@@ -407,7 +372,7 @@ def open_floor(priors: Mapping[str, Mapping[str, float]], plan: FloorPlan, class
 # -- the world --------------------------------------------------------------------------------------
 
 def build_scene(episode: Episode, plan: FloorPlan, library: Library, priors: Mapping[str, Mapping[str, float]],
-                *, sensor: SensorModel | None = None, lie: Mapping[str, tuple[float, ...]] | None = None) -> Scene:
+                *, sensor: SensorModel | None = None) -> Scene:
     """The episode as a :class:`~seal_cli.sim.agent.Scene`: the world (ground truth) and the map the
     robot is given — the reachable grid, the receptacles as places (openable ones closed), and
     place-level priors for every movable class of the scene. Items get short names
@@ -435,7 +400,7 @@ def build_scene(episode: Episode, plan: FloorPlan, library: Library, priors: Map
                   grid=occupancy)
     vocabulary = tuple(sorted({i.key for i in world.items.values()}))
     return Scene(world, the_map, grid, vocabulary, f"{episode.task_dir} ({episode.task_id})",
-                 open_floor=open_floor(priors, plan, movable), lie=dict(lie or {}))
+                 open_floor=open_floor(priors, plan, movable))
 
 
 def _place_reach(item: Item, grid: Grid) -> float:

@@ -103,7 +103,7 @@ def run_episode(episode: Episode, suite: Suite, library: Library, policies: Sequ
     outcomes = []
     for name in policies:
         start = time.perf_counter()
-        scene = build_scene(episode, plan, library, suite.priors, lie=suite.lie)
+        scene = build_scene(episode, plan, library, suite.priors)
         policy = make_policy(name, particles)
         if getattr(policy, "drives_itself", False):  # saycan: from the instruction text, not seal's frames
             rng = np.random.default_rng(episode_seed(seed, episode))

@@ -67,10 +67,6 @@ class Scene:
     """Per class, the share of its prior that lies on no place at all: anywhere on the open floor
     (ALFRED-2D: a baseball bat 0.65, a box 0.19, learnt on the train split). The map's priors name
     places only; this share is what a search of the floor may find (empty: none)."""
-    lie: Mapping[str, tuple[float, ...]] = field(default_factory=dict)
-    """Per place class, equally likely distances from a place's pivot at which a thing on it lies (ALFRED-2D:
-    a sofa's 0.5 m at the median, a drawer's 0.2, learnt on the train split). The map gives a place a pivot
-    and a reach; this is how far along it a thing may be (empty: at the pivot)."""
 
 
 @dataclass(frozen=True)

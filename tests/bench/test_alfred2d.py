@@ -12,7 +12,6 @@ from seal_cli.bench.alfred2d import (
     TASK_TYPES,
     Task,
     build_scene,
-    estimate_lie,
     estimate_priors,
     goal_conditions,
     gold_classes,
@@ -69,22 +68,6 @@ def test_estimate_priors_counts_parents(suite) -> None:  # type: ignore[no-untyp
     priors = estimate_priors(suite.episodes[:3], suite.floor_plans)
     for masses in priors.values():
         assert sum(masses.values()) == pytest.approx(1.0)
-
-
-def test_estimate_lie_is_how_far_from_its_places_pivot_a_thing_lies(suite) -> None:  # type: ignore[no-untyped-def]
-    import math
-
-    lie = estimate_lie(suite.episodes, suite.floor_plans)
-    assert lie and all(len(d) == 5 and list(d) == sorted(d) and d[0] >= 0 for d in lie.values())
-    episode = next(e for e in suite.episodes if any(o.parent for o in e.objects))
-    places = suite.floor_plans[episode.floor_plan].by_id()
-    obj = next(o for o in episode.objects if o.parent)
-    place = places[obj.parent]
-    alone = estimate_lie([episode], suite.floor_plans)[class_key(place.cls)]
-    far = [math.dist(o.at, place.at) for o in episode.objects if o.parent and class_key(places[o.parent].cls)
-           == class_key(place.cls)]
-    assert min(far) - 1e-3 <= alone[0] <= alone[-1] <= max(far) + 1e-3
-    assert suite.lie == load_suite(suite.data_dir, "valid_seen", limit=1).lie   # from train, whatever the split
 
 
 def test_scene_world_and_map_agree(suite, library: Library) -> None:  # type: ignore[no-untyped-def]

@@ -8,6 +8,7 @@ is measured against are registered beside it in :data:`seal_cli.sim.policies.POL
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -37,6 +38,112 @@ class Look:
     metres: float
     view: View
     reveals: np.ndarray | None = None
+
+
+@dataclass
+class _TourModel:
+    """One thing searched for through a few looks (:meth:`SeFMPolicy._first_of_tour`): ``here`` the metres
+    from the robot to each look, ``between`` from look to look, ``R[k, c]`` the belief look k reveals of
+    column c (a place, or a look's own mass), ``on[k]`` the (weighted) drive on from look k to the plan's next
+    stop; ``scale`` what a look costs beside its drive."""
+
+    here: np.ndarray
+    between: np.ndarray
+    R: np.ndarray
+    on: np.ndarray
+    scale: float
+    way: dict[tuple[int, int], list[tuple[float, np.ndarray, float]]] | None = None
+    """Per drive (from look a, or -1 the robot, to look b), the looks the robot takes on the way: metres
+    from a, which columns that look reveals (a place within reach and open), and the drive on from there."""
+    mass: np.ndarray | None = None
+    """Per column, the belief a look on the way reveals of it (with :attr:`way`)."""
+
+    def _legs(self, prev: int, k: int) -> list[tuple[float, np.ndarray, float]]:
+        return self.way.get((prev, k), []) if self.way is not None else []
+
+    def cost(self, order: Sequence[int]) -> float:
+        """E = Σ_k (d(v_k-1, v_k) + scale) · (1 − Σ_j<k p_j) + Σ_k p_k · on_k."""
+        R = self.R
+        seen = np.zeros(R.shape[1], dtype=bool)
+        left, total, prev = 1.0, 0.0, -1
+        for k in order:
+            d = self.here[k] if prev < 0 else self.between[prev, k]
+            done = 0.0
+            for at, cols, on in self._legs(prev, k):   # a look on the way, and the drive stops when it finds it
+                total += (at - done) * left
+                done = at
+                gain = min(float(self.mass[cols & ~seen].sum()) if self.mass is not None else 0.0, left)
+                seen |= cols
+                total += gain * on
+                left = max(0.0, left - gain)
+            total += (d - done + self.scale) * left
+            new = np.where(seen, 0.0, R[k])
+            found = float(new.sum())
+            gain = min(found, left)
+            seen |= R[k] > 0
+            total += gain * self.on[k]
+            left = max(0.0, left - gain)
+            prev = k
+        return round(total, 6)   # equal to rounding: the same order for SeFM and object-only
+
+    def outcomes(self, order: Sequence[int]) -> tuple[np.ndarray, np.ndarray]:
+        """Where the thing may be under the model, and the metres the order costs if it is there: per column,
+        its mass as first revealed and the drives to the look that reveals it plus the drive on from there;
+        last, the belief no look reveals, which costs the whole tour. The masses' mean of the costs is
+        :meth:`cost` (but where the looks reveal more than the whole belief)."""
+        R = self.R
+        mass = np.zeros(R.shape[1] + 1)
+        metres = np.zeros(R.shape[1] + 1)
+        seen = np.zeros(R.shape[1], dtype=bool)
+        driven, prev = 0.0, -1
+        for k in order:
+            for at, cols, on in self._legs(prev, k):
+                new = cols & ~seen
+                if self.mass is not None:
+                    mass[:-1][new] = self.mass[new]
+                metres[:-1][new] = driven + at + on
+                seen |= cols
+            driven += (self.here[k] if prev < 0 else self.between[prev, k]) + self.scale
+            new = (R[k] > 0) & ~seen
+            mass[:-1][new] = R[k][new]
+            metres[:-1][new] = driven + self.on[k]
+            seen |= R[k] > 0
+            prev = k
+        mass[-1] = max(0.0, 1.0 - float(mass[:-1].sum()))
+        metres[-1] = driven
+        return mass, metres
+
+    def best(self, first: int | None = None) -> tuple[list[int], float]:
+        """The order of least :meth:`cost`: built greedily from where the robot is (the most new belief per
+        metre), then improved by moving one look at a time to wherever E falls most (or-opt); with ``first``,
+        the best that starts with that look."""
+        n, R = len(self.here), self.R
+        order: list[int] = [first] if first is not None else []
+        todo = set(range(n)) - set(order)
+        revealed = R[first] > 0 if first is not None else np.zeros(R.shape[1], dtype=bool)
+        while todo:   # greedy from where the robot is: the most new belief per metre
+            prev = order[-1] if order else -1
+
+            def ratio(k: int, prev: int = prev, revealed: np.ndarray = revealed) -> float:
+                gain = float(R[k][~revealed].sum())
+                return gain / ((self.here[k] if prev < 0 else self.between[prev, k]) + self.scale)
+
+            k = max(sorted(todo), key=ratio)
+            order.append(k)
+            todo.remove(k)
+            revealed = revealed | (R[k] > 0)
+        current = self.cost(order)
+        fixed = 0 if first is None else 1
+        for _ in range(4 * n):   # or-opt: move one look elsewhere while that shortens the expected search
+            moves = [(self.cost(o), o) for i in range(fixed, n) for j in range(fixed, n) if i != j
+                     for o in [order[:i] + order[i + 1:]] for o in [o[:j] + [order[i]] + o[j:]]]
+            if not moves:
+                break
+            value, candidate = min(moves, key=lambda m: m[0])
+            if value >= current - 1e-9:
+                break
+            current, order = value, candidate
+        return order, current
 
 
 class SeFMPolicy(Policy):
@@ -101,6 +208,11 @@ class SeFMPolicy(Policy):
         self._blind: str | None = None
         """The thing whose last look was chosen with the plan's next stop unseen (:meth:`_reconsider_in_room`)."""
         self._things: set[str] = set()
+        self.departures: list[dict[str, Any]] = []
+        self._ways: dict[tuple[Cell, Cell], list[tuple[float, Cell]]] = {}
+        self._reach_cache: dict[tuple[Cell, str], bool] = {}
+        """Each choice in one room where SeFM's best first look was not object-only's: the gap, both orders'
+        outcomes (:meth:`_TourModel.outcomes`) and whether SeFM departed (read by tracing scripts)."""
         self._chosen: tuple[Cell, str, Any] | None = None
         """A choice made on the drive (:meth:`reconsider`) that stopped it: where, for what, the decision."""
         self.key: tuple[str, ...] = ()
@@ -520,8 +632,9 @@ class SeFMPolicy(Policy):
         first look is object-only's — the first of the tour of the same looks with no drive on — unless the
         best order's E beats the best order that starts with object-only's look by more than :attr:`defer_m`.
         With ``incumbent`` (the look being driven to, :meth:`_reconsider_in_room`), that look stands in for
-        object-only's in the comparison.
-        Approximations: the looks are the best few, not all; what is seen on the way is not counted; the
+        object-only's in the comparison, and (:attr:`see_on_the_way`) both orders' E count what their drives
+        see on the way (:meth:`_on_the_way`); object-only's own order does not.
+        Approximations: the looks are the best few, not all; on the way, only places within reach; the
         belief the tour leaves unrevealed adds nothing to E; one instance."""
 
         ahead = self._ahead(agent, agent.class_of(target), agent.world.robot.pose[:2])[:1]
@@ -559,20 +672,28 @@ class SeFMPolicy(Policy):
         best = plain_best + [o for o in sorted(extra, key=lambda o: (-score(o), onward(o))) if o not in plain_best]
         best = best[: 2 * self.tour_views]
         if self.defer_m is None:
-            rows = self._acted_rows(agent, best, fields, then) if self.lie_onward else None
-            return self._tour(agent, best, fields, then, rows=rows)[0].view
+            return self._tour(agent, best, fields, then)[0].view
         # the look object-only's rule takes under this belief (or the one driven to), and what SeFM's cost says of it
         alone = self._tour(agent, plain_best, fields, None)[0] if incumbent is None else incumbent
         if not any(o is alone for o in best):
             best = [*best, alone]
             fields.setdefault(alone.view.cell, agent.grid.distances(alone.view.cell))
-        rows = self._acted_rows(agent, best, fields, then) if self.lie_onward else None
-        first, expected = self._tour(agent, best, fields, then, rows=rows)
-        if first is alone:
-            return first.view
-        _, deferred = self._tour(agent, best, fields, then, first=next(k for k, o in enumerate(best) if o is alone),
-                                 rows=rows)
-        return alone.view if deferred - expected <= self.defer_m else first.view
+        model = self._tour_model(best, fields, then)
+        if self.see_on_the_way and then is not None:
+            model = self._on_the_way(agent, best, model, then)
+        order, expected = model.best()
+        if best[order[0]] is alone:
+            return alone.view
+        other, deferred = model.best(first=next(k for k, o in enumerate(best) if o is alone))
+        departs = self._departs(model, order, other, deferred - expected)
+        self.departures.append({"target": target, "gap": round(deferred - expected, 4),
+                                "outcomes": (model.outcomes(order), model.outcomes(other)), "departs": departs})
+        return best[order[0]].view if departs else alone.view
+
+    def _departs(self, model: _TourModel, order: Sequence[int], other: Sequence[int], gap: float) -> bool:
+        """Whether SeFM's best order ``order`` is taken over ``other``, the best that starts with object-only's look:
+        the expected saving ``gap`` exceeds :attr:`defer_m`."""
+        return self.defer_m is not None and gap > self.defer_m
 
     defer_m: float | None = 0.25
     """SeFM's first look in one room is object-only's under the same belief (the best tour by belief per metre,
@@ -582,85 +703,20 @@ class SeFMPolicy(Policy):
     sink) cannot draw the robot to a look beside it that the model values within a lattice step of
     object-only's. None: SeFM's best first look, whatever the margin (earlier rounds)."""
 
-    lie_onward = False
-    """SeFM's drive on from where the thing would lie on the place a look reveals, not from the look
-    (:meth:`_acted_rows`). Off: from the look, as earlier rounds. On, it was no shorter on ALFRED-2D's train
-    split (a stratified 1,050: −12.75 against −12.5 m beside object-only, 4 episodes longer against 5, 15
-    shorter against 19) and on valid_seen 0.006 m longer (docs/benchmarks.md, "This round (search11)")."""
-
-    lie_directions = 8
-    """The bearings from a place's pivot at which a thing on it is taken to lie, equally likely (the map does
-    not say which way a place runs)."""
-
-    lie_along = False
-    """A thing on a place lies along the side the place is used from — the line through its pivot square to
-    the way to its access pose (else its nearest free cell): a shelf or a sofa against a wall is used from
-    the front and runs along it (:meth:`_along`). Off: :attr:`lie_directions` bearings all round."""
-
-    @staticmethod
-    def _along(place: Known, pts: np.ndarray) -> np.ndarray:
-        """The two bearings along the side ``place`` is used from (rows of unit vectors)."""
-        at = np.asarray(place.at)
-        if place.access:
-            toward = np.asarray(place.access[0]) - at
-        else:
-            toward = pts[int(np.argmin(np.hypot(pts[:, 0] - at[0], pts[:, 1] - at[1])))] - at
-        norm = float(np.hypot(*toward))
-        if norm <= 1e-9:
-            return np.array([[1.0, 0.0], [-1.0, 0.0], [0.0, 1.0], [0.0, -1.0]])
-        t = np.array([-toward[1], toward[0]]) / norm
-        return np.array([t, -t])
-
-    def _acted_rows(self, agent: Agent, best: Sequence[Look], fields: dict[Cell, np.ndarray],
-                    then: np.ndarray | None) -> dict[int, np.ndarray] | None:
-        """Per look of ``best`` (by position), per place it reveals, the expected metres from the look to
-        finishing the plan's next stop when the thing is found on that place: the thing is acted on where it
-        lies, not where the robot looked from, so the drive on is, over where on the place it may lie, the
-        least of d(look, c) + on(c) over the cells c it can be acted on from (within the world's reach of it,
-        or at the place's own access pose) — on(look) itself when the look is one of them, more when the
-        thing lies beyond reach of the look (the far end of a sofa). Where it lies: at each of the scene's
-        learnt distances from the place's pivot (:attr:`~seal_cli.sim.agent.Scene.lie`, equally likely) in
-        each of :attr:`lie_directions` bearings. None: no such distances (the drive on from the look)."""
-        lie = agent.scene.lie
-        if then is None or not lie:
-            return None
-        places = self._places(agent)
-        pts, cells = agent.grid.free_points, agent.grid.free_cells
-        onward = then[cells[:, 0], cells[:, 1]]
-        angles = np.arange(self.lie_directions) * (2 * np.pi / self.lie_directions)
-        bearings = np.column_stack([np.cos(angles), np.sin(angles)])
-        rows: dict[int, np.ndarray] = {}
-        for k, o in enumerate(best):
-            if o.reveals is None or not np.isfinite(then[o.view.cell]):
-                continue
-            row = np.full(len(o.reveals), float(then[o.view.cell]))
-            total = fields[o.view.cell][cells[:, 0], cells[:, 1]] + onward
-            for j in np.flatnonzero(o.reveals[: len(places)] > 0):
-                place = places[int(j)]
-                far = lie.get(agent.world.items[place.id].key, ())
-                if not far:
-                    continue
-                ways = self._along(place, pts) if self.lie_along else bearings
-                at = np.asarray(place.at) + (np.asarray(far)[:, None, None] * ways[None, :, :]).reshape(-1, 2)
-                reach = agent.world.reach_of(place.id)
-                near = np.hypot(pts[None, :, 0] - at[:, 0, None], pts[None, :, 1] - at[:, 1, None]) <= reach + 1e-9
-                for a in place.access:
-                    near |= (np.hypot(pts[:, 0] - a[0], pts[:, 1] - a[1]) <= agent.world.access_tolerance)[None, :]
-                values = np.where(near, total[None, :], np.inf).min(axis=1)
-                values = np.where(np.isfinite(values), values, row[j])
-                row[j] = float(values.mean())
-            rows[k] = row
-        return rows
-
     def _tour(self, agent: Agent, best: Sequence[Look], fields: dict[Cell, np.ndarray], then: np.ndarray | None,
-              first: int | None = None, rows: dict[int, np.ndarray] | None = None) -> tuple[Look, float]:
+              first: int | None = None) -> tuple[Look, float]:
         """The first look of the shortest expected search through ``best``, and its expected cost (with
-        ``then``, the drive on from where the thing is found to the plan's next stop, SeFM's; with ``rows``,
-        per look and place revealed, the drive on from where on that place the thing would lie,
-        :meth:`_acted_rows`; ``first``: the best order that starts with that look)."""
-        n = len(best)
-        if n < 2:
+        ``then``, the drive on from where the thing is found to the plan's next stop, SeFM's; ``first``: the
+        best order that starts with that look)."""
+        if len(best) < 2:
             return best[0], 0.0
+        model = self._tour_model(best, fields, then)
+        order, current = model.best(first)
+        return best[order[0]], current
+
+    def _tour_model(self, best: Sequence[Look], fields: dict[Cell, np.ndarray], then: np.ndarray | None) -> _TourModel:
+        """The expected-cost model of searching through ``best`` (:class:`_TourModel`)."""
+        n = len(best)
         here = np.array([o.metres for o in best])
         between = np.array([fields[o.view.cell][[b.view.cell[0] for b in best], [b.view.cell[1] for b in best]]
                             for o in best])
@@ -671,57 +727,88 @@ class SeFMPolicy(Policy):
                 R[k, width + k] = o.mass
             else:
                 R[k, : len(o.reveals)] = o.reveals
-
         on = np.array([float(then[o.view.cell]) for o in best]) if then is not None else np.zeros(n)
         on = np.where(np.isfinite(on), on, 0.0)
-        ON = np.repeat(on[:, None], R.shape[1], axis=1)   # the drive on when look k is the first to reveal column c
-        for k, row in (rows or {}).items():
-            ON[k, : len(row)] = np.where(np.isfinite(row), row, on[k])
+        return _TourModel(here, between, R, self.onward * on, self.distance_scale)
 
-        def cost(order: Sequence[int]) -> float:
-            seen = np.zeros(R.shape[1], dtype=bool)
-            left, total, prev = 1.0, 0.0, -1
-            for k in order:
-                d = here[k] if prev < 0 else between[prev, k]
-                total += (d + self.distance_scale) * left
-                new = np.where(seen, 0.0, R[k])
-                found = float(new.sum())
-                gain = min(found, left)
-                seen |= R[k] > 0
-                if not rows:
-                    total += self.onward * gain * on[k]
-                elif found > 0:
-                    total += self.onward * gain * float(new @ ON[k]) / found
-                left = max(0.0, left - gain)
-                prev = k
-            return round(total, 6)   # equal to rounding: the same order for SeFM and object-only
+    see_on_the_way = True
+    """SeFM's expected cost when it weighs its own first look against object-only's counts what the drives see
+    on the way (:meth:`_on_the_way`): the robot looks every metre of a drive, sees into or onto every open
+    place within reach of where it stands, and a search drive stops at the look that finds the thing. Off:
+    a drive reveals only what its last look does (earlier rounds)."""
 
-        order: list[int] = [first] if first is not None else []
-        todo = set(range(n)) - set(order)
-        revealed = R[first] > 0 if first is not None else np.zeros(R.shape[1], dtype=bool)
-        while todo:   # greedy from where the robot is: the most new belief per metre
-            prev = order[-1] if order else -1
+    def _on_the_way(self, agent: Agent, best: Sequence[Look], model: _TourModel, then: np.ndarray) -> _TourModel:
+        """``model`` with the looks every drive between ``best``'s looks (and from the robot) takes on the way,
+        and what each reveals: the places (not the floor) within the world's reach of it, open and holding
+        belief — the belief of a place is what the looks of ``best`` say it holds — with the drive on from
+        there. Paths are the grid's shortest ones, looks every :attr:`~seal_cli.sim.agent.Agent.look_every`
+        metres as :meth:`~seal_cli.sim.agent.Agent.drive_to` takes them."""
+        from dataclasses import replace
 
-            def ratio(k: int, prev: int = prev, revealed: np.ndarray = revealed) -> float:
-                gain = float(R[k][~revealed].sum())
-                return gain / ((here[k] if prev < 0 else between[prev, k]) + self.distance_scale)
+        places = self._places(agent)
+        width = model.R.shape[1]
+        mass = np.zeros(width)
+        for o in best:
+            if o.reveals is not None:
+                mass[: len(places)] = np.maximum(mass[: len(places)], o.reveals[: len(places)])
+        shut = np.array([self._shut(agent, p) for p in places], dtype=bool)
+        mass[: len(places)][shut] = 0.0
+        if not mass.any():
+            return model
+        live = np.flatnonzero(mass[: len(places)] > 0)
+        starts = [(-1, agent.robot_cell()), *((k, o.view.cell) for k, o in enumerate(best))]
+        way: dict[tuple[int, int], list[tuple[float, np.ndarray, float]]] = {}
+        for a, start in starts:
+            for b, o in enumerate(best):
+                if a == b or start == o.view.cell:
+                    continue
+                key = (start, o.view.cell)
+                if key not in self._ways:
+                    self._ways[key] = self._stops(agent, start, o.view.cell)
+                legs = []
+                for at, cell in self._ways[key]:
+                    cols = np.zeros(width, dtype=bool)
+                    cols[live] = self._reach_at(agent, places, live, cell)
+                    if cols.any():
+                        on = float(then[cell]) if np.isfinite(then[cell]) else 0.0
+                        legs.append((at, cols, self.onward * on))
+                if legs:
+                    way[(a, b)] = legs
+        return replace(model, way=way, mass=mass)
 
-            k = max(sorted(todo), key=ratio)
-            order.append(k)
-            todo.remove(k)
-            revealed = revealed | (R[k] > 0)
-        current = cost(order)
-        fixed = 0 if first is None else 1
-        for _ in range(4 * n):   # or-opt: move one look elsewhere while that shortens the expected search
-            moves = [(cost(o), o) for i in range(fixed, n) for j in range(fixed, n) if i != j
-                     for o in [order[:i] + order[i + 1:]] for o in [o[:j] + [order[i]] + o[j:]]]
-            if not moves:
-                break
-            value, candidate = min(moves, key=lambda m: m[0])
-            if value >= current - 1e-9:
-                break
-            current, order = value, candidate
-        return best[order[0]], current
+    def _stops(self, agent: Agent, start: Cell, goal: Cell) -> list[tuple[float, Cell]]:
+        """Where a drive from ``start`` to ``goal`` looks on the way: (metres from ``start``, cell)."""
+        from seal_cli.errors import SealError
+
+        try:
+            path = agent.grid.path(start, goal)
+        except SealError:   # no path: the tour's drive tables say inf already
+            return []
+        out, metres, since = [], 0.0, 0.0
+        prev = agent.grid.point(path[0])
+        for cell in path[1:-1]:
+            p = agent.grid.point(cell)
+            step = math.dist(prev, p)
+            prev, metres, since = p, metres + step, since + step
+            if since >= agent.look_every:
+                out.append((metres, cell))
+                since = 0.0
+        return out
+
+    def _reach_at(self, agent: Agent, places: Sequence[Known], live: np.ndarray, cell: Cell) -> np.ndarray:
+        """Which of the places ``live`` (indices into ``places``) the robot can act on from ``cell`` (kept per cell
+        and place)."""
+        x, y = agent.grid.point(cell)
+        out = np.zeros(len(live), dtype=bool)
+        for i, j in enumerate(live):
+            place = places[int(j)]
+            key = (cell, place.id)
+            if key not in self._reach_cache:
+                near = (math.dist((x, y), place.at) <= agent.world.reach_of(place.id) + 1e-9
+                        or any(math.dist((x, y), a) <= agent.world.access_tolerance + 1e-9 for a in place.access))
+                self._reach_cache[key] = near and agent.world.within_reach(place.id, (x, y, 0.0))
+            out[i] = self._reach_cache[key]
+        return out
 
     def _places(self, agent: Agent) -> list[Known]:
         """The places a look can reveal the contents of (not people, not things)."""

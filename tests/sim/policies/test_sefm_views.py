@@ -254,47 +254,6 @@ def test_sefm_finds_the_thing_from_the_look_nearer_the_next_stop(library: Librar
     assert first(deferring) == (3.25, 0.5)
 
 
-def test_the_drive_on_is_from_where_on_the_place_the_thing_would_lie(library: Library) -> None:
-    """A look at the west shelf from below its pivot: a thing at the pivot is acted on from the look (the drive
-    on from there); one that lies 2 m along the shelf, out of reach of the look on its west side, is acted on from
-    a cell nearer it, and the expected drive on to the table is longer. Without learnt distances, from the look."""
-    from dataclasses import replace
-
-    frames = [("Place", {"theme": "apple", "goal": "dining_table"})]
-
-    def acted(lie: dict[str, tuple[float, ...]]) -> tuple[float, float | None]:
-        scene = replace(corridor(library, {"apple": {"shelf": 0.9}}, start=3.0), lie=lie)
-        policy = SeFMPolicy(particles=50)
-        agent = ready(library, scene, policy, frames)
-        then = policy._onward_field(agent, agent.known["table_1"])
-        places = policy._places(agent)
-        j = [p.id for p in places].index("shelf_1")
-        reveals = np.zeros(len(places))
-        reveals[j] = 0.5
-        cell = agent.grid.cell((1.0, 0.5))
-        look = Look(0.5, float(agent.distances()[cell]), View(cell, (1.0, 1.4)), reveals)
-        rows = policy._acted_rows(agent, [look], {cell: agent.grid.distances(cell)}, then)
-        return float(then[cell]), None if rows is None else float(rows[0][j])
-
-    on, at_pivot = acted({"shelf": (0.0,)})
-    assert at_pivot == pytest.approx(on)
-    _, along = acted({"shelf": (2.0,)})
-    assert along is not None and along > on
-    assert acted({})[1] is None
-
-
-def test_a_thing_lies_along_the_side_a_place_is_used_from() -> None:
-    """A place used from the south (its access pose below its pivot) runs east-west; with no access pose, the
-    way to its nearest free cell says the same."""
-    from seal_cli.sim.agent import Known
-
-    pts = np.array([[0.0, 0.0], [3.0, 3.0]])
-    front = SeFMPolicy._along(Known("sofa_1", "sofa", (0.0, 1.0), False, access=((0.0, 0.25),)), pts)
-    assert np.allclose(np.abs(front), [[1.0, 0.0], [1.0, 0.0]]) and np.allclose(front[0], -front[1])
-    bare = SeFMPolicy._along(Known("sofa_1", "sofa", (0.0, 1.0), False), pts)
-    assert np.allclose(np.abs(bare), [[1.0, 0.0], [1.0, 0.0]])
-
-
 def test_the_floor_share_is_bayes_over_what_is_still_unseen(library: Library) -> None:
     """f on the floor, 1 - f on the places: unseen, the floor keeps f·u (u: the floor not yet in sight) and
     the places (1 - f)·r (r: the prior share of the places not looked at); below floor_min, nothing."""
@@ -446,3 +405,51 @@ def test_a_look_chosen_with_the_next_stop_unseen_is_chosen_again_when_the_drive_
     off.reconsider_in_room = False
     assert stops(off, 0.0) is None
     assert stops(ObjectOnlyPolicy(particles=300), 0.0) is None
+
+
+def test_the_tour_model_s_outcomes_average_to_its_expected_cost() -> None:
+    """Per column, the mass a look first reveals and the metres the order costs if the thing is there (the
+    drives to that look, a look's cost each, and the drive on); what no look reveals costs the whole tour. Their
+    mean is the model's E."""
+    from seal_cli.sim.policies.sefm import _TourModel
+
+    R = np.array([[0.3, 0.2, 0.0], [0.0, 0.2, 0.4]])
+    model = _TourModel(np.array([1.0, 3.0]), np.array([[0.0, 2.5], [2.5, 0.0]]), R, np.array([1.0, 2.0]), 0.1)
+    for order in ([0, 1], [1, 0]):
+        mass, metres = model.outcomes(order)
+        assert mass.sum() == pytest.approx(1.0)
+        assert float(mass @ metres) == pytest.approx(model.cost(order))
+    mass, metres = model.outcomes([0, 1])
+    assert metres.tolist() == pytest.approx([1.1 + 1.0, 1.1 + 1.0, 1.1 + 2.6 + 2.0, 3.7])
+
+
+def test_a_drive_that_passes_a_place_within_reach_reveals_it_on_the_way(library: Library) -> None:
+    """The robot looks every metre of a drive and sees onto every open place within reach: the drive from the
+    west end to the cabinet at the east passes both shelves, and a thing on the first is found 1 m into it, not
+    after the 7 m the model of earlier rounds charged (the look at the end). So the tour that drives east first is
+    cheaper with the looks on the way counted, and a tour's order is weighed with them."""
+    from dataclasses import replace
+
+    scene = corridor(library, {"apple": {"shelf": 0.4, "cabinet": 0.4}})
+    policy = SeFMPolicy(particles=50)
+    agent = ready(library, scene, policy, [("Place", {"theme": "apple", "goal": "dining_table"})])
+    places = policy._places(agent)
+    ids = [p.id for p in places]
+
+    def look(x: float, place: str, mass: float) -> Look:
+        reveals = np.zeros(len(places))
+        reveals[ids.index(place)] = mass
+        cell = agent.grid.cell((x, 0.5))
+        return Look(mass, float(agent.distances()[cell]), View(cell, (x, 1.4)), reveals)
+
+    best = [look(1.0, "shelf_1", 0.4), look(7.0, "cabinet_2", 0.4)]
+    fields = {o.view.cell: agent.grid.distances(o.view.cell) for o in best}
+    then = policy._onward_field(agent, agent.known["table_1"])
+    plain = policy._tour_model(best, fields, then)
+    seeing = policy._on_the_way(agent, best, plain, then)
+    assert seeing.way is not None and (-1, 1) in seeing.way
+    at, cols, _ = seeing.way[(-1, 1)][0]
+    assert at == pytest.approx(1.0) and cols[ids.index("shelf_1")]
+    mass, metres = seeing.outcomes([1, 0])
+    assert metres[ids.index("shelf_1")] < 7.0 < replace(seeing, way=None).outcomes([1, 0])[1][ids.index("shelf_1")]
+    assert seeing.cost([1, 0]) < plain.cost([1, 0])
