@@ -55,8 +55,8 @@ from seal_cli.language.state import CLOSED, SUB_FIRST, State, match_phrase
 from seal_cli.language.tags import NP_START, Tag
 from seal_cli.language.tokens import MAX_LENGTH, CommandError, Word, capitalised, tokenize
 
-__all__ = ["AGAIN_LEAST", "MAX_LENGTH", "NP_START", "CommandError", "Lexicon", "Mention", "Tagger", "Word", "is_plural", "mentions",
-           "noun_lemma", "tag", "tokenize", "verb_lemma"]
+__all__ = ["AGAIN_LEAST", "MAX_LENGTH", "NP_START", "CommandError", "Lexicon", "Mention", "Tagger", "Word", "is_plural",
+           "mentions", "noun_lemma", "tag", "tokenize", "verb_lemma"]
 
 
 # ---------------------------------------------------------------------------------------------
