@@ -55,8 +55,8 @@ from seal_cli.language.state import CLOSED, SUB_FIRST, State, match_phrase
 from seal_cli.language.tags import NP_START, Tag
 from seal_cli.language.tokens import MAX_LENGTH, CommandError, Word, capitalised, tokenize
 
-__all__ = ["MAX_LENGTH", "NP_START", "CommandError", "Lexicon", "Mention", "Tagger", "Word", "is_plural", "mentions",
-           "noun_lemma", "tag", "tokenize", "verb_lemma"]
+__all__ = ["AGAIN_LEAST", "MAX_LENGTH", "NP_START", "CommandError", "Lexicon", "Mention", "Tagger", "Word", "is_plural",
+           "mentions", "noun_lemma", "tag", "tokenize", "verb_lemma"]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -133,7 +133,7 @@ class Lexicon:
             base = verb_lemma(first) if first.isalpha() else None
             candidates = self.units.get(base) if base and base != first else None
             if not candidates:
-                return None
+                return self.again(words, i)
         for unit in candidates:
             n = len(unit)
             if i + n <= len(words) and all(words[i + k].lower == unit[k] for k in range(1, n)):
@@ -147,6 +147,27 @@ class Lexicon:
             return split
         return None
 
+    def again(self, words: Sequence[Word], i: int) -> tuple[str, int, None] | None:
+        """A verb said with the prefix *re-* ("again") that the library lacks is the verb it repeats: "re
+        arranging" (two words), "re-arrange", "rearranging" (one; the verb after "re" of at least
+        :data:`AGAIN_LEAST` letters, so "reset" and "recall" stay unknown) are "arrange". Only a one-word unit,
+        and only where the word itself is no unit ("reheat", "return", "remove" are theirs)."""
+        first = words[i].lower
+        if first == "re" and i + 1 < len(words):
+            rest, n, least = words[i + 1].lower, 2, 1
+        elif first.startswith("re-"):
+            rest, n, least = first[3:], 1, 1
+        elif first.startswith("re"):
+            rest, n, least = first[2:], 1, AGAIN_LEAST
+        else:
+            return None
+        if not rest.isalpha():
+            return None
+        for form in (rest, verb_lemma(rest) or rest):
+            if len(form) >= least and (form,) in self.units.get(form, ()):
+                return form, n, None
+        return None
+
     def _split(self, words: Sequence[Word], i: int, stop: int,
                candidates: Iterable[tuple[str, ...]]) -> tuple[str, int, int] | None:
         for unit in candidates:
@@ -157,6 +178,11 @@ class Lexicon:
                         match_phrase(words, j - 1, TIME_WORDS) < 2:      # not "right away"
                     return " ".join(unit), 1, j
         return None
+
+
+AGAIN_LEAST = 5
+"""The fewest letters of the verb after a joined "re" (:meth:`Lexicon.again`): "rearrange" is "arrange", "reset"
+is no "set"."""
 
 
 def _stands_alone(words: Sequence[Word], j: int) -> bool:

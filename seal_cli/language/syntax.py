@@ -258,11 +258,11 @@ class Syntax(Transformer[Token, Command]):
     # -- noun phrases --------------------------------------------------------------------------
     def pron_np(self, children: list[Word]) -> NP:
         w = children[0]
-        low = w.lower
+        low = w.lower.split()[-1]      # "one of them": the pronoun is "them" (its quantifier, the word's info)
         pron_kind = "person" if low in PERSON_PRONOUNS else "thing" if low in (
             "it", "this", "that", "something", "everything", "anything", "nothing", "itself") else "pronoun"
         return NP(w.start, w.end, w, pron_kind, pronoun=low, plural=low in ("them", "they", "ones", "these",
-                                                                            "those"))
+                                                                            "those") and w.info != "one")
 
     def name_np(self, children: list[Word]) -> NP:
         w = children[0]

@@ -150,3 +150,21 @@ def test_adverbs_of_time_place_and_manner(library: Library) -> None:
     assert tags("start by opening the window", library)[:2] == [("start by", "POLITE"), ("opening", "VERB")]
     assert ("one", "WORD") in tags("bring me the red one", library)
     assert ("one", "NUM") in tags("bring me one apple", library)
+
+
+@pytest.mark.parametrize(("text", "verb", "words"), [
+    ("re arranging clocks in a room", "arrange", "re arranging"),    # the prefix said apart
+    ("re-arrange the clocks on the desk", "arrange", "re-arrange"),
+    ("rearrange the pillows on the sofa", "arrange", "rearrange"),
+    ("relight the lamp", "light", "relight"),
+])
+def test_a_verb_said_again_with_re_is_the_verb(text: str, verb: str, words: str, library: Library) -> None:
+    lexicon, _ = lexicon_of(library)
+    first = tag(lexicon, text)[0]
+    assert (first.text, first.tag, first.info) == (words, "VERB", verb)
+
+
+@pytest.mark.parametrize("text", ["reset the alarm", "re the cup"])
+def test_re_before_a_short_or_no_verb_stays_unknown(text: str, library: Library) -> None:
+    lexicon, _ = lexicon_of(library)
+    assert tag(lexicon, text)[0].tag != "VERB" or tag(lexicon, text)[0].info not in ("set", "cup")

@@ -355,6 +355,9 @@ def test_a_misspelling_is_read_as_the_word_people_say_only_when_nothing_matches(
     assert vocab.ground_words(["stovve"]) == "StoveBurner"
     assert vocab.with_usage(RULES).ground_words(["stovve"]) is None                   # the rules alone: unknown
     assert Vocabulary.of(["parcel", "DiningTable"], usage=usage_).ground_words(["parcel"]) == "parcel"
+    # the whole of a portion misspelt: "a slice of stovve" is the stove's, as "the stovve" is
+    assert vocab.ground_words(["slice"], of=["stovve"]) == "StoveBurner"
+    assert vocab.with_usage(RULES).ground_words(["slice"], of=["stovve"]) is None
 
 
 def test_a_second_conjunct_is_not_grounded_as_the_first(library: Library) -> None:

@@ -10,6 +10,8 @@ from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 
 _NUMBER_FIRST = first_words(NUMBERS)
+PARTED = frozenset(["them", "these", "those", "it", "this", "that", "us"])
+"""Pronouns after a quantifier's "of" ("one of *them*", "some of *it*"): the whole is one pronoun."""
 
 
 def _digits_or_number(low: str) -> bool:
@@ -77,6 +79,8 @@ def _apostrophe_s(s: State, i: int) -> Match | None:
 
 def _quantifier_of(s: State, i: int) -> Match | None:
     words, low = s.words, s.words[i].lower
+    if not s.in_np() and s.next_lower(i) == "of" and i + 2 < len(words) and words[i + 2].lower in PARTED:
+        return s.emit(i, 3, Tag.PRON, low)   # "slice one of them": a pronoun, the part of what "them" is
     if not s.in_np() and s.next_lower(i) == "of" and i + 2 < len(words) and \
             (words[i + 2].lower in NP_OPENERS):
         number = NUMBERS.get(low)            # "both of the cups", "one of the books"
@@ -109,4 +113,6 @@ APOSTROPHE_S = Rule("'s", _apostrophe_s, (
 QUANTIFIER_OF = Rule("quantifier of", _quantifier_of, (
     Example("bring me both of the cups", "both of", Tag.DET),
     Example("bring me one of the books", "one of", Tag.NUM),
-), QUANTIFIERS, "'both of the', 'one of the': a determiner or a number")
+    Example("put potatoes in the basket, slice one of them", "one of them", Tag.PRON),
+    Example("take both of them to the sink", "both of them", Tag.PRON),
+), QUANTIFIERS, "'both of the', 'one of the': a determiner or a number; 'one of them': a pronoun")
