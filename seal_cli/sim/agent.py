@@ -29,7 +29,7 @@ from __future__ import annotations
 
 import itertools
 import math
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from datetime import datetime, timedelta
 from typing import Any
@@ -149,7 +149,8 @@ class Agent:
                  classes: Mapping[str, str] | None = None, sweeper: Callable[[], Any] | None = None,
                  questions: Mapping[Binding, Question] | None = None, clock: datetime | None = None,
                  search_end: float | None = None,
-                 put_away: Mapping[Binding, Callable[[str | None], str | None]] | None = None) -> None:
+                 put_away: Mapping[Binding, Callable[[str | None], str | None]] | None = None,
+                 put_back: Iterable[Binding] = ()) -> None:
         self.scene = scene
         self.world = scene.world
         self.grid = scene.grid
@@ -170,6 +171,9 @@ class Agent:
         """Each commanded frame whose goal "put away" chose, and where it would put the thing, as a function
         of where the thing lay (:func:`seal_cli.planning.keeping.where_kept`): the command was grounded
         before the robot saw the thing, so it chooses again once it knows."""
+        self.put_back: set[Binding] = set(put_back)
+        """Those of :attr:`put_away` that put the thing back where the robot took it from ("take the cup and
+        put it back"), not where such a thing is kept."""
         self.picked_from: dict[str, str | None] = {}
         """Where each thing the robot picked up lay."""
         self.started = {i.id: i.at for i in self.world.items.values() if i.movable}
@@ -277,6 +281,8 @@ class Agent:
         (:func:`seal_cli.planning.plan.already_so`) asked of what it has seen: "umbrella_1 is in the
         hallway already" when the frame would only bring a thing into a room where one it knows of lies
         free (not held, not shut in), or put it in or on a place where one it knows of is; None otherwise."""
+        if binding in self.put_back:        # back where it was taken from: the robot puts it there
+            return None
         if binding in self.put_away:        # put away: already so only where such a thing is kept
             return self._kept_already(binding)
         results = [f for f in binding.postconditions if not f.negated and f.predicate == "in" and len(f.args) == 2]
@@ -353,6 +359,11 @@ class Agent:
             return None
         again = todo[0].frame.bind({**todo[0].elements, "goal": goal})
         self.put_away[again] = self.put_away.pop(todo[0])
+        if todo[0] in self.put_back:
+            self.put_back.discard(todo[0])
+            self.put_back.add(again)
+            todo[0] = again
+            return f"{held.id} lay on {lay}: puts it back there"
         todo[0] = again
         return f"{held.id} lay on {lay}: puts it away on {goal}"
 
@@ -416,6 +427,15 @@ class Agent:
         self.steps, self.index = steps, 0
         plan = [str(b) for b in steps]
         self.say("plan", "plan: " + ", ".join(plan) if plan else "nothing to do", plan=plan)
+        for binding in todo:        # a goal chosen before the robot has seen the thing: said as such
+            theme, goal = binding.elements.get("theme"), binding.elements.get("goal")
+            if binding in self.put_back:
+                self.say("plan", f"({goal} stands in for where {theme} lies: it puts {theme} back where it "
+                         "takes it from)")
+            elif binding in self.put_away:
+                kind = spoken(self.class_of(theme or ""))
+                self.say("plan", f"({goal}: where it would keep a {kind}, not yet knowing where the {kind} lies; "
+                         "it chooses again once it sees it)")
         executed: list[str] = []
         replans = 0
         while self.index < len(self.steps):
