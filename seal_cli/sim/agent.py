@@ -1705,7 +1705,8 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
     """A world built from a seal map's places, ground-truth objects and people (the speaker, "me",
     stands at ``speaker.at`` or where the robot starts), on its free space. A place's ``reach`` is
     how far the robot can act on it and on what is in or on it. A place switches on and off unless
-    the library knows its class does not (a table; a dryer nobody lists does, as the planner allows)."""
+    the library knows its class does not (a table; a dryer nobody lists does, as the planner allows); a
+    thing only when the library knows its class does (a kettle standing on the worktop)."""
     from scipy.ndimage import binary_erosion
 
     from seal_cli.sensing.model import RangeSensor
@@ -1723,7 +1724,8 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
         counts[o.cls] = counts.get(o.cls, 0) + 1
         parent = names.get(class_key(o.inside)) if o.inside else None
         items.append(Item(f"{o.cls}_{counts[o.cls]}", o.cls, o.at, movable=True, parent=parent,
-                          receptacle=taxonomy.is_a(o.cls, "container") is True))
+                          receptacle=taxonomy.is_a(o.cls, "container") is True,
+                          toggleable=kind_of(taxonomy, o.cls, "toggleable") is True))   # a kettle, a lamp
     people = [(p.key, m.person_at(p)) for p in m.people]
     items += [Item(key, PERSON, at, movable=False) for key, at in [*people, (SPEAKER, m.speaker_at)]]
     holding = None

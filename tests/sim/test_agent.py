@@ -300,3 +300,18 @@ def test_a_thing_put_in_place_for_one_name_does_not_make_the_next_names_frame_al
                                         make_policy("sefm"), rng=np.random.default_rng(0))
     assert not result.completed and "no sock found" in result.reason
     assert not any("needs no doing" in r.text for r in agent.records)
+
+
+def test_a_thing_of_a_class_that_switches_is_switched_where_it_stands(library: Library) -> None:
+    """A kettle is an object on the bungalow's worktop, not a place: "switch on the kettle" switches it on
+    (before, every object was refused: "kettle_1 cannot be switched on"); a mug still cannot be."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.agent import scene_from_map
+
+    m = load_map("bungalow")
+    items = scene_from_map(m, library).world.items
+    assert items["kettle_1"].toggleable and not items["mug_1"].toggleable
+    agent, result = run_on_map(m, "switch on the kettle", library, make_policy("sefm", 100),
+                               rng=np.random.default_rng(0))
+    assert result.completed and "on" in agent.world.items["kettle_1"].states
