@@ -417,7 +417,35 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
     refused = None if asked else names.refusal(phrase.text, said)
     if refused is not None:
         raise _located(refused.message, phrase, text)
+    if not asked and category in FIXTURE_TYPES and not where_words(phrase.text) and not _kinds_known_of(phrase, things):
+        m = things.map
+        tax = things.taxonomy
+
+        def does(cls: str) -> bool:     # by the class or another name of it (a hob is a stove)
+            return any(kind_of(tax, n, category) is True for n in (cls, *tax.names.get(class_key(cls), ())))
+
+        places = [p.name for p in m.places if (p.openable if category == "openable" else does(p.cls))]
+        places += sorted({class_key(c) for c in (*m.priors, *(o.cls for o in m.objects)) if does(c)})
+        what = " ".join(words_of(phrase.text)) or phrase.head
+        raise _located(f"the {m.name} has no {what} (no place, thing or prior of the map names one, and what "
+                       f"opens or switches is not searched for); what it knows will {FIXTURE_TYPES[category]}: "
+                       f"{', '.join(places) or 'nothing'}", phrase, text)
     return None
+
+
+FIXTURE_TYPES = {"openable": "open and close", "toggleable": "switch on and off"}
+"""Element types whose thing is a fixture or an appliance the map would name ("open the car", "turn on the
+telly" on a map with neither): a kind the map knows nothing of is refused, not searched for in the whole house
+(said in a room, "the radio in the kitchen", it is looked for there)."""
+
+
+def _kinds_known_of(phrase: Phrase, things: Things) -> bool:
+    """Whether the map knows the kind of thing a phrase names: a prior, an object or a place of its class (the
+    parse's, or the head's)."""
+    m = things.map
+    assert m is not None
+    known = {class_key(c) for c in (*m.priors, *(o.cls for o in m.objects), *(p.cls for p in m.places))}
+    return any(class_key(c) in known for c in (phrase.cls, phrase.head) if c)
 
 
 def _count(phrase: Phrase, value: str) -> int:

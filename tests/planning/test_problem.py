@@ -273,3 +273,21 @@ def test_a_library_of_ones_own_says_which_units_store(library: Library, tmp_path
         mine = load_library([framelib_dir(), tmp_path / "mine.yaml"])
         (place,) = problem_of_text("stash the spoon", mine, map=m).commanded
         assert (place.elements.get("goal") == "counter_1") == (goal is not None), place
+
+
+def test_a_thing_to_open_or_switch_the_map_knows_nothing_of_is_refused(library: Library) -> None:
+    """"open the car", "turn on the telly" on the bungalow: no place, thing or prior names one, and what opens or
+    switches is not searched for in the whole house (it drove 64 m before); said in a room, it is looked for there."""
+    from seal_cli.errors import SealError
+    from seal_cli.maps.formats.map_server import load_map
+
+    m = load_map("bungalow")
+    with pytest.raises(SealError, match=r"column 6: the bungalow has no car \(.*what it knows will open and close: "
+                                        r"washing_machine_1, .*larder_1, fridge_1"):
+        problem_of_text("open the car", library, map=m)
+    with pytest.raises(SealError, match=r"the bungalow has no telly .*switch on and off: .*hob_1, kettle"):
+        problem_of_text("turn on the telly", library, map=m)
+    assert [str(b) for b in problem_of_text("switch on the kettle", library, map=m).commanded] == [
+        "ToggleOn(theme=kettle)"]
+    assert [str(b) for b in problem_of_text("switch on the radio in the kitchen", library, map=m).commanded] == [
+        "Find(theme=radio, ground=kitchen)", "ToggleOn(theme=radio)"]
