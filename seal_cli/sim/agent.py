@@ -891,6 +891,7 @@ class Agent:
                 here = first if not order else between[order[-1]]
                 order += (min(left, key=lambda i: here[i]),)
                 left.discard(order[-1])
+            order = _two_opt(order, first, between)
         return [rooms[i] for i in order] + [r for i, r in enumerate(rooms) if i not in order]
 
     def _swept_house(self, value: str) -> str:
@@ -1484,6 +1485,7 @@ class Agent:
             return float(seen[seeable].mean()) if seeable.any() else 1.0
 
         ended = Outcome(False, f"it saw {100 * share():.0f} % of it in {limit} views")
+        said = False
         for _ in range(limit):
             if until is not None and until():
                 return Outcome(True, "saw what it looked for")
@@ -1500,7 +1502,9 @@ class Agent:
                                 f"it saw {100 * share():.0f} % of it: no place it can drive to sees the rest")
                 break
             k, goal = best
-            self.say("search", f"looks all over the {name}", target=room.name)
+            if not said:        # once a room: its further views are each a "goes to look"
+                self.say("search", f"looks all over the {name}", target=room.name)
+                said = True
             before = len(self.looks)
             self.drive_to((int(cells[k, 0]), int(cells[k, 1])), "goes to look")
             self.look_round(goal)
@@ -1699,6 +1703,24 @@ def default_planner(commanded: Sequence[Binding], library: Library, state: State
 
     result = planning.plan(list(commanded), library, state)
     return [step.binding for step in result.steps]
+
+
+def _two_opt(order: tuple[int, ...], first: np.ndarray, between: np.ndarray) -> tuple[int, ...]:
+    """A tour from the robot improved by reversing stretches of it while that drives less (2-opt): the nearest
+    room next leaves the far end of a long corridor to come back across the house."""
+    def cost(o: Sequence[int]) -> float:
+        return float(first[o[0]] + sum(between[a, b] for a, b in itertools.pairwise(o))) if o else 0.0
+
+    best, best_cost = tuple(order), cost(order)
+    improved = True
+    while improved:
+        improved = False
+        for i in range(len(best) - 1):
+            for j in range(i + 1, len(best)):
+                tried = best[:i] + best[i:j + 1][::-1] + best[j + 1:]
+                if (c := cost(tried)) < best_cost - 1e-9:
+                    best, best_cost, improved = tried, c, True
+    return best
 
 
 def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Scene:
