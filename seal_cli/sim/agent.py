@@ -1315,7 +1315,9 @@ class Agent:
             self.world.following = None
             if not arrived.ok:
                 return arrived
-            outcome = Outcome(True, f"led {args[0]} to {action.args[1]}")
+            where = action.args[1]
+            outcome = Outcome(True, f"led {args[0]} to " + (f"the {spoken(where)}" if self.room(where) is not None
+                                                           else where))
         self.say("act" if outcome.ok else "fail", outcome.message, action=action.name, args=args)
         if outcome.ok:
             self._after(action.name, args, binding)
