@@ -1,6 +1,6 @@
 """Draw the occupancy images of the example houses ``townhouse.yaml``, ``office_floor.yaml``,
 ``cafe.yaml`` and ``clinic.yaml``, and of the context suite's unseen houses ``farmhouse.yaml`` and
-``terrace.yaml`` (run once; the PGMs are committed next to this script).
+``terrace.yaml``, and the L-shaped ``bungalow.yaml`` (run once; the PGMs are committed next to this script).
 
     python maps/make_houses.py          # rewrites maps/<house>.pgm for each of HOUSES
 
@@ -36,6 +36,8 @@ class House:
     outline: Segment
     walls: tuple[tuple[Segment, tuple[tuple[float, float], ...]], ...]
     blocks: tuple[Segment, ...] = ()
+    cutouts: tuple[Segment, ...] = ()
+    """Boxes of the outline that are not the house (an L-shaped plan): left unknown, walled by ``walls``."""
 
     @property
     def origin(self) -> tuple[float, float]:
@@ -133,7 +135,29 @@ TERRACE = House(
     ),
 )
 
-HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC, FARMHOUSE, TERRACE)
+BUNGALOW = House(
+    "bungalow", (0.0, 0.0, 16.0, 12.0),
+    walls=(
+        ((9.0, 6.0, 9.0, 12.0), ()),                           # the L's inner corner: kitchen | outside
+        ((9.0, 6.0, 16.0, 6.0), ()),                           # study, garage | outside
+        ((3.0, 0.0, 3.0, 6.0), ((2.5, 3.5),)),                 # hall | corridor
+        ((0.0, 6.0, 9.0, 6.0), ((1.0, 2.0), (7.0, 8.0))),      # hall | living room, dining room | kitchen
+        ((5.0, 6.0, 5.0, 12.0), ((8.0, 9.0),)),                # living room | kitchen
+        ((3.0, 2.4, 12.0, 2.4), ((4.0, 5.0), (7.0, 8.0), (10.0, 11.0))),  # corridor | utility, bathroom, bedroom
+        ((3.0, 3.6, 12.0, 3.6), ((4.0, 5.5), (10.0, 11.0))),   # corridor | dining room, study
+        ((6.5, 0.0, 6.5, 2.4), ()),                            # utility room | bathroom
+        ((9.0, 0.0, 9.0, 2.4), ()),                            # bathroom | bedroom
+        ((9.0, 3.6, 9.0, 6.0), ()),                            # dining room | study
+        ((12.0, 0.0, 12.0, 6.0), ((2.5, 3.5),)),               # corridor | garage
+    ),
+    blocks=(
+        (13.2, 1.0, 15.2, 5.0),    # the car in the garage
+        (0.1, 11.4, 1.2, 11.925),  # the chimney breast in the living room
+    ),
+    cutouts=((9.0, 6.0, 16.0, 12.0),),
+)
+
+HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC, FARMHOUSE, TERRACE, BUNGALOW)
 
 
 def draw(house: House) -> np.ndarray:
@@ -161,6 +185,8 @@ def draw(house: House) -> np.ndarray:
         image[solid] = OCCUPIED
     for block in house.blocks:
         image[box(*block)] = OCCUPIED
+    for a, b, c, d in house.cutouts:  # outside, and the outline's walls along it: the walls that bound it stay
+        image[(x > a + half) & (x <= c + half) & (y > b + half) & (y <= d + half)] = UNKNOWN
     return image
 
 

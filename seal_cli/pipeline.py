@@ -152,7 +152,7 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
     """
     from seal_cli.maps.model import Robot
     from seal_cli.planning.grounding import MapNames
-    from seal_cli.planning.keeping import where_kept
+    from seal_cli.planning.keeping import back_where_taken, where_kept
     from seal_cli.planning.questions import read_questions
     from seal_cli.sim.agent import Agent, scene_from_map
     from seal_cli.sim.policies import make_policy
@@ -168,9 +168,10 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
                                 vocabulary=vocabulary)
     questions = read_questions(parses[-1], problem.commanded, MapNames(m, library.taxonomy))
     kept = {b: where_kept(library.taxonomy, m, problem.state.class_of(b.elements["theme"])) for b in problem.put_away}
+    kept |= {b: back_where_taken for b in problem.put_back}
     agent = Agent(scene_from_map(m, library), library, policy, rng=rng, budget=budget, observers=observers,
                   classes=problem.state.classes, sweeper=lambda: make_policy("coverage"), questions=questions,
-                  clock=clock, search_end=search_end, put_away=kept)
+                  clock=clock, search_end=search_end, put_away=kept, put_back=problem.put_back)
     executed = [b for p in parses[:-1] for b in build_problem(p, library, map=m.known()).commanded]
     warnings = [*problem.warnings, *unchecked_conditions(parses[-1])]
     for warning in warnings:

@@ -145,12 +145,15 @@ class LexicalUnit:
     the element its direct object fills when that is not the frame's first ("fill the glass with water":
     the glass is where the water goes, FrameNet's Filling), its theme then said with "with". ``apart``: the
     particles with which the verb is a verb of its own that the frame is not ("hang *up*": end a phone call,
-    PropBank's ``hang_up.03``), unless a place is said ("hang up the coat *on the hook*")."""
+    PropBank's ``hang_up.03``), unless a place is said ("hang up the coat *on the hook*"). ``stores``: said
+    with no goal, the unit means "where such a thing is kept" ("put away", "store"), not "down here"
+    (:func:`seal_cli.planning.problem.commanded_frames`)."""
 
     text: str
     where: Where | None = field(default=None, compare=False, repr=False)
     object: str | None = field(default=None, compare=False)   # only added units say it: dumps leave it out
     apart: tuple[str, ...] = field(default=(), compare=False)
+    stores: bool = field(default=False, compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "text", normalize_unit(self.text))

@@ -96,6 +96,9 @@ class Lexicon:
     puts: frozenset[str] = frozenset()
     """Units of frames that put their first element in their goal (``in(theme, goal)``: "put", "bring"): "put
     the pan in the fridge, then *on the stove*" says the verb again with the same thing."""
+    stores: frozenset[str] = frozenset()
+    """Storing units ("put away", "put back": ``stores: true`` in the library): said split around the object,
+    "back" is the BACK rule's place ("put it *back*": where it was taken from), not the unit's particle."""
 
     @classmethod
     def of(cls, library: Library) -> Lexicon:
@@ -120,8 +123,10 @@ class Lexicon:
         puts = frozenset(unit.text for frame in library.frames if frame.elements and any(
             not p.negated and p.predicate == "in" and p.args == (frame.elements[0].role, "goal")
             for p in frame.postconditions) for unit in frame.lexical_units)
+        stores = frozenset(unit.text for frame in library.frames for unit in frame.lexical_units if unit.stores)
         return cls({w: tuple(us) for w, us in units.items()}, _result_words(library),
-                   tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts, apart, can, puts)
+                   tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts, apart, can, puts,
+                   stores)
 
     def verb_at(self, words: Sequence[Word], i: int, stop: int) -> tuple[str, int, int | None] | None:
         """The lexical unit that starts at word ``i``: (unit, words it covers contiguously,
@@ -171,7 +176,7 @@ class Lexicon:
     def _split(self, words: Sequence[Word], i: int, stop: int,
                candidates: Iterable[tuple[str, ...]]) -> tuple[str, int, int] | None:
         for unit in candidates:
-            if len(unit) != 2 or unit[1] not in PARTICLES:
+            if len(unit) != 2 or unit[1] not in PARTICLES or unit[1] == "back" and " ".join(unit) in self.stores:
                 continue
             for j in range(i + 2, stop):
                 if words[j].lower == unit[1] and _stands_alone(words, j) and \

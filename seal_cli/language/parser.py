@@ -268,7 +268,8 @@ def _some_verbs(lexicon: Lexicon, near: str | None = None) -> str:
     close = difflib.get_close_matches(near, verbs, n=3, cutoff=0.6) if near else []
     shown = close + [v for v in ("bring", "find", "go", "pick up", "put", "follow", "tell") if v in verbs
                      and v not in close]
-    shown += [v for v in verbs if v not in shown][: max(0, 8 - len(shown))]
+    shown += [v for v in (*lexicon.can, *verbs) if v in verbs and v not in shown][: max(0, 8 - len(shown))]  # the
+    # frames' own first verbs ("open", "heat"), not the alphabet's first ("abandon")
     return ", ".join(shown[:8]) + (f" ({len(verbs)} in all; `seal frames` lists them)" if len(verbs) > 8 else "")
 
 

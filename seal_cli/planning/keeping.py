@@ -48,13 +48,10 @@ from seal_cli.planning.grounding import kind_of
 if TYPE_CHECKING:
     from seal_cli.maps.model import Map
 
-__all__ = ["APPLIANCES", "STORING_UNITS", "Spot", "kept_place", "put_in_room", "rank", "spots_of", "where_kept"]
+__all__ = ["APPLIANCES", "Spot", "back_where_taken", "kept_place", "put_in_room", "rank", "spots_of", "where_kept"]
 
 APPLIANCES = ("washer", "heater", "cooler", "toggleable")
 """The library's categories of places for doing something to a thing, not for leaving it."""
-
-STORING_UNITS = frozenset({"put away", "store", "stow", "stow away", "tidy away", "clear away"})
-"""Lexical units of Place that, said without a goal, mean "where it is kept" rather than "down here"."""
 
 
 @dataclass(frozen=True)
@@ -166,3 +163,8 @@ def where_kept(taxonomy: Taxonomy, m: Map, cls: str) -> Callable[[str | None], s
         return spot.name if spot is not None else None
 
     return choose
+
+
+def back_where_taken(lies: str | None) -> str | None:
+    """Put "back": where the thing lay when the robot took it (None: not known, the goal stands)."""
+    return class_key(lies) if lies else None

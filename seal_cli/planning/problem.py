@@ -94,6 +94,10 @@ class Problem:
     put_away: tuple[Binding, ...] = ()
     """The commanded Place frames whose goal "put away" chose (:mod:`seal_cli.planning.keeping`): ``seal
     run`` chooses again once the robot knows where the thing lay."""
+    put_back: tuple[Binding, ...] = ()
+    """The commanded frames that put a thing "back" when the map did not say where it lay ("take the cup and
+    put it back" in ``seal run``): their goal is where such a thing is kept until the robot has taken it, then
+    where it took it from."""
 
 
 class Things:
@@ -125,6 +129,8 @@ class Things:
         """More names of classes (a vocabulary file's), by class key."""
         self.put_away: list[Binding] = []
         """The commanded frames whose goal "put away" chose."""
+        self.put_back: list[Binding] = []
+        """The commanded frames that put a thing "back" where the robot will take it from."""
         if map is not None:
             self._read_map(map)
 
@@ -411,7 +417,35 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
     refused = None if asked else names.refusal(phrase.text, said)
     if refused is not None:
         raise _located(refused.message, phrase, text)
+    if not asked and category in FIXTURE_TYPES and not where_words(phrase.text) and not _kinds_known_of(phrase, things):
+        m = things.map
+        tax = things.taxonomy
+
+        def does(cls: str) -> bool:     # by the class or another name of it (a hob is a stove)
+            return any(kind_of(tax, n, category) is True for n in (cls, *tax.names.get(class_key(cls), ())))
+
+        places = [p.name for p in m.places if (p.openable if category == "openable" else does(p.cls))]
+        places += sorted({class_key(c) for c in (*m.priors, *(o.cls for o in m.objects)) if does(c)})
+        what = " ".join(words_of(phrase.text)) or phrase.head
+        raise _located(f"the {m.name} has no {what} (no place, thing or prior of the map names one, and what "
+                       f"opens or switches is not searched for); what it knows will {FIXTURE_TYPES[category]}: "
+                       f"{', '.join(places) or 'nothing'}", phrase, text)
     return None
+
+
+FIXTURE_TYPES = {"openable": "open and close", "toggleable": "switch on and off"}
+"""Element types whose thing is a fixture or an appliance the map would name ("open the car", "turn on the
+telly" on a map with neither): a kind the map knows nothing of is refused, not searched for in the whole house
+(said in a room, "the radio in the kitchen", it is looked for there)."""
+
+
+def _kinds_known_of(phrase: Phrase, things: Things) -> bool:
+    """Whether the map knows the kind of thing a phrase names: a prior, an object or a place of its class (the
+    parse's, or the head's)."""
+    m = things.map
+    assert m is not None
+    known = {class_key(c) for c in (*m.priors, *(o.cls for o in m.objects), *(p.cls for p in m.places))}
+    return any(class_key(c) in known for c in (phrase.cls, phrase.head) if c)
 
 
 def _count(phrase: Phrase, value: str) -> int:
@@ -517,26 +551,38 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         values = {role: _values(_sought_where(evoked, role, things), earlier, things, parse.text,
                                 frame.element(role).type, role in asked, _carried(frame, role))
                   for role, phrase in evoked.elements.items() if not back_unplaced(phrase)}
-        for role, phrase in evoked.elements.items():     # "put it back", no place taken from said
-            if back_unplaced(phrase) and things.map is not None:    # with no map: unsaid, as it always was
-                values[role] = _back_to(phrase, values.get("theme", ()), bindings, things, parse.text)
+        back_later = False
+        backs: dict[str, Phrase | None] = {r: p for r, p in evoked.elements.items() if back_unplaced(p)}
+        goal = evoked.elements.get("goal")
+        if "goal" in frame.roles and (goal is None or goal.default) and _puts_back(frame, evoked.lexical_unit):
+            backs["goal"] = None        # "put back the mug", "put it back": the unit says "back"
+        placed_back: set[str] = set()
+        for role, phrase in backs.items():     # "put it back", no place taken from said
+            if things.map is not None:      # with no map: unsaid, as it always was
+                back = _back_to(phrase, values.get("theme", ()), bindings, things, parse.text)
+                if back is not None:        # else not taken: back where such a thing is kept (_put_away)
+                    values[role], back_later = back
+                    placed_back.add(role)
         for role, phrase in evoked.elements.items():     # a default the parse filled: the map's own, if any
-            if phrase.default and things.map is not None and frame.element(role).default is not None:
+            if (phrase.default and things.map is not None and frame.element(role).default is not None
+                    and role not in placed_back):
                 values[role] = (_default(frame, frame.element(role), evoked, things, parse.text),)
         for role in _counted_roles(frame):      # "count the cups": one Count of the class
             if role in values:
                 values[role] = (things.class_of(values[role][0]),)
         if "theme" in values and asks_whether(parse.text, evoked):    # "are there any cups ...?": one is enough
             values["theme"] = values["theme"][:1]
-        for element in frame.elements:
-            if element.role not in values and element.default is not None:
+        storing = things.map is not None and stores(frame, evoked.lexical_unit)
+        for element in frame.elements:      # (a storing unit's goal is where the thing is kept: _put_away)
+            if element.role not in values and element.default is not None and not (storing and element.role == "goal"):
                 values[element.role] = (_default(frame, element, evoked, things, parse.text),)
-        if things.map is not None and "goal" in frame.roles and "goal" not in values and _returning(evoked):
+        if (things.map is not None and "goal" in frame.roles and "goal" not in values and _returning(evoked)
+                and not stores(frame, evoked.lexical_unit)):
             things.people.add(SPEAKER)          # "go to the kitchen and come back": back to whoever asked
             values["goal"] = (SPEAKER,)
         _to_recipient(frame, values, things)
         _check_types(frame, values, evoked.elements, things, parse.text)
-        kept = _put_away(frame, evoked, values, things, parse.text)
+        kept = {} if placed_back else _put_away(frame, evoked, values, things, parse.text)
         bindings.extend(_where_said_first(frame, evoked, values, library, things, parse.text))
         earlier.append(values)
         roles = [r for r in frame.roles if r in values]
@@ -549,60 +595,97 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
             if kept:        # "put away the cup and the spoon": each where it is kept
                 said["goal"] = kept[said["theme"]]
                 things.put_away.append(frame.bind(said))
+            if back_later:  # back where the robot will have taken it from
+                things.put_back.append(frame.bind(said))
             bindings.append(frame.bind(said))
     return bindings
 
 
-def _back_to(phrase: Phrase, themes: Sequence[str], bindings: Sequence[Binding], things: Things,
-             text: str) -> tuple[str, ...]:
+def _back_to(phrase: Phrase | None, themes: Sequence[str], bindings: Sequence[Binding], things: Things,
+             text: str) -> tuple[tuple[str, ...], bool] | None:
     """Where "back" is when the command said no place the thing was taken from (the parser's ``refers_to``
-    gives that one): on a map, the place the thing lies on, if the robot holds it by then (it held it as
-    the command started, or an earlier frame of the command took it: "take the cup and put it back").
-    Otherwise refused: a thing that lies somewhere is not put *back* there, and a guess would move it. (With no
-    map the element is left unsaid, as before: ALFRED's episodes are planned so.)"""
+    gives that one), on a map, if the robot holds the thing by then (it held it as the command started, or
+    an earlier frame of the command took it: "take the cup and put it back"): the place the thing lies on,
+    and False. When the map does not say where it lies (``seal run``'s robot knows no object until it sees
+    it), where such a thing is kept stands in for it, and True: the robot puts it back where it took it
+    from (:attr:`Problem.put_back`). None when the command neither took the thing nor holds it ("put the
+    mug back"): back where such a thing is kept, as "put away" (:func:`_put_away`). Refused when no place
+    stands in. (With no map the element is left unsaid, as before: ALFRED's episodes are planned so.)"""
+    from seal_cli.planning.keeping import kept_place, spots_of
+
     places: dict[str, None] = {}
+    later = False
+    m = things.map
     for theme in themes:
         taken = theme == (things.name(things.held) if things.held else None) or any(
             b.frame.gets_held("theme") and b.elements.get("theme") == theme for b in bindings)
+        if not taken:
+            return None
+        source = next((b.elements["source"] for b in reversed(bindings) if b.frame.gets_held("theme")
+                       and b.elements.get("theme") == theme and "source" in b.elements), None)
+        if phrase is None and source is not None:    # "take the cup from the table and put back": that table
+            places[source] = None
+            continue
         lay = next((f.args[1] for f in sorted(things.facts, key=str) if f.predicate == "in" and f.args[0] == theme),
                    None)
-        if not taken or lay is None:
-            m = things.map
+        if lay is None and m is not None and not m.objects:
+            spot = kept_place(things.taxonomy, m.priors, things.class_of(theme), spots_of(m), near=m.robot.xy)
+            lay, later = (spot.name, True) if spot is not None else (None, later)
+        if lay is None:
             why = "no place it was taken from is said before it in the command" + (
-                "" if m is None else f", and the robot does not hold {theme}" if not taken else
-                f", and the {m.name} does not say where {theme} lay")
-            raise _located(f"cannot tell where {phrase.text!r} is: {why}; say where it was (\"take it from the "
+                "" if m is None else f", and the {m.name} does not say where {theme} lay")
+            raise _located(f"cannot tell where {_back_said(phrase)} is: {why}; say where it was (\"take it from the "
                            "table and put it back\") or where to put it", phrase, text)
         places[lay] = None
     if not places:
-        raise _located(f"cannot tell where {phrase.text!r} is: nothing is put back", phrase, text)
-    return tuple(places)
+        raise _located(f"cannot tell where {_back_said(phrase)} is: nothing is put back", phrase, text)
+    return tuple(places), later
+
+
+def _back_said(phrase: Phrase | None) -> str:
+    return repr(phrase.text) if phrase is not None else "'back'"
+
+
+def _puts_back(frame: Frame, unit: str) -> bool:
+    """Whether the evoked unit is a storing unit that says "back" ("put back"): the thing goes back where
+    it was taken from, when the command took it, else where it is kept."""
+    return stores(frame, unit) and words_of(unit)[-1:] == ("back",)
+
+
+def stores(frame: Frame, unit: str) -> bool:
+    """Whether the frame's lexical unit ``unit`` (as evoked) is one of its storing units (``stores: true``
+    in the library: "put away", "store")."""
+    said = " ".join(words_of(unit))
+    return any(u.stores and u.text == said for u in frame.lexical_units)
 
 
 def _put_away(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]], things: Things,
               text: str) -> dict[str, str]:
     """The goal of each theme of a Place said with a storing verb and no goal ("put away the cup",
-    "store the apple") on a map: where the map's prior says such a thing is kept, other than where it
+    "store the apple"), or put "back" when the command neither took it nor holds it ("put the mug back"),
+    on a map: where the map's prior says such a thing is kept, other than where it
     lies (:func:`seal_cli.planning.keeping.kept_place`); refused, naming what the map does know where to
     keep, when no place fits. A goal the parser guessed from its learned table (``default``: "put away"
     goes into a side table or a cabinet, whatever the thing) gives way to the map's prior of the thing's
     class, and stands when the map has none. Empty for any other frame."""
-    from seal_cli.planning.keeping import STORING_UNITS, kept_place, prior_of, spots_of
+    from seal_cli.language.reference import back_unplaced
+    from seal_cli.planning.keeping import kept_place, prior_of, spots_of
 
     m = things.map
     said = evoked.elements.get("goal")
     guessed = said is not None and bool(said.default)     # the parser's learned guess of a goal, not words
     if (m is None or "goal" not in frame.roles or ("goal" in values and not guessed) or "theme" not in values
-            or " ".join(words_of(evoked.lexical_unit)) not in STORING_UNITS):
+            or not (stores(frame, evoked.lexical_unit) or said is not None and back_unplaced(said))):
         return {}
+    back = said is not None and back_unplaced(said) or _puts_back(frame, evoked.lexical_unit)
     spots = spots_of(m)
     kept: dict[str, str] = {}
     for theme in values["theme"]:
         cls = things.class_of(theme)
         lies = next((f.args[1] for f in things.facts if f.predicate == "in" and f.args[0] == theme), None)
         spot = kept_place(things.taxonomy, m.priors, cls, spots, lies=lies, near=m.robot.xy)
-        if spot is None and guessed:    # no prior of the class: the guess stands (what "put away" goes in)
-            return {}
+        if spot is None and guessed and not back:    # no prior of the class: the guess stands (what "put away"
+            return {}                                  # goes in), but it is not where the thing goes *back*
         if spot is None:
             known = sorted(class_key(c) for c in m.priors)
             targets = " or ".join(t.replace("_", " ") for t in prior_of(m.priors, cls))
@@ -610,7 +693,8 @@ def _put_away(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]
             why = (f"the {m.name} keeps a {cls} in the {targets}, and there is no table, shelf or cupboard there{but}"
                    if targets else f"the {m.name} has no prior of where a {cls} is kept")
             listed = f" (it knows where to keep {', '.join(known)})" if known else ""
-            raise _located(f"cannot tell where to put away {_said(evoked.elements.get('theme'), theme)}: {why}"
+            verb = "put back" if back else " ".join(words_of(evoked.lexical_unit))
+            raise _located(f"cannot tell where to {verb} {_said(evoked.elements.get('theme'), theme)}: {why}"
                            f"{listed}; say where to put it", evoked.elements.get("theme"), text)
         kept[theme] = spot.name
     return kept
@@ -727,7 +811,8 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
         state = state.apply(binding)
         changed.update((f.positive, text) for f in binding.postconditions)
     return Problem(parse.text, tuple(commanded), state, tuple(unknown_to_map(commanded, things)) if map else (),
-                   tuple(b for b in things.put_away if b in commanded))
+                   tuple(b for b in things.put_away if b in commanded),
+                   tuple(b for b in things.put_back if b in commanded))
 
 
 def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:

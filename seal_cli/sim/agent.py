@@ -29,7 +29,7 @@ from __future__ import annotations
 
 import itertools
 import math
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from datetime import datetime, timedelta
 from typing import Any
@@ -145,7 +145,8 @@ class Agent:
                  classes: Mapping[str, str] | None = None, sweeper: Callable[[], Any] | None = None,
                  questions: Mapping[Binding, Question] | None = None, clock: datetime | None = None,
                  search_end: float | None = None,
-                 put_away: Mapping[Binding, Callable[[str | None], str | None]] | None = None) -> None:
+                 put_away: Mapping[Binding, Callable[[str | None], str | None]] | None = None,
+                 put_back: Iterable[Binding] = ()) -> None:
         self.scene = scene
         self.world = scene.world
         self.grid = scene.grid
@@ -166,6 +167,9 @@ class Agent:
         """Each commanded frame whose goal "put away" chose, and where it would put the thing, as a function
         of where the thing lay (:func:`seal_cli.planning.keeping.where_kept`): the command was grounded
         before the robot saw the thing, so it chooses again once it knows."""
+        self.put_back: set[Binding] = set(put_back)
+        """Those of :attr:`put_away` that put the thing back where the robot took it from ("take the cup and
+        put it back"), not where such a thing is kept."""
         self.picked_from: dict[str, str | None] = {}
         """Where each thing the robot picked up lay."""
         self.started = {i.id: i.at for i in self.world.items.values() if i.movable}
@@ -273,6 +277,8 @@ class Agent:
         (:func:`seal_cli.planning.plan.already_so`) asked of what it has seen: "umbrella_1 is in the
         hallway already" when the frame would only bring a thing into a room where one it knows of lies
         free (not held, not shut in), or put it in or on a place where one it knows of is; None otherwise."""
+        if binding in self.put_back:        # back where it was taken from: the robot puts it there
+            return None
         if binding in self.put_away:        # put away: already so only where such a thing is kept
             return self._kept_already(binding)
         results = [f for f in binding.postconditions if not f.negated and f.predicate == "in" and len(f.args) == 2]
@@ -349,6 +355,11 @@ class Agent:
             return None
         again = todo[0].frame.bind({**todo[0].elements, "goal": goal})
         self.put_away[again] = self.put_away.pop(todo[0])
+        if todo[0] in self.put_back:
+            self.put_back.discard(todo[0])
+            self.put_back.add(again)
+            todo[0] = again
+            return f"{held.id} lay on {lay}: puts it back there"
         todo[0] = again
         return f"{held.id} lay on {lay}: puts it away on {goal}"
 
@@ -412,6 +423,15 @@ class Agent:
         self.steps, self.index = steps, 0
         plan = [str(b) for b in steps]
         self.say("plan", "plan: " + ", ".join(plan) if plan else "nothing to do", plan=plan)
+        for binding in todo:        # a goal chosen before the robot has seen the thing: said as such
+            theme, goal = binding.elements.get("theme"), binding.elements.get("goal")
+            if binding in self.put_back:
+                self.say("plan", f"({goal} stands in for where {theme} lies: it puts {theme} back where it "
+                         "takes it from)")
+            elif binding in self.put_away:
+                kind = spoken(self.class_of(theme or ""))
+                self.say("plan", f"({goal}: where it would keep a {kind}, not yet knowing where the {kind} lies; "
+                         "it chooses again once it sees it)")
         executed: list[str] = []
         replans = 0
         while self.index < len(self.steps):
@@ -867,6 +887,7 @@ class Agent:
                 here = first if not order else between[order[-1]]
                 order += (min(left, key=lambda i: here[i]),)
                 left.discard(order[-1])
+            order = _two_opt(order, first, between)
         return [rooms[i] for i in order] + [r for i, r in enumerate(rooms) if i not in order]
 
     def _swept_house(self, value: str) -> str:
@@ -1290,7 +1311,9 @@ class Agent:
             self.world.following = None
             if not arrived.ok:
                 return arrived
-            outcome = Outcome(True, f"led {args[0]} to {action.args[1]}")
+            where = action.args[1]
+            outcome = Outcome(True, f"led {args[0]} to " + (f"the {spoken(where)}" if self.room(where) is not None
+                                                           else where))
         self.say("act" if outcome.ok else "fail", outcome.message, action=action.name, args=args)
         if outcome.ok:
             self._after(action.name, args, binding)
@@ -1460,6 +1483,7 @@ class Agent:
             return float(seen[seeable].mean()) if seeable.any() else 1.0
 
         ended = Outcome(False, f"it saw {100 * share():.0f} % of it in {limit} views")
+        said = False
         for _ in range(limit):
             if until is not None and until():
                 return Outcome(True, "saw what it looked for")
@@ -1476,7 +1500,9 @@ class Agent:
                                 f"it saw {100 * share():.0f} % of it: no place it can drive to sees the rest")
                 break
             k, goal = best
-            self.say("search", f"looks all over the {name}", target=room.name)
+            if not said:        # once a room: its further views are each a "goes to look"
+                self.say("search", f"looks all over the {name}", target=room.name)
+                said = True
             before = len(self.looks)
             self.drive_to((int(cells[k, 0]), int(cells[k, 1])), "goes to look")
             self.look_round(goal)
@@ -1677,11 +1703,30 @@ def default_planner(commanded: Sequence[Binding], library: Library, state: State
     return [step.binding for step in result.steps]
 
 
+def _two_opt(order: tuple[int, ...], first: np.ndarray, between: np.ndarray) -> tuple[int, ...]:
+    """A tour from the robot improved by reversing stretches of it while that drives less (2-opt): the nearest
+    room next leaves the far end of a long corridor to come back across the house."""
+    def cost(o: Sequence[int]) -> float:
+        return float(first[o[0]] + sum(between[a, b] for a, b in itertools.pairwise(o))) if o else 0.0
+
+    best, best_cost = tuple(order), cost(order)
+    improved = True
+    while improved:
+        improved = False
+        for i in range(len(best) - 1):
+            for j in range(i + 1, len(best)):
+                tried = best[:i] + best[i:j + 1][::-1] + best[j + 1:]
+                if (c := cost(tried)) < best_cost - 1e-9:
+                    best, best_cost, improved = tried, c, True
+    return best
+
+
 def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Scene:
     """A world built from a seal map's places, ground-truth objects and people (the speaker, "me",
     stands at ``speaker.at`` or where the robot starts), on its free space. A place's ``reach`` is
     how far the robot can act on it and on what is in or on it. A place switches on and off unless
-    the library knows its class does not (a table; a dryer nobody lists does, as the planner allows)."""
+    the library knows its class does not (a table; a dryer nobody lists does, as the planner allows); a
+    thing only when the library knows its class does (a kettle standing on the worktop)."""
     from scipy.ndimage import binary_erosion
 
     from seal_cli.sensing.model import RangeSensor
@@ -1699,7 +1744,8 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
         counts[o.cls] = counts.get(o.cls, 0) + 1
         parent = names.get(class_key(o.inside)) if o.inside else None
         items.append(Item(f"{o.cls}_{counts[o.cls]}", o.cls, o.at, movable=True, parent=parent,
-                          receptacle=taxonomy.is_a(o.cls, "container") is True))
+                          receptacle=taxonomy.is_a(o.cls, "container") is True,
+                          toggleable=kind_of(taxonomy, o.cls, "toggleable") is True))   # a kettle, a lamp
     people = [(p.key, m.person_at(p)) for p in m.people]
     items += [Item(key, PERSON, at, movable=False) for key, at in [*people, (SPEAKER, m.speaker_at)]]
     holding = None

@@ -203,7 +203,8 @@ def _short(text: str) -> str:
 
 def _acts(records: Sequence[Record]) -> list[tuple[tuple[float, float, float], str]]:
     """What the robot did, to label where it did it: each action and answer, and where a frame that only
-    drives (Go) ended, with the drive's line ("goes to the bedroom (by desk_1)", its distance left off)."""
+    drives (Go) ended, with the drive's line ("goes to the bedroom (by desk_1)", its distance left off). A place
+    opened to look in and closed again where it stood is one label ("looked into fridge_1; inside: milk_1")."""
     out: list[tuple[tuple[float, float, float], str]] = []
     drive: Record | None = None
     acted = False
@@ -212,7 +213,11 @@ def _acts(records: Sequence[Record]) -> list[tuple[tuple[float, float, float], s
             drive, acted = None, False
         elif record.kind in ("act", "answer"):     # what it did, and what it found out there
             said = record.text.split(": ", 1)[-1]      # "answer: 1 cup ..." and "counted: 1 cup ...": once
-            if not (out and out[-1][1].split(": ", 1)[-1] == said and ": " in record.text):
+            shut = record.text.removeprefix("closed ")
+            if out and shut != record.text and out[-1][0] == record.pose and \
+                    re.match(rf"opened {re.escape(shut)}(;|$)", out[-1][1]):   # opened, looked in, closed: one label
+                out[-1] = (record.pose, "looked into " + out[-1][1].removeprefix("opened "))
+            elif not (out and out[-1][1].split(": ", 1)[-1] == said and ": " in record.text):
                 out.append((record.pose, record.text))
             acted = True
         elif record.kind == "go":
@@ -238,7 +243,7 @@ def _draw_run(ax: Any, agent: Agent) -> None:
         ax.plot(at[0], at[1], "D", color="#2ca02c", markeredgecolor="black", markersize=7, zorder=7,
                 **({"label": "where it acted (numbered)"} if k == 0 else {}))
         left = at[0] > (xmin + xmax) / 2           # labels point into the map, on a white card over it
-        ax.annotate("\n".join(_short(t) for t in texts), at, xytext=(-8 if left else 8, 6),
+        ax.annotate("\n".join(_short(t) for t in texts), at, xytext=(-11 if left else 11, 6),
                     textcoords="offset points", fontsize=7, color="#1a6e1a", zorder=LABEL_Z, gid=LABEL,
                     ha="right" if left else "left", va="bottom",
                     bbox={"boxstyle": "round,pad=0.25", "fc": "white", "ec": "#2ca02c", "alpha": 0.9, "lw": 0.6},

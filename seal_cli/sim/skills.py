@@ -270,23 +270,22 @@ class SkillRunner:
         return outcome
 
     def enter(self, name: str) -> Outcome:
-        """Go into a room of the map: to its nearest open place (where a thing can be put down), or
-        else to its nearest free cell."""
+        """Go into a room of the map, as the agent's ``navigate`` does (:meth:`Agent.go_to`): holding a thing,
+        to the place there where such a thing is put (so "put the cup in the kitchen" is within reach next);
+        else into the room, near its middle (:meth:`Agent.into_room`), not to its nearest appliance."""
         agent, world = self.agent, self.world
         room = agent.room(name)
-        place = agent.surface_in(room)
+        held = world.robot.holding
+        place = agent.surface_in(room, world.items[held].key) if held is not None else None
         if place is not None:
             return self.execute(Skill(f"go to the {words(agent.known[place].cls)}", "go", (place,)))
-        inside = np.flatnonzero(room.contains(agent.grid.free_points))
-        cells = agent.grid.free_cells[inside]
-        field_ = agent.distances()
-        costs = field_[cells[:, 0], cells[:, 1]] if len(cells) else np.zeros(0)
-        if not len(costs) or not np.isfinite(costs.min()):
+        if bool(room.contains([world.robot.pose[:2]])[0]):
             world.step += 1
-            return Outcome(False, f"cannot drive into the {words(name)}")
-        k = int(np.argmin(costs))
-        agent.drive_to((int(cells[k, 0]), int(cells[k, 1])), f"goes into {name}")
-        return Outcome(True, f"in {name}")
+            return Outcome(True, f"in {name}")
+        outcome = agent.into_room(room, name)
+        if not outcome.ok:
+            world.step += 1
+        return outcome
 
     def find(self, cls: str) -> Outcome:
         """Go to the nearest known thing of the class; with none known, explore (the coverage

@@ -71,6 +71,22 @@ def test_units_for_a_frame_of_another_file_join_it(tmp_path: Path) -> None:
     assert [u.text for u in library.frame("Give").lexical_units] == ["give", "hand", "pass on"]
 
 
+def test_a_unit_says_whether_it_stores(tmp_path: Path) -> None:
+    (tmp_path / "give.yaml").write_text(FRAME)
+    (tmp_path / "more.yaml").write_text("lexical_units:\n  - {frame: Give, unit: pass on, source: mine, stores: true}\n"
+                                        "  - {frame: Give, unit: pass over, source: mine, stores: false}\n")
+    library, problems = read_library([tmp_path])
+    assert problems == []
+    assert {u.text: u.stores for u in library.frame("Give").lexical_units} == {
+        "give": False, "hand": False, "pass on": True, "pass over": False}
+
+
+def test_the_standard_storing_units_are_the_library_s() -> None:
+    library, _ = read_library([ROOT / "framelib"])
+    assert sorted(u.text for u in library.frame("Place").lexical_units if u.stores) == [
+        "put away", "put back", "store", "stow"]
+
+
 @pytest.mark.parametrize(("units", "words", "line"), [
     ("  - {frame: Gve, unit: pass on, source: mine}\n", "which no file defines (did you mean 'Give'?)", 2),
     ("  - {frame: Give, unit: hand, source: mine}\n", "'hand' is already one of Give's", 2),
@@ -80,6 +96,7 @@ def test_units_for_a_frame_of_another_file_join_it(tmp_path: Path) -> None:
     ("  - {frame: Give, unit: pass on, source: a, weight: 2}\n", "weight", 2),
     ("  - {frame: Give, unit: 'pass 2', source: a}\n", "one or more words of letters", 2),
     ("  - {frame: Give, unit: pass on, source: a, object: goal}\n", "Give has no element 'goal' for its object", 2),
+    ("  - {frame: Give, unit: pass on, source: a, stores: maybe}\n", "stores must be true or false", 2),
 ])
 def test_bad_units_are_problems_with_their_line(tmp_path: Path, units: str, words: str, line: int) -> None:
     (tmp_path / "give.yaml").write_text(FRAME)

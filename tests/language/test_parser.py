@@ -372,6 +372,15 @@ def test_bad_commands_are_clear_errors(library: Library, text: str, column: int,
     assert error.to_json() == {"message": error.message, "column": column, "expected": error.expected}
 
 
+def test_the_empty_commands_examples_are_verbs_a_robot_is_asked(library: Library) -> None:
+    """The examples after the usual seven are the frames' own first verbs, not the alphabet's ("abandon")."""
+    with pytest.raises(CommandError) as caught:
+        parse_command("", library)
+    said = caught.value.message.split("such as ")[1].split(" (")[0].split(", ")
+    assert said[:7] == ["bring", "find", "go", "pick up", "put", "follow", "tell"]
+    assert said[7] == library.frames[0].lexical_units[0].text and "abandon" not in said
+
+
 def test_unknown_verbs_list_the_known_ones(library: Library) -> None:
     with pytest.raises(CommandError) as caught:
         parse_command("brin me the cup", library)

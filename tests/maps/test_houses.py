@@ -24,7 +24,7 @@ def make_houses():  # type: ignore[no-untyped-def]
     return module
 
 
-@pytest.mark.parametrize("name", ["townhouse", "office_floor", "cafe", "clinic", "farmhouse", "terrace"])
+@pytest.mark.parametrize("name", ["townhouse", "office_floor", "cafe", "clinic", "farmhouse", "terrace", "bungalow"])
 def test_the_committed_image_is_what_the_script_draws(name: str) -> None:
     module = make_houses()
     house = next(h for h in module.HOUSES if h.name == name)
@@ -32,7 +32,7 @@ def test_the_committed_image_is_what_the_script_draws(name: str) -> None:
     assert np.array_equal(read_pgm((MAPS / f"{name}.pgm").read_bytes()), drawn.astype(float))
 
 
-@pytest.mark.parametrize("name", ["townhouse", "office_floor", "cafe", "clinic", "farmhouse", "terrace"])
+@pytest.mark.parametrize("name", ["townhouse", "office_floor", "cafe", "clinic", "farmhouse", "terrace", "bungalow"])
 def test_a_house_is_a_clean_map_whose_rooms_are_joined_by_doors(name: str) -> None:
     from seal_cli.frames.reading import standard_library
     from seal_cli.sim.agent import scene_from_map
@@ -48,3 +48,15 @@ def test_a_house_is_a_clean_map_whose_rooms_are_joined_by_doors(name: str) -> No
     for place in m.places:        # and every place is in a room, with the robot able to stand by it
         assert place.room is not None, place.name
     assert len({p.name for p in m.people}) >= 2 and any(len(r.name.split("_")) > 1 for r in m.rooms)
+
+
+def test_an_l_shaped_house_leaves_its_missing_corner_unknown() -> None:
+    """The bungalow's yard (x > 9, y > 6) is no part of the house: unknown, walled off from the kitchen and the
+    study, and nothing of it can be driven on."""
+    m = load_map(MAPS / "bungalow.yaml")
+    assert not m.grid.is_free((12.5, 9.0)) and m.grid.is_free((7.0, 9.0)) and m.grid.is_free((12.5, 4.5))
+    module = make_houses()
+    image = module.draw(next(h for h in module.HOUSES if h.name == "bungalow"))
+    row = image.shape[0] - 1 - round((9.0 + 1.0) / module.RESOLUTION)      # y = 9 m, from the top
+    col = round((12.5 + 1.0) / module.RESOLUTION)
+    assert image[row, col] == module.UNKNOWN

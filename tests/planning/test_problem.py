@@ -219,11 +219,33 @@ def test_back_is_where_the_thing_was_taken_from(library: Library) -> None:
     assert _goals("take the cup and put it back", library) == [None, "coffee_table_1"]
     # held as the command starts: where it lay
     assert _goals("put it back", library, "cafe", holding="mug") == ["counter_1"]
-    with pytest.raises(SealError, match=r"column 13: cannot tell where 'back' is: no place it was taken from is "
-                                        r"said before it in the command, and the robot does not hold cup"):
-        _goals("put the cup back", library)
+    # neither taken nor held: back where such a thing is kept, as "put away" (the cup is so already)
+    assert _goals("put the cup back", library) == ["coffee_table_1"]
+    assert _goals("put back the spoon", library) == ["counter_1"]
+    with pytest.raises(SealError, match=r"cannot tell where to put back 'the mug' \(mug\): the apartment has no "
+                                        r"prior of where a mug is kept"):
+        _goals("put back the mug", library)
     with pytest.raises(SealError, match=r"cannot tell where 'back' is: .*the cafe does not say where cup lay"):
         _goals("take the cup and put it back", library, "cafe")
+
+
+def test_back_in_a_run_is_where_the_robot_took_the_thing_from(library: Library) -> None:
+    """The robot knows no object before it sees it: the goal stands in until the Pick, then is where it took
+    the thing from (not where such a thing is kept, nor refused)."""
+    import numpy as np
+
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.policies import make_policy
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "apartment.yaml")
+    problem = problem_of_text("take the cup and put it back", library, map=m.known())
+    assert [str(b) for b in problem.put_back] == ["Place(theme=cup, goal=desk_1)"]
+    agent, result = run_on_map(m, "take the cup and put it back", library, make_policy("sefm", 100),
+                               rng=np.random.default_rng(0))
+    assert result.completed
+    assert agent.world.items["cup_1"].parent == "coffee_table_1"
+    assert any("cup_1 lay on coffee_table_1: puts it back there" in r.text for r in agent.records)
 
 
 def test_a_place_pointed_at_first_is_the_place_before_it_or_refused(library: Library) -> None:
@@ -235,3 +257,37 @@ def test_a_place_pointed_at_first_is_the_place_before_it_or_refused(library: Lib
     assert found.elements["ground"] == "kitchen"
     with pytest.raises(SealError, match=r"column 1: cannot tell where 'in there' is: no place before it"):
         problem_of_text("in there, find the spoon", library, map=m)
+
+
+def test_a_library_of_ones_own_says_which_units_store(library: Library, tmp_path: Path) -> None:
+    """"stash the spoon" puts it where spoons are kept (on the counter: so already) once a library of one's own
+    adds the unit as storing; as a plain unit it is "put", and goes where the parser guesses."""
+    from seal_cli.frames.reading import load_library
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import framelib_dir
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "apartment.yaml")
+    for stores, goal in (("false", None), ("true", "counter_1")):
+        (tmp_path / "mine.yaml").write_text(f"lexical_units:\n  - {{frame: Place, unit: stash, source: mine, "
+                                            f"stores: {stores}}}\n")
+        mine = load_library([framelib_dir(), tmp_path / "mine.yaml"])
+        (place,) = problem_of_text("stash the spoon", mine, map=m).commanded
+        assert (place.elements.get("goal") == "counter_1") == (goal is not None), place
+
+
+def test_a_thing_to_open_or_switch_the_map_knows_nothing_of_is_refused(library: Library) -> None:
+    """"open the car", "turn on the telly" on the bungalow: no place, thing or prior names one, and what opens or
+    switches is not searched for in the whole house (it drove 64 m before); said in a room, it is looked for there."""
+    from seal_cli.errors import SealError
+    from seal_cli.maps.formats.map_server import load_map
+
+    m = load_map("bungalow")
+    with pytest.raises(SealError, match=r"column 6: the bungalow has no car \(.*what it knows will open and close: "
+                                        r"washing_machine_1, .*larder_1, fridge_1"):
+        problem_of_text("open the car", library, map=m)
+    with pytest.raises(SealError, match=r"the bungalow has no telly .*switch on and off: .*hob_1, kettle"):
+        problem_of_text("turn on the telly", library, map=m)
+    assert [str(b) for b in problem_of_text("switch on the kettle", library, map=m).commanded] == [
+        "ToggleOn(theme=kettle)"]
+    assert [str(b) for b in problem_of_text("switch on the radio in the kitchen", library, map=m).commanded] == [
+        "Find(theme=radio, ground=kitchen)", "ToggleOn(theme=radio)"]

@@ -300,3 +300,30 @@ def test_a_thing_put_in_place_for_one_name_does_not_make_the_next_names_frame_al
                                         make_policy("sefm"), rng=np.random.default_rng(0))
     assert not result.completed and "no sock found" in result.reason
     assert not any("needs no doing" in r.text for r in agent.records)
+
+
+def test_a_thing_of_a_class_that_switches_is_switched_where_it_stands(library: Library) -> None:
+    """A kettle is an object on the bungalow's worktop, not a place: "switch on the kettle" switches it on
+    (before, every object was refused: "kettle_1 cannot be switched on"); a mug still cannot be."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.agent import scene_from_map
+
+    m = load_map("bungalow")
+    items = scene_from_map(m, library).world.items
+    assert items["kettle_1"].toggleable and not items["mug_1"].toggleable
+    agent, result = run_on_map(m, "switch on the kettle", library, make_policy("sefm", 100),
+                               rng=np.random.default_rng(0))
+    assert result.completed and "on" in agent.world.items["kettle_1"].states
+
+
+def test_a_tour_of_many_rooms_is_improved_past_the_nearest_room_next() -> None:
+    """Rooms at -1.5, 1 and 3 m along a corridor, the robot at 0: nearest next goes to 1, back to -1.5 and on
+    to 3 (8 m); reversing the first stretch (2-opt) goes to -1.5 first, then 1 and 3 (6 m)."""
+    from seal_cli.sim.agent import _two_opt
+
+    xs = np.array([-1.5, 1.0, 3.0])
+    first = np.abs(xs)
+    between = np.abs(xs[:, None] - xs[None, :])
+    assert _two_opt((1, 0, 2), first, between) == (0, 1, 2)
+    assert _two_opt((0, 1, 2), first, between) == (0, 1, 2)     # a tour no reversal shortens stays

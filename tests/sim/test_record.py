@@ -87,6 +87,10 @@ def test_the_png_labels_where_a_go_ended_as_well_as_each_action(library: Any) ->
     state, _ = pipeline.run_on_map(apartment, "is the fridge open?", library, make_policy("oracle"),
                                    rng=np.random.default_rng(0))
     assert [text for _, text in _acts(state.records)] == ["looked at fridge_1", "answer: no: fridge_1 is closed"]
+    peeked, _ = pipeline.run_on_map(apartment, "how many cups are in the kitchen?", library, make_policy("sefm", 50),
+                                    rng=np.random.default_rng(0))
+    labels = [text for _, text in _acts(peeked.records)]      # opened, looked in, closed: one label, not two
+    assert labels[:2] == ["looked into fridge_1; inside: apple_1", "looked into microwave_1; it is empty"]
 
 
 def test_the_png_legend_names_every_mark_and_the_end_is_drawn_over_the_last_action(library: Any) -> None:

@@ -40,9 +40,10 @@ FRAME_KEYS = ("frame", "description", "framenet", "lexical_units", "elements", "
 ELEMENT_KEYS = ("type", "default")
 TOP_KEYS = ("frames", "categories", "world", "synonyms", "lexical_units")
 UNIT_KEYS = ("frame", "unit", "source")
-UNIT_OPTIONAL = ("object", "apart")
-"""An added unit may say which element its direct object fills (``object: goal``), and the particles with which
-its verb is another verb (``apart: "on out up"``, words separated by spaces)."""
+UNIT_OPTIONAL = ("object", "apart", "stores")
+"""An added unit may say which element its direct object fills (``object: goal``), the particles with which
+its verb is another verb (``apart: "on out up"``, words separated by spaces), and whether, said with no goal,
+it puts its thing where such a thing is kept (``stores: true``: "put away", "store")."""
 
 T = TypeVar("T")
 
@@ -119,8 +120,9 @@ class _Reader(NodeReader):
         """Lexical units added to frames defined elsewhere, each with where it comes from
         (``framelib/derived_units.yaml``: ``{frame: Place, unit: relocate, source: ...}``)."""
         for item in self.items(node, "lexical_units"):
-            found = {key: self.string(value, key)
-                     for key, _, value in self.pairs(item, "a lexical unit", UNIT_KEYS + UNIT_OPTIONAL)}
+            found: dict[str, object] = {}
+            for key, _, value in self.pairs(item, "a lexical unit", UNIT_KEYS + UNIT_OPTIONAL):
+                found[key] = self.flag(value, key) if key == "stores" else self.string(value, key)
             if not isinstance(item, yaml.MappingNode):
                 continue
             missing = [key for key in UNIT_KEYS if not found.get(key)]
@@ -131,9 +133,16 @@ class _Reader(NodeReader):
             said = found.get("object")
             apart = tuple(str(found.get("apart") or "").split())
             unit = self.build(functools.partial(LexicalUnit, str(found["unit"]), self.where(item),
-                                                str(said) if said else None, apart), item)
+                                                str(said) if said else None, apart, bool(found.get("stores"))), item)
             if unit is not None:
                 self.contents.units.append((str(found["frame"]), unit))
+
+    def flag(self, node: yaml.Node, what: str) -> bool | None:
+        """A yes/no value (``true`` or ``false``)."""
+        if isinstance(node, yaml.ScalarNode) and node.tag == "tag:yaml.org,2002:bool":
+            return node.value.lower() in ("true", "yes", "on")
+        self.problem(f"{what} must be true or false", node)
+        return None
 
     def frame(self, node: yaml.Node) -> None:
         fields: dict[str, object] = {}

@@ -269,3 +269,20 @@ def test_saycan_with_wordllama_and_the_examples_does_a_pick_and_place(library: L
     suite = load_suite(DATA, "valid_seen", limit=1, types=["pick_heat_then_place_in_recep"])
     outcome = tasks.run_episode(suite.episodes[0], suite, library, ["saycan"], seed=0)[0]
     assert outcome.success, outcome.reason
+
+
+def test_going_to_a_room_ends_inside_it_unless_a_thing_is_to_be_put_down_there(library: Library) -> None:
+    """"go to the kitchen" with empty hands drives into the kitchen near its middle (as the agent's Go does),
+    not to its nearest appliance; holding a thing, to where such a thing is put there, within reach of it."""
+    scene = kitchen(library)
+    runner = SkillRunner(scene, library, Scripted(["go to the kitchen"]), rng=np.random.default_rng(0),
+                         budget=Budget())
+    result = runner.run("go to the kitchen")
+    assert "go to the kitchen" in result.history
+    agent = runner.agent
+    kitchen_room = agent.room("kitchen")
+    x, y = scene.world.robot.pose[:2]
+    assert bool(kitchen_room.contains([(x, y)])[0])
+    cx, cy = kitchen_room.centroid
+    assert np.hypot(x - cx, y - cy) < 1.5     # near the middle (5.5, -3.0), not by the sink or the fridge
+    assert any("goes to the kitchen (near its middle)" in r.text for r in agent.records)
