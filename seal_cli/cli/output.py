@@ -18,7 +18,8 @@ from seal_cli.errors import SealError, SealErrors
 if TYPE_CHECKING:
     from rich.console import Console
 
-__all__ = ["PIPE_WIDTH", "LazyConsole", "emit_json", "err", "out", "progress_bar", "report", "run_command"]
+__all__ = ["PIPE_WIDTH", "LazyConsole", "dump_json", "emit_json", "err", "out", "printable_streams", "progress_bar",
+           "report", "run_command"]
 
 PIPE_WIDTH = 200
 """Columns of the output when it is not a terminal (a file, a pipe) and ``COLUMNS`` is not set."""
@@ -82,6 +83,7 @@ def run_command(function: Callable[[], int | None]) -> int:
 
     clean_up_on_signals()
     _closed_streams_to_null()
+    _quiet_arithmetic()
     try:
         code = function()
         if code in (0, None):
@@ -111,6 +113,16 @@ def run_command(function: Callable[[], int | None]) -> int:
         return 1
     finally:
         remove_temporaries()  # of outputs planned but never written: the command failed first
+
+
+def _quiet_arithmetic() -> None:
+    """numpy's RuntimeWarnings (an overflow in a product of coordinates of 1e300) are no message for a
+    user: the checks that follow say what is wrong with the input, at its line and column. Kept when
+    the user asked for warnings (``-W``, ``PYTHONWARNINGS``)."""
+    import warnings
+
+    if not sys.warnoptions:
+        warnings.simplefilter("ignore", RuntimeWarning)
 
 
 def _closed_streams_to_null() -> None:
@@ -148,9 +160,31 @@ def progress_bar(what: str, total: int | None = None) -> Iterator[Callable[[int,
         yield lambda done, total: progress.update(bar, completed=done, total=total)
 
 
-def emit_json(data: Any) -> None:
-    """One JSON document on stdout."""
+def _unicode(stream: Any) -> bool:
+    """Whether a stream's encoding holds every character (UTF-8, -16 or -32)."""
+    encoding = (getattr(stream, "encoding", None) or "utf-8").lower().replace("-", "").replace("_", "")
+    return encoding.startswith("utf")
+
+
+def printable_streams() -> None:
+    """Standard output and error whose encoding cannot hold every character (``PYTHONIOENCODING=ascii``,
+    a Latin-1 locale) write what they cannot hold as ``\\xe9`` escapes instead of failing the command
+    with a UnicodeEncodeError; JSON on such an output escapes it as JSON does (:func:`dump_json`)."""
+    for stream in (sys.stdout, sys.stderr):
+        if stream is not None and not _unicode(stream):
+            with contextlib.suppress(AttributeError, ValueError, OSError):
+                stream.reconfigure(errors="backslashreplace")  # type: ignore[union-attr]
+
+
+def dump_json(data: Any) -> str:
+    """One JSON document as text for stdout: characters as they are on a UTF-8 output, ``\\u00e9``
+    escapes on an output whose encoding cannot hold them (still the same JSON)."""
     import json
 
-    sys.stdout.write(json.dumps(data, ensure_ascii=False) + "\n")
+    return json.dumps(data, ensure_ascii=not _unicode(sys.stdout))
+
+
+def emit_json(data: Any) -> None:
+    """One JSON document on stdout."""
+    sys.stdout.write(dump_json(data) + "\n")
     sys.stdout.flush()

@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Any
 import typer
 
 from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
+from seal_cli.cli.output import dump_json
 from seal_cli.cli.parse_view import _escape, print_parse, summary
 from seal_cli.errors import SealError, Where
 
@@ -86,7 +87,7 @@ def parse(
     if file is not None:
         lines = _read_lines(file)
         if as_json:
-            sys.stdout.write("".join(json.dumps(result, ensure_ascii=False) + "\n"
+            sys.stdout.write("".join(dump_json(result) + "\n"
                                      for result in parse_lines(lines, library, vocab)))
             sys.stdout.flush()
             return
