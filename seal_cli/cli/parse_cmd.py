@@ -110,11 +110,15 @@ def parse(
 
 def _alfred_vocabulary(constants: Path) -> Vocabulary:
     """The classes of ALFRED's constants as a vocabulary (what the scorer grounds in)."""
+    from seal_cli.fileio import read_json
     from seal_cli.language.grounding import Vocabulary
 
+    raw = read_json(constants, "ALFRED constants file")
     try:
-        classes = json.loads(constants.read_text(encoding="utf-8"))["OBJECTS"]
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError, KeyError, TypeError) as error:
+        classes = raw["OBJECTS"]
+        if not isinstance(classes, list):
+            raise TypeError(f"OBJECTS is {type(classes).__name__}, not a list")
+    except (KeyError, TypeError) as error:
         raise SealError(f"cannot read the ALFRED constants' OBJECTS: {error}", Where(str(constants))) from None
     return Vocabulary.of([str(c) for c in classes])
 
