@@ -18,7 +18,8 @@ removed, before the command returns (:mod:`seal_cli.fileio`).
 
 An interrupt (Ctrl-C, SIGINT) while the command line is still being imported, before a command runs
 (a second or more on a loaded machine), ends seal as one during a command does: ``interrupted``,
-exit code 130, no traceback. Standard streams whose encoding cannot hold every character
+exit code 130, no traceback; one after the command has finished (its outputs in place) leaves the command's
+own exit code. Standard streams whose encoding cannot hold every character
 (``PYTHONIOENCODING=ascii``, a Latin-1 terminal) are set up first (:func:`seal_cli.cli.output.
 printable_streams`).
 """
@@ -48,9 +49,12 @@ def main() -> None:
             gc.freeze()
             gc.enable()
         run()
-    except KeyboardInterrupt:  # before a command ran (importing), or after it ended: as during one
+    except KeyboardInterrupt:  # before a command ran (importing): as during one; after it ended: its own code
+        from seal_cli.cli import output
         from seal_cli.fileio import remove_temporaries
 
+        if output.FINISHED is not None:
+            sys.exit(output.FINISHED)
         remove_temporaries()
         sys.stderr.write("interrupted\n")
         sys.exit(130)

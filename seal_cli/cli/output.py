@@ -75,24 +75,35 @@ def report(error: SealError) -> None:
         err.print(f"error: {problem}", markup=False)
 
 
+FINISHED: int | None = None
+"""The exit code of the command once it has finished (its outputs renamed into place), else None: an
+interrupt (SIGINT) that arrives after it, while the process ends, leaves that code as it is."""
+
+
 def run_command(function: Callable[[], int | None]) -> int:
     """Run a command's body; its exit code. The failures every command shares become one message on
     stderr and an exit code: a SealError 1, an interrupt 130, a closed pipe 0 (the reader has what it
     wanted), memory or nesting that runs out 1; our temporaries of outputs never written are removed."""
     from seal_cli.fileio import clean_up_on_signals, remove_temporaries
 
+    global FINISHED
+
     clean_up_on_signals()
     _closed_streams_to_null()
     _quiet_arithmetic()
+    FINISHED = None
     try:
         code = function()
-        if code in (0, None):
+        FINISHED = code = code if isinstance(code, int) else 0  # its outputs are in place: the work is done
+        if code == 0:
             sys.stdout.flush()  # a full disk must fail the command, not the interpreter's exit
-        return code if isinstance(code, int) else 0
+        return code
     except SealError as error:
         report(error)
         return 1
     except KeyboardInterrupt:
+        if FINISHED is not None:  # an interrupt after the command finished changes nothing it did
+            return FINISHED
         err.print("interrupted")
         return 130
     except BrokenPipeError:

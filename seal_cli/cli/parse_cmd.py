@@ -167,12 +167,13 @@ def bench_parse(
             argv = [str(folder / "score_parse.py"), str(path)]
         if not Path(argv[0]).is_file():
             raise SealError(f"scorer not found: {argv[0]} (give --scorers DIR)", Where(argv[0]))
+        # the constants are checked before the scorer reads them (a FIFO there would hang it)
+        vocab = _alfred_vocabulary(Path(argv[2])) if path.suffix == ".tsv" else None
         err.print(f"scoring {path} ...")
         run = subprocess.run([sys.executable, *argv, "--seal", seal, *(["--json"] if as_json else [])],
                              capture_output=True, text=True)
         if run.returncode and "Traceback (most recent call last)" in run.stderr:  # it crashed (exit 1 is a low score)
             raise SealError(f"the scorer failed on {path}: {run.stderr.strip().splitlines()[-1]}", Where(str(path)))
-        vocab = _alfred_vocabulary(Path(argv[2])) if path.suffix == ".tsv" else None
         figures = measure(commands_of(path), library, vocab)
         if as_json:
             lines = run.stdout.strip().splitlines()
