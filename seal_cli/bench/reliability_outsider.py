@@ -16,7 +16,8 @@ hand-written, the reviewer's, the new user's or the generated cases held, each f
   20,000 × 20,000 was handed to the decoder);
 - ALFRED-2D data: a ``floorplans.json`` that is a FIFO hung ``bench tasks``, a Latin-1 byte in a trials file was
   a traceback, JSON errors had no line and column (:func:`seal_cli.fileio.read_json`,
-  :func:`seal_cli.fileio.stream_lines`);
+  :func:`seal_cli.fileio.stream_lines`); a FIFO for ``bench parse --constants`` hung the scorer; ``bench e2e
+  --data`` without the AWS house (or with a FIFO for its image) was reported in a temporary map file;
 - outputs onto ``/dev/full``.
 """
 
@@ -175,6 +176,12 @@ def outsider_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
                codes=(1,), says=r"d/trials_x\.jsonl:2:15: trial is not JSON")
     yield Case("O bench parse: --constants is a FIFO", ("bench", "parse", "--corpus", "c.tsv", "--constants", "k.json"),
                (("c.tsv", b"put the cup in the sink\tx\n"), ("k.json", "fifo")), codes=(1,), says=r"k\.json")
+    e2e = ("bench", "e2e", "--data", "e", "--map", "aws", "--limit", "1", "--jobs", "1")
+    yield Case("O bench e2e: the AWS house's image is a FIFO", e2e, (("e/maps/aws_small_house/map.pgm", "fifo"),),
+               codes=(1,), says=r"(?m)^error: e/maps/aws_small_house/map\.pgm: cannot read this map image: it is a "
+                                r"FIFO")
+    yield Case("O bench e2e: no AWS house in --data", e2e, (("e", "dir"),), codes=(1,),
+               says=r"(?m)^error: e/maps/aws_small_house/map\.pgm: the AWS small house's map is not there")
     # -- outputs onto a full device ---------------------------------------------------------------------------
     yield Case("O map --png /dev/full", ("map", "m.yaml", "--png", "/dev/full"), both, codes=(1,), keep=inputs,
                says=r"cannot write --png /dev/full: No space left on device")
