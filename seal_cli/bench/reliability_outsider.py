@@ -17,7 +17,8 @@ hand-written, the reviewer's, the new user's or the generated cases held, each f
 - ALFRED-2D data: a ``floorplans.json`` that is a FIFO hung ``bench tasks``, a Latin-1 byte in a trials file was
   a traceback, JSON errors had no line and column (:func:`seal_cli.fileio.read_json`,
   :func:`seal_cli.fileio.stream_lines`); a FIFO for ``bench parse --constants`` hung the scorer; ``bench e2e
-  --data`` without the AWS house (or with a FIFO for its image) was reported in a temporary map file;
+  --data`` without the AWS house (or with a FIFO for its image) was reported in a temporary map file; ``seal
+  validate /`` ended on "error: /proc/20888: No such file or directory" (a process ended during the walk);
 - outputs onto ``/dev/full``.
 """
 
@@ -182,6 +183,9 @@ def outsider_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
                                 r"FIFO")
     yield Case("O bench e2e: no AWS house in --data", e2e, (("e", "dir"),), codes=(1,),
                says=r"(?m)^error: e/maps/aws_small_house/map\.pgm: the AWS small house's map is not there")
+    for argv in (("validate", "/proc"), ("frames", "--framelib", "/proc")):
+        yield Case(f"O {' '.join(argv)}: processes end while it is walked", argv, codes=(1,),
+                   says=r"(?m)^(error: )?/proc: no frame files \(\*\.yaml, \*\.frame\) in folder /proc$")
     # -- outputs onto a full device ---------------------------------------------------------------------------
     yield Case("O map --png /dev/full", ("map", "m.yaml", "--png", "/dev/full"), both, codes=(1,), keep=inputs,
                says=r"cannot write --png /dev/full: No space left on device")
