@@ -183,8 +183,8 @@ def outsider_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
                                 r"FIFO")
     yield Case("O bench e2e: no AWS house in --data", e2e, (("e", "dir"),), codes=(1,),
                says=r"(?m)^error: e/maps/aws_small_house/map\.pgm: the AWS small house's map is not there")
-    for argv in (("validate", "/proc"), ("frames", "--framelib", "/proc")):
-        yield Case(f"O {' '.join(argv)}: processes end while it is walked", argv, codes=(1,),
+    for walked in (("validate", "/proc"), ("frames", "--framelib", "/proc")):
+        yield Case(f"O {' '.join(walked)}: processes end while it is walked", walked, codes=(1,),
                    says=r"(?m)^(error: )?/proc: no frame files \(\*\.yaml, \*\.frame\) in folder /proc$")
     # -- outputs onto a full device ---------------------------------------------------------------------------
     yield Case("O map --png /dev/full", ("map", "m.yaml", "--png", "/dev/full"), both, codes=(1,), keep=inputs,
