@@ -236,11 +236,13 @@ def _one(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
     return process.returncode, out, err, time.perf_counter() - start
 
 
-SIGNAL_CPU = 0.1
+SIGNAL_CPU = 0.05
 """CPU seconds a process has used before a case's signal is sent to it (besides the case's own delay): the
-interpreter's own start-up (about 30 ms of CPU) is over by then, and a signal there ends Python with a
-traceback no program can catch, before any of seal's code runs. Counted in CPU time, not wall-clock
-time, so that a loaded machine (a slower start) does not move the signal into it."""
+interpreter's own start-up and ``import seal_cli`` (20–30 ms of CPU here) are over by then, and a signal
+there ends Python with a traceback no program can catch, before any of seal's code runs; seal's command
+line is still importing (until about 0.06 s), which is what the outsider's cases interrupt. Counted in
+CPU time (``/proc``, 10 ms ticks), not wall-clock time, so that a loaded machine, where start-up takes
+longer, moves neither edge."""
 
 
 def _cpu_seconds(pid: int) -> float | None:

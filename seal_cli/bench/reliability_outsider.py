@@ -102,13 +102,13 @@ def outsider_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
                (("r.yaml", tiny.encode()), image), codes=(1,), env=(("PYTHONWARNINGS", "<unset>"),),
                keep=("r.yaml",), says=NO_WARNING + r"[\s\S]*r\.yaml:\d+:\d+:")
     # -- SIGINT while the command line is imported -------------------------------------------------------
-    for delay in (0.05, 0.1, 0.2, 0.35):
+    for delay in (0.0, 0.1, 0.2, 0.35):  # 0.0: at reliability.SIGNAL_CPU, 0.05 s of CPU, while typer imports
         yield Case(f"O SIGINT {delay} s into map --png (while importing)", ("map", "m.yaml", "--png", "o.png"), both,
                    codes=(0, 130, -int(signal.SIGINT)), keep=inputs, signal=(signal.SIGINT, delay))
-    yield Case("O SIGINT 0.1 s into parse --json", ("parse", "--json", "stir the cup"),
-               codes=(0, 130, -int(signal.SIGINT)), signal=(signal.SIGINT, 0.1))
-    yield Case("O SIGINT 0.2 s into validate", ("validate", "m.yaml"), both,
-               codes=(0, 130, -int(signal.SIGINT)), keep=inputs, signal=(signal.SIGINT, 0.2))
+    yield Case("O SIGINT 0.0 s into parse --json", ("parse", "--json", "stir the cup"),
+               codes=(0, 130, -int(signal.SIGINT)), signal=(signal.SIGINT, 0.0))
+    yield Case("O SIGINT 0.0 s into validate", ("validate", "m.yaml"), both,
+               codes=(0, 130, -int(signal.SIGINT)), keep=inputs, signal=(signal.SIGINT, 0.0))
     # -- maps -------------------------------------------------------------------------------------------------
     head = "name: a\nbounds: [0, 0, 10, 10]\n"
     maps = {
