@@ -40,7 +40,9 @@ def main() -> None:
     gc.disable()
     try:
         from seal_cli.cli.output import printable_streams
+        from seal_cli.fileio import note_interrupts
 
+        note_interrupts()
         printable_streams()
         from seal_cli.cli import main as run
         from seal_cli.cli import plain_parse
@@ -56,6 +58,14 @@ def main() -> None:
         if output.FINISHED is not None:
             sys.exit(output.FINISHED)
         remove_temporaries()
+        sys.stderr.write("interrupted\n")
+        sys.exit(130)
+    except Exception:
+        from seal_cli.fileio import interrupted, remove_temporaries
+
+        if not interrupted():
+            raise
+        remove_temporaries()  # an interrupt inside an extension's import: ImportError "initialization failed"
         sys.stderr.write("interrupted\n")
         sys.exit(130)
     finally:

@@ -35,8 +35,9 @@ if TYPE_CHECKING:
     import yaml
 
 __all__ = ["LOADER", "MAX_IMAGE_BYTES", "MAX_INPUT_BYTES", "YAML_BREAKS", "Outputs", "atomic_output",
-           "atomic_write_text", "clean_up_on_signals", "decode", "read_bytes", "read_json", "read_json_lines",
-           "read_text", "read_yaml", "remove_temporaries", "split_lines", "stream_lines", "yaml_problem"]
+           "atomic_write_text", "clean_up_on_signals", "decode", "interrupted", "note_interrupts", "read_bytes",
+           "read_json", "read_json_lines", "read_text", "read_yaml", "remove_temporaries", "split_lines",
+           "stream_lines", "yaml_problem"]
 
 if TYPE_CHECKING:
     LOADER: type[yaml.SafeLoader]
@@ -273,6 +274,28 @@ def remove_temporaries() -> None:
 
 
 atexit.register(remove_temporaries)
+
+
+_INTERRUPTED: list[bool] = [False]
+
+
+def note_interrupts() -> None:
+    """SIGINT raises KeyboardInterrupt as ever, and is remembered: an interrupt that lands inside a C
+    extension's import (matplotlib's ``ft2font``) comes out as an ``ImportError: initialization failed``,
+    which :func:`interrupted` then tells apart from a real failure."""
+
+    def handler(number: int, frame: Any) -> None:
+        _INTERRUPTED[0] = True
+        signal.default_int_handler(number, frame)
+
+    with contextlib.suppress(ValueError, OSError):  # not the main thread
+        if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
+            signal.signal(signal.SIGINT, handler)
+
+
+def interrupted() -> bool:
+    """Whether SIGINT has arrived (since :func:`note_interrupts`)."""
+    return _INTERRUPTED[0]
 
 
 def clean_up_on_signals() -> None:

@@ -84,11 +84,12 @@ def run_command(function: Callable[[], int | None]) -> int:
     """Run a command's body; its exit code. The failures every command shares become one message on
     stderr and an exit code: a SealError 1, an interrupt 130, a closed pipe 0 (the reader has what it
     wanted), memory or nesting that runs out 1; our temporaries of outputs never written are removed."""
-    from seal_cli.fileio import clean_up_on_signals, remove_temporaries
+    from seal_cli.fileio import clean_up_on_signals, note_interrupts, remove_temporaries
 
     global FINISHED
 
     clean_up_on_signals()
+    note_interrupts()
     _closed_streams_to_null()
     _quiet_arithmetic()
     FINISHED = None
@@ -115,6 +116,13 @@ def run_command(function: Callable[[], int | None]) -> int:
     except RecursionError:
         err.print("error: the input is nested too deeply for seal to handle", markup=False)
         return 1
+    except Exception:
+        from seal_cli.fileio import interrupted
+
+        if interrupted():  # the interrupt landed in an extension's import: ImportError "initialization failed"
+            err.print("interrupted")
+            return FINISHED if FINISHED is not None else 130
+        raise
     except OSError as error:  # what the system refuses: a name too long, a full disk under stdout, ...
         if error.filename is None:  # writing standard output failed (a full disk, a broken device)
             _stdout_to_null()

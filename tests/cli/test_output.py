@@ -85,3 +85,14 @@ def test_an_output_that_cannot_hold_a_character_escapes_it(encoding: str) -> Non
                           capture_output=True, env=env, check=False)
     assert done.returncode == 0 and done.stdout.isascii()
     assert json.loads(done.stdout)["text"] == "bring Zoë a café"  # escaped as JSON escapes: the same JSON
+
+
+def test_an_import_failing_under_an_interrupt_is_the_interrupt(monkeypatch: pytest.MonkeyPatch) -> None:
+    from seal_cli import fileio
+
+    failed = ImportError("initialization failed")  # what SIGINT inside matplotlib's ft2font import raises
+    monkeypatch.setattr(fileio, "_INTERRUPTED", [False])
+    with pytest.raises(ImportError):
+        run_command(lambda: _raise(failed))  # a real failure stays one
+    monkeypatch.setattr(fileio, "_INTERRUPTED", [True])
+    assert run_command(lambda: _raise(failed)) == 130
