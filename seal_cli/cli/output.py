@@ -116,13 +116,6 @@ def run_command(function: Callable[[], int | None]) -> int:
     except RecursionError:
         err.print("error: the input is nested too deeply for seal to handle", markup=False)
         return 1
-    except Exception:
-        from seal_cli.fileio import interrupted
-
-        if interrupted():  # the interrupt landed in an extension's import: ImportError "initialization failed"
-            err.print("interrupted")
-            return FINISHED if FINISHED is not None else 130
-        raise
     except OSError as error:  # what the system refuses: a name too long, a full disk under stdout, ...
         if error.filename is None:  # writing standard output failed (a full disk, a broken device)
             _stdout_to_null()
@@ -130,6 +123,13 @@ def run_command(function: Callable[[], int | None]) -> int:
         else:
             err.print(f"error: {error.filename}: {error.strerror or error}", markup=False)
         return 1
+    except Exception:
+        from seal_cli.fileio import interrupted
+
+        if interrupted():  # the interrupt landed in an extension's import: ImportError "initialization failed"
+            err.print("interrupted")
+            return FINISHED if FINISHED is not None else 130
+        raise
     finally:
         remove_temporaries()  # of outputs planned but never written: the command failed first
 
