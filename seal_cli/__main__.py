@@ -15,6 +15,13 @@ left out of later collections) and the collector runs as usual through the comma
 command has finished is frozen too, so exit skips the pass.
 Nothing a command writes waits on the collector: outputs are renamed into place, and temporaries
 removed, before the command returns (:mod:`seal_cli.fileio`).
+
+An interrupt (Ctrl-C, SIGINT) while the command line is still being imported, before a command runs
+(a second or more on a loaded machine), ends seal as one during a command does: ``interrupted``,
+exit code 130, no traceback; one after the command has finished (its outputs in place) leaves the command's
+own exit code. Standard streams whose encoding cannot hold every character
+(``PYTHONIOENCODING=ascii``, a Latin-1 terminal) are set up first (:func:`seal_cli.cli.output.
+printable_streams`).
 """
 
 from __future__ import annotations
@@ -32,6 +39,11 @@ def main() -> None:
     enabled = gc.isenabled()
     gc.disable()
     try:
+        from seal_cli.cli.output import printable_streams
+        from seal_cli.fileio import note_interrupts
+
+        note_interrupts()
+        printable_streams()
         from seal_cli.cli import main as run
         from seal_cli.cli import plain_parse
 
@@ -39,6 +51,23 @@ def main() -> None:
             gc.freeze()
             gc.enable()
         run()
+    except KeyboardInterrupt:  # before a command ran (importing): as during one; after it ended: its own code
+        from seal_cli.cli import output
+        from seal_cli.fileio import remove_temporaries
+
+        if output.FINISHED is not None:
+            sys.exit(output.FINISHED)
+        remove_temporaries()
+        sys.stderr.write("interrupted\n")
+        sys.exit(130)
+    except Exception:
+        from seal_cli.fileio import interrupted, remove_temporaries
+
+        if not interrupted():
+            raise
+        remove_temporaries()  # an interrupt inside an extension's import: ImportError "initialization failed"
+        sys.stderr.write("interrupted\n")
+        sys.exit(130)
     finally:
         gc.freeze()  # the command has finished: the process ends without a last pass over its objects
 

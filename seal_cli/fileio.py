@@ -35,8 +35,9 @@ if TYPE_CHECKING:
     import yaml
 
 __all__ = ["LOADER", "MAX_IMAGE_BYTES", "MAX_INPUT_BYTES", "YAML_BREAKS", "Outputs", "atomic_output",
-           "atomic_write_text", "clean_up_on_signals", "decode", "read_bytes", "read_json_lines", "read_text",
-           "read_yaml", "remove_temporaries", "split_lines", "yaml_problem"]
+           "atomic_write_text", "clean_up_on_signals", "decode", "interrupted", "note_interrupts", "read_bytes",
+           "read_json", "read_json_lines", "read_text", "read_yaml", "remove_temporaries", "split_lines",
+           "stream_lines", "yaml_problem"]
 
 if TYPE_CHECKING:
     LOADER: type[yaml.SafeLoader]
@@ -94,11 +95,18 @@ def read_bytes(path: str | Path, limit: int = MAX_INPUT_BYTES, what: str = "file
         raise SealError(f"cannot read this {what}: it is {_kind(info.st_mode)}, not a regular file", where)
     if info.st_size > limit:
         raise SealError(f"this {what} is {_size(info.st_size)}; seal reads {what}s of at most {_size(limit)}", where)
-    try:
-        with path.open("rb") as handle:
+    try:  # without blocking: a "regular" file that waits for data (/proc/kmsg) must not hang seal
+        with os.fdopen(os.open(path, os.O_RDONLY | os.O_NONBLOCK), "rb") as handle:
+            if not stat.S_ISREG(os.fstat(handle.fileno()).st_mode):  # swapped for a FIFO since the stat
+                raise SealError(f"cannot read this {what}: it is not a regular file", where)
             data = handle.read(limit + 1)
+    except BlockingIOError:
+        raise SealError(f"cannot read this {what}: it has nothing to read yet (a file that waits for data, "
+                        "such as /proc/kmsg)", where) from None
     except OSError as exc:
         raise SealError(f"cannot read this {what}: {exc.strerror}", where) from None
+    if data is None:  # a non-blocking read with nothing there
+        raise SealError(f"cannot read this {what}: it has nothing to read yet", where)
     if len(data) > limit:  # it grew while we read it
         raise SealError(f"this {what} is larger than {_size(limit)}, the most seal reads", where)
     _READ[(info.st_dev, info.st_ino)] = str(path)
@@ -183,6 +191,55 @@ def read_yaml(path: str | Path) -> Any:
         raise yaml_problem(exc, text, str(path)) from None
 
 
+def read_json(path: str | Path, what: str = "JSON file") -> Any:
+    """A JSON file's value; a file that is not JSON is a SealError at its line and column."""
+    import json
+
+    text = read_text(path)
+    try:
+        return json.loads(text)
+    except json.JSONDecodeError as exc:
+        lines = text.split("\n")
+        source = lines[exc.lineno - 1] if exc.lineno <= len(lines) else None
+        raise SealError(f"this {what} is not JSON: {exc.msg}", Where(str(path), exc.lineno, exc.colno),
+                        source_line=source) from None
+    except RecursionError:
+        raise SealError(f"this {what} is nested too deeply for seal to read", Where(str(path))) from None
+
+
+def stream_lines(path: str | Path, what: str = "file") -> Iterator[tuple[int, str]]:
+    """``(line number, line)`` of a text file too large to read whole (the ALFRED trials: 35 MB), one at
+    a time: refused by kind as :func:`read_bytes` refuses, each line at most :data:`MAX_INPUT_BYTES`
+    long and UTF-8 (else a SealError at its line and column)."""
+    path = Path(path)
+    where = Where(str(path))
+    try:
+        info = path.stat()
+    except FileNotFoundError:
+        raise SealError(f"no such {what}", where) from None
+    except OSError as exc:
+        raise SealError(f"cannot read this {what}: {exc.strerror}", where) from None
+    if not stat.S_ISREG(info.st_mode):
+        raise SealError(f"cannot read this {what}: it is {_kind(info.st_mode)}, not a regular file", where)
+    _READ[(info.st_dev, info.st_ino)] = str(path)
+    try:
+        with os.fdopen(os.open(path, os.O_RDONLY | os.O_NONBLOCK), "rb") as handle:
+            for number, raw in enumerate(iter(lambda: handle.readline(MAX_INPUT_BYTES + 1), b""), 1):
+                if len(raw) > MAX_INPUT_BYTES:
+                    raise SealError(f"line {number} of this {what} is longer than {_size(MAX_INPUT_BYTES)}, the "
+                                    "most seal reads", Where(str(path), number))
+                try:
+                    line = raw.decode("utf-8")
+                except UnicodeDecodeError as exc:
+                    raise SealError(f"this {what} is not UTF-8 text: byte 0x{raw[exc.start]:02x} cannot be decoded",
+                                    Where(str(path), number, exc.start + 1)) from None
+                yield number, line.removeprefix("\ufeff") if number == 1 else line
+    except BlockingIOError:
+        raise SealError(f"cannot read this {what}: it has nothing to read yet", where) from None
+    except OSError as exc:
+        raise SealError(f"cannot read this {what}: {exc.strerror}", where) from None
+
+
 def read_json_lines(path: str | Path) -> list[Any]:
     """The JSON values of a JSON Lines file (blank lines skipped); a line that is not JSON is a
     SealError at its line and column."""
@@ -217,6 +274,28 @@ def remove_temporaries() -> None:
 
 
 atexit.register(remove_temporaries)
+
+
+_INTERRUPTED: list[bool] = [False]
+
+
+def note_interrupts() -> None:
+    """SIGINT raises KeyboardInterrupt as ever, and is remembered: an interrupt that lands inside a C
+    extension's import (matplotlib's ``ft2font``) comes out as an ``ImportError: initialization failed``,
+    which :func:`interrupted` then tells apart from a real failure."""
+
+    def handler(number: int, frame: Any) -> None:
+        _INTERRUPTED[0] = True
+        signal.default_int_handler(number, frame)
+
+    with contextlib.suppress(ValueError, OSError):  # not the main thread
+        if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
+            signal.signal(signal.SIGINT, handler)
+
+
+def interrupted() -> bool:
+    """Whether SIGINT has arrived (since :func:`note_interrupts`)."""
+    return _INTERRUPTED[0]
 
 
 def clean_up_on_signals() -> None:

@@ -117,3 +117,43 @@ def test_a_dash_for_an_output_is_refused_not_written_as_a_file(tmp_path: Path, m
     with pytest.raises(SealError, match=r"--pddl ' ': seal writes this output into a folder"):
         Outputs({"--pddl": " "}, folders={"--pddl": ("domain.pddl",)})
     assert list(tmp_path.iterdir()) == []
+
+
+def test_json_errors_are_at_their_line_and_column(tmp_path: Path) -> None:
+    from seal_cli.fileio import read_json
+
+    path = tmp_path / "f.json"
+    path.write_text('{"a": 1,\n "b": }\n')
+    with pytest.raises(SealError, match=r"f\.json:2:7: this JSON file is not JSON: Expecting value") as caught:
+        read_json(path)
+    assert caught.value.source_line == ' "b": }'
+    path.write_text("[" * 100_000 + "]" * 100_000)
+    with pytest.raises(SealError, match="nested too deeply"):
+        read_json(path)
+
+
+def test_streamed_lines_are_refused_by_kind_and_decoded_at_their_line(tmp_path: Path) -> None:
+    from seal_cli.fileio import stream_lines
+
+    path = tmp_path / "t.jsonl"
+    path.write_bytes(b"\xef\xbb\xbfone\ntwo\r\nthr\xe9e\n")
+    lines = stream_lines(path, "trials file")
+    assert [next(lines), next(lines)] == [(1, "one\n"), (2, "two\r\n")]
+    with pytest.raises(SealError, match=r"t\.jsonl:3:4: this trials file is not UTF-8 text: byte 0xe9"):
+        next(lines)
+    fifo = tmp_path / "p.jsonl"
+    os.mkfifo(fifo)
+    with pytest.raises(SealError, match="it is a FIFO"):
+        next(stream_lines(fifo))
+    with pytest.raises(SealError, match="no such file"):
+        next(stream_lines(tmp_path / "none.jsonl"))
+
+
+def test_a_file_that_waits_for_data_is_not_waited_on() -> None:
+    kmsg = Path("/proc/kmsg")  # a regular file by its kind whose read blocks (readable by root only)
+    if not os.access(kmsg, os.R_OK):
+        pytest.skip("/proc/kmsg cannot be read here")
+    try:
+        read_text(kmsg)
+    except SealError as error:
+        assert "kmsg" in str(error)

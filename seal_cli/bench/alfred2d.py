@@ -204,13 +204,12 @@ def _where(path: Path, line: int | None = None) -> Where:
 
 def read_floorplans(data_dir: str | Path) -> tuple[dict[str, FloorPlan], tuple[str, ...]]:
     """The floor plans of ``floorplans.json``, and the classes that may move."""
+    from seal_cli.fileio import read_json
+
     path = Path(data_dir) / "floorplans.json"
-    try:
-        raw = json.loads(path.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise SealError(f"no ALFRED-2D data here: {path} does not exist", _where(path)) from None
-    except (OSError, ValueError) as exc:
-        raise SealError(f"cannot read {path}: {exc}", _where(path)) from None
+    if not path.exists() and not path.is_symlink():
+        raise SealError(f"no ALFRED-2D data here: {path} does not exist", _where(path))
+    raw = read_json(path, "floor plans file")
     try:
         plans = {name: _floor_plan(name, fp) for name, fp in raw["floor_plans"].items()}
         return plans, tuple(raw.get("movable_classes", ()))
@@ -233,18 +232,26 @@ def _floor_plan(name: str, fp: Mapping[str, Any]) -> FloorPlan:
 
 def read_trials(data_dir: str | Path, split: str, floor_plans: Mapping[str, FloorPlan]) -> Iterator[Episode]:
     """The episodes of ``trials_<split>.jsonl``, in file order."""
+    from seal_cli.fileio import stream_lines
+
     path = Path(data_dir) / f"trials_{split}.jsonl"
-    if not path.is_file():
+    if not path.exists() and not path.is_symlink():
         have = sorted(p.stem.removeprefix("trials_") for p in Path(data_dir).glob("trials_*.jsonl"))
         raise SealError(f"no split {split!r} in {data_dir}; it has {', '.join(have) or 'none'}", _where(path))
-    with path.open(encoding="utf-8") as lines:
-        for number, line in enumerate(lines, 1):
-            if not line.strip():
-                continue
-            try:
-                yield _episode(json.loads(line), floor_plans)
-            except (KeyError, TypeError, ValueError, IndexError) as exc:
-                raise SealError(f"trial is malformed: {exc!r}", _where(path, number)) from None
+    for number, line in stream_lines(path, "trials file"):
+        if not line.strip():
+            continue
+        try:
+            trial = json.loads(line)
+        except json.JSONDecodeError as exc:
+            raise SealError(f"trial is not JSON: {exc.msg}", Where(str(path), number, exc.colno),
+                            source_line=line) from None
+        except RecursionError:
+            raise SealError("trial is nested too deeply for seal to read", _where(path, number)) from None
+        try:
+            yield _episode(trial, floor_plans)
+        except (KeyError, TypeError, ValueError, IndexError) as exc:
+            raise SealError(f"trial is malformed: {exc!r}", _where(path, number)) from None
 
 
 def _episode(t: Mapping[str, Any], floor_plans: Mapping[str, FloorPlan]) -> Episode:

@@ -17,6 +17,8 @@ from pathlib import Path
 import numpy as np
 import yaml
 
+from seal_cli.errors import SealError
+from seal_cli.fileio import MAX_IMAGE_BYTES, read_bytes
 from seal_cli.maps.geometry import OccupancyGrid
 from seal_cli.maps.model import Map, ObjectTruth, Place, Robot, Room, Sensor
 
@@ -133,7 +135,11 @@ def aws_house(folder: Path, data: Path, layout: str, robot: tuple[float, float, 
     :data:`AWS_CONTEXT_PLACES` and :data:`CONTEXT_OBJECTS`; the end-to-end suite :data:`AWS_PLACES`,
     :data:`AWS_PEOPLE` and :data:`AWS_ITEMS`)."""
     name = name or f"aws_{layout}"
-    doc = {"image": str((data / "maps" / "aws_small_house" / "map.pgm").resolve()), "resolution": 0.05,
+    image = data / "maps" / "aws_small_house" / "map.pgm"
+    if not image.exists():
+        raise SealError(f"{image}: the AWS small house's map is not there (--data names the shared data folder)")
+    read_bytes(image, MAX_IMAGE_BYTES, "map image")  # refused here, by its own name, not in a map written for it
+    doc = {"image": str(image.resolve()), "resolution": 0.05,
            "origin": [-12.5, -12.5, 0.0], "negate": 0, "occupied_thresh": 0.65, "free_thresh": 0.196,
            "name": name, "rooms": [{"name": n, "box": list(b)} for n, b in AWS_LAYOUTS[layout].items()],
            "places": [dict(p) for p in places], "priors": {c: dict(m) for c, m in priors.items()},

@@ -117,6 +117,9 @@ class Case:
     stream: str = ""
     """Standard streams made hostile: ``closed-stdin``, ``closed-stdout``, ``closed-stderr``,
     ``full-stdout`` (``/dev/full``: every write fails), ``open-stdin`` (a pipe nobody writes to)."""
+    env: tuple[tuple[str, str], ...] = ()
+    """Environment variables set (or, with the value ``"<unset>"``, removed) for the command, after the
+    suite's own (``COLUMNS=200``, ``NO_COLOR=1``, ``PYTHONWARNINGS=ignore``)."""
 
 
 @dataclass
@@ -210,7 +213,8 @@ STREAMS = {"closed-stdin": "<&-", "closed-stdout": ">&-", "closed-stderr": "2>&-
 
 
 def _one(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
-    env = {**os.environ, "COLUMNS": "200", "NO_COLOR": "1", "PYTHONWARNINGS": "ignore"}
+    env = {**os.environ, "COLUMNS": "200", "NO_COLOR": "1", "PYTHONWARNINGS": "ignore", **dict(case.env)}
+    env = {name: value for name, value in env.items() if value != "<unset>"}
     start = time.perf_counter()
     argv = [*_seal(), *(a.replace("\x00", "\x01") for a in case.argv)]  # no shell can pass a NUL in an argument
     if STREAMS[case.stream]:
@@ -222,9 +226,7 @@ def _one(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
     try:
         if case.signal is not None:
             number, delay = case.signal
-            try:
-                process.wait(timeout=delay)
-            except subprocess.TimeoutExpired:
+            if _wait_to_signal(process, delay):
                 process.send_signal(number)
         out, err = process.communicate(case.stdin, timeout=case.timeout)
     except subprocess.TimeoutExpired:
@@ -232,6 +234,35 @@ def _one(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
         out, err = process.communicate()
         return None, out, err, time.perf_counter() - start
     return process.returncode, out, err, time.perf_counter() - start
+
+
+SIGNAL_CPU = 0.05
+"""CPU seconds a process has used before a case's signal is sent to it (besides the case's own delay): the
+interpreter's own start-up and ``import seal_cli`` (20–30 ms of CPU here) are over by then, and a signal
+there ends Python with a traceback no program can catch, before any of seal's code runs; seal's command
+line is still importing (until about 0.06 s), which is what the outsider's cases interrupt. Counted in
+CPU time (``/proc``, 10 ms ticks), not wall-clock time, so that a loaded machine, where start-up takes
+longer, moves neither edge."""
+
+
+def _cpu_seconds(pid: int) -> float | None:
+    """User and system CPU time of a running process (from ``/proc``), None where it cannot be read."""
+    try:
+        fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+        return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+    except (OSError, ValueError, IndexError):
+        return None
+
+
+def _wait_to_signal(process: subprocess.Popen[bytes], delay: float) -> bool:
+    """Wait ``delay`` seconds and until the process has used :data:`SIGNAL_CPU` of CPU; whether it still runs."""
+    start = time.perf_counter()
+    while process.poll() is None:
+        cpu = _cpu_seconds(process.pid)
+        if time.perf_counter() - start >= delay and (cpu is None or cpu >= SIGNAL_CPU):
+            return True
+        time.sleep(0.005)
+    return False
 
 
 def run_case(case: Case) -> Outcome:

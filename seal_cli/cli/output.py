@@ -18,7 +18,8 @@ from seal_cli.errors import SealError, SealErrors
 if TYPE_CHECKING:
     from rich.console import Console
 
-__all__ = ["PIPE_WIDTH", "LazyConsole", "emit_json", "err", "out", "progress_bar", "report", "run_command"]
+__all__ = ["PIPE_WIDTH", "LazyConsole", "dump_json", "emit_json", "err", "out", "printable_streams", "progress_bar",
+           "report", "run_command"]
 
 PIPE_WIDTH = 200
 """Columns of the output when it is not a terminal (a file, a pipe) and ``COLUMNS`` is not set."""
@@ -74,23 +75,36 @@ def report(error: SealError) -> None:
         err.print(f"error: {problem}", markup=False)
 
 
+FINISHED: int | None = None
+"""The exit code of the command once it has finished (its outputs renamed into place), else None: an
+interrupt (SIGINT) that arrives after it, while the process ends, leaves that code as it is."""
+
+
 def run_command(function: Callable[[], int | None]) -> int:
     """Run a command's body; its exit code. The failures every command shares become one message on
     stderr and an exit code: a SealError 1, an interrupt 130, a closed pipe 0 (the reader has what it
     wanted), memory or nesting that runs out 1; our temporaries of outputs never written are removed."""
-    from seal_cli.fileio import clean_up_on_signals, remove_temporaries
+    from seal_cli.fileio import clean_up_on_signals, note_interrupts, remove_temporaries
+
+    global FINISHED
 
     clean_up_on_signals()
+    note_interrupts()
     _closed_streams_to_null()
+    _quiet_arithmetic()
+    FINISHED = None
     try:
         code = function()
-        if code in (0, None):
+        FINISHED = code = code if isinstance(code, int) else 0  # its outputs are in place: the work is done
+        if code == 0:
             sys.stdout.flush()  # a full disk must fail the command, not the interpreter's exit
-        return code if isinstance(code, int) else 0
+        return code
     except SealError as error:
         report(error)
         return 1
     except KeyboardInterrupt:
+        if FINISHED is not None:  # an interrupt after the command finished changes nothing it did
+            return FINISHED
         err.print("interrupted")
         return 130
     except BrokenPipeError:
@@ -109,8 +123,25 @@ def run_command(function: Callable[[], int | None]) -> int:
         else:
             err.print(f"error: {error.filename}: {error.strerror or error}", markup=False)
         return 1
+    except Exception:
+        from seal_cli.fileio import interrupted
+
+        if interrupted():  # the interrupt landed in an extension's import: ImportError "initialization failed"
+            err.print("interrupted")
+            return FINISHED if FINISHED is not None else 130
+        raise
     finally:
         remove_temporaries()  # of outputs planned but never written: the command failed first
+
+
+def _quiet_arithmetic() -> None:
+    """numpy's RuntimeWarnings (an overflow in a product of coordinates of 1e300) are no message for a
+    user: the checks that follow say what is wrong with the input, at its line and column. Kept when
+    the user asked for warnings (``-W``, ``PYTHONWARNINGS``)."""
+    import warnings
+
+    if not sys.warnoptions:
+        warnings.simplefilter("ignore", RuntimeWarning)
 
 
 def _closed_streams_to_null() -> None:
@@ -148,9 +179,31 @@ def progress_bar(what: str, total: int | None = None) -> Iterator[Callable[[int,
         yield lambda done, total: progress.update(bar, completed=done, total=total)
 
 
-def emit_json(data: Any) -> None:
-    """One JSON document on stdout."""
+def _unicode(stream: Any) -> bool:
+    """Whether a stream's encoding holds every character (UTF-8, -16 or -32)."""
+    encoding = (getattr(stream, "encoding", None) or "utf-8").lower().replace("-", "").replace("_", "")
+    return encoding.startswith("utf")
+
+
+def printable_streams() -> None:
+    """Standard output and error whose encoding cannot hold every character (``PYTHONIOENCODING=ascii``,
+    a Latin-1 locale) write what they cannot hold as ``\\xe9`` escapes instead of failing the command
+    with a UnicodeEncodeError; JSON on such an output escapes it as JSON does (:func:`dump_json`)."""
+    for stream in (sys.stdout, sys.stderr):
+        if stream is not None and not _unicode(stream):
+            with contextlib.suppress(AttributeError, ValueError, OSError):
+                stream.reconfigure(errors="backslashreplace")  # type: ignore[union-attr]
+
+
+def dump_json(data: Any) -> str:
+    """One JSON document as text for stdout: characters as they are on a UTF-8 output, ``\\u00e9``
+    escapes on an output whose encoding cannot hold them (still the same JSON)."""
     import json
 
-    sys.stdout.write(json.dumps(data, ensure_ascii=False) + "\n")
+    return json.dumps(data, ensure_ascii=not _unicode(sys.stdout))
+
+
+def emit_json(data: Any) -> None:
+    """One JSON document on stdout."""
+    sys.stdout.write(dump_json(data) + "\n")
     sys.stdout.flush()

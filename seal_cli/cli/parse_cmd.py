@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Any
 import typer
 
 from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
+from seal_cli.cli.output import dump_json
 from seal_cli.cli.parse_view import _escape, print_parse, summary
 from seal_cli.errors import SealError, Where
 
@@ -86,7 +87,7 @@ def parse(
     if file is not None:
         lines = _read_lines(file)
         if as_json:
-            sys.stdout.write("".join(json.dumps(result, ensure_ascii=False) + "\n"
+            sys.stdout.write("".join(dump_json(result) + "\n"
                                      for result in parse_lines(lines, library, vocab)))
             sys.stdout.flush()
             return
@@ -109,11 +110,15 @@ def parse(
 
 def _alfred_vocabulary(constants: Path) -> Vocabulary:
     """The classes of ALFRED's constants as a vocabulary (what the scorer grounds in)."""
+    from seal_cli.fileio import read_json
     from seal_cli.language.grounding import Vocabulary
 
+    raw = read_json(constants, "ALFRED constants file")
     try:
-        classes = json.loads(constants.read_text(encoding="utf-8"))["OBJECTS"]
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError, KeyError, TypeError) as error:
+        classes = raw["OBJECTS"]
+        if not isinstance(classes, list):
+            raise TypeError(f"OBJECTS is {type(classes).__name__}, not a list")
+    except (KeyError, TypeError) as error:
         raise SealError(f"cannot read the ALFRED constants' OBJECTS: {error}", Where(str(constants))) from None
     return Vocabulary.of([str(c) for c in classes])
 
@@ -162,12 +167,13 @@ def bench_parse(
             argv = [str(folder / "score_parse.py"), str(path)]
         if not Path(argv[0]).is_file():
             raise SealError(f"scorer not found: {argv[0]} (give --scorers DIR)", Where(argv[0]))
+        # the constants are checked before the scorer reads them (a FIFO there would hang it)
+        vocab = _alfred_vocabulary(Path(argv[2])) if path.suffix == ".tsv" else None
         err.print(f"scoring {path} ...")
         run = subprocess.run([sys.executable, *argv, "--seal", seal, *(["--json"] if as_json else [])],
                              capture_output=True, text=True)
         if run.returncode and "Traceback (most recent call last)" in run.stderr:  # it crashed (exit 1 is a low score)
             raise SealError(f"the scorer failed on {path}: {run.stderr.strip().splitlines()[-1]}", Where(str(path)))
-        vocab = _alfred_vocabulary(Path(argv[2])) if path.suffix == ".tsv" else None
         figures = measure(commands_of(path), library, vocab)
         if as_json:
             lines = run.stdout.strip().splitlines()

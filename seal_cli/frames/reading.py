@@ -52,6 +52,25 @@ def __getattr__(name: str) -> Any:
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
+def _frame_files_under(folder: Path) -> list[Path]:
+    """The frame files in a folder and its subfolders (links to folders not followed, as ``rglob``), sorted.
+    What vanishes or cannot be listed during the walk is passed over (``seal validate /`` met a process of
+    ``/proc`` that had ended: "error: /proc/20888: No such file or directory")."""
+    import os
+
+    found = []
+    for root, _, names in os.walk(folder, onerror=lambda _error: None):
+        for name in names:
+            path = Path(root) / name
+            if path.suffix in FRAME_SUFFIXES:
+                try:
+                    if path.is_file():
+                        found.append(path)
+                except OSError:
+                    continue
+    return sorted(found)
+
+
 def frame_files(paths: Iterable[str | Path]) -> tuple[list[Path], list[SealError]]:
     """The frame files under the given files and folders, sorted within each folder."""
     files: list[Path] = []
@@ -59,7 +78,7 @@ def frame_files(paths: Iterable[str | Path]) -> tuple[list[Path], list[SealError
     for raw in paths:
         path = Path(raw)
         if path.is_dir():
-            found = sorted(p for p in path.rglob("*") if p.suffix in FRAME_SUFFIXES and p.is_file())
+            found = _frame_files_under(path)
             if not found:
                 problems.append(SealError(f"no frame files (*.yaml, *.frame) in folder {path}", Where(str(path))))
             files.extend(found)

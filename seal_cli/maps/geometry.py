@@ -25,13 +25,19 @@ from functools import cached_property
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["FREE", "OCCUPIED", "OUTSIDE", "UNKNOWN", "OccupancyGrid", "as_points", "box_polygon", "cast_rays",
-           "line_of_sight", "overlap_area", "point_in_polygon", "polygon_area", "segment_cells",
+__all__ = ["FREE", "MAX_IMAGE_CELLS", "OCCUPIED", "OUTSIDE", "UNKNOWN", "OccupancyGrid", "as_points", "box_polygon",
+           "cast_rays", "line_of_sight", "overlap_area", "point_in_polygon", "polygon_area", "segment_cells",
            "segments_intersect", "self_intersections"]
 
 FREE, OCCUPIED, UNKNOWN = 0, 100, -1
 OUTSIDE = "_outside"
 """The name reported for points in no room (no polygon of a map's rooms)."""
+MAX_IMAGE_CELLS = 4096 * 4096
+"""The most cells a map's occupancy grid (an image, a bag's grid) may have: a grid takes about 150 bytes
+a free cell while its map is checked (centres, rooms, lookups: 3.6 GB measured for 5,000 × 5,000), so
+16.8 million cells need about 2.5 GB, where a 10,000 × 10,000 image would take 15 GB and a 16,000 ×
+16,000 one (256 MiB, the file bound) 38 GB: more than the machine has, and the kernel then kills
+processes, not only seal."""
 _CHUNK = 1 << 21
 """Largest number of (point × edge) or (segment × crossing) entries handled in one numpy step."""
 

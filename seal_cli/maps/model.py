@@ -99,6 +99,9 @@ class Room:
     def __post_init__(self) -> None:
         if not isinstance(self.name, str) or not class_key(self.name):
             raise SealError(f"a room needs a name, not {self.name!r}", self.where)
+        if self.name.strip().casefold() == OUTSIDE:
+            raise SealError(f"a room cannot be called {self.name!r}: seal's outputs give that name to the mass in no "
+                            "room; call the room another name", self.where)
         try:
             vertices = np.asarray(self.polygon, dtype=float)
         except (TypeError, ValueError):
@@ -808,6 +811,10 @@ def _room_shapes(m: Map) -> Iterator[SealError]:
                             f"{b + 1} ({_edge(room, b)}) of {n}; list the vertices in order around the room", where)
         elif room.area < 1e-9:
             yield SealError(f"room {room.name} has no area", where)
+        xmin, ymin, xmax, ymax = m._room_boxes[i]
+        if xmax <= m.bounds[0] or xmin >= m.bounds[2] or ymax <= m.bounds[1] or ymin >= m.bounds[3]:
+            yield SealError(f"room {room.name} ({_pt((xmin, ymin))}–{_pt((xmax, ymax))}) is wholly {_off(m)}: "
+                            "nothing in it can be reached or seen", where)
 
 
 def _edge(room: Room, i: int) -> str:

@@ -94,15 +94,15 @@ class Example:
 def load_examples(path: str | Path | None = None) -> tuple[Example, ...]:
     """The worked examples shipped with seal (``seal_cli/bench/suites/saycan_examples.json``, rebuilt
     from ALFRED's train split by ``scripts/build_saycan_examples.py``), or another such file."""
-    import json
+    from seal_cli.fileio import read_json
 
     where = Path(path) if path is not None else EXAMPLES
+    if not where.exists() and not where.is_symlink():
+        raise SealError(f"no worked examples at {where}")
+    raw = read_json(where, "file of worked examples")
     try:
-        raw = json.loads(where.read_text(encoding="utf-8"))
         return tuple(Example(str(e["instruction"]), tuple(str(s) for s in e["steps"])) for e in raw["examples"])
-    except FileNotFoundError:
-        raise SealError(f"no worked examples at {where}") from None
-    except (OSError, ValueError, KeyError, TypeError) as error:
+    except (ValueError, KeyError, TypeError) as error:
         raise SealError(f"{where} is not a file of worked examples: {error}") from None
 
 

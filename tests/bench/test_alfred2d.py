@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import os
 from pathlib import Path
 
 import pytest
@@ -20,6 +21,7 @@ from seal_cli.bench.alfred2d import (
     load_suite,
     open_floor,
     read_floorplans,
+    read_trials,
     scene_priors,
     scene_vocabulary,
     suite_vocabulary,
@@ -141,8 +143,19 @@ def test_bad_data_is_a_clear_error(tmp_path: Path, shared_data: Path) -> None:
     with pytest.raises(SealError, match="no ALFRED-2D data"):
         read_floorplans(tmp_path)
     (tmp_path / "floorplans.json").write_text("{not json")
-    with pytest.raises(SealError, match="cannot read"):
+    with pytest.raises(SealError, match=r"floorplans\.json:1:2: this floor plans file is not JSON"):
         read_floorplans(tmp_path)
+    (tmp_path / "floorplans.json").unlink()
+    os.mkfifo(tmp_path / "floorplans.json")  # a pipe nobody writes to: refused, not waited on
+    with pytest.raises(SealError, match="FIFO"):
+        read_floorplans(tmp_path)
+    (tmp_path / "floorplans.json").unlink()
+    (tmp_path / "trials_x.jsonl").write_bytes(b"\n{\"task_id\": \"caf\xe9\"}\n")
+    with pytest.raises(SealError, match=r"trials_x\.jsonl:2:17: this trials file is not UTF-8"):
+        list(read_trials(tmp_path, "x", {}))
+    (tmp_path / "trials_x.jsonl").write_text('{"task_id": 1,}\n')
+    with pytest.raises(SealError, match=r"trials_x\.jsonl:1:15: trial is not JSON"):
+        list(read_trials(tmp_path, "x", {}))
     (tmp_path / "floorplans.json").write_text(json.dumps({"floor_plans": {"F": {"receptacles": [{}]}}}))
     with pytest.raises(SealError, match="malformed"):
         read_floorplans(tmp_path)

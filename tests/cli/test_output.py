@@ -44,3 +44,55 @@ def test_a_closed_stdin_is_a_message_for_parse_file_dash() -> None:
                            "--file", "-"], capture_output=True, text=True, check=False)
     assert done.returncode == 1
     assert done.stderr == "error: --file -: standard input is closed; pipe the commands in, or give a file\n"
+
+
+class _Interrupting:
+    """A stdout whose flush is interrupted (SIGINT just after the command's work)."""
+
+    encoding = "utf-8"
+
+    def write(self, text: str) -> int:
+        return len(text)
+
+    def flush(self) -> None:
+        raise KeyboardInterrupt
+
+
+def test_an_interrupt_after_the_command_finished_keeps_its_code(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(sys, "stdout", _Interrupting())
+    assert run_command(lambda: 0) == 0  # its outputs were in place: not 130 with a file written
+    assert run_command(lambda: _raise(KeyboardInterrupt())) == 130
+
+
+def test_sigint_while_seal_imports_is_no_traceback() -> None:
+    code = ("import sys, seal_cli.__main__ as m, seal_cli.cli as c\n"
+            "def stop(): raise KeyboardInterrupt\n"
+            "c.main = stop\nsys.argv = ['seal', 'frames']\nm.main()\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=False)
+    assert (done.returncode, done.stderr) == (130, "interrupted\n")
+
+
+@pytest.mark.parametrize("encoding", ["ascii", "latin-1"])
+def test_an_output_that_cannot_hold_a_character_escapes_it(encoding: str) -> None:
+    import json
+    import os
+
+    env = {**os.environ, "PYTHONIOENCODING": encoding}
+    for argv in (["parse", "stir the café 😀"], ["plan", "stir the cup"], ["map", "apartment"], ["frames", "Stir"]):
+        done = subprocess.run([sys.executable, "-m", "seal_cli", *argv], capture_output=True, env=env, check=False)
+        assert b"Traceback" not in done.stderr and done.returncode in (0, 1), argv
+    done = subprocess.run([sys.executable, "-m", "seal_cli", "parse", "--json", "bring Zoë a café"],
+                          capture_output=True, env=env, check=False)
+    assert done.returncode == 0 and done.stdout.isascii()
+    assert json.loads(done.stdout)["text"] == "bring Zoë a café"  # escaped as JSON escapes: the same JSON
+
+
+def test_an_import_failing_under_an_interrupt_is_the_interrupt(monkeypatch: pytest.MonkeyPatch) -> None:
+    from seal_cli import fileio
+
+    failed = ImportError("initialization failed")  # what SIGINT inside matplotlib's ft2font import raises
+    monkeypatch.setattr(fileio, "_INTERRUPTED", [False])
+    with pytest.raises(ImportError):
+        run_command(lambda: _raise(failed))  # a real failure stays one
+    monkeypatch.setattr(fileio, "_INTERRUPTED", [True])
+    assert run_command(lambda: _raise(failed)) == 130

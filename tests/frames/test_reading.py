@@ -213,3 +213,20 @@ def test_a_read_only_or_missing_cache_changes_nothing(tmp_path: Path, monkeypatc
     assert load_library() == read_library([framelib_dir()])[0]
     monkeypatch.setenv("SEAL_NO_CACHE", "1")
     assert load_library() == read_library([framelib_dir()])[0]
+
+
+def test_a_folder_walk_passes_over_what_vanishes_and_does_not_follow_folder_links(tmp_path: Path) -> None:
+    from seal_cli.frames.reading import frame_files
+
+    (tmp_path / "lib" / "sub").mkdir(parents=True)
+    (tmp_path / "other").mkdir()
+    (tmp_path / "lib" / "sub" / "b.frame").write_text("")
+    (tmp_path / "lib" / "a.yaml").write_text("")
+    (tmp_path / "other" / "c.frame").write_text("")
+    (tmp_path / "lib" / "linked").symlink_to(tmp_path / "other")   # a link to a folder: not walked
+    (tmp_path / "lib" / "loop").symlink_to(".")
+    (tmp_path / "lib" / "gone.frame").symlink_to(tmp_path / "nowhere.frame")  # dangling: no file
+    files, problems = frame_files([tmp_path / "lib"])
+    assert [p.relative_to(tmp_path).as_posix() for p in files] == ["lib/a.yaml", "lib/sub/b.frame"] and not problems
+    files, problems = frame_files(["/proc"])  # processes end while it is walked: never "No such file"
+    assert files == [] and [p.message for p in problems] == ["no frame files (*.yaml, *.frame) in folder /proc"]

@@ -408,8 +408,9 @@ def test_numbers_in_scientific_notation_and_absurd_sizes(tmp_path: Path) -> None
     path = write_map(tmp_path, SERVER.format(image="tiny.pgm", negate=0).replace("0.5", "5e-1"), TINY)
     assert load_map(path).grid.resolution == 0.5
     assert "'5'" in check_map_file(write_map(tmp_path, "bounds: [0, 0, 9, 9]\nsensor: {range: '5'}\n"))[0].message
-    (huge,) = check_map_file(write_map(tmp_path, "bounds: [0, 0, 1e308, 1e308]\n"))
-    assert "too large" in huge.message
+    huge = check_map_file(write_map(tmp_path, "bounds: [0, 0, 1e308, 1e308]\n"))  # each number at its column
+    assert [(p.line, p.column) for p in huge] == [(1, 16), (1, 23)]
+    assert all("from -10,000,000 to 10,000,000, not '1e308'" in p.message for p in huge)
     (tiny,) = check_map_file(write_map(tmp_path, "bounds: [0, 0, 1e-300, 1e-300]\n"))
     assert "no free space" in tiny.message
 

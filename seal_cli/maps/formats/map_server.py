@@ -48,7 +48,7 @@ from numpy.typing import NDArray
 from seal_cli.errors import SealError, SealErrors, Where
 from seal_cli.fileio import LOADER, MAX_IMAGE_BYTES, read_bytes, read_text, yaml_problem
 from seal_cli.frames.taxonomy import class_key
-from seal_cli.maps.geometry import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
+from seal_cli.maps.geometry import FREE, MAX_IMAGE_CELLS, OCCUPIED, UNKNOWN, OccupancyGrid
 from seal_cli.maps.model import Map, MapWarning, ObjectTruth, Person, Place, Robot, Room, Sensor
 from seal_cli.resources import map_path
 from seal_cli.yamlnodes import NodeReader
@@ -70,6 +70,9 @@ SENSOR_KEYS = ("range", "fov", "p_detect", "sigma", "noise")
 MAX_METRES = 1000.0
 """The largest sensor range and place reach a map may give: beyond it squared distances overflow
 (1e200 m) or the search's lattices cannot be built, and no robot acts a kilometre away."""
+MAX_COORDINATE = 1e7
+"""The largest coordinate (and angle) a map may give, in metres: 10,000 km takes in UTM's northings; a
+point at 1e300 m overflows the geometry's products and no map is that large."""
 MODES = ("trinary", "scale", "raw")
 
 T = TypeVar("T")
@@ -100,6 +103,7 @@ def read_pgm(data: bytes) -> NDArray[np.float64]:
     width, height, maxval = fields
     if width <= 0 or height <= 0 or not 0 < maxval < 65536:
         raise SealError(f"PGM header has impossible values: width {width}, height {height}, maximum {maxval}")
+    _check_cells(width, height)
     count = width * height
     if magic == b"P5":
         pos += 1  # exactly one whitespace byte separates the header from the pixels
@@ -120,6 +124,14 @@ def read_pgm(data: bytes) -> NDArray[np.float64]:
     if pixels.max(initial=0) > maxval:
         raise SealError(f"PGM pixel value {int(pixels.max())} exceeds the maximum {maxval} in its header")
     return (pixels * (255.0 / maxval)).reshape(height, width)
+
+
+def _check_cells(width: int, height: int) -> None:
+    """Refuse an image of more than :data:`MAX_IMAGE_CELLS` pixels before its pixels are read."""
+    if width * height > MAX_IMAGE_CELLS:
+        raise SealError(f"the image is {width:,}×{height:,} pixels ({width * height:,} cells); seal reads map images "
+                        f"of at most {MAX_IMAGE_CELLS:,} cells (4096×4096): crop it to the building, or scale it "
+                        "down and raise resolution: to match")
 
 
 def _read_png(path: Path) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
@@ -149,6 +161,8 @@ def read_image(path: Path, negate: bool = False, occupied_thresh: float = 0.65, 
     if data[:2] in (b"P5", b"P2"):
         grey, alpha = read_pgm(data), None
     elif data[:8] == b"\x89PNG\r\n\x1a\n":
+        if data[12:16] == b"IHDR":  # the size, before a decoder unpacks a small file into gigabytes
+            _check_cells(int.from_bytes(data[16:20], "big"), int.from_bytes(data[20:24], "big"))
         grey, alpha = _read_png(path)
     else:
         raise SealError(f"image {path.name} is neither PGM (P5/P2) nor PNG")
@@ -212,7 +226,9 @@ class _Reader(NodeReader):
         if len(node.value) not in counts:
             self.problem(f"{what} must have {shape} numbers, not {len(node.value)}", node)
             return None
-        values = [self.number(item, f"each number of {what}") for item in node.value]
+        values = [self.number(item, f"each number of {what}", lambda v: abs(v) <= MAX_COORDINATE,
+                              f"a number of metres from {-MAX_COORDINATE:,.0f} to {MAX_COORDINATE:,.0f}")
+                  for item in node.value]
         return None if any(v is None for v in values) else values  # type: ignore[return-value]
 
     def xy(self, node: yaml.Node, what: str) -> tuple[float, float] | None:
@@ -233,6 +249,18 @@ class _Reader(NodeReader):
         for key, key_node, value_node in self.pairs(node, what, allowed, empty=True):
             self.positions[path + (key,)] = self.where(key_node)
             yield key, key_node, value_node
+
+    def renumber(self, kind: str, kept: list[int]) -> None:
+        """Positions of the items of ``kind`` (rooms, places, ...) under their index in the map: an item
+        that could not be built is left out of it, so the items after it move up (the map's own checks
+        would put a problem of the room after a broken one at the broken one's line)."""
+        index = {old: new for new, old in enumerate(kept)}
+        moved: dict[Path_, Where] = {}
+        for path in [p for p in self.positions if len(p) > 1 and p[0] == kind and isinstance(p[1], int)]:
+            where = self.positions.pop(path)
+            if path[1] in index:
+                moved[(kind, index[path[1]], *path[2:])] = where
+        self.positions.update(moved)
 
     # -- the document ----------------------------------------------------------------------------
     def read(self, root: yaml.Node) -> Map | None:
@@ -333,7 +361,7 @@ class _Reader(NodeReader):
         return tuple(values)
 
     def rooms(self, node: yaml.Node) -> tuple[Room, ...]:
-        rooms = []
+        rooms, kept = [], []
         for i, item in enumerate(self.items(node, "rooms")):
             self.positions[("rooms", i)] = self.where(item)
             fields = {key: value for key, _, value in self.pairs_at(item, "a room", ("rooms", i), ROOM_KEYS)}
@@ -350,8 +378,10 @@ class _Reader(NodeReader):
             room = self.room_shape(name, fields, shapes[0]) if name and len(shapes) == 1 else None
             if room is not None:
                 rooms.append(room)
+                kept.append(i)
             elif name:
                 self.broken.add(name)
+        self.renumber("rooms", kept)
         return tuple(rooms)
 
     def room_shape(self, name: str, fields: dict[str, yaml.Node], shape: str) -> Room | None:
@@ -379,7 +409,7 @@ class _Reader(NodeReader):
         return self.build(lambda: Room(name, tuple(points), where), node)  # type: ignore[arg-type]
 
     def places(self, node: yaml.Node) -> tuple[Place, ...]:
-        places = []
+        places, kept = [], []
         for i, item in enumerate(self.items(node, "places")):
             self.positions[("places", i)] = self.where(item)
             fields = {key: value for key, _, value in self.pairs_at(item, "a place", ("places", i), PLACE_KEYS)}
@@ -403,10 +433,12 @@ class _Reader(NodeReader):
                                                      float(reach or 1.0), self.where(item)), item)
             if place is not None:
                 places.append(place)
+                kept.append(i)
             elif name:
                 self.broken.add(name)
                 if cls:
                     self.broken.add(cls)
+        self.renumber("places", kept)
         return tuple(places)
 
     def priors(self, node: yaml.Node) -> dict[str, dict[str, float]]:
@@ -435,7 +467,7 @@ class _Reader(NodeReader):
 
     def objects(self, node: yaml.Node, places: tuple[Place, ...]) -> tuple[ObjectTruth, ...]:
         by_name = {class_key(p.name): p for p in places}
-        objects = []
+        objects, kept = [], []
         for i, item in enumerate(self.items(node, "objects")):
             self.positions[("objects", i)] = self.where(item)
             fields = {key: value for key, _, value in self.pairs_at(item, "an object", ("objects", i), OBJECT_KEYS)}
@@ -458,6 +490,8 @@ class _Reader(NodeReader):
                 built = self.build(functools.partial(ObjectTruth, cls, at, inside, self.where(item)), item)
                 if built is not None:
                     objects.append(built)
+                    kept.append(i)
+        self.renumber("objects", kept)
         return tuple(objects)
 
     def robot(self, node: yaml.Node) -> Robot | None:
@@ -472,7 +506,7 @@ class _Reader(NodeReader):
                           node)
 
     def people(self, node: yaml.Node) -> tuple[Person, ...]:
-        people = []
+        people, kept = [], []
         for i, item in enumerate(self.items(node, "people")):
             self.positions[("people", i)] = self.where(item)
             fields = {key: value for key, _, value in self.pairs_at(item, "a person", ("people", i), PERSON_KEYS)}
@@ -489,6 +523,8 @@ class _Reader(NodeReader):
                 built = self.build(functools.partial(Person, name, at, room, self.where(item), roles or ()), item)
                 if built is not None:
                     people.append(built)
+                    kept.append(i)
+        self.renumber("people", kept)
         return tuple(people)
 
     def speaker(self, node: yaml.Node) -> tuple[tuple[float, float] | None, tuple[str, ...]]:

@@ -24,7 +24,7 @@ import numpy as np
 import yaml
 
 from seal_cli.errors import SealError
-from seal_cli.maps.geometry import FREE, OCCUPIED, UNKNOWN, OccupancyGrid
+from seal_cli.maps.geometry import FREE, MAX_IMAGE_CELLS, OCCUPIED, UNKNOWN, OccupancyGrid
 
 __all__ = ["KEY", "grid_from_bag"]
 
@@ -80,5 +80,9 @@ def grid_from_bag(reader: Any, nodes: dict[str, yaml.Node]) -> OccupancyGrid | N
         grid = read_occupancy_grid(reader.path.parent / bag, topic)
     except SealError as exc:
         reader.problem(f"{reader.path.parent / bag}: {exc.message}", fields["bag"])
+        return None
+    if grid.values.size > MAX_IMAGE_CELLS:
+        reader.problem(f"{reader.path.parent / bag}: the grid on {topic} has {grid.values.size:,} cells; seal reads "
+                       f"maps of at most {MAX_IMAGE_CELLS:,} cells (4096×4096)", fields["bag"])
         return None
     return OccupancyGrid(cells(grid.values, occ, free), grid.resolution, grid.origin)

@@ -71,3 +71,52 @@ def test_the_shipped_apartment_loads_by_name_and_path_alike() -> None:
     by_name, by_path = load_map("apartment"), load_map(maps_dir() / "apartment.yaml")
     assert by_name.name == by_path.name == "apartment"
     assert np.array_equal(by_name.grid.cells, by_path.grid.cells)
+
+
+def test_an_image_of_more_cells_than_the_bound_is_refused_before_its_pixels(tmp_path: Path) -> None:
+    import struct
+    import zlib
+
+    from seal_cli.maps.geometry import MAX_IMAGE_CELLS
+
+    assert MAX_IMAGE_CELLS == 4096 * 4096
+    with pytest.raises(SealError, match=r"4,097×4,096 pixels .* at most 16,777,216 cells"):
+        read_pgm(b"P5\n4097 4096\n255\n")  # refused from the header: no pixels needed
+    body = b"IHDR" + struct.pack(">IIBBBBB", 20_000, 20_000, 8, 0, 0, 0, 0)
+    png = tmp_path / "bomb.png"  # a PNG's header alone: the decoder would unpack it into gigabytes
+    png.write_bytes(b"\x89PNG\r\n\x1a\n" + struct.pack(">I", 13) + body + struct.pack(">I", zlib.crc32(body)))
+    with pytest.raises(SealError, match=r"20,000×20,000 pixels"):
+        read_image(png)
+
+
+def _problems(tmp_path: Path, text: str) -> list[tuple[int | None, str]]:
+    from seal_cli.maps.formats.map_server import check_map_file
+
+    path = tmp_path / "x.yaml"
+    path.write_text("name: a\nbounds: [0, 0, 10, 10]\n" + text)
+    return [(p.line, p.message) for p in check_map_file(path)]
+
+
+def test_a_problem_after_an_item_that_could_not_be_built_is_at_its_own_line(tmp_path: Path) -> None:
+    rooms = ("rooms:\n  - {name: kitchen, polygon: [[0, 0], [1, 1]]}\n  - {name: den, box: [0, 0, 1, 1]}\n"
+             "  - {name: hall, polygon: [[2, 2], [9, 9], [9, 2], [2, 9]]}\n")
+    lines = {message.split(":")[0]: line for line, message in _problems(tmp_path, rooms)}
+    assert lines["room hall intersects itself"] == 6  # was 5, den's line: the broken kitchen moved them up
+    places = "places:\n  - {name: sink_1, class: sink}\n  - {name: bed_1, class: bed, at: [50, 5]}\n"
+    assert (5, "place bed_1 at [50, 5] is outside the map's bounds [0, 0]–[10, 10]") in _problems(tmp_path, places)
+    objects = "objects:\n  - {class: cup, at: [1]}\n  - {class: mug, at: [50, 5]}\n"
+    assert any(line == 5 and "object mug" in message for line, message in _problems(tmp_path, objects))
+
+
+def test_a_room_called_outside_or_wholly_off_the_map_and_absurd_coordinates_are_refused(tmp_path: Path) -> None:
+    said = _problems(tmp_path, "rooms:\n  - {name: _Outside, box: [0, 0, 5, 5]}\n")
+    assert said == [(4, "a room cannot be called '_Outside': seal's outputs give that name to the mass in no room; "
+                        "call the room another name")]
+    assert _problems(tmp_path, "rooms:\n  - {name: outside, box: [0, 0, 5, 5]}\n") == []  # a garden may be
+    said = _problems(tmp_path, "rooms:\n  - {name: a, box: [0, 0, 5, 5]}\n  - {name: b, box: [20, 0, 30, 5]}\n")
+    assert said == [(5, "room b ([20, 0]–[30, 5]) is wholly outside the map's bounds [0, 0]–[10, 10]: nothing in "
+                        "it can be reached or seen")]
+    said = _problems(tmp_path, "robot: {pose: [1, 1, 1e300]}\n")
+    assert said == [(3, "each number of robot pose must be a number of metres from -10,000,000 to 10,000,000, "
+                        "not '1e300'")]
+    assert _problems(tmp_path, "robot: {pose: [1, 1, 0]}\nspeaker: {at: [9.9, 1e1]}\n") == []
