@@ -150,7 +150,7 @@ def _back(s: State, i: int) -> Match | None:
     "here" is; what it refers to is :meth:`seal_cli.language.reference.Reference.source_before`'s)."""
     if s.in_np() or s.verb_index < 0 or str(s.out[s.verb_index].info) not in s.lexicon.puts or \
             s.prev_tag() == Tag.VERB:
-        return None                                               # "put back the mug": a particle, as before
+        return None                                               # "carry back the mug": a particle, as before
     if s.noun_follows(i + 1) or str(s.out[s.verb_index].info) in s.lexicon.escorts:
         return None                               # "the left back burner": a noun's; "take them back": a person
     rest = s.words[i + 1:s.clause_end(i + 1)]
@@ -235,7 +235,7 @@ BACK = Rule("back, where it was", _back, (
     Example("put the mug back", "back", Tag.HERE),
     Example("take the cup from the table and put it back", "back", Tag.HERE),
 ), frozenset(["back"]), "'back' after a verb of putting with no place said: back where the thing was taken from")
-PARTICLE = Rule("particle", _particle, (Example("put back the mug", "back", Tag.PARTICLE),), PARTICLES,
+PARTICLE = Rule("particle", _particle, (Example("carry back the mug", "back", Tag.PARTICLE),), PARTICLES,
                 "a particle with no verb of its own")
 WH = Rule("wh-word", _wh, (Example("tell me what time it is", "what", Tag.WH),), WH_WORDS, "'what', 'which', ...")
 BE = Rule("be", _be, (Example("tell me what time it is", "is", Tag.BE),), BE_WORDS, "'is', 'are', ...")
