@@ -178,6 +178,8 @@ class Agent:
         self.unreachable: set[str] = set()
         self.opened: set[str] = set()
         """Receptacles the robot has opened (and so looked into)."""
+        self.ajar: set[str] = set()
+        """Receptacles the robot opened itself to look into, take from or put into, not yet closed again."""
         self.left_open: set[str] = {i.id for i in self.world.items.values() if i.openable and i.is_open}
         """Receptacles open as the command found them or as a frame opened them, not only to look in: what is
         in them is where it lies (an apple in a fridge the robot opened to look for it is still to be brought
@@ -607,6 +609,8 @@ class Agent:
                 self.world.face(self.known[place].at)
                 self.open_to_look(place)
                 self.look()
+                if self.resolve(value, binding, role) is None:
+                    self.shut_after(place)
             if place not in self.opened:  # out of reach, or it would not open: not tried again
                 self.unreachable.add(place)
         return None
@@ -819,6 +823,8 @@ class Agent:
         if view.open is not None:
             self.open_to_look(view.open)
         self.look()
+        if view.open is not None and self.resolve(value, binding, role) is None:
+            self.shut_after(view.open)              # nothing sought in it: closed again, as a peek
         return None
 
     def is_person(self, value: str) -> bool:
@@ -1164,6 +1170,22 @@ class Agent:
     def open_to_look(self, place: str) -> None:
         if self._open_or_close(place, True):
             self.opened.add(place)
+            self.ajar.add(place)
+
+    def needs_open(self, place: str) -> bool:
+        """Whether a frame still to come in the plan needs the place open (``open`` among its preconditions)."""
+        names = {place, self.world.items[place].key}
+        return any(f.predicate == "open" and not f.negated and f.args and f.args[0] in names
+                   for b in self.steps[self.index + 1:] for f in b.preconditions)
+
+    def shut_after(self, place: str | None) -> None:
+        """Close again a receptacle the robot opened only to look into, take from or put into (as it closes
+        the fridge it peeked into), before it goes on, unless the plan still needs it open."""
+        if place is None or place not in self.ajar or self.needs_open(place):
+            return
+        self.ajar.discard(place)
+        if self.world.items[place].is_open and self.world.within_reach(place):
+            self._open_or_close(place, False)
 
     def close_to_use(self, place: str) -> None:
         """Close what must be shut for the action (a microwave before it is switched on)."""
@@ -1317,6 +1339,8 @@ class Agent:
         self.say("act" if outcome.ok else "fail", outcome.message, action=action.name, args=args)
         if outcome.ok:
             self._after(action.name, args, binding)
+            if action.name in ("pick", "place"):         # taken out of it, or put into it: shut it again
+                self.shut_after(lay if action.name == "pick" else args[1])
             question = self.questions.get(binding)
             if action.name == "look_at" and question is not None and question.kind == "state":
                 self.answer(self.state_answer(args[0], question.relation))
