@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import re
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from datetime import datetime, timedelta
@@ -244,6 +245,8 @@ class Agent:
     def say(self, kind: str, text: str, **data: Any) -> None:
         if self.detail and kind in DETAIL_KINDS:
             data["detail"] = True       # a step of a survey said a line for: kept, not narrated
+        if kind in WORDED_KINDS:
+            text = as_words(text)
         robot = self.world.robot
         record = Record(kind, text, self.world.step, robot.path_m, robot.pose, data)
         self.records.append(record)
@@ -1672,6 +1675,15 @@ TOUR_EXACT = 7
 """Up to this many rooms, the whole-house search tries every order of them (7! = 5,040)."""
 
 DETAIL_KINDS = frozenset({"go", "look", "search"})
+WORDED_KINDS = frozenset({"search"})
+"""Narration whose class names are said as words ("looks for frying pan"), its ids kept (``frying_pan_1``)."""
+CLASS_NAME = re.compile(r"\b[A-Za-z]+(?:_[A-Za-z]+)+\b")
+
+
+def as_words(text: str) -> str:
+    """Class and room names said as words ("frying_pan 0.73 there": "frying pan 0.73 there"), an item's id
+    (``frying_pan_1``, ``fridge_1``) as it is."""
+    return CLASS_NAME.sub(lambda m: m.group().replace("_", " "), text)
 """The kinds of record that are details of a survey's line (not narrated, kept in the records)."""
 
 SURVEY_VIEWS = 30

@@ -354,3 +354,20 @@ def test_a_receptacle_put_into_is_closed_again_unless_the_plan_needs_it_open(lib
     assert s.world.items["apple_1"].parent == "fridge_1" and not s.world.items["fridge_1"].is_open
     acts = [r.text for r in heard if r.kind == "act"]
     assert acts[-1] == "closed fridge_1"
+
+
+def test_the_search_is_narrated_with_class_names_as_words_and_ids_as_they_are(library: Library) -> None:
+    """"put the frying pan in the sink": "looks for frying pan: kitchen: frying pan 0.73 there", not
+    "frying_pan"; the ids said (``frying_pan_1``, ``sink_1``) and the frames stay as they are."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.agent import as_words
+
+    agent, result = run_on_map(load_map("bungalow"), "put the frying pan in the sink", library,
+                               make_policy("sefm", 100), rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    searches = [r.text for r in agent.records if r.kind == "search"]
+    assert searches and searches[0].startswith("looks for frying pan: ") and "frying_pan" not in searches[0]
+    assert any(r.text == "picked up frying_pan_1 from hob_1" for r in agent.records)
+    said = "looks into filing_cabinet_1 in the living_room"
+    assert as_words(said) == "looks into filing_cabinet_1 in the living room"
