@@ -1187,8 +1187,12 @@ class Agent:
         if place is None or place not in self.ajar or self.needs_open(place):
             return
         self.ajar.discard(place)
-        if self.world.items[place].is_open and self.world.within_reach(place):
-            self._open_or_close(place, False)
+        if self.world.items[place].is_open and self.world.within_reach(place) and self._open_or_close(place, False):
+            self.left_open.discard(place)
+
+    def commanded(self, binding: Binding) -> bool:
+        """Whether the frame at hand is one the command said, not one the planner put in for it."""
+        return bool(self.todo) and binding == self.todo[0]
 
     def close_to_use(self, place: str) -> None:
         """Close what must be shut for the action (a microwave before it is switched on)."""
@@ -1316,6 +1320,8 @@ class Agent:
                 return Outcome(False, f"knows no {value} to {action.name.replace('_', ' ')}", Reason.NOT_FOUND, value)
             args.append(target)
         lay = self.world.items[args[0]].parent if action.name == "pick" and args[0] in self.world.items else None
+        if action.name == "open" and self.commanded(binding):     # "open the larder": left open, even if the
+            self.ajar.discard(args[0])                              # robot had opened it to look in already
         outcome = self.world.act(action.name, *args)
         if outcome.ok and action.name == "pick":
             self.picked_from[args[0]] = lay
@@ -1622,6 +1628,8 @@ class Agent:
         elif name == "open":           # what the opening shows is seen, as when it peeks
             self.opened.add(args[0])
             self.left_open.add(args[0])
+            if not self.commanded(binding):      # opened only for the frames after it: closed again after them
+                self.ajar.add(args[0])
             self.look(quiet=True)
 
     def put_beside(self, thing: str, target: str, refused: Outcome) -> tuple[Outcome, list[str]]:

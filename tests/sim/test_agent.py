@@ -354,6 +354,16 @@ def test_a_receptacle_put_into_is_closed_again_unless_the_plan_needs_it_open(lib
     assert s.world.items["apple_1"].parent == "fridge_1" and not s.world.items["fridge_1"].is_open
     acts = [r.text for r in heard if r.kind == "act"]
     assert acts[-1] == "closed fridge_1"
+    s, agent, result, heard = run(library, [("Place", {"theme": "apple", "goal": "fridge"}),   # the plan still
+                                            ("Place", {"theme": "knife", "goal": "fridge"})],   # needs it open
+                                  apple_in="counter_1")
+    assert result.completed, result.reason
+    acts = [r.text for r in heard if r.kind == "act"]
+    assert sum(t.startswith("opened fridge_1") for t in acts) == 1 and acts[-1] == "closed fridge_1"
+    assert s.world.items["knife_1"].parent == "fridge_1" and not s.world.items["fridge_1"].is_open
+    s, agent, result, heard = run(library, [("Open", {"theme": "fridge"}),           # the command wants it open
+                                            ("Place", {"theme": "apple", "goal": "fridge"})], apple_in="counter_1")
+    assert result.completed and s.world.items["fridge_1"].is_open
 
 
 def test_the_search_is_narrated_with_class_names_as_words_and_ids_as_they_are(library: Library) -> None:
