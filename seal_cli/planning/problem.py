@@ -537,8 +537,10 @@ def _counted_roles(frame: Frame) -> set[str]:
 def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Binding]:
     """The grounded frames a parse commands, in order; a counted element repeats its frame."""
     from seal_cli.language.reference import back_unplaced
+    from seal_cli.planning.fetching import brought
     from seal_cli.planning.questions import asks_whether, looking
 
+    parse = replace(parse, frames=brought(parse.frames, library))     # "fetch the remote": bring it here
     earlier: list[dict[str, tuple[str, ...]]] = []
     bindings: list[Binding] = []
     for evoked in parse.frames:

@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import re
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from datetime import datetime, timedelta
@@ -178,6 +179,8 @@ class Agent:
         self.unreachable: set[str] = set()
         self.opened: set[str] = set()
         """Receptacles the robot has opened (and so looked into)."""
+        self.ajar: set[str] = set()
+        """Receptacles the robot opened itself to look into, take from or put into, not yet closed again."""
         self.left_open: set[str] = {i.id for i in self.world.items.values() if i.openable and i.is_open}
         """Receptacles open as the command found them or as a frame opened them, not only to look in: what is
         in them is where it lies (an apple in a fridge the robot opened to look for it is still to be brought
@@ -242,6 +245,8 @@ class Agent:
     def say(self, kind: str, text: str, **data: Any) -> None:
         if self.detail and kind in DETAIL_KINDS:
             data["detail"] = True       # a step of a survey said a line for: kept, not narrated
+        if kind in WORDED_KINDS:
+            text = as_words(text)
         robot = self.world.robot
         record = Record(kind, text, self.world.step, robot.path_m, robot.pose, data)
         self.records.append(record)
@@ -607,6 +612,8 @@ class Agent:
                 self.world.face(self.known[place].at)
                 self.open_to_look(place)
                 self.look()
+                if self.resolve(value, binding, role) is None:
+                    self.shut_after(place)
             if place not in self.opened:  # out of reach, or it would not open: not tried again
                 self.unreachable.add(place)
         return None
@@ -819,6 +826,8 @@ class Agent:
         if view.open is not None:
             self.open_to_look(view.open)
         self.look()
+        if view.open is not None and self.resolve(value, binding, role) is None:
+            self.shut_after(view.open)              # nothing sought in it: closed again, as a peek
         return None
 
     def is_person(self, value: str) -> bool:
@@ -1164,6 +1173,26 @@ class Agent:
     def open_to_look(self, place: str) -> None:
         if self._open_or_close(place, True):
             self.opened.add(place)
+            self.ajar.add(place)
+
+    def needs_open(self, place: str) -> bool:
+        """Whether a frame still to come in the plan needs the place open (``open`` among its preconditions)."""
+        names = {place, self.world.items[place].key}
+        return any(f.predicate == "open" and not f.negated and f.args and f.args[0] in names
+                   for b in self.steps[self.index + 1:] for f in b.preconditions)
+
+    def shut_after(self, place: str | None) -> None:
+        """Close again a receptacle the robot opened only to look into, take from or put into (as it closes
+        the fridge it peeked into), before it goes on, unless the plan still needs it open."""
+        if place is None or place not in self.ajar or self.needs_open(place):
+            return
+        self.ajar.discard(place)
+        if self.world.items[place].is_open and self.world.within_reach(place) and self._open_or_close(place, False):
+            self.left_open.discard(place)
+
+    def commanded(self, binding: Binding) -> bool:
+        """Whether the frame at hand is one the command said, not one the planner put in for it."""
+        return bool(self.todo) and binding == self.todo[0]
 
     def close_to_use(self, place: str) -> None:
         """Close what must be shut for the action (a microwave before it is switched on)."""
@@ -1291,6 +1320,8 @@ class Agent:
                 return Outcome(False, f"knows no {value} to {action.name.replace('_', ' ')}", Reason.NOT_FOUND, value)
             args.append(target)
         lay = self.world.items[args[0]].parent if action.name == "pick" and args[0] in self.world.items else None
+        if action.name == "open" and self.commanded(binding):     # "open the larder": left open, even if the
+            self.ajar.discard(args[0])                              # robot had opened it to look in already
         outcome = self.world.act(action.name, *args)
         if outcome.ok and action.name == "pick":
             self.picked_from[args[0]] = lay
@@ -1317,6 +1348,8 @@ class Agent:
         self.say("act" if outcome.ok else "fail", outcome.message, action=action.name, args=args)
         if outcome.ok:
             self._after(action.name, args, binding)
+            if action.name in ("pick", "place"):         # taken out of it, or put into it: shut it again
+                self.shut_after(lay if action.name == "pick" else args[1])
             question = self.questions.get(binding)
             if action.name == "look_at" and question is not None and question.kind == "state":
                 self.answer(self.state_answer(args[0], question.relation))
@@ -1595,6 +1628,8 @@ class Agent:
         elif name == "open":           # what the opening shows is seen, as when it peeks
             self.opened.add(args[0])
             self.left_open.add(args[0])
+            if not self.commanded(binding):      # opened only for the frames after it: closed again after them
+                self.ajar.add(args[0])
             self.look(quiet=True)
 
     def put_beside(self, thing: str, target: str, refused: Outcome) -> tuple[Outcome, list[str]]:
@@ -1648,6 +1683,15 @@ TOUR_EXACT = 7
 """Up to this many rooms, the whole-house search tries every order of them (7! = 5,040)."""
 
 DETAIL_KINDS = frozenset({"go", "look", "search"})
+WORDED_KINDS = frozenset({"search"})
+"""Narration whose class names are said as words ("looks for frying pan"), its ids kept (``frying_pan_1``)."""
+CLASS_NAME = re.compile(r"\b[A-Za-z]+(?:_[A-Za-z]+)+\b")
+
+
+def as_words(text: str) -> str:
+    """Class and room names said as words ("frying_pan 0.73 there": "frying pan 0.73 there"), an item's id
+    (``frying_pan_1``, ``fridge_1``) as it is."""
+    return CLASS_NAME.sub(lambda m: m.group().replace("_", " "), text)
 """The kinds of record that are details of a survey's line (not narrated, kept in the records)."""
 
 SURVEY_VIEWS = 30

@@ -204,7 +204,9 @@ def _short(text: str) -> str:
 def _acts(records: Sequence[Record]) -> list[tuple[tuple[float, float, float], str]]:
     """What the robot did, to label where it did it: each action and answer, and where a frame that only
     drives (Go) ended, with the drive's line ("goes to the bedroom (by desk_1)", its distance left off). A place
-    opened to look in and closed again where it stood is one label ("looked into fridge_1; inside: milk_1")."""
+    opened to look in and closed again where it stood is one label ("looked into fridge_1; inside: milk_1"); one
+    closed again after something was taken out of it there says so on that label ("picked up jam_1 from larder_1,
+    closed larder_1")."""
     out: list[tuple[tuple[float, float, float], str]] = []
     drive: Record | None = None
     acted = False
@@ -217,6 +219,9 @@ def _acts(records: Sequence[Record]) -> list[tuple[tuple[float, float, float], s
             if out and shut != record.text and out[-1][0] == record.pose and \
                     re.match(rf"opened {re.escape(shut)}(;|$)", out[-1][1]):   # opened, looked in, closed: one label
                 out[-1] = (record.pose, "looked into " + out[-1][1].removeprefix("opened "))
+            elif out and shut != record.text and out[-1][0] == record.pose and any(
+                    re.match(rf"opened {re.escape(shut)}(;|$)", text) for pose, text in out if pose == record.pose):
+                out[-1] = (record.pose, f"{out[-1][1]}, closed {shut}")   # took out of it, closed it: no new card
             elif not (out and out[-1][1].split(": ", 1)[-1] == said and ": " in record.text):
                 out.append((record.pose, record.text))
             acted = True

@@ -327,3 +327,57 @@ def test_a_tour_of_many_rooms_is_improved_past_the_nearest_room_next() -> None:
     between = np.abs(xs[:, None] - xs[None, :])
     assert _two_opt((1, 0, 2), first, between) == (0, 1, 2)
     assert _two_opt((0, 1, 2), first, between) == (0, 1, 2)     # a tour no reversal shortens stays
+
+
+def test_a_receptacle_opened_to_take_from_is_closed_again_before_the_robot_goes_on(library: Library) -> None:
+    """"Bring me the jam from the larder": the robot opens the larder to take the jam out and closes it
+    again at once, before it drives to the speaker (no metre more); a fridge it opened to look into and
+    found the thing in, for a Find, is left open to show it."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
+
+    agent, result = run_on_map(load_map("bungalow"), "bring me the jam from the larder", library,
+                               make_policy("sefm", 100), rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    texts = [r.text for r in agent.records]
+    picked = next(i for i, t in enumerate(texts) if t.startswith("picked up jam_1 from larder_1"))
+    assert texts[picked + 1] == "closed larder_1"
+    assert agent.records[picked + 1].path_m == agent.records[picked].path_m
+    assert not agent.world.items["larder_1"].is_open
+    s, agent, result, heard = run(library, [("Find", {"theme": "apple"})])
+    assert result.completed and s.world.items["fridge_1"].is_open
+
+
+def test_a_receptacle_put_into_is_closed_again_unless_the_plan_needs_it_open(library: Library) -> None:
+    s, agent, result, heard = run(library, [("Place", {"theme": "apple", "goal": "fridge"})], apple_in="counter_1")
+    assert result.completed, result.reason
+    assert s.world.items["apple_1"].parent == "fridge_1" and not s.world.items["fridge_1"].is_open
+    acts = [r.text for r in heard if r.kind == "act"]
+    assert acts[-1] == "closed fridge_1"
+    s, agent, result, heard = run(library, [("Place", {"theme": "apple", "goal": "fridge"}),   # the plan still
+                                            ("Place", {"theme": "knife", "goal": "fridge"})],   # needs it open
+                                  apple_in="counter_1")
+    assert result.completed, result.reason
+    acts = [r.text for r in heard if r.kind == "act"]
+    assert sum(t.startswith("opened fridge_1") for t in acts) == 1 and acts[-1] == "closed fridge_1"
+    assert s.world.items["knife_1"].parent == "fridge_1" and not s.world.items["fridge_1"].is_open
+    s, agent, result, heard = run(library, [("Open", {"theme": "fridge"}),           # the command wants it open
+                                            ("Place", {"theme": "apple", "goal": "fridge"})], apple_in="counter_1")
+    assert result.completed and s.world.items["fridge_1"].is_open
+
+
+def test_the_search_is_narrated_with_class_names_as_words_and_ids_as_they_are(library: Library) -> None:
+    """"put the frying pan in the sink": "looks for frying pan: kitchen: frying pan 0.73 there", not
+    "frying_pan"; the ids said (``frying_pan_1``, ``sink_1``) and the frames stay as they are."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.agent import as_words
+
+    agent, result = run_on_map(load_map("bungalow"), "put the frying pan in the sink", library,
+                               make_policy("sefm", 100), rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    searches = [r.text for r in agent.records if r.kind == "search"]
+    assert searches and searches[0].startswith("looks for frying pan: ") and "frying_pan" not in searches[0]
+    assert any(r.text == "picked up frying_pan_1 from hob_1" for r in agent.records)
+    said = "looks into filing_cabinet_1 in the living_room"
+    assert as_words(said) == "looks into filing_cabinet_1 in the living room"

@@ -139,3 +139,22 @@ def test_a_picture_shows_the_house_not_the_unknown_border_of_a_laser_map(shared_
     assert -11.0 < xmin < -9.0 and 9.0 < xmax < 11.0 and -7.5 < ymin < -5.0 and 5.0 < ymax < 7.5
     apartment = load_map("apartment")       # known all over its bounds: the bounds
     assert shown_extent(apartment) == pytest.approx(apartment.bounds, abs=MARGIN)
+
+
+def test_a_place_closed_after_something_was_taken_out_adds_no_card_of_its_own(library: Any) -> None:
+    """"bring me the jam from the larder": opened (with what it showed), then "picked up jam_1 from larder_1,
+    closed larder_1" where it stood, not a third card at that spot."""
+    import numpy as np
+
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.sim.policies import make_policy
+    from seal_cli.sim.record import _acts
+
+    agent, result = pipeline.run_on_map(load_map("bungalow"), "bring me the jam from the larder", library,
+                                        make_policy("sefm", 100), rng=np.random.default_rng(0))
+    assert result.completed
+    labels = [text for _, text in _acts(agent.records)]
+    assert labels[:2] == ["opened larder_1; inside: jam_1, biscuit_tin_1",
+                          "picked up jam_1 from larder_1, closed larder_1"]
+    assert not any(text.startswith("closed") for text in labels)
