@@ -52,4 +52,5 @@ PRIMITIVES: dict[str, Primitive] = _table(
     ("say", ("message",), "say the message aloud"),
     ("answer", ("question",), "listen to a question and answer it"),
     ("count", ("thing",), "count the things in view"),
+    ("wait", (), "stay where it is, doing nothing, until it is told more (or the person waited for comes)"),
 )

@@ -502,13 +502,15 @@ def _check_types(frame: Frame, values: Mapping[str, tuple[str, ...]], phrases: M
 
 def _to_recipient(frame: Frame, values: dict[str, tuple[str, ...]], things: Things) -> None:
     """A person said where a place was expected ("bring the cup *here*", to the speaker) is who
-    receives the thing, when the frame has an unfilled element for a person."""
+    receives the thing, when the frame has an unfilled element for a person that one of its actions takes."""
     for element in frame.elements:
         if element.type != "location" or element.role not in values:
             continue
         if not all(v in things.people for v in values[element.role]):
             continue
-        person = next((e.role for e in frame.elements if e.type == "person" and e.role not in values), None)
+        acted_on = {a for action in frame.actions for a in action.args}   # Wait's who: no one acted on, "here" stays
+        person = next((e.role for e in frame.elements if e.type == "person" and e.role not in values
+                       and e.role in acted_on), None)
         if person is not None:
             values[person] = values.pop(element.role)
 

@@ -914,6 +914,19 @@ class Agent:
             detail.append(f"could not see all of {', '.join(partly)}")
         return f"{said} ({'; '.join(detail)})" if detail else said
 
+    def wait(self, binding: Binding) -> Outcome:
+        """``wait()``: stay put, doing nothing; said as where it waits (its room) and for whom (the theme)."""
+        outcome = self.world.act("wait")
+        if not outcome.ok:
+            return outcome
+        x, y = self.world.robot.pose[:2]
+        rooms = self.scene.map.room_of([(x, y)]) if self.scene.map.rooms else []
+        where = f" in the {rooms[0].replace('_', ' ')}" if rooms and not rooms[0].startswith("_") else " where it is"
+        who = binding.elements.get("theme")
+        whom = "" if who is None else " for the speaker" if who == "me" else f" for {self.said(who)}"
+        self.say("act", f"waits{where}{whom}", action="wait", args=[])
+        return outcome
+
     def said(self, value: str) -> str:
         """A value as a person would say it: its class, with spaces (``apple_2``: apple)."""
         return self.class_of(value).replace("_", " ")
@@ -1309,6 +1322,8 @@ class Agent:
                 self.answer(counted)
                 return self._act_words(action.name, list(action.args), f"counted: {counted}")
             return self._act_words(action.name, list(action.args))
+        if action.name == "wait":
+            return self.wait(binding)
         roles = {v: r for r, v in binding.values}
         args: list[str] = []
         for value in action.args:

@@ -561,6 +561,9 @@ class World:
     def _do_answer(self, question: str) -> Outcome:
         return Outcome(True, f"answered \"{question.replace('_', ' ')}\"")
 
+    def _do_wait(self) -> Outcome:
+        return Outcome(True, "waits")
+
     def _do_say(self, message: str) -> Outcome:
         return Outcome(True, f"said \"{message.replace('_', ' ')}\"")     # the message's name, as words
 

@@ -10,7 +10,7 @@ from pathlib import Path
 from typer.testing import CliRunner
 
 from seal_cli.cli import app
-from tests.frames.test_library import SPEC_FRAMES
+from tests.frames.test_library import PROJECT_FRAMES, SPEC_FRAMES
 
 runner = CliRunner()
 
@@ -24,7 +24,7 @@ def test_frames_json_lists_the_spec_frames_with_their_roles() -> None:
     result = runner.invoke(app, ["frames", "--json"])
     assert result.exit_code == 0
     frames = json.loads(result.stdout)["frames"]
-    assert {f["frame"]: set(f["elements"]) for f in frames} == SPEC_FRAMES
+    assert {f["frame"]: set(f["elements"]) for f in frames} == SPEC_FRAMES | PROJECT_FRAMES
     stir = next(f for f in frames if f["frame"] == "Stir")
     assert stir["elements"]["instrument"] == {"type": "utensil", "default": "spoon"}
     assert stir["preconditions"] == ["holding(instrument)"]
@@ -33,7 +33,7 @@ def test_frames_json_lists_the_spec_frames_with_their_roles() -> None:
 
 def test_frames_table_and_one_frame_in_full() -> None:
     table = runner.invoke(app, ["frames"])
-    assert table.exit_code == 0 and "24 frames" in table.stdout and "LookAt" in table.stdout
+    assert table.exit_code == 0 and "25 frames" in table.stdout and "LookAt" in table.stdout
     one = runner.invoke(app, ["frames", "Stir"])
     assert one.exit_code == 0
     assert "holding(instrument)" in one.stdout and "stir(instrument, theme)" in one.stdout
@@ -48,9 +48,9 @@ def test_unknown_frame_is_a_clean_error() -> None:
 
 def test_validate_ok_and_json() -> None:
     result = runner.invoke(app, ["validate", "framelib"])
-    assert result.exit_code == 0 and result.stdout.startswith("ok: 24 frames")
+    assert result.exit_code == 0 and result.stdout.startswith("ok: 25 frames")
     report = json.loads(runner.invoke(app, ["validate", "framelib", "--json"]).stdout)
-    assert report["ok"] is True and report["frames"] == 24 and report["problems"] == []
+    assert report["ok"] is True and report["frames"] == 25 and report["problems"] == []
 
 
 def test_validate_json_lists_problems(tmp_path: Path) -> None:

@@ -21,6 +21,9 @@ SPEC_FRAMES = {
     "Answer": {"theme", "recipient"}, "Count": {"theme", "ground"},
 }
 
+# Frames the project adds beyond the SPEC's table (its roles kept as the SPEC names them elsewhere).
+PROJECT_FRAMES = {"Wait": {"theme", "ground"}}
+
 # Lexical units the SPEC's table names for each frame.
 SPEC_UNITS = {
     "Go": "go navigate move walk head", "Find": "find|locate|look for|search for|spot",
@@ -35,7 +38,17 @@ SPEC_UNITS = {
 
 
 def test_the_standard_library_has_the_spec_frames_and_roles(library: Library) -> None:
-    assert {f.name: set(f.roles) for f in library} == SPEC_FRAMES
+    assert {f.name: set(f.roles) for f in library} == SPEC_FRAMES | PROJECT_FRAMES
+
+
+def test_wait_stays_where_it_is_told_and_does_nothing_there(library: Library) -> None:
+    """"go to the kitchen and wait there", "wait for me in the hall": Wait drives to its ground if one is
+    said and waits; who it waits for (the theme) is acted on by no primitive, so "here" stays a where."""
+    wait = library.frame("Wait")
+    assert tuple(library.evoked_by("wait")) == (wait,) and wait in library.evoked_by("wait for")
+    assert {e.role: e.type for e in wait.elements} == {"theme": "person", "ground": "location"}
+    assert [(a.name, a.args) for a in wait.actions] == [("navigate", ("ground",)), ("wait", ())]
+    assert [a.name for a in wait.bind({}).actions] == ["wait"]         # "wait": nowhere to go first
 
 
 @pytest.mark.parametrize("name", sorted(SPEC_UNITS))

@@ -119,7 +119,7 @@ def test_the_command_line_reports_a_refused_one_as_an_error_object(library: Libr
 
 
 @pytest.mark.parametrize(("text", "verb"), [
-    ("go to the kitchen and wait there", "wait"),
+    ("go to the kitchen and sit there", "sit"),
     ("take the cup and dance", "dance"),
     ("grab the towel, and kneel down", "kneel"),
     ("go to the door and knock", "knock"),
@@ -128,6 +128,14 @@ def test_a_verb_after_and_is_a_clause_and_its_unknown_verb_an_error(library: Lib
     with pytest.raises(CommandError) as raised:
         parse_command(text, library)
     assert f"unknown verb {verb!r}" in raised.value.message and raised.value.column == text.index(verb) + 1
+
+
+def test_wait_after_and_is_a_wait_there_the_place_before(library: Library) -> None:
+    """words15: "wait" is a verb of the library now (Wait), its "there" the Go's goal."""
+    parse = parse_command("go to the kitchen and wait there", library)
+    assert [f.frame for f in parse.frames] == ["Go", "Wait"]
+    assert parse.frames[1].elements["ground"].refers_to == (0, "goal")
+    assert parse.frames[1].elements["ground"].head == "kitchen"
 
 
 @pytest.mark.parametrize(("text", "theme"), [

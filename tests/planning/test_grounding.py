@@ -92,6 +92,10 @@ def test_here_is_the_speaker_and_a_person_where_a_place_was_said_receives(librar
     assert [str(s) for s in plan("come here", library, map=m).steps] == ["Go(goal=me)"]   # type: ignore[arg-type]
     assert [str(s) for s in plan("bring the cup here", library, map=m).steps] == [    # type: ignore[arg-type]
         "Pick(theme=cup)", "Bring(theme=cup, recipient=me)"]
+    # Wait's theme (whom it waits for) is acted on by no primitive: "here" stays where it waits
+    assert [str(s) for s in plan("wait here", library, map=m).steps] == ["Wait(ground=me)"]   # type: ignore[arg-type]
+    assert [str(s) for s in plan("wait for me in the kitchen", library, map=m).steps] == [  # type: ignore[arg-type]
+        "Wait(theme=me, ground=kitchen)"]
 
 
 def test_the_first_words_of_a_compound_name_call_it_weakly(library: object) -> None:

@@ -182,6 +182,24 @@ def test_counting_furniture_reads_the_map_and_a_class_nobody_knows_is_none_anywh
     assert chairs.completed and chairs.answer == "0 chairs in the dining room; it knows of no chairs anywhere"
 
 
+@pytest.mark.parametrize(("text", "plan", "said"), [
+    ("go to the kitchen and wait there", ["Go(goal=kitchen)", "Wait(ground=kitchen)"], "waits in the kitchen"),
+    ("go to the bedroom and wait for me", ["Go(goal=bedroom)", "Wait(theme=me)"],
+     "waits in the bedroom for the speaker"),
+    ("wait here", ["Wait(ground=me)"], "waits in the living room"),     # where the speaker is: no one to wait for
+])
+def test_wait_goes_where_it_is_told_and_waits_there(library: Library, text: str, plan: list[str], said: str) -> None:
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    _, result = pipeline.run_on_map(load_map("apartment"), text, library, make_policy("sefm"),
+                                    rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    assert result.plan == plan
+    waits = [r for r in result.records if r.kind == "act" and r.data.get("action") == "wait"]
+    assert [r.text for r in waits] == [said] and waits[0].path_m == result.path_m
+
+
 def test_what_an_opening_shows_is_seen_so_the_next_step_needs_no_search(library: Library) -> None:
     """"Open the fridge, take out the apple": the apple inside is seen when the fridge opens, so
     the Pick that follows takes it from there, with no look elsewhere and no metre driven."""
