@@ -234,7 +234,7 @@ def _verb_after_joint(s: State, i: int) -> Match | None:
     """After "and", "then" or "," inside a clause, a bare word (no determiner) that is mostly used as a verb, in its
     base form, and names no thing the library knows, before what a verb takes (a determiner, a pronoun, "here" or
     "there", "please", a preposition or a particle, or the end of the command): a clause of its own ("go to the
-    kitchen and *wait* there", "take the cup and *dance*"), so its verb is a frame's or reported as unknown, never
+    kitchen and *sleep* there", "take the cup and *dance*"), so its verb is a frame's or reported as unknown, never
     read as a noun of a list ("bring the cup and *plate*", "the salt and *pepper*")."""
     words = s.words
     n = match_phrase(words, i, SEPARATOR_WORDS)
@@ -258,7 +258,7 @@ def _verb_after_joint(s: State, i: int) -> Match | None:
 
 
 VERB_AFTER_JOINT = Rule("verb after a joint", _verb_after_joint, (
-    Example("go to the kitchen and wait there", "wait", Tag.WORD),
+    Example("go to the kitchen and sleep there", "sleep", Tag.WORD),
     Example("take the cup and dance", "dance", Tag.WORD),
     Example("grab the towel, and kneel down", "kneel", Tag.WORD),
     Example("go to the sofa and sit", "sit", Tag.WORD),

@@ -73,7 +73,7 @@ TELL_TO = Rule("told to", _tell_to, (
 ), frozenset(["to"]), "'to' after the person a verb of saying tells")
 TOLD_TO_DO = Rule("told to do what the robot cannot", _told_to_do, (
     Example("remind Anna to call her mother", "call her mother", Tag.SAID),
-    Example("tell the guest to wait", "wait", Tag.SAID),
+    Example("tell the guest to sit", "sit", Tag.SAID),
 ), frozenset(["to"]), "'to' and a verb of English no frame has, after the person a verb of saying tells: what is "
    "said (what Anna is to do, not the robot)")
 PURPOSE = Rule("clause of purpose", _purpose, (
