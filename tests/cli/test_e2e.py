@@ -384,7 +384,8 @@ def test_a_thing_put_on_a_closed_place_goes_on_top_and_one_put_in_it_opens_it() 
     assert into["completed"] and acts == ["picked up mug_1 from coffee_table_1", "opened sideboard_1; inside: teapot_1",
                                           "put mug_1 in sideboard_1", "closed sideboard_1"]
     teapot, acts = acts_of("put the teapot on the sideboard")
-    assert teapot["completed"] and acts == ["opened sideboard_1; inside: teapot_1", "picked up teapot_1 from sideboard_1",
-                                            "closed sideboard_1", "put teapot_1 on sideboard_1"]
+    assert teapot["completed"] and acts == ["opened sideboard_1; inside: teapot_1",
+                                            "picked up teapot_1 from sideboard_1", "closed sideboard_1",
+                                            "put teapot_1 on sideboard_1"]
     still, acts = acts_of("put the teapot in the sideboard")       # inside it already: nothing to do
     assert still["completed"] and not any(a.startswith("put ") for a in acts)

@@ -167,5 +167,6 @@ def test_a_thing_put_on_top_of_a_closed_place_stays_in_sight_and_reach(library: 
     assert world.enclosure("pear_1") is None and world.enclosure("apple_1") == world.items["fridge_1"]
     assert "pear_1" in {d.id for d in world.observe()} and "apple_1" not in {d.id for d in world.observe()}
     assert world.act("pick", "pear_1") and not world.items["pear_1"].on_top     # taken off the top again
-    assert world.act("open", "fridge_1") and world.act("place", "pear_1", "fridge_1").message == "put pear_1 in fridge_1"
+    assert world.act("open", "fridge_1")
+    assert world.act("place", "pear_1", "fridge_1").message == "put pear_1 in fridge_1"
     assert not world.items["pear_1"].on_top and world.act("close", "fridge_1") and world.enclosure("pear_1")
