@@ -33,6 +33,7 @@ PRIMITIVES: dict[str, Primitive] = _table(
     ("search", ("thing",), "look around until the thing is seen"),
     ("pick", ("object",), "grasp the object (hand empty, object within reach and not inside a closed place)"),
     ("place", ("object", "receptacle"), "put the held object in or on the receptacle (open if openable)"),
+    ("place_on", ("object", "receptacle"), "put the held object on top of the receptacle (closed or not)"),
     ("hand_over", ("object", "person"), "give the held object to the person"),
     ("open", ("thing",), "open an openable thing within reach"),
     ("close", ("thing",), "close an openable thing within reach"),

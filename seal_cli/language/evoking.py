@@ -370,6 +370,9 @@ class Evoker:
             np = roles.get(element.role)
             if np is not None:
                 elements[element.role] = self.phrase(np, frame, element.role)
+                prep = next((x.prep for x in clause.items if isinstance(x, PP) and x.np is np), None)
+                if prep is not None:             # "put the teapot *on* the sideboard": on its top, not in it
+                    elements[element.role] = replace(elements[element.role], preposition=prep)
         first = frame.elements[0] if frame.elements else None
         said = self.types.object_role(unit)            # "fill [it] with water": the goal is what is unsaid
         if said is not None:

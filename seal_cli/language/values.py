@@ -18,7 +18,7 @@ class Phrase:
     antecedent of a pronoun as (frame index, element); ``quantity`` a number said ("two
     apples"); ``default`` marks an element filled from the frame's default, not said;
     ``conjuncts`` are the phrases of a coordination ("the apple and the pear"), each grounded
-    (the phrase itself stands for the first).
+    (the phrase itself stands for the first); ``preposition`` the one it was said with.
     """
 
     text: str | None
@@ -33,6 +33,9 @@ class Phrase:
     span: tuple[int, int] | None = field(default=None, compare=False)
     conjuncts: tuple[Phrase, ...] = ()
     relative: str | None = None
+    preposition: str | None = field(default=None, compare=False)
+    """The preposition it was said with ("on" of "put the teapot *on* the sideboard"), None for an object;
+    read by the planner (:func:`seal_cli.planning.problem.on_top`), not part of the SPEC's JSON (as ``span``)."""
 
     def to_json(self) -> dict[str, Any]:
         data: dict[str, Any] = {"text": self.text, "head": self.head, "class": self.cls}

@@ -283,13 +283,30 @@ def _conjunction(atoms: list[str], indent: str) -> str:
     return "(and\n" + "".join(f"{indent}  {a}\n" for a in atoms) + f"{indent})"
 
 
-def _action(frame: Frame, problem: _Problem) -> str:
+def readings(library: Library, plan: Plan) -> list[Frame]:
+    """The frames of the plan's steps read otherwise than the library writes them, each once: a goal
+    said "on" (:func:`seal_cli.planning.problem.on_top`) needs no ``open(goal)``. The domain writes each
+    as an action of its own beside the library's (:func:`reading_name`)."""
+    found: list[Frame] = []
+    for binding in plan.bindings:
+        frame = binding.frame
+        if frame.name in library and frame != library.frame(frame.name) and frame not in found:
+            found.append(frame)
+    return found
+
+
+def reading_name(frame: Frame) -> str:
+    """``do_Place_on_top``: the action of a reading whose thing goes on top of its goal."""
+    return f"{action_name(frame)}_on_top"
+
+
+def _action(frame: Frame, problem: _Problem, name: str | None = None) -> str:
     kinds, taxonomy = problem.kinds, problem.library.taxonomy
     params = " ".join(f"?{e.role} - {type_name(kinds.kind(class_key(e.type)))}" for e in frame.elements)
     pre = [f"({test_name(class_key(e.type))} ?{e.role})" for e in frame.elements if kinds.narrower(class_key(e.type))]
     pre += [_atom(f, (f"?{a}" for a in f.args), taxonomy) for f in (*frame.preconditions, *where_from(frame))]
     effect = [_atom(f, (f"?{a}" for a in f.args), taxonomy) for f in frame.postconditions]
-    return (f"  (:action {action_name(frame)}\n"
+    return (f"  (:action {name or action_name(frame)}\n"
             f"    :parameters ({params})\n"
             f"    :precondition {_conjunction(pre, '    ')}\n"
             f"    :effect {_conjunction(effect, '    ')})\n")
@@ -306,6 +323,7 @@ def _check_names(problem: _Problem) -> None:
     names = [("type", type_name(k)) for k in problem.kinds.names()]
     names += [("predicate", p) for p in problem._predicates()] + [("predicate", test_name(c)) for c in problem._tests()]
     names += [("action", action_name(f)) for f in problem.library] + [("object", o) for o in problem.objects]
+    names += [("action", reading_name(f)) for f in readings(problem.library, problem.plan)]
     for what, name in names:
         other = used.setdefault(name.lower(), what)
         if other != what:
@@ -327,7 +345,8 @@ def domain_pddl(library: Library, plan: Plan, *, name: str = "seal") -> str:
              f"  (:requirements {requirements})",
              f"  (:types {types} - object)",
              "  (:predicates\n" + "".join(f"    {p}\n" for p in predicates) + "  )"]
-    return "\n".join(lines) + "\n" + "".join(_action(frame, problem) for frame in library) + ")\n"
+    return "\n".join(lines) + "\n" + "".join(_action(frame, problem) for frame in library) + \
+        "".join(_action(frame, problem, reading_name(frame)) for frame in readings(library, plan)) + ")\n"
 
 
 def problem_pddl(library: Library, plan: Plan, *, name: str = "command", domain: str = "seal") -> str:

@@ -44,7 +44,7 @@ from typing import TYPE_CHECKING, Any
 
 from seal_cli.errors import SealError, Where
 from seal_cli.frames.library import Library
-from seal_cli.frames.model import Binding, Fact, Frame
+from seal_cli.frames.model import Action, Binding, Fact, Frame
 from seal_cli.frames.taxonomy import Taxonomy, check_class_name, class_key, class_words
 from seal_cli.maps.model import SPEAKER
 from seal_cli.planning.grounding import FIXED, PAIRED, is_room_word, kind_of, where_words, words_of
@@ -224,6 +224,24 @@ MAX_COUNT = 100
 """The most things one phrase may ask for ("put 100 apples in the fridge"); more is refused."""
 
 MAX_COMMANDED = 200
+
+ON_TOP = ("on", "onto", "upon", "atop")
+"""Prepositions that put a thing on top of the goal, not in it ("on top of" is tagged "on")."""
+
+
+def on_top(frame: Frame, goal: Phrase | None) -> Frame:
+    """The frame's reading for a goal said with a preposition of :data:`ON_TOP` ("put the teapot *on*
+    the sideboard"): the thing goes on the goal's top, so the goal need not be open (its ``open(goal)``
+    precondition is dropped) and it is put there with ``place_on``, which a closed place allows. Any
+    other goal ("in", "into", "inside", or none said) keeps the frame as the library wrote it."""
+    if goal is None or goal.preposition not in ON_TOP:
+        return frame
+    opened = Fact("open", ("goal",))
+    if opened not in frame.preconditions:
+        return frame
+    return replace(frame, preconditions=tuple(p for p in frame.preconditions if p != opened),
+                   actions=tuple(Action("place_on", a.args, a.where) if a.name == "place" and a.args[-1:] == ("goal",)
+                                 else a for a in frame.actions))
 """The most grounded frames one command may command (counts and conjunctions multiply)."""
 
 
@@ -594,6 +612,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
             raise SealError(f"the command asks for more than {MAX_COMMANDED} frames (counted and joined things "
                             f"multiply: {evoked.frame} alone is {math.prod(len(values[r]) for r in roles):,}); "
                             "split it into smaller commands")
+        reading = frame if kept or "goal" in placed_back else on_top(frame, evoked.elements.get("goal"))
         for combination in itertools.product(*(values[r] for r in roles)):
             said = dict(zip(roles, combination, strict=True))
             if kept:        # "put away the cup and the spoon": each where it is kept
@@ -601,7 +620,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
                 things.put_away.append(frame.bind(said))
             if back_later:  # back where the robot will have taken it from
                 things.put_back.append(frame.bind(said))
-            bindings.append(frame.bind(said))
+            bindings.append(reading.bind(said))
     return bindings
 
 

@@ -287,6 +287,7 @@ class Agent:
         if binding in self.put_away:        # put away: already so only where such a thing is kept
             return self._kept_already(binding)
         results = [f for f in binding.postconditions if not f.negated and f.predicate == "in" and len(f.args) == 2]
+        on = any(a.name == "place_on" for a in binding.actions)
         rooms = {class_key(p.name): class_key(p.room) for p in self.scene.map.places if p.room}
         facts = set(self.state.facts)
         seen: dict[str, str] = {}
@@ -304,8 +305,9 @@ class Agent:
                 else:                 # in a place only if the state says the place is open (as seal plan)
                     there = [i for i in there if self._parent(i).id in self.left_open or not self._parent(i).openable]
                     facts |= {Fact("in", (thing, class_key(self._parent(i).id))) for i in there}
-            elif place is not None:
-                there = [i for i in free if self.world.items[i].parent == place]
+            elif place is not None:       # on top of a hollow place ("put it on the sideboard") is not in it
+                there = [i for i in free if self.world.items[i].parent == place and
+                         (self.world.items[i].on_top == on or not self.world.hollow(self.world.items[place]))]
                 if there:
                     facts.add(Fact("in", (thing, where)))
             else:
@@ -541,7 +543,7 @@ class Agent:
                 return answered
         hand_empty = any(f.predicate == "hand_empty" and not f.negated for f in binding.postconditions)
         if hand_empty and self.world.robot.holding is not None and not any(
-                a.name in ("place", "hand_over") for a in binding.actions):
+                a.name in (*PUTS, "hand_over") for a in binding.actions):
             return self.put_down(binding)  # "put it down": a Place without a goal
         if not acted and not binding.actions:
             return Outcome(True, "nothing to do")
@@ -734,7 +736,7 @@ class Agent:
         then to a surface in it)."""
         role = next((r for r, v in binding.values if v == value), None)
         room = self.room(value)
-        puts = any(a.name == "place" and role in a.args for a in binding.frame.actions)   # onto a surface there
+        puts = any(a.name in PUTS and role in a.args for a in binding.frame.actions)   # onto a surface there
         if room is not None and not puts and bool(room.contains([self.world.robot.pose[:2]])[0]):
             self.say("go", f"is in the {spoken(value)} already", to=self.world.robot.pose[:2], metres=0.0)
             return Outcome(True, f"in {value}")
@@ -1349,7 +1351,7 @@ class Agent:
         if outcome.reason is Reason.OPEN and outcome.about is not None:   # a microwave left open: shut it first
             self.close_to_use(outcome.about)
             outcome = self.world.act(action.name, *args)
-        if outcome.reason is Reason.NOT_RECEPTACLE and action.name == "place":
+        if outcome.reason is Reason.NOT_RECEPTACLE and action.name in PUTS:
             outcome, args = self.put_beside(args[0], args[1], outcome)
         if outcome.ok and action.name == "lead":     # the person follows the robot there
             self.say("act", f"asks {args[0]} to follow", action="lead", args=args)
@@ -1363,7 +1365,7 @@ class Agent:
         self.say("act" if outcome.ok else "fail", outcome.message, action=action.name, args=args)
         if outcome.ok:
             self._after(action.name, args, binding)
-            if action.name in ("pick", "place"):         # taken out of it, or put into it: shut it again
+            if action.name in ("pick", *PUTS):         # taken out of it, or put into it: shut it again
                 self.shut_after(lay if action.name == "pick" else args[1])
             question = self.questions.get(binding)
             if action.name == "look_at" and question is not None and question.kind == "state":
@@ -1634,7 +1636,7 @@ class Agent:
 
     def _after(self, name: str, args: list[str], binding: Binding) -> None:
         """Keep the robot's own knowledge in step with what it just did."""
-        if name == "place":            # it knows where it put the thing, and on what
+        if name in PUTS:               # it knows where it put the thing, and on what
             self.known[args[0]] = self._known(self.world.items[args[0]])
             if binding.frame.name != "Place" or binding.elements.get("goal") is not None:
                 self.placed.add(args[0])
@@ -1685,6 +1687,8 @@ class Agent:
         return outcome
 
 
+PUTS = ("place", "place_on")
+"""The primitives that put the held thing down in or on a receptacle."""
 WORDS = frozenset({"search", "count", "say", "answer"})
 """Primitives whose argument is a word (a kind of thing, a message), not an item of the world."""
 

@@ -71,6 +71,9 @@ class Item:
     reach: float | None = None
     """How far from it the robot can act on it (m); None: the world's reach (a thing in or on a
     place: the place's)."""
+    on_top: bool = False
+    """Put on top of its parent (``place_on``), which is hollow (a sideboard), not in it: a closed parent
+    does not hide it."""
 
     def __post_init__(self) -> None:
         self.key = class_key(self.cls)
@@ -212,8 +215,13 @@ class World:
         return self.items[item_id].at
 
     def enclosure(self, item_id: str) -> Item | None:
-        """The closed item that hides this one, if any."""
-        return next((a for a in self.ancestors(item_id) if not a.is_open), None)
+        """The closed item that hides this one, if any (not the one it lies on top of)."""
+        inner = self.items[item_id]
+        for outer in self.ancestors(item_id):
+            if not outer.is_open and not inner.on_top:
+                return outer
+            inner = outer
+        return None
 
     def contents(self, item_id: str) -> list[Item]:
         return [i for i in self.items.values() if i.parent == item_id]
@@ -339,8 +347,10 @@ class World:
             (item.states.add if value else item.states.discard)(state)
             self._since[(item.id, state)] = self.step + 1
 
-    def _move(self, item: Item, parent: str | None, at: tuple[float, float] | None = None) -> None:
+    def _move(self, item: Item, parent: str | None, at: tuple[float, float] | None = None,
+              on_top: bool = False) -> None:
         item.parent = parent
+        item.on_top = on_top
         if at is not None:
             item.at = at
         self._since[(item.id, "parent")] = self.step + 1
@@ -377,7 +387,7 @@ class World:
         self.robot.holding = obj
         return Outcome(True, f"picked up {obj}" + (f" from {source}" if source else ""))
 
-    def _do_place(self, obj: str, receptacle: str) -> Outcome:
+    def _do_place(self, obj: str, receptacle: str, on_top: bool = False) -> Outcome:
         item, target = self.items[obj], self.items[receptacle]
         if self.robot.holding != obj:
             return Outcome(False, f"the robot does not hold {obj}", Reason.NOT_HELD, obj)
@@ -388,11 +398,16 @@ class World:
                            receptacle)
         if (why := self._reachable(receptacle)) is not None:
             return why
-        if not target.is_open:
+        if not target.is_open and not on_top:
             return Outcome(False, f"{receptacle} is closed", Reason.CLOSED, receptacle)
-        self._move(item, receptacle, self._drop_point(target))
+        self._move(item, receptacle, self._drop_point(target), on_top and self.hollow(target))
         self.robot.holding = None
-        return Outcome(True, f"put {obj} {'in' if self.hollow(target) else 'on'} {receptacle}")
+        return Outcome(True, f"put {obj} {'in' if self.hollow(target) and not on_top else 'on'} {receptacle}")
+
+    def _do_place_on(self, obj: str, receptacle: str) -> Outcome:
+        """Put the held thing on top of the receptacle: a closed one too (a sideboard's top), and what
+        lies there stays in sight and reach while it is closed."""
+        return self._do_place(obj, receptacle, on_top=True)
 
     def hollow(self, target: Item) -> bool:
         """Whether a thing is put *in* the target (a fridge, a sink, a cup, a laundry basket) or *on* it

@@ -365,3 +365,27 @@ def test_telling_where_a_thing_found_is_says_what_was_found_not_the_words() -> N
     assert told["completed"] and said == ['said "apple_1 is in fridge_1 in the kitchen at (8.50, -0.80)"']
     hello = run_json("find the cup and tell me hello")
     assert [r["text"] for r in hello["records"] if r["text"].startswith("said ")] == ['said "hello"']
+
+
+def acts_of(command: str) -> tuple[dict, list[str]]:  # type: ignore[type-arg]
+    result = runner.invoke(app, ["run", "--map", "bungalow", command, *FAST])
+    report = json.loads(result.stdout)
+    return report, [r["text"] for r in report["records"] if r["kind"] in ("act", "fail")]
+
+
+def test_a_thing_put_on_a_closed_place_goes_on_top_and_one_put_in_it_opens_it() -> None:
+    """The bungalow's sideboard opens: "on" it needs it shut or open, "in" it opens it (and closes it
+    after); the teapot, kept inside it, is taken out (opened to look) and put on top of it."""
+    on, acts = acts_of("put the mug on the sideboard")
+    assert on["completed"] and acts == ["picked up mug_1 from coffee_table_1", "put mug_1 on sideboard_1"]
+    on_top, acts = acts_of("put the mug on top of the sideboard")
+    assert on_top["completed"] and acts[-1] == "put mug_1 on sideboard_1" and not any("opened" in a for a in acts)
+    into, acts = acts_of("put the mug in the sideboard")
+    assert into["completed"] and acts == ["picked up mug_1 from coffee_table_1", "opened sideboard_1; inside: teapot_1",
+                                          "put mug_1 in sideboard_1", "closed sideboard_1"]
+    teapot, acts = acts_of("put the teapot on the sideboard")
+    assert teapot["completed"] and acts == ["opened sideboard_1; inside: teapot_1",
+                                            "picked up teapot_1 from sideboard_1", "closed sideboard_1",
+                                            "put teapot_1 on sideboard_1"]
+    still, acts = acts_of("put the teapot in the sideboard")       # inside it already: nothing to do
+    assert still["completed"] and not any(a.startswith("put ") for a in acts)

@@ -1354,3 +1354,17 @@ def test_an_unknown_verb_before_a_pronoun_or_determiner_is_no_noun_asked_for(lib
 def test_a_thing_asked_for_alone_is_still_a_request(library: Library) -> None:
     assert [(f.frame, f.elements["theme"].head) for f in parse_command("milk from the fridge please", library).frames] \
         == [("Bring", "milk")]
+
+
+@pytest.mark.parametrize(("text", "said"), [
+    ("put the teapot on the sideboard", "on"), ("put the teapot on top of the sideboard", "on"),
+    ("put the teapot onto the sideboard", "onto"), ("put the teapot in the sideboard", "in"),
+    ("put the teapot into the sideboard", "into"), ("put the teapot inside the sideboard", "inside")])
+def test_a_goal_keeps_the_preposition_it_was_said_with(library: Library, text: str, said: str) -> None:
+    """The planner reads it ("on" the sideboard: on its top, so it need not be opened); the SPEC's JSON
+    does not carry it, as it does not carry the span."""
+    parsed = parse_command(text, library)
+    goal = parsed.frames[0].elements["goal"]
+    assert parsed.frames[0].frame == "Place" and goal.head == "sideboard" and goal.preposition == said
+    assert parsed.frames[0].elements["theme"].preposition is None
+    assert "preposition" not in parsed.to_json()["frames"][0]["elements"]["goal"]

@@ -16,7 +16,7 @@ from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding, Fact
 from seal_cli.maps.formats.map_server import load_map
 from seal_cli.pipeline import plan as plan_text
-from seal_cli.planning.pddl import domain_pddl, problem_pddl, write_pddl
+from seal_cli.planning.pddl import domain_pddl, problem_pddl, reading_name, readings, write_pddl
 from seal_cli.planning.plan import Plan, plan
 from seal_cli.planning.state import State, robot_facts
 from seal_cli.resources import map_path
@@ -48,6 +48,7 @@ def solve(up: Any, folder: Path) -> list[tuple[str, list[str]]]:
 def replay(actions: list[tuple[str, list[str]]], library: Library, result: Plan) -> State:
     """Run a PDDL plan with seal's semantics: each action a frame, ``unspecified_*`` left unfilled."""
     frames = {f"do_{frame.name}".lower(): frame for frame in library}
+    frames |= {reading_name(frame).lower(): frame for frame in readings(library, result)}   # "put it on ..."
     state = result.initial
     for name, args in actions:
         frame = frames[name.lower()]
@@ -192,3 +193,23 @@ def test_export_does_not_change_the_plan(library: Library) -> None:
     domain_pddl(library, result)
     problem_pddl(library, result)
     assert [str(s) for s in result.steps] == before and isinstance(result.steps[0].binding, Binding)
+
+
+def test_a_goal_said_on_is_put_on_top_without_opening_it(up: Any, library: Library, tmp_path: Path) -> None:
+    """"On" the bungalow's sideboard (it opens): no Open, in seal's plan and in the exported domain, whose
+    own action for that reading needs no ``open``; "in" it still opens it, and writes no such action."""
+    bungalow = load_map(map_path("bungalow"))
+    on = plan_text("put the mug on the sideboard", library, map=bungalow)
+    assert [str(s.binding) for s in on.steps] == ["Pick(theme=mug, source=coffee_table_1)",
+                                                  "Place(theme=mug, goal=sideboard_1)"]
+    assert Fact("open", ("goal",)) not in on.steps[-1].binding.frame.preconditions
+    assert [a.name for a in on.steps[-1].binding.actions] == ["navigate", "place_on"]
+    actions = round_trip(up, library, on, tmp_path)
+    assert [name.lower() for name, _ in actions] == ["do_pick", "do_place_on_top"]
+    domain = (tmp_path / "domain.pddl").read_text(encoding="utf-8")
+    reading = domain[domain.index("(:action do_Place_on_top"):]
+    assert "(holding ?theme)" in reading and "(open ?goal)" not in reading
+    into = plan_text("put the mug in the sideboard", library, map=bungalow)
+    assert [s.frame for s in into.steps] == ["Pick", "Open", "Place"]
+    assert [a.name for a in into.steps[-1].binding.actions] == ["navigate", "place"]
+    assert "do_Place_on_top" not in domain_pddl(library, into)

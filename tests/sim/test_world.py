@@ -150,3 +150,23 @@ def test_search_for_a_place_by_its_class_succeeds_at_the_place(library: Library)
     found = world.act("search", "fridge")
     assert found and "fridge_1" in found.message
     assert world.act("search", "fridge_1")      # by its id, too
+
+
+def test_a_thing_put_on_top_of_a_closed_place_stays_in_sight_and_reach(library: Library) -> None:
+    """``place_on`` ("put the apple on the fridge"): a closed fridge takes it on its top, where the closing
+    does not hide it; ``place`` (into it) is still refused while it is closed."""
+    world = kitchen(library)
+    world.items["pear_1"] = Item("pear_1", "pear", (2.1, 0.3))
+    goto(world, 2.0, 0.0)
+    assert world.act("pick", "pear_1")
+    refused = world.act("place", "pear_1", "fridge_1")
+    assert not refused and refused.message == "fridge_1 is closed" and world.robot.holding == "pear_1"
+    put = world.act("place_on", "pear_1", "fridge_1")
+    assert put and put.message == "put pear_1 on fridge_1" and not world.items["fridge_1"].is_open
+    assert world.items["pear_1"].parent == "fridge_1" and world.items["pear_1"].on_top
+    assert world.enclosure("pear_1") is None and world.enclosure("apple_1") == world.items["fridge_1"]
+    assert "pear_1" in {d.id for d in world.observe()} and "apple_1" not in {d.id for d in world.observe()}
+    assert world.act("pick", "pear_1") and not world.items["pear_1"].on_top     # taken off the top again
+    assert world.act("open", "fridge_1")
+    assert world.act("place", "pear_1", "fridge_1").message == "put pear_1 in fridge_1"
+    assert not world.items["pear_1"].on_top and world.act("close", "fridge_1") and world.enclosure("pear_1")
