@@ -16,12 +16,10 @@ the garment, not a coat of paint ("jacket", "coat" and "hat" have senses of othe
 
 from __future__ import annotations
 
-import argparse
-import sys
 from pathlib import Path
 
 from build_person_nouns import Nouns  # scripts/build_person_nouns.py, beside this script
-from rebuilt import write_or_check  # scripts/rebuilt.py, beside this script
+from rebuilt import wordnet_arguments, write_or_check  # scripts/rebuilt.py, beside this script
 
 ROOT = Path(__file__).resolve().parent.parent
 OUT = ROOT / "framelib" / "wordnet_clothing.yaml"
@@ -61,15 +59,8 @@ def render(found: list[str]) -> str:
 
 
 def main() -> int:
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--wordnet", type=Path, required=True, help="a WordNet 3.0 dict folder")
-    ap.add_argument("--out", type=Path, default=OUT)
-    ap.add_argument("--check", action="store_true", help="compare with the shipped file instead of writing it")
-    args = ap.parse_args()
-    missing = [args.wordnet / name for name in ("data.noun", "index.noun", "cntlist.rev")
-               if not (args.wordnet / name).is_file()]
-    if missing:
-        print(f"error: {missing[0]}: no such file (--wordnet is a WordNet 3.0 dict folder)", file=sys.stderr)
+    args = wordnet_arguments(__doc__.splitlines()[0], OUT, ("data.noun", "index.noun", "cntlist.rev"))
+    if args is None:
         return 1
     text = render(clothing_nouns(Nouns(args.wordnet)))
     return write_or_check(args.out, text, check=args.check, made_from="WordNet",

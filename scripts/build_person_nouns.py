@@ -26,13 +26,11 @@ files) is read only here, never by the parser. ``--check`` exits 1 when the ship
 
 from __future__ import annotations
 
-import argparse
 import re
-import sys
 from collections import defaultdict
 from pathlib import Path
 
-from rebuilt import write_or_check  # scripts/rebuilt.py, beside this script
+from rebuilt import wordnet_arguments, write_or_check  # scripts/rebuilt.py, beside this script
 
 ROOT = Path(__file__).resolve().parent.parent
 OUT = ROOT / "framelib" / "wordnet_people.yaml"
@@ -110,15 +108,8 @@ def render(found: list[str]) -> str:
 
 
 def main() -> int:
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--wordnet", type=Path, required=True, help="a WordNet 3.0 dict folder")
-    ap.add_argument("--out", type=Path, default=OUT)
-    ap.add_argument("--check", action="store_true", help="compare with the shipped file instead of writing it")
-    args = ap.parse_args()
-    missing = [args.wordnet / name for name in ("data.noun", "index.noun", "cntlist.rev")
-               if not (args.wordnet / name).is_file()]
-    if missing:
-        print(f"error: {missing[0]}: no such file (--wordnet is a WordNet 3.0 dict folder)", file=sys.stderr)
+    args = wordnet_arguments(__doc__.splitlines()[0], OUT, ("data.noun", "index.noun", "cntlist.rev"))
+    if args is None:
         return 1
     text = render(person_nouns(Nouns(args.wordnet)))
     return write_or_check(args.out, text, check=args.check, made_from="WordNet",

@@ -26,12 +26,10 @@ differs.
 
 from __future__ import annotations
 
-import argparse
-import sys
 from collections import defaultdict
 from pathlib import Path
 
-from rebuilt import write_or_check  # scripts/rebuilt.py, beside this script
+from rebuilt import wordnet_arguments, write_or_check  # scripts/rebuilt.py, beside this script
 
 ROOT = Path(__file__).resolve().parent.parent
 OUT = ROOT / "seal_cli" / "language" / "verb_usage.tsv"
@@ -117,15 +115,8 @@ def render(rows: list[tuple[str, float, int, int]]) -> str:
 
 
 def main() -> int:
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--wordnet", type=Path, required=True, help="a WordNet 3.0 dict folder")
-    ap.add_argument("--out", type=Path, default=OUT)
-    ap.add_argument("--check", action="store_true", help="compare with the shipped file instead of writing it")
-    args = ap.parse_args()
-    missing = [args.wordnet / name for name in [f"index.{pos}" for pos in POS] + ["cntlist.rev"]
-               if not (args.wordnet / name).is_file()]
-    if missing:
-        print(f"error: {missing[0]}: no such file (--wordnet is a WordNet 3.0 dict folder)", file=sys.stderr)
+    args = wordnet_arguments(__doc__.splitlines()[0], OUT, [f"index.{pos}" for pos in POS] + ["cntlist.rev"])
+    if args is None:
         return 1
     rows = verb_usage(WordNet(args.wordnet))
     return write_or_check(args.out, render(rows), check=args.check, made_from="WordNet", summary=f"{len(rows)} forms")

@@ -1,9 +1,27 @@
-"""What the build scripts share: write a rebuilt data file whole, or check that the shipped one is it."""
+"""What the build scripts share: the arguments of one built from WordNet, and writing a rebuilt data file
+whole, or checking that the shipped one is it."""
 
 from __future__ import annotations
 
+import argparse
 import sys
+from collections.abc import Iterable
 from pathlib import Path
+
+
+def wordnet_arguments(description: str, out: Path, needs: Iterable[str]) -> argparse.Namespace | None:
+    """``--wordnet DIR``, ``--out`` (default ``out``) and ``--check`` from the command line; None, having said
+    which, if a file of ``needs`` is not in the WordNet folder."""
+    ap = argparse.ArgumentParser(description=description)
+    ap.add_argument("--wordnet", type=Path, required=True, help="a WordNet 3.0 dict folder")
+    ap.add_argument("--out", type=Path, default=out)
+    ap.add_argument("--check", action="store_true", help="compare with the shipped file instead of writing it")
+    args = ap.parse_args()
+    missing = [args.wordnet / name for name in needs if not (args.wordnet / name).is_file()]
+    if missing:
+        print(f"error: {missing[0]}: no such file (--wordnet is a WordNet 3.0 dict folder)", file=sys.stderr)
+        return None
+    return args
 
 
 def write_or_check(out: Path, text: str, *, check: bool, made_from: str, summary: str) -> int:
