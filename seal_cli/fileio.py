@@ -79,9 +79,9 @@ def _kind(mode: int) -> str:
     return "not a regular file"
 
 
-def read_bytes(path: str | Path, limit: int = MAX_INPUT_BYTES, what: str = "file") -> bytes:
-    """A regular file's bytes, at most ``limit`` of them; anything else is a SealError naming it."""
-    path = Path(path)
+def _regular(path: Path, what: str) -> os.stat_result:
+    """The file's status if it is a regular file; else a SealError saying what it is (missing, a folder, a
+    FIFO, ...), which :func:`read_bytes` and :func:`stream_lines` both refuse."""
     where = Where(str(path))
     try:
         info = path.stat()
@@ -93,6 +93,14 @@ def read_bytes(path: str | Path, limit: int = MAX_INPUT_BYTES, what: str = "file
         raise SealError(f"this is a folder, not a {what}", where)
     if not stat.S_ISREG(info.st_mode):
         raise SealError(f"cannot read this {what}: it is {_kind(info.st_mode)}, not a regular file", where)
+    return info
+
+
+def read_bytes(path: str | Path, limit: int = MAX_INPUT_BYTES, what: str = "file") -> bytes:
+    """A regular file's bytes, at most ``limit`` of them; anything else is a SealError naming it."""
+    path = Path(path)
+    where = Where(str(path))
+    info = _regular(path, what)
     if info.st_size > limit:
         raise SealError(f"this {what} is {_size(info.st_size)}; seal reads {what}s of at most {_size(limit)}", where)
     try:  # without blocking: a "regular" file that waits for data (/proc/kmsg) must not hang seal
@@ -213,14 +221,7 @@ def stream_lines(path: str | Path, what: str = "file") -> Iterator[tuple[int, st
     long and UTF-8 (else a SealError at its line and column)."""
     path = Path(path)
     where = Where(str(path))
-    try:
-        info = path.stat()
-    except FileNotFoundError:
-        raise SealError(f"no such {what}", where) from None
-    except OSError as exc:
-        raise SealError(f"cannot read this {what}: {exc.strerror}", where) from None
-    if not stat.S_ISREG(info.st_mode):
-        raise SealError(f"cannot read this {what}: it is {_kind(info.st_mode)}, not a regular file", where)
+    info = _regular(path, what)
     _READ[(info.st_dev, info.st_ino)] = str(path)
     try:
         with os.fdopen(os.open(path, os.O_RDONLY | os.O_NONBLOCK), "rb") as handle:
