@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from build_person_nouns import Nouns  # scripts/build_person_nouns.py, beside this script
+from build_person_nouns import Nouns, render  # scripts/build_person_nouns.py, beside this script
 from rebuilt import wordnet_arguments, write_or_check  # scripts/rebuilt.py, beside this script
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -34,35 +34,21 @@ HEADER = """\
 
 def clothing_nouns(nouns: Nouns, roots: tuple[str, ...] = WORN) -> list[str]:
     """The nouns the module's rules keep, sorted."""
-    worn: dict[str, bool] = dict.fromkeys(roots, True)
-
-    def is_worn(offset: str) -> bool:
-        if offset not in worn:
-            worn[offset] = False                           # cut cycles while the answer is open
-            worn[offset] = any(is_worn(up) for up in nouns.up[offset])
-        return worn[offset]
-
+    is_worn = nouns.kind_of(roots)
     found = []
     for noun, offsets in nouns.senses.items():
         if not (noun.isalpha() and noun in nouns.lower and offsets):
             continue
-        tagged = any((noun, n) in nouns.tagged for n in range(1, len(offsets) + 1))
-        if is_worn(offsets[0]) if tagged else all(is_worn(o) for o in offsets):
+        if is_worn(offsets[0]) if nouns.was_tagged(noun) else all(map(is_worn, offsets)):
             found.append(noun)
     return sorted(found)
-
-
-def render(found: list[str]) -> str:
-    lines = [HEADER, "categories:", "  clothing:"]
-    lines += [f"    - {noun}" for noun in found]
-    return "\n".join(lines) + "\n"
 
 
 def main() -> int:
     args = wordnet_arguments(__doc__.splitlines()[0], OUT, ("data.noun", "index.noun", "cntlist.rev"))
     if args is None:
         return 1
-    text = render(clothing_nouns(Nouns(args.wordnet)))
+    text = render(HEADER, "clothing", clothing_nouns(Nouns(args.wordnet)))
     return write_or_check(args.out, text, check=args.check, made_from="WordNet",
                           summary=f"{text.count(chr(10) + '    - ')} nouns")
 

@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import re
 from collections import defaultdict
+from collections.abc import Callable
 from pathlib import Path
 
 from rebuilt import wordnet_arguments, write_or_check  # scripts/rebuilt.py, beside this script
@@ -80,29 +81,37 @@ class Nouns:
             lemma, _, kind = key.partition("%")
             if kind.startswith("1:") and int(count) > 0:
                 self.tagged.add((lemma, int(number)))
-        self._person: dict[str, bool] = {PERSON: True}
 
-    def is_person(self, offset: str) -> bool:
-        """Whether the synset is person.n.01 or a hyponym of it (through its hypernyms)."""
-        if offset not in self._person:
-            self._person[offset] = False                   # cut cycles while the answer is open
-            self._person[offset] = any(self.is_person(up) for up in self.up[offset])
-        return self._person[offset]
+    def kind_of(self, roots: tuple[str, ...]) -> Callable[[str], bool]:
+        """Whether a synset is one of ``roots`` or a hyponym of one (through its hypernyms), remembered."""
+        known: dict[str, bool] = dict.fromkeys(roots, True)
+
+        def below(offset: str) -> bool:
+            if offset not in known:
+                known[offset] = False                      # cut cycles while the answer is open
+                known[offset] = any(below(up) for up in self.up[offset])
+            return known[offset]
+        return below
+
+    def was_tagged(self, noun: str) -> bool:
+        """Whether WordNet's corpus tagged any sense of the noun."""
+        return any((noun, n) in self.tagged for n in range(1, len(self.senses[noun]) + 1))
 
 
 def person_nouns(nouns: Nouns) -> list[str]:
     """The nouns the module's rules keep, sorted."""
+    is_person = nouns.kind_of((PERSON,))
     found = []
     for noun, offsets in nouns.senses.items():
-        tagged = any((noun, n) in nouns.tagged for n in range(1, len(offsets) + 1))
-        if noun.isalpha() and noun in nouns.lower and tagged and all(nouns.is_person(o) for o in offsets) \
+        if noun.isalpha() and noun in nouns.lower and nouns.was_tagged(noun) and all(map(is_person, offsets)) \
                 and not any(o in nouns.rude for o in offsets):
             found.append(noun)
     return sorted(found)
 
 
-def render(found: list[str]) -> str:
-    lines = [HEADER, "categories:", "  person:"]
+def render(header: str, category: str, found: list[str]) -> str:
+    """The data file: ``header``, then the nouns ``found`` as the library's category ``category``."""
+    lines = [header, "categories:", f"  {category}:"]
     lines += [f"    - {noun}" for noun in found]
     return "\n".join(lines) + "\n"
 
@@ -111,7 +120,7 @@ def main() -> int:
     args = wordnet_arguments(__doc__.splitlines()[0], OUT, ("data.noun", "index.noun", "cntlist.rev"))
     if args is None:
         return 1
-    text = render(person_nouns(Nouns(args.wordnet)))
+    text = render(HEADER, "person", person_nouns(Nouns(args.wordnet)))
     return write_or_check(args.out, text, check=args.check, made_from="WordNet",
                           summary=f"{text.count(chr(10) + '    - ')} nouns")
 
