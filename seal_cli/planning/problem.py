@@ -443,7 +443,7 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
             return any(kind_of(tax, n, category) is True for n in (cls, *tax.names.get(class_key(cls), ())))
 
         places = [p.name for p in m.places if (p.openable if category == "openable" else does(p.cls))]
-        places += sorted({class_key(c) for c in (*m.priors, *(o.cls for o in m.objects)) if does(c)})
+        places += [kind for kind in _kinds_known(m) if does(kind)]
         what = " ".join(words_of(phrase.text)) or phrase.head
         raise _located(f"the {m.name} has no {what} (no place, thing or prior of the map names one, and what "
                        f"opens or switches is not searched for); what it knows will {FIXTURE_TYPES[category]}: "
@@ -462,7 +462,7 @@ def _kinds_known_of(phrase: Phrase, things: Things) -> bool:
     parse's, or the head's)."""
     m = things.map
     assert m is not None
-    known = {class_key(c) for c in (*m.priors, *(o.cls for o in m.objects), *(p.cls for p in m.places))}
+    known = {*_kinds_known(m), *(class_key(p.cls) for p in m.places)}
     return any(class_key(c) in known for c in (phrase.cls, phrase.head) if c)
 
 
