@@ -922,8 +922,7 @@ class Agent:
         if not outcome.ok:
             return outcome
         x, y = self.world.robot.pose[:2]
-        rooms = self.scene.map.room_of([(x, y)]) if self.scene.map.rooms else []
-        where = f" in the {rooms[0].replace('_', ' ')}" if rooms and not rooms[0].startswith("_") else " where it is"
+        where = self._in_room_at(x, y) or " where it is"
         who = binding.elements.get("theme")
         whom = "" if who is None else " for the speaker" if who == "me" else f" for {self.said(who)}"
         self.say("act", f"waits{where}{whom}", action="wait", args=[])
@@ -1166,12 +1165,16 @@ class Agent:
         at = np.asarray([self.world.items[person].at], dtype=float)
         return any(bool(np.asarray(self.world.sensor.visible(pose, at))[0]) for pose in self.looks[-SURVEY_VIEWS * 4:])
 
+    def _in_room_at(self, x: float, y: float) -> str:
+        """" in the family room" for a point in a room of the map; "" outside every room (or with none)."""
+        rooms = self.scene.map.room_of([(x, y)]) if self.scene.map.rooms else []
+        return f" in the {rooms[0].replace('_', ' ')}" if rooms and not rooms[0].startswith("_") else ""
+
     def where_is(self, item_id: str) -> str:
         """Where a thing is, as the answer to "where is it?": on or in its place, in its room, at x, y."""
         item = self.world.items[item_id]
         x, y = self.world.position(item_id)
-        rooms = self.scene.map.room_of([(x, y)]) if self.scene.map.rooms else []
-        room = f" in the {rooms[0].replace('_', ' ')}" if rooms and not rooms[0].startswith("_") else ""
+        room = self._in_room_at(x, y)
         parent = self.world.items.get(item.parent) if item.parent and item.parent != HAND else None
         if self.world.held_chain(item_id):
             return f"{item_id} is in the robot's hand"
