@@ -223,13 +223,7 @@ def tasks(
 
     if suite not in SUITES:
         raise SealError(f"unknown suite {suite!r}; the suites are {', '.join(SUITES)}")
-    shared = Path(__file__).resolve().parents[2].parent / "shared" / "data"
-    if data is None:
-        data = shared if suite == "context" else shared / "alfred2d"
-        if suite != "map" and not data.is_dir():
-            raise SealError(f"the {suite} suite's data is not at {data}, the default beside a checkout of seal (an "
-                            "installed seal has no data): give --data DIR")
-    if limit is not None and sample is not None:
+    if limit is not None and sample is not None:      # the arguments first: they need no file
         raise SealError("give --limit (the first episodes of each task type) or --sample (a stratified sample), "
                         "not both")
     names = [p.strip() for p in policies.split(",") if p.strip()]
@@ -240,6 +234,12 @@ def tasks(
     unknown = [name for name in names if name not in POLICIES]
     if unknown:
         raise SealError(f"--policies: unknown policy {unknown[0]!r}; known: {', '.join(POLICIES)}")
+    shared = Path(__file__).resolve().parents[2].parent / "shared" / "data"
+    if data is None:
+        data = shared if suite == "context" else shared / "alfred2d"
+        if suite != "map" and not data.is_dir():
+            raise SealError(f"the {suite} suite's data is not at {data}, the default beside a checkout of seal (an "
+                            "installed seal has no data): give --data DIR")
     from seal_cli.cli import OUTPUT_SUFFIXES
     from seal_cli.fileio import Outputs
     from seal_cli.resources import map_path
