@@ -99,6 +99,9 @@ class Lexicon:
     stores: frozenset[str] = frozenset()
     """Storing units ("put away", "put back": ``stores: true`` in the library): said split around the object,
     "back" is the BACK rule's place ("put it *back*": where it was taken from), not the unit's particle."""
+    split: Mapping[str, frozenset[str]] = field(default_factory=dict)
+    """Units said only split around their object (``split: true``: "put the kettle *on*", ToggleOn) → the known
+    classes their frame's first element cannot be ("put the lid on", "put your coat on": no such unit)."""
 
     @classmethod
     def of(cls, library: Library) -> Lexicon:
@@ -124,9 +127,12 @@ class Lexicon:
             not p.negated and p.predicate == "in" and p.args == (frame.elements[0].role, "goal")
             for p in frame.postconditions) for unit in frame.lexical_units)
         stores = frozenset(unit.text for frame in library.frames for unit in frame.lexical_units if unit.stores)
+        split = {unit.text: frozenset(c for c in taxonomy.known_classes if frame.elements and
+                                      taxonomy.is_a(c, frame.elements[0].type) is False)
+                 for frame in library.frames for unit in frame.lexical_units if unit.split}
         return cls({w: tuple(us) for w, us in units.items()}, _result_words(library),
                    tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts, apart, can, puts,
-                   stores)
+                   stores, split)
 
     def verb_at(self, words: Sequence[Word], i: int, stop: int) -> tuple[str, int, int | None] | None:
         """The lexical unit that starts at word ``i``: (unit, words it covers contiguously,
@@ -144,6 +150,8 @@ class Lexicon:
             if i + n <= len(words) and all(words[i + k].lower == unit[k] for k in range(1, n)):
                 if i + n < len(words) and words[i + n].lower in ("of", "'s") and unit[-1] not in ("many", "much"):
                     return None                  # "slice of apple", "the light's": a noun ("how many of": a part)
+                if n > 1 and " ".join(unit) in self.split:
+                    continue                     # "put on the table", "put on your coat": no unit said joined
                 if n > 1 or not self._split(words, i, stop, candidates):
                     return " ".join(unit), n, None
                 break
@@ -180,9 +188,22 @@ class Lexicon:
                 continue
             for j in range(i + 2, stop):
                 if words[j].lower == unit[1] and _stands_alone(words, j) and \
-                        match_phrase(words, j - 1, TIME_WORDS) < 2:      # not "right away"
+                        match_phrase(words, j - 1, TIME_WORDS) < 2 and \
+                        self._split_fits(" ".join(unit), words, i, j):  # not "right away"
                     return " ".join(unit), 1, j
         return None
+
+
+    def _split_fits(self, unit: str, words: Sequence[Word], i: int, j: int) -> bool:
+        """A split-only unit ("put on") holds around a thing its frame takes, with no place said between: "put the
+        kettle *on*", "put the telly *on*" (a thing nobody listed), not "put the lid *on*" nor "put the cup in the
+        sink *on*"."""
+        refused = self.split.get(unit)
+        if refused is None:
+            return True
+        if any(w.lower in PREPOSITIONS for w in words[i + 1:j]):
+            return False
+        return noun_lemma(words[j - 1].lower) not in refused and words[j - 1].lower not in refused
 
 
 AGAIN_LEAST = 5

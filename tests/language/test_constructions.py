@@ -757,3 +757,12 @@ def test_left_after_the_thing_a_question_asks_about_says_it_remains(library: Lib
     assert texts("is there any bread left?", library) == [("Find", {"theme": "bread"})]
     assert frames("are there any eggs left in the fridge", library) == [("Find", {"theme": "egg", "ground": "fridge"})]
     assert frames("is there a cup on the left", library) == [("Find", {"theme": "cup", "ground": "left"})]
+
+
+def test_staying_with_a_person_follows_them_and_staying_put_waits(library: Library) -> None:
+    # words16: "stay with" is Follow's (a Cotheme: moving *with* someone), "stay" and "stay put" Wait's (WordNet's
+    # wait.v.01: "stay in one place and anticipate")
+    assert texts("stay with Anna", library) == [("Follow", {"theme": "Anna"})]
+    assert texts("stay here", library) == [("Wait", {"ground": "here"})]
+    assert texts("stay in the kitchen until I come back", library)[0] == ("Wait", {"ground": "the kitchen"})
+    assert texts("stay put", library) == [("Wait", {})]
