@@ -187,6 +187,8 @@ class Lexicon:
             if len(unit) != 2 or unit[1] not in PARTICLES or unit[1] == "back" and " ".join(unit) in self.stores:
                 continue
             for j in range(i + 2, stop):
+                if words[j].lower == "to" and j + 1 < stop and words[j + 1].lower in self.units:
+                    break                        # "wash a teapot *to put it away*": the particle is the next verb's
                 if words[j].lower == unit[1] and _stands_alone(words, j) and \
                         match_phrase(words, j - 1, TIME_WORDS) < 2 and \
                         self._split_fits(" ".join(unit), words, i, j):  # not "right away"
@@ -203,6 +205,9 @@ class Lexicon:
             return True
         if any(w.lower in PREPOSITIONS for w in words[i + 1:j]):
             return False
+        after = words[j + 1].lower if j + 1 < len(words) else "."
+        if not (after in (",", ".", "!", "?", ";", "please") or after in PREPOSITIONS or after in SEPARATOR_WORDS):
+            return False                         # "put the kettle on *its* base": a possessive, not "it's"
         return noun_lemma(words[j - 1].lower) not in refused and words[j - 1].lower not in refused
 
 
@@ -245,6 +250,8 @@ def _result_words(library: Library) -> dict[str, tuple[str, str]]:
                         results.setdefault(unit.text, (frame.name, unit.text))
         for unit in frame.lexical_units:
             words = unit.words
+            if unit.split:
+                continue                          # "left" is no result of "leave the light on": "their left arm"
             if len(words) == 1 or all(w in PARTICLES for w in words[1:]):
                 for form in participles(words[0]):
                     if form not in CLOSED:

@@ -766,3 +766,20 @@ def test_staying_with_a_person_follows_them_and_staying_put_waits(library: Libra
     assert texts("stay here", library) == [("Wait", {"ground": "here"})]
     assert texts("stay in the kitchen until I come back", library)[0] == ("Wait", {"ground": "the kitchen"})
     assert texts("stay put", library) == [("Wait", {})]
+
+
+def test_people_s_wording_at_home(library: Library) -> None:
+    # words16: "could (really) use / could do with" asks for a thing; a light verb's noun with a place after it;
+    # "give X on Y a rinse"; a free relative said first, taken up by "them"
+    assert texts("I could really use a tea towel", library) == [("Bring", {"theme": "a tea towel", "recipient": ""})]
+    assert texts("we could do with some more chairs", library) == [
+        ("Bring", {"theme": "some more chairs", "recipient": ""})]
+    assert texts("have a look in the fridge for the butter", library) == [
+        ("Find", {"theme": "the butter", "ground": "the fridge"})]
+    assert texts("take a look in the fridge", library) == [("Find", {"ground": "the fridge"})]
+    assert texts("take a slice from the cake", library) == [("Pick", {"theme": "a slice", "source": "the cake"})]
+    assert texts("give the plants on the windowsill a rinse", library) == [
+        ("Clean", {"theme": "the plants on the windowsill"})]
+    assert texts("whoever's at the door, greet them", library) == [("Greet", {"theme": "them"})]
+    with pytest.raises(CommandError):
+        parse_command("whatever's on the table, put it in the sink", library)   # "it" would take the table
