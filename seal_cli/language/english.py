@@ -278,7 +278,8 @@ REQUESTS = frozenset(["i'd like", "i would like", "i'd love", "i would love", "i
                       "i'll need", "i will need", "we'll need", "we will need", "i'm gonna need", "we're gonna need",
                       "i'm going to need", "we're going to need", "i could use", "i could really use", "we could use",
                       "we could really use", "i could do with", "i could really do with", "we could do with",
-                      "i could just do with"])
+                      "i could just do with", "i'd really like", "i would really like", "i'd quite like",
+                      "i'd really love", "i really need", "i just need"])
 """A request for a thing said as the speaker's wish ("*I'd like* the red mug", "*Can I have* the big plate",
 "*I need* a pen", "*I could do with* a towel"): it means "bring me ..." (``REQUEST_MEANS``, with the speaker as
 recipient)."""

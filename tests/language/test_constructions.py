@@ -784,3 +784,12 @@ def test_people_s_wording_at_home(library: Library) -> None:
     assert texts("whoever's at the door, greet them", library) == [("Greet", {"theme": "them"})]
     with pytest.raises(CommandError):
         parse_command("whatever's on the table, put it in the sink", library)   # "it" would take the table
+
+
+def test_a_thing_left_in_a_state_is_the_verb_of_that_state(library: Library) -> None:
+    # words16: "leave"/"get"/"put" (the verbs of the split units) with a thing and a state word ending the clause
+    assert texts("leave the door open", library) == [("Open", {"theme": "the door"})]
+    assert [f for f, _ in texts("get the plates clean and put them away", library)] == ["Clean", "Place"]
+    assert texts("leave the lights on", library) == [("ToggleOn", {"theme": "the lights"})]
+    assert texts("leave the keys on the table", library) == [
+        ("Place", {"theme": "the keys", "goal": "the table"})]
