@@ -102,6 +102,8 @@ class Lexicon:
     split: Mapping[str, frozenset[str]] = field(default_factory=dict)
     """Units said only split around their object (``split: true``: "put the kettle *on*", ToggleOn) → the known
     classes their frame's first element cannot be ("put the lid on", "put your coat on": no such unit)."""
+    state_verbs: frozenset[str] = frozenset()
+    """The verbs of the split units ("put", "leave", "get"): they put a thing in a state ("leave the door *open*")."""
 
     @classmethod
     def of(cls, library: Library) -> Lexicon:
@@ -132,7 +134,7 @@ class Lexicon:
                  for frame in library.frames for unit in frame.lexical_units if unit.split}
         return cls({w: tuple(us) for w, us in units.items()}, _result_words(library),
                    tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts, apart, can, puts,
-                   stores, split)
+                   stores, split, frozenset(unit.split()[0] for unit in split))
 
     def verb_at(self, words: Sequence[Word], i: int, stop: int) -> tuple[str, int, int | None] | None:
         """The lexical unit that starts at word ``i``: (unit, words it covers contiguously,

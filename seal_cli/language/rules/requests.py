@@ -631,7 +631,8 @@ def _resultative(s: State, i: int) -> Match | None:
     "off" are the split units' own ("leave the light on": "leave on")."""
     words = s.words
     low = words[i].lower
-    if not s.lexicon.split or (verb_lemma(low) or low) not in {u.split()[0] for u in s.lexicon.split}:
+    verbs = s.lexicon.state_verbs
+    if not verbs or low not in verbs and (verb_lemma(low) or low) not in verbs:
         return None
     end = _clause_stop(s, i + 1)
     while end > i + 1 and words[end - 1].lower in (",", "please", ".", "!"):
