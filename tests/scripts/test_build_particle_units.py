@@ -8,6 +8,7 @@ import sys
 from collections import defaultdict
 from pathlib import Path
 
+from seal_cli.frames.library import Library
 from seal_cli.frames.reading import read_library
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -50,7 +51,7 @@ class TinyWordNet:
         return f"{lemma.replace(' ', '_')}.v.{self.senses[lemma][1].index(offset) + 1:02d}"
 
 
-def library(tmp_path: Path):  # type: ignore[no-untyped-def]
+def library(tmp_path: Path) -> Library:
     (tmp_path / "lib.yaml").write_text(LIBRARY)
     found, problems = read_library([tmp_path])
     assert problems == []
