@@ -265,6 +265,8 @@ class WordNet:
         self.examples: dict[str, list[str]] = {}          # synset -> its quoted examples of use
         self.up: dict[str, list[str]] = defaultdict(list)
         self.down: dict[str, list[str]] = defaultdict(list)
+        self.opposite: dict[str, set[str]] = defaultdict(set)      # synset -> the synsets of its antonyms
+        self.adjective_opposites = self._adjective_opposites(folder / "data.adj")
         for line in (folder / "data.verb").read_text(encoding="latin-1").splitlines():
             if line.startswith(" "):
                 continue                                   # the licence, at the top
@@ -280,6 +282,8 @@ class WordNet:
                     self.up[offset].append(target)
                 elif pos == "v" and symbol == "~":
                     self.down[offset].append(target)
+                elif pos == "v" and symbol == "!":
+                    self.opposite[offset].add(target)
         self.senses = self._index(folder / "index.verb")
         self.noun_senses = self._index(folder / "index.noun")
         self.counts: dict[tuple[str, int], int] = {}      # (verb, sense number) -> times tagged
@@ -311,6 +315,26 @@ class WordNet:
         if any(self.counts.get((verb, n), 0) for n in range(1, len(offsets) + 1)):
             return offsets[:1]
         return list(offsets)
+
+    @staticmethod
+    def _adjective_opposites(path: Path) -> set[tuple[str, str]]:
+        """(word, word) for each antonymy of two adjectives' first lemmas ("on" ! "off": in operation, not)."""
+        if not path.is_file():
+            return set()
+        words: dict[str, str] = {}
+        pointers: list[tuple[str, str]] = []
+        for line in path.read_text(encoding="latin-1").splitlines():
+            if line.startswith(" "):
+                continue
+            head = line.partition(" | ")[0].split()
+            offset, count = head[0], int(head[3], 16)
+            words[offset] = head[4].lower().replace("_", " ")
+            at = 4 + 2 * count
+            for j in range(int(head[at])):
+                symbol, target, pos = head[at + 1 + 4 * j: at + 4 + 4 * j]
+                if symbol == "!" and pos in ("a", "s"):
+                    pointers.append((offset, target))
+        return {(words[a], words[b]) for a, b in pointers if a in words and b in words}
 
     @staticmethod
     def _index(path: Path) -> dict[str, tuple[int, list[str]]]:
@@ -400,6 +424,83 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[str, str, s
     alone = {(frame, unit) for frame, unit, _ in found}       # "grope" is a Find already: "grope for" adds nothing
     said_with = [u for u in prepositional(wordnet, library, closed) if (u[0], u[1].split()[0]) not in alone]
     return sorted(found + reflexive(wordnet, library, closed) + said_with)
+
+
+def particle_verbs(wordnet: WordNet, own: Library, listed: Library) -> list[tuple[str, str, str]]:
+    """Rule 8: a particle verb of a library verb ("turn out") takes the frames of that verb's own particle unit ("turn
+    off", listed in the library's own files, not derived) whose *first* sense it shares: "switch off, cut, turn off,
+    turn out" is turn_off.v.01 (ToggleOff), so "turn the lights *out*" is a ToggleOff. Another particle of the same
+    verb is what keeps it tight: "give off" ("emit") is "give out"'s first sense, but "give out" is a derived unit."""
+    units = {unit: [f.name for f in frames] for unit, frames in own.by_unit.items()}
+    found = []
+    for unit, frames in sorted(units.items()):
+        words = unit.split()
+        if len(words) != 2 or words[1] not in english.PARTICLES or unit not in wordnet.senses:
+            continue
+        first = wordnet.senses[unit][1][0]
+        for lemma in wordnet.lemmas[first]:
+            other = lemma.split()
+            if len(other) != 2 or other[0] != words[0] or other[1] not in english.PARTICLES or \
+                    lemma in listed.by_unit:
+                continue
+            for frame in frames:
+                found.append((frame, lemma, f"wordnet:{wordnet.name(lemma, first)} = {wordnet.name(unit, first)} "
+                                            f"({unit})"))
+    return found
+
+
+CAUSING = "change"
+"""Rule 9's verb of causing a state: a verb whose sense is within two hypernyms of its first sense ("change, alter,
+modify: cause to change; make different") can put a thing in a state ("put.v.02: cause to be in a certain state")."""
+
+
+def state_particles(wordnet: WordNet, own: Library, listed: Library) -> list[tuple[str, str, str, str, str, bool]]:
+    """Rule 9: a particle that names a state. Two particle units of one verb whose first senses are antonyms in
+    WordNet ("turn on" ! "turn off": switch_on.v.01 ! switch_off.v.01), with particles that are antonymous adjectives
+    ("on" ! "off": "in operation", "not in operation"), make each particle the state its unit brings about. A verb of
+    the library that moves things (its frames put their theme in a goal or in hand: Place, Pick, Bring) and one of
+    whose first three senses causes a state (within two hypernyms of change.v.01: "put.v.02 cause to be in a certain
+    state", "leave.v.03", "get.v.03") then says that state with the particle alone after its object: "put the kettle
+    *on*" is "turn the kettle on" (ToggleOn). Such a unit is ``split: true``: said joined ("put on your coat", "put on
+    the table") it is no such unit."""
+    units = {unit: [f.name for f in frames] for unit, frames in own.by_unit.items()}
+    states: dict[str, tuple[str, str, str]] = {}          # particle -> (its unit, that unit's first sense, antonym)
+    for unit in sorted(units):
+        words = unit.split()
+        if len(words) != 2 or words[1] not in english.PARTICLES or unit not in wordnet.senses:
+            continue
+        first = wordnet.senses[unit][1][0]
+        for opposite in sorted(wordnet.opposite[first]):
+            for lemma in wordnet.lemmas[opposite]:
+                other = lemma.split()
+                if len(other) == 2 and other[0] == words[0] and (words[1], other[1]) in wordnet.adjective_opposites:
+                    states.setdefault(words[1], (unit, first, lemma))
+    if not states or CAUSING not in wordnet.senses:
+        return []
+    causing = wordnet.senses[CAUSING][1][0]
+
+    def moves(frame: Frame) -> bool:
+        first = frame.elements[0].role if frame.elements else None
+        return any(not p.negated and p.args[:1] == (first,) and p.predicate in ("in", "holding")
+                   for p in frame.postconditions)
+
+    found = []
+    for verb, frames in sorted(own.by_unit.items()):
+        if " " in verb or verb not in wordnet.senses or not all(moves(f) for f in frames):
+            continue
+        sense = next((o for o in wordnet.senses[verb][1][:3]
+                      if causing in wordnet.up[o] or any(causing in wordnet.up[u] for u in wordnet.up[o])), None)
+        if sense is None:
+            continue
+        for particle, (unit, first, opposite) in sorted(states.items()):
+            said = f"{verb} {particle}"
+            if said in listed.by_unit:
+                continue
+            for frame in units[unit]:
+                found.append((frame, said, f"wordnet:{wordnet.name(verb, sense)} < {wordnet.name(CAUSING, causing)} "
+                                           f"(causes a state); '{particle}' ! '{opposite.split()[1]}' (adjectives), "
+                                           f"as {wordnet.name(unit, first)} ({unit}) ! {opposite}", "", "", True))
+    return found
 
 
 def prepositional(wordnet: WordNet, library: Library, closed: frozenset[str]) -> list[tuple[str, str, str]]:
@@ -588,6 +689,7 @@ def render(found: Sequence[tuple[str, ...]], header: str = HEADER) -> str:
     for frame, unit, source, *said in found:
         told = f", object: {said[0]}" if said and said[0] else ""
         told += f", apart: {json.dumps(said[1])}" if len(said) > 1 and said[1] else ""
+        told += ", split: true" if len(said) > 2 and said[2] else ""
         lines.append(f"  - {{frame: {frame}, unit: {unit}, source: {json.dumps(source)}{told}}}")
     return "\n".join(lines) + "\n"
 
@@ -632,7 +734,11 @@ def main() -> int:
         if missing:
             print(f"error: {missing[0]}: no such file (--wordnet is a WordNet 3.0 dict folder)", file=sys.stderr)
             return 1
-        text = render(derive_wordnet(WordNet(args.wordnet), library_without(args.out, ROLES_OUT)), WORDNET_HEADER)
+        wordnet, listed = WordNet(args.wordnet), library_without(args.out, ROLES_OUT)
+        own = library_without(args.out, ROLES_OUT, OUT)
+        found = [*derive_wordnet(wordnet, listed), *particle_verbs(wordnet, own, listed),
+                 *state_particles(wordnet, own, listed)]
+        text = render(sorted(found), WORDNET_HEADER)
     else:
         path = args.data / "lexicon" / "propbank_rolesets.json"
         if not path.is_file():

@@ -147,13 +147,16 @@ class LexicalUnit:
     particles with which the verb is a verb of its own that the frame is not ("hang *up*": end a phone call,
     PropBank's ``hang_up.03``), unless a place is said ("hang up the coat *on the hook*"). ``stores``: said
     with no goal, the unit means "where such a thing is kept" ("put away", "store"), not "down here"
-    (:func:`seal_cli.planning.problem.commanded_frames`)."""
+    (:func:`seal_cli.planning.problem.commanded_frames`). ``split``: said only with its particle alone after the
+    object ("put the kettle *on*": the state it is put in, ToggleOn); joined ("put on the table", "put on your coat")
+    it is no such unit."""
 
     text: str
     where: Where | None = field(default=None, compare=False, repr=False)
     object: str | None = field(default=None, compare=False)   # only added units say it: dumps leave it out
     apart: tuple[str, ...] = field(default=(), compare=False)
     stores: bool = field(default=False, compare=False)
+    split: bool = field(default=False, compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "text", normalize_unit(self.text))
@@ -164,6 +167,9 @@ class LexicalUnit:
         if not all(re.fullmatch(r"[a-z]+", p) for p in self.apart):
             raise SealError(f"lexical unit {self.text!r}: apart must be particles, words of letters "
                             f"({' '.join(self.apart)!r})", self.where)
+        if self.split and len(self.words) != 2:
+            raise SealError(f"lexical unit {self.text!r}: a split unit is a verb and its particle, two words",
+                            self.where)
 
     @property
     def words(self) -> tuple[str, ...]:

@@ -430,9 +430,16 @@ class Clauses:
         """"give the sauce *a quick stir*": "give" with a thing and "a" (adjectives) and a noun that is a lexical
         unit of the library is that unit's frame, done to the thing (the construction of "take a look at"):
         the clause's ``unit`` becomes the noun. A person keeps "give" ("give me a hand")."""
-        if str(clause.verb.info) not in LIGHT_VERBS or len(clause.objects) != 2:
+        if str(clause.verb.info) not in LIGHT_VERBS:
             return
-        thing, act = clause.objects
+        places = [item for item in clause.items[:-1] if isinstance(item, PP) and item.prep in LOCATIVE]
+        if len(clause.objects) == 1 and clause.items and isinstance(clause.items[-1], NP) and \
+                len(places) == len(clause.items) - 1:          # "give the plants *on the sill* a rinse"
+            thing, act, after = clause.objects[0], clause.items[-1], clause.items[:-1]
+        elif len(clause.objects) == 2:
+            thing, act, after = *clause.objects, clause.items
+        else:
+            return
         if thing.kind == "person" or act.head is None or act.head.tag != "WORD" or act.of is not None or \
                 act.plural or act.quantity is not None or act.relative or \
                 self.text[act.start:act.end].split(None, 1)[0].lower() not in ("a", "an", "another"):
@@ -442,6 +449,7 @@ class Clauses:
         if not frames or not all(f.elements and not self.types.is_person(f.elements[0].type) for f in frames):
             return
         clause.objects = [thing]
+        clause.items = after
         clause.unit = unit
 
 

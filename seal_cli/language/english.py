@@ -61,6 +61,10 @@ PREPOSITIONS.update({f"to {article}{region} {side} of": "by" for article in ("th
 """... and "to the bottom left of the sink" is where "to the left of" is: by it (so is "to left of", "to front
 left of": the article left out)."""
 WH_WORDS = _closed_class("what which who whom whose where when why how whether if")
+FREE_RELATIVES = _closed_class("whoever whoever's whomever")
+"""Pronouns that make a noun phrase of a clause about a person ("*whoever's* at the door, greet them"): said first and
+taken up by "them", "him" or "her", such a phrase is set aside as a noun phrase is (``State.dislocated``). Not
+"whatever": its phrase names a place or thing the pronoun "it" would take ("whatever's on the table": the table)."""
 BE_WORDS = _closed_class("is are was were be am 's been being")
 SEPARATOR_WORDS = frozenset(["and", "then", ",", ";", ":", "after that", "afterwards", "next", "finally",
                              "and then", "and after that", "after", "also", "once done", "when done",
@@ -272,9 +276,13 @@ REQUESTS = frozenset(["i'd like", "i would like", "i'd love", "i would love", "i
                       "can i please have", "could i please have", "may i please have", "i need", "i want",
                       "i'll have", "i will have", "i'll take", "can we have", "could we have", "we need", "we'd like",
                       "i'll need", "i will need", "we'll need", "we will need", "i'm gonna need", "we're gonna need",
-                      "i'm going to need", "we're going to need"])
+                      "i'm going to need", "we're going to need", "i could use", "i could really use", "we could use",
+                      "we could really use", "i could do with", "i could really do with", "we could do with",
+                      "i could just do with", "i'd really like", "i would really like", "i'd quite like",
+                      "i'd really love", "i really need", "i just need"])
 """A request for a thing said as the speaker's wish ("*I'd like* the red mug", "*Can I have* the big plate",
-"*I need* a pen"): it means "bring me ..." (``REQUEST_MEANS``, with the speaker as recipient)."""
+"*I need* a pen", "*I could do with* a towel"): it means "bring me ..." (``REQUEST_MEANS``, with the speaker as
+recipient)."""
 REQUEST_MEANS = "bring"
 WISHED_PLACED = frozenset(["i want", "i'd like", "i would like", "we want", "we'd like", "we would like"])
 WISHED_PLACES = frozenset(["on", "onto", "in", "into", "inside", "under"])

@@ -99,6 +99,11 @@ class Lexicon:
     stores: frozenset[str] = frozenset()
     """Storing units ("put away", "put back": ``stores: true`` in the library): said split around the object,
     "back" is the BACK rule's place ("put it *back*": where it was taken from), not the unit's particle."""
+    split: Mapping[str, frozenset[str]] = field(default_factory=dict)
+    """Units said only split around their object (``split: true``: "put the kettle *on*", ToggleOn) → the known
+    classes their frame's first element cannot be ("put the lid on", "put your coat on": no such unit)."""
+    state_verbs: frozenset[str] = frozenset()
+    """The verbs of the split units ("put", "leave", "get"): they put a thing in a state ("leave the door *open*")."""
 
     @classmethod
     def of(cls, library: Library) -> Lexicon:
@@ -124,9 +129,12 @@ class Lexicon:
             not p.negated and p.predicate == "in" and p.args == (frame.elements[0].role, "goal")
             for p in frame.postconditions) for unit in frame.lexical_units)
         stores = frozenset(unit.text for frame in library.frames for unit in frame.lexical_units if unit.stores)
+        split = {unit.text: frozenset(c for c in taxonomy.known_classes if frame.elements and
+                                      taxonomy.is_a(c, frame.elements[0].type) is False)
+                 for frame in library.frames for unit in frame.lexical_units if unit.split}
         return cls({w: tuple(us) for w, us in units.items()}, _result_words(library),
                    tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts, apart, can, puts,
-                   stores)
+                   stores, split, frozenset(unit.split()[0] for unit in split))
 
     def verb_at(self, words: Sequence[Word], i: int, stop: int) -> tuple[str, int, int | None] | None:
         """The lexical unit that starts at word ``i``: (unit, words it covers contiguously,
@@ -144,6 +152,8 @@ class Lexicon:
             if i + n <= len(words) and all(words[i + k].lower == unit[k] for k in range(1, n)):
                 if i + n < len(words) and words[i + n].lower in ("of", "'s") and unit[-1] not in ("many", "much"):
                     return None                  # "slice of apple", "the light's": a noun ("how many of": a part)
+                if n > 1 and " ".join(unit) in self.split:
+                    continue                     # "put on the table", "put on your coat": no unit said joined
                 if n > 1 or not self._split(words, i, stop, candidates):
                     return " ".join(unit), n, None
                 break
@@ -179,10 +189,28 @@ class Lexicon:
             if len(unit) != 2 or unit[1] not in PARTICLES or unit[1] == "back" and " ".join(unit) in self.stores:
                 continue
             for j in range(i + 2, stop):
+                if words[j].lower == "to" and j + 1 < stop and words[j + 1].lower in self.units:
+                    break                        # "wash a teapot *to put it away*": the particle is the next verb's
                 if words[j].lower == unit[1] and _stands_alone(words, j) and \
-                        match_phrase(words, j - 1, TIME_WORDS) < 2:      # not "right away"
+                        match_phrase(words, j - 1, TIME_WORDS) < 2 and \
+                        self._split_fits(" ".join(unit), words, i, j):  # not "right away"
                     return " ".join(unit), 1, j
         return None
+
+
+    def _split_fits(self, unit: str, words: Sequence[Word], i: int, j: int) -> bool:
+        """A split-only unit ("put on") holds around a thing its frame takes, with no place said between: "put the
+        kettle *on*", "put the telly *on*" (a thing nobody listed), not "put the lid *on*" nor "put the cup in the
+        sink *on*"."""
+        refused = self.split.get(unit)
+        if refused is None:
+            return True
+        if any(w.lower in PREPOSITIONS for w in words[i + 1:j]):
+            return False
+        after = words[j + 1].lower if j + 1 < len(words) else "."
+        if not (after in (",", ".", "!", "?", ";", "please") or after in PREPOSITIONS or after in SEPARATOR_WORDS):
+            return False                         # "put the kettle on *its* base": a possessive, not "it's"
+        return noun_lemma(words[j - 1].lower) not in refused and words[j - 1].lower not in refused
 
 
 AGAIN_LEAST = 5
@@ -224,6 +252,8 @@ def _result_words(library: Library) -> dict[str, tuple[str, str]]:
                         results.setdefault(unit.text, (frame.name, unit.text))
         for unit in frame.lexical_units:
             words = unit.words
+            if unit.split:
+                continue                          # "left" is no result of "leave the light on": "their left arm"
             if len(words) == 1 or all(w in PARTICLES for w in words[1:]):
                 for form in participles(words[0]):
                     if form not in CLOSED:

@@ -25,6 +25,7 @@ from seal_cli.language.english import (
     END_MARKS,
     FILLERS,
     FINITE,
+    FREE_RELATIVES,
     FREQUENCY_ADVERBS,
     HERE_WORDS,
     LINKING_VERBS,
@@ -514,8 +515,9 @@ class State:
         on the cabinet,* bring it to me", "*That dice on the sofa,* could you bring it to me?"): the phrase is
         a remark, which the pronoun names (:meth:`~seal_cli.language.reference.Reference.mentioned`)."""
         words = self.words
+        free = words[i].lower in FREE_RELATIVES               # "*whoever's at the door*, greet them"
         if self.out and not (self.out[-1].tag == "SEP" and self.out[-1].lower in END_MARKS) or \
-                words[i].lower not in NP_OPENERS:
+                words[i].lower not in NP_OPENERS and not free:
             return None
         comma = -1
         for k in range(i + 1, min(len(words), i + _DISLOCATED_WORDS)):
@@ -525,14 +527,15 @@ class State:
             if low == ",":
                 comma = k
                 break
-            if self.verb_at(k) is not None and words[k - 1].lower not in DETERMINERS:
+            if self.verb_at(k) is not None and words[k - 1].lower not in DETERMINERS and not \
+                    (free and k == i + 1 and words[k].lower in BE_WORDS):
                 return None                              # a clause, not a phrase
         if comma < 0 or not self.verb_after(comma + 1):
             return None
         for k in range(comma + 1, len(words)):
             if words[k].lower in END_MARKS:
                 break
-            if words[k].lower in ("it", "them", "him", "her", "one"):
+            if words[k].lower in (("them", "him", "her") if free else ("it", "them", "him", "her", "one")):
                 return self._aside(i, comma + 1 - i, (words[i].start, words[comma - 1].end))
         return None
 

@@ -81,6 +81,15 @@ def test_a_unit_says_whether_it_stores(tmp_path: Path) -> None:
         "give": False, "hand": False, "pass on": True, "pass over": False}
 
 
+def test_a_unit_says_whether_it_is_said_split(tmp_path: Path) -> None:
+    (tmp_path / "give.yaml").write_text(FRAME)
+    (tmp_path / "more.yaml").write_text("lexical_units:\n  - {frame: Give, unit: pass on, source: mine, split: true}\n")
+    library, problems = read_library([tmp_path])
+    assert problems == []
+    assert {u.text: u.split for u in library.frame("Give").lexical_units} == {"give": False, "hand": False,
+                                                                              "pass on": True}
+
+
 def test_the_standard_storing_units_are_the_library_s() -> None:
     library, _ = read_library([ROOT / "framelib"])
     assert sorted(u.text for u in library.frame("Place").lexical_units if u.stores) == [
@@ -97,6 +106,7 @@ def test_the_standard_storing_units_are_the_library_s() -> None:
     ("  - {frame: Give, unit: 'pass 2', source: a}\n", "one or more words of letters", 2),
     ("  - {frame: Give, unit: pass on, source: a, object: goal}\n", "Give has no element 'goal' for its object", 2),
     ("  - {frame: Give, unit: pass on, source: a, stores: maybe}\n", "stores must be true or false", 2),
+    ("  - {frame: Give, unit: hand it over, source: a, split: true}\n", "a verb and its particle, two words", 2),
 ])
 def test_bad_units_are_problems_with_their_line(tmp_path: Path, units: str, words: str, line: int) -> None:
     (tmp_path / "give.yaml").write_text(FRAME)
@@ -127,13 +137,19 @@ def test_every_wordnet_unit_has_its_source_and_evokes_its_frames(library: Librar
     entries = yaml.safe_load(WORDNET.read_text())["lexical_units"]
     by_unit: dict[str, set[str]] = {}
     for entry in entries:
-        assert entry["source"].startswith(f"wordnet:{entry['unit'].split()[0]}.v."), entry
+        assert entry["source"].startswith((f"wordnet:{entry['unit'].split()[0]}.v.",
+                                            f"wordnet:{entry['unit'].replace(' ', '_')}.v.")), entry
         by_unit.setdefault(entry["unit"], set()).add(entry["frame"])
     assert {"announce", "explain", "relocate", "select", "choose"} <= set(by_unit)
     assert by_unit["present yourself to"] == {"Greet"}                       # rule 6: as "introduce yourself to"
     assert not {"elate", "manage", "neglect", "uplift"} & set(by_unit)      # rule 5 refuses them
     assert by_unit["hunt for"] == {"Find"} and "hunt" not in by_unit      # rule 7: the example says "hunted for"
     assert not {"pursue for", "consider at", "succeed after", "grope for"} & set(by_unit)   # no example; a Find already
+    assert by_unit["turn out"] == {"ToggleOff"} and "give off" not in by_unit   # rule 8: "turn off"'s first sense
+    assert {u: by_unit[u] for u in ("put on", "put off", "leave on", "get off")} == {  # rule 9: a state particle
+        "put on": {"ToggleOn"}, "put off": {"ToggleOff"}, "leave on": {"ToggleOn"}, "get off": {"ToggleOff"}}
+    split = {e["unit"] for e in entries if e.get("split")}
+    assert split == {f"{verb} {state}" for verb in ("put", "leave", "get") for state in ("on", "off")}
     for unit, frames in by_unit.items():
         assert {f.name for f in library.evoked_by(unit)} == frames
     assert not {"near", "back", "sound", "cup", "table", "knife"} & set(by_unit)   # closed class, nouns
@@ -147,9 +163,19 @@ def test_every_wordnet_unit_has_its_source_and_evokes_its_frames(library: Librar
     ("select a cup from the shelf", "Pick"),                  # rule 5: "pick out"'s first sense, with "take"
     ("choose the biggest apple", "Pick"),
     ("hunt for my glasses in the bedroom", "Find"),           # rule 7: "hunt for" as "look for"
+    ("turn the lights out", "ToggleOff"),                     # rule 8: "turn out" is "turn off"'s first sense
+    ("turn out the lights in the hall", "ToggleOff"),
+    ("put the kettle on", "ToggleOn"),                        # rule 9: the particle alone names the state
+    ("put the telly on, please", "ToggleOn"),                 # a thing nobody listed
+    ("leave the porch light on", "ToggleOn"),
+    ("put the lights off", "ToggleOff"),
+    ("get the radio on and bring me a mug", "ToggleOn Bring"),
+    ("put the kettle on the worktop", "Place"),               # a place said: putting
+    ("put on the kettle", "Place"),                           # joined: no split unit ("put on the table")
+    ("put your coat on", "Place"),                            # a coat is no toggleable thing
 ])
 def test_a_wordnet_unit_parses_as_its_frame(library: Library, command: str, frame: str) -> None:
-    assert [f.frame for f in parse_command(command, library).frames] == [frame]
+    assert [f.frame for f in parse_command(command, library).frames] == frame.split()
 
 
 def test_the_build_script_reproduces_the_wordnet_file() -> None:

@@ -141,7 +141,8 @@ def test_a_greeting_before_a_question(library: Library) -> None:
 SETS = sorted([*(Path(__file__).parents[1] / "data").glob("wording_questions*.jsonl"),
                *(Path(__file__).parents[1] / "data").glob("wording_paraphrases*.jsonl"),
                *(Path(__file__).parents[1] / "data").glob("wording_fragments*.jsonl"),
-               *(Path(__file__).parents[1] / "data").glob("wording_home*.jsonl")])
+               *(Path(__file__).parents[1] / "data").glob("wording_home*.jsonl"),
+               *(Path(__file__).parents[1] / "data").glob("wording_people*.jsonl")])
 SCORER = Path(__file__).resolve().parents[2].parent / "shared" / "eval" / "score_parse.py"
 
 
@@ -757,3 +758,38 @@ def test_left_after_the_thing_a_question_asks_about_says_it_remains(library: Lib
     assert texts("is there any bread left?", library) == [("Find", {"theme": "bread"})]
     assert frames("are there any eggs left in the fridge", library) == [("Find", {"theme": "egg", "ground": "fridge"})]
     assert frames("is there a cup on the left", library) == [("Find", {"theme": "cup", "ground": "left"})]
+
+
+def test_staying_with_a_person_follows_them_and_staying_put_waits(library: Library) -> None:
+    # words16: "stay with" is Follow's (a Cotheme: moving *with* someone), "stay" and "stay put" Wait's (WordNet's
+    # wait.v.01: "stay in one place and anticipate")
+    assert texts("stay with Anna", library) == [("Follow", {"theme": "Anna"})]
+    assert texts("stay here", library) == [("Wait", {"ground": "here"})]
+    assert texts("stay in the kitchen until I come back", library)[0] == ("Wait", {"ground": "the kitchen"})
+    assert texts("stay put", library) == [("Wait", {})]
+
+
+def test_people_s_wording_at_home(library: Library) -> None:
+    # words16: "could (really) use / could do with" asks for a thing; a light verb's noun with a place after it;
+    # "give X on Y a rinse"; a free relative said first, taken up by "them"
+    assert texts("I could really use a tea towel", library) == [("Bring", {"theme": "a tea towel", "recipient": ""})]
+    assert texts("we could do with some more chairs", library) == [
+        ("Bring", {"theme": "some more chairs", "recipient": ""})]
+    assert texts("have a look in the fridge for the butter", library) == [
+        ("Find", {"theme": "the butter", "ground": "the fridge"})]
+    assert texts("take a look in the fridge", library) == [("Find", {"ground": "the fridge"})]
+    assert texts("take a slice from the cake", library) == [("Pick", {"theme": "a slice", "source": "the cake"})]
+    assert texts("give the plants on the windowsill a rinse", library) == [
+        ("Clean", {"theme": "the plants on the windowsill"})]
+    assert texts("whoever's at the door, greet them", library) == [("Greet", {"theme": "them"})]
+    with pytest.raises(CommandError):
+        parse_command("whatever's on the table, put it in the sink", library)   # "it" would take the table
+
+
+def test_a_thing_left_in_a_state_is_the_verb_of_that_state(library: Library) -> None:
+    # words16: "leave"/"get"/"put" (the verbs of the split units) with a thing and a state word ending the clause
+    assert texts("leave the door open", library) == [("Open", {"theme": "the door"})]
+    assert [f for f, _ in texts("get the plates clean and put them away", library)] == ["Clean", "Place"]
+    assert texts("leave the lights on", library) == [("ToggleOn", {"theme": "the lights"})]
+    assert texts("leave the keys on the table", library) == [
+        ("Place", {"theme": "the keys", "goal": "the table"})]

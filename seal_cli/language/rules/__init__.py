@@ -66,6 +66,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.WISHED_PLACED_RULE,
     requests.THING_PLACED,
     requests.WISHED_STATE,
+    requests.RESULTATIVE,
     requests.OBLIGED_RULE,
     requests.REQUEST,
     requests.WISH_OF,

@@ -17,6 +17,7 @@ from seal_cli.language.english import (
     END_MARKS,
     HAVING_FIRST,
     HAVING_MEANS,
+    LOCATIVE,
     NP_OPENERS,
     PARTICLES,
     PREPOSITIONS,
@@ -140,6 +141,11 @@ def _light_verb(s: State, i: int) -> Match | None:
                 text = " ".join(unit)
                 return Match(k + len(unit) - i, (merge(words, i, k + len(unit) - i, Tag.VERB, text),),
                              expect=False, verb=text)
+    for k in (i + 2, i + 3):               # "have a look *in the fridge* for the butter", "take a walk around it"
+        noun = words[k].lower if k + 1 < len(words) else ""
+        if (noun,) in s.lexicon.units.get(noun, ()) and noun not in s.lexicon.things and \
+                match_phrase(words, k + 1, LOCATIVE) > 0:
+            return Match(k + 1 - i, (merge(words, i, k + 1 - i, Tag.VERB, noun),), expect=False, verb=noun)
     return None
 
 
@@ -211,7 +217,9 @@ START_BY = Rule("start by", _start_by, (
 ), frozenset(["start", "begin", "finish", "end", "continue"]), "'start by' a gerund of the library")
 LIGHT_VERB = Rule("take a look at", _light_verb, (
     Example("take a quick look at the painting", "take a quick look at", Tag.VERB),
-), frozenset(["take", "have"]), "a light verb and a noun that is a lexical unit with its preposition")
+    Example("have a look in the fridge for the butter", "have a look", Tag.VERB),      # the noun's unit, a place after
+    Example("take a walk around the garden", "take a walk", Tag.VERB),
+), frozenset(["take", "have"]), "a light verb and a noun that is a lexical unit (with its preposition, or a place)")
 POLITE_FRAME = Rule("if you could", _polite_frame, (
     Example("It would be great if you could close the door", "It would be great if you could", Tag.POLITE),
 ), None, "a polite frame ending in 'you could' before the verb")

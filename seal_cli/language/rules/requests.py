@@ -621,12 +621,38 @@ def _wished_state(s: State, i: int) -> Match | None:
     be in a state, a phrase and then one word of state ending the sentence, is the verb whose result the state
     is (:func:`_state_unit`), as "make sure the door is closed" is; the wish is the verb, the state its split
     particle."""
+    return _state_after(s, i, _phrase(s, i, _WISHED_STATES))
+
+
+def _resultative(s: State, i: int) -> Match | None:
+    """"*leave* the door open", "*get* the soup hot", "*leave* the window shut": a verb that puts a thing in a state
+    (the verb of a ``split`` unit, :attr:`Lexicon.split`: "put the kettle *on*" is ToggleOn) with a thing and one
+    word of state ending the clause is the verb whose result the state is, as "I'd like the door open" is. "on" and
+    "off" are the split units' own ("leave the light on": "leave on")."""
     words = s.words
-    n = _phrase(s, i, _WISHED_STATES)
+    low = words[i].lower
+    verbs = s.lexicon.state_verbs
+    if not verbs or low not in verbs and (verb_lemma(low) or low) not in verbs:
+        return None
+    end = _clause_stop(s, i + 1)
+    while end > i + 1 and words[end - 1].lower in (",", "please", ".", "!"):
+        end -= 1
+    last = words[end - 1].lower if end > i + 2 else ""
+    if not last or last in SWITCHED_MEANS or not (is_adjective(last) or last in STATE_PARTICLES) or \
+            words[end - 2].lower in PARTICLES:
+        return None                              # "put two lettuce *plants* in the sink", "put one *back* clean"
+    found = _state_after(s, i, 1, _clause_stop(s, i + 1))
+    return found if found is not None and found.particle and found.particle[0] == end - 1 else None
+
+
+def _state_after(s: State, i: int, n: int, stop: int | None = None) -> Match | None:
+    """The state said after the ``n`` words at ``i`` and a phrase (:func:`_wished_state`, :func:`_resultative`),
+    before ``stop`` (default: the sentence's end)."""
+    words = s.words
     k = i + n
     if not n or not s.np_starts(k) or words[k].lower in ("you", "to") or s.verb_at(k) is not None:
         return None
-    end = _sentence_end(s, k)
+    end = _sentence_end(s, k) if stop is None else stop
     while end > k and words[end - 1].lower in (",", "please"):
         end -= 1
     places = [p - 1 for p in range(k + 2, end - 1) if PREPOSITIONS.get(words[p].lower) in LOCATED and
@@ -1038,6 +1064,11 @@ WISHED_STATE = Rule("a wish for a thing's state", _wished_state, (
     Example("we'd like the lights on in the living room", "on", Tag.PARTICLE),
     Example("I'd like my tea hot", "hot", Tag.PARTICLE),
 ), first_words(_WISHED_STATES), "'I'd like X closed', 'I want X off': close X, turn X off")
+RESULTATIVE = Rule("a thing left in a state", _resultative, (
+    Example("leave the door open", "leave", Tag.VERB),
+    Example("get the soup hot, please", "hot", Tag.PARTICLE),
+    Example("leave the window in the bedroom shut", "shut", Tag.PARTICLE),
+), None, "'leave X open', 'get X hot': open X, heat X (a verb that puts a thing in a state, and the state)")
 OBLIGED_RULE = Rule("where a thing should go", _obliged, (
     Example("the bowl should go in the dishwasher", "", Tag.VERB),
     Example("The milk belongs in the fridge.", "The", Tag.DET),

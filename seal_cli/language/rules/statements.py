@@ -81,6 +81,7 @@ def _dislocated(s: State, i: int) -> Match | None:
 DISLOCATED = Rule("phrase said first, taken up by a pronoun", _dislocated, (
     Example("The sponge on the cabinet, bring it to me.", "The sponge on the cabinet ,", Tag.POLITE),
     Example("That dice on the sofa, could you bring it to me?", "That dice on the sofa ,", Tag.POLITE),
+    Example("whoever's at the door, greet them", "whoever 's at the door ,", Tag.POLITE),    # a free relative
 ), None, "a noun phrase and a comma before a command whose pronoun takes it up: a remark it names")
 ASIDE = Rule("sentence beside the command", _aside, (
     Example("Good morning! Could you open the window?", "Good morning !", Tag.POLITE),
