@@ -11,7 +11,9 @@ receptacle: the goal of the first Place of two; the toggle target: the theme of 
 label is counted under the phrase's wording: its head lemma, and its last modifier with the head.
 Also counted: the sentence's other words by wording and labelled class (``context``) and by class
 (``class_context``), which grounding weighs; and, for a plural object phrase with no number said,
-whether the task meant one thing or several (``number``: several when it picks two).
+whether the task meant one thing or several (``number``: several when it picks two). The chooser's weights
+(``weights``) and, fitted on the phrases said in a known room among the classes it held, what the room's other
+classes add (``scene_weights``).
 
     python scripts/build_word_classes.py                 # rewrite the shipped table
     python scripts/build_word_classes.py --check         # exit 1 if the shipped table differs

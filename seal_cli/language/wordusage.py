@@ -27,6 +27,8 @@ weighed by how much more often than the wording's other classes its sentences he
 this one, a naive Bayes factor damped by ``CONTEXT_WEIGHT`` (:meth:`WordUsage.context_factor`),
 before the same thresholds decide. A table with ``weights`` (the shipped one) weighs the sentence by
 the discriminative chooser of :mod:`seal_cli.language.chooser` instead (:meth:`WordUsage.sentence_factor`).
+In a scene, a table with ``scene_weights`` also weighs each candidate by the other classes the room holds
+(:meth:`WordUsage.scene_factor`: "the table" of a room with a bed leans to its side table).
 
 Tables are JSON files (``format: seal-word-classes/1``) in the folder ``word_classes/`` beside
 this module; every file there is read and their counts are added.
