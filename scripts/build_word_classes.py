@@ -11,7 +11,9 @@ receptacle: the goal of the first Place of two; the toggle target: the theme of 
 label is counted under the phrase's wording: its head lemma, and its last modifier with the head.
 Also counted: the sentence's other words by wording and labelled class (``context``) and by class
 (``class_context``), which grounding weighs; and, for a plural object phrase with no number said,
-whether the task meant one thing or several (``number``: several when it picks two).
+whether the task meant one thing or several (``number``: several when it picks two). The chooser's weights
+(``weights``) and, fitted on the phrases said in a known room among the classes it held, what the room's other
+classes add (``scene_weights``).
 
     python scripts/build_word_classes.py                 # rewrite the shipped table
     python scripts/build_word_classes.py --check         # exit 1 if the shipped table differs
@@ -45,13 +47,13 @@ sys.path.insert(0, str(ROOT))
 
 from seal_cli.frames.reading import load_library  # noqa: E402
 from seal_cli.frames.taxonomy import class_key  # noqa: E402
-from seal_cli.language.chooser import Instance, features, fit  # noqa: E402
+from seal_cli.language.chooser import Instance, features, fit, logits, scene_features  # noqa: E402
 from seal_cli.language.goals import NOWHERE, goal_features, goalless  # noqa: E402
 from seal_cli.language.goals import THRESHOLD as GOAL_THRESHOLD  # noqa: E402
 from seal_cli.language.grounding import PORTIONS, Vocabulary  # noqa: E402
 from seal_cli.language.lexicon import noun_lemma  # noqa: E402
 from seal_cli.language.parser import CommandError, Parse, Phrase, parse_command  # noqa: E402
-from seal_cli.language.slicing import SLICED, WHOLE, slice_features, uncut  # noqa: E402
+from seal_cli.language.slicing import SLICED, WHOLE, said_bare, slice_features, uncut  # noqa: E402
 from seal_cli.language.slicing import THRESHOLD as SLICE_THRESHOLD  # noqa: E402
 from seal_cli.language.stacking import THRESHOLD as STACK_THRESHOLD  # noqa: E402
 from seal_cli.language.stacking import coordinated  # noqa: E402
@@ -74,13 +76,16 @@ MANIPULATE = ("Pick", "Heat", "Cool", "Clean", "LookAt", "Place")
 LABELS = ("object", "receptacle", "mrecep", "toggle")
 KEEP = 2
 """A wording seen fewer times than this is left out of the file (it could never reach MIN_SUPPORT alone)."""
-SECTIONS = ("words", "seen", "context", "class_context", "number", "weights", "step_prior", "step_weights",
-            "stacks", "step_left", "slice_prior", "slice_weights", "goal_prior", "goal_weights")
+SECTIONS = ("words", "seen", "context", "class_context", "number", "weights", "scene_weights", "step_prior",
+            "step_weights", "stacks", "step_left", "slice_prior", "slice_weights", "goal_prior", "goal_weights")
 STEP_OF = {"pick_heat_then_place_in_recep": "Heat", "pick_cool_then_place_in_recep": "Cool",
            "pick_clean_then_place_in_recep": "Clean"}
 """The step each ALFRED task type has (the others: none)."""
 L2 = 1.0
 """The chooser's L2 penalty (chosen on train trials held out from the fit, ``--dev 0.2 --l2 ...``)."""
+SCENE_L2 = 10.0
+"""The scene weights' L2 penalty (chosen on train's held-out floor plans, ``--dev 0.2 --hold-out floor-plans --scenes
+--scene-l2 ...``: 1.0 memorises the rooms, better on held-out trials of seen rooms and worse on unseen ones)."""
 
 
 def wording(phrase: Phrase) -> tuple[str, ...] | None:
@@ -132,8 +137,9 @@ def labelled_conjunct(phrase: Phrase, label: str) -> Phrase | None:
 
 Counts = dict[str, Counter[str]]
 Context = dict[str, dict[str, Counter[str]]]
-Said = tuple[tuple[str, ...], str, frozenset[str]]
-"""A labelled phrase as the chooser learns from it: its lemmas, the class meant, the sentence's words."""
+Said = tuple[tuple[str, ...], str, frozenset[str], frozenset[str]]
+"""A labelled phrase as the chooser learns from it: its lemmas, the class meant, the sentence's words, and the
+class keys of its room (the floor plan's classes and the task's labelled ones; empty when the plan is unknown)."""
 
 
 def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
@@ -157,6 +163,8 @@ def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
         except CommandError:
             continue
         words = context_words(text)
+        plan = scenes.get(row["floor_plan"], frozenset())
+        room = frozenset(class_key(c) for c in (*plan, *(row[k] for k in LABELS)) if c) if plan else frozenset()
         places = [f for f in parse.frames if f.frame == "Place"]
         if row["task_type"] != "look_at_obj_in_light" and row["receptacle"] and places \
                 and "goal" not in places[-1].elements:   # "throw away the towel": the goal it leaves unsaid
@@ -175,7 +183,7 @@ def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
             if lemmas is None:
                 continue
             others = words - set(lemmas)             # the sentence's other words, as grounding reads them
-            said_phrases.append((lemmas, label, words))
+            said_phrases.append((lemmas, label, words, room))
             class_context.setdefault(label, Counter()).update(others)
             for size in (2, 1):
                 if len(lemmas) >= size:
@@ -190,7 +198,7 @@ def instances(said: Iterable[Said], counts: Counts, support: int = MIN_SUPPORT) 
     """The chooser's train instances: each labelled phrase whose wording (the longest with support,
     as grounding picks it; the phrase itself left out of the counts) meant two classes or more."""
     out = []
-    for lemmas, label, words in said:
+    for lemmas, label, words, _ in said:
         for size in (2, 1):
             if len(lemmas) < size:
                 continue
@@ -203,6 +211,39 @@ def instances(said: Iterable[Said], counts: Counts, support: int = MIN_SUPPORT) 
                 candidates = tuple(class_key(k) for k in keys)
                 out.append(Instance(candidates, tuple(math.log(left[k]) for k in keys), keys.index(label),
                                     features(lemmas, words, candidates)))
+            break
+    return out
+
+
+def scene_instances(said: Iterable[Said], counts: Counts, seen: Counts, weights: dict[str, dict[str, float]],
+                    support: int = MIN_SUPPORT) -> list[Instance]:
+    """The scene weights' train instances: each labelled phrase said in a known room whose wording (the longest
+    with support among the room's classes, as grounding in a scene picks it) meant two or more of the room's
+    classes, the phrase itself left out of the counts. Each candidate's offset is what grounding in a scene
+    weighs before the scene's weights: the log of its rate where present
+    (:meth:`~seal_cli.language.wordusage.WordUsage.choose`) plus the chooser's logit (``weights``, by class
+    key); the features are the room's classes (:func:`~seal_cli.language.chooser.scene_features`)."""
+    out = []
+    for lemmas, label, words, room in said:
+        if not room:
+            continue
+        for size in (2, 1):
+            if len(lemmas) < size:
+                continue
+            wording = " ".join(lemmas[-size:])
+            by_class = {class_key(c): n - (c == label) for c, n in counts.get(wording, {}).items()}
+            left = {k: n for k, n in by_class.items() if n > 0 and k in room}
+            if sum(left.values()) < support:
+                continue
+            gold = class_key(label)
+            if len(left) >= 2 and gold in left:
+                keys = sorted(left)
+                times = {class_key(c): n - 1 for c, n in seen.get(wording, {}).items()}
+                total = sum(left.values())
+                rates = [left[k] / times[k] if times.get(k, 0) > 0 else left[k] / total for k in keys]
+                z = logits(weights, keys, features(lemmas, words, keys))
+                out.append(Instance(tuple(keys), tuple(math.log(r) + z[k] for r, k in zip(rates, keys, strict=True)),
+                                    keys.index(gold), scene_features(room)))
             break
     return out
 
@@ -234,11 +275,15 @@ def scenery(data: Path, classes: Sequence[str]) -> list[str]:
 
 
 def table(counts: Counts, seen: Counts, context: Context, class_context: Counts, number: Counts,
-          said: list[Said], classes: Sequence[str], source: str, l2: float | None = L2) -> dict[str, object]:
-    """The table's sections; ``l2``: the chooser's penalty (None: no chooser, the naive Bayes context)."""
+          said: list[Said], classes: Sequence[str], source: str, l2: float | None = L2,
+          scene_l2: float | None = SCENE_L2) -> dict[str, object]:
+    """The table's sections; ``l2``: the chooser's penalty (None: no chooser, the naive Bayes context);
+    ``scene_l2``: the scene weights' (None: none)."""
     spelling = {class_key(c): c for c in classes}
-    weights = {} if l2 is None else {
-        f: {spelling[k]: w for k, w in by.items()} for f, by in fit(instances(said, counts), l2).items()}
+    fitted = {} if l2 is None else fit(instances(said, counts), l2)
+    weights = {f: {spelling[k]: w for k, w in by.items()} for f, by in fitted.items()}
+    in_scene = {} if l2 is None or scene_l2 is None else fit(scene_instances(said, counts, seen, fitted), scene_l2)
+    scene_weights = {f: {spelling[k]: w for k, w in by.items()} for f, by in in_scene.items()}
     words = {w: dict(sorted(c.items(), key=lambda kv: (-kv[1], kv[0])))
              for w, c in sorted(counts.items()) if sum(c.values()) >= KEEP}
     where = {w: {c: seen[w][c] for c in by_class if seen.get(w, {}).get(c)} for w, by_class in words.items()}
@@ -248,7 +293,7 @@ def table(counts: Counts, seen: Counts, context: Context, class_context: Counts,
             "class_context": {} if weights else {c: ordered(Counter({w: n for w, n in by.items() if n >= KEEP}))
                                                  for c, by in sorted(class_context.items())},
             "number": {w: ordered(by) for w, by in sorted(number.items()) if sum(by.values()) >= KEEP},
-            "weights": weights}
+            "weights": weights, "scene_weights": scene_weights}
 
 
 def usage_of(data: dict[str, object]) -> WordUsage:
@@ -303,9 +348,10 @@ def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabula
                 by["left"] += 1
         first = uncut(parse, sliceable)
         if first is not None:
-            thing = parse.resolve(parse.frames[first].elements["theme"]).cls
+            thing_said = parse.resolve(parse.frames[first].elements["theme"])
             cut.append((SLICED if row["sliced"] in ("1", "True", "true") else WHOLE,
-                        slice_features(context_words(text), thing, (f.frame for f in parse.frames))))
+                        slice_features(context_words(text), thing_said.cls, (f.frame for f in parse.frames),
+                                       said_bare(thing_said))))
         handled = goalless(parse)
         if handled is not None and (row["task_type"] == "look_at_obj_in_light" or row["receptacle"]):
             goal = NOWHERE if row["task_type"] == "look_at_obj_in_light" else spelling[class_key(row["receptacle"])]
@@ -478,6 +524,8 @@ def main() -> int:
     ap.add_argument("--min-ratio", type=float, nargs="*", default=[MIN_RATIO])
     ap.add_argument("--context-weight", type=float, nargs="*", default=[CONTEXT_WEIGHT])
     ap.add_argument("--l2", type=float, nargs="*", default=[L2], help="the chooser's L2 penalties to try")
+    ap.add_argument("--scene-l2", type=float, default=SCENE_L2,
+                    help="with --dev: the scene weights' L2 penalty (0: no scene weights)")
     ap.add_argument("--step-threshold", type=float, nargs="*", default=[STEP_THRESHOLD],
                     help="the least probability at which an unsaid step is added (2: never); those to try")
     ap.add_argument("--stack-threshold", type=float, nargs="*", default=[STACK_THRESHOLD],
@@ -518,7 +566,7 @@ def main() -> int:
         print(f"fit {len(fit_rows)} sentences, dev {len(dev)} sentences ({len(held)} trials)")
 
         def fitted(l2: float | None) -> WordUsage:
-            data = table(*counted, classes, "dev", l2)    # the table as it would ship, read as it is read
+            data = table(*counted, classes, "dev", l2, args.scene_l2 or None)  # as it would ship, read as it is
             return usage_of(with_steps(data, fit_rows, vocabulary) if l2 is not None else data)
 
         def show(name: str, figures: dict[str, float | int]) -> None:

@@ -22,7 +22,7 @@ from collections import Counter
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
-__all__ = ["Instance", "features", "fit", "logits", "sentence_features"]
+__all__ = ["Instance", "features", "fit", "logits", "scene_features", "sentence_features"]
 
 
 def features(lemmas: Sequence[str], context: Iterable[str], candidates: Iterable[str] = ()) -> tuple[str, ...]:
@@ -42,6 +42,15 @@ def features(lemmas: Sequence[str], context: Iterable[str], candidates: Iterable
     out = [f"w:{w}" for w in sorted(set(context) - own)]
     out += [f"m:{m}" for m in dict.fromkeys(lemmas[:-1])]
     return tuple(out)
+
+
+def scene_features(present: Iterable[str]) -> tuple[str, ...]:
+    """The features of the scene a phrase is grounded in, for the scene's weights
+    (:attr:`~seal_cli.language.wordusage.WordUsage.scene_weights`): ``s:`` the class key of each class the
+    scene holds. With the weights ``s:bed`` → ``SideTable`` a bedroom's "table" leans to its side table, a
+    class present beside the candidates (``s:coffee_table`` for ``DiningTable``) says which of two is the one
+    people mean where both are."""
+    return tuple(f"s:{key}" for key in sorted(set(present)))
 
 
 def sentence_features(words: Iterable[str], thing: str | None, frames: Iterable[str]) -> tuple[str, ...]:

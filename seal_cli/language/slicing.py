@@ -32,6 +32,7 @@ from typing import TYPE_CHECKING
 
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.language.chooser import logits, sentence_features
+from seal_cli.language.english import NP_OPENERS, PRONOUNS, QUANTIFIERS
 from seal_cli.language.steps import moved_phrase, shifted
 from seal_cli.language.values import Evoked, Parse, Phrase
 
@@ -39,8 +40,8 @@ if TYPE_CHECKING:
     from seal_cli.frames.library import Library
     from seal_cli.language.grounding import Vocabulary
 
-__all__ = ["HANDLING", "KINDS", "SLICED", "THRESHOLD", "WHOLE", "SliceModel", "infer_slice", "slice_features",
-           "uncut"]
+__all__ = ["HANDLING", "KINDS", "SLICED", "THRESHOLD", "WHOLE", "SliceModel", "infer_slice", "said_bare",
+           "slice_features", "uncut"]
 
 SLICED = "sliced"
 WHOLE = "whole"
@@ -53,8 +54,21 @@ HANDLING = ("Pick", "Heat", "Cool", "Clean", "LookAt", "Place")
 """Frames whose theme is the thing a task handles (the first of them names it)."""
 
 
-slice_features = sentence_features
-"""The sentence's features (:func:`~seal_cli.language.chooser.sentence_features`)."""
+def slice_features(words: Iterable[str], thing: str | None, frames: Iterable[str],
+                   bare: bool = False) -> tuple[str, ...]:
+    """The sentence's features (:func:`~seal_cli.language.chooser.sentence_features`), and ``d:bare`` when the
+    thing is said as a bare singular (:func:`said_bare`): "put cooked potato in the fridge" reads the food as a
+    mass, some of it, where "put a cooked potato" counts one."""
+    out = sentence_features(words, thing, frames)
+    return (*out, "d:bare") if bare else out
+
+
+def said_bare(phrase: Phrase) -> bool:
+    """Whether a phrase is a singular said with no determiner, possessive or number before it ("cooked potato",
+    "cold apple"; not "a cold apple", "two apples", "apples", "it")."""
+    words = (phrase.text or "").lower().split()
+    return bool(words) and not phrase.plural and phrase.quantity is None and not phrase.conjuncts \
+        and words[0] not in NP_OPENERS and words[0] not in QUANTIFIERS and words[0] not in PRONOUNS
 
 
 @dataclass(frozen=True)
@@ -110,7 +124,8 @@ def infer_slice(parse: Parse, library: Library, vocabulary: Vocabulary, model: S
     if at is None or "Slice" not in library:
         return parse
     theme = parse.frames[at].elements["theme"]
-    p = model.probability(slice_features(words, parse.resolve(theme).cls, (f.frame for f in parse.frames)))
+    thing = parse.resolve(theme)
+    p = model.probability(slice_features(words, thing.cls, (f.frame for f in parse.frames), said_bare(thing)))
     if p < model.threshold:
         return parse
     frame = library.frame("Slice")

@@ -27,6 +27,8 @@ weighed by how much more often than the wording's other classes its sentences he
 this one, a naive Bayes factor damped by ``CONTEXT_WEIGHT`` (:meth:`WordUsage.context_factor`),
 before the same thresholds decide. A table with ``weights`` (the shipped one) weighs the sentence by
 the discriminative chooser of :mod:`seal_cli.language.chooser` instead (:meth:`WordUsage.sentence_factor`).
+In a scene, a table with ``scene_weights`` also weighs each candidate by the other classes the room holds
+(:meth:`WordUsage.scene_factor`: "the table" of a room with a bed leans to its side table).
 
 Tables are JSON files (``format: seal-word-classes/1``) in the folder ``word_classes/`` beside
 this module; every file there is read and their counts are added.
@@ -45,7 +47,7 @@ from typing import Any
 
 from seal_cli.errors import SealError, Where
 from seal_cli.frames.taxonomy import class_key
-from seal_cli.language.chooser import features, logits
+from seal_cli.language.chooser import features, logits, scene_features
 from seal_cli.language.goals import NOWHERE, GoalModel
 from seal_cli.language.morphology import noun_lemma
 from seal_cli.language.slicing import KINDS, SliceModel
@@ -140,9 +142,14 @@ class WordUsage:
     scenery: frozenset[str] = frozenset()
     """Class keys of the scenes the statistics were counted in that no count is of (ALFRED's ``faucet``):
     a vocabulary of these and :attr:`universe` is one the unsaid step and stack may be inferred in."""
+    scene_weights: Mapping[str, Mapping[str, float]] = field(default_factory=dict)
+    """``scene_weights["s:<class key>"][class key]``: what the scene adds to the chooser where a phrase is
+    grounded in one (:meth:`choose` with ``scene``): each class the room holds
+    (:func:`~seal_cli.language.chooser.scene_features`) weighs each candidate, fitted on train phrases among
+    the candidates their room held. Empty: the room's classes decide only which candidates compete."""
 
     def __post_init__(self) -> None:
-        for name in ("counts", "seen", "class_context", "number", "weights"):
+        for name in ("counts", "seen", "class_context", "number", "weights", "scene_weights"):
             table = getattr(self, name)
             object.__setattr__(self, name, MappingProxyType({w: MappingProxyType(dict(c)) for w, c in table.items()}))
         object.__setattr__(self, "context", MappingProxyType(
@@ -185,7 +192,7 @@ class WordUsage:
                                     self.slices.classes | other.slices.classes, self.slices.threshold),
                          GoalModel(add({"": self.goals.prior}, {"": other.goals.prior}).get("", {}),
                                    add(self.goals.weights, other.goals.weights), self.goals.threshold),
-                         self.scenery | other.scenery)
+                         self.scenery | other.scenery, add(self.scene_weights, other.scene_weights))
 
     def names_one(self, lemmas: tuple[str, ...]) -> bool:
         """Whether a plural phrase whose words up to the head are ``lemmas`` names one thing, as
@@ -207,6 +214,15 @@ class WordUsage:
         return WordUsage(self.counts, self.universe, self.sources, self.min_support, self.min_ratio, self.seen,
                          number=self.number, steps=self.steps, stacks=self.stacks, slices=self.slices,
                          goals=self.goals, scenery=self.scenery)
+
+    def scene_factor(self, keys: Iterable[str], present: Iterable[str]) -> dict[str, float]:
+        """For each class key, how much a scene holding the class keys ``present`` favours it:
+        ``exp(Σ scene_weights)`` over :func:`~seal_cli.language.chooser.scene_features` (1.0 without them)."""
+        keys = list(keys)
+        if not self.scene_weights or len(keys) < 2:
+            return {key: 1.0 for key in keys}
+        z = logits(self.scene_weights, keys, scene_features(present))
+        return {key: math.exp(v) for key, v in z.items()}
 
     def sentence_factor(self, wording: str, lemmas: tuple[str, ...], keys: Iterable[str],
                         words: Iterable[str]) -> dict[str, float]:
@@ -322,13 +338,15 @@ class WordUsage:
             support = sum(n for n, _ in seen)
             if support < self.min_support:
                 continue
-            if rule_key is not None and size < len(rule_key.split("_")) \
-                    and set(rule_key.split("_")) <= set(lemmas):
+            if rule_key is not None and _named_by_more(rule_key, lemmas, size):
                 return rule                               # the rules matched more of the phrase
             wording = " ".join(lemmas[-size:])
             scored = self._scored(wording, seen) if scene else [(float(n), key) for n, key in seen]
             if context and (self.weights or self.context):
                 factor = self.sentence_factor(wording, lemmas, (key for _, key in scored), context)
+                scored = [(s * factor[key], key) for s, key in scored]
+            if scene and self.scene_weights:
+                factor = self.scene_factor((key for _, key in scored), present)
                 scored = [(s * factor[key], key) for s, key in scored]
             total = sum(s for s, _ in scored)
             s_best, best = max(scored, key=lambda s: (s[0], s[1] == rule_key))
@@ -349,6 +367,16 @@ class WordUsage:
         times = self.seen.get(wording, {})
         return [(n / times[key] if times.get(key) else float(n) / max(sum(m for m, _ in seen), 1), key)
                 for n, key in seen]
+
+
+def _named_by_more(key: str, lemmas: tuple[str, ...], size: int) -> bool:
+    """Whether the class name ``key`` (a class key) spans more than the last ``size`` of a phrase's ``lemmas``:
+    its words are all the phrase's and more than ``size`` ("coffee table" → ``coffee_table``), or the phrase's
+    last words written together spell it ("glass bottle" → THOR's ``Glassbottle``, one word)."""
+    name = key.split("_")
+    if size < len(name) and set(name) <= set(lemmas):
+        return True
+    return any("".join(lemmas[-n:]) == "".join(name) for n in range(size + 1, len(lemmas) + 1))
 
 
 def _table(data: Any, where: Where) -> WordUsage:
@@ -405,10 +433,16 @@ def _table(data: Any, where: Where) -> WordUsage:
     if not _weight_table(raw, lambda c: isinstance(c, str) and class_key(c) in universe):
         raise SealError("\"weights\" must map each feature to {class of \"classes\": finite number}", where)
     weights = {str(f): {class_key(c): float(v) for c, v in by.items()} for f, by in raw.items()}
+    raw = data.get("scene_weights", {})
+    if not _weight_table(raw, lambda c: isinstance(c, str) and class_key(c) in universe) or \
+            not all(str(f).startswith("s:") for f in raw):
+        raise SealError("\"scene_weights\" must map each feature \"s:<class>\" to {class of \"classes\": finite "
+                        "number}", where)
+    scene_weights = {str(f): {class_key(c): float(v) for c, v in by.items()} for f, by in raw.items()}
     return WordUsage(counts, universe, (str(data.get("source", where.file)),), seen=seen, context=context,
                      class_context=class_context, number=number, weights=weights, steps=_steps(data, where),
                      stacks=_stacks(data, universe, where), slices=_slices(data, universe, where),
-                     goals=_goals(data, universe, where), scenery=_scenery(data, where))
+                     goals=_goals(data, universe, where), scenery=_scenery(data, where), scene_weights=scene_weights)
 
 
 def _steps(data: dict[str, Any], where: Where) -> StepModel:

@@ -14,7 +14,7 @@ from seal_cli.frames.library import Library
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.language.grounding import Vocabulary
 from seal_cli.language.parser import parse_command
-from seal_cli.language.slicing import SLICED, WHOLE, SliceModel, infer_slice, slice_features, uncut
+from seal_cli.language.slicing import SLICED, WHOLE, SliceModel, infer_slice, said_bare, slice_features, uncut
 from seal_cli.language.wordusage import WordUsage, load_word_usage, shipped_word_usage
 
 KITCHEN = ("ButterKnife", "Apple", "Mug", "Fridge", "CounterTop", "Pan", "Microwave")
@@ -39,6 +39,21 @@ def test_the_model_weighs_its_prior_by_the_sentence() -> None:
     assert slice_features(["put", "knife", "put"], "Apple", ["Place", "Heat"]) == (
         "w:knife", "w:put", "o:apple", "f:Heat", "f:Place")
     assert not SliceModel() and not SliceModel({SLICED: 3, WHOLE: 5}) and not SliceModel({SLICED: 3}, {}, {"Apple"})
+
+
+def test_a_food_said_bare_is_a_feature_of_its_own(library: Library) -> None:
+    def thing(text: str) -> bool:
+        parse = parse_command(text, library, kitchen(SliceModel()))
+        return said_bare(parse.resolve(parse.frames[-1].elements["theme"]))
+
+    assert thing("put cooked apple in the fridge") and thing("put cold apple on the counter")
+    assert not thing("put a cooked apple in the fridge") and not thing("put the apple in the fridge")
+    assert not thing("put apples in the fridge") and not thing("put two apples in the fridge")
+    assert not thing("pick up the apple and put it in the fridge")       # "it" is the apple said with "the"
+    assert slice_features(["put"], "Apple", ["Place"], bare=True) == ("w:put", "o:apple", "f:Place", "d:bare")
+    bare = SliceModel({SLICED: 10, WHOLE: 90}, {"d:bare": {SLICED: 4.0}}, frozenset(["Apple"]))
+    assert frames("put cooked apple in the fridge", library, kitchen(bare))[0] == ("Slice", "Apple")
+    assert frames("put a cooked apple in the fridge", library, kitchen(bare))[0] == ("Heat", "Apple")
 
 
 def test_a_slice_is_added_before_the_first_frame_that_handles_the_thing_and_marked(library: Library) -> None:

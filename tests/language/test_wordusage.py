@@ -89,6 +89,33 @@ def test_the_rules_keep_what_the_data_does_not_make_clear() -> None:
     assert vocab.ground_words(["red", "cup"]) == "Mug"            # the head's wording when the pair is unknown
 
 
+def test_a_class_name_written_together_is_the_rules_longer_match() -> None:
+    # THOR's Glassbottle is one word: "glass bottle" spells it together, more of the phrase than "bottle"
+    bottles = usage({"bottle": {"spray_bottle": 30, "glassbottle": 2}}, ("spray_bottle", "glassbottle"))
+    vocab = Vocabulary.of(["SprayBottle", "Glassbottle"]).with_usage(bottles)
+    assert vocab.ground_words(["glass", "bottle"]) == "Glassbottle"
+    assert vocab.ground_words(["bottle"]) == "SprayBottle"
+    assert vocab.ground_words(["green", "bottle"]) == "SprayBottle"
+
+
+def test_the_room_s_other_classes_weigh_the_candidates_in_a_scene() -> None:
+    # where a bed is, "the table" is the side table; the scene's weights say so only in a scene
+    tables = WordUsage({"table": {"dining_table": 10, "side_table": 8}},
+                       frozenset({"dining_table", "side_table", "bed"}),
+                       scene_weights={"s:bed": {"side_table": 1.0, "dining_table": -1.0}})
+    bedroom = Vocabulary.of(["DiningTable", "SideTable", "Bed"]).with_usage(tables)
+    assert bedroom.ground_words(["table"]) == "DiningTable"                  # no scene: the counts
+    assert bedroom.restricted_to(["DiningTable", "SideTable", "Bed"]).ground_words(["table"]) == "SideTable"
+    assert bedroom.restricted_to(["DiningTable", "SideTable"]).ground_words(["table"]) == "DiningTable"   # no bed
+    assert tables.scene_factor(["side_table"], ["bed"]) == {"side_table": 1.0}      # one candidate: nothing to weigh
+
+
+def test_the_shipped_table_has_scene_weights() -> None:
+    shipped = shipped_word_usage()
+    assert shipped.scene_weights and all(f.startswith("s:") for f in shipped.scene_weights)
+    assert all(key in shipped.universe for by in shipped.scene_weights.values() for key in by)
+
+
 def test_a_class_the_statistics_never_saw_is_not_overridden() -> None:
     vocab = Vocabulary.of(["table", "SideTable"]).with_usage(TABLES)     # a GPSR arena's "table"
     assert vocab.ground_words(["table"]) == "table"
@@ -263,6 +290,12 @@ def test_tables_in_a_folder_add_up(tmp_path: Path) -> None:
     ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "weights": {"w:a": {"Mug": NaN}}}',
      '"weights" must map'),
     ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "weights": []}', '"weights" must map'),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "scene_weights": {"s:a": {"Cup": 0.5}}}',
+     '"scene_weights" must map'),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "scene_weights": {"w:a": {"Mug": 0.5}}}',
+     '"scene_weights" must map'),
+    ('{"format": "seal-word-classes/1", "classes": ["Mug"], "words": {}, "scene_weights": [1]}',
+     '"scene_weights" must map'),
 ])
 def test_bad_tables_are_clear_errors(tmp_path: Path, content: str, words: str) -> None:
     path = tmp_path / "bad.json"
