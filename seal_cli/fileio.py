@@ -45,9 +45,29 @@ if TYPE_CHECKING:
     frame libraries and maps, with the same nodes and marks."""
 
 
+MAX_INT_DIGITS = 4300
+"""The longest integer YAML may hold, in digits: Python converts at most this many (more is a ValueError,
+which PyYAML's constructor lets through), and converting is quadratic in the digits."""
+
+
+def _bounded_int(constructor: yaml.constructor.SafeConstructor, node: yaml.ScalarNode) -> int:
+    """PyYAML's safe integer, with an integer of more than :data:`MAX_INT_DIGITS` digits a YAML error at
+    its node (every reader turns that into its file, line and column)."""
+    import yaml
+
+    digits = sum(c.isdigit() for c in str(node.value))
+    if digits > MAX_INT_DIGITS:
+        raise yaml.constructor.ConstructorError(
+            None, None, f"an integer of {digits:,} digits is more than seal reads ({MAX_INT_DIGITS:,} digits at most)",
+            node.start_mark)
+    return yaml.constructor.SafeConstructor.construct_yaml_int(constructor, node)
+
+
 def _loader() -> type[yaml.SafeLoader]:
     import yaml
 
+    # every safe loader (C or Python, PyYAML's own safe_load too) reads integers through the bound
+    yaml.constructor.SafeConstructor.add_constructor("tag:yaml.org,2002:int", _bounded_int)  # type: ignore[type-var]
     loader: type[yaml.SafeLoader] = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
     globals()["LOADER"] = loader
     return loader
@@ -184,16 +204,24 @@ def yaml_problem(exc: Exception, text: str, file: str) -> SealError:
     return SealError(f"YAML error: {exc}", Where(file))
 
 
-def read_yaml(path: str | Path) -> Any:
-    """A YAML file's data; syntax errors carry the line and column, with the line and a caret."""
+def read_yaml(path: str | Path, max_values: int | None = None, what: str = "file") -> Any:
+    """A YAML file's data; syntax errors carry the line and column, with the line and a caret.
+
+    ``max_values``: the most values (scalars, lists and mappings, aliases expanded) the file may hold
+    (default :data:`~seal_cli.yamlnodes.MAX_VALUES`); a file holding more is refused at the value past the
+    bound, found by streaming the parser's events before anything is built (a vocabulary of 300,000 words
+    is refused in a fraction of a second, not after it has been read and used)."""
     import yaml
 
-    from seal_cli.yamlnodes import check_size
+    from seal_cli.yamlnodes import MAX_VALUES, check_size, count_values
 
     text = read_text(path)
     loader = _loader()
+    limit = MAX_VALUES if max_values is None else max_values
     try:
-        check_size(yaml.compose(text, Loader=loader), str(path))  # no alias bomb is expanded
+        if len(text) > limit:  # a value takes at least one character: a shorter file cannot hold more
+            count_values(text, loader, str(path), limit, what)
+        check_size(yaml.compose(text, Loader=loader), str(path), limit)  # no alias bomb is expanded
         return yaml.load(text, Loader=loader)  # noqa: S506 (a safe loader)
     except yaml.YAMLError as exc:
         raise yaml_problem(exc, text, str(path)) from None

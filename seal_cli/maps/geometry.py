@@ -129,19 +129,50 @@ def segments_intersect(p1: ArrayLike, p2: ArrayLike, q1: ArrayLike, q2: ArrayLik
 
 def self_intersections(vertices: ArrayLike) -> list[tuple[int, int]]:
     """The pairs ``(i, j)`` of edges (edge i runs from vertex i to i+1) that meet although they are
-    not neighbours; neighbours that fold back onto each other count too. Empty for a simple polygon."""
+    not neighbours; neighbours that fold back onto each other count too. Empty for a simple polygon.
+
+    Only edges whose x-extents overlap are tested (sorted by their left end, each edge meets the ones
+    starting before its right end), and those a block at a time: a room's outline of thousands of points
+    is checked in time and memory near its size, not its square."""
     v = as_points(vertices)
     n = len(v)
     if n < 3:
         return []
     a, b = v, np.roll(v, -1, axis=0)
-    i, j = np.triu_indices(n, k=1)
-    hits = segments_intersect(a[i], b[i], a[j], b[j])
-    neighbours = (j == i + 1) | ((i == 0) & (j == n - 1))
-    # neighbours always share a vertex; they are a problem only when they overlap along a stretch
-    along = neighbours & _folds_back(a[i], b[i], a[j], b[j])
-    found = (hits & ~neighbours) | along
-    return [(int(x), int(y)) for x, y in zip(i[found], j[found], strict=True)]
+    slack = 1e-9 * (1.0 + np.abs(v).max())
+    left, right = np.minimum(a[:, 0], b[:, 0]) - slack, np.maximum(a[:, 0], b[:, 0]) + slack
+    low, high = np.minimum(a[:, 1], b[:, 1]) - slack, np.maximum(a[:, 1], b[:, 1]) + slack
+    order = np.argsort(left, kind="stable")
+    ends = np.searchsorted(left[order], right[order], side="right")  # sorted edges p+1 .. ends[p]-1 overlap p in x
+    counts = np.maximum(ends - np.arange(n) - 1, 0)
+    out: list[tuple[int, int]] = []
+    first = 0
+    while first < n:
+        last = first + 1  # a block of sorted edges whose candidate pairs number about PAIRS_AT_ONCE
+        total = counts[first]
+        while last < n and total + counts[last] <= PAIRS_AT_ONCE:
+            total += counts[last]
+            last += 1
+        block = np.arange(first, last)
+        p = np.repeat(block, counts[block])
+        q = p + 1 + (np.arange(len(p)) - np.repeat(np.cumsum(counts[block]) - counts[block], counts[block]))
+        x, y = order[p], order[q]
+        i, j = np.minimum(x, y), np.maximum(x, y)
+        near = (low[i] <= high[j]) & (low[j] <= high[i])
+        i, j = i[near], j[near]
+        hits = segments_intersect(a[i], b[i], a[j], b[j])
+        neighbours = (j == i + 1) | ((i == 0) & (j == n - 1))
+        # neighbours always share a vertex; they are a problem only when they overlap along a stretch
+        along = neighbours & _folds_back(a[i], b[i], a[j], b[j])
+        found = (hits & ~neighbours) | along
+        out.extend((int(s), int(t)) for s, t in zip(i[found], j[found], strict=True))
+        first = last
+    return sorted(out)
+
+
+PAIRS_AT_ONCE = 1_000_000
+"""Candidate edge pairs :func:`self_intersections` tests at once (some 200 MB of temporaries)."""
+
 
 
 def _folds_back(a1: Points, b1: Points, a2: Points, b2: Points) -> NDArray[np.bool_]:

@@ -285,3 +285,37 @@ def test_rays_reach_exactly_as_far_as_line_of_sight(grid_seed: int, seed: int) -
     stopped = reach < 2.0
     after = origin + (reach + 1e-6)[:, None] * direction
     assert not line_of_sight(grid, origin, after[stopped]).any()
+
+
+def _crossings_by_every_pair(v: np.ndarray) -> list[tuple[int, int]]:
+    from seal_cli.maps.geometry import _folds_back
+
+    n, a, b = len(v), v, np.roll(v, -1, axis=0)
+    out = []
+    for i in range(n):
+        for j in range(i + 1, n):
+            neighbours = j == i + 1 or (i == 0 and j == n - 1)
+            hit = bool(segments_intersect(a[i], b[i], a[j], b[j]))
+            if (hit and not neighbours) or (neighbours and _folds_back(a[i:i + 1], b[i:i + 1], a[j:j + 1],
+                                                                       b[j:j + 1])[0]):
+                out.append((i, j))
+    return out
+
+
+def test_the_swept_crossing_test_finds_what_testing_every_pair_finds() -> None:
+    rng = np.random.default_rng(7)
+    for _ in range(200):  # small integer lattices: many touches, shared vertices and collinear overlaps
+        v = rng.integers(0, 5, size=(int(rng.integers(3, 12)), 2)).astype(float)
+        assert self_intersections(v) == _crossings_by_every_pair(v)
+
+
+def test_a_fine_outline_is_checked_in_time_and_memory_near_its_size() -> None:
+    import time
+
+    t = np.linspace(0, 2 * np.pi, 62_831, endpoint=False)
+    ring = np.c_[5 + 2 * np.cos(t), 5 + 2 * np.sin(t)]
+    start = time.perf_counter()
+    assert self_intersections(ring) == []  # every pair: 2 billion, 15 GB
+    assert time.perf_counter() - start < 5
+    ring[[10, 20_000]] = ring[[20_000, 10]]  # two far points swapped: their edges cut across the ring
+    assert self_intersections(ring) == [(9, 20_000), (10, 19_999)]

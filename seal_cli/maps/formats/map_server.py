@@ -204,7 +204,10 @@ class _Reader(NodeReader):
 
     def number(self, node: yaml.Node, what: str, ok: Callable[[float], bool] = math.isfinite,
                need: str = "a number") -> float | None:
+        known = len(self.problems)
         value = self.value(node) if isinstance(node, yaml.ScalarNode) else None
+        if len(self.problems) > known:  # it could not be read at all: said once
+            return None
         if isinstance(value, str) and not getattr(node, "style", "x"):  # YAML 1.1: plain 1e-9 is a string
             with contextlib.suppress(ValueError):
                 value = float(value)
@@ -212,9 +215,7 @@ class _Reader(NodeReader):
             value = math.inf  # too large for a float: math.isfinite would raise OverflowError
         if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value) \
                 or not ok(float(value)):
-            shown = node.value if isinstance(node, yaml.ScalarNode) else _shape(node)
-            self.problem(f"{what} must be {need}, not {shown!r}" if isinstance(node, yaml.ScalarNode)
-                         else f"{what} must be {need}, not {shown}", node)
+            self.problem(f"{what} must be {need}, not {_shape(node)}", node)
             return None
         return float(value)
 
