@@ -138,6 +138,11 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     ringed = head.replace("[5, 0, 10, 10]", "[8, 0, 10, 2]") + f"  - {{name: den, polygon: [{circle}]}}\n"
     yield Case("A a room of 62,831 vertices", ("validate", "x.yaml"), (("x.yaml", ringed.encode()),), codes=(1,),
                keep=("x.yaml",), says=r"x\.yaml:5:\d+:.*62,831")
+    fine = ", ".join(f"[{5 + 2 * math.cos(k * math.tau / 9_000):.6f}, {5 + 2 * math.sin(k * math.tau / 9_000):.6f}]"
+                     for k in range(9_000))
+    outlined = head.replace("[5, 0, 10, 10]", "[8, 0, 10, 2]") + f"  - {{name: den, polygon: [{fine}]}}\n"
+    yield Case("A a room of 9,000 vertices: run", ("run", "go to the den", "--map", "x.yaml", "--particles", "20"),
+               (("x.yaml", outlined.encode()),), codes=(0,), keep=("x.yaml",))
     # -- occupancy images --------------------------------------------------------------------------------
     images = {"missing": ("image: apartment.pgm", "image: nowhere.pgm", ()),
               "a JPEG": ("image: apartment.pgm", "image: photo.pgm", (("photo.pgm", b"\xff\xd8\xff\xe0" + bytes(64)),)),

@@ -18,6 +18,7 @@ Unknown cells and space outside the grid do not block.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
 from dataclasses import dataclass
 from functools import cached_property
@@ -26,8 +27,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 __all__ = ["FREE", "MAX_IMAGE_CELLS", "OCCUPIED", "OUTSIDE", "UNKNOWN", "OccupancyGrid", "as_points", "box_polygon",
-           "cast_rays", "line_of_sight", "overlap_area", "point_in_polygon", "polygon_area", "segment_cells",
-           "segments_intersect", "self_intersections"]
+           "cast_rays", "coarsened", "fit_cells", "line_of_sight", "overlap_area", "point_in_polygon", "polygon_area",
+           "segment_cells", "segments_intersect", "self_intersections", "shrink_factor"]
 
 FREE, OCCUPIED, UNKNOWN = 0, 100, -1
 OUTSIDE = "_outside"
@@ -97,6 +98,43 @@ def point_in_polygon(points: ArrayLike, vertices: ArrayLike) -> NDArray[np.bool_
         crossing_x = xi + (py - yi) * slope
         out[part] = np.count_nonzero(straddles & (px < crossing_x), axis=1) % 2 == 1
     return out
+
+
+def shrink_factor(height: int, width: int, limit: int) -> int:
+    """The smallest whole factor by which a ``height`` × ``width`` grid, coarsened, has at most ``limit`` cells."""
+    factor = max(1, math.ceil(math.sqrt(height * width / limit)))
+    while math.ceil(height / factor) * math.ceil(width / factor) > limit:
+        factor += 1
+    return factor
+
+
+def coarsened(cells: NDArray[np.int8], factor: int) -> NDArray[np.int8]:
+    """Cells merged ``factor`` × ``factor`` into one: OCCUPIED if any was (a wall stays closed), else FREE if
+    any was, else UNKNOWN. Rows and columns past a whole block count as unknown (row 0 stays row 0)."""
+    if factor == 1:
+        return cells
+    h, w = cells.shape
+    rows, cols = -(-h // factor), -(-w // factor)
+    padded = np.full((rows * factor, cols * factor), UNKNOWN, dtype=np.int8)
+    padded[:h, :w] = cells
+    blocks = padded.reshape(rows, factor, cols, factor)
+    out = np.where((blocks == FREE).any(axis=(1, 3)), FREE, UNKNOWN).astype(np.int8)
+    out[(blocks == OCCUPIED).any(axis=(1, 3))] = OCCUPIED
+    return out
+
+
+def fit_cells(cells: NDArray[np.int8], limit: int) -> tuple[NDArray[np.int8], tuple[int, int], int]:
+    """Cells (row 0 at the lowest y) of at most ``limit``: cropped to the rows and columns holding a known cell,
+    then :func:`coarsened` if still too many; with the (column, row) of the kept corner and the factor."""
+    if cells.size <= limit:
+        return cells, (0, 0), 1
+    known = cells != UNKNOWN
+    rows, cols = np.flatnonzero(known.any(axis=1)), np.flatnonzero(known.any(axis=0))
+    if len(rows):
+        cells = cells[rows[0]:rows[-1] + 1, cols[0]:cols[-1] + 1]
+    corner = (int(cols[0]), int(rows[0])) if len(rows) else (0, 0)
+    factor = shrink_factor(cells.shape[0], cells.shape[1], limit)
+    return np.ascontiguousarray(coarsened(cells, factor)), corner, factor
 
 
 def _orientation(a: Points, b: Points, c: Points) -> NDArray[np.float64]:
@@ -280,6 +318,16 @@ class OccupancyGrid:
             occ_mask[orows[keep], ocols[keep]] = True
         occ_mask &= ~free
         return cls.from_masks(free, resolution, (low[0], low[1], 0.0), occ_mask)
+
+    @classmethod
+    def placed(cls, cells: ArrayLike, resolution: float, origin: tuple[float, float, float],
+               corner: tuple[int, int] = (0, 0), factor: int = 1) -> OccupancyGrid:
+        """Cells kept from a larger grid of ``resolution`` at ``origin``: their lower-left cell was at (column, row)
+        ``corner`` of it (the origin moves there along its yaw), each merges ``factor`` × ``factor`` of its cells."""
+        x, y, yaw = origin
+        dx, dy = corner[0] * resolution, corner[1] * resolution
+        moved = (x + math.cos(yaw) * dx - math.sin(yaw) * dy, y + math.sin(yaw) * dx + math.cos(yaw) * dy, yaw)
+        return cls(np.asarray(cells, dtype=np.int8), resolution * factor, moved)
 
     @classmethod
     def filled(cls, bounds: tuple[float, float, float, float], resolution: float,
