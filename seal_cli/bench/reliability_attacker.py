@@ -143,6 +143,14 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     outlined = head.replace("[5, 0, 10, 10]", "[8, 0, 10, 2]") + f"  - {{name: den, polygon: [{fine}]}}\n"
     yield Case("A a room of 9,000 vertices: run", ("run", "go to the den", "--map", "x.yaml", "--particles", "20"),
                (("x.yaml", outlined.encode()),), codes=(0,), keep=("x.yaml",))
+    yield Case("A a room named with 20,000 letters: the message cuts the name", ("validate", "h.yaml"),
+               (("h.yaml", replaced("name: bedroom", "name: b" + "e" * 20_000 + "droom")), image), codes=(1,),
+               keep=("h.yaml",), says=r"\A(?![\s\S]*[^\n]{3001})[\s\S]*h\.yaml:\d+:\d+: .*beee+…")
+    objects = "".join(f"  - {{class: cup, at: [{-8.5 + (k % 100) * 0.05:.2f}, {-5.5 + (k // 100) * 0.005:.3f}]}}\n"
+                      for k in range(50_000))
+    yield Case("A 50,000 objects in the apartment", ("validate", "h.yaml"),
+               (("h.yaml", replaced("objects:\n", "objects:\n" + objects)), image), codes=(0, 1), keep=("h.yaml",),
+               says=r"h\.yaml")
     # -- occupancy images --------------------------------------------------------------------------------
     images = {"missing": ("image: apartment.pgm", "image: nowhere.pgm", ()),
               "a JPEG": ("image: apartment.pgm", "image: photo.pgm", (("photo.pgm", b"\xff\xd8\xff\xe0" + bytes(64)),)),
