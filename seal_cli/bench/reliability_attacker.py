@@ -221,6 +221,20 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield Case("A bench tasks --episodes /dev/full", ("bench", "tasks", "--suite", "map", "--layouts", "1",
                                                       "--policies", "sefm", "--episodes", "/dev/full"),
                codes=(1,), says=r"--episodes")
+    # -- empty names and overlong values for options ------------------------------------------------------
+    empties = {"plan --pddl ''": ("plan", "--pddl", "", "stir the cup"),
+               "plan --pddl=": ("plan", "--pddl=", "stir the cup"),
+               "map --png ''": ("map", "m.yaml", "--png", ""),
+               "localize --goals ''": (*loc, "--task", "stir the cup", "--goals", ""),
+               "parse --vocabulary ''": ("parse", "--vocabulary", "", "stir the cup"), "validate ''": ("validate", "")}
+    for label, argv in empties.items():
+        yield Case(f"A an empty name: {label}", argv, both, codes=(1,), keep=inputs,
+                   absent=("domain.pddl", "problem.pddl"), says=r"(--[a-z]+ is empty|an empty PATH)")
+    yield Case("A --holding of 3,000 letters: run", ("run", "bring me a cup", "--map", "m.yaml", "--particles", "20",
+                                                      "--holding", "x" * 3_000), both, codes=(1,), keep=inputs,
+               says=r"holding 'x+'… is 3,000 characters long")
+    yield Case("A --holding of 100,000 letters: plan", ("plan", "--holding", "y" * 100_000, "stir the cup"),
+               codes=(1,), says=r"holding 'y+'… is 100,000 characters long")
     # -- folders and empty files where files go ------------------------------------------------------------
     for option, argv in (("--vocabulary", ("parse", "--vocabulary", "x", "stir the cup")),
                          ("--observations", (*loc, "--observations", "x")),
