@@ -327,6 +327,36 @@ def interrupted() -> bool:
     return _INTERRUPTED[0]
 
 
+_COMMITTED: list[bool] = [False]
+_HELD = {signal.SIGINT, signal.SIGTERM, signal.SIGHUP}
+
+
+def committed() -> bool:
+    """Whether a command's outputs have been moved into place (since :func:`forget_commits`): an interrupt
+    after that leaves the command's work done."""
+    return _COMMITTED[0]
+
+
+def forget_commits() -> None:
+    """A new command starts: none of its outputs is in place yet."""
+    _COMMITTED[0] = False
+
+
+def _hold_signals() -> set[int | signal.Signals] | None:
+    """Block SIGINT, SIGTERM and SIGHUP (they wait, pending); the mask before, None where that cannot be done."""
+    try:
+        return signal.pthread_sigmask(signal.SIG_BLOCK, _HELD)
+    except (AttributeError, OSError, ValueError):
+        return None
+
+
+def _release_signals(mask: set[int | signal.Signals] | None) -> None:
+    """Restore the mask :func:`_hold_signals` returned: a signal that waited arrives now."""
+    if mask is not None:
+        with contextlib.suppress(AttributeError, OSError, ValueError):
+            signal.pthread_sigmask(signal.SIG_SETMASK, mask)
+
+
 def clean_up_on_signals() -> None:
     """Make SIGTERM and SIGHUP end this process as SIGINT does, by an exception, so that every
     ``with`` block unwinds and our temporaries are removed (``timeout`` and CI send SIGTERM).
@@ -339,7 +369,7 @@ def clean_up_on_signals() -> None:
             os.kill(os.getpid(), number)
             return
         remove_temporaries()
-        raise SystemExit(128 + number)
+        raise SystemExit(0 if committed() else 128 + number)  # after the outputs are in place: the work is done
 
     for number in (signal.SIGTERM, signal.SIGHUP):
         with contextlib.suppress(ValueError, OSError):  # not the main thread, or no such signal here
@@ -451,12 +481,17 @@ class Outputs:
             self.discard()
 
     def commit(self) -> None:
-        """Move every temporary onto its target (devices are written in place)."""
+        """Move every temporary onto its target (devices are written in place). SIGINT, SIGTERM and SIGHUP wait
+        while the outputs move and until that is recorded (:func:`committed`): one arriving then ends the command
+        with the outputs whole and in place, never with them written by a command that says it failed."""
+        held = _hold_signals()
         try:
             for output in self._outputs.values():
                 _move(output)
+            _COMMITTED[0] = True
         finally:
             self.discard()
+            _release_signals(held)
 
     def discard(self) -> None:
         """Remove every temporary not yet moved."""
