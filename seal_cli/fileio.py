@@ -317,6 +317,7 @@ def note_interrupts() -> None:
         _INTERRUPTED[0] = True
         signal.default_int_handler(number, frame)
 
+    _INTERRUPTED[0] = False  # a command run before in this process (the API, tests) was interrupted: not this one
     with contextlib.suppress(ValueError, OSError):  # not the main thread
         if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
             signal.signal(signal.SIGINT, handler)
@@ -342,19 +343,39 @@ def forget_commits() -> None:
     _COMMITTED[0] = False
 
 
-def _hold_signals() -> set[int | signal.Signals] | None:
-    """Block SIGINT, SIGTERM and SIGHUP (they wait, pending); the mask before, None where that cannot be done."""
+_Held = tuple[dict[int, Any], list[int]]
+
+
+def _hold_signals() -> _Held | None:
+    """Make SIGINT, SIGTERM and SIGHUP wait: each is noted by a handler of ours, not acted on (Python runs
+    handlers in the main thread whichever thread the system hands a signal to); the handlers before and the
+    signals noted, None where handlers cannot be set (not the main thread)."""
+    noted: list[int] = []
+    before: dict[int, Any] = {}
     try:
-        return signal.pthread_sigmask(signal.SIG_BLOCK, _HELD)
-    except (AttributeError, OSError, ValueError):
+        for number in _HELD:
+            before[number] = signal.signal(number, lambda n, _frame: noted.append(n))
+    except (ValueError, OSError):
+        for held, handler in before.items():
+            signal.signal(held, handler)
         return None
+    return before, noted
 
 
-def _release_signals(mask: set[int | signal.Signals] | None) -> None:
-    """Restore the mask :func:`_hold_signals` returned: a signal that waited arrives now."""
-    if mask is not None:
-        with contextlib.suppress(AttributeError, OSError, ValueError):
-            signal.pthread_sigmask(signal.SIG_SETMASK, mask)
+def _release_signals(held: _Held | None) -> None:
+    """Put back the handlers :func:`_hold_signals` replaced, then act on the signals that waited, as they
+    would have been (a KeyboardInterrupt, a SystemExit)."""
+    if held is None:
+        return
+    before, noted = held
+    for number, handler in before.items():
+        signal.signal(number, handler)
+    for number in dict.fromkeys(noted):
+        handler = before[number]
+        if callable(handler):
+            handler(number, None)
+        elif handler == signal.SIG_DFL:
+            os.kill(os.getpid(), number)
 
 
 def clean_up_on_signals() -> None:

@@ -95,8 +95,12 @@ def test_an_import_failing_under_an_interrupt_is_the_interrupt(monkeypatch: pyte
     monkeypatch.setattr(fileio, "_INTERRUPTED", [False])
     with pytest.raises(ImportError):
         run_command(lambda: _raise(failed))  # a real failure stays one
-    monkeypatch.setattr(fileio, "_INTERRUPTED", [True])
-    assert run_command(lambda: _raise(failed)) == 130
+
+    def interrupted_import() -> None:
+        fileio._INTERRUPTED[0] = True  # SIGINT arrived during the command (a flag left by an earlier one is reset)
+        _raise(failed)
+
+    assert run_command(interrupted_import) == 130
 
 
 def test_an_interrupt_while_the_outputs_move_ends_with_them_in_place_and_success(
@@ -116,6 +120,7 @@ def test_an_interrupt_while_the_outputs_move_ends_with_them_in_place_and_success
         os.kill(os.getpid(), signal.SIGINT)  # held: it arrives once the commit is recorded
 
     monkeypatch.setattr(fileio, "_move", move_then_interrupt)
+    monkeypatch.setattr(fileio, "_INTERRUPTED", [False])
     target = tmp_path / "o.yaml"
 
     def command() -> int:
