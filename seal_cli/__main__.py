@@ -19,9 +19,9 @@ removed, before the command returns (:mod:`seal_cli.fileio`).
 An interrupt (Ctrl-C, SIGINT) while the command line is still being imported, before a command runs
 (a second or more on a loaded machine), ends seal as one during a command does: ``interrupted``,
 exit code 130, no traceback; one after the command has finished (its outputs in place) leaves the command's
-own exit code. Standard streams whose encoding cannot hold every character
-(``PYTHONIOENCODING=ascii``, a Latin-1 terminal) are set up first (:func:`seal_cli.cli.output.
-printable_streams`).
+own exit code, and one while the interpreter shuts down is ignored. Standard streams whose encoding cannot
+hold every character (``PYTHONIOENCODING=ascii``, a Latin-1 terminal) are set up first
+(:func:`seal_cli.cli.output.printable_streams`).
 """
 
 from __future__ import annotations
@@ -70,6 +70,19 @@ def main() -> None:
         sys.exit(130)
     finally:
         gc.freeze()  # the command has finished: the process ends without a last pass over its objects
+        _ignore_late_signals()
+
+
+def _ignore_late_signals() -> None:
+    """The command has ended and its exit code is chosen: SIGINT, SIGTERM and SIGHUP are ignored while the
+    interpreter shuts down (one there was a traceback from ``threading._shutdown``, or ended the process as
+    killed by SIGINT after it had written its output)."""
+    import contextlib
+    import signal
+
+    for number in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
+        with contextlib.suppress(ValueError, OSError, AttributeError):
+            signal.signal(number, signal.SIG_IGN)
 
 
 if __name__ == "__main__":

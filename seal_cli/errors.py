@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
-__all__ = ["SealError", "SealErrors", "Where", "caret"]
+__all__ = ["SealError", "SealErrors", "Where", "caret", "readable"]
 
 
 @dataclass(frozen=True, order=True)
@@ -58,6 +58,22 @@ def caret(source_line: str, column: int) -> str:
     return f"{line}\n{pad}^"
 
 
+WORD = 200
+"""The most characters of one word (a name, a number, a path) a printed message shows: a room called with
+20,000 letters, or an integer of 5,000 digits, is cut to this many, with "…"."""
+MESSAGE = 3000
+"""The most characters of a printed message (a list of 10,000 names is cut, with "…")."""
+
+
+def readable(message: str) -> str:
+    """``message`` with each word longer than :data:`WORD` characters, and the whole past :data:`MESSAGE`, cut
+    with "…" (what is printed; the JSON of an error keeps the message whole)."""
+    import re
+
+    message = re.sub(rf"\S{{{WORD + 1},}}", lambda m: m.group()[:WORD - 1] + "…", message)
+    return message if len(message) <= MESSAGE else message[:MESSAGE - 1] + "…"
+
+
 class SealError(Exception):
     """One problem a user can fix, with where it is."""
 
@@ -82,10 +98,10 @@ class SealError(Exception):
         return self.where.column
 
     def located(self) -> str:
-        """``file:line:col: message`` (the part a tool or an editor reads)."""
+        """``file:line:col: message`` (the part a tool or an editor reads); the message :func:`readable`."""
         if self.where == Where():
-            return self.message
-        return f"{self.where}: {self.message}"
+            return readable(self.message)
+        return f"{self.where}: {readable(self.message)}"
 
     def __str__(self) -> str:
         text = self.located()

@@ -45,9 +45,29 @@ if TYPE_CHECKING:
     frame libraries and maps, with the same nodes and marks."""
 
 
+MAX_INT_DIGITS = 4300
+"""The longest integer YAML may hold, in digits: Python converts at most this many (more is a ValueError,
+which PyYAML's constructor lets through), and converting is quadratic in the digits."""
+
+
+def _bounded_int(constructor: yaml.constructor.SafeConstructor, node: yaml.ScalarNode) -> int:
+    """PyYAML's safe integer, with an integer of more than :data:`MAX_INT_DIGITS` digits a YAML error at
+    its node (every reader turns that into its file, line and column)."""
+    import yaml
+
+    digits = sum(c.isdigit() for c in str(node.value))
+    if digits > MAX_INT_DIGITS:
+        raise yaml.constructor.ConstructorError(
+            None, None, f"an integer of {digits:,} digits is more than seal reads ({MAX_INT_DIGITS:,} digits at most)",
+            node.start_mark)
+    return yaml.constructor.SafeConstructor.construct_yaml_int(constructor, node)
+
+
 def _loader() -> type[yaml.SafeLoader]:
     import yaml
 
+    # every safe loader (C or Python, PyYAML's own safe_load too) reads integers through the bound
+    yaml.constructor.SafeConstructor.add_constructor("tag:yaml.org,2002:int", _bounded_int)  # type: ignore[type-var]
     loader: type[yaml.SafeLoader] = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
     globals()["LOADER"] = loader
     return loader
@@ -184,16 +204,24 @@ def yaml_problem(exc: Exception, text: str, file: str) -> SealError:
     return SealError(f"YAML error: {exc}", Where(file))
 
 
-def read_yaml(path: str | Path) -> Any:
-    """A YAML file's data; syntax errors carry the line and column, with the line and a caret."""
+def read_yaml(path: str | Path, max_values: int | None = None, what: str = "file") -> Any:
+    """A YAML file's data; syntax errors carry the line and column, with the line and a caret.
+
+    ``max_values``: the most values (scalars, lists and mappings, aliases expanded) the file may hold
+    (default :data:`~seal_cli.yamlnodes.MAX_VALUES`); a file holding more is refused at the value past the
+    bound, found by streaming the parser's events before anything is built (a vocabulary of 300,000 words
+    is refused in a fraction of a second, not after it has been read and used)."""
     import yaml
 
-    from seal_cli.yamlnodes import check_size
+    from seal_cli.yamlnodes import MAX_VALUES, check_size, count_values
 
     text = read_text(path)
     loader = _loader()
+    limit = MAX_VALUES if max_values is None else max_values
     try:
-        check_size(yaml.compose(text, Loader=loader), str(path))  # no alias bomb is expanded
+        if len(text) > limit:  # a value takes at least one character: a shorter file cannot hold more
+            count_values(text, loader, str(path), limit, what)
+        check_size(yaml.compose(text, Loader=loader), str(path), limit)  # no alias bomb is expanded
         return yaml.load(text, Loader=loader)  # noqa: S506 (a safe loader)
     except yaml.YAMLError as exc:
         raise yaml_problem(exc, text, str(path)) from None
@@ -289,6 +317,7 @@ def note_interrupts() -> None:
         _INTERRUPTED[0] = True
         signal.default_int_handler(number, frame)
 
+    _INTERRUPTED[0] = False  # a command run before in this process (the API, tests) was interrupted: not this one
     with contextlib.suppress(ValueError, OSError):  # not the main thread
         if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
             signal.signal(signal.SIGINT, handler)
@@ -297,6 +326,56 @@ def note_interrupts() -> None:
 def interrupted() -> bool:
     """Whether SIGINT has arrived (since :func:`note_interrupts`)."""
     return _INTERRUPTED[0]
+
+
+_COMMITTED: list[bool] = [False]
+_HELD = {signal.SIGINT, signal.SIGTERM, signal.SIGHUP}
+
+
+def committed() -> bool:
+    """Whether a command's outputs have been moved into place (since :func:`forget_commits`): an interrupt
+    after that leaves the command's work done."""
+    return _COMMITTED[0]
+
+
+def forget_commits() -> None:
+    """A new command starts: none of its outputs is in place yet."""
+    _COMMITTED[0] = False
+
+
+_Held = tuple[dict[int, Any], list[int]]
+
+
+def _hold_signals() -> _Held | None:
+    """Make SIGINT, SIGTERM and SIGHUP wait: each is noted by a handler of ours, not acted on (Python runs
+    handlers in the main thread whichever thread the system hands a signal to); the handlers before and the
+    signals noted, None where handlers cannot be set (not the main thread)."""
+    noted: list[int] = []
+    before: dict[int, Any] = {}
+    try:
+        for number in _HELD:
+            before[number] = signal.signal(number, lambda n, _frame: noted.append(n))
+    except (ValueError, OSError):
+        for held, handler in before.items():
+            signal.signal(held, handler)
+        return None
+    return before, noted
+
+
+def _release_signals(held: _Held | None) -> None:
+    """Put back the handlers :func:`_hold_signals` replaced, then act on the signals that waited, as they
+    would have been (a KeyboardInterrupt, a SystemExit)."""
+    if held is None:
+        return
+    before, noted = held
+    for number, handler in before.items():
+        signal.signal(number, handler)
+    for number in dict.fromkeys(noted):
+        handler = before[number]
+        if callable(handler):
+            handler(number, None)
+        elif handler == signal.SIG_DFL:
+            os.kill(os.getpid(), number)
 
 
 def clean_up_on_signals() -> None:
@@ -311,7 +390,7 @@ def clean_up_on_signals() -> None:
             os.kill(os.getpid(), number)
             return
         remove_temporaries()
-        raise SystemExit(128 + number)
+        raise SystemExit(0 if committed() else 128 + number)  # after the outputs are in place: the work is done
 
     for number in (signal.SIGTERM, signal.SIGHUP):
         with contextlib.suppress(ValueError, OSError):  # not the main thread, or no such signal here
@@ -423,12 +502,17 @@ class Outputs:
             self.discard()
 
     def commit(self) -> None:
-        """Move every temporary onto its target (devices are written in place)."""
+        """Move every temporary onto its target (devices are written in place). SIGINT, SIGTERM and SIGHUP wait
+        while the outputs move and until that is recorded (:func:`committed`): one arriving then ends the command
+        with the outputs whole and in place, never with them written by a command that says it failed."""
+        held = _hold_signals()
         try:
             for output in self._outputs.values():
                 _move(output)
+            _COMMITTED[0] = True
         finally:
             self.discard()
+            _release_signals(held)
 
     def discard(self) -> None:
         """Remove every temporary not yet moved."""

@@ -17,7 +17,7 @@ import yaml
 
 from seal_cli.errors import SealError, Where
 
-__all__ = ["MAX_VALUES", "NodeReader", "check_size", "is_null", "shape", "suggest"]
+__all__ = ["MAX_VALUES", "NodeReader", "check_size", "clipped", "count_values", "is_null", "shape", "suggest"]
 
 T = TypeVar("T")
 
@@ -56,6 +56,25 @@ def check_size(root: yaml.Node | None, file: str, limit: int = MAX_VALUES) -> No
                         "seal reads at most that many", Where(file))
 
 
+def count_values(text: str, loader: type[yaml.SafeLoader], file: str, limit: int, what: str = "file") -> None:
+    """Refuse ``text`` if it holds more than ``limit`` values (scalars, aliases, lists and mappings), at the
+    line and column of the first one past the bound: the parser's events are streamed and counted, nothing
+    is built (about a third of the time of composing the file)."""
+    parser = loader(text)
+    try:
+        count = 0
+        while parser.check_event():
+            event = parser.get_event()
+            if isinstance(event, yaml.NodeEvent):
+                count += 1
+                if count > limit:
+                    mark = event.start_mark
+                    raise SealError(f"this {what} holds more than {limit:,} values; seal reads at most that many",
+                                    Where(file, mark.line + 1, mark.column + 1) if mark else Where(file))
+    finally:
+        parser.dispose()
+
+
 def _children(node: yaml.Node) -> list[yaml.Node]:
     if isinstance(node, yaml.SequenceNode):
         return list(node.value)
@@ -77,7 +96,12 @@ def shape(node: yaml.Node) -> str:
         return "a list"
     if is_null(node):
         return "nothing"
-    return repr(node.value)
+    return clipped(repr(node.value))
+
+
+def clipped(text: str, most: int = 60) -> str:
+    """``text`` cut to ``most`` characters with "…" (a value of 5,000 digits in a message reads as its start)."""
+    return text if len(text) <= most else text[:most - 1] + "…"
 
 
 def suggest(word: str, choices: Iterable[str]) -> str:

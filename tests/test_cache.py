@@ -33,8 +33,11 @@ def test_a_mapped_entry_starts_after_its_header() -> None:
 
 
 @pytest.mark.parametrize("damage", [lambda b: b[:-1], lambda b: b + b"x", lambda b: b"", lambda b: b"garbage\n" + b,
-                                    lambda b: b.replace(b"seal-cache 1", b"seal-cache 9"),
-                                    lambda b: b.replace(b" 7\n", b" seven\n")])
+                                    lambda b: b.replace(b"seal-cache 2", b"seal-cache 9"),
+                                    lambda b: b.replace(b" 7 ", b" seven "),
+                                    lambda b: b[:-3] + b"X" + b[-2:],           # a byte flipped: same length
+                                    lambda b: b.replace(b"payload", b"PAYLOAD"),  # the header's digest is of payload
+                                    lambda b: b.split(b" 7 ")[0] + b" 7\n" + b.split(b"\n", 1)[1]])  # no digest
 def test_a_corrupt_entry_is_ignored(own_cache: Path, damage: object) -> None:
     cache.write("thing.bin", "abc", b"payload")
     entry = own_cache / "thing.bin"
@@ -73,3 +76,20 @@ def test_the_default_folder_follows_xdg(monkeypatch: pytest.MonkeyPatch, tmp_pat
 def test_digests_keep_the_parts_apart() -> None:
     assert cache.digest(b"ab", b"c") != cache.digest(b"a", b"bc")
     assert cache.digest(b"x") == cache.digest(b"x")
+
+
+def test_a_corrupted_word_table_is_made_again(own_cache: Path) -> None:
+    """A flipped byte in a cached word table keeps its length: the digest sees it, and the table is rebuilt."""
+    from seal_cli.language.morphology import _Table
+
+    table = _Table("lemma_lu.csv.gz")
+    found = table.entries("cups")
+    assert found
+    entry = next(own_cache.glob("words-lemma_lu-*.txt"))
+    data = bytearray(entry.read_bytes())
+    at = data.index(b"\ncups,") + 1
+    data[at:at + 4] = b"cupz"  # the entry of "cups" now names "cupz": the same length
+    entry.write_bytes(bytes(data))
+    again = _Table("lemma_lu.csv.gz")
+    assert again.entries("cups") == found
+    assert b"\ncups," in entry.read_bytes()  # made again

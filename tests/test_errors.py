@@ -44,3 +44,15 @@ def test_a_long_source_line_is_cut_around_the_column() -> None:
     assert shown[len(mark) - 1] == "x" and mark.strip() == "^"
     start, _ = caret("y" + "a" * 500, 1).split("\n")
     assert start.startswith("y") and start.endswith("…") and caret("short", 3) == "short\n  ^"
+
+
+def test_a_printed_message_cuts_overlong_words_and_length_but_json_keeps_it_whole() -> None:
+    from seal_cli.errors import MESSAGE, WORD, readable
+
+    name = "b" + "e" * 20_000 + "droom"
+    error = SealError(f"prior of spoon names 'bedroom'; rooms: {name}, kitchen", Where("m.yaml", 3, 4))
+    shown = str(error)
+    assert shown.startswith("m.yaml:3:4: prior of spoon names 'bedroom'; rooms: beee") and shown.endswith(" kitchen")
+    assert max(len(word) for word in shown.split()) == WORD
+    assert error.to_json()["message"] == error.message  # whole, for a program
+    assert len(readable("x " * 10_000)) == MESSAGE and readable("short words stay") == "short words stay"

@@ -157,3 +157,21 @@ def test_a_file_that_waits_for_data_is_not_waited_on() -> None:
         read_text(kmsg)
     except SealError as error:
         assert "kmsg" in str(error)
+
+
+def test_an_integer_of_more_digits_than_python_converts_is_a_located_yaml_error(tmp_path: Path) -> None:
+    path = tmp_path / "v.yaml"
+    path.write_text("- cup\n- " + "1" * 5_000 + "\n")
+    with pytest.raises(SealError, match=r"v\.yaml:2:3: .*an integer of 5,000 digits") as caught:
+        read_yaml(path)
+    assert len(str(caught.value).splitlines()[0]) < 200  # the value is not printed whole
+    path.write_text("- " + "1" * 4_000 + "\n- 0x" + "f" * 5_000 + "\n")  # within the bound; hex is not limited
+    assert read_yaml(path)[0] == int("1" * 4_000)
+
+
+def test_a_file_with_more_values_than_asked_is_refused_at_the_value_past_the_bound(tmp_path: Path) -> None:
+    path = tmp_path / "v.yaml"
+    path.write_text("".join(f"- w{k}\n" for k in range(1_000)))
+    assert len(read_yaml(path, max_values=1_001)) == 1_000  # the list and its 1,000 words
+    with pytest.raises(SealError, match=r"v\.yaml:500:3: this vocabulary holds more than 500 values"):
+        read_yaml(path, max_values=500, what="vocabulary")

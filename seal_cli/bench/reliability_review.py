@@ -524,10 +524,11 @@ def _enforced() -> bool:
 
 
 def cases(seed: int = 0, count: int = 320) -> list[Case]:
-    """The issue's cases, the hostile inputs written by hand, the reviewer's, a new user's and an outsider's
-    (each with the shape of its message), then ``count`` generated ones."""
+    """The issue's cases, the hostile inputs written by hand, the reviewer's, a new user's, an outsider's and an
+    attacker's (each with the shape of its message), then ``count`` generated ones."""
+    from seal_cli.bench.reliability_attacker import attacker_cases
     from seal_cli.bench.reliability_outsider import outsider_cases
     from seal_cli.bench.reliability_users import user_cases
 
-    return [*issue_cases(), *hostile_cases(), *review_cases(), *user_cases(), *outsider_cases(),
+    return [*issue_cases(), *hostile_cases(), *review_cases(), *user_cases(), *outsider_cases(), *attacker_cases(),
             *generated_cases(seed, count)]

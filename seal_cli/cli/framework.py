@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import functools
 from collections.abc import Callable
+from pathlib import Path
 from typing import Any, TypeVar
 
 import typer
@@ -43,7 +44,11 @@ def command(*args: Any, on: typer.Typer | None = None, **kwargs: Any) -> Callabl
     def decorate(function: F) -> F:
         @functools.wraps(function)
         def run(*a: Any, **kw: Any) -> None:
-            code = run_command(lambda: function(*a, **kw))
+            def checked() -> int | None:
+                _refuse_empty_paths(kw)
+                return function(*a, **kw)
+
+            code = run_command(checked)
             if code:
                 raise typer.Exit(code)
 
@@ -51,6 +56,26 @@ def command(*args: Any, on: typer.Typer | None = None, **kwargs: Any) -> Callabl
         return function
 
     return decorate
+
+
+def _refuse_empty_paths(values: dict[str, Any]) -> None:
+    """Refuse a file or folder option given an empty value (``--pddl ''``): typer reads it as ``.``, the current
+    folder, and ``plan --pddl ''`` wrote its files there, ``--png ''`` was "a folder". An option's name is its
+    parameter's (``max_steps``: ``--max-steps``)."""
+    import sys
+
+    from seal_cli.errors import SealError
+
+    argv = sys.argv[1:]
+    for name, given in values.items():
+        paths = given if isinstance(given, list | tuple) else [given]
+        if not any(isinstance(p, Path) and str(p) == "." for p in paths):
+            continue
+        option = "--" + name.replace("_", "-")
+        if f"{option}=" in argv or any(argv[k] == option and argv[k + 1] == "" for k in range(len(argv) - 1)):
+            raise SealError(f"{option} is empty: give a file or folder name")
+        if option not in argv and "" in argv and "." not in argv:  # an argument, not an option: `validate ''`
+            raise SealError(f"an empty {name.upper().rstrip('S')} was given: give a file or folder name")
 
 
 FramelibOption = typer.Option(None, "--framelib", help="Frame library file or folder (repeatable); "

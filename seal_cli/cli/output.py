@@ -84,10 +84,11 @@ def run_command(function: Callable[[], int | None]) -> int:
     """Run a command's body; its exit code. The failures every command shares become one message on
     stderr and an exit code: a SealError 1, an interrupt 130, a closed pipe 0 (the reader has what it
     wanted), memory or nesting that runs out 1; our temporaries of outputs never written are removed."""
-    from seal_cli.fileio import clean_up_on_signals, note_interrupts, remove_temporaries
+    from seal_cli.fileio import clean_up_on_signals, committed, forget_commits, note_interrupts, remove_temporaries
 
     global FINISHED
 
+    forget_commits()
     clean_up_on_signals()
     note_interrupts()
     _closed_streams_to_null()
@@ -105,6 +106,8 @@ def run_command(function: Callable[[], int | None]) -> int:
     except KeyboardInterrupt:
         if FINISHED is not None:  # an interrupt after the command finished changes nothing it did
             return FINISHED
+        if committed():  # its outputs are in place, whole: what is left (a summary printed) is not worth a failure
+            return 0
         err.print("interrupted")
         return 130
     except BrokenPipeError:

@@ -33,10 +33,18 @@ def class_words(name: str) -> tuple[str, ...]:
     return tuple(w for w in re.split(r"[\s_\-]+", _HUMP.sub(" ", name).lower()) if w)
 
 
+MAX_CLASS_NAME = 100
+"""The longest class name (as a key, words joined by '_') a plan may use: ``--holding`` of 3,000 letters was
+held, and printed whole in every state."""
+
+
 def check_class_name(name: str, what: str, where: Where | None = None) -> str:
     """``class_key(name)``, or a SealError when that is no name a plan can use (letters, digits
     and '_', not starting with a digit): ``what`` says which value it is."""
     key = class_key(name)
+    if len(key) > MAX_CLASS_NAME:
+        raise SealError(f"{what} {name[:40]!r}… is {len(key):,} characters long; a class name has at most "
+                        f"{MAX_CLASS_NAME}", where)
     if not _CLASS.match(key):
         raise SealError(f"{what} {name!r} is not a class name (letters, digits, '_' or spaces, not starting "
                         "with a digit)", where)

@@ -396,6 +396,12 @@ def _arena(data: dict[str, Any]) -> dict[str, Any]:
     return {"classes": list(dict.fromkeys(classes)), "people": data.get("names", [])}
 
 
+MAX_VOCABULARY_VALUES = 50_000
+"""The most values (class names, synonyms, people) a vocabulary file may hold: parsing a command looks at
+every class (50,000 take about 3 s; 300,000 took 25 s), and no robot's world names more; a larger file is
+refused as it is read, at the value past the bound."""
+
+
 def load_vocabulary(path: str | Path) -> Vocabulary:
     """Read a vocabulary file: a YAML list of classes, each a name or ``{class, synonyms}``; or a
     mapping of ``classes`` and ``people``; or a RoboCup@Home arena's vocabulary (``names``, ``objects``,
@@ -403,7 +409,7 @@ def load_vocabulary(path: str | Path) -> Vocabulary:
     from seal_cli.fileio import read_yaml
 
     where = Where(str(path))
-    data = read_yaml(path)
+    data = read_yaml(path, MAX_VOCABULARY_VALUES, "vocabulary")
     if isinstance(data, dict) and "classes" not in data and "names" in data:
         data = _arena(data)
     names, synonyms = _entries(data, where)

@@ -18,6 +18,7 @@ Unknown cells and space outside the grid do not block.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
 from dataclasses import dataclass
 from functools import cached_property
@@ -26,8 +27,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 __all__ = ["FREE", "MAX_IMAGE_CELLS", "OCCUPIED", "OUTSIDE", "UNKNOWN", "OccupancyGrid", "as_points", "box_polygon",
-           "cast_rays", "line_of_sight", "overlap_area", "point_in_polygon", "polygon_area", "segment_cells",
-           "segments_intersect", "self_intersections"]
+           "cast_rays", "coarsened", "fit_cells", "line_of_sight", "overlap_area", "point_in_polygon", "polygon_area",
+           "segment_cells", "segments_intersect", "self_intersections", "shrink_factor"]
 
 FREE, OCCUPIED, UNKNOWN = 0, 100, -1
 OUTSIDE = "_outside"
@@ -99,6 +100,43 @@ def point_in_polygon(points: ArrayLike, vertices: ArrayLike) -> NDArray[np.bool_
     return out
 
 
+def shrink_factor(height: int, width: int, limit: int) -> int:
+    """The smallest whole factor by which a ``height`` × ``width`` grid, coarsened, has at most ``limit`` cells."""
+    factor = max(1, math.ceil(math.sqrt(height * width / limit)))
+    while math.ceil(height / factor) * math.ceil(width / factor) > limit:
+        factor += 1
+    return factor
+
+
+def coarsened(cells: NDArray[np.int8], factor: int) -> NDArray[np.int8]:
+    """Cells merged ``factor`` × ``factor`` into one: OCCUPIED if any was (a wall stays closed), else FREE if
+    any was, else UNKNOWN. Rows and columns past a whole block count as unknown (row 0 stays row 0)."""
+    if factor == 1:
+        return cells
+    h, w = cells.shape
+    rows, cols = -(-h // factor), -(-w // factor)
+    padded = np.full((rows * factor, cols * factor), UNKNOWN, dtype=np.int8)
+    padded[:h, :w] = cells
+    blocks = padded.reshape(rows, factor, cols, factor)
+    out = np.where((blocks == FREE).any(axis=(1, 3)), FREE, UNKNOWN).astype(np.int8)
+    out[(blocks == OCCUPIED).any(axis=(1, 3))] = OCCUPIED
+    return out
+
+
+def fit_cells(cells: NDArray[np.int8], limit: int) -> tuple[NDArray[np.int8], tuple[int, int], int]:
+    """Cells (row 0 at the lowest y) of at most ``limit``: cropped to the rows and columns holding a known cell,
+    then :func:`coarsened` if still too many; with the (column, row) of the kept corner and the factor."""
+    if cells.size <= limit:
+        return cells, (0, 0), 1
+    known = cells != UNKNOWN
+    rows, cols = np.flatnonzero(known.any(axis=1)), np.flatnonzero(known.any(axis=0))
+    if len(rows):
+        cells = cells[rows[0]:rows[-1] + 1, cols[0]:cols[-1] + 1]
+    corner = (int(cols[0]), int(rows[0])) if len(rows) else (0, 0)
+    factor = shrink_factor(cells.shape[0], cells.shape[1], limit)
+    return np.ascontiguousarray(coarsened(cells, factor)), corner, factor
+
+
 def _orientation(a: Points, b: Points, c: Points) -> NDArray[np.float64]:
     """Twice the signed area of triangles (a, b, c), broadcasting over leading axes."""
     return (b[..., 0] - a[..., 0]) * (c[..., 1] - a[..., 1]) - (b[..., 1] - a[..., 1]) * (c[..., 0] - a[..., 0])
@@ -129,19 +167,50 @@ def segments_intersect(p1: ArrayLike, p2: ArrayLike, q1: ArrayLike, q2: ArrayLik
 
 def self_intersections(vertices: ArrayLike) -> list[tuple[int, int]]:
     """The pairs ``(i, j)`` of edges (edge i runs from vertex i to i+1) that meet although they are
-    not neighbours; neighbours that fold back onto each other count too. Empty for a simple polygon."""
+    not neighbours; neighbours that fold back onto each other count too. Empty for a simple polygon.
+
+    Only edges whose x-extents overlap are tested (sorted by their left end, each edge meets the ones
+    starting before its right end), and those a block at a time: a room's outline of thousands of points
+    is checked in time and memory near its size, not its square."""
     v = as_points(vertices)
     n = len(v)
     if n < 3:
         return []
     a, b = v, np.roll(v, -1, axis=0)
-    i, j = np.triu_indices(n, k=1)
-    hits = segments_intersect(a[i], b[i], a[j], b[j])
-    neighbours = (j == i + 1) | ((i == 0) & (j == n - 1))
-    # neighbours always share a vertex; they are a problem only when they overlap along a stretch
-    along = neighbours & _folds_back(a[i], b[i], a[j], b[j])
-    found = (hits & ~neighbours) | along
-    return [(int(x), int(y)) for x, y in zip(i[found], j[found], strict=True)]
+    slack = 1e-9 * (1.0 + np.abs(v).max())
+    left, right = np.minimum(a[:, 0], b[:, 0]) - slack, np.maximum(a[:, 0], b[:, 0]) + slack
+    low, high = np.minimum(a[:, 1], b[:, 1]) - slack, np.maximum(a[:, 1], b[:, 1]) + slack
+    order = np.argsort(left, kind="stable")
+    ends = np.searchsorted(left[order], right[order], side="right")  # sorted edges p+1 .. ends[p]-1 overlap p in x
+    counts = np.maximum(ends - np.arange(n) - 1, 0)
+    out: list[tuple[int, int]] = []
+    first = 0
+    while first < n:
+        last = first + 1  # a block of sorted edges whose candidate pairs number about PAIRS_AT_ONCE
+        total = counts[first]
+        while last < n and total + counts[last] <= PAIRS_AT_ONCE:
+            total += counts[last]
+            last += 1
+        block = np.arange(first, last)
+        p = np.repeat(block, counts[block])
+        q = p + 1 + (np.arange(len(p)) - np.repeat(np.cumsum(counts[block]) - counts[block], counts[block]))
+        x, y = order[p], order[q]
+        i, j = np.minimum(x, y), np.maximum(x, y)
+        near = (low[i] <= high[j]) & (low[j] <= high[i])
+        i, j = i[near], j[near]
+        hits = segments_intersect(a[i], b[i], a[j], b[j])
+        neighbours = (j == i + 1) | ((i == 0) & (j == n - 1))
+        # neighbours always share a vertex; they are a problem only when they overlap along a stretch
+        along = neighbours & _folds_back(a[i], b[i], a[j], b[j])
+        found = (hits & ~neighbours) | along
+        out.extend((int(s), int(t)) for s, t in zip(i[found], j[found], strict=True))
+        first = last
+    return sorted(out)
+
+
+PAIRS_AT_ONCE = 1_000_000
+"""Candidate edge pairs :func:`self_intersections` tests at once (some 200 MB of temporaries)."""
+
 
 
 def _folds_back(a1: Points, b1: Points, a2: Points, b2: Points) -> NDArray[np.bool_]:
@@ -249,6 +318,16 @@ class OccupancyGrid:
             occ_mask[orows[keep], ocols[keep]] = True
         occ_mask &= ~free
         return cls.from_masks(free, resolution, (low[0], low[1], 0.0), occ_mask)
+
+    @classmethod
+    def placed(cls, cells: ArrayLike, resolution: float, origin: tuple[float, float, float],
+               corner: tuple[int, int] = (0, 0), factor: int = 1) -> OccupancyGrid:
+        """Cells kept from a larger grid of ``resolution`` at ``origin``: their lower-left cell was at (column, row)
+        ``corner`` of it (the origin moves there along its yaw), each merges ``factor`` × ``factor`` of its cells."""
+        x, y, yaw = origin
+        dx, dy = corner[0] * resolution, corner[1] * resolution
+        moved = (x + math.cos(yaw) * dx - math.sin(yaw) * dy, y + math.sin(yaw) * dx + math.cos(yaw) * dy, yaw)
+        return cls(np.asarray(cells, dtype=np.int8), resolution * factor, moved)
 
     @classmethod
     def filled(cls, bounds: tuple[float, float, float, float], resolution: float,

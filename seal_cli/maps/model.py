@@ -62,6 +62,9 @@ OVERLAP_TOLERANCE = 0.01
 """Square metres two rooms may share before they count as overlapping (drawing slack)."""
 MAX_IMPLICIT_CELLS = 4_000_000
 """Largest implicit all-free grid built from bounds alone (its resolution grows to fit)."""
+MAX_ROOM_VERTICES = 10_000
+"""The most points a room's polygon may have (real outlines have tens): a map's checks and each cell's room
+grow with them (a room of 62,831 points took 15 GB before the edges' crossing test swept by x)."""
 
 Bounds = tuple[float, float, float, float]
 XY = tuple[float, float]
@@ -113,6 +116,9 @@ class Room:
             vertices = vertices[:-1]  # a closed ring: drop the repeated first point
         if len(vertices) < 3:
             raise SealError(f"room {self.name}: a polygon needs at least 3 points, not {len(vertices)}", self.where)
+        if len(vertices) > MAX_ROOM_VERTICES:
+            raise SealError(f"room {self.name}: its polygon has {len(vertices):,} points; seal reads rooms of at most "
+                            f"{MAX_ROOM_VERTICES:,}: simplify the outline", self.where)
         object.__setattr__(self, "polygon", tuple((float(x), float(y)) for x, y in vertices))
 
     @classmethod

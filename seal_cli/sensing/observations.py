@@ -34,7 +34,7 @@ import yaml
 
 from seal_cli.errors import SealError, Where
 from seal_cli.fileio import LOADER, read_text, yaml_problem
-from seal_cli.yamlnodes import check_size
+from seal_cli.yamlnodes import check_size, clipped
 
 MAX_OBSERVATIONS = 100_000
 """The most poses a trajectory, or observations an observations file, may hold (one update each)."""
@@ -77,7 +77,10 @@ class _Reader:
 
     def number(self, node: yaml.Node, what: str) -> float:
         if isinstance(node, yaml.ScalarNode) and node.tag in ("tag:yaml.org,2002:int", "tag:yaml.org,2002:float"):
-            value = yaml.safe_load(node.value)
+            try:
+                value = yaml.safe_load(node.value)
+            except yaml.YAMLError:  # an integer of more digits than seal reads
+                value = None
             if isinstance(value, int | float) and abs(value) < 1e300 and math.isfinite(value):
                 return float(value)
         raise self.error(f"{what} must be a finite number, not {_shape(node)}", node)
@@ -115,7 +118,7 @@ class _Reader:
 
 def _shape(node: yaml.Node) -> str:
     if isinstance(node, yaml.ScalarNode):
-        return "nothing" if node.tag.endswith(":null") else repr(node.value)
+        return "nothing" if node.tag.endswith(":null") else clipped(repr(node.value))
     if isinstance(node, yaml.SequenceNode):
         return f"a list of {len(node.value)}"
     return "a mapping"

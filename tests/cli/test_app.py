@@ -96,3 +96,17 @@ def test_tables_are_not_cut_when_the_output_is_not_a_terminal() -> None:
                             timeout=120, check=False)
     assert result.returncode == 0, result.stderr
     assert "holding(instrument)" in result.stdout and "…" not in result.stdout
+
+
+def test_an_empty_file_or_folder_name_is_refused_naming_the_option(tmp_path: Path) -> None:
+    """typer reads '' as '.': `plan --pddl ''` wrote domain.pddl and problem.pddl into the current folder."""
+    for argv, says in ((["plan", "--pddl", "", "stir the cup"], "--pddl is empty"),
+                       (["plan", "--pddl=", "stir the cup"], "--pddl is empty"),
+                       (["parse", "--vocabulary", "", "stir the cup"], "--vocabulary is empty"),
+                       (["validate", ""], "an empty PATH")):
+        done = subprocess.run([sys.executable, "-m", "seal_cli", *argv], cwd=tmp_path, capture_output=True, text=True)
+        assert done.returncode == 1 and says in done.stderr and "Traceback" not in done.stderr, (argv, done.stderr)
+        assert list(tmp_path.iterdir()) == []
+    done = subprocess.run([sys.executable, "-m", "seal_cli", "plan", "--done", "", "stir the cup"], cwd=tmp_path,
+                          capture_output=True, text=True)
+    assert "empty command" in done.stderr  # an empty text is the text's problem, not a path's

@@ -5,6 +5,7 @@ from __future__ import annotations
 import errno
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -94,5 +95,39 @@ def test_an_import_failing_under_an_interrupt_is_the_interrupt(monkeypatch: pyte
     monkeypatch.setattr(fileio, "_INTERRUPTED", [False])
     with pytest.raises(ImportError):
         run_command(lambda: _raise(failed))  # a real failure stays one
-    monkeypatch.setattr(fileio, "_INTERRUPTED", [True])
-    assert run_command(lambda: _raise(failed)) == 130
+
+    def interrupted_import() -> None:
+        fileio._INTERRUPTED[0] = True  # SIGINT arrived during the command (a flag left by an earlier one is reset)
+        _raise(failed)
+
+    assert run_command(interrupted_import) == 130
+
+
+def test_an_interrupt_while_the_outputs_move_ends_with_them_in_place_and_success(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """SIGINT between an output's rename and the command's return was exit 130 with the file written
+    ("R SIGINT during import-bag -o", now and then): the signal waits while the outputs move."""
+    import os
+    import signal
+
+    from seal_cli import fileio
+    from seal_cli.cli.output import run_command
+
+    moved = fileio._move
+
+    def move_then_interrupt(output: object) -> None:
+        moved(output)  # type: ignore[arg-type]
+        os.kill(os.getpid(), signal.SIGINT)  # held: it arrives once the commit is recorded
+
+    monkeypatch.setattr(fileio, "_move", move_then_interrupt)
+    monkeypatch.setattr(fileio, "_INTERRUPTED", [False])
+    target = tmp_path / "o.yaml"
+
+    def command() -> int:
+        with fileio.Outputs({"-o": target}) as plan:
+            plan["-o"].write_text("poses: []\n")
+        raise AssertionError("the interrupt arrives before the command goes on")
+
+    assert run_command(command) == 0
+    assert target.read_text() == "poses: []\n" and fileio.committed()
+    assert run_command(lambda: 0) == 0 and not fileio.committed()  # the next command starts afresh

@@ -84,3 +84,14 @@ def test_a_category_member_that_is_a_number_is_refused() -> None:
         with pytest.raises(SealError, match=f"category container: '{odd}' is not a class name"):
             Category("container", ("cup", odd))
     assert Category("container", ("cup", "café", "Sink Basin")).members == ("cup", "café", "sink_basin")
+
+
+def test_a_class_name_longer_than_the_bound_is_refused() -> None:
+    import pytest
+
+    from seal_cli.errors import SealError
+    from seal_cli.frames.taxonomy import MAX_CLASS_NAME, check_class_name
+
+    assert check_class_name("x" * MAX_CLASS_NAME, "holding") == "x" * MAX_CLASS_NAME
+    with pytest.raises(SealError, match=r"holding 'x{40}'… is 3,000 characters long; a class name has at most 100"):
+        check_class_name("x" * 3_000, "holding")

@@ -283,3 +283,16 @@ def test_to_a_region_and_side_of_a_thing_is_beside_it(library: Library, where: s
     assert [f.frame for f in frames] == ["Place"]
     goal = frames[0].elements["goal"]
     assert (goal.head, goal.text) == ("cabinet", f"the cabinet {where}")   # said where it is
+
+
+def test_a_vocabulary_past_its_bound_is_refused_while_it_is_read(tmp_path: Path) -> None:
+    import time
+
+    from seal_cli.language.grounding import MAX_VOCABULARY_VALUES
+
+    path = tmp_path / "v.yaml"
+    path.write_text("".join(f"- w{k}\n" for k in range(300_000)))
+    start = time.perf_counter()
+    with pytest.raises(SealError, match=rf"v\.yaml:{MAX_VOCABULARY_VALUES}:3: this vocabulary holds more than "):
+        load_vocabulary(path)
+    assert time.perf_counter() - start < 10  # it was read, used and accepted in 25 s

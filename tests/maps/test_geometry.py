@@ -285,3 +285,65 @@ def test_rays_reach_exactly_as_far_as_line_of_sight(grid_seed: int, seed: int) -
     stopped = reach < 2.0
     after = origin + (reach + 1e-6)[:, None] * direction
     assert not line_of_sight(grid, origin, after[stopped]).any()
+
+
+def _crossings_by_every_pair(v: np.ndarray) -> list[tuple[int, int]]:
+    from seal_cli.maps.geometry import _folds_back
+
+    n, a, b = len(v), v, np.roll(v, -1, axis=0)
+    out = []
+    for i in range(n):
+        for j in range(i + 1, n):
+            neighbours = j == i + 1 or (i == 0 and j == n - 1)
+            hit = bool(segments_intersect(a[i], b[i], a[j], b[j]))
+            if (hit and not neighbours) or (neighbours and _folds_back(a[i:i + 1], b[i:i + 1], a[j:j + 1],
+                                                                       b[j:j + 1])[0]):
+                out.append((i, j))
+    return out
+
+
+def test_the_swept_crossing_test_finds_what_testing_every_pair_finds() -> None:
+    rng = np.random.default_rng(7)
+    for _ in range(200):  # small integer lattices: many touches, shared vertices and collinear overlaps
+        v = rng.integers(0, 5, size=(int(rng.integers(3, 12)), 2)).astype(float)
+        assert self_intersections(v) == _crossings_by_every_pair(v)
+
+
+def test_a_fine_outline_is_checked_in_time_and_memory_near_its_size() -> None:
+    import time
+
+    t = np.linspace(0, 2 * np.pi, 62_831, endpoint=False)
+    ring = np.c_[5 + 2 * np.cos(t), 5 + 2 * np.sin(t)]
+    start = time.perf_counter()
+    assert self_intersections(ring) == []  # every pair: 2 billion, 15 GB
+    assert time.perf_counter() - start < 5
+    ring[[10, 20_000]] = ring[[20_000, 10]]  # two far points swapped: their edges cut across the ring
+    assert self_intersections(ring) == [(9, 20_000), (10, 19_999)]
+
+
+def test_cells_are_coarsened_walls_first_then_free_space() -> None:
+    from seal_cli.maps.geometry import FREE, OCCUPIED, UNKNOWN, coarsened, shrink_factor
+
+    cells = np.full((5, 5), UNKNOWN, dtype=np.int8)
+    cells[0, 0], cells[0, 1], cells[1, 1] = FREE, OCCUPIED, FREE
+    cells[2, 3] = FREE
+    out = coarsened(cells, 2)
+    assert out.shape == (3, 3) and out[0, 0] == OCCUPIED and out[1, 1] == FREE and out[2, 2] == UNKNOWN
+    assert coarsened(cells, 1) is cells
+    assert shrink_factor(8_200, 8_200, 4096 * 4096) == 3 and shrink_factor(10, 10, 100) == 1
+    assert shrink_factor(4_097, 4_097, 4096 * 4096) == 2
+
+
+def test_a_grid_too_large_is_cropped_to_what_it_knows_then_coarsened() -> None:
+    from seal_cli.maps.geometry import FREE, OCCUPIED, UNKNOWN, OccupancyGrid, fit_cells
+
+    cells = np.full((100, 100), UNKNOWN, dtype=np.int8)
+    cells[10:20, 30:45] = FREE
+    cells[15, 40] = OCCUPIED
+    kept, corner, factor = fit_cells(cells, 1_000)
+    assert corner == (30, 10) and factor == 1 and np.array_equal(kept, cells[10:20, 30:45])
+    assert fit_cells(cells, 100_000)[0] is cells  # within the bound: untouched
+    small, corner, factor = fit_cells(cells, 50)
+    assert factor == 2 and small.shape == (5, 8) and small[2, 5] == OCCUPIED
+    grid = OccupancyGrid.placed(kept, 0.5, (1.0, 2.0, math.pi / 2), corner)
+    assert np.allclose(grid.origin, (1.0 - 10 * 0.5, 2.0 + 30 * 0.5, math.pi / 2))  # the corner, turned with the yaw

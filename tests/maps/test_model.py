@@ -724,3 +724,12 @@ def test_people_have_roles_and_the_speaker_too(tmp_path: Path) -> None:
     assert data["speaker"]["roles"] == ["doctor"]
     with pytest.raises(SealError, match="person Eve: role must be a noun or a list of nouns"):
         Map("m", bounds=(0, 0, 5, 5), people=(Person("Eve", (1.0, 1.0), roles=(3,)),))  # type: ignore[arg-type]
+
+
+def test_a_room_of_more_points_than_seal_reads_is_refused_by_name() -> None:
+    from seal_cli.maps.model import MAX_ROOM_VERTICES, Room
+
+    t = np.linspace(0, 2 * np.pi, MAX_ROOM_VERTICES + 1, endpoint=False)
+    with pytest.raises(SealError, match=r"room den: its polygon has 10,001 points; .* simplify the outline"):
+        Room("den", tuple(zip(np.cos(t), np.sin(t), strict=True)))
+    assert len(Room("den", tuple(zip(np.cos(t[1:]), np.sin(t[1:]), strict=True))).polygon) == MAX_ROOM_VERTICES

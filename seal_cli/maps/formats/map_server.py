@@ -38,6 +38,7 @@ import functools
 import math
 import re
 from collections.abc import Callable, Iterator
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, TypeVar
 
@@ -48,14 +49,15 @@ from numpy.typing import NDArray
 from seal_cli.errors import SealError, SealErrors, Where
 from seal_cli.fileio import LOADER, MAX_IMAGE_BYTES, read_bytes, read_text, yaml_problem
 from seal_cli.frames.taxonomy import class_key
-from seal_cli.maps.geometry import FREE, MAX_IMAGE_CELLS, OCCUPIED, UNKNOWN, OccupancyGrid
+from seal_cli.maps.geometry import FREE, MAX_IMAGE_CELLS, OCCUPIED, UNKNOWN, OccupancyGrid, coarsened, shrink_factor
 from seal_cli.maps.model import Map, MapWarning, ObjectTruth, Person, Place, Robot, Room, Sensor
 from seal_cli.resources import map_path
 from seal_cli.yamlnodes import NodeReader
 from seal_cli.yamlnodes import is_null as _is_null
 from seal_cli.yamlnodes import shape as _shape
 
-__all__ = ["KEYS", "check_map_file", "load_map", "read_image", "read_map", "read_pgm"]
+__all__ = ["KEYS", "MAX_IMAGE_PIXELS", "ImageCells", "check_map_file", "load_map", "read_image", "read_image_cells",
+           "read_map", "read_pgm"]
 
 MAP_SERVER_KEYS = ("image", "resolution", "origin", "negate", "occupied_thresh", "free_thresh", "mode")
 SEMANTIC_KEYS = ("name", "bounds", "rooms", "places", "priors", "objects", "robot", "sensor", "people", "speaker")
@@ -80,10 +82,19 @@ Path_ = tuple[str | int, ...]
 
 
 # -- images ---------------------------------------------------------------------------------------
-def read_pgm(data: bytes) -> NDArray[np.float64]:
-    """A PGM image (P5 or P2) as grey values scaled to 0..255, row 0 the top row of the picture."""
-    magic = data[:2]
-    if magic not in (b"P5", b"P2"):
+MAX_IMAGE_PIXELS = 16_384 * 16_384
+"""The most pixels a binary PGM (P5) map image may have, checked from its header: 256 MiB at 8 bits, the file
+bound. Such an image is read a band of rows at a time, cropped to what it knows and, if still larger than
+:data:`~seal_cli.maps.geometry.MAX_IMAGE_CELLS`, coarsened to fit: a real ROS map (8,000 × 8,000 at 5 cm, most
+of it unknown) is read in a few hundred megabytes, never as floats."""
+
+BAND = 4 * 2**20
+"""Pixels classified at a time when a large image is read (bounded temporaries)."""
+
+
+def _pgm_header(data: bytes) -> tuple[int, int, int, int]:
+    """Width, height, maximum value and where the pixels start, of a PGM (P5 or P2)."""
+    if data[:2] not in (b"P5", b"P2"):
         raise SealError(f"not a PGM image (it starts with {data[:2]!r}, not P5 or P2)")
     fields: list[int] = []
     pos = 2
@@ -103,16 +114,32 @@ def read_pgm(data: bytes) -> NDArray[np.float64]:
     width, height, maxval = fields
     if width <= 0 or height <= 0 or not 0 < maxval < 65536:
         raise SealError(f"PGM header has impossible values: width {width}, height {height}, maximum {maxval}")
+    return width, height, maxval, pos
+
+
+def _p5_levels(data: bytes, width: int, height: int, maxval: int, pos: int) -> NDArray[Any]:
+    """The raw levels of a binary PGM, ``height`` × ``width`` (row 0 the top row), a view of ``data``."""
+    pos += 1  # exactly one whitespace byte separates the header from the pixels
+    dtype = np.dtype(">u2") if maxval > 255 else np.dtype(np.uint8)
+    need = width * height * dtype.itemsize
+    if len(data) - pos < need:
+        raise SealError(f"PGM image is truncated: {width}×{height} pixels need {need} bytes, "
+                        f"the file has {max(len(data) - pos, 0)}")
+    levels = np.frombuffer(data, dtype=dtype, count=width * height, offset=pos).reshape(height, width)
+    top = max((int(levels[r:r + max(1, BAND // width)].max()) for r in range(0, height, max(1, BAND // width))),
+              default=0)
+    if top > maxval:
+        raise SealError(f"PGM pixel value {top} exceeds the maximum {maxval} in its header")
+    return levels
+
+
+def read_pgm(data: bytes) -> NDArray[np.float64]:
+    """A PGM image (P5 or P2) as grey values scaled to 0..255, row 0 the top row of the picture."""
+    width, height, maxval, pos = _pgm_header(data)
     _check_cells(width, height)
     count = width * height
-    if magic == b"P5":
-        pos += 1  # exactly one whitespace byte separates the header from the pixels
-        dtype = np.dtype(">u2") if maxval > 255 else np.dtype(np.uint8)
-        need = count * dtype.itemsize
-        if len(data) - pos < need:
-            raise SealError(f"PGM image is truncated: {width}×{height} pixels need {need} bytes, "
-                            f"the file has {max(len(data) - pos, 0)}")
-        pixels = np.frombuffer(data, dtype=dtype, count=count, offset=pos).astype(float)
+    if data[:2] == b"P5":
+        pixels = _p5_levels(data, width, height, maxval, pos).astype(float).ravel()
     else:
         try:
             values = np.array(data[pos:].split(), dtype=float)
@@ -121,17 +148,17 @@ def read_pgm(data: bytes) -> NDArray[np.float64]:
         if len(values) < count:
             raise SealError(f"PGM image is truncated: {width}×{height} pixels, only {len(values)} values")
         pixels = values[:count]
-    if pixels.max(initial=0) > maxval:
-        raise SealError(f"PGM pixel value {int(pixels.max())} exceeds the maximum {maxval} in its header")
+        if pixels.max(initial=0) > maxval:
+            raise SealError(f"PGM pixel value {int(pixels.max())} exceeds the maximum {maxval} in its header")
     return (pixels * (255.0 / maxval)).reshape(height, width)
 
 
-def _check_cells(width: int, height: int) -> None:
+def _check_cells(width: int, height: int, advice: str = "save it as a binary PGM (P5), which seal reads up to "
+                 f"{MAX_IMAGE_PIXELS:,} pixels, cropping and coarsening it to fit") -> None:
     """Refuse an image of more than :data:`MAX_IMAGE_CELLS` pixels before its pixels are read."""
     if width * height > MAX_IMAGE_CELLS:
-        raise SealError(f"the image is {width:,}×{height:,} pixels ({width * height:,} cells); seal reads map images "
-                        f"of at most {MAX_IMAGE_CELLS:,} cells (4096×4096): crop it to the building, or scale it "
-                        "down and raise resolution: to match")
+        raise SealError(f"the image is {width:,}×{height:,} pixels ({width * height:,} cells); seal reads such "
+                        f"images (PNG, text PGM) of at most {MAX_IMAGE_CELLS:,} cells (4096×4096): {advice}")
 
 
 def _read_png(path: Path) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
@@ -152,20 +179,9 @@ def _read_png(path: Path) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     return image[..., :channels - 1 if has_alpha else channels].mean(axis=2), alpha
 
 
-def read_image(path: Path, negate: bool = False, occupied_thresh: float = 0.65, free_thresh: float = 0.196,
-               mode: str = "trinary") -> NDArray[np.int8]:
-    """Cells (FREE / OCCUPIED / UNKNOWN) of a map_server image, row 0 at the lowest y (flipped)."""
-    if not path.exists():
-        raise SealError(f"image {path.name} does not exist (looked for {path})")
-    data = read_bytes(path, MAX_IMAGE_BYTES, "map image")
-    if data[:2] in (b"P5", b"P2"):
-        grey, alpha = read_pgm(data), None
-    elif data[:8] == b"\x89PNG\r\n\x1a\n":
-        if data[12:16] == b"IHDR":  # the size, before a decoder unpacks a small file into gigabytes
-            _check_cells(int.from_bytes(data[16:20], "big"), int.from_bytes(data[20:24], "big"))
-        grey, alpha = _read_png(path)
-    else:
-        raise SealError(f"image {path.name} is neither PGM (P5/P2) nor PNG")
+def _classify(grey: NDArray[np.float64], negate: bool, occupied_thresh: float, free_thresh: float,
+              mode: str) -> NDArray[np.int8]:
+    """Cells (FREE / OCCUPIED / UNKNOWN) of grey values 0..255, as ROS map_server reads them."""
     if negate:
         grey = 255.0 - grey
     cells = np.full(grey.shape, UNKNOWN, dtype=np.int8)
@@ -178,9 +194,87 @@ def read_image(path: Path, negate: bool = False, occupied_thresh: float = 0.65, 
         occ = (255.0 - grey) / 255.0
         cells[occ > occupied_thresh] = OCCUPIED
         cells[occ < free_thresh] = FREE
+    return cells
+
+
+@dataclass(frozen=True)
+class ImageCells:
+    """A map image's cells (row 0 at the lowest y), and how they sit in the image: ``offset`` (column, row from
+    the bottom, in pixels) of their lower-left corner and the ``factor`` of pixels per cell along a side."""
+
+    cells: NDArray[np.int8]
+    offset: tuple[int, int] = (0, 0)
+    factor: int = 1
+    size: tuple[int, int] = (0, 0)
+    """The whole image's width and height, in pixels."""
+
+    def grid(self, resolution: float, origin: tuple[float, float, float]) -> OccupancyGrid:
+        """The occupancy grid: the origin moved to the cells' corner, the resolution times the factor."""
+        return OccupancyGrid.placed(self.cells, resolution, origin, self.offset, self.factor)
+
+
+def _large_p5(levels: NDArray[Any], table: NDArray[np.int8]) -> ImageCells:
+    """The cells of a P5 image larger than :data:`MAX_IMAGE_CELLS`, a band of rows at a time: cropped to the
+    rows and columns holding a known cell, then coarsened if still too large."""
+    height, width = levels.shape
+    rows = max(1, BAND // width)
+    known_rows = np.zeros(height, dtype=bool)
+    known_cols = np.zeros(width, dtype=bool)
+    for r in range(0, height, rows):
+        known = table[levels[r:r + rows]] != UNKNOWN
+        known_rows[r:r + rows] = known.any(axis=1)
+        known_cols |= known.any(axis=0)
+    if known_rows.any():
+        top, bottom = int(np.argmax(known_rows)), height - int(np.argmax(known_rows[::-1]))
+        left, right = int(np.argmax(known_cols)), width - int(np.argmax(known_cols[::-1]))
+    else:
+        top, bottom, left, right = 0, height, 0, width
+    window = levels[top:bottom, left:right][::-1]  # row 0 at the lowest y
+    factor = shrink_factor(window.shape[0], window.shape[1], MAX_IMAGE_CELLS)
+    step = rows - rows % factor or factor
+    parts = [coarsened(table[window[r:r + step]], factor) for r in range(0, window.shape[0], step)]
+    return ImageCells(np.ascontiguousarray(np.concatenate(parts)), (left, height - bottom), factor, (width, height))
+
+
+def read_image_cells(path: Path, negate: bool = False, occupied_thresh: float = 0.65, free_thresh: float = 0.196,
+                     mode: str = "trinary") -> ImageCells:
+    """The cells of a map_server image (:class:`ImageCells`); a binary PGM of more than
+    :data:`MAX_IMAGE_CELLS` pixels comes cropped to what it knows and coarsened to fit."""
+    if not path.exists():
+        raise SealError(f"image {path.name} does not exist (looked for {path})")
+    data = read_bytes(path, MAX_IMAGE_BYTES, "map image")
+    alpha = None
+    if data[:2] == b"P5":
+        width, height, maxval, pos = _pgm_header(data)
+        if width * height > MAX_IMAGE_PIXELS:
+            raise SealError(f"the image is {width:,}×{height:,} pixels ({width * height:,}); seal reads binary PGM "
+                            f"images of at most {MAX_IMAGE_PIXELS:,} pixels (16384×16384): crop it to the building")
+        levels = _p5_levels(data, width, height, maxval, pos)
+        span = 65536 if maxval > 255 else 256
+        table = _classify(np.arange(span, dtype=np.float64) * (255.0 / maxval), negate, occupied_thresh, free_thresh,
+                          mode)
+        if width * height > MAX_IMAGE_CELLS:
+            return _large_p5(levels, table)
+        return ImageCells(np.ascontiguousarray(table[levels][::-1]), size=(width, height))
+    if data[:2] == b"P2":
+        grey = read_pgm(data)
+    elif data[:8] == b"\x89PNG\r\n\x1a\n":
+        if data[12:16] == b"IHDR":  # the size, before a decoder unpacks a small file into gigabytes
+            _check_cells(int.from_bytes(data[16:20], "big"), int.from_bytes(data[20:24], "big"))
+        grey, alpha = _read_png(path)
+    else:
+        raise SealError(f"image {path.name} is neither PGM (P5/P2) nor PNG")
+    cells = _classify(grey, negate, occupied_thresh, free_thresh, mode)
     if alpha is not None:
         cells[alpha < 1.0] = UNKNOWN  # a transparent pixel says nothing
-    return cells[::-1].copy()
+    return ImageCells(cells[::-1].copy(), size=(grey.shape[1], grey.shape[0]))
+
+
+def read_image(path: Path, negate: bool = False, occupied_thresh: float = 0.65, free_thresh: float = 0.196,
+               mode: str = "trinary") -> NDArray[np.int8]:
+    """Cells (FREE / OCCUPIED / UNKNOWN) of a map_server image, row 0 at the lowest y (flipped); a large binary
+    PGM's cropped and coarsened (see :func:`read_image_cells`)."""
+    return read_image_cells(path, negate, occupied_thresh, free_thresh, mode).cells
 
 
 # -- the YAML reader --------------------------------------------------------------------------------
@@ -204,7 +298,10 @@ class _Reader(NodeReader):
 
     def number(self, node: yaml.Node, what: str, ok: Callable[[float], bool] = math.isfinite,
                need: str = "a number") -> float | None:
+        known = len(self.problems)
         value = self.value(node) if isinstance(node, yaml.ScalarNode) else None
+        if len(self.problems) > known:  # it could not be read at all: said once
+            return None
         if isinstance(value, str) and not getattr(node, "style", "x"):  # YAML 1.1: plain 1e-9 is a string
             with contextlib.suppress(ValueError):
                 value = float(value)
@@ -212,9 +309,7 @@ class _Reader(NodeReader):
             value = math.inf  # too large for a float: math.isfinite would raise OverflowError
         if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value) \
                 or not ok(float(value)):
-            shown = node.value if isinstance(node, yaml.ScalarNode) else _shape(node)
-            self.problem(f"{what} must be {need}, not {shown!r}" if isinstance(node, yaml.ScalarNode)
-                         else f"{what} must be {need}, not {shown}", node)
+            self.problem(f"{what} must be {need}, not {_shape(node)}", node)
             return None
         return float(value)
 
@@ -309,7 +404,7 @@ class _Reader(NodeReader):
             return None
         found = built.problems(self.broken)
         self.problems.extend(found)
-        return built.noting(p for p in found if isinstance(p, MapWarning))
+        return built.noting(p for p in self.problems if isinstance(p, MapWarning))  # the reader's own too
 
     def map_server(self, nodes: dict[str, yaml.Node], root: yaml.Node) -> OccupancyGrid | None:
         if "occupancy" in nodes:
@@ -344,11 +439,19 @@ class _Reader(NodeReader):
             return None
         assert image is not None and resolution is not None and origin is not None and mode is not None
         try:
-            cells = read_image(self.path.parent / image, bool(negate), float(occ or 0), float(free or 0), mode)
+            read = read_image_cells(self.path.parent / image, bool(negate), float(occ or 0), float(free or 0), mode)
         except SealError as exc:
             self.problem(exc.message, nodes["image"])
             return None
-        return OccupancyGrid(cells, resolution, tuple(origin + [0.0] * (3 - len(origin))))  # type: ignore[arg-type]
+        width, height = read.size
+        if read.factor > 1:
+            rows, cols = read.cells.shape
+            self.problems.append(MapWarning(
+                f"the image is {width:,}×{height:,} pixels; its known part is more than {MAX_IMAGE_CELLS:,} cells "
+                f"(4096×4096), so seal merges {read.factor}×{read.factor} pixels into one cell: {cols:,}×{rows:,} "
+                f"cells of {resolution * read.factor:g} m (a wall anywhere in a cell keeps it occupied); crop the "
+                "image to the building to keep every pixel", self.where(nodes["image"])))
+        return read.grid(resolution, tuple(origin + [0.0] * (3 - len(origin))))  # type: ignore[arg-type]
 
     def bounds(self, node: yaml.Node) -> tuple[float, ...] | None:
         values = self.numbers(node, "bounds", (4,))

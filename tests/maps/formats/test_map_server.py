@@ -120,3 +120,57 @@ def test_a_room_called_outside_or_wholly_off_the_map_and_absurd_coordinates_are_
     assert said == [(3, "each number of robot pose must be a number of metres from -10,000,000 to 10,000,000, "
                         "not '1e300'")]
     assert _problems(tmp_path, "robot: {pose: [1, 1, 0]}\nspeaker: {at: [9.9, 1e1]}\n") == []
+
+
+def _apartment_in(tmp_path: Path, image: bytes) -> Path:
+    text = (maps_dir() / "apartment.yaml").read_text().replace("image: apartment.pgm", "image: big.pgm")
+    (tmp_path / "big.pgm").write_bytes(image)
+    (tmp_path / "m.yaml").write_text(text)
+    return tmp_path / "m.yaml"
+
+
+def test_a_large_mostly_unknown_image_is_cropped_to_what_it_knows(tmp_path: Path,
+                                                                   monkeypatch: pytest.MonkeyPatch) -> None:
+    """A real ROS map: the building in a large unknown sheet. Read by rows, cropped: the same cells, at the
+    same places of the world, as the building's own image."""
+    from seal_cli.bench.reliability_attacker import _pgm_pixels, sparse_pgm
+    from seal_cli.maps.formats import map_server
+
+    monkeypatch.setattr(map_server, "MAX_IMAGE_CELLS", 200_000)  # the apartment's 112,000 pixels fit; 1,000² not
+    monkeypatch.setattr(map_server, "BAND", 10_000)  # many bands
+    pixels, width, height = _pgm_pixels((maps_dir() / "apartment.pgm").read_bytes())
+    small, large = load_map("apartment"), load_map(_apartment_in(tmp_path, sparse_pgm(1_000, 1_000, pixels, width,
+                                                                                      height)))
+    assert large.warnings == small.warnings == ()
+    known = small.grid.cells != UNKNOWN
+    rows, cols = np.flatnonzero(known.any(axis=1)), np.flatnonzero(known.any(axis=0))
+    assert np.array_equal(large.grid.cells, small.grid.cells[rows[0]:rows[-1] + 1, cols[0]:cols[-1] + 1])
+    corner = small.grid.grid_to_world(np.array([[cols[0], rows[0]]]) * small.grid.resolution)[0]
+    assert np.allclose(large.grid.origin[:2], corner) and large.grid.resolution == small.grid.resolution
+
+
+def test_a_large_known_image_is_coarsened_with_a_warning_and_its_walls_kept(tmp_path: Path,
+                                                                           monkeypatch: pytest.MonkeyPatch) -> None:
+    from seal_cli.maps.formats import map_server
+
+    monkeypatch.setattr(map_server, "MAX_IMAGE_CELLS", 250_000)
+    picture = np.full((1_000, 1_000), 254, dtype=np.uint8)  # free everywhere ...
+    picture[:, 501] = 0  # ... but one wall a pixel thin, at an odd column
+    image = b"P5\n1000 1000\n255\n" + picture.tobytes()
+    (tmp_path / "x.pgm").write_bytes(image)
+    found = map_server.read_image_cells(tmp_path / "x.pgm")
+    assert found.factor == 2 and found.cells.shape == (500, 500)
+    assert (found.cells[:, 250] == OCCUPIED).all() and (found.cells[:, 249] == FREE).all()  # the wall stays closed
+    text = "image: x.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nname: a\n"
+    (tmp_path / "x.yaml").write_text(text)
+    warnings = load_map(tmp_path / "x.yaml").warnings
+    assert [w.message for w in warnings if "merges 2×2 pixels" in w.message and "0.1 m" in w.message]
+    assert warnings[0].line == 1
+
+
+def test_a_large_text_pgm_or_png_says_what_to_do(tmp_path: Path) -> None:
+    with pytest.raises(SealError, match=r"6,000×6,000 pixels .* save it as a binary PGM \(P5\)"):
+        read_pgm(b"P2\n6000 6000\n255\n205 205\n")
+    with pytest.raises(SealError, match=r"binary PGM images of at most 268,435,456 pixels"):
+        (tmp_path / "x.pgm").write_bytes(b"P5\n20000 20000\n255\n")
+        read_image(tmp_path / "x.pgm")

@@ -1,0 +1,261 @@
+"""An attacker's hostile inputs of ``seal bench reliability`` (round hostile13): kinds none of the issue's, the
+hand-written, the reviewer's, the new user's, the outsider's or the generated cases held.
+
+- integers of 5,000 digits wherever a number goes (Python refuses to convert more than 4,300 digits: a
+  ``ValueError`` traceback from PyYAML's constructor in maps, priors, observations, trajectories, frame files);
+- YAML tags for other types (``!!binary``, ``!!set``, ``!!timestamp``), keys that are lists or mappings, flow
+  nesting 100,000 deep on one line;
+- sensor and prior numbers outside their sense (a detection probability of 1.5, a negative prior mass, a prior
+  whose masses sum to zero), degenerate rooms (collinear, one point, zero width, inverted boxes);
+- occupancy images: missing, a JPEG, an empty or numeric ``image:``, a header comment of a megabyte, a real
+  map's size (6,000 × 6,000 cells, mostly unknown: read by rows, cropped to what is known), a P2 text image of
+  that size;
+- the frame DSL: a fact nested 10,000 deep, a category of 100,000 members on one line, 20,000 broken frames,
+  category cycles, NUL and bidi characters in names, CRLF with an error on a known line;
+- command texts of punctuation, emoji, right-to-left scripts, zero-width and homoglyph letters only;
+- outputs onto an input reached through a folder link or ``/proc/self/cwd``, onto ``--vocabulary``, onto
+  ``/dev/full``; folders and empty files where a vocabulary, observations or a trajectory go;
+- sizes: a vocabulary of 300,000 words, a map of 2,000 km at 1 cm, a resolution of a micrometre.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+
+from seal_cli.bench.reliability import Case, hostile_setting
+
+__all__ = ["attacker_cases", "sparse_pgm"]
+
+DIGITS = "1" * 5_000
+"""An integer longer than Python converts from text (4,300 digits)."""
+
+
+def sparse_pgm(width: int, height: int, patch: bytes, patch_width: int, patch_height: int) -> bytes:
+    """A binary PGM of ``width`` × ``height`` unknown (205) pixels with the P5 ``patch`` in its lower-left
+    corner: a real ROS map's shape (a building in a large unknown sheet)."""
+    rows = bytearray(b"\xcd" * (width * height))
+    for r in range(patch_height):
+        start = (height - patch_height + r) * width
+        rows[start:start + patch_width] = patch[r * patch_width:(r + 1) * patch_width]
+    return f"P5\n{width} {height}\n255\n".encode() + bytes(rows)
+
+
+def _pgm_pixels(data: bytes) -> tuple[bytes, int, int]:
+    """The pixels, width and height of an 8-bit P5 whose header has at most one comment line."""
+    lines = data.split(b"\n", 4)
+    if lines[1].startswith(b"#"):
+        lines = [lines[0], *data.split(b"\n", 4)[2:]]
+        lines = [*lines[:3], b"\n".join(lines[3:])]
+    width, height = lines[1].split()
+    assert lines[0] == b"P5" and lines[2] == b"255", "the apartment's image changed: update the attacker's cases"
+    return lines[3], int(width), int(height)
+
+
+def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read top to bottom
+    """The cases, each with the shape of its message (``says``)."""
+    m, image, text, both, inputs, loc, frame = hostile_setting()
+    located = r"{}:\d+:\d+:"
+
+    def replaced(old: str, new: str) -> bytes:
+        assert old in text, f"the apartment changed: update the attacker's case for {old!r}"
+        return text.replace(old, new).encode()
+
+    # -- integers of 5,000 digits ------------------------------------------------------------------------
+    spots = {"resolution": ("resolution: 0.05", f"resolution: {DIGITS}", ("validate", "h.yaml")),
+             "a prior's mass": ("cup: {family_room: 0.5", f"cup: {{family_room: {DIGITS}", ("validate", "h.yaml")),
+             "the origin": ("origin: [-10.0, -7.0, 0.0]", f"origin: [-{DIGITS}, -7.0, 0.0]",
+                            ("run", "go to the kitchen", "--map", "h.yaml")),
+             "the robot's pose": ("pose: [-6.0, -3.0, 0.0]", f"pose: [-6.0, {DIGITS}, 0.0]",
+                                  ("localize", "--map", "h.yaml", "--steps", "1", "--particles", "20")),
+             "the sensor's range": ("range: 5.0", f"range: {DIGITS}", ("map", "h.yaml")),
+             "the bounds": ("bounds: [-9.0, -6.0, 9.0, 6.0]", f"bounds: [-9.0, -6.0, {DIGITS}, 6.0]",
+                            ("validate", "h.yaml"))}
+    for label, (old, new, argv) in spots.items():
+        yield Case(f"A 5,000 digits in {label}: {argv[0]}", argv, (("h.yaml", replaced(old, new)), image),
+                   codes=(1,), keep=("h.yaml", "apartment.pgm"), says=located.format(r"h\.yaml"))
+    yield Case("A 5,000 digits in an observation's pose", (*loc, "--observations", "o.yaml"),
+               (*both, ("o.yaml", f"- pose: [{DIGITS}, -3.0]\n  detections: []\n".encode())), codes=(1,),
+               keep=("o.yaml", *inputs), says=r"o\.yaml:1:\d+:")
+    yield Case("A 5,000 digits in a detection", (*loc, "--observations", "o.yaml"),
+               (*both, ("o.yaml", f"- pose: [-6, -3]\n  detections: [{{class: cup, at: [1, {DIGITS}]}}]\n"
+                        .encode())), codes=(1,), keep=("o.yaml", *inputs), says=r"o\.yaml:2:\d+:")
+    yield Case("A 5,000 digits in a trajectory", (*loc, "--trajectory", "t.yaml"),
+               (*both, ("t.yaml", f"poses:\n  - [-6.0, {DIGITS}]\n".encode())), codes=(1,),
+               keep=("t.yaml", *inputs), says=r"t\.yaml:2:\d+:")
+    yield Case("A 5,000 digits as a frame YAML lexical unit", ("validate", "f.yaml"),
+               (("f.yaml", f"frames:\n  - frame: Whisk\n    lexical_units: [{DIGITS}]\n".encode()),), codes=(1,),
+               keep=("f.yaml",), says=r"f\.yaml:3:\d+:")
+    yield Case("A 5,000 digits in a vocabulary", ("parse", "--vocabulary", "v.yaml", "stir the cup"),
+               (("v.yaml", f"- cup\n- {DIGITS}\n".encode()),), codes=(1,), keep=("v.yaml",), says=r"v\.yaml:2:\d+:")
+    yield Case("A 5,000 digits in the sensor's field of view", ("validate", "h.yaml"),
+               (("h.yaml", replaced("fov: 360", f"fov: {DIGITS}")), image), codes=(1,), keep=("h.yaml",),
+               says=located.format(r"h\.yaml"))
+    # -- YAML tags and keys of other types ---------------------------------------------------------------
+    tagged = {"!!binary resolution": ("resolution: 0.05", "resolution: !!binary aGVsbG8="),
+              "!!set prior": ("cup: {family_room: 0.5, bedroom: 0.5}", "cup: !!set {family_room, bedroom}"),
+              "!!timestamp origin": ("origin: [-10.0, -7.0, 0.0]", "origin: [2001-12-14, -7.0, 0.0]"),
+              "a list as a room's key": ("- {name: bedroom, box:", "- {[name]: bedroom, box:"),
+              "a mapping as a prior's key": ("cup: {family_room: 0.5", "{a: 1}: {family_room: 0.5")}
+    for label, (old, new) in tagged.items():
+        yield Case(f"A map with {label}", ("validate", "h.yaml"), (("h.yaml", replaced(old, new)), image),
+                   codes=(1,), keep=("h.yaml",), says=located.format(r"h\.yaml"))
+    yield Case("A a vocabulary keyed by a list", ("parse", "--vocabulary", "v.yaml", "stir the cup"),
+               (("v.yaml", b"? [cup, mug]\n: x\n"),), codes=(1,), keep=("v.yaml",), says=r"v\.yaml")
+    yield Case("A an observation keyed by a mapping", (*loc, "--observations", "o.yaml"),
+               (*both, ("o.yaml", b"- {pose: [-6, -3], {a: 1}: 2}\n")), codes=(1,), keep=("o.yaml", *inputs),
+               says=r"o\.yaml:1:\d+:")
+    flow = ("[" * 100_000 + "]" * 100_000 + "\n").encode()
+    for kind, argv in (("map", ("validate", "x.yaml")), ("observations", (*loc, "--observations", "x.yaml")),
+                       ("frame YAML", ("plan", "--framelib", "x.yaml", "stir the cup"))):
+        yield Case(f"A {kind} nested 100,000 deep on one line", argv, (*both, ("x.yaml", flow)), codes=(1,),
+                   keep=("x.yaml", *inputs), says=r"x\.yaml(:\d+:\d+)?:")
+    # -- numbers outside their sense ----------------------------------------------------------------------
+    senseless = {"a detection probability of 1.5": ("fov: 360", "fov: 360, p_detect: 1.5"),
+                 "a detection probability below 0": ("fov: 360", "fov: 360, p_detect: -0.1"),
+                 "a negative noise": ("fov: 360", "fov: 360, noise: -1"),
+                 "a sensor sigma of 0": ("fov: 360", "fov: 360, sigma: 0"),
+                 "a sensor range of 0": ("range: 5.0", "range: 0"),
+                 "a negative prior mass": ("cup: {family_room: 0.5, bedroom: 0.5}",
+                                           "cup: {family_room: -0.5, bedroom: 0.5}"),
+                 "a prior whose masses sum to 0": ("cup: {family_room: 0.5, bedroom: 0.5}",
+                                                   "cup: {family_room: 0.5, bedroom: -0.5}")}
+    for label, (old, new) in senseless.items():
+        yield Case(f"A map with {label}: run", ("run", "bring me a cup", "--map", "h.yaml", "--particles", "20"),
+                   (("h.yaml", replaced(old, new)), image), codes=(1,), keep=("h.yaml",),
+                   says=located.format(r"h\.yaml"))
+    # -- degenerate rooms --------------------------------------------------------------------------------
+    head = "name: a\nbounds: [0, 0, 10, 10]\nrooms:\n  - {name: kitchen, box: [5, 0, 10, 10]}\n"
+    rooms = {"collinear": "  - {name: den, polygon: [[0, 0], [1, 1], [2, 2]]}\n",
+             "one point thrice": "  - {name: den, polygon: [[1, 1], [1, 1], [1, 1]]}\n",
+             "of zero width": "  - {name: den, box: [1, 1, 1, 5]}\n",
+             "inverted": "  - {name: den, box: [4, 4, 1, 1]}\n",
+             "touching itself at a vertex": "  - {name: den, polygon: [[0, 0], [2, 2], [4, 0], [2, 2], [0, 4]]}\n"}
+    for label, row in rooms.items():
+        yield Case(f"A a room {label}", ("validate", "x.yaml"), (("x.yaml", (head + row).encode()),), codes=(1,),
+                   keep=("x.yaml",), says=r"x\.yaml:5:\d+:")
+    circle = ", ".join(f"[{5 + 2 * math.cos(k / 1e4):.6f}, {5 + 2 * math.sin(k / 1e4):.6f}]" for k in range(62_831))
+    ringed = head.replace("[5, 0, 10, 10]", "[8, 0, 10, 2]") + f"  - {{name: den, polygon: [{circle}]}}\n"
+    yield Case("A a room of 62,831 vertices", ("validate", "x.yaml"), (("x.yaml", ringed.encode()),), codes=(1,),
+               keep=("x.yaml",), says=r"x\.yaml:5:\d+:.*62,831")
+    fine = ", ".join(f"[{5 + 2 * math.cos(k * math.tau / 9_000):.6f}, {5 + 2 * math.sin(k * math.tau / 9_000):.6f}]"
+                     for k in range(9_000))
+    outlined = head.replace("[5, 0, 10, 10]", "[8, 0, 10, 2]") + f"  - {{name: den, polygon: [{fine}]}}\n"
+    yield Case("A a room of 9,000 vertices: run", ("run", "go to the den", "--map", "x.yaml", "--particles", "20"),
+               (("x.yaml", outlined.encode()),), codes=(0,), keep=("x.yaml",))
+    yield Case("A a room named with 20,000 letters: the message cuts the name", ("validate", "h.yaml"),
+               (("h.yaml", replaced("name: bedroom", "name: b" + "e" * 20_000 + "droom")), image), codes=(1,),
+               keep=("h.yaml",), says=r"\A(?![\s\S]*[^\n]{3001})[\s\S]*h\.yaml:\d+:\d+: .*beee+…")
+    objects = "".join(f"  - {{class: cup, at: [{-8.5 + (k % 100) * 0.05:.2f}, {-5.5 + (k // 100) * 0.005:.3f}]}}\n"
+                      for k in range(50_000))
+    yield Case("A 50,000 objects in the apartment", ("validate", "h.yaml"),
+               (("h.yaml", replaced("objects:\n", "objects:\n" + objects)), image), codes=(0, 1), keep=("h.yaml",),
+               says=r"h\.yaml")
+    # -- occupancy images --------------------------------------------------------------------------------
+    images = {"missing": ("image: apartment.pgm", "image: nowhere.pgm", ()),
+              "a JPEG": ("image: apartment.pgm", "image: photo.pgm", (("photo.pgm", b"\xff\xd8\xff\xe0" + bytes(64)),)),
+              "empty": ("image: apartment.pgm", "image: ''", ()),
+              "a number": ("image: apartment.pgm", "image: 5", ()),
+              "a list": ("image: apartment.pgm", "image: [a.pgm]", ())}
+    for label, (old, new, extra) in images.items():
+        yield Case(f"A map image {label}", ("map", "h.yaml"), (("h.yaml", replaced(old, new)), image, *extra),
+                   codes=(1,), keep=("h.yaml",), says=located.format(r"h\.yaml"))
+    pixels, width, height = _pgm_pixels(image[1])
+    commented = f"P5\n# {'x' * 1_000_000}\n{width} {height}\n255\n".encode() + pixels
+    yield Case("A map image with a header comment of 1 MB", ("map", "m.yaml"), (m, ("apartment.pgm", commented)),
+               codes=(0,), keep=inputs)
+    big = sparse_pgm(6_000, 6_000, pixels, width, height)
+    yield Case("A a real map's image: 6,000 × 6,000, mostly unknown (validate)", ("validate", "m.yaml"),
+               (m, ("apartment.pgm", big)), codes=(0,), keep=inputs, timeout=120)
+    yield Case("A a real map's image: 6,000 × 6,000, mostly unknown (run)", ("run", "go to the kitchen", "--map",
+                                                                           "m.yaml", "--particles", "50"),
+               (m, ("apartment.pgm", big)), codes=(0,), keep=inputs, timeout=180)
+    yield Case("A a P2 text image of 6,000 × 6,000", ("validate", "m.yaml"),
+               (m, ("apartment.pgm", b"P2\n6000 6000\n255\n" + b"205 " * 100_000)), codes=(1,), keep=inputs,
+               says=r"m\.yaml:\d+:\d+: .*(P5|binary)")
+    # -- the frame DSL -----------------------------------------------------------------------------------
+    dsl = {"a fact nested 10,000 deep": ("requires holding(instrument)",
+                                         "requires holding(" + "f(" * 10_000 + "x" + ")" * 10_001, (1,), 8),
+           "a category of 100,000 members on one line": ("category container = cup, bowl",
+                                                         "category container = cup, bowl, "
+                                                         + ", ".join(f"c{k}" for k in range(100_000)), (0, 1), 1),
+           "a NUL inside a frame's name": ("frame Whisk", "frame Wh\x00isk", (1,), 4),
+           "a right-to-left override in a frame's name": ("frame Whisk", "frame Wh\u202eisk", (0, 1), 4)}
+    for label, (old, new, codes, line) in dsl.items():
+        data = frame.decode().replace(old, new).encode()
+        yield Case(f"A DSL: {label}", ("validate", "f.frame"), (("f.frame", data),), codes=codes, keep=("f.frame",),
+                   says=rf"f\.frame:{line}:\d+:" if codes == (1,) else r"f\.frame")
+    broken = "".join(f"frame F{k} {{\n  do navigate(\n}}\n" for k in range(20_000)).encode()
+    yield Case("A DSL: 20,000 broken frames", ("validate", "f.frame"), (("f.frame", broken),), codes=(1,),
+               keep=("f.frame",), says=r"f\.frame:\d+:\d+:")
+    cycle = b"category a = b\ncategory b = a\nframe Go \"go\" {\n  theme: a\n  do navigate(theme)\n}\n"
+    yield Case("A DSL: two categories of each other", ("validate", "f.frame"), (("f.frame", cycle),), codes=(1,),
+               keep=("f.frame",), says=r"f\.frame:\d+:\d+:")
+    crlf = frame.decode().replace("do navigate(theme), stir", "do navigate(theme) stir").replace("\n", "\r\n")
+    yield Case("A DSL: CRLF lines and a missing comma on line 9", ("validate", "f.frame"),
+               (("f.frame", crlf.encode()),), codes=(1,), keep=("f.frame",), says=r"f\.frame:9:26:")
+    # -- command texts -----------------------------------------------------------------------------------
+    texts = {"only punctuation": "?!.,;:…—", "only emoji": "😀🤖🍕", "Arabic, right to left": "اذهب إلى المطبخ",
+             "Hebrew with bidi marks": "\u200fלך למטבח\u200f", "zero-width spaces in a word": "st\u200bir the cup",
+             "a Cyrillic homoglyph": "st\u0456r the cup", "100,000 exclamation marks": "!" * 100_000,
+             "only whitespace": " \t \u3000 "}
+    for label, command in texts.items():
+        for verb in ("parse", "plan"):
+            yield Case(f"A a command of {label}: {verb}", (verb, command), codes=(0, 1), says=r"column \d+|error")
+    yield Case("A run a command of only emoji", ("run", "😀🤖🍕", "--map", "m.yaml", "--particles", "20"), both,
+               codes=(1,), keep=inputs, says=r"column \d+")
+    # -- outputs onto inputs, by other roads --------------------------------------------------------------
+    plain = (("mapfile", m[1]), image)
+    yield Case("A --png onto the map through a folder link", ("map", "mapfile", "--png", "d/mapfile"),
+               (*plain, ("d", "link:.")), codes=(1,), keep=("mapfile", "apartment.pgm"), says=r"d/mapfile")
+    yield Case("A --rrd onto the map through /proc/self/cwd", ("localize", "--map", "mapfile", "--steps", "1",
+                                                               "--particles", "20", "--rrd", "/proc/self/cwd/mapfile"),
+               plain, codes=(1,), keep=("mapfile", "apartment.pgm"), says=r"/proc/self/cwd/mapfile")
+    yield Case("A run --png onto its --vocabulary", ("run", "bring me a cup", "--map", "m.yaml", "--particles", "20",
+                                                     "--vocabulary", "vocab", "--png", "vocab"),
+               (*both, ("vocab", b"- cup\n- spoon\n")), codes=(1,), keep=(*inputs, "vocab"), says=r"vocab")
+    yield Case("A run --rrd /dev/full", ("run", "go to the kitchen", "--map", "m.yaml", "--particles", "20", "--rrd",
+                                         "/dev/full"), both, codes=(1,), keep=inputs, says=r"--rrd /dev/full")
+    yield Case("A plan --pddl /dev/full", ("plan", "--pddl", "/dev/full", "stir the cup"), codes=(1,),
+               says=r"--pddl")
+    yield Case("A bench tasks --episodes /dev/full", ("bench", "tasks", "--suite", "map", "--layouts", "1",
+                                                      "--policies", "sefm", "--episodes", "/dev/full"),
+               codes=(1,), says=r"--episodes")
+    # -- empty names and overlong values for options ------------------------------------------------------
+    empties = {"plan --pddl ''": ("plan", "--pddl", "", "stir the cup"),
+               "plan --pddl=": ("plan", "--pddl=", "stir the cup"),
+               "map --png ''": ("map", "m.yaml", "--png", ""),
+               "localize --goals ''": (*loc, "--task", "stir the cup", "--goals", ""),
+               "parse --vocabulary ''": ("parse", "--vocabulary", "", "stir the cup"), "validate ''": ("validate", "")}
+    for label, argv in empties.items():
+        yield Case(f"A an empty name: {label}", argv, both, codes=(1,), keep=inputs,
+                   absent=("domain.pddl", "problem.pddl"), says=r"(--[a-z]+ is empty|an empty PATH)")
+    yield Case("A --holding of 3,000 letters: run", ("run", "bring me a cup", "--map", "m.yaml", "--particles", "20",
+                                                      "--holding", "x" * 3_000), both, codes=(1,), keep=inputs,
+               says=r"holding 'x+'… is 3,000 characters long")
+    yield Case("A --holding of 100,000 letters: plan", ("plan", "--holding", "y" * 100_000, "stir the cup"),
+               codes=(1,), says=r"holding 'y+'… is 100,000 characters long")
+    # -- folders and empty files where files go ------------------------------------------------------------
+    for option, argv in (("--vocabulary", ("parse", "--vocabulary", "x", "stir the cup")),
+                         ("--observations", (*loc, "--observations", "x")),
+                         ("--trajectory", (*loc, "--trajectory", "x"))):
+        yield Case(f"A {option} a folder", argv, (*both, ("x", "dir")), codes=(1,), keep=inputs,
+                   says=r"x: this is a folder")
+        yield Case(f"A {option} an empty file", argv, (*both, ("x", b"")), codes=(0, 1), keep=inputs,
+                   says=r"(?m)^(error: )?x")
+    yield Case("A a map of comments only", ("map", "x.yaml"), (("x.yaml", b"# nothing\n# here\n"),), codes=(1,),
+               keep=("x.yaml",), says=r"x\.yaml")
+    # -- sizes -------------------------------------------------------------------------------------------
+    words = "".join(f"- w{k}\n" for k in range(300_000)).encode()
+    yield Case("A a vocabulary of 300,000 words", ("parse", "--vocabulary", "v.yaml", "stir the cup"),
+               (("v.yaml", words),), codes=(1,), keep=("v.yaml",), says=r"v\.yaml:\d+:\d+: .*300,000|v\.yaml:.*most",
+               timeout=20)
+    yield Case("A a map of 2,000 km at 1 cm", ("validate", "x.yaml"),
+               (("x.yaml", b"name: a\nresolution: 0.01\nbounds: [-1000000, -1000000, 1000000, 1000000]\n"
+                 b"rooms:\n  - {name: hall, box: [0, 0, 10, 10]}\n"),), codes=(0, 1), keep=("x.yaml",),
+               says=r"x\.yaml")
+    yield Case("A a map of 10 m at a micrometre, no image: run",
+               ("run", "go to the hall", "--map", "x.yaml", "--particles", "20"),
+               (("x.yaml", b"name: a\nresolution: 0.000001\nbounds: [0, 0, 10, 10]\n"
+                 b"rooms:\n  - {name: hall, box: [0, 0, 10, 10]}\n"),), codes=(0, 1), keep=("x.yaml",),
+               says=r"x\.yaml")

@@ -1,0 +1,36 @@
+"""An attacker's hostile cases of ``seal bench reliability``: new, named once, each saying what its message
+names; a pick of them ends cleanly (each failed on main before this round)."""
+
+from __future__ import annotations
+
+import pytest
+
+from seal_cli.bench.reliability import hostile_cases, issue_cases, run_case
+from seal_cli.bench.reliability_attacker import attacker_cases, sparse_pgm
+from seal_cli.bench.reliability_outsider import outsider_cases
+from seal_cli.bench.reliability_review import cases, review_cases
+from seal_cli.bench.reliability_users import user_cases
+
+
+def test_the_cases_are_new_named_once_and_say_what_the_message_names() -> None:
+    attacker = list(attacker_cases())
+    assert len(attacker) >= 80 and len({c.name for c in attacker}) == len(attacker)
+    others = {c.name for c in [*issue_cases(), *hostile_cases(), *review_cases(), *user_cases(), *outsider_cases()]}
+    assert {c.name for c in attacker}.isdisjoint(others)
+    assert all(c.says is not None for c in attacker if c.codes != (0,))
+    assert {c.name for c in attacker} <= {c.name for c in cases(0, 0)}
+
+
+def test_a_sparse_image_holds_its_patch_in_the_lower_left_corner() -> None:
+    data = sparse_pgm(5, 4, b"\x00\x01\x02\x03", 2, 2)
+    pixels = data[len(b"P5\n5 4\n255\n"):]
+    assert data.startswith(b"P5\n5 4\n255\n") and len(pixels) == 20
+    assert pixels[10:12] == b"\x00\x01" and pixels[15:17] == b"\x02\x03" and pixels[:10] == b"\xcd" * 10
+
+
+@pytest.mark.parametrize("name", ["A 5,000 digits in resolution: validate", "A 5,000 digits in an observation's pose",
+                                  "A 5,000 digits in a vocabulary", "A a room of 62,831 vertices",
+                                  "A a vocabulary of 300,000 words"])
+def test_picked_cases_end_cleanly(name: str) -> None:
+    outcome = run_case(next(c for c in attacker_cases() if c.name == name))
+    assert outcome.problems == []
