@@ -793,3 +793,15 @@ def test_a_thing_left_in_a_state_is_the_verb_of_that_state(library: Library) -> 
     assert texts("leave the lights on", library) == [("ToggleOn", {"theme": "the lights"})]
     assert texts("leave the keys on the table", library) == [
         ("Place", {"theme": "the keys", "goal": "the table"})]
+
+
+def test_taking_a_thing_off_keeps_the_particle_in_the_unit(library: Library) -> None:
+    # words17: "take off" is Pick's (WordNet take_off.v.02 "take away or remove" < remove.v.01): the particle said
+    # alone after the thing is the unit's, not dropped; "off" with a noun after it says where from
+    assert [(f.frame, f.lexical_unit) for f in parse_command("take the lid off", library).frames] == [
+        ("Pick", "take off")]
+    assert texts("take off the lid", library) == [("Pick", {"theme": "the lid"})]
+    assert texts("take the lid off the pot", library) == [("Pick", {"theme": "the lid", "source": "the pot"})]
+    # a particle before "to" and a verb in any form is the next verb's: "to rinsed off"
+    assert parse_command("take the egg out of the bin to rinsed off in the sink", library).frames[0].lexical_unit == \
+        "take"
