@@ -347,6 +347,9 @@ class Evoker:
                 continue
             again = pp.prep == "with" and _named_again(pp.np, roles.get(theme), host, attached)
             if not host.borrowed and not again:   # an object said in an earlier clause ends where it was said
+                particle = _split_particle(unit, clause, host.end, pp.start) if host in clause.objects else None
+                if particle is not None and host.end < pp.np.end:
+                    host.cut = (particle.start, particle.end)   # "the light *on* in the hall": the unit's, cut out
                 host.end = max(host.end, pp.np.end)
             if pp.prep == "with" and pp.np.head is not None and pp.np.kind == "thing" and not pp.np.conjuncts \
                     and noun_lemma(pp.np.head.text) in PARTS:
@@ -603,6 +606,8 @@ class Evoker:
                 return Phrase(self.text[np.start:np.end], root.head, root.cls, root.kind, place, root.quantity,
                               root.plural, span=(np.start, np.end))
         text = self.text[np.start:np.end]
+        if np.cut is not None and np.start < np.cut[0] and np.cut[1] < np.end:
+            text = f"{self.text[np.start:np.cut[0]].rstrip()} {self.text[np.cut[1]:np.end].lstrip()}"
         cls = None
         if self.vocabulary is not None and np.kind != "message":
             cls = np.ground(self.vocabulary)
@@ -649,3 +654,14 @@ def _named_again(content: NP, theme: Any, host: NP, attached: Sequence[tuple[NP,
     head = noun_lemma(theme.head.text)
     return any(h is content and p.prep in PUT_IN and p.np.head is not None and not p.np.pronoun
                and noun_lemma(p.np.head.text) == head for h, p in attached)
+
+
+def _split_particle(unit: str, clause: Clause, after: int, before: int) -> Word | None:
+    """The particle of a split unit said between a noun phrase and a prepositional phrase after it ("leave the
+    light *on* in the hall", "switch the lights *off* in the bedroom"): it ends the thing's words, so the phrase
+    describes the thing without it ("the light in the hall": a toggle frame has no place of its own)."""
+    words = unit.split()
+    if len(words) < 2:
+        return None
+    return next((w for w in clause.items if isinstance(w, Word) and w.tag == "PARTICLE" and w.lower == words[-1]
+                 and after <= w.start and w.end <= before), None)

@@ -805,3 +805,16 @@ def test_taking_a_thing_off_keeps_the_particle_in_the_unit(library: Library) -> 
     # a particle before "to" and a verb in any form is the next verb's: "to rinsed off"
     assert parse_command("take the egg out of the bin to rinsed off in the sink", library).frames[0].lexical_unit == \
         "take"
+
+
+def test_a_split_particle_ends_the_thing_before_where_it_is(library: Library) -> None:
+    # words17: the particle of a split unit is the verb's, not the thing's words; a place said after it still
+    # describes the thing (a toggle frame has no place of its own), as when the particle is said joined
+    assert texts("leave the light on in the hall", library) == [("ToggleOn", {"theme": "the light in the hall"})]
+    assert texts("switch the lights off in the bedroom", library) == \
+        texts("switch off the lights in the bedroom", library) == [
+            ("ToggleOff", {"theme": "the lights in the bedroom"})]
+    assert texts("pick the cup up from the table", library) == [("Pick", {"theme": "the cup", "source": "the table"})]
+    # a particle inside the place's own words is not cut: "the third cabinet down"
+    assert texts("put it in the third cabinet down on the left", library)[0][1]["goal"] == \
+        "the third cabinet down on the left"
