@@ -818,3 +818,13 @@ def test_a_split_particle_ends_the_thing_before_where_it_is(library: Library) ->
     # a particle inside the place's own words is not cut: "the third cabinet down"
     assert texts("put it in the third cabinet down on the left", library)[0][1]["goal"] == \
         "the third cabinet down on the left"
+
+
+def test_two_wished_states_are_two_instructions(library: Library) -> None:
+    # words17: a wish's state said before "and" ends the wish; the second thing and state are a wish said without
+    # its verb ("I'd like the blinds closed and the lights off" was Bring of "the blinds closed and the lights")
+    assert texts("I'd like the blinds closed and the lights off", library) == [
+        ("Close", {"theme": "the blinds"}), ("ToggleOff", {"theme": "the lights"})]
+    assert texts("I want the door open, and the radio on please", library) == [
+        ("Open", {"theme": "the door"}), ("ToggleOn", {"theme": "the radio"})]
+    assert texts("I'd like the blinds closed", library) == [("Close", {"theme": "the blinds"})]
