@@ -828,3 +828,15 @@ def test_two_wished_states_are_two_instructions(library: Library) -> None:
     assert texts("I want the door open, and the radio on please", library) == [
         ("Open", {"theme": "the door"}), ("ToggleOn", {"theme": "the radio"})]
     assert texts("I'd like the blinds closed", library) == [("Close", {"theme": "the blinds"})]
+
+
+def test_a_light_verb_with_an_action_no_frame_does_is_refused_at_the_action(library: Library) -> None:
+    # words17: "give the floor a quick sweep" was Give(recipient the floor, theme a sweep); a noun used mostly as a
+    # verb that no frame has is an action asked, refused at the noun, while a frame's noun is that frame
+    with pytest.raises(CommandError) as refused:
+        parse_command("give the floor a quick sweep", library)
+    assert refused.value.column == len("give the floor a quick ") + 1 and "'sweep'" in refused.value.message
+    assert texts("give the floor a wipe", library) == [("Clean", {"theme": "the floor"})]
+    assert texts("give the windows a good scrub", library) == [("Clean", {"theme": "the windows"})]
+    assert [f for f, _ in texts("give the dog a bone", library)] == ["Give"]     # "bone": mostly a noun
+    assert [f for f, _ in texts("give me a hug", library)] == ["Give"]           # a person keeps "give"
