@@ -73,7 +73,8 @@ class Evoker:
         if frames and all(self.makes_state(f) for f in frames):
             clause.result = [x for x in clause.items if isinstance(x, PP) and self.is_form(x)]
             clause.items = [x for x in clause.items if not any(x is r for r in clause.result)]
-        unit, best = self.choose(unit, self.accompanying(frames, clause) or frames, clause)
+        unit, best = self.choose(unit, self.accompanying(frames, clause) or self.keeping_near(unit, clause) or frames,
+                                 clause)
         best = self.moved_object(best, self.types.evoked_by(unit), clause)
         best = self.escorting(self.moving(best, self.types.evoked_by(unit), clause), clause)
         _, frame, roles, attached = self.showing(best, clause)
@@ -157,6 +158,23 @@ class Evoker:
         clause.items = [x for x in clause.items if x is not company]
         clause.objects = [company.np]
         return chosen
+
+    def keeping_near(self, unit: str, clause: Clause) -> list[Frame] | None:
+        """"stay *close to* Morgan", "stay near me": a verb whose unit with "with" moves with a person ("stay with":
+        Follow, FrameNet's Cotheme) says the same with "near" ("near", "close to", "next to") a person and no
+        object: keeping near someone who moves is moving with them. The person becomes the object; None when this
+        is not it ("stay near the door": a place, the verb's own frame; "go near Sam": "go with" is no unit)."""
+        if clause.objects or clause.message:
+            return None
+        along = [f for f in self.types.evoked_by(f"{unit} with") if f.elements and
+                 self.types.is_person(f.elements[0].type)]
+        near = next((x for x in clause.items if isinstance(x, PP) and x.prep == "near" and not x.lead and
+                     self.roles.kind(x.np, None, None) == "person"), None) if along else None
+        if near is None:
+            return None
+        clause.items = [x for x in clause.items if x is not near]
+        clause.objects = [near.np]
+        return along
 
     def moved_object(self, best: Fit, frames: Sequence[Frame], clause: Clause) -> Fit:
         """"*move the bowl*", "return the mug", "push the cart": a verb both of going (a frame whose first

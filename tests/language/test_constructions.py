@@ -840,3 +840,12 @@ def test_a_light_verb_with_an_action_no_frame_does_is_refused_at_the_action(libr
     assert texts("give the windows a good scrub", library) == [("Clean", {"theme": "the windows"})]
     assert [f for f, _ in texts("give the dog a bone", library)] == ["Give"]     # "bone": mostly a noun
     assert [f for f, _ in texts("give me a hug", library)] == ["Give"]           # a person keeps "give"
+
+
+def test_staying_near_a_person_follows_them_and_near_a_place_waits(library: Library) -> None:
+    # words17: "stay with" is Follow's; the same verb with "near"/"close to"/"next to" a person keeps near someone
+    # who moves (Follow); a place keeps the verb's own frame
+    assert texts("stay close to Morgan", library) == [("Follow", {"theme": "Morgan"})]
+    assert texts("stay near me", library) == [("Follow", {"theme": "me"})]
+    assert texts("stay near the door", library) == [("Wait", {"ground": "the door"})]
+    assert [f for f, _ in texts("go near Sam", library)] == ["Go"]       # "go with" is no unit: going there
