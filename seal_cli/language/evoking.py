@@ -16,7 +16,7 @@ from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
 from seal_cli.language.english import BESIDE, LOCATED, ROUTE_NOUNS, SPEAKER_PRONOUNS, is_room_word
 from seal_cli.language.grounding import PARTS, PIECES, PORTIONS
-from seal_cli.language.lexicon import Word, noun_lemma
+from seal_cli.language.lexicon import CommandError, Word, noun_lemma
 from seal_cli.language.morphology import is_gradable
 from seal_cli.language.reference import PLACES, Reference
 from seal_cli.language.roles import PUT_IN, ROLE_PREPOSITIONS, TO, Roles
@@ -60,6 +60,7 @@ class Evoker:
         """The clause's frames: what it implies first (things held), then its own (:meth:`choose`)."""
         self.clause_frames = len(self.frames)
         unit = clause.unit or str(clause.verb.info)
+        self.stray_state(unit, clause)
         frames = self.types.evoked_by(unit)
         role = self.types.object_role(unit)
         if role is not None:
@@ -81,6 +82,22 @@ class Evoker:
         self.first_into(frame, roles, attached)
         self.beside_on(frame, clause, roles, attached)
         self.emit(frame, unit, clause, roles, attached)
+
+    def stray_state(self, unit: str, clause: Clause) -> None:
+        """"pop the telly *on*", "bring the cup *off*": "on" or "off" alone after the thing, a particle no unit of the
+        verb takes, names a state the frame would drop ("switch it on" and "put it down" differ by it): refused at
+        the particle, never dropped silently, when it ends the clause right after the thing ("with the lamp *on*", "the
+        table it was *on*", "on on the table" are not). A unit that ends in it ("take the lid *off*") keeps it."""
+        words = unit.split()
+        stray = clause.items[0] if len(clause.items) == 1 and clause.objects else None
+        if not isinstance(stray, Word) or stray.tag != "PARTICLE" or stray.lower not in _STRAY_STATES or \
+                stray.lower in words[1:] or self.text[clause.objects[-1].end:stray.start].strip():
+            return                               # only right after the thing: "with the lamp *on*" describes
+        verb = self.text[clause.verb.start:clause.verb.end].lower()
+        raise CommandError(f"{stray.lower!r} after {self.text[clause.objects[0].start:clause.objects[0].end]!r}: "
+                           f"'{verb} ... {stray.lower}' is no verb of the library, and the state it names would be "
+                           f"lost; say what to do with it ('turn it {stray.lower}', 'put it down')",
+                           stray.start + 1, self.text, ["a verb the robot knows"])
 
     @staticmethod
     def object_as(role: str, clause: Clause) -> None:
@@ -672,6 +689,10 @@ def _named_again(content: NP, theme: Any, host: NP, attached: Sequence[tuple[NP,
     head = noun_lemma(theme.head.text)
     return any(h is content and p.prep in PUT_IN and p.np.head is not None and not p.np.pronoun
                and noun_lemma(p.np.head.text) == head for h, p in attached)
+
+
+_STRAY_STATES = frozenset(["on", "off"])
+"""The particles that name a state (on.a.01 ! off.a.01): said alone after a thing, they change what is done."""
 
 
 def _split_particle(unit: str, clause: Clause, after: int, before: int) -> Word | None:

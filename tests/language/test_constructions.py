@@ -849,3 +849,18 @@ def test_staying_near_a_person_follows_them_and_near_a_place_waits(library: Libr
     assert texts("stay near me", library) == [("Follow", {"theme": "me"})]
     assert texts("stay near the door", library) == [("Wait", {"ground": "the door"})]
     assert [f for f, _ in texts("go near Sam", library)] == ["Go"]       # "go with" is no unit: going there
+
+
+def test_a_state_particle_no_unit_takes_is_refused_not_dropped(library: Library) -> None:
+    # words17: "on"/"off" alone after the thing, ending the clause, with a verb none of whose units ends in it,
+    # names a state the frame would drop ("pop the telly on" was Place of the telly): refused at the particle
+    with pytest.raises(CommandError) as refused:
+        parse_command("pop the telly on, would you", library)
+    assert refused.value.column == len("pop the telly ") + 1 and "'on'" in refused.value.message
+    with pytest.raises(CommandError):
+        parse_command("bring the cup off", library)
+    with pytest.raises(CommandError):
+        parse_command("put your coat on", library)     # a coat is no toggleable thing: no "put on" (was Place)
+    assert texts("pick up a cup with the lamp on", library)[0][0] == "Pick"       # describes the lamp
+    assert [f for f, _ in texts("put the kettle on", library)] == ["ToggleOn"]   # a unit's own particle
+    assert [f for f, _ in texts("take the lid off", library)] == ["Pick"]
