@@ -28,10 +28,11 @@ from seal_cli.frames.library import Library
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.language.element_types import Types
 from seal_cli.language.english import FIRST_LATER
-from seal_cli.language.lexicon import Word
+from seal_cli.language.lexicon import CommandError, Word
 from seal_cli.language.morphology import is_adjective, verb_lemma
 from seal_cli.language.roles import FROM, LOCATIVE
 from seal_cli.language.syntax import NP, PP, Clause, Command, Item, end_of
+from seal_cli.language.verb_usage import mostly_verb
 
 __all__ = ["LIGHT_VERBS", "Clauses"]
 
@@ -429,7 +430,9 @@ class Clauses:
     def light_verb(self, clause: Clause) -> None:
         """"give the sauce *a quick stir*": "give" with a thing and "a" (adjectives) and a noun that is a lexical
         unit of the library is that unit's frame, done to the thing (the construction of "take a look at"):
-        the clause's ``unit`` becomes the noun. A person keeps "give" ("give me a hand")."""
+        the clause's ``unit`` becomes the noun. A person keeps "give" ("give me a hand"). A noun used mostly as a
+        verb (WordNet's counts, :func:`~seal_cli.language.verb_usage.mostly_verb`) that no frame has is refused
+        at the noun ("give the floor a quick *sweep*"): an action asked, not a floor given a thing."""
         if str(clause.verb.info) not in LIGHT_VERBS:
             return
         places = [item for item in clause.items[:-1] if isinstance(item, PP) and item.prep in LOCATIVE]
@@ -446,6 +449,12 @@ class Clauses:
             return
         unit = act.head.lower
         frames = self.types.evoked_by(unit)
+        if not frames and mostly_verb(unit) and unit not in self.library.taxonomy.known_classes:
+            can = list(dict.fromkeys(f.lexical_units[0].text for f in self.library.frames if f.lexical_units))
+            said = self.text[clause.verb.start:act.end]
+            raise CommandError(f"{said!r} asks to {unit} {self.text[thing.start:thing.end]!r}, and no frame of the "
+                               f"library does '{unit}'; the robot can {', '.join(can[:-1])} or {can[-1]}",
+                               act.head.start + 1, self.text, ["an action the robot can do"])
         if not frames or not all(f.elements and not self.types.is_person(f.elements[0].type) for f in frames):
             return
         clause.objects = [thing]

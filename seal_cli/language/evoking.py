@@ -16,7 +16,7 @@ from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
 from seal_cli.language.english import BESIDE, LOCATED, ROUTE_NOUNS, SPEAKER_PRONOUNS, is_room_word
 from seal_cli.language.grounding import PARTS, PIECES, PORTIONS
-from seal_cli.language.lexicon import Word, noun_lemma
+from seal_cli.language.lexicon import CommandError, Word, noun_lemma
 from seal_cli.language.morphology import is_gradable
 from seal_cli.language.reference import PLACES, Reference
 from seal_cli.language.roles import PUT_IN, ROLE_PREPOSITIONS, TO, Roles
@@ -60,6 +60,7 @@ class Evoker:
         """The clause's frames: what it implies first (things held), then its own (:meth:`choose`)."""
         self.clause_frames = len(self.frames)
         unit = clause.unit or str(clause.verb.info)
+        self.stray_state(unit, clause)
         frames = self.types.evoked_by(unit)
         role = self.types.object_role(unit)
         if role is not None:
@@ -73,13 +74,30 @@ class Evoker:
         if frames and all(self.makes_state(f) for f in frames):
             clause.result = [x for x in clause.items if isinstance(x, PP) and self.is_form(x)]
             clause.items = [x for x in clause.items if not any(x is r for r in clause.result)]
-        unit, best = self.choose(unit, self.accompanying(frames, clause) or frames, clause)
+        unit, best = self.choose(unit, self.accompanying(frames, clause) or self.keeping_near(unit, clause) or frames,
+                                 clause)
         best = self.moved_object(best, self.types.evoked_by(unit), clause)
         best = self.escorting(self.moving(best, self.types.evoked_by(unit), clause), clause)
         _, frame, roles, attached = self.showing(best, clause)
         self.first_into(frame, roles, attached)
         self.beside_on(frame, clause, roles, attached)
         self.emit(frame, unit, clause, roles, attached)
+
+    def stray_state(self, unit: str, clause: Clause) -> None:
+        """"pop the telly *on*", "bring the cup *off*": "on" or "off" alone after the thing, a particle no unit of the
+        verb takes, names a state the frame would drop ("switch it on" and "put it down" differ by it): refused at
+        the particle, never dropped silently, when it ends the clause right after the thing ("with the lamp *on*", "the
+        table it was *on*", "on on the table" are not). A unit that ends in it ("take the lid *off*") keeps it."""
+        words = unit.split()
+        stray = clause.items[0] if len(clause.items) == 1 and clause.objects else None
+        if not isinstance(stray, Word) or stray.tag != "PARTICLE" or stray.lower not in _STRAY_STATES or \
+                stray.lower in words[1:] or self.text[clause.objects[-1].end:stray.start].strip():
+            return                               # only right after the thing: "with the lamp *on*" describes
+        verb = self.text[clause.verb.start:clause.verb.end].lower()
+        raise CommandError(f"{stray.lower!r} after {self.text[clause.objects[0].start:clause.objects[0].end]!r}: "
+                           f"'{verb} ... {stray.lower}' is no verb of the library, and the state it names would be "
+                           f"lost; say what to do with it ('turn it {stray.lower}', 'put it down')",
+                           stray.start + 1, self.text, ["a verb the robot knows"])
 
     @staticmethod
     def object_as(role: str, clause: Clause) -> None:
@@ -157,6 +175,23 @@ class Evoker:
         clause.items = [x for x in clause.items if x is not company]
         clause.objects = [company.np]
         return chosen
+
+    def keeping_near(self, unit: str, clause: Clause) -> list[Frame] | None:
+        """"stay *close to* Morgan", "stay near me": a verb whose unit with "with" moves with a person ("stay with":
+        Follow, FrameNet's Cotheme) says the same with "near" ("near", "close to", "next to") a person and no
+        object: keeping near someone who moves is moving with them. The person becomes the object; None when this
+        is not it ("stay near the door": a place, the verb's own frame; "go near Sam": "go with" is no unit)."""
+        if clause.objects or clause.message:
+            return None
+        along = [f for f in self.types.evoked_by(f"{unit} with") if f.elements and
+                 self.types.is_person(f.elements[0].type)]
+        near = next((x for x in clause.items if isinstance(x, PP) and x.prep == "near" and not x.lead and
+                     self.roles.kind(x.np, None, None) == "person"), None) if along else None
+        if near is None:
+            return None
+        clause.items = [x for x in clause.items if x is not near]
+        clause.objects = [near.np]
+        return along
 
     def moved_object(self, best: Fit, frames: Sequence[Frame], clause: Clause) -> Fit:
         """"*move the bowl*", "return the mug", "push the cart": a verb both of going (a frame whose first
@@ -347,6 +382,9 @@ class Evoker:
                 continue
             again = pp.prep == "with" and _named_again(pp.np, roles.get(theme), host, attached)
             if not host.borrowed and not again:   # an object said in an earlier clause ends where it was said
+                particle = _split_particle(unit, clause, host.end, pp.start) if host in clause.objects else None
+                if particle is not None and host.end < pp.np.end:
+                    host.cut = (particle.start, particle.end)   # "the light *on* in the hall": the unit's, cut out
                 host.end = max(host.end, pp.np.end)
             if pp.prep == "with" and pp.np.head is not None and pp.np.kind == "thing" and not pp.np.conjuncts \
                     and noun_lemma(pp.np.head.text) in PARTS:
@@ -603,6 +641,8 @@ class Evoker:
                 return Phrase(self.text[np.start:np.end], root.head, root.cls, root.kind, place, root.quantity,
                               root.plural, span=(np.start, np.end))
         text = self.text[np.start:np.end]
+        if np.cut is not None and np.start < np.cut[0] and np.cut[1] < np.end:
+            text = f"{self.text[np.start:np.cut[0]].rstrip()} {self.text[np.cut[1]:np.end].lstrip()}"
         cls = None
         if self.vocabulary is not None and np.kind != "message":
             cls = np.ground(self.vocabulary)
@@ -649,3 +689,18 @@ def _named_again(content: NP, theme: Any, host: NP, attached: Sequence[tuple[NP,
     head = noun_lemma(theme.head.text)
     return any(h is content and p.prep in PUT_IN and p.np.head is not None and not p.np.pronoun
                and noun_lemma(p.np.head.text) == head for h, p in attached)
+
+
+_STRAY_STATES = frozenset(["on", "off"])
+"""The particles that name a state (on.a.01 ! off.a.01): said alone after a thing, they change what is done."""
+
+
+def _split_particle(unit: str, clause: Clause, after: int, before: int) -> Word | None:
+    """The particle of a split unit said between a noun phrase and a prepositional phrase after it ("leave the
+    light *on* in the hall", "switch the lights *off* in the bedroom"): it ends the thing's words, so the phrase
+    describes the thing without it ("the light in the hall": a toggle frame has no place of its own)."""
+    words = unit.split()
+    if len(words) < 2:
+        return None
+    return next((w for w in clause.items if isinstance(w, Word) and w.tag == "PARTICLE" and w.lower == words[-1]
+                 and after <= w.start and w.end <= before), None)

@@ -189,8 +189,9 @@ class Lexicon:
             if len(unit) != 2 or unit[1] not in PARTICLES or unit[1] == "back" and " ".join(unit) in self.stores:
                 continue
             for j in range(i + 2, stop):
-                if words[j].lower == "to" and j + 1 < stop and words[j + 1].lower in self.units:
-                    break                        # "wash a teapot *to put it away*": the particle is the next verb's
+                if words[j].lower == "to" and j + 1 < stop and (words[j + 1].lower in self.units or
+                                                                 verb_lemma(words[j + 1].lower) in self.units):
+                    break                        # "wash a teapot *to put it away*", "*to rinsed off*": the next verb's
                 if words[j].lower == unit[1] and _stands_alone(words, j) and \
                         match_phrase(words, j - 1, TIME_WORDS) < 2 and \
                         self._split_fits(" ".join(unit), words, i, j):  # not "right away"

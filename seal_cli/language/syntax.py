@@ -51,6 +51,7 @@ class NP:
     there: bool = False                                  # a bare "there" ending its clause: a place said before
     borrowed: bool = False                               # an earlier clause's object ("to open [it]"): said there
     located: NP | None = None                            # "a person standing *in the corridor*": where it is
+    cut: tuple[int, int] | None = None                   # "the light *on* in the hall": a split particle inside
 
     @property
     def head_text(self) -> str:

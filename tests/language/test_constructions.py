@@ -793,3 +793,74 @@ def test_a_thing_left_in_a_state_is_the_verb_of_that_state(library: Library) -> 
     assert texts("leave the lights on", library) == [("ToggleOn", {"theme": "the lights"})]
     assert texts("leave the keys on the table", library) == [
         ("Place", {"theme": "the keys", "goal": "the table"})]
+
+
+def test_taking_a_thing_off_keeps_the_particle_in_the_unit(library: Library) -> None:
+    # words17: "take off" is Pick's (WordNet take_off.v.02 "take away or remove" < remove.v.01): the particle said
+    # alone after the thing is the unit's, not dropped; "off" with a noun after it says where from
+    assert [(f.frame, f.lexical_unit) for f in parse_command("take the lid off", library).frames] == [
+        ("Pick", "take off")]
+    assert texts("take off the lid", library) == [("Pick", {"theme": "the lid"})]
+    assert texts("take the lid off the pot", library) == [("Pick", {"theme": "the lid", "source": "the pot"})]
+    # a particle before "to" and a verb in any form is the next verb's: "to rinsed off"
+    assert parse_command("take the egg out of the bin to rinsed off in the sink", library).frames[0].lexical_unit == \
+        "take"
+
+
+def test_a_split_particle_ends_the_thing_before_where_it_is(library: Library) -> None:
+    # words17: the particle of a split unit is the verb's, not the thing's words; a place said after it still
+    # describes the thing (a toggle frame has no place of its own), as when the particle is said joined
+    assert texts("leave the light on in the hall", library) == [("ToggleOn", {"theme": "the light in the hall"})]
+    assert texts("switch the lights off in the bedroom", library) == \
+        texts("switch off the lights in the bedroom", library) == [
+            ("ToggleOff", {"theme": "the lights in the bedroom"})]
+    assert texts("pick the cup up from the table", library) == [("Pick", {"theme": "the cup", "source": "the table"})]
+    # a particle inside the place's own words is not cut: "the third cabinet down"
+    assert texts("put it in the third cabinet down on the left", library)[0][1]["goal"] == \
+        "the third cabinet down on the left"
+
+
+def test_two_wished_states_are_two_instructions(library: Library) -> None:
+    # words17: a wish's state said before "and" ends the wish; the second thing and state are a wish said without
+    # its verb ("I'd like the blinds closed and the lights off" was Bring of "the blinds closed and the lights")
+    assert texts("I'd like the blinds closed and the lights off", library) == [
+        ("Close", {"theme": "the blinds"}), ("ToggleOff", {"theme": "the lights"})]
+    assert texts("I want the door open, and the radio on please", library) == [
+        ("Open", {"theme": "the door"}), ("ToggleOn", {"theme": "the radio"})]
+    assert texts("I'd like the blinds closed", library) == [("Close", {"theme": "the blinds"})]
+
+
+def test_a_light_verb_with_an_action_no_frame_does_is_refused_at_the_action(library: Library) -> None:
+    # words17: "give the floor a quick sweep" was Give(recipient the floor, theme a sweep); a noun used mostly as a
+    # verb that no frame has is an action asked, refused at the noun, while a frame's noun is that frame
+    with pytest.raises(CommandError) as refused:
+        parse_command("give the floor a quick sweep", library)
+    assert refused.value.column == len("give the floor a quick ") + 1 and "'sweep'" in refused.value.message
+    assert texts("give the floor a wipe", library) == [("Clean", {"theme": "the floor"})]
+    assert texts("give the windows a good scrub", library) == [("Clean", {"theme": "the windows"})]
+    assert [f for f, _ in texts("give the dog a bone", library)] == ["Give"]     # "bone": mostly a noun
+    assert [f for f, _ in texts("give me a hug", library)] == ["Give"]           # a person keeps "give"
+
+
+def test_staying_near_a_person_follows_them_and_near_a_place_waits(library: Library) -> None:
+    # words17: "stay with" is Follow's; the same verb with "near"/"close to"/"next to" a person keeps near someone
+    # who moves (Follow); a place keeps the verb's own frame
+    assert texts("stay close to Morgan", library) == [("Follow", {"theme": "Morgan"})]
+    assert texts("stay near me", library) == [("Follow", {"theme": "me"})]
+    assert texts("stay near the door", library) == [("Wait", {"ground": "the door"})]
+    assert [f for f, _ in texts("go near Sam", library)] == ["Go"]       # "go with" is no unit: going there
+
+
+def test_a_state_particle_no_unit_takes_is_refused_not_dropped(library: Library) -> None:
+    # words17: "on"/"off" alone after the thing, ending the clause, with a verb none of whose units ends in it,
+    # names a state the frame would drop ("pop the telly on" was Place of the telly): refused at the particle
+    with pytest.raises(CommandError) as refused:
+        parse_command("pop the telly on, would you", library)
+    assert refused.value.column == len("pop the telly ") + 1 and "'on'" in refused.value.message
+    with pytest.raises(CommandError):
+        parse_command("bring the cup off", library)
+    with pytest.raises(CommandError):
+        parse_command("put your coat on", library)     # a coat is no toggleable thing: no "put on" (was Place)
+    assert texts("pick up a cup with the lamp on", library)[0][0] == "Pick"       # describes the lamp
+    assert [f for f, _ in texts("put the kettle on", library)] == ["ToggleOn"]   # a unit's own particle
+    assert [f for f, _ in texts("take the lid off", library)] == ["Pick"]

@@ -620,8 +620,18 @@ def _wished_state(s: State, i: int) -> Match | None:
     """"*I'd like* the blinds closed", "I want the lights off", "we'd like the door open": a wish for a thing to
     be in a state, a phrase and then one word of state ending the sentence, is the verb whose result the state
     is (:func:`_state_unit`), as "make sure the door is closed" is; the wish is the verb, the state its split
-    particle."""
-    return _state_after(s, i, _phrase(s, i, _WISHED_STATES))
+    particle. A state said before "and"/"then" ends the wish there: "I'd like the blinds closed *and* the lights
+    off" is two wishes, the second said without its verb (close the blinds, turn the lights off)."""
+    n = _phrase(s, i, _WISHED_STATES)
+    stop = _clause_stop(s, i + n) if n else len(s.words)
+    if n and stop < _sentence_end(s, i + n):
+        found = _state_after(s, i, n, stop)
+        end = stop
+        while end > i + n and s.words[end - 1].lower in (",", "please"):
+            end -= 1
+        if found is not None and found.particle and found.particle[0] == end - 1:
+            return found
+    return _state_after(s, i, n)
 
 
 def _resultative(s: State, i: int) -> Match | None:
@@ -1063,6 +1073,7 @@ WISHED_STATE = Rule("a wish for a thing's state", _wished_state, (
     Example("I need the door open", "I need", Tag.VERB),
     Example("we'd like the lights on in the living room", "on", Tag.PARTICLE),
     Example("I'd like my tea hot", "hot", Tag.PARTICLE),
+    Example("I want the door open and the radio on", "open", Tag.PARTICLE),
 ), first_words(_WISHED_STATES), "'I'd like X closed', 'I want X off': close X, turn X off")
 RESULTATIVE = Rule("a thing left in a state", _resultative, (
     Example("leave the door open", "leave", Tag.VERB),
