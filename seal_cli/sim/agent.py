@@ -147,7 +147,7 @@ class Agent:
                  questions: Mapping[Binding, Question] | None = None, clock: datetime | None = None,
                  search_end: float | None = None,
                  put_away: Mapping[Binding, Callable[[str | None], str | None]] | None = None,
-                 put_back: Iterable[Binding] = ()) -> None:
+                 put_back: Iterable[Binding] = (), told: Mapping[str, Sequence[str]] | None = None) -> None:
         self.scene = scene
         self.world = scene.world
         self.grid = scene.grid
@@ -192,6 +192,12 @@ class Agent:
         self.looks: list[tuple[float, float, float]] = []
         self.inspected: set[str] = set()
         """Places the robot has looked into or onto from within reach: it has seen all they hold."""
+        self.told: dict[str, tuple[str, ...]] = {class_key(k): tuple(v) for k, v in (told or {}).items()}
+        """Where the command's words say each thing is, by class ("a beer from the fridge": beer → fridge_1;
+        :func:`~seal_cli.sefm.relations.said_where`): looked at first (the search's beliefs are conditioned on
+        it; the whole-house search for what nothing else places starts there)."""
+        self.missed: set[str] = set()
+        """Places the command said a thing was in, looked into without finding it (said once)."""
         self.classes = {class_key(k): class_key(v) for k, v in (classes or {}).items()}
         """The class of each thing a command names that is not a class itself (``apple_2``)."""
         self.state = State()
@@ -587,6 +593,43 @@ class Agent:
         source = binding.elements.get("source")
         return self.room(source) if source else None
 
+    def look_into(self, place: str, value: str, binding: Binding, role: str | None, why: str) -> None:
+        """Go within reach of a place, open it if it is shut, and look; closed again when what was sought
+        is not in it. A place it cannot reach is marked so."""
+        cell = self.policy.stand(self, self.known[place])
+        if cell is None:
+            self.unreachable.add(place)
+            return
+        self.drive_to(cell, why)
+        self.world.face(self.known[place].at)
+        if self.known[place].openable and not self.world.items[place].is_open:
+            self.open_to_look(place)
+        self.look()
+        if self.resolve(value, binding, role) is None:
+            self.shut_after(place)
+
+    def said_places(self, value: str) -> list[str]:
+        """The places of the map the command says a thing of this kind is in or on (:attr:`told`: "a beer from
+        the fridge": fridge_1; a place class: every place of it), where it is looked for first. A room said
+        so is :meth:`source_room`'s."""
+        out = []
+        for where in self.told.get(self.class_of(value), ()):
+            if self._is_place(where):
+                out.append(where)
+            elif self.room(where) is None:
+                out += sorted(k.id for k in self.known.values() if not k.movable and k.cls == where
+                              and self._is_place(k.id))
+        return [p for p in out if p in self.known]
+
+    def missed_where_said(self, value: str) -> None:
+        """Say once, per place, that the thing sought is not where the command said it was, once the robot
+        has looked into that place (it searches on elsewhere)."""
+        for place in self.said_places(value):
+            if place in self.inspected and place not in self.missed:
+                self.missed.add(place)
+                self.say("search", f"no {self.said(value)} in {place}, where the command said it was; "
+                         "looks elsewhere", target=value)
+
     def look_in(self, room: Any, value: str, binding: Binding, role: str | None) -> Outcome | None:
         """Look for a thing in the room it is to be taken from, until one of its kind is known there:
         all over the room a view at a time (:meth:`survey`, at most :data:`SURVEY_VIEWS` views), then
@@ -608,14 +651,7 @@ class Agent:
             if place is None:
                 return Fatal(False, f"no {self.said(value)} in the {room.name.replace('_', ' ')}",
                              Reason.NOT_FOUND, value)
-            cell = self.policy.stand(self, self.known[place])
-            if cell is not None:
-                self.drive_to(cell, f"goes to {place}")
-                self.world.face(self.known[place].at)
-                self.open_to_look(place)
-                self.look()
-                if self.resolve(value, binding, role) is None:
-                    self.shut_after(place)
+            self.look_into(place, value, binding, role, f"goes to {place}")
             if place not in self.opened:  # out of reach, or it would not open: not tried again
                 self.unreachable.add(place)
         return None
@@ -769,6 +805,7 @@ class Agent:
                 if (ended := self.look_in(source, value, binding, role)) is not None:
                     return ended
                 continue
+            self.missed_where_said(value)
             if (ended := self.look_once(value, binding)) is not None:
                 return ended
 
@@ -844,6 +881,14 @@ class Agent:
         (:meth:`survey`), then the rest of the house outside every room the same way, within the
         run's budget. One line a room; the drives and looks of the survey are details. An Outcome
         once the house has been searched."""
+        role = next((r for r, v in binding.values if v == value), None)
+        said = [p for p in self.said_places(value) if p not in self.inspected and p not in self.unreachable]
+        if self.sweep is None and said:      # nothing tells where to look but the command: there first
+            self.say("search", f"looks for {self.said(value)} where the command said: {said[0]}", target=value)
+            self.look_into(said[0], value, binding, role, f"goes to {said[0]}")
+            if said[0] not in self.inspected:
+                self.unreachable.add(said[0])
+            return None
         if self.sweep is None:
             self.sweep = [*self.room_tour(self.scene.map.rooms), _Rest(self.scene.map.rooms)]
             self.swept = []

@@ -242,7 +242,7 @@ class SeFMPolicy(Policy):
         if self.sefm is None or key != self.key:
             state = self._state(agent)
             self.sefm = SeFM(self.map, bindings, state, agent.rng,
-                             SeFMConfig(particles=self.particles, bandwidth=self.bandwidth))
+                             SeFMConfig(particles=self.particles, bandwidth=self.bandwidth), said=agent.told)
             self.key = key
             for pose, seen in self.history:
                 self.sefm.update(pose, seen, state)
