@@ -605,6 +605,8 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         _to_recipient(frame, values, things)
         _check_types(frame, values, evoked.elements, things, parse.text)
         kept = {} if placed_back else _put_away(frame, evoked, values, things, parse.text)
+        if not kept and not placed_back:
+            _unsaid_goal(frame, evoked, values, things, parse.text)
         bindings.extend(_where_said_first(frame, evoked, values, library, things, parse.text))
         earlier.append(values)
         roles = [r for r in frame.roles if r in values]
@@ -721,6 +723,42 @@ def _put_away(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]
                            f"{listed}; say where to put it", evoked.elements.get("theme"), text)
         kept[theme] = spot.name
     return kept
+
+
+def _unsaid_goal(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]], things: Things,
+                 text: str) -> None:
+    """Refuse, on a map, a frame that puts its theme at a goal nobody said: the parser's guess from the verb's
+    statistics alone ("put the hammer": people who leave out where mostly meant a side table, whatever the
+    thing), which is no place the command or the thing says. "Put it where?", naming a place such a thing is
+    kept (or one of the map's places) as an example. A storing verb ("put away") or "back" chooses its own goal
+    (:func:`_put_away`, :func:`_back_to`); a goal the command or a previous clause says is never refused, nor a
+    Place the parser adds as an inferred step (ALFRED's scope, said as such)."""
+    from seal_cli.planning.keeping import kept_place, spots_of
+
+    m = things.map
+    goal = evoked.elements.get("goal")
+    if (m is None or goal is None or not goal.default or goal.text is not None or evoked.inferred is not None
+            or "theme" not in values or not any(a.name == "place" and "goal" in a.args for a in frame.actions)
+            or stores(frame, evoked.lexical_unit)):
+        return
+    theme = values["theme"][0]
+    lies = next((f.args[1] for f in things.facts if f.predicate == "in" and f.args[0] == theme), None)
+    spots = [s for s in spots_of(m) if s.name != lies]       # an example of somewhere else to put it
+    spot = kept_place(things.taxonomy, m.priors, things.class_of(theme), spots, near=m.robot.xy)
+    example = spot.name if spot is not None else next((s.name for s in spots), None)
+    verb = " ".join(words_of(evoked.lexical_unit))
+    phrase = evoked.elements.get("theme")
+    said = phrase.text if phrase is not None and phrase.text else f"the {_words(things.class_of(theme))}"
+    where = m.place(example) if example else None
+    on = "in" if where is not None and where.openable else "on"
+    hint = f" (\"{verb} the {_words(things.class_of(theme))} {on} the {_words(where.cls)}\")" if where else ""
+    raise _located(f"{verb} {said} where? the command says no place to {verb} it; say where{hint}",
+                   evoked.elements.get("theme"), text)
+
+
+def _words(cls: str) -> str:
+    """A class as words ("side_table": side table)."""
+    return " ".join(class_words(cls)) or cls
 
 
 def _carried(frame: Frame, role: str) -> bool:
