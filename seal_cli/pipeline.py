@@ -188,7 +188,7 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
     agent = Agent(scene_from_map(m, library), library, policy, rng=rng, budget=budget, observers=observers,
                   classes=problem.state.classes, sweeper=lambda: make_policy("coverage"), questions=questions,
                   clock=clock, search_end=search_end, put_away=kept, put_back=problem.put_back,
-                  told=_told(problem, library))
+                  told=_told(problem, library), names=problem.names)
     executed = [b for p in parses[:-1] for b in build_problem(p, library, map=m.known()).commanded]
     warnings = [*problem.warnings, *unchecked_conditions(parses[-1])]
     for warning in warnings:

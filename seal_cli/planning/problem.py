@@ -39,7 +39,7 @@ import itertools
 import math
 import re
 from collections.abc import Iterable, Iterator, Mapping, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
 from seal_cli.errors import SealError, Where
@@ -98,6 +98,8 @@ class Problem:
     """The commanded frames that put a thing "back" when the map did not say where it lay ("take the cup and
     put it back" in ``seal run``): their goal is where such a thing is kept until the robot has taken it, then
     where it took it from."""
+    names: Mapping[str, str] = field(default_factory=dict)
+    """How each person the command names is said, by id ("raj": Raj, as the map writes him)."""
 
 
 class Things:
@@ -125,6 +127,9 @@ class Things:
         """The people the command names."""
         self.roles_said: set[str] = set()
         """The people the command calls by a noun ("the nurse"), not by a name."""
+        self.called: dict[str, str] = {}
+        """How each person the command names is said: as the map writes them ("Raj"), else as the command
+        does, a name capitalised ("anna": Anna); by id."""
         self.synonyms: Mapping[str, tuple[str, ...]] = {}
         """More names of classes (a vocabulary file's), by class key."""
         self.put_away: list[Binding] = []
@@ -396,7 +401,7 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
     or an appliance the map lacks only when its words name that class ("bring me the sofa"), never by a
     learned guess nor by the head's kind ("bring me the laptop": a laptop opens and switches on, and
     is carried)."""
-    from seal_cli.planning.grounding import DROPPED, HERE, SPEAKER_WORDS, person_value
+    from seal_cli.planning.grounding import DROPPED, HERE, SPEAKER_WORDS, person_name, person_value
 
     names = things.names
     assert names is not None and things.map is not None
@@ -417,6 +422,8 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
             things.roles_said.add(class_key(phrase.head))     # "the nurse" on a map without one
         value = person_value(phrase.text or phrase.head, phrase.head, {p.key: p for p in things.map.people})
         things.people.add(value)    # only the map's people are of class person: another is searched for by name
+        if value not in (SPEAKER, "person") and value not in things.roles_said:
+            things.called.setdefault(value, person_name(things.map, value, phrase.text or phrase.head))
         return (value,)
     if category in ("message", "question") or not phrase.text:
         return None
@@ -873,7 +880,7 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
         changed.update((f.positive, text) for f in binding.postconditions)
     return Problem(parse.text, tuple(commanded), state, tuple(unknown_to_map(commanded, things)) if map else (),
                    tuple(b for b in things.put_away if b in commanded),
-                   tuple(b for b in things.put_back if b in commanded))
+                   tuple(b for b in things.put_back if b in commanded), dict(things.called))
 
 
 def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:
@@ -895,7 +902,7 @@ def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:
             if value in things.people or cls == "person":
                 if value not in placed and value != "person":     # "a person", "anyone": whoever is there
                     called = f"is the {value.replace('_', ' ')} (no person has that role)" \
-                        if value in things.roles_said else f"is called {value}"
+                        if value in things.roles_said else f"is called {things.called.get(value, value)}"
                     warnings.setdefault(f"nobody on the map {m.name} {called}: seal run will search "
                                         "the whole house for them", None)
             elif cls not in known and cls not in unknown:    # said once, where it is first looked for

@@ -147,7 +147,8 @@ class Agent:
                  questions: Mapping[Binding, Question] | None = None, clock: datetime | None = None,
                  search_end: float | None = None,
                  put_away: Mapping[Binding, Callable[[str | None], str | None]] | None = None,
-                 put_back: Iterable[Binding] = (), told: Mapping[str, Sequence[str]] | None = None) -> None:
+                 put_back: Iterable[Binding] = (), told: Mapping[str, Sequence[str]] | None = None,
+                 names: Mapping[str, str] | None = None) -> None:
         self.scene = scene
         self.world = scene.world
         self.grid = scene.grid
@@ -198,6 +199,12 @@ class Agent:
         it; the whole-house search for what nothing else places starts there)."""
         self.missed: set[str] = set()
         """Places the command said a thing was in, looked into without finding it (said once)."""
+        self.names: dict[str, str] = {class_key(p.name): p.name for p in getattr(scene.map, "people", ())}
+        self.names |= {class_key(k): v for k, v in (names or {}).items() if class_key(k) != SPEAKER}
+        """How each person is said, by id: as the map writes them, or the command names them ("goes to Raj")."""
+        keys = sorted({f for k in self.names for f in (k, k.replace("_", " "))}, key=len, reverse=True)
+        self._names_re = re.compile(r"(?<![\w=])(?:" + "|".join(map(re.escape, keys)) + r")(?![\w=(])") \
+            if keys else None
         self.classes = {class_key(k): class_key(v) for k, v in (classes or {}).items()}
         """The class of each thing a command names that is not a class itself (``apple_2``)."""
         self.state = State()
@@ -248,7 +255,16 @@ class Agent:
 
     # -- records -----------------------------------------------------------------------------
 
+    def named(self, text: str) -> str:
+        """Text with each person said as :attr:`names` says ("handed drill_1 to Raj"); a frame's element value
+        (``recipient=raj``) stays an id."""
+        if self._names_re is None:
+            return text
+        return self._names_re.sub(lambda m: self.names[class_key(m.group(0))], text)
+
     def say(self, kind: str, text: str, **data: Any) -> None:
+        if kind not in ("plan", "frame"):
+            text = self.named(text)
         if self.detail and kind in DETAIL_KINDS:
             data["detail"] = True       # a step of a survey said a line for: kept, not narrated
         if kind in WORDED_KINDS:
@@ -506,6 +522,7 @@ class Agent:
     def _result(self, completed: bool, reason: str, plan: list[str], executed: list[str] | None = None,
                 why: Reason = Reason.OK) -> Result:
         answer = "; ".join(self.answers) if self.answers else None
+        reason = self.named(reason)
         return Result(completed, reason, self.world.robot.path_m, self.world.step, plan, executed or [],
                       self.records, answer, why=why if not completed else Reason.OK)
 
@@ -1165,6 +1182,7 @@ class Agent:
 
     def answer(self, text: str) -> None:
         """Keep what the robot found out for the question (said once)."""
+        text = self.named(text)
         if text not in self.answers:
             self.answers.append(text)
             self.say("answer", f"answer: {text}", answer=text)
@@ -1174,6 +1192,7 @@ class Agent:
         did instead of the world's own words (the answer it gives, not the message's name)."""
         outcome = self.world.act(name, *(a if self.is_person(a) else self.class_of(a) for a in args))
         text = said if said is not None and outcome.ok else outcome.message
+        text = self.named(text)
         again = text in {r.text for r in self.records[-3:]} or any(text.endswith(f": {a}") for a in self.answers) \
             or name == "search" and outcome.ok and bool(self.answers)     # the answer said where it is
         # "sees spoon_1" said by the look just now, "says: <the answer>": kept, not narrated twice
