@@ -296,7 +296,8 @@ def _unnamed_kind(phrase: Phrase, map: Map) -> str:
 
 
 def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], things: Things,
-            text: str, category: str = "thing", asked: bool = False, carried: bool = False) -> tuple[str, ...]:
+            text: str, category: str = "thing", asked: bool = False, carried: bool = False,
+            gone_to: bool = False) -> tuple[str, ...]:
     """The things a phrase names: its antecedent's for a pronoun, else the map's thing it calls,
     else its class (counted if asked); every conjunct's for a coordination. ``asked``: the phrase is
     what a question asks about ("how many chairs ...?", "is there a chair ...?"), so a fixed thing
@@ -306,7 +307,7 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
 
     if phrase.conjuncts:        # "the apple and the pear": both
         return tuple(dict.fromkeys(v for c in phrase.conjuncts
-                                   for v in _values(c, earlier, things, text, category, asked, carried)))
+                                   for v in _values(c, earlier, things, text, category, asked, carried, gone_to)))
     if phrase.refers_to is not None:
         index, role = phrase.refers_to
         if 0 <= index < len(earlier) and role in earlier[index]:
@@ -326,7 +327,8 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
             return (things.name(things.held),)
         raise _located(f"cannot tell what {phrase.text!r} refers to: nothing before it in the command fits",
                        phrase, text)
-    if things.names is not None and (on_map := _on_map(phrase, things, text, category, asked, carried)) is not None:
+    if things.names is not None and (on_map := _on_map(phrase, things, text, category, asked, carried,
+                                                       gone_to)) is not None:
         return on_map
     value = phrase.cls or phrase.head
     if category in ("message", "question"):    # what is said, as a name: "what's on it?" what_s_on_it
@@ -394,8 +396,8 @@ def _names(phrase: Phrase, cls: str, things: Things) -> bool:
     return any(noun_lemma(class_words(n)[-1]) in said for n in names if class_words(n))
 
 
-def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: bool = False, carried: bool = False
-            ) -> tuple[str, ...] | None:
+def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: bool = False, carried: bool = False,
+            gone_to: bool = False) -> tuple[str, ...] | None:
     """The map's person, room or place a phrase names (see :mod:`seal_cli.planning.grounding`);
     None for an object, which the robot must find. A thing to carry (``carried``) is refused as furniture
     or an appliance the map lacks only when its words name that class ("bring me the sofa"), never by a
@@ -442,6 +444,12 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
     refused = None if asked else names.refusal(phrase.text, said)
     if refused is not None:
         raise _located(refused.message, phrase, text)
+    if gone_to and not asked and not where_words(phrase.text) and _unheard_of(phrase, things):
+        m = things.map
+        what = " ".join(words_of(phrase.text)) or phrase.head
+        raise _located(f"the {m.name} has no {what} (no room, place or person of the map is called so, and "
+                       f"no kind of thing it knows of); its rooms are {', '.join(m.room_names) or 'none'}",
+                       phrase, text)
     if not asked and category in FIXTURE_TYPES and not where_words(phrase.text) and not _kinds_known_of(phrase, things):
         m = things.map
         tax = things.taxonomy
@@ -456,6 +464,23 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
                        f"opens or switches is not searched for); what it knows will {FIXTURE_TYPES[category]}: "
                        f"{', '.join(places) or 'nothing'}", phrase, text)
     return None
+
+
+def _gone_to(frame: Frame, role: str) -> bool:
+    """Whether a frame only goes (or leads someone) to the element's value, puts nothing in it and takes nothing from
+    it (Go's goal, Find's ground, Guide's goal): a place in the house, never a thing to search for and use."""
+    used = [a for a in frame.actions if role in a.args]
+    return (frame.element(role).type == "location" and bool(used) and all(a.name in ("navigate", "lead") for a in used)
+            and not any(role in f.args for f in frame.preconditions))
+
+
+def _unheard_of(phrase: Phrase, things: Things) -> bool:
+    """Whether a phrase names nothing the robot could go to: no kind the map knows (:func:`_kinds_known_of`), no
+    class the parse grounded, and no class the library's taxonomy lists ("the barn", "the pharmacy"; a bag or a
+    box is a thing to search for and put into)."""
+    head = class_key(phrase.head)
+    return (phrase.cls is None and not _kinds_known_of(phrase, things) and head not in things.taxonomy.known_classes
+            and head not in things.taxonomy.by_name and not things.taxonomy.names.get(head))
 
 
 FIXTURE_TYPES = {"openable": "open and close", "toggleable": "switch on and off"}
@@ -578,7 +603,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
             frame = looking(frame)
         asked = _counted_roles(frame) | ({"theme"} if asks_whether(parse.text, evoked) else set())
         values = {role: _values(_sought_where(evoked, role, things), earlier, things, parse.text,
-                                frame.element(role).type, role in asked, _carried(frame, role))
+                                frame.element(role).type, role in asked, _carried(frame, role), _gone_to(frame, role))
                   for role, phrase in evoked.elements.items() if not back_unplaced(phrase)}
         back_later = False
         backs: dict[str, Phrase | None] = {r: p for r, p in evoked.elements.items() if back_unplaced(p)}

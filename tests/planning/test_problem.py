@@ -318,3 +318,19 @@ def test_a_goal_only_the_verbs_statistics_guessed_is_asked_for(library: Library)
     no_map = build_problem(parse, library).commanded
     assert [str(b) for b in no_map] == ["Place(theme=hammer, goal=side_table)"]
     assert [str(b) for b in problem_of_text("put the hammer down", library, map=m).commanded] == ["Place(theme=hammer)"]
+
+
+def test_a_place_to_go_that_nothing_knows_of_is_refused_not_searched_for(library: Library) -> None:
+    """"Go to the barn", "is there a cup in the barn?": a word that names no room, place or person of the map and
+    no kind of thing the map or the library knows is a place the house lacks (it searched the whole house for a
+    barn). Put into or taken from, an unknown word is still a thing to search for ("put the cup in the bag")."""
+    from seal_cli.errors import SealError
+    from seal_cli.maps.formats.map_server import load_map
+
+    m = load_map("farmhouse")
+    for text in ("go to the barn", "is there a cup in the barn?", "guide Joe to the pharmacy"):
+        with pytest.raises(SealError, match=r"the farmhouse has no (barn|pharmacy) .*its rooms are kitchen"):
+            problem_of_text(text, library, map=m)
+    assert [str(b) for b in problem_of_text("put the cup in the bag", library, map=m).commanded] == \
+        ["Place(theme=cup, goal=bag)"]
+    assert [str(b) for b in problem_of_text("go to the lounge", library, map=m).commanded] == ["Go(goal=living_room)"]
