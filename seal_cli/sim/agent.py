@@ -644,7 +644,9 @@ class Agent:
         for place in self.said_places(value):
             if place in self.inspected and place not in self.missed:
                 self.missed.add(place)
-                self.say("search", f"no {self.said(value)} in {place}, where the command said it was; "
+                item = self.world.items[place]
+                on = "in" if self.world.hollow(item) else "on"
+                self.say("search", f"no {self.said(value)} {on} {place}, where the command said it was; "
                          "looks elsewhere", target=value)
 
     def look_in(self, room: Any, value: str, binding: Binding, role: str | None) -> Outcome | None:
