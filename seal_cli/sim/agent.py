@@ -654,12 +654,13 @@ class Agent:
         all over the room a view at a time (:meth:`survey`, at most :data:`SURVEY_VIEWS` views), then
         into its closed receptacles, the nearest first. An Outcome when none is there."""
         views = 0
+        start = len(self.looks)
         while self.resolve(value, binding, role) is None:
             if (stop := self.exhausted()) is not None:
                 return Fatal(False, stop, Reason.BUDGET)
             looked = len(self.looks)
             if views < SURVEY_VIEWS:
-                self.survey(room, views=1)
+                self.survey(room, views=1, announced=len(self.looks) > start)   # "looks all over" said once
                 views += 1
             if len(self.looks) > looked:
                 continue
@@ -668,7 +669,8 @@ class Agent:
                       and bool(room.contains([k.at])[0])]
             place = self.nearest(closed) if closed else None
             if place is None:
-                return Fatal(False, f"no {self.said(value)} in the {room.name.replace('_', ' ')}",
+                seen = " (it sees all of it from where it is)" if len(self.looks) == start else ""
+                return Fatal(False, f"no {self.said(value)} in the {room.name.replace('_', ' ')}{seen}",
                              Reason.NOT_FOUND, value)
             self.look_into(place, value, binding, role, f"goes to {place}")
             if place not in self.opened:  # out of reach, or it would not open: not tried again
@@ -1576,11 +1578,12 @@ class Agent:
         return f"; it knows of no {noun}s anywhere"
 
     def survey(self, room: Any, views: int | None = None, peek: bool = False,
-               until: Callable[[], bool] | None = None) -> Outcome:
+               until: Callable[[], bool] | None = None, announced: bool = False) -> Outcome:
         """Look all over a room: to the nearest part of it not yet seen, until all of it is (at
         most ``views`` views, default :data:`SURVEY_VIEWS`, within the budget); with ``peek``, then
         into each closed receptacle in it not yet looked into. Ok when there was nothing more to
-        see; else why it stopped. ``until``: stop as soon as it holds (what was sought is seen)."""
+        see; else why it stopped. ``until``: stop as soon as it holds (what was sought is seen).
+        ``announced``: "looks all over the room" was said already (a survey a view at a time)."""
         assert self.sweeper is not None
         limit = SURVEY_VIEWS if views is None else views
         sweep = self.sweeper()
@@ -1602,7 +1605,7 @@ class Agent:
             return float(seen[seeable].mean()) if seeable.any() else 1.0
 
         ended = Outcome(False, f"it saw {100 * share():.0f} % of it in {limit} views")
-        said = False
+        said = announced
         for _ in range(limit):
             if until is not None and until():
                 return Outcome(True, "saw what it looked for")
