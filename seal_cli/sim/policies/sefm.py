@@ -256,6 +256,7 @@ class SeFMPolicy(Policy):
             self._news = True
         if self.planner is not None:
             self.planner.observe(agent, see=False)
+            self._spent_views(agent)
         pose = agent.world.robot.pose
         self.history.append((pose, tuple(detections)))
         if self.sefm is None and self.keep_clouds and agent.steps:
@@ -264,6 +265,24 @@ class SeFMPolicy(Policy):
             self.sefm.update(pose, detections, self._state(agent))
             if self.keep_clouds:
                 self.snapshot(agent)
+
+    def _spent_views(self, agent: Agent) -> None:
+        """The whole-plan search's views that SeFM would not count as new, once the robot has looked from within
+        ``view_step`` of them (all round: the heading does not matter), are not chosen: its belief does not fall
+        there (negative information counts once per view), so the model would expect to find there what is
+        left of the belief where it has just looked — the robot edged a few centimetres at a time, looking
+        again, after a place the command named turned out empty. A view that opens a shut place stays."""
+        from seal_cli.sefm.object_beliefs import ObjectModel
+
+        if self.map.sensor.fov_deg < 360:
+            return
+        x, y = agent.world.robot.pose[:2]
+        step = ObjectModel.view_step
+        for c in self.planner.candidates:
+            if c.open is None and c.cell not in self.planner.used:
+                px, py = agent.grid.point(c.cell)
+                if math.hypot(px - x, py - y) <= step:
+                    self.planner.used.add(c.cell)
 
     def snapshot(self, agent: Agent) -> None:
         """The clouds now: the frame at hand, the commanded frame it serves, and every object believed in."""
