@@ -115,11 +115,12 @@ def draw_map(ax: Any, m: Map, *, rooms: bool = True, places: bool = True, object
     ax.tick_params(labelsize=7)
 
 
-def legend_below(ax: Any, **options: Any) -> None:
-    """The axes' legend under the map, outside it, so no cloud of particles covers it."""
+def legend_below(ax: Any, columns: int = 4, **options: Any) -> None:
+    """The axes' legend under the map, outside it, so no cloud of particles covers it; at most ``columns`` wide
+    (fewer where panels stand side by side, so that their legends do not run into each other)."""
     handles, labels = ax.get_legend_handles_labels()
     if handles:
-        ax.legend(handles, labels, loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=min(len(handles), 4),
+        ax.legend(handles, labels, loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=min(len(handles), columns),
                   fontsize=7, frameon=False, **options)
 
 

@@ -717,18 +717,21 @@ class Map:
         return np.column_stack([np.clip(points[:, 0], xmin, xmax), np.clip(points[:, 1], ymin, ymax)])
 
     # -- priors ------------------------------------------------------------------------------------
-    def prior(self, cls: str) -> Prior:
-        """The prior over where objects of ``cls`` are (see :mod:`seal_cli.maps.priors`); cached per class."""
+    def prior(self, cls: str, said: Sequence[str] = ()) -> Prior:
+        """The prior over where objects of ``cls`` are (see :mod:`seal_cli.maps.priors`); cached per class.
+        ``said``: rooms, places or place classes a command names as where the thing is ("the milk from the
+        larder"), which take :data:`~seal_cli.maps.priors.SAID` of the mass."""
         from seal_cli.maps.priors import build_prior
 
         key = class_key(cls)
+        told = tuple(sorted(set(said)))
         cache = self._prior_cache
-        if key not in cache:
-            cache[key] = build_prior(self, key)
-        return cache[key]
+        if (key, told) not in cache:
+            cache[key, told] = build_prior(self, key, said=told)
+        return cache[key, told]
 
     @cached_property
-    def _prior_cache(self) -> dict[str, Prior]:
+    def _prior_cache(self) -> dict[tuple[str, tuple[str, ...]], Prior]:
         return {}
 
     def target_cells(self, target: str) -> NDArray[np.intp]:

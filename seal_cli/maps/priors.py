@@ -37,10 +37,16 @@ from seal_cli.maps.geometry import OUTSIDE, as_points
 if TYPE_CHECKING:
     from seal_cli.maps.model import Map
 
-__all__ = ["FLOOR", "Prior", "build_prior", "target_cells"]
+__all__ = ["FLOOR", "SAID", "Prior", "build_prior", "said_masses", "target_cells"]
 
 FLOOR = 0.02
 """The share of every prior spread uniformly over all free space."""
+
+SAID = 0.9
+"""How much a command's word for where a thing is ("the milk from the larder") is believed: the share of
+the thing's prior put on the targets the command names, the map's prior keeping the rest. The speaker is
+mostly right, not always: what they name is looked at first unless something else is much nearer, and the
+search goes on where the map's prior says once it is not there (docs/planning.md, "This round (e2e15)")."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -161,11 +167,24 @@ def target_cells(m: Map, target: str) -> NDArray[np.intp]:
     return np.flatnonzero(near)
 
 
-def build_prior(m: Map, cls: str, floor: float = FLOOR) -> Prior:
-    """The prior of ``cls`` (a class key) on ``m``; see the module docstring."""
+def said_masses(masses: Mapping[str, float], said: tuple[str, ...], weight: float = SAID) -> dict[str, float]:
+    """A class's prior masses per target conditioned on a command that says where the thing is: ``weight``
+    shared equally among the targets said, the masses the map gives (and the rest they leave) scaled by
+    ``1 − weight``. A target the map already names keeps its share besides."""
+    out = {target: (1.0 - weight) * mass for target, mass in masses.items()}
+    for target in said:
+        out[target] = out.get(target, 0.0) + weight / len(said)
+    return out
+
+
+def build_prior(m: Map, cls: str, floor: float = FLOOR, said: tuple[str, ...] = ()) -> Prior:
+    """The prior of ``cls`` (a class key) on ``m``; see the module docstring. ``said``: the targets a command
+    names as where the thing is (:func:`said_masses`)."""
     parts: dict[str, tuple[NDArray[np.intp], float]] = {}
     masses: dict[str, float] = {}
-    for target, mass in m.priors.get(cls, {}).items():
+    given = m.priors.get(cls, {})
+    said = tuple(t for t in said if len(m.target_cells(t)))
+    for target, mass in (said_masses(given, said) if said else given).items():
         cells = m.target_cells(target)
         if mass <= 0 or len(cells) == 0:
             continue

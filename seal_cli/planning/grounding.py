@@ -329,6 +329,16 @@ def kind_of(taxonomy: Taxonomy, cls: str, category: str) -> bool | None:
     return known
 
 
+def person_name(m: Map | None, value: str, said: str) -> str:
+    """How a person is said in what the robot tells: as the map writes them ("Raj"), else their name as the
+    command says it, capitalised as names are ("tell anna hello": Anna)."""
+    person = m.person(value) if m is not None else None
+    if person is not None:
+        return str(person.name)
+    words = [w for w in said.split() if w.lower() not in DROPPED and not w.lower().endswith("'s")] or [value]
+    return " ".join(w if any(c.isupper() for c in w) else w.capitalize() for w in words)
+
+
 def person_value(text: str, head: str, people: Mapping[str, object] | None = None) -> str:
     """The id a phrase for a person takes: the speaker's for "me", else the name's key."""
     if head.lower() in SPEAKER_WORDS:

@@ -39,7 +39,7 @@ import itertools
 import math
 import re
 from collections.abc import Iterable, Iterator, Mapping, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
 from seal_cli.errors import SealError, Where
@@ -98,6 +98,8 @@ class Problem:
     """The commanded frames that put a thing "back" when the map did not say where it lay ("take the cup and
     put it back" in ``seal run``): their goal is where such a thing is kept until the robot has taken it, then
     where it took it from."""
+    names: Mapping[str, str] = field(default_factory=dict)
+    """How each person the command names is said, by id ("raj": Raj, as the map writes him)."""
 
 
 class Things:
@@ -125,6 +127,9 @@ class Things:
         """The people the command names."""
         self.roles_said: set[str] = set()
         """The people the command calls by a noun ("the nurse"), not by a name."""
+        self.called: dict[str, str] = {}
+        """How each person the command names is said: as the map writes them ("Raj"), else as the command
+        does, a name capitalised ("anna": Anna); by id."""
         self.synonyms: Mapping[str, tuple[str, ...]] = {}
         """More names of classes (a vocabulary file's), by class key."""
         self.put_away: list[Binding] = []
@@ -291,7 +296,8 @@ def _unnamed_kind(phrase: Phrase, map: Map) -> str:
 
 
 def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], things: Things,
-            text: str, category: str = "thing", asked: bool = False, carried: bool = False) -> tuple[str, ...]:
+            text: str, category: str = "thing", asked: bool = False, carried: bool = False,
+            gone_to: bool = False) -> tuple[str, ...]:
     """The things a phrase names: its antecedent's for a pronoun, else the map's thing it calls,
     else its class (counted if asked); every conjunct's for a coordination. ``asked``: the phrase is
     what a question asks about ("how many chairs ...?", "is there a chair ...?"), so a fixed thing
@@ -301,7 +307,7 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
 
     if phrase.conjuncts:        # "the apple and the pear": both
         return tuple(dict.fromkeys(v for c in phrase.conjuncts
-                                   for v in _values(c, earlier, things, text, category, asked, carried)))
+                                   for v in _values(c, earlier, things, text, category, asked, carried, gone_to)))
     if phrase.refers_to is not None:
         index, role = phrase.refers_to
         if 0 <= index < len(earlier) and role in earlier[index]:
@@ -321,7 +327,8 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
             return (things.name(things.held),)
         raise _located(f"cannot tell what {phrase.text!r} refers to: nothing before it in the command fits",
                        phrase, text)
-    if things.names is not None and (on_map := _on_map(phrase, things, text, category, asked, carried)) is not None:
+    if things.names is not None and (on_map := _on_map(phrase, things, text, category, asked, carried,
+                                                       gone_to)) is not None:
         return on_map
     value = phrase.cls or phrase.head
     if category in ("message", "question"):    # what is said, as a name: "what's on it?" what_s_on_it
@@ -389,14 +396,14 @@ def _names(phrase: Phrase, cls: str, things: Things) -> bool:
     return any(noun_lemma(class_words(n)[-1]) in said for n in names if class_words(n))
 
 
-def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: bool = False, carried: bool = False
-            ) -> tuple[str, ...] | None:
+def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: bool = False, carried: bool = False,
+            gone_to: bool = False) -> tuple[str, ...] | None:
     """The map's person, room or place a phrase names (see :mod:`seal_cli.planning.grounding`);
     None for an object, which the robot must find. A thing to carry (``carried``) is refused as furniture
     or an appliance the map lacks only when its words name that class ("bring me the sofa"), never by a
     learned guess nor by the head's kind ("bring me the laptop": a laptop opens and switches on, and
     is carried)."""
-    from seal_cli.planning.grounding import DROPPED, HERE, SPEAKER_WORDS, person_value
+    from seal_cli.planning.grounding import DROPPED, HERE, SPEAKER_WORDS, person_name, person_value
 
     names = things.names
     assert names is not None and things.map is not None
@@ -417,6 +424,8 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
             things.roles_said.add(class_key(phrase.head))     # "the nurse" on a map without one
         value = person_value(phrase.text or phrase.head, phrase.head, {p.key: p for p in things.map.people})
         things.people.add(value)    # only the map's people are of class person: another is searched for by name
+        if value not in (SPEAKER, "person") and value not in things.roles_said:
+            things.called.setdefault(value, person_name(things.map, value, phrase.text or phrase.head))
         return (value,)
     if category in ("message", "question") or not phrase.text:
         return None
@@ -435,6 +444,12 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
     refused = None if asked else names.refusal(phrase.text, said)
     if refused is not None:
         raise _located(refused.message, phrase, text)
+    if gone_to and not asked and not where_words(phrase.text) and _unheard_of(phrase, things):
+        m = things.map
+        what = " ".join(words_of(phrase.text)) or phrase.head
+        raise _located(f"the {m.name} has no {what} (no room, place or person of the map is called so, and "
+                       f"no kind of thing it knows of); its rooms are {', '.join(m.room_names) or 'none'}",
+                       phrase, text)
     if not asked and category in FIXTURE_TYPES and not where_words(phrase.text) and not _kinds_known_of(phrase, things):
         m = things.map
         tax = things.taxonomy
@@ -449,6 +464,23 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
                        f"opens or switches is not searched for); what it knows will {FIXTURE_TYPES[category]}: "
                        f"{', '.join(places) or 'nothing'}", phrase, text)
     return None
+
+
+def _gone_to(frame: Frame, role: str) -> bool:
+    """Whether a frame only goes (or leads someone) to the element's value, puts nothing in it and takes nothing from
+    it (Go's goal, Find's ground, Guide's goal): a place in the house, never a thing to search for and use."""
+    used = [a for a in frame.actions if role in a.args]
+    return (frame.element(role).type == "location" and bool(used) and all(a.name in ("navigate", "lead") for a in used)
+            and not any(role in f.args for f in frame.preconditions))
+
+
+def _unheard_of(phrase: Phrase, things: Things) -> bool:
+    """Whether a phrase names nothing the robot could go to: no kind the map knows (:func:`_kinds_known_of`), no
+    class the parse grounded, and no class the library's taxonomy lists ("the barn", "the pharmacy"; a bag or a
+    box is a thing to search for and put into)."""
+    head = class_key(phrase.head)
+    return (phrase.cls is None and not _kinds_known_of(phrase, things) and head not in things.taxonomy.known_classes
+            and head not in things.taxonomy.by_name and not things.taxonomy.names.get(head))
 
 
 FIXTURE_TYPES = {"openable": "open and close", "toggleable": "switch on and off"}
@@ -571,7 +603,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
             frame = looking(frame)
         asked = _counted_roles(frame) | ({"theme"} if asks_whether(parse.text, evoked) else set())
         values = {role: _values(_sought_where(evoked, role, things), earlier, things, parse.text,
-                                frame.element(role).type, role in asked, _carried(frame, role))
+                                frame.element(role).type, role in asked, _carried(frame, role), _gone_to(frame, role))
                   for role, phrase in evoked.elements.items() if not back_unplaced(phrase)}
         back_later = False
         backs: dict[str, Phrase | None] = {r: p for r, p in evoked.elements.items() if back_unplaced(p)}
@@ -605,6 +637,8 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         _to_recipient(frame, values, things)
         _check_types(frame, values, evoked.elements, things, parse.text)
         kept = {} if placed_back else _put_away(frame, evoked, values, things, parse.text)
+        if not kept and not placed_back:
+            _unsaid_goal(frame, evoked, values, things, parse.text)
         bindings.extend(_where_said_first(frame, evoked, values, library, things, parse.text))
         earlier.append(values)
         roles = [r for r in frame.roles if r in values]
@@ -723,6 +757,42 @@ def _put_away(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]
     return kept
 
 
+def _unsaid_goal(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]], things: Things,
+                 text: str) -> None:
+    """Refuse, on a map, a frame that puts its theme at a goal nobody said: the parser's guess from the verb's
+    statistics alone ("put the hammer": people who leave out where mostly meant a side table, whatever the
+    thing), which is no place the command or the thing says. "Put it where?", naming a place such a thing is
+    kept (or one of the map's places) as an example. A storing verb ("put away") or "back" chooses its own goal
+    (:func:`_put_away`, :func:`_back_to`); a goal the command or a previous clause says is never refused, nor a
+    Place the parser adds as an inferred step (ALFRED's scope, said as such)."""
+    from seal_cli.planning.keeping import kept_place, spots_of
+
+    m = things.map
+    goal = evoked.elements.get("goal")
+    if (m is None or goal is None or not goal.default or goal.text is not None or evoked.inferred is not None
+            or "theme" not in values or not any(a.name == "place" and "goal" in a.args for a in frame.actions)
+            or stores(frame, evoked.lexical_unit)):
+        return
+    theme = values["theme"][0]
+    lies = next((f.args[1] for f in things.facts if f.predicate == "in" and f.args[0] == theme), None)
+    spots = [s for s in spots_of(m) if s.name != lies]       # an example of somewhere else to put it
+    spot = kept_place(things.taxonomy, m.priors, things.class_of(theme), spots, near=m.robot.xy)
+    example = spot.name if spot is not None else next((s.name for s in spots), None)
+    verb = " ".join(words_of(evoked.lexical_unit))
+    phrase = evoked.elements.get("theme")
+    said = phrase.text if phrase is not None and phrase.text else f"the {_words(things.class_of(theme))}"
+    where = m.place(example) if example else None
+    on = "in" if where is not None and where.openable else "on"
+    hint = f" (\"{verb} the {_words(things.class_of(theme))} {on} the {_words(where.cls)}\")" if where else ""
+    raise _located(f"{verb} {said} where? the command says no place to {verb} it; say where{hint}",
+                   evoked.elements.get("theme"), text)
+
+
+def _words(cls: str) -> str:
+    """A class as words ("side_table": side table)."""
+    return " ".join(class_words(cls)) or cls
+
+
 def _carried(frame: Frame, role: str) -> bool:
     """Whether the frame takes its ``role`` into the hand (needs it held, or leaves it held)."""
     return frame.needs_held(role) or frame.gets_held(role)
@@ -835,7 +905,7 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
         changed.update((f.positive, text) for f in binding.postconditions)
     return Problem(parse.text, tuple(commanded), state, tuple(unknown_to_map(commanded, things)) if map else (),
                    tuple(b for b in things.put_away if b in commanded),
-                   tuple(b for b in things.put_back if b in commanded))
+                   tuple(b for b in things.put_back if b in commanded), dict(things.called))
 
 
 def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:
@@ -857,7 +927,7 @@ def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:
             if value in things.people or cls == "person":
                 if value not in placed and value != "person":     # "a person", "anyone": whoever is there
                     called = f"is the {value.replace('_', ' ')} (no person has that role)" \
-                        if value in things.roles_said else f"is called {value}"
+                        if value in things.roles_said else f"is called {things.called.get(value, value)}"
                     warnings.setdefault(f"nobody on the map {m.name} {called}: seal run will search "
                                         "the whole house for them", None)
             elif cls not in known and cls not in unknown:    # said once, where it is first looked for

@@ -27,8 +27,8 @@ update.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Sequence
-from dataclasses import dataclass, field
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass, field, replace
 from typing import Any, Protocol
 
 import numpy as np
@@ -132,10 +132,14 @@ class SeFM:
 
     def __init__(self, m: Map, bindings: Sequence[Binding], state: State, rng: np.random.Generator,
                  config: SeFMConfig | None = None, observers: Sequence[Observer] = (),
-                 classes: Iterable[str] = (), sensor: SensorModel | None = None) -> None:
+                 classes: Iterable[str] = (), sensor: SensorModel | None = None,
+                 said: Mapping[str, Sequence[str]] | None = None) -> None:
         """``classes``: object classes to believe in besides those the frames name; ``sensor``: what sees
-        (default: the map's sensor, its view cut by the map's walls)."""
+        (default: the map's sensor, its view cut by the map's walls); ``said``: where the command's words
+        say things are, by class (:func:`~seal_cli.sefm.relations.said_where` of the commanded frames: "the
+        milk from the larder"), evidence each such class's prior is conditioned on."""
         self.map = m
+        self.said = {class_key(k): tuple(v) for k, v in (said or {}).items()}
         self.sensor: SensorModel = sensor or RangeSensor.on_map(m)
         self.bindings = tuple(bindings)
         self.state = state
@@ -165,11 +169,18 @@ class SeFM:
 
     # -- construction ---------------------------------------------------------------------------
     def _sources(self) -> tuple[Source, ...]:
+        """What the frames' elements name; an object class with where the command says it is (the rooms,
+        places and place classes of this map among :attr:`said`)."""
         seen: dict[str, Source] = {}
         values = [v for b in self.bindings for v in _places_in_space(b)] + list(self.extra_classes)
         for value in values:
             source = self._source(value)
             seen.setdefault(source.key, source)
+        for thing, where in self.said.items():
+            believed = seen.get(thing)
+            said = tuple(w for w in where if self.map.prior_target(w) is not None)
+            if believed is not None and believed.kind == "object" and said:
+                seen[thing] = replace(believed, said=said)
         return tuple(seen.values())
 
     def _source(self, value: str) -> Source:

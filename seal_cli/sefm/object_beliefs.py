@@ -7,7 +7,8 @@ A *source* is anything a frame element can name:
 
 - an **object** class (``cup``): particles drawn from the map's prior of the class (its rooms'
   and places' masses spread uniformly, plus a small floor over all free space; a class without
-  a prior is uniform) — systematically over the rooms, so that each room gets its share of the
+  a prior is uniform), conditioned on where the command says the thing is, if it says (``said``)
+  — systematically over the rooms, so that each room gets its share of the
   particles to within one, and stratified along a Hilbert curve within a room, so that each patch
   of it does too (:mod:`seal_cli.sefm.cell_order`) — and updated by what the robot sees;
 - a **place** (``fridge_1``) or a place class (``fridge``): particles at the places, fixed;
@@ -77,6 +78,9 @@ class Source:
     points: tuple[tuple[float, float], ...] = ()
     """For a place: where its places are."""
     room: int | None = None
+    said: tuple[str, ...] = ()
+    """For an object class: the rooms, places or place classes the command says it is in ("the milk from
+    the larder"): evidence its prior is conditioned on (:meth:`Map.prior <seal_cli.maps.model.Map.prior>`)."""
 
     @property
     def static(self) -> bool:
@@ -323,10 +327,10 @@ def _initial(m: Map, source: Source, n: int, rng: np.random.Generator) -> Array:
         return points[np.arange(n) % len(points)]
     if source.kind == "room":
         return m.sample_free(rng, n, region=source.room)
-    return m.jitter_in_cells(rng, rng.permutation(_by_room(m, source.key, n, rng)))
+    return m.jitter_in_cells(rng, rng.permutation(_by_room(m, source.key, n, rng, source.said)))
 
 
-def _by_room(m: Map, cls: str, n: int, rng: np.random.Generator) -> NDArray[np.intp]:
+def _by_room(m: Map, cls: str, n: int, rng: np.random.Generator, said: tuple[str, ...] = ()) -> NDArray[np.intp]:
     """``n`` free cells drawn by the prior of ``cls``: each room gets its share of the draws to within
     one (systematic over rooms), and within a room the draws are stratified along the cells' order
     (:mod:`seal_cli.sefm.cell_order`): one independent draw in each of ``count`` runs of equal weight, so
@@ -334,7 +338,7 @@ def _by_room(m: Map, cls: str, n: int, rng: np.random.Generator) -> NDArray[np.i
     target of the prior touches the weights are equal, and a draw is a position along the room's run; in
     the others the prior's cumulative weight over the run is read (the prior keeps it per room)."""
     cells, starts = cell_order.by_room(m)
-    prior = m.prior(cls)
+    prior = m.prior(cls, said)
     by_name = prior.room_masses()
     masses = np.array([by_name[OUTSIDE]] + [by_name[name] for name in m.room_names])  # runs: no room first
     counts = np.bincount(stratified(masses, n, rng), minlength=len(masses))

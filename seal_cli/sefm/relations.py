@@ -30,7 +30,7 @@ from seal_cli.frames.taxonomy import class_key
 from seal_cli.planning.state import State
 
 __all__ = ["CORE", "DISJOINT", "LOCATING_ACTIONS", "OTHER", "Relations", "achievers", "context_relations",
-           "element_relations", "held", "relations", "spatial_roles"]
+           "element_relations", "held", "relations", "said_where", "spatial_roles"]
 
 CORE = 1.0
 OTHER = 0.3
@@ -162,3 +162,18 @@ def relations(bindings: Sequence[Binding], state: State, other: float = OTHER) -
         out.append(Relations(tuple((r, values[r], b) for r, b in elements.items()),
                              tuple(sorted(context_relations(i, bindings, state, other, made_by).items()))))
     return out
+
+
+def said_where(bindings: Sequence[Binding]) -> dict[str, tuple[str, ...]]:
+    """Where the command says each thing is, by class key: a frame that takes a thing out of somewhere
+    (a postcondition ``not in(theme, source)``, Pick's) presumes ``in(theme, source)`` as it was said
+    ("the milk from the larder": milk → larder_1). Evidence for the thing's belief, not a fact: the
+    speaker may be wrong."""
+    out: dict[str, list[str]] = {}
+    for binding in bindings:
+        for fact in binding.postconditions:
+            if fact.negated and fact.predicate == "in" and len(fact.args) == 2 and fact.args[0] != fact.args[1]:
+                thing, where = (class_key(a) for a in fact.args)
+                if where not in out.setdefault(thing, []):
+                    out[thing].append(where)
+    return {k: tuple(v) for k, v in out.items() if v}

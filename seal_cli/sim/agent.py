@@ -147,7 +147,8 @@ class Agent:
                  questions: Mapping[Binding, Question] | None = None, clock: datetime | None = None,
                  search_end: float | None = None,
                  put_away: Mapping[Binding, Callable[[str | None], str | None]] | None = None,
-                 put_back: Iterable[Binding] = ()) -> None:
+                 put_back: Iterable[Binding] = (), told: Mapping[str, Sequence[str]] | None = None,
+                 names: Mapping[str, str] | None = None) -> None:
         self.scene = scene
         self.world = scene.world
         self.grid = scene.grid
@@ -192,6 +193,18 @@ class Agent:
         self.looks: list[tuple[float, float, float]] = []
         self.inspected: set[str] = set()
         """Places the robot has looked into or onto from within reach: it has seen all they hold."""
+        self.told: dict[str, tuple[str, ...]] = {class_key(k): tuple(v) for k, v in (told or {}).items()}
+        """Where the command's words say each thing is, by class ("a beer from the fridge": beer → fridge_1;
+        :func:`~seal_cli.sefm.relations.said_where`): looked at first (the search's beliefs are conditioned on
+        it; the whole-house search for what nothing else places starts there)."""
+        self.missed: set[str] = set()
+        """Places the command said a thing was in, looked into without finding it (said once)."""
+        self.names: dict[str, str] = {class_key(p.name): p.name for p in getattr(scene.map, "people", ())}
+        self.names |= {class_key(k): v for k, v in (names or {}).items() if class_key(k) != SPEAKER}
+        """How each person is said, by id: as the map writes them, or the command names them ("goes to Raj")."""
+        keys = sorted({f for k in self.names for f in (k, k.replace("_", " "))}, key=len, reverse=True)
+        self._names_re = re.compile(r"(?<![\w=])(?:" + "|".join(map(re.escape, keys)) + r")(?![\w=(])") \
+            if keys else None
         self.classes = {class_key(k): class_key(v) for k, v in (classes or {}).items()}
         """The class of each thing a command names that is not a class itself (``apple_2``)."""
         self.state = State()
@@ -242,7 +255,16 @@ class Agent:
 
     # -- records -----------------------------------------------------------------------------
 
+    def named(self, text: str) -> str:
+        """Text with each person said as :attr:`names` says ("handed drill_1 to Raj"); a frame's element value
+        (``recipient=raj``) stays an id."""
+        if self._names_re is None:
+            return text
+        return self._names_re.sub(lambda m: self.names[class_key(m.group(0))], text)
+
     def say(self, kind: str, text: str, **data: Any) -> None:
+        if kind not in ("plan", "frame"):
+            text = self.named(text)
         if self.detail and kind in DETAIL_KINDS:
             data["detail"] = True       # a step of a survey said a line for: kept, not narrated
         if kind in WORDED_KINDS:
@@ -500,6 +522,7 @@ class Agent:
     def _result(self, completed: bool, reason: str, plan: list[str], executed: list[str] | None = None,
                 why: Reason = Reason.OK) -> Result:
         answer = "; ".join(self.answers) if self.answers else None
+        reason = self.named(reason)
         return Result(completed, reason, self.world.robot.path_m, self.world.step, plan, executed or [],
                       self.records, answer, why=why if not completed else Reason.OK)
 
@@ -587,17 +610,57 @@ class Agent:
         source = binding.elements.get("source")
         return self.room(source) if source else None
 
+    def look_into(self, place: str, value: str, binding: Binding, role: str | None, why: str) -> None:
+        """Go within reach of a place, open it if it is shut, and look; closed again when what was sought
+        is not in it. A place it cannot reach is marked so."""
+        cell = self.policy.stand(self, self.known[place])
+        if cell is None:
+            self.unreachable.add(place)
+            return
+        self.drive_to(cell, why)
+        self.world.face(self.known[place].at)
+        if self.known[place].openable and not self.world.items[place].is_open:
+            self.open_to_look(place)
+        self.look()
+        if self.resolve(value, binding, role) is None:
+            self.shut_after(place)
+
+    def said_places(self, value: str) -> list[str]:
+        """The places of the map the command says a thing of this kind is in or on (:attr:`told`: "a beer from
+        the fridge": fridge_1; a place class: every place of it), where it is looked for first. A room said
+        so is :meth:`source_room`'s."""
+        out = []
+        for where in self.told.get(self.class_of(value), ()):
+            if self._is_place(where):
+                out.append(where)
+            elif self.room(where) is None:
+                out += sorted(k.id for k in self.known.values() if not k.movable and k.cls == where
+                              and self._is_place(k.id))
+        return [p for p in out if p in self.known]
+
+    def missed_where_said(self, value: str) -> None:
+        """Say once, per place, that the thing sought is not where the command said it was, once the robot
+        has looked into that place (it searches on elsewhere)."""
+        for place in self.said_places(value):
+            if place in self.inspected and place not in self.missed:
+                self.missed.add(place)
+                item = self.world.items[place]
+                on = "in" if self.world.hollow(item) else "on"
+                self.say("search", f"no {self.said(value)} {on} {place}, where the command said it was; "
+                         "looks elsewhere", target=value)
+
     def look_in(self, room: Any, value: str, binding: Binding, role: str | None) -> Outcome | None:
         """Look for a thing in the room it is to be taken from, until one of its kind is known there:
         all over the room a view at a time (:meth:`survey`, at most :data:`SURVEY_VIEWS` views), then
         into its closed receptacles, the nearest first. An Outcome when none is there."""
         views = 0
+        start = len(self.looks)
         while self.resolve(value, binding, role) is None:
             if (stop := self.exhausted()) is not None:
                 return Fatal(False, stop, Reason.BUDGET)
             looked = len(self.looks)
             if views < SURVEY_VIEWS:
-                self.survey(room, views=1)
+                self.survey(room, views=1, announced=len(self.looks) > start)   # "looks all over" said once
                 views += 1
             if len(self.looks) > looked:
                 continue
@@ -606,16 +669,10 @@ class Agent:
                       and bool(room.contains([k.at])[0])]
             place = self.nearest(closed) if closed else None
             if place is None:
-                return Fatal(False, f"no {self.said(value)} in the {room.name.replace('_', ' ')}",
+                seen = " (it sees all of it from where it is)" if len(self.looks) == start else ""
+                return Fatal(False, f"no {self.said(value)} in the {room.name.replace('_', ' ')}{seen}",
                              Reason.NOT_FOUND, value)
-            cell = self.policy.stand(self, self.known[place])
-            if cell is not None:
-                self.drive_to(cell, f"goes to {place}")
-                self.world.face(self.known[place].at)
-                self.open_to_look(place)
-                self.look()
-                if self.resolve(value, binding, role) is None:
-                    self.shut_after(place)
+            self.look_into(place, value, binding, role, f"goes to {place}")
             if place not in self.opened:  # out of reach, or it would not open: not tried again
                 self.unreachable.add(place)
         return None
@@ -769,6 +826,7 @@ class Agent:
                 if (ended := self.look_in(source, value, binding, role)) is not None:
                     return ended
                 continue
+            self.missed_where_said(value)
             if (ended := self.look_once(value, binding)) is not None:
                 return ended
 
@@ -844,6 +902,14 @@ class Agent:
         (:meth:`survey`), then the rest of the house outside every room the same way, within the
         run's budget. One line a room; the drives and looks of the survey are details. An Outcome
         once the house has been searched."""
+        role = next((r for r, v in binding.values if v == value), None)
+        said = [p for p in self.said_places(value) if p not in self.inspected and p not in self.unreachable]
+        if self.sweep is None and said:      # nothing tells where to look but the command: there first
+            self.say("search", f"looks for {self.said(value)} where the command said: {said[0]}", target=value)
+            self.look_into(said[0], value, binding, role, f"goes to {said[0]}")
+            if said[0] not in self.inspected:
+                self.unreachable.add(said[0])
+            return None
         if self.sweep is None:
             self.sweep = [*self.room_tour(self.scene.map.rooms), _Rest(self.scene.map.rooms)]
             self.swept = []
@@ -1120,6 +1186,7 @@ class Agent:
 
     def answer(self, text: str) -> None:
         """Keep what the robot found out for the question (said once)."""
+        text = self.named(text)
         if text not in self.answers:
             self.answers.append(text)
             self.say("answer", f"answer: {text}", answer=text)
@@ -1129,6 +1196,7 @@ class Agent:
         did instead of the world's own words (the answer it gives, not the message's name)."""
         outcome = self.world.act(name, *(a if self.is_person(a) else self.class_of(a) for a in args))
         text = said if said is not None and outcome.ok else outcome.message
+        text = self.named(text)
         again = text in {r.text for r in self.records[-3:]} or any(text.endswith(f": {a}") for a in self.answers) \
             or name == "search" and outcome.ok and bool(self.answers)     # the answer said where it is
         # "sees spoon_1" said by the look just now, "says: <the answer>": kept, not narrated twice
@@ -1510,11 +1578,12 @@ class Agent:
         return f"; it knows of no {noun}s anywhere"
 
     def survey(self, room: Any, views: int | None = None, peek: bool = False,
-               until: Callable[[], bool] | None = None) -> Outcome:
+               until: Callable[[], bool] | None = None, announced: bool = False) -> Outcome:
         """Look all over a room: to the nearest part of it not yet seen, until all of it is (at
         most ``views`` views, default :data:`SURVEY_VIEWS`, within the budget); with ``peek``, then
         into each closed receptacle in it not yet looked into. Ok when there was nothing more to
-        see; else why it stopped. ``until``: stop as soon as it holds (what was sought is seen)."""
+        see; else why it stopped. ``until``: stop as soon as it holds (what was sought is seen).
+        ``announced``: "looks all over the room" was said already (a survey a view at a time)."""
         assert self.sweeper is not None
         limit = SURVEY_VIEWS if views is None else views
         sweep = self.sweeper()
@@ -1536,7 +1605,7 @@ class Agent:
             return float(seen[seeable].mean()) if seeable.any() else 1.0
 
         ended = Outcome(False, f"it saw {100 * share():.0f} % of it in {limit} views")
-        said = False
+        said = announced
         for _ in range(limit):
             if until is not None and until():
                 return Outcome(True, "saw what it looked for")

@@ -181,7 +181,7 @@ def write_png(path: str | Path, agent: Agent, title: str = "") -> None:
                 ax.scatter(X[:, 0], X[:, 1], s=4 + 40 * W / max(W.max(), 1e-12), c="#ff7f0e", alpha=0.6, zorder=2,
                            label=f"{label} belief: {last[name]}")
             _draw_run(ax, agent)
-            legend_below(ax)  # under the map: no cloud covers it
+            legend_below(ax, columns=4 if panels == 1 else 3)  # under the map: no cloud covers it
         axes[0][0].set_title(title or m.name)
         if panels == 2:
             axes[0][1].set_title("the commanded frame's belief")
@@ -265,7 +265,7 @@ def _draw_run(ax: Any, agent: Agent) -> None:
     for item in agent.world.items.values():
         if item.key == "person" and not item.movable:     # the people, and the speaker ("me")
             ax.plot(*item.at, "^", markersize=7, color="#9467bd", zorder=5, **once("people"))
-            ax.annotate(item.id, item.at, xytext=(4, -8), textcoords="offset points", fontsize=6,
+            ax.annotate(agent.named(item.id), item.at, xytext=(4, -8), textcoords="offset points", fontsize=6,
                         color="#9467bd", zorder=LABEL_Z, gid=LABEL, bbox=_HALO)
         elif item.movable:
             end = agent.world.position(item.id)

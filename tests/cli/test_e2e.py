@@ -35,7 +35,7 @@ def test_going_to_a_room_says_the_room_and_where_in_it() -> None:
 def test_a_persons_wish_is_brought_to_them() -> None:
     report = run_json("Anna wants the cup")
     assert report["plan"][-1] == "Bring(theme=cup, recipient=anna)" and report["completed"]
-    assert any(r["text"] == "handed cup_1 to anna" for r in report["records"])
+    assert any(r["text"] == "handed cup_1 to Anna" for r in report["records"])
 
 
 def test_how_many_with_nowhere_said_looks_over_the_whole_house() -> None:
@@ -56,14 +56,14 @@ def test_come_back_returns_to_the_speaker() -> None:
 
 def test_questions_are_answered() -> None:
     found = run_json("find Ben")
-    assert found["completed"] and found["answer"] == "ben is in the bedroom at (-7.00, 3.00)"
+    assert found["completed"] and found["answer"] == "Ben is in the bedroom at (-7.00, 3.00)"
     counted = run_json("count the cups in the family room")
     assert counted["plan"] == ["Count(theme=cup, ground=family_room)"]
     assert counted["answer"] == "1 cup in the family room"
     there = run_json("is Anna in the kitchen?")
-    assert there["completed"] and there["answer"].startswith("yes: anna is in the kitchen")
+    assert there["completed"] and there["answer"].startswith("yes: Anna is in the kitchen")
     elsewhere = run_json("is Ben in the kitchen?")
-    assert elsewhere["completed"] and elsewhere["answer"] == "no: ben is in the bedroom at (-7.00, 3.00)"
+    assert elsewhere["completed"] and elsewhere["answer"] == "no: Ben is in the bedroom at (-7.00, 3.00)"
 
 
 def test_a_kind_the_map_knows_nothing_of_is_warned_about_and_searched_for() -> None:
@@ -290,11 +290,11 @@ def test_a_thing_brought_to_a_room_is_put_on_a_surface_there_not_back_where_it_w
 def test_anyone_in_a_room_is_whoever_the_robot_sees_there() -> None:
     yes = run_json("is there anyone in the kitchen?")
     assert yes["completed"] and yes["warnings"] == [] and yes["plan"] == ["Find(theme=person, ground=kitchen)"]
-    assert yes["answer"] == "yes: anna is in the kitchen at (5.53, -3.02)"
+    assert yes["answer"] == "yes: Anna is in the kitchen at (5.53, -3.02)"
     no = run_json("is there a person in the dining room?")
     assert no["completed"] and no["answer"] == "nobody in the dining room (it looked all over it)"
     found = run_json("find somebody in the bedroom")
-    assert found["completed"] and found["answer"] == "ben is in the bedroom at (-7.00, 3.00)"
+    assert found["completed"] and found["answer"] == "Ben is in the bedroom at (-7.00, 3.00)"
 
 
 def test_telling_the_time_says_the_robots_clock_not_the_word() -> None:

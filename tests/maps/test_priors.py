@@ -63,3 +63,19 @@ def test_the_density_integrates_to_one_over_free_space(apartment: Map) -> None:
     assert density.sum() * apartment.cell_area == pytest.approx(1.0)
     assert prior.density([[500.0, 500.0]]).tolist() == [0.0]
     assert sum(prior.room_masses().values()) == pytest.approx(1.0)
+
+
+def test_a_place_said_takes_the_said_share_and_the_map_keeps_the_rest(apartment: Map) -> None:
+    from seal_cli.maps.priors import SAID, said_masses
+
+    assert said_masses({"fridge": 0.4, "counter": 0.4}, ("counter_1",), 0.9) == pytest.approx(
+        {"fridge": 0.04, "counter": 0.04, "counter_1": 0.9})
+    prior = apartment.prior("apple", ("counter_1",))
+    assert prior.masses["counter_1"] == pytest.approx(SAID)
+    assert prior.masses["fridge"] == pytest.approx(0.4 * (1 - SAID))
+    counter = target_cells(apartment, "counter_1")
+    assert prior.weights[counter].sum() > prior.weights[target_cells(apartment, "fridge")].sum()
+    assert apartment.prior("apple", ("counter_1",)) is prior and apartment.prior("apple") is not prior   # cached apart
+    unknown = apartment.prior("beer", ("fridge_1",))          # a class the map has no prior of: the word alone
+    assert unknown.masses == pytest.approx({"fridge_1": SAID, "_rest": 1 - SAID})
+    assert apartment.prior("apple", ("nowhere",)).masses == apartment.prior("apple").masses   # not on the map

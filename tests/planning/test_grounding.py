@@ -70,7 +70,7 @@ def test_what_the_map_knows_nothing_of_is_a_warning(library: Library) -> None:
                              "seal run will search the whole house for it",)
     assert plan.to_json()["warnings"] == list(plan.warnings)
     roger = plan_text("give the cup to Roger", library, map=load_map(APARTMENT))
-    assert roger.warnings and "nobody on the map apartment is called roger" in roger.warnings[0]
+    assert roger.warnings and "nobody on the map apartment is called Roger" in roger.warnings[0]
     assert not plan_text("bring me the cup", library, map=load_map(APARTMENT)).warnings
 
 
@@ -239,7 +239,7 @@ def test_a_role_nobody_has_is_warned_about_like_a_name_nobody_has(library: Libra
     assert plan.warnings == ("nobody on the map apartment is the nurse (no person has that role): seal run will "
                              "search the whole house for them",)
     named = plan_text("bring the cup to Roger", library, map=load_map(APARTMENT))
-    assert named.warnings == ("nobody on the map apartment is called roger: seal run will search the whole house "
+    assert named.warnings == ("nobody on the map apartment is called Roger: seal run will search the whole house "
                               "for them",)
 
 
@@ -270,3 +270,13 @@ def test_a_thing_on_no_place_in_the_room_is_there_already_for_plan_and_run_alike
     assert any(r["text"] == "umbrella_1 is in the waiting room already, so Bring(theme=umbrella, goal=waiting_room) "
                "needs no doing" for r in report["records"])
     assert not any("picked up" in r["text"] for r in report["records"])
+
+
+def test_a_person_is_said_as_the_map_writes_them_else_as_a_name() -> None:
+    from seal_cli.planning.grounding import person_name
+
+    m = load_map(APARTMENT)
+    assert person_name(m, "anna", "anna") == "Anna"              # the map's spelling, whatever was typed
+    assert person_name(m, "roger", "roger") == "Roger"            # nobody on the map: a name, capitalised
+    assert person_name(m, "mcdonald", "McDonald") == "McDonald"   # as typed when it has capitals
+    assert person_name(None, "roger", "Roger's") == "Roger"     # a possessive alone: the id, capitalised

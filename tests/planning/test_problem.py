@@ -291,3 +291,46 @@ def test_a_thing_to_open_or_switch_the_map_knows_nothing_of_is_refused(library: 
         "ToggleOn(theme=kettle)"]
     assert [str(b) for b in problem_of_text("switch on the radio in the kitchen", library, map=m).commanded] == [
         "Find(theme=radio, ground=kitchen)", "ToggleOn(theme=radio)"]
+
+
+def test_a_goal_only_the_verbs_statistics_guessed_is_asked_for(library: Library) -> None:
+    """"Put the hammer", "put the kettle on" (the idiom aside): the parser's learned guess of where people who
+    leave the place out mean (a side table, a fridge, whatever the thing) is no place anyone said; on a map the
+    planner asks "put it where?", naming somewhere else such a thing is kept. A goal said, a storing verb
+    ("put away", which chooses its own) and a Place with no goal at all ("put it down") are planned as before."""
+    from seal_cli.errors import SealError
+    from seal_cli.language.values import Evoked, Parse, Phrase
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.planning.problem import build_problem
+
+    m = load_map("townhouse")
+    text = "put the hammer"
+    hammer = Phrase("the hammer", "hammer", "hammer", span=(4, 14))
+    guessed = Phrase(None, "side table", "side_table", default=True)
+    parse = Parse(text, (Evoked("Place", "put", (0, 14), {"theme": hammer, "goal": guessed}),))
+    with pytest.raises(SealError, match=r'put the hammer where\? .*say where \("put the hammer (on|in) the'):
+        build_problem(parse, library, map=m)
+    with pytest.raises(SealError, match=r"put the hammer where\?"):
+        problem_of_text("put the hammer", library, map=m)
+    said = Parse(text, (Evoked("Place", "put", (0, 14), {"theme": hammer, "goal": Phrase(
+        "the side table", "side table", "side_table", span=(18, 32))}),))
+    assert [str(b) for b in build_problem(said, library, map=m).commanded] == ["Place(theme=hammer, goal=side_table_1)"]
+    no_map = build_problem(parse, library).commanded
+    assert [str(b) for b in no_map] == ["Place(theme=hammer, goal=side_table)"]
+    assert [str(b) for b in problem_of_text("put the hammer down", library, map=m).commanded] == ["Place(theme=hammer)"]
+
+
+def test_a_place_to_go_that_nothing_knows_of_is_refused_not_searched_for(library: Library) -> None:
+    """"Go to the barn", "is there a cup in the barn?": a word that names no room, place or person of the map and
+    no kind of thing the map or the library knows is a place the house lacks (it searched the whole house for a
+    barn). Put into or taken from, an unknown word is still a thing to search for ("put the cup in the bag")."""
+    from seal_cli.errors import SealError
+    from seal_cli.maps.formats.map_server import load_map
+
+    m = load_map("farmhouse")
+    for text in ("go to the barn", "is there a cup in the barn?", "guide Joe to the pharmacy"):
+        with pytest.raises(SealError, match=r"the farmhouse has no (barn|pharmacy) .*its rooms are kitchen"):
+            problem_of_text(text, library, map=m)
+    assert [str(b) for b in problem_of_text("put the cup in the bag", library, map=m).commanded] == \
+        ["Place(theme=cup, goal=bag)"]
+    assert [str(b) for b in problem_of_text("go to the lounge", library, map=m).commanded] == ["Go(goal=living_room)"]

@@ -170,6 +170,24 @@ def test_prior_gives_each_room_its_share(library: Library) -> None:
     assert masses == pytest.approx(prior, abs=1 / 201 + 1e-9)
 
 
+def test_where_the_command_says_a_thing_is_weighs_in_its_prior(library: Library) -> None:
+    """"The cup from the fridge": the cup's belief starts with SAID of it at the fridge, the map's halves share
+    the rest; a class the command says nothing of, or a place not on the map, keeps the map's prior."""
+    from seal_cli.maps.priors import SAID
+
+    m = box_map()
+    said = SeFM(m, [], cup_state(library), np.random.default_rng(0), SeFMConfig(particles=400), classes=["cup"],
+                said={"cup": ["fridge_1"]})
+    masses = room_masses(m, said.objects.X[0], said.objects.W[0])
+    assert masses["right"] == pytest.approx(SAID + (1 - SAID) * 0.5, abs=0.02)
+    near = np.hypot(*(said.objects.X[0] - (9.0, 2.0)).T) <= 1.0 + 1e-9
+    assert said.objects.W[0][near].sum() >= SAID - 0.05    # less the floor spread over free space
+    for other in ({"apple": ["fridge_1"]}, {"cup": ["attic"]}):
+        plain = SeFM(m, [], cup_state(library), np.random.default_rng(0), SeFMConfig(particles=400), classes=["cup"],
+                     said=other)
+        assert room_masses(m, plain.objects.X[0], plain.objects.W[0])["right"] == pytest.approx(0.5, abs=0.01)
+
+
 def test_seeing_nothing_lowers_what_is_in_view_by_one_minus_p_detect(library: Library) -> None:
     m = box_map(objects=())
     sefm = SeFM(m, [], cup_state(library), np.random.default_rng(0), SeFMConfig(particles=400), classes=["cup"])

@@ -84,3 +84,13 @@ def test_all_disjoint_is_reported(library: Library) -> None:
     assert r.all_disjoint and r.element("theme") == DISJOINT
     with pytest.raises(KeyError):
         r.element("goal")
+
+
+def test_said_where_reads_a_frame_that_takes_a_thing_out_of_a_place(library: Library) -> None:
+    from seal_cli.sefm.relations import said_where
+
+    plan = [library.frame("Pick").bind({"theme": "milk", "source": "larder_1"}),
+            library.frame("Bring").bind({"theme": "milk", "recipient": "me", "source": "larder_1"}),
+            library.frame("Pick").bind({"theme": "cup"}),
+            library.frame("Place").bind({"theme": "cup", "goal": "sink_1"})]
+    assert said_where(plan) == {"milk": ("larder_1",)}    # a goal is where it will be, not where it is

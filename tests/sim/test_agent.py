@@ -245,7 +245,7 @@ def test_a_question_told_to_someone_is_found_out_then_told_and_a_what_question_l
                                     rng=np.random.default_rng(0), observers=[heard.append])
     assert result.completed, result.reason
     went = [r.text for r in heard if r.text.startswith("goes to ") and "look" not in r.text]
-    assert [t.split(" (")[0] for t in went] == ["goes to dining_table_1", "goes to ben"]
+    assert [t.split(" (")[0] for t in went] == ["goes to dining_table_1", "goes to Ben"]
     assert 'said "nothing on dining_table_1"' in [r.text for r in heard]
 
 

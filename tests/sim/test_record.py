@@ -78,7 +78,7 @@ def test_the_png_labels_where_a_go_ended_as_well_as_each_action(library: Any) ->
     assert result.completed
     labels = [text for _, text in _acts(agent.records)]
     assert labels[0].startswith("goes to the bedroom") and not labels[0].endswith(" m)")
-    assert labels[1:] == ["is with ben", 'said "the time is 09:00"']
+    assert labels[1:] == ["is with Ben", 'said "the time is 09:00"']
     bedroom = apartment.room("bedroom")
     assert all(bedroom.contains([pose[:2]])[0] for pose, _ in _acts(agent.records))
     asked, counted = pipeline.run_on_map(apartment, "how many cups are in the family room?", library,

@@ -242,7 +242,7 @@ class SeFMPolicy(Policy):
         if self.sefm is None or key != self.key:
             state = self._state(agent)
             self.sefm = SeFM(self.map, bindings, state, agent.rng,
-                             SeFMConfig(particles=self.particles, bandwidth=self.bandwidth))
+                             SeFMConfig(particles=self.particles, bandwidth=self.bandwidth), said=agent.told)
             self.key = key
             for pose, seen in self.history:
                 self.sefm.update(pose, seen, state)
@@ -255,7 +255,10 @@ class SeFMPolicy(Policy):
             self._things |= fresh
             self._news = True
         if self.planner is not None:
+            looked_from = self.planner.pending
             self.planner.observe(agent, see=False)
+            if looked_from is not None and self.planner.pending is None:    # the look it chose, taken
+                self._spent_views(agent)
         pose = agent.world.robot.pose
         self.history.append((pose, tuple(detections)))
         if self.sefm is None and self.keep_clouds and agent.steps:
@@ -264,6 +267,26 @@ class SeFMPolicy(Policy):
             self.sefm.update(pose, detections, self._state(agent))
             if self.keep_clouds:
                 self.snapshot(agent)
+
+    def _spent_views(self, agent: Agent) -> None:
+        """Once the robot has taken the look the whole-plan search chose, the views within ``view_step`` of where it
+        stands (all round: the heading does not matter) are not chosen: SeFM would not count a look from there as
+        new (negative information counts once per view), so its belief does not fall there and the model would
+        expect to find there what is left of the belief where it has just looked — the robot edged a few
+        centimetres at a time, looking again, after a place the command named turned out empty. A view that opens
+        a shut place stays; the looks on the drive are left as before (measured: excluding the views near them
+        too changed three of 36 runs of the context suite, two longer by 1.5 m)."""
+        from seal_cli.sefm.object_beliefs import ObjectModel
+
+        if self.map.sensor.fov_deg < 360:
+            return
+        x, y = agent.world.robot.pose[:2]
+        step = ObjectModel.view_step
+        for c in self.planner.candidates:
+            if c.open is None and c.cell not in self.planner.used:
+                px, py = agent.grid.point(c.cell)
+                if math.hypot(px - x, py - y) <= step:
+                    self.planner.used.add(c.cell)
 
     def snapshot(self, agent: Agent) -> None:
         """The clouds now: the frame at hand, the commanded frame it serves, and every object believed in."""
