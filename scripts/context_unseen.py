@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""The context suite on houses its policies were not developed on (``seal_cli.bench.context.unseen_houses``):
+"""The context suite on houses its policies were not developed on (``seal_cli.bench.context.unseen_houses``; the same
+as ``seal bench tasks --suite context --houses unseen``, which also takes ``--starts N``):
 the same commands, layouts drawn from the same priors, starts fixed with the house; the same JSON as
 ``seal bench tasks --suite context --json``.
 

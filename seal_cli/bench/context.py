@@ -39,10 +39,12 @@ from seal_cli.bench.houses import (
     CONTEXT_PRIORS,
     COTTAGE_STARTS,
     FARMHOUSE_STARTS,
+    RANCH_STARTS,
     TERRACE_STARTS,
     aws_house,
     bungalow,
     cottage,
+    ranch,
 )
 from seal_cli.bench.mapsuite import sample_layout
 from seal_cli.bench.tasks import Outcome, in_order, summarise
@@ -52,7 +54,8 @@ from seal_cli.frames.reading import load_library
 from seal_cli.maps.formats.map_server import load_map
 from seal_cli.maps.model import Map, ObjectTruth, Robot
 
-__all__ = ["COMMANDS", "House", "houses", "paired", "regroup", "run_context_suite", "unseen_houses"]
+__all__ = ["COMMANDS", "HOUSE_SETS", "START_CLEARANCE", "House", "drawn_starts", "house_set", "houses", "paired",
+           "regroup", "run_context_suite", "unseen_houses"]
 
 COMMANDS = ("stir the cup", "put the spoon in the cup", "stir the mug", "pour the kettle into the mug")
 """Spoon and cup (both likely in the bedroom), twice with different frames; spoon and mug (the
@@ -92,12 +95,53 @@ def houses(data: Path) -> list[House]:
 
 def unseen_houses() -> list[House]:
     """Houses the suite's policies were not developed on, to check that its figures hold
-    (:func:`~seal_cli.bench.houses.bungalow`, drawn after the suite's figures were taken, and the shipped
-    ``farmhouse`` and ``terrace`` maps, drawn later still; each run once, nothing tuned on them)."""
+    (:func:`~seal_cli.bench.houses.bungalow`, drawn after the suite's figures were taken, the shipped
+    ``farmhouse`` and ``terrace`` maps, drawn later still, and :func:`~seal_cli.bench.houses.ranch`, drawn
+    for search13's held-out check; nothing tuned on them)."""
     from seal_cli.resources import map_path
 
     return [House(bungalow(), BUNGALOW_STARTS), House(load_map(map_path("farmhouse")), FARMHOUSE_STARTS),
-            House(load_map(map_path("terrace")), TERRACE_STARTS)]
+            House(load_map(map_path("terrace")), TERRACE_STARTS), House(ranch(), RANCH_STARTS)]
+
+
+HOUSE_SETS = ("suite", "unseen")
+"""``suite``: the three houses the policies were developed on (:func:`houses`); ``unseen``: the held-out
+ones (:func:`unseen_houses`)."""
+
+
+def house_set(name: str, data: Path) -> list[House]:
+    """One of :data:`HOUSE_SETS` by name."""
+    if name not in HOUSE_SETS:
+        raise SealError(f"--houses {name!r}: one of {', '.join(HOUSE_SETS)}")
+    return houses(data) if name == "suite" else unseen_houses()
+
+
+START_CLEARANCE = 0.5
+"""Metres from the nearest wall or piece of furniture a drawn start keeps (:func:`drawn_starts`)."""
+
+
+def drawn_starts(m: Map, n: int, seed: int) -> tuple[tuple[float, float, float], ...]:
+    """``n`` start poses drawn uniformly over the free space of ``m``'s rooms that is :data:`START_CLEARANCE`
+    from anything occupied and joined to the largest such stretch (so every start reaches every other), with a
+    generator from ``seed`` and the house's name: starts no one chose, the same for every policy and run."""
+    from scipy.ndimage import distance_transform_edt, label
+
+    grid = m.grid
+    free = np.asarray(grid.free_mask, dtype=bool)
+    clear = distance_transform_edt(free) * grid.resolution >= START_CLEARANCE
+    parts, count = label(clear)
+    if count == 0:
+        raise SealError(f"map {m.name} has no free space {START_CLEARANCE} m from its walls to start from")
+    sizes = np.bincount(parts.ravel())[1:]
+    main = parts == int(np.argmax(sizes)) + 1
+    centres = m.free_centres
+    rows, cols, _ = grid.cell_index(centres)
+    ok = np.flatnonzero(main[rows, cols] & (m.free_cell_room >= 0))
+    if not len(ok):
+        raise SealError(f"map {m.name}'s rooms have no free space {START_CLEARANCE} m from its walls to start from")
+    rng = np.random.default_rng((seed * 1_000_003 + 104_729 + zlib.crc32(m.name.encode())) % (2 ** 32))
+    picked = centres[rng.choice(ok, size=n, replace=len(ok) < n)]
+    return tuple((round(float(x), 2), round(float(y), 2), 0.0) for x, y in picked)
 
 
 def layout_seed(seed: int, layout: int, name: str) -> int:
@@ -143,15 +187,18 @@ def run_context_suite(data: Path, policies: Sequence[str], *, commands: Sequence
                       layouts: int = 3, seed: int = 0, jobs: int | None = None, particles: int = 200,
                       framelib: Sequence[str] | None = None,
                       progress: Callable[[int, int], None] | None = None,
-                      on: Sequence[House] | None = None) -> Iterator[Outcome]:
+                      on: Sequence[House] | None = None, starts: int | None = None) -> Iterator[Outcome]:
     """Run the policies on the commands on every house, start and layout; yields the outcomes in
     (layout, house) order. Every command is checked (parsed and planned) on every house first.
-    ``on``: these houses instead of the suite's (:func:`unseen_houses`)."""
+    ``on``: these houses instead of the suite's (:func:`unseen_houses`); ``starts``: this many starts per
+    house drawn with ``seed`` (:func:`drawn_starts`) instead of the house's own."""
     from seal_cli.language.grounding import vocabulary_of_map
     from seal_cli.pipeline import plan as plan_text
 
     library = load_library(framelib)
     built = list(on) if on is not None else houses(Path(data))
+    if starts is not None:
+        built = [House(h.map, drawn_starts(h.map, starts, seed)) for h in built]
     for house in built:
         for text in commands:
             plan_text(text, library, vocabulary=vocabulary_of_map(house.map))

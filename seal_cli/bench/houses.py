@@ -214,6 +214,28 @@ BUNGALOW_STARTS = ((3.0, 3.5, 0.0), (8.0, 1.0, 0.0), (13.0, 9.0, 0.0))
 """The living room, the dining room's south side, the family room's east end."""
 
 
+def ranch() -> Map:
+    """18 m × 10 m, drawn for search13's held-out check before any policy was run on it: a living room in the
+    south-west, a galley kitchen and a short hallway between it and the dining room (the kitchen opens
+    wide onto the dining room, two doors side by side), the bedroom north of the living room, the family
+    room north of the hallway and a bathroom (no thing's prior names it) beyond the family room."""
+    rooms = {"living_room": (0.0, 0.0, 7.0, 6.0), "kitchen": (7.0, 0.0, 12.0, 4.0), "hallway": (7.0, 4.0, 12.0, 6.0),
+             "dining_room": (12.0, 0.0, 18.0, 6.0), "bedroom": (0.0, 6.0, 6.0, 10.0),
+             "family_room": (6.0, 6.0, 13.0, 10.0), "bathroom": (13.0, 6.0, 18.0, 10.0)}
+    doors = [(7.0, 2.0), (7.0, 5.0), (12.0, 1.0), (12.0, 3.0), (12.0, 5.0), (3.0, 6.0), (9.5, 6.0), (13.0, 8.0)]
+    places = (Place("coffee_table_1", "coffee_table", (3.5, 2.5)), Place("counter_1", "counter", (9.5, 0.5)),
+              Place("dining_table_1", "dining_table", (15.0, 3.0)), Place("bed_1", "bed", (3.0, 8.5)),
+              Place("sofa_1", "sofa", (9.5, 9.3)))
+    objects = tuple(ObjectTruth(str(o["class"]), (3.0, 3.0)) for o in CONTEXT_OBJECTS)
+    return walled_house("ranch", (18.0, 10.0), rooms, doors, objects=objects, places=places,
+                        robot=(1.5, 1.5, 0.0), priors=CONTEXT_PRIORS,
+                        furniture=((2.0, 9.0, 4.0, 9.9), (14.0, 2.3, 16.0, 3.7)))
+
+
+RANCH_STARTS = ((1.5, 1.5, 0.0), (9.5, 5.0, 0.0), (16.5, 8.0, 0.0))
+"""The living room's south-west corner, the hallway, the bathroom."""
+
+
 FARMHOUSE_STARTS = ((4.0, 2.0, 0.0), (3.0, 9.0, 0.0), (15.0, 9.0, 0.0))
 """``maps/farmhouse.yaml`` (drawn by ``maps/make_houses.py``, an unseen house): the kitchen, the living room,
 the family room's east end."""

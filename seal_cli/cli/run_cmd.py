@@ -199,6 +199,11 @@ def tasks(
                                        help="With --suite map or context: object "
                                        "layouts drawn from the priors (default 10 for map, 3 for context).",
                                        show_default=False),
+    house_set: str = typer.Option("suite", "--houses", help="With --suite context: suite (the three houses the "
+                                  "policies were developed on) or unseen (four held-out houses)."),
+    starts: int | None = typer.Option(None, "--starts", min=1, max=MAX_COUNT, help="With --suite context: this "
+                                      "many starts per house drawn with --seed from its rooms' free space "
+                                      "(default: each house's own three).", show_default=False),
     policies: str = typer.Option(",".join(DEFAULT_POLICIES), "--policies",
                                  help="Comma-separated policies, of: " + ", ".join(POLICIES) + "."),
     jobs: int = typer.Option(0, "--jobs", min=0, max=64, help="Worker processes (0: one per core)."),
@@ -234,6 +239,13 @@ def tasks(
     unknown = [name for name in names if name not in POLICIES]
     if unknown:
         raise SealError(f"--policies: unknown policy {unknown[0]!r}; known: {', '.join(POLICIES)}")
+    if suite != "context" and (house_set != "suite" or starts is not None):
+        raise SealError("--houses and --starts go with --suite context")
+    if suite == "context":
+        from seal_cli.bench.context import HOUSE_SETS
+
+        if house_set not in HOUSE_SETS:
+            raise SealError(f"--houses {house_set!r}: one of {', '.join(HOUSE_SETS)}")
     shared = Path(__file__).resolve().parents[2].parent / "shared" / "data"
     if data is None:
         data = shared if suite == "context" else shared / "alfred2d"
@@ -268,7 +280,8 @@ def tasks(
             layouts = layouts or 3
             runs = context.run_context_suite(data, names, commands=list(commands or context.COMMANDS),
                                              layouts=layouts, seed=seed, jobs=jobs or os.cpu_count() or 1,
-                                             particles=particles, framelib=libs, progress=advance)
+                                             particles=particles, framelib=libs, progress=advance,
+                                             on=context.house_set(house_set, data), starts=starts)
         else:
             runs = run_suite(data, split, names, goal=goal, limit=limit, types=types, seed=seed,
                              jobs=jobs or os.cpu_count() or 1, particles=particles, framelib=libs,
@@ -284,7 +297,8 @@ def tasks(
     elif suite == "context":
         from seal_cli.bench.context import paired, regroup
 
-        report.update({"suite": suite, "layouts": layouts, "seed": seed, "by_command": regroup(outcomes, names, 1),
+        report.update({"suite": suite, "houses": house_set, "starts": starts or "the houses' own",
+                       "layouts": layouts, "seed": seed, "by_command": regroup(outcomes, names, 1),
                        "by_house": regroup(outcomes, names, 0), "against_prior_optimal": paired(outcomes, names)})
     else:
         report.update({"suite": suite, "split": split, "goal": goal, "seed": seed, "limit": limit, "sample": sample})
@@ -300,7 +314,7 @@ def _table(report: dict[str, Any], names: list[str]) -> None:
     if report["suite"] == "map":
         title = f"map {report['map']}, {report['layouts']} layouts: success rate / mean path (m)"
     elif report["suite"] == "context":
-        title = f"context suite, {report['layouts']} layouts: success rate / mean path (m)"
+        title = f"context suite ({report['houses']} houses), {report['layouts']} layouts: success rate / mean path (m)"
     else:
         title = f"ALFRED-2D {report['split']}, goals from {report['goal']}: success rate / mean path (m)"
     table = Table(title=title)

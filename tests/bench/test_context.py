@@ -9,7 +9,17 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from seal_cli.bench.context import COMMANDS, House, houses, regroup, run_house_layout, unseen_houses
+from seal_cli.bench.context import (
+    COMMANDS,
+    START_CLEARANCE,
+    House,
+    drawn_starts,
+    house_set,
+    houses,
+    regroup,
+    run_house_layout,
+    unseen_houses,
+)
 from seal_cli.bench.houses import CONTEXT_PRIORS, COTTAGE_STARTS, cottage
 from seal_cli.bench.tasks import summarise
 from seal_cli.cli import app
@@ -37,9 +47,11 @@ def test_every_house_has_the_things_priors_and_starts_and_plans_every_command(sh
 
 # where each unseen house's rooms are reached only through another (a point in it, and the least metres
 # from the house's first start): the bungalow's kitchen and family room through the dining room, the
-# farmhouse's bedroom through the family room, the terrace's family room through the kitchen
+# farmhouse's bedroom through the family room, the terrace's family room through the kitchen, the ranch's
+# kitchen (from its hallway, the second start) through the living room or the dining room
 ONLY_THROUGH = {"bungalow": [((13.0, 2.5), 9.0), ((11.5, 8.0), 9.0)], "farmhouse": [((15.5, 3.0), 14.0)],
-                "terrace": [((4.5, 18.5), 15.0)]}
+                "terrace": [((4.5, 18.5), 15.0)], "ranch": [((9.5, 2.0), 6.5)]}
+THROUGH_FROM = {"ranch": 1}
 
 
 def test_the_unseen_houses_are_room_graphs_with_free_starts_and_plan_every_command(library: Library) -> None:
@@ -49,13 +61,14 @@ def test_the_unseen_houses_are_room_graphs_with_free_starts_and_plan_every_comma
     from seal_cli.sim.policies import make_policy
 
     unseen = unseen_houses()
-    assert [h.map.name for h in unseen] == ["bungalow", "farmhouse", "terrace"]
+    assert [h.map.name for h in unseen] == ["bungalow", "farmhouse", "terrace", "ranch"]
     for house in unseen:
         m = house.map
         assert {r.name for r in m.rooms} >= {room for prior in CONTEXT_PRIORS.values() for room in prior}
         assert {c: dict(p) for c, p in m.priors.items()} == {c: dict(p) for c, p in CONTEXT_PRIORS.items()}
         assert {"spoon", "cup", "mug", "kettle"} <= {o.cls for o in m.objects}
-        agent = Agent(scene_from_map(dataclasses.replace(m, robot=Robot(house.starts[0])), library),
+        origin = house.starts[THROUGH_FROM.get(m.name, 0)]
+        agent = Agent(scene_from_map(dataclasses.replace(m, robot=Robot(origin)), library),
                       library, make_policy("oracle"), rng=np.random.default_rng(0))
         field_ = agent.distances()
         free = agent.grid.free_cells
@@ -123,3 +136,45 @@ def test_paired_differences_against_prior_optimal_are_per_episode_and_fold_by_co
     assert got["stir the mug"]["sefm"]["n"] == 1 and got["stir the mug"]["sefm"]["mean_m"] == 4.0  # d failed
     assert got["all"]["sefm"]["n"] == 3 and got["all"]["sefm"]["mean_m"] == pytest.approx(4 / 3, abs=1e-3)
     assert paired(runs, ["sefm"]) == {}
+
+
+def test_drawn_starts_are_clear_of_walls_in_rooms_and_the_same_for_a_seed() -> None:
+    from scipy.ndimage import distance_transform_edt
+
+    for house in unseen_houses():
+        m = house.map
+        starts = drawn_starts(m, 5, seed=3)
+        assert len(starts) == 5 and starts == drawn_starts(m, 5, seed=3)
+        assert starts != drawn_starts(m, 5, seed=4)
+        clearance = distance_transform_edt(m.grid.free_mask) * m.grid.resolution
+        for x, y, _ in starts:
+            index = m.free_index([(x, y)])[0]
+            assert index >= 0 and m.free_cell_room[index] >= 0     # free, in a room
+            rows, cols, _ = m.grid.cell_index([(x, y)])
+            assert clearance[rows[0], cols[0]] >= START_CLEARANCE - 1e-9
+
+
+def test_the_house_sets_by_name(shared_data: Path) -> None:
+    assert [h.map.name for h in house_set("unseen", shared_data)] == ["bungalow", "farmhouse", "terrace", "ranch"]
+    assert [h.map.name for h in house_set("suite", shared_data)] == ["apartment", "aws_small_house", "cottage"]
+    with pytest.raises(SealError, match="--houses 'mine': one of suite, unseen"):
+        house_set("mine", shared_data)
+
+
+def test_bench_tasks_context_on_the_unseen_houses_from_drawn_starts(shared_data: Path) -> None:
+    result = runner.invoke(app, ["bench", "tasks", "--suite", "context", "--houses", "unseen", "--starts", "1",
+                                 "--seed", "2", "--command", "stir the cup", "--layouts", "1", "--policies", "oracle",
+                                 "--jobs", "1", "--data", str(shared_data), "--json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert data["houses"] == "unseen" and data["starts"] == 1 and data["seed"] == 2
+    assert set(data["by_house"]) == {"bungalow", "farmhouse", "terrace", "ranch", "all"}
+    assert data["groups"]["all"]["n"] == 4 and data["groups"]["all"]["success"]["oracle"] == 1.0
+
+
+def test_bench_tasks_refuses_an_unknown_house_set_and_starts_off_the_context_suite(shared_data: Path) -> None:
+    bad = runner.invoke(app, ["bench", "tasks", "--suite", "context", "--houses", "mine", "--data", str(shared_data)])
+    assert bad.exit_code == 1 and "--houses 'mine': one of suite, unseen" in bad.stderr
+    off = runner.invoke(app, ["bench", "tasks", "--suite", "map", "--starts", "2"])
+    assert off.exit_code == 1 and "--houses and --starts go with --suite context" in off.stderr
+    assert "Traceback" not in bad.output + off.output

@@ -453,3 +453,22 @@ def test_a_drive_that_passes_a_place_within_reach_reveals_it_on_the_way(library:
     mass, metres = seeing.outcomes([1, 0])
     assert metres[ids.index("shelf_1")] < 7.0 < replace(seeing, way=None).outcomes([1, 0])[1][ids.index("shelf_1")]
     assert seeing.cost([1, 0]) < plain.cost([1, 0])
+
+
+def test_the_beliefs_take_only_the_looks_the_robot_made(library: Library) -> None:
+    # brought up to the robot's state before a choice, the beliefs must not count a look from where the robot
+    # has driven without looking (to a thing it had seen): what is in view there was never looked for
+    scene = corridor(library, {"apple": {"shelf": 0.5, "dining_table": 0.5}})
+    policy = SeFMPolicy()
+    agent = ready(library, scene, policy, [("Pick", {"theme": "apple"})])
+    sefm = policy._beliefs(agent)
+    row = sefm.objects.row("apple")
+    X, W = sefm.objects.X[row].copy(), sefm.objects.W[row].copy()
+    agent.world.robot.pose = (7.5, 0.5, 0.0)   # beside the dining table, not looked from
+    policy._restate(agent)
+    assert np.array_equal(sefm.objects.X[row], X) and np.allclose(sefm.objects.W[row], W, rtol=1e-9, atol=0)
+    near = np.hypot(X[:, 0] - 7.5, X[:, 1] - 0.5) <= 0.75
+    assert W[near].sum() > 0.2
+    sefm.update(agent.world.robot.pose, (), policy._state(agent))   # what a look there with nothing seen does
+    after = np.hypot(sefm.objects.X[row][:, 0] - 7.5, sefm.objects.X[row][:, 1] - 0.5) <= 0.75
+    assert sefm.objects.W[row][after].sum() < 0.7 * W[near].sum()
