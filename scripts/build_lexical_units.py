@@ -110,7 +110,7 @@ import re
 import sys
 import xml.etree.ElementTree as ET
 from collections import Counter, defaultdict
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -426,18 +426,22 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[str, str, s
     return sorted(found + reflexive(wordnet, library, closed) + said_with)
 
 
+def particle_units(wordnet: WordNet, own: Library) -> Iterator[tuple[str, list[str], str, list[str]]]:
+    """The library's own two-word particle units WordNet knows ("turn off"), in order: each with its words, its first
+    WordNet sense and its frames' names (what rules 8 and 9 start from)."""
+    for unit, frames in sorted(own.by_unit.items()):
+        words = unit.split()
+        if len(words) == 2 and words[1] in english.PARTICLES and unit in wordnet.senses:
+            yield unit, words, wordnet.senses[unit][1][0], [f.name for f in frames]
+
+
 def particle_verbs(wordnet: WordNet, own: Library, listed: Library) -> list[tuple[str, str, str]]:
     """Rule 8: a particle verb of a library verb ("turn out") takes the frames of that verb's own particle unit ("turn
     off", listed in the library's own files, not derived) whose *first* sense it shares: "switch off, cut, turn off,
     turn out" is turn_off.v.01 (ToggleOff), so "turn the lights *out*" is a ToggleOff. Another particle of the same
     verb is what keeps it tight: "give off" ("emit") is "give out"'s first sense, but "give out" is a derived unit."""
-    units = {unit: [f.name for f in frames] for unit, frames in own.by_unit.items()}
     found = []
-    for unit, frames in sorted(units.items()):
-        words = unit.split()
-        if len(words) != 2 or words[1] not in english.PARTICLES or unit not in wordnet.senses:
-            continue
-        first = wordnet.senses[unit][1][0]
+    for unit, words, first, frames in particle_units(wordnet, own):
         for lemma in wordnet.lemmas[first]:
             other = lemma.split()
             if len(other) != 2 or other[0] != words[0] or other[1] not in english.PARTICLES or \
@@ -463,13 +467,9 @@ def state_particles(wordnet: WordNet, own: Library, listed: Library) -> list[tup
     state", "leave.v.03", "get.v.03") then says that state with the particle alone after its object: "put the kettle
     *on*" is "turn the kettle on" (ToggleOn). Such a unit is ``split: true``: said joined ("put on your coat", "put on
     the table") it is no such unit."""
-    units = {unit: [f.name for f in frames] for unit, frames in own.by_unit.items()}
+    units = {unit: frames for unit, _, _, frames in particle_units(wordnet, own)}
     states: dict[str, tuple[str, str, str]] = {}          # particle -> (its unit, that unit's first sense, antonym)
-    for unit in sorted(units):
-        words = unit.split()
-        if len(words) != 2 or words[1] not in english.PARTICLES or unit not in wordnet.senses:
-            continue
-        first = wordnet.senses[unit][1][0]
+    for unit, words, first, _ in particle_units(wordnet, own):
         for opposite in sorted(wordnet.opposite[first]):
             for lemma in wordnet.lemmas[opposite]:
                 other = lemma.split()
