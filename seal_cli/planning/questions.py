@@ -10,8 +10,10 @@ Tell with the question as its message — but the *kind* of answer a person expe
 - ``how_many``: a Count; the answer is how many the robot saw there;
 - ``what``: a Tell whose message asks what is on, in or at a place or in a room ("what's in the
   fridge?", "who is in the kitchen?"), or a Find of nothing in particular somewhere ("look in the
-  fridge"); ``about`` is the map's place or room, ``relation`` the word that relates them. The
-  robot goes and looks, and the answer lists what it saw;
+  fridge"); ``about`` is the map's place or room, ``relation`` the word that relates them. A message
+  that names no place but asks what is where the robot has gone ("go to the bedroom and tell me *what
+  you see*", "... *who is there*") asks it of the last Go's goal or Find's ground. The robot goes and
+  looks, and the answer lists what it saw;
 - ``state``: a yes/no question about a thing's state ("is the fridge open?", "check if the stove is
   on"), which the parser gives as LookAt with the state asked (``Evoked.asked``); ``relation`` is the
   state word. The thing is looked at where it is (:func:`looking`: not taken into the hand), and the
@@ -74,6 +76,11 @@ ASKING_WHAT = {"what": "thing", "whats": "thing", "who": "person", "whos": "pers
 
 POINTING_BACK = frozenset({"it", "its", "they", "them", "their"})
 """The pronouns and possessives by which a message refers to a thing sought before ("report *its* location")."""
+
+SEEN_HERE = frozenset({"you", "can", "could", "do", "see", "saw", "seen", "find", "found", "notice", "noticed",
+                       "spot", "spotted", "is", "are", "s", "there", "here", "around", "now"})
+"""The words with which a what (or who) question asks what is where the robot has just gone, naming no place
+("go to the bedroom and tell me *what you see*", "... *who is there*"). English, not any corpus's."""
 
 CONTAINING = ("on top of", "inside", "on", "in", "at")
 """The words after which a "what is ..." question names where to look."""
@@ -155,6 +162,22 @@ def _what(message: str, names: MapNames | None) -> Question | None:
     return None
 
 
+def _what_here(message: str, here: str | None, names: MapNames | None) -> Question | None:
+    """The ``what`` question a message asks of where the command's last Go or Find took the robot (``here``, a map
+    room or place), when it asks what or who is there and names no place ("go to the bedroom and tell me *what
+    you see*")."""
+    words = message.lower().replace("'", " ").replace("’", " ").split()
+    if here is None or names is None or len(words) < 2 or words[0] not in ASKING_WHAT \
+            or not all(w in SEEN_HERE for w in words[1:]):
+        return None
+    referent = names.by_id(here)
+    if referent is None or referent.kind not in ("room", "place"):
+        return None
+    place = names.map.place(referent.id) if referent.kind == "place" else None
+    return Question("what", referent.id, "on" if place is not None and not place.openable else "in",
+                    ASKING_WHAT[words[0]])
+
+
 def _state(asked: str, names: MapNames | None) -> Question:
     """A state question: the state asked, and where the thing is when a place follows it ("is the window open
     *in the bedroom*?": ``about`` the bedroom, where the robot looks for it)."""
@@ -186,6 +209,7 @@ def read_questions(parse: Parse, commanded: Sequence[Binding], names: MapNames |
     (:func:`seal_cli.planning.problem.commanded_frames`); each takes the question its words ask."""
     questions: dict[Binding, Question] = {}
     answered = False                  # an earlier frame of the command answers a question
+    here: str | None = None           # where the command's last Go or Find took the robot
     k = 0
     for evoked in parse.frames:
         start = k
@@ -206,6 +230,12 @@ def read_questions(parse: Parse, commanded: Sequence[Binding], names: MapNames |
             question = Question("fact", relation=fact) if fact else _what(said, names)
             if question is None and answered and reports(said):           # "find the cup and tell me where it is"
                 question = Question("report")
+            if question is None and not answered:                       # "go to the bedroom and tell me what you see"
+                question = _what_here(said, here, names)
+        for b in commanded[start:k]:
+            if (went := b.elements.get("goal") if b.frame.name == "Go" else
+                    b.elements.get("ground") if b.frame.name == "Find" else None) is not None:
+                here = went
         if question is not None:
             questions.update((b, question) for b in commanded[start:k])
             answered = answered or question.kind != "report"

@@ -105,6 +105,21 @@ def test_a_message_asking_for_what_an_earlier_frame_found_reports_it(library: Li
     assert not reports("that you are here")     # a pronoun of the speaker or the robot points at nothing sought
 
 
+def test_what_is_seen_after_going_somewhere_asks_what_is_there(library: Library) -> None:
+    """"go to the bedroom and tell me what you see": the message names no place, so it asks what is where the
+    Go took the robot; a message that asks something else, or names its own place, keeps its reading."""
+    assert [q for _, q in asked("go to the bedroom and tell me what you see", library)] == [
+        Question("what", "bedroom", "in")]
+    assert [q for _, q in asked("go to the kitchen and tell me who is there", library)] == [
+        Question("what", "kitchen", "in", "person")]
+    assert [q for _, q in asked("go to the dining table and tell me what you can see", library)] == [
+        Question("what", "dining_table_1", "on")]
+    assert [q for _, q in asked("go to the kitchen and tell me what you see in the fridge", library)] == [
+        Question("what", "fridge_1", "in")]
+    assert asked("go to the kitchen and tell me what you think", library) == []     # asks no looking
+    assert asked("tell me what you see", library) == []                             # nowhere gone: nothing to name
+
+
 def told(text: str, library: Library) -> list[tuple[str, Question | None]]:
     """Each commanded frame of ``text`` as the planner reads it on the apartment, with its question."""
     m = load_map("apartment")

@@ -263,6 +263,18 @@ def test_nobody_but_the_speaker_is_said_so(library: Library, text: str, answer: 
     assert result.completed and agent.answers == [answer]
 
 
+def test_what_the_robot_sees_where_it_went_is_said_not_the_messages_words(library: Library) -> None:
+    """"go to the kitchen and tell me what you see" said "what you see": it says what is in the kitchen."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
+
+    agent, result = run_on_map(load_map("apartment"), "go to the kitchen and tell me what you see", library,
+                               make_policy("sefm"), rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    assert len(agent.answers) == 1 and agent.answers[0].startswith("in the kitchen: ")
+    assert "spoon_1" in agent.answers[0] and "what you see" not in agent.answers[0]
+
+
 def test_a_room_asked_for_is_the_maps_room_gone_to_not_a_thing_searched_for(library: Library) -> None:
     """"where is the kitchen?" drove to the sink, answered where the sink is and gave up after 8 replans
     ("sees no kitchen from here"): a room is known from the map, driven into, and its answer says where it is."""
