@@ -85,8 +85,9 @@ for _table in (PREPOSITIONS, POLITE, POLITE_FORMULAE, SEPARATOR_WORDS, NUMBERS, 
                VOCATIVES):
     for _phrase in _table:
         _parts = tuple(_phrase.split())
-        if len(_parts) > 1 and (_phrase, _parts) not in _PHRASES.get(_parts[:2], ()):
-            _PHRASES[_parts[:2]] = (*_PHRASES.get(_parts[:2], ()), (_phrase, _parts))
+        _two = (_parts[0], _parts[1]) if len(_parts) > 1 else None
+        if _two is not None and (_phrase, _parts) not in _PHRASES.get(_two, ()):
+            _PHRASES[_two] = (*_PHRASES.get(_two, ()), (_phrase, _parts))
 _PHRASES = {first: tuple(sorted(found, key=lambda item: -len(item[1]))) for first, found in _PHRASES.items()}
 _PHRASE_FIRST = frozenset(first for first, _ in _PHRASES)
 
