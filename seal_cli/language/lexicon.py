@@ -283,16 +283,16 @@ class Tagger(State):
         words = self.words
         i = 0
         while i < len(words):
-            low = words[i].lower
-            found = self.first_match(_ANYWHERE.rules(low), i)
+            anywhere, clause_start, inside, word = _GATES.rules(words[i].lower)
+            found = self.first_match(anywhere, i)
             if found is None and self.expect_verb:
-                found = self.first_match(_CLAUSE_START.rules(low), i)
+                found = self.first_match(clause_start, i)
                 if found is None:
                     self.expect_verb = False    # not a verb: tag it as what it is; the grammar reports it
             if found is None:
-                found = self.first_match(_INSIDE.rules(low), i)
+                found = self.first_match(inside, i)
             if found is None:
-                found = self.first_match(_WORDS.rules(low), i)
+                found = self.first_match(word, i)
                 assert found is not None        # the last rule of WORDS always matches
                 last = self.out[-1]
                 if last.lower in ("hand", "hands") and len(self.out) > 1 and \
@@ -338,27 +338,28 @@ class Tagger(State):
 
 
 class Gates:
-    """The rules of one table that may match a word, by the word's lower-case form (each rule's ``first`` gate is
+    """The rules of each table that may match a word, by the word's lower-case form (each rule's ``first`` gate is
     asked once per form, the answer kept here)."""
 
     FORMS = 100_000
     """How many word forms are kept before the cache starts again."""
 
-    def __init__(self, table: tuple[Rule, ...]) -> None:
-        self.table = table
-        self._by_form: dict[str, tuple[Rule, ...]] = {}
+    def __init__(self, tables: tuple[tuple[Rule, ...], ...]) -> None:
+        self.tables = tables
+        self._by_form: dict[str, tuple[tuple[Rule, ...], ...]] = {}
 
-    def rules(self, low: str) -> tuple[Rule, ...]:
-        """The rules of the table, in order, that may match a word read as ``low``."""
+    def rules(self, low: str) -> tuple[tuple[Rule, ...], ...]:
+        """For each table, its rules, in order, that may match a word read as ``low``."""
         rules = self._by_form.get(low)
         if rules is None:
             if len(self._by_form) >= self.FORMS:
                 self._by_form.clear()
-            rules = self._by_form[low] = tuple(r for r in self.table if r.admits(low))
+            rules = self._by_form[low] = tuple(tuple(r for r in table if r.admits(low)) for table in self.tables)
         return rules
 
 
-_ANYWHERE, _CLAUSE_START, _INSIDE, _WORDS = Gates(ANYWHERE), Gates(CLAUSE_START), Gates(INSIDE), Gates(WORDS)
+_GATES = Gates((ANYWHERE, CLAUSE_START, INSIDE, WORDS))
+"""The tagger's tables in the order :meth:`Tagger.run` tries them."""
 
 
 @dataclass(frozen=True)
