@@ -23,6 +23,7 @@ class Types:
         self._evoked: dict[str, tuple[Frame, ...]] = {}
         self._objects: dict[str, str | None] = {}
         self._cutting: dict[str, tuple[Frame, str] | None] = {}
+        self._person: dict[str, bool] = {}
         self._library = library
 
     def object_role(self, unit: str) -> str | None:
@@ -98,8 +99,11 @@ class Types:
         return self._open[type_]
 
     def is_person(self, type_: str) -> bool:
-        """A type only people belong to (``person``)."""
-        return self.is_a("person", type_) is True and not self.is_open(type_)
+        """A type only people belong to (``person``); memoised by type."""
+        found = self._person.get(type_)
+        if found is None:
+            found = self._person[type_] = self.is_a("person", type_) is True and not self.is_open(type_)
+        return found
 
     def is_location(self, type_: str) -> bool:
         """A type rooms belong to (``location``): where things are, not what they are."""

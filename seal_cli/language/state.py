@@ -149,6 +149,9 @@ def longest_phrase(words: Sequence[Word], i: int, table: frozenset[str]) -> int:
     return 0
 
 
+_IN_NP = frozenset({Tag.DET, Tag.NUM, Tag.POSS, Tag.RESULT})
+"""The tags after which the next word is inside a noun phrase, before its head (:meth:`State.in_np`)."""
+
 _DISLOCATED_WORDS = 12
 """How far a phrase said first may run before its comma ("the dice on the sofa in the living room,")."""
 
@@ -276,7 +279,7 @@ class State:
 
     def in_np(self) -> bool:
         """Whether the next word is inside a noun phrase, before its head."""
-        return self.prev_tag() in (Tag.DET, Tag.NUM, Tag.POSS, Tag.RESULT)
+        return bool(self.out) and self.out[-1].tag in _IN_NP
 
     def next_lower(self, i: int) -> str:
         return self.words[i + 1].lower if i + 1 < len(self.words) else ""
