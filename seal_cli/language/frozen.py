@@ -24,25 +24,25 @@ def quick_init(cls: type[T]) -> type[T]:
     """``cls`` (a frozen dataclass without slots, keyword-only fields or init-only variables) with a quicker
     ``__init__`` that makes the same objects (see the module docstring)."""
     params = getattr(cls, "__dataclass_params__", None)
-    fields = dataclasses.fields(cls)  # type: ignore[arg-type]
+    fields = dataclasses.fields(cls) if params is not None else ()  # type: ignore[arg-type]
     if params is None or not params.frozen or "__slots__" in cls.__dict__ or \
             len(fields) != len(getattr(cls, "__dataclass_fields__", ())) or \
-            any(not f.init or f.kw_only for f in fields):
+            any(not f.init or f.kw_only or f.name.startswith("_quick_") or f.name == "self" for f in fields):
         raise TypeError(f"quick_init: {cls.__name__} is no frozen dataclass of plain fields")
-    names: dict[str, Any] = {"_MISSING": dataclasses.MISSING}
+    names: dict[str, Any] = {"_quick_missing_": dataclasses.MISSING}
     args: list[str] = []
-    body: list[str] = ["    d = self.__dict__"]
+    body: list[str] = ["    _quick_dict_ = self.__dict__"]
     for f in fields:
         if f.default is not dataclasses.MISSING:
-            names[f"_d_{f.name}"] = f.default
-            args.append(f"{f.name}=_d_{f.name}")
+            names[f"_quick_default_{f.name}"] = f.default
+            args.append(f"{f.name}=_quick_default_{f.name}")
         elif f.default_factory is not dataclasses.MISSING:
-            names[f"_f_{f.name}"] = f.default_factory
-            args.append(f"{f.name}=_MISSING")
-            body.append(f"    if {f.name} is _MISSING: {f.name} = _f_{f.name}()")
+            names[f"_quick_factory_{f.name}"] = f.default_factory
+            args.append(f"{f.name}=_quick_missing_")
+            body.append(f"    if {f.name} is _quick_missing_: {f.name} = _quick_factory_{f.name}()")
         else:
             args.append(f.name)
-        body.append(f"    d[{f.name!r}] = {f.name}")
+        body.append(f"    _quick_dict_[{f.name!r}] = {f.name}")
     if hasattr(cls, "__post_init__"):
         body.append("    self.__post_init__()")
     source = f"def __init__(self, {', '.join(args)}) -> None:\n" + "\n".join(body) + "\n"
