@@ -102,25 +102,28 @@ def tokenize(text: str) -> list[Word]:
     words: list[Word] = []
     pos = 0
     for match in _TOKEN.finditer(text):
-        if match.start() != pos:
+        start, end = match.span()
+        if start != pos:
             raise CommandError(f"unexpected character {text[pos]!r}", pos + 1, text, ["a word"])
-        pos = match.end()
+        pos = end
         kind = match.lastgroup
+        if kind == "space" or kind == "quote":
+            continue                    # as many spaces as words: the commonest token first
         if kind == "word":
-            words.append(Word(match.group(), match.start(), pos))
-        elif kind == "punct" and match.group() == "." and words and words[-1].end == match.start() and \
+            words.append(Word(match.group(), start, pos))
+        elif kind == "punct" and match.group() == "." and words and words[-1].end == start and \
                 words[-1].lower in TITLES and capitalised(words[-1]) and _title_before_name(text, pos) and \
                 (len(words) < 2 or words[-2].lower not in DETERMINERS):     # "the Dr. Then ..." ends a sentence
             title = words[-1]
             words[-1] = Word(text[title.start:pos], title.start, pos)    # "Mr. Patel": the stop is the title's
         elif kind == "punct":           # "..." and "?!" are one mark
-            words.append(Word(match.group()[0], match.start(), pos))
+            words.append(Word(match.group()[0], start, pos))
         elif kind == "amp":
-            words.append(Word("and", match.start(), pos))
+            words.append(Word("and", start, pos))
         elif kind == "dash":
-            words.append(Word(";", match.start(), pos))
+            words.append(Word(";", start, pos))
         elif kind == "poss":
-            words.append(Word("'s", match.start(), pos))
+            words.append(Word("'s", start, pos))
     if pos != len(text):
         raise CommandError(f"unexpected character {text[pos]!r}", pos + 1, text, ["a word"])
     return words
