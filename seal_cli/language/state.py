@@ -123,15 +123,20 @@ def match_phrase(words: Sequence[Word], i: int, table: Iterable[str] | Mapping[s
     return 1 if first in table else 0
 
 
+_TABLES_INDEXED = 256
 _INDEXED: dict[frozenset[str], dict[str, tuple[tuple[str, ...], ...]]] = {}
 """Each table of phrases :func:`longest_phrase` was asked about (a constant of English: keyed by its value),
 indexed by first word, longest first."""
 
 
-def longest_phrase(words: Sequence[Word], i: int, table: frozenset[str]) -> int:
+def longest_phrase(words: Sequence[Word], i: int, table: Iterable[str]) -> int:
     """How many words of the longest phrase of ``table`` (one word or several) start at ``i`` (0: none)."""
+    if not isinstance(table, frozenset):
+        table = frozenset(table)                 # a list or a dict of phrases: its phrases, as a key
     index = _INDEXED.get(table)
     if index is None:
+        if len(_INDEXED) >= _TABLES_INDEXED:     # tables made afresh by a caller: the cache starts again
+            _INDEXED.clear()
         found: dict[str, list[tuple[str, ...]]] = {}
         for phrase in table:
             parts = tuple(phrase.split())

@@ -155,3 +155,12 @@ def test_every_corpus_parses_as_with_the_plain_machinery(library: Library, share
     plain = CommandParser(library)
     for name, texts, vocabulary in samples:
         assert outputs(plain, texts, vocabulary, fresh=True) == found[name], name
+
+
+def test_a_phrase_table_of_any_kind_reads_as_a_set_of_phrases() -> None:
+    words = tokenize("would you mind showing me where the keys are")
+    phrases = ["would you mind", "would you", "you mind showing", "where"]
+    for table in (phrases, tuple(phrases), dict.fromkeys(phrases), frozenset(phrases)):
+        found = [state.longest_phrase(words, i, table) for i in range(len(words))]
+        assert found == [plain_longest_phrase(words, i, frozenset(phrases)) for i in range(len(words))]
+        assert found == [3, 3, 0, 0, 0, 1, 0, 0, 0]
