@@ -22,6 +22,8 @@ class Types:
         self._states: dict[str, bool] = {}
         self._evoked: dict[str, tuple[Frame, ...]] = {}
         self._objects: dict[str, str | None] = {}
+        self._cutting: dict[str, tuple[Frame, str] | None] = {}
+        self._person: dict[str, bool] = {}
         self._library = library
 
     def object_role(self, unit: str) -> str | None:
@@ -65,6 +67,26 @@ class Types:
                                                 and len(p.args) == 2 and p.args[0] == first), None)
         return self._relations[frame.name]
 
+    def cutting(self, noun: str) -> tuple[Frame, str] | None:
+        """The frame that cuts a thing into pieces, and its lexical unit: the one the piece's noun
+        names ("slice"), else the one of "cut", whose result is a state of its theme (``sliced``);
+        memoised by noun."""
+        if noun in self._cutting:
+            return self._cutting[noun]
+        found: tuple[Frame, str] | None = None
+        for unit in (noun, "cut"):
+            for frame in self.evoked_by(unit):
+                first = frame.elements[0].role if frame.elements else None
+                if any(not p.negated and p.args == (first,) for p in frame.postconditions):
+                    found = (frame, unit)
+                    break
+            if found is not None:
+                break
+        if len(self._cutting) >= 4096:
+            self._cutting.clear()
+        self._cutting[noun] = found
+        return found
+
     def is_a(self, cls: str, type_: str) -> bool | None:
         key = (cls, type_)
         if key not in self._is_a:
@@ -77,8 +99,11 @@ class Types:
         return self._open[type_]
 
     def is_person(self, type_: str) -> bool:
-        """A type only people belong to (``person``)."""
-        return self.is_a("person", type_) is True and not self.is_open(type_)
+        """A type only people belong to (``person``); memoised by type."""
+        found = self._person.get(type_)
+        if found is None:
+            found = self._person[type_] = self.is_a("person", type_) is True and not self.is_open(type_)
+        return found
 
     def is_location(self, type_: str) -> bool:
         """A type rooms belong to (``location``): where things are, not what they are."""

@@ -526,13 +526,9 @@ class Evoker:
 
     def cutting(self, noun: str) -> tuple[Frame, str] | None:
         """The frame that cuts a thing into pieces, and its lexical unit: the one the piece's noun
-        names ("slice"), else the one of "cut", whose result is a state of its theme (``sliced``)."""
-        for unit in (noun, "cut"):
-            for frame in self.types.evoked_by(unit):
-                first = frame.elements[0].role if frame.elements else None
-                if any(not p.negated and p.args == (first,) for p in frame.postconditions):
-                    return frame, unit
-        return None
+        names ("slice"), else the one of "cut", whose result is a state of its theme (``sliced``); memoised by
+        the library's :class:`~seal_cli.language.element_types.Types`."""
+        return self.types.cutting(noun)
 
     def cut_for(self, np: NP) -> None:
         """A piece cut from a whole ("an apple *slice*", "a *piece* of bread", ``grounding.PIECES``)

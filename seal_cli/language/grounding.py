@@ -359,6 +359,28 @@ class Vocabulary:
     def _rules_alone(self) -> Vocabulary:
         return self if self.usage is not None and not self.usage else self.with_usage(_RULES)
 
+    def grounded(self, words: Sequence[str], of: Sequence[str] = ()) -> str | None:
+        """:meth:`ground_words` of a phrase's words (its head last) and of its "of" phrase's, remembered by
+        this vocabulary: a sentence asks for the same phrase several times (for each frame and role that
+        may take it), and the answer depends only on the words and this vocabulary (which holds the
+        sentence's context, :meth:`in_context`: each sentence's copy remembers its own)."""
+        key = (tuple(words), tuple(of))
+        memo = self._grounded
+        if key in memo:
+            return memo[key]
+        if len(memo) >= GROUNDED:
+            memo.clear()
+        found = memo[key] = self.ground_words(key[0], -1, key[1])
+        return found
+
+    @cached_property
+    def _grounded(self) -> dict[tuple[tuple[str, ...], tuple[str, ...]], str | None]:
+        return {}
+
+
+GROUNDED = 4096
+"""How many phrases a vocabulary remembers grounding (:meth:`Vocabulary.grounded`) before it starts again."""
+
 
 def _entries(data: Any, where: Where) -> tuple[list[str], dict[str, list[str]]]:
     if isinstance(data, dict) and "classes" in data:

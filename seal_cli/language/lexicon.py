@@ -283,16 +283,16 @@ class Tagger(State):
         words = self.words
         i = 0
         while i < len(words):
-            low = words[i].lower
-            found = self.first_match(ANYWHERE, i, low)
+            anywhere, clause_start, inside, word = _GATES.rules(words[i].lower)
+            found = self.first_match(anywhere, i)
             if found is None and self.expect_verb:
-                found = self.first_match(CLAUSE_START, i, low)
+                found = self.first_match(clause_start, i)
                 if found is None:
                     self.expect_verb = False    # not a verb: tag it as what it is; the grammar reports it
             if found is None:
-                found = self.first_match(INSIDE, i, low)
+                found = self.first_match(inside, i)
             if found is None:
-                found = self.first_match(WORDS, i, low)
+                found = self.first_match(word, i)
                 assert found is not None        # the last rule of WORDS always matches
                 last = self.out[-1]
                 if last.lower in ("hand", "hands") and len(self.out) > 1 and \
@@ -301,10 +301,10 @@ class Tagger(State):
             i += found.consumed
         return self.out
 
-    def first_match(self, table: tuple[Rule, ...], i: int, low: str) -> Match | None:
-        """The first rule of ``table`` that consumes words at ``i``, applied; rules that only retag the
-        last word are applied on the way."""
-        for rule in _gated(table, low):
+    def first_match(self, rules: tuple[Rule, ...], i: int) -> Match | None:
+        """The first of ``rules`` (a table's, those its gates admit at the word) that consumes words at ``i``,
+        applied; rules that only retag the last word are applied on the way."""
+        for rule in rules:
             found = rule.match(self, i)
             if found is None:
                 continue
@@ -337,18 +337,29 @@ class Tagger(State):
             del self.particles[i]
 
 
-_GATED: dict[tuple[int, str], tuple[Rule, ...]] = {}
+class Gates:
+    """The rules of each table that may match a word, by the word's lower-case form (each rule's ``first`` gate is
+    asked once per form, the answer kept here)."""
+
+    FORMS = 100_000
+    """How many word forms are kept before the cache starts again."""
+
+    def __init__(self, tables: tuple[tuple[Rule, ...], ...]) -> None:
+        self.tables = tables
+        self._by_form: dict[str, tuple[tuple[Rule, ...], ...]] = {}
+
+    def rules(self, low: str) -> tuple[tuple[Rule, ...], ...]:
+        """For each table, its rules, in order, that may match a word read as ``low``."""
+        rules = self._by_form.get(low)
+        if rules is None:
+            if len(self._by_form) >= self.FORMS:
+                self._by_form.clear()
+            rules = self._by_form[low] = tuple(tuple(r for r in table if r.admits(low)) for table in self.tables)
+        return rules
 
 
-def _gated(table: tuple[Rule, ...], low: str) -> tuple[Rule, ...]:
-    """The rules of ``table`` that may match a word read as ``low`` (their ``first`` gate admits it)."""
-    key = (id(table), low)
-    rules = _GATED.get(key)
-    if rules is None:
-        if len(_GATED) > 100_000:
-            _GATED.clear()
-        rules = _GATED[key] = tuple(r for r in table if r.admits(low))
-    return rules
+_GATES = Gates((ANYWHERE, CLAUSE_START, INSIDE, WORDS))
+"""The tagger's tables in the order :meth:`Tagger.run` tries them."""
 
 
 @dataclass(frozen=True)

@@ -73,19 +73,23 @@ _SOURCES = frozenset(["from", "out of", "off"])
 if TYPE_CHECKING:
     from seal_cli.language.lexicon import Lexicon
 
-__all__ = ["CLOSED", "State", "match_phrase", "merge"]
+__all__ = ["CLOSED", "State", "longest_phrase", "match_phrase", "merge"]
 
 # ---------------------------------------------------------------------------------------------
 # Phrases of closed-class words, and the first words of what the tagger looks at specially
 
-_PHRASES: dict[str, tuple[str, ...]] = {}
+_PHRASES: dict[tuple[str, str], tuple[tuple[str, tuple[str, ...]], ...]] = {}
+"""First two words → (phrase, its words) of each multiword phrase of the closed-class tables, longest first (so
+:func:`match_phrase` stops at the first that fits)."""
 for _table in (PREPOSITIONS, POLITE, POLITE_FORMULAE, SEPARATOR_WORDS, NUMBERS, HERE_WORDS, TIME_WORDS, SUBORDINATORS,
                VOCATIVES):
     for _phrase in _table:
         _parts = tuple(_phrase.split())
-        if len(_parts) > 1:
-            _PHRASES.setdefault(_parts[0], ())
-            _PHRASES[_parts[0]] = (*_PHRASES[_parts[0]], _phrase)
+        _two = (_parts[0], _parts[1]) if len(_parts) > 1 else None
+        if _two is not None and (_phrase, _parts) not in _PHRASES.get(_two, ()):
+            _PHRASES[_two] = (*_PHRASES.get(_two, ()), (_phrase, _parts))
+_PHRASES = {first: tuple(sorted(found, key=lambda item: -len(item[1]))) for first, found in _PHRASES.items()}
+_PHRASE_FIRST = frozenset(first for first, _ in _PHRASES)
 
 def first_words(phrases: Iterable[str]) -> frozenset[str]:
     """The words the phrases start with: where a rule reading them can start (its gate)."""
@@ -110,19 +114,48 @@ CLOSED = (NP_OPENERS | PRONOUNS | WH_WORDS | BE_WORDS | PARTICLES
 def match_phrase(words: Sequence[Word], i: int, table: Iterable[str] | Mapping[str, object]) -> int:
     """How many words of a multiword (or one-word) phrase of ``table`` start at ``i`` (0: none)."""
     first = words[i].lower
-    if first not in _PHRASES:
-        return 1 if first in table else 0
-    best = 0
-    for phrase in _PHRASES.get(first, ()):
-        if phrase in table:
-            parts = phrase.split()
+    if first in _PHRASE_FIRST and i + 1 < len(words):
+        left = len(words) - i
+        for phrase, parts in _PHRASES.get((first, words[i + 1].lower), ()):   # longest first: the first that fits
             n = len(parts)
-            if n > best and i + n <= len(words) and all(words[i + k].lower == parts[k] for k in range(n)):
-                best = n
-    if best == 0 and first in table:
-        best = 1
-    return best
+            if n <= left and phrase in table and all(words[i + k].lower == parts[k] for k in range(2, n)):
+                return n
+    return 1 if first in table else 0
 
+
+_TABLES_INDEXED = 256
+_INDEXED: dict[frozenset[str], dict[str, tuple[tuple[str, ...], ...]]] = {}
+"""Each table of phrases :func:`longest_phrase` was asked about (a constant of English: keyed by its value),
+indexed by first word, longest first."""
+
+
+def longest_phrase(words: Sequence[Word], i: int, table: Iterable[str]) -> int:
+    """How many words of the longest phrase of ``table`` (one word or several) start at ``i`` (0: none)."""
+    if not isinstance(table, frozenset):
+        table = frozenset(table)                 # a list or a dict of phrases: its phrases, as a key
+    index = _INDEXED.get(table)
+    if index is None:
+        if len(_INDEXED) >= _TABLES_INDEXED:     # tables made afresh by a caller: the cache starts again
+            _INDEXED.clear()
+        found: dict[str, list[tuple[str, ...]]] = {}
+        for phrase in table:
+            parts = tuple(phrase.split())
+            if parts:
+                found.setdefault(parts[0], []).append(parts)
+        index = _INDEXED[table] = {first: tuple(sorted(set(all_parts), key=len, reverse=True))
+                                   for first, all_parts in found.items()}
+    if i >= len(words):
+        return 0
+    left = len(words) - i
+    for parts in index.get(words[i].lower, ()):
+        n = len(parts)
+        if n <= left and all(words[i + k].lower == parts[k] for k in range(1, n)):
+            return n
+    return 0
+
+
+_IN_NP = frozenset({Tag.DET, Tag.NUM, Tag.POSS, Tag.RESULT})
+"""The tags after which the next word is inside a noun phrase, before its head (:meth:`State.in_np`)."""
 
 _DISLOCATED_WORDS = 12
 """How far a phrase said first may run before its comma ("the dice on the sofa in the living room,")."""
@@ -251,7 +284,7 @@ class State:
 
     def in_np(self) -> bool:
         """Whether the next word is inside a noun phrase, before its head."""
-        return self.prev_tag() in (Tag.DET, Tag.NUM, Tag.POSS, Tag.RESULT)
+        return bool(self.out) and self.out[-1].tag in _IN_NP
 
     def next_lower(self, i: int) -> str:
         return self.words[i + 1].lower if i + 1 < len(self.words) else ""

@@ -69,7 +69,7 @@ class NP:
         of = []
         if self.of is not None and self.of.head is not None:
             of = [w.text for w in self.of.mods] + [self.of.head.text]
-        return vocabulary.ground_words(words, -1, of)
+        return vocabulary.grounded(words, of)
 
     def all_nps(self) -> Iterator[NP]:
         yield self

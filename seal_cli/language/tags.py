@@ -7,8 +7,8 @@ tagger emits is a terminal the grammar knows and the other way round. Members ar
 
 from __future__ import annotations
 
-import enum
 import re
+from collections.abc import Iterator
 from pathlib import Path
 
 from seal_cli.resources import grammar_path
@@ -16,8 +16,27 @@ from seal_cli.resources import grammar_path
 __all__ = ["NP_START", "Tag", "declared_tags"]
 
 
-class Tag(enum.StrEnum):
-    """What a word is to the grammar (see the comment at the top of ``grammars/command.lark``)."""
+class _Tags(type):
+    """The type of :class:`Tag`: iterating the class gives its members, in the order they are listed."""
+
+    _members: tuple[Tag, ...]
+
+    def __iter__(cls) -> Iterator[Tag]:
+        return iter(cls._members)
+
+    def __len__(cls) -> int:
+        return len(cls._members)
+
+
+class Tag(str, metaclass=_Tags):
+    """What a word is to the grammar (see the comment at the top of ``grammars/command.lark``).
+
+    Each member is an instance of this ``str`` subclass, so ``Tag.VERB == "VERB"`` and ``isinstance(w.tag, Tag)``
+    hold as they did for the ``enum.StrEnum`` it was, and ``.value`` is the plain string. Not an enum: in Python
+    3.11 every ``Tag.VERB`` read through an enum's class costs five times a plain class attribute (its metaclass's
+    ``__getattr__`` hook), and the tagger's rules read a tag a few hundred thousand times a second."""
+
+    __slots__ = ()
 
     VERB = "VERB"            # a lexical unit ("bring", "pick up", "tell me how many")
     PARTICLE = "PARTICLE"    # the split particle of a verb, a preposition without object, a time adverbial
@@ -45,6 +64,19 @@ class Tag(enum.StrEnum):
     REL = "REL"              # a relative clause kept whole
     SAID = "SAID"            # what is said after a verb of saying, kept whole
     LABEL = "LABEL"          # a number naming a numbered thing ("room 214")
+
+    @property
+    def value(self) -> str:
+        """The tag as a plain string."""
+        return str.__str__(self)
+
+    def __repr__(self) -> str:
+        return f"<Tag.{self.value}>"
+
+
+Tag._members = tuple(Tag(value) for name, value in vars(Tag).items() if name.isupper() and isinstance(value, str))
+for _member in Tag._members:
+    setattr(Tag, _member.value, _member)
 
 
 NP_START = frozenset({Tag.DET, Tag.NUM, Tag.POSS, Tag.PRON, Tag.NAME, Tag.WORD, Tag.RESULT})

@@ -7,9 +7,12 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
+from seal_cli.language.frozen import quick_init
+
 __all__ = ["Evoked", "Parse", "Phrase"]
 
 
+@quick_init
 @dataclass(frozen=True)
 class Phrase:
     """What fills a frame element: the words, their head (lemma), the class they denote.
@@ -58,6 +61,7 @@ class Phrase:
         return data
 
 
+@quick_init
 @dataclass(frozen=True)
 class Evoked:
     """A frame evoked by a verb phrase (or by a result word), with its elements."""
@@ -87,6 +91,7 @@ class Evoked:
         return data
 
 
+@quick_init
 @dataclass(frozen=True)
 class Parse:
     """A parsed command: the frames it evokes, in the order they are to be done."""

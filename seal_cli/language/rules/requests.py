@@ -58,7 +58,7 @@ from seal_cli.language.english import (
 )
 from seal_cli.language.morphology import gerund_lemma, is_adjective, noun_lemma, participles, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import CLOSED, State, first_words, match_phrase, merge
+from seal_cli.language.state import CLOSED, State, first_words, longest_phrase, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 
@@ -74,14 +74,7 @@ def _unsaid(at: int, tag: str, info: object = None, lower: str = "") -> Word:
 
 def _phrase(s: State, i: int, table: frozenset[str]) -> int:
     """How many words of a phrase of ``table`` start at ``i`` (0: none), longest first."""
-    words = s.words
-    best = 0
-    for phrase in table:
-        parts = phrase.split()
-        n = len(parts)
-        if n > best and i + n <= len(words) and all(words[i + k].lower == parts[k] for k in range(n)):
-            best = n
-    return best
+    return longest_phrase(s.words, i, table)
 
 
 def _sentence_asks_nothing_else(s: State, i: int) -> bool:
