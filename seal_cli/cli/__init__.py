@@ -55,7 +55,7 @@ MAX_STEPS = 100_000
 """The most belief updates ``seal localize --steps`` takes (about ten minutes at 200 particles)."""
 
 POSE_TOPIC_HELP = ("the robot's pose (PoseStamped, PoseWithCovarianceStamped, Odometry, or /tf); default: /tf if it "
-                   "links --frame to base_link, else the bag's only pose topic.")
+                   "links --frame to --base-frame, else the bag's only pose topic.")
 """``--pose-topic``'s help, shared by ``seal localize --bag`` and ``seal import-bag``."""
 
 DETECTIONS_TOPIC_HELP = "the vision_msgs Detection2DArray/3DArray topic; default: the bag's only one."

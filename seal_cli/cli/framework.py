@@ -8,6 +8,7 @@ Imported by the command modules (through :mod:`seal_cli.cli`), never by ``seal -
 from __future__ import annotations
 
 import functools
+import inspect
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any, TypeVar
@@ -17,7 +18,7 @@ import typer
 from seal_cli import __version__
 from seal_cli.cli.output import run_command
 
-__all__ = ["FramelibOption", "JsonOption", "app", "bench_app", "command"]
+__all__ = ["FramelibOption", "JsonOption", "app", "bench_app", "command", "short_help"]
 
 app = typer.Typer(
     name="seal",
@@ -28,7 +29,8 @@ app = typer.Typer(
     context_settings={"help_option_names": ["-h", "--help"]},
 )
 
-bench_app = typer.Typer(help="Benchmarks: parsing corpora, the task suite with baselines, belief-update speed.",
+bench_app = typer.Typer(help="Benchmarks: parsing corpora, planning time, belief-update speed, map queries, the task "
+                        "suites with baselines, commands end to end, hostile inputs, reading bags, start-up cost.",
                         no_args_is_help=True)
 app.add_typer(bench_app, name="bench")
 
@@ -52,10 +54,19 @@ def command(*args: Any, on: typer.Typer | None = None, **kwargs: Any) -> Callabl
             if code:
                 raise typer.Exit(code)
 
+        if "short_help" not in kwargs and function.__doc__:
+            kwargs["short_help"] = short_help(function.__doc__)
         (on or app).command(*args, **kwargs)(run)
         return function
 
     return decorate
+
+
+def short_help(doc: str) -> str:
+    """A command's line in its group's list of commands: the docstring's first paragraph on one line. typer (0.28)
+    keeps the docstring's line breaks there in its rich markup mode, so a wrapped docstring was listed broken
+    mid-sentence (``seal bench --help``: "... a building's" / "and a large floor's ...")."""
+    return " ".join(inspect.cleandoc(doc).split("\n\n")[0].split())
 
 
 def _refuse_empty_paths(values: dict[str, Any]) -> None:

@@ -67,7 +67,7 @@ def frames(
     if as_json:
         emit_json({"frames": [frame_json(f) for f in library]})
         return
-    table = Table(title=f"{len(library)} frames", title_justify="left")
+    table = Table(title=f"{len(library)} frame{'' if len(library) == 1 else 's'}", title_justify="left")
     for column in ("frame", "lexical units", "elements", "preconditions", "postconditions"):
         table.add_column(column, overflow="fold")
     for frame in library:

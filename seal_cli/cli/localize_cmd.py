@@ -111,7 +111,7 @@ def localize(
     frame: str = typer.Option("map", "--frame", help="With --bag: the map's TF frame (poses and detections are "
                               "carried into it); also the frame of --goals."),
     base_frame: str = typer.Option("base_link", "--base-frame", help="With --bag: the robot's TF frame."),
-    labels: Path | None = typer.Option(None, "--labels", help="With --bag: YAML {id: class} or [class, ...] naming "
+    labels: Path | None = typer.Option(None, "--labels", help="With --bag: YAML {id: class} or \\[class, ...] naming "
                                        "numeric class ids (ROS 1 vision_msgs, COCO ids).", show_default=False),
     goals: Path | None = typer.Option(None, "--goals", help="Write per frame the pose to act from: YAML (.yaml) or "
                                       "geometry_msgs/PoseStamped on /goal_pose in a bag (.bag, .mcap, a folder).",

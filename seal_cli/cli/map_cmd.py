@@ -83,7 +83,7 @@ def _xy(p: list[float]) -> str:
 
 @command("map")
 def map_command(
-    path: str = typer.Argument(..., help="A map file, or the name of a shipped map (apartment)."),
+    path: str = typer.Argument(..., help="A map file, or the name of a shipped map (apartment, townhouse, cafe, ...)."),
     png: Path | None = typer.Option(None, "--png", help="Also draw the map, its rooms, places, objects and the "
                                     "robot's visible region into this PNG file.", show_default=False),
     as_json: bool = JsonOption,

@@ -21,7 +21,7 @@ def import_bag(
                                                 help=f"From the bag: {DETECTIONS_TOPIC_HELP}", show_default=False),
     frame: str = typer.Option("map", "--frame", help="The map's TF frame: poses and detections are carried into it."),
     base_frame: str = typer.Option("base_link", "--base-frame", help="The robot's TF frame."),
-    labels: Path | None = typer.Option(None, "--labels", help="YAML {id: class} or [class, ...] naming numeric "
+    labels: Path | None = typer.Option(None, "--labels", help="YAML {id: class} or \\[class, ...] naming numeric "
                                        "class ids (ROS 1 vision_msgs, COCO ids).", show_default=False),
 ) -> None:
     """Read a bag's robot poses and detections into observations YAML (one entry per detection message)."""

@@ -360,7 +360,7 @@ def e2e(
     framelib: list[Path] | None = FramelibOption,
     as_json: bool = JsonOption,
 ) -> None:
-    """Plain commands on the apartment and the AWS house: how many ground to the expected plan, how many
+    """Plain commands on the shipped maps and the AWS house: how many ground to the expected plan, how many
     runs end as they must."""
     from rich.table import Table
 
