@@ -52,26 +52,13 @@ class _TourModel:
     R: np.ndarray
     on: np.ndarray
     scale: float
-    way: dict[tuple[int, int], list[tuple[float, np.ndarray, Any]]] | None = None
+    way: dict[tuple[int, int], list[tuple[float, np.ndarray, float]]] | None = None
     """Per drive (from look a, or -1 the robot, to look b), the looks the robot takes on the way: metres
-    from a, which columns that look reveals (a place within reach and open), and the drive on from there (a
-    float, or per column where a place's drive on is not from there: :meth:`SeFMPolicy._acted_on`)."""
+    from a, which columns that look reveals (a place within reach and open), and the drive on from there."""
     mass: np.ndarray | None = None
     """Per column, the belief a look on the way reveals of it (with :attr:`way`)."""
-    on_at: np.ndarray | None = None
-    """``on_at[k, c]``: the drive on when look k finds the thing in column c, where it is not :attr:`on` ``[k]``
-    (NaN: it is): a place the robot cannot act on all of from the look (:meth:`SeFMPolicy._acted_on`)."""
 
-    def _on(self, k: int, new: np.ndarray, gain: float) -> float:
-        """The weighted drive on for ``gain`` of the belief look k finds (``new``: per column, what it shows first)."""
-        row = self.on_at[k] if self.on_at is not None else None
-        if row is None or np.isnan(row).all():
-            return gain * float(self.on[k])
-        found = float(new.sum())
-        per = np.where(np.isnan(row), self.on[k], row)
-        return float(new @ per) * gain / found if found > 0 else 0.0
-
-    def _legs(self, prev: int, k: int) -> list[tuple[float, np.ndarray, Any]]:
+    def _legs(self, prev: int, k: int) -> list[tuple[float, np.ndarray, float]]:
         return self.way.get((prev, k), []) if self.way is not None else []
 
     def cost(self, order: Sequence[int]) -> float:
@@ -85,21 +72,16 @@ class _TourModel:
             for at, cols, on in self._legs(prev, k):   # a look on the way, and the drive stops when it finds it
                 total += (at - done) * left
                 done = at
-                fresh = cols & ~seen
-                gain = min(float(self.mass[fresh].sum()) if self.mass is not None else 0.0, left)
+                gain = min(float(self.mass[cols & ~seen].sum()) if self.mass is not None else 0.0, left)
                 seen |= cols
-                if isinstance(on, np.ndarray) and self.mass is not None:   # per column (:meth:`SeFMPolicy._acted_on`)
-                    found = float(self.mass[fresh].sum())
-                    total += float(self.mass[fresh] @ on[fresh]) * gain / found if found > 0 else 0.0
-                else:
-                    total += gain * on
+                total += gain * on
                 left = max(0.0, left - gain)
             total += (d - done + self.scale) * left
             new = np.where(seen, 0.0, R[k])
             found = float(new.sum())
             gain = min(found, left)
             seen |= R[k] > 0
-            total += self._on(k, new, gain)
+            total += gain * self.on[k]
             left = max(0.0, left - gain)
             prev = k
         return round(total, 6)   # equal to rounding: the same order for SeFM and object-only
@@ -119,13 +101,12 @@ class _TourModel:
                 new = cols & ~seen
                 if self.mass is not None:
                     mass[:-1][new] = self.mass[new]
-                metres[:-1][new] = driven + at + (on[new] if isinstance(on, np.ndarray) else on)
+                metres[:-1][new] = driven + at + on
                 seen |= cols
             driven += (self.here[k] if prev < 0 else self.between[prev, k]) + self.scale
             new = (R[k] > 0) & ~seen
             mass[:-1][new] = R[k][new]
-            on = self.on_at[k] if self.on_at is not None else np.full(R.shape[1], np.nan)
-            metres[:-1][new] = driven + np.where(np.isnan(on), self.on[k], on)[new]
+            metres[:-1][new] = driven + self.on[k]
             seen |= R[k] > 0
             prev = k
         mass[-1] = max(0.0, 1.0 - float(mass[:-1].sum()))
@@ -218,7 +199,6 @@ class SeFMPolicy(Policy):
         self._tours.begin(agent)
         self._stood: dict[str, tuple[float, float]] = {}
         self._onward: dict[tuple[str, tuple[float, float]], np.ndarray] = {}
-        self._footprint: dict[str, tuple[float, Cell | None]] = {}
         self._floor_sight: dict[Cell, np.ndarray] = {}
         self._prior_shares: dict[str, np.ndarray] = {}
         self.sefm: Any = None
@@ -741,8 +721,6 @@ class SeFMPolicy(Policy):
             best = [*best, alone]
             fields.setdefault(alone.view.cell, agent.grid.distances(alone.view.cell))
         model = self._tour_model(best, fields, then)
-        if self.acted_where_it_lies and then is not None:
-            model = self._acted_on(agent, best, model, then)
         if self.see_on_the_way and then is not None:
             model = self._on_the_way(agent, best, model, then)
         order, expected = model.best()
@@ -795,80 +773,6 @@ class SeFMPolicy(Policy):
         on = np.where(np.isfinite(on), on, 0.0)
         return _TourModel(here, between, R, self.onward * on, self.distance_scale)
 
-    acted_where_it_lies = True
-    """SeFM's drive on from a look counts from the look only for the places the robot can act on all of from
-    there (:meth:`_acted_on`); for a larger place, from where the thing on it is acted on, which the look does
-    not choose. Off: from the look for every place (search13 and earlier)."""
-
-    def _acted_on(self, agent: Agent, best: Sequence[Look], model: _TourModel, then: np.ndarray) -> _TourModel:
-        """``model`` with the drive on counted from where a thing found on a place is acted on.
-
-        A look from a cell within a place's reach sees into or onto all of it, but the robot can pick up what
-        it sees only from within the world's reach of *the thing*, which lies somewhere on the place. The
-        place covers at least a disc of radius ρ round its pivot (the distance to its nearest free cell: the
-        occupied footprint), so a look at distance r from the pivot can act on anything on it when r + ρ is
-        within the world's reach; then the drive on is from the look. Otherwise the thing may lie beyond reach
-        (the plate at the far end of a dining table, 1.64 m from the look that saw it), and where the robot acts
-        on it — and so the drive on — depends on where it lies, not on the look: it is counted from the place's
-        stand cell nearest its pivot, the same for every look that reveals the place, so the look's own
-        distance to the next stop cannot choose between two looks of it. Approximation: the footprint is the
-        disc its nearest free cell allows (a long table is longer), and a thing beyond reach is acted on from
-        one cell of the place."""
-        from dataclasses import replace
-
-        places = self._places(agent)
-        if not places:
-            return model
-        width = model.R.shape[1]
-        on_at = np.full((len(best), width), np.nan)
-        reach = agent.world.reach
-        for j, place in enumerate(places):
-            if not model.R[:, j].any():
-                continue
-            rho, anchor = self._footprint_of(agent, place)
-            if anchor is None or not np.isfinite(then[anchor]):
-                continue
-            for k, o in enumerate(best):
-                if model.R[k, j] <= 0:
-                    continue
-                x, y = agent.grid.point(o.view.cell)
-                if math.hypot(x - place.at[0], y - place.at[1]) + rho > reach + 1e-9:
-                    on_at[k, j] = self.onward * float(then[anchor])
-        if np.isnan(on_at).all():
-            return model
-        return replace(model, on_at=on_at)
-
-    def _footprint_of(self, agent: Agent, place: Known) -> tuple[float, Cell | None]:
-        """A place's footprint radius (its pivot's distance to the nearest free cell) and its stand cell nearest
-        the pivot (None: none), kept per place."""
-        if place.id not in self._footprint:
-            pts = agent.grid.free_points
-            rho = float(np.min(np.hypot(pts[:, 0] - place.at[0], pts[:, 1] - place.at[1]))) if len(pts) else 0.0
-            cells = agent.stand_cells(place)
-            anchor = None
-            if len(cells):
-                at = np.asarray([agent.grid.point((int(i), int(k))) for i, k in cells])
-                i = int(np.argmin(np.hypot(at[:, 0] - place.at[0], at[:, 1] - place.at[1])))
-                anchor = (int(cells[i, 0]), int(cells[i, 1]))
-            self._footprint[place.id] = (rho, anchor)
-        return self._footprint[place.id]
-
-    def _acted_from(self, agent: Agent, places: Sequence[Known], cols: np.ndarray, cell: Cell, on: float,
-                    then: np.ndarray) -> Any:
-        """The drive on ``on`` from a look on the way at ``cell`` revealing the place columns ``cols``: per column
-        where some place among them cannot be acted on all of from there (:meth:`_acted_on`), else ``on``."""
-        x, y = agent.grid.point(cell)
-        out = np.full(len(cols), on)
-        changed = False
-        for j in np.flatnonzero(cols[: len(places)]):
-            place = places[int(j)]
-            rho, anchor = self._footprint_of(agent, place)
-            if anchor is not None and np.isfinite(then[anchor]) and \
-                    math.hypot(x - place.at[0], y - place.at[1]) + rho > agent.world.reach + 1e-9:
-                out[j] = self.onward * float(then[anchor])
-                changed = True
-        return out if changed else on
-
     see_on_the_way = True
     """SeFM's expected cost when it weighs its own first look against object-only's counts what the drives see
     on the way (:meth:`_on_the_way`): the robot looks every metre of a drive, sees into or onto every open
@@ -903,15 +807,13 @@ class SeFMPolicy(Policy):
                 key = (start, o.view.cell)
                 if key not in self._ways:
                     self._ways[key] = self._stops(agent, start, o.view.cell)
-                legs: list[tuple[float, np.ndarray, Any]] = []
+                legs = []
                 for at, cell in self._ways[key]:
                     cols = np.zeros(width, dtype=bool)
                     cols[live] = self._reach_at(agent, places, live, cell)
                     if cols.any():
-                        on: Any = self.onward * (float(then[cell]) if np.isfinite(then[cell]) else 0.0)
-                        if self.acted_where_it_lies:
-                            on = self._acted_from(agent, places, cols, cell, on, then)
-                        legs.append((at, cols, on))
+                        on = float(then[cell]) if np.isfinite(then[cell]) else 0.0
+                        legs.append((at, cols, self.onward * on))
                 if legs:
                     way[(a, b)] = legs
         return replace(model, way=way, mass=mass)

@@ -22,18 +22,17 @@ PLACES = [("shelf_1", "shelf", (1.0, 1.4), False), ("shelf_2", "shelf", (2.0, 1.
 
 
 def corridor(library: Library, priors: dict[str, dict[str, float]], start: float = 0.0,
-             apple_on: str = "cabinet_2", extra: tuple[Item, ...] = (),
-             places: list[tuple[str, str, tuple[float, float], bool]] = PLACES) -> Scene:
+             apple_on: str = "cabinet_2", extra: tuple[Item, ...] = ()) -> Scene:
     """A corridor of free cells 8 m x 1 m (0.25 m), its places along the north side, the robot at the west."""
     pts = [(x, y) for x in np.arange(0.0, 8.01, 0.25) for y in np.arange(0.0, 1.01, 0.25)]
-    items = [Item(n, c, at, movable=False, receptacle=True, openable=o) for n, c, at, o in places]
-    where = dict((n, at) for n, _, at, _ in places)[apple_on]
+    items = [Item(n, c, at, movable=False, receptacle=True, openable=o) for n, c, at, o in PLACES]
+    where = dict((n, at) for n, _, at, _ in PLACES)[apple_on]
     items.append(Item("apple_1", "apple", (where[0], where[1] - 0.1), parent=apple_on))
     items.extend(extra)
     world = World(items, WorldRobot(pose=(start, 0.5, 0.0)), taxonomy=library.taxonomy, reach=1.5,
                   sensor=RangeSensor(Sensor(range=1.5)))
     m = Map("corridor", (-0.5, -0.5, 8.5, 2.0), rooms=(Room.box("kitchen", -0.5, -0.5, 8.5, 2.0),),
-            places=tuple(Place(n, c, at, openable=o, reach=0.75) for n, c, at, o in places), priors=priors,
+            places=tuple(Place(n, c, at, openable=o, reach=0.75) for n, c, at, o in PLACES), priors=priors,
             objects=tuple(ObjectTruth(i.key, i.at, i.parent) for i in items if i.movable and i not in extra),
             robot=Robot((start, 0.5, 0.0)), sensor=Sensor(range=0.75), grid=OccupancyGrid.from_cells(pts, 0.25))
     return Scene(world, m, Grid.from_points(pts, 0.25, connectivity=4), tuple(sorted({i.key for i in items})),
@@ -253,39 +252,6 @@ def test_sefm_finds_the_thing_from_the_look_nearer_the_next_stop(library: Librar
     deferring = SeFMPolicy(particles=50)
     deferring.defer_m = 0.5    # more than SeFM's expected saving: object-only's look
     assert first(deferring) == (3.25, 0.5)
-
-
-def test_a_look_at_a_place_too_large_to_act_on_all_of_from_it_counts_the_drive_on_from_the_place(
-        library: Library) -> None:
-    """A counter whose pivot is 0.9 m from the nearest free cell: a look 1.2 m from the pivot sees onto it, but
-    what lies on its far side is beyond the arm's 1.5 m, and the robot acts on it from where it lies, whichever
-    look saw it. So the drive on for the counter's belief is from the counter's stand cell nearest its pivot for
-    both looks, and the look nearer the table the apple goes to is no better for it: SeFM takes object-only's
-    (nearer) look. The cabinet beside it, all within reach of either look, keeps the drive on from the look."""
-    places = [*PLACES, ("counter_top_1", "counter_top", (4.0, 1.9), False)]
-    scene = corridor(library, {"apple": {"counter_top": 0.8}}, start=3.75, places=places)
-    frames = [("Place", {"theme": "apple", "goal": "dining_table"})]
-
-    def first(policy: SeFMPolicy, place: str = "counter_top_1") -> tuple[float, float]:
-        agent = ready(library, scene, policy, frames)
-        ids = [p.id for p in policy._places(agent)]
-        reveals = np.zeros(len(ids))
-        reveals[ids.index(place)] = 0.6
-
-        def look(x: float) -> Look:
-            cell = agent.grid.cell((x, 1.0))
-            return Look(0.6, float(agent.distances()[cell]), View(cell, (4.0, 1.9)), reveals)
-
-        return agent.grid.point(policy._first_of_tour(agent, [look(3.25), look(4.75)], "apple").cell)
-
-    agent = ready(library, scene, SeFMPolicy(particles=50), frames)
-    rho, anchor = agent.policy._footprint_of(agent, agent.known["counter_top_1"])   # type: ignore[attr-defined]
-    assert rho == pytest.approx(0.9) and anchor == agent.grid.cell((4.0, 1.0))
-    assert first(ObjectOnlyPolicy(particles=50)) == first(SeFMPolicy(particles=50)) == (3.25, 1.0)
-    from_the_look = SeFMPolicy(particles=50)
-    from_the_look.acted_where_it_lies = False   # the drive on from the look: the one nearer the table
-    assert first(from_the_look) == (4.75, 1.0)
-    assert first(SeFMPolicy(particles=50), "cabinet_1") == (4.75, 1.0)   # 0.3 m deep: acted on from the look
 
 
 def test_the_floor_share_is_bayes_over_what_is_still_unseen(library: Library) -> None:
