@@ -83,6 +83,8 @@ class Choice:
     shares: Mapping[str, float]
     costs: Mapping[int, float] = dataclasses.field(default_factory=dict)
     """Every candidate weighed and its expected metres to finish the plan (what :func:`choose` compared)."""
+    search: Mapping[int, float] = dataclasses.field(default_factory=dict)
+    """Of :attr:`costs`, the expected metres until the thing sought now is reached (the rest is the plan after it)."""
 
 
 @dataclass(frozen=True)
@@ -151,7 +153,7 @@ def greedy_tour(tables: Tables, nodes: Sequence[int], belief: np.ndarray, start:
 
 def choose(tables: Tables, nodes: Sequence[int], distance: np.ndarray, beliefs: Mapping[str, np.ndarray],
            targets: Sequence[Target], *, start: int, allowed: Sequence[int], prefer: int | None = None,
-           tie: float = 0.0) -> Choice | None:
+           tie: float = 0.0, by_context: bool = False) -> Choice | None:
     """The one-step rollout of the module's model: the candidate view (of ``allowed``, indices into
     ``nodes``) to look from next. ``beliefs[cls]``: per node, the belief that the thing of class ``cls``
     is there (unnormalised). ``targets``: the remaining plan's stops in order, the first unknown (the
@@ -179,19 +181,26 @@ def choose(tables: Tables, nodes: Sequence[int], distance: np.ndarray, beliefs: 
     support = np.flatnonzero(q1 > 0)
     best: tuple[float, int] | None = None
     costs: dict[int, float] = {}
+    search: dict[int, float] = {}
     for v in options:
         tour = greedy_tour(tables, nodes, q1, start, first=v)
-        expected = float(q1[support] @ tour.cost(distance)[support])
+        expected = search[v] = float(q1[support] @ tour.cost(distance)[support])
         if rest:
             expected += float(later.after(tour, sample).mean())
         costs[v] = expected
         if best is None or expected < best[0]:
             best = (expected, v)
     assert best is not None
-    if prefer is not None and prefer in costs and costs[prefer] <= best[0] + tie:
-        best = (costs[prefer], prefer)
+    if prefer is not None and prefer in costs:
+        if costs[prefer] <= best[0] + tie:
+            best = (costs[prefer], prefer)
+        elif by_context:
+            after = {k: costs[k] - search[k] for k in costs}
+            better = [(costs[k], k) for k in costs
+                      if costs[k] < costs[prefer] - tie and after[k] < after[prefer] - tie]
+            best = min(better) if better else (costs[prefer], prefer)
     expected, v = best
-    return Choice(v, expected, {c: float(share[c][v]) for c in q}, costs)
+    return Choice(v, expected, {c: float(share[c][v]) for c in q}, costs, search)
 
 
 def quantiles(belief: np.ndarray, k: int) -> np.ndarray:

@@ -398,12 +398,15 @@ class WholePlanSearch:
             self._covered |= self.lattice.visible(node)
 
     def choose(self, agent: Agent, binding: Binding, target: str,
-               weights: Callable[[str], np.ndarray], also: View | None = None) -> Decision | None:
+               weights: Callable[[str], np.ndarray], also: View | None = None,
+               by_context: bool = False) -> Decision | None:
         """The candidate view that starts the shortest expected completion (:func:`~seal_cli.sim.policies.
         completion.choose`); ``weights(cls)`` is the belief of a class per free cell of the map. ``also``: a
         view another rule would take now (the greedy place view), weighed among the candidates on the same
         footing, so the choice is never worse than it under the model, and taken when the model cannot tell
-        it from the best (within the lattice's :data:`~seal_cli.sim.policies.views.SPACING`)."""
+        it from the best (within the lattice's :data:`~seal_cli.sim.policies.views.SPACING`); ``by_context``: another
+        view is taken over ``also`` only where the rest of the plan, too, makes it better (:func:`~seal_cli.sim.
+        policies.completion.choose`)."""
         stops = self.targets(agent, binding, target)
         sought = list(dict.fromkeys(c for c, v, _ in stops if v is None))
         n = self.lattice.size
@@ -447,7 +450,8 @@ class WholePlanSearch:
         prefer = next((k for k, c in enumerate(self.candidates) if also is not None and c.cell == also.cell
                        and c.open == also.open), None)
         choice: Choice | None = choose(tables, self.nodes, lattice.distance, beliefs, plan, start=start,
-                                       allowed=allowed, prefer=prefer, tie=SPACING)
+                                       allowed=allowed, prefer=prefer, tie=SPACING,
+                                       by_context=by_context)
         if choice is None:
             return None
         candidate = self.candidates[choice.view]

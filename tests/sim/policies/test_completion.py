@@ -83,6 +83,46 @@ def test_a_preferred_view_is_taken_only_within_the_tie_of_the_best() -> None:
     assert got is not None and got.view == 2
 
 
+def test_by_context_another_view_beats_the_preferred_one_only_where_the_rest_of_the_plan_says_so() -> None:
+    # the spoon's search alone costs the same from the bedroom and the kitchen (0.5 * 5 + 0.5 * 15 = 10 m each);
+    # the cup after it costs 6.5 m from the bedroom's search against 8.0 from the kitchen's: the context
+    # moves the robot to the bedroom, the kitchen preferred or not
+    lattice, node, nodes, beliefs, tables = _spoons_and_cups()
+    plan = [Target("spoon"), Target("cup")]
+    got = choose(tables, nodes, lattice.distance, beliefs, plan, start=node[5], allowed=[0, 1, 2], prefer=1,
+                 tie=0.25, by_context=True)
+    assert got is not None and got.view == 2 and abs(got.expected_m - 16.5) < 1e-6
+    assert abs(got.search[2] - 10.0) < 1e-6 and abs(got.search[1] - 10.0) < 1e-6
+    # the rest of the plan must beat the preferred view's by more than the tie too
+    got = choose(tables, nodes, lattice.distance, beliefs, plan, start=node[5], allowed=[0, 1, 2], prefer=1,
+                 tie=1.6, by_context=True)
+    assert got is not None and got.view == 1
+
+
+def test_by_context_a_view_only_the_search_for_the_thing_alone_ranks_higher_is_not_taken() -> None:
+    # the spoon at 10 (0.9) or at 0 (0.1); views at 0 and 10, the robot at 5, then a known goal at 5: wherever
+    # the spoon is found the drive on is 5 m. The model's search ranks 10 first (0.9 * 5 + 0.1 * 15 = 6 m
+    # against 0.1 * 5 + 0.9 * 15 = 14), but the plan after the spoon says nothing to choose by: with
+    # by_context the preferred view stands
+    lattice = _corridor(range(11))
+    nodes = [0, 10]
+    spoon = np.zeros(11)
+    spoon[[10, 0]] = 0.9, 0.1
+    plan = [Target("spoon"), Target(at=(5,))]
+    tables = _tables(lattice, nodes)
+    plain = choose(tables, nodes, lattice.distance, {"spoon": spoon}, plan, start=5, allowed=[0, 1], prefer=0,
+                   tie=0.25)
+    assert plain is not None and plain.view == 1 and abs(plain.expected_m - 11.0) < 1e-6
+    framed = choose(tables, nodes, lattice.distance, {"spoon": spoon}, plan, start=5, allowed=[0, 1], prefer=0,
+                    tie=0.25, by_context=True)
+    assert framed is not None and framed.view == 0 and abs(framed.expected_m - 19.0) < 1e-6
+    assert abs(framed.search[0] - 14.0) < 1e-6 and abs(framed.search[1] - 6.0) < 1e-6
+    # with nothing after the thing sought (the last of the plan), the preferred view is taken
+    alone = choose(tables, nodes, lattice.distance, {"spoon": spoon}, plan[:1], start=5, allowed=[0, 1], prefer=0,
+                   tie=0.25, by_context=True)
+    assert alone is not None and alone.view == 0
+
+
 def test_a_known_goal_is_a_cost_after_the_search_not_a_place_to_search() -> None:
     lattice = _corridor(range(11))
     nodes = [0, 10]
