@@ -189,6 +189,8 @@ class Clauses:
         describe = False
         for item in items:
             last = out[-1] if out else None
+            if isinstance(last, Word) and last.tag == "PARTICLE" and last.info != last.lower and len(out) > 1:
+                last = out[-2]                   # "switch the light off *that I left on*": the split unit's particle
             if isinstance(item, Word) and item.tag == "REL" and isinstance(last, NP | PP):
                 host = last.np if isinstance(last, PP) else last
                 if item.info == "be":

@@ -185,18 +185,22 @@ class Lexicon:
 
     def _split(self, words: Sequence[Word], i: int, stop: int,
                candidates: Iterable[tuple[str, ...]]) -> tuple[str, int, int] | None:
+        """The split unit whose particle stands alone nearest after the verb: "switch the light *off* that I left
+        on" is "switch off" (the last "on" is the relative clause's)."""
+        found: tuple[str, int, int] | None = None
         for unit in candidates:
             if len(unit) != 2 or unit[1] not in PARTICLES or unit[1] == "back" and " ".join(unit) in self.stores:
                 continue
-            for j in range(i + 2, stop):
+            for j in range(i + 2, stop if found is None else found[2]):
                 if words[j].lower == "to" and j + 1 < stop and (words[j + 1].lower in self.units or
                                                                  verb_lemma(words[j + 1].lower) in self.units):
                     break                        # "wash a teapot *to put it away*", "*to rinsed off*": the next verb's
                 if words[j].lower == unit[1] and _stands_alone(words, j) and \
                         match_phrase(words, j - 1, TIME_WORDS) < 2 and \
                         self._split_fits(" ".join(unit), words, i, j):  # not "right away"
-                    return " ".join(unit), 1, j
-        return None
+                    found = " ".join(unit), 1, j
+                    break
+        return found
 
 
     def _split_fits(self, unit: str, words: Sequence[Word], i: int, j: int) -> bool:
@@ -224,8 +228,10 @@ def _stands_alone(words: Sequence[Word], j: int) -> bool:
     if j + 1 >= len(words):
         return True
     after = words[j + 1].lower
-    if after in ("that", "which") and j + 2 < len(words) and words[j + 2].lower in BE_WORDS:
-        return True            # "turn the lamp on *that is* on the table": a relative clause of the noun before
+    if after in ("that", "which") and j + 2 < len(words) and (words[j + 2].lower in BE_WORDS or
+                                                              words[j + 2].lower in NOMINATIVE):
+        return True            # "turn the lamp on *that is* on the table", "the light off *that I* left on": a
+        # relative clause of the noun before
     return after in (",", ".", "!", "?", ";", "please") or after in PREPOSITIONS or after in SEPARATOR_WORDS or \
         after in BECAUSE or "'" in after and after.split("'")[0] in SUBJECTS or \
         match_phrase(words, j + 1, SUBORDINATORS) > 0     # "turn it off *it's* too loud", "switch it off *when* ..."

@@ -778,6 +778,9 @@ class State:
                 return None
             end = self.cond_end(i + 1)
             return self.emit(i, end - i, "HERE", "where") if end > i + 1 else None
+        if prev == "PARTICLE" and len(self.out) > 1 and self.out[-1].info != self.out[-1].lower and \
+                self.out[-2].tag in ("WORD", "NAME"):
+            prev = self.out[-2].tag   # "turn the lamp on *that is on the table*": a split particle, then the noun's
         if prev not in ("WORD", "NAME") and not (prev == "PRON" and low == "who" and self.out[-1].lower in (
                 "someone", "somebody", "anyone", "anybody", "everyone", "everybody", "those", "one")):
             return None

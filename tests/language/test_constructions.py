@@ -864,3 +864,36 @@ def test_a_state_particle_no_unit_takes_is_refused_not_dropped(library: Library)
     assert texts("pick up a cup with the lamp on", library)[0][0] == "Pick"       # describes the lamp
     assert [f for f, _ in texts("put the kettle on", library)] == ["ToggleOn"]   # a unit's own particle
     assert [f for f, _ in texts("take the lid off", library)] == ["Pick"]
+
+
+def test_staying_near_a_name_said_in_lower_case_follows_them(library: Library) -> None:
+    # words18: "stay close to morgan" was Wait(ground "morgan"): lemminflect lists "morgan" (a breed of horse), so it
+    # was no lower-case name; after "near" in a clause whose verb with "with" is Follow's, a word listed only as a
+    # noun, said bare and singular before the clause's end or a place, is whom to keep near
+    assert texts("stay close to morgan", library) == [("Follow", {"theme": "morgan"})]
+    assert texts("stay next to robin, please", library) == [("Follow", {"theme": "robin"})]
+    assert texts("stay close to home", library) == [("Wait", {"ground": "home"})]    # also an adverb, a verb
+    assert texts("stay near the door", library) == [("Wait", {"ground": "the door"})]
+    assert texts("stay near the sofas", library) == [("Wait", {"ground": "the sofas"})]
+
+
+def test_a_state_particle_before_a_place_is_refused_not_dropped(library: Library) -> None:
+    # words18: "pop the telly on in the lounge" was Place(telly, goal lounge), "on" dropped; a place after the particle
+    # does not make it any less a state the frame would drop
+    with pytest.raises(CommandError) as refused:
+        parse_command("pop the telly on in the lounge", library)
+    assert refused.value.column == len("pop the telly ") + 1 and "'on'" in refused.value.message
+    assert [f for f, _ in texts("put the cup on on the table", library)] == ["Place"]   # "on" said twice: a place
+    assert texts("leave the light on in the hall", library) == [("ToggleOn", {"theme": "the light in the hall"})]
+
+
+def test_a_relative_clause_after_a_split_particle_describes_the_thing(library: Library) -> None:
+    # words18: "turn the lamp on that is on the table" dropped the relative clause (theme "the lamp"); "switch the
+    # light off that I left on" was ToggleOn (the last "on", the relative clause's, was taken for the particle)
+    assert texts("turn the lamp on that is on the table", library) == [
+        ("ToggleOn", {"theme": "the lamp that is on the table"})]
+    (frame,) = parse_command("switch the light off that I left on", library).frames
+    assert frame.frame == "ToggleOff" and frame.elements["theme"].relative == "that I left on"
+    assert parse_command("switch off the light that I left on", library).frames[0].elements["theme"].relative == \
+        "that I left on"
+    assert texts("turn off that light", library) == [("ToggleOff", {"theme": "that light"})]
