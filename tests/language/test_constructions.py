@@ -897,3 +897,13 @@ def test_a_relative_clause_after_a_split_particle_describes_the_thing(library: L
     assert parse_command("switch off the light that I left on", library).frames[0].elements["theme"].relative == \
         "that I left on"
     assert texts("turn off that light", library) == [("ToggleOff", {"theme": "that light"})]
+
+
+def test_a_wished_state_of_things_joined_by_and_is_one_state(library: Library) -> None:
+    # words18: "I'd like the bread and butter warm" was Bring of "the bread and butter warm" (an "and" ended the wish);
+    # an "and" between nouns, with no determiner after it and no state before it, joins one phrase
+    assert texts("I'd like the bread and butter warm", library)[0] == ("Heat", {"theme": "the bread and butter"})
+    assert texts("leave the door and window open", library) == [("Open", {"theme": "the door and window"})]
+    assert texts("I'd like the blinds closed and the lights off", library) == [
+        ("Close", {"theme": "the blinds"}), ("ToggleOff", {"theme": "the lights"})]
+    assert [f for f, _ in texts("leave the bread and take the butter", library)] == ["Place", "Pick"]

@@ -644,14 +644,17 @@ def _resultative(s: State, i: int) -> Match | None:
     verbs = s.lexicon.state_verbs
     if not verbs or low not in verbs and (verb_lemma(low) or low) not in verbs:
         return None
-    end = _clause_stop(s, i + 1)
+    stop = s.cond_end(i + 1)                     # "leave the door and window open": "and" between nouns
+    stop = next((j for j in range(i + 1, stop) if s.words[j].lower in ("and", "then") and not _nouns_joined(s, j)),
+                stop)
+    end = stop
     while end > i + 1 and words[end - 1].lower in (",", "please", ".", "!"):
         end -= 1
     last = words[end - 1].lower if end > i + 2 else ""
     if not last or last in SWITCHED_MEANS or not (is_adjective(last) or last in STATE_PARTICLES) or \
             words[end - 2].lower in PARTICLES:
         return None                              # "put two lettuce *plants* in the sink", "put one *back* clean"
-    found = _state_after(s, i, 1, _clause_stop(s, i + 1))
+    found = _state_after(s, i, 1, stop)
     return found if found is not None and found.particle and found.particle[0] == end - 1 else None
 
 
@@ -673,12 +676,20 @@ def _state_after(s: State, i: int, n: int, stop: int | None = None) -> Match | N
     unit = _state_unit(s, words[q].lower)
     before = words[q - 1].lower
     if unit is None or before in NP_OPENERS or before in PREPOSITIONS or \
-            any(words[p].lower in BE_WORDS or words[p].lower in (",", "and", "then") or
+            any(words[p].lower in BE_WORDS or words[p].lower in (",", "and", "then") and not _nouns_joined(s, p) or
                 s.verb_at(p) is not None and words[p - 1].lower not in NP_OPENERS for p in range(k + 1, q)):
         return None
     start, stop = words[i].start, words[k - 1].end
     return Match(n, (Word(s.text_of(start, stop), start, stop, Tag.VERB, unit),), expect=False, verb=unit,
                  using=False, particle=(q, unit))
+
+
+def _nouns_joined(s: State, p: int) -> bool:
+    """Whether the "and" at ``p`` joins two nouns of one phrase ("the bread *and* butter warm"), not two things each
+    with its state ("the blinds closed *and* the lights off": a determiner after it, a state before it)."""
+    words = s.words
+    return words[p].lower == "and" and p + 1 < len(words) and words[p + 1].lower not in NP_OPENERS and \
+        _state_unit(s, words[p - 1].lower) is None and s.verb_at(p + 1) is None
 
 
 _OBLIGED_SUBJECTS = frozenset(["it", "this", "these", "those", "that"])
@@ -1074,11 +1085,13 @@ WISHED_STATE = Rule("a wish for a thing's state", _wished_state, (
     Example("we'd like the lights on in the living room", "on", Tag.PARTICLE),
     Example("I'd like my tea hot", "hot", Tag.PARTICLE),
     Example("I want the door open and the radio on", "open", Tag.PARTICLE),
+    Example("I'd like the bread and butter warm", "warm", Tag.PARTICLE),
 ), first_words(_WISHED_STATES), "'I'd like X closed', 'I want X off': close X, turn X off")
 RESULTATIVE = Rule("a thing left in a state", _resultative, (
     Example("leave the door open", "leave", Tag.VERB),
     Example("get the soup hot, please", "hot", Tag.PARTICLE),
     Example("leave the window in the bedroom shut", "shut", Tag.PARTICLE),
+    Example("leave the door and window open", "open", Tag.PARTICLE),
 ), None, "'leave X open', 'get X hot': open X, heat X (a verb that puts a thing in a state, and the state)")
 OBLIGED_RULE = Rule("where a thing should go", _obliged, (
     Example("the bowl should go in the dishwasher", "", Tag.VERB),
