@@ -332,7 +332,9 @@ class Tagger(State):
             self.using = found.using
         if found.verb is not None:
             self.speech = found.verb in self.lexicon.speech     # a clause after it is what is said
-            self.verb_index = len(self.out) - 1
+            self.verb_index = next(k for k in range(len(self.out) - 1, len(self.out) - len(found.words) - 1, -1)
+                                   if self.out[k].tag == Tag.VERB) if found.words[-1].tag != Tag.VERB and any(
+                w.tag == Tag.VERB for w in found.words) else len(self.out) - 1   # "Anna wants": the verb, not Anna
         if found.particle is not None:
             self.particles[found.particle[0]] = found.particle[1]
         if found.expect is AFTER_SEP:

@@ -907,3 +907,25 @@ def test_a_wished_state_of_things_joined_by_and_is_one_state(library: Library) -
     assert texts("I'd like the blinds closed and the lights off", library) == [
         ("Close", {"theme": "the blinds"}), ("ToggleOff", {"theme": "the lights"})]
     assert [f for f, _ in texts("leave the bread and take the butter", library)] == ["Place", "Pick"]
+
+
+def test_whether_any_is_somewhere_said_without_is_there(library: Library) -> None:
+    # words18: "anyone in the bathroom?" was an unknown verb 'anyone'; a sentence with no verb, a phrase opened by
+    # "any-"/"some-" and a place (or "left") asks whether one is there, as "is anyone in the bathroom?" does
+    assert texts("anyone in the bathroom?", library) == [("Find", {"theme": "anyone", "ground": "the bathroom"})]
+    assert texts("any milk left in the fridge?", library) == [("Find", {"theme": "any milk", "ground": "the fridge"})]
+    assert texts("any biscuits left?", library) == [("Find", {"theme": "any biscuits"})]
+    assert [f for f, _ in texts("any cups in the sink, please wash them", library)] == ["Clean"]   # a remark
+
+
+def test_a_wish_of_a_person_said_bare_or_in_lower_case(library: Library) -> None:
+    # words18: "dad wants his reading glasses" was an unknown verb 'dad' (only a capitalised name said a wish);
+    # a noun the taxonomy lists as a person, or a word no dictionary lists, says it too
+    assert texts("dad wants his reading glasses", library) == [
+        ("Bring", {"theme": "his reading glasses", "recipient": "dad"})]
+    assert texts("ellie wants a drink", library) == [("Bring", {"theme": "a drink", "recipient": "ellie"})]
+    # a bare thing after the wish is a phrase of its own ("the guest wants tea" was Bring of "the guest wants tea")
+    assert texts("the guest wants tea", library) == [("Bring", {"theme": "tea", "recipient": "the guest"})]
+    with pytest.raises(CommandError):
+        parse_command("water needs a glass", library)     # a thing wants nothing
+
