@@ -98,9 +98,15 @@ class Evoker:
                 stray.lower in words[1:] or self.text[clause.objects[-1].end:stray.start].strip():
             return                               # only right after the thing: "with the lamp *on*" describes
         verb = self.text[clause.verb.start:clause.verb.end].lower()
-        raise CommandError(f"{stray.lower!r} after {self.text[clause.objects[0].start:clause.objects[0].end]!r}: "
-                           f"'{verb} ... {stray.lower}' is no verb of the library, and the state it names would be "
-                           f"lost; say what to do with it ('turn it {stray.lower}', 'put it down')",
+        head = clause.objects[0].head
+        part = head is not None and noun_lemma(head.text.lower()) in PARTS     # "put the lid on": on what?
+        said = f"{stray.lower!r} after {self.text[clause.objects[0].start:clause.objects[0].end]!r}"
+        moves = "goes on" if stray.lower == "on" else "comes off"
+        example = "put it on the pan" if stray.lower == "on" else "take it off the pan"
+        raise CommandError(f"{said}: a {head.text.lower() if head else 'part'} is a part of a thing, no thing to "
+                           f"switch {stray.lower}, and what it {moves} is not said; say it ('{example}')" if part else
+                           f"{said}: '{verb} ... {stray.lower}' is no verb of the library, and the state it names "
+                           f"would be lost; say what to do with it ('turn it {stray.lower}', 'put it down')",
                            stray.start + 1, self.text, ["a verb the robot knows"])
 
     @staticmethod

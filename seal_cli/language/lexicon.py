@@ -101,7 +101,8 @@ class Lexicon:
     "back" is the BACK rule's place ("put it *back*": where it was taken from), not the unit's particle."""
     split: Mapping[str, frozenset[str]] = field(default_factory=dict)
     """Units said only split around their object (``split: true``: "put the kettle *on*", ToggleOn) → the known
-    classes their frame's first element cannot be ("put the lid on", "put your coat on": no such unit)."""
+    classes their frame's first element cannot be, and the parts things are made with (``grounding.PARTS``: "put
+    the lid on", "put your coat on": no such unit)."""
     state_verbs: frozenset[str] = frozenset()
     """The verbs of the split units ("put", "leave", "get"): they put a thing in a state ("leave the door *open*")."""
 
@@ -129,9 +130,12 @@ class Lexicon:
             not p.negated and p.predicate == "in" and p.args == (frame.elements[0].role, "goal")
             for p in frame.postconditions) for unit in frame.lexical_units)
         stores = frozenset(unit.text for frame in library.frames for unit in frame.lexical_units if unit.stores)
+        from seal_cli.language.grounding import PARTS  # (grounding reads this module)
+
         split = {unit.text: frozenset(c for c in taxonomy.known_classes if frame.elements and
-                                      taxonomy.is_a(c, frame.elements[0].type) is False)
+                                      taxonomy.is_a(c, frame.elements[0].type) is False) | PARTS
                  for frame in library.frames for unit in frame.lexical_units if unit.split}
+        # "put the lid on": a part fitted to the thing it is made with ("lid", "cover", "door"), not switched on
         return cls({w: tuple(us) for w, us in units.items()}, _result_words(library),
                    tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts, apart, can, puts,
                    stores, split, frozenset(unit.split()[0] for unit in split))

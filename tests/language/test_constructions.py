@@ -929,3 +929,17 @@ def test_a_wish_of_a_person_said_bare_or_in_lower_case(library: Library) -> None
     with pytest.raises(CommandError):
         parse_command("water needs a glass", library)     # a thing wants nothing
 
+
+
+def test_a_part_put_on_is_no_thing_switched_on(library: Library) -> None:
+    # words18: "put the lid on" was ToggleOn ("lid" is no class of the library, so nothing said it was not
+    # toggleable); a part a thing is made with (grounding.PARTS: lid, cover, door, ...) fits on its whole: without
+    # the whole said it is refused at the particle, asking what it goes on
+    with pytest.raises(CommandError) as refused:
+        parse_command("put the lid on", library)
+    assert refused.value.column == len("put the lid ") + 1 and "what it goes on is not said" in refused.value.message
+    with pytest.raises(CommandError, match="what it comes off"):
+        parse_command("leave the lid off", library)
+    assert texts("put the lid on the pan", library) == [("Place", {"theme": "the lid", "goal": "the pan"})]
+    assert [f for f, _ in texts("put the kettle on", library)] == ["ToggleOn"]
+    assert [f for f, _ in texts("take the lid off", library)] == ["Pick"]
