@@ -943,3 +943,27 @@ def test_a_part_put_on_is_no_thing_switched_on(library: Library) -> None:
     assert texts("put the lid on the pan", library) == [("Place", {"theme": "the lid", "goal": "the pan"})]
     assert [f for f, _ in texts("put the kettle on", library)] == ["ToggleOn"]
     assert [f for f, _ in texts("take the lid off", library)] == ["Pick"]
+
+
+def test_listing_things_is_telling_them(library: Library) -> None:
+    # words18: "list" is Tell's, by hand beside "describe" (WordNet list.v.01 "name individually; give the names
+    # of"); a thing told of keeps its relative clause ("List everything that's on the counter" had "everything"
+    # as the person told and "that's on the counter" as what was said)
+    assert texts("list the objects on the table", library) == [("Tell", {"message": "the objects on the table"})]
+    assert texts("List everything that's on the counter.", library) == [
+        ("Tell", {"message": "everything that's on the counter"})]
+    assert texts("list all the drinks that are on the stove", library) == [
+        ("Tell", {"message": "all the drinks that are on the stove"})]
+    assert texts("tell the man that dinner is ready", library) == [
+        ("Tell", {"message": "dinner is ready", "recipient": "the man"})]
+    assert texts("bring me the shopping list", library)[0][0] == "Bring"      # a noun after a determiner
+
+
+def test_for_a_person_before_the_object_keeps_the_object(library: Library) -> None:
+    # words18: "bring for me the cup" was Bring(recipient me), the cup dropped; "for", as "to", naming a person right
+    # after a verb with someone to receive, then a noun phrase: that is the object, the phrases after it its own
+    assert texts("bring for me the cup", library) == [("Bring", {"theme": "the cup", "recipient": "me"})]
+    assert texts("describe for me the objects on the table", library) == [
+        ("Tell", {"message": "the objects on the table", "recipient": "me"})]
+    assert texts("could you list for me everything that's in the cutlery drawer", library) == [
+        ("Tell", {"message": "everything that's in the cutlery drawer", "recipient": "me"})]
