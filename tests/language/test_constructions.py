@@ -967,3 +967,13 @@ def test_for_a_person_before_the_object_keeps_the_object(library: Library) -> No
         ("Tell", {"message": "the objects on the table", "recipient": "me"})]
     assert texts("could you list for me everything that's in the cutlery drawer", library) == [
         ("Tell", {"message": "everything that's in the cutlery drawer", "recipient": "me"})]
+
+
+@pytest.mark.parametrize(("text", "theme"), [
+    ("where's the remote gone?", "the remote"), ("where have my keys gone", "my keys"),
+    ("where did the cat go?", "the cat"), ("where has the cat got to?", "the cat"),
+    ("where did I leave my glasses?", "my glasses"), ("where have you put the scissors", "the scissors")])
+def test_where_a_thing_went_is_where_it_is(text: str, theme: str, library: Library) -> None:
+    # words18: "where have my keys gone", "where did the cat go?" were unknown verbs 'where'; "where's the remote
+    # gone?" had the theme "the remote gone"
+    assert texts(text, library) == [("Find", {"theme": theme})]

@@ -114,8 +114,9 @@ def _question(s: State, i: int) -> Match | None:
 def _where(s: State, i: int) -> Match | None:
     words = s.words
     n = _phrase(s, i, WHERE_QUESTIONS)
-    if not n or WHERE_MEANS not in s.lexicon.units or not s.np_starts(i + n):
-        return None
+    if not n or WHERE_MEANS not in s.lexicon.units or not s.np_starts(i + n) or \
+            words[i + n - 1].lower in WHERE_DID[1] and words[i + n].lower in WHERE_DID[2]:
+        return None                         # "where did *I* leave my glasses": WHERE_DID's
     text = s.text_of(words[i].start, words[i + n - 1].end) or " ".join(w.text for w in words[i:i + n])
     return Match(n, (Word(text, words[i].start, words[i + n - 1].end, Tag.VERB, WHERE_MEANS),), expect=False,
                  verb=WHERE_MEANS, using=False)
@@ -186,7 +187,8 @@ def _where_be(s: State, i: int) -> Match | None:
     """The "is" of "do you know where the tea spoon *is*?": after the thing asked about, at the end of the
     sentence, dropped ("where" was read as "find")."""
     if s.verb_index < 0 or s.out[s.verb_index].info != WHERE_MEANS or \
-            "where" not in s.out[s.verb_index].lower.split() or s.prev_tag() not in (Tag.WORD, Tag.NAME):
+            not any(w in ("where", "where's") for w in s.out[s.verb_index].lower.split()) or \
+            s.prev_tag() not in (Tag.WORD, Tag.NAME):
         return None
     n = _phrase(s, i, WHERE_BE)
     if not n or i + n < len(s.words) and s.words[i + n].lower not in END_MARKS:
@@ -1229,6 +1231,7 @@ ASKED_WHERE = Rule("asked where", _asked_where, (
 WHERE_BE_DROPPED = Rule("is, after asked where", _where_be, (
     Example("do you know where the tea spoon is", "is", ""),
     Example("do u know where the remote went", "went", ""),
+    Example("where's the remote gone?", "gone", ""),
 ), None, "the 'is' of 'do you know where X is', dropped: 'do you know where' was read as 'find'")
 ENSURED_RULE = Rule("make sure of a state", _ensured, (
     Example("please make sure the stove is off", "make sure", Tag.VERB),
