@@ -192,7 +192,7 @@ where to seek it or take it from ("next to the sink" is near a place, not in it)
 BESIDE = ("near", "by", "behind", "in front of", "under")
 """Of those, the ones that put a thing beside another, not on or in it ("next to the remote", "under the
 pillow", "in front of the phone"): what holds it is where the other thing is ("... *on the sofa*")."""
-DIRECTIONS = frozenset(["upstairs", "downstairs", "indoors", "outdoors"])
+DIRECTIONS = frozenset(["upstairs", "downstairs", "indoors", "outdoors", "home"])
 """Place words that say where a motion goes ("carry the box *upstairs*", "go *outside*"): a goal, or where
 something is looked for ("find the cat *downstairs*"), never where it is taken from (that is "from upstairs")."""
 TIME_WORDS = frozenset(["now", "later", "soon", "today", "tonight", "tomorrow", "again", "too", "first",

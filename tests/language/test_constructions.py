@@ -977,3 +977,12 @@ def test_where_a_thing_went_is_where_it_is(text: str, theme: str, library: Libra
     # words18: "where have my keys gone", "where did the cat go?" were unknown verbs 'where'; "where's the remote
     # gone?" had the theme "the remote gone"
     assert texts(text, library) == [("Find", {"theme": theme})]
+
+
+def test_home_after_the_thing_moved_is_where_it_goes(library: Library) -> None:
+    # words18: "bring him home" was Bring(theme "home", recipient him); "home" ending the clause after the thing or
+    # person moved is a direction, as "upstairs" is
+    assert texts("bring him home", library) == [("Guide", {"theme": "him", "goal": "home"})]
+    assert texts("bring the shopping home", library) == [("Bring", {"theme": "the shopping", "goal": "home"})]
+    assert texts("go home", library) == [("Go", {"goal": "home"})]
+    assert texts("find the home office", library) == [("Find", {"theme": "the home office"})]
