@@ -25,6 +25,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 from seal_cli.frames.library import Library
 from seal_cli.language.english import (
@@ -190,22 +191,20 @@ class Lexicon:
     def _split(self, words: Sequence[Word], i: int, stop: int,
                candidates: Iterable[tuple[str, ...]]) -> tuple[str, int, int] | None:
         """The split unit whose particle stands alone nearest after the verb: "switch the light *off* that I left
-        on" is "switch off" (the last "on" is the relative clause's)."""
-        found: tuple[str, int, int] | None = None
-        for unit in candidates:
-            if len(unit) != 2 or unit[1] not in PARTICLES or unit[1] == "back" and " ".join(unit) in self.stores:
-                continue
-            for j in range(i + 2, stop if found is None else found[2]):
-                if words[j].lower == "to" and j + 1 < stop and (words[j + 1].lower in self.units or
-                                                                 verb_lemma(words[j + 1].lower) in self.units):
-                    break                        # "wash a teapot *to put it away*", "*to rinsed off*": the next verb's
-                if words[j].lower == unit[1] and _stands_alone(words, j) and \
-                        match_phrase(words, j - 1, TIME_WORDS) < 2 and \
-                        self._split_fits(" ".join(unit), words, i, j):  # not "right away"
-                    found = " ".join(unit), 1, j
-                    break
-        return found
-
+        on" is "switch off" (the last "on" is the relative clause's). One pass over the words."""
+        by_particle = _by_particle(tuple(candidates), self.stores)
+        if not by_particle:
+            return None
+        for j in range(i + 2, stop):
+            low = words[j].lower
+            if low == "to" and j + 1 < stop and (words[j + 1].lower in self.units or
+                                                 verb_lemma(words[j + 1].lower) in self.units):
+                return None                      # "wash a teapot *to put it away*", "*to rinsed off*": the next verb's
+            for unit in by_particle.get(low, ()):
+                if _stands_alone(words, j) and match_phrase(words, j - 1, TIME_WORDS) < 2 and \
+                        self._split_fits(unit, words, i, j):  # not "right away"
+                    return unit, 1, j
+        return None
 
     def _split_fits(self, unit: str, words: Sequence[Word], i: int, j: int) -> bool:
         """A split-only unit ("put on") holds around a thing its frame takes, with no place said between: "put the
@@ -217,9 +216,21 @@ class Lexicon:
         if any(w.lower in PREPOSITIONS for w in words[i + 1:j]):
             return False
         after = words[j + 1].lower if j + 1 < len(words) else "."
-        if not (after in (",", ".", "!", "?", ";", "please") or after in PREPOSITIONS or after in SEPARATOR_WORDS):
+        if not (after in (",", ".", "!", "?", ";", "please") or after in PREPOSITIONS or after in SEPARATOR_WORDS or
+                match_phrase(words, j + 1, TIME_WORDS) > 0):     # "put the kettle on *right now*"
             return False                         # "put the kettle on *its* base": a possessive, not "it's"
         return noun_lemma(words[j - 1].lower) not in refused and words[j - 1].lower not in refused
+
+
+@lru_cache(maxsize=4096)
+def _by_particle(candidates: tuple[tuple[str, ...], ...], stores: frozenset[str]) -> dict[str, tuple[str, ...]]:
+    """A verb's two-word particle units by their particle ("turn" → on: "turn on", off: "turn off"), in the
+    candidates' order; not "back" of a storing unit (the BACK rule's place)."""
+    found: dict[str, list[str]] = {}
+    for unit in candidates:
+        if len(unit) == 2 and unit[1] in PARTICLES and not (unit[1] == "back" and " ".join(unit) in stores):
+            found.setdefault(unit[1], []).append(" ".join(unit))
+    return {particle: tuple(units) for particle, units in found.items()}
 
 
 AGAIN_LEAST = 5
@@ -238,7 +249,8 @@ def _stands_alone(words: Sequence[Word], j: int) -> bool:
         # relative clause of the noun before
     return after in (",", ".", "!", "?", ";", "please") or after in PREPOSITIONS or after in SEPARATOR_WORDS or \
         after in BECAUSE or "'" in after and after.split("'")[0] in SUBJECTS or \
-        match_phrase(words, j + 1, SUBORDINATORS) > 0     # "turn it off *it's* too loud", "switch it off *when* ..."
+        match_phrase(words, j + 1, SUBORDINATORS) > 0 or \
+        match_phrase(words, j + 1, TIME_WORDS) > 0    # "turn it off *it's* too loud", "... *when*", "... *right away*"
 
 
 def _result_words(library: Library) -> dict[str, tuple[str, str]]:

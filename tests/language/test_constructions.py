@@ -986,3 +986,12 @@ def test_home_after_the_thing_moved_is_where_it_goes(library: Library) -> None:
     assert texts("bring the shopping home", library) == [("Bring", {"theme": "the shopping", "goal": "home"})]
     assert texts("go home", library) == [("Go", {"goal": "home"})]
     assert texts("find the home office", library) == [("Find", {"theme": "the home office"})]
+
+
+def test_a_split_particle_before_a_time_said(library: Library) -> None:
+    # words18: "turn it off right away" was an unknown verb 'turn' (the particle did not stand alone before a time
+    # adverbial), "put the kettle on right now" an error at "right now"
+    assert texts("turn it off right away", library) == [("ToggleOff", {"theme": "it"})]
+    assert texts("put the kettle on right now", library) == [("ToggleOn", {"theme": "the kettle"})]
+    assert texts("leave the light on tonight", library) == [("ToggleOn", {"theme": "the light"})]
+    assert [f for f, _ in texts("put the kettle on its base", library)] == ["Place"]
