@@ -44,7 +44,11 @@ of a library verb it means, through WordNet's synonyms and hypernyms, when all o
    not a rare one: "choose, take, select" is the tenth sense of "take");
 4. it keeps those of *u*'s frames that *another* verb, evoking only that frame, supports near the
    synset (in it, its hypernym or its hyponyms): "leave, go forth, go away" is no Place although Place
-   lists "leave", because nothing evoking only Place is near it, but "go" is.
+   lists "leave", because nothing evoking only Place is near it, but "go" is;
+   and (rule 10, words18) a first sense among WordNet's verbs of the body (its lexicographer file verb.body:
+   dressing, grooming, bodily care) reaches *u* only through a synset of the body too: "bathe" < "cleanse" is
+   a Clean, but "undress, disrobe" < take_off.v.02 "take away or remove" is no Pick (what comes off is the
+   person's clothes, no thing the robot takes), nor "disinfect" < clean.v.01, nor "infect" < give.v.01.
 
 A verb whose first sense fails rule 3 may still take a frame from it by **corroboration** (rule 5):
 the synset names two verbs of the library — a lexical unit itself, and a unit or a particle verb of
@@ -263,6 +267,7 @@ class WordNet:
     def __init__(self, folder: Path) -> None:
         self.lemmas: dict[str, list[str]] = {}
         self.examples: dict[str, list[str]] = {}          # synset -> its quoted examples of use
+        self.domain: dict[str, str] = {}
         self.up: dict[str, list[str]] = defaultdict(list)
         self.down: dict[str, list[str]] = defaultdict(list)
         self.opposite: dict[str, set[str]] = defaultdict(set)      # synset -> the synsets of its antonyms
@@ -273,6 +278,7 @@ class WordNet:
             data, _, gloss = line.partition(" | ")
             head = data.split()
             offset, count = head[0], int(head[3], 16)
+            self.domain[offset] = head[1]                  # its lexicographer file: verb.body, verb.change, ...
             self.examples[offset] = re.findall(r'"([^"]*)"', gloss)
             self.lemmas[offset] = [head[4 + 2 * i].lower().replace("_", " ") for i in range(count)]
             at = 4 + 2 * count
@@ -363,6 +369,10 @@ def closed_class_words() -> frozenset[str]:
     return frozenset(words)
 
 
+BODY = "29"
+"""WordNet's lexicographer file of verbs of the body (verb.body: dressing, grooming, bodily care and functions)."""
+
+
 def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[str, str, str]]:
     """(frame, unit, source) for every verb WordNet ties to a library verb (the module's rules)."""
     closed = closed_class_words()
@@ -406,7 +416,9 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[str, str, s
         if not wordnet.mostly_verb(verb):
             continue                                       # mostly a noun ("cup", "table", "knife")
         for sense in wordnet.frequent(verb):
-            hit = next(((synset, h) for synset in (sense, *wordnet.up[sense]) if (h := frames_at(synset))), None)
+            body = wordnet.domain[sense] == BODY          # "undress" < take off: done to a body, not to a thing
+            hit = next(((synset, h) for synset in (sense, *wordnet.up[sense])
+                        if not (body and wordnet.domain[synset] != BODY) and (h := frames_at(synset))), None)
             if hit is None and (agreed := corroborated(verb, sense)) is not None:
                 lemma, frames, named = agreed
                 for frame in frames:

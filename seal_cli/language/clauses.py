@@ -142,16 +142,18 @@ class Clauses:
         return any("recipient" in self.types.roles(f) for f in self.types.evoked_by(str(verb.info)))
 
     def recipient_first(self, verb: Word, objects: list[NP], items: list[Item]) -> None:
-        """"give *to me* the remote", "bring to my son his coat": a "to" phrase naming a person right
-        after a verb whose frames have someone to receive, and then a noun phrase: that noun phrase is
-        the object (the order of many other languages)."""
-        if objects or len(items) < 2 or not isinstance(items[0], PP) or items[0].prep != "to" or \
+        """"give *to me* the remote", "bring to my son his coat", "describe *for me* the things on the table": a
+        "to" or "for" phrase naming a person right after a verb whose frames have someone to receive, and then a
+        noun phrase: that noun phrase is the object (the order of many other languages; "bring for me the cup"
+        had dropped the cup)."""
+        if objects or len(items) < 2 or not isinstance(items[0], PP) or items[0].prep not in ("to", "for") or \
                 items[0].np.kind != "person" or not isinstance(items[1], NP) or items[1].kind == "person" or \
                 not self.receives(verb):
             return
         second = items.pop(1)
         assert isinstance(second, NP)
         objects.append(second)
+        items.append(items.pop(0))      # the phrases said after the object describe it, not the person
 
     def second_object(self, verb: Word, objects: list[NP], items: list[Item]) -> None:
         """"give the man *in the gray suit* his coat": after a person and the phrases that describe them
@@ -189,6 +191,8 @@ class Clauses:
         describe = False
         for item in items:
             last = out[-1] if out else None
+            if isinstance(last, Word) and last.tag == "PARTICLE" and last.info != last.lower and len(out) > 1:
+                last = out[-2]                   # "switch the light off *that I left on*": the split unit's particle
             if isinstance(item, Word) and item.tag == "REL" and isinstance(last, NP | PP):
                 host = last.np if isinstance(last, PP) else last
                 if item.info == "be":

@@ -192,7 +192,7 @@ where to seek it or take it from ("next to the sink" is near a place, not in it)
 BESIDE = ("near", "by", "behind", "in front of", "under")
 """Of those, the ones that put a thing beside another, not on or in it ("next to the remote", "under the
 pillow", "in front of the phone"): what holds it is where the other thing is ("... *on the sofa*")."""
-DIRECTIONS = frozenset(["upstairs", "downstairs", "indoors", "outdoors"])
+DIRECTIONS = frozenset(["upstairs", "downstairs", "indoors", "outdoors", "home"])
 """Place words that say where a motion goes ("carry the box *upstairs*", "go *outside*"): a goal, or where
 something is looked for ("find the cat *downstairs*"), never where it is taken from (that is "from upstairs")."""
 TIME_WORDS = frozenset(["now", "later", "soon", "today", "tonight", "tomorrow", "again", "too", "first",
@@ -249,11 +249,13 @@ QUESTION_WORDS = frozenset(["what", "who", "which", "whose", "whom", "what's", "
 """Words that start a question the robot answers by saying something ("*What's* the biggest thing on the
 shelf?", "*Who* is in the kitchen?"): a bare question means "tell me ..." (``QUESTION_MEANS``)."""
 QUESTION_MEANS = "tell"
-WHERE_QUESTIONS = frozenset(["where is", "where are", "where 's", "where's", "where're", "is there", "are there",
+WHERE_QUESTIONS = frozenset(["where is", "where are", "where 's", "where's", "where're", "where did", "where has",
+                             "where have", "where had", "is there", "are there",
                              "is there any", "are there any", "do we have", "do we have any", "have we got",
                              "have we got any", "do we still have", "do we still have any"])
 """Questions about where a thing is, or whether there is one ("*where is* the cup?", "*is there* a cup in the
-kitchen?", "*do we have any* eggs?"): they mean "find ..." (``WHERE_MEANS``)."""
+kitchen?", "*do we have any* eggs?", "*where did* the cat go?", "*where have* my keys gone?"): they mean "find ..."
+(``WHERE_MEANS``); an auxiliary before a subject pronoun is ``WHERE_DID``'s ("where did *I* leave ...")."""
 WHERE_MEANS = "find"
 WHERE_DID = (frozenset(["where"]), frozenset(["did", "do", "does", "have", "has", "can", "could", "should",
                                               "would", "will", "might", "may"]),
@@ -311,7 +313,7 @@ WHERE_ASKERS = frozenset(["tell me", "tell us", "show me", "show us",
 you tell me* where the keys are?", "*show me* where the remote is"): a request to find it and say where it is,
 read as "where is ..." ("find ...", ``WHERE_MEANS``); the verb of being after the thing is dropped
 (``WHERE_BE``). Said before "where" only; "do you know how many ..." stays a wish to know."""
-WHERE_BE = frozenset(["is", "are", "'s", "was", "were", "went", "goes", "go", "got to", "has gone", "have gone",
+WHERE_BE = frozenset(["is", "are", "'s", "was", "were", "went", "goes", "go", "gone", "got to", "has gone", "have gone",
                       "ended up", "has got to", "have got to", "might be", "could be", "would be", "can be"])
 NUMBER_OF = frozenset(["tell me the number of", "tell me the total number of", "what is the number of",
                        "what 's the number of", "what is the total number of", "what 's the total number of",

@@ -86,17 +86,27 @@ class Evoker:
     def stray_state(self, unit: str, clause: Clause) -> None:
         """"pop the telly *on*", "bring the cup *off*": "on" or "off" alone after the thing, a particle no unit of the
         verb takes, names a state the frame would drop ("switch it on" and "put it down" differ by it): refused at
-        the particle, never dropped silently, when it ends the clause right after the thing ("with the lamp *on*", "the
-        table it was *on*", "on on the table" are not). A unit that ends in it ("take the lid *off*") keeps it."""
+        the particle, never dropped silently, when it comes right after the thing and ends the clause or is followed
+        only by places ("pop the telly on *in the lounge*"; "with the lamp *on*", "the table it was *on*", "on on the
+        table" are not). A unit that ends in it ("take the lid *off*") keeps it."""
         words = unit.split()
-        stray = clause.items[0] if len(clause.items) == 1 and clause.objects else None
+        rest = clause.items[1:]               # "pop the telly on *in the lounge*": where, after the state
+        placed = all(isinstance(x, PP) and not x.lead and x.prep != clause.items[0].lower for x in rest) \
+            if clause.items and isinstance(clause.items[0], Word) else False
+        stray = clause.items[0] if clause.items and placed and clause.objects else None
         if not isinstance(stray, Word) or stray.tag != "PARTICLE" or stray.lower not in _STRAY_STATES or \
                 stray.lower in words[1:] or self.text[clause.objects[-1].end:stray.start].strip():
             return                               # only right after the thing: "with the lamp *on*" describes
         verb = self.text[clause.verb.start:clause.verb.end].lower()
-        raise CommandError(f"{stray.lower!r} after {self.text[clause.objects[0].start:clause.objects[0].end]!r}: "
-                           f"'{verb} ... {stray.lower}' is no verb of the library, and the state it names would be "
-                           f"lost; say what to do with it ('turn it {stray.lower}', 'put it down')",
+        head = clause.objects[0].head
+        part = head is not None and noun_lemma(head.text.lower()) in PARTS     # "put the lid on": on what?
+        said = f"{stray.lower!r} after {self.text[clause.objects[0].start:clause.objects[0].end]!r}"
+        moves = "goes on" if stray.lower == "on" else "comes off"
+        example = "put it on the pan" if stray.lower == "on" else "take it off the pan"
+        raise CommandError(f"{said}: a {head.text.lower() if head else 'part'} is a part of a thing, no thing to "
+                           f"switch {stray.lower}, and what it {moves} is not said; say it ('{example}')" if part else
+                           f"{said}: '{verb} ... {stray.lower}' is no verb of the library, and the state it names "
+                           f"would be lost; say what to do with it ('turn it {stray.lower}', 'put it down')",
                            stray.start + 1, self.text, ["a verb the robot knows"])
 
     @staticmethod

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 from seal_cli.frames.library import Library
 from seal_cli.language.english import (
@@ -101,7 +102,8 @@ class Lexicon:
     "back" is the BACK rule's place ("put it *back*": where it was taken from), not the unit's particle."""
     split: Mapping[str, frozenset[str]] = field(default_factory=dict)
     """Units said only split around their object (``split: true``: "put the kettle *on*", ToggleOn) → the known
-    classes their frame's first element cannot be ("put the lid on", "put your coat on": no such unit)."""
+    classes their frame's first element cannot be, and the parts things are made with (``grounding.PARTS``: "put
+    the lid on", "put your coat on": no such unit)."""
     state_verbs: frozenset[str] = frozenset()
     """The verbs of the split units ("put", "leave", "get"): they put a thing in a state ("leave the door *open*")."""
 
@@ -129,9 +131,12 @@ class Lexicon:
             not p.negated and p.predicate == "in" and p.args == (frame.elements[0].role, "goal")
             for p in frame.postconditions) for unit in frame.lexical_units)
         stores = frozenset(unit.text for frame in library.frames for unit in frame.lexical_units if unit.stores)
+        from seal_cli.language.grounding import PARTS  # (grounding reads this module)
+
         split = {unit.text: frozenset(c for c in taxonomy.known_classes if frame.elements and
-                                      taxonomy.is_a(c, frame.elements[0].type) is False)
+                                      taxonomy.is_a(c, frame.elements[0].type) is False) | PARTS
                  for frame in library.frames for unit in frame.lexical_units if unit.split}
+        # "put the lid on": a part fitted to the thing it is made with ("lid", "cover", "door"), not switched on
         return cls({w: tuple(us) for w, us in units.items()}, _result_words(library),
                    tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts, apart, can, puts,
                    stores, split, frozenset(unit.split()[0] for unit in split))
@@ -185,19 +190,21 @@ class Lexicon:
 
     def _split(self, words: Sequence[Word], i: int, stop: int,
                candidates: Iterable[tuple[str, ...]]) -> tuple[str, int, int] | None:
-        for unit in candidates:
-            if len(unit) != 2 or unit[1] not in PARTICLES or unit[1] == "back" and " ".join(unit) in self.stores:
-                continue
-            for j in range(i + 2, stop):
-                if words[j].lower == "to" and j + 1 < stop and (words[j + 1].lower in self.units or
-                                                                 verb_lemma(words[j + 1].lower) in self.units):
-                    break                        # "wash a teapot *to put it away*", "*to rinsed off*": the next verb's
-                if words[j].lower == unit[1] and _stands_alone(words, j) and \
-                        match_phrase(words, j - 1, TIME_WORDS) < 2 and \
-                        self._split_fits(" ".join(unit), words, i, j):  # not "right away"
-                    return " ".join(unit), 1, j
+        """The split unit whose particle stands alone nearest after the verb: "switch the light *off* that I left
+        on" is "switch off" (the last "on" is the relative clause's). One pass over the words."""
+        by_particle = _by_particle(tuple(candidates), self.stores)
+        if not by_particle:
+            return None
+        for j in range(i + 2, stop):
+            low = words[j].lower
+            if low == "to" and j + 1 < stop and (words[j + 1].lower in self.units or
+                                                 verb_lemma(words[j + 1].lower) in self.units):
+                return None                      # "wash a teapot *to put it away*", "*to rinsed off*": the next verb's
+            for unit in by_particle.get(low, ()):
+                if _stands_alone(words, j) and match_phrase(words, j - 1, TIME_WORDS) < 2 and \
+                        self._split_fits(unit, words, i, j):  # not "right away"
+                    return unit, 1, j
         return None
-
 
     def _split_fits(self, unit: str, words: Sequence[Word], i: int, j: int) -> bool:
         """A split-only unit ("put on") holds around a thing its frame takes, with no place said between: "put the
@@ -209,9 +216,21 @@ class Lexicon:
         if any(w.lower in PREPOSITIONS for w in words[i + 1:j]):
             return False
         after = words[j + 1].lower if j + 1 < len(words) else "."
-        if not (after in (",", ".", "!", "?", ";", "please") or after in PREPOSITIONS or after in SEPARATOR_WORDS):
+        if not (after in (",", ".", "!", "?", ";", "please") or after in PREPOSITIONS or after in SEPARATOR_WORDS or
+                match_phrase(words, j + 1, TIME_WORDS) > 0):     # "put the kettle on *right now*"
             return False                         # "put the kettle on *its* base": a possessive, not "it's"
         return noun_lemma(words[j - 1].lower) not in refused and words[j - 1].lower not in refused
+
+
+@lru_cache(maxsize=4096)
+def _by_particle(candidates: tuple[tuple[str, ...], ...], stores: frozenset[str]) -> dict[str, tuple[str, ...]]:
+    """A verb's two-word particle units by their particle ("turn" → on: "turn on", off: "turn off"), in the
+    candidates' order; not "back" of a storing unit (the BACK rule's place)."""
+    found: dict[str, list[str]] = {}
+    for unit in candidates:
+        if len(unit) == 2 and unit[1] in PARTICLES and not (unit[1] == "back" and " ".join(unit) in stores):
+            found.setdefault(unit[1], []).append(" ".join(unit))
+    return {particle: tuple(units) for particle, units in found.items()}
 
 
 AGAIN_LEAST = 5
@@ -224,11 +243,14 @@ def _stands_alone(words: Sequence[Word], j: int) -> bool:
     if j + 1 >= len(words):
         return True
     after = words[j + 1].lower
-    if after in ("that", "which") and j + 2 < len(words) and words[j + 2].lower in BE_WORDS:
-        return True            # "turn the lamp on *that is* on the table": a relative clause of the noun before
+    if after in ("that", "which") and j + 2 < len(words) and (words[j + 2].lower in BE_WORDS or
+                                                              words[j + 2].lower in NOMINATIVE):
+        return True            # "turn the lamp on *that is* on the table", "the light off *that I* left on": a
+        # relative clause of the noun before
     return after in (",", ".", "!", "?", ";", "please") or after in PREPOSITIONS or after in SEPARATOR_WORDS or \
         after in BECAUSE or "'" in after and after.split("'")[0] in SUBJECTS or \
-        match_phrase(words, j + 1, SUBORDINATORS) > 0     # "turn it off *it's* too loud", "switch it off *when* ..."
+        match_phrase(words, j + 1, SUBORDINATORS) > 0 or \
+        match_phrase(words, j + 1, TIME_WORDS) > 0    # "turn it off *it's* too loud", "... *when*", "... *right away*"
 
 
 def _result_words(library: Library) -> dict[str, tuple[str, str]]:
@@ -326,7 +348,9 @@ class Tagger(State):
             self.using = found.using
         if found.verb is not None:
             self.speech = found.verb in self.lexicon.speech     # a clause after it is what is said
-            self.verb_index = len(self.out) - 1
+            self.verb_index = next(k for k in range(len(self.out) - 1, len(self.out) - len(found.words) - 1, -1)
+                                   if self.out[k].tag == Tag.VERB) if found.words[-1].tag != Tag.VERB and any(
+                w.tag == Tag.VERB for w in found.words) else len(self.out) - 1   # "Anna wants": the verb, not Anna
         if found.particle is not None:
             self.particles[found.particle[0]] = found.particle[1]
         if found.expect is AFTER_SEP:

@@ -411,8 +411,27 @@ class State:
         if not self.statement_at(i) and not self.bare_subject(i):
             return False
         between = self.out[self.verb_index + 1:]
+        if len(between) == 2 and between[0].tag == "PREP" and between[0].info in ("for", "to") and \
+                between[1].tag in ("PRON", "NAME"):
+            between = between[1:]       # "describe *for me* everything that's in the drawer": the person told
+        if self.thing_told_of():
+            return False                # "list *everything* that's on the counter": a thing, no person told
         return all(t.tag in ("DET", "POSS", "WORD", "NAME", "PRON", "LABEL", "RESULT") for t in between) and \
             sum(t.tag in ("PRON", "NAME") for t in between) <= 1
+
+    def thing_told_of(self) -> bool:
+        """Whether the word before is a thing a verb of saying tells of, not the person told: "list *everything*
+        that's on the counter", "describe all the *drinks* that are on the stove" (a pronoun of things, or a noun of
+        the library's things that names no person, right after the verb's phrase begins), so "that" starts a
+        relative clause of it, not what is said."""
+        if not self.speech or self.verb_index < 0 or not self.out:
+            return False
+        last = self.out[-1]
+        if last.tag == "PRON":
+            return last.lower in ("everything", "something", "anything", "all")
+        lemma = noun_lemma(last.lower)
+        return last.tag == "WORD" and lemma in self.lexicon.things and lemma not in self.lexicon.people and \
+            all(t.tag in ("DET", "POSS", "WORD", "NUM") for t in self.out[self.verb_index + 1:])
 
     def bare_subject(self, i: int) -> bool:
         """Whether a statement whose subject is a bare noun starts at ``i`` after a plural person noun
@@ -811,15 +830,20 @@ class State:
                 return None
             end = self.cond_end(i + 1)
             return self.emit(i, end - i, "HERE", "where") if end > i + 1 else None
+        if prev == "PARTICLE" and len(self.out) > 1 and self.out[-1].info != self.out[-1].lower and \
+                self.out[-2].tag in ("WORD", "NAME"):
+            prev = self.out[-2].tag   # "turn the lamp on *that is on the table*": a split particle, then the noun's
+        told_of = self.thing_told_of()
         if prev not in ("WORD", "NAME") and not (prev == "PRON" and low == "who" and self.out[-1].lower in (
-                "someone", "somebody", "anyone", "anybody", "everyone", "everybody", "those", "one")):
+                "someone", "somebody", "anyone", "anybody", "everyone", "everybody", "those", "one")) and \
+                not (told_of and low in ("that", "which")):
             return None
-        if self.speech:
+        if self.speech and not told_of:
             return None             # "tell the man (that) ...": what is said
         if low in NOMINATIVE or low == "you" and verb_lemma(nxt):
             end = self.relative_end(i + 1)
             return self.emit(i, end - i, "REL") if end > i + 1 else None
-        if low not in RELATIVES or self.speech and low == "that" or not nxt or nxt in END_MARKS:
+        if low not in RELATIVES or self.speech and low == "that" and not told_of or not nxt or nxt in END_MARKS:
             return None
         if nxt in BE_WORDS and i + 2 < len(words):
             after = words[i + 2].lower

@@ -450,8 +450,8 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
         raise _located(f"the {m.name} has no {what} (no room, place or person of the map is called so, and "
                        f"no kind of thing it knows of); its rooms are {', '.join(m.room_names) or 'none'}",
                        phrase, text)
-    if not asked and category in FIXTURE_TYPES and not where_words(phrase.text) and not _kinds_known_of(phrase, things):
-        m = things.map
+    if not asked and category in FIXTURE_TYPES and not _kinds_known_of(phrase, things):
+        m = things.map                 # said in a room too ("leave the light on in the hall"): the map knows none
         tax = things.taxonomy
 
         def does(cls: str) -> bool:     # by the class or another name of it (a hob is a stove)
@@ -459,7 +459,7 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
 
         places = [p.name for p in m.places if (p.openable if category == "openable" else does(p.cls))]
         places += [kind for kind in _kinds_known(m) if does(kind)]
-        what = " ".join(words_of(phrase.text)) or phrase.head
+        what = phrase.head if where_words(phrase.text) else " ".join(words_of(phrase.text)) or phrase.head
         raise _located(f"the {m.name} has no {what} (no place, thing or prior of the map names one, and what "
                        f"opens or switches is not searched for); what it knows will {FIXTURE_TYPES[category]}: "
                        f"{', '.join(places) or 'nothing'}", phrase, text)
@@ -485,8 +485,9 @@ def _unheard_of(phrase: Phrase, things: Things) -> bool:
 
 FIXTURE_TYPES = {"openable": "open and close", "toggleable": "switch on and off"}
 """Element types whose thing is a fixture or an appliance the map would name ("open the car", "turn on the
-telly" on a map with neither): a kind the map knows nothing of is refused, not searched for in the whole house
-(said in a room, "the radio in the kitchen", it is looked for there)."""
+telly" on a map with neither): a kind the map knows nothing of is refused, not searched for in the whole house;
+said in a room ("the radio in the kitchen", "leave the light on in the hall") too (words18: it was looked for there,
+while "turn off all the lights" was refused; a map that names no such thing anywhere has none in any room)."""
 
 
 def _kinds_known_of(phrase: Phrase, things: Things) -> bool:

@@ -864,3 +864,134 @@ def test_a_state_particle_no_unit_takes_is_refused_not_dropped(library: Library)
     assert texts("pick up a cup with the lamp on", library)[0][0] == "Pick"       # describes the lamp
     assert [f for f, _ in texts("put the kettle on", library)] == ["ToggleOn"]   # a unit's own particle
     assert [f for f, _ in texts("take the lid off", library)] == ["Pick"]
+
+
+def test_staying_near_a_name_said_in_lower_case_follows_them(library: Library) -> None:
+    # words18: "stay close to morgan" was Wait(ground "morgan"): lemminflect lists "morgan" (a breed of horse), so it
+    # was no lower-case name; after "near" in a clause whose verb with "with" is Follow's, a word listed only as a
+    # noun, said bare and singular before the clause's end or a place, is whom to keep near
+    assert texts("stay close to morgan", library) == [("Follow", {"theme": "morgan"})]
+    assert texts("stay next to robin, please", library) == [("Follow", {"theme": "robin"})]
+    assert texts("stay close to home", library) == [("Wait", {"ground": "home"})]    # also an adverb, a verb
+    assert texts("stay near the door", library) == [("Wait", {"ground": "the door"})]
+    assert texts("stay near the sofas", library) == [("Wait", {"ground": "the sofas"})]
+
+
+def test_a_state_particle_before_a_place_is_refused_not_dropped(library: Library) -> None:
+    # words18: "pop the telly on in the lounge" was Place(telly, goal lounge), "on" dropped; a place after the particle
+    # does not make it any less a state the frame would drop
+    with pytest.raises(CommandError) as refused:
+        parse_command("pop the telly on in the lounge", library)
+    assert refused.value.column == len("pop the telly ") + 1 and "'on'" in refused.value.message
+    assert [f for f, _ in texts("put the cup on on the table", library)] == ["Place"]   # "on" said twice: a place
+    assert texts("leave the light on in the hall", library) == [("ToggleOn", {"theme": "the light in the hall"})]
+
+
+def test_a_relative_clause_after_a_split_particle_describes_the_thing(library: Library) -> None:
+    # words18: "turn the lamp on that is on the table" dropped the relative clause (theme "the lamp"); "switch the
+    # light off that I left on" was ToggleOn (the last "on", the relative clause's, was taken for the particle)
+    assert texts("turn the lamp on that is on the table", library) == [
+        ("ToggleOn", {"theme": "the lamp that is on the table"})]
+    (frame,) = parse_command("switch the light off that I left on", library).frames
+    assert frame.frame == "ToggleOff" and frame.elements["theme"].relative == "that I left on"
+    assert parse_command("switch off the light that I left on", library).frames[0].elements["theme"].relative == \
+        "that I left on"
+    assert texts("turn off that light", library) == [("ToggleOff", {"theme": "that light"})]
+
+
+def test_a_wished_state_of_things_joined_by_and_is_one_state(library: Library) -> None:
+    # words18: "I'd like the bread and butter warm" was Bring of "the bread and butter warm" (an "and" ended the wish);
+    # an "and" between nouns, with no determiner after it and no state before it, joins one phrase
+    assert texts("I'd like the bread and butter warm", library)[0] == ("Heat", {"theme": "the bread and butter"})
+    assert texts("leave the door and window open", library) == [("Open", {"theme": "the door and window"})]
+    assert texts("I'd like the blinds closed and the lights off", library) == [
+        ("Close", {"theme": "the blinds"}), ("ToggleOff", {"theme": "the lights"})]
+    assert [f for f, _ in texts("leave the bread and take the butter", library)] == ["Place", "Pick"]
+
+
+def test_whether_any_is_somewhere_said_without_is_there(library: Library) -> None:
+    # words18: "anyone in the bathroom?" was an unknown verb 'anyone'; a sentence with no verb, a phrase opened by
+    # "any-"/"some-" and a place (or "left") asks whether one is there, as "is anyone in the bathroom?" does
+    assert texts("anyone in the bathroom?", library) == [("Find", {"theme": "anyone", "ground": "the bathroom"})]
+    assert texts("any milk left in the fridge?", library) == [("Find", {"theme": "any milk", "ground": "the fridge"})]
+    assert texts("any biscuits left?", library) == [("Find", {"theme": "any biscuits"})]
+    assert [f for f, _ in texts("any cups in the sink, please wash them", library)] == ["Clean"]   # a remark
+
+
+def test_a_wish_of_a_person_said_bare_or_in_lower_case(library: Library) -> None:
+    # words18: "dad wants his reading glasses" was an unknown verb 'dad' (only a capitalised name said a wish);
+    # a noun the taxonomy lists as a person, or a word no dictionary lists, says it too
+    assert texts("dad wants his reading glasses", library) == [
+        ("Bring", {"theme": "his reading glasses", "recipient": "dad"})]
+    assert texts("ellie wants a drink", library) == [("Bring", {"theme": "a drink", "recipient": "ellie"})]
+    # a bare thing after the wish is a phrase of its own ("the guest wants tea" was Bring of "the guest wants tea")
+    assert texts("the guest wants tea", library) == [("Bring", {"theme": "tea", "recipient": "the guest"})]
+    with pytest.raises(CommandError):
+        parse_command("water needs a glass", library)     # a thing wants nothing
+
+
+
+def test_a_part_put_on_is_no_thing_switched_on(library: Library) -> None:
+    # words18: "put the lid on" was ToggleOn ("lid" is no class of the library, so nothing said it was not
+    # toggleable); a part a thing is made with (grounding.PARTS: lid, cover, door, ...) fits on its whole: without
+    # the whole said it is refused at the particle, asking what it goes on
+    with pytest.raises(CommandError) as refused:
+        parse_command("put the lid on", library)
+    assert refused.value.column == len("put the lid ") + 1 and "what it goes on is not said" in refused.value.message
+    with pytest.raises(CommandError, match="what it comes off"):
+        parse_command("leave the lid off", library)
+    assert texts("put the lid on the pan", library) == [("Place", {"theme": "the lid", "goal": "the pan"})]
+    assert [f for f, _ in texts("put the kettle on", library)] == ["ToggleOn"]
+    assert [f for f, _ in texts("take the lid off", library)] == ["Pick"]
+
+
+def test_listing_things_is_telling_them(library: Library) -> None:
+    # words18: "list" is Tell's, by hand beside "describe" (WordNet list.v.01 "name individually; give the names
+    # of"); a thing told of keeps its relative clause ("List everything that's on the counter" had "everything"
+    # as the person told and "that's on the counter" as what was said)
+    assert texts("list the objects on the table", library) == [("Tell", {"message": "the objects on the table"})]
+    assert texts("List everything that's on the counter.", library) == [
+        ("Tell", {"message": "everything that's on the counter"})]
+    assert texts("list all the drinks that are on the stove", library) == [
+        ("Tell", {"message": "all the drinks that are on the stove"})]
+    assert texts("tell the man that dinner is ready", library) == [
+        ("Tell", {"message": "dinner is ready", "recipient": "the man"})]
+    assert texts("bring me the shopping list", library)[0][0] == "Bring"      # a noun after a determiner
+
+
+def test_for_a_person_before_the_object_keeps_the_object(library: Library) -> None:
+    # words18: "bring for me the cup" was Bring(recipient me), the cup dropped; "for", as "to", naming a person right
+    # after a verb with someone to receive, then a noun phrase: that is the object, the phrases after it its own
+    assert texts("bring for me the cup", library) == [("Bring", {"theme": "the cup", "recipient": "me"})]
+    assert texts("describe for me the objects on the table", library) == [
+        ("Tell", {"message": "the objects on the table", "recipient": "me"})]
+    assert texts("could you list for me everything that's in the cutlery drawer", library) == [
+        ("Tell", {"message": "everything that's in the cutlery drawer", "recipient": "me"})]
+
+
+@pytest.mark.parametrize(("text", "theme"), [
+    ("where's the remote gone?", "the remote"), ("where have my keys gone", "my keys"),
+    ("where did the cat go?", "the cat"), ("where has the cat got to?", "the cat"),
+    ("where did I leave my glasses?", "my glasses"), ("where have you put the scissors", "the scissors")])
+def test_where_a_thing_went_is_where_it_is(text: str, theme: str, library: Library) -> None:
+    # words18: "where have my keys gone", "where did the cat go?" were unknown verbs 'where'; "where's the remote
+    # gone?" had the theme "the remote gone"
+    assert texts(text, library) == [("Find", {"theme": theme})]
+
+
+def test_home_after_the_thing_moved_is_where_it_goes(library: Library) -> None:
+    # words18: "bring him home" was Bring(theme "home", recipient him); "home" ending the clause after the thing or
+    # person moved is a direction, as "upstairs" is
+    assert texts("bring him home", library) == [("Guide", {"theme": "him", "goal": "home"})]
+    assert texts("bring the shopping home", library) == [("Bring", {"theme": "the shopping", "goal": "home"})]
+    assert texts("go home", library) == [("Go", {"goal": "home"})]
+    assert texts("find the home office", library) == [("Find", {"theme": "the home office"})]
+
+
+def test_a_split_particle_before_a_time_said(library: Library) -> None:
+    # words18: "turn it off right away" was an unknown verb 'turn' (the particle did not stand alone before a time
+    # adverbial), "put the kettle on right now" an error at "right now"
+    assert texts("turn it off right away", library) == [("ToggleOff", {"theme": "it"})]
+    assert texts("put the kettle on right now", library) == [("ToggleOn", {"theme": "the kettle"})]
+    assert texts("leave the light on tonight", library) == [("ToggleOn", {"theme": "the light"})]
+    assert [f for f, _ in texts("put the kettle on its base", library)] == ["Place"]

@@ -1341,11 +1341,11 @@ def test_a_time_word_before_apostrophe_s_is_a_possessor_not_when(text: str, role
     assert parse.frames[0].elements[role].text.startswith(text.split()[2])
 
 
-@pytest.mark.parametrize("text", ["please list everything in the fridge", "please list all the cups",
+@pytest.mark.parametrize("text", ["please sort everything in the fridge", "please sort all the cups",
                                   "please tabulate something for me"])
 def test_an_unknown_verb_before_a_pronoun_or_determiner_is_no_noun_asked_for(library: Library, text: str) -> None:
-    """"please list everything": an imperative whose verb is unknown, an error at the verb — not "bring me
-    the list" (a noun takes no pronoun or determiner after it)."""
+    """"please sort everything": an imperative whose verb is unknown, an error at the verb — not "bring me
+    the sort" (a noun takes no pronoun or determiner after it; "list", the example before words18, is Tell's)."""
     with pytest.raises(CommandError) as caught:
         parse_command(text, library)
     assert "unknown verb" in str(caught.value) and caught.value.column == 8

@@ -75,6 +75,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.FRONTED_OF,
     requests.TOLD_HOW_MANY,
     requests.SWITCHED_ALONE,
+    requests.ANY_ASKED,
     requests.ASKED_ALONE_RULE,
     verbs.USE,
     verbs.VERB,

@@ -8,6 +8,7 @@ from seal_cli.language.english import (
     BE_WORDS,
     CLOCK_PREPOSITIONS,
     DETERMINERS,
+    END_MARKS,
     HERE_WORDS,
     NP_OPENERS,
     NUMBERS,
@@ -28,7 +29,10 @@ from seal_cli.language.state import TIME_FIRST, State, first_words, match_phrase
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word
 
-_HERE_FIRST = first_words(HERE_WORDS)
+HOME = "home"
+"""An adverb of direction said after the thing moved, ending the clause ("bring him *home*"); a noun elsewhere ("go
+home" is Go's goal either way, "the home office")."""
+_HERE_FIRST = first_words(HERE_WORDS) | {HOME}
 _PREP_FIRST = first_words(PREPOSITIONS)
 
 
@@ -117,6 +121,10 @@ def _here(s: State, i: int) -> Match | None:
     if s.in_np():
         return None
     low, nxt = s.words[i].lower, s.next_lower(i)
+    if low == HOME:                       # "bring him *home*", "take grandma home": where the motion goes
+        ends = not nxt or nxt in END_MARKS or nxt in (",", ";", "please", "and", "then", "now")
+        return s.emit(i, 1, Tag.HERE) if ends and s.verb_index >= 0 and s.prev_tag() in (
+            Tag.WORD, Tag.NAME, Tag.PRON) else None
     n = match_phrase(s.words, i, HERE_WORDS)
     after_be = bool(s.out) and s.out[-1].tag == Tag.BE           # "how many cups are there in the kitchen"
     if n and not (low == "there" and (nxt in BE_WORDS or after_be)):
@@ -226,6 +234,7 @@ HERE = Rule("here and there", _here, (
     Example("bring it here", "here", Tag.HERE),
     Example("how many cups are there on the table", "there", Tag.THERE),
     Example("go to the pantry and count the cans in there", "in there", Tag.HERE),
+    Example("meet alex at the station and bring him home", "home", Tag.HERE),
 ), _HERE_FIRST, "'here', 'there', 'upstairs' (a place); 'there' before or after 'is' (existential)")
 PREPOSITION = Rule("preposition", _preposition, (
     Example("put the cup on top of the fridge", "on top of", Tag.PREP),

@@ -56,7 +56,7 @@ from seal_cli.language.english import (
     WISHED_PLACED,
     WISHED_PLACES,
 )
-from seal_cli.language.morphology import gerund_lemma, is_adjective, noun_lemma, participles, verb_lemma
+from seal_cli.language.morphology import gerund_lemma, in_dictionary, is_adjective, noun_lemma, participles, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import CLOSED, State, first_words, longest_phrase, match_phrase, merge
 from seal_cli.language.tags import Tag
@@ -107,8 +107,9 @@ def _question(s: State, i: int) -> Match | None:
 def _where(s: State, i: int) -> Match | None:
     words = s.words
     n = _phrase(s, i, WHERE_QUESTIONS)
-    if not n or WHERE_MEANS not in s.lexicon.units or not s.np_starts(i + n):
-        return None
+    if not n or WHERE_MEANS not in s.lexicon.units or not s.np_starts(i + n) or \
+            words[i + n - 1].lower in WHERE_DID[1] and words[i + n].lower in WHERE_DID[2]:
+        return None                         # "where did *I* leave my glasses": WHERE_DID's
     text = s.text_of(words[i].start, words[i + n - 1].end) or " ".join(w.text for w in words[i:i + n])
     return Match(n, (Word(text, words[i].start, words[i + n - 1].end, Tag.VERB, WHERE_MEANS),), expect=False,
                  verb=WHERE_MEANS, using=False)
@@ -179,8 +180,8 @@ def _where_be(s: State, i: int) -> Match | None:
     """The "is" of "do you know where the tea spoon *is*?": after the thing asked about, at the end of the
     sentence, dropped ("where" was read as "find")."""
     if s.verb_index < 0 or s.out[s.verb_index].info != WHERE_MEANS or \
-            "where" not in s.out[s.verb_index].lower.split()[:-1] and \
-            s.out[s.verb_index].lower.split()[-1] != "where" or s.prev_tag() not in (Tag.WORD, Tag.NAME):
+            not any(w in ("where", "where's") for w in s.out[s.verb_index].lower.split()) or \
+            s.prev_tag() not in (Tag.WORD, Tag.NAME):
         return None
     n = _phrase(s, i, WHERE_BE)
     if not n or i + n < len(s.words) and s.words[i + n].lower not in END_MARKS:
@@ -202,6 +203,30 @@ def _whether_is(s: State, i: int) -> Match | None:
     if WHERE_MEANS not in s.lexicon.units or not _place_asked(s, i + 1) or words[i + 1].lower in _WHETHER_IS:
         return None
     return Match(1, (words[i].tagged(Tag.VERB, WHERE_MEANS),), expect=False, verb=WHERE_MEANS, using=False)
+
+
+_ANY_ASKED = frozenset(["anyone", "anybody", "anything", "someone", "somebody", "something", "any"])
+"""Words that open a question of whether some such thing is somewhere, said without "is there"."""
+
+
+def _any_asked(s: State, i: int) -> Match | None:
+    """"*Anyone* in the bathroom?", "any milk in the fridge?", "someone at the door?", "any biscuits left?": a
+    sentence with no verb that asks whether a thing or person is somewhere or remains ("is there" left unsaid: a
+    phrase opened by "any-"/"some-", then a preposition of place and its phrase, or "left") is "find ..."
+    (``WHERE_MEANS``), as "is anyone in the bathroom?" is."""
+    words = s.words
+    if WHERE_MEANS not in s.lexicon.units or words[i].lower not in _ANY_ASKED or not s.np_starts(i):
+        return None
+    end = _sentence_end(s, i)
+    left = [k for k in range(i + 2, end) if words[k].lower in _REMAINING and words[k - 1].lower.isalpha()]
+    if not (left or _place_asked(s, i)) or any(
+            k not in left and (s.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS or
+                               words[k].lower in BE_WORDS or words[k].lower in (",", ";", "and", "then"))
+            for k in range(i + 1, end)):
+        return None                              # "any milk in the fridge *is* fine": a statement
+    tag = Tag.DET if words[i].lower == "any" else Tag.PRON
+    return Match(1, (_unsaid(words[i].start, Tag.VERB, WHERE_MEANS), words[i].tagged(tag)), expect=False,
+                 verb=WHERE_MEANS, using=False)
 
 
 def _place_asked(s: State, j: int) -> bool:
@@ -637,14 +662,17 @@ def _resultative(s: State, i: int) -> Match | None:
     verbs = s.lexicon.state_verbs
     if not verbs or low not in verbs and (verb_lemma(low) or low) not in verbs:
         return None
-    end = _clause_stop(s, i + 1)
+    stop = s.cond_end(i + 1)                     # "leave the door and window open": "and" between nouns
+    stop = next((j for j in range(i + 1, stop) if s.words[j].lower in ("and", "then") and not _nouns_joined(s, j)),
+                stop)
+    end = stop
     while end > i + 1 and words[end - 1].lower in (",", "please", ".", "!"):
         end -= 1
     last = words[end - 1].lower if end > i + 2 else ""
     if not last or last in SWITCHED_MEANS or not (is_adjective(last) or last in STATE_PARTICLES) or \
             words[end - 2].lower in PARTICLES:
         return None                              # "put two lettuce *plants* in the sink", "put one *back* clean"
-    found = _state_after(s, i, 1, _clause_stop(s, i + 1))
+    found = _state_after(s, i, 1, stop)
     return found if found is not None and found.particle and found.particle[0] == end - 1 else None
 
 
@@ -666,12 +694,20 @@ def _state_after(s: State, i: int, n: int, stop: int | None = None) -> Match | N
     unit = _state_unit(s, words[q].lower)
     before = words[q - 1].lower
     if unit is None or before in NP_OPENERS or before in PREPOSITIONS or \
-            any(words[p].lower in BE_WORDS or words[p].lower in (",", "and", "then") or
+            any(words[p].lower in BE_WORDS or words[p].lower in (",", "and", "then") and not _nouns_joined(s, p) or
                 s.verb_at(p) is not None and words[p - 1].lower not in NP_OPENERS for p in range(k + 1, q)):
         return None
     start, stop = words[i].start, words[k - 1].end
     return Match(n, (Word(s.text_of(start, stop), start, stop, Tag.VERB, unit),), expect=False, verb=unit,
                  using=False, particle=(q, unit))
+
+
+def _nouns_joined(s: State, p: int) -> bool:
+    """Whether the "and" at ``p`` joins two nouns of one phrase ("the bread *and* butter warm"), not two things each
+    with its state ("the blinds closed *and* the lights off": a determiner after it, a state before it)."""
+    words = s.words
+    return words[p].lower == "and" and p + 1 < len(words) and words[p + 1].lower not in NP_OPENERS and \
+        _state_unit(s, words[p - 1].lower) is None and s.verb_at(p + 1) is None
 
 
 _OBLIGED_SUBJECTS = frozenset(["it", "this", "these", "those", "that"])
@@ -871,8 +907,14 @@ _WISHES_OF = (("wants",), ("needs",), ("would", "like"))
 
 
 def _wish_of(s: State, i: int) -> Match | None:
+    """"*Anna wants* the cup", "*dad needs* his glasses", "*ellie wants* a drink": a wish said of a name, of a noun
+    the taxonomy lists as a person said bare (a name to the family: "dad", "grandma"), or of a word no dictionary
+    lists (a name written in lower case), first in the sentence or as a name is, brings the thing to them."""
     words = s.words
-    if REQUEST_MEANS not in s.lexicon.units or not capitalised(words[i]) or s.verb_at(i) is not None:
+    low = words[i].lower
+    if REQUEST_MEANS not in s.lexicon.units or s.verb_at(i) is not None or not (
+            capitalised(words[i]) or low in s.lexicon.people or
+            low.isalpha() and words[i].text == low and low not in CLOSED and not in_dictionary(low)):
         return None
     for wish in _WISHES_OF:
         n = 1 + len(wish)
@@ -931,7 +973,9 @@ def _wish_dropped(s: State, i: int) -> Match | None:
     if verb is None or verb.info != REQUEST_MEANS or verb.text or s.prev_tag() not in (Tag.WORD, Tag.NAME) or \
             not n or not s.np_starts(i + n):
         return None
-    return Match(n)                               # "the guest *wants* tea": dropped, "bring" was unsaid before
+    if s.words[i + n].lower in NP_OPENERS:
+        return Match(n)                           # "the guest *wants* a tea": dropped, "bring" was unsaid before
+    return Match(n, (_unsaid(s.words[i + n].start, Tag.DET),))   # "wants *tea*": a phrase of its own, not "guest tea"
 
 
 def _know_wish(s: State, i: int) -> Match | None:
@@ -1060,6 +1104,11 @@ WHETHER_IS_RULE = Rule("is X somewhere", _whether_is, (
     Example("Is Ben in the kitchen?", "Is", Tag.VERB),
     Example("are the apples in the fridge?", "are", Tag.VERB),
 ), _WHETHER_IS, "'is X in Y?': find X in Y, and answer whether it is there")
+ANY_ASKED = Rule("any X somewhere, asked", _any_asked, (
+    Example("anyone in the bathroom?", "anyone", Tag.PRON),
+    Example("any milk left in the fridge?", "any", Tag.DET),
+    Example("any biscuits left?", "any", Tag.DET),
+), _ANY_ASKED, "'anyone in the bathroom?', 'any milk in the fridge?': find them there ('is there' unsaid)")
 WISHED_STATE = Rule("a wish for a thing's state", _wished_state, (
     Example("I'd like the blinds closed", "I'd like", Tag.VERB),
     Example("I want the lights off, please", "off", Tag.PARTICLE),
@@ -1067,11 +1116,13 @@ WISHED_STATE = Rule("a wish for a thing's state", _wished_state, (
     Example("we'd like the lights on in the living room", "on", Tag.PARTICLE),
     Example("I'd like my tea hot", "hot", Tag.PARTICLE),
     Example("I want the door open and the radio on", "open", Tag.PARTICLE),
+    Example("I'd like the bread and butter warm", "warm", Tag.PARTICLE),
 ), first_words(_WISHED_STATES), "'I'd like X closed', 'I want X off': close X, turn X off")
 RESULTATIVE = Rule("a thing left in a state", _resultative, (
     Example("leave the door open", "leave", Tag.VERB),
     Example("get the soup hot, please", "hot", Tag.PARTICLE),
     Example("leave the window in the bedroom shut", "shut", Tag.PARTICLE),
+    Example("leave the door and window open", "open", Tag.PARTICLE),
 ), None, "'leave X open', 'get X hot': open X, heat X (a verb that puts a thing in a state, and the state)")
 OBLIGED_RULE = Rule("where a thing should go", _obliged, (
     Example("the bowl should go in the dishwasher", "", Tag.VERB),
@@ -1104,6 +1155,7 @@ WISH_OF = Rule("a person's wish for a thing", _wish_of, (
     Example("Anna wants the cup", "Anna wants", Tag.VERB),
     Example("Ben needs a towel.", "Ben needs", Tag.VERB),
     Example("Anna would like the red mug", "Anna would like", Tag.VERB),
+    Example("dad wants his reading glasses", "dad wants", Tag.VERB),
 ), None, "'Anna wants X', 'Ben needs X': bring X to the person")
 WISH_OF_PHRASE = Rule("a wish said of a person's phrase", _wish_of_phrase, (
     Example("the person at the armchair needs a towel", "the", Tag.DET),
@@ -1172,6 +1224,7 @@ ASKED_WHERE = Rule("asked where", _asked_where, (
 WHERE_BE_DROPPED = Rule("is, after asked where", _where_be, (
     Example("do you know where the tea spoon is", "is", ""),
     Example("do u know where the remote went", "went", ""),
+    Example("where's the remote gone?", "gone", ""),
 ), None, "the 'is' of 'do you know where X is', dropped: 'do you know where' was read as 'find'")
 ENSURED_RULE = Rule("make sure of a state", _ensured, (
     Example("please make sure the stove is off", "make sure", Tag.VERB),
