@@ -63,6 +63,10 @@ BLOCKING = frozenset(("LookAt", "Heat", "Cool", "Clean", "Slice"))
 """Frames whose presence means the sentence said what is done to the thing (or that it looks)."""
 LIGHT = "light"
 """The taxonomy's category of the things a LookAt's light is (its ``instrument``)."""
+LAMP = "lamp"
+"""The class name a look's light is grounded by when the sentence names no light (the LookAt frame's "in the
+light of a lamp"), as a frame's default is (:meth:`~seal_cli.language.grounding.Vocabulary.ground_name`): in a
+room, its lamp."""
 
 
 def task_features(words: Iterable[str], parse: Parse) -> tuple[str, ...]:
@@ -135,14 +139,18 @@ def unlooked(parse: Parse, library: Library) -> Phrase | None:
 
 def add_look(parse: Parse, library: Library, vocabulary: Vocabulary, probability: float) -> Parse:
     """The parse with a LookAt of the thing it handles after its last frame (:func:`unlooked`), its instrument the
-    first light the sentence names (a lamp switched off, "a *lit lamp*"), marked inferred; else unchanged."""
+    first light the sentence names (a lamp switched off, "a *lit lamp*"), else the vocabulary's lamp (:data:`LAMP`,
+    a default: nobody said it), marked inferred; else unchanged."""
     thing = unlooked(parse, library)
     if thing is None or "LookAt" not in library:
         return parse
     elements = {"theme": thing}
     lights = [p for f in parse.frames for p in f.elements.values() if _light(library, parse.resolve(p))]
+    lamp = vocabulary.ground_name(LAMP)
     if lights:
         elements["instrument"] = lights[0]
+    elif lamp is not None:
+        elements["instrument"] = Phrase(None, LAMP, lamp, default=True)
     unit = library.frame("LookAt").lexical_units[0].text
     look = Evoked("LookAt", unit, parse.frames[-1].span, elements, inferred=round(probability, 3))
     return replace(parse, frames=(*parse.frames, look))

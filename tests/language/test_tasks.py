@@ -54,6 +54,10 @@ def test_a_look_is_added_after_the_last_frame_and_marked(library: Library) -> No
     lit = parse_command("take a clock from a desk with a lit lamp", library, room())
     assert [f.frame for f in lit.frames] == ["Pick", "LookAt"]
     assert lit.resolve(lit.frames[-1].elements["theme"]).cls == "AlarmClock"
+    assert lit.resolve(lit.frames[-1].elements["instrument"]).cls == "FloorLamp"    # the lamp listed first
+    held = parse_command("take the credit card from a lit desk", library, room(classes=ROOM[:2]))
+    light = held.frames[-1].elements["instrument"]
+    assert (light.cls, light.default) == ("FloorLamp", True)        # none said: the room's lamp, a default
 
 
 def test_no_look_when_said_unsure_or_off(library: Library) -> None:
