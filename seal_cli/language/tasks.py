@@ -15,13 +15,14 @@ the thing it handles and of where it puts it, how many Places it says). It is fi
 ``scripts/build_word_classes.py`` on ALFRED's train goals (each sentence parsed with nothing inferred, the
 label its task's type) and shipped in the word-class table (``task_prior``, ``task_weights``).
 
-**What a task adds** is a table, :data:`ADDERS` (task → the function that adds its frame): only the look task
-has one. A parse the model reads as a look task with at least :data:`THRESHOLD` probability, that handles one
-grounded thing and says no look, no lamp switched on and no step (:func:`unlooked`), gets a LookAt of that
-thing after its last frame, its instrument the light the sentence names if it names one
-(:func:`add_look`), marked ``Evoked.inferred`` with the probability. The other kinds were measured and have
-no adder (``docs/language.md``, "This round (alfred15)"): a container or a second thing the sentence does
-not name cannot be added, and a step the parse already says is never dropped.
+**What a task adds** is a table, :data:`ADDERS` (task → the function that adds its frame), used when the kind's
+probability is at least :data:`THRESHOLD`, the frame marked ``Evoked.inferred`` with it. A look task: a parse that
+handles one grounded thing and says no look, no lamp switched on and no step (:func:`unlooked`) gets a LookAt of
+that thing after its last frame, its instrument the light the sentence names, else the room's lamp
+(:func:`add_look`). A heating, cooling or cleaning task: a parse that places one thing and says no step gets the
+step before its Place (:func:`~seal_cli.language.steps.add_step`, as the step model adds one). The other kinds
+were measured and have no adder (``docs/language.md``, "This round (alfred15)"): a container or a second thing
+the sentence does not name cannot be added, and a step the parse already says is never dropped.
 
 **Scoped and marked** as the unsaid step is (:mod:`seal_cli.language.steps`): only where every class of the
 vocabulary is one the statistics know (``Vocabulary.task_model``); ``parse_command(..., infer_steps=False)``
