@@ -13,7 +13,8 @@ Also counted: the sentence's other words by wording and labelled class (``contex
 (``class_context``), which grounding weighs; and, for a plural object phrase with no number said,
 whether the task meant one thing or several (``number``: several when it picks two). The chooser's weights
 (``weights``) and, fitted on the phrases said in a known room among the classes it held, what the room's other
-classes add (``scene_weights``).
+classes add (``scene_weights``); the unsaid step, stack, slice and goal, and the task kind a sentence describes
+(``task_prior``, ``task_weights``: :mod:`seal_cli.language.tasks`).
 
     python scripts/build_word_classes.py                 # rewrite the shipped table
     python scripts/build_word_classes.py --check         # exit 1 if the shipped table differs
@@ -59,6 +60,8 @@ from seal_cli.language.stacking import THRESHOLD as STACK_THRESHOLD  # noqa: E40
 from seal_cli.language.stacking import coordinated  # noqa: E402
 from seal_cli.language.steps import NONE, STEPS, eligible, ends_at_steps, step_features  # noqa: E402
 from seal_cli.language.steps import THRESHOLD as STEP_THRESHOLD  # noqa: E402
+from seal_cli.language.tasks import TASKS, task_features  # noqa: E402
+from seal_cli.language.tasks import THRESHOLD as TASK_THRESHOLD  # noqa: E402
 from seal_cli.language.wordusage import (  # noqa: E402
     CONTEXT_WEIGHT,
     FORMAT,
@@ -77,7 +80,8 @@ LABELS = ("object", "receptacle", "mrecep", "toggle")
 KEEP = 2
 """A wording seen fewer times than this is left out of the file (it could never reach MIN_SUPPORT alone)."""
 SECTIONS = ("words", "seen", "context", "class_context", "number", "weights", "scene_weights", "step_prior",
-            "step_weights", "stacks", "step_left", "slice_prior", "slice_weights", "goal_prior", "goal_weights")
+            "step_weights", "stacks", "step_left", "slice_prior", "slice_weights", "goal_prior", "goal_weights",
+            "task_prior", "task_weights")
 STEP_OF = {"pick_heat_then_place_in_recep": "Heat", "pick_cool_then_place_in_recep": "Cool",
            "pick_clean_then_place_in_recep": "Clean"}
 """The step each ALFRED task type has (the others: none)."""
@@ -316,7 +320,9 @@ def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabula
     ended, and as left when the task left the thing in that step's instrument; where it says no cutting
     of a thing of a class train tasks sliced (:func:`~seal_cli.language.slicing.uncut`), whether the task
     sliced it, learned from the sentence's words, the thing's class and the frames evoked
-    (:func:`~seal_cli.language.slicing.slice_features`)."""
+    (:func:`~seal_cli.language.slicing.slice_features`); and, for every sentence parsed, its task's kind, learned
+    from its words, the frames said, the classes handled and put and how many Places
+    (:func:`~seal_cli.language.tasks.task_features`)."""
     library = load_library()
     grounded = vocabulary.with_usage(usage_of(data))
     said: list[tuple[str, tuple[str, ...]]] = []
@@ -325,6 +331,7 @@ def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabula
     sliceable = sorted({class_key(r["object"]) for r in rows if r["sliced"] in ("1", "True", "true")})
     cut: list[tuple[str, tuple[str, ...]]] = []
     put: list[tuple[str, tuple[str, ...]]] = []
+    told: list[tuple[str, tuple[str, ...]]] = []
     spelling = {class_key(c): c for c in data["classes"]}  # type: ignore[union-attr]
     for row in rows:
         text = " ".join(row["goal_sentence"].split())
@@ -332,6 +339,8 @@ def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabula
             parse = parse_command(text, library, grounded, infer_steps=False)
         except CommandError:
             continue
+        if row["task_type"] in TASKS:
+            told.append((row["task_type"], task_features(context_words(text), parse)))
         pair = coordinated(parse)
         for phrase in pair[1:] if pair else ():
             by = stacks.setdefault(phrase.cls or "", Counter())
@@ -376,13 +385,18 @@ def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabula
     goal_keys = tuple(sorted(goals))
     goal_weights = fit([Instance(goal_keys, tuple(math.log(goals[k]) for k in goal_keys), goal_keys.index(goal), feats)
                         for goal, feats in put], l2)
+    kinds_told = Counter(kind for kind, _ in told)
+    task_keys = tuple(k for k in TASKS if kinds_told[k])
+    task_weights = fit([Instance(task_keys, tuple(math.log(kinds_told[k]) for k in task_keys), task_keys.index(kind),
+                                 feats) for kind, feats in told], l2)
     return {**data, "slice_classes": [spelling[k] for k in sliceable if k in spelling],
             "slice_prior": {k: kinds[k] for k in cuts if kinds[k]}, "slice_weights": cut_weights,
             "step_prior": {k: prior[k] for k in keys}, "step_weights": weights,
             "stacks": {c: dict(sorted(by.items(), reverse=True)) for c, by in sorted(stacks.items())
                        if by["said"] >= KEEP},
             "step_left": {s: dict(sorted(by.items())) for s, by in sorted(ended.items()) if by["ended"] >= KEEP},
-            "goal_prior": {k: goals[k] for k in goal_keys}, "goal_weights": goal_weights}
+            "goal_prior": {k: goals[k] for k in goal_keys}, "goal_weights": goal_weights,
+            "task_prior": {k: kinds_told[k] for k in task_keys}, "task_weights": task_weights}
 
 
 def ordered(words: Counter[str]) -> dict[str, int]:
@@ -534,6 +548,8 @@ def main() -> int:
                     help="the least probability at which an unsaid slice is added (2: never); those to try")
     ap.add_argument("--goal-threshold", type=float, nargs="*", default=[GOAL_THRESHOLD],
                     help="the least probability at which an unsaid goal is added (2: never); those to try")
+    ap.add_argument("--task-threshold", type=float, nargs="*", default=[TASK_THRESHOLD],
+                    help="the least probability at which a task's frame is added (2: never); those to try")
     ap.add_argument("--bring-goal", action="store_true", help="with --dev: score a Bring to a place (goal, "
                     "no recipient) as the scorer scores a Place")
     ap.add_argument("--errors", type=Path, help="with --dev: write the held-out sentences scored wrong here (TSV)")
@@ -580,25 +596,28 @@ def main() -> int:
                 for ratio in args.min_ratio:
                     for weight in args.context_weight:
                         tries = itertools.product(args.step_threshold, args.stack_threshold, args.slice_threshold,
-                                                  args.goal_threshold) \
+                                                  args.goal_threshold, args.task_threshold) \
                             if table_.steps else [(args.step_threshold[0], args.stack_threshold[0],
-                                                   args.slice_threshold[0], args.goal_threshold[0])]
-                        for threshold, stacking, slicing, putting in tries:
+                                                   args.slice_threshold[0], args.goal_threshold[0],
+                                                   args.task_threshold[0])]
+                        for threshold, stacking, slicing, putting, telling in tries:
                             tried = vocabulary.with_usage(replace(
                                 table_, min_support=support, min_ratio=ratio, context_weight=weight,
                                 steps=replace(table_.steps, threshold=threshold),
                                 stacks=replace(table_.stacks, threshold=stacking),
                                 slices=replace(table_.slices, threshold=slicing),
-                                goals=replace(table_.goals, threshold=putting)))
-                            first = (threshold, stacking, slicing, putting) == (
+                                goals=replace(table_.goals, threshold=putting),
+                                tasks=replace(table_.tasks, threshold=telling)))
+                            first = (threshold, stacking, slicing, putting, telling) == (
                                 args.step_threshold[0], args.stack_threshold[0], args.slice_threshold[0],
-                                args.goal_threshold[0])
+                                args.goal_threshold[0], args.task_threshold[0])
                             show(f"{name}, support {support} ratio {ratio}" + ("" if table_.weights else
                                                                              f" context {weight}")
                                  + (f" step {threshold}" if table_.steps else "")
                                  + (f" stack {stacking}" if table_.stacks else "")
                                  + (f" slice {slicing}" if table_.slices else "")
-                                 + (f" goal {putting}" if table_.goals else ""),
+                                 + (f" goal {putting}" if table_.goals else "")
+                                 + (f" task {telling}" if table_.tasks else ""),
                                  score(dev, lambda row, v=tried: v, module,
                                        errors if name == args.errors_of and first else None, args.bring_goal))
         if args.errors is not None:

@@ -131,6 +131,8 @@ def _inferred_act(frame: Any) -> str:
     theme, goal = frame.elements.get("theme"), frame.elements.get("goal")
     if frame.frame == "Place" and theme is not None and goal is not None:
         return f"{frame.lexical_unit} {theme.text or theme.head} in {goal.text or 'the ' + goal.head}"
+    if frame.frame == "LookAt" and theme is not None:      # :mod:`seal_cli.language.tasks`: looked at last
+        return f"{frame.lexical_unit} {theme.text or theme.head}"
     return f"{frame.lexical_unit} it first"
 
 

@@ -43,6 +43,7 @@ from seal_cli.language.lexicon import noun_lemma
 from seal_cli.language.slicing import SliceModel
 from seal_cli.language.stacking import StackModel
 from seal_cli.language.steps import StepModel
+from seal_cli.language.tasks import TaskModel
 from seal_cli.language.wordusage import WordUsage, context_words, shipped_word_usage, unsaid_wording
 
 __all__ = ["PARTS", "PIECES", "PORTIONS", "Vocabulary", "load_vocabulary", "vocabulary_of_map"]
@@ -72,6 +73,7 @@ _NO_STEPS = StepModel()
 _NO_STACKS = StackModel()
 _NO_SLICES = SliceModel()
 _NO_GOALS = GoalModel()
+_NO_TASKS = TaskModel()
 _INDEXES = ("_usage", "_present", "_names", "_own", "_exact", "_by_word", "_rules_alone", "_in_scope")
 """The cached indexes a vocabulary builds from its classes and usage, which do not depend on the sentence."""
 
@@ -336,6 +338,13 @@ class Vocabulary:
         scoped as :attr:`step_model` is."""
         usage = self._usage
         return usage.goals if usage.goals and self._in_scope else _NO_GOALS
+
+    @property
+    def task_model(self) -> TaskModel:
+        """Which task a sentence describes, and the frame it adds when the parse lacks it
+        (:mod:`~seal_cli.language.tasks`), scoped as :attr:`step_model` is."""
+        usage = self._usage
+        return usage.tasks if usage.tasks and self._in_scope else _NO_TASKS
 
     @property
     def by_key(self) -> Mapping[str, str]:

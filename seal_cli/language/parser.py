@@ -40,6 +40,7 @@ from seal_cli.language.state import CLOSED
 from seal_cli.language.steps import infer_left_in, infer_step
 from seal_cli.language.swallowed import Swallowed, swallowed
 from seal_cli.language.syntax import NP, Syntax
+from seal_cli.language.tasks import infer_task
 from seal_cli.language.values import Evoked, Parse, Phrase
 
 if TYPE_CHECKING:
@@ -107,6 +108,7 @@ class CommandParser:
         if thing is not None:
             raise _thing_asked_error(text, lexicon, *thing)
         if infer_steps and vocabulary is not None:
+            parse = infer_task(parse, self.library, vocabulary, vocabulary.task_model, vocabulary.context)
             parse = infer_slice(parse, self.library, vocabulary, vocabulary.slice_model, vocabulary.context)
             parse = infer_stack(parse, vocabulary.stack_model)
             parse = infer_left_in(parse, self.library, vocabulary.step_model)

@@ -46,8 +46,8 @@ if TYPE_CHECKING:
     from seal_cli.frames.library import Library
     from seal_cli.language.grounding import Vocabulary
 
-__all__ = ["BLOCKING", "LEFT_SUPPORT", "LEFT_THRESHOLD", "NONE", "STEPS", "THRESHOLD", "StepModel", "eligible",
-           "ends_at_steps", "filling", "infer_left_in", "infer_step", "moved_phrase", "shifted", "step_at",
+__all__ = ["BLOCKING", "LEFT_SUPPORT", "LEFT_THRESHOLD", "NONE", "STEPS", "THRESHOLD", "StepModel", "add_step",
+           "eligible", "ends_at_steps", "filling", "infer_left_in", "infer_step", "moved_phrase", "shifted", "step_at",
            "step_features"]
 
 STEPS = ("Clean", "Cool", "Heat")
@@ -224,8 +224,21 @@ def infer_step(parse: Parse, library: Library, vocabulary: Vocabulary, model: St
     goal = parse.resolve(place.elements["goal"]).cls
     p = model.probabilities(step_features(words, thing, goal))
     best = max(p, key=lambda k: p[k])
-    if best == NONE or p[best] < model.threshold or best not in library:
+    if best == NONE or p[best] < model.threshold:
         return parse
+    return add_step(parse, library, vocabulary, best, p[best])
+
+
+def add_step(parse: Parse, library: Library, vocabulary: Vocabulary, step: str, probability: float) -> Parse:
+    """The parse with the frame ``step`` (Heat, Cool, Clean) of the thing it places added before its Place
+    (:func:`eligible`, :func:`step_at`), marked inferred with ``probability``; unchanged when the parse is not
+    eligible or the library lacks the frame."""
+    at = eligible(parse)
+    if at is None or step not in library:
+        return parse
+    place = parse.frames[at]
+    theme = place.elements["theme"]
+    best = step
     frame = library.frame(best)
     role = next((e.role for e in frame.elements if e.role == "theme"), None)
     if role is None:
@@ -239,9 +252,9 @@ def infer_step(parse: Parse, library: Library, vocabulary: Vocabulary, model: St
     before = step_at(parse, at)
     if before != at:
         elements[role] = moved_phrase(parse.frames[before].elements["goal"], before)
-    step = Evoked(best, unit, parse.frames[before].span, elements, inferred=round(p[best], 3))
+    added = Evoked(best, unit, parse.frames[before].span, elements, inferred=round(probability, 3))
     frames = [shifted(f, before) for f in parse.frames]
-    return replace(parse, frames=(*frames[:before], step, *frames[before:]))
+    return replace(parse, frames=(*frames[:before], added, *frames[before:]))
 
 
 def shifted(frame: Evoked, at: int) -> Evoked:

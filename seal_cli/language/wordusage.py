@@ -53,6 +53,7 @@ from seal_cli.language.morphology import noun_lemma
 from seal_cli.language.slicing import KINDS, SliceModel
 from seal_cli.language.stacking import StackModel
 from seal_cli.language.steps import NONE, STEPS, StepModel
+from seal_cli.language.tasks import TASKS, TaskModel
 
 __all__ = ["CONTEXT_PRIOR", "CONTEXT_WEIGHT", "FORMAT", "MIN_RATIO", "MIN_SUPPORT", "SHIPPED", "WordUsage",
            "context_words", "load_word_usage", "shipped_word_usage", "unsaid_wording"]
@@ -139,6 +140,9 @@ class WordUsage:
     goals: GoalModel = field(default_factory=GoalModel)
     """Where a sentence that handles a thing and puts it nowhere most likely means it put
     (:mod:`~seal_cli.language.goals`); empty: no goal is inferred."""
+    tasks: TaskModel = field(default_factory=TaskModel)
+    """Which task kind a sentence describes, and the frame a kind adds when the parse lacks it
+    (:mod:`~seal_cli.language.tasks`); empty: none is added."""
     scenery: frozenset[str] = frozenset()
     """Class keys of the scenes the statistics were counted in that no count is of (ALFRED's ``faucet``):
     a vocabulary of these and :attr:`universe` is one the unsaid step and stack may be inferred in."""
@@ -192,6 +196,8 @@ class WordUsage:
                                     self.slices.classes | other.slices.classes, self.slices.threshold),
                          GoalModel(add({"": self.goals.prior}, {"": other.goals.prior}).get("", {}),
                                    add(self.goals.weights, other.goals.weights), self.goals.threshold),
+                         TaskModel(add({"": self.tasks.prior}, {"": other.tasks.prior}).get("", {}),
+                                   add(self.tasks.weights, other.tasks.weights), self.tasks.threshold),
                          self.scenery | other.scenery, add(self.scene_weights, other.scene_weights))
 
     def names_one(self, lemmas: tuple[str, ...]) -> bool:
@@ -213,7 +219,7 @@ class WordUsage:
         """These counts with the sentence not weighed (the wording alone decides)."""
         return WordUsage(self.counts, self.universe, self.sources, self.min_support, self.min_ratio, self.seen,
                          number=self.number, steps=self.steps, stacks=self.stacks, slices=self.slices,
-                         goals=self.goals, scenery=self.scenery)
+                         goals=self.goals, tasks=self.tasks, scenery=self.scenery)
 
     def scene_factor(self, keys: Iterable[str], present: Iterable[str]) -> dict[str, float]:
         """For each class key, how much a scene holding the class keys ``present`` favours it:
@@ -442,7 +448,8 @@ def _table(data: Any, where: Where) -> WordUsage:
     return WordUsage(counts, universe, (str(data.get("source", where.file)),), seen=seen, context=context,
                      class_context=class_context, number=number, weights=weights, steps=_steps(data, where),
                      stacks=_stacks(data, universe, where), slices=_slices(data, universe, where),
-                     goals=_goals(data, universe, where), scenery=_scenery(data, where), scene_weights=scene_weights)
+                     goals=_goals(data, universe, where), tasks=_tasks(data, where), scenery=_scenery(data, where),
+                     scene_weights=scene_weights)
 
 
 def _steps(data: dict[str, Any], where: Where) -> StepModel:
@@ -515,6 +522,17 @@ def _goals(data: dict[str, Any], universe: frozenset[str], where: Where) -> Goal
                         "number}", where)
     return GoalModel(prior, {str(f): {(c if c == NOWHERE else class_key(c)): float(v) for c, v in by.items()}
                              for f, by in raw.items()})
+
+
+def _tasks(data: dict[str, Any], where: Where) -> TaskModel:
+    """The task model of a table (``task_prior``: {task kind: count}, ``task_weights``: {feature: {task kind: w}})."""
+    prior = data.get("task_prior", {})
+    if not _word_counts(prior) or not set(prior) <= set(TASKS):
+        raise SealError(f"\"task_prior\" must map each of {', '.join(TASKS)} to a positive count", where)
+    raw = data.get("task_weights", {})
+    if not _weight_table(raw, lambda k: k in TASKS):
+        raise SealError("\"task_weights\" must map each feature to {task kind: finite number}", where)
+    return TaskModel(prior, {str(f): {k: float(v) for k, v in by.items()} for f, by in raw.items()})
 
 
 def _weight_table(table: Any, known: Callable[[Any], bool]) -> bool:

@@ -1,0 +1,185 @@
+"""The task a sentence describes, learned on a train split, and the frame a task adds when the parse lacks it.
+
+ALFRED's people wrote one sentence for each task they watched, of seven kinds (look at a thing in a lamp's
+light, put a thing somewhere, two things, a thing in a container, a thing heated, cooled or cleaned first).
+What kind of task a sentence describes is carried by its words and by what the parse made of them, not
+only by its frames: "take a clock from a desk with a *lit* lamp", "turn *off* the floor lamp while holding a
+credit card", "hold a watch up under the lamp light" all describe looking at the thing under a lamp, yet no
+LookAt is said and no lamp is switched on. A :class:`TaskModel` holds a conditional logistic regression (the
+chooser's, :mod:`seal_cli.language.chooser`) over the task kinds:
+
+    P(task | sentence) ∝ prior(task) · exp(Σ_f weight[f][task])
+
+with the features of :func:`task_features` (the sentence's words, the frames the parse says, the class of
+the thing it handles and of where it puts it, how many Places it says). It is fitted by
+``scripts/build_word_classes.py`` on ALFRED's train goals (each sentence parsed with nothing inferred, the
+label its task's type) and shipped in the word-class table (``task_prior``, ``task_weights``).
+
+**What a task adds** is a table, :data:`ADDERS` (task → the function that adds its frame), used when the kind's
+probability is at least :data:`THRESHOLD`, the frame marked ``Evoked.inferred`` with it. A look task: a parse that
+handles one grounded thing and says no look, no lamp switched on and no step (:func:`unlooked`) gets a LookAt of
+that thing after its last frame, its instrument the light the sentence names, else the room's lamp
+(:func:`add_look`). A heating, cooling or cleaning task: a parse that places one thing and says no step gets the
+step before its Place (:func:`~seal_cli.language.steps.add_step`, as the step model adds one). The other kinds
+were measured and have no adder (``docs/language.md``, "This round (alfred15)"): a container or a second thing
+the sentence does not name cannot be added, and a step the parse already says is never dropped.
+
+**Scoped and marked** as the unsaid step is (:mod:`seal_cli.language.steps`): only where every class of the
+vocabulary is one the statistics know (``Vocabulary.task_model``); ``parse_command(..., infer_steps=False)``
+turns it off.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Iterable, Mapping
+from dataclasses import dataclass, field, replace
+from functools import partial
+from types import MappingProxyType
+from typing import TYPE_CHECKING
+
+from seal_cli.frames.taxonomy import class_key
+from seal_cli.language.chooser import logits
+from seal_cli.language.steps import add_step
+from seal_cli.language.values import Evoked, Parse, Phrase
+
+if TYPE_CHECKING:
+    from seal_cli.frames.library import Library
+    from seal_cli.language.grounding import Vocabulary
+
+__all__ = ["ADDERS", "LOOK", "TASKS", "THRESHOLD", "TaskModel", "add_look", "infer_task", "task_features",
+           "unlooked"]
+
+LOOK = "look_at_obj_in_light"
+TASKS = ("look_at_obj_in_light", "pick_and_place_simple", "pick_and_place_with_movable_recep",
+         "pick_clean_then_place_in_recep", "pick_cool_then_place_in_recep", "pick_heat_then_place_in_recep",
+         "pick_two_obj_and_place")
+"""ALFRED's task kinds, the model's classes."""
+THRESHOLD = 0.7
+"""The least probability at which a task's frame is added (chosen on held-out train, ``scripts/build_word_classes.py
+--dev 0.2 --task-threshold ...``)."""
+HANDLING = ("Pick", "Place", "Bring", "Give")
+"""Frames whose theme is a thing the sentence handles."""
+BLOCKING = frozenset(("LookAt", "Heat", "Cool", "Clean", "Slice"))
+"""Frames whose presence means the sentence said what is done to the thing (or that it looks)."""
+LIGHT = "light"
+"""The taxonomy's category of the things a LookAt's light is (its ``instrument``)."""
+LAMP = "lamp"
+"""The class name a look's light is grounded by when the sentence names no light (the LookAt frame's "in the
+light of a lamp"), as a frame's default is (:meth:`~seal_cli.language.grounding.Vocabulary.ground_name`): in a
+room, its lamp."""
+
+
+def task_features(words: Iterable[str], parse: Parse) -> tuple[str, ...]:
+    """The features of a parsed sentence: ``w:`` each of its words
+    (:func:`~seal_cli.language.wordusage.context_words`), ``f:`` each frame it says (none inferred), ``o:`` the class
+    key of the first thing it handles, ``r:`` of the goal of its last Place, ``p:`` how many Places it says (0, 1,
+    2 or more)."""
+    out = {f"w:{w}" for w in words}
+    said = [f for f in parse.frames if f.inferred is None]
+    out.update(f"f:{f.frame}" for f in said)
+    things = [parse.resolve(f.elements["theme"]).cls for f in said if "theme" in f.elements]
+    thing = next((c for c in things if c), None)
+    if thing:
+        out.add(f"o:{class_key(thing)}")
+    places = [f for f in said if f.frame == "Place"]
+    goal = parse.resolve(places[-1].elements["goal"]).cls if places and "goal" in places[-1].elements else None
+    if goal:
+        out.add(f"r:{class_key(goal)}")
+    out.add(f"p:{min(len(places), 2)}")
+    return tuple(sorted(out))
+
+
+@dataclass(frozen=True)
+class TaskModel:
+    """``prior[task]``: how often each task kind was a train sentence's; ``weights[feature][task]``: the fitted
+    weights; ``threshold``: the least probability at which a task's frame is added. Empty: none is."""
+
+    prior: Mapping[str, int] = field(default_factory=dict)
+    weights: Mapping[str, Mapping[str, float]] = field(default_factory=dict)
+    threshold: float = THRESHOLD
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "prior", MappingProxyType(dict(self.prior)))
+        object.__setattr__(self, "weights", MappingProxyType({f: MappingProxyType(dict(by))
+                                                              for f, by in self.weights.items()}))
+
+    def __bool__(self) -> bool:
+        return any(self.prior.get(t) for t in ADDERS)
+
+    def probabilities(self, features: Iterable[str]) -> dict[str, float]:
+        """P(task | features) for each task kind the prior knows."""
+        keys = [k for k in TASKS if self.prior.get(k)]
+        z = logits(self.weights, keys, features)
+        scores = {k: math.log(self.prior[k]) + z[k] for k in keys}
+        top = max(scores.values(), default=0.0)
+        total = sum(math.exp(v - top) for v in scores.values())
+        return {k: math.exp(v - top) / total for k, v in scores.items()}
+
+
+def _light(library: Library, phrase: Phrase | None) -> bool:
+    return phrase is not None and phrase.cls is not None and library.taxonomy.is_a(phrase.cls, LIGHT) is True
+
+
+def unlooked(parse: Parse, library: Library) -> Phrase | None:
+    """The thing a parse handles when a look could be what it leaves unsaid: it handles one grounded thing (the
+    themes of Pick, Place, Bring, Give; no coordination), and says no look, no step, no cutting and no light
+    switched on; else None."""
+    frames = parse.frames
+    if any(f.frame in BLOCKING for f in frames):
+        return None
+    if any(f.frame == "ToggleOn" and _light(library, parse.resolve(f.elements.get("theme") or Phrase(None, "")))
+           for f in frames):
+        return None
+    handled = [f.elements["theme"] for f in frames if f.frame in HANDLING and "theme" in f.elements]
+    classes = {parse.resolve(p).cls for p in handled}
+    if len(classes) != 1 or None in classes or any(parse.resolve(p).conjuncts for p in handled):
+        return None
+    return handled[0]
+
+
+def add_look(parse: Parse, library: Library, vocabulary: Vocabulary, probability: float) -> Parse:
+    """The parse with a LookAt of the thing it handles after its last frame (:func:`unlooked`), its instrument the
+    first light the sentence names (a lamp switched off, "a *lit lamp*"), else the vocabulary's lamp (:data:`LAMP`,
+    a default: nobody said it), marked inferred; else unchanged."""
+    thing = unlooked(parse, library)
+    if thing is None or "LookAt" not in library:
+        return parse
+    elements = {"theme": thing}
+    lights = [p for f in parse.frames for p in f.elements.values() if _light(library, parse.resolve(p))]
+    lamp = vocabulary.ground_name(LAMP)
+    if lights:
+        elements["instrument"] = lights[0]
+    elif lamp is not None:
+        elements["instrument"] = Phrase(None, LAMP, lamp, default=True)
+    unit = library.frame("LookAt").lexical_units[0].text
+    look = Evoked("LookAt", unit, parse.frames[-1].span, elements, inferred=round(probability, 3))
+    return replace(parse, frames=(*parse.frames, look))
+
+
+def _stepped(step: str, parse: Parse, library: Library, vocabulary: Vocabulary, probability: float) -> Parse:
+    """The parse with ``step`` added before the Place of the one thing it places, when it says no step
+    (:func:`~seal_cli.language.steps.add_step`)."""
+    return add_step(parse, library, vocabulary, step, probability)
+
+
+STEP_OF = MappingProxyType({"pick_heat_then_place_in_recep": "Heat", "pick_cool_then_place_in_recep": "Cool",
+                            "pick_clean_then_place_in_recep": "Clean"})
+"""The step frame of each task kind that has one."""
+ADDERS: Mapping[str, Callable[[Parse, Library, Vocabulary, float], Parse]] = MappingProxyType(
+    {LOOK: add_look, **{kind: partial(_stepped, step) for kind, step in STEP_OF.items()}})
+"""Task kind → what adds its frame to a parse that lacks it (the kinds with none add nothing)."""
+
+
+def infer_task(parse: Parse, library: Library, vocabulary: Vocabulary, model: TaskModel,
+               words: Iterable[str]) -> Parse:
+    """The parse with its most probable task's frame added when the model is sure enough and the task has an adder
+    (:data:`ADDERS`); else the parse unchanged."""
+    if not model or not parse.frames:
+        return parse
+    p = model.probabilities(task_features(words, parse))
+    best = max(p, key=lambda k: p[k])
+    adder = ADDERS.get(best)
+    if adder is None or p[best] < model.threshold:
+        return parse
+    return adder(parse, library, vocabulary, p[best])
