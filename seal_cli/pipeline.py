@@ -22,7 +22,6 @@ from collections.abc import Callable, Sequence
 from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
-from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding
 from seal_cli.frames.reading import standard_library
@@ -136,19 +135,6 @@ def _inferred_act(frame: Any) -> str:
     return f"{frame.lexical_unit} it first"
 
 
-def _told(problem: Any, library: Library) -> dict[str, tuple[str, ...]]:
-    """Where the command's words say each thing is, by class: :func:`~seal_cli.sefm.relations.said_where` of
-    its plan ("bring me a beer from the fridge" is got by a Pick from the fridge). On a map whose objects the
-    robot does not know, a frame's source can only be what was said."""
-    from seal_cli.sefm.relations import said_where
-
-    try:
-        steps = [step.binding for step in planning.plan(list(problem.commanded), library, problem.state).steps]
-    except SealError:
-        return {}                         # the robot says why it cannot plan, as it starts
-    return {problem.state.class_of(k): v for k, v in said_where(steps).items()}
-
-
 def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.random.Generator,
                holding: str | None = None, done: Sequence[str] = (), vocabulary: Any = None,
                budget: Budget | None = None, observers: Sequence[Callable[[Record], None]] = (),
@@ -166,7 +152,8 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
     for a kind of thing the map has a prior of ends, not found, once less than ``search_end`` of that
     prior is left unsearched (:mod:`seal_cli.sim.unsearched`; None: only the budget ends it). Where the
     command says a thing is ("a beer from the fridge": the robot knows no object, so a frame's source is
-    the speaker's word) is evidence the search weighs (:attr:`Agent.told <seal_cli.sim.agent.Agent.told>`).
+    the speaker's word) is evidence the search weighs (:attr:`Agent.told <seal_cli.sim.agent.Agent.told>`, read
+    off the robot's own first plan).
     """
     from seal_cli.maps.model import Robot
     from seal_cli.planning.grounding import MapNames
@@ -190,7 +177,7 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
     agent = Agent(scene_from_map(m, library), library, policy, rng=rng, budget=budget, observers=observers,
                   classes=problem.state.classes, sweeper=lambda: make_policy("coverage"), questions=questions,
                   clock=clock, search_end=search_end, put_away=kept, put_back=problem.put_back,
-                  told=_told(problem, library), names=problem.names)
+                  heed_sources=True, names=problem.names)
     executed = [b for p in parses[:-1] for b in build_problem(p, library, map=m.known()).commanded]
     warnings = [*problem.warnings, *unchecked_conditions(parses[-1])]
     for warning in warnings:

@@ -1,5 +1,6 @@
 """A take verb said alone that means go, get the thing and bring it back: "fetch the remote" is Bring it to
-the speaker, not Pick it up and stop there.
+the speaker, not Pick it up and stop there; and a bringing said with no one and nowhere to bring to ("bring the
+remote", "bring the remote from the kitchen") brings it to the speaker too, not down beside where it lay.
 
 Which units mean so is data (``fetching.tsv`` beside this module, written by ``scripts/build_fetching_units.py``
 from PropBank's links to FrameNet: ``fetch.01`` "bring (back)" links Bringing alone, where ``take.01``,
@@ -43,12 +44,20 @@ def _used_later(index: int, theme: Phrase, later: Sequence[Evoked]) -> bool:
                for e in later for p in _phrases(e))
 
 
+def _said_where_to(evoked: Evoked) -> bool:
+    """Whether a frame says whom or where the thing goes to (its recipient or goal, said, not a default)."""
+    return any(r in ("recipient", "goal") and not p.default for r, p in evoked.elements.items())
+
+
 def brought(frames: Sequence[Evoked], library: Library) -> tuple[Evoked, ...]:
     """The frames with each fetch said alone made a bringing to the speaker."""
     names = {f.name for f in library.frames}
+    bringing = set(fetching_units().values())
     out = list(frames)
     for i, evoked in enumerate(frames):
         means = fetching_units().get((evoked.lexical_unit, evoked.frame))
+        if means is None and evoked.frame in bringing and not _said_where_to(evoked):
+            means = evoked.frame        # "bring the remote": a bringing said with no one and nowhere to bring to
         theme = evoked.elements.get("theme")
         if means is None or means not in names or theme is None or theme.default or evoked.inferred is not None \
                 or _used_later(i, theme, frames[i + 1:]):

@@ -306,7 +306,10 @@ class MapNames:
             return Refusal(f"the {self.map.name} has no {what}; its rooms are {rooms}")
         if self.is_fixed_word(text, cls):
             places = ", ".join(p.name for p in self.map.places) or "none"
-            return Refusal(f"the {self.map.name} has no {what}; its places are {places}")
+            like = [p.name for p in self.map.places if cls and class_key(p.cls) == class_key(cls)
+                    and set(class_words(cls)) & set(what.split())]   # "the tv": a tv stand, not a guess's table
+            only = f" (only {' and '.join(like)}, a {spoken(cls)})" if like and cls and what != spoken(cls) else ""
+            return Refusal(f"the {self.map.name} has no {what}{only}; its places are {places}")
         return None
 
     def where_said(self, text: str) -> str | None:

@@ -148,7 +148,7 @@ class Agent:
                  search_end: float | None = None,
                  put_away: Mapping[Binding, Callable[[str | None], str | None]] | None = None,
                  put_back: Iterable[Binding] = (), told: Mapping[str, Sequence[str]] | None = None,
-                 names: Mapping[str, str] | None = None) -> None:
+                 names: Mapping[str, str] | None = None, heed_sources: bool = False) -> None:
         self.scene = scene
         self.world = scene.world
         self.grid = scene.grid
@@ -197,8 +197,17 @@ class Agent:
         """Where the command's words say each thing is, by class ("a beer from the fridge": beer → fridge_1;
         :func:`~seal_cli.sefm.relations.said_where`): looked at first (the search's beliefs are conditioned on
         it; the whole-house search for what nothing else places starts there)."""
+        self.heed_sources = heed_sources
+        """Whether to read :attr:`told` off the first plan it makes (``seal run``: the robot knows no object, so a
+        frame's source can only be the speaker's word); off where a frame's source is the grounded truth (the
+        benchmarks' scenes), and where :attr:`told` is given."""
         self.missed: set[str] = set()
+        self.unfound: set[str] = set()
+        """Kinds of thing the command said the one sought is in or on, searched for without finding one."""
         """Places the command said a thing was in, looked into without finding it (said once)."""
+        self.missed_rooms: set[tuple[str, str]] = set()
+        """(class, room) for each room the command said a thing was to be taken from, looked all over without
+        finding one: the search widens to the rest of the house (:meth:`source_room` no longer bounds it)."""
         self.names: dict[str, str] = {class_key(p.name): p.name for p in getattr(scene.map, "people", ())}
         self.names |= {class_key(k): v for k, v in (names or {}).items() if class_key(k) != SPEAKER}
         """How each person is said, by id: as the map writes them, or the command names them ("goes to Raj")."""
@@ -450,6 +459,10 @@ class Agent:
             self.say("fail", f"cannot plan: {error.message}")
             return self._result(False, f"cannot plan: {error.message}", [], why=Reason.CANNOT)
         self.steps, self.index = steps, 0
+        if self.heed_sources and not self.told:
+            from seal_cli.sefm.relations import said_where
+
+            self.told = {self.class_of(k): v for k, v in said_where(steps).items()}
         plan = [str(b) for b in steps]
         self.say("plan", "plan: " + ", ".join(plan) if plan else "nothing to do", plan=plan)
         for binding in todo:        # a goal chosen before the robot has seen the thing: said as such
@@ -604,11 +617,16 @@ class Agent:
 
     def source_room(self, binding: Binding, role: str | None) -> Any:
         """The room a frame that picks its theme up takes it from, when its source names a room
-        ("bring me a cup from the kitchen": Pick(cup, source=kitchen)); else None."""
+        ("bring me a cup from the kitchen": Pick(cup, source=kitchen)), until the robot has looked all over
+        it without finding one (:attr:`missed_rooms`: then any will do, as for a place said); else None."""
         if role != "theme" or not any(a.name == "pick" for a in binding.actions):
             return None
         source = binding.elements.get("source")
-        return self.room(source) if source else None
+        room = self.room(source) if source else None
+        theme = binding.elements.get("theme")
+        if room is None or theme is None or (self.class_of(theme), room.name) in self.missed_rooms:
+            return None
+        return room
 
     def look_into(self, place: str, value: str, binding: Binding, role: str | None, why: str) -> None:
         """Go within reach of a place, open it if it is shut, and look; closed again when what was sought
@@ -633,10 +651,41 @@ class Agent:
         for where in self.told.get(self.class_of(value), ()):
             if self._is_place(where):
                 out.append(where)
-            elif self.room(where) is None:
-                out += sorted(k.id for k in self.known.values() if not k.movable and k.cls == where
-                              and self._is_place(k.id))
+            elif self.room(where) is None:      # a kind of place, or of thing ("the lid off the pan"): those seen
+                out += sorted(k.id for k in self.known.values() if k.cls == where and k.id in self.world.items
+                              and (self._is_place(k.id) or k.movable and not self.world.held_chain(k.id)))
         return [p for p in out if p in self.known]
+
+    def said_things(self, value: str) -> list[str]:
+        """The kinds of thing (not place) the command says a thing of this kind is in or on ("take the lid off the
+        frying pan": frying_pan), that the robot's perception knows, has seen none of and has not given up on."""
+        return [w for w in self.told.get(self.class_of(value), ()) if self.room(w) is None and not self._is_place(w)
+                and w not in self.unfound and self.recognises(w) and not self.instances(w)
+                and not any(k.cls == w and not k.movable for k in self.known.values())]
+
+    def look_where_said(self, value: str, binding: Binding) -> Outcome | None:
+        """Before searching on its own: into a thing the command said the one sought is in or on, once seen
+        (:meth:`said_places`), or a search for such a thing first, while none is seen (it then looks into it).
+        An Outcome (None: looked) when it did something; False-y when there is nothing said to look at."""
+        role = next((r for r, v in binding.values if v == value), None)
+        things = [p for p in self.said_places(value) if self.world.items[p].movable and p not in self.inspected
+                  and p not in self.unreachable]
+        if things:
+            self.say("search", f"looks for {self.said(value)} where the command said: {things[0]}", target=value)
+            self.look_into(things[0], value, binding, role, f"goes to {things[0]}")
+            if things[0] not in self.inspected:
+                self.unreachable.add(things[0])
+            return Outcome(True, "looked")
+        for kind in self.said_things(value):
+            self.say("search", f"looks for the {spoken(kind)} first, where the command said the {self.said(value)} "
+                     "is", target=kind)
+            while not self.instances(kind):
+                ended = self.look_once(kind, binding)
+                if ended is not None or self.exhausted() is not None:
+                    self.unfound.add(kind)
+                    break
+            return Outcome(True, "looked")
+        return None
 
     def missed_where_said(self, value: str) -> None:
         """Say once, per place, that the thing sought is not where the command said it was, once the robot
@@ -648,6 +697,28 @@ class Agent:
                 on = "in" if self.world.hollow(item) else "on"
                 self.say("search", f"no {self.said(value)} {on} {place}, where the command said it was; "
                          "looks elsewhere", target=value)
+                self.withdraw(value, place)
+
+    def withdraw(self, value: str, where: str) -> None:
+        """Take back the command's word that a thing of this kind is at ``where`` (a room, a place, a thing), once
+        the robot has looked there without finding it: the search goes on from the map's own prior and what the
+        robot has seen (a policy that conditions its beliefs on :attr:`told` rebuilds them)."""
+        key = self.class_of(value)
+        item = self.world.items.get(where)
+        dropped = {where, class_key(where)} | ({item.key} if item is not None and item.movable else set())
+        left = tuple(w for w in self.told.get(key, ()) if w not in dropped)
+        if key in self.told:
+            self.told = {**{k: v for k, v in self.told.items() if k != key}, **({key: left} if left else {})}
+
+    def _not_where_said(self, thing: str, lay: str | None) -> str:
+        """" (not in tool_chest_1, where the command said it was)" when the robot takes a thing from elsewhere than
+        the places the command said it was in (seen on the way, before it looked there), and had not said so."""
+        said = self.said_places(self.world.items[thing].key)
+        if lay is None or not said or lay in said or all(p in self.missed for p in said):
+            return ""
+        self.missed.update(said)
+        on = "in" if self.world.hollow(self.world.items[said[0]]) else "on"
+        return f" (not {on} {' or '.join(said)}, where the command said it was)"
 
     def look_in(self, room: Any, value: str, binding: Binding, role: str | None) -> Outcome | None:
         """Look for a thing in the room it is to be taken from, until one of its kind is known there:
@@ -670,8 +741,8 @@ class Agent:
             place = self.nearest(closed) if closed else None
             if place is None:
                 seen = " (it sees all of it from where it is)" if len(self.looks) == start else ""
-                return Fatal(False, f"no {self.said(value)} in the {room.name.replace('_', ' ')}{seen}",
-                             Reason.NOT_FOUND, value)
+                return Fatal(False, f"no {self.said(value)} in the {room.name.replace('_', ' ')}, where the command "
+                             f"said it was{seen}", Reason.NOT_FOUND, value)
             self.look_into(place, value, binding, role, f"goes to {place}")
             if place not in self.opened:  # out of reach, or it would not open: not tried again
                 self.unreachable.add(place)
@@ -824,7 +895,11 @@ class Agent:
                 return self.into_room(room, value)
             if (source := self.source_room(binding, role)) is not None and self.sweeper is not None:
                 if (ended := self.look_in(source, value, binding, role)) is not None:
-                    return ended
+                    if ended.reason is not Reason.NOT_FOUND:
+                        return ended
+                    self.missed_rooms.add((self.class_of(value), source.name))   # the speaker was wrong: widen
+                    self.withdraw(value, source.name)
+                    self.say("search", f"{ended.message}; looks elsewhere", target=value)
                 continue
             self.missed_where_said(value)
             if (ended := self.look_once(value, binding)) is not None:
@@ -867,6 +942,8 @@ class Agent:
     def look_once(self, value: str, binding: Binding) -> Outcome | None:
         """One look for a thing of kind ``value``: go to the view the policy chooses, open what it
         says to open, and look. An Outcome when the search must stop instead."""
+        if self.told and self.look_where_said(value, binding) is not None:
+            return None
         if not self.recognises(value):
             if self.sweeper is None:
                 return Fatal(False, f"cannot recognise {value!r}: no class it knows is called that",
@@ -904,15 +981,17 @@ class Agent:
         once the house has been searched."""
         role = next((r for r, v in binding.values if v == value), None)
         said = [p for p in self.said_places(value) if p not in self.inspected and p not in self.unreachable]
-        if self.sweep is None and said:      # nothing tells where to look but the command: there first
+        if said and not self.world.items[said[0]].movable and self.sweep is None:   # the command's place first
             self.say("search", f"looks for {self.said(value)} where the command said: {said[0]}", target=value)
             self.look_into(said[0], value, binding, role, f"goes to {said[0]}")
             if said[0] not in self.inspected:
                 self.unreachable.add(said[0])
             return None
-        if self.sweep is None:
-            self.sweep = [*self.room_tour(self.scene.map.rooms), _Rest(self.scene.map.rooms)]
-            self.swept = []
+        if self.sweep is None:      # a room said and looked all over already is not looked over again
+            done = [r for r in self.scene.map.rooms if (self.class_of(value), r.name) in self.missed_rooms]
+            rooms = [r for r in self.scene.map.rooms if r not in done]
+            self.sweep = [*self.room_tour(rooms), _Rest(self.scene.map.rooms)]
+            self.swept = [(r.name.replace("_", " "), Outcome(True, "looked all over")) for r in done]
         if not self.sweep:
             return Fatal(False, self._swept_house(value), Reason.NOT_FOUND, value)
         region = self.sweep.pop(0)
@@ -1359,6 +1438,8 @@ class Agent:
         at_hand = {k.id for k in self.known.values() if not k.movable and self.world.items[k.id].is_open
                    and self.world.within_reach(k.id, pose)}
         self.inspected |= at_hand
+        self.inspected |= {k.id for k in self.known.values() if k.movable and k.id in self.world.items   # a thing
+                           and self.world.items[k.id].is_open and self.world.within_reach(k.id, pose)}  # looked at
         if self.unsearched:
             region = self.world.sensor.region(pose)
             seen = region.contains(self.scene.map.free_centres)
@@ -1413,6 +1494,7 @@ class Agent:
         outcome = self.world.act(action.name, *args)
         if outcome.ok and action.name == "pick":
             self.picked_from[args[0]] = lay
+            outcome = replace(outcome, message=outcome.message + self._not_where_said(args[0], lay))
         if outcome.reason is Reason.INSIDE_CLOSED and outcome.about is not None:
             self.open_to_look(outcome.about)
             outcome = self.world.act(action.name, *args)

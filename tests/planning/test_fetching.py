@@ -27,6 +27,17 @@ def test_fetch_said_alone_brings_the_thing_to_the_speaker(library: Library) -> N
     assert steps("fetch the mug for raj", library)[-1] == "Bring(theme=mug, recipient=raj)"
 
 
+def test_a_bringing_said_with_no_one_and_nowhere_to_bring_to_brings_it_to_the_speaker(library: Library) -> None:
+    """"Bring the remote (from the kitchen)": before e2e16 the robot picked it up and put it down where it stood."""
+    assert steps("bring the remote", library) == ["Pick(theme=remote, source=sofa_1)",
+                                                  "Bring(theme=remote, recipient=me)"]
+    assert steps("bring the remote from the kitchen", library)[-1] == \
+        "Bring(theme=remote, recipient=me, source=kitchen)"
+    assert steps("bring the remote to the kitchen", library)[-1] == "Bring(theme=remote, goal=kitchen)"
+    assert steps("bring the remote to raj", library)[-1] == "Bring(theme=remote, recipient=raj)"
+    assert steps("bring the mug and put it in the sink", library)[-1] == "Place(theme=mug, goal=sink_1)"
+
+
 def test_a_later_frame_that_does_anything_with_the_thing_keeps_the_fetch_a_pick(library: Library) -> None:
     put = steps("fetch the mug and put it in the sink", library)
     assert put == ["Pick(theme=mug)", "Place(theme=mug, goal=sink_1)"]

@@ -113,6 +113,9 @@ def test_a_thing_acted_on_is_named_by_its_head_not_by_the_first_words_of_a_place
     with pytest.raises(SealError, match="the apartment has no tv") as caught:
         steps("turn off the tv", library)
     assert caught.value.column == 10
+    assert "the apartment has no tv (only tv_stand_1, a tv stand); its places are" in caught.value.message
+    with pytest.raises(SealError, match=r"no tv \(only tv_stand_1"):    # said in its room: the same (e2e16)
+        steps("turn off the tv in the living room", library)
     assert steps("go to the tv", library) == ["Go(goal=tv_stand_1)"]
 
 

@@ -238,7 +238,7 @@ class SeFMPolicy(Policy):
 
         bindings = [b.frame.bind({r: v if agent.is_person(v) else agent.class_of(v) for r, v in b.values})
                     for b in agent.steps]     # a person of the map is where they stand, not any person
-        key = tuple(str(b) for b in bindings)
+        key = (*(str(b) for b in bindings), *(f"{k}: {v}" for k, v in agent.told.items()))   # the word, withdrawn
         if self.sefm is None or key != self.key:
             state = self._state(agent)
             self.sefm = SeFM(self.map, bindings, state, agent.rng,
