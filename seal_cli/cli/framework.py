@@ -36,6 +36,31 @@ app.add_typer(bench_app, name="bench")
 F = TypeVar("F", bound=Callable[..., Any])
 
 
+def _readable_usage_errors() -> None:
+    """typer's usage errors (a bad option value, an unknown command, extra arguments) print their values whole:
+    an integer of 5,000 digits or an argument of 100,000 letters filled the screen. Each is printed cut as seal's
+    own messages are (:func:`seal_cli.errors.readable`: a word past 200 characters, the whole past 3,000); the
+    exit code (2) and the usage line stay typer's. typer has no hook for this: its printer is wrapped."""
+    from typer import rich_utils
+
+    from seal_cli.errors import readable
+
+    printer = rich_utils.rich_format_error
+    if getattr(printer, "readable", False):
+        return
+
+    def cut(error: Any) -> None:  # a click exception (typer's own copy of click)
+        message = readable(error.format_message())
+        error.format_message = lambda: message
+        printer(error)
+
+    cut.readable = True  # type: ignore[attr-defined]
+    rich_utils.rich_format_error = cut  # type: ignore[assignment]
+
+
+_readable_usage_errors()
+
+
 def command(*args: Any, on: typer.Typer | None = None, **kwargs: Any) -> Callable[[F], F]:
     """``@app.command`` (or a command of the sub-app ``on``, e.g. ``bench_app``) that turns
     SealError into a message on stderr and exit code 1 (and the other failures

@@ -49,7 +49,17 @@ from numpy.typing import NDArray
 from seal_cli.errors import SealError, SealErrors, Where
 from seal_cli.fileio import LOADER, MAX_IMAGE_BYTES, read_bytes, read_text, yaml_problem
 from seal_cli.frames.taxonomy import class_key
-from seal_cli.maps.geometry import FREE, MAX_IMAGE_CELLS, OCCUPIED, UNKNOWN, OccupancyGrid, coarsened, shrink_factor
+from seal_cli.maps.geometry import (
+    FREE,
+    MAX_GRID_CELLS,
+    MAX_IMAGE_CELLS,
+    OCCUPIED,
+    UNKNOWN,
+    OccupancyGrid,
+    coarsened,
+    fit_cells,
+    shrink_factor,
+)
 from seal_cli.maps.model import Map, MapWarning, ObjectTruth, Person, Place, Robot, Room, Sensor
 from seal_cli.resources import map_path
 from seal_cli.yamlnodes import NodeReader
@@ -85,7 +95,7 @@ Path_ = tuple[str | int, ...]
 MAX_IMAGE_PIXELS = 16_384 * 16_384
 """The most pixels a binary PGM (P5) map image may have, checked from its header: 256 MiB at 8 bits, the file
 bound. Such an image is read a band of rows at a time, cropped to what it knows and, if still larger than
-:data:`~seal_cli.maps.geometry.MAX_IMAGE_CELLS`, coarsened to fit: a real ROS map (8,000 × 8,000 at 5 cm, most
+:data:`~seal_cli.maps.geometry.MAX_GRID_CELLS`, coarsened to fit: a real ROS map (8,000 × 8,000 at 5 cm, most
 of it unknown) is read in a few hundred megabytes, never as floats."""
 
 BAND = 4 * 2**20
@@ -214,7 +224,7 @@ class ImageCells:
 
 
 def _large_p5(levels: NDArray[Any], table: NDArray[np.int8]) -> ImageCells:
-    """The cells of a P5 image larger than :data:`MAX_IMAGE_CELLS`, a band of rows at a time: cropped to the
+    """The cells of a P5 image larger than :data:`MAX_GRID_CELLS`, a band of rows at a time: cropped to the
     rows and columns holding a known cell, then coarsened if still too large."""
     height, width = levels.shape
     rows = max(1, BAND // width)
@@ -230,7 +240,7 @@ def _large_p5(levels: NDArray[Any], table: NDArray[np.int8]) -> ImageCells:
     else:
         top, bottom, left, right = 0, height, 0, width
     window = levels[top:bottom, left:right][::-1]  # row 0 at the lowest y
-    factor = shrink_factor(window.shape[0], window.shape[1], MAX_IMAGE_CELLS)
+    factor = shrink_factor(window.shape[0], window.shape[1], MAX_GRID_CELLS)
     step = rows - rows % factor or factor
     parts = [coarsened(table[window[r:r + step]], factor) for r in range(0, window.shape[0], step)]
     return ImageCells(np.ascontiguousarray(np.concatenate(parts)), (left, height - bottom), factor, (width, height))
@@ -238,8 +248,9 @@ def _large_p5(levels: NDArray[Any], table: NDArray[np.int8]) -> ImageCells:
 
 def read_image_cells(path: Path, negate: bool = False, occupied_thresh: float = 0.65, free_thresh: float = 0.196,
                      mode: str = "trinary") -> ImageCells:
-    """The cells of a map_server image (:class:`ImageCells`); a binary PGM of more than
-    :data:`MAX_IMAGE_CELLS` pixels comes cropped to what it knows and coarsened to fit."""
+    """The cells of a map_server image (:class:`ImageCells`); an image of more than :data:`MAX_GRID_CELLS` pixels
+    comes cropped to what it knows and coarsened to fit (a binary PGM a band of rows at a time; a PNG or a text
+    PGM, decoded whole, only up to :data:`MAX_IMAGE_CELLS` pixels)."""
     if not path.exists():
         raise SealError(f"image {path.name} does not exist (looked for {path})")
     data = read_bytes(path, MAX_IMAGE_BYTES, "map image")
@@ -253,7 +264,7 @@ def read_image_cells(path: Path, negate: bool = False, occupied_thresh: float = 
         span = 65536 if maxval > 255 else 256
         table = _classify(np.arange(span, dtype=np.float64) * (255.0 / maxval), negate, occupied_thresh, free_thresh,
                           mode)
-        if width * height > MAX_IMAGE_CELLS:
+        if width * height > MAX_GRID_CELLS:
             return _large_p5(levels, table)
         return ImageCells(np.ascontiguousarray(table[levels][::-1]), size=(width, height))
     if data[:2] == b"P2":
@@ -267,7 +278,8 @@ def read_image_cells(path: Path, negate: bool = False, occupied_thresh: float = 
     cells = _classify(grey, negate, occupied_thresh, free_thresh, mode)
     if alpha is not None:
         cells[alpha < 1.0] = UNKNOWN  # a transparent pixel says nothing
-    return ImageCells(cells[::-1].copy(), size=(grey.shape[1], grey.shape[0]))
+    kept, corner, factor = fit_cells(cells[::-1].copy(), MAX_GRID_CELLS)
+    return ImageCells(kept, corner, factor, size=(grey.shape[1], grey.shape[0]))
 
 
 def read_image(path: Path, negate: bool = False, occupied_thresh: float = 0.65, free_thresh: float = 0.196,
@@ -447,8 +459,8 @@ class _Reader(NodeReader):
         if read.factor > 1:
             rows, cols = read.cells.shape
             self.problems.append(MapWarning(
-                f"the image is {width:,}×{height:,} pixels; its known part is more than {MAX_IMAGE_CELLS:,} cells "
-                f"(4096×4096), so seal merges {read.factor}×{read.factor} pixels into one cell: {cols:,}×{rows:,} "
+                f"the image is {width:,}×{height:,} pixels; its known part is more than {MAX_GRID_CELLS:,} cells "
+                f"(1024×1024), so seal merges {read.factor}×{read.factor} pixels into one cell: {cols:,}×{rows:,} "
                 f"cells of {resolution * read.factor:g} m (a wall anywhere in a cell keeps it occupied); crop the "
                 "image to the building to keep every pixel", self.where(nodes["image"])))
         return read.grid(resolution, tuple(origin + [0.0] * (3 - len(origin))))  # type: ignore[arg-type]

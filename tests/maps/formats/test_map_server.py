@@ -136,7 +136,7 @@ def test_a_large_mostly_unknown_image_is_cropped_to_what_it_knows(tmp_path: Path
     from seal_cli.bench.reliability_attacker import _pgm_pixels, sparse_pgm
     from seal_cli.maps.formats import map_server
 
-    monkeypatch.setattr(map_server, "MAX_IMAGE_CELLS", 200_000)  # the apartment's 112,000 pixels fit; 1,000² not
+    monkeypatch.setattr(map_server, "MAX_GRID_CELLS", 200_000)  # the apartment's 112,000 pixels fit; 1,000² not
     monkeypatch.setattr(map_server, "BAND", 10_000)  # many bands
     pixels, width, height = _pgm_pixels((maps_dir() / "apartment.pgm").read_bytes())
     small, large = load_map("apartment"), load_map(_apartment_in(tmp_path, sparse_pgm(1_000, 1_000, pixels, width,
@@ -153,7 +153,7 @@ def test_a_large_known_image_is_coarsened_with_a_warning_and_its_walls_kept(tmp_
                                                                            monkeypatch: pytest.MonkeyPatch) -> None:
     from seal_cli.maps.formats import map_server
 
-    monkeypatch.setattr(map_server, "MAX_IMAGE_CELLS", 250_000)
+    monkeypatch.setattr(map_server, "MAX_GRID_CELLS", 250_000)
     picture = np.full((1_000, 1_000), 254, dtype=np.uint8)  # free everywhere ...
     picture[:, 501] = 0  # ... but one wall a pixel thin, at an odd column
     image = b"P5\n1000 1000\n255\n" + picture.tobytes()
