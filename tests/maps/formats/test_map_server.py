@@ -196,6 +196,7 @@ def test_every_grid_of_a_map_has_at_most_max_grid_cells(tmp_path: Path) -> None:
         (tmp_path / "x.yaml").write_text(f"image: {name}\nresolution: 0.05\norigin: [0, 0, 0]\nname: a\n")
         m = load_map(tmp_path / "x.yaml")
         assert m.grid.resolution == 0.1 and [w for w in m.warnings if "merges 2×2 pixels" in w.message]
-    (tmp_path / "b.yaml").write_text("name: b\nbounds: [0, 0, 100, 100]\nrooms:\n  - {name: a, box: [0, 0, 100, 100]}\n")
+    (tmp_path / "b.yaml").write_text("name: b\nbounds: [0, 0, 100, 100]\nrooms:\n"
+                                     "  - {name: a, box: [0, 0, 100, 100]}\n")
     m = load_map(tmp_path / "b.yaml")
     assert m.grid.cells.size <= MAX_GRID_CELLS and m.grid.resolution > 0.05
