@@ -291,10 +291,10 @@ def hostile14_cases() -> Iterator[Case]:
     yield Case("A a fully known image of 5,000 × 5,000 pixels: run", ("run", "go to the kitchen", "--map", "b.yaml"),
                (("b.yaml", ("image: b.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n" + rooms).encode()),
                 ("b.pgm", b"P5\n5000 5000\n255\n" + known.tobytes())), codes=(0,), keep=("b.yaml", "b.pgm"),
-               says=r"b\.yaml:1:8: .*merges 5×5 pixels", timeout=90)
+               says=r"b\.yaml:1:8: .*merges 5×5 pixels")
     yield Case("A bounds of 100 m × 100 m, no image: run", ("run", "go to the kitchen", "--map", "b.yaml"),
                (("b.yaml", rooms.replace("250", "100").replace("125", "50").replace("200", "80").encode()),),
-               codes=(0,), keep=("b.yaml",), timeout=90)
+               codes=(0,), keep=("b.yaml",))
     empty = ("name: e\nbounds: [0, 0, 30, 30]\nrooms:\n  - {name: kitchen, box: [0, 0, 15, 30]}\n"
              "  - {name: hall, box: [15, 0, 30, 30]}\nrobot: {pose: [25, 15, 0]}\npriors:\n"
              "  cup: {kitchen: 0.5, hall: 0.5}\nobjects:\n  - {class: cup, at: [3, 3]}\n")
