@@ -283,6 +283,11 @@ def hostile14_cases() -> Iterator[Case]:
     yield Case("A --episodes with another suffix says JSONL or JSON", (
         "bench", "tasks", "--suite", "map", "--map", "m.yaml", "--layouts", "1", "--policies", "sefm", "--episodes",
         "m.yaml"), both, codes=(1,), keep=inputs, says=r"writes JSONL or JSON files")
+    yield Case("A bench parse: a second corpus's constants nested too deeply, before any is scored",
+               ("bench", "parse", "--corpus", "g.jsonl", "--corpus", "c.tsv", "--constants", "k.json"),
+               (("g.jsonl", b'{"command": "stir the cup"}\n'), ("c.tsv", b"put the cup in the sink\tx\n"),
+                ("k.json", b"[" * 100_000 + b"]" * 100_000)), codes=(1,),
+               says=r"\A(?![\s\S]*scoring)[\s\S]*k\.json: .*nested too deeply")
     known = np.full((5_000, 5_000), 254, dtype=np.uint8)  # a fully known image: free, walls round it and across
     known[[0, -1], :] = known[:, [0, -1]] = known[:, 2_500] = 0
     known[2_400:2_600, 2_500] = 254
