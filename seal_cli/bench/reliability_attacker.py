@@ -27,7 +27,7 @@ import numpy as np
 
 from seal_cli.bench.reliability import Case, hostile_setting
 
-__all__ = ["attacker_cases", "hostile14_cases", "sparse_pgm"]
+__all__ = ["attacker_cases", "hostile14_cases", "rgba_png", "sparse_pgm"]
 
 DIGITS = "1" * 5_000
 """An integer longer than Python converts from text (4,300 digits)."""
@@ -41,6 +41,23 @@ def sparse_pgm(width: int, height: int, patch: bytes, patch_width: int, patch_he
         start = (height - patch_height + r) * width
         rows[start:start + patch_width] = patch[r * patch_width:(r + 1) * patch_width]
     return f"P5\n{width} {height}\n255\n".encode() + bytes(rows)
+
+
+def rgba_png(side: int) -> bytes:
+    """A ``side`` × ``side`` RGBA PNG, white and opaque but for a black wall down the middle: small on disk, large
+    once decoded."""
+    import struct
+    import zlib
+
+    def chunk(kind: bytes, body: bytes) -> bytes:
+        return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body))
+
+    row = bytearray(b"\xff" * (4 * side))
+    row[4 * (side // 2):4 * (side // 2) + 3] = b"\x00\x00\x00"
+    packer = zlib.compressobj(9)
+    pixels = b"".join(packer.compress(b"\x00" + bytes(row)) for _ in range(side)) + packer.flush()
+    header = struct.pack(">IIBBBBB", side, side, 8, 6, 0, 0, 0)
+    return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", pixels) + chunk(b"IEND", b"")
 
 
 def _pgm_pixels(data: bytes) -> tuple[bytes, int, int]:
@@ -297,6 +314,10 @@ def hostile14_cases() -> Iterator[Case]:
                (("b.yaml", ("image: b.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n" + rooms).encode()),
                 ("b.pgm", b"P5\n5000 5000\n255\n" + known.tobytes())), codes=(0,), keep=("b.yaml", "b.pgm"),
                says=r"b\.yaml:1:8: .*merges 5×5 pixels")
+    yield Case("A a 4,096 × 4,096 RGBA PNG of 86 KB: validate", ("validate", "p.yaml"),
+               (("p.yaml", b"image: p.png\nresolution: 0.05\norigin: [0, 0, 0]\nname: p\n"),
+                ("p.png", rgba_png(4_096))),
+               codes=(1,), keep=("p.yaml", "p.png"), says=r"p\.yaml:1:8: .*merges 4×4 pixels")
     yield Case("A bounds of 100 m × 100 m, no image: run", ("run", "go to the kitchen", "--map", "b.yaml"),
                (("b.yaml", rooms.replace("250", "100").replace("125", "50").replace("200", "80").encode()),),
                codes=(0,), keep=("b.yaml",))

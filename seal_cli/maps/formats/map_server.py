@@ -171,22 +171,34 @@ def _check_cells(width: int, height: int, advice: str = "save it as a binary PGM
                         f"images (PNG, text PGM) of at most {MAX_IMAGE_CELLS:,} cells (4096×4096): {advice}")
 
 
-def _read_png(path: Path) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """Grey (colour channels averaged, 0..255) and alpha (0..255) of a PNG, through matplotlib."""
+def _png_cells(path: Path, negate: bool, occupied_thresh: float, free_thresh: float, mode: str) -> NDArray[np.int8]:
+    """The cells of a PNG (grey: colour channels averaged, 0..255; a transparent pixel unknown), through matplotlib,
+    classified a band of rows at a time: the decoded image stays in matplotlib's float32 (a 4096 × 4096 RGBA image,
+    75 KB on disk, took 1.6 GB as float64 arrays)."""
     import matplotlib.image
 
     try:
-        image = np.asarray(matplotlib.image.imread(str(path)), dtype=float)
+        image = matplotlib.image.imread(str(path))
     except Exception as exc:  # matplotlib/Pillow raise many kinds; all mean "cannot read"
         raise SealError(f"cannot read image {path.name}: {exc}") from None
-    if image.max(initial=0) <= 1.0:
-        image = np.round(image * 255.0)
-    if image.ndim == 2:
-        return image, np.full(image.shape, 255.0)
-    channels = image.shape[2]
-    has_alpha = channels in (2, 4)
-    alpha = image[..., -1] if has_alpha else np.full(image.shape[:2], 255.0)
-    return image[..., :channels - 1 if has_alpha else channels].mean(axis=2), alpha
+    unit = image.max(initial=0) <= 1.0
+    cells = np.empty(image.shape[:2], dtype=np.int8)
+    rows = max(1, BAND // max(1, image.shape[1] * (image.shape[2] if image.ndim == 3 else 1)))
+    for r in range(0, image.shape[0], rows):
+        band = np.asarray(image[r:r + rows], dtype=float)
+        if unit:
+            band = np.round(band * 255.0)
+        if band.ndim == 2:
+            cells[r:r + rows] = _classify(band, negate, occupied_thresh, free_thresh, mode)
+            continue
+        channels = band.shape[2]
+        has_alpha = channels in (2, 4)
+        part = _classify(band[..., :channels - 1 if has_alpha else channels].mean(axis=2), negate, occupied_thresh,
+                         free_thresh, mode)
+        if has_alpha:
+            part[band[..., -1] < 1.0] = UNKNOWN  # a transparent pixel says nothing
+        cells[r:r + rows] = part
+    return cells
 
 
 def _classify(grey: NDArray[np.float64], negate: bool, occupied_thresh: float, free_thresh: float,
@@ -254,7 +266,6 @@ def read_image_cells(path: Path, negate: bool = False, occupied_thresh: float = 
     if not path.exists():
         raise SealError(f"image {path.name} does not exist (looked for {path})")
     data = read_bytes(path, MAX_IMAGE_BYTES, "map image")
-    alpha = None
     if data[:2] == b"P5":
         width, height, maxval, pos = _pgm_header(data)
         if width * height > MAX_IMAGE_PIXELS:
@@ -268,18 +279,15 @@ def read_image_cells(path: Path, negate: bool = False, occupied_thresh: float = 
             return _large_p5(levels, table)
         return ImageCells(np.ascontiguousarray(table[levels][::-1]), size=(width, height))
     if data[:2] == b"P2":
-        grey = read_pgm(data)
+        cells = _classify(read_pgm(data), negate, occupied_thresh, free_thresh, mode)
     elif data[:8] == b"\x89PNG\r\n\x1a\n":
         if data[12:16] == b"IHDR":  # the size, before a decoder unpacks a small file into gigabytes
             _check_cells(int.from_bytes(data[16:20], "big"), int.from_bytes(data[20:24], "big"))
-        grey, alpha = _read_png(path)
+        cells = _png_cells(path, negate, occupied_thresh, free_thresh, mode)
     else:
         raise SealError(f"image {path.name} is neither PGM (P5/P2) nor PNG")
-    cells = _classify(grey, negate, occupied_thresh, free_thresh, mode)
-    if alpha is not None:
-        cells[alpha < 1.0] = UNKNOWN  # a transparent pixel says nothing
     kept, corner, factor = fit_cells(cells[::-1].copy(), MAX_GRID_CELLS)
-    return ImageCells(kept, corner, factor, size=(grey.shape[1], grey.shape[0]))
+    return ImageCells(kept, corner, factor, size=(cells.shape[1], cells.shape[0]))
 
 
 def read_image(path: Path, negate: bool = False, occupied_thresh: float = 0.65, free_thresh: float = 0.196,

@@ -200,3 +200,22 @@ def test_every_grid_of_a_map_has_at_most_max_grid_cells(tmp_path: Path) -> None:
                                      "  - {name: a, box: [0, 0, 100, 100]}\n")
     m = load_map(tmp_path / "b.yaml")
     assert m.grid.cells.size <= MAX_GRID_CELLS and m.grid.resolution > 0.05
+
+
+def test_a_png_is_classified_by_bands_as_whole(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A 4,096² RGBA PNG of 76 KB took 1.6 GB as float64 arrays: it is classified a band of rows at a time, the same
+    cells (grey the mean of the colours, a transparent pixel unknown)."""
+    from PIL import Image
+
+    from seal_cli.bench.reliability_attacker import rgba_png
+    from seal_cli.maps.formats import map_server
+
+    rng = np.random.default_rng(0)
+    Image.fromarray(rng.integers(0, 256, (300, 200, 4), dtype=np.uint8)).save(tmp_path / "x.png")
+    whole = map_server.read_image(tmp_path / "x.png")
+    monkeypatch.setattr(map_server, "BAND", 1_000)
+    assert np.array_equal(map_server.read_image(tmp_path / "x.png"), whole)
+    assert (whole == UNKNOWN).any() and (whole == FREE).any() and (whole == OCCUPIED).any()
+    (tmp_path / "w.png").write_bytes(rgba_png(64))
+    cells = map_server.read_image(tmp_path / "w.png")
+    assert (cells[:, 32] == OCCUPIED).all() and (cells[:, 31] == FREE).all()
