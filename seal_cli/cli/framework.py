@@ -37,25 +37,25 @@ F = TypeVar("F", bound=Callable[..., Any])
 
 
 def _readable_usage_errors() -> None:
-    """typer's usage errors (a bad option value, an unknown command, extra arguments) print their values whole:
-    an integer of 5,000 digits or an argument of 100,000 letters filled the screen. Each is printed cut as seal's
-    own messages are (:func:`seal_cli.errors.readable`: a word past 200 characters, the whole past 3,000); the
-    exit code (2) and the usage line stay typer's. typer has no hook for this: its printer is wrapped."""
-    from typer import rich_utils
+    """typer's usage errors (a bad option value, an unknown command, extra arguments) printed their values whole: an
+    integer of 5,000 digits or an argument of 100,000 letters filled the screen. Each such message is cut as seal's own
+    are (:func:`seal_cli.errors.readable`: a word past 200 characters, the whole past 3,000) where it is made, in
+    click's exception (typer's own copy of click, imported with typer: nothing more is imported at start); the exit
+    code (2) and the usage line stay typer's. typer has no hook for this. The help that ``seal`` alone prints goes
+    through another exception, left whole."""
+    from typer._click import exceptions
 
     from seal_cli.errors import readable
 
-    printer = rich_utils.rich_format_error
-    if getattr(printer, "readable", False):
+    made = exceptions.ClickException.__init__
+    if getattr(made, "readable", False):
         return
 
-    def cut(error: Any) -> None:  # a click exception (typer's own copy of click)
-        message = readable(error.format_message())
-        error.format_message = lambda: message
-        printer(error)
+    def cut(self: Any, message: str) -> None:
+        made(self, message if type(self).__name__ == "NoArgsIsHelpError" else readable(message))
 
     cut.readable = True  # type: ignore[attr-defined]
-    rich_utils.rich_format_error = cut  # type: ignore[assignment]
+    exceptions.ClickException.__init__ = cut  # type: ignore[method-assign]
 
 
 _readable_usage_errors()
