@@ -70,7 +70,11 @@ def readable(message: str) -> str:
     with "…" (what is printed; the JSON of an error keeps the message whole)."""
     import re
 
-    message = re.sub(rf"\S{{{WORD + 1},}}", lambda m: m.group()[:WORD - 1] + "…", message)
+    def cut(word: str) -> str:  # the punctuation that ends a long word stays: "xxx…: File name too long"
+        end = min(len(word) - len(word.rstrip(":;,.)]}'\"")), 3)
+        return word[:WORD - 1 - end] + "…" + word[len(word) - end:]
+
+    message = re.sub(rf"\S{{{WORD + 1},}}", lambda m: cut(m.group()), message)
     return message if len(message) <= MESSAGE else message[:MESSAGE - 1] + "…"
 
 

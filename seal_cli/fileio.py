@@ -533,7 +533,8 @@ def _check_suffix(target: Path, option: str, allowed: Sequence[str]) -> None:
     suffix = target.suffix.lower()
     if allowed and suffix and suffix not in allowed and not _is_device(target):
         formats = " or ".join(allowed)
-        raise SealError(f"{option} {target}: seal writes {formats[1:].upper()} files here; give a name ending in "
+        kinds = " or ".join(s[1:].upper() for s in allowed)  # "JSONL or JSON" (it read "JSONL OR .JSON")
+        raise SealError(f"{option} {target}: seal writes {kinds} files here; give a name ending in "
                         f"{formats}, not {target.suffix}")
 
 

@@ -57,8 +57,11 @@ def map_path(name: str) -> Path:
     except (OSError, ValueError):
         return path
     shipped = maps_dir() / (name if name.endswith((".yaml", ".yml")) else f"{name}.yaml")
-    if shipped.exists():
-        return shipped
+    try:
+        if shipped.exists():
+            return shipped
+    except (OSError, ValueError):  # a name too long for the file system is no shipped map (nor seal's folder's)
+        pass
     names = shipped_maps()
     close = difflib.get_close_matches(name.lower().removesuffix(".yaml"), names, n=1)
     raise SealError(f"{name}: no such map file, nor a map shipped with seal"

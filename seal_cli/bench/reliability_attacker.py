@@ -23,9 +23,11 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 
+import numpy as np
+
 from seal_cli.bench.reliability import Case, hostile_setting
 
-__all__ = ["attacker_cases", "sparse_pgm"]
+__all__ = ["attacker_cases", "hostile14_cases", "rgba_png", "sparse_pgm"]
 
 DIGITS = "1" * 5_000
 """An integer longer than Python converts from text (4,300 digits)."""
@@ -39,6 +41,23 @@ def sparse_pgm(width: int, height: int, patch: bytes, patch_width: int, patch_he
         start = (height - patch_height + r) * width
         rows[start:start + patch_width] = patch[r * patch_width:(r + 1) * patch_width]
     return f"P5\n{width} {height}\n255\n".encode() + bytes(rows)
+
+
+def rgba_png(side: int) -> bytes:
+    """A ``side`` × ``side`` RGBA PNG, white and opaque but for a black wall down the middle: small on disk, large
+    once decoded."""
+    import struct
+    import zlib
+
+    def chunk(kind: bytes, body: bytes) -> bytes:
+        return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body))
+
+    row = bytearray(b"\xff" * (4 * side))
+    row[4 * (side // 2):4 * (side // 2) + 3] = b"\x00\x00\x00"
+    packer = zlib.compressobj(9)
+    pixels = b"".join(packer.compress(b"\x00" + bytes(row)) for _ in range(side)) + packer.flush()
+    header = struct.pack(">IIBBBBB", side, side, 8, 6, 0, 0, 0)
+    return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", pixels) + chunk(b"IEND", b"")
 
 
 def _pgm_pixels(data: bytes) -> tuple[bytes, int, int]:
@@ -259,3 +278,51 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
                (("x.yaml", b"name: a\nresolution: 0.000001\nbounds: [0, 0, 10, 10]\n"
                  b"rooms:\n  - {name: hall, box: [0, 0, 10, 10]}\n"),), codes=(0, 1), keep=("x.yaml",),
                says=r"x\.yaml")
+    yield from hostile14_cases()
+
+
+def hostile14_cases() -> Iterator[Case]:
+    """Round hostile14: usage errors that echoed a value whole, grids and searches that grew past a gigabyte, and a
+    map name too long for the file system reported at seal's own folder."""
+    _, _, _, both, inputs, _, _ = hostile_setting()
+    cut = r"\A(?=[\s\S]*{})[\s\S]{{1,4000}}\Z"  # what is named, in a message of 4,000 characters at most
+    usage = {"an integer of 5,000 digits for --seed": (("localize", "--seed", "1" * 5_000), "--seed"),
+             "an integer of 5,000 digits for --jobs": (("bench", "tasks", "--jobs", "9" * 5_000), "--jobs"),
+             "a command of 100,000 letters": (("x" * 100_000,), "No such command"),
+             "a bench command of 100,000 letters": (("bench", "y" * 100_000), "No such command"),
+             "an extra argument of 100,000 letters": (("plan", "stir", "b" * 100_000), "unexpected extra"),
+             "an option of 10,000 letters": (("run", "--bogus" + "z" * 10_000), "No such option"),
+             "30,000 extra words": (("plan", *["w"] * 30_000), "unexpected extra")}
+    for label, (argv, named) in usage.items():
+        yield Case(f"A usage error cut: {label}", argv, codes=(2,), says=cut.format(named))
+    yield Case("A a map name of 5,000 letters: the argument, not seal's folder", ("run", "go", "--map", "q" * 5_000),
+               codes=(1,), says=r"\A(?![\s\S]*(maps/|q{300}))[\s\S]*q+…")
+    yield Case("A --episodes with another suffix says JSONL or JSON", (
+        "bench", "tasks", "--suite", "map", "--map", "m.yaml", "--layouts", "1", "--policies", "sefm", "--episodes",
+        "m.yaml"), both, codes=(1,), keep=inputs, says=r"writes JSONL or JSON files")
+    yield Case("A bench parse: a second corpus's constants nested too deeply, before any is scored",
+               ("bench", "parse", "--corpus", "g.jsonl", "--corpus", "c.tsv", "--constants", "k.json"),
+               (("g.jsonl", b'{"command": "stir the cup"}\n'), ("c.tsv", b"put the cup in the sink\tx\n"),
+                ("k.json", b"[" * 100_000 + b"]" * 100_000)), codes=(1,),
+               says=r"\A(?![\s\S]*scoring)[\s\S]*k\.json: .*nested too deeply")
+    known = np.full((5_000, 5_000), 254, dtype=np.uint8)  # a fully known image: free, walls round it and across
+    known[[0, -1], :] = known[:, [0, -1]] = known[:, 2_500] = 0
+    known[2_400:2_600, 2_500] = 254
+    rooms = ("name: big\nbounds: [0, 0, 250, 250]\nrooms:\n  - {name: kitchen, box: [0, 0, 125, 250]}\n"
+             "  - {name: hall, box: [125, 0, 250, 250]}\nrobot: {pose: [200, 125, 0]}\n")
+    yield Case("A a fully known image of 5,000 × 5,000 pixels: run", ("run", "go to the kitchen", "--map", "b.yaml"),
+               (("b.yaml", ("image: b.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n" + rooms).encode()),
+                ("b.pgm", b"P5\n5000 5000\n255\n" + known.tobytes())), codes=(0,), keep=("b.yaml", "b.pgm"),
+               says=r"b\.yaml:1:8: .*merges 5×5 pixels")
+    yield Case("A a 4,096 × 4,096 RGBA PNG of 86 KB: validate", ("validate", "p.yaml"),
+               (("p.yaml", b"image: p.png\nresolution: 0.05\norigin: [0, 0, 0]\nname: p\n"),
+                ("p.png", rgba_png(4_096))),
+               codes=(1,), keep=("p.yaml", "p.png"), says=r"p\.yaml:1:8: .*merges 4×4 pixels")
+    yield Case("A bounds of 100 m × 100 m, no image: run", ("run", "go to the kitchen", "--map", "b.yaml"),
+               (("b.yaml", rooms.replace("250", "100").replace("125", "50").replace("200", "80").encode()),),
+               codes=(0,), keep=("b.yaml",))
+    empty = ("name: e\nbounds: [0, 0, 30, 30]\nrooms:\n  - {name: kitchen, box: [0, 0, 15, 30]}\n"
+             "  - {name: hall, box: [15, 0, 30, 30]}\nrobot: {pose: [25, 15, 0]}\npriors:\n"
+             "  cup: {kitchen: 0.5, hall: 0.5}\nobjects:\n  - {class: cup, at: [3, 3]}\n")
+    yield Case("A search an empty 30 m × 30 m floor: run", ("run", "bring me a cup", "--map", "e.yaml"),
+               (("e.yaml", empty.encode()),), codes=(0,), keep=("e.yaml",), timeout=120)

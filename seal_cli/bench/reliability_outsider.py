@@ -152,7 +152,7 @@ def outsider_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
                        codes=(1,), keep=("h.yaml",), says=r"h\.yaml:\d+:\d+: each number of .* from -10,000,000")
     big = b"P5\n4097 4097\n255\n" + b"\xfe" * (4097 * 4097)
     yield Case("O map image of 4097 × 4097 cells", ("map", "m.yaml"), (m, ("apartment.pgm", big)), codes=(0,),
-               keep=("m.yaml",), says=r"warning: m\.yaml:\d+:\d+: the image is 4,097×4,097 pixels; .* merges 2×2")
+               keep=("m.yaml",), says=r"warning: m\.yaml:\d+:\d+: the image is 4,097×4,097 pixels; .* merges 5×5")
     yield Case("O map image: a PNG declaring 20,000 × 20,000", ("validate", "p.yaml"),
                (("p.yaml", text.replace("image: apartment.pgm", "image: bomb.png").encode()),
                 ("bomb.png", _png_header(20_000, 20_000))),

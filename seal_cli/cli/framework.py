@@ -38,6 +38,31 @@ app.add_typer(bench_app, name="bench")
 F = TypeVar("F", bound=Callable[..., Any])
 
 
+def _readable_usage_errors() -> None:
+    """typer's usage errors (a bad option value, an unknown command, extra arguments) printed their values whole: an
+    integer of 5,000 digits or an argument of 100,000 letters filled the screen. Each such message is cut as seal's own
+    are (:func:`seal_cli.errors.readable`: a word past 200 characters, the whole past 3,000) where it is made, in
+    click's exception (typer's own copy of click, imported with typer: nothing more is imported at start); the exit
+    code (2) and the usage line stay typer's. typer has no hook for this. The help that ``seal`` alone prints goes
+    through another exception, left whole."""
+    from typer._click import exceptions
+
+    from seal_cli.errors import readable
+
+    made = exceptions.ClickException.__init__
+    if getattr(made, "readable", False):
+        return
+
+    def cut(self: Any, message: str) -> None:
+        made(self, message if type(self).__name__ == "NoArgsIsHelpError" else readable(message))
+
+    cut.readable = True  # type: ignore[attr-defined]
+    exceptions.ClickException.__init__ = cut  # type: ignore[method-assign]
+
+
+_readable_usage_errors()
+
+
 def command(*args: Any, on: typer.Typer | None = None, **kwargs: Any) -> Callable[[F], F]:
     """``@app.command`` (or a command of the sub-app ``on``, e.g. ``bench_app``) that turns
     SealError into a message on stderr and exit code 1 (and the other failures

@@ -13,7 +13,7 @@ import sys
 from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING, Any
 
-from seal_cli.errors import SealError, SealErrors
+from seal_cli.errors import SealError, SealErrors, readable
 
 if TYPE_CHECKING:
     from rich.console import Console
@@ -124,7 +124,7 @@ def run_command(function: Callable[[], int | None]) -> int:
             _stdout_to_null()
             err.print(f"error: cannot write the output: {error.strerror or error}", markup=False)
         else:
-            err.print(f"error: {error.filename}: {error.strerror or error}", markup=False)
+            err.print(readable(f"error: {error.filename}: {error.strerror or error}"), markup=False)  # a long name cut
         return 1
     except Exception:
         from seal_cli.fileio import interrupted

@@ -153,7 +153,8 @@ def bench_parse(
                               "goals_valid_seen.tsv"])
     seal = f"{sys.executable} -m seal_cli"
     results: dict[str, Any] = {}
-    for path in corpora:
+    runs: list[tuple[Path, list[str], Vocabulary | None]] = []
+    for path in corpora:  # every corpus, scorer and constants file checked before any is scored (no half output)
         if not path.is_file():
             where = "" if corpus else (" (the default corpora are in ../shared/data beside a checkout of seal, which "
                                        "an installed seal does not have: give --corpus FILE and --scorers DIR)")
@@ -168,7 +169,8 @@ def bench_parse(
         if not Path(argv[0]).is_file():
             raise SealError(f"scorer not found: {argv[0]} (give --scorers DIR)", Where(argv[0]))
         # the constants are checked before the scorer reads them (a FIFO there would hang it)
-        vocab = _alfred_vocabulary(Path(argv[2])) if path.suffix == ".tsv" else None
+        runs.append((path, argv, _alfred_vocabulary(Path(argv[2])) if path.suffix == ".tsv" else None))
+    for path, argv, vocab in runs:
         err.print(f"scoring {path} ...")
         run = subprocess.run([sys.executable, *argv, "--seal", seal, *(["--json"] if as_json else [])],
                              capture_output=True, text=True)

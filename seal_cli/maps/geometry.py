@@ -26,19 +26,22 @@ from functools import cached_property
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["FREE", "MAX_IMAGE_CELLS", "OCCUPIED", "OUTSIDE", "UNKNOWN", "OccupancyGrid", "as_points", "box_polygon",
-           "cast_rays", "coarsened", "fit_cells", "line_of_sight", "overlap_area", "point_in_polygon", "polygon_area",
-           "segment_cells", "segments_intersect", "self_intersections", "shrink_factor"]
+__all__ = ["FREE", "MAX_GRID_CELLS", "MAX_IMAGE_CELLS", "OCCUPIED", "OUTSIDE", "UNKNOWN", "OccupancyGrid", "as_points",
+           "box_polygon", "cast_rays", "coarsened", "fit_cells", "line_of_sight", "overlap_area", "point_in_polygon",
+           "polygon_area", "segment_cells", "segments_intersect", "self_intersections", "shrink_factor"]
 
 FREE, OCCUPIED, UNKNOWN = 0, 100, -1
 OUTSIDE = "_outside"
 """The name reported for points in no room (no polygon of a map's rooms)."""
 MAX_IMAGE_CELLS = 4096 * 4096
-"""The most cells a map's occupancy grid (an image, a bag's grid) may have: a grid takes about 150 bytes
-a free cell while its map is checked (centres, rooms, lookups: 3.6 GB measured for 5,000 × 5,000), so
-16.8 million cells need about 2.5 GB, where a 10,000 × 10,000 image would take 15 GB and a 16,000 ×
-16,000 one (256 MiB, the file bound) 38 GB: more than the machine has, and the kernel then kills
-processes, not only seal."""
+"""The most pixels of a map image decoded whole (a PNG, a text PGM): a larger one is refused from its header
+(a binary PGM is read a band of rows at a time instead, see :data:`MAX_GRID_CELLS`)."""
+MAX_GRID_CELLS = 1024 * 1024
+"""The most cells of the occupancy grid a map holds (from an image, a bag's grid, or its bounds alone): a larger
+image or bag grid is cropped to what it knows, then coarsened to fit (with a warning); bounds alone get coarser
+cells. A run holds about 550 bytes a free cell (the navigation graph and its distances, the coverage lattice, the
+beliefs): a fully known 8,200 × 8,200 image, 2,734 × 2,734 cells under the bound before (4096 × 4096), took 64 s
+and 3.9 GB to `seal run`; 4 million implicit cells 30 s and 2.3 GB. Under this bound a run stays under 1 GB."""
 _CHUNK = 1 << 21
 """Largest number of (point × edge) or (segment × crossing) entries handled in one numpy step."""
 

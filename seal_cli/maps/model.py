@@ -38,6 +38,7 @@ from numpy.typing import ArrayLike, NDArray
 from seal_cli.errors import SealError, SealErrors, Where
 from seal_cli.frames.taxonomy import check_class_name, class_key
 from seal_cli.maps.geometry import (
+    MAX_GRID_CELLS,
     OUTSIDE,
     OccupancyGrid,
     as_points,
@@ -60,8 +61,9 @@ SPEAKER = "me"
 
 OVERLAP_TOLERANCE = 0.01
 """Square metres two rooms may share before they count as overlapping (drawing slack)."""
-MAX_IMPLICIT_CELLS = 4_000_000
-"""Largest implicit all-free grid built from bounds alone (its resolution grows to fit)."""
+MAX_IMPLICIT_CELLS = MAX_GRID_CELLS
+"""Largest implicit all-free grid built from bounds alone (its resolution grows to fit): the bound of every map's
+grid (4,000,000 before hostile14: a run on it took 2.3 GB)."""
 MAX_ROOM_VERTICES = 10_000
 """The most points a room's polygon may have (real outlines have tens): a map's checks and each cell's room
 grow with them (a room of 62,831 points took 15 GB before the edges' crossing test swept by x)."""

@@ -23,6 +23,10 @@ import numpy as np
 
 from seal_cli.errors import SealError
 
+CACHE_BYTES = 64 * 2**20
+"""The most bytes of shortest-path fields a grid keeps (at most 256 of them): about 50 on the apartment, 5 on a
+grid of a million cells (256 of 12 MB each took the memory of a run past 1 GB there)."""
+
 __all__ = ["Cell", "Grid", "astar", "path_length"]
 
 Cell = tuple[int, int]
@@ -123,7 +127,7 @@ class Grid:
         """The free cells as a sparse graph (scipy), and each cell's node index (-1 if occupied)."""
         from scipy.sparse import coo_matrix
 
-        index = -np.ones(self.free.shape, dtype=np.int64)
+        index = -np.ones(self.free.shape, dtype=np.int32)  # int32: a grid has at most a few million cells
         cells = self.free_cells
         index[cells[:, 0], cells[:, 1]] = np.arange(len(cells))
         rows, cols, costs = [], [], []
@@ -140,6 +144,7 @@ class Grid:
             costs.append(np.full(int(ok.sum()), cost))
         n = len(cells)
         graph = coo_matrix((np.concatenate(costs), (np.concatenate(rows), np.concatenate(cols))), shape=(n, n))
+        del rows, cols, costs
         return graph.tocsr(), index
 
     def _dijkstra(self, start: Cell) -> tuple[np.ndarray, np.ndarray]:
@@ -155,7 +160,7 @@ class Grid:
         field_ = np.full(self.free.shape, np.inf)
         cells = self.free_cells
         field_[cells[:, 0], cells[:, 1]] = along * self.resolution
-        if len(self._cache) > 256:
+        if len(self._cache) >= min(256, max(4, CACHE_BYTES // (field_.nbytes + previous.nbytes))):
             self._cache.clear()
         self._cache[start] = (field_, previous)
         return field_, previous

@@ -76,6 +76,15 @@ def test_usage_errors_are_exit_2() -> None:
     assert runner.invoke(app, ["frames", "--bogus"]).exit_code == 2
 
 
+def test_a_usage_error_prints_a_huge_value_cut() -> None:
+    """typer echoed a value whole: 5,000 digits of --seed were a box of 65 lines, 100,000 letters 107 KB."""
+    for argv, named in ((["localize", "--seed", "1" * 5_000], "--seed"), (["x" * 100_000], "No such command"),
+                        (["plan", "stir", *["w"] * 30_000], "unexpected extra")):
+        result = runner.invoke(app, argv)
+        assert result.exit_code == 2 and named in result.stderr and len(result.stderr) < 4_000
+        assert "…" in result.stderr
+
+
 def test_the_console_script_runs_without_a_traceback(tmp_path: Path) -> None:
     missing = tmp_path / "missing.yaml"
     run = subprocess.run([sys.executable, "-m", "seal_cli", "validate", str(missing)],

@@ -79,3 +79,16 @@ def test_bad_input_is_a_clear_error() -> None:
         Grid(np.ones((3, 3), dtype=bool), (0.0, 0.0), 1.0, 6)
     with pytest.raises(SealError, match="at least one"):
         Grid.from_points([], 0.25)
+
+
+def test_the_path_cache_keeps_a_bounded_number_of_bytes(monkeypatch: pytest.MonkeyPatch) -> None:
+    """256 fields of a million-cell grid were 3 GB: the cache holds at most CACHE_BYTES (and at least 4 fields)."""
+    from seal_cli.sim import navigation
+
+    grid = Grid(np.ones((40, 40), dtype=bool), (0.0, 0.0), 0.5)
+    entry = 40 * 40 * 8 + 40 * 40 * 4
+    monkeypatch.setattr(navigation, "CACHE_BYTES", 6 * entry)
+    for k in range(20):
+        grid.distances((k, k))
+        assert len(grid._cache) <= 6
+    assert np.isclose(grid.distances((0, 0))[0, 3], 1.5)  # cleared entries are computed again, the same

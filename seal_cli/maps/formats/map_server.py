@@ -49,7 +49,17 @@ from numpy.typing import NDArray
 from seal_cli.errors import SealError, SealErrors, Where
 from seal_cli.fileio import LOADER, MAX_IMAGE_BYTES, read_bytes, read_text, yaml_problem
 from seal_cli.frames.taxonomy import class_key
-from seal_cli.maps.geometry import FREE, MAX_IMAGE_CELLS, OCCUPIED, UNKNOWN, OccupancyGrid, coarsened, shrink_factor
+from seal_cli.maps.geometry import (
+    FREE,
+    MAX_GRID_CELLS,
+    MAX_IMAGE_CELLS,
+    OCCUPIED,
+    UNKNOWN,
+    OccupancyGrid,
+    coarsened,
+    fit_cells,
+    shrink_factor,
+)
 from seal_cli.maps.model import Map, MapWarning, ObjectTruth, Person, Place, Robot, Room, Sensor
 from seal_cli.resources import map_path
 from seal_cli.yamlnodes import NodeReader
@@ -85,7 +95,7 @@ Path_ = tuple[str | int, ...]
 MAX_IMAGE_PIXELS = 16_384 * 16_384
 """The most pixels a binary PGM (P5) map image may have, checked from its header: 256 MiB at 8 bits, the file
 bound. Such an image is read a band of rows at a time, cropped to what it knows and, if still larger than
-:data:`~seal_cli.maps.geometry.MAX_IMAGE_CELLS`, coarsened to fit: a real ROS map (8,000 × 8,000 at 5 cm, most
+:data:`~seal_cli.maps.geometry.MAX_GRID_CELLS`, coarsened to fit: a real ROS map (8,000 × 8,000 at 5 cm, most
 of it unknown) is read in a few hundred megabytes, never as floats."""
 
 BAND = 4 * 2**20
@@ -161,22 +171,34 @@ def _check_cells(width: int, height: int, advice: str = "save it as a binary PGM
                         f"images (PNG, text PGM) of at most {MAX_IMAGE_CELLS:,} cells (4096×4096): {advice}")
 
 
-def _read_png(path: Path) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """Grey (colour channels averaged, 0..255) and alpha (0..255) of a PNG, through matplotlib."""
+def _png_cells(path: Path, negate: bool, occupied_thresh: float, free_thresh: float, mode: str) -> NDArray[np.int8]:
+    """The cells of a PNG (grey: colour channels averaged, 0..255; a transparent pixel unknown), through matplotlib,
+    classified a band of rows at a time: the decoded image stays in matplotlib's float32 (a 4096 × 4096 RGBA image,
+    75 KB on disk, took 1.6 GB as float64 arrays)."""
     import matplotlib.image
 
     try:
-        image = np.asarray(matplotlib.image.imread(str(path)), dtype=float)
+        image = matplotlib.image.imread(str(path))
     except Exception as exc:  # matplotlib/Pillow raise many kinds; all mean "cannot read"
         raise SealError(f"cannot read image {path.name}: {exc}") from None
-    if image.max(initial=0) <= 1.0:
-        image = np.round(image * 255.0)
-    if image.ndim == 2:
-        return image, np.full(image.shape, 255.0)
-    channels = image.shape[2]
-    has_alpha = channels in (2, 4)
-    alpha = image[..., -1] if has_alpha else np.full(image.shape[:2], 255.0)
-    return image[..., :channels - 1 if has_alpha else channels].mean(axis=2), alpha
+    unit = image.max(initial=0) <= 1.0
+    cells = np.empty(image.shape[:2], dtype=np.int8)
+    rows = max(1, BAND // max(1, image.shape[1] * (image.shape[2] if image.ndim == 3 else 1)))
+    for r in range(0, image.shape[0], rows):
+        band = np.asarray(image[r:r + rows], dtype=float)
+        if unit:
+            band = np.round(band * 255.0)
+        if band.ndim == 2:
+            cells[r:r + rows] = _classify(band, negate, occupied_thresh, free_thresh, mode)
+            continue
+        channels = band.shape[2]
+        has_alpha = channels in (2, 4)
+        part = _classify(band[..., :channels - 1 if has_alpha else channels].mean(axis=2), negate, occupied_thresh,
+                         free_thresh, mode)
+        if has_alpha:
+            part[band[..., -1] < 1.0] = UNKNOWN  # a transparent pixel says nothing
+        cells[r:r + rows] = part
+    return cells
 
 
 def _classify(grey: NDArray[np.float64], negate: bool, occupied_thresh: float, free_thresh: float,
@@ -214,7 +236,7 @@ class ImageCells:
 
 
 def _large_p5(levels: NDArray[Any], table: NDArray[np.int8]) -> ImageCells:
-    """The cells of a P5 image larger than :data:`MAX_IMAGE_CELLS`, a band of rows at a time: cropped to the
+    """The cells of a P5 image larger than :data:`MAX_GRID_CELLS`, a band of rows at a time: cropped to the
     rows and columns holding a known cell, then coarsened if still too large."""
     height, width = levels.shape
     rows = max(1, BAND // width)
@@ -230,7 +252,7 @@ def _large_p5(levels: NDArray[Any], table: NDArray[np.int8]) -> ImageCells:
     else:
         top, bottom, left, right = 0, height, 0, width
     window = levels[top:bottom, left:right][::-1]  # row 0 at the lowest y
-    factor = shrink_factor(window.shape[0], window.shape[1], MAX_IMAGE_CELLS)
+    factor = shrink_factor(window.shape[0], window.shape[1], MAX_GRID_CELLS)
     step = rows - rows % factor or factor
     parts = [coarsened(table[window[r:r + step]], factor) for r in range(0, window.shape[0], step)]
     return ImageCells(np.ascontiguousarray(np.concatenate(parts)), (left, height - bottom), factor, (width, height))
@@ -238,12 +260,12 @@ def _large_p5(levels: NDArray[Any], table: NDArray[np.int8]) -> ImageCells:
 
 def read_image_cells(path: Path, negate: bool = False, occupied_thresh: float = 0.65, free_thresh: float = 0.196,
                      mode: str = "trinary") -> ImageCells:
-    """The cells of a map_server image (:class:`ImageCells`); a binary PGM of more than
-    :data:`MAX_IMAGE_CELLS` pixels comes cropped to what it knows and coarsened to fit."""
+    """The cells of a map_server image (:class:`ImageCells`); an image of more than :data:`MAX_GRID_CELLS` pixels
+    comes cropped to what it knows and coarsened to fit (a binary PGM a band of rows at a time; a PNG or a text
+    PGM, decoded whole, only up to :data:`MAX_IMAGE_CELLS` pixels)."""
     if not path.exists():
         raise SealError(f"image {path.name} does not exist (looked for {path})")
     data = read_bytes(path, MAX_IMAGE_BYTES, "map image")
-    alpha = None
     if data[:2] == b"P5":
         width, height, maxval, pos = _pgm_header(data)
         if width * height > MAX_IMAGE_PIXELS:
@@ -253,21 +275,19 @@ def read_image_cells(path: Path, negate: bool = False, occupied_thresh: float = 
         span = 65536 if maxval > 255 else 256
         table = _classify(np.arange(span, dtype=np.float64) * (255.0 / maxval), negate, occupied_thresh, free_thresh,
                           mode)
-        if width * height > MAX_IMAGE_CELLS:
+        if width * height > MAX_GRID_CELLS:
             return _large_p5(levels, table)
         return ImageCells(np.ascontiguousarray(table[levels][::-1]), size=(width, height))
     if data[:2] == b"P2":
-        grey = read_pgm(data)
+        cells = _classify(read_pgm(data), negate, occupied_thresh, free_thresh, mode)
     elif data[:8] == b"\x89PNG\r\n\x1a\n":
         if data[12:16] == b"IHDR":  # the size, before a decoder unpacks a small file into gigabytes
             _check_cells(int.from_bytes(data[16:20], "big"), int.from_bytes(data[20:24], "big"))
-        grey, alpha = _read_png(path)
+        cells = _png_cells(path, negate, occupied_thresh, free_thresh, mode)
     else:
         raise SealError(f"image {path.name} is neither PGM (P5/P2) nor PNG")
-    cells = _classify(grey, negate, occupied_thresh, free_thresh, mode)
-    if alpha is not None:
-        cells[alpha < 1.0] = UNKNOWN  # a transparent pixel says nothing
-    return ImageCells(cells[::-1].copy(), size=(grey.shape[1], grey.shape[0]))
+    kept, corner, factor = fit_cells(cells[::-1].copy(), MAX_GRID_CELLS)
+    return ImageCells(kept, corner, factor, size=(cells.shape[1], cells.shape[0]))
 
 
 def read_image(path: Path, negate: bool = False, occupied_thresh: float = 0.65, free_thresh: float = 0.196,
@@ -447,8 +467,8 @@ class _Reader(NodeReader):
         if read.factor > 1:
             rows, cols = read.cells.shape
             self.problems.append(MapWarning(
-                f"the image is {width:,}×{height:,} pixels; its known part is more than {MAX_IMAGE_CELLS:,} cells "
-                f"(4096×4096), so seal merges {read.factor}×{read.factor} pixels into one cell: {cols:,}×{rows:,} "
+                f"the image is {width:,}×{height:,} pixels; its known part is more than {MAX_GRID_CELLS:,} cells "
+                f"(1024×1024), so seal merges {read.factor}×{read.factor} pixels into one cell: {cols:,}×{rows:,} "
                 f"cells of {resolution * read.factor:g} m (a wall anywhere in a cell keeps it occupied); crop the "
                 "image to the building to keep every pixel", self.where(nodes["image"])))
         return read.grid(resolution, tuple(origin + [0.0] * (3 - len(origin))))  # type: ignore[arg-type]

@@ -24,7 +24,7 @@ import numpy as np
 import yaml
 
 from seal_cli.errors import SealError
-from seal_cli.maps.geometry import FREE, MAX_IMAGE_CELLS, OCCUPIED, UNKNOWN, OccupancyGrid, fit_cells
+from seal_cli.maps.geometry import FREE, MAX_GRID_CELLS, OCCUPIED, UNKNOWN, OccupancyGrid, fit_cells
 from seal_cli.maps.model import MapWarning
 
 __all__ = ["KEY", "grid_from_bag"]
@@ -82,11 +82,11 @@ def grid_from_bag(reader: Any, nodes: dict[str, yaml.Node]) -> OccupancyGrid | N
     except SealError as exc:
         reader.problem(f"{reader.path.parent / bag}: {exc.message}", fields["bag"])
         return None
-    kept, corner, factor = fit_cells(cells(grid.values, occ, free), MAX_IMAGE_CELLS)
+    kept, corner, factor = fit_cells(cells(grid.values, occ, free), MAX_GRID_CELLS)
     if factor > 1:
         reader.problems.append(MapWarning(
             f"{reader.path.parent / bag}: the grid on {topic} has {grid.values.size:,} cells, its known part more "
-            f"than {MAX_IMAGE_CELLS:,} (4096×4096), so seal merges {factor}×{factor} cells into one: "
+            f"than {MAX_GRID_CELLS:,} (1024×1024), so seal merges {factor}×{factor} cells into one: "
             f"{kept.shape[1]:,}×{kept.shape[0]:,} cells of {grid.resolution * factor:g} m",
             reader.where(fields["bag"])))
     return OccupancyGrid.placed(kept, grid.resolution, grid.origin, corner, factor)

@@ -68,11 +68,19 @@ class CoveragePolicy(Policy):
         near, _ = cKDTree(grid.free_points).query(lattice, distance_upper_bound=0.8 * rng)
         self.lattice = lattice[np.isfinite(near)]
         self.seen = np.zeros(len(self.lattice), dtype=bool)
+        self._tree = cKDTree(self.lattice) if len(self.lattice) else None
 
     def observe(self, agent: Agent, detections: Sequence[Detection]) -> None:
-        todo = np.flatnonzero(~self.seen)
+        """Mark the lattice points the robot sees now: only those within the sensor's range (found by a tree, a
+        hair wider than the range) are asked (a 410 m map's 2.7 million points each look took 0.3 s)."""
+        if self._tree is None:
+            return
+        pose = agent.world.robot.pose
+        near = np.asarray(self._tree.query_ball_point(pose[:2], agent.world.sensor.range * (1 + 1e-9) + 1e-9),
+                          dtype=np.intp)
+        todo = np.sort(near[~self.seen[near]])
         if len(todo):
-            self.seen[todo] = agent.world.sensor.visible(agent.world.robot.pose, self.lattice[todo])
+            self.seen[todo] = agent.world.sensor.visible(pose, self.lattice[todo])
 
     def next_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
         field_ = agent.distances()

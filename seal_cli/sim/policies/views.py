@@ -27,10 +27,16 @@ import numpy as np
 
 from seal_cli.sim.navigation import Grid
 
-__all__ = ["SPACING", "DriveTable", "Lattice", "lattice_of"]
+__all__ = ["MAX_NODES", "SPACING", "DriveTable", "Lattice", "lattice_of"]
 
 SPACING = 0.25
 """The lattice's block side in metres (the grid's cells are grouped into blocks of about this size)."""
+
+MAX_NODES = 4096
+"""The most nodes a lattice has: its all-pairs distances and predecessors take about 20 bytes a pair while
+built (16.7 million pairs, 335 MB, at this bound; the shipped maps have up to 3,300 nodes at :data:`SPACING`).
+On a larger free space the blocks grow until the nodes fit: "bring me a cup" on an empty 50 m × 50 m map
+(40,000 nodes of 0.25 m) took more than 19 GB before."""
 
 
 @dataclass(frozen=True)
@@ -172,12 +178,16 @@ def lattice_of(grid: Grid, sees: Callable[[tuple[float, float], np.ndarray], np.
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import dijkstra
 
-    side = max(1, int(np.ceil(SPACING / grid.resolution - 1e-9)))
     cells = grid.free_cells
-    blocks = cells // side
-    width = int(blocks[:, 1].max()) + 1
-    block_id = blocks[:, 0] * width + blocks[:, 1]
-    unique, node_of_cell = np.unique(block_id, return_inverse=True)
+    side = max(1, int(np.ceil(SPACING / grid.resolution - 1e-9)))
+    while True:
+        blocks = cells // side
+        width = int(blocks[:, 1].max()) + 1
+        block_id = blocks[:, 0] * width + blocks[:, 1]
+        unique, node_of_cell = np.unique(block_id, return_inverse=True)
+        if len(unique) <= MAX_NODES:
+            break
+        side = max(side + 1, int(side * np.sqrt(len(unique) / MAX_NODES)))
     centre = (np.stack([unique // width, unique % width], axis=1) + 0.5) * side - 0.5
     gap = np.hypot(*(cells - centre[node_of_cell]).T)
     order = np.lexsort((gap, node_of_cell))

@@ -136,7 +136,7 @@ def test_a_large_mostly_unknown_image_is_cropped_to_what_it_knows(tmp_path: Path
     from seal_cli.bench.reliability_attacker import _pgm_pixels, sparse_pgm
     from seal_cli.maps.formats import map_server
 
-    monkeypatch.setattr(map_server, "MAX_IMAGE_CELLS", 200_000)  # the apartment's 112,000 pixels fit; 1,000² not
+    monkeypatch.setattr(map_server, "MAX_GRID_CELLS", 200_000)  # the apartment's 112,000 pixels fit; 1,000² not
     monkeypatch.setattr(map_server, "BAND", 10_000)  # many bands
     pixels, width, height = _pgm_pixels((maps_dir() / "apartment.pgm").read_bytes())
     small, large = load_map("apartment"), load_map(_apartment_in(tmp_path, sparse_pgm(1_000, 1_000, pixels, width,
@@ -153,7 +153,7 @@ def test_a_large_known_image_is_coarsened_with_a_warning_and_its_walls_kept(tmp_
                                                                            monkeypatch: pytest.MonkeyPatch) -> None:
     from seal_cli.maps.formats import map_server
 
-    monkeypatch.setattr(map_server, "MAX_IMAGE_CELLS", 250_000)
+    monkeypatch.setattr(map_server, "MAX_GRID_CELLS", 250_000)
     picture = np.full((1_000, 1_000), 254, dtype=np.uint8)  # free everywhere ...
     picture[:, 501] = 0  # ... but one wall a pixel thin, at an odd column
     image = b"P5\n1000 1000\n255\n" + picture.tobytes()
@@ -174,3 +174,48 @@ def test_a_large_text_pgm_or_png_says_what_to_do(tmp_path: Path) -> None:
     with pytest.raises(SealError, match=r"binary PGM images of at most 268,435,456 pixels"):
         (tmp_path / "x.pgm").write_bytes(b"P5\n20000 20000\n255\n")
         read_image(tmp_path / "x.pgm")
+
+
+def test_every_grid_of_a_map_has_at_most_max_grid_cells(tmp_path: Path) -> None:
+    """A fully known 8,200 x 8,200 image was 2,734 x 2,734 cells (64 s and 3.9 GB to run), bounds of 100 m x 100 m
+    4 million cells (2.3 GB): an image, PNG or PGM, is cropped and coarsened to MAX_GRID_CELLS, with a warning; bounds
+    alone get coarser cells."""
+    import matplotlib.image
+
+    from seal_cli.maps.formats import map_server
+    from seal_cli.maps.geometry import MAX_GRID_CELLS
+
+    assert MAX_GRID_CELLS == 1024 * 1024
+    picture = np.full((1_500, 1_500), 254, dtype=np.uint8)
+    picture[:, 700] = 0
+    (tmp_path / "x.pgm").write_bytes(b"P5\n1500 1500\n255\n" + picture.tobytes())
+    matplotlib.image.imsave(tmp_path / "x.png", picture, cmap="gray", vmin=0, vmax=255)
+    for name in ("x.pgm", "x.png"):
+        found = map_server.read_image_cells(tmp_path / name)
+        assert found.factor == 2 and found.cells.size <= MAX_GRID_CELLS and (found.cells[:, 350] == OCCUPIED).all()
+        (tmp_path / "x.yaml").write_text(f"image: {name}\nresolution: 0.05\norigin: [0, 0, 0]\nname: a\n")
+        m = load_map(tmp_path / "x.yaml")
+        assert m.grid.resolution == 0.1 and [w for w in m.warnings if "merges 2×2 pixels" in w.message]
+    (tmp_path / "b.yaml").write_text("name: b\nbounds: [0, 0, 100, 100]\nrooms:\n"
+                                     "  - {name: a, box: [0, 0, 100, 100]}\n")
+    m = load_map(tmp_path / "b.yaml")
+    assert m.grid.cells.size <= MAX_GRID_CELLS and m.grid.resolution > 0.05
+
+
+def test_a_png_is_classified_by_bands_as_whole(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A 4,096² RGBA PNG of 76 KB took 1.6 GB as float64 arrays: it is classified a band of rows at a time, the same
+    cells (grey the mean of the colours, a transparent pixel unknown)."""
+    from PIL import Image
+
+    from seal_cli.bench.reliability_attacker import rgba_png
+    from seal_cli.maps.formats import map_server
+
+    rng = np.random.default_rng(0)
+    Image.fromarray(rng.integers(0, 256, (300, 200, 4), dtype=np.uint8)).save(tmp_path / "x.png")
+    whole = map_server.read_image(tmp_path / "x.png")
+    monkeypatch.setattr(map_server, "BAND", 1_000)
+    assert np.array_equal(map_server.read_image(tmp_path / "x.png"), whole)
+    assert (whole == UNKNOWN).any() and (whole == FREE).any() and (whole == OCCUPIED).any()
+    (tmp_path / "w.png").write_bytes(rgba_png(64))
+    cells = map_server.read_image(tmp_path / "w.png")
+    assert (cells[:, 32] == OCCUPIED).all() and (cells[:, 31] == FREE).all()

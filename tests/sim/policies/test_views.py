@@ -101,3 +101,16 @@ def test_a_view_of_another_rule_is_weighed_on_the_same_footing_and_the_tables_gr
         whole = search.lattice.drive_table(origin, search.nodes, reveals, hidden)
         assert len(table.length) == n + 1
         assert np.array_equal(table.seen_at, whole.seen_at) and np.array_equal(table.length, whole.length)
+
+
+def test_a_lattice_on_a_large_free_space_has_at_most_max_nodes() -> None:
+    """An empty 50 m x 50 m floor at 0.25 m was 40,000 nodes, their all-pairs tables more than 19 GB: the blocks grow
+    until the nodes fit, and paths and looks still work on them."""
+    from seal_cli.sim.navigation import Grid
+    from seal_cli.sim.policies.views import MAX_NODES, lattice_of
+
+    grid = Grid(np.ones((400, 400), dtype=bool), (0.0, 0.0), 0.125)  # 50 m x 50 m
+    lattice = lattice_of(grid, lambda p, pts: np.ones(len(pts), dtype=bool), "test-large", 5.0)
+    assert 1_000 < lattice.size <= MAX_NODES
+    a, b = (int(k) for k in lattice.node_of(np.asarray([[1.0, 1.0], [49.0, 49.0]])))
+    assert abs(lattice.distance[a, b] - 48 * np.sqrt(2)) < 2.0 and lattice.path(a, b)[-1] == b
