@@ -398,3 +398,8 @@ VERB_TAKES = (NP_OPENERS | PRONOUNS | PARTICLES | END_MARKS | frozenset(["please
               | frozenset(w for w in HERE_WORDS if " " not in w) | frozenset(p for p in PREPOSITIONS if " " not in p))
 """One-word openers of what a verb takes after it: an object (a determiner, a possessive, a pronoun), "here" or
 "there", "please", a preposition or a particle, or the end of the sentence ("and *wait there*", "and *fold it*")."""
+
+
+PARTS = frozenset(["lid", "door", "handle", "seat", "tank", "cover", "basin"])
+"""The portions that are parts a thing is made with ("the fridge *door*", "a spoon with a blue *handle*"):
+a thing said "with" one is described, not given contents."""

@@ -38,6 +38,7 @@ from typing import Any
 
 from seal_cli.errors import SealError, Where
 from seal_cli.frames.taxonomy import class_key, class_words
+from seal_cli.language.english import PARTS
 from seal_cli.language.goals import GoalModel
 from seal_cli.language.lexicon import noun_lemma
 from seal_cli.language.slicing import SliceModel
@@ -49,9 +50,6 @@ from seal_cli.language.wordusage import WordUsage, context_words, shipped_word_u
 __all__ = ["PARTS", "PIECES", "PORTIONS", "Vocabulary", "load_vocabulary", "vocabulary_of_map"]
 
 
-PARTS = frozenset(["lid", "door", "handle", "seat", "tank", "cover", "basin"])
-"""The portions that are parts a thing is made with ("the fridge *door*", "a spoon with a blue *handle*"):
-a thing said "with" one is described, not given contents."""
 PORTIONS = frozenset(" ".join((
     "slice piece bit chunk half part portion wedge segment section sliver strip lump cube quarter crumb",
     "top side edge corner middle centre center end bottom surface back front",

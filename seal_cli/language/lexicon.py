@@ -35,6 +35,7 @@ from seal_cli.language.english import (
     NOMINATIVE,
     NP_OPENERS,
     PARTICLES,
+    PARTS,
     PREPOSITIONS,
     SEPARATOR_WORDS,
     SUBJECTS,
@@ -102,7 +103,7 @@ class Lexicon:
     "back" is the BACK rule's place ("put it *back*": where it was taken from), not the unit's particle."""
     split: Mapping[str, frozenset[str]] = field(default_factory=dict)
     """Units said only split around their object (``split: true``: "put the kettle *on*", ToggleOn) → the known
-    classes their frame's first element cannot be, and the parts things are made with (``grounding.PARTS``: "put
+    classes their frame's first element cannot be, and the parts things are made with (``english.PARTS``: "put
     the lid on", "put your coat on": no such unit)."""
     state_verbs: frozenset[str] = frozenset()
     """The verbs of the split units ("put", "leave", "get"): they put a thing in a state ("leave the door *open*")."""
@@ -131,8 +132,6 @@ class Lexicon:
             not p.negated and p.predicate == "in" and p.args == (frame.elements[0].role, "goal")
             for p in frame.postconditions) for unit in frame.lexical_units)
         stores = frozenset(unit.text for frame in library.frames for unit in frame.lexical_units if unit.stores)
-        from seal_cli.language.grounding import PARTS  # (grounding reads this module)
-
         split = {unit.text: frozenset(c for c in taxonomy.known_classes if frame.elements and
                                       taxonomy.is_a(c, frame.elements[0].type) is False) | PARTS
                  for frame in library.frames for unit in frame.lexical_units if unit.split}

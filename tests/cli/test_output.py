@@ -121,6 +121,9 @@ def test_an_interrupt_while_the_outputs_move_ends_with_them_in_place_and_success
 
     monkeypatch.setattr(fileio, "_move", move_then_interrupt)
     monkeypatch.setattr(fileio, "_INTERRUPTED", [False])
+    # SIGINT as a terminal's: a shell without job control starts `cmd &` with SIGINT ignored (a CI run in the
+    # background), and then no interrupt would arrive at all
+    before = signal.signal(signal.SIGINT, signal.default_int_handler)
     target = tmp_path / "o.yaml"
 
     def command() -> int:
@@ -128,6 +131,9 @@ def test_an_interrupt_while_the_outputs_move_ends_with_them_in_place_and_success
             plan["-o"].write_text("poses: []\n")
         raise AssertionError("the interrupt arrives before the command goes on")
 
-    assert run_command(command) == 0
-    assert target.read_text() == "poses: []\n" and fileio.committed()
-    assert run_command(lambda: 0) == 0 and not fileio.committed()  # the next command starts afresh
+    try:
+        assert run_command(command) == 0
+        assert target.read_text() == "poses: []\n" and fileio.committed()
+        assert run_command(lambda: 0) == 0 and not fileio.committed()  # the next command starts afresh
+    finally:
+        signal.signal(signal.SIGINT, before)
