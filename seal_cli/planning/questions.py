@@ -71,6 +71,10 @@ STATE_WORDS = {"open": ("open", True), "opened": ("open", True), "closed": ("ope
 ASKING_WHETHER = frozenset({"is", "are", "was", "were"})
 """A Find whose words start with one of these asks whether ("*is* there a cup in the kitchen?")."""
 
+ASKING_WHETHER_SHORT = frozenset({"any", "anyone", "anybody", "anything", "someone", "somebody", "something"})
+"""A Find whose words start with one of these, its "is there" unsaid, asks whether too ("*anyone* in the
+bathroom?", "*any* milk left in the fridge?"). English, not any corpus's."""
+
 ASKING_WHAT = {"what": "thing", "whats": "thing", "who": "person", "whos": "person"}
 """The first word of a message that asks what (or who) is somewhere, and what it asks for."""
 
@@ -125,7 +129,7 @@ def asks_whether(text: str, evoked: Evoked) -> bool:
     is enough, so a plural asks for the kind once."""
     first = text[evoked.span[0]:evoked.span[1]].lower().split()[:4]
     checks, ifs, _ = CHECK_WHETHER                      # "*see if* anyone is in the kitchen"
-    return evoked.frame == "Find" and bool(first) and (first[0] in ASKING_WHETHER or any(
+    return evoked.frame == "Find" and bool(first) and (first[0] in ASKING_WHETHER | ASKING_WHETHER_SHORT or any(
         first[k] in ifs and " ".join(first[:k]) in checks for k in range(1, len(first))))
 
 

@@ -25,6 +25,8 @@ def asked(text: str, library: Library) -> list[tuple[str, Question]]:
     ("are there any spoons in the bedroom?", "Find(theme=spoon, ground=bedroom)", Question("whether")),
     ("is Ben in the kitchen?", "Find(theme=ben, ground=kitchen)", Question("whether")),
     ("is the apple in the fridge?", "Find(theme=apple, ground=fridge_1)", Question("whether")),
+    ("anyone in the bedroom?", "Find(theme=person, ground=bedroom)", Question("whether")),
+    ("any apples in the fridge?", "Find(theme=apple, ground=fridge_1)", Question("whether")),
     ("where is the cup?", "Find(theme=cup)", Question("where")),
     ("find the cup in the kitchen", "Find(theme=cup, ground=kitchen)", Question("where")),
     ("how many cups are in the family room?", "Count(theme=cup, ground=family_room)", Question("how_many")),
