@@ -22,7 +22,7 @@ from collections import Counter
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
-__all__ = ["Instance", "features", "fit", "logits", "scene_features", "sentence_features"]
+__all__ = ["Instance", "features", "fit", "logits", "posterior", "scene_features", "sentence_features"]
 
 
 def features(lemmas: Sequence[str], context: Iterable[str], candidates: Iterable[str] = ()) -> tuple[str, ...]:
@@ -75,6 +75,17 @@ def logits(weights: Mapping[str, Mapping[str, float]], keys: Iterable[str], feat
             for key in out:
                 out[key] += row.get(key, 0.0)
     return out
+
+
+def posterior(prior: Mapping[str, int], weights: Mapping[str, Mapping[str, float]], keys: Iterable[str],
+              feats: Iterable[str]) -> dict[str, float]:
+    """P(key | feats) ∝ prior[key] · exp(logit[key]) over ``keys`` (each with a prior count above 0)."""
+    keys = list(keys)
+    z = logits(weights, keys, feats)
+    scores = {k: math.log(prior[k]) + z[k] for k in keys}
+    top = max(scores.values(), default=0.0)
+    total = sum(math.exp(v - top) for v in scores.values())
+    return {k: math.exp(v - top) / total for k, v in scores.items()}
 
 
 @dataclass(frozen=True)

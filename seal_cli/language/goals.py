@@ -26,14 +26,13 @@ in the goal, after the last frame) is marked ``Evoked.inferred`` with the probab
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 from seal_cli.frames.taxonomy import class_key, class_words
-from seal_cli.language.chooser import logits, sentence_features
+from seal_cli.language.chooser import posterior, sentence_features
 from seal_cli.language.reference import back_unplaced
 from seal_cli.language.values import Evoked, Parse, Phrase
 
@@ -80,11 +79,7 @@ class GoalModel:
         """P(goal | features) over ``none`` and the goals among ``present`` (class keys)."""
         here = set(present)
         keys = [k for k in self.prior if self.prior[k] and (k == NOWHERE or k in here)]
-        z = logits(self.weights, keys, features)
-        scores = {k: math.log(self.prior[k]) + z[k] for k in keys}
-        top = max(scores.values(), default=0.0)
-        total = sum(math.exp(v - top) for v in scores.values())
-        return {k: math.exp(v - top) / total for k, v in scores.items()}
+        return posterior(self.prior, self.weights, keys, features)
 
 
 def goalless(parse: Parse) -> int | None:

@@ -31,14 +31,13 @@ other statistics (``Vocabulary.with_usage(WordUsage())``) turns it off.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 from seal_cli.frames.taxonomy import class_key
-from seal_cli.language.chooser import logits
+from seal_cli.language.chooser import posterior
 from seal_cli.language.english import NP_OPENERS, NUMBERS
 from seal_cli.language.values import Evoked, Parse, Phrase
 
@@ -108,11 +107,7 @@ class StepModel:
     def probabilities(self, features: Iterable[str]) -> dict[str, float]:
         """P(step | features) for each step and ``none`` the prior knows."""
         keys = [k for k in (*STEPS, NONE) if self.prior.get(k)]
-        z = logits(self.weights, keys, features)
-        scores = {k: math.log(self.prior[k]) + z[k] for k in keys}
-        top = max(scores.values(), default=0.0)
-        total = sum(math.exp(v - top) for v in scores.values())
-        return {k: math.exp(v - top) / total for k, v in scores.items()}
+        return posterior(self.prior, self.weights, keys, features)
 
     def left_rate(self, step: str) -> float:
         """How often a sentence that ended at two steps, ``step`` last, meant the thing left in that

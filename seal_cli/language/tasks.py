@@ -31,7 +31,6 @@ turns it off.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from functools import partial
@@ -39,7 +38,7 @@ from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 from seal_cli.frames.taxonomy import class_key
-from seal_cli.language.chooser import logits
+from seal_cli.language.chooser import posterior
 from seal_cli.language.steps import add_step
 from seal_cli.language.values import Evoked, Parse, Phrase
 
@@ -110,11 +109,7 @@ class TaskModel:
     def probabilities(self, features: Iterable[str]) -> dict[str, float]:
         """P(task | features) for each task kind the prior knows."""
         keys = [k for k in TASKS if self.prior.get(k)]
-        z = logits(self.weights, keys, features)
-        scores = {k: math.log(self.prior[k]) + z[k] for k in keys}
-        top = max(scores.values(), default=0.0)
-        total = sum(math.exp(v - top) for v in scores.values())
-        return {k: math.exp(v - top) / total for k, v in scores.items()}
+        return posterior(self.prior, self.weights, keys, features)
 
 
 def _light(library: Library, phrase: Phrase | None) -> bool:
