@@ -171,15 +171,9 @@ def _what_here(message: str, here: str | None, names: MapNames | None) -> Questi
     room or place), when it asks what or who is there and names no place ("go to the bedroom and tell me *what
     you see*")."""
     words = message.lower().replace("'", " ").replace("’", " ").split()
-    if here is None or names is None or len(words) < 2 or words[0] not in ASKING_WHAT \
-            or not all(w in SEEN_HERE for w in words[1:]):
+    if len(words) < 2 or words[0] not in ASKING_WHAT or not all(w in SEEN_HERE for w in words[1:]):
         return None
-    referent = names.by_id(here)
-    if referent is None or referent.kind not in ("room", "place"):
-        return None
-    place = names.map.place(referent.id) if referent.kind == "place" else None
-    return Question("what", referent.id, "on" if place is not None and not place.openable else "in",
-                    ASKING_WHAT[words[0]])
+    return _what_is_at(here, names, ASKING_WHAT[words[0]])
 
 
 def _state(asked: str, names: MapNames | None) -> Question:
@@ -198,12 +192,17 @@ def _state(asked: str, names: MapNames | None) -> Question:
 def _looked_at(bindings: Sequence[Binding], names: MapNames | None) -> Question | None:
     """A Find with a ground and no theme ("look in the fridge", "look around the kitchen") asks what
     is there."""
-    ground = bindings[0].elements.get("ground") if bindings else None
-    referent = names.by_id(ground) if names is not None and ground is not None else None
-    if referent is None or referent.kind not in ("room", "place"):
+    return _what_is_at(bindings[0].elements.get("ground") if bindings else None, names)
+
+
+def _what_is_at(where: str | None, names: MapNames | None, asks_for: str = "thing") -> Question | None:
+    """The ``what`` question of a map room or place (``where``, its id): what is on a place one cannot open,
+    in a room or a place one opens; None if ``where`` is neither."""
+    referent = names.by_id(where) if names is not None and where is not None else None
+    if names is None or referent is None or referent.kind not in ("room", "place"):
         return None
-    place = names.map.place(referent.id) if names is not None and referent.kind == "place" else None
-    return Question("what", referent.id, "on" if place is not None and not place.openable else "in")
+    place = names.map.place(referent.id) if referent.kind == "place" else None
+    return Question("what", referent.id, "on" if place is not None and not place.openable else "in", asks_for)
 
 
 def read_questions(parse: Parse, commanded: Sequence[Binding], names: MapNames | None) -> dict[Binding, Question]:
