@@ -202,9 +202,9 @@ class Agent:
         frame's source can only be the speaker's word); off where a frame's source is the grounded truth (the
         benchmarks' scenes), and where :attr:`told` is given."""
         self.missed: set[str] = set()
+        """Places the command said a thing was in, looked into without finding it (said once)."""
         self.unfound: set[str] = set()
         """Kinds of thing the command said the one sought is in or on, searched for without finding one."""
-        """Places the command said a thing was in, looked into without finding it (said once)."""
         self.missed_rooms: set[tuple[str, str]] = set()
         """(class, room) for each room the command said a thing was to be taken from, looked all over without
         finding one: the search widens to the rest of the house (:meth:`source_room` no longer bounds it)."""
@@ -1435,11 +1435,10 @@ class Agent:
         pose = self.world.robot.pose
         detections = self.world.observe()
         self.looks.append(pose)
-        at_hand = {k.id for k in self.known.values() if not k.movable and self.world.items[k.id].is_open
-                   and self.world.within_reach(k.id, pose)}
-        self.inspected |= at_hand
-        self.inspected |= {k.id for k in self.known.values() if k.movable and k.id in self.world.items   # a thing
-                           and self.world.items[k.id].is_open and self.world.within_reach(k.id, pose)}  # looked at
+        open_near = {k.id: k.movable for k in self.known.values() if k.id in self.world.items
+                     and self.world.items[k.id].is_open and self.world.within_reach(k.id, pose)}
+        self.inspected |= open_near.keys()          # places, and things looked into ("the lid off the pan")
+        at_hand = {i for i, movable in open_near.items() if not movable}
         if self.unsearched:
             region = self.world.sensor.region(pose)
             seen = region.contains(self.scene.map.free_centres)
