@@ -671,10 +671,7 @@ class Agent:
         things = [p for p in self.said_places(value) if self.world.items[p].movable and p not in self.inspected
                   and p not in self.unreachable]
         if things:
-            self.say("search", f"looks for {self.said(value)} where the command said: {things[0]}", target=value)
-            self.look_into(things[0], value, binding, role, f"goes to {things[0]}")
-            if things[0] not in self.inspected:
-                self.unreachable.add(things[0])
+            self.look_where_said_at(things[0], value, binding, role)
             return Outcome(True, "looked")
         for kind in self.said_things(value):
             self.say("search", f"looks for the {spoken(kind)} first, where the command said the {self.said(value)} "
@@ -686,6 +683,14 @@ class Agent:
                     break
             return Outcome(True, "looked")
         return None
+
+    def look_where_said_at(self, where: str, value: str, binding: Binding, role: str | None) -> None:
+        """Look into a place or thing the command said a thing of this kind is in or on, saying so; not tried again
+        if the robot could not look into it."""
+        self.say("search", f"looks for {self.said(value)} where the command said: {where}", target=value)
+        self.look_into(where, value, binding, role, f"goes to {where}")
+        if where not in self.inspected:
+            self.unreachable.add(where)
 
     def missed_where_said(self, value: str) -> None:
         """Say once, per place, that the thing sought is not where the command said it was, once the robot
@@ -982,10 +987,7 @@ class Agent:
         role = next((r for r, v in binding.values if v == value), None)
         said = [p for p in self.said_places(value) if p not in self.inspected and p not in self.unreachable]
         if said and not self.world.items[said[0]].movable and self.sweep is None:   # the command's place first
-            self.say("search", f"looks for {self.said(value)} where the command said: {said[0]}", target=value)
-            self.look_into(said[0], value, binding, role, f"goes to {said[0]}")
-            if said[0] not in self.inspected:
-                self.unreachable.add(said[0])
+            self.look_where_said_at(said[0], value, binding, role)
             return None
         if self.sweep is None:      # a room said and looked all over already is not looked over again
             done = [r for r in self.scene.map.rooms if (self.class_of(value), r.name) in self.missed_rooms]
