@@ -252,13 +252,15 @@ QUESTION_MEANS = "tell"
 WHERE_QUESTIONS = frozenset(["where is", "where are", "where 's", "where's", "where're", "where did", "where has",
                              "where have", "where had", "is there", "are there",
                              "is there any", "are there any", "do we have", "do we have any", "have we got",
-                             "have we got any", "do we still have", "do we still have any"])
+                             "have we got any", "do we still have", "do we still have any",
+                             "whereabouts is", "whereabouts are", "whereabouts 's", "whereabouts's"])
 """Questions about where a thing is, or whether there is one ("*where is* the cup?", "*is there* a cup in the
-kitchen?", "*do we have any* eggs?", "*where did* the cat go?", "*where have* my keys gone?"): they mean "find ..."
+kitchen?", "*do we have any* eggs?", "*where did* the cat go?", "*where have* my keys gone?", "*whereabouts is* the
+remote?": "whereabouts" asking where, as only before "is"/"are"): they mean "find ..."
 (``WHERE_MEANS``); an auxiliary before a subject pronoun is ``WHERE_DID``'s ("where did *I* leave ...")."""
 WHERE_MEANS = "find"
-WHERE_DID = (frozenset(["where"]), frozenset(["did", "do", "does", "have", "has", "can", "could", "should",
-                                              "would", "will", "might", "may"]),
+WHERE_DID = (frozenset(["where", "whereabouts"]),
+             frozenset(["did", "do", "does", "have", "has", "can", "could", "should", "would", "will", "might", "may"]),
              frozenset(["i", "you", "we", "they", "he", "she"]))
 """"*Where did I leave* my glasses?", "*where do we keep* the batteries", "*where can I find* the sponge": where,
 an auxiliary or a modal, a subject and any verb, then what to find."""

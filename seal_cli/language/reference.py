@@ -189,11 +189,15 @@ class Reference:
 
     def place_before(self, before: int) -> tuple[int, str] | None:
         """The place named last in an earlier clause (a goal, ground or source said, not a default, and no
-        person; through a "there" or pronoun that stood for one), as (frame index, element); None."""
+        person; through a "there" or pronoun that stood for one), as (frame index, element); None. A thing a
+        clause opened (its frame's actions open it) is a place too: "open the wardrobe and put the coat in
+        *there*" (in the wardrobe)."""
         best: tuple[int, tuple[int, str]] | None = None
         for index in range(before):
+            opened = {arg for action in self.library.frame(self.frames[index].frame).actions
+                      if action.name == "open" for arg in action.args}
             for role, phrase in self.frames[index].elements.items():
-                if phrase.default or phrase.span is None or role not in PLACES:
+                if phrase.default or phrase.span is None or role not in PLACES and role not in opened:
                     continue
                 target = phrase.refers_to or (index, role)
                 if self.frames[target[0]].elements[target[1]].kind != "thing":

@@ -132,8 +132,10 @@ def test_an_arena_vocabulary_names_its_people_whatever_their_case(tmp_path: Path
     assert _recipient_or_goal("deliver the knife to robin", library, vocab) == ("recipient", "Robin", "person")
     assert _recipient_or_goal("take the orange juice to jules", library, vocab)[0] == "recipient"
     assert _recipient_or_goal("deliver the knife to the sink", library, vocab)[0] == "goal"
-    # without a vocabulary naming them, an unknown lower-case word is read as before: where it goes
-    assert _recipient_or_goal("deliver the knife to robin", library, None) == ("goal", "robin", "thing")
+    # without a vocabulary naming them, a word of the dictionary is a name only said bare and singular where a
+    # person goes (words19: a bird is delivered nothing)
+    assert _recipient_or_goal("deliver the knife to robin", library, None)[0] == "recipient"
+    assert _recipient_or_goal("deliver the knife to the robin", library, None) == ("goal", "robin", "thing")
 
 
 def test_a_maps_people_are_recipients_whatever_their_case(library: Library) -> None:
@@ -269,7 +271,8 @@ def test_the_people_of_a_map_or_a_vocabulary_are_names_however_written(library: 
     vocab = load_vocabulary(path)
     (bring,) = parse_command("deliver the knife to robin", library, vocab).frames
     assert bring.elements["recipient"].text == "robin"                     # a bird to the dictionary, a name here
-    assert "recipient" not in parse_command("deliver the knife to robin", library).frames[0].elements
+    assert parse_command("take robin to the kitchen", library, vocab).frames[0].frame == "Guide"
+    assert parse_command("take robin to the kitchen", library).frames[0].frame == "Bring"   # no world: a bird
     path.write_text("classes: [knife]\npeople: [Robin, 3]\n")
     with pytest.raises(SealError, match="people: must be a list of names") as err:
         load_vocabulary(path)

@@ -101,6 +101,7 @@ INSIDE: tuple[Rule, ...] = (
     statements.TOLD,
     statements.TOLD_HOW_TO,
     requests.HOW_MANY_SAID,
+    verbs.MOVED_YOURSELF,
     politeness.PLEASE_INSIDE,
     clauses.SOMETHING_TO,
     verbs.TELL_TO,

@@ -120,9 +120,11 @@ def _lower_case_name(s: State, i: int) -> Match | None:
     clause whose verb may have a recipient ("deliver the knife to *jamie*", "fetch a towel for *jo*"), or
     after "with" in one whose verb has a goal ("go with *sam*": who goes along), or after "near" ("close to", "next
     to") in one whose verb with "with" is a unit of a frame of people ("stay close to *morgan*": "stay with" is
-    Follow's, keeping near someone who moves is moving with them; there even a word the dictionary lists only as
-    a noun, said bare and singular before the clause's end or a preposition: "morgan", a breed of horse, not
-    "home"), or right after a verb whose
+    Follow's, keeping near someone who moves is moving with them); after any of these prepositions even a word
+    the dictionary lists only as a noun, said bare and singular before the clause's end or a preposition
+    ("deliver the cup to *robin* in the kitchen", "go with *angel* to the kitchen": a bird, a spirit; not "home",
+    an adverb too, nor a thing the taxonomy knows: "bring it to bed"; "with" right after the verb: "put the plate
+    with *apple* in the fridge" says what the plate holds), or right after a verb whose
     frame's first element is a person ("take *jordan* to the bedroom", unless it ends in "s" as plurals do:
     "take cheezits to the kitchen" stays a thing): a name written in lower case. A word the map or the
     vocabulary names as a person is a name wherever it is (the parser writes it capitalised for the
@@ -139,11 +141,12 @@ def _lower_case_name(s: State, i: int) -> Match | None:
                                          s.out[-1].info == "with" and verb in s.lexicon.goals or near) or \
             not low.isalpha() or w.text != low or low in CLOSED or low in s.lexicon.things or s.noun_follows(i + 1):
         return None
-    if in_dictionary(low) and not (near and parts_of_speech(low) == {"noun"} and not is_plural(low) and (
+    if in_dictionary(low) and not (s.prev_tag() == Tag.PREP and parts_of_speech(low) == {"noun"} and
+                                   not is_plural(low) and (s.out[-1].info != "with" or
+                                                           s.out[-2].tag in (Tag.VERB, Tag.PARTICLE)) and (
             s.clause_end(i + 1) == i + 1 or s.next_lower(i) in PREPOSITIONS)):
         return None                      # "stay close to *morgan*" (a breed of horse): no one stays close to a noun
     return s.emit(i, 1, Tag.NAME)        # said bare, singular, at the clause's end: who it is kept near
-    return s.emit(i, 1, Tag.NAME)
 
 
 def _word(s: State, i: int) -> Match | None:
@@ -187,6 +190,8 @@ LOWER_CASE_NAME = Rule("name in lower case", _lower_case_name, (
     Example("go with sam to the bedroom", "sam", Tag.NAME),
     Example("take jordan to the bedroom", "jordan", Tag.NAME),
     Example("stay close to morgan", "morgan", Tag.NAME),
+    Example("deliver the cup to robin in the kitchen", "robin", Tag.NAME),
+    Example("go with angel to the kitchen", "angel", Tag.NAME),
 ), None, "a word no dictionary lists, alone after 'to' or 'for' (a clause that may have a recipient) or "
          "'with' (one that has a goal): a name")
 WORD = Rule("open word", _word, (

@@ -56,7 +56,16 @@ from seal_cli.language.english import (
     WISHED_PLACED,
     WISHED_PLACES,
 )
-from seal_cli.language.morphology import gerund_lemma, in_dictionary, is_adjective, noun_lemma, participles, verb_lemma
+from seal_cli.language.morphology import (
+    gerund_lemma,
+    in_dictionary,
+    is_adjective,
+    is_plural,
+    noun_lemma,
+    participles,
+    parts_of_speech,
+    verb_lemma,
+)
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import CLOSED, State, first_words, longest_phrase, match_phrase, merge
 from seal_cli.language.tags import Tag
@@ -589,12 +598,14 @@ def _thing_placed(s: State, i: int) -> Match | None:
     asks to put it there (``PLACE_MEANS``, unsaid before the thing): the sentence starts at ``i``, the thing's
     head is a class the library knows, one preposition of place (``WISHED_PLACES``) and its phrase end the
     sentence, and no verb is said ("the mug sitting in the sink", "cups in the sink need washing" stay as
-    they are)."""
+    they are). Asked, it is no request: "any spoons in the drawer?" (``ANY_ASKED``), "mug in the sink?"."""
     words = s.words
     if s.out and s.out[-1].tag not in (Tag.END, Tag.POLITE) or PLACE_MEANS not in s.lexicon.units or \
-            s.verb_at(i) is not None:
+            s.verb_at(i) is not None or words[i].lower in _ANY_ASKED:
         return None
     end = _sentence_end(s, i)
+    if end < len(words) and words[end].lower == "?":
+        return None
     while end > i and words[end - 1].lower in (",", "please", "now"):
         end -= 1
     k = i + (1 if words[i].lower in NP_OPENERS else 0)
@@ -909,12 +920,16 @@ _WISHES_OF = (("wants",), ("needs",), ("would", "like"))
 def _wish_of(s: State, i: int) -> Match | None:
     """"*Anna wants* the cup", "*dad needs* his glasses", "*ellie wants* a drink": a wish said of a name, of a noun
     the taxonomy lists as a person said bare (a name to the family: "dad", "grandma"), or of a word no dictionary
-    lists (a name written in lower case), first in the sentence or as a name is, brings the thing to them."""
+    lists (a name written in lower case), first in the sentence or as a name is, brings the thing to them. First in
+    the sentence, a word the dictionary lists only as a noun, said bare and singular and no thing the taxonomy knows,
+    is a name too ("*morgan needs* a glass of water": a breed of horse; no one brings water to a bare noun), as after
+    "to" (``LOWER_CASE_NAME``); "coffee needs sugar" stays an error."""
     words = s.words
     low = words[i].lower
     if REQUEST_MEANS not in s.lexicon.units or s.verb_at(i) is not None or not (
             capitalised(words[i]) or low in s.lexicon.people or
-            low.isalpha() and words[i].text == low and low not in CLOSED and not in_dictionary(low)):
+            low.isalpha() and words[i].text == low and low not in CLOSED and (
+                not in_dictionary(low) or _bare_noun_first(s, i))):
         return None
     for wish in _WISHES_OF:
         n = 1 + len(wish)
@@ -925,6 +940,14 @@ def _wish_of(s: State, i: int) -> Match | None:
             return Match(n, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, REQUEST_MEANS),
                              words[i].tagged(Tag.NAME)), expect=False, verb=REQUEST_MEANS, using=False)
     return None
+
+
+def _bare_noun_first(s: State, i: int) -> bool:
+    """Whether the word at ``i`` starts the sentence and is listed only as a noun, singular, and no thing the
+    taxonomy knows ("morgan", "robin": a name written in lower case where a person is the subject)."""
+    low = s.words[i].lower
+    return (not s.out or s.out[-1].tag == Tag.END) and parts_of_speech(low) == {"noun"} and not is_plural(low) and \
+        low not in s.lexicon.things
 
 
 _WISHED = frozenset(w for wish in _WISHES_OF for w in wish[:1]) | frozenset(["want", "need"])
@@ -1084,6 +1107,7 @@ WHERE = Rule("where is", _where, (
     Example("where is the cup?", "where is", Tag.VERB),
     Example("Is there a cup in the kitchen?", "Is there", Tag.VERB),
     Example("Do we have any eggs?", "Do we have any", Tag.VERB),
+    Example("whereabouts is the remote?", "whereabouts is", Tag.VERB),
 ), _WHERE_FIRST, "'where is X', 'is there X': find X")
 WHERE_DID_RULE = Rule("where did I leave", _where_did, (
     Example("Where did I leave my glasses?", "Where did I leave", Tag.VERB),
@@ -1108,6 +1132,7 @@ ANY_ASKED = Rule("any X somewhere, asked", _any_asked, (
     Example("anyone in the bathroom?", "anyone", Tag.PRON),
     Example("any milk left in the fridge?", "any", Tag.DET),
     Example("any biscuits left?", "any", Tag.DET),
+    Example("any spoons in the drawer?", "any", Tag.DET),
 ), _ANY_ASKED, "'anyone in the bathroom?', 'any milk in the fridge?': find them there ('is there' unsaid)")
 WISHED_STATE = Rule("a wish for a thing's state", _wished_state, (
     Example("I'd like the blinds closed", "I'd like", Tag.VERB),
@@ -1156,6 +1181,7 @@ WISH_OF = Rule("a person's wish for a thing", _wish_of, (
     Example("Ben needs a towel.", "Ben needs", Tag.VERB),
     Example("Anna would like the red mug", "Anna would like", Tag.VERB),
     Example("dad wants his reading glasses", "dad wants", Tag.VERB),
+    Example("morgan needs a glass of water", "morgan needs", Tag.VERB),
 ), None, "'Anna wants X', 'Ben needs X': bring X to the person")
 WISH_OF_PHRASE = Rule("a wish said of a person's phrase", _wish_of_phrase, (
     Example("the person at the armchair needs a towel", "the", Tag.DET),

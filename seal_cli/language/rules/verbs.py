@@ -3,9 +3,10 @@
 
 from __future__ import annotations
 
+from seal_cli.language.english import PARTICLES, PATH_ALONE, PATH_MEANS, PREPOSITIONS
 from seal_cli.language.morphology import in_verb_tables, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import CLOSED, State, merge
+from seal_cli.language.state import CLOSED, State, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 
@@ -57,6 +58,27 @@ def _purpose(s: State, i: int) -> Match | None:
     return None
 
 
+def _path_at(words: list[Word], k: int) -> bool:
+    """Whether a preposition of a path ("to", "into", "onto") starts at ``k``."""
+    n = match_phrase(words, k, PREPOSITIONS) if k < len(words) else 0
+    return bool(n) and PREPOSITIONS[" ".join(w.lower for w in words[k:k + n])] in PATH_ALONE
+
+
+def _moved_yourself(s: State, i: int) -> Match | None:
+    """"get *yourself* to the bedroom", "bring yourself over to the sofa": a verb that moves what it takes to a
+    goal, said of the robot itself ("yourself", right after the verb) and then a path ("to", "into", "onto",
+    after a particle or not), is going there (``PATH_MEANS``): the verb is read as going, "yourself" with it."""
+    words, out = s.words, s.out
+    if PATH_MEANS not in s.lexicon.units or s.verb_index != len(out) - 1 or out[-1].tag != Tag.VERB or \
+            str(out[-1].info) not in s.lexicon.goals or str(out[-1].info) == PATH_MEANS:
+        return None
+    if not _path_at(words, i + 1) and not (i + 1 < len(words) and words[i + 1].lower in PARTICLES and
+                                          _path_at(words, i + 2)):
+        return None                                               # "bring yourself *over* to the sofa"
+    verb = out[-1]
+    return Match(1, last=Word(s.text_of(verb.start, words[i].end), verb.start, words[i].end, Tag.VERB, PATH_MEANS))
+
+
 SPLIT_PARTICLE = Rule("split particle", _split_particle, (
     Example("pick the cup up", "up", Tag.PARTICLE),
     Example("turn the lamp on", "on", Tag.PARTICLE),
@@ -79,3 +101,7 @@ TOLD_TO_DO = Rule("told to do what the robot cannot", _told_to_do, (
 PURPOSE = Rule("clause of purpose", _purpose, (
     Example("take the remote to turn on the lamp", "to", Tag.SEP),
 ), frozenset(["to"]), "'to' and a verb of the library with its object: a clause of its own")
+MOVED_YOURSELF = Rule("a verb of moving said of yourself", _moved_yourself, (
+    Example("get yourself to the bedroom", "get yourself", Tag.VERB),
+    Example("bring yourself over to the sofa", "bring yourself", Tag.VERB),
+), frozenset(["yourself"]), "'get yourself to X', 'take yourself to X': the robot moves itself there: go to X")
