@@ -1074,3 +1074,28 @@ def test_what_no_frame_does_is_refused_naming_the_verb(text: str, verb: str, lib
     # it is Tell, PropBank's sing.01 in VerbNet's manner_speaking, a unit of the verb data)
     with pytest.raises(CommandError, match=f"unknown verb '{verb}'"):
         parse_command(text, library)
+
+
+def test_an_indefinite_asked_with_a_posture_and_a_place_is_found(library: Library) -> None:
+    # words19: "is anyone sitting at the table?" was LookAt(theme "anyone"): nothing named to check
+    assert texts("is anyone sitting at the table?", library) == [("Find", {"theme": "anyone", "ground": "the table"})]
+    assert [f for f, _ in texts("is the baby sleeping?", library)] == ["LookAt"]
+
+
+def test_a_phrasal_verb_after_and_is_a_clause_never_a_noun_of_the_place(library: Library) -> None:
+    # words19: "head back to the kitchen and tidy up" was Go(goal "the kitchen and tidy"), the clause swallowed
+    for text in ("head back to the kitchen and tidy up", "go to the kitchen and tidy up the toys"):
+        with pytest.raises(CommandError, match="unknown verb 'tidy'"):
+            parse_command(text, library)
+    assert texts("put a cup and pen on the desk", library) == [
+        ("Place", {"theme": "a cup and pen", "goal": "the desk"})]
+    assert texts("bring the salt and pepper up", library)[0][1]["theme"] == "the salt and pepper"
+
+
+def test_for_a_person_to_do_something_is_theirs_not_the_robots(library: Library) -> None:
+    # words19: "wait for alex to arrive" added a Go (arriving read as the robot's purpose)
+    parse = parse_command("go to the kitchen and wait for alex to arrive", library)
+    assert [f.frame for f in parse.frames] == ["Go", "Wait"] and parse.frames[1].condition == "to arrive"
+    parse = parse_command("wait for the guest to come in and then greet them", library)
+    assert [f.frame for f in parse.frames] == ["Wait", "Greet"] and parse.frames[0].condition == "to come in"
+    assert [f for f, _ in texts("fetch a knife for me to cut the bread", library)] == ["Bring", "Slice"]

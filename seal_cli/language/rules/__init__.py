@@ -106,6 +106,7 @@ INSIDE: tuple[Rule, ...] = (
     clauses.SOMETHING_TO,
     verbs.TELL_TO,
     verbs.TOLD_TO_DO,
+    clauses.FOR_SUBJECT_TO,
     verbs.PURPOSE,
     clauses.UNTIL_ARRIVAL,
     clauses.UNTIL_PLACE,

@@ -10,11 +10,12 @@ from seal_cli.language.english import (
     PARTICLES,
     PERSON_PRONOUNS,
     PREPOSITIONS,
+    PRONOUNS,
     SEPARATOR_WORDS,
     VERB_JOINTS,
     VERB_TAKES,
 )
-from seal_cli.language.morphology import is_adjective, parts_of_speech, verb_lemma
+from seal_cli.language.morphology import in_verb_tables, is_adjective, noun_lemma, parts_of_speech, verb_lemma
 from seal_cli.language.rule import AFTER_SEP, Example, Match, Rule
 from seal_cli.language.state import CLOSED, INDEFINITE, REL_FIRST, SEP_FIRST, SUB_FIRST, State, match_phrase, merge
 from seal_cli.language.tags import Tag
@@ -42,6 +43,32 @@ def _something_to(s: State, i: int) -> Match | None:
 def _until_arrival(s: State, i: int) -> Match | None:
     n = s.until_arrival(i)
     return s.emit(i, n, Tag.PREP, "to") if n else None        # "follow him until you reach the patio"
+
+
+def _for_subject_to(s: State, i: int) -> Match | None:
+    """"wait for Alex *to arrive*", "hold the door for the guest to come in": "for" (or a unit ending in it: "wait
+    for"), a noun phrase, then "to" and a
+    verb is a clause whose subject is the phrase (what they are to do, no clause of the robot's purpose): kept as
+    one ``COND`` word, as "until the guest arrives" is. Of a person only ("a plate for an egg to rest on" is
+    left as it was)."""
+    words, out = s.words, s.out
+    if s.verb_index < 0 or i + 1 >= len(words) or not in_verb_tables(words[i + 1].lower) or \
+            verb_lemma(words[i + 1].lower) != words[i + 1].lower:
+        return None
+    k = len(out) - 1
+    while k > s.verb_index and out[k].tag in (Tag.DET, Tag.POSS, Tag.NUM, Tag.WORD, Tag.NAME, Tag.PRON):
+        k -= 1
+    said_for = out[k].tag == Tag.PREP and out[k].info == "for" or k == s.verb_index and out[k].lower.endswith(" for")
+    last = out[-1]
+    person = last.tag == Tag.NAME or last.tag == Tag.PRON and last.lower in PERSON_PRONOUNS or \
+        last.tag == Tag.WORD and noun_lemma(last.lower) in s.lexicon.people
+    if k == len(out) - 1 or k < s.verb_index or not said_for or not person or \
+            out[k + 1].tag == Tag.PRON and out[k + 1].lower in ("me", "us"):
+        return None                       # "fetch a knife for me to cut the bread": what the robot brings it for
+    end = s.cond_end(i + 1)
+    if words[end - 1].lower in ("and", "but") and end - 1 > i + 1:
+        end -= 1                          # "... to come in *and* then greet them": the joint is the clauses'
+    return Match(end - i, (merge(words, i, end - i, Tag.COND, "until"),))
 
 
 def _until_place(s: State, i: int) -> Match | None:
@@ -128,6 +155,10 @@ UNTIL_ARRIVAL = Rule("until you reach a place", _until_arrival, (
     Example("follow the man in blue until you reach the patio", "until you reach", Tag.PREP),
     Example("lead Jo till we get to the exit", "till we get to", Tag.PREP),
 ), frozenset(["until", "till"]), "'until you reach/get to/arrive at' a noun phrase after a verb of motion: how far")
+FOR_SUBJECT_TO = Rule("for X to V", _for_subject_to, (
+    Example("go to the kitchen and wait for alex to arrive", "to arrive", Tag.COND),
+    Example("wait at the door for the guest to come in", "to come in", Tag.COND),
+), frozenset(["to"]), "'for X to V': X is to do V (kept as a condition), no clause of the robot's purpose")
 UNTIL_PLACE = Rule("until a place", _until_place, (
     Example("follow me until the gate", "until", Tag.PREP),
 ), frozenset(["until", "till"]), "'until' a noun phrase after a verb of motion: how far")
@@ -230,12 +261,30 @@ def _unknown_unjoined(s: State, i: int) -> Match | None:
     return Match(0, (Word("", words[i].start, words[i].start, Tag.SEP),), expect=True)
 
 
+def _particle_verb(s: State, j: int) -> bool:
+    """Whether the word at ``j`` is a verb of English said with a particle that ends the clause or comes before an
+    object ("and *tidy up*", "and tidy up the toys"): a phrasal verb, though the word is mostly an adjective."""
+    words = s.words
+    k = j + 1
+    if k >= len(words) or words[k].lower not in PARTICLES or not in_verb_tables(words[j].lower):
+        return False
+    if k + 1 >= len(words) or words[k + 1].lower in END_MARKS or match_phrase(words, k + 1, SEPARATOR_WORDS):
+        return True
+    return words[k].lower in _OBJECT_PARTICLES and (words[k + 1].lower in NP_OPENERS or words[k + 1].lower in PRONOUNS)
+
+
+_OBJECT_PARTICLES = frozenset(["up", "out", "away", "aside"])
+"""Particles said before a verb's object that are no preposition of a place the object is at ("tidy *up* the toys";
+"put a cup and pen *on* the desk": where the pen goes)."""
+
+
 def _verb_after_joint(s: State, i: int) -> Match | None:
     """After "and", "then" or "," inside a clause, a bare word (no determiner) that is mostly used as a verb, in its
     base form, and names no thing the library knows, before what a verb takes (a determiner, a pronoun, "here" or
     "there", "please", a preposition or a particle, or the end of the command): a clause of its own ("go to the
     kitchen and *sleep* there", "take the cup and *dance*"), so its verb is a frame's or reported as unknown, never
-    read as a noun of a list ("bring the cup and *plate*", "the salt and *pepper*")."""
+    read as a noun of a list ("bring the cup and *plate*", "the salt and *pepper*"). A verb said with a particle
+    ending the clause is one though mostly an adjective ("head back to the kitchen and *tidy up*")."""
     words = s.words
     n = match_phrase(words, i, SEPARATOR_WORDS)
     if not n or s.verb_index < 0 or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.HERE, Tag.PARTICLE):
@@ -248,7 +297,7 @@ def _verb_after_joint(s: State, i: int) -> Match | None:
     w = words[j]
     low = w.lower
     if not low.isalpha() or capitalised(w) or low in CLOSED or low in s.lexicon.things or verb_lemma(low) != low or \
-            not mostly_verb(low) or s.verb_after(j):
+            not (mostly_verb(low) or _particle_verb(s, j)) or s.verb_after(j):
         return None                       # a verb of the library: the separator's ("and *put* it on the table")
     k = j + 1
     if not (k >= len(words) or words[k].lower in VERB_TAKES or match_phrase(words, k, HERE_WORDS) or
@@ -263,6 +312,7 @@ VERB_AFTER_JOINT = Rule("verb after a joint", _verb_after_joint, (
     Example("grab the towel, and kneel down", "kneel", Tag.WORD),
     Example("go to the sofa and sit", "sit", Tag.WORD),
     Example("grab the mug then sit down", "sit", Tag.WORD),
+    Example("head back to the kitchen and tidy up", "tidy", Tag.WORD),
 ), frozenset(VERB_JOINTS), "a bare word mostly used as a verb after 'and', 'then' or ',', before what a verb takes: "
    "a clause of its own, not a noun of a list")
 UNJOINED = Rule("clause without a joint", _unjoined, (

@@ -214,7 +214,8 @@ def _whether_is(s: State, i: int) -> Match | None:
     return Match(1, (words[i].tagged(Tag.VERB, WHERE_MEANS),), expect=False, verb=WHERE_MEANS, using=False)
 
 
-_ANY_ASKED = frozenset(["anyone", "anybody", "anything", "someone", "somebody", "something", "any"])
+_INDEFINITES = frozenset(["anyone", "anybody", "anything", "someone", "somebody", "something"])
+_ANY_ASKED = _INDEFINITES | frozenset(["any"])
 """Words that open a question of whether some such thing is somewhere, said without "is there"."""
 
 
@@ -389,8 +390,10 @@ def _ensured_dropped(s: State, i: int) -> Match | None:
 def _state_question(s: State, i: int) -> Match | None:
     """"*Is* the fridge open?", "are the windows in the bedroom shut", "is the kitchen light still on?": a
     yes/no question about a thing's state is checking the thing (``STATE_MEANS``, a unit of LookAt); the state
-    is kept (``ASKED``, by :data:`STATE_ASKED`)."""
-    if STATE_MEANS not in s.lexicon.units or _state_question_end(s, i + 1) is None:
+    is kept (``ASKED``, by :data:`STATE_ASKED`). Of an indefinite said with a place ("is *anyone* sitting at the
+    table?"), no thing to check is named: whether one is there is finding (``WHETHER_IS_RULE``)."""
+    if STATE_MEANS not in s.lexicon.units or _state_question_end(s, i + 1) is None or \
+            s.words[i + 1].lower in _INDEFINITES and _place_asked(s, i + 1):
         return None
     return Match(1, (s.words[i].tagged(Tag.VERB, STATE_MEANS),), expect=False, verb=STATE_MEANS, using=False)
 
@@ -1127,6 +1130,7 @@ LEFT_ASKED_RULE = Rule("did someone leave X in a state", _left_asked, (
 WHETHER_IS_RULE = Rule("is X somewhere", _whether_is, (
     Example("Is Ben in the kitchen?", "Is", Tag.VERB),
     Example("are the apples in the fridge?", "are", Tag.VERB),
+    Example("is anyone sitting at the table?", "is", Tag.VERB),
 ), _WHETHER_IS, "'is X in Y?': find X in Y, and answer whether it is there")
 ANY_ASKED = Rule("any X somewhere, asked", _any_asked, (
     Example("anyone in the bathroom?", "anyone", Tag.PRON),
