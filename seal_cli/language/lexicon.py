@@ -49,6 +49,7 @@ from seal_cli.language.morphology import (
     is_plural,
     noun_lemma,
     participles,
+    parts_of_speech,
     verb_lemma,
 )
 from seal_cli.language.rule import AFTER_SEP, Match, Rule
@@ -107,6 +108,9 @@ class Lexicon:
     the lid on", "put your coat on": no such unit)."""
     state_verbs: frozenset[str] = frozenset()
     """The verbs of the split units ("put", "leave", "get"): they put a thing in a state ("leave the door *open*")."""
+    people_only: frozenset[str] = frozenset()
+    """Units of ``escorts`` that no frame with another first element has ("meet", "greet", "follow"; not "take",
+    "bring"): what they take first is a person, whatever the word."""
 
     @classmethod
     def of(cls, library: Library) -> Lexicon:
@@ -125,6 +129,8 @@ class Lexicon:
         people = frozenset({"person", *taxonomy.members("person")}) if "person" in taxonomy else frozenset()
         escorts = frozenset(unit.text for frame in library.frames if frame.elements and
                             frame.elements[0].type == "person" for unit in frame.lexical_units)
+        people_only = escorts - frozenset(unit.text for frame in library.frames if frame.elements and
+                                          frame.elements[0].type != "person" for unit in frame.lexical_units)
         can = tuple(dict.fromkeys(frame.lexical_units[0].text for frame in library.frames if frame.lexical_units))
         apart = {unit.text: frozenset(unit.apart) for frame in library.frames for unit in frame.lexical_units
                  if unit.apart}
@@ -138,7 +144,7 @@ class Lexicon:
         # "put the lid on": a part fitted to the thing it is made with ("lid", "cover", "door"), not switched on
         return cls({w: tuple(us) for w, us in units.items()}, _result_words(library),
                    tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts, apart, can, puts,
-                   stores, split, frozenset(unit.split()[0] for unit in split))
+                   stores, split, frozenset(unit.split()[0] for unit in split), people_only)
 
     def verb_at(self, words: Sequence[Word], i: int, stop: int) -> tuple[str, int, int | None] | None:
         """The lexical unit that starts at word ``i``: (unit, words it covers contiguously,
@@ -416,7 +422,8 @@ def mentions(text: str, start: int, end: int) -> list[Mention]:
         first, k = k, k + 1 if determined else k
         while k < len(words) and words[k].lower.isalpha() and words[k].lower not in CLOSED and \
                 words[k].lower not in FINITE and words[k].lower not in SEPARATOR_WORDS and \
-                words[k].lower not in SUB_FIRST and not gerund_lemma(words[k].lower):
+                words[k].lower not in SUB_FIRST and not gerund_lemma(words[k].lower) and \
+                not (k > first + int(determined) and _present_verb(words[k].lower)):
             k += 1
             if capitalised(words[k - 1]) and not (k < len(words) and capitalised(words[k])):
                 break                                         # "my son Declan | arrives"
@@ -428,6 +435,14 @@ def mentions(text: str, start: int, end: int) -> list[Mention]:
         else:
             k = max(k, first + 1)
     return found
+
+
+def _present_verb(low: str) -> bool:
+    """Whether a word after a noun is a verb's present tense and no noun ("the guest *arrives*", "when the guests
+    *arrive*"; "the *dishes*", "the coffee *maker*" stay nouns): it ends the phrase a statement names."""
+    lemma = verb_lemma(low)
+    return bool(lemma) and (lemma == low or low == f"{lemma}s" or low == f"{lemma}es") and \
+        "noun" not in parts_of_speech(lemma) and "adj" not in parts_of_speech(lemma)
 
 
 def tag(lexicon: Lexicon, text: str) -> list[Word]:

@@ -103,6 +103,10 @@ class Reference:
                     score += 3.0       # "open the shed, grab the trowel, then close it": the shed opened
                 if best is None or score > best[0]:
                     best = (score, target[0], target[1], kind)
+        if best is not None and wanted_person is True and best[3] != "person" and frame is not None and \
+                role is not None and np.pronoun in ("them", "they", "him", "her", "he", "she") and \
+                self.mentioned(np, frame, role) is not None:
+            return None             # "wait at the door until *the guest* arrives, then greet them": no door greeted
         return None if best is None else best[1:]
 
     def undoes(self, frame: Frame, role: str, earlier: str, name: str) -> bool:
@@ -115,7 +119,8 @@ class Reference:
     def mentioned(self, np: NP, frame: Frame, role: str) -> Mention | None:
         """What a pronoun no frame's element can be stands for in a statement or condition said before it
         ("*My son Declan* arrives at six; meet him", "*When Ana* arrives, ...", "*The printer*'s jammed, fix
-        it"): him/her the latest person named, it the latest thing (one of the element's type first)."""
+        it"): him/her the latest person named, it the latest thing (one of the element's type first), them/they the
+        latest plural, or where a person is wanted the latest person ("when the guest arrives, greet *them*")."""
         if self._mentions is None:
             spans = [*self.remarks, *((w.start, w.end) for w in self.words if w.tag == "COND")]
             self._mentions = sorted((m for a, b in spans for m in mentions(self.text, a, b)), key=lambda m: m.start)
@@ -123,7 +128,13 @@ class Reference:
         if pronoun in ("them", "they"):              # "*The plants on the balcony*, bring them inside": a plural
             plural = [m for m in self._mentions if m.end <= np.start and m.determined and not m.oblique and
                       not m.name and is_plural(m.head.lower())]
-            return plural[-1] if plural else None
+            if plural:
+                return plural[-1]
+            if not self.types.is_person(frame.element(role).type):
+                return None                          # "when *the guest* arrives, greet them": one person, "they"
+            people = [m for m in self._mentions if m.end <= np.start and not m.oblique and
+                      (m.name or self.types.is_a(noun_lemma(m.head), "person") is True)]
+            return people[-1] if people else None
         if pronoun not in ("him", "her", "he", "she", "it", "this", "that"):
             return None
         person = pronoun not in ("it", "this", "that")

@@ -1099,3 +1099,23 @@ def test_for_a_person_to_do_something_is_theirs_not_the_robots(library: Library)
     parse = parse_command("wait for the guest to come in and then greet them", library)
     assert [f.frame for f in parse.frames] == ["Wait", "Greet"] and parse.frames[0].condition == "to come in"
     assert [f for f, _ in texts("fetch a knife for me to cut the bread", library)] == ["Bring", "Slice"]
+
+
+def test_them_of_one_person_mentioned_in_a_condition(library: Library) -> None:
+    # words19: "wait at the door until the guest arrives and then greet them" greeted the door; "when the guest
+    # arrives, greet them" referred to nothing ("the guest arrives" was read as one phrase, head "arrives")
+    (wait, greet) = parse_command("wait at the door until the guest arrives and then greet them", library).frames
+    assert greet.frame == "Greet" and greet.elements["theme"].head == "guest"
+    (greet,) = parse_command("when the guest arrives, greet them", library).frames
+    assert greet.elements["theme"].head == "guest" and greet.elements["theme"].kind == "person"
+    (greet,) = parse_command("when the guests arrive, greet them", library).frames
+    assert greet.elements["theme"].head == "guest"
+    (meet,) = parse_command("My son Declan arrives at six; meet him", library).frames
+    assert meet.elements["theme"].head == "Declan"
+
+
+def test_a_dictionary_noun_right_after_a_verb_only_people_frames_have_is_a_name(library: Library) -> None:
+    # words19: "meet morgan and take them to the bedroom" was Bring (morgan, a horse, read as a thing)
+    assert [f for f, _ in texts("go to the entrance, meet morgan and take them to the bedroom", library)] == [
+        "Go", "Meet", "Guide"]
+    assert texts("take potato to the sink", library) == [("Bring", {"theme": "potato", "goal": "the sink"})]

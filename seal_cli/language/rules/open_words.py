@@ -122,7 +122,8 @@ def _lower_case_name(s: State, i: int) -> Match | None:
     to") in one whose verb with "with" is a unit of a frame of people ("stay close to *morgan*": "stay with" is
     Follow's, keeping near someone who moves is moving with them); after any of these prepositions even a word
     the dictionary lists only as a noun, said bare and singular before the clause's end or a preposition
-    ("deliver the cup to *robin* in the kitchen", "go with *angel* to the kitchen": a bird, a spirit; not "home",
+    ("deliver the cup to *robin* in the kitchen", "go with *angel* to the kitchen": a bird, a spirit; right after
+    a verb only frames of people have too: "meet *morgan* at the door", a horse; not "home",
     an adverb too, nor a thing the taxonomy knows: "bring it to bed"; "with" right after the verb: "put the plate
     with *apple* in the fridge" says what the plate holds), or right after a verb whose
     frame's first element is a person ("take *jordan* to the bedroom", unless it ends in "s" as plurals do:
@@ -141,9 +142,9 @@ def _lower_case_name(s: State, i: int) -> Match | None:
                                          s.out[-1].info == "with" and verb in s.lexicon.goals or near) or \
             not low.isalpha() or w.text != low or low in CLOSED or low in s.lexicon.things or s.noun_follows(i + 1):
         return None
-    if in_dictionary(low) and not (s.prev_tag() == Tag.PREP and parts_of_speech(low) == {"noun"} and
-                                   not is_plural(low) and (s.out[-1].info != "with" or
-                                                           s.out[-2].tag in (Tag.VERB, Tag.PARTICLE)) and (
+    if in_dictionary(low) and not ((s.prev_tag() == Tag.PREP or verb in s.lexicon.people_only) and
+                                   parts_of_speech(low) == {"noun"} and not is_plural(low) and
+                                   (s.out[-1].info != "with" or s.out[-2].tag in (Tag.VERB, Tag.PARTICLE)) and (
             s.clause_end(i + 1) == i + 1 or s.next_lower(i) in PREPOSITIONS)):
         return None                      # "stay close to *morgan*" (a breed of horse): no one stays close to a noun
     return s.emit(i, 1, Tag.NAME)        # said bare, singular, at the clause's end: who it is kept near
@@ -192,6 +193,7 @@ LOWER_CASE_NAME = Rule("name in lower case", _lower_case_name, (
     Example("stay close to morgan", "morgan", Tag.NAME),
     Example("deliver the cup to robin in the kitchen", "robin", Tag.NAME),
     Example("go with angel to the kitchen", "angel", Tag.NAME),
+    Example("meet morgan at the door", "morgan", Tag.NAME),
 ), None, "a word no dictionary lists, alone after 'to' or 'for' (a clause that may have a recipient) or "
          "'with' (one that has a goal): a name")
 WORD = Rule("open word", _word, (
