@@ -46,6 +46,7 @@ from seal_cli.language.english import (
     RELATIVES,
     REQUESTS,
     SEPARATOR_WORDS,
+    STATE_ASKERS,
     STATEMENT_LINKS,
     STATES_DONE,
     SUBJECTS,
@@ -683,6 +684,9 @@ class State:
             return True                    # "use a knife to slice apples"
         if i + 1 >= len(words) or not self.out or self.out[-1].tag in ("VERB", "PREP"):
             return False
+        asker = match_phrase(words, i + 1, STATE_ASKERS)
+        if asker and i + 1 + asker < len(words) and words[i + 1 + asker].lower in ("if", "whether"):
+            return True                    # "go to the bedroom to see if the lamp is on": asked there
         found = self.verb_at(i + 1)
         if not found:
             return False

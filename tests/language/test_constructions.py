@@ -1119,3 +1119,10 @@ def test_a_dictionary_noun_right_after_a_verb_only_people_frames_have_is_a_name(
     assert [f for f, _ in texts("go to the entrance, meet morgan and take them to the bedroom", library)] == [
         "Go", "Meet", "Guide"]
     assert texts("take potato to the sink", library) == [("Bring", {"theme": "potato", "goal": "the sink"})]
+
+
+def test_to_see_if_after_a_place_is_asked_there(library: Library) -> None:
+    # words19: "go to the bedroom to see if the lamp is on" was refused ("'see' is a verb inside the goal")
+    assert texts("go to the bedroom to see if the lamp is on", library) == [
+        ("Go", {"goal": "the bedroom"}), ("LookAt", {"theme": "the lamp"})]
+    assert [f for f, _ in texts("go to the door to see if anyone is there", library)] == ["Go", "Find"]
