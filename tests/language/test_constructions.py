@@ -1126,3 +1126,20 @@ def test_to_see_if_after_a_place_is_asked_there(library: Library) -> None:
     assert texts("go to the bedroom to see if the lamp is on", library) == [
         ("Go", {"goal": "the bedroom"}), ("LookAt", {"theme": "the lamp"})]
     assert [f for f, _ in texts("go to the door to see if anyone is there", library)] == ["Go", "Find"]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("keep following angel until you reach the garage", ["Follow"]),
+    ("carry on walking to the kitchen", ["Go"]),
+    ("continue to follow her", ["Follow"]),
+    ("start cleaning the table", ["Clean"]),
+])
+def test_a_verb_of_aspect_before_a_verb_is_that_verb(text: str, want: list[str], library: Library) -> None:
+    # words19: "keep following angel" was an unknown verb 'keep'
+    assert [f for f, _ in texts(text, library)] == want
+
+
+def test_a_verb_of_aspect_without_a_verb_after_it_is_no_lead_in(library: Library) -> None:
+    with pytest.raises(CommandError, match="unknown verb 'keep'"):
+        parse_command("keep the milk in the fridge", library)
+    assert [f for f, _ in texts("carry the box to the garage", library)] == ["Bring"]

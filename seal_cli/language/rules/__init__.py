@@ -46,6 +46,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     lead_ins.MANNER,
     lead_ins.BE_CAREFUL,
     lead_ins.START_BY,
+    lead_ins.ASPECT,
     lead_ins.LIGHT_VERB,
     lead_ins.POLITE_FRAME,
     politeness.VOCATIVE_NAME,

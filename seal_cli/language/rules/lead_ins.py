@@ -130,6 +130,32 @@ def _start_by(s: State, i: int) -> Match | None:
     return None
 
 
+_ASPECTS = {"keep": ("on",), "continue": (), "carry": ("on",), "start": (), "begin": (), "go": ("on",)}
+"""Verbs of aspect before another verb's -ing form or "to" ("*keep* following", "*carry on* walking", "*continue to*
+follow", "*start* cleaning"), with the particle each takes ("carry" and "go" only with "on")."""
+
+
+def _aspect(s: State, i: int) -> Match | None:
+    """"*keep following* Angel until you reach the garage", "carry on walking", "continue to follow her": a verb
+    of aspect (``_ASPECTS``) before the -ing form of a verb of the library, or "to" and its base form, says
+    when or how long that verb goes on: the verb is the clause's."""
+    words, low = s.words, s.words[i].lower
+    particles = _ASPECTS.get(low)
+    if particles is None:
+        return None
+    j = i + 1
+    if j < len(words) and words[j].lower in particles:
+        j += 1
+    elif low in ("carry", "go"):
+        return None                                               # "carry the box", "go to": no aspect
+    if j < len(words) and gerund_lemma(words[j].lower) and s.verb_at(j):
+        return s.emit(i, j - i, Tag.POLITE)
+    if j + 1 < len(words) and words[j].lower == "to" and low != "keep" and \
+            words[j + 1].lower == (s.verb_at(j + 1) or ("",))[0].split()[0]:
+        return s.emit(i, j + 1 - i, Tag.POLITE)                   # "continue to follow her": base form only
+    return None
+
+
 def _light_verb(s: State, i: int) -> Match | None:
     words = s.words
     if s.next_lower(i) not in ("a", "another"):
@@ -215,6 +241,11 @@ BE_CAREFUL = Rule("be careful and", _be_careful, (
 START_BY = Rule("start by", _start_by, (
     Example("Start by opening the window", "Start by", Tag.POLITE),
 ), frozenset(["start", "begin", "finish", "end", "continue"]), "'start by' a gerund of the library")
+ASPECT = Rule("keep doing", _aspect, (
+    Example("keep following angel until you reach the garage", "keep", Tag.POLITE),
+    Example("carry on walking to the end of the hall", "carry on", Tag.POLITE),
+    Example("continue to follow her", "continue to", Tag.POLITE),
+), frozenset(_ASPECTS), "'keep V-ing', 'carry on V-ing', 'continue to V': the verb V, how long it goes on")
 LIGHT_VERB = Rule("take a look at", _light_verb, (
     Example("take a quick look at the painting", "take a quick look at", Tag.VERB),
     Example("have a look in the fridge for the butter", "have a look", Tag.VERB),      # the noun's unit, a place after
