@@ -1143,3 +1143,14 @@ def test_a_verb_of_aspect_without_a_verb_after_it_is_no_lead_in(library: Library
     with pytest.raises(CommandError, match="unknown verb 'keep'"):
         parse_command("keep the milk in the fridge", library)
     assert [f for f, _ in texts("carry the box to the garage", library)] == ["Bring"]
+
+
+def test_whatever_is_somewhere_is_the_thing_there(library: Library) -> None:
+    # words19: "take whatever's in the sink" was Guide of a name "whatever"; "pick up whatever is there" dropped
+    # "is there" silently
+    assert texts("take whatever's in the sink", library) == [
+        ("Pick", {"theme": "whatever", "source": "the sink"})]
+    assert texts("bring me whatever is on the counter", library) == [
+        ("Bring", {"theme": "whatever", "recipient": "me", "source": "the counter"})]
+    parse = parse_command("go to the table and pick up whatever is there", library)
+    assert parse.frames[1].elements["source"].refers_to == (0, "goal")

@@ -199,6 +199,23 @@ def _determiner(s: State, i: int) -> Match | None:
     return s.emit(i, 1, Tag.DET)
 
 
+_WHATEVER = frozenset(["whatever", "whichever"])
+
+
+def _whatever(s: State, i: int) -> Match | None:
+    """"pick up *whatever is* there", "bring me whatever's on the counter", "take whatever is in the sink": a free
+    relative of things is the thing, as "everything" is, and its "is" is dropped as "that is" is ("everything that
+    is on the counter"): the place after it describes it. Never a name written in lower case."""
+    if s.in_np():
+        return None
+    words = s.words
+    k = i + 1
+    if k < len(words) and words[k].lower in BE_WORDS and k + 1 < len(words) and (
+            words[k + 1].lower in PREPOSITIONS or words[k + 1].lower in HERE_WORDS):
+        return Match(2, s.emit(i, 1, Tag.WORD).words)
+    return s.emit(i, 1, Tag.WORD)
+
+
 def _pronoun(s: State, i: int) -> Match | None:
     return None if s.in_np() else s.emit(i, 1, Tag.PRON)
 
@@ -255,4 +272,8 @@ PARTITIVE = Rule("partitive pronoun", _partitive, (
 ), PARTITIVES, "'some', 'all' right after the verb with no noun: some of it")
 DETERMINER = Rule("determiner", _determiner, (Example("bring me the cup", "the", Tag.DET),), DETERMINERS,
                   "a determiner ('that' only before a noun)")
+WHATEVER = Rule("whatever is", _whatever, (
+    Example("go to the table and pick up whatever is there", "whatever", Tag.WORD),
+    Example("take whatever's in the sink", "whatever", Tag.WORD),
+), _WHATEVER, "'whatever is on the counter': the thing, its 'is' dropped as 'that is' is")
 PRONOUN = Rule("pronoun", _pronoun, (Example("put it there", "it", Tag.PRON),), PRONOUNS, "a pronoun")
