@@ -840,8 +840,9 @@ class State:
         told_of = self.thing_told_of()
         if prev not in ("WORD", "NAME") and not (prev == "PRON" and low == "who" and self.out[-1].lower in (
                 "someone", "somebody", "anyone", "anybody", "everyone", "everybody", "those", "one")) and \
-                not (told_of and low in ("that", "which")):
-            return None
+                not (told_of and low in ("that", "which")) and \
+                not (prev == "PRON" and low in ("that", "which") and self.out[-1].lower in INDEFINITE):
+            return None             # "take everything *that's in the sink*": an indefinite's relative clause
         if self.speech and not told_of:
             return None             # "tell the man (that) ...": what is said
         if low in NOMINATIVE or low == "you" and verb_lemma(nxt):

@@ -1154,3 +1154,11 @@ def test_whatever_is_somewhere_is_the_thing_there(library: Library) -> None:
         ("Bring", {"theme": "whatever", "recipient": "me", "source": "the counter"})]
     parse = parse_command("go to the table and pick up whatever is there", library)
     assert parse.frames[1].elements["source"].refers_to == (0, "goal")
+
+
+def test_an_indefinites_relative_clause_describes_it(library: Library) -> None:
+    # words19: "take everything that's in the sink" was Bring(theme "that", recipient "everything")
+    assert texts("take everything that's in the sink", library) == [
+        ("Pick", {"theme": "everything that's in the sink", "source": "the sink"})]
+    (find,) = parse_command("is there anything that needs cleaning", library).frames
+    assert find.elements["theme"].relative == "that needs cleaning"
