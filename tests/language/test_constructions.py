@@ -1162,3 +1162,12 @@ def test_an_indefinites_relative_clause_describes_it(library: Library) -> None:
         ("Pick", {"theme": "everything that's in the sink", "source": "the sink"})]
     (find,) = parse_command("is there anything that needs cleaning", library).frames
     assert find.elements["theme"].relative == "that needs cleaning"
+
+
+def test_how_many_things_can_you_see_counts_the_things(library: Library) -> None:
+    # words19: "How many dishes can you see on the dining table?" counted "can"
+    assert frames("How many dishes can you see on the dining table?", library) == [
+        ("Count", {"theme": "dish", "ground": "table"})]
+    assert frames("how many cups do you find in the kitchen", library) == [
+        ("Count", {"theme": "cup", "ground": "kitchen"})]
+    assert frames("how many cans are in the cupboard", library) == [("Count", {"theme": "can", "ground": "cupboard"})]

@@ -101,6 +101,7 @@ INSIDE: tuple[Rule, ...] = (
     statements.HER_TOLD,
     statements.TOLD,
     statements.TOLD_HOW_TO,
+    requests.HOW_MANY_SEEN,
     requests.HOW_MANY_SAID,
     verbs.MOVED_YOURSELF,
     politeness.PLEASE_INSIDE,

@@ -561,6 +561,24 @@ def _how_many_said(s: State, i: int) -> Match | None:
     return s.emit(i, end - i, Tag.SAID)
 
 
+_SEEN_AUXILIARIES = frozenset(["can", "could", "do", "did", "will", "would"])
+_SEERS = frozenset(["you", "we", "i"])
+
+
+def _how_many_seen(s: State, i: int) -> Match | None:
+    """"How many dishes *can you see* on the dining table?", "how many cups do you find in the kitchen": after the
+    things a "how many" question counts, an auxiliary, a subject and a verb (of seeing or finding) say who counts,
+    no thing: dropped, as "are there" is."""
+    words = s.words
+    if s.verb_index < 0 or not s.out[s.verb_index].lower.startswith("how many") or \
+            s.prev_tag() not in (Tag.WORD, Tag.NAME) or i + 2 >= len(words) or words[i + 1].lower not in _SEERS:
+        return None
+    verb = words[i + 2].lower
+    if verb_lemma(verb) != verb or verb in s.lexicon.things or verb in CLOSED or not in_dictionary(verb):
+        return None
+    return Match(3)
+
+
 def _request(s: State, i: int) -> Match | None:
     words = s.words
     n = _phrase(s, i, REQUESTS)
@@ -1241,6 +1259,10 @@ TOLD_HOW_MANY = Rule("said how many", _told_how_many, (
     Example("Report to me how many cups are in the sink.", "Report to me how many", Tag.VERB),
     Example("say how many people are in the hall", "say how many", Tag.VERB),
 ), None, "a verb of saying and 'how many': tell me how many (Count)")
+HOW_MANY_SEEN = Rule("how many X can you see", _how_many_seen, (
+    Example("How many dishes can you see on the dining table?", "can", ""),
+    Example("how many cups do you find in the kitchen", "do", ""),
+), _SEEN_AUXILIARIES, "'how many X can you see': who counts, dropped (the things are X)")
 HOW_MANY_SAID = Rule("how many, said", _how_many_said, (
     Example("tell Anna how many cups are left", "how many cups are left", Tag.SAID),
 ), frozenset(["how"]), "'how many ...' after a verb of saying and the person told: what is said")
