@@ -29,6 +29,7 @@ from seal_cli.language.english import (
     FREQUENCY_ADVERBS,
     HERE_WORDS,
     LINKING_VERBS,
+    LOCATIVE,
     NOMINATIVE,
     NOT_PLACES,
     NP_OPENERS,
@@ -520,6 +521,24 @@ class State:
             return 0, ()
         return k - i, tuple(spans)
 
+    def _place_said_first(self, i: int) -> bool:
+        """Whether a phrase of place ("from", or a preposition of where, and a noun phrase with no verb in it) starts
+        at ``i`` and a comma ends it before a clause: a phrase said first ("*From the bookshelf,* could you get me
+        the red book?"), never a remark beside the command (its place was lost)."""
+        words = self.words
+        n = match_phrase(words, i, PREPOSITIONS)
+        if not n or PREPOSITIONS[" ".join(w.lower for w in words[i:i + n])] not in (*LOCATIVE, "from") or \
+                not self.np_starts(i + n):
+            return False
+        for k in range(i + n, len(words)):
+            low = words[k].lower
+            if low == ",":                               # its last word a place the taxonomy knows: no "meantime"
+                return k > i + n and noun_lemma(words[k - 1].lower) in self.lexicon.things and self.verb_after(k + 1)
+            if low in END_MARKS or low in (";", "and", "then") or low in TIME_WORDS or \
+                    self.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS:
+                return False
+        return False
+
     def aside(self, i: int) -> Match | None:
         """A sentence said beside the command, with no verb of the library, at the start of a sentence
         ("*Good morning!* Could you ...", "*Priya needs her laptop,* could you bring it to her?"): how many
@@ -533,6 +552,8 @@ class State:
             k -= 1                                       # "... Sorry, *gross*": interjections start it
         if k >= 0 and not (self.out[k].tag == "SEP" and self.out[k].lower in END_MARKS):
             return None                                  # inside a sentence
+        if self._place_said_first(i):
+            return None                                  # "from the fridge, can you grab me a soda": where, said first
         stated = self.statement_at(i)
         if stated and stated < len(words) and words[stated].lower in (",", ";") and self.verb_after(stated + 1):
             return self._aside(i, stated + 1 - i, (words[i].start, words[stated - 1].end))
