@@ -96,6 +96,7 @@ POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "wi
                     "do me a favour and", "don't forget to", "do not forget to", "help me", "help me to", "help us",
                     "make sure you", "see that you", "hi", "hello", "hi there", "hello there", "hey there",
                     "excuse me", "maybe", "perhaps", "oh", "ah",
+                    "could i ask you to", "can i ask you to", "may i ask you to", "might i ask you to",
                     "ahh", "aw", "ugh", "urgh", "argh", "oops", "whoops", "sorry", "well", "gosh", "so",
                     "i'd appreciate it if you", "i would appreciate it if you", "i'd really appreciate it if you",
                     "i would really appreciate it if you", "i'd appreciate it if you could",

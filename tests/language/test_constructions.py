@@ -1191,3 +1191,12 @@ def test_a_place_said_first_before_politeness_is_kept(text: str, want: list, lib
 def test_a_time_said_first_before_politeness_stays_a_remark(library: Library) -> None:
     assert texts("in the meantime, could you bring me a cup", library) == [
         ("Bring", {"theme": "a cup", "recipient": "me"})]
+
+
+def test_asking_leave_to_ask_and_mind_doing_are_politeness(library: Library) -> None:
+    # words19: "could i ask you to close the door" (unknown verb 'could'), "mind closing the window?" (unknown
+    # verb 'mind')
+    assert texts("could i ask you to close the door", library) == [("Close", {"theme": "the door"})]
+    assert texts("mind closing the window?", library) == [("Close", {"theme": "the window"})]
+    with pytest.raises(CommandError, match="unknown verb 'mind'"):
+        parse_command("mind the step", library)

@@ -130,9 +130,10 @@ def _start_by(s: State, i: int) -> Match | None:
     return None
 
 
-_ASPECTS = {"keep": ("on",), "continue": (), "carry": ("on",), "start": (), "begin": (), "go": ("on",)}
+_ASPECTS = {"keep": ("on",), "continue": (), "carry": ("on",), "start": (), "begin": (), "go": ("on",), "mind": ()}
 """Verbs of aspect before another verb's -ing form or "to" ("*keep* following", "*carry on* walking", "*continue to*
-follow", "*start* cleaning"), with the particle each takes ("carry" and "go" only with "on")."""
+follow", "*start* cleaning"), with the particle each takes ("carry" and "go" only with "on"); "mind" before an -ing
+form is "would you mind" said short ("*mind* closing the window?")."""
 
 
 def _aspect(s: State, i: int) -> Match | None:
@@ -150,7 +151,7 @@ def _aspect(s: State, i: int) -> Match | None:
         return None                                               # "carry the box", "go to": no aspect
     if j < len(words) and gerund_lemma(words[j].lower) and s.verb_at(j):
         return s.emit(i, j - i, Tag.POLITE)
-    if j + 1 < len(words) and words[j].lower == "to" and low != "keep" and \
+    if j + 1 < len(words) and words[j].lower == "to" and low not in ("keep", "mind") and \
             words[j + 1].lower == (s.verb_at(j + 1) or ("",))[0].split()[0]:
         return s.emit(i, j + 1 - i, Tag.POLITE)                   # "continue to follow her": base form only
     return None
@@ -245,6 +246,7 @@ ASPECT = Rule("keep doing", _aspect, (
     Example("keep following angel until you reach the garage", "keep", Tag.POLITE),
     Example("carry on walking to the end of the hall", "carry on", Tag.POLITE),
     Example("continue to follow her", "continue to", Tag.POLITE),
+    Example("mind closing the window?", "mind", Tag.POLITE),
 ), frozenset(_ASPECTS), "'keep V-ing', 'carry on V-ing', 'continue to V': the verb V, how long it goes on")
 LIGHT_VERB = Rule("take a look at", _light_verb, (
     Example("take a quick look at the painting", "take a quick look at", Tag.VERB),
