@@ -203,6 +203,18 @@ def _pronoun(s: State, i: int) -> Match | None:
     return None if s.in_np() else s.emit(i, 1, Tag.PRON)
 
 
+FLOATED = frozenset(["both", "all"])
+"""Quantifiers said after a pronoun of several things ("put them *both* on the table")."""
+
+
+def _pronoun_quantified(s: State, i: int) -> Match | None:
+    after = s.words[i + 2].lower if i + 2 < len(s.words) else ""
+    if s.in_np() or s.next_lower(i) not in FLOATED or s.noun_follows(i + 2) or after in NP_OPENERS or \
+            after in NUMBERS or after == "of":
+        return None                      # "give them all the apples": "all" opens the thing given
+    return s.emit(i, 2, Tag.PRON)
+
+
 TIME_WORD = Rule("time word", _time_word, (
     Example("put it in the fridge right away", "right away", Tag.PARTICLE),
 ), TIME_FIRST, "a time adverbial ('now', 'right away', 'later')")
@@ -255,4 +267,10 @@ PARTITIVE = Rule("partitive pronoun", _partitive, (
 ), PARTITIVES, "'some', 'all' right after the verb with no noun: some of it")
 DETERMINER = Rule("determiner", _determiner, (Example("bring me the cup", "the", Tag.DET),), DETERMINERS,
                   "a determiner ('that' only before a noun)")
+PRONOUN_QUANTIFIED = Rule("pronoun with its quantifier", _pronoun_quantified, (
+    Example("put the apple in the bowl and put them both on the table", "them both", Tag.PRON),
+    Example("put a spoon in a cup and move them both to the sink", "them both", Tag.PRON),
+    Example("wash the cups and put them all away", "them all", Tag.PRON),
+), frozenset(["them", "they", "these", "those", "it"]), "'them both', 'them all': one pronoun, the quantifier "
+   "floated after it (not before a noun phrase: 'give them all the apples')")
 PRONOUN = Rule("pronoun", _pronoun, (Example("put it there", "it", Tag.PRON),), PRONOUNS, "a pronoun")
