@@ -13,9 +13,9 @@ import pytest
 from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
 from seal_cli.frames.taxonomy import class_key
+from seal_cli.language.goals import GoalModel
 from seal_cli.language.grounding import Vocabulary
 from seal_cli.language.parser import parse_command
-from seal_cli.language.goals import GoalModel
 from seal_cli.language.tasks import (
     ADDERS,
     LOOK,
