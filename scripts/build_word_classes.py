@@ -60,7 +60,7 @@ from seal_cli.language.stacking import THRESHOLD as STACK_THRESHOLD  # noqa: E40
 from seal_cli.language.stacking import coordinated  # noqa: E402
 from seal_cli.language.steps import NONE, STEPS, eligible, ends_at_steps, step_features  # noqa: E402
 from seal_cli.language.steps import THRESHOLD as STEP_THRESHOLD  # noqa: E402
-from seal_cli.language.tasks import TASKS, task_features  # noqa: E402
+from seal_cli.language.tasks import STACK, TASKS, carried_features, task_features, uncarried  # noqa: E402
 from seal_cli.language.tasks import THRESHOLD as TASK_THRESHOLD  # noqa: E402
 from seal_cli.language.wordusage import (  # noqa: E402
     CONTEXT_WEIGHT,
@@ -81,7 +81,7 @@ KEEP = 2
 """A wording seen fewer times than this is left out of the file (it could never reach MIN_SUPPORT alone)."""
 SECTIONS = ("words", "seen", "context", "class_context", "number", "weights", "scene_weights", "step_prior",
             "step_weights", "stacks", "step_left", "slice_prior", "slice_weights", "goal_prior", "goal_weights",
-            "task_prior", "task_weights")
+            "task_prior", "task_weights", "stack_goal_prior", "stack_goal_weights")
 STEP_OF = {"pick_heat_then_place_in_recep": "Heat", "pick_cool_then_place_in_recep": "Cool",
            "pick_clean_then_place_in_recep": "Clean"}
 """The step each ALFRED task type has (the others: none)."""
@@ -399,6 +399,37 @@ def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabula
             "task_prior": {k: kinds_told[k] for k in task_keys}, "task_weights": task_weights}
 
 
+def with_stack_goals(data: dict[str, object], rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
+                     l2: float = L2) -> dict[str, object]:
+    """The table with where a stack's container goes when the sentence says nowhere
+    (:attr:`~seal_cli.language.tasks.TaskModel.carried`): each stack's sentence parsed with the table's grounding
+    (nothing inferred); where the parse puts one thing in a container and nothing more
+    (:func:`~seal_cli.language.tasks.uncarried`), the task's receptacle learned from the sentence's words, the
+    container's class and the frames said (:func:`~seal_cli.language.tasks.carried_features`)."""
+    library = load_library()
+    grounded = vocabulary.with_usage(usage_of(data))
+    spelling = {class_key(c): c for c in data["classes"]}  # type: ignore[union-attr]
+    went: list[tuple[str, tuple[str, ...]]] = []
+    for row in rows:
+        if row["task_type"] != STACK or class_key(row["receptacle"]) not in spelling:
+            continue
+        text = " ".join(row["goal_sentence"].split())
+        try:
+            parse = parse_command(text, library, grounded, infer_steps=False)
+        except CommandError:
+            continue
+        at = uncarried(parse, library)
+        if at is None:
+            continue
+        container = parse.resolve(parse.frames[at].elements["goal"]).cls
+        went.append((spelling[class_key(row["receptacle"])], carried_features(context_words(text), parse, container)))
+    prior = Counter(goal for goal, _ in went)
+    keys = tuple(sorted(prior))
+    weights = fit([Instance(keys, tuple(math.log(prior[k]) for k in keys), keys.index(goal), feats)
+                   for goal, feats in went], l2) if len(keys) >= 2 else {}
+    return {**data, "stack_goal_prior": {k: prior[k] for k in keys}, "stack_goal_weights": weights}
+
+
 def ordered(words: Counter[str]) -> dict[str, int]:
     return dict(sorted(words.items(), key=lambda kv: (-kv[1], kv[0])))
 
@@ -583,7 +614,8 @@ def main() -> int:
 
         def fitted(l2: float | None) -> WordUsage:
             data = table(*counted, classes, "dev", l2, args.scene_l2 or None)  # as it would ship, read as it is
-            return usage_of(with_steps(data, fit_rows, vocabulary) if l2 is not None else data)
+            return usage_of(with_stack_goals(with_steps(data, fit_rows, vocabulary), fit_rows, vocabulary)
+                            if l2 is not None else data)
 
         def show(name: str, figures: dict[str, float | int]) -> None:
             print(f"{name:<34}" + " ".join(f"{k} {v:.3f}" if isinstance(v, float) else f"{k} {v}"
@@ -647,7 +679,8 @@ def main() -> int:
     source = (f"ALFRED train goals ({goals.name}: {len(rows)} human goal sentences with their task labels), "
               "parsed by seal's rules; counts of the labelled class by the wording of the phrase that fills its field, "
               "and of the sentence's other words by wording and class")
-    text = dump({**with_steps(table(*count(rows, vocabulary, scenes), classes, source), rows, vocabulary),
+    text = dump({**with_stack_goals(with_steps(table(*count(rows, vocabulary, scenes), classes, source), rows,
+                                               vocabulary), rows, vocabulary),
                  "scenery": scenery(args.data, classes)})
     if args.check:
         shipped = args.out.read_text() if args.out.is_file() else ""

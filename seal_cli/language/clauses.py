@@ -29,7 +29,7 @@ from seal_cli.frames.taxonomy import class_key
 from seal_cli.language.element_types import Types
 from seal_cli.language.english import FIRST_LATER
 from seal_cli.language.lexicon import CommandError, Word
-from seal_cli.language.morphology import is_adjective, verb_lemma
+from seal_cli.language.morphology import is_adjective, noun_lemma, verb_lemma
 from seal_cli.language.roles import FROM, LOCATIVE
 from seal_cli.language.syntax import NP, PP, Clause, Command, Item, end_of
 from seal_cli.language.verb_usage import mostly_verb
@@ -299,9 +299,10 @@ class Clauses:
             i += 1
         return out
 
-    @staticmethod
-    def containing(items: list[Item]) -> list[Item]:
-        """Read "a pan with a spoon in it": the spoon is a content of the pan (and "in it" no goal)."""
+    def containing(self, items: list[Item]) -> list[Item]:
+        """Read "a pan with a spoon in it": the spoon is a content of the pan (and "in it" no goal). Said after
+        the place the thing goes to, the contents are the thing's when the place holds nothing and the thing does
+        (:meth:`carrier`: "drop the pan on the table with a knife in it")."""
         out: list[Item] = []
         i = 0
         while i < len(items):
@@ -311,13 +312,30 @@ class Clauses:
             host = last.np if isinstance(last, PP) else last if isinstance(last, NP) else None
             if (host is not None and isinstance(item, PP) and item.prep == "with" and isinstance(nxt, PP)
                     and nxt.prep in ("in", "on", "inside") and nxt.np.pronoun in ("it", "them")):
-                host.contents.append(item.np)
-                host.end = max(host.end, nxt.np.end)
+                carrier = self.carrier(out) if isinstance(last, PP) else None
+                if carrier is not None:
+                    carrier.contents.append(item.np)        # the thing's, its span as said
+                else:
+                    host.contents.append(item.np)
+                    host.end = max(host.end, nxt.np.end)
                 i += 2
                 continue
             out.append(item)
             i += 1
         return out
+
+    def carrier(self, out: list[Item]) -> NP | None:
+        """The thing before the place just said (``out`` ends with its phrase) when the place is no container and
+        the thing is one ("the pan" of "drop the pan on the table with a knife in it"; not "bring the paper to the
+        table with a lamp on it": a paper holds nothing); else None."""
+        place = out[-1]
+        thing = out[-2] if len(out) >= 2 else None
+        if not isinstance(place, PP) or not isinstance(thing, NP) or thing.head is None or place.np.head is None \
+                or thing.pronoun or thing.conjuncts:
+            return None
+        if self.types.is_a(noun_lemma(place.np.head.lower), "container") is not False:
+            return None
+        return thing if self.types.is_a(noun_lemma(thing.head.lower), "container") is True else None
 
     def message(self, items: list[Item]) -> NP | None:
         """A question said as the message ("tell me *what day is today*"): from the wh-word on,

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 from lark import Token, Transformer, Tree
 
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import DIRECTIONS, LOCATED, LOCATIVE, PERSON_PRONOUNS, SUBORDINATORS
+from seal_cli.language.english import DIRECTIONS, LOCATED, LOCATIVE, PERSON_PRONOUNS, PRONOUNS, SUBORDINATORS
 from seal_cli.language.lexicon import Word, is_plural, noun_lemma
 
 if TYPE_CHECKING:
@@ -259,7 +259,8 @@ class Syntax(Transformer[Token, Command]):
     # -- noun phrases --------------------------------------------------------------------------
     def pron_np(self, children: list[Word]) -> NP:
         w = children[0]
-        low = w.lower.split()[-1]      # "one of them": the pronoun is "them" (its quantifier, the word's info)
+        said = w.lower.split()         # "one of them": the pronoun is "them" (its quantifier, the word's info);
+        low = said[-1] if said[-1] in PRONOUNS else said[0]     # "them both": "them"
         pron_kind = "person" if low in PERSON_PRONOUNS else "thing" if low in (
             "it", "this", "that", "something", "everything", "anything", "nothing", "itself") else "pronoun"
         return NP(w.start, w.end, w, pron_kind, pronoun=low, plural=low in ("them", "they", "ones", "these",

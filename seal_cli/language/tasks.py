@@ -20,9 +20,12 @@ probability is at least :data:`THRESHOLD`, the frame marked ``Evoked.inferred`` 
 handles one grounded thing and says no look, no lamp switched on and no step (:func:`unlooked`) gets a LookAt of
 that thing after its last frame, its instrument the light the sentence names, else the room's lamp
 (:func:`add_look`). A heating, cooling or cleaning task: a parse that places one thing and says no step gets the
-step before its Place (:func:`~seal_cli.language.steps.add_step`, as the step model adds one). The other kinds
-were measured and have no adder (``docs/language.md``, "This round (alfred15)"): a container or a second thing
-the sentence does not name cannot be added, and a step the parse already says is never dropped.
+step before its Place (:func:`~seal_cli.language.steps.add_step`, as the step model adds one). A stack with a
+movable receptacle: a parse that puts one thing in a container ("place a slice of tomato in a pan") and says
+nowhere the container goes gets the container put where such a container most likely went
+(:func:`add_carried`: :attr:`TaskModel.carried`, P(receptacle | sentence, container), fitted on train's stacks).
+The other kinds were measured and have no adder (``docs/language.md``, "This round (alfred15)"): a container or
+a second thing the sentence does not name cannot be added, and a step the parse already says is never dropped.
 
 **Scoped and marked** as the unsaid step is (:mod:`seal_cli.language.steps`): only where every class of the
 vocabulary is one the statistics know (``Vocabulary.task_model``); ``parse_command(..., infer_steps=False)``
@@ -37,8 +40,9 @@ from functools import partial
 from types import MappingProxyType
 from typing import TYPE_CHECKING
 
-from seal_cli.frames.taxonomy import class_key
-from seal_cli.language.chooser import posterior
+from seal_cli.frames.taxonomy import class_key, class_words
+from seal_cli.language.chooser import posterior, sentence_features
+from seal_cli.language.goals import GoalModel
 from seal_cli.language.steps import add_step
 from seal_cli.language.values import Evoked, Parse, Phrase
 
@@ -46,10 +50,11 @@ if TYPE_CHECKING:
     from seal_cli.frames.library import Library
     from seal_cli.language.grounding import Vocabulary
 
-__all__ = ["ADDERS", "LOOK", "TASKS", "THRESHOLD", "TaskModel", "add_look", "infer_task", "task_features",
-           "unlooked"]
+__all__ = ["ADDERS", "CONTAINER", "LOOK", "STACK", "TASKS", "THRESHOLD", "TaskModel", "add_carried", "add_look",
+           "carried_features", "infer_task", "task_features", "uncarried", "unlooked"]
 
 LOOK = "look_at_obj_in_light"
+STACK = "pick_and_place_with_movable_recep"
 TASKS = ("look_at_obj_in_light", "pick_and_place_simple", "pick_and_place_with_movable_recep",
          "pick_clean_then_place_in_recep", "pick_cool_then_place_in_recep", "pick_heat_then_place_in_recep",
          "pick_two_obj_and_place")
@@ -67,6 +72,8 @@ LAMP = "lamp"
 """The class name a look's light is grounded by when the sentence names no light (the LookAt frame's "in the
 light of a lamp"), as a frame's default is (:meth:`~seal_cli.language.grounding.Vocabulary.ground_name`): in a
 room, its lamp."""
+CONTAINER = "container"
+"""The taxonomy's category of the things carried with another in them (a pan, a bowl, a mug; not a fridge)."""
 
 
 def task_features(words: Iterable[str], parse: Parse) -> tuple[str, ...]:
@@ -92,11 +99,16 @@ def task_features(words: Iterable[str], parse: Parse) -> tuple[str, ...]:
 @dataclass(frozen=True)
 class TaskModel:
     """``prior[task]``: how often each task kind was a train sentence's; ``weights[feature][task]``: the fitted
-    weights; ``threshold``: the least probability at which a task's frame is added. Empty: none is."""
+    weights; ``threshold``: the least probability at which a task's frame is added; ``carried``: where a stack's
+    container goes. Empty: none is added."""
 
     prior: Mapping[str, int] = field(default_factory=dict)
     weights: Mapping[str, Mapping[str, float]] = field(default_factory=dict)
     threshold: float = THRESHOLD
+    carried: GoalModel = field(default_factory=GoalModel)
+    """Where a stack's container went when the sentence says nowhere (P(receptacle | :func:`carried_features`),
+    fitted on train's stacks; ``stack_goal_prior``, ``stack_goal_weights`` in the table). Empty: a stack adds
+    nothing."""
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "prior", MappingProxyType(dict(self.prior)))
@@ -158,11 +170,59 @@ def _stepped(step: str, parse: Parse, library: Library, vocabulary: Vocabulary, 
     return add_step(parse, library, vocabulary, step, probability)
 
 
+def carried_features(words: Iterable[str], parse: Parse, container: str | None) -> tuple[str, ...]:
+    """The features of a stack whose container's place is unsaid: the sentence's words, ``o:`` the container's
+    class, ``f:`` the frames said (:func:`~seal_cli.language.chooser.sentence_features`)."""
+    return sentence_features(words, container, (f.frame for f in parse.frames if f.inferred is None))
+
+
+def uncarried(parse: Parse, library: Library) -> int | None:
+    """The index of the Place that puts one thing in a container (:data:`CONTAINER`: a pan, a bowl; grounded)
+    when it is the parse's only Place and the thing is another class and no coordination ("place a slice of
+    tomato in a pan"): a stack that says nowhere the container goes; else None."""
+    places = [i for i, f in enumerate(parse.frames) if f.frame == "Place"]
+    if len(places) != 1 or any(f.frame in ("Bring", "Give") for f in parse.frames):
+        return None
+    place = parse.frames[places[0]]
+    if "theme" not in place.elements or "goal" not in place.elements:
+        return None
+    theme, goal = parse.resolve(place.elements["theme"]), parse.resolve(place.elements["goal"])
+    if theme.cls is None or goal.cls is None or theme.conjuncts or goal.conjuncts or goal.kind != "thing" \
+            or class_key(theme.cls) == class_key(goal.cls) or library.taxonomy.is_a(goal.cls, CONTAINER) is not True:
+        return None
+    return places[0]
+
+
+def add_carried(parse: Parse, library: Library, vocabulary: Vocabulary, probability: float) -> Parse:
+    """The parse with its container put where it most likely went (:func:`uncarried`), after its last frame: the
+    most probable receptacle the vocabulary holds by :attr:`TaskModel.carried` (a default: nobody said it), marked
+    inferred with the task's probability; else unchanged."""
+    at = uncarried(parse, library)
+    model = vocabulary.task_model.carried
+    if at is None or not model:
+        return parse
+    goal = parse.frames[at].elements["goal"]
+    target = goal.refers_to or (at, "goal")
+    root = parse.frames[target[0]].elements[target[1]]
+    present = vocabulary.by_key
+    p = model.probabilities(carried_features(vocabulary.context, parse, root.cls), present)
+    p.pop(class_key(root.cls or ""), None)
+    if not p:
+        return parse
+    cls = present[max(p, key=lambda k: p[k])]
+    container = Phrase("", root.head, root.cls, root.kind, target, root.quantity, root.plural)
+    where = Phrase(None, " ".join(class_words(cls)) or cls, cls, default=True)
+    unit = library.frame("Place").lexical_units[0].text
+    put = Evoked("Place", unit, parse.frames[-1].span, {"theme": container, "goal": where},
+                 inferred=round(probability, 3))
+    return replace(parse, frames=(*parse.frames, put))
+
+
 STEP_OF = MappingProxyType({"pick_heat_then_place_in_recep": "Heat", "pick_cool_then_place_in_recep": "Cool",
                             "pick_clean_then_place_in_recep": "Clean"})
 """The step frame of each task kind that has one."""
 ADDERS: Mapping[str, Callable[[Parse, Library, Vocabulary, float], Parse]] = MappingProxyType(
-    {LOOK: add_look, **{kind: partial(_stepped, step) for kind, step in STEP_OF.items()}})
+    {LOOK: add_look, STACK: add_carried, **{kind: partial(_stepped, step) for kind, step in STEP_OF.items()}})
 """Task kind → what adds its frame to a parse that lacks it (the kinds with none add nothing)."""
 
 

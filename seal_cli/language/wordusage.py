@@ -197,7 +197,10 @@ class WordUsage:
                          GoalModel(add({"": self.goals.prior}, {"": other.goals.prior}).get("", {}),
                                    add(self.goals.weights, other.goals.weights), self.goals.threshold),
                          TaskModel(add({"": self.tasks.prior}, {"": other.tasks.prior}).get("", {}),
-                                   add(self.tasks.weights, other.tasks.weights), self.tasks.threshold),
+                                   add(self.tasks.weights, other.tasks.weights), self.tasks.threshold,
+                                   GoalModel(add({"": self.tasks.carried.prior}, {"": other.tasks.carried.prior})
+                                             .get("", {}),
+                                             add(self.tasks.carried.weights, other.tasks.carried.weights))),
                          self.scenery | other.scenery, add(self.scene_weights, other.scene_weights))
 
     def names_one(self, lemmas: tuple[str, ...]) -> bool:
@@ -448,8 +451,8 @@ def _table(data: Any, where: Where) -> WordUsage:
     return WordUsage(counts, universe, (str(data.get("source", where.file)),), seen=seen, context=context,
                      class_context=class_context, number=number, weights=weights, steps=_steps(data, where),
                      stacks=_stacks(data, universe, where), slices=_slices(data, universe, where),
-                     goals=_goals(data, universe, where), tasks=_tasks(data, where), scenery=_scenery(data, where),
-                     scene_weights=scene_weights)
+                     goals=_goals(data, universe, where), tasks=_tasks(data, universe, where),
+                     scenery=_scenery(data, where), scene_weights=scene_weights)
 
 
 def _steps(data: dict[str, Any], where: Where) -> StepModel:
@@ -506,33 +509,36 @@ def _slices(data: dict[str, Any], universe: frozenset[str], where: Where) -> Sli
                       frozenset(classes))
 
 
-def _goals(data: dict[str, Any], universe: frozenset[str], where: Where) -> GoalModel:
+def _goals(data: dict[str, Any], universe: frozenset[str], where: Where, name: str = "goal") -> GoalModel:
     """The unsaid-goal model of a table (``goal_prior``: {class of "classes" | "none": count}, ``goal_weights``:
-    {feature: {class | "none": w}})."""
-    def known(name: Any) -> bool:
-        return isinstance(name, str) and (name == NOWHERE or class_key(name) in universe)
+    {feature: {class | "none": w}}); ``name``: the sections' prefix (``stack_goal``: where a stack's container
+    goes, :attr:`~seal_cli.language.tasks.TaskModel.carried`)."""
+    def known(c: Any) -> bool:
+        return isinstance(c, str) and (c == NOWHERE or class_key(c) in universe)
 
-    prior = data.get("goal_prior", {})
+    prior = data.get(f"{name}_prior", {})
     if not _word_counts(prior) or not all(known(c) for c in prior):
-        raise SealError(f"\"goal_prior\" must map each class of \"classes\" or \"{NOWHERE}\" to a positive count",
+        raise SealError(f"\"{name}_prior\" must map each class of \"classes\" or \"{NOWHERE}\" to a positive count",
                         where)
-    raw = data.get("goal_weights", {})
+    raw = data.get(f"{name}_weights", {})
     if not _weight_table(raw, known):
-        raise SealError(f"\"goal_weights\" must map each feature to {{class of \"classes\" | \"{NOWHERE}\": finite "
+        raise SealError(f"\"{name}_weights\" must map each feature to {{class of \"classes\" | \"{NOWHERE}\": finite "
                         "number}", where)
     return GoalModel(prior, {str(f): {(c if c == NOWHERE else class_key(c)): float(v) for c, v in by.items()}
                              for f, by in raw.items()})
 
 
-def _tasks(data: dict[str, Any], where: Where) -> TaskModel:
-    """The task model of a table (``task_prior``: {task kind: count}, ``task_weights``: {feature: {task kind: w}})."""
+def _tasks(data: dict[str, Any], universe: frozenset[str], where: Where) -> TaskModel:
+    """The task model of a table (``task_prior``: {task kind: count}, ``task_weights``: {feature: {task kind: w}};
+    ``stack_goal_prior``, ``stack_goal_weights``: where a stack's container goes, as :func:`_goals` reads them)."""
     prior = data.get("task_prior", {})
     if not _word_counts(prior) or not set(prior) <= set(TASKS):
         raise SealError(f"\"task_prior\" must map each of {', '.join(TASKS)} to a positive count", where)
     raw = data.get("task_weights", {})
     if not _weight_table(raw, lambda k: k in TASKS):
         raise SealError("\"task_weights\" must map each feature to {task kind: finite number}", where)
-    return TaskModel(prior, {str(f): {k: float(v) for k, v in by.items()} for f, by in raw.items()})
+    return TaskModel(prior, {str(f): {k: float(v) for k, v in by.items()} for f, by in raw.items()},
+                     carried=_goals(data, universe, where, "stack_goal"))
 
 
 def _weight_table(table: Any, known: Callable[[Any], bool]) -> bool:

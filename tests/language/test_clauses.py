@@ -74,3 +74,38 @@ def test_a_second_place_said_without_the_verb_puts_the_same_thing(library: Libra
     assert [p.elements["goal"].text for p in places] == goals
     assert {parse.resolve(p.elements["theme"]).text for p in places} == {places[0].elements["theme"].text}
 
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("drop the pan on the table with a knife in it", [("Place", {"theme": "a knife", "goal": "the pan"}),
+                                                      ("Place", {"theme": "the pan", "goal": "the table"})]),
+    ("put a wine glass on the table with a spoon in it",
+     [("Place", {"theme": "a spoon", "goal": "a wine glass"}),
+      ("Place", {"theme": "a wine glass", "goal": "the table"})]),
+    ("put a pan with a knife in it on the counter",                 # said before the place: as before
+     [("Place", {"theme": "a knife", "goal": "a pan with a knife in it"}),
+      ("Place", {"theme": "a pan with a knife in it", "goal": "the counter"})]),
+])
+def test_contents_said_after_the_place_are_the_carried_thing_s(library: Library, text: str,
+                                                                 expected: list[object]) -> None:
+    assert _frames(text, library) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "bring the newspaper to the table with the lamp on it",     # a newspaper holds nothing: the table's lamp
+    "put the apple on the plate with a fork on it",             # the plate holds things: its fork
+])
+def test_contents_after_a_place_stay_the_place_s_otherwise(library: Library, text: str) -> None:
+    frames = _frames(text, library)
+    assert len(frames) == 1 and frames[0][1]["goal"].endswith("on it")
+
+
+def test_a_quantifier_floated_after_a_pronoun_is_part_of_it(library: Library) -> None:
+    assert _frames("put the apple in the bowl and put them both on the table", library)[1] == (
+        "Place", {"theme": "them both", "goal": "the table"})                  # the place was lost
+    assert _frames("put a spoon in a cup and move them both to the sink", library)[1] == (
+        "Place", {"theme": "them both", "goal": "the sink"})                   # was Go to "them"
+    parse = parse_command("put the apple in the bowl and put them both on the table", library)
+    assert parse.resolve(parse.frames[1].elements["theme"]).head == "bowl"    # the bowl, carried with the apple
+    assert _frames("give them all the apples", library) == [("Give", {"theme": "all the apples",
+                                                                       "recipient": "them"})]

@@ -463,7 +463,8 @@ def test_parse_trees_shared_by_shape_give_the_same_parses(library: Library, shar
     ("Put a pot with a piece of apple in it on a table",
      [("Slice", "Apple"), ("Place", "Apple"), ("Place", "Pot")]),
     ("put a cooked slice of tomato on the counter", [("Slice", "Tomato"), ("Heat", "Tomato"), ("Place", "Tomato")]),
-    ("cut an apple and put an apple piece in the pot", [("Slice", "Apple"), ("Place", "Apple")]),   # cut once
+    ("cut an apple and put an apple piece in the pot", [("Slice", "Apple"), ("Place", "Apple"),    # cut once;
+                                                        ("Place", "Pot")]),   # the pot then carried (tasks)
     ("slice the bread, take a slice and put the slice in the fridge",      # a slice of what was cut
      [("Slice", "Bread"), ("Pick", "Bread"), ("Place", "Bread")]),
     ("put a slice in the fridge", [("Place", None)]),                      # nothing cut: no whole to cut

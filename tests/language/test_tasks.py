@@ -1,5 +1,6 @@
-"""The task a sentence describes: a LookAt added to a parse the model reads as a look task that says none, only
-where the statistics know the vocabulary and the model is sure enough, marked inferred."""
+"""The task a sentence describes: a LookAt added to a parse the model reads as a look task that says none, a stack's
+container put where it most likely went, only where the statistics know the vocabulary and the model is sure enough,
+marked inferred."""
 
 from __future__ import annotations
 
@@ -12,9 +13,20 @@ import pytest
 from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
 from seal_cli.frames.taxonomy import class_key
+from seal_cli.language.goals import GoalModel
 from seal_cli.language.grounding import Vocabulary
 from seal_cli.language.parser import parse_command
-from seal_cli.language.tasks import ADDERS, LOOK, TASKS, TaskModel, infer_task, task_features, unlooked
+from seal_cli.language.tasks import (
+    ADDERS,
+    LOOK,
+    STACK,
+    TASKS,
+    TaskModel,
+    infer_task,
+    task_features,
+    uncarried,
+    unlooked,
+)
 from seal_cli.language.wordusage import WordUsage, context_words, load_word_usage, shipped_word_usage
 
 ROOM = ("CreditCard", "FloorLamp", "DeskLamp", "Desk", "Sofa", "Mug", "Microwave", "AlarmClock")
@@ -117,3 +129,75 @@ def test_the_shipped_table_reads_a_lamp_turned_off_as_a_look_only_for_alfred(lib
     gpsr = Vocabulary.of(["credit card", "floor lamp", "sofa", "person"])
     assert "LookAt" not in [f for f, _ in frames("Turn off the floor lamp while holding a credit card.", library,
                                                   gpsr)]
+
+
+STACK_ROOM = ("Tomato", "Pan", "CounterTop", "DiningTable", "Fridge", "Knife", "Mug", "Apple")
+STACKING = TaskModel({STACK: 10, SIMPLE: 40}, {"r:pan": {STACK: 5.0}, "r:mug": {STACK: 5.0}},
+                     carried=GoalModel({"CounterTop": 6, "DiningTable": 3, "Pan": 1},
+                                       {"w:dinner": {class_key("DiningTable"): 4.0}}))
+
+
+def stacking(classes: tuple[str, ...] = STACK_ROOM, model: TaskModel = STACKING) -> Vocabulary:
+    return Vocabulary.of(classes, usage=WordUsage({}, frozenset(class_key(c) for c in STACK_ROOM), tasks=model))
+
+
+def test_a_stack_s_container_is_put_where_it_most_likely_went(library: Library) -> None:
+    parse = parse_command("place a slice of tomato in a pan", library, stacking())
+    places = [f for f in parse.frames if f.frame == "Place"]
+    assert len(places) == 2
+    inner, outer = places
+    assert parse.resolve(inner.elements["theme"]).cls == "Tomato"
+    assert outer.elements["theme"].refers_to == (parse.frames.index(inner), "goal")     # the same pan, carried
+    assert parse.resolve(outer.elements["theme"]).cls == "Pan"
+    assert (outer.elements["goal"].cls, outer.elements["goal"].default) == ("CounterTop", True)
+    assert outer.inferred is not None and outer.inferred >= 0.7 and inner.inferred is None
+    supper = parse_command("put the apple in the pan for dinner", library, stacking())
+    assert supper.frames[-1].elements["goal"].cls == "DiningTable"              # the sentence's words weigh
+    bare = parse_command("put the apple in the pan", library, stacking(tuple(c for c in STACK_ROOM
+                                                                              if c != "CounterTop")))
+    assert bare.frames[-1].elements["goal"].cls == "DiningTable"          # only what the room holds; never the pan
+
+
+def test_no_container_is_carried_when_said_unsure_or_no_container(library: Library) -> None:
+    said = parse_command("put the apple in the pan and put the pan on the table", library, stacking())
+    assert [f.inferred for f in said.frames if f.frame == "Place"] == [None, None]     # both Places said
+    fridge = parse_command("put the apple in the fridge", library, stacking(
+        model=TaskModel(STACKING.prior, {"f:Place": {STACK: 9.0}}, carried=STACKING.carried)))
+    assert uncarried(fridge, library) is None and len(fridge.frames) == 1         # a fridge carries nothing
+    unsure = parse_command("put the apple in the pan", library, stacking(
+        model=TaskModel(STACKING.prior, {}, carried=STACKING.carried)))            # 0.2 < 0.7
+    assert [f.frame for f in unsure.frames] == ["Place"]
+    nowhere = parse_command("put the apple in the pan", library, stacking(
+        model=TaskModel(STACKING.prior, STACKING.weights)))                        # no places learned
+    assert [f.frame for f in nowhere.frames] == ["Place"]
+    two = parse_command("put the apple and the knife in the pan", library, stacking(), infer_steps=False)
+    assert uncarried(two, library) is None                                     # a coordination: the stack model's
+    gpsr = Vocabulary.of([*STACK_ROOM, "person"], usage=stacking().usage)
+    assert [f.frame for f in parse_command("put the apple in the pan", library, gpsr).frames] == ["Place"]
+
+
+def test_a_table_s_stack_goals_are_read_checked_and_merged(tmp_path: Path) -> None:
+    path = tmp_path / "t.json"
+    path.write_text(json.dumps({"format": "seal-word-classes/1", "classes": ["Apple", "Pan", "CounterTop"],
+                                "words": {}, "task_prior": {STACK: 2}, "stack_goal_prior": {"CounterTop": 3},
+                                "stack_goal_weights": {"w:stove": {"CounterTop": 0.5}}}))
+    usage = load_word_usage([path])
+    top = class_key("CounterTop")
+    assert usage.tasks.carried.prior == {top: 3}
+    assert usage.tasks.carried.weights["w:stove"] == {top: 0.5}
+    assert usage.merged(usage).tasks.carried.prior == {top: 6}
+    path.write_text(json.dumps({"format": "seal-word-classes/1", "classes": ["Apple"], "words": {},
+                                "stack_goal_prior": {"Sofa": 3}}))
+    with pytest.raises(SealError, match='"stack_goal_prior" must') as err:
+        load_word_usage([path])
+    assert err.value.file == str(path)
+
+
+def test_the_shipped_table_carries_a_pan_only_for_alfred(library: Library) -> None:
+    assert shipped_word_usage().tasks.carried
+    alfred = Vocabulary.of(["Tomato", "Pan", "CounterTop", "DiningTable", "Fridge", "Knife"])
+    parse = parse_command("Place a slice of tomato in a pan.", library, alfred)
+    assert [f.frame for f in parse.frames][-2:] == ["Place", "Place"] and parse.frames[-1].inferred is not None
+    gpsr = Vocabulary.of(["tomato", "pan", "counter", "person"])
+    assert [f.frame for f in parse_command("Place a slice of tomato in a pan.", library, gpsr).frames].count(
+        "Place") == 1

@@ -68,3 +68,26 @@ def test_train_trials_or_whole_floor_plans_are_held_out() -> None:
     fitted = {r["floor_plan"] for r in rows if r["task_id"] not in plans}
     assert not fitted & {r["floor_plan"] for r in rows if r["task_id"] in plans}     # no room seen on both sides
     assert fitted & {r["floor_plan"] for r in rows if r["task_id"] in trials}       # held-out trials share rooms
+
+
+def test_where_a_stack_s_container_went_is_learned_from_the_stacks_that_do_not_say_it() -> None:
+    module = builder()
+    from seal_cli.language.grounding import Vocabulary
+    from seal_cli.language.wordusage import FORMAT
+
+    classes = ["Tomato", "Apple", "Pan", "Bowl", "CounterTop", "DiningTable", "Fridge"]
+    data = {"format": FORMAT, "source": "test", "classes": classes, "words": {}}
+    stack = "pick_and_place_with_movable_recep"
+    rows = [{"task_type": stack, "receptacle": "CounterTop", "goal_sentence": "put a tomato in a pan"},
+            {"task_type": stack, "receptacle": "CounterTop", "goal_sentence": "put the apple in the pan"},
+            {"task_type": stack, "receptacle": "DiningTable", "goal_sentence": "put an apple in a bowl"},
+            {"task_type": stack, "receptacle": "DiningTable", "goal_sentence": "put a tomato in the bowl"},
+            {"task_type": stack, "receptacle": "Fridge",                       # its place said: not counted
+             "goal_sentence": "put an apple in a bowl and put the bowl in the fridge"},
+            {"task_type": "pick_and_place_simple", "receptacle": "Fridge",    # no stack: not counted
+             "goal_sentence": "put an apple in a bowl"},
+            {"task_type": stack, "receptacle": "Fridge", "goal_sentence": "put an apple in the fridge"}]  # no container
+    built = module.with_stack_goals(data, rows, Vocabulary.of(classes))
+    assert built["stack_goal_prior"] == {"CounterTop": 2, "DiningTable": 2}
+    weights = built["stack_goal_weights"]
+    assert weights["o:bowl"]["DiningTable"] > weights["o:pan"]["DiningTable"]        # the container weighs

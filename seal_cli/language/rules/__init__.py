@@ -154,6 +154,7 @@ WORDS: tuple[Rule, ...] = (
     function_words.PARTITIVE,
     function_words.DETERMINER,
     function_words.WHATEVER,
+    function_words.PRONOUN_QUANTIFIED,
     function_words.PRONOUN,
     open_words.FILLED_WITH,
     open_words.KIND_GERUND,

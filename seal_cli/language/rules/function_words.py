@@ -220,6 +220,18 @@ def _pronoun(s: State, i: int) -> Match | None:
     return None if s.in_np() else s.emit(i, 1, Tag.PRON)
 
 
+FLOATED = frozenset(["both", "all"])
+"""Quantifiers said after a pronoun of several things ("put them *both* on the table")."""
+
+
+def _pronoun_quantified(s: State, i: int) -> Match | None:
+    after = s.words[i + 2].lower if i + 2 < len(s.words) else ""
+    if s.in_np() or s.next_lower(i) not in FLOATED or s.noun_follows(i + 2) or after in NP_OPENERS or \
+            after in NUMBERS or after == "of":
+        return None                      # "give them all the apples": "all" opens the thing given
+    return s.emit(i, 2, Tag.PRON)
+
+
 TIME_WORD = Rule("time word", _time_word, (
     Example("put it in the fridge right away", "right away", Tag.PARTICLE),
 ), TIME_FIRST, "a time adverbial ('now', 'right away', 'later')")
@@ -276,4 +288,10 @@ WHATEVER = Rule("whatever is", _whatever, (
     Example("go to the table and pick up whatever is there", "whatever", Tag.WORD),
     Example("take whatever's in the sink", "whatever", Tag.WORD),
 ), _WHATEVER, "'whatever is on the counter': the thing, its 'is' dropped as 'that is' is")
+PRONOUN_QUANTIFIED = Rule("pronoun with its quantifier", _pronoun_quantified, (
+    Example("put the apple in the bowl and put them both on the table", "them both", Tag.PRON),
+    Example("put a spoon in a cup and move them both to the sink", "them both", Tag.PRON),
+    Example("wash the cups and put them all away", "them all", Tag.PRON),
+), frozenset(["them", "they", "these", "those", "it"]), "'them both', 'them all': one pronoun, the quantifier "
+   "floated after it (not before a noun phrase: 'give them all the apples')")
 PRONOUN = Rule("pronoun", _pronoun, (Example("put it there", "it", Tag.PRON),), PRONOUNS, "a pronoun")
