@@ -703,8 +703,13 @@ class SeFMPolicy(Policy):
         With ``incumbent`` (the look being driven to, :meth:`_reconsider_in_room`), that look stands in for
         object-only's in the comparison, and (:attr:`see_on_the_way`) both orders' E count what their drives
         see on the way (:meth:`_on_the_way`); object-only's own order does not.
+        The drive on is counted from where the thing found would be acted on (:meth:`_acted`: from the look
+        where it reaches the thing, else from the cell that does, with the drive there) and through the plan's
+        next known stops (:attr:`onward_through`).
         Approximations: the looks are the best few, not all; on the way, only places within reach; the
-        belief the tour leaves unrevealed adds nothing to E; one instance."""
+        belief the tour leaves unrevealed adds nothing to E; one instance; an open place as a disc round its
+        pivot on which the thing lies at :attr:`ON_PLACE`'s distances, walls between the hand and the thing not
+        counted."""
 
         through = self._ahead(agent, agent.class_of(target), agent.world.robot.pose[:2])
         ahead = through[:1]
