@@ -344,6 +344,37 @@ def estimate_priors(episodes: Iterable[Episode], floor_plans: Mapping[str, Floor
     return {obj: {rec: n / sum(c.values()) for rec, n in sorted(c.items())} for obj, c in sorted(counts.items())}
 
 
+SPREAD_LEVELS = (0.125, 0.375, 0.625, 0.875)
+"""The quantiles :func:`place_spread` reports: the midpoints of four equally likely bands."""
+
+
+def place_spread(episodes: Iterable[Episode], floor_plans: Mapping[str, FloorPlan],
+                 levels: Sequence[float] = SPREAD_LEVELS) -> tuple[float, ...]:
+    """Where on a receptacle a thing lies, the shape SeFM's search takes for it
+    (:attr:`~seal_cli.sim.policies.sefm.SeFMPolicy.ON_PLACE`): over the things that start on a receptacle that
+    does not open, the distance from the receptacle's pivot as a share of the pivot's distance to the nearest
+    reachable position, at the quantiles ``levels`` (rounded to three places). Scenes repeat across episodes,
+    and each thing counts once per episode."""
+    shares: list[float] = []
+    nearest: dict[tuple[str, str], float] = {}
+    for episode in episodes:
+        plan = floor_plans[episode.floor_plan]
+        receptacles = plan.by_id()
+        reachable = np.asarray(plan.reachable, dtype=float).reshape(-1, 2)
+        for obj in episode.objects:
+            r = receptacles.get(obj.parent or "")
+            if r is None or r.openable or not len(reachable):
+                continue
+            key = (plan.name, r.id)
+            if key not in nearest:
+                nearest[key] = float(np.min(np.hypot(reachable[:, 0] - r.at[0], reachable[:, 1] - r.at[1])))
+            if nearest[key] > 0:
+                shares.append(math.dist(obj.at, r.at) / nearest[key])
+    if not shares:
+        raise SealError("no thing starts on a receptacle that does not open: no spread to estimate")
+    return tuple(round(float(q), 3) for q in np.quantile(np.asarray(shares), list(levels)))
+
+
 def scene_priors(priors: Mapping[str, Mapping[str, float]], plan: FloorPlan, classes: Iterable[str],
                  floor: float = 0.02) -> dict[str, dict[str, float]]:
     """Place-class priors for one floor plan: the learnt distribution restricted to the receptacle

@@ -169,6 +169,33 @@ class Grid:
         """Metres of the shortest path from ``start`` to every cell (``inf`` where none, or occupied)."""
         return self._dijkstra(start)[0]
 
+    def distances_from(self, cells: np.ndarray, costs: np.ndarray) -> np.ndarray:
+        """Per cell, min over the free ``cells`` (rows of i, j) of each one's ``costs`` plus the metres of the
+        shortest path between it and the cell (``inf`` where none, or occupied; everywhere without ``cells``):
+        one Dijkstra from a source joined to each of them at its cost (a move costs the same both ways)."""
+        from scipy.sparse import csr_matrix, vstack
+        from scipy.sparse.csgraph import dijkstra
+
+        field_ = np.full(self.free.shape, np.inf)
+        cells = np.asarray(cells, dtype=int).reshape(-1, 2)
+        costs = np.asarray(costs, dtype=float).reshape(-1)
+        keep = np.isfinite(costs)
+        cells, costs = cells[keep], costs[keep]
+        if not len(cells):
+            return field_
+        graph, index = self._graph
+        n = graph.shape[0]   # type: ignore[attr-defined]
+        nodes = index[cells[:, 0], cells[:, 1]]
+        if (nodes < 0).any():
+            raise SealError("a source cell is not free")
+        source = csr_matrix((costs / self.resolution, (np.zeros(len(nodes), dtype=int), nodes)), shape=(1, n))
+        joined = vstack([graph, source]).tocsr()
+        joined.resize((n + 1, n + 1))
+        along = dijkstra(joined, directed=True, indices=n)[:n]
+        free = self.free_cells
+        field_[free[:, 0], free[:, 1]] = along * self.resolution
+        return field_
+
     def path(self, start: Cell, goal: Cell) -> list[Cell]:
         """One shortest path, both ends included (from the Dijkstra tree of ``start``; :func:`astar` is
         the reference); an unreachable goal is a SealError."""

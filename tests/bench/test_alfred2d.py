@@ -213,3 +213,13 @@ def test_human_goals_are_grounded_in_the_episodes_room(shared_data: Path, librar
                                            "Heat(theme=tomato, instrument=microwave)",
                                            "Place(theme=tomato, goal=counter_top)"]
     assert all(v in scene.vocabulary for b in commanded for _, v in b.values)   # every value a class of the room
+
+
+def test_place_spread_is_the_share_of_the_pivot_s_clearance_a_thing_lies_at(suite) -> None:  # type: ignore[no-untyped-def]
+    from seal_cli.bench.alfred2d import place_spread
+
+    got = place_spread(suite.episodes, suite.floor_plans, (0.0, 0.5, 1.0))
+    assert got[0] <= got[1] <= got[2] and got[0] >= 0.0
+    assert 0.0 < got[1] < 2.0   # a thing lies on its receptacle, about as far from the pivot as the pivot's clearance
+    with pytest.raises(SealError, match="no thing starts"):
+        place_spread([], suite.floor_plans)

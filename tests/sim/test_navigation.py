@@ -92,3 +92,16 @@ def test_the_path_cache_keeps_a_bounded_number_of_bytes(monkeypatch: pytest.Monk
         grid.distances((k, k))
         assert len(grid._cache) <= 6
     assert np.isclose(grid.distances((0, 0))[0, 3], 1.5)  # cleared entries are computed again, the same
+
+
+@pytest.mark.parametrize("connectivity", [4, 8])
+def test_distances_from_several_cells_is_the_least_of_their_costs_plus_the_path(connectivity: int) -> None:
+    grid = wall_grid(connectivity)
+    a, b = (0, 0), (0, 6)   # either side of the wall
+    assert np.array_equal(grid.distances_from(np.array([a]), np.array([0.0])), grid.distances(a))
+    got = grid.distances_from(np.array([a, b]), np.array([1.0, 2.5]))
+    want = np.minimum(grid.distances(a) + 1.0, grid.distances(b) + 2.5)
+    assert np.allclose(got[grid.free], want[grid.free]) and np.isinf(got[~grid.free]).all()
+    assert np.isinf(grid.distances_from(np.zeros((0, 2), dtype=int), np.zeros(0))).all()
+    with pytest.raises(SealError, match="not free"):
+        grid.distances_from(np.array([(0, 3)]), np.array([0.0]))

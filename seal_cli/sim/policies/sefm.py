@@ -52,14 +52,27 @@ class _TourModel:
     R: np.ndarray
     on: np.ndarray
     scale: float
-    way: dict[tuple[int, int], list[tuple[float, np.ndarray, float]]] | None = None
+    way: dict[tuple[int, int], list[tuple[float, np.ndarray, float | np.ndarray]]] | None = None
     """Per drive (from look a, or -1 the robot, to look b), the looks the robot takes on the way: metres
     from a, which columns that look reveals (a place within reach and open), and the drive on from there."""
     mass: np.ndarray | None = None
     """Per column, the belief a look on the way reveals of it (with :attr:`way`)."""
+    acted: np.ndarray | None = None
+    """Per look and column, the (weighted) metres from look k to finish the plan's next stop when the thing is
+    found in that column: to where it is acted on and on from there (:meth:`SeFMPolicy._acted`); None: ``on[k]``
+    for every column (the drive on counted from the look). A look on the way carries its own row in :attr:`way`."""
 
-    def _legs(self, prev: int, k: int) -> list[tuple[float, np.ndarray, float]]:
+    def _legs(self, prev: int, k: int) -> list[tuple[float, np.ndarray, float | np.ndarray]]:
         return self.way.get((prev, k), []) if self.way is not None else []
+
+    @staticmethod
+    def _after(found: np.ndarray, on: float | np.ndarray, gain: float) -> float:
+        """The drive on paid for the belief ``found`` (per column) a look reveals first, of which ``gain`` is still
+        unfound: ``on`` per column (or one figure for all), weighted by where in ``found`` the thing would be."""
+        if np.ndim(on) == 0:
+            return gain * float(on)
+        total = float(found.sum())
+        return gain * float(found @ on) / total if total > 0 else 0.0
 
     def cost(self, order: Sequence[int]) -> float:
         """E = Σ_k (d(v_k-1, v_k) + scale) · (1 − Σ_j<k p_j) + Σ_k p_k · on_k."""
@@ -72,16 +85,17 @@ class _TourModel:
             for at, cols, on in self._legs(prev, k):   # a look on the way, and the drive stops when it finds it
                 total += (at - done) * left
                 done = at
-                gain = min(float(self.mass[cols & ~seen].sum()) if self.mass is not None else 0.0, left)
+                first = np.where(cols & ~seen, self.mass, 0.0) if self.mass is not None else np.zeros(len(cols))
+                gain = min(float(first.sum()), left)
                 seen |= cols
-                total += gain * on
+                total += self._after(first, on, gain)
                 left = max(0.0, left - gain)
             total += (d - done + self.scale) * left
             new = np.where(seen, 0.0, R[k])
             found = float(new.sum())
             gain = min(found, left)
             seen |= R[k] > 0
-            total += gain * self.on[k]
+            total += self._after(new, self.on[k] if self.acted is None else self.acted[k], gain)
             left = max(0.0, left - gain)
             prev = k
         return round(total, 6)   # equal to rounding: the same order for SeFM and object-only
@@ -101,12 +115,12 @@ class _TourModel:
                 new = cols & ~seen
                 if self.mass is not None:
                     mass[:-1][new] = self.mass[new]
-                metres[:-1][new] = driven + at + on
+                metres[:-1][new] = driven + at + (np.asarray(on)[new] if np.ndim(on) else on)
                 seen |= cols
             driven += (self.here[k] if prev < 0 else self.between[prev, k]) + self.scale
             new = (R[k] > 0) & ~seen
             mass[:-1][new] = R[k][new]
-            metres[:-1][new] = driven + self.on[k]
+            metres[:-1][new] = driven + (self.on[k] if self.acted is None else self.acted[k][new])
             seen |= R[k] > 0
             prev = k
         mass[-1] = max(0.0, 1.0 - float(mass[:-1].sum()))
@@ -198,7 +212,7 @@ class SeFMPolicy(Policy):
         self._tours = OraclePolicy()
         self._tours.begin(agent)
         self._stood: dict[str, tuple[float, float]] = {}
-        self._onward: dict[tuple[str, tuple[float, float]], np.ndarray] = {}
+        self._onward: dict[tuple[tuple[str, tuple[float, float]], ...], np.ndarray] = {}
         self._floor_sight: dict[Cell, np.ndarray] = {}
         self._prior_shares: dict[str, np.ndarray] = {}
         self.sefm: Any = None
@@ -211,6 +225,9 @@ class SeFMPolicy(Policy):
         self.departures: list[dict[str, Any]] = []
         self._ways: dict[tuple[Cell, Cell], list[tuple[float, Cell]]] = {}
         self._reach_cache: dict[tuple[Cell, str], bool] = {}
+        self._places_at: dict[str, list[np.ndarray]] = {}
+        self._acted_then: np.ndarray | None = None
+        self._acted_cache: dict[str, list[np.ndarray]] = {}
         """Each choice in one room where SeFM's best first look was not object-only's: the gap, both orders'
         outcomes (:meth:`_TourModel.outcomes`) and whether SeFM departed (read by tracing scripts)."""
         self._chosen: tuple[Cell, str, Any] | None = None
@@ -606,6 +623,12 @@ class SeFMPolicy(Policy):
     look departs from object-only's only where that expected cost says so by more than :attr:`defer_m`
     (:meth:`_first_of_tour`). 0: the thing's search alone, as object-only searches."""
 
+    onward_through = True
+    """The drive on from where the thing is found runs through the plan's next known stops (up to
+    :attr:`stand_ahead`, as :meth:`stand` chooses the cells to act on them from): in a cooling task, the fridge
+    *and* the cabinet the plate goes to after it, so a look beside the fridge's far side is not valued as if the
+    plan ended at the fridge (docs/benchmarks.md, "This round (search15)"). Off: to the next stop only."""
+
     onward_pool = False
     """Also draw the tour's looks from the best by belief per metre of the drive there *and on*, mass /
     (metres + scale + on) (earlier rounds: on). Off: SeFM's looks are object-only's, the best by belief per
@@ -616,12 +639,16 @@ class SeFMPolicy(Policy):
     thing, so for looks that reveal different places Σ p_k · on(v_k) is the same in every order and cannot
     choose the looks (docs/benchmarks.md, "This round (search9)")."""
 
-    def _onward_field(self, agent: Agent, stop: Known) -> np.ndarray:
-        """Metres from every cell to the nearest cell to act on ``stop`` from (kept per stop and place)."""
-        key = (stop.id, stop.at)
+    def _onward_field(self, agent: Agent, stop: Known, *later: Known) -> np.ndarray:
+        """Metres from every cell to the nearest cell to act on ``stop`` from; with ``later`` stops, the shortest
+        drive through a cell to act on each in turn, as :meth:`stand` chooses them (kept per stops and places)."""
+        key = tuple((k.id, k.at) for k in (stop, *later))
         if key not in self._onward:
-            fields = [agent.grid.distances((int(i), int(j))) for i, j in agent.stand_cells(stop)]
-            self._onward[key] = np.min(fields, axis=0) if fields else np.full(agent.grid.shape, np.inf)
+            rest = np.zeros(agent.grid.shape)
+            for k in reversed((stop, *later)):   # from the last stop back: to act on it, then on through the rest
+                cells = agent.stand_cells(k)
+                rest = agent.grid.distances_from(cells, rest[cells[:, 0], cells[:, 1]])
+            self._onward[key] = rest
         return self._onward[key]
 
     onward_points = 24
@@ -676,14 +703,21 @@ class SeFMPolicy(Policy):
         With ``incumbent`` (the look being driven to, :meth:`_reconsider_in_room`), that look stands in for
         object-only's in the comparison, and (:attr:`see_on_the_way`) both orders' E count what their drives
         see on the way (:meth:`_on_the_way`); object-only's own order does not.
+        The drive on is counted from where the thing found would be acted on (:meth:`_acted`: from the look
+        where it reaches the thing, else from the cell that does, with the drive there) and through the plan's
+        next known stops (:attr:`onward_through`).
         Approximations: the looks are the best few, not all; on the way, only places within reach; the
-        belief the tour leaves unrevealed adds nothing to E; one instance."""
+        belief the tour leaves unrevealed adds nothing to E; one instance; an open place as a disc round its
+        pivot on which the thing lies at :attr:`ON_PLACE`'s distances, walls between the hand and the thing not
+        counted."""
 
-        ahead = self._ahead(agent, agent.class_of(target), agent.world.robot.pose[:2])[:1]
+        through = self._ahead(agent, agent.class_of(target), agent.world.robot.pose[:2])
+        ahead = through[:1]
         stands = agent.stand_cells(ahead[0]) if ahead else np.zeros((0, 2), dtype=int)
         then = None
         if self.use_frames and self.onward > 0:
-            then = self._onward_field(agent, ahead[0]) if ahead else self._onward_belief(agent, target)
+            stops = through if self.onward_through else ahead
+            then = self._onward_field(agent, *stops) if ahead else self._onward_belief(agent, target)
             self._blind = target if then is not None and not ahead else None
 
         def plain(o: Look) -> float:   # equal to rounding: the same looks for SeFM and object-only
@@ -720,7 +754,7 @@ class SeFMPolicy(Policy):
         if not any(o is alone for o in best):
             best = [*best, alone]
             fields.setdefault(alone.view.cell, agent.grid.distances(alone.view.cell))
-        model = self._tour_model(best, fields, then)
+        model = self._tour_model(best, fields, then, agent)
         if self.see_on_the_way and then is not None:
             model = self._on_the_way(agent, best, model, then)
         order, expected = model.best()
@@ -752,12 +786,14 @@ class SeFMPolicy(Policy):
         best order that starts with that look)."""
         if len(best) < 2:
             return best[0], 0.0
-        model = self._tour_model(best, fields, then)
+        model = self._tour_model(best, fields, then, agent)
         order, current = model.best(first)
         return best[order[0]], current
 
-    def _tour_model(self, best: Sequence[Look], fields: dict[Cell, np.ndarray], then: np.ndarray | None) -> _TourModel:
-        """The expected-cost model of searching through ``best`` (:class:`_TourModel`)."""
+    def _tour_model(self, best: Sequence[Look], fields: dict[Cell, np.ndarray], then: np.ndarray | None,
+                    agent: Agent | None = None) -> _TourModel:
+        """The expected-cost model of searching through ``best`` (:class:`_TourModel`); with ``agent`` (and
+        :attr:`acted_on`), the drive on counted from where the thing is acted on (:meth:`_acted`)."""
         n = len(best)
         here = np.array([o.metres for o in best])
         between = np.array([fields[o.view.cell][[b.view.cell[0] for b in best], [b.view.cell[1] for b in best]]
@@ -771,7 +807,89 @@ class SeFMPolicy(Policy):
                 R[k, : len(o.reveals)] = o.reveals
         on = np.array([float(then[o.view.cell]) for o in best]) if then is not None else np.zeros(n)
         on = np.where(np.isfinite(on), on, 0.0)
-        return _TourModel(here, between, R, self.onward * on, self.distance_scale)
+        acted = None
+        if agent is not None and then is not None and self.acted_on:
+            acted = self._acted(agent, then, [o.view.cell for o in best], np.asarray((R > 0).any(axis=0)))
+        return _TourModel(here, between, R, self.onward * on, self.distance_scale, acted=acted)
+
+    acted_on = True
+    """SeFM's drive on, in one room, is counted from where the thing found is acted on, not from the look that
+    finds it (:meth:`_acted`). Off: from the look (earlier rounds), which charged a look at a long table's near
+    end as if the robot picked up from there a plate at the far end (docs/benchmarks.md, "This round
+    (search15)")."""
+
+    ON_PLACE = (0.124, 0.325, 0.523, 0.903)
+    """Where on an open place a thing lies: its distance from the place's pivot as a share of the pivot's distance
+    to the nearest free cell, at the quantiles 1/8, 3/8, 5/8 and 7/8 of ALFRED-2D's train split (120,151 things on
+    receptacles that do not open; :func:`seal_cli.bench.alfred2d.place_spread`, rebuilt by
+    ``scripts/build_place_spread.py``)."""
+
+    ON_PLACE_DIRECTIONS = 8
+    """Directions round the pivot at which :attr:`ON_PLACE`'s distances are taken (the place as a disc)."""
+
+    def _acted(self, agent: Agent, then: np.ndarray, cells: Sequence[Cell], live: np.ndarray) -> np.ndarray:
+        """(len(cells), len(live)): per cell a look is taken from and per column (a place, or a look's own belief),
+        the (weighted) metres to finish the plan's next stop once the look finds the thing there.
+
+        The robot acts on a thing from a cell within reach of *it* (or by its place's access points, as
+        :meth:`~seal_cli.sim.agent.Agent.stand_cells`), the one that makes the drive there and on to the next stop
+        shortest (:meth:`stand`): from a look within reach of the thing, the drive on from the look; from one that
+        is not, the drive to such a cell and on from there. Where on an open place the thing lies is not in the
+        belief (a belief point is a pose to act from), so it is taken at :attr:`ON_PLACE`'s distances from the
+        pivot in :attr:`ON_PLACE_DIRECTIONS` directions, equally likely; the column's cost is the mean over those
+        points of min over the cells s that reach the point of d(cell, s) + then(s), which is then(cell) where
+        the cell itself reaches it. A shut place (its thing is taken from where it is opened), a floor point and
+        a look's own mass keep the drive on from the look. ``live``: the columns to value (others get the look's)."""
+        own = np.array([float(then[c]) for c in cells])
+        out = np.repeat(np.where(np.isfinite(own), own, 0.0)[:, None], len(live), axis=1)
+        places = self._places(agent)
+        at = tuple(np.array(cells, dtype=int).reshape(-1, 2).T)
+        for j, place in enumerate(places[: len(live)]):
+            if not live[j] or place.openable:
+                continue
+            costs = [h[at] for h in self._acted_fields(agent, place, then)]
+            if not costs:
+                continue
+            value = np.mean(costs, axis=0)
+            out[:, j] = np.where(np.isfinite(value), value, out[:, j])
+        return self.onward * out
+
+    def _acted_fields(self, agent: Agent, place: Known, then: np.ndarray) -> list[np.ndarray]:
+        """Per point the thing may lie at on ``place`` (:meth:`_acted`), per free cell u: min over the cells s that
+        reach the point of d(u, s) + then(s) — one Dijkstra from a source joined to those cells at then(s)
+        (kept while ``then`` is the same)."""
+        if self._acted_then is not then:
+            self._acted_then, self._acted_cache = then, {}
+        if place.id not in self._acted_cache:
+            out = []
+            for stands in self._on_place(agent, place):
+                cells = agent.grid.free_cells[stands]
+                field_ = agent.grid.distances_from(cells, then[cells[:, 0], cells[:, 1]])
+                if np.isfinite(field_).any():
+                    out.append(field_)
+            self._acted_cache[place.id] = out
+        return self._acted_cache[place.id]
+
+    def _on_place(self, agent: Agent, place: Known) -> list[np.ndarray]:
+        """Per point a thing may lie at on ``place`` (:attr:`ON_PLACE`), the free cells (indices into the grid's
+        free cells) from which the robot reaches it; kept per place."""
+        if place.id not in self._places_at:
+            pts = agent.grid.free_points
+            rho = float(np.min(np.hypot(pts[:, 0] - place.at[0], pts[:, 1] - place.at[1]))) if len(pts) else 0.0
+            reach = agent.world.reach_of(place.id) if place.id in agent.world.items else agent.world.reach
+            near_access = np.zeros(len(pts), dtype=bool)
+            for a in place.access:
+                near_access |= np.hypot(pts[:, 0] - a[0], pts[:, 1] - a[1]) <= agent.world.access_tolerance
+            out = []
+            for share in self.ON_PLACE:
+                for t in range(self.ON_PLACE_DIRECTIONS):
+                    angle = 2 * math.pi * t / self.ON_PLACE_DIRECTIONS
+                    x, y = place.at[0] + share * rho * math.cos(angle), place.at[1] + share * rho * math.sin(angle)
+                    near = (np.hypot(pts[:, 0] - x, pts[:, 1] - y) <= reach - 1e-6) | near_access
+                    if near.any():
+                        out.append(np.flatnonzero(near))
+            self._places_at[place.id] = out
+        return self._places_at[place.id]
 
     see_on_the_way = True
     """SeFM's expected cost when it weighs its own first look against object-only's counts what the drives see
@@ -799,7 +917,7 @@ class SeFMPolicy(Policy):
             return model
         live = np.flatnonzero(mass[: len(places)] > 0)
         starts = [(-1, agent.robot_cell()), *((k, o.view.cell) for k, o in enumerate(best))]
-        way: dict[tuple[int, int], list[tuple[float, np.ndarray, float]]] = {}
+        way: dict[tuple[int, int], list[tuple[float, np.ndarray, float | np.ndarray]]] = {}
         for a, start in starts:
             for b, o in enumerate(best):
                 if a == b or start == o.view.cell:
@@ -812,8 +930,11 @@ class SeFMPolicy(Policy):
                     cols = np.zeros(width, dtype=bool)
                     cols[live] = self._reach_at(agent, places, live, cell)
                     if cols.any():
-                        on = float(then[cell]) if np.isfinite(then[cell]) else 0.0
-                        legs.append((at, cols, self.onward * on))
+                        if model.acted is not None:   # from where the thing is acted on
+                            legs.append((at, cols, self._acted(agent, then, [cell], cols)[0]))
+                        else:
+                            on = float(then[cell]) if np.isfinite(then[cell]) else 0.0
+                            legs.append((at, cols, self.onward * on))
                 if legs:
                     way[(a, b)] = legs
         return replace(model, way=way, mass=mass)

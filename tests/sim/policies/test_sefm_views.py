@@ -472,3 +472,85 @@ def test_the_beliefs_take_only_the_looks_the_robot_made(library: Library) -> Non
     sefm.update(agent.world.robot.pose, (), policy._state(agent))   # what a look there with nothing seen does
     after = np.hypot(sefm.objects.X[row][:, 0] - 7.5, sefm.objects.X[row][:, 1] - 0.5) <= 0.75
     assert sefm.objects.W[row][after].sum() < 0.7 * W[near].sum()
+
+
+def table_room(library: Library) -> Scene:
+    """A corridor 8 m x 1 m (0.25 m cells) with a long dining table north of its west end (pivot 1.2 m from the
+    nearest free cell, so a look from its near side does not reach its far end), a small shelf by the table's
+    east corner and a cabinet at the east end; an apple on the table, the robot in the middle."""
+    pts = [(x, y) for x in np.arange(0.0, 8.01, 0.25) for y in np.arange(0.0, 1.01, 0.25)]
+    places = [("table_1", "dining_table", (1.5, 2.2), False), ("shelf_1", "shelf", (2.5, 1.3), False),
+              ("cabinet_1", "cabinet", (7.5, 1.4), True)]
+    items = [Item(n, c, at, movable=False, receptacle=True, openable=o) for n, c, at, o in places]
+    items.append(Item("apple_1", "apple", (0.6, 2.4), parent="table_1"))
+    world = World(items, WorldRobot(pose=(4.0, 0.5, 0.0)), taxonomy=library.taxonomy, reach=1.5,
+                  sensor=RangeSensor(Sensor(range=1.5)))
+    m = Map("table room", (-0.5, -0.5, 8.5, 3.5), rooms=(Room.box("kitchen", -0.5, -0.5, 8.5, 3.5),),
+            places=tuple(Place(n, c, at, openable=o, reach=1.5) for n, c, at, o in places),
+            priors={"apple": {"dining_table": 0.45, "shelf": 0.45}},
+            objects=(ObjectTruth("apple", (0.6, 2.4), "table_1"),), robot=Robot((4.0, 0.5, 0.0)),
+            sensor=Sensor(range=1.5), grid=OccupancyGrid.from_cells(pts, 0.25))
+    return Scene(world, m, Grid.from_points(pts, 0.25, connectivity=4), tuple(sorted({i.key for i in items})),
+                 "table room")
+
+
+def test_the_drive_on_is_counted_from_where_the_thing_found_is_acted_on(library: Library) -> None:
+    """A look at the long table from its east end (nearer the cabinet the apple goes to) does not reach the
+    table's west end: an apple found there is picked up from a cell further west, and the drive on starts
+    there. The model counts, per place a look reveals, the mean over where on it the thing may lie of the drive
+    to the cell that reaches it and on from there; a place the look reaches all of (the shelf) keeps the drive on
+    from the look; from the look that reaches all the table, too. Off (``acted_on``), the drive on from the look."""
+    policy = SeFMPolicy(particles=50)
+    agent = ready(library, table_room(library), policy, [("Place", {"theme": "apple", "goal": "cabinet"})])
+    ids = [p.id for p in policy._places(agent)]
+    then = policy._onward_field(agent, agent.known["cabinet_1"])
+    east, west = agent.grid.cell((2.25, 1.0)), agent.grid.cell((1.0, 1.0))
+    assert then[west] - then[east] == pytest.approx(1.25)   # the east end is 1.25 m nearer the cabinet
+
+    def look(cell: tuple[int, int], masses: dict[str, float]) -> Look:
+        reveals = np.zeros(len(ids))
+        for place, mass in masses.items():
+            reveals[ids.index(place)] = mass
+        return Look(float(reveals.sum()), float(agent.distances()[cell]), View(cell, (1.5, 2.2)), reveals)
+
+    best = [look(east, {"table_1": 0.45, "shelf_1": 0.45}), look(west, {"table_1": 0.45})]
+    fields = {o.view.cell: agent.grid.distances(o.view.cell) for o in best}
+    model = policy._tour_model(best, fields, then, agent)
+    table, shelf = ids.index("table_1"), ids.index("shelf_1")
+    assert model.acted is not None
+    assert model.acted[0, shelf] == pytest.approx(then[east])            # the look reaches all the shelf
+    # the table's west end is out of reach from the east look: some of the points are picked up further west
+    assert model.acted[0, table] > then[east] + 0.2
+    # by the geometry: the far points need a drive west and the same drive back
+    assert model.acted[0, table] - then[east] < then[west] - then[east] + 1.0
+    # each point's cost is the drive to a cell that reaches it and on from there: never below the look's own
+    assert model.acted[1, table] >= then[west] - 1e-9
+    # the expected cost of finding it at the table from the east look now counts that drive
+    from dataclasses import replace
+
+    plain = replace(model, acted=None)
+    assert model.cost([0, 1]) > plain.cost([0, 1])
+    off = SeFMPolicy(particles=50)
+    off.acted_on = False
+    agent_off = ready(library, table_room(library), off, [("Place", {"theme": "apple", "goal": "cabinet"})])
+    assert off._tour_model(best, fields, then, agent_off).acted is None
+
+
+def test_the_drive_on_runs_through_the_next_known_stops(library: Library) -> None:
+    """With two known stops ahead, the drive on from a cell is the shortest drive through a cell to act on the
+    first and then one for the second (as ``stand`` chooses them), never less than to the first alone."""
+    policy = SeFMPolicy(particles=50)
+    agent = ready(library, table_room(library), policy, [("Place", {"theme": "apple", "goal": "cabinet"})])
+    cabinet, shelf = agent.known["cabinet_1"], agent.known["shelf_1"]
+    one = policy._onward_field(agent, cabinet)
+    two = policy._onward_field(agent, cabinet, shelf)
+    here = agent.grid.cell((0.0, 0.0))
+    # to the cabinet's nearest cell to act from (x = 6.25 at the least), then back to the shelf's (x <= 3.75)
+    assert two[here] > one[here] + 2.0
+    shelf_cells = agent.stand_cells(shelf)
+    from_here = agent.grid.distances(here)
+    brute = min(float(from_here[int(i), int(j)])
+                + float(agent.grid.distances((int(i), int(j)))[shelf_cells[:, 0], shelf_cells[:, 1]].min())
+                for i, j in agent.stand_cells(cabinet))
+    assert two[here] == pytest.approx(brute)
+    assert policy._onward_field(agent, cabinet, shelf) is two   # kept for the run
