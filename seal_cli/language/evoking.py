@@ -407,7 +407,6 @@ class Evoker:
                 else:
                     host.contents.append(pp.np)
         self.asker(frame, roles)
-        self.held_by_theme(frame, roles)
         self.located_ground(frame, roles)
         # frames evoked by result words and contents, in the order of the words
         for role in frame.roles:
@@ -445,37 +444,6 @@ class Evoker:
                                   " ".join(w.text for w in clause.items if isinstance(w, Word) and w.info == "time")
                                   or None, clause.asked))
         self.carry_on(frame, roles, attached)
-
-    def held_by_theme(self, frame: Frame, roles: dict[str, Any]) -> None:
-        """Contents said after another phrase than the theme that the theme is the one to hold: "put a pan in
-        the sink *with a spoon in it*" is "a pan with a spoon in it" put in the sink, as "drop the pan on the table
-        with a knife in it" is; "put the cup on the table with the lamp on it" stays a table with a lamp. Which
-        classes hold things is learned, not listed: the rate at which people who placed a thing of the class
-        together with another carried the other in it (:class:`~seal_cli.language.stacking.StackModel`, counted
-        on a train split), at least its threshold for the theme and below it for the other phrase; and each
-        content a thing people placed together with others (:meth:`~seal_cli.language.stacking.StackModel.placed`:
-        a knife, an apple; not a lamp or a coffee machine). Only where the model is in scope (a vocabulary of
-        the classes it was counted over): elsewhere the contents stay where they were said."""
-        theme = roles.get(frame.elements[0].role) if frame.elements else None
-        if self.vocabulary is None or not isinstance(theme, NP) or theme.kind != "thing" or theme.pronoun \
-                or theme.conjuncts or theme.contents:
-            return
-        model = self.vocabulary.stack_model
-        for host in roles.values():
-            if not model or host is theme or not isinstance(host, NP) or host.kind != "thing" or not host.contents \
-                    or any(c.pronoun or c.kind != "thing" for c in host.contents) or host.head is None:
-                continue
-            held, other = theme.ground(self.vocabulary), host.ground(self.vocabulary)
-            if held is None or other is None or not model.rate(held) >= model.threshold > model.rate(other):
-                continue
-            carried = [c.ground(self.vocabulary) for c in host.contents]
-            if not all(c is not None and model.placed(c) for c in carried):
-                continue                     # "the table with the lamp on it": no thing people carry in a pan
-            first = min(c.start for c in host.contents)
-            theme.contents.extend(host.contents)
-            host.contents = []
-            host.end = max([host.head.end, *(n.end for n in host.inner if n.end <= first)])
-            return
 
     @staticmethod
     def asker(frame: Frame, roles: dict[str, Any]) -> None:

@@ -64,12 +64,6 @@ class StackModel:
         said = self.said.get(key, 0)
         return self.holds.get(key, 0) / said if said >= self.min_support else 0.0
 
-    def placed(self, cls: str) -> bool:
-        """Whether people placed things of this class together with others often enough to count
-        (:attr:`min_support` coordinations): a thing that is carried about, as a knife or an apple is and a
-        lamp or a coffee machine is not."""
-        return self.said.get(class_key(cls), 0) >= self.min_support
-
     def container(self, a: str, b: str) -> tuple[int, float] | None:
         """Which of two classes (0 or 1) holds the other, and its rate; None when neither is sure enough."""
         rates = (self.rate(a), self.rate(b))

@@ -112,32 +112,3 @@ def test_seal_run_says_what_it_put_where(library: Library) -> None:
 
     parse = parse_command("move a knife and a cup to the sink", library, kitchen())
     assert inferred_steps(parse) == ["(inferred: move a knife in a cup, 0.75)"]
-
-
-def test_a_thing_carried_is_placed_only_when_counted_often_enough() -> None:
-    assert MODEL.placed("Fork") and MODEL.placed("butter_knife") and MODEL.placed("Pan")
-    assert not MODEL.placed("Apple") and not MODEL.placed("DeskLamp")        # 3 coordinations; none
-
-
-def test_contents_said_after_the_goal_go_in_the_theme_that_holds_things(library: Library) -> None:
-    assert frames("put a cup on the counter with a fork in it", library, kitchen()) == [
-        ("Place", "Fork", "Cup"), ("Place", "Cup", "CounterTop")]
-    assert frames("drop the cup in the sink with a knife inside it", library, kitchen()) == [
-        ("Place", "ButterKnife", "Cup"), ("Place", "Cup", "SinkBasin")]
-    parse = parse_command("put a cup on the counter with a fork in it", library, kitchen())
-    assert parse.frames[1].elements["goal"].text == "the counter"
-    assert frames("put a cup with a fork in it on the counter", library, kitchen()) == [   # said first, as before
-        ("Place", "Fork", "Cup"), ("Place", "Cup", "CounterTop")]
-
-
-def test_contents_after_the_goal_stay_there_unless_the_model_is_sure(library: Library) -> None:
-    assert frames("put a pan on the counter with a fork in it", library, kitchen()) == [   # a pan: 0.4
-        ("Place", "Pan", "CounterTop")]
-    assert frames("put a cup on the counter with an apple in it", library, kitchen()) == [  # too few apples
-        ("Place", "Cup", "CounterTop")]
-    assert frames("put a fork on the counter with a cup on it", library, kitchen()) == [    # a fork holds nothing
-        ("Place", "Fork", "CounterTop")]
-    outside = Vocabulary.of([*KITCHEN, "lamp"], usage=kitchen().usage)                    # a class not counted
-    assert frames("put a cup on the counter with a fork in it", library, outside) == [("Place", "Cup", "CounterTop")]
-    rules = Vocabulary.of(KITCHEN, usage=WordUsage())                                       # no statistics
-    assert frames("put a cup on the counter with a fork in it", library, rules) == [("Place", "Cup", "CounterTop")]
