@@ -302,7 +302,7 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
     else its class (counted if asked); every conjunct's for a coordination. ``asked``: the phrase is
     what a question asks about ("how many chairs ...?", "is there a chair ...?"), so a fixed thing
     the map lacks is no refusal but a class to look for (the answer may be none). ``carried``: the
-    frame takes the thing into the hand, so only its own words can make it furniture the map lacks."""
+    frame carries the thing (:func:`_carried`), so only its own words can make it furniture the map lacks."""
     from seal_cli.language.english import PERSON_PRONOUNS, PRONOUNS
 
     if phrase.conjuncts:        # "the apple and the pear": both
@@ -605,7 +605,8 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         asked = _counted_roles(frame) | ({"theme"} if asks_whether(parse.text, evoked) else set())
         values = {role: _values(_sought_where(evoked, role, things), earlier, things, parse.text,
                                 frame.element(role).type, role in asked, _carried(frame, role), _gone_to(frame, role))
-                  for role, phrase in evoked.elements.items() if not back_unplaced(phrase)}
+                  for role, phrase in evoked.elements.items() if not back_unplaced(phrase)
+                  and not _the_house(role, phrase, things)}
         back_later = False
         backs: dict[str, Phrase | None] = {r: p for r, p in evoked.elements.items() if back_unplaced(p)}
         goal = evoked.elements.get("goal")
@@ -795,8 +796,13 @@ def _words(cls: str) -> str:
 
 
 def _carried(frame: Frame, role: str) -> bool:
-    """Whether the frame takes its ``role`` into the hand (needs it held, or leaves it held)."""
-    return frame.needs_held(role) or frame.gets_held(role)
+    """Whether the frame carries its ``role``: takes it into the hand (Pick) or puts it down out of the
+    hand (Place, Bring, Give: ``holding`` needed, ``not holding`` after). A frame that needs the thing held
+    only to work on it and keeps holding it (LookAt, Heat, Clean) does not carry it: what it acts on is
+    refused as a fixed thing the map lacks as Find and ToggleOn refuse it ("look at the tv" on a map with
+    only a tv stand, as "find the tv"), not searched for as something one carries ("bring me the tv")."""
+    drops = any(f.predicate == "holding" and f.args == (role,) and f.negated for f in frame.postconditions)
+    return frame.gets_held(role) or frame.needs_held(role) and drops
 
 
 def _in_a_name(evoked: Evoked, parse: Parse, things: Things) -> bool:
@@ -818,6 +824,20 @@ def _in_a_name(evoked: Evoked, parse: Parse, things: Things) -> bool:
             if referent is not None and any(_contains(name, unit) for name in referent.names):
                 return True
     return False
+
+
+HOUSE_WORDS = (("home",), ("the", "house"))
+"""A ground that is the whole house ("is mum *home*?", "is anyone in the house?")."""
+
+
+def _the_house(role: str, phrase: Phrase, things: Things) -> bool:
+    """Whether an element says where to look and names the whole house (:data:`HOUSE_WORDS`): on a map it
+    bounds nothing, so it is left unsaid and the search is the house's ("find out if mum is home": Find mum,
+    whether, anywhere), rather than a place the map lacks ("the apartment has no home")."""
+    return (role == "ground" and things.map is not None and not phrase.conjuncts and phrase.refers_to is None
+            and tuple(w.lower() for w in (phrase.text or phrase.head).split()) in HOUSE_WORDS
+            and (things.names is None or things.names.ground(phrase.text or phrase.head, "location",
+                                                              ("room", "place")) is None))
 
 
 def _sought_where(evoked: Evoked, role: str, things: Things) -> Phrase:
