@@ -75,3 +75,29 @@ def test_home_is_the_whole_house_not_a_place_or_a_state(library: Library, text: 
     """"find out if mum is home" was LookAt of mum with the state "home"; "is Ben at home?" was refused
     ("the apartment has no home"): being home is being anywhere in the house."""
     assert steps(text, library, "apartment") == plan
+
+
+@pytest.mark.parametrize(("text", "house", "plan"), [
+    ("bring me some water", "office_floor", ["Open(theme=mini_fridge_1)", "Pick(theme=water_bottle, "
+                                             "source=mini_fridge_1)", "Bring(theme=water_bottle, recipient=me)"]),
+    ("get the biscuits", "bungalow", ["Pick(theme=biscuit_tin)"]),     # was Pick, Place, Pick of two biscuits
+    ("get the biscuit out of the tin", "bungalow", ["Pick(theme=biscuit, source=biscuit_tin)"]),    # what is inside
+    ("bring me some water", "apartment", ["Pick(theme=water)", "Bring(theme=water, recipient=me)"]),   # none: sought
+])
+def test_a_thing_the_map_knows_only_in_its_container_is_the_container(library: Library, text: str, house: str,
+                                                                     plan: list[str]) -> None:
+    assert steps(text, library, house) == plan
+
+
+@pytest.mark.parametrize(("text", "house", "plan"), [
+    ("on your way back, pick up the post", "apartment", ["Pick(theme=post)"]),
+    ("on the way to the kitchen, grab the cup", "apartment", ["Pick(theme=cup)"]),
+    ("see Ben to the kitchen", "apartment", ["Guide(theme=ben, goal=kitchen)"]),
+    ("please see Helen to the exam room", "clinic", ["Guide(theme=helen, goal=exam_room)"]),
+    ("keep an eye on Ben", "apartment", ["LookAt(theme=ben)"]),
+])
+def test_everyday_turns_of_phrase_plan_what_they_mean(library: Library, text: str, house: str,
+                                                      plan: list[str]) -> None:
+    """"on your way back, ..." was an error at "back"; "see mr jones to the door" an unknown verb 'see';
+    "keep an eye on X" an unknown verb 'keep'."""
+    assert steps(text, library, house) == plan
