@@ -32,7 +32,8 @@ if TYPE_CHECKING:
 
 __all__ = ["DETECTIONS_TOPIC_HELP", "MAX_COUNT", "MAX_PARTICLES", "MAX_RUN_METRES", "MAX_RUN_STEPS", "MAX_STEPS",
            "OUTPUT_SUFFIXES", "PIPE_WIDTH", "POSE_TOPIC_HELP", "FramelibOption", "JsonOption", "LazyConsole",
-           "a_number", "app", "bench_app", "command", "emit_json", "err", "main", "out", "progress_bar", "report"]
+           "a_number", "app", "bench_app", "command", "emit_json", "err", "main", "one_held", "out", "progress_bar",
+           "report"]
 
 
 def framelib_paths(paths: list[Path] | None) -> list[Path] | None:
@@ -46,6 +47,20 @@ def framelib_paths(paths: list[Path] | None) -> list[Path] | None:
     from seal_cli.resources import framelib_dir
 
     return [framelib_dir(), *(Path(str(p)[1:]) if plus else p for p, plus in zip(paths, added, strict=True))]
+
+
+def one_held(holding: list[str] | None) -> str | None:
+    """What ``--holding`` says the robot holds: the option given once, or None. The robot has one hand, so the
+    option given twice or more (``--holding spoon --holding cup``) is refused, naming each value, rather than
+    keeping the last silently (typer's way with a single-valued option)."""
+    from seal_cli.errors import SealError
+
+    if not holding:
+        return None
+    if len(holding) > 1:
+        raise SealError(f"--holding is given {len(holding)} times ({', '.join(map(repr, holding))}); the robot holds "
+                        "one thing at a time: give it once")
+    return holding[0]
 
 
 MAX_PARTICLES = 100_000

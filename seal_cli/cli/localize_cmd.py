@@ -19,6 +19,7 @@ from seal_cli.cli import (
     emit_json,
     err,
     framelib_paths,
+    one_held,
     out,
     progress_bar,
 )
@@ -90,8 +91,8 @@ def localize(
     map_name: str = typer.Option(..., "--map", help="The annotated map (a path or a shipped map's name)."),
     tasks: list[str] | None = typer.Option(None, "--task", help="A command (repeatable): it is parsed, planned, "
                                            "and every frame of its plan is localised.", show_default=False),
-    holding: str | None = typer.Option(None, "--holding", help="The class of what the robot holds (overrides the "
-                                       "map's robot).", show_default=False),
+    holding: list[str] | None = typer.Option(None, "--holding", help="The class of what the robot holds (overrides the "
+                                             "map's robot).", show_default=False),
     done: list[str] | None = typer.Option(None, "--done", help="A command already carried out (repeatable, in "
                                           "order): its frames' postconditions hold.", show_default=False),
     trajectory: Path | None = typer.Option(None, "--trajectory", help="YAML poses: \\[\\[x, y], \\[x, y, "
@@ -153,6 +154,7 @@ def localize(
 
         check_goals_path(goals, [bag, observations, trajectory, labels, rrd, png, *(framelib or []),
                                  map_name if Path(map_name).exists() else None])
+    held = one_held(holding)
     library = load_library(framelib_paths(framelib))
     the_map = load_map(map_path(map_name))
     for warning in the_map.warnings:  # odd but usable (a place in no room): said, not refused
@@ -166,7 +168,7 @@ def localize(
     elif bag is not None:
         runs, stamps = _read_bag(bag, pose_topic, detections_topic, frame, base_frame, labels)
     check_inside(runs, the_map.bounds, the_map.name, the_map.is_occupied)
-    bindings, state = frames_to_localise(tasks or [], library, the_map, holding=holding, done=done or [])
+    bindings, state = frames_to_localise(tasks or [], library, the_map, holding=held, done=done or [])
     if goals is not None and not bindings:
         raise SealError("--goals writes a pose per frame, and there are none: give --task")
     rng = np.random.default_rng(seed)

@@ -8,7 +8,18 @@ from typing import TYPE_CHECKING
 
 import typer
 
-from seal_cli.cli import MAX_COUNT, FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
+from seal_cli.cli import (
+    MAX_COUNT,
+    FramelibOption,
+    JsonOption,
+    bench_app,
+    command,
+    emit_json,
+    err,
+    framelib_paths,
+    one_held,
+    out,
+)
 from seal_cli.cli.parse_cmd import VocabularyOption, vocabulary_from
 from seal_cli.planning.plan import MAX_NODES, Plan
 
@@ -53,8 +64,8 @@ def show(plan: Plan) -> None:
 @command("plan")
 def plan(
     text: str = typer.Argument(..., help="The command, e.g. \"heat the egg and put it in the fridge\"."),
-    holding: str | None = typer.Option(None, "--holding", help="The class of what the robot holds (overrides "
-                                       "the map's robot).", show_default=False),
+    holding: list[str] | None = typer.Option(None, "--holding", help="The class of what the robot holds (overrides "
+                                             "the map's robot).", show_default=False),
     done: list[str] | None = typer.Option(None, "--done", help="A command already carried out (repeatable, in "
                                           "order): its frames' postconditions hold.", show_default=False),
     map_name: str | None = MapOption,
@@ -73,10 +84,11 @@ def plan(
     from seal_cli.pipeline import plan as plan_text
     from seal_cli.planning.pddl import PDDL_FILES
 
+    held = one_held(holding)
     library = load_library(framelib_paths(framelib))
     world = _load_world(map_name)
     outputs = Outputs({"--pddl": pddl}, [vocabulary, *(framelib or [])], folders={"--pddl": PDDL_FILES})
-    result = plan_text(text, library, holding=holding, done=tuple(done or ()), map=world,
+    result = plan_text(text, library, holding=held, done=tuple(done or ()), map=world,
                        vocabulary=vocabulary_from(vocabulary, map_name), max_nodes=max_nodes)
     with outputs:  # both files or neither; a failure above leaves no temporary (they are removed at exit)
         if pddl is not None:

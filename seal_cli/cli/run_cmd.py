@@ -22,6 +22,7 @@ from seal_cli.cli import (
     emit_json,
     err,
     framelib_paths,
+    one_held,
     out,
 )
 from seal_cli.sim.policies import DEFAULT_POLICIES, POLICIES
@@ -63,8 +64,8 @@ def run(
     text: str = typer.Argument(..., help="The command, e.g. \"stir the cup\"."),
     map_name: str = typer.Option(..., "--map", help="The map (a path or a shipped map's name); its ground-truth "
                                  "objects are the world the robot acts in."),
-    holding: str | None = typer.Option(None, "--holding", help="The class of what the robot holds at the start.",
-                                       show_default=False),
+    holding: list[str] | None = typer.Option(None, "--holding", help="The class of what the robot holds at the start.",
+                                             show_default=False),
     done: list[str] | None = typer.Option(None, "--done", help="A command already carried out (repeatable): its "
                                           "frames' postconditions hold at the start.", show_default=False),
     policy: str = typer.Option("sefm", "--policy", help="Who searches: " + "; ".join(
@@ -102,6 +103,7 @@ def run(
     from seal_cli.sim.agent import Budget
     from seal_cli.sim.policies import make_policy
 
+    held = one_held(holding)
     start_clock = read_clock(clock)
     library = load_library(framelib_paths(framelib))
     the_map = load_map(map_path(map_name))
@@ -122,7 +124,7 @@ def run(
 
         if rrd is not None or png is not None or done:
             raise SealError(f"--policy {policy}: --rrd, --png and --done need seal's frames; this policy has none")
-        skills = run_text_on_map(the_map, text, library, searcher, rng=np.random.default_rng(seed), holding=holding,
+        skills = run_text_on_map(the_map, text, library, searcher, rng=np.random.default_rng(seed), holding=held,
                                  budget=Budget(steps=max_steps, metres=max_metres),
                                  observers=[] if as_json else [_narrate])
         if as_json:
@@ -140,7 +142,7 @@ def run(
     with Outputs({"--rrd": rrd, "--png": png}, [map_name, vocabulary_file, *(framelib or [])],
                  suffixes=OUTPUT_SUFFIXES) as outputs:
         agent, result = run_on_map(the_map, text, library, searcher, rng=np.random.default_rng(seed),
-                                   holding=holding, done=done or (), vocabulary=vocabulary,
+                                   holding=held, done=done or (), vocabulary=vocabulary,
                                    budget=Budget(steps=max_steps, metres=max_metres),
                                    observers=[] if as_json else [_narrate], clock=start_clock,
                                    search_end=search_end)

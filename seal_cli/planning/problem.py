@@ -297,17 +297,20 @@ def _unnamed_kind(phrase: Phrase, map: Map) -> str:
 
 def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], things: Things,
             text: str, category: str = "thing", asked: bool = False, carried: bool = False,
-            gone_to: bool = False) -> tuple[str, ...]:
+            gone_to: bool = False, vessel: bool = False) -> tuple[str, ...]:
     """The things a phrase names: its antecedent's for a pronoun, else the map's thing it calls,
     else its class (counted if asked); every conjunct's for a coordination. ``asked``: the phrase is
     what a question asks about ("how many chairs ...?", "is there a chair ...?"), so a fixed thing
     the map lacks is no refusal but a class to look for (the answer may be none). ``carried``: the
-    frame takes the thing into the hand, so only its own words can make it furniture the map lacks."""
+    frame carries the thing (:func:`_carried`), so only its own words can make it furniture the map lacks.
+    ``vessel``: no source is said, so a thing the map knows only in its container is the container
+    (:func:`_kept_in`)."""
     from seal_cli.language.english import PERSON_PRONOUNS, PRONOUNS
 
     if phrase.conjuncts:        # "the apple and the pear": both
         return tuple(dict.fromkeys(v for c in phrase.conjuncts
-                                   for v in _values(c, earlier, things, text, category, asked, carried, gone_to)))
+                                   for v in _values(c, earlier, things, text, category, asked, carried, gone_to,
+                                                    vessel)))
     if phrase.refers_to is not None:
         index, role = phrase.refers_to
         if 0 <= index < len(earlier) and role in earlier[index]:
@@ -337,6 +340,8 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
         value = phrase.head     # on a map, a class the words do not name is a guess: the thing said is sought
     if not class_key(value):
         raise _located(f"{phrase.text!r} names no thing", phrase, text)
+    if vessel and carried and not asked and things.map is not None and (kept := _kept_in(value, things)):
+        return things.instances(kept, 1)        # "some water" and the map's water bottle: the bottle, once
     if carried and not asked and things.map is not None and (sources := _comes_from(value, things)):
         m = things.map
         where = ", ".join(f"{p.name} (in the {(p.room or '?').replace('_', ' ')})" for p in sources)
@@ -367,6 +372,37 @@ def _comes_from(value: str, things: Things) -> list[Any]:
         return []
     return [p for p in m.places if len(words := class_words(p.cls)) > len(said) and words[:len(said)] == said
             and kind_of(things.taxonomy, p.cls, "furniture") is not True]
+
+
+def _taken_out_of_a_thing(evoked: Evoked, things: Things) -> bool:
+    """Whether the command says a thing the theme is taken from, not a room or place of the map ("the biscuits
+    out of the *tin*"): then the theme is what is inside it, never the container itself (:func:`_kept_in`)."""
+    source = evoked.elements.get("source")
+    if source is None or not source.text or things.names is None:
+        return False
+    try:
+        return things.names.ground(source.text, "location", ("room", "place")) is None
+    except SealError:
+        return True
+
+
+def _kept_in(value: str, things: Things) -> str | None:
+    """The container a thing to carry comes in, when the map knows nothing of the thing's own class but knows
+    one kind of thing (a prior's or an object's class, not a place's) named by the thing's words and then a
+    container ("some water": the office's ``water_bottle``; "the biscuits": the bungalow's ``biscuit_tin``):
+    the robot carries the container, as a person handed it would. None when the map knows the class, or
+    knows no such container or several."""
+    from seal_cli.language.lexicon import noun_lemma
+
+    m = things.map
+    assert m is not None
+    said = [noun_lemma(w) for w in class_words(value)]
+    if not said or class_key("_".join(said)) in _kinds_known(m) or class_key(value) in _kinds_known(m):
+        return None
+    found = [kind for kind in _kinds_known(m) if len(words := class_words(kind)) > len(said)
+             and [noun_lemma(w) for w in words[:len(said)]] == said
+             and kind_of(things.taxonomy, words[-1], "container") is True]
+    return found[0] if len(found) == 1 else None
 
 
 APPLIANCE_KINDS = (FIXED, "furniture", "openable", "toggleable", "heater", "cooler", "washer")
@@ -604,8 +640,10 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
             frame = looking(frame)
         asked = _counted_roles(frame) | ({"theme"} if asks_whether(parse.text, evoked) else set())
         values = {role: _values(_sought_where(evoked, role, things), earlier, things, parse.text,
-                                frame.element(role).type, role in asked, _carried(frame, role), _gone_to(frame, role))
-                  for role, phrase in evoked.elements.items() if not back_unplaced(phrase)}
+                                frame.element(role).type, role in asked, _carried(frame, role), _gone_to(frame, role),
+                                not _taken_out_of_a_thing(evoked, things))
+                  for role, phrase in evoked.elements.items() if not back_unplaced(phrase)
+                  and not _the_house(role, phrase, things)}
         back_later = False
         backs: dict[str, Phrase | None] = {r: p for r, p in evoked.elements.items() if back_unplaced(p)}
         goal = evoked.elements.get("goal")
@@ -636,6 +674,8 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
             things.people.add(SPEAKER)          # "go to the kitchen and come back": back to whoever asked
             values["goal"] = (SPEAKER,)
         _to_recipient(frame, values, things)
+        if _looked_at_where_it_stands(frame, values, things):       # "check on Ben": no picking Ben up
+            frame = looking(frame)
         _check_types(frame, values, evoked.elements, things, parse.text)
         kept = {} if placed_back else _put_away(frame, evoked, values, things, parse.text)
         if not kept and not placed_back:
@@ -795,8 +835,13 @@ def _words(cls: str) -> str:
 
 
 def _carried(frame: Frame, role: str) -> bool:
-    """Whether the frame takes its ``role`` into the hand (needs it held, or leaves it held)."""
-    return frame.needs_held(role) or frame.gets_held(role)
+    """Whether the frame carries its ``role``: takes it into the hand (Pick) or puts it down out of the
+    hand (Place, Bring, Give: ``holding`` needed, ``not holding`` after). A frame that needs the thing held
+    only to work on it and keeps holding it (LookAt, Heat, Clean) does not carry it: what it acts on is
+    refused as a fixed thing the map lacks as Find and ToggleOn refuse it ("look at the tv" on a map with
+    only a tv stand, as "find the tv"), not searched for as something one carries ("bring me the tv")."""
+    drops = any(f.predicate == "holding" and f.args == (role,) and f.negated for f in frame.postconditions)
+    return frame.gets_held(role) or frame.needs_held(role) and drops
 
 
 def _in_a_name(evoked: Evoked, parse: Parse, things: Things) -> bool:
@@ -818,6 +863,34 @@ def _in_a_name(evoked: Evoked, parse: Parse, things: Things) -> bool:
             if referent is not None and any(_contains(name, unit) for name in referent.names):
                 return True
     return False
+
+
+HOUSE_WORDS = (("home",), ("the", "house"))
+"""A ground that is the whole house ("is mum *home*?", "is anyone in the house?")."""
+
+
+def _looked_at_where_it_stands(frame: Frame, values: Mapping[str, tuple[str, ...]], things: Things) -> bool:
+    """Whether a frame that finds out about its theme (``questions.FOUND_OUT_BY``: LookAt) but needs it held
+    (ALFRED's looking at a thing in a lamp's light) is to look at it where it stands instead: a person ("check
+    on Ben" planned Pick(theme=ben)) or a thing fixed in the house ("check the fridge", "keep an eye on the
+    stove"), which no robot picks up. A thing it can carry is still taken into the hand ("examine the cup")."""
+    from seal_cli.planning.questions import FOUND_OUT_BY
+
+    themes = values.get("theme", ())
+    if frame.name not in FOUND_OUT_BY or not frame.needs_held("theme") or not themes:
+        return False
+    return all(v in things.people or v in things.fixed or kind_of(things.taxonomy, things.class_of(v), FIXED) is True
+               or things.taxonomy.is_a(things.class_of(v), "person") is True for v in themes)
+
+
+def _the_house(role: str, phrase: Phrase, things: Things) -> bool:
+    """Whether an element says where to look and names the whole house (:data:`HOUSE_WORDS`): on a map it
+    bounds nothing, so it is left unsaid and the search is the house's ("find out if mum is home": Find mum,
+    whether, anywhere), rather than a place the map lacks ("the apartment has no home")."""
+    return (role == "ground" and things.map is not None and not phrase.conjuncts and phrase.refers_to is None
+            and tuple(w.lower() for w in (phrase.text or phrase.head).split()) in HOUSE_WORDS
+            and (things.names is None or things.names.ground(phrase.text or phrase.head, "location",
+                                                              ("room", "place")) is None))
 
 
 def _sought_where(evoked: Evoked, role: str, things: Things) -> Phrase:

@@ -977,6 +977,12 @@ class Agent:
         item = self.world.items.get(value)
         return item is not None and item.key == PERSON
 
+    def _sought_person(self, value: str) -> bool:
+        """Whether a value sought is someone: a person of the world, or of the library's class person ("mum",
+        whom the map does not name). Nobody is looked for inside a fridge: the house search for them does not
+        peek into closed places."""
+        return self.is_person(value) or self.library.taxonomy.is_a(self.class_of(value), PERSON) is True
+
     def sweep_once(self, value: str, binding: Binding) -> Outcome | None:
         """One room of the whole-house search for a kind of thing nothing tells the robot where to
         look for (no prior, no class its perception knows): the nearest room not yet looked over
@@ -1003,7 +1009,7 @@ class Agent:
                  f"{region.name.replace('_', ' ')}", target=value, room=region.name)
         self.detail = True
         try:
-            looked = self.survey(region, peek=True)
+            looked = self.survey(region, peek=not self._sought_person(value))
         finally:
             self.detail = False
         self.swept.append((region.name.replace("_", " "), looked))
@@ -1106,7 +1112,11 @@ class Agent:
             if (ended := self.look_once(value, binding)) is not None:
                 if ended.reason is Reason.NOT_FOUND:
                     said = ended.message.startswith(("searched the whole house", f"no {self.said(value)} found"))
-                    self.answer(ended.message if said else f"no {self.said(value)} found: {ended.message}")
+                    no = ended.message if said else f"no {self.said(value)} found: {ended.message}"
+                    if question is not None and question.kind == "whether":     # "is mum home?": no is an answer
+                        self.answer(f"no: {no}")
+                        return Outcome(True, no)
+                    self.answer(no)
                 return ended
         target = self.resolve(value, binding, role)
         if target is not None and target in self.known and not self.in_view(target):

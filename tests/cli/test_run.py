@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import pytest
 from typer.testing import CliRunner
 
 from seal_cli.cli import app
@@ -101,3 +102,23 @@ def test_particles_are_bounded_like_localize() -> None:
     for args in (["run", "--map", "apartment", "stir the cup"], ["bench", "tasks"]):
         result = runner.invoke(app, [*args, "--particles", "1000000000"])
         assert result.exit_code == 2 and "1<=x<=100000" in result.output
+
+
+
+@pytest.mark.parametrize("command", [["run", "--map", "apartment", "stir the cup"],
+                                     ["plan", "--map", "apartment", "stir the cup"],
+                                     ["localize", "--map", "apartment", "--task", "stir the cup"]])
+def test_holding_given_twice_is_refused_naming_both(command: list[str], tmp_path: Path) -> None:
+    """`--holding spoon --holding cup` kept the cup silently (typer's last value): the robot holds one thing."""
+    png = tmp_path / "out.png"
+    extra = [] if command[0] == "plan" else ["--png", str(png)]
+    result = runner.invoke(app, [*command, "--holding", "spoon", "--holding", "cup", *extra])
+    assert result.exit_code == 1
+    assert "--holding is given 2 times ('spoon', 'cup')" in result.stderr and "one thing" in result.stderr
+    assert result.stdout == "" and not png.exists()
+
+
+def test_holding_given_once_is_what_the_robot_holds() -> None:
+    result = runner.invoke(app, ["plan", "--map", "apartment", "stir the cup", "--holding", "spoon", "--json"])
+    assert result.exit_code == 0
+    assert [s["frame"] for s in json.loads(result.stdout)["plan"]] == ["Stir"]

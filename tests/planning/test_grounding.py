@@ -138,8 +138,20 @@ def test_a_frame_that_must_hold_a_fixed_thing_is_refused(library: object) -> Non
     from seal_cli.maps.formats.map_server import load_map
     from seal_cli.pipeline import plan
 
-    with pytest.raises(SealError, match=r"LookAt needs to hold its theme, and 'the fridge' \(fridge_1\) is fixed"):
-        plan("check the fridge", library, map=load_map("apartment").known())  # type: ignore[arg-type]
+    with pytest.raises(SealError, match=r"Clean needs its theme to be an object the robot can handle, and 'the sofa' "
+                                        r"\(sofa_1\) is fixed"):
+        plan("clean the sofa", library, map=load_map("apartment").known())  # type: ignore[arg-type]
+
+
+@pytest.mark.parametrize(("text", "plan"), [
+    ("check the fridge", ["LookAt(theme=fridge_1)"]),            # was refused: "LookAt needs to hold its theme"
+    ("check on Ben", ["LookAt(theme=ben)"]),                      # was Pick(theme=ben), LookAt
+    ("keep an eye on the stove", ["LookAt(theme=stove_1)"]),
+    ("examine the cup", ["Pick(theme=cup, source=coffee_table_1)", "LookAt(theme=cup)"]),   # a thing: in the hand
+])
+def test_a_person_or_a_fixed_thing_is_looked_at_where_it_stands(library: Library, text: str, plan: list[str]) -> None:
+    """LookAt holds its theme (ALFRED's looking at a thing in a lamp's light): never a person or a fixture."""
+    assert steps(text, library) == plan
 
 
 def test_a_places_own_name_calls_it_before_another_places_synonym(library: Library) -> None:

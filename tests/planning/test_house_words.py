@@ -48,3 +48,56 @@ def test_a_compound_name_is_called_by_its_head(library: Library) -> None:
                        r"break room\), which the robot cannot get coffee from; the things it knows of are badge"):
         plan_text("bring me a coffee", library, map=load_map(MAPS / "office_floor.yaml"))   # not a machine to carry
     assert steps("go to the coffee machine", library, "office_floor") == ["Go(goal=coffee_machine_1)"]
+
+
+@pytest.mark.parametrize("text", ["find the tv", "look at the tv", "examine the tv"])
+def test_a_thing_only_looked_at_is_refused_as_a_fixture_the_map_lacks(library: Library, text: str) -> None:
+    """"look at the tv" on the apartment (only a tv stand) was a 36 m search while "find the tv" was refused:
+    LookAt holds its theme only to look at it, so it does not carry it, and both are refused alike."""
+    with pytest.raises(SealError, match=r"the apartment has no tv \(only tv_stand_1, a tv stand\)"):
+        steps(text, library, "apartment")
+
+
+def test_a_thing_carried_is_still_searched_for(library: Library) -> None:
+    """Bringing a tv carries it: only its own words could make it furniture, so it is searched for."""
+    assert steps("bring me the tv", library, "apartment") == ["Pick(theme=tv)", "Bring(theme=tv, recipient=me)"]
+
+
+@pytest.mark.parametrize(("text", "plan"), [
+    ("find out if mum is home", ["Find(theme=mum)"]),
+    ("is Ben home?", ["Find(theme=ben)"]),
+    ("is Ben at home?", ["Find(theme=ben)"]),
+    ("see if anyone is home", ["Find(theme=person)"]),
+    ("is anyone in the house?", ["Find(theme=person)"]),
+    ("is Ben in the kitchen?", ["Find(theme=ben, ground=kitchen)"]),
+])
+def test_home_is_the_whole_house_not_a_place_or_a_state(library: Library, text: str, plan: list[str]) -> None:
+    """"find out if mum is home" was LookAt of mum with the state "home"; "is Ben at home?" was refused
+    ("the apartment has no home"): being home is being anywhere in the house."""
+    assert steps(text, library, "apartment") == plan
+
+
+@pytest.mark.parametrize(("text", "house", "plan"), [
+    ("bring me some water", "office_floor", ["Open(theme=mini_fridge_1)", "Pick(theme=water_bottle, "
+                                             "source=mini_fridge_1)", "Bring(theme=water_bottle, recipient=me)"]),
+    ("get the biscuits", "bungalow", ["Pick(theme=biscuit_tin)"]),     # was Pick, Place, Pick of two biscuits
+    ("get the biscuit out of the tin", "bungalow", ["Pick(theme=biscuit, source=biscuit_tin)"]),    # what is inside
+    ("bring me some water", "apartment", ["Pick(theme=water)", "Bring(theme=water, recipient=me)"]),   # none: sought
+])
+def test_a_thing_the_map_knows_only_in_its_container_is_the_container(library: Library, text: str, house: str,
+                                                                     plan: list[str]) -> None:
+    assert steps(text, library, house) == plan
+
+
+@pytest.mark.parametrize(("text", "house", "plan"), [
+    ("on your way back, pick up the post", "apartment", ["Pick(theme=post)"]),
+    ("on the way to the kitchen, grab the cup", "apartment", ["Pick(theme=cup)"]),
+    ("see Ben to the kitchen", "apartment", ["Guide(theme=ben, goal=kitchen)"]),
+    ("please see Helen to the exam room", "clinic", ["Guide(theme=helen, goal=exam_room)"]),
+    ("keep an eye on Ben", "apartment", ["LookAt(theme=ben)"]),
+])
+def test_everyday_turns_of_phrase_plan_what_they_mean(library: Library, text: str, house: str,
+                                                      plan: list[str]) -> None:
+    """"on your way back, ..." was an error at "back"; "see mr jones to the door" an unknown verb 'see';
+    "keep an eye on X" an unknown verb 'keep'."""
+    assert steps(text, library, house) == plan

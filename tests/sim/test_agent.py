@@ -411,3 +411,20 @@ def test_the_search_is_narrated_with_class_names_as_words_and_ids_as_they_are(li
     assert any(r.text == "picked up frying_pan_1 from hob_1" for r in agent.records)
     said = "looks into filing_cabinet_1 in the living_room"
     assert as_words(said) == "looks into filing_cabinet_1 in the living room"
+
+
+@pytest.mark.parametrize(("text", "answer"), [
+    ("is Ben home?", "yes: Ben is in the bedroom"),
+    ("find out if mum is home", "no: searched the whole house: no Mum (looked all over 5 rooms)"),
+])
+def test_whether_someone_is_home_is_answered_yes_or_no(library: Library, text: str, answer: str) -> None:
+    """A whether-question of someone the whole house is searched for: not finding them is the answer "no" (the
+    run is done), and nobody is looked for inside the fridge or the microwave (no peek for a person)."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    _, result = pipeline.run_on_map(load_map("apartment"), text, library, make_policy("sefm"),
+                                    rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    assert result.answer is not None and result.answer.startswith(answer)
+    assert not any("opened" in r.text for r in result.records)

@@ -104,6 +104,28 @@ def _run_on_verb(s: State, np: int, end: int) -> int | None:
     return None
 
 
+_ON_THE_WAY = (frozenset(["on", "along"]), frozenset(["your", "the", "my", "our", "its"]), frozenset(["way"]))
+""""*On your way* back, ...", "on the way to the kitchen, ...": the words that open a circumstance of the trip."""
+_WAY_WORDS = 8
+"""The most words a circumstance of the trip runs to before its comma ("on your way back from the garage,")."""
+
+
+def _on_the_way(s: State, i: int) -> Match | None:
+    """"*On your way back,* pick up the post", "on the way to the kitchen, grab a cup": a circumstance of the
+    trip before the clause, up to its comma, is no command of its own (the clause is what is asked; the robot
+    plans its own trip): politeness before the verb, as a subordinate clause of the robot's own is."""
+    words = s.words
+    ons, owners, ways = _ON_THE_WAY
+    if i + 3 >= len(words) or words[i].lower not in ons or words[i + 1].lower not in owners or \
+            words[i + 2].lower not in ways:
+        return None
+    comma = next((j for j in range(i + 3, min(len(words), i + 3 + _WAY_WORDS)) if words[j].lower in (",", ";")),
+                 None)
+    if comma is None or not s.verb_after(comma + 1) or any(w.lower in END_MARKS for w in words[i + 3:comma]):
+        return None
+    return s.emit(i, comma + 1 - i, Tag.POLITE)
+
+
 def _manner(s: State, i: int) -> Match | None:
     low = s.words[i].lower
     if low.isalpha() and low not in PARTICLES and is_adverb(low) and s.verb_after(i + 1) and _not_a_verb(s, i):
@@ -176,6 +198,20 @@ def _light_verb(s: State, i: int) -> Match | None:
     return None
 
 
+WATCHING = ("check on", frozenset(["keep an eye on", "keep an eye out for", "keep watch on", "keep watch over",
+                                   "keep tabs on", "keep a check on"]))
+"""Idioms of keeping watch over something ("*keep an eye on* the soup"), read as the library's unit "check on"
+(LookAt: the robot goes and looks at it; it watches no longer than that)."""
+
+
+def _watching(s: State, i: int) -> Match | None:
+    unit, idioms = WATCHING
+    n = _longest(s, i, idioms)
+    if not n or unit.split()[0] not in s.lexicon.units or not s.np_starts(i + n):
+        return None
+    return Match(n, (merge(s.words, i, n, Tag.VERB, unit),), expect=False, verb=unit)
+
+
 def _polite_frame(s: State, i: int) -> Match | None:
     words = s.words
     if not all(t.tag == Tag.POLITE for t in s.out) or s.verb_at(i) is not None:
@@ -233,6 +269,10 @@ SUBORDINATE = Rule("subordinate clause first", _subordinate, (
     Example("go to the kitchen and when you're there look for a cup", "look for", Tag.VERB),
     Example("Go to the kitchen and once there find a cup", "once there", Tag.POLITE),
 ), None, "a condition, or a clause of the robot's own, before the verb (arriving where it went: none)")
+ON_THE_WAY = Rule("on the way", _on_the_way, (
+    Example("on your way back, pick up the post", "on your way back ,", Tag.POLITE),
+    Example("on the way to the kitchen, grab a cup", "on the way to the kitchen ,", Tag.POLITE),
+), _ON_THE_WAY[0], "'on your way back, ...': a circumstance of the trip before the clause, no command of its own")
 MANNER = Rule("manner adverb", _manner, (
     Example("Gently place the eggs in the bowl", "Gently", Tag.POLITE),
 ), None, "a manner adverb before the verb")
@@ -253,6 +293,10 @@ LIGHT_VERB = Rule("take a look at", _light_verb, (
     Example("have a look in the fridge for the butter", "have a look", Tag.VERB),      # the noun's unit, a place after
     Example("take a walk around the garden", "take a walk", Tag.VERB),
 ), frozenset(["take", "have"]), "a light verb and a noun that is a lexical unit (with its preposition, or a place)")
+WATCHING_RULE = Rule("keep an eye on", _watching, (
+    Example("keep an eye on the soup", "keep an eye on", Tag.VERB),
+    Example("please keep watch over the baby", "keep watch over", Tag.VERB),
+), frozenset(["keep"]), "'keep an eye on X', 'keep watch over X': check on X (LookAt)")
 POLITE_FRAME = Rule("if you could", _polite_frame, (
     Example("It would be great if you could close the door", "It would be great if you could", Tag.POLITE),
 ), None, "a polite frame ending in 'you could' before the verb")

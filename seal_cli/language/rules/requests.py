@@ -200,7 +200,10 @@ def _where_be(s: State, i: int) -> Match | None:
 
 _WHETHER_IS = frozenset(["is", "are", "isn't", "aren't"])
 _WHETHER_WHERE = frozenset(["in", "on", "at", "inside", "near", "by", "under", "beside", "behind"])
-_WHETHER_THERE = _WHETHER_WHERE | frozenset(["there", "here"])
+_AT_HOME = frozenset(["home"])
+"""Being *home* is being in the house ("is mum home?", "see if anyone is home"): where someone is, asked as finding
+them in the whole house, never a state of theirs to look at."""
+_WHETHER_THERE = _WHETHER_WHERE | _AT_HOME | frozenset(["there", "here"])
 """After "see if anyone is": a place said, or pointed at ("... is *there*", where the robot went)."""
 
 
@@ -252,6 +255,8 @@ def _place_asked(s: State, j: int) -> bool:
             return False                          # a verb ("the *pan*": a noun after a determiner)
         if low in _WHETHER_WHERE:
             return s.np_starts(k + 1)
+        if low in _AT_HOME:                      # "is Ben home?": ending the sentence, the house is the place
+            return k + 1 == len(words) or words[k + 1].lower in END_MARKS
     return False
 
 
@@ -263,7 +268,7 @@ def _is_state(s: State, low: str) -> bool:
     """Whether a word can be the state a yes/no question asks of a thing: an adjective ("open", "clean",
     "empty"), a particle of state ("on", "off"), a frame's result word, or a participle ("locked", "shut",
     "running"); never a place word ("upstairs") or a preposition."""
-    if low in HERE_WORDS or low in PREPOSITIONS or low in DETERMINERS or low in BE_WORDS:
+    if low in HERE_WORDS or low in PREPOSITIONS or low in DETERMINERS or low in BE_WORDS or low in _AT_HOME:
         return low in STATE_PARTICLES
     if low in STATE_PARTICLES or low in s.lexicon.results or is_adjective(low):
         return True

@@ -3,7 +3,7 @@
 
 from __future__ import annotations
 
-from seal_cli.language.english import PARTICLES, PATH_ALONE, PATH_MEANS, PREPOSITIONS
+from seal_cli.language.english import PARTICLES, PATH_ALONE, PATH_MEANS, PREPOSITIONS, TITLES
 from seal_cli.language.morphology import in_verb_tables, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import CLOSED, State, match_phrase, merge
@@ -32,6 +32,40 @@ def _verb(s: State, i: int) -> Match | None:
     unit, n, split = found
     return Match(n, (merge(s.words, i, n, Tag.VERB, unit),), expect=False, verb=unit, using=False,
                  particle=(split, unit) if split is not None else None)
+
+
+SEEN_TO = ("see", "escort", frozenset(["to", "out", "home", "in", "into", "back", "upstairs", "downstairs"]))
+"""*See* someone *to* a place, *out*, *home*: to escort them (WordNet's escort.v.01 "accompany or escort",
+a sense of "see" far below its first), read as the library's unit "escort" (Guide)."""
+_TITLE_WORDS = 3
+"""The most words of a person's name after "see" ("mr jones", "the new guest", "doctor anna smith")."""
+
+
+def _seen_to(s: State, i: int) -> Match | None:
+    """"*See* mr jones to the front door", "see her out", "see the guest in": "see" with a person (a name, a
+    title, an object pronoun, or a noun the taxonomy lists as a person) and then where to or a particle of
+    going is escorting them ("see the guest off" stays refused: "off" names no place). "see if ...", "see what
+    is ...", "see the cup on the table" are not."""
+    words = s.words
+    verb, unit, afters = SEEN_TO
+    if unit not in s.lexicon.units or i + 2 >= len(words) or words[i].lower != verb:
+        return None
+    k = i + 1
+    if words[k].lower in ("him", "her", "them", "us", "me"):
+        k += 1
+    else:
+        k += words[k].lower in ("the", "our", "my", "your", "a", "this", "that")
+        start = k
+        while k < min(len(words), start + _TITLE_WORDS) and words[k].lower.isalpha() and \
+                words[k].lower not in afters and words[k].lower not in CLOSED:
+            k += 1
+        said = [w.lower for w in words[start:k]]
+        named = any(capitalised(w) for w in words[start:k]) or bool(said and said[0] in TITLES)
+        if not said or not (named or said[-1] in s.lexicon.people):
+            return None
+    if k >= len(words) or words[k].lower not in afters:
+        return None
+    return Match(1, (words[i].tagged(Tag.VERB, unit),), expect=False, verb=unit, using=False)
 
 
 def _tell_to(s: State, i: int) -> Match | None:
@@ -90,6 +124,11 @@ VERB = Rule("verb", _verb, (
     Example("tell me how many cups are on the table", "tell me how many", Tag.VERB),
     Example("putting the cup on the table", "putting", Tag.VERB),
 ), None, "the longest lexical unit of the library starting at the word, in any inflection")
+SEEN_TO_RULE = Rule("see someone to a place", _seen_to, (
+    Example("see mr jones to the front door", "see", Tag.VERB),
+    Example("please see the guest out", "see", Tag.VERB),
+    Example("see her to the exit", "see", Tag.VERB),
+), frozenset([SEEN_TO[0]]), "'see X to Y', 'see X out': escort X (Guide), a person said after 'see'")
 TELL_TO = Rule("told to", _tell_to, (
     Example("tell Maria to come downstairs", "to", Tag.WH),
 ), frozenset(["to"]), "'to' after the person a verb of saying tells")
