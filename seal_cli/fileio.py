@@ -23,6 +23,7 @@ import os
 import re
 import signal
 import stat
+import sys
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -321,6 +322,19 @@ def note_interrupts() -> None:
     with contextlib.suppress(ValueError, OSError):  # not the main thread
         if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
             signal.signal(signal.SIGINT, handler)
+    if not getattr(sys.unraisablehook, "seal", False):
+        previous = sys.unraisablehook
+
+        def unraisable(info: Any) -> None:
+            """A KeyboardInterrupt raised where Python cannot raise it (a ctypes callback of LLVM's while numba
+            compiles, a ``__del__``) is printed as "Exception ignored" and dropped, and the command ran on
+            (``localize --steps 100000`` for minutes): it is noted (:func:`interrupted`) and acted on where
+            seal checks, silently here."""
+            if not isinstance(info.exc_value, KeyboardInterrupt):
+                previous(info)
+
+        unraisable.seal = True  # type: ignore[attr-defined]
+        sys.unraisablehook = unraisable
 
 
 def interrupted() -> bool:

@@ -175,3 +175,32 @@ def test_a_file_with_more_values_than_asked_is_refused_at_the_value_past_the_bou
     assert len(read_yaml(path, max_values=1_001)) == 1_000  # the list and its 1,000 words
     with pytest.raises(SealError, match=r"v\.yaml:500:3: this vocabulary holds more than 500 values"):
         read_yaml(path, max_values=500, what="vocabulary")
+
+
+def test_an_interrupt_python_cannot_raise_is_noted_silently(capfd: pytest.CaptureFixture[str]) -> None:
+    """A SIGINT whose KeyboardInterrupt lands where Python cannot raise it (here a ``__del__``; in a run, a ctypes
+    callback of LLVM's while numba compiles) was printed as "Exception ignored ... Traceback" and dropped; now it is
+    noted (``interrupted()``) for seal to act on, and nothing is printed."""
+    import signal
+    import sys
+
+    from seal_cli import fileio
+
+    hook = sys.unraisablehook
+    try:
+        sys.unraisablehook = sys.__unraisablehook__          # Python's own (pytest's makes it a warning)
+        fileio.note_interrupts()
+
+        class Dropper:
+            def __del__(self) -> None:
+                signal.raise_signal(signal.SIGINT)   # the handler runs here, inside __del__
+                for _ in range(1000):               # ... at the next bytecode
+                    pass
+
+        Dropper()
+        assert fileio.interrupted()
+        assert "Traceback" not in capfd.readouterr().err
+    finally:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+        sys.unraisablehook = hook
+        fileio._INTERRUPTED[0] = False

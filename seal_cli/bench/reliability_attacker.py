@@ -421,3 +421,12 @@ def hostile15_cases() -> Iterator[Case]:
     for label, (content, says) in vocabularies.items():
         yield Case(f"A a vocabulary with {label}", ("parse", "--vocabulary", "v.yaml", "stir the cup"),
                    (("v.yaml", content),), codes=(1,), keep=("v.yaml",), says=says)
+    _, image, text, _, _, _, _ = hostile_setting()
+    cafe = ("m.yaml", text.replace("kitchen", "caf\u00e9").encode())
+    decomposed = ("m.yaml", text.replace("kitchen", "cafe\u0301").encode())
+    yield Case("A a command typed decomposed (e + U+0301) reaches the room named composed",
+               ("plan", "--map", "m.yaml", "go to the cafe\u0301"), (cafe, image), codes=(0,),
+               keep=("m.yaml", "apartment.pgm"))
+    yield Case("A a map written decomposed (e + U+0301) names the room a composed command reaches",
+               ("plan", "--map", "m.yaml", "go to the caf\u00e9"), (decomposed, image), codes=(0,),
+               keep=("m.yaml", "apartment.pgm"))
