@@ -150,16 +150,26 @@ def _size(count: int) -> str:
 
 
 def decode(data: bytes, file: str) -> str:
-    """UTF-8 text (a leading byte-order mark dropped); invalid UTF-8 is a SealError at its line and column."""
+    """UTF-8 text (a leading byte-order mark dropped), composed (NFC: an "é" written as "e" and a combining accent,
+    as macOS writes it, is the one letter the same name elsewhere is); invalid UTF-8 is a SealError at its line and
+    column."""
     if data.startswith(b"\xef\xbb\xbf"):
         data = data[3:]
     try:
-        return data.decode("utf-8")
+        return composed(data.decode("utf-8"))
     except UnicodeDecodeError as exc:
         line = data.count(b"\n", 0, exc.start) + 1
         column = exc.start - (data.rfind(b"\n", 0, exc.start) + 1) + 1
         raise SealError(f"this file is not UTF-8 text: byte 0x{data[exc.start]:02x} cannot be decoded",
                         Where(file, line, column)) from None
+
+
+def composed(text: str) -> str:
+    """``text`` in Unicode's composed form (NFC), where a letter and its accent are one character: a command or a
+    name typed decomposed ("cafe" + U+0301) reads as the composed one ("café") a map or a library names."""
+    import unicodedata
+
+    return text if text.isascii() or unicodedata.is_normalized("NFC", text) else unicodedata.normalize("NFC", text)
 
 
 def read_text(path: str | Path, limit: int = MAX_INPUT_BYTES) -> str:

@@ -204,3 +204,14 @@ def test_an_interrupt_python_cannot_raise_is_noted_silently(capfd: pytest.Captur
         signal.signal(signal.SIGINT, signal.default_int_handler)
         sys.unraisablehook = hook
         fileio._INTERRUPTED[0] = False
+
+
+def test_text_is_read_composed_so_a_decomposed_name_is_the_composed_one(tmp_path: Path) -> None:
+    """macOS writes "é" as "e" + U+0301: a map or a command file in that form named rooms no command could reach
+    ("the apartment has no caf"); files are read in NFC, which leaves composed and ASCII text as it is."""
+    from seal_cli.fileio import composed
+
+    (tmp_path / "m.yaml").write_text("rooms: [cafe\u0301]\n", encoding="utf-8")
+    assert read_text(tmp_path / "m.yaml") == "rooms: [caf\u00e9]\n"
+    assert read_yaml(tmp_path / "m.yaml") == {"rooms": ["caf\u00e9"]}
+    assert composed("plain") == "plain" and composed("caf\u00e9") == "caf\u00e9"
