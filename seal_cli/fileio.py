@@ -338,10 +338,18 @@ def note_interrupts() -> None:
         def unraisable(info: Any) -> None:
             """A KeyboardInterrupt raised where Python cannot raise it (a ctypes callback of LLVM's while numba
             compiles, a ``__del__``) is printed as "Exception ignored" and dropped, and the command ran on
-            (``localize --steps 100000`` for minutes): it is noted (:func:`interrupted`) and acted on where
-            seal checks, silently here."""
+            (``localize --steps 100000`` for minutes, or to its end, its outputs written): silently here, the
+            signal is sent again a moment later (from a thread: sent from here it would be raised in this hook,
+            and dropped), to be raised where Python runs then (the command's own code, or the next such callback,
+            which sends it again)."""
             if not isinstance(info.exc_value, KeyboardInterrupt):
                 previous(info)
+                return
+            import threading
+
+            again = threading.Timer(0.01, lambda: os.kill(os.getpid(), signal.SIGINT))
+            again.daemon = True
+            again.start()
 
         unraisable.seal = True  # type: ignore[attr-defined]
         sys.unraisablehook = unraisable
@@ -528,7 +536,12 @@ class Outputs:
     def commit(self) -> None:
         """Move every temporary onto its target (devices are written in place). SIGINT, SIGTERM and SIGHUP wait
         while the outputs move and until that is recorded (:func:`committed`): one arriving then ends the command
-        with the outputs whole and in place, never with them written by a command that says it failed."""
+        with the outputs whole and in place, never with them written by a command that says it failed. An
+        interrupt noted before but never raised (dropped where Python could not raise it) stops it here: the
+        outputs of an interrupted command are not written."""
+        if interrupted():
+            self.discard()
+            raise KeyboardInterrupt
         held = _hold_signals()
         try:
             for output in self._outputs.values():

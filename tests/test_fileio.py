@@ -179,8 +179,8 @@ def test_a_file_with_more_values_than_asked_is_refused_at_the_value_past_the_bou
 
 def test_an_interrupt_python_cannot_raise_is_noted_silently(capfd: pytest.CaptureFixture[str]) -> None:
     """A SIGINT whose KeyboardInterrupt lands where Python cannot raise it (here a ``__del__``; in a run, a ctypes
-    callback of LLVM's while numba compiles) was printed as "Exception ignored ... Traceback" and dropped; now it is
-    noted (``interrupted()``) for seal to act on, and nothing is printed."""
+    callback of LLVM's while numba compiles) was printed as "Exception ignored ... Traceback" and dropped, and the
+    command ran on; now nothing is printed and the signal is sent again, raised where Python runs next."""
     import signal
     import sys
 
@@ -197,7 +197,11 @@ def test_an_interrupt_python_cannot_raise_is_noted_silently(capfd: pytest.Captur
                 for _ in range(1000):               # ... at the next bytecode
                     pass
 
-        Dropper()
+        with pytest.raises(KeyboardInterrupt):   # sent again: raised where Python runs then, here
+            Dropper()
+            import time
+
+            time.sleep(1.0)
         assert fileio.interrupted()
         assert "Traceback" not in capfd.readouterr().err
     finally:
@@ -215,3 +219,15 @@ def test_text_is_read_composed_so_a_decomposed_name_is_the_composed_one(tmp_path
     assert read_text(tmp_path / "m.yaml") == "rooms: [caf\u00e9]\n"
     assert read_yaml(tmp_path / "m.yaml") == {"rooms": ["caf\u00e9"]}
     assert composed("plain") == "plain" and composed("caf\u00e9") == "caf\u00e9"
+
+
+def test_outputs_of_a_command_whose_interrupt_was_dropped_are_not_written(tmp_path: Path,
+                                                                        monkeypatch: pytest.MonkeyPatch) -> None:
+    from seal_cli import fileio
+
+    monkeypatch.setattr(fileio, "_INTERRUPTED", [True])      # noted, never raised
+    outputs = fileio.Outputs({"--png": tmp_path / "o.png"}, suffixes={"--png": (".png",)})
+    outputs["--png"].write_bytes(b"x")
+    with pytest.raises(KeyboardInterrupt):
+        outputs.commit()
+    assert sorted(p.name for p in tmp_path.iterdir()) == []
