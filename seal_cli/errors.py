@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
-__all__ = ["SealError", "SealErrors", "Where", "caret", "readable"]
+__all__ = ["SealError", "SealErrors", "Where", "at_line", "caret", "readable"]
 
 
 @dataclass(frozen=True, order=True)
@@ -117,6 +117,18 @@ class SealError(Exception):
 
     def to_json(self) -> dict[str, object]:
         return {"file": self.file, "line": self.line, "column": self.column, "message": self.message}
+
+
+def at_line(error: SealError, file: str, line: int, source_line: str) -> SealError:
+    """A command's error (placed by its column alone: the command was given as text, ``source_line`` stripped)
+    as one at ``line`` of the ``file`` the command was read from, with its column in the line and a caret
+    under it; an error of another file (the map, the library) stays as it is."""
+    if error.file is not None or isinstance(error, SealErrors):
+        return error
+    indent = len(source_line) - len(source_line.lstrip())
+    column = error.column + indent if error.column is not None else None
+    return SealError(error.message, Where(file, line, column),
+                     source_line=source_line.rstrip("\r\n") if column is not None else None, hint=error.hint)
 
 
 def _sort_key(error: SealError) -> tuple[str, int, int]:

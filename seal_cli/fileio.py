@@ -23,6 +23,7 @@ import os
 import re
 import signal
 import stat
+import sys
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -149,16 +150,26 @@ def _size(count: int) -> str:
 
 
 def decode(data: bytes, file: str) -> str:
-    """UTF-8 text (a leading byte-order mark dropped); invalid UTF-8 is a SealError at its line and column."""
+    """UTF-8 text (a leading byte-order mark dropped), composed (NFC: an "é" written as "e" and a combining accent,
+    as macOS writes it, is the one letter the same name elsewhere is); invalid UTF-8 is a SealError at its line and
+    column."""
     if data.startswith(b"\xef\xbb\xbf"):
         data = data[3:]
     try:
-        return data.decode("utf-8")
+        return composed(data.decode("utf-8"))
     except UnicodeDecodeError as exc:
         line = data.count(b"\n", 0, exc.start) + 1
         column = exc.start - (data.rfind(b"\n", 0, exc.start) + 1) + 1
         raise SealError(f"this file is not UTF-8 text: byte 0x{data[exc.start]:02x} cannot be decoded",
                         Where(file, line, column)) from None
+
+
+def composed(text: str) -> str:
+    """``text`` in Unicode's composed form (NFC), where a letter and its accent are one character: a command or a
+    name typed decomposed ("cafe" + U+0301) reads as the composed one ("café") a map or a library names."""
+    import unicodedata
+
+    return text if text.isascii() or unicodedata.is_normalized("NFC", text) else unicodedata.normalize("NFC", text)
 
 
 def read_text(path: str | Path, limit: int = MAX_INPUT_BYTES) -> str:
@@ -321,6 +332,27 @@ def note_interrupts() -> None:
     with contextlib.suppress(ValueError, OSError):  # not the main thread
         if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
             signal.signal(signal.SIGINT, handler)
+    if not getattr(sys.unraisablehook, "seal", False):
+        previous = sys.unraisablehook
+
+        def unraisable(info: Any) -> None:
+            """A KeyboardInterrupt raised where Python cannot raise it (a ctypes callback of LLVM's while numba
+            compiles, a ``__del__``) is printed as "Exception ignored" and dropped, and the command ran on
+            (``localize --steps 100000`` for minutes, or to its end, its outputs written): silently here, the
+            signal is sent again a moment later (from a thread: sent from here it would be raised in this hook,
+            and dropped), to be raised where Python runs then (the command's own code, or the next such callback,
+            which sends it again)."""
+            if not isinstance(info.exc_value, KeyboardInterrupt):
+                previous(info)
+                return
+            import threading
+
+            again = threading.Timer(0.01, lambda: os.kill(os.getpid(), signal.SIGINT))
+            again.daemon = True
+            again.start()
+
+        unraisable.seal = True  # type: ignore[attr-defined]
+        sys.unraisablehook = unraisable
 
 
 def interrupted() -> bool:
@@ -504,7 +536,12 @@ class Outputs:
     def commit(self) -> None:
         """Move every temporary onto its target (devices are written in place). SIGINT, SIGTERM and SIGHUP wait
         while the outputs move and until that is recorded (:func:`committed`): one arriving then ends the command
-        with the outputs whole and in place, never with them written by a command that says it failed."""
+        with the outputs whole and in place, never with them written by a command that says it failed. An
+        interrupt noted before but never raised (dropped where Python could not raise it) stops it here: the
+        outputs of an interrupted command are not written."""
+        if interrupted():
+            self.discard()
+            raise KeyboardInterrupt
         held = _hold_signals()
         try:
             for output in self._outputs.values():

@@ -56,3 +56,14 @@ def test_a_printed_message_cuts_overlong_words_and_length_but_json_keeps_it_whol
     assert max(len(word) for word in shown.split()) == WORD
     assert error.to_json()["message"] == error.message  # whole, for a program
     assert len(readable("x " * 10_000)) == MESSAGE and readable("short words stay") == "short words stay"
+
+
+def test_a_commands_error_is_placed_at_its_line_of_the_file_it_came_from() -> None:
+    from seal_cli.errors import at_line
+
+    typed = SealError("unknown verb 'flibber'", Where(None, None, 1), source_line="flibber the garage")
+    moved = at_line(typed, "c.txt", 3, "  flibber the garage\r\n")   # the line as read: indented, CRLF
+    assert str(moved) == "c.txt:3:3: unknown verb 'flibber'\n  flibber the garage\n  ^"
+    other = SealError("no room", Where("m.yaml", 4, 2))              # the map's own problem stays at the map
+    assert at_line(other, "c.txt", 3, "x") is other
+    assert str(at_line(SealError("too many"), "c.txt", 7, "x")) == "c.txt:7: too many"

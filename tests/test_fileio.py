@@ -175,3 +175,59 @@ def test_a_file_with_more_values_than_asked_is_refused_at_the_value_past_the_bou
     assert len(read_yaml(path, max_values=1_001)) == 1_000  # the list and its 1,000 words
     with pytest.raises(SealError, match=r"v\.yaml:500:3: this vocabulary holds more than 500 values"):
         read_yaml(path, max_values=500, what="vocabulary")
+
+
+def test_an_interrupt_python_cannot_raise_is_noted_silently(capfd: pytest.CaptureFixture[str]) -> None:
+    """A SIGINT whose KeyboardInterrupt lands where Python cannot raise it (here a ``__del__``; in a run, a ctypes
+    callback of LLVM's while numba compiles) was printed as "Exception ignored ... Traceback" and dropped, and the
+    command ran on; now nothing is printed and the signal is sent again, raised where Python runs next."""
+    import signal
+    import sys
+
+    from seal_cli import fileio
+
+    hook = sys.unraisablehook
+    try:
+        sys.unraisablehook = sys.__unraisablehook__          # Python's own (pytest's makes it a warning)
+        fileio.note_interrupts()
+
+        class Dropper:
+            def __del__(self) -> None:
+                signal.raise_signal(signal.SIGINT)   # the handler runs here, inside __del__
+                for _ in range(1000):               # ... at the next bytecode
+                    pass
+
+        with pytest.raises(KeyboardInterrupt):   # sent again: raised where Python runs then, here
+            Dropper()
+            import time
+
+            time.sleep(1.0)
+        assert fileio.interrupted()
+        assert "Traceback" not in capfd.readouterr().err
+    finally:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+        sys.unraisablehook = hook
+        fileio._INTERRUPTED[0] = False
+
+
+def test_text_is_read_composed_so_a_decomposed_name_is_the_composed_one(tmp_path: Path) -> None:
+    """macOS writes "é" as "e" + U+0301: a map or a command file in that form named rooms no command could reach
+    ("the apartment has no caf"); files are read in NFC, which leaves composed and ASCII text as it is."""
+    from seal_cli.fileio import composed
+
+    (tmp_path / "m.yaml").write_text("rooms: [cafe\u0301]\n", encoding="utf-8")
+    assert read_text(tmp_path / "m.yaml") == "rooms: [caf\u00e9]\n"
+    assert read_yaml(tmp_path / "m.yaml") == {"rooms": ["caf\u00e9"]}
+    assert composed("plain") == "plain" and composed("caf\u00e9") == "caf\u00e9"
+
+
+def test_outputs_of_a_command_whose_interrupt_was_dropped_are_not_written(tmp_path: Path,
+                                                                        monkeypatch: pytest.MonkeyPatch) -> None:
+    from seal_cli import fileio
+
+    monkeypatch.setattr(fileio, "_INTERRUPTED", [True])      # noted, never raised
+    outputs = fileio.Outputs({"--png": tmp_path / "o.png"}, suffixes={"--png": (".png",)})
+    outputs["--png"].write_bytes(b"x")
+    with pytest.raises(KeyboardInterrupt):
+        outputs.commit()
+    assert sorted(p.name for p in tmp_path.iterdir()) == []

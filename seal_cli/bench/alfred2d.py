@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from seal_cli.errors import SealError, Where
+from seal_cli.errors import SealError, SealErrors, Where
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding
 from seal_cli.frames.taxonomy import class_key
@@ -40,6 +40,7 @@ from seal_cli.sim.navigation import Grid
 from seal_cli.sim.world import HAND, Item, Robot, World
 
 if TYPE_CHECKING:
+    from seal_cli.jsonvalues import Value
     from seal_cli.sim.agent import Scene
 
 __all__ = ["FOUR", "GRID", "MOVABLE_RECEPTACLES", "TASK_TYPES", "Condition", "Episode", "FloorPlan", "Placement",
@@ -176,6 +177,8 @@ class Episode:
     objects: tuple[Placement, ...]
     lights_on: frozenset[str]
     expert_path_m: float
+    source: Where = Where()
+    """Where the trial is (its file and line): a problem of the world it makes is reported there."""
 
     @property
     def group(self) -> str:
@@ -203,36 +206,44 @@ def _where(path: Path, line: int | None = None) -> Where:
 
 
 def read_floorplans(data_dir: str | Path) -> tuple[dict[str, FloorPlan], tuple[str, ...]]:
-    """The floor plans of ``floorplans.json``, and the classes that may move."""
+    """The floor plans of ``floorplans.json``, and the classes that may move; a value of the wrong type is a
+    SealError naming the file and the value's path (``floor_plans.FloorPlan1.receptacles[3].position``)."""
     from seal_cli.fileio import read_json
+    from seal_cli.jsonvalues import Value
 
     path = Path(data_dir) / "floorplans.json"
     if not path.exists() and not path.is_symlink():
         raise SealError(f"no ALFRED-2D data here: {path} does not exist", _where(path))
-    raw = read_json(path, "floor plans file")
-    try:
-        plans = {name: _floor_plan(name, fp) for name, fp in raw["floor_plans"].items()}
-        return plans, tuple(raw.get("movable_classes", ()))
-    except (KeyError, TypeError, ValueError, IndexError) as exc:
-        raise SealError(f"{path} is not ALFRED-2D floor plans: missing or malformed {exc}", _where(path)) from None
+    raw = Value(read_json(path, "floor plans file"), "", _where(path))
+    plans = {name: _floor_plan(name, fp) for name, fp in raw["floor_plans"].items()}
+    movable = raw.get("movable_classes")
+    return plans, movable.texts() if movable is not None else ()
 
 
-def _floor_plan(name: str, fp: Mapping[str, Any]) -> FloorPlan:
+def _floor_plan(name: str, fp: Value) -> FloorPlan:
     receptacles = []
-    for r in fp["receptacles"]:
+    for r in fp["receptacles"].list():
         pose = r.get("interaction_pose")
-        access = ((float(pose[0]), float(pose[1])),) if pose else ()
-        x, y, z = r["position"]
-        receptacles.append(Receptacle(r["id"], r["class"], (float(x), float(z)), float(y), bool(r["openable"]),
-                                      bool(r["receptacle"]), access))
-    cells = [tuple(map(float, c)) for c in list(fp["reachable"]) + list(fp.get("reachable_extra", ()))]
-    return FloorPlan(name, fp["scene_type"], tuple(map(float, fp["bounds"])),  # type: ignore[arg-type]
-                     tuple(dict.fromkeys(cells)), tuple(receptacles), tuple(fp.get("object_types", ())))  # type: ignore[arg-type]
+        at = pose.numbers() if pose is not None else ()
+        if pose is not None and len(at) < 2:
+            raise pose.problem("must be a list of at least 2 finite numbers (x, z, ...)")
+        x, y, z = r["position"].numbers(3)
+        receptacles.append(Receptacle(r["id"].text(), r["class"].text(), (x, z), y, r["openable"].flag(),
+                                      r["receptacle"].flag(), ((at[0], at[1]),) if at else ()))
+    extra = fp.get("reachable_extra")
+    cells = [c.numbers(2) for c in fp["reachable"].list() + (extra.list() if extra is not None else [])]
+    types = fp.get("object_types")
+    xmin, ymin, xmax, ymax = fp["bounds"].numbers(4)
+    return FloorPlan(name, fp["scene_type"].text(), (xmin, ymin, xmax, ymax),
+                     tuple(dict.fromkeys((x, y) for x, y in cells)), tuple(receptacles),
+                     types.texts() if types is not None else ())
 
 
 def read_trials(data_dir: str | Path, split: str, floor_plans: Mapping[str, FloorPlan]) -> Iterator[Episode]:
-    """The episodes of ``trials_<split>.jsonl``, in file order."""
+    """The episodes of ``trials_<split>.jsonl``, in file order; a trial with a value of the wrong type is a
+    SealError at its line, naming the value's path (``trial.objects[2].position``)."""
     from seal_cli.fileio import stream_lines
+    from seal_cli.jsonvalues import Value
 
     path = Path(data_dir) / f"trials_{split}.jsonl"
     if not path.exists() and not path.is_symlink():
@@ -248,37 +259,55 @@ def read_trials(data_dir: str | Path, split: str, floor_plans: Mapping[str, Floo
                             source_line=line) from None
         except RecursionError:
             raise SealError("trial is nested too deeply for seal to read", _where(path, number)) from None
-        try:
-            yield _episode(trial, floor_plans)
-        except (KeyError, TypeError, ValueError, IndexError) as exc:
-            raise SealError(f"trial is malformed: {exc!r}", _where(path, number)) from None
+        yield _episode(Value(trial, "trial", _where(path, number)), floor_plans)
 
 
-def _episode(t: Mapping[str, Any], floor_plans: Mapping[str, FloorPlan]) -> Episode:
-    plan = floor_plans[t["floor_plan"]]
+def _optional_text(v: Value | None) -> str | None:
+    return v.text() if v is not None else None
+
+
+def _episode(t: Value, floor_plans: Mapping[str, FloorPlan]) -> Episode:
+    floor_plan = t["floor_plan"]
+    plan = floor_plans.get(floor_plan.text())
+    if plan is None:
+        raise floor_plan.problem(f"names no floor plan of the floor plans file ({floor_plan.raw!r})")
     task = t["task"]
     expert_parent: dict[str, str] = {}
     receptacle_ids = {r.id for r in plan.receptacles}
-    for step in t["expert"]["high_pddl"]:
-        source = step.get("from_receptacle_id")
-        if step["action"] == "PickupObject" and source in receptacle_ids:
+    expert = t["expert"]
+    for step in expert["high_pddl"].list():
+        source = _optional_text(step.get("from_receptacle_id"))
+        if step["action"].text() == "PickupObject" and source in receptacle_ids:
+            assert source is not None
             # a slice ("Apple|...|AppleSliced_1") lies where its whole object was
-            whole = step["object_id"].split("|")
-            whole_id = "|".join(whole[:4]) if len(whole) > 4 and "Sliced" in whole[-1] else step["object_id"]
+            whole = step["object_id"].text().split("|")
+            whole_id = "|".join(whole[:4]) if len(whole) > 4 and "Sliced" in whole[-1] else "|".join(whole)
             expert_parent.setdefault(whole_id, source)
     objects = []
-    for o in t["objects"]:
+    for o in t["objects"].list():
         guess = o.get("parent_guess")
-        parent = expert_parent.get(o["id"]) or (plan.receptacles[guess].id if guess is not None else None)
-        x, y, z = o["position"]
-        objects.append(Placement(o["id"], o["class"], (float(x), float(z)), float(y), parent))
-    lights = frozenset(class_key(s["objectType"]) for s in t.get("object_toggles", ()) if s.get("isOn"))
-    sx, sz, rot = t["agent_start"]
-    return Episode(t["task_id"], t["task_dir"], t["split"], t["floor_plan"], t["scene_type"],
-                   Task(task["type"], task["object"], task.get("receptacle"), task.get("mrecep"), task.get("toggle"),
-                        bool(task.get("sliced"))),
-                   tuple(t.get("goals", ())), (float(sx), float(sz), thor_yaw(float(rot))), tuple(objects), lights,
-                   float(t["expert"].get("path_length_m", math.nan)))
+        index = guess.integer() if guess is not None else None
+        if index is not None and not 0 <= index < len(plan.receptacles):
+            assert guess is not None
+            raise guess.problem(f"must be the index of one of the floor plan's {len(plan.receptacles)} receptacles "
+                                f"(0 to {len(plan.receptacles) - 1}), not {index}")
+        oid = o["id"].text()
+        parent = expert_parent.get(oid) or (plan.receptacles[index].id if index is not None else None)
+        x, y, z = o["position"].numbers(3)
+        objects.append(Placement(oid, o["class"].text(), (x, z), y, parent))
+    toggles = t.get("object_toggles")
+    lights = frozenset(class_key(s["objectType"].text()) for s in (toggles.list() if toggles is not None else ())
+                       if (on := s.get("isOn")) is not None and on.flag())
+    sx, sz, rot = t["agent_start"].numbers(3)
+    goals = t.get("goals")
+    sliced = task.get("sliced")
+    length = expert.get("path_length_m")
+    return Episode(t["task_id"].text(), t["task_dir"].text(), t["split"].text(), plan.name, t["scene_type"].text(),
+                   Task(task["type"].text(), task["object"].text(), _optional_text(task.get("receptacle")),
+                        _optional_text(task.get("mrecep")), _optional_text(task.get("toggle")),
+                        sliced.flag() if sliced is not None else False),
+                   goals.texts() if goals is not None else (), (sx, sz, thor_yaw(rot)), tuple(objects), lights,
+                   length.number() if length is not None else math.nan, t.where)
 
 
 def load_suite(data_dir: str | Path, split: str, *, limit: int | None = None,
@@ -415,6 +444,17 @@ def build_scene(episode: Episode, plan: FloorPlan, library: Library, priors: Map
     robot is given — the reachable grid, the receptacles as places (openable ones closed), and
     place-level priors for every movable class of the scene. Items get short names
     (``fridge_1``, ``apple_2``) in the data's order."""
+    try:
+        return _scene(episode, plan, library, priors, sensor)
+    except SealError as error:  # the trial's data (a start outside the floor plan): said at the trial's line
+        if error.file is not None:
+            raise
+        said = [p.message for p in error.problems] if isinstance(error, SealErrors) else [error.message]
+        raise SealError(f"trial {episode.task_id}: {'; '.join(said)}", episode.source) from None
+
+
+def _scene(episode: Episode, plan: FloorPlan, library: Library, priors: Mapping[str, Mapping[str, float]],
+           sensor: SensorModel | None) -> Scene:
     from seal_cli.maps.geometry import OccupancyGrid
     from seal_cli.maps.model import Map, ObjectTruth, Place, Room
     from seal_cli.maps.model import Robot as MapRobot

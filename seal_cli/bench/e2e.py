@@ -85,23 +85,69 @@ def load_cases(path: str | Path | None = None) -> list[Case]:
     return _load(Path(path))
 
 
-def _load(path: Path) -> list[Case]:
-    from seal_cli.fileio import read_yaml
+KEYS = ("map", "text", "plan", "refused", "run", "answer", "says")
+"""The keys of a case in a suite file."""
 
-    data = read_yaml(path)
-    entries = data.get("cases") if isinstance(data, dict) else None
-    if not isinstance(entries, list):
-        raise SealError("an end-to-end suite is a mapping with cases: [...]", Where(str(path)))
+
+def _load(path: Path) -> list[Case]:
+    """The cases of one suite file; every problem of every case at its line and column (a value of the wrong
+    type, an unknown or repeated key, a case with both or neither of plan and refused)."""
+    import yaml
+
+    from seal_cli.errors import SealErrors
+    from seal_cli.fileio import LOADER, read_text, yaml_problem
+    from seal_cli.yamlnodes import NodeReader, check_size
+
+    text = read_text(path)
+    reader = NodeReader(text, str(path))
+    try:
+        root = yaml.compose(text, Loader=LOADER)
+    except yaml.YAMLError as exc:
+        raise yaml_problem(exc, text, str(path)) from None
+    check_size(root, str(path))
+    entries = None
+    if isinstance(root, yaml.MappingNode):
+        entries = next((value for key, _, value in reader.pairs(root, "the suite", ("cases",)) if key == "cases"),
+                       None)
+    if not isinstance(entries, yaml.SequenceNode):
+        reader.problem("an end-to-end suite is a mapping with cases: [...]",
+                       entries if entries is not None else root)
+        entries = yaml.SequenceNode("tag:yaml.org,2002:seq", [])
     cases = []
-    for number, entry in enumerate(entries, 1):
-        if not isinstance(entry, dict) or not isinstance(entry.get("text"), str) or not isinstance(
-                entry.get("map"), str):
-            raise SealError(f"case {number}: needs text and map (one of {', '.join(MAPS)}, a shipped map or a "
-                            "map file)", Where(str(path)))
-        plan = entry.get("plan")
-        cases.append(Case(entry["map"], entry["text"], tuple(plan) if plan is not None else None,
-                          entry.get("refused"), entry.get("run"), entry.get("answer"),
-                          _map_file(entry["map"], path.parent, number, path), entry.get("says")))
+    for number, entry in enumerate(entries.value, 1):
+        fields = {key: (key_node, value) for key, key_node, value in reader.pairs(entry, f"case {number}", KEYS)}
+        if not isinstance(entry, yaml.MappingNode):
+            continue  # said by pairs
+        values: dict[str, Any] = {}
+        for key, (_, value) in fields.items():
+            if key == "plan":
+                values[key] = tuple(v for v in (reader.string(item, f"a step of case {number}'s plan")
+                                                for item in reader.items(value, f"case {number}'s plan")) if v)
+            else:
+                values[key] = reader.string(value, f"case {number}'s {key}")
+        missing = [k for k in ("text", "map") if k not in fields]
+        if missing:
+            reader.problem(f"case {number} has no {' and no '.join(missing)} (its map: one of {', '.join(MAPS)}, a "
+                           "shipped map or a map file)", entry)
+            continue
+        if ("plan" in fields) == ("refused" in fields):
+            reader.problem(f"case {number}: give exactly one of plan and refused", entry)
+            continue
+        if "run" in fields and values["run"] is not None and values["run"] not in RUN_ENDS:
+            reader.problem(f"case {number}'s run is one of {', '.join(RUN_ENDS)}, not {values['run']!r}",
+                           fields["run"][1])
+            continue
+        if any(v is None for v in values.values()):
+            continue  # said above
+        try:
+            where = _map_file(values["map"], path.parent, number, path)
+        except SealError as error:
+            reader.problem(error.message, fields["map"][1])
+            continue
+        cases.append(Case(values["map"], values["text"], values.get("plan"), values.get("refused"),
+                          values.get("run"), values.get("answer"), where, values.get("says")))
+    if reader.problems:
+        raise reader.problems[0] if len(reader.problems) == 1 else SealErrors(reader.problems)
     return cases
 
 

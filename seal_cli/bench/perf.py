@@ -200,12 +200,15 @@ def measure(scale: Scale, seed: int = 0, progress: Callable[[str], None] | None 
             "compiled": compiled.kernels() is not None}
 
 
-def peak_rss_mb() -> float:
-    """The peak resident memory of this process, in MB (``ru_maxrss`` is in KiB on Linux, bytes on macOS)."""
+def peak_rss_mb(children: bool = False) -> float:
+    """The peak resident memory of this process, in MB (``ru_maxrss`` is in KiB on Linux, bytes on macOS); with
+    ``children``, the largest of it and of every child process it has waited for (the workers of a pool)."""
     import resource
     import sys
 
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+    if children:
+        peak = max(peak, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)
     return peak / (1 << 20) if sys.platform == "darwin" else peak / 1024
 
 

@@ -7,6 +7,7 @@ import time
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from seal_cli.errors import SealError, at_line
 from seal_cli.frames.library import Library
 from seal_cli.language.grounding import Vocabulary
 from seal_cli.maps.model import Map
@@ -50,12 +51,22 @@ BENCH_COMMANDS = (
 
 
 def time_plans(texts: Sequence[str], library: Library, *, map: Map | None = None,
-               vocabulary: Vocabulary | None = None, repeat: int = 5) -> list[Timing]:
-    """Each command's :class:`Timing`: the median of ``repeat`` runs, after one warm-up run that
-    builds the grammar and the lexicon (so the first command does not pay for them)."""
+               vocabulary: Vocabulary | None = None, repeat: int = 5,
+               source: tuple[str, Sequence[tuple[int, str]]] | None = None) -> list[Timing]:
+    """Each command's :class:`Timing`: the median of ``repeat`` runs, after one warm-up run of each (the first
+    builds the grammar and the lexicon, so the first command does not pay for them). ``source``: the file the
+    commands were read from and each one's line there (its number and text); a command that cannot be planned
+    is refused at its line and column of that file, before any is timed."""
     if not texts:
         return []
-    problem_of_text(texts[0], library, map=map, vocabulary=vocabulary)
+    for k, text in enumerate(texts):  # every command plans, or the first that does not is said where it is
+        try:
+            problem = problem_of_text(text, library, map=map, vocabulary=vocabulary)
+            plan(problem.commanded, library, problem.state, text=text)
+        except SealError as error:
+            if source is None:
+                raise
+            raise at_line(error, source[0], *source[1][k]) from None
     rows = []
     for text in texts:
         times, searches = [], []

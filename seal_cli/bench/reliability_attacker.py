@@ -27,7 +27,7 @@ import numpy as np
 
 from seal_cli.bench.reliability import Case, hostile_setting
 
-__all__ = ["attacker_cases", "hostile14_cases", "rgba_png", "sparse_pgm"]
+__all__ = ["alfred2d_data", "attacker_cases", "hostile14_cases", "hostile15_cases", "rgba_png", "sparse_pgm"]
 
 DIGITS = "1" * 5_000
 """An integer longer than Python converts from text (4,300 digits)."""
@@ -279,6 +279,7 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
                  b"rooms:\n  - {name: hall, box: [0, 0, 10, 10]}\n"),), codes=(0, 1), keep=("x.yaml",),
                says=r"x\.yaml")
     yield from hostile14_cases()
+    yield from hostile15_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -326,3 +327,106 @@ def hostile14_cases() -> Iterator[Case]:
              "  cup: {kitchen: 0.5, hall: 0.5}\nobjects:\n  - {class: cup, at: [3, 3]}\n")
     yield Case("A search an empty 30 m × 30 m floor: run", ("run", "bring me a cup", "--map", "e.yaml"),
                (("e.yaml", empty.encode()),), codes=(0,), keep=("e.yaml",), timeout=120)
+
+
+def alfred2d_data(plan: dict[str, object] | None = None, trial: dict[str, object] | list[object] | None = None
+                  ) -> tuple[tuple[str, bytes], ...]:
+    """A small ALFRED-2D data folder ``d/`` (one 2 m × 2 m kitchen, a counter with an apple, a fridge; one trial
+    that puts the apple in the fridge, in both splits) with the floor plan's and the trial's keys replaced by
+    ``plan``'s and ``trial``'s (a list for the trial replaces it whole): it runs as it is."""
+    import json
+
+    cells = [[x * 0.25, z * 0.25] for x in range(-4, 5) for z in range(-4, 5)]
+    counter, apple = "CounterTop|+01.20|+00.90|+00.00", "Apple|+01.20|+00.95|+00.00"
+    floor = {"scene_type": "kitchen", "bounds": [-1.5, -1.5, 1.5, 1.5], "reachable": cells,
+             "object_types": ["Apple", "CounterTop", "Fridge"],
+             "receptacles": [{"id": counter, "class": "CounterTop", "position": [1.2, 0.9, 0.0], "openable": False,
+                              "receptacle": True, "interaction_pose": [0.75, 0.0, 90, 30]},
+                             {"id": "Fridge|-01.20|+00.00|+00.00", "class": "Fridge", "position": [-1.2, 0.0, 0.0],
+                              "openable": True, "receptacle": True, "interaction_pose": None}], **(plan or {})}
+    base = {"task_id": "trial_1", "task_dir": "pick_and_place_simple-Apple-None-Fridge-1", "split": "valid_seen",
+            "floor_plan": "FloorPlan1", "scene_type": "kitchen",
+            "task": {"type": "pick_and_place_simple", "object": "Apple", "sliced": False, "mrecep": None,
+                     "receptacle": "Fridge", "toggle": None},
+            "goals": ["put the apple in the fridge"], "agent_start": [0.0, 0.0, 90],
+            "objects": [{"id": apple, "class": "Apple", "position": [1.2, 0.95, 0.0], "parent_guess": 0}],
+            "expert": {"high_pddl": [{"action": "PickupObject", "object_id": apple, "from_receptacle_id": counter}],
+                       "path_length_m": 3.0}}
+    one: object = trial if isinstance(trial, list) else {**base, **(trial or {})}
+    plans = {"movable_classes": ["Apple"], "floor_plans": {"FloorPlan1": floor}}
+    line = (json.dumps(one) + "\n").encode()
+    return (("d/floorplans.json", json.dumps(plans).encode()), ("d/trials_valid_seen.jsonl", line),
+            ("d/trials_train.jsonl", line))
+
+
+def hostile15_cases() -> Iterator[Case]:
+    """Round hostile15: data files read without checks of their values' types (ALFRED-2D's floor plans and trials,
+    the end-to-end suite's cases), refusals of a command read from a file or of a vocabulary's entry said without
+    their line, ``--framelib +`` read as the current folder, a device given as a frame file called missing."""
+    tasks = ("bench", "tasks", "--data", "d", "--policies", "sefm", "--jobs", "1", "--particles", "20")
+    trials = r"d/trials_valid_seen\.jsonl:1: trial"
+    data: dict[str, tuple[dict[str, object] | None, dict[str, object] | list[object] | None, str]] = {
+        "receptacles that are a mapping": ({"receptacles": {"a": 1}}, None,
+                                           r"d/floorplans\.json: floor_plans\.FloorPlan1\.receptacles must be a list"),
+        "a receptacle that is a list": ({"receptacles": [[1, 2]]}, None,
+                                        r"d/floorplans\.json: floor_plans\.FloorPlan1\.receptacles\[0\] must be an "
+                                        r"object"),
+        "NaN bounds": ({"bounds": [float("nan"), 0, 1, 1]}, None, r"\.bounds\[0\] must be a finite number"),
+        "an expert step that is a number": (None, {"expert": {"high_pddl": [5]}},
+                                            trials + r"\.expert\.high_pddl\[0\] must be an object"),
+        "a NaN position": (None, {"objects": [{"id": "a", "class": "Apple", "position": [float("nan"), 0, 0]}]},
+                           trials + r"\.objects\[0\]\.position\[0\] must be a finite number"),
+        "a task object of null": (None, {"task": {"type": "pick_and_place_simple", "object": None}},
+                                  trials + r"\.task\.object must be a string, not null"),
+        "a parent_guess of -1": (None, {"objects": [{"id": "a", "class": "Apple", "position": [1.2, 0.9, 0],
+                                                     "parent_guess": -1}]},
+                                 trials + r"\.objects\[0\]\.parent_guess must be the index of one of the floor "
+                                          r"plan's 2 receptacles"),
+        "goals that are a string": (None, {"goals": "put the apple in the fridge"},
+                                    trials + r"\.goals must be a list, not a string"),
+        "a start 10^308 m away": (None, {"agent_start": [1e308, 1e308, 90]},
+                                  trials + r" trial_1: robot pose .* is outside the map's bounds"),
+        "a trial that is a list": (None, [1, 2], trials + r" must be an object"),
+    }
+    for label, (plan, trial, says) in data.items():
+        files = alfred2d_data(plan, trial)
+        yield Case(f"A ALFRED-2D data: {label}", tasks, files, codes=(1,), keep=tuple(n for n, _ in files),
+                   says=says, timeout=120)
+    cases = {"plan: 5": ("plan: [Go(goal=kitchen)]", "plan: 5", r"e\.yaml:2:\d+: case 1's plan must be a list"),
+             "a plan of one string": ("plan: [Go(goal=kitchen)]", "plan: Go(goal=kitchen)",
+                                      r"e\.yaml:2:\d+: case 1's plan must be a list"),
+             "an unknown key": ("run: done", "run: done, bogus: 1", r"e\.yaml:2:\d+: unknown key 'bogus' in case 1"),
+             "run as a list": ("run: done", "run: [done]", r"e\.yaml:2:\d+: case 1's run must be a single value")}
+    good = '{map: apartment, text: "go to the kitchen", plan: [Go(goal=kitchen)], run: done}'
+    for label, (old, new, says) in cases.items():
+        yield Case(f"A bench e2e --file: {label}", ("bench", "e2e", "--file", "e.yaml", "--jobs", "1"),
+                   (("e.yaml", f"cases:\n  - {good.replace(old, new)}\n".encode()),), codes=(1,), keep=("e.yaml",),
+                   says=says)
+    yield Case("A bench plan --file: a line that cannot be planned, at its line and column",
+               ("bench", "plan", "--file", "c.txt", "--repeat", "1"),
+               (("c.txt", b"stir the cup\n\n  flibber the garage\n"),), codes=(1,), keep=("c.txt",),
+               says=r"c\.txt:3:3: unknown verb 'flibber'")
+    yield Case("A bench plan --file: a NUL, at its line and column", ("bench", "plan", "--file", "c.txt", "--repeat",
+                                                                      "1"),
+               (("c.txt", b"stir the cup\r\nstir\x00 the cup\r\n"),), codes=(1,), keep=("c.txt",),
+               says=r"c\.txt:2:5: control character U\+0000")
+    yield Case("A --framelib + alone", ("frames", "--framelib", "+"), (("x.yaml", b"name: not a frame file\n"),),
+               codes=(1,), keep=("x.yaml",), says=r"--framelib \+: give a file or folder after")
+    for device, kind in (("/dev/zero", "character device"), ("pipe", "FIFO")):
+        yield Case(f"A --framelib {device}: refused by its kind", ("plan", "--framelib", device, "stir the cup"),
+                   (("pipe", "fifo"),), codes=(1,), says=rf"{device}: cannot read this file: it is a {kind}")
+    vocabularies = {"synonyms of 5": (b"- cup\n- {class: mug, synonyms: 5}\n", r"v\.yaml:2:26: entry 2: synonyms"),
+                    "an entry that is a list": (b"classes:\n  - cup\n  - [x]\n", r"v\.yaml:3:5: entry 2 is neither"),
+                    "people of a number": (b"classes: [cup]\npeople: [5]\n", r"v\.yaml:2:9: people: must be")}
+    for label, (content, says) in vocabularies.items():
+        yield Case(f"A a vocabulary with {label}", ("parse", "--vocabulary", "v.yaml", "stir the cup"),
+                   (("v.yaml", content),), codes=(1,), keep=("v.yaml",), says=says)
+    _, image, text, _, _, _, _ = hostile_setting()
+    cafe = ("m.yaml", text.replace("kitchen", "caf\u00e9").encode())
+    decomposed = ("m.yaml", text.replace("kitchen", "cafe\u0301").encode())
+    yield Case("A a command typed decomposed (e + U+0301) reaches the room named composed",
+               ("plan", "--map", "m.yaml", "go to the cafe\u0301"), (cafe, image), codes=(0,),
+               keep=("m.yaml", "apartment.pgm"))
+    yield Case("A a map written decomposed (e + U+0301) names the room a composed command reaches",
+               ("plan", "--map", "m.yaml", "go to the caf\u00e9"), (decomposed, image), codes=(0,),
+               keep=("m.yaml", "apartment.pgm"))

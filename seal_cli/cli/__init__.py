@@ -46,6 +46,11 @@ def framelib_paths(paths: list[Path] | None) -> list[Path] | None:
         return list(paths)
     from seal_cli.resources import framelib_dir
 
+    if any(str(p).strip() == "+" for p in paths):  # Path("") is ".": the current folder would be read as frames
+        from seal_cli.errors import SealError
+
+        raise SealError("--framelib +: give a file or folder after the '+' (--framelib +PATH adds PATH to the "
+                        "standard library)")
     return [framelib_dir(), *(Path(str(p)[1:]) if plus else p for p, plus in zip(paths, added, strict=True))]
 
 

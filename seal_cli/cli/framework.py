@@ -73,7 +73,7 @@ def command(*args: Any, on: typer.Typer | None = None, **kwargs: Any) -> Callabl
         def run(*a: Any, **kw: Any) -> None:
             def checked() -> int | None:
                 _refuse_empty_paths(kw)
-                return function(*a, **kw)
+                return function(*a, **_composed_commands(kw))
 
             code = run_command(checked)
             if code:
@@ -92,6 +92,26 @@ def short_help(doc: str) -> str:
     keeps the docstring's line breaks there in its rich markup mode, so a wrapped docstring was listed broken
     mid-sentence (``seal bench --help``: "... a building's" / "and a large floor's ...")."""
     return " ".join(inspect.cleandoc(doc).split("\n\n")[0].split())
+
+
+COMMAND_TEXTS = ("text", "tasks", "done", "commands", "holding")
+"""The parameters that hold what a user types as a command (or a class held): composed to NFC as files are
+(``fileio.composed``); file and map names are left as given (a file system may hold a name decomposed)."""
+
+
+def _composed_commands(values: dict[str, Any]) -> dict[str, Any]:
+    """``values`` with the commands a user typed composed (NFC): "go to the cafe" + U+0301 was "unexpected
+    character" at the accent."""
+    from seal_cli.fileio import composed
+
+    def one(value: Any) -> Any:
+        if isinstance(value, str):
+            return composed(value)
+        if isinstance(value, list):
+            return [composed(v) if isinstance(v, str) else v for v in value]
+        return value
+
+    return {name: one(value) if name in COMMAND_TEXTS else value for name, value in values.items()}
 
 
 def _refuse_empty_paths(values: dict[str, Any]) -> None:

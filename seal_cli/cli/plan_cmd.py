@@ -123,14 +123,17 @@ def bench_plan(
     if file is not None:
         from seal_cli.fileio import read_text, split_lines
 
-        texts = [line.strip() for line in split_lines(read_text(file)) if line.strip()]
+        numbered = [(k, line) for k, line in enumerate(split_lines(read_text(file)), 1) if line.strip()]
+        texts = [line.strip() for _, line in numbered]
+        source: tuple[str, list[tuple[int, str]]] | None = (str(file), numbered)
         if not texts:
             from seal_cli.errors import SealError, Where
 
             raise SealError("no commands to time: the file has no non-blank line", Where(str(file)))
     else:
-        texts = list(BENCH_COMMANDS)
-    rows = time_plans(texts, library, map=world, vocabulary=vocabulary_from(None, map_name), repeat=repeat)
+        texts, source = list(BENCH_COMMANDS), None
+    rows = time_plans(texts, library, map=world, vocabulary=vocabulary_from(None, map_name), repeat=repeat,
+                      source=source)
     slowest = max(rows, key=lambda r: r.ms)
     if as_json:
         emit_json({"map": world.name if world else None, "repeat": repeat,

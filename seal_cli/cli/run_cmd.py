@@ -304,10 +304,14 @@ def tasks(
                        "by_house": regroup(outcomes, names, 0), "against_prior_optimal": paired(outcomes, names)})
     else:
         report.update({"suite": suite, "split": split, "goal": goal, "seed": seed, "limit": limit, "sample": sample})
+    from seal_cli.bench.perf import peak_rss_mb
+
+    report["peak_rss_mb"] = round(peak_rss_mb(children=True), 1)  # the largest process: this one or a worker
     if as_json:
         emit_json(report)
     else:
         _table(report, names)
+        err.print(f"[dim]peak memory: {report['peak_rss_mb']:,.0f} MB (the largest process running episodes)[/dim]")
 
 
 def _table(report: dict[str, Any], names: list[str]) -> None:

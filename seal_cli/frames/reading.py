@@ -82,7 +82,7 @@ def frame_files(paths: Iterable[str | Path]) -> tuple[list[Path], list[SealError
             if not found:
                 problems.append(SealError(f"no frame files (*.yaml, *.frame) in folder {path}", Where(str(path))))
             files.extend(found)
-        elif path.is_file():
+        elif path.exists():  # a file, or a device or pipe that reading refuses by its kind
             files.append(path)
         else:
             problems.append(SealError(f"no such file or folder: {path}", Where(str(path))))

@@ -393,8 +393,8 @@ def _entries(data: Any, where: Where) -> tuple[list[str], dict[str, list[str]]]:
     if isinstance(data, dict) and "classes" in data:
         data = data["classes"]
     if not isinstance(data, list):
-        raise SealError("a vocabulary is a YAML list of classes (each a name or {class: NAME, synonyms: [...]})",
-                        where)
+        raise _problem("a vocabulary is a YAML list of classes (each a name or {class: NAME, synonyms: [...]})",
+                       where)
     names: list[str] = []
     synonyms: dict[str, list[str]] = {}
     for number, entry in enumerate(data, 1):
@@ -403,15 +403,50 @@ def _entries(data: Any, where: Where) -> tuple[list[str], dict[str, list[str]]]:
         elif isinstance(entry, dict) and isinstance(entry.get("class"), str) and entry["class"].strip():
             extra = entry.get("synonyms") or []
             if not isinstance(extra, list) or not all(isinstance(s, str) for s in extra):
-                raise SealError(f"entry {number}: synonyms must be a list of names", where)
+                raise _problem(f"entry {number}: synonyms must be a list of names", where, number, "synonyms")
             names.append(entry["class"])
             synonyms.setdefault(entry["class"], []).extend(extra)
         else:
-            raise SealError(f"entry {number} ({entry!r}) is neither a class name nor {{class: NAME, synonyms: [...]}}",
-                            where)
+            raise _problem(f"entry {number} is neither a class name nor {{class: NAME, synonyms: [...]}}", where,
+                           number)
     if not names:
-        raise SealError("the vocabulary lists no class", where)
+        raise _problem("the vocabulary lists no class", where)
     return names, synonyms
+
+
+def _problem(message: str, where: Where, entry: int | None = None, key: str | None = None) -> SealError:
+    """A vocabulary's problem at the line and column of its ``entry`` (1-based; its ``key``'s value), else of the
+    list of classes, found by reading the file's nodes again (only when there is a problem to say)."""
+    import yaml
+
+    from seal_cli.fileio import LOADER, read_text
+
+    if where.file is None:
+        return SealError(message, where)
+    try:
+        text = read_text(where.file)
+        node: yaml.Node | None = yaml.compose(text, Loader=LOADER)
+    except (SealError, yaml.YAMLError):
+        return SealError(message, where)
+
+    def value(of: yaml.Node | None, name: str) -> yaml.Node | None:
+        if not isinstance(of, yaml.MappingNode):
+            return None
+        return next((v for k, v in of.value if isinstance(k, yaml.ScalarNode) and k.value == name), None)
+
+    if key == "people":
+        node = value(node, "people") or node
+    else:
+        node = value(node, "classes") or node
+        if entry is not None and isinstance(node, yaml.SequenceNode) and entry <= len(node.value):
+            node = node.value[entry - 1]
+            node = (value(node, key) or node) if key is not None else node
+    if node is None:
+        return SealError(message, where)
+    line = node.start_mark.line
+    lines = text.splitlines()
+    return SealError(message, Where(where.file, line + 1, node.start_mark.column + 1),
+                     source_line=lines[line] if line < len(lines) else None)
 
 
 ARENA_CLASSES = ("objects", "locations", "placement_locations", "rooms")
@@ -444,7 +479,7 @@ def load_vocabulary(path: str | Path) -> Vocabulary:
     names, synonyms = _entries(data, where)
     people = data.get("people", []) if isinstance(data, dict) else []
     if not isinstance(people, list) or not all(isinstance(p, str) and p.strip() for p in people):
-        raise SealError("people: must be a list of names", where)
+        raise _problem("people: must be a list of names", where, key="people")
     return replace(Vocabulary.of(names, synonyms), people=frozenset(p.strip().lower() for p in people))
 
 

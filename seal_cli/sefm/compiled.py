@@ -28,9 +28,15 @@ def kernels() -> ModuleType | None:
     ``SEAL_NUMPY_ONLY`` is set. (``kernels.cache_clear()`` reads the environment again.)"""
     if os.environ.get("SEAL_NUMPY_ONLY", "") not in ("", "0"):
         return None
+    from seal_cli.fileio import interrupted
+
     try:
         from seal_cli.sefm import _jit
     except ImportError:
+        if interrupted():  # a SIGINT inside numba's import comes out as "ImportError: initialization failed"
+            raise KeyboardInterrupt from None
         return None
     _jit.warm()
+    if interrupted():  # one inside LLVM's callbacks while compiling was dropped there (fileio.note_interrupts)
+        raise KeyboardInterrupt
     return _jit

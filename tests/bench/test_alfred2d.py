@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import os
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -139,6 +140,50 @@ def test_judge_needs_every_condition_in_order(suite, library: Library) -> None: 
     assert judge(task, world).success
 
 
+def _one_plan(data: Path, **changes: object) -> dict[str, object]:
+    """The shared data's first floor plan alone, with ``changes``; and one of its trials."""
+    plans = json.loads((data / "alfred2d" / "floorplans.json").read_text())
+    name = next(iter(plans["floor_plans"]))
+    plan = {**plans["floor_plans"][name], **changes}
+    return {"movable_classes": plans["movable_classes"], "floor_plans": {name: plan}}
+
+
+def _a_trial(data: Path, name: str) -> dict[str, Any]:
+    for line in (data / "alfred2d" / "trials_train.jsonl").open():
+        if f'"{name}"' in line:
+            return dict(json.loads(line))
+    raise AssertionError(f"no trial of {name}")
+
+
+@pytest.mark.parametrize(("plan", "trial", "message"), [
+    ({"floor_plans": [1, 2]}, None, r"floorplans\.json: floor_plans must be an object \(\{\.\.\.\}\), not a list of 2"),
+    ({"receptacles": [[1, 2]]}, None, r"floorplans\.json: floor_plans\.\w+\.receptacles\[0\] must be an object"),
+    ({"bounds": [float("nan"), 0, 1, 1]}, None, r"\.bounds\[0\] must be a finite number, not the number nan"),
+    ({"reachable": [[0, "a"]]}, None, r"\.reachable\[0\]\[1\] must be a number, not a string \('a'\)"),
+    ({}, {"expert": {"high_pddl": [5]}}, r"valid_seen\.jsonl:1: trial\.expert\.high_pddl\[0\] must be an"),
+    ({}, {"task": {"type": "look_at_obj_in_light", "object": None}}, r":1: trial\.task\.object must be a string, not "
+                                                                     "null"),
+    ({}, {"agent_start": [0, 0]}, r":1: trial\.agent_start must be a list of 3 finite numbers, not a list of 2"),
+    ({}, {"goals": "abc"}, r":1: trial\.goals must be a list, not a string \('abc'\)"),
+    ({}, {"objects": [{"id": "a", "class": "Mug", "position": [0, 0, 0], "parent_guess": -1}]},
+     r":1: trial\.objects\[0\]\.parent_guess must be the index of one of the floor plan's \d+ receptacles"),
+    ({}, {"floor_plan": "Nowhere"}, r":1: trial\.floor_plan names no floor plan"),
+    ({}, [1, 2], r":1: trial must be an object"),
+])
+def test_data_of_the_wrong_type_is_said_at_its_path(tmp_path: Path, shared_data: Path, plan: dict[str, Any],
+                                                    trial: Any, message: str) -> None:
+    """A value of the wrong type anywhere in the floor plans or a trial is one SealError naming the file (and the
+    trial's line) and the value's path; it was a KeyError, AttributeError or TypeError traceback, or taken."""
+    plans = plan if "floor_plans" in plan else _one_plan(shared_data, **plan)
+    name = next(iter(_one_plan(shared_data)["floor_plans"]))
+    (tmp_path / "floorplans.json").write_text(json.dumps(plans))
+    base = _a_trial(shared_data, name)
+    changed = {**base, **trial} if isinstance(trial, dict) else (trial if trial is not None else base)
+    (tmp_path / "trials_valid_seen.jsonl").write_text(json.dumps(changed) + "\n")
+    with pytest.raises(SealError, match=message):
+        read_trials(tmp_path, "valid_seen", read_floorplans(tmp_path)[0]).__next__()
+
+
 def test_bad_data_is_a_clear_error(tmp_path: Path, shared_data: Path) -> None:
     with pytest.raises(SealError, match="no ALFRED-2D data"):
         read_floorplans(tmp_path)
@@ -157,7 +202,7 @@ def test_bad_data_is_a_clear_error(tmp_path: Path, shared_data: Path) -> None:
     with pytest.raises(SealError, match=r"trials_x\.jsonl:1:15: trial is not JSON"):
         list(read_trials(tmp_path, "x", {}))
     (tmp_path / "floorplans.json").write_text(json.dumps({"floor_plans": {"F": {"receptacles": [{}]}}}))
-    with pytest.raises(SealError, match="malformed"):
+    with pytest.raises(SealError, match=r"floorplans\.json: floor_plans\.F\.receptacles\[0\] has no 'position'"):
         read_floorplans(tmp_path)
     with pytest.raises(SealError, match="no split 'test'"):
         load_suite(shared_data / "alfred2d", "test")

@@ -67,6 +67,7 @@ def test_bench_tasks_map_suite_json() -> None:
     group = data["groups"]["heat the apple"]
     assert group["n"] == 1 and set(group["success"]) == {"oracle", "coverage"}
     assert group["path_m"]["oracle"] <= group["path_m"]["coverage"]
+    assert 50 < data["peak_rss_mb"] < 4_000      # the largest process running episodes (hostile15: a figure)
     bad = runner.invoke(app, ["bench", "tasks", "--suite", "nope"])
     assert bad.exit_code == 1 and "the suites are alfred2d, map, context" in bad.stderr
 

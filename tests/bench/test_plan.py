@@ -31,3 +31,15 @@ def test_the_built_in_commands_run_from_one_clause_to_six(library: Library) -> N
     rows = time_plans(BENCH_COMMANDS, library, repeat=1)
     assert min(r.commanded for r in rows) == 1 and max(r.commanded for r in rows) >= 6
     assert all(r.steps >= r.commanded for r in rows)
+
+
+def test_a_command_of_a_file_that_cannot_be_planned_is_refused_at_its_line_before_any_is_timed(
+        library: Library) -> None:
+    import pytest
+
+    from seal_cli.errors import SealError
+
+    lines = [(1, "stir the cup"), (4, "  flibber the garage")]
+    with pytest.raises(SealError) as caught:
+        time_plans([t.strip() for _, t in lines], library, repeat=1, source=("c.txt", lines))
+    assert str(caught.value).startswith("c.txt:4:3: unknown verb 'flibber'")   # was "column 1: ..." alone

@@ -3,10 +3,12 @@ names; a pick of them ends cleanly (each failed on main before this round)."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from seal_cli.bench.reliability import hostile_cases, issue_cases, run_case
-from seal_cli.bench.reliability_attacker import attacker_cases, sparse_pgm
+from seal_cli.bench.reliability_attacker import alfred2d_data, attacker_cases, hostile15_cases, sparse_pgm
 from seal_cli.bench.reliability_outsider import outsider_cases
 from seal_cli.bench.reliability_review import cases, review_cases
 from seal_cli.bench.reliability_users import user_cases
@@ -33,4 +35,32 @@ def test_a_sparse_image_holds_its_patch_in_the_lower_left_corner() -> None:
                                   "A a vocabulary of 300,000 words"])
 def test_picked_cases_end_cleanly(name: str) -> None:
     outcome = run_case(next(c for c in attacker_cases() if c.name == name))
+    assert outcome.problems == []
+
+
+def test_the_small_alfred2d_data_runs_as_it_is_so_each_case_fails_on_its_own_change(tmp_path: Path) -> None:
+    """The hostile15 cases change one value of :func:`alfred2d_data`: unchanged, it is data a run succeeds on."""
+    import json
+    import subprocess
+    import sys
+
+    for name, content in alfred2d_data():
+        (tmp_path / name).parent.mkdir(exist_ok=True)
+        (tmp_path / name).write_bytes(content)
+    run = subprocess.run([sys.executable, "-m", "seal_cli", "bench", "tasks", "--data", "d", "--policies", "sefm",
+                          "--jobs", "1", "--particles", "20", "--json"], cwd=tmp_path, capture_output=True, text=True,
+                         timeout=300)
+    assert run.returncode == 0, run.stderr
+    assert json.loads(run.stdout)["groups"]["all"]["success"]["sefm"] == 1.0
+
+
+@pytest.mark.parametrize("name", ["A ALFRED-2D data: an expert step that is a number",
+                                  "A ALFRED-2D data: a start 10^308 m away", "A bench e2e --file: plan: 5",
+                                  "A bench plan --file: a line that cannot be planned, at its line and column",
+                                  "A --framelib + alone", "A --framelib /dev/zero: refused by its kind",
+                                  "A a vocabulary with synonyms of 5"])
+def test_picked_hostile15_cases_end_cleanly(name: str) -> None:
+    """Each failed on main: a traceback (the ALFRED-2D step, ``plan: 5``), a message without its file or line (the
+    start, the command, the vocabulary), the current folder read as frames, /dev/zero called missing."""
+    outcome = run_case(next(c for c in hostile15_cases() if c.name == name))
     assert outcome.problems == []

@@ -7,9 +7,11 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
 from typer.testing import CliRunner
 
 from seal_cli.cli import app
+from seal_cli.errors import SealError
 from tests.frames.test_library import PROJECT_FRAMES, SPEC_FRAMES
 
 runner = CliRunner()
@@ -119,3 +121,13 @@ def test_an_empty_file_or_folder_name_is_refused_naming_the_option(tmp_path: Pat
     done = subprocess.run([sys.executable, "-m", "seal_cli", "plan", "--done", "", "stir the cup"], cwd=tmp_path,
                           capture_output=True, text=True)
     assert "empty command" in done.stderr  # an empty text is the text's problem, not a path's
+
+
+def test_framelib_plus_alone_is_refused_not_read_as_the_current_folder(tmp_path: Path) -> None:
+    from seal_cli.cli import framelib_paths
+
+    with pytest.raises(SealError, match=r"--framelib \+: give a file or folder after the '\+'"):
+        framelib_paths([Path("+")])
+    assert framelib_paths([Path("+x")])[1:] == [Path("x")]
+    result = runner.invoke(app, ["frames", "--framelib", "+"])
+    assert result.exit_code == 1 and "give a file or folder after" in result.output

@@ -61,3 +61,16 @@ def test_no_option_help_loses_a_bracket_to_rich_markup() -> None:
     for args in (["localize", "--help"], ["import-bag", "--help"]):
         shown = runner.invoke(app, args, env={"COLUMNS": "400"}).stdout
         assert "YAML {id: class} or [class, ...] naming" in shown, shown
+
+
+def test_a_command_typed_decomposed_is_read_composed() -> None:
+    """"go to the cafe" + U+0301 (an accent typed after its letter) was "unexpected character" at the accent; a
+    command's text (and --task, --done, --command, --holding) is composed (NFC) before it is parsed."""
+    from seal_cli.cli.framework import COMMAND_TEXTS, _composed_commands
+
+    values = {"text": "stir the cafe\u0301", "done": ["cafe\u0301"], "map_name": "cafe\u0301.yaml"}
+    assert _composed_commands(values) == {"text": "stir the caf\u00e9", "done": ["caf\u00e9"],
+                                          "map_name": "cafe\u0301.yaml"}         # a file's name is left as given
+    assert {"text", "tasks", "done", "commands", "holding"} <= set(COMMAND_TEXTS)
+    result = CliRunner().invoke(app, ["parse", "--json", "stir the cafe\u0301"])
+    assert result.exit_code == 0 and "unexpected character" not in result.output

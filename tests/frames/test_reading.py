@@ -66,6 +66,18 @@ def test_frame_files_names_what_is_missing_or_empty(tmp_path: Path) -> None:
     assert problems[0].file == str(tmp_path / "nope.yaml")
 
 
+def test_a_device_or_a_pipe_given_as_a_frame_file_is_refused_by_its_kind_not_called_missing(tmp_path: Path) -> None:
+    import os
+
+    os.mkfifo(tmp_path / "pipe")
+    files, problems = frame_files(["/dev/null", tmp_path / "pipe"])
+    assert problems == [] and files == [Path("/dev/null"), tmp_path / "pipe"]   # it said "no such file or folder"
+    contents = read_files(files)
+    assert [p.message for p in contents.problems] == [
+        "cannot read this file: it is a character device, not a regular file",
+        "cannot read this file: it is a FIFO (named pipe), not a regular file"]
+
+
 def test_read_files_reads_both_formats_and_collects_unreadable_files(tmp_path: Path) -> None:
     (tmp_path / "stir.yaml").write_text(STIR_YAML)
     (tmp_path / "wave.frame").write_text(WAVE_DSL)

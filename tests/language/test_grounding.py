@@ -145,19 +145,22 @@ def test_a_maps_people_are_recipients_whatever_their_case(library: Library) -> N
     assert _recipient_or_goal("deliver the cup to anna", library, vocab) == ("recipient", "Anna", "person")
 
 
-@pytest.mark.parametrize(("content", "words"), [
-    ("cup: 1\n", "YAML list"),
-    ("[]\n", "no class"),
-    ("- {synonyms: [a]}\n", "entry 1"),
-    ("- {class: Fridge, synonyms: refrigerator}\n", "synonyms must be a list"),
-    ("- [a, b\n", "YAML syntax error"),
+@pytest.mark.parametrize(("content", "words", "at"), [
+    ("cup: 1\n", "YAML list", "1:1"),
+    ("[]\n", "no class", "1:1"),
+    ("- {synonyms: [a]}\n", "entry 1", "1:3"),
+    ("- cup\n- {class: Fridge, synonyms: refrigerator}\n", "entry 2: synonyms must be a list", "2:29"),
+    ("classes:\n  - cup\n  - [x]\n", "entry 2 is neither", "3:5"),
+    ("classes: [cup]\npeople: [5]\n", "people: must be", "2:9"),
+    ("- [a, b\n", "YAML syntax error", "2:1"),
 ])
-def test_bad_vocabulary_files_are_clear_errors(tmp_path: Path, content: str, words: str) -> None:
+def test_bad_vocabulary_files_are_clear_errors(tmp_path: Path, content: str, words: str, at: str) -> None:
+    """Each at its line and column (they named the file alone, and printed the entry's repr)."""
     path = tmp_path / "bad.yaml"
     path.write_text(content, encoding="utf-8")
     with pytest.raises(SealError) as caught:
         load_vocabulary(path)
-    assert words in str(caught.value) and str(path) in str(caught.value)
+    assert words in str(caught.value) and str(caught.value).startswith(f"{path}:{at}: ")
 
 
 def test_a_missing_vocabulary_file_is_an_error(tmp_path: Path) -> None:

@@ -33,10 +33,15 @@ SPACING = 0.25
 """The lattice's block side in metres (the grid's cells are grouped into blocks of about this size)."""
 
 MAX_NODES = 4096
-"""The most nodes a lattice has: its all-pairs distances and predecessors take about 20 bytes a pair while
-built (16.7 million pairs, 335 MB, at this bound; the shipped maps have up to 3,300 nodes at :data:`SPACING`).
-On a larger free space the blocks grow until the nodes fit: "bring me a cup" on an empty 50 m × 50 m map
-(40,000 nodes of 0.25 m) took more than 19 GB before."""
+"""The most nodes a lattice has: its all-pairs distances and predecessors take 8 bytes a pair (16.7 million
+pairs, 134 MB, at this bound; built :data:`ROWS_AT_ONCE` sources at a time; the shipped maps have up to 3,300
+nodes at :data:`SPACING`). On a larger free space the blocks grow until the nodes fit: "bring me a cup" on an
+empty 50 m × 50 m map (40,000 nodes of 0.25 m) took more than 19 GB before."""
+
+ROWS_AT_ONCE = 256
+"""Sources of the lattice's all-pairs shortest paths computed at once: scipy returns float64 distances and
+predecessors for each, kept as float32 and int32; computed whole, the 4,096-node lattice's transient was
+4,096² × 12 bytes (201 MB) on top of the 134 MB kept."""
 
 
 @dataclass(frozen=True)
@@ -202,9 +207,12 @@ def lattice_of(grid: Grid, sees: Callable[[tuple[float, float], np.ndarray], np.
     weight = np.hypot(*(points[pairs[:, 0]] - points[pairs[:, 1]]).T)
     n = len(points)
     coarse = coo_matrix((weight, (pairs[:, 0], pairs[:, 1])), shape=(n, n)).tocsr()
-    distance, previous = dijkstra(coarse, directed=False, return_predecessors=True)
-    lattice = Lattice(points, rep_cells, distance.astype(np.float32), previous.astype(np.int32), sees, reach,
-                      look_every)
+    distance = np.empty((n, n), dtype=np.float32)
+    previous = np.empty((n, n), dtype=np.int32)
+    for start in range(0, n, ROWS_AT_ONCE):  # a band of sources at a time: scipy's float64 rows never all at once
+        rows = np.arange(start, min(n, start + ROWS_AT_ONCE))
+        distance[rows], previous[rows] = dijkstra(coarse, directed=False, indices=rows, return_predecessors=True)
+    lattice = Lattice(points, rep_cells, distance, previous, sees, reach, look_every)
     if len(_LATTICES) >= 4:
         _LATTICES.pop(next(iter(_LATTICES)))
     _LATTICES[key] = lattice

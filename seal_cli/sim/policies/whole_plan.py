@@ -172,6 +172,12 @@ class Decision:
         return self.costs.get((view.cell, view.open), float("inf")) - self.expected_m
 
 
+TABLE_BYTES = 128 * 2**20
+"""The most bytes of drive tables one search keeps (one per node it plans from: candidates × lattice nodes × 8
+bytes, 116 MB on a 4,096-node lattice with 3,500 candidates; about 3 MB on an empty 50 m floor, where a run
+plans from a hundred nodes and kept 300 MB); past it those used longest ago are dropped."""
+
+
 class WholePlanSearch:
     """The candidate views of one run's map, and the choice of the next one to look from."""
 
@@ -397,6 +403,14 @@ class WholePlanSearch:
         if self._covered is not None:
             self._covered |= self.lattice.visible(node)
 
+    def _forget_tables(self) -> None:
+        """Drop the drive tables used longest ago while they hold more than :data:`TABLE_BYTES` (the last one
+        used is always kept); a table dropped is made again if it is asked for."""
+        held = sum(t.seen_at.nbytes + t.look.nbytes for t in self._tables.values())
+        while held > TABLE_BYTES and len(self._tables) > 1:
+            dropped = self._tables.pop(next(iter(self._tables)))
+            held -= dropped.seen_at.nbytes + dropped.look.nbytes
+
     def choose(self, agent: Agent, binding: Binding, target: str,
                weights: Callable[[str], np.ndarray], also: View | None = None,
                by_context: bool = False) -> Decision | None:
@@ -424,15 +438,16 @@ class WholePlanSearch:
         lattice = self.lattice
 
         def tables(origin: int) -> DriveTable:   # kept across choices; rows added for candidates added since
-            table = self._tables.get((origin, key))
+            table = self._tables.pop((origin, key), None)   # taken out and put back: the dict is in order of use
             done = 0 if table is None else len(table.length)
             if done < len(self.nodes):
                 more = lattice.drive_table(origin, self.nodes[done:], reveals[done:], hidden)
                 table = more if table is None else DriveTable(np.concatenate([table.seen_at, more.seen_at]),
                                                               np.concatenate([table.look, more.look]),
                                                               np.concatenate([table.length, more.length]))
-                self._tables[(origin, key)] = table
             assert table is not None
+            self._tables[(origin, key)] = table
+            self._forget_tables()
             return table
 
         plan: list[Target] = []

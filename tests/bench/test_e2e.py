@@ -1,0 +1,51 @@
+"""The end-to-end suite's cases file (``bench/e2e.py``: ``load_cases``): every problem at its line and column."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from seal_cli.bench.e2e import load_cases
+from seal_cli.errors import SealError, SealErrors
+
+GOOD = '{map: apartment, text: "go to the kitchen", plan: [Go(goal=kitchen)], run: done}'
+
+
+def test_the_shipped_suite_and_a_good_file_load(tmp_path: Path) -> None:
+    assert len(load_cases()) > 100
+    (tmp_path / "e.yaml").write_text(f"cases:\n  - {GOOD}\n")
+    [case] = load_cases(tmp_path / "e.yaml")
+    assert (case.text, case.plan, case.run, case.file) == ("go to the kitchen", ("Go(goal=kitchen)",), "done", None)
+
+
+@pytest.mark.parametrize(("entry", "message"), [
+    (GOOD.replace("[Go(goal=kitchen)]", "5"), r"e\.yaml:2:\d+: case 1's plan must be a list, not '5'"),
+    (GOOD.replace("[Go(goal=kitchen)]", "Go(goal=kitchen)"), r"e\.yaml:2:\d+: case 1's plan must be a list"),
+    (GOOD.replace("[Go(goal=kitchen)]", "[{a: 1}]"), r"e\.yaml:2:\d+: a step of case 1's plan must be a single value"),
+    (GOOD.replace("done", "[done]"), r"e\.yaml:2:\d+: case 1's run must be a single value, not a list"),
+    (GOOD.replace("done", "finished"), r"e\.yaml:2:\d+: case 1's run is one of done, not_found, not 'finished'"),
+    (GOOD.replace("run: done", "refused: nope"), r"e\.yaml:2:\d+: case 1: give exactly one of plan and refused"),
+    (GOOD.replace("}", ", answer: [1]}"), r"e\.yaml:2:\d+: case 1's answer must be a single value, not a list"),
+    (GOOD.replace("}", ", bogus: 1}"), r"e\.yaml:2:\d+: unknown key 'bogus' in case 1"),
+    (GOOD.replace("}", ", run: done}"), r"e\.yaml:2:\d+: case 1 repeats the key 'run'"),
+    (GOOD.replace('text: "go to the kitchen", ', ""), r"e\.yaml:2:\d+: case 1 has no text"),
+    (GOOD.replace("apartment", "garage"), r"e\.yaml:2:\d+: case 1: no map 'garage'"),
+])
+def test_a_case_of_the_wrong_shape_is_said_at_its_line_and_column(tmp_path: Path, entry: str, message: str) -> None:
+    """Each was a TypeError traceback (``plan: 5``) or taken as it was (a plan of one string read letter by
+    letter, an unknown key, an answer that is a list)."""
+    (tmp_path / "e.yaml").write_text(f"cases:\n  - {entry}\n")
+    with pytest.raises(SealError, match=message):
+        load_cases(tmp_path / "e.yaml")
+
+
+def test_every_case_is_checked_and_the_file_must_hold_a_list_of_cases(tmp_path: Path) -> None:
+    (tmp_path / "e.yaml").write_text(f"cases:\n  - {GOOD.replace('done', 'x')}\n  - {GOOD}\n  - 5\n")
+    with pytest.raises(SealErrors) as caught:
+        load_cases(tmp_path / "e.yaml")
+    assert [(p.line, p.message.split(" ")[0]) for p in caught.value.problems] == [(2, "case"), (4, "case")]
+    for text in ("cases: 5\n", "[1]\n", "", "other: []\n"):
+        (tmp_path / "e.yaml").write_text(text)
+        with pytest.raises(SealError, match=r"e\.yaml(:\d+:\d+)?: (an end-to-end suite|unknown key)"):
+            load_cases(tmp_path / "e.yaml")
