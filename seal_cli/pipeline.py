@@ -166,7 +166,7 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
         m.check_holding(holding)
         m = replace(m, robot=Robot(m.robot.pose, holding))
     known = vocabulary_of_map(m)
-    vocabulary = known if vocabulary is None else vocabulary.restricted_to(known.classes)
+    vocabulary = known if vocabulary is None else replace(vocabulary.restricted_to(known.classes), house=True)
     with naming_done(done, text):
         parses = [parse_to_plan(t, library, vocabulary) for t in (*done, text)]
         problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=m.known(),

@@ -47,7 +47,8 @@ def vocabulary_from(vocabulary: Path | None, map_name: str | None) -> Vocabulary
     for v in found:
         for name, extra in zip(v.classes, v.synonyms, strict=True):
             synonyms.setdefault(name, []).extend(extra)
-    return replace(Vocabulary.of(names, synonyms), people=frozenset(p for v in found for p in v.people))
+    return replace(Vocabulary.of(names, synonyms), people=frozenset(p for v in found for p in v.people),
+                   house=any(v.house for v in found))
 
 
 def _read_lines(source: str) -> list[str]:

@@ -103,6 +103,10 @@ class Vocabulary:
     people: frozenset[str] = field(default=frozenset(), compare=False)
     """The names of the people of this world, lower case (a map's ``people``, a vocabulary file's
     ``people:``): the parser reads them as names however they are written ("take *sam*")."""
+    house: bool = field(default=False, compare=False)
+    """Whether these are the classes of a building a robot acts in (a map's: :func:`vocabulary_of_map`): there a
+    command is what its speaker said, not one of ALFRED's seven tasks, so the task statistics add no placing
+    nobody said (:func:`~seal_cli.language.tasks.add_carried`: "put the spoon in the cup" is two steps there)."""
 
     def __post_init__(self) -> None:
         if not self.synonyms:
@@ -120,7 +124,8 @@ class Vocabulary:
 
     def with_usage(self, usage: WordUsage) -> Vocabulary:
         """This vocabulary grounding with these word statistics (``WordUsage()``: the rules alone)."""
-        return Vocabulary(self.classes, self.synonyms, self.where, usage, self.scene, people=self.people)
+        return Vocabulary(self.classes, self.synonyms, self.where, usage, self.scene, people=self.people,
+                          house=self.house)
 
     def in_context(self, text: str) -> Vocabulary:
         """This vocabulary grounding the phrases of the sentence ``text``: the statistics weigh its
@@ -129,7 +134,8 @@ class Vocabulary:
         words = context_words(text)
         if words == self.context:
             return self
-        made = Vocabulary(self.classes, self.synonyms, self.where, self.usage, self.scene, words, self.people)
+        made = Vocabulary(self.classes, self.synonyms, self.where, self.usage, self.scene, words, self.people,
+                          self.house)
         for name in _INDEXES:      # built here once, on this vocabulary: built on each copy, every sentence built them
             made.__dict__[name] = getattr(self, name)
         return made
@@ -200,7 +206,8 @@ class Vocabulary:
             if len(words) > 1 and noun_lemma(words[-1]) in PORTIONS and whole not in keys:
                 names += [whole.replace("_", " "), *synonyms.get(whole, ())]
             added.append(tuple(dict.fromkeys(n for n in names if class_key(n) != class_key(name))))
-        return Vocabulary(self.classes, tuple(added), self.where, self.usage, self.scene, people=self.people)
+        return Vocabulary(self.classes, tuple(added), self.where, self.usage, self.scene, people=self.people,
+                          house=self.house)
 
     def restricted_to(self, classes: Iterable[str]) -> Vocabulary:
         """The vocabulary of a scene: only the given classes (those present), each with the names
@@ -217,7 +224,8 @@ class Vocabulary:
         for cls in present.values():
             names.setdefault(cls, [])
         scene = Vocabulary.of(list(names), names, self.usage)
-        return Vocabulary(scene.classes, scene.synonyms, scene.where, scene.usage, True, people=self.people)
+        return Vocabulary(scene.classes, scene.synonyms, scene.where, scene.usage, True, people=self.people,
+                          house=self.house)
 
     def __len__(self) -> int:
         return len(self.classes)
@@ -489,4 +497,4 @@ def vocabulary_of_map(map_: Any) -> Vocabulary:
     names += [o.cls for o in getattr(map_, "objects", ())]
     names += list(getattr(map_, "priors", {}) or {})
     people = frozenset(p.name.lower() for p in getattr(map_, "people", ()) if getattr(p, "name", None))
-    return replace(Vocabulary.of(names), people=people)
+    return replace(Vocabulary.of(names), people=people, house=True)

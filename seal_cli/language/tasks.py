@@ -196,7 +196,10 @@ def uncarried(parse: Parse, library: Library) -> int | None:
 def add_carried(parse: Parse, library: Library, vocabulary: Vocabulary, probability: float) -> Parse:
     """The parse with its container put where it most likely went (:func:`uncarried`), after its last frame: the
     most probable receptacle the vocabulary holds by :attr:`TaskModel.carried` (a default: nobody said it), marked
-    inferred with the task's probability; else unchanged."""
+    inferred with the task's probability; else unchanged, and unchanged on a house's vocabulary
+    (:attr:`~seal_cli.language.grounding.Vocabulary.house`), where nobody asked for that placing."""
+    if vocabulary.house:
+        return parse
     at = uncarried(parse, library)
     model = vocabulary.task_model.carried
     if at is None or not model:

@@ -143,6 +143,7 @@ def test_a_maps_people_are_recipients_whatever_their_case(library: Library) -> N
 
     vocab = vocabulary_of_map(load_map(Path(__file__).resolve().parents[2] / "maps" / "apartment.yaml"))
     assert _recipient_or_goal("deliver the cup to anna", library, vocab) == ("recipient", "Anna", "person")
+    assert vocab.house and not Vocabulary.of(["cup"]).house       # a map's classes are a house's
 
 
 @pytest.mark.parametrize(("content", "words", "at"), [

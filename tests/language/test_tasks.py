@@ -158,6 +158,16 @@ def test_a_stack_s_container_is_put_where_it_most_likely_went(library: Library) 
     assert bare.frames[-1].elements["goal"].cls == "DiningTable"          # only what the room holds; never the pan
 
 
+def test_a_house_s_container_stays_where_the_command_puts_it(library: Library) -> None:
+    """On a map's vocabulary a command is what its speaker said, not one of ALFRED's tasks: no placing is added."""
+    from dataclasses import replace
+
+    house = replace(stacking(), house=True)
+    parse = parse_command("place a slice of tomato in a pan", library, house)
+    assert [f.frame for f in parse.frames if f.frame == "Place"] == ["Place"]
+    assert house.in_context("a pan").house and house.restricted_to(["Pan"]).house
+
+
 def test_no_container_is_carried_when_said_unsure_or_no_container(library: Library) -> None:
     said = parse_command("put the apple in the pan and put the pan on the table", library, stacking())
     assert [f.inferred for f in said.frames if f.frame == "Place"] == [None, None]     # both Places said
