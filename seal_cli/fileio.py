@@ -215,6 +215,22 @@ def yaml_problem(exc: Exception, text: str, file: str) -> SealError:
     return SealError(f"YAML error: {exc}", Where(file))
 
 
+def compose_yaml(text: str, file: str) -> Any:
+    """A YAML text's node tree (``yaml.Node``, or None for an empty text), aliases not expanded and its size
+    checked (:func:`~seal_cli.yamlnodes.check_size`); a syntax error as :func:`yaml_problem` words it. For the
+    readers that report each problem at its node (:class:`~seal_cli.yamlnodes.NodeReader`)."""
+    import yaml
+
+    from seal_cli.yamlnodes import check_size
+
+    try:
+        root = yaml.compose(text, Loader=_loader())
+    except yaml.YAMLError as exc:
+        raise yaml_problem(exc, text, file) from None
+    check_size(root, file)
+    return root
+
+
 def read_yaml(path: str | Path, max_values: int | None = None, what: str = "file") -> Any:
     """A YAML file's data; syntax errors carry the line and column, with the line and a caret.
 

@@ -231,3 +231,16 @@ def test_outputs_of_a_command_whose_interrupt_was_dropped_are_not_written(tmp_pa
     with pytest.raises(KeyboardInterrupt):
         outputs.commit()
     assert sorted(p.name for p in tmp_path.iterdir()) == []
+
+
+def test_compose_yaml_gives_nodes_and_words_a_syntax_error_at_its_line_and_column() -> None:
+    import yaml
+
+    from seal_cli.errors import SealError
+    from seal_cli.fileio import compose_yaml
+
+    assert isinstance(compose_yaml("a: [1, 2]\n", "f.yaml"), yaml.MappingNode)
+    assert compose_yaml("", "f.yaml") is None
+    with pytest.raises(SealError) as caught:
+        compose_yaml("a: 1\nb: [2\n", "f.yaml")
+    assert "YAML syntax error" in str(caught.value) and caught.value.where.line == 3

@@ -95,16 +95,12 @@ def _load(path: Path) -> list[Case]:
     import yaml
 
     from seal_cli.errors import SealErrors
-    from seal_cli.fileio import LOADER, read_text, yaml_problem
-    from seal_cli.yamlnodes import NodeReader, check_size
+    from seal_cli.fileio import compose_yaml, read_text
+    from seal_cli.yamlnodes import NodeReader
 
     text = read_text(path)
     reader = NodeReader(text, str(path))
-    try:
-        root = yaml.compose(text, Loader=LOADER)
-    except yaml.YAMLError as exc:
-        raise yaml_problem(exc, text, str(path)) from None
-    check_size(root, str(path))
+    root = compose_yaml(text, str(path))
     entries = None
     if isinstance(root, yaml.MappingNode):
         entries = next((value for key, _, value in reader.pairs(root, "the suite", ("cases",)) if key == "cases"),

@@ -16,7 +16,7 @@ from pathlib import Path
 import yaml
 
 from seal_cli.errors import SealErrors
-from seal_cli.fileio import LOADER, read_text, yaml_problem
+from seal_cli.fileio import compose_yaml, read_text
 from seal_cli.yamlnodes import NodeReader, shape
 
 __all__ = ["read_labels"]
@@ -26,10 +26,7 @@ def read_labels(path: str | Path) -> dict[str, str]:
     """Class id (as text) → class name; every problem at its line and column."""
     text = read_text(path)
     reader = NodeReader(text, str(path))
-    try:
-        root = yaml.compose(text, Loader=LOADER)
-    except yaml.YAMLError as exc:
-        raise yaml_problem(exc, text, str(path)) from None
+    root = compose_yaml(text, str(path))
     labels: dict[str, str] = {}
     if isinstance(root, yaml.SequenceNode):
         for i, node in enumerate(root.value):

@@ -33,8 +33,8 @@ from typing import Any
 import yaml
 
 from seal_cli.errors import SealError, Where
-from seal_cli.fileio import LOADER, read_text, yaml_problem
-from seal_cli.yamlnodes import check_size, clipped
+from seal_cli.fileio import compose_yaml, read_text
+from seal_cli.yamlnodes import clipped
 
 MAX_OBSERVATIONS = 100_000
 """The most poses a trajectory, or observations an observations file, may hold (one update each)."""
@@ -68,11 +68,7 @@ class _Reader:
         return SealError(message, self.where(node), source_line=self.lines[line] if line < len(self.lines) else None)
 
     def root(self) -> yaml.Node | None:
-        try:
-            root = yaml.compose(self.text, Loader=LOADER)
-        except yaml.YAMLError as exc:
-            raise yaml_problem(exc, self.text, self.file) from None
-        check_size(root, self.file)
+        root: yaml.Node | None = compose_yaml(self.text, self.file)
         return root
 
     def number(self, node: yaml.Node, what: str) -> float:
