@@ -3,7 +3,7 @@ other word (a noun or an adjective). Nothing here lists a word."""
 
 from __future__ import annotations
 
-from seal_cli.language.english import LOCATIVE, PARTICLES, PREPOSITIONS
+from seal_cli.language.english import LOCATIVE, PARTICLES, PREPOSITIONS, STATE_ADVERBS
 from seal_cli.language.morphology import (
     adverb_no_noun,
     gerund_lemma,
@@ -92,14 +92,20 @@ def _adverb_of_place(s: State, i: int) -> Match | None:
     not what ("the shelf *just* below the keys", "a cabinet *directly* under the sink"); the noun before stays
     the head ("a cleaning *supply* in the kitchen": "supply" is a noun too, the head)."""
     low = s.words[i].lower
-    if s.prev_tag() not in (Tag.WORD, Tag.NAME) or not low.isalpha() or not adverb_no_noun(low) or \
-            low in s.lexicon.things or low in CLOSED:
+    if s.prev_tag() not in (Tag.WORD, Tag.NAME) or not _of_place(low) or low in s.lexicon.things or \
+            low in CLOSED and low not in STATE_ADVERBS:
         return None
     n = match_phrase(s.words, i + 1, PREPOSITIONS) if i + 1 < len(s.words) else 0
     if not n or PREPOSITIONS[" ".join(w.lower for w in s.words[i + 1:i + 1 + n])] not in LOCATIVE or \
             not s.np_starts(i + 1 + n):
         return None
     return s.emit(i, 1, Tag.PARTICLE)
+
+
+def _of_place(low: str) -> bool:
+    """Whether a word may say how near or since when a thing is where it is: an adverb that is no noun ("just"),
+    or one of time said before a state ("*still* on the table", "*already* in the fridge")."""
+    return low in STATE_ADVERBS and low not in ("not", "all") or low.isalpha() and adverb_no_noun(low)
 
 
 def _name(s: State, i: int) -> Match | None:
@@ -178,8 +184,10 @@ ADVERB = Rule("adverb", _adverb, (
 ADVERB_OF_PLACE = Rule("adverb of place", _adverb_of_place, (
     Example("place the pen on the shelf just below the keys", "just", Tag.PARTICLE),
     Example("put the mug in the cabinet just above the sink", "just", Tag.PARTICLE),
-), lambda low: low.isalpha() and adverb_no_noun(low),
-    "a word that may be an adverb and is no noun, after a noun and before a phrase of where: how near, not the head")
+    Example("is the cup still on the coffee table?", "still", Tag.PARTICLE),
+), _of_place,
+    "a word that may be an adverb and is no noun (or 'still', 'already'), after a noun and before a phrase of where: "
+    "how near, not the head")
 NAME = Rule("name", _name, (
     Example("greet Mary Ann", "Mary Ann", Tag.NAME),
     Example("go to Emmas room", "Emmas", Tag.POSS),

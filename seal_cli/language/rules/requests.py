@@ -233,7 +233,8 @@ def _any_asked(s: State, i: int) -> Match | None:
     end = _sentence_end(s, i)
     left = [k for k in range(i + 2, end) if words[k].lower in _REMAINING and words[k - 1].lower.isalpha()]
     if not (left or _place_asked(s, i)) or any(
-            k not in left and (s.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS or
+            k not in left and (s.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS and
+                               not _progressive(s, i, k) or
                                words[k].lower in BE_WORDS or words[k].lower in (",", ";", "and", "then"))
             for k in range(i + 1, end)):
         return None                              # "any milk in the fridge *is* fine": a statement
@@ -251,13 +252,22 @@ def _place_asked(s: State, j: int) -> bool:
     for k in range(j + 1, len(words)):
         low = words[k].lower
         if low in END_MARKS or low in (",", ";", "and", "then") or s.verb_at(k) is not None and \
-                words[k - 1].lower not in NP_OPENERS:
+                words[k - 1].lower not in NP_OPENERS and not _progressive(s, j, k):
             return False                          # a verb ("the *pan*": a noun after a determiner)
         if low in _WHETHER_WHERE:
             return s.np_starts(k + 1)
         if low in _AT_HOME:                      # "is Ben home?": ending the sentence, the house is the place
             return k + 1 == len(words) or words[k + 1].lower in END_MARKS
     return False
+
+
+def _progressive(s: State, j: int, k: int) -> bool:
+    """Whether the word at ``k`` is the -ing form of a progressive said of the phrase at ``j`` after a verb of
+    being ("is someone *waiting* at the door?", "is Ben *sitting* in the kitchen?"): what the one asked of is
+    doing where they are, which no command says; the question is still whether they are there."""
+    low = s.words[k].lower
+    asked = j > 0 and s.words[j - 1].lower in BE_WORDS or k == j + 1 and s.words[j].lower in _INDEFINITES
+    return asked and gerund_lemma(low) not in (None, low) and s.words[k - 1].lower not in BE_WORDS
 
 
 ASKED = "asked"
@@ -280,8 +290,9 @@ def _state_from(s: State, k: int, end: int) -> int | None:
     """Where the state said from word ``k`` begins, when words ``k .. end`` are adverbs of degree or time
     ("still") and then one word of state ending the clause at ``end``; else None."""
     words = s.words
-    if end - 1 < k or not _is_state(s, words[end - 1].lower):
-        return None
+    if end - 1 < k or not _is_state(s, words[end - 1].lower) or \
+            words[end - 1].lower in STATE_ADVERBS:
+        return None                              # "is the cup *still* on the table": an adverb, no state of its own
     q = end - 1
     while q > k and words[q - 1].lower in STATE_ADVERBS:
         q -= 1
@@ -1154,12 +1165,14 @@ WHETHER_IS_RULE = Rule("is X somewhere", _whether_is, (
     Example("Is Ben in the kitchen?", "Is", Tag.VERB),
     Example("are the apples in the fridge?", "are", Tag.VERB),
     Example("is anyone sitting at the table?", "is", Tag.VERB),
+    Example("is someone waiting at the door?", "is", Tag.VERB),
 ), _WHETHER_IS, "'is X in Y?': find X in Y, and answer whether it is there")
 ANY_ASKED = Rule("any X somewhere, asked", _any_asked, (
     Example("anyone in the bathroom?", "anyone", Tag.PRON),
     Example("any milk left in the fridge?", "any", Tag.DET),
     Example("any biscuits left?", "any", Tag.DET),
     Example("any spoons in the drawer?", "any", Tag.DET),
+    Example("someone waiting at the door?", "someone", Tag.PRON),
 ), _ANY_ASKED, "'anyone in the bathroom?', 'any milk in the fridge?': find them there ('is there' unsaid)")
 WISHED_STATE = Rule("a wish for a thing's state", _wished_state, (
     Example("I'd like the blinds closed", "I'd like", Tag.VERB),
