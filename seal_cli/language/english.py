@@ -150,6 +150,9 @@ TITLES = frozenset(["mr", "mrs", "ms", "mx", "miss", "dr", "prof", "st", "rev", 
                     "lt", "col", "gen", "hon", "mme", "mlle", "messrs"])
 """Titles written as abbreviations before a name ("*Mr.* Patel", "*Dr.* Ahmed", "*St.* Mary's"): their full
 stop ends no sentence, it is part of the word ("Mr."), and title and name are one name ("Mr. Patel")."""
+TITLES_ONLY = frozenset(["mr", "mrs", "ms", "mx", "dr", "prof", "mme", "mlle", "messrs"])
+"""The titles that are no other word of English, so a title even in lower case ("take *mr* smith to the kitchen");
+"miss", "st" (street), "col" are words too, a title only when written capitalised."""
 FILLERS = frozenset(["um", "umm", "ummm", "uh", "uhh", "uhm", "er", "erm", "ehm", "hmm", "hm", "mm", "mmm"])
 """Hesitations ("and then, *um*, chill the juice"): no word of the command; dropped, with a comma after them."""
 FINITE = frozenset(["is", "are", "was", "were", "am", "'s", "has", "have", "had", "do", "does", "did", "can", "could",

@@ -147,6 +147,7 @@ WORDS: tuple[Rule, ...] = (
     function_words.CLOCK_TIME,
     function_words.ONE,
     function_words.THAT_SAID,
+    function_words.OUT_OF_THE_HOUSE,
     function_words.HERE,
     function_words.BACK,
     function_words.PREPOSITION,
@@ -166,6 +167,7 @@ WORDS: tuple[Rule, ...] = (
     open_words.ADVERB,
     open_words.ADVERB_OF_PLACE,
     open_words.NAME,
+    open_words.TITLE_IN_LOWER_CASE,
     open_words.LOWER_CASE_NAME,
     open_words.WORD,
 )

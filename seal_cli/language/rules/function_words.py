@@ -259,12 +259,40 @@ OF = Rule("of", _of, (Example("bring me a slice of apple", "of", Tag.OF),), froz
 DETERMINER_IN_NP = Rule("determiner inside a noun phrase", _determiner_in_np, (
     Example("bring me all the cups", "the", Tag.DET),
 ), NP_OPENERS, "a determiner or possessive after another, before a noun")
+SEEN_OUT = ("out", "exit", "toward")
+"""A person *seen out*: the word, the place it names (where a person leaves a building by), the way it is said
+(where the motion goes: a goal)."""
+
+
+_ENDING = frozenset([None, "", ".", "!", "?", ",", ";", "please", "and", "then", "now"])
+"""What may follow a word that ends its clause ("see him *out* please", "... *out* and close the door")."""
+
+
+def _seen_out(s: State, i: int) -> Match | None:
+    """"see Helen *out*", "show the guest out", "walk him out": "out" ending a clause whose verb leads a person
+    (a unit of a frame whose first element is a person), right after that person (a name, a pronoun of a person, a
+    noun the taxonomy lists as a person), is where they are led: out of the building, its exit (a goal, as "home"
+    is). A Guide with no goal would lead nowhere; the phrase is never dropped."""
+    word, (low, place, prep) = s.words[i], SEEN_OUT
+    if word.lower != low or s.verb_index < 0 or str(s.out[s.verb_index].info) not in s.lexicon.escorts or \
+            s.in_np() or s.next_lower(i) not in _ENDING:
+        return None
+    last = s.out[-1]
+    person = last.tag == Tag.NAME or last.tag == Tag.PRON and last.lower in ("him", "her", "them", "us", "me") or \
+        last.tag == Tag.WORD and last.lower in s.lexicon.people
+    return Match(1, (Word(word.text, word.start, word.end, Tag.HERE, prep, place),)) if person else None
+
+
 HERE = Rule("here and there", _here, (
     Example("bring it here", "here", Tag.HERE),
     Example("how many cups are there on the table", "there", Tag.THERE),
     Example("go to the pantry and count the cans in there", "in there", Tag.HERE),
     Example("meet alex at the station and bring him home", "home", Tag.HERE),
 ), _HERE_FIRST, "'here', 'there', 'upstairs' (a place); 'there' before or after 'is' (existential)")
+OUT_OF_THE_HOUSE = Rule("a person seen out", _seen_out, (
+    Example("see helen out", "out", Tag.HERE),
+    Example("show the guest out please", "out", Tag.HERE),
+), frozenset([SEEN_OUT[0]]), "'out' after the person a verb of leading takes, ending the clause: to the exit")
 PREPOSITION = Rule("preposition", _preposition, (
     Example("put the cup on top of the fridge", "on top of", Tag.PREP),
     Example("take the trash bag outside", "outside", Tag.HERE),

@@ -3,7 +3,7 @@ other word (a noun or an adjective). Nothing here lists a word."""
 
 from __future__ import annotations
 
-from seal_cli.language.english import LOCATIVE, PARTICLES, PREPOSITIONS, STATE_ADVERBS
+from seal_cli.language.english import LOCATIVE, PARTICLES, PREPOSITIONS, STATE_ADVERBS, TITLES_ONLY
 from seal_cli.language.morphology import (
     adverb_no_noun,
     gerund_lemma,
@@ -121,6 +121,17 @@ def _name(s: State, i: int) -> Match | None:
     return s.emit(i, 1, Tag.NAME)
 
 
+def _title_in_lower_case(s: State, i: int) -> Match | None:
+    """A title that is no other word ("mr", "dr.": :data:`~seal_cli.language.english.TITLES_ONLY`) where a noun
+    phrase starts, and a word of letters after it, are one name, as "Mr Smith" is: "take *mr smith* to the
+    kitchen" (a person taken somewhere: Guide), "greet dr. ahmed"."""
+    words, w = s.words, s.words[i]
+    if w.lower.rstrip(".") not in TITLES_ONLY or s.in_np() or s.prev_tag() == Tag.WORD or i + 1 >= len(words) or \
+            not words[i + 1].lower.isalpha() or words[i + 1].lower in CLOSED:
+        return None
+    return Match(2, (Word(s.text_of(w.start, words[i + 1].end), w.start, words[i + 1].end, Tag.NAME),))
+
+
 def _lower_case_name(s: State, i: int) -> Match | None:
     """A word neither an English dictionary nor the library's taxonomy lists, alone after "to" or "for" in a
     clause whose verb may have a recipient ("deliver the knife to *jamie*", "fetch a towel for *jo*"), or
@@ -192,6 +203,10 @@ NAME = Rule("name", _name, (
     Example("greet Mary Ann", "Mary Ann", Tag.NAME),
     Example("go to Emmas room", "Emmas", Tag.POSS),
 ), None, "a capitalised word where a noun phrase starts; two in a row are one name")
+TITLE_IN_LOWER_CASE = Rule("title in lower case", _title_in_lower_case, (
+    Example("take mr smith to the kitchen", "mr smith", Tag.NAME),
+    Example("greet dr. ahmed in the hall", "dr. ahmed", Tag.NAME),
+), lambda low: low.rstrip(".") in TITLES_ONLY, "a title that is no other word, and the word after it: one name")
 LOWER_CASE_NAME = Rule("name in lower case", _lower_case_name, (
     Example("deliver the parcel to jamie", "jamie", Tag.NAME),
     Example("give the keys to priya in the hallway", "priya", Tag.NAME),
