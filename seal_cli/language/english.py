@@ -97,6 +97,8 @@ POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "wi
                     "make sure you", "see that you", "hi", "hello", "hi there", "hello there", "hey there",
                     "excuse me", "maybe", "perhaps", "oh", "ah",
                     "could i ask you to", "can i ask you to", "may i ask you to", "might i ask you to",
+                    "could i trouble you to", "can i trouble you to", "may i trouble you to",
+                    "might i trouble you to", "could i bother you to", "can i bother you to",
                     "ahh", "aw", "ugh", "urgh", "argh", "oops", "whoops", "sorry", "well", "gosh", "so",
                     "i'd appreciate it if you", "i would appreciate it if you", "i'd really appreciate it if you",
                     "i would really appreciate it if you", "i'd appreciate it if you could",
