@@ -253,8 +253,10 @@ class Evoker:
         """"*check* the bedroom *for* my keys", "inspect the fridge for milk": a frame of examining a thing (its
         first element no person, no unit of it said with "for"), said of one place and then "for" a thing, is
         searching the place for the thing, as "search the kitchen for the spoon" is: the library's frames of
-        searching (a unit said both bare and with "for": "search", "search for") take the thing, the object
-        where it is sought. "check the oven for me" (for whom) stays as it was."""
+        searching (a unit said both bare and with "for": "search", "search for"; and a verb of this frame said
+        with "for" as this frame says it with another preposition: "look for" beside "look at") take the thing,
+        the object where it is sought. "check the oven for me" (for whom), "get a cup for cleaning" (no frame of
+        looking) stay as they were."""
         _, frame, roles, _ = best
         wanted = [x for x in clause.items if isinstance(x, PP) and x.prep == "for" and not x.lead]
         if len(clause.objects) != 1 or len(wanted) != 1 or clause.items[0] is not wanted[0] or \
@@ -262,8 +264,10 @@ class Evoker:
                 any(u.text.endswith(" for") for u in frame.lexical_units) or \
                 frame.elements and self.types.is_person(frame.elements[0].type):
             return best
+        verbs = {u.text.split()[0] for u in frame.lexical_units if len(u.text.split()) == 2}   # "look at"
         searching = [f for f in self.library.frames if f is not frame and any(
-            u.text.endswith(" for") and any(v.text == u.text[:-4] for v in f.lexical_units) for u in f.lexical_units)]
+            u.text.endswith(" for") and any(v.text == u.text[:-4] for v in f.lexical_units) for u in f.lexical_units)
+            and any(u.text.endswith(" for") and u.text[:-4] in verbs for u in f.lexical_units)]     # "look for"
         place = clause.objects[0]
         said = replace(clause, objects=[wanted[0].np], items=[PP("in", place, place.start), *clause.items[1:]])
         found = self.best_fit(searching, said)

@@ -148,8 +148,11 @@ def _lower_case_name(s: State, i: int) -> Match | None:
     vocabulary names as a person is a name wherever it is (the parser writes it capitalised for the
     tagger)."""
     w, low = s.words[i], s.words[i].lower
+    told = s.prev_tag() == Tag.VERB and str(s.out[-1].info) in s.lexicon.speech and not in_dictionary(low) and \
+        s.clause_end(i + 1) == i + 1     # "go tell *ben*": the person told, said alone (no message is a name)
     if s.verb_index < 0 or s.prev_tag() != Tag.PREP and not (
-            s.verb_index == len(s.out) - 1 and s.prev_tag() == Tag.VERB and str(s.out[-1].info) in s.lexicon.escorts):
+            s.verb_index == len(s.out) - 1 and s.prev_tag() == Tag.VERB and
+            (str(s.out[-1].info) in s.lexicon.escorts or told)):
         return None                      # "take *jordan* to the bedroom": right after a verb whose object is a person
     verb = str(s.out[s.verb_index].info)
     if s.prev_tag() == Tag.VERB and low.endswith("s"):
@@ -217,6 +220,7 @@ LOWER_CASE_NAME = Rule("name in lower case", _lower_case_name, (
     Example("deliver the cup to robin in the kitchen", "robin", Tag.NAME),
     Example("go with angel to the kitchen", "angel", Tag.NAME),
     Example("meet morgan at the door", "morgan", Tag.NAME),
+    Example("dinner's ready, go tell ben", "ben", Tag.NAME),
 ), None, "a word no dictionary lists, alone after 'to' or 'for' (a clause that may have a recipient) or "
          "'with' (one that has a goal): a name")
 WORD = Rule("open word", _word, (
