@@ -303,10 +303,12 @@ a phrase and a preposition of place (canonical, ``PREPOSITIONS``) with its phras
 OBLIGED = frozenset(["goes", "go", "belongs", "belong", "needs to go", "need to go", "should go", "has to go",
                      "have to go", "must go", "ought to go", "can go", "needs to be", "need to be", "should be",
                      "has to be", "have to be", "must be", "ought to be", "needs to be put", "need to be put",
-                     "should be put", "has to be put", "must be put", "should be left", "needs to be left"])
+                     "should be put", "has to be put", "must be put", "should be left", "needs to be left",
+                     "needs", "need", "wants", "want"])
 """"The bowl *should go* in the dishwasher", "the milk *belongs* in the fridge", "the door *should be* closed": a
 thing said to belong somewhere is putting it there (``PLACE_MEANS``, a preposition of ``WISHED_PLACES`` or
-"to"), and one said to be in a state is the verb whose result the state is ("close")."""
+"to"), and one said to be in a state is the verb whose result the state is ("close"); one that *needs* a verb's
+-ing form ("the cup needs *washing*") is that verb."""
 KNOW_WISHES = frozenset(["i'd like to know", "i would like to know", "i want to know", "i wanna know", "i need to know",
                          "i'd love to know", "i would love to know", "do you know", "i wonder", "i'm wondering",
                          "i am wondering", "i was wondering", "i'm curious", "i'm curious about", "any idea",

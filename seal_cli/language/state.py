@@ -368,8 +368,9 @@ class State:
                 first not in self.lexicon.units:
             return end                                        # "Table 4 is ready", "room 12 has no towels"
         if first.isalpha() and not capitalised(words[i]) and first not in CLOSED and first not in self.lexicon.units \
+                and not first.endswith("ever") \
                 and (nxt in _BE_STATED or nxt == "'s" and not self.possessed_at(i + 2, end)):
-            return end                                        # "dinner's ready", "lunch is served": a bare noun is
+            return end                                        # "dinner's ready", "lunch is served" (not "whatever's")
         if verb_lemma(first) == first and first not in SUBJECTS:
             return 0                                          # "Grab the cup": a command, maybe an unknown verb
         if first in BASE_FORM_SUBJECTS and nxt.isalpha() and nxt not in PREPOSITIONS:

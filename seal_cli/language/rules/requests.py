@@ -656,7 +656,7 @@ def _thing_placed(s: State, i: int) -> Match | None:
         return None                               # bare, the first word a thing too: "*load* paper onto ..." is none
     rest = range(k + 1, end)
     if any(not words[p].lower.isalpha() or words[p].lower in PREPOSITIONS or words[p].lower in ("and", "or") or
-           s.verb_at(p) is not None and words[p].lower not in s.lexicon.things and
+           words[p].lower in _NEEDS or s.verb_at(p) is not None and words[p].lower not in s.lexicon.things and
            words[p - 1].lower not in NP_OPENERS for p in rest):
         return None
     w = words[i]
@@ -762,6 +762,8 @@ _OBLIGED_SUBJECTS = frozenset(["it", "this", "these", "those", "that"])
 _SUPPOSED = frozenset(["should be", "must be", "ought to be"])
 """Said of where a thing is, these suppose ("locate the spoon? It *should be* in the dining room"), they ask no
 putting; of a state they ask it ("the door should be closed")."""
+_NEEDS = frozenset(["needs", "need", "wants", "want"])
+"""Obligations said with a verb's -ing form after them ("the cup *needs* washing", "the shirt wants ironing")."""
 _OBLIGED_WORDS = 8
 """The most words the thing's noun phrase may have before what it should do."""
 
@@ -808,6 +810,10 @@ def _obliged_unit(s: State, k: int, n: int) -> tuple[str, int | None] | None:
                     or words[j].lower in (",", "and", "then") for j in range(m + 1, end)) and \
             (PLACE_MEANS,) in s.lexicon.units.get(PLACE_MEANS, ()):
         return PLACE_MEANS, None
+    if words[k + n - 1].lower in _NEEDS:
+        lemma = gerund_lemma(words[m].lower)    # "the cup needs *washing*", "the oven needs turning off"
+        unit = " ".join([lemma, *(w.lower for w in words[m + 1:end])]) if lemma and end - m <= 2 else None
+        return (unit, m) if unit is not None and tuple(unit.split()) in s.lexicon.units.get(lemma, ()) else None
     if words[k + n - 1].lower != "be":
         return None
     q = m
@@ -1194,6 +1200,7 @@ OBLIGED_RULE = Rule("where a thing should go", _obliged, (
     Example("The milk belongs in the fridge.", "The", Tag.DET),
     Example("the strawberry jello needs to go to the pantry", "", Tag.VERB),
     Example("the front door should be closed", "closed", Tag.PARTICLE),
+    Example("the cup on the coffee table needs washing", "washing", Tag.PARTICLE),
 ), lambda low: low in NP_OPENERS or low in _OBLIGED_SUBJECTS,
     "'X should go in Y', 'X belongs in Y': put X in Y; 'X should be closed': close X")
 OBLIGED_DROPPED = Rule("the obligation after the thing", _obliged_dropped, (
