@@ -81,6 +81,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.SWITCHED_ALONE,
     requests.ANY_ASKED,
     requests.ASKED_ALONE_RULE,
+    requests.SWITCHED_BY_UNKNOWN,
     verbs.USE,
     verbs.VERB,
     statements.DISLOCATED,

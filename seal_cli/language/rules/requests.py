@@ -59,6 +59,7 @@ from seal_cli.language.english import (
 from seal_cli.language.morphology import (
     gerund_lemma,
     in_dictionary,
+    in_verb_tables,
     is_adjective,
     is_plural,
     noun_lemma,
@@ -750,6 +751,34 @@ def _state_after(s: State, i: int, n: int, stop: int | None = None) -> Match | N
                  using=False, particle=(q, unit))
 
 
+def _switched_by_unknown(s: State, i: int) -> Match | None:
+    """"*flick* the light *on* in the bedroom", "knock the telly off": a verb of English no frame lists, said in its
+    base form with a thing and "on"/"off" ending the clause (or before where the thing is), puts the thing in that
+    state as "put the kettle on" does: switching it (``SWITCHED_MEANS``), the particle split. Not of a thing the
+    split units refuse (a kind the taxonomy says cannot be switched, a part: "kick your shoes off", "pry the lid
+    off" stay unknown verbs), nor of a person ("it", "them" may be switched: "flick it on")."""
+    words, low = s.words, s.words[i].lower
+    if not low.isalpha() or low in CLOSED or s.verb_at(i) is not None or verb_lemma(low) != low or \
+            not in_verb_tables(low) or not s.np_starts(i + 1) or words[i + 1].lower in PRONOUNS and \
+            words[i + 1].lower not in ("it", "them"):
+        return None
+    stop = _clause_stop(s, i + 1)
+    q = next((q for q in range(i + 2, stop) if words[q].lower in SWITCHED_MEANS), None)
+    if q is None or words[q - 1].lower in NP_OPENERS or words[q - 1].lower in PREPOSITIONS:
+        return None
+    rest = [w.lower for w in words[q + 1:stop] if w.lower not in (",", "please", ".", "!")]
+    if rest and not (PREPOSITIONS.get(rest[0]) in LOCATED and s.np_starts(q + 2)):
+        return None                              # "knock the cup off the table": where it falls, no switching
+    unit = SWITCHED_MEANS[words[q].lower]
+    refused = frozenset().union(*(v for u, v in s.lexicon.split.items() if u.endswith(" " + words[q].lower)))
+    thing = [w.lower for w in words[i + 1:q] if w.lower not in NP_OPENERS or w.lower in ("it", "them")]
+    if not thing or any(not w.isalpha() or w in CLOSED and w not in ("it", "them") for w in thing) or \
+            noun_lemma(thing[-1]) in refused or noun_lemma(thing[-1]) in s.lexicon.people or \
+            tuple(unit.split()) not in s.lexicon.units.get(unit.split()[0], ()):
+        return None
+    return Match(1, (words[i].tagged(Tag.VERB, unit),), expect=False, verb=unit, using=False, particle=(q, unit))
+
+
 def _nouns_joined(s: State, p: int) -> bool:
     """Whether the "and" at ``p`` joins two nouns of one phrase ("the bread *and* butter warm"), not two things each
     with its state ("the blinds closed *and* the lights off": a determiner after it, a state before it)."""
@@ -1195,6 +1224,10 @@ RESULTATIVE = Rule("a thing left in a state", _resultative, (
     Example("leave the window in the bedroom shut", "shut", Tag.PARTICLE),
     Example("leave the door and window open", "open", Tag.PARTICLE),
 ), None, "'leave X open', 'get X hot': open X, heat X (a verb that puts a thing in a state, and the state)")
+SWITCHED_BY_UNKNOWN = Rule("an unknown verb of a thing and on/off", _switched_by_unknown, (
+    Example("flick the light on in the bedroom", "flick", Tag.VERB),
+    Example("knock the telly off", "knock", Tag.VERB),
+), lambda low: low.isalpha(), "'flick the light on': a verb no frame lists, a thing and 'on'/'off': switch it so")
 OBLIGED_RULE = Rule("where a thing should go", _obliged, (
     Example("the bowl should go in the dishwasher", "", Tag.VERB),
     Example("The milk belongs in the fridge.", "The", Tag.DET),
