@@ -1287,3 +1287,9 @@ def test_a_verb_named_for_a_tool_the_robot_lacks_is_refused(text: str, library: 
 def test_politeness_of_troubling(library: Library) -> None:
     assert texts("could I trouble you to put the cup in the sink", library) == [
         ("Place", {"theme": "the cup", "goal": "the sink"})]
+
+
+def test_a_verb_of_aspect_before_to_and_no_verb_fails_cleanly(library: Library) -> None:
+    # an IndexError in the rule 'keep doing' (found by test_word_salad_parses_or_fails_cleanly)
+    with pytest.raises(CommandError, match="ends too early"):
+        parse_command("start to the", library)

@@ -842,7 +842,8 @@ def _obliged_unit(s: State, k: int, n: int) -> tuple[str, int | None] | None:
     if words[k + n - 1].lower in _NEEDS:
         lemma = gerund_lemma(words[m].lower)    # "the cup needs *washing*", "the oven needs turning off"
         unit = " ".join([lemma, *(w.lower for w in words[m + 1:end])]) if lemma and end - m <= 2 else None
-        return (unit, m) if unit is not None and tuple(unit.split()) in s.lexicon.units.get(lemma, ()) else None
+        return (unit, m) if unit is not None and lemma and tuple(unit.split()) in s.lexicon.units.get(lemma, ()) \
+            else None
     if words[k + n - 1].lower != "be":
         return None
     q = m
