@@ -54,7 +54,8 @@ And (rule 11, words20) a verb named for a tool — WordNet derives from the verb
 implement (implement.n.01 and its kinds: "mow" -> "mower", "saw" -> "saw", "drill" -> "drill") — keeps a frame with an
 ``instrument`` element only when one such tool is of the instrument's type (a cutter for Slice): mowing is cutting
 with a mower, not slicing with the knife the robot holds; "mow the lawn" is refused as an unknown verb. It drops
-mow, saw, drill, lop and tap from Slice (369 -> 364 units).
+mow, saw, drill and lop from Slice (369 -> 365 units); a tool a word names only in a later sense does not count ("tap":
+first a faucet, so "tap with knife" stays a Slice).
 
 A verb whose first sense fails rule 3 may still take a frame from it by **corroboration** (rule 5):
 the synset names two verbs of the library — a lexical unit itself, and a unit or a particle verb of
@@ -374,11 +375,13 @@ class WordNet:
         return {offset: words for offset, words in lemmas.items() if implement(offset)}
 
     def tools(self, verb: str, offset: str) -> list[str]:
-        """The tools a verb's sense is named for: the artifacts WordNet derives from the verb itself in that
-        sense ("mow" -> "lawn_mower, mower"; "saw" -> "saw"), each by its lemmas."""
+        """The tools a verb's sense is named for: the implements WordNet derives from the verb itself in that
+        sense, each by its lemmas whose first sense it is, what the word mostly names ("mow" -> "lawn_mower",
+        "mower"; "saw" -> "saw"; not "tap": its first sense is a faucet, not the tool that cuts a thread)."""
         lemmas = self.lemmas[offset]
         place = lemmas.index(verb) if verb in lemmas else -1
-        return [lemma for noun in self.derived.get((offset, place), ()) for lemma in self.artifacts.get(noun, ())]
+        return [lemma for noun in self.derived.get((offset, place), ()) for lemma in self.artifacts.get(noun, ())
+                if self.noun_senses.get(lemma.replace("_", " "), (0, [""]))[1][:1] == [noun]]
 
     @staticmethod
     def _index(path: Path) -> dict[str, tuple[int, list[str]]]:
