@@ -1227,6 +1227,7 @@ def test_a_state_asked_stays_a_look(library: Library) -> None:
     ("see helen out", [("Guide", {"theme": "helen", "goal": "out"})]),
     ("see Helen out", [("Guide", {"theme": "Helen", "goal": "out"})]),
     ("show the guest out please", [("Guide", {"theme": "the guest", "goal": "out"})]),
+    ("see our guests out", [("Guide", {"theme": "our guests", "goal": "out"})]),
     ("see the guest out and then close the door", [("Guide", {"theme": "the guest", "goal": "out"}),
                                                    ("Close", {"theme": "the door"})]),
 ])

@@ -24,6 +24,7 @@ from seal_cli.language.english import (
     TIME_WORDS,
     WH_WORDS,
 )
+from seal_cli.language.morphology import noun_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import TIME_FIRST, State, first_words, match_phrase
 from seal_cli.language.tags import Tag
@@ -279,7 +280,7 @@ def _seen_out(s: State, i: int) -> Match | None:
         return None
     last = s.out[-1]
     person = last.tag == Tag.NAME or last.tag == Tag.PRON and last.lower in ("him", "her", "them", "us", "me") or \
-        last.tag == Tag.WORD and last.lower in s.lexicon.people
+        last.tag == Tag.WORD and noun_lemma(last.lower) in s.lexicon.people
     return Match(1, (Word(word.text, word.start, word.end, Tag.HERE, prep, place),)) if person else None
 
 

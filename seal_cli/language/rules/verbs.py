@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 from seal_cli.language.english import PARTICLES, PATH_ALONE, PATH_MEANS, PREPOSITIONS, TITLES
-from seal_cli.language.morphology import in_dictionary, in_verb_tables, verb_lemma
+from seal_cli.language.morphology import in_dictionary, in_verb_tables, noun_lemma, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import CLOSED, State, match_phrase, merge
 from seal_cli.language.tags import Tag
@@ -63,7 +63,7 @@ def _seen_to(s: State, i: int) -> Match | None:
         said = [w.lower for w in words[start:k]]
         named = any(capitalised(w) for w in words[start:k]) or bool(said and said[0].rstrip(".") in TITLES) or \
             len(said) == 1 and not determined and not in_dictionary(said[0])    # "see *helen* out": a name
-        if not said or not (named or said[-1] in s.lexicon.people):
+        if not said or not (named or noun_lemma(said[-1]) in s.lexicon.people):
             return None
     if k >= len(words) or words[k].lower not in afters:
         return None
