@@ -1211,6 +1211,8 @@ def test_asking_leave_to_ask_and_mind_doing_are_politeness(library: Library) -> 
     ("is anyone cooking in the kitchen?", [("Find", {"theme": "anyone", "ground": "the kitchen"})]),
     ("is the cup still on the coffee table?", [("Find", {"theme": "the cup", "ground": "the coffee table"})]),
     ("are the keys already in the car?", [("Find", {"theme": "the keys", "ground": "the car"})]),
+    ("are any of the guests waiting in the hallway?", [("Find", {"theme": "any of the guests waiting in the hallway",
+                                                                 "ground": "the hallway"})]),
 ])
 def test_whether_someone_is_somewhere_is_found_there_the_place_kept(text: str, want: list, library: Library) -> None:
     # was LookAt(theme "someone"), "at the door" dropped silently ("waiting" is a verb of the library); "still"
@@ -1228,6 +1230,8 @@ def test_a_state_asked_stays_a_look(library: Library) -> None:
     ("see Helen out", [("Guide", {"theme": "Helen", "goal": "out"})]),
     ("show the guest out please", [("Guide", {"theme": "the guest", "goal": "out"})]),
     ("see our guests out", [("Guide", {"theme": "our guests", "goal": "out"})]),
+    ("guide the lady waving in the kitchen out", [("Guide", {"theme": "the lady waving in the kitchen",
+                                                             "source": "the kitchen", "goal": "out"})]),
     ("see the guest out and then close the door", [("Guide", {"theme": "the guest", "goal": "out"}),
                                                    ("Close", {"theme": "the door"})]),
 ])

@@ -270,18 +270,31 @@ _ENDING = frozenset([None, "", ".", "!", "?", ",", ";", "please", "and", "then",
 
 
 def _seen_out(s: State, i: int) -> Match | None:
-    """"see Helen *out*", "show the guest out", "walk him out": "out" ending a clause whose verb leads a person
-    (a unit of a frame whose first element is a person), right after that person (a name, a pronoun of a person, a
-    noun the taxonomy lists as a person), is where they are led: out of the building, its exit (a goal, as "home"
-    is). A Guide with no goal would lead nowhere; the phrase is never dropped."""
+    """"see Helen *out*", "show the guest out", "walk him out", "guide the lady waving in the kitchen out": "out"
+    ending a clause whose verb leads a person (a unit of a frame whose first element is a person) whose object is
+    a person (a name, a pronoun of a person, a noun the taxonomy lists as a person) is where they are led: out of
+    the building, its exit (a goal, as "home" is). A Guide with no goal would lead nowhere; the phrase is never
+    dropped."""
     word, (low, place, prep) = s.words[i], SEEN_OUT
     if word.lower != low or s.verb_index < 0 or str(s.out[s.verb_index].info) not in s.lexicon.escorts or \
             s.in_np() or s.next_lower(i) not in _ENDING:
         return None
-    last = s.out[-1]
-    person = last.tag == Tag.NAME or last.tag == Tag.PRON and last.lower in ("him", "her", "them", "us", "me") or \
-        last.tag == Tag.WORD and noun_lemma(last.lower) in s.lexicon.people
+    led = next((w for w in s.out[s.verb_index + 1:] if w.tag in (Tag.NAME, Tag.PRON, Tag.WORD)), None)
+    person = led is not None and (led.tag == Tag.NAME or led.lower in ("him", "her", "them", "us", "me") or
+                                  led.tag == Tag.WORD and any(noun_lemma(w.lower) in s.lexicon.people
+                                                              for w in _phrase_at(s, led)))
     return Match(1, (Word(word.text, word.start, word.end, Tag.HERE, prep, place),)) if person else None
+
+
+def _phrase_at(s: State, first: Word) -> list[Word]:
+    """The open words of the noun phrase that begins with ``first`` (its adjectives and its head), up to the first
+    word of another kind: "the *old lady* waving in the kitchen"."""
+    out = s.out
+    k = next(j for j, w in enumerate(out) if w is first)
+    end = k
+    while end < len(out) and out[end].tag == Tag.WORD:
+        end += 1
+    return list(out[k:end])
 
 
 HERE = Rule("here and there", _here, (
@@ -293,6 +306,7 @@ HERE = Rule("here and there", _here, (
 OUT_OF_THE_HOUSE = Rule("a person seen out", _seen_out, (
     Example("see helen out", "out", Tag.HERE),
     Example("show the guest out please", "out", Tag.HERE),
+    Example("guide the lady waving in the kitchen out", "out", Tag.HERE),
 ), frozenset([SEEN_OUT[0]]), "'out' after the person a verb of leading takes, ending the clause: to the exit")
 PREPOSITION = Rule("preposition", _preposition, (
     Example("put the cup on top of the fridge", "on top of", Tag.PREP),

@@ -408,9 +408,10 @@ def _state_question(s: State, i: int) -> Match | None:
     """"*Is* the fridge open?", "are the windows in the bedroom shut", "is the kitchen light still on?": a
     yes/no question about a thing's state is checking the thing (``STATE_MEANS``, a unit of LookAt); the state
     is kept (``ASKED``, by :data:`STATE_ASKED`). Of an indefinite said with a place ("is *anyone* sitting at the
-    table?"), no thing to check is named: whether one is there is finding (``WHETHER_IS_RULE``)."""
+    table?", "are *any* of the guests waiting in the hallway?"), no thing to check is named: whether one is there
+    is finding (``WHETHER_IS_RULE``)."""
     if STATE_MEANS not in s.lexicon.units or _state_question_end(s, i + 1) is None or \
-            s.words[i + 1].lower in _INDEFINITES and _place_asked(s, i + 1):
+            s.words[i + 1].lower in _ANY_ASKED and _place_asked(s, i + 1):
         return None
     return Match(1, (s.words[i].tagged(Tag.VERB, STATE_MEANS),), expect=False, verb=STATE_MEANS, using=False)
 
