@@ -357,6 +357,8 @@ class WordNet:
     def _artifacts(path: Path) -> dict[str, list[str]]:
         """noun synset -> its lemmas, for the nouns of implements (noun.artifact, a kind of implement.n.01: tools,
         a knife, a mower, a saw; not a device such as a scanner, nor a garment)."""
+        if not path.is_file():
+            return {}                                      # a folder without nouns: no verb is named for a tool
         lemmas: dict[str, list[str]] = {}
         up: dict[str, list[str]] = {}
         for line in path.read_text(encoding="latin-1").splitlines():
