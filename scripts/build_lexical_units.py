@@ -50,6 +50,13 @@ of a library verb it means, through WordNet's synonyms and hypernyms, when all o
    a Clean, but "undress, disrobe" < take_off.v.02 "take away or remove" is no Pick (what comes off is the
    person's clothes, no thing the robot takes), nor "disinfect" < clean.v.01, nor "infect" < give.v.01.
 
+And (rule 11, words20) a verb named for a tool — WordNet derives from the verb itself, in that sense, a noun of an
+implement (implement.n.01 and its kinds: "mow" -> "mower", "saw" -> "saw", "drill" -> "drill") — keeps a frame with an
+``instrument`` element only when one such tool is of the instrument's type (a cutter for Slice): mowing is cutting
+with a mower, not slicing with the knife the robot holds; "mow the lawn" is refused as an unknown verb. It drops
+mow, saw, drill and lop from Slice (369 -> 365 units); a tool a word names only in a later sense does not count ("tap":
+first a faucet, so "tap with knife" stays a Slice).
+
 A verb whose first sense fails rule 3 may still take a frame from it by **corroboration** (rule 5):
 the synset names two verbs of the library — a lexical unit itself, and a unit or a particle verb of
 one ("pick out" of "pick") whose *first* sense the synset is (what that verb mostly means) — and the
@@ -271,6 +278,7 @@ class WordNet:
         self.up: dict[str, list[str]] = defaultdict(list)
         self.down: dict[str, list[str]] = defaultdict(list)
         self.opposite: dict[str, set[str]] = defaultdict(set)      # synset -> the synsets of its antonyms
+        self.derived: dict[tuple[str, int], list[str]] = defaultdict(list)  # (synset, lemma's place) -> nouns
         self.adjective_opposites = self._adjective_opposites(folder / "data.adj")
         for line in (folder / "data.verb").read_text(encoding="latin-1").splitlines():
             if line.startswith(" "):
@@ -283,7 +291,9 @@ class WordNet:
             self.lemmas[offset] = [head[4 + 2 * i].lower().replace("_", " ") for i in range(count)]
             at = 4 + 2 * count
             for j in range(int(head[at])):
-                symbol, target, pos = head[at + 1 + 4 * j: at + 4 + 4 * j]
+                symbol, target, pos, words = head[at + 1 + 4 * j: at + 5 + 4 * j]
+                if pos == "n" and symbol == "+":               # "mow" + "mower": a noun derived from the lemma
+                    self.derived[(offset, int(words[:2], 16) - 1)].append(target)
                 if pos == "v" and symbol == "@":
                     self.up[offset].append(target)
                 elif pos == "v" and symbol == "~":
@@ -291,6 +301,7 @@ class WordNet:
                 elif pos == "v" and symbol == "!":
                     self.opposite[offset].add(target)
         self.senses = self._index(folder / "index.verb")
+        self.artifacts = self._artifacts(folder / "data.noun")
         self.noun_senses = self._index(folder / "index.noun")
         self.counts: dict[tuple[str, int], int] = {}      # (verb, sense number) -> times tagged
         self.uses: dict[tuple[str, str], int] = defaultdict(int)   # (word, "v" or "n") -> times tagged
@@ -343,6 +354,38 @@ class WordNet:
         return {(words[a], words[b]) for a, b in pointers if a in words and b in words}
 
     @staticmethod
+    def _artifacts(path: Path) -> dict[str, list[str]]:
+        """noun synset -> its lemmas, for the nouns of implements (noun.artifact, a kind of implement.n.01: tools,
+        a knife, a mower, a saw; not a device such as a scanner, nor a garment)."""
+        if not path.is_file():
+            return {}                                      # a folder without nouns: no verb is named for a tool
+        lemmas: dict[str, list[str]] = {}
+        up: dict[str, list[str]] = {}
+        for line in path.read_text(encoding="latin-1").splitlines():
+            head = line.split(" ", 5)
+            if line.startswith(" ") or head[1] != ARTIFACT:
+                continue
+            words = line.partition(" | ")[0].split()
+            count = int(words[3], 16)
+            lemmas[head[0]] = [words[4 + 2 * i].lower() for i in range(count)]
+            at = 4 + 2 * count
+            up[head[0]] = [words[at + 2 + 4 * j] for j in range(int(words[at])) if words[at + 1 + 4 * j] in ("@", "@i")]
+
+        def implement(offset: str, depth: int = 0) -> bool:
+            return offset == IMPLEMENT or depth < 20 and any(implement(o, depth + 1) for o in up.get(offset, ()))
+
+        return {offset: words for offset, words in lemmas.items() if implement(offset)}
+
+    def tools(self, verb: str, offset: str) -> list[str]:
+        """The tools a verb's sense is named for: the implements WordNet derives from the verb itself in that
+        sense, each by its lemmas whose first sense it is, what the word mostly names ("mow" -> "lawn_mower",
+        "mower"; "saw" -> "saw"; not "tap": its first sense is a faucet, not the tool that cuts a thread)."""
+        lemmas = self.lemmas[offset]
+        place = lemmas.index(verb) if verb in lemmas else -1
+        return [lemma for noun in self.derived.get((offset, place), ()) for lemma in self.artifacts.get(noun, ())
+                if self.noun_senses.get(lemma.replace("_", " "), (0, [""]))[1][:1] == [noun]]
+
+    @staticmethod
     def _index(path: Path) -> dict[str, tuple[int, list[str]]]:
         """lemma -> (tagged sense count, synset offsets in WordNet's order)."""
         out = {}
@@ -369,6 +412,10 @@ def closed_class_words() -> frozenset[str]:
     return frozenset(words)
 
 
+ARTIFACT = "06"
+"""WordNet's lexicographer file of nouns of artifacts (noun.artifact: what people make, tools among them)."""
+IMPLEMENT = "03563967"
+"""implement.n.01, "instrumentality designed to be used in performing an action": tools and the like."""
 BODY = "29"
 """WordNet's lexicographer file of verbs of the body (verb.body: dressing, grooming, bodily care and functions)."""
 
@@ -409,6 +456,15 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[str, str, s
         common = set.intersection(*(set(units[v]) for v in named.values()))
         return (first[0], sorted(common), sorted(named)) if len(common) == 1 else None
 
+    def done_with(name: str, tools: list[str]) -> bool:
+        """Rule 11: a verb named for a tool ("mow": a mower; "saw", "drill") takes a frame with an instrument only
+        when one of the tools is of the instrument's type ("knife" as a verb, a cutter): "mow the lawn" is no
+        slicing with a knife, though WordNet's mow.v.01 is a way of cutting."""
+        frame = library.by_name[name]
+        instrument = next((e for e in frame.elements if e.role == "instrument"), None)
+        return instrument is None or not tools or any(
+            library.taxonomy.is_a(tool, instrument.type) is True for tool in tools)
+
     found = []
     for verb, (_, offsets) in sorted(wordnet.senses.items()):
         if verb in units or verb in closed or not verb.isalpha() or not offsets or not in_verb_tables(verb):
@@ -428,6 +484,7 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[str, str, s
             if hit is None:
                 continue
             synset, (lemma, frames) = hit
+            frames = [frame for frame in frames if done_with(frame, wordnet.tools(verb, sense))]
             how = "=" if synset == sense else "<"
             for frame in frames:
                 found.append((frame, verb, f"wordnet:{wordnet.name(verb, sense)} {how} "
@@ -522,6 +579,15 @@ def prepositional(wordnet: WordNet, library: Library, closed: frozenset[str]) ->
     ("She *hunted for* her reading glasses"): the preposition picks the sense, whichever its rank. A particle
     ("out", "away") is left out: it changes the verb's meaning ("give out"), it does not select a sense."""
     units = {unit: [f.name for f in frames] for unit, frames in library.by_unit.items()}
+    def done_with(name: str, tools: list[str]) -> bool:
+        """Rule 11: a verb named for a tool ("mow": a mower; "saw", "drill") takes a frame with an instrument only
+        when one of the tools is of the instrument's type ("knife" as a verb, a cutter): "mow the lawn" is no
+        slicing with a knife, though WordNet's mow.v.01 is a way of cutting."""
+        frame = library.by_name[name]
+        instrument = next((e for e in frame.elements if e.role == "instrument"), None)
+        return instrument is None or not tools or any(
+            library.taxonomy.is_a(tool, instrument.type) is True for tool in tools)
+
     found = []
     for verb, (_, offsets) in sorted(wordnet.senses.items()):
         if verb in units or verb in closed or not verb.isalpha() or not in_verb_tables(verb):

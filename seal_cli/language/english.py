@@ -97,6 +97,8 @@ POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "wi
                     "make sure you", "see that you", "hi", "hello", "hi there", "hello there", "hey there",
                     "excuse me", "maybe", "perhaps", "oh", "ah",
                     "could i ask you to", "can i ask you to", "may i ask you to", "might i ask you to",
+                    "could i trouble you to", "can i trouble you to", "may i trouble you to",
+                    "might i trouble you to", "could i bother you to", "can i bother you to",
                     "ahh", "aw", "ugh", "urgh", "argh", "oops", "whoops", "sorry", "well", "gosh", "so",
                     "i'd appreciate it if you", "i would appreciate it if you", "i'd really appreciate it if you",
                     "i would really appreciate it if you", "i'd appreciate it if you could",
@@ -150,6 +152,9 @@ TITLES = frozenset(["mr", "mrs", "ms", "mx", "miss", "dr", "prof", "st", "rev", 
                     "lt", "col", "gen", "hon", "mme", "mlle", "messrs"])
 """Titles written as abbreviations before a name ("*Mr.* Patel", "*Dr.* Ahmed", "*St.* Mary's"): their full
 stop ends no sentence, it is part of the word ("Mr."), and title and name are one name ("Mr. Patel")."""
+TITLES_ONLY = frozenset(["mr", "mrs", "ms", "mx", "dr", "prof", "mme", "mlle", "messrs"])
+"""The titles that are no other word of English, so a title even in lower case ("take *mr* smith to the kitchen");
+"miss", "st" (street), "col" are words too, a title only when written capitalised."""
 FILLERS = frozenset(["um", "umm", "ummm", "uh", "uhh", "uhm", "er", "erm", "ehm", "hmm", "hm", "mm", "mmm"])
 """Hesitations ("and then, *um*, chill the juice"): no word of the command; dropped, with a comma after them."""
 FINITE = frozenset(["is", "are", "was", "were", "am", "'s", "has", "have", "had", "do", "does", "did", "can", "could",
@@ -298,10 +303,12 @@ a phrase and a preposition of place (canonical, ``PREPOSITIONS``) with its phras
 OBLIGED = frozenset(["goes", "go", "belongs", "belong", "needs to go", "need to go", "should go", "has to go",
                      "have to go", "must go", "ought to go", "can go", "needs to be", "need to be", "should be",
                      "has to be", "have to be", "must be", "ought to be", "needs to be put", "need to be put",
-                     "should be put", "has to be put", "must be put", "should be left", "needs to be left"])
+                     "should be put", "has to be put", "must be put", "should be left", "needs to be left",
+                     "needs", "need", "wants", "want"])
 """"The bowl *should go* in the dishwasher", "the milk *belongs* in the fridge", "the door *should be* closed": a
 thing said to belong somewhere is putting it there (``PLACE_MEANS``, a preposition of ``WISHED_PLACES`` or
-"to"), and one said to be in a state is the verb whose result the state is ("close")."""
+"to"), and one said to be in a state is the verb whose result the state is ("close"); one that *needs* a verb's
+-ing form ("the cup needs *washing*") is that verb."""
 KNOW_WISHES = frozenset(["i'd like to know", "i would like to know", "i want to know", "i wanna know", "i need to know",
                          "i'd love to know", "i would love to know", "do you know", "i wonder", "i'm wondering",
                          "i am wondering", "i was wondering", "i'm curious", "i'm curious about", "any idea",

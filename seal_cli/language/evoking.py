@@ -78,6 +78,7 @@ class Evoker:
                                  clause)
         best = self.moved_object(best, self.types.evoked_by(unit), clause)
         best = self.escorting(self.moving(best, self.types.evoked_by(unit), clause), clause)
+        best = self.examining_for(best, clause)
         _, frame, roles, attached = self.showing(best, clause)
         self.first_into(frame, roles, attached)
         self.beside_on(frame, clause, roles, attached)
@@ -247,6 +248,33 @@ class Evoker:
         leading = [f for f in self.library.frames if f.elements and self.types.is_person(f.elements[0].type)
                    and "goal" in self.types.roles(f) and _relates_to_goal(self.types.relation(f))]
         return self.best_fit(leading, clause) or best
+
+    def examining_for(self, best: Fit, clause: Clause) -> Fit:
+        """"*check* the bedroom *for* my keys", "inspect the fridge for milk": a frame of examining a thing (its
+        first element no person, no unit of it said with "for"), said of one place and then "for" a thing, is
+        searching the place for the thing, as "search the kitchen for the spoon" is: the library's frames of
+        searching (a unit said both bare and with "for": "search", "search for"; and a verb of this frame said
+        with "for" as this frame says it with another preposition: "look for" beside "look at") take the thing,
+        the object where it is sought. "check the oven for me" (for whom), "get a cup for cleaning" (no frame of
+        looking) stay as they were."""
+        _, frame, roles, _ = best
+        wanted = [x for x in clause.items if isinstance(x, PP) and x.prep == "for" and not x.lead]
+        if len(clause.objects) != 1 or len(wanted) != 1 or clause.items[0] is not wanted[0] or \
+                self.roles.kind(wanted[0].np, None, None) == "person" or wanted[0].np.kind != "thing" or \
+                any(u.text.endswith(" for") for u in frame.lexical_units) or \
+                frame.elements and self.types.is_person(frame.elements[0].type):
+            return best
+        verbs = {u.text.split()[0] for u in frame.lexical_units if len(u.text.split()) == 2}   # "look at"
+        searching = [f for f in self.library.frames if f is not frame and any(
+            u.text.endswith(" for") and any(v.text == u.text[:-4] for v in f.lexical_units) for u in f.lexical_units)
+            and any(u.text.endswith(" for") and u.text[:-4] in verbs for u in f.lexical_units)]     # "look for"
+        place = clause.objects[0]
+        said = replace(clause, objects=[wanted[0].np], items=[PP("in", place, place.start), *clause.items[1:]])
+        found = self.best_fit(searching, said)
+        if found is None:
+            return best
+        clause.objects, clause.items = said.objects, said.items
+        return found
 
     def showing(self, best: Fit, clause: Clause) -> Fit:
         """"*show me* the remote", "show the photo to Jo": a frame that moves a person (Guide: "show" is

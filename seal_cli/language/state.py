@@ -248,6 +248,8 @@ def read_words(words: list[Word]) -> list[Word]:
                  else w for k, w in enumerate(words)]      # "turn the radio off *its* too loud"
     return words
 
+_BE_STATED = frozenset(["is", "are", "was", "were", "isn't", "aren't", "wasn't", "weren't"])
+"""Forms of "be" after a bare noun that make it a subject ("dinner *is* ready"): no command says "X is"."""
 
 class State:
     """What the tagger knows at a word of one command (see the module docstring)."""
@@ -365,6 +367,10 @@ class State:
         if nxt.isascii() and nxt.isdigit() and i + 2 < end and words[i + 2].lower in FINITE and \
                 first not in self.lexicon.units:
             return end                                        # "Table 4 is ready", "room 12 has no towels"
+        if first.isalpha() and not capitalised(words[i]) and first not in CLOSED and first not in self.lexicon.units \
+                and not first.endswith("ever") \
+                and (nxt in _BE_STATED or nxt == "'s" and not self.possessed_at(i + 2, end)):
+            return end                                        # "dinner's ready", "lunch is served" (not "whatever's")
         if verb_lemma(first) == first and first not in SUBJECTS:
             return 0                                          # "Grab the cup": a command, maybe an unknown verb
         if first in BASE_FORM_SUBJECTS and nxt.isalpha() and nxt not in PREPOSITIONS:

@@ -13,7 +13,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from seal_cli.errors import SealError, Where
-from seal_cli.language.english import DETERMINERS, SPELLINGS, TITLES
+from seal_cli.language.english import DETERMINERS, SPELLINGS, TITLES, TITLES_ONLY
 
 __all__ = ["MAX_LENGTH", "CommandError", "Word", "capitalised", "printable", "tokenize"]
 
@@ -112,7 +112,8 @@ def tokenize(text: str) -> list[Word]:
         if kind == "word":
             words.append(Word(match.group(), start, pos))
         elif kind == "punct" and match.group() == "." and words and words[-1].end == start and \
-                words[-1].lower in TITLES and capitalised(words[-1]) and _title_before_name(text, pos) and \
+                words[-1].lower in TITLES and (capitalised(words[-1]) or words[-1].lower in TITLES_ONLY) and \
+                _title_before_name(text, pos, capitalised(words[-1])) and \
                 (len(words) < 2 or words[-2].lower not in DETERMINERS):     # "the Dr. Then ..." ends a sentence
             title = words[-1]
             words[-1] = Word(text[title.start:pos], title.start, pos)    # "Mr. Patel": the stop is the title's
@@ -129,10 +130,11 @@ def tokenize(text: str) -> list[Word]:
     return words
 
 
-def _title_before_name(text: str, pos: int) -> bool:
-    """Whether a capitalised word follows the title's stop at ``pos`` ("Mr. *Patel*"), not the end of the text."""
+def _title_before_name(text: str, pos: int, written: bool = True) -> bool:
+    """Whether a capitalised word follows the title's stop at ``pos`` ("Mr. *Patel*"), not the end of the text; after
+    a title in lower case (``written`` False: "mr. smith"), a word in lower case too."""
     after = _NAME_AFTER.match(text, pos)
-    return after is not None and text[after.end() - 1].isupper()
+    return after is not None and (text[after.end() - 1].isupper() or not written)
 
 
 def capitalised(word: Word) -> bool:

@@ -467,7 +467,7 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
         return None
     kinds = ("room", "place", "person") if category == "thing" else ("room", "place")
     try:
-        found = names.ground(phrase.text, category, kinds)
+        found = names.ground(_place_words(phrase), category, kinds)
     except SealError as wrong:
         raise _located(wrong.message, phrase, text) from None
     if found is not None:
@@ -477,12 +477,12 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
     cls = phrase.cls
     fixed = cls is not None and (_names(phrase, cls, things) if carried else _may_be_fixed(phrase, cls, things))
     said = cls if fixed else None
-    refused = None if asked else names.refusal(phrase.text, said)
+    refused = None if asked else names.refusal(_place_words(phrase), said)
     if refused is not None:
         raise _located(refused.message, phrase, text)
     if gone_to and not asked and not where_words(phrase.text) and _unheard_of(phrase, things):
         m = things.map
-        what = " ".join(words_of(phrase.text)) or phrase.head
+        what = " ".join(words_of(_place_words(phrase))) or phrase.head
         raise _located(f"the {m.name} has no {what} (no room, place or person of the map is called so, and "
                        f"no kind of thing it knows of); its rooms are {', '.join(m.room_names) or 'none'}",
                        phrase, text)
@@ -1056,3 +1056,11 @@ def parse_to_plan(text: str, library: Library, vocabulary: Any = None) -> Parse:
 
     return told_first(parse_command(spoken(text), library, vocabulary),
                       lambda said: parse_command(said, library, vocabulary))
+
+
+def _place_words(phrase: Phrase) -> str:
+    """The words a phrase names its place by: its text, or its head when a word said names a place by another
+    name (the parser's "see Helen *out*": the exit)."""
+    if phrase.kind == "place" and phrase.head and phrase.text and phrase.head.lower() not in phrase.text.lower():
+        return phrase.head
+    return phrase.text or ""

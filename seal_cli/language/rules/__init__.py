@@ -81,6 +81,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.SWITCHED_ALONE,
     requests.ANY_ASKED,
     requests.ASKED_ALONE_RULE,
+    requests.SWITCHED_BY_UNKNOWN,
     verbs.USE,
     verbs.VERB,
     statements.DISLOCATED,
@@ -147,6 +148,7 @@ WORDS: tuple[Rule, ...] = (
     function_words.CLOCK_TIME,
     function_words.ONE,
     function_words.THAT_SAID,
+    function_words.OUT_OF_THE_HOUSE,
     function_words.HERE,
     function_words.BACK,
     function_words.PREPOSITION,
@@ -166,6 +168,7 @@ WORDS: tuple[Rule, ...] = (
     open_words.ADVERB,
     open_words.ADVERB_OF_PLACE,
     open_words.NAME,
+    open_words.TITLE_IN_LOWER_CASE,
     open_words.LOWER_CASE_NAME,
     open_words.WORD,
 )

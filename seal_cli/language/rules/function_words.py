@@ -24,6 +24,7 @@ from seal_cli.language.english import (
     TIME_WORDS,
     WH_WORDS,
 )
+from seal_cli.language.morphology import noun_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import TIME_FIRST, State, first_words, match_phrase
 from seal_cli.language.tags import Tag
@@ -259,12 +260,54 @@ OF = Rule("of", _of, (Example("bring me a slice of apple", "of", Tag.OF),), froz
 DETERMINER_IN_NP = Rule("determiner inside a noun phrase", _determiner_in_np, (
     Example("bring me all the cups", "the", Tag.DET),
 ), NP_OPENERS, "a determiner or possessive after another, before a noun")
+SEEN_OUT = ("out", "exit", "toward")
+"""A person *seen out*: the word, the place it names (where a person leaves a building by), the way it is said
+(where the motion goes: a goal)."""
+
+
+_ENDING = frozenset([None, "", ".", "!", "?", ",", ";", "please", "and", "then", "now"])
+"""What may follow a word that ends its clause ("see him *out* please", "... *out* and close the door")."""
+
+
+def _seen_out(s: State, i: int) -> Match | None:
+    """"see Helen *out*", "show the guest out", "walk him out", "guide the lady waving in the kitchen out": "out"
+    ending a clause whose verb leads a person (a unit of a frame whose first element is a person) whose object is
+    a person (a name, a pronoun of a person, a noun the taxonomy lists as a person) is where they are led: out of
+    the building, its exit (a goal, as "home" is). A Guide with no goal would lead nowhere; the phrase is never
+    dropped."""
+    word, (low, place, prep) = s.words[i], SEEN_OUT
+    if word.lower != low or s.verb_index < 0 or str(s.out[s.verb_index].info) not in s.lexicon.escorts or \
+            s.in_np() or s.next_lower(i) not in _ENDING:
+        return None
+    led = next((w for w in s.out[s.verb_index + 1:] if w.tag in (Tag.NAME, Tag.PRON, Tag.WORD)), None)
+    person = led is not None and (led.tag == Tag.NAME or led.lower in ("him", "her", "them", "us", "me") or
+                                  led.tag == Tag.WORD and any(noun_lemma(w.lower) in s.lexicon.people
+                                                              for w in _phrase_at(s, led)))
+    return Match(1, (Word(word.text, word.start, word.end, Tag.HERE, prep, place),)) if person else None
+
+
+def _phrase_at(s: State, first: Word) -> list[Word]:
+    """The open words of the noun phrase that begins with ``first`` (its adjectives and its head), up to the first
+    word of another kind: "the *old lady* waving in the kitchen"."""
+    out = s.out
+    k = next(j for j, w in enumerate(out) if w is first)
+    end = k
+    while end < len(out) and out[end].tag == Tag.WORD:
+        end += 1
+    return list(out[k:end])
+
+
 HERE = Rule("here and there", _here, (
     Example("bring it here", "here", Tag.HERE),
     Example("how many cups are there on the table", "there", Tag.THERE),
     Example("go to the pantry and count the cans in there", "in there", Tag.HERE),
     Example("meet alex at the station and bring him home", "home", Tag.HERE),
 ), _HERE_FIRST, "'here', 'there', 'upstairs' (a place); 'there' before or after 'is' (existential)")
+OUT_OF_THE_HOUSE = Rule("a person seen out", _seen_out, (
+    Example("see helen out", "out", Tag.HERE),
+    Example("show the guest out please", "out", Tag.HERE),
+    Example("guide the lady waving in the kitchen out", "out", Tag.HERE),
+), frozenset([SEEN_OUT[0]]), "'out' after the person a verb of leading takes, ending the clause: to the exit")
 PREPOSITION = Rule("preposition", _preposition, (
     Example("put the cup on top of the fridge", "on top of", Tag.PREP),
     Example("take the trash bag outside", "outside", Tag.HERE),

@@ -174,7 +174,7 @@ def _aspect(s: State, i: int) -> Match | None:
     if j < len(words) and gerund_lemma(words[j].lower) and s.verb_at(j):
         return s.emit(i, j - i, Tag.POLITE)
     if j + 1 < len(words) and words[j].lower == "to" and low not in ("keep", "mind") and \
-            words[j + 1].lower == (s.verb_at(j + 1) or ("",))[0].split()[0]:
+            words[j + 1].lower == ((s.verb_at(j + 1) or ("",))[0].split() or [""])[0]:   # "start to the": none
         return s.emit(i, j + 1 - i, Tag.POLITE)                   # "continue to follow her": base form only
     return None
 

@@ -3,7 +3,7 @@ other word (a noun or an adjective). Nothing here lists a word."""
 
 from __future__ import annotations
 
-from seal_cli.language.english import LOCATIVE, PARTICLES, PREPOSITIONS
+from seal_cli.language.english import LOCATIVE, PARTICLES, PREPOSITIONS, STATE_ADVERBS, TITLES_ONLY
 from seal_cli.language.morphology import (
     adverb_no_noun,
     gerund_lemma,
@@ -92,14 +92,20 @@ def _adverb_of_place(s: State, i: int) -> Match | None:
     not what ("the shelf *just* below the keys", "a cabinet *directly* under the sink"); the noun before stays
     the head ("a cleaning *supply* in the kitchen": "supply" is a noun too, the head)."""
     low = s.words[i].lower
-    if s.prev_tag() not in (Tag.WORD, Tag.NAME) or not low.isalpha() or not adverb_no_noun(low) or \
-            low in s.lexicon.things or low in CLOSED:
+    if s.prev_tag() not in (Tag.WORD, Tag.NAME) or not _of_place(low) or low in s.lexicon.things or \
+            low in CLOSED and low not in STATE_ADVERBS:
         return None
     n = match_phrase(s.words, i + 1, PREPOSITIONS) if i + 1 < len(s.words) else 0
     if not n or PREPOSITIONS[" ".join(w.lower for w in s.words[i + 1:i + 1 + n])] not in LOCATIVE or \
             not s.np_starts(i + 1 + n):
         return None
     return s.emit(i, 1, Tag.PARTICLE)
+
+
+def _of_place(low: str) -> bool:
+    """Whether a word may say how near or since when a thing is where it is: an adverb that is no noun ("just"),
+    or one of time said before a state ("*still* on the table", "*already* in the fridge")."""
+    return low in STATE_ADVERBS and low not in ("not", "all") or low.isalpha() and adverb_no_noun(low)
 
 
 def _name(s: State, i: int) -> Match | None:
@@ -113,6 +119,17 @@ def _name(s: State, i: int) -> Match | None:
         last = s.out[-1]
         return Match(1, last=Word(s.text_of(last.start, w.end), last.start, w.end, Tag.NAME))
     return s.emit(i, 1, Tag.NAME)
+
+
+def _title_in_lower_case(s: State, i: int) -> Match | None:
+    """A title that is no other word ("mr", "dr.": :data:`~seal_cli.language.english.TITLES_ONLY`) where a noun
+    phrase starts, and a word of letters after it, are one name, as "Mr Smith" is: "take *mr smith* to the
+    kitchen" (a person taken somewhere: Guide), "greet dr. ahmed"."""
+    words, w = s.words, s.words[i]
+    if w.lower.rstrip(".") not in TITLES_ONLY or s.in_np() or s.prev_tag() == Tag.WORD or i + 1 >= len(words) or \
+            not words[i + 1].lower.isalpha() or words[i + 1].lower in CLOSED:
+        return None
+    return Match(2, (Word(s.text_of(w.start, words[i + 1].end), w.start, words[i + 1].end, Tag.NAME),))
 
 
 def _lower_case_name(s: State, i: int) -> Match | None:
@@ -131,8 +148,11 @@ def _lower_case_name(s: State, i: int) -> Match | None:
     vocabulary names as a person is a name wherever it is (the parser writes it capitalised for the
     tagger)."""
     w, low = s.words[i], s.words[i].lower
+    told = s.prev_tag() == Tag.VERB and str(s.out[-1].info) in s.lexicon.speech and not in_dictionary(low) and \
+        s.clause_end(i + 1) == i + 1     # "go tell *ben*": the person told, said alone (no message is a name)
     if s.verb_index < 0 or s.prev_tag() != Tag.PREP and not (
-            s.verb_index == len(s.out) - 1 and s.prev_tag() == Tag.VERB and str(s.out[-1].info) in s.lexicon.escorts):
+            s.verb_index == len(s.out) - 1 and s.prev_tag() == Tag.VERB and
+            (str(s.out[-1].info) in s.lexicon.escorts or told)):
         return None                      # "take *jordan* to the bedroom": right after a verb whose object is a person
     verb = str(s.out[s.verb_index].info)
     if s.prev_tag() == Tag.VERB and low.endswith("s"):
@@ -178,12 +198,18 @@ ADVERB = Rule("adverb", _adverb, (
 ADVERB_OF_PLACE = Rule("adverb of place", _adverb_of_place, (
     Example("place the pen on the shelf just below the keys", "just", Tag.PARTICLE),
     Example("put the mug in the cabinet just above the sink", "just", Tag.PARTICLE),
-), lambda low: low.isalpha() and adverb_no_noun(low),
-    "a word that may be an adverb and is no noun, after a noun and before a phrase of where: how near, not the head")
+    Example("is the cup still on the coffee table?", "still", Tag.PARTICLE),
+), _of_place,
+    "a word that may be an adverb and is no noun (or 'still', 'already'), after a noun and before a phrase of where: "
+    "how near, not the head")
 NAME = Rule("name", _name, (
     Example("greet Mary Ann", "Mary Ann", Tag.NAME),
     Example("go to Emmas room", "Emmas", Tag.POSS),
 ), None, "a capitalised word where a noun phrase starts; two in a row are one name")
+TITLE_IN_LOWER_CASE = Rule("title in lower case", _title_in_lower_case, (
+    Example("take mr smith to the kitchen", "mr smith", Tag.NAME),
+    Example("greet dr. ahmed in the hall", "dr. ahmed", Tag.NAME),
+), lambda low: low.rstrip(".") in TITLES_ONLY, "a title that is no other word, and the word after it: one name")
 LOWER_CASE_NAME = Rule("name in lower case", _lower_case_name, (
     Example("deliver the parcel to jamie", "jamie", Tag.NAME),
     Example("give the keys to priya in the hallway", "priya", Tag.NAME),
@@ -194,6 +220,7 @@ LOWER_CASE_NAME = Rule("name in lower case", _lower_case_name, (
     Example("deliver the cup to robin in the kitchen", "robin", Tag.NAME),
     Example("go with angel to the kitchen", "angel", Tag.NAME),
     Example("meet morgan at the door", "morgan", Tag.NAME),
+    Example("dinner's ready, go tell ben", "ben", Tag.NAME),
 ), None, "a word no dictionary lists, alone after 'to' or 'for' (a clause that may have a recipient) or "
          "'with' (one that has a goal): a name")
 WORD = Rule("open word", _word, (

@@ -59,6 +59,7 @@ from seal_cli.language.english import (
 from seal_cli.language.morphology import (
     gerund_lemma,
     in_dictionary,
+    in_verb_tables,
     is_adjective,
     is_plural,
     noun_lemma,
@@ -233,7 +234,8 @@ def _any_asked(s: State, i: int) -> Match | None:
     end = _sentence_end(s, i)
     left = [k for k in range(i + 2, end) if words[k].lower in _REMAINING and words[k - 1].lower.isalpha()]
     if not (left or _place_asked(s, i)) or any(
-            k not in left and (s.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS or
+            k not in left and (s.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS and
+                               not _progressive(s, i, k) or
                                words[k].lower in BE_WORDS or words[k].lower in (",", ";", "and", "then"))
             for k in range(i + 1, end)):
         return None                              # "any milk in the fridge *is* fine": a statement
@@ -251,13 +253,22 @@ def _place_asked(s: State, j: int) -> bool:
     for k in range(j + 1, len(words)):
         low = words[k].lower
         if low in END_MARKS or low in (",", ";", "and", "then") or s.verb_at(k) is not None and \
-                words[k - 1].lower not in NP_OPENERS:
+                words[k - 1].lower not in NP_OPENERS and not _progressive(s, j, k):
             return False                          # a verb ("the *pan*": a noun after a determiner)
         if low in _WHETHER_WHERE:
             return s.np_starts(k + 1)
         if low in _AT_HOME:                      # "is Ben home?": ending the sentence, the house is the place
             return k + 1 == len(words) or words[k + 1].lower in END_MARKS
     return False
+
+
+def _progressive(s: State, j: int, k: int) -> bool:
+    """Whether the word at ``k`` is the -ing form of a progressive said of the phrase at ``j`` after a verb of
+    being ("is someone *waiting* at the door?", "is Ben *sitting* in the kitchen?"): what the one asked of is
+    doing where they are, which no command says; the question is still whether they are there."""
+    low = s.words[k].lower
+    asked = j > 0 and s.words[j - 1].lower in BE_WORDS or k == j + 1 and s.words[j].lower in _INDEFINITES
+    return asked and gerund_lemma(low) not in (None, low) and s.words[k - 1].lower not in BE_WORDS
 
 
 ASKED = "asked"
@@ -280,8 +291,9 @@ def _state_from(s: State, k: int, end: int) -> int | None:
     """Where the state said from word ``k`` begins, when words ``k .. end`` are adverbs of degree or time
     ("still") and then one word of state ending the clause at ``end``; else None."""
     words = s.words
-    if end - 1 < k or not _is_state(s, words[end - 1].lower):
-        return None
+    if end - 1 < k or not _is_state(s, words[end - 1].lower) or \
+            words[end - 1].lower in STATE_ADVERBS:
+        return None                              # "is the cup *still* on the table": an adverb, no state of its own
     q = end - 1
     while q > k and words[q - 1].lower in STATE_ADVERBS:
         q -= 1
@@ -396,9 +408,10 @@ def _state_question(s: State, i: int) -> Match | None:
     """"*Is* the fridge open?", "are the windows in the bedroom shut", "is the kitchen light still on?": a
     yes/no question about a thing's state is checking the thing (``STATE_MEANS``, a unit of LookAt); the state
     is kept (``ASKED``, by :data:`STATE_ASKED`). Of an indefinite said with a place ("is *anyone* sitting at the
-    table?"), no thing to check is named: whether one is there is finding (``WHETHER_IS_RULE``)."""
+    table?", "are *any* of the guests waiting in the hallway?"), no thing to check is named: whether one is there
+    is finding (``WHETHER_IS_RULE``)."""
     if STATE_MEANS not in s.lexicon.units or _state_question_end(s, i + 1) is None or \
-            s.words[i + 1].lower in _INDEFINITES and _place_asked(s, i + 1):
+            s.words[i + 1].lower in _ANY_ASKED and _place_asked(s, i + 1):
         return None
     return Match(1, (s.words[i].tagged(Tag.VERB, STATE_MEANS),), expect=False, verb=STATE_MEANS, using=False)
 
@@ -645,7 +658,7 @@ def _thing_placed(s: State, i: int) -> Match | None:
         return None                               # bare, the first word a thing too: "*load* paper onto ..." is none
     rest = range(k + 1, end)
     if any(not words[p].lower.isalpha() or words[p].lower in PREPOSITIONS or words[p].lower in ("and", "or") or
-           s.verb_at(p) is not None and words[p].lower not in s.lexicon.things and
+           words[p].lower in _NEEDS or s.verb_at(p) is not None and words[p].lower not in s.lexicon.things and
            words[p - 1].lower not in NP_OPENERS for p in rest):
         return None
     w = words[i]
@@ -739,6 +752,34 @@ def _state_after(s: State, i: int, n: int, stop: int | None = None) -> Match | N
                  using=False, particle=(q, unit))
 
 
+def _switched_by_unknown(s: State, i: int) -> Match | None:
+    """"*flick* the light *on* in the bedroom", "knock the telly off": a verb of English no frame lists, said in its
+    base form with a thing and "on"/"off" ending the clause (or before where the thing is), puts the thing in that
+    state as "put the kettle on" does: switching it (``SWITCHED_MEANS``), the particle split. Not of a thing the
+    split units refuse (a kind the taxonomy says cannot be switched, a part: "kick your shoes off", "pry the lid
+    off" stay unknown verbs), nor of a person ("it", "them" may be switched: "flick it on")."""
+    words, low = s.words, s.words[i].lower
+    if not low.isalpha() or low in CLOSED or s.verb_at(i) is not None or verb_lemma(low) != low or \
+            not in_verb_tables(low) or not s.np_starts(i + 1) or words[i + 1].lower in PRONOUNS and \
+            words[i + 1].lower not in ("it", "them"):
+        return None
+    stop = _clause_stop(s, i + 1)
+    q = next((q for q in range(i + 2, stop) if words[q].lower in SWITCHED_MEANS), None)
+    if q is None or words[q - 1].lower in NP_OPENERS or words[q - 1].lower in PREPOSITIONS:
+        return None
+    rest = [w.lower for w in words[q + 1:stop] if w.lower not in (",", "please", ".", "!")]
+    if rest and not (PREPOSITIONS.get(rest[0]) in LOCATED and s.np_starts(q + 2)):
+        return None                              # "knock the cup off the table": where it falls, no switching
+    unit = SWITCHED_MEANS[words[q].lower]
+    refused = frozenset().union(*(v for u, v in s.lexicon.split.items() if u.endswith(" " + words[q].lower)))
+    thing = [w.lower for w in words[i + 1:q] if w.lower not in NP_OPENERS or w.lower in ("it", "them")]
+    if not thing or any(not w.isalpha() or w in CLOSED and w not in ("it", "them") for w in thing) or \
+            noun_lemma(thing[-1]) in refused or noun_lemma(thing[-1]) in s.lexicon.people or \
+            tuple(unit.split()) not in s.lexicon.units.get(unit.split()[0], ()):
+        return None
+    return Match(1, (words[i].tagged(Tag.VERB, unit),), expect=False, verb=unit, using=False, particle=(q, unit))
+
+
 def _nouns_joined(s: State, p: int) -> bool:
     """Whether the "and" at ``p`` joins two nouns of one phrase ("the bread *and* butter warm"), not two things each
     with its state ("the blinds closed *and* the lights off": a determiner after it, a state before it)."""
@@ -751,6 +792,8 @@ _OBLIGED_SUBJECTS = frozenset(["it", "this", "these", "those", "that"])
 _SUPPOSED = frozenset(["should be", "must be", "ought to be"])
 """Said of where a thing is, these suppose ("locate the spoon? It *should be* in the dining room"), they ask no
 putting; of a state they ask it ("the door should be closed")."""
+_NEEDS = frozenset(["needs", "need", "wants", "want"])
+"""Obligations said with a verb's -ing form after them ("the cup *needs* washing", "the shirt wants ironing")."""
 _OBLIGED_WORDS = 8
 """The most words the thing's noun phrase may have before what it should do."""
 
@@ -797,6 +840,11 @@ def _obliged_unit(s: State, k: int, n: int) -> tuple[str, int | None] | None:
                     or words[j].lower in (",", "and", "then") for j in range(m + 1, end)) and \
             (PLACE_MEANS,) in s.lexicon.units.get(PLACE_MEANS, ()):
         return PLACE_MEANS, None
+    if words[k + n - 1].lower in _NEEDS:
+        lemma = gerund_lemma(words[m].lower)    # "the cup needs *washing*", "the oven needs turning off"
+        unit = " ".join([lemma, *(w.lower for w in words[m + 1:end])]) if lemma and end - m <= 2 else None
+        return (unit, m) if unit is not None and lemma and tuple(unit.split()) in s.lexicon.units.get(lemma, ()) \
+            else None
     if words[k + n - 1].lower != "be":
         return None
     q = m
@@ -1154,12 +1202,14 @@ WHETHER_IS_RULE = Rule("is X somewhere", _whether_is, (
     Example("Is Ben in the kitchen?", "Is", Tag.VERB),
     Example("are the apples in the fridge?", "are", Tag.VERB),
     Example("is anyone sitting at the table?", "is", Tag.VERB),
+    Example("is someone waiting at the door?", "is", Tag.VERB),
 ), _WHETHER_IS, "'is X in Y?': find X in Y, and answer whether it is there")
 ANY_ASKED = Rule("any X somewhere, asked", _any_asked, (
     Example("anyone in the bathroom?", "anyone", Tag.PRON),
     Example("any milk left in the fridge?", "any", Tag.DET),
     Example("any biscuits left?", "any", Tag.DET),
     Example("any spoons in the drawer?", "any", Tag.DET),
+    Example("someone waiting at the door?", "someone", Tag.PRON),
 ), _ANY_ASKED, "'anyone in the bathroom?', 'any milk in the fridge?': find them there ('is there' unsaid)")
 WISHED_STATE = Rule("a wish for a thing's state", _wished_state, (
     Example("I'd like the blinds closed", "I'd like", Tag.VERB),
@@ -1176,11 +1226,16 @@ RESULTATIVE = Rule("a thing left in a state", _resultative, (
     Example("leave the window in the bedroom shut", "shut", Tag.PARTICLE),
     Example("leave the door and window open", "open", Tag.PARTICLE),
 ), None, "'leave X open', 'get X hot': open X, heat X (a verb that puts a thing in a state, and the state)")
+SWITCHED_BY_UNKNOWN = Rule("an unknown verb of a thing and on/off", _switched_by_unknown, (
+    Example("flick the light on in the bedroom", "flick", Tag.VERB),
+    Example("knock the telly off", "knock", Tag.VERB),
+), lambda low: low.isalpha(), "'flick the light on': a verb no frame lists, a thing and 'on'/'off': switch it so")
 OBLIGED_RULE = Rule("where a thing should go", _obliged, (
     Example("the bowl should go in the dishwasher", "", Tag.VERB),
     Example("The milk belongs in the fridge.", "The", Tag.DET),
     Example("the strawberry jello needs to go to the pantry", "", Tag.VERB),
     Example("the front door should be closed", "closed", Tag.PARTICLE),
+    Example("the cup on the coffee table needs washing", "washing", Tag.PARTICLE),
 ), lambda low: low in NP_OPENERS or low in _OBLIGED_SUBJECTS,
     "'X should go in Y', 'X belongs in Y': put X in Y; 'X should be closed': close X")
 OBLIGED_DROPPED = Rule("the obligation after the thing", _obliged_dropped, (

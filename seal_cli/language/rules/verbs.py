@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 from seal_cli.language.english import PARTICLES, PATH_ALONE, PATH_MEANS, PREPOSITIONS, TITLES
-from seal_cli.language.morphology import in_verb_tables, verb_lemma
+from seal_cli.language.morphology import in_dictionary, in_verb_tables, noun_lemma, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import CLOSED, State, match_phrase, merge
 from seal_cli.language.tags import Tag
@@ -54,14 +54,16 @@ def _seen_to(s: State, i: int) -> Match | None:
     if words[k].lower in ("him", "her", "them", "us", "me"):
         k += 1
     else:
-        k += words[k].lower in ("the", "our", "my", "your", "a", "this", "that")
+        determined = words[k].lower in ("the", "our", "my", "your", "a", "this", "that")
+        k += determined
         start = k
-        while k < min(len(words), start + _TITLE_WORDS) and words[k].lower.isalpha() and \
+        while k < min(len(words), start + _TITLE_WORDS) and words[k].lower.rstrip(".").isalpha() and \
                 words[k].lower not in afters and words[k].lower not in CLOSED:
             k += 1
         said = [w.lower for w in words[start:k]]
-        named = any(capitalised(w) for w in words[start:k]) or bool(said and said[0] in TITLES)
-        if not said or not (named or said[-1] in s.lexicon.people):
+        named = any(capitalised(w) for w in words[start:k]) or bool(said and said[0].rstrip(".") in TITLES) or \
+            len(said) == 1 and not determined and not in_dictionary(said[0])    # "see *helen* out": a name
+        if not said or not (named or noun_lemma(said[-1]) in s.lexicon.people):
             return None
     if k >= len(words) or words[k].lower not in afters:
         return None
@@ -128,6 +130,8 @@ SEEN_TO_RULE = Rule("see someone to a place", _seen_to, (
     Example("see mr jones to the front door", "see", Tag.VERB),
     Example("please see the guest out", "see", Tag.VERB),
     Example("see her to the exit", "see", Tag.VERB),
+    Example("see helen out", "see", Tag.VERB),
+    Example("see mr. jones to the door", "see", Tag.VERB),
 ), frozenset([SEEN_TO[0]]), "'see X to Y', 'see X out': escort X (Guide), a person said after 'see'")
 TELL_TO = Rule("told to", _tell_to, (
     Example("tell Maria to come downstairs", "to", Tag.WH),
