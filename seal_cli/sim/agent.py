@@ -742,16 +742,43 @@ class Agent:
                 continue
             closed = [k for k in self.known.values() if not k.movable and k.openable and k.id not in self.opened
                       and k.id not in self.unreachable and not self.world.items[k.id].is_open
-                      and bool(room.contains([k.at])[0])]
-            place = self.nearest(closed) if closed else None
+                      and bool(room.contains([k.at])[0]) and self.may_hold(k, value)]
+            named = [k for k in closed if self.prior_names(k, value)]
+            place = self.nearest(named or closed) if closed else None
             if place is None:
                 seen = " (it sees all of it from where it is)" if len(self.looks) == start else ""
+                shut = sorted(k.id for k in self.known.values() if not k.movable and k.openable
+                              and k.id not in self.opened and not self.world.items[k.id].is_open
+                              and bool(room.contains([k.at])[0]) and not self.may_hold(k, value))
+                if shut:    # appliances it did not open: the search goes on, and may yet look into them
+                    kind = spoken(self.class_of(value))
+                    return Fatal(False, f"no {self.said(value)} in sight in the {room.name.replace('_', ' ')}, where "
+                                 f"the command said it was ({', '.join(shut)} left shut: the map keeps no {kind} "
+                                 f"there){seen}; searches on", Reason.NOT_FOUND, value)
                 return Fatal(False, f"no {self.said(value)} in the {room.name.replace('_', ' ')}, where the command "
-                             f"said it was{seen}", Reason.NOT_FOUND, value)
+                             f"said it was{seen}; looks elsewhere", Reason.NOT_FOUND, value)
             self.look_into(place, value, binding, role, f"goes to {place}")
             if place not in self.opened:  # out of reach, or it would not open: not tried again
                 self.unreachable.add(place)
         return None
+
+    def prior_names(self, place: Known, value: str) -> bool:
+        """Whether the map's prior of the thing's class names this place or its class ("milk: {fridge: 0.9}")."""
+        from seal_cli.planning.keeping import Spot, prior_of, tier
+
+        prior = prior_of(self.scene.map.priors, self.class_of(value))
+        return tier(self.library.taxonomy, prior, Spot(place.id, place.cls, None, place.at)) == 0
+
+    def may_hold(self, place: Known, value: str) -> bool:
+        """Whether a room said as where a thing is makes the robot look into this closed place of it: a place
+        for keeping things (a cupboard, a larder, a drawer), or an appliance (a fridge, an oven, a dishwasher:
+        :data:`~seal_cli.planning.keeping.APPLIANCES`) the map's prior of the thing's class names. "The mug from
+        the kitchen" does not open the fridge and the oven; "the milk from the kitchen" opens the fridge where
+        milk is kept. A thing that is nowhere else in the room is then searched for as any thing is."""
+        from seal_cli.planning.keeping import APPLIANCES
+
+        appliance = any(kind_of(self.library.taxonomy, place.cls, kind) is True for kind in APPLIANCES)
+        return not appliance or self.prior_names(place, value)
 
     def room(self, value: str) -> Any:
         """The map's room a value names, if it names one."""
@@ -904,7 +931,7 @@ class Agent:
                         return ended
                     self.missed_rooms.add((self.class_of(value), source.name))   # the speaker was wrong: widen
                     self.withdraw(value, source.name)
-                    self.say("search", f"{ended.message}; looks elsewhere", target=value)
+                    self.say("search", ended.message, target=value)
                 continue
             self.missed_where_said(value)
             if (ended := self.look_once(value, binding)) is not None:
