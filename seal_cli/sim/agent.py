@@ -774,9 +774,12 @@ class Agent:
         for keeping things (a cupboard, a larder, a drawer), or an appliance (a fridge, an oven, a dishwasher:
         :data:`~seal_cli.planning.keeping.APPLIANCES`) the map's prior of the thing's class names. "The mug from
         the kitchen" does not open the fridge and the oven; "the milk from the kitchen" opens the fridge where
-        milk is kept. A thing that is nowhere else in the room is then searched for as any thing is."""
-        from seal_cli.planning.keeping import APPLIANCES
+        milk is kept. A thing that is nowhere else in the room is then searched for as any thing is. Of a class the
+        map has no prior of, the map says nothing of where it is kept: every closed place may hold it."""
+        from seal_cli.planning.keeping import APPLIANCES, prior_of
 
+        if not prior_of(self.scene.map.priors, self.class_of(value)):
+            return True
         appliance = any(kind_of(self.library.taxonomy, place.cls, kind) is True for kind in APPLIANCES)
         return not appliance or self.prior_names(place, value)
 
@@ -907,6 +910,8 @@ class Agent:
             if target is not None:
                 if self.world.held_chain(target):
                     return Outcome(True, f"holds {target}")
+                if (holder := self.world.items[target].parent) is not None and self.is_person(holder):
+                    return self.go_to(holder, binding)      # handed to someone before: taken back from them
                 if self.todo and binding != self.todo[0] and (already := self.already_so(self.todo[0])):
                     return Outcome(False, already, Reason.ALREADY)   # seen where the command wants it
                 cell = self.policy.stand(self, self.known[target])
@@ -1344,7 +1349,7 @@ class Agent:
                 return went
         if "message" not in binding.elements:
             return Outcome(True, said)
-        told = f'said "{said}"' if recipient is not None and recipient != SPEAKER else f"says: {said}"
+        told = f'said "{self.in_words(said)}"' if recipient is not None and recipient != SPEAKER else f"says: {said}"
         return self._act_words("say", [binding.elements["message"]], told)   # to another: narrated
 
     def _seen_person(self, person: str) -> bool:
@@ -1575,7 +1580,20 @@ class Agent:
         """Say what the command's earlier frames found out ("find the cup and tell me where it is"), not the
         message's words; said to someone else, it is not the speaker's answer again."""
         said = "; ".join(self.answers) if self.answers else "it found out nothing to tell"
+        if binding.elements.get("recipient") not in (None, SPEAKER):
+            said = self.in_words(said)
         return self._act_words("say", [binding.elements.get("message", "report")], f'said "{said}"')
+
+    def in_words(self, text: str) -> str:
+        """An answer as said to a person, not printed for the speaker's record: a thing's or place's id as its
+        kind ("mug_1 is on dining_table_1 in the dining room": "the mug is on the dining table in the dining
+        room"), and no coordinates."""
+        def kind(match: re.Match[str]) -> str:
+            item = self.world.items.get(match.group(0))
+            return f"the {spoken(item.cls)}" if item is not None and item.key != PERSON else match.group(0)
+
+        text = re.sub(r" at \(-?\d+(?:\.\d+)?, -?\d+(?:\.\d+)?\)", "", text)
+        return re.sub(r"\b[A-Za-z][A-Za-z0-9_]*_\d+\b", kind, text)
 
     def tell_fact(self, fact: str, binding: Binding) -> Outcome:
         """Say what the robot knows without looking ("the time is 14:05", "the date is 2 December 2026");
