@@ -1553,6 +1553,8 @@ class Agent:
             self.say("act", f"asks {args[0]} to follow", action="lead", args=args)
             arrived = self.go_to(action.args[1], binding)
             self.world.following = None
+            if args[0] in self.known:       # the robot knows where the one it led now stands: beside it
+                self.known[args[0]] = replace(self.known[args[0]], at=self.world.items[args[0]].at)
             if not arrived.ok:
                 return arrived
             where = action.args[1]
