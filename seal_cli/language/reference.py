@@ -98,6 +98,8 @@ class Reference:
                     score += 1
                 if wanted_person is False and kind == "thing" and frame is not None and role is not None:
                     fits = self.types.is_a(phrase.cls or phrase.head, frame.element(role).type)
+                    if fits is None and phrase.cls and phrase.head:     # a compound class read by its head:
+                        fits = self.types.is_a(phrase.head, frame.element(role).type)   # a shoe cabinet opens
                     score += 3.0 if fits else -3.0 if fits is False else 0.0   # "close it": the fridge
                 if frame is not None and role is not None and self.undoes(frame, role, evoked.frame, name):
                     score += 3.0       # "open the shed, grab the trowel, then close it": the shed opened

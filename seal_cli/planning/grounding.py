@@ -31,6 +31,7 @@ refused before anything moves, listing what the map has (:class:`Refusal`).
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
@@ -269,7 +270,16 @@ class MapNames:
                  or (element_type == "openable" and self._openable(r.id))]
         if element_type == "openable":
             typed = [r for r in typed if r.kind == "place" and self._openable(r.id)] or typed
-        return (typed or found)[0]
+        return self._speakers(text, typed or found)
+
+    def _speakers(self, text: str, found: list[Referent]) -> Referent:
+        """The first referent in the map's order, but the one nearest the speaker when the phrase says it is
+        theirs and several places fit ("is there a stapler on my desk?": the desk the speaker stands by)."""
+        places = [r for r in found if r.kind == "place" and self.map.place(r.id) is not None]
+        if len(places) < 2 or re.match(r"\s*(my|our)\b", text, flags=re.IGNORECASE) is None:
+            return found[0]
+        here = self.map.speaker_at
+        return min(places, key=lambda r: math.dist(self.map.place(r.id).at, here))  # type: ignore[union-attr]
 
     def _room_of_words(self, words: tuple[str, ...]) -> str | None:
         thing, _ = _split(words)

@@ -168,12 +168,18 @@ def said_where(bindings: Sequence[Binding]) -> dict[str, tuple[str, ...]]:
     """Where the command says each thing is, by class key: a frame that takes a thing out of somewhere
     (a postcondition ``not in(theme, source)``, Pick's) presumes ``in(theme, source)`` as it was said
     ("the milk from the larder": milk → larder_1). Evidence for the thing's belief, not a fact: the
-    speaker may be wrong."""
+    speaker may be wrong. A place an earlier frame of the plan puts the thing in is where it *will* be, not
+    where it is ("take the peas to the kitchen and put them in the fridge": the second Pick's source, the
+    kitchen, is the Bring's goal)."""
     out: dict[str, list[str]] = {}
+    put: set[tuple[str, str]] = set()
     for binding in bindings:
         for fact in binding.postconditions:
-            if fact.negated and fact.predicate == "in" and len(fact.args) == 2 and fact.args[0] != fact.args[1]:
-                thing, where = (class_key(a) for a in fact.args)
-                if where not in out.setdefault(thing, []):
-                    out[thing].append(where)
+            if fact.predicate != "in" or len(fact.args) != 2 or fact.args[0] == fact.args[1]:
+                continue
+            thing, where = (class_key(a) for a in fact.args)
+            if not fact.negated:
+                put.add((thing, where))
+            elif (thing, where) not in put and where not in out.setdefault(thing, []):
+                out[thing].append(where)
     return {k: tuple(v) for k, v in out.items() if v}

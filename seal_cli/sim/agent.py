@@ -742,16 +742,46 @@ class Agent:
                 continue
             closed = [k for k in self.known.values() if not k.movable and k.openable and k.id not in self.opened
                       and k.id not in self.unreachable and not self.world.items[k.id].is_open
-                      and bool(room.contains([k.at])[0])]
-            place = self.nearest(closed) if closed else None
+                      and bool(room.contains([k.at])[0]) and self.may_hold(k, value)]
+            named = [k for k in closed if self.prior_names(k, value)]
+            place = self.nearest(named or closed) if closed else None
             if place is None:
                 seen = " (it sees all of it from where it is)" if len(self.looks) == start else ""
+                shut = sorted(k.id for k in self.known.values() if not k.movable and k.openable
+                              and k.id not in self.opened and not self.world.items[k.id].is_open
+                              and bool(room.contains([k.at])[0]) and not self.may_hold(k, value))
+                if shut:    # appliances it did not open: the search goes on, and may yet look into them
+                    kind = spoken(self.class_of(value))
+                    return Fatal(False, f"no {self.said(value)} in sight in the {room.name.replace('_', ' ')}, where "
+                                 f"the command said it was ({', '.join(shut)} left shut: the map keeps no {kind} "
+                                 f"there){seen}; searches on", Reason.NOT_FOUND, value)
                 return Fatal(False, f"no {self.said(value)} in the {room.name.replace('_', ' ')}, where the command "
-                             f"said it was{seen}", Reason.NOT_FOUND, value)
+                             f"said it was{seen}; looks elsewhere", Reason.NOT_FOUND, value)
             self.look_into(place, value, binding, role, f"goes to {place}")
             if place not in self.opened:  # out of reach, or it would not open: not tried again
                 self.unreachable.add(place)
         return None
+
+    def prior_names(self, place: Known, value: str) -> bool:
+        """Whether the map's prior of the thing's class names this place or its class ("milk: {fridge: 0.9}")."""
+        from seal_cli.planning.keeping import Spot, prior_of, tier
+
+        prior = prior_of(self.scene.map.priors, self.class_of(value))
+        return tier(self.library.taxonomy, prior, Spot(place.id, place.cls, None, place.at)) == 0
+
+    def may_hold(self, place: Known, value: str) -> bool:
+        """Whether a room said as where a thing is makes the robot look into this closed place of it: a place
+        for keeping things (a cupboard, a larder, a drawer), or an appliance (a fridge, an oven, a dishwasher:
+        :data:`~seal_cli.planning.keeping.APPLIANCES`) the map's prior of the thing's class names. "The mug from
+        the kitchen" does not open the fridge and the oven; "the milk from the kitchen" opens the fridge where
+        milk is kept. A thing that is nowhere else in the room is then searched for as any thing is. Of a class the
+        map has no prior of, the map says nothing of where it is kept: every closed place may hold it."""
+        from seal_cli.planning.keeping import APPLIANCES, prior_of
+
+        if not prior_of(self.scene.map.priors, self.class_of(value)):
+            return True
+        appliance = any(kind_of(self.library.taxonomy, place.cls, kind) is True for kind in APPLIANCES)
+        return not appliance or self.prior_names(place, value)
 
     def room(self, value: str) -> Any:
         """The map's room a value names, if it names one."""
@@ -880,6 +910,8 @@ class Agent:
             if target is not None:
                 if self.world.held_chain(target):
                     return Outcome(True, f"holds {target}")
+                if (holder := self.world.items[target].parent) is not None and self.is_person(holder):
+                    return self.go_to(holder, binding)      # handed to someone before: taken back from them
                 if self.todo and binding != self.todo[0] and (already := self.already_so(self.todo[0])):
                     return Outcome(False, already, Reason.ALREADY)   # seen where the command wants it
                 cell = self.policy.stand(self, self.known[target])
@@ -904,7 +936,7 @@ class Agent:
                         return ended
                     self.missed_rooms.add((self.class_of(value), source.name))   # the speaker was wrong: widen
                     self.withdraw(value, source.name)
-                    self.say("search", f"{ended.message}; looks elsewhere", target=value)
+                    self.say("search", ended.message, target=value)
                 continue
             self.missed_where_said(value)
             if (ended := self.look_once(value, binding)) is not None:
@@ -1317,7 +1349,7 @@ class Agent:
                 return went
         if "message" not in binding.elements:
             return Outcome(True, said)
-        told = f'said "{said}"' if recipient is not None and recipient != SPEAKER else f"says: {said}"
+        told = f'said "{self.in_words(said)}"' if recipient is not None and recipient != SPEAKER else f"says: {said}"
         return self._act_words("say", [binding.elements["message"]], told)   # to another: narrated
 
     def _seen_person(self, person: str) -> bool:
@@ -1521,6 +1553,8 @@ class Agent:
             self.say("act", f"asks {args[0]} to follow", action="lead", args=args)
             arrived = self.go_to(action.args[1], binding)
             self.world.following = None
+            if args[0] in self.known:       # the robot knows where the one it led now stands: beside it
+                self.known[args[0]] = replace(self.known[args[0]], at=self.world.items[args[0]].at)
             if not arrived.ok:
                 return arrived
             where = action.args[1]
@@ -1548,7 +1582,20 @@ class Agent:
         """Say what the command's earlier frames found out ("find the cup and tell me where it is"), not the
         message's words; said to someone else, it is not the speaker's answer again."""
         said = "; ".join(self.answers) if self.answers else "it found out nothing to tell"
+        if binding.elements.get("recipient") not in (None, SPEAKER):
+            said = self.in_words(said)
         return self._act_words("say", [binding.elements.get("message", "report")], f'said "{said}"')
+
+    def in_words(self, text: str) -> str:
+        """An answer as said to a person, not printed for the speaker's record: a thing's or place's id as its
+        kind ("mug_1 is on dining_table_1 in the dining room": "the mug is on the dining table in the dining
+        room"), and no coordinates."""
+        def kind(match: re.Match[str]) -> str:
+            item = self.world.items.get(match.group(0))
+            return f"the {spoken(item.cls)}" if item is not None and item.key != PERSON else match.group(0)
+
+        text = re.sub(r" at \(-?\d+(?:\.\d+)?, -?\d+(?:\.\d+)?\)", "", text)
+        return re.sub(r"\b[A-Za-z][A-Za-z0-9_]*_\d+\b", kind, text)
 
     def tell_fact(self, fact: str, binding: Binding) -> Outcome:
         """Say what the robot knows without looking ("the time is 14:05", "the date is 2 December 2026");

@@ -385,6 +385,8 @@ class World:
         source = item.parent
         self._move(item, HAND)
         self.robot.holding = obj
+        if source is not None and self.items[source].key == PERSON:     # handed to them before
+            return Outcome(True, f"took {obj} back from {source}")
         return Outcome(True, f"picked up {obj}" + (f" from {source}" if source else ""))
 
     def _do_place(self, obj: str, receptacle: str, on_top: bool = False) -> Outcome:

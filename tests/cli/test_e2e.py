@@ -362,7 +362,7 @@ def test_telling_where_a_thing_found_is_says_what_was_found_not_the_words() -> N
     assert report["answer"].startswith("cup_1 is on coffee_table_1 in the family room")
     told = run_json("look for the apple and report its location to ben")
     said = [r["text"] for r in told["records"] if r["text"].startswith("said ")]
-    assert told["completed"] and said == ['said "apple_1 is in fridge_1 in the kitchen at (8.50, -0.80)"']
+    assert told["completed"] and said == ['said "the apple is in the fridge in the kitchen"']
     hello = run_json("find the cup and tell me hello")
     assert [r["text"] for r in hello["records"] if r["text"].startswith("said ")] == ['said "hello"']
 

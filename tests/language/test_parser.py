@@ -1299,6 +1299,14 @@ def test_a_pronoun_of_a_frame_that_undoes_an_earlier_result_is_that_frames_eleme
     assert parse.frames[2].elements["theme"].refers_to == (1, "theme")     # no state undone: the latest
 
 
+def test_close_it_is_what_closes_even_a_compound_class_read_by_its_head(library: Library) -> None:
+    """"Put the umbrella in the shoe cabinet and close it" on a map whose class is ``shoe_cabinet``: a shoe cabinet
+    is a cabinet, which opens and closes; the umbrella does not (e2e18; before, Close(umbrella), 8 replans)."""
+    vocab = Vocabulary.of(["umbrella", "shoe_cabinet"])
+    parse = parse_command("put the umbrella in the shoe cabinet and close it", library, vocab)
+    assert parse.frames[1].elements["theme"].refers_to == (0, "goal")
+
+
 def test_in_a_thing_named_for_the_frames_verb_is_its_instrument(library: Library) -> None:
     (frame,) = parse_command("warm the towels in the towel warmer", library).frames
     assert (frame.elements["theme"].text, frame.elements["instrument"].head) == ("the towels", "warmer")

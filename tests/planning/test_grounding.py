@@ -295,3 +295,12 @@ def test_a_person_is_said_as_the_map_writes_them_else_as_a_name() -> None:
     assert person_name(m, "roger", "roger") == "Roger"            # nobody on the map: a name, capitalised
     assert person_name(m, "mcdonald", "McDonald") == "McDonald"   # as typed when it has capitals
     assert person_name(None, "roger", "Roger's") == "Roger"     # a possessive alone: the id, capitalised
+
+
+def test_my_place_is_the_one_nearest_the_speaker(library: Library) -> None:
+    """The office floor has desks 1-4; its speaker stands by desk_2. "My desk" is that one (e2e18; before, desk_1,
+    the first in the map's order); "the desk" is still the first."""
+    names = MapNames(load_map("office_floor"), library.taxonomy)
+    assert names.ground("my desk", "place").id == "desk_2"      # type: ignore[union-attr]
+    assert names.ground("our desk", "place").id == "desk_2"     # type: ignore[union-attr]
+    assert names.ground("the desk", "place").id == "desk_1"     # type: ignore[union-attr]

@@ -94,3 +94,13 @@ def test_said_where_reads_a_frame_that_takes_a_thing_out_of_a_place(library: Lib
             library.frame("Pick").bind({"theme": "cup"}),
             library.frame("Place").bind({"theme": "cup", "goal": "sink_1"})]
     assert said_where(plan) == {"milk": ("larder_1",)}    # a goal is where it will be, not where it is
+
+
+def test_said_where_skips_where_an_earlier_frame_puts_the_thing(library: Library) -> None:
+    from seal_cli.sefm.relations import said_where
+
+    plan = [library.frame("Pick").bind({"theme": "peas"}),
+            library.frame("Bring").bind({"theme": "peas", "goal": "kitchen"}),
+            library.frame("Pick").bind({"theme": "peas", "source": "kitchen"}),
+            library.frame("Place").bind({"theme": "peas", "goal": "fridge_1"})]
+    assert said_where(plan) == {}      # the kitchen is where the Bring puts the peas, not where they are

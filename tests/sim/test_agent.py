@@ -239,14 +239,14 @@ def test_a_question_told_to_someone_is_found_out_then_told_and_a_what_question_l
                                     rng=np.random.default_rng(0), observers=[heard.append])
     assert result.completed, result.reason
     said = [r.text for r in heard if r.text.startswith('said "')]
-    assert said == ['said "spoon_1 is on counter_1 in the kitchen at (8.30, -4.10)"']
+    assert said == ['said "the spoon is on the counter in the kitchen"']   # to Ben in words: no ids, no coordinates
     heard.clear()
     _, result = pipeline.run_on_map(m, "tell Ben what is on the dining table", library, make_policy("sefm"),
                                     rng=np.random.default_rng(0), observers=[heard.append])
     assert result.completed, result.reason
     went = [r.text for r in heard if r.text.startswith("goes to ") and "look" not in r.text]
     assert [t.split(" (")[0] for t in went] == ["goes to dining_table_1", "goes to Ben"]
-    assert 'said "nothing on dining_table_1"' in [r.text for r in heard]
+    assert 'said "nothing on the dining table"' in [r.text for r in heard]
 
 
 @pytest.mark.parametrize(("text", "answer"), [
@@ -428,3 +428,21 @@ def test_whether_someone_is_home_is_answered_yes_or_no(library: Library, text: s
     assert result.completed, result.reason
     assert result.answer is not None and result.answer.startswith(answer)
     assert not any("opened" in r.text for r in result.records)
+
+
+def test_a_thing_handed_over_is_taken_back_for_a_later_frame(library: Library) -> None:
+    """"Bring me the mug from the guest room and put it in the sink" (townhouse): the mug handed to the speaker is
+    taken back from them and put in the sink (e2e18; before, the robot could not reach it in the speaker's hands
+    and searched the house for another mug, 88 m, and gave up)."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    heard: list = []
+    agent, result = pipeline.run_on_map(load_map("townhouse"), "bring me the mug from the guest room and put it in "
+                                        "the sink", library, make_policy("sefm"), rng=np.random.default_rng(0),
+                                        observers=[heard.append])
+    assert result.completed, result.reason
+    texts = [r.text for r in heard]
+    assert texts.index("handed mug_1 to me") < texts.index("took mug_1 back from me") < texts.index(
+        "put mug_1 in bathroom_sink_1")
+    assert agent.world.items["mug_1"].parent == "bathroom_sink_1"

@@ -32,15 +32,35 @@ def said_lines(report: dict[str, Any]) -> list[str]:
 
 def test_no_cup_in_the_kitchen_is_said_then_the_one_elsewhere_is_brought() -> None:
     """A room said is where the robot looks first, as a place said is (e2e16; before, "no cup in the kitchen" ended
-    the run): it looks all over the kitchen and into what is closed there, says the cup is not there, and brings
-    the one in the family room."""
+    the run): it looks all over the kitchen, says the cup is not there, and brings the one in the family room. It
+    does not open the fridge and the microwave for a cup (e2e18): the map keeps cups in neither."""
     code, report = run("bring me a cup from the kitchen")
     assert code == 0 and report["completed"]
     assert report["plan"][0] == "Pick(theme=cup, source=kitchen)"
     lines = said_lines(report)
-    missed = lines.index("no cup in the kitchen, where the command said it was; looks elsewhere")
-    assert lines.index("opened fridge_1; inside: apple_1") < missed < lines.index("picked up cup_1 from coffee_table_1")
-    assert "handed cup_1 to me" in lines
+    missed = lines.index("no cup in sight in the kitchen, where the command said it was (fridge_1, microwave_1 left "
+                         "shut: the map keeps no cup there); searches on")
+    assert missed < lines.index("picked up cup_1 from coffee_table_1")
+    assert not any(a.startswith("opened") for a in lines) and "handed cup_1 to me" in lines
+
+
+def test_a_room_said_is_looked_into_where_the_map_keeps_the_thing() -> None:
+    """"The apple from the kitchen": the map keeps apples in the fridge, so the fridge of the room said is opened
+    (and not the microwave)."""
+    code, report = run("bring me an apple from the kitchen")
+    assert code == 0 and report["completed"]
+    lines = said_lines(report)
+    assert "picked up apple_1 from fridge_1" in lines and not any(a.startswith("opened microwave") for a in lines)
+
+
+def test_a_room_said_of_a_thing_the_map_knows_nothing_of_is_looked_into_everywhere() -> None:
+    """No prior of mugs on the apartment: nothing says where one is kept, so the kitchen's fridge and microwave are
+    looked into, and the rest of the house searched once."""
+    code, report = run("bring the mug from the kitchen to the sofa")
+    assert code == 1 and report["why"] == "not_found"
+    lines = said_lines(report)
+    assert any(a.startswith("opened fridge_1") for a in lines) and any(a.startswith("opened microwave_1")
+                                                                      for a in lines)
 
 
 def test_a_thing_seen_elsewhere_on_the_way_to_the_room_said_is_brought() -> None:

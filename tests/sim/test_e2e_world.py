@@ -55,3 +55,13 @@ def test_a_person_takes_what_is_handed_over_and_walks_along_when_led() -> None:
     assert world.act("lead", "anna", "kitchen").ok
     world.drive([(0.0, -3.0)])
     assert world.items["anna"].at == (0.0, -3.0)
+
+
+def test_a_thing_handed_to_a_person_is_taken_back_within_reach_of_them() -> None:
+    """"Bring me the mug and put it in the sink": what was handed over is taken back, and said so (e2e18)."""
+    world = walled_world((0.0, 0.5))
+    world.items["cup_1"] = Item("cup_1", "cup", (0.0, 0.5), parent="@hand")
+    world.robot.holding = "cup_1"
+    assert world.act("hand_over", "cup_1", "anna").ok
+    taken = world.act("pick", "cup_1")
+    assert taken.ok and taken.message == "took cup_1 back from anna" and world.robot.holding == "cup_1"
