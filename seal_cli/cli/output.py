@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import re
 import sys
 from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING, Any
@@ -18,8 +19,8 @@ from seal_cli.errors import SealError, SealErrors, readable
 if TYPE_CHECKING:
     from rich.console import Console
 
-__all__ = ["PIPE_WIDTH", "LazyConsole", "dump_json", "emit_json", "err", "out", "printable_streams", "progress_bar",
-           "report", "run_command"]
+__all__ = ["PIPE_WIDTH", "LazyConsole", "dump_json", "emit_json", "err", "out", "plain", "printable_streams",
+           "progress_bar", "report", "run_command", "styled"]
 
 PIPE_WIDTH = 200
 """Columns of the output when it is not a terminal (a file, a pipe) and ``COLUMNS`` is not set."""
@@ -67,6 +68,25 @@ class LazyConsole:
 
 out = LazyConsole(soft_wrap=True, highlight=False)
 err = LazyConsole(stderr=True, soft_wrap=True, highlight=False)
+
+_TAG = re.compile(r"(\\*)(\[[a-z#/@][^[]*?])")
+"""What rich's markup reads as a tag (``rich.markup.RE_TAGS``), with the backslashes before it."""
+
+
+def plain(text: object) -> str:
+    """``text`` as rich markup that prints as it is written. Names come from files (a room called ``[/]``, a
+    frame described ``[bold]``): put into a table or a styled line unescaped, rich read them as styles, printed
+    them wrong or failed with a ``MarkupError`` traceback (hostile16). Unlike ``rich.markup.escape``, a
+    trailing backslash is left single: nothing follows it (:func:`styled` for text a tag follows)."""
+    return _TAG.sub(lambda m: f"{m[1]}{m[1]}\\{m[2]}", str(text))
+
+
+def styled(style: str, text: object) -> str:
+    """``text`` in ``style``, as rich markup that prints the text as it is written."""
+    from rich.markup import escape
+
+    return f"[{style}]{escape(str(text))}[/{style}]"
+
 
 def report(error: SealError) -> None:
     """Print a SealError (or each of several) on stderr, plainly."""

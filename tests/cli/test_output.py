@@ -3,13 +3,14 @@
 from __future__ import annotations
 
 import errno
+import os
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
-from seal_cli.cli.output import run_command
+from seal_cli.cli.output import plain, run_command
 
 
 def _raise(error: BaseException) -> int:
@@ -137,3 +138,52 @@ def test_an_interrupt_while_the_outputs_move_ends_with_them_in_place_and_success
         assert run_command(lambda: 0) == 0 and not fileio.committed()  # the next command starts afresh
     finally:
         signal.signal(signal.SIGINT, before)
+
+
+def test_plain_text_prints_as_written() -> None:
+    from rich.console import Console
+
+    console = Console(record=True, width=200, color_system=None)
+    for name in ("[/]bed[bold]x", "a\\[/]", "x\\", "[red]", "$x^$"):
+        console.print(plain(name))
+        assert console.export_text().rstrip("\n") == name
+
+
+MARKUP_ROOM = "[/]bed[bold]x"
+"""A room name rich read as markup: ``seal map`` failed with a MarkupError traceback (hostile16)."""
+
+
+def _map_with(tmp_path: Path, old: str, new: str) -> Path:
+    from seal_cli.resources import map_path
+
+    text = map_path("apartment").read_text(encoding="utf-8")
+    assert old in text
+    (tmp_path / "apartment.pgm").write_bytes(map_path("apartment").with_suffix(".pgm").read_bytes())
+    path = tmp_path / "m.yaml"
+    path.write_text(text.replace(old, new), encoding="utf-8")
+    return path
+
+
+@pytest.mark.parametrize("argv", [
+    ["map", "{map}"],
+    ["localize", "--map", "{map}", "--task", "find the spoon", "--steps", "1", "--particles", "20"],
+    ["run", "--map", "{map}", "find the spoon", "--max-steps", "60"],
+])
+def test_names_from_a_map_are_printed_as_written(tmp_path: Path, argv: list[str]) -> None:
+    m = _map_with(tmp_path, "bedroom", "'[/]bed[bold]x'")
+    done = subprocess.run([sys.executable, "-m", "seal_cli", *(a.format(map=m) for a in argv)], capture_output=True,
+                          text=True, check=False, env={**os.environ, "NO_COLOR": "1", "COLUMNS": "250"})
+    assert "Traceback" not in done.stderr
+    assert done.returncode in (0, 1), done.stderr
+    assert MARKUP_ROOM in done.stdout
+
+
+def test_a_frame_described_in_markup_is_shown_as_written(tmp_path: Path) -> None:
+    library = tmp_path / "zap.yaml"
+    library.write_text("frame: Zap\ndescription: '[/] zap [bold]'\nlexical_units: [zap]\n"
+                       "elements: {theme: {type: object}}\nactions: [navigate(theme)]\n"
+                       "postconditions: [looked_at(theme)]\n", encoding="utf-8")
+    done = subprocess.run([sys.executable, "-m", "seal_cli", "frames", "--framelib", f"+{library}", "Zap"],
+                          capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    assert "[/] zap [bold]" in done.stdout
