@@ -11,7 +11,7 @@ import contextlib
 import os
 import re
 import sys
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, MutableMapping
 from typing import TYPE_CHECKING, Any
 
 from seal_cli.errors import SealError, SealErrors, readable
@@ -20,7 +20,7 @@ if TYPE_CHECKING:
     from rich.console import Console
 
 __all__ = ["PIPE_WIDTH", "LazyConsole", "dump_json", "emit_json", "err", "out", "plain", "printable_streams",
-           "progress_bar", "report", "run_command", "styled"]
+           "progress_bar", "report", "run_command", "sane_sizes", "styled"]
 
 PIPE_WIDTH = 200
 """Columns of the output when it is not a terminal (a file, a pipe) and ``COLUMNS`` is not set."""
@@ -206,6 +206,30 @@ def _unicode(stream: Any) -> bool:
     """Whether a stream's encoding holds every character (UTF-8, -16 or -32)."""
     encoding = (getattr(stream, "encoding", None) or "utf-8").lower().replace("-", "").replace("_", "")
     return encoding.startswith("utf")
+
+
+MAX_COLUMNS = 1_000
+"""The widest (and tallest) screen seal draws for. rich and typer take ``COLUMNS``, ``LINES`` and typer's
+``TERMINAL_WIDTH`` as they come: ``COLUMNS=1000000000 seal --help`` drew its boxes a billion characters wide
+(8.8 GB before it was killed), a usage error under ``COLUMNS=10000000`` was 70 MB of stderr."""
+
+SIZE_VARIABLES = ("COLUMNS", "LINES", "TERMINAL_WIDTH")
+
+
+def sane_sizes(environ: MutableMapping[str, str] = os.environ) -> None:
+    """The screen's size as the environment gives it, made one seal can draw: a size past :data:`MAX_COLUMNS` is
+    taken as that; one that is no positive integer is dropped, as rich drops ``COLUMNS=abc`` (typer's own
+    ``int(TERMINAL_WIDTH)`` of ``abc``, and rich's of ``COLUMNS`` or ``LINES`` of 5,000 digits, were
+    ``ValueError`` tracebacks before any command ran)."""
+    for name in SIZE_VARIABLES:
+        value = environ.get(name)
+        if value is None:
+            continue
+        text = value.strip()
+        if not (text.isascii() and text.isdigit()) or not text.strip("0"):
+            del environ[name]
+        elif len(text.lstrip("0")) > len(str(MAX_COLUMNS)) or int(text) > MAX_COLUMNS:
+            environ[name] = str(MAX_COLUMNS)
 
 
 def printable_streams() -> None:

@@ -187,3 +187,29 @@ def test_a_frame_described_in_markup_is_shown_as_written(tmp_path: Path) -> None
                           capture_output=True, text=True, check=False)
     assert done.returncode == 0, done.stderr
     assert "[/] zap [bold]" in done.stdout
+
+
+@pytest.mark.parametrize(("environ", "after"), [
+    ({"COLUMNS": "1000000000"}, {"COLUMNS": "1000"}),
+    ({"COLUMNS": "1" * 5_000, "LINES": "9" * 5_000}, {"COLUMNS": "1000", "LINES": "1000"}),
+    ({"TERMINAL_WIDTH": "abc", "COLUMNS": "0", "LINES": "-3"}, {}),
+    ({"COLUMNS": " 120 ", "LINES": "40", "TERMINAL_WIDTH": "1000"}, {"COLUMNS": " 120 ", "LINES": "40",
+                                                                     "TERMINAL_WIDTH": "1000"}),
+])
+def test_screen_sizes_no_one_can_draw_are_bounded_or_dropped(environ: dict[str, str], after: dict[str, str]) -> None:
+    from seal_cli.cli.output import sane_sizes
+
+    sane_sizes(environ)
+    assert environ == after
+
+
+@pytest.mark.parametrize(("name", "value"), [("COLUMNS", "1000000000"), ("TERMINAL_WIDTH", "abc"),
+                                             ("COLUMNS", "1" * 5_000), ("LINES", "1" * 5_000)])
+def test_help_and_usage_errors_under_a_hostile_screen_size(name: str, value: str) -> None:
+    # a billion columns: 8.8 GB and no end; 'abc' (typer's int()) and 5,000 digits (rich's): tracebacks (hostile16)
+    env = {**os.environ, name: value}
+    for argv in (["--help"], ["localize", "--steps", "x"], ["map", "apartment"]):
+        done = subprocess.run([sys.executable, "-m", "seal_cli", *argv], capture_output=True, text=True,
+                              check=False, env=env, timeout=60)
+        assert "Traceback" not in done.stderr and done.returncode in (0, 2), done.stderr[-500:]
+        assert len(done.stdout) + len(done.stderr) < 100_000
