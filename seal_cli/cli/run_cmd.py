@@ -254,12 +254,14 @@ def tasks(
         if suite != "map" and not data.is_dir():
             raise SealError(f"the {suite} suite's data is not at {data}, the default beside a checkout of seal (an "
                             "installed seal has no data): give --data DIR")
+    from seal_cli.bench import alfred2d
     from seal_cli.cli import OUTPUT_SUFFIXES
     from seal_cli.fileio import Outputs
     from seal_cli.resources import map_path
 
     the_map = map_path(map_name) if suite == "map" else None  # an input too: --episodes must not replace it
-    outputs = Outputs({"--episodes": episodes}, [data, the_map, *(framelib or [])], suffixes=OUTPUT_SUFFIXES)
+    read = alfred2d.data_files(data) if suite == "alfred2d" else []   # and the data's files (their folder is no file)
+    outputs = Outputs({"--episodes": episodes}, [data, the_map, *read, *(framelib or [])], suffixes=OUTPUT_SUFFIXES)
     outcomes: list[Outcome] = []
     with Progress(TextColumn("episodes"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), console=err.console,
                   transient=True, disable=not err.is_terminal) as progress:
