@@ -66,8 +66,9 @@ class LazyConsole:
         return getattr(self.console, name)
 
 
-out = LazyConsole(soft_wrap=True, highlight=False)
-err = LazyConsole(stderr=True, soft_wrap=True, highlight=False)
+# emoji=False: rich turns ':pile_of_poo:' into 💩, and a room so called was shown as one (hostile16)
+out = LazyConsole(soft_wrap=True, highlight=False, emoji=False)
+err = LazyConsole(stderr=True, soft_wrap=True, highlight=False, emoji=False)
 
 _TAG = re.compile(r"(\\*)(\[[a-z#/@][^[]*?])")
 """What rich's markup reads as a tag (``rich.markup.RE_TAGS``), with the backslashes before it."""

@@ -348,7 +348,7 @@ def _table(report: dict[str, Any], names: list[str]) -> None:
     else:
         from rich.console import Console
 
-        Console(width=wide, highlight=False).print(table)
+        Console(width=wide, highlight=False, emoji=False).print(table)
 
 
 @command("e2e", on=bench_app)
