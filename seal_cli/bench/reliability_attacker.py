@@ -492,6 +492,8 @@ def hostile16_cases() -> Iterator[Case]:
                           ("d/t.json", (("d/t.json", "link:trials_valid_seen.jsonl"),))):
         yield Case(f"A bench tasks --episodes onto its data: {target}", (*tasks, target), (*data, *extra), codes=(1,),
                    keep=tuple(n for n, _ in data), says=r"--episodes d/\S+ would overwrite the input d/", timeout=120)
+    yield Case("A parse --file of 100,000 blank lines (each refused)", ("parse", "--file", "c.txt", "--json"),
+               (("c.txt", b"\n" * 100_000),), codes=(0,), keep=("c.txt",))
     yield from _bag_names()
 
 
