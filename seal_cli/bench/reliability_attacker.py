@@ -492,6 +492,12 @@ def hostile16_cases() -> Iterator[Case]:
                           ("d/t.json", (("d/t.json", "link:trials_valid_seen.jsonl"),))):
         yield Case(f"A bench tasks --episodes onto its data: {target}", (*tasks, target), (*data, *extra), codes=(1,),
                    keep=tuple(n for n, _ in data), says=r"--episodes d/\S+ would overwrite the input d/", timeout=120)
+    yield Case("A a DSL element named in other letters ('thème')", ("validate", "k.frame"),
+               (("k.frame", "category cup = cup\nframe Zap \"zap\" { thème: cup do navigate(thème) }\n".encode()),),
+               codes=(1,), keep=("k.frame",), says=r"k\.frame:2:21: syntax error: a name in a \.frame file is written")
+    yield Case("A a lexical unit in other letters ('zäp')", ("validate", "k.frame"),
+               (("k.frame", "frame Zap \"zäp\" { }\n".encode()),), codes=(1,), keep=("k.frame",),
+               says=r"k\.frame:1:11: lexical unit 'zäp' must be one or more words of letters a-z")
     yield Case("A parse --file of 100,000 blank lines (each refused)", ("parse", "--file", "c.txt", "--json"),
                (("c.txt", b"\n" * 100_000),), codes=(0,), keep=("c.txt",))
     yield from _bag_names()
