@@ -74,19 +74,29 @@ _TAG = re.compile(r"(\\*)(\[[a-z#/@][^[]*?])")
 """What rich's markup reads as a tag (``rich.markup.RE_TAGS``), with the backslashes before it."""
 
 
+_CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f]")
+"""Control characters but newline and tab: a name holding ESC (YAML's ``"\\e[31m"``) reached the terminal as an
+escape sequence of its own."""
+
+
+def _shown(text: object) -> str:
+    return _CONTROL.sub(lambda m: m[0].encode("unicode_escape").decode("ascii"), str(text))
+
+
 def plain(text: object) -> str:
     """``text`` as rich markup that prints as it is written. Names come from files (a room called ``[/]``, a
     frame described ``[bold]``): put into a table or a styled line unescaped, rich read them as styles, printed
     them wrong or failed with a ``MarkupError`` traceback (hostile16). Unlike ``rich.markup.escape``, a
-    trailing backslash is left single: nothing follows it (:func:`styled` for text a tag follows)."""
-    return _TAG.sub(lambda m: f"{m[1]}{m[1]}\\{m[2]}", str(text))
+    trailing backslash is left single: nothing follows it (:func:`styled` for text a tag follows). Control
+    characters (ESC, CR) are written as escapes (``\\x1b``), never sent to the terminal."""
+    return _TAG.sub(lambda m: f"{m[1]}{m[1]}\\{m[2]}", _shown(text))
 
 
 def styled(style: str, text: object) -> str:
     """``text`` in ``style``, as rich markup that prints the text as it is written."""
     from rich.markup import escape
 
-    return f"[{style}]{escape(str(text))}[/{style}]"
+    return f"[{style}]{escape(_shown(text))}[/{style}]"
 
 
 def report(error: SealError) -> None:

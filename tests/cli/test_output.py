@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from seal_cli.cli.output import plain, run_command
+from seal_cli.cli.output import plain, run_command, styled
 
 
 def _raise(error: BaseException) -> int:
@@ -147,6 +147,11 @@ def test_plain_text_prints_as_written() -> None:
     for name in ("[/]bed[bold]x", "a\\[/]", "x\\", "[red]", "$x^$"):
         console.print(plain(name))
         assert console.export_text().rstrip("\n") == name
+    for name, shown in (("bed\x1b[31mroom\r", "bed\\x1b[31mroom\\r"), ("\x1b[bold]x\x9b", "\\x1b[bold]x\\x9b")):
+        console.print(plain(name))   # an escape sequence from a file never reaches the terminal
+        assert console.export_text().rstrip("\n") == shown
+        console.print(styled("bold", name))
+        assert console.export_text().rstrip("\n") == shown
 
 
 MARKUP_ROOM = "[/]bed[bold]x"
