@@ -21,7 +21,8 @@ An interrupt (Ctrl-C, SIGINT) while the command line is still being imported, be
 exit code 130, no traceback; one after the command has finished (its outputs in place) leaves the command's
 own exit code, and one while the interpreter shuts down is ignored. Standard streams whose encoding cannot
 hold every character (``PYTHONIOENCODING=ascii``, a Latin-1 terminal) are set up first
-(:func:`seal_cli.cli.output.printable_streams`).
+(:func:`seal_cli.cli.output.printable_streams`), and a screen size no one can draw (``COLUMNS`` of a billion,
+``TERMINAL_WIDTH=abc``) is bounded or dropped (:func:`seal_cli.cli.output.sane_sizes`).
 """
 
 from __future__ import annotations
@@ -39,11 +40,12 @@ def main() -> None:
     enabled = gc.isenabled()
     gc.disable()
     try:
-        from seal_cli.cli.output import printable_streams
+        from seal_cli.cli.output import printable_streams, sane_sizes
         from seal_cli.fileio import note_interrupts
 
         note_interrupts()
         printable_streams()
+        sane_sizes()
         from seal_cli.cli import main as run
         from seal_cli.cli import plain_parse
 

@@ -519,6 +519,7 @@ class Outputs:
                 _check_suffix(Path(value), option, (suffixes or {}).get(option, ()))
                 planned.append((option, Path(value)))
         _check_distinct(planned, [Path(p) for p in inputs if p is not None], guard_read)
+        self._guard_read = guard_read
         try:
             for option, target in planned:
                 self._outputs[option] = _reserve(option, target)
@@ -558,6 +559,7 @@ class Outputs:
         if interrupted():
             self.discard()
             raise KeyboardInterrupt
+        self._check_unread()
         held = _hold_signals()
         try:
             for output in self._outputs.values():
@@ -566,6 +568,16 @@ class Outputs:
         finally:
             self.discard()
             _release_signals(held)
+
+    def _check_unread(self) -> None:
+        """No output replaces a file the command read after its outputs were planned (the data of a suite, read as
+        the episodes run): checked again before anything moves, so the input is kept and nothing is written."""
+        for output in self._outputs.values():
+            identity = _identity(output.target)
+            if self._guard_read and not output.device and identity in _READ:
+                self.discard()
+                raise SealError(f"{output.option} {output.target} would overwrite the input {_READ[identity]}, "
+                                "which the command read; give another file name")
 
     def discard(self) -> None:
         """Remove every temporary not yet moved."""

@@ -29,8 +29,10 @@ _MAP_ONLY_KEYS = frozenset(KEYS) - {"name", "mode"}
 
 
 def is_map_file(path: Path) -> bool:
-    """Whether a YAML file is a map (top-level map keys and no frame keys) rather than frames."""
-    if path.suffix not in (".yaml", ".yml"):
+    """Whether a YAML file is a map (top-level map keys and no frame keys) rather than frames, whatever its name
+    says but ``.frame`` (the DSL): ``seal validate my_map`` (or ``/dev/stdin``, ``map.txt``) was read as a frame
+    file, and every key of a good map listed as "unknown key in a frame file"."""
+    if path.suffix == ".frame" or path.is_dir():
         return False
     try:
         node = yaml.compose(read_text(path), Loader=LOADER)

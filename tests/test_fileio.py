@@ -244,3 +244,27 @@ def test_compose_yaml_gives_nodes_and_words_a_syntax_error_at_its_line_and_colum
     with pytest.raises(SealError) as caught:
         compose_yaml("a: 1\nb: [2\n", "f.yaml")
     assert "YAML syntax error" in str(caught.value) and caught.value.where.line == 3
+
+
+def test_an_output_read_as_an_input_after_it_was_planned_is_not_written(tmp_path: Path) -> None:
+    # bench tasks --episodes d/floorplans.json: the data was read as the episodes ran, after --episodes was
+    # planned, and the JSON Lines replaced it (hostile16)
+    from seal_cli.fileio import Outputs, read_bytes
+
+    data = tmp_path / "floorplans.json"
+    data.write_text('{"floor_plans": {}}\n')
+    said = r"--episodes .*floorplans\.json would overwrite the input .*which the command read"
+    with pytest.raises(SealError, match=said), Outputs({"--episodes": data}) as outputs:
+        read_bytes(data)
+        outputs["--episodes"].write_text("{}\n")
+    assert data.read_text() == '{"floor_plans": {}}\n'
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["floorplans.json"]   # no temporary left
+
+
+def test_the_alfred2d_data_files_are_inputs_of_bench_tasks(tmp_path: Path) -> None:
+    from seal_cli.bench.alfred2d import data_files
+
+    for name in ("floorplans.json", "trials_train.jsonl", "trials_valid_seen.jsonl", "notes.txt"):
+        (tmp_path / name).write_text("")
+    assert [p.name for p in data_files(tmp_path)] == ["floorplans.json", "trials_train.jsonl",
+                                                      "trials_valid_seen.jsonl"]

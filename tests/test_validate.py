@@ -48,3 +48,16 @@ def test_with_the_standard_library_only_the_given_frames_are_counted(tmp_path: P
 
 def test_an_empty_report_says_so() -> None:
     assert Report().summary() == "ok: 0 frames, 0 categories, 0 maps in 0 files"
+
+
+def test_a_map_is_a_map_whatever_its_name_says(tmp_path: Path) -> None:
+    # 'seal validate my_map' listed every key of a good map as "unknown key in a frame file" (hostile16)
+    text = (maps_dir() / "apartment.yaml").read_text(encoding="utf-8")
+    (tmp_path / "apartment.pgm").write_bytes((maps_dir() / "apartment.pgm").read_bytes())
+    for name in ("my_map", "map.txt"):
+        (tmp_path / name).write_text(text, encoding="utf-8")
+        assert is_map_file(tmp_path / name)
+        report = validate_paths([tmp_path / name])
+        assert report.problems == [] and report.maps == 1
+    (tmp_path / "m.frame").write_text(text, encoding="utf-8")
+    assert not is_map_file(tmp_path / "m.frame")   # the DSL's suffix: a frame file, whatever it holds

@@ -44,7 +44,7 @@ if TYPE_CHECKING:
     from seal_cli.sim.agent import Scene
 
 __all__ = ["FOUR", "GRID", "MOVABLE_RECEPTACLES", "TASK_TYPES", "Condition", "Episode", "FloorPlan", "Placement",
-           "Receptacle", "Suite", "Task", "build_scene", "build_world", "estimate_priors",
+           "Receptacle", "Suite", "Task", "build_scene", "build_world", "data_files", "estimate_priors",
            "gold_commands", "gold_classes", "goal_conditions", "judge", "load_suite", "open_floor", "read_floorplans",
            "read_trials", "scene_priors", "scene_vocabulary", "suite_vocabulary", "thor_yaw",
            "train_priors"]
@@ -203,6 +203,12 @@ def thor_yaw(rotation_deg: float) -> float:
 
 def _where(path: Path, line: int | None = None) -> Where:
     return Where(str(path), line)
+
+
+def data_files(data_dir: str | Path) -> list[Path]:
+    """The files of the data folder the suite reads (its floor plans and every split's trials): inputs, which no
+    output may replace (``bench tasks --episodes d/floorplans.json`` wrote its JSON Lines over them)."""
+    return [Path(data_dir) / "floorplans.json", *sorted(Path(data_dir).glob("trials_*.jsonl"))]
 
 
 def read_floorplans(data_dir: str | Path) -> tuple[dict[str, FloorPlan], tuple[str, ...]]:

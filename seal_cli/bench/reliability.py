@@ -172,8 +172,10 @@ def _seal() -> list[str]:
 
 
 def _complete(path: Path) -> bool:
-    """Whether an output file is whole: a PNG ends with its IEND chunk, JSON parses."""
+    """Whether an output file is whole: a PNG ends with its IEND chunk, JSON and YAML parse, PDDL balances."""
     import json
+
+    import yaml
 
     try:
         data = path.read_bytes()
@@ -186,9 +188,24 @@ def _complete(path: Path) -> bool:
             json.loads(data)
         elif path.suffix == ".jsonl":
             [json.loads(line) for line in data.splitlines() if line.strip()]
-    except ValueError:
+        elif path.suffix == ".yaml":
+            yaml.safe_load(data)
+        elif path.suffix == ".pddl":
+            return _pddl(data.decode("utf-8"))
+    except (ValueError, yaml.YAMLError):
         return False
     return bool(data)
+
+
+def _pddl(text: str) -> bool:
+    """Whether a PDDL file is one ``(define ...)`` whose parentheses balance, once its ``;`` comments are cut."""
+    code = "\n".join(line.split(";", 1)[0] for line in text.splitlines()).strip()
+    depth = 0
+    for c in code:
+        depth += {"(": 1, ")": -1}.get(c, 0)
+        if depth < 0:
+            return False
+    return code.startswith("(define") and depth == 0
 
 
 def _parallel(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:

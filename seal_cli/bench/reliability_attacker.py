@@ -25,9 +25,10 @@ from collections.abc import Iterator
 
 import numpy as np
 
-from seal_cli.bench.reliability import Case, hostile_setting
+from seal_cli.bench.reliability import FRAME, Case, hostile_setting
 
-__all__ = ["alfred2d_data", "attacker_cases", "hostile14_cases", "hostile15_cases", "rgba_png", "sparse_pgm"]
+__all__ = ["alfred2d_data", "attacker_cases", "hostile14_cases", "hostile15_cases", "hostile16_cases", "rgba_png",
+           "sparse_pgm"]
 
 DIGITS = "1" * 5_000
 """An integer longer than Python converts from text (4,300 digits)."""
@@ -280,6 +281,7 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
                says=r"x\.yaml")
     yield from hostile14_cases()
     yield from hostile15_cases()
+    yield from hostile16_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -430,3 +432,97 @@ def hostile15_cases() -> Iterator[Case]:
     yield Case("A a map written decomposed (e + U+0301) names the room a composed command reaches",
                ("plan", "--map", "m.yaml", "go to the caf\u00e9"), (decomposed, image), codes=(0,),
                keep=("m.yaml", "apartment.pgm"))
+
+
+def hostile16_cases() -> Iterator[Case]:
+    """Round hostile16: names from files read as rich markup or matplotlib mathematics, a place no plan can name, a
+    file named twice read twice, screen sizes no one can draw, comments of a written file broken by a name's line
+    break, and an output over a suite's data read after the outputs were planned."""
+    _, image, text, _, _, _, _ = hostile_setting()
+    kept = ("m.yaml", "apartment.pgm")
+
+    def named(old: str, new: str) -> tuple[tuple[str, bytes], tuple[str, bytes]]:
+        assert old in text, f"the apartment changed: update the hostile16 case for {old!r}"
+        return ("m.yaml", text.replace(old, new).encode()), image
+
+    markup = named("bedroom", "'[/]bed[bold]x'")
+    for argv in (("map", "m.yaml"), ("localize", "--map", "m.yaml", "--task", "find the spoon", "--steps", "1",
+                                     "--particles", "20"),
+                 ("run", "--map", "m.yaml", "find the spoon", "--particles", "20")):
+        yield Case(f"A a room called '[/]bed[bold]x' (rich markup): {argv[0]}", argv, markup, codes=(0,), keep=kept)
+    yield Case("A an answer naming a place 'fridge[/]': refused at the place's line",
+               ("run", "--map", "m.yaml", "what is in the fridge"), named("fridge_1", "'fridge[/]'"), codes=(1,),
+               keep=kept, says=r"m\.yaml:\d+:\d+: place name 'fridge\[/\]' is not")
+    yield Case("A a place class 'si|nk': validate", ("validate", "m.yaml"), named("class: sink", "class: 'si|nk'"),
+               codes=(1,), keep=kept, says=r"m\.yaml:\d+:\d+: place sink_1: class 'si\|nk' is not")
+    zap = ("z.yaml", b"frame: Zap\ndescription: '[/] zap [bold]'\nlexical_units: [zap]\n"
+                     b"elements: {theme: {type: object}}\nactions: [navigate(theme)]\n"
+                     b"postconditions: [looked_at(theme)]\n")
+    for shown in ("Zap", ""):
+        yield Case(f"A a frame described in rich markup: {shown or 'the table'}",
+                   ("frames", "--framelib", "+z.yaml", *([shown] if shown else [])), (zap,), codes=(0,),
+                   keep=("z.yaml",))
+    dollars = named("bedroom", "'$x^$'")
+    yield Case("A a room called '$x^$' (mathematics to matplotlib): map --png", ("map", "m.yaml", "--png", "o.png"),
+               dollars, codes=(0,), keep=kept, whole=("o.png",))
+    yield Case("A a room called '$x^$': localize --png", ("localize", "--map", "m.yaml", "--task", "find the spoon",
+                                                         "--steps", "1", "--particles", "20", "--png", "o.png"),
+               dollars, codes=(0,), keep=kept, whole=("o.png",))
+    yield Case("A a room called '$\\frac{$': run --png", ("run", "--map", "m.yaml", "find the spoon", "--particles",
+                                                          "20", "--png", "o.png"),
+               named("bedroom", "'$\\frac{$'"), codes=(0,), keep=kept, whole=("o.png",))
+    stir = ("s.frame", FRAME.encode())
+    yield Case("A a frame file named twice: validate", ("validate", "s.frame", "s.frame", "l.frame"),
+               (stir, ("l.frame", "link:s.frame")), codes=(0,), keep=("s.frame",))
+    yield Case("A a frame file named twice: --framelib", ("frames", "--framelib", "s.frame", "--framelib", "."),
+               (stir,), codes=(0,), keep=("s.frame",))
+    digits = "1" * 5_000
+    for name, value in (("COLUMNS", "1000000000"), ("TERMINAL_WIDTH", "abc"), ("COLUMNS", digits),
+                        ("LINES", digits), ("TERMINAL_WIDTH", "1000000000")):
+        shown = value if len(value) < 20 else f"{len(value):,} digits"
+        yield Case(f"A {name}={shown}: --help", ("--help",), codes=(0,), env=((name, value),))
+        yield Case(f"A {name}={shown}: a usage error", ("localize", "--map", "apartment", "--steps", "x"), codes=(2,),
+                   env=((name, value),), says="--steps")
+    yield Case("A plan --pddl of a command of two lines: both files PDDL",
+               ("plan", "stir the cup\nthen open the fridge", "--pddl", "out"), (("out", "dir"),), codes=(0,),
+               whole=("out/domain.pddl", "out/problem.pddl"))
+    data = alfred2d_data(None, None)
+    tasks = ("bench", "tasks", "--data", "d", "--policies", "sefm", "--jobs", "1", "--particles", "20", "--episodes")
+    for target, extra in (("d/floorplans.json", ()), ("d/trials_train.jsonl", ()),
+                          ("d/t.json", (("d/t.json", "link:trials_valid_seen.jsonl"),))):
+        yield Case(f"A bench tasks --episodes onto its data: {target}", (*tasks, target), (*data, *extra), codes=(1,),
+                   keep=tuple(n for n, _ in data), says=r"--episodes d/\S+ would overwrite the input d/", timeout=120)
+    yield Case("A a DSL element named in other letters ('thème')", ("validate", "k.frame"),
+               (("k.frame", "category cup = cup\nframe Zap \"zap\" { thème: cup do navigate(thème) }\n".encode()),),
+               codes=(1,), keep=("k.frame",), says=r"k\.frame:2:21: syntax error: a name in a \.frame file is written")
+    yield Case("A a lexical unit in other letters ('zäp')", ("validate", "k.frame"),
+               (("k.frame", "frame Zap \"zäp\" { }\n".encode()),), codes=(1,), keep=("k.frame",),
+               says=r"k\.frame:1:11: lexical unit 'zäp' must be one or more words of letters a-z")
+    yield Case("A a room whose name holds ESC and CR: map", ("map", "m.yaml"),
+               named("bedroom", '"bed\\e[31mroom\\r"'), codes=(0,), keep=kept)
+    yield Case("A validate a map whose name has no .yaml (my_map)", ("validate", "my_map"),
+               (("my_map", text.encode()), image), codes=(0,), keep=("my_map", "apartment.pgm"))
+    yield Case("A parse --file of 100,000 blank lines (each refused)", ("parse", "--file", "c.txt", "--json"),
+               (("c.txt", b"\n" * 100_000),), codes=(0,), keep=("c.txt",))
+    yield from _bag_names()
+
+
+def _bag_names() -> Iterator[Case]:
+    """import-bag of a bag whose name holds a line break or a byte that is not UTF-8: the file reads back."""
+    try:
+        import rosbags  # noqa: F401
+    except ImportError:
+        return
+    import tempfile
+    from pathlib import Path
+
+    from seal_cli.bench.ros import write_run
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+
+    with tempfile.TemporaryDirectory() as folder:
+        write_run(Path(folder) / "run.mcap", load_map(map_path("apartment")), 20, 5, np.random.default_rng(0))
+        bag = (Path(folder) / "run.mcap").read_bytes()
+    for name in ("r\nx: [.mcap", "r\u2028x.mcap", "r\udcffz.mcap"):
+        yield Case(f"A import-bag of a bag called {name!r}: the file reads back", ("import-bag", name, "-o", "o.yaml"),
+                   ((name, bag),), codes=(0,), keep=(name,), whole=("o.yaml",))

@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, Any
 import typer
 
 from seal_cli.cli import FramelibOption, JsonOption, command, emit_json, err, framelib_paths, out
+from seal_cli.cli.output import plain
 
 if TYPE_CHECKING:
     from seal_cli.frames.model import Frame
@@ -53,15 +54,15 @@ def frames(
         table.add_column(style="bold")
         table.add_column()
         data = frame_json(frame)
-        table.add_row("frame", frame.name)
+        table.add_row("frame", plain(frame.name))
         for key in ("description", "framenet", "source"):
             if data[key]:
-                table.add_row(key, str(data[key]))
-        table.add_row("lexical units", ", ".join(data["lexical_units"]))
-        table.add_row("elements", "\n".join(
-            f"{e.role}: {e.type}" + (f" (default {e.default})" if e.default else "") for e in frame.elements))
+                table.add_row(key, plain(data[key]))
+        table.add_row("lexical units", plain(", ".join(data["lexical_units"])))
+        table.add_row("elements", plain("\n".join(
+            f"{e.role}: {e.type}" + (f" (default {e.default})" if e.default else "") for e in frame.elements)))
         for key in ("preconditions", "actions", "postconditions"):
-            table.add_row(key, "\n".join(f"{i + 1}. {x}" for i, x in enumerate(data[key])) or "—")
+            table.add_row(key, plain("\n".join(f"{i + 1}. {x}" for i, x in enumerate(data[key]))) or "—")
         out.print(table)
         return
     if as_json:
@@ -71,9 +72,9 @@ def frames(
     for column in ("frame", "lexical units", "elements", "preconditions", "postconditions"):
         table.add_column(column, overflow="fold")
     for frame in library:
-        table.add_row(frame.name, ", ".join(u.text for u in frame.lexical_units), _elements(frame),
-                      ", ".join(map(str, frame.preconditions)) or "—",
-                      ", ".join(map(str, frame.postconditions)) or "—")
+        table.add_row(plain(frame.name), plain(", ".join(u.text for u in frame.lexical_units)), plain(_elements(frame)),
+                      plain(", ".join(map(str, frame.preconditions))) or "—",
+                      plain(", ".join(map(str, frame.postconditions))) or "—")
     out.print(table)
 
 

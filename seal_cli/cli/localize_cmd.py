@@ -32,23 +32,25 @@ def show(result: dict[str, Any]) -> None:
     """The frames and objects as two tables: top rooms, modes, best point."""
     from rich.table import Table
 
+    from seal_cli.cli.output import plain
     from seal_cli.sefm.shown import modes_text, point, rooms_text
 
-    frames = Table(title=f"frames on {result['map']} after {result['updates']} updates "
+    frames = Table(title=f"frames on {plain(result['map'])} after {result['updates']} updates "
                          f"({result['particles']} particles, seed {result['seed']})", title_justify="left")
     for column in ("frame", "rooms", "modes (weight room)", "best", "ess"):
         frames.add_column(column, overflow="fold")
     for f in result["frames"]:
         name = f"{f['frame']}({', '.join(f'{r}={v}' for r, v in f['elements'].items())})"
-        frames.add_row(name, rooms_text(f["rooms"]) or "—", modes_text(f["modes"]) or "—", point(f["best"]),
-                       f"{f['ess']:.0f}")
+        frames.add_row(plain(name), plain(rooms_text(f["rooms"])) or "—", plain(modes_text(f["modes"])) or "—",
+                       point(f["best"]), f"{f['ess']:.0f}")
     if result["frames"]:
         out.print(frames)
     objects = Table(title="objects", title_justify="left")
     for column in ("class", "rooms", "modes (weight room)", "best"):
         objects.add_column(column, overflow="fold")
     for o in result["objects"]:
-        objects.add_row(o["class"], rooms_text(o["rooms"]) or "—", modes_text(o["modes"]) or "—", point(o["best"]))
+        objects.add_row(plain(o["class"]), plain(rooms_text(o["rooms"])) or "—", plain(modes_text(o["modes"])) or "—",
+                        point(o["best"]))
     if result["objects"]:
         out.print(objects)
 

@@ -8,6 +8,7 @@ from typing import Any
 import typer
 
 from seal_cli.cli import MAX_COUNT, JsonOption, bench_app, command, emit_json, err, out
+from seal_cli.cli.output import plain, styled
 
 
 def summary(m: Any) -> dict[str, Any]:
@@ -39,34 +40,35 @@ def show(data: dict[str, Any]) -> None:
     from rich.table import Table
 
     grid = data["grid"]
-    out.print(f"[bold]{data['name']}[/bold]  bounds {data['bounds']}  grid {grid['shape'][1]}×{grid['shape'][0]} "
-              f"at {grid['resolution']:g} m  free {data['free_area']:.1f} m²")
-    rooms = Table("room", "area m²", "free m²", *data["priors"], title="rooms and prior mass per room")
+    out.print(f"{styled('bold', data['name'])}  bounds {data['bounds']}  "
+              f"grid {grid['shape'][1]}×{grid['shape'][0]} at {grid['resolution']:g} m  "
+              f"free {data['free_area']:.1f} m²")
+    rooms = Table("room", "area m²", "free m²", *map(plain, data["priors"]), title="rooms and prior mass per room")
     for room in data["rooms"]:
         masses = [f"{p['rooms'][room['name']]:.2f}" for p in data["priors"].values()]
-        rooms.add_row(room["name"], f"{room['area']:.1f}", f"{room['free_area']:.1f}", *masses)
+        rooms.add_row(plain(room["name"]), f"{room['area']:.1f}", f"{room['free_area']:.1f}", *masses)
     out.print(rooms)
     if data["places"]:
         places = Table("place", "class", "at", "room", "state")
         for p in data["places"]:
             state = ("open" if p["open"] else "closed") if p["openable"] else ""
-            places.add_row(p["name"], p["class"], _xy(p["at"]), p["room"] or "—", state)
+            places.add_row(plain(p["name"]), plain(p["class"]), _xy(p["at"]), plain(p["room"] or "—"), state)
         out.print(places)
     if data["objects"]:
         objects = Table("object", "at", "room", "in")
         for o in data["objects"]:
-            objects.add_row(o["class"], _xy(o["at"]), o["room"], o["in"] or "")
+            objects.add_row(plain(o["class"]), _xy(o["at"]), plain(o["room"]), plain(o["in"] or ""))
         out.print(objects)
     if data["people"]:
         people = Table("person", "at", "room", "role")
         for p in data["people"]:
-            people.add_row(p["name"], _xy(p["at"]), p["room"], ", ".join(p["roles"]))
+            people.add_row(plain(p["name"]), _xy(p["at"]), plain(p["room"]), plain(", ".join(p["roles"])))
         speaker = data["speaker"]
-        people.add_row("(speaker: me)", _xy(speaker["at"]), speaker["room"], ", ".join(speaker["roles"]))
+        people.add_row("(speaker: me)", _xy(speaker["at"]), plain(speaker["room"]), plain(", ".join(speaker["roles"])))
         out.print(people)
     robot, sensor = data["robot"], data["sensor"]
-    out.print(f"robot at {_xy(robot['pose'][:2])} yaw {robot['pose'][2]:g} in {robot['room']}, holding "
-              f"{robot['holding'] or 'nothing'}; sensor {sensor['range']:g} m, {sensor['fov']:g}°, "
+    out.print(f"robot at {_xy(robot['pose'][:2])} yaw {robot['pose'][2]:g} in {plain(robot['room'])}, holding "
+              f"{plain(robot['holding'] or 'nothing')}; sensor {sensor['range']:g} m, {sensor['fov']:g}°, "
               f"p_detect {sensor['p_detect']:g}, σ {sensor['sigma']:g} m")
 
 
@@ -129,7 +131,7 @@ def bench_maps(
     if as_json:
         emit_json(result)
         return
-    out.print(f"{result['map']}: grid {result['grid'][1]}×{result['grid'][0]} at {result['resolution']:g} m, "
+    out.print(f"{plain(result['map'])}: grid {result['grid'][1]}×{result['grid'][0]} at {result['resolution']:g} m, "
               f"load {result['load_ms']:.1f} ms, visible region {result['visible_region_ms']:.1f} ms "
               f"({result['rays']} rays)")
     table = Table("query", "points", "ms per call", "points per second")

@@ -9,8 +9,9 @@ from __future__ import annotations
 
 import contextlib
 import os
+import re
 import sys
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, MutableMapping
 from typing import TYPE_CHECKING, Any
 
 from seal_cli.errors import SealError, SealErrors, readable
@@ -18,8 +19,8 @@ from seal_cli.errors import SealError, SealErrors, readable
 if TYPE_CHECKING:
     from rich.console import Console
 
-__all__ = ["PIPE_WIDTH", "LazyConsole", "dump_json", "emit_json", "err", "out", "printable_streams", "progress_bar",
-           "report", "run_command"]
+__all__ = ["PIPE_WIDTH", "LazyConsole", "dump_json", "emit_json", "err", "out", "plain", "printable_streams",
+           "progress_bar", "report", "run_command", "sane_sizes", "styled"]
 
 PIPE_WIDTH = 200
 """Columns of the output when it is not a terminal (a file, a pipe) and ``COLUMNS`` is not set."""
@@ -65,8 +66,38 @@ class LazyConsole:
         return getattr(self.console, name)
 
 
-out = LazyConsole(soft_wrap=True, highlight=False)
-err = LazyConsole(stderr=True, soft_wrap=True, highlight=False)
+# emoji=False: rich turns ':pile_of_poo:' into 💩, and a room so called was shown as one (hostile16)
+out = LazyConsole(soft_wrap=True, highlight=False, emoji=False)
+err = LazyConsole(stderr=True, soft_wrap=True, highlight=False, emoji=False)
+
+_TAG = re.compile(r"(\\*)(\[[a-z#/@][^[]*?])")
+"""What rich's markup reads as a tag (``rich.markup.RE_TAGS``), with the backslashes before it."""
+
+
+_CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f]")
+"""Control characters but newline and tab: a name holding ESC (YAML's ``"\\e[31m"``) reached the terminal as an
+escape sequence of its own."""
+
+
+def _shown(text: object) -> str:
+    return _CONTROL.sub(lambda m: m[0].encode("unicode_escape").decode("ascii"), str(text))
+
+
+def plain(text: object) -> str:
+    """``text`` as rich markup that prints as it is written. Names come from files (a room called ``[/]``, a
+    frame described ``[bold]``): put into a table or a styled line unescaped, rich read them as styles, printed
+    them wrong or failed with a ``MarkupError`` traceback (hostile16). Unlike ``rich.markup.escape``, a
+    trailing backslash is left single: nothing follows it (:func:`styled` for text a tag follows). Control
+    characters (ESC, CR) are written as escapes (``\\x1b``), never sent to the terminal."""
+    return _TAG.sub(lambda m: f"{m[1]}{m[1]}\\{m[2]}", _shown(text))
+
+
+def styled(style: str, text: object) -> str:
+    """``text`` in ``style``, as rich markup that prints the text as it is written."""
+    from rich.markup import escape
+
+    return f"[{style}]{escape(_shown(text))}[/{style}]"
+
 
 def report(error: SealError) -> None:
     """Print a SealError (or each of several) on stderr, plainly."""
@@ -186,6 +217,30 @@ def _unicode(stream: Any) -> bool:
     """Whether a stream's encoding holds every character (UTF-8, -16 or -32)."""
     encoding = (getattr(stream, "encoding", None) or "utf-8").lower().replace("-", "").replace("_", "")
     return encoding.startswith("utf")
+
+
+MAX_COLUMNS = 1_000
+"""The widest (and tallest) screen seal draws for. rich and typer take ``COLUMNS``, ``LINES`` and typer's
+``TERMINAL_WIDTH`` as they come: ``COLUMNS=1000000000 seal --help`` drew its boxes a billion characters wide
+(8.8 GB before it was killed), a usage error under ``COLUMNS=10000000`` was 70 MB of stderr."""
+
+SIZE_VARIABLES = ("COLUMNS", "LINES", "TERMINAL_WIDTH")
+
+
+def sane_sizes(environ: MutableMapping[str, str] = os.environ) -> None:
+    """The screen's size as the environment gives it, made one seal can draw: a size past :data:`MAX_COLUMNS` is
+    taken as that; one that is no positive integer is dropped, as rich drops ``COLUMNS=abc`` (typer's own
+    ``int(TERMINAL_WIDTH)`` of ``abc``, and rich's of ``COLUMNS`` or ``LINES`` of 5,000 digits, were
+    ``ValueError`` tracebacks before any command ran)."""
+    for name in SIZE_VARIABLES:
+        value = environ.get(name)
+        if value is None:
+            continue
+        text = value.strip()
+        if not (text.isascii() and text.isdigit()) or not text.strip("0"):
+            del environ[name]
+        elif len(text.lstrip("0")) > len(str(MAX_COLUMNS)) or int(text) > MAX_COLUMNS:
+            environ[name] = str(MAX_COLUMNS)
 
 
 def printable_streams() -> None:

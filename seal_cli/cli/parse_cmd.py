@@ -172,7 +172,7 @@ def bench_parse(
         # the constants are checked before the scorer reads them (a FIFO there would hang it)
         runs.append((path, argv, _alfred_vocabulary(Path(argv[2])) if path.suffix == ".tsv" else None))
     for path, argv, vocab in runs:
-        err.print(f"scoring {path} ...")
+        err.print(f"scoring {path} ...", markup=False)
         run = subprocess.run([sys.executable, *argv, "--seal", seal, *(["--json"] if as_json else [])],
                              capture_output=True, text=True)
         if run.returncode and "Traceback (most recent call last)" in run.stderr:  # it crashed (exit 1 is a low score)

@@ -20,6 +20,7 @@ from seal_cli.cli import (
     one_held,
     out,
 )
+from seal_cli.cli.output import plain, styled
 from seal_cli.cli.parse_cmd import VocabularyOption, vocabulary_from
 from seal_cli.planning.plan import MAX_NODES, Plan
 
@@ -52,13 +53,13 @@ def show(plan: Plan) -> None:
     for column in ("number", "frame", "elements", "because"):
         table.add_column(justify="right" if column == "number" else "left")
     for i, step in enumerate(plan.steps, 1):
-        elements = ", ".join(f"{role}={value}" for role, value in step.elements.items())
-        frame = f"[bold]{step.frame}[/bold]" if step.commanded else step.frame
-        because = f"[dim]← {step.because}[/dim]" if step.because else ""
+        elements = plain(", ".join(f"{role}={value}" for role, value in step.elements.items()))
+        frame = styled("bold", step.frame) if step.commanded else plain(step.frame)
+        because = styled("dim", f"← {step.because}") if step.because else ""
         table.add_row(f"{i}.", frame, elements, because)
     out.print(table)
-    out.print(f"[dim]state:[/dim] {', '.join(map(str, plan.initial)) or '—'}")
-    out.print(f"[dim]goal:[/dim]  {', '.join(map(str, plan.goal)) or '—'}")
+    out.print(f"[dim]state:[/dim] {plain(', '.join(map(str, plan.initial))) or '—'}")
+    out.print(f"[dim]goal:[/dim]  {plain(', '.join(map(str, plan.goal))) or '—'}")
 
 
 @command("plan")
@@ -96,7 +97,7 @@ def plan(
 
             write_pddl(pddl, library, result, files=outputs)
     for warning in result.warnings:
-        err.print(f"[yellow]warning:[/yellow] {warning}", markup=True)
+        err.print(f"[yellow]warning:[/yellow] {plain(warning)}", markup=True)
     if as_json:
         emit_json(result.to_json())
     else:
@@ -139,12 +140,12 @@ def bench_plan(
         emit_json({"map": world.name if world else None, "repeat": repeat,
                    "commands": [asdict(r) for r in rows], "slowest": asdict(slowest)})
         return
-    table = Table(title=f"parse + ground + plan, median of {repeat}" + (f", map {world.name}" if world else ""),
+    table = Table(title=f"parse + ground + plan, median of {repeat}" + (f", map {plain(world.name)}" if world else ""),
                   title_justify="left")
     for column in ("ms", "plan ms", "nodes", "steps", "commanded", "command"):
         table.add_column(column, justify="left" if column == "command" else "right", overflow="fold")
     for row in rows:
         table.add_row(f"{row.ms:.2f}", f"{row.plan_ms:.2f}", str(row.nodes), str(row.steps), str(row.commanded),
-                      row.text)
+                      plain(row.text))
     out.print(table)
     out.print(f"slowest: {slowest.ms:.2f} ms — {slowest.text}", markup=False)

@@ -25,6 +25,7 @@ from seal_cli.cli import (
     one_held,
     out,
 )
+from seal_cli.cli.output import plain, styled
 from seal_cli.sim.policies import DEFAULT_POLICIES, POLICIES
 from seal_cli.sim.unsearched import SEARCH_END
 
@@ -40,8 +41,7 @@ def _narrate(record: Any) -> None:
         return
     style = KIND_STYLE.get(record.kind, "")
     where = f"[dim]({record.pose[0]:.2f}, {record.pose[1]:.2f}) {record.path_m:6.2f} m[/dim]"
-    text = record.text.replace("[", r"\[")
-    out.print(f"{where}  [{style}]{text}[/{style}]" if style else f"{where}  {text}")
+    out.print(f"{where}  {styled(style, record.text)}" if style else f"{where}  {plain(record.text)}")
 
 
 def read_clock(text: str | None) -> datetime | None:
@@ -133,7 +133,7 @@ def run(
                        "steps": skills.steps, "skills": skills.history,
                        "proposed_unafforded": skills.proposed_unafforded, "never_seen": skills.never_seen})
         else:
-            out.print(f"{'said done' if skills.completed else skills.reason} — {skills.path_m:.2f} m driven, "
+            out.print(f"{'said done' if skills.completed else plain(skills.reason)} — {skills.path_m:.2f} m driven, "
                       f"{skills.steps} steps")
         if not skills.completed:
             raise typer.Exit(1)
@@ -165,9 +165,9 @@ def run(
                                                                           else {})} for r in result.records]})
     else:
         if result.answer:
-            out.print(f"[bold]answer:[/bold] {result.answer}", markup=True)
+            out.print(f"[bold]answer:[/bold] {plain(result.answer)}", markup=True)
         verdict = "[bold green]done[/bold green]" if result.completed else \
-            f"[bold red]not done[/bold red]: {result.reason}"
+            f"[bold red]not done[/bold red]: {plain(result.reason)}"
         out.print(f"{verdict} — {result.path_m:.2f} m driven, {result.steps} steps")
     if not result.completed:
         raise typer.Exit(1)
@@ -254,12 +254,14 @@ def tasks(
         if suite != "map" and not data.is_dir():
             raise SealError(f"the {suite} suite's data is not at {data}, the default beside a checkout of seal (an "
                             "installed seal has no data): give --data DIR")
+    from seal_cli.bench import alfred2d
     from seal_cli.cli import OUTPUT_SUFFIXES
     from seal_cli.fileio import Outputs
     from seal_cli.resources import map_path
 
     the_map = map_path(map_name) if suite == "map" else None  # an input too: --episodes must not replace it
-    outputs = Outputs({"--episodes": episodes}, [data, the_map, *(framelib or [])], suffixes=OUTPUT_SUFFIXES)
+    read = alfred2d.data_files(data) if suite == "alfred2d" else []   # and the data's files (their folder is no file)
+    outputs = Outputs({"--episodes": episodes}, [data, the_map, *read, *(framelib or [])], suffixes=OUTPUT_SUFFIXES)
     outcomes: list[Outcome] = []
     with Progress(TextColumn("episodes"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), console=err.console,
                   transient=True, disable=not err.is_terminal) as progress:
@@ -318,11 +320,11 @@ def _table(report: dict[str, Any], names: list[str]) -> None:
     from rich.table import Table
 
     if report["suite"] == "map":
-        title = f"map {report['map']}, {report['layouts']} layouts: success rate / mean path (m)"
+        title = f"map {plain(report['map'])}, {report['layouts']} layouts: success rate / mean path (m)"
     elif report["suite"] == "context":
         title = f"context suite ({report['houses']} houses), {report['layouts']} layouts: success rate / mean path (m)"
     else:
-        title = f"ALFRED-2D {report['split']}, goals from {report['goal']}: success rate / mean path (m)"
+        title = f"ALFRED-2D {plain(report['split'])}, goals from {report['goal']}: success rate / mean path (m)"
     table = Table(title=title)
     table.add_column("task type" if report["suite"] == "alfred2d" else "command", no_wrap=True)
     table.add_column("n", justify="right", no_wrap=True)
@@ -339,14 +341,14 @@ def _table(report: dict[str, Any], names: list[str]) -> None:
         if expert_column:
             expert = figures.get("expert_path_m")
             cells.append(f"{expert:.2f}" if expert is not None else "—")
-        table.add_row(f"[bold]{group}[/bold]" if group == "all" else group, str(figures["n"]), *cells)
+        table.add_row(f"[bold]{group}[/bold]" if group == "all" else plain(group), str(figures["n"]), *cells)
     wide = 40 + 16 * len(names)
     if out.width >= wide:
         out.print(table)
     else:
         from rich.console import Console
 
-        Console(width=wide, highlight=False).print(table)
+        Console(width=wide, highlight=False, emoji=False).print(table)
 
 
 @command("e2e", on=bench_app)
@@ -399,10 +401,11 @@ def e2e(
     for name, g in report["groups"].items():
         plan_rate = f"{g['plan_right']}/{g['n']} ({g['plan_rate']:.3f})" if g["n"] else "—"
         run_rate = f"{g['run_completed']}/{g['runs']} ({g['run_rate']:.3f})" if g["runs"] else "—"
-        table.add_row(f"[bold]{name}[/bold]" if name == "all" else name, str(g["n"]), plan_rate, str(g["runs"]),
+        table.add_row(f"[bold]{name}[/bold]" if name == "all" else plain(name), str(g["n"]), plan_rate, str(g["runs"]),
                       run_rate)
     out.print(table)
     for miss in report["misses"]:
         what = "plan" if not miss["plan_right"] else "run"
         detail = miss["got"] if what == "plan" else miss["run_reason"]
-        out.print(f"[red]{what} miss[/red] {miss['map']}: {miss['text']!r} → {detail}", highlight=False)
+        out.print(f"[red]{what} miss[/red] {plain(miss['map'])}: {plain(repr(miss['text']))} → {plain(detail)}",
+                  highlight=False)

@@ -161,7 +161,8 @@ class LexicalUnit:
     def __post_init__(self) -> None:
         object.__setattr__(self, "text", normalize_unit(self.text))
         if not self.text or not all(re.fullmatch(r"[a-z][a-z'-]*", w) for w in self.words):
-            raise SealError(f"lexical unit {self.text!r} must be one or more words of letters", self.where)
+            raise SealError(f"lexical unit {self.text!r} must be one or more words of letters a-z (with ' or - "
+                            "inside)", self.where)
         if self.object is not None:
             _check_identifier("object", self.object, self.where)
         if not all(re.fullmatch(r"[a-z]+", p) for p in self.apart):

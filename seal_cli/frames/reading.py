@@ -86,7 +86,25 @@ def frame_files(paths: Iterable[str | Path]) -> tuple[list[Path], list[SealError
             files.append(path)
         else:
             problems.append(SealError(f"no such file or folder: {path}", Where(str(path))))
-    return files, problems
+    return _each_once(files), problems
+
+
+def _each_once(files: Iterable[Path]) -> list[Path]:
+    """Each file once, where it was first given: the same file named twice (``seal validate lib lib``,
+    ``--framelib +framelib`` of a checkout, a folder and a file in it, a link to it) was read twice, and every
+    frame and category in it reported as defined twice (526 problems for the standard library)."""
+    seen: set[object] = set()
+    once = []
+    for path in files:
+        try:
+            status = path.stat()
+            identity: object = (status.st_dev, status.st_ino)
+        except OSError:
+            identity = str(path)
+        if identity not in seen:
+            seen.add(identity)
+            once.append(path)
+    return once
 
 
 def read_files(files: Sequence[Path]) -> Contents:

@@ -7,15 +7,35 @@ imported inside the functions (it costs half a second).
 
 from __future__ import annotations
 
+import functools
+from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar, cast
 
 import numpy as np
 
 from seal_cli.maps.geometry import FREE, OCCUPIED
 from seal_cli.maps.model import Map
 
-__all__ = ["LABEL", "MARGIN", "declutter", "draw_map", "legend_below", "room_colour", "save_map_png", "shown_extent"]
+__all__ = ["LABEL", "MARGIN", "declutter", "draw_map", "legend_below", "room_colour", "save_map_png", "shown_extent",
+           "text_as_written"]
+
+_Drawing = TypeVar("_Drawing", bound=Callable[..., Any])
+
+
+def text_as_written(draw: _Drawing) -> _Drawing:
+    """``draw`` (a function that makes a picture) with every text of its figures written as it is: matplotlib
+    reads a text with two ``$`` in it as mathematics, so a room, place, class or map called ``$x^$`` (any name a
+    file gives) failed the picture with a ``ParseSyntaxException`` traceback, and ``cost $5 or $6`` was drawn as
+    italics."""
+    @functools.wraps(draw)
+    def drawn(*args: Any, **kwargs: Any) -> Any:
+        import matplotlib
+
+        with matplotlib.rc_context({"text.parse_math": False}):
+            return draw(*args, **kwargs)
+
+    return cast(_Drawing, drawn)
 
 LABEL = "seal-label"
 """The ``gid`` of the names written on a map; :func:`declutter` moves those that are annotations."""
@@ -179,6 +199,7 @@ def _label_point(m: Map, index: int) -> tuple[float, float, str, str]:
     return (float(best[0]), float(best[1]), "center", "center")
 
 
+@text_as_written
 def save_map_png(m: Map, path: str | Path, *, visible: bool = True, dpi: int = 120) -> None:
     """Write a picture of the map (with the robot's visible region) to ``path`` (whole or not at all)."""
     import matplotlib

@@ -190,9 +190,11 @@ class Place:
     def __post_init__(self) -> None:
         if not isinstance(self.name, str) or not class_key(self.name):
             raise SealError(f"a place needs a name, not {self.name!r}", self.where)
+        # a fact's argument: 'fridge[/]' validated, then failed every plan on the map without saying where
+        check_class_name(self.name, "place name", self.where)
         if not isinstance(self.cls, str) or not class_key(self.cls):
             raise SealError(f"place {self.name} needs a class", self.where)
-        object.__setattr__(self, "cls", class_key(self.cls))
+        object.__setattr__(self, "cls", check_class_name(self.cls, f"place {self.name}: class", self.where))
         object.__setattr__(self, "at", _xy(self.at, f"place {self.name}: at", self.where))
         object.__setattr__(self, "openable", bool(self.openable))
         object.__setattr__(self, "open", (not self.openable) if self.open is None else bool(self.open))

@@ -340,13 +340,20 @@ def domain_pddl(library: Library, plan: Plan, *, name: str = "seal") -> str:
     predicates = [f"({p}{''.join(f' ?x{i}' for i in range(n))})" for p, n in problem._predicates().items()]
     predicates += [f"({test_name(c)} ?x0)" for c in problem._tests()]
     types = " ".join(type_name(k) for k in problem.kinds.names())
-    lines = [f"; the frame library as a PDDL domain, written by seal for: {plan.text or 'a plan'}",
+    lines = [f"; the frame library as a PDDL domain, written by seal for: {_one_line(plan.text or 'a plan')}",
              f"(define (domain {name})",
              f"  (:requirements {requirements})",
              f"  (:types {types} - object)",
              "  (:predicates\n" + "".join(f"    {p}\n" for p in predicates) + "  )"]
     return "\n".join(lines) + "\n" + "".join(_action(frame, problem) for frame in library) + \
         "".join(_action(frame, problem, reading_name(frame)) for frame in readings(library, plan)) + ")\n"
+
+
+def _one_line(text: str) -> str:
+    """The command as the text of a ``;`` comment, which ends at the line's end: its line breaks (and every other
+    run of white space) one space, anything else unprintable an escape. "stir the cup\\nthen open the fridge"
+    left its second line outside the comment, and both files were PDDL no planner reads."""
+    return "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii") for c in " ".join(text.split()))
 
 
 def problem_pddl(library: Library, plan: Plan, *, name: str = "command", domain: str = "seal") -> str:
@@ -360,7 +367,7 @@ def problem_pddl(library: Library, plan: Plan, *, name: str = "command", domain:
     objects = "".join(f"    {' '.join(names)} - {type_name(kind)}\n" for kind, names in sorted(by_kind.items()))
     init = "".join(f"    {_atom(f, f.args, taxonomy)}\n" for f in problem.init)
     goal = _conjunction([_atom(f, f.args, taxonomy) for f in plan.goal], "  ")
-    return (f"; {plan.text or 'a plan'}\n(define (problem {name}) (:domain {domain})\n"
+    return (f"; {_one_line(plan.text or 'a plan')}\n(define (problem {name}) (:domain {domain})\n"
             f"  (:objects\n{objects}  )\n  (:init\n{init}  )\n  (:goal {goal})\n)\n")
 
 

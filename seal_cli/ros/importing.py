@@ -25,13 +25,13 @@ def _number(v: float) -> str:
 
 def observations_text(run: Run, source: str, frame: str) -> str:
     """The YAML text of an observations file holding the run."""
-    lines = [f"# seal import-bag {source}: {len(run.observations)} detection messages on {run.detections_topic}, "
-             f"poses from {run.pose_source}, frame {frame}", "observations:"]
+    lines = [_comment(f"# seal import-bag {source}: {len(run.observations)} detection messages on "
+                      f"{run.detections_topic}, poses from {run.pose_source}, frame {frame}"), "observations:"]
     for obs, stamp in zip(run.observations, run.stamps, strict=True):
         where = str(obs.where).rsplit(" ", 3)
         place = " ".join(where[-3:]) if len(where) == 4 else ""
         pose = ", ".join(_number(v) for v in obs.pose)
-        lines.append(f"  - pose: [{pose}]   # t = {stamp:.3f} s, {place}".rstrip(", "))
+        lines.append(_comment(f"  - pose: [{pose}]   # t = {stamp:.3f} s, {place}".rstrip(", ")))
         if not obs.detections:
             lines.append("    detections: []")
             continue
@@ -39,6 +39,13 @@ def observations_text(run: Run, source: str, frame: str) -> str:
         for cls, (x, y) in obs.detections:
             lines.append(f"      - {{class: {_quoted(cls)}, at: [{_number(x)}, {_number(y)}]}}")
     return "\n".join(lines) + "\n"
+
+
+def _comment(line: str) -> str:
+    """One line of the file, its comment's characters that would end the line (a newline or YAML's other line
+    breaks, U+0085, U+2028, U+2029) or that YAML refuses written as escapes: a bag called ``r\\nx: [.mcap``, or a
+    topic so named, made the comment's rest a line of YAML, and the file seal wrote could not be read back."""
+    return "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii") for c in line)
 
 
 def _quoted(name: str) -> str:

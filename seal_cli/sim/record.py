@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 
 from seal_cli.fileio import atomic_output
+from seal_cli.maps.drawing import text_as_written
 from seal_cli.sim.agent import Agent, Record
 
 __all__ = ["write_png", "write_rrd"]
@@ -150,6 +151,7 @@ def write_rrd(path: str | Path, agent: Agent) -> None:
         stream.disconnect()
 
 
+@text_as_written
 def write_png(path: str | Path, agent: Agent, title: str = "") -> None:
     """The map, the robot's path and where it acted; when the policy kept belief clouds, two panels:
     the belief of a step after its last look (the last step that served another frame, such as

@@ -8,7 +8,13 @@ from pathlib import Path
 import pytest
 
 from seal_cli.bench.reliability import hostile_cases, issue_cases, run_case
-from seal_cli.bench.reliability_attacker import alfred2d_data, attacker_cases, hostile15_cases, sparse_pgm
+from seal_cli.bench.reliability_attacker import (
+    alfred2d_data,
+    attacker_cases,
+    hostile15_cases,
+    hostile16_cases,
+    sparse_pgm,
+)
 from seal_cli.bench.reliability_outsider import outsider_cases
 from seal_cli.bench.reliability_review import cases, review_cases
 from seal_cli.bench.reliability_users import user_cases
@@ -64,3 +70,34 @@ def test_picked_hostile15_cases_end_cleanly(name: str) -> None:
     start, the command, the vocabulary), the current folder read as frames, /dev/zero called missing."""
     outcome = run_case(next(c for c in hostile15_cases() if c.name == name))
     assert outcome.problems == []
+
+
+@pytest.mark.parametrize("name", ["A a room called '[/]bed[bold]x' (rich markup): map",
+                                  "A a room called '$x^$' (mathematics to matplotlib): map --png",
+                                  "A a frame file named twice: validate", "A TERMINAL_WIDTH=abc: a usage error",
+                                  "A plan --pddl of a command of two lines: both files PDDL",
+                                  "A bench tasks --episodes onto its data: d/floorplans.json"])
+def test_picked_hostile16_cases_end_cleanly(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Each failed on main: tracebacks (rich markup, matplotlib mathematics, typer's ``int(TERMINAL_WIDTH)``), a
+    frame file named twice reported as every frame defined twice, PDDL files with a line outside their comment,
+    the ALFRED-2D data replaced by the episodes. The commands run this tree's code (not an installed seal's)."""
+    from pathlib import Path
+
+    monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
+    outcome = run_case(next(c for c in hostile16_cases() if c.name == name))
+    assert outcome.problems == []
+
+
+def test_the_judge_reads_yaml_and_pddl_outputs_whole() -> None:
+    from pathlib import Path
+    from tempfile import TemporaryDirectory
+
+    from seal_cli.bench.reliability import _complete
+
+    with TemporaryDirectory() as folder:
+        for name, data, whole in (("o.yaml", b"observations: []\n", True), ("o.yaml", b"a: [\n", False),
+                                  ("d.pddl", b"; x\n(define (domain seal))\n", True),
+                                  ("d.pddl", b"; x\nthen y\n(define (domain seal))\n", False),
+                                  ("p.pddl", b"(define (problem c) (:domain seal)\n", False)):
+            (Path(folder) / name).write_bytes(data)
+            assert _complete(Path(folder) / name) is whole, (name, data)

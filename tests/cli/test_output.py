@@ -3,13 +3,14 @@
 from __future__ import annotations
 
 import errno
+import os
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
-from seal_cli.cli.output import run_command
+from seal_cli.cli.output import plain, run_command, styled
 
 
 def _raise(error: BaseException) -> int:
@@ -137,3 +138,84 @@ def test_an_interrupt_while_the_outputs_move_ends_with_them_in_place_and_success
         assert run_command(lambda: 0) == 0 and not fileio.committed()  # the next command starts afresh
     finally:
         signal.signal(signal.SIGINT, before)
+
+
+def test_plain_text_prints_as_written() -> None:
+    from rich.console import Console
+
+    console = Console(record=True, width=200, color_system=None)
+    for name in ("[/]bed[bold]x", "a\\[/]", "x\\", "[red]", "$x^$"):
+        console.print(plain(name))
+        assert console.export_text().rstrip("\n") == name
+    for name, shown in (("bed\x1b[31mroom\r", "bed\\x1b[31mroom\\r"), ("\x1b[bold]x\x9b", "\\x1b[bold]x\\x9b")):
+        console.print(plain(name))   # an escape sequence from a file never reaches the terminal
+        assert console.export_text().rstrip("\n") == shown
+        console.print(styled("bold", name))
+        assert console.export_text().rstrip("\n") == shown
+
+
+MARKUP_ROOM = "[/]bed[bold]x"
+"""A room name rich read as markup: ``seal map`` failed with a MarkupError traceback (hostile16)."""
+
+
+def _map_with(tmp_path: Path, old: str, new: str) -> Path:
+    from seal_cli.resources import map_path
+
+    text = map_path("apartment").read_text(encoding="utf-8")
+    assert old in text
+    (tmp_path / "apartment.pgm").write_bytes(map_path("apartment").with_suffix(".pgm").read_bytes())
+    path = tmp_path / "m.yaml"
+    path.write_text(text.replace(old, new), encoding="utf-8")
+    return path
+
+
+@pytest.mark.parametrize("argv", [
+    ["map", "{map}"],
+    ["localize", "--map", "{map}", "--task", "find the spoon", "--steps", "1", "--particles", "20"],
+    ["run", "--map", "{map}", "find the spoon", "--max-steps", "60"],
+])
+@pytest.mark.parametrize("room", [MARKUP_ROOM, ":pile_of_poo:"])   # rich's markup; rich's emoji code (shown as 💩)
+def test_names_from_a_map_are_printed_as_written(tmp_path: Path, argv: list[str], room: str) -> None:
+    m = _map_with(tmp_path, "bedroom", f"'{room}'")
+    done = subprocess.run([sys.executable, "-m", "seal_cli", *(a.format(map=m) for a in argv)], capture_output=True,
+                          text=True, check=False, env={**os.environ, "NO_COLOR": "1", "COLUMNS": "250"})
+    assert "Traceback" not in done.stderr
+    assert done.returncode in (0, 1), done.stderr
+    assert room in done.stdout or room.replace("_", " ") in done.stdout   # the narration says rooms in words
+
+
+def test_a_frame_described_in_markup_is_shown_as_written(tmp_path: Path) -> None:
+    library = tmp_path / "zap.yaml"
+    library.write_text("frame: Zap\ndescription: '[/] zap [bold]'\nlexical_units: [zap]\n"
+                       "elements: {theme: {type: object}}\nactions: [navigate(theme)]\n"
+                       "postconditions: [looked_at(theme)]\n", encoding="utf-8")
+    done = subprocess.run([sys.executable, "-m", "seal_cli", "frames", "--framelib", f"+{library}", "Zap"],
+                          capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    assert "[/] zap [bold]" in done.stdout
+
+
+@pytest.mark.parametrize(("environ", "after"), [
+    ({"COLUMNS": "1000000000"}, {"COLUMNS": "1000"}),
+    ({"COLUMNS": "1" * 5_000, "LINES": "9" * 5_000}, {"COLUMNS": "1000", "LINES": "1000"}),
+    ({"TERMINAL_WIDTH": "abc", "COLUMNS": "0", "LINES": "-3"}, {}),
+    ({"COLUMNS": " 120 ", "LINES": "40", "TERMINAL_WIDTH": "1000"}, {"COLUMNS": " 120 ", "LINES": "40",
+                                                                     "TERMINAL_WIDTH": "1000"}),
+])
+def test_screen_sizes_no_one_can_draw_are_bounded_or_dropped(environ: dict[str, str], after: dict[str, str]) -> None:
+    from seal_cli.cli.output import sane_sizes
+
+    sane_sizes(environ)
+    assert environ == after
+
+
+@pytest.mark.parametrize(("name", "value"), [("COLUMNS", "1000000000"), ("TERMINAL_WIDTH", "abc"),
+                                             ("COLUMNS", "1" * 5_000), ("LINES", "1" * 5_000)])
+def test_help_and_usage_errors_under_a_hostile_screen_size(name: str, value: str) -> None:
+    # a billion columns: 8.8 GB and no end; 'abc' (typer's int()) and 5,000 digits (rich's): tracebacks (hostile16)
+    env = {**os.environ, name: value}
+    for argv in (["--help"], ["localize", "--steps", "x"], ["map", "apartment"]):
+        done = subprocess.run([sys.executable, "-m", "seal_cli", *argv], capture_output=True, text=True,
+                              check=False, env=env, timeout=60)
+        assert "Traceback" not in done.stderr and done.returncode in (0, 2), done.stderr[-500:]
+        assert len(done.stdout) + len(done.stderr) < 100_000

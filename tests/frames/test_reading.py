@@ -54,7 +54,7 @@ def test_frame_files_sorts_each_folder_and_keeps_the_order_of_the_arguments(tmp_
     single.write_text("")
     files, problems = frame_files([single, tmp_path])
     assert problems == []
-    assert files == [single, tmp_path / "b.yaml", single, tmp_path / "sub" / "a.frame"]   # the folder's, sorted
+    assert files == [single, tmp_path / "b.yaml", tmp_path / "sub" / "a.frame"]   # the folder's, sorted; single once
 
 
 def test_frame_files_names_what_is_missing_or_empty(tmp_path: Path) -> None:
@@ -242,3 +242,15 @@ def test_a_folder_walk_passes_over_what_vanishes_and_does_not_follow_folder_link
     assert [p.relative_to(tmp_path).as_posix() for p in files] == ["lib/a.yaml", "lib/sub/b.frame"] and not problems
     files, problems = frame_files(["/proc"])  # processes end while it is walked: never "No such file"
     assert files == [] and [p.message for p in problems] == ["no frame files (*.yaml, *.frame) in folder /proc"]
+
+
+def test_a_file_named_twice_is_read_once(tmp_path: Path) -> None:
+    # the standard library given twice was 526 problems: every frame and category "defined twice" (hostile16)
+    (tmp_path / "link.yaml").symlink_to(framelib_dir() / "kitchen.yaml")
+    (tmp_path / "hard.yaml").hardlink_to(tmp_path / "link.yaml")
+    given = [framelib_dir(), framelib_dir(), framelib_dir() / "kitchen.yaml", tmp_path / "link.yaml",
+             tmp_path / "hard.yaml"]
+    files, problems = frame_files(given)
+    assert problems == [] and files == frame_files([framelib_dir()])[0]
+    library, problems = read_library(given)
+    assert problems == [] and len(library) == len(read_library([framelib_dir()])[0])

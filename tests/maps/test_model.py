@@ -302,12 +302,12 @@ def test_a_map_from_bounds_alone_is_all_free() -> None:
 def test_a_map_from_a_reachability_grid() -> None:
     lattice = np.array([[x, z] for x in np.arange(-1.0, 1.01, 0.25) for z in np.arange(0.0, 1.51, 0.25)])
     grid = OccupancyGrid.from_cells(lattice, 0.25)
-    m = Map("FloorPlan1", grid=grid, places=(Place("Fridge|1", "Fridge", (1.5, 0.5), openable=True),),
-            priors={"apple": {"fridge": 1.0}}, objects=(ObjectTruth("Apple", (1.5, 0.5), "Fridge|1"),),
+    m = Map("FloorPlan1", grid=grid, places=(Place("Fridge_1", "Fridge", (1.5, 0.5), openable=True),),
+            priors={"apple": {"fridge": 1.0}}, objects=(ObjectTruth("Apple", (1.5, 0.5), "Fridge_1"),),
             robot=Robot((0.0, 0.0, 0.0)))
     assert m.bounds == (grid.bounds[0], grid.bounds[1], 1.5, grid.bounds[3])  # the fridge is just off the grid
     assert m.free_area == pytest.approx(len(lattice) * 0.0625)
-    assert m.place("fridge|1").cls == "fridge" and m.objects[0].cls == "apple"
+    assert m.place("fridge_1").cls == "fridge" and m.objects[0].cls == "apple"
     near = sample_prior(m, "apple", 1000, np.random.default_rng(0))
     assert (np.hypot(near[:, 0] - 1.5, near[:, 1] - 0.5) < 1.2).mean() > 0.95
     assert m.line_of_sight((0.0, 0.0), [[1.5, 0.5]]).all()  # unknown cells (counters) do not block sight

@@ -213,3 +213,14 @@ def test_a_goal_said_on_is_put_on_top_without_opening_it(up: Any, library: Libra
     assert [s.frame for s in into.steps] == ["Pick", "Open", "Place"]
     assert [a.name for a in into.steps[-1].binding.actions] == ["navigate", "place"]
     assert "do_Place_on_top" not in domain_pddl(library, into)
+
+
+@pytest.mark.parametrize("text", ["stir the cup\nthen open the fridge", "stir the cup\u2028then open the fridge",
+                                  "stir the cup\u2029 \t then open the fridge"])
+def test_a_command_of_several_lines_stays_in_the_comment(library: Library, text: str) -> None:
+    # its second line stood outside the ';' comment: neither file was PDDL (hostile16)
+    result = plan_text(text, library)
+    for pddl in (domain_pddl(library, result), problem_pddl(library, result)):
+        first, second = pddl.splitlines()[:2]
+        assert first.startswith("; ") and first.endswith("stir the cup then open the fridge")
+        assert second.startswith("(define")

@@ -76,6 +76,18 @@ def test_import_bag_gives_the_same_beliefs_as_the_bag(tmp_path: Path) -> None:
     assert localize("--observations", str(out)) == localize("--bag", str(bag))
 
 
+@pytest.mark.parametrize("name", ["r\nx: [.mcap", "r\u2028x\x85y.mcap", "r\udcffz.mcap"])
+def test_import_bag_of_any_name_writes_a_file_that_reads_back(tmp_path: Path, name: str) -> None:
+    # the bag's name went into the file's first comment as it was: a newline made the rest of it a line of YAML
+    # (the file written could not be read back); a byte that is not UTF-8 was a UnicodeEncodeError (hostile16)
+    bag = kitchen_run(tmp_path / "run.mcap").rename(tmp_path / name)
+    out = tmp_path / "observations.yaml"
+    result = invoke("import-bag", str(bag), "-o", str(out))
+    assert result.exit_code == 0, result.output
+    assert len(read_observations(out)) == 10
+    assert out.read_text(encoding="utf-8").splitlines()[1] == "observations:"  # the comment is one line
+
+
 @pytest.mark.parametrize("name", ["goals.yaml", "goals.mcap", "goals.bag", "goals_db3"])
 def test_goals_read_back_as_pose_stamped(tmp_path: Path, name: str) -> None:
     bag = kitchen_run(tmp_path / "run.mcap")

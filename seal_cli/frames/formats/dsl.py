@@ -89,6 +89,10 @@ def _syntax_problem(exc: UnexpectedInput, text: str, file: str) -> SealError:
     label = _mistake(exc)
     if label:
         message = f"{label} (found {found if isinstance(exc, UnexpectedCharacters | UnexpectedToken) else 'the end'})"
+    odd = source[column - 1] if isinstance(exc, UnexpectedCharacters) and column and column <= len(source) else ""
+    if odd.isalpha() and not odd.isascii():   # 'thème' was "a comma is missing between two facts (found 'è')"
+        message = (f"a name in a .frame file is written in the letters A-Z and a-z, digits and '_' (found {odd!r}); "
+                   "a YAML frame file takes element, category and class names in any letters")
     return SealError(f"syntax error: {message}", Where(file, line, column), source_line=source)
 
 

@@ -24,6 +24,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from seal_cli.maps.drawing import text_as_written
 from seal_cli.sefm.observers.metrics import Trace
 
 if TYPE_CHECKING:
@@ -53,6 +54,7 @@ class PngDrawer:
         draw_beliefs(self.path, sefm, self.trace, dpi=self.dpi)
 
 
+@text_as_written
 def draw_beliefs(path: str | Path, sefm: SeFM, trace: Trace | None = None, dpi: int = 110) -> None:
     """Draw the beliefs of ``sefm`` (and the robot's ``trace``) into a PNG file at ``path``."""
     import matplotlib

@@ -30,6 +30,19 @@ def test_a_bad_name_is_refused_where_it_is() -> None:
     assert problem.line == 1 and problem.column == 7 and "capital letter" in problem.message
 
 
+def test_a_name_in_other_letters_says_so_not_that_a_comma_is_missing() -> None:
+    # 'thème' was "a comma is missing between two facts or actions (found 'è')" (hostile16)
+    (problem,) = read('frame Wave "wave" { thème: person\n do navigate(thème) }\n', "w.frame").problems
+    assert (problem.line, problem.column) == (1, 23)
+    assert problem.message.startswith("syntax error: a name in a .frame file is written in the letters A-Z and a-z")
+    assert "(found 'è')" in problem.message and "comma" not in problem.message
+
+
+def test_a_lexical_unit_in_other_letters_says_which_letters() -> None:
+    (problem,) = read('frame Wave "zäp" { theme: person\n do navigate(theme) }\n', "w.frame").problems
+    assert problem.message == "lexical unit 'zäp' must be one or more words of letters a-z (with ' or - inside)"
+
+
 def test_dump_reads_back_to_the_same_frames() -> None:
     library = standard_library()
     text = dump(list(library.frames), library.taxonomy)

@@ -219,3 +219,14 @@ def test_a_png_is_classified_by_bands_as_whole(tmp_path: Path, monkeypatch: pyte
     (tmp_path / "w.png").write_bytes(rgba_png(64))
     cells = map_server.read_image(tmp_path / "w.png")
     assert (cells[:, 32] == OCCUPIED).all() and (cells[:, 31] == FREE).all()
+
+
+def test_a_place_whose_name_or_class_no_plan_can_use_is_refused_at_its_line(tmp_path: Path) -> None:
+    # 'fridge[/]' validated, then every plan on the map failed: "argument 'fridge[/]' is not a name", unplaced
+    said = _problems(tmp_path, "places:\n  - {name: 'fridge[/]', class: fridge, at: [1, 1]}\n"
+                               "  - {name: sink_1, class: 'si|nk', at: [2, 2]}\n"
+                               "  - {name: Bed 1, class: bed, at: [3, 3]}\n")
+    assert said == [(4, "place name 'fridge[/]' is not a class name (letters, digits, '_' or spaces, not starting "
+                        "with a digit)"),
+                    (5, "place sink_1: class 'si|nk' is not a class name (letters, digits, '_' or spaces, not "
+                        "starting with a digit)")]
