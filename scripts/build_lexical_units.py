@@ -579,15 +579,6 @@ def prepositional(wordnet: WordNet, library: Library, closed: frozenset[str]) ->
     ("She *hunted for* her reading glasses"): the preposition picks the sense, whichever its rank. A particle
     ("out", "away") is left out: it changes the verb's meaning ("give out"), it does not select a sense."""
     units = {unit: [f.name for f in frames] for unit, frames in library.by_unit.items()}
-    def done_with(name: str, tools: list[str]) -> bool:
-        """Rule 11: a verb named for a tool ("mow": a mower; "saw", "drill") takes a frame with an instrument only
-        when one of the tools is of the instrument's type ("knife" as a verb, a cutter): "mow the lawn" is no
-        slicing with a knife, though WordNet's mow.v.01 is a way of cutting."""
-        frame = library.by_name[name]
-        instrument = next((e for e in frame.elements if e.role == "instrument"), None)
-        return instrument is None or not tools or any(
-            library.taxonomy.is_a(tool, instrument.type) is True for tool in tools)
-
     found = []
     for verb, (_, offsets) in sorted(wordnet.senses.items()):
         if verb in units or verb in closed or not verb.isalpha() or not in_verb_tables(verb):
