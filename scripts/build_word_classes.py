@@ -39,13 +39,14 @@ import sys
 import tempfile
 import zlib
 from collections import Counter
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import replace
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
+from seal_cli.frames.library import Library  # noqa: E402
 from seal_cli.frames.reading import load_library  # noqa: E402
 from seal_cli.frames.taxonomy import class_key  # noqa: E402
 from seal_cli.language.chooser import Instance, features, fit, logits, scene_features  # noqa: E402
@@ -160,12 +161,7 @@ def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
     class_context: Counts = {}
     number: Counts = {}
     said_phrases: list[Said] = []
-    for row in rows:
-        text = " ".join(row["goal_sentence"].split())
-        try:
-            parse = parse_command(text, library, rules)
-        except CommandError:
-            continue
+    for row, text, parse in parsed(rows, library, rules):
         words = context_words(text)
         plan = scenes.get(row["floor_plan"], frozenset())
         room = frozenset(class_key(c) for c in (*plan, *(row[k] for k in LABELS)) if c) if plan else frozenset()
@@ -333,12 +329,7 @@ def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabula
     put: list[tuple[str, tuple[str, ...]]] = []
     told: list[tuple[str, tuple[str, ...]]] = []
     spelling = {class_key(c): c for c in data["classes"]}  # type: ignore[union-attr]
-    for row in rows:
-        text = " ".join(row["goal_sentence"].split())
-        try:
-            parse = parse_command(text, library, grounded, infer_steps=False)
-        except CommandError:
-            continue
+    for row, text, parse in parsed(rows, library, grounded, infer_steps=False):
         if row["task_type"] in TASKS:
             told.append((row["task_type"], task_features(context_words(text), parse)))
         pair = coordinated(parse)
@@ -410,14 +401,8 @@ def with_stack_goals(data: dict[str, object], rows: Sequence[dict[str, str]], vo
     grounded = vocabulary.with_usage(usage_of(data))
     spelling = {class_key(c): c for c in data["classes"]}  # type: ignore[union-attr]
     went: list[tuple[str, tuple[str, ...]]] = []
-    for row in rows:
-        if row["task_type"] != STACK or class_key(row["receptacle"]) not in spelling:
-            continue
-        text = " ".join(row["goal_sentence"].split())
-        try:
-            parse = parse_command(text, library, grounded, infer_steps=False)
-        except CommandError:
-            continue
+    stacks = [r for r in rows if r["task_type"] == STACK and class_key(r["receptacle"]) in spelling]
+    for row, text, parse in parsed(stacks, library, grounded, infer_steps=False):
         at = uncarried(parse, library)
         if at is None:
             continue
@@ -496,6 +481,19 @@ def dump(data: dict[str, object]) -> str:
         text += f',\n "{name}": {{\n' + ",\n".join(f"  {json.dumps(w)}: {json.dumps(c)}" for w, c in rows.items())
         text += "\n }"
     return text + "\n}\n"
+
+
+def parsed(rows: Iterable[dict[str, str]], library: Library, vocabulary: Vocabulary,
+           infer_steps: bool = True) -> Iterator[tuple[dict[str, str], str, Parse]]:
+    """Each row whose goal sentence parses: (the row, its sentence on one line, its parse); a sentence the parser
+    refuses is left out."""
+    for row in rows:
+        text = " ".join(row["goal_sentence"].split())
+        try:
+            parse = parse_command(text, library, vocabulary, infer_steps=infer_steps)
+        except CommandError:
+            continue
+        yield row, text, parse
 
 
 def held_out(rows: Sequence[dict[str, str]], fraction: float, unit: str = "trials") -> set[str]:

@@ -30,14 +30,13 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "scripts"))
 
-from build_word_classes import fields, held_out, read_rows, wording  # noqa: E402
+from build_word_classes import fields, held_out, parsed, read_rows, wording  # noqa: E402
 
 from seal_cli.frames.reading import load_library  # noqa: E402
 from seal_cli.frames.taxonomy import class_key  # noqa: E402
 from seal_cli.language.chooser import Instance, features, fit, logits  # noqa: E402
 from seal_cli.language.grounding import Vocabulary  # noqa: E402
 from seal_cli.language.morphology import noun_lemma  # noqa: E402
-from seal_cli.language.parser import CommandError, parse_command  # noqa: E402
 from seal_cli.language.wordusage import WordUsage, context_words  # noqa: E402
 
 Said = dict[str, Any]
@@ -50,12 +49,7 @@ def phrases(rows: Sequence[dict[str, str]], held: set[str]) -> list[Said]:
     rules = Vocabulary.of(classes).with_usage(WordUsage())
     library = load_library()
     out: list[Said] = []
-    for row in rows:
-        text = " ".join(row["goal_sentence"].split())
-        try:
-            parse = parse_command(text, library, rules)
-        except CommandError:
-            continue
+    for row, text, parse in parsed(rows, library, rules):
         others = [p for f in parse.frames for p in f.elements.values()]
         for phrase, label in fields(parse, row):
             lemmas = wording(phrase)
