@@ -420,7 +420,7 @@ BODY = "29"
 """WordNet's lexicographer file of verbs of the body (verb.body: dressing, grooming, bodily care and functions)."""
 
 
-def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[str, str, str]]:
+def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[Any, ...]]:
     """(frame, unit, source) for every verb WordNet ties to a library verb (the module's rules)."""
     closed = closed_class_words()
     units = {unit: [f.name for f in frames] for unit, frames in library.by_unit.items()}
@@ -465,12 +465,36 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[str, str, s
         return instrument is None or not tools or any(
             library.taxonomy.is_a(tool, instrument.type) is True for tool in tools)
 
-    found = []
+    heads = {frame.name: frame.lexical_units[0].text for frame in library.frames if frame.lexical_units and
+             frame.elements and frame.elements[0].role == "theme" and frame.elements[0].type != "question" and
+             library.taxonomy.is_a(frame.elements[0].type, "person") is not True}
+
+    def named_for(verb: str, sense: str) -> list[tuple[str, str, str]]:
+        """Rule 12: a verb that is mostly a noun takes frame F when its first sense is the first sense of F's own
+        verb (the frame's first unit: "clean", "put", "open"), or a way of doing it (a hyponym): "dust" < clean.v.01,
+        "vacuum" < clean.v.01, "ladle" < put.v.01; F's first element a theme, a thing (no person, question, or a
+        goal: "wind the clock" is no Go, "tree the cat" no Guide). Marked ``opening``: the parser reads it only
+        opening an imperative clause before its object, where a noun cannot stand."""
+        if wordnet.domain[sense] == BODY:
+            return []
+        out = []
+        for synset in (sense, *wordnet.up[sense]):
+            for frame, head in heads.items():
+                if head in wordnet.senses and wordnet.senses[head][1][:1] == [synset] and \
+                        done_with(frame, wordnet.tools(verb, sense)):
+                    how = "=" if synset == sense else "<"
+                    out.append((frame, verb, f"wordnet:{wordnet.name(verb, sense)} {how} "
+                                             f"{wordnet.name(head, synset)} ({head}); mostly a noun", "", "",
+                                False, True))
+        return out
+
+    found: list[tuple[Any, ...]] = []
     for verb, (_, offsets) in sorted(wordnet.senses.items()):
         if verb in units or verb in closed or not verb.isalpha() or not offsets or not in_verb_tables(verb):
             continue
         if not wordnet.mostly_verb(verb):
-            continue                                       # mostly a noun ("cup", "table", "knife")
+            found.extend(named_for(verb, offsets[0]))     # mostly a noun ("cup", "table", "knife"): rule 12 only
+            continue
         for sense in wordnet.frequent(verb):
             body = wordnet.domain[sense] == BODY          # "undress" < take off: done to a body, not to a thing
             hit = next(((synset, h) for synset in (sense, *wordnet.up[sense])
@@ -490,7 +514,7 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[str, str, s
                 found.append((frame, verb, f"wordnet:{wordnet.name(verb, sense)} {how} "
                                            f"{wordnet.name(lemma, synset)} ({lemma})"))
             break
-    alone = {(frame, unit) for frame, unit, _ in found}       # "grope" is a Find already: "grope for" adds nothing
+    alone = {(frame, unit) for frame, unit, *_ in found}       # "grope" is a Find already: "grope for" adds nothing
     said_with = [u for u in prepositional(wordnet, library, closed) if (u[0], u[1].split()[0]) not in alone]
     return sorted(found + reflexive(wordnet, library, closed) + said_with)
 
@@ -759,6 +783,7 @@ def render(found: Sequence[tuple[str, ...]], header: str = HEADER) -> str:
         told = f", object: {said[0]}" if said and said[0] else ""
         told += f", apart: {json.dumps(said[1])}" if len(said) > 1 and said[1] else ""
         told += ", split: true" if len(said) > 2 and said[2] else ""
+        told += ", opening: true" if len(said) > 3 and said[3] else ""
         lines.append(f"  - {{frame: {frame}, unit: {unit}, source: {json.dumps(source)}{told}}}")
     return "\n".join(lines) + "\n"
 

@@ -149,7 +149,9 @@ class LexicalUnit:
     with no goal, the unit means "where such a thing is kept" ("put away", "store"), not "down here"
     (:func:`seal_cli.planning.problem.commanded_frames`). ``split``: said only with its particle alone after the
     object ("put the kettle *on*": the state it is put in, ToggleOn); joined ("put on the table", "put on your coat")
-    it is no such unit."""
+    it is no such unit. ``opening``: a verb that is mostly a noun ("dust", "vacuum", "ladle"), read as the unit only
+    opening an imperative clause before its object, where a noun cannot stand ("dust the shelf", not "put the dust
+    in the bin")."""
 
     text: str
     where: Where | None = field(default=None, compare=False, repr=False)
@@ -157,6 +159,7 @@ class LexicalUnit:
     apart: tuple[str, ...] = field(default=(), compare=False)
     stores: bool = field(default=False, compare=False)
     split: bool = field(default=False, compare=False)
+    opening: bool = field(default=False, compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "text", normalize_unit(self.text))

@@ -415,6 +415,9 @@ class Evoker:
         for host, pp in attached:
             if pp.describes and pp.prep in LOCATED and host.located is None:
                 host.located = pp.np             # "the dice *that's on the sofa*": where it is
+            elif host.located is None and pp.np.located is not None:
+                host.located = pp.np.located     # "the man in the red shirt waiting *at the door*": the participle
+                # read with the phrase that describes him says where he is
             if pp.after_relative and host.relative is not None:
                 host.relative = self.text[host.relative_start:pp.np.end]
                 continue

@@ -34,8 +34,10 @@ from seal_cli.language.english import (
     FINITE,
     NOMINATIVE,
     NP_OPENERS,
+    OBJECT_PRONOUNS,
     PARTICLES,
     PARTS,
+    POLITE,
     PREPOSITIONS,
     SEPARATOR_WORDS,
     SUBJECTS,
@@ -111,6 +113,9 @@ class Lexicon:
     people_only: frozenset[str] = frozenset()
     """Units of ``escorts`` that no frame with another first element has ("meet", "greet", "follow"; not "take",
     "bring"): what they take first is a person, whatever the word."""
+    opening: frozenset[str] = frozenset()
+    """Verbs that are mostly nouns (``opening: true`` in the library: "dust", "vacuum", "ladle"): a unit only
+    opening an imperative clause before its object (:func:`opens_before_object`), a noun anywhere else."""
 
     @classmethod
     def of(cls, library: Library) -> Lexicon:
@@ -144,7 +149,8 @@ class Lexicon:
         # "put the lid on": a part fitted to the thing it is made with ("lid", "cover", "door"), not switched on
         return cls({w: tuple(us) for w, us in units.items()}, _result_words(library),
                    tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts, apart, can, puts,
-                   stores, split, frozenset(unit.split()[0] for unit in split), people_only)
+                   stores, split, frozenset(unit.split()[0] for unit in split), people_only,
+                   frozenset(unit.text for frame in library.frames for unit in frame.lexical_units if unit.opening))
 
     @cached_property
     def verb_set(self) -> frozenset[str]:
@@ -169,6 +175,8 @@ class Lexicon:
                     return None                  # "slice of apple", "the light's": a noun ("how many of": a part)
                 if n > 1 and " ".join(unit) in self.split:
                     continue                     # "put on the table", "put on your coat": no unit said joined
+                if n == 1 and unit[0] in self.opening and not (first == unit[0] and opens_before_object(words, i)):
+                    continue                     # "put the dust in the bin": a noun; "dust the shelf": the verb
                 if n > 1 or not self._split(words, i, stop, candidates):
                     return " ".join(unit), n, None
                 break
@@ -230,6 +238,25 @@ class Lexicon:
                 match_phrase(words, j + 1, TIME_WORDS) > 0):     # "put the kettle on *right now*"
             return False                         # "put the kettle on *its* base": a possessive, not "it's"
         return noun_lemma(words[j - 1].lower) not in refused and words[j - 1].lower not in refused
+
+
+OPENERS = frozenset(w for w in (*SEPARATOR_WORDS, "to") if " " not in w) | {".", "!", "?"}
+"""The words after which an imperative clause opens ("and", "then", ",", "to": "I need you *to* dust the shelf"),
+besides the sentence's start and politeness ("please", "could you")."""
+
+
+def opens_before_object(words: Sequence[Word], i: int) -> bool:
+    """Whether the word at ``i`` stands where only a verb can: opening an imperative clause (the sentence's start,
+    after a joint, "to" or politeness) and right before a noun phrase's opener or an object pronoun ("dust *the*
+    shelf", "please vacuum *my* room", "ladle *it* into the bowl"). A noun is never followed by "the" there."""
+    if i + 1 >= len(words) or not (words[i + 1].lower in NP_OPENERS or words[i + 1].lower in OBJECT_PRONOUNS):
+        return False
+    if i == 0 or words[i - 1].lower in OPENERS:
+        return True
+    return any(tuple(w.lower for w in words[max(0, i - len(p)):i]) == p for p in POLITE_WORDS)
+
+
+POLITE_WORDS = tuple(tuple(phrase.split()) for phrase in POLITE)
 
 
 @lru_cache(maxsize=4096)

@@ -40,11 +40,12 @@ FRAME_KEYS = ("frame", "description", "framenet", "lexical_units", "elements", "
 ELEMENT_KEYS = ("type", "default")
 TOP_KEYS = ("frames", "categories", "world", "synonyms", "lexical_units")
 UNIT_KEYS = ("frame", "unit", "source")
-UNIT_OPTIONAL = ("object", "apart", "stores", "split")
+UNIT_OPTIONAL = ("object", "apart", "stores", "split", "opening")
 """An added unit may say which element its direct object fills (``object: goal``), the particles with which
 its verb is another verb (``apart: "on out up"``, words separated by spaces), and whether, said with no goal,
 it puts its thing where such a thing is kept (``stores: true``: "put away", "store"), and whether it is said only with
-its particle alone after the object (``split: true``: "put the kettle *on*")."""
+its particle alone after the object (``split: true``: "put the kettle *on*"), and whether it is a verb that is mostly a
+noun, read only opening an imperative before its object (``opening: true``: "dust the shelf")."""
 
 T = TypeVar("T")
 
@@ -123,7 +124,7 @@ class _Reader(NodeReader):
         for item in self.items(node, "lexical_units"):
             found: dict[str, object] = {}
             for key, _, value in self.pairs(item, "a lexical unit", UNIT_KEYS + UNIT_OPTIONAL):
-                found[key] = self.flag(value, key) if key in ("stores", "split") else self.string(value, key)
+                found[key] = self.flag(value, key) if key in ("stores", "split", "opening") else self.string(value, key)
             if not isinstance(item, yaml.MappingNode):
                 continue
             missing = [key for key in UNIT_KEYS if not found.get(key)]
@@ -135,7 +136,7 @@ class _Reader(NodeReader):
             apart = tuple(str(found.get("apart") or "").split())
             unit = self.build(functools.partial(LexicalUnit, str(found["unit"]), self.where(item),
                                                 str(said) if said else None, apart, bool(found.get("stores")),
-                                                bool(found.get("split"))), item)
+                                                bool(found.get("split")), bool(found.get("opening"))), item)
             if unit is not None:
                 self.contents.units.append((str(found["frame"]), unit))
 

@@ -271,6 +271,33 @@ def _progressive(s: State, j: int, k: int) -> bool:
     return asked and gerund_lemma(low) not in (None, low) and s.words[k - 1].lower not in BE_WORDS
 
 
+_PEOPLE_PRONOUNS = frozenset(["he", "she"])
+
+
+def _person_somewhere(s: State, j: int) -> bool:
+    """Whether the phrase at ``j``, after a verb of being, names a person said to be doing something somewhere ("is
+    *ben* waiting in the kitchen?", "is *the man in the red shirt* waiting at the door?"): a progressive (the -ing
+    form of a verb, :func:`_progressive`) right before a preposition of place and its phrase, and the phrase's head
+    (its last word before a preposition) a person — a noun of the taxonomy's people, "he"/"she", or one word that
+    is a name (capitalised, or no word the dictionary lists and no thing). Where a person is asked is finding them
+    there, whatever they are doing; of a thing the -ing form stays its state ("is the dishwasher running?")."""
+    words = s.words
+    if not _place_asked(s, j):
+        return False
+    end = _sentence_end(s, j)
+    k = next((k for k in range(j + 1, end - 1) if _progressive(s, j, k) and words[k + 1].lower in _WHETHER_WHERE
+              and s.np_starts(k + 2)), None)
+    if k is None:
+        return False
+    cut = next((m for m in range(j + 1, k) if words[m].lower in PREPOSITIONS), k)
+    head = words[cut - 1]
+    low = head.lower
+    if low in s.lexicon.people or (noun_lemma(low) or low) in s.lexicon.people or low in _PEOPLE_PRONOUNS:
+        return True
+    return cut == j + 1 and low not in s.lexicon.things and low.isalpha() and (
+        capitalised(head) or not parts_of_speech(low))
+
+
 ASKED = "asked"
 """The info of the ``COND`` word that keeps the state a yes/no question asks ("open" of "is the fridge open?")."""
 
@@ -411,7 +438,7 @@ def _state_question(s: State, i: int) -> Match | None:
     table?", "are *any* of the guests waiting in the hallway?"), no thing to check is named: whether one is there
     is finding (``WHETHER_IS_RULE``)."""
     if STATE_MEANS not in s.lexicon.units or _state_question_end(s, i + 1) is None or \
-            s.words[i + 1].lower in _ANY_ASKED and _place_asked(s, i + 1):
+            s.words[i + 1].lower in _ANY_ASKED and _place_asked(s, i + 1) or _person_somewhere(s, i + 1):
         return None
     return Match(1, (s.words[i].tagged(Tag.VERB, STATE_MEANS),), expect=False, verb=STATE_MEANS, using=False)
 
@@ -1203,6 +1230,8 @@ WHETHER_IS_RULE = Rule("is X somewhere", _whether_is, (
     Example("are the apples in the fridge?", "are", Tag.VERB),
     Example("is anyone sitting at the table?", "is", Tag.VERB),
     Example("is someone waiting at the door?", "is", Tag.VERB),
+    Example("is grandpa sleeping in the bedroom?", "is", Tag.VERB),
+    Example("is the girl with the red bag standing by the sofa?", "is", Tag.VERB),
 ), _WHETHER_IS, "'is X in Y?': find X in Y, and answer whether it is there")
 ANY_ASKED = Rule("any X somewhere, asked", _any_asked, (
     Example("anyone in the bathroom?", "anyone", Tag.PRON),
