@@ -46,6 +46,7 @@ from seal_cli.language.english import (
 )
 from seal_cli.language.morphology import (
     gerund_lemma,
+    in_dictionary,
     is_adjective,
     is_gradable,
     is_plural,
@@ -167,7 +168,7 @@ class Lexicon:
             base = verb_lemma(first) if first.isalpha() else None
             candidates = self.units.get(base) if base and base != first else None
             if not candidates:
-                return self.again(words, i)
+                return self.again(words, i) or self.transposed(words, i)
         for unit in candidates:
             n = len(unit)
             if i + n <= len(words) and all(words[i + k].lower == unit[k] for k in range(1, n)):
@@ -205,6 +206,21 @@ class Lexicon:
             if len(form) >= least and (form,) in self.units.get(form, ()):
                 return form, n, None
         return None
+
+    def transposed(self, words: Sequence[Word], i: int) -> tuple[str, int, None] | None:
+        """A one-word unit typed with two neighbouring letters swapped, the commonest slip of typing ("*brign* me the
+        cup", "*tkae* it"): a word of at least :data:`TYPO_LEAST` letters that no dictionary lists, written in lower
+        case (a capital only first in the sentence), no thing of the taxonomy, whose swaps give exactly one unit.
+        "ben", "jamie" (names) give none; a word the dictionary lists ("form" beside "from") is never read so."""
+        word = words[i]
+        low = word.lower
+        if len(low) < TYPO_LEAST or not low.isalpha() or low in self.things or in_dictionary(low) or \
+                word.text != low and not (i == 0 and word.text[1:] == low[1:]):
+            return None
+        found = {swapped for j in range(len(low) - 1)
+                 if (swapped := low[:j] + low[j + 1] + low[j] + low[j + 2:]) != low and
+                 (swapped,) in self.units.get(swapped, ())}
+        return (found.pop(), 1, None) if len(found) == 1 else None
 
     def _split(self, words: Sequence[Word], i: int, stop: int,
                candidates: Iterable[tuple[str, ...]]) -> tuple[str, int, int] | None:
@@ -269,6 +285,10 @@ def _by_particle(candidates: tuple[tuple[str, ...], ...], stores: frozenset[str]
             found.setdefault(unit[1], []).append(" ".join(unit))
     return {particle: tuple(units) for particle, units in found.items()}
 
+
+TYPO_LEAST = 4
+"""The fewest letters of a word read as a unit typed with two letters swapped (:meth:`Lexicon.transposed`): "tkae"
+is "take"; three letters leave too few words apart ("og" is no "go")."""
 
 AGAIN_LEAST = 5
 """The fewest letters of the verb after a joined "re" (:meth:`Lexicon.again`): "rearrange" is "arrange", "reset"

@@ -802,6 +802,9 @@ class State:
             arrived = self._arrival_end(k)
             if arrived:
                 return "then", arrived, "then"      # "when you get there", "once you arrive,": arrived where we went
+            left = self._departure_end(k)
+            if left:
+                return "cond", left, sub            # "turn off the stove *before you leave*": when, no frame
             if k < len(words) and (self.verb_at(k) is not None or self.verb_after(k)):
                 return "clause", k, sub
         state = j + 1 if subject in ("you're", "we're", "you've", "we've") else \
@@ -819,6 +822,20 @@ class State:
         if k < len(self.words) and self.words[k].lower == ",":
             k += 1
         return k < len(self.words) and self.verb_after(k)
+
+    def _departure_end(self, k: int) -> int:
+        """Where "leave", "go" ends at ``k`` when it ends the sentence: a verb of moving (a unit of a frame with a
+        goal) said of the robot with nothing after it ("turn off the stove before you *leave*") is its going away,
+        the time of the command, no frame (0: none). Not "after you put it away" (an object), "when you get
+        there, ..." (:meth:`_arrival_end`)."""
+        words = self.words
+        found = self.verb_at(k) if k < len(words) else None
+        if found is None or found[2] is not None or found[0] not in self.lexicon.goals:
+            return 0
+        after = k + found[1]
+        while after < len(words) and words[after].lower in ("now", "please"):
+            after += 1
+        return after if after == len(words) or words[after].lower in END_MARKS else 0
 
     def _arrival_end(self, k: int) -> int:
         """Where "get there", "arrive", "reach it" ends at ``k``: a verb of going (a unit of a frame with a

@@ -118,19 +118,32 @@ def _where(s: State, i: int) -> Match | None:
     words = s.words
     n = _phrase(s, i, WHERE_QUESTIONS)
     if not n or WHERE_MEANS not in s.lexicon.units or not s.np_starts(i + n) or \
-            words[i + n - 1].lower in WHERE_DID[1] and words[i + n].lower in WHERE_DID[2]:
-        return None                         # "where did *I* leave my glasses": WHERE_DID's
+            words[i + n - 1].lower in WHERE_DID[1] and words[i + n].lower in WHERE_DID[2] or \
+            words[i].lower in WHERE_DID[0] and _where_did(s, i) is not None:
+        return None                         # "where did *I* leave my glasses", "where did *ben* put it": WHERE_DID's
     text = s.text_of(words[i].start, words[i + n - 1].end) or " ".join(w.text for w in words[i:i + n])
     return Match(n, (Word(text, words[i].start, words[i + n - 1].end, Tag.VERB, WHERE_MEANS),), expect=False,
                  verb=WHERE_MEANS, using=False)
+
+
+def _person_word(s: State, k: int) -> bool:
+    """Whether the one word at ``k`` names a person: a noun the taxonomy lists as one ("mum", "the *guest*"), "he" or
+    "she", or a name (capitalised, or no word the dictionary lists, and no thing): "where did *ben* leave the
+    remote?", "is *ben* waiting in the kitchen?"."""
+    word = s.words[k]
+    low = word.lower
+    if low in s.lexicon.people or (noun_lemma(low) or low) in s.lexicon.people or low in _PEOPLE_PRONOUNS:
+        return True
+    return low.isalpha() and low not in s.lexicon.things and low not in CLOSED and (
+        capitalised(word) or not parts_of_speech(low))
 
 
 def _where_did(s: State, i: int) -> Match | None:
     words = s.words
     where, auxiliaries, subjects = WHERE_DID
     if i + 4 >= len(words) or WHERE_MEANS not in s.lexicon.units or words[i + 1].lower not in auxiliaries or \
-            words[i + 2].lower not in subjects or verb_lemma(words[i + 3].lower) != words[i + 3].lower or \
-            not s.np_starts(i + 4):
+            words[i + 2].lower not in subjects and not _person_word(s, i + 2) or \
+            verb_lemma(words[i + 3].lower) != words[i + 3].lower or not s.np_starts(i + 4):
         return None
     end = words[i + 3].end
     return Match(4, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, WHERE_MEANS),),
@@ -200,6 +213,7 @@ def _where_be(s: State, i: int) -> Match | None:
 
 
 _WHETHER_IS = frozenset(["is", "are", "isn't", "aren't"])
+_PEOPLE_PRONOUNS = frozenset(["he", "she"])
 _WHETHER_WHERE = frozenset(["in", "on", "at", "inside", "near", "by", "under", "beside", "behind"])
 _AT_HOME = frozenset(["home"])
 """Being *home* is being in the house ("is mum home?", "see if anyone is home"): where someone is, asked as finding
@@ -271,7 +285,6 @@ def _progressive(s: State, j: int, k: int) -> bool:
     return asked and gerund_lemma(low) not in (None, low) and s.words[k - 1].lower not in BE_WORDS
 
 
-_PEOPLE_PRONOUNS = frozenset(["he", "she"])
 
 
 def _person_somewhere(s: State, j: int) -> bool:
@@ -290,12 +303,9 @@ def _person_somewhere(s: State, j: int) -> bool:
     if k is None:
         return False
     cut = next((m for m in range(j + 1, k) if words[m].lower in PREPOSITIONS), k)
-    head = words[cut - 1]
-    low = head.lower
-    if low in s.lexicon.people or (noun_lemma(low) or low) in s.lexicon.people or low in _PEOPLE_PRONOUNS:
-        return True
-    return cut == j + 1 and low not in s.lexicon.things and low.isalpha() and (
-        capitalised(head) or not parts_of_speech(low))
+    low = words[cut - 1].lower
+    return low in s.lexicon.people or (noun_lemma(low) or low) in s.lexicon.people or cut == j + 1 and \
+        _person_word(s, j)
 
 
 ASKED = "asked"
@@ -1014,8 +1024,13 @@ def _switched_alone(s: State, i: int) -> Match | None:
                  using=False, particle=(k, unit))    # its first word tagged here: "Lights" is no verb
 
 
-_WISHES_OF = (("wants",), ("needs",), ("would", "like"))
-"""A named person's wish for a thing ("*Anna wants* the cup"): bring it to them (``REQUEST_MEANS``)."""
+_MODALS = frozenset(["could", "would", "will", "can", "might", "may"])
+_WISHES_OF = (("wants",), ("needs",), *sorted({tuple(p.split()[1:]) for p in REQUESTS if p.split()[0] == "i" and
+                                              p.split()[1] in _MODALS}, key=lambda w: (-len(w), w)))
+"""A named person's wish for a thing ("*Anna wants* the cup"): bring it to them (``REQUEST_MEANS``). Besides "wants"
+and "needs", each of the speaker's wishes made with a modal (``REQUESTS``: "I *could use*", "I *would like*", "I
+*could do with*"), which says the same of anyone: a modal does not agree with its subject ("anna could use a
+spoon")."""
 
 
 def _wish_of(s: State, i: int) -> Match | None:
@@ -1214,6 +1229,8 @@ WHERE_DID_RULE = Rule("where did I leave", _where_did, (
     Example("Where did I leave my glasses?", "Where did I leave", Tag.VERB),
     Example("where do we keep the batteries", "where do we keep", Tag.VERB),
     Example("Where can I find the sponge?", "Where can I find", Tag.VERB),
+    Example("where did dad put the scissors?", "where did dad put", Tag.VERB),
+    Example("where does Priya keep her tea", "where does Priya keep", Tag.VERB),
 ), WHERE_DID[0], "'where did I leave X', 'where do we keep X': find X")
 SEEN_ASKED_RULE = Rule("have you seen", _seen_asked, (
     Example("have you seen my phone anywhere", "have you seen", Tag.VERB),
@@ -1293,7 +1310,9 @@ WISH_OF = Rule("a person's wish for a thing", _wish_of, (
     Example("Anna would like the red mug", "Anna would like", Tag.VERB),
     Example("dad wants his reading glasses", "dad wants", Tag.VERB),
     Example("morgan needs a glass of water", "morgan needs", Tag.VERB),
-), None, "'Anna wants X', 'Ben needs X': bring X to the person")
+    Example("grandpa could use a blanket", "grandpa could use", Tag.VERB),
+    Example("Sara could do with a cup of tea", "Sara could do with", Tag.VERB),
+), None, "'Anna wants X', 'Ben needs X', 'Sara could use X': bring X to the person")
 WISH_OF_PHRASE = Rule("a wish said of a person's phrase", _wish_of_phrase, (
     Example("the person at the armchair needs a towel", "the", Tag.DET),
     Example("my son wants a glass of water", "my", Tag.POSS),
