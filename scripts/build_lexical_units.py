@@ -469,7 +469,7 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[Any, ...]]:
              frame.elements and frame.elements[0].role == "theme" and frame.elements[0].type != "question" and
              library.taxonomy.is_a(frame.elements[0].type, "person") is not True}
 
-    def named_for(verb: str, sense: str) -> list[tuple[str, str, str]]:
+    def named_for(verb: str, sense: str, why: str) -> list[tuple[Any, ...]]:
         """Rule 12: a verb that is mostly a noun takes frame F when its first sense is the first sense of F's own
         verb (the frame's first unit: "clean", "put", "open"), or a way of doing it (a hyponym): "dust" < clean.v.01,
         "vacuum" < clean.v.01, "ladle" < put.v.01; F's first element a theme, a thing (no person, question, or a
@@ -484,16 +484,18 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[Any, ...]]:
                         done_with(frame, wordnet.tools(verb, sense)):
                     how = "=" if synset == sense else "<"
                     out.append((frame, verb, f"wordnet:{wordnet.name(verb, sense)} {how} "
-                                             f"{wordnet.name(head, synset)} ({head}); mostly a noun", "", "",
+                                             f"{wordnet.name(head, synset)} ({head}); {why}", "", "",
                                 False, True))
         return out
 
     found: list[tuple[Any, ...]] = []
     for verb, (_, offsets) in sorted(wordnet.senses.items()):
-        if verb in units or verb in closed or not verb.isalpha() or not offsets or not in_verb_tables(verb):
+        if verb in units or verb in closed or not verb.isalpha() or not offsets:
             continue
-        if not wordnet.mostly_verb(verb):
-            found.extend(named_for(verb, offsets[0]))     # mostly a noun ("cup", "table", "knife"): rule 12 only
+        if not wordnet.mostly_verb(verb) or not in_verb_tables(verb):
+            # mostly a noun ("cup", "table", "knife"), or no verb of the parser's tables: rule 12 only, which reads
+            # the verb in its base form alone ("hoover the hall": no forms needed)
+            found.extend(named_for(verb, offsets[0], "mostly a noun" if in_verb_tables(verb) else "no verb's forms"))
             continue
         for sense in wordnet.frequent(verb):
             body = wordnet.domain[sense] == BODY          # "undress" < take off: done to a body, not to a thing

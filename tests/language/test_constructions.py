@@ -1298,3 +1298,78 @@ def test_a_verb_of_aspect_before_to_and_no_verb_fails_cleanly(library: Library) 
     # an IndexError in the rule 'keep doing' (found by test_word_salad_parses_or_fails_cleanly)
     with pytest.raises(CommandError, match="ends too early"):
         parse_command("start to the", library)
+
+
+# -- words21 ---------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("dust the bookshelf", [("Clean", {"theme": "the bookshelf"})]),
+    ("please vacuum the hallway", [("Clean", {"theme": "the hallway"})]),
+    ("hoover the landing", [("Clean", {"theme": "the landing"})]),
+    ("could you ladle the stew into my bowl", [("Place", {"theme": "the stew", "goal": "my bowl"})]),
+    ("go to the study and dust the desk", [("Go", {"goal": "the study"}), ("Clean", {"theme": "the desk"})]),
+    ("I need you to vacuum the rug", [("Clean", {"theme": "the rug"})]),
+])
+def test_a_verb_that_is_mostly_a_noun_opening_an_imperative_before_its_object(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    # build_lexical_units.py rule 12: "dust", "vacuum", "ladle" are marked opening: true
+    assert texts(text, library) == want
+
+
+def test_a_verb_that_is_mostly_a_noun_stays_a_noun_elsewhere(library: Library) -> None:
+    assert texts("put the dust in the bin", library) == [("Place", {"theme": "the dust", "goal": "the bin"})]
+    assert texts("bring me the vacuum from the hall", library) == [
+        ("Bring", {"theme": "the vacuum", "source": "the hall", "recipient": "me"})]
+    assert texts("take the ladle to the sink", library)[0][1]["theme"] == "the ladle"
+    assert texts("vacuum please", library)[0][1]["theme"] == "vacuum"     # a thing asked for, as "spoon please"
+    for text in ("dust", "dusting the shelf"):    # no object after it, no base form: no verb
+        with pytest.raises(CommandError, match="unknown verb"):
+            parse_command(text, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("is grandpa sleeping in the bedroom?", {"theme": "grandpa", "ground": "bedroom"}),
+    ("is ben waiting in the kitchen?", {"theme": "ben", "ground": "kitchen"}),
+    ("is the man in the red shirt waiting at the door?", {"theme": "man", "ground": "door"}),
+    ("is she sitting in the garden?", {"theme": "she", "ground": "garden"}),
+])
+def test_whether_a_person_doing_something_is_somewhere_is_finding_them_there(
+        text: str, want: dict[str, str], library: Library) -> None:
+    assert frames(text, library) == [("Find", want)]
+
+
+@pytest.mark.parametrize("text", ["is the dishwasher running?", "is the kettle boiling in the kitchen?"])
+def test_a_thing_doing_something_is_a_state_asked(text: str, library: Library) -> None:
+    assert [f for f, _ in frames(text, library)] == ["LookAt"]
+
+
+def test_a_participle_after_what_describes_a_person_says_where_they_are(library: Library) -> None:
+    assert frames("find the woman in the blue dress standing in the hall", library) == [
+        ("Find", {"theme": "woman", "ground": "hall"})]
+
+
+def test_a_persons_wish_said_with_a_modal_brings_them_the_thing(library: Library) -> None:
+    assert frames("grandpa could use a blanket", library) == [("Bring", {"theme": "blanket", "recipient": "grandpa"})]
+    assert frames("Sara could do with a cup of tea", library) == [("Bring", {"theme": "cup", "recipient": "Sara"})]
+    assert frames("Sara would like the red mug", library) == [("Bring", {"theme": "mug", "recipient": "Sara"})]
+
+
+def test_where_did_a_person_put_it_asks_to_find(library: Library) -> None:
+    assert frames("where did dad put the scissors?", library) == [("Find", {"theme": "scissors"})]
+    assert frames("where does Priya keep her tea", library) == [("Find", {"theme": "tea"})]
+    assert frames("where did the cat go?", library) == [("Find", {"theme": "cat"})]
+
+
+def test_a_verb_of_moving_ending_a_subordinate_clause_of_the_robot_is_when(library: Library) -> None:
+    for text in ("turn off the stove before you leave", "close the window before you go."):
+        parse = parse_command(text, library)
+        assert len(parse.frames) == 1 and parse.frames[0].condition is not None
+    assert [f for f, _ in frames("put the cup in the sink after you wash it", library)] == ["Clean", "Place"]
+
+
+def test_a_unit_typed_with_two_letters_swapped_is_that_unit(library: Library) -> None:
+    assert frames("brign me the cup", library) == [("Bring", {"theme": "cup", "recipient": "me"})]
+    assert frames("Tkae the cup to the kitchen", library)[0][0] == "Bring"
+    assert frames("bring me the cup", library) == frames("brign me the cup", library)
+    with pytest.raises(CommandError, match="unknown verb"):
+        parse_command("bnirg me the cup", library)          # two slips: no unit one swap away
