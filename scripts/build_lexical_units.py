@@ -470,22 +470,26 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[Any, ...]]:
              library.taxonomy.is_a(frame.elements[0].type, "person") is not True}
 
     def named_for(verb: str, sense: str, why: str) -> list[tuple[Any, ...]]:
-        """Rule 12: a verb that is mostly a noun takes frame F when its first sense is the first sense of F's own
-        verb (the frame's first unit: "clean", "put", "open"), or a way of doing it (a hyponym): "dust" < clean.v.01,
-        "vacuum" < clean.v.01, "ladle" < put.v.01; F's first element a theme, a thing (no person, question, or a
-        goal: "wind the clock" is no Go, "tree the cat" no Guide). Marked ``opening``: the parser reads it only
-        opening an imperative clause before its object, where a noun cannot stand."""
+        """Rule 12: a verb that is mostly a noun takes frame F when its first sense is the first sense of a unit that
+        evokes F alone (the same meaning: "stick" = deposit.v.01, "slit" = slice.v.01), or a way of doing F's own
+        verb (a hyponym of the first sense of the frame's first unit: "dust" < clean.v.01, "vacuum" < clean.v.01,
+        "ladle" < put.v.01); F's first element a theme, a thing (no person, question, or a goal: "wind the clock" is
+        no Go, "tree the cat" no Guide). Marked ``opening``: the parser reads it only opening an imperative clause
+        before its object, where a noun cannot stand."""
         if wordnet.domain[sense] == BODY:
             return []
+        said = [(lemma, sense) for lemma in wordnet.lemmas[sense] if lemma in only and only[lemma] in heads
+                and wordnet.senses[lemma][1][:1] == [sense]]
+        said += [(heads[frame], synset) for synset in wordnet.up[sense] for frame in heads
+                 if heads[frame] in wordnet.senses and wordnet.senses[heads[frame]][1][:1] == [synset]]
         out = []
-        for synset in (sense, *wordnet.up[sense]):
-            for frame, head in heads.items():
-                if head in wordnet.senses and wordnet.senses[head][1][:1] == [synset] and \
-                        done_with(frame, wordnet.tools(verb, sense)):
-                    how = "=" if synset == sense else "<"
-                    out.append((frame, verb, f"wordnet:{wordnet.name(verb, sense)} {how} "
-                                             f"{wordnet.name(head, synset)} ({head}); {why}", "", "",
-                                False, True))
+        for lemma, synset in said:
+            frame = only.get(lemma) if synset == sense else next(f for f, head in heads.items() if head == lemma)
+            if frame is not None and done_with(frame, wordnet.tools(verb, sense)) and \
+                    all(o[0] != frame for o in out):
+                how = "=" if synset == sense else "<"
+                out.append((frame, verb, f"wordnet:{wordnet.name(verb, sense)} {how} {wordnet.name(lemma, synset)} "
+                                         f"({lemma}); {why}", "", "", False, True))
         return out
 
     found: list[tuple[Any, ...]] = []
