@@ -57,6 +57,13 @@ with a mower, not slicing with the knife the robot holds; "mow the lawn" is refu
 mow, saw, drill and lop from Slice (369 -> 365 units); a tool a word names only in a later sense does not count ("tap":
 first a faucet, so "tap with knife" stays a Slice).
 
+And (rule 12, words21) a verb that rule 1 keeps out (mostly a noun, or no verb of the parser's tables) takes frame F
+when its first sense is the first sense of a unit evoking F alone ("stick" = deposit.v.01, Place) or a hyponym of the
+first sense of F's first unit ("dust", "vacuum", "hoover" < clean.v.01; "ladle", "park" < put.v.01), F's first element
+a theme that is a thing (not Go's goal, a person, a question: "wind", "tree", "note" stay out). Such a unit is written
+with ``opening: true``: the parser reads it only in its base form, opening an imperative clause right before its
+object, where English puts no noun ("dust the shelf"; "put the dust in the bin" keeps the noun).
+
 A verb whose first sense fails rule 3 may still take a frame from it by **corroboration** (rule 5):
 the synset names two verbs of the library — a lexical unit itself, and a unit or a particle verb of
 one ("pick out" of "pick") whose *first* sense the synset is (what that verb mostly means) — and the

@@ -1306,6 +1306,7 @@ def test_a_verb_of_aspect_before_to_and_no_verb_fails_cleanly(library: Library) 
     ("dust the bookshelf", [("Clean", {"theme": "the bookshelf"})]),
     ("please vacuum the hallway", [("Clean", {"theme": "the hallway"})]),
     ("hoover the landing", [("Clean", {"theme": "the landing"})]),
+    ("stick the butter in the fridge", [("Place", {"theme": "the butter", "goal": "the fridge"})]),
     ("could you ladle the stew into my bowl", [("Place", {"theme": "the stew", "goal": "my bowl"})]),
     ("go to the study and dust the desk", [("Go", {"goal": "the study"}), ("Clean", {"theme": "the desk"})]),
     ("I need you to vacuum the rug", [("Clean", {"theme": "the rug"})]),

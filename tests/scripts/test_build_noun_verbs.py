@@ -1,7 +1,7 @@
-"""``scripts/build_lexical_units.py --wordnet``, rule 12 (words21): a verb that is mostly a noun ("dust", "vacuum") takes
-the frame whose own verb's first sense it is, or a way of doing it, marked ``opening: true`` (the parser reads it only
-opening an imperative before its object); read from a tiny WordNet ``dict`` folder written here, in WordNet's own
-file formats."""
+"""``scripts/build_lexical_units.py --wordnet``, rule 12 (words21): a verb that is mostly a noun ("dust", "vacuum")
+takes the frame whose own verb's first sense it is, or a way of doing it, or a unit's first sense ("stick" =
+deposit), marked ``opening: true`` (the parser reads it only opening an imperative before its object); read from a
+tiny WordNet ``dict`` folder written here, in WordNet's own file formats."""
 
 from __future__ import annotations
 
