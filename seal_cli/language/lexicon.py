@@ -208,19 +208,34 @@ class Lexicon:
         return None
 
     def transposed(self, words: Sequence[Word], i: int) -> tuple[str, int, None] | None:
-        """A one-word unit typed with two neighbouring letters swapped, the commonest slip of typing ("*brign* me the
-        cup", "*tkae* it"): a word of at least :data:`TYPO_LEAST` letters that no dictionary lists, written in lower
-        case (a capital only first in the sentence), no thing of the taxonomy, whose swaps give exactly one unit.
-        "ben", "jamie" (names) give none; a word the dictionary lists ("form" beside "from") is never read so."""
+        """A one-word unit typed with one slip of the fingers: two neighbouring letters swapped ("*brign* me the cup",
+        "*tkae* it"), one letter left out ("*brng* it", "*plae* the cup": "place") or one letter typed twice or
+        between ("*bringg*", "*opent* it"): a word of at least :data:`TYPO_LEAST` letters that no dictionary lists,
+        written in lower case (a capital only first in the sentence), no thing of the taxonomy, one slip from exactly
+        one unit. "ben", "jamie" (names) are no slip of a unit; a word the dictionary lists ("form" beside "from") is
+        never read so."""
         word = words[i]
         low = word.lower
-        if len(low) < TYPO_LEAST or not low.isalpha() or low in self.things or in_dictionary(low) or \
+        if len(low) < TYPO_LEAST or not low.isalpha() or low in self.things or \
                 word.text != low and not (i == 0 and word.text[1:] == low[1:]):
             return None
-        found = {swapped for j in range(len(low) - 1)
-                 if (swapped := low[:j] + low[j + 1] + low[j] + low[j + 2:]) != low and
-                 (swapped,) in self.units.get(swapped, ())}
-        return (found.pop(), 1, None) if len(found) == 1 else None
+        found = self._slips.get(low)
+        if found is None:
+            found = self._slips[low] = "" if in_dictionary(low) else self._slipped(low)
+        return (found, 1, None) if found else None
+
+    @cached_property
+    def _slips(self) -> dict[str, str]:
+        """A typed word → the unit it slips from ("" none): the tagger asks of each word more than once."""
+        return {}
+
+    def _slipped(self, low: str) -> str:
+        near = {low[:j] + low[j + 1] + low[j] + low[j + 2:] for j in range(len(low) - 1)}     # swapped
+        near |= {low[:j] + low[j + 1:] for j in range(len(low))}                                # one too many
+        near |= {low[:j] + c + low[j:] for j in range(len(low) + 1) for c in _LETTERS}          # one left out
+        near.discard(low)
+        found = {w for w in near if (w,) in self.units.get(w, ())}
+        return found.pop() if len(found) == 1 else ""
 
     def _split(self, words: Sequence[Word], i: int, stop: int,
                candidates: Iterable[tuple[str, ...]]) -> tuple[str, int, int] | None:
@@ -286,6 +301,7 @@ def _by_particle(candidates: tuple[tuple[str, ...], ...], stores: frozenset[str]
     return {particle: tuple(units) for particle, units in found.items()}
 
 
+_LETTERS = "abcdefghijklmnopqrstuvwxyz"
 TYPO_LEAST = 4
 """The fewest letters of a word read as a unit typed with two letters swapped (:meth:`Lexicon.transposed`): "tkae"
 is "take"; three letters leave too few words apart ("og" is no "go")."""

@@ -1372,5 +1372,9 @@ def test_a_unit_typed_with_two_letters_swapped_is_that_unit(library: Library) ->
     assert frames("brign me the cup", library) == [("Bring", {"theme": "cup", "recipient": "me"})]
     assert frames("Tkae the cup to the kitchen", library)[0][0] == "Bring"
     assert frames("bring me the cup", library) == frames("brign me the cup", library)
+    assert frames("brng me the cup", library) == frames("bringg me the cup", library) == frames("brign me the cup",
+                                                                                              library)
+    assert frames("opne the fridge", library) == [("Open", {"theme": "fridge"})]
     with pytest.raises(CommandError, match="unknown verb"):
-        parse_command("bnirg me the cup", library)          # two slips: no unit one swap away
+        parse_command("bnirg me the cup", library)          # two slips: no unit one slip away
+    assert frames("bring the cup to jamie", library) == [("Bring", {"theme": "cup", "recipient": "jamie"})]
