@@ -212,8 +212,8 @@ class Lexicon:
         "*tkae* it"), one letter left out ("*brng* it", "*plae* the cup": "place") or one letter typed twice or
         between ("*bringg*", "*opent* it"): a word of at least :data:`TYPO_LEAST` letters that no dictionary lists,
         written in lower case (a capital only first in the sentence), no thing of the taxonomy, one slip from exactly
-        one unit. "ben", "jamie" (names) are no slip of a unit; a word the dictionary lists ("form" beside "from") is
-        never read so."""
+        one unit, and no unit that is mostly a noun ("laddle" is no slip of the verb "ladle"). "ben", "jamie" (names)
+        are no slip of a unit; a word the dictionary lists ("form" beside "from") is never read so."""
         word = words[i]
         low = word.lower
         if len(low) < TYPO_LEAST or not low.isalpha() or low in self.things or \
@@ -234,7 +234,7 @@ class Lexicon:
         near |= {low[:j] + low[j + 1:] for j in range(len(low))}                                # one too many
         near |= {low[:j] + c + low[j:] for j in range(len(low) + 1) for c in _LETTERS}          # one left out
         near.discard(low)
-        found = {w for w in near if (w,) in self.units.get(w, ())}
+        found = {w for w in near if (w,) in self.units.get(w, ()) and w not in self.opening}   # "laddle": a noun
         return found.pop() if len(found) == 1 else ""
 
     def _split(self, words: Sequence[Word], i: int, stop: int,
