@@ -446,7 +446,8 @@ def _state_question(s: State, i: int) -> Match | None:
     yes/no question about a thing's state is checking the thing (``STATE_MEANS``, a unit of LookAt); the state
     is kept (``ASKED``, by :data:`STATE_ASKED`). Of an indefinite said with a place ("is *anyone* sitting at the
     table?", "are *any* of the guests waiting in the hallway?"), no thing to check is named: whether one is there
-    is finding (``WHETHER_IS_RULE``)."""
+    is finding (``WHETHER_IS_RULE``); so is a person said to be doing something somewhere ("is *ben* waiting in the
+    kitchen?", :func:`_person_somewhere`)."""
     if STATE_MEANS not in s.lexicon.units or _state_question_end(s, i + 1) is None or \
             s.words[i + 1].lower in _ANY_ASKED and _place_asked(s, i + 1) or _person_somewhere(s, i + 1):
         return None
@@ -1335,6 +1336,7 @@ STATE_QUESTION = Rule("is X in a state", _state_question, (
     Example("Is the fridge open?", "Is", Tag.VERB),
     Example("is the kitchen light still on?", "still on", Tag.COND),
     Example("Is the cup on the table clean?", "clean", Tag.COND),
+    Example("is the washing machine running?", "running", Tag.COND),
 ), _WHETHER_IS, "'is X open?': check X (LookAt), the state asked kept")
 ASKED_WHETHER = Rule("asked whether", _asked_whether, (
     Example("Could you check if the door is closed?", "check if", Tag.VERB),
