@@ -168,7 +168,7 @@ class Lexicon:
             base = verb_lemma(first) if first.isalpha() else None
             candidates = self.units.get(base) if base and base != first else None
             if not candidates:
-                return self.again(words, i) or self.transposed(words, i)
+                return self.again(words, i) or self.mistyped(words, i)
         for unit in candidates:
             n = len(unit)
             if i + n <= len(words) and all(words[i + k].lower == unit[k] for k in range(1, n)):
@@ -207,7 +207,7 @@ class Lexicon:
                 return form, n, None
         return None
 
-    def transposed(self, words: Sequence[Word], i: int) -> tuple[str, int, None] | None:
+    def mistyped(self, words: Sequence[Word], i: int) -> tuple[str, int, None] | None:
         """A one-word unit typed with one slip of the fingers: two neighbouring letters swapped ("*brign* me the cup",
         "*tkae* it"), one letter left out ("*brng* it", "*plae* the cup": "place") or one letter typed twice or
         between ("*bringg*", "*opent* it"): a word of at least :data:`TYPO_LEAST` letters that no dictionary lists,
@@ -221,6 +221,8 @@ class Lexicon:
             return None
         found = self._slips.get(low)
         if found is None:
+            if len(self._slips) >= SLIPS_KEPT:
+                self._slips.clear()              # a long-running parser meets words without end
             found = self._slips[low] = "" if in_dictionary(low) else self._slipped(low)
         return (found, 1, None) if found else None
 
@@ -303,8 +305,10 @@ def _by_particle(candidates: tuple[tuple[str, ...], ...], stores: frozenset[str]
 
 _LETTERS = "abcdefghijklmnopqrstuvwxyz"
 TYPO_LEAST = 4
-"""The fewest letters of a word read as a unit typed with two letters swapped (:meth:`Lexicon.transposed`): "tkae"
-is "take"; three letters leave too few words apart ("og" is no "go")."""
+"""The fewest letters of a word read as a unit typed with one slip (:meth:`Lexicon.mistyped`): "tkae" is "take";
+three letters leave too few words apart ("og" is no "go", "pu" no "put")."""
+SLIPS_KEPT = 65536
+"""How many typed words :meth:`Lexicon.mistyped` remembers before it starts afresh."""
 
 AGAIN_LEAST = 5
 """The fewest letters of the verb after a joined "re" (:meth:`Lexicon.again`): "rearrange" is "arrange", "reset"

@@ -285,8 +285,6 @@ def _progressive(s: State, j: int, k: int) -> bool:
     return asked and gerund_lemma(low) not in (None, low) and s.words[k - 1].lower not in BE_WORDS
 
 
-
-
 def _person_somewhere(s: State, j: int) -> bool:
     """Whether the phrase at ``j``, after a verb of being, names a person said to be doing something somewhere ("is
     *ben* waiting in the kitchen?", "is *the man in the red shirt* waiting at the door?"): a progressive (the -ing
