@@ -396,9 +396,9 @@ def test_a_file_of_blank_lines_is_refused_line_by_line_quickly(library: Library)
 
 def test_unknown_verbs_list_the_known_ones(library: Library) -> None:
     with pytest.raises(CommandError) as caught:
-        parse_command("brin me the cup", library)
+        parse_command("brimg me the cup", library)     # ("brin", one letter short, is a slip of "bring": words21)
     assert "known verbs include bring" in caught.value.message       # the closest one first
-    assert str(caught.value).endswith("brin me the cup\n^")         # the caret under the column
+    assert str(caught.value).endswith("brimg me the cup\n^")        # the caret under the column
 
 
 def test_non_ascii_words_are_words(library: Library) -> None:
