@@ -36,9 +36,9 @@ if TYPE_CHECKING:
     import yaml
 
 __all__ = ["LOADER", "MAX_IMAGE_BYTES", "MAX_INPUT_BYTES", "YAML_BREAKS", "Outputs", "atomic_output",
-           "atomic_write_text", "clean_up_on_signals", "decode", "interrupted", "note_interrupts", "read_bytes",
-           "read_json", "read_json_lines", "read_text", "read_yaml", "remove_temporaries", "split_lines",
-           "stream_lines", "yaml_problem"]
+           "atomic_write_text", "clean_up_on_signals", "compose_documents", "compose_yaml", "decode", "interrupted",
+           "note_interrupts", "read_bytes", "read_json", "read_json_lines", "read_text", "read_yaml",
+           "remove_temporaries", "split_lines", "stream_lines", "yaml_problem"]
 
 if TYPE_CHECKING:
     LOADER: type[yaml.SafeLoader]
@@ -219,16 +219,29 @@ def compose_yaml(text: str, file: str) -> Any:
     """A YAML text's node tree (``yaml.Node``, or None for an empty text), aliases not expanded and its size
     checked (:func:`~seal_cli.yamlnodes.check_size`); a syntax error as :func:`yaml_problem` words it. For the
     readers that report each problem at its node (:class:`~seal_cli.yamlnodes.NodeReader`)."""
+    return compose_documents(text, file, single=True)[0]
+
+
+def compose_documents(text: str, file: str, *, single: bool = False) -> list[Any]:
+    """The node trees of a YAML text's documents (``single``: the one document ``yaml.compose`` allows), bounded as
+    :func:`read_yaml` bounds a file: more than :data:`~seal_cli.yamlnodes.MAX_VALUES` values is refused at the value
+    past the bound by streaming the parser's events before any node is built (composing is ~4 s and ~300 MB a
+    million values: a 14 MB map of seven million numbers took over a minute and 2 GB before it was refused), and the
+    values the aliases expand to are counted per document."""
     import yaml
 
-    from seal_cli.yamlnodes import check_size
+    from seal_cli.yamlnodes import MAX_VALUES, check_size, count_values
 
+    loader = _loader()
     try:
-        root = yaml.compose(text, Loader=_loader())
+        if len(text) > MAX_VALUES:  # a value takes at least one character: a shorter text cannot hold more
+            count_values(text, loader, file, MAX_VALUES)
+        documents = [yaml.compose(text, Loader=loader)] if single else list(yaml.compose_all(text, Loader=loader))
     except yaml.YAMLError as exc:
         raise yaml_problem(exc, text, file) from None
-    check_size(root, file)
-    return root
+    for root in documents:
+        check_size(root, file, MAX_VALUES)
+    return documents
 
 
 def read_yaml(path: str | Path, max_values: int | None = None, what: str = "file") -> Any:

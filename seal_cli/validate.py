@@ -14,7 +14,7 @@ from pathlib import Path
 import yaml
 
 from seal_cli.errors import SealError
-from seal_cli.fileio import LOADER, read_text
+from seal_cli.fileio import compose_yaml, read_text
 from seal_cli.frames.reading import frame_files, read_library
 from seal_cli.maps.formats.map_server import KEYS, check_map_file
 from seal_cli.resources import framelib_dir
@@ -35,8 +35,8 @@ def is_map_file(path: Path) -> bool:
     if path.suffix == ".frame" or path.is_dir():
         return False
     try:
-        node = yaml.compose(read_text(path), Loader=LOADER)
-    except (yaml.YAMLError, SealError):
+        node = compose_yaml(read_text(path), str(path))
+    except SealError:
         return False
     if not isinstance(node, yaml.MappingNode):
         return False

@@ -268,3 +268,26 @@ def test_the_alfred2d_data_files_are_inputs_of_bench_tasks(tmp_path: Path) -> No
         (tmp_path / name).write_text("")
     assert [p.name for p in data_files(tmp_path)] == ["floorplans.json", "trials_train.jsonl",
                                                       "trials_valid_seen.jsonl"]
+
+
+def test_composing_counts_the_values_before_it_builds_a_node(monkeypatch: pytest.MonkeyPatch) -> None:
+    # a 14 MB map of seven million numbers composed for over a minute and 2 GB before anything looked at it
+    # (hostile17): every composed reader is bounded as read_yaml is, at the value past the bound
+    import yaml
+
+    from seal_cli import yamlnodes
+    from seal_cli.fileio import compose_documents, compose_yaml
+
+    monkeypatch.setattr(yamlnodes, "MAX_VALUES", 10)
+    built: list[str] = []
+    monkeypatch.setattr(yaml, "compose", lambda *a, **k: built.append("compose"))
+    with pytest.raises(SealError, match="holds more than 10 values") as caught:
+        compose_yaml("a: [" + ", ".join("0" * 20) + "]\n", "m.yaml")
+    assert (caught.value.where.line, caught.value.where.column) == (1, 26) and built == []  # the 11th value
+    monkeypatch.undo()
+    monkeypatch.setattr(yamlnodes, "MAX_VALUES", 30)  # 19 values as written, 48 expanded
+    bomb = "a: &a [x, x, x]\nb: &b [*a, *a, *a]\nc: [*b, *b]\n"
+    with pytest.raises(SealError, match="once its aliases"):
+        compose_documents("---\n{}\n---\n" + bomb, "f.yaml")
+    assert [type(d).__name__ for d in compose_documents("---\n[1]\n---\n{}\n", "f.yaml")] == ["SequenceNode",
+                                                                                              "MappingNode"]
