@@ -123,7 +123,8 @@ def read_bytes(path: str | Path, limit: int = MAX_INPUT_BYTES, what: str = "file
     where = Where(str(path))
     info = _regular(path, what)
     if info.st_size > limit:
-        raise SealError(f"this {what} is {_size(info.st_size)}; seal reads {what}s of at most {_size(limit)}", where)
+        size, most = _sizes(info.st_size, limit)
+        raise SealError(f"this {what} is {size}; seal reads {what}s of at most {most}", where)
     try:  # without blocking: a "regular" file that waits for data (/proc/kmsg) must not hang seal
         with os.fdopen(os.open(path, os.O_RDONLY | os.O_NONBLOCK), "rb") as handle:
             if not stat.S_ISREG(os.fstat(handle.fileno()).st_mode):  # swapped for a FIFO since the stat
@@ -140,6 +141,14 @@ def read_bytes(path: str | Path, limit: int = MAX_INPUT_BYTES, what: str = "file
         raise SealError(f"this {what} is larger than {_size(limit)}, the most seal reads", where)
     _READ[(info.st_dev, info.st_ino)] = str(path)
     return data
+
+
+def _sizes(size: int, limit: int) -> tuple[str, str]:
+    """A size past a limit and the limit, in bytes when the rounded sizes would read the same ("this file is 16 MiB;
+    seal reads files of at most 16 MiB" was said of a file 23 KB past the bound)."""
+    if _size(size) != _size(limit):
+        return _size(size), _size(limit)
+    return f"{size:,} bytes", f"{limit:,} bytes ({_size(limit)})"
 
 
 def _size(count: int) -> str:

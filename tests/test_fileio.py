@@ -291,3 +291,15 @@ def test_composing_counts_the_values_before_it_builds_a_node(monkeypatch: pytest
         compose_documents("---\n{}\n---\n" + bomb, "f.yaml")
     assert [type(d).__name__ for d in compose_documents("---\n[1]\n---\n{}\n", "f.yaml")] == ["SequenceNode",
                                                                                               "MappingNode"]
+
+
+def test_a_file_just_past_the_bound_says_its_size_in_bytes(tmp_path: Path) -> None:
+    # "this file is 16 MiB; seal reads files of at most 16 MiB" (hostile17)
+    from seal_cli.fileio import read_bytes
+
+    (tmp_path / "o.yaml").write_bytes(b"#" * (2**20 + 100))
+    with pytest.raises(SealError, match=r"is 1,048,676 bytes; seal reads files of at most 1,048,576 bytes \(1 MiB\)"):
+        read_bytes(tmp_path / "o.yaml", 2**20)
+    (tmp_path / "o.yaml").write_bytes(b"#" * (3 * 2**19))
+    with pytest.raises(SealError, match=r"is 1\.5 MiB; seal reads files of at most 1 MiB$"):
+        read_bytes(tmp_path / "o.yaml", 2**20)
