@@ -7,6 +7,7 @@ map_server.KEYS`) and none a frame file's is checked as a map.
 
 from __future__ import annotations
 
+import os
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -80,8 +81,8 @@ def validate_paths(paths: Iterable[str | Path], with_stdlib: bool = False) -> Re
     if frame_paths:
         extra: list[Path] = []
         if with_stdlib:
-            extra = [p for p in frame_files([framelib_dir()])[0] if p.resolve() not in
-                     {f.resolve() for f in frame_paths}]
+            extra = [p for p in frame_files([framelib_dir()])[0] if os.path.realpath(p) not in
+                     {os.path.realpath(f) for f in frame_paths}]
         library, found = read_library(extra + frame_paths)
         report.frames = len(library) - (len(read_library(extra)[0]) if extra else 0)
         report.categories = len(library.taxonomy.categories)

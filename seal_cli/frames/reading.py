@@ -31,7 +31,8 @@ if TYPE_CHECKING:
     READERS: Mapping[str, Reader]
     """The frame file formats, by file suffix (made when first asked for, see ``__getattr__``)."""
 
-__all__ = ["FRAME_SUFFIXES", "READERS", "cache_entry_name", "frame_files", "load_library", "read_files", "read_library", "standard_library"]
+__all__ = ["FRAME_SUFFIXES", "READERS", "cache_entry_name", "frame_files", "load_library", "read_files", "read_library",
+           "standard_library"]
 
 FRAME_SUFFIXES = (".yaml", ".yml", ".frame")
 """The suffixes of frame files (the keys of :data:`READERS`)."""
