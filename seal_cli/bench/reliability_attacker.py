@@ -569,7 +569,39 @@ def hostile17_cases() -> Iterator[Case]:
             yield Case(f"A a {'FIFO' if kind == 'fifo' else 'folder'} at the library's cache entry: parse",
                        ("parse", "stir the cup"), ((f"c/{entry}", kind),), codes=(0,), env=(("SEAL_CACHE_DIR", "c"),),
                        timeout=30)
+    yield Case("A import-bag of a link loop", ("import-bag", "loop", "-o", "o.yaml"), (("loop", "link:loop"),),
+               codes=(1,), absent=("o.yaml",), says=r"loop: cannot read this bag: Too many levels of symbolic links")
+    yield Case("A localize --goals with --rrd a link loop",
+               ("localize", "--map", "apartment", "--task", "find the cup", "--steps", "1", "--particles", "20",
+                "--goals", "g.yaml", "--rrd", "loop"), (("loop", "link:loop"),), codes=(1,), absent=("g.yaml",),
+               says=r"cannot write --rrd loop")
+    yield Case("A import-bag of a folder without metadata.yaml", ("import-bag", "b", "-o", "o.yaml"), (("b", "dir"),),
+               codes=(1,), absent=("o.yaml",), says=r"b: this folder is no ROS 2 bag: it has no metadata\.yaml")
+    yield from _misnamed_bags()
     yield Case("A observations 100 bytes past 16 MiB: the sizes in bytes",
                ("localize", "--map", "apartment", "--observations", "o.yaml"),
                (("o.yaml", b"#" * (16 * 2**20 + 100) + b"\n"),), codes=(1,), keep=("o.yaml",),
                says=r"o\.yaml: this file is 16,777,317 bytes; seal reads files of at most 16,777,216 bytes")
+
+
+def _misnamed_bags() -> Iterator[Case]:
+    """import-bag of an MCAP bag named ``.bag``, ``.db3`` or with no suffix: told to rename it."""
+    try:
+        import rosbags  # noqa: F401
+    except ImportError:
+        return
+    import tempfile
+    from pathlib import Path
+
+    from seal_cli.bench.ros import write_run
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+
+    with tempfile.TemporaryDirectory() as folder:
+        write_run(Path(folder) / "run.mcap", load_map(map_path("apartment")), 20, 5, np.random.default_rng(0))
+        bag = (Path(folder) / "run.mcap").read_bytes()
+    for name in ("run.bag", "run.db3", "run"):
+        yield Case(f"A import-bag of an MCAP bag named {name}", ("import-bag", name, "-o", "o.yaml"), ((name, bag),),
+                   codes=(1,), keep=(name,), absent=("o.yaml",),
+                   says=rf"{name.replace('.', chr(92) + '.')}: this file is an MCAP bag, but .*rename it to end in "
+                        r"\.mcap")
