@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import atexit
 import contextlib
+import errno
 import os
 import re
 import signal
@@ -522,7 +523,9 @@ class Outputs:
 
     def __init__(self, outputs: Mapping[str, str | Path | None], inputs: Iterable[str | Path | None] = (), *,
                  suffixes: Mapping[str, Sequence[str]] | None = None,
-                 folders: Mapping[str, Sequence[str]] | None = None, guard_read: bool = True) -> None:
+                 folders: Mapping[str, Sequence[str]] | None = None, guard_read: bool = True,
+                 by_option: bool = True) -> None:
+        self._by_option = by_option  # a failure to write is said of the option; else an OSError of the target
         self._outputs: dict[str, _Output] = {}
         self._folders: dict[str, Path] = {}
         planned: list[tuple[str, Path]] = []
@@ -569,8 +572,29 @@ class Outputs:
                  trace: TracebackType | None) -> None:
         if kind is None:
             self.commit()
-        else:
-            self.discard()
+            return
+        self.discard()
+        if isinstance(value, OSError):
+            written = self._written_by(value)
+            if written is not None and not self._by_option:  # nested in another's output: it names the option
+                raise OSError(value.errno, value.strerror, str(written.target)) from None
+            if written is not None:  # said of the file asked for, not of its temporary or of "the output"
+                option = written.option.split(" ")[0]  # "--pddl domain.pddl": a file of a folder's option
+                raise SealError(f"cannot write {option} {written.target}: {value.strerror}") from None
+
+    def _written_by(self, error: OSError) -> _Output | None:
+        """The output whose writing failed with ``error``: the one whose temporary it names, or, for a full disk
+        reported without a name (a file object's write or close), the one whose folder has no space left."""
+        for output in self._outputs.values():
+            if error.filename is not None and os.path.abspath(error.filename) == os.path.abspath(output.tmp):
+                return output
+        if error.filename is not None or error.errno not in (errno.ENOSPC, errno.EDQUOT):
+            return None
+        for output in self._outputs.values():
+            with contextlib.suppress(OSError):
+                if not output.device and os.statvfs(output.tmp.parent).f_bavail == 0:
+                    return output
+        return None
 
     def commit(self) -> None:
         """Move every temporary onto its target (devices are written in place). SIGINT, SIGTERM and SIGHUP wait
@@ -715,7 +739,7 @@ def _move(output: _Output) -> None:
 @contextlib.contextmanager
 def atomic_output(path: str | Path) -> Iterator[Path]:
     """A temporary path for ``path``; moved onto it only if the block ends without error."""
-    with Outputs({"output": path}, guard_read=False) as plan:
+    with Outputs({"output": path}, guard_read=False, by_option=False) as plan:
         yield plan["output"]
 
 

@@ -303,3 +303,26 @@ def test_a_file_just_past_the_bound_says_its_size_in_bytes(tmp_path: Path) -> No
     (tmp_path / "o.yaml").write_bytes(b"#" * (3 * 2**19))
     with pytest.raises(SealError, match=r"is 1\.5 MiB; seal reads files of at most 1 MiB$"):
         read_bytes(tmp_path / "o.yaml", 2**20)
+
+
+def test_a_full_disk_under_an_output_is_said_of_its_option(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # a full disk said "cannot write the output" (as if stdout had failed) or named the temporary (hostile17)
+    import errno
+    import os
+
+    from seal_cli.fileio import Outputs, atomic_output
+
+    class Full:
+        f_bavail = 0
+
+    monkeypatch.setattr(os, "statvfs", lambda folder: Full())
+    png = {"--png": tmp_path / "o.png"}
+    said = r"^cannot write --png .*o\.png: No space left on device$"
+    with pytest.raises(SealError, match=said), Outputs(png, suffixes={"--png": (".png",)}):
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+    with pytest.raises(SealError, match=said), Outputs(png, suffixes={"--png": (".png",)}) as outputs, \
+            atomic_output(outputs["--png"]) as inner:  # a writer's own temporary, inside the command's
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(inner))
+    with pytest.raises(OSError, match="Broken pipe"), Outputs(png, suffixes={"--png": (".png",)}):
+        raise OSError(errno.EPIPE, os.strerror(errno.EPIPE))  # anything else is left to the CLI, as it was
+    assert list(tmp_path.iterdir()) == []

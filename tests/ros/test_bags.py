@@ -131,7 +131,8 @@ def test_a_bag_named_as_another_format_is_told_to_be_renamed(tmp_path: Path, nam
     for wrong in (".bag", ".mcap", ".db3", ""):
         if wrong != right:
             moved = shutil.copy(bag, tmp_path / f"moved{wrong}")
-            assert message_of(Path(moved)).endswith(f"seal reads a bag by its name's suffix; rename it to end in {right}")
+            said = message_of(Path(moved))
+            assert said.endswith(f"seal reads a bag by its name's suffix; rename it to end in {right}")
     assert read_run(bag).observations
 
 
