@@ -578,6 +578,9 @@ def hostile17_cases() -> Iterator[Case]:
     yield Case("A import-bag of a folder without metadata.yaml", ("import-bag", "b", "-o", "o.yaml"), (("b", "dir"),),
                codes=(1,), absent=("o.yaml",), says=r"b: this folder is no ROS 2 bag: it has no metadata\.yaml")
     yield from _misnamed_bags()
+    yield Case("A run a word whose 'c' is Cyrillic ('\u0441up')", ("run", "find the \u0441up", "--map", "apartment",
+                                                                 "--particles", "20"), codes=(1,),
+               says=r"column 10: the word '\u0441up' mixes Cyrillic and Latin letters")
     yield Case("A observations 100 bytes past 16 MiB: the sizes in bytes",
                ("localize", "--map", "apartment", "--observations", "o.yaml"),
                (("o.yaml", b"#" * (16 * 2**20 + 100) + b"\n"),), codes=(1,), keep=("o.yaml",),
