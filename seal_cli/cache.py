@@ -86,15 +86,40 @@ def _payload_start(data: bytes | mmap.mmap, stamp: str) -> int | None:
     return end + 1 if whole else None
 
 
+MAX_READ = 64 * 2**20
+"""The largest entry :func:`read` reads whole (the library's is about 90 KB): a larger file at an entry's name is not
+one seal wrote, and is made again (replaced)."""
+
+
+def _open(path: Path) -> int | None:
+    """A file descriptor of ``path`` if it is a regular file, else None: a FIFO, a device or a folder at an entry's
+    name (a careless ``mkfifo``, a link to ``/dev/zero`` in a shared cache) is no entry. Opened without blocking, so
+    that a FIFO cannot stop seal waiting for a writer (``seal parse`` hung on one)."""
+    import stat
+
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
+    except (OSError, ValueError):
+        return None
+    if stat.S_ISREG(os.fstat(fd).st_mode):
+        return fd
+    os.close(fd)
+    return None
+
+
 def read(name: str, stamp: str) -> bytes | None:
     """The payload of the entry ``name`` if it is whole and of this stamp; None otherwise (none,
-    stale, corrupt, unreadable or the cache off)."""
+    stale, corrupt, unreadable, not a regular file, larger than :data:`MAX_READ`, or the cache off)."""
     where = folder()
-    if where is None:
+    fd = None if where is None else _open(where / name)
+    if fd is None:
         return None
     try:
-        data = (where / name).read_bytes()
-    except (OSError, ValueError):
+        with os.fdopen(fd, "rb") as handle:
+            data = handle.read(MAX_READ + 1)
+    except OSError:
+        return None
+    if len(data) > MAX_READ:
         return None
     start = _payload_start(data, stamp)
     return None if start is None else data[start:]
@@ -104,10 +129,11 @@ def read_mapped(name: str, stamp: str) -> tuple[mmap.mmap, int] | None:
     """The entry ``name`` mapped into memory (read only) and where its payload starts, if it is whole
     and of this stamp; None otherwise. For large payloads looked up in place, never read whole."""
     where = folder()
-    if where is None:
+    fd = None if where is None else _open(where / name)
+    if fd is None:
         return None
     try:
-        with open(where / name, "rb") as handle:
+        with os.fdopen(fd, "rb") as handle:
             mapped = mmap.mmap(handle.fileno(), 0, access=mmap.ACCESS_READ)
     except (OSError, ValueError):  # no such entry, or an empty file (mmap refuses length 0)
         return None

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import atexit
 import contextlib
+import errno
 import os
 import re
 import signal
@@ -36,9 +37,9 @@ if TYPE_CHECKING:
     import yaml
 
 __all__ = ["LOADER", "MAX_IMAGE_BYTES", "MAX_INPUT_BYTES", "YAML_BREAKS", "Outputs", "atomic_output",
-           "atomic_write_text", "clean_up_on_signals", "decode", "interrupted", "note_interrupts", "read_bytes",
-           "read_json", "read_json_lines", "read_text", "read_yaml", "remove_temporaries", "split_lines",
-           "stream_lines", "yaml_problem"]
+           "atomic_write_text", "clean_up_on_signals", "compose_documents", "compose_yaml", "decode", "interrupted",
+           "note_interrupts", "read_bytes", "read_json", "read_json_lines", "read_text", "read_yaml",
+           "remove_temporaries", "split_lines", "stream_lines", "yaml_problem"]
 
 if TYPE_CHECKING:
     LOADER: type[yaml.SafeLoader]
@@ -123,7 +124,8 @@ def read_bytes(path: str | Path, limit: int = MAX_INPUT_BYTES, what: str = "file
     where = Where(str(path))
     info = _regular(path, what)
     if info.st_size > limit:
-        raise SealError(f"this {what} is {_size(info.st_size)}; seal reads {what}s of at most {_size(limit)}", where)
+        size, most = _sizes(info.st_size, limit)
+        raise SealError(f"this {what} is {size}; seal reads {what}s of at most {most}", where)
     try:  # without blocking: a "regular" file that waits for data (/proc/kmsg) must not hang seal
         with os.fdopen(os.open(path, os.O_RDONLY | os.O_NONBLOCK), "rb") as handle:
             if not stat.S_ISREG(os.fstat(handle.fileno()).st_mode):  # swapped for a FIFO since the stat
@@ -140,6 +142,14 @@ def read_bytes(path: str | Path, limit: int = MAX_INPUT_BYTES, what: str = "file
         raise SealError(f"this {what} is larger than {_size(limit)}, the most seal reads", where)
     _READ[(info.st_dev, info.st_ino)] = str(path)
     return data
+
+
+def _sizes(size: int, limit: int) -> tuple[str, str]:
+    """A size past a limit and the limit, in bytes when the rounded sizes would read the same ("this file is 16 MiB;
+    seal reads files of at most 16 MiB" was said of a file 23 KB past the bound)."""
+    if _size(size) != _size(limit):
+        return _size(size), _size(limit)
+    return f"{size:,} bytes", f"{limit:,} bytes ({_size(limit)})"
 
 
 def _size(count: int) -> str:
@@ -219,16 +229,29 @@ def compose_yaml(text: str, file: str) -> Any:
     """A YAML text's node tree (``yaml.Node``, or None for an empty text), aliases not expanded and its size
     checked (:func:`~seal_cli.yamlnodes.check_size`); a syntax error as :func:`yaml_problem` words it. For the
     readers that report each problem at its node (:class:`~seal_cli.yamlnodes.NodeReader`)."""
+    return compose_documents(text, file, single=True)[0]
+
+
+def compose_documents(text: str, file: str, *, single: bool = False) -> list[Any]:
+    """The node trees of a YAML text's documents (``single``: the one document ``yaml.compose`` allows), bounded as
+    :func:`read_yaml` bounds a file: more than :data:`~seal_cli.yamlnodes.MAX_VALUES` values is refused at the value
+    past the bound by streaming the parser's events before any node is built (composing is ~4 s and ~300 MB a
+    million values: a 14 MB map of seven million numbers took over a minute and 2 GB before it was refused), and the
+    values the aliases expand to are counted per document."""
     import yaml
 
-    from seal_cli.yamlnodes import check_size
+    from seal_cli.yamlnodes import MAX_VALUES, check_size, count_values
 
+    loader = _loader()
     try:
-        root = yaml.compose(text, Loader=_loader())
+        if len(text) > MAX_VALUES:  # a value takes at least one character: a shorter text cannot hold more
+            count_values(text, loader, file, MAX_VALUES)
+        documents = [yaml.compose(text, Loader=loader)] if single else list(yaml.compose_all(text, Loader=loader))
     except yaml.YAMLError as exc:
         raise yaml_problem(exc, text, file) from None
-    check_size(root, file)
-    return root
+    for root in documents:
+        check_size(root, file, MAX_VALUES)
+    return documents
 
 
 def read_yaml(path: str | Path, max_values: int | None = None, what: str = "file") -> Any:
@@ -500,7 +523,9 @@ class Outputs:
 
     def __init__(self, outputs: Mapping[str, str | Path | None], inputs: Iterable[str | Path | None] = (), *,
                  suffixes: Mapping[str, Sequence[str]] | None = None,
-                 folders: Mapping[str, Sequence[str]] | None = None, guard_read: bool = True) -> None:
+                 folders: Mapping[str, Sequence[str]] | None = None, guard_read: bool = True,
+                 by_option: bool = True) -> None:
+        self._by_option = by_option  # a failure to write is said of the option; else an OSError of the target
         self._outputs: dict[str, _Output] = {}
         self._folders: dict[str, Path] = {}
         planned: list[tuple[str, Path]] = []
@@ -547,8 +572,29 @@ class Outputs:
                  trace: TracebackType | None) -> None:
         if kind is None:
             self.commit()
-        else:
-            self.discard()
+            return
+        self.discard()
+        if isinstance(value, OSError):
+            written = self._written_by(value)
+            if written is not None and not self._by_option:  # nested in another's output: it names the option
+                raise OSError(value.errno, value.strerror, str(written.target)) from None
+            if written is not None:  # said of the file asked for, not of its temporary or of "the output"
+                option = written.option.split(" ")[0]  # "--pddl domain.pddl": a file of a folder's option
+                raise SealError(f"cannot write {option} {written.target}: {value.strerror}") from None
+
+    def _written_by(self, error: OSError) -> _Output | None:
+        """The output whose writing failed with ``error``: the one whose temporary it names, or, for a full disk
+        reported without a name (a file object's write or close), the one whose folder has no space left."""
+        for output in self._outputs.values():
+            if error.filename is not None and os.path.abspath(error.filename) == os.path.abspath(output.tmp):
+                return output
+        if error.filename is not None or error.errno not in (errno.ENOSPC, errno.EDQUOT):
+            return None
+        for output in self._outputs.values():
+            with contextlib.suppress(OSError):
+                if not output.device and os.statvfs(output.tmp.parent).f_bavail == 0:
+                    return output
+        return None
 
     def commit(self) -> None:
         """Move every temporary onto its target (devices are written in place). SIGINT, SIGTERM and SIGHUP wait
@@ -693,7 +739,7 @@ def _move(output: _Output) -> None:
 @contextlib.contextmanager
 def atomic_output(path: str | Path) -> Iterator[Path]:
     """A temporary path for ``path``; moved onto it only if the block ends without error."""
-    with Outputs({"output": path}, guard_read=False) as plan:
+    with Outputs({"output": path}, guard_read=False, by_option=False) as plan:
         yield plan["output"]
 
 

@@ -7,6 +7,7 @@ map_server.KEYS`) and none a frame file's is checked as a map.
 
 from __future__ import annotations
 
+import os
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -14,7 +15,7 @@ from pathlib import Path
 import yaml
 
 from seal_cli.errors import SealError
-from seal_cli.fileio import LOADER, read_text
+from seal_cli.fileio import compose_yaml, read_text
 from seal_cli.frames.reading import frame_files, read_library
 from seal_cli.maps.formats.map_server import KEYS, check_map_file
 from seal_cli.resources import framelib_dir
@@ -35,8 +36,8 @@ def is_map_file(path: Path) -> bool:
     if path.suffix == ".frame" or path.is_dir():
         return False
     try:
-        node = yaml.compose(read_text(path), Loader=LOADER)
-    except (yaml.YAMLError, SealError):
+        node = compose_yaml(read_text(path), str(path))
+    except SealError:
         return False
     if not isinstance(node, yaml.MappingNode):
         return False
@@ -80,8 +81,8 @@ def validate_paths(paths: Iterable[str | Path], with_stdlib: bool = False) -> Re
     if frame_paths:
         extra: list[Path] = []
         if with_stdlib:
-            extra = [p for p in frame_files([framelib_dir()])[0] if p.resolve() not in
-                     {f.resolve() for f in frame_paths}]
+            extra = [p for p in frame_files([framelib_dir()])[0] if os.path.realpath(p) not in
+                     {os.path.realpath(f) for f in frame_paths}]
         library, found = read_library(extra + frame_paths)
         report.frames = len(library) - (len(read_library(extra)[0]) if extra else 0)
         report.categories = len(library.taxonomy.categories)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import pytest
@@ -93,3 +94,24 @@ def test_a_corrupted_word_table_is_made_again(own_cache: Path) -> None:
     again = _Table("lemma_lu.csv.gz")
     assert again.entries("cups") == found
     assert b"\ncups," in entry.read_bytes()  # made again
+
+
+@pytest.mark.parametrize("kind", ["fifo", "zero", "folder", "large"])
+def test_what_is_no_regular_file_at_an_entry_name_is_no_entry(own_cache: Path, kind: str,
+                                                              monkeypatch: pytest.MonkeyPatch) -> None:
+    # a FIFO at the library's entry hung `seal parse`; a link to /dev/zero read it for 100 s up to 23 GB (hostile17)
+    own_cache.mkdir(parents=True, exist_ok=True)
+    entry = own_cache / "e"
+    if kind == "fifo":
+        os.mkfifo(entry)
+    elif kind == "zero":
+        entry.symlink_to("/dev/zero")
+    elif kind == "folder":
+        entry.mkdir()
+    else:
+        monkeypatch.setattr(cache, "MAX_READ", 100)
+        cache.write("e", "s", b"x" * 101)
+    assert cache.read("e", "s") is None
+    assert (cache.read_mapped("e", "s") is None) == (kind != "large")  # a large entry is mapped, never read whole
+    if kind != "folder":
+        assert cache.write("e", "s", b"payload") and cache.read("e", "s") == b"payload"  # made again in its place

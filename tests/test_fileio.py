@@ -268,3 +268,61 @@ def test_the_alfred2d_data_files_are_inputs_of_bench_tasks(tmp_path: Path) -> No
         (tmp_path / name).write_text("")
     assert [p.name for p in data_files(tmp_path)] == ["floorplans.json", "trials_train.jsonl",
                                                       "trials_valid_seen.jsonl"]
+
+
+def test_composing_counts_the_values_before_it_builds_a_node(monkeypatch: pytest.MonkeyPatch) -> None:
+    # a 14 MB map of seven million numbers composed for over a minute and 2 GB before anything looked at it
+    # (hostile17): every composed reader is bounded as read_yaml is, at the value past the bound
+    import yaml
+
+    from seal_cli import yamlnodes
+    from seal_cli.fileio import compose_documents, compose_yaml
+
+    monkeypatch.setattr(yamlnodes, "MAX_VALUES", 10)
+    built: list[str] = []
+    monkeypatch.setattr(yaml, "compose", lambda *a, **k: built.append("compose"))
+    with pytest.raises(SealError, match="holds more than 10 values") as caught:
+        compose_yaml("a: [" + ", ".join("0" * 20) + "]\n", "m.yaml")
+    assert (caught.value.where.line, caught.value.where.column) == (1, 26) and built == []  # the 11th value
+    monkeypatch.undo()
+    monkeypatch.setattr(yamlnodes, "MAX_VALUES", 30)  # 19 values as written, 48 expanded
+    bomb = "a: &a [x, x, x]\nb: &b [*a, *a, *a]\nc: [*b, *b]\n"
+    with pytest.raises(SealError, match="once its aliases"):
+        compose_documents("---\n{}\n---\n" + bomb, "f.yaml")
+    assert [type(d).__name__ for d in compose_documents("---\n[1]\n---\n{}\n", "f.yaml")] == ["SequenceNode",
+                                                                                              "MappingNode"]
+
+
+def test_a_file_just_past_the_bound_says_its_size_in_bytes(tmp_path: Path) -> None:
+    # "this file is 16 MiB; seal reads files of at most 16 MiB" (hostile17)
+    from seal_cli.fileio import read_bytes
+
+    (tmp_path / "o.yaml").write_bytes(b"#" * (2**20 + 100))
+    with pytest.raises(SealError, match=r"is 1,048,676 bytes; seal reads files of at most 1,048,576 bytes \(1 MiB\)"):
+        read_bytes(tmp_path / "o.yaml", 2**20)
+    (tmp_path / "o.yaml").write_bytes(b"#" * (3 * 2**19))
+    with pytest.raises(SealError, match=r"is 1\.5 MiB; seal reads files of at most 1 MiB$"):
+        read_bytes(tmp_path / "o.yaml", 2**20)
+
+
+def test_a_full_disk_under_an_output_is_said_of_its_option(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # a full disk said "cannot write the output" (as if stdout had failed) or named the temporary (hostile17)
+    import errno
+    import os
+
+    from seal_cli.fileio import Outputs, atomic_output
+
+    class Full:
+        f_bavail = 0
+
+    monkeypatch.setattr(os, "statvfs", lambda folder: Full())
+    png = {"--png": tmp_path / "o.png"}
+    said = r"^cannot write --png .*o\.png: No space left on device$"
+    with pytest.raises(SealError, match=said), Outputs(png, suffixes={"--png": (".png",)}):
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+    with pytest.raises(SealError, match=said), Outputs(png, suffixes={"--png": (".png",)}) as outputs, \
+            atomic_output(outputs["--png"]) as inner:  # a writer's own temporary, inside the command's
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(inner))
+    with pytest.raises(OSError, match="Broken pipe"), Outputs(png, suffixes={"--png": (".png",)}):
+        raise OSError(errno.EPIPE, os.strerror(errno.EPIPE))  # anything else is left to the CLI, as it was
+    assert list(tmp_path.iterdir()) == []

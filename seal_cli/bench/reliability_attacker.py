@@ -27,8 +27,8 @@ import numpy as np
 
 from seal_cli.bench.reliability import FRAME, Case, hostile_setting
 
-__all__ = ["alfred2d_data", "attacker_cases", "hostile14_cases", "hostile15_cases", "hostile16_cases", "rgba_png",
-           "sparse_pgm"]
+__all__ = ["alfred2d_data", "attacker_cases", "chain_library", "hostile14_cases", "hostile15_cases", "hostile16_cases",
+           "hostile17_cases", "rgba_png", "sparse_pgm"]
 
 DIGITS = "1" * 5_000
 """An integer longer than Python converts from text (4,300 digits)."""
@@ -282,6 +282,7 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield from hostile14_cases()
     yield from hostile15_cases()
     yield from hostile16_cases()
+    yield from hostile17_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -526,3 +527,84 @@ def _bag_names() -> Iterator[Case]:
     for name in ("r\nx: [.mcap", "r\u2028x.mcap", "r\udcffz.mcap"):
         yield Case(f"A import-bag of a bag called {name!r}: the file reads back", ("import-bag", name, "-o", "o.yaml"),
                    ((name, bag),), codes=(0,), keep=(name,), whole=("o.yaml",))
+
+
+def chain_library(length: int) -> tuple[bytes, str]:
+    """A YAML frame file of ``length`` frames Z0 … Z{length-1}, each needing what only the one before it gives,
+    and a command evoking the last (its lexical unit: "zap" and three letters)."""
+    def unit(i: int) -> str:
+        return "zap" + "".join(chr(97 + (i // 26 ** d) % 26) for d in range(3))
+
+    frames = [f"  - frame: Z{i}\n    lexical_units: [{unit(i)}]\n    elements:\n      theme: {{type: object}}\n"
+              f"    preconditions: [{f'done{i - 1}(theme)' if i else ''}]\n    actions: [navigate(theme)]\n"
+              f"    postconditions: [done{i}(theme)]\n" for i in range(length)]
+    return ("frames:\n" + "".join(frames)).encode(), f"{unit(length - 1)} the cup"
+
+
+def hostile17_cases() -> Iterator[Case]:
+    """Round hostile17: YAML of millions of values composed before anything bounded it (maps, frame files,
+    observations, trajectories), a frame library whose needs chain 3,000 deep, what is no file at a cache entry's
+    name, and a file just past the size bound said to be of the bound's size."""
+    millions = b"[" + b"0," * 7_000_000 + b"0]\n"  # 14 MB: seven million values, within the 16 MiB of a file
+    said = r"{}:\d+:\d+: this file holds more than 1,000,000 values"
+    for name, argv, data in (
+            ("a map: validate", ("validate", "m.yaml"), b"name: m\nbounds: [0, 0, 4, 4]\nnoise: " + millions),
+            ("a map: map", ("map", "m.yaml"), b"name: m\nbounds: [0, 0, 4, 4]\nnoise: " + millions),
+            ("a frame file: frames", ("frames", "--framelib", "+m.yaml"), b"frame: Zap\nnoise: " + millions),
+            ("observations: localize", ("localize", "--map", "apartment", "--particles", "20", "--observations",
+                                        "m.yaml"), b"- {pose: [0, 0], detections: " + millions + b"}\n"),
+            ("a trajectory: localize", ("localize", "--map", "apartment", "--particles", "20", "--trajectory",
+                                        "m.yaml"), b"poses: " + millions)):
+        yield Case(f"A seven million values in {name}", argv, (("m.yaml", data),), codes=(1,), keep=("m.yaml",),
+                   says=said.format(r"m\.yaml"), timeout=40)
+    chain, command = chain_library(3000)
+    yield Case("A a frame library whose needs chain 3,000 frames deep: plan",
+               ("plan", "--framelib", "+z.yaml", command), (("z.yaml", chain),), codes=(1,), keep=("z.yaml",),
+               says=r"z\.yaml:\d+:\d+: Z2999 needs a chain of more than 100 frames")
+    from seal_cli.frames.reading import cache_entry_name
+
+    entry = cache_entry_name()
+    if entry is not None:
+        for kind in ("fifo", "dir"):
+            yield Case(f"A a {'FIFO' if kind == 'fifo' else 'folder'} at the library's cache entry: parse",
+                       ("parse", "stir the cup"), ((f"c/{entry}", kind),), codes=(0,), env=(("SEAL_CACHE_DIR", "c"),),
+                       timeout=30)
+    yield Case("A import-bag of a link loop", ("import-bag", "loop", "-o", "o.yaml"), (("loop", "link:loop"),),
+               codes=(1,), absent=("o.yaml",), says=r"loop: cannot read this bag: Too many levels of symbolic links")
+    yield Case("A localize --goals with --rrd a link loop",
+               ("localize", "--map", "apartment", "--task", "find the cup", "--steps", "1", "--particles", "20",
+                "--goals", "g.yaml", "--rrd", "loop"), (("loop", "link:loop"),), codes=(1,), absent=("g.yaml",),
+               says=r"cannot write --rrd loop")
+    yield Case("A import-bag of a folder without metadata.yaml", ("import-bag", "b", "-o", "o.yaml"), (("b", "dir"),),
+               codes=(1,), absent=("o.yaml",), says=r"b: this folder is no ROS 2 bag: it has no metadata\.yaml")
+    yield from _misnamed_bags()
+    yield Case("A run a word whose 'c' is Cyrillic ('\u0441up')", ("run", "find the \u0441up", "--map", "apartment",
+                                                                 "--particles", "20"), codes=(1,),
+               says=r"column 10: the word '\u0441up' mixes Cyrillic and Latin letters")
+    yield Case("A observations 100 bytes past 16 MiB: the sizes in bytes",
+               ("localize", "--map", "apartment", "--observations", "o.yaml"),
+               (("o.yaml", b"#" * (16 * 2**20 + 100) + b"\n"),), codes=(1,), keep=("o.yaml",),
+               says=r"o\.yaml: this file is 16,777,317 bytes; seal reads files of at most 16,777,216 bytes")
+
+
+def _misnamed_bags() -> Iterator[Case]:
+    """import-bag of an MCAP bag named ``.bag``, ``.db3`` or with no suffix: told to rename it."""
+    try:
+        import rosbags  # noqa: F401
+    except ImportError:
+        return
+    import tempfile
+    from pathlib import Path
+
+    from seal_cli.bench.ros import write_run
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+
+    with tempfile.TemporaryDirectory() as folder:
+        write_run(Path(folder) / "run.mcap", load_map(map_path("apartment")), 20, 5, np.random.default_rng(0))
+        bag = (Path(folder) / "run.mcap").read_bytes()
+    for name in ("run.bag", "run.db3", "run"):
+        yield Case(f"A import-bag of an MCAP bag named {name}", ("import-bag", name, "-o", "o.yaml"), ((name, bag),),
+                   codes=(1,), keep=(name,), absent=("o.yaml",),
+                   says=rf"{name.replace('.', chr(92) + '.')}: this file is an MCAP bag, but .*rename it to end in "
+                        r"\.mcap")

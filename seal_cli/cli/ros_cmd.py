@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import typer
@@ -29,7 +30,7 @@ def import_bag(
     from seal_cli.ros.bags import read_run
     from seal_cli.ros.importing import observations_text
 
-    if output.resolve() == bag.resolve():
+    if os.path.realpath(output) == os.path.realpath(bag):  # Path.resolve raises on a link loop
         raise SealError(f"-o {output} is the bag itself: give another file", Where(str(output)))
     from seal_cli.cli import OUTPUT_SUFFIXES
     from seal_cli.fileio import Outputs

@@ -31,7 +31,8 @@ if TYPE_CHECKING:
     READERS: Mapping[str, Reader]
     """The frame file formats, by file suffix (made when first asked for, see ``__getattr__``)."""
 
-__all__ = ["FRAME_SUFFIXES", "READERS", "frame_files", "load_library", "read_files", "read_library", "standard_library"]
+__all__ = ["FRAME_SUFFIXES", "READERS", "cache_entry_name", "frame_files", "load_library", "read_files", "read_library",
+           "standard_library"]
 
 FRAME_SUFFIXES = (".yaml", ".yml", ".frame")
 """The suffixes of frame files (the keys of :data:`READERS`)."""
@@ -183,6 +184,15 @@ def _with_units(frames: list[Frame], units: Sequence[tuple[str, LexicalUnit]],
             frame = dataclasses.replace(frame, lexical_units=frame.lexical_units + tuple(new))
         out.append(frame)
     return out
+
+
+def cache_entry_name(paths: Iterable[str | Path] | None = None) -> str | None:
+    """The name of the cache entry (:mod:`seal_cli.cache`) of the library in these files and folders (default: the
+    standard library), or None when it has none (a file that cannot be read)."""
+    given = [framelib_dir()] if paths is None else list(paths)
+    files, problems = frame_files(given)
+    entry = None if problems else _Entry.of(given, files)
+    return entry.name if entry else None
 
 
 def load_library(paths: Iterable[str | Path] | None = None) -> Library:

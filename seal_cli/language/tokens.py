@@ -110,6 +110,8 @@ def tokenize(text: str) -> list[Word]:
         if kind == "space" or kind == "quote":
             continue                    # as many spaces as words: the commonest token first
         if kind == "word":
+            if not match.group().isascii():
+                _check_one_alphabet(match.group(), start, text)
             words.append(Word(match.group(), start, pos))
         elif kind == "punct" and match.group() == "." and words and words[-1].end == start and \
                 words[-1].lower in TITLES and (capitalised(words[-1]) or words[-1].lower in TITLES_ONLY) and \
@@ -128,6 +130,38 @@ def tokenize(text: str) -> list[Word]:
     if pos != len(text):
         raise CommandError(f"unexpected character {text[pos]!r}", pos + 1, text, ["a word"])
     return words
+
+
+_ALPHABETS = ("LATIN", "CYRILLIC", "GREEK")
+"""The alphabets whose letters look alike ("с" and "c", "ο" and "o", "і" and "i": Unicode's confusables)."""
+
+
+def _alphabet(letter: str) -> str | None:
+    import unicodedata
+
+    name = unicodedata.name(letter, "")
+    return next((a for a in _ALPHABETS if name.startswith(a + " ")), None)
+
+
+def _check_one_alphabet(word: str, start: int, text: str) -> None:
+    """Refuse a word whose letters, between its hyphens and apostrophes, mix Latin, Cyrillic and Greek: "сup" with a
+    Cyrillic "с" reads as a cup to a person and as a word of no class to seal (``run "find the сup"`` searched the
+    whole house for it). A part wholly in one alphabet ("чашка", "β-carotene") is read as written. The letter that
+    differs from most of its part is named, at its column."""
+    import unicodedata
+
+    offset = 0
+    for part in re.split(r"(['’-])", word):
+        found = [(i, a) for i, ch in enumerate(part) if (a := _alphabet(ch)) is not None]
+        kinds = {a for _, a in found}
+        if len(kinds) > 1:
+            most = max(sorted(kinds), key=lambda k: sum(a == k for _, a in found))
+            i, odd = next((i, a) for i, a in found if a != most)
+            letter = part[i]
+            raise CommandError(f"the word {word!r} mixes {odd.title()} and {most.title()} letters ({letter!r} is "
+                               f"{unicodedata.name(letter)}): type it in one alphabet", start + offset + i + 1, text,
+                               ["a word in one alphabet"])
+        offset += len(part)
 
 
 def _title_before_name(text: str, pos: int, written: bool = True) -> bool:

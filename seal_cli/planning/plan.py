@@ -63,10 +63,15 @@ from seal_cli.planning.state import State
 if TYPE_CHECKING:
     pass
 
-__all__ = ["MAX_NODES", "Plan", "Step", "already_so", "explain", "plan"]
+__all__ = ["MAX_CHAIN", "MAX_NODES", "Plan", "Step", "already_so", "explain", "plan"]
 
 MAX_NODES = 20_000
 """Default bound on the nodes the search expands before it gives up."""
+
+MAX_CHAIN = 100
+"""The most frames a chain of needs may hold (a frame needing a fact only a frame needing another fact gives, and so
+on): the standard library's longest is a handful; a library whose chain is 3,000 long ran Python out of stack
+("nested too deeply", naming nothing) and one 792 long took 44 s to plan (each node walks the chain again)."""
 
 
 @dataclass(frozen=True)
@@ -293,13 +298,36 @@ class _Search:
         goal = self.commanded[k]
         if state.applicable(goal):
             return [(goal, True)]
-        found: list[Binding] = []
-        self._relevant(goal, state, k, found, set(), {_key(goal)})
-        return [(b, False) for b in found]
+        return [(b, False) for b in self._relevant(goal, state, k)]
 
-    def _relevant(self, needer: Binding, state: State, k: int, found: list[Binding], facts: set[Fact],
-                  tried: set[tuple[str, tuple[tuple[str, str], ...]]]) -> None:
-        """Depth first through the unmet preconditions: achievers that can run are successors."""
+    def _relevant(self, goal: Binding, state: State, k: int) -> list[Binding]:
+        """Depth first through the unmet preconditions: achievers that can run are successors. The walk
+        keeps its own stack of frames still needing something, at most :data:`MAX_CHAIN` deep."""
+        found: list[Binding] = []
+        facts: set[Fact] = set()
+        tried = {_key(goal)}
+        chain = [goal]
+        stack = [self._options(goal, state, k, facts)]
+        while stack:
+            option = next(stack[-1], None)
+            if option is None:
+                stack.pop()
+                chain.pop()
+                continue
+            if _key(option) in tried:
+                continue
+            tried.add(_key(option))
+            if state.applicable(option):
+                found.append(option)
+            elif len(stack) == MAX_CHAIN:
+                raise self._too_deep(chain + [option])
+            else:
+                chain.append(option)
+                stack.append(self._options(option, state, k, facts))
+        return found
+
+    def _options(self, needer: Binding, state: State, k: int, facts: set[Fact]) -> Iterator[Binding]:
+        """The achievers of each of ``needer``'s unmet preconditions not met with before, in order."""
         for fact in state.unmet(needer):
             if fact in facts:
                 continue
@@ -307,14 +335,18 @@ class _Search:
             options = self.achievers(fact, needer, state)
             if not options:
                 self.trace.dead.setdefault(k, []).append((fact, needer))
-            for option in options:
-                if _key(option) in tried:
-                    continue
-                tried.add(_key(option))
-                if state.applicable(option):
-                    found.append(option)
-                else:
-                    self._relevant(option, state, k, found, facts, tried)
+            yield from options
+
+    @staticmethod
+    def _too_deep(chain: Sequence[Binding]) -> SealError:
+        shown = [b.frame.name for b in chain]
+        if len(shown) > 6:
+            shown = [*shown[:3], f"... ({len(shown) - 6:,} more)", *shown[-3:]]
+        return SealError(f"{chain[0].frame.name} needs a chain of more than {MAX_CHAIN} frames, each needing "
+                         f"the next ({', '.join(shown)}); seal plans chains of at most {MAX_CHAIN}",
+                         chain[-1].frame.where,
+                         hint="each frame there needs what only the next one gives: a chain this long is most likely "
+                              "a mistake in the frame library")
 
     def run(self, initial: State) -> tuple[list[tuple[Binding, bool]], tuple[Binding, ...], int]:
         """The path (frames, whether commanded), the commanded frames passed over on it (in order), and

@@ -15,6 +15,7 @@ tool publishes and Nav2's ``NavigateToPose`` action takes — stamped 1 s apart 
 from __future__ import annotations
 
 import math
+import os
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -78,7 +79,7 @@ def check_goals_path(path: str | Path, inputs: Sequence[str | Path | None] = ())
     inputs and its other outputs)."""
     target = Path(path)
     for given in inputs:
-        if given is not None and Path(given).resolve() == target.resolve():
+        if given is not None and os.path.realpath(given) == os.path.realpath(target):  # a link loop: no raise
             raise SealError(f"--goals {target} is an input or another output of the run: give another file",
                             Where(str(target)))
     folder = target.parent if str(target.parent) else Path(".")

@@ -51,14 +51,46 @@ class Bag:
             raise self.error(f"cannot read {topic} from the bag: {exc}") from None
 
 
+FORMATS = ((b"#ROSBAG V2.0\n", ".bag", "a ROS 1 bag"), (b"\x89MCAP0\r\n", ".mcap", "an MCAP bag"),
+           (b"SQLite format 3\x00", ".db3", "a ROS 2 sqlite3 bag"))
+"""Each bag file's first bytes (its format's magic), the suffix by which rosbags tells that format, and its name."""
+
+
+def _check_suffix(path: Path) -> None:
+    """Refuse a bag file whose first bytes say one format and whose name another (an MCAP saved as ``run.bag``, a
+    ROS 1 bag without ``.bag``): rosbags picks its reader by the suffix, and the other reader's failure said nothing
+    of it (``utf-8 b'\\x89MCAP0\\r\\n' 0 1 invalid start byte``)."""
+    if path.is_dir() and not (path / "metadata.yaml").is_file():
+        raise SealError("this folder is no ROS 2 bag: it has no metadata.yaml (a ROS 2 bag is a folder with one beside "
+                        "its .db3 or .mcap files; a bare .db3 or .mcap file is read too)", Where(str(path)))
+    if not path.is_file():
+        return
+    try:
+        with open(path, "rb") as handle:
+            head = handle.read(16)
+    except OSError:
+        return  # rosbags' reader says why
+    for magic, suffix, kind in FORMATS:
+        if head.startswith(magic) and path.suffix != suffix:
+            named = next((k for _, s, k in FORMATS if s == path.suffix), None)
+            said = f"its name ends in {path.suffix} ({named})" if named else "its name does not end in " + suffix
+            raise SealError(f"this file is {kind}, but {said}: seal reads a bag by its name's suffix; rename it to "
+                            f"end in {suffix}", Where(str(path)))
+
+
 @contextlib.contextmanager
 def open_bag(path: str | Path) -> Iterator[Bag]:
     require_rosbags()
     from rosbags.highlevel import AnyReader
 
     path = Path(path)
-    if not path.exists():
-        raise SealError("no such bag", Where(str(path)))
+    try:
+        path.stat()
+    except FileNotFoundError:
+        raise SealError("no such bag", Where(str(path))) from None
+    except OSError as exc:  # a link loop, a name too long: Path.exists said "no such bag"
+        raise SealError(f"cannot read this bag: {exc.strerror}", Where(str(path))) from None
+    _check_suffix(path)
     ros1 = path.suffix == ".bag"
     try:
         reader = AnyReader([path], default_typestore=typestore(ros1))

@@ -57,6 +57,7 @@ def write_rrd(path: str | Path, agent: Agent) -> None:
         save,
         send_series,
         series_colour,
+        writing,
     )
     from seal_cli.sefm.resampling import ess
 
@@ -75,7 +76,7 @@ def write_rrd(path: str | Path, agent: Agent) -> None:
     stream = rr.RecordingStream("seal_run", recording_id=f"{m.name}-seal-run",
                                 batcher_config=batching(), send_properties=False)
     rooms = [*m.room_names, "_outside"]
-    with atomic_output(path) as tmp:
+    with writing(path), atomic_output(path) as tmp:  # rerun's failure said of ``path``, the file asked for
         save(stream, tmp)  # without rerun's footer, as seal localize's
         stream.set_log_time_enabled(False)
         stream.set_log_tick_enabled(False)

@@ -13,6 +13,7 @@ from seal_cli.bench.reliability_attacker import (
     attacker_cases,
     hostile15_cases,
     hostile16_cases,
+    hostile17_cases,
     sparse_pgm,
 )
 from seal_cli.bench.reliability_outsider import outsider_cases
@@ -85,6 +86,19 @@ def test_picked_hostile16_cases_end_cleanly(name: str, monkeypatch: pytest.Monke
 
     monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
     outcome = run_case(next(c for c in hostile16_cases() if c.name == name))
+    assert outcome.problems == []
+
+
+@pytest.mark.parametrize("name", ["A seven million values in a trajectory: localize",
+                                  "A a frame library whose needs chain 3,000 frames deep: plan",
+                                  "A a FIFO at the library's cache entry: parse", "A import-bag of a link loop",
+                                  "A localize --goals with --rrd a link loop"])
+def test_picked_hostile17_cases_end_cleanly(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Each failed on main: a trajectory composed for over a minute, "nested too deeply" naming nothing, a FIFO in
+    the cache waited on for ever, two RuntimeError tracebacks of ``Path.resolve``. The commands run this tree's
+    code."""
+    monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
+    outcome = run_case(next(c for c in hostile17_cases() if c.name == name))
     assert outcome.problems == []
 
 

@@ -4,6 +4,7 @@ checked against a brute-force search over every grounding."""
 from __future__ import annotations
 
 import csv
+import dataclasses
 import itertools
 import json
 from collections import deque
@@ -185,6 +186,36 @@ def test_a_missing_achiever_deep_down_names_the_commanded_frame(library: Library
     extended = _library_with(library, polish, wax)
     with pytest.raises(SealError, match=r"bought\(shoe\), which Wax\(theme=shoe\) needs \(on the way to Polish"):
         plan([polish.bind({"theme": "shoe"})], extended, start(extended))
+
+
+def _chain(length: int) -> tuple[Frame, ...]:
+    """Z0 … Z{length-1}, each needing what only the one before it gives."""
+    return tuple(Frame(f"Z{i}", elements=(Element("theme", "object"),),
+                       preconditions=(Fact(f"done{i - 1}", ("theme",)),) if i else (),
+                       postconditions=(Fact(f"done{i}", ("theme",)),)) for i in range(length))
+
+
+def test_a_chain_of_needs_is_planned_in_order_up_to_the_bound(library: Library) -> None:
+    from seal_cli.planning.plan import MAX_CHAIN
+
+    chain = _chain(MAX_CHAIN)
+    extended = _library_with(library, *chain)
+    result = plan([chain[-1].bind({"theme": "cup"})], extended, start(extended))
+    assert [step.binding.frame.name for step in result.steps] == [f"Z{i}" for i in range(MAX_CHAIN)]
+
+
+def test_a_chain_of_needs_past_the_bound_is_refused_at_a_frame_of_it(library: Library) -> None:
+    # 3,000 frames each needing the one before: a RecursionError said as "nested too deeply", naming nothing;
+    # 792 of them took 44 s to plan (hostile17)
+    from seal_cli.errors import Where
+    from seal_cli.planning.plan import MAX_CHAIN
+
+    chain = tuple(dataclasses.replace(f, where=Where("z.yaml", 1 + i, 5)) for i, f in enumerate(_chain(3000)))
+    extended = _library_with(library, *chain)
+    said = rf"Z2999 needs a chain of more than {MAX_CHAIN} frames, each needing the next \(Z2999, Z2998, Z2997, ... "
+    with pytest.raises(SealError, match=said + r"\(95 more\), Z2901, Z2900, Z2899\)") as caught:
+        plan([chain[-1].bind({"theme": "cup"})], extended, start(extended))
+    assert caught.value.where == Where("z.yaml", 2900, 5)
 
 
 def test_conflicting_preconditions_are_refused(library: Library) -> None:

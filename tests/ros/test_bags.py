@@ -119,6 +119,31 @@ def test_not_a_bag(tmp_path: Path) -> None:
     assert message_of(tmp_path / "absent.mcap").endswith("no such bag")
 
 
+@pytest.mark.parametrize("name", NAMES)
+def test_a_bag_named_as_another_format_is_told_to_be_renamed(tmp_path: Path, name: str) -> None:
+    # an MCAP saved as run.bag said "utf-8 b'\\x89MCAP0\\r\\n' 0 1 invalid start byte" (hostile17)
+    import shutil
+
+    bag = write_run(tmp_path / name, POSES, looks_for(name))
+    if bag.is_dir():
+        bag = next(bag.glob("*.db3"))
+    right = {".mcap": ".mcap", ".db3": ".db3", ".bag": ".bag"}[bag.suffix]
+    for wrong in (".bag", ".mcap", ".db3", ""):
+        if wrong != right:
+            moved = shutil.copy(bag, tmp_path / f"moved{wrong}")
+            said = message_of(Path(moved))
+            assert said.endswith(f"seal reads a bag by its name's suffix; rename it to end in {right}")
+    assert read_run(bag).observations
+
+
+def test_a_link_loop_and_a_folder_without_metadata_are_said_as_they_are(tmp_path: Path) -> None:
+    # a link loop was "no such bag" here and a RuntimeError traceback in import-bag (hostile17)
+    (tmp_path / "loop.mcap").symlink_to("loop.mcap")
+    assert message_of(tmp_path / "loop.mcap").endswith("cannot read this bag: Too many levels of symbolic links")
+    (tmp_path / "empty").mkdir()
+    assert "this folder is no ROS 2 bag: it has no metadata.yaml" in message_of(tmp_path / "empty")
+
+
 def test_missing_topics(tmp_path: Path) -> None:
     bag = write_run(tmp_path / "run.mcap", POSES, LOOKS)
     assert "no topic /camera/detections in the bag (its topics: /detections (vision_msgs/msg/Detection3DArray)" \

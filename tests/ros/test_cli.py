@@ -201,3 +201,16 @@ def test_bench_ros_reads_and_filters_every_message() -> None:
         assert r["recorded_updates_per_s"] > 0 and 10_000 < r["rrd_bytes"] < r["bag_bytes"] * 10  # a recording
     assert runs[0]["detections"] == runs[1]["detections"]  # ROS 1's integer ids name the same classes
     assert "unknown format" in refused("bench", "ros", "--format", "ros3")
+
+
+def test_import_bag_and_goals_beside_a_link_loop_end_with_a_message(tmp_path: Path,
+                                                                    monkeypatch: pytest.MonkeyPatch) -> None:
+    # Path.resolve raises RuntimeError on a link loop: both were tracebacks (hostile17)
+    monkeypatch.chdir(tmp_path)
+    Path("loop").symlink_to("loop")
+    result = runner.invoke(app, ["import-bag", "loop", "-o", "o.yaml"])
+    assert result.exit_code == 1 and "loop: cannot read this bag: Too many levels of symbolic links" in result.output
+    result = runner.invoke(app, ["localize", "--map", "apartment", "--task", "find the cup", "--steps", "1",
+                                 "--particles", "20", "--goals", "g.yaml", "--rrd", "loop"])
+    assert result.exit_code == 1 and "cannot write --rrd loop" in result.output
+    assert not Path("o.yaml").exists() and not Path("g.yaml").exists()

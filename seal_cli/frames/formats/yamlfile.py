@@ -26,8 +26,8 @@ from typing import TypeVar
 
 import yaml
 
-from seal_cli.errors import Where
-from seal_cli.fileio import LOADER, yaml_problem
+from seal_cli.errors import SealError, Where
+from seal_cli.fileio import compose_documents
 from seal_cli.frames.formats import Contents
 from seal_cli.frames.model import IDENTIFIER, Action, Element, Fact, Frame, LexicalUnit
 from seal_cli.frames.taxonomy import Category, Synonyms, Taxonomy
@@ -233,9 +233,8 @@ def read(text: str, file: str = "<yaml>") -> Contents:
     """The frames, categories and problems in a YAML frame file's text."""
     reader = _Reader(text, file)
     try:
-        documents = list(yaml.compose_all(text, Loader=LOADER))
-    except yaml.YAMLError as exc:
-        problem = yaml_problem(exc, text, file)
+        documents = compose_documents(text, file)
+    except SealError as problem:
         reader.problem(problem.message, where=problem.where)
         return reader.contents
     for document in documents:

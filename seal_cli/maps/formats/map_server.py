@@ -47,7 +47,7 @@ import yaml
 from numpy.typing import NDArray
 
 from seal_cli.errors import SealError, SealErrors, Where
-from seal_cli.fileio import LOADER, MAX_IMAGE_BYTES, read_bytes, read_text, yaml_problem
+from seal_cli.fileio import MAX_IMAGE_BYTES, compose_yaml, read_bytes, read_text
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.geometry import (
     FREE,
@@ -710,12 +710,9 @@ def read_map(path: str | Path) -> tuple[Map | None, list[SealError]]:
     path = Path(path)
     try:
         text = read_text(path)
+        root = compose_yaml(text, str(path))
     except SealError as exc:
         return None, [exc]
-    try:
-        root = yaml.compose(text, Loader=LOADER)
-    except yaml.YAMLError as exc:
-        return None, [yaml_problem(exc, text, str(path))]
     if root is None:
         return None, [SealError("the map file is empty", Where(str(path)))]
     reader = _Reader(text, path)

@@ -63,6 +63,7 @@ from seal_cli.sefm.observers.rerun_scene import (
     save,
     send_series,
     series_colour,
+    writing,
 )
 
 if TYPE_CHECKING:
@@ -168,6 +169,18 @@ class RerunRecorder:
         self._series_lines: dict[str, tuple[list[str], list[tuple[int, int, int]]]] = {}
 
     def start(self, sefm: SeFM) -> None:
+        with writing(self.path):
+            self._start(sefm)
+
+    def update(self, sefm: SeFM, step: Step) -> None:
+        with writing(self.path):
+            self._update(step, sefm)
+
+    def finish(self, sefm: SeFM) -> None:
+        with writing(self.path):
+            self._finish(sefm)
+
+    def _start(self, sefm: SeFM) -> None:
         import rerun as rr
 
         self.stream = rr.RecordingStream(self.application_id, recording_id=f"{sefm.map.name}-seal",
@@ -184,13 +197,13 @@ class RerunRecorder:
         self.trail, self._shown, self._seen, self._metrics = [], {}, 0, {}
         self._beliefs(sefm, force=True)
 
-    def update(self, sefm: SeFM, step: Step) -> None:
+    def _update(self, step: Step, sefm: SeFM) -> None:
         self._at(step.index)
         self._robot(step)
         self._observations(step)
         self._beliefs(sefm)
 
-    def finish(self, sefm: SeFM) -> None:
+    def _finish(self, sefm: SeFM) -> None:
         if self.stream is not None:
             self._beliefs(sefm, force=True, only_pending=True, metrics=False)
             self._send_metrics()

@@ -80,6 +80,28 @@ def _quiet_stderr() -> Iterator[None]:
         os.close(null)
 
 
+@contextmanager
+def writing(path: str | Path) -> Iterator[None]:
+    """Rerun's failures to write a recording (a full disk, a file system that refuses) as the ``OSError`` of
+    ``path`` every other writer raises: rerun raises ``RuntimeError("Failed to encode LogMsg: Failed to write: No
+    space left on device (os error 28)")`` when it logs, or, from the flush after its writer thread died,
+    "File-writer thread shut down prematurely" — both were tracebacks of ``--rrd`` on a full disk."""
+    import errno
+    import re
+
+    try:
+        yield
+    except RuntimeError as exc:
+        text = str(exc)
+        code = re.search(r"\(os error (\d+)\)", text)
+        if code is not None:
+            raise OSError(int(code.group(1)), os.strerror(int(code.group(1))), str(path)) from None
+        if "File-writer thread" in text or "Failed to write" in text:
+            raise OSError(errno.EIO, "rerun's writer stopped before the recording was whole (rerun said why "
+                          "above)", str(path)) from None
+        raise
+
+
 def save(stream: Any, path: str | Path) -> None:
     """Stream the recording to ``path``, without the footer (see the module docstring). Rerun warns on
     stderr, at this call, that a file without a footer loses random access; the choice is made here on

@@ -230,3 +230,16 @@ def test_a_place_whose_name_or_class_no_plan_can_use_is_refused_at_its_line(tmp_
                         "with a digit)"),
                     (5, "place sink_1: class 'si|nk' is not a class name (letters, digits, '_' or spaces, not "
                         "starting with a digit)")]
+
+
+def test_a_map_of_more_values_than_the_bound_is_refused_at_the_value_past_it(tmp_path: Path,
+                                                                              monkeypatch: pytest.MonkeyPatch) -> None:
+    from seal_cli import yamlnodes
+    from seal_cli.maps.formats.map_server import read_map
+
+    monkeypatch.setattr(yamlnodes, "MAX_VALUES", 50)
+    path = tmp_path / "m.yaml"
+    path.write_text("name: m\nbounds: [0, 0, 4, 4]\nnoise: [" + ", ".join("0" * 60) + "]\n")
+    built, problems = read_map(path)
+    assert built is None and [(p.where.line, p.message) for p in problems] == [
+        (3, "this file holds more than 50 values; seal reads at most that many")]

@@ -248,3 +248,17 @@ def test_the_modes_of_every_frame_in_one_entity(recorded: tuple[Path, SeFM, Any]
 
 def test_spread_is_the_standard_deviations() -> None:
     assert spread([[0.25, 0.1], [0.1, 0.0001]]) == pytest.approx((0.5, 0.1))
+
+
+@pytest.mark.parametrize(("raised", "said"), [
+    ("Failed to encode LogMsg: Failed to write: No space left on device (os error 28)", "No space left on device"),
+    ("File-writer thread shut down prematurely", "rerun's writer stopped before the recording was whole")])
+def test_rerun_failing_to_write_is_the_oserror_of_the_recording(raised: str, said: str) -> None:
+    # --rrd on a full disk: a RuntimeError traceback from rerun's log or flush (hostile17)
+    from seal_cli.sefm.observers.rerun_scene import writing
+
+    with pytest.raises(OSError, match=said) as caught, writing("r.rrd"):
+        raise RuntimeError(raised)
+    assert caught.value.filename == "r.rrd"
+    with pytest.raises(RuntimeError, match="something else"), writing("r.rrd"):
+        raise RuntimeError("something else")
