@@ -63,6 +63,7 @@ def test_find_out_whether_a_person_wants_something_is_asking_them(library: Libra
 
 @pytest.mark.parametrize(("text", "frame"), [
     ("check if the door is closed", "LookAt"),           # a thing's state: looked at
+    ("could you see if the baby is asleep", "LookAt"),   # a state said with "be": looked at, not asked
     ("see if Ben is in the kitchen", "Find"),            # where a person is: looked for
     ("tell Raj that dinner is ready", "Tell"),
 ])

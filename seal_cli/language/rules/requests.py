@@ -531,7 +531,8 @@ def _asked_of_person(s: State, i: int) -> Match | None:
     """"*Find out if* anna wants coffee", "*check whether* the guest is staying": whether a person wants, can, is or
     does something (the subject of the question a person: :func:`~seal_cli.language.asking.person_subject`) is found
     out by asking them (``ASK_MEANS``, the question kept whole); a question of a thing or a place is the robot's to
-    look at (the rules before this one: "check if the door is closed", "see if anyone is in the kitchen")."""
+    look at, and so is a state said with "be" (the rules before this one: "check if the door is closed", "see if
+    anyone is in the kitchen", "see if the baby is asleep")."""
     words = s.words
     n = _phrase(s, i, CHECK_WHETHER[0])
     if not n or ASK_MEANS not in s.lexicon.units or i + n + 2 >= len(words) or \
