@@ -194,6 +194,21 @@ class Taxonomy:
             return False
         return None
 
+    def kin(self, cls: str) -> tuple[str, frozenset[str]] | None:
+        """The smallest closed category that lists ``cls`` (directly or through a nested one) and another class,
+        and those other classes: the kind of thing it is, and what else is of that kind ("cup": container, with
+        mug, glass, bowl, ...); None for a class no closed category lists. Of two the same size, the first
+        declared."""
+        cls = class_key(cls)
+        best: tuple[str, frozenset[str]] | None = None
+        for name in self.by_name:
+            members = self.members(name)
+            if cls not in members or self.is_open(name) or len(members) < 2:
+                continue
+            if best is None or len(members) < len(best[1]) + 1:
+                best = (name, members - {cls})
+        return best
+
     def merged(self, other: Taxonomy) -> Taxonomy:
         """Both taxonomies; a category declared in both takes the union of members."""
         merged: dict[str, Category] = dict(self.by_name)

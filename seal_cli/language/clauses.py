@@ -21,15 +21,17 @@ order :meth:`Clauses.passes` lists them:
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 from dataclasses import replace
 
 from seal_cli.frames.library import Library
 from seal_cli.frames.taxonomy import class_key
+from seal_cli.language.asking import ASKING, IFS, direct_question, person_subject
 from seal_cli.language.element_types import Types
 from seal_cli.language.english import FIRST_LATER
 from seal_cli.language.lexicon import CommandError, Word
-from seal_cli.language.morphology import is_adjective, noun_lemma, verb_lemma
+from seal_cli.language.morphology import in_dictionary, is_adjective, noun_lemma, verb_lemma
 from seal_cli.language.roles import FROM, LOCATIVE
 from seal_cli.language.syntax import NP, PP, Clause, Command, Item, end_of
 from seal_cli.language.verb_usage import mostly_verb
@@ -77,10 +79,20 @@ class Clauses:
         gap: Clause | None = None
         split = self.gapping(items)
         if split is not None:
-            gap = self.make_clause(raw.verb, items[split + 1:], [], None)
-            gap.start = items[split + 1].start
+            gapped = items[split + 1:]
             items = items[:split]
+            said_end = end_of(items[-1])
+            # "bring *me* the spoon from the kitchen and the cup from ...": the person told is the second's too
+            told = items[0] if len(items) > 1 and isinstance(items[0], NP) and items[0].kind == "person" and \
+                isinstance(items[1], NP) else None
+            if any(isinstance(x, PP) and x.prep in FROM for x in gapped):   # "... from the sink *on the table*"
+                items += [replace(x, np=_copy(x.np)) for x in gapped if isinstance(x, PP) and x.prep not in FROM
+                          and not any(isinstance(y, PP) and y.prep == x.prep for y in items)]
+            gap = self.make_clause(raw.verb, [*([replace(told)] if told is not None else []), *gapped], [], None)
+            gap.start = gapped[0].start
         clause = self.make_clause(raw.verb, items, raw.conditions, raw.sub)
+        if gap is not None:
+            clause.end = min(clause.end, max(said_end, clause.message.end if clause.message else 0))
         clause.gap = gap
         clause.asked = raw.asked
         return [clause, *([gap] if gap is not None else []), *([purpose] if purpose is not None else [])]
@@ -134,8 +146,32 @@ class Clauses:
         self.recipient_first(verb, objects, items)
         self.second_object(verb, objects, items)
         message = self.message(items) or self.said(verb, objects, items)
+        if message is not None and str(verb.info) in ASKING:
+            self.asked(objects, message)
         end = max([verb.end] + [end_of(x) for x in (*objects, *items)] + ([message.end] if message else []))
         return Clause(verb, objects, items, message, verb.start, end, held, sub, conditions)
+
+    def asked(self, objects: list[NP], message: NP) -> None:
+        """A yes/no question a verb of asking puts to a person ("ask Raj *if he wants tea*"): the message is the
+        question as the person hears it (``question``: "do you want tea?", :func:`~seal_cli.language.asking.
+        direct_question`); with nobody said to ask ("find out if *anna* wants coffee"), the person the question is
+        about is the one asked."""
+        spans = [(m.start() + message.start, m.end() + message.start)
+                 for m in re.finditer(r"[^\s,;:?!.]+", self.text[message.start:message.end])]
+        words = [self.text[a:b] for a, b in spans]
+        if not words or words[0].lower() not in IFS:
+            return
+        if not objects:
+            size = person_subject(words[1:], self.types.taxonomy.members("person") | {"person"}, ())
+            if size:
+                start, end = spans[1][0], spans[size][1]
+                head = words[size]
+                name = size == 1 and (head[:1].isupper() or not in_dictionary(head))
+                objects.append(NP(start, end, Word(head, spans[size][0], end, "NAME" if name else "WORD",
+                                                   None, head.lower()), "person", determined=size > 1,
+                                  mods=[]))
+        person = objects[0] if objects and objects[0].kind == "person" and objects[0].pronoun is None else None
+        message.question = direct_question(words, self.text[person.start:person.end].split() if person else ())
 
     def receives(self, verb: Word) -> bool:
         """Whether a frame of the verb has someone to receive (a recipient)."""
@@ -215,15 +251,23 @@ class Clauses:
     @staticmethod
     def gapping(items: list[Item]) -> int | None:
         """Where a second clause with the verb left out starts: "put the plates *on the table* and the
-        glasses *next to them*" (an object and a place, "and", another object and place); None."""
+        glasses *next to them*" (an object and a place, "and", another object and place); None.
+
+        A source in each ("bring me the spoon *from the kitchen* and the cup *from the family room*") is
+        a gap too: each thing is fetched from its own place, and a phrase said once after the second source
+        ("... *on the table*") is said of both (:meth:`read` copies it back). A second noun phrase after a
+        source with no source of its own stays a place joined to the first ("take the cup from the table and
+        the shelf to the sink")."""
         if len(items) < 5 or not isinstance(items[0], NP):
             return None
         for k in range(2, len(items) - 2):
             word, before = items[k], items[k - 1]
+            rest = items[k + 2:]
             if isinstance(word, Word) and word.tag == "AND_NP" and word.lower == "and" and \
                     isinstance(before, PP) and isinstance(items[k + 1], NP) and \
-                    all(isinstance(x, PP) for x in items[k + 2:]) and not before.lead and \
-                    before.prep not in ("with", "without", "of", "for", "about", "between") + FROM and \
+                    all(isinstance(x, PP) for x in rest) and not before.lead and \
+                    before.prep not in ("with", "without", "of", "for", "about", "between") and \
+                    (before.prep not in FROM or isinstance(rest[0], PP) and rest[0].prep in FROM) and \
                     before.np.pronoun is None:     # "a bowl with a spoon in it and a knife ...": contents
                 return k
         return None

@@ -640,6 +640,23 @@ class Evoker:
                                           (content.start, content.end), elements | self.defaults(frame, elements)))
                 return
 
+    def series(self, ref: tuple[int, str]) -> list[tuple[int, str]]:
+        """The same element of a run of frames of one kind ending at ``ref``, each a single thing said there ("get
+        *the milk* from the fridge and *the mug* from the living room": Pick, Pick): what a plural pronoun after
+        them gathers ("... and put *them* on the table": both), oldest first; ``[ref]`` when there is no run."""
+        index, name = ref
+        kind = self.frames[index].frame
+        run = [ref]
+        k = index - 1
+        while k >= 0 and self.frames[k].frame == kind and name in self.frames[k].elements:
+            phrase = self.frames[k].elements[name]
+            if phrase.refers_to is not None or phrase.default or phrase.plural or phrase.conjuncts or \
+                    phrase.kind != "thing" or self.frames[k].inferred is not None:
+                break
+            run.insert(0, (k, name))
+            k -= 1
+        return run
+
     def defaults(self, frame: Frame, have: Iterable[str]) -> dict[str, Phrase]:
         have = set(have)
         return {e.role: Phrase(None, e.default, self.ground_name(e.default), default=True)
@@ -655,6 +672,13 @@ class Evoker:
                 target = self.frames[index].elements[name]
                 ref = target.refers_to or (index, name)
                 root = self.frames[ref[0]].elements[ref[1]]
+                series = self.series(ref) if np.pronoun in ("them", "they", "both") and found[2] != "person" \
+                    and not root.plural and not root.conjuncts else [ref]
+                if len(series) > 1:                 # "get the milk from the fridge and the mug from the living
+                    return Phrase(self.text[np.start:np.end], root.head, root.cls, found[2], ref, None, True,
+                                  span=(np.start, np.end), conjuncts=tuple(     # room and put *them* ...": both
+                                      replace(self.frames[i].elements[r], refers_to=(i, r), span=(np.start, np.end))
+                                      for i, r in series))
                 return Phrase(self.text[np.start:np.end], root.head, root.cls, found[2], ref, root.quantity,
                               root.plural, span=(np.start, np.end))
             said = self.reference.mentioned(np, frame, role)
@@ -695,7 +719,8 @@ class Evoker:
         plural = np.plural and np.kind != "message" and not (   # "the keys": one key chain, as people mean it
             np.quantity is None and not np.conjuncts and self.vocabulary is not None and np.head is not None
             and self.vocabulary.names_one([w.text for w in np.mods] + [np.head.text]))
-        return Phrase(text, np.head_text if np.kind != "message" else text, cls, np.kind, None, np.quantity,
+        return Phrase(text, np.head_text if np.kind != "message" else np.question or text, cls, np.kind, None,
+                      np.quantity,
                       plural, modifiers, span=(np.start, np.end), conjuncts=conjuncts,
                       relative=np.relative)
 

@@ -77,9 +77,12 @@ class Reference:
                 kind = phrase.kind
                 if kind in ("message", "place"):
                     continue
+                guessed = False
                 if kind == "thing" and np.pronoun in ("him", "her", "he", "she") and \
                         self.person_by_role(target, phrase):
                     kind = "person"                  # "meet the plumber ... and take him": a person there
+                    guessed = not self.types.is_person(     # "find the bellhop": a thing that may be a person
+                        self.library.frame(self.frames[target[0]].frame).element(target[1]).type)
                 if np.pronoun in ("it", "one", "this", "that") and kind == "person":
                     continue
                 if np.pronoun in ("him", "her") and kind != "person":
@@ -88,6 +91,8 @@ class Reference:
                         and wanted_person is not False:
                     pass
                 score = -(len(self.frames) - index) * 2 - rank * 0.5
+                if guessed:              # "bring the book to *Raj* and tell him ...": one said as a person first
+                    score -= 2
                 if self.types.is_location(self.library.frame(evoked.frame).element(name).type):
                     score -= 1
                 if wanted_person is True:

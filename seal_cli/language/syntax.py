@@ -52,6 +52,7 @@ class NP:
     borrowed: bool = False                               # an earlier clause's object ("to open [it]"): said there
     located: NP | None = None                            # "a person standing *in the corridor*": where it is
     cut: tuple[int, int] | None = None                   # "the light *on* in the hall": a split particle inside
+    question: str | None = None                          # a message as the person asked hears it: "do you want tea?"
 
     @property
     def head_text(self) -> str:

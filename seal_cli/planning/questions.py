@@ -24,7 +24,10 @@ Tell with the question as its message — but the *kind* of answer a person expe
 - ``report``: a Tell, after a frame of the same command that answers a question, whose message asks
   (begins with a question word: "tell me *where* it is", "... *what* you found", "... *how many*") or
   points back at what was sought ("report *its* location"): the robot says what the earlier frames
-  found out, never the message's words. Any other message ("tell Jo hello") is said as it is.
+  found out, never the message's words. Any other message ("tell Jo hello") is said as it is;
+- ``asked``: a Tell whose message is a question put to the person ("ask Raj *if he wants tea*", "find out if
+  anna wants coffee"): the parser gives the question as the person hears it as the message's head ("do you
+  want tea?", :mod:`seal_cli.language.asking`), and the robot asks it.
 
 A question told to someone ("tell Ben *where the spoon is*", "tell Anna *how many cups are in the
 kitchen*") is found out first: :func:`told_first` puts the frames that answer it (the Find or Count
@@ -46,10 +49,10 @@ from seal_cli.language.english import CHECK_WHETHER, WH_WORDS
 from seal_cli.language.values import Evoked, Parse, Phrase
 from seal_cli.planning.grounding import MapNames, words_of
 
-__all__ = ["FACTS", "KINDS", "STATE_WORDS", "Question", "asks_whether", "fact_asked", "looking", "read_questions",
-           "reports", "told_first"]
+__all__ = ["FACTS", "KINDS", "STATE_WORDS", "Question", "asks_whether", "fact_asked", "looking", "put_to_person",
+           "read_questions", "reports", "told_first"]
 
-KINDS = ("where", "whether", "how_many", "what", "state", "fact", "report")
+KINDS = ("where", "whether", "how_many", "what", "state", "fact", "report", "asked")
 
 FACTS = frozenset({"time", "date", "day"})
 """What a robot tells from its clock, not from looking: "the *time*", "what *day* it is"."""
@@ -131,6 +134,12 @@ def asks_whether(text: str, evoked: Evoked) -> bool:
     checks, ifs, _ = CHECK_WHETHER                      # "*see if* anyone is in the kitchen"
     return evoked.frame == "Find" and bool(first) and (first[0] in ASKING_WHETHER | ASKING_WHETHER_SHORT or any(
         first[k] in ifs and " ".join(first[:k]) in checks for k in range(1, len(first))))
+
+
+def put_to_person(message: Phrase) -> bool:
+    """Whether a Tell's message is a question put to the person told ("ask Raj *if he wants tea*"): the parser
+    gives it as they hear it, a head other than the words said, ending in "?" ("do you want tea?")."""
+    return message.head.endswith("?") and message.head != message.text
 
 
 def fact_asked(message: str) -> str | None:
@@ -231,6 +240,8 @@ def read_questions(parse: Parse, commanded: Sequence[Binding], names: MapNames |
             said = message.text or message.head
             fact = fact_asked(said)
             question = Question("fact", relation=fact) if fact else _what(said, names)
+            if put_to_person(message):                                  # "ask Raj if he wants tea"
+                question = Question("asked")
             if question is None and answered and reports(said):           # "find the cup and tell me where it is"
                 question = Question("report")
             if question is None and not answered:                       # "go to the bedroom and tell me what you see"
@@ -241,7 +252,7 @@ def read_questions(parse: Parse, commanded: Sequence[Binding], names: MapNames |
                 here = went
         if question is not None:
             questions.update((b, question) for b in commanded[start:k])
-            answered = answered or question.kind != "report"
+            answered = answered or question.kind not in ("report", "asked")
     return questions
 
 
@@ -265,7 +276,7 @@ def told_first(parse: Parse, parse_text: Callable[[str], Parse]) -> Parse:
 def _found_out_by(evoked: Evoked, text: str, parse_text: Callable[[str], Parse]) -> tuple[Evoked, ...] | None:
     """The frames that answer the question a Tell's message asks, placed on the message's words, or None."""
     message = evoked.elements.get("message") if evoked.frame == "Tell" else None
-    said = (message.text or "") if message is not None else ""
+    said = (message.text or "") if message is not None and not put_to_person(message) else ""
     words = said.lower().replace("_", " ").replace("?", " ").split()
     if not words or words[0] not in WH_WORDS or words[0] in ASKING_WHAT or fact_asked(said) \
             or any(w in POINTING_BACK for w in words):

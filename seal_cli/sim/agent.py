@@ -1099,7 +1099,13 @@ class Agent:
             detail.append(f"into {', '.join(opened)}")
         if partly:
             detail.append(f"could not see all of {', '.join(partly)}")
-        return f"{said} ({'; '.join(detail)})" if detail else said
+        said = f"{said} ({'; '.join(detail)})" if detail else said
+        kin = self.library.taxonomy.kin(self.class_of(value))
+        alike = [k.id for k in self.known.values() if k.movable and kin is not None and k.cls in kin[1]] \
+            if kin is not None else []
+        if alike:                # "bring me a cup" where there is a mug: what the user may have meant, not taken
+            said += f"; of its kind ({kin[0] if kin else ''}) it saw: {'; '.join(self.where_is(i) for i in alike[:3])}"
+        return said
 
     def wait(self, binding: Binding) -> Outcome:
         """``wait()``: stay put, doing nothing; said as where it waits (its room) and for whom (the theme)."""
@@ -1514,6 +1520,8 @@ class Agent:
                 return self.tell_fact(question.relation, binding)
             if action.name == "say" and question is not None and question.kind == "report":
                 return self.report(binding)
+            if action.name == "say" and question is not None and question.kind == "asked":
+                return self.ask(binding)
             if action.name == "count":
                 counted = self.how_many(action.args[0], binding)
                 self.answer(counted)
@@ -1585,6 +1593,14 @@ class Agent:
         if binding.elements.get("recipient") not in (None, SPEAKER):
             said = self.in_words(said)
         return self._act_words("say", [binding.elements.get("message", "report")], f'said "{said}"')
+
+    def ask(self, binding: Binding) -> Outcome:
+        """Put a question to the person (``recipient``; "ask Raj if he wants tea"): the message's name as the question
+        the parser made of it ("do you want tea?"), narrated as asked of them."""
+        asked = str(binding.elements.get("message", "")).replace("_", " ").strip()
+        person = binding.elements.get("recipient")
+        whom = f" {person}" if person is not None and person != SPEAKER else ""
+        return self._act_words("say", [binding.elements.get("message", asked)], f'asked{whom} "{asked}?"')
 
     def in_words(self, text: str) -> str:
         """An answer as said to a person, not printed for the speaker's record: a thing's or place's id as its

@@ -389,3 +389,38 @@ def test_a_thing_put_on_a_closed_place_goes_on_top_and_one_put_in_it_opens_it() 
                                             "put teapot_1 on sideboard_1"]
     still, acts = acts_of("put the teapot in the sideboard")       # inside it already: nothing to do
     assert still["completed"] and not any(a.startswith("put ") for a in acts)
+
+
+def test_each_thing_is_fetched_from_its_own_place_and_handed_over_once() -> None:
+    """"the spoon from the kitchen and the cup from the family room" (e2e19): before, one source for both, the plan
+    brought the spoon twice ("from the cup") and the run ended "done" after taking the spoon back."""
+    report = run_json("bring me the spoon from the kitchen and the cup from the family room")
+    assert report["completed"] and report["plan"] == [
+        "Pick(theme=spoon, source=kitchen)", "Bring(theme=spoon, recipient=me, source=kitchen)",
+        "Pick(theme=cup, source=family_room)", "Bring(theme=cup, recipient=me, source=family_room)"]
+    acts = [r["text"] for r in report["records"] if r["kind"] == "act"]
+    assert [a for a in acts if a.startswith(("picked up", "handed", "took"))] == [
+        "picked up spoon_1 from counter_1", "handed spoon_1 to me", "picked up cup_1 from coffee_table_1",
+        "handed cup_1 to me"]
+
+
+def test_a_question_put_to_a_person_is_asked_of_them() -> None:
+    """"find out if anna wants coffee" was Find() of nothing, 0 m; "ask Raj if he wants tea" said "if he wants tea"."""
+    report = run_json("find out if anna wants coffee")
+    assert report["completed"] and report["plan"] == ["Tell(message=do_you_want_coffee, recipient=anna)"]
+    acts = [r["text"] for r in report["records"] if r["kind"] == "act"]
+    assert acts[-1] == 'asked Anna "do you want coffee?"'
+    result = runner.invoke(app, ["run", "--map", "bungalow", "ask Raj if he wants tea", *FAST])
+    acts = [r["text"] for r in json.loads(result.stdout)["records"] if r["kind"] == "act"]
+    assert acts[-1] == 'asked Raj "do you want tea?"'
+
+
+def test_a_thing_not_in_the_house_ends_naming_what_it_saw_of_its_kind() -> None:
+    """"bring me a cup" on the bungalow, which has a mug and no cup: the search ends saying so, and names the mug
+    (and the kettle: the taxonomy's containers) it saw, without taking either for a cup."""
+    result = runner.invoke(app, ["run", "--map", "bungalow", "bring me a cup", *FAST])
+    report = json.loads(result.stdout)
+    assert result.exit_code == 1 and report["why"] == "not_found"
+    assert report["reason"].startswith("searched the whole house: no cup (")
+    assert "; of its kind (container) it saw: mug_1 is on coffee_table_1 in the living room" in report["reason"]
+    assert not any(r["text"].startswith("picked up") for r in report["records"])

@@ -95,3 +95,12 @@ def test_a_class_name_longer_than_the_bound_is_refused() -> None:
     assert check_class_name("x" * MAX_CLASS_NAME, "holding") == "x" * MAX_CLASS_NAME
     with pytest.raises(SealError, match=r"holding 'x{40}'… is 3,000 characters long; a class name has at most 100"):
         check_class_name("x" * 3_000, "holding")
+
+
+def test_kin_is_the_smallest_closed_category_that_lists_the_class() -> None:
+    taxonomy = Taxonomy.of({"thing": None, "container": ["cup", "mug", "bowl", "vessel"], "vessel": ["cup", "mug"],
+                            "utensil": ["spoon"]})
+    assert taxonomy.kin("cup") == ("vessel", frozenset({"mug"}))          # not container, which is larger
+    assert taxonomy.kin("bowl") == ("container", frozenset({"cup", "mug"}))
+    assert taxonomy.kin("spoon") is None                                   # alone in its category
+    assert taxonomy.kin("remote") is None                                  # listed nowhere

@@ -109,3 +109,26 @@ def test_a_quantifier_floated_after_a_pronoun_is_part_of_it(library: Library) ->
     assert parse.resolve(parse.frames[1].elements["theme"]).head == "bowl"    # the bowl, carried with the apple
     assert _frames("give them all the apples", library) == [("Give", {"theme": "all the apples",
                                                                        "recipient": "them"})]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("bring me the spoon from the kitchen and the cup from the family room",
+     [("Bring", {"theme": "the spoon", "recipient": "me", "source": "the kitchen"}),
+      ("Bring", {"theme": "the cup", "recipient": "me", "source": "the family room"})]),
+    ("bring Anna the spoon from the kitchen and the cup from the bedroom",       # the person told: both times
+     [("Bring", {"theme": "the spoon", "recipient": "Anna", "source": "the kitchen"}),
+      ("Bring", {"theme": "the cup", "recipient": "Anna", "source": "the bedroom"})]),
+    ("take the cup from the bedroom and the kettle from the kitchen to the table",   # a goal said once: both's
+     [("Bring", {"theme": "the cup", "goal": "the table", "source": "the bedroom"}),
+      ("Bring", {"theme": "the kettle", "goal": "the table", "source": "the kitchen"})]),
+])
+def test_each_thing_said_with_its_own_source_is_fetched_from_there(library: Library, text: str,
+                                                                   expected: list[object]) -> None:
+    """A source per conjunct (e2e19): "the kitchen and the cup from the family room" was one source of one Bring,
+    and the plan brought the spoon twice, the second time from the cup."""
+    assert _frames(text, library) == expected
+
+
+def test_a_place_joined_to_a_source_without_a_source_of_its_own_stays_one_source(library: Library) -> None:
+    (bring,) = parse_command("take the cup from the table and the shelf to the sink", library).frames
+    assert [c.head for c in bring.elements["source"].conjuncts] == ["table", "shelf"]

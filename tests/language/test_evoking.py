@@ -153,3 +153,16 @@ def test_pieces_are_cut_before_the_states_their_phrase_gives_them(library: Libra
 def test_from_a_place_said_by_another_preposition_is_where_it_was(library: Library, text: str,
                                                                    expected: list[object]) -> None:
     assert _frames(text, library) == expected
+
+
+def test_them_after_a_run_of_like_frames_is_each_of_their_things(library: Library) -> None:
+    """"get the milk from the fridge and the mug from the living room and put them on the dining table" (e2e19): the
+    gapped second clause made two Picks, and "them" was the mug alone; it gathers the run's themes."""
+    frames = parse_command("get the milk from the fridge and the mug from the living room and put them on the table",
+                           library).frames
+    them = frames[2].elements["theme"]
+    assert [c.refers_to for c in them.conjuncts] == [(0, "theme"), (1, "theme")] and them.plural
+    frames = parse_command("pick up the apple and the pear and put them in the fridge", library).frames
+    assert frames[1].elements["theme"].refers_to == (0, "theme") and not frames[1].elements["theme"].conjuncts
+    frames = parse_command("open the fridge, take the milk and put it on the table", library).frames
+    assert frames[2].elements["theme"].refers_to == (1, "theme") and not frames[2].elements["theme"].conjuncts

@@ -759,7 +759,8 @@ def test_gapping_is_not_contents_or_a_coordinated_place(library: Library) -> Non
     between = parse_command("Put the toilet paper between the bottle and the candle on the tank", library)
     assert [c.head for c in between.frames[0].elements["goal"].conjuncts] == ["bottle", "candle"]
     gapped = parse_command("Put the pan from the stove and the knife from the sink on the table", library)
-    assert [f.frame for f in gapped.frames] == ["Place"]                # one goal for both: no gap
+    assert [(f.frame, f.elements["goal"].head) for f in gapped.frames] == [("Place", "table")] * 2   # one goal for
+    # both, each thing from its own place (e2e19; before, one Place of "the pan from the stove and the knife")
 
 
 @pytest.mark.parametrize(("text", "message"), [
@@ -1390,3 +1391,12 @@ def test_a_goal_keeps_the_preposition_it_was_said_with(library: Library, text: s
     assert parsed.frames[0].frame == "Place" and goal.head == "sideboard" and goal.preposition == said
     assert parsed.frames[0].elements["theme"].preposition is None
     assert "preposition" not in parsed.to_json()["frames"][0]["elements"]["goal"]
+
+
+def test_him_is_the_person_said_not_a_thing_that_might_be_one(library: Library) -> None:
+    """"bring the book to Raj and tell him dinner is ready": "him" was the book (the first element of Bring, which a
+    person may fill), and the run told book_1 (e2e19). A thing only guessed to be a person yields to one said."""
+    frames = parse_command("bring the book from the bedroom to Raj and tell him dinner is ready", library).frames
+    assert frames[1].elements["recipient"].refers_to == (0, "recipient")
+    frames = parse_command("find the bellhop and tell him dinner is ready", library).frames
+    assert frames[1].elements["recipient"].refers_to == (0, "theme")       # nobody else: the one that may be

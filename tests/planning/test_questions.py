@@ -169,3 +169,14 @@ def test_the_frames_found_out_first_lie_on_the_message_words(library: Library) -
     assert text[find.span[0]:find.span[1]] in ("where the spoon", "where the spoon is")   # the parser drops "is"
     theme = find.elements["theme"]
     assert theme.span is None or text[theme.span[0]:theme.span[1]] == "the spoon"
+
+
+@pytest.mark.parametrize(("text", "step"), [
+    ("ask ben whether he is hungry", "Tell(message=are_you_hungry, recipient=ben)"),
+    ("ask Anna if she wants coffee", "Tell(message=do_you_want_coffee, recipient=anna)"),
+    ("find out if anna wants coffee", "Tell(message=do_you_want_coffee, recipient=anna)"),
+])
+def test_a_question_put_to_a_person_is_asked_not_found_out_first(text: str, step: str, library: Library) -> None:
+    """"ask ben whether he is hungry" was LookAt(he), a whole-house search for "He", then the words said (e2e19): the
+    question is the person's to answer, asked of them as they hear it."""
+    assert told(text, library) == [(step, Question("asked"))]

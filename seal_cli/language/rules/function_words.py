@@ -4,6 +4,7 @@ partitives, determiners, pronouns (closed classes: :mod:`seal_cli.language.engli
 
 from __future__ import annotations
 
+from seal_cli.language.asking import ASKING, IFS
 from seal_cli.language.english import (
     BE_WORDS,
     CLOCK_PREPOSITIONS,
@@ -92,6 +93,20 @@ def _that_said(s: State, i: int) -> Match | None:
     if end > start:
         return Match(end - i, (that, s.emit(start, end - start, Tag.SAID).words[0]))
     return Match(start - i, (that,))
+
+
+def _if_asked(s: State, i: int) -> Match | None:
+    """"ask Raj *if* he wants tea": after the person a verb of asking asks, "if"/"whether" and the question, which
+    is kept whole (as what is said after "that"): "ask Priya if she can come to the garage" is not a clause "come to
+    the garage" of the command's own."""
+    words = s.words
+    if s.in_np() or not s.speech or s.verb_index < 0 or str(s.out[s.verb_index].info) not in ASKING or \
+            s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL) or i + 1 >= len(words):
+        return None
+    end = s.speech_end(i + 1)
+    if end <= i + 1:
+        return None
+    return Match(end - i, (words[i].tagged(Tag.WH), s.emit(i + 1, end - i - 1, Tag.SAID).words[0]))
 
 
 def _particle_noun(s: State, i: int) -> Match | None:
@@ -248,6 +263,10 @@ ONE = Rule("the red one", _one, (
 THAT_SAID = Rule("that and what is said", _that_said, (
     Example("tell the guest that dinner is ready", "dinner is ready", Tag.SAID),
 ), frozenset(["that"]), "'that' after the person a verb of saying tells: what is said, kept whole")
+IF_ASKED = Rule("if and what is asked", _if_asked, (
+    Example("ask Raj if he wants tea", "he wants tea", Tag.SAID),
+    Example("ask Priya whether she can come to the garage", "she can come to the garage", Tag.SAID),
+), IFS, "'if'/'whether' after the person a verb of asking asks: the question, kept whole")
 PARTICLE_NOUN = Rule("particle as a noun", _particle_noun, (
     Example("clean the back of the toilet", "back", Tag.WORD),
 ), PARTICLES, "a particle before 'of' is a noun ('the back of')")

@@ -10,6 +10,7 @@ left unsaid (its ``text`` is empty).
 
 from __future__ import annotations
 
+from seal_cli.language.asking import person_subject
 from seal_cli.language.english import (
     ASKED_ALONE,
     BE_WORDS,
@@ -553,6 +554,36 @@ def _found_out(s: State, i: int) -> Match | None:
     return Match(end - i, (Word(s.text_of(words[i].start, last), words[i].start, last, Tag.VERB, QUESTION_MEANS),
                            _unsaid(last, Tag.PRON, None, _SPEAKER), s.emit(i + n, end - i - n, Tag.SAID).words[0]),
                  expect=False, verb=QUESTION_MEANS, using=False)
+
+
+_WHERE_SAID = HERE_WORDS | frozenset(["home", "there", "around", "back", "out", "in", "upstairs", "downstairs",
+                                      "inside", "outside", "away"])
+ASK_MEANS = "ask"
+"""The unit a question put to a person is said with ("*find out if* anna wants coffee" is "ask anna if she wants
+coffee"): a verb of asking (:data:`~seal_cli.language.asking.ASKING`), Tell's in the standard library."""
+
+
+def _asked_of_person(s: State, i: int) -> Match | None:
+    """"*Find out if* anna wants coffee", "*check whether* the guest is staying": whether a person wants, can, is or
+    does something (the subject of the question a person: :func:`~seal_cli.language.asking.person_subject`) is found
+    out by asking them (``ASK_MEANS``, the question kept whole); a question of a thing or a place is the robot's to
+    look at, and so is a state said with "be" (the rules before this one: "check if the door is closed", "see if
+    anyone is in the kitchen", "see if the baby is asleep")."""
+    words = s.words
+    n = _phrase(s, i, CHECK_WHETHER[0])
+    if not n or ASK_MEANS not in s.lexicon.units or i + n + 2 >= len(words) or \
+            words[i + n].lower not in CHECK_WHETHER[1]:
+        return None
+    k = i + n + 1
+    end = s.speech_end(k)
+    size = person_subject([w.text for w in words[k:end]], s.lexicon.people, s.lexicon.things) if end - k >= 2 else 0
+    if not size or k + size + 1 < end and words[k + size].lower in BE_WORDS and \
+            (words[k + size + 1].lower in _WHERE_SAID or match_phrase(words, k + size + 1, PREPOSITIONS)):
+        return None                               # "see if Ben is in the kitchen", "... is home": where, looked for
+    last = words[k - 2].end
+    return Match(end - i, (Word(s.text_of(words[i].start, last), words[i].start, last, Tag.VERB, ASK_MEANS),
+                           words[k - 1].tagged(Tag.WH), s.emit(k, end - k, Tag.SAID).words[0]),
+                 expect=False, verb=ASK_MEANS, using=False)
 
 
 _REMAINING = frozenset(["left", "remaining"])
@@ -1356,6 +1387,10 @@ FOUND_OUT_RULE = Rule("find out who", _found_out, (
     Example("Find out who is in the hall.", "who is in the hall", Tag.SAID),
     Example("go to the hall and see who is there", "see", Tag.VERB),
 ), first_words(CHECK_WHETHER[0]), "'find out who ...', 'check what ...': tell me who ...")
+ASKED_OF_PERSON = Rule("found out by asking", _asked_of_person, (
+    Example("find out if anna wants coffee", "find out", Tag.VERB),
+    Example("check whether the guest is staying for dinner", "the guest is staying for dinner", Tag.SAID),
+), first_words(CHECK_WHETHER[0]), "'find out if Anna wants coffee': ask Anna whether she wants coffee")
 REMAINING = Rule("what is left", _remaining, (
     Example("is there any bread left?", "left", ""),
     Example("are there any eggs left in the fridge", "left", ""),

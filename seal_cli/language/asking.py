@@ -1,0 +1,144 @@
+"""A yes/no question asked of a person, as the person is asked it: "ask Raj *if he wants tea*" is putting
+"do you want tea?" to Raj, not saying "if he wants tea".
+
+An indirect question ("if"/"whether" and a clause) after a verb of asking (:data:`ASKING`) turns into the
+direct question by English's rules, with worked examples of our own:
+
+- the person asked becomes "you": the subject pronoun ("*he* wants tea", "*she* can come") or the person's own
+  name or noun ("find out if *anna* wants coffee"); "him"/"her" after it become "you", "his"/"her" before a noun
+  "your", "himself"/"herself" "yourself";
+- the subject and its verb are inverted: a form of "be" or a modal goes first ("he *is* hungry": "*are* you
+  hungry?", "she *can* come": "*can* you come?"; "was" with "you" is "were"); "has"/"have"/"had" before a past
+  participle too ("has he seen it": "*have* you seen it?"); any other verb takes "do" ("he *wants* tea": "*do* you
+  *want* tea?", "he *wanted*": "*did* you *want*");
+- a subject that is not the person asked stays ("ask Raj if *the tea* is ready": "is the tea ready?").
+
+:func:`direct_question` does it on words; :func:`person_subject` says how many words at the start of a clause name
+a person (the one asked when a command names nobody else: "find out if *anna* wants coffee").
+"""
+
+from __future__ import annotations
+
+from collections.abc import Collection, Sequence
+
+from seal_cli.language.english import BE_WORDS, DETERMINERS, NP_OPENERS, POSSESSIVES, PREPOSITIONS, PRONOUNS, WH_WORDS
+from seal_cli.language.morphology import in_dictionary, participles, verb_lemma
+
+__all__ = ["ASKING", "IFS", "direct_question", "person_subject"]
+
+ASKING = frozenset(["ask", "inquire", "enquire", "query"])
+"""Verbs of asking: after the person asked, "if"/"whether" and a clause is the question put to them ("*ask* Raj if
+he wants tea", "*inquire* of the guest whether she is staying"). English, not any corpus's."""
+
+IFS = frozenset(["if", "whether"])
+"""The words that start an indirect yes/no question."""
+
+_FUNCTION_WORDS = NP_OPENERS | PRONOUNS | WH_WORDS | BE_WORDS | frozenset(PREPOSITIONS) | {"i", "there", "here"}
+_BE_FOR_YOU = {"is": "are", "am": "are", "are": "are", "was": "were", "were": "were", "'s": "are"}
+_BE = frozenset(_BE_FOR_YOU)
+_MODALS = frozenset(["can", "could", "will", "would", "shall", "should", "may", "might", "must"])
+_PERFECT = {"has": "have", "have": "have", "had": "had"}
+_DO = {"does": "do", "do": "do", "did": "did"}
+_SUBJECT_PRONOUNS = frozenset(["he", "she", "they"])
+_OBJECT_SHIFT = {"him": "you", "himself": "yourself", "herself": "yourself", "themselves": "yourselves",
+                 "his": "your", "their": "your", "them": "you"}
+
+
+def person_subject(words: Sequence[str], people: Collection[str], things: Collection[str]) -> int:
+    """How many of ``words`` (a clause after "if"/"whether") name a person as its subject: a name (capitalised, or a
+    word no dictionary lists that is no thing the library knows), or a noun of people with its determiner ("the
+    guest", "my mother"); 0 when the subject is none of these ("the soup", "there", a pronoun)."""
+    if len(words) < 2:
+        return 0
+    first = words[0]
+    low = first.lower()
+    if low in _FUNCTION_WORDS or verb_lemma(words[1]) is None:
+        pass                                                    # "the ...", "it ...": no name; a name has a verb after
+    elif first[:1].isupper() or not in_dictionary(low) and low not in things and low.isalpha():
+        return 1                                                # "Anna", "anna" (no dictionary lists it)
+    if low in DETERMINERS | POSSESSIVES and len(words) > 2 and words[1].lower() in people:
+        return 2                                                # "the guest", "my mother"
+    return 0
+
+
+def direct_question(words: Sequence[str], asked: Sequence[str] = ()) -> str | None:
+    """The direct question an indirect one asks (``words``: "if", "he", "wants", "tea"), put to the person asked
+    (``asked``: the words that name them, "Raj"), ending in "?"; None when the words are no indirect yes/no
+    question (no "if"/"whether" first, or no verb after a subject)."""
+    if len(words) < 3 or words[0].lower() not in IFS:
+        return None
+    rest = list(words[1:])
+    named = [w.lower() for w in asked]
+    you = False
+    if rest[0].lower() in _SUBJECT_PRONOUNS:
+        size, you = 1, True
+    elif named and [w.lower() for w in rest[:len(named)]] == named:
+        size, you = len(named), True
+    else:
+        size = _subject_size(rest)
+    if size == 0 or size >= len(rest):
+        return None
+    subject = ["you"] if you else rest[:size]
+    verb, after = rest[size], rest[size + 1:]
+    low = verb.lower()
+    if low in _BE:
+        front, tail = (_BE_FOR_YOU[low] if you else low), after
+    elif low in _MODALS:
+        front, tail = low, after
+    elif low in _PERFECT and after and after[0].lower() in participles(verb_lemma(after[0]) or after[0]):
+        front, tail = (_PERFECT[low] if you else low), after
+    elif low in _DO:
+        front, tail = ("do" if you and low == "does" else low), after
+    else:
+        lemma = verb_lemma(low)
+        if lemma is None:
+            return None
+        past = low != lemma and low in participles(lemma) and not low.endswith("s")
+        front = "did" if past else ("do" if you or not low.endswith("s") else "does")
+        tail = [lemma, *after]
+    said = [front, *subject, *(_shifted(tail, _SAME_PERSON.get(rest[0].lower(), _ANY_PERSON)) if you else tail)]
+    return " ".join(said).rstrip(" ?.!") + "?"
+
+
+def _subject_size(words: Sequence[str]) -> int:
+    """How many words a subject that is not the person asked takes: a determiner and the words up to the first
+    verb form ("the tea", "the red car"); a single word ("dinner", "Edith")."""
+    if words[0].lower() in DETERMINERS | POSSESSIVES:
+        for k in range(1, len(words)):
+            low = words[k].lower()
+            if low in _BE or low in _MODALS or low in _PERFECT or low in _DO or \
+                    k > 1 and verb_lemma(low) is not None and low.endswith("s"):
+                return k
+        return 0
+    return 1
+
+
+_SAME_PERSON = {"he": frozenset(["he", "him", "his", "himself"]), "she": frozenset(["she", "her", "herself"]),
+                "they": frozenset(["they", "them", "their", "themselves"])}
+_ANY_PERSON = _SAME_PERSON["he"] | _SAME_PERSON["she"]
+"""The pronouns that can stand for the person asked, by the subject pronoun the question used ("if *he* has seen
+*her* keys": "her" is someone else); after a name, "he" or "she"."""
+
+
+def _shifted(words: Sequence[str], same: frozenset[str]) -> list[str]:
+    """The person asked, said of in the third person (``same``: the pronouns that can stand for them), as "you"
+    ("him" → "you", "his" → "your"); "her" is "your" before a word that is no preposition's and no end, else
+    "you"."""
+    out = []
+    for k, word in enumerate(words):
+        low = word.lower()
+        if low not in same:
+            out.append(word)
+        elif low == "her":
+            nxt = words[k + 1].lower() if k + 1 < len(words) else ""
+            out.append("your" if nxt and nxt.isalpha() and nxt not in _AFTER_OBJECT else "you")
+        elif low in ("he", "she"):
+            out.append("you")
+        else:
+            out.append(_OBJECT_SHIFT.get(low, word))
+    return out
+
+
+_AFTER_OBJECT = frozenset(["to", "with", "for", "in", "on", "at", "from", "and", "or", "if", "when", "now", "today",
+                           "tonight", "later", "too", "again", "please"])
+"""Words after which a "her" was the object ("help *her* to the car", "ask *her* now"): not a possessive."""
