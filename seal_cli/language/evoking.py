@@ -680,6 +680,8 @@ class Evoker:
         cls = None
         if self.vocabulary is not None and np.kind != "message":
             cls = np.ground(self.vocabulary)
+            if cls is None and np.possessor is not None and np.possessor.kind == "thing":
+                cls = np.possessor.ground(self.vocabulary)   # "the toilet's water tank": a part no class names
         whole = self.cut_from(np) if cls is None else None
         if whole is not None:                   # "slice the bread, take a slice": a slice of the bread
             index, name = whole

@@ -75,6 +75,12 @@ CONTEXT_PRIOR = 5.0
 """How many phrases' worth of the class's rate over all its wordings a wording's own rate of a
 context word is smoothed with (a wording said few times borrows from its class)."""
 
+SCENE_FAVOURITE = 1.5
+"""In a scene, how many times as probable as the next class the room holds a wording's most probable class must be
+to be read where the rules found no class and no class has half of it ("the container" in a kitchen: the bowl,
+0.44 of the times it was said where one was, against the soap bottle's 0.25). With no scene a wording is read
+only by a majority (chosen on train's held-out trials and floor plans in their scenes, see docs/language.md)."""
+
 SPELLING = 0.85
 """How similar (``difflib``'s ratio) a word no class names must be to a wording people said to be read as
 its misspelling ("stovve" → stove 0.91, "cabinst" → cabinet 0.86; "pencil" for "parcel" is 0.67)."""
@@ -312,6 +318,31 @@ class WordUsage:
         return cache[word]
 
     @cached_property
+    def _compounds(self) -> dict[str, tuple[str, ...]]:
+        """Modifier → the heads it was said with in a two-word wording people said at least ``min_support`` times."""
+        heads: dict[str, list[str]] = {}
+        for wording, by in self.counts.items():
+            words = wording.split(" ")
+            if len(words) == 2 and all(w.isalpha() for w in words) and sum(by.values()) >= self.min_support:
+                heads.setdefault(words[0], []).append(words[1])
+        return {m: tuple(h) for m, h in heads.items()}
+
+    def respelled_after(self, modifier: str, word: str) -> str | None:
+        """The head that ``word`` most likely misspells after ``modifier``, or None: the one head people said
+        after that modifier (a two-word wording of the table, "end table") within :data:`SPELLING` of ``word``,
+        closer than any other, when ``modifier word`` itself is no wording ("the end tale": table). A typo
+        that is a word ("tale", "bred") or short is read so only where the modifier's compound names it: the
+        compound is the evidence :meth:`respelled` lacks for words under 5 letters."""
+        if len(word) < 3 or not word.isalpha() or f"{modifier} {word}" in self.counts or word in self.counts:
+            return None
+        import difflib
+
+        heads = self._compounds.get(modifier, ())
+        close = difflib.get_close_matches(word, heads, n=2, cutoff=SPELLING)
+        ratios = [difflib.SequenceMatcher(None, word, c).ratio() for c in close]
+        return close[0] if close and (len(close) == 1 or ratios[0] > ratios[1]) else None
+
+    @cached_property
     def _meant(self) -> frozenset[str]:
         return frozenset(key for by_class in self.counts.values() for key in by_class)
 
@@ -362,8 +393,11 @@ class WordUsage:
             s_rule = next((s for s, key in scored if key == rule_key), 0.0)
             if by_class[best] < self.min_support:
                 return rule                               # too few people meant it to say
-            if rule_key is None:                          # nothing the rules found: the clear majority
-                return present[best] if 2 * s_best >= total else None
+            if rule_key is None:                          # nothing the rules found: the clear majority,
+                if 2 * s_best >= total:                   # in a scene the clear favourite of the room's
+                    return present[best]
+                s_next = max((s for s, key in scored if key != best), default=0.0)
+                return present[best] if scene and s_best >= SCENE_FAVOURITE * s_next else None
             if best != rule_key and s_best >= self.min_ratio * s_rule:
                 return present[best]
             return rule
