@@ -82,6 +82,8 @@ def test_a_second_place_said_without_the_verb_puts_the_same_thing(library: Libra
     ("put a wine glass on the table with a spoon in it",
      [("Place", {"theme": "a spoon", "goal": "a wine glass"}),
       ("Place", {"theme": "a wine glass", "goal": "the table"})]),
+    ("place a pan down on the table with a potato inside of it",   # a particle between: the verb's
+     [("Place", {"theme": "a potato", "goal": "a pan"}), ("Place", {"theme": "a pan", "goal": "the table"})]),
     ("put a pan with a knife in it on the counter",                 # said before the place: as before
      [("Place", {"theme": "a knife", "goal": "a pan with a knife in it"}),
       ("Place", {"theme": "a pan with a knife in it", "goal": "the counter"})]),
@@ -109,3 +111,13 @@ def test_a_quantifier_floated_after_a_pronoun_is_part_of_it(library: Library) ->
     assert parse.resolve(parse.frames[1].elements["theme"]).head == "bowl"    # the bowl, carried with the apple
     assert _frames("give them all the apples", library) == [("Give", {"theme": "all the apples",
                                                                        "recipient": "them"})]
+
+
+@pytest.mark.parametrize(("text", "theme", "goal"), [
+    ("put the bottle on the second from the bottom shelf", "the bottle", "the second from the bottom shelf"),
+    ("put the plate in the cabinet closest to the stove", "the plate", "the cabinet closest to the stove"),
+    ("put the mug on the shelf nearest to the door", "the mug", "the shelf nearest to the door"),
+])
+def test_which_of_a_row_or_the_one_nearest_something_describes_the_place(library: Library, text: str, theme: str,
+                                                                          goal: str) -> None:
+    assert _frames(text, library) == [("Place", {"theme": theme, "goal": goal})]
