@@ -109,9 +109,9 @@ def main() -> int:
     ap.add_argument("--markdown", action="store_true")
     args = ap.parse_args()
 
-    module = scorer(args.data.parent / "eval" / "score_alfred_goals.py")
     outcomes = read_outcomes(args.episodes, args.policy)
     gold = read_outcomes(args.gold, args.policy) if args.gold else {}
+    module = scorer(args.data.parent / "eval" / "score_alfred_goals.py")
     try:
         suite = load_suite(args.data / "alfred2d", args.split)
     except SealError as error:

@@ -121,3 +121,23 @@ def test_a_quantifier_floated_after_a_pronoun_is_part_of_it(library: Library) ->
 def test_which_of_a_row_or_the_one_nearest_something_describes_the_place(library: Library, text: str, theme: str,
                                                                           goal: str) -> None:
     assert _frames(text, library) == [("Place", {"theme": theme, "goal": goal})]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("slice the apple in the pan", [("Slice", {"theme": "the apple in the pan", "instrument": None}),
+                                    ("Place", {"theme": "the apple in the pan", "goal": "the pan"})]),
+    ("cut a tomato inside a bowl with a knife", [("Slice", {"theme": "a tomato inside a bowl", "instrument": "a knife"}),
+                                                 ("Place", {"theme": "a tomato inside a bowl", "goal": "a bowl"})]),
+])
+def test_a_thing_cut_where_it_lies_in_a_container_leaves_its_pieces_there(library: Library, text: str,
+                                                                           expected: list[object]) -> None:
+    assert _frames(text, library) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "slice the bread on the counter",       # a counter is no container: where it is cut, nothing more
+    "slice the apple in the fridge",        # nor is a fridge (an appliance the taxonomy does not call one)
+    "put the apple in the pan",             # no cut
+])
+def test_no_pieces_are_put_where_nothing_is_cut_in_a_container(library: Library, text: str) -> None:
+    assert len(_frames(text, library)) == 1
