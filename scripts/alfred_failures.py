@@ -157,7 +157,7 @@ def main() -> int:
     else:
         widths = [max(len(r[i]) for r in table) for i in range(len(header))]
         for row in table:
-            print("  ".join(cell.ljust(w) for cell, w in zip(row, widths)))
+            print("  ".join(cell.ljust(w) for cell, w in zip(row, widths, strict=True)))
     if args.list:
         for cause, group, sentence, wrong, got, want, reason in sorted(listed, key=lambda x: CAUSES.index(x[0])):
             detail = ", ".join(f"{f}: {got[f] if got else None} want {want[f]}" for f in wrong) or reason

@@ -126,8 +126,9 @@ def test_which_of_a_row_or_the_one_nearest_something_describes_the_place(library
 @pytest.mark.parametrize(("text", "expected"), [
     ("slice the apple in the pan", [("Slice", {"theme": "the apple in the pan", "instrument": None}),
                                     ("Place", {"theme": "the apple in the pan", "goal": "the pan"})]),
-    ("cut a tomato inside a bowl with a knife", [("Slice", {"theme": "a tomato inside a bowl", "instrument": "a knife"}),
-                                                 ("Place", {"theme": "a tomato inside a bowl", "goal": "a bowl"})]),
+    ("cut a tomato inside a bowl with a knife",
+     [("Slice", {"theme": "a tomato inside a bowl", "instrument": "a knife"}),
+      ("Place", {"theme": "a tomato inside a bowl", "goal": "a bowl"})]),
 ])
 def test_a_thing_cut_where_it_lies_in_a_container_leaves_its_pieces_there(library: Library, text: str,
                                                                            expected: list[object]) -> None:

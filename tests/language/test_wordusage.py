@@ -413,8 +413,8 @@ def test_a_misspelt_head_that_is_a_word_is_read_by_its_modifier_s_compound() -> 
 
 
 def test_in_a_scene_the_clear_favourite_is_read_where_no_class_has_a_majority() -> None:
-    counts = usage({"container": {"bowl": 20, "box": 10, "cup": 8, "vase": 6}, "stuff": {"bowl": 5, "box": 4, "cup": 3}},
-                   ("bowl", "box", "cup", "vase"))
+    counts = usage({"container": {"bowl": 20, "box": 10, "cup": 8, "vase": 6},
+                    "stuff": {"bowl": 5, "box": 4, "cup": 3}}, ("bowl", "box", "cup", "vase"))
     anywhere = Vocabulary.of(["Bowl", "Box", "Cup", "Vase"]).with_usage(counts)
     assert anywhere.ground_words(["container"]) is None                   # 20 of 44: no majority, no scene
     room = anywhere.restricted_to(["Bowl", "Box", "Cup", "Vase"])
