@@ -75,12 +75,6 @@ CONTEXT_PRIOR = 5.0
 """How many phrases' worth of the class's rate over all its wordings a wording's own rate of a
 context word is smoothed with (a wording said few times borrows from its class)."""
 
-SCENE_FAVOURITE = 1.5
-"""In a scene, how many times as probable as the next class the room holds a wording's most probable class must be
-to be read where the rules found no class and no class has half of it ("the container" in a kitchen: the bowl,
-0.44 of the times it was said where one was, against the soap bottle's 0.25). With no scene a wording is read
-only by a majority (chosen on train's held-out trials and floor plans in their scenes, see docs/language.md)."""
-
 SPELLING = 0.85
 """How similar (``difflib``'s ratio) a word no class names must be to a wording people said to be read as
 its misspelling ("stovve" → stove 0.91, "cabinst" → cabinet 0.86; "pencil" for "parcel" is 0.67)."""
@@ -393,11 +387,8 @@ class WordUsage:
             s_rule = next((s for s, key in scored if key == rule_key), 0.0)
             if by_class[best] < self.min_support:
                 return rule                               # too few people meant it to say
-            if rule_key is None:                          # nothing the rules found: the clear majority,
-                if 2 * s_best >= total:                   # in a scene the clear favourite of the room's
-                    return present[best]
-                s_next = max((s for s, key in scored if key != best), default=0.0)
-                return present[best] if scene and s_best >= SCENE_FAVOURITE * s_next else None
+            if rule_key is None:                          # nothing the rules found: the clear majority
+                return present[best] if 2 * s_best >= total else None
             if best != rule_key and s_best >= self.min_ratio * s_rule:
                 return present[best]
             return rule

@@ -412,17 +412,6 @@ def test_a_misspelt_head_that_is_a_word_is_read_by_its_modifier_s_compound() -> 
     assert vocab.ground_words(["tale"]) is None
 
 
-def test_in_a_scene_the_clear_favourite_is_read_where_no_class_has_a_majority() -> None:
-    counts = usage({"container": {"bowl": 20, "box": 10, "cup": 8, "vase": 6},
-                    "stuff": {"bowl": 5, "box": 4, "cup": 3}}, ("bowl", "box", "cup", "vase"))
-    anywhere = Vocabulary.of(["Bowl", "Box", "Cup", "Vase"]).with_usage(counts)
-    assert anywhere.ground_words(["container"]) is None                   # 20 of 44: no majority, no scene
-    room = anywhere.restricted_to(["Bowl", "Box", "Cup", "Vase"])
-    assert room.ground_words(["container"]) == "Bowl"                     # twice the next: the room's favourite
-    assert room.ground_words(["stuff"]) is None                           # 5 of 12, against 4: no favourite
-    assert anywhere.restricted_to(["Box", "Cup", "Vase"]).ground_words(["container"]) is None   # 10 / 8 / 6
-
-
 def test_a_second_conjunct_is_not_grounded_as_the_first(library: Library) -> None:
     vocabulary = Vocabulary.of(["Pen", "Pencil", "Mug", "Cup", "Dresser", "ButterKnife", "Knife", "SinkBasin"])
     parse = parse_command("Move a pen and mug to a dresser", library, vocabulary)
