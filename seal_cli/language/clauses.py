@@ -371,9 +371,11 @@ class Clauses:
     def carrier(self, out: list[Item]) -> NP | None:
         """The thing before the place just said (``out`` ends with its phrase) when the place is no container and
         the thing is one ("the pan" of "drop the pan on the table with a knife in it"; not "bring the paper to the
-        table with a lamp on it": a paper holds nothing); else None."""
+        table with a lamp on it": a paper holds nothing); else None. A particle between them is the verb's ("place
+        a pan *down* on the table with a potato inside of it")."""
         place = out[-1]
-        thing = out[-2] if len(out) >= 2 else None
+        before = [x for x in out[:-1] if not (isinstance(x, Word) and x.tag == "PARTICLE")]
+        thing = before[-1] if before else None
         if not isinstance(place, PP) or not isinstance(thing, NP) or thing.head is None or place.np.head is None \
                 or thing.pronoun or thing.conjuncts:
             return None

@@ -40,7 +40,8 @@ PREPOSITIONS = {
     "through": "through", "toward": "to", "towards": "to", "around": "around", "between": "between",
     "among": "between", "upon": "on", "within": "in", "off": "off", "for": "for", "about": "about",
     "via": "via", "past": "past", "against": "against", "along": "along", "beyond": "beyond", "using": "with",
-    "out of": "out of", "next to": "near", "close to": "near", "near to": "near", "in front of": "in front of",
+    "out of": "out of", "next to": "near", "close to": "near", "near to": "near",
+    "closest to": "near", "nearest to": "near", "closer to": "near", "nearer to": "near", "in front of": "in front of",
     "on top of": "on", "inside of": "inside", "off of": "off", "away from": "from", "in between": "between",
     "on to": "onto", "in to": "into", "up to": "to", "down to": "to", "over to": "to", "out from": "from",
     "from inside": "from", "from within": "from", "from on top of": "from", "from under": "from",
@@ -54,6 +55,11 @@ PARTICLES = _closed_class("up down out off away back over on in around about asi
 REGIONS = _closed_class("top bottom front back middle centre center far near lower upper")
 """Words that say which region of a thing, before a side: "the *front* left of the stove", "the *lower* right of
 the counter" (there "left of" is no preposition: the phrase is a region of the stove, as "the back of" is)."""
+ORDINALS = _closed_class("first second third fourth fifth sixth last")
+"""Ordinal words counting from an end of a row: "the *second* from the bottom shelf", "the third from the left drawer"
+(:data:`~seal_cli.language.rules.function_words.ORDINAL_FROM_AN_END`)."""
+ENDS = _closed_class("top bottom left right front back end door wall")
+"""Where such a count starts: "the second from the *bottom* shelf", "the third drawer from the *left*"."""
 SIDES = _closed_class("left right")
 """The sides of a thing, as regions: "the front *left* of the stove", "the *left* of the sink"."""
 PREPOSITIONS.update({f"to {article}{region} {side} of": "by" for article in ("the ", "") for region in REGIONS

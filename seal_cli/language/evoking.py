@@ -475,6 +475,23 @@ class Evoker:
                                   " ".join(w.text for w in clause.items if isinstance(w, Word) and w.info == "time")
                                   or None, clause.asked))
         self.carry_on(frame, roles, attached)
+        self.cut_where_it_lies(frame, roles, attached)
+
+    def cut_where_it_lies(self, frame: Frame, roles: Mapping[str, Any], attached: list[tuple[NP, PP]]) -> None:
+        """"Slice the apple *in the pan*", "cut an apple inside a pot": a thing cut where it lies in a container
+        leaves its pieces there, so the pieces are put in it, after the cut (a Place; the planner skips what is
+        there already). Only a container the taxonomy names one (a pan, a bowl, a plate; not a counter, where
+        "slice the bread on the counter" says where it is cut, nothing more), only for the frame that cuts."""
+        cutting = self.cutting("cut")
+        first = frame.elements[0].role if frame.elements else None
+        theme = roles.get(first) if first is not None else None
+        if cutting is None or cutting[0].name != frame.name or not isinstance(theme, NP) or theme.conjuncts:
+            return
+        for host, pp in attached:
+            if host is theme and pp.prep in PUT_IN and pp.np.kind == "thing" and not pp.np.pronoun and \
+                    self.types.is_a(self.roles.class_or_head(pp.np), "container") is True:
+                self.put(theme, pp.np, "in")
+                return
 
     @staticmethod
     def asker(frame: Frame, roles: dict[str, Any]) -> None:
@@ -707,6 +724,8 @@ class Evoker:
         cls = None
         if self.vocabulary is not None and np.kind != "message":
             cls = np.ground(self.vocabulary)
+            if cls is None and np.possessor is not None and np.possessor.kind == "thing":
+                cls = np.possessor.ground(self.vocabulary)   # "the toilet's water tank": a part no class names
         whole = self.cut_from(np) if cls is None else None
         if whole is not None:                   # "slice the bread, take a slice": a slice of the bread
             index, name = whole

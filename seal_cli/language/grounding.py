@@ -250,6 +250,11 @@ class Vocabulary:
                 said = self._usage.respelled(words[-1])
                 if said is not None:
                     found = self._usage.choose((said,), self._present, None, self.scene, self.context)
+                elif len(words) > 1:         # "the end tale": a word, yet after "end" a misspelt "table"
+                    said = self._usage.respelled_after(words[-2], words[-1])
+                    if said is not None:
+                        found = self._usage.choose((words[-2], said), self._present, None, self.scene,
+                                                   self.context)
         elif end == len(words) and words and words[-1] in PORTIONS:   # "the left side of the sink",
             whole = of or words[:-1]                                     # "a chair seat": the whole decides
             if whole and whole[-1] not in PORTIONS and (

@@ -312,6 +312,31 @@ class WordUsage:
         return cache[word]
 
     @cached_property
+    def _compounds(self) -> dict[str, tuple[str, ...]]:
+        """Modifier → the heads it was said with in a two-word wording people said at least ``min_support`` times."""
+        heads: dict[str, list[str]] = {}
+        for wording, by in self.counts.items():
+            words = wording.split(" ")
+            if len(words) == 2 and all(w.isalpha() for w in words) and sum(by.values()) >= self.min_support:
+                heads.setdefault(words[0], []).append(words[1])
+        return {m: tuple(h) for m, h in heads.items()}
+
+    def respelled_after(self, modifier: str, word: str) -> str | None:
+        """The head that ``word`` most likely misspells after ``modifier``, or None: the one head people said
+        after that modifier (a two-word wording of the table, "end table") within :data:`SPELLING` of ``word``,
+        closer than any other, when ``modifier word`` itself is no wording ("the end tale": table). A typo
+        that is a word ("tale", "bred") or short is read so only where the modifier's compound names it: the
+        compound is the evidence :meth:`respelled` lacks for words under 5 letters."""
+        if len(word) < 3 or not word.isalpha() or f"{modifier} {word}" in self.counts or word in self.counts:
+            return None
+        import difflib
+
+        heads = self._compounds.get(modifier, ())
+        close = difflib.get_close_matches(word, heads, n=2, cutoff=SPELLING)
+        ratios = [difflib.SequenceMatcher(None, word, c).ratio() for c in close]
+        return close[0] if close and (len(close) == 1 or ratios[0] > ratios[1]) else None
+
+    @cached_property
     def _meant(self) -> frozenset[str]:
         return frozenset(key for by_class in self.counts.values() for key in by_class)
 

@@ -82,6 +82,8 @@ def test_a_second_place_said_without_the_verb_puts_the_same_thing(library: Libra
     ("put a wine glass on the table with a spoon in it",
      [("Place", {"theme": "a spoon", "goal": "a wine glass"}),
       ("Place", {"theme": "a wine glass", "goal": "the table"})]),
+    ("place a pan down on the table with a potato inside of it",   # a particle between: the verb's
+     [("Place", {"theme": "a potato", "goal": "a pan"}), ("Place", {"theme": "a pan", "goal": "the table"})]),
     ("put a pan with a knife in it on the counter",                 # said before the place: as before
      [("Place", {"theme": "a knife", "goal": "a pan with a knife in it"}),
       ("Place", {"theme": "a pan with a knife in it", "goal": "the counter"})]),
@@ -132,3 +134,33 @@ def test_each_thing_said_with_its_own_source_is_fetched_from_there(library: Libr
 def test_a_place_joined_to_a_source_without_a_source_of_its_own_stays_one_source(library: Library) -> None:
     (bring,) = parse_command("take the cup from the table and the shelf to the sink", library).frames
     assert [c.head for c in bring.elements["source"].conjuncts] == ["table", "shelf"]
+
+@pytest.mark.parametrize(("text", "theme", "goal"), [
+    ("put the bottle on the second from the bottom shelf", "the bottle", "the second from the bottom shelf"),
+    ("put the plate in the cabinet closest to the stove", "the plate", "the cabinet closest to the stove"),
+    ("put the mug on the shelf nearest to the door", "the mug", "the shelf nearest to the door"),
+])
+def test_which_of_a_row_or_the_one_nearest_something_describes_the_place(library: Library, text: str, theme: str,
+                                                                          goal: str) -> None:
+    assert _frames(text, library) == [("Place", {"theme": theme, "goal": goal})]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("slice the apple in the pan", [("Slice", {"theme": "the apple in the pan", "instrument": None}),
+                                    ("Place", {"theme": "the apple in the pan", "goal": "the pan"})]),
+    ("cut a tomato inside a bowl with a knife",
+     [("Slice", {"theme": "a tomato inside a bowl", "instrument": "a knife"}),
+      ("Place", {"theme": "a tomato inside a bowl", "goal": "a bowl"})]),
+])
+def test_a_thing_cut_where_it_lies_in_a_container_leaves_its_pieces_there(library: Library, text: str,
+                                                                           expected: list[object]) -> None:
+    assert _frames(text, library) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "slice the bread on the counter",       # a counter is no container: where it is cut, nothing more
+    "slice the apple in the fridge",        # nor is a fridge (an appliance the taxonomy does not call one)
+    "put the apple in the pan",             # no cut
+])
+def test_no_pieces_are_put_where_nothing_is_cut_in_a_container(library: Library, text: str) -> None:
+    assert len(_frames(text, library)) == 1

@@ -303,3 +303,12 @@ def test_a_vocabulary_past_its_bound_is_refused_while_it_is_read(tmp_path: Path)
     with pytest.raises(SealError, match=rf"v\.yaml:{MAX_VOCABULARY_VALUES}:3: this vocabulary holds more than "):
         load_vocabulary(path)
     assert time.perf_counter() - start < 10  # it was read, used and accepted in 25 s
+
+
+def test_a_part_no_class_names_is_its_possessor_s(library: Library) -> None:
+    assert theme_class("the toilet's water tank", library) == "Toilet"       # a part of the toilet: the toilet
+    assert theme_class("the fridge's door", library) == "Fridge"
+    assert theme_class("the water tank", library) is None                   # no whole said: nothing
+    assert theme_class("the toilet's soap bar", library) == "SoapBar"       # a class of its own: itself
+    assert theme_class("the man's laptop", library) == "Laptop"
+    assert theme_class("the man's shirt", library) is None                  # a person's: never the person

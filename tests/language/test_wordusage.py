@@ -393,6 +393,25 @@ def test_a_misspelling_is_read_as_the_word_people_say_only_when_nothing_matches(
     assert vocab.with_usage(RULES).ground_words(["slice"], of=["stovve"]) is None
 
 
+def test_a_misspelt_head_that_is_a_word_is_read_by_its_modifier_s_compound() -> None:
+    usage_ = usage({"end table": {"side_table": 6}, "table": {"dining_table": 9, "side_table": 3},
+                    "tale": {"book": 2}, "coffee table": {"coffee_table": 1}},
+                   ("side_table", "dining_table", "coffee_table", "book"))
+    assert usage_.respelled_after("end", "tale") is None                  # "tale" is itself a wording here
+    words = usage({"end table": {"side_table": 6}, "table": {"dining_table": 9}, "coffee table": {"coffee_table": 1}},
+                  ("side_table", "dining_table", "coffee_table"))
+    assert words.respelled("tale") is None                                # four letters, and a word: alone, no
+    assert words.respelled_after("end", "tale") == "table"               # after "end": the end table
+    assert words.respelled_after("coffee", "tale") is None                # "coffee table" said once: no evidence
+    assert words.respelled_after("dining", "tale") is None                # no compound with "dining"
+    assert words.respelled_after("end", "tabble") == "table"
+    assert words.respelled_after("end", "tile") is None                   # too far from "table"
+    vocab = Vocabulary.of(["SideTable", "DiningTable", "CoffeeTable"], usage=words)
+    assert vocab.ground_words(["end", "tale"]) == "SideTable"
+    assert vocab.with_usage(RULES).ground_words(["end", "tale"]) is None
+    assert vocab.ground_words(["tale"]) is None
+
+
 def test_a_second_conjunct_is_not_grounded_as_the_first(library: Library) -> None:
     vocabulary = Vocabulary.of(["Pen", "Pencil", "Mug", "Cup", "Dresser", "ButterKnife", "Knife", "SinkBasin"])
     parse = parse_command("Move a pen and mug to a dresser", library, vocabulary)

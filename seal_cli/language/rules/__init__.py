@@ -141,6 +141,7 @@ WORDS: tuple[Rule, ...] = (
     numbers.APOSTROPHE_S,
     numbers.QUANTIFIER_OF,
     function_words.PARTICLE_NOUN,
+    function_words.ORDINAL_FROM_AN_END,
     function_words.SIDE_OF_REGION,
     function_words.OF,
     function_words.DETERMINER_IN_NP,

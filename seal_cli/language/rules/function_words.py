@@ -10,9 +10,11 @@ from seal_cli.language.english import (
     CLOCK_PREPOSITIONS,
     DETERMINERS,
     END_MARKS,
+    ENDS,
     HERE_WORDS,
     NP_OPENERS,
     NUMBERS,
+    ORDINALS,
     PARTICLES,
     PARTITIVES,
     POSSESSIVES,
@@ -112,6 +114,19 @@ def _if_asked(s: State, i: int) -> Match | None:
 def _particle_noun(s: State, i: int) -> Match | None:
     if s.next_lower(i) == "of" and match_phrase(s.words, i, PREPOSITIONS) < 2:
         return s.emit(i, 1, Tag.WORD)                             # "the back of the toilet"
+    return None
+
+
+def _ordinal_from_an_end(s: State, i: int) -> Match | None:
+    """"the *second from the bottom* shelf": an ordinal counting from an end of a row, said before the noun it counts,
+    is one modifier of that noun (the phrase names a shelf, not "the second" of something taken from the bottom
+    shelf). Only after a determiner and before a noun; "the second drawer from the left" needs no rule."""
+    words = s.words
+    if not s.out or s.out[-1].tag != Tag.DET or i + 3 >= len(words) or words[i + 1].lower != "from":
+        return None
+    k = i + 2 + (words[i + 2].lower in ("the", "a"))
+    if k < len(words) and words[k].lower in ENDS and s.noun_follows(k + 1):
+        return s.emit(i, k + 1 - i, Tag.WORD)
     return None
 
 
@@ -270,6 +285,10 @@ IF_ASKED = Rule("if and what is asked", _if_asked, (
 PARTICLE_NOUN = Rule("particle as a noun", _particle_noun, (
     Example("clean the back of the toilet", "back", Tag.WORD),
 ), PARTICLES, "a particle before 'of' is a noun ('the back of')")
+ORDINAL_FROM_AN_END = Rule("ordinal from an end", _ordinal_from_an_end, (
+    Example("put the bottle on the second from the bottom shelf", "second from the bottom", Tag.WORD),
+    Example("put the book in the third from the left drawer", "third from the left", Tag.WORD),
+), ORDINALS, "'the second from the bottom shelf': an ordinal counted from an end, one modifier of the noun")
 SIDE_OF_REGION = Rule("side of a region", _side_of_region, (
     Example("put the pot on the front left of the stove", "left", Tag.WORD),
     Example("put the soap on the back right of the counter", "right", Tag.WORD),
