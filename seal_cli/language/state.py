@@ -47,6 +47,7 @@ from seal_cli.language.english import (
     RELATIVES,
     REQUESTS,
     SEPARATOR_WORDS,
+    SEQUENCE_ADVERBS,
     STATE_ASKERS,
     STATEMENT_LINKS,
     STATES_DONE,
@@ -83,8 +84,8 @@ __all__ = ["CLOSED", "State", "longest_phrase", "match_phrase", "merge"]
 _PHRASES: dict[tuple[str, str], tuple[tuple[str, tuple[str, ...]], ...]] = {}
 """First two words → (phrase, its words) of each multiword phrase of the closed-class tables, longest first (so
 :func:`match_phrase` stops at the first that fits)."""
-for _table in (PREPOSITIONS, POLITE, POLITE_FORMULAE, SEPARATOR_WORDS, NUMBERS, HERE_WORDS, TIME_WORDS, SUBORDINATORS,
-               VOCATIVES):
+for _table in (PREPOSITIONS, POLITE, POLITE_FORMULAE, SEPARATOR_WORDS, SEQUENCE_ADVERBS, NUMBERS, HERE_WORDS,
+               TIME_WORDS, SUBORDINATORS, VOCATIVES):
     for _phrase in _table:
         _parts = tuple(_phrase.split())
         _two = (_parts[0], _parts[1]) if len(_parts) > 1 else None
@@ -946,6 +947,9 @@ class State:
         j = i + n
         while j < len(words) and match_phrase(words, j, SEPARATOR_WORDS) and words[j].lower not in ("before",):
             j += match_phrase(words, j, SEPARATOR_WORDS)
+        later = match_phrase(words, j, SEQUENCE_ADVERBS)
+        if later and self.verb_after(j + later + int(j + later < len(words) and words[j + later].lower == ",")):
+            j += later + int(words[j + later].lower == ",")   # ", and *later on* find her": part of the joint
         phrase = " ".join(w.lower for w in words[i:i + n])
         low, span = ("and", j - i - n + 1) if phrase in AND_WORDS else (words[i].lower, j - i)
         sub = self._subordinate_at(j) if j < len(words) and words[j].lower in SUB_FIRST and \

@@ -1379,3 +1379,17 @@ def test_a_unit_typed_with_two_letters_swapped_is_that_unit(library: Library) ->
     with pytest.raises(CommandError, match="unknown verb"):
         parse_command("bnirg me the cup", library)          # two slips: no unit one slip away
     assert frames("bring the cup to jamie", library) == [("Bring", {"theme": "cup", "recipient": "jamie"})]
+
+
+# -- words22 ---------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("text", ["greet Ana, and later find her in the garden",
+                                  "greet Ana then later on find her in the garden",
+                                  "greet Ana and a little later, find her in the garden"])
+def test_later_between_a_joint_and_a_verb_is_part_of_the_joint(text: str, library: Library) -> None:
+    assert frames(text, library) == [("Greet", {"theme": "Ana"}), ("Find", {"theme": "Ana", "ground": "garden"})]
+
+
+def test_later_after_a_verbs_arguments_stays_a_time(library: Library) -> None:
+    parse = parse_command("open the window later on", library)
+    assert [f.frame for f in parse.frames] == ["Open"] and parse.frames[0].time == "later"
