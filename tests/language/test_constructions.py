@@ -1393,3 +1393,21 @@ def test_later_between_a_joint_and_a_verb_is_part_of_the_joint(text: str, librar
 def test_later_after_a_verbs_arguments_stays_a_time(library: Library) -> None:
     parse = parse_command("open the window later on", library)
     assert [f.frame for f in parse.frames] == ["Open"] and parse.frames[0].time == "later"
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("Morgan needs to be led from the hall to the garden",
+     [("Guide", {"theme": "Morgan", "source": "hall", "goal": "garden"})]),
+    ("the woman at the sofa needs guiding to the exit", [("Guide", {"theme": "woman", "goal": "exit"})]),
+    ("Ben has to be escorted to the garage", [("Guide", {"theme": "Ben", "goal": "garage"})]),
+])
+def test_a_person_who_needs_a_verb_done_asks_the_robot_to_do_it(text: str, want: list[tuple[str, dict[str, str]]],
+                                                                 library: Library) -> None:
+    assert frames(text, library) == want
+
+
+def test_a_person_who_needs_a_thing_still_gets_it(library: Library) -> None:
+    assert frames("Morgan needs a glass of water", library) == [("Bring", {"theme": "glass", "recipient": "Morgan"})]
+    assert frames("the plate on the table needs washing", library)[0][0] == "Clean"
+    with pytest.raises(CommandError):
+        parse_command("the kitchen needs to be lovely", library)     # no verb of the library is needed
