@@ -947,7 +947,7 @@ class State:
         j = i + n
         while j < len(words) and match_phrase(words, j, SEPARATOR_WORDS) and words[j].lower not in ("before",):
             j += match_phrase(words, j, SEPARATOR_WORDS)
-        later = match_phrase(words, j, SEQUENCE_ADVERBS)
+        later = match_phrase(words, j, SEQUENCE_ADVERBS) if j < len(words) else 0
         if later and self.verb_after(j + later + int(j + later < len(words) and words[j + later].lower == ",")):
             j += later + int(words[j + later].lower == ",")   # ", and *later on* find her": part of the joint
         phrase = " ".join(w.lower for w in words[i:i + n])

@@ -1411,3 +1411,8 @@ def test_a_person_who_needs_a_thing_still_gets_it(library: Library) -> None:
     assert frames("the plate on the table needs washing", library)[0][0] == "Clean"
     with pytest.raises(CommandError):
         parse_command("the kitchen needs to be lovely", library)     # no verb of the library is needed
+
+
+@pytest.mark.parametrize("text", ["bring me the cup and", "close the door, then"])
+def test_a_joint_ending_the_command_reads_no_adverb_past_it(text: str, library: Library) -> None:
+    assert len(frames(text, library)) == 1
