@@ -692,7 +692,9 @@ def test_a_state_a_frame_leaves_its_theme_in_is_wished_or_made_sure_of(library: 
 
 
 def test_them_takes_up_a_plural_phrase_said_first(library: Library) -> None:
-    assert frames("the plants on the balcony, bring them inside", library) == [("Bring", {"theme": "plant"})]
+    # (words22: where the phrase said first puts them is where they are taken from, Evoker.place_said)
+    assert frames("the plants on the balcony, bring them inside", library) == [
+        ("Bring", {"theme": "plant", "source": "balcony"})]
     assert [f for f, _ in frames("the guests at the door, take them to the lounge", library)] == ["Guide"]
     assert [f for f, _ in frames("bring them to the kitchen", library)] == ["Guide"]    # no phrase: as before
 
@@ -1416,3 +1418,25 @@ def test_a_person_who_needs_a_thing_still_gets_it(library: Library) -> None:
 @pytest.mark.parametrize("text", ["bring me the cup and", "close the door, then"])
 def test_a_joint_ending_the_command_reads_no_adverb_past_it(text: str, library: Library) -> None:
     assert len(frames(text, library)) == 1
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("Lena is in the garage. Greet her", [("Greet", {"theme": "Lena", "ground": "garage"})]),
+    ("Tom's sitting by the fireplace, find him", [("Find", {"theme": "Tom", "ground": "fireplace"})]),
+    ("someone is waiting at the gate. guide them to the porch",
+     [("Guide", {"theme": "someone", "source": "gate", "goal": "porch"})]),
+    ("there's a man reading in the study, find them", [("Find", {"theme": "man", "ground": "study"})]),
+    ("there should be a serving spoon somewhere in the pantry, find it",
+     [("Find", {"theme": "spoon", "ground": "pantry"})]),
+    ("I think there's honey in the cupboard, find it", [("Find", {"theme": "honey", "ground": "cupboard"})]),
+])
+def test_where_a_statement_puts_what_a_pronoun_stands_for_is_where_to_seek_it(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want
+
+
+def test_a_place_a_statement_does_not_say_of_the_thing_is_not_taken(library: Library) -> None:
+    assert frames("Lena has the keys in her bag. Greet her", library) == [("Greet", {"theme": "Lena"})]
+    assert frames("when Lena gets to the door, greet her", library) == [("Greet", {"theme": "Lena"})]
+    assert frames("Lena is in the garage. Greet her in the hall", library) == [
+        ("Greet", {"theme": "Lena", "ground": "hall"})]                 # said in the clause: that one
