@@ -495,7 +495,7 @@ def mentions(text: str, start: int, end: int) -> list[Mention]:
             k += 1
             continue
         first, k = k, k + 1 if determined or someone else k
-        while k < len(words) and words[k].lower.isalpha() and words[k].lower not in CLOSED and \
+        while k < len(words) and words[k].lower.replace("-", "").isalpha() and words[k].lower not in CLOSED and \
                 words[k].lower not in FINITE and words[k].lower not in SEPARATOR_WORDS and \
                 words[k].lower not in SUB_FIRST and words[k].lower not in _SOMEWHERE and \
                 not (gerund_lemma(words[k].lower) and not _gerund_modifier(words, k, first + int(determined))) and \

@@ -19,7 +19,7 @@ from collections.abc import Sequence
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import BESIDE, LOCATED, PRONOUNS
+from seal_cli.language.english import BESIDE, LOCATED, NP_OPENERS, PRONOUNS, is_room_word
 from seal_cli.language.lexicon import Mention, Word, mentions, noun_lemma
 from seal_cli.language.morphology import is_plural
 from seal_cli.language.syntax import NP
@@ -156,11 +156,13 @@ class Reference:
         """Where the statement that introduced ``said`` puts it ("*Paris* is in *the bathroom*", "there's a cup
         somewhere in *the kitchen*", "someone in a grey jacket is at *the bed*"): the first phrase after it, in
         the same statement, said after a preposition of where a thing is (``LOCATED``, ``BESIDE``) and naming no
-        clothing; None when a phrase that is no preposition's object comes first ("Ana has *the cup* in the
-        kitchen") or none is said. Not a condition's ("when Ana gets to the door": where she will be, not where she is)."""
+        clothing (nor, "in" right after a person, anything but a room: "the person in the orange t-shirt"); None
+        when a phrase that is no preposition's object comes first ("Ana has *the cup* in the kitchen") or none is
+        said. Not a condition's ("when Ana gets to the door": where she will be, not where she is)."""
         span = next(((a, b) for a, b in self.remarks if a <= said.start < b), None)
         if span is None or self._mentions is None:
             return None
+        person = said.name or self.types.is_a(noun_lemma(said.head), "person") is True
         for m in self._mentions:
             if m.start < said.end or m.start == said.start:
                 continue
@@ -168,6 +170,9 @@ class Reference:
                 return None
             before = self.text[span[0]:m.start].lower().split()
             prep = " ".join(before[-3:])
+            words = [w for w in self.text[m.start:m.end].lower().split() if w not in NP_OPENERS]
+            if self.text[said.end:m.start].split() == ["in"] and person and not is_room_word(words):
+                continue                             # "the person *in the orange t-shirt*": what they wear
             if any(prep == p or prep.endswith(f" {p}") for p in (*LOCATED, *BESIDE)) and \
                     self.types.is_a(noun_lemma(m.head), "clothing") is not True and \
                     self.types.is_a(noun_lemma(m.head), "person") is not True:

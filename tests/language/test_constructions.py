@@ -1440,3 +1440,10 @@ def test_a_place_a_statement_does_not_say_of_the_thing_is_not_taken(library: Lib
     assert frames("when Lena gets to the door, greet her", library) == [("Greet", {"theme": "Lena"})]
     assert frames("Lena is in the garage. Greet her in the hall", library) == [
         ("Greet", {"theme": "Lena", "ground": "hall"})]                 # said in the clause: that one
+
+
+def test_what_a_person_is_said_to_be_in_right_after_them_is_a_place_only_when_a_room(library: Library) -> None:
+    assert frames("the woman in the blue t-shirt by the piano needs a hand, guide her to the door", library) == [
+        ("Guide", {"theme": "woman", "source": "piano", "goal": "door"})]
+    assert frames("the man in the study wants to leave, guide him to the door", library) == [
+        ("Guide", {"theme": "man", "source": "study", "goal": "door"})]
