@@ -162,6 +162,8 @@ _IN_NP = frozenset({Tag.DET, Tag.NUM, Tag.POSS, Tag.RESULT})
 
 _DISLOCATED_WORDS = 12
 """How far a phrase said first may run before its comma ("the dice on the sofa in the living room,")."""
+_DASHES = frozenset(["-", "–", "—", "--"])
+"""Dashes, which the tokenizer reads as ";": between a phrase said first and the command, a comma."""
 
 
 def time_asked(words: Sequence[Word], i: int) -> int:
@@ -603,13 +605,14 @@ class State:
         comma = -1
         for k in range(i + 1, min(len(words), i + _DISLOCATED_WORDS)):
             low = words[k].lower
+            if low == "," or low == ";" and self.text_of(words[k].start, words[k].end).strip() in _DASHES:
+                comma = k                                # "the man by the door *-* greet him": a dash as a comma
+                break
             if low in END_MARKS or low in (";", ":", "and", "then"):
                 return None
-            if low == ",":
-                comma = k
-                break
-            if self.verb_at(k) is not None and words[k - 1].lower not in DETERMINERS and not \
-                    (free and k == i + 1 and words[k].lower in BE_WORDS):
+            if self.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS and not \
+                    (free and k == i + 1 and words[k].lower in BE_WORDS) and \
+                    not (k > i + 1 and gerund_lemma(low)):   # "the man *waiting* at the door, greet him"
                 return None                              # a clause, not a phrase
         if comma < 0 or not self.verb_after(comma + 1):
             return None

@@ -1447,3 +1447,18 @@ def test_what_a_person_is_said_to_be_in_right_after_them_is_a_place_only_when_a_
         ("Guide", {"theme": "woman", "source": "piano", "goal": "door"})]
     assert frames("the man in the study wants to leave, guide him to the door", library) == [
         ("Guide", {"theme": "man", "source": "study", "goal": "door"})]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("the mug on the shelf - bring it to me", [("Bring", {"theme": "mug", "recipient": "me", "source": "shelf"})]),
+    ("the lady by the window wearing her red scarf — greet her", [("Greet", {"theme": "lady", "ground": "window"})]),
+    ("the boy waiting in the garage, follow him", [("Follow", {"theme": "boy", "source": "garage"})]),
+])
+def test_a_phrase_said_first_before_a_dash_or_with_a_participle_is_taken_up(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want
+
+
+def test_a_semicolon_after_a_phrase_said_first_is_no_comma(library: Library) -> None:
+    with pytest.raises(CommandError):
+        parse_command("the mug on the shelf; bring it to me", library)   # as before: only a dash is read so
