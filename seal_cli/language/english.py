@@ -80,6 +80,11 @@ SEPARATOR_WORDS = frozenset(["and", "then", ",", ";", ":", "after that", "afterw
                              "after you have done that", "once you've done that", "once you have done that",
                              "when you've done that", "when you have done that", "once that's done",
                              "once that is done"])
+SEQUENCE_ADVERBS = frozenset(["later", "later on", "soon after", "soon afterwards", "shortly after",
+                              "shortly afterwards", "after a while", "in a while", "a bit later", "a little later"])
+"""Adverbs of time that, between a joint and the next clause's verb, say only that it comes after ("meet Ana,
+and *later on* find her in the garden"; "water the plants then *after a while* turn off the tap"): part of the
+joint. Said after a verb's arguments they stay a time ("come back *later*", ``TIME_WORDS``)."""
 AND_WORDS = frozenset(["and", "as well as", "plus"])
 VERB_JOINTS = frozenset(["and", "then", ","])
 """Joints after which a bare word used mostly as a verb starts a clause of its own ("go to the kitchen *and* wait

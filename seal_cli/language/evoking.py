@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import BESIDE, LOCATED, ROUTE_NOUNS, SPEAKER_PRONOUNS, is_room_word
+from seal_cli.language.english import BESIDE, LOCATED, NP_OPENERS, ROUTE_NOUNS, SPEAKER_PRONOUNS, is_room_word
 from seal_cli.language.grounding import PARTS, PIECES, PORTIONS
 from seal_cli.language.lexicon import CommandError, Word, noun_lemma
 from seal_cli.language.morphology import is_gradable
@@ -407,6 +407,26 @@ class Evoker:
         if role is not None and roles.get(role) is None:
             roles[role] = theme.located
 
+    def place_said(self, frame: Frame, roles: dict[str, Any], elements: dict[str, Phrase]) -> None:
+        """"Paris is in the bathroom; meet her", "there's a cup somewhere in the kitchen, find it": a pronoun
+        standing for what a statement before the command introduced, and the statement said where it is: that
+        is where to seek it or take it from (the frame's ``ground`` or ``source``, when nothing fills it), as
+        :meth:`located_ground` does for a place said in the phrase itself."""
+        first = frame.elements[0].role if frame.elements else None
+        np = roles.get(first) if first is not None else None
+        role = next((r for r in ("ground", "source") if r in frame.roles), None)
+        if not isinstance(np, NP) or np.pronoun is None or role is None or role in elements or \
+                first not in elements or elements[first].refers_to is not None:
+            return
+        said = self.reference.mentioned(np, frame, first)
+        place = self.reference.place_said(said) if said is not None else None
+        if place is None:
+            return
+        text = self.text[place.start:place.end]
+        words = [w for w in text.split() if w.lower() not in NP_OPENERS]
+        cls = self.vocabulary.grounded(words, []) if self.vocabulary is not None and words else None
+        elements[role] = Phrase(text, noun_lemma(place.head), cls, span=(place.start, place.end))
+
     def emit(self, frame: Frame, unit: str, clause: Clause, roles: dict[str, Any],
              attached: list[tuple[NP, PP]]) -> None:
         theme = frame.elements[0].role if frame.elements else ""
@@ -452,6 +472,7 @@ class Evoker:
                 prep = next((x.prep for x in clause.items if isinstance(x, PP) and x.np is np), None)
                 if prep is not None:             # "put the teapot *on* the sideboard": on its top, not in it
                     elements[element.role] = replace(elements[element.role], preposition=prep)
+        self.place_said(frame, roles, elements)
         first = frame.elements[0] if frame.elements else None
         said = self.types.object_role(unit)            # "fill [it] with water": the goal is what is unsaid
         if said is not None:

@@ -488,13 +488,17 @@ def mentions(text: str, start: int, end: int) -> list[Mention]:
     while k < len(words):
         low = words[k].lower
         determined = low in NP_OPENERS
-        if not (determined or capitalised(words[k]) and low not in CLOSED and low not in NOMINATIVE):
+        existential = _after_there_is(words, k) and low.isalpha() and low not in CLOSED
+        someone = low in _SOMEONE
+        if not (determined or existential or someone or capitalised(words[k]) and low not in CLOSED and
+                low not in NOMINATIVE and low not in _EXISTENTIAL):
             k += 1
             continue
-        first, k = k, k + 1 if determined else k
-        while k < len(words) and words[k].lower.isalpha() and words[k].lower not in CLOSED and \
+        first, k = k, k + 1 if determined or someone else k
+        while k < len(words) and words[k].lower.replace("-", "").isalpha() and words[k].lower not in CLOSED and \
                 words[k].lower not in FINITE and words[k].lower not in SEPARATOR_WORDS and \
-                words[k].lower not in SUB_FIRST and not gerund_lemma(words[k].lower) and \
+                words[k].lower not in SUB_FIRST and words[k].lower not in _SOMEWHERE and \
+                not (gerund_lemma(words[k].lower) and not _gerund_modifier(words, k, first + int(determined))) and \
                 not (k > first + int(determined) and _present_verb(words[k].lower)):
             k += 1
             if capitalised(words[k - 1]) and not (k < len(words) and capitalised(words[k])):
@@ -503,10 +507,32 @@ def mentions(text: str, start: int, end: int) -> list[Mention]:
             head = words[k - 1]
             oblique = first > 0 and words[first - 1].lower in PREPOSITIONS
             found.append(Mention(start + words[first].start, start + head.end, head.text, capitalised(head),
-                                 determined, oblique))
+                                 determined or existential or someone, oblique))
         else:
             k = max(k, first + 1)
     return found
+
+
+_EXISTENTIAL = frozenset(["there", "here"])
+"""Capitalised first in a statement, these name nothing ("*There*'s a cup on the table")."""
+_SOMEONE = frozenset(["someone", "somebody"])
+"""An indefinite person a statement may introduce ("*Someone*'s at the door, let them in")."""
+_SOMEWHERE = frozenset(["somewhere", "anywhere", "everywhere", "nowhere"])
+"""Adverbs of place that end the phrase before them ("the dish *somewhere* in the dining room")."""
+
+
+def _after_there_is(words: Sequence[Word], k: int) -> bool:
+    """Whether word ``k`` follows "there is/'s/are" (a modal between: "there should be"): a bare noun there is
+    introduced as a determiner would ("there's *mustard* in the kitchen")."""
+    return k >= 2 and words[k - 1].lower in BE_WORDS and \
+        any(w.lower == "there" for w in words[max(0, k - 3):k - 1])
+
+
+def _gerund_modifier(words: Sequence[Word], k: int, opening: int) -> bool:
+    """Whether the -ing form at ``k`` opens its phrase and a noun follows it ("a *cleaning* supply"): a modifier,
+    not the verb that ends the phrase ("the man *waiting* at the door")."""
+    return k == opening and k + 1 < len(words) and words[k + 1].lower.isalpha() and \
+        words[k + 1].lower not in CLOSED and not gerund_lemma(words[k + 1].lower)
 
 
 def _present_verb(low: str) -> bool:

@@ -19,7 +19,7 @@ from collections.abc import Sequence
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import PRONOUNS
+from seal_cli.language.english import BESIDE, LOCATED, NP_OPENERS, PRONOUNS, is_room_word
 from seal_cli.language.lexicon import Mention, Word, mentions, noun_lemma
 from seal_cli.language.morphology import is_plural
 from seal_cli.language.syntax import NP
@@ -137,11 +137,14 @@ class Reference:
                       not m.name and is_plural(m.head.lower())]
             if plural:
                 return plural[-1]
-            if not self.types.is_person(frame.element(role).type):
-                return None                          # "when *the guest* arrives, greet them": one person, "they"
+            type_ = frame.element(role).type
             people = [m for m in self._mentions if m.end <= np.start and not m.oblique and
                       (m.name or self.types.is_a(noun_lemma(m.head), "person") is True)]
-            return people[-1] if people else None
+            subjects = [m for m in self._mentions if m.end <= np.start and not m.oblique]
+            if not self.types.is_person(type_) and not (self.types.is_open(type_) and people and
+                                                         people[-1] is subjects[-1]):
+                return None                          # "when *the guest* arrives, greet them": one person, "they"
+            return people[-1] if people else None    # "there's *a man* at the door, find them": "find" takes any
         if pronoun not in ("him", "her", "he", "she", "it", "this", "that"):
             return None
         person = pronoun not in ("it", "this", "that")
@@ -153,6 +156,33 @@ class Reference:
                        and self.types.is_a(noun_lemma(m.head), type_) is True]
             said = fitting or [m for m in said if m.determined and not m.oblique] or [m for m in said if m.determined]
         return said[-1] if said else None
+
+    def place_said(self, said: Mention) -> Mention | None:
+        """Where the statement that introduced ``said`` puts it ("*Paris* is in *the bathroom*", "there's a cup
+        somewhere in *the kitchen*", "someone in a grey jacket is at *the bed*"): the first phrase after it, in
+        the same statement, said after a preposition of where a thing is (``LOCATED``, ``BESIDE``) and naming no
+        clothing (nor, "in" right after a person, anything but a room: "the person in the orange t-shirt"); None
+        when a phrase that is no preposition's object comes first ("Ana has *the cup* in the kitchen") or none is
+        said. Not a condition's ("when Ana gets to the door": where she will be, not where she is)."""
+        span = next(((a, b) for a, b in self.remarks if a <= said.start < b), None)
+        if span is None or self._mentions is None:
+            return None
+        person = said.name or self.types.is_a(noun_lemma(said.head), "person") is True
+        for m in self._mentions:
+            if m.start < said.end or m.start == said.start:
+                continue
+            if m.end > span[1] or not m.oblique:
+                return None
+            before = self.text[span[0]:m.start].lower().split()
+            prep = " ".join(before[-3:])
+            words = [w for w in self.text[m.start:m.end].lower().split() if w not in NP_OPENERS]
+            if self.text[said.end:m.start].split() == ["in"] and person and not is_room_word(words):
+                continue                             # "the person *in the orange t-shirt*": what they wear
+            if any(prep == p or prep.endswith(f" {p}") for p in (*LOCATED, *BESIDE)) and \
+                    self.types.is_a(noun_lemma(m.head), "clothing") is not True and \
+                    self.types.is_a(noun_lemma(m.head), "person") is not True:
+                return m
+        return None
 
     def person_by_role(self, target: tuple[int, str], phrase: Phrase) -> bool:
         """Whether a noun the library does not know as a person is one by the element it fills: an

@@ -47,6 +47,7 @@ from seal_cli.language.english import (
     RELATIVES,
     REQUESTS,
     SEPARATOR_WORDS,
+    SEQUENCE_ADVERBS,
     STATE_ASKERS,
     STATEMENT_LINKS,
     STATES_DONE,
@@ -83,8 +84,8 @@ __all__ = ["CLOSED", "State", "longest_phrase", "match_phrase", "merge"]
 _PHRASES: dict[tuple[str, str], tuple[tuple[str, tuple[str, ...]], ...]] = {}
 """First two words → (phrase, its words) of each multiword phrase of the closed-class tables, longest first (so
 :func:`match_phrase` stops at the first that fits)."""
-for _table in (PREPOSITIONS, POLITE, POLITE_FORMULAE, SEPARATOR_WORDS, NUMBERS, HERE_WORDS, TIME_WORDS, SUBORDINATORS,
-               VOCATIVES):
+for _table in (PREPOSITIONS, POLITE, POLITE_FORMULAE, SEPARATOR_WORDS, SEQUENCE_ADVERBS, NUMBERS, HERE_WORDS,
+               TIME_WORDS, SUBORDINATORS, VOCATIVES):
     for _phrase in _table:
         _parts = tuple(_phrase.split())
         _two = (_parts[0], _parts[1]) if len(_parts) > 1 else None
@@ -161,6 +162,8 @@ _IN_NP = frozenset({Tag.DET, Tag.NUM, Tag.POSS, Tag.RESULT})
 
 _DISLOCATED_WORDS = 12
 """How far a phrase said first may run before its comma ("the dice on the sofa in the living room,")."""
+_DASHES = frozenset(["-", "–", "—", "--"])
+"""Dashes, which the tokenizer reads as ";": between a phrase said first and the command, a comma."""
 
 
 def time_asked(words: Sequence[Word], i: int) -> int:
@@ -602,13 +605,14 @@ class State:
         comma = -1
         for k in range(i + 1, min(len(words), i + _DISLOCATED_WORDS)):
             low = words[k].lower
+            if low == "," or low == ";" and self.text_of(words[k].start, words[k].end).strip() in _DASHES:
+                comma = k                                # "the man by the door *-* greet him": a dash as a comma
+                break
             if low in END_MARKS or low in (";", ":", "and", "then"):
                 return None
-            if low == ",":
-                comma = k
-                break
-            if self.verb_at(k) is not None and words[k - 1].lower not in DETERMINERS and not \
-                    (free and k == i + 1 and words[k].lower in BE_WORDS):
+            if self.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS and not \
+                    (free and k == i + 1 and words[k].lower in BE_WORDS) and \
+                    not (k > i + 1 and gerund_lemma(low)):   # "the man *waiting* at the door, greet him"
                 return None                              # a clause, not a phrase
         if comma < 0 or not self.verb_after(comma + 1):
             return None
@@ -946,6 +950,9 @@ class State:
         j = i + n
         while j < len(words) and match_phrase(words, j, SEPARATOR_WORDS) and words[j].lower not in ("before",):
             j += match_phrase(words, j, SEPARATOR_WORDS)
+        later = match_phrase(words, j, SEQUENCE_ADVERBS) if j < len(words) else 0
+        if later and self.verb_after(j + later + int(j + later < len(words) and words[j + later].lower == ",")):
+            j += later + int(words[j + later].lower == ",")   # ", and *later on* find her": part of the joint
         phrase = " ".join(w.lower for w in words[i:i + n])
         low, span = ("and", j - i - n + 1) if phrase in AND_WORDS else (words[i].lower, j - i)
         sub = self._subordinate_at(j) if j < len(words) and words[j].lower in SUB_FIRST and \

@@ -692,7 +692,9 @@ def test_a_state_a_frame_leaves_its_theme_in_is_wished_or_made_sure_of(library: 
 
 
 def test_them_takes_up_a_plural_phrase_said_first(library: Library) -> None:
-    assert frames("the plants on the balcony, bring them inside", library) == [("Bring", {"theme": "plant"})]
+    # (words22: where the phrase said first puts them is where they are taken from, Evoker.place_said)
+    assert frames("the plants on the balcony, bring them inside", library) == [
+        ("Bring", {"theme": "plant", "source": "balcony"})]
     assert [f for f, _ in frames("the guests at the door, take them to the lounge", library)] == ["Guide"]
     assert [f for f, _ in frames("bring them to the kitchen", library)] == ["Guide"]    # no phrase: as before
 
@@ -1379,3 +1381,84 @@ def test_a_unit_typed_with_two_letters_swapped_is_that_unit(library: Library) ->
     with pytest.raises(CommandError, match="unknown verb"):
         parse_command("bnirg me the cup", library)          # two slips: no unit one slip away
     assert frames("bring the cup to jamie", library) == [("Bring", {"theme": "cup", "recipient": "jamie"})]
+
+
+# -- words22 ---------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("text", ["greet Ana, and later find her in the garden",
+                                  "greet Ana then later on find her in the garden",
+                                  "greet Ana and a little later, find her in the garden"])
+def test_later_between_a_joint_and_a_verb_is_part_of_the_joint(text: str, library: Library) -> None:
+    assert frames(text, library) == [("Greet", {"theme": "Ana"}), ("Find", {"theme": "Ana", "ground": "garden"})]
+
+
+def test_later_after_a_verbs_arguments_stays_a_time(library: Library) -> None:
+    parse = parse_command("open the window later on", library)
+    assert [f.frame for f in parse.frames] == ["Open"] and parse.frames[0].time == "later"
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("Morgan needs to be led from the hall to the garden",
+     [("Guide", {"theme": "Morgan", "source": "hall", "goal": "garden"})]),
+    ("the woman at the sofa needs guiding to the exit", [("Guide", {"theme": "woman", "goal": "exit"})]),
+    ("Ben has to be escorted to the garage", [("Guide", {"theme": "Ben", "goal": "garage"})]),
+])
+def test_a_person_who_needs_a_verb_done_asks_the_robot_to_do_it(text: str, want: list[tuple[str, dict[str, str]]],
+                                                                 library: Library) -> None:
+    assert frames(text, library) == want
+
+
+def test_a_person_who_needs_a_thing_still_gets_it(library: Library) -> None:
+    assert frames("Morgan needs a glass of water", library) == [("Bring", {"theme": "glass", "recipient": "Morgan"})]
+    assert frames("the plate on the table needs washing", library)[0][0] == "Clean"
+    with pytest.raises(CommandError):
+        parse_command("the kitchen needs to be lovely", library)     # no verb of the library is needed
+
+
+@pytest.mark.parametrize("text", ["bring me the cup and", "close the door, then"])
+def test_a_joint_ending_the_command_reads_no_adverb_past_it(text: str, library: Library) -> None:
+    assert len(frames(text, library)) == 1
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("Lena is in the garage. Greet her", [("Greet", {"theme": "Lena", "ground": "garage"})]),
+    ("Tom's sitting by the fireplace, find him", [("Find", {"theme": "Tom", "ground": "fireplace"})]),
+    ("someone is waiting at the gate. guide them to the porch",
+     [("Guide", {"theme": "someone", "source": "gate", "goal": "porch"})]),
+    ("there's a man reading in the study, find them", [("Find", {"theme": "man", "ground": "study"})]),
+    ("there should be a serving spoon somewhere in the pantry, find it",
+     [("Find", {"theme": "spoon", "ground": "pantry"})]),
+    ("I think there's honey in the cupboard, find it", [("Find", {"theme": "honey", "ground": "cupboard"})]),
+])
+def test_where_a_statement_puts_what_a_pronoun_stands_for_is_where_to_seek_it(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want
+
+
+def test_a_place_a_statement_does_not_say_of_the_thing_is_not_taken(library: Library) -> None:
+    assert frames("Lena has the keys in her bag. Greet her", library) == [("Greet", {"theme": "Lena"})]
+    assert frames("when Lena gets to the door, greet her", library) == [("Greet", {"theme": "Lena"})]
+    assert frames("Lena is in the garage. Greet her in the hall", library) == [
+        ("Greet", {"theme": "Lena", "ground": "hall"})]                 # said in the clause: that one
+
+
+def test_what_a_person_is_said_to_be_in_right_after_them_is_a_place_only_when_a_room(library: Library) -> None:
+    assert frames("the woman in the blue t-shirt by the piano needs a hand, guide her to the door", library) == [
+        ("Guide", {"theme": "woman", "source": "piano", "goal": "door"})]
+    assert frames("the man in the study wants to leave, guide him to the door", library) == [
+        ("Guide", {"theme": "man", "source": "study", "goal": "door"})]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("the mug on the shelf - bring it to me", [("Bring", {"theme": "mug", "recipient": "me", "source": "shelf"})]),
+    ("the lady by the window wearing her red scarf — greet her", [("Greet", {"theme": "lady", "ground": "window"})]),
+    ("the boy waiting in the garage, follow him", [("Follow", {"theme": "boy", "source": "garage"})]),
+])
+def test_a_phrase_said_first_before_a_dash_or_with_a_participle_is_taken_up(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want
+
+
+def test_a_semicolon_after_a_phrase_said_first_is_no_comma(library: Library) -> None:
+    with pytest.raises(CommandError):
+        parse_command("the mug on the shelf; bring it to me", library)   # as before: only a dash is read so

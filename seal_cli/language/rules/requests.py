@@ -953,6 +953,65 @@ def _obliged_dropped(s: State, i: int) -> Match | None:
     return Match(found[1])                        # "the bowl *should go* in ...": dropped, "put" was unsaid before
 
 
+_NEEDS_DONE = frozenset(["needs", "need", "wants", "has to be", "have to be", "needs to be", "need to be",
+                         "wants to be", "should be", "must be", "is to be", "are to be"])
+"""What a person said to need a verb done to them is said with ("Ana *needs* guiding to the door", "Ben *has to be*
+taken to the exit"): the -ing form after "needs"/"wants", a past participle after the others."""
+_PERSON_WORDS = 12
+"""The most words the person's noun phrase may have before what they need ("the person at the coat rack raising
+their right arm")."""
+
+
+def _person_needs(s: State, i: int) -> tuple[int, int, str] | None:
+    """Where "needs V-ing" / "needs to be V-ed" starts after a person's phrase at ``i``, how many words it has,
+    and the verb (a one-word unit of the library); None when no such phrase and need start here."""
+    words = s.words
+    first = words[i]
+    named = capitalised(first) and first.lower not in CLOSED and s.verb_at(i) is None
+    if not (first.lower in NP_OPENERS or named):
+        return None
+    person = named
+    for k in range(i + 1, min(len(words) - 1, i + _PERSON_WORDS)):
+        n = _phrase(s, k, _NEEDS_DONE)
+        if n and person and k + n < len(words):
+            low = words[k + n].lower
+            lemma = gerund_lemma(low) if words[k + n - 1].lower in ("needs", "need", "wants") else \
+                next((v for v in (verb_lemma(low),) if v is not None and low in participles(v)), None)
+            return (k, n + 1, lemma) if lemma is not None and (lemma,) in s.lexicon.units.get(lemma, ()) \
+                else None
+        low = words[k].lower
+        if not low.isalpha() or low in BE_WORDS or low in QUESTION_WORDS or low in ("and", "then", "or"):
+            return None                           # "Angel is at the bin and needs ...": no phrase alone
+        if named and k == i + 1 and capitalised(words[k]) is False and low not in NP_OPENERS:
+            return None                           # "Morgan *likes* ...": a name is one word here
+        person = person or low in s.lexicon.people or noun_lemma(low) in s.lexicon.people
+    return None
+
+
+def _person_needing(s: State, i: int) -> Match | None:
+    """"*Morgan needs to be led* from the storage rack to the bookshelf", "the person at the coat rack needs guiding
+    to the living room": a person said to need a verb done to them asks the robot to do it; the verb is unsaid
+    before the phrase (the person its object), the need dropped after it (``PERSON_NEED_DROPPED``)."""
+    found = _person_needs(s, i)
+    if found is None:
+        return None
+    w = s.words[i]
+    tag = Tag.DET if w.lower in DETERMINERS else Tag.POSS if w.lower in POSSESSIVES else Tag.NAME \
+        if w.lower not in NP_OPENERS else Tag.PRON
+    return Match(1, (_unsaid(w.start, Tag.VERB, found[2]), w.tagged(tag)), expect=False, verb=found[2], using=False)
+
+
+def _person_need_dropped(s: State, i: int) -> Match | None:
+    at = next((k for k in range(len(s.out) - 1, -1, -1) if s.out[k].tag == Tag.VERB), -1)
+    if at < 0 or at + 1 >= len(s.out) or s.out[at].text:
+        return None
+    first = next((k for k, w in enumerate(s.words) if w.start == s.out[at + 1].start), -1)
+    found = _person_needs(s, first) if first >= 0 else None
+    if found is None or found[0] != i or found[2] != s.out[at].info:
+        return None                               # only the need of the unsaid verb's own phrase
+    return Match(found[1])                        # "Morgan *needs to be led* to ...": dropped, "lead" unsaid before
+
+
 def _sentence_end(s: State, i: int) -> int:
     words = s.words
     return next((k for k in range(i, len(words)) if words[k].lower in END_MARKS), len(words))
@@ -1314,6 +1373,14 @@ OBLIGED_RULE = Rule("where a thing should go", _obliged, (
     Example("the cup on the coffee table needs washing", "washing", Tag.PARTICLE),
 ), lambda low: low in NP_OPENERS or low in _OBLIGED_SUBJECTS,
     "'X should go in Y', 'X belongs in Y': put X in Y; 'X should be closed': close X")
+PERSON_NEEDING = Rule("a person who needs leading", _person_needing, (
+    Example("Morgan needs to be led to the bookshelf", "Morgan", Tag.NAME),
+    Example("the man at the door needs showing to the kitchen", "the", Tag.DET),
+), lambda low: low in NP_OPENERS or low.isalpha(),
+    "'Ana needs guiding to the door', 'the guest has to be taken to the exit': guide/take the person there")
+PERSON_NEED_DROPPED = Rule("the need after the person", _person_need_dropped, (
+    Example("Morgan needs to be led to the bookshelf", "needs to be led", ""),
+), first_words(_NEEDS_DONE), "the 'needs to be led' of 'Morgan needs to be led to X', dropped: 'lead' was unsaid")
 OBLIGED_DROPPED = Rule("the obligation after the thing", _obliged_dropped, (
     Example("the bowl should go in the dishwasher", "should go", ""),
 ), first_words(OBLIGED), "the 'should go' of 'the bowl should go in Y', dropped: 'put' was unsaid before")
