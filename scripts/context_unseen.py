@@ -28,10 +28,21 @@ def main() -> int:
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--policies", default="sefm,object_only,prior_optimal")
     parser.add_argument("--episodes", type=Path, help="also write every outcome here as JSON Lines")
+    parser.add_argument("--data", type=Path, default=ROOT / ".." / "shared" / "data",
+                        help="the shared data folder (default: beside the checkout)")
+    parser.add_argument("--house", action="append", default=[],
+                        help="only this held-out house, by its map's name (repeatable; default: all of them)")
     args = parser.parse_args()
     names = [n.strip() for n in args.policies.split(",") if n.strip()]
-    outcomes = list(context.run_context_suite(ROOT / ".." / "shared" / "data", names, layouts=args.layouts,
-                                              seed=args.seed, jobs=args.jobs, on=context.unseen_houses()))
+    on = context.unseen_houses()
+    unknown = [h for h in args.house if h not in {house.map.name for house in on}]
+    if unknown:
+        print(f"error: --house {unknown[0]!r}: one of {', '.join(house.map.name for house in on)}", file=sys.stderr)
+        return 1
+    if args.house:
+        on = [house for house in on if house.map.name in args.house]
+    outcomes = list(context.run_context_suite(args.data, names, layouts=args.layouts,
+                                              seed=args.seed, jobs=args.jobs, on=on))
     if args.episodes is not None:
         args.episodes.write_text("".join(json.dumps(o.to_json()) + "\n" for o in outcomes), encoding="utf-8")
     report = summarise(outcomes, names)

@@ -236,6 +236,30 @@ RANCH_STARTS = ((1.5, 1.5, 0.0), (9.5, 5.0, 0.0), (16.5, 8.0, 0.0))
 """The living room's south-west corner, the hallway, the bathroom."""
 
 
+def longhouse() -> Map:
+    """20 m × 12 m, drawn by search16 for a held-out check before any policy was run on it: a hallway the whole
+    length of the house, three rooms south of it (kitchen, dining room, living room, west to east; the kitchen
+    and the dining room joined by a door too) and three north (bedroom, family room and a study no thing's prior
+    names). The bedroom, where both cups and spoons may be, is the far west end of the north side; the
+    kitchen, with the spoons and mugs, the far west of the south."""
+    rooms = {"kitchen": (0.0, 0.0, 6.0, 5.0), "dining_room": (6.0, 0.0, 11.0, 5.0),
+             "living_room": (11.0, 0.0, 20.0, 5.0), "hallway": (0.0, 5.0, 20.0, 7.0),
+             "bedroom": (0.0, 7.0, 8.0, 12.0), "family_room": (8.0, 7.0, 14.0, 12.0),
+             "study": (14.0, 7.0, 20.0, 12.0)}
+    doors = [(3.0, 5.0), (6.0, 2.5), (8.5, 5.0), (15.0, 5.0), (4.0, 7.0), (11.0, 7.0), (17.0, 7.0)]
+    places = (Place("counter_1", "counter", (0.6, 2.5)), Place("dining_table_1", "dining_table", (8.5, 2.5)),
+              Place("coffee_table_1", "coffee_table", (15.5, 2.5)), Place("bed_1", "bed", (2.0, 10.5)),
+              Place("sofa_1", "sofa", (11.0, 11.3)), Place("desk_1", "desk", (18.5, 11.3)))
+    objects = tuple(ObjectTruth(str(o["class"]), (10.0, 6.0)) for o in CONTEXT_OBJECTS)
+    return walled_house("longhouse", (20.0, 12.0), rooms, doors, objects=objects, places=places,
+                        robot=(18.0, 2.5, 0.0), priors=CONTEXT_PRIORS,
+                        furniture=((1.0, 9.5, 3.0, 11.8), (7.8, 2.0, 9.2, 3.0), (9.5, 11.0, 12.5, 11.8)))
+
+
+LONGHOUSE_STARTS = ((18.0, 2.5, 0.0), (10.0, 6.0, 0.0), (17.0, 10.0, 0.0))
+"""The living room's east end, the middle of the hallway, the study."""
+
+
 FARMHOUSE_STARTS = ((4.0, 2.0, 0.0), (3.0, 9.0, 0.0), (15.0, 9.0, 0.0))
 """``maps/farmhouse.yaml`` (drawn by ``maps/make_houses.py``, an unseen house): the kitchen, the living room,
 the family room's east end."""

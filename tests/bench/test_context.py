@@ -48,10 +48,11 @@ def test_every_house_has_the_things_priors_and_starts_and_plans_every_command(sh
 # where each unseen house's rooms are reached only through another (a point in it, and the least metres
 # from the house's first start): the bungalow's kitchen and family room through the dining room, the
 # farmhouse's bedroom through the family room, the terrace's family room through the kitchen, the ranch's
-# kitchen (from its hallway, the second start) through the living room or the dining room
+# kitchen (from its hallway, the second start) through the living room or the dining room, the longhouse's
+# bedroom (from the study, the third start) through the hallway: out, 13 m west along it and in, not across
 ONLY_THROUGH = {"bungalow": [((13.0, 2.5), 9.0), ((11.5, 8.0), 9.0)], "farmhouse": [((15.5, 3.0), 14.0)],
-                "terrace": [((4.5, 18.5), 15.0)], "ranch": [((9.5, 2.0), 6.5)]}
-THROUGH_FROM = {"ranch": 1}
+                "terrace": [((4.5, 18.5), 15.0)], "ranch": [((9.5, 2.0), 6.5)], "longhouse": [((2.0, 8.5), 17.5)]}
+THROUGH_FROM = {"ranch": 1, "longhouse": 2}
 
 
 def test_the_unseen_houses_are_room_graphs_with_free_starts_and_plan_every_command(library: Library) -> None:
@@ -61,7 +62,7 @@ def test_the_unseen_houses_are_room_graphs_with_free_starts_and_plan_every_comma
     from seal_cli.sim.policies import make_policy
 
     unseen = unseen_houses()
-    assert [h.map.name for h in unseen] == ["bungalow", "farmhouse", "terrace", "ranch"]
+    assert [h.map.name for h in unseen] == ["bungalow", "farmhouse", "terrace", "ranch", "longhouse"]
     for house in unseen:
         m = house.map
         assert {r.name for r in m.rooms} >= {room for prior in CONTEXT_PRIORS.values() for room in prior}
@@ -155,7 +156,8 @@ def test_drawn_starts_are_clear_of_walls_in_rooms_and_the_same_for_a_seed() -> N
 
 
 def test_the_house_sets_by_name(shared_data: Path) -> None:
-    assert [h.map.name for h in house_set("unseen", shared_data)] == ["bungalow", "farmhouse", "terrace", "ranch"]
+    assert [h.map.name for h in house_set("unseen", shared_data)] == ["bungalow", "farmhouse", "terrace", "ranch",
+                                                                     "longhouse"]
     assert [h.map.name for h in house_set("suite", shared_data)] == ["apartment", "aws_small_house", "cottage"]
     with pytest.raises(SealError, match="--houses 'mine': one of suite, unseen"):
         house_set("mine", shared_data)
@@ -168,8 +170,8 @@ def test_bench_tasks_context_on_the_unseen_houses_from_drawn_starts(shared_data:
     assert result.exit_code == 0, result.output
     data = json.loads(result.stdout)
     assert data["houses"] == "unseen" and data["starts"] == 1 and data["seed"] == 2
-    assert set(data["by_house"]) == {"bungalow", "farmhouse", "terrace", "ranch", "all"}
-    assert data["groups"]["all"]["n"] == 4 and data["groups"]["all"]["success"]["oracle"] == 1.0
+    assert set(data["by_house"]) == {"bungalow", "farmhouse", "terrace", "ranch", "longhouse", "all"}
+    assert data["groups"]["all"]["n"] == 5 and data["groups"]["all"]["success"]["oracle"] == 1.0
 
 
 def test_bench_tasks_refuses_an_unknown_house_set_and_starts_off_the_context_suite(shared_data: Path) -> None:

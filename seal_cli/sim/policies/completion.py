@@ -59,6 +59,10 @@ SAMPLES = 300
 """Nodes at which a belief is represented for the rest of the plan: at its mass's quantiles (see :func:`quantiles`)."""
 SCALE = 1.0
 """Metres added to every drive in the greedy tour's mass-per-metre rule (a view at the robot's feet is not free)."""
+SLIGHT = 0.01
+"""The share of the next thing's belief the first search's looks must see for its tour to be planned anew without
+it (:meth:`_Later._tour`): looks that see less (a narrow sensor's, which see a sliver each) leave it the tour
+planned with the whole belief, one for all the candidates weighed, not one per candidate and look."""
 LEVELS = 16
 """The most looks of the first search after which the next thing's tour is planned anew (each with the
 nodes seen up to that look taken out of its belief); a look beyond them shares the tour of the one before."""
@@ -129,18 +133,17 @@ def greedy_tour(tables: Tables, nodes: Sequence[int], belief: np.ndarray, start:
     seen = np.zeros(n, dtype=bool)
     while len(views) < MAX_TOUR and total > 0 and left > SPENT * total:
         table = tables(at)
-        hit = np.isfinite(table.seen_at) & ~seen
         if first is not None and not views:
             v = first
         else:
-            mass = hit.astype(float) @ belief
-            score = np.where(np.isfinite(table.length), mass / (np.nan_to_num(table.length, posinf=0.0) + SCALE), -1.0)
+            mass = table.reveals @ np.where(seen, 0.0, belief)
+            score = np.where(np.isfinite(table.length), mass / (table.per_metre + SCALE), -1.0)
             for k in (i for i, node in enumerate(nodes) if node == at):
                 score[k] = -1.0
             v = int(np.argmax(score))
             if score[v] <= 0 or mass[v] <= 0:
                 break
-        row = hit[v]
+        row = np.isfinite(table.seen_at[v]) & ~seen
         seen_at[row] = elapsed + table.seen_at[v, row]
         look[row] = table.look[v, row]
         seen |= row
@@ -226,12 +229,15 @@ class _Later:
         """Per node, the metres to reach a thing of ``cls`` there by its greedy tour from view node ``anchor``;
         ``seen``: a first tour and the metres of it driven, whose looks so far saw none of it (the tour is
         planned with the belief without the nodes they saw)."""
+        belief = self.q[cls]
+        if seen is not None:
+            kept = np.where(seen[0].seen_at <= seen[1], 0.0, belief)
+            if kept.sum() > 0 and belief.sum() - kept.sum() >= SLIGHT * belief.sum():
+                belief = kept
+            else:          # the looks saw (next to) none of it: the tour planned without them, shared
+                seen = None
         key = (cls, anchor, None if seen is None else (seen[0].views, seen[1]))
         if key not in self.tours:
-            belief = self.q[cls]
-            if seen is not None:
-                kept = np.where(seen[0].seen_at <= seen[1], 0.0, belief)
-                belief = kept if kept.sum() > 0 else belief
             self.tours[key] = greedy_tour(self.tables, self.nodes, belief, anchor).cost(self.distance)
         return self.tours[key]
 

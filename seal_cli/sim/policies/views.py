@@ -21,6 +21,7 @@ from __future__ import annotations
 import hashlib
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Any
 
 import numpy as np
@@ -53,6 +54,21 @@ class DriveTable:
     seen_at: np.ndarray
     look: np.ndarray
     length: np.ndarray
+
+    @cached_property
+    def reveals(self) -> np.ndarray:
+        """``reveals[v, z]`` 1.0 where the drive to candidate ``v`` sees node ``z``, else 0.0 (kept: a greedy
+        tour weighs every candidate's drive by it at each of its steps)."""
+        return np.isfinite(self.seen_at).astype(float)
+
+    @cached_property
+    def per_metre(self) -> np.ndarray:
+        """Each drive's metres, 0 where there is none (the greedy tour's mass-per-metre rule divides by it)."""
+        return np.nan_to_num(self.length, posinf=0.0)
+
+    @property
+    def nbytes(self) -> int:
+        return int(self.seen_at.nbytes + self.look.nbytes + self.length.nbytes + 2 * self.seen_at.size * 4)
 
 
 @dataclass(eq=False)

@@ -28,7 +28,7 @@ from seal_cli.sim.navigation import Cell
 from seal_cli.sim.policies.completion import Choice, Target, choose
 from seal_cli.sim.policies.views import SPACING, DriveTable, Lattice, lattice_of
 
-__all__ = ["COVER_SAMPLE", "DOOR_GAP", "MORE_VIEWS", "ROOM_VIEWS", "UNCOVERED", "Candidate", "Region",
+__all__ = ["ADDED_VIEWS", "COVER_SAMPLE", "DOOR_GAP", "MORE_VIEWS", "ROOM_VIEWS", "UNCOVERED", "Candidate", "Region",
            "WholePlanSearch"]
 
 ROOM_VIEWS = 4
@@ -39,6 +39,9 @@ UNCOVERED = 0.01
 """The share of a belief the candidates may leave unseen before views are added (:meth:`WholePlanSearch._cover`)."""
 MORE_VIEWS = 3
 """The most views added at one choice."""
+ADDED_VIEWS = 4 * MORE_VIEWS
+"""The most views added over a run (the candidates are then fixed: every drive table, and every step of every
+greedy tour, weighs each candidate, so their number bounds the cost of a choice)."""
 COVER_SAMPLE = 40
 """Nodes tried for each added view (drawn by the belief no candidate sees)."""
 
@@ -174,8 +177,9 @@ class Decision:
 
 TABLE_BYTES = 128 * 2**20
 """The most bytes of drive tables one search keeps (one per node it plans from: candidates × lattice nodes × 8
-bytes, 116 MB on a 4,096-node lattice with 3,500 candidates; about 3 MB on an empty 50 m floor, where a run
-plans from a hundred nodes and kept 300 MB); past it those used longest ago are dropped."""
+bytes, 116 MB on a 4,096-node lattice with 3,500 candidates, and as much again for the reveals a greedy tour
+weighs by, counted in :attr:`DriveTable.nbytes`; about 3 MB on an empty 50 m floor, where a run plans from a
+hundred nodes and kept 300 MB); past it those used longest ago are dropped."""
 
 
 class WholePlanSearch:
@@ -203,6 +207,9 @@ class WholePlanSearch:
         """The view chosen last, until the robot looks from there (a drive that stops short leaves it unused)."""
         self._tables: dict[tuple[int, frozenset[str]], DriveTable] = {}
         self._covered: np.ndarray | None = None
+        self.added = 0
+        """Views :meth:`_cover` has added (at most :data:`ADDED_VIEWS`)."""
+        self._table_bytes = 0
         """Nodes some candidate's look sees."""
         self.seen = np.zeros(len(m.free_centres), dtype=bool)
         """Free cells the sensor has seen (in range and in line of sight, up to its fan of rays)."""
@@ -370,6 +377,8 @@ class WholePlanSearch:
             for node in self.nodes:
                 self._covered |= lattice.visible(node)
         for _ in range(MORE_VIEWS):
+            if self.added >= ADDED_VIEWS:
+                break
             left = {c: float(b[~self._covered].sum() / b.sum()) for c, b in beliefs.items() if b.sum() > 0}
             if not left or max(left.values()) <= UNCOVERED:
                 break
@@ -383,7 +392,11 @@ class WholePlanSearch:
             options = [int(k) for k in pick if np.isfinite(field_[tuple(lattice.cells[k])])]
             if not options:
                 break
-            best = max(options, key=lambda k: float(weight[lattice.visible(k)].sum()))
+            gains = {k: float(weight[lattice.visible(k)].sum()) for k in options}
+            best = max(options, key=gains.__getitem__)
+            if gains[best] < UNCOVERED * float(weight.sum()):   # a look that sees next to nothing (a narrow sensor)
+                break
+            self.added += 1
             cell = (int(lattice.cells[best, 0]), int(lattice.cells[best, 1]))
             room = self._room_of(lattice.points[best:best + 1])[0]
             self.candidates.append(Candidate(cell, best, agent.grid.point(cell),
@@ -406,10 +419,8 @@ class WholePlanSearch:
     def _forget_tables(self) -> None:
         """Drop the drive tables used longest ago while they hold more than :data:`TABLE_BYTES` (the last one
         used is always kept); a table dropped is made again if it is asked for."""
-        held = sum(t.seen_at.nbytes + t.look.nbytes for t in self._tables.values())
-        while held > TABLE_BYTES and len(self._tables) > 1:
-            dropped = self._tables.pop(next(iter(self._tables)))
-            held -= dropped.seen_at.nbytes + dropped.look.nbytes
+        while self._table_bytes > TABLE_BYTES and len(self._tables) > 1:
+            self._table_bytes -= self._tables.pop(next(iter(self._tables))).nbytes
 
     def choose(self, agent: Agent, binding: Binding, target: str,
                weights: Callable[[str], np.ndarray], also: View | None = None,
@@ -442,9 +453,14 @@ class WholePlanSearch:
             done = 0 if table is None else len(table.length)
             if done < len(self.nodes):
                 more = lattice.drive_table(origin, self.nodes[done:], reveals[done:], hidden)
-                table = more if table is None else DriveTable(np.concatenate([table.seen_at, more.seen_at]),
-                                                              np.concatenate([table.look, more.look]),
-                                                              np.concatenate([table.length, more.length]))
+                if table is not None:
+                    self._table_bytes -= table.nbytes
+                    table = DriveTable(np.concatenate([table.seen_at, more.seen_at]),
+                                       np.concatenate([table.look, more.look]),
+                                       np.concatenate([table.length, more.length]))
+                else:
+                    table = more
+                self._table_bytes += table.nbytes
             assert table is not None
             self._tables[(origin, key)] = table
             self._forget_tables()

@@ -175,3 +175,24 @@ def test_the_next_things_search_is_planned_given_what_the_first_search_saw() -> 
     # the looks that can find the first thing, each a level of its own up to LEVELS of them
     levels = _Later._levels(first, np.asarray([8, 12, 3]))
     assert list(levels) == [7.0, 3.0, 7.0]            # a node the tour never sees: after the whole tour
+
+
+def test_looks_that_saw_next_to_none_of_the_next_thing_share_its_tour_planned_without_them() -> None:
+    # cups over x = 0 .. 200 (1 % at 12, the rest spread at 0 .. 11 and 13 .. 200); the first search saw 12 only.
+    # Taking out 1 % or more replans the cup's tour for that look (one tour per candidate and look); less than
+    # SLIGHT of it is the tour planned with the whole belief, one for every candidate weighed (a narrow sensor's
+    # looks each see a sliver: the tours were ~3,000 a choice on the cottage at fov 1).
+    from seal_cli.sim.policies.completion import SLIGHT, Tour, _Later
+
+    lattice = _corridor(range(13))
+    nodes = [0, 7, 12]
+    seen_at = np.full(13, np.inf)
+    seen_at[12] = 3.0
+    first = Tour(seen_at, np.where(np.isfinite(seen_at), np.arange(13), -1), (2,), 12, 5.0)
+    for share, replanned in ((SLIGHT / 2, False), (2 * SLIGHT, True)):
+        cup = np.full(13, (1 - share) / 12)
+        cup[12] = share
+        later = _Later(_tables(lattice, nodes), nodes, lattice.distance, {"cup": cup}, [Target("cup")])
+        later._search("cup", np.asarray([8]), np.asarray([0]))
+        later._search("cup", np.asarray([8]), np.asarray([0]), first, np.asarray([4.0]))
+        assert len(later.tours) == (2 if replanned else 1), share

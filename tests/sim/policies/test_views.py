@@ -165,3 +165,69 @@ def test_the_drive_tables_kept_are_bounded_the_oldest_dropped_and_made_again(mon
     assert held <= 3 * size and 1 <= len(bounded._tables) <= 3
     assert unbounded is not None and chosen is not None
     assert (chosen.view.cell, chosen.expected_m) == (unbounded.view.cell, unbounded.expected_m)
+
+
+def test_a_narrow_sensor_adds_a_bounded_number_of_views_and_none_that_sees_next_to_nothing(library: Library) -> None:
+    """A sensor with a 1° field of view sees a sliver from each node: the candidates never covered the belief, and
+    every choice added MORE_VIEWS views (50 → 65 candidates in nine choices of "stir the cup" on the apartment, each
+    a row of every drive table and a term of every greedy tour's step; one run took over ten minutes). Views that see
+    less than UNCOVERED of the belief left are not added, and never more than ADDED_VIEWS over a run."""
+    import dataclasses
+
+    from seal_cli.sim.policies.whole_plan import ADDED_VIEWS, MORE_VIEWS
+
+    def grown(fov: float, choices: int) -> tuple[int, int]:
+        m = cottage()
+        m = dataclasses.replace(m, sensor=dataclasses.replace(m.sensor, fov_deg=fov))
+        agent = Agent(scene_from_map(m, library), library, make_policy("prior_optimal"), rng=np.random.default_rng(0))
+        search = WholePlanSearch(agent)
+        before = len(search.candidates)
+        rng = np.random.default_rng(1)
+        for _ in range(choices):          # beliefs spread over the house, as a search left at a loss has them
+            search._cover(agent, {"spoon": rng.random(search.lattice.size), "cup": rng.random(search.lattice.size)})
+        return before, len(search.candidates) - before
+
+    _, wide = grown(360.0, 12)
+    _, narrow = grown(1.0, 12)
+    assert wide <= ADDED_VIEWS
+    assert narrow <= ADDED_VIEWS < 12 * MORE_VIEWS
+
+
+def test_a_narrow_sensor_s_run_weighs_a_bounded_number_of_views(monkeypatch: pytest.MonkeyPatch,
+                                                                library: Library) -> None:
+    """End to end on the cottage with a 1° sensor: the candidates stop growing at ADDED_VIEWS (set to MORE_VIEWS here:
+    reached at the first choice) but for the one view another rule asks to weigh at each choice, and each greedy
+    tour takes at most MAX_TOUR views (before: three views more at every choice, with no end)."""
+    import dataclasses
+
+    import seal_cli.sim.policies.completion as completion
+    import seal_cli.sim.policies.whole_plan as whole_plan
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.agent import Budget
+
+    counts: list[tuple[int, int]] = []
+    tours = [0]
+    real_tour, real_choose = completion.greedy_tour, whole_plan.WholePlanSearch.choose
+
+    def tour(*a, **k):  # type: ignore[no-untyped-def]
+        t = real_tour(*a, **k)
+        tours[0] += len(t.views)
+        assert len(t.views) <= completion.MAX_TOUR
+        return t
+
+    def choose(self, *a, **k):  # type: ignore[no-untyped-def]
+        out = real_choose(self, *a, **k)
+        counts.append((len(self.candidates), self.added))
+        return out
+
+    monkeypatch.setattr(completion, "greedy_tour", tour)
+    monkeypatch.setattr(whole_plan.WholePlanSearch, "choose", choose)
+    monkeypatch.setattr(whole_plan, "ADDED_VIEWS", whole_plan.MORE_VIEWS)     # the cap reached at the first choice
+    m = cottage()
+    m = dataclasses.replace(m, sensor=dataclasses.replace(m.sensor, fov_deg=1.0))
+    run_on_map(m, "stir the cup", library, make_policy("sefm"), rng=np.random.default_rng(0), budget=Budget(steps=10))
+    assert all(added <= whole_plan.ADDED_VIEWS for _, added in counts)
+    capped = [n for n, added in counts if added == whole_plan.ADDED_VIEWS]
+    assert len(capped) >= 2                                    # it went on choosing once the views were all added
+    assert all(b - a <= 1 for a, b in zip(capped, capped[1:], strict=False))   # then only the view asked to weigh
+    assert tours[0] > 0
