@@ -508,12 +508,12 @@ def hostile16_cases() -> Iterator[Case]:
     yield from _bag_names()
 
 
-def _bag_names() -> Iterator[Case]:
-    """import-bag of a bag whose name holds a line break or a byte that is not UTF-8: the file reads back."""
+def _sample_bag() -> bytes | None:
+    """The bytes of a small MCAP bag of a robot in the apartment (20 scans), or None without the ros extra."""
     try:
         import rosbags  # noqa: F401
     except ImportError:
-        return
+        return None
     import tempfile
     from pathlib import Path
 
@@ -523,7 +523,14 @@ def _bag_names() -> Iterator[Case]:
 
     with tempfile.TemporaryDirectory() as folder:
         write_run(Path(folder) / "run.mcap", load_map(map_path("apartment")), 20, 5, np.random.default_rng(0))
-        bag = (Path(folder) / "run.mcap").read_bytes()
+        return (Path(folder) / "run.mcap").read_bytes()
+
+
+def _bag_names() -> Iterator[Case]:
+    """import-bag of a bag whose name holds a line break or a byte that is not UTF-8: the file reads back."""
+    bag = _sample_bag()
+    if bag is None:
+        return
     for name in ("r\nx: [.mcap", "r\u2028x.mcap", "r\udcffz.mcap"):
         yield Case(f"A import-bag of a bag called {name!r}: the file reads back", ("import-bag", name, "-o", "o.yaml"),
                    ((name, bag),), codes=(0,), keep=(name,), whole=("o.yaml",))
@@ -589,20 +596,9 @@ def hostile17_cases() -> Iterator[Case]:
 
 def _misnamed_bags() -> Iterator[Case]:
     """import-bag of an MCAP bag named ``.bag``, ``.db3`` or with no suffix: told to rename it."""
-    try:
-        import rosbags  # noqa: F401
-    except ImportError:
+    bag = _sample_bag()
+    if bag is None:
         return
-    import tempfile
-    from pathlib import Path
-
-    from seal_cli.bench.ros import write_run
-    from seal_cli.maps.formats.map_server import load_map
-    from seal_cli.resources import map_path
-
-    with tempfile.TemporaryDirectory() as folder:
-        write_run(Path(folder) / "run.mcap", load_map(map_path("apartment")), 20, 5, np.random.default_rng(0))
-        bag = (Path(folder) / "run.mcap").read_bytes()
     for name in ("run.bag", "run.db3", "run"):
         yield Case(f"A import-bag of an MCAP bag named {name}", ("import-bag", name, "-o", "o.yaml"), ((name, bag),),
                    codes=(1,), keep=(name,), absent=("o.yaml",),
