@@ -1462,3 +1462,38 @@ def test_a_phrase_said_first_before_a_dash_or_with_a_participle_is_taken_up(
 def test_a_semicolon_after_a_phrase_said_first_is_no_comma(library: Library) -> None:
     with pytest.raises(CommandError):
         parse_command("the mug on the shelf; bring it to me", library)   # as before: only a dash is read so
+
+
+# -- words23 ---------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize(("text", "theme", "asked"), [
+    ("is the fridge open or closed?", "the fridge", "open or closed"),
+    ("tell me whether the lamp is on or off", "the lamp", "on or off"),
+    ("check if the back door is locked or not", "the back door", "locked or not"),
+    ("tell me whether the guy is sitting or standing", "the guy", "sitting or standing"),
+])
+def test_a_state_asked_with_its_alternative_is_one_state_asked(
+        text: str, theme: str, asked: str, library: Library) -> None:
+    parse = parse_command(text, library)
+    assert [(f.frame, f.elements["theme"].text, f.asked) for f in parse.frames] == [("LookAt", theme, asked)]
+
+
+@pytest.mark.parametrize(("text", "recipient", "message"), [
+    ("tell Anna whether the guy is sitting or standing", "Anna", "whether the guy is sitting or standing"),
+    ("can you tell the person by the lamp if the taxi is here or still on its way", "the person by the lamp",
+     "if the taxi is here or still on its way"),
+    ("tell grandpa whether dinner is ready or not", "grandpa", "whether dinner is ready or not"),
+])
+def test_whether_a_or_b_told_to_a_person_is_the_message(
+        text: str, recipient: str, message: str, library: Library) -> None:
+    parse = parse_command(text, library)
+    (tell,) = parse.frames
+    assert (tell.frame, tell.elements["recipient"].text, tell.elements["message"].text) == ("Tell", recipient, message)
+
+
+def test_whether_a_or_b_told_leaves_the_next_clause_its_own(library: Library) -> None:
+    assert [f.frame for f in parse_command("tell Anna whether the door is open or shut, then bring me a cup",
+                                           library).frames] == ["Tell", "Bring"]
+    assert frames("ask Ben whether he prefers the red or the blue cup", library)[0][0] == "Tell"
+    (tell,) = parse_command("tell Anna whether the door is open", library).frames     # no "or": read as before
+    assert tell.elements["message"].text == "whether the door is open"

@@ -153,6 +153,7 @@ WORDS: tuple[Rule, ...] = (
     function_words.ONE,
     function_words.THAT_SAID,
     function_words.IF_ASKED,
+    function_words.ALTERNATIVES_TOLD,
     function_words.OUT_OF_THE_HOUSE,
     function_words.HERE,
     function_words.BACK,

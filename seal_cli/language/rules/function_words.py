@@ -111,6 +111,22 @@ def _if_asked(s: State, i: int) -> Match | None:
     return Match(end - i, (words[i].tagged(Tag.WH), s.emit(i + 1, end - i - 1, Tag.SAID).words[0]))
 
 
+def _alternatives_told(s: State, i: int) -> Match | None:
+    """"tell Anna *whether* the guy is sitting or standing", "let the guest know if the taxi is here or still on its
+    way": after the person a verb of saying tells (any unit that says something, not only a verb of asking), a
+    reported question that offers alternatives joined by "or" is what is told, kept whole as a question put to
+    a person is (:data:`IF_ASKED`); read as the command's own clause its "or" joins nothing the grammar knows.
+    Without "or" the told clause is read as before ("tell Anna whether the door is open")."""
+    words = s.words
+    if s.in_np() or not s.speech or s.verb_index < 0 or \
+            s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL) or i + 1 >= len(words):
+        return None
+    end = s.speech_end(i + 1)
+    if end - (i + 1) < 3 or not any(w.lower == "or" for w in words[i + 2:end - 1]):
+        return None
+    return Match(end - i, (words[i].tagged(Tag.WH), s.emit(i + 1, end - i - 1, Tag.SAID).words[0]))
+
+
 def _particle_noun(s: State, i: int) -> Match | None:
     if s.next_lower(i) == "of" and match_phrase(s.words, i, PREPOSITIONS) < 2:
         return s.emit(i, 1, Tag.WORD)                             # "the back of the toilet"
@@ -282,6 +298,11 @@ IF_ASKED = Rule("if and what is asked", _if_asked, (
     Example("ask Raj if he wants tea", "he wants tea", Tag.SAID),
     Example("ask Priya whether she can come to the garage", "she can come to the garage", Tag.SAID),
 ), IFS, "'if'/'whether' after the person a verb of asking asks: the question, kept whole")
+ALTERNATIVES_TOLD = Rule("whether A or B told", _alternatives_told, (
+    Example("tell Anna whether the guy is sitting or standing", "the guy is sitting or standing", Tag.SAID),
+    Example("tell the man at the door if the taxi is here or still on its way",
+            "the taxi is here or still on its way", Tag.SAID),
+), IFS, "'whether/if A or B' after the person a verb of saying tells: the question, kept whole")
 PARTICLE_NOUN = Rule("particle as a noun", _particle_noun, (
     Example("clean the back of the toilet", "back", Tag.WORD),
 ), PARTICLES, "a particle before 'of' is a noun ('the back of')")

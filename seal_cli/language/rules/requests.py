@@ -325,12 +325,19 @@ def _is_state(s: State, low: str) -> bool:
 
 def _state_from(s: State, k: int, end: int) -> int | None:
     """Where the state said from word ``k`` begins, when words ``k .. end`` are adverbs of degree or time
-    ("still") and then one word of state ending the clause at ``end``; else None."""
+    ("still") and then one word of state ending the clause at ``end``, or two joined by "or" ("sitting *or*
+    standing", "open or closed": the alternatives a "whether A or B" asks, one state asked) or one and "or not"
+    ("locked or not"); else None."""
     words = s.words
-    if end - 1 < k or not _is_state(s, words[end - 1].lower) or \
-            words[end - 1].lower in STATE_ADVERBS:
+    last = end - 1
+    if last - 1 >= k and words[last - 1].lower == "or" and words[last].lower == "not":
+        last -= 2                                 # "whether the door is locked *or not*": the state, either way
+    if last < k or not _is_state(s, words[last].lower) or words[last].lower in STATE_ADVERBS:
         return None                              # "is the cup *still* on the table": an adverb, no state of its own
-    q = end - 1
+    q = last
+    if q - 2 >= k and words[q - 1].lower == "or" and _is_state(s, words[q - 2].lower) and \
+            words[q - 2].lower not in STATE_ADVERBS:
+        q -= 2                                    # "sitting or standing": the first alternative begins the state
     while q > k and words[q - 1].lower in STATE_ADVERBS:
         q -= 1
     return q if q == k else None
