@@ -739,6 +739,11 @@ class Evoker:
                 root = self.frames[place[0]].elements[place[1]]
                 return Phrase(self.text[np.start:np.end], root.head, root.cls, root.kind, place, root.quantity,
                               root.plural, span=(np.start, np.end))
+            stated = self.reference.place_stated(np.start)
+            if stated is not None:                  # "Sam wants to go to the kitchen, lead him there"
+                words = [w for w in self.text[stated.start:stated.end].split() if w.lower() not in NP_OPENERS]
+                cls = self.vocabulary.grounded(words, []) if self.vocabulary is not None and words else None
+                return Phrase(self.text[np.start:np.end], noun_lemma(stated.head), cls, span=(np.start, np.end))
         text = self.text[np.start:np.end]
         if np.cut is not None and np.start < np.cut[0] and np.cut[1] < np.end:
             text = f"{self.text[np.start:np.cut[0]].rstrip()} {self.text[np.cut[1]:np.end].lstrip()}"

@@ -29,6 +29,8 @@ __all__ = ["PLACES", "Reference", "back_unplaced"]
 
 
 PLACES = ("goal", "ground", "source")
+_GOAL_PREPOSITIONS = ("to", "into", "onto")
+"""Prepositions of where a motion ends: a place a statement names after one is where a bare "there" goes."""
 """The roles that say where (FrameNet's names)."""
 
 
@@ -128,9 +130,7 @@ class Reference:
         ("*My son Declan* arrives at six; meet him", "*When Ana* arrives, ...", "*The printer*'s jammed, fix
         it"): him/her the latest person named, it the latest thing (one of the element's type first), them/they the
         latest plural, or where a person is wanted the latest person ("when the guest arrives, greet *them*")."""
-        if self._mentions is None:
-            spans = [*self.remarks, *((w.start, w.end) for w in self.words if w.tag == "COND")]
-            self._mentions = sorted((m for a, b in spans for m in mentions(self.text, a, b)), key=lambda m: m.start)
+        self._mentions = self._said()
         pronoun = np.pronoun or ""
         if pronoun in ("them", "they"):              # "*The plants on the balcony*, bring them inside": a plural
             plural = [m for m in self._mentions if m.end <= np.start and m.determined and not m.oblique and
@@ -156,6 +156,37 @@ class Reference:
                        and self.types.is_a(noun_lemma(m.head), type_) is True]
             said = fitting or [m for m in said if m.determined and not m.oblique] or [m for m in said if m.determined]
         return said[-1] if said else None
+
+    def _said(self) -> list[Mention]:
+        """The phrases the statements and conditions of the command name, in order (read once)."""
+        if self._mentions is None:
+            spans = [*self.remarks, *((w.start, w.end) for w in self.words if w.tag == "COND")]
+            self._mentions = sorted((m for a, b in spans for m in mentions(self.text, a, b)), key=lambda m: m.start)
+        return self._mentions
+
+    def place_stated(self, before: int) -> Mention | None:
+        """Where a bare "there" points when no earlier clause names a place: a place the latest statement
+        said before it names ("Sam wants to go *to the kitchen*, lead him there", "the guest needs to get to
+        the bedroom — take her there", "the cups are in the sink, go there"). The last phrase said after a
+        preposition of where a motion ends (``to``, ``into``, ``onto``) wins ("from the hall to *the garage*"),
+        else the last after one of where a thing is (``LOCATED``, ``BESIDE``); never a person or clothing. A
+        condition's place is not taken ("when Ana gets to the door"): no statement said it."""
+        span = max(((a, b) for a, b in self.remarks if b <= before), default=None)
+        if span is None:
+            return None
+        goal: Mention | None = None
+        located: Mention | None = None
+        for m in self._said():
+            if not (span[0] <= m.start and m.end <= span[1]) or not m.oblique or \
+                    self.types.is_a(noun_lemma(m.head), "clothing") is True or \
+                    self.types.is_a(noun_lemma(m.head), "person") is True or m.name:
+                continue
+            prep = " ".join(self.text[span[0]:m.start].lower().split()[-3:])
+            if any(prep == p or prep.endswith(f" {p}") for p in _GOAL_PREPOSITIONS):
+                goal = m
+            elif any(prep == p or prep.endswith(f" {p}") for p in (*LOCATED, *BESIDE)):
+                located = m
+        return goal or located
 
     def place_said(self, said: Mention) -> Mention | None:
         """Where the statement that introduced ``said`` puts it ("*Paris* is in *the bathroom*", "there's a cup

@@ -48,6 +48,8 @@ class Sense:
 
 
 _WHERE = ("ground", "goal", "instrument", "source")
+_POINTED = frozenset(["here", "there", "over here", "over there"])
+"""Place words that point: after the person a frame moves (Guide), where they are led ("take him *there*")."""
 
 PREPOSITION_ROLES: Mapping[str, Sense] = {
     **{p: Sense(("recipient", "goal"), ("goal",)) for p in TO},
@@ -179,6 +181,12 @@ class Roles:
                     self.types.is_a(self.class_or_head(np), frame.element("instrument").type) is True):
                 return None              # "follow the woman *with the umbrella*": it describes her
         elif pp.prep in LOCATIVE:
+            theme_type = frame.elements[0].type if frame.elements else None
+            if pp.prep == "at" and np.kind == "place" and np.head is not None and np.head.tag == "HERE" and \
+                    np.head.lower in _POINTED and "goal" in have and "goal" not in roles and not has_to and \
+                    theme_type is not None and self.types.is_person(theme_type) and \
+                    frame.elements[0].role != "goal":
+                return "goal"            # "lead him *there*", "take the guest here": where the person is led
             person_before = previous is not None and (previous.kind == "person" or (
                 frame.elements and roles.get(frame.elements[0].role) is previous
                 and self.types.is_person(frame.elements[0].type)))

@@ -1497,3 +1497,31 @@ def test_whether_a_or_b_told_leaves_the_next_clause_its_own(library: Library) ->
     assert frames("ask Ben whether he prefers the red or the blue cup", library)[0][0] == "Tell"
     (tell,) = parse_command("tell Anna whether the door is open", library).frames     # no "or": read as before
     assert tell.elements["message"].text == "whether the door is open"
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("Sam wants to go to the kitchen, lead him there", [("Guide", {"theme": "Sam", "goal": "kitchen"})]),
+    ("the guest needs to get to the bedroom — take her there", [("Guide", {"theme": "guest", "goal": "bedroom"})]),
+    ("Jules has to get from the hall to the garage. Guide him there", [("Guide", {"theme": "Jules",
+                                                                                   "goal": "garage"})]),
+    ("the cups are in the sink, go there", [("Go", {"goal": "sink"})]),
+    ("go to the kitchen and guide the guest there", [("Go", {"goal": "kitchen"}),
+                                                     ("Guide", {"theme": "guest", "goal": "kitchen"})]),
+])
+def test_there_is_the_place_a_statement_before_the_command_named(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want
+
+
+def test_a_pointed_place_after_the_person_led_is_where_they_go(library: Library) -> None:
+    (guide,) = parse_command("guide him here", library).frames
+    assert (guide.elements["theme"].text, guide.elements["goal"].text) == ("him", "here")
+    (guide,) = parse_command("take her there", library).frames     # "her" before "there": the pronoun
+    assert (guide.frame, guide.elements["theme"].text, guide.elements["goal"].text) == ("Guide", "her", "there")
+    (place,) = parse_command("put her coat there", library).frames    # before a noun: her coat
+    assert (place.frame, place.elements["theme"].text) == ("Place", "her coat")
+
+
+def test_a_condition_names_no_place_for_there(library: Library) -> None:
+    (greet,) = parse_command("when Ana gets to the door, greet her there", library).frames
+    assert greet.elements["ground"].head == "there"          # where she will be: no statement said it

@@ -227,8 +227,8 @@ def _be(s: State, i: int) -> Match | None:
 
 
 def _possessive(s: State, i: int) -> Match | None:
-    if s.in_np() or s.words[i].lower == "her" and not s.noun_follows(i + 1):
-        return None
+    if s.in_np() or s.words[i].lower == "her" and (not s.noun_follows(i + 1) or s.next_lower(i) in HERE_WORDS):
+        return None                                               # "take *her* there": the pronoun, then where
     return s.emit(i, 1, Tag.POSS)
 
 
@@ -379,7 +379,10 @@ PARTICLE = Rule("particle", _particle, (Example("carry back the mug", "back", Ta
                 "a particle with no verb of its own")
 WH = Rule("wh-word", _wh, (Example("tell me what time it is", "what", Tag.WH),), WH_WORDS, "'what', 'which', ...")
 BE = Rule("be", _be, (Example("tell me what time it is", "is", Tag.BE),), BE_WORDS, "'is', 'are', ...")
-POSSESSIVE = Rule("possessive", _possessive, (Example("bring me my coat", "my", Tag.POSS),), POSSESSIVES,
+POSSESSIVE = Rule("possessive", _possessive, (
+    Example("bring me my coat", "my", Tag.POSS),
+    Example("take her coat there", "her", Tag.POSS),
+), POSSESSIVES,
                   "'my', 'their', 'her' before a noun")
 PARTITIVE = Rule("partitive pronoun", _partitive, (
     Example("pour some into the cup", "some", Tag.PRON),
