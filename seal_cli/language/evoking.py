@@ -414,6 +414,8 @@ class Evoker:
         :meth:`located_ground` does for a place said in the phrase itself."""
         first = frame.elements[0].role if frame.elements else None
         np = roles.get(first) if first is not None else None
+        if isinstance(np, NP):
+            np = self.reference.pointed_person(np) or np     # "... Find that person": looked up as "him"
         role = next((r for r in ("ground", "source") if r in frame.roles), None)
         if not isinstance(np, NP) or np.pronoun is None or role is None or role in elements or \
                 first not in elements or elements[first].refers_to is not None:
@@ -702,6 +704,12 @@ class Evoker:
 
 
     def phrase(self, np: NP, frame: Frame, role: str) -> Phrase:
+        pointed = self.reference.pointed_person(np)
+        if pointed is not None:                     # "Sam is in the hall. Find *that person*": Sam
+            found = self.reference.antecedent(pointed, frame, role)
+            said = self.reference.mentioned(pointed, frame, role) if found is None else None
+            if found is not None and found[2] == "person" or said is not None:
+                return self.phrase(pointed, frame, role)
         if np.pronoun is not None and (np.kind in ("pronoun", "thing") or np.pronoun in ("him", "her", "he", "she")) \
                 and np.pronoun not in ("something", "everything", "anything", "nothing"):
             found = self.reference.antecedent(np, frame, role)

@@ -15,6 +15,7 @@ before (``refers_to``, as (frame index, element)).
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import replace
 
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame
@@ -30,6 +31,8 @@ __all__ = ["PLACES", "Reference", "back_unplaced"]
 
 PLACES = ("goal", "ground", "source")
 _GOAL_PREPOSITIONS = ("to", "into", "onto")
+_POINTING = frozenset(["that", "this"])
+"""Demonstratives that point at a person said before ("find *that* person")."""
 """Prepositions of where a motion ends: a place a statement names after one is where a bare "there" goes."""
 """The roles that say where (FrameNet's names)."""
 
@@ -156,6 +159,19 @@ class Reference:
                        and self.types.is_a(noun_lemma(m.head), type_) is True]
             said = fitting or [m for m in said if m.determined and not m.oblique] or [m for m in said if m.determined]
         return said[-1] if said else None
+
+    def pointed_person(self, np: NP) -> NP | None:
+        """"Find *that person*", "follow this man": a demonstrative and a noun of people, said after a statement or
+        clause that introduced a person, points at that person, as "him" or "them" would (what it stands for is
+        found as a pronoun's is): the phrase as such a pronoun, to look up; None when it is no such phrase. A
+        thing ("that cup") or a phrase with no demonstrative ("the person") is read as said."""
+        if np.pronoun is not None or np.head is None or np.kind != "person" or np.head.tag != "WORD" or \
+                np.conjuncts or np.possessor is not None:
+            return None
+        first = self.text[np.start:np.end].split()[0].lower()
+        if first not in _POINTING or self.types.is_a(noun_lemma(np.head.lower), "person") is not True:
+            return None
+        return replace(np, pronoun="him", kind="pronoun")
 
     def _said(self) -> list[Mention]:
         """The phrases the statements and conditions of the command name, in order (read once)."""

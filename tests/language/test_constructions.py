@@ -1525,3 +1525,21 @@ def test_a_pointed_place_after_the_person_led_is_where_they_go(library: Library)
 def test_a_condition_names_no_place_for_there(library: Library) -> None:
     (greet,) = parse_command("when Ana gets to the door, greet her there", library).frames
     assert greet.elements["ground"].head == "there"          # where she will be: no statement said it
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("Sam is waiting in the hall. Find that person", [("Find", {"theme": "Sam", "ground": "hall"})]),
+    ("my aunt Rosa just arrived, greet this lady", [("Greet", {"theme": "Rosa"})]),
+    ("meet Sam at the door and follow that man", [("Meet", {"theme": "Sam", "ground": "door"}),
+                                                  ("Follow", {"theme": "Sam"})]),
+    ("Sam is in the hall. Tell that person a joke", [("Tell", {"message": "joke", "recipient": "Sam"})]),
+])
+def test_that_and_a_person_noun_points_at_the_person_said_before(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want
+
+
+def test_that_and_a_noun_with_no_person_before_is_read_as_said(library: Library) -> None:
+    assert frames("find that person", library) == [("Find", {"theme": "person"})]
+    assert frames("the cup is on the table, bring me that cup", library)[0][1]["theme"] == "cup"
+    assert frames("Sam is in the hall. Find the person", library) == [("Find", {"theme": "person"})]
