@@ -62,6 +62,7 @@ from seal_cli.language.english import (
     VOCATIVES,
     WH_WORDS,
     WHERE_QUESTIONS,
+    is_room_word,
 )
 from seal_cli.language.morphology import gerund_lemma, is_adjective, is_adverb, is_plural, noun_lemma, verb_lemma
 from seal_cli.language.rule import Match
@@ -829,14 +830,22 @@ class State:
 
     def _departure_end(self, k: int) -> int:
         """Where "leave", "go" ends at ``k`` when it ends the sentence: a verb of moving (a unit of a frame with a
-        goal) said of the robot with nothing after it ("turn off the stove before you *leave*") is its going away,
-        the time of the command, no frame (0: none). Not "after you put it away" (an object), "when you get
-        there, ..." (:meth:`_arrival_end`)."""
+        goal) said of the robot with nothing after it ("turn off the stove before you *leave*"), or with only the
+        room it leaves, after a unit that puts its object somewhere ("when you leave *the kitchen*": a room is no
+        thing to put anywhere; "when you reach the kitchen" goes there, a clause), is its going away, the time of
+        the command, no frame (0: none). Not "after you put it away" (an object), "when you get there, ..."
+        (:meth:`_arrival_end`)."""
         words = self.words
         found = self.verb_at(k) if k < len(words) else None
         if found is None or found[2] is not None or found[0] not in self.lexicon.goals:
             return 0
         after = k + found[1]
+        room = after + (after < len(words) and words[after].lower in NP_OPENERS)
+        stop = next((m for m in range(room, len(words)) if words[m].lower in END_MARKS or
+                     words[m].lower in ("now", "please", ",")), len(words))
+        if room > after and stop > room and found[0] in self.lexicon.puts and \
+                is_room_word([w.lower for w in words[room:stop]]):
+            after = stop                        # "... when you leave *the kitchen*": a room is put nowhere, left
         while after < len(words) and words[after].lower in ("now", "please"):
             after += 1
         return after if after == len(words) or words[after].lower in END_MARKS else 0

@@ -1543,3 +1543,20 @@ def test_that_and_a_noun_with_no_person_before_is_read_as_said(library: Library)
     assert frames("find that person", library) == [("Find", {"theme": "person"})]
     assert frames("the cup is on the table, bring me that cup", library)[0][1]["theme"] == "cup"
     assert frames("Sam is in the hall. Find the person", library) == [("Find", {"theme": "person"})]
+
+
+@pytest.mark.parametrize(("text", "frame", "condition"), [
+    ("turn off the stove when you leave the kitchen", "ToggleOff", "when you leave the kitchen"),
+    ("switch off the lights before you leave the living room", "ToggleOff", "before you leave the living room"),
+    ("close the window when you exit the bedroom.", "Close", "when you exit the bedroom"),
+])
+def test_leaving_a_room_in_a_clause_of_the_robot_is_when_not_a_frame(
+        text: str, frame: str, condition: str, library: Library) -> None:
+    parse = parse_command(text, library)
+    assert [(f.frame, f.condition) for f in parse.frames] == [(frame, condition)]
+
+
+def test_leaving_a_thing_somewhere_in_a_clause_of_the_robot_stays_a_frame(library: Library) -> None:
+    assert [f.frame for f in parse_command("turn off the tv before you leave the cup in the sink",
+                                           library).frames] == ["ToggleOff", "Place"]
+    assert [f.frame for f in parse_command("leave the kitchen", library).frames] == ["Place"]   # a command: as before

@@ -164,6 +164,8 @@ UNTIL_PLACE = Rule("until a place", _until_place, (
 ), frozenset(["until", "till"]), "'until' a noun phrase after a verb of motion: how far")
 SUBORDINATE_INSIDE = Rule("subordinate clause", _subordinate, (
     Example("turn off the stove when the water boils", "when the water boils", Tag.COND),
+    Example("turn off the stove before you leave", "before you leave", Tag.COND),
+    Example("turn off the stove when you leave the kitchen", "when you leave the kitchen", Tag.COND),
 ), SUB_FIRST | REL_FIRST, "a subordinate clause inside a clause: a condition, or a clause of the robot's own")
 RELATIVE = Rule("relative clause", _relative, (
     Example("bring me the glass that I was drinking from", "that I was drinking from", Tag.REL),
