@@ -461,7 +461,7 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
         value = person_value(phrase.text or phrase.head, phrase.head, {p.key: p for p in things.map.people})
         things.people.add(value)    # only the map's people are of class person: another is searched for by name
         if value not in (SPEAKER, "person") and value not in things.roles_said:
-            things.called.setdefault(value, person_name(things.map, value, phrase.text or phrase.head))
+            things.called.setdefault(value, person_name(things.map, value, _person_words(phrase)))
         return (value,)
     if category in ("message", "question") or not phrase.text:
         return None
@@ -1058,9 +1058,19 @@ def parse_to_plan(text: str, library: Library, vocabulary: Any = None) -> Parse:
                       lambda said: parse_command(said, library, vocabulary))
 
 
+def _person_words(phrase: Phrase) -> str:
+    """The words a phrase names its person by: its text, or its head when the parser found the person said before
+    ("Sam is in the kitchen, find *him*", "... find *that person*": Sam, not "Him")."""
+    text = phrase.text or phrase.head
+    return text if phrase.head.lower() in text.lower().split() else phrase.head
+
+
 def _place_words(phrase: Phrase) -> str:
     """The words a phrase names its place by: its text, or its head when a word said names a place by another
-    name (the parser's "see Helen *out*": the exit)."""
+    name (the parser's "see Helen *out*": the exit) or a bare "there" stands for a place a statement named ("Sam
+    wants to go to the kitchen, lead him *there*": its head is the kitchen)."""
     if phrase.kind == "place" and phrase.head and phrase.text and phrase.head.lower() not in phrase.text.lower():
+        return phrase.head
+    if phrase.text and phrase.text.lower() in THERE and phrase.head and phrase.head.lower() not in THERE:
         return phrase.head
     return phrase.text or ""

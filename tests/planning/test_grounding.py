@@ -258,6 +258,18 @@ def test_a_role_nobody_has_is_warned_about_like_a_name_nobody_has(library: Libra
                               "for them",)
 
 
+def test_a_person_or_place_the_parser_found_said_before_is_grounded_by_what_it_stands_for(library: Library) -> None:
+    """"him" and a bare "there" standing for a person and a place a statement named (words22, words23) are
+    grounded by their heads: the plan leads Sam to the kitchen and warns of no one "called Him"."""
+    plan = plan_text("Sam wants to go to the kitchen, lead him there", library, map=load_map(APARTMENT))
+    assert str(plan.steps[-1]) == "Guide(theme=sam, goal=kitchen)"
+    assert plan.warnings == ("nobody on the map apartment is called Sam: seal run will search the whole house "
+                             "for them",)
+    found = plan_text("Sam is in the kitchen, find him", library, map=load_map(APARTMENT))
+    assert str(found.steps[-1]) == "Find(theme=sam, ground=kitchen)"
+    assert "called Sam" in found.warnings[0]
+
+
 def test_a_thing_on_no_place_in_the_room_is_there_already_for_plan_and_run_alike(library: Library) -> None:
     """One rule (``planning.plan.already_so``) for ``seal plan`` (the map's state) and ``seal run`` (what the
     robot sees): the clinic's umbrella lies on the waiting room's floor, on no place."""
