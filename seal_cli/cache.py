@@ -25,6 +25,10 @@ import contextlib
 import mmap
 import os
 from pathlib import Path
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from typing import BinaryIO
 
 __all__ = ["digest", "folder", "read", "read_mapped", "write"]
 
@@ -91,31 +95,27 @@ MAX_READ = 64 * 2**20
 one seal wrote, and is made again (replaced)."""
 
 
-def _open(path: Path) -> int | None:
-    """A file descriptor of ``path`` if it is a regular file, else None: a FIFO, a device or a folder at an entry's
-    name (a careless ``mkfifo``, a link to ``/dev/zero`` in a shared cache) is no entry. Opened without blocking, so
-    that a FIFO cannot stop seal waiting for a writer (``seal parse`` hung on one)."""
-    import stat
+def _open(path: Path) -> BinaryIO | None:
+    """``path`` opened if it is a regular file, else None: a FIFO, a device or a folder at an entry's name (a careless
+    ``mkfifo``, a link to ``/dev/zero`` in a shared cache) is no entry, and a FIFO cannot stop seal waiting for a
+    writer (``seal parse`` hung on one: :func:`~seal_cli.fileio.open_regular` does not block)."""
+    from seal_cli.fileio import open_regular
 
     try:
-        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
+        return open_regular(path)
     except (OSError, ValueError):
         return None
-    if stat.S_ISREG(os.fstat(fd).st_mode):
-        return fd
-    os.close(fd)
-    return None
 
 
 def read(name: str, stamp: str) -> bytes | None:
     """The payload of the entry ``name`` if it is whole and of this stamp; None otherwise (none,
     stale, corrupt, unreadable, not a regular file, larger than :data:`MAX_READ`, or the cache off)."""
     where = folder()
-    fd = None if where is None else _open(where / name)
-    if fd is None:
+    handle = None if where is None else _open(where / name)
+    if handle is None:
         return None
     try:
-        with os.fdopen(fd, "rb") as handle:
+        with handle:
             data = handle.read(MAX_READ + 1)
     except OSError:
         return None
@@ -129,11 +129,11 @@ def read_mapped(name: str, stamp: str) -> tuple[mmap.mmap, int] | None:
     """The entry ``name`` mapped into memory (read only) and where its payload starts, if it is whole
     and of this stamp; None otherwise. For large payloads looked up in place, never read whole."""
     where = folder()
-    fd = None if where is None else _open(where / name)
-    if fd is None:
+    handle = None if where is None else _open(where / name)
+    if handle is None:
         return None
     try:
-        with os.fdopen(fd, "rb") as handle:
+        with handle:
             mapped = mmap.mmap(handle.fileno(), 0, access=mmap.ACCESS_READ)
     except (OSError, ValueError):  # no such entry, or an empty file (mmap refuses length 0)
         return None

@@ -29,7 +29,7 @@ from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from types import TracebackType
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, BinaryIO
 
 from seal_cli.errors import SealError, Where
 
@@ -38,7 +38,7 @@ if TYPE_CHECKING:
 
 __all__ = ["LOADER", "MAX_IMAGE_BYTES", "MAX_INPUT_BYTES", "YAML_BREAKS", "Outputs", "atomic_output",
            "atomic_write_text", "clean_up_on_signals", "compose_documents", "compose_yaml", "decode", "interrupted",
-           "note_interrupts", "read_bytes", "read_json", "read_json_lines", "read_text", "read_yaml",
+           "note_interrupts", "open_regular", "read_bytes", "read_json", "read_json_lines", "read_text", "read_yaml",
            "remove_temporaries", "split_lines", "stream_lines", "yaml_problem"]
 
 if TYPE_CHECKING:
@@ -118,6 +118,17 @@ def _regular(path: Path, what: str) -> os.stat_result:
     return info
 
 
+def open_regular(path: str | Path) -> BinaryIO | None:
+    """``path`` opened for reading if it is a regular file, else None (a FIFO, a device, a folder); opened without
+    blocking, so that a FIFO or a "regular" file that waits for data (/proc/kmsg) cannot hang seal. An OSError if
+    it cannot be opened at all."""
+    fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
+    if stat.S_ISREG(os.fstat(fd).st_mode):
+        return os.fdopen(fd, "rb")
+    os.close(fd)
+    return None
+
+
 def read_bytes(path: str | Path, limit: int = MAX_INPUT_BYTES, what: str = "file") -> bytes:
     """A regular file's bytes, at most ``limit`` of them; anything else is a SealError naming it."""
     path = Path(path)
@@ -126,10 +137,11 @@ def read_bytes(path: str | Path, limit: int = MAX_INPUT_BYTES, what: str = "file
     if info.st_size > limit:
         size, most = _sizes(info.st_size, limit)
         raise SealError(f"this {what} is {size}; seal reads {what}s of at most {most}", where)
-    try:  # without blocking: a "regular" file that waits for data (/proc/kmsg) must not hang seal
-        with os.fdopen(os.open(path, os.O_RDONLY | os.O_NONBLOCK), "rb") as handle:
-            if not stat.S_ISREG(os.fstat(handle.fileno()).st_mode):  # swapped for a FIFO since the stat
-                raise SealError(f"cannot read this {what}: it is not a regular file", where)
+    try:
+        handle = open_regular(path)
+        if handle is None:  # swapped for a FIFO since the stat
+            raise SealError(f"cannot read this {what}: it is not a regular file", where)
+        with handle:
             data = handle.read(limit + 1)
     except BlockingIOError:
         raise SealError(f"cannot read this {what}: it has nothing to read yet (a file that waits for data, "
