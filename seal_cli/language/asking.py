@@ -21,7 +21,16 @@ from __future__ import annotations
 
 from collections.abc import Collection, Sequence
 
-from seal_cli.language.english import BE_WORDS, DETERMINERS, NP_OPENERS, POSSESSIVES, PREPOSITIONS, PRONOUNS, WH_WORDS
+from seal_cli.language.english import (
+    BE_WORDS,
+    DETERMINERS,
+    MODALS,
+    NP_OPENERS,
+    POSSESSIVES,
+    PREPOSITIONS,
+    PRONOUNS,
+    WH_WORDS,
+)
 from seal_cli.language.morphology import in_dictionary, participles, verb_lemma
 
 __all__ = ["ASKING", "IFS", "direct_question", "person_subject"]
@@ -36,7 +45,6 @@ IFS = frozenset(["if", "whether"])
 _FUNCTION_WORDS = NP_OPENERS | PRONOUNS | WH_WORDS | BE_WORDS | frozenset(PREPOSITIONS) | {"i", "there", "here"}
 _BE_FOR_YOU = {"is": "are", "am": "are", "are": "are", "was": "were", "were": "were", "'s": "are"}
 _BE = frozenset(_BE_FOR_YOU)
-_MODALS = frozenset(["can", "could", "will", "would", "shall", "should", "may", "might", "must"])
 _PERFECT = {"has": "have", "have": "have", "had": "had"}
 _DO = {"does": "do", "do": "do", "did": "did"}
 _SUBJECT_PRONOUNS = frozenset(["he", "she", "they"])
@@ -83,7 +91,7 @@ def direct_question(words: Sequence[str], asked: Sequence[str] = ()) -> str | No
     low = verb.lower()
     if low in _BE:
         front, tail = (_BE_FOR_YOU[low] if you else low), after
-    elif low in _MODALS:
+    elif low in MODALS:
         front, tail = low, after
     elif low in _PERFECT and after and after[0].lower() in participles(verb_lemma(after[0]) or after[0]):
         front, tail = (_PERFECT[low] if you else low), after
@@ -106,7 +114,7 @@ def _subject_size(words: Sequence[str]) -> int:
     if words[0].lower() in DETERMINERS | POSSESSIVES:
         for k in range(1, len(words)):
             low = words[k].lower()
-            if low in _BE or low in _MODALS or low in _PERFECT or low in _DO or \
+            if low in _BE or low in MODALS or low in _PERFECT or low in _DO or \
                     k > 1 and verb_lemma(low) is not None and low.endswith("s"):
                 return k
         return 0

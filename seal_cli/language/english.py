@@ -233,6 +233,8 @@ TIME_ASKED = (frozenset(["when", "whenever", "if", "once"]), frozenset(["get", "
 """The robot's time asked for in a clause of the robot's own: "*when you get a sec*", "*if you have a spare
 minute*", "*once you find the time*": a subordinator, "you", a verb of having, a few words of quantity, a
 measure of time or a chance. Politeness like ``POLITE_FORMULAE``, not a condition (and no Pick of "a sec")."""
+MODALS = frozenset(["can", "could", "will", "would", "shall", "should", "may", "might", "must"])
+"""The modal verbs: in a question one goes before the subject ("she *can* come": "*can* you come?")."""
 NOMINATIVE = frozenset(["i", "he", "she", "we", "they"])
 """Subject pronouns: never an object, so after a noun one starts a clause ("the book *I* left on the sofa")."""
 RELATIVES = frozenset(["that", "which", "who", "whom", "whose"])
