@@ -1049,13 +1049,14 @@ def naming_done(done: Sequence[str], text: str) -> Iterator[None]:
 def parse_to_plan(text: str, library: Library, vocabulary: Any = None) -> Parse:
     """A command as the planner reads it: parsed as said aloud (:func:`~seal_cli.planning.grounding.spoken`),
     each question told to someone found out first (:func:`~seal_cli.planning.questions.told_first`:
-    "tell Ben where the spoon is" finds the spoon, then tells Ben where it is)."""
+    "tell Ben where the spoon is" finds the spoon, then tells Ben where it is), and a question of whether any
+    thing at all is somewhere asked as what is there (:func:`~seal_cli.planning.questions.anything_there`)."""
     from seal_cli.language.parser import parse_command
     from seal_cli.planning.grounding import spoken
-    from seal_cli.planning.questions import told_first
+    from seal_cli.planning.questions import anything_there, told_first
 
-    return told_first(parse_command(spoken(text), library, vocabulary),
-                      lambda said: parse_command(said, library, vocabulary))
+    return anything_there(told_first(parse_command(spoken(text), library, vocabulary),
+                                     lambda said: parse_command(said, library, vocabulary)))
 
 
 def _person_words(phrase: Phrase) -> str:

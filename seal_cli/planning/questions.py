@@ -49,8 +49,8 @@ from seal_cli.language.english import CHECK_WHETHER, WH_WORDS
 from seal_cli.language.values import Evoked, Parse, Phrase
 from seal_cli.planning.grounding import MapNames, words_of
 
-__all__ = ["FACTS", "KINDS", "STATE_WORDS", "Question", "asks_whether", "fact_asked", "looking", "put_to_person",
-           "read_questions", "reports", "told_first"]
+__all__ = ["ANY_THING", "FACTS", "KINDS", "STATE_WORDS", "Question", "anything_there", "asks_whether", "fact_asked",
+           "looking", "put_to_person", "read_questions", "reports", "told_first"]
 
 KINDS = ("where", "whether", "how_many", "what", "state", "fact", "report", "asked")
 
@@ -77,6 +77,10 @@ ASKING_WHETHER = frozenset({"is", "are", "was", "were"})
 ASKING_WHETHER_SHORT = frozenset({"any", "anyone", "anybody", "anything", "someone", "somebody", "something"})
 """A Find whose words start with one of these, its "is there" unsaid, asks whether too ("*anyone* in the
 bathroom?", "*any* milk left in the fridge?"). English, not any corpus's."""
+
+ANY_THING = frozenset({"anything", "something"})
+"""The words by which a question of whether some thing is somewhere names no kind of thing ("is there *anything* in
+the fridge?"): it asks what is there. English, not any corpus's (people: "anyone", "someone" are sought as people)."""
 
 ASKING_WHAT = {"what": "thing", "whats": "thing", "who": "person", "whos": "person"}
 """The first word of a message that asks what (or who) is somewhere, and what it asks for."""
@@ -254,6 +258,21 @@ def read_questions(parse: Parse, commanded: Sequence[Binding], names: MapNames |
             questions.update((b, question) for b in commanded[start:k])
             answered = answered or question.kind not in ("report", "asked")
     return questions
+
+
+def anything_there(parse: Parse) -> Parse:
+    """The parse with each question of whether any thing at all is somewhere ("is there *anything* in the fridge?",
+    "is there something on the table?") read as what it asks: what is there, a Find with its ground and no theme,
+    as "look in the fridge" is (``what``). A thing of no kind cannot be searched for; the place can be looked at."""
+    def asked(evoked: Evoked) -> Evoked:
+        theme = evoked.elements.get("theme")
+        if theme is None or "ground" not in evoked.elements or theme.conjuncts or theme.head.lower() not in ANY_THING \
+                or not asks_whether(parse.text, evoked):
+            return evoked
+        return replace(evoked, elements={r: p for r, p in evoked.elements.items() if r != "theme"})
+
+    frames = tuple(asked(f) for f in parse.frames)
+    return parse if frames == parse.frames else replace(parse, frames=frames)
 
 
 def told_first(parse: Parse, parse_text: Callable[[str], Parse]) -> Parse:
