@@ -148,7 +148,8 @@ class Agent:
                  search_end: float | None = None,
                  put_away: Mapping[Binding, Callable[[str | None], str | None]] | None = None,
                  put_back: Iterable[Binding] = (), told: Mapping[str, Sequence[str]] | None = None,
-                 names: Mapping[str, str] | None = None, heed_sources: bool = False) -> None:
+                 names: Mapping[str, str] | None = None, heed_sources: bool = False,
+                 absent_said: bool = False) -> None:
         self.scene = scene
         self.world = scene.world
         self.grid = scene.grid
@@ -198,6 +199,9 @@ class Agent:
         :func:`~seal_cli.sefm.relations.said_where`): looked at first (the search's beliefs are conditioned on
         it; the whole-house search for what nothing else places starts there)."""
         self.heed_sources = heed_sources
+        self.absent_said = absent_said
+        """Whether a kind of thing the map names none of is said absent at once (:meth:`absent_from_map`; ``seal
+        run``) rather than searched for in the whole house (the sweep, which a scene built by hand exercises)."""
         """Whether to read :attr:`told` off the first plan it makes (``seal run``: the robot knows no object, so a
         frame's source can only be the speaker's word); off where a frame's source is the grounded truth (the
         benchmarks' scenes), and where :attr:`told` is given."""
@@ -700,9 +704,14 @@ class Agent:
                 self.missed.add(place)
                 item = self.world.items[place]
                 on = "in" if self.world.hollow(item) else "on"
-                self.say("search", f"no {self.said(value)} {on} {place}, where the command said it was; "
-                         "looks elsewhere", target=value)
+                self.say("search", f"no {self.said(value)} {on} {place}, where the command said it was"
+                         f"{self.elsewhere(value)}", target=value)
                 self.withdraw(value, place)
+
+    def elsewhere(self, value: str) -> str:
+        """What a miss where the command said adds: "; looks elsewhere", unless the map names no such thing and the
+        run says so next (:meth:`absent_from_map`), rather than look anywhere else."""
+        return "" if self.absent_said and self.absent_from_map(value) is not None else "; looks elsewhere"
 
     def withdraw(self, value: str, where: str) -> None:
         """Take back the command's word that a thing of this kind is at ``where`` (a room, a place, a thing), once
@@ -756,7 +765,7 @@ class Agent:
                                  f"the command said it was ({', '.join(shut)} left shut: the map keeps no {kind} "
                                  f"there){seen}; searches on", Reason.NOT_FOUND, value)
                 return Fatal(False, f"no {self.said(value)} in the {room.name.replace('_', ' ')}, where the command "
-                             f"said it was{seen}; looks elsewhere", Reason.NOT_FOUND, value)
+                             f"said it was{seen}{self.elsewhere(value)}", Reason.NOT_FOUND, value)
             self.look_into(place, value, binding, role, f"goes to {place}")
             if place not in self.opened:  # out of reach, or it would not open: not tried again
                 self.unreachable.add(place)
@@ -1027,7 +1036,7 @@ class Agent:
         if said and not self.world.items[said[0]].movable and self.sweep is None:   # the command's place first
             self.look_where_said_at(said[0], value, binding, role)
             return None
-        if self.sweep is None and (absent := self.absent_from_map(value)) is not None:
+        if self.sweep is None and self.absent_said and (absent := self.absent_from_map(value)) is not None:
             return Fatal(False, absent, Reason.NOT_FOUND, value)
         if self.sweep is None:      # a room said and looked all over already is not looked over again
             done = [r for r in self.scene.map.rooms if (self.class_of(value), r.name) in self.missed_rooms]
