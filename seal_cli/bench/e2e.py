@@ -201,10 +201,13 @@ def held(the_map: Any, holding: str) -> Any:
 
 
 def plan_steps(case: Case, the_map: Any, library: Any) -> tuple[bool, str]:
-    """Whether the case plans right, and what it planned (or the refusal)."""
+    """Whether the case plans right, and what it planned (or the refusal); with the robot holding what the case says
+    it holds."""
     from seal_cli.pipeline import plan as plan_text
 
     try:
+        if case.holding is not None:
+            the_map = held(the_map, case.holding)
         found = plan_text(case.text, library, map=the_map)
     except SealError as error:
         return case.refused is not None and case.refused in error.message, f"refused: {error.message}"
