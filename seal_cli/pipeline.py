@@ -172,19 +172,56 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
         problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=m.known(),
                                 vocabulary=vocabulary)
     questions = read_questions(parses[-1], problem.commanded, MapNames(m, library.taxonomy))
+    condition, check = _condition_check(parses[-1], library, vocabulary, m)
+    if check is not None:
+        questions |= read_questions(check[0], check[1].commanded, MapNames(m, library.taxonomy))
     kept = {b: where_kept(library.taxonomy, m, problem.state.class_of(b.elements["theme"])) for b in problem.put_away}
     kept |= {b: back_where_taken for b in problem.put_back}
     agent = Agent(scene_from_map(m, library), library, policy, rng=rng, budget=budget, observers=observers,
-                  classes=problem.state.classes, sweeper=lambda: make_policy("coverage"), questions=questions,
+                  classes={**(check[1].state.classes if check else {}), **problem.state.classes},
+                  sweeper=lambda: make_policy("coverage"), questions=questions,
                   clock=clock, search_end=search_end, put_away=kept, put_back=problem.put_back,
-                  heed_sources=True, names=problem.names)
+                  heed_sources=True, names=problem.names, absent_said=True)
     executed = [b for p in parses[:-1] for b in build_problem(p, library, map=m.known()).commanded]
-    warnings = [*problem.warnings, *unchecked_conditions(parses[-1])]
+    warnings = [*problem.warnings, *(unchecked_conditions(parses[-1]) if check is None else [])]
     for warning in warnings:
         agent.say("warn", f"warning: {warning}")
     notes = inferred_steps(parses[-1])
     for note in notes:
         agent.say("warn", note)
+    if check is not None and condition is not None:
+        agent.say("plan", f"checks first whether {condition.said.split(None, 1)[1]}: {condition.question}")
+        first = agent.run(check[1].commanded, done=executed)
+        holds = first.completed and (first.answer or "").lower().startswith("yes")
+        if not holds:
+            if first.completed:
+                acts = " or ".join(dict.fromkeys(f.lexical_unit for f in parses[-1].frames))
+                first.reason = (f"'{condition.said}' does not hold ({first.answer or first.reason}), so it did not "
+                                f"{acts} (the command's condition)")
+                agent.say("done", first.reason)
+            first.warnings = [*warnings, *notes]
+            return agent, first
+        agent.told = {}         # what the check's question said of where things are is no word of the command
     result = agent.run(problem.commanded, done=executed)
     result.warnings = [*warnings, *notes]
     return agent, result
+
+
+def _condition_check(parse: Parse, library: Library, vocabulary: Any, m: Map) -> tuple[Any, Any]:
+    """The condition every frame of a parse is said under, when the robot checks it by looking
+    (:mod:`seal_cli.planning.conditions`: "if Tom is in the garage"), with its question's parse and problem (one
+    Find: "is Tom in the garage?"); (None, None) when there is none, or the question plans to anything else."""
+    from seal_cli.errors import SealError
+    from seal_cli.planning.conditions import checked_condition
+
+    condition = checked_condition(parse.frames)
+    if condition is None:
+        return None, None
+    try:
+        asked = parse_to_plan(condition.question, library, vocabulary)
+        check = build_problem(asked, library, map=m.known(), vocabulary=vocabulary)
+    except SealError:
+        return None, None
+    if [b.frame.name for b in check.commanded] != ["Find"] or "ground" not in check.commanded[0].elements:
+        return None, None
+    return condition, (asked, check)

@@ -9,7 +9,9 @@ map file, by its path from the cases file), and what must come of it:
   ``refused``: words the refusal must contain (a room the map lacks, a fixed thing to pick up);
 - ``run``: how ``seal run`` must end: ``done`` (every frame executed) or ``not_found`` (the
   robot searched and the thing is not in the house); ``answer``: words the answer must contain;
-  ``says``: words a line the run prints must contain ("put spoon_1 in sink_1").
+  ``says``: words a line the run prints must contain ("put spoon_1 in sink_1");
+- ``holding``: the class of what the robot holds at the start (as ``seal run --holding``), for a command
+  to a robot that already has something in hand.
 
 A case is **plan-right** when the plan is exactly the expected one (or the refusal says what
 it must), and **run-completed** when the run ends as expected. The cases are data
@@ -21,7 +23,7 @@ from __future__ import annotations
 import tempfile
 from collections.abc import Callable, Iterable, Sequence
 from concurrent.futures import ProcessPoolExecutor
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, replace
 from pathlib import Path
 from typing import Any
 
@@ -48,6 +50,8 @@ class Case:
     file: str | None = None
     """The map file, for a map that is not one of :data:`MAPS` (a shipped map, or a user's own)."""
     says: str | None = None
+    holding: str | None = None
+    """The class of what the robot holds at the start (None: what the map's robot holds)."""
 
     def __post_init__(self) -> None:
         if (self.plan is None) == (self.refused is None):
@@ -73,7 +77,7 @@ class Verdict:
 
 SHIPPED = ("e2e.yaml", "e2e_houses.yaml", "e2e_cafe.yaml", "e2e_clinic.yaml", "e2e_users9.yaml", "e2e_users10.yaml",
            "e2e_e2e11.yaml", "e2e_users11.yaml", "e2e_users12.yaml", "e2e_users13.yaml",
-           "e2e_users14.yaml", "e2e_users15.yaml", "e2e_users16.yaml")
+           "e2e_users14.yaml", "e2e_users15.yaml", "e2e_users16.yaml", "e2e_users17.yaml")
 """The shipped suite's files in ``suites/``: the apartment and the AWS house; the example houses; the cafe;
 the clinic (and the users' trials on every house)."""
 
@@ -85,7 +89,7 @@ def load_cases(path: str | Path | None = None) -> list[Case]:
     return _load(Path(path))
 
 
-KEYS = ("map", "text", "plan", "refused", "run", "answer", "says")
+KEYS = ("map", "text", "plan", "refused", "run", "answer", "says", "holding")
 """The keys of a case in a suite file."""
 
 
@@ -141,7 +145,8 @@ def _load(path: Path) -> list[Case]:
             reader.problem(error.message, fields["map"][1])
             continue
         cases.append(Case(values["map"], values["text"], values.get("plan"), values.get("refused"),
-                          values.get("run"), values.get("answer"), where, values.get("says")))
+                          values.get("run"), values.get("answer"), where, values.get("says"),
+                          values.get("holding")))
     if reader.problems:
         raise reader.problems[0] if len(reader.problems) == 1 else SealErrors(reader.problems)
     return cases
@@ -186,11 +191,23 @@ def _aws(folder: Path, data: Path) -> Path:
                      places=AWS_PLACES, people=AWS_PEOPLE)
 
 
+def held(the_map: Any, holding: str) -> Any:
+    """The map with its robot holding a thing of the class ``holding`` (refused, as ``seal run --holding`` is,
+    when the robot cannot hold one)."""
+    from seal_cli.maps.model import Robot
+
+    the_map.check_holding(holding)
+    return replace(the_map, robot=Robot(the_map.robot.pose, holding))
+
+
 def plan_steps(case: Case, the_map: Any, library: Any) -> tuple[bool, str]:
-    """Whether the case plans right, and what it planned (or the refusal)."""
+    """Whether the case plans right, and what it planned (or the refusal); with the robot holding what the case says
+    it holds."""
     from seal_cli.pipeline import plan as plan_text
 
     try:
+        if case.holding is not None:
+            the_map = held(the_map, case.holding)
         found = plan_text(case.text, library, map=the_map)
     except SealError as error:
         return case.refused is not None and case.refused in error.message, f"refused: {error.message}"
@@ -210,6 +227,11 @@ def judge(case: Case, map_file: str, seed: int, particles: int, framelib: Sequen
 
     library = load_library(framelib)
     the_map = load_map(map_file)
+    if case.holding is not None:
+        try:
+            the_map = held(the_map, case.holding)
+        except SealError as error:
+            return Verdict(case.map, case.text, False, f"refused: {error.message}")
     right, got = plan_steps(case, the_map, library)
     if case.run is None or case.refused is not None:
         return Verdict(case.map, case.text, right, got)

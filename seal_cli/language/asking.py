@@ -33,7 +33,7 @@ from seal_cli.language.english import (
 )
 from seal_cli.language.morphology import in_dictionary, participles, verb_lemma
 
-__all__ = ["ASKING", "IFS", "direct_question", "person_subject"]
+__all__ = ["ASKING", "IFS", "WH_ASKED", "direct_question", "person_subject"]
 
 ASKING = frozenset(["ask", "inquire", "enquire", "query"])
 """Verbs of asking: after the person asked, "if"/"whether" and a clause is the question put to them ("*ask* Raj if
@@ -72,7 +72,10 @@ def person_subject(words: Sequence[str], people: Collection[str], things: Collec
 def direct_question(words: Sequence[str], asked: Sequence[str] = ()) -> str | None:
     """The direct question an indirect one asks (``words``: "if", "he", "wants", "tea"), put to the person asked
     (``asked``: the words that name them, "Raj"), ending in "?"; None when the words are no indirect yes/no
-    question (no "if"/"whether" first, or no verb after a subject)."""
+    question (no "if"/"whether" first, or no verb after a subject). A question word first asks a wh-question
+    (:func:`_wh_question`: "where the stapler is": "where is the stapler?")."""
+    if words and words[0].lower() in WH_ASKED:
+        return _wh_question(words, asked)
     if len(words) < 3 or words[0].lower() not in IFS:
         return None
     rest = list(words[1:])
@@ -106,6 +109,55 @@ def direct_question(words: Sequence[str], asked: Sequence[str] = ()) -> str | No
         tail = [lemma, *after]
     said = [front, *subject, *(_shifted(tail, _SAME_PERSON.get(rest[0].lower(), _ANY_PERSON)) if you else tail)]
     return " ".join(said).rstrip(" ?.!") + "?"
+
+
+WH_ASKED = frozenset(["what", "which", "who", "whom", "whose", "where", "when", "why", "how"])
+"""Question words that start an indirect wh-question ("ask Maria *where* the stapler is")."""
+_WH_NOUN = frozenset(["which", "whose", "what"])
+"""Question words that may take a noun after them ("*which* mug is hers", "*what* time it is")."""
+
+
+def _wh_question(words: Sequence[str], asked: Sequence[str] = ()) -> str | None:
+    """The direct question an indirect wh-question asks, by English's rules: the question word (with "many"/"much"
+    and its noun after "how", or a noun after "which"/"whose"/"what") stays first, then the subject and its verb
+    are inverted as in a yes/no question ("where *the stapler is*": "where is the stapler?", "what *he wants*":
+    "what do you want?", "how many cups *she needs*": "how many cups do you need?"); a question word that is itself
+    the subject keeps the order ("who *is* at the door?", "what happened?"). None when no clause follows."""
+    k = 1
+    low = [w.lower() for w in words]
+    if low[0] == "how" and len(words) > 2 and low[1] in ("many", "much"):
+        k = 2 + _noun_size(low[2:])
+    elif low[0] in _WH_NOUN and len(words) > 2 and _noun_size(low[1:]) and not _verb_first(low[1:]):
+        k = 1 + _noun_size(low[1:])
+    front, rest = list(words[:k]), list(words[k:])
+    if not rest:
+        return None
+    if _verb_first([w.lower() for w in rest]):      # the question word is the subject: the order stays
+        said = [*front, *rest]
+        return " ".join(said).rstrip(" ?.!") + "?"
+    inverted = direct_question(["if", *rest], asked)
+    return None if inverted is None else f"{' '.join(front)} {inverted}"
+
+
+def _verb_first(words: Sequence[str]) -> bool:
+    """Whether a clause starts with its verb (no subject before it): a form of "be", "do", "have", a modal, or a
+    verb form no dictionary lists as anything else the subject could be ("happened")."""
+    if not words:
+        return False
+    w = words[0]
+    if w in _BE or w in MODALS or w in _PERFECT or w in _DO:
+        return True
+    return w not in _FUNCTION_WORDS and verb_lemma(w) not in (None, w) and w.endswith(("ed", "s"))
+
+
+def _noun_size(words: Sequence[str]) -> int:
+    """How many words a noun after a question word takes ("cups", "red mug"): up to the first function word or
+    verb form of a clause (a subject pronoun, a determiner, "be", a modal)."""
+    k = 0
+    while k < len(words) and words[k] not in _FUNCTION_WORDS and words[k] not in MODALS and words[k] not in _DO \
+            and words[k] not in _PERFECT:
+        k += 1
+    return k if k < len(words) else max(0, k - 1)
 
 
 def _subject_size(words: Sequence[str]) -> int:

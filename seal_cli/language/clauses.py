@@ -27,7 +27,7 @@ from dataclasses import replace
 
 from seal_cli.frames.library import Library
 from seal_cli.frames.taxonomy import class_key
-from seal_cli.language.asking import ASKING, IFS, direct_question, person_subject
+from seal_cli.language.asking import ASKING, IFS, WH_ASKED, direct_question, person_subject
 from seal_cli.language.element_types import Types
 from seal_cli.language.english import FIRST_LATER
 from seal_cli.language.lexicon import CommandError, Word
@@ -41,6 +41,10 @@ __all__ = ["LIGHT_VERBS", "Clauses"]
 
 LIGHT_VERBS = ("give",)
 """Verbs that lend their clause to an action noun: "give the sauce a stir" is stirring it."""
+
+
+_OBJECT_PERSONS = frozenset(["me", "him", "her", "them", "us"])
+"""Object pronouns that can be the person a thing is given to ("give *him* the keys and *her* the coat")."""
 
 
 class Clauses:
@@ -80,11 +84,12 @@ class Clauses:
         split = self.gapping(items)
         if split is not None:
             gapped = items[split + 1:]
+            raw_and = items[split]
             items = items[:split]
             said_end = end_of(items[-1])
             # "bring *me* the spoon from the kitchen and the cup from ...": the person told is the second's too
             told = items[0] if len(items) > 1 and isinstance(items[0], NP) and items[0].kind == "person" and \
-                isinstance(items[1], NP) else None
+                isinstance(items[1], NP) and not self.to_each([*items, raw_and, *gapped]) else None
             if any(isinstance(x, PP) and x.prep in FROM for x in gapped):   # "... from the sink *on the table*"
                 items += [replace(x, np=_copy(x.np)) for x in gapped if isinstance(x, PP) and x.prep not in FROM
                           and not any(isinstance(y, PP) and y.prep == x.prep for y in items)]
@@ -159,8 +164,8 @@ class Clauses:
         spans = [(m.start() + message.start, m.end() + message.start)
                  for m in re.finditer(r"[^\s,;:?!.]+", self.text[message.start:message.end])]
         words = [self.text[a:b] for a, b in spans]
-        if not words or words[0].lower() not in IFS:
-            return
+        if not words or words[0].lower() not in IFS | WH_ASKED or words[0].lower() in WH_ASKED and not objects:
+            return                      # a wh-question is put to a person said ("ask Maria where the stapler is")
         if not objects:
             size = person_subject(words[1:], self.types.taxonomy.members("person") | {"person"}, ())
             if size:
@@ -260,6 +265,8 @@ class Clauses:
         the shelf to the sink")."""
         if len(items) < 5 or not isinstance(items[0], NP):
             return None
+        if Clauses.to_each(items):
+            return 2
         for k in range(2, len(items) - 2):
             word, before = items[k], items[k - 1]
             rest = items[k + 2:]
@@ -271,6 +278,21 @@ class Clauses:
                     before.np.pronoun is None:     # "a bowl with a spoon in it and a knife ...": contents
                 return k
         return None
+
+    @staticmethod
+    def to_each(items: list[Item]) -> bool:
+        """Whether the phrases are a person and a thing, "and", another person and thing: "bring *Anna the cup*
+        and *Ben the spoon*", "give him the keys and her the coat" — each thing to its own person, the second
+        clause's verb left out (the coordination pass had joined "the cup and Ben" and lost the spoon)."""
+        def person(x: Item) -> bool:
+            return isinstance(x, NP) and (x.kind == "person" or x.kind == "pronoun" and
+                                          (x.pronoun or "").lower() in _OBJECT_PERSONS)
+
+        def thing(x: Item) -> bool:
+            return isinstance(x, NP) and x.kind == "thing"
+
+        return len(items) >= 5 and person(items[0]) and thing(items[1]) and isinstance(items[2], Word) and \
+            items[2].tag == "AND_NP" and items[2].lower == "and" and person(items[3]) and thing(items[4])
 
     def said(self, verb: Word, objects: list[NP], items: list[Item]) -> NP | None:
         """What a verb of saying says when it is a clause without a wh-word: "tell him *dinner is

@@ -751,7 +751,8 @@ class Evoker:
             if stated is not None:                  # "Sam wants to go to the kitchen, lead him there"
                 words = [w for w in self.text[stated.start:stated.end].split() if w.lower() not in NP_OPENERS]
                 cls = self.vocabulary.grounded(words, []) if self.vocabulary is not None and words else None
-                return Phrase(self.text[np.start:np.end], noun_lemma(stated.head), cls, span=(np.start, np.end))
+                head = " ".join([*words[:-1], noun_lemma(stated.head)]) if words else noun_lemma(stated.head)
+                return Phrase(self.text[np.start:np.end], head, cls, span=(np.start, np.end))
         text = self.text[np.start:np.end]
         if np.cut is not None and np.start < np.cut[0] and np.cut[1] < np.end:
             text = f"{self.text[np.start:np.cut[0]].rstrip()} {self.text[np.cut[1]:np.end].lstrip()}"

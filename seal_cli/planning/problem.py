@@ -18,7 +18,8 @@ frame whose pronoun refers to them ("find two apples and put them in the fridge"
 **On a map** (:mod:`seal_cli.planning.grounding`) a phrase names the map's room, place or person
 its words call ("the couch in the living room" → ``sofa_2``), "me" the speaker; a room or a fixed
 thing the map lacks is refused. A value of a class no prior, object or place of the map names is
-a *warning* (``Problem.warnings``): the robot will have to search the whole house for it. A frame
+a *warning* (``Problem.warnings``): ``seal run`` says it has none without searching the house (the
+robot's perception knows the map's classes only), unless a class the map names is a kind of it. A frame
 whose element is only counted (Count) takes the class once, however many things the phrase says.
 
 **Fixed things.** A room, or a class of the library's ``fixed`` category (furniture, appliances),
@@ -268,6 +269,24 @@ def _default(frame: Frame, element: Any, evoked: Any, things: Things, text: str)
     raise SealError(f"{frame.name} needs a {element.type} as its {element.role} (a {element.default} unless one "
                     f"is said), and the {things.map.name} has none; its places are {places}",
                     Where(None, 1, span[0] + 1) if span else None, source_line=text if span else None)
+
+
+def _goal_not_source(evoked: Evoked, values: Mapping[str, tuple[str, ...]], things: Things, text: str) -> None:
+    """Refuse a frame that takes a thing to the very place the command says it is ("there's a cup in the family
+    room, bring it *there*": there is the family room): what the user wants done is not said, and the robot does
+    not guess ("here" is another command). Not "put it back" (where it was taken from, on purpose)."""
+    goal, source = evoked.elements.get("goal"), evoked.elements.get("source")
+    if (goal is None or source is None or goal.default or source.default or things.map is None
+            or len(values.get("goal", ())) != 1 or values.get("goal") != values.get("source")):
+        return
+    theme = evoked.elements.get("theme")
+    where = values["goal"][0]
+    shown = f"the {where.replace('_', ' ')}" if things.map.room_id(where) is not None else where
+    what = f"the {theme.head}" if theme is not None and theme.head else "the thing"
+    told = (f"{goal.text!r} is {shown}, where the command says {what} is" if (goal.text or "").lower() in THERE
+            else f"the command takes it from {shown} to {shown}")
+    raise _located(f"{what} is already in {shown}: {told}; say where to take it (here, to someone, or another "
+                   "place)", goal, text)
 
 
 def _located(message: str, phrase: Phrase | None, text: str) -> SealError:
@@ -677,6 +696,8 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         if _looked_at_where_it_stands(frame, values, things):       # "check on Ben": no picking Ben up
             frame = looking(frame)
         _check_types(frame, values, evoked.elements, things, parse.text)
+        if not placed_back:
+            _goal_not_source(evoked, values, things, parse.text)
         kept = {} if placed_back else _put_away(frame, evoked, values, things, parse.text)
         if not kept and not placed_back:
             _unsaid_goal(frame, evoked, values, things, parse.text)
@@ -1006,7 +1027,10 @@ def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:
                                         "the whole house for them", None)
             elif cls not in known and cls not in unknown:    # said once, where it is first looked for
                 ground = binding.elements.get("ground")
-                where = f"look for it in {ground}" if ground and role != "ground" else "search the whole house for it"
+                kinds = any(things.taxonomy.is_a(k, cls) is True for k in known)    # "a drink": a kind of it
+                where = f"look for it in {ground}" if ground and role != "ground" else \
+                    "search the whole house for it" if kinds or m.robot.holding == cls else \
+                    "say so without searching the house"
                 unknown.add(cls)
                 warnings.setdefault(f"the map {m.name} knows nothing of {cls} (no prior, object or place names "
                                     f"it): seal run will {where}", None)

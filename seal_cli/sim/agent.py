@@ -148,7 +148,8 @@ class Agent:
                  search_end: float | None = None,
                  put_away: Mapping[Binding, Callable[[str | None], str | None]] | None = None,
                  put_back: Iterable[Binding] = (), told: Mapping[str, Sequence[str]] | None = None,
-                 names: Mapping[str, str] | None = None, heed_sources: bool = False) -> None:
+                 names: Mapping[str, str] | None = None, heed_sources: bool = False,
+                 absent_said: bool = False) -> None:
         self.scene = scene
         self.world = scene.world
         self.grid = scene.grid
@@ -198,6 +199,9 @@ class Agent:
         :func:`~seal_cli.sefm.relations.said_where`): looked at first (the search's beliefs are conditioned on
         it; the whole-house search for what nothing else places starts there)."""
         self.heed_sources = heed_sources
+        self.absent_said = absent_said
+        """Whether a kind of thing the map names none of is said absent at once (:meth:`absent_from_map`; ``seal
+        run``) rather than searched for in the whole house (the sweep, which a scene built by hand exercises)."""
         """Whether to read :attr:`told` off the first plan it makes (``seal run``: the robot knows no object, so a
         frame's source can only be the speaker's word); off where a frame's source is the grounded truth (the
         benchmarks' scenes), and where :attr:`told` is given."""
@@ -700,9 +704,14 @@ class Agent:
                 self.missed.add(place)
                 item = self.world.items[place]
                 on = "in" if self.world.hollow(item) else "on"
-                self.say("search", f"no {self.said(value)} {on} {place}, where the command said it was; "
-                         "looks elsewhere", target=value)
+                self.say("search", f"no {self.said(value)} {on} {place}, where the command said it was"
+                         f"{self.elsewhere(value)}", target=value)
                 self.withdraw(value, place)
+
+    def elsewhere(self, value: str) -> str:
+        """What a miss where the command said adds: "; looks elsewhere", unless the map names no such thing and the
+        run says so next (:meth:`absent_from_map`), rather than look anywhere else."""
+        return "" if self.absent_said and self.absent_from_map(value) is not None else "; looks elsewhere"
 
     def withdraw(self, value: str, where: str) -> None:
         """Take back the command's word that a thing of this kind is at ``where`` (a room, a place, a thing), once
@@ -756,7 +765,7 @@ class Agent:
                                  f"the command said it was ({', '.join(shut)} left shut: the map keeps no {kind} "
                                  f"there){seen}; searches on", Reason.NOT_FOUND, value)
                 return Fatal(False, f"no {self.said(value)} in the {room.name.replace('_', ' ')}, where the command "
-                             f"said it was{seen}; looks elsewhere", Reason.NOT_FOUND, value)
+                             f"said it was{seen}{self.elsewhere(value)}", Reason.NOT_FOUND, value)
             self.look_into(place, value, binding, role, f"goes to {place}")
             if place not in self.opened:  # out of reach, or it would not open: not tried again
                 self.unreachable.add(place)
@@ -1027,6 +1036,8 @@ class Agent:
         if said and not self.world.items[said[0]].movable and self.sweep is None:   # the command's place first
             self.look_where_said_at(said[0], value, binding, role)
             return None
+        if self.sweep is None and self.absent_said and (absent := self.absent_from_map(value)) is not None:
+            return Fatal(False, absent, Reason.NOT_FOUND, value)
         if self.sweep is None:      # a room said and looked all over already is not looked over again
             done = [r for r in self.scene.map.rooms if (self.class_of(value), r.name) in self.missed_rooms]
             rooms = [r for r in self.scene.map.rooms if r not in done]
@@ -1048,6 +1059,29 @@ class Agent:
         if looked.reason is Reason.BUDGET:
             return Fatal(False, looked.message, Reason.BUDGET)
         return None
+
+    def absent_from_map(self, value: str) -> str | None:
+        """Why a thing need not be searched for at all: the map names no such thing — no prior, object or place
+        of it, nor of a kind of it — and the robot's perception knows the map's classes only
+        (:attr:`Scene.vocabulary`, the classes present), so a whole-house search could not end otherwise. Said
+        at once, with what the map has of its kind (:meth:`Taxonomy.kin <seal_cli.frames.taxonomy.Taxonomy.kin>`:
+        "bring me a cup" on a map with mugs), the user's next word. None when it may be there: the map names
+        it or a kind of it, the scene knows no classes, or it is someone (a person is searched for by name)."""
+        known = [class_key(c) for c in self.scene.vocabulary]
+        cls = self.class_of(value)
+        taxonomy = self.library.taxonomy
+        if not known or cls in known or self._sought_person(value) or class_key(value) in self.names or \
+                any(taxonomy.is_a(k, cls) is True for k in known):
+            return None
+        m = self.scene.map
+        said = f"no {self.said(value)} found: the {m.name.replace('_', ' ')} map names none (no prior, object or " \
+               "place of one), so the robot did not search the house"
+        kin = taxonomy.kin(cls)
+        things = {class_key(o.cls) for o in m.objects} | {class_key(c) for c in m.priors}
+        alike = sorted(k for k in things if kin is not None and k in kin[1])
+        if kin is not None and alike:
+            said += f"; of its kind ({kin[0]}) the map has: {', '.join(k.replace('_', ' ') for k in alike)}"
+        return said
 
     def _drive_into(self, region: Any, field_: np.ndarray) -> float:
         """Metres to the nearest free cell of a region (inf when none can be reached)."""
@@ -1596,11 +1630,16 @@ class Agent:
 
     def ask(self, binding: Binding) -> Outcome:
         """Put a question to the person (``recipient``; "ask Raj if he wants tea"): the message's name as the question
-        the parser made of it ("do you want tea?"), narrated as asked of them."""
+        the parser made of it ("do you want tea?"), narrated as asked of them. The simulator's people do not speak,
+        so what the robot brings back to the speaker (the run's answer) says plainly that the person gave none
+        ("Raj gave no answer (...)"), rather than leaving the speaker to wonder what was said."""
         asked = str(binding.elements.get("message", "")).replace("_", " ").strip()
         person = binding.elements.get("recipient")
         whom = f" {person}" if person is not None and person != SPEAKER else ""
-        return self._act_words("say", [binding.elements.get("message", asked)], f'asked{whom} "{asked}?"')
+        outcome = self._act_words("say", [binding.elements.get("message", asked)], f'asked{whom} "{asked}?"')
+        if outcome.ok and whom:
+            self.answer(f'{person} gave no answer to "{asked}?" (the simulator\'s people do not speak)')
+        return outcome
 
     def in_words(self, text: str) -> str:
         """An answer as said to a person, not printed for the speaker's record: a thing's or place's id as its

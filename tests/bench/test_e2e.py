@@ -49,3 +49,23 @@ def test_every_case_is_checked_and_the_file_must_hold_a_list_of_cases(tmp_path: 
         (tmp_path / "e.yaml").write_text(text)
         with pytest.raises(SealError, match=r"e\.yaml(:\d+:\d+)?: (an end-to-end suite|unknown key)"):
             load_cases(tmp_path / "e.yaml")
+
+
+def test_a_case_may_say_what_the_robot_holds_at_the_start(tmp_path: Path) -> None:
+    """``holding``: the class in the robot's hand at the start, as ``seal run --holding``; a class it cannot hold
+    is the case's refusal, not a crash."""
+    from seal_cli.bench.e2e import judge
+    from seal_cli.resources import map_path
+
+    suite = tmp_path / "suite.yaml"
+    suite.write_text('cases:\n'
+                     '  - {map: apartment, holding: cup, text: "put it on the dining table", '
+                     'plan: ["Place(theme=cup, goal=dining_table_1)"]}\n'
+                     '  - {map: apartment, holding: fridge, text: "put it on the dining table", '
+                     'plan: ["Place(theme=fridge, goal=dining_table_1)"]}\n')
+    held, fixed = load_cases(suite)
+    assert held.holding == "cup"
+    verdict = judge(held, str(map_path("apartment")), 0, 50, None)
+    assert verdict.plan_right, verdict.got
+    refused = judge(fixed, str(map_path("apartment")), 0, 50, None)
+    assert not refused.plan_right and refused.got.startswith("refused: --holding 'fridge'")

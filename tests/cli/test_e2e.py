@@ -66,13 +66,16 @@ def test_questions_are_answered() -> None:
     assert elsewhere["completed"] and elsewhere["answer"] == "no: Ben is in the bedroom at (-7.00, 3.00)"
 
 
-def test_a_kind_the_map_knows_nothing_of_is_warned_about_and_searched_for() -> None:
+def test_a_kind_the_map_knows_nothing_of_is_warned_about_and_said_absent_at_once() -> None:
+    """The apartment names no bowl: the robot's perception knows the map's classes only, so the run says so before
+    it moves (e2e20; it searched the whole house before, to the same end)."""
     report = run_json("put the apple in the bowl", "--max-steps", "40")
     assert not report["completed"] and report["warnings"] == [
-        "the map apartment knows nothing of bowl (no prior, object or place names it): seal run will search the "
-        "whole house for it"]
-    assert report["why"] in ("budget", "not_found")
-    assert any("searches the whole house for bowl" in r["text"] for r in report["records"])
+        "the map apartment knows nothing of bowl (no prior, object or place names it): seal run will say so "
+        "without searching the house"]
+    assert report["why"] == "not_found" and report["reason"].startswith(
+        "no bowl found: the apartment map names none (no prior, object or place of one)")
+    assert not any("searches the whole house" in r["text"] for r in report["records"])
 
 
 def test_what_the_map_lacks_is_refused_before_anything_moves() -> None:
@@ -176,18 +179,23 @@ def test_bench_e2e_runs_cases_on_a_users_own_map_file(tmp_path: Path) -> None:
 
 
 def test_a_whole_house_search_reads_as_one_line_a_room_and_ends_in_one_sentence() -> None:
+    """Someone nobody placed is searched for in the whole house ("find Sam"; a thing the map names none of, such
+    as "my keys" on the apartment, is said absent at once since e2e20)."""
     from seal_cli.maps.formats.map_server import load_map
     from seal_cli.resources import map_path
 
-    report = run_json("find my keys")
+    report = run_json("find Sam")
     rooms = [r.name for r in load_map(map_path("apartment")).rooms]
     said = [r for r in report["records"] if not r.get("detail")]     # what the narration prints
     lines = [r["text"] for r in report["records"] if r["kind"] == "search"]
-    assert report["why"] == "not_found" and report["answer"].startswith(
-        "searched the whole house: no key (looked all over 5 rooms; into fridge_1, microwave_1)")
-    per_room = [t for t in lines if t.startswith("searches the whole house for key: looks all over the ")]
+    assert report["why"] == "not_found" and report["reason"].startswith(
+        "searched the whole house: no Sam (looked all over 5 rooms")
+    per_room = [t for t in lines if t.startswith("searches the whole house for Sam: looks all over the ")]
     assert sorted(t.rsplit("the ", 1)[1].replace(" ", "_") for t in per_room) == sorted(rooms)   # each room once
     assert len(said) < 40 and report["path_m"] < 60.0      # not the old 0.25 m frontier steps (~100 lines, 77 m)
+    keys = run_json("find my keys")
+    assert keys["why"] == "not_found" and keys["path_m"] == 0.0 and keys["answer"].startswith("no key found: the "
+                                                                                             "apartment map names none")
 
 
 def truth(map_file: str | Path = "apartment") -> list[tuple[str, tuple[float, float], str | None]]:
@@ -415,12 +423,13 @@ def test_a_question_put_to_a_person_is_asked_of_them() -> None:
     assert acts[-1] == 'asked Raj "do you want tea?"'
 
 
-def test_a_thing_not_in_the_house_ends_naming_what_it_saw_of_its_kind() -> None:
-    """"bring me a cup" on the bungalow, which has a mug and no cup: the search ends saying so, and names the mug
-    (and the kettle: the taxonomy's containers) it saw, without taking either for a cup."""
+def test_a_thing_not_in_the_house_ends_naming_what_the_map_has_of_its_kind() -> None:
+    """"bring me a cup" on the bungalow, which has a mug and no cup: the run says at once that the map names no
+    cup, and names the mug and the kettle (the taxonomy's containers the map has), without taking either for a
+    cup (e2e20; it searched the whole house before, 62.39 m, and named the mug it saw)."""
     result = runner.invoke(app, ["run", "--map", "bungalow", "bring me a cup", *FAST])
     report = json.loads(result.stdout)
-    assert result.exit_code == 1 and report["why"] == "not_found"
-    assert report["reason"].startswith("searched the whole house: no cup (")
-    assert "; of its kind (container) it saw: mug_1 is on coffee_table_1 in the living room" in report["reason"]
+    assert result.exit_code == 1 and report["why"] == "not_found" and report["path_m"] == 0.0
+    assert report["reason"].startswith("no cup found: the bungalow map names none")
+    assert report["reason"].endswith("; of its kind (container) the map has: kettle, mug")
     assert not any(r["text"].startswith("picked up") for r in report["records"])

@@ -71,3 +71,26 @@ def test_questions_of_things_and_places_are_not_asked_of_anyone(library: Library
     frames = parse_command(text, library).frames
     assert frames[0].frame == frame
     assert all(not f.elements.get("message") or not f.elements["message"].head.endswith("?") for f in frames)
+
+
+@pytest.mark.parametrize(("said", "question"), [
+    ("where the stapler is", "where is the stapler?"),
+    ("what he wants", "what do you want?"),
+    ("what she wants for dinner", "what do you want for dinner?"),
+    ("when she is coming", "when are you coming?"),
+    ("why the door is open", "why is the door open?"),
+    ("how many cups she needs", "how many cups do you need?"),
+    ("who is at the door", "who is at the door?"),          # the question word is the subject: the order stays
+    ("which mug is hers", "which mug is hers?"),
+    ("where is the stapler", "where is the stapler?"),      # already direct
+])
+def test_a_wh_question_is_put_as_the_person_hears_it(said: str, question: str) -> None:
+    assert direct_question(said.split(), ["Maria"]) == question
+
+
+def test_ask_a_person_a_wh_question_puts_it_to_them(library: Library) -> None:
+    """"ask Maria where the stapler is" was Find(stapler), then Tell of "where the stapler is": the robot looked
+    for the stapler itself instead of asking Maria."""
+    (tell,) = parse_command("ask Maria where the stapler is", library).frames
+    assert (tell.frame, tell.elements["message"].head, tell.elements["recipient"].head) == \
+        ("Tell", "where is the stapler?", "Maria")

@@ -164,3 +164,15 @@ def test_a_thing_cut_where_it_lies_in_a_container_leaves_its_pieces_there(librar
 ])
 def test_no_pieces_are_put_where_nothing_is_cut_in_a_container(library: Library, text: str) -> None:
     assert len(_frames(text, library)) == 1
+
+
+@pytest.mark.parametrize(("text", "pairs"), [
+    ("bring Anna the cup and Ben the spoon", [("cup", "Anna"), ("spoon", "Ben")]),
+    ("give Tom the hammer and Priya the book", [("hammer", "Tom"), ("book", "Priya")]),
+    ("bring Anna the cup and the spoon", [("cup", "Anna")]),          # one person: one frame, the things joined
+])
+def test_each_thing_to_its_own_person(library: Library, text: str, pairs: list[tuple[str, str]]) -> None:
+    """"bring Anna the cup and Ben the spoon": a person and a thing, "and", another person and thing is a second
+    clause with its verb left out (it was one Bring of "the cup and Ben", the spoon lost)."""
+    frames = parse_command(text, library).frames
+    assert [(f.elements["theme"].head, f.elements["recipient"].head) for f in frames] == pairs

@@ -446,3 +446,36 @@ def test_a_thing_handed_over_is_taken_back_for_a_later_frame(library: Library) -
     assert texts.index("handed mug_1 to me") < texts.index("took mug_1 back from me") < texts.index(
         "put mug_1 in bathroom_sink_1")
     assert agent.world.items["mug_1"].parent == "bathroom_sink_1"
+
+
+@pytest.mark.parametrize(("text", "said"), [
+    ("bring me a cup", "no cup found: the bungalow map names none (no prior, object or place of one), so the robot "
+                       "did not search the house; of its kind (container) the map has: kettle, mug"),
+    ("bring me the unicorn", "no unicorn found: the bungalow map names none (no prior, object or place of one), so "
+                             "the robot did not search the house"),
+])
+def test_a_thing_the_map_names_none_of_is_said_at_once(library: Library, text: str, said: str) -> None:
+    """The robot's perception knows the map's classes only, so a whole-house search for a cup on the bungalow (no
+    prior, object or place of one) could only end in "no cup": it drove 62.39 m for that before (e2e20). It says so
+    before moving, with the kinds of the map like it; a person nobody placed is still searched for."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    _, result = pipeline.run_on_map(load_map("bungalow"), text, library, make_policy("sefm", 50),
+                                    rng=np.random.default_rng(0))
+    assert not result.completed and result.why.value == "not_found"
+    assert result.reason == said and result.path_m == 0.0
+    assert result.warnings[0].endswith("seal run will say so without searching the house")
+
+
+def test_a_person_asked_gives_no_answer_and_the_run_says_so(library: Library) -> None:
+    """The simulator's people do not speak: "ask Raj if he wants tea" asks, and the run's answer (what the
+    speaker is told) says plainly that Raj gave none, instead of ending silent."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    agent, result = pipeline.run_on_map(load_map("bungalow"), "ask Raj if he wants tea", library,
+                                        make_policy("oracle"), rng=np.random.default_rng(0))
+    assert result.completed
+    assert any(r.text == 'asked Raj "do you want tea?"' for r in agent.records)
+    assert result.answer == 'Raj gave no answer to "do you want tea?" (the simulator\'s people do not speak)'

@@ -1,0 +1,65 @@
+"""A condition on the world that ``seal run`` can check before it acts: "*if Tom is in the garage*, give him
+the hammer", "*if there is milk in the fridge*, bring it to Lucia".
+
+The parser keeps a frame's condition as the words said (``Evoked.condition``). One that says where someone or
+something is — "if" and a clause "X is/are in/on/at Y" or "there is/are X in/on/at Y" — is the yes/no question
+"is X in Y?" / "is there X in Y?" (turned by English's rules, :func:`seal_cli.language.asking.direct_question`),
+which the robot answers as it answers that question asked directly: it looks (a Find of X with Y as its ground).
+The frames are carried out when the answer is yes, and not when it is no, which the run says. Other conditions
+("when the water boils", "if it rains") are no question the robot can answer by looking: they are carried out at
+once, with the warning they always had (:func:`seal_cli.pipeline.unchecked_conditions`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from seal_cli.language.asking import direct_question
+
+__all__ = ["Condition", "as_question", "checked_condition"]
+
+_IF = ("if",)
+"""Subordinators of a condition that holds or not now (not "when"/"once", which wait for it to come true)."""
+_WHERE = ("in", "on", "at", "inside", "under", "by", "near")
+"""Prepositions of where a thing is: a condition that says one is about where something is."""
+_BE = ("is", "are", "'s")
+
+
+@dataclass(frozen=True)
+class Condition:
+    """A condition the run checks first: its words as said, and the question that checks it."""
+
+    said: str
+    question: str
+
+
+def as_question(condition: str) -> str | None:
+    """The yes/no question a condition about where something is asks ("if Tom is in the garage": "is Tom in the
+    garage?", "if there's milk in the fridge": "is there milk in the fridge?"); None for any other condition."""
+    words = condition.replace("'s ", " is ").replace(",", " ").split()
+    if len(words) < 4 or words[0].lower() not in _IF:
+        return None
+    rest = words[1:]
+    be = next((k for k, w in enumerate(rest) if w.lower() in _BE), None)
+    if be is None or be == 0 or be + 1 >= len(rest):
+        return None
+    if rest[0].lower() == "there":          # "there is milk in the fridge": a place said after the thing
+        if be != 1 or not any(w.lower() in _WHERE for w in rest[be + 2:]):
+            return None
+    elif rest[be + 1].lower() not in _WHERE:
+        return None
+    return direct_question(["if", *rest])
+
+
+def checked_condition(frames: Sequence[object]) -> Condition | None:
+    """The condition every frame of a command is said under, when it is one the robot checks by looking
+    (:func:`as_question`); None when a frame has none, the frames' conditions differ, or it is no such condition."""
+    said = {getattr(f, "condition", None) for f in frames}
+    if len(said) != 1:
+        return None
+    condition = said.pop()
+    if not condition:
+        return None
+    question = as_question(condition)
+    return Condition(condition, question) if question is not None else None

@@ -1,0 +1,51 @@
+"""A condition seal run checks by looking (``seal_cli.planning.conditions``), and the run that checks it."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from seal_cli.frames.library import Library
+from seal_cli.language.parser import parse_command
+from seal_cli.maps.formats.map_server import load_map
+from seal_cli.pipeline import run_on_map
+from seal_cli.planning.conditions import as_question, checked_condition
+from seal_cli.sim.policies import make_policy
+
+
+@pytest.mark.parametrize(("said", "question"), [
+    ("if Tom is in the garage", "is Tom in the garage?"),
+    ("if the mug is on the table", "is the mug on the table?"),
+    ("if there is milk in the fridge", "is there milk in the fridge?"),
+    ("if there's a cup on the desk", "is there a cup on the desk?"),
+    ("when the water boils", None),          # waits for it to come true: not a question of now
+    ("if it rains", None),                   # nothing the robot sees
+    ("if the tea is ready", None),           # a state, not where something is
+    ("if there are two cups", None),         # no place said
+])
+def test_a_condition_about_where_something_is_is_a_question(said: str, question: str | None) -> None:
+    assert as_question(said) == question
+
+
+def test_the_command_is_checked_only_under_one_condition_for_every_frame(library: Library) -> None:
+    frames = parse_command("if Tom is in the garage, give him the hammer", library).frames
+    assert checked_condition(frames) is not None and checked_condition(frames).question == "is Tom in the garage?"
+    assert checked_condition(parse_command("give Tom the hammer", library).frames) is None
+
+
+@pytest.mark.parametrize(("text", "acted", "said"), [
+    ("if Tom is in the garage, give him the hammer", True, "handed hammer_1 to Tom"),
+    ("if Priya is in the garage, give her the hammer", False, "'if Priya is in the garage' does not hold (no: "
+                                                              "Priya is in the study"),
+])
+def test_the_run_checks_the_condition_first_and_acts_only_when_it_holds(library: Library, text: str, acted: bool,
+                                                                         said: str) -> None:
+    """The townhouse: Tom is in the garage, Priya in the study. The frames are done when the condition holds and
+    not otherwise, which the run says (no warning that the condition is not checked)."""
+    agent, result = run_on_map(load_map("townhouse"), text, library, make_policy("oracle"),
+                               rng=np.random.default_rng(0))
+    lines = [r.text for r in agent.records]
+    assert result.completed and result.warnings == []
+    assert any(line.startswith("checks first whether") for line in lines)
+    assert any(said in line for line in lines)
+    assert any(e.startswith("Give") for e in result.executed) == acted
