@@ -168,7 +168,7 @@ class Lexicon:
             base = verb_lemma(first) if first.isalpha() else None
             candidates = self.units.get(base) if base and base != first else None
             if not candidates:
-                return self.again(words, i) or self.mistyped(words, i)
+                return self.again(words, i) or self.mistyped(words, i, stop)
         for unit in candidates:
             n = len(unit)
             if i + n <= len(words) and all(words[i + k].lower == unit[k] for k in range(1, n)):
@@ -207,13 +207,16 @@ class Lexicon:
                 return form, n, None
         return None
 
-    def mistyped(self, words: Sequence[Word], i: int) -> tuple[str, int, None] | None:
+    def mistyped(self, words: Sequence[Word], i: int, stop: int | None = None) -> tuple[str, int, int | None] | None:
         """A one-word unit typed with one slip of the fingers: two neighbouring letters swapped ("*brign* me the cup",
         "*tkae* it"), one letter left out ("*brng* it", "*plae* the cup": "place") or one letter typed twice or
         between ("*bringg*", "*opent* it"): a word of at least :data:`TYPO_LEAST` letters that no dictionary lists,
         written in lower case (a capital only first in the sentence), no thing of the taxonomy, one slip from exactly
         one unit, and no unit that is mostly a noun ("laddle" is no slip of the verb "ladle"). "ben", "jamie" (names)
-        are no slip of a unit; a word the dictionary lists ("form" beside "from") is never read so."""
+        are no slip of a unit; a word the dictionary lists ("form" beside "from") is never read so. The first word
+        of a unit of several words slips too (words24): "*tunr* on the lamp" is "turn on", "*swithc* the light
+        off" "switch off", read as the verb the slip stands for (the unit's other words as :meth:`verb_at` finds
+        them)."""
         word = words[i]
         low = word.lower
         if len(low) < TYPO_LEAST or not low.isalpha() or low in self.things or \
@@ -224,7 +227,11 @@ class Lexicon:
             if len(self._slips) >= SLIPS_KEPT:
                 self._slips.clear()              # a long-running parser meets words without end
             found = self._slips[low] = "" if in_dictionary(low) else self._slipped(low)
-        return (found, 1, None) if found else None
+        if not found:
+            return None
+        fixed = list(words)
+        fixed[i] = Word(word.text, word.start, word.end, word.tag, word.info, lower=found)
+        return self.verb_at(fixed, i, len(words) if stop is None else stop)
 
     @cached_property
     def _slips(self) -> dict[str, str]:
@@ -236,7 +243,7 @@ class Lexicon:
         near |= {low[:j] + low[j + 1:] for j in range(len(low))}                                # one too many
         near |= {low[:j] + c + low[j:] for j in range(len(low) + 1) for c in _LETTERS}          # one left out
         near.discard(low)
-        found = {w for w in near if (w,) in self.units.get(w, ()) and w not in self.opening}   # "laddle": a noun
+        found = {w for w in near if w in self.units and w not in self.opening}   # "laddle": a noun
         return found.pop() if len(found) == 1 else ""
 
     def _split(self, words: Sequence[Word], i: int, stop: int,

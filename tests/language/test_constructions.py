@@ -1560,3 +1560,25 @@ def test_leaving_a_thing_somewhere_in_a_clause_of_the_robot_stays_a_frame(librar
     assert [f.frame for f in parse_command("turn off the tv before you leave the cup in the sink",
                                            library).frames] == ["ToggleOff", "Place"]
     assert [f.frame for f in parse_command("leave the kitchen", library).frames] == ["Place"]   # a command: as before
+
+
+# -- words24 ---------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("wehn you get to the kitchen, open the fridge", ["Go", "Open"]),
+    ("whre did I leave my keys", ["Find"]),
+    ("cuold you shut the window", ["Close"]),
+    ("pleae turn off the tv", ["ToggleOff"]),
+    ("Whta is on the shelf?", ["Tell"]),
+])
+def test_a_function_word_typed_with_one_slip_is_read_as_meant(text: str, want: list[str], library: Library) -> None:
+    assert [f for f, _ in frames(text, library)] == want          # each an unknown verb before (words24)
+
+
+@pytest.mark.parametrize(("text", "unit"), [
+    ("tunr on the lamp", "turn on"),
+    ("swithc the light off", "switch off"),
+    ("pikc up the cup", "pick up"),
+])
+def test_the_first_word_of_a_unit_of_several_words_typed_with_one_slip(text: str, unit: str, library: Library) -> None:
+    assert parse_command(text, library).frames[0].lexical_unit == unit
