@@ -1,15 +1,16 @@
-"""Function words typed with one slip of the fingers: "*wher* is anna", "*hwo* many cups", "*cna* you bring
-me some water", "*plese* close the door".
+"""Function words typed with one slip of the fingers: "*wher* is anna", "*cna* you bring me some water",
+"*plese* close the door", "*waht*'s in the fridge?".
 
-A command opens with a question word, a modal or "please" far more often than with anything else, and
-those are the words a fast typist mangles; a function word read wrongly makes the whole command an unknown
-verb. :func:`function_word` reads a typed word as the function word of :data:`SLIP_TARGETS` it is one slip
-from: two neighbouring letters swapped ("waht", "hwo", "cna"), and, in a word of at least
-:data:`SLIP_LONGER` letters, one letter left out ("wher", "plese", "coud") or one typed too many
-("wheere"). Never a word the dictionary lists ("were", "wen", "hoe" stay themselves), never a word of
-fewer than three letters, and only when exactly one target is that near: a name such as "cora", "maya" or
-"wes" is no slip of any of them. A capital is allowed only on the first word of a sentence (a capitalised word
-inside it is a name: :func:`seal_cli.language.tokens.tokenize`). Content words are left to the verbs' own slips (:meth:`Lexicon.mistyped`).
+Questions and requests open with a question word, a modal or "please"; typed with a slip, the whole command
+was an unknown verb. :func:`function_word` reads a typed word as the one function word of
+:data:`SLIP_TARGETS` it is one slip from: two neighbouring letters swapped ("waht", "cna"), or, when both the
+typed word and the word meant have at least :data:`SLIP_LONGER` letters, one letter left out ("wher",
+"plese", "coud") or one typed too many ("wheere"). Never a word the dictionary lists ("were", "wen", "hoe"
+stay themselves) nor a function word itself ("many" is no slip of "may"), never a word of fewer than three
+letters, and only when exactly one target is that near ("hwo" is a swap of both "who" and "how": left
+unread); a name such as "cora", "maya" or "wes" is no slip of any of them. The tokenizer allows a capital
+only on the first word of a sentence (a capitalised word inside it is a name). The verbs' own slips are
+:meth:`seal_cli.language.lexicon.Lexicon.mistyped`'s.
 """
 
 from __future__ import annotations
