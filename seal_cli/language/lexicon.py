@@ -184,6 +184,8 @@ class Lexicon:
         split = self._split(words, i, stop, candidates)
         if split:
             return split
+        if all(len(unit) == 1 and unit[0] in self.opening for unit in candidates):
+            return self.again(words, i)          # "reposition two clocks": no object opener, so "re" + "position"
         return None
 
     def again(self, words: Sequence[Word], i: int) -> tuple[str, int, None] | None:

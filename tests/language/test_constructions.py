@@ -1582,3 +1582,19 @@ def test_a_function_word_typed_with_one_slip_is_read_as_meant(text: str, want: l
 ])
 def test_the_first_word_of_a_unit_of_several_words_typed_with_one_slip(text: str, unit: str, library: Library) -> None:
     assert parse_command(text, library).frames[0].lexical_unit == unit
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("nuke the soup for a minute", [("Heat", {"theme": "soup"})]),
+    ("zap my tea in the microwave", [("Heat", {"theme": "tea", "instrument": "microwave"})]),
+    ("please bung the bottle", [("Close", {"theme": "bottle"})]),
+])
+def test_a_word_wordnet_never_tagged_takes_its_first_sense_that_reaches_a_frame(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want             # wordnet_units.yaml, "never tagged" (words24)
+
+
+def test_an_opening_unit_that_does_not_hold_leaves_the_word_to_again(library: Library) -> None:
+    # "reposition" is a unit read only before its object's opener (words24); before a number it is "re" + "position"
+    assert frames("Reposition two clocks on a desk.", library)[0][0] == "Place"
+    assert frames("reposition the lamp on the desk", library) == [("Place", {"theme": "lamp", "goal": "desk"})]
