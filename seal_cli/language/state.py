@@ -804,10 +804,12 @@ class State:
             k = j + 1
             if subject == "you" and k < len(words) and words[k].lower in ("have", "had"):
                 k += 1
+            left = self._departure_end(k)
+            if left and self._leaving(k):
+                return "cond", left, sub            # "before you leave, turn off the stove": leaving is no arriving
             arrived = self._arrival_end(k)
             if arrived:
                 return "then", arrived, "then"      # "when you get there", "once you arrive,": arrived where we went
-            left = self._departure_end(k)
             if left:
                 return "cond", left, sub            # "turn off the stove *before you leave*": when, no frame
             if k < len(words) and (self.verb_at(k) is not None or self.verb_after(k)):
@@ -833,8 +835,9 @@ class State:
         goal) said of the robot with nothing after it ("turn off the stove before you *leave*"), or with only the
         room it leaves, after a unit that puts its object somewhere ("when you leave *the kitchen*": a room is no
         thing to put anywhere; "when you reach the kitchen" goes there, a clause), is its going away, the time of
-        the command, no frame (0: none). Not "after you put it away" (an object), "when you get there, ..."
-        (:meth:`_arrival_end`)."""
+        the command, no frame (0: none); so is one said first, before a comma and the command's clause ("when you
+        leave the bedroom, switch off the light", words24). Not "after you put it away" (an object), "when you get
+        there, ..." (:meth:`_arrival_end`)."""
         words = self.words
         found = self.verb_at(k) if k < len(words) else None
         if found is None or found[2] is not None or found[0] not in self.lexicon.goals:
@@ -848,7 +851,15 @@ class State:
             after = stop                        # "... when you leave *the kitchen*": a room is put nowhere, left
         while after < len(words) and words[after].lower in ("now", "please"):
             after += 1
+        if after < len(words) and words[after].lower == "," and self._clause_follows(after):
+            return after                        # "when you leave the bedroom, switch off the light": said first
         return after if after == len(words) or words[after].lower in END_MARKS else 0
+
+    def _leaving(self, k: int) -> bool:
+        """Whether the verb at ``k`` is a unit that puts its object somewhere ("leave"): said of the robot with no
+        object it is going away, never arriving (words24)."""
+        found = self.verb_at(k) if k < len(self.words) else None
+        return found is not None and found[0] in self.lexicon.puts
 
     def _arrival_end(self, k: int) -> int:
         """Where "get there", "arrive", "reach it" ends at ``k``: a verb of going (a unit of a frame with a

@@ -1598,3 +1598,21 @@ def test_an_opening_unit_that_does_not_hold_leaves_the_word_to_again(library: Li
     # "reposition" is a unit read only before its object's opener (words24); before a number it is "re" + "position"
     assert frames("Reposition two clocks on a desk.", library)[0][0] == "Place"
     assert frames("reposition the lamp on the desk", library) == [("Place", {"theme": "lamp", "goal": "desk"})]
+
+
+@pytest.mark.parametrize(("text", "frame", "condition"), [
+    ("when you leave the bedroom, switch off the light", "ToggleOff", "when you leave the bedroom"),
+    ("before you leave the living room, close the windows", "Close", "before you leave the living room"),
+    ("before you leave, turn off the stove", "ToggleOff", "before you leave"),        # was read as arriving
+])
+def test_leaving_said_first_is_when_not_a_frame(text: str, frame: str, condition: str, library: Library) -> None:
+    parse = parse_command(text, library)
+    assert [(f.frame, f.condition) for f in parse.frames] == [(frame, condition)]
+
+
+def test_arriving_or_leaving_a_thing_said_first_stays_as_it_was(library: Library) -> None:
+    assert [f.frame for f in parse_command("when you get there, open the fridge", library).frames] == ["Open"]
+    assert [f.frame for f in parse_command("when you get to the kitchen, open the fridge", library).frames] == [
+        "Go", "Open"]
+    assert [f.frame for f in parse_command("after you leave the cup on the table, close the door",
+                                           library).frames] == ["Place", "Close"]
