@@ -57,7 +57,7 @@ from seal_cli.language.morphology import (
 )
 from seal_cli.language.rule import AFTER_SEP, Match, Rule
 from seal_cli.language.rules import ANYWHERE, CLAUSE_START, INSIDE, WORDS
-from seal_cli.language.state import CLOSED, SUB_FIRST, State, match_phrase
+from seal_cli.language.state import CLOSED, SUB_FIRST, State, lower_case_name, match_phrase
 from seal_cli.language.tags import NP_START, Tag
 from seal_cli.language.tokens import MAX_LENGTH, CommandError, Word, capitalised, tokenize
 
@@ -499,7 +499,9 @@ def mentions(text: str, start: int, end: int) -> list[Mention]:
         determined = low in NP_OPENERS
         existential = _after_there_is(words, k) and low.isalpha() and low not in CLOSED
         someone = low in _SOMEONE
-        if not (determined or existential or someone or capitalised(words[k]) and low not in CLOSED and
+        subject = k == 0 or k == 1 and words[0].lower in SUB_FIRST      # "*ben* is in ...", "when *sam* gets home"
+        named = capitalised(words[k]) or subject and lower_case_name(words, k)
+        if not (determined or existential or someone or named and low not in CLOSED and
                 low not in NOMINATIVE and low not in _EXISTENTIAL):
             k += 1
             continue
@@ -515,7 +517,8 @@ def mentions(text: str, start: int, end: int) -> list[Mention]:
         if k > first + int(determined):
             head = words[k - 1]
             oblique = first > 0 and words[first - 1].lower in PREPOSITIONS
-            found.append(Mention(start + words[first].start, start + head.end, head.text, capitalised(head),
+            found.append(Mention(start + words[first].start, start + head.end, head.text,
+                                 capitalised(head) or head is words[first] and named,
                                  determined or existential or someone, oblique))
         else:
             k = max(k, first + 1)

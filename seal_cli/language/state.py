@@ -64,7 +64,15 @@ from seal_cli.language.english import (
     WHERE_QUESTIONS,
     is_room_word,
 )
-from seal_cli.language.morphology import gerund_lemma, is_adjective, is_adverb, is_plural, noun_lemma, verb_lemma
+from seal_cli.language.morphology import (
+    gerund_lemma,
+    in_dictionary,
+    is_adjective,
+    is_adverb,
+    is_plural,
+    noun_lemma,
+    verb_lemma,
+)
 from seal_cli.language.rule import Match
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
@@ -211,6 +219,19 @@ def inflected(low: str) -> bool:
     """Whether a word is a verb's third-person or past form ("likes", "left"), not its base or -ing form."""
     lemma = verb_lemma(low) if low.isalpha() else None
     return bool(lemma) and lemma != low and not low.endswith("ing")
+
+
+def lower_case_name(words: Sequence[Word], k: int) -> bool:
+    """Whether word ``k``, in lower case, is a person's name as a subject (words24; the caller says where a subject
+    stands: opening a statement, or after a condition's subordinator, "when *sam* gets home"): no dictionary lists
+    it, no closed class has it, and a finite verb follows ("*ben* is in the garden", "*anna* wants to go to the
+    kitchen", "*noah* has to leave"). Dictionary words ("dinner is ready") and free relatives ("whoever's at the
+    door", "whatever's on the table") name no one; a capital makes a name anywhere."""
+    low = words[k].lower
+    if not low.isalpha() or low in CLOSED or low.endswith("ever") or in_dictionary(low) or k + 1 >= len(words):
+        return False
+    nxt = words[k + 1].lower
+    return nxt in FINITE or nxt == "'s" or inflected(nxt)
 
 
 def _its_is_it_is(words: Sequence[Word], k: int) -> bool:
@@ -375,6 +396,8 @@ class State:
                 and not first.endswith("ever") \
                 and (nxt in _BE_STATED or nxt == "'s" and not self.possessed_at(i + 2, end)):
             return end                                        # "dinner's ready", "lunch is served" (not "whatever's")
+        if not capitalised(words[i]) and lower_case_name(words, i):
+            return end                                        # "noah has to get to the garage": a name (words24)
         if verb_lemma(first) == first and first not in SUBJECTS:
             return 0                                          # "Grab the cup": a command, maybe an unknown verb
         if first in BASE_FORM_SUBJECTS and nxt.isalpha() and nxt not in PREPOSITIONS:

@@ -1503,7 +1503,9 @@ def test_whether_a_or_b_told_leaves_the_next_clause_its_own(library: Library) ->
     ("Sam wants to go to the kitchen, lead him there", [("Guide", {"theme": "Sam", "goal": "kitchen"})]),
     ("the guest needs to get to the bedroom — take her there", [("Guide", {"theme": "guest", "goal": "bedroom"})]),
     ("Jules has to get from the hall to the garage. Guide him there", [("Guide", {"theme": "Jules",
+                                                                                   "source": "hall",
                                                                                    "goal": "garage"})]),
+    # (words24: the path's start is where Jules is, the source; words23 left it unread)
     ("the cups are in the sink, go there", [("Go", {"goal": "sink"})]),
     ("go to the kitchen and guide the guest there", [("Go", {"goal": "kitchen"}),
                                                      ("Guide", {"theme": "guest", "goal": "kitchen"})]),
@@ -1616,3 +1618,48 @@ def test_arriving_or_leaving_a_thing_said_first_stays_as_it_was(library: Library
         "Go", "Open"]
     assert [f.frame for f in parse_command("after you leave the cup on the table, close the door",
                                            library).frames] == ["Place", "Close"]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("priya is in the garage. take her to the kitchen",
+     [("Guide", {"theme": "priya", "source": "garage", "goal": "kitchen"})]),
+    ("when omar gets back, tell him the keys are on the table", [("Tell", {"recipient": "omar",
+                                                                          "message": "the keys are on the table"})]),
+    ("noah has to get from the hall to the garage, lead him there",
+     [("Guide", {"theme": "noah", "source": "hall", "goal": "garage"})]),
+    ("noah needs to be taken to the garage", [("Guide", {"theme": "noah", "goal": "garage"})]),
+])
+def test_a_lower_case_name_as_a_subject_is_a_person(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want
+
+
+def test_a_lower_case_dictionary_word_or_free_relative_names_no_one(library: Library) -> None:
+    assert frames("dinner is ready, tell him", library) == [("Tell", {"recipient": "him"})]
+    assert frames("whoever is at the door, greet them", library) == [("Greet", {"theme": "them"})]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("Jules has to get from the hall to the garage, please guide him",
+     [("Guide", {"theme": "Jules", "source": "hall", "goal": "garage"})]),
+    ("Sam wants to go to the kitchen, please take him", [("Guide", {"theme": "Sam", "goal": "kitchen"})]),
+    ("Ana has to get from the bathroom into the bedroom. Escort her",
+     [("Guide", {"theme": "Ana", "source": "bathroom", "goal": "bedroom"})]),
+])
+def test_the_path_a_statement_gives_a_person_is_where_they_are_led(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want
+
+
+def test_a_statements_path_is_no_place_to_seek_nor_a_conditions(library: Library) -> None:
+    assert frames("Jules has to get from the hall to the garage. Find him", library) == [("Find", {"theme": "Jules"})]
+    assert frames("when Ana gets to the door, follow her", library) == [("Follow", {"theme": "Ana"})]
+
+
+def test_leading_a_person_to_where_they_already_are_is_an_error(library: Library) -> None:
+    with pytest.raises(CommandError, match=r"'there' is where Ben already is \(the bedroom, said before\): say where "
+                                           r"to guide him"):
+        parse_command("Ben is in the bedroom. Guide him there", library)
+    assert frames("Ben is in the bedroom. Go there", library) == [("Go", {"goal": "bedroom"})]
+    assert frames("go to the kitchen and guide the guest there", library)[1] == (
+        "Guide", {"theme": "guest", "goal": "kitchen"})

@@ -69,7 +69,7 @@ from seal_cli.language.morphology import (
     verb_lemma,
 )
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import CLOSED, State, first_words, longest_phrase, match_phrase, merge
+from seal_cli.language.state import CLOSED, State, first_words, longest_phrase, lower_case_name, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 
@@ -974,8 +974,8 @@ def _person_needs(s: State, i: int) -> tuple[int, int, str] | None:
     and the verb (a one-word unit of the library); None when no such phrase and need start here."""
     words = s.words
     first = words[i]
-    named = capitalised(first) and first.lower not in CLOSED and s.verb_at(i) is None
-    if not (first.lower in NP_OPENERS or named):
+    named = (capitalised(first) or lower_case_name(words, i)) and first.lower not in CLOSED and s.verb_at(i) is None
+    if not (first.lower in NP_OPENERS or named):                  # "noah needs to be taken ...": a name (words24)
         return None
     person = named
     for k in range(i + 1, min(len(words) - 1, i + _PERSON_WORDS)):
@@ -1383,6 +1383,7 @@ OBLIGED_RULE = Rule("where a thing should go", _obliged, (
 PERSON_NEEDING = Rule("a person who needs leading", _person_needing, (
     Example("Morgan needs to be led to the bookshelf", "Morgan", Tag.NAME),
     Example("the man at the door needs showing to the kitchen", "the", Tag.DET),
+    Example("noah needs to be taken to the garage", "noah", Tag.NAME),
 ), lambda low: low in NP_OPENERS or low.isalpha(),
     "'Ana needs guiding to the door', 'the guest has to be taken to the exit': guide/take the person there")
 PERSON_NEED_DROPPED = Rule("the need after the person", _person_need_dropped, (
