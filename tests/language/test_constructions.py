@@ -1663,3 +1663,16 @@ def test_leading_a_person_to_where_they_already_are_is_an_error(library: Library
     assert frames("Ben is in the bedroom. Go there", library) == [("Go", {"goal": "bedroom"})]
     assert frames("go to the kitchen and guide the guest there", library)[1] == (
         "Guide", {"theme": "guest", "goal": "kitchen"})
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("a cup of cocoa for grandpa, please", [("Bring", {"theme": "cup", "recipient": "grandpa"})]),
+    ("the newspaper for my dad please", [("Bring", {"theme": "newspaper", "recipient": "dad"})]),
+    ("Orange juice, from the sofa, for me please", [("Bring", {"theme": "juice", "recipient": "me",
+                                                               "source": "sofa"})]),
+    ("Milk from the fridge, please", [("Bring", {"theme": "milk", "recipient": "me", "source": "fridge"})]),
+    ("a plate for the cake, please", [("Bring", {"theme": "plate", "recipient": "me"})]),   # a thing: no one's
+])
+def test_a_thing_asked_for_without_a_verb_is_for_whom_for_names(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want

@@ -1058,7 +1058,10 @@ def _path_alone(s: State, i: int) -> Match | None:
 
 def _asked_alone(s: State, i: int) -> Match | None:
     """"Milk from the fridge, please", "the remote please": a noun phrase and "please" (``ASKED_ALONE``), no
-    verb anywhere in the sentence, is a request for the thing: "bring me ..." (``REQUEST_MEANS``)."""
+    verb anywhere in the sentence, is a request for the thing: "bring me ..." (``REQUEST_MEANS``). The capital of
+    the sentence's first word makes no name of a word the dictionary lists ("*Orange* juice, from the sofa, for me
+    please", "*Milk* from the fridge, please": the thing, not a person called Orange or Milk; words24); a name the
+    dictionary does not list ("Anna"), or one of two capitalised words ("Rose Tyler"), stays one."""
     words = s.words
     if any(t.tag != Tag.POLITE for t in s.out) or REQUEST_MEANS not in s.lexicon.units or \
             words[i].lower in PRONOUNS or not s.np_starts(i):
@@ -1075,9 +1078,12 @@ def _asked_alone(s: State, i: int) -> Match | None:
             any(s.verb_at(k) or words[k].lower in BE_WORDS or words[k].lower in QUESTION_WORDS
                 for k in range(i, end)):
         return None
-    return Match(0, (_unsaid(words[i].start, Tag.VERB, REQUEST_MEANS),
-                     _unsaid(words[i].start, Tag.PRON, None, _SPEAKER)), expect=False, verb=REQUEST_MEANS,
-                 using=False)
+    asked = (_unsaid(words[i].start, Tag.VERB, REQUEST_MEANS), _unsaid(words[i].start, Tag.PRON, None, _SPEAKER))
+    first = words[i]
+    if capitalised(first) and (i == 0 or words[i - 1].lower in END_MARKS) and in_dictionary(first.lower) and \
+            not (i + 1 < len(words) and capitalised(words[i + 1])):
+        return Match(1, (*asked, first.tagged(Tag.WORD)), expect=False, verb=REQUEST_MEANS, using=False)
+    return Match(0, asked, expect=False, verb=REQUEST_MEANS, using=False)
 
 
 _SWITCHED_WORDS = 4
@@ -1435,7 +1441,8 @@ ASKED_ALONE_RULE = Rule("a thing asked for alone", _asked_alone, (
     Example("milk from the fridge, please", "", Tag.VERB),
     Example("the spoon back, please", "", Tag.VERB),
     Example("The remote please.", "", Tag.PRON),
-), None, "a noun phrase and 'please' with no verb: bring it to the speaker")
+    Example("Orange juice, from the sofa, for me please", "Orange", Tag.WORD),
+), None, "a noun phrase and 'please' with no verb: bring it to the speaker (or to whom 'for' names)")
 STATE_QUESTION = Rule("is X in a state", _state_question, (
     Example("Is the fridge open?", "Is", Tag.VERB),
     Example("is the kitchen light still on?", "still on", Tag.COND),
