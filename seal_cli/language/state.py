@@ -46,6 +46,7 @@ from seal_cli.language.english import (
     QUESTION_WORDS,
     RELATIVES,
     REQUESTS,
+    SEEN_QUESTIONS,
     SEPARATOR_WORDS,
     SEQUENCE_ADVERBS,
     STATE_ASKERS,
@@ -591,6 +592,10 @@ class State:
         if stated and stated < len(words) and words[stated].lower in (",", ";") and self.verb_after(stated + 1):
             return self._aside(i, stated + 1 - i, (words[i].start, words[stated - 1].end))
             # "Bogdan has a question; answer it for him"
+        seen = self._seen_question(i)
+        if seen:
+            return self._aside(i, seen - i, (words[i].start, words[seen - 1].end))
+            # "see the man by the window? greet him": what is seen is what "him" stands for (words24)
         said = any(t.tag == "VERB" for t in self.out)
         alone = i + 1 == len(words) or words[i + 1].lower in END_MARKS      # "... *Gross.*": an adjective alone
         if verb_lemma(words[i].lower) == words[i].lower and not stated and not self.timed_noun(i) and \
@@ -646,6 +651,21 @@ class State:
             if words[k].lower in (("them", "him", "her") if free else ("it", "them", "him", "her", "one")):
                 return self._aside(i, comma + 1 - i, (words[i].start, words[comma - 1].end))
         return None
+
+    def _seen_question(self, i: int) -> int:
+        """Where a question of perception at ``i`` ends, its "?" included (0: none): "see" / "do you see" /
+        "can you spot" (``SEEN_QUESTIONS``), a noun phrase, and "?", with a command in the next sentence ("*see the
+        person by the door?* follow them"). Without a command after it, it is no remark ("see the cup?" stays an
+        error naming "see")."""
+        words = self.words
+        n = longest_phrase(words, i, SEEN_QUESTIONS)
+        if not n or not self.np_starts(i + n):
+            return 0
+        end = next((k for k in range(i + n, len(words)) if words[k].lower in END_MARKS), len(words))
+        if end >= len(words) or words[end].lower != "?" or \
+                not any(self.verb_at(k) is not None for k in range(end + 1, len(words))):
+            return 0
+        return end + 1
 
     def _aside(self, i: int, n: int, *remarks: tuple[int, int]) -> Match:
         return Match(n, (merge(self.words, i, n, Tag.POLITE),), remarks=remarks)

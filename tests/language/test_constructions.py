@@ -1676,3 +1676,19 @@ def test_leading_a_person_to_where_they_already_are_is_an_error(library: Library
 def test_a_thing_asked_for_without_a_verb_is_for_whom_for_names(
         text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
     assert frames(text, library) == want
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("see the woman by the fridge? follow her", [("Follow", {"theme": "woman", "source": "fridge"})]),
+    ("do you see the mug on the counter? bring it here", [("Bring", {"theme": "mug", "goal": "here",
+                                                                     "source": "counter"})]),
+    ("you see the man at the door? greet him", [("Greet", {"theme": "man", "ground": "door"})]),
+])
+def test_a_question_of_perception_before_the_command_introduces_what_it_names(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want
+
+
+def test_a_question_of_perception_alone_stays_an_error(library: Library) -> None:
+    with pytest.raises(CommandError, match="unknown verb 'see'"):
+        parse_command("see the cup?", library)
