@@ -1692,3 +1692,19 @@ def test_a_question_of_perception_before_the_command_introduces_what_it_names(
 def test_a_question_of_perception_alone_stays_an_error(library: Library) -> None:
     with pytest.raises(CommandError, match="unknown verb 'see'"):
         parse_command("see the cup?", library)
+
+
+@pytest.mark.parametrize(("text", "asked"), [
+    ("is the man by the sofa sitting down or standing up?", "sitting down or standing up"),
+    ("check whether the heater is switched on or off", "switched on or off"),
+    ("is the man sitting or standing?", "sitting or standing"),
+])
+def test_alternatives_of_state_with_their_particles_are_one_state_asked(
+        text: str, asked: str, library: Library) -> None:
+    parse = parse_command(text, library)
+    assert [(f.frame, f.asked) for f in parse.frames] == [("LookAt", asked)]
+
+
+def test_a_particle_after_one_state_is_read_as_before(library: Library) -> None:
+    parse = parse_command("is the bathroom light on?", library)
+    assert [(f.frame, f.elements["theme"].head, f.asked) for f in parse.frames] == [("LookAt", "light", "on")]

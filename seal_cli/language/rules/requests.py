@@ -326,21 +326,37 @@ def _is_state(s: State, low: str) -> bool:
 def _state_from(s: State, k: int, end: int) -> int | None:
     """Where the state said from word ``k`` begins, when words ``k .. end`` are adverbs of degree or time
     ("still") and then one word of state ending the clause at ``end``, or two joined by "or" ("sitting *or*
-    standing", "open or closed": the alternatives a "whether A or B" asks, one state asked) or one and "or not"
-    ("locked or not"); else None."""
+    standing", "open or closed": the alternatives a "whether A or B" asks, one state asked), each maybe with its
+    particle ("sitting down or standing up", "switched on or off": words24), or one and "or not" ("locked or
+    not"); else None."""
     words = s.words
     last = end - 1
     if last - 1 >= k and words[last - 1].lower == "or" and words[last].lower == "not":
         last -= 2                                 # "whether the door is locked *or not*": the state, either way
-    if last < k or not _is_state(s, words[last].lower) or words[last].lower in STATE_ADVERBS:
+    if last < k or words[last].lower in STATE_ADVERBS:
         return None                              # "is the cup *still* on the table": an adverb, no state of its own
-    q = last
-    if q - 2 >= k and words[q - 1].lower == "or" and _is_state(s, words[q - 2].lower) and \
-            words[q - 2].lower not in STATE_ADVERBS:
-        q -= 2                                    # "sitting or standing": the first alternative begins the state
-    while q > k and words[q - 1].lower in STATE_ADVERBS:
-        q -= 1
-    return q if q == k else None
+    for q in _state_starts(s, k, last):
+        first = _state_starts(s, k, q - 2) if q - 2 >= k and words[q - 1].lower == "or" else []
+        if q < last and not first:
+            continue                              # a particle only in alternatives: "is the light *on*" as before
+        for p in first or [q]:                    # "sitting (down) or": the first alternative begins the state
+            while p > k and words[p - 1].lower in STATE_ADVERBS:
+                p -= 1
+            if p == k:
+                return p
+    return None
+
+
+def _state_starts(s: State, k: int, last: int) -> list[int]:
+    """Where a word of state ending at ``last`` may begin: the word itself, or the word before it when ``last`` is
+    a particle after a state ("standing *up*", "sitting *down*"); none before ``k``."""
+    words = s.words
+    found = [last] if last >= k and _is_state(s, words[last].lower) and words[last].lower not in STATE_ADVERBS \
+        else []
+    if last - 1 >= k and words[last].lower in PARTICLES and _is_state(s, words[last - 1].lower) and \
+            words[last - 1].lower not in STATE_ADVERBS:
+        found.append(last - 1)
+    return found
 
 
 def _clause_stop(s: State, k: int) -> int:
@@ -1448,6 +1464,7 @@ STATE_QUESTION = Rule("is X in a state", _state_question, (
     Example("is the kitchen light still on?", "still on", Tag.COND),
     Example("Is the cup on the table clean?", "clean", Tag.COND),
     Example("is the washing machine running?", "running", Tag.COND),
+    Example("is grandpa sitting down or standing up?", "sitting down or standing up", Tag.COND),
 ), _WHETHER_IS, "'is X open?': check X (LookAt), the state asked kept")
 ASKED_WHETHER = Rule("asked whether", _asked_whether, (
     Example("Could you check if the door is closed?", "check if", Tag.VERB),
