@@ -573,6 +573,22 @@ class State:
                 return False
         return False
 
+    def _there_after_place(self, i: int) -> int:
+        """Where "there is/'s/are" starts right after a phrase of place at ``i`` ("*on the sofa* there's a blanket",
+        "in the kitchen there are two cups"), no comma or verb between (0: none)."""
+        words = self.words
+        n = match_phrase(words, i, PREPOSITIONS)
+        if not n or PREPOSITIONS[" ".join(w.lower for w in words[i:i + n])] not in LOCATIVE or \
+                not self.np_starts(i + n):
+            return 0
+        for k in range(i + n + 1, len(words) - 1):
+            low = words[k].lower
+            if low == "there" and words[k + 1].lower in BE_WORDS:
+                return k
+            if not low.isalpha() or low in END_MARKS or self.verb_at(k) is not None:
+                return 0
+        return 0
+
     def aside(self, i: int) -> Match | None:
         """A sentence said beside the command, with no verb of the library, at the start of a sentence
         ("*Good morning!* Could you ...", "*Priya needs her laptop,* could you bring it to her?"): how many
@@ -586,6 +602,12 @@ class State:
             k -= 1                                       # "... Sorry, *gross*": interjections start it
         if k >= 0 and not (self.out[k].tag == "SEP" and self.out[k].lower in END_MARKS):
             return None                                  # inside a sentence
+        there = self._there_after_place(i)
+        if there:
+            stated = self.statement_at(there)
+            if stated and stated < len(words) and words[stated].lower in (",", ";") and self.verb_after(stated + 1):
+                return self._aside(i, stated + 1 - i, (words[i].start, words[stated - 1].end))
+                # "on the sofa there's a blanket, bring it to me": the place said first is the statement's (words24)
         if self._place_said_first(i):
             return None                                  # "from the fridge, can you grab me a soda": where, said first
         stated = self.statement_at(i)

@@ -1708,3 +1708,17 @@ def test_alternatives_of_state_with_their_particles_are_one_state_asked(
 def test_a_particle_after_one_state_is_read_as_before(library: Library) -> None:
     parse = parse_command("is the bathroom light on?", library)
     assert [(f.frame, f.elements["theme"].head, f.asked) for f in parse.frames] == [("LookAt", "light", "on")]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("on the sofa there's a blanket, bring it to me", [("Bring", {"theme": "blanket", "recipient": "me"})]),
+    ("in the hall there is a coat, hang it in the closet", [("Place", {"theme": "coat", "goal": "closet"})]),
+])
+def test_a_place_said_before_there_is_belongs_to_the_statement(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want
+
+
+def test_a_place_said_first_before_a_command_stays_the_commands(library: Library) -> None:
+    assert frames("in the kitchen, find the bread knife", library) == [("Find", {"theme": "knife",
+                                                                                "ground": "kitchen"})]
