@@ -62,7 +62,12 @@ when its first sense is the first sense of a unit evoking F alone ("stick" = dep
 first sense of F's first unit ("dust", "vacuum", "hoover" < clean.v.01; "ladle", "park" < put.v.01), F's first element
 a theme that is a thing (not Go's goal, a person, a question: "wind", "tree", "note" stay out). Such a unit is written
 with ``opening: true``: the parser reads it only in its base form, opening an imperative clause right before its
-object, where English puts no noun ("dust the shelf"; "put the dust in the bin" keeps the noun).
+object, where English puts no noun ("dust the shelf"; "put the dust in the bin" keeps the noun). For a word WordNet's
+corpus never tagged at all, as a verb or as a noun (words24), the order of its senses says nothing of use, so, as
+rule 2 does for a verb never tagged, its first sense that reaches a frame this way counts ("nuke", "zap": their third
+and fourth senses are microwave.v.01, the first sense of "microwave", a unit of Heat alone); the source says "never
+tagged". A word tagged as a noun keeps its first sense only ("bed", "ice": their verb senses are untagged, but the
+noun is what the word mostly is).
 
 A verb whose first sense fails rule 3 may still take a frame from it by **corroboration** (rule 5):
 the synset names two verbs of the library — a lexical unit itself, and a unit or a particle verb of
@@ -506,7 +511,13 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[Any, ...]]:
         if not wordnet.mostly_verb(verb) or not in_verb_tables(verb):
             # mostly a noun ("cup", "table", "knife"), or no verb of the parser's tables: rule 12 only, which reads
             # the verb in its base form alone ("hoover the hall": no forms needed)
-            found.extend(named_for(verb, offsets[0], "mostly a noun" if in_verb_tables(verb) else "no verb's forms"))
+            why = "mostly a noun" if in_verb_tables(verb) else "no verb's forms"
+            unknown = not wordnet.uses[(verb, "v")] and not wordnet.uses[(verb, "n")]
+            for sense in wordnet.frequent(verb) if unknown else offsets[:1]:   # never tagged: the first that reaches
+                named = named_for(verb, sense, why if sense == offsets[0] else f"{why}, never tagged")
+                if named:
+                    found.extend(named)
+                    break
             continue
         for sense in wordnet.frequent(verb):
             body = wordnet.domain[sense] == BODY          # "undress" < take off: done to a body, not to a thing

@@ -144,6 +144,12 @@ SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "tha
              "ill": "i'll", "id": "i'd", "youll": "you'll", "weve": "we've", "theyve": "they've", "itll": "it'll"}
 """Texting spellings of function words ("turn the lights off *pls*", "open it *n* wipe it", "tell her
 *im* late"): read as the word they spell."""
+SEEN_QUESTIONS = frozenset(["see", "you see", "do you see", "you spot", "do you spot", "notice",
+                            "you notice", "do you notice"])
+"""A question of perception said before the command ("*see* the man by the window? greet him", "*do you see* the
+cup on the shelf? bring it here"): whether the robot sees it asks nothing; it introduces what the command's
+pronoun stands for, as a statement does. ("Can you see X?" is politeness and Guide's "see"; "did you notice X?"
+is a search asked, ``SEEN_ASKED``; "spot X?" is Find's "spot".)"""
 TAG_QUESTIONS = frozenset(["would you", "could you", "will you", "can you", "won't you", "wouldn't you",
                            "would you please", "will you please", "could you please"])
 """"fetch me a spoon from the cabinet *would you*": a modal and "you" ending the request, with or without a

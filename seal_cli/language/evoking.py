@@ -16,7 +16,7 @@ from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
 from seal_cli.language.english import BESIDE, LOCATED, NP_OPENERS, ROUTE_NOUNS, SPEAKER_PRONOUNS, is_room_word
 from seal_cli.language.grounding import PARTS, PIECES, PORTIONS
-from seal_cli.language.lexicon import CommandError, Word, noun_lemma
+from seal_cli.language.lexicon import CommandError, Mention, Word, noun_lemma
 from seal_cli.language.morphology import is_gradable
 from seal_cli.language.reference import PLACES, Reference
 from seal_cli.language.roles import PUT_IN, ROLE_PREPOSITIONS, TO, Roles
@@ -421,13 +421,41 @@ class Evoker:
                 first not in elements or elements[first].refers_to is not None:
             return
         said = self.reference.mentioned(np, frame, first)
-        place = self.reference.place_said(said) if said is not None else None
-        if place is None:
+        place = self.reference.place_said(said, start=role == "source") if said is not None else None
+        if place is not None:
+            elements[role] = self.stated_phrase(place)
+        if said is None or not (said.name or self.types.is_a(noun_lemma(said.head), "person") is True):
             return
+        if role == "source" and "goal" in frame.roles and "goal" not in elements and \
+                self.types.is_person(frame.elements[0].type):
+            end = self.reference.path_end_said(said)      # "Jules has to get from A to B, please guide him": to B
+            if end is not None:
+                elements["goal"] = self.stated_phrase(end)
+
+    def stated_phrase(self, place: Mention) -> Phrase:
+        """A place a statement said, as an element (its head, grounded when a vocabulary is given)."""
         text = self.text[place.start:place.end]
         words = [w for w in text.split() if w.lower() not in NP_OPENERS]
         cls = self.vocabulary.grounded(words, []) if self.vocabulary is not None and words else None
-        elements[role] = Phrase(text, noun_lemma(place.head), cls, span=(place.start, place.end))
+        return Phrase(text, noun_lemma(place.head), cls, span=(place.start, place.end))
+
+    def led_where_already(self, clause: Clause, elements: dict[str, Phrase]) -> None:
+        """"Ben is in the bedroom. Guide him there": the statement's place is where Ben is, so it is the frame's
+        source (:meth:`place_said`), and a bare "there" points at the same place (``Reference.place_stated``):
+        leading a person to where they already are asks nothing, and where to is unsaid. A clear error naming
+        both, not a frame from the bedroom to the bedroom (words24). "Jules has to get from the hall to the
+        garage, lead him there" (the path's start and its end) and a "there" an earlier clause named stay."""
+        source, goal = elements.get("source"), elements.get("goal")
+        if source is None or goal is None or source.span is None or goal.span is None or goal.refers_to is not None \
+                or (goal.text or "").lower() != "there" or source.head != goal.head or source.span[0] >= clause.start:
+            return
+        who = next((p for role, p in elements.items() if role not in ("source", "goal")), None)
+        person = self.text[who.span[0]:who.span[1]] if who is not None and who.span is not None else "them"
+        verb = self.text[clause.verb.start:clause.verb.end]
+        raise CommandError(f"'there' is where {who.head if who is not None else 'they'} already is "
+                           f"({source.text}, said before): say where to {verb.lower()} {person} "
+                           f"('{verb.lower()} {person} to the kitchen')", goal.span[0] + 1, self.text,
+                           ["a place to go to"])
 
     def emit(self, frame: Frame, unit: str, clause: Clause, roles: dict[str, Any],
              attached: list[tuple[NP, PP]]) -> None:
@@ -475,6 +503,7 @@ class Evoker:
                 if prep is not None:             # "put the teapot *on* the sideboard": on its top, not in it
                     elements[element.role] = replace(elements[element.role], preposition=prep)
         self.place_said(frame, roles, elements)
+        self.led_where_already(clause, elements)
         first = frame.elements[0] if frame.elements else None
         said = self.types.object_role(unit)            # "fill [it] with water": the goal is what is unsaid
         if said is not None:

@@ -57,7 +57,7 @@ from seal_cli.language.morphology import (
 )
 from seal_cli.language.rule import AFTER_SEP, Match, Rule
 from seal_cli.language.rules import ANYWHERE, CLAUSE_START, INSIDE, WORDS
-from seal_cli.language.state import CLOSED, SUB_FIRST, State, match_phrase
+from seal_cli.language.state import CLOSED, SUB_FIRST, State, lower_case_name, match_phrase
 from seal_cli.language.tags import NP_START, Tag
 from seal_cli.language.tokens import MAX_LENGTH, CommandError, Word, capitalised, tokenize
 
@@ -168,7 +168,7 @@ class Lexicon:
             base = verb_lemma(first) if first.isalpha() else None
             candidates = self.units.get(base) if base and base != first else None
             if not candidates:
-                return self.again(words, i) or self.mistyped(words, i)
+                return self.again(words, i) or self.mistyped(words, i, stop)
         for unit in candidates:
             n = len(unit)
             if i + n <= len(words) and all(words[i + k].lower == unit[k] for k in range(1, n)):
@@ -184,6 +184,8 @@ class Lexicon:
         split = self._split(words, i, stop, candidates)
         if split:
             return split
+        if all(len(unit) == 1 and unit[0] in self.opening for unit in candidates):
+            return self.again(words, i)          # "reposition two clocks": no object opener, so "re" + "position"
         return None
 
     def again(self, words: Sequence[Word], i: int) -> tuple[str, int, None] | None:
@@ -207,13 +209,16 @@ class Lexicon:
                 return form, n, None
         return None
 
-    def mistyped(self, words: Sequence[Word], i: int) -> tuple[str, int, None] | None:
+    def mistyped(self, words: Sequence[Word], i: int, stop: int | None = None) -> tuple[str, int, int | None] | None:
         """A one-word unit typed with one slip of the fingers: two neighbouring letters swapped ("*brign* me the cup",
         "*tkae* it"), one letter left out ("*brng* it", "*plae* the cup": "place") or one letter typed twice or
         between ("*bringg*", "*opent* it"): a word of at least :data:`TYPO_LEAST` letters that no dictionary lists,
         written in lower case (a capital only first in the sentence), no thing of the taxonomy, one slip from exactly
         one unit, and no unit that is mostly a noun ("laddle" is no slip of the verb "ladle"). "ben", "jamie" (names)
-        are no slip of a unit; a word the dictionary lists ("form" beside "from") is never read so."""
+        are no slip of a unit; a word the dictionary lists ("form" beside "from") is never read so. The first word
+        of a unit of several words slips too (words24): "*tunr* on the lamp" is "turn on", "*swithc* the light
+        off" "switch off", read as the verb the slip stands for (the unit's other words as :meth:`verb_at` finds
+        them)."""
         word = words[i]
         low = word.lower
         if len(low) < TYPO_LEAST or not low.isalpha() or low in self.things or \
@@ -224,7 +229,11 @@ class Lexicon:
             if len(self._slips) >= SLIPS_KEPT:
                 self._slips.clear()              # a long-running parser meets words without end
             found = self._slips[low] = "" if in_dictionary(low) else self._slipped(low)
-        return (found, 1, None) if found else None
+        if not found:
+            return None
+        fixed = list(words)
+        fixed[i] = Word(word.text, word.start, word.end, word.tag, word.info, lower=found)
+        return self.verb_at(fixed, i, len(words) if stop is None else stop)
 
     @cached_property
     def _slips(self) -> dict[str, str]:
@@ -236,7 +245,7 @@ class Lexicon:
         near |= {low[:j] + low[j + 1:] for j in range(len(low))}                                # one too many
         near |= {low[:j] + c + low[j:] for j in range(len(low) + 1) for c in _LETTERS}          # one left out
         near.discard(low)
-        found = {w for w in near if (w,) in self.units.get(w, ()) and w not in self.opening}   # "laddle": a noun
+        found = {w for w in near if w in self.units and w not in self.opening}   # "laddle": a noun
         return found.pop() if len(found) == 1 else ""
 
     def _split(self, words: Sequence[Word], i: int, stop: int,
@@ -490,7 +499,9 @@ def mentions(text: str, start: int, end: int) -> list[Mention]:
         determined = low in NP_OPENERS
         existential = _after_there_is(words, k) and low.isalpha() and low not in CLOSED
         someone = low in _SOMEONE
-        if not (determined or existential or someone or capitalised(words[k]) and low not in CLOSED and
+        subject = k == 0 or k == 1 and words[0].lower in SUB_FIRST      # "*ben* is in ...", "when *sam* gets home"
+        named = capitalised(words[k]) or subject and lower_case_name(words, k)
+        if not (determined or existential or someone or named and low not in CLOSED and
                 low not in NOMINATIVE and low not in _EXISTENTIAL):
             k += 1
             continue
@@ -506,7 +517,8 @@ def mentions(text: str, start: int, end: int) -> list[Mention]:
         if k > first + int(determined):
             head = words[k - 1]
             oblique = first > 0 and words[first - 1].lower in PREPOSITIONS
-            found.append(Mention(start + words[first].start, start + head.end, head.text, capitalised(head),
+            found.append(Mention(start + words[first].start, start + head.end, head.text,
+                                 capitalised(head) or head is words[first] and named,
                                  determined or existential or someone, oblique))
         else:
             k = max(k, first + 1)

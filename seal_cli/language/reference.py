@@ -31,6 +31,8 @@ __all__ = ["PLACES", "Reference", "back_unplaced"]
 
 PLACES = ("goal", "ground", "source")
 _GOAL_PREPOSITIONS = ("to", "into", "onto")
+_PATH_STARTS = ("from",)
+"""Prepositions of where a path a statement gives starts: where the one who moves is now ("get *from* the hall")."""
 _POINTING = frozenset(["that", "this"])
 """Demonstratives that point at a person said before ("find *that* person")."""
 """Prepositions of where a motion ends: a place a statement names after one is where a bare "there" goes."""
@@ -204,13 +206,15 @@ class Reference:
                 located = m
         return goal or located
 
-    def place_said(self, said: Mention) -> Mention | None:
+    def place_said(self, said: Mention, start: bool = False) -> Mention | None:
         """Where the statement that introduced ``said`` puts it ("*Paris* is in *the bathroom*", "there's a cup
         somewhere in *the kitchen*", "someone in a grey jacket is at *the bed*"): the first phrase after it, in
         the same statement, said after a preposition of where a thing is (``LOCATED``, ``BESIDE``) and naming no
         clothing (nor, "in" right after a person, anything but a room: "the person in the orange t-shirt"); None
         when a phrase that is no preposition's object comes first ("Ana has *the cup* in the kitchen") or none is
-        said. Not a condition's ("when Ana gets to the door": where she will be, not where she is)."""
+        said. Not a condition's ("when Ana gets to the door": where she will be, not where she is). With ``start``
+        (the frame takes a ``source``) where a path the statement gives the person starts is where they are too
+        ("Jules has to get *from the hall* to the garage, lead him there": words24)."""
         span = next(((a, b) for a, b in self.remarks if a <= said.start < b), None)
         if span is None or self._mentions is None:
             return None
@@ -225,11 +229,31 @@ class Reference:
             words = [w for w in self.text[m.start:m.end].lower().split() if w not in NP_OPENERS]
             if self.text[said.end:m.start].split() == ["in"] and person and not is_room_word(words):
                 continue                             # "the person *in the orange t-shirt*": what they wear
-            if any(prep == p or prep.endswith(f" {p}") for p in (*LOCATED, *BESIDE)) and \
-                    self.types.is_a(noun_lemma(m.head), "clothing") is not True and \
+            if any(prep == p or prep.endswith(f" {p}") for p in (*LOCATED, *BESIDE, *(_PATH_STARTS if start else ())))\
+                    and self.types.is_a(noun_lemma(m.head), "clothing") is not True and \
                     self.types.is_a(noun_lemma(m.head), "person") is not True:
                 return m
         return None
+
+    def path_end_said(self, said: Mention) -> Mention | None:
+        """Where the statement that introduced ``said`` has them go ("Jules has to get from the bookshelf *to the
+        trash bin*", "Sam wants to go *to the kitchen*"): the last phrase after it, in the same statement, said
+        after a preposition of where a motion ends (``to``, ``into``, ``onto``), no person or clothing (words24).
+        None when there is none, or the statement is no statement (a condition's "when Ana gets to the door" says
+        where she will be, not where she is to be led)."""
+        span = next(((a, b) for a, b in self.remarks if a <= said.start < b), None)
+        if span is None or self._mentions is None:
+            return None
+        end: Mention | None = None
+        for m in self._mentions:
+            if m.start < said.end or m.end > span[1] or not m.oblique or m.name or \
+                    self.types.is_a(noun_lemma(m.head), "clothing") is True or \
+                    self.types.is_a(noun_lemma(m.head), "person") is True:
+                continue
+            prep = " ".join(self.text[span[0]:m.start].lower().split()[-3:])
+            if any(prep == p or prep.endswith(f" {p}") for p in _GOAL_PREPOSITIONS):
+                end = m
+        return end
 
     def person_by_role(self, target: tuple[int, str], phrase: Phrase) -> bool:
         """Whether a noun the library does not know as a person is one by the element it fills: an

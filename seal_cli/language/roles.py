@@ -141,6 +141,13 @@ class Roles:
                     item.prep in ("on", "at") and not item.lead and not item.describes and \
                     not (self.frames and frame.needs_held()):
                 role = first                      # "check on the baby": the verb's object after its preposition
+            unsaid = roles.get("recipient")
+            if item.prep == "for" and isinstance(unsaid, NP) and unsaid.start == unsaid.end and \
+                    item.np.kind in ("person", "pronoun") and (item.np.kind == "person" or
+                                                              item.np.pronoun in PERSON_PRONOUNS):
+                roles["recipient"] = item.np      # "a glass of water *for grandma*, please": hers, not the unsaid
+                previous = item.np                # "me" of a thing asked for without a verb (words24)
+                continue
             if role is None and item.prep == "for" and item.np.pronoun in PERSON_PRONOUNS and not item.describes:
                 continue                          # "chop the carrots *for me* with the knife": for whom, no element
             if role is not None:

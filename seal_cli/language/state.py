@@ -46,6 +46,7 @@ from seal_cli.language.english import (
     QUESTION_WORDS,
     RELATIVES,
     REQUESTS,
+    SEEN_QUESTIONS,
     SEPARATOR_WORDS,
     SEQUENCE_ADVERBS,
     STATE_ASKERS,
@@ -64,7 +65,15 @@ from seal_cli.language.english import (
     WHERE_QUESTIONS,
     is_room_word,
 )
-from seal_cli.language.morphology import gerund_lemma, is_adjective, is_adverb, is_plural, noun_lemma, verb_lemma
+from seal_cli.language.morphology import (
+    gerund_lemma,
+    in_dictionary,
+    is_adjective,
+    is_adverb,
+    is_plural,
+    noun_lemma,
+    verb_lemma,
+)
 from seal_cli.language.rule import Match
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
@@ -211,6 +220,19 @@ def inflected(low: str) -> bool:
     """Whether a word is a verb's third-person or past form ("likes", "left"), not its base or -ing form."""
     lemma = verb_lemma(low) if low.isalpha() else None
     return bool(lemma) and lemma != low and not low.endswith("ing")
+
+
+def lower_case_name(words: Sequence[Word], k: int) -> bool:
+    """Whether word ``k``, in lower case, is a person's name as a subject (words24; the caller says where a subject
+    stands: opening a statement, or after a condition's subordinator, "when *sam* gets home"): no dictionary lists
+    it, no closed class has it, and a finite verb follows ("*ben* is in the garden", "*anna* wants to go to the
+    kitchen", "*noah* has to leave"). Dictionary words ("dinner is ready") and free relatives ("whoever's at the
+    door", "whatever's on the table") name no one; a capital makes a name anywhere."""
+    low = words[k].lower
+    if not low.isalpha() or low in CLOSED or low.endswith("ever") or in_dictionary(low) or k + 1 >= len(words):
+        return False
+    nxt = words[k + 1].lower
+    return nxt in FINITE or nxt == "'s" or inflected(nxt)
 
 
 def _its_is_it_is(words: Sequence[Word], k: int) -> bool:
@@ -375,6 +397,8 @@ class State:
                 and not first.endswith("ever") \
                 and (nxt in _BE_STATED or nxt == "'s" and not self.possessed_at(i + 2, end)):
             return end                                        # "dinner's ready", "lunch is served" (not "whatever's")
+        if not capitalised(words[i]) and lower_case_name(words, i):
+            return end                                        # "noah has to get to the garage": a name (words24)
         if verb_lemma(first) == first and first not in SUBJECTS:
             return 0                                          # "Grab the cup": a command, maybe an unknown verb
         if first in BASE_FORM_SUBJECTS and nxt.isalpha() and nxt not in PREPOSITIONS:
@@ -549,6 +573,22 @@ class State:
                 return False
         return False
 
+    def _there_after_place(self, i: int) -> int:
+        """Where "there is/'s/are" starts right after a phrase of place at ``i`` ("*on the sofa* there's a blanket",
+        "in the kitchen there are two cups"), no comma or verb between (0: none)."""
+        words = self.words
+        n = match_phrase(words, i, PREPOSITIONS)
+        if not n or PREPOSITIONS[" ".join(w.lower for w in words[i:i + n])] not in LOCATIVE or \
+                not self.np_starts(i + n):
+            return 0
+        for k in range(i + n + 1, len(words) - 1):
+            low = words[k].lower
+            if low == "there" and words[k + 1].lower in BE_WORDS:
+                return k
+            if not low.isalpha() or low in END_MARKS or self.verb_at(k) is not None:
+                return 0
+        return 0
+
     def aside(self, i: int) -> Match | None:
         """A sentence said beside the command, with no verb of the library, at the start of a sentence
         ("*Good morning!* Could you ...", "*Priya needs her laptop,* could you bring it to her?"): how many
@@ -562,12 +602,22 @@ class State:
             k -= 1                                       # "... Sorry, *gross*": interjections start it
         if k >= 0 and not (self.out[k].tag == "SEP" and self.out[k].lower in END_MARKS):
             return None                                  # inside a sentence
+        there = self._there_after_place(i)
+        if there:
+            stated = self.statement_at(there)
+            if stated and stated < len(words) and words[stated].lower in (",", ";") and self.verb_after(stated + 1):
+                return self._aside(i, stated + 1 - i, (words[i].start, words[stated - 1].end))
+                # "on the sofa there's a blanket, bring it to me": the place said first is the statement's (words24)
         if self._place_said_first(i):
             return None                                  # "from the fridge, can you grab me a soda": where, said first
         stated = self.statement_at(i)
         if stated and stated < len(words) and words[stated].lower in (",", ";") and self.verb_after(stated + 1):
             return self._aside(i, stated + 1 - i, (words[i].start, words[stated - 1].end))
             # "Bogdan has a question; answer it for him"
+        seen = self._seen_question(i)
+        if seen:
+            return self._aside(i, seen - i, (words[i].start, words[seen - 1].end))
+            # "see the man by the window? greet him": what is seen is what "him" stands for (words24)
         said = any(t.tag == "VERB" for t in self.out)
         alone = i + 1 == len(words) or words[i + 1].lower in END_MARKS      # "... *Gross.*": an adjective alone
         if verb_lemma(words[i].lower) == words[i].lower and not stated and not self.timed_noun(i) and \
@@ -623,6 +673,21 @@ class State:
             if words[k].lower in (("them", "him", "her") if free else ("it", "them", "him", "her", "one")):
                 return self._aside(i, comma + 1 - i, (words[i].start, words[comma - 1].end))
         return None
+
+    def _seen_question(self, i: int) -> int:
+        """Where a question of perception at ``i`` ends, its "?" included (0: none): "see" / "do you see" /
+        "can you spot" (``SEEN_QUESTIONS``), a noun phrase, and "?", with a command in the next sentence ("*see the
+        person by the door?* follow them"). Without a command after it, it is no remark ("see the cup?" stays an
+        error naming "see")."""
+        words = self.words
+        n = longest_phrase(words, i, SEEN_QUESTIONS)
+        if not n or not self.np_starts(i + n):
+            return 0
+        end = next((k for k in range(i + n, len(words)) if words[k].lower in END_MARKS), len(words))
+        if end >= len(words) or words[end].lower != "?" or \
+                not any(self.verb_at(k) is not None for k in range(end + 1, len(words))):
+            return 0
+        return end + 1
 
     def _aside(self, i: int, n: int, *remarks: tuple[int, int]) -> Match:
         return Match(n, (merge(self.words, i, n, Tag.POLITE),), remarks=remarks)
@@ -804,10 +869,12 @@ class State:
             k = j + 1
             if subject == "you" and k < len(words) and words[k].lower in ("have", "had"):
                 k += 1
+            left = self._departure_end(k)
+            if left and self._leaving(k):
+                return "cond", left, sub            # "before you leave, turn off the stove": leaving is no arriving
             arrived = self._arrival_end(k)
             if arrived:
                 return "then", arrived, "then"      # "when you get there", "once you arrive,": arrived where we went
-            left = self._departure_end(k)
             if left:
                 return "cond", left, sub            # "turn off the stove *before you leave*": when, no frame
             if k < len(words) and (self.verb_at(k) is not None or self.verb_after(k)):
@@ -833,8 +900,9 @@ class State:
         goal) said of the robot with nothing after it ("turn off the stove before you *leave*"), or with only the
         room it leaves, after a unit that puts its object somewhere ("when you leave *the kitchen*": a room is no
         thing to put anywhere; "when you reach the kitchen" goes there, a clause), is its going away, the time of
-        the command, no frame (0: none). Not "after you put it away" (an object), "when you get there, ..."
-        (:meth:`_arrival_end`)."""
+        the command, no frame (0: none); so is one said first, before a comma and the command's clause ("when you
+        leave the bedroom, switch off the light", words24). Not "after you put it away" (an object), "when you get
+        there, ..." (:meth:`_arrival_end`)."""
         words = self.words
         found = self.verb_at(k) if k < len(words) else None
         if found is None or found[2] is not None or found[0] not in self.lexicon.goals:
@@ -848,7 +916,15 @@ class State:
             after = stop                        # "... when you leave *the kitchen*": a room is put nowhere, left
         while after < len(words) and words[after].lower in ("now", "please"):
             after += 1
+        if after < len(words) and words[after].lower == "," and self._clause_follows(after):
+            return after                        # "when you leave the bedroom, switch off the light": said first
         return after if after == len(words) or words[after].lower in END_MARKS else 0
+
+    def _leaving(self, k: int) -> bool:
+        """Whether the verb at ``k`` is a unit that puts its object somewhere ("leave"): said of the robot with no
+        object it is going away, never arriving (words24)."""
+        found = self.verb_at(k) if k < len(self.words) else None
+        return found is not None and found[0] in self.lexicon.puts
 
     def _arrival_end(self, k: int) -> int:
         """Where "get there", "arrive", "reach it" ends at ``k``: a verb of going (a unit of a frame with a

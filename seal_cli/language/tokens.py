@@ -13,7 +13,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from seal_cli.errors import SealError, Where
-from seal_cli.language.english import DETERMINERS, SPELLINGS, TITLES, TITLES_ONLY
+from seal_cli.language.english import DETERMINERS, END_MARKS, SPELLINGS, TITLES, TITLES_ONLY
+from seal_cli.language.slips import function_word
 
 __all__ = ["MAX_LENGTH", "CommandError", "Word", "capitalised", "printable", "tokenize"]
 
@@ -112,7 +113,10 @@ def tokenize(text: str) -> list[Word]:
         if kind == "word":
             if not match.group().isascii():
                 _check_one_alphabet(match.group(), start, text)
-            words.append(Word(match.group(), start, pos))
+            typed = match.group()
+            slip = function_word(typed.lower()) if typed.isalpha() and (typed.islower() or typed[1:].islower() and (
+                not words or words[-1].lower in END_MARKS)) else None
+            words.append(Word(typed, start, pos, lower=slip))    # "wher": "where" (slips.function_word)
         elif kind == "punct" and match.group() == "." and words and words[-1].end == start and \
                 words[-1].lower in TITLES and (capitalised(words[-1]) or words[-1].lower in TITLES_ONLY) and \
                 _title_before_name(text, pos, capitalised(words[-1])) and \

@@ -1503,7 +1503,9 @@ def test_whether_a_or_b_told_leaves_the_next_clause_its_own(library: Library) ->
     ("Sam wants to go to the kitchen, lead him there", [("Guide", {"theme": "Sam", "goal": "kitchen"})]),
     ("the guest needs to get to the bedroom — take her there", [("Guide", {"theme": "guest", "goal": "bedroom"})]),
     ("Jules has to get from the hall to the garage. Guide him there", [("Guide", {"theme": "Jules",
+                                                                                   "source": "hall",
                                                                                    "goal": "garage"})]),
+    # (words24: the path's start is where Jules is, the source; words23 left it unread)
     ("the cups are in the sink, go there", [("Go", {"goal": "sink"})]),
     ("go to the kitchen and guide the guest there", [("Go", {"goal": "kitchen"}),
                                                      ("Guide", {"theme": "guest", "goal": "kitchen"})]),
@@ -1560,3 +1562,163 @@ def test_leaving_a_thing_somewhere_in_a_clause_of_the_robot_stays_a_frame(librar
     assert [f.frame for f in parse_command("turn off the tv before you leave the cup in the sink",
                                            library).frames] == ["ToggleOff", "Place"]
     assert [f.frame for f in parse_command("leave the kitchen", library).frames] == ["Place"]   # a command: as before
+
+
+# -- words24 ---------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("wehn you get to the kitchen, open the fridge", ["Go", "Open"]),
+    ("whre did I leave my keys", ["Find"]),
+    ("cuold you shut the window", ["Close"]),
+    ("pleae turn off the tv", ["ToggleOff"]),
+    ("Whta is on the shelf?", ["Tell"]),
+])
+def test_a_function_word_typed_with_one_slip_is_read_as_meant(text: str, want: list[str], library: Library) -> None:
+    assert [f for f, _ in frames(text, library)] == want          # each an unknown verb before (words24)
+
+
+@pytest.mark.parametrize(("text", "unit"), [
+    ("tunr on the lamp", "turn on"),
+    ("swithc the light off", "switch off"),
+    ("pikc up the cup", "pick up"),
+])
+def test_the_first_word_of_a_unit_of_several_words_typed_with_one_slip(text: str, unit: str, library: Library) -> None:
+    assert parse_command(text, library).frames[0].lexical_unit == unit
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("nuke the soup for a minute", [("Heat", {"theme": "soup"})]),
+    ("zap my tea in the microwave", [("Heat", {"theme": "tea", "instrument": "microwave"})]),
+    ("please bung the bottle", [("Close", {"theme": "bottle"})]),
+])
+def test_a_word_wordnet_never_tagged_takes_its_first_sense_that_reaches_a_frame(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want             # wordnet_units.yaml, "never tagged" (words24)
+
+
+def test_an_opening_unit_that_does_not_hold_leaves_the_word_to_again(library: Library) -> None:
+    # "reposition" is a unit read only before its object's opener (words24); before a number it is "re" + "position"
+    assert frames("Reposition two clocks on a desk.", library)[0][0] == "Place"
+    assert frames("reposition the lamp on the desk", library) == [("Place", {"theme": "lamp", "goal": "desk"})]
+
+
+@pytest.mark.parametrize(("text", "frame", "condition"), [
+    ("when you leave the bedroom, switch off the light", "ToggleOff", "when you leave the bedroom"),
+    ("before you leave the living room, close the windows", "Close", "before you leave the living room"),
+    ("before you leave, turn off the stove", "ToggleOff", "before you leave"),        # was read as arriving
+])
+def test_leaving_said_first_is_when_not_a_frame(text: str, frame: str, condition: str, library: Library) -> None:
+    parse = parse_command(text, library)
+    assert [(f.frame, f.condition) for f in parse.frames] == [(frame, condition)]
+
+
+def test_arriving_or_leaving_a_thing_said_first_stays_as_it_was(library: Library) -> None:
+    assert [f.frame for f in parse_command("when you get there, open the fridge", library).frames] == ["Open"]
+    assert [f.frame for f in parse_command("when you get to the kitchen, open the fridge", library).frames] == [
+        "Go", "Open"]
+    assert [f.frame for f in parse_command("after you leave the cup on the table, close the door",
+                                           library).frames] == ["Place", "Close"]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("priya is in the garage. take her to the kitchen",
+     [("Guide", {"theme": "priya", "source": "garage", "goal": "kitchen"})]),
+    ("when omar gets back, tell him the keys are on the table", [("Tell", {"recipient": "omar",
+                                                                          "message": "the keys are on the table"})]),
+    ("noah has to get from the hall to the garage, lead him there",
+     [("Guide", {"theme": "noah", "source": "hall", "goal": "garage"})]),
+    ("noah needs to be taken to the garage", [("Guide", {"theme": "noah", "goal": "garage"})]),
+])
+def test_a_lower_case_name_as_a_subject_is_a_person(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want
+
+
+def test_a_lower_case_dictionary_word_or_free_relative_names_no_one(library: Library) -> None:
+    assert frames("dinner is ready, tell him", library) == [("Tell", {"recipient": "him"})]
+    assert frames("whoever is at the door, greet them", library) == [("Greet", {"theme": "them"})]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("Jules has to get from the hall to the garage, please guide him",
+     [("Guide", {"theme": "Jules", "source": "hall", "goal": "garage"})]),
+    ("Sam wants to go to the kitchen, please take him", [("Guide", {"theme": "Sam", "goal": "kitchen"})]),
+    ("Ana has to get from the bathroom into the bedroom. Escort her",
+     [("Guide", {"theme": "Ana", "source": "bathroom", "goal": "bedroom"})]),
+])
+def test_the_path_a_statement_gives_a_person_is_where_they_are_led(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want
+
+
+def test_a_statements_path_is_no_place_to_seek_nor_a_conditions(library: Library) -> None:
+    assert frames("Jules has to get from the hall to the garage. Find him", library) == [("Find", {"theme": "Jules"})]
+    assert frames("when Ana gets to the door, follow her", library) == [("Follow", {"theme": "Ana"})]
+
+
+def test_leading_a_person_to_where_they_already_are_is_an_error(library: Library) -> None:
+    with pytest.raises(CommandError, match=r"'there' is where Ben already is \(the bedroom, said before\): say where "
+                                           r"to guide him"):
+        parse_command("Ben is in the bedroom. Guide him there", library)
+    assert frames("Ben is in the bedroom. Go there", library) == [("Go", {"goal": "bedroom"})]
+    assert frames("go to the kitchen and guide the guest there", library)[1] == (
+        "Guide", {"theme": "guest", "goal": "kitchen"})
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("a cup of cocoa for grandpa, please", [("Bring", {"theme": "cup", "recipient": "grandpa"})]),
+    ("the newspaper for my dad please", [("Bring", {"theme": "newspaper", "recipient": "dad"})]),
+    ("Orange juice, from the sofa, for me please", [("Bring", {"theme": "juice", "recipient": "me",
+                                                               "source": "sofa"})]),
+    ("Milk from the fridge, please", [("Bring", {"theme": "milk", "recipient": "me", "source": "fridge"})]),
+    ("a plate for the cake, please", [("Bring", {"theme": "plate", "recipient": "me"})]),   # a thing: no one's
+])
+def test_a_thing_asked_for_without_a_verb_is_for_whom_for_names(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("see the woman by the fridge? follow her", [("Follow", {"theme": "woman", "source": "fridge"})]),
+    ("do you see the mug on the counter? bring it here", [("Bring", {"theme": "mug", "goal": "here",
+                                                                     "source": "counter"})]),
+    ("you see the man at the door? greet him", [("Greet", {"theme": "man", "ground": "door"})]),
+])
+def test_a_question_of_perception_before_the_command_introduces_what_it_names(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want
+
+
+def test_a_question_of_perception_alone_stays_an_error(library: Library) -> None:
+    with pytest.raises(CommandError, match="unknown verb 'see'"):
+        parse_command("see the cup?", library)
+
+
+@pytest.mark.parametrize(("text", "asked"), [
+    ("is the man by the sofa sitting down or standing up?", "sitting down or standing up"),
+    ("check whether the heater is switched on or off", "switched on or off"),
+    ("is the man sitting or standing?", "sitting or standing"),
+])
+def test_alternatives_of_state_with_their_particles_are_one_state_asked(
+        text: str, asked: str, library: Library) -> None:
+    parse = parse_command(text, library)
+    assert [(f.frame, f.asked) for f in parse.frames] == [("LookAt", asked)]
+
+
+def test_a_particle_after_one_state_is_read_as_before(library: Library) -> None:
+    parse = parse_command("is the bathroom light on?", library)
+    assert [(f.frame, f.elements["theme"].head, f.asked) for f in parse.frames] == [("LookAt", "light", "on")]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("on the sofa there's a blanket, bring it to me", [("Bring", {"theme": "blanket", "recipient": "me"})]),
+    ("in the hall there is a coat, hang it in the closet", [("Place", {"theme": "coat", "goal": "closet"})]),
+])
+def test_a_place_said_before_there_is_belongs_to_the_statement(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want
+
+
+def test_a_place_said_first_before_a_command_stays_the_commands(library: Library) -> None:
+    assert frames("in the kitchen, find the bread knife", library) == [("Find", {"theme": "knife",
+                                                                                "ground": "kitchen"})]

@@ -97,3 +97,25 @@ def test_the_opening_mark_is_written_and_read_back(tmp_path: Path) -> None:
     clean = found.by_name["Clean"]
     assert {u.text: u.opening for u in clean.lexical_units} == {
         "clean": False, "wet": False, "dust": True, "hoover": True}
+
+
+def test_a_word_never_tagged_takes_its_first_sense_that_reaches_a_frame(tmp_path: Path) -> None:
+    """Rule 12 for a word WordNet's corpus never tagged, as verb or noun (words24: "nuke", "zap"): the order of its
+    senses says nothing of use, so its first sense that reaches a frame counts, as rule 2 does for such verbs. A word
+    tagged as a noun keeps its first sense only."""
+    folder = tmp_path / "dict"
+    folder.mkdir()
+    extra = ("00001100 33 v 01 zapp 0 000 | strike with a ray\n"
+             "00001200 35 v 02 zapp 0 bedd 0 001 @ 00000100 v 0000 | clean with a ray\n"
+             "00001300 35 v 01 bedd 0 000 | furnish with a bed\n")
+    index = INDEX_VERB + "bedd v 2 1 @ 2 0 00001300 00001200\nzapp v 2 1 @ 2 0 00001100 00001200\n"
+    index = "".join(sorted(index.splitlines(keepends=True)))
+    for name, text in [("data.verb", DATA_VERB + extra), ("data.noun", DATA_NOUN), ("index.verb", index),
+                       ("index.noun", INDEX_NOUN + "bedd n 1 0 1 1 00009100\n"),
+                       ("cntlist.rev", CNTLIST + "bedd%1:06:00:: 1 5\n")]:
+        (folder / name).write_text(text)
+    net = build.WordNet(folder)
+    found = {(unit, frame): source for frame, unit, source, *_ in build.derive_wordnet(net, library(tmp_path))}
+    assert found[("zapp", "Clean")] == "wordnet:zapp.v.02 < clean.v.01 (clean); no verb's forms, never tagged"
+    assert ("bedd", "Clean") not in found          # tagged as a noun: its first sense, which reaches nothing
+    assert ("dust", "Clean") in found and ("stick", "Place") in found

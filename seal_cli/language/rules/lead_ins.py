@@ -268,7 +268,9 @@ SUBORDINATE = Rule("subordinate clause first", _subordinate, (
     Example("Go to the kitchen and when you get there, pick up the cup.", "when you get there,", Tag.POLITE),
     Example("go to the kitchen and when you're there look for a cup", "look for", Tag.VERB),
     Example("Go to the kitchen and once there find a cup", "once there", Tag.POLITE),
-), None, "a condition, or a clause of the robot's own, before the verb (arriving where it went: none)")
+    Example("when you leave the bedroom, switch off the light", "when you leave the bedroom,", Tag.COND),
+    Example("before you leave, turn off the stove", "before you leave,", Tag.COND),
+), None, "a condition, or a clause of the robot's own, before the verb (arriving where it went: none; leaving: when)")
 ON_THE_WAY = Rule("on the way", _on_the_way, (
     Example("on your way back, pick up the post", "on your way back ,", Tag.POLITE),
     Example("on the way to the kitchen, grab a cup", "on the way to the kitchen ,", Tag.POLITE),

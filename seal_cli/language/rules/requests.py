@@ -69,7 +69,7 @@ from seal_cli.language.morphology import (
     verb_lemma,
 )
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import CLOSED, State, first_words, longest_phrase, match_phrase, merge
+from seal_cli.language.state import CLOSED, State, first_words, longest_phrase, lower_case_name, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 
@@ -326,21 +326,37 @@ def _is_state(s: State, low: str) -> bool:
 def _state_from(s: State, k: int, end: int) -> int | None:
     """Where the state said from word ``k`` begins, when words ``k .. end`` are adverbs of degree or time
     ("still") and then one word of state ending the clause at ``end``, or two joined by "or" ("sitting *or*
-    standing", "open or closed": the alternatives a "whether A or B" asks, one state asked) or one and "or not"
-    ("locked or not"); else None."""
+    standing", "open or closed": the alternatives a "whether A or B" asks, one state asked), each maybe with its
+    particle ("sitting down or standing up", "switched on or off": words24), or one and "or not" ("locked or
+    not"); else None."""
     words = s.words
     last = end - 1
     if last - 1 >= k and words[last - 1].lower == "or" and words[last].lower == "not":
         last -= 2                                 # "whether the door is locked *or not*": the state, either way
-    if last < k or not _is_state(s, words[last].lower) or words[last].lower in STATE_ADVERBS:
+    if last < k or words[last].lower in STATE_ADVERBS:
         return None                              # "is the cup *still* on the table": an adverb, no state of its own
-    q = last
-    if q - 2 >= k and words[q - 1].lower == "or" and _is_state(s, words[q - 2].lower) and \
-            words[q - 2].lower not in STATE_ADVERBS:
-        q -= 2                                    # "sitting or standing": the first alternative begins the state
-    while q > k and words[q - 1].lower in STATE_ADVERBS:
-        q -= 1
-    return q if q == k else None
+    for q in _state_starts(s, k, last):
+        first = _state_starts(s, k, q - 2) if q - 2 >= k and words[q - 1].lower == "or" else []
+        if q < last and not first:
+            continue                              # a particle only in alternatives: "is the light *on*" as before
+        for p in first or [q]:                    # "sitting (down) or": the first alternative begins the state
+            while p > k and words[p - 1].lower in STATE_ADVERBS:
+                p -= 1
+            if p == k:
+                return p
+    return None
+
+
+def _state_starts(s: State, k: int, last: int) -> list[int]:
+    """Where a word of state ending at ``last`` may begin: the word itself, or the word before it when ``last`` is
+    a particle after a state ("standing *up*", "sitting *down*"); none before ``k``."""
+    words = s.words
+    found = [last] if last >= k and _is_state(s, words[last].lower) and words[last].lower not in STATE_ADVERBS \
+        else []
+    if last - 1 >= k and words[last].lower in PARTICLES and _is_state(s, words[last - 1].lower) and \
+            words[last - 1].lower not in STATE_ADVERBS:
+        found.append(last - 1)
+    return found
 
 
 def _clause_stop(s: State, k: int) -> int:
@@ -974,8 +990,8 @@ def _person_needs(s: State, i: int) -> tuple[int, int, str] | None:
     and the verb (a one-word unit of the library); None when no such phrase and need start here."""
     words = s.words
     first = words[i]
-    named = capitalised(first) and first.lower not in CLOSED and s.verb_at(i) is None
-    if not (first.lower in NP_OPENERS or named):
+    named = (capitalised(first) or lower_case_name(words, i)) and first.lower not in CLOSED and s.verb_at(i) is None
+    if not (first.lower in NP_OPENERS or named):                  # "noah needs to be taken ...": a name (words24)
         return None
     person = named
     for k in range(i + 1, min(len(words) - 1, i + _PERSON_WORDS)):
@@ -1058,7 +1074,10 @@ def _path_alone(s: State, i: int) -> Match | None:
 
 def _asked_alone(s: State, i: int) -> Match | None:
     """"Milk from the fridge, please", "the remote please": a noun phrase and "please" (``ASKED_ALONE``), no
-    verb anywhere in the sentence, is a request for the thing: "bring me ..." (``REQUEST_MEANS``)."""
+    verb anywhere in the sentence, is a request for the thing: "bring me ..." (``REQUEST_MEANS``). The capital of
+    the sentence's first word makes no name of a word the dictionary lists ("*Orange* juice, from the sofa, for me
+    please", "*Milk* from the fridge, please": the thing, not a person called Orange or Milk; words24); a name the
+    dictionary does not list ("Anna"), or one of two capitalised words ("Rose Tyler"), stays one."""
     words = s.words
     if any(t.tag != Tag.POLITE for t in s.out) or REQUEST_MEANS not in s.lexicon.units or \
             words[i].lower in PRONOUNS or not s.np_starts(i):
@@ -1075,9 +1094,12 @@ def _asked_alone(s: State, i: int) -> Match | None:
             any(s.verb_at(k) or words[k].lower in BE_WORDS or words[k].lower in QUESTION_WORDS
                 for k in range(i, end)):
         return None
-    return Match(0, (_unsaid(words[i].start, Tag.VERB, REQUEST_MEANS),
-                     _unsaid(words[i].start, Tag.PRON, None, _SPEAKER)), expect=False, verb=REQUEST_MEANS,
-                 using=False)
+    asked = (_unsaid(words[i].start, Tag.VERB, REQUEST_MEANS), _unsaid(words[i].start, Tag.PRON, None, _SPEAKER))
+    first = words[i]
+    if capitalised(first) and (i == 0 or words[i - 1].lower in END_MARKS) and in_dictionary(first.lower) and \
+            not (i + 1 < len(words) and capitalised(words[i + 1])):
+        return Match(1, (*asked, first.tagged(Tag.WORD)), expect=False, verb=REQUEST_MEANS, using=False)
+    return Match(0, asked, expect=False, verb=REQUEST_MEANS, using=False)
 
 
 _SWITCHED_WORDS = 4
@@ -1383,6 +1405,7 @@ OBLIGED_RULE = Rule("where a thing should go", _obliged, (
 PERSON_NEEDING = Rule("a person who needs leading", _person_needing, (
     Example("Morgan needs to be led to the bookshelf", "Morgan", Tag.NAME),
     Example("the man at the door needs showing to the kitchen", "the", Tag.DET),
+    Example("noah needs to be taken to the garage", "noah", Tag.NAME),
 ), lambda low: low in NP_OPENERS or low.isalpha(),
     "'Ana needs guiding to the door', 'the guest has to be taken to the exit': guide/take the person there")
 PERSON_NEED_DROPPED = Rule("the need after the person", _person_need_dropped, (
@@ -1434,12 +1457,14 @@ ASKED_ALONE_RULE = Rule("a thing asked for alone", _asked_alone, (
     Example("milk from the fridge, please", "", Tag.VERB),
     Example("the spoon back, please", "", Tag.VERB),
     Example("The remote please.", "", Tag.PRON),
-), None, "a noun phrase and 'please' with no verb: bring it to the speaker")
+    Example("Orange juice, from the sofa, for me please", "Orange", Tag.WORD),
+), None, "a noun phrase and 'please' with no verb: bring it to the speaker (or to whom 'for' names)")
 STATE_QUESTION = Rule("is X in a state", _state_question, (
     Example("Is the fridge open?", "Is", Tag.VERB),
     Example("is the kitchen light still on?", "still on", Tag.COND),
     Example("Is the cup on the table clean?", "clean", Tag.COND),
     Example("is the washing machine running?", "running", Tag.COND),
+    Example("is grandpa sitting down or standing up?", "sitting down or standing up", Tag.COND),
 ), _WHETHER_IS, "'is X open?': check X (LookAt), the state asked kept")
 ASKED_WHETHER = Rule("asked whether", _asked_whether, (
     Example("Could you check if the door is closed?", "check if", Tag.VERB),

@@ -86,7 +86,9 @@ DISLOCATED = Rule("phrase said first, taken up by a pronoun", _dislocated, (
 ASIDE = Rule("sentence beside the command", _aside, (
     Example("Good morning! Could you open the window?", "Good morning !", Tag.POLITE),
     Example("Bogdan has a question; answer it for him", "Bogdan has a question ;", Tag.POLITE),
-), None, "a greeting or statement with no verb of the library, where a command should start")
+    Example("see the man by the window? greet him", "see the man by the window ?", Tag.POLITE),
+    Example("on the sofa there's a blanket, bring it to me", "on the sofa there 's a blanket ,", Tag.POLITE),
+), None, "a greeting, a statement with no verb of the library, or 'see X?', where a command should start")
 HER_TOLD = Rule("her told", _her_told, (
     Example("tell her we're moving", "her", Tag.PRON),
     Example("tell her dinner's ready", "her", Tag.PRON),
