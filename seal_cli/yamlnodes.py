@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import copy
 import difflib
-from collections.abc import Callable, Iterable, Iterator
-from typing import TypeVar
+from collections.abc import Callable, Iterable, Iterator, Sequence
+from typing import Any, TypeVar
 
 import yaml
 
@@ -78,7 +78,7 @@ def count_values(text: str, loader: type[yaml.SafeLoader], file: str, limit: int
         parser.dispose()
 
 
-def place_aliases(roots: list[yaml.Node | None], text: str, loader: type[yaml.SafeLoader]) -> None:
+def place_aliases(roots: Sequence[yaml.Node | None], text: str, loader: type[yaml.SafeLoader]) -> None:
     """Give each alias (``*name``) of the composed ``roots`` a node of its own, at the alias's line and column.
 
     PyYAML's composer puts the anchored node itself where an alias stands, so a problem with what the alias
@@ -89,7 +89,7 @@ def place_aliases(roots: list[yaml.Node | None], text: str, loader: type[yaml.Sa
     marks. Run after :func:`check_size` (which relies on shared nodes to count an alias once)."""
     if "*" not in text:
         return
-    marks: list[tuple[yaml.Mark, yaml.Mark]] = []
+    marks: list[tuple[Any, Any]] = []
     parser = loader(text)
     try:
         while parser.check_event():
