@@ -239,7 +239,8 @@ def test_values_seal_would_refuse_are_refused_at_their_message(tmp_path: Path) -
     assert len(read_run(tmp_path / "ok.mcap").observations[0].detections or ()) == 1000
 
 
-def test_more_messages_than_observations_seal_takes_are_refused(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+def test_more_messages_than_observations_seal_takes_are_refused(tmp_path: Path,
+                                                                monkeypatch: pytest.MonkeyPatch) -> None:
     from seal_cli.ros import bags
 
     monkeypatch.setattr(bags, "MAX_OBSERVATIONS", 3)
