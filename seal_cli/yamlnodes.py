@@ -140,8 +140,9 @@ def merge_keys(root: yaml.Node | None, file: str) -> None:
     """Merge each ``<<: *base`` (YAML's merge key, as ROS users write it) into its mapping, in place.
 
     As PyYAML's loader does: ``<<`` takes a mapping or a list of mappings; a key the mapping itself holds wins
-    over a merged one, and among merged mappings the first listed wins; merged pairs come first. The merged pairs
-    keep their own marks (a wrong value is said where it is written). Each mapping is merged once, children
+    over a merged one, and among merged mappings the first listed wins; merged pairs come first. A merged pair
+    stands at the merge that brought it (the ``*base`` after ``<<:``: a frame name repeated by merging a frame
+    is said there), what is inside its value where it is written. Each mapping is merged once, children
     before parents, so a merged mapping's own ``<<`` is already merged; nothing grows past what
     :func:`check_size` counted (an alias counts the whole value it repeats). Anything but a mapping after ``<<``
     is a SealError at its line and column."""
@@ -182,8 +183,15 @@ def _merged(node: yaml.MappingNode, file: str) -> list[tuple[yaml.Node, yaml.Nod
                 if key.value in taken:
                     continue
                 taken.add(key.value)
-            merged.append((key, value))
+            merged.append((_at(key, source), _at(value, source)))
     return merged + own
+
+
+def _at(node: yaml.Node, source: yaml.Node) -> yaml.Node:
+    """``node`` (a pair merged in) at ``source``'s marks: the merge that brought it (``*base`` after ``<<:``)."""
+    moved = copy.copy(node)
+    moved.start_mark, moved.end_mark = source.start_mark, source.end_mark
+    return moved
 
 
 def _children(node: yaml.Node) -> list[yaml.Node]:

@@ -121,3 +121,13 @@ def test_a_merge_bomb_is_still_refused_by_its_size() -> None:
         assert "once its aliases (*name) are expanded" in exc.message
     else:
         raise AssertionError("a billion laughs was read")
+
+
+def test_a_merged_pair_stands_at_the_merge_that_brought_it() -> None:
+    from seal_cli.fileio import compose_yaml
+
+    root = compose_yaml("a: &a {x: {y: 1}}\nb: {<<: *a}\n", "m.yaml")
+    key, value = root.value[1][1].value[0]
+    assert (key.start_mark.line, key.start_mark.column) == (1, 8) == (value.start_mark.line, value.start_mark.column)
+    inner = value.value[0][0]
+    assert (inner.start_mark.line, inner.start_mark.column) == (0, 11)  # what is inside: where it is written

@@ -649,6 +649,12 @@ def hostile18_cases() -> Iterator[Case]:
     yield Case("A a merge key of a number", ("validate", "m.yaml"),
                (("m.yaml", SMALL_MAP.replace("<<: *room", "<<: 5").encode()),), codes=(1,), keep=("m.yaml",),
                says=r"m\.yaml:6:10: a merge key \(<<\) takes a mapping")
+    frames = ("frames:\n  - &base\n    frame: Zap\n    lexical_units: [zapp]\n    elements:\n      theme: {type: object}\n"
+              "    actions: [navigate(theme)]\n    postconditions: [zapped(theme)]\n  - <<: *base\n"
+              "    lexical_units: [zopp]\n")
+    yield Case("A a frame merging another's name (<<: *base): said at the merge", ("validate", "f.yaml"),
+               (("f.yaml", frames.encode()),), codes=(1,), keep=("f.yaml",),
+               says=r"f\.yaml:9:9: duplicate frame name 'Zap': already defined \(at f\.yaml:3:12\)")
     laughs = "".join(f"l{i}: &l{i} [{', '.join([f'*l{i - 1}'] * 9)}]\n" for i in range(1, 9))
     yield Case("A a billion laughs merged (<<: *l0 beside *l8)", ("validate", "m.yaml"),
                (("m.yaml", (SMALL_MAP + "l0: &l0 {a: 1, b: 2, c: 3, d: 4, e: 5, f: 6, g: 7, h: 8, i: 9}\n" + laughs
