@@ -650,7 +650,8 @@ def hostile18_cases() -> Iterator[Case]:
                (("m.yaml", SMALL_MAP.replace("<<: *room", "<<: 5").encode()),), codes=(1,), keep=("m.yaml",),
                says=r"m\.yaml:6:10: a merge key \(<<\) takes a mapping")
     frames = ("frames:\n  - &base\n    frame: Zap\n    lexical_units: [zapp]\n    elements:\n"
-              "      theme: {type: object}\n    actions: [navigate(theme)]\n    postconditions: [zapped(theme)]\n  - <<: *base\n"
+              "      theme: {type: object}\n    actions: [navigate(theme)]\n    postconditions: [zapped(theme)]\n"
+              "  - <<: *base\n"
               "    lexical_units: [zopp]\n")
     yield Case("A a frame merging another's name (<<: *base): said at the merge", ("validate", "f.yaml"),
                (("f.yaml", frames.encode()),), codes=(1,), keep=("f.yaml",),
