@@ -104,8 +104,11 @@ def place_aliases(roots: Sequence[yaml.Node | None], text: str, loader: type[yam
     seen: set[int] = set()
 
     def placed(node: yaml.Node) -> yaml.Node:
-        start, end = next(aliases)
+        marks = next(aliases, None)
+        if marks is None:  # never, if the composer shares a node only for an alias: then the node as it was
+            return node
         alias = copy.copy(node)
+        start, end = marks
         alias.start_mark, alias.end_mark = start, end
         return alias
 
