@@ -54,10 +54,11 @@ def framelib_paths(paths: list[Path] | None) -> list[Path] | None:
     return [framelib_dir(), *(Path(str(p)[1:]) if plus else p for p, plus in zip(paths, added, strict=True))]
 
 
-def choices(option: str, given: list[str], known: tuple[str, ...] | list[str]) -> list[str]:
+def choices(option: str, given: list[str], known: tuple[str, ...] | list[str], what: str) -> list[str]:
     """The names an option lists (``--policies sefm,greedy``, or ``--format`` given again and again), each checked:
     none at all, one unknown (the known listed) or one named twice (``sefm,sefm`` ran the same policy twice, as
-    two identical columns at twice the time) is a SealError naming the option and the value as given."""
+    two identical columns at twice the time) is a SealError naming the option and the value as given; ``what``: the
+    kind of name ("policy"), for the message."""
     from seal_cli.errors import SealError
 
     names = [name.strip() for value in given for name in value.split(",") if name.strip()]
@@ -66,7 +67,7 @@ def choices(option: str, given: list[str], known: tuple[str, ...] | list[str]) -
         raise SealError(f"{option} {shown!r} names nothing; give one or more of {', '.join(known)}")
     for name in names:
         if name not in known:
-            raise SealError(f"{option} {shown!r}: unknown {name!r}; known: {', '.join(known)}")
+            raise SealError(f"{option} {shown!r}: unknown {what} {name!r}; known: {', '.join(known)}")
     twice = next((name for i, name in enumerate(names) if name in names[:i]), None)
     if twice is not None:
         raise SealError(f"{option} {shown!r} names {twice!r} twice; name each once")

@@ -73,7 +73,7 @@ def bench_ros(
     from seal_cli.maps.formats.map_server import load_map
     from seal_cli.resources import map_path
 
-    wanted = choices("--format", formats or ["mcap"], tuple(FORMATS))
+    wanted = choices("--format", formats or ["mcap"], tuple(FORMATS), "format")
     err.print("[dim]seal bench ros: writes the bag (untimed), then times reading it and one belief update per "
               "detection message (this process's CPU seconds)[/dim]")
     library, m = load_library(), load_map(map_path("apartment"))

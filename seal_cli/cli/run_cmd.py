@@ -234,7 +234,7 @@ def tasks(
     if limit is not None and sample is not None:      # the arguments first: they need no file
         raise SealError("give --limit (the first episodes of each task type) or --sample (a stratified sample), "
                         "not both")
-    names = choices("--policies", [policies], tuple(POLICIES))
+    names = choices("--policies", [policies], tuple(POLICIES), "policy")
     if backend not in ("process", "ray") or (backend == "ray" and suite != "alfred2d"):
         raise SealError(f"--backend {backend!r}: process, or ray with --suite alfred2d")
     if suite != "context" and (house_set != "suite" or starts is not None):

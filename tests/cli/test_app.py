@@ -136,12 +136,12 @@ def test_framelib_plus_alone_is_refused_not_read_as_the_current_folder(tmp_path:
 def test_an_option_listing_names_refuses_none_unknown_and_twice() -> None:
     from seal_cli.cli import choices
 
-    assert choices("--policies", ["sefm, coverage"], ("sefm", "coverage")) == ["sefm", "coverage"]
-    assert choices("--format", ["mcap", "ros1"], ("mcap", "ros1")) == ["mcap", "ros1"]
+    assert choices("--policies", ["sefm, coverage"], ("sefm", "coverage"), "policy") == ["sefm", "coverage"]
+    assert choices("--format", ["mcap", "ros1"], ("mcap", "ros1"), "format") == ["mcap", "ros1"]
     for given, said in ((["sefm,sefm"], "names 'sefm' twice"), ([","], "names nothing"), ([""], "names nothing"),
-                        (["sefm,zz"], "unknown 'zz'; known: sefm, coverage")):
+                        (["sefm,zz"], "unknown policy 'zz'; known: sefm, coverage")):
         with pytest.raises(SealError, match=said):
-            choices("--policies", given, ("sefm", "coverage"))
+            choices("--policies", given, ("sefm", "coverage"), "policy")
     result = runner.invoke(app, ["bench", "tasks", "--suite", "map", "--map", "apartment", "--policies", "sefm,sefm"])
     assert result.exit_code == 1 and "--policies 'sefm,sefm' names 'sefm' twice" in result.output
 
