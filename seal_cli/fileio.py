@@ -249,10 +249,12 @@ def compose_documents(text: str, file: str, *, single: bool = False) -> list[Any
     :func:`read_yaml` bounds a file: more than :data:`~seal_cli.yamlnodes.MAX_VALUES` values is refused at the value
     past the bound by streaming the parser's events before any node is built (composing is ~4 s and ~300 MB a
     million values: a 14 MB map of seven million numbers took over a minute and 2 GB before it was refused), and the
-    values the aliases expand to are counted per document."""
+    values the aliases expand to are counted per document. Each alias then stands as a node of its own at its own
+    line and column (:func:`~seal_cli.yamlnodes.place_aliases`: a problem with what it brings is said where it is
+    used), and merge keys (``<<: *base``) are merged (:func:`~seal_cli.yamlnodes.merge_keys`)."""
     import yaml
 
-    from seal_cli.yamlnodes import MAX_VALUES, check_size, count_values
+    from seal_cli.yamlnodes import MAX_VALUES, check_size, count_values, merge_keys, place_aliases
 
     loader = _loader()
     try:
@@ -263,6 +265,10 @@ def compose_documents(text: str, file: str, *, single: bool = False) -> list[Any
         raise yaml_problem(exc, text, file) from None
     for root in documents:
         check_size(root, file, MAX_VALUES)
+    place_aliases(documents, text, loader)
+    if "<<" in text:
+        for root in documents:
+            merge_keys(root, file)
     return documents
 
 

@@ -9,19 +9,22 @@ extend it with what their format means.
 
 from __future__ import annotations
 
+import copy
 import difflib
-from collections.abc import Callable, Iterable, Iterator
-from typing import TypeVar
+from collections.abc import Callable, Iterable, Iterator, Sequence
+from typing import Any, TypeVar
 
 import yaml
 
 from seal_cli.errors import SealError, Where
 
-__all__ = ["MAX_VALUES", "NodeReader", "check_size", "clipped", "count_values", "is_null", "shape", "suggest"]
+__all__ = ["MAX_VALUES", "NodeReader", "check_size", "clipped", "count_values", "is_null", "merge_keys",
+           "place_aliases", "shape", "suggest"]
 
 T = TypeVar("T")
 
 NULL = "tag:yaml.org,2002:null"
+MERGE = "tag:yaml.org,2002:merge"
 
 
 MAX_VALUES = 1_000_000
@@ -73,6 +76,125 @@ def count_values(text: str, loader: type[yaml.SafeLoader], file: str, limit: int
                                     Where(file, mark.line + 1, mark.column + 1) if mark else Where(file))
     finally:
         parser.dispose()
+
+
+def place_aliases(roots: Sequence[yaml.Node | None], text: str, loader: type[yaml.SafeLoader]) -> None:
+    """Give each alias (``*name``) of the composed ``roots`` a node of its own, at the alias's line and column.
+
+    PyYAML's composer puts the anchored node itself where an alias stands, so a problem with what the alias
+    brings (``people: [*r]`` with ``robot: &r {pose: ...}``: "a person needs a name") was said at the anchor's
+    line, not where the value is used. The aliases' marks come from the parser's events, in the order the
+    composer met them: the nodes are walked depth first in the same order, and the n-th node met a second time
+    is the n-th alias. Its replacement is a shallow copy (the same tag, value and children) with the alias's
+    marks. Run after :func:`check_size` (which relies on shared nodes to count an alias once)."""
+    if "*" not in text:
+        return
+    marks: list[tuple[Any, Any]] = []
+    parser = loader(text)
+    try:
+        while parser.check_event():
+            event = parser.get_event()
+            if isinstance(event, yaml.AliasEvent):
+                marks.append((event.start_mark, event.end_mark))
+    finally:
+        parser.dispose()
+    if not marks:
+        return
+    aliases = iter(marks)
+    seen: set[int] = set()
+
+    def placed(node: yaml.Node) -> yaml.Node:
+        marks = next(aliases, None)
+        if marks is None:  # never, if the composer shares a node only for an alias: then the node as it was
+            return node
+        alias = copy.copy(node)
+        start, end = marks
+        alias.start_mark, alias.end_mark = start, end
+        return alias
+
+    for root in roots:
+        if root is None:
+            continue
+        # (the list holding the node, its index there, which of a pair it is or -1, the node), popped in the order
+        # written: a node's children are pushed last first
+        stack: list[tuple[list, int, int, yaml.Node]] = [([root], 0, -1, root)]
+        while stack:
+            holder, index, side, node = stack.pop()
+            if id(node) in seen:
+                if side < 0:
+                    holder[index] = placed(node)
+                else:
+                    pair = list(holder[index])
+                    pair[side] = placed(node)
+                    holder[index] = (pair[0], pair[1])
+                continue
+            seen.add(id(node))
+            if isinstance(node, yaml.SequenceNode):
+                items = node.value
+                stack.extend((items, i, -1, items[i]) for i in range(len(items) - 1, -1, -1))
+            elif isinstance(node, yaml.MappingNode):
+                pairs = node.value
+                for i in range(len(pairs) - 1, -1, -1):
+                    stack.append((pairs, i, 1, pairs[i][1]))
+                    stack.append((pairs, i, 0, pairs[i][0]))
+
+
+def merge_keys(root: yaml.Node | None, file: str) -> None:
+    """Merge each ``<<: *base`` (YAML's merge key, as ROS users write it) into its mapping, in place.
+
+    As PyYAML's loader does: ``<<`` takes a mapping or a list of mappings; a key the mapping itself holds wins
+    over a merged one, and among merged mappings the first listed wins; merged pairs come first. A merged pair
+    stands at the merge that brought it (the ``*base`` after ``<<:``: a frame name repeated by merging a frame
+    is said there), what is inside its value where it is written. Each mapping is merged once, children
+    before parents, so a merged mapping's own ``<<`` is already merged; nothing grows past what
+    :func:`check_size` counted (an alias counts the whole value it repeats). Anything but a mapping after ``<<``
+    is a SealError at its line and column."""
+    if root is None:
+        return
+    done: set[int] = set()  # the value lists merged: an alias's node shares its anchor's list
+    stack: list[tuple[yaml.Node, bool]] = [(root, False)]
+    while stack:
+        node, finished = stack.pop()
+        if not isinstance(node, yaml.CollectionNode) or id(node.value) in done:
+            continue
+        if not finished:
+            stack.append((node, True))
+            stack.extend((child, False) for child in reversed(_children(node)))
+            continue
+        done.add(id(node.value))
+        if isinstance(node, yaml.MappingNode) and any(key.tag == MERGE for key, _ in node.value):
+            node.value[:] = _merged(node, file)
+
+
+def _merged(node: yaml.MappingNode, file: str) -> list[tuple[yaml.Node, yaml.Node]]:
+    own = [(key, value) for key, value in node.value if key.tag != MERGE]
+    sources: list[yaml.MappingNode] = []
+    for key, value in node.value:
+        if key.tag != MERGE:
+            continue
+        for source in value.value if isinstance(value, yaml.SequenceNode) else [value]:
+            if not isinstance(source, yaml.MappingNode):
+                mark = source.start_mark
+                raise SealError(f"a merge key (<<) takes a mapping or a list of mappings (such as *base or [*a, *b]), "
+                                f"not {shape(source)}", Where(file, mark.line + 1, mark.column + 1))
+            sources.append(source)
+    taken = {key.value for key, _ in own if isinstance(key, yaml.ScalarNode)}
+    merged: list[tuple[yaml.Node, yaml.Node]] = []
+    for source in sources:
+        for key, value in source.value:
+            if isinstance(key, yaml.ScalarNode):
+                if key.value in taken:
+                    continue
+                taken.add(key.value)
+            merged.append((_at(key, source), _at(value, source)))
+    return merged + own
+
+
+def _at(node: yaml.Node, source: yaml.Node) -> yaml.Node:
+    """``node`` (a pair merged in) at ``source``'s marks: the merge that brought it (``*base`` after ``<<:``)."""
+    moved = copy.copy(node)
+    moved.start_mark, moved.end_mark = source.start_mark, source.end_mark
+    return moved
 
 
 def _children(node: yaml.Node) -> list[yaml.Node]:

@@ -56,3 +56,78 @@ def test_build_turns_a_value_objects_error_into_a_problem() -> None:
     assert reader.build(bad, value("box")) is None and reader.build(lambda: 7, value("box")) == 7
     (problem,) = reader.problems
     assert problem.message == "a room needs three corners" and problem.where == Where("map.yaml", 4, 6)
+
+
+def test_an_alias_is_a_node_at_its_own_line_and_column() -> None:
+    from seal_cli.fileio import compose_yaml
+
+    text = "robot: &r {pose: [1, 1, 0]}\npeople:\n  - *r\n  - [*r]\n"
+    root = compose_yaml(text, "m.yaml")
+    robot, people = root.value[0][1], root.value[1][1]
+    first, second = people.value[0], people.value[1].value[0]
+    assert (first.start_mark.line, first.start_mark.column) == (2, 4)
+    assert (second.start_mark.line, second.start_mark.column) == (3, 5)
+    assert first.value is robot.value and (robot.start_mark.line, robot.start_mark.column) == (0, 7)
+
+
+def test_aliases_are_placed_in_the_order_written_however_deep() -> None:
+    from seal_cli.fileio import compose_documents
+
+    text = "---\na: &a [1]\nb: [[*a], *a]\n---\nc: &a 2\nd: *a\n"
+    first, second = compose_documents(text, "m.yaml")
+    inner, outer = first.value[1][1].value[0].value[0], first.value[1][1].value[1]
+    assert (inner.start_mark.line, inner.start_mark.column) == (2, 5)
+    assert (outer.start_mark.line, outer.start_mark.column) == (2, 10)
+    d = second.value[1][1]
+    assert d.value == "2" and (d.start_mark.line, d.start_mark.column) == (5, 3)
+
+
+def test_merge_keys_merge_with_the_mappings_own_keys_first() -> None:
+    from seal_cli.fileio import compose_yaml
+
+    text = "a: &a {x: 1, y: 2}\nb: &b {y: 3, z: 4}\nc: {<<: [*a, *b], x: 9}\nc2: &c2 {<<: *a}\n"
+    root = compose_yaml(text, "m.yaml")
+    c = root.value[2][1]
+    assert [(k.value, v.value) for k, v in c.value] == [("y", "2"), ("z", "4"), ("x", "9")]
+    c2 = root.value[3][1]
+    assert [(k.value, v.value) for k, v in c2.value] == [("x", "1"), ("y", "2")]
+    assert yaml.load(text, Loader=LOADER)["c"] == {"x": 9, "y": 2, "z": 4}  # PyYAML's loader merges alike
+
+
+def test_a_merge_of_a_merge_and_a_merge_of_no_mapping() -> None:
+    from seal_cli.fileio import compose_yaml
+
+    root = compose_yaml("a: &a {x: 1}\nb: &b {<<: *a, y: 2}\nc: {<<: *b, z: 3}\n", "m.yaml")
+    assert [k.value for k, _ in root.value[2][1].value] == ["x", "y", "z"]
+    for text, column in (("a: {<<: 5}\n", 9), ("a: &a [1]\nb: {<<: [*a]}\n", 10)):
+        try:
+            compose_yaml(text, "m.yaml")
+        except SealError as exc:
+            assert "a merge key (<<) takes a mapping" in exc.message and exc.where.column == column
+        else:
+            raise AssertionError("merged no mapping")
+
+
+def test_a_merge_bomb_is_still_refused_by_its_size() -> None:
+    from seal_cli.fileio import compose_yaml
+
+    lines = ["l0: &l0 {a: 1, b: 2, c: 3, d: 4, e: 5, f: 6, g: 7, h: 8, i: 9}"]
+    lines += [f"l{i}: &l{i} [*l{i - 1}, *l{i - 1}, *l{i - 1}, *l{i - 1}, *l{i - 1}, *l{i - 1}, *l{i - 1}, *l{i - 1}, "
+              f"*l{i - 1}]" for i in range(1, 9)]
+    lines += ["m: {<<: [*l0], z: *l8}"]
+    try:
+        compose_yaml("\n".join(lines) + "\n", "m.yaml")
+    except SealError as exc:
+        assert "once its aliases (*name) are expanded" in exc.message
+    else:
+        raise AssertionError("a billion laughs was read")
+
+
+def test_a_merged_pair_stands_at_the_merge_that_brought_it() -> None:
+    from seal_cli.fileio import compose_yaml
+
+    root = compose_yaml("a: &a {x: {y: 1}}\nb: {<<: *a}\n", "m.yaml")
+    key, value = root.value[1][1].value[0]
+    assert (key.start_mark.line, key.start_mark.column) == (1, 8) == (value.start_mark.line, value.start_mark.column)
+    inner = value.value[0][0]
+    assert (inner.start_mark.line, inner.start_mark.column) == (0, 11)  # what is inside: where it is written

@@ -28,7 +28,7 @@ import numpy as np
 from seal_cli.bench.reliability import FRAME, Case, hostile_setting
 
 __all__ = ["alfred2d_data", "attacker_cases", "chain_library", "hostile14_cases", "hostile15_cases", "hostile16_cases",
-           "hostile17_cases", "rgba_png", "sparse_pgm"]
+           "hostile17_cases", "hostile18_cases", "rgba_png", "sparse_pgm"]
 
 DIGITS = "1" * 5_000
 """An integer longer than Python converts from text (4,300 digits)."""
@@ -283,6 +283,7 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield from hostile15_cases()
     yield from hostile16_cases()
     yield from hostile17_cases()
+    yield from hostile18_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -604,3 +605,93 @@ def _misnamed_bags() -> Iterator[Case]:
                    codes=(1,), keep=(name,), absent=("o.yaml",),
                    says=rf"{name.replace('.', chr(92) + '.')}: this file is an MCAP bag, but .*rename it to end in "
                         r"\.mcap")
+
+
+SMALL_MAP = ("name: m\nbounds: [0, 0, 10, 10]\nrobot: &r {pose: [1, 1, 0]}\n"
+             "rooms:\n  - &room {name: kitchen, box: [0, 0, 5, 10]}\n"
+             "  - {<<: *room, name: hall, box: [5, 0, 10, 10]}\n")
+"""A map of two rooms, the second merging the first (``<<``), the robot's pose anchored."""
+
+
+def _hostile_bag(poses: list[tuple[float, float, float, float]],
+                 looks: list[tuple[float, list[tuple[str, float, float, float]]]]) -> bytes | None:
+    """The bytes of an MCAP bag: PoseStamped ``poses`` (t, x, y, yaw) on /robot_pose and a Detection3DArray per look
+    (t, detections in map) on /detections; None without the ros extra."""
+    try:
+        import rosbags  # noqa: F401
+    except ImportError:
+        return None
+    import tempfile
+    from pathlib import Path
+
+    from seal_cli.ros.messages import DETECTION_3D, POSE_STAMPED, typestore
+    from seal_cli.ros.writing import detection_array, pose_stamped, write_bag
+
+    store = typestore(False)
+    messages = [("/robot_pose", POSE_STAMPED, t, pose_stamped(store, t, "map", x, y, yaw, False))
+                for t, x, y, yaw in poses]
+    messages += [("/detections", DETECTION_3D, t, detection_array(store, t, "map", seen, False)) for t, seen in looks]
+    messages.sort(key=lambda m: m[2])
+    with tempfile.TemporaryDirectory() as folder:
+        write_bag(Path(folder) / "b.mcap", messages, store)
+        return (Path(folder) / "b.mcap").read_bytes()
+
+
+def hostile18_cases() -> Iterator[Case]:
+    """Round hostile18: a problem with an alias's value said at the anchor, merge keys refused, bags imported into
+    observations seal then refused, a bad look said without its line after the looks before it were filtered, a
+    lexical unit no command can hold, an option naming one policy twice, a --match of no case."""
+    yield Case("A a person that is an alias of the robot: said at the alias's line", ("validate", "m.yaml"),
+               (("m.yaml", (SMALL_MAP + "people: [*r]\n").encode()),), codes=(1,), keep=("m.yaml",),
+               says=r"m\.yaml:7:10: a person needs a name")
+    yield Case("A a room merging another (<<: *room): map", ("map", "m.yaml", "--json"),
+               (("m.yaml", SMALL_MAP.encode()),), codes=(0,), keep=("m.yaml",), twice=True)
+    yield Case("A a merge key of a number", ("validate", "m.yaml"),
+               (("m.yaml", SMALL_MAP.replace("<<: *room", "<<: 5").encode()),), codes=(1,), keep=("m.yaml",),
+               says=r"m\.yaml:6:10: a merge key \(<<\) takes a mapping")
+    frames = ("frames:\n  - &base\n    frame: Zap\n    lexical_units: [zapp]\n    elements:\n"
+              "      theme: {type: object}\n    actions: [navigate(theme)]\n    postconditions: [zapped(theme)]\n"
+              "  - <<: *base\n"
+              "    lexical_units: [zopp]\n")
+    yield Case("A a frame merging another's name (<<: *base): said at the merge", ("validate", "f.yaml"),
+               (("f.yaml", frames.encode()),), codes=(1,), keep=("f.yaml",),
+               says=r"f\.yaml:9:9: duplicate frame name 'Zap': already defined \(at f\.yaml:3:12\)")
+    laughs = "".join(f"l{i}: &l{i} [{', '.join([f'*l{i - 1}'] * 9)}]\n" for i in range(1, 9))
+    yield Case("A a billion laughs merged (<<: *l0 beside *l8)", ("validate", "m.yaml"),
+               (("m.yaml", (SMALL_MAP + "l0: &l0 {a: 1, b: 2, c: 3, d: 4, e: 5, f: 6, g: 7, h: 8, i: 9}\n" + laughs
+                            + "z: {<<: *l0, y: *l8}\n").encode()),), codes=(1,), keep=("m.yaml",),
+               says=r"m\.yaml: this file holds more than 1,000,000 values once its aliases")
+    yield Case("A observations whose second look sees a class nobody knows: at its line",
+               ("localize", "--map", "apartment", "--particles", "20", "--observations", "o.yaml"),
+               (("o.yaml", b"- {pose: [-6, -3, 0], detections: [{class: cup, at: [1, 1]}]}\n"
+                           b"- {pose: [-6, -3, 0], detections: [{class: zzz, at: [1, 1]}]}\n"),), codes=(1,),
+               keep=("o.yaml",), says=r"o\.yaml:2:3: a detection of 'zzz': map apartment and the plan know no such")
+    unit = " ".join(["zap"] * 20_000)
+    yield Case("A a lexical unit of 80,000 characters: validate", ("validate", "f.frame"),
+               (("f.frame", f'frame Zap "{unit}" {{\n  theme: object\n  do navigate(theme)\n}}\n'.encode()),),
+               codes=(1,), keep=("f.frame",), says=r"f\.frame:1:11: lexical unit .* longer than any command")
+    yield Case("A bench tasks --policies sefm,sefm",
+               ("bench", "tasks", "--suite", "map", "--map", "apartment", "--policies", "sefm,sefm"), codes=(1,),
+               says=r"--policies 'sefm,sefm' names 'sefm' twice")
+    yield Case("A bench ros --format ''", ("bench", "ros", "--format", ""), codes=(1,),
+               says=r"--format '' names nothing")
+    yield Case("A bench reliability --match of no case", ("bench", "reliability", "--match", "zzz no case"),
+               codes=(1,), says=r"--match 'zzz no case': no case's name holds this text")
+    good = [(1.0, -6.0, -3.0, 0.0), (3.0, -5.0, -3.0, 0.0)]
+    for name, poses, looks, said in (
+            ("a NaN pose", [(1.0, -6.0, -3.0, 0.0), (2.0, math.nan, -3.0, 0.0), (3.0, -5.0, -3.0, 0.0)],
+             [(2.5, [("cup", 1.0, 1.0, 0.0)])], r"the pose of message 2 on /robot_pose .* is \(nan, "),
+            ("a detection at infinity", good, [(2.0, [("cup", math.inf, 1.0, 0.0)])],
+             r"the position of detection 1 of message 1 on /detections is \(inf, "),
+            ("a detection 1e300 m away", good, [(2.0, [("cup", 1e300, 1.0, 0.0)])],
+             r"the position of detection 1 of message 1 on /detections is \(1e\+300, "),
+            ("1,001 detections in one message", good, [(2.0, [("cup", 1.0, 1.0, 0.0)] * 1001)],
+             r"message 1 on /detections holds 1,001 detections")):
+        bag = _hostile_bag(poses, looks)
+        if bag is None:
+            return
+        yield Case(f"A import-bag of {name}", ("import-bag", "b.mcap", "-o", "o.yaml"), (("b.mcap", bag),),
+                   codes=(1,), keep=("b.mcap",), absent=("o.yaml",), says=rf"b\.mcap: {said}")
+        yield Case(f"A localize --bag of {name}", ("localize", "--map", "apartment", "--particles", "20", "--bag",
+                                                   "b.mcap"), (("b.mcap", bag),), codes=(1,), keep=("b.mcap",),
+                   says=rf"b\.mcap: {said}")

@@ -32,8 +32,8 @@ if TYPE_CHECKING:
 
 __all__ = ["DETECTIONS_TOPIC_HELP", "MAX_COUNT", "MAX_PARTICLES", "MAX_RUN_METRES", "MAX_RUN_STEPS", "MAX_STEPS",
            "OUTPUT_SUFFIXES", "PIPE_WIDTH", "POSE_TOPIC_HELP", "FramelibOption", "JsonOption", "LazyConsole",
-           "a_number", "app", "bench_app", "command", "emit_json", "err", "main", "one_held", "out", "progress_bar",
-           "report"]
+           "a_number", "app", "bench_app", "choices", "command", "emit_json", "err", "main", "one_held", "out",
+           "progress_bar", "report"]
 
 
 def framelib_paths(paths: list[Path] | None) -> list[Path] | None:
@@ -52,6 +52,26 @@ def framelib_paths(paths: list[Path] | None) -> list[Path] | None:
         raise SealError("--framelib +: give a file or folder after the '+' (--framelib +PATH adds PATH to the "
                         "standard library)")
     return [framelib_dir(), *(Path(str(p)[1:]) if plus else p for p, plus in zip(paths, added, strict=True))]
+
+
+def choices(option: str, given: list[str], known: tuple[str, ...] | list[str], what: str) -> list[str]:
+    """The names an option lists (``--policies sefm,greedy``, or ``--format`` given again and again), each checked:
+    none at all, one unknown (the known listed) or one named twice (``sefm,sefm`` ran the same policy twice, as
+    two identical columns at twice the time) is a SealError naming the option and the value as given; ``what``: the
+    kind of name ("policy"), for the message."""
+    from seal_cli.errors import SealError
+
+    names = [name.strip() for value in given for name in value.split(",") if name.strip()]
+    shown = ",".join(given)
+    if not names:
+        raise SealError(f"{option} {shown!r} names nothing; give one or more of {', '.join(known)}")
+    for name in names:
+        if name not in known:
+            raise SealError(f"{option} {shown!r}: unknown {what} {name!r}; known: {', '.join(known)}")
+    twice = next((name for i, name in enumerate(names) if name in names[:i]), None)
+    if twice is not None:
+        raise SealError(f"{option} {shown!r} names {twice!r} twice; name each once")
+    return names
 
 
 def one_held(holding: list[str] | None) -> str | None:

@@ -25,8 +25,13 @@ def reliability(
 
     from seal_cli.bench.reliability import run_cases, summarise
     from seal_cli.bench.reliability_review import cases
+    from seal_cli.errors import SealError
 
-    todo = [c for c in cases(seed, count) if match is None or match in c.name][:limit]
+    every = list(cases(seed, count))
+    todo = [c for c in every if match is None or match in c.name][:limit]
+    if not todo:  # a mistyped --match ran nothing and reported every count 0, as if all had passed
+        raise SealError(f"--match {match!r}: no case's name holds this text (of {len(every):,} cases; names start "
+                        "'R ', 'A ', 'O ', 'U ' or a number)")
     with Progress(TextColumn("cases"), BarColumn(), MofNCompleteColumn(), TimeRemainingColumn(),
                   console=err.console, transient=True, disable=not err.is_terminal) as progress:
         bar = progress.add_task("cases", total=len(todo))

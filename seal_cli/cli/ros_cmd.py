@@ -9,7 +9,17 @@ from pathlib import Path
 import typer
 from rich.table import Table
 
-from seal_cli.cli import DETECTIONS_TOPIC_HELP, POSE_TOPIC_HELP, JsonOption, bench_app, command, emit_json, err, out
+from seal_cli.cli import (
+    DETECTIONS_TOPIC_HELP,
+    POSE_TOPIC_HELP,
+    JsonOption,
+    bench_app,
+    choices,
+    command,
+    emit_json,
+    err,
+    out,
+)
 
 
 @command("import-bag")
@@ -59,15 +69,11 @@ def bench_ros(
 ) -> None:
     """Read a robot's bag (poses on /tf, vision_msgs detections) and filter it at the paper's scale: updates/s."""
     from seal_cli.bench.ros import FORMATS, measure
-    from seal_cli.errors import SealError
     from seal_cli.frames.reading import load_library
     from seal_cli.maps.formats.map_server import load_map
     from seal_cli.resources import map_path
 
-    wanted = formats or ["mcap"]
-    unknown = sorted(set(wanted) - set(FORMATS))
-    if unknown:
-        raise SealError(f"unknown format {', '.join(unknown)}; the formats are {', '.join(FORMATS)}")
+    wanted = choices("--format", formats or ["mcap"], tuple(FORMATS), "format")
     err.print("[dim]seal bench ros: writes the bag (untimed), then times reading it and one belief update per "
               "detection message (this process's CPU seconds)[/dim]")
     library, m = load_library(), load_map(map_path("apartment"))

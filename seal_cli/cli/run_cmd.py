@@ -18,6 +18,7 @@ from seal_cli.cli import (
     JsonOption,
     a_number,
     bench_app,
+    choices,
     command,
     emit_json,
     err,
@@ -233,14 +234,9 @@ def tasks(
     if limit is not None and sample is not None:      # the arguments first: they need no file
         raise SealError("give --limit (the first episodes of each task type) or --sample (a stratified sample), "
                         "not both")
-    names = [p.strip() for p in policies.split(",") if p.strip()]
-    if not names:
-        raise SealError("--policies names no policy")
+    names = choices("--policies", [policies], tuple(POLICIES), "policy")
     if backend not in ("process", "ray") or (backend == "ray" and suite != "alfred2d"):
         raise SealError(f"--backend {backend!r}: process, or ray with --suite alfred2d")
-    unknown = [name for name in names if name not in POLICIES]
-    if unknown:
-        raise SealError(f"--policies: unknown policy {unknown[0]!r}; known: {', '.join(POLICIES)}")
     if suite != "context" and (house_set != "suite" or starts is not None):
         raise SealError("--houses and --starts go with --suite context")
     if suite == "context":

@@ -139,6 +139,11 @@ def normalize_unit(text: str) -> str:
     return " ".join(text.lower().split())
 
 
+MAX_UNIT_LENGTH = 1000
+"""The longest lexical unit, in characters: the longest command seal takes
+(:data:`seal_cli.language.tokens.MAX_LENGTH`), so a longer unit could never be said."""
+
+
 @dataclass(frozen=True)
 class LexicalUnit:
     """A verb lemma, possibly of several words ("pick up", "look for"), that evokes a frame. ``object``:
@@ -163,6 +168,9 @@ class LexicalUnit:
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "text", normalize_unit(self.text))
+        if len(self.text) > MAX_UNIT_LENGTH:
+            raise SealError(f"lexical unit '{self.text[:40]}…' is {len(self.text):,} characters long, longer than any "
+                            f"command seal takes ({MAX_UNIT_LENGTH:,} characters): it could never be said", self.where)
         if not self.text or not all(re.fullmatch(r"[a-z][a-z'-]*", w) for w in self.words):
             raise SealError(f"lexical unit {self.text!r} must be one or more words of letters a-z (with ' or - "
                             "inside)", self.where)

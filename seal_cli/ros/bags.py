@@ -26,6 +26,7 @@ restart, or sim and wall time mixed), an error naming the message. Every problem
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -38,7 +39,7 @@ from seal_cli.errors import SealError, Where
 from seal_cli.ros.messages import DETECTION_TYPES, POSE_TYPES, TF
 from seal_cli.ros.reader import Bag, open_bag
 from seal_cli.ros.transforms import TfTree, Track, apply, compose, invert, quaternion_yaw
-from seal_cli.sensing.observations import Observation
+from seal_cli.sensing.observations import MAX_DETECTIONS, MAX_OBSERVATIONS, Observation
 
 __all__ = ["JUMP", "TOLERANCE", "Run", "read_run"]
 
@@ -51,6 +52,9 @@ TOLERANCE = 0.5
 JUMP = 1.0
 """How far (s) a topic's stamps may run backwards before it is a clock jump (jitter below is sorted out)."""
 TF_TOPICS = ("/tf", "/tf_static")
+MAX_COORDINATE = 1e7
+"""The largest coordinate a pose, transform or detection may give, in metres (a map's bound,
+:data:`seal_cli.maps.formats.map_server.MAX_COORDINATE`)."""
 
 
 @dataclass(frozen=True)
@@ -73,6 +77,16 @@ def _stamp(header: Any, logged: float) -> float:
 
 def _frame(name: str) -> str:
     return name.lstrip("/")
+
+
+def _check_values(bag: Bag, values: Sequence[float], what: str) -> None:
+    """Refuse a value that is not a finite number within :data:`MAX_COORDINATE`: observations that seal itself
+    would refuse (``pose: [nan, ...]``) are never written or used."""
+    if all(math.isfinite(v) and abs(v) <= MAX_COORDINATE for v in values):
+        return
+    shown = ", ".join(f"{v:g}" for v in values)
+    raise bag.error(f"{what} is ({shown}): seal takes finite numbers of at most {MAX_COORDINATE:g} m "
+                    "(a localiser or detector that lost track publishes NaN; drop those messages from the bag)")
 
 
 def _check_clock(bag: Bag, topic: str, stamps: Sequence[float]) -> None:
@@ -111,6 +125,7 @@ def _pose_track(bag: Bag, topic: str, base_frame: str) -> Track:
         stamps.append(_stamp(message.header, logged))
         t.append((pose.position.x, pose.position.y, pose.position.z))
         q.append((pose.orientation.x, pose.orientation.y, pose.orientation.z, pose.orientation.w))
+        _check_values(bag, (*t[-1], *q[-1]), f"the pose of message {i + 1} on {topic} (x, y, z, qx, qy, qz, qw)")
     if not stamps:
         raise bag.error(f"{topic} holds no messages: no poses to place the detections at")
     if not frames[0]:
@@ -137,7 +152,7 @@ def _tf_tree(bag: Bag) -> TfTree:
         if bag.topics[topic] != TF:
             raise bag.error(f"{topic} holds {bag.topics[topic]}, not {TF}")
         stamps_seen: list[float] = []
-        for _, logged, message in bag.messages(topic):
+        for i, logged, message in bag.messages(topic):
             for tr in message.transforms:
                 key = (_frame(tr.header.frame_id), _frame(tr.child_frame_id))
                 stamp = _stamp(tr.header, logged)
@@ -150,6 +165,8 @@ def _tf_tree(bag: Bag) -> TfTree:
                 s.append(stamp)
                 t.append((v.x, v.y, v.z))
                 q.append((r.x, r.y, r.z, r.w))
+                _check_values(bag, (*t[-1], *q[-1]), f"the transform {key[0]} → {key[1]} of message {i + 1} on "
+                                                     f"{topic} (x, y, z, qx, qy, qz, qw)")
         _check_clock(bag, topic, stamps_seen)
     tree = TfTree()
     parents: dict[str, str] = {}
@@ -180,6 +197,12 @@ def _detections(bag: Bag, topic: str, labels: Mapping[str, str]) -> tuple[list[f
     stamps: list[float] = []
     looks: list[Look] = []
     for i, logged, message in bag.messages(topic):
+        if i >= MAX_OBSERVATIONS:
+            raise bag.error(f"{topic} holds more than {MAX_OBSERVATIONS:,} messages: each is an observation, and seal "
+                            f"takes at most {MAX_OBSERVATIONS:,}; cut the bag (ros2 bag convert, rosbag filter)")
+        if len(message.detections) > MAX_DETECTIONS:
+            raise bag.error(f"message {i + 1} on {topic} holds {len(message.detections):,} detections: seal takes at "
+                            f"most {MAX_DETECTIONS:,} in one observation")
         stamps.append(_stamp(message.header, logged))
         seen = []
         for j, det in enumerate(message.detections):
@@ -195,6 +218,7 @@ def _detections(bag: Bag, topic: str, labels: Mapping[str, str]) -> tuple[list[f
                 raise bag.error(f"message {i + 1} on {topic} names no frame (header.frame_id is empty)")
             p = det.bbox.center.position if three_d else best.pose.pose.position
             seen.append((cls, frame, (float(p.x), float(p.y), float(p.z))))
+            _check_values(bag, seen[-1][2], f"the position of detection {j + 1} of message {i + 1} on {topic}")
         looks.append(seen)
     if not stamps:
         raise bag.error(f"{topic} holds no messages: nothing was detected")
@@ -272,6 +296,11 @@ def _place(bag: Bag, tree: TfTree, robot: Track | None, source: str, topic: str,
     points = _in_frame(bag, tree, frame, s, looks, placed)
     observations = [Observation((float(t[k, 0]), float(t[k, 1]), float(yaw[k])), points[int(k)],
                                 Where(f"{bag.path} {topic} message {k + 1}")) for k in order]
+    for k, look in zip(order, observations, strict=True):  # what the transforms made of them, bounded alike
+        _check_values(bag, look.pose, f"the robot's pose at message {k + 1} on {topic}, in frame {frame!r} "
+                                      f"(x, y, yaw)")
+        for cls, at in look.detections or ():
+            _check_values(bag, at, f"a detection of {cls} in message {k + 1} on {topic}, in frame {frame!r} (x, y)")
     return Run(tuple(observations), tuple(float(s[k]) for k in order), source, topic, int((~placed).sum()))
 
 

@@ -327,10 +327,19 @@ class SeFM:
         """One update per look (an :class:`~seal_cli.sensing.observations.Observation`: a pose and what was
         detected there, or None to simulate it from the map's ground-truth objects), then ``steps``
         more where the last look was (the map's robot pose when there is none): the paper's 20
-        updates at a fixed pose."""
+        updates at a fixed pose. A look the filter would refuse is refused before the first update, at the
+        look's place in its file when it has one."""
         from seal_cli.sensing.model import simulate_detections
         from seal_cli.sensing.observations import Observation
 
+        for look in looks:  # every look checked first, a refusal at its place in its file: not after minutes of updates
+            if look.detections is not None:
+                try:
+                    self._checked(look.pose, look.detections)
+                except SealError as exc:
+                    if look.where is None or exc.where.file is not None:
+                        raise
+                    raise SealError(exc.message, look.where, hint=exc.hint) from None
         last = looks[-1] if looks else Observation(self.map.robot.pose)
         for look in [*looks, *[last] * steps]:
             seen = look.detections

@@ -14,6 +14,7 @@ from seal_cli.bench.reliability_attacker import (
     hostile15_cases,
     hostile16_cases,
     hostile17_cases,
+    hostile18_cases,
     sparse_pgm,
 )
 from seal_cli.bench.reliability_outsider import outsider_cases
@@ -99,6 +100,20 @@ def test_picked_hostile17_cases_end_cleanly(name: str, monkeypatch: pytest.Monke
     code."""
     monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
     outcome = run_case(next(c for c in hostile17_cases() if c.name == name))
+    assert outcome.problems == []
+
+
+@pytest.mark.parametrize("name", ["A a person that is an alias of the robot: said at the alias's line",
+                                  "A a room merging another (<<: *room): map",
+                                  "A observations whose second look sees a class nobody knows: at its line",
+                                  "A bench tasks --policies sefm,sefm", "A import-bag of a NaN pose"])
+def test_picked_hostile18_cases_end_cleanly(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Each failed on main: a problem said at the alias's anchor, a merge key refused, a bad look said without its
+    line, a policy run twice, a bag's NaN pose written into observations seal then refused. This tree's code."""
+    if "import-bag" in name:
+        pytest.importorskip("rosbags")
+    monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
+    outcome = run_case(next(c for c in hostile18_cases() if c.name == name))
     assert outcome.problems == []
 
 

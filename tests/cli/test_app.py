@@ -131,3 +131,21 @@ def test_framelib_plus_alone_is_refused_not_read_as_the_current_folder(tmp_path:
     assert framelib_paths([Path("+x")])[1:] == [Path("x")]
     result = runner.invoke(app, ["frames", "--framelib", "+"])
     assert result.exit_code == 1 and "give a file or folder after" in result.output
+
+
+def test_an_option_listing_names_refuses_none_unknown_and_twice() -> None:
+    from seal_cli.cli import choices
+
+    assert choices("--policies", ["sefm, coverage"], ("sefm", "coverage"), "policy") == ["sefm", "coverage"]
+    assert choices("--format", ["mcap", "ros1"], ("mcap", "ros1"), "format") == ["mcap", "ros1"]
+    for given, said in ((["sefm,sefm"], "names 'sefm' twice"), ([","], "names nothing"), ([""], "names nothing"),
+                        (["sefm,zz"], "unknown policy 'zz'; known: sefm, coverage")):
+        with pytest.raises(SealError, match=said):
+            choices("--policies", given, ("sefm", "coverage"), "policy")
+    result = runner.invoke(app, ["bench", "tasks", "--suite", "map", "--map", "apartment", "--policies", "sefm,sefm"])
+    assert result.exit_code == 1 and "--policies 'sefm,sefm' names 'sefm' twice" in result.output
+
+
+def test_a_reliability_match_that_matches_nothing_is_refused() -> None:
+    result = runner.invoke(app, ["bench", "reliability", "--match", "no such case zzz", "--count", "0"])
+    assert result.exit_code == 1 and "--match 'no such case zzz': no case's name holds this text" in result.output

@@ -111,3 +111,13 @@ def test_needs_held_and_gets_held_read_holding_before_and_after() -> None:
     assert not dropping.needs_held() and not dropping.gets_held()     # a negation is not holding
     assert Frame("Wait", (LexicalUnit("wait"),), (), (), (), ()).first_role is None
     assert not Frame("Wait", (LexicalUnit("wait"),), (), (), (), ()).needs_held()
+
+
+def test_a_lexical_unit_longer_than_any_command_is_refused() -> None:
+    from seal_cli.frames.model import MAX_UNIT_LENGTH
+    from seal_cli.language.tokens import MAX_LENGTH
+
+    assert MAX_UNIT_LENGTH == MAX_LENGTH  # a unit is said inside a command
+    LexicalUnit(" ".join(["zap"] * 250))  # 999 characters
+    with pytest.raises(SealError, match=r"1,003 characters long, longer than any command seal takes"):
+        LexicalUnit(" ".join(["zap"] * 251))

@@ -219,3 +219,33 @@ def test_a_localiser_pose_over_odometry_transforms_carries_robot_frame_detection
     x, y, yaw = expected_pose(12.0)
     assert run.observations[0].pose == pytest.approx((x, y, yaw), abs=1e-5)
     assert run.observations[0].detections[0][1] == pytest.approx((x + math.cos(yaw), y + math.sin(yaw)), abs=1e-5)
+
+
+def test_values_seal_would_refuse_are_refused_at_their_message(tmp_path: Path) -> None:
+    """hostile18: a NaN pose, a detection at infinity or 10³⁰⁰ m, 5,000 detections in one message were imported into
+    an observations file that seal itself then refused."""
+    poses = [(1.0, -6.0, -3.0, 0.0), (2.0, math.nan, -3.0, 0.0), (3.0, -5.0, -3.0, 0.0)]
+    write_run(tmp_path / "nan.mcap", poses, [(2.5, "map", [("cup", 1.0, 1.0, 0.0)])])
+    said = message_of(tmp_path / "nan.mcap")
+    assert "the pose of message 2 on /robot_pose" in said and "(nan, -3, 0, 0, 0, 0, 1)" in said
+    good = [(1.0, -6.0, -3.0, 0.0), (3.0, -5.0, -3.0, 0.0)]
+    for x in (math.inf, 1e300):
+        write_run(tmp_path / "far.mcap", good, [(2.0, "map", [("cup", 1.0, 1.0, 0.0), ("cup", x, 1.0, 0.0)])])
+        assert "the position of detection 2 of message 1 on /detections" in message_of(tmp_path / "far.mcap")
+    write_run(tmp_path / "many.mcap", good, [(2.0, "map", [("cup", 1.0, 1.0, 0.0)] * 1001)])
+    assert "message 1 on /detections holds 1,001 detections: seal takes at most 1,000" in message_of(
+        tmp_path / "many.mcap")
+    write_run(tmp_path / "ok.mcap", good, [(2.0, "map", [("cup", 1.0, 1.0, 0.0)] * 1000)])
+    assert len(read_run(tmp_path / "ok.mcap").observations[0].detections or ()) == 1000
+
+
+def test_more_messages_than_observations_seal_takes_are_refused(tmp_path: Path,
+                                                                monkeypatch: pytest.MonkeyPatch) -> None:
+    from seal_cli.ros import bags
+
+    monkeypatch.setattr(bags, "MAX_OBSERVATIONS", 3)
+    good = [(1.0, -6.0, -3.0, 0.0), (3.0, -5.0, -3.0, 0.0)]
+    write_run(tmp_path / "b.mcap", good, [(1.5 + 0.1 * i, "map", []) for i in range(3)])
+    assert len(read_run(tmp_path / "b.mcap").observations) == 3
+    write_run(tmp_path / "b.mcap", good, [(1.5 + 0.1 * i, "map", []) for i in range(4)])
+    assert "/detections holds more than 3 messages" in message_of(tmp_path / "b.mcap")

@@ -515,3 +515,23 @@ def test_a_person_the_map_places_is_a_known_position_not_a_class_spread_over_the
     X, W = sefm.frame_particles(len(found.bindings) - 1)
     near_speaker = np.linalg.norm(X - np.asarray(m.speaker_at), axis=1) < 1.0
     assert W[near_speaker].sum() > 0.1
+
+
+def test_a_bad_look_is_refused_at_its_place_before_any_update(library: Library) -> None:
+    """hostile18: a detection of a class nobody knows, the 2nd look of an observations file, was refused with no
+    file or line, after the looks before it had been filtered."""
+    from seal_cli.errors import SealError, Where
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+    from seal_cli.sensing.observations import Observation
+
+    m = load_map(map_path("apartment"))
+    state = State.of(robot_facts(None), library.taxonomy)
+    sefm = SeFM(m, [library.frame("Stir").bind({"theme": "cup"})], state, np.random.default_rng(0),
+                SeFMConfig(particles=7))
+    looks = [Observation((-6.0, -3.0, 0.0), (("cup", (1.0, 1.0)),), Where("o.yaml", 2, 5)),
+             Observation((-6.0, -3.0, 0.0), (("zzz", (1.0, 1.0)),), Where("o.yaml", 4, 5))]
+    with pytest.raises(SealError) as caught:
+        sefm.follow(looks)
+    assert caught.value.where == Where("o.yaml", 4, 5) and "'zzz'" in caught.value.message
+    assert sefm.step == 0
