@@ -395,7 +395,8 @@ class Evoker:
         The theme's and the container's classes, else their heads, are asked."""
         first = frame.elements[0].role if frame.elements else None
         np = roles.get(first) if first is not None else None
-        if not isinstance(np, NP) or len(np.contents) != 1 or np.pronoun or np.conjuncts or np.head is None:
+        if first is None or not isinstance(np, NP) or len(np.contents) != 1 or np.pronoun or np.conjuncts \
+                or np.head is None:
             return
         if not any(not p.negated and len(p.args) == 2 and p.args[0] == first and p.args[1] in roles
                    for p in frame.postconditions):
