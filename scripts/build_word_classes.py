@@ -318,7 +318,8 @@ def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabula
     sliced it, learned from the sentence's words, the thing's class and the frames evoked
     (:func:`~seal_cli.language.slicing.slice_features`); and, for every sentence parsed, its task's kind, learned
     from its words, the frames said, the classes handled and put and how many Places
-    (:func:`~seal_cli.language.tasks.task_features`)."""
+    (:func:`~seal_cli.language.tasks.task_features`); and the classes train tasks put a thing in or on
+    (``receptacles``: a goal said beside none of them is unsaid, :func:`~seal_cli.language.goals.said_beside`)."""
     library = load_library()
     grounded = vocabulary.with_usage(usage_of(data))
     said: list[tuple[str, tuple[str, ...]]] = []
@@ -380,7 +381,9 @@ def with_steps(data: dict[str, object], rows: Sequence[dict[str, str]], vocabula
     task_keys = tuple(k for k in TASKS if kinds_told[k])
     task_weights = fit([Instance(task_keys, tuple(math.log(kinds_told[k]) for k in task_keys), task_keys.index(kind),
                                  feats) for kind, feats in told], l2)
-    return {**data, "slice_classes": [spelling[k] for k in sliceable if k in spelling],
+    holders = sorted({spelling[class_key(r[k])] for r in rows for k in ("receptacle", "mrecep")
+                      if r[k] and class_key(r[k]) in spelling})     # what train tasks put a thing in or on
+    return {**data, "receptacles": holders, "slice_classes": [spelling[k] for k in sliceable if k in spelling],
             "slice_prior": {k: kinds[k] for k in cuts if kinds[k]}, "slice_weights": cut_weights,
             "step_prior": {k: prior[k] for k in keys}, "step_weights": weights,
             "stacks": {c: dict(sorted(by.items(), reverse=True)) for c, by in sorted(stacks.items())

@@ -386,6 +386,33 @@ class Evoker:
                 roles[relation.args[1]] = pp.np
                 return
 
+    def carried_in(self, frame: Frame, roles: dict[str, Any]) -> None:
+        """"Put the spoon *with the mug* on the table", "move a knife with a bowl to the counter": the thing said with
+        "with" is read as what the thing holds ("a bowl with a knife": the knife goes in the bowl), but a spoon holds
+        nothing; when the frame puts its theme somewhere, the theme is known to hold nothing (no category the taxonomy
+        says holds things: not ``hollow``, no ``furniture``, nothing ``fixed``) and the one thing said with it is a
+        ``container``, the container holds the theme and is what is put: the spoon in the mug, the mug on the table.
+        The theme's and the container's classes, else their heads, are asked."""
+        first = frame.elements[0].role if frame.elements else None
+        np = roles.get(first) if first is not None else None
+        if first is None or not isinstance(np, NP) or len(np.contents) != 1 or np.pronoun or np.conjuncts \
+                or np.head is None:
+            return
+        if not any(not p.negated and len(p.args) == 2 and p.args[0] == first and p.args[1] in roles
+                   for p in frame.postconditions):
+            return
+        box = np.contents[0]
+        if box.head is None or box.pronoun or box.conjuncts or box.kind != "thing" or box.contents:
+            return
+        thing = self.roles.class_or_head(np)
+        if self.types.is_a(thing, "hollow") is not False or self.types.is_a(thing, "furniture") is True or \
+                self.types.is_a(thing, "fixed") is True or \
+                self.types.is_a(self.roles.class_or_head(box), "container") is not True:
+            return
+        np.contents = []
+        box.contents.append(np)
+        roles[first] = box
+
     def unfilled(self, frame: Frame, roles: Mapping[str, Any]) -> int:
         """Elements the clause leaves empty; an object left unsaid that the frame before has in hand
         is not empty ("heat the mug, move [it] to the cabinet": Place, not Go)."""
@@ -487,6 +514,7 @@ class Evoker:
                     roles[theme].contents.append(pp.np)   # "a pan on the table with an apple on the pan"
                 else:
                     host.contents.append(pp.np)
+        self.carried_in(frame, roles)
         self.asker(frame, roles)
         self.located_ground(frame, roles)
         # frames evoked by result words and contents, in the order of the words

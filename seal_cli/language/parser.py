@@ -115,7 +115,8 @@ class CommandParser:
             parse = infer_stack(parse, vocabulary.stack_model)
             parse = infer_left_in(parse, self.library, vocabulary.step_model)
             parse = infer_step(parse, self.library, vocabulary, vocabulary.step_model, vocabulary.context)
-            parse = infer_goal(parse, self.library, vocabulary.by_key, vocabulary.goal_model, vocabulary.context)
+            parse = infer_goal(parse, self.library, vocabulary.by_key, vocabulary.goal_model, vocabulary.context,
+                               vocabulary.house)
         if tagger.remarks:
             parse = replace(parse, remarks=tuple(text[a:b] for a, b in tagger.remarks))
         return parse

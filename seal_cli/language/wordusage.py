@@ -195,7 +195,8 @@ class WordUsage:
                                     add(self.slices.weights, other.slices.weights),
                                     self.slices.classes | other.slices.classes, self.slices.threshold),
                          GoalModel(add({"": self.goals.prior}, {"": other.goals.prior}).get("", {}),
-                                   add(self.goals.weights, other.goals.weights), self.goals.threshold),
+                                   add(self.goals.weights, other.goals.weights), self.goals.threshold,
+                                   self.goals.holders | other.goals.holders),
                          TaskModel(add({"": self.tasks.prior}, {"": other.tasks.prior}).get("", {}),
                                    add(self.tasks.weights, other.tasks.weights), self.tasks.threshold,
                                    GoalModel(add({"": self.tasks.carried.prior}, {"": other.tasks.carried.prior})
@@ -536,8 +537,9 @@ def _slices(data: dict[str, Any], universe: frozenset[str], where: Where) -> Sli
 
 def _goals(data: dict[str, Any], universe: frozenset[str], where: Where, name: str = "goal") -> GoalModel:
     """The unsaid-goal model of a table (``goal_prior``: {class of "classes" | "none": count}, ``goal_weights``:
-    {feature: {class | "none": w}}); ``name``: the sections' prefix (``stack_goal``: where a stack's container
-    goes, :attr:`~seal_cli.language.tasks.TaskModel.carried`)."""
+    {feature: {class | "none": w}}; ``receptacles``: [class of "classes"], what holds things,
+    :attr:`~seal_cli.language.goals.GoalModel.holders`); ``name``: the sections' prefix (``stack_goal``: where a
+    stack's container goes, :attr:`~seal_cli.language.tasks.TaskModel.carried`)."""
     def known(c: Any) -> bool:
         return isinstance(c, str) and (c == NOWHERE or class_key(c) in universe)
 
@@ -549,8 +551,11 @@ def _goals(data: dict[str, Any], universe: frozenset[str], where: Where, name: s
     if not _weight_table(raw, known):
         raise SealError(f"\"{name}_weights\" must map each feature to {{class of \"classes\" | \"{NOWHERE}\": finite "
                         "number}", where)
+    holders = data.get("receptacles", []) if name == "goal" else []
+    if not isinstance(holders, list) or not all(isinstance(c, str) and class_key(c) in universe for c in holders):
+        raise SealError("\"receptacles\" must be a list of classes of \"classes\"", where)
     return GoalModel(prior, {str(f): {(c if c == NOWHERE else class_key(c)): float(v) for c, v in by.items()}
-                             for f, by in raw.items()})
+                             for f, by in raw.items()}, holders=frozenset(holders))
 
 
 def _tasks(data: dict[str, Any], universe: frozenset[str], where: Where) -> TaskModel:

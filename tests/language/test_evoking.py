@@ -129,6 +129,28 @@ def test_a_thing_said_with_its_part_has_no_contents(library: Library, text: str,
     assert [f for f, _ in _frames(text, library)] == frames
 
 
+def _placed(text: str, library: Library) -> list[tuple[str, str | None, str | None]]:
+    parse = parse_command(text, library)
+    return [(f.frame, parse.resolve(f.elements["theme"]).head if "theme" in f.elements else None,
+             parse.resolve(f.elements["goal"]).head if "goal" in f.elements else None) for f in parse.frames]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a spoon holds nothing: the mug said with it holds the spoon, and the mug is what is put on the table
+    ("put the spoon with the mug on the table", [("Place", "spoon", "mug"), ("Place", "mug", "table")]),
+    ("move a knife with a bowl to the counter", [("Place", "knife", "bowl"), ("Place", "bowl", "counter")]),
+    ("put the ladle with the plate in the cabinet", [("Place", "ladle", "plate"), ("Place", "plate", "cabinet")]),
+    # a bowl holds things: as said
+    ("put a bowl with a fork on the table", [("Place", "fork", "bowl"), ("Place", "bowl", "table")]),
+    # neither holds (a book is in no category): as said; a frame that puts nothing anywhere: nothing carried
+    ("put the book with the pen on the desk", [("Place", "pen", "book"), ("Place", "book", "desk")]),
+    ("wash the spoon with the sponge", [("Clean", "spoon", None)]),
+])
+def test_a_thing_that_holds_nothing_said_with_a_container_goes_in_it(library: Library, text: str,
+                                                                     expected: list[object]) -> None:
+    assert _placed(text, library) == expected
+
+
 @pytest.mark.parametrize(("text", "frames"), [
     ("put a slice of cooked bread on the table", ["Slice", "Heat", "Place"]),      # the slice is what was cooked
     ("put a heated slice of bread on the table", ["Slice", "Heat", "Place"]),

@@ -12,14 +12,16 @@ import pytest
 from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
 from seal_cli.frames.taxonomy import class_key
-from seal_cli.language.goals import NOWHERE, GoalModel, goal_features, goalless, infer_goal
+from seal_cli.language.goals import NOWHERE, GoalModel, goal_features, goalless, infer_goal, said_beside
 from seal_cli.language.grounding import Vocabulary
 from seal_cli.language.parser import parse_command
 from seal_cli.language.wordusage import WordUsage, load_word_usage, shipped_word_usage
 
-KITCHEN = ("Kettle", "Mug", "StoveBurner", "CoffeeMachine", "CounterTop", "Fridge", "Sink", "DeskLamp")
+KITCHEN = ("Kettle", "Mug", "StoveBurner", "CoffeeMachine", "CounterTop", "Fridge", "Sink", "DeskLamp", "Knife",
+           "Laptop")
 MODEL = GoalModel({"StoveBurner": 10, "CounterTop": 30, "CoffeeMachine": 10, NOWHERE: 50},
-                  {"w:stove": {"stove_burner": 5.0}, "o:mug": {"coffee_machine": 4.0}})
+                  {"w:stove": {"stove_burner": 5.0}, "o:mug": {"coffee_machine": 4.0}},
+                  holders=frozenset({"StoveBurner", "CounterTop", "CoffeeMachine", "Fridge", "Sink", "Mug"}))
 
 
 def kitchen(model: GoalModel = MODEL, classes: tuple[str, ...] = KITCHEN) -> Vocabulary:
@@ -107,3 +109,37 @@ def test_the_shipped_table_puts_a_mug_back_under_the_coffee_machine_only_for_alf
     assert len(frames("heat up the coffee cup and put it in the cabinet", library, alfred)) == 2
     gpsr = Vocabulary.of(["mug", "coffee machine", "microwave", "cabinet", "person"])
     assert len(frames("heat up the coffee cup", library, gpsr)) == 1
+
+
+def test_a_goal_said_beside_a_thing_that_holds_nothing_is_unsaid(library: Library) -> None:
+    # a knife holds nothing: the kettle goes on what holds the knife, which the sentence leaves unsaid; no threshold,
+    # since the knife itself is sure to be wrong (the counter: 30 of the 50 placings, none left out)
+    assert frames("put the kettle next to the knife", library, kitchen()) == [("Place", "Kettle", "CounterTop")]
+    parse = parse_command("set the kettle in front of the laptop", library, kitchen())
+    goal = parse.to_json()["frames"][-1]["elements"]["goal"]
+    assert goal == {"text": None, "head": "counter top", "class": "CounterTop", "default": True}
+    assert "inferred" not in parse.to_json()["frames"][-1]                  # the Place was said; its goal was not
+    assert frames("put the kettle by the knife near the stove", library, kitchen())[-1][2] == "StoveBurner"
+
+
+def test_a_goal_beside_a_holder_said_on_or_in_or_in_a_house_stays(library: Library) -> None:
+    assert frames("put the kettle next to the mug", library, kitchen()) == [("Place", "Kettle", "Mug")]  # holds things
+    assert frames("put the kettle on the knife", library, kitchen()) == [("Place", "Kettle", "Knife")]   # said on it
+    assert frames("put the kettle next to the knife on the stove", library, kitchen())[-1][2] == "StoveBurner"
+    off = parse_command("put the kettle next to the knife", library, kitchen(), infer_steps=False)
+    assert said_beside(off, MODEL.holders) == 0 and said_beside(off, frozenset()) is None
+    assert infer_goal(off, library, kitchen().by_key, MODEL, [], house=True) is off
+    unknown = GoalModel(MODEL.prior, MODEL.weights)                          # a table with no "receptacles"
+    assert infer_goal(off, library, kitchen().by_key, unknown, []) is off
+
+
+def test_a_table_s_receptacles_are_read_and_a_bad_list_is_an_error(tmp_path: Path) -> None:
+    path = tmp_path / "t.json"
+    table = {"format": "seal-word-classes/1", "classes": ["Fridge", "Knife"], "words": {}, "goal_prior": {"Fridge": 2},
+             "receptacles": ["Fridge"]}
+    path.write_text(json.dumps(table))
+    assert load_word_usage([path]).goals.holders == {"fridge"}
+    path.write_text(json.dumps({**table, "receptacles": ["Banana"]}))
+    with pytest.raises(SealError, match='"receptacles" must') as err:
+        load_word_usage([path])
+    assert err.value.file == str(path)
