@@ -197,6 +197,7 @@ class Lattice:
         look = np.full((k, n), -1, dtype=np.int32)
         length = np.full(k, np.inf)
         for v, target in enumerate(candidates):
+            masks: list[tuple[int, float, np.ndarray | None, float | None]]
             nodes, metres, headings = self.looks_facing(origin, int(target))
             if not nodes:
                 if origin == target:
