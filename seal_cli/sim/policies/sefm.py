@@ -286,13 +286,13 @@ class SeFMPolicy(Policy):
                 self.snapshot(agent)
 
     def _spent_views(self, agent: Agent) -> None:
-        """Once the robot has taken the look the whole-plan search chose, the views within ``view_step`` of where it stands
-        (all round: the heading does not matter, a narrow sensor turns round at a view) are not chosen: SeFM would
-        not count a look from there as new (negative information counts once per view), so its belief does not fall
-        there and the model would expect to find there what is left of the belief where it has just looked — the
-        robot edged a few centimetres at a time, looking again, after a place the command named turned out empty. A
-        view that opens a shut place stays; the looks on the drive are left as before (measured: excluding the views
-        near them too changed three of 36 runs of the context suite, two longer by 1.5 m)."""
+        """Once the robot has taken the look the whole-plan search chose, the views within ``view_step`` of where it
+        stands (all round: the heading does not matter, a narrow sensor turns round at a view) are not chosen: SeFM
+        would not count a look from there as new (negative information counts once per view), so its belief does not
+        fall there and the model would expect to find there what is left of the belief where it has just looked —
+        the robot edged a few centimetres at a time, looking again, after a place the command named turned out
+        empty. A view that opens a shut place stays; the looks on the drive are left as before (measured: excluding
+        the views near them too changed three of 36 runs of the context suite, two longer by 1.5 m)."""
         from seal_cli.sefm.object_beliefs import ObjectModel
 
         x, y = agent.world.robot.pose[:2]
