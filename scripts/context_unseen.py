@@ -32,6 +32,7 @@ def main() -> int:
                         help="the shared data folder (default: beside the checkout)")
     parser.add_argument("--house", action="append", default=[],
                         help="only this held-out house, by its map's name (repeatable; default: all of them)")
+    parser.add_argument("--fov", type=float, help="every house's sensor sees this many degrees (default: 360)")
     args = parser.parse_args()
     names = [n.strip() for n in args.policies.split(",") if n.strip()]
     on = context.unseen_houses()
@@ -41,12 +42,16 @@ def main() -> int:
         return 1
     if args.house:
         on = [house for house in on if house.map.name in args.house]
+    if args.fov is not None and not 0 < args.fov <= 360:
+        print(f"error: --fov {args.fov:g}: degrees in (0, 360]", file=sys.stderr)
+        return 1
+    on = context.with_fov(on, args.fov)
     outcomes = list(context.run_context_suite(args.data, names, layouts=args.layouts,
                                               seed=args.seed, jobs=args.jobs, on=on))
     if args.episodes is not None:
         args.episodes.write_text("".join(json.dumps(o.to_json()) + "\n" for o in outcomes), encoding="utf-8")
     report = summarise(outcomes, names)
-    report.update({"suite": "context (unseen houses)", "layouts": args.layouts, "seed": args.seed,
+    report.update({"suite": "context (unseen houses)", "layouts": args.layouts, "seed": args.seed, "fov": args.fov,
                    "by_command": context.regroup(outcomes, names, 1), "by_house": context.regroup(outcomes, names, 0),
                    "against_prior_optimal": context.paired(outcomes, names)})
     json.dump(report, sys.stdout, indent=1)

@@ -57,7 +57,7 @@ from seal_cli.maps.formats.map_server import load_map
 from seal_cli.maps.model import Map, ObjectTruth, Robot
 
 __all__ = ["COMMANDS", "HOUSE_SETS", "START_CLEARANCE", "House", "drawn_starts", "house_set", "houses", "paired",
-           "regroup", "run_context_suite", "unseen_houses"]
+           "regroup", "run_context_suite", "unseen_houses", "with_fov"]
 
 COMMANDS = ("stir the cup", "put the spoon in the cup", "stir the mug", "pour the kettle into the mug")
 """Spoon and cup (both likely in the bedroom), twice with different frames; spoon and mug (the
@@ -118,6 +118,16 @@ def house_set(name: str, data: Path) -> list[House]:
     if name not in HOUSE_SETS:
         raise SealError(f"--houses {name!r}: one of {', '.join(HOUSE_SETS)}")
     return houses(data) if name == "suite" else unseen_houses()
+
+
+def with_fov(built: Sequence[House], fov: float | None) -> list[House]:
+    """The houses with every map's sensor seeing ``fov`` degrees (None: as drawn); refused outside (0, 360]."""
+    if fov is None:
+        return list(built)
+    if not 0 < fov <= 360:
+        raise SealError(f"--fov {fov:g}: degrees in (0, 360]")
+    return [House(dataclasses.replace(h.map, sensor=dataclasses.replace(h.map.sensor, fov_deg=float(fov))), h.starts)
+            for h in built]
 
 
 START_CLEARANCE = 0.5

@@ -207,6 +207,9 @@ def tasks(
     starts: int | None = typer.Option(None, "--starts", min=1, max=MAX_COUNT, help="With --suite context: this "
                                       "many starts per house drawn with --seed from its rooms' free space "
                                       "(default: each house's own three).", show_default=False),
+    fov: float | None = typer.Option(None, "--fov", help="With --suite context: every house's sensor sees this "
+                                     "many degrees, in (0, 360] (default: each house's own, 360).",
+                                     show_default=False),
     policies: str = typer.Option(",".join(DEFAULT_POLICIES), "--policies",
                                  help="Comma-separated policies, of: " + ", ".join(POLICIES) + "."),
     jobs: int = typer.Option(0, "--jobs", min=0, max=64, help="Worker processes (0: one per core)."),
@@ -237,8 +240,10 @@ def tasks(
     names = choices("--policies", [policies], tuple(POLICIES), "policy")
     if backend not in ("process", "ray") or (backend == "ray" and suite != "alfred2d"):
         raise SealError(f"--backend {backend!r}: process, or ray with --suite alfred2d")
-    if suite != "context" and (house_set != "suite" or starts is not None):
-        raise SealError("--houses and --starts go with --suite context")
+    if suite != "context" and (house_set != "suite" or starts is not None or fov is not None):
+        raise SealError("--houses, --starts and --fov go with --suite context")
+    if fov is not None and not 0 < fov <= 360:      # NaN too
+        raise SealError(f"--fov {fov:g}: degrees in (0, 360]")
     if suite == "context":
         from seal_cli.bench.context import HOUSE_SETS
 
@@ -281,7 +286,8 @@ def tasks(
             runs = context.run_context_suite(data, names, commands=list(commands or context.COMMANDS),
                                              layouts=layouts, seed=seed, jobs=jobs or os.cpu_count() or 1,
                                              particles=particles, framelib=libs, progress=advance,
-                                             on=context.house_set(house_set, data), starts=starts)
+                                             on=context.with_fov(context.house_set(house_set, data), fov),
+                                             starts=starts)
         else:
             runs = run_suite(data, split, names, goal=goal, limit=limit, types=types, seed=seed,
                              jobs=jobs or os.cpu_count() or 1, particles=particles, framelib=libs,
@@ -297,7 +303,7 @@ def tasks(
     elif suite == "context":
         from seal_cli.bench.context import paired, regroup
 
-        report.update({"suite": suite, "houses": house_set, "starts": starts or "the houses' own",
+        report.update({"suite": suite, "houses": house_set, "starts": starts or "the houses' own", "fov": fov,
                        "layouts": layouts, "seed": seed, "by_command": regroup(outcomes, names, 1),
                        "by_house": regroup(outcomes, names, 0), "against_prior_optimal": paired(outcomes, names)})
     else:

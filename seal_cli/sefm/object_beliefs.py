@@ -29,7 +29,8 @@ One update of the object rows, from a pose's visible region and the detections t
    **Negative information counts once per view.** A detector's misses from one viewpoint are
    not independent (what hid the object from it, or made it miss, is still there at the next
    look), so the ``−p·v`` term is applied only at a *new* view: one farther than ``view_step``
-   from, or (for a sensor that does not see all round) turned more than ``view_turn`` away from,
+   from, or (for a sensor that does not see all round) turned ``view_turn`` or more (at most the field
+   of view) away from,
    every view already used with the same places shut. From a view already used, ``v = 0``:
    standing still adds nothing to what the first look said. Detections always count;
 2. when the effective sample size falls under half the particles: **resample** (systematic),
@@ -124,7 +125,8 @@ class ObjectModel:
     view_step: float = 0.5
     """How far (m) the robot must move for a look to be a new view (its misses to count again)..."""
     view_turn: float = math.radians(30)
-    """...or how far (rad) it must turn, for a sensor that does not see all round."""
+    """...or how far (rad) it must turn, for a sensor that does not see all round (at most its field of view: a
+    sensor narrower than this sees, turned by its field, a wedge it had not seen, as the robot does looking round)."""
 
     @classmethod
     def for_sensor(cls, spec: Sensor, **overrides: float) -> ObjectModel:
@@ -150,7 +152,8 @@ class Views:
         x, y, yaw = pose
         shut = frozenset(hidden)
         for u, v, heading, closed in self.used:
-            turned = self.turn is not None and abs((yaw - heading + math.pi) % (2 * math.pi) - math.pi) > self.turn
+            turned = self.turn is not None and \
+                abs((yaw - heading + math.pi) % (2 * math.pi) - math.pi) >= self.turn - 1e-9
             if closed == shut and math.hypot(x - u, y - v) <= self.step and not turned:
                 return False
         self.used.append((x, y, yaw, shut))
@@ -184,7 +187,8 @@ class ObjectBeliefs:
         X = np.take_along_axis(X, cell_order.order_of_points(m, X)[..., None], axis=1)
         W = np.full((len(sources), particles), 1.0 / particles)
         model = model or ObjectModel.for_map(m)
-        views = Views(model.view_step, None if m.sensor.fov_deg >= 360 else model.view_turn)
+        views = Views(model.view_step, None if m.sensor.fov_deg >= 360 else
+                      min(model.view_turn, math.radians(m.sensor.fov_deg)))
         return cls(m, tuple(sources), X, W, model, views)
 
     @property

@@ -451,7 +451,7 @@ class Agent:
         if self.search_end is not None:
             self._track_searches(commanded)
         self.policy.begin(self)
-        self.look()
+        self.look_round(self.world.robot.pose[:2])  # where it starts, all round (a narrow sensor turns)
         todo = list(commanded)
         while todo and (already := self.already_so(todo[0])) is not None:
             skipped = todo.pop(0)
@@ -1005,10 +1005,10 @@ class Agent:
         if self.drive_to(view.cell, "goes to look", until=lambda: self.resolve(value, binding, role) is not None,
                          rethink=lambda: self.policy.reconsider(self, binding, value, view)):
             return None
-        self.world.face(view.look_at)
         if view.open is not None:
+            self.world.face(view.look_at)
             self.open_to_look(view.open)
-        self.look()
+        self.look_round(view.look_at)               # a narrow sensor turns round: a view sees all round
         if view.open is not None and self.resolve(value, binding, role) is None:
             self.shut_after(view.open)              # nothing sought in it: closed again, as a peek
         return None
@@ -1889,7 +1889,8 @@ class Agent:
 
     def look_round(self, goal: tuple[float, float]) -> None:
         """Face a point and look; a sensor that does not see all round then turns on the spot and
-        looks again until it has looked all round (turning costs no path)."""
+        looks again until it has looked all round (turning costs no path). Every policy's view, the
+        start of a run and a survey's views look round alike (docs/sefm.md: narrow sensors)."""
         self.world.face(goal)
         self.look()
         fov = self.world.sensor.spec.fov_deg

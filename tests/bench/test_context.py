@@ -19,6 +19,7 @@ from seal_cli.bench.context import (
     regroup,
     run_house_layout,
     unseen_houses,
+    with_fov,
 )
 from seal_cli.bench.houses import CONTEXT_PRIORS, COTTAGE_STARTS, cottage
 from seal_cli.bench.tasks import summarise
@@ -178,5 +179,22 @@ def test_bench_tasks_refuses_an_unknown_house_set_and_starts_off_the_context_sui
     bad = runner.invoke(app, ["bench", "tasks", "--suite", "context", "--houses", "mine", "--data", str(shared_data)])
     assert bad.exit_code == 1 and "--houses 'mine': one of suite, unseen" in bad.stderr
     off = runner.invoke(app, ["bench", "tasks", "--suite", "map", "--starts", "2"])
-    assert off.exit_code == 1 and "--houses and --starts go with --suite context" in off.stderr
+    assert off.exit_code == 1 and "--houses, --starts and --fov go with --suite context" in off.stderr
     assert "Traceback" not in bad.output + off.output
+
+
+def test_bench_tasks_context_fov_gives_every_house_that_sensor_and_refuses_a_senseless_one(shared_data: Path) -> None:
+    narrow = with_fov([House(cottage(), COTTAGE_STARTS)], 90.0)
+    assert narrow[0].map.sensor.fov_deg == 90.0 and narrow[0].map.sensor.range == cottage().sensor.range
+    assert narrow[0].starts == COTTAGE_STARTS and with_fov(narrow, None) == narrow
+    for bad in ("0", "-90", "361", "nan"):
+        out = runner.invoke(app, ["bench", "tasks", "--suite", "context", "--fov", bad, "--data", str(shared_data)])
+        assert out.exit_code == 1 and "degrees in (0, 360]" in out.stderr and "Traceback" not in out.output, bad
+    off = runner.invoke(app, ["bench", "tasks", "--suite", "map", "--fov", "90"])
+    assert off.exit_code == 1 and "--fov go with --suite context" in off.stderr
+    result = runner.invoke(app, ["bench", "tasks", "--suite", "context", "--houses", "unseen", "--starts", "1",
+                                 "--command", "stir the cup", "--layouts", "1", "--policies", "oracle", "--fov", "90",
+                                 "--jobs", "1", "--data", str(shared_data), "--json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert data["fov"] == 90 and data["groups"]["all"]["success"]["oracle"] == 1.0

@@ -38,6 +38,21 @@ def test_a_view_counts_once_until_the_robot_moves_turns_or_a_place_opens() -> No
     assert all_round.first_look((0.0, 0.0, 0.0), ()) and not all_round.first_look((0.0, 0.0, 3.0), ())
 
 
+def test_a_narrow_sensor_turned_by_its_field_of_view_takes_a_new_view(apartment: Map) -> None:
+    """A 1° sensor turning round on the spot (the agent at a view) sees a new sliver at each turn: each look is a
+    new view, not one of twelve (search16: a turn counted only past 30°, so a 1° look round gave the misses of 12
+    slivers of 360)."""
+    import dataclasses
+
+    narrow = dataclasses.replace(apartment, sensor=dataclasses.replace(apartment.sensor, fov_deg=1.0))
+    beliefs = ObjectBeliefs.from_prior(narrow, [source_for(narrow, "cup")], 50, np.random.default_rng(0))
+    assert beliefs.views.turn is not None and abs(beliefs.views.turn - math.radians(1.0)) < 1e-12
+    assert all(beliefs.views.first_look((0.0, 0.0, math.radians(k)), ()) for k in range(360))
+    assert not beliefs.views.first_look((0.0, 0.0, math.radians(0.5)), ())   # half a degree: the same sliver
+    wide = ObjectBeliefs.from_prior(apartment, [source_for(apartment, "cup")], 50, np.random.default_rng(0))
+    assert wide.views.turn is None
+
+
 def test_beliefs_start_from_the_prior_on_free_space(apartment: Map) -> None:
     sources = [source_for(apartment, "cup"), source_for(apartment, "fridge_1")]
     beliefs = ObjectBeliefs.from_prior(apartment, sources, 300, np.random.default_rng(0))

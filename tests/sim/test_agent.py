@@ -479,3 +479,35 @@ def test_a_person_asked_gives_no_answer_and_the_run_says_so(library: Library) ->
     assert result.completed
     assert any(r.text == 'asked Raj "do you want tea?"' for r in agent.records)
     assert result.answer == 'Raj gave no answer to "do you want tea?" (the simulator\'s people do not speak)'
+
+
+def test_a_narrow_sensor_looks_all_round_where_it_starts_and_at_every_view_it_chose(library: Library) -> None:
+    """With a 90° sensor the robot turns round (four looks 90° apart) where it starts and at every view a policy chose,
+    as a survey does; so the cottage's things, north of its start in the hall while it faces east, are seen at once.
+    A 360° sensor looks once."""
+    import dataclasses
+    import math
+
+    from seal_cli.bench.houses import cottage
+    from seal_cli.bench.mapsuite import sample_layout
+    from seal_cli.pipeline import run_on_map
+
+    m = cottage()
+    narrow = dataclasses.replace(m, sensor=dataclasses.replace(m.sensor, fov_deg=90.0))
+    agent, result = run_on_map(narrow, "pick up the spoon", library, make_policy("object_only"),
+                               rng=np.random.default_rng(0))
+    assert result.completed and result.path_m < 5.0          # the spoon stands 4 m north of the start, seen at once
+    start = [p for p in agent.looks if math.dist(p[:2], m.robot.pose[:2]) < 1e-9]
+    assert len(start) >= 4 and len({round(math.degrees(p[2])) % 360 for p in start}) >= 4
+    wide, _ = run_on_map(m, "pick up the spoon", library, make_policy("object_only"), rng=np.random.default_rng(0))
+    assert len([p for p in wide.looks if math.dist(p[:2], m.robot.pose[:2]) < 1e-9]) == 1
+    far = sample_layout(narrow, np.random.default_rng(3))     # the spoon in the kitchen's east: searched for
+    agent, result = run_on_map(far, "pick up the spoon", library, make_policy("object_only"),
+                               rng=np.random.default_rng(0))
+    assert result.completed
+    views = [r.data["view"] for r in agent.records if r.kind == "search" and "view" in r.data]
+    assert views
+    for cell in views[:-1]:      # the last view may be cut short: the spoon seen on the drive
+        x, y = agent.grid.point(cell)
+        at = [p for p in agent.looks if math.dist(p[:2], (x, y)) < 1e-6]
+        assert len({round(math.degrees(p[2])) % 360 for p in at}) >= 4, cell

@@ -287,16 +287,14 @@ class SeFMPolicy(Policy):
 
     def _spent_views(self, agent: Agent) -> None:
         """Once the robot has taken the look the whole-plan search chose, the views within ``view_step`` of where it
-        stands (all round: the heading does not matter) are not chosen: SeFM would not count a look from there as
-        new (negative information counts once per view), so its belief does not fall there and the model would
-        expect to find there what is left of the belief where it has just looked — the robot edged a few
-        centimetres at a time, looking again, after a place the command named turned out empty. A view that opens
-        a shut place stays; the looks on the drive are left as before (measured: excluding the views near them
-        too changed three of 36 runs of the context suite, two longer by 1.5 m)."""
+        stands (all round: the heading does not matter, a narrow sensor turns round at a view) are not chosen: SeFM
+        would not count a look from there as new (negative information counts once per view), so its belief does not
+        fall there and the model would expect to find there what is left of the belief where it has just looked —
+        the robot edged a few centimetres at a time, looking again, after a place the command named turned out
+        empty. A view that opens a shut place stays; the looks on the drive are left as before (measured: excluding
+        the views near them too changed three of 36 runs of the context suite, two longer by 1.5 m)."""
         from seal_cli.sefm.object_beliefs import ObjectModel
 
-        if self.map.sensor.fov_deg < 360:
-            return
         x, y = agent.world.robot.pose[:2]
         step = ObjectModel.view_step
         for c in self.planner.candidates:
@@ -1193,13 +1191,18 @@ class SeFMPolicy(Policy):
             why = f"opens {place.id}, where the belief is" if shut else f"looks at {place.id}, where the belief is"
             options.append((mass, float(field_[cell]), View(cell, place.at, open=place.id if shut else None,
                                                              why=why)))
-        for mode in modes if self.modes_too or not options else ():
-            view = self._view_of(agent, mode.mean, field_)
-            if view is not None:
-                at = agent.grid.point(view.cell)
-                seen = (np.hypot(X[:, 0] - at[0], X[:, 1] - at[1]) <= self.map.sensor.range) & ~hidden
-                options.append((float(W[seen].sum()), float(field_[view.cell]), view))
-        fresh = [o for o in options if (o[2].cell, o[2].open) not in self.tried and o[0] > self.min_mass]
+        def worth(options: list[tuple[float, float, View]]) -> list[tuple[float, float, View]]:
+            return [o for o in options if (o[2].cell, o[2].open) not in self.tried and o[0] > self.min_mass]
+
+        fresh = worth(options)
+        if self.modes_too or not fresh:     # no place holds belief worth a look: where the belief is (its modes)
+            for mode in modes:
+                view = self._view_of(agent, mode.mean, field_)
+                if view is not None:
+                    at = agent.grid.point(view.cell)
+                    seen = (np.hypot(X[:, 0] - at[0], X[:, 1] - at[1]) <= self.map.sensor.range) & ~hidden
+                    options.append((float(W[seen].sum()), float(field_[view.cell]), view))
+            fresh = worth(options)
         return max(fresh, key=lambda o: o[0] / (o[1] + self.house_scale))[2] if fresh else None
 
     def _taken(self, agent: Agent, binding: Binding, target: str, view: View | None) -> View | None:
@@ -1218,7 +1221,11 @@ class SeFMPolicy(Policy):
     min_mass = 1e-3
     """A view that would reveal less belief than this is not worth the drive."""
     modes_too = False
-    """Also consider standing on the belief's modes when the map has places (without places, always)."""
+    """Also consider standing on the belief's modes when the map has places (without places, or when no place
+    left holds belief worth a look, always: before search17 the modes were weighed only on a map with no
+    places, so a belief lying on a room's floor away from every place — the longhouse's bedroom, its bed
+    reached from nowhere — was declared spent and the robot swept the frontier 0.2 m at a time,
+    docs/benchmarks.md "This round (search17)")."""
 
     def _view_of(self, agent: Agent, point: tuple[float, float], field_: np.ndarray) -> View | None:
         """Where to stand to observe a point of the belief: the particles are poses from which the

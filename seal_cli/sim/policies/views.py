@@ -8,8 +8,15 @@ the agent takes along it (one every ``look_every`` metres and one at the end, as
 (5 cm cells, 50 000–80 000 of them) that is far too slow, so it is done on a :class:`Lattice`: the
 grid's free cells grouped in blocks of about :data:`SPACING` metres, one node per block, linked where
 the grid links their cells, with all-pairs shortest paths. A node sees another when the map's sensor
-sees the other's point from its point (range, field of view, line of sight: the sensor's exact
-model). Beliefs, sightings and distances of the search are all on the nodes.
+sees the other's point from its point (range and line of sight: the sensor's exact model). Beliefs,
+sightings and distances of the search are all on the nodes.
+
+Looks have headings. The look at a view's end sees all round (:meth:`Lattice.visible`): a sensor
+narrower than 360° turns on the spot there and looks until it has looked all round
+(:meth:`~seal_cli.sim.agent.Agent.look_round`, as the agent does at every view a policy chooses). A
+look on the way faces along the drive (:meth:`Lattice.visible_along`: the nodes within half the field
+of view of the heading from the path's node before it), as the robot does, which looks every
+``look_every`` metres without stopping to turn.
 
 Building a lattice costs a few seconds on the apartment (the all-pairs paths, then one sensor
 query per node looked from), so lattices are kept per grid and sensor (:func:`lattice_of`): the runs
@@ -87,6 +94,8 @@ class Lattice:
     """The sensor: which of some points a look from a point sees."""
     range: float
     look_every: float = 1.0
+    fov: float = 2 * np.pi
+    """The sensor's field of view (radians): what a look on the way sees (:meth:`visible_along`)."""
     _seen: dict[int, np.ndarray] = field(default_factory=dict, repr=False)
     kept: dict[Any, Any] = field(default_factory=dict, repr=False)
     """What the users of a lattice derive from it alone and keep with it (the whole-plan search's
@@ -120,6 +129,21 @@ class Lattice:
             self._seen[node] = out
         return out
 
+    def visible_along(self, node: int, heading: float) -> np.ndarray:
+        """The nodes a look from ``node`` facing ``heading`` (radians) sees: those :meth:`visible` all round
+        within half the field of view of the heading (all of them for a sensor that sees all round)."""
+        around = self.visible(node)
+        if self.fov >= 2 * np.pi - 1e-9:
+            return around
+        out = around.copy()
+        others = np.flatnonzero(around)
+        others = others[others != node]
+        if len(others):
+            d = self.points[others] - self.points[node]
+            off = np.abs((np.arctan2(d[:, 1], d[:, 0]) - heading + np.pi) % (2 * np.pi) - np.pi)
+            out[others[off > self.fov / 2 + 1e-9]] = False
+        return out
+
     def path(self, a: int, b: int) -> list[int]:
         """The nodes of a shortest path from ``a`` to ``b``, both included ([] if none)."""
         if a == b:
@@ -134,10 +158,15 @@ class Lattice:
     def looks(self, a: int, b: int) -> tuple[list[int], list[float]]:
         """The looks of a drive from ``a`` to ``b``: the nodes looked from (one every :attr:`look_every`
         metres and the end) and the metres driven at each."""
+        nodes, metres, _ = self.looks_facing(a, b)
+        return nodes, metres
+
+    def looks_facing(self, a: int, b: int) -> tuple[list[int], list[float], list[float]]:
+        """:meth:`looks`, with each look's heading (radians): the direction from the path's node before it."""
         nodes = self.path(a, b)
         if len(nodes) < 2:
-            return [], []
-        out, metres = [], []
+            return [], [], []
+        out, metres, headings = [], [], []
         along, since = 0.0, 0.0
         for u, v in zip(nodes, nodes[1:], strict=False):
             step = float(self.distance[u, v])
@@ -146,35 +175,43 @@ class Lattice:
             if since >= self.look_every and v != nodes[-1]:
                 out.append(v)
                 metres.append(along)
+                headings.append(self._heading(u, v))
                 since = 0.0
         out.append(nodes[-1])
         metres.append(along)
-        return out, metres
+        headings.append(self._heading(nodes[-2], nodes[-1]))
+        return out, metres, headings
+
+    def _heading(self, u: int, v: int) -> float:
+        dx, dy = self.points[v] - self.points[u]
+        return float(np.arctan2(dy, dx))
 
     def drive_table(self, origin: int, candidates: Sequence[int], reveals: Sequence[np.ndarray | None],
                     hidden: np.ndarray) -> DriveTable:
         """The drives from ``origin`` to each candidate (see :class:`DriveTable`). A look does not see
-        ``hidden`` nodes (in a shut receptacle); the look at the end of the drive to candidate ``v`` also
-        sees ``reveals[v]`` (what opening a receptacle there shows)."""
+        ``hidden`` nodes (in a shut receptacle); a look on the way sees what it faces (:meth:`visible_along`),
+        the look at the end of the drive to candidate ``v`` sees all round (the robot turns round at a view)
+        and also ``reveals[v]`` (what opening a receptacle there shows)."""
         k, n = len(candidates), self.size
         seen_at = np.full((k, n), np.inf, dtype=np.float32)
         look = np.full((k, n), -1, dtype=np.int32)
         length = np.full(k, np.inf)
         for v, target in enumerate(candidates):
-            nodes, metres = self.looks(origin, int(target))
+            masks: list[tuple[int, float, np.ndarray | None, float | None]]
+            nodes, metres, headings = self.looks_facing(origin, int(target))
             if not nodes:
                 if origin == target:
                     length[v] = 0.0
-                    masks = [(origin, 0.0, reveals[v])]
+                    masks = [(origin, 0.0, reveals[v], None)]
                 else:
                     continue
             else:
                 length[v] = metres[-1]
-                masks = [(u, m, None) for u, m in zip(nodes, metres, strict=True)]
-                masks[-1] = (masks[-1][0], masks[-1][1], reveals[v])
+                masks = [(u, m, None, h) for u, m, h in zip(nodes, metres, headings, strict=True)]
+                masks[-1] = (masks[-1][0], masks[-1][1], reveals[v], None)
             row, at = seen_at[v], look[v]
-            for u, m, extra in masks:
-                fresh = self.visible(u) & ~hidden
+            for u, m, extra, heading in masks:
+                fresh = (self.visible(u) if heading is None else self.visible_along(u, heading)) & ~hidden
                 if extra is not None:
                     fresh = fresh | extra
                 fresh &= ~np.isfinite(row)
@@ -188,11 +225,12 @@ _LATTICES: dict[bytes, Lattice] = {}
 
 
 def lattice_of(grid: Grid, sees: Callable[[tuple[float, float], np.ndarray], np.ndarray], sensor_key: str,
-               reach: float, look_every: float = 1.0) -> Lattice:
-    """The lattice of a grid's free space with a sensor (``sees``, ``reach`` its range; ``sensor_key``
-    names the sensor and the map whose walls cut its view), built once per grid and sensor."""
+               reach: float, look_every: float = 1.0, fov: float = 2 * np.pi) -> Lattice:
+    """The lattice of a grid's free space with a sensor (``sees`` all round, ``reach`` its range, ``fov`` its
+    field of view in radians; ``sensor_key`` names the sensor and the map whose walls cut its view), built
+    once per grid and sensor."""
     key = hashlib.blake2b(np.packbits(grid.free).tobytes() + repr((grid.shape, grid.resolution, sensor_key,
-                                                                   reach, look_every)).encode()).digest()
+                                                                   reach, look_every, fov)).encode()).digest()
     found = _LATTICES.get(key)
     if found is not None:
         return found
@@ -228,7 +266,7 @@ def lattice_of(grid: Grid, sees: Callable[[tuple[float, float], np.ndarray], np.
     for start in range(0, n, ROWS_AT_ONCE):  # a band of sources at a time: scipy's float64 rows never all at once
         rows = np.arange(start, min(n, start + ROWS_AT_ONCE))
         distance[rows], previous[rows] = dijkstra(coarse, directed=False, indices=rows, return_predecessors=True)
-    lattice = Lattice(points, rep_cells, distance, previous, sees, reach, look_every)
+    lattice = Lattice(points, rep_cells, distance, previous, sees, reach, look_every, min(float(fov), 2 * np.pi))
     if len(_LATTICES) >= 4:
         _LATTICES.pop(next(iter(_LATTICES)))
     _LATTICES[key] = lattice

@@ -189,8 +189,9 @@ class WholePlanSearch:
         m = agent.scene.map
         self.map = m
         sensor = agent.world.sensor
-        self.lattice: Lattice = lattice_of(agent.grid, lambda p, pts: sensor.visible((p[0], p[1], 0.0), pts),
-                                           f"{m.name}|{m.bounds}|{m.sensor!r}", sensor.range, agent.look_every)
+        self.lattice: Lattice = lattice_of(agent.grid, lambda p, pts: sensor.line_of_sight(p, pts),   # all round
+                                           f"{m.name}|{m.bounds}|{m.sensor!r}", sensor.range, agent.look_every,
+                                           np.radians(sensor.spec.fov_deg))
         known = tuple(sorted((k.id, k.cls, k.at, k.openable) for k in agent.known.values() if not k.movable))
         kept = self.lattice.kept.get((places_only, known))
         if kept is None:   # the same for every run on one house: kept with its lattice

@@ -554,3 +554,32 @@ def test_the_drive_on_runs_through_the_next_known_stops(library: Library) -> Non
                 for i, j in agent.stand_cells(cabinet))
     assert two[here] == pytest.approx(brute)
     assert policy._onward_field(agent, cabinet, shelf) is two   # kept for the run
+
+
+def test_the_house_view_looks_where_the_belief_lies_off_every_place_before_calling_it_spent(library: Library) -> None:
+    """The longhouse's spoon on the bedroom floor (its prior names the kitchen and the bedroom; the bed, the bedroom's
+    one place, is reached from nowhere): once the kitchen's counter and the study's desk are looked at, no place
+    holds belief worth a look, and object-only's house view goes to the belief's mode in the bedroom. Before
+    search17 it called the belief spent there (half of it on the bedroom floor) and swept the nearest frontier 0.2 m
+    at a time: 87.9 m and 151 steps on this run, 60.0 m and 61 steps now."""
+    import dataclasses
+
+    from seal_cli.bench.context import layout_seed
+    from seal_cli.bench.houses import LONGHOUSE_STARTS, longhouse
+    from seal_cli.bench.mapsuite import sample_layout
+    from seal_cli.maps.model import Robot as MapRobot
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.policies import make_policy
+
+    m = longhouse()
+    base = layout_seed(0, 0, m.name)
+    world = dataclasses.replace(sample_layout(m, np.random.default_rng(base)), robot=MapRobot(LONGHOUSE_STARTS[0]))
+    spoon = next(o.at for o in world.objects if o.cls == "spoon")
+    assert world.rooms[[r.name for r in world.rooms].index("bedroom")].contains([spoon])[0]
+    agent, result = run_on_map(world, "stir the cup", library, make_policy("object_only"),
+                               rng=np.random.default_rng(base + 1), search_end=None)
+    assert result.completed
+    said = [r.text for r in agent.records if r.kind == "search"]
+    assert any("the belief's best mode" in t for t in said)
+    assert not any("the belief is spent" in t for t in said)
+    assert result.path_m < 70.0 and result.steps < 100

@@ -195,13 +195,15 @@ def test_a_narrow_sensor_adds_a_bounded_number_of_views_and_none_that_sees_next_
 
 def test_a_narrow_sensor_s_run_weighs_a_bounded_number_of_views(monkeypatch: pytest.MonkeyPatch,
                                                                 library: Library) -> None:
-    """End to end on the cottage with a 1° sensor: the candidates stop growing at ADDED_VIEWS (set to MORE_VIEWS here:
-    reached at the first choice) but for the one view another rule asks to weigh at each choice, and each greedy
-    tour takes at most MAX_TOUR views (before: three views more at every choice, with no end)."""
+    """End to end on the cottage with a 1° sensor: the candidates never grow past ADDED_VIEWS (set to MORE_VIEWS here)
+    but for the one view another rule asks to weigh at each choice, and each greedy tour takes at most MAX_TOUR views
+    (search16: three views more at every choice, with no end). Since search17 a view looks all round (the robot
+    turns there), so the map's own views cover the belief and a 1° sensor adds none."""
     import dataclasses
 
     import seal_cli.sim.policies.completion as completion
     import seal_cli.sim.policies.whole_plan as whole_plan
+    from seal_cli.bench.mapsuite import sample_layout
     from seal_cli.pipeline import run_on_map
     from seal_cli.sim.agent import Budget
 
@@ -225,9 +227,40 @@ def test_a_narrow_sensor_s_run_weighs_a_bounded_number_of_views(monkeypatch: pyt
     monkeypatch.setattr(whole_plan, "ADDED_VIEWS", whole_plan.MORE_VIEWS)     # the cap reached at the first choice
     m = cottage()
     m = dataclasses.replace(m, sensor=dataclasses.replace(m.sensor, fov_deg=1.0))
+    m = sample_layout(m, np.random.default_rng(3))     # the cottage's own things stand in the hall, seen at the start
     run_on_map(m, "stir the cup", library, make_policy("sefm"), rng=np.random.default_rng(0), budget=Budget(steps=10))
-    assert all(added <= whole_plan.ADDED_VIEWS for _, added in counts)
-    capped = [n for n, added in counts if added == whole_plan.ADDED_VIEWS]
-    assert len(capped) >= 2                                    # it went on choosing once the views were all added
-    assert all(b - a <= 1 for a, b in zip(capped, capped[1:], strict=False))   # then only the view asked to weigh
+    assert len(counts) >= 2 and all(added <= whole_plan.ADDED_VIEWS for _, added in counts)
+    first = counts[0][0] - counts[0][1]                         # the map's own views, and the one asked to weigh
+    assert all(n - added <= first + len(counts) for n, added in counts)
+    assert counts[-1][1] < whole_plan.ADDED_VIEWS               # all-round views: the cap is not even reached
     assert tours[0] > 0
+
+
+def test_a_look_on_the_way_sees_what_it_faces_and_a_view_sees_all_round() -> None:
+    """A 90° sensor on an open corridor (nothing blocks the view): a look on the drive east sees the nodes ahead of
+    it within 45° of east, not those behind; the look at the drive's end (the view, where the robot turns round)
+    sees all round; with a 360° sensor a look on the way sees all round too."""
+    from seal_cli.sim.navigation import Grid
+    from seal_cli.sim.policies.views import lattice_of
+
+    free = np.ones((8, 80), dtype=bool)        # 0.4 m × 4 m of 5 cm cells, rows along y, columns along x
+    grid = Grid(free, (0.0, 0.0), 0.05)
+    narrow = lattice_of(grid, lambda p, pts: np.ones(len(pts), dtype=bool), "test-fov90", 10.0, 1.0, np.radians(90))
+    wide = lattice_of(grid, lambda p, pts: np.ones(len(pts), dtype=bool), "test-fov360", 10.0, 1.0)
+    west, east = (int(k) for k in narrow.node_of(np.asarray([[0.1, 0.1], [3.9, 0.1]])))
+    nodes, metres, headings = narrow.looks_facing(west, east)
+    assert len(nodes) >= 3 and all(abs(h) < np.radians(46) for h in headings)      # driving east
+    u = nodes[1]
+    ahead = narrow.points[:, 0] > narrow.points[u, 0] + 0.5
+    behind = narrow.points[:, 0] < narrow.points[u, 0] - 0.5
+    along = narrow.visible_along(u, headings[1])
+    assert along[ahead].all() and not along[behind].any()
+    assert wide.visible_along(u, headings[1])[behind].all()
+    table = narrow.drive_table(west, [east], [None], np.zeros(narrow.size, dtype=bool))
+    assert np.isfinite(table.seen_at[0]).all()                  # the far end's look sees back over the whole way
+    first = narrow.drive_table(west, [nodes[1]], [None], np.zeros(narrow.size, dtype=bool))
+    behind_start = narrow.points[:, 0] < narrow.points[west, 0] + 0.01
+    assert np.isfinite(first.seen_at[0][behind_start]).all()    # the view at its end looks round, back west too
+    away = narrow.drive_table(west, [east], [None], np.zeros(narrow.size, dtype=bool))
+    mid = np.flatnonzero((narrow.points[:, 0] > 1.5) & (narrow.points[:, 0] < 2.0))
+    assert (away.seen_at[0][mid] < metres[-1]).all()            # seen ahead on the way, before the end
