@@ -520,6 +520,10 @@ class Map:
         """The place of that name, or None."""
         return self._place_by_key.get(class_key(name))
 
+    def kinds(self) -> list[str]:
+        """The kinds of thing the map knows of, by class key, sorted: its priors' classes and its objects'."""
+        return sorted({class_key(c) for c in (*self.priors, *(o.cls for o in self.objects))})
+
     def unholdable(self, name: str) -> str | None:
         """Why the robot cannot hold a thing of this name on this map, or None: it names a room, a place,
         a person (or the speaker), or the class of a place (a fixed thing: "fridge" where fridge_1 stands)."""

@@ -300,15 +300,10 @@ def _said(phrase: Phrase | None, name: str) -> str:
     return f"{phrase.text!r} ({name})" if phrase is not None and phrase.text else name
 
 
-def _kinds_known(map: Map) -> list[str]:
-    """The kinds of thing a map knows of, by class key: its priors' classes and its objects'."""
-    return sorted({class_key(c) for c in (*map.priors, *(o.cls for o in map.objects))})
-
-
 def _unnamed_kind(phrase: Phrase, map: Map) -> str:
     """The refusal of "something", "anything" as the thing of a frame on a map: no kind to look for
     (a search for a class called "something" would sweep the house and say "no something")."""
-    kinds = _kinds_known(map)
+    kinds = map.kinds()
     known = f" (the {map.name} knows of {', '.join(kinds)})" if kinds else ""
     return (f"{phrase.text!r} does not say what kind of thing: name it{known}, or ask what is on or in "
             "a place (\"what is in the fridge?\")")
@@ -364,7 +359,7 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
     if carried and not asked and things.map is not None and (sources := _comes_from(value, things)):
         m = things.map
         where = ", ".join(f"{p.name} (in the {(p.room or '?').replace('_', ' ')})" for p in sources)
-        kinds = _kinds_known(m)
+        kinds = m.kinds()
         known = f"; the things it knows of are {', '.join(kinds)}" if kinds else ""
         word = " ".join(class_words(value))
         raise _located(f"the {m.name} has no {word} to carry, only {where}, which the robot cannot get {word} "
@@ -416,9 +411,9 @@ def _kept_in(value: str, things: Things) -> str | None:
     m = things.map
     assert m is not None
     said = [noun_lemma(w) for w in class_words(value)]
-    if not said or class_key("_".join(said)) in _kinds_known(m) or class_key(value) in _kinds_known(m):
+    if not said or class_key("_".join(said)) in m.kinds() or class_key(value) in m.kinds():
         return None
-    found = [kind for kind in _kinds_known(m) if len(words := class_words(kind)) > len(said)
+    found = [kind for kind in m.kinds() if len(words := class_words(kind)) > len(said)
              and [noun_lemma(w) for w in words[:len(said)]] == said
              and kind_of(things.taxonomy, words[-1], "container") is True]
     return found[0] if len(found) == 1 else None
@@ -513,7 +508,7 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
             return any(kind_of(tax, n, category) is True for n in (cls, *tax.names.get(class_key(cls), ())))
 
         places = [p.name for p in m.places if (p.openable if category == "openable" else does(p.cls))]
-        places += [kind for kind in _kinds_known(m) if does(kind)]
+        places += [kind for kind in m.kinds() if does(kind)]
         what = phrase.head if where_words(phrase.text) else " ".join(words_of(phrase.text)) or phrase.head
         raise _located(f"the {m.name} has no {what} (no place, thing or prior of the map names one, and what "
                        f"opens or switches is not searched for); what it knows will {FIXTURE_TYPES[category]}: "
@@ -550,7 +545,7 @@ def _kinds_known_of(phrase: Phrase, things: Things) -> bool:
     parse's, or the head's)."""
     m = things.map
     assert m is not None
-    known = {*_kinds_known(m), *(class_key(p.cls) for p in m.places)}
+    known = {*m.kinds(), *(class_key(p.cls) for p in m.places)}
     return any(class_key(c) in known for c in (phrase.cls, phrase.head) if c)
 
 

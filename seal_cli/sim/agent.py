@@ -1077,8 +1077,7 @@ class Agent:
         said = f"no {self.said(value)} found: the {m.name.replace('_', ' ')} map names none (no prior, object or " \
                "place of one), so the robot did not search the house"
         kin = taxonomy.kin(cls)
-        things = {class_key(o.cls) for o in m.objects} | {class_key(c) for c in m.priors}
-        alike = sorted(k for k in things if kin is not None and k in kin[1])
+        alike = [k for k in m.kinds() if kin is not None and k in kin[1]]
         if kin is not None and alike:
             said += f"; of its kind ({kin[0]}) the map has: {', '.join(k.replace('_', ' ') for k in alike)}"
         return said
