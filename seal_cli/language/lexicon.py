@@ -57,6 +57,7 @@ from seal_cli.language.morphology import (
 )
 from seal_cli.language.rule import AFTER_SEP, Match, Rule
 from seal_cli.language.rules import ANYWHERE, CLAUSE_START, INSIDE, WORDS
+from seal_cli.language.slips import one_slip
 from seal_cli.language.state import CLOSED, SUB_FIRST, State, lower_case_name, match_phrase
 from seal_cli.language.tags import NP_START, Tag
 from seal_cli.language.tokens import MAX_LENGTH, CommandError, Word, capitalised, tokenize
@@ -241,11 +242,7 @@ class Lexicon:
         return {}
 
     def _slipped(self, low: str) -> str:
-        near = {low[:j] + low[j + 1] + low[j] + low[j + 2:] for j in range(len(low) - 1)}     # swapped
-        near |= {low[:j] + low[j + 1:] for j in range(len(low))}                                # one too many
-        near |= {low[:j] + c + low[j:] for j in range(len(low) + 1) for c in _LETTERS}          # one left out
-        near.discard(low)
-        found = {w for w in near if w in self.units and w not in self.opening}   # "laddle": a noun
+        found = {w for w in one_slip(low) if w in self.units and w not in self.opening}   # "laddle": a noun
         return found.pop() if len(found) == 1 else ""
 
     def _split(self, words: Sequence[Word], i: int, stop: int,
@@ -312,7 +309,6 @@ def _by_particle(candidates: tuple[tuple[str, ...], ...], stores: frozenset[str]
     return {particle: tuple(units) for particle, units in found.items()}
 
 
-_LETTERS = "abcdefghijklmnopqrstuvwxyz"
 TYPO_LEAST = 4
 """The fewest letters of a word read as a unit typed with one slip (:meth:`Lexicon.mistyped`): "tkae" is "take";
 three letters leave too few words apart ("og" is no "go", "pu" no "put")."""

@@ -21,7 +21,7 @@ from seal_cli.language import english
 from seal_cli.language.english import MODALS, WH_WORDS
 from seal_cli.language.morphology import in_dictionary
 
-__all__ = ["SLIP_LONGER", "SLIP_TARGETS", "function_word"]
+__all__ = ["SLIP_LONGER", "SLIP_TARGETS", "function_word", "one_slip"]
 
 SLIP_TARGETS = frozenset(w for w in (*WH_WORDS, *MODALS, "please") if len(w) >= 3)
 """The function words a slip is read back to: the question words, the modals and "please" (the words that
@@ -39,14 +39,23 @@ _FUNCTION_WORDS = frozenset(word for table in vars(english).values() if isinstan
 "many" (one slip from "may") is known here."""
 
 
+def one_slip(low: str, letters: bool = True) -> set[str]:
+    """The words ``low`` (lower case, as typed) is one slip from, itself left out: two neighbouring letters
+    swapped, and with ``letters`` one letter typed too many or one left out. The function words' slips here and
+    the verbs' (:meth:`seal_cli.language.lexicon.Lexicon.mistyped`) are both read back through it."""
+    near = {low[:j] + low[j + 1] + low[j] + low[j + 2:] for j in range(len(low) - 1)}      # swapped
+    if letters:
+        near |= {low[:j] + low[j + 1:] for j in range(len(low))}                            # one too many
+        near |= {low[:j] + c + low[j:] for j in range(len(low) + 1) for c in _LETTERS}      # one left out
+    near.discard(low)
+    return near
+
+
 @lru_cache(maxsize=16384)
 def function_word(low: str) -> str | None:
     """The function word ``low`` (a lower-case word as typed) is one slip from, or None."""
     if len(low) < 3 or not low.isalpha() or low in _FUNCTION_WORDS or in_dictionary(low):
         return None
-    near = {low[:j] + low[j + 1] + low[j] + low[j + 2:] for j in range(len(low) - 1)}      # swapped
-    if len(low) >= SLIP_LONGER:
-        near |= {low[:j] + low[j + 1:] for j in range(len(low))}                            # one too many
-        near |= {low[:j] + c + low[j:] for j in range(len(low) + 1) for c in _LETTERS}      # one left out
+    near = one_slip(low, letters=len(low) >= SLIP_LONGER)
     found = {w for w in near & SLIP_TARGETS if len(w) == len(low) or min(len(w), len(low)) >= SLIP_LONGER}
     return found.pop() if len(found) == 1 else None
