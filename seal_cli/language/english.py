@@ -17,6 +17,27 @@ def _closed_class(*lines: str) -> frozenset[str]:
     return frozenset(" ".join(lines).split())
 
 
+NEGATED_AUXILIARIES = {"is": "isn't", "are": "aren't", "was": "wasn't", "were": "weren't", "do": "don't",
+                       "does": "doesn't", "did": "didn't", "have": "haven't", "has": "hasn't", "can": "can't",
+                       "could": "couldn't", "would": "wouldn't", "will": "won't", "should": "shouldn't"}
+"""An auxiliary or modal and its negative contraction."""
+_INVERTED_SUBJECTS = frozenset(["you", "there", "we", "i", "it", "they", "anyone", "anybody", "someone", "somebody"])
+
+
+def asked_negatively(phrases: frozenset[str]) -> frozenset[str]:
+    """The phrases and, for each that opens a question with an auxiliary before its subject ("*is there* any",
+    "*could you*", "*have we got*"), the same with the auxiliary negated ("*isn't there* any", "*couldn't you*",
+    "*haven't we got*"). A negative yes/no question asks what the positive one asks (words25): "aren't there any
+    clean spoons in the drawer?" is answered by looking for them, "can't you find the scissors?" asks for them to be
+    found; the negation says what the speaker expected, not another thing to do."""
+    more = set(phrases)
+    for phrase in phrases:
+        first, _, rest = phrase.partition(" ")
+        if first in NEGATED_AUXILIARIES and rest.split()[:1] and rest.split()[0] in _INVERTED_SUBJECTS:
+            more.add(f"{NEGATED_AUXILIARIES[first]} {rest}")
+    return frozenset(more)
+
+
 DETERMINERS = _closed_class("the a an some any this that these those each every all another both either no other such")
 NUMBERS = {"zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
            "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "a couple of": 2, "a pair of": 2, "couple": 2,
@@ -94,7 +115,8 @@ ADDITIVES = frozenset(["too", "as well", "also"])
 separator is one more object of the clause before's verb, said again (a clause of its own), never a conjunct of
 the phrase before it ("the kitchen table and the cereal")."""
 """Words that join like "and" (clauses or noun phrases)."""
-POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "will you", "would you mind",
+POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you", "would you", "will you", "might you",
+                                     "would you mind",
                     "could you please", "i want you to", "i need you to", "i would like you to",
                     "i'd like you to", "you should", "you must", "you need to", "you have to", "you will",
                     "you can", "go ahead and", "robot", "hey", "ok", "okay", "now", "first", "firstly",
@@ -121,7 +143,7 @@ POLITE = frozenset(["please", "kindly", "could you", "can you", "would you", "wi
                     "your task is to", "your job is to", "the task is to", "your next task is to",
                     "i would like for you to", "i'd like for you to", "i want for you to", "i'll need you to",
                     "i will need you to", "we need you to", "we'll need you to", "wanna", "do you wanna",
-                    "you wanna"])
+                    "you wanna"]))
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
     "when you have a moment", "when you have a minute", "when you have a second", "when you have time",
@@ -274,11 +296,11 @@ QUESTION_WORDS = frozenset(["what", "who", "which", "whose", "whom", "what's", "
 """Words that start a question the robot answers by saying something ("*What's* the biggest thing on the
 shelf?", "*Who* is in the kitchen?"): a bare question means "tell me ..." (``QUESTION_MEANS``)."""
 QUESTION_MEANS = "tell"
-WHERE_QUESTIONS = frozenset(["where is", "where are", "where 's", "where's", "where're", "where did", "where has",
-                             "where have", "where had", "is there", "are there",
-                             "is there any", "are there any", "do we have", "do we have any", "have we got",
-                             "have we got any", "do we still have", "do we still have any",
-                             "whereabouts is", "whereabouts are", "whereabouts 's", "whereabouts's"])
+WHERE_QUESTIONS = asked_negatively(frozenset([
+    "where is", "where are", "where 's", "where's", "where're", "where did", "where has", "where have", "where had",
+    "is there", "are there", "is there any", "are there any", "do we have", "do we have any", "have we got",
+    "have we got any", "do we still have", "do we still have any", "whereabouts is", "whereabouts are",
+    "whereabouts 's", "whereabouts's"]))
 """Questions about where a thing is, or whether there is one ("*where is* the cup?", "*is there* a cup in the
 kitchen?", "*do we have any* eggs?", "*where did* the cat go?", "*where have* my keys gone?", "*whereabouts is* the
 remote?": "whereabouts" asking where, as only before "is"/"are"): they mean "find ..."
@@ -289,18 +311,19 @@ WHERE_DID = (frozenset(["where", "whereabouts"]),
              frozenset(["i", "you", "we", "they", "he", "she"]))
 """"*Where did I leave* my glasses?", "*where do we keep* the batteries", "*where can I find* the sponge": where,
 an auxiliary or a modal, a subject and any verb, then what to find."""
-SEEN_ASKED = (frozenset(["have", "has", "did"]), frozenset(["you", "anyone", "anybody", "someone", "somebody"]),
+SEEN_ASKED = (frozenset(["have", "has", "did", "haven't", "hasn't", "didn't"]),
+              frozenset(["you", "anyone", "anybody", "someone", "somebody"]),
               frozenset(["see", "notice", "spot", "find", "come across"]))
 """"*Have you seen* my phone?", "*did you notice* the keys anywhere?", "*has anyone found* my glasses?": a
 question whether the thing was seen (an auxiliary of the past, a subject, a verb of perceiving or finding) asks
-to find it (``WHERE_MEANS``)."""
+to find it (``WHERE_MEANS``); asked negatively too ("*haven't you seen* my glasses?", words25)."""
 LEFT_ASKED = (frozenset(["did", "have", "has", "didn't", "haven't", "hasn't"]),
               frozenset(["i", "you", "we", "he", "she", "they", "anyone", "anybody", "someone", "somebody"]),
               frozenset(["leave", "left"]))
 """"*Did I leave* the stove on?", "*has someone left* the door open?": a question whether someone left a thing
 in a state (an auxiliary, a subject, "leave") asks about the thing's state, as "is the stove on?" does: check
 the thing (``STATE_MEANS``), the state kept."""
-REQUESTS = frozenset(["i'd like", "i would like", "i'd love", "i would love", "i'd like to have",
+REQUESTS = frozenset(["i'd like", "i would like", "i should like", "i'd love", "i would love", "i'd like to have",
                       "i would like to have", "can i have", "could i have", "may i have", "can i get", "could i get",
                       "can i please have", "could i please have", "may i please have", "i need", "i want",
                       "i'll have", "i will have", "i'll take", "can we have", "could we have", "we need", "we'd like",
@@ -335,9 +358,9 @@ KNOW_WISHES = frozenset(["i'd like to know", "i would like to know", "i want to 
                          "do you happen to know"])
 """The speaker's wish to know, said where a command starts ("*I'd like to know* the heaviest object on the
 shelf", "*do you know* how many cups are left"): it means "tell me ..." (``QUESTION_MEANS``)."""
-WHERE_ASKERS = frozenset(["tell me", "tell us", "show me", "show us",
+WHERE_ASKERS = asked_negatively(frozenset(["tell me", "tell us", "show me", "show us", "remind me", "remind us",
                           "let me know", "let us know", "know", "did you see", "have you seen", "did you notice",
-                          "have you noticed"]) | KNOW_WISHES
+                          "have you noticed"])) | KNOW_WISHES
 """A question about the robot's knowledge of where a thing is ("*do you know* where the tea spoon is?", "*can
 you tell me* where the keys are?", "*show me* where the remote is"): a request to find it and say where it is,
 read as "where is ..." ("find ...", ``WHERE_MEANS``); the verb of being after the thing is dropped

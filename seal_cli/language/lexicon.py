@@ -118,6 +118,11 @@ class Lexicon:
     opening: frozenset[str] = frozenset()
     """Verbs that are mostly nouns (``opening: true`` in the library: "dust", "vacuum", "ladle"): a unit only
     opening an imperative clause before its object (:func:`opens_before_object`), a noun anywhere else."""
+    undoable: frozenset[str] = frozenset()
+    """Units of frames that leave their theme in a state another frame of the library undoes (a one-place fact on
+    the theme that two frames' postconditions say, one way or the other: open/closed, on/off, hot/cold; what the
+    robot holds is its hands' state, not the thing's: frames that empty or fill its hands are left out): "did you
+    *close* the door?" is answered by looking at it, since it may have been opened again (words25)."""
 
     @classmethod
     def of(cls, library: Library) -> Lexicon:
@@ -149,10 +154,18 @@ class Lexicon:
                                       taxonomy.is_a(c, frame.elements[0].type) is False) | PARTS
                  for frame in library.frames for unit in frame.lexical_units if unit.split}
         # "put the lid on": a part fitted to the thing it is made with ("lid", "cover", "door"), not switched on
+        said = {frame.name: {p.predicate for p in frame.postconditions if frame.elements and
+                             p.args == (frame.elements[0].role,) and frame.elements[0].role == "theme"}
+                for frame in library.frames if not any(p.predicate == "hand_empty" for p in frame.postconditions)}
+        undone = {p for name, preds in said.items() for p in preds
+                  if any(p in other for n, other in said.items() if n != name)}
+        undoable = frozenset(unit.text for frame in library.frames if said.get(frame.name, set()) & undone
+                             for unit in frame.lexical_units)
         return cls({w: tuple(us) for w, us in units.items()}, _result_words(library),
                    tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts, apart, can, puts,
                    stores, split, frozenset(unit.split()[0] for unit in split), people_only,
-                   frozenset(unit.text for frame in library.frames for unit in frame.lexical_units if unit.opening))
+                   frozenset(unit.text for frame in library.frames for unit in frame.lexical_units if unit.opening),
+                   undoable)
 
     @cached_property
     def verb_set(self) -> frozenset[str]:

@@ -23,9 +23,10 @@ from seal_cli.language.morphology import in_dictionary
 
 __all__ = ["SLIP_LONGER", "SLIP_TARGETS", "function_word", "one_slip"]
 
-SLIP_TARGETS = frozenset(w for w in (*WH_WORDS, *MODALS, "please") if len(w) >= 3)
-"""The function words a slip is read back to: the question words, the modals and "please" (the words that
-open a request or a question)."""
+SLIP_TARGETS = frozenset(w for w in (*WH_WORDS, *MODALS, "please", "you") if len(w) >= 3)
+"""The function words a slip is read back to: the question words, the modals, "please" (the words that
+open a request or a question) and "you", the subject a request put as a question names ("can *yuo* open the
+door", words25; three letters: only two swapped)."""
 
 SLIP_LONGER = 4
 """The fewest letters of a typed word, and of the word it is read as, when a letter was left out or typed too

@@ -19,6 +19,7 @@ from seal_cli.language.rules import (
     numbers,
     open_words,
     politeness,
+    question_tags,
     requests,
     statements,
     verbs,
@@ -61,6 +62,9 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.ASKED_WHERE,
     requests.STATE_QUESTION,
     requests.LEFT_ASKED_RULE,
+    question_tags.DONE_ASKED,
+    question_tags.STATE_TAGGED,
+    question_tags.YOU_MODAL_TAGGED,
     requests.ENSURED_RULE,
     requests.ASKED_WHETHER,
     requests.FOUND_OUT_RULE,
@@ -94,6 +98,7 @@ word is tagged as what it is (``INSIDE``), and the grammar reports the missing v
 
 INSIDE: tuple[Rule, ...] = (
     clauses.END_MARK,
+    question_tags.QUESTION_TAG,
     requests.KNOW_AFTER_LET,
     requests.STATE_ASKED,
     requests.WHETHER_BE,

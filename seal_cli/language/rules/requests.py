@@ -347,6 +347,12 @@ def _state_from(s: State, k: int, end: int) -> int | None:
     return None
 
 
+def state_said(s: State, k: int, end: int) -> bool:
+    """Whether words ``k .. end`` say a state as a yes/no question asks it (:func:`_state_from`): "locked", "still
+    on", "open or closed"."""
+    return _state_from(s, k, end) is not None
+
+
 def _state_starts(s: State, k: int, last: int) -> list[int]:
     """Where a word of state ending at ``last`` may begin: the word itself, or the word before it when ``last`` is
     a particle after a state ("standing *up*", "sitting *down*"); none before ``k``."""
