@@ -626,7 +626,9 @@ class Evoker:
         self.results_of(np)
         if np.contents and role == (frame.elements[0].role if frame.elements else None):
             relation = next((p for p in frame.postconditions if not p.negated and len(p.args) == 2
-                             and p.args[0] == role and p.args[1] in roles), None)
+                             and p.args[0] == role and p.args[1] in frame.roles), None)
+            # "Move a bowl with a knife in it": the knife is put in the bowl whether or not where the bowl goes is
+            # said (it had been dropped without a goal; words25)
             if relation is not None:
                 for content in np.contents:
                     self.results_of(content)
@@ -787,8 +789,11 @@ class Evoker:
             said = self.reference.mentioned(np, frame, role)
             if said is not None:                    # "Bogdan has a question; answer it for him"
                 person = said.name or self.types.is_a(noun_lemma(said.head), "person") is True
+                words = [w for w in self.text[said.start:said.end].split() if w.lower() not in NP_OPENERS]
+                cls = self.vocabulary.grounded(words, []) if self.vocabulary is not None and words and \
+                    not person else None        # "if you see my glasses, bring them": the glasses of the map (words25)
                 return Phrase(self.text[np.start:np.end], said.head if said.name else noun_lemma(said.head),
-                              None, "person" if person else "thing", span=(np.start, np.end))
+                              cls, "person" if person else "thing", span=(np.start, np.end))
             return Phrase(self.text[np.start:np.end], np.head_text, None,
                           "thing" if np.kind == "pronoun" and np.pronoun == "it" else
                           "person" if np.kind == "pronoun" else np.kind, span=(np.start, np.end))

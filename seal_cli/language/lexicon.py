@@ -34,6 +34,7 @@ from seal_cli.language.english import (
     FINITE,
     NOMINATIVE,
     NP_OPENERS,
+    NUMBERS,
     OBJECT_PRONOUNS,
     PARTICLES,
     PARTS,
@@ -505,7 +506,7 @@ def mentions(text: str, start: int, end: int) -> list[Mention]:
     k = 0
     while k < len(words):
         low = words[k].lower
-        determined = low in NP_OPENERS
+        determined = low in NP_OPENERS or _counted(words, k)
         existential = _after_there_is(words, k) and low.isalpha() and low not in CLOSED
         someone = low in _SOMEONE
         subject = k == 0 or k == 1 and words[0].lower in SUB_FIRST      # "*ben* is in ...", "when *sam* gets home"
@@ -540,6 +541,16 @@ _SOMEONE = frozenset(["someone", "somebody"])
 """An indefinite person a statement may introduce ("*Someone*'s at the door, let them in")."""
 _SOMEWHERE = frozenset(["somewhere", "anywhere", "everywhere", "nowhere"])
 """Adverbs of place that end the phrase before them ("the dish *somewhere* in the dining room")."""
+
+
+def _counted(words: Sequence[Word], k: int) -> bool:
+    """Whether word ``k`` is a number before an open-class word ("there are *two* cups in the sink", "*3* plates"):
+    it opens a phrase as a determiner does (words25)."""
+    low = words[k].lower
+    if not (low in NUMBERS or low.isdigit()) or k + 1 >= len(words):
+        return False
+    nxt = words[k + 1].lower
+    return nxt.isalpha() and nxt not in CLOSED
 
 
 def _after_there_is(words: Sequence[Word], k: int) -> bool:

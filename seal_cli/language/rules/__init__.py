@@ -103,6 +103,7 @@ INSIDE: tuple[Rule, ...] = (
     requests.STATE_ASKED,
     requests.WHETHER_BE,
     requests.REMAINING,
+    requests.PERSON_STATE_DROPPED,
     requests.WHERE_BE_DROPPED,
     requests.ENSURED_STATE,
     requests.WISH_DROPPED,

@@ -292,19 +292,32 @@ def _person_somewhere(s: State, j: int) -> bool:
     form of a verb, :func:`_progressive`) right before a preposition of place and its phrase, and the phrase's head
     (its last word before a preposition) a person — a noun of the taxonomy's people, "he"/"she", or one word that
     is a name (capitalised, or no word the dictionary lists and no thing). Where a person is asked is finding them
-    there, whatever they are doing; of a thing the -ing form stays its state ("is the dishwasher running?")."""
+    there, whatever they are doing; of a thing the -ing form stays its state ("is the dishwasher running?"). So is an
+    adjective of state said of the person before the place ("is lucy still *asleep* in her room?", words25:
+    :func:`_person_state`)."""
     words = s.words
     if not _place_asked(s, j):
         return False
     end = _sentence_end(s, j)
-    k = next((k for k in range(j + 1, end - 1) if _progressive(s, j, k) and words[k + 1].lower in _WHETHER_WHERE
-              and s.np_starts(k + 2)), None)
+    k = next((k for k in range(j + 1, end - 1) if (_progressive(s, j, k) or _person_state(s, j, k)) and
+              words[k + 1].lower in _WHETHER_WHERE and s.np_starts(k + 2)), None)
     if k is None:
         return False
     cut = next((m for m in range(j + 1, k) if words[m].lower in PREPOSITIONS), k)
+    while cut - 1 > j and words[cut - 1].lower in STATE_ADVERBS:
+        cut -= 1                                  # "is lucy *still* asleep in her room?": the adverb is no head
     low = words[cut - 1].lower
     return low in s.lexicon.people or (noun_lemma(low) or low) in s.lexicon.people or cut == j + 1 and \
         _person_word(s, j)
+
+
+def _person_state(s: State, j: int, k: int) -> bool:
+    """Whether the word at ``k`` is an adjective said of the phrase at ``j`` after a verb of being, maybe after
+    adverbs ("is lucy *still asleep* in her room?", "is grandpa awake in the lounge?"): the state a person is in
+    where they are, which, like a progressive, leaves the question whether they are there."""
+    low = s.words[k].lower
+    return j > 0 and s.words[j - 1].lower in BE_WORDS and k > j and low.isalpha() and low not in CLOSED and \
+        is_adjective(low) and s.verb_at(k) is None
 
 
 ASKED = "asked"
@@ -629,6 +642,25 @@ def _remaining(s: State, i: int) -> Match | None:
     if nxt and nxt not in END_MARKS and nxt not in (",", ";") and nxt not in PREPOSITIONS:
         return None
     return Match(1)
+
+
+def _person_state_dropped(s: State, i: int) -> Match | None:
+    """After the person of "is lucy *still asleep* in her room?" (read as finding her there, ``WHETHER_IS_RULE``):
+    adverbs and an adjective of state before the place, or adverbs before a progressive ("is ben *still* waiting
+    in the kitchen?"), are no head of the phrase (the person is what to find); dropped (words25)."""
+    verb = s.out[s.verb_index] if s.verb_index >= 0 else None
+    if verb is None or verb.info != WHERE_MEANS or verb.lower not in _WHETHER_IS or \
+            s.prev_tag() not in (Tag.WORD, Tag.NAME) or s.verb_index != len(s.out) - 2:
+        return None
+    words = s.words
+    k = i
+    while k < len(words) and words[k].lower in STATE_ADVERBS:
+        k += 1
+    if k + 1 >= len(words) or words[k + 1].lower not in _WHETHER_WHERE or not s.np_starts(k + 2):
+        return None
+    if _person_state(s, i - 1, k):
+        return Match(k + 1 - i)
+    return Match(k - i) if k > i and _progressive(s, i - 1, k) else None
 
 
 def _whether_be(s: State, i: int) -> Match | None:
@@ -1500,6 +1532,10 @@ REMAINING = Rule("what is left", _remaining, (
     Example("is there any bread left?", "left", ""),
     Example("are there any eggs left in the fridge", "left", ""),
 ), _REMAINING, "'left' after the thing a question asks about: it remains, dropped")
+PERSON_STATE_DROPPED = Rule("the state of a person asked where", _person_state_dropped, (
+    Example("is lucy still asleep in her room?", "asleep", ""),
+    Example("is ben still waiting in the kitchen?", "still", ""),
+), None, "'is lucy still asleep in her room?': find her there; the state said of her is no head, dropped")
 WHETHER_BE = Rule("is, after see if X", _whether_be, (
     Example("see if the cat is in the garden", "is", ""),
 ), _WHETHER_IS, "the 'is' of 'see if X is in Y', dropped: 'see if' was read as 'find'")
