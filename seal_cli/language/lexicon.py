@@ -59,7 +59,7 @@ from seal_cli.language.morphology import (
 from seal_cli.language.rule import AFTER_SEP, Match, Rule
 from seal_cli.language.rules import ANYWHERE, CLAUSE_START, INSIDE, WORDS
 from seal_cli.language.slips import one_slip
-from seal_cli.language.state import CLOSED, SUB_FIRST, State, lower_case_name, match_phrase
+from seal_cli.language.state import CLOSED, SUB_FIRST, State, inflected, lower_case_name, match_phrase
 from seal_cli.language.tags import NP_START, Tag
 from seal_cli.language.tokens import MAX_LENGTH, CommandError, Word, capitalised, tokenize
 
@@ -503,15 +503,17 @@ def mentions(text: str, start: int, end: int) -> list[Mention]:
     except CommandError:
         return []
     found: list[Mention] = []
+    opened = (match_phrase(words, 0, SUBORDINATORS) or 1) if words and words[0].lower in SUB_FIRST else -1
     k = 0
     while k < len(words):
         low = words[k].lower
         determined = low in NP_OPENERS or _counted(words, k)
         existential = _after_there_is(words, k) and low.isalpha() and low not in CLOSED
         someone = low in _SOMEONE
-        subject = k == 0 or k == 1 and words[0].lower in SUB_FIRST      # "*ben* is in ...", "when *sam* gets home"
+        subject = k == 0 or k == opened           # "*ben* is in ...", "when *sam* gets home", "as soon as *dad* ..."
         named = capitalised(words[k]) or subject and lower_case_name(words, k)
-        if not (determined or existential or someone or named and low not in CLOSED and
+        bare = subject and not named and _bare_subject(words, k)      # "*grandpa* is in the garden" (words25)
+        if not (determined or existential or someone or bare or named and low not in CLOSED and
                 low not in NOMINATIVE and low not in _EXISTENTIAL):
             k += 1
             continue
@@ -529,7 +531,7 @@ def mentions(text: str, start: int, end: int) -> list[Mention]:
             oblique = first > 0 and words[first - 1].lower in PREPOSITIONS
             found.append(Mention(start + words[first].start, start + head.end, head.text,
                                  capitalised(head) or head is words[first] and named,
-                                 determined or existential or someone, oblique))
+                                 determined or existential or someone or bare, oblique))
         else:
             k = max(k, first + 1)
     return found
@@ -541,6 +543,18 @@ _SOMEONE = frozenset(["someone", "somebody"])
 """An indefinite person a statement may introduce ("*Someone*'s at the door, let them in")."""
 _SOMEWHERE = frozenset(["somewhere", "anywhere", "everywhere", "nowhere"])
 """Adverbs of place that end the phrase before them ("the dish *somewhere* in the dining room")."""
+
+
+def _bare_subject(words: Sequence[Word], k: int) -> bool:
+    """Whether word ``k``, a word the dictionary lists, in lower case and with no determiner, is the subject of a
+    finite verb ("*grandpa* is in the garden", "as soon as *dad* arrives", "*milk* is in the fridge"): a phrase of
+    its own, introduced as one said with a determiner is, no name: a pronoun takes it up where its head fits (a
+    person of the taxonomy for "him": grandpa, dad; "dinner is ready, tell him" leaves "him" unresolved)."""
+    low = words[k].lower
+    if not low.isalpha() or low in CLOSED or low.endswith("ever") or k + 1 >= len(words):
+        return False
+    nxt = words[k + 1].lower
+    return nxt in FINITE or nxt == "'s" or nxt.isalpha() and nxt not in CLOSED and inflected(nxt)
 
 
 def _counted(words: Sequence[Word], k: int) -> bool:

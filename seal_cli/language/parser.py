@@ -34,7 +34,7 @@ from seal_cli.language.goals import infer_goal
 from seal_cli.language.lexicon import CommandError, Lexicon, Tagger, Word, tokenize
 from seal_cli.language.morphology import in_verb_tables
 from seal_cli.language.phrasal import phrasal_verb
-from seal_cli.language.searches import merge_searches
+from seal_cli.language.searches import drop_found_again, merge_searches
 from seal_cli.language.slicing import infer_slice
 from seal_cli.language.stacking import infer_stack
 from seal_cli.language.state import CLOSED
@@ -102,7 +102,7 @@ class CommandParser:
         command = Syntax(text, words, self.types).transform(tree)
         clauses = Clauses(text, self.library, self.types, lexicon.speech).passes(command)
         parse = Evoker(text, self.library, self.types, vocabulary, words, tagger.remarks).command(clauses)
-        parse = merge_searches(parse)
+        parse = drop_found_again(merge_searches(parse))
         lost = swallowed(parse, words, lexicon, self.library.taxonomy.known_classes)
         if lost:
             raise _swallowed_error(parse, lost[0])

@@ -155,6 +155,12 @@ class Reference:
         person = pronoun not in ("it", "this", "that")
         said = [m for m in self._mentions if m.end <= np.start and
                 (m.name or self.types.is_a(noun_lemma(m.head), "person") is True) == person]
+        if person and not said and self.types.is_person(frame.element(role).type):
+            said = [m for m in self._mentions if m.end <= np.start and not m.oblique and not m.name and
+                    " " not in self.text[m.start:m.end].strip() and
+                    self.types.is_a(noun_lemma(m.head), "person") is None and self.path_end_said(m) is not None]
+            # "lily has to get to the garage, lead her there": a word the taxonomy does not know, said bare as the
+            # subject of a statement that has it go somewhere, is the one a person's frame leads (words25)
         if not person:
             type_ = frame.element(role).type
             fitting = [m for m in said if noun_lemma(m.head) == type_ or not self.types.is_open(type_)

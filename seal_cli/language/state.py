@@ -274,6 +274,8 @@ def read_words(words: list[Word]) -> list[Word]:
                  else w for k, w in enumerate(words)]      # "turn the radio off *its* too loud"
     return words
 
+_NEEDING = frozenset(["has", "needs", "wants"])
+"""After a bare subject and before "to", a need stated ("lily *has* to get to the garage")."""
 _BE_STATED = frozenset(["is", "are", "was", "were", "isn't", "aren't", "wasn't", "weren't"])
 """Forms of "be" after a bare noun that make it a subject ("dinner *is* ready"): no command says "X is"."""
 
@@ -395,8 +397,9 @@ class State:
             return end                                        # "Table 4 is ready", "room 12 has no towels"
         if first.isalpha() and not capitalised(words[i]) and first not in CLOSED and first not in self.lexicon.units \
                 and not first.endswith("ever") \
-                and (nxt in _BE_STATED or nxt == "'s" and not self.possessed_at(i + 2, end)):
-            return end                                        # "dinner's ready", "lunch is served" (not "whatever's")
+                and (nxt in _BE_STATED or nxt == "'s" and not self.possessed_at(i + 2, end) or
+                     nxt in _NEEDING and i + 2 < end and words[i + 2].lower == "to"):
+            return end          # "dinner's ready", "lunch is served" (not "whatever's"); "lily has to go" (words25)
         if not capitalised(words[i]) and lower_case_name(words, i):
             return end                                        # "noah has to get to the garage": a name (words24)
         if verb_lemma(first) == first and first not in SUBJECTS:
