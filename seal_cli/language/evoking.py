@@ -34,6 +34,10 @@ Fit = tuple[tuple[float, ...], Frame, dict[str, Any], list[tuple[NP, PP]]]
 and the phrases that describe a noun instead (:data:`seal_cli.language.roles.Assignment`)."""
 
 
+_IN_IT = frozenset((prep, pronoun) for prep in ("in", "on", "inside", "into", "onto") for pronoun in ("it", "them"))
+"""After contents said with a thing ("a bowl with a knife *in it*"): said to be in or on the thing."""
+
+
 class Evoker:
     """Builds the frames of one command's clauses, in order, into :attr:`frames`."""
 
@@ -627,12 +631,15 @@ class Evoker:
         if np.contents and role == (frame.elements[0].role if frame.elements else None):
             relation = next((p for p in frame.postconditions if not p.negated and len(p.args) == 2
                              and p.args[0] == role and p.args[1] in frame.roles), None)
-            # "Move a bowl with a knife in it": the knife is put in the bowl whether or not where the bowl goes is
-            # said (it had been dropped without a goal; words25)
+            unsaid = relation is not None and relation.args[1] not in roles
             if relation is not None:
                 for content in np.contents:
+                    if unsaid and tuple(self.text[content.end:].lower().split()[:2]) not in _IN_IT:
+                        continue         # "place it with the coffee maker": beside it, not in it
                     self.results_of(content)
                     self.put(content, np, relation.predicate)
+            # "Move a bowl with a knife *in it*": the knife is put in the bowl even where the bowl goes is unsaid (it
+            # was dropped; words25), when the contents are said to be in or on it
 
     def result_states(self, word: Word) -> set[str]:
         """The states a result word's frame gives its theme (``cold`` for "frozen")."""
