@@ -45,6 +45,10 @@ def back_unplaced(phrase: Phrase) -> bool:
     return phrase.refers_to is None and phrase.kind == "place" and phrase.head.lower() == "back"
 
 
+_SPEAKERS = frozenset(["me", "us", "myself", "ourselves"])
+"""The speaker said as an object: a pronoun of the third person ("them", "him") never stands for them."""
+
+
 class Reference:
     """Reference in one command: asked of the frames built so far (a list the builder appends to)."""
 
@@ -84,6 +88,8 @@ class Reference:
                 kind = phrase.kind
                 if kind in ("message", "place"):
                     continue
+                if (phrase.text or "").lower() in _SPEAKERS and np.pronoun not in _SPEAKERS:
+                    continue                         # "tell me if you find *them*": never the speaker (words25)
                 guessed = False
                 if kind == "thing" and np.pronoun in ("him", "her", "he", "she") and \
                         self.person_by_role(target, phrase):

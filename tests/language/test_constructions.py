@@ -1722,3 +1722,191 @@ def test_a_place_said_before_there_is_belongs_to_the_statement(
 def test_a_place_said_first_before_a_command_stays_the_commands(library: Library) -> None:
     assert frames("in the kitchen, find the bread knife", library) == [("Find", {"theme": "knife",
                                                                                 "ground": "kitchen"})]
+
+
+# -- words25 ---------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("isn't there any butter in the fridge?", [("Find", {"theme": "butter", "ground": "fridge"})]),
+    ("hasn't anyone seen the remote?", [("Find", {"theme": "remote"})]),
+    ("couldn't you open the window?", [("Open", {"theme": "window"})]),
+    ("can't you turn the radio down?", None),          # no unit "turn down": as the positive question reads
+    ("won't you close the curtains?", [("Close", {"theme": "curtain"})]),
+    ("don't we have any spare bulbs?", [("Find", {"theme": "bulb"})]),
+])
+def test_a_negative_question_asks_what_the_positive_one_asks(
+        text: str, want: list[tuple[str, dict[str, str]]] | None, library: Library) -> None:
+    positive = text.replace("isn't", "is").replace("hasn't", "has").replace("couldn't", "could") \
+        .replace("can't", "can").replace("won't", "will").replace("don't", "do")
+    if want is None:
+        with pytest.raises(CommandError):
+            parse_command(positive, library)
+        with pytest.raises(CommandError):
+            parse_command(text, library)
+        return
+    assert frames(text, library) == frames(positive, library) == want
+
+
+@pytest.mark.parametrize(("text", "want", "asked"), [
+    ("the garage door is shut, isn't it?", [("LookAt", {"theme": "door"})], "shut"),
+    ("the lamps upstairs are still on, aren't they?", [("LookAt", {"theme": "lamp"})], "still on"),
+    ("the oven is hot, is it?", [("LookAt", {"theme": "oven"})], "hot"),
+])
+def test_a_state_said_then_its_tag_is_the_yes_no_question(
+        text: str, want: list[tuple[str, dict[str, str]]], asked: str, library: Library) -> None:
+    parse = parse_command(text, library)
+    assert frames(text, library) == want and parse.frames[0].asked == asked
+
+
+def test_a_statement_of_state_without_a_tag_stays_no_command(library: Library) -> None:
+    with pytest.raises(CommandError):
+        parse_command("the garage door is shut.", library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("did you switch off the iron?", [("LookAt", {"theme": "iron"})]),
+    ("have you shut the gate?", [("LookAt", {"theme": "gate"})]),
+    ("you've heated the milk, haven't you?", [("LookAt", {"theme": "milk"})]),
+    ("you locked the shed, didn't you?", None),      # "lock": Open's "unlock" only; no unit of its own
+    ("did you see my scarf?", [("Find", {"theme": "scarf"})]),         # a search asked, as before
+])
+def test_whether_the_robot_did_a_deed_another_frame_undoes_is_looking(
+        text: str, want: list[tuple[str, dict[str, str]]] | None, library: Library) -> None:
+    if want is None:
+        with pytest.raises(CommandError):
+            parse_command(text, library)
+        return
+    assert frames(text, library) == want
+
+
+def test_a_deed_that_leaves_no_state_to_look_at_is_no_check(library: Library) -> None:
+    # picking up fills the robot's hands: its own state, not the thing's (Lexicon.undoable leaves it out)
+    with pytest.raises(CommandError, match="unknown verb 'did'"):
+        parse_command("did you pick up the towel?", library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("you couldn't fetch me a blanket, could you?", [("Bring", {"theme": "blanket", "recipient": "me"})]),
+    ("you'll water the plants, won't you?", None),                      # "water": no unit
+    ("you'll shut the window, won't you?", [("Close", {"theme": "window"})]),
+    ("you wouldn't turn the lamp on, would you?", [("ToggleOn", {"theme": "lamp"})]),
+])
+def test_you_and_a_modal_then_a_tag_is_a_polite_request(
+        text: str, want: list[tuple[str, dict[str, str]]] | None, library: Library) -> None:
+    if want is None:
+        with pytest.raises(CommandError):
+            parse_command(text, library)
+        return
+    assert frames(text, library) == want
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("can yuo close the door", [("Close", {"theme": "door"})]),
+    ("could oyu shut the window", [("Close", {"theme": "window"})]),
+])
+def test_you_typed_with_two_letters_swapped(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want
+
+
+def test_remind_me_where_asks_to_find(library: Library) -> None:
+    assert frames("can you remind me where I put my wallet?", library) == [("Find", {"theme": "wallet"})]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("is grandma still awake in the lounge?", [("Find", {"theme": "grandma", "ground": "lounge"})]),
+    ("is Tom asleep in his room?", [("Find", {"theme": "Tom", "ground": "room"})]),
+    ("is dad still waiting at the door?", [("Find", {"theme": "dad", "ground": "door"})]),
+])
+def test_a_persons_state_asked_where_they_are_is_finding_them(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want
+
+
+def test_a_things_state_asked_where_it_is_stays_looking(library: Library) -> None:
+    assert [f for f, _ in frames("is the heater still on in the kitchen?", library)] == ["LookAt"]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("in the kitchen there are three mugs, wash them", [("Clean", {"theme": "mug"})]),
+    ("there are 2 towels on the floor, pick them up", [("Pick", {"theme": "towel", "source": "floor"})]),
+])
+def test_a_number_opens_a_statements_phrase(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert [(f, {r: h for r, h in e.items() if r != "instrument"}) for f, e in frames(text, library)] == want
+
+
+def test_a_pronoun_for_a_conditions_phrase_is_grounded_in_the_map(library: Library) -> None:
+    from seal_cli.language.grounding import vocabulary_of_map
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+
+    vocabulary = vocabulary_of_map(load_map(map_path("bungalow")))
+    bring = parse_command("if you see my glasses, bring them over", library, vocabulary).frames[-1]
+    assert (bring.frame, bring.elements["theme"].head, bring.elements["theme"].cls) == ("Bring", "glass", "glasses")
+    (bring,) = parse_command("my glasses are on the bedside table. bring them", library, vocabulary).frames
+    assert bring.elements["theme"].cls == "glasses"
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("Move a pan with a spoon in it", [("Place", {"theme": "spoon", "goal": "pan"}), ("Place", {"theme": "pan"})]),
+    ("move the tray with the cups on it", [("Place", {"theme": "cup", "goal": "tray"}),
+                                          ("Place", {"theme": "tray"})]),
+    ("place it with the toaster", None),              # beside it: no contents
+])
+def test_contents_said_in_a_moved_thing_are_put_in_it_without_a_goal(
+        text: str, want: list[tuple[str, dict[str, str]]] | None, library: Library) -> None:
+    got = frames(text, library)
+    if want is None:
+        assert len(got) == 1
+        return
+    assert got == want
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("grandma is in the lounge, take her a cushion", [("Bring", {"theme": "cushion", "recipient": "grandma"})]),
+    ("once mum gets back, tell her the parcel came", [("Tell", {"recipient": "mum", "message": "the parcel came"})]),
+    ("bread is on the counter, slice it", [("Slice", {"theme": "bread"})]),
+])
+def test_a_bare_subject_of_a_statement_is_introduced(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert [(f, {r: h for r, h in e.items() if r != "instrument"}) for f, e in frames(text, library)] == want
+
+
+def test_a_bare_subject_that_is_no_person_is_no_him(library: Library) -> None:
+    (tell,) = parse_command("lunch is ready, tell him", library).frames
+    assert tell.elements["recipient"].head == "him"
+
+
+def test_a_word_said_bare_who_has_to_go_somewhere_is_the_one_led(library: Library) -> None:
+    assert frames("daisy needs to get to the porch, take her there", library) == [
+        ("Guide", {"theme": "daisy", "goal": "porch"})]
+    assert frames("violet has to get from the hall to the study, lead her there", library) == [
+        ("Guide", {"theme": "violet", "source": "hall", "goal": "study"})]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("search the garden for the dog, and when you find him, bring him in", None),
+    ("look for the remote in the lounge and if you find it, put it on the table",
+     [("Find", {"theme": "remote", "ground": "lounge"}), ("Place", {"theme": "remote", "goal": "table"})]),
+    ("find my wallet and let me know if you find it", None),
+])
+def test_a_search_said_again_as_its_own_success_is_one_search(
+        text: str, want: list[tuple[str, dict[str, str]]] | None, library: Library) -> None:
+    got = frames(text, library)
+    if want is None:
+        assert [f for f, _ in got].count("Find") == 1
+        return
+    assert got == want
+
+
+def test_a_told_condition_of_finding_is_the_message(library: Library) -> None:
+    parse = parse_command("look for the car keys and tell me if you find them", library)
+    assert [f.frame for f in parse.frames] == ["Find", "Tell"]
+    assert parse.frames[1].elements["message"].text == "if you find them"
+
+
+def test_a_second_search_for_another_thing_stays_a_search(library: Library) -> None:
+    # finding something else after "if you" is no success of the first search: both stay
+    assert [f for f, _ in frames("look for the cup, and if you find the plate, bring it", library)] == [
+        "Find", "Find", "Bring"]
