@@ -311,12 +311,14 @@ WHERE_DID = (frozenset(["where", "whereabouts"]),
              frozenset(["i", "you", "we", "they", "he", "she"]))
 """"*Where did I leave* my glasses?", "*where do we keep* the batteries", "*where can I find* the sponge": where,
 an auxiliary or a modal, a subject and any verb, then what to find."""
-SEEN_ASKED = (frozenset(["have", "has", "did", "haven't", "hasn't", "didn't"]),
+SEEN_ASKED = (frozenset(["have", "has", "did", "haven't", "hasn't", "didn't", "can", "could", "can't", "couldn't"]),
               frozenset(["you", "anyone", "anybody", "someone", "somebody"]),
               frozenset(["see", "notice", "spot", "find", "come across"]))
 """"*Have you seen* my phone?", "*did you notice* the keys anywhere?", "*has anyone found* my glasses?": a
 question whether the thing was seen (an auxiliary of the past, a subject, a verb of perceiving or finding) asks
-to find it (``WHERE_MEANS``); asked negatively too ("*haven't you seen* my glasses?", words25)."""
+to find it (``WHERE_MEANS``); asked negatively too ("*haven't you seen* my glasses?"), and whether it can be
+seen ("*can you see* the cat anywhere?": where "can you" is no politeness before a verb of the library; "can you
+see the guest out" stays Guide's), words25."""
 LEFT_ASKED = (frozenset(["did", "have", "has", "didn't", "haven't", "hasn't"]),
               frozenset(["i", "you", "we", "he", "she", "they", "anyone", "anybody", "someone", "somebody"]),
               frozenset(["leave", "left"]))

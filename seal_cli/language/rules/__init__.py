@@ -161,6 +161,7 @@ WORDS: tuple[Rule, ...] = (
     function_words.IF_ASKED,
     function_words.ALTERNATIVES_TOLD,
     function_words.OUT_OF_THE_HOUSE,
+    function_words.PLACE_WORD_AFTER_FROM,
     function_words.HERE,
     function_words.BACK,
     function_words.PREPOSITION,

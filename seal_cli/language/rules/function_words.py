@@ -185,6 +185,27 @@ def _here(s: State, i: int) -> Match | None:
     return None
 
 
+_WHENCE = frozenset(["from"])
+"""Prepositions of where a motion starts: after them a place word names the place ("from *upstairs*")."""
+
+
+def _place_word_after_from(s: State, i: int) -> Match | None:
+    """"Get my teddy from *upstairs*", "bring the laundry from *downstairs*": a one-word place ("upstairs",
+    "downstairs", "indoors") right after a preposition of where a motion starts names that place, as a
+    noun does (words25): the source, not a dangling "here" the grammar refuses after a preposition."""
+    words = s.words
+    if not s.out or s.prev_tag() != Tag.PREP or s.out[-1].info not in _WHENCE or \
+            words[i].lower not in _PLACE_WORDS:
+        return None
+    nxt = s.next_lower(i)
+    if nxt and nxt not in END_MARKS and nxt not in (",", ";", "and", "then", "please", "to", "into", "onto"):
+        return None
+    return s.emit(i, 1, Tag.WORD)
+
+
+_PLACE_WORDS = frozenset(w for w in HERE_WORDS if " " not in w and w not in ("here", "there"))
+
+
 def _preposition(s: State, i: int) -> Match | None:
     if s.in_np():
         return None
@@ -356,6 +377,10 @@ def _phrase_at(s: State, first: Word) -> list[Word]:
     return list(out[k:end])
 
 
+PLACE_WORD_AFTER_FROM = Rule("a place word after from", _place_word_after_from, (
+    Example("fetch my slippers from upstairs", "upstairs", Tag.WORD),
+    Example("bring the laundry from downstairs", "downstairs", Tag.WORD),
+), _PLACE_WORDS, "'from upstairs': the place word names where the motion starts, as a noun")
 HERE = Rule("here and there", _here, (
     Example("bring it here", "here", Tag.HERE),
     Example("how many cups are there on the table", "there", Tag.THERE),

@@ -151,20 +151,40 @@ def _where_did(s: State, i: int) -> Match | None:
                  expect=False, verb=WHERE_MEANS, using=False)
 
 
+_CAN_YOU = frozenset(["can you", "could you", "can't you", "couldn't you"])
+"""Politeness that may be the question whether the robot can see a thing ("*can you* see the cat anywhere?")."""
+
+
+def _asked_alone_last(s: State, i: int) -> bool:
+    """Whether the sentence from ``i`` is a question ending the command, with no particle "out" in it: "can you see
+    the cat anywhere?" asks to find it; "can you see the man by the door? greet him" introduces him (a question
+    of perception before the command, words24), "can you see the guest out" is Guide's."""
+    words = s.words
+    end = _sentence_end(s, i)
+    return end < len(words) and words[end].lower == "?" and all(w.lower in END_MARKS for w in words[end:]) and \
+        not any(w.lower == "out" for w in words[i:end])
+
+
 def _seen_asked(s: State, i: int) -> Match | None:
     words = s.words
     auxiliaries, subjects, seeing = SEEN_ASKED
-    if i + 3 >= len(words) or WHERE_MEANS not in s.lexicon.units or words[i].lower not in auxiliaries or \
-            words[i + 1].lower not in subjects:
+    if WHERE_MEANS not in s.lexicon.units:
+        return None
+    if i + 3 < len(words) and words[i].lower in auxiliaries and words[i + 1].lower in subjects:
+        v = i + 2
+    elif s.out and s.out[-1].tag == Tag.POLITE and s.out[-1].lower in _CAN_YOU and s.verb_at(i) is None and \
+            i + 1 < len(words) and _asked_alone_last(s, i):
+        v = i                                        # "can you | see the cat anywhere?" (words25)
+    else:
         return None
     for n in (2, 1):                                 # "come across" before "see"
-        if i + 2 + n > len(words):
+        if v + n > len(words):
             continue
-        said = [verb_lemma(words[i + 2].lower) or words[i + 2].lower, *(w.lower for w in words[i + 3:i + 2 + n])]
-        if " ".join(said) in seeing and i + 2 + n < len(words) and s.np_starts(i + 2 + n):
-            end = words[i + 1 + n].end
-            return Match(2 + n, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, WHERE_MEANS),),
-                         expect=False, verb=WHERE_MEANS, using=False)
+        said = [verb_lemma(words[v].lower) or words[v].lower, *(w.lower for w in words[v + 1:v + n])]
+        if " ".join(said) in seeing and v + n < len(words) and s.np_starts(v + n):
+            end = words[v + n - 1].end
+            return Match(v + n - i, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB,
+                                          WHERE_MEANS),), expect=False, verb=WHERE_MEANS, using=False)
     return None
 
 
@@ -1389,10 +1409,11 @@ WHERE_DID_RULE = Rule("where did I leave", _where_did, (
     Example("where does Priya keep her tea", "where does Priya keep", Tag.VERB),
 ), WHERE_DID[0], "'where did I leave X', 'where do we keep X': find X")
 SEEN_ASKED_RULE = Rule("have you seen", _seen_asked, (
+    Example("can you see my phone anywhere?", "see", Tag.VERB),
     Example("have you seen my phone anywhere", "have you seen", Tag.VERB),
     Example("Did you notice the keys in the hall?", "Did you notice", Tag.VERB),
     Example("has anyone come across my glasses", "has anyone come across", Tag.VERB),
-), SEEN_ASKED[0], "'have you seen X', 'did you notice X': find X")
+), SEEN_ASKED[0] | first_words(SEEN_ASKED[2]), "'have you seen X', 'did you notice X', 'can you see X?': find X")
 LEFT_ASKED_RULE = Rule("did someone leave X in a state", _left_asked, (
     Example("did I leave the stove on", "did I leave", Tag.VERB),
     Example("Has anyone left the back door open?", "open", Tag.COND),
