@@ -1312,6 +1312,59 @@ def _know_wish(s: State, i: int) -> Match | None:
                  expect=False, verb=QUESTION_MEANS, using=False)
 
 
+_COUNTED = "how many"
+"""The unit of counting a question of number opens with."""
+
+
+def _how_much_counted(s: State, i: int) -> Match | None:
+    """"*How much* plates are on the table?": "how much" before a plural noun (a learner's "much" for "many", the
+    noun's plural saying things are counted) asks how many (words25); before a noun with no plural ("how much milk
+    is left?") it stays an amount, no count."""
+    words = s.words
+    unit = tuple(_COUNTED.split())
+    if i + 2 >= len(words) or words[i + 1].lower != "much" or unit not in s.lexicon.units.get(unit[0], ()):
+        return None
+    k = i + 2
+    while k < len(words) and words[k].lower.isalpha() and words[k].lower not in CLOSED and not is_plural(
+            words[k].lower) and s.verb_at(k) is None:
+        k += 1                                       # "how much *dirty* plates"
+    if k >= len(words) or not is_plural(words[k].lower) or words[k].lower in CLOSED:
+        return None
+    end = words[i + 1].end
+    return Match(2, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, _COUNTED),),
+                 expect=False, verb=_COUNTED, using=False)
+
+
+_PLACE_NOUNS = frozenset(["room", "place", "part", "floor"])
+_STRANDED = frozenset(["in", "at", "on"])
+
+
+def _which_place(s: State, i: int) -> Match | None:
+    """"*Which room is* grandma in?", "what room are the kids in", "which floor is the laundry on?": which place a
+    thing or person is in asks where it is: find it (``WHERE_MEANS``, as "where is grandma?"); the preposition left
+    at the end is dropped (``STRANDED_WHERE``, words25)."""
+    words = s.words
+    if WHERE_MEANS not in s.lexicon.units or i + 4 >= len(words) or \
+            noun_lemma(words[i + 1].lower) not in _PLACE_NOUNS or words[i + 2].lower not in ("is", "are", "'s") or \
+            not s.np_starts(i + 3):
+        return None
+    end = _sentence_end(s, i)
+    if words[end - 1].lower not in _STRANDED or end - 1 <= i + 3:
+        return None
+    last = words[i + 2].end
+    return Match(3, (Word(s.text_of(words[i].start, last), words[i].start, last, Tag.VERB, WHERE_MEANS),),
+                 expect=False, verb=WHERE_MEANS, using=False)
+
+
+def _stranded_where(s: State, i: int) -> Match | None:
+    verb = s.out[s.verb_index] if s.verb_index >= 0 else None
+    if verb is None or verb.info != WHERE_MEANS or verb.lower.split()[0] not in ("which", "what") or \
+            s.words[i].lower not in _STRANDED or s.prev_tag() not in (Tag.WORD, Tag.NAME):
+        return None
+    nxt = s.next_lower(i)
+    return Match(1) if not nxt or nxt in END_MARKS else None
+
+
 def _number_of(s: State, i: int) -> Match | None:
     words = s.words
     n = _phrase(s, i, NUMBER_OF)
@@ -1598,6 +1651,17 @@ KNOW_WISH = Rule("wish to know", _know_wish, (
             Tag.VERB),
     Example("Any idea how many drinks are in the fridge?", "Any idea how many", Tag.VERB),
 ), first_words(KNOW_WISHES), "'I'd like to know X', 'do you know X', 'any idea X': tell me X")
+HOW_MUCH_COUNTED = Rule("how much of a plural", _how_much_counted, (
+    Example("how much cups are in the sink?", "how much", Tag.VERB),
+    Example("how much dirty towels are there in the basket", "how much", Tag.VERB),
+), frozenset(["how"]), "'how much plates': how many (a plural counts)")
+WHICH_PLACE = Rule("which room is X in", _which_place, (
+    Example("which room is grandpa in?", "which room is", Tag.VERB),
+    Example("what floor is the laundry on", "what floor is", Tag.VERB),
+), frozenset(["which", "what"]), "'which room is X in?': find X (where is X)")
+STRANDED_WHERE = Rule("the preposition left at the end of which room", _stranded_where, (
+    Example("which room is grandpa in?", "in", ""),
+), _STRANDED, "the 'in' of 'which room is X in?': dropped")
 NUMBER_OF_RULE = Rule("the number of", _number_of, (
     Example("Tell me the total number of snacks on the desk.", "Tell me the total number of", Tag.VERB),
     Example("What number of people in the bedroom wear white jackets?", "What number of", Tag.VERB),
