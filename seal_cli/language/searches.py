@@ -54,8 +54,9 @@ def drop_found_again(parse: Parse) -> Parse:
         theme = again.elements.get("theme")
         before = " ".join(text[:again.span[0]].lower().replace(",", " ").split())
         ref = theme.refers_to if theme is not None else None
-        if again.frame != SEARCH or ref is None or ref[1] != "theme" or frames[ref[0]].frame != SEARCH or \
-                set(again.elements) != {"theme"} or not any(before.endswith(p) for p in _ON_FINDING):
+        if again.frame != SEARCH or ref is None or ref[1] != "theme" or ref[0] >= k or \
+                frames[ref[0]].frame != SEARCH or set(again.elements) != {"theme"} or \
+                not any(before.endswith(p) for p in _ON_FINDING):
             k += 1
             continue
         told = frames[k - 1]

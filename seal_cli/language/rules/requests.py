@@ -1358,7 +1358,7 @@ def _which_place(s: State, i: int) -> Match | None:
 
 def _stranded_where(s: State, i: int) -> Match | None:
     verb = s.out[s.verb_index] if s.verb_index >= 0 else None
-    if verb is None or verb.info != WHERE_MEANS or verb.lower.split()[0] not in ("which", "what") or \
+    if verb is None or verb.info != WHERE_MEANS or verb.lower.split()[:1] not in (["which"], ["what"]) or \
             s.words[i].lower not in _STRANDED or s.prev_tag() not in (Tag.WORD, Tag.NAME):
         return None
     nxt = s.next_lower(i)
