@@ -1910,3 +1910,39 @@ def test_a_second_search_for_another_thing_stays_a_search(library: Library) -> N
     # finding something else after "if you" is no success of the first search: both stay
     assert [f for f, _ in frames("look for the cup, and if you find the plate, bring it", library)] == [
         "Find", "Find", "Bring"]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("fetch my slippers from upstairs to the bedroom", [("Bring", {"theme": "slipper", "goal": "bedroom",
+                                                                   "source": "upstairs"})]),
+    ("pick up the laundry from downstairs", [("Pick", {"theme": "laundry", "source": "downstairs"})]),
+])
+def test_a_place_word_after_from_is_the_source(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("could you see my wallet anywhere?", [("Find", {"theme": "wallet", "ground": "anywhere"})]),
+    ("can you see the visitor out", [("Guide", {"theme": "visitor", "goal": "exit"})]),     # Guide's, as before
+    ("can you see the woman by the fridge? follow her", [("Follow", {"theme": "woman", "source": "fridge"})]),
+])
+def test_can_you_see_x_alone_asks_to_find_it(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("how much spoons are in the drawer?", [("Count", {"theme": "spoon", "ground": "drawer"})]),
+    ("which room is the cat in?", [("Find", {"theme": "cat"})]),
+    ("what floor are the towels on", [("Find", {"theme": "towel"})]),
+])
+def test_how_much_of_a_plural_and_which_room(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want
+
+
+def test_how_much_of_a_mass_noun_and_which_room_is_biggest_are_read_as_before(library: Library) -> None:
+    with pytest.raises(CommandError, match="unknown verb 'how'"):
+        parse_command("how much milk is left?", library)
+    assert [f for f, _ in frames("which room is the biggest?", library)] == ["Tell"]
