@@ -343,6 +343,10 @@ class State:
             if n and self.words[i].lower not in ("to", "and", "then"):
                 i += n
                 continue
+            low = self.words[i].lower
+            if start < i and low.endswith("ly") and is_adverb(low) and self.verb_at(i) is None:
+                i += 1                  # "Dear, could you *possibly* close ...": an adverb after politeness (words25)
+                continue
             break
         if i < len(self.words) and (self.verb_at(i) is not None or self.use_at(i)):
             return True

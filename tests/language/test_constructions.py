@@ -1946,3 +1946,7 @@ def test_how_much_of_a_mass_noun_and_which_room_is_biggest_are_read_as_before(li
     with pytest.raises(CommandError, match="unknown verb 'how'"):
         parse_command("how much milk is left?", library)
     assert [f for f, _ in frames("which room is the biggest?", library)] == ["Tell"]
+
+
+def test_an_adverb_after_politeness_before_the_verb(library: Library) -> None:
+    assert frames("Honey, would you possibly shut the door?", library) == [("Close", {"theme": "door"})]
