@@ -61,6 +61,7 @@ from seal_cli.maps.geometry import (
     shrink_factor,
 )
 from seal_cli.maps.model import Map, MapWarning, ObjectTruth, Person, Place, Robot, Room, Sensor
+from seal_cli.names import check_name_length
 from seal_cli.resources import map_path
 from seal_cli.yamlnodes import NodeReader
 from seal_cli.yamlnodes import is_null as _is_null
@@ -387,7 +388,10 @@ class _Reader(NodeReader):
         for key, _, value in self.pairs_at(root, "a map file", (), KEYS):
             nodes[key] = value
         server = self.map_server(nodes, root)
-        fields["name"] = (self.string(nodes["name"], "name") if "name" in nodes else None) or _default_name(self.path)
+        name = self.string(nodes["name"], "name") if "name" in nodes else None
+        if name is not None:
+            name = self.build(lambda: check_name_length(name, "map name"), nodes["name"])
+        fields["name"] = name or _default_name(self.path)
         if "bounds" in nodes:
             fields["bounds"] = self.bounds(nodes["bounds"])
         if "rooms" in nodes:
@@ -493,6 +497,9 @@ class _Reader(NodeReader):
             name = self.string(fields["name"], "a room's name") if "name" in fields else None
             if "name" not in fields:
                 self.problem("a room needs a name", item)
+            if name and self.build(functools.partial(check_name_length, name, "room name"), fields["name"]) is None:
+                self.broken.add(name)  # said once, at its name: priors naming it are not said again
+                continue
             shapes = [k for k in ("polygon", "box") if k in fields]
             misspelt = any(isinstance(k, yaml.ScalarNode) and k.value not in ROOM_KEYS for k, _ in item.value)
             if len(shapes) != 1 and not (misspelt and not shapes):
