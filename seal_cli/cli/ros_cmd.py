@@ -21,7 +21,6 @@ from seal_cli.cli import (
     out,
 )
 
-
 MAX_POSES = 100_000
 """The most poses of ``bench ros``'s bag: 2.8 hours of driving at 10 Hz, a 15 MB MCAP, about 6 s to write and read
 per format. A million took minutes per format before a single update was timed (hostile19)."""
