@@ -224,14 +224,17 @@ MAX_COLUMNS = 1_000
 ``TERMINAL_WIDTH`` as they come: ``COLUMNS=1000000000 seal --help`` drew its boxes a billion characters wide
 (8.8 GB before it was killed), a usage error under ``COLUMNS=10000000`` was 70 MB of stderr."""
 
+MIN_COLUMNS = 40
+"""The narrowest screen seal draws for (a phone's terminal): under ``COLUMNS=1`` rich drew the tables and the help
+as their borders alone (``││││││``), not a letter of what they hold (hostile19). A narrower width is taken as this."""
 SIZE_VARIABLES = ("COLUMNS", "LINES", "TERMINAL_WIDTH")
 
 
 def sane_sizes(environ: MutableMapping[str, str] = os.environ) -> None:
     """The screen's size as the environment gives it, made one seal can draw: a size past :data:`MAX_COLUMNS` is
-    taken as that; one that is no positive integer is dropped, as rich drops ``COLUMNS=abc`` (typer's own
-    ``int(TERMINAL_WIDTH)`` of ``abc``, and rich's of ``COLUMNS`` or ``LINES`` of 5,000 digits, were
-    ``ValueError`` tracebacks before any command ran)."""
+    taken as that, a width under :data:`MIN_COLUMNS` as that; one that is no positive integer is dropped, as rich
+    drops ``COLUMNS=abc`` (typer's own ``int(TERMINAL_WIDTH)`` of ``abc``, and rich's of ``COLUMNS`` or ``LINES``
+    of 5,000 digits, were ``ValueError`` tracebacks before any command ran)."""
     for name in SIZE_VARIABLES:
         value = environ.get(name)
         if value is None:
@@ -241,6 +244,8 @@ def sane_sizes(environ: MutableMapping[str, str] = os.environ) -> None:
             del environ[name]
         elif len(text.lstrip("0")) > len(str(MAX_COLUMNS)) or int(text) > MAX_COLUMNS:
             environ[name] = str(MAX_COLUMNS)
+        elif name != "LINES" and int(text) < MIN_COLUMNS:
+            environ[name] = str(MIN_COLUMNS)
 
 
 def printable_streams() -> None:
