@@ -232,3 +232,25 @@ def test_a_table_under_columns_1_shows_its_words() -> None:
     shown = subprocess.run([sys.executable, "-m", "seal_cli", "frames"], capture_output=True, text=True, env=environ,
                            timeout=120, check=True).stdout
     assert "Heat" in shown and "Stir" in shown
+
+
+@pytest.mark.parametrize(("args", "code"), [
+    (["validate", "tests/data/maps_bad"], 1), (["validate", "tests/data/maps_bad", "--json"], 1),
+    (["validate", "maps"], 0), (["frames"], 0), (["frames", "--json"], 0),
+])
+def test_a_reader_gone_leaves_the_commands_own_exit_code(args: list[str], code: int) -> None:
+    """hostile19: `seal validate BAD | head -1` exited 1 with no message as a table (rich's SystemExit(1)) and 0 as
+    JSON; a command whose reader has gone now drops the rest of its output and ends as it would have."""
+    import os
+    import subprocess
+    import sys
+
+    read, write = os.pipe()
+    os.close(read)  # the reader has gone before the first byte
+    try:
+        done = subprocess.run([sys.executable, "-m", "seal_cli", *args], stdout=write, stderr=subprocess.PIPE,
+                              timeout=300, check=False)
+    finally:
+        os.close(write)
+    assert done.returncode == code, done.stderr
+    assert b"Traceback" not in done.stderr and b"Exception ignored" not in done.stderr
