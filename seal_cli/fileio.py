@@ -114,7 +114,11 @@ def _regular(path: Path, what: str) -> os.stat_result:
     if stat.S_ISDIR(info.st_mode):
         raise SealError(f"this is a folder, not a {what}", where)
     if not stat.S_ISREG(info.st_mode):
-        raise SealError(f"cannot read this {what}: it is {_kind(info.st_mode)}, not a regular file", where)
+        handed = ""
+        if str(path) in ("/dev/stdin", "/dev/tty") or re.fullmatch(r"/(dev|proc/self)/fd/\d+", str(path)):
+            handed = (" (a stream this command was handed: standard input or a shell's <(...)); save it to a file "
+                      "first, or give '-' where seal reads standard input (seal parse --file -)")
+        raise SealError(f"cannot read this {what}: it is {_kind(info.st_mode)}, not a regular file{handed}", where)
     return info
 
 

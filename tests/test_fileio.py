@@ -351,3 +351,14 @@ def test_utf8_with_a_nul_is_no_wide_text(tmp_path: Path) -> None:
 
     assert wide_encoding(b"stir\x00 the cup\n") is None and wide_encoding(b"\xef\xbb\xbfstir") is None
     assert wide_encoding(b"\xff\xfe") == "UTF-16" and wide_encoding(b"a\x00b\x00c\x00") == "UTF-16"
+
+
+def test_a_stream_handed_to_the_command_says_how_to_read_it() -> None:
+    """hostile19: `echo ... | seal parse --file /dev/stdin` and `--file <(...)` said only "it is a FIFO"."""
+    import subprocess
+    import sys
+
+    done = subprocess.run([sys.executable, "-m", "seal_cli", "parse", "--file", "/dev/stdin"], input=b"stir the cup\n",
+                          capture_output=True, timeout=120, check=False)
+    assert done.returncode == 1
+    assert b"a stream this command was handed" in done.stderr and b"seal parse --file -" in done.stderr
