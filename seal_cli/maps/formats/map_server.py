@@ -393,7 +393,7 @@ class _Reader(NodeReader):
         server = self.map_server(nodes, root)
         name = self.string(nodes["name"], "name") if "name" in nodes else None
         if name is not None:
-            name = self.build(lambda: check_name_length(name, "map name"), nodes["name"])
+            name = self.build(functools.partial(check_name_length, name, "map name"), nodes["name"])
         fields["name"] = name or _default_name(self.path)
         if "bounds" in nodes:
             fields["bounds"] = self.bounds(nodes["bounds"])
