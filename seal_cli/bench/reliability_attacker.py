@@ -757,7 +757,8 @@ def hostile19_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
     yield Case("A bench e2e --file of no cases", ("bench", "e2e", "--file", "e.yaml"), (("e.yaml", b"cases: []\n"),),
                codes=(1,), keep=("e.yaml",), says=r"e\.yaml:1:8: the suite holds no cases")
     yield Case("A bench parse --corpus of no commands", ("bench", "parse", "--corpus", "c.jsonl", "--scorers", "."),
-               (("c.jsonl", b"\n\n"),), codes=(1,), keep=("c.jsonl",), says=r"c\.jsonl: this corpus holds no commands")
+               (("c.jsonl", b"\n\n"), ("score_parse.py", b"raise SystemExit('never run')\n")), codes=(1,),
+               keep=("c.jsonl",), says=r"c\.jsonl: this corpus holds no commands")
     yield Case("A bench tasks --suite map on a map without a bedroom",
                ("bench", "tasks", "--suite", "map", "--map", "m.yaml", "--layouts", "1", "--jobs", "1"),
                (("m.yaml", b"name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {name: hall, box: [0, 0, 10, 10]}\n"),),

@@ -149,6 +149,7 @@ def test_bench_parse_runs_the_scorer(shared_data: Path, tmp_path: Path) -> None:
 def test_bench_parse_refuses_a_corpus_that_is_not_json_lines(tmp_path: Path, content: bytes, expected: str) -> None:
     corpus = tmp_path / "bad.jsonl"
     corpus.write_bytes(content)
+    (tmp_path / "score_parse.py").write_text("raise SystemExit('never run')\n")  # a scorer found: the corpus is judged
     for extra in ([], ["--json"]):
         result = runner.invoke(app, ["bench", "parse", "--corpus", str(corpus), "--scorers", str(tmp_path), *extra])
         assert result.exit_code == 1, result.output
