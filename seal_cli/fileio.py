@@ -114,7 +114,11 @@ def _regular(path: Path, what: str) -> os.stat_result:
     if stat.S_ISDIR(info.st_mode):
         raise SealError(f"this is a folder, not a {what}", where)
     if not stat.S_ISREG(info.st_mode):
-        raise SealError(f"cannot read this {what}: it is {_kind(info.st_mode)}, not a regular file", where)
+        handed = ""
+        if str(path) in ("/dev/stdin", "/dev/tty") or re.fullmatch(r"/(dev|proc/self)/fd/\d+", str(path)):
+            handed = (" (a stream this command was handed: standard input or a shell's <(...)); save it to a file "
+                      "first, or give '-' where seal reads standard input (seal parse --file -)")
+        raise SealError(f"cannot read this {what}: it is {_kind(info.st_mode)}, not a regular file{handed}", where)
     return info
 
 
@@ -171,12 +175,36 @@ def _size(count: int) -> str:
     return f"{count} bytes"
 
 
+_WIDE = ((b"\xff\xfe\x00\x00", "UTF-32"), (b"\x00\x00\xfe\xff", "UTF-32"), (b"\xff\xfe", "UTF-16"),
+         (b"\xfe\xff", "UTF-16"))
+"""The byte-order marks of the encodings Windows tools save text in ("Unicode" in Notepad, PowerShell's ``>``)."""
+
+
+def wide_encoding(head: bytes) -> str | None:
+    """"UTF-16" or "UTF-32" when a text's first bytes show it (a byte-order mark, or UTF-16 without one: every other
+    byte of the first 64 zero, which UTF-8 text never is), else None."""
+    wide = next((name for mark, name in _WIDE if head.startswith(mark)), None)
+    pairs = head[:64]
+    if wide is None and len(pairs) >= 4 and pairs.count(0) * 2 >= len(pairs) - 1:
+        wide = "UTF-16"
+    return wide
+
+
+def not_utf8(wide: str, what: str = "file") -> str:
+    """The refusal of a text in a wide encoding: "byte 0xff cannot be decoded" said nothing a person could act on."""
+    return (f"this {what} is {wide} text, not UTF-8: seal reads UTF-8; save it as UTF-8 (iconv -f {wide} -t UTF-8, or "
+            "'UTF-8' in the editor's Save As)")
+
+
 def decode(data: bytes, file: str) -> str:
     """UTF-8 text (a leading byte-order mark dropped), composed (NFC: an "é" written as "e" and a combining accent,
     as macOS writes it, is the one letter the same name elsewhere is); invalid UTF-8 is a SealError at its line and
     column."""
     if data.startswith(b"\xef\xbb\xbf"):
         data = data[3:]
+    wide = wide_encoding(data)
+    if wide is not None:
+        raise SealError(not_utf8(wide), Where(file, 1, 1))
     try:
         return composed(data.decode("utf-8"))
     except UnicodeDecodeError as exc:
@@ -325,6 +353,9 @@ def stream_lines(path: str | Path, what: str = "file") -> Iterator[tuple[int, st
                 if len(raw) > MAX_INPUT_BYTES:
                     raise SealError(f"line {number} of this {what} is longer than {_size(MAX_INPUT_BYTES)}, the "
                                     "most seal reads", Where(str(path), number))
+                wide = wide_encoding(raw) if number == 1 else None
+                if wide is not None:
+                    raise SealError(not_utf8(wide, what), Where(str(path), 1, 1))
                 try:
                     line = raw.decode("utf-8")
                 except UnicodeDecodeError as exc:

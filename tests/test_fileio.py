@@ -327,3 +327,38 @@ def test_a_full_disk_under_an_output_is_said_of_its_option(tmp_path: Path, monke
     with pytest.raises(OSError, match="Broken pipe"), Outputs(png, suffixes={"--png": (".png",)}):
         raise OSError(errno.EPIPE, os.strerror(errno.EPIPE))  # anything else is left to the CLI, as it was
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(("data", "wide"), [
+    ("stir the cup\n".encode("utf-16"), "UTF-16"), ("stir the cup\n".encode("utf-16-be"), "UTF-16"),
+    ("stir the cup\n".encode("utf-16-le"), "UTF-16"), ("stir the cup\n".encode("utf-32"), "UTF-32"),
+])
+def test_a_text_in_a_wide_encoding_is_named_as_such(tmp_path: Path, data: bytes, wide: str) -> None:
+    """hostile19: UTF-16 said 'byte 0xff cannot be decoded' (with its mark) or read NULs as letters (without)."""
+    from seal_cli.fileio import stream_lines
+
+    path = tmp_path / "c.txt"
+    path.write_bytes(data)
+    with pytest.raises(SealError, match=rf"c\.txt:1:1: this file is {wide} text, not UTF-8: .*as UTF-8") as caught:
+        read_text(path)
+    assert (caught.value.where.line, caught.value.where.column) == (1, 1)
+    with pytest.raises(SealError, match=rf"is {wide} text, not UTF-8"):
+        list(stream_lines(path))
+
+
+def test_utf8_with_a_nul_is_no_wide_text(tmp_path: Path) -> None:
+    from seal_cli.fileio import wide_encoding
+
+    assert wide_encoding(b"stir\x00 the cup\n") is None and wide_encoding(b"\xef\xbb\xbfstir") is None
+    assert wide_encoding(b"\xff\xfe") == "UTF-16" and wide_encoding(b"a\x00b\x00c\x00") == "UTF-16"
+
+
+def test_a_stream_handed_to_the_command_says_how_to_read_it() -> None:
+    """hostile19: `echo ... | seal parse --file /dev/stdin` and `--file <(...)` said only "it is a FIFO"."""
+    import subprocess
+    import sys
+
+    done = subprocess.run([sys.executable, "-m", "seal_cli", "parse", "--file", "/dev/stdin"], input=b"stir the cup\n",
+                          capture_output=True, timeout=120, check=False)
+    assert done.returncode == 1
+    assert b"a stream this command was handed" in done.stderr and b"seal parse --file -" in done.stderr

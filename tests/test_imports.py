@@ -19,7 +19,7 @@ import seal_cli
 
 PACKAGE = Path(seal_cli.__file__).resolve().parent
 SUBPACKAGES = ("frames", "language", "planning", "maps", "sensing", "ros", "sefm", "sim", "bench", "cli")
-BASE = ("errors", "fileio", "yamlnodes", "resources", "cache")
+BASE = ("errors", "fileio", "yamlnodes", "resources", "cache", "names")
 """Top-level modules every subpackage may import."""
 
 

@@ -147,6 +147,9 @@ def _load(path: Path) -> list[Case]:
         cases.append(Case(values["map"], values["text"], values.get("plan"), values.get("refused"),
                           values.get("run"), values.get("answer"), where, values.get("says"),
                           values.get("holding")))
+    if not entries.value and not reader.problems:  # a run of nothing reported "all 0" and exited 0, as if it passed
+        reader.problem("the suite holds no cases: list at least one under cases: (text, map, and plan or refused)",
+                       entries)
     if reader.problems:
         raise reader.problems[0] if len(reader.problems) == 1 else SealErrors(reader.problems)
     return cases

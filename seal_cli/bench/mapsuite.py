@@ -26,6 +26,7 @@ from typing import Any
 import numpy as np
 
 from seal_cli.bench.tasks import Outcome, in_order
+from seal_cli.errors import SealError, SealErrors
 from seal_cli.frames.library import Library
 from seal_cli.frames.reading import load_library
 from seal_cli.maps.formats.map_server import load_map
@@ -157,8 +158,17 @@ def run_map_suite(map_path: str, commands: Sequence[str], policies: Sequence[str
     m = load_map(map_path)
     library = load_library(framelib)
     vocabulary = vocabulary_of_map(m)
-    for text in commands:     # a command that cannot be parsed or planned fails here, cleanly
-        plan_text(text, library, vocabulary=vocabulary)
+    for text in commands:     # a command that cannot be parsed or planned fails here, cleanly, naming itself
+        try:
+            plan_text(text, library, vocabulary=vocabulary)
+            commanded_frames(m, text, library)  # grounded on this map, as each layout grounds it
+        except SealError as error:
+            if isinstance(error, SealErrors):
+                raise
+            given = "one of the suite's default commands; give the map's own with --command" if text in COMMANDS \
+                else "--command"
+            raise SealError(f"{error.message} (in {text!r}, {given})", error.where,
+                            source_line=error.source_line, hint=error.hint) from None
     work = [(i, tuple(commands), tuple(policies), seed, particles) for i in range(layouts)]
     jobs = max(1, min(jobs or os.cpu_count() or 1, layouts or 1))
     if jobs == 1:

@@ -28,7 +28,7 @@ import numpy as np
 from seal_cli.bench.reliability import FRAME, Case, hostile_setting
 
 __all__ = ["alfred2d_data", "attacker_cases", "chain_library", "hostile14_cases", "hostile15_cases", "hostile16_cases",
-           "hostile17_cases", "hostile18_cases", "rgba_png", "sparse_pgm"]
+           "hostile17_cases", "hostile18_cases", "hostile19_cases", "rgba_png", "sparse_pgm"]
 
 DIGITS = "1" * 5_000
 """An integer longer than Python converts from text (4,300 digits)."""
@@ -284,6 +284,7 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield from hostile16_cases()
     yield from hostile17_cases()
     yield from hostile18_cases()
+    yield from hostile19_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -614,9 +615,11 @@ SMALL_MAP = ("name: m\nbounds: [0, 0, 10, 10]\nrobot: &r {pose: [1, 1, 0]}\n"
 
 
 def _hostile_bag(poses: list[tuple[float, float, float, float]],
-                 looks: list[tuple[float, list[tuple[str, float, float, float]]]]) -> bytes | None:
+                 looks: list[tuple[float, list[tuple[str, float, float, float]]]],
+                 rotation: tuple[int, tuple[float, float, float, float]] | None = None) -> bytes | None:
     """The bytes of an MCAP bag: PoseStamped ``poses`` (t, x, y, yaw) on /robot_pose and a Detection3DArray per look
-    (t, detections in map) on /detections; None without the ros extra."""
+    (t, detections in map) on /detections; ``rotation``: (index of a pose, the quaternion x y z w it holds instead of
+    its yaw's); None without the ros extra."""
     try:
         import rosbags  # noqa: F401
     except ImportError:
@@ -630,6 +633,9 @@ def _hostile_bag(poses: list[tuple[float, float, float, float]],
     store = typestore(False)
     messages = [("/robot_pose", POSE_STAMPED, t, pose_stamped(store, t, "map", x, y, yaw, False))
                 for t, x, y, yaw in poses]
+    if rotation is not None:
+        q = messages[rotation[0]][3].pose.orientation
+        q.x, q.y, q.z, q.w = rotation[1]
     messages += [("/detections", DETECTION_3D, t, detection_array(store, t, "map", seen, False)) for t, seen in looks]
     messages.sort(key=lambda m: m[2])
     with tempfile.TemporaryDirectory() as folder:
@@ -695,3 +701,77 @@ def hostile18_cases() -> Iterator[Case]:
         yield Case(f"A localize --bag of {name}", ("localize", "--map", "apartment", "--particles", "20", "--bag",
                                                    "b.mcap"), (("b.mcap", bag),), codes=(1,), keep=("b.mcap",),
                    says=rf"b\.mcap: {said}")
+
+
+def hostile19_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read top to bottom
+    """Round hostile19: names of any length, a rotation that is no unit quaternion, UTF-16 and UTF-32 said as bytes,
+    a library of no frames, a resolution no map can have, COLUMNS=1, goals written as a bag folder by a wrong suffix,
+    benchmarks of nothing that reported success, a default command the map cannot ground, a handed stream."""
+    long = "k" * 5000
+    room = f"name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - name: {long}\n    box: [0, 0, 5, 10]\n"
+    yield Case("A a room name of 5,000 letters: at its line", ("validate", "m.yaml"), (("m.yaml", room.encode()),),
+               codes=(1,), keep=("m.yaml",), says=r"m\.yaml:4:11: room name 'k+…' is 5,000 characters long")
+    person = f"name: m\nbounds: [0, 0, 10, 10]\npeople:\n  - {{name: {long}, at: [1, 1]}}\n"
+    yield Case("A a person name of 5,000 letters: map", ("map", "m.yaml"), (("m.yaml", person.encode()),),
+               codes=(1,), keep=("m.yaml",), says=r"m\.yaml:4:5: person name 'k+…' is 5,000 characters long")
+    yield Case("A a map name of 5,000 letters: run", ("run", "go to the hall", "--map", "m.yaml"),
+               (("m.yaml", f"name: {long}\nbounds: [0, 0, 10, 10]\n".encode()),), codes=(1,), keep=("m.yaml",),
+               says=r"m\.yaml:1:7: map name 'k+…' is 5,000 characters long")
+    frame = f'category thing = *\nframe Z{long} "zap" {{\n  theme: thing\n  do navigate(theme)\n}}\n'
+    yield Case("A a frame name of 5,001 letters: plan", ("plan", "zap the cup", "--framelib", "+f.frame"),
+               (("f.frame", frame.encode()),), codes=(1,), keep=("f.frame",),
+               says=r"f\.frame:2:7: frame name 'Zk+…' is 5,001 characters long")
+    element = f'category thing = *\nframe Zap "zap" {{\n  {long}: thing\n  do navigate({long})\n}}\n'
+    yield Case("A an element name of 5,000 letters: validate", ("validate", "f.frame"),
+               (("f.frame", element.encode()),), codes=(1,), keep=("f.frame",),
+               says=r"f\.frame:3:3: element 'k+…' is 5,000 characters long")
+    yield Case("A a vocabulary class of 1,000 letters", ("parse", "--vocabulary", "v.yaml", "find the cup"),
+               (("v.yaml", f"- cup\n- {'c' * 1000}\n".encode()),), codes=(1,), keep=("v.yaml",),
+               says=r"v\.yaml:2:3: entry 2: name 'c+…' is 1,000 characters long")
+    yield Case("A bench ros --messages past its bound", ("bench", "ros", "--messages", "5001"), codes=(2,),
+               says=r"--messages")
+    yield Case("A bench ros --poses past its bound", ("bench", "ros", "--poses", "100001"), codes=(2,),
+               says=r"--poses")
+    text = "stir the cup\nfind the spoon\n"
+    yield Case("A parse --file in UTF-16 without a byte-order mark", ("parse", "--file", "c.txt", "--json"),
+               (("c.txt", text.encode("utf-16-le")),), codes=(1,), keep=("c.txt",),
+               says=r"c\.txt:1:1: this file is UTF-16 text, not UTF-8")
+    yield Case("A a map in UTF-32", ("validate", "m.yaml"),
+               (("m.yaml", "name: m\nbounds: [0, 0, 10, 10]\n".encode("utf-32")),), codes=(1,), keep=("m.yaml",),
+               says=r"m\.yaml:1:1: this file is UTF-32 text, not UTF-8")
+    for name, content in (("an empty file", b""), ("frames: []", b"frames: []\n"),
+                          ("categories alone", b"categories:\n  utensil: [spoon]\n")):
+        yield Case(f"A plan --framelib of {name}", ("plan", "stir the cup", "--framelib", "f.yaml"),
+                   (("f.yaml", content),), codes=(1,), keep=("f.yaml",),
+                   says=r"f\.yaml: this frame library holds no frames")
+    image = b"P5\n2 2\n255\n" + bytes([254] * 4)
+    for value, said in (("1e300", r"m\.yaml:2:13: resolution 1e\+300 m of an image of 2×2 pixels"),
+                        ("1e-300", r"m\.yaml:2:13: resolution must be a number of metres per pixel of at least")):
+        yield Case(f"A a map image at resolution {value}: map --png", ("map", "m.yaml", "--png", "o.png"),
+                   (("m.yaml", f"image: i.pgm\nresolution: {value}\norigin: [0, 0, 0]\n".encode()), ("i.pgm", image)),
+                   codes=(1,), keep=("m.yaml", "i.pgm"), absent=("o.png",), says=said)
+    yield Case("A COLUMNS=1 frames", ("frames",), codes=(0,), env=(("COLUMNS", "1"),))
+    yield Case("A localize --goals goals.txt", ("localize", "--map", "apartment", "--task", "stir the cup", "--steps",
+                                                "1", "--particles", "10", "--goals", "goals.txt"), codes=(1,),
+               absent=("goals.txt",), says=r"seal writes goals as YAML \(\.yaml, \.yml\), .* not \.txt")
+    yield Case("A bench e2e --file of no cases", ("bench", "e2e", "--file", "e.yaml"), (("e.yaml", b"cases: []\n"),),
+               codes=(1,), keep=("e.yaml",), says=r"e\.yaml:1:8: the suite holds no cases")
+    yield Case("A bench parse --corpus of no commands", ("bench", "parse", "--corpus", "c.jsonl", "--scorers", "."),
+               (("c.jsonl", b"\n\n"), ("score_parse.py", b"raise SystemExit('never run')\n")), codes=(1,),
+               keep=("c.jsonl",), says=r"c\.jsonl: this corpus holds no commands")
+    yield Case("A bench tasks --suite map on a map without a bedroom",
+               ("bench", "tasks", "--suite", "map", "--map", "m.yaml", "--layouts", "1", "--jobs", "1"),
+               (("m.yaml", b"name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {name: hall, box: [0, 0, 10, 10]}\n"),),
+               codes=(1,), keep=("m.yaml",), says=r"has no bedroom.*\(in 'bring the apple to the bedroom', one of the "
+                                                  r"suite's default commands")
+    yield Case("A parse --file /dev/stdin", ("parse", "--file", "/dev/stdin"), codes=(1,), stdin=b"stir the cup\n",
+               says=r"/dev/stdin: cannot read this file: .*a stream this command was handed")
+    good = [(1.0, -6.0, -3.0, 0.0), (3.0, -5.0, -3.0, 0.0)]
+    for name, q in (("(0, 0, 0, 0)", (0.0, 0.0, 0.0, 0.0)), ("of length 3.5", (0.0, 0.0, 3.5, 0.0))):
+        bag = _hostile_bag(good, [(2.0, [("cup", 1.0, 1.0, 0.0)])], (1, q))
+        if bag is None:
+            return
+        yield Case(f"A import-bag of a pose rotated by {name}", ("import-bag", "b.mcap", "-o", "o.yaml"),
+                   (("b.mcap", bag),), codes=(1,), keep=("b.mcap",), absent=("o.yaml",),
+                   says=r"b\.mcap: the rotation of message 2 on /robot_pose \(qx, qy, qz, qw\) is .*a rotation is a "
+                        r"unit quaternion")

@@ -8,6 +8,7 @@ Imports no command-line framework (typer): ``seal parse TEXT`` prints through it
 from __future__ import annotations
 
 import contextlib
+import functools
 import os
 import re
 import sys
@@ -24,6 +25,21 @@ __all__ = ["PIPE_WIDTH", "LazyConsole", "dump_json", "emit_json", "err", "out", 
 
 PIPE_WIDTH = 200
 """Columns of the output when it is not a terminal (a file, a pipe) and ``COLUMNS`` is not set."""
+
+
+def reader_gone(stream: Any) -> None:
+    """The program reading ``stream`` has gone (``seal validate F | head -1``): what is still to print there is
+    dropped (the stream's file becomes ``/dev/null``) and the command goes on to its own end and exit code."""
+    with contextlib.suppress(OSError, ValueError, AttributeError):
+        os.dup2(os.open(os.devnull, os.O_WRONLY), stream.fileno())
+
+
+def _console_reader_gone(console: Console) -> None:
+    """rich's ``on_broken_pipe`` for seal's consoles: :func:`reader_gone`. rich's own raised ``SystemExit(1)``, so a
+    command whose reader had gone exited 1 ("the input is wrong") with no message, and under ``--json`` 0: ``seal
+    validate`` of a file with problems, piped into ``head -1``, exited 0 or 1 by its output format (hostile19)."""
+    console.quiet = True
+    reader_gone(console.file)
 
 
 class LazyConsole:
@@ -43,6 +59,7 @@ class LazyConsole:
             console = Console(**self._options)
             if not console.is_terminal and "COLUMNS" not in os.environ:
                 console.width = PIPE_WIDTH  # rich's 80 columns would cut the tables of a redirected run
+            console.on_broken_pipe = functools.partial(_console_reader_gone, console)  # type: ignore[method-assign]
             self._console = console
         return self._console
 
@@ -224,14 +241,17 @@ MAX_COLUMNS = 1_000
 ``TERMINAL_WIDTH`` as they come: ``COLUMNS=1000000000 seal --help`` drew its boxes a billion characters wide
 (8.8 GB before it was killed), a usage error under ``COLUMNS=10000000`` was 70 MB of stderr."""
 
+MIN_COLUMNS = 40
+"""The narrowest screen seal draws for (a phone's terminal): under ``COLUMNS=1`` rich drew the tables and the help
+as their borders alone (``││││││``), not a letter of what they hold (hostile19). A narrower width is taken as this."""
 SIZE_VARIABLES = ("COLUMNS", "LINES", "TERMINAL_WIDTH")
 
 
 def sane_sizes(environ: MutableMapping[str, str] = os.environ) -> None:
     """The screen's size as the environment gives it, made one seal can draw: a size past :data:`MAX_COLUMNS` is
-    taken as that; one that is no positive integer is dropped, as rich drops ``COLUMNS=abc`` (typer's own
-    ``int(TERMINAL_WIDTH)`` of ``abc``, and rich's of ``COLUMNS`` or ``LINES`` of 5,000 digits, were
-    ``ValueError`` tracebacks before any command ran)."""
+    taken as that, a width under :data:`MIN_COLUMNS` as that; one that is no positive integer is dropped, as rich
+    drops ``COLUMNS=abc`` (typer's own ``int(TERMINAL_WIDTH)`` of ``abc``, and rich's of ``COLUMNS`` or ``LINES``
+    of 5,000 digits, were ``ValueError`` tracebacks before any command ran)."""
     for name in SIZE_VARIABLES:
         value = environ.get(name)
         if value is None:
@@ -241,6 +261,8 @@ def sane_sizes(environ: MutableMapping[str, str] = os.environ) -> None:
             del environ[name]
         elif len(text.lstrip("0")) > len(str(MAX_COLUMNS)) or int(text) > MAX_COLUMNS:
             environ[name] = str(MAX_COLUMNS)
+        elif name != "LINES" and int(text) < MIN_COLUMNS:
+            environ[name] = str(MIN_COLUMNS)
 
 
 def printable_streams() -> None:
@@ -262,6 +284,9 @@ def dump_json(data: Any) -> str:
 
 
 def emit_json(data: Any) -> None:
-    """One JSON document on stdout."""
-    sys.stdout.write(dump_json(data) + "\n")
-    sys.stdout.flush()
+    """One JSON document on stdout (nothing, when its reader has gone: :func:`reader_gone`)."""
+    try:
+        sys.stdout.write(dump_json(data) + "\n")
+        sys.stdout.flush()
+    except BrokenPipeError:
+        reader_gone(sys.stdout)

@@ -171,6 +171,10 @@ def bench_parse(
             raise SealError(f"scorer not found: {argv[0]} (give --scorers DIR)", Where(argv[0]))
         # the constants are checked before the scorer reads them (a FIFO there would hang it)
         runs.append((path, argv, _alfred_vocabulary(Path(argv[2])) if path.suffix == ".tsv" else None))
+    for path, _, _ in runs:  # then what each holds: the scorer divided by zero on a corpus of no commands
+        if not any(commands_of(path)):
+            raise SealError("this corpus holds no commands: a corpus is JSON Lines with a 'text' in each line, or an "
+                            "ALFRED goals table (.tsv) with a 'goal_sentence' column", Where(str(path)))
     for path, argv, vocab in runs:
         err.print(f"scoring {path} ...", markup=False)
         run = subprocess.run([sys.executable, *argv, "--seal", seal, *(["--json"] if as_json else [])],

@@ -21,6 +21,14 @@ from seal_cli.cli import (
     out,
 )
 
+MAX_POSES = 100_000
+"""The most poses of ``bench ros``'s bag: 2.8 hours of driving at 10 Hz, a 15 MB MCAP, about 6 s to write and read
+per format. A million took minutes per format before a single update was timed (hostile19)."""
+MAX_MESSAGES = 5_000
+"""The most detection messages of ``bench ros``'s bag (each one timed update, then again with the Rerun recorder):
+about 25 ms each here, so about 2 minutes per format, 6 for all three; 2,000 took 52 s, and the bound before,
+100,000, would have taken 40 minutes per format (hostile19)."""
+
 
 @command("import-bag")
 def import_bag(
@@ -61,8 +69,8 @@ def import_bag(
 def bench_ros(
     formats: list[str] | None = typer.Option(None, "--format", help="mcap, sqlite3 or ros1 (repeatable; default "
                                              "mcap).", show_default=False),
-    poses: int = typer.Option(1000, "--poses", min=2, max=1_000_000, help="Robot poses in the bag (10 Hz)."),
-    messages: int = typer.Option(200, "--messages", min=1, max=100_000,
+    poses: int = typer.Option(1000, "--poses", min=2, max=MAX_POSES, help="Robot poses in the bag (10 Hz)."),
+    messages: int = typer.Option(200, "--messages", min=1, max=MAX_MESSAGES,
                                  help="Detection messages in the bag: one update each."),
     seed: int = typer.Option(0, "--seed", min=0, help="Seed of the random generators."),
     as_json: bool = JsonOption,

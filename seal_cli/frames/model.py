@@ -21,6 +21,7 @@ from functools import cached_property
 from typing import Any
 
 from seal_cli.errors import SealError, SealErrors, Where
+from seal_cli.names import check_name_length, name_too_long
 
 __all__ = ["Action", "Element", "Fact", "Frame", "LexicalUnit", "parse_atom"]
 
@@ -30,6 +31,7 @@ _ATOM = re.compile(r"\s*(?P<neg>not\s+)?(?P<name>[^\W\d]\w*)\s*(?:\((?P<args>[^(
 
 
 def _check_identifier(kind: str, text: str, where: Where | None) -> None:
+    check_name_length(text, kind, where)
     if not IDENTIFIER.match(text):
         raise SealError(f"{kind} {text!r} is not a name (letters, digits and '_', not starting with a digit)",
                         where)
@@ -212,7 +214,10 @@ class Frame:
 
     def problems(self) -> Iterable[SealError]:
         """What is wrong inside this frame alone (the library checks the rest)."""
-        if not FRAME_NAME.match(self.name):
+        too_long = name_too_long(self.name, "frame name", self.where)
+        if too_long is not None:
+            yield too_long
+        elif not FRAME_NAME.match(self.name):
             yield SealError(f"frame name {self.name!r} must start with a capital letter "
                             "and hold only letters, digits and '_'", self.where)
         seen: dict[str, Element] = {}

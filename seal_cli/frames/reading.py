@@ -208,6 +208,10 @@ def load_library(paths: Iterable[str | Path] | None = None) -> Library:
     library, problems = _read(files, problems)
     if problems:
         raise problems[0] if len(problems) == 1 else SealErrors(problems)
+    if not library.frames:  # every command then failed on its first word: "known verbs include " and nothing
+        raise SealError(f"this frame library holds no frames ({len(files):,} file{'s' if len(files) != 1 else ''} "
+                        "read): give files that define frames, or '+FILE' to add to the standard library",
+                        Where(", ".join(str(p) for p in given)))
     if entry is not None:
         entry.store(library)
     return library

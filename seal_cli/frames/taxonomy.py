@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
 
 from seal_cli.errors import SealError, Where
+from seal_cli.names import MAX_NAME, check_name_length
 
 __all__ = ["Category", "Synonyms", "Taxonomy", "check_class_name", "class_key", "class_words"]
 
@@ -33,7 +34,7 @@ def class_words(name: str) -> tuple[str, ...]:
     return tuple(w for w in re.split(r"[\s_\-]+", _HUMP.sub(" ", name).lower()) if w)
 
 
-MAX_CLASS_NAME = 100
+MAX_CLASS_NAME = MAX_NAME
 """The longest class name (as a key, words joined by '_') a plan may use: ``--holding`` of 3,000 letters was
 held, and printed whole in every state."""
 
@@ -69,9 +70,10 @@ class Category:
     def __post_init__(self) -> None:
         if not class_key(self.name):
             raise SealError("a category needs a name", self.where)
-        object.__setattr__(self, "name", class_key(self.name))
+        object.__setattr__(self, "name", check_name_length(class_key(self.name), "category name", self.where))
         if self.members is not None:
-            object.__setattr__(self, "members", tuple(class_key(m) for m in self.members))
+            object.__setattr__(self, "members", tuple(check_name_length(class_key(m), f"category {self.name}: member",
+                                                                        self.where) for m in self.members))
         odd = [n for n in (self.name, *(self.members or ())) if not _CLASS.match(n)]
         if odd:  # a number ("0x10", "1e309") is no class
             raise SealError(f"category {self.name}: {odd[0]!r} is not a class name (letters, digits and '_', not "
@@ -94,8 +96,8 @@ class Synonyms:
     def __post_init__(self) -> None:
         if not class_key(self.name):
             raise SealError("a synonyms entry needs a class name", self.where)
-        name = class_key(self.name)
-        names = tuple(class_key(n) for n in self.names)
+        name = check_name_length(class_key(self.name), "a synonyms entry's class", self.where)
+        names = tuple(check_name_length(class_key(n), f"synonyms of {name}: name", self.where) for n in self.names)
         if not names:
             raise SealError(f"synonyms of {name} list no other name", self.where)
         if any(not n for n in names):

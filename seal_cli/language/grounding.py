@@ -46,6 +46,7 @@ from seal_cli.language.stacking import StackModel
 from seal_cli.language.steps import StepModel
 from seal_cli.language.tasks import TaskModel
 from seal_cli.language.wordusage import WordUsage, context_words, shipped_word_usage, unsaid_wording
+from seal_cli.names import name_too_long
 
 __all__ = ["PARTS", "PIECES", "PORTIONS", "Vocabulary", "load_vocabulary", "vocabulary_of_map"]
 
@@ -424,6 +425,11 @@ def _entries(data: Any, where: Where) -> tuple[list[str], dict[str, list[str]]]:
                            number)
     if not names:
         raise _problem("the vocabulary lists no class", where)
+    for number, entry in enumerate(data, 1):  # a class or synonym no message, table or picture shows whole
+        for name in [entry] if not isinstance(entry, dict) else [entry["class"], *(entry.get("synonyms") or [])]:
+            long = name_too_long(str(name), f"entry {number}: name")
+            if long is not None:
+                raise _problem(long.message, where, number)
     return names, synonyms
 
 

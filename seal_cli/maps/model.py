@@ -49,6 +49,7 @@ from seal_cli.maps.geometry import (
     polygon_area,
     self_intersections,
 )
+from seal_cli.names import check_name_length
 
 if TYPE_CHECKING:
     from seal_cli.maps.priors import Prior
@@ -104,6 +105,7 @@ class Room:
     def __post_init__(self) -> None:
         if not isinstance(self.name, str) or not class_key(self.name):
             raise SealError(f"a room needs a name, not {self.name!r}", self.where)
+        check_name_length(self.name, "room name", self.where)
         if self.name.strip().casefold() == OUTSIDE:
             raise SealError(f"a room cannot be called {self.name!r}: seal's outputs give that name to the mass in no "
                             "room; call the room another name", self.where)
@@ -232,6 +234,8 @@ def role_keys(roles: str | Sequence[str], what: str, where: Where | None = None)
     listed = [roles] if isinstance(roles, str) else list(roles)
     if not all(isinstance(r, str) and class_key(r) for r in listed):
         raise SealError(f"{what} must be a noun or a list of nouns, not {roles!r}", where)
+    for role in listed:
+        check_name_length(role, what, where)
     return tuple(dict.fromkeys(class_key(r) for r in listed))
 
 
@@ -250,6 +254,7 @@ class Person:
     def __post_init__(self) -> None:
         if not isinstance(self.name, str) or not class_key(self.name):
             raise SealError(f"a person needs a name, not {self.name!r}", self.where)
+        check_name_length(self.name, "person name", self.where)
         if (self.at is None) == (self.room is None):
             raise SealError(f"person {self.name} needs exactly one of at: [x, y] or room: <room>", self.where)
         if self.at is not None:

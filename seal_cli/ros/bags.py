@@ -89,6 +89,21 @@ def _check_values(bag: Bag, values: Sequence[float], what: str) -> None:
                     "(a localiser or detector that lost track publishes NaN; drop those messages from the bag)")
 
 
+ROTATION_TOLERANCE = 0.01
+"""How far a rotation's squared length may be from 1 (tf2's own test for a denormalised quaternion)."""
+
+
+def _check_rotation(bag: Bag, q: Sequence[float], what: str) -> None:
+    """Refuse a rotation that is no unit quaternion: seal, like tf2, rotates by unit quaternions only, and one of
+    another length scales what it carries (a ROS 1 pose left at its default (0, 0, 0, 0), a damaged byte)."""
+    squared = sum(v * v for v in q)
+    if abs(squared - 1) <= ROTATION_TOLERANCE:
+        return
+    shown = ", ".join(f"{v:g}" for v in q)
+    raise bag.error(f"{what} is ({shown}), of length {math.sqrt(squared):.3g}: a rotation is a unit quaternion "
+                    "(length 1; tf2 refuses the others too). A pose with no rotation is (0, 0, 0, 1), not (0, 0, 0, 0)")
+
+
 def _check_clock(bag: Bag, topic: str, stamps: Sequence[float]) -> None:
     """Refuse stamps that run backwards by more than JUMP seconds."""
     s = np.asarray(stamps, float)
@@ -126,6 +141,7 @@ def _pose_track(bag: Bag, topic: str, base_frame: str) -> Track:
         t.append((pose.position.x, pose.position.y, pose.position.z))
         q.append((pose.orientation.x, pose.orientation.y, pose.orientation.z, pose.orientation.w))
         _check_values(bag, (*t[-1], *q[-1]), f"the pose of message {i + 1} on {topic} (x, y, z, qx, qy, qz, qw)")
+        _check_rotation(bag, q[-1], f"the rotation of message {i + 1} on {topic} (qx, qy, qz, qw)")
     if not stamps:
         raise bag.error(f"{topic} holds no messages: no poses to place the detections at")
     if not frames[0]:
@@ -167,6 +183,8 @@ def _tf_tree(bag: Bag) -> TfTree:
                 q.append((r.x, r.y, r.z, r.w))
                 _check_values(bag, (*t[-1], *q[-1]), f"the transform {key[0]} → {key[1]} of message {i + 1} on "
                                                      f"{topic} (x, y, z, qx, qy, qz, qw)")
+                _check_rotation(bag, q[-1], f"the rotation of the transform {key[0]} → {key[1]} of message {i + 1} "
+                                            f"on {topic} (qx, qy, qz, qw)")
         _check_clock(bag, topic, stamps_seen)
     tree = TfTree()
     parents: dict[str, str] = {}

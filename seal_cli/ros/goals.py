@@ -7,7 +7,8 @@ pose straight towards the goal (the robot's own heading when it is already there
 the map's frame (``frame``, ``map`` by default), one per frame in plan order.
 
 Written by the file's name (:func:`write_goals`): ``.yaml`` / ``.yml`` a YAML list; otherwise a
-bag (``.bag`` ROS 1, ``.mcap`` or a folder ROS 2, :mod:`seal_cli.ros.writing`) with one
+bag (``.bag`` ROS 1, ``.mcap`` or a folder named without a suffix ROS 2, :mod:`seal_cli.ros.writing`; another
+suffix is refused) with one
 ``geometry_msgs/PoseStamped`` per frame on ``/goal_pose`` — the message RViz's *2D Goal Pose*
 tool publishes and Nav2's ``NavigateToPose`` action takes — stamped 1 s apart from ``stamp``.
 """
@@ -32,6 +33,9 @@ __all__ = ["GOAL_TOPIC", "Goal", "check_goals_path", "goals_for", "write_goals"]
 
 GOAL_TOPIC = "/goal_pose"
 YAML_SUFFIXES = (".yaml", ".yml")
+BAG_SUFFIXES = (".bag", ".mcap")
+"""A goals file's name says its format; any other suffix (``goals.txt``, ``goals.json``) is refused: it was written
+as a ROS 2 bag folder of that name (hostile19)."""
 
 
 @dataclass(frozen=True)
@@ -82,6 +86,10 @@ def check_goals_path(path: str | Path, inputs: Sequence[str | Path | None] = ())
         if given is not None and os.path.realpath(given) == os.path.realpath(target):  # a link loop: no raise
             raise SealError(f"--goals {target} is an input or another output of the run: give another file",
                             Where(str(target)))
+    if target.suffix and target.suffix not in (*YAML_SUFFIXES, *BAG_SUFFIXES):
+        raise SealError(f"--goals {target}: seal writes goals as YAML (.yaml, .yml), a ROS 1 bag (.bag), an MCAP bag "
+                        f"(.mcap) or a ROS 2 bag folder (a name without a suffix), not {target.suffix}",
+                        Where(str(target)))
     folder = target.parent if str(target.parent) else Path(".")
     if not folder.is_dir():
         raise SealError(f"cannot write goals to {target}: folder {folder} does not exist", Where(str(target)))

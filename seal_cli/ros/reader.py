@@ -48,7 +48,18 @@ class Bag:
         except SealError:
             raise
         except Exception as exc:  # rosbags' readers raise their own errors and sqlite's, lz4's, zstd's
-            raise self.error(f"cannot read {topic} from the bag: {exc}") from None
+            raise self.error(f"cannot read {topic} from the bag: {damage(exc)}") from None
+
+
+def damage(exc: BaseException) -> str:
+    """What a reader's failure says, or, when it says nothing a person can use (a damaged index makes rosbags
+    fail an ``assert`` or look up a connection id that is no key: ``''``, ``'60673'``), that the bag is damaged."""
+    said = " ".join(str(a) for a in getattr(exc, "args", ())).strip()
+    if isinstance(exc, (AssertionError, KeyError, IndexError, MemoryError)) or not said:
+        return (f"the bag is damaged: a record or its index does not hold what its header says "
+                f"({type(exc).__name__}{': ' + said if said else ''}); a ROS 1 bag's index can be rebuilt with 'rosbag "
+                "reindex'")
+    return said
 
 
 FORMATS = ((b"#ROSBAG V2.0\n", ".bag", "a ROS 1 bag"), (b"\x89MCAP0\r\n", ".mcap", "an MCAP bag"),
@@ -96,8 +107,7 @@ def open_bag(path: str | Path) -> Iterator[Bag]:
         reader = AnyReader([path], default_typestore=typestore(ros1))
         reader.open()
     except Exception as exc:  # a file that is not a bag fails in many ways inside rosbags
-        detail = " ".join(str(a) for a in getattr(exc, "args", ())) or type(exc).__name__
-        raise SealError(f"cannot read this as a ROS bag (ROS 1 .bag, ROS 2 folder, .db3 or .mcap): {detail}",
+        raise SealError(f"cannot read this as a ROS bag (ROS 1 .bag, ROS 2 folder, .db3 or .mcap): {damage(exc)}",
                         Where(str(path))) from None
     try:
         yield Bag(reader, path)

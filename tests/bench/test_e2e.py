@@ -69,3 +69,10 @@ def test_a_case_may_say_what_the_robot_holds_at_the_start(tmp_path: Path) -> Non
     assert verdict.plan_right, verdict.got
     refused = judge(fixed, str(map_path("apartment")), 0, 50, None)
     assert not refused.plan_right and refused.got.startswith("refused: --holding 'fridge'")
+
+
+def test_a_suite_of_no_cases_is_refused(tmp_path: Path) -> None:
+    """hostile19: `bench e2e --file` of `cases: []` ran nothing, reported "all 0" and exited 0, as if it passed."""
+    (tmp_path / "e.yaml").write_text("cases: []\n")
+    with pytest.raises(SealError, match=r"e\.yaml:1:8: the suite holds no cases"):
+        load_cases(tmp_path / "e.yaml")

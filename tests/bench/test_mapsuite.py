@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -93,3 +94,15 @@ def test_a_thing_where_its_prior_is_small_is_searched_for_to_the_end() -> None:
     assert success and reason == "success" and path > 0
     _, given_up = run_on_map(m, "find the cup", library, make_policy("sefm", 100), rng=np.random.default_rng(0))
     assert not given_up.completed and given_up.reason.startswith("no cup found: searched ")
+
+
+def test_a_default_command_the_map_cannot_ground_is_named_before_any_run(tmp_path: Path) -> None:
+    """hostile19: on a map without a bedroom the default "bring the apple to the bedroom" failed inside the first
+    layout's run, saying only 'column 20: the m has no bedroom'."""
+
+
+    folder = tmp_path
+    (folder / "m.yaml").write_text("name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {name: hall, box: [0, 0, 10, 10]}\n")
+    with pytest.raises(SealError, match=r"the m has no bedroom.*\(in 'bring the apple to the bedroom', one of the "
+                                        r"suite's default commands; give the map's own with --command\)"):
+        list(run_map_suite(str(folder / "m.yaml"), ["bring the apple to the bedroom"], ["sefm"], layouts=1, jobs=1))

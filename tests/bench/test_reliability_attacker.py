@@ -15,6 +15,7 @@ from seal_cli.bench.reliability_attacker import (
     hostile16_cases,
     hostile17_cases,
     hostile18_cases,
+    hostile19_cases,
     sparse_pgm,
 )
 from seal_cli.bench.reliability_outsider import outsider_cases
@@ -130,3 +131,24 @@ def test_the_judge_reads_yaml_and_pddl_outputs_whole() -> None:
                                   ("p.pddl", b"(define (problem c) (:domain seal)\n", False)):
             (Path(folder) / name).write_bytes(data)
             assert _complete(Path(folder) / name) is whole, (name, data)
+
+
+@pytest.mark.parametrize("name", ["A a room name of 5,000 letters: at its line", "A a map in UTF-32",
+                                  "A plan --framelib of frames: []", "A a map image at resolution 1e300: map --png",
+                                  "A localize --goals goals.txt", "A bench e2e --file of no cases",
+                                  "A import-bag of a pose rotated by (0, 0, 0, 0)"])
+def test_picked_hostile19_cases_end_cleanly(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Each failed on main: a name of any length validated, UTF-32 said as a byte, a library of no frames said as an
+    unknown verb, a traceback with a PNG left behind, goals written as a bag folder, a suite of nothing passed, a
+    pose's zero rotation imported. This tree's code."""
+    if "import-bag" in name:
+        pytest.importorskip("rosbags")
+    monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
+    outcome = run_case(next(c for c in hostile19_cases() if c.name == name))
+    assert outcome.problems == []
+
+
+def test_the_hostile19_cases_are_named_once_and_say_what_they_must() -> None:
+    found = list(hostile19_cases())
+    assert len({c.name for c in found}) == len(found) >= 21
+    assert all(c.says for c in found if c.codes != (0,))

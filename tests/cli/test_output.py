@@ -201,6 +201,7 @@ def test_a_frame_described_in_markup_is_shown_as_written(tmp_path: Path) -> None
     ({"TERMINAL_WIDTH": "abc", "COLUMNS": "0", "LINES": "-3"}, {}),
     ({"COLUMNS": " 120 ", "LINES": "40", "TERMINAL_WIDTH": "1000"}, {"COLUMNS": " 120 ", "LINES": "40",
                                                                      "TERMINAL_WIDTH": "1000"}),
+    ({"COLUMNS": "1", "LINES": "1", "TERMINAL_WIDTH": "39"}, {"COLUMNS": "40", "LINES": "1", "TERMINAL_WIDTH": "40"}),
 ])
 def test_screen_sizes_no_one_can_draw_are_bounded_or_dropped(environ: dict[str, str], after: dict[str, str]) -> None:
     from seal_cli.cli.output import sane_sizes
@@ -219,3 +220,37 @@ def test_help_and_usage_errors_under_a_hostile_screen_size(name: str, value: str
                               check=False, env=env, timeout=60)
         assert "Traceback" not in done.stderr and done.returncode in (0, 2), done.stderr[-500:]
         assert len(done.stdout) + len(done.stderr) < 100_000
+
+
+def test_a_table_under_columns_1_shows_its_words() -> None:
+    """hostile19: `COLUMNS=1 seal frames` drew the table's borders alone, not one letter of what it holds."""
+    import os
+    import subprocess
+    import sys
+
+    environ = {k: v for k, v in os.environ.items() if k not in ("TERMINAL_WIDTH", "NO_COLOR")} | {"COLUMNS": "1"}
+    shown = subprocess.run([sys.executable, "-m", "seal_cli", "frames"], capture_output=True, text=True, env=environ,
+                           timeout=120, check=True).stdout
+    assert "Heat" in shown and "Stir" in shown
+
+
+@pytest.mark.parametrize(("args", "code"), [
+    (["validate", "tests/data/maps_bad"], 1), (["validate", "tests/data/maps_bad", "--json"], 1),
+    (["validate", "maps"], 0), (["frames"], 0), (["frames", "--json"], 0),
+])
+def test_a_reader_gone_leaves_the_commands_own_exit_code(args: list[str], code: int) -> None:
+    """hostile19: `seal validate BAD | head -1` exited 1 with no message as a table (rich's SystemExit(1)) and 0 as
+    JSON; a command whose reader has gone now drops the rest of its output and ends as it would have."""
+    import os
+    import subprocess
+    import sys
+
+    read, write = os.pipe()
+    os.close(read)  # the reader has gone before the first byte
+    try:
+        done = subprocess.run([sys.executable, "-m", "seal_cli", *args], stdout=write, stderr=subprocess.PIPE,
+                              timeout=300, check=False)
+    finally:
+        os.close(write)
+    assert done.returncode == code, done.stderr
+    assert b"Traceback" not in done.stderr and b"Exception ignored" not in done.stderr

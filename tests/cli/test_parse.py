@@ -142,10 +142,14 @@ def test_bench_parse_runs_the_scorer(shared_data: Path, tmp_path: Path) -> None:
     (b"- a\n- b\n", ":1:1: not JSON"),
     (b'{"text": "stir the cup"}\n{"text": oops}\n', ":2:10: not JSON"),
     (b'{"text": "stir the cup"}\n[1, 2]\n', "each line must be a JSON object"),
+    (b"", "this corpus holds no commands"),  # hostile19: the scorer divided by zero
+    (b"\n\n", "this corpus holds no commands"),
+    (b'{"frames": []}\n', "this corpus holds no commands"),
 ])
 def test_bench_parse_refuses_a_corpus_that_is_not_json_lines(tmp_path: Path, content: bytes, expected: str) -> None:
     corpus = tmp_path / "bad.jsonl"
     corpus.write_bytes(content)
+    (tmp_path / "score_parse.py").write_text("raise SystemExit('never run')\n")  # a scorer found: the corpus is judged
     for extra in ([], ["--json"]):
         result = runner.invoke(app, ["bench", "parse", "--corpus", str(corpus), "--scorers", str(tmp_path), *extra])
         assert result.exit_code == 1, result.output

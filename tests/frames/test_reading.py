@@ -254,3 +254,14 @@ def test_a_file_named_twice_is_read_once(tmp_path: Path) -> None:
     assert problems == [] and files == frame_files([framelib_dir()])[0]
     library, problems = read_library(given)
     assert problems == [] and len(library) == len(read_library([framelib_dir()])[0])
+
+
+@pytest.mark.parametrize("text", ["", "frames: []\n", "categories:\n  utensil: [spoon]\n"])
+def test_a_library_of_no_frames_is_refused(tmp_path: Path, text: str) -> None:
+    """hostile19: `plan --framelib empty.yaml` said "unknown verb 'stir'; known verbs include " and nothing more."""
+    from seal_cli.frames.reading import load_library
+
+    (tmp_path / "f.yaml").write_text(text)
+    with pytest.raises(SealError, match=r"this frame library holds no frames \(1 file read\)") as caught:
+        load_library([tmp_path / "f.yaml"])
+    assert caught.value.file == str(tmp_path / "f.yaml")

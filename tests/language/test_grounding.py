@@ -312,3 +312,18 @@ def test_a_part_no_class_names_is_its_possessor_s(library: Library) -> None:
     assert theme_class("the toilet's soap bar", library) == "SoapBar"       # a class of its own: itself
     assert theme_class("the man's laptop", library) == "Laptop"
     assert theme_class("the man's shirt", library) is None                  # a person's: never the person
+
+
+@pytest.mark.parametrize(("text", "where"), [
+    ("- cup\n- " + "c" * 101 + "\n", (2, 3)),
+    ("- cup\n- {class: spoon, synonyms: [" + "s" * 500 + "]}\n", (2, 3)),
+])
+def test_a_vocabulary_name_longer_than_any_name_is_refused_at_its_entry(tmp_path: Path, text: str,
+                                                                       where: tuple[int, int]) -> None:
+    """hostile19: a vocabulary class of 1,000 letters was taken (names.MAX_NAME bounds every other name)."""
+    (tmp_path / "v.yaml").write_text(text)
+    with pytest.raises(SealError, match=r"name '.*' is \d+ characters long; a name has at most 100") as caught:
+        load_vocabulary(tmp_path / "v.yaml")
+    assert (caught.value.where.line, caught.value.where.column) == where
+    (tmp_path / "v.yaml").write_text("- " + "c" * 100 + "\n")
+    assert load_vocabulary(tmp_path / "v.yaml").classes == ("c" * 100,)

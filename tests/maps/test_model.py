@@ -611,7 +611,7 @@ def test_a_number_too_large_for_a_float_is_a_located_error(tmp_path: Path) -> No
     bad = _edited_apartment(tmp_path, "huge.yaml", "resolution: 0.05", "resolution: " + "1" * 400)
     result = CliRunner().invoke(app, ["map", str(bad), "--png", str(tmp_path / "x.png")])
     assert result.exit_code == 1, result.output
-    assert f"{bad}:7:13: resolution must be a positive number" in result.stderr
+    assert f"{bad}:7:13: resolution must be a number of metres per pixel of at least 0.001" in result.stderr
     assert "Traceback" not in result.stderr and not (tmp_path / "x.png").exists()
 
 

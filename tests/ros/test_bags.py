@@ -249,3 +249,35 @@ def test_more_messages_than_observations_seal_takes_are_refused(tmp_path: Path,
     assert len(read_run(tmp_path / "b.mcap").observations) == 3
     write_run(tmp_path / "b.mcap", good, [(1.5 + 0.1 * i, "map", []) for i in range(4)])
     assert "/detections holds more than 3 messages" in message_of(tmp_path / "b.mcap")
+
+
+@pytest.mark.parametrize("source", ["pose", "tf"])
+@pytest.mark.parametrize("rotation", [(0.0, 0.0, 0.0, 0.0), (0.0, 0.0, 3.5, 0.5), (0.0, 0.0, 0.1, 0.9)])
+def test_a_rotation_that_is_no_unit_quaternion_is_refused(tmp_path: Path, source: str,
+                                                          rotation: tuple[float, ...]) -> None:
+    """hostile19: a ROS 1 pose left at its default orientation (0, 0, 0, 0), or a damaged byte in it, scaled every
+    detection it carried (seal's rotations assume a unit quaternion), and was imported."""
+    path = tmp_path / f"b{source}.mcap"
+    messages = run_messages(path, [(1.0, -6.0, -3.0, 0.0), (3.0, -5.0, -3.0, 0.0)],
+                            [(2.0, "base_link", [("cup", 1.0, 1.0, 0.0)])], pose_source=source)
+    topic = "/robot_pose" if source == "pose" else "/tf"
+    last = [m for m in messages if m[0] == topic][-1][3]
+    q = last.pose.orientation if source == "pose" else last.transforms[0].transform.rotation
+    q.x, q.y, q.z, q.w = rotation
+    write_bag(path, messages, store_for(path))
+    said = message_of(path)
+    assert f"of message 2 on {topic} (qx, qy, qz, qw) is (" in said and "a rotation is a unit quaternion" in said
+    q.x, q.y, q.z, q.w = (0.0, 0.0, 0.6, 0.8)  # a unit quaternion: read
+    write_bag(path, messages, store_for(path))
+    assert len(read_run(path).observations) == 1
+
+
+def test_a_damaged_index_is_said_as_damage() -> None:
+    """hostile19: a ROS 1 bag with a flipped byte in its index said 'cannot read /tf from the bag: 60673' (a
+    KeyError) or nothing at all (an AssertionError inside rosbags)."""
+    from seal_cli.ros.reader import damage
+
+    assert damage(KeyError(60673)).startswith("the bag is damaged: a record or its index does not hold what its "
+                                              "header says (KeyError: 60673)")
+    assert "(AssertionError)" in damage(AssertionError())
+    assert damage(ValueError("Truncated record at offset 43")) == "Truncated record at offset 43"

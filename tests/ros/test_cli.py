@@ -214,3 +214,13 @@ def test_import_bag_and_goals_beside_a_link_loop_end_with_a_message(tmp_path: Pa
                                  "--particles", "20", "--goals", "g.yaml", "--rrd", "loop"])
     assert result.exit_code == 1 and "cannot write --rrd loop" in result.output
     assert not Path("o.yaml").exists() and not Path("g.yaml").exists()
+
+
+@pytest.mark.parametrize("name", ["goals.txt", "goals.json", "goals.png"])
+def test_goals_with_a_suffix_of_no_format_are_refused(tmp_path: Path, name: str) -> None:
+    """hostile19: `--goals goals.txt` wrote a ROS 2 bag folder called goals.txt."""
+    target = tmp_path / name
+    message = refused("localize", "--map", "apartment", "--task", "stir the cup", "--steps", "1", "--particles", "10",
+                      "--goals", str(target), out=target)
+    assert f"seal writes goals as YAML (.yaml, .yml), a ROS 1 bag (.bag), an MCAP bag (.mcap) or a ROS 2 bag folder " \
+           f"(a name without a suffix), not {target.suffix}" in message

@@ -81,3 +81,14 @@ def test_the_world_sees_through_any_sensor_model() -> None:
     items = [Item("cup_1", "cup", (0.8, 0.0), movable=True), Item("cup_2", "cup", (-0.8, 0.0), movable=True)]
     world = World(items, WorldRobot(pose=(0.0, 0.0, 0.0)), sensor=Blinkered())
     assert [d.id for d in world.observe()] == ["cup_1"]
+
+
+def test_a_simulated_detection_near_the_edge_stays_on_the_map() -> None:
+    """hostile19: a noisy detection of the apartment's apple (0.5 m from the map's edge) fell outside its bounds
+    once in a few thousand, and SeFM refused its own simulator's report (``bench ros --messages 3000`` failed)."""
+    m = Map("edge", bounds=(0.0, 0.0, 10.0, 10.0), objects=(ObjectTruth("apple", (9.9, 9.9)),))
+    sensor = RangeSensor.on_map(m, Sensor(range=5.0, p_detect=1.0, noise=1.0))
+    rng = np.random.default_rng(0)
+    seen = [d.at for _ in range(50) for d in sensor.detect((8.0, 8.0, 0.0), [("apple", (9.9, 9.9))], rng)]
+    assert len(seen) == 50 and all(0.0 <= x <= 10.0 and 0.0 <= y <= 10.0 for x, y in seen)
+    assert any(x == 10.0 or y == 10.0 for x, y in seen)  # some would have fallen outside

@@ -61,6 +61,7 @@ from seal_cli.maps.geometry import (
     shrink_factor,
 )
 from seal_cli.maps.model import Map, MapWarning, ObjectTruth, Person, Place, Robot, Room, Sensor
+from seal_cli.names import check_name_length
 from seal_cli.resources import map_path
 from seal_cli.yamlnodes import NodeReader
 from seal_cli.yamlnodes import is_null as _is_null
@@ -86,6 +87,9 @@ MAX_COORDINATE = 1e7
 """The largest coordinate (and angle) a map may give, in metres: 10,000 km takes in UTM's northings; a
 point at 1e300 m overflows the geometry's products and no map is that large."""
 MODES = ("trinary", "scale", "raw")
+MIN_RESOLUTION = 1e-3
+"""The finest resolution of a map image, in metres per pixel: a millimetre, finer than any robot's range sensor; a
+resolution of 1e-300 gave a map of no area, and 1e300 a traceback (hostile19)."""
 
 T = TypeVar("T")
 Path_ = tuple[str | int, ...]
@@ -387,7 +391,10 @@ class _Reader(NodeReader):
         for key, _, value in self.pairs_at(root, "a map file", (), KEYS):
             nodes[key] = value
         server = self.map_server(nodes, root)
-        fields["name"] = (self.string(nodes["name"], "name") if "name" in nodes else None) or _default_name(self.path)
+        name = self.string(nodes["name"], "name") if "name" in nodes else None
+        if name is not None:
+            name = self.build(functools.partial(check_name_length, name, "map name"), nodes["name"])
+        fields["name"] = name or _default_name(self.path)
         if "bounds" in nodes:
             fields["bounds"] = self.bounds(nodes["bounds"])
         if "rooms" in nodes:
@@ -440,8 +447,9 @@ class _Reader(NodeReader):
         missing = [k for k in ("resolution", "origin") if k not in nodes]
         if missing:
             self.problem(f"a map with an image needs {' and '.join(missing)} (map_server keys)", nodes["image"])
-        resolution = self.number(nodes["resolution"], "resolution", lambda v: v > 0, "a positive number of metres "
-                                 "per pixel") if "resolution" in nodes else None
+        resolution = self.number(nodes["resolution"], "resolution", lambda v: v >= MIN_RESOLUTION,
+                                 f"a number of metres per pixel of at least {MIN_RESOLUTION:g} (a millimetre, finer "
+                                 "than any robot's range sensor)") if "resolution" in nodes else None
         origin = self.numbers(nodes["origin"], "origin", (2, 3)) if "origin" in nodes else None
         negate = self.boolean(nodes["negate"], "negate") if "negate" in nodes else False
         occ = self.number(nodes["occupied_thresh"], "occupied_thresh", lambda v: 0 <= v <= 1,
@@ -464,6 +472,13 @@ class _Reader(NodeReader):
             self.problem(exc.message, nodes["image"])
             return None
         width, height = read.size
+        corner = [origin[0] + width * resolution, origin[1] + height * resolution]
+        if max(abs(c) for c in corner) > MAX_COORDINATE:
+            self.problem(f"resolution {resolution:g} m of an image of {width:,}×{height:,} pixels from origin "
+                         f"[{origin[0]:g}, {origin[1]:g}] reaches [{corner[0]:g}, {corner[1]:g}] m; a map's "
+                         f"coordinates are at most {MAX_COORDINATE:,.0f} m (is the resolution in metres per pixel?)",
+                         nodes["resolution"])
+            return None
         if read.factor > 1:
             rows, cols = read.cells.shape
             self.problems.append(MapWarning(
@@ -493,6 +508,9 @@ class _Reader(NodeReader):
             name = self.string(fields["name"], "a room's name") if "name" in fields else None
             if "name" not in fields:
                 self.problem("a room needs a name", item)
+            if name and self.build(functools.partial(check_name_length, name, "room name"), fields["name"]) is None:
+                self.broken.add(name)  # said once, at its name: priors naming it are not said again
+                continue
             shapes = [k for k in ("polygon", "box") if k in fields]
             misspelt = any(isinstance(k, yaml.ScalarNode) and k.value not in ROOM_KEYS for k, _ in item.value)
             if len(shapes) != 1 and not (misspelt and not shapes):

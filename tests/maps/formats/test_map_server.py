@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import numpy as np
@@ -243,3 +244,20 @@ def test_a_map_of_more_values_than_the_bound_is_refused_at_the_value_past_it(tmp
     built, problems = read_map(path)
     assert built is None and [(p.where.line, p.message) for p in problems] == [
         (3, "this file holds more than 50 values; seal reads at most that many")]
+
+
+@pytest.mark.parametrize(("resolution", "says"), [
+    ("1e-300", "resolution must be a number of metres per pixel of at least 0.001"),
+    ("0.0009", "resolution must be a number of metres per pixel of at least 0.001"),
+    ("1e300", "resolution 1e+300 m of an image of 2×2 pixels from origin [0, 0] reaches [2e+300, 2e+300] m"),
+    ("6e6", "reaches [1.2e+07, 1.2e+07] m; a map's coordinates are at most 10,000,000 m"),
+])
+def test_a_resolution_no_map_can_have_is_refused_at_its_line(tmp_path: Path, resolution: str, says: str) -> None:
+    """hostile19: resolution 1e300 of a small PNG was an OverflowError traceback; 1e-300 a map of no area."""
+    (tmp_path / "i.pgm").write_bytes(b"P5\n2 2\n255\n" + bytes([254] * 4))
+    (tmp_path / "m.yaml").write_text(f"image: i.pgm\nresolution: {resolution}\norigin: [0, 0, 0]\n")
+    with pytest.raises(SealError, match=re.escape(says)) as caught:
+        load_map(tmp_path / "m.yaml")
+    assert (caught.value.where.line, caught.value.where.column) == (2, 13)
+    (tmp_path / "m.yaml").write_text("image: i.pgm\nresolution: 0.001\norigin: [0, 0, 0]\n")
+    assert load_map(tmp_path / "m.yaml").grid.resolution == 0.001

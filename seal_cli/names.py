@@ -1,0 +1,36 @@
+"""How long a name may be: of a frame, element, predicate, action, category or class, of a map, room,
+place or person.
+
+Every name is shown whole somewhere: in a row of ``seal frames`` or ``seal map`` on a terminal, in a label
+of a map's PNG, in a Rerun entity path (``world/rooms/<name>``), in a plan's step. A name of 100,000
+letters validated, then filled every message and every picture that showed it. :data:`MAX_NAME` is the
+longest name those show whole: 100 characters are one line of a 120-column terminal beside the
+table's other column, and, at the PNG's room-label size (9 pt bold, 120 dpi), about 900 pixels, the
+width of the apartment's picture; a longer name would run off it.
+"""
+
+from __future__ import annotations
+
+from seal_cli.errors import SealError, Where
+
+__all__ = ["MAX_NAME", "check_name_length", "name_too_long"]
+
+MAX_NAME = 100
+"""The most characters a name may hold (the class names' bound too: ``frames.taxonomy.MAX_CLASS_NAME``)."""
+
+
+def name_too_long(name: str, what: str, where: Where | None = None) -> SealError | None:
+    """The problem, at ``where``, of a name longer than :data:`MAX_NAME`, or None; ``what`` says which name
+    it is ("room name", "frame name")."""
+    if len(name) <= MAX_NAME:
+        return None
+    return SealError(f"{what} '{name[:40]}…' is {len(name):,} characters long; a name has at most {MAX_NAME} "
+                     "(what a terminal line, a label on a map's picture and a Rerun path show whole)", where)
+
+
+def check_name_length(name: str, what: str, where: Where | None = None) -> str:
+    """``name`` itself, or :func:`name_too_long`'s problem raised."""
+    problem = name_too_long(name, what, where)
+    if problem is not None:
+        raise problem
+    return name

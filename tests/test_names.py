@@ -1,0 +1,69 @@
+"""names: a name longer than a terminal line, a PNG label or a Rerun path shows whole is refused at its place."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from seal_cli.errors import SealError
+from seal_cli.frames.formats import dsl
+from seal_cli.frames.taxonomy import Category, Synonyms
+from seal_cli.maps.formats.map_server import load_map
+from seal_cli.names import MAX_NAME, check_name_length, name_too_long
+
+SMALL = "name: {map}\nbounds: [0, 0, 10, 10]\nrooms:\n  - name: {room}\n    box: [0, 0, 5, 10]\n" \
+        "people:\n  - {{name: {person}, at: [1, 1], role: {role}}}\n"
+
+
+def test_a_name_of_the_bound_passes_and_one_more_is_refused() -> None:
+    assert check_name_length("r" * MAX_NAME, "room name") == "r" * MAX_NAME
+    assert name_too_long("r" * MAX_NAME, "room name") is None
+    problem = name_too_long("r" * (MAX_NAME + 1), "room name")
+    assert problem is not None and "room name 'rrrr" in problem.message and "is 101 characters long" in problem.message
+
+
+@pytest.mark.parametrize(("field", "said", "where"), [
+    ("map", "map name", (1, 7)),
+    ("room", "room name", (4, 11)),
+    ("person", "person name", (7, 5)),
+    ("role", "person Sam: role", (7, 5)),
+])
+def test_a_map_names_the_long_name_at_its_line(tmp_path: Path, field: str, said: str, where: tuple[int, int]) -> None:
+    names = {"map": "m", "room": "hall", "person": "Sam", "role": "nurse"} | {field: "x" * 5000}
+    (tmp_path / "m.yaml").write_text(SMALL.format(**names))
+    with pytest.raises(SealError) as caught:
+        load_map(tmp_path / "m.yaml")
+    problems = getattr(caught.value, "problems", None) or [caught.value]
+    assert len(problems) == 1, [str(p) for p in problems]  # said once: nothing said again of what names it
+    assert problems[0].message.startswith(f"{said} 'xxxx") and "5,000 characters long" in problems[0].message
+    assert (problems[0].where.line, problems[0].where.column) == where
+
+
+def test_names_of_the_bound_read(tmp_path: Path) -> None:
+    names = {"map": "m" * MAX_NAME, "room": "h" * MAX_NAME, "person": "S" * MAX_NAME, "role": "n" * MAX_NAME}
+    (tmp_path / "m.yaml").write_text(SMALL.format(**names))
+    m = load_map(tmp_path / "m.yaml")
+    assert m.name == "m" * MAX_NAME and m.rooms[0].name == "h" * MAX_NAME and m.people[0].name == "S" * MAX_NAME
+
+
+@pytest.mark.parametrize(("text", "said"), [
+    ('frame Z{long} "zap" {{\n  theme: thing\n  do navigate(theme)\n}}\n', "frame name"),
+    ('frame Zap "zap" {{\n  t{long}: thing\n  do navigate(theme)\n}}\n', "element"),
+    ('frame Zap "zap" {{\n  theme: t{long}\n  do navigate(theme)\n}}\n', "type"),
+    ('frame Zap "zap" {{\n  theme: thing\n  do navigate(theme)\n  ensures p{long}(theme)\n}}\n', "predicate"),
+    ('frame Zap "zap" {{\n  theme: thing\n  do a{long}(theme)\n}}\n', "action"),
+])
+def test_a_frame_names_the_long_name(text: str, said: str) -> None:
+    problems = dsl.read(text.format(long="z" * 3000), "f.frame").problems
+    assert any(p.message.startswith(f"{said} '") and "3,001 characters long" in p.message for p in problems), \
+        [str(p) for p in problems]
+
+
+def test_categories_and_synonyms_refuse_long_names() -> None:
+    with pytest.raises(SealError, match=r"^category name 'uuu.*3,000 characters long"):
+        Category("u" * 3000, ("spoon",))
+    with pytest.raises(SealError, match=r"category utensil: member 'sss.*3,000 characters long"):
+        Category("utensil", ("s" * 3000,))
+    with pytest.raises(SealError, match=r"synonyms of fridge: name 'iii.*3,000 characters long"):
+        Synonyms("fridge", ("i" * 3000,))
