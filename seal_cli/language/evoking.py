@@ -459,6 +459,13 @@ class Evoker:
             if end is not None:
                 elements["goal"] = self.stated_phrase(end)
 
+    def mentioned_class(self, said: Mention) -> str | None:
+        """The class a thing a statement or condition named is, by all its words, as the phrase itself would be
+        grounded ("if *the coffee machine* is on, turn it off": ``coffee_machine``, not the head's "machine");
+        None without a vocabulary or when its words name no class of it."""
+        words = [w for w in self.text[said.start:said.end].split() if w.lower() not in NP_OPENERS]
+        return self.vocabulary.grounded(words, []) if self.vocabulary is not None and words else None
+
     def stated_phrase(self, place: Mention) -> Phrase:
         """A place a statement said, as an element (its head, grounded when a vocabulary is given)."""
         text = self.text[place.start:place.end]
@@ -788,7 +795,8 @@ class Evoker:
             if said is not None:                    # "Bogdan has a question; answer it for him"
                 person = said.name or self.types.is_a(noun_lemma(said.head), "person") is True
                 return Phrase(self.text[np.start:np.end], said.head if said.name else noun_lemma(said.head),
-                              None, "person" if person else "thing", span=(np.start, np.end))
+                              None if person else self.mentioned_class(said), "person" if person else "thing",
+                              span=(np.start, np.end))
             return Phrase(self.text[np.start:np.end], np.head_text, None,
                           "thing" if np.kind == "pronoun" and np.pronoun == "it" else
                           "person" if np.kind == "pronoun" else np.kind, span=(np.start, np.end))

@@ -1088,9 +1088,13 @@ def _person_words(phrase: Phrase) -> str:
 def _place_words(phrase: Phrase) -> str:
     """The words a phrase names its place by: its text, or its head when a word said names a place by another
     name (the parser's "see Helen *out*": the exit) or a bare "there" stands for a place a statement named ("Sam
-    wants to go to the kitchen, lead him *there*": its head is the kitchen)."""
+    wants to go to the kitchen, lead him *there*": its head is the kitchen), or "it" stands for a thing a condition
+    or statement named ("the coffee machine is on, turn *it* off": its class's words)."""
     if phrase.kind == "place" and phrase.head and phrase.text and phrase.head.lower() not in phrase.text.lower():
         return phrase.head
     if phrase.text and phrase.text.lower() in THERE and phrase.head and phrase.head.lower() not in THERE:
         return phrase.head
+    if phrase.text and phrase.text.lower() in HELD_PRONOUNS and phrase.refers_to is None and phrase.cls and \
+            phrase.head.lower() not in HELD_PRONOUNS:
+        return " ".join(class_words(phrase.cls))   # "if the coffee machine is on, turn *it* off": what was said
     return phrase.text or ""

@@ -1638,7 +1638,18 @@ class Agent:
         outcome = self._act_words("say", [binding.elements.get("message", asked)], f'asked{whom} "{asked}?"')
         if outcome.ok and whom:
             self.answer(f'{person} gave no answer to "{asked}?" (the simulator\'s people do not speak)')
+            if self.index + 1 >= len(self.steps) and SPEAKER in self.world.items:
+                return self.report_back(f'{person} gave no answer to "{asked}?"', binding)
         return outcome
+
+    def report_back(self, said: str, binding: Binding) -> Outcome:
+        """Bring what a person answered back to whoever asked (the question the command's last step): drive to the
+        speaker and say it there ("tells the speaker that Raj gave no answer ..."). A later step of the command
+        takes the robot on instead (the run's answer line says it all the same)."""
+        went = self.go_to(SPEAKER, binding)
+        if not went.ok:
+            return went
+        return self._act_words("say", ["report"], f"tells the speaker that {said}")
 
     def in_words(self, text: str) -> str:
         """An answer as said to a person, not printed for the speaker's record: a thing's or place's id as its
