@@ -794,9 +794,12 @@ class Evoker:
             said = self.reference.mentioned(np, frame, role)
             if said is not None:                    # "Bogdan has a question; answer it for him"
                 person = said.name or self.types.is_a(noun_lemma(said.head), "person") is True
-                return Phrase(self.text[np.start:np.end], said.head if said.name else noun_lemma(said.head),
-                              None if person else self.mentioned_class(said), "person" if person else "thing",
-                              span=(np.start, np.end))
+                if person:
+                    return Phrase(self.text[np.start:np.end], said.head if said.name else noun_lemma(said.head),
+                                  None, "person", span=(np.start, np.end))
+                start, end = self.reference.with_its_place(said)
+                return Phrase(self.text[np.start:np.end], noun_lemma(said.head), self.mentioned_class(said), "thing",
+                              span=(np.start, np.end), stands_for=self.text[start:end])
             return Phrase(self.text[np.start:np.end], np.head_text, None,
                           "thing" if np.kind == "pronoun" and np.pronoun == "it" else
                           "person" if np.kind == "pronoun" else np.kind, span=(np.start, np.end))

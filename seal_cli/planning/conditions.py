@@ -61,7 +61,11 @@ def as_question(condition: str) -> str | None:
     if rest[0].lower() == "there":          # "there is milk in the fridge": a place said after the thing
         if be != 1 or not any(w.lower() in _WHERE for w in rest[be + 2:]):
             return None
-    elif rest[be + 1].lower() not in _WHERE and not _state_said(rest[be + 1:]):
+    elif _state_said(rest[be + 1:]):       # "the fridge is open", "the light is on" ("on" with nothing after it)
+        at = next((k for k, w in enumerate(rest[1:be], 1) if w.lower() in _WHERE), None)
+        if at is not None:    # "the light in the office is on": "is the light on in the office?", the state asked
+            rest = [*rest[:at], *rest[be:], *rest[at:be]]     # of the thing there, as a question says it
+    elif rest[be + 1].lower() not in _WHERE:
         return None
     return direct_question(["if", *rest])
 

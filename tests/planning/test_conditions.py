@@ -26,6 +26,8 @@ from seal_cli.sim.policies import make_policy
     ("if the coffee machine is still on", "is the coffee machine still on?"),
     ("if the dishwasher is not empty", "is the dishwasher not empty?"),
     ("if the fridge is open and cold", None),                         # more than one state word
+    ("if the light in the office is on", "is the light on in the office?"),   # the place after the state
+    ("if the mug is on the table", "is the mug on the table?"),       # "on" and a place: where it is
 ])
 def test_a_condition_about_where_something_is_is_a_question(said: str, question: str | None) -> None:
     assert as_question(said) == question
@@ -85,3 +87,21 @@ def test_seal_plan_shows_the_check_before_the_steps(library: Library) -> None:
     assert [str(s) for s in state.steps] == ["ToggleOff(theme=coffee_machine_1)"]
     assert plan("give Tom the hammer", library, map=load_map("townhouse")).check is None
     assert plan("when the water boils, turn off the stove", library, map=load_map("apartment")).check is None
+
+
+@pytest.mark.parametrize(("text", "step"), [
+    ("turn off the light in the office", "ToggleOff(theme=desk_lamp_1)"),      # "light": a lamp, by the room said
+    ("is the light on in the office?", "LookAt(theme=desk_lamp_1)"),           # the place after the state
+    ("if the light in the office is on, switch it off", "ToggleOff(theme=desk_lamp_1)"),  # "it": what was said
+    ("if the coffee machine is on, turn it off", None),
+])
+def test_a_thing_named_in_a_condition_or_a_question_is_the_one_in_the_place_said(library: Library, text: str,
+                                                                                  step: str | None) -> None:
+    """The lodge has a floor lamp in the lounge (first on the map) and a desk lamp in the office (e2e21)."""
+    from seal_cli.pipeline import plan
+
+    if step is None:      # the office floor's coffee machine, by all the words the condition said
+        assert [str(s) for s in plan(text, library, map=load_map("office_floor")).steps] == \
+            ["ToggleOff(theme=coffee_machine_1)"]
+        return
+    assert [str(s) for s in plan(text, library, map=load_map("lodge")).steps] == [step]
