@@ -65,7 +65,9 @@ def plan(text: str, library: Library | None = None, *, holding: str | None = Non
     problem = problem_of_text(text, library, holding=holding, done=done, map=map, vocabulary=vocabulary)
     found = planning.plan(problem.commanded, library, problem.state, max_nodes=max_nodes, text=text)
     found = replace(found, warnings=(*problem.warnings, *found.warnings)) if problem.warnings else found
-    if map is None:
+    from seal_cli.planning.conditions import may_be_checked
+
+    if map is None or not may_be_checked(text):
         return found
     words = vocabulary_of_map(map) if vocabulary is None else vocabulary      # as problem_of_text parsed it
     condition, check = _condition_check(parse_to_plan(text, library, words), library, words, map)

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 from seal_cli.language.asking import direct_question
 
-__all__ = ["Condition", "as_question", "checked_condition"]
+__all__ = ["Condition", "as_question", "checked_condition", "may_be_checked"]
 
 _IF = ("if",)
 """Subordinators of a condition that holds or not now (not "when"/"once", which wait for it to come true)."""
@@ -79,6 +79,12 @@ def _state_said(after: Sequence[str]) -> bool:
     while len(words) > 1 and words[0] in _STATE_ADVERBS:
         words = words[1:]
     return len(words) == 1 and words[0] in STATE_WORDS
+
+
+def may_be_checked(text: str) -> bool:
+    """Whether a command may hold a condition the robot checks: one of its words opens one ("if"). A cheap test
+    before parsing the command again (``pipeline.plan``)."""
+    return any(w.strip(",.;:!?").lower() in _IF for w in text.split())
 
 
 def checked_condition(frames: Sequence[object]) -> Condition | None:
