@@ -1,6 +1,7 @@
 """Draw the occupancy images of the example houses ``townhouse.yaml``, ``office_floor.yaml``,
 ``cafe.yaml`` and ``clinic.yaml``, and of the context suite's unseen houses ``farmhouse.yaml`` and
-``terrace.yaml``, and the L-shaped ``bungalow.yaml`` (run once; the PGMs are committed next to this script).
+``terrace.yaml``, the L-shaped ``bungalow.yaml``, and ``lodge.yaml``, e2e21's held-out holiday lodge (run once;
+the PGMs are committed next to this script).
 
     python maps/make_houses.py          # rewrites maps/<house>.pgm for each of HOUSES
 
@@ -157,7 +158,23 @@ BUNGALOW = House(
     cutouts=((9.0, 6.0, 16.0, 12.0),),
 )
 
-HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC, FARMHOUSE, TERRACE, BUNGALOW)
+LODGE = House(
+    "lodge", (0.0, 0.0, 15.0, 9.0),
+    walls=(
+        ((3.0, 0.0, 3.0, 4.0), ((0.5, 1.5),)),                 # porch | corridor, porch | utility room
+        ((0.0, 4.0, 6.0, 4.0), ((1.0, 2.0),)),                 # porch | lounge, utility room | lounge
+        ((3.0, 2.0, 15.0, 2.0), ((4.0, 5.0), (7.0, 8.0), (10.5, 11.5), (13.0, 14.0))),  # corridor | the rest
+        ((6.0, 2.0, 6.0, 9.0), ((6.0, 7.0),)),                 # utility room | kitchen, lounge | kitchen
+        ((10.0, 2.0, 10.0, 9.0), ((7.0, 8.0),)),               # kitchen | bathroom, kitchen | office
+        ((10.0, 5.0, 12.5, 5.0), ()),                          # bathroom | office
+        ((12.5, 2.0, 12.5, 9.0), ()),                          # bathroom, office | bedroom
+    ),
+    blocks=(
+        (14.5, 6.5, 14.925, 8.8),  # the bedroom's wardrobe against the east wall
+    ),
+)
+
+HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC, FARMHOUSE, TERRACE, BUNGALOW, LODGE)
 
 
 def draw(house: House) -> np.ndarray:

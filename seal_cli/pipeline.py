@@ -58,11 +58,22 @@ def plan(text: str, library: Library | None = None, *, holding: str | None = Non
          map: Map | None = None, vocabulary: Any = None, max_nodes: int = MAX_NODES) -> Plan:
     """Parse a command, ground it in the robot's state and the map (:mod:`seal_cli.planning.problem`), plan it.
 
-    ``holding``: what the robot holds; ``done``: commands already carried out, in order."""
+    ``holding``: what the robot holds; ``done``: commands already carried out, in order. On a map, a condition the
+    robot checks first ("*if Tom is in the garage*, give him the hammer") is the plan's ``check``: the look that
+    answers it, before the steps ``seal run`` carries out only when it holds."""
     library = _or_standard(library)
     problem = problem_of_text(text, library, holding=holding, done=done, map=map, vocabulary=vocabulary)
     found = planning.plan(problem.commanded, library, problem.state, max_nodes=max_nodes, text=text)
-    return replace(found, warnings=(*problem.warnings, *found.warnings)) if problem.warnings else found
+    found = replace(found, warnings=(*problem.warnings, *found.warnings)) if problem.warnings else found
+    from seal_cli.planning.conditions import may_be_checked
+
+    if map is None or not may_be_checked(text):
+        return found
+    words = vocabulary_of_map(map) if vocabulary is None else vocabulary      # as problem_of_text parsed it
+    condition, check = _condition_check(parse_to_plan(text, library, words), library, words, map)
+    if condition is None or check is None:
+        return found
+    return replace(found, check=replace(condition, looks=tuple(str(b) for b in check[1].commanded)))
 
 
 def frames_to_localise(tasks: Sequence[str], library: Library, map: Map, *, holding: str | None = None,
@@ -209,8 +220,9 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
 
 def _condition_check(parse: Parse, library: Library, vocabulary: Any, m: Map) -> tuple[Any, Any]:
     """The condition every frame of a parse is said under, when the robot checks it by looking
-    (:mod:`seal_cli.planning.conditions`: "if Tom is in the garage"), with its question's parse and problem (one
-    Find: "is Tom in the garage?"); (None, None) when there is none, or the question plans to anything else."""
+    (:mod:`seal_cli.planning.conditions`: "if Tom is in the garage", "if the fridge is open"), with its question's
+    parse and problem (one Find: "is Tom in the garage?", or one LookAt: "is the fridge open?"); (None, None) when
+    there is none, or the question plans to anything else (:func:`_checks`)."""
     from seal_cli.errors import SealError
     from seal_cli.planning.conditions import checked_condition
 
@@ -222,6 +234,16 @@ def _condition_check(parse: Parse, library: Library, vocabulary: Any, m: Map) ->
         check = build_problem(asked, library, map=m.known(), vocabulary=vocabulary)
     except SealError:
         return None, None
-    if [b.frame.name for b in check.commanded] != ["Find"] or "ground" not in check.commanded[0].elements:
+    if not _checks(asked, check):
         return None, None
     return condition, (asked, check)
+
+
+def _checks(asked: Parse, check: Any) -> bool:
+    """Whether a condition's question plans to one look that answers it: a Find of the thing with where it is
+    said to be as its ground ("is Tom in the garage?"), or a LookAt of a thing with the state asked ("is the
+    fridge open?")."""
+    frames = [b.frame.name for b in check.commanded]
+    if frames == ["Find"]:
+        return "ground" in check.commanded[0].elements
+    return frames == ["LookAt"] and len(asked.frames) == 1 and bool(getattr(asked.frames[0], "asked", None))

@@ -46,9 +46,13 @@ def _load_world(map_name: str | None) -> Map | None:
 
 
 def show(plan: Plan) -> None:
-    """The plan as a numbered list: commanded frames in bold, inserted ones with their reason."""
+    """The plan as a numbered list: commanded frames in bold, inserted ones with their reason; first the look that
+    checks the command's condition, when the run checks one ("if Tom is in the garage")."""
     from rich.table import Table
 
+    if plan.check is not None:     # what the run looks at first; the steps below only if the condition holds
+        out.print(f"[dim]checks first:[/dim] {plain(plan.check.question)} "
+                  f"({plain(', '.join(plan.check.looks))}); then, only if {plain(plan.check.said.split(None, 1)[1])}:")
     table = Table.grid(padding=(0, 2))
     for column in ("number", "frame", "elements", "because"):
         table.add_column(justify="right" if column == "number" else "left")

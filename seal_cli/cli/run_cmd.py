@@ -133,10 +133,11 @@ def run(
                        "completed": skills.completed, "reason": skills.reason, "path_m": round(skills.path_m, 3),
                        "steps": skills.steps, "skills": skills.history,
                        "proposed_unafforded": skills.proposed_unafforded, "never_seen": skills.never_seen})
-        else:
-            out.print(f"{'said done' if skills.completed else plain(skills.reason)} — {skills.path_m:.2f} m driven, "
-                      f"{skills.steps} steps")
-        if not skills.completed:
+        elif skills.completed:
+            out.print(f"said done — {skills.path_m:.2f} m driven, {skills.steps} steps")
+        if not skills.completed:   # exit 1, and why on stderr (SPEC, "Exit codes")
+            why = skills.reason if skills.reason.startswith("not done") else f"not done: {skills.reason}"
+            err.print(f"{plain(why)} — {skills.path_m:.2f} m driven, {skills.steps} steps", markup=False)
             raise typer.Exit(1)
         return
     searcher.keep_clouds = rrd is not None or png is not None
@@ -167,10 +168,11 @@ def run(
     else:
         if result.answer:
             out.print(f"[bold]answer:[/bold] {plain(result.answer)}", markup=True)
-        verdict = "[bold green]done[/bold green]" if result.completed else \
-            f"[bold red]not done[/bold red]: {plain(result.reason)}"
-        out.print(f"{verdict} — {result.path_m:.2f} m driven, {result.steps} steps")
-    if not result.completed:
+        if result.completed:
+            out.print(f"[bold green]done[/bold green] — {result.path_m:.2f} m driven, {result.steps} steps")
+    if not result.completed:   # the job could not be done: exit 1, and why on stderr (SPEC, "Exit codes")
+        err.print(f"[bold red]not done[/bold red]: {plain(result.reason)} — {result.path_m:.2f} m driven, "
+                  f"{result.steps} steps", markup=True)
         raise typer.Exit(1)
 
 

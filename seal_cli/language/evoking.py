@@ -463,6 +463,13 @@ class Evoker:
             if end is not None:
                 elements["goal"] = self.stated_phrase(end)
 
+    def mentioned_class(self, said: Mention) -> str | None:
+        """The class a thing a statement or condition named is, by all its words, as the phrase itself would be
+        grounded ("if *the coffee machine* is on, turn it off": ``coffee_machine``, not the head's "machine");
+        None without a vocabulary or when its words name no class of it."""
+        words = [w for w in self.text[said.start:said.end].split() if w.lower() not in NP_OPENERS]
+        return self.vocabulary.grounded(words, []) if self.vocabulary is not None and words else None
+
     def stated_phrase(self, place: Mention) -> Phrase:
         """A place a statement said, as an element (its head, grounded when a vocabulary is given)."""
         text = self.text[place.start:place.end]
@@ -796,11 +803,12 @@ class Evoker:
             said = self.reference.mentioned(np, frame, role)
             if said is not None:                    # "Bogdan has a question; answer it for him"
                 person = said.name or self.types.is_a(noun_lemma(said.head), "person") is True
-                words = [w for w in self.text[said.start:said.end].split() if w.lower() not in NP_OPENERS]
-                cls = self.vocabulary.grounded(words, []) if self.vocabulary is not None and words and \
-                    not person else None        # "if you see my glasses, bring them": the glasses of the map (words25)
-                return Phrase(self.text[np.start:np.end], said.head if said.name else noun_lemma(said.head),
-                              cls, "person" if person else "thing", span=(np.start, np.end))
+                if person:
+                    return Phrase(self.text[np.start:np.end], said.head if said.name else noun_lemma(said.head),
+                                  None, "person", span=(np.start, np.end))
+                start, end = self.reference.with_its_place(said)
+                return Phrase(self.text[np.start:np.end], noun_lemma(said.head), self.mentioned_class(said), "thing",
+                              span=(np.start, np.end), stands_for=self.text[start:end])
             return Phrase(self.text[np.start:np.end], np.head_text, None,
                           "thing" if np.kind == "pronoun" and np.pronoun == "it" else
                           "person" if np.kind == "pronoun" else np.kind, span=(np.start, np.end))

@@ -174,6 +174,16 @@ class Reference:
             said = fitting or [m for m in said if m.determined and not m.oblique] or [m for m in said if m.determined]
         return said[-1] if said else None
 
+    def with_its_place(self, said: Mention) -> tuple[int, int]:
+        """The span of a phrase a statement or condition named, with the place said right after it in the same
+        phrase ("if *the light in the office* is on": "in" and the office), where that says which one; the
+        phrase's own span when none follows."""
+        following = next((m for m in self._said() if m.start >= said.end), None)
+        between = self.text[said.end:following.start].split() if following is not None else []
+        if following is None or not following.oblique or len(between) != 1 or between[0].lower() not in LOCATED:
+            return said.start, said.end
+        return said.start, following.end
+
     def pointed_person(self, np: NP) -> NP | None:
         """"Find *that person*", "follow this man": a demonstrative and a noun of people, said after a statement or
         clause that introduced a person, points at that person, as "him" or "them" would (what it stands for is

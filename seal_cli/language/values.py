@@ -39,6 +39,10 @@ class Phrase:
     preposition: str | None = field(default=None, compare=False)
     """The preposition it was said with ("on" of "put the teapot *on* the sideboard"), None for an object;
     read by the planner (:func:`seal_cli.planning.problem.on_top`), not part of the SPEC's JSON (as ``span``)."""
+    stands_for: str | None = field(default=None, compare=False)
+    """For a pronoun that stands for a thing a statement or condition named, those words with where they say it is
+    ("if *the light in the office* is on, switch it off"): what the planner grounds on the map in its stead; not
+    part of the SPEC's JSON (the element's text is the pronoun said)."""
 
     def to_json(self) -> dict[str, Any]:
         data: dict[str, Any] = {"text": self.text, "head": self.head, "class": self.cls}

@@ -225,7 +225,21 @@ class MapNames:
         scored = [(0 if self._another_compound(r, words) else self._score(r, words, prefix), r)
                   for r in self.referents if r.kind in kinds]
         top = max((s for s, _ in scored), default=0)
+        if top == 0:
+            return self._of_general_noun(words, kinds)
         return [r for s, r in scored if s == top and s > 0]
+
+    def _of_general_noun(self, words: tuple[str, ...], kinds: Iterable[str]) -> list[Referent]:
+        """The places a general noun of their kinds calls when no name, class or synonym does: a word that is both
+        a kind of thing and the library's category of its kinds ("light": a desk lamp, a floor lamp, a light
+        switch), said alone ("turn off the light in the office": the office's desk lamp; "the ceiling light" is
+        not this). A category that is no kind of thing itself ("furniture", "heater") calls nothing."""
+        if len(words) != 1 or "place" not in set(kinds):
+            return []
+        category = self.taxonomy.by_name.get(class_key(words[0]))
+        if category is None or not category.members or category.name not in category.members:
+            return []
+        return [r for r in self.referents if r.kind == "place" and self.taxonomy.is_a(r.cls, category.name) is True]
 
     @cached_property
     def _describing(self) -> frozenset[str]:

@@ -61,7 +61,7 @@ from seal_cli.frames.taxonomy import Taxonomy
 from seal_cli.planning.state import State
 
 if TYPE_CHECKING:
-    pass
+    from seal_cli.planning.conditions import Condition
 
 __all__ = ["MAX_CHAIN", "MAX_NODES", "Plan", "Step", "already_so", "explain", "plan"]
 
@@ -114,6 +114,9 @@ class Plan:
     """Search nodes expanded to find the plan."""
     warnings: tuple[str, ...] = field(default=(), compare=False)
     """What the map does not know of the command (``Problem.warnings``)."""
+    check: Condition | None = field(default=None, compare=False)
+    """The command's condition when the robot checks it first ("if Tom is in the garage": a look, then the steps
+    only if it holds; :mod:`seal_cli.planning.conditions`), with the steps that check it."""
 
     @property
     def bindings(self) -> tuple[Binding, ...]:
@@ -136,6 +139,8 @@ class Plan:
                                 "state": [str(f) for f in self.initial], "goal": [str(f) for f in self.goal]}
         if self.warnings:
             data["warnings"] = list(self.warnings)
+        if self.check is not None:
+            data["check"] = self.check.to_json()
         return data
 
     def __len__(self) -> int:

@@ -652,6 +652,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         frame = library.frame(evoked.frame)
         if getattr(evoked, "asked", None) and "theme" in frame.roles:     # "is the fridge open?": looked at
             frame = looking(frame)
+            evoked = _where_asked(evoked)
         asked = _counted_roles(frame) | ({"theme"} if asks_whether(parse.text, evoked) else set())
         values = {role: _values(_sought_where(evoked, role, things), earlier, things, parse.text,
                                 frame.element(role).type, role in asked, _carried(frame, role), _gone_to(frame, role),
@@ -1085,12 +1086,33 @@ def _person_words(phrase: Phrase) -> str:
     return text if phrase.head.lower() in text.lower().split() else phrase.head
 
 
+def _where_asked(evoked: Any) -> Any:
+    """A state question whose place follows the state ("is the light on *in the office*?"): its theme grounded as
+    the thing in that place ("the light in the office": the office's desk lamp, not the lounge's floor lamp), as
+    when the place is said with it. Unchanged when no place follows, or the theme says its own."""
+    from seal_cli.language.english import LOCATED
+    from seal_cli.planning.questions import STATE_WORDS
+
+    theme = evoked.elements.get("theme")
+    words = str(evoked.asked).split()
+    if theme is None or not theme.text or theme.refers_to is not None or where_words(theme.text):
+        return evoked
+    for i, word in enumerate(words[1:-1], 1):
+        if word.lower() in LOCATED and words[i - 1].lower() in STATE_WORDS:
+            said = f"{theme.text} {' '.join(words[i:])}"
+            return replace(evoked, elements={**evoked.elements, "theme": replace(theme, stands_for=said)})
+    return evoked
+
+
 def _place_words(phrase: Phrase) -> str:
     """The words a phrase names its place by: its text, or its head when a word said names a place by another
     name (the parser's "see Helen *out*": the exit) or a bare "there" stands for a place a statement named ("Sam
-    wants to go to the kitchen, lead him *there*": its head is the kitchen)."""
+    wants to go to the kitchen, lead him *there*": its head is the kitchen), or "it" stands for a thing a condition
+    or statement named ("the coffee machine is on, turn *it* off": its words, with where they say it is)."""
     if phrase.kind == "place" and phrase.head and phrase.text and phrase.head.lower() not in phrase.text.lower():
         return phrase.head
     if phrase.text and phrase.text.lower() in THERE and phrase.head and phrase.head.lower() not in THERE:
         return phrase.head
+    if phrase.stands_for:   # "if the coffee machine is on, turn *it* off": what the condition said
+        return phrase.stands_for
     return phrase.text or ""

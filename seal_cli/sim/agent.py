@@ -427,7 +427,8 @@ class Agent:
 
     def search_ended(self, value: str) -> Outcome | None:
         """Not found, when less than ``search_end`` of the prior of the thing's kind is left unsearched:
-        "no sandwich found: searched the staff room, ..., looked into fridge_1 (...)"."""
+        "no sandwich found: searched the staff room, ..., looked into fridge_1 (...)"; for a further one of a kind
+        it has one of ("bring me three towels", ``towel_2``), "no other towel found: ..."."""
         left = self.unsearched.get(self.class_of(value))
         if self.search_end is None or left is None or left.left >= self.search_end:
             return None
@@ -435,8 +436,11 @@ class Agent:
         opened = sorted(p for p in self.opened if p in left.inside)
         said = ", ".join(f"the {r}" for r in rooms) or "where it looked"
         into = f"; looked into {', '.join(opened)}" if opened else ""
-        return Fatal(False, f"no {self.said(value)} found: searched {said}{into} (had the {self.scene.map.name} "
-                     f"one, it would have been seen with probability {1 - left.left:.2f})", Reason.NOT_FOUND, value)
+        cls = self.class_of(value)
+        other = class_key(value) != cls and any(k.cls == cls for k in self.known.values() if k.movable)
+        what, one = (f"other {self.said(value)}", "another") if other else (self.said(value), "one")
+        return Fatal(False, f"no {what} found: searched {said}{into} (had the {self.scene.map.name} {one}, it "
+                     f"would have been seen with probability {1 - left.left:.2f})", Reason.NOT_FOUND, value)
 
     def class_of(self, value: str) -> str:
         key = class_key(value)
@@ -1019,10 +1023,12 @@ class Agent:
         return item is not None and item.key == PERSON
 
     def _sought_person(self, value: str) -> bool:
-        """Whether a value sought is someone: a person of the world, or of the library's class person ("mum",
-        whom the map does not name). Nobody is looked for inside a fridge: the house search for them does not
-        peek into closed places."""
-        return self.is_person(value) or self.library.taxonomy.is_a(self.class_of(value), PERSON) is True
+        """Whether a value sought is someone: a person of the world, of the library's class person ("mum",
+        whom the map does not name), or named as a person by the command ("tell Sophie ...", whom the map does not
+        place: :attr:`names`). Nobody is looked for inside a fridge: the house search for them does not peek into
+        closed places."""
+        return self.is_person(value) or self.library.taxonomy.is_a(self.class_of(value), PERSON) is True or \
+            class_key(value) in self.names
 
     def sweep_once(self, value: str, binding: Binding) -> Outcome | None:
         """One room of the whole-house search for a kind of thing nothing tells the robot where to
@@ -1638,7 +1644,18 @@ class Agent:
         outcome = self._act_words("say", [binding.elements.get("message", asked)], f'asked{whom} "{asked}?"')
         if outcome.ok and whom:
             self.answer(f'{person} gave no answer to "{asked}?" (the simulator\'s people do not speak)')
+            if self.index + 1 >= len(self.steps) and SPEAKER in self.world.items:
+                return self.report_back(f'{person} gave no answer to "{asked}?"', binding)
         return outcome
+
+    def report_back(self, said: str, binding: Binding) -> Outcome:
+        """Bring what a person answered back to whoever asked (the question the command's last step): drive to the
+        speaker and say it there ("tells the speaker that Raj gave no answer ..."). A later step of the command
+        takes the robot on instead (the run's answer line says it all the same)."""
+        went = self.go_to(SPEAKER, binding)
+        if not went.ok:
+            return went
+        return self._act_words("say", ["report"], f"tells the speaker that {said}")
 
     def in_words(self, text: str) -> str:
         """An answer as said to a person, not printed for the speaker's record: a thing's or place's id as its

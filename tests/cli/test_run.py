@@ -43,6 +43,11 @@ def test_run_refuses_what_cannot_be_done() -> None:
     result = runner.invoke(app, ["run", "--map", "apartment", "pick up the unicorn", "--max-steps", "30",
                                  "--particles", "50"])
     assert result.exit_code == 1 and "not done" in result.output
+    json_run = runner.invoke(app, ["run", "--map", "bungalow", "bring me the unicorn", "--json"])
+    assert json_run.exit_code == 1 and not json.loads(json_run.stdout)["completed"]      # SPEC: exit 1, why on stderr
+    assert json_run.stderr.startswith("not done: no unicorn found")
+    plain_run = runner.invoke(app, ["run", "--map", "bungalow", "bring me the unicorn"])
+    assert plain_run.exit_code == 1 and "not done" not in plain_run.stdout and "not done" in plain_run.stderr
     bad = runner.invoke(app, ["run", "--map", "no_such_map.yaml", "stir the cup"])
     assert bad.exit_code == 1 and "Traceback" not in bad.output
     unknown = runner.invoke(app, ["run", "--map", "apartment", "stir the cup", "--policy", "psychic"])

@@ -13,6 +13,7 @@ import pytest
 from seal_cli.maps.formats.map_server import load_map, read_pgm
 
 MAPS = Path(__file__).resolve().parents[2] / "maps"
+HOUSES = ["townhouse", "office_floor", "cafe", "clinic", "farmhouse", "terrace", "bungalow", "lodge"]
 
 
 def make_houses():  # type: ignore[no-untyped-def]
@@ -24,7 +25,7 @@ def make_houses():  # type: ignore[no-untyped-def]
     return module
 
 
-@pytest.mark.parametrize("name", ["townhouse", "office_floor", "cafe", "clinic", "farmhouse", "terrace", "bungalow"])
+@pytest.mark.parametrize("name", HOUSES)
 def test_the_committed_image_is_what_the_script_draws(name: str) -> None:
     module = make_houses()
     house = next(h for h in module.HOUSES if h.name == name)
@@ -32,7 +33,7 @@ def test_the_committed_image_is_what_the_script_draws(name: str) -> None:
     assert np.array_equal(read_pgm((MAPS / f"{name}.pgm").read_bytes()), drawn.astype(float))
 
 
-@pytest.mark.parametrize("name", ["townhouse", "office_floor", "cafe", "clinic", "farmhouse", "terrace", "bungalow"])
+@pytest.mark.parametrize("name", HOUSES)
 def test_a_house_is_a_clean_map_whose_rooms_are_joined_by_doors(name: str) -> None:
     from seal_cli.frames.reading import standard_library
     from seal_cli.sim.agent import scene_from_map
