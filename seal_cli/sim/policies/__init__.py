@@ -44,6 +44,8 @@ POLICIES: dict[str, Registered] = {
     "oracle": Registered("seal_cli.sim.policies.oracle", "OraclePolicy", "knows where everything is"),
     "prior_optimal": Registered("seal_cli.sim.policies.prior_optimal", "PriorOptimalPolicy",
                                 "the exact expected-path search for the whole plan under the priors"),
+    "frame_dp": Registered("seal_cli.sim.policies.frame_bound", "FrameDPPolicy",
+                           "the plan's next two stops searched for jointly, exactly over regions", default=False),
     "uniform": Registered("seal_cli.sim.policies.uniform", "UniformPolicy", "SeFM without priors", default=False),
     "saycan": Registered("seal_cli.sim.policies.saycan", "SayCanPolicy",
                          "SayCan: language score x affordance over skills (the llm extra)", default=False),
