@@ -74,7 +74,7 @@ def trusts(said: list[str]) -> list[dict[str, float]]:
         try:
             numbers = [float(x) for x in text.split(",")]
         except ValueError:
-            raise SystemExit(f"error: --trust {text}: expected a number or four, comma-separated") from None
+            raise SystemExit(f"error: --trust {text}: expected a number, or four comma-separated") from None
         if len(numbers) == 1:
             numbers *= len(FIELDS)
         if len(numbers) != len(FIELDS):
@@ -130,7 +130,7 @@ def dev(args: argparse.Namespace, bwc: ModuleType, rows: list[dict[str, str]]) -
               + f" ({n - hits['all']} wrong)", flush=True)
 
     show("parser", None)
-    for i, trust in enumerate(trusts(args.trust)):
+    for i, trust in enumerate(args.trusts):
         show("reread, trust " + ",".join(f"{trust[f]:g}" for f in FIELDS), replace(model, trust=trust), keep=i == 0)
     if args.errors is not None:
         args.errors.write_text("".join(line + "\n" for line in errors))
@@ -156,6 +156,7 @@ def main() -> int:
         if not path.is_file():
             print(f"error: {path}: no such file (the shared data folder is --data)", file=sys.stderr)
             return 1
+    args.trusts = trusts(args.trust)
     bwc = word_classes()
     rows = [r for r in bwc.read_rows(goals) if r.get("split", "train") == "train"]
     if args.dev:

@@ -44,8 +44,8 @@ from seal_cli.language.lexicon import noun_lemma
 from seal_cli.language.slicing import SliceModel
 from seal_cli.language.stacking import StackModel
 from seal_cli.language.steps import StepModel
-from seal_cli.language.tasks import TaskModel
 from seal_cli.language.taskfields import FieldModel, shipped_field_model
+from seal_cli.language.tasks import TaskModel
 from seal_cli.language.wordusage import WordUsage, context_words, shipped_word_usage, unsaid_wording
 
 __all__ = ["PARTS", "PIECES", "PORTIONS", "Vocabulary", "load_vocabulary", "vocabulary_of_map"]

@@ -266,7 +266,7 @@ def _written(parse: Parse, library: Library, vocabulary: Vocabulary, reading: Re
     task's frames, each marked inferred with the type's probability; the parse unchanged when the library lacks a
     frame the task needs or a field has no class."""
     kind = fields["type"]
-    needed = {"Place", "Pick"} | ({STEP_OF[kind]} if kind in STEP_OF else set()) | ({"LookAt"} if kind == LOOK else set())
+    needed = {"Place", "Pick", *([STEP_OF[kind]] if kind in STEP_OF else []), *(["LookAt"] if kind == LOOK else [])}
     if any(n not in library for n in needed) or fields["object"] not in present \
             or (kind != LOOK and fields["receptacle"] not in present) \
             or (kind == STACK and fields["mrecep"] not in present):
@@ -361,7 +361,10 @@ def load_field_model(path: Path) -> FieldModel:
             for k in ("priors", "weights")):
         raise SealError("not a task-field model (format seal-task-fields-1: priors and weights of type, object, "
                         "receptacle, mrecep)", Where(str(path)))
-    trust = data.get("trust") if isinstance(data.get("trust"), dict) else TRUST
+    said = data.get("trust")
+    trust: Mapping[str, float] = said if isinstance(said, dict) else TRUST
+    if not all(isinstance(trust.get(n, 0.0), int | float) for n in FIELDS):
+        raise SealError("trust: expected a number for each of " + ", ".join(FIELDS), Where(str(path)))
     return FieldModel(data["priors"], data["weights"], {n: float(trust.get(n, TRUST[n])) for n in FIELDS})
 
 

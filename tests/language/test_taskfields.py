@@ -79,7 +79,7 @@ def test_the_parser_s_reading_stands_unless_the_words_outweigh_its_trust(library
     chilled, p = combine(MODEL, sentence_grams("put the frosty apple in the fridge"), reading, vocabulary.by_key)
     assert chilled["type"] == COOL and p > 0.5
     blind = FieldModel(PRIORS, MODEL.weights, {"type": 0.0, "object": 0.0, "receptacle": 0.0, "mrecep": 0.0})
-    assert combine(blind, (), reading, vocabulary.by_key)[0]["object"] == "apple"     # the prior's tie: mug 30, apple 30
+    assert combine(blind, (), reading, vocabulary.by_key)[0]["object"] == "apple"     # a tie (30, 30): the parser's
     assert combine(blind, (), reading, ("mug", "fridge"))[0]["object"] == "mug"       # only classes present
 
 
