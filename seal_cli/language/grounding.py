@@ -359,6 +359,11 @@ class Vocabulary:
         usage = self._usage
         return usage.tasks if usage.tasks and self._in_scope else _NO_TASKS
 
+    def meanings(self, wording: str) -> Mapping[str, int]:
+        """How often people meant each class (class key → count) by this wording (lemmas joined by spaces: "table",
+        "butter knife"), by the statistics; empty when they never saw it."""
+        return self._usage.counts.get(wording, MappingProxyType({}))
+
     @property
     def field_model(self) -> FieldModel:
         """What task fields the whole sentence says (:mod:`~seal_cli.language.taskfields`), combined with the

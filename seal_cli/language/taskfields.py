@@ -71,6 +71,12 @@ MANIPULATE = ("Pick", "Heat", "Cool", "Clean", "LookAt", "Place")
 """The frames whose theme is the object, the first of them read (as the scorer reads a parse)."""
 TRUST = MappingProxyType({"type": 2.0, "object": 3.0, "receptacle": 2.0, "mrecep": 1.5})
 """The parser's reading's log-odds bonus per field (chosen on held-out train: ``build_task_fields.py --dev 0.2``)."""
+TASK_FRAMES = frozenset(("Pick", "Place", "Heat", "Cool", "Clean", "Slice", "LookAt", "ToggleOn", "ToggleOff"))
+"""The frames an ALFRED task's fields hold: a parse with any other ("and find the clock") is never written anew."""
+MIN_MEANT = 2
+MIN_SHARE = 0.01
+"""A said phrase may be given another class only when people meant that class by its head at least :data:`MIN_MEANT`
+times and this share of its phrases (a label's slip, a table labelled the sofa beside it, is no meaning of "table")."""
 MIN_COUNT = 2
 """A word or bigram is a feature when said in at least this many train sentences with the value (both ways)."""
 L2 = 1.0
@@ -199,12 +205,13 @@ def _best(p: Mapping[str, float], said: str | None, trust: float) -> tuple[str, 
     return best, p.get(best, 0.0)
 
 
-def combine(model: FieldModel, grams: Sequence[str], reading: Reading,
-            present: Iterable[str]) -> tuple[dict[str, str], float]:
+def combine(model: FieldModel, grams: Sequence[str], reading: Reading, present: Iterable[str],
+            meant: Mapping[str, frozenset[str]] | None = None) -> tuple[dict[str, str], float]:
     """The fields the sentence most likely says (type, object, receptacle, mrecep: a task type, class keys or
     :data:`NOTHING`), the model's probabilities combined with the parser's ``reading`` (see the module), among the
-    ``present`` class keys; and the type's probability."""
-    classes = set(present)
+    ``present`` class keys (and for a field of ``meant``, among its classes only: those its phrase's words can
+    mean); and the type's probability."""
+    present = set(present)
     trust = model.trust
     kind = _best(model.probabilities("type", grams), reading.type, trust.get("type", 0.0))
     out = {"type": kind[0] if kind else (reading.type or SIMPLE)}
@@ -215,6 +222,7 @@ def combine(model: FieldModel, grams: Sequence[str], reading: Reading,
         if not wanted:
             out[name] = NOTHING
             continue
+        classes = present & meant[name] if meant and name in meant else present
         said = reading.values[name] if reading.values[name] in classes else None
         best = _best(model.probabilities(name, grams, classes), said, trust.get(name, 0.0))
         out[name] = best[0] if best else (said or NOTHING)
@@ -228,11 +236,29 @@ def reread(parse: Parse, library: Library, vocabulary: Vocabulary, model: FieldM
         return parse
     reading = read_fields(parse)
     present = vocabulary.by_key
-    fields, chance = combine(model, sentence_grams(text), reading, present)
+    fields, chance = combine(model, sentence_grams(text), reading, present, _meant(parse, reading, vocabulary))
     if fields["type"] == reading.type and all(reading.at[n] is not None or fields[n] == NOTHING
                                               for n in ("object", "receptacle", "mrecep")):
         return _reclassed(parse, reading, fields, present)
+    if not all(f.frame in TASK_FRAMES for f in parse.frames):
+        return _reclassed(parse, reading, fields, present)   # never drop a frame no field holds ("find the clock")
     return _written(parse, library, vocabulary, reading, fields, present, chance)
+
+
+def _meant(parse: Parse, reading: Reading, vocabulary: Vocabulary) -> dict[str, frozenset[str]]:
+    """For each field whose phrase was said and grounded, the classes its head can mean: those people meant by it
+    often enough (:data:`MIN_SHARE`) (:meth:`~seal_cli.language.grounding.Vocabulary.meanings`) and the parser's
+    ("the table": a dining, side or coffee table, never the sofa beside it)."""
+    out = {}
+    for name, where in reading.at.items():
+        phrase = None if where is None else parse.frames[where[0]].elements[where[1]]
+        if phrase is None or phrase.default or phrase.cls is None or reading.values[name] == NOTHING:
+            continue
+        meant = vocabulary.meanings(phrase.head)
+        total = sum(meant.values())
+        out[name] = frozenset(k for k, n in meant.items() if n >= max(MIN_MEANT, MIN_SHARE * total)) \
+            | {reading.values[name]}
+    return out
 
 
 def _reclassed(parse: Parse, reading: Reading, fields: Mapping[str, str], present: Mapping[str, str]) -> Parse:
