@@ -31,7 +31,8 @@ def test_a_weight_may_move_in_its_last_decimal_but_no_prior_may_change() -> None
     assert diff({"weights": {"type": {"u:a": {"x": 0.21}}}}, {"weights": {"type": {"u:a": {"x": 0.22}}}}) == []
     assert diff({"weights": {"type": {"u:a": {"x": 0.21}}}}, {"weights": {"type": {"u:a": {"x": 0.25}}}}) != []
     assert diff({"weights": {"type": {"u:a": {"x": 0.01}}}}, {"weights": {"type": {"u:a": {}}}}) == []
-    assert diff({"priors": {"type": {"x": 3}}}, {"priors": {"type": {"x": 4}}}) == ["/priors/type/x: 3 shipped, 4 built"]
+    assert diff({"priors": {"type": {"x": 3}}}, {"priors": {"type": {"x": 4}}}) == [
+        "/priors/type/x: 3 shipped, 4 built"]
     assert builder().trusts(["2", "1,2,3,4"]) == [{"type": 2.0, "object": 2.0, "receptacle": 2.0, "mrecep": 2.0},
                                                   {"type": 1.0, "object": 2.0, "receptacle": 3.0, "mrecep": 4.0}]
 
