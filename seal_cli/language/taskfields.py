@@ -73,12 +73,17 @@ TRUST = MappingProxyType({"type": 2.0, "object": 3.0, "receptacle": 2.0, "mrecep
 """The parser's reading's log-odds bonus per field (chosen on held-out train: ``build_task_fields.py --dev 0.2``)."""
 TASK_FRAMES = frozenset(("Pick", "Place", "Heat", "Cool", "Clean", "Slice", "LookAt", "ToggleOn", "ToggleOff"))
 """The frames an ALFRED task's fields hold: a parse with any other ("and find the clock") is never written anew."""
-MIN_MEANT = 5
-MIN_SHARE = 0.05
-"""A said phrase may be given another class only when people meant that class by its head at least :data:`MIN_MEANT`
-times and this share of its phrases (a label's slip, a table labelled the sofa beside it, a glass the butter knife
-beside it, is no meaning of the word; the thresholds of ``scripts/alfred_goal_errors.py``'s "one word, two
-classes")."""
+MIN_MEANT = 2
+MIN_SHARE = 0.01
+"""A said phrase the rules grounded may be given another class only when people meant that class by its head at least
+:data:`MIN_MEANT` times and this share of its phrases (a label's slip, a table labelled the sofa beside it, is no
+meaning of "table": 2 of 2,793)."""
+FILL_MEANT = 5
+FILL_SHARE = 0.05
+"""A said phrase the rules grounded to nothing may be given a class only when people meant it by its head at least
+:data:`FILL_MEANT` times and this share of its phrases (the thresholds of ``scripts/alfred_goal_errors.py``'s "one
+word, two classes"): with nothing said for the parser's class, a glass is not the butter knife labelled beside it
+7 times in 319."""
 MIN_COUNT = 2
 """A word or bigram is a feature when said in at least this many train sentences with the value (both ways)."""
 L2 = 1.0
@@ -249,7 +254,7 @@ def reread(parse: Parse, library: Library, vocabulary: Vocabulary, model: FieldM
 
 def _meant(parse: Parse, reading: Reading, vocabulary: Vocabulary) -> dict[str, frozenset[str]]:
     """For each field whose phrase was said, the classes its head can mean: those people meant by it often enough
-    (:data:`MIN_SHARE`; :meth:`~seal_cli.language.grounding.Vocabulary.meanings`) and the parser's, if it grounded
+    (:data:`MIN_SHARE`, :data:`FILL_SHARE`; :meth:`~seal_cli.language.grounding.Vocabulary.meanings`) and the parser's, if it grounded
     one ("the table": a dining, side or coffee table, never the sofa beside it). A phrase the rules ground to nothing
     takes a class only when people meant it by that word: "the fruit" an apple, never "the glass" a butter knife
     where no cup is."""
@@ -260,8 +265,8 @@ def _meant(parse: Parse, reading: Reading, vocabulary: Vocabulary) -> dict[str, 
             continue
         meant = vocabulary.meanings(phrase.head)
         total = sum(meant.values())
-        out[name] = frozenset(k for k, n in meant.items() if n >= max(MIN_MEANT, MIN_SHARE * total)) \
-            | ({reading.values[name]} - {NOTHING})
+        least = max(MIN_MEANT, MIN_SHARE * total) if phrase.cls else max(FILL_MEANT, FILL_SHARE * total)
+        out[name] = frozenset(k for k, n in meant.items() if n >= least) | ({reading.values[name]} - {NOTHING})
     return out
 
 
