@@ -255,9 +255,9 @@ def reread(parse: Parse, library: Library, vocabulary: Vocabulary, model: FieldM
 def _meant(parse: Parse, reading: Reading, vocabulary: Vocabulary) -> dict[str, frozenset[str]]:
     """For each field whose phrase was said, the classes its head can mean: those people meant by it often enough
     (:data:`MIN_SHARE`, :data:`FILL_SHARE`; :meth:`~seal_cli.language.grounding.Vocabulary.meanings`) and the
-    parser's, if it grounded one ("the table": a dining, side or coffee table, never the sofa beside it). A phrase the rules ground to nothing
-    takes a class only when people meant it by that word: "the fruit" an apple, never "the glass" a butter knife
-    where no cup is."""
+    parser's, if it grounded one ("the table": a dining, side or coffee table, never the sofa beside it). A phrase
+    the rules ground to nothing takes a class only when people meant it by that word often (never "the glass" a
+    butter knife where no cup is)."""
     out: dict[str, frozenset[str]] = {}
     for name, where in reading.at.items():
         phrase = None if where is None else parse.frames[where[0]].elements[where[1]]
