@@ -25,7 +25,10 @@ vocabulary are candidates (in a room, its classes).
 phrases the parser read the fields from (the root of a pronoun's chain), when they differ; when it is another type
 (or a field has no phrase), the frames are written anew from the fields, the parser's phrases reused where they
 said the thing (its words kept, its class the field's), each written frame marked ``Evoked.inferred`` with the
-type's probability. A sliced object keeps the parser's Slice.
+type's probability. A sliced object keeps the parser's Slice. Two guards: a parse with a frame no task field holds
+(:data:`TASK_FRAMES`: "... and find the clock") is never written anew, only its classes may change; and a said phrase
+takes only a class people meant by its head often enough (:data:`MIN_SHARE`, :data:`FILL_SHARE`: "the table" by the
+couch is never the sofa).
 
 **Scoped** as the unsaid step is (:attr:`~seal_cli.language.grounding.Vocabulary.field_model`): only with the
 statistics seal ships, where every class of the vocabulary is one they know (ALFRED's, or an ALFRED scene's), never
