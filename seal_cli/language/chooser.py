@@ -101,22 +101,26 @@ class Instance:
 
 
 def fit(instances: Sequence[Instance], l2: float = 1.0, min_count: int = 2,
-        digits: int = 3) -> dict[str, dict[str, float]]:
+        digits: int = 3, min_label: int = 0) -> dict[str, dict[str, float]]:
     """The weights ``{feature: {class key: weight}}`` maximising the instances' log-likelihood minus
     ``l2 / 2`` times the squared weights. A (feature, class) pair gets a weight when the feature was
-    said with the class among the candidates in at least ``min_count`` instances; weights are rounded
-    to ``digits`` decimals and those that round to zero left out. Deterministic (L-BFGS from zero)."""
+    said with the class among the candidates in at least ``min_count`` instances, and with the class
+    meant in at least ``min_label`` (a model over many classes, every one a candidate, keeps only the
+    pairs seen together: its table stays small); weights are rounded to ``digits`` decimals and those
+    that round to zero left out. Deterministic (L-BFGS from zero)."""
     import numpy as np
     from scipy.optimize import minimize
     from scipy.sparse import csr_matrix
 
     usable = [i for i in instances if len(i.candidates) >= 2]
     seen: Counter[tuple[str, str]] = Counter()
+    meant: Counter[tuple[str, str]] = Counter()
     for inst in usable:
         for f in set(inst.features):
+            meant[(f, inst.candidates[inst.label])] += 1
             for c in inst.candidates:
                 seen[(f, c)] += 1
-    pairs = sorted(p for p, n in seen.items() if n >= min_count)
+    pairs = sorted(p for p, n in seen.items() if n >= min_count and meant[p] >= min_label)
     index = {p: k for k, p in enumerate(pairs)}
     rows: list[int] = []
     cols: list[int] = []

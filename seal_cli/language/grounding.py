@@ -44,6 +44,7 @@ from seal_cli.language.lexicon import noun_lemma
 from seal_cli.language.slicing import SliceModel
 from seal_cli.language.stacking import StackModel
 from seal_cli.language.steps import StepModel
+from seal_cli.language.taskfields import FieldModel, shipped_field_model
 from seal_cli.language.tasks import TaskModel
 from seal_cli.language.wordusage import WordUsage, context_words, shipped_word_usage, unsaid_wording
 from seal_cli.names import name_too_long
@@ -73,6 +74,7 @@ _NO_STACKS = StackModel()
 _NO_SLICES = SliceModel()
 _NO_GOALS = GoalModel()
 _NO_TASKS = TaskModel()
+_NO_FIELDS = FieldModel()
 _INDEXES = ("_usage", "_present", "_names", "_own", "_exact", "_by_word", "_rules_alone", "_in_scope")
 """The cached indexes a vocabulary builds from its classes and usage, which do not depend on the sentence."""
 
@@ -357,6 +359,20 @@ class Vocabulary:
         (:mod:`~seal_cli.language.tasks`), scoped as :attr:`step_model` is."""
         usage = self._usage
         return usage.tasks if usage.tasks and self._in_scope else _NO_TASKS
+
+    def meanings(self, wording: str) -> Mapping[str, int]:
+        """How often people meant each class (class key → count) by this wording (lemmas joined by spaces: "table",
+        "butter knife"), by the statistics; empty when they never saw it."""
+        return self._usage.counts.get(wording, MappingProxyType({}))
+
+    @property
+    def field_model(self) -> FieldModel:
+        """What task fields the whole sentence says (:mod:`~seal_cli.language.taskfields`), combined with the
+        parser's reading: only with the statistics seal ships (no ``usage`` given), scoped as :attr:`step_model` is,
+        and never in a house's vocabulary; else an empty model."""
+        if self.usage is not None or self.house or not self._usage.tasks or not self._in_scope:
+            return _NO_FIELDS
+        return shipped_field_model()
 
     @property
     def by_key(self) -> Mapping[str, str]:

@@ -41,6 +41,7 @@ from seal_cli.language.state import CLOSED
 from seal_cli.language.steps import infer_left_in, infer_step
 from seal_cli.language.swallowed import Swallowed, swallowed
 from seal_cli.language.syntax import NP, Syntax
+from seal_cli.language.taskfields import reread
 from seal_cli.language.tasks import infer_task
 from seal_cli.language.values import Evoked, Parse, Phrase
 
@@ -117,6 +118,7 @@ class CommandParser:
             parse = infer_step(parse, self.library, vocabulary, vocabulary.step_model, vocabulary.context)
             parse = infer_goal(parse, self.library, vocabulary.by_key, vocabulary.goal_model, vocabulary.context,
                                vocabulary.house)
+            parse = reread(parse, self.library, vocabulary, vocabulary.field_model, text)
         if tagger.remarks:
             parse = replace(parse, remarks=tuple(text[a:b] for a, b in tagger.remarks))
         return parse

@@ -1,0 +1,191 @@
+#!/usr/bin/env python3
+"""Rebuild ``seal_cli/language/task_fields/alfred_train.json``: the task fields (type, object, receptacle, movable
+receptacle) ALFRED's *train* goal sentences say by their words (:mod:`seal_cli.language.taskfields`).
+
+    python scripts/build_task_fields.py                  # rewrite the shipped model (fitted on all train trials)
+    python scripts/build_task_fields.py --check          # exit 1 if the shipped model differs
+    python scripts/build_task_fields.py --dev 0.2        # fit on 80 % of train trials, score the rest
+
+``--data`` is the shared data folder (default ``../shared/data`` beside the project). ``--dev F`` holds out a
+fraction F of the train trials (or of the floor plans, ``--hold-out floor-plans``) as
+``build_word_classes.py --dev`` does (the same hash), fits the word-class table and this model on the others, parses
+the held-out sentences and prints the five fields as the scorer reads them, the parser alone and reread with each
+``--trust`` tried (the parser's bonus, one number for every field, or ``type,object,receptacle,mrecep``): the shipped
+trust was chosen there, never on a valid split.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib.util
+import json
+import sys
+from collections import Counter
+from pathlib import Path
+from types import ModuleType
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+from seal_cli.language.taskfields import (  # noqa: E402
+    FIELDS,
+    SHIPPED,
+    FieldModel,
+    fit_fields,
+    model_json,
+    reread,
+)
+
+TOLERANCE = 0.011
+"""How far a fitted weight may move (a last decimal rounded the other way) before the shipped model is stale."""
+
+
+def word_classes() -> ModuleType:
+    """``build_word_classes.py``, for its train rows, hold-out hash, table fit and scorer."""
+    path = ROOT / "scripts" / "build_word_classes.py"
+    spec = importlib.util.spec_from_file_location("build_word_classes", path)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def differences(shipped: object, built: object, path: str = "") -> list[str]:
+    """Where the shipped model differs from the one built: any count, any value, or a weight by more than
+    :data:`TOLERANCE` (a weight missing on one side counts as 0)."""
+    if isinstance(shipped, dict) and isinstance(built, dict):
+        out = []
+        for key in sorted(set(shipped) | set(built), key=str):
+            a, b = shipped.get(key), built.get(key)
+            if isinstance(a, float | None) and isinstance(b, float | None) and path.startswith("/weights"):
+                if abs((a or 0.0) - (b or 0.0)) > TOLERANCE:
+                    out.append(f"{path}/{key}: {a} shipped, {b} built")
+            elif key not in shipped or key not in built:
+                out.append(f"{path}/{key} only in the {'built' if key not in shipped else 'shipped'} model")
+            else:
+                out += differences(a, b, f"{path}/{key}")
+        return out
+    return [] if shipped == built else [f"{path}: {shipped} shipped, {built} built"]
+
+
+def trusts(said: list[str]) -> list[dict[str, float]]:
+    out = []
+    for text in said:
+        try:
+            numbers = [float(x) for x in text.split(",")]
+        except ValueError:
+            raise SystemExit(f"error: --trust {text}: expected a number, or four comma-separated") from None
+        if len(numbers) == 1:
+            numbers *= len(FIELDS)
+        if len(numbers) != len(FIELDS):
+            raise SystemExit(f"error: --trust {text}: expected a number or four ({', '.join(FIELDS)})")
+        out.append(dict(zip(FIELDS, numbers, strict=True)))
+    return out
+
+
+def dev(args: argparse.Namespace, bwc: ModuleType, rows: list[dict[str, str]]) -> int:
+    from dataclasses import replace
+
+    from seal_cli.language.parser import CommandError, parse_command
+
+    data = args.data
+    classes = json.loads((data / "alfred" / "alfred_constants.json").read_text())["OBJECTS"]
+    vocabulary = bwc.Vocabulary.of(classes)
+    held = bwc.held_out(rows, args.dev, args.hold_out)
+    fit_rows = [r for r in rows if r["task_id"] not in held]
+    dev_rows = [r for r in rows if r["task_id"] in held]
+    print(f"fit {len(fit_rows)} sentences, dev {len(dev_rows)} sentences ({len(held)} {args.hold_out})", flush=True)
+    table = bwc.table(*bwc.count(fit_rows, vocabulary, bwc.scene_classes(data, classes)), classes, "dev", bwc.L2,
+                      bwc.SCENE_L2)
+    usage = bwc.usage_of(bwc.with_stack_goals(bwc.with_steps(table, fit_rows, vocabulary), fit_rows, vocabulary))
+    tried = vocabulary.with_usage(usage)
+    model = fit_fields(fit_rows)
+    scorer = bwc.scorer(data)
+    library = bwc.load_library()
+    parsed = []
+    for row in dev_rows:
+        text = " ".join(row["goal_sentence"].split())
+        try:
+            parsed.append((row, text, parse_command(text, library, tried)))
+        except CommandError:
+            parsed.append((row, text, None))
+    errors: list[str] = []
+
+    def show(name: str, model: FieldModel | None, keep: bool = False) -> None:
+        hits: Counter[str] = Counter()
+        for row, text, parse in parsed:
+            if parse is not None and model is not None:
+                parse = reread(parse, library, tried, model, text)
+            got_json = parse.to_json() if parse is not None else {}
+            want = scorer.gold(row)
+            got = scorer.read_back(got_json) if got_json.get("frames") else {f: None for f in scorer.FIELDS}
+            ok = {f: got[f] == want[f] for f in scorer.FIELDS}
+            hits.update(f for f, good in ok.items() if good)
+            hits["all"] += all(ok.values())
+            if keep and not all(ok.values()):
+                wrong = ",".join(f for f, good in ok.items() if not good)
+                errors.append("\t".join([wrong, row["goal_sentence"].strip(), json.dumps(got), json.dumps(want)]))
+        n = max(len(parsed), 1)
+        print(f"{name:<44}" + " ".join(f"{k} {hits[k] / n:.3f}" for k in ("all", *scorer.FIELDS))
+              + f" ({n - hits['all']} wrong)", flush=True)
+
+    show("parser", None)
+    for i, trust in enumerate(args.trusts):
+        show("reread, trust " + ",".join(f"{trust[f]:g}" for f in FIELDS), replace(model, trust=trust), keep=i == 0)
+    if args.errors is not None:
+        args.errors.write_text("".join(line + "\n" for line in errors))
+        print(f"wrote {args.errors} ({len(errors)} sentences of the first trust scored wrong)")
+    return 0
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--data", type=Path, default=ROOT.parent / "shared" / "data")
+    ap.add_argument("--out", type=Path, default=SHIPPED)
+    ap.add_argument("--check", action="store_true", help="compare with the shipped model instead of writing it")
+    ap.add_argument("--dev", type=float, default=0.0, help="hold out this fraction of train and score it")
+    ap.add_argument("--hold-out", choices=("trials", "floor-plans"), default="trials")
+    ap.add_argument("--trust", nargs="*", default=[",".join(str(v) for v in FieldModel().trust.values())],
+                    help="with --dev: the parser's bonus to try (one number, or four: type,object,receptacle,mrecep)")
+    ap.add_argument("--errors", type=Path, help="with --dev: write the held-out sentences scored wrong here (TSV)")
+    args = ap.parse_args()
+
+    goals = args.data / "alfred" / "goals_train.tsv"
+    constants = args.data / "alfred" / "alfred_constants.json"
+    for path in (goals, constants):
+        if not path.is_file():
+            print(f"error: {path}: no such file (the shared data folder is --data)", file=sys.stderr)
+            return 1
+    args.trusts = trusts(args.trust)
+    bwc = word_classes()
+    rows = [r for r in bwc.read_rows(goals) if r.get("split", "train") == "train"]
+    if args.dev:
+        if not 0 < args.dev < 1:
+            print(f"error: --dev {args.dev}: expected a fraction between 0 and 1", file=sys.stderr)
+            return 1
+        return dev(args, bwc, rows)
+    source = f"ALFRED train goals ({goals.name}: {len(rows)} human goal sentences with their task labels)"
+    text = model_json(fit_fields(rows), source)
+    if args.check:
+        try:
+            shipped = json.loads(args.out.read_text()) if args.out.is_file() else None
+        except json.JSONDecodeError as error:
+            print(f"error: {args.out}:{error.lineno}:{error.colno}: not JSON (rebuild it)", file=sys.stderr)
+            return 1
+        problems = differences(shipped, json.loads(text)) if shipped is not None else ["(no model)"]
+        if problems:
+            print(f"{args.out}: differs from what the train split gives (rebuild it): {'; '.join(problems[:5])}"
+                  f"{' ...' if len(problems) > 5 else ''}", file=sys.stderr)
+            return 1
+        print(f"{args.out}: up to date")
+        return 0
+    args.out.parent.mkdir(parents=True, exist_ok=True)
+    tmp = args.out.with_suffix(".json.tmp")
+    tmp.write_text(text)
+    tmp.replace(args.out)
+    print(f"wrote {args.out} ({len(text)} bytes)")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

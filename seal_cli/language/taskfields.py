@@ -1,0 +1,412 @@
+"""The task a whole sentence describes, read as ALFRED's fields by a model of its words, learned on a train split,
+and combined with the parser's own reading.
+
+ALFRED's people wrote one sentence for each task they watched; the task is five fields (its type, the object, the
+receptacle, the movable receptacle, whether the object is sliced). The parser reads the fields off its frames
+(:func:`read_fields`, as ALFRED parses are scored), and its statistics weigh one decision at a time (which class a
+phrase means, whether a step is unsaid). A :class:`FieldModel` weighs the whole sentence at once: for each of the
+first four fields a multinomial logistic regression over the sentence's word unigrams and bigrams
+(:func:`sentence_grams`), the chooser's model (:func:`~seal_cli.language.chooser.posterior`), every label of the
+field a candidate:
+
+    P(value | sentence) ∝ prior(value) · exp(Σ_g weight[g][value])
+
+"a *cold* apple", "*chill*", "*rinse*" say the step; "the *butter* knife", "*bread* knife" which knife; "put the
+remote *on the table* by the couch" which table. It is fitted by ``scripts/build_task_fields.py`` on ALFRED's train
+goals (the label each trial's task gives) and shipped as ``task_fields/alfred_train.json``.
+
+**The combination** (:func:`combine`): each field's value is the most probable by the model once the parser's own
+reading is given :attr:`FieldModel.trust` (a log-odds bonus per field, chosen on train trials held out from the fit:
+``build_task_fields.py --dev 0.2 --trust ...``), in order and consistently: the type first; the object (a class, never
+none); the receptacle (none for a look, else a class); the movable receptacle only for a stack. Only classes of the
+vocabulary are candidates (in a room, its classes).
+
+**What changes in the parse** (:func:`reread`): when the combined type is the parser's, only the classes of the
+phrases the parser read the fields from (the root of a pronoun's chain), when they differ; when it is another type
+(or a field has no phrase), the frames are written anew from the fields, the parser's phrases reused where they
+said the thing (its words kept, its class the field's), each written frame marked ``Evoked.inferred`` with the
+type's probability. A sliced object keeps the parser's Slice. Two guards: a parse with a frame no task field holds
+(:data:`TASK_FRAMES`: "... and find the clock") is never written anew, only its classes may change; and a said phrase
+takes only a class people meant by its head often enough (:data:`MIN_SHARE`, :data:`FILL_SHARE`: "the table" by the
+couch is never the sofa).
+
+**Scoped** as the unsaid step is (:attr:`~seal_cli.language.grounding.Vocabulary.field_model`): only with the
+statistics seal ships, where every class of the vocabulary is one they know (ALFRED's, or an ALFRED scene's), never
+in a house's vocabulary; ``parse_command(..., infer_steps=False)`` turns it off.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+from collections import Counter
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass, field, replace
+from functools import cache
+from pathlib import Path
+from types import MappingProxyType
+from typing import TYPE_CHECKING
+
+from seal_cli.frames.taxonomy import class_key, class_words
+from seal_cli.language.chooser import Instance, fit, posterior
+from seal_cli.language.values import Evoked, Parse, Phrase
+
+if TYPE_CHECKING:
+    from seal_cli.frames.library import Library
+    from seal_cli.language.grounding import Vocabulary
+
+__all__ = ["FIELDS", "NOTHING", "SHIPPED", "TRUST", "FieldModel", "Reading", "combine", "fit_fields",
+           "load_field_model", "read_fields", "reread", "sentence_grams", "shipped_field_model"]
+
+SHIPPED = Path(__file__).parent / "task_fields" / "alfred_train.json"
+FIELDS = ("type", "object", "receptacle", "mrecep")
+"""The fields the model reads (sliced stays the parser's: its own model, :mod:`~seal_cli.language.slicing`)."""
+NOTHING = "none"
+"""The value of a field the task has not (a look's receptacle, a movable receptacle of all but a stack)."""
+LOOK = "look_at_obj_in_light"
+SIMPLE = "pick_and_place_simple"
+STACK = "pick_and_place_with_movable_recep"
+TWO = "pick_two_obj_and_place"
+STEP_OF = MappingProxyType({"pick_heat_then_place_in_recep": "Heat", "pick_cool_then_place_in_recep": "Cool",
+                            "pick_clean_then_place_in_recep": "Clean"})
+MANIPULATE = ("Pick", "Heat", "Cool", "Clean", "LookAt", "Place")
+"""The frames whose theme is the object, the first of them read (as the scorer reads a parse)."""
+TRUST = MappingProxyType({"type": 2.0, "object": 3.0, "receptacle": 2.0, "mrecep": 1.5})
+"""The parser's reading's log-odds bonus per field (chosen on held-out train: ``build_task_fields.py --dev 0.2``)."""
+TASK_FRAMES = frozenset(("Pick", "Place", "Heat", "Cool", "Clean", "Slice", "LookAt", "ToggleOn", "ToggleOff"))
+"""The frames an ALFRED task's fields hold: a parse with any other ("and find the clock") is never written anew."""
+MIN_MEANT = 2
+MIN_SHARE = 0.01
+"""A said phrase the rules grounded may be given another class only when people meant that class by its head at least
+:data:`MIN_MEANT` times and this share of its phrases (a label's slip, a table labelled the sofa beside it, is no
+meaning of "table": 2 of 2,793)."""
+FILL_MEANT = 5
+FILL_SHARE = 0.05
+"""A said phrase the rules grounded to nothing may be given a class only when people meant it by its head at least
+:data:`FILL_MEANT` times and this share of its phrases (the thresholds of ``scripts/alfred_goal_errors.py``'s "one
+word, two classes"): with nothing said for the parser's class, a glass is not the butter knife labelled beside it
+7 times in 319."""
+MIN_COUNT = 2
+"""A word or bigram is a feature when said in at least this many train sentences with the value (both ways)."""
+L2 = 1.0
+"""The fit's L2 penalty."""
+
+
+def sentence_grams(text: str) -> tuple[str, ...]:
+    """The sentence's features: ``u:`` each word (lower case, letters only), ``b:`` each pair of adjacent words,
+    ``<s>`` and ``</s>`` marking its ends ("Chill an apple." → ``u:chill``, ``b:<s>_chill``, ``b:chill_an``, ...)."""
+    words = re.findall(r"[a-z]+", text.lower())
+    grams = {f"u:{w}" for w in words}
+    grams.update(f"b:{a}_{b}" for a, b in zip(["<s>", *words], [*words, "</s>"], strict=True))
+    return tuple(sorted(grams))
+
+
+@dataclass(frozen=True)
+class FieldModel:
+    """For each field of :data:`FIELDS`, ``priors[field][value]`` (how often train tasks had it; a class key, a task
+    type or :data:`NOTHING`) and ``weights[field][gram][value]``; ``trust``: the parser's bonus per field. Empty:
+    nothing is reread."""
+
+    priors: Mapping[str, Mapping[str, int]] = field(default_factory=dict)
+    weights: Mapping[str, Mapping[str, Mapping[str, float]]] = field(default_factory=dict)
+    trust: Mapping[str, float] = field(default_factory=lambda: dict(TRUST))
+
+    def __bool__(self) -> bool:
+        return all(self.priors.get(f) for f in FIELDS)
+
+    def probabilities(self, name: str, grams: Iterable[str], allowed: Iterable[str] | None = None) -> dict[str, float]:
+        """P(value | grams) for the field ``name`` over its values (those of ``allowed`` only, when given)."""
+        prior = self.priors.get(name, {})
+        keep = None if allowed is None else set(allowed)
+        keys = [k for k, n in prior.items() if n and (keep is None or k in keep)]
+        return posterior(prior, self.weights.get(name, {}), keys, grams) if keys else {}
+
+
+@dataclass(frozen=True)
+class Reading:
+    """A parse read as ALFRED's fields: the type, the class key of each of object, receptacle and movable receptacle
+    (:data:`NOTHING`: none read) and where its phrase is (frame index, element: the root of a pronoun's chain;
+    None: no phrase), and whether the object is sliced."""
+
+    type: str | None
+    values: Mapping[str, str]
+    at: Mapping[str, tuple[int, str] | None]
+    sliced: bool
+
+
+def _root(parse: Parse, at: tuple[int, str]) -> tuple[int, str]:
+    seen = set()
+    while at not in seen:
+        seen.add(at)
+        phrase = parse.frames[at[0]].elements.get(at[1])
+        if phrase is None or phrase.refers_to is None or phrase.refers_to[0] >= len(parse.frames) \
+                or phrase.refers_to[1] not in parse.frames[phrase.refers_to[0]].elements:
+            return at
+        at = phrase.refers_to
+    return at
+
+
+def _plural(phrase: Phrase) -> bool:
+    text = (phrase.text or "").lower().split()
+    return phrase.quantity == 2 or "two" in text or "both" in text or phrase.plural
+
+
+def read_fields(parse: Parse) -> Reading:
+    """The fields a parse says, read as ALFRED parses are scored (``../shared/eval/score_alfred_goals.py``): a step
+    frame gives its type, a LookAt or a lamp switched on a look, two Places of two things a stack, a Place of a
+    plural thing two things, else a simple placing; the object is the theme of the Slice when sliced, else of the
+    first manipulating frame; the receptacle the goal of the last Place; the movable receptacle the goal of the
+    first Place of a stack."""
+    frames = parse.frames
+    names = [f.frame for f in frames]
+    places = [i for i, f in enumerate(frames) if f.frame == "Place"]
+    slices = [i for i, f in enumerate(frames) if f.frame == "Slice"]
+
+    def at(i: int, role: str) -> tuple[int, str] | None:
+        return _root(parse, (i, role)) if role in frames[i].elements else None
+
+    def phrase(where: tuple[int, str] | None) -> Phrase | None:
+        return None if where is None else frames[where[0]].elements[where[1]]
+
+    sliced = bool(slices) or any((parse.resolve(f.elements["theme"]).head or "").lower() in ("slice", "slices")
+                                 for f in frames if "theme" in f.elements)
+    lamp = any(f.frame == "ToggleOn" and "theme" in f.elements and "lamp" in class_key(
+        parse.resolve(f.elements["theme"]).cls or "") for f in frames)
+    themes = {class_key(parse.resolve(frames[i].elements["theme"]).cls or "") if "theme" in frames[i].elements
+              else "" for i in places}
+    kind: str | None
+    if not frames:
+        kind = None
+    elif "Heat" in names:
+        kind = "pick_heat_then_place_in_recep"
+    elif "Cool" in names:
+        kind = "pick_cool_then_place_in_recep"
+    elif "Clean" in names:
+        kind = "pick_clean_then_place_in_recep"
+    elif "LookAt" in names or lamp:
+        kind = LOOK
+    elif len(places) >= 2 and len(themes) >= 2:
+        kind = STACK
+    elif places and (p := phrase(at(places[-1], "theme"))) is not None and _plural(p):
+        kind = TWO
+    else:
+        kind = SIMPLE
+    first = slices[0] if sliced and slices else next((i for i, f in enumerate(frames) if f.frame in MANIPULATE),
+                                                     None)
+    where = {"object": at(first, "theme") if first is not None else None,
+             "receptacle": at(places[-1], "goal") if places and kind != LOOK else None,
+             "mrecep": at(places[0], "goal") if kind == STACK else None}
+    values = {}
+    for name, w in where.items():
+        p = phrase(w)
+        values[name] = class_key(p.cls) if p is not None and p.cls else NOTHING
+    return Reading(kind, values, where, sliced)
+
+
+def _best(p: Mapping[str, float], said: str | None, trust: float) -> tuple[str, float] | None:
+    """The value most probable once ``said`` (the parser's) gets the bonus ``trust``, with its probability."""
+    if not p:
+        return None
+    scores = {k: math.log(max(v, 1e-12)) for k, v in p.items()}
+    if said is not None:
+        scores[said] = scores.get(said, math.log(1e-3)) + trust
+    best = max(scores, key=lambda k: (scores[k], k == said, k))
+    return best, p.get(best, 0.0)
+
+
+def combine(model: FieldModel, grams: Sequence[str], reading: Reading, present: Iterable[str],
+            meant: Mapping[str, frozenset[str]] | None = None) -> tuple[dict[str, str], float]:
+    """The fields the sentence most likely says (type, object, receptacle, mrecep: a task type, class keys or
+    :data:`NOTHING`), the model's probabilities combined with the parser's ``reading`` (see the module), among the
+    ``present`` class keys (and for a field of ``meant``, among its classes only: those its phrase's words can
+    mean); and the type's probability."""
+    present = set(present)
+    trust = model.trust
+    kind = _best(model.probabilities("type", grams), reading.type, trust.get("type", 0.0))
+    out = {"type": kind[0] if kind else (reading.type or SIMPLE)}
+    chance = kind[1] if kind else 1.0
+    for name in ("object", "receptacle", "mrecep"):
+        wanted = name == "object" or (name == "receptacle" and out["type"] != LOOK) \
+            or (name == "mrecep" and out["type"] == STACK)
+        if not wanted:
+            out[name] = NOTHING
+            continue
+        classes = present & meant[name] if meant and name in meant else present
+        said = reading.values[name] if reading.values[name] in classes else None
+        best = _best(model.probabilities(name, grams, classes), said, trust.get(name, 0.0))
+        out[name] = best[0] if best else (said or NOTHING)
+    return out, chance
+
+
+def reread(parse: Parse, library: Library, vocabulary: Vocabulary, model: FieldModel, text: str) -> Parse:
+    """The parse with the fields :func:`combine` chooses (see the module); unchanged when the model is empty, the
+    parse has no frames, or the fields are the parser's."""
+    if not model or not parse.frames:
+        return parse
+    reading = read_fields(parse)
+    present = vocabulary.by_key
+    fields, chance = combine(model, sentence_grams(text), reading, present, _meant(parse, reading, vocabulary))
+    if fields["type"] == reading.type and all(reading.at[n] is not None or fields[n] == NOTHING
+                                              for n in ("object", "receptacle", "mrecep")):
+        return _reclassed(parse, reading, fields, present)
+    if not all(f.frame in TASK_FRAMES for f in parse.frames):
+        return _reclassed(parse, reading, fields, present)   # never drop a frame no field holds ("find the clock")
+    return _written(parse, library, vocabulary, reading, fields, present, chance)
+
+
+def _meant(parse: Parse, reading: Reading, vocabulary: Vocabulary) -> dict[str, frozenset[str]]:
+    """For each field whose phrase was said, the classes its head can mean: those people meant by it often enough
+    (:data:`MIN_SHARE`, :data:`FILL_SHARE`; :meth:`~seal_cli.language.grounding.Vocabulary.meanings`) and the
+    parser's, if it grounded one ("the table": a dining, side or coffee table, never the sofa beside it). A phrase
+    the rules ground to nothing takes a class only when people meant it by that word often (never "the glass" a
+    butter knife where no cup is)."""
+    out: dict[str, frozenset[str]] = {}
+    for name, where in reading.at.items():
+        phrase = None if where is None else parse.frames[where[0]].elements[where[1]]
+        if phrase is None or phrase.default:
+            continue
+        meant = vocabulary.meanings(phrase.head)
+        total = sum(meant.values())
+        least = max(MIN_MEANT, MIN_SHARE * total) if phrase.cls else max(FILL_MEANT, FILL_SHARE * total)
+        out[name] = frozenset(k for k, n in meant.items() if n >= least) | ({reading.values[name]} - {NOTHING})
+    return out
+
+
+def _reclassed(parse: Parse, reading: Reading, fields: Mapping[str, str], present: Mapping[str, str]) -> Parse:
+    """The parse with the class of each field's phrase made the field's, where they differ."""
+    frames = [dict(f.elements) for f in parse.frames]
+    changed = False
+    for name in ("object", "receptacle", "mrecep"):
+        where, value = reading.at[name], fields[name]
+        if where is None or value == NOTHING or value == reading.values[name] or value not in present:
+            continue
+        frames[where[0]][where[1]] = replace(frames[where[0]][where[1]], cls=present[value])
+        changed = True
+    if not changed:
+        return parse
+    return replace(parse, frames=tuple(replace(f, elements=e) for f, e in zip(parse.frames, frames, strict=True)))
+
+
+def _thing(parse: Parse, where: tuple[int, str] | None, value: str, present: Mapping[str, str]) -> Phrase:
+    """The phrase that says a field's class: the parser's (its words, the class the field's), else the class's name,
+    a default (nobody said it)."""
+    cls = present[value]
+    if where is not None:
+        said = parse.frames[where[0]].elements[where[1]]
+        return replace(said, cls=cls, refers_to=None, quantity=None, plural=False, conjuncts=())
+    return Phrase(None, class_words(cls)[-1] if class_words(cls) else cls, cls, default=True)
+
+
+def _written(parse: Parse, library: Library, vocabulary: Vocabulary, reading: Reading, fields: Mapping[str, str],
+             present: Mapping[str, str], chance: float) -> Parse:
+    """The frames written anew from the fields: a Slice of the object when the parser read it sliced, then the
+    task's frames, each marked inferred with the type's probability; the parse unchanged when the library lacks a
+    frame the task needs or a field has no class."""
+    kind = fields["type"]
+    needed = {"Place", "Pick", *([STEP_OF[kind]] if kind in STEP_OF else []), *(["LookAt"] if kind == LOOK else [])}
+    if any(n not in library for n in needed) or fields["object"] not in present \
+            or (kind != LOOK and fields["receptacle"] not in present) \
+            or (kind == STACK and fields["mrecep"] not in present):
+        return parse
+    p = round(chance, 3)
+    span = parse.frames[0].span
+    out: list[Evoked] = []
+    obj = _thing(parse, reading.at["object"], fields["object"], present)
+    slices = [f for f in parse.frames if f.frame == "Slice"]
+    if reading.sliced and slices:
+        out.append(replace(slices[0], elements={**{r: e for r, e in slices[0].elements.items() if r != "theme"
+                                                    and e.refers_to is None}, "theme": obj}))
+        obj = Phrase("", obj.head, obj.cls, refers_to=(0, "theme"))
+
+    def frame(name: str, elements: dict[str, Phrase]) -> Evoked:
+        spec = library.frame(name)
+        for e in spec.elements:
+            if e.default is not None and e.role not in elements:
+                cls = vocabulary.ground_name(e.default) or e.default
+                elements[e.role] = Phrase(None, e.default, cls, default=True)
+        unit = spec.lexical_units[0].text if spec.lexical_units else name.lower()
+        return Evoked(name, unit, span, elements, inferred=p)
+
+    def same(phrase: Phrase, index: int, role: str) -> Phrase:
+        return Phrase("", phrase.head, phrase.cls, refers_to=(index, role)) if phrase.refers_to is None else phrase
+
+    if kind == TWO:
+        out.append(frame("Place", {"theme": replace(obj, quantity=2),
+                                   "goal": _thing(parse, reading.at["receptacle"], fields["receptacle"], present)}))
+        return replace(parse, frames=tuple(out))
+    at = len(out)
+    out.append(frame("Pick", {"theme": obj}))
+    it = same(obj, at, "theme")
+    if kind == LOOK:
+        out.append(frame("LookAt", {"theme": it}))
+        return replace(parse, frames=tuple(out))
+    if kind in STEP_OF:
+        out.append(frame(STEP_OF[kind], {"theme": it}))
+    if kind == STACK:
+        holder = _thing(parse, reading.at["mrecep"], fields["mrecep"], present)
+        out.append(frame("Place", {"theme": it, "goal": holder}))
+        it = same(holder, len(out) - 1, "goal")
+    out.append(frame("Place", {"theme": it, "goal": _thing(parse, reading.at["receptacle"], fields["receptacle"],
+                                                          present)}))
+    return replace(parse, frames=tuple(out))
+
+
+def fit_fields(rows: Sequence[Mapping[str, str]], l2: float = L2, trust: Mapping[str, float] = TRUST) -> FieldModel:
+    """The model fitted on ALFRED goal rows (``goal_sentence``, ``task_type``, ``object``, ``receptacle``,
+    ``mrecep``): each field's values counted as the prior, its weights by :func:`~seal_cli.language.chooser.fit`
+    (every value a candidate; a gram weighs a value it was said with in at least :data:`MIN_COUNT` sentences)."""
+    grams = [sentence_grams(" ".join(r["goal_sentence"].split())) for r in rows]
+    priors: dict[str, dict[str, int]] = {}
+    weights: dict[str, dict[str, dict[str, float]]] = {}
+    for name in FIELDS:
+        labels = [_label(r, name) for r in rows]
+        counts = Counter(labels)
+        values = tuple(sorted(counts))
+        offsets = tuple(math.log(counts[v]) for v in values)
+        instances = [Instance(values, offsets, values.index(v), g) for v, g in zip(labels, grams, strict=True)]
+        priors[name] = dict(sorted(counts.items()))
+        weights[name] = fit(instances, l2=l2, min_count=MIN_COUNT, digits=2, min_label=MIN_COUNT)
+    return FieldModel(priors, weights, trust)
+
+
+def _label(row: Mapping[str, str], name: str) -> str:
+    if name == "type":
+        return row["task_type"]
+    if name == "receptacle" and row["task_type"] == LOOK:
+        return NOTHING
+    return class_key(row[name]) if row.get(name) else NOTHING
+
+
+def model_json(model: FieldModel, source: str) -> str:
+    """The model as the shipped file's text (one line per field's section, sorted)."""
+    data = {"format": "seal-task-fields-1", "source": source, "trust": dict(model.trust),
+            "priors": {n: dict(model.priors[n]) for n in FIELDS}, "weights": {n: model.weights[n] for n in FIELDS}}
+    return json.dumps(data, sort_keys=True, separators=(",", ":")) + "\n"
+
+
+def load_field_model(path: Path) -> FieldModel:
+    """The model in this file (a :func:`model_json` text). Raises SealError naming the file when it is not one."""
+    from seal_cli.errors import SealError, Where
+    from seal_cli.fileio import read_text
+
+    try:
+        data = json.loads(read_text(path))
+    except json.JSONDecodeError as err:
+        raise SealError(f"not JSON: {err.msg}", Where(str(path), err.lineno, err.colno)) from None
+    if not isinstance(data, dict) or data.get("format") != "seal-task-fields-1" or not all(
+            isinstance(data.get(k), dict) and all(isinstance(data[k].get(n), dict) for n in FIELDS)
+            for k in ("priors", "weights")):
+        raise SealError("not a task-field model (format seal-task-fields-1: priors and weights of type, object, "
+                        "receptacle, mrecep)", Where(str(path)))
+    said = data.get("trust")
+    trust: Mapping[str, float] = said if isinstance(said, dict) else TRUST
+    if not all(isinstance(trust.get(n, 0.0), int | float) for n in FIELDS):
+        raise SealError("trust: expected a number for each of " + ", ".join(FIELDS), Where(str(path)))
+    return FieldModel(data["priors"], data["weights"], {n: float(trust.get(n, TRUST[n])) for n in FIELDS})
+
+
+@cache
+def shipped_field_model() -> FieldModel:
+    """The model shipped with seal (:data:`SHIPPED`), read once; empty when absent."""
+    return load_field_model(SHIPPED) if SHIPPED.is_file() else FieldModel()

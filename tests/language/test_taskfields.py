@@ -1,0 +1,178 @@
+"""The task fields a whole sentence says: read off a parse as the scorer reads them, weighed by a model of the
+sentence's words, combined with the parser's reading, and written back into the parse (a class changed, or the
+frames written anew and marked inferred); only with the shipped statistics, where they know the vocabulary."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from seal_cli.errors import SealError
+from seal_cli.frames.library import Library
+from seal_cli.language.grounding import Vocabulary
+from seal_cli.language.parser import parse_command
+from seal_cli.language.taskfields import (
+    NOTHING,
+    FieldModel,
+    combine,
+    fit_fields,
+    load_field_model,
+    model_json,
+    read_fields,
+    reread,
+    sentence_grams,
+    shipped_field_model,
+)
+from seal_cli.language.wordusage import WordUsage
+
+ROOM = ("Apple", "Fridge", "Microwave", "CounterTop", "DiningTable", "SideTable", "Mug", "Pan", "DeskLamp", "Knife",
+        "ButterKnife", "Bread")
+SIMPLE = "pick_and_place_simple"
+COOL = "pick_cool_then_place_in_recep"
+STACK = "pick_and_place_with_movable_recep"
+LOOK = "look_at_obj_in_light"
+PRIORS = {"type": {SIMPLE: 50, COOL: 20, STACK: 10, LOOK: 10},
+          "object": {"apple": 30, "mug": 30, "knife": 10, "butter_knife": 10, "bread": 10},
+          "receptacle": {"fridge": 10, "microwave": 10, "counter_top": 20, "dining_table": 20, "side_table": 10,
+                         NOTHING: 10},
+          "mrecep": {NOTHING: 80, "pan": 10, "mug": 10}}
+MODEL = FieldModel(PRIORS, {"type": {"u:frosty": {COOL: 6.0}, "u:lamp": {LOOK: 6.0}},
+                            "object": {"b:butter_knife": {"butter_knife": 8.0}},
+                            "receptacle": {"u:bedroom": {"side_table": 6.0}, "u:couch": {"sofa": 9.0}},
+                            "mrecep": {}})
+
+
+def rules(classes: tuple[str, ...] = ROOM) -> Vocabulary:
+    """The rules' grounding, with what people meant by "table" (no universe: the counts never override a class)."""
+    return Vocabulary.of(classes, usage=WordUsage({"table": {"dining_table": 300, "side_table": 200, "sofa": 2},
+                                                "glass": {"cup": 90, "butter_knife": 1}}))
+
+
+def parsed(text: str, library: Library) -> tuple[Vocabulary, object]:
+    vocabulary = rules()
+    return vocabulary, parse_command(text, library, vocabulary, infer_steps=False)
+
+
+def test_a_sentence_s_features_are_its_words_and_their_pairs() -> None:
+    assert sentence_grams("Chill an apple.") == ("b:<s>_chill", "b:an_apple", "b:apple_</s>", "b:chill_an",
+                                                 "u:an", "u:apple", "u:chill")
+
+
+def test_the_fields_are_read_as_the_scorer_reads_them(library: Library) -> None:
+    _, parse = parsed("put the mug in the microwave", library)
+    reading = read_fields(parse)
+    assert (reading.type, dict(reading.values)) == (SIMPLE, {"object": "mug", "receptacle": "microwave",
+                                                             "mrecep": NOTHING})
+    _, parse = parsed("chill the apple and put it on the counter", library)
+    reading = read_fields(parse)
+    assert reading.type == COOL and reading.values["object"] == "apple"
+    assert reading.at["object"] is not None and parse.frames[reading.at["object"][0]].frame == "Cool"
+    _, parse = parsed("put the apple in the pan and put the pan in the fridge", library)
+    assert read_fields(parse).type == STACK and read_fields(parse).values["mrecep"] == "pan"
+
+
+def test_the_parser_s_reading_stands_unless_the_words_outweigh_its_trust(library: Library) -> None:
+    vocabulary, parse = parsed("put the apple in the fridge", library)
+    reading = read_fields(parse)
+    plain, _ = combine(MODEL, sentence_grams("put the apple in the fridge"), reading, vocabulary.by_key)
+    assert plain == {"type": SIMPLE, "object": "apple", "receptacle": "fridge", "mrecep": NOTHING}
+    chilled, p = combine(MODEL, sentence_grams("put the frosty apple in the fridge"), reading, vocabulary.by_key)
+    assert chilled["type"] == COOL and p > 0.5
+    blind = FieldModel(PRIORS, MODEL.weights, {"type": 0.0, "object": 0.0, "receptacle": 0.0, "mrecep": 0.0})
+    assert combine(blind, (), reading, vocabulary.by_key)[0]["object"] == "apple"     # a tie (30, 30): the parser's
+    assert combine(blind, (), reading, ("mug", "fridge"))[0]["object"] == "mug"       # only classes present
+
+
+def test_a_class_the_words_say_replaces_the_parser_s_and_keeps_its_words(library: Library) -> None:
+    text = "put the mug on the table in the bedroom"
+    vocabulary, parse = parsed(text, library)
+    before = read_fields(parse)
+    assert before.type == SIMPLE and before.values["receptacle"] in ("dining_table", "side_table")
+    after = reread(parse, library, vocabulary, MODEL, text)
+    goal = after.frames[before.at["receptacle"][0]].elements["goal"]
+    assert goal.cls == "SideTable" and goal.head == "table"
+    assert [f.frame for f in after.frames] == [f.frame for f in parse.frames]
+    assert all(f.inferred is None for f in after.frames)
+    text = "put the mug on the table by the couch"       # the sofa is likelier, but "table" meant it twice in 502
+    vocabulary, parse = parsed(text, library)
+    assert reread(parse, library, vocabulary, MODEL, text) == parse
+
+
+def test_a_phrase_the_rules_ground_to_nothing_takes_no_class_people_never_meant_by_its_word(library: Library) -> None:
+    text = "put the glass in the fridge"             # people meant a cup, none here (a butter knife once in 91)
+    vocabulary, parse = parsed(text, library)
+    assert read_fields(parse).values["object"] == NOTHING
+    assert reread(parse, library, vocabulary, MODEL, text) == parse
+
+
+def test_another_type_writes_the_frames_anew_marked_inferred(library: Library) -> None:
+    text = "put the frosty apple on the counter"
+    vocabulary, parse = parsed(text, library)
+    after = reread(parse, library, vocabulary, MODEL, text)
+    assert [f.frame for f in after.frames] == ["Pick", "Cool", "Place"]
+    assert all(f.inferred is not None and f.inferred > 0.5 for f in after.frames)
+    reading = read_fields(after)
+    assert (reading.type, reading.values["object"], reading.values["receptacle"]) == (COOL, "apple", "counter_top")
+    assert after.resolve(after.frames[2].elements["theme"]).text == parse.resolve(
+        parse.frames[-1].elements["theme"]).text
+
+
+def test_a_look_drops_the_receptacle(library: Library) -> None:
+    text = "put the apple by the lamp"
+    vocabulary, parse = parsed(text, library)
+    after = reread(parse, library, vocabulary, MODEL, text)
+    assert [f.frame for f in after.frames] == ["Pick", "LookAt"]
+    assert read_fields(after).type == LOOK
+
+
+def test_an_empty_model_or_no_frames_changes_nothing(library: Library) -> None:
+    vocabulary, parse = parsed("put the frosty apple on the counter", library)
+    assert reread(parse, library, vocabulary, FieldModel(), "put the frosty apple on the counter") is parse
+    text = "put the frosty apple on the counter and find the mug"      # a frame no task field holds: kept as said
+    vocabulary, parse = parsed(text, library)
+    assert reread(parse, library, vocabulary, MODEL, text) == parse
+    assert not FieldModel() and MODEL
+
+
+def test_the_model_is_learned_from_labelled_sentences() -> None:
+    rows = [{"goal_sentence": s, "task_type": t, "object": "Apple", "receptacle": "Fridge", "mrecep": ""}
+            for s, t in [("chill an apple", COOL), ("put a chilled apple away", COOL), ("cool the apple", COOL),
+                         ("chill the apple now", COOL), ("put an apple in the fridge", SIMPLE),
+                         ("move the apple to the fridge", SIMPLE), ("place an apple", SIMPLE)]]
+    model = fit_fields(rows)
+    assert model.priors["type"] == {COOL: 4, SIMPLE: 3} and model.priors["mrecep"] == {NOTHING: 7}
+    p = model.probabilities("type", sentence_grams("chill it"))
+    assert p[COOL] > 4 / 7
+    assert load_field_model_of(model_json(model, "test")) == model
+
+
+def load_field_model_of(text: str) -> FieldModel:
+    import tempfile
+
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / "m.json"
+        path.write_text(text)
+        return load_field_model(path)
+
+
+def test_a_file_that_is_no_model_is_named(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.json"
+    bad.write_text("{\n  oops")
+    with pytest.raises(SealError) as err:
+        load_field_model(bad)
+    assert str(bad) in str(err.value) and ":2:" in str(err.value)
+    bad.write_text(json.dumps({"format": "seal-task-fields-1", "priors": {}}))
+    with pytest.raises(SealError, match="not a task-field model"):
+        load_field_model(bad)
+
+
+def test_only_the_shipped_statistics_on_alfred_s_classes_reread(library: Library) -> None:
+    shipped = shipped_field_model()
+    assert shipped and set(shipped.priors["type"]) >= {SIMPLE, COOL, STACK, LOOK}
+    assert Vocabulary.of(ROOM).field_model is shipped
+    assert not rules().field_model                                            # statistics given: off
+    assert not Vocabulary.of(("Apple", "Fridge", "SpaceShuttle")).field_model    # a class ALFRED never had
+    house = Vocabulary(Vocabulary.of(ROOM).classes, house=True)
+    assert not house.field_model

@@ -1,0 +1,66 @@
+"""The shipped task-field model is what ``scripts/build_task_fields.py`` gives on ALFRED's train split, and the
+script names what is wrong with its arguments."""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+import subprocess
+import sys
+from pathlib import Path
+from types import ModuleType
+
+import pytest
+
+from seal_cli.language.taskfields import SHIPPED
+
+ROOT = Path(__file__).resolve().parents[2]
+SCRIPT = ROOT / "scripts" / "build_task_fields.py"
+
+
+def builder() -> ModuleType:
+    spec = importlib.util.spec_from_file_location("build_task_fields", SCRIPT)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_a_weight_may_move_in_its_last_decimal_but_no_prior_may_change() -> None:
+    diff = builder().differences
+    assert diff({"weights": {"type": {"u:a": {"x": 0.21}}}}, {"weights": {"type": {"u:a": {"x": 0.22}}}}) == []
+    assert diff({"weights": {"type": {"u:a": {"x": 0.21}}}}, {"weights": {"type": {"u:a": {"x": 0.25}}}}) != []
+    assert diff({"weights": {"type": {"u:a": {"x": 0.01}}}}, {"weights": {"type": {"u:a": {}}}}) == []
+    assert diff({"priors": {"type": {"x": 3}}}, {"priors": {"type": {"x": 4}}}) == [
+        "/priors/type/x: 3 shipped, 4 built"]
+    assert builder().trusts(["2", "1,2,3,4"]) == [{"type": 2.0, "object": 2.0, "receptacle": 2.0, "mrecep": 2.0},
+                                                  {"type": 1.0, "object": 2.0, "receptacle": 3.0, "mrecep": 4.0}]
+
+
+def test_a_missing_data_folder_or_a_bad_fraction_is_named(tmp_path: Path, shared_data: Path) -> None:
+    done = subprocess.run([sys.executable, str(SCRIPT), "--check", "--data", str(tmp_path)],
+                          capture_output=True, text=True, timeout=60)
+    assert done.returncode == 1
+    assert str(tmp_path / "alfred" / "goals_train.tsv") in done.stderr and "Traceback" not in done.stderr
+    for args in (["--dev", "2"], ["--dev", "0.2", "--trust", "1,2"]):
+        done = subprocess.run([sys.executable, str(SCRIPT), "--data", str(shared_data), *args],
+                              capture_output=True, text=True, timeout=120)
+        assert done.returncode == 1 and "Traceback" not in done.stderr, done.stderr
+        assert args[-1] in done.stderr
+
+
+def test_the_shipped_model_is_what_the_train_split_gives(shared_data: Path, tmp_path: Path) -> None:
+    if not (shared_data / "alfred" / "goals_train.tsv").is_file():
+        pytest.skip("no ALFRED train goals")
+    out = tmp_path / "alfred_train.json"
+    out.write_text(SHIPPED.read_text())
+    check = subprocess.run([sys.executable, str(SCRIPT), "--check", "--data", str(shared_data), "--out", str(out)],
+                           capture_output=True, text=True, timeout=900)
+    assert check.returncode == 0, check.stdout + check.stderr
+    data = json.loads(out.read_text())
+    data["priors"]["type"]["pick_and_place_simple"] += 1
+    out.write_text(json.dumps(data))
+    check = subprocess.run([sys.executable, str(SCRIPT), "--check", "--data", str(shared_data), "--out", str(out)],
+                           capture_output=True, text=True, timeout=900)
+    assert check.returncode == 1 and "differs" in check.stderr
+    assert out.read_text() == json.dumps(data)          # --check writes nothing
