@@ -162,7 +162,7 @@ def test_bench_parse_reports_a_crashing_scorer_as_an_error(shared_data: Path, tm
     if not (scorers / "score_parse.py").is_file():
         pytest.skip("the shared scorers are not here")
     corpus = tmp_path / "odd.jsonl"
-    corpus.write_text('{"text": "go to the kitchen"}\n', encoding="utf-8")  # a command, but none of the fields it scores
+    corpus.write_text('{"text": "go to the kitchen"}\n', encoding="utf-8")  # a command, no field it scores
     result = runner.invoke(app, ["bench", "parse", "--corpus", str(corpus)])
     assert result.exit_code == 1, result.output
     assert f"the scorer failed on {corpus}" in result.stderr and "Traceback" not in result.output + result.stderr
