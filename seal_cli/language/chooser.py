@@ -127,21 +127,28 @@ def fit(instances: Sequence[Instance], l2: float = 1.0, min_count: int = 2,
     offsets: list[float] = []
     starts: list[int] = []
     gold: list[int] = []
+    by_feature: dict[str, list[tuple[str, int]]] = {}   # each feature's weighted classes: a model over many
+    for (f, c), k in index.items():                    # classes looks up only the pairs it keeps, not every class
+        by_feature.setdefault(f, []).append((c, k))
     for inst in usable:
-        starts.append(len(offsets))
-        gold.append(len(offsets) + inst.label)
-        feats = set(inst.features)
-        for c, offset in zip(inst.candidates, inst.offsets, strict=True):
-            row = len(offsets)
-            offsets.append(offset)
-            for f in feats:
-                k = index.get((f, c))
-                if k is not None:
+        first_row = len(offsets)
+        starts.append(first_row)
+        gold.append(first_row + inst.label)
+        if len(inst.offsets) != len(inst.candidates):
+            raise ValueError(f"an instance of {len(inst.candidates)} candidates has {len(inst.offsets)} offsets")
+        offsets.extend(inst.offsets)
+        at: dict[str, list[int]] = {}
+        for j, c in enumerate(inst.candidates):
+            at.setdefault(c, []).append(first_row + j)
+        for f in set(inst.features):
+            for c, k in by_feature.get(f, ()):
+                for row in at.get(c, ()):
                     rows.append(row)
                     cols.append(k)
     if not pairs or not usable:
         return {}
     design = csr_matrix((np.ones(len(rows)), (rows, cols)), shape=(len(offsets), len(pairs)))
+    design.sort_indices()                              # the same sums in the same order, whatever the set's order
     base = np.asarray(offsets)
     first = np.asarray(starts)
     group = np.repeat(np.arange(len(starts)), np.diff(np.append(first, len(offsets))))

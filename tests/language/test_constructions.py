@@ -1779,6 +1779,21 @@ def test_whether_the_robot_did_a_deed_another_frame_undoes_is_looking(
     assert frames(text, library) == want
 
 
+@pytest.mark.parametrize(("text", "want"), [
+    ("you haven't seen my scarf, have you?", [("Find", {"theme": "scarf"})]),
+    ("you've noticed the remote, haven't you?", [("Find", {"theme": "remote"})]),
+    ("someone has seen the cat, haven't they?", [("Find", {"theme": "cat"})]),
+    ("you haven't seen my scarf.", None),            # no tag: a statement, no command
+])
+def test_seen_said_first_then_a_tag_asks_to_find(
+        text: str, want: list[tuple[str, dict[str, str]]] | None, library: Library) -> None:
+    if want is None:
+        with pytest.raises(CommandError):
+            parse_command(text, library)
+        return
+    assert frames(text, library) == want
+
+
 def test_a_deed_that_leaves_no_state_to_look_at_is_no_check(library: Library) -> None:
     # picking up fills the robot's hands: its own state, not the thing's (Lexicon.undoable leaves it out)
     with pytest.raises(CommandError, match="unknown verb 'did'"):

@@ -64,6 +64,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.ASKED_WHERE,
     requests.STATE_QUESTION,
     requests.LEFT_ASKED_RULE,
+    question_tags.SEEN_TAGGED,
     question_tags.DONE_ASKED,
     question_tags.STATE_TAGGED,
     question_tags.YOU_MODAL_TAGGED,

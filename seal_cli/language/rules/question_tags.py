@@ -21,7 +21,9 @@ from seal_cli.language.english import (
     BE_WORDS,
     END_MARKS,
     NEGATED_AUXILIARIES,
+    SEEN_ASKED,
     STATE_MEANS,
+    WHERE_MEANS,
 )
 from seal_cli.language.morphology import participles, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
@@ -30,7 +32,7 @@ from seal_cli.language.state import State, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word
 
-__all__ = ["DONE_ASKED", "QUESTION_TAG", "STATE_TAGGED", "YOU_MODAL_TAGGED", "tag_at"]
+__all__ = ["DONE_ASKED", "QUESTION_TAG", "SEEN_TAGGED", "STATE_TAGGED", "YOU_MODAL_TAGGED", "tag_at"]
 
 TAG_AUXILIARIES = frozenset([*NEGATED_AUXILIARIES, *NEGATED_AUXILIARIES.values(), "am", "aren't", "shall", "might",
                              "must"])
@@ -127,6 +129,33 @@ def _done_asked(s: State, i: int) -> Match | None:
                  expect=False, verb=STATE_MEANS, using=False)
 
 
+def _seen_tagged(s: State, i: int) -> Match | None:
+    """"*You haven't seen* my keys, have you?", "*you've seen* the cat, haven't you?", "*you can see* the remote,
+    can't you?": whether the thing was seen, said with the subject first and a tag ending the sentence, asks what
+    "have you seen my keys?" asks: find the thing (``WHERE_MEANS``; ``SEEN_ASKED``'s auxiliaries, subjects and
+    verbs of perceiving). Without the tag it is a statement, no command."""
+    words = s.words
+    auxiliaries, subjects, seeing = SEEN_ASKED
+    if WHERE_MEANS not in s.lexicon.units or tag_at(s, i) is None:
+        return None
+    low = words[i].lower
+    if low in _DONE_SAID:
+        v = i + 1
+    elif low in subjects and i + 1 < len(words) and words[i + 1].lower in auxiliaries:
+        v = i + 2
+    else:
+        return None
+    for n in (2, 1):                                 # "come across" before "see"
+        if v + n >= len(words):
+            continue
+        said = [verb_lemma(words[v].lower) or words[v].lower, *(w.lower for w in words[v + 1:v + n])]
+        if " ".join(said) in seeing and s.np_starts(v + n):
+            end = words[v + n - 1].end
+            return Match(v + n - i, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB,
+                                          WHERE_MEANS),), expect=False, verb=WHERE_MEANS, using=False)
+    return None
+
+
 def _you_modal_tagged(s: State, i: int) -> Match | None:
     """"*You couldn't* pass me the salt, could you?", "*you'll* close the door, won't you?": "you" and a modal (or
     its negative) before a verb's base form, the sentence ended by a tag: a polite request, as "could you pass me
@@ -159,6 +188,10 @@ DONE_ASKED = Rule("whether the robot did it", _done_asked, (
     Example("have you heated the soup?", "have you heated", Tag.VERB),
 ), _DONE_AUXILIARIES | _DONE_SAID | frozenset(["you"]),
     "'did you close X?', 'you've closed X, haven't you?': check X (LookAt)")
+SEEN_TAGGED = Rule("seen, said first, then a tag", _seen_tagged, (
+    Example("you haven't seen my keys, have you?", "you haven't seen", Tag.VERB),
+    Example("you've seen the cat, haven't you?", "you've seen", Tag.VERB),
+), _DONE_SAID | SEEN_ASKED[1], "'you haven't seen X, have you?': find X, as 'have you seen X?'")
 YOU_MODAL_TAGGED = Rule("you and a modal, then a tag", _you_modal_tagged, (
     Example("you couldn't pass me the salt, could you?", "you couldn't", Tag.POLITE),
     Example("you'll close the door, won't you?", "you'll", Tag.POLITE),
