@@ -27,7 +27,7 @@ from seal_cli.language.english import (
 )
 from seal_cli.language.morphology import participles, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.rules.requests import state_said
+from seal_cli.language.rules.requests import seen_asked_from, state_said
 from seal_cli.language.state import State, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word
@@ -130,12 +130,12 @@ def _done_asked(s: State, i: int) -> Match | None:
 
 
 def _seen_tagged(s: State, i: int) -> Match | None:
-    """"*You haven't seen* my keys, have you?", "*you've seen* the cat, haven't you?", "*you can see* the remote,
-    can't you?": whether the thing was seen, said with the subject first and a tag ending the sentence, asks what
-    "have you seen my keys?" asks: find the thing (``WHERE_MEANS``; ``SEEN_ASKED``'s auxiliaries, subjects and
-    verbs of perceiving). Without the tag it is a statement, no command."""
+    """"*You haven't seen* my keys, have you?", "*you've seen* the cat, haven't you?": whether the thing was seen,
+    said with the subject first and a tag ending the sentence, asks what "have you seen my keys?" asks: find the
+    thing (``WHERE_MEANS``; ``SEEN_ASKED``'s auxiliaries, subjects and verbs of perceiving). Without the tag it is
+    a statement, no command."""
     words = s.words
-    auxiliaries, subjects, seeing = SEEN_ASKED
+    auxiliaries, subjects, _ = SEEN_ASKED
     if WHERE_MEANS not in s.lexicon.units or tag_at(s, i) is None:
         return None
     low = words[i].lower
@@ -145,15 +145,7 @@ def _seen_tagged(s: State, i: int) -> Match | None:
         v = i + 2
     else:
         return None
-    for n in (2, 1):                                 # "come across" before "see"
-        if v + n >= len(words):
-            continue
-        said = [verb_lemma(words[v].lower) or words[v].lower, *(w.lower for w in words[v + 1:v + n])]
-        if " ".join(said) in seeing and s.np_starts(v + n):
-            end = words[v + n - 1].end
-            return Match(v + n - i, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB,
-                                          WHERE_MEANS),), expect=False, verb=WHERE_MEANS, using=False)
-    return None
+    return seen_asked_from(s, i, v)
 
 
 def _you_modal_tagged(s: State, i: int) -> Match | None:

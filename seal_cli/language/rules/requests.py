@@ -167,7 +167,7 @@ def _asked_alone_last(s: State, i: int) -> bool:
 
 def _seen_asked(s: State, i: int) -> Match | None:
     words = s.words
-    auxiliaries, subjects, seeing = SEEN_ASKED
+    auxiliaries, subjects, _ = SEEN_ASKED
     if WHERE_MEANS not in s.lexicon.units:
         return None
     if i + 3 < len(words) and words[i].lower in auxiliaries and words[i + 1].lower in subjects:
@@ -177,6 +177,14 @@ def _seen_asked(s: State, i: int) -> Match | None:
         v = i                                        # "can you | see the cat anywhere?" (words25)
     else:
         return None
+    return seen_asked_from(s, i, v)
+
+
+def seen_asked_from(s: State, i: int, v: int) -> Match | None:
+    """The words ``i`` to a verb of perceiving at ``v`` and a phrase after it ("*have you seen* my keys",
+    "*has anyone come across* the cat") as the search they ask (``WHERE_MEANS``), else None."""
+    words = s.words
+    seeing = SEEN_ASKED[2]
     for n in (2, 1):                                 # "come across" before "see"
         if v + n > len(words):
             continue
