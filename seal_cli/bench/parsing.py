@@ -10,7 +10,9 @@ machine, the CPU time is what compares), with:
   swallowed and are refused instead;
 * ``silent_swallowed``: parses that still hold such a verb in an element's text, found by
   :func:`~seal_cli.language.swallowed.swallowed` on the output (over the command's own tokens, not
-  the tagger's): the target is zero on every corpus.
+  the tagger's): the target is zero on every corpus;
+* ``silent_dropped``: parses that drop a word of state ending a sentence ("is the light in the office *on*?"
+  read as a search, words26), found by :func:`~seal_cli.language.dropped.dropped_states`: the target is zero too.
 """
 
 from __future__ import annotations
@@ -26,6 +28,7 @@ from typing import TYPE_CHECKING
 from seal_cli.errors import SealError, Where
 from seal_cli.fileio import read_json_lines
 from seal_cli.frames.library import Library
+from seal_cli.language.dropped import dropped_states
 from seal_cli.language.lexicon import CommandError, tokenize
 from seal_cli.language.parser import CommandParser
 from seal_cli.language.swallowed import swallowed
@@ -51,6 +54,7 @@ class ParsingFigures:
     refused_swallowed: int
     silent_swallowed: int
     commands_per_cpu_s: float
+    silent_dropped: int = 0
 
     def to_json(self) -> dict[str, float | int]:
         return asdict(self)
@@ -91,6 +95,10 @@ def measure(texts: Sequence[str], library: Library, vocabulary: Vocabulary | Non
             errors += 1
     seconds = time.process_time() - start
     things = library.taxonomy.known_classes
-    silent = sum(1 for parse in parses if swallowed(parse, tokenize(parse.text), parser.lexicon, things))
+    silent = dropped = 0
+    for parse in parses:
+        tokens = tokenize(parse.text)
+        silent += bool(swallowed(parse, tokens, parser.lexicon, things))
+        dropped += bool(dropped_states(parse, tokens))
     return ParsingFigures(len(texts), len(parses), errors, refused, silent,
-                          round(len(texts) / seconds, 1) if seconds > 0 else float("inf"))
+                          round(len(texts) / seconds, 1) if seconds > 0 else float("inf"), dropped)

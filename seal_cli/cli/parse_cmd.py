@@ -195,7 +195,7 @@ def bench_parse(
             if run.returncode and run.stderr:
                 err.print(_escape(run.stderr.rstrip()[-1000:]))
             out.print(f"in process: {figures.commands_per_cpu_s:,.0f} commands/CPU-s; clauses swallowed into an "
-                      f"element: {figures.silent_swallowed} silently, {figures.refused_swallowed} refused "
-                      f"(n={figures.commands}, errors {figures.errors})")
+                      f"element: {figures.silent_swallowed} silently, {figures.refused_swallowed} refused; states "
+                      f"dropped: {figures.silent_dropped} (n={figures.commands}, errors {figures.errors})")
     if as_json:
         emit_json({"corpora": results})

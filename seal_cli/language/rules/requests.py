@@ -378,7 +378,7 @@ def _state_from(s: State, k: int, end: int) -> int | None:
         return None                              # "is the cup *still* on the table": an adverb, no state of its own
     for q in _state_starts(s, k, last):
         first = _state_starts(s, k, q - 2) if q - 2 >= k and words[q - 1].lower == "or" else []
-        if q < last and not first:
+        if q < last and not first and not _participle(s, q):
             continue                              # a particle only in alternatives: "is the light *on*" as before
         for p in first or [q]:                    # "sitting (down) or": the first alternative begins the state
             while p > k and words[p - 1].lower in STATE_ADVERBS:
@@ -386,6 +386,18 @@ def _state_from(s: State, k: int, end: int) -> int | None:
             if p == k:
                 return p
     return None
+
+
+def _participle(s: State, q: int) -> bool:
+    """Whether the word at ``q`` is a participle said after its phrase, before its particle ("is the light in the
+    office *switched* on?", "are the lamps *turned* off?"): the state is the two words (words26: the participle
+    was left in the phrase, "the light in the office switched"); an adjective before a particle ("is the *light*
+    on?") stays the phrase's noun."""
+    words = s.words
+    low = words[q].lower
+    lemma = verb_lemma(low)
+    return q > 0 and words[q - 1].lower not in NP_OPENERS and lemma is not None and lemma != low and \
+        low in participles(lemma)
 
 
 def state_said(s: State, k: int, end: int) -> bool:
@@ -415,13 +427,17 @@ def _clause_stop(s: State, k: int) -> int:
 
 def _state_stop(s: State, k: int) -> int:
     """Where the state asked from ``k`` ends: the clause's end (:func:`_clause_stop`), or a place said after the
-    state ("is the window open *in the bedroom*?"), which is where the thing is, not part of the state."""
+    state ("is the window open *in the bedroom*?"), which is where the thing is, not part of the state. A word of
+    state right after a determiner is the phrase's noun, not a state said before the place ("is *the light* in the
+    office on?": "light" is the thing, "on" the state asked; words26 — it was read as the state "light", the
+    question became a search and "on" was dropped)."""
     end = _clause_stop(s, k)
     words = s.words
     for p in range(k + 1, end - 1):
         if words[p].lower in _WHETHER_WHERE and s.np_starts(p + 1) and _state_from(s, k, end) is None and \
-                any(_state_from(s, q, p) is not None for q in range(k, p)) and \
-                not any(s.verb_at(j) for j in range(p + 1, end)):
+                any(_state_from(s, q, p) is not None and words[q - 1].lower not in NP_OPENERS
+                    for q in range(k, p)) and \
+                not any(s.verb_at(j) and words[j - 1].lower not in NP_OPENERS for j in range(p + 1, end)):
             return p
     return end
 
@@ -579,6 +595,8 @@ def _state_asked(s: State, i: int) -> Match | None:
         return None
     words = s.words
     k = i + 1 if words[i].lower in _WHETHER_IS and verb.lower not in _WHETHER_IS else i
+    if words[k - 1].lower in NP_OPENERS:
+        return None                               # "is the *light* in the office on?": the phrase's noun
     end = _state_stop(s, k)
     if k >= end or _state_from(s, k, end) is None:
         return None
