@@ -68,6 +68,7 @@ from seal_cli.language.english import (
 from seal_cli.language.morphology import (
     gerund_lemma,
     in_dictionary,
+    in_verb_tables,
     is_adjective,
     is_adverb,
     is_plural,
@@ -222,6 +223,15 @@ def inflected(low: str) -> bool:
     return bool(lemma) and lemma != low and not low.endswith("ing")
 
 
+def _infinitive(word: Word) -> bool:
+    """Whether a word after "to" can be an infinitive: written lower case (a capital there starts a name: "give the
+    letter to *Drew*", "take the tea to *Will*") and a verb's base form (a past form is none: "to *drew*", words26;
+    "drew" was read as "draw", a second frame, the letter's recipient lost)."""
+    low = word.lower.split(" ", 1)[0]
+    lemma = verb_lemma(low)
+    return not capitalised(word) and (lemma is None or lemma == low or in_verb_tables(low))
+
+
 def lower_case_name(words: Sequence[Word], k: int) -> bool:
     """Whether word ``k``, in lower case, is a person's name as a subject (words24; the caller says where a subject
     stands: opening a statement, or after a condition's subordinator, "when *sam* gets home"): no dictionary lists
@@ -298,8 +308,19 @@ class State:
     def verb_at(self, i: int) -> tuple[str, int, int | None] | None:
         """The lexical unit starting at word ``i`` (memoised: the rules ask more than once)."""
         if i not in self._verbs:
-            self._verbs[i] = self.lexicon.verb_at(self.words, i, self.clause_end(i + 1))
+            found = self.lexicon.verb_at(self.words, i, self.clause_end(i + 1))
+            self._verbs[i] = None if found is not None and found[1] == 1 and self.past_subject(i) else found
         return self._verbs[i]
+
+    def past_subject(self, i: int) -> bool:
+        """Whether the word at ``i`` is a past form only (no base form, no -ing form: "drew", "rose") said before a
+        finite verb ("*Drew* is in the kitchen", "*rose* wants to go to bed"): the subject of a statement, never a
+        verb said of the robot (words26: they were read as "draw", "rise"; "moved is" is no English)."""
+        words = self.words
+        low = words[i].lower
+        lemma = verb_lemma(low)
+        return i + 1 < len(words) and words[i + 1].lower in FINITE and lemma is not None and lemma != low and \
+            not in_verb_tables(low) and gerund_lemma(low) is None
 
     # -- reading the words -------------------------------------------------------------------
     def emit(self, i: int, n: int, tag: str, info: object = None) -> Match:
@@ -792,8 +813,8 @@ class State:
         if asker and i + 1 + asker < len(words) and words[i + 1 + asker].lower in ("if", "whether"):
             return True                    # "go to the bedroom to see if the lamp is on": asked there
         found = self.verb_at(i + 1)
-        if not found:
-            return False
+        if not found or not _infinitive(words[i + 1]):
+            return False                   # "give the letter to *Drew*": a past form or a capital, no infinitive
         after = i + 1 + found[1]
         thing = words[i + 1].lower in self.lexicon.things or self.out[-1].tag not in ("WORD", "NAME", "PRON",
                                                                                        "PARTICLE", "LABEL")

@@ -251,8 +251,9 @@ def _unknown_unjoined(s: State, i: int) -> Match | None:
     if k + 1 >= len(words):
         return None
     verb, nxt = words[k].lower, words[k + 1]
-    if verb_lemma(verb) != verb or verb in s.lexicon.units or verb in CLOSED or verb in s.lexicon.things:
-        return None
+    if verb_lemma(verb) != verb or verb in s.lexicon.units or verb in CLOSED or verb in s.lexicon.things or \
+            to and capitalised(words[k]):
+        return None                       # "a blanket to *Grace* in the lounge": a capital after "to" is a name
     if to and not (nxt.lower in PARTICLES or nxt.lower in NP_OPENERS or
                    nxt.lower in _NO_NOUN_AFTER or capitalised(nxt) and nxt.lower not in CLOSED):
         return None
@@ -328,4 +329,6 @@ UNKNOWN_UNJOINED = Rule("unknown verb without a joint", _unknown_unjoined, (
     Example("the person in the hall needs help, go see them", "see", Tag.WORD),
     Example("come help me", "help", Tag.WORD),
     Example("go feed the cat", "feed", Tag.WORD),
+    Example("bring a blanket to Grace in the lounge", "Grace", Tag.NAME),
+    Example("take the plate to Mark in the kitchen", "Mark", Tag.NAME),
 ), None, "a verb no frame lists before its object, after a phrase: a clause of its own")

@@ -39,8 +39,9 @@ TAG_AUXILIARIES = frozenset([*NEGATED_AUXILIARIES, *NEGATED_AUXILIARIES.values()
 """The auxiliaries and modals that open a question tag, positive and negative ("is it", "isn't it")."""
 TAG_SUBJECTS = frozenset(["it", "they", "you", "he", "she", "we", "i", "there", "this", "that"])
 """The pronouns that close a question tag."""
-_STATE_BE = frozenset(["is", "are"])
-"""The verbs of being a state said of a thing takes, in the present (the question is about now)."""
+_STATE_BE = frozenset(["is", "are", "'s", "'re"])
+"""The verbs of being a state said of a thing takes, in the present (the question is about now), said joined to
+the phrase too ("the oven*'s* off, isn't it?", words26)."""
 _DONE_AUXILIARIES = frozenset(["did", "have", "has", "didn't", "haven't", "hasn't"])
 _DONE_SAID = frozenset(["you've", "you'd"])
 """"*You've* closed the door, haven't you?": a subject and its auxiliary in one word."""
@@ -118,7 +119,8 @@ def _done_asked(s: State, i: int) -> Match | None:
     elif low in _DONE_SAID and tag_at(s, i) is not None:
         v, base = i + 1, False
     elif low == "you" and tag_at(s, i) is not None:
-        v, base = (i + 2, False) if words[i + 1].lower in ("have", "'ve") else (i + 1, False)
+        v, base = (i + 2, False) if words[i + 1].lower in ("have", "'ve") else \
+            (i + 2, True) if words[i + 1].lower == "did" else (i + 1, False)    # "you *did* lock it, didn't you?"
     else:
         return None
     n = _done_verb(s, v, base)
@@ -173,11 +175,13 @@ STATE_TAGGED = Rule("a state said, then its tag", _state_tagged, (
     Example("the back door is locked, isn't it?", "", Tag.VERB),
     Example("the back door is locked, isn't it?", "locked", Tag.COND),
     Example("the lights in the hall are still on, aren't they?", "still on", Tag.COND),
+    Example("the heater's off, isn't it?", "off", Tag.COND),
 ), None, "'X is locked, isn't it?': the question 'is X locked?' (LookAt, the state asked kept)")
 DONE_ASKED = Rule("whether the robot did it", _done_asked, (
     Example("did you close the garage door?", "did you close", Tag.VERB),
     Example("you've turned off the oven, haven't you?", "you've turned off", Tag.VERB),
     Example("have you heated the soup?", "have you heated", Tag.VERB),
+    Example("you did switch off the iron, didn't you?", "you did switch off", Tag.VERB),
 ), _DONE_AUXILIARIES | _DONE_SAID | frozenset(["you"]),
     "'did you close X?', 'you've closed X, haven't you?': check X (LookAt)")
 SEEN_TAGGED = Rule("seen, said first, then a tag", _seen_tagged, (

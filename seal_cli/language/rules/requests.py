@@ -151,8 +151,9 @@ def _where_did(s: State, i: int) -> Match | None:
                  expect=False, verb=WHERE_MEANS, using=False)
 
 
-_CAN_YOU = frozenset(["can you", "could you", "can't you", "couldn't you"])
-"""Politeness that may be the question whether the robot can see a thing ("*can you* see the cat anywhere?")."""
+_CAN_YOU = frozenset(["can you", "could you", "can't you", "couldn't you", "you can", "you could"])
+"""Politeness that may be the question whether the robot can see a thing ("*can you* see the cat anywhere?"; said
+with the subject first and a tag, "*you can* see the cup, can't you?", words26)."""
 
 
 def _asked_alone_last(s: State, i: int) -> bool:
@@ -242,6 +243,8 @@ def _where_be(s: State, i: int) -> Match | None:
 
 
 _WHETHER_IS = frozenset(["is", "are", "isn't", "aren't"])
+_STATE_CONTRACTED = frozenset(["'s", "'re"])
+""""is"/"are" said joined to the phrase ("the oven*'s* off, isn't it?": a state said, then its tag, words26)."""
 _PEOPLE_PRONOUNS = frozenset(["he", "she"])
 _WHETHER_WHERE = frozenset(["in", "on", "at", "inside", "near", "by", "under", "beside", "behind"])
 _AT_HOME = frozenset(["home"])
@@ -594,7 +597,7 @@ def _state_asked(s: State, i: int) -> Match | None:
                                         or verb.lower.split()[-1] in LEFT_ASKED[2]):
         return None
     words = s.words
-    k = i + 1 if words[i].lower in _WHETHER_IS and verb.lower not in _WHETHER_IS else i
+    k = i + 1 if words[i].lower in _WHETHER_IS | _STATE_CONTRACTED and verb.lower not in _WHETHER_IS else i
     if words[k - 1].lower in NP_OPENERS:
         return None                               # "is the *light* in the office on?": the phrase's noun
     end = _state_stop(s, k)
@@ -1489,6 +1492,7 @@ WHERE_DID_RULE = Rule("where did I leave", _where_did, (
 ), WHERE_DID[0], "'where did I leave X', 'where do we keep X': find X")
 SEEN_ASKED_RULE = Rule("have you seen", _seen_asked, (
     Example("can you see my phone anywhere?", "see", Tag.VERB),
+    Example("you can see the blue mug, can't you?", "see", Tag.VERB),
     Example("have you seen my phone anywhere", "have you seen", Tag.VERB),
     Example("Did you notice the keys in the hall?", "Did you notice", Tag.VERB),
     Example("has anyone come across my glasses", "has anyone come across", Tag.VERB),
