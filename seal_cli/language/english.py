@@ -118,6 +118,7 @@ the phrase before it ("the kitchen table and the cereal")."""
 POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you", "would you", "will you", "might you",
                                      "would you mind",
                     "could you please", "i want you to", "i need you to", "i would like you to",
+                    "i want that you", "i need that you", "i would like that you",
                     "i'd like you to", "you should", "you must", "you need to", "you have to", "you will",
                     "you can", "go ahead and", "robot", "hey", "ok", "okay", "now", "first", "firstly",
                     "just", "quickly", "quick", "carefully", "to", "try to", "attempt to", "then", "and", "also",
@@ -158,14 +159,14 @@ POLITE_FORMULAE = frozenset([
 mind*"): the robot's time is asked for, not a condition or a task. Only a whole clause: "if you can"
 followed by more of its clause ("if you can reach the shelf, ...") is a condition."""
 SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "thanks", "thanx": "thanks",
-             "u": "you", "ya": "you", "ur": "your", "n": "and", "im": "i'm", "ive": "i've", "youre": "you're",
+             "u": "you", "r": "are", "ya": "you", "ur": "your", "n": "and", "im": "i'm", "ive": "i've", "youre": "you're",
              "theyre": "they're", "thats": "that's", "dont": "don't", "doesnt": "doesn't", "didnt": "didn't",
              "isnt": "isn't", "arent": "aren't", "wasnt": "wasn't", "havent": "haven't", "couldnt": "couldn't",
              "wouldnt": "wouldn't", "shouldnt": "shouldn't", "shes": "she's", "hes": "he's", "whats": "what's",
              "theres": "there's", "wont": "won't", "cant": "can't", "wheres": "where's", "hows": "how's",
              "ill": "i'll", "id": "i'd", "youll": "you'll", "weve": "we've", "theyve": "they've", "itll": "it'll"}
-"""Texting spellings of function words ("turn the lights off *pls*", "open it *n* wipe it", "tell her
-*im* late"): read as the word they spell."""
+"""Texting spellings of function words ("turn the lights off *pls*", "open it *n* wipe it", "where *r* my keys",
+"tell her *im* late"): read as the word they spell."""
 SEEN_QUESTIONS = frozenset(["see", "you see", "do you see", "you spot", "do you spot", "notice",
                             "you notice", "do you notice"])
 """A question of perception said before the command ("*see* the man by the window? greet him", "*do you see* the

@@ -613,8 +613,9 @@ class State:
             low = words[k].lower
             if low == "there" and words[k + 1].lower in BE_WORDS:
                 return k
-            if not low.isalpha() or low in END_MARKS or self.verb_at(k) is not None:
-                return 0
+            if not low.isalpha() or low in END_MARKS or self.verb_at(k) is not None and \
+                    words[k - 1].lower not in NP_OPENERS:
+                return 0                          # "in the *study* there are three mugs": a noun (words26)
         return 0
 
     def aside(self, i: int) -> Match | None:
@@ -693,14 +694,24 @@ class State:
                     (free and k == i + 1 and words[k].lower in BE_WORDS) and \
                     not (k > i + 1 and gerund_lemma(low)):   # "the man *waiting* at the door, greet him"
                 return None                              # a clause, not a phrase
-        if comma < 0 or not self.verb_after(comma + 1):
+        if comma < 0 or not (self.verb_after(comma + 1) or self._asked_of_it(comma + 1)):
             return None
+        if self._asked_of_it(comma + 1):
+            return self._aside(i, comma + 1 - i, (words[i].start, words[comma - 1].end))
         for k in range(comma + 1, len(words)):
             if words[k].lower in END_MARKS:
                 break
             if words[k].lower in (("them", "him", "her") if free else ("it", "them", "him", "her", "one")):
                 return self._aside(i, comma + 1 - i, (words[i].start, words[comma - 1].end))
         return None
+
+    def _asked_of_it(self, k: int) -> bool:
+        """Whether a yes/no question of being asked of "it"/"they" starts at ``k`` ("the lamp by the bed, *is it*
+        on?", "the windows upstairs - *are they* shut?"): the phrase said first is what the pronoun names
+        (words26), as before a command."""
+        words = self.words
+        return k + 2 < len(words) and words[k].lower in ("is", "are", "isn't", "aren't") and \
+            words[k + 1].lower in ("it", "they")
 
     def _seen_question(self, i: int) -> int:
         """Where a question of perception at ``i`` ends, its "?" included (0: none): "see" / "do you see" /

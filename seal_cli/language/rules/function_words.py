@@ -169,7 +169,7 @@ def _here(s: State, i: int) -> Match | None:
         return None
     low, nxt = s.words[i].lower, s.next_lower(i)
     if low == HOME:                       # "bring him *home*", "take grandma home": where the motion goes
-        ends = not nxt or nxt in END_MARKS or nxt in (",", ";", "please", "and", "then", "now")
+        ends = not nxt or nxt in END_MARKS or nxt in (",", ";", "please", "and", "then", "now", "yet", "already")
         return s.emit(i, 1, Tag.HERE) if ends and s.verb_index >= 0 and s.prev_tag() in (
             Tag.WORD, Tag.NAME, Tag.PRON) else None
     n = match_phrase(s.words, i, HERE_WORDS)

@@ -304,6 +304,8 @@ def _place_asked(s: State, j: int) -> bool:
         if low in _WHETHER_WHERE:
             return s.np_starts(k + 1)
         if low in _AT_HOME:                      # "is Ben home?": ending the sentence, the house is the place
+            while k + 1 < len(words) and words[k + 1].lower in _AFTER_STATE:
+                k += 1                            # "is mum home *yet*?"
             return k + 1 == len(words) or words[k + 1].lower in END_MARKS
     return False
 
@@ -351,6 +353,11 @@ def _person_state(s: State, j: int, k: int) -> bool:
         is_adjective(low) and s.verb_at(k) is None
 
 
+_AFTER_STATE = frozenset(["properly", "fully", "completely", "yet", "now", "already", "again"])
+"""Adverbs said after a state or a place of being, ending the question ("is the door shut *properly*?", "is mum
+home *yet*?"): how far or since when, no state or place of their own (words26)."""
+
+
 ASKED = "asked"
 """The info of the ``COND`` word that keeps the state a yes/no question asks ("open" of "is the fridge open?")."""
 
@@ -375,6 +382,8 @@ def _state_from(s: State, k: int, end: int) -> int | None:
     not"); else None."""
     words = s.words
     last = end - 1
+    while last > k and words[last].lower in _AFTER_STATE:
+        last -= 1                                 # "is the fridge door shut *properly*?", "is the oven on *yet*?"
     if last - 1 >= k and words[last - 1].lower == "or" and words[last].lower == "not":
         last -= 2                                 # "whether the door is locked *or not*": the state, either way
     if last < k or words[last].lower in STATE_ADVERBS:
