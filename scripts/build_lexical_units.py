@@ -69,6 +69,12 @@ and fourth senses are microwave.v.01, the first sense of "microwave", a unit of 
 tagged". A word tagged as a noun keeps its first sense only ("bed", "ice": their verb senses are untagged, but the
 noun is what the word mostly is).
 
+And (rule 13, words26) a verb no other rule reaches whose first sense is named for a tool (rule 11's tools) does what
+the tool's kind is named for, when WordNet names that kind by a gerund and a word for a tool ("mop" -> mop < swab <
+cleaning_implement) and the gerund is a frame's own first verb ("clean": Clean), marked ``opening``; rule 11 holds
+for it too. With the shipped library it gives nothing: mop, broom, squeegee, swab and swob reach Clean, but Clean
+washes a held thing at a sink (its instrument a washer), and none of those tools is a washer.
+
 A verb whose first sense fails rule 3 may still take a frame from it by **corroboration** (rule 5):
 the synset names two verbs of the library — a lexical unit itself, and a unit or a particle verb of
 one ("pick out" of "pick") whose *first* sense the synset is (what that verb mostly means) — and the
@@ -146,7 +152,7 @@ from seal_cli.frames.library import Library  # noqa: E402
 from seal_cli.frames.model import Frame  # noqa: E402
 from seal_cli.frames.reading import load_library  # noqa: E402
 from seal_cli.language import english  # noqa: E402
-from seal_cli.language.morphology import in_verb_tables  # noqa: E402
+from seal_cli.language.morphology import in_verb_tables, verb_lemma  # noqa: E402
 
 OUT = ROOT / "framelib" / "derived_units.yaml"
 WORDNET_OUT = ROOT / "framelib" / "wordnet_units.yaml"
@@ -313,7 +319,7 @@ class WordNet:
                 elif pos == "v" and symbol == "!":
                     self.opposite[offset].add(target)
         self.senses = self._index(folder / "index.verb")
-        self.artifacts = self._artifacts(folder / "data.noun")
+        self.artifacts, self.kinds = self._artifacts(folder / "data.noun")
         self.noun_senses = self._index(folder / "index.noun")
         self.counts: dict[tuple[str, int], int] = {}      # (verb, sense number) -> times tagged
         self.uses: dict[tuple[str, str], int] = defaultdict(int)   # (word, "v" or "n") -> times tagged
@@ -366,11 +372,12 @@ class WordNet:
         return {(words[a], words[b]) for a, b in pointers if a in words and b in words}
 
     @staticmethod
-    def _artifacts(path: Path) -> dict[str, list[str]]:
+    def _artifacts(path: Path) -> tuple[dict[str, list[str]], dict[str, list[str]]]:
         """noun synset -> its lemmas, for the nouns of implements (noun.artifact, a kind of implement.n.01: tools,
-        a knife, a mower, a saw; not a device such as a scanner, nor a garment)."""
+        a knife, a mower, a saw; not a device such as a scanner, nor a garment); and implement synset -> the lemmas
+        of the kinds it is, itself and its hypernyms (a mop: swab, cleaning_implement, implement)."""
         if not path.is_file():
-            return {}                                      # a folder without nouns: no verb is named for a tool
+            return {}, {}                                  # a folder without nouns: no verb is named for a tool
         lemmas: dict[str, list[str]] = {}
         up: dict[str, list[str]] = {}
         for line in path.read_text(encoding="latin-1").splitlines():
@@ -386,7 +393,11 @@ class WordNet:
         def implement(offset: str, depth: int = 0) -> bool:
             return offset == IMPLEMENT or depth < 20 and any(implement(o, depth + 1) for o in up.get(offset, ()))
 
-        return {offset: words for offset, words in lemmas.items() if implement(offset)}
+        def kinds(offset: str, depth: int = 0) -> list[str]:
+            return [*lemmas.get(offset, ()), *(k for o in up.get(offset, ()) if depth < 20 for k in kinds(o, depth + 1))]
+
+        found = {offset: words for offset, words in lemmas.items() if implement(offset)}
+        return found, {offset: kinds(offset) for offset in found}
 
     def tools(self, verb: str, offset: str) -> list[str]:
         """The tools a verb's sense is named for: the implements WordNet derives from the verb itself in that
@@ -396,6 +407,15 @@ class WordNet:
         place = lemmas.index(verb) if verb in lemmas else -1
         return [lemma for noun in self.derived.get((offset, place), ()) for lemma in self.artifacts.get(noun, ())
                 if self.noun_senses.get(lemma.replace("_", " "), (0, [""]))[1][:1] == [noun]]
+
+    def tool_kinds(self, verb: str, offset: str) -> list[tuple[str, str]]:
+        """(tool, kind) for each tool a verb's sense is named for (:meth:`tools`'s) and each kind of implement it is
+        ("mop" -> ("mop", "cleaning_implement"), ("mop", "implement"), ...)."""
+        lemmas = self.lemmas[offset]
+        place = lemmas.index(verb) if verb in lemmas else -1
+        return [(lemma, kind) for noun in self.derived.get((offset, place), ()) for lemma in self.artifacts.get(noun, ())
+                if self.noun_senses.get(lemma.replace("_", " "), (0, [""]))[1][:1] == [noun]
+                for kind in self.kinds.get(noun, ())]
 
     @staticmethod
     def _index(path: Path) -> dict[str, tuple[int, list[str]]]:
@@ -538,9 +558,43 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[Any, ...]]:
                 found.append((frame, verb, f"wordnet:{wordnet.name(verb, sense)} {how} "
                                            f"{wordnet.name(lemma, synset)} ({lemma})"))
             break
+    named = {unit for _, unit, *_ in found}
+    for verb, (_, offsets) in sorted(wordnet.senses.items()):
+        if verb in units or verb in named or verb in closed or not verb.isalpha() or not offsets or \
+                wordnet.domain[offsets[0]] == BODY:
+            continue
+        found.extend(unit for unit in tool_of_kind(wordnet, verb, offsets[0], heads)
+                     if done_with(unit[0], wordnet.tools(verb, offsets[0])))     # rule 11 still holds
     alone = {(frame, unit) for frame, unit, *_ in found}       # "grope" is a Find already: "grope for" adds nothing
     said_with = [u for u in prepositional(wordnet, library, closed) if (u[0], u[1].split()[0]) not in alone]
     return sorted(found + reflexive(wordnet, library, closed) + said_with)
+
+
+_KIND_OF_TOOL = re.compile(r"^([a-z]+ing)_(implement|device|equipment|tool|utensil)$")
+"""WordNet's names of a kind of tool by what it does: a gerund and a word for a tool ("cleaning_implement",
+"cutting_tool", "writing_implement", "cooking_utensil")."""
+
+
+def tool_of_kind(wordnet: WordNet, verb: str, sense: str, heads: dict[str, str]) -> list[tuple[Any, ...]]:
+    """Rule 13 (words26): a verb whose first sense is named for a tool (rule 11's: "mop" -> mop; "broom" -> broom;
+    "squeegee" -> squeegee) does what the tool's kind is named for, when WordNet names that kind by a gerund and a
+    word for a tool ("cleaning_implement") and the gerund is the verb of a frame's own first unit (F's head, its
+    first element a thing: "clean", Clean): mopping is cleaning with a mop. Only the frame's own verb counts:
+    "cutting_tool" names no Slice ("shave", "axe", "razor" stay out: Slice's own verb is "slice"), "writing" and
+    "cooking" no frame. Marked ``opening`` (read only opening an imperative, before its object): most such words
+    are mostly nouns ("broom", "mop"). Rule 11 still holds (the caller checks it): a frame with an instrument is
+    kept only when the tool is of the instrument's type, so with the library's Clean (washing a held thing at a
+    sink, its instrument a washer) mop, broom, squeegee and swab give no unit: mopping a floor needs a frame the
+    library lacks, and "mop the floor" stays an error naming the verb."""
+    out: list[tuple[Any, ...]] = []
+    for tool, kind in sorted(wordnet.tool_kinds(verb, sense), key=lambda said: said[0] != verb):   # its own first
+        match = _KIND_OF_TOOL.match(kind)
+        doing = verb_lemma(match.group(1)) if match else None
+        frame = next((f for f, head in heads.items() if head == doing), None)
+        if frame is not None and all(o[0] != frame for o in out):
+            out.append((frame, verb, f"wordnet:{wordnet.name(verb, sense)} named for {tool} ({kind}: {doing})",
+                        "", "", False, True))
+    return out
 
 
 def particle_units(wordnet: WordNet, own: Library) -> Iterator[tuple[str, list[str], str, list[str]]]:
