@@ -394,7 +394,8 @@ class WordNet:
             return offset == IMPLEMENT or depth < 20 and any(implement(o, depth + 1) for o in up.get(offset, ()))
 
         def kinds(offset: str, depth: int = 0) -> list[str]:
-            return [*lemmas.get(offset, ()), *(k for o in up.get(offset, ()) if depth < 20 for k in kinds(o, depth + 1))]
+            above = (k for o in up.get(offset, ()) if depth < 20 for k in kinds(o, depth + 1))
+            return [*lemmas.get(offset, ()), *above]
 
         found = {offset: words for offset, words in lemmas.items() if implement(offset)}
         return found, {offset: kinds(offset) for offset in found}
@@ -413,7 +414,8 @@ class WordNet:
         ("mop" -> ("mop", "cleaning_implement"), ("mop", "implement"), ...)."""
         lemmas = self.lemmas[offset]
         place = lemmas.index(verb) if verb in lemmas else -1
-        return [(lemma, kind) for noun in self.derived.get((offset, place), ()) for lemma in self.artifacts.get(noun, ())
+        nouns = self.derived.get((offset, place), ())
+        return [(lemma, kind) for noun in nouns for lemma in self.artifacts.get(noun, ())
                 if self.noun_senses.get(lemma.replace("_", " "), (0, [""]))[1][:1] == [noun]
                 for kind in self.kinds.get(noun, ())]
 
