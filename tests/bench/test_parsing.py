@@ -28,6 +28,13 @@ def test_a_swallowed_clause_is_counted_as_refused(library: Library) -> None:
     assert figures.commands_per_cpu_s > 0
 
 
+def test_a_state_asked_is_never_dropped_silently(library: Library) -> None:
+    figures = measure(["is the light in the office on?", "is the lamp on the desk off?", "turn the fan off"],
+                      library, warmup=0)
+    assert (figures.parsed, figures.silent_swallowed, figures.silent_dropped) == (3, 0, 0)
+    assert figures.to_json()["silent_dropped"] == 0
+
+
 def test_the_commands_of_a_corpus(tmp_path: Path) -> None:
     lines = tmp_path / "c.jsonl"
     lines.write_text(json.dumps({"text": "go home"}) + "\n\n" + json.dumps({"other": 1}) + "\n", encoding="utf-8")

@@ -1965,3 +1965,90 @@ def test_how_much_of_a_mass_noun_and_which_room_is_biggest_are_read_as_before(li
 
 def test_an_adverb_after_politeness_before_the_verb(library: Library) -> None:
     assert frames("Honey, would you possibly shut the door?", library) == [("Close", {"theme": "door"})]
+
+
+# -- words26 ---------------------------------------------------------------------------------------
+
+
+def asked(text: str, library: Library) -> list[tuple[str, str, str | None]]:
+    """Each frame with its theme's text and the state it asks."""
+    return [(f.frame, f.elements["theme"].text or "", f.asked) for f in parse_command(text, library).frames]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("is the light in the garage on?", [("LookAt", "the light in the garage", "on")]),
+    ("is the light on the stairs off?", [("LookAt", "the light on the stairs", "off")]),
+    ("are the lights in the hallway still on?", [("LookAt", "the lights in the hallway", "still on")]),
+    ("isn't the light in the den on?", [("LookAt", "the light in the den", "not on")]),
+    ("has anybody left the light in the attic on?", [("LookAt", "the light in the attic", "on")]),
+    ("is the lamp in the office switched on?", [("LookAt", "the lamp in the office", "switched on")]),
+    ("are the radiators turned off?", [("LookAt", "the radiators", "turned off")]),
+    ("is the fan on in the study?", [("LookAt", "the fan", "on in the study")]),
+    ("is the freezer door shut properly?", [("LookAt", "the freezer door", "shut properly")]),
+])
+def test_a_state_asked_after_a_place_is_kept(
+        text: str, want: list[tuple[str, str, str | None]], library: Library) -> None:
+    """A word of state after a determiner is the phrase's noun ("the *light*"), not the state; the state asked at
+    the end is kept, never dropped (it was a search, "on" dropped: "is the light in the office on?")."""
+    assert asked(text, library) == want
+
+
+def test_a_place_asked_stays_a_search(library: Library) -> None:
+    assert frames("is the lamp in the study?", library) == [("Find", {"theme": "lamp", "ground": "study"})]
+    assert frames("is dad home yet?", library) == [("Find", {"theme": "dad", "ground": "home"})]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("hand the parcel to Drew", [("Give", {"theme": "parcel", "recipient": "Drew"})]),
+    ("take the tea to Grace in the lounge", [("Bring", {"theme": "tea", "recipient": "Grace"})]),
+    ("bring the paper to Mark in the study", [("Bring", {"theme": "paper", "recipient": "Mark"})]),
+    ("Drew is in the garden, take him a hat", [("Bring", {"theme": "hat", "recipient": "Drew"})]),
+    ("take the remote to turn on the fan", [("Pick", {"theme": "remote"}), ("ToggleOn", {"theme": "fan"})]),
+])
+def test_a_name_that_is_a_word_after_to_or_before_a_finite_verb(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """After "to" an infinitive is lower case and a base form ("to *Drew*": a name, not "draw"); a past form only,
+    opening a sentence before a finite verb, is its subject ("Drew is ...")."""
+    assert frames(text, library) == want
+
+
+def test_a_past_form_before_a_finite_verb_is_no_command(library: Library) -> None:
+    parse = parse_command("rose wants to go to bed, take her to her room", library)
+    assert [(f.frame, f.elements["goal"].head) for f in parse.frames] == [("Guide", "room")]
+    assert parse.remarks == ("rose wants to go to bed",)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("the heater's off, isn't it?", [("LookAt", "the heater", "off")]),
+    ("you did switch off the kettle, didn't you?", [("LookAt", "the kettle", None)]),
+    ("you can see the red mug, can't you?", [("Find", "the red mug", None)]),
+    ("the fridge by the door, is it shut?", [("LookAt", "it", "shut")]),
+])
+def test_tags_and_a_phrase_said_before_is_it(
+        text: str, want: list[tuple[str, str, str | None]], library: Library) -> None:
+    assert asked(text, library) == want
+
+
+def test_the_phrase_said_before_is_it_is_what_it_names(library: Library) -> None:
+    assert frames("the fridge by the door, is it shut?", library) == [("LookAt", {"theme": "fridge"})]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("in the study there are two plates, bring them to the sink", [("Bring", {"theme": "plate", "goal": "sink"})]),
+    ("I need that you open the window", [("Open", {"theme": "window"})]),
+    ("i want that you bring me the salt", [("Bring", {"theme": "salt", "recipient": "me"})]),
+    ("where r my slippers", [("Find", {"theme": "slipper"})]),
+])
+def test_a_noun_after_its_determiner_a_learners_wish_and_r(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert frames(text, library) == want
+
+
+def test_i_need_that_thing_stays_a_request(library: Library) -> None:
+    assert frames("I need that towel", library) == [("Bring", {"theme": "towel", "recipient": "me"})]
+
+
+@pytest.mark.parametrize("verb", ["mop", "sweep", "chuck", "snag", "hop", "stash"])
+def test_a_verb_no_frame_does_stays_an_error_naming_it(verb: str, library: Library) -> None:
+    with pytest.raises(CommandError, match=f"unknown verb '{verb}'"):
+        parse_command(f"{verb} the rug", library)
