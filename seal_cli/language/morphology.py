@@ -161,6 +161,20 @@ def is_plural(word: str) -> bool:
     return noun_lemma(lower) != lower
 
 
+@lru_cache(maxsize=4096)
+def plural_only(word: str) -> bool:
+    """Whether a noun has a plural form only ("scissors", "jeans", "pliers", "pyjamas"): lemminflect's tables give
+    the word itself as both its singular and its plural, and it ends in "s" as a plural does (not "glass", whose
+    plural is "glasses"; nor "sheep", whose form ends in no "s"). It is taken up by "them" as a plural is ("the
+    scissors are on the table, bring them to me", words26)."""
+    import lemminflect
+
+    lower = word.lower()
+    forms = lemminflect.getAllInflections(lower, upos="NOUN")
+    return lower.endswith("s") and not lower.endswith("ss") and forms.get("NN") == (lower,) and \
+        forms.get("NNS") == (lower,)
+
+
 @lru_cache(maxsize=65536)
 def verb_lemma(word: str) -> str | None:
     """The verb a word is a form of (``"heated"`` → ``"heat"``), or None."""

@@ -22,7 +22,7 @@ from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
 from seal_cli.language.english import BESIDE, LOCATED, NP_OPENERS, PRONOUNS, is_room_word
 from seal_cli.language.lexicon import Mention, Word, mentions, noun_lemma
-from seal_cli.language.morphology import is_plural
+from seal_cli.language.morphology import is_plural, plural_only
 from seal_cli.language.syntax import NP
 from seal_cli.language.values import Evoked, Phrase
 
@@ -145,7 +145,7 @@ class Reference:
         pronoun = np.pronoun or ""
         if pronoun in ("them", "they"):              # "*The plants on the balcony*, bring them inside": a plural
             plural = [m for m in self._mentions if m.end <= np.start and m.determined and not m.oblique and
-                      not m.name and is_plural(m.head.lower())]
+                      not m.name and (is_plural(m.head.lower()) or plural_only(m.head.lower()))]
             if plural:
                 return plural[-1]
             type_ = frame.element(role).type

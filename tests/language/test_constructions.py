@@ -2052,3 +2052,8 @@ def test_i_need_that_thing_stays_a_request(library: Library) -> None:
 def test_a_verb_no_frame_does_stays_an_error_naming_it(verb: str, library: Library) -> None:
     with pytest.raises(CommandError, match=f"unknown verb '{verb}'"):
         parse_command(f"{verb} the rug", library)
+
+
+def test_them_takes_up_a_noun_with_a_plural_only(library: Library) -> None:
+    assert frames("the tweezers are in the drawer, bring them to me", library) == [
+        ("Bring", {"theme": "tweezers", "recipient": "me", "source": "drawer"})]

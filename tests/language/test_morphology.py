@@ -15,6 +15,7 @@ from seal_cli.language.morphology import (
     is_plural,
     noun_lemma,
     participles,
+    plural_only,
     verb_lemma,
 )
 
@@ -65,3 +66,11 @@ def test_a_corrupt_or_unwritable_table_cache_falls_back_to_the_sorted_lines(tmp_
     monkeypatch.setenv("SEAL_CACHE_DIR", str(blocked))
     table = _Table("lemma_lu.csv.gz")
     assert table.entries("knives") == [["noun", "knife"]] and table._mapped is None
+
+
+@pytest.mark.parametrize(("word", "only"), [
+    ("scissors", True), ("jeans", True), ("pliers", True), ("tweezers", True),
+    ("glass", False), ("glasses", False), ("bus", False), ("cups", False), ("sheep", False), ("knife", False),
+])
+def test_a_noun_with_a_plural_only(word: str, only: bool) -> None:
+    assert plural_only(word) is only
