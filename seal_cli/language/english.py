@@ -335,10 +335,13 @@ REQUESTS = frozenset(["i'd like", "i would like", "i should like", "i'd love", "
                       "i'm going to need", "we're going to need", "i could use", "i could really use", "we could use",
                       "we could really use", "i could do with", "i could really do with", "we could do with",
                       "i could just do with", "i'd really like", "i would really like", "i'd quite like",
-                      "i'd really love", "i really need", "i just need"])
+                      "i'd really love", "i really need", "i just need",
+                      *(f"{modal} i {bother} you for" for modal in ("could", "can", "may", "might")
+                        for bother in ("trouble", "bother"))])
 """A request for a thing said as the speaker's wish ("*I'd like* the red mug", "*Can I have* the big plate",
 "*I need* a pen", "*I could do with* a towel"): it means "bring me ..." (``REQUEST_MEANS``, with the speaker as
-recipient)."""
+recipient). Asked as a trouble to the hearer, a thing after "for" ("*might I trouble you for* a glass of water",
+words26), as politeness asks a deed after "to" ("could I trouble you to ...")."""
 REQUEST_MEANS = "bring"
 WISHED_PLACED = frozenset(["i want", "i'd like", "i would like", "we want", "we'd like", "we would like"])
 WISHED_PLACES = frozenset(["on", "onto", "in", "into", "inside", "under"])

@@ -512,7 +512,8 @@ def mentions(text: str, start: int, end: int) -> list[Mention]:
         someone = low in _SOMEONE
         subject = k == 0 or k == opened           # "*ben* is in ...", "when *sam* gets home", "as soon as *dad* ..."
         named = capitalised(words[k]) or subject and lower_case_name(words, k)
-        bare = subject and not named and _bare_subject(words, k)      # "*grandpa* is in the garden" (words25)
+        bare = subject and not named and (_bare_subject(words, k) or k == 0 and _bare_phrase(words))
+        # "*grandpa* is in the garden" (words25); "*door*", a remark of a bare phrase alone (words26)
         if not (determined or existential or someone or bare or named and low not in CLOSED and
                 low not in NOMINATIVE and low not in _EXISTENTIAL):
             k += 1
@@ -555,6 +556,12 @@ def _bare_subject(words: Sequence[Word], k: int) -> bool:
         return False
     nxt = words[k + 1].lower
     return nxt in FINITE or nxt == "'s" or nxt.isalpha() and nxt not in CLOSED and inflected(nxt)
+
+
+def _bare_phrase(words: Sequence[Word]) -> bool:
+    """Whether the words are a bare phrase alone, open-class words with no verb of being ("door", "kitchen
+    table"): a thing said telegraphically before a command that takes it up ("door - open it", words26)."""
+    return bool(words) and all(w.lower.isalpha() and w.lower not in CLOSED and w.lower not in FINITE for w in words)
 
 
 def _counted(words: Sequence[Word], k: int) -> bool:

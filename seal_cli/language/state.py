@@ -73,6 +73,7 @@ from seal_cli.language.morphology import (
     is_adverb,
     is_plural,
     noun_lemma,
+    parts_of_speech,
     verb_lemma,
 )
 from seal_cli.language.rule import Match
@@ -640,9 +641,10 @@ class State:
         if self._place_said_first(i):
             return None                                  # "from the fridge, can you grab me a soda": where, said first
         stated = self.statement_at(i)
-        if stated and stated < len(words) and words[stated].lower in (",", ";") and self.verb_after(stated + 1):
-            return self._aside(i, stated + 1 - i, (words[i].start, words[stated - 1].end))
-            # "Bogdan has a question; answer it for him"
+        if stated and stated < len(words) and words[stated].lower in (",", ";") and self._command_follows(stated + 1):
+            but = stated + 1 < len(words) and words[stated + 1].lower == "but"
+            return self._aside(i, stated + 1 + but - i, (words[i].start, words[stated - 1].end))
+            # "Bogdan has a question; answer it for him"; "she needs her pills, they're upstairs, fetch them"
         seen = self._seen_question(i)
         if seen:
             return self._aside(i, seen - i, (words[i].start, words[seen - 1].end))
@@ -679,8 +681,10 @@ class State:
         a remark, which the pronoun names (:meth:`~seal_cli.language.reference.Reference.mentioned`)."""
         words = self.words
         free = words[i].lower in FREE_RELATIVES               # "*whoever's at the door*, greet them"
-        if self.out and not (self.out[-1].tag == "SEP" and self.out[-1].lower in END_MARKS) or \
-                words[i].lower not in NP_OPENERS and not free:
+        bare = self.bare_thing(i)                             # "*door* - open it" (words26)
+        if self.out and not (self.out[-1].tag == "SEP" and self.out[-1].lower in END_MARKS or
+                             all(t.tag == "POLITE" for t in self.out)) or \
+                words[i].lower not in NP_OPENERS and not free and not bare:   # "ugh, *my jeans*, where are they"
             return None
         comma = -1
         for k in range(i + 1, min(len(words), i + _DISLOCATED_WORDS)):
@@ -701,17 +705,49 @@ class State:
         for k in range(comma + 1, len(words)):
             if words[k].lower in END_MARKS:
                 break
-            if words[k].lower in (("them", "him", "her") if free else ("it", "them", "him", "her", "one")):
+            if words[k].lower in (("them", "him", "her") if free else ("it", "them") if bare else
+                                  ("it", "them", "him", "her", "one")):
                 return self._aside(i, comma + 1 - i, (words[i].start, words[comma - 1].end))
         return None
 
-    def _asked_of_it(self, k: int) -> bool:
-        """Whether a yes/no question of being asked of "it"/"they" starts at ``k`` ("the lamp by the bed, *is it*
-        on?", "the windows upstairs - *are they* shut?"): the phrase said first is what the pronoun names
-        (words26), as before a command."""
+    def bare_thing(self, i: int) -> bool:
+        """Whether the word at ``i`` opens a phrase of a thing said bare, telegraphically, before a comma or a dash
+        ("*door* - open it", "*lunchboxes* - bring them"): a lower-case noun (lemminflect lists it as one), no
+        verb of the library there, no closed-class word, no person of the taxonomy (a person said first and a
+        comma is the one addressed: "mum, bring her the cup"); only "it"/"them" take it up."""
         words = self.words
-        return k + 2 < len(words) and words[k].lower in ("is", "are", "isn't", "aren't") and \
-            words[k + 1].lower in ("it", "they")
+        low = words[i].lower
+        return low.isalpha() and not capitalised(words[i]) and low not in CLOSED and self.verb_at(i) is None and \
+            "noun" in parts_of_speech(low) and (noun_lemma(low) or low) not in self.lexicon.people and \
+            low not in self.lexicon.people
+
+    def _command_follows(self, k: int, said: int = 0) -> bool:
+        """Whether a command follows a statement at ``k``: a verb (after politeness), a request said without one
+        ("could I have ...", "where is ..."), maybe after "but" ("I'm sorry to trouble you, *but* could I have a
+        towel?"), or another statement and then one ("she needs her tablets, *they're on the counter*, fetch
+        them": words26; up to three statements)."""
+        words = self.words
+        if k < len(words) and words[k].lower == "but":
+            k += 1
+        if k >= len(words):
+            return False
+        if self.verb_after(k) or self.asks_at(k):
+            return True
+        stated = self.statement_at(k) if said < 3 else 0
+        return bool(stated) and stated < len(words) and words[stated].lower in (",", ";") and \
+            self._command_follows(stated + 1, said + 1)
+
+    def _asked_of_it(self, k: int) -> bool:
+        """Whether a question of being asked of "it"/"they" starts at ``k`` ("the lamp by the bed, *is it* on?",
+        "my jeans, *where are they*?", "the lamp, *it is* on or off?"): the phrase said first is what the pronoun
+        names (words26), as before a command."""
+        words = self.words
+        be, it = ("is", "are", "isn't", "aren't"), ("it", "they")
+        if k + 2 < len(words) and words[k].lower == "where":
+            k += 1                                # "my jeans, *where are they*?"
+        elif k + 2 < len(words) and words[k].lower in it and words[k + 1].lower in be:
+            return any(w.lower == "?" for w in words[k + 2:])    # "the lamp, *it is* on or off?"
+        return k + 1 < len(words) and words[k].lower in be and words[k + 1].lower in it
 
     def _seen_question(self, i: int) -> int:
         """Where a question of perception at ``i`` ends, its "?" included (0: none): "see" / "do you see" /

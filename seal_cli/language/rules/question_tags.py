@@ -61,6 +61,18 @@ def tag_at(s: State, i: int) -> int | None:
     return c
 
 
+_VOICED_SUBJECTS = frozenset(["it", "they"])
+"""Pronouns a state said as a question may be said of ("the lamp, *it* is on or off?": the phrase said first)."""
+
+
+def asked_by_voice(s: State, i: int) -> int | None:
+    """The index of the "?" that ends the sentence word ``i`` is in, when the sentence is a statement asked as a
+    question, by its mark alone ("the back door is locked?", "the lamp, it is on or off?": words26), else None."""
+    words = s.words
+    end = next((k for k in range(i, len(words)) if words[k].lower in END_MARKS), len(words))
+    return end if end < len(words) and words[end].lower == "?" else None
+
+
 def _question_tag(s: State, i: int) -> Match | None:
     words = s.words
     if not s.out or i + 2 >= len(words) or words[i + 1].lower not in TAG_AUXILIARIES or \
@@ -74,14 +86,17 @@ def _state_tagged(s: State, i: int) -> Match | None:
     yes/no question "is the back door locked?" — check the thing (``STATE_MEANS``, unsaid before the phrase); the
     state is kept by ``STATE_ASKED`` at the "is", as in the question."""
     words = s.words
-    if STATE_MEANS not in s.lexicon.units or not s.np_starts(i) or words[i].lower in TAG_SUBJECTS or \
-            words[i].lower in BE_WORDS:
+    if STATE_MEANS not in s.lexicon.units or not s.np_starts(i) or words[i].lower in BE_WORDS:
         return None
     c = tag_at(s, i)
     if c is None:
+        c = asked_by_voice(s, i)
+        if c is None or words[i].lower in TAG_SUBJECTS and words[i].lower not in _VOICED_SUBJECTS:
+            return None
+    elif words[i].lower in TAG_SUBJECTS:
         return None
     be = next((k for k in range(i + 1, c) if words[k].lower in _STATE_BE), None)
-    if be is None or be + 1 >= c or any(s.verb_at(k) is not None and not s.np_starts(k - 1) for k in range(i + 1, be)):
+    if be is None or be + 1 >= c or any(w.lower == "," for w in words[i + 1:be]) or any(s.verb_at(k) is not None and not s.np_starts(k - 1) for k in range(i + 1, be)):
         return None
     if not state_said(s, be + 1, c):
         return None
@@ -176,7 +191,9 @@ STATE_TAGGED = Rule("a state said, then its tag", _state_tagged, (
     Example("the back door is locked, isn't it?", "locked", Tag.COND),
     Example("the lights in the hall are still on, aren't they?", "still on", Tag.COND),
     Example("the heater's off, isn't it?", "off", Tag.COND),
-), None, "'X is locked, isn't it?': the question 'is X locked?' (LookAt, the state asked kept)")
+    Example("the garage door is shut?", "shut", Tag.COND),
+    Example("the radio, it is on or off?", "on or off", Tag.COND),
+), None, "'X is locked, isn't it?', 'X is locked?': the question 'is X locked?' (LookAt, the state asked kept)")
 DONE_ASKED = Rule("whether the robot did it", _done_asked, (
     Example("did you close the garage door?", "did you close", Tag.VERB),
     Example("you've turned off the oven, haven't you?", "you've turned off", Tag.VERB),
