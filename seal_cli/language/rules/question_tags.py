@@ -96,7 +96,8 @@ def _state_tagged(s: State, i: int) -> Match | None:
     elif words[i].lower in TAG_SUBJECTS:
         return None
     be = next((k for k in range(i + 1, c) if words[k].lower in _STATE_BE), None)
-    if be is None or be + 1 >= c or any(w.lower == "," for w in words[i + 1:be]) or any(s.verb_at(k) is not None and not s.np_starts(k - 1) for k in range(i + 1, be)):
+    if be is None or be + 1 >= c or any(w.lower == "," for w in words[i + 1:be]) or \
+            any(s.verb_at(k) is not None and not s.np_starts(k - 1) for k in range(i + 1, be)):
         return None
     if not state_said(s, be + 1, c):
         return None
