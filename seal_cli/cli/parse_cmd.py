@@ -141,8 +141,9 @@ def bench_parse(
     as_json: bool = JsonOption,
 ) -> None:
     """Score `seal parse` on parsing corpora with the shared scorers, and print their figures; then
-    parse each corpus in process: commands per CPU-second, and clauses swallowed into an element
-    (refused by the parser, or left silently: the target is zero)."""
+    parse each corpus in process: commands per CPU-second, clauses swallowed into an element
+    (refused by the parser, or left silently) and states a question asks dropped silently (the
+    target of both is zero)."""
     from seal_cli.bench.parsing import commands_of, measure
     from seal_cli.fileio import read_json_lines
     from seal_cli.frames.reading import load_library
