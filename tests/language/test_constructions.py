@@ -2057,3 +2057,24 @@ def test_a_verb_no_frame_does_stays_an_error_naming_it(verb: str, library: Libra
 def test_them_takes_up_a_noun_with_a_plural_only(library: Library) -> None:
     assert frames("the tweezers are in the drawer, bring them to me", library) == [
         ("Bring", {"theme": "tweezers", "recipient": "me", "source": "drawer"})]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("the garage door is shut?", [("LookAt", "the garage door", "shut")]),
+    ("my slippers, where are they?", [("Find", "they", None)]),
+    ("the radio, it is on or off?", [("LookAt", "it", "on or off")]),
+    ("can you check whether the oven is off?", [("LookAt", "the oven", "off")]),     # as before: no phrase first
+    ("could you make sure the gate is closed?", [("Close", "the gate", None)]),
+])
+def test_a_state_said_as_a_question_by_its_mark(
+        text: str, want: list[tuple[str, str, str | None]], library: Library) -> None:
+    assert asked(text, library) == want
+
+
+def test_statements_before_the_command_and_a_bare_thing_said_first(library: Library) -> None:
+    assert frames("he needs his pills, they're in the bathroom, fetch them for him", library) == [
+        ("Bring", {"theme": "pill", "recipient": "him"})]
+    assert frames("I'm so sorry to bother you, but could I have a blanket?", library) == [
+        ("Bring", {"theme": "blanket", "recipient": "me"})]
+    assert frames("might I trouble you for the pepper", library) == [("Bring", {"theme": "pepper", "recipient": "me"})]
+    assert frames("window - shut it", library) == [("Close", {"theme": "window"})]

@@ -21,6 +21,7 @@ from seal_cli.language.english import (
     BE_WORDS,
     END_MARKS,
     NEGATED_AUXILIARIES,
+    NP_OPENERS,
     SEEN_ASKED,
     STATE_MEANS,
     WHERE_MEANS,
@@ -91,8 +92,8 @@ def _state_tagged(s: State, i: int) -> Match | None:
     c = tag_at(s, i)
     if c is None:
         c = asked_by_voice(s, i)
-        if c is None or words[i].lower in TAG_SUBJECTS and words[i].lower not in _VOICED_SUBJECTS:
-            return None
+        if c is None or words[i].lower not in NP_OPENERS and words[i].lower not in _VOICED_SUBJECTS:
+            return None                           # "can you *check* whether ...?", "make sure ...?": no phrase
     elif words[i].lower in TAG_SUBJECTS:
         return None
     be = next((k for k in range(i + 1, c) if words[k].lower in _STATE_BE), None)
