@@ -225,12 +225,14 @@ def inflected(low: str) -> bool:
 
 
 def _infinitive(word: Word) -> bool:
-    """Whether a word after "to" can be an infinitive: written lower case (a capital there starts a name: "give the
-    letter to *Drew*", "take the tea to *Will*") and a verb's base form (a past form is none: "to *drew*", words26;
-    "drew" was read as "draw", a second frame, the letter's recipient lost)."""
+    """Whether a word after "to" can start a clause: written lower case (a capital there starts a name: "give the
+    letter to *Drew*", "take the tea to *Will*") and a verb's base form or -ing form ("prior to *turning* on a
+    lamp"), never a past form only ("to *drew*", words26: "drew" was read as "draw", a second frame, the letter's
+    recipient lost)."""
     low = word.lower.split(" ", 1)[0]
     lemma = verb_lemma(low)
-    return not capitalised(word) and (lemma is None or lemma == low or in_verb_tables(low))
+    return not capitalised(word) and (lemma is None or lemma == low or in_verb_tables(low) or
+                                      gerund_lemma(low) is not None)    # "prior to *turning* on a lamp"
 
 
 def lower_case_name(words: Sequence[Word], k: int) -> bool:

@@ -2078,3 +2078,8 @@ def test_statements_before_the_command_and_a_bare_thing_said_first(library: Libr
         ("Bring", {"theme": "blanket", "recipient": "me"})]
     assert frames("might I trouble you for the pepper", library) == [("Bring", {"theme": "pepper", "recipient": "me"})]
     assert frames("window - shut it", library) == [("Close", {"theme": "window"})]
+
+
+def test_to_before_an_ing_form_still_starts_a_clause(library: Library) -> None:
+    assert frames("pick up the mug prior to turning on the lamp", library) == [
+        ("Pick", {"theme": "mug"}), ("ToggleOn", {"theme": "lamp"})]
