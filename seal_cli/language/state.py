@@ -224,14 +224,15 @@ def inflected(low: str) -> bool:
     return bool(lemma) and lemma != low and not low.endswith("ing")
 
 
-def _infinitive(word: Word) -> bool:
+def _infinitive(word: Word, n: int = 1) -> bool:
     """Whether a word after "to" can start a clause: written lower case (a capital there starts a name: "give the
     letter to *Drew*", "take the tea to *Will*") and a verb's base form or -ing form ("prior to *turning* on a
-    lamp"), never a past form only ("to *drew*", words26: "drew" was read as "draw", a second frame, the letter's
-    recipient lost)."""
+    lamp"), never a past form only said alone ("to *drew*", words26: "drew" was read as "draw", a second frame, the
+    letter's recipient lost); a past form with its unit's particle stays a slip of the base form ("to *rinsed off*
+    in the sink", ``n`` words of the unit)."""
     low = word.lower.split(" ", 1)[0]
     lemma = verb_lemma(low)
-    return not capitalised(word) and (lemma is None or lemma == low or in_verb_tables(low) or
+    return not capitalised(word) and (n > 1 or lemma is None or lemma == low or in_verb_tables(low) or
                                       gerund_lemma(low) is not None)    # "prior to *turning* on a lamp"
 
 
@@ -862,7 +863,7 @@ class State:
         if asker and i + 1 + asker < len(words) and words[i + 1 + asker].lower in ("if", "whether"):
             return True                    # "go to the bedroom to see if the lamp is on": asked there
         found = self.verb_at(i + 1)
-        if not found or not _infinitive(words[i + 1]):
+        if not found or not _infinitive(words[i + 1], found[1]):
             return False                   # "give the letter to *Drew*": a past form or a capital, no infinitive
         after = i + 1 + found[1]
         thing = words[i + 1].lower in self.lexicon.things or self.out[-1].tag not in ("WORD", "NAME", "PRON",
