@@ -786,8 +786,8 @@ def hostile20_cases() -> Iterator[Case]:
     unbuffered = ("PYTHONUNBUFFERED", "1")
     buffered = ("PYTHONUNBUFFERED", "<unset>")
     for name, setting in (("PYTHONUNBUFFERED=1", unbuffered), ("buffered", buffered)):
-        for argv in (("frames", "--json"), ("frames",), ("map", "apartment", "--json")):
-            yield Case(f"A {' '.join(argv)} into a file past ulimit -f of 2 KiB ({name})", argv,
+        for printing in (("frames", "--json"), ("frames",), ("map", "apartment", "--json")):
+            yield Case(f"A {' '.join(printing)} into a file past ulimit -f of 2 KiB ({name})", printing,
                        (("stdout.out", b""),), codes=(1,), stream="file-stdout", file_blocks=4, env=(setting,),
                        says=r"error: cannot write the output: File too large")
     lines = "".join(f"stir the cup number {i}\n" for i in range(2_500)) + "put the apple on the table\n"
@@ -796,17 +796,28 @@ def hostile20_cases() -> Iterator[Case]:
             yield Case(f"A parse --file {' '.join(shape) or 'as text'} into a non-blocking pipe ({name})",
                        ("parse", "--file", "c.txt", *shape), (("c.txt", lines.encode()),), codes=(0,),
                        keep=("c.txt",), stream="nonblocking-stdout", env=(setting,),
-                       says=r'"text": "put the apple on the table"' if shape else r"\n2501: Place\(theme=apple, goal=table\)\n$")
-    for what, argv, files, option in (
+                       says=r'"text": "put the apple on the table"' if shape
+                       else r"\n2501: Place\(theme=apple, goal=table\)\n$")
+    writing: tuple[str, ...]
+    for what, writing, files, option in (
             ("map --png", ("map", "apartment", "--png", "o.png"), (), r"--png o\.png"),
             ("localize --png", ("localize", "--map", "apartment", "--task", "stir the cup", "--steps", "1",
                                 "--particles", "10", "--png", "o.png"), (), r"--png o\.png"),
             ("plan --pddl", ("plan", "stir the cup", "--pddl", "d"), (("d", "dir"),),
              r"--pddl d/(domain|problem)\.pddl")):
-        yield Case(f"A {what} past ulimit -f of 4 KiB", argv, files, codes=(1,), file_blocks=8,
-                   absent=("o.png", "d/domain.pddl", "d/problem.pddl"), says=rf"error: cannot write {option}: File too "
-                                                                            r"large")
-    yield Case("A plan --max-nodes 1 stopped before a frame whose needs are met", ("plan", "stir the cup", "--max-nodes",
-                                                                                   "1"), codes=(1,),
+        yield Case(f"A {what} past ulimit -f of 4 KiB", writing, files, codes=(1,), file_blocks=8,
+                   absent=("o.png", "d/domain.pddl", "d/problem.pddl"),
+                   says=rf"error: cannot write {option}: File too large")
+    yield Case("A plan --max-nodes 1 stopped before a frame whose needs are met",
+               ("plan", "stir the cup", "--max-nodes", "1"), codes=(1,),
                says=r"within 1 search node: Stir\(theme=cup, instrument=spoon\) \(commanded frame 1\) was next, its "
                     r"preconditions met")
+    unread: tuple[str, ...]
+    for unread, said in ((("--suite", "map", "--type", "x", "--layouts", "1"), r"--suite map does not read --type"),
+                       (("--suite", "map", "--limit", "1"), r"--suite map does not read --limit"),
+                       (("--map", "townhouse", "--data", "d"), r"--suite alfred2d does not read --map"),
+                       (("--suite", "context", "--split", "train", "--data", "d"),
+                        r"--suite context does not read --split")):
+        yield Case(f"A bench tasks {' '.join(unread)}: an option its suite does not read",
+                   ("bench", "tasks", *unread, "--jobs", "1"),
+                   (("d", "dir"),), codes=(1,), says=said, timeout=30)

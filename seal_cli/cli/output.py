@@ -314,7 +314,7 @@ def whole_writes() -> None:
             stream.flush()
             whole = _WholeWrites(raw.fileno(), "w", closefd=False)
             unbuffered = buffer is raw
-            replaced = io.TextIOWrapper(whole if unbuffered else io.BufferedWriter(whole),  # type: ignore[arg-type]
+            replaced = io.TextIOWrapper(whole if unbuffered else io.BufferedWriter(whole),
                                         encoding=stream.encoding, errors=stream.errors,
                                         line_buffering=stream.line_buffering, write_through=unbuffered)
             setattr(sys, name, replaced)

@@ -409,7 +409,8 @@ class _Search:
     def _gave_up(self, state: State, k: int) -> SealError:
         goal = self.commanded[k]
         unmet = ", ".join(map(str, state.unmet(goal)))
-        # its needs all met, the search stopped just before it: "still needs nothing" read as a contradiction (hostile20)
+        # its needs all met, the search stopped just before it: "still needs nothing" read as a contradiction
+        # (hostile20)
         where = f"still needs {unmet}" if unmet else "was next, its preconditions met, when the search stopped"
         nodes = f"{self.max_nodes:,} search node{'' if self.max_nodes == 1 else 's'}"
         return SealError(f"no plan found within {nodes}: {goal} (commanded frame {k + 1}) "

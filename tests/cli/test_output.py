@@ -268,8 +268,9 @@ def test_stdout_past_ulimit_f_fails_the_command(tmp_path: Path, unbuffered: str 
     if unbuffered:
         env["PYTHONUNBUFFERED"] = unbuffered
     with open(tmp_path / "out", "wb") as out:
-        done = subprocess.run(["/bin/sh", "-c", 'ulimit -f 4; exec "$@"', "sh", sys.executable, "-m", "seal_cli", *argv],
-                              stdout=out, stderr=subprocess.PIPE, text=True, env=env, check=False)
+        done = subprocess.run(["/bin/sh", "-c", 'ulimit -f 4; exec "$@"', "sh",  # POSIX sh: 512-byte blocks
+                               sys.executable, "-m", "seal_cli", *argv], stdout=out, stderr=subprocess.PIPE,
+                              text=True, env=env, check=False)
     assert (done.returncode, done.stderr) == (1, "error: cannot write the output: File too large\n")
     assert (tmp_path / "out").stat().st_size == 2048
 

@@ -254,8 +254,9 @@ def test_the_search_bound_is_a_clean_refusal(library: Library) -> None:
 def test_a_search_stopped_before_a_frame_whose_needs_are_met_says_so(library: Library) -> None:
     # it said "Stir(...) still needs nothing" (hostile20): the frame was next, the bound came first
     command = [bind(library, "Stir", theme="cup", instrument="spoon")]
-    with pytest.raises(SealError, match=r"within 1 search node: Stir\(theme=cup, instrument=spoon\) \(commanded frame 1\) "
-                                        r"was next, its preconditions met, when the search stopped\n"):
+    with pytest.raises(SealError, match=r"within 1 search node: Stir\(theme=cup, instrument=spoon\) "
+                                        r"\(commanded frame 1\) was next, its preconditions met, "
+                                        r"when the search stopped\n"):
         plan(command, library, start(library), max_nodes=1)
     with pytest.raises(SealError, match=r"within 2 search nodes: Place\(theme=apple, goal=fridge\) .* still needs "):
         plan([bind(library, "Slice", theme="apple"), bind(library, "Place", theme="apple", goal="fridge")], library,
