@@ -821,3 +821,7 @@ def hostile20_cases() -> Iterator[Case]:
         yield Case(f"A bench tasks {' '.join(unread)}: an option its suite does not read",
                    ("bench", "tasks", *unread, "--jobs", "1"),
                    (("d", "dir"),), codes=(1,), says=said, timeout=30)
+    for option, value in (("--frame", "odom"), ("--base-frame", "base_link")):
+        yield Case(f"A localize {option} {value} without --bag", ("localize", "--map", "apartment", "--task",
+                                                                  "stir the cup", "--steps", "0", option, value),
+                   codes=(1,), says=rf"{option} reads a bag: give --bag too")

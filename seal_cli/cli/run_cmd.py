@@ -27,6 +27,7 @@ from seal_cli.cli import (
     one_held,
     out,
 )
+from seal_cli.cli.framework import given
 from seal_cli.cli.output import plain, styled
 from seal_cli.sim.policies import DEFAULT_POLICIES, POLICIES
 from seal_cli.sim.unsearched import SEARCH_END
@@ -264,7 +265,7 @@ def tasks(
     names = choices("--policies", [policies], tuple(POLICIES), "policy")
     if backend not in ("process", "ray") or (backend == "ray" and suite != "alfred2d"):
         raise SealError(f"--backend {backend!r}: process, or ray with --suite alfred2d")
-    _unread_options(suite, _given)
+    _unread_options(suite, given)
     if suite != "context" and (house_set != "suite" or starts is not None or fov is not None):
         raise SealError("--houses, --starts and --fov go with --suite context")
     if fov is not None and not 0 < fov <= 360:      # NaN too
@@ -341,16 +342,6 @@ def tasks(
     else:
         _table(report, names)
         err.print(f"[dim]peak memory: {report['peak_rss_mb']:,.0f} MB (the largest process running episodes)[/dim]")
-
-
-def _given(parameter: str) -> bool:
-    """Whether the running command's ``parameter`` was given (on the command line), not left at its default."""
-    from typer._click.core import ParameterSource
-    from typer._click.globals import get_current_context  # typer's own copy of click, whose context runs the command
-
-    context = get_current_context(silent=True)
-    source = context.get_parameter_source(parameter) if context is not None else None
-    return source not in (None, ParameterSource.DEFAULT)
 
 
 def _table(report: dict[str, Any], names: list[str]) -> None:
