@@ -825,3 +825,7 @@ def hostile20_cases() -> Iterator[Case]:
         yield Case(f"A localize {option} {value} without --bag", ("localize", "--map", "apartment", "--task",
                                                                   "stir the cup", "--steps", "0", option, value),
                    codes=(1,), says=rf"{option} reads a bag: give --bag too")
+    yield Case("A bench parse --constants with a JSON Lines corpus only",
+               ("bench", "parse", "--corpus", "c.jsonl", "--constants", "k.json"),
+               (("c.jsonl", b'{"text": "stir the cup"}\n'), ("k.json", b'{"OBJECTS": ["cup"]}\n')), codes=(1,),
+               keep=("c.jsonl", "k.json"), says=r"--constants k\.json: the ALFRED constants are read for ALFRED goals")
