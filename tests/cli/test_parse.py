@@ -162,8 +162,8 @@ def test_bench_parse_refuses_constants_no_corpus_reads(tmp_path: Path) -> None:
     corpus = tmp_path / "c.jsonl"
     corpus.write_text('{"text": "stir the cup"}\n')
     result = runner.invoke(app, ["bench", "parse", "--corpus", str(corpus), "--constants", "k.json"])
-    said = "error: --constants k.json: the ALFRED constants are read for ALFRED goals (a .tsv --corpus), and no --corpus "
-    assert (result.exit_code, result.stderr) == (1, said + "given is one\n")
+    said = "error: --constants k.json: the ALFRED constants are read for ALFRED goals (a .tsv --corpus), and no "
+    assert (result.exit_code, result.stderr) == (1, said + "--corpus given is one\n")
 
 
 def test_bench_parse_reports_a_crashing_scorer_as_an_error(shared_data: Path, tmp_path: Path) -> None:
