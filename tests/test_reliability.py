@@ -204,9 +204,10 @@ def test_the_judge_sees_a_partial_output_and_a_wrong_code(tmp_path: Path) -> Non
     assert outcome.kinds == {"exit", "partial"}
 
 
-def test_the_judge_limits_files_and_makes_stdout_a_full_non_blocking_pipe() -> None:
+def test_the_judge_limits_files_and_makes_stdout_a_full_non_blocking_pipe(monkeypatch: pytest.MonkeyPatch) -> None:
     """hostile20's settings: ``file_blocks`` limits what the command may write (a file or its stdout), and a
     non-blocking stdout is read whole once the command waits on it; what the command printed is what was read."""
+    monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[1]))  # this tree's code
     capped = Case("judge", ("frames", "--json"), (("stdout.out", b""),), codes=(0,), stream="file-stdout",
                   file_blocks=4)
     assert run_case(capped).kinds == {"exit"}  # 2 KiB of 18 KiB: the command fails (exit code 1), as it must
