@@ -40,10 +40,11 @@ def main() -> None:
     enabled = gc.isenabled()
     gc.disable()
     try:
-        from seal_cli.cli.output import printable_streams, sane_sizes
+        from seal_cli.cli.output import printable_streams, sane_sizes, whole_writes
         from seal_cli.fileio import note_interrupts
 
         note_interrupts()
+        whole_writes()
         printable_streams()
         sane_sizes()
         from seal_cli.cli import main as run

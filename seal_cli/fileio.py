@@ -622,9 +622,9 @@ class Outputs:
         if kind is None:
             self.commit()
             return
+        written = self._written_by(value) if isinstance(value, OSError) else None  # before its temporary goes
         self.discard()
         if isinstance(value, OSError):
-            written = self._written_by(value)
             if written is not None and not self._by_option:  # nested in another's output: it names the option
                 raise OSError(value.errno, value.strerror, str(written.target)) from None
             if written is not None:  # said of the file asked for, not of its temporary or of "the output"
@@ -633,15 +633,22 @@ class Outputs:
 
     def _written_by(self, error: OSError) -> _Output | None:
         """The output whose writing failed with ``error``: the one whose temporary it names, or, for a full disk
-        reported without a name (a file object's write or close), the one whose folder has no space left."""
+        reported without a name (a file object's write or close), the one whose folder has no space left, or, for
+        a file grown past what the process may write (``ulimit -f``: "File too large", reported without a name
+        too), the one whose temporary has reached that size (hostile20: it was "cannot write the output", as if
+        standard output had failed)."""
         for output in self._outputs.values():
             if error.filename is not None and os.path.abspath(error.filename) == os.path.abspath(output.tmp):
                 return output
-        if error.filename is not None or error.errno not in (errno.ENOSPC, errno.EDQUOT):
+        if error.filename is not None or error.errno not in (errno.ENOSPC, errno.EDQUOT, errno.EFBIG):
             return None
         for output in self._outputs.values():
             with contextlib.suppress(OSError):
-                if not output.device and os.statvfs(output.tmp.parent).f_bavail == 0:
+                if output.device:
+                    continue
+                if error.errno == errno.EFBIG and os.stat(output.tmp).st_size >= _largest_file():
+                    return output
+                if error.errno != errno.EFBIG and os.statvfs(output.tmp.parent).f_bavail == 0:
                     return output
         return None
 
@@ -680,6 +687,14 @@ class Outputs:
             with contextlib.suppress(OSError):
                 output.tmp.unlink()
             _LIVE.discard(output.tmp)
+
+
+def _largest_file() -> float:
+    """The size of the largest file this process may write (``ulimit -f``, ``RLIMIT_FSIZE``): infinite if none."""
+    import resource
+
+    limit = resource.getrlimit(resource.RLIMIT_FSIZE)[0]
+    return float("inf") if limit == resource.RLIM_INFINITY else limit
 
 
 def _folder(folder: Path, option: str) -> Path:

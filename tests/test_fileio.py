@@ -3,6 +3,9 @@
 from __future__ import annotations
 
 import os
+import re
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -362,3 +365,29 @@ def test_a_stream_handed_to_the_command_says_how_to_read_it() -> None:
                           capture_output=True, timeout=120, check=False)
     assert done.returncode == 1
     assert b"a stream this command was handed" in done.stderr and b"seal parse --file -" in done.stderr
+
+
+def test_an_output_past_ulimit_f_is_said_of_its_option(tmp_path: Path) -> None:
+    # a file grown past RLIMIT_FSIZE said "cannot write the output", as if stdout had failed (hostile20); run in a child
+    # process, whose limit is its own
+    script = (
+        "import resource, sys\n"
+        "from pathlib import Path\n"
+        "from seal_cli.errors import SealError\n"
+        "from seal_cli.fileio import Outputs\n"
+        "resource.setrlimit(resource.RLIMIT_FSIZE, (4096, 4096))\n"
+        "folder = Path(sys.argv[1])\n"
+        "try:\n"
+        "    with Outputs({'--png': folder / 'o.png', '--rrd': folder / 'o.rrd'},\n"
+        "                 suffixes={'--png': ('.png',), '--rrd': ('.rrd',)}) as outputs:\n"
+        "        outputs['--rrd'].write_bytes(b'r' * 100)\n"
+        "        with open(outputs['--png'], 'wb') as f:\n"
+        "            f.write(b'p' * 10_000)\n"
+        "except SealError as error:\n"
+        "    print(error)\n")
+    env = {**os.environ, "PYTHONPATH": str(Path(__file__).resolve().parents[1])}
+    done = subprocess.run([sys.executable, "-c", script, str(tmp_path)], capture_output=True, text=True, check=False,
+                          env=env)
+    assert done.stderr == ""
+    assert re.fullmatch(r"cannot write --png .*o\.png: File too large\n", done.stdout)
+    assert list(tmp_path.iterdir()) == []  # neither output written, no temporary left

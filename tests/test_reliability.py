@@ -204,6 +204,21 @@ def test_the_judge_sees_a_partial_output_and_a_wrong_code(tmp_path: Path) -> Non
     assert outcome.kinds == {"exit", "partial"}
 
 
+def test_the_judge_limits_files_and_makes_stdout_a_full_non_blocking_pipe(monkeypatch: pytest.MonkeyPatch) -> None:
+    """hostile20's settings: ``file_blocks`` limits what the command may write (a file or its stdout), and a
+    non-blocking stdout is read whole once the command waits on it; what the command printed is what was read."""
+    monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[1]))  # this tree's code
+    capped = Case("judge", ("frames", "--json"), (("stdout.out", b""),), codes=(0,), stream="file-stdout",
+                  file_blocks=4)
+    assert run_case(capped).kinds == {"exit"}  # 2 KiB of 18 KiB: the command fails (exit code 1), as it must
+    lines = "".join(f"stir the cup number {i}\n" for i in range(2_500)) + "put the apple on the table\n"
+    piped = Case("judge", ("parse", "--file", "c.txt"), (("c.txt", lines.encode()),), codes=(0,),
+                 stream="nonblocking-stdout", says=r"\n2501: Place\(theme=apple, goal=table\)\n$")
+    assert run_case(piped).problems == []
+    missing = Case("judge", piped.argv, piped.files, codes=(0,), stream="nonblocking-stdout", says=r"\n2502: ")
+    assert run_case(missing).kinds == {"message"}
+
+
 def test_the_judge_sees_an_unclear_message() -> None:
     """A refusal must say what the case says it must (``says``), and say something."""
     vague = Case("judge", ("validate", "f.frame"), (("f.frame", b"frame {"),), codes=(1,), says=r"nowhere\.txt:\d+")

@@ -25,6 +25,7 @@ import hashlib
 import os
 import random
 import re
+import select
 import signal
 import subprocess
 import sys
@@ -116,7 +117,12 @@ class Case:
     name); for a case that must succeed (``codes == (0,)``), its warning."""
     stream: str = ""
     """Standard streams made hostile: ``closed-stdin``, ``closed-stdout``, ``closed-stderr``,
-    ``full-stdout`` (``/dev/full``: every write fails), ``open-stdin`` (a pipe nobody writes to)."""
+    ``full-stdout`` (``/dev/full``: every write fails), ``open-stdin`` (a pipe nobody writes to),
+    ``file-stdout`` (into the case's file ``stdout.out``, which the case makes so that it is no new file),
+    ``nonblocking-stdout`` (a pipe made non-blocking, as some parents leave it, read only once it is full or the
+    command has ended: a write then finds it full and must wait, not fail nor drop what it could not write)."""
+    file_blocks: int = 0
+    """The largest file the command may write, in 512-byte blocks (``ulimit -f``, ``RLIMIT_FSIZE``); 0: no limit."""
     env: tuple[tuple[str, str], ...] = ()
     """Environment variables set (or, with the value ``"<unset>"``, removed) for the command, after the
     suite's own (``COLUMNS=200``, ``NO_COLOR=1``, ``PYTHONWARNINGS=ignore``)."""
@@ -225,7 +231,7 @@ def _once(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
 
 
 STREAMS = {"closed-stdin": "<&-", "closed-stdout": ">&-", "closed-stderr": "2>&-", "full-stdout": ">/dev/full",
-           "open-stdin": "", "": ""}
+           "file-stdout": ">stdout.out", "open-stdin": "", "nonblocking-stdout": "", "": ""}
 """The shell redirection of each hostile ``Case.stream``."""
 
 
@@ -234,9 +240,12 @@ def _one(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
     env = {name: value for name, value in env.items() if value != "<unset>"}
     start = time.perf_counter()
     argv = [*_seal(), *(a.replace("\x00", "\x01") for a in case.argv)]  # no shell can pass a NUL in an argument
-    if STREAMS[case.stream]:
-        argv = ["/bin/sh", "-c", f'exec "$@" {STREAMS[case.stream]}', "sh", *argv]
+    if STREAMS[case.stream] or case.file_blocks:
+        limit = f"ulimit -f {case.file_blocks}; " if case.file_blocks else ""  # POSIX sh: 512-byte blocks
+        argv = ["/bin/sh", "-c", f'{limit}exec "$@" {STREAMS[case.stream]}', "sh", *argv]
     piped = case.stdin is not None or case.stream == "open-stdin"
+    if case.stream == "nonblocking-stdout":
+        return _nonblocking(case, argv, folder, env, start)
     process = subprocess.Popen(argv, cwd=folder, env=env, stdout=subprocess.PIPE,
                                stderr=subprocess.PIPE, stdin=subprocess.PIPE if piped
                                else subprocess.DEVNULL, start_new_session=True)
@@ -252,6 +261,59 @@ def _one(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
         return None, out, err, time.perf_counter() - start
     return process.returncode, out, err, time.perf_counter() - start
 
+
+def _nonblocking(case: Case, argv: list[str], folder: Path, env: dict[str, str],
+                 start: float) -> tuple[int | None, bytes, bytes, float]:
+    """Run a case whose standard output is a non-blocking pipe, read only once the pipe is full and the command
+    has written nothing more for a quarter of a second (or it has ended), so that the command's writes find it full
+    (``Case.stream`` ``nonblocking-stdout``)."""
+    import fcntl
+    import termios
+
+    reader, writer = os.pipe()
+    os.set_blocking(writer, False)
+    with tempfile.TemporaryFile() as errors:
+        process = subprocess.Popen(argv, cwd=folder, env=env, stdout=writer, stderr=errors,
+                                   stdin=subprocess.DEVNULL, start_new_session=True)
+        os.close(writer)
+        held, last, since = bytearray(4), -1, time.perf_counter()
+        while process.poll() is None and time.perf_counter() - start < case.timeout:
+            fcntl.ioctl(reader, termios.FIONREAD, held)
+            now, count = time.perf_counter(), int.from_bytes(held, sys.byteorder)
+            if count != last:
+                last, since = count, now
+            elif count > PIPE_FULL - PIPE_BUF and now - since >= 0.25:  # full to the writer, and it writes no more
+                break
+            time.sleep(0.01)
+        chunks = []
+        deadline = start + case.timeout
+        try:
+            while time.perf_counter() < deadline:
+                if not select.select([reader], [], [], 0.1)[0]:
+                    continue
+                chunk = os.read(reader, 1 << 16)
+                if not chunk:
+                    break
+                chunks.append(chunk)
+        finally:
+            os.close(reader)
+        try:
+            code: int | None = process.wait(max(0.1, deadline - time.perf_counter()))
+        except subprocess.TimeoutExpired:
+            os.killpg(process.pid, signal.SIGKILL)
+            process.wait()
+            code = None
+        errors.seek(0)
+        return code, b"".join(chunks), errors.read(), time.perf_counter() - start
+
+
+PIPE_FULL = 65_536
+"""Bytes a Linux pipe holds by default."""
+
+PIPE_BUF = 4_096
+"""Bytes a write into a pipe puts in at once or not at all: a non-blocking write of that many or fewer into a pipe
+with less room fails with ``EAGAIN``, so a pipe holding more than ``PIPE_FULL - PIPE_BUF`` may be full to its
+writer."""
 
 SIGNAL_CPU = 0.05
 """CPU seconds a process has used before a case's signal is sent to it (besides the case's own delay): the

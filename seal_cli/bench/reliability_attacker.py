@@ -28,7 +28,7 @@ import numpy as np
 from seal_cli.bench.reliability import FRAME, Case, hostile_setting
 
 __all__ = ["alfred2d_data", "attacker_cases", "chain_library", "hostile14_cases", "hostile15_cases", "hostile16_cases",
-           "hostile17_cases", "hostile18_cases", "hostile19_cases", "rgba_png", "sparse_pgm"]
+           "hostile17_cases", "hostile18_cases", "hostile19_cases", "hostile20_cases", "rgba_png", "sparse_pgm"]
 
 DIGITS = "1" * 5_000
 """An integer longer than Python converts from text (4,300 digits)."""
@@ -285,6 +285,7 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield from hostile17_cases()
     yield from hostile18_cases()
     yield from hostile19_cases()
+    yield from hostile20_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -775,3 +776,56 @@ def hostile19_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
                    (("b.mcap", bag),), codes=(1,), keep=("b.mcap",), absent=("o.yaml",),
                    says=r"b\.mcap: the rotation of message 2 on /robot_pose \(qx, qy, qz, qw\) is .*a rotation is a "
                         r"unit quaternion")
+
+
+def hostile20_cases() -> Iterator[Case]:
+    """Round hostile20: standard output and files written under a limit: a file grown past ``ulimit -f`` (the
+    largest file a process may write), and a pipe whose parent made it non-blocking, with and without
+    ``PYTHONUNBUFFERED=1`` (set in many containers and CI images: Python's unbuffered stream drops what a short
+    write leaves)."""
+    unbuffered = ("PYTHONUNBUFFERED", "1")
+    buffered = ("PYTHONUNBUFFERED", "<unset>")
+    for name, setting in (("PYTHONUNBUFFERED=1", unbuffered), ("buffered", buffered)):
+        for printing in (("frames", "--json"), ("frames",), ("map", "apartment", "--json")):
+            yield Case(f"A {' '.join(printing)} into a file past ulimit -f of 2 KiB ({name})", printing,
+                       (("stdout.out", b""),), codes=(1,), stream="file-stdout", file_blocks=4, env=(setting,),
+                       says=r"error: cannot write the output: File too large")
+    lines = "".join(f"stir the cup number {i}\n" for i in range(2_500)) + "put the apple on the table\n"
+    for name, setting in (("PYTHONUNBUFFERED=1", unbuffered), ("buffered", buffered)):
+        for shape in (("--json",), ()):
+            yield Case(f"A parse --file {' '.join(shape) or 'as text'} into a non-blocking pipe ({name})",
+                       ("parse", "--file", "c.txt", *shape), (("c.txt", lines.encode()),), codes=(0,),
+                       keep=("c.txt",), stream="nonblocking-stdout", env=(setting,),
+                       says=r'"text": "put the apple on the table"' if shape
+                       else r"\n2501: Place\(theme=apple, goal=table\)\n$")
+    writing: tuple[str, ...]
+    for what, writing, files, option in (
+            ("map --png", ("map", "apartment", "--png", "o.png"), (), r"--png o\.png"),
+            ("localize --png", ("localize", "--map", "apartment", "--task", "stir the cup", "--steps", "1",
+                                "--particles", "10", "--png", "o.png"), (), r"--png o\.png"),
+            ("plan --pddl", ("plan", "stir the cup", "--pddl", "d"), (("d", "dir"),),
+             r"--pddl d/(domain|problem)\.pddl")):
+        yield Case(f"A {what} past ulimit -f of 4 KiB", writing, files, codes=(1,), file_blocks=8,
+                   absent=("o.png", "d/domain.pddl", "d/problem.pddl"),
+                   says=rf"error: cannot write {option}: File too large")
+    yield Case("A plan --max-nodes 1 stopped before a frame whose needs are met",
+               ("plan", "stir the cup", "--max-nodes", "1"), codes=(1,),
+               says=r"within 1 search node: Stir\(theme=cup, instrument=spoon\) \(commanded frame 1\) was next, its "
+                    r"preconditions met")
+    unread: tuple[str, ...]
+    for unread, said in ((("--suite", "map", "--type", "x", "--layouts", "1"), r"--suite map does not read --type"),
+                       (("--suite", "map", "--limit", "1"), r"--suite map does not read --limit"),
+                       (("--map", "townhouse", "--data", "d"), r"--suite alfred2d does not read --map"),
+                       (("--suite", "context", "--split", "train", "--data", "d"),
+                        r"--suite context does not read --split")):
+        yield Case(f"A bench tasks {' '.join(unread)}: an option its suite does not read",
+                   ("bench", "tasks", *unread, "--jobs", "1"),
+                   (("d", "dir"),), codes=(1,), says=said, timeout=30)
+    for option, value in (("--frame", "odom"), ("--base-frame", "base_link")):
+        yield Case(f"A localize {option} {value} without --bag", ("localize", "--map", "apartment", "--task",
+                                                                  "stir the cup", "--steps", "0", option, value),
+                   codes=(1,), says=rf"{option} reads a bag: give --bag too")
+    yield Case("A bench parse --constants with a JSON Lines corpus only",
+               ("bench", "parse", "--corpus", "c.jsonl", "--constants", "k.json"),
+               (("c.jsonl", b'{"text": "stir the cup"}\n'), ("k.json", b'{"OBJECTS": ["cup"]}\n')), codes=(1,),
+               keep=("c.jsonl", "k.json"), says=r"--constants k\.json: the ALFRED constants are read for ALFRED goals")

@@ -87,6 +87,18 @@ def command(*args: Any, on: typer.Typer | None = None, **kwargs: Any) -> Callabl
     return decorate
 
 
+def given(parameter: str) -> bool:
+    """Whether the running command's ``parameter`` (its function's argument) was given on the command line, not left
+    at its default: an option that goes only with another (``--frame`` with ``--bag``) or with some suites is refused
+    when given without it, even at its default's value (hostile20)."""
+    from typer._click.core import ParameterSource
+    from typer._click.globals import get_current_context  # typer's own copy of click, whose context runs the command
+
+    context = get_current_context(silent=True)
+    source = context.get_parameter_source(parameter) if context is not None else None
+    return source not in (None, ParameterSource.DEFAULT)
+
+
 def short_help(doc: str) -> str:
     """A command's line in its group's list of commands: the docstring's first paragraph on one line. typer (0.28)
     keeps the docstring's line breaks there in its rich markup mode, so a wrapped docstring was listed broken

@@ -23,6 +23,7 @@ from seal_cli.cli import (
     out,
     progress_bar,
 )
+from seal_cli.cli.framework import given as option_given
 
 if TYPE_CHECKING:
     from seal_cli.sensing.observations import Observation
@@ -149,8 +150,12 @@ def localize(
     if len(given) > 1:
         raise SealError(f"give one of --trajectory (simulated detections), --observations or --bag (real ones), "
                         f"not both {' and '.join(given)}")
-    if bag is None and (pose_topic or detections_topic or labels):
-        raise SealError("--pose-topic, --detections-topic and --labels read a bag: give --bag too")
+    bag_options = {"pose_topic": "--pose-topic", "detections_topic": "--detections-topic", "frame": "--frame",
+                   "base_frame": "--base-frame", "labels": "--labels"}
+    without_bag = [option for name, option in bag_options.items() if option_given(name)] if bag is None else []
+    if without_bag:  # --frame and --base-frame were passed over without a bag (hostile20)
+        listed = ", ".join(without_bag[:-1]) + " and " + without_bag[-1] if len(without_bag) > 1 else without_bag[0]
+        raise SealError(f"{listed} {'read' if len(without_bag) > 1 else 'reads'} a bag: give --bag too")
     if goals is not None:
         from seal_cli.ros.goals import check_goals_path
 

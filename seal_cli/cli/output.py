@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import contextlib
 import functools
+import io
 import os
 import re
 import sys
@@ -21,7 +22,7 @@ if TYPE_CHECKING:
     from rich.console import Console
 
 __all__ = ["PIPE_WIDTH", "LazyConsole", "dump_json", "emit_json", "err", "out", "plain", "printable_streams",
-           "progress_bar", "report", "run_command", "sane_sizes", "styled"]
+           "progress_bar", "report", "run_command", "sane_sizes", "styled", "whole_writes"]
 
 PIPE_WIDTH = 200
 """Columns of the output when it is not a terminal (a file, a pipe) and ``COLUMNS`` is not set."""
@@ -273,6 +274,50 @@ def printable_streams() -> None:
         if stream is not None and not _unicode(stream):
             with contextlib.suppress(AttributeError, ValueError, OSError):
                 stream.reconfigure(errors="backslashreplace")  # type: ignore[union-attr]
+
+
+class _WholeWrites(io.FileIO):
+    """A standard stream's file descriptor whose ``write`` writes all it is given or raises: a short write (the
+    disk fills, ``ulimit -f`` is reached, a pipe takes part) is followed by another for the rest, which then fails
+    with the system's reason, and a stream left non-blocking by whoever started seal (``EAGAIN``) waits until it
+    takes more, as a blocking one does. Python's own unbuffered text stream (``PYTHONUNBUFFERED=1``, ``python -u``)
+    drops what a short write left and goes on (hostile20)."""
+
+    def write(self, data: Any) -> int:
+        import select
+
+        view = memoryview(data).cast("B")
+        done = 0
+        while done < len(view):
+            written = super().write(view[done:])
+            if written is None:  # non-blocking and full: wait until it takes more
+                select.select([], [self.fileno()], [])
+                continue
+            done += written
+        return done
+
+
+def whole_writes() -> None:
+    """Standard output and error write everything a command prints, or fail the command with the system's reason
+    (:class:`_WholeWrites`): under ``PYTHONUNBUFFERED=1`` (set by many containers and CI images) ``seal frames --json
+    > out.json`` on a nearly full disk left 4,096 bytes of it and exited 0, and into a pipe its parent had made
+    non-blocking ``seal parse --file F --json`` stopped at 64 KiB and exited 0 (buffered: exit 1, the output cut)."""
+    for name in ("stdout", "stderr"):
+        stream = getattr(sys, name)
+        if type(stream) is not io.TextIOWrapper:  # not the interpreter's own (a test's capture, /dev/null)
+            continue
+        buffer = stream.buffer
+        raw = buffer if isinstance(buffer, io.FileIO) else getattr(buffer, "raw", None)
+        if type(raw) is not io.FileIO or isinstance(raw, _WholeWrites):
+            continue
+        with contextlib.suppress(OSError, ValueError):
+            stream.flush()
+            whole = _WholeWrites(raw.fileno(), "w", closefd=False)
+            unbuffered = buffer is raw
+            replaced = io.TextIOWrapper(whole if unbuffered else io.BufferedWriter(whole),
+                                        encoding=stream.encoding, errors=stream.errors,
+                                        line_buffering=stream.line_buffering, write_through=unbuffered)
+            setattr(sys, name, replaced)
 
 
 def dump_json(data: Any) -> str:

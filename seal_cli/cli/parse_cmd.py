@@ -153,6 +153,9 @@ def bench_parse(
     folder = scorers or shared / "eval"
     corpora = list(corpus or [shared / "data" / "gpsr" / "dev.jsonl", shared / "data" / "alfred" /
                               "goals_valid_seen.tsv"])
+    if constants is not None and not any(path.suffix == ".tsv" for path in corpora):  # passed over before (hostile20)
+        raise SealError(f"--constants {constants}: the ALFRED constants are read for ALFRED goals (a .tsv --corpus), "
+                        "and no --corpus given is one")
     seal = f"{sys.executable} -m seal_cli"
     results: dict[str, Any] = {}
     runs: list[tuple[Path, list[str], Vocabulary | None]] = []

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+from collections.abc import Callable
 from datetime import datetime
 from pathlib import Path
 from typing import Any
@@ -26,11 +27,33 @@ from seal_cli.cli import (
     one_held,
     out,
 )
+from seal_cli.cli.framework import given
 from seal_cli.cli.output import plain, styled
 from seal_cli.sim.policies import DEFAULT_POLICIES, POLICIES
 from seal_cli.sim.unsearched import SEARCH_END
 
 SUITES = ("alfred2d", "map", "context")
+
+SUITE_OPTIONS = {"data": ("--data", ("alfred2d", "context")), "split": ("--split", ("alfred2d",)),
+                 "goal": ("--goal", ("alfred2d",)), "limit": ("--limit", ("alfred2d",)),
+                 "sample": ("--sample", ("alfred2d",)), "types": ("--type", ("alfred2d",)),
+                 "map_name": ("--map", ("map",)), "commands": ("--command", ("map", "context")),
+                 "layouts": ("--layouts", ("map", "context"))}
+"""The options of ``bench tasks`` that only some suites read (parameter: option, suites). Given to another suite,
+one was passed over in silence (hostile20): ``--suite map --type x`` or ``--limit 1``, meant to make a run short,
+ran the whole suite for minutes; ``--suite alfred2d --map townhouse`` ran ALFRED-2D. Now refused before any work."""
+
+
+def _unread_options(suite: str, given: Callable[[str], bool]) -> None:
+    """Refuse the options of :data:`SUITE_OPTIONS` given on the command line (``given(parameter)``) that ``suite``
+    does not read."""
+    from seal_cli.errors import SealError
+
+    unread = [(option, suites) for name, (option, suites) in SUITE_OPTIONS.items()
+              if suite not in suites and given(name)]
+    if unread:
+        said = "; ".join(f"{option} goes with --suite {' or '.join(suites)}" for option, suites in unread)
+        raise SealError(f"--suite {suite} does not read {', '.join(o for o, _ in unread)}: {said}")
 
 KIND_STYLE = {"warn": "yellow", "plan": "bold", "frame": "bold cyan", "search": "yellow", "go": "", "see": "green",
               "look": "dim", "act": "green", "fail": "red", "replan": "magenta", "done": "bold green",
@@ -242,6 +265,7 @@ def tasks(
     names = choices("--policies", [policies], tuple(POLICIES), "policy")
     if backend not in ("process", "ray") or (backend == "ray" and suite != "alfred2d"):
         raise SealError(f"--backend {backend!r}: process, or ray with --suite alfred2d")
+    _unread_options(suite, given)
     if suite != "context" and (house_set != "suite" or starts is not None or fov is not None):
         raise SealError("--houses, --starts and --fov go with --suite context")
     if fov is not None and not 0 < fov <= 360:      # NaN too

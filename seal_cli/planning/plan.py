@@ -408,9 +408,13 @@ class _Search:
 
     def _gave_up(self, state: State, k: int) -> SealError:
         goal = self.commanded[k]
-        unmet = ", ".join(map(str, state.unmet(goal))) or "nothing"
-        return SealError(f"no plan found within {self.max_nodes} search nodes: {goal} (commanded frame {k + 1}) "
-                         f"still needs {unmet}", hint="raise the bound (--max-nodes) or shorten the command")
+        unmet = ", ".join(map(str, state.unmet(goal)))
+        # its needs all met, the search stopped just before it: "still needs nothing" read as a contradiction
+        # (hostile20)
+        where = f"still needs {unmet}" if unmet else "was next, its preconditions met, when the search stopped"
+        nodes = f"{self.max_nodes:,} search node{'' if self.max_nodes == 1 else 's'}"
+        return SealError(f"no plan found within {nodes}: {goal} (commanded frame {k + 1}) "
+                         f"{where}", hint="raise the bound (--max-nodes) or shorten the command")
 
     def _no_plan(self) -> SealError:
         k = self.trace.deepest

@@ -16,6 +16,7 @@ from seal_cli.bench.reliability_attacker import (
     hostile17_cases,
     hostile18_cases,
     hostile19_cases,
+    hostile20_cases,
     sparse_pgm,
 )
 from seal_cli.bench.reliability_outsider import outsider_cases
@@ -152,3 +153,21 @@ def test_the_hostile19_cases_are_named_once_and_say_what_they_must() -> None:
     found = list(hostile19_cases())
     assert len({c.name for c in found}) == len(found) >= 21
     assert all(c.says for c in found if c.codes != (0,))
+
+
+@pytest.mark.parametrize("name", ["A frames --json into a file past ulimit -f of 2 KiB (PYTHONUNBUFFERED=1)",
+                                  "A parse --file --json into a non-blocking pipe (buffered)",
+                                  "A map --png past ulimit -f of 4 KiB"])
+def test_picked_hostile20_cases_end_cleanly(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Each failed on main: stdout cut at the file size limit with exit 0, a non-blocking pipe failing the command at 64
+    KiB, a PNG past the limit said as "the output". This tree's code."""
+    monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
+    outcome = run_case(next(c for c in hostile20_cases() if c.name == name))
+    assert outcome.problems == []
+
+
+def test_the_hostile20_cases_are_named_once_and_say_what_they_must() -> None:
+    found = list(hostile20_cases())
+    assert len({c.name for c in found}) == len(found) >= 14
+    assert all(c.says for c in found)
+    assert {c.stream for c in found} >= {"file-stdout", "nonblocking-stdout"}

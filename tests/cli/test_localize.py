@@ -226,3 +226,16 @@ def test_plans_do_not_know_where_the_objects_really_are() -> None:
     result = localize("--task", "stir the cup", "--steps", "1")
     assert [(f["frame"], f["elements"]) for f in result["frames"]] == [
         ("Pick", {"theme": "spoon"}), ("Stir", {"theme": "cup", "instrument": "spoon"})]
+
+
+@pytest.mark.parametrize(("options", "said"), [
+    (["--frame", "odom"], "error: --frame reads a bag: give --bag too\n"),
+    (["--base-frame", "base_link"], "error: --base-frame reads a bag: give --bag too\n"),   # its default's value too
+    (["--pose-topic", "/p", "--frame", "map", "--labels", "l.yaml"],
+     "error: --pose-topic, --frame and --labels read a bag: give --bag too\n"),
+])
+def test_a_bag_option_without_a_bag_is_refused(options: list[str], said: str) -> None:
+    # --frame and --base-frame without --bag were passed over in silence (hostile20), as the topics were not
+    result = CliRunner().invoke(app, ["localize", "--map", "apartment", "--task", "stir the cup", "--steps", "0",
+                                      *options])
+    assert (result.exit_code, result.stderr) == (1, said)

@@ -254,3 +254,66 @@ def test_a_reader_gone_leaves_the_commands_own_exit_code(args: list[str], code: 
         os.close(write)
     assert done.returncode == code, done.stderr
     assert b"Traceback" not in done.stderr and b"Exception ignored" not in done.stderr
+
+
+_SEAL = Path(__file__).resolve().parents[2]
+
+
+@pytest.mark.parametrize("unbuffered", ["1", None])
+@pytest.mark.parametrize("argv", [["frames", "--json"], ["frames"]])
+def test_stdout_past_ulimit_f_fails_the_command(tmp_path: Path, unbuffered: str | None, argv: list[str]) -> None:
+    # under PYTHONUNBUFFERED=1 Python's stream dropped what a short write left: 2 KiB of the output, exit 0 (hostile20)
+    env = {**os.environ, "PYTHONPATH": str(_SEAL)}
+    env.pop("PYTHONUNBUFFERED", None)
+    if unbuffered:
+        env["PYTHONUNBUFFERED"] = unbuffered
+    with open(tmp_path / "out", "wb") as out:
+        done = subprocess.run(["/bin/sh", "-c", 'ulimit -f 4; exec "$@"', "sh",  # POSIX sh: 512-byte blocks
+                               sys.executable, "-m", "seal_cli", *argv], stdout=out, stderr=subprocess.PIPE,
+                              text=True, env=env, check=False)
+    assert (done.returncode, done.stderr) == (1, "error: cannot write the output: File too large\n")
+    assert (tmp_path / "out").stat().st_size == 2048
+
+
+def test_whole_writes_writes_everything_into_a_full_non_blocking_pipe() -> None:
+    # into a pipe its parent had made non-blocking, a write stopped at 64 KiB (a short write, then EAGAIN): exit 0 with
+    # the rest dropped (PYTHONUNBUFFERED=1) or exit 1 (hostile20); now it waits until the reader takes more
+    import io
+    import threading
+    import time
+
+    from seal_cli.cli import output
+
+    reader, writer = os.pipe()
+    os.set_blocking(writer, False)
+    received = bytearray()
+
+    def read_late() -> None:
+        time.sleep(0.2)  # the pipe is full by then
+        while chunk := os.read(reader, 1 << 16):
+            received.extend(chunk)
+
+    thread = threading.Thread(target=read_late)
+    thread.start()
+    try:
+        raw = output._WholeWrites(writer, "w", closefd=False)
+        assert raw.write(b"0123456789" * 30_000) == 300_000
+        text = io.TextIOWrapper(raw, encoding="utf-8", write_through=True)  # type: ignore[arg-type]
+        text.write("café\n" * 20_000)
+        text.flush()
+    finally:
+        os.close(writer)
+        thread.join()
+        os.close(reader)
+    assert bytes(received) == b"0123456789" * 30_000 + "café\n".encode() * 20_000
+
+
+def test_whole_writes_replaces_only_the_interpreters_own_streams(monkeypatch: pytest.MonkeyPatch) -> None:
+    import io
+
+    from seal_cli.cli import output
+
+    captured = io.StringIO()
+    monkeypatch.setattr(sys, "stdout", captured)
+    output.whole_writes()
+    assert sys.stdout is captured  # a test's capture (or any stream not on a file descriptor) is left alone

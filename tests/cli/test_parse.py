@@ -157,6 +157,15 @@ def test_bench_parse_refuses_a_corpus_that_is_not_json_lines(tmp_path: Path, con
         assert "Traceback" not in result.output + result.stderr
 
 
+def test_bench_parse_refuses_constants_no_corpus_reads(tmp_path: Path) -> None:
+    # --constants with only JSON Lines corpora was passed over (hostile20): they are read for .tsv goals only
+    corpus = tmp_path / "c.jsonl"
+    corpus.write_text('{"text": "stir the cup"}\n')
+    result = runner.invoke(app, ["bench", "parse", "--corpus", str(corpus), "--constants", "k.json"])
+    said = "error: --constants k.json: the ALFRED constants are read for ALFRED goals (a .tsv --corpus), and no "
+    assert (result.exit_code, result.stderr) == (1, said + "--corpus given is one\n")
+
+
 def test_bench_parse_reports_a_crashing_scorer_as_an_error(shared_data: Path, tmp_path: Path) -> None:
     scorers = shared_data.parent / "eval"
     if not (scorers / "score_parse.py").is_file():

@@ -127,3 +127,23 @@ def test_holding_given_once_is_what_the_robot_holds() -> None:
     result = runner.invoke(app, ["plan", "--map", "apartment", "stir the cup", "--holding", "spoon", "--json"])
     assert result.exit_code == 0
     assert [s["frame"] for s in json.loads(result.stdout)["plan"]] == ["Stir"]
+
+
+@pytest.mark.parametrize(("args", "said"), [
+    (["--suite", "map", "--type", "x"], "error: --suite map does not read --type: --type goes with --suite alfred2d\n"),
+    (["--suite", "map", "--limit", "1", "--split", "train"],
+     "error: --suite map does not read --split, --limit: --split goes with --suite alfred2d; --limit goes with --suite "
+     "alfred2d\n"),
+    (["--map", "townhouse"], "error: --suite alfred2d does not read --map: --map goes with --suite map\n"),
+    (["--suite", "context", "--goal", "human", "--layouts", "1"],
+     "error: --suite context does not read --goal: --goal goes with --suite alfred2d\n"),
+    (["--suite", "map", "--data", "."], "error: --suite map does not read --data: --data goes with --suite alfred2d or "
+                                        "context\n"),
+])
+def test_bench_tasks_refuses_an_option_its_suite_does_not_read(args: list[str], said: str) -> None:
+    # given to a suite that does not read it, an option was passed over: '--suite map --type x' ran the whole suite for
+    # minutes (hostile20); refused before any work, even when given its default's value ('--split valid_seen' too)
+    result = runner.invoke(app, ["bench", "tasks", *args])
+    assert (result.exit_code, result.stderr) == (1, said)
+    again = runner.invoke(app, ["bench", "tasks", "--suite", "map", "--split", "valid_seen", "--goal", "gold"])
+    assert again.exit_code == 1 and "--suite map does not read --split, --goal" in again.stderr

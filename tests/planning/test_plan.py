@@ -251,6 +251,18 @@ def test_the_search_bound_is_a_clean_refusal(library: Library) -> None:
         plan(command, library, start(library), max_nodes=0)
 
 
+def test_a_search_stopped_before_a_frame_whose_needs_are_met_says_so(library: Library) -> None:
+    # it said "Stir(...) still needs nothing" (hostile20): the frame was next, the bound came first
+    command = [bind(library, "Stir", theme="cup", instrument="spoon")]
+    with pytest.raises(SealError, match=r"within 1 search node: Stir\(theme=cup, instrument=spoon\) "
+                                        r"\(commanded frame 1\) was next, its preconditions met, "
+                                        r"when the search stopped\n"):
+        plan(command, library, start(library), max_nodes=1)
+    with pytest.raises(SealError, match=r"within 2 search nodes: Place\(theme=apple, goal=fridge\) .* still needs "):
+        plan([bind(library, "Slice", theme="apple"), bind(library, "Place", theme="apple", goal="fridge")], library,
+             start(library), max_nodes=2)
+
+
 # -- shortest plans: the planner against a brute-force search over every grounding ------------------
 
 SMALL = ("Pick", "Place", "Open", "Close", "Slice")
@@ -538,7 +550,7 @@ def test_cli_robot_state_options() -> None:
 @pytest.mark.parametrize(("args", "message"), [
     (["open the table"], "Open needs its theme to be openable"),
     (["put it in the fridge"], "cannot tell what 'it' refers to"),
-    (["--max-nodes", "1", "slice the apple and put it in the fridge"], "search nodes"),
+    (["--max-nodes", "1", "slice the apple and put it in the fridge"], "within 1 search node: "),
     (["--map", "no_such_map.yaml", "stir the cup"], "no_such_map"),
     (["--pddl", "no/such/folder", "stir the cup"], "cannot write into --pddl"),
 ])
