@@ -158,15 +158,23 @@ def _plural(phrase: Phrase) -> bool:
     return phrase.quantity == 2 or "two" in text or "both" in text or phrase.plural
 
 
+def _carried_to(frame: Evoked) -> bool:
+    """A Bring to a place said (a goal, no recipient: "take the box *to the shelf*"), which ends as a Place does
+    (the library's Bring: ``in(theme, goal)``)."""
+    goal = frame.elements.get("goal")
+    return frame.frame == "Bring" and goal is not None and not goal.default and "recipient" not in frame.elements
+
+
 def read_fields(parse: Parse) -> Reading:
     """The fields a parse says, read as ALFRED parses are scored (``../shared/eval/score_alfred_goals.py``): a step
     frame gives its type, a LookAt or a lamp switched on a look, two Places of two things a stack, a Place of a
     plural thing two things, else a simple placing; the object is the theme of the Slice when sliced, else of the
     first manipulating frame; the receptacle the goal of the last Place; the movable receptacle the goal of the
-    first Place of a stack."""
+    first Place of a stack. Unlike the scorer, a Bring to a place said counts as a Place (:func:`_carried_to`:
+    "put a remote into a box, take the box to the chair" is a stack whose receptacle is the chair)."""
     frames = parse.frames
     names = [f.frame for f in frames]
-    places = [i for i, f in enumerate(frames) if f.frame == "Place"]
+    places = [i for i, f in enumerate(frames) if f.frame == "Place" or _carried_to(f)]
     slices = [i for i, f in enumerate(frames) if f.frame == "Slice"]
 
     def at(i: int, role: str) -> tuple[int, str] | None:
@@ -198,8 +206,8 @@ def read_fields(parse: Parse) -> Reading:
         kind = TWO
     else:
         kind = SIMPLE
-    first = slices[0] if sliced and slices else next((i for i, f in enumerate(frames) if f.frame in MANIPULATE),
-                                                     None)
+    first = slices[0] if sliced and slices else next((i for i, f in enumerate(frames)
+                                                      if f.frame in MANIPULATE or _carried_to(f)), None)
     where = {"object": at(first, "theme") if first is not None else None,
              "receptacle": at(places[-1], "goal") if places and kind != LOOK else None,
              "mrecep": at(places[0], "goal") if kind == STACK else None}
@@ -227,7 +235,9 @@ def candidates(model: FieldModel, name: str, grams: Sequence[str], reading: Read
       value is T (a bonus of its own per type the parser read: a step it reads is surer than a plain placing it
       reads when the sentence says no step); ``F:unsaid``: the value is the parser's and its phrase was no one's
       words (a default, an inferred goal);
-    * ``bias:type:T``: the value is the type T;
+    * ``read:T:U``: the parser read the type T, the value is another type U (which readings the words overrule);
+      ``F:other``: a class the parser read for another field (a stack's two goals the wrong way round);
+    * ``bias:type:T``: the value is the type T; ``sliced:T``: the value is T and the parser read the thing sliced;
     * ``joint:mrecep``, ``joint:receptacle`` (the type's values only): the log-probability, by the movable
       receptacle's and the receptacle's models among ``present`` and none, that the field exists as the type says
       (a stack has a movable receptacle, a look no receptacle): the fields decoded jointly, softly.
@@ -241,6 +251,7 @@ def candidates(model: FieldModel, name: str, grams: Sequence[str], reading: Read
         p = model.probabilities(name, grams, keep)
         said = reading.values[name] if reading.values[name] in keep else None
     values = set(p) | ({said} if said is not None else set())
+    other = {v for n, v in reading.values.items() if n != name and v != NOTHING}
     joint: dict[str, float] = {}
     if name == "type" and values:
         room = {*present, NOTHING}
@@ -256,8 +267,14 @@ def candidates(model: FieldModel, name: str, grams: Sequence[str], reading: Read
                 x[f"type:{value}"] = 1.0
             elif name in reading.unsaid:
                 x[f"{name}:unsaid"] = 1.0
+        elif name == "type" and said is not None:
+            x[f"read:{said}:{value}"] = 1.0
+        elif name != "type" and value in other:
+            x[f"{name}:other"] = 1.0
         if name == "type":
             x[f"bias:type:{value}"] = 1.0
+            if reading.sliced:
+                x[f"sliced:{value}"] = 1.0
             if joint:
                 x["joint:mrecep"] = math.log(1 - joint["mrecep"] if value == STACK else joint["mrecep"])
                 x["joint:receptacle"] = math.log(joint["receptacle"] if value == LOOK else 1 - joint["receptacle"])

@@ -232,3 +232,20 @@ def test_a_learned_combination_is_read_back_from_the_model_file(tmp_path: Path) 
     bad.write_text(model_json(learned, "test").replace('"scale:object":1.2', '"scale:object":"high"'))
     with pytest.raises(SealError, match="trust: expected a number"):
         load_field_model(bad)
+
+
+def test_a_thing_taken_to_a_place_is_read_as_put_there(library: Library) -> None:
+    """A Bring to a place said ends as a Place does: a stack said with "take the box to ..." is read as one, so
+    the receptacle is the chair, not the box (the scorer reads Place only; the parse keeps its Bring)."""
+    vocabulary = rules((*ROOM, "Box", "ArmChair", "RemoteControl", "Shelf"))
+    parse = parse_command("put the remote into a box and take the box to the chair", library, vocabulary,
+                          infer_steps=False)
+    assert [f.frame for f in parse.frames] == ["Place", "Bring"]
+    reading = read_fields(parse)
+    assert (reading.type, dict(reading.values)) == (STACK, {"object": "remote_control", "receptacle": "arm_chair",
+                                                            "mrecep": "box"})
+    parse = parse_command("take the apple to the fridge", library, vocabulary, infer_steps=False)
+    reading = read_fields(parse)
+    assert (reading.type, reading.values["object"], reading.values["receptacle"]) == (SIMPLE, "apple", "fridge")
+    parse = parse_command("bring me the apple", library, vocabulary, infer_steps=False)
+    assert read_fields(parse).values["receptacle"] == NOTHING                    # to a person: no place
