@@ -11,7 +11,9 @@ fraction F of the train trials (or of the floor plans, ``--hold-out floor-plans`
 ``build_word_classes.py --dev`` does (the same hash), fits the word-class table and this model on the others, parses
 the held-out sentences and prints the five fields as the scorer reads them, the parser alone and reread with each
 ``--trust`` tried (the parser's bonus, one number for every field, or ``type,object,receptacle,mrecep``): the shipped
-trust was chosen there, never on a valid split.
+trust was chosen there, never on a valid split. With ``--learn`` the combination's weights are learned there too
+(``taskfields.fit_trust`` on one half of the held-out sentences, scored on the other half, and the other way
+round; then the weights learned on all of them are printed).
 """
 
 from __future__ import annotations
@@ -152,7 +154,8 @@ def dev(args: argparse.Namespace, bwc: ModuleType, rows: list[dict[str, str]]) -
     if args.learn:
         # the combination learned on the held-out parses: scored on each half by the weights learned on the other
         examples = {id(row): trust_examples(model, row, text, parse, tried) for row, text, parse in parsed}
-        half = {id(row): zlib.crc32(row["task_id"].encode()) % 2 for row, _, _ in parsed}
+        unit = "task_id" if args.hold_out == "trials" else "floor_plan"        # halves as the held-out part is
+        half = {id(row): zlib.crc32(row[unit].encode()) % 2 for row, _, _ in parsed}
         learned = [fit_trust([e for row, _, _ in parsed if half[id(row)] != k for e in examples[id(row)]])
                    for k in (0, 1)]
         show("reread, learned on the other half", lambda row: replace(model, trust=learned[half[id(row)]]))

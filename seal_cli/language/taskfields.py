@@ -21,6 +21,10 @@ reading is given :attr:`FieldModel.trust` (a log-odds bonus per field, chosen on
 none); the receptacle (none for a look, else a class); the movable receptacle only for a stack. Only classes of the
 vocabulary are candidates (in a room, its classes).
 
+The bonus is one weight of a few features of each candidate value (:func:`candidates`, :func:`score`); they can be
+learned on parses of held-out train sentences (:func:`fit_trust`, ``build_task_fields.py --dev 0.2 --learn``), but
+learned so they were no better than the hand-set bonuses (``docs/language.md``, alfred21), which stay shipped.
+
 **What changes in the parse** (:func:`reread`): when the combined type is the parser's, only the classes of the
 phrases the parser read the fields from (the root of a pronoun's chain), when they differ; when it is another type
 (or a field has no phrase), the frames are written anew from the fields, the parser's phrases reused where they
