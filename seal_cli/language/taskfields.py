@@ -259,9 +259,9 @@ def candidates(model: FieldModel, name: str, grams: Sequence[str], reading: Read
     joint: dict[str, float] = {}
     if name == "type" and values:
         room = {*present, NOTHING}
-        for other in ("mrecep", "receptacle"):
-            q = model.probabilities(other, grams, room)
-            joint[other] = min(max(q.get(NOTHING, 0.0), 1e-6), 1 - 1e-6) if q else 0.5
+        for field_name in ("mrecep", "receptacle"):
+            q = model.probabilities(field_name, grams, room)
+            joint[field_name] = min(max(q.get(NOTHING, 0.0), 1e-6), 1 - 1e-6) if q else 0.5
     out: dict[str, dict[str, float]] = {}
     for value in sorted(values):
         x = {f"scale:{name}": _lp(p, value)}
