@@ -149,8 +149,8 @@ def dev(args: argparse.Namespace, bwc: ModuleType, rows: list[dict[str, str]]) -
 
     show("parser", lambda row: None)
     for i, trust in enumerate(args.trusts):
-        label = "shipped" if trust == dict(TRUST) else ",".join(f"{trust[f]:g}" for f in FIELDS)
-        show("reread, trust " + label, lambda row, t=trust: replace(model, trust=t), keep=i == 0)
+        shown = "shipped" if trust == dict(TRUST) else ",".join(f"{trust[f]:g}" for f in FIELDS)
+        show("reread, trust " + shown, lambda row, t=trust: replace(model, trust=t), keep=i == 0)
     if args.learn:
         # the combination learned on the held-out parses: scored on each half by the weights learned on the other
         examples = {id(row): trust_examples(model, row, text, parse, tried) for row, text, parse in parsed}
