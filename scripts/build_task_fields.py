@@ -11,7 +11,9 @@ fraction F of the train trials (or of the floor plans, ``--hold-out floor-plans`
 ``build_word_classes.py --dev`` does (the same hash), fits the word-class table and this model on the others, parses
 the held-out sentences and prints the five fields as the scorer reads them, the parser alone and reread with each
 ``--trust`` tried (the parser's bonus, one number for every field, or ``type,object,receptacle,mrecep``): the shipped
-trust was chosen there, never on a valid split.
+trust was chosen there, never on a valid split. With ``--learn`` the combination's weights are learned there too
+(``taskfields.fit_trust`` on one half of the held-out sentences, scored on the other half, and the other way
+round; then the weights learned on all of them are printed).
 """
 
 from __future__ import annotations
@@ -20,21 +22,33 @@ import argparse
 import importlib.util
 import json
 import sys
+import zlib
 from collections import Counter
+from collections.abc import Callable
 from pathlib import Path
 from types import ModuleType
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
+from seal_cli.language.grounding import Vocabulary  # noqa: E402
 from seal_cli.language.taskfields import (  # noqa: E402
     FIELDS,
     SHIPPED,
+    TRUST,
     FieldModel,
+    candidates,
+    field_classes,
     fit_fields,
+    fit_trust,
+    label,
     model_json,
+    read_fields,
     reread,
+    sentence_grams,
+    wanted,
 )
+from seal_cli.language.values import Parse  # noqa: E402
 
 TOLERANCE = 0.011
 """How far a fitted weight may move (a last decimal rounded the other way) before the shipped model is stale."""
@@ -71,6 +85,9 @@ def differences(shipped: object, built: object, path: str = "") -> list[str]:
 def trusts(said: list[str]) -> list[dict[str, float]]:
     out = []
     for text in said:
+        if text == "shipped":
+            out.append(dict(TRUST))
+            continue
         try:
             numbers = [float(x) for x in text.split(",")]
         except ValueError:
@@ -111,9 +128,10 @@ def dev(args: argparse.Namespace, bwc: ModuleType, rows: list[dict[str, str]]) -
             parsed.append((row, text, None))
     errors: list[str] = []
 
-    def show(name: str, model: FieldModel | None, keep: bool = False) -> None:
+    def show(name: str, model_of: Callable[[dict[str, str]], FieldModel | None], keep: bool = False) -> None:
         hits: Counter[str] = Counter()
         for row, text, parse in parsed:
+            model = model_of(row)
             if parse is not None and model is not None:
                 parse = reread(parse, library, tried, model, text)
             got_json = parse.to_json() if parse is not None else {}
@@ -129,13 +147,43 @@ def dev(args: argparse.Namespace, bwc: ModuleType, rows: list[dict[str, str]]) -
         print(f"{name:<44}" + " ".join(f"{k} {hits[k] / n:.3f}" for k in ("all", *scorer.FIELDS))
               + f" ({n - hits['all']} wrong)", flush=True)
 
-    show("parser", None)
+    show("parser", lambda row: None)
     for i, trust in enumerate(args.trusts):
-        show("reread, trust " + ",".join(f"{trust[f]:g}" for f in FIELDS), replace(model, trust=trust), keep=i == 0)
+        shown = "shipped" if trust == dict(TRUST) else ",".join(f"{trust[f]:g}" for f in FIELDS)
+        show("reread, trust " + shown, lambda row, t=trust: replace(model, trust=t), keep=i == 0)
+    if args.learn:
+        # the combination learned on the held-out parses: scored on each half by the weights learned on the other
+        examples = {id(row): trust_examples(model, row, text, parse, tried) for row, text, parse in parsed}
+        unit = "task_id" if args.hold_out == "trials" else "floor_plan"        # halves as the held-out part is
+        half = {id(row): zlib.crc32(row[unit].encode()) % 2 for row, _, _ in parsed}
+        learned = [fit_trust([e for row, _, _ in parsed if half[id(row)] != k for e in examples[id(row)]])
+                   for k in (0, 1)]
+        show("reread, learned on the other half", lambda row: replace(model, trust=learned[half[id(row)]]))
+        every = fit_trust([e for row, _, _ in parsed for e in examples[id(row)]])
+        print("learned on all the held-out sentences (TRUST):", json.dumps(every, sort_keys=True))
     if args.errors is not None:
         args.errors.write_text("".join(line + "\n" for line in errors))
         print(f"wrote {args.errors} ({len(errors)} sentences of the first trust scored wrong)")
     return 0
+
+
+def trust_examples(model: FieldModel, row: dict[str, str], text: str, parse: Parse | None,
+                   vocabulary: Vocabulary) -> list[tuple[dict[str, dict[str, float]], str]]:
+    """The held-out sentence's instances for :func:`fit_trust`: each field its task has, its candidates as
+    :func:`combine` weighs them, the label's value the right one."""
+    if parse is None or not parse.frames:
+        return []
+    reading = read_fields(parse)
+    present = set(vocabulary.by_key)
+    meant = field_classes(parse, reading, vocabulary)
+    grams = sentence_grams(text)
+    kind = label(row, "type")
+    out = [(candidates(model, "type", grams, reading, None, present), kind)]
+    for name in ("object", "receptacle", "mrecep"):
+        if wanted(name, kind):
+            classes = present & meant[name] if name in meant else present
+            out.append((candidates(model, name, grams, reading, classes), label(row, name)))
+    return out
 
 
 def main() -> int:
@@ -145,8 +193,12 @@ def main() -> int:
     ap.add_argument("--check", action="store_true", help="compare with the shipped model instead of writing it")
     ap.add_argument("--dev", type=float, default=0.0, help="hold out this fraction of train and score it")
     ap.add_argument("--hold-out", choices=("trials", "floor-plans"), default="trials")
-    ap.add_argument("--trust", nargs="*", default=[",".join(str(v) for v in FieldModel().trust.values())],
-                    help="with --dev: the parser's bonus to try (one number, or four: type,object,receptacle,mrecep)")
+    ap.add_argument("--trust", nargs="*", default=["shipped"],
+                    help="with --dev: the parser's bonus to try (one number, four: type,object,receptacle,mrecep, "
+                         "or 'shipped': the shipped combination)")
+    ap.add_argument("--learn", action="store_true",
+                    help="with --dev: learn the combination on the held-out parses (each half scored by the other's) "
+                         "and print the weights learned on all of them")
     ap.add_argument("--errors", type=Path, help="with --dev: write the held-out sentences scored wrong here (TSV)")
     args = ap.parse_args()
 

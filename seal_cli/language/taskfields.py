@@ -21,6 +21,10 @@ reading is given :attr:`FieldModel.trust` (a log-odds bonus per field, chosen on
 none); the receptacle (none for a look, else a class); the movable receptacle only for a stack. Only classes of the
 vocabulary are candidates (in a room, its classes).
 
+The bonus is one weight of a few features of each candidate value (:func:`candidates`, :func:`score`); they can be
+learned on parses of held-out train sentences (:func:`fit_trust`, ``build_task_fields.py --dev 0.2 --learn``), but
+learned so they were no better than the hand-set bonuses (``docs/language.md``, alfred21), which stay shipped.
+
 **What changes in the parse** (:func:`reread`): when the combined type is the parser's, only the classes of the
 phrases the parser read the fields from (the root of a pronoun's chain), when they differ; when it is another type
 (or a field has no phrase), the frames are written anew from the fields, the parser's phrases reused where they
@@ -56,8 +60,9 @@ if TYPE_CHECKING:
     from seal_cli.frames.library import Library
     from seal_cli.language.grounding import Vocabulary
 
-__all__ = ["FIELDS", "NOTHING", "SHIPPED", "TRUST", "FieldModel", "Reading", "combine", "fit_fields",
-           "load_field_model", "read_fields", "reread", "sentence_grams", "shipped_field_model"]
+__all__ = ["FIELDS", "NOTHING", "SHIPPED", "TRUST", "FieldModel", "Reading", "candidates", "combine",
+           "field_classes", "fit_fields", "fit_trust", "label", "load_field_model", "read_fields", "reread", "score",
+           "sentence_grams", "shipped_field_model", "wanted"]
 
 SHIPPED = Path(__file__).parent / "task_fields" / "alfred_train.json"
 FIELDS = ("type", "object", "receptacle", "mrecep")
@@ -91,6 +96,10 @@ MIN_COUNT = 2
 """A word or bigram is a feature when said in at least this many train sentences with the value (both ways)."""
 L2 = 1.0
 """The fit's L2 penalty."""
+UNSEEN = 1e-3
+"""The model's probability of a value it never saw a train task take (the parser's reading of a rare class)."""
+TRUST_L2 = 1.0
+"""The L2 penalty of :func:`fit_trust` (towards the unlearned combination)."""
 
 
 def sentence_grams(text: str) -> tuple[str, ...]:
@@ -133,6 +142,7 @@ class Reading:
     values: Mapping[str, str]
     at: Mapping[str, tuple[int, str] | None]
     sliced: bool
+    unsaid: frozenset[str] = frozenset()
 
 
 def _root(parse: Parse, at: tuple[int, str]) -> tuple[int, str]:
@@ -152,15 +162,23 @@ def _plural(phrase: Phrase) -> bool:
     return phrase.quantity == 2 or "two" in text or "both" in text or phrase.plural
 
 
+def _carried_to(frame: Evoked) -> bool:
+    """A Bring to a place said (a goal, no recipient: "take the box *to the shelf*"), which ends as a Place does
+    (the library's Bring: ``in(theme, goal)``)."""
+    goal = frame.elements.get("goal")
+    return frame.frame == "Bring" and goal is not None and not goal.default and "recipient" not in frame.elements
+
+
 def read_fields(parse: Parse) -> Reading:
     """The fields a parse says, read as ALFRED parses are scored (``../shared/eval/score_alfred_goals.py``): a step
     frame gives its type, a LookAt or a lamp switched on a look, two Places of two things a stack, a Place of a
     plural thing two things, else a simple placing; the object is the theme of the Slice when sliced, else of the
     first manipulating frame; the receptacle the goal of the last Place; the movable receptacle the goal of the
-    first Place of a stack."""
+    first Place of a stack. Unlike the scorer, a Bring to a place said counts as a Place (:func:`_carried_to`:
+    "put a remote into a box, take the box to the chair" is a stack whose receptacle is the chair)."""
     frames = parse.frames
     names = [f.frame for f in frames]
-    places = [i for i, f in enumerate(frames) if f.frame == "Place"]
+    places = [i for i, f in enumerate(frames) if f.frame == "Place" or _carried_to(f)]
     slices = [i for i, f in enumerate(frames) if f.frame == "Slice"]
 
     def at(i: int, role: str) -> tuple[int, str] | None:
@@ -192,25 +210,94 @@ def read_fields(parse: Parse) -> Reading:
         kind = TWO
     else:
         kind = SIMPLE
-    first = slices[0] if sliced and slices else next((i for i, f in enumerate(frames) if f.frame in MANIPULATE),
-                                                     None)
+    first = slices[0] if sliced and slices else next((i for i, f in enumerate(frames)
+                                                      if f.frame in MANIPULATE or _carried_to(f)), None)
     where = {"object": at(first, "theme") if first is not None else None,
              "receptacle": at(places[-1], "goal") if places and kind != LOOK else None,
              "mrecep": at(places[0], "goal") if kind == STACK else None}
     values = {}
+    unsaid = set()
     for name, w in where.items():
         p = phrase(w)
         values[name] = class_key(p.cls) if p is not None and p.cls else NOTHING
-    return Reading(kind, values, where, sliced)
+        if p is not None and p.default:
+            unsaid.add(name)
+    return Reading(kind, values, where, sliced, frozenset(unsaid))
 
 
-def _best(p: Mapping[str, float], said: str | None, trust: float) -> tuple[str, float] | None:
-    """The value most probable once ``said`` (the parser's) gets the bonus ``trust``, with its probability."""
-    if not p:
+def _lp(p: Mapping[str, float], value: str) -> float:
+    return math.log(max(p.get(value, UNSEEN), 1e-12))
+
+
+def candidates(model: FieldModel, name: str, grams: Sequence[str], reading: Reading, classes: Iterable[str] | None,
+               present: Iterable[str] = ()) -> dict[str, dict[str, float]]:
+    """The values the field ``name`` may take and each one's features, those :func:`combine` weighs by
+    :attr:`FieldModel.trust` (a value the model never saw has probability :data:`UNSEEN`):
+
+    * ``scale:F``: the model's log-probability of the value (weight 1 unless learned otherwise);
+    * ``F``: the value is the parser's reading (the parser's bonus); ``type:T``: the parser read the type T and the
+      value is T (a bonus of its own per type the parser read: a step it reads is surer than a plain placing it
+      reads when the sentence says no step); ``F:unsaid``: the value is the parser's and its phrase was no one's
+      words (a default, an inferred goal);
+    * ``read:T:U``: the parser read the type T, the value is another type U (which readings the words overrule);
+      ``F:other``: a class the parser read for another field (a stack's two goals the wrong way round);
+    * ``bias:type:T``: the value is the type T; ``sliced:T``: the value is T and the parser read the thing sliced;
+    * ``joint:mrecep``, ``joint:receptacle`` (the type's values only): the log-probability, by the movable
+      receptacle's and the receptacle's models among ``present`` and none, that the field exists as the type says
+      (a stack has a movable receptacle, a look no receptacle): the fields decoded jointly, softly.
+
+    ``classes``: the classes a class field may take (None for the type)."""
+    if name == "type":
+        p = model.probabilities("type", grams)
+        said = reading.type
+    else:
+        keep = set(classes or ())
+        p = model.probabilities(name, grams, keep)
+        said = reading.values[name] if reading.values[name] in keep else None
+    values = set(p) | ({said} if said is not None else set())
+    other = {v for n, v in reading.values.items() if n != name and v != NOTHING}
+    joint: dict[str, float] = {}
+    if name == "type" and values:
+        room = {*present, NOTHING}
+        for field_name in ("mrecep", "receptacle"):
+            q = model.probabilities(field_name, grams, room)
+            joint[field_name] = min(max(q.get(NOTHING, 0.0), 1e-6), 1 - 1e-6) if q else 0.5
+    out: dict[str, dict[str, float]] = {}
+    for value in sorted(values):
+        x = {f"scale:{name}": _lp(p, value)}
+        if value == said:
+            x[name] = 1.0
+            if name == "type":
+                x[f"type:{value}"] = 1.0
+            elif name in reading.unsaid:
+                x[f"{name}:unsaid"] = 1.0
+        elif name == "type" and said is not None:
+            x[f"read:{said}:{value}"] = 1.0
+        elif name != "type" and value in other:
+            x[f"{name}:other"] = 1.0
+        if name == "type":
+            x[f"bias:type:{value}"] = 1.0
+            if reading.sliced:
+                x[f"sliced:{value}"] = 1.0
+            if joint:
+                x["joint:mrecep"] = math.log(1 - joint["mrecep"] if value == STACK else joint["mrecep"])
+                x["joint:receptacle"] = math.log(joint["receptacle"] if value == LOOK else 1 - joint["receptacle"])
+        out[value] = x
+    return out
+
+
+def score(trust: Mapping[str, float], features: Mapping[str, float]) -> float:
+    """A value's score: its features weighed by ``trust`` (``scale:*`` weighs 1 unless given)."""
+    return sum(v * trust.get(k, 1.0 if k.startswith("scale:") else 0.0) for k, v in features.items())
+
+
+def _best(options: Mapping[str, Mapping[str, float]], said: str | None, trust: Mapping[str, float],
+          p: Mapping[str, float]) -> tuple[str, float] | None:
+    """The value of the highest :func:`score`, with its probability by the model (ties: the parser's, then by
+    name)."""
+    if not options:
         return None
-    scores = {k: math.log(max(v, 1e-12)) for k, v in p.items()}
-    if said is not None:
-        scores[said] = scores.get(said, math.log(1e-3)) + trust
+    scores = {k: score(trust, x) for k, x in options.items()}
     best = max(scores, key=lambda k: (scores[k], k == said, k))
     return best, p.get(best, 0.0)
 
@@ -218,25 +305,72 @@ def _best(p: Mapping[str, float], said: str | None, trust: float) -> tuple[str, 
 def combine(model: FieldModel, grams: Sequence[str], reading: Reading, present: Iterable[str],
             meant: Mapping[str, frozenset[str]] | None = None) -> tuple[dict[str, str], float]:
     """The fields the sentence most likely says (type, object, receptacle, mrecep: a task type, class keys or
-    :data:`NOTHING`), the model's probabilities combined with the parser's ``reading`` (see the module), among the
-    ``present`` class keys (and for a field of ``meant``, among its classes only: those its phrase's words can
-    mean); and the type's probability."""
+    :data:`NOTHING`), the model's probabilities combined with the parser's ``reading`` (see the module and
+    :func:`candidates`), among the ``present`` class keys (and for a field of ``meant``, among its classes only:
+    those its phrase's words can mean); and the type's probability."""
     present = set(present)
     trust = model.trust
-    kind = _best(model.probabilities("type", grams), reading.type, trust.get("type", 0.0))
+    options = candidates(model, "type", grams, reading, None, present)
+    kind = _best(options, reading.type, trust, model.probabilities("type", grams))
     out = {"type": kind[0] if kind else (reading.type or SIMPLE)}
     chance = kind[1] if kind else 1.0
     for name in ("object", "receptacle", "mrecep"):
-        wanted = name == "object" or (name == "receptacle" and out["type"] != LOOK) \
-            or (name == "mrecep" and out["type"] == STACK)
-        if not wanted:
+        if not wanted(name, out["type"]):
             out[name] = NOTHING
             continue
         classes = present & meant[name] if meant and name in meant else present
         said = reading.values[name] if reading.values[name] in classes else None
-        best = _best(model.probabilities(name, grams, classes), said, trust.get(name, 0.0))
+        best = _best(candidates(model, name, grams, reading, classes), said, trust, {})
         out[name] = best[0] if best else (said or NOTHING)
     return out, chance
+
+
+def wanted(name: str, kind: str) -> bool:
+    """Whether a task of type ``kind`` has the field ``name`` (an object always; a receptacle unless a look; a
+    movable receptacle only for a stack)."""
+    return name == "object" or (name == "receptacle" and kind != LOOK) or (name == "mrecep" and kind == STACK)
+
+
+def fit_trust(instances: Sequence[tuple[Mapping[str, Mapping[str, float]], str]], l2: float = TRUST_L2,
+              digits: int = 2) -> dict[str, float]:
+    """The weights of :func:`score` that maximise the likelihood of the right value among each instance's
+    :func:`candidates` (a conditional logit: P(value) ∝ exp(score)), minus ``l2 / 2`` times the squared distance
+    from the unlearned combination (``scale:*`` 1, the rest 0); an instance whose right value is no candidate, or
+    with one candidate, teaches nothing. Fitted on parses of sentences neither the model nor the word-class table
+    was fitted on (``build_task_fields.py --dev``); deterministic (L-BFGS from the start)."""
+    import numpy as np
+    from scipy.optimize import minimize
+
+    usable = [(c, g) for c, g in instances if g in c and len(c) >= 2]
+    names = sorted({k for c, _ in usable for x in c.values() for k in x})
+    if not names:
+        return {}
+    index = {k: i for i, k in enumerate(names)}
+    start = np.array([1.0 if k.startswith("scale:") else 0.0 for k in names])
+    blocks = []
+    for c, gold in usable:
+        values = sorted(c)
+        m = np.zeros((len(values), len(names)))
+        for r, v in enumerate(values):
+            for k, x in c[v].items():
+                m[r, index[k]] = x
+        blocks.append((m, values.index(gold)))
+
+    def loss(w: np.ndarray) -> tuple[float, np.ndarray]:
+        total = 0.5 * l2 * float((w - start) @ (w - start))
+        grad = l2 * (w - start)
+        for m, g in blocks:
+            z = m @ w
+            top = z.max()
+            e = np.exp(z - top)
+            q = e / e.sum()
+            total += float(np.log(e.sum()) + top - z[g])
+            grad = grad + m.T @ q - m[g]
+        return total, grad
+
+    result = minimize(loss, start, jac=True, method="L-BFGS-B", options={"maxiter": 500, "gtol": 1e-6})
+    return {k: round(float(w), digits) for k, w in zip(names, result.x, strict=True)
+            if round(float(w), digits) != (1.0 if k.startswith("scale:") else 0.0)}
 
 
 def reread(parse: Parse, library: Library, vocabulary: Vocabulary, model: FieldModel, text: str) -> Parse:
@@ -246,7 +380,7 @@ def reread(parse: Parse, library: Library, vocabulary: Vocabulary, model: FieldM
         return parse
     reading = read_fields(parse)
     present = vocabulary.by_key
-    fields, chance = combine(model, sentence_grams(text), reading, present, _meant(parse, reading, vocabulary))
+    fields, chance = combine(model, sentence_grams(text), reading, present, field_classes(parse, reading, vocabulary))
     if fields["type"] == reading.type and all(reading.at[n] is not None or fields[n] == NOTHING
                                               for n in ("object", "receptacle", "mrecep")):
         return _reclassed(parse, reading, fields, present)
@@ -255,7 +389,7 @@ def reread(parse: Parse, library: Library, vocabulary: Vocabulary, model: FieldM
     return _written(parse, library, vocabulary, reading, fields, present, chance)
 
 
-def _meant(parse: Parse, reading: Reading, vocabulary: Vocabulary) -> dict[str, frozenset[str]]:
+def field_classes(parse: Parse, reading: Reading, vocabulary: Vocabulary) -> dict[str, frozenset[str]]:
     """For each field whose phrase was said, the classes its head can mean: those people meant by it often enough
     (:data:`MIN_SHARE`, :data:`FILL_SHARE`; :meth:`~seal_cli.language.grounding.Vocabulary.meanings`) and the
     parser's, if it grounded one ("the table": a dining, side or coffee table, never the sofa beside it). A phrase
@@ -360,7 +494,7 @@ def fit_fields(rows: Sequence[Mapping[str, str]], l2: float = L2, trust: Mapping
     priors: dict[str, dict[str, int]] = {}
     weights: dict[str, dict[str, dict[str, float]]] = {}
     for name in FIELDS:
-        labels = [_label(r, name) for r in rows]
+        labels = [label(r, name) for r in rows]
         counts = Counter(labels)
         values = tuple(sorted(counts))
         offsets = tuple(math.log(counts[v]) for v in values)
@@ -370,7 +504,7 @@ def fit_fields(rows: Sequence[Mapping[str, str]], l2: float = L2, trust: Mapping
     return FieldModel(priors, weights, trust)
 
 
-def _label(row: Mapping[str, str], name: str) -> str:
+def label(row: Mapping[str, str], name: str) -> str:
     if name == "type":
         return row["task_type"]
     if name == "receptacle" and row["task_type"] == LOOK:
@@ -401,9 +535,11 @@ def load_field_model(path: Path) -> FieldModel:
                         "receptacle, mrecep)", Where(str(path)))
     said = data.get("trust")
     trust: Mapping[str, float] = said if isinstance(said, dict) else TRUST
-    if not all(isinstance(trust.get(n, 0.0), int | float) for n in FIELDS):
-        raise SealError("trust: expected a number for each of " + ", ".join(FIELDS), Where(str(path)))
-    return FieldModel(data["priors"], data["weights"], {n: float(trust.get(n, TRUST[n])) for n in FIELDS})
+    if not all(isinstance(v, int | float) and not isinstance(v, bool) for v in trust.values()):
+        raise SealError("trust: expected a number for each weight (" + ", ".join(FIELDS) + ", ...)",
+                        Where(str(path)))
+    return FieldModel(data["priors"], data["weights"],
+                      {**{n: float(TRUST.get(n, 0.0)) for n in FIELDS}, **{k: float(v) for k, v in trust.items()}})
 
 
 @cache

@@ -12,7 +12,7 @@ from types import ModuleType
 
 import pytest
 
-from seal_cli.language.taskfields import SHIPPED
+from seal_cli.language.taskfields import SHIPPED, TRUST
 
 ROOT = Path(__file__).resolve().parents[2]
 SCRIPT = ROOT / "scripts" / "build_task_fields.py"
@@ -35,6 +35,7 @@ def test_a_weight_may_move_in_its_last_decimal_but_no_prior_may_change() -> None
         "/priors/type/x: 3 shipped, 4 built"]
     assert builder().trusts(["2", "1,2,3,4"]) == [{"type": 2.0, "object": 2.0, "receptacle": 2.0, "mrecep": 2.0},
                                                   {"type": 1.0, "object": 2.0, "receptacle": 3.0, "mrecep": 4.0}]
+    assert builder().trusts(["shipped"]) == [dict(TRUST)]
 
 
 def test_a_missing_data_folder_or_a_bad_fraction_is_named(tmp_path: Path, shared_data: Path) -> None:
