@@ -521,6 +521,8 @@ class Agent:
             if stop or isinstance(outcome, Fatal):
                 reason = stop or outcome.message
                 self.say("give_up", f"gives up: {reason}")
+                if not stop and outcome.reason is Reason.NOT_FOUND:
+                    self.report_unfound(outcome, binding)
                 return self._result(False, reason, plan, executed, Reason.BUDGET if stop else outcome.reason)
             replans += 1
             if replans > self.budget.replans:
@@ -1657,6 +1659,19 @@ class Agent:
         if not went.ok:
             return went
         return self._act_words("say", ["report"], f"tells the speaker that {said}")
+
+    def report_unfound(self, outcome: Outcome, binding: Binding) -> None:
+        """Someone the command was for who is nowhere to be found ("ask Raj if he wants tea", no Raj in the house):
+        the robot comes back to whoever asked and says so there (e2e22), as it brings back a person's answer, rather
+        than stopping where the search ended. The run still ends not done (the person was not asked); a thing not
+        found is said as before, where the search ended (what the speaker asked for is not with them either way)."""
+        who = outcome.about
+        if who is None or who == SPEAKER or SPEAKER not in self.world.items or not self._sought_person(who) \
+                or self.exhausted():
+            return
+        if self.go_to(SPEAKER, binding).ok:
+            self._act_words("say", ["report"], f"tells the speaker that it did not find {self.said(who)}: "
+                            f"{self.in_words(outcome.message)}")
 
     def in_words(self, text: str) -> str:
         """An answer as said to a person, not printed for the speaker's record: a thing's or place's id as its
