@@ -33,7 +33,7 @@ CLITICS = frozenset({"s", "t", "re", "ll", "ve", "d", "m"})
 WH_WORDS = frozenset({"what", "where", "when", "who", "whom", "whose", "which", "why", "how"})
 AUXILIARIES = frozenset({"do", "does", "did", "is", "are", "was", "were", "am", "can", "could", "will", "would",
                          "shall", "should", "may", "might", "must", "have", "has", "had", "isn", "aren", "don",
-                         "doesn", "didn", "can", "won", "wouldn", "couldn", "shouldn", "hasn", "haven"})
+                         "doesn", "didn", "won", "wouldn", "couldn", "shouldn", "hasn", "haven"})
 """The words that open a question: wh-words, and auxiliaries put in front of the subject ("do you ...?",
 "isn't it ...?": ``isn`` is the auxiliary's part before its ``'t``)."""
 

@@ -246,10 +246,10 @@ class Vocabulary:
 
     def ground_words(self, words: Sequence[str], head: int = -1, of: Sequence[str] = ()) -> str | None:
         """The class that words denote (``head`` indexes the head word), or None."""
-        said = tuple(w.lower() for w in words if w)
-        if self._spelled and not of and (head == -1 or head == len(said) - 1):
-            for start in range(len(said)):          # "a glass" where glasses are a class too: the form said
-                index = self._spelled.get(said[start:])
+        spelled = tuple(w.lower() for w in words if w)
+        if self._spelled and not of and (head == -1 or head == len(spelled) - 1):
+            for start in range(len(spelled)):       # "a glass" where glasses are a class too: the form said
+                index = self._spelled.get(spelled[start:])
                 if index is not None:
                     return self.classes[index]
         words = _lemmas(w for w in words if w)
