@@ -1,7 +1,7 @@
 """Draw the occupancy images of the example houses ``townhouse.yaml``, ``office_floor.yaml``,
 ``cafe.yaml`` and ``clinic.yaml``, and of the context suite's unseen houses ``farmhouse.yaml`` and
-``terrace.yaml``, the L-shaped ``bungalow.yaml``, and ``lodge.yaml``, e2e21's held-out holiday lodge (run once;
-the PGMs are committed next to this script).
+``terrace.yaml``, the L-shaped ``bungalow.yaml``, ``lodge.yaml``, e2e21's held-out holiday lodge, and
+``flat.yaml``, e2e22's held-out long flat (run once; the PGMs are committed next to this script).
 
     python maps/make_houses.py          # rewrites maps/<house>.pgm for each of HOUSES
 
@@ -174,7 +174,25 @@ LODGE = House(
     ),
 )
 
-HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC, FARMHOUSE, TERRACE, BUNGALOW, LODGE)
+FLAT = House(
+    "flat", (0.0, 0.0, 20.0, 8.0),
+    walls=(
+        ((3.0, 0.0, 3.0, 8.0), ((3.7, 4.8),)),                 # hall | corridor (the hall is the whole west end)
+        ((3.0, 5.0, 20.0, 5.0), ((5.0, 6.0), (16.0, 17.0))),   # corridor | living room, corridor | kitchen
+        ((9.0, 5.0, 9.0, 8.0), ((6.0, 7.0),)),                 # living room | dining room
+        ((13.0, 5.0, 13.0, 8.0), ((6.0, 7.0),)),               # dining room | kitchen
+        ((3.0, 3.5, 20.0, 3.5), ((4.0, 5.0), (7.5, 8.5), (12.0, 13.0), (17.0, 18.0))),  # corridor | the south rooms
+        ((6.0, 0.0, 6.0, 3.5), ()),                            # bathroom | nursery
+        ((10.0, 0.0, 10.0, 3.5), ()),                          # nursery | bedroom
+        ((15.0, 0.0, 15.0, 3.5), ()),                          # bedroom | study
+    ),
+    blocks=(
+        (3.2, 7.6, 5.0, 7.925),    # the piano against the living room's north wall
+        (13.1, 0.1, 14.9, 0.5),    # the bedroom's wardrobe against the south wall
+    ),
+)
+
+HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC, FARMHOUSE, TERRACE, BUNGALOW, LODGE, FLAT)
 
 
 def draw(house: House) -> np.ndarray:

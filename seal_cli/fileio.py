@@ -541,6 +541,22 @@ def _sweep(target: Path) -> None:
                     os.unlink(entry.path)
 
 
+def _check_not_stdout(path: Path, option: str) -> None:
+    """Refuse an output file that is the command's standard output (``--png /dev/stdout``, ``/dev/fd/1``, or the
+    file stdout is redirected to): the SPEC puts the command's results on stdout, and a picture or a recording
+    written onto the same stream is mixed with its lines (e2e22). ``/dev/null`` as both is no mix: allowed."""
+    target = _identity(path)
+    if target is None:
+        return
+    try:
+        info = os.fstat(1)
+    except OSError:     # no standard output at all: nothing to mix with
+        return
+    if target == (info.st_dev, info.st_ino) and target != _identity(Path(os.devnull)):
+        raise SealError(f"{option} {str(path)!r} is standard output, where seal prints its results; the output "
+                        "would be mixed with them: give a file name")
+
+
 def _identity(path: Path) -> tuple[int, int] | None:
     try:
         info = path.stat()
@@ -591,6 +607,7 @@ class Outputs:
                 planned.extend((f"{option} {name}", folder / name) for name in folders[option])
             else:
                 _check_suffix(Path(value), option, (suffixes or {}).get(option, ()))
+                _check_not_stdout(Path(value), option)
                 planned.append((option, Path(value)))
         _check_distinct(planned, [Path(p) for p in inputs if p is not None], guard_read)
         self._guard_read = guard_read

@@ -50,6 +50,8 @@ def show(plan: Plan) -> None:
     checks the command's condition, when the run checks one ("if Tom is in the garage")."""
     from rich.table import Table
 
+    from seal_cli.frames.said import shown_elements
+
     if plan.check is not None:     # what the run looks at first; the steps below only if the condition holds
         out.print(f"[dim]checks first:[/dim] {plain(plan.check.question)} "
                   f"({plain(', '.join(plan.check.looks))}); then, only if {plain(plan.check.said.split(None, 1)[1])}:")
@@ -57,7 +59,7 @@ def show(plan: Plan) -> None:
     for column in ("number", "frame", "elements", "because"):
         table.add_column(justify="right" if column == "number" else "left")
     for i, step in enumerate(plan.steps, 1):
-        elements = plain(", ".join(f"{role}={value}" for role, value in step.elements.items()))
+        elements = plain(", ".join(f"{role}={value}" for role, value in shown_elements(step.binding)))
         frame = styled("bold", step.frame) if step.commanded else plain(step.frame)
         because = styled("dim", f"← {step.because}") if step.because else ""
         table.add_row(f"{i}.", frame, elements, because)

@@ -8,7 +8,8 @@ problem rather than stopping at the first:
 - an element typed with an unknown category, or a default outside its category;
 - an action that is not a known primitive, or has the wrong number of arguments;
 - a predicate used with different numbers of arguments;
-- a precondition that no frame's postcondition achieves and that is not a world fact;
+- a precondition that no frame's postcondition achieves and that is not a world fact (a negated one, `not f(x)`,
+  holds in the closed world until something makes `f(x)` true: it needs no achiever);
 - preconditions that can only be achieved in a cycle (A needs what only B gives, B needs what only A gives);
 - two frames claiming the same lexical unit with the same element pattern (the parser could not choose);
 - a synonym claimed by two classes, or naming a category (grounding could not choose).
@@ -108,7 +109,7 @@ def _unachieved(frames: Sequence[Frame], taxonomy: Taxonomy) -> Iterator[SealErr
     produced = sorted({p.predicate for f in frames for p in f.postconditions if not p.negated})
     for frame in frames:
         for fact in frame.preconditions:
-            if not _is_world(fact, taxonomy) and _key(fact) not in achieved:
+            if not _is_world(fact, taxonomy) and not fact.negated and _key(fact) not in achieved:
                 yield SealError(f"precondition {fact} of {frame.name} is achieved by no frame's postcondition "
                                 f"and is not a world fact{_near(fact, achieved, produced)}; "
                                 "declare it under 'world:' if the world or robot provides it", fact.where)
@@ -137,7 +138,7 @@ def _cycles(frames: Sequence[Frame], taxonomy: Taxonomy) -> Iterator[SealError]:
     Horn clauses are solved), and the cycles among the rest are the strongly connected components
     of the graph frame → need → achiever (Tarjan)."""
     unique = {f.name: f for f in frames}
-    needs = {name: {_key(fact) for fact in f.preconditions if not _is_world(fact, taxonomy)}
+    needs = {name: {_key(fact) for fact in f.preconditions if not _is_world(fact, taxonomy) and not fact.negated}
              for name, f in unique.items()}
     achievers: dict[tuple[str, bool, int], list[str]] = {}
     for name, frame in unique.items():

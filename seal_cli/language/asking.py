@@ -33,7 +33,7 @@ from seal_cli.language.english import (
 )
 from seal_cli.language.morphology import in_dictionary, participles, verb_lemma
 
-__all__ = ["ASKING", "IFS", "WH_ASKED", "direct_question", "person_subject"]
+__all__ = ["ASKING", "IFS", "WH_ASKED", "contracted_wh", "direct_question", "person_subject"]
 
 ASKING = frozenset(["ask", "inquire", "enquire", "query"])
 """Verbs of asking: after the person asked, "if"/"whether" and a clause is the question put to them ("*ask* Raj if
@@ -74,6 +74,8 @@ def direct_question(words: Sequence[str], asked: Sequence[str] = ()) -> str | No
     (``asked``: the words that name them, "Raj"), ending in "?"; None when the words are no indirect yes/no
     question (no "if"/"whether" first, or no verb after a subject). A question word first asks a wh-question
     (:func:`_wh_question`: "where the stapler is": "where is the stapler?")."""
+    if words and contracted_wh(words[0]):   # "what's in the fridge": the verb already follows the question word
+        return " ".join(words).rstrip(" ?.!") + "?"
     if words and words[0].lower() in WH_ASKED:
         return _wh_question(words, asked)
     if len(words) < 3 or words[0].lower() not in IFS:
@@ -115,6 +117,14 @@ WH_ASKED = frozenset(["what", "which", "who", "whom", "whose", "where", "when", 
 """Question words that start an indirect wh-question ("ask Maria *where* the stapler is")."""
 _WH_NOUN = frozenset(["which", "whose", "what"])
 """Question words that may take a noun after them ("*which* mug is hers", "*what* time it is")."""
+
+
+def contracted_wh(word: str) -> bool:
+    """Whether a word is a question word with its verb contracted onto it ("what's", "who's", "where're",
+    "how'd"): an indirect question so opened is in the direct question's order already ("ask Kenji *what's in the
+    fridge*": "what's in the fridge?", e2e22), as one whose question word is its subject is."""
+    head, mark, clitic = word.lower().replace("\u2019", "'").partition("'")
+    return bool(mark) and head in WH_ASKED and clitic in ("s", "re", "ve", "d", "ll")
 
 
 def _wh_question(words: Sequence[str], asked: Sequence[str] = ()) -> str | None:

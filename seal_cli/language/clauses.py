@@ -27,7 +27,7 @@ from dataclasses import replace
 
 from seal_cli.frames.library import Library
 from seal_cli.frames.taxonomy import class_key
-from seal_cli.language.asking import ASKING, IFS, WH_ASKED, direct_question, person_subject
+from seal_cli.language.asking import ASKING, IFS, WH_ASKED, contracted_wh, direct_question, person_subject
 from seal_cli.language.element_types import Types
 from seal_cli.language.english import FIRST_LATER
 from seal_cli.language.lexicon import CommandError, Word
@@ -164,7 +164,8 @@ class Clauses:
         spans = [(m.start() + message.start, m.end() + message.start)
                  for m in re.finditer(r"[^\s,;:?!.]+", self.text[message.start:message.end])]
         words = [self.text[a:b] for a, b in spans]
-        if not words or words[0].lower() not in IFS | WH_ASKED or words[0].lower() in WH_ASKED and not objects:
+        wh = bool(words) and (words[0].lower() in WH_ASKED or contracted_wh(words[0]))     # "what's in it"
+        if not words or words[0].lower() not in IFS and not wh or wh and not objects:
             return                      # a wh-question is put to a person said ("ask Maria where the stapler is")
         if not objects:
             size = person_subject(words[1:], self.types.taxonomy.members("person") | {"person"}, ())

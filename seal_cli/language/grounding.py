@@ -75,7 +75,7 @@ _NO_SLICES = SliceModel()
 _NO_GOALS = GoalModel()
 _NO_TASKS = TaskModel()
 _NO_FIELDS = FieldModel()
-_INDEXES = ("_usage", "_present", "_names", "_own", "_exact", "_by_word", "_rules_alone", "_in_scope")
+_INDEXES = ("_usage", "_present", "_names", "_own", "_exact", "_spelled", "_by_word", "_rules_alone", "_in_scope")
 """The cached indexes a vocabulary builds from its classes and usage, which do not depend on the sentence."""
 
 
@@ -181,6 +181,17 @@ class Vocabulary:
         return exact
 
     @cached_property
+    def _spelled(self) -> dict[tuple[str, ...], int]:
+        """The own names, as spelled, of classes whose names are one word by their lemmas (e2e22: a house's
+        ``glass`` and its ``glasses``, whose lemma is "glass" too): there the form said tells them apart, "a glass"
+        the one, "my glasses" the other, before any statistic of what people mean by the lemma."""
+        by_lemma: dict[tuple[str, ...], list[int]] = {}
+        for index, name in enumerate(self.classes):
+            by_lemma.setdefault(_lemmas(class_words(name)), []).append(index)
+        return {class_words(self.classes[i]): i for same in by_lemma.values() if len(set(
+            class_words(self.classes[j]) for j in same)) > 1 for i in same}
+
+    @cached_property
     def _by_word(self) -> dict[str, list[tuple[int, tuple[str, ...]]]]:
         """Word → (class index, name) of every name with the word, own names first ("bin" is the
         head of the trash can's "trash bin", as "clock" is of AlarmClock)."""
@@ -235,6 +246,12 @@ class Vocabulary:
 
     def ground_words(self, words: Sequence[str], head: int = -1, of: Sequence[str] = ()) -> str | None:
         """The class that words denote (``head`` indexes the head word), or None."""
+        spelled = tuple(w.lower() for w in words if w)
+        if self._spelled and not of and (head == -1 or head == len(spelled) - 1):
+            for start in range(len(spelled)):       # "a glass" where glasses are a class too: the form said
+                index = self._spelled.get(spelled[start:])
+                if index is not None:
+                    return self.classes[index]
         words = _lemmas(w for w in words if w)
         of = _lemmas(w for w in of if w)
         if not words and not of:

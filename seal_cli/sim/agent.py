@@ -40,6 +40,7 @@ import numpy as np
 from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Action, Binding, Fact
+from seal_cli.frames.said import said_words, shown
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.model import SPEAKER, Map
 from seal_cli.planning.grounding import kind_of, spoken
@@ -459,7 +460,7 @@ class Agent:
         todo = list(commanded)
         while todo and (already := self.already_so(todo[0])) is not None:
             skipped = todo.pop(0)
-            self.say("done", f"{already}, so {skipped} needs no doing", frame=str(skipped))
+            self.say("done", f"{already}, so {shown(skipped)} needs no doing", frame=str(skipped))
         self.todo = todo
         try:
             steps = self.planner(todo, self.library, self.state)
@@ -472,7 +473,7 @@ class Agent:
 
             self.told = {self.class_of(k): v for k, v in said_where(steps).items()}
         plan = [str(b) for b in steps]
-        self.say("plan", "plan: " + ", ".join(plan) if plan else "nothing to do", plan=plan)
+        self.say("plan", "plan: " + ", ".join(shown(b) for b in steps) if plan else "nothing to do", plan=plan)
         for binding in todo:        # a goal chosen before the robot has seen the thing: said as such
             theme, goal = binding.elements.get("theme"), binding.elements.get("goal")
             if binding in self.put_back:
@@ -486,7 +487,7 @@ class Agent:
         replans = 0
         while self.index < len(self.steps):
             binding = self.steps[self.index]
-            self.say("frame", f"{binding}", frame=str(binding))
+            self.say("frame", shown(binding), frame=str(binding))
             outcome = self.execute(binding)
             if outcome.ok:
                 self.state = self.state.apply(binding)
@@ -495,12 +496,12 @@ class Agent:
                 passed = False
                 if todo and binding == todo[0]:
                     todo.pop(0)
-                    self.say("done", f"done: {binding}", frame=str(binding))
+                    self.say("done", f"done: {shown(binding)}", frame=str(binding))
                     while todo and (already := self.already_so(todo[0])) is not None:   # so by its turn
                         skipped, passed = todo.pop(0), True
-                        self.say("done", f"{already}, so {skipped} needs no doing", frame=str(skipped))
+                        self.say("done", f"{already}, so {shown(skipped)} needs no doing", frame=str(skipped))
                 else:
-                    self.say("done", f"done: {binding}", frame=str(binding))
+                    self.say("done", f"done: {shown(binding)}", frame=str(binding))
                 if passed:
                     if (failed := self._replan(todo, self.resync(self.state))) is not None:
                         return self._result(False, failed, plan, executed, Reason.CANNOT)
@@ -512,7 +513,7 @@ class Agent:
                 continue
             if outcome.reason is Reason.ALREADY:     # what the next commanded frame would do is so already
                 skipped = todo.pop(0)
-                self.say("done", f"{outcome.message}, so {skipped} needs no doing", frame=str(skipped))
+                self.say("done", f"{outcome.message}, so {shown(skipped)} needs no doing", frame=str(skipped))
                 if (failed := self._replan(todo, self.resync(self.state))) is not None:
                     return self._result(False, failed, plan, executed, Reason.CANNOT)
                 continue
@@ -520,6 +521,8 @@ class Agent:
             if stop or isinstance(outcome, Fatal):
                 reason = stop or outcome.message
                 self.say("give_up", f"gives up: {reason}")
+                if not stop and outcome.reason is Reason.NOT_FOUND:
+                    self.report_unfound(outcome, binding)
                 return self._result(False, reason, plan, executed, Reason.BUDGET if stop else outcome.reason)
             replans += 1
             if replans > self.budget.replans:
@@ -1638,7 +1641,7 @@ class Agent:
         the parser made of it ("do you want tea?"), narrated as asked of them. The simulator's people do not speak,
         so what the robot brings back to the speaker (the run's answer) says plainly that the person gave none
         ("Raj gave no answer (...)"), rather than leaving the speaker to wonder what was said."""
-        asked = str(binding.elements.get("message", "")).replace("_", " ").strip()
+        asked = said_words(str(binding.elements.get("message", ""))).strip()
         person = binding.elements.get("recipient")
         whom = f" {person}" if person is not None and person != SPEAKER else ""
         outcome = self._act_words("say", [binding.elements.get("message", asked)], f'asked{whom} "{asked}?"')
@@ -1656,6 +1659,19 @@ class Agent:
         if not went.ok:
             return went
         return self._act_words("say", ["report"], f"tells the speaker that {said}")
+
+    def report_unfound(self, outcome: Outcome, binding: Binding) -> None:
+        """Someone the command was for who is nowhere to be found ("ask Raj if he wants tea", no Raj in the house):
+        the robot comes back to whoever asked and says so there (e2e22), as it brings back a person's answer, rather
+        than stopping where the search ended. The run still ends not done (the person was not asked); a thing not
+        found is said as before, where the search ended (what the speaker asked for is not with them either way)."""
+        who = outcome.about
+        if who is None or who == SPEAKER or SPEAKER not in self.world.items or not self._sought_person(who) \
+                or self.exhausted():
+            return
+        if self.go_to(SPEAKER, binding).ok:
+            self._act_words("say", ["report"], f"tells the speaker that it did not find {self.said(who)}: "
+                            f"{self.in_words(outcome.message)}")
 
     def in_words(self, text: str) -> str:
         """An answer as said to a person, not printed for the speaker's record: a thing's or place's id as its

@@ -582,7 +582,9 @@ class World:
         return Outcome(True, "waits")
 
     def _do_say(self, message: str) -> Outcome:
-        return Outcome(True, f"said \"{message.replace('_', ' ')}\"")     # the message's name, as words
+        from seal_cli.frames.said import said_words
+
+        return Outcome(True, f"said \"{said_words(message)}\"")     # the message's name, as words ("it's ready")
 
 
 _TEXT_ARGS = {"search", "count", "say", "answer", "lead"}

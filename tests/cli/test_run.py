@@ -147,3 +147,29 @@ def test_bench_tasks_refuses_an_option_its_suite_does_not_read(args: list[str], 
     assert (result.exit_code, result.stderr) == (1, said)
     again = runner.invoke(app, ["bench", "tasks", "--suite", "map", "--split", "valid_seen", "--goal", "gold"])
     assert again.exit_code == 1 and "--suite map does not read --split, --goal" in again.stderr
+
+
+def test_run_refuses_a_png_onto_its_own_standard_output(tmp_path: Path) -> None:
+    """``--png`` naming the file standard output goes to (``/dev/stdout``; here a file stdout is redirected to) is
+    refused before the robot moves, exit 1 with the option named on stderr: the picture would be mixed with the
+    run's lines (e2e22). The same picture to another file is written."""
+    import os
+    import subprocess
+    import sys
+
+    root = Path(__file__).resolve().parents[2]
+    env = {**os.environ, "PYTHONPATH": str(root)}
+    shared = tmp_path / "out.png"
+    args = [sys.executable, "-m", "seal_cli", "run", "--map", "apartment", "go to the kitchen", "--particles", "50"]
+    with shared.open("wb") as stdout:
+        refused = subprocess.run([*args, "--png", str(shared)], stdout=stdout, stderr=subprocess.PIPE, env=env,
+                                 cwd=tmp_path, text=False, check=False)
+    said = refused.stderr.decode()
+    assert refused.returncode == 1 and "--png" in said and "standard output" in said and "Traceback" not in said
+    assert shared.read_bytes() == b""        # nothing written onto the stream, the robot never moved
+    apart = tmp_path / "apart.png"
+    with (tmp_path / "lines.txt").open("wb") as stdout:
+        written = subprocess.run([*args, "--png", str(apart)], stdout=stdout, stderr=subprocess.PIPE, env=env,
+                                 cwd=tmp_path, check=False)
+    assert written.returncode == 0, written.stderr.decode()
+    assert apart.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and b"done" in (tmp_path / "lines.txt").read_bytes()

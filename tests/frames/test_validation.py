@@ -102,3 +102,22 @@ def test_cycle_needs_every_achiever_inside_it() -> None:
     # A third frame that achieves `filled` without needing anything breaks the cycle.
     escape = Frame("Pour", elements=(Element("theme", "thing"),), postconditions=(Fact("filled", ("theme",)),))
     assert not any("cycle" in p.message for p in check_library([*looped, escape], taxonomy))
+
+
+def test_a_negated_precondition_needs_no_achiever_and_makes_no_cycle(tmp_path: Path) -> None:
+    """``requires not zapped(theme)`` (a "do it once" frame) holds in the closed world until something makes
+    ``zapped`` true, so it is no unachieved precondition, and a pair toggling it (Zap, Unzap) no cycle (e2e22);
+    a positive precondition nothing achieves is still refused."""
+    taxonomy = Taxonomy.of({"thing": None})
+    theme = (Element("theme", "thing"),)
+    zap = Frame("Zap", elements=theme, preconditions=(Fact("zapped", ("theme",), negated=True),),
+                postconditions=(Fact("zapped", ("theme",)),))
+    unzap = Frame("Unzap", elements=theme, preconditions=(Fact("zapped", ("theme",)),),
+                  postconditions=(Fact("zapped", ("theme",), negated=True),))
+    assert check_library([zap], taxonomy) == [] and check_library([zap, unzap], taxonomy) == []
+    blessed = Frame("Bless", elements=theme, preconditions=(Fact("holy", ("theme",)),))
+    assert any("achieved by no frame" in p.message for p in check_library([zap, blessed], taxonomy))
+    dsl = tmp_path / "zap.frame"
+    dsl.write_text('frame Zap "zap" {\n  theme: object\n  requires not zapped(theme)\n  do navigate(theme)\n'
+                   '  ensures zapped(theme)\n}\n')
+    assert validate_paths([dsl], with_stdlib=True).problems == []

@@ -94,3 +94,19 @@ def test_ask_a_person_a_wh_question_puts_it_to_them(library: Library) -> None:
     (tell,) = parse_command("ask Maria where the stapler is", library).frames
     assert (tell.frame, tell.elements["message"].head, tell.elements["recipient"].head) == \
         ("Tell", "where is the stapler?", "Maria")
+
+
+@pytest.mark.parametrize(("command", "question"), [
+    ("ask Kenji what's in the mini fridge", "what's in the mini fridge?"),
+    ("ask Omar who's at the door", "who's at the door?"),
+    ("ask Maria where the stapler is", "where is the stapler?"),
+])
+def test_a_question_word_with_its_verb_contracted_is_asked_as_said(library: Library, command: str,
+                                                                   question: str) -> None:
+    """"ask Kenji what's in the mini fridge" (e2e22): the contraction puts the verb after the question word already,
+    so the question is put to Kenji as said (was left a message the robot answered itself, looking in the fridge);
+    "tell Kenji what's in the mini fridge" is still the robot's to find out."""
+    message = parse_command(command, library).frames[0].elements["message"]
+    assert message.head == question
+    told = parse_command("tell Kenji what's in the mini fridge", library).frames[0].elements["message"]
+    assert told.head == told.text == "what's in the mini fridge"

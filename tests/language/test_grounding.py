@@ -327,3 +327,15 @@ def test_a_vocabulary_name_longer_than_any_name_is_refused_at_its_entry(tmp_path
     assert (caught.value.where.line, caught.value.where.column) == where
     (tmp_path / "v.yaml").write_text("- " + "c" * 100 + "\n")
     assert load_vocabulary(tmp_path / "v.yaml").classes == ("c" * 100,)
+
+
+def test_the_form_said_tells_apart_classes_one_by_their_lemmas() -> None:
+    """A house with a drinking ``glass`` and reading ``glasses`` (both "glass" by lemma, e2e22): "a glass" is the
+    glass, "my glasses" the glasses, in either order of the classes; with only one of them, either form names it."""
+    for classes in (["glasses", "glass", "cup"], ["glass", "glasses", "cup"]):
+        both = Vocabulary.of(classes)
+        assert both.ground_words(["a", "glass"]) == "glass" and both.ground_words(["glass"]) == "glass"
+        assert both.ground_words(["my", "glasses"]) == "glasses"
+        assert both.ground_words(["wine", "glass"]) == "glass"
+    assert Vocabulary.of(["glasses", "cup"]).ground_words(["glass"]) == "glasses"
+    assert Vocabulary.of(["glass", "cup"]).ground_words(["glasses"]) == "glass"

@@ -13,7 +13,7 @@ import pytest
 from seal_cli.maps.formats.map_server import load_map, read_pgm
 
 MAPS = Path(__file__).resolve().parents[2] / "maps"
-HOUSES = ["townhouse", "office_floor", "cafe", "clinic", "farmhouse", "terrace", "bungalow", "lodge"]
+HOUSES = ["townhouse", "office_floor", "cafe", "clinic", "farmhouse", "terrace", "bungalow", "lodge", "flat"]
 
 
 def make_houses():  # type: ignore[no-untyped-def]

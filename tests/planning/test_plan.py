@@ -591,3 +591,27 @@ def test_the_docs_code_example_runs() -> None:
     assert runnable
     for block in runnable:
         exec(compile(block, "docs/planning.md", "exec"), {})
+
+
+def test_a_negated_precondition_holds_at_the_start_and_is_achieved_by_a_deletion(tmp_path: Path) -> None:
+    """A library's ``requires not zapped(theme)`` (e2e22): met in the closed world at the start, so "zap the cup"
+    is one step; zapping it again needs the frame that deletes ``zapped`` (Unzap) first, and a library without
+    one cannot plan it."""
+    from seal_cli.frames.reading import load_library
+
+    frames = ('frame Zap "zap" {\n  theme: object\n  requires not zapped(theme)\n  do navigate(theme)\n'
+              '  ensures zapped(theme)\n}\n')
+    once = tmp_path / "zap.frame"
+    once.write_text(frames)
+    toggled = tmp_path / "unzap.frame"
+    toggled.write_text(frames + 'frame Unzap "unzap" {\n  theme: object\n  requires zapped(theme)\n'
+                       '  do navigate(theme)\n  ensures not zapped(theme)\n}\n')
+    types = tmp_path / "types.yaml"
+    types.write_text("categories:\n  object: ~\n")
+    with_unzap = load_library([str(toggled), str(types)])
+    assert [str(s) for s in plan_text("zap the cup", with_unzap).steps] == ["Zap(theme=cup)"]
+    again = plan_text("zap the cup and zap it", with_unzap)
+    assert [str(s) for s in again.steps] == ["Zap(theme=cup)", "Unzap(theme=cup)", "Zap(theme=cup)"]
+    assert again.steps[1].because is not None and "not zapped(cup)" in again.steps[1].because
+    with pytest.raises(SealError):
+        plan_text("zap the cup and zap it", load_library([str(once), str(types)]))

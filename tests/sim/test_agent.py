@@ -531,3 +531,24 @@ def test_a_narrow_sensor_looks_all_round_where_it_starts_and_at_every_view_it_ch
         x, y = agent.grid.point(cell)
         at = [p for p in agent.looks if math.dist(p[:2], (x, y)) < 1e-6]
         assert len({round(math.degrees(p[2])) % 360 for p in at}) >= 4, cell
+
+
+def test_someone_not_in_the_house_is_reported_back_to_the_speaker(library: Library) -> None:
+    """"ask Raj if he wants tea" where nobody is called Raj (the apartment: Anna and Ben): the robot searches the
+    house, then comes back to whoever asked and says it found no Raj there (e2e22); the run is still not done. A
+    thing not found ("bring me the unicorn") is not reported back: it ends where the search ended."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    m = load_map("apartment")
+    agent, result = pipeline.run_on_map(m, "ask Raj if he wants tea", library, make_policy("oracle"),
+                                        rng=np.random.default_rng(0))
+    lines = [r.text for r in agent.records]
+    gave_up = next(i for i, line in enumerate(lines) if line.startswith("gives up: ") and "no Raj" in line)
+    told = next(i for i, line in enumerate(lines) if line.startswith("tells the speaker that it did not find Raj"))
+    assert not result.completed and result.why.value == "not_found" and gave_up < told
+    assert "goes to the speaker" in lines[told - 1]
+    assert np.hypot(*(np.asarray(agent.world.robot.pose[:2]) - m.speaker_at)) < 1.5
+    agent, result = pipeline.run_on_map(m, "bring me the unicorn", library, make_policy("oracle"),
+                                        rng=np.random.default_rng(0))
+    assert not result.completed and not any(r.text.startswith("tells the speaker") for r in agent.records)
