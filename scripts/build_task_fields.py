@@ -30,6 +30,9 @@ from types import ModuleType
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from rebuilt import write_or_check  # noqa: E402  scripts/rebuilt.py, beside this script
 
 from seal_cli.language.grounding import Vocabulary  # noqa: E402
 from seal_cli.language.taskfields import (  # noqa: E402
@@ -218,25 +221,8 @@ def main() -> int:
         return dev(args, bwc, rows)
     source = f"ALFRED train goals ({goals.name}: {len(rows)} human goal sentences with their task labels)"
     text = model_json(fit_fields(rows), source)
-    if args.check:
-        try:
-            shipped = json.loads(args.out.read_text()) if args.out.is_file() else None
-        except json.JSONDecodeError as error:
-            print(f"error: {args.out}:{error.lineno}:{error.colno}: not JSON (rebuild it)", file=sys.stderr)
-            return 1
-        problems = differences(shipped, json.loads(text)) if shipped is not None else ["(no model)"]
-        if problems:
-            print(f"{args.out}: differs from what the train split gives (rebuild it): {'; '.join(problems[:5])}"
-                  f"{' ...' if len(problems) > 5 else ''}", file=sys.stderr)
-            return 1
-        print(f"{args.out}: up to date")
-        return 0
-    args.out.parent.mkdir(parents=True, exist_ok=True)
-    tmp = args.out.with_suffix(".json.tmp")
-    tmp.write_text(text)
-    tmp.replace(args.out)
-    print(f"wrote {args.out} ({len(text)} bytes)")
-    return 0
+    return write_or_check(args.out, text, check=args.check, made_from="the train split", compare=differences,
+                          summary=f"{len(text)} bytes")
 
 
 if __name__ == "__main__":

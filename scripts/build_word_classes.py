@@ -45,6 +45,9 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from rebuilt import write_or_check  # noqa: E402  scripts/rebuilt.py, beside this script
 
 from seal_cli.frames.library import Library  # noqa: E402
 from seal_cli.frames.reading import load_library  # noqa: E402
@@ -683,24 +686,8 @@ def main() -> int:
     text = dump({**with_stack_goals(with_steps(table(*count(rows, vocabulary, scenes), classes, source), rows,
                                                vocabulary), rows, vocabulary),
                  "scenery": scenery(args.data, classes)})
-    if args.check:
-        shipped = args.out.read_text() if args.out.is_file() else ""
-        try:
-            problems = differences(json.loads(shipped), json.loads(text)) if shipped else ["(no table)"]
-        except json.JSONDecodeError as error:
-            problems = [f"not JSON: {error}"]
-        if problems:
-            print(f"{args.out}: differs from what the train split gives (rebuild it): "
-                  f"{'; '.join(problems[:5])}{' ...' if len(problems) > 5 else ''}", file=sys.stderr)
-            return 1
-        print(f"{args.out}: up to date")
-        return 0
-    args.out.parent.mkdir(parents=True, exist_ok=True)
-    tmp = args.out.with_suffix(".json.tmp")
-    tmp.write_text(text)
-    tmp.replace(args.out)
-    print(f"wrote {args.out} ({len(json.loads(text)['words'])} wordings)")
-    return 0
+    return write_or_check(args.out, text, check=args.check, made_from="the train split", compare=differences,
+                          summary=f"{len(json.loads(text)['words'])} wordings")
 
 
 if __name__ == "__main__":

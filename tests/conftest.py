@@ -2,9 +2,13 @@
 
 from __future__ import annotations
 
+import fcntl
 import os
 import shutil
+import subprocess
+import sys
 import tempfile
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -42,3 +46,50 @@ def shared_data() -> Path:
     if not DATA.is_dir():
         pytest.skip(f"shared data not found at {DATA}")
     return DATA
+
+
+def made_once(factory: pytest.TempPathFactory, name: str, make: Callable[[Path], None]) -> Path:
+    """A file ``make(path)`` writes, made once for the whole run: under pytest-xdist its workers share the run's
+    temporary folder and a lock in it (the first makes the file, the others wait for it and read it)."""
+    if "PYTEST_XDIST_WORKER" not in os.environ:
+        path = factory.mktemp(name) / name
+        make(path)
+        return path
+    root = factory.getbasetemp().parent
+    path = root / name
+    with open(root / f"{name}.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if not path.exists():
+            part = root / f"{name}.part"
+            make(part)
+            part.replace(path)
+    return path
+
+
+@pytest.fixture(scope="session")
+def rebuilt_word_classes(shared_data: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The word-class table ``scripts/build_word_classes.py`` builds from the whole train split (about a CPU-minute):
+    built once for the tests that compare it with the shipped one."""
+    if not (shared_data / "alfred" / "goals_train.tsv").is_file():
+        pytest.skip("no ALFRED train goals")
+
+    def build(out: Path) -> None:
+        done = subprocess.run([sys.executable, str(ROOT / "scripts" / "build_word_classes.py"), "--data",
+                               str(shared_data), "--out", str(out)], capture_output=True, text=True, timeout=900)
+        assert done.returncode == 0, done.stdout + done.stderr
+
+    return made_once(tmp_path_factory, "word_classes_train.json", build)
+
+
+def alfred_sample(shared_data: Path, folder: Path, every: int) -> Path:
+    """A data folder of one ALFRED train sentence in ``every`` (with the constants and floor plans): enough for a
+    build script's fit to run end to end in seconds."""
+    if not (shared_data / "alfred" / "goals_train.tsv").is_file():
+        pytest.skip("no ALFRED train goals")
+    (folder / "alfred").mkdir(parents=True)
+    lines = (shared_data / "alfred" / "goals_train.tsv").read_text().splitlines(keepends=True)
+    (folder / "alfred" / "goals_train.tsv").write_text("".join([lines[0], *lines[1::every]]))
+    (folder / "alfred" / "alfred_constants.json").symlink_to(shared_data / "alfred" / "alfred_constants.json")
+    if (shared_data / "alfred2d").is_dir():
+        (folder / "alfred2d").symlink_to(shared_data / "alfred2d")
+    return folder
