@@ -246,12 +246,15 @@ class Vocabulary:
 
     def ground_words(self, words: Sequence[str], head: int = -1, of: Sequence[str] = ()) -> str | None:
         """The class that words denote (``head`` indexes the head word), or None."""
-        spelled = tuple(w.lower() for w in words if w)
-        if self._spelled and not of and (head == -1 or head == len(spelled) - 1):
-            for start in range(len(spelled)):       # "a glass" where glasses are a class too: the form said
-                index = self._spelled.get(spelled[start:])
-                if index is not None:
-                    return self.classes[index]
+        if self._spelled and head in (-1, len(words) - 1):
+            # "a glass" where glasses are a class too: the form said, the phrase's own words first ("a glass of
+            # water" the glass), then its "of" phrase's ("a pair of glasses" the glasses)
+            for said in (words, of):
+                spelled = tuple(w.lower() for w in said if w)
+                for start in range(len(spelled)):
+                    index = self._spelled.get(spelled[start:])
+                    if index is not None:
+                        return self.classes[index]
         words = _lemmas(w for w in words if w)
         of = _lemmas(w for w in of if w)
         if not words and not of:

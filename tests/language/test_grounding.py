@@ -337,5 +337,7 @@ def test_the_form_said_tells_apart_classes_one_by_their_lemmas() -> None:
         assert both.ground_words(["a", "glass"]) == "glass" and both.ground_words(["glass"]) == "glass"
         assert both.ground_words(["my", "glasses"]) == "glasses"
         assert both.ground_words(["wine", "glass"]) == "glass"
+        assert both.ground_words(["a", "glass"], -1, ["water"]) == "glass"     # its own words before its "of"
+        assert both.ground_words(["a", "pair"], -1, ["glasses"]) == "glasses"  # its "of" phrase's form
     assert Vocabulary.of(["glasses", "cup"]).ground_words(["glass"]) == "glasses"
     assert Vocabulary.of(["glass", "cup"]).ground_words(["glasses"]) == "glass"
