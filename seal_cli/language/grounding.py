@@ -249,8 +249,8 @@ class Vocabulary:
         if self._spelled and head in (-1, len(words) - 1):
             # "a glass" where glasses are a class too: the form said, the phrase's own words first ("a glass of
             # water" the glass), then its "of" phrase's ("a pair of glasses" the glasses)
-            for said in (words, of):
-                spelled = tuple(w.lower() for w in said if w)
+            for phrase in (words, of):
+                spelled = tuple(w.lower() for w in phrase if w)
                 for start in range(len(spelled)):
                     index = self._spelled.get(spelled[start:])
                     if index is not None:
