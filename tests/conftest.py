@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import fcntl
+import json
 import os
 import shutil
 import subprocess
@@ -10,6 +11,7 @@ import sys
 import tempfile
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -92,4 +94,34 @@ def alfred_sample(shared_data: Path, folder: Path, every: int) -> Path:
     (folder / "alfred" / "alfred_constants.json").symlink_to(shared_data / "alfred" / "alfred_constants.json")
     if (shared_data / "alfred2d").is_dir():
         (folder / "alfred2d").symlink_to(shared_data / "alfred2d")
+    return folder
+
+
+def check_on_a_sample(script: Path, shared_data: Path, tmp_path: Path, stale: Callable[[Any], str]) -> None:
+    """A build script's ``--check`` end to end on one ALFRED train sentence in 40 (the whole split is compared by
+    the test of its shipped file): the file built from the sample checks up to date; moved by ``stale`` (which
+    changes the read JSON in place and returns the path it changed, "/priors/type/..."), it is named there, exit 1,
+    and the file is left as it was (``--check`` writes nothing)."""
+    data = alfred_sample(shared_data, tmp_path / "data", every=40)
+    out = tmp_path / "built.json"
+    run = [sys.executable, str(script), "--data", str(data), "--out", str(out)]
+    done = subprocess.run(run, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0 and done.stdout.startswith(f"wrote {out} ("), done.stdout + done.stderr
+    check = subprocess.run([*run, "--check"], capture_output=True, text=True, timeout=300)
+    assert check.returncode == 0 and check.stdout == f"{out}: up to date\n", check.stdout + check.stderr
+    built = json.loads(out.read_text())
+    where = stale(built)
+    out.write_text(json.dumps(built))
+    check = subprocess.run([*run, "--check"], capture_output=True, text=True, timeout=300)
+    assert check.returncode == 1 and f"{out}: differs from what the train split gives (rebuild it): {where}" \
+        in check.stderr, check.stderr
+    assert out.read_text() == json.dumps(built)
+
+
+def tiny_wordnet(folder: Path, data_verb: str, data_noun: str, index_verb: str, index_noun: str, cntlist: str) -> Path:
+    """A WordNet ``dict`` folder of the given file texts, for a build script's tests on a few synsets."""
+    folder.mkdir()
+    for name, text in [("data.verb", data_verb), ("data.noun", data_noun), ("index.verb", index_verb),
+                       ("index.noun", index_noun), ("cntlist.rev", cntlist)]:
+        (folder / name).write_text(text)
     return folder

@@ -9,6 +9,7 @@ from pathlib import Path
 
 from seal_cli.frames.library import Library
 from seal_cli.frames.reading import read_library
+from tests.conftest import tiny_wordnet
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "scripts"))
@@ -59,12 +60,7 @@ CNTLIST = "".join(f"{lemma}%2:35:00:: 1 {n}\n" for lemma, n in [("cut", 9), ("mo
 
 
 def wordnet(tmp_path: Path) -> build.WordNet:
-    folder = tmp_path / "dict"
-    folder.mkdir()
-    for name, text in [("data.verb", DATA_VERB), ("data.noun", DATA_NOUN), ("index.verb", INDEX_VERB),
-                       ("index.noun", INDEX_NOUN), ("cntlist.rev", CNTLIST)]:
-        (folder / name).write_text(text)
-    return build.WordNet(folder)
+    return build.WordNet(tiny_wordnet(tmp_path / "dict", DATA_VERB, DATA_NOUN, INDEX_VERB, INDEX_NOUN, CNTLIST))
 
 
 def library(tmp_path: Path) -> Library:
