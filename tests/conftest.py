@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import fcntl
+import importlib.util
 import json
 import os
 import shutil
@@ -11,6 +12,7 @@ import sys
 import tempfile
 from collections.abc import Callable
 from pathlib import Path
+from types import ModuleType
 from typing import Any
 
 import pytest
@@ -125,3 +127,16 @@ def tiny_wordnet(folder: Path, data_verb: str, data_noun: str, index_verb: str, 
                        ("index.noun", index_noun), ("cntlist.rev", cntlist)]:
         (folder / name).write_text(text)
     return folder
+
+
+def module_from_file(name: str, path: Path, register: bool = False) -> ModuleType:
+    """The Python file at ``path`` (a script, a map's drawing, a scorer of ``../shared/eval``) run as the module
+    ``name``, afresh each call; ``register`` puts it in ``sys.modules`` first (a dataclass of it looks itself up
+    there)."""
+    spec = importlib.util.spec_from_file_location(name, path)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    if register:
+        sys.modules.setdefault(name, module)
+    spec.loader.exec_module(module)
+    return module

@@ -3,7 +3,6 @@ first, "in there", clauses said without a joint. Each on sentences of our own.""
 
 from __future__ import annotations
 
-import importlib.util
 import json
 from pathlib import Path
 
@@ -11,6 +10,7 @@ import pytest
 
 from seal_cli.frames.library import Library
 from seal_cli.language.parser import CommandError, parse_command, parse_lines
+from tests.conftest import module_from_file
 
 
 def frames(text: str, library: Library) -> list[tuple[str, dict[str, str]]]:
@@ -18,6 +18,15 @@ def frames(text: str, library: Library) -> list[tuple[str, dict[str, str]]]:
     parse = parse_command(text, library)
     return [(f.frame, {role: e.head for role, e in f.elements.items() if not e.default})
             for f in parse.frames]
+
+
+def assert_reads(text: str, want: list[tuple[str, dict[str, str]]] | None, library: Library) -> None:
+    """``text`` reads as ``want`` (:func:`frames`); ``None``: it is refused, a :class:`CommandError`."""
+    if want is None:
+        with pytest.raises(CommandError):
+            parse_command(text, library)
+        return
+    assert frames(text, library) == want
 
 
 @pytest.mark.parametrize(("text", "want"), [
@@ -152,10 +161,7 @@ SCORER = Path(__file__).resolve().parents[2].parent / "shared" / "eval" / "score
 def test_our_sets_of_peoples_wording_score(path: Path, library: Library) -> None:
     if not SCORER.is_file():
         pytest.skip(f"scorer not found at {SCORER}")
-    spec = importlib.util.spec_from_file_location("score_parse", SCORER)
-    assert spec is not None and spec.loader is not None
-    scorer = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(scorer)
+    scorer = module_from_file("score_parse", SCORER)
     items = [json.loads(line) for line in path.read_text(encoding="utf-8").splitlines() if line.strip()]
     assert len(items) >= 30
     right = sum(scorer.score_one(parse, scorer.expected_frames(item))[0]
@@ -1774,11 +1780,7 @@ def test_a_statement_of_state_without_a_tag_stays_no_command(library: Library) -
 ])
 def test_whether_the_robot_did_a_deed_another_frame_undoes_is_looking(
         text: str, want: list[tuple[str, dict[str, str]]] | None, library: Library) -> None:
-    if want is None:
-        with pytest.raises(CommandError):
-            parse_command(text, library)
-        return
-    assert frames(text, library) == want
+    assert_reads(text, want, library)
 
 
 @pytest.mark.parametrize(("text", "want"), [
@@ -1789,11 +1791,7 @@ def test_whether_the_robot_did_a_deed_another_frame_undoes_is_looking(
 ])
 def test_seen_said_first_then_a_tag_asks_to_find(
         text: str, want: list[tuple[str, dict[str, str]]] | None, library: Library) -> None:
-    if want is None:
-        with pytest.raises(CommandError):
-            parse_command(text, library)
-        return
-    assert frames(text, library) == want
+    assert_reads(text, want, library)
 
 
 def test_a_deed_that_leaves_no_state_to_look_at_is_no_check(library: Library) -> None:
@@ -1810,11 +1808,7 @@ def test_a_deed_that_leaves_no_state_to_look_at_is_no_check(library: Library) ->
 ])
 def test_you_and_a_modal_then_a_tag_is_a_polite_request(
         text: str, want: list[tuple[str, dict[str, str]]] | None, library: Library) -> None:
-    if want is None:
-        with pytest.raises(CommandError):
-            parse_command(text, library)
-        return
-    assert frames(text, library) == want
+    assert_reads(text, want, library)
 
 
 @pytest.mark.parametrize(("text", "want"), [

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import importlib.util
 import json
 from pathlib import Path
 
@@ -15,6 +14,7 @@ from seal_cli.frames.library import Library
 from seal_cli.frames.model import Element, Fact, Frame, LexicalUnit
 from seal_cli.language.grounding import Vocabulary
 from seal_cli.language.parser import CommandError, Parse, command_parser, parse_command, parse_lines
+from tests.conftest import module_from_file
 
 
 def frames_of(text: str, library: Library) -> list[str]:
@@ -583,10 +583,7 @@ SCORER = Path(__file__).resolve().parents[2].parent / "shared" / "eval" / "score
 def test_varied_wording_corpus_scores_with_the_shared_scorers_logic(library: Library) -> None:
     if not SCORER.is_file():
         pytest.skip(f"scorer not found at {SCORER}")
-    spec = importlib.util.spec_from_file_location("score_parse", SCORER)
-    assert spec is not None and spec.loader is not None
-    scorer = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(scorer)
+    scorer = module_from_file("score_parse", SCORER)
     items = [json.loads(line) for line in WORDING.read_text(encoding="utf-8").splitlines() if line.strip()]
     assert len(items) >= 200
     frames = roles = 0

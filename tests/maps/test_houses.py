@@ -3,26 +3,20 @@ are what make_houses.py draws, and they are clean, sensible maps."""
 
 from __future__ import annotations
 
-import importlib.util
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from seal_cli.maps.formats.map_server import load_map, read_pgm
+from tests.conftest import module_from_file
 
 MAPS = Path(__file__).resolve().parents[2] / "maps"
 HOUSES = ["townhouse", "office_floor", "cafe", "clinic", "farmhouse", "terrace", "bungalow", "lodge", "flat"]
 
 
 def make_houses():  # type: ignore[no-untyped-def]
-    spec = importlib.util.spec_from_file_location("make_houses", MAPS / "make_houses.py")
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules.setdefault("make_houses", module)     # its dataclass looks itself up there
-    spec.loader.exec_module(module)
-    return module
+    return module_from_file("make_houses", MAPS / "make_houses.py", register=True)  # its dataclass looks itself up
 
 
 @pytest.mark.parametrize("name", HOUSES)

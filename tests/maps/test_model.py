@@ -37,6 +37,7 @@ from seal_cli.maps.model import (
 from seal_cli.maps.priors import FLOOR
 from seal_cli.resources import map_path
 from seal_cli.validate import validate_paths
+from tests.conftest import module_from_file
 
 ROOT = Path(__file__).resolve().parents[2]
 APARTMENT = ROOT / "maps" / "apartment.yaml"
@@ -189,13 +190,7 @@ def test_the_apartment(apartment: Map) -> None:
 
 
 def test_the_apartment_image_is_what_the_script_draws(tmp_path: Path) -> None:
-    import importlib.util
-
-    spec = importlib.util.spec_from_file_location("make_apartment", ROOT / "maps" / "make_apartment.py")
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    drawn = module.draw()
+    drawn = module_from_file("make_apartment", ROOT / "maps" / "make_apartment.py").draw()
     assert np.array_equal(read_pgm((ROOT / "maps" / "apartment.pgm").read_bytes()), drawn.astype(float))
 
 

@@ -3,22 +3,19 @@ compared as the goal scorer's classes and the scene's class keys, and a bad epis
 
 from __future__ import annotations
 
-import importlib.util
 import subprocess
 import sys
 from pathlib import Path
 from types import ModuleType
+
+from tests.conftest import module_from_file
 
 ROOT = Path(__file__).resolve().parents[2]
 SCRIPT = ROOT / "scripts" / "alfred_failures.py"
 
 
 def script() -> ModuleType:
-    spec = importlib.util.spec_from_file_location("alfred_failures", SCRIPT)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return module_from_file("alfred_failures", SCRIPT)
 
 
 WANT = {"type": "pick_and_place_simple", "object": "spraybottle", "receptacle": "toilet", "mrecep": "", "sliced": False}

@@ -3,23 +3,20 @@ the cause the read-back, the labels and the word-class table show; a bad errors 
 
 from __future__ import annotations
 
-import importlib.util
 import json
 import subprocess
 import sys
 from pathlib import Path
 from types import ModuleType
 
+from tests.conftest import module_from_file
+
 ROOT = Path(__file__).resolve().parents[2]
 SCRIPT = ROOT / "scripts" / "alfred_goal_errors.py"
 
 
 def script() -> ModuleType:
-    spec = importlib.util.spec_from_file_location("alfred_goal_errors", SCRIPT)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return module_from_file("alfred_goal_errors", SCRIPT)
 
 
 WANT = {"type": "pick_cool_then_place_in_recep", "object": "butterknife", "receptacle": "sidetable", "mrecep": "",

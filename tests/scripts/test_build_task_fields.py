@@ -3,7 +3,6 @@ script names what is wrong with its arguments."""
 
 from __future__ import annotations
 
-import importlib.util
 import subprocess
 import sys
 from pathlib import Path
@@ -13,18 +12,14 @@ from typing import Any
 import pytest
 
 from seal_cli.language.taskfields import SHIPPED, TRUST
-from tests.conftest import check_on_a_sample
+from tests.conftest import check_on_a_sample, module_from_file
 
 ROOT = Path(__file__).resolve().parents[2]
 SCRIPT = ROOT / "scripts" / "build_task_fields.py"
 
 
 def builder() -> ModuleType:
-    spec = importlib.util.spec_from_file_location("build_task_fields", SCRIPT)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return module_from_file("build_task_fields", SCRIPT)
 
 
 def test_a_weight_may_move_in_its_last_decimal_but_no_prior_may_change() -> None:

@@ -3,7 +3,6 @@ a change to the parser or the chooser that shifts a count must ship the rebuilt 
 
 from __future__ import annotations
 
-import importlib.util
 import json
 import subprocess
 import sys
@@ -12,18 +11,14 @@ from types import ModuleType
 from typing import Any
 
 from seal_cli.language.wordusage import SHIPPED
-from tests.conftest import check_on_a_sample
+from tests.conftest import check_on_a_sample, module_from_file
 
 ROOT = Path(__file__).resolve().parents[2]
 SCRIPT = ROOT / "scripts" / "build_word_classes.py"
 
 
 def builder() -> ModuleType:
-    spec = importlib.util.spec_from_file_location("build_word_classes", SCRIPT)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return module_from_file("build_word_classes", SCRIPT)
 
 
 def test_a_fitted_weight_may_move_in_its_third_decimal_but_no_count_may_change() -> None:

@@ -3,12 +3,12 @@ and its instances built from a split's counts as the shipped chooser's are (the 
 
 from __future__ import annotations
 
-import importlib.util
 import sys
 from pathlib import Path
 from types import ModuleType
 
 from seal_cli.frames.taxonomy import class_key
+from tests.conftest import module_from_file
 
 ROOT = Path(__file__).resolve().parents[2]
 SCRIPT = ROOT / "scripts" / "chooser_features.py"
@@ -16,11 +16,7 @@ SCRIPT = ROOT / "scripts" / "chooser_features.py"
 
 def experiment() -> ModuleType:
     sys.path.insert(0, str(ROOT / "scripts"))
-    spec = importlib.util.spec_from_file_location("chooser_features", SCRIPT)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return module_from_file("chooser_features", SCRIPT)
 
 
 def said(label: str, dev: bool = False) -> dict[str, object]:
