@@ -284,13 +284,13 @@ class _WholeWrites(io.FileIO):
     drops what a short write left and goes on (hostile20)."""
 
     def write(self, data: Any) -> int:
-        import select
-
         view = memoryview(data).cast("B")
         done = 0
         while done < len(view):
             written = super().write(view[done:])
             if written is None:  # non-blocking and full: wait until it takes more
+                import select  # only here: every line seal prints comes through this write
+
                 select.select([], [self.fileno()], [])
                 continue
             done += written
