@@ -70,6 +70,8 @@ def _read_bag(bag: Path, pose_topic: str | None, detections_topic: str | None, f
     if run.skipped:
         err.print(f"warning: {run.skipped} messages on {run.detections_topic} lie more than {TOLERANCE:g} s outside "
                   f"the poses' time span and were skipped", markup=False)
+    for note in run.notes:
+        err.print(f"warning: {note}", markup=False)
     return list(run.observations), run.stamps
 
 

@@ -63,6 +63,8 @@ def import_bag(
     skipped = f" ({run.skipped} outside the poses' time span skipped)" if run.skipped else ""
     err.print(f"wrote {output}: {len(run.observations)} observations from {run.detections_topic}{skipped}, poses "
               f"from {run.pose_source}", markup=False)
+    for note in run.notes:
+        err.print(f"warning: {note}", markup=False)
 
 
 @command("ros", on=bench_app)

@@ -15,7 +15,10 @@
   through the transforms at the stamp; its height is dropped. An empty array is a look that saw
   nothing: negative evidence.
 
-Stamps are the headers' (a zero stamp falls back to the time the bag logged the message). A
+Stamps are the headers'. A topic whose stamps are all zero (a publisher that never stamps) is placed at the
+times the bag logged its messages; on a topic with stamps, a message stamped zero (published under
+``use_sim_time`` before the simulator's ``/clock`` arrived) has no time on the topic's clock and is left
+out, counted in :attr:`Run.notes`. A
 detection message more than ``TOLERANCE`` seconds outside the span of the poses (or of the
 transforms it needs) cannot be placed and is skipped (:attr:`Run.skipped` counts them); if
 none can be placed, the two streams are on different clocks and that is an error. A topic whose
@@ -66,13 +69,36 @@ class Run:
     pose_source: str
     detections_topic: str
     skipped: int = 0
+    notes: tuple[str, ...] = ()
+    """What was left out of the bag and why, for the user (messages stamped zero among stamped ones)."""
 
 
 # -- stamps and poses --------------------------------------------------------------------------------
-def _stamp(header: Any, logged: float) -> float:
+def _stamp(header: Any) -> float:
+    """A header's stamp in seconds (0: the message was not stamped)."""
     stamp = header.stamp
-    seconds = float(stamp.sec) + float(stamp.nanosec) * 1e-9
-    return seconds if seconds > 0 else logged
+    return float(stamp.sec) + float(stamp.nanosec) * 1e-9
+
+
+def _clocked(bag: Bag, topic: str, stamped: Sequence[float], logged: Sequence[float],
+             what: str = "messages") -> tuple[list[float], NDArray[np.bool_]]:
+    """The stamps of a topic's messages (or transforms) and which of them to keep.
+
+    All stamped zero: a publisher that never stamps; the times the bag logged them stand in (all kept). Some
+    stamped zero among stamped ones: published before the clock started (a node under ``use_sim_time`` before
+    Gazebo's ``/clock`` arrived stamps 0); they have no time on the topic's clock and are left out, with a note.
+    Taking the log time for those (wall time, 1.7e9 s) against the others' sim time (35 s) was refused as a
+    clock jump of the whole bag."""
+    s = np.asarray(stamped, float)
+    if not (s > 0).any():
+        return [float(v) for v in logged], np.ones(len(s), bool)
+    keep = s > 0
+    if not keep.all():
+        first = int(np.argmin(keep)) + 1
+        bag.notes.append(f"{int((~keep).sum())} of {len(s)} {what} on {topic} are stamped 0 among stamped ones (the "
+                         f"first: {what.rstrip('s')} {first}) and were left out: published before the clock started "
+                         f"(under use_sim_time, before /clock)?")
+    return [float(v) for v in s], keep
 
 
 def _frame(name: str) -> str:
@@ -125,6 +151,7 @@ def _pose_track(bag: Bag, topic: str, base_frame: str) -> Track:
     """The robot's pose messages on a topic as a track (parent: their frame; child: the base frame)."""
     msgtype = bag.topics[topic]
     stamps: list[float] = []
+    logs: list[float] = []
     t: list[tuple[float, float, float]] = []
     q: list[tuple[float, float, float, float]] = []
     frames: list[str] = []
@@ -137,7 +164,8 @@ def _pose_track(bag: Bag, topic: str, base_frame: str) -> Track:
         frames.append(frame)
         if msgtype.endswith("/Odometry") and message.child_frame_id:
             child = _frame(message.child_frame_id)
-        stamps.append(_stamp(message.header, logged))
+        stamps.append(_stamp(message.header))
+        logs.append(logged)
         t.append((pose.position.x, pose.position.y, pose.position.z))
         q.append((pose.orientation.x, pose.orientation.y, pose.orientation.z, pose.orientation.w))
         _check_values(bag, (*t[-1], *q[-1]), f"the pose of message {i + 1} on {topic} (x, y, z, qx, qy, qz, qw)")
@@ -146,6 +174,9 @@ def _pose_track(bag: Bag, topic: str, base_frame: str) -> Track:
         raise bag.error(f"{topic} holds no messages: no poses to place the detections at")
     if not frames[0]:
         raise bag.error(f"the poses on {topic} name no frame (header.frame_id is empty)")
+    stamps, keep = _clocked(bag, topic, stamps, logs)
+    kept = [int(k) for k in np.nonzero(keep)[0]]
+    stamps, t, q = [stamps[k] for k in kept], [t[k] for k in kept], [q[k] for k in kept]
     _check_clock(bag, topic, stamps)
     return _track(frames[0], child, stamps, t, q)
 
@@ -167,25 +198,30 @@ def _tf_tree(bag: Bag) -> TfTree:
             continue
         if bag.topics[topic] != TF:
             raise bag.error(f"{topic} holds {bag.topics[topic]}, not {TF}")
-        stamps_seen: list[float] = []
+        read: list[tuple[tuple[str, str], float, float, Any, Any]] = []  # (edge, stamp, logged, t, q)
         for i, logged, message in bag.messages(topic):
             for tr in message.transforms:
                 key = (_frame(tr.header.frame_id), _frame(tr.child_frame_id))
-                stamp = _stamp(tr.header, logged)
-                if topic == "/tf":
-                    stamps_seen.append(stamp)
-                else:
-                    static.add(key)
-                s, t, q = samples.setdefault(key, ([], [], []))
                 v, r = tr.transform.translation, tr.transform.rotation
-                s.append(stamp)
-                t.append((v.x, v.y, v.z))
-                q.append((r.x, r.y, r.z, r.w))
-                _check_values(bag, (*t[-1], *q[-1]), f"the transform {key[0]} → {key[1]} of message {i + 1} on "
-                                                     f"{topic} (x, y, z, qx, qy, qz, qw)")
-                _check_rotation(bag, q[-1], f"the rotation of the transform {key[0]} → {key[1]} of message {i + 1} "
-                                            f"on {topic} (qx, qy, qz, qw)")
-        _check_clock(bag, topic, stamps_seen)
+                read.append((key, _stamp(tr.header), logged, (v.x, v.y, v.z), (r.x, r.y, r.z, r.w)))
+                _check_values(bag, (*read[-1][3], *read[-1][4]), f"the transform {key[0]} → {key[1]} of message "
+                                                                 f"{i + 1} on {topic} (x, y, z, qx, qy, qz, qw)")
+                _check_rotation(bag, read[-1][4], f"the rotation of the transform {key[0]} → {key[1]} of message "
+                                                  f"{i + 1} on {topic} (qx, qy, qz, qw)")
+        if topic == "/tf":
+            stamps, keep = _clocked(bag, topic, [r[1] for r in read], [r[2] for r in read], "transforms")
+        else:  # a static transform holds at every time: its stamp is never used
+            stamps, keep = [r[1] for r in read], np.ones(len(read), bool)
+        for (key, _, _, t, q), stamp, kept in zip(read, stamps, keep, strict=True):
+            if topic != "/tf":
+                static.add(key)
+            if kept:
+                s_, t_, q_ = samples.setdefault(key, ([], [], []))
+                s_.append(stamp)
+                t_.append(t)
+                q_.append(q)
+        if topic == "/tf":
+            _check_clock(bag, topic, [s for s, k in zip(stamps, keep, strict=True) if k])
     tree = TfTree()
     parents: dict[str, str] = {}
     for (parent, child), (s, t, q) in samples.items():
@@ -209,10 +245,12 @@ def _class_of(hypothesis: Any) -> str:
     return str(inner.class_id if inner is not None else hypothesis.id).strip()
 
 
-def _detections(bag: Bag, topic: str, labels: Mapping[str, str]) -> tuple[list[float], list[Look]]:
-    """Per message: its stamp and its detections as (class, frame, position in that frame)."""
+def _detections(bag: Bag, topic: str, labels: Mapping[str, str]) -> tuple[list[float], list[Look], list[int]]:
+    """Per message kept: its stamp, its detections as (class, frame, position in that frame), and its number on the
+    topic (from 1)."""
     three_d = bag.topics[topic].endswith("3DArray")
     stamps: list[float] = []
+    logs: list[float] = []
     looks: list[Look] = []
     for i, logged, message in bag.messages(topic):
         if i >= MAX_OBSERVATIONS:
@@ -221,7 +259,8 @@ def _detections(bag: Bag, topic: str, labels: Mapping[str, str]) -> tuple[list[f
         if len(message.detections) > MAX_DETECTIONS:
             raise bag.error(f"message {i + 1} on {topic} holds {len(message.detections):,} detections: seal takes at "
                             f"most {MAX_DETECTIONS:,} in one observation")
-        stamps.append(_stamp(message.header, logged))
+        stamps.append(_stamp(message.header))
+        logs.append(logged)
         seen = []
         for j, det in enumerate(message.detections):
             if not det.results:
@@ -240,8 +279,11 @@ def _detections(bag: Bag, topic: str, labels: Mapping[str, str]) -> tuple[list[f
         looks.append(seen)
     if not stamps:
         raise bag.error(f"{topic} holds no messages: nothing was detected")
+    stamps, keep = _clocked(bag, topic, stamps, logs)
+    numbers = [int(k) + 1 for k in np.nonzero(keep)[0]]
+    stamps, looks = [stamps[n - 1] for n in numbers], [looks[n - 1] for n in numbers]
     _check_clock(bag, topic, stamps)
-    return stamps, looks
+    return stamps, looks, numbers
 
 
 def _choose(bag: Bag, given: str | None, types: Sequence[str], what: str, option: str,
@@ -287,12 +329,12 @@ def read_run(path: str | Path, *, pose_topic: str | None = None, detections_topi
             source = _choose(bag, source, POSE_TYPES, "robot pose", "--pose-topic")
         topic = _choose(bag, detections_topic, DETECTION_TYPES, "detection", "--detections-topic")
         robot = None if source == "/tf" else _pose_track(bag, source, base_frame)
-        stamps, looks = _detections(bag, topic, labels or {})
-        return _place(bag, tree, robot, source, topic, frame, base_frame, stamps, looks)
+        stamps, looks, numbers = _detections(bag, topic, labels or {})
+        return _place(bag, tree, robot, source, topic, frame, base_frame, stamps, looks, numbers)
 
 
 def _place(bag: Bag, tree: TfTree, robot: Track | None, source: str, topic: str, frame: str, base_frame: str,
-           stamps: list[float], looks: list[Look]) -> Run:
+           stamps: list[float], looks: list[Look], numbers: list[int]) -> Run:
     """Each detection message at the robot's pose at its stamp, its detections carried into ``frame``."""
     s = np.asarray(stamps, float)
     try:
@@ -313,13 +355,15 @@ def _place(bag: Bag, tree: TfTree, robot: Track | None, source: str, topic: str,
     order = [int(k) for k in np.argsort(s, kind="stable") if placed[k]]  # jitter within JUMP is sorted out
     points = _in_frame(bag, tree, frame, s, looks, placed)
     observations = [Observation((float(t[k, 0]), float(t[k, 1]), float(yaw[k])), points[int(k)],
-                                Where(f"{bag.path} {topic} message {k + 1}")) for k in order]
+                                Where(f"{bag.path} {topic} message {numbers[k]}")) for k in order]
     for k, look in zip(order, observations, strict=True):  # what the transforms made of them, bounded alike
-        _check_values(bag, look.pose, f"the robot's pose at message {k + 1} on {topic}, in frame {frame!r} "
+        _check_values(bag, look.pose, f"the robot's pose at message {numbers[k]} on {topic}, in frame {frame!r} "
                                       f"(x, y, yaw)")
         for cls, at in look.detections or ():
-            _check_values(bag, at, f"a detection of {cls} in message {k + 1} on {topic}, in frame {frame!r} (x, y)")
-    return Run(tuple(observations), tuple(float(s[k]) for k in order), source, topic, int((~placed).sum()))
+            _check_values(bag, at, f"a detection of {cls} in message {numbers[k]} on {topic}, in frame {frame!r} "
+                                   f"(x, y)")
+    return Run(tuple(observations), tuple(float(s[k]) for k in order), source, topic, int((~placed).sum()),
+               tuple(bag.notes))
 
 
 def _link(tree: TfTree, robot: Track) -> None:

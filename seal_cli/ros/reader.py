@@ -23,6 +23,8 @@ class Bag:
 
     def __init__(self, reader: Any, path: Path) -> None:
         self.reader, self.path = reader, path
+        self.notes: list[str] = []
+        """What reading left out, for the user (:attr:`seal_cli.ros.bags.Run.notes`)."""
 
     @property
     def topics(self) -> dict[str, str]:

@@ -281,3 +281,42 @@ def test_a_damaged_index_is_said_as_damage() -> None:
                                               "header says (KeyError: 60673)")
     assert "(AssertionError)" in damage(AssertionError())
     assert damage(ValueError("Truncated record at offset 43")) == "Truncated record at offset 43"
+
+
+def test_messages_stamped_zero_among_stamped_ones_are_left_out_with_a_note(tmp_path: Path) -> None:
+    """robot5: under use_sim_time, nodes stamp 0 until Gazebo's /clock arrives; the bag logs them at wall time. Two
+    such transforms on /tf and a detection message stamped 0 were placed at their log time (1.7e9 s) and the whole
+    bag was refused as a clock jump of 1.7e9 s."""
+    from seal_cli.ros.messages import DETECTION_3D, TF
+    from tests.ros.bagfiles import detections, tf_message
+
+    path = tmp_path / "run.mcap"
+    store = store_for(path)
+    wall = 1.7e9
+    messages = run_messages(path, POSES, [(11.0, "map", [("cup", 1.0, 1.0, 0.0)])], pose_source="tf")
+    messages = [(topic, kind, wall + t, m) for topic, kind, t, m in messages]  # logged at wall time
+    early = [("/tf", TF, wall + 9.0 + 0.1 * k, tf_message(store, 0.0, [("odom", "base_link", 5.0, 5.0, 0.0)], False))
+             for k in range(2)]
+    early.append(("/detections", DETECTION_3D, wall + 9.5, detections(store, 0.0, "map", [("cup", 2.0, 2.0, 0.0)],
+                                                                       False)))
+    write_bag(path, early + messages, store)
+    run = read_run(path)
+    assert run.stamps == pytest.approx([11.0])  # the detection stamped 0 is left out, the one at 11 s kept
+    assert run.observations[0].pose == pytest.approx(expected_pose(11.0), abs=1e-5)  # not pulled to (5, 5)
+    assert run.observations[0].where is not None and "message 2" in str(run.observations[0].where)
+    assert any("2 of 22 transforms on /tf are stamped 0" in note for note in run.notes)
+    assert any("1 of 2 messages on /detections are stamped 0" in note and "use_sim_time" in note
+               for note in run.notes)
+
+
+def test_a_topic_never_stamped_is_placed_at_the_times_the_bag_logged_it(tmp_path: Path) -> None:
+    from seal_cli.ros.messages import DETECTION_3D
+    from tests.ros.bagfiles import detections
+
+    path = tmp_path / "run.mcap"
+    store = store_for(path)
+    messages = run_messages(path, POSES, [])
+    messages += [("/detections", DETECTION_3D, t, detections(store, 0.0, "map", [], False)) for t in (11.0, 12.5)]
+    write_bag(path, sorted(messages, key=lambda m: m[2]), store)
+    run = read_run(path)
+    assert run.stamps == pytest.approx([11.0, 12.5]) and run.notes == ()
