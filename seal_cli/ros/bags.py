@@ -245,9 +245,11 @@ def _class_of(hypothesis: Any) -> str:
     return str(inner.class_id if inner is not None else hypothesis.id).strip()
 
 
-def _detections(bag: Bag, topic: str, labels: Mapping[str, str]) -> tuple[list[float], list[Look], list[int]]:
+def _detections(bag: Bag, topic: str, labels: Mapping[str, str],
+                map_frame: str) -> tuple[list[float], list[Look], list[int]]:
     """Per message kept: its stamp, its detections as (class, frame, position in that frame), and its number on the
-    topic (from 1)."""
+    topic (from 1). A detection at exactly (0, 0, 0) of a frame other than the map's is refused: it has no position
+    (see :func:`_no_position`)."""
     three_d = bag.topics[topic].endswith("3DArray")
     stamps: list[float] = []
     logs: list[float] = []
@@ -276,6 +278,9 @@ def _detections(bag: Bag, topic: str, labels: Mapping[str, str]) -> tuple[list[f
             p = det.bbox.center.position if three_d else best.pose.pose.position
             seen.append((cls, frame, (float(p.x), float(p.y), float(p.z))))
             _check_values(bag, seen[-1][2], f"the position of detection {j + 1} of message {i + 1} on {topic}")
+            if seen[-1][2] == (0.0, 0.0, 0.0) and frame != map_frame:
+                raise bag.error(_no_position(f"detection {j + 1} ({cls}) of message {i + 1} on {topic}", frame,
+                                             three_d))
         looks.append(seen)
     if not stamps:
         raise bag.error(f"{topic} holds no messages: nothing was detected")
@@ -284,6 +289,16 @@ def _detections(bag: Bag, topic: str, labels: Mapping[str, str]) -> tuple[list[f
     stamps, looks = [stamps[n - 1] for n in numbers], [looks[n - 1] for n in numbers]
     _check_clock(bag, topic, stamps)
     return stamps, looks, numbers
+
+
+def _no_position(what: str, frame: str, three_d: bool) -> str:
+    """Why a detection at (0, 0, 0) of a sensor's frame is refused: that is the sensor itself, where no object can
+    be; it is what a detector that finds boxes in the image but no depth leaves in a message's position (most 2-D
+    detectors' Detection2DArray), and every such detection would be put at the camera."""
+    field = "its bounding box's centre (bbox.center)" if three_d else "its hypothesis's pose (results[].pose.pose)"
+    return (f"{what} is at (0, 0, 0) in frame {frame!r}, the sensor's own origin: {field} gives no position. A "
+            f"detector that finds boxes in the image without depth leaves it empty; seal needs where each object is "
+            f"(a depth camera or a 3-D detector fills it), in the frame of the header")
 
 
 def _choose(bag: Bag, given: str | None, types: Sequence[str], what: str, option: str,
@@ -329,7 +344,7 @@ def read_run(path: str | Path, *, pose_topic: str | None = None, detections_topi
             source = _choose(bag, source, POSE_TYPES, "robot pose", "--pose-topic")
         topic = _choose(bag, detections_topic, DETECTION_TYPES, "detection", "--detections-topic")
         robot = None if source == "/tf" else _pose_track(bag, source, base_frame)
-        stamps, looks, numbers = _detections(bag, topic, labels or {})
+        stamps, looks, numbers = _detections(bag, topic, labels or {}, frame)
         return _place(bag, tree, robot, source, topic, frame, base_frame, stamps, looks, numbers)
 
 

@@ -320,3 +320,17 @@ def test_a_topic_never_stamped_is_placed_at_the_times_the_bag_logged_it(tmp_path
     write_bag(path, sorted(messages, key=lambda m: m[2]), store)
     run = read_run(path)
     assert run.stamps == pytest.approx([11.0, 12.5]) and run.notes == ()
+
+
+@pytest.mark.parametrize("three_d", [False, True])
+def test_a_detection_with_no_position_is_refused_not_put_at_the_camera(tmp_path: Path, three_d: bool) -> None:
+    """robot5: a 2-D detector (boxes in the image, no depth) publishes Detection2DArray with the hypothesis's pose
+    left at (0, 0, 0); every detection was read as an object at the camera's own origin."""
+    bag = write_run(tmp_path / "run.mcap", POSES, [(12.0, "camera_optical", [("cup", 0.0, 0.0, 0.0)])],
+                    pose_source="tf", three_d=three_d)
+    said = message_of(bag)
+    assert "detection 1 (cup) of message 1 on /detections is at (0, 0, 0) in frame 'camera_optical'" in said
+    assert ("bbox.center" if three_d else "results[].pose.pose") in said and "without depth" in said
+    # at the origin of the map frame itself is a place like any other
+    write_run(tmp_path / "origin.mcap", POSES, [(12.0, "map", [("cup", 0.0, 0.0, 0.0)])], three_d=three_d)
+    assert read_run(tmp_path / "origin.mcap").observations[0].detections == (("cup", (0.0, 0.0)),)
