@@ -75,6 +75,25 @@ def _read_bag(bag: Path, pose_topic: str | None, detections_topic: str | None, f
     return list(run.observations), run.stamps
 
 
+def _known_only(runs: list[Observation], known: frozenset[str], map_name: str) -> list[Observation]:
+    """The runs without detections of classes neither the map nor the plan knows, said in a warning: a detector
+    reports every class it knows (a chair, a person), and the whole run was refused for one of them."""
+    from seal_cli.cli import err
+    from seal_cli.frames.taxonomy import class_key
+    from seal_cli.sensing.observations import split_known
+    from seal_cli.yamlnodes import suggest
+
+    kept, dropped = split_known(runs, known)
+    if dropped:
+        listed = ", ".join(f"{cls} ({n}{suggest(class_key(cls), known).replace(' (', ', ').rstrip(')')})"
+                           for cls, n in list(dropped.items())[:10])
+        more = f" and {len(dropped) - 10} more classes" if len(dropped) > 10 else ""
+        err.print(f"warning: {sum(dropped.values())} detections of classes neither map {map_name} nor the plan knows "
+                  f"were set aside: {listed}{more}; seal keeps beliefs of {', '.join(sorted(known)) or 'none'} "
+                  f"(--labels renames a detector's classes)", markup=False)
+    return kept
+
+
 class Counter:
     """Observer that reports each update to a progress bar's ``advance(done, total)``."""
 
@@ -176,7 +195,9 @@ def localize(
         runs = read_observations(observations)
     elif bag is not None:
         runs, stamps = _read_bag(bag, pose_topic, detections_topic, frame, base_frame, labels)
-    check_inside(runs, the_map.bounds, the_map.name, the_map.is_occupied)
+    for said in check_inside(runs, the_map.bounds, the_map.name, the_map.is_occupied, the_map.is_free,
+                             the_map.grid.resolution):
+        err.print(f"warning: {said}", markup=False)
     bindings, state = frames_to_localise(tasks or [], library, the_map, holding=held, done=done or [])
     if goals is not None and not bindings:
         raise SealError("--goals writes a pose per frame, and there are none: give --task")
@@ -196,6 +217,7 @@ def localize(
             observers.append(PngDrawer(files["--png"]))
         classes = () if bindings else the_map.classes
         sefm = SeFM(the_map, bindings, state, rng, SeFMConfig(particles=particles), observers, classes=classes)
+        runs = _known_only(runs, sefm.known_classes, the_map.name)
         sefm.follow(runs, steps)
         sefm.close()
         result = {"map": the_map.name, "seed": seed, "steps": steps, "particles": particles,

@@ -268,6 +268,11 @@ class SeFM:
         for observer in self.observers:
             observer.update(self, record)
 
+    @property
+    def known_classes(self) -> frozenset[str]:
+        """The class keys a detection may name: the map's and the plan's (the others are refused by :meth:`update`)."""
+        return frozenset(self.map.classes) | {source.key for source in self.sources}
+
     def _checked(self, pose: ArrayLike, detections: Iterable[Any]
                  ) -> tuple[tuple[float, float, float], tuple[tuple[str, tuple[float, float]], ...]]:
         """The pose and detections, refused (a SealError) when not finite, off the map, or of a class
@@ -280,7 +285,7 @@ class SeFM:
         if not all(math.isfinite(v) for v in robot) or not (xmin <= robot[0] <= xmax and ymin <= robot[1] <= ymax):
             raise SealError(f"pose {robot} is not a finite point inside map {self.map.name}'s bounds "
                             f"[{xmin:g}, {ymin:g}, {xmax:g}, {ymax:g}]")
-        known = set(self.map.classes) | {source.key for source in self.sources}
+        known = self.known_classes
         for cls, (x, y) in seen:
             if not (math.isfinite(x) and math.isfinite(y) and xmin <= x <= xmax and ymin <= y <= ymax):
                 raise SealError(f"a detection of {cls or '(no class)'} at ({x:g}, {y:g}) is not a finite point "

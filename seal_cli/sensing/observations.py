@@ -18,22 +18,25 @@ detection of a class is negative evidence for it::
 
 (the list may also sit under a key ``observations:``). Every problem is a
 :class:`~seal_cli.errors.SealError` at ``file:line:column``; :func:`check_inside` refuses poses off
-the map.
+the map (and deep in its walls), :func:`split_known` sets aside detections of classes no belief is kept for.
 """
 
 from __future__ import annotations
 
 import difflib
 import math
-from collections.abc import Callable, Sequence
+from collections import Counter
+from collections.abc import Callable, Collection, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import yaml
 
 from seal_cli.errors import SealError, Where
 from seal_cli.fileio import compose_yaml, read_text
+from seal_cli.frames.taxonomy import class_key
 from seal_cli.yamlnodes import clipped
 
 MAX_OBSERVATIONS = 100_000
@@ -42,7 +45,14 @@ MAX_OBSERVATIONS = 100_000
 MAX_DETECTIONS = 1_000
 """The most detections one observation may hold."""
 
-__all__ = ["MAX_DETECTIONS", "MAX_OBSERVATIONS", "Observation", "check_inside", "read_observations", "read_trajectory"]
+NEAR_FREE = 0.3
+"""How far (m) from a free cell a measured pose on an occupied cell may be and still be taken, with a warning: about
+a robot's radius. A real robot's localised pose lands on the map's occupied cells where the map marks what has
+moved since mapping (a chair) or the localiser is a few centimetres off by a wall; one farther in is in the wrong
+frame, or a typo."""
+
+__all__ = ["MAX_DETECTIONS", "MAX_OBSERVATIONS", "NEAR_FREE", "Observation", "check_inside", "read_observations",
+           "read_trajectory", "split_known"]
 
 
 @dataclass(frozen=True)
@@ -181,9 +191,12 @@ def read_observations(path: str | Path) -> list[Observation]:
 
 
 def check_inside(observations: Sequence[Observation], bounds: Sequence[float], name: str,
-                 is_occupied: Callable[[list[tuple[float, float]]], Any] | None = None) -> None:
+                 is_occupied: Callable[[list[tuple[float, float]]], Any] | None = None,
+                 is_free: Callable[[Any], Any] | None = None, step: float = 0.05) -> list[str]:
     """Refuse a pose or a detection outside the map's bounds, and (given the map's ``is_occupied``)
-    a pose inside a wall, at its position in the file."""
+    a pose inside a wall, at its position in the file. Given ``is_free`` too, a pose on an occupied cell within
+    :data:`NEAR_FREE` of a free point (looked for every ``step`` m, the map's cell) is taken, and said in the
+    warning returned; only one deeper in is refused."""
     xmin, ymin, xmax, ymax = bounds
 
     def inside(x: float, y: float) -> bool:
@@ -197,9 +210,65 @@ def check_inside(observations: Sequence[Observation], bounds: Sequence[float], n
             if not inside(x, y):
                 raise SealError(f"a detection of {cls} at [{x:g}, {y:g}] is outside map {name}'s bounds "
                                 f"[{xmin:g}, {ymin:g}, {xmax:g}, {ymax:g}]", obs.where)
-    if is_occupied is not None and observations:
-        walled = is_occupied([obs.pose[:2] for obs in observations])
-        for obs, wall in zip(observations, walled, strict=True):
-            if wall:
-                raise SealError(f"pose [{obs.pose[0]:g}, {obs.pose[1]:g}] is inside a wall or an obstacle of map "
-                                f"{name}: the robot cannot stand there", obs.where)
+    if is_occupied is None or not observations:
+        return []
+    walled = [obs for obs, wall in zip(observations, is_occupied([obs.pose[:2] for obs in observations]),
+                                       strict=True) if wall]
+    near = _near_free([obs.pose[:2] for obs in walled], is_free, step) if is_free is not None and walled else []
+    for obs, close in zip(walled, near or [False] * len(walled), strict=True):
+        if not close:
+            deep = f", more than {NEAR_FREE:g} m from any free cell" if is_free is not None else ""
+            raise SealError(f"pose [{obs.pose[0]:g}, {obs.pose[1]:g}] is inside a wall or an obstacle of map "
+                            f"{name}{deep}: the robot cannot stand there"
+                            + (" (are the poses in the map's frame, and is the map's origin right?)" if deep else ""),
+                            obs.where)
+    if not walled:
+        return []
+    first = walled[0]
+    return [f"{len(walled)} of {len(observations)} poses {'lies' if len(walled) == 1 else 'lie'} on occupied cells of "
+            f"map {name}, {'' if len(walled) == 1 else 'each '}within "
+            f"{NEAR_FREE:g} m of free space (the first, [{first.pose[0]:g}, {first.pose[1]:g}], at {first.where}): "
+            f"the map marks something there that the robot drove through (moved since mapping?), or the localiser "
+            f"is a few centimetres off; they are used as they are"]
+
+
+def _near_free(points: Sequence[tuple[float, float]], is_free: Callable[[Any], Any], step: float) -> list[bool]:
+    """Whether each point has a free point within :data:`NEAR_FREE`, looked for on a lattice of ``step`` m."""
+    n = max(1, math.ceil(NEAR_FREE / max(step, 1e-3)))
+    grid = np.arange(-n, n + 1) * (NEAR_FREE / n)
+    dx, dy = np.meshgrid(grid, grid)
+    disc = np.stack([dx.ravel(), dy.ravel()], axis=1)
+    disc = disc[np.hypot(disc[:, 0], disc[:, 1]) <= NEAR_FREE + 1e-9]
+    pts = np.asarray(points, float).reshape(-1, 2)
+    out = np.zeros(len(pts), bool)
+    chunk = max(1, 1_000_000 // len(disc))  # bounded temporaries: 100,000 poses in a wall are 16 M points
+    for i in range(0, len(pts), chunk):
+        block = (pts[i:i + chunk, None, :] + disc[None]).reshape(-1, 2)
+        out[i:i + chunk] = np.asarray(is_free(block)).reshape(-1, len(disc)).any(axis=1)
+    return [bool(v) for v in out]
+
+
+def split_known(observations: Sequence[Observation],
+                known: Collection[str]) -> tuple[list[Observation], dict[str, int]]:
+    """The observations with only the detections of classes in ``known`` (class keys: ``Cup``, ``cup`` and ``CUP``
+    are one class), and how many detections of each other class were set aside (by the class as written first).
+
+    A real detector reports every class it was trained on (COCO's person, chair, dining table ...); seal keeps
+    beliefs only of the map's and the plan's classes, and the others say nothing about them."""
+    dropped: Counter[str] = Counter()
+    spelled: dict[str, str] = {}
+    kept = []
+    for obs in observations:
+        if obs.detections is None:
+            kept.append(obs)
+            continue
+        mine = []
+        for cls, at in obs.detections:
+            key = class_key(cls)
+            if key in known:
+                mine.append((cls, at))
+            else:
+                dropped[spelled.setdefault(key, cls)] += 1
+        kept.append(obs if len(mine) == len(obs.detections) else
+                    Observation(obs.pose, tuple(mine), obs.where))
+    return kept, dict(dropped.most_common())

@@ -239,3 +239,33 @@ def test_a_bag_option_without_a_bag_is_refused(options: list[str], said: str) ->
     result = CliRunner().invoke(app, ["localize", "--map", "apartment", "--task", "stir the cup", "--steps", "0",
                                       *options])
     assert (result.exit_code, result.stderr) == (1, said)
+
+
+def test_a_real_robots_run_a_chair_in_its_way_and_a_detector_of_many_classes(tmp_path: Path) -> None:
+    """robot5: the run of a robot whose path crosses a cell the map marks occupied (0.1 m into a block), and whose
+    detector also reports chairs and people: both refused the whole run (`the robot cannot stand there`, `a
+    detection of 'chair': map ... know no such class`); now each is a warning and the cup is localised."""
+    rows, cols = np.mgrid[0:80, 0:120]
+    x, y = (cols + 0.5) * 0.05, (79 - rows + 0.5) * 0.05  # image row 0 is the highest y
+    wall = (rows < 2) | (rows >= 78) | (cols < 2) | (cols >= 118) | ((x > 2) & (x < 4) & (y > 1) & (y < 3))
+    (tmp_path / "room.pgm").write_bytes(b"P5\n120 80\n255\n" + np.where(wall, 0, 254).astype(np.uint8).tobytes())
+    (tmp_path / "room.yaml").write_text("image: room.pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\n"
+                                        "occupied_thresh: 0.65\nfree_thresh: 0.196\n")
+    seen = tmp_path / "seen.yaml"
+    seen.write_text("- pose: [1.0, 0.5, 0.0]\n  detections:\n    - {class: Cup, at: [5.0, 0.5]}\n"
+                    "    - {class: chair, at: [1.5, 0.6]}\n"
+                    "- pose: [2.1, 1.5, 0.0]\n"
+                    "  detections: [{class: person, at: [1.0, 3.5]}, {class: cupp, at: [5, 1]}]\n")
+    result = runner.invoke(app, ["localize", "--map", str(tmp_path / "room.yaml"), "--task", "grasp the cup",
+                                 "--observations", str(seen), "--steps", "3", "--json"])
+    assert result.exit_code == 0, result.output
+    assert f"1 of 2 poses lies on occupied cells of map room, within 0.3 m of free space (the first, [2.1, 1.5], at " \
+           f"{seen}:5:3)" in result.stderr
+    assert "3 detections of classes neither map room nor the plan knows were set aside: chair (1), person (1), " \
+           "cupp (1, did you mean 'cup'?); seal keeps beliefs of cup" in result.stderr
+    cup = next(o for o in json.loads(result.stdout)["objects"] if o["class"] == "cup")
+    assert np.hypot(*np.subtract(cup["best"], (5.0, 0.5))) < 0.5
+    seen.write_text("- pose: [3.0, 2.0, 0.0]\n  detections: []\n")  # the block's middle: 1 m from free space
+    result = runner.invoke(app, ["localize", "--map", str(tmp_path / "room.yaml"), "--task", "grasp the cup",
+                                 "--observations", str(seen)])
+    assert result.exit_code == 1 and "more than 0.3 m from any free cell" in result.stderr

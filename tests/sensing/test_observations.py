@@ -4,11 +4,12 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
+from typing import Any
 
 import pytest
 
 from seal_cli.errors import SealError, Where
-from seal_cli.sensing.observations import Observation, check_inside, read_observations, read_trajectory
+from seal_cli.sensing.observations import Observation, check_inside, read_observations, read_trajectory, split_known
 
 
 def write(tmp_path: Path, text: str, name: str = "f.yaml") -> Path:
@@ -72,3 +73,47 @@ def test_poses_and_detections_off_the_map_are_refused_where_they_are(tmp_path: P
     with pytest.raises(SealError, match="a detection of cup at"):
         check_inside(far, (0, 0, 10, 10), "flat")
     check_inside([Observation((0.0, 10.0, math.pi))], (0, 0, 10, 10), "flat")   # the edge is inside
+
+
+def block_map() -> Any:
+    """A 6 m × 4 m room at 0.05 m, walled round, with a solid 2 m × 2 m block in its middle ([2, 4] × [1, 3])."""
+    import numpy as np
+
+    from seal_cli.maps.geometry import OccupancyGrid
+    from seal_cli.maps.model import Map
+
+    rows, cols = np.mgrid[0:80, 0:120]
+    x, y = (cols + 0.5) * 0.05, (rows + 0.5) * 0.05
+    occupied = (rows < 2) | (rows >= 78) | (cols < 2) | (cols >= 118) | ((x > 2) & (x < 4) & (y > 1) & (y < 3))
+    return Map("block", grid=OccupancyGrid.from_masks(~occupied, 0.05, (0.0, 0.0, 0.0), occupied))
+
+
+def test_a_measured_pose_on_an_occupied_cell_near_free_space_is_taken_with_a_warning() -> None:
+    """robot5: a real robot's localised pose lands on the map's occupied cells (a chair mapped where it no longer
+    stands, a localiser a few centimetres off by a wall); the whole bag was refused for one such pose."""
+    m = block_map()
+    looks = [Observation((1.0, 2.0, 0.0), (), Where("run.yaml", 1, 3)),
+             Observation((2.1, 2.0, 0.0), (), Where("run.yaml", 2, 3)),   # 0.1 m into the block's edge
+             Observation((0.05, 2.0, 0.0), (), Where("run.yaml", 3, 3))]  # in the outer wall
+    said = check_inside(looks, m.bounds, m.name, m.is_occupied, m.is_free, 0.05)
+    assert len(said) == 1 and said[0].startswith("2 of 3 poses lie on occupied cells of map block, each within 0.3 m")
+    assert "[2.1, 2]" in said[0] and "run.yaml:2:3" in said[0]
+    assert check_inside(looks[:1], m.bounds, m.name, m.is_occupied, m.is_free, 0.05) == []
+    deep = [*looks, Observation((3.0, 2.0, 0.0), (), Where("run.yaml", 4, 3))]  # the block's middle: 0.95 m in
+    with pytest.raises(SealError, match=r"pose \[3, 2\] is inside a wall or an obstacle of map block, more than 0.3 m "
+                                        r"from any free cell.*in the map's frame") as caught:
+        check_inside(deep, m.bounds, m.name, m.is_occupied, m.is_free, 0.05)
+    assert caught.value.line == 4
+    with pytest.raises(SealError, match=r"pose \[2.1, 2\] is inside a wall"):  # without is_free: every one refused
+        check_inside(looks, m.bounds, m.name, m.is_occupied)
+
+
+def test_detections_of_classes_no_belief_is_kept_for_are_set_aside_and_counted() -> None:
+    looks = [Observation((1.0, 1.0, 0.0), (("Cup", (2.0, 2.0)), ("chair", (3.0, 3.0)), ("Chair", (3.0, 3.1)))),
+             Observation((1.0, 1.0, 0.0), (("person", (2.0, 2.0)),), Where("o.yaml", 3, 3)),
+             Observation((1.0, 1.0, 0.0)),                      # simulated: nothing to set aside
+             Observation((1.0, 1.0, 0.0), (("spoon", (2.0, 2.0)),))]
+    kept, dropped = split_known(looks, {"cup", "spoon"})
+    assert dropped == {"chair": 2, "person": 1}
+    assert kept[0].detections == (("Cup", (2.0, 2.0)),) and kept[1].detections == ()
+    assert kept[1].where == Where("o.yaml", 3, 3) and kept[2] is looks[2] and kept[3] is looks[3]
