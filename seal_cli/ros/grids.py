@@ -48,8 +48,10 @@ def read_occupancy_grid(path: str | Path, topic: str = "/map") -> Grid:
                 raise bag.error(f"the occupancy grid on {topic} has resolution {info.resolution}, not a positive "
                                 f"number of metres per cell")
             o = info.origin
-            yaw = float(quaternion_yaw(np.array([[o.orientation.x, o.orientation.y, o.orientation.z,
-                                                  o.orientation.w or 1.0]]))[0])
+            q = [o.orientation.x, o.orientation.y, o.orientation.z, o.orientation.w]
+            # ROS 1's default orientation is (0, 0, 0, 0): no turn. A half turn is (0, 0, 1, 0), and w = 0 alone is
+            # no default (read as w = 1, it was a quarter turn)
+            yaw = float(quaternion_yaw(np.array([q if any(q) else [0.0, 0.0, 0.0, 1.0]]))[0])
             # resolution is a float32: 0.05 arrives as 0.0500000007; take the shortest decimal that is that float32
             resolution = float(np.format_float_positional(np.float32(info.resolution), unique=True))
             return Grid(data.reshape(height, width), resolution,

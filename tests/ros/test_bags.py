@@ -334,3 +334,18 @@ def test_a_detection_with_no_position_is_refused_not_put_at_the_camera(tmp_path:
     # at the origin of the map frame itself is a place like any other
     write_run(tmp_path / "origin.mcap", POSES, [(12.0, "map", [("cup", 0.0, 0.0, 0.0)])], three_d=three_d)
     assert read_run(tmp_path / "origin.mcap").observations[0].detections == (("cup", (0.0, 0.0)),)
+
+
+@pytest.mark.parametrize(("quaternion", "yaw"), [((0.0, 0.0, 1.0, 0.0), math.pi), ((0.0, 0.0, 0.0, 0.0), 0.0),
+                                                 ((0.0, 0.0, math.sin(0.25), math.cos(0.25)), 0.5)])
+def test_a_grids_origin_turn_is_read_from_its_quaternion(tmp_path: Path, quaternion: tuple[float, ...],
+                                                         yaw: float) -> None:
+    """robot5: an origin turned by half a turn, (0, 0, 1, 0), was read as a quarter turn (its w = 0 taken for ROS 1's
+    default orientation (0, 0, 0, 0) and replaced by 1)."""
+    path = tmp_path / "map.mcap"
+    store = store_for(path)
+    grid = occupancy_grid(store, 1.0, np.zeros((2, 3), np.int8), 0.5, (1.0, 2.0, 0.0), False)
+    o = grid.info.origin.orientation
+    o.x, o.y, o.z, o.w = quaternion
+    write_bag(path, [("/map", "nav_msgs/msg/OccupancyGrid", 1.0, grid)], store)
+    assert read_occupancy_grid(path).origin == pytest.approx((1.0, 2.0, yaw))
