@@ -224,3 +224,23 @@ def test_goals_with_a_suffix_of_no_format_are_refused(tmp_path: Path, name: str)
                       "--goals", str(target), out=target)
     assert f"seal writes goals as YAML (.yaml, .yml), a ROS 1 bag (.bag), an MCAP bag (.mcap) or a ROS 2 bag folder " \
            f"(a name without a suffix), not {target.suffix}" in message
+
+
+def test_a_map_whose_origin_turns_its_image_is_warned_of_with_a_bag(tmp_path: Path) -> None:
+    """robot5: map_server's origin may carry a yaw; seal turns the image (as RViz draws it), but amcl and Nav2's
+    costmaps ignore it, so the poses of a robot localised by them are in the frame of the unturned image."""
+    from seal_cli.resources import map_path
+
+    apartment = Path(map_path("apartment"))
+    text = apartment.read_text().replace("image: apartment.pgm", f"image: {apartment.parent / 'apartment.pgm'}")
+    assert "origin: [-10.0, -7.0, 0.0]" in text
+    (tmp_path / "turned.yaml").write_text(text.replace("origin: [-10.0, -7.0, 0.0]", "origin: [-10.0, -7.0, 0.01]"))
+    (tmp_path / "flat.yaml").write_text(text)
+    bag = kitchen_run(tmp_path / "run.mcap")
+    for name, warned in (("turned", True), ("flat", False)):
+        result = invoke("localize", "--map", str(tmp_path / f"{name}.yaml"), "--task", "stir the cup", "--steps", "0",
+                        "--bag", str(bag))
+        assert result.exit_code == 0, result.output
+        said = "origin turns its image by 0.01 rad (0.6°)" in result.stderr and "amcl and Nav2's costmaps ignore" \
+            in result.stderr
+        assert said is warned, result.stderr
