@@ -339,7 +339,8 @@ def read_run(path: str | Path, *, pose_topic: str | None = None, detections_topi
                 source = "/tf"
             except SealError as exc:
                 if source == "/tf" or not any(m in POSE_TYPES for m in bag.topics.values()):
-                    raise bag.error(f"the transforms do not place {base_frame!r} in {frame!r}: {exc.message}") from None
+                    raise bag.error(f"the transforms do not place {base_frame!r} in {frame!r}: {exc.message}"
+                                    f"{_no_map_frame(tree, frame)}") from None
         if source != "/tf":
             source = _choose(bag, source, POSE_TYPES, "robot pose", "--pose-topic")
         topic = _choose(bag, detections_topic, DETECTION_TYPES, "detection", "--detections-topic")
@@ -361,7 +362,8 @@ def _place(bag: Bag, tree: TfTree, robot: Track | None, source: str, topic: str,
             span = (max(robot.span[0], above[0]), min(robot.span[1], above[1]))
             t, q = compose(tree.lookup(frame, robot.parent, s), robot.at(s))
     except SealError as exc:
-        raise bag.error(f"cannot place the robot in frame {frame!r}: {exc.message}") from None
+        raise bag.error(f"cannot place the robot in frame {frame!r}: {exc.message}{_no_map_frame(tree, frame)}") \
+            from None
     placed = (s >= span[0] - TOLERANCE) & (s <= span[1] + TOLERANCE)
     if not placed.any():
         raise bag.error(f"no message on {topic} falls within the poses' time span [{span[0]:.3f}, {span[1]:.3f}] s "
@@ -379,6 +381,18 @@ def _place(bag: Bag, tree: TfTree, robot: Track | None, source: str, topic: str,
                                    f"(x, y)")
     return Run(tuple(observations), tuple(float(s[k]) for k in order), source, topic, int((~placed).sum()),
                tuple(bag.notes))
+
+
+def _no_map_frame(tree: TfTree, frame: str) -> str:
+    """How to go on when the map frame is nowhere in the bag (robot5): a run recorded without a localiser has only
+    odometry, and its top frame (``odom``) is what its poses and detections can be given in."""
+    if frame in tree.frames:
+        return ""
+    roots = sorted({tree.root(f) for f in tree.frames})
+    top = f"--frame {roots[0]}" if len(roots) == 1 else f"--frame with one of {', '.join(roots)}"
+    return (f". No localiser's pose or {frame} → odom transform was recorded: record /tf with the localiser running "
+            f"(amcl, slam_toolbox) or its pose topic (/amcl_pose), or, if the map is drawn in the odometry's frame "
+            f"(a short run from where the map was started), give {top}")
 
 
 def _link(tree: TfTree, robot: Track) -> None:

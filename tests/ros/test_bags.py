@@ -349,3 +349,17 @@ def test_a_grids_origin_turn_is_read_from_its_quaternion(tmp_path: Path, quatern
     o.x, o.y, o.z, o.w = quaternion
     write_bag(path, [("/map", "nav_msgs/msg/OccupancyGrid", 1.0, grid)], store)
     assert read_occupancy_grid(path).origin == pytest.approx((1.0, 2.0, yaw))
+
+
+@pytest.mark.parametrize("source", ["tf", "odom"])
+def test_a_run_without_a_localiser_is_told_how_to_go_on(tmp_path: Path, source: str) -> None:
+    """robot5: a bag of odometry alone (no localiser running: no map → odom, no /amcl_pose) was refused with `frame
+    'map' is not in the transforms`, and nothing said what to record or which --frame to give."""
+    path = tmp_path / "run.mcap"
+    messages = [m for m in run_messages(path, POSES, [(11.0, "base_link", [("cup", 1.0, 0.0, 0.0)])],
+                                        pose_source=source) if m[0] != "/tf_static"]  # the static map → odom
+    write_bag(path, messages, store_for(path))
+    said = message_of(path)
+    assert "frame 'map' is not in the transforms" in said and "give --frame odom" in said and "/amcl_pose" in said
+    run = read_run(path, frame="odom")
+    assert run.observations[0].pose == pytest.approx(expected_pose(11.0), abs=1e-5)  # odom is map here: (0, 0, 0)
