@@ -53,6 +53,30 @@ class Bag:
             raise self.error(f"cannot read {topic} from the bag: {damage(exc)}") from None
 
 
+    def last(self, topic: str) -> tuple[int, int, Any] | None:
+        """``(count, index of the last, last message)`` of a topic (None if it has none): only the last is
+        deserialised (a map being built is published hundreds of times, each a megabyte)."""
+        from rosbags.highlevel import AnyReaderError
+        from rosbags.serde import SerdeError
+
+        connections = [c for c in self.reader.connections if c.topic == topic]
+        found: tuple[int, Any, Any] | None = None
+        count = 0
+        try:
+            for connection, _, raw in self.reader.messages(connections=connections):
+                found = (count, connection, raw)
+                count += 1
+        except Exception as exc:  # rosbags' readers raise their own errors and sqlite's, lz4's, zstd's
+            raise self.error(f"cannot read {topic} from the bag: {damage(exc)}") from None
+        if found is None:
+            return None
+        i, connection, raw = found
+        try:
+            return count, i, self.reader.deserialize(raw, connection.msgtype)
+        except (AnyReaderError, SerdeError, ValueError, IndexError, KeyError) as exc:
+            raise self.error(f"message {i + 1} on {topic} ({connection.msgtype}) cannot be decoded: {exc}") from None
+
+
 def damage(exc: BaseException) -> str:
     """What a reader's failure says, or, when it says nothing a person can use (a damaged index makes rosbags
     fail an ``assert`` or look up a connection id that is no key: ``''``, ``'60673'``), that the bag is damaged."""

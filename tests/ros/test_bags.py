@@ -363,3 +363,20 @@ def test_a_run_without_a_localiser_is_told_how_to_go_on(tmp_path: Path, source: 
     assert "frame 'map' is not in the transforms" in said and "give --frame odom" in said and "/amcl_pose" in said
     run = read_run(path, frame="odom")
     assert run.observations[0].pose == pytest.approx(expected_pose(11.0), abs=1e-5)  # odom is map here: (0, 0, 0)
+
+
+def test_a_map_built_while_recording_is_read_from_its_last_message(tmp_path: Path) -> None:
+    """robot5: slam_toolbox and gmapping republish /map as it grows; the first message, which seal read, is the few
+    cells seen at the start. The last is the whole map."""
+    path = tmp_path / "slam.mcap"
+    store = store_for(path)
+    small, whole = np.full((2, 2), -1, np.int8), np.zeros((4, 6), np.int8)
+    small[0, 0] = 0
+    write_bag(path, [("/map", "nav_msgs/msg/OccupancyGrid", t, occupancy_grid(store, t, grid, 0.5, (-1.0, -1.0, 0.0),
+                                                                             False))
+                     for t, grid in ((1.0, small), (2.0, np.zeros((3, 4), np.int8)), (3.0, whole))], store)
+    assert read_occupancy_grid(path).values.shape == (4, 6)
+    empty = tmp_path / "empty.mcap"
+    write_bag(empty, run_messages(empty, POSES, LOOKS), store)
+    with pytest.raises(SealError, match="no topic /map in the bag \\(it holds no occupancy grid\\)"):
+        read_occupancy_grid(empty)

@@ -8,7 +8,8 @@ annotated map can take it directly (the path relative to the map file, like ``im
     occupied_thresh: 0.65                              # optional, as for an image
     free_thresh: 0.196
 
-The first message on the topic is used. Its cells keep the conventions map_server follows for
+The last message on the topic is used (a SLAM node republishes the map as it grows, the last the
+most complete; map_server publishes it once). Its cells keep the conventions map_server follows for
 images: a value v in 0..100 is the occupancy probability p = v / 100, occupied if
 ``p > occupied_thresh``, free if ``p < free_thresh``, unknown otherwise, and −1 is unknown; row
 0 is the lowest y and ``info.origin`` the pose of cell (0, 0)'s lower-left corner, so
