@@ -497,9 +497,9 @@ def review_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read
                    says=r"(--map|apartment|map)")
     yield Case("R seal plan --map a frame file", ("plan", "--map", "f.frame", "stir the cup"), (("f.frame", frame),),
                codes=(1,), says=_named("f.frame"))
-    yield Case("R detections of a class nobody knows", (*loc, "--observations", "o.yaml"),
+    yield Case("R detections of a class nobody knows", (*loc, "--observations", "o.yaml"),  # robot5: set aside, said
                (*both, ("o.yaml", b"- pose: [-6, -3]\n  detections: [{class: unicorn, at: [-5, -3]}]\n")),
-               codes=(1,), keep=("o.yaml",), says=r"unicorn")
+               codes=(0,), keep=("o.yaml",), says=r"set aside: unicorn \(1\)")
     yield Case("R detections of a class the given library lacks", (*loc, "--framelib", "f.frame", "--task",
                                                                   "whisk the cup", "--observations", "o.yaml"),
                (*both, ("f.frame", frame), ("o.yaml", b"- pose: [-6, -3]\n  detections: [{class: knife, at: [-5, -3]}]"

@@ -99,8 +99,10 @@ def _known_only(runs: list[Observation], known: frozenset[str], map_name: str) -
         listed = ", ".join(f"{cls} ({n}{suggest(class_key(cls), known).replace(' (', ', ').rstrip(')')})"
                            for cls, n in list(dropped.items())[:10])
         more = f" and {len(dropped) - 10} more classes" if len(dropped) > 10 else ""
-        err.print(f"warning: {sum(dropped.values())} detections of classes neither map {map_name} nor the plan knows "
-                  f"were set aside: {listed}{more}; seal keeps beliefs of {', '.join(sorted(known)) or 'none'} "
+        n = sum(dropped.values())
+        counted = f"{n} detections of classes" if n > 1 else "1 detection of a class"
+        err.print(f"warning: {counted} neither map {map_name} nor the plan knows {'were' if n > 1 else 'was'} set "
+                  f"aside: {listed}{more}; seal keeps beliefs of {', '.join(sorted(known)) or 'none'} "
                   f"(--labels renames a detector's classes)", markup=False)
     return kept
 

@@ -107,7 +107,7 @@ def test_picked_hostile17_cases_end_cleanly(name: str, monkeypatch: pytest.Monke
 
 @pytest.mark.parametrize("name", ["A a person that is an alias of the robot: said at the alias's line",
                                   "A a room merging another (<<: *room): map",
-                                  "A observations whose second look sees a class nobody knows: at its line",
+                                  "A observations whose second look sees a class nobody knows: set aside, said",
                                   "A bench tasks --policies sefm,sefm", "A import-bag of a NaN pose"])
 def test_picked_hostile18_cases_end_cleanly(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
     """Each failed on main: a problem said at the alias's anchor, a merge key refused, a bad look said without its
