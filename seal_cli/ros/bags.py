@@ -208,10 +208,16 @@ def _tf_tree(bag: Bag) -> TfTree:
                                                                  f"{i + 1} on {topic} (x, y, z, qx, qy, qz, qw)")
                 _check_rotation(bag, read[-1][4], f"the rotation of the transform {key[0]} → {key[1]} of message "
                                                   f"{i + 1} on {topic} (qx, qy, qz, qw)")
-        if topic == "/tf":
-            stamps, keep = _clocked(bag, topic, [r[1] for r in read], [r[2] for r in read], "transforms")
-        else:  # a static transform holds at every time: its stamp is never used
-            stamps, keep = [r[1] for r in read], np.ones(len(read), bool)
+        stamps, keep = [r[1] for r in read], np.ones(len(read), bool)  # /tf_static: stamps never used
+        if topic == "/tf":  # edge by edge: one publisher may never stamp (log times), another start before /clock
+            edges: dict[tuple[str, str], list[int]] = {}
+            for k, r in enumerate(read):
+                edges.setdefault(r[0], []).append(k)
+            for key, rows in edges.items():
+                mine, kept_ = _clocked(bag, f"{topic} ({key[0]} → {key[1]})", [read[k][1] for k in rows],
+                                       [read[k][2] for k in rows], "transforms")
+                for k, stamp, ok in zip(rows, mine, kept_, strict=True):
+                    stamps[k], keep[k] = stamp, ok
         for (key, _, _, t, q), stamp, kept in zip(read, stamps, keep, strict=True):
             if topic != "/tf":
                 static.add(key)

@@ -304,7 +304,7 @@ def test_messages_stamped_zero_among_stamped_ones_are_left_out_with_a_note(tmp_p
     assert run.stamps == pytest.approx([11.0])  # the detection stamped 0 is left out, the one at 11 s kept
     assert run.observations[0].pose == pytest.approx(expected_pose(11.0), abs=1e-5)  # not pulled to (5, 5)
     assert run.observations[0].where is not None and "message 2" in str(run.observations[0].where)
-    assert any("2 of 22 transforms on /tf are stamped 0" in note for note in run.notes)
+    assert any("2 of 22 transforms on /tf (odom → base_link) are stamped 0" in note for note in run.notes)
     assert any("1 of 2 messages on /detections are stamped 0" in note and "use_sim_time" in note
                for note in run.notes)
 
@@ -380,3 +380,18 @@ def test_a_map_built_while_recording_is_read_from_its_last_message(tmp_path: Pat
     write_bag(empty, run_messages(empty, POSES, LOOKS), store)
     with pytest.raises(SealError, match="no topic /map in the bag \\(it holds no occupancy grid\\)"):
         read_occupancy_grid(empty)
+
+
+def test_a_transform_never_stamped_beside_stamped_ones_takes_the_log_times(tmp_path: Path) -> None:
+    """A robot on wall time whose one publisher never stamps its transform (map → odom at stamp 0, every time): that
+    edge is placed at the times the bag logged it, as before robot5, not left out."""
+    from seal_cli.ros.messages import TF
+    from tests.ros.bagfiles import tf_message
+
+    path = tmp_path / "run.mcap"
+    store = store_for(path)
+    messages = [m for m in run_messages(path, POSES, [(11.0, "map", [])], pose_source="tf") if m[0] != "/tf_static"]
+    messages += [("/tf", TF, t, tf_message(store, 0.0, [("map", "odom", 0.0, 0.0, 0.0)], False)) for t, *_ in POSES]
+    write_bag(path, sorted(messages, key=lambda m: m[2]), store)
+    run = read_run(path)
+    assert run.observations[0].pose == pytest.approx(expected_pose(11.0), abs=1e-5) and run.notes == ()
