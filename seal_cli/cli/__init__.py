@@ -210,4 +210,6 @@ def main() -> None:
 
         text, as_json = plain
         sys.exit(run_command(lambda: print_parse(text, None, None, as_json)))  # the standard library
-    register(command_modules(sys.argv[1:]))()
+    from seal_cli.cli.output import run_framework
+
+    run_framework(register(command_modules(sys.argv[1:])))

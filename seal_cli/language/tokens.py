@@ -88,6 +88,9 @@ _TOKEN = re.compile(r"""
   | (?P<space>\s+)
 """, re.VERBOSE)
 _CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f]")
+_SURROGATE = re.compile("[\ud800-\udfff]")
+"""What Python makes of a byte of the command line that is not UTF-8 (U+DC80 to U+DCFF: ``surrogateescape``), or any
+other lone surrogate: no character of any text."""
 _NAME_AFTER = re.compile(r"\s+[^\W\d_]")
 
 
@@ -96,6 +99,9 @@ def tokenize(text: str) -> list[Word]:
     if len(text) > MAX_LENGTH:
         raise CommandError(f"command too long ({len(text)} characters; the limit is {MAX_LENGTH})", MAX_LENGTH + 1,
                            text[:MAX_LENGTH + 20], ["a shorter command"])
+    undecoded = _SURROGATE.search(text)
+    if undecoded:
+        raise CommandError(_not_utf8(undecoded.group()), undecoded.start() + 1, text, ["UTF-8 text"])
     bad = _CONTROL.search(text)
     if bad:
         raise CommandError(f"control character U+{ord(bad.group()):04X} in the command", bad.start() + 1,
@@ -134,6 +140,17 @@ def tokenize(text: str) -> list[Word]:
     if pos != len(text):
         raise CommandError(f"unexpected character {text[pos]!r}", pos + 1, text, ["a word"])
     return words
+
+
+def _not_utf8(character: str) -> str:
+    """Why a lone surrogate is in a command: a command-line argument typed in another encoding than the locale's
+    (``seal parse`` in a Latin-1 terminal, its "é" the byte 0xe9) reaches Python as U+DCE9, which the parser called
+    an "unexpected character '\\udce9'" (hostile21)."""
+    code = ord(character)
+    if 0xDC80 <= code <= 0xDCFF:
+        return (f"byte 0x{code - 0xDC00:02x} is not UTF-8: seal reads a command as UTF-8 text (was it typed in a "
+                "terminal set to another encoding, such as Latin-1? set it, and LANG, to UTF-8)")
+    return f"a lone surrogate U+{code:04X} is no character: seal reads a command as UTF-8 text"
 
 
 _ALPHABETS = ("LATIN", "CYRILLIC", "GREEK")
