@@ -145,6 +145,7 @@ INSIDE: tuple[Rule, ...] = (
 """Inside a clause, before the word is tagged by ``WORDS``."""
 
 WORDS: tuple[Rule, ...] = (
+    numbers.MULTIPLIED,
     numbers.LABEL,
     numbers.NUMBER_AS_NOUN,
     numbers.COUNT,
