@@ -28,7 +28,8 @@ import numpy as np
 from seal_cli.bench.reliability import FRAME, Case, hostile_setting
 
 __all__ = ["alfred2d_data", "attacker_cases", "chain_library", "hostile14_cases", "hostile15_cases", "hostile16_cases",
-           "hostile17_cases", "hostile18_cases", "hostile19_cases", "hostile20_cases", "rgba_png", "sparse_pgm"]
+           "hostile17_cases", "hostile18_cases", "hostile19_cases", "hostile20_cases", "hostile21_cases", "rgba_png",
+           "sparse_pgm"]
 
 DIGITS = "1" * 5_000
 """An integer longer than Python converts from text (4,300 digits)."""
@@ -286,6 +287,7 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield from hostile18_cases()
     yield from hostile19_cases()
     yield from hostile20_cases()
+    yield from hostile21_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -829,3 +831,36 @@ def hostile20_cases() -> Iterator[Case]:
                ("bench", "parse", "--corpus", "c.jsonl", "--constants", "k.json"),
                (("c.jsonl", b'{"text": "stir the cup"}\n'), ("k.json", b'{"OBJECTS": ["cup"]}\n')), codes=(1,),
                keep=("c.jsonl", "k.json"), says=r"--constants k\.json: the ALFRED constants are read for ALFRED goals")
+
+
+def hostile21_cases() -> Iterator[Case]:
+    """Round hostile21: what typer prints before a command (its help, ``--version``) onto a full disk, a closed
+    standard output or a reader that has gone; a command-line byte that is not UTF-8; numbers written in other
+    digits, as superscripts or fractions, or with a multiplier; invisible characters in a command."""
+    full = r"error: cannot write the output: No space left on device"
+    for argv in (("--help",), ("map", "--help"), ("bench", "tasks", "--help"), ("-h",)):
+        yield Case(f"A {' '.join(argv)} onto /dev/full", argv, codes=(1,), stream="full-stdout", says=full)
+        yield Case(f"A {' '.join(argv)} into a reader that has gone", argv, codes=(0,), stream="gone-stdout")
+    yield Case("A --version onto /dev/full", ("--version",), codes=(1,), stream="full-stdout", says=full)
+    yield Case("A --version with standard output closed", ("--version",), codes=(0,), stream="closed-stdout")
+    yield Case("A --version into a reader that has gone", ("--version",), codes=(0,), stream="gone-stdout")
+    latin1 = "stir the caf\udce9"  # the byte 0xe9 on the command line: "café" typed in a Latin-1 terminal
+    for argv in (("parse", latin1), ("parse", latin1, "--json"), ("plan", latin1),
+                 ("localize", "--map", "apartment", "--steps", "0", "--task", latin1)):
+        yield Case(f"A {argv[0]}{' --json' if '--json' in argv else ''} of a command with a Latin-1 byte", argv,
+                   codes=(1,), says=r'"text": "stir the caf\\udce9", "error": \{"message": "byte 0xe9 is not UTF-8: '
+                   r'.*"column": 13' if "--json" in argv else
+                   r"column 13: byte 0xe9 is not UTF-8: seal reads a command as UTF-8 text")
+    yield Case("A plan with a full-width digit", ("plan", "put \uff13 apples in the sink", "--map", "apartment"),
+               codes=(0,), says=r"Place\s+theme=apple_3, goal=sink_1")
+    yield Case("A plan with an Arabic-Indic digit", ("plan", "bring me \u0662 apples", "--map", "apartment"),
+               codes=(0,), says=r"Bring\s+theme=apple_2, recipient=me")
+    for number, column, name in (("\u00b2", 10, "superscript two"), ("3\u00bd", 11, "vulgar fraction one half")):
+        yield Case(f"A plan of {name} apples", ("plan", f"bring me {number} apples", "--map", "apartment"),
+                   codes=(1,), says=rf"column {column}: '.' \({name}\) is no whole number")
+    for count, shown in (("one million", "1,000,000"), ("2 thousand", "2,000"), ("hundreds of", "200")):
+        yield Case(f"A run of {count} apples", ("run", f"bring me {count} apples", "--map", "apartment"),
+                   codes=(1,), says=rf"column 10: '{count} apples' asks for {shown} things; seal plans for at most 100")
+    for mark, name in (("\u200d", "ZERO WIDTH JOINER"), ("\u200f", "RIGHT-TO-LEFT MARK")):
+        yield Case(f"A parse with a {name.lower()}", ("parse", f"stir the cu{mark}p"), codes=(1,),
+                   says=rf"column 12: unexpected character .* \(U\+{ord(mark):04X} {name}\)")
