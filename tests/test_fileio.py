@@ -391,3 +391,24 @@ def test_an_output_past_ulimit_f_is_said_of_its_option(tmp_path: Path) -> None:
     assert done.stderr == ""
     assert re.fullmatch(r"cannot write --png .*o\.png: File too large\n", done.stdout)
     assert list(tmp_path.iterdir()) == []  # neither output written, no temporary left
+
+
+@pytest.mark.parametrize(("value", "said"), [
+    ("010", r"'010' has a leading zero: YAML 1\.1, which seal reads, takes it as octal \(8\), YAML 1\.2, which ROS "
+            r"reads, as 10"),
+    ("-012", r"'-012' has a leading zero: .* octal \(-10\), .* as -12"),
+    ("10:00", r"'10:00' is a number in base 60 to YAML 1\.1"),
+    ("1:30.5", r"'1:30\.5' is a number in base 60"),
+])
+def test_a_number_yaml_11_and_12_read_otherwise_is_refused_at_its_place(tmp_path: Path, value: str, said: str) -> None:
+    # bounds: [0, 0, 10:00, 10] made a map 600 m wide, 012 10 m: YAML 1.1's readings, not ROS's (hostile21)
+    path = tmp_path / "m.yaml"
+    path.write_text(f"a: 1\nb: [0, {value}]\n")
+    with pytest.raises(SealError, match=r"m\.yaml:2:8: cannot read this value: " + said):
+        read_yaml(path)
+
+
+def test_a_number_both_yamls_read_alike_is_read(tmp_path: Path) -> None:
+    path = tmp_path / "m.yaml"
+    path.write_text("[07, -05, 00, 0, 0x10, 1_000, 10.5, '10:00', '010', 0.5]\n")
+    assert read_yaml(path) == [7, -5, 0, 0, 16, 1000, 10.5, "10:00", "010", 0.5]

@@ -864,3 +864,18 @@ def hostile21_cases() -> Iterator[Case]:
     for mark, name in (("\u200d", "ZERO WIDTH JOINER"), ("\u200f", "RIGHT-TO-LEFT MARK")):
         yield Case(f"A parse with a {name.lower()}", ("parse", f"stir the cu{mark}p"), codes=(1,),
                    says=rf"column 12: unexpected character .* \(U\+{ord(mark):04X} {name}\)")
+    for value, said in (("012", r"'012' has a leading zero: YAML 1\.1, which seal reads, takes it as octal \(10\)"),
+                        ("10:00", r"'10:00' is a number in base 60 to YAML 1\.1")):
+        bounds = f"name: m\nbounds: [0, 0, {value}, 10]\nrooms:\n  - {{name: hall, box: [0, 0, 5, 10]}}\n"
+        yield Case(f"A a map's bounds of {value}", ("validate", "m.yaml"), (("m.yaml", bounds.encode()),),
+                   codes=(1,), keep=("m.yaml",), says=rf"m\.yaml:2:16: cannot read this value: {said}")
+        looks = f"- {{pose: [-6, -3, {value}], detections: []}}\n"
+        yield Case(f"A an observation's yaw of {value}", ("localize", "--map", "apartment", "--task", "find the cup",
+                                                          "--observations", "o.yaml", "--particles", "20"),
+                   (("o.yaml", looks.encode()),), codes=(1,), keep=("o.yaml",),
+                   says=rf"o\.yaml:1:19: observation 1's pose's yaw cannot be read: {said}")
+    yield Case("A an observation's yaw of 1e-1, as a map reads it", ("localize", "--map", "apartment", "--task",
+                                                                     "find the cup", "--observations", "o.yaml",
+                                                                     "--particles", "20"),
+               (("o.yaml", b"- {pose: [-6, -3, 1e-1], detections: []}\n"),), codes=(0,), keep=("o.yaml",),
+               says=r"frames on apartment after \d+ updates \(20 particles")

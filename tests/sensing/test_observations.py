@@ -72,3 +72,15 @@ def test_poses_and_detections_off_the_map_are_refused_where_they_are(tmp_path: P
     with pytest.raises(SealError, match="a detection of cup at"):
         check_inside(far, (0, 0, 10, 10), "flat")
     check_inside([Observation((0.0, 10.0, math.pi))], (0, 0, 10, 10), "flat")   # the edge is inside
+
+
+def test_a_number_is_read_as_a_maps_numbers_are(tmp_path: Path) -> None:
+    # a plain 1e-1 is text to YAML 1.1: the map read it as a number and observations refused it (hostile21)
+    path = write(tmp_path, "- {pose: [1e-1, -3, 2E0], detections: []}\n")
+    assert read_observations(path)[0].pose == (0.1, -3.0, 2.0)
+    for value, said in (("010", r"f\.yaml:1:18: observation 1's pose's yaw cannot be read: '010' has a leading zero"),
+                        ("10:00", r"f\.yaml:1:18: .* cannot be read: '10:00' is a number in base 60"),
+                        (".nan", r"f\.yaml:1:18: .* must be a finite number, not '\.nan'")):
+        path = write(tmp_path, f"- {{pose: [1, -3, {value}], detections: []}}\n")
+        with pytest.raises(SealError, match=said):
+            read_observations(path)
