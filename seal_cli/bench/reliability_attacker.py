@@ -879,3 +879,10 @@ def hostile21_cases() -> Iterator[Case]:
                                                                      "--particles", "20"),
                (("o.yaml", b"- {pose: [-6, -3, 1e-1], detections: []}\n"),), codes=(0,), keep=("o.yaml",),
                says=r"frames on apartment after \d+ updates \(20 particles")
+    tiny = b"P5\n2 2\n255\n" + bytes([254] * 4)    # 0.1 m of image at 0.05 m a pixel, rooms drawn for metres
+    drawn = b"image: i.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nrooms:\n  - {name: hall, box: [0, 0, 50, 50]}\n"
+    yield Case("A a room of 50 m on an image of 0.1 m: validate", ("validate", "m.yaml"),
+               (("m.yaml", drawn), ("i.pgm", tiny)), codes=(1,), keep=("m.yaml", "i.pgm"),
+               says=r"m\.yaml:5:5: room hall \(\[0, 0\]–\[50, 50\]\) lies 100% outside the map's bounds")
+    yield Case("A a room of 50 m on an image of 0.1 m: map", ("map", "m.yaml"), (("m.yaml", drawn), ("i.pgm", tiny)),
+               codes=(0,), keep=("m.yaml", "i.pgm"), says=r"warning: m\.yaml:5:5: room hall .* lies 100% outside")

@@ -43,6 +43,7 @@ from seal_cli.maps.geometry import (
     OccupancyGrid,
     as_points,
     box_polygon,
+    clipped_area,
     line_of_sight,
     overlap_area,
     point_in_polygon,
@@ -837,6 +838,20 @@ def _room_shapes(m: Map) -> Iterator[SealError]:
         if xmax <= m.bounds[0] or xmin >= m.bounds[2] or ymax <= m.bounds[1] or ymin >= m.bounds[3]:
             yield SealError(f"room {room.name} ({_pt((xmin, ymin))}–{_pt((xmax, ymax))}) is wholly {_off(m)}: "
                             "nothing in it can be reached or seen", where)
+        elif not crossings and room.area >= 1e-9 and (xmin < m.bounds[0] or ymin < m.bounds[1] or
+                                                        xmax > m.bounds[2] or ymax > m.bounds[3]):
+            outside = 1.0 - clipped_area(room.vertices, m.bounds) / room.area
+            if outside > MAX_OUTSIDE:
+                yield MapWarning(f"room {room.name} ({_pt((xmin, ymin))}–{_pt((xmax, ymax))}) lies {outside:.0%} "
+                                 f"{_off(m)}: what is there can be neither reached nor seen (do the image's "
+                                 "resolution and origin match the rooms?)", where)
+
+
+MAX_OUTSIDE = 0.5
+"""The share of a room's area that may lie outside the map's bounds without a warning. A room partly outside is
+usable, but mostly outside means the image and the rooms disagree: a resolution of 0.005 for 0.05 draws the image
+a tenth of its size, and a room of 50 m × 50 m on an image of 0.1 m validated without a word (hostile21). A room
+whose outline follows the outer walls may stand a little past the image's last pixel: well within half."""
 
 
 def _edge(room: Room, i: int) -> str:
