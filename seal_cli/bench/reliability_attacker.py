@@ -886,3 +886,10 @@ def hostile21_cases() -> Iterator[Case]:
                says=r"m\.yaml:5:5: room hall \(\[0, 0\]–\[50, 50\]\) lies 100% outside the map's bounds")
     yield Case("A a room of 50 m on an image of 0.1 m: map", ("map", "m.yaml"), (("m.yaml", drawn), ("i.pgm", tiny)),
                codes=(0,), keep=("m.yaml", "i.pgm"), says=r"warning: m\.yaml:5:5: room hall .* lies 100% outside")
+    cased = "".join(f"  - frame: {name}\n    lexical_units: [{unit}]\n    elements:\n      theme: {{type: object}}\n"
+                    f"    actions: [navigate(theme)]\n    postconditions: [{fact}(theme)]\n"
+                    for name, unit, fact in (("Zap", "zapple", "hot"), ("ZAP", "zopple", "cold")))
+    yield Case("A plan --pddl of frames Zap and ZAP", ("plan", "zapple the cup", "--framelib", "+f.yaml", "--pddl",
+                                                       "d"), (("f.yaml", f"frames:\n{cased}".encode()), ("d", "dir")),
+               codes=(1,), keep=("f.yaml",), absent=("d/domain.pddl", "d/problem.pddl"),
+               says=r"cannot export PDDL: the actions 'do_Zap' and 'do_ZAP' differ only in case")
