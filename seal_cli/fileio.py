@@ -145,7 +145,9 @@ def _regular(path: Path, what: str) -> os.stat_result:
     try:
         info = path.stat()
     except FileNotFoundError:
-        raise SealError(f"no such {what}", where) from None
+        stdin = (" ('-' is standard input only to seal parse --file: save the text to a file and give its name)"
+                 if str(path) == "-" else "")  # bench plan --file - said only "-: no such file" (hostile21)
+        raise SealError(f"no such {what}{stdin}", where) from None
     except OSError as exc:
         raise SealError(f"cannot read this {what}: {exc.strerror}", where) from None
     if stat.S_ISDIR(info.st_mode):

@@ -893,3 +893,5 @@ def hostile21_cases() -> Iterator[Case]:
                                                        "d"), (("f.yaml", f"frames:\n{cased}".encode()), ("d", "dir")),
                codes=(1,), keep=("f.yaml",), absent=("d/domain.pddl", "d/problem.pddl"),
                says=r"cannot export PDDL: the actions 'do_Zap' and 'do_ZAP' differ only in case")
+    yield Case("A bench plan --file - with a command on standard input", ("bench", "plan", "--file", "-"),
+               codes=(1,), stdin=b"stir the cup\n", says=r"-: no such file \('-' is standard input only to seal parse")
