@@ -414,7 +414,8 @@ def test_a_number_both_yamls_read_alike_is_read(tmp_path: Path) -> None:
     assert read_yaml(path) == [7, -5, 0, 0, 16, 1000, 10.5, "10:00", "010", 0.5]
 
 
-def test_a_dash_that_is_no_file_says_where_standard_input_is_read(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+def test_a_dash_that_is_no_file_says_where_standard_input_is_read(tmp_path: Path,
+                                                                  monkeypatch: pytest.MonkeyPatch) -> None:
     # `bench plan --file -` said only "-: no such file" where `parse --file -` reads standard input (hostile21)
     monkeypatch.chdir(tmp_path)
     with pytest.raises(SealError, match=r"^-: no such file \('-' is standard input only to seal parse --file"):
