@@ -895,3 +895,9 @@ def hostile21_cases() -> Iterator[Case]:
                says=r"cannot export PDDL: the actions 'do_Zap' and 'do_ZAP' differ only in case")
     yield Case("A bench plan --file - with a command on standard input", ("bench", "plan", "--file", "-"),
                codes=(1,), stdin=b"stir the cup\n", says=r"-: no such file \('-' is standard input only to seal parse")
+    for name, said in (("\U0001f6cf", r"U\+1F6CF BED\), a symbol"), ("hall\u200d", r"U\+200D ZERO WIDTH JOINER\)")):
+        emoji = f'name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {{name: "{name}", box: [0, 0, 10, 10]}}\n'
+        yield Case(f"A a room called {name.encode('unicode_escape').decode()}", ("run", "go to the hall", "--map",
+                                                                                   "m.yaml"),
+                   (("m.yaml", emoji.encode()),), codes=(1,), keep=("m.yaml",),
+                   says=rf"m\.yaml:4:\d+: room name .* \({said}.* no command can say")

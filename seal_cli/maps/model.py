@@ -50,7 +50,7 @@ from seal_cli.maps.geometry import (
     polygon_area,
     self_intersections,
 )
-from seal_cli.names import check_name_length
+from seal_cli.names import check_name_length, check_sayable
 
 if TYPE_CHECKING:
     from seal_cli.maps.priors import Prior
@@ -107,6 +107,7 @@ class Room:
         if not isinstance(self.name, str) or not class_key(self.name):
             raise SealError(f"a room needs a name, not {self.name!r}", self.where)
         check_name_length(self.name, "room name", self.where)
+        check_sayable(self.name, "room name", self.where)
         if self.name.strip().casefold() == OUTSIDE:
             raise SealError(f"a room cannot be called {self.name!r}: seal's outputs give that name to the mass in no "
                             "room; call the room another name", self.where)
@@ -256,6 +257,7 @@ class Person:
         if not isinstance(self.name, str) or not class_key(self.name):
             raise SealError(f"a person needs a name, not {self.name!r}", self.where)
         check_name_length(self.name, "person name", self.where)
+        check_sayable(self.name, "person name", self.where)
         if (self.at is None) == (self.room is None):
             raise SealError(f"person {self.name} needs exactly one of at: [x, y] or room: <room>", self.where)
         if self.at is not None:
