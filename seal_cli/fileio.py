@@ -39,7 +39,7 @@ if TYPE_CHECKING:
 __all__ = ["LOADER", "MAX_IMAGE_BYTES", "MAX_INPUT_BYTES", "YAML_BREAKS", "Outputs", "atomic_output",
            "atomic_write_text", "clean_up_on_signals", "compose_documents", "compose_yaml", "decode", "interrupted",
            "note_interrupts", "open_regular", "read_bytes", "read_json", "read_json_lines", "read_text", "read_yaml",
-           "remove_temporaries", "split_lines", "stream_lines", "yaml_problem"]
+           "remove_temporaries", "split_lines", "stream_lines", "typed", "yaml_problem"]
 
 if TYPE_CHECKING:
     LOADER: type[yaml.SafeLoader]
@@ -259,6 +259,21 @@ def composed(text: str) -> str:
     import unicodedata
 
     return text if text.isascii() or unicodedata.is_normalized("NFC", text) else unicodedata.normalize("NFC", text)
+
+
+_UNDECODED = re.compile("[\udc80-\udcff]")
+
+
+def typed(text: str) -> str:
+    """A text of the command line (a command, ``--task``, ``--holding``) as its user typed it: composed
+    (:func:`composed`), and, where the locale could not decode its bytes (Python's ``surrogateescape``: an ASCII
+    locale, ``LANG=C`` with Python's UTF-8 mode off), read as UTF-8 if they are UTF-8: "stir the café" was refused
+    there at a "byte 0xc3" (hostile21). Bytes that are no UTF-8 stay as Python gave them: the parser names the first
+    (:mod:`seal_cli.language.tokens`)."""
+    if not text.isascii() and _UNDECODED.search(text):
+        with contextlib.suppress(UnicodeError):
+            text = os.fsencode(text).decode("utf-8")
+    return composed(text)
 
 
 def read_text(path: str | Path, limit: int = MAX_INPUT_BYTES) -> str:

@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 
 from seal_cli.errors import SealError
-from seal_cli.fileio import atomic_output, atomic_write_text, read_text, read_yaml
+from seal_cli.fileio import atomic_output, atomic_write_text, read_text, read_yaml, typed
 
 
 def test_written_files_get_the_usual_mode(tmp_path: Path) -> None:
@@ -422,3 +422,27 @@ def test_a_dash_that_is_no_file_says_where_standard_input_is_read(tmp_path: Path
         read_text("-")
     (tmp_path / "-").write_text("stir the cup\n")     # a file called '-' is a file
     assert read_text("-") == "stir the cup\n"
+
+
+def test_a_command_line_text_is_read_as_its_user_typed_it() -> None:
+    # the bytes of "café" that an ASCII locale could not decode (surrogateescape) are UTF-8: read so (hostile21)
+    undecoded = "stir the caf\udcc3\udca9"
+    assert typed(undecoded) == "stir the café" and typed("stir the cafe\u0301") == "stir the café"
+    assert typed("stir the caf\udce9") == "stir the caf\udce9"     # no UTF-8: left for the parser to name
+    assert typed("stir the cup") == "stir the cup"
+
+
+@pytest.mark.parametrize("argv", [["parse", "stir the cafe\u0301"], ["parse", "stir the cafe\u0301", "--json"]])
+def test_seal_parse_text_without_typer_composes_and_reads_utf8_in_an_ascii_locale(argv: list[str]) -> None:
+    """``seal parse TEXT`` (answered without typer) took the text as given: decomposed it was refused at the accent
+    where ``seal plan`` read it, and in an ASCII locale (``LANG=C``, Python's UTF-8 mode off) every accented letter
+    was refused (hostile21)."""
+    import os
+    import subprocess
+    import sys
+
+    for env in ({}, {"LC_ALL": "C", "LANG": "C", "PYTHONUTF8": "0", "PYTHONCOERCECLOCALE": "0"}):
+        done = subprocess.run([sys.executable, "-m", "seal_cli", *argv], capture_output=True, timeout=120, check=False,
+                              env={**os.environ, **env})
+        assert done.returncode == 0, (env, done.stderr)
+        assert b"Stir" in done.stdout and (b"caf" in done.stdout)

@@ -901,3 +901,9 @@ def hostile21_cases() -> Iterator[Case]:
                                                                                    "m.yaml"),
                    (("m.yaml", emoji.encode()),), codes=(1,), keep=("m.yaml",),
                    says=rf"m\.yaml:4:\d+: room name .* \({said}.* no command can say")
+    yield Case("A parse TEXT typed decomposed (NFD)", ("parse", "stir the cafe\u0301", "--json"), codes=(0,),
+               says=r'"head": "caf\u00e9"')
+    ascii_locale = (("LC_ALL", "C"), ("LANG", "C"), ("PYTHONUTF8", "0"), ("PYTHONCOERCECLOCALE", "0"))
+    for argv in (("parse", "stir the café"), ("plan", "stir the café", "--map", "apartment")):
+        yield Case(f"A {argv[0]} of an accented word in an ASCII locale", argv, codes=(0,), env=ascii_locale,
+                   says=r"Stir .*caf\\xe9")
