@@ -833,11 +833,12 @@ def hostile20_cases() -> Iterator[Case]:
                keep=("c.jsonl", "k.json"), says=r"--constants k\.json: the ALFRED constants are read for ALFRED goals")
 
 
-def hostile21_cases() -> Iterator[Case]:
+def hostile21_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read top to bottom
     """Round hostile21: what typer prints before a command (its help, ``--version``) onto a full disk, a closed
     standard output or a reader that has gone; a command-line byte that is not UTF-8; numbers written in other
     digits, as superscripts or fractions, or with a multiplier; invisible characters in a command."""
     full = r"error: cannot write the output: No space left on device"
+    argv: tuple[str, ...]
     for argv in (("--help",), ("map", "--help"), ("bench", "tasks", "--help"), ("-h",)):
         yield Case(f"A {' '.join(argv)} onto /dev/full", argv, codes=(1,), stream="full-stdout", says=full)
         yield Case(f"A {' '.join(argv)} into a reader that has gone", argv, codes=(0,), stream="gone-stdout")
