@@ -908,3 +908,5 @@ def hostile21_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
     for argv in (("parse", "stir the café"), ("plan", "stir the café", "--map", "apartment")):
         yield Case(f"A {argv[0]} of an accented word in an ASCII locale", argv, codes=(0,), env=ascii_locale,
                    says=r"Stir .*caf\\xe9")
+    yield Case("A plan of twenty apples", ("plan", "bring me twenty apples", "--map", "apartment", "--json"),
+               codes=(0,), says=r'"apple_20"(?![\s\S]*"apple_21")')

@@ -33,6 +33,8 @@ def themes(text: str, library: Library) -> list[str]:
     ("put the apple and two pears in the fridge", ["apple", "pear", "pear_2"]),
     ("put a dozen apples in the fridge", [f"apple{'' if k == 1 else f'_{k}'}" for k in range(1, 13)]),  # hostile21
     ("put ３ books on the desk", ["book", "book_2", "book_3"]),     # a full-width digit (hostile21)
+    ("put fifteen books on the desk", [f"book{'' if k == 1 else f'_{k}'}" for k in range(1, 16)]),  # hostile21
+    ("put twenty-one books on the desk", [f"book{'' if k == 1 else f'_{k}'}" for k in range(1, 22)]),
 ])
 def test_how_many_things_a_phrase_asks_for(library: Library, text: str, expected: list[str]) -> None:
     assert themes(text, library) == expected
@@ -346,7 +348,8 @@ def test_a_place_to_go_that_nothing_knows_of_is_refused_not_searched_for(library
 
 @pytest.mark.parametrize(("text", "count"), [("put one million apples in the fridge", "1,000,000"),
                                              ("put 2 thousand apples in the fridge", "2,000"),
-                                             ("put hundreds of apples in the fridge", "200")])
+                                             ("put hundreds of apples in the fridge", "200"),
+                                             ("put ninety nine thousand apples in the fridge", "99,000")])
 def test_a_count_times_a_multiplier_is_their_product_and_refused_past_the_bound(library: Library, text: str,
                                                                              count: str) -> None:
     # "one million apples" was one apple, "2 thousand" two: the multiplier dropped in silence (hostile21)

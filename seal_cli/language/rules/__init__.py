@@ -146,6 +146,7 @@ INSIDE: tuple[Rule, ...] = (
 
 WORDS: tuple[Rule, ...] = (
     numbers.MULTIPLIED,
+    numbers.PAST_TWELVE,
     numbers.LABEL,
     numbers.NUMBER_AS_NOUN,
     numbers.COUNT,
