@@ -217,8 +217,15 @@ def run_framework(app: Callable[[], Any]) -> None:
         sys.exit(0 if isinstance(error, BrokenPipeError) else output_failed(error))
     except SystemExit as ended:
         if ended.code == 1 and READER_GONE and not STARTED:  # the help's reader left: rich's or click's exit 1
-            raise SystemExit(0) from None
+            raise SystemExit(_help_code()) from None
         raise
+
+
+def _help_code() -> int:
+    """The exit code of the help typer prints before any command: 0 when asked for (``--help``, ``-h``, or the
+    version), 2 when shown for a command missing (``seal``, ``seal bench``: typer's usage error)."""
+    asked = {"--help", "-h", "--version"}
+    return 0 if any(a in asked for a in sys.argv[1:]) else 2
 
 
 def _quiet_arithmetic() -> None:

@@ -380,3 +380,10 @@ def test_json_never_echoes_a_byte_of_the_command_line_that_is_not_utf8(monkeypat
     assert text == '{"text": "stir the caf\\udce9"}' and json.loads(text)["text"] == "stir the caf\udce9"
     text.encode("utf-8")
     assert dump_json({"text": "café"}) == '{"text": "café"}'
+
+
+@pytest.mark.parametrize(("argv", "code"), [([], 2), (["bench"], 2), (["bench", "-h"], 0)])
+def test_help_shown_for_a_missing_command_keeps_its_code_when_its_reader_has_gone(argv: list[str], code: int) -> None:
+    # `seal` alone prints the help and exits 2 (typer's usage error); its reader gone, it is still 2, not 0 (hostile21)
+    done = _seal_into("gone", *argv)
+    assert (done.returncode, done.stderr) == (code, "")
