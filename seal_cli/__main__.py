@@ -33,9 +33,7 @@ import sys
 
 def main() -> None:
     if sys.argv[1:] == ["--version"]:
-        from seal_cli import __version__
-
-        sys.stdout.write(f"seal {__version__}\n")
+        _version()
         return
     enabled = gc.isenabled()
     gc.disable()
@@ -74,6 +72,28 @@ def main() -> None:
     finally:
         gc.freeze()  # the command has finished: the process ends without a last pass over its objects
         _ignore_late_signals()
+
+
+def _version() -> None:
+    """``seal --version``, answered without the framework, fails as a command's output does (hostile21): with its
+    standard output closed (``>&-``: ``sys.stdout`` is None) it was an ``AttributeError`` traceback, onto a full disk
+    an ``OSError`` one; now the first writes nowhere (as onto ``/dev/null``), the second says ``error: cannot write
+    the output: No space left on device``, exit code 1, and a reader that has gone leaves exit code 0."""
+    from seal_cli import __version__
+
+    if sys.stdout is None:
+        return
+    try:
+        sys.stdout.write(f"seal {__version__}\n")
+        sys.stdout.flush()
+    except BrokenPipeError:
+        from seal_cli.cli.output import reader_gone
+
+        reader_gone(sys.stdout)
+    except OSError as error:
+        from seal_cli.cli.output import output_failed
+
+        sys.exit(output_failed(error))
 
 
 def _ignore_late_signals() -> None:

@@ -39,7 +39,7 @@ if TYPE_CHECKING:
 __all__ = ["LOADER", "MAX_IMAGE_BYTES", "MAX_INPUT_BYTES", "YAML_BREAKS", "Outputs", "atomic_output",
            "atomic_write_text", "clean_up_on_signals", "compose_documents", "compose_yaml", "decode", "interrupted",
            "note_interrupts", "open_regular", "read_bytes", "read_json", "read_json_lines", "read_text", "read_yaml",
-           "remove_temporaries", "split_lines", "stream_lines", "yaml_problem"]
+           "remove_temporaries", "split_lines", "stream_lines", "typed", "yaml_problem"]
 
 if TYPE_CHECKING:
     LOADER: type[yaml.SafeLoader]
@@ -62,7 +62,42 @@ def _bounded_int(constructor: yaml.constructor.SafeConstructor, node: yaml.Scala
         raise yaml.constructor.ConstructorError(
             None, None, f"an integer of {digits:,} digits is more than seal reads ({MAX_INT_DIGITS:,} digits at most)",
             node.start_mark)
+    _one_reading(node)
     return yaml.constructor.SafeConstructor.construct_yaml_int(constructor, node)
+
+
+def _one_reading_float(constructor: yaml.constructor.SafeConstructor, node: yaml.ScalarNode) -> float:
+    """PyYAML's safe float, but for one YAML 1.2 reads otherwise (:func:`_one_reading`)."""
+    import yaml
+
+    _one_reading(node)
+    return yaml.constructor.SafeConstructor.construct_yaml_float(constructor, node)
+
+
+_LEADING_ZERO = re.compile(r"[-+]?0[0-7_]+")
+_BASE_60 = re.compile(r"[-+]?[0-9][0-9_]*(?::[0-5]?[0-9])+(?:\.[0-9_]*)?")
+
+
+def _one_reading(node: yaml.ScalarNode) -> None:
+    """Refuse a number YAML 1.1 (PyYAML's, seal's) and YAML 1.2 (ROS's own map_server reads with yaml-cpp) read as
+    two different values, at its node: a plain ``010`` is octal to YAML 1.1 (8) and ten to YAML 1.2, and ``10:30``
+    is 630 to YAML 1.1 (base 60) and text to YAML 1.2 (hostile21: ``bounds: [0, 0, 10:00, 10]`` made a map 600 m
+    wide and ``012`` 10 m, silently). A leading zero that changes nothing (``07``, ``-05``) is read."""
+    import yaml
+
+    text = str(node.value)
+    if _LEADING_ZERO.fullmatch(text):
+        digits = text.replace("_", "")
+        if int(digits, 8) == int(digits, 10):
+            return
+        problem = (f"'{text}' has a leading zero: YAML 1.1, which seal reads, takes it as octal ({int(digits, 8)}), "
+                   f"YAML 1.2, which ROS reads, as {int(digits, 10)}: write it without the zero")
+    elif _BASE_60.fullmatch(text):
+        problem = (f"'{text}' is a number in base 60 to YAML 1.1, which seal reads, and text to YAML 1.2, which ROS "
+                   "reads: write the number itself (quote it if it is a name)")
+    else:
+        return
+    raise yaml.constructor.ConstructorError(None, None, problem, node.start_mark)
 
 
 def _loader() -> type[yaml.SafeLoader]:
@@ -70,6 +105,8 @@ def _loader() -> type[yaml.SafeLoader]:
 
     # every safe loader (C or Python, PyYAML's own safe_load too) reads integers through the bound
     yaml.constructor.SafeConstructor.add_constructor("tag:yaml.org,2002:int", _bounded_int)  # type: ignore[type-var]
+    yaml.constructor.SafeConstructor.add_constructor("tag:yaml.org,2002:float",  # type: ignore[type-var]
+                                                     _one_reading_float)
     loader: type[yaml.SafeLoader] = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
     globals()["LOADER"] = loader
     return loader
@@ -108,7 +145,9 @@ def _regular(path: Path, what: str) -> os.stat_result:
     try:
         info = path.stat()
     except FileNotFoundError:
-        raise SealError(f"no such {what}", where) from None
+        stdin = (" ('-' is standard input only to seal parse --file: save the text to a file and give its name)"
+                 if str(path) == "-" else "")  # bench plan --file - said only "-: no such file" (hostile21)
+        raise SealError(f"no such {what}{stdin}", where) from None
     except OSError as exc:
         raise SealError(f"cannot read this {what}: {exc.strerror}", where) from None
     if stat.S_ISDIR(info.st_mode):
@@ -222,6 +261,21 @@ def composed(text: str) -> str:
     return text if text.isascii() or unicodedata.is_normalized("NFC", text) else unicodedata.normalize("NFC", text)
 
 
+_UNDECODED = re.compile("[\udc80-\udcff]")
+
+
+def typed(text: str) -> str:
+    """A text of the command line (a command, ``--task``, ``--holding``) as its user typed it: composed
+    (:func:`composed`), and, where the locale could not decode its bytes (Python's ``surrogateescape``: an ASCII
+    locale, ``LANG=C`` with Python's UTF-8 mode off), read as UTF-8 if they are UTF-8: "stir the café" was refused
+    there at a "byte 0xc3" (hostile21). Bytes that are no UTF-8 stay as Python gave them: the parser names the first
+    (:mod:`seal_cli.language.tokens`)."""
+    if not text.isascii() and _UNDECODED.search(text):
+        with contextlib.suppress(UnicodeError):
+            text = os.fsencode(text).decode("utf-8")
+    return composed(text)
+
+
 def read_text(path: str | Path, limit: int = MAX_INPUT_BYTES) -> str:
     """A text file's contents; a missing, unreadable, special, oversized or non-UTF-8 file is a
     SealError naming it."""
@@ -251,7 +305,9 @@ def yaml_problem(exc: Exception, text: str, file: str) -> SealError:
     lines = YAML_BREAKS.split(text)
     if isinstance(exc, yaml.MarkedYAMLError):
         mark = exc.problem_mark or exc.context_mark
-        what = f"YAML syntax error: {exc.problem or exc.context}"
+        what = (f"cannot read this value: {exc.problem or exc.context}"  # a value its constructor refused
+                if isinstance(exc, yaml.constructor.ConstructorError) else
+                f"YAML syntax error: {exc.problem or exc.context}")
         if mark is None:
             return SealError(what, Where(file))
         source = lines[mark.line] if mark.line < len(lines) else None

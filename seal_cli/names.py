@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from seal_cli.errors import SealError, Where
 
-__all__ = ["MAX_NAME", "check_name_length", "name_too_long"]
+__all__ = ["MAX_NAME", "check_name_length", "check_sayable", "name_too_long"]
 
 MAX_NAME = 100
 """The most characters a name may hold (the class names' bound too: ``frames.taxonomy.MAX_CLASS_NAME``)."""
@@ -33,4 +33,21 @@ def check_name_length(name: str, what: str, where: Where | None = None) -> str:
     problem = name_too_long(name, what, where)
     if problem is not None:
         raise problem
+    return name
+
+
+def check_sayable(name: str, what: str, where: Where | None = None) -> str:
+    """``name`` itself, or a problem at ``where`` if it holds what no command can say: an invisible character (a
+    zero-width joiner, a right-to-left mark: Unicode's format characters, pasted with a name) or a symbol (an emoji).
+    A room called "🛏" or "hall" + U+200D validated, then "go to the hall" never found it and "go to the 🛏" was
+    refused at the emoji (hostile21). Rooms and people are named by commands; a map's own name is not."""
+    import unicodedata
+
+    for character in name:
+        kind = unicodedata.category(character)
+        if kind in ("Cf", "So"):
+            said = "an invisible character" if kind == "Cf" else "a symbol"
+            raise SealError(f"{what} {name!r} holds {character!r} (U+{ord(character):04X} "
+                            f"{unicodedata.name(character, 'unnamed')}), {said} no command can say: name it in "
+                            "letters, digits and spaces", where)
     return name

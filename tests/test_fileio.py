@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 
 from seal_cli.errors import SealError
-from seal_cli.fileio import atomic_output, atomic_write_text, read_text, read_yaml
+from seal_cli.fileio import atomic_output, atomic_write_text, read_text, read_yaml, typed
 
 
 def test_written_files_get_the_usual_mode(tmp_path: Path) -> None:
@@ -391,3 +391,58 @@ def test_an_output_past_ulimit_f_is_said_of_its_option(tmp_path: Path) -> None:
     assert done.stderr == ""
     assert re.fullmatch(r"cannot write --png .*o\.png: File too large\n", done.stdout)
     assert list(tmp_path.iterdir()) == []  # neither output written, no temporary left
+
+
+@pytest.mark.parametrize(("value", "said"), [
+    ("010", r"'010' has a leading zero: YAML 1\.1, which seal reads, takes it as octal \(8\), YAML 1\.2, which ROS "
+            r"reads, as 10"),
+    ("-012", r"'-012' has a leading zero: .* octal \(-10\), .* as -12"),
+    ("10:00", r"'10:00' is a number in base 60 to YAML 1\.1"),
+    ("1:30.5", r"'1:30\.5' is a number in base 60"),
+])
+def test_a_number_yaml_11_and_12_read_otherwise_is_refused_at_its_place(tmp_path: Path, value: str, said: str) -> None:
+    # bounds: [0, 0, 10:00, 10] made a map 600 m wide, 012 10 m: YAML 1.1's readings, not ROS's (hostile21)
+    path = tmp_path / "m.yaml"
+    path.write_text(f"a: 1\nb: [0, {value}]\n")
+    with pytest.raises(SealError, match=r"m\.yaml:2:8: cannot read this value: " + said):
+        read_yaml(path)
+
+
+def test_a_number_both_yamls_read_alike_is_read(tmp_path: Path) -> None:
+    path = tmp_path / "m.yaml"
+    path.write_text("[07, -05, 00, 0, 0x10, 1_000, 10.5, '10:00', '010', 0.5]\n")
+    assert read_yaml(path) == [7, -5, 0, 0, 16, 1000, 10.5, "10:00", "010", 0.5]
+
+
+def test_a_dash_that_is_no_file_says_where_standard_input_is_read(tmp_path: Path,
+                                                                  monkeypatch: pytest.MonkeyPatch) -> None:
+    # `bench plan --file -` said only "-: no such file" where `parse --file -` reads standard input (hostile21)
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(SealError, match=r"^-: no such file \('-' is standard input only to seal parse --file"):
+        read_text("-")
+    (tmp_path / "-").write_text("stir the cup\n")     # a file called '-' is a file
+    assert read_text("-") == "stir the cup\n"
+
+
+def test_a_command_line_text_is_read_as_its_user_typed_it() -> None:
+    # the bytes of "café" that an ASCII locale could not decode (surrogateescape) are UTF-8: read so (hostile21)
+    undecoded = "stir the caf\udcc3\udca9"
+    assert typed(undecoded) == "stir the café" and typed("stir the cafe\u0301") == "stir the café"
+    assert typed("stir the caf\udce9") == "stir the caf\udce9"     # no UTF-8: left for the parser to name
+    assert typed("stir the cup") == "stir the cup"
+
+
+@pytest.mark.parametrize("argv", [["parse", "stir the cafe\u0301"], ["parse", "stir the cafe\u0301", "--json"]])
+def test_seal_parse_text_without_typer_composes_and_reads_utf8_in_an_ascii_locale(argv: list[str]) -> None:
+    """``seal parse TEXT`` (answered without typer) took the text as given: decomposed it was refused at the accent
+    where ``seal plan`` read it, and in an ASCII locale (``LANG=C``, Python's UTF-8 mode off) every accented letter
+    was refused (hostile21)."""
+    import os
+    import subprocess
+    import sys
+
+    for env in ({}, {"LC_ALL": "C", "LANG": "C", "PYTHONUTF8": "0", "PYTHONCOERCECLOCALE": "0"}):
+        done = subprocess.run([sys.executable, "-m", "seal_cli", *argv], capture_output=True, timeout=120, check=False,
+                              env={**os.environ, **env})
+        assert done.returncode == 0, (env, done.stderr)
+        assert b"Stir" in done.stdout and (b"caf" in done.stdout)

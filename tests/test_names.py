@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -67,3 +68,25 @@ def test_categories_and_synonyms_refuse_long_names() -> None:
         Category("utensil", ("s" * 3000,))
     with pytest.raises(SealError, match=r"synonyms of fridge: name 'iii.*3,000 characters long"):
         Synonyms("fridge", ("i" * 3000,))
+
+
+@pytest.mark.parametrize(("name", "said"), [
+    ("\U0001f6cf", "room name '\U0001f6cf' holds '\U0001f6cf' (U+1F6CF BED), a symbol no command can say"),
+    ("hall\u200d", "(U+200D ZERO WIDTH JOINER), an invisible character no command can say"),
+    ("\u200fden", "(U+200F RIGHT-TO-LEFT MARK), an invisible character"),
+])
+def test_a_room_or_person_name_no_command_can_say_is_refused(name: str, said: str) -> None:
+    # a room called "🛏" or "hall" + U+200D validated; no command could reach it (hostile21)
+    from seal_cli.maps.model import Person, Room
+
+    with pytest.raises(SealError, match=re.escape(said)):
+        Room(name, ((0, 0), (1, 0), (1, 1)))
+    with pytest.raises(SealError, match=re.escape(said.replace("room name", "person name"))):
+        Person(name, at=(0.5, 0.5))
+
+
+@pytest.mark.parametrize("name", ["café", "Zoë", "kid's room", "R&D lab", "room 2-b", "Ахмед", "living_room"])
+def test_names_of_letters_digits_and_punctuation_are_sayable(name: str) -> None:
+    from seal_cli.names import check_sayable
+
+    assert check_sayable(name, "room name") == name

@@ -120,7 +120,9 @@ class Case:
     ``full-stdout`` (``/dev/full``: every write fails), ``open-stdin`` (a pipe nobody writes to),
     ``file-stdout`` (into the case's file ``stdout.out``, which the case makes so that it is no new file),
     ``nonblocking-stdout`` (a pipe made non-blocking, as some parents leave it, read only once it is full or the
-    command has ended: a write then finds it full and must wait, not fail nor drop what it could not write)."""
+    command has ended: a write then finds it full and must wait, not fail nor drop what it could not write),
+    ``gone-stdout`` (a pipe whose reader has gone before the command writes, as ``| head -c1`` leaves it: every
+    write fails with ``EPIPE``)."""
     file_blocks: int = 0
     """The largest file the command may write, in 512-byte blocks (``ulimit -f``, ``RLIMIT_FSIZE``); 0: no limit."""
     env: tuple[tuple[str, str], ...] = ()
@@ -231,7 +233,7 @@ def _once(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
 
 
 STREAMS = {"closed-stdin": "<&-", "closed-stdout": ">&-", "closed-stderr": "2>&-", "full-stdout": ">/dev/full",
-           "file-stdout": ">stdout.out", "open-stdin": "", "nonblocking-stdout": "", "": ""}
+           "file-stdout": ">stdout.out", "open-stdin": "", "nonblocking-stdout": "", "gone-stdout": "", "": ""}
 """The shell redirection of each hostile ``Case.stream``."""
 
 
@@ -246,9 +248,17 @@ def _one(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
     piped = case.stdin is not None or case.stream == "open-stdin"
     if case.stream == "nonblocking-stdout":
         return _nonblocking(case, argv, folder, env, start)
-    process = subprocess.Popen(argv, cwd=folder, env=env, stdout=subprocess.PIPE,
-                               stderr=subprocess.PIPE, stdin=subprocess.PIPE if piped
-                               else subprocess.DEVNULL, start_new_session=True)
+    stdout: int = subprocess.PIPE
+    if case.stream == "gone-stdout":  # a pipe whose reader has gone: every write fails with EPIPE
+        reader, stdout = os.pipe()
+        os.close(reader)
+    try:
+        process = subprocess.Popen(argv, cwd=folder, env=env, stdout=stdout,
+                                   stderr=subprocess.PIPE, stdin=subprocess.PIPE if piped
+                                   else subprocess.DEVNULL, start_new_session=True)
+    finally:
+        if stdout != subprocess.PIPE:
+            os.close(stdout)
     try:
         if case.signal is not None:
             number, delay = case.signal
@@ -258,8 +268,8 @@ def _one(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
     except subprocess.TimeoutExpired:
         os.killpg(process.pid, signal.SIGKILL)
         out, err = process.communicate()
-        return None, out, err, time.perf_counter() - start
-    return process.returncode, out, err, time.perf_counter() - start
+        return None, out or b"", err, time.perf_counter() - start
+    return process.returncode, out or b"", err, time.perf_counter() - start
 
 
 def _nonblocking(case: Case, argv: list[str], folder: Path, env: dict[str, str],

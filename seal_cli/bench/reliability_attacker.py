@@ -28,7 +28,8 @@ import numpy as np
 from seal_cli.bench.reliability import FRAME, Case, hostile_setting
 
 __all__ = ["alfred2d_data", "attacker_cases", "chain_library", "hostile14_cases", "hostile15_cases", "hostile16_cases",
-           "hostile17_cases", "hostile18_cases", "hostile19_cases", "hostile20_cases", "rgba_png", "sparse_pgm"]
+           "hostile17_cases", "hostile18_cases", "hostile19_cases", "hostile20_cases", "hostile21_cases", "rgba_png",
+           "sparse_pgm"]
 
 DIGITS = "1" * 5_000
 """An integer longer than Python converts from text (4,300 digits)."""
@@ -286,6 +287,7 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield from hostile18_cases()
     yield from hostile19_cases()
     yield from hostile20_cases()
+    yield from hostile21_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -831,3 +833,82 @@ def hostile20_cases() -> Iterator[Case]:
                ("bench", "parse", "--corpus", "c.jsonl", "--constants", "k.json"),
                (("c.jsonl", b'{"text": "stir the cup"}\n'), ("k.json", b'{"OBJECTS": ["cup"]}\n')), codes=(1,),
                keep=("c.jsonl", "k.json"), says=r"--constants k\.json: the ALFRED constants are read for ALFRED goals")
+
+
+def hostile21_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read top to bottom
+    """Round hostile21: what typer prints before a command (its help, ``--version``) onto a full disk, a closed
+    standard output or a reader that has gone; a command-line byte that is not UTF-8; numbers written in other
+    digits, as superscripts or fractions, or with a multiplier; invisible characters in a command."""
+    full = r"error: cannot write the output: No space left on device"
+    argv: tuple[str, ...]
+    for argv in (("--help",), ("map", "--help"), ("bench", "tasks", "--help"), ("-h",)):
+        yield Case(f"A {' '.join(argv)} onto /dev/full", argv, codes=(1,), stream="full-stdout", says=full)
+        yield Case(f"A {' '.join(argv)} into a reader that has gone", argv, codes=(0,), stream="gone-stdout")
+    yield Case("A --version onto /dev/full", ("--version",), codes=(1,), stream="full-stdout", says=full)
+    yield Case("A --version with standard output closed", ("--version",), codes=(0,), stream="closed-stdout")
+    yield Case("A --version into a reader that has gone", ("--version",), codes=(0,), stream="gone-stdout")
+    latin1 = "stir the caf\udce9"  # the byte 0xe9 on the command line: "café" typed in a Latin-1 terminal
+    for argv in (("parse", latin1), ("parse", latin1, "--json"), ("plan", latin1),
+                 ("localize", "--map", "apartment", "--steps", "0", "--task", latin1)):
+        yield Case(f"A {argv[0]}{' --json' if '--json' in argv else ''} of a command with a Latin-1 byte", argv,
+                   codes=(1,), says=r'"text": "stir the caf\\udce9", "error": \{"message": "byte 0xe9 is not UTF-8: '
+                   r'.*"column": 13' if "--json" in argv else
+                   r"column 13: byte 0xe9 is not UTF-8: seal reads a command as UTF-8 text")
+    yield Case("A plan with a full-width digit", ("plan", "put \uff13 apples in the sink", "--map", "apartment"),
+               codes=(0,), says=r"Place\s+theme=apple_3, goal=sink_1")
+    yield Case("A plan with an Arabic-Indic digit", ("plan", "bring me \u0662 apples", "--map", "apartment"),
+               codes=(0,), says=r"Bring\s+theme=apple_2, recipient=me")
+    for number, column, name in (("\u00b2", 10, "superscript two"), ("3\u00bd", 11, "vulgar fraction one half")):
+        yield Case(f"A plan of {name} apples", ("plan", f"bring me {number} apples", "--map", "apartment"),
+                   codes=(1,), says=rf"column {column}: '.' \({name}\) is no whole number")
+    for count, shown in (("one million", "1,000,000"), ("2 thousand", "2,000"), ("hundreds of", "200")):
+        yield Case(f"A run of {count} apples", ("run", f"bring me {count} apples", "--map", "apartment"),
+                   codes=(1,), says=rf"column 10: '{count} apples' asks for {shown} things; seal plans for at most 100")
+    for mark, name in (("\u200d", "ZERO WIDTH JOINER"), ("\u200f", "RIGHT-TO-LEFT MARK")):
+        yield Case(f"A parse with a {name.lower()}", ("parse", f"stir the cu{mark}p"), codes=(1,),
+                   says=rf"column 12: unexpected character .* \(U\+{ord(mark):04X} {name}\)")
+    for value, said in (("012", r"'012' has a leading zero: YAML 1\.1, which seal reads, takes it as octal \(10\)"),
+                        ("10:00", r"'10:00' is a number in base 60 to YAML 1\.1")):
+        bounds = f"name: m\nbounds: [0, 0, {value}, 10]\nrooms:\n  - {{name: hall, box: [0, 0, 5, 10]}}\n"
+        yield Case(f"A a map's bounds of {value}", ("validate", "m.yaml"), (("m.yaml", bounds.encode()),),
+                   codes=(1,), keep=("m.yaml",), says=rf"m\.yaml:2:16: cannot read this value: {said}")
+        looks = f"- {{pose: [-6, -3, {value}], detections: []}}\n"
+        yield Case(f"A an observation's yaw of {value}", ("localize", "--map", "apartment", "--task", "find the cup",
+                                                          "--observations", "o.yaml", "--particles", "20"),
+                   (("o.yaml", looks.encode()),), codes=(1,), keep=("o.yaml",),
+                   says=rf"o\.yaml:1:19: observation 1's pose's yaw cannot be read: {said}")
+    yield Case("A an observation's yaw of 1e-1, as a map reads it", ("localize", "--map", "apartment", "--task",
+                                                                     "find the cup", "--observations", "o.yaml",
+                                                                     "--particles", "20"),
+               (("o.yaml", b"- {pose: [-6, -3, 1e-1], detections: []}\n"),), codes=(0,), keep=("o.yaml",),
+               says=r"frames on apartment after \d+ updates \(20 particles")
+    tiny = b"P5\n2 2\n255\n" + bytes([254] * 4)    # 0.1 m of image at 0.05 m a pixel, rooms drawn for metres
+    drawn = b"image: i.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nrooms:\n  - {name: hall, box: [0, 0, 50, 50]}\n"
+    yield Case("A a room of 50 m on an image of 0.1 m: validate", ("validate", "m.yaml"),
+               (("m.yaml", drawn), ("i.pgm", tiny)), codes=(1,), keep=("m.yaml", "i.pgm"),
+               says=r"m\.yaml:5:5: room hall \(\[0, 0\]–\[50, 50\]\) lies 100% outside the map's bounds")
+    yield Case("A a room of 50 m on an image of 0.1 m: map", ("map", "m.yaml"), (("m.yaml", drawn), ("i.pgm", tiny)),
+               codes=(0,), keep=("m.yaml", "i.pgm"), says=r"warning: m\.yaml:5:5: room hall .* lies 100% outside")
+    cased = "".join(f"  - frame: {name}\n    lexical_units: [{unit}]\n    elements:\n      theme: {{type: object}}\n"
+                    f"    actions: [navigate(theme)]\n    postconditions: [{fact}(theme)]\n"
+                    for name, unit, fact in (("Zap", "zapple", "hot"), ("ZAP", "zopple", "cold")))
+    yield Case("A plan --pddl of frames Zap and ZAP", ("plan", "zapple the cup", "--framelib", "+f.yaml", "--pddl",
+                                                       "d"), (("f.yaml", f"frames:\n{cased}".encode()), ("d", "dir")),
+               codes=(1,), keep=("f.yaml",), absent=("d/domain.pddl", "d/problem.pddl"),
+               says=r"cannot export PDDL: the actions 'do_Zap' and 'do_ZAP' differ only in case")
+    yield Case("A bench plan --file - with a command on standard input", ("bench", "plan", "--file", "-"),
+               codes=(1,), stdin=b"stir the cup\n", says=r"-: no such file \('-' is standard input only to seal parse")
+    for name, said in (("\U0001f6cf", r"U\+1F6CF BED\), a symbol"), ("hall\u200d", r"U\+200D ZERO WIDTH JOINER\)")):
+        emoji = f'name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {{name: "{name}", box: [0, 0, 10, 10]}}\n'
+        yield Case(f"A a room called {name.encode('unicode_escape').decode()}", ("run", "go to the hall", "--map",
+                                                                                   "m.yaml"),
+                   (("m.yaml", emoji.encode()),), codes=(1,), keep=("m.yaml",),
+                   says=rf"m\.yaml:4:\d+: room name .* \({said}.* no command can say")
+    yield Case("A parse TEXT typed decomposed (NFD)", ("parse", "stir the cafe\u0301", "--json"), codes=(0,),
+               says=r'"head": "caf\u00e9"')
+    ascii_locale = (("LC_ALL", "C"), ("LANG", "C"), ("PYTHONUTF8", "0"), ("PYTHONCOERCECLOCALE", "0"))
+    for argv in (("parse", "stir the café"), ("plan", "stir the café", "--map", "apartment")):
+        yield Case(f"A {argv[0]} of an accented word in an ASCII locale", argv, codes=(0,), env=ascii_locale,
+                   says=r"Stir .*caf\\xe9")
+    yield Case("A plan of twenty apples", ("plan", "bring me twenty apples", "--map", "apartment", "--json"),
+               codes=(0,), says=r'"apple_20"(?![\s\S]*"apple_21")')

@@ -207,7 +207,10 @@ def main() -> None:
     if plain is not None:
         from seal_cli.cli.output import run_command
         from seal_cli.cli.parse_view import print_parse
+        from seal_cli.fileio import typed
 
-        text, as_json = plain
-        sys.exit(run_command(lambda: print_parse(text, None, None, as_json)))  # the standard library
-    register(command_modules(sys.argv[1:]))()
+        text, as_json = plain   # as the typer path takes it (cli.framework): composed, its bytes read as UTF-8
+        sys.exit(run_command(lambda: print_parse(typed(text), None, None, as_json)))  # the standard library
+    from seal_cli.cli.output import run_framework
+
+    run_framework(register(command_modules(sys.argv[1:])))

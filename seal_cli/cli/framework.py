@@ -114,13 +114,13 @@ COMMAND_TEXTS = ("text", "tasks", "done", "commands", "holding")
 def _composed_commands(values: dict[str, Any]) -> dict[str, Any]:
     """``values`` with the commands a user typed composed (NFC): "go to the cafe" + U+0301 was "unexpected
     character" at the accent."""
-    from seal_cli.fileio import composed
+    from seal_cli.fileio import typed
 
     def one(value: Any) -> Any:
         if isinstance(value, str):
-            return composed(value)
+            return typed(value)
         if isinstance(value, list):
-            return [composed(v) if isinstance(v, str) else v for v in value]
+            return [typed(v) if isinstance(v, str) else v for v in value]
         return value
 
     return {name: one(value) if name in COMMAND_TEXTS else value for name, value in values.items()}

@@ -22,7 +22,7 @@ if TYPE_CHECKING:
     from rich.console import Console
 
 __all__ = ["PIPE_WIDTH", "LazyConsole", "dump_json", "emit_json", "err", "out", "plain", "printable_streams",
-           "progress_bar", "report", "run_command", "sane_sizes", "styled", "whole_writes"]
+           "progress_bar", "report", "run_command", "run_framework", "sane_sizes", "styled", "whole_writes"]
 
 PIPE_WIDTH = 200
 """Columns of the output when it is not a terminal (a file, a pipe) and ``COLUMNS`` is not set."""
@@ -128,6 +128,13 @@ FINISHED: int | None = None
 """The exit code of the command once it has finished (its outputs renamed into place), else None: an
 interrupt (SIGINT) that arrives after it, while the process ends, leaves that code as it is."""
 
+STARTED = False
+"""Whether a command's body has started (:func:`run_command`): what typer prints before one (its help, a usage
+error) is answered by :func:`run_framework`."""
+
+READER_GONE = False
+"""Whether a write to standard output or error found its reader gone (``EPIPE``: ``seal --help | head -1``)."""
+
 
 def run_command(function: Callable[[], int | None]) -> int:
     """Run a command's body; its exit code. The failures every command shares become one message on
@@ -135,8 +142,9 @@ def run_command(function: Callable[[], int | None]) -> int:
     wanted), memory or nesting that runs out 1; our temporaries of outputs never written are removed."""
     from seal_cli.fileio import clean_up_on_signals, committed, forget_commits, note_interrupts, remove_temporaries
 
-    global FINISHED
+    global FINISHED, STARTED
 
+    STARTED = True
     forget_commits()
     clean_up_on_signals()
     note_interrupts()
@@ -170,8 +178,7 @@ def run_command(function: Callable[[], int | None]) -> int:
         return 1
     except OSError as error:  # what the system refuses: a name too long, a full disk under stdout, ...
         if error.filename is None:  # writing standard output failed (a full disk, a broken device)
-            _stdout_to_null()
-            err.print(f"error: cannot write the output: {error.strerror or error}", markup=False)
+            return output_failed(error)
         else:
             err.print(readable(f"error: {error.filename}: {error.strerror or error}"), markup=False)  # a long name cut
         return 1
@@ -184,6 +191,41 @@ def run_command(function: Callable[[], int | None]) -> int:
         raise
     finally:
         remove_temporaries()  # of outputs planned but never written: the command failed first
+
+
+def output_failed(error: OSError) -> int:
+    """Writing standard output failed (a full disk, a broken device): what is still buffered there is dropped, the
+    reason said on stderr (if it can be), exit code 1."""
+    _stdout_to_null()
+    with contextlib.suppress(OSError, ValueError):
+        err.print(f"error: cannot write the output: {error.strerror or error}", markup=False)
+    return 1
+
+
+def run_framework(app: Callable[[], Any]) -> None:
+    """Run typer's ``app``, which prints on its own what comes before any command (``--help``, a usage error), as a
+    command prints: its help onto a full disk (``seal map --help > /dev/full``) was an ``OSError`` traceback, now
+    ``error: cannot write the output: No space left on device``, exit code 1; its help into a reader that has gone
+    (``seal --help | head -c1``) exited 1 with no message (rich's ``SystemExit(1)``, or click's own for ``EPIPE``),
+    now the help's own 0, as a command ends with its own code when its reader has gone (hostile19). A command's body
+    answers for itself (:func:`run_command`); typer's usage errors keep their exit code (2)."""
+    try:
+        app()
+    except OSError as error:
+        if error.filename is not None or STARTED:
+            raise
+        sys.exit(0 if isinstance(error, BrokenPipeError) else output_failed(error))
+    except SystemExit as ended:
+        if ended.code == 1 and READER_GONE and not STARTED:  # the help's reader left: rich's or click's exit 1
+            raise SystemExit(_help_code()) from None
+        raise
+
+
+def _help_code() -> int:
+    """The exit code of the help typer prints before any command: 0 when asked for (``--help``, ``-h``, or the
+    version), 2 when shown for a command missing (``seal``, ``seal bench``: typer's usage error)."""
+    asked = {"--help", "-h", "--version"}
+    return 0 if any(a in asked for a in sys.argv[1:]) else 2
 
 
 def _quiet_arithmetic() -> None:
@@ -276,6 +318,12 @@ def printable_streams() -> None:
                 stream.reconfigure(errors="backslashreplace")  # type: ignore[union-attr]
 
 
+def _reader_left() -> None:
+    global READER_GONE
+
+    READER_GONE = True
+
+
 class _WholeWrites(io.FileIO):
     """A standard stream's file descriptor whose ``write`` writes all it is given or raises: a short write (the
     disk fills, ``ulimit -f`` is reached, a pipe takes part) is followed by another for the rest, which then fails
@@ -287,7 +335,11 @@ class _WholeWrites(io.FileIO):
         view = memoryview(data).cast("B")
         done = 0
         while done < len(view):
-            written = super().write(view[done:])
+            try:
+                written = super().write(view[done:])
+            except BrokenPipeError:
+                _reader_left()
+                raise
             if written is None:  # non-blocking and full: wait until it takes more
                 import select  # only here: every line seal prints comes through this write
 
@@ -325,7 +377,14 @@ def dump_json(data: Any) -> str:
     escapes on an output whose encoding cannot hold them (still the same JSON)."""
     import json
 
-    return json.dumps(data, ensure_ascii=not _unicode(sys.stdout))
+    if _unicode(sys.stdout):
+        text = json.dumps(data, ensure_ascii=False)
+        try:
+            text.encode("utf-8")
+        except UnicodeEncodeError:  # a lone surrogate: a command-line byte that is not UTF-8, echoed (hostile21)
+            return json.dumps(data)   # written as \udce9, not as the raw byte (which made the JSON invalid UTF-8)
+        return text
+    return json.dumps(data, ensure_ascii=True)
 
 
 def emit_json(data: Any) -> None:

@@ -88,6 +88,9 @@ _TOKEN = re.compile(r"""
   | (?P<space>\s+)
 """, re.VERBOSE)
 _CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f]")
+_SURROGATE = re.compile("[\ud800-\udfff]")
+"""What Python makes of a byte of the command line that is not UTF-8 (U+DC80 to U+DCFF: ``surrogateescape``), or any
+other lone surrogate: no character of any text."""
 _NAME_AFTER = re.compile(r"\s+[^\W\d_]")
 
 
@@ -96,23 +99,30 @@ def tokenize(text: str) -> list[Word]:
     if len(text) > MAX_LENGTH:
         raise CommandError(f"command too long ({len(text)} characters; the limit is {MAX_LENGTH})", MAX_LENGTH + 1,
                            text[:MAX_LENGTH + 20], ["a shorter command"])
+    undecoded = _SURROGATE.search(text)
+    if undecoded:
+        raise CommandError(_not_utf8(undecoded.group()), undecoded.start() + 1, text, ["UTF-8 text"])
     bad = _CONTROL.search(text)
     if bad:
         raise CommandError(f"control character U+{ord(bad.group()):04X} in the command", bad.start() + 1,
                            printable(text), ["a word"])
+    said = text
+    if not text.isascii():
+        text = _digits_of_any_script(text)
     words: list[Word] = []
     pos = 0
     for match in _TOKEN.finditer(text):
         start, end = match.span()
         if start != pos:
-            raise CommandError(f"unexpected character {text[pos]!r}", pos + 1, text, ["a word"])
+            raise CommandError(_unexpected(said[pos]), pos + 1, said, ["a word"])
         pos = end
         kind = match.lastgroup
         if kind == "space" or kind == "quote":
             continue                    # as many spaces as words: the commonest token first
         if kind == "word":
             if not match.group().isascii():
-                _check_one_alphabet(match.group(), start, text)
+                _check_whole_numbers(match.group(), start, said)
+                _check_one_alphabet(match.group(), start, said)
             typed = match.group()
             slip = function_word(typed.lower()) if typed.isalpha() and (typed.islower() or typed[1:].islower() and (
                 not words or words[-1].lower in END_MARKS)) else None
@@ -132,8 +142,57 @@ def tokenize(text: str) -> list[Word]:
         elif kind == "poss":
             words.append(Word("'s", start, pos))
     if pos != len(text):
-        raise CommandError(f"unexpected character {text[pos]!r}", pos + 1, text, ["a word"])
+        raise CommandError(_unexpected(said[pos]), pos + 1, said, ["a word"])
     return words
+
+
+_OTHER_DIGIT = re.compile(r"(?![0-9])\d")
+"""A decimal digit of another script than ASCII's: full-width "３" (typed with an East Asian input method),
+Arabic-Indic "٣", Devanagari "३"."""
+
+
+def _digits_of_any_script(text: str) -> str:
+    """``text`` with each decimal digit of another script as its ASCII digit, one character for one (columns stay):
+    "put ３ apples" was "unexpected character '３'" (hostile21); Unicode's decimal digits are digits whatever their
+    script (Python's ``int`` reads them so)."""
+    import unicodedata
+
+    return _OTHER_DIGIT.sub(lambda m: str(unicodedata.digit(m[0])), text)
+
+
+def _check_whole_numbers(word: str, start: int, text: str) -> None:
+    """Refuse a word holding a number that is no decimal digit: a superscript ("²"), a fraction ("½", "⅓"), a
+    circled or Roman numeral. Read as letters, "bring me ² apples" brought one apple and "3½ apples" three, the
+    number dropped in silence (hostile21)."""
+    import unicodedata
+
+    for i, character in enumerate(word):
+        if unicodedata.category(character) == "No":
+            raise CommandError(f"{character!r} ({unicodedata.name(character, 'a number sign').lower()}) is no "
+                               "whole number written in digits or words: seal counts things in whole numbers ('put 3 "
+                               "apples', 'two cups')", start + i + 1, text, ["a whole number"])
+
+
+def _unexpected(character: str) -> str:
+    """The message for a character no word holds, its Unicode name said when it is not ASCII: the invisible ones
+    (U+200D ZERO WIDTH JOINER, U+200F RIGHT-TO-LEFT MARK, pasted with a word) show as nothing on a screen."""
+    if character.isascii():
+        return f"unexpected character {character!r}"
+    import unicodedata
+
+    name = unicodedata.name(character, "")
+    return f"unexpected character {character!r} (U+{ord(character):04X}{' ' + name if name else ''})"
+
+
+def _not_utf8(character: str) -> str:
+    """Why a lone surrogate is in a command: a command-line argument typed in another encoding than the locale's
+    (``seal parse`` in a Latin-1 terminal, its "é" the byte 0xe9) reaches Python as U+DCE9, which the parser called
+    an "unexpected character '\\udce9'" (hostile21)."""
+    code = ord(character)
+    if 0xDC80 <= code <= 0xDCFF:
+        return (f"byte 0x{code - 0xDC00:02x} is not UTF-8: seal reads a command as UTF-8 text (was it typed in a "
+                "terminal set to another encoding, such as Latin-1? set it, and LANG, to UTF-8)")
+    return f"a lone surrogate U+{code:04X} is no character: seal reads a command as UTF-8 text"
 
 
 _ALPHABETS = ("LATIN", "CYRILLIC", "GREEK")

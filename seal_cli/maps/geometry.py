@@ -19,7 +19,7 @@ Unknown cells and space outside the grid do not block.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -27,8 +27,9 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 __all__ = ["FREE", "MAX_GRID_CELLS", "MAX_IMAGE_CELLS", "OCCUPIED", "OUTSIDE", "UNKNOWN", "OccupancyGrid", "as_points",
-           "box_polygon", "cast_rays", "coarsened", "fit_cells", "line_of_sight", "overlap_area", "point_in_polygon",
-           "polygon_area", "segment_cells", "segments_intersect", "self_intersections", "shrink_factor"]
+           "box_polygon", "cast_rays", "clipped_area", "coarsened", "fit_cells", "line_of_sight", "overlap_area",
+           "point_in_polygon", "polygon_area", "segment_cells", "segments_intersect", "self_intersections",
+           "shrink_factor"]
 
 FREE, OCCUPIED, UNKNOWN = 0, 100, -1
 OUTSIDE = "_outside"
@@ -77,6 +78,29 @@ def polygon_area(vertices: ArrayLike) -> float:
     v = as_points(vertices)
     x, y = v[:, 0], v[:, 1]
     return float(0.5 * (np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
+
+
+def clipped_area(vertices: ArrayLike, box: Sequence[float]) -> float:
+    """The area of a simple polygon's part inside the box ``(xmin, ymin, xmax, ymax)``: the polygon clipped by each
+    of the box's four sides in turn (Sutherland–Hodgman, exact for a convex clip region), linear in its vertices."""
+    points = [tuple(p) for p in as_points(vertices).tolist()]
+    for axis, limit, keep_below in ((0, box[0], False), (0, box[2], True), (1, box[1], False), (1, box[3], True)):
+        if not points:
+            return 0.0
+
+        def inside(p: tuple[float, ...], axis: int = axis, limit: float = limit, below: bool = keep_below) -> bool:
+            return p[axis] <= limit if below else p[axis] >= limit
+
+        kept: list[tuple[float, ...]] = []
+        for k, current in enumerate(points):
+            previous = points[k - 1]
+            if inside(current) != inside(previous):     # the edge crosses the side: where it does
+                t = (limit - previous[axis]) / (current[axis] - previous[axis])
+                kept.append(tuple(a + t * (b - a) for a, b in zip(previous, current, strict=True)))
+            if inside(current):
+                kept.append(current)
+        points = kept
+    return abs(polygon_area(points)) if len(points) >= 3 else 0.0
 
 
 def point_in_polygon(points: ArrayLike, vertices: ArrayLike) -> NDArray[np.bool_]:

@@ -43,13 +43,14 @@ from seal_cli.maps.geometry import (
     OccupancyGrid,
     as_points,
     box_polygon,
+    clipped_area,
     line_of_sight,
     overlap_area,
     point_in_polygon,
     polygon_area,
     self_intersections,
 )
-from seal_cli.names import check_name_length
+from seal_cli.names import check_name_length, check_sayable
 
 if TYPE_CHECKING:
     from seal_cli.maps.priors import Prior
@@ -106,6 +107,7 @@ class Room:
         if not isinstance(self.name, str) or not class_key(self.name):
             raise SealError(f"a room needs a name, not {self.name!r}", self.where)
         check_name_length(self.name, "room name", self.where)
+        check_sayable(self.name, "room name", self.where)
         if self.name.strip().casefold() == OUTSIDE:
             raise SealError(f"a room cannot be called {self.name!r}: seal's outputs give that name to the mass in no "
                             "room; call the room another name", self.where)
@@ -255,6 +257,7 @@ class Person:
         if not isinstance(self.name, str) or not class_key(self.name):
             raise SealError(f"a person needs a name, not {self.name!r}", self.where)
         check_name_length(self.name, "person name", self.where)
+        check_sayable(self.name, "person name", self.where)
         if (self.at is None) == (self.room is None):
             raise SealError(f"person {self.name} needs exactly one of at: [x, y] or room: <room>", self.where)
         if self.at is not None:
@@ -837,6 +840,20 @@ def _room_shapes(m: Map) -> Iterator[SealError]:
         if xmax <= m.bounds[0] or xmin >= m.bounds[2] or ymax <= m.bounds[1] or ymin >= m.bounds[3]:
             yield SealError(f"room {room.name} ({_pt((xmin, ymin))}–{_pt((xmax, ymax))}) is wholly {_off(m)}: "
                             "nothing in it can be reached or seen", where)
+        elif not crossings and room.area >= 1e-9 and (xmin < m.bounds[0] or ymin < m.bounds[1] or
+                                                        xmax > m.bounds[2] or ymax > m.bounds[3]):
+            outside = 1.0 - clipped_area(room.vertices, m.bounds) / room.area
+            if outside > MAX_OUTSIDE:
+                yield MapWarning(f"room {room.name} ({_pt((xmin, ymin))}–{_pt((xmax, ymax))}) lies {outside:.0%} "
+                                 f"{_off(m)}: what is there can be neither reached nor seen (do the image's "
+                                 "resolution and origin match the rooms?)", where)
+
+
+MAX_OUTSIDE = 0.5
+"""The share of a room's area that may lie outside the map's bounds without a warning. A room partly outside is
+usable, but mostly outside means the image and the rooms disagree: a resolution of 0.005 for 0.05 draws the image
+a tenth of its size, and a room of 50 m × 50 m on an image of 0.1 m validated without a word (hostile21). A room
+whose outline follows the outer walls may stand a little past the image's last pixel: well within half."""
 
 
 def _edge(room: Room, i: int) -> str:

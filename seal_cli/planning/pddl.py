@@ -318,14 +318,19 @@ def _negative(problem: _Problem) -> bool:
 
 
 def _check_names(problem: _Problem) -> None:
-    """PDDL names are case-insensitive and share one namespace in many readers."""
-    used: dict[str, str] = {}
+    """PDDL names are case-insensitive and share one namespace in many readers: two names that differ only in case
+    are one name to a planner, two of a kind too (frames ``Zap`` and ``ZAP`` were written as two actions, ``do_Zap``
+    and ``do_ZAP``, which a planner reads as one defined twice: hostile21)."""
+    used: dict[str, tuple[str, str]] = {}
     names = [("type", type_name(k)) for k in problem.kinds.names()]
     names += [("predicate", p) for p in problem._predicates()] + [("predicate", test_name(c)) for c in problem._tests()]
     names += [("action", action_name(f)) for f in problem.library] + [("object", o) for o in problem.objects]
     names += [("action", reading_name(f)) for f in readings(problem.library, problem.plan)]
     for what, name in names:
-        other = used.setdefault(name.lower(), what)
+        other, spelt = used.setdefault(name.lower(), (what, name))
+        if other == what and spelt != name:
+            raise SealError(f"cannot export PDDL: the {what}s {spelt!r} and {name!r} differ only in case, and PDDL "
+                            f"reads names without case: rename one of them")
         if other != what:
             raise SealError(f"cannot export PDDL: {name!r} would name both a {other} and an {what}"
                             if what[0] in "aeiou" else

@@ -23,6 +23,7 @@ the map (and deep in its walls), :func:`split_known` sets aside detections of cl
 
 from __future__ import annotations
 
+import contextlib
 import difflib
 import math
 from collections import Counter
@@ -82,13 +83,21 @@ class _Reader:
         return root
 
     def number(self, node: yaml.Node, what: str) -> float:
+        """A finite number, read as a map's are: a plain ``1e-3`` (text to YAML 1.1, a number to YAML 1.2 and to
+        seal's maps) is a number here too (hostile21: observations refused it), and a number YAML 1.1 and 1.2 read
+        otherwise (``010``, ``10:00``) is refused saying so."""
+        value: object = None
         if isinstance(node, yaml.ScalarNode) and node.tag in ("tag:yaml.org,2002:int", "tag:yaml.org,2002:float"):
             try:
                 value = yaml.safe_load(node.value)
-            except yaml.YAMLError:  # an integer of more digits than seal reads
-                value = None
-            if isinstance(value, int | float) and abs(value) < 1e300 and math.isfinite(value):
-                return float(value)
+            except yaml.YAMLError as exc:  # an integer of more digits than seal reads, an octal 010, a 10:00
+                raise self.error(f"{what} cannot be read: {getattr(exc, 'problem', None) or exc}", node) from None
+        elif isinstance(node, yaml.ScalarNode) and node.tag == "tag:yaml.org,2002:str" and not node.style:
+            with contextlib.suppress(ValueError):
+                value = float(node.value)
+        if isinstance(value, int | float) and not isinstance(value, bool) and abs(value) < 1e300 \
+                and math.isfinite(value):
+            return float(value)
         raise self.error(f"{what} must be a finite number, not {_shape(node)}", node)
 
     def pose(self, node: yaml.Node, what: str = "a pose") -> tuple[float, float, float]:

@@ -17,6 +17,7 @@ from seal_cli.bench.reliability_attacker import (
     hostile18_cases,
     hostile19_cases,
     hostile20_cases,
+    hostile21_cases,
     sparse_pgm,
 )
 from seal_cli.bench.reliability_outsider import outsider_cases
@@ -171,3 +172,34 @@ def test_the_hostile20_cases_are_named_once_and_say_what_they_must() -> None:
     assert len({c.name for c in found}) == len(found) >= 14
     assert all(c.says for c in found)
     assert {c.stream for c in found} >= {"file-stdout", "nonblocking-stdout"}
+
+
+@pytest.mark.parametrize("name", ["A map --help onto /dev/full", "A bench tasks --help into a reader that has gone",
+                                  "A --version with standard output closed",
+                                  "A parse --json of a command with a Latin-1 byte", "A plan with a full-width digit",
+                                  "A plan of vulgar fraction one half apples", "A run of one million apples"])
+def test_picked_hostile21_cases_end_cleanly(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Each failed on main: a traceback of the help onto a full disk, exit 1 of a help whose reader had gone, a
+    traceback of --version with no stdout, a Latin-1 byte said as an "unexpected character '\\udce9'", a full-width
+    digit refused, "3½ apples" read as three and "one million apples" as one. This tree's code."""
+    monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
+    outcome = run_case(next(c for c in hostile21_cases() if c.name == name))
+    assert outcome.problems == []
+
+
+def test_the_hostile21_cases_are_named_once_and_say_what_they_must() -> None:
+    found = list(hostile21_cases())
+    assert len({c.name for c in found}) == len(found) >= 24
+    assert all(c.says for c in found if c.codes != (0,))
+    assert {c.stream for c in found} >= {"full-stdout", "closed-stdout", "gone-stdout"}
+
+
+def test_the_judge_sees_a_command_whose_reader_has_gone_fail(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The ``gone-stdout`` stream really is a pipe without a reader: a program that does not expect it fails there."""
+    import sys
+
+    import seal_cli.bench.reliability as judge
+
+    monkeypatch.setattr(judge, "_seal", lambda: [sys.executable, "-c", "print('x' * 100000)"])
+    failed = run_case(judge.Case("print into no reader", ("--version",), codes=(0,), stream="gone-stdout"))
+    assert failed.code == 1 and {"exit", "traceback"} <= failed.kinds    # BrokenPipeError

@@ -317,3 +317,73 @@ def test_whole_writes_replaces_only_the_interpreters_own_streams(monkeypatch: py
     monkeypatch.setattr(sys, "stdout", captured)
     output.whole_writes()
     assert sys.stdout is captured  # a test's capture (or any stream not on a file descriptor) is left alone
+
+
+def _seal_into(stdout: int | str, *argv: str) -> subprocess.CompletedProcess[str]:
+    """seal's ``argv`` with standard output onto ``stdout``: a file descriptor, ``"closed"`` or ``"gone"`` (a pipe
+    whose reader has gone before the first byte)."""
+    if stdout == "closed":
+        return subprocess.run(["/bin/sh", "-c", 'exec "$@" >&-', "sh", sys.executable, "-m", "seal_cli", *argv],
+                              stderr=subprocess.PIPE, text=True, timeout=120, check=False)
+    write = stdout if isinstance(stdout, int) else os.pipe()
+    if isinstance(write, tuple):
+        os.close(write[0])
+        write = write[1]
+    try:
+        return subprocess.run([sys.executable, "-m", "seal_cli", *argv], stdout=write, stderr=subprocess.PIPE,
+                              text=True, timeout=120, check=False)
+    finally:
+        if not isinstance(stdout, int):
+            os.close(write)
+
+
+@pytest.mark.parametrize("argv", [["--help"], ["-h"], ["map", "--help"], ["bench", "tasks", "--help"], ["--version"]])
+def test_help_and_version_onto_a_full_disk_closed_or_gone_output(argv: list[str]) -> None:
+    """hostile21: typer's help (every command's) onto /dev/full was an OSError traceback out of rich, and into a reader
+    that had gone exit 1 with no message; ``--version`` with its stdout closed an AttributeError traceback, onto a full
+    disk an OSError one. Now: the message of a command's full disk (exit 1), the help's own exit 0 otherwise."""
+    with open("/dev/full", "w") as full:
+        done = _seal_into(full.fileno(), *argv)
+    assert (done.returncode, done.stderr) == (1, "error: cannot write the output: No space left on device\n")
+    for stdout in ("closed", "gone"):
+        done = _seal_into(stdout, *argv)
+        assert (done.returncode, done.stderr) == (0, ""), (stdout, done.stderr[-500:])
+
+
+def test_the_framework_still_fails_on_an_error_naming_a_file_and_keeps_a_usage_errors_code() -> None:
+    from seal_cli.cli import output
+
+    def named() -> None:
+        raise FileNotFoundError(2, "No such file or directory", "x.yaml")
+
+    with pytest.raises(FileNotFoundError):
+        output.run_framework(named)
+
+    def usage() -> None:
+        raise SystemExit(2)
+
+    with pytest.raises(SystemExit) as ended:
+        output.run_framework(usage)
+    assert ended.value.code == 2
+
+
+def test_json_never_echoes_a_byte_of_the_command_line_that_is_not_utf8(monkeypatch: pytest.MonkeyPatch) -> None:
+    """hostile21: `parse $'caf\\xe9' --json` echoed the byte back raw (Python's surrogateescape): the JSON was not
+    UTF-8. It is now written as the escape \\udce9, and text that is UTF-8 is written as it is."""
+    import io
+    import json
+
+    from seal_cli.cli.output import dump_json
+
+    monkeypatch.setattr(sys, "stdout", io.TextIOWrapper(io.BytesIO(), encoding="utf-8"))
+    text = dump_json({"text": "stir the caf\udce9"})
+    assert text == '{"text": "stir the caf\\udce9"}' and json.loads(text)["text"] == "stir the caf\udce9"
+    text.encode("utf-8")
+    assert dump_json({"text": "café"}) == '{"text": "café"}'
+
+
+@pytest.mark.parametrize(("argv", "code"), [([], 2), (["bench"], 2), (["bench", "-h"], 0)])
+def test_help_shown_for_a_missing_command_keeps_its_code_when_its_reader_has_gone(argv: list[str], code: int) -> None:
+    # `seal` alone prints the help and exits 2 (typer's usage error); its reader gone, it is still 2, not 0 (hostile21)
+    done = _seal_into("gone", *argv)
+    assert (done.returncode, done.stderr) == (code, "")

@@ -27,3 +27,39 @@ def test_a_word_mixing_latin_cyrillic_or_greek_is_refused_at_the_odd_letter(text
                                   "bring Zo\u00eb the na\u00efve caf\u00e9 cup", "find the \u00b5-scope"])
 def test_a_word_in_one_alphabet_each_part_is_read_as_written(text: str) -> None:
     assert [w.text for w in tokenize(text)] == text.split()
+
+
+@pytest.mark.parametrize(("text", "counted"), [("put \uff13 apples in the sink", "3"),      # full-width (an IME's)
+                                              ("bring me \u0663 apples", "3"),             # Arabic-Indic
+                                              ("go to room \uff12\uff11\uff14", "214")])
+def test_a_decimal_digit_of_any_script_is_read_as_its_ascii_digit_in_its_column(text: str, counted: str) -> None:
+    # "put ３ apples" was "unexpected character '３'" (hostile21)
+    words = tokenize(text)
+    number = next(w for w in words if w.text[0].isdigit())
+    assert (number.text, number.lower) == (counted, counted)
+    assert text[number.start:number.end] != counted and len(text[number.start:number.end]) == len(counted)
+
+
+@pytest.mark.parametrize(("text", "column", "said"), [
+    ("bring me \u00b2 apples", 10, "'\u00b2' (superscript two) is no whole number"),
+    ("bring me 3\u00bd apples", 11, "'\u00bd' (vulgar fraction one half) is no whole number"),
+    ("bring me \u2462 cups", 10, "(circled digit three) is no whole number"),
+])
+def test_a_number_that_is_no_decimal_digit_is_refused_at_its_column(text: str, column: int, said: str) -> None:
+    # read as a letter, "bring me ² apples" brought one apple and "3½ apples" three, in silence (hostile21)
+    with pytest.raises(CommandError, match=re.escape(said)) as caught:
+        tokenize(text)
+    assert caught.value.column == column
+
+
+@pytest.mark.parametrize(("text", "column", "said"), [
+    ("stir the cu\u200dp", 12, "unexpected character '\\u200d' (U+200D ZERO WIDTH JOINER)"),
+    ("go to the kitchen\u200e", 18, "(U+200E LEFT-TO-RIGHT MARK)"),
+    ("stir the caf\udce9", 13, "byte 0xe9 is not UTF-8: seal reads a command as UTF-8 text"),
+    ("stir the \ud83d", 10, "a lone surrogate U+D83D is no character"),
+])
+def test_an_invisible_or_undecoded_character_is_named(text: str, column: int, said: str) -> None:
+    # an invisible mark was "unexpected character '\u200d'", a Latin-1 byte of the command line "'\udce9'" (hostile21)
+    with pytest.raises(CommandError, match=re.escape(said)) as caught:
+        tokenize(text)
+    assert caught.value.column == column

@@ -159,6 +159,24 @@ def test_clashing_names_are_refused(library: Library) -> None:
         domain_pddl(library, result)
 
 
+def test_two_frames_whose_names_differ_only_in_case_are_refused(tmp_path: Path) -> None:
+    """Frames ``Zap`` and ``ZAP`` were written as the actions ``do_Zap`` and ``do_ZAP``: one action defined twice to a
+    planner, which reads PDDL names without case (hostile21). The command line says so and writes neither file."""
+    from typer.testing import CliRunner
+
+    from seal_cli.cli import app
+
+    frames = "".join(f"  - frame: {name}\n    lexical_units: [{unit}]\n    elements:\n      theme: {{type: object}}\n"
+                     f"    actions: [navigate(theme)]\n    postconditions: [{fact}(theme)]\n"
+                     for name, unit, fact in (("Zap", "zapple", "hot"), ("ZAP", "zopple", "cold")))
+    (tmp_path / "f.yaml").write_text("frames:\n" + frames)
+    (tmp_path / "out").mkdir()
+    result = CliRunner().invoke(app, ["plan", "zapple the cup", "--framelib", f"+{tmp_path / 'f.yaml'}", "--pddl",
+                                      str(tmp_path / "out")])
+    assert result.exit_code == 1 and list((tmp_path / "out").iterdir()) == []
+    assert "cannot export PDDL: the actions 'do_Zap' and 'do_ZAP' differ only in case" in result.stderr
+
+
 # -- writing ----------------------------------------------------------------------------------------
 
 def test_write_pddl_into_a_folder_whole(library: Library, tmp_path: Path) -> None:

@@ -31,6 +31,10 @@ def themes(text: str, library: Library) -> list[str]:
     ("put two slices of apple in the microwave", ["apple"]),        # pieces of one apple, sliced
     ("put the apple and the pear in the fridge", ["apple", "pear"]),     # every conjunct
     ("put the apple and two pears in the fridge", ["apple", "pear", "pear_2"]),
+    ("put a dozen apples in the fridge", [f"apple{'' if k == 1 else f'_{k}'}" for k in range(1, 13)]),  # hostile21
+    ("put ３ books on the desk", ["book", "book_2", "book_3"]),     # a full-width digit (hostile21)
+    ("put fifteen books on the desk", [f"book{'' if k == 1 else f'_{k}'}" for k in range(1, 16)]),  # hostile21
+    ("put twenty-one books on the desk", [f"book{'' if k == 1 else f'_{k}'}" for k in range(1, 22)]),
 ])
 def test_how_many_things_a_phrase_asks_for(library: Library, text: str, expected: list[str]) -> None:
     assert themes(text, library) == expected
@@ -340,3 +344,16 @@ def test_a_place_to_go_that_nothing_knows_of_is_refused_not_searched_for(library
     assert [str(b) for b in problem_of_text("put the cup in the bag", library, map=m).commanded] == \
         ["Place(theme=cup, goal=bag)"]
     assert [str(b) for b in problem_of_text("go to the lounge", library, map=m).commanded] == ["Go(goal=living_room)"]
+
+
+@pytest.mark.parametrize(("text", "count"), [("put one million apples in the fridge", "1,000,000"),
+                                             ("put 2 thousand apples in the fridge", "2,000"),
+                                             ("put hundreds of apples in the fridge", "200"),
+                                             ("put ninety nine thousand apples in the fridge", "99,000")])
+def test_a_count_times_a_multiplier_is_their_product_and_refused_past_the_bound(library: Library, text: str,
+                                                                             count: str) -> None:
+    # "one million apples" was one apple, "2 thousand" two: the multiplier dropped in silence (hostile21)
+    from seal_cli.errors import SealError
+
+    with pytest.raises(SealError, match=re.escape(f"asks for {count} things; seal plans for at most 100")):
+        themes(text, library)

@@ -117,3 +117,15 @@ def test_detections_of_classes_no_belief_is_kept_for_are_set_aside_and_counted()
     assert dropped == {"chair": 2, "person": 1}
     assert kept[0].detections == (("Cup", (2.0, 2.0)),) and kept[1].detections == ()
     assert kept[1].where == Where("o.yaml", 3, 3) and kept[2] is looks[2] and kept[3] is looks[3]
+
+
+def test_a_number_is_read_as_a_maps_numbers_are(tmp_path: Path) -> None:
+    # a plain 1e-1 is text to YAML 1.1: the map read it as a number and observations refused it (hostile21)
+    path = write(tmp_path, "- {pose: [1e-1, -3, 2E0], detections: []}\n")
+    assert read_observations(path)[0].pose == (0.1, -3.0, 2.0)
+    for value, said in (("010", r"f\.yaml:1:18: observation 1's pose's yaw cannot be read: '010' has a leading zero"),
+                        ("10:00", r"f\.yaml:1:18: .* cannot be read: '10:00' is a number in base 60"),
+                        (".nan", r"f\.yaml:1:18: .* must be a finite number, not '\.nan'")):
+        path = write(tmp_path, f"- {{pose: [1, -3, {value}], detections: []}}\n")
+        with pytest.raises(SealError, match=said):
+            read_observations(path)

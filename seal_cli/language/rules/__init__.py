@@ -145,6 +145,8 @@ INSIDE: tuple[Rule, ...] = (
 """Inside a clause, before the word is tagged by ``WORDS``."""
 
 WORDS: tuple[Rule, ...] = (
+    numbers.MULTIPLIED,
+    numbers.PAST_TWELVE,
     numbers.LABEL,
     numbers.NUMBER_AS_NOUN,
     numbers.COUNT,

@@ -52,6 +52,68 @@ def _count_after_article(s: State, i: int) -> Match | None:
     return None
 
 
+MULTIPLIERS = {"dozen": 12, "hundred": 100, "thousand": 1_000, "million": 1_000_000, "billion": 1_000_000_000,
+               "trillion": 1_000_000_000_000}
+"""Words that multiply the count before them ("two *hundred* apples", "a *dozen* eggs"). Read as letters, "bring me
+one million apples" brought one apple and "2 thousand" two, the count cut by the multiplier in silence (hostile21);
+a count past the planner's bound is then refused, as "1000 apples" is."""
+_MULTIPLES = {f"{word}s": 2 * value for word, value in MULTIPLIERS.items()}
+""""*hundreds* of apples": at least two hundred (it read as a thing called "hundred")."""
+
+
+def _multiplied(s: State, i: int) -> Match | None:
+    words, low = s.words, s.words[i].lower
+    if low in _MULTIPLES:
+        return s.emit(i, 2, Tag.NUM, _MULTIPLES[low]) if s.next_lower(i) == "of" else None
+    n, value = _number(s, i)
+    if not n:
+        if low.isascii() and low.isdigit():
+            n, value = 1, int(low)
+        elif low in ("a", "an"):
+            n, value = 1, 1
+        else:
+            return None
+    if not isinstance(value, int) or i + n + 1 >= len(words) or words[i + n].lower not in MULTIPLIERS:
+        return None
+    after = words[i + n + 1].lower
+    if after == "of":                       # "a dozen of the eggs", "two hundred of them": the "of" is the count's
+        n += 1
+    elif not s.noun_follows(i + n + 1):
+        return None
+    return s.emit(i, n + 1, Tag.NUM, value * MULTIPLIERS[words[i + n - (after == "of")].lower])
+
+
+TEENS = {"thirteen": 13, "fourteen": 14, "fifteen": 15, "sixteen": 16, "seventeen": 17, "eighteen": 18,
+         "nineteen": 19}
+TENS = {"twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "seventy": 70, "eighty": 80, "ninety": 90}
+UNITS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9}
+"""The number words past twelve (``NUMBERS`` counts to twelve): "bring me twenty apples" brought one apple, the
+number read as a word of the phrase (hostile21)."""
+
+
+def _past_twelve_value(low: str) -> int | None:
+    """The value of "fifteen", "forty", "forty-two"; None for any other word."""
+    if low in TEENS or low in TENS:
+        return TEENS.get(low) or TENS[low]
+    tens, dash, unit = low.partition("-")
+    return TENS[tens] + UNITS[unit] if dash and tens in TENS and unit in UNITS else None
+
+
+def _past_twelve(s: State, i: int) -> Match | None:
+    words, low = s.words, s.words[i].lower
+    value = _past_twelve_value(low)
+    if value is None or s.prev_tag() in (Tag.WORD, Tag.NAME):    # "room twenty": a numbered thing, as it was
+        return None
+    n = 1
+    if low in TENS and s.next_lower(i) in UNITS:                    # "twenty three"
+        value, n = value + UNITS[s.next_lower(i)], 2
+    if i + n + 1 < len(words) and words[i + n].lower in MULTIPLIERS and s.noun_follows(i + n + 1):
+        value, n = value * MULTIPLIERS[words[i + n].lower], n + 1   # "twenty thousand cups"
+    if not s.noun_follows(i + n):
+        return None
+    return s.emit(i, n, Tag.NUM, value)
+
+
 def _digits(s: State, i: int) -> Match | None:
     low = s.words[i].lower
     if not (low.isascii() and low.isdigit()):
@@ -88,6 +150,19 @@ def _quantifier_of(s: State, i: int) -> Match | None:
     return None
 
 
+MULTIPLIED = Rule("number times a multiplier", _multiplied, (
+    Example("bring me a dozen eggs", "a dozen", Tag.NUM),
+    Example("bring me two hundred apples", "two hundred", Tag.NUM),
+    Example("put 3 thousand cups in the sink", "3 thousand", Tag.NUM),
+    Example("bring me hundreds of apples", "hundreds of", Tag.NUM),
+), lambda low: low.isdigit() or low in _NUMBER_FIRST or low in ("a", "an") or low in _MULTIPLES,
+    "a count and a multiplier after it ('dozen', 'hundred', 'million'): their product")
+PAST_TWELVE = Rule("number word past twelve", _past_twelve, (
+    Example("bring me twenty apples", "twenty", Tag.NUM),
+    Example("put forty-two cups in the sink", "forty-two", Tag.NUM),
+    Example("bring me twenty three apples", "twenty three", Tag.NUM),
+), lambda low: _past_twelve_value(low) is not None, "a number word from thirteen to ninety-nine counting the noun "
+   "after it (and a multiplier after it: 'twenty thousand')")
 LABEL = Rule("number naming a thing", _label, (
     Example("go to room 214", "214", Tag.LABEL),
     Example("clean meeting room three", "three", Tag.LABEL),

@@ -261,3 +261,28 @@ def test_a_resolution_no_map_can_have_is_refused_at_its_line(tmp_path: Path, res
     assert (caught.value.where.line, caught.value.where.column) == (2, 13)
     (tmp_path / "m.yaml").write_text("image: i.pgm\nresolution: 0.001\norigin: [0, 0, 0]\n")
     assert load_map(tmp_path / "m.yaml").grid.resolution == 0.001
+
+
+def test_a_room_mostly_outside_the_bounds_is_a_warning_naming_how_much(tmp_path: Path) -> None:
+    # a 50 m room on an image of 0.1 m (a resolution ten times too fine) validated without a word (hostile21)
+    said = _problems(tmp_path, "rooms:\n  - {name: a, box: [0, 0, 5, 5]}\n  - {name: b, box: [5, 0, 30, 5]}\n")
+    assert said == [(5, "room b ([5, 0]–[30, 5]) lies 80% outside the map's bounds [0, 0]–[10, 10]: what is there "
+                        "can be neither reached nor seen (do the image's resolution and origin match the rooms?)")]
+    assert _problems(tmp_path, "rooms:\n  - {name: a, box: [-1, 0, 10, 10]}\n") == []  # a wall's width past: read
+    path = tmp_path / "m.yaml"
+    path.write_text("name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {name: b, polygon: [[5, 0], [30, 0], [30, 5]]}\n")
+    from seal_cli.maps.formats.map_server import check_map_file
+
+    problems = check_map_file(path)      # a triangle of 62.5 m², 2.5 m² of it inside
+    assert [type(p).__name__ for p in problems] == ["MapWarning"] and "lies 96% outside" in problems[0].message
+
+
+def test_the_area_of_a_polygon_inside_a_box() -> None:
+    from seal_cli.maps.geometry import box_polygon, clipped_area
+
+    assert clipped_area(box_polygon(0, 0, 10, 10), (0, 0, 5, 5)) == 25.0
+    assert clipped_area(box_polygon(0, 0, 10, 10)[::-1], (2, 2, 20, 20)) == 64.0      # clockwise too
+    assert clipped_area([[0, 0], [4, 0], [0, 4]], (1, -1, 10, 10)) == pytest.approx(4.5)
+    assert clipped_area(box_polygon(0, 0, 1, 1), (5, 5, 6, 6)) == 0.0
+    concave = [[0, 0], [6, 0], [6, 6], [4, 6], [4, 2], [2, 2], [2, 6], [0, 6]]     # a U: 28 m²
+    assert clipped_area(concave, (0, 0, 6, 3)) == pytest.approx(16.0)               # its lower 3 m: 12 + 2 × 2
