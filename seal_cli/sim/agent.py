@@ -1670,8 +1670,10 @@ class Agent:
                 or self.exhausted():
             return
         if self.go_to(SPEAKER, binding).ok:
-            self._act_words("say", ["report"], f"tells the speaker that it did not find {self.said(who)}: "
-                            f"{self.in_words(outcome.message)}")
+            name = self.said(who)
+            how = without_not_found(self.in_words(outcome.message), name)
+            self._act_words("say", ["report"], f"tells the speaker that it did not find {name}"
+                            + (f" ({how})" if how else ""))
 
     def in_words(self, text: str) -> str:
         """An answer as said to a person, not printed for the speaker's record: a thing's or place's id as its
@@ -2130,3 +2132,17 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
 ROOM_SPOT_CLEARANCE = 0.6
 """Metres from anyone standing in a room that :meth:`Agent.room_spot` keeps ("go to the kitchen" does not
 end on Anna's toes at the kitchen's middle)."""
+
+
+def without_not_found(message: str, who: str) -> str:
+    """The search's sentence without its clauses that only say ``who`` was not found (e2e23), for a report that says
+    so already: "searched the whole house: no Raj (looked all over 9 rooms)" is "searched the whole house; looked all
+    over 9 rooms" after "it did not find Raj"; a parenthesis of such a clause is kept as a clause of its own."""
+    kept: list[str] = []
+    for clause in message.split(": "):
+        match = re.fullmatch(rf"no (?:other )?{re.escape(who)}(?: found)?(?: \((.*)\))?", clause.strip(), re.IGNORECASE)
+        if match is None:
+            kept.append(clause.strip())
+        elif match.group(1):
+            kept.append(match.group(1))
+    return "; ".join(c for c in kept if c)

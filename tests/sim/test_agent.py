@@ -533,6 +533,18 @@ def test_a_narrow_sensor_looks_all_round_where_it_starts_and_at_every_view_it_ch
         assert len({round(math.degrees(p[2])) % 360 for p in at}) >= 4, cell
 
 
+@pytest.mark.parametrize(("message", "said"), [
+    ("searched the whole house: no Raj (looked all over 9 rooms)", "searched the whole house; looked all over 9 rooms"),
+    ("no Raj found: searched the hall; looked into cupboard_1", "searched the hall; looked into cupboard_1"),
+    ("no other Raj found", ""),
+    ("no Rajesh found: searched the hall", "no Rajesh found; searched the hall"),   # another name is kept
+])
+def test_the_report_of_someone_not_found_drops_what_it_says_already(message: str, said: str) -> None:
+    from seal_cli.sim.agent import without_not_found
+
+    assert without_not_found(message, "Raj") == said
+
+
 def test_someone_not_in_the_house_is_reported_back_to_the_speaker(library: Library) -> None:
     """"ask Raj if he wants tea" where nobody is called Raj (the apartment: Anna and Ben): the robot searches the
     house, then comes back to whoever asked and says it found no Raj there (e2e22); the run is still not done. A
@@ -548,6 +560,8 @@ def test_someone_not_in_the_house_is_reported_back_to_the_speaker(library: Libra
     told = next(i for i, line in enumerate(lines) if line.startswith("tells the speaker that it did not find Raj"))
     assert not result.completed and result.why.value == "not_found" and gave_up < told
     assert "goes to the speaker" in lines[told - 1]
+    assert lines[told].count("Raj") == 1 and "no Raj" not in lines[told]      # said once (e2e23)
+    assert lines[told].startswith("tells the speaker that it did not find Raj (searched the whole house; looked all")
     assert np.hypot(*(np.asarray(agent.world.robot.pose[:2]) - m.speaker_at)) < 1.5
     agent, result = pipeline.run_on_map(m, "bring me the unicorn", library, make_policy("oracle"),
                                         rng=np.random.default_rng(0))
