@@ -209,6 +209,13 @@ class Things:
             known.append(self._fresh(cls, len(known) + 1))
         return tuple(known[:n])
 
+    def known(self, value: str) -> int:
+        """How many things of the class a value names the map places (its objects; 0 without a map)."""
+        if self.map is None:
+            return 0
+        cls = class_key(value)
+        return sum(1 for o in self.map.objects if class_key(o.cls) == cls)
+
     def hold(self, holding: str | None) -> None:
         """Keep what the robot holds as the command starts (:attr:`held`): ``holding`` (a class, refused if
         malformed or a room, place or person of the map), else the map's robot's."""
@@ -364,7 +371,7 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
         word = " ".join(class_words(value))
         raise _located(f"the {m.name} has no {word} to carry, only {where}, which the robot cannot get {word} "
                        f"from{known}", phrase, text)
-    count = _count(phrase, value)
+    count = _count(phrase, value, things)
     if count > MAX_COUNT:
         raise _located(f"{phrase.text!r} asks for {count:,} things; seal plans for at most {MAX_COUNT} "
                        "of a kind", phrase, text)
@@ -549,17 +556,25 @@ def _kinds_known_of(phrase: Phrase, things: Things) -> bool:
     return any(class_key(c) in known for c in (phrase.cls, phrase.head) if c)
 
 
-def _count(phrase: Phrase, value: str) -> int:
-    """How many things a phrase asks for: the number said ("two apples"); at least two for a plural
-    that names the class by its head ("the books", "both books"; not "the keys" of a key chain; not
-    "the gloves" or "a pair of gloves", one pair: :data:`~seal_cli.planning.grounding.PAIRED`);
-    one whole for pieces cut from it ("two slices of apple": one apple, sliced; but "two sets of
-    keys" are two key chains)."""
+UNIVERSAL = frozenset({"all", "every", "each"})
+"""Words that ask for every thing of a kind there is ("*all* the cups", "*every* cup", "*each* plate")."""
+
+
+def _count(phrase: Phrase, value: str, things: Things) -> int:
+    """How many things a phrase asks for: the number said ("two apples"); every one the map places for
+    "all", "every" or "each" first ("all the cups": the two on the table and the one in the cupboard, e2e23;
+    at least one); at least two for a plural that names the class by its head ("the books", "both books"; not
+    "the keys" of a key chain; not "the gloves" or "a pair of gloves", one pair:
+    :data:`~seal_cli.planning.grounding.PAIRED`); one whole for pieces cut from it ("two slices of apple": one
+    apple, sliced; but "two sets of keys" are two key chains)."""
     from seal_cli.language.grounding import PIECES
 
     named = class_words(value)[-1:] == (phrase.head,)
     if phrase.head in PIECES and not named:
         return 1
+    said = (phrase.text or "").lower().split()
+    if named and phrase.quantity is None and said[:1] and said[0] in UNIVERSAL and (known := things.known(value)):
+        return known
     a_pair = phrase.quantity == 2 and "pair" in words_of(phrase.text or "")
     if phrase.head in PAIRED and (phrase.quantity is None or a_pair):
         return 1                      # "the gloves", "a pair of gloves": one pair

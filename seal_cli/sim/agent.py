@@ -44,7 +44,7 @@ from seal_cli.frames.said import said_words, shown
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.model import SPEAKER, Map
 from seal_cli.planning.grounding import kind_of, spoken
-from seal_cli.planning.plan import already_so
+from seal_cli.planning.plan import already_so, open_already
 from seal_cli.planning.questions import STATE_WORDS, Question
 from seal_cli.planning.state import State
 from seal_cli.sim.navigation import Cell, Grid
@@ -320,6 +320,8 @@ class Agent:
         free (not held, not shut in), or put it in or on a place where one it knows of is; None otherwise."""
         if binding in self.put_back:        # back where it was taken from: the robot puts it there
             return None
+        if (shut := self._open_already(binding)) is not None:     # "close the fridge", shut (e2e23)
+            return shut
         if binding in self.put_away:        # put away: already so only where such a thing is kept
             return self._kept_already(binding)
         results = [f for f in binding.postconditions if not f.negated and f.predicate == "in" and len(f.args) == 2]
@@ -361,6 +363,23 @@ class Agent:
             return f"{seen[thing]} is in the {room.name.replace('_', ' ')} already"
         place = self.world.items[seen[thing]].parent or where
         return f"{seen[thing]} is {'in' if self.world.hollow(self.world.items[place]) else 'on'} {place} already"
+
+    def _open_already(self, binding: Binding) -> str | None:
+        """"fridge_1 is already closed (as the map has it)", for an Open or a Close of a place of the map that is
+        so already, by :func:`seal_cli.planning.plan.open_already` (e2e23). The robot knows whether a place is
+        open: the map says so (``open:``) and only the robot opens and closes things in the simulator, so this
+        is its own knowledge, not the hidden truth (a thing inside stays unseen)."""
+        places = {f.args[0] for f in binding.postconditions if len(f.args) == 1}
+        if len(places) != 1 or (place := next(iter(places))) not in self.world.items or not self._is_place(place):
+            return None
+        item = self.world.items[place]
+        state = State.of({Fact("open", (place,))} if item.is_open else set(), self.library.taxonomy,
+                         closable={place} if item.openable else set())
+        made = open_already(binding, state)
+        if made is None:
+            return None
+        how = "it closed it again after looking in" if place in self.opened else "as the map has it"
+        return f"{place} is already {'closed' if made.negated else 'open'} ({how})"
 
     def _kept_already(self, binding: Binding) -> str | None:
         """"pen_1 is on desk_1 already", for a frame "put away" chose the goal of, when the robot sees a

@@ -566,3 +566,24 @@ def test_someone_not_in_the_house_is_reported_back_to_the_speaker(library: Libra
     agent, result = pipeline.run_on_map(m, "bring me the unicorn", library, make_policy("oracle"),
                                         rng=np.random.default_rng(0))
     assert not result.completed and not any(r.text.startswith("tells the speaker") for r in agent.records)
+
+
+def test_an_open_or_close_so_already_is_said_without_moving(library: Library) -> None:
+    """e2e23: "close the fridge" with the fridge shut drove 18.30 m on the flat to find it closed. The robot knows
+    which of the map's places are open (the map's ``open:``; only it opens and shuts them): it says so at once,
+    0 m, done; the microwave the care home's map left open likewise; a shut fridge is still driven to and opened,
+    and a Close after the robot's own Open is done."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    for house, text, said in (("flat", "close the fridge", "fridge_1 is already closed (as the map has it)"),
+                              ("carehome", "open the microwave", "microwave_1 is already open (as the map has it)")):
+        agent, result = pipeline.run_on_map(load_map(house), text, library, make_policy("oracle"),
+                                            rng=np.random.default_rng(0))
+        assert result.completed and result.path_m == 0.0
+        assert any(r.text.startswith(f"{said}, so ") for r in agent.records)
+    agent, result = pipeline.run_on_map(load_map("flat"), "open the fridge and close it", library,
+                                        make_policy("oracle"), rng=np.random.default_rng(0))
+    acts = [r.text for r in agent.records]
+    assert result.completed and "closed fridge_1" in acts and not any("already" in a for a in acts)
+    assert not agent.world.items["fridge_1"].is_open
