@@ -720,7 +720,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
                             f"multiply: {evoked.frame} alone is {math.prod(len(values[r]) for r in roles):,}); "
                             "split it into smaller commands")
         reading = frame if kept or "goal" in placed_back else on_top(frame, evoked.elements.get("goal"))
-        for combination in itertools.product(*(values[r] for r in roles)):
+        for combination in _combinations(frame, evoked, values, roles, things):
             said = dict(zip(roles, combination, strict=True))
             if kept:        # "put away the cup and the spoon": each where it is kept
                 said["goal"] = kept[said["theme"]]
@@ -729,6 +729,29 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
                 things.put_back.append(frame.bind(said))
             bindings.append(reading.bind(said))
     return bindings
+
+
+ONE_EACH = frozenset({"a", "an", "one", "another"})
+"""Words that open a phrase of one thing of a kind, not a particular one ("*a* biscuit"): handed to several people,
+one each."""
+
+
+def _combinations(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]], roles: Sequence[str],
+                  things: Things) -> Iterator[tuple[str, ...]]:
+    """Every combination of the frame's values, in role order; except that one thing of a kind ("*a* biscuit")
+    handed to several people ("give Edith and Walter a biscuit (each)") is a thing of that kind for each of them
+    (``biscuit``, ``biscuit_2``), not the same one given to Edith, taken back and given to Walter (e2e23)."""
+    phrase = evoked.elements.get("theme")
+    said = (phrase.text or "").lower().split() if phrase is not None else []
+    people = values.get("recipient", ())
+    if (len(values.get("theme", ())) == 1 and len(people) > 1 and said[:1] and said[0] in ONE_EACH
+            and frame.needs_held("theme") and "recipient" in roles):
+        each = things.instances(values["theme"][0], len(people))
+        for thing, person in zip(each, people, strict=True):
+            yield from itertools.product(*((thing,) if r == "theme" else (person,) if r == "recipient"
+                                           else values[r] for r in roles))
+        return
+    yield from itertools.product(*(values[r] for r in roles))
 
 
 def _back_to(phrase: Phrase | None, themes: Sequence[str], bindings: Sequence[Binding], things: Things,
@@ -1087,10 +1110,10 @@ def parse_to_plan(text: str, library: Library, vocabulary: Any = None) -> Parse:
     "tell Ben where the spoon is" finds the spoon, then tells Ben where it is), and a question of whether any
     thing at all is somewhere asked as what is there (:func:`~seal_cli.planning.questions.anything_there`)."""
     from seal_cli.language.parser import parse_command
-    from seal_cli.planning.grounding import spoken
+    from seal_cli.planning.grounding import spoken, without_floating_each
     from seal_cli.planning.questions import anything_there, told_first
 
-    return anything_there(told_first(parse_command(spoken(text), library, vocabulary),
+    return anything_there(told_first(parse_command(without_floating_each(spoken(text)), library, vocabulary),
                                      lambda said: parse_command(said, library, vocabulary)))
 
 

@@ -641,6 +641,10 @@ class Agent:
             candidates = [k for k in candidates if bool(source.contains([self.world.position(k.id)])[0])]
         if not candidates:
             return None
+        place = self._place_of(binding.elements.get("source") or "") if taking else None
+        there = [k for k in candidates if place is not None and self.world.items[k.id].parent == place]
+        if there:          # "the mug on the coffee table": one seen there, not the nearest mug elsewhere (e2e23)
+            candidates = there
         if previous is not None and any(k.id == previous for k in candidates):
             return previous
         return self.policy.choose(self, key, candidates) or self.nearest(candidates)

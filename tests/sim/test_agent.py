@@ -587,3 +587,17 @@ def test_an_open_or_close_so_already_is_said_without_moving(library: Library) ->
     acts = [r.text for r in agent.records]
     assert result.completed and "closed fridge_1" in acts and not any("already" in a for a in acts)
     assert not agent.world.items["fridge_1"].is_open
+
+
+def test_a_thing_said_to_be_on_a_place_is_taken_from_there_once_seen(library: Library) -> None:
+    """e2e23: "take the mug on the coffee table to the kitchen" on the care home took the mug on the dining table
+    beside the robot (0.09 m) and said it was "not on coffee_table_1, where the command said it was", though it
+    saw the one on the coffee table from where it started. It takes that one now."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    agent, result = pipeline.run_on_map(load_map("carehome"), "take the mug on the coffee table to the kitchen",
+                                        library, make_policy("oracle"), rng=np.random.default_rng(0))
+    texts = [r.text for r in agent.records]
+    assert result.completed and "picked up mug_2 from coffee_table_1" in texts
+    assert not any("where the command said it was" in t for t in texts)
