@@ -96,11 +96,11 @@ def direct_question(words: Sequence[str], asked: Sequence[str] = ()) -> str | No
     low = verb.lower()
     negated = _negated(low)
     if negated is not None:         # "he doesn't want tea": "don't you want tea?", the negation fronted with its verb
-        said = direct_question([words[0], *rest[:size], negated, *after], asked)
-        if said is None:
+        turned = direct_question([words[0], *rest[:size], negated, *after], asked)
+        if turned is None:
             return None
-        front, _, tail = said.partition(" ")
-        return f"{_not_contracted(front)} {tail}"
+        first, _, others = turned.partition(" ")
+        return f"{_not_contracted(first)} {others}"
     if low in _BE:
         front, tail = (_BE_FOR_YOU[low] if you else low), after
     elif low in MODALS:

@@ -137,6 +137,9 @@ class Things:
         """The commanded frames whose goal "put away" chose."""
         self.put_back: list[Binding] = []
         """The commanded frames that put a thing "back" where the robot will take it from."""
+        self.every: Mapping[str, int] = {}
+        """How many things of a class "all the ..." asks for when the map does not place them (``seal run``'s
+        robot, after looking all over the house for them), by class key."""
         if map is not None:
             self._read_map(map)
 
@@ -210,10 +213,13 @@ class Things:
         return tuple(known[:n])
 
     def known(self, value: str) -> int:
-        """How many things of the class a value names the map places (its objects; 0 without a map)."""
+        """How many things of the class a value names the map places (its objects; 0 without a map), or
+        :attr:`every` says."""
+        cls = class_key(value)
+        if cls in self.every:
+            return self.every[cls]
         if self.map is None:
             return 0
-        cls = class_key(value)
         return sum(1 for o in self.map.objects if class_key(o.cls) == cls)
 
     def hold(self, holding: str | None) -> None:
@@ -558,6 +564,18 @@ def _kinds_known_of(phrase: Phrase, things: Things) -> bool:
 
 UNIVERSAL = frozenset({"all", "every", "each"})
 """Words that ask for every thing of a kind there is ("*all* the cups", "*every* cup", "*each* plate")."""
+
+
+def every_said(parse: Parse) -> list[Phrase]:
+    """The phrases of a parse that ask for every thing of a kind ("*all the cups*", "*every* cup"), by
+    :data:`UNIVERSAL`, each kind once: ``seal run`` looks all over the house for them first."""
+    out: dict[str, Phrase] = {}
+    for evoked in parse.frames:
+        for phrase in evoked.elements.values():
+            said = (phrase.text or "").lower().split()
+            if said[:1] and said[0] in UNIVERSAL and phrase.quantity is None and phrase.head:
+                out.setdefault(phrase.cls or phrase.head, phrase)
+    return list(out.values())
 
 
 def _count(phrase: Phrase, value: str, things: Things) -> int:
@@ -1009,9 +1027,11 @@ def _contains(words: tuple[str, ...], part: tuple[str, ...]) -> bool:
 
 
 def build_problem(parse: Parse, library: Library, *, holding: str | None = None, done: Iterable[Parse] = (),
-                  map: Map | None = None, vocabulary: Any = None) -> Problem:
-    """The commanded frames of a parse and the state they start from (see the module's docstring)."""
+                  map: Map | None = None, vocabulary: Any = None, every: Mapping[str, int] | None = None) -> Problem:
+    """The commanded frames of a parse and the state they start from (see the module's docstring); ``every``:
+    how many things of a class "all the ..." asks for, where the map does not place them (:attr:`Things.every`)."""
     things = Things(library.taxonomy, map)
+    things.every = dict(every or {})
     things.hold(holding)            # before the frames: "put it in the sink" calls what the robot holds
     if vocabulary is not None:      # the names a vocabulary gives its classes name them too
         things.synonyms = {class_key(c): tuple(n) for c, n in zip(vocabulary.classes, vocabulary.synonyms,

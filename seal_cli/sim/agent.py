@@ -358,6 +358,7 @@ class Agent:
         if made is None or made.args[0] not in seen:
             return None
         thing, where = made.args
+        self.chosen.setdefault(class_key(thing), seen[thing])   # that one is this name's: not cup_2's too (e2e23)
         room = self.room(where)
         if room is not None:
             return f"{seen[thing]} is in the {room.name.replace('_', ' ')} already"

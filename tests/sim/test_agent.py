@@ -601,3 +601,25 @@ def test_a_thing_said_to_be_on_a_place_is_taken_from_there_once_seen(library: Li
     texts = [r.text for r in agent.records]
     assert result.completed and "picked up mug_2 from coffee_table_1" in texts
     assert not any("where the command said it was" in t for t in texts)
+
+
+def test_all_of_a_kind_is_counted_first_then_every_one_seen_is_done(library: Library) -> None:
+    """e2e23: "put all the cups on the counter" on the flat moved the two cups on the dining table and ended done,
+    the third left in the shut cupboard (the run's robot knows no object, so "all" was a plural's two). It looks
+    all over the house first, as "count all the cups" does, then moves every cup it saw; on the care home, where a
+    cup is in the sink already, that one is said so once and the other two are moved."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    agent, result = pipeline.run_on_map(load_map("flat"), "put all the cups on the counter", library,
+                                        make_policy("oracle"), rng=np.random.default_rng(0))
+    texts = [r.text for r in agent.records]
+    assert result.completed and "then every cup it saw (3)" in texts
+    assert {i.id for i in agent.world.items.values() if i.cls == "cup" and i.parent == "counter_1"} == \
+        {"cup_1", "cup_2", "cup_3"}
+    agent, result = pipeline.run_on_map(load_map("carehome"), "put all the cups in the sink", library,
+                                        make_policy("oracle"), rng=np.random.default_rng(0))
+    texts = [r.text for r in agent.records]
+    assert result.completed and sum("is in sink_1 already" in t for t in texts) == 1
+    assert sum(t.startswith("put cup_") and t.endswith("in sink_1") for t in texts) == 2
+    assert all(i.parent == "sink_1" for i in agent.world.items.values() if i.cls == "cup")
