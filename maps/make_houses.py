@@ -1,7 +1,7 @@
 """Draw the occupancy images of the example houses ``townhouse.yaml``, ``office_floor.yaml``,
 ``cafe.yaml`` and ``clinic.yaml``, and of the context suite's unseen houses ``farmhouse.yaml`` and
 ``terrace.yaml``, the L-shaped ``bungalow.yaml``, ``lodge.yaml``, e2e21's held-out holiday lodge, and
-``flat.yaml``, e2e22's held-out long flat (run once; the PGMs are committed next to this script).
+``flat.yaml``, e2e22's held-out long flat, and ``carehome.yaml``, e2e23's held-out care home (run once; the PGMs are committed next to this script).
 
     python maps/make_houses.py          # rewrites maps/<house>.pgm for each of HOUSES
 
@@ -192,7 +192,24 @@ FLAT = House(
     ),
 )
 
-HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC, FARMHOUSE, TERRACE, BUNGALOW, LODGE, FLAT)
+CAREHOME = House(
+    "carehome", (0.0, 0.0, 16.0, 10.0),
+    walls=(
+        ((4.0, 0.0, 4.0, 10.0), ((1.0, 2.0), (4.6, 5.6), (8.0, 9.0))),  # reception | lounge, kitchen | lounge, dining
+        ((0.0, 4.0, 4.0, 4.0), ()),                            # reception | kitchen
+        ((4.0, 6.0, 10.0, 6.0), ((5.0, 8.0),)),                # lounge | dining room: a 3 m archway
+        ((10.0, 0.0, 10.0, 10.0), ((1.5, 3.0), (8.0, 9.0))),   # lounge | garden (the garden door), dining | rose room
+        ((10.0, 5.0, 16.0, 5.0), ()),                          # garden | rose room, bathroom (the garden's fence)
+        ((13.0, 5.0, 13.0, 10.0), ((8.0, 9.0),)),              # rose room | its en-suite bathroom
+    ),
+    blocks=(
+        (6.5, 0.1, 8.0, 0.5),      # the fireplace against the lounge's south wall
+        (1.5, 6.5, 2.5, 8.0),      # the kitchen island
+        (14.5, 3.5, 15.9, 4.9),    # the garden shed
+    ),
+)
+
+HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC, FARMHOUSE, TERRACE, BUNGALOW, LODGE, FLAT, CAREHOME)
 
 
 def draw(house: House) -> np.ndarray:

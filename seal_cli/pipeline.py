@@ -25,6 +25,7 @@ from typing import TYPE_CHECKING, Any
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding
 from seal_cli.frames.reading import standard_library
+from seal_cli.frames.taxonomy import class_key
 from seal_cli.language.grounding import Vocabulary, vocabulary_of_map
 from seal_cli.language.parser import Parse, parse_command
 from seal_cli.planning import plan as planning
@@ -213,9 +214,47 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
             first.warnings = [*warnings, *notes]
             return agent, first
         agent.told = {}         # what the check's question said of where things are is no word of the command
+    if (every := _every_seen(agent, parses[-1], library, vocabulary, m)) is not None:
+        if not every[0].completed:
+            return agent, every[0]
+        with naming_done(done, text):
+            problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=m.known(),
+                                    vocabulary=vocabulary, every=every[1])
+        agent.classes.update({class_key(k): class_key(v) for k, v in problem.state.classes.items()})
+        agent.say("plan", "then " + ", ".join(f"every {k.replace('_', ' ')} it saw ({n})" for k, n in every[1].items()))
     result = agent.run(problem.commanded, done=executed)
     result.warnings = [*warnings, *notes]
     return agent, result
+
+
+def _every_seen(agent: Any, parse: Parse, library: Library, vocabulary: Any,
+                m: Map) -> tuple[Any, dict[str, int]] | None:
+    """"put all the cups in the sink" on a map whose robot knows no object until it sees it (e2e23): it counts
+    them first, looking all over the house as "count all the cups" does, and the command is then every one it saw
+    (at least one); the count's result, and how many of each kind. None when the command asks for no "all"."""
+    from seal_cli.planning.grounding import MapNames
+    from seal_cli.planning.problem import every_said
+    from seal_cli.planning.questions import read_questions
+
+    phrases = every_said(parse)
+    if not phrases or not m.rooms:
+        return None
+    counted: dict[str, int] = {}
+    result = None
+    for phrase in phrases:
+        count = parse_to_plan(f"count {phrase.text}", library, vocabulary)
+        problem = build_problem(count, library, map=m.known(), vocabulary=vocabulary)
+        if [b.frame.name for b in problem.commanded] != ["Count"]:
+            continue
+        agent.questions.update(read_questions(count, problem.commanded, MapNames(m, library.taxonomy)))
+        agent.classes.update({class_key(k): class_key(v) for k, v in problem.state.classes.items()})
+        agent.say("plan", f"counts first: {phrase.text} (looks all over the house)")
+        result = agent.run(problem.commanded)
+        if not result.completed:
+            return result, counted
+        key = class_key(problem.commanded[0].elements["theme"])
+        counted[key] = max(1, sum(1 for k in agent.known.values() if k.cls == key and k.id in agent.world.items))
+    return None if result is None else (result, counted)
 
 
 def _condition_check(parse: Parse, library: Library, vocabulary: Any, m: Map) -> tuple[Any, Any]:

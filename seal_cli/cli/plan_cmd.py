@@ -50,7 +50,7 @@ def show(plan: Plan) -> None:
     checks the command's condition, when the run checks one ("if Tom is in the garage")."""
     from rich.table import Table
 
-    from seal_cli.frames.said import shown_elements
+    from seal_cli.frames.said import said_names, shown_elements, shown_fact
 
     if plan.check is not None:     # what the run looks at first; the steps below only if the condition holds
         out.print(f"[dim]checks first:[/dim] {plain(plan.check.question)} "
@@ -64,8 +64,9 @@ def show(plan: Plan) -> None:
         because = styled("dim", f"← {step.because}") if step.because else ""
         table.add_row(f"{i}.", frame, elements, because)
     out.print(table)
-    out.print(f"[dim]state:[/dim] {plain(', '.join(map(str, plan.initial))) or '—'}")
-    out.print(f"[dim]goal:[/dim]  {plain(', '.join(map(str, plan.goal))) or '—'}")
+    said = said_names(step.binding for step in plan.steps)  # told(x): the message as words, as the steps show it
+    out.print(f"[dim]state:[/dim] {plain(', '.join(shown_fact(f, said) for f in plan.initial)) or '—'}")
+    out.print(f"[dim]goal:[/dim]  {plain(', '.join(shown_fact(f, said) for f in plan.goal)) or '—'}")
 
 
 @command("plan")

@@ -20,9 +20,11 @@ printed for a user (``seal plan``'s table, ``seal run``'s narration) shows :func
 
 from __future__ import annotations
 
-from seal_cli.frames.model import Binding
+from collections.abc import Collection, Iterable
 
-__all__ = ["SAID_TYPES", "is_question", "said_words", "shown", "shown_elements"]
+from seal_cli.frames.model import Binding, Fact
+
+__all__ = ["SAID_TYPES", "is_question", "quoted", "said_names", "said_words", "shown", "shown_elements", "shown_fact"]
 
 SAID_TYPES = frozenset({"message", "question"})
 """The element types whose values are what is said, not things."""
@@ -59,16 +61,38 @@ def is_question(words: str) -> bool:
     return first in WH_WORDS or first in AUXILIARIES
 
 
+def quoted(name: str) -> str:
+    """A said name as a user reads it: its words quoted, with the question mark of a question
+    (``do_you_want_tea``: ``"do you want tea?"``)."""
+    words = said_words(name)
+    return '"' + words + ("?" if is_question(words) else "") + '"'
+
+
 def shown_elements(binding: Binding) -> list[tuple[str, str]]:
     """The filled elements in the frame's role order, what is said quoted as words (``message``,
     ``"do you want tea?"``); every other value its name."""
     parts = []
     for role, value in sorted(binding.values, key=lambda kv: binding.frame.roles.index(kv[0])):
         if binding.frame.element(role).type in SAID_TYPES:
-            words = said_words(value)
-            value = '"' + words + ("?" if is_question(words) else "") + '"'
+            value = quoted(value)
         parts.append((role, value))
     return parts
+
+
+def said_names(bindings: Iterable[Binding]) -> frozenset[str]:
+    """The names that are what is said in these steps (the values of their message and question elements)."""
+    return frozenset(value for b in bindings for role, value in b.values
+                     if b.frame.element(role).type in SAID_TYPES)
+
+
+def shown_fact(fact: Fact, said: Collection[str]) -> str:
+    """A fact as a user reads it: an argument that is what a step says (one of ``said``, from
+    :func:`said_names`) quoted as words — ``told("what's in the fridge?")``, not ``told(what_s_in_the_fridge)``
+    (e2e23: ``seal plan``'s ``goal:`` line); every other argument its name."""
+    if not any(a in said for a in fact.args):
+        return str(fact)
+    atom = f"{fact.predicate}({', '.join(quoted(a) if a in said else a for a in fact.args)})"
+    return f"not {atom}" if fact.negated else atom
 
 
 def shown(binding: Binding) -> str:

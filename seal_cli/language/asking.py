@@ -94,6 +94,13 @@ def direct_question(words: Sequence[str], asked: Sequence[str] = ()) -> str | No
     subject = ["you"] if you else rest[:size]
     verb, after = rest[size], rest[size + 1:]
     low = verb.lower()
+    negated = _negated(low)
+    if negated is not None:         # "he doesn't want tea": "don't you want tea?", the negation fronted with its verb
+        turned = direct_question([words[0], *rest[:size], negated, *after], asked)
+        if turned is None:
+            return None
+        first, _, others = turned.partition(" ")
+        return f"{_not_contracted(first)} {others}"
     if low in _BE:
         front, tail = (_BE_FOR_YOU[low] if you else low), after
     elif low in MODALS:
@@ -170,12 +177,33 @@ def _noun_size(words: Sequence[str]) -> int:
     return k if k < len(words) else max(0, k - 1)
 
 
+_NOT_FORMS = {"can't": "can", "won't": "will", "shan't": "shall", "ain't": "is"}
+"""Verbs with "n't" whose own part is not the verb with "n't" taken off ("can't" is "can" + "not")."""
+_NOT_CONTRACTED = {"can": "can't", "will": "won't", "shall": "shan't", "am": "aren't"}
+"""The forms with "n't" that are not the verb and "n't" ("will": "won't"; "am I not", contracted, is "aren't I")."""
+
+
+def _negated(word: str) -> str | None:
+    """The verb of a form contracted with "not" ("doesn't": "does", "isn't": "is", "won't": "will", "can't": "can"),
+    or None when the word is none ("want", "not")."""
+    low = word.lower().replace("\u2019", "'")
+    if not low.endswith("n't") or len(low) < 5:
+        return None
+    verb = _NOT_FORMS.get(low, low[:-3])
+    return verb if verb in _BE or verb in MODALS or verb in _PERFECT or verb in _DO else None
+
+
+def _not_contracted(verb: str) -> str:
+    """A verb put first in a question, contracted with "not": "do" "don't", "are" "aren't", "will" "won't"."""
+    return _NOT_CONTRACTED.get(verb, f"{verb}n't")
+
+
 def _subject_size(words: Sequence[str]) -> int:
     """How many words a subject that is not the person asked takes: a determiner and the words up to the first
     verb form ("the tea", "the red car"); a single word ("dinner", "Edith")."""
     if words[0].lower() in DETERMINERS | POSSESSIVES:
         for k in range(1, len(words)):
-            low = words[k].lower()
+            low = _negated(words[k]) or words[k].lower()
             if low in _BE or low in MODALS or low in _PERFECT or low in _DO or \
                     k > 1 and verb_lemma(low) is not None and low.endswith("s"):
                 return k

@@ -91,6 +91,25 @@ def spoken(text: str) -> str:
     return re.sub(r"(?<=[A-Za-z])_(?=[A-Za-z0-9])", " ", text)
 
 
+_FLOATING_EACH = re.compile(r"(?<=[A-Za-z])(\s+)each(?=\s*(?:$|[,.;:!?]|\b(?:and|then|please)\b))", re.IGNORECASE)
+
+
+def without_floating_each(text: str) -> str:
+    """A command without "each" said after its object ("give Edith and Walter a biscuit *each*": one biscuit to
+    each, e2e23; "bring the children an apple each"), which the parser read as a determiner with no noun and
+    refused: the conjoined people already get one each. "each" after a preposition is its pronoun ("put a spoon
+    in each") and stays. Blanked, one space for one character, so spans into the text stay right."""
+    from seal_cli.language.english import PREPOSITIONS
+
+    def blank(match: re.Match[str]) -> str:
+        before = text[:match.start()].split()
+        if before and before[-1].lower() in PREPOSITIONS:
+            return match.group(0)
+        return " " * len(match.group(0))
+
+    return _FLOATING_EACH.sub(blank, text)
+
+
 def words_of(text: str) -> tuple[str, ...]:
     """The lemmatised words of a phrase, without articles and possessives."""
     tokens = re.findall(r"[a-z0-9]+", text.lower().replace("_", " "))

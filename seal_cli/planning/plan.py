@@ -63,7 +63,7 @@ from seal_cli.planning.state import State
 if TYPE_CHECKING:
     from seal_cli.planning.conditions import Condition
 
-__all__ = ["MAX_CHAIN", "MAX_NODES", "Plan", "Step", "already_so", "explain", "plan"]
+__all__ = ["MAX_CHAIN", "MAX_NODES", "Plan", "Step", "already_so", "explain", "open_already", "plan"]
 
 MAX_NODES = 20_000
 """Default bound on the nodes the search expands before it gives up."""
@@ -484,6 +484,9 @@ def plan(commanded: Sequence[Binding], library: Library, state: State, *, max_no
     steps = tuple(Step(b, c, None if c else _because(i, bindings, states)) for i, (b, c) in enumerate(path))
     notes = tuple(f"{b} is not done: {', '.join(str(f) for f in b.postconditions if not f.negated)} "
                   "holds already" for b in already)
+    notes += tuple(f"{step.binding}: {made.args[0]} is already {'closed' if made.negated else 'open'} on the map; "
+                   "seal run says so without moving" for step, before in zip(steps, states, strict=False)
+                   if step.commanded and (made := open_already(step.binding, before)) is not None)
     return Plan(steps, state, _goal(steps, states), text, expanded, notes)
 
 
@@ -501,6 +504,20 @@ def already_so(binding: Binding, state: State) -> Fact | None:
     if not into or not state.unmet(binding) or not all(state.holds(f) for f in results):
         return None
     return into[0]
+
+
+def open_already(binding: Binding, state: State) -> Fact | None:
+    """The result that makes an Open or a Close pointless here: its ``open(x)`` or ``not open(x)``, of a thing
+    the state knows opens and shuts (its ``closable``: a map's openable places), when every result of the frame
+    is of that kind and holds already ("close the fridge" with the fridge shut, e2e23); None otherwise.
+    ``seal run`` skips such a frame at once, saying so (the robot's state starts from the map's ``open:``, as
+    its plans do: no Open before taking from a dishwasher left open); ``seal plan`` keeps it, noted."""
+    results = binding.postconditions
+    if not results or state.closable is None:
+        return None
+    if not all(f.predicate == "open" and len(f.args) == 1 and f.args[0] in state.closable for f in results):
+        return None
+    return results[0] if all(state.holds(f) for f in results) else None
 
 
 def explain(plan: Plan) -> Iterator[str]:

@@ -137,6 +137,9 @@ class Things:
         """The commanded frames whose goal "put away" chose."""
         self.put_back: list[Binding] = []
         """The commanded frames that put a thing "back" where the robot will take it from."""
+        self.every: Mapping[str, int] = {}
+        """How many things of a class "all the ..." asks for when the map does not place them (``seal run``'s
+        robot, after looking all over the house for them), by class key."""
         if map is not None:
             self._read_map(map)
 
@@ -208,6 +211,16 @@ class Things:
         while len(known) < n:
             known.append(self._fresh(cls, len(known) + 1))
         return tuple(known[:n])
+
+    def known(self, value: str) -> int:
+        """How many things of the class a value names the map places (its objects; 0 without a map), or
+        :attr:`every` says."""
+        cls = class_key(value)
+        if cls in self.every:
+            return self.every[cls]
+        if self.map is None:
+            return 0
+        return sum(1 for o in self.map.objects if class_key(o.cls) == cls)
 
     def hold(self, holding: str | None) -> None:
         """Keep what the robot holds as the command starts (:attr:`held`): ``holding`` (a class, refused if
@@ -364,7 +377,7 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
         word = " ".join(class_words(value))
         raise _located(f"the {m.name} has no {word} to carry, only {where}, which the robot cannot get {word} "
                        f"from{known}", phrase, text)
-    count = _count(phrase, value)
+    count = _count(phrase, value, things)
     if count > MAX_COUNT:
         raise _located(f"{phrase.text!r} asks for {count:,} things; seal plans for at most {MAX_COUNT} "
                        "of a kind", phrase, text)
@@ -549,17 +562,37 @@ def _kinds_known_of(phrase: Phrase, things: Things) -> bool:
     return any(class_key(c) in known for c in (phrase.cls, phrase.head) if c)
 
 
-def _count(phrase: Phrase, value: str) -> int:
-    """How many things a phrase asks for: the number said ("two apples"); at least two for a plural
-    that names the class by its head ("the books", "both books"; not "the keys" of a key chain; not
-    "the gloves" or "a pair of gloves", one pair: :data:`~seal_cli.planning.grounding.PAIRED`);
-    one whole for pieces cut from it ("two slices of apple": one apple, sliced; but "two sets of
-    keys" are two key chains)."""
+UNIVERSAL = frozenset({"all", "every", "each"})
+"""Words that ask for every thing of a kind there is ("*all* the cups", "*every* cup", "*each* plate")."""
+
+
+def every_said(parse: Parse) -> list[Phrase]:
+    """The phrases of a parse that ask for every thing of a kind ("*all the cups*", "*every* cup"), by
+    :data:`UNIVERSAL`, each kind once: ``seal run`` looks all over the house for them first."""
+    out: dict[str, Phrase] = {}
+    for evoked in parse.frames:
+        for phrase in evoked.elements.values():
+            said = (phrase.text or "").lower().split()
+            if said[:1] and said[0] in UNIVERSAL and phrase.quantity is None and phrase.head:
+                out.setdefault(phrase.cls or phrase.head, phrase)
+    return list(out.values())
+
+
+def _count(phrase: Phrase, value: str, things: Things) -> int:
+    """How many things a phrase asks for: the number said ("two apples"); every one the map places for
+    "all", "every" or "each" first ("all the cups": the two on the table and the one in the cupboard, e2e23;
+    at least one); at least two for a plural that names the class by its head ("the books", "both books"; not
+    "the keys" of a key chain; not "the gloves" or "a pair of gloves", one pair:
+    :data:`~seal_cli.planning.grounding.PAIRED`); one whole for pieces cut from it ("two slices of apple": one
+    apple, sliced; but "two sets of keys" are two key chains)."""
     from seal_cli.language.grounding import PIECES
 
     named = class_words(value)[-1:] == (phrase.head,)
     if phrase.head in PIECES and not named:
         return 1
+    said = (phrase.text or "").lower().split()
+    if named and phrase.quantity is None and said[:1] and said[0] in UNIVERSAL and (known := things.known(value)):
+        return known
     a_pair = phrase.quantity == 2 and "pair" in words_of(phrase.text or "")
     if phrase.head in PAIRED and (phrase.quantity is None or a_pair):
         return 1                      # "the gloves", "a pair of gloves": one pair
@@ -705,7 +738,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
                             f"multiply: {evoked.frame} alone is {math.prod(len(values[r]) for r in roles):,}); "
                             "split it into smaller commands")
         reading = frame if kept or "goal" in placed_back else on_top(frame, evoked.elements.get("goal"))
-        for combination in itertools.product(*(values[r] for r in roles)):
+        for combination in _combinations(frame, evoked, values, roles, things):
             said = dict(zip(roles, combination, strict=True))
             if kept:        # "put away the cup and the spoon": each where it is kept
                 said["goal"] = kept[said["theme"]]
@@ -714,6 +747,29 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
                 things.put_back.append(frame.bind(said))
             bindings.append(reading.bind(said))
     return bindings
+
+
+ONE_EACH = frozenset({"a", "an", "one", "another"})
+"""Words that open a phrase of one thing of a kind, not a particular one ("*a* biscuit"): handed to several people,
+one each."""
+
+
+def _combinations(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]], roles: Sequence[str],
+                  things: Things) -> Iterator[tuple[str, ...]]:
+    """Every combination of the frame's values, in role order; except that one thing of a kind ("*a* biscuit")
+    handed to several people ("give Edith and Walter a biscuit (each)") is a thing of that kind for each of them
+    (``biscuit``, ``biscuit_2``), not the same one given to Edith, taken back and given to Walter (e2e23)."""
+    phrase = evoked.elements.get("theme")
+    said = (phrase.text or "").lower().split() if phrase is not None else []
+    people = values.get("recipient", ())
+    if (len(values.get("theme", ())) == 1 and len(people) > 1 and said[:1] and said[0] in ONE_EACH
+            and frame.needs_held("theme") and "recipient" in roles):
+        each = things.instances(values["theme"][0], len(people))
+        for thing, person in zip(each, people, strict=True):
+            yield from itertools.product(*((thing,) if r == "theme" else (person,) if r == "recipient"
+                                           else values[r] for r in roles))
+        return
+    yield from itertools.product(*(values[r] for r in roles))
 
 
 def _back_to(phrase: Phrase | None, themes: Sequence[str], bindings: Sequence[Binding], things: Things,
@@ -971,9 +1027,11 @@ def _contains(words: tuple[str, ...], part: tuple[str, ...]) -> bool:
 
 
 def build_problem(parse: Parse, library: Library, *, holding: str | None = None, done: Iterable[Parse] = (),
-                  map: Map | None = None, vocabulary: Any = None) -> Problem:
-    """The commanded frames of a parse and the state they start from (see the module's docstring)."""
+                  map: Map | None = None, vocabulary: Any = None, every: Mapping[str, int] | None = None) -> Problem:
+    """The commanded frames of a parse and the state they start from (see the module's docstring); ``every``:
+    how many things of a class "all the ..." asks for, where the map does not place them (:attr:`Things.every`)."""
     things = Things(library.taxonomy, map)
+    things.every = dict(every or {})
     things.hold(holding)            # before the frames: "put it in the sink" calls what the robot holds
     if vocabulary is not None:      # the names a vocabulary gives its classes name them too
         things.synonyms = {class_key(c): tuple(n) for c, n in zip(vocabulary.classes, vocabulary.synonyms,
@@ -1072,10 +1130,10 @@ def parse_to_plan(text: str, library: Library, vocabulary: Any = None) -> Parse:
     "tell Ben where the spoon is" finds the spoon, then tells Ben where it is), and a question of whether any
     thing at all is somewhere asked as what is there (:func:`~seal_cli.planning.questions.anything_there`)."""
     from seal_cli.language.parser import parse_command
-    from seal_cli.planning.grounding import spoken
+    from seal_cli.planning.grounding import spoken, without_floating_each
     from seal_cli.planning.questions import anything_there, told_first
 
-    return anything_there(told_first(parse_command(spoken(text), library, vocabulary),
+    return anything_there(told_first(parse_command(without_floating_each(spoken(text)), library, vocabulary),
                                      lambda said: parse_command(said, library, vocabulary)))
 
 

@@ -44,7 +44,7 @@ from seal_cli.frames.said import said_words, shown
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.model import SPEAKER, Map
 from seal_cli.planning.grounding import kind_of, spoken
-from seal_cli.planning.plan import already_so
+from seal_cli.planning.plan import already_so, open_already
 from seal_cli.planning.questions import STATE_WORDS, Question
 from seal_cli.planning.state import State
 from seal_cli.sim.navigation import Cell, Grid
@@ -320,6 +320,8 @@ class Agent:
         free (not held, not shut in), or put it in or on a place where one it knows of is; None otherwise."""
         if binding in self.put_back:        # back where it was taken from: the robot puts it there
             return None
+        if (shut := self._open_already(binding)) is not None:     # "close the fridge", shut (e2e23)
+            return shut
         if binding in self.put_away:        # put away: already so only where such a thing is kept
             return self._kept_already(binding)
         results = [f for f in binding.postconditions if not f.negated and f.predicate == "in" and len(f.args) == 2]
@@ -356,11 +358,29 @@ class Agent:
         if made is None or made.args[0] not in seen:
             return None
         thing, where = made.args
+        self.chosen.setdefault(class_key(thing), seen[thing])   # that one is this name's: not cup_2's too (e2e23)
         room = self.room(where)
         if room is not None:
             return f"{seen[thing]} is in the {room.name.replace('_', ' ')} already"
         place = self.world.items[seen[thing]].parent or where
         return f"{seen[thing]} is {'in' if self.world.hollow(self.world.items[place]) else 'on'} {place} already"
+
+    def _open_already(self, binding: Binding) -> str | None:
+        """"fridge_1 is already closed (as the map has it)", for an Open or a Close of a place of the map that is
+        so already, by :func:`seal_cli.planning.plan.open_already` (e2e23). The robot knows whether a place is
+        open: the map says so (``open:``) and only the robot opens and closes things in the simulator, so this
+        is its own knowledge, not the hidden truth (a thing inside stays unseen)."""
+        places = {f.args[0] for f in binding.postconditions if len(f.args) == 1}
+        if len(places) != 1 or (place := next(iter(places))) not in self.world.items or not self._is_place(place):
+            return None
+        item = self.world.items[place]
+        state = State.of({Fact("open", (place,))} if item.is_open else set(), self.library.taxonomy,
+                         closable={place} if item.openable else set())
+        made = open_already(binding, state)
+        if made is None:
+            return None
+        how = "it closed it again after looking in" if place in self.opened else "as the map has it"
+        return f"{place} is already {'closed' if made.negated else 'open'} ({how})"
 
     def _kept_already(self, binding: Binding) -> str | None:
         """"pen_1 is on desk_1 already", for a frame "put away" chose the goal of, when the robot sees a
@@ -622,6 +642,10 @@ class Agent:
             candidates = [k for k in candidates if bool(source.contains([self.world.position(k.id)])[0])]
         if not candidates:
             return None
+        place = self._place_of(binding.elements.get("source") or "") if taking else None
+        there = [k for k in candidates if place is not None and self.world.items[k.id].parent == place]
+        if there:          # "the mug on the coffee table": one seen there, not the nearest mug elsewhere (e2e23)
+            candidates = there
         if previous is not None and any(k.id == previous for k in candidates):
             return previous
         return self.policy.choose(self, key, candidates) or self.nearest(candidates)
@@ -1670,8 +1694,10 @@ class Agent:
                 or self.exhausted():
             return
         if self.go_to(SPEAKER, binding).ok:
-            self._act_words("say", ["report"], f"tells the speaker that it did not find {self.said(who)}: "
-                            f"{self.in_words(outcome.message)}")
+            name = self.said(who)
+            how = without_not_found(self.in_words(outcome.message), name)
+            self._act_words("say", ["report"], f"tells the speaker that it did not find {name}"
+                            + (f" ({how})" if how else ""))
 
     def in_words(self, text: str) -> str:
         """An answer as said to a person, not printed for the speaker's record: a thing's or place's id as its
@@ -2130,3 +2156,17 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
 ROOM_SPOT_CLEARANCE = 0.6
 """Metres from anyone standing in a room that :meth:`Agent.room_spot` keeps ("go to the kitchen" does not
 end on Anna's toes at the kitchen's middle)."""
+
+
+def without_not_found(message: str, who: str) -> str:
+    """The search's sentence without its clauses that only say ``who`` was not found (e2e23), for a report that says
+    so already: "searched the whole house: no Raj (looked all over 9 rooms)" is "searched the whole house; looked all
+    over 9 rooms" after "it did not find Raj"; a parenthesis of such a clause is kept as a clause of its own."""
+    kept: list[str] = []
+    for clause in message.split(": "):
+        match = re.fullmatch(rf"no (?:other )?{re.escape(who)}(?: found)?(?: \((.*)\))?", clause.strip(), re.IGNORECASE)
+        if match is None:
+            kept.append(clause.strip())
+        elif match.group(1):
+            kept.append(match.group(1))
+    return "; ".join(c for c in kept if c)

@@ -452,6 +452,8 @@ class World:
             return why
         if item.openable and on and item.is_open and self._is(item, "heater"):
             return Outcome(False, f"{thing} must be closed before it is switched on", Reason.OPEN, thing)
+        if ("on" in item.states) == on:     # as Open and Close say (e2e23: "switch off the radio" when it is off)
+            return Outcome(True, f"{thing} is already {'on' if on else 'off'}")
         self._set(item, "on", on)
         return Outcome(True, f"switched {thing} {'on' if on else 'off'}")
 

@@ -6,7 +6,8 @@ import pytest
 from typer.testing import CliRunner
 
 from seal_cli.cli import app
-from seal_cli.frames.said import is_question, said_words, shown
+from seal_cli.frames.model import Fact
+from seal_cli.frames.said import is_question, said_names, said_words, shown, shown_fact
 
 
 @pytest.mark.parametrize(("name", "words"), [
@@ -45,6 +46,19 @@ def test_seal_plan_prints_the_question_as_words() -> None:
     result = CliRunner().invoke(app, ["plan", "--map", "apartment", "ask Anna what's in the fridge"])
     assert result.exit_code == 0, result.output
     assert 'message="what\'s in the fridge?", recipient=anna' in result.stdout
-    assert "what_s_in_the_fridge" in result.stdout        # the goal's fact keeps its name
+    goal = next(line for line in result.stdout.splitlines() if line.startswith("goal:"))
+    assert goal.split(None, 1)[1] == 'told("what\'s in the fridge?")'   # the goal as words too (e2e23)
+    assert "what_s_in_the_fridge" not in result.stdout
     as_json = CliRunner().invoke(app, ["plan", "--map", "apartment", "ask Anna what's in the fridge", "--json"])
     assert '"message": "what_s_in_the_fridge"' in as_json.stdout
+    assert '"told(what_s_in_the_fridge)"' in as_json.stdout   # names stay in --json
+
+
+def test_a_fact_shows_only_what_a_step_says_as_words(library) -> None:
+    """An argument is quoted only when a step says it: a thing that happens to be a name of words stays a name."""
+    tell = library.frame("Tell").bind({"message": "dinner_is_ready", "recipient": "anna"})
+    said = said_names([tell, library.frame("Pick").bind({"theme": "cup"})])
+    assert said == {"dinner_is_ready"}
+    assert shown_fact(Fact("told", ("dinner_is_ready",)), said) == 'told("dinner is ready")'
+    assert shown_fact(Fact("told", ("dinner_is_ready",), negated=True), said) == 'not told("dinner is ready")'
+    assert shown_fact(Fact("in", ("paper_towel", "cupboard_1")), said) == "in(paper_towel, cupboard_1)"

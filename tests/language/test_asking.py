@@ -26,6 +26,28 @@ def test_an_indirect_question_is_put_as_the_person_hears_it(said: str, asked: st
     assert direct_question(said.split(), asked.split()) == question
 
 
+@pytest.mark.parametrize(("said", "asked", "question"), [
+    ("if he doesn't want tea", "", "don't you want tea?"),              # the negation goes first with its verb
+    ("if he does not want tea", "", "do you not want tea?"),            # said in full, it stays after the subject
+    ("whether she isn't hungry", "", "aren't you hungry?"),
+    ("if he can't come", "", "can't you come?"),
+    ("if they won't stay for lunch", "", "won't you stay for lunch?"),
+    ("if he hasn't seen his keys", "", "haven't you seen your keys?"),
+    ("if Anna wasn't there", "Anna", "weren't you there?"),
+    ("if the tea isn't ready", "Raj", "isn't the tea ready?"),           # another subject stays
+    ("if he doesn\u2019t want tea", "", "don't you want tea?"),          # a typographic apostrophe
+])
+def test_a_negated_indirect_question_is_put_as_the_person_hears_it(said: str, asked: str, question: str) -> None:
+    """e2e23: "ask Ben if he doesn't want tea" put "if he doesn't want tea" to Ben as said."""
+    assert direct_question(said.split(), asked.split()) == question
+
+
+def test_ask_a_negated_question_puts_it_to_the_person(library: Library) -> None:
+    (tell,) = parse_command("ask Ben if he doesn't want tea", library).frames
+    assert (tell.frame, tell.elements["message"].head, tell.elements["recipient"].head) == \
+        ("Tell", "don't you want tea?", "Ben")
+
+
 @pytest.mark.parametrize("said", ["he wants tea", "if", "if he", "that he wants tea"])
 def test_words_that_are_no_indirect_yes_no_question_give_none(said: str) -> None:
     assert direct_question(said.split()) is None

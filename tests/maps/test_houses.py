@@ -12,7 +12,8 @@ from seal_cli.maps.formats.map_server import load_map, read_pgm
 from tests.conftest import module_from_file
 
 MAPS = Path(__file__).resolve().parents[2] / "maps"
-HOUSES = ["townhouse", "office_floor", "cafe", "clinic", "farmhouse", "terrace", "bungalow", "lodge", "flat"]
+HOUSES = ["townhouse", "office_floor", "cafe", "clinic", "farmhouse", "terrace", "bungalow", "lodge", "flat",
+          "carehome"]
 
 
 def make_houses():  # type: ignore[no-untyped-def]

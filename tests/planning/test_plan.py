@@ -615,3 +615,22 @@ def test_a_negated_precondition_holds_at_the_start_and_is_achieved_by_a_deletion
     assert again.steps[1].because is not None and "not zapped(cup)" in again.steps[1].because
     with pytest.raises(SealError):
         plan_text("zap the cup and zap it", load_library([str(once), str(types)]))
+
+
+def test_an_open_or_close_of_a_place_so_already_is_noted_and_kept(library: Library) -> None:
+    """e2e23: "close the fridge" with the fridge shut. The plan keeps the step (the goal is empty) and notes it;
+    an Open then a Close of the same place is no such case (the Close undoes what the plan did)."""
+    from seal_cli.planning.plan import open_already
+
+    state = State.of(set(robot_facts(None)), library.taxonomy, ("fridge", "microwave"))
+    close = bind(library, "Close", theme="fridge")
+    assert str(open_already(close, state)) == "not open(fridge)"
+    assert open_already(bind(library, "Open", theme="fridge"), state) is None
+    opened = State.of({*robot_facts(None), Fact("open", ("microwave",))}, library.taxonomy, ("fridge", "microwave"))
+    assert str(open_already(bind(library, "Open", theme="microwave"), opened)) == "open(microwave)"
+    result = plan([close], library, state)
+    assert steps(result) == ["Close(theme=fridge)"]
+    assert result.warnings == ("Close(theme=fridge): fridge is already closed on the map; seal run says so "
+                               "without moving",)
+    both = plan([bind(library, "Open", theme="fridge"), close], library, state)
+    assert steps(both) == ["Open(theme=fridge)", "Close(theme=fridge)"] and not both.warnings

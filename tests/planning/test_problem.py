@@ -357,3 +357,20 @@ def test_a_count_times_a_multiplier_is_their_product_and_refused_past_the_bound(
 
     with pytest.raises(SealError, match=re.escape(f"asks for {count} things; seal plans for at most 100")):
         themes(text, library)
+
+
+@pytest.mark.parametrize(("text", "themes"), [
+    ("put all the cups on the counter", ["cup", "cup_2", "cup_3"]),     # the third in the shut cupboard too
+    ("put every cup on the counter", ["cup", "cup_2", "cup_3"]),
+    ("put all of the cups on the counter", ["cup", "cup_2", "cup_3"]),
+    ("put the cups on the counter", ["cup", "cup_2"]),                  # a plural: at least two, as before
+    ("put all the plates on the counter", ["plate", "plate_2"]),
+    ("put all the kettles on the counter", ["kettle"]),                 # one there: that one, not two
+])
+def test_all_of_a_kind_is_every_one_the_map_places(library: Library, text: str, themes: list[str]) -> None:
+    """e2e23: "put all the cups on the counter" on the flat moved the two on the table and left the one in the
+    cupboard, as a plain plural does."""
+    from seal_cli.maps.formats.map_server import load_map
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "flat.yaml")
+    assert [b.elements["theme"] for b in problem_of_text(text, library, map=m).commanded] == themes

@@ -91,6 +91,10 @@ def test_toggles_and_lamps(library: Library) -> None:
     assert not world.act("toggle_on", "fridge_1")
     assert world.act("toggle_on", "lamp_1") and world.has("lamp_1", "on")
     assert world.act("toggle_off", "lamp_1") and not world.has("lamp_1", "on")
+    again = world.act("toggle_off", "lamp_1")       # as Open and Close say (e2e23): nothing switched
+    assert again and again.message == "lamp_1 is already off" and not world.has("lamp_1", "on")
+    assert world.act("toggle_on", "lamp_1").message == "switched lamp_1 on"
+    assert world.act("toggle_on", "lamp_1").message == "lamp_1 is already on"
 
 
 def test_drive_counts_metres_and_log_keeps_order(library: Library) -> None:
