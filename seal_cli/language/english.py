@@ -144,7 +144,7 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                     "your task is to", "your job is to", "the task is to", "your next task is to",
                     "i would like for you to", "i'd like for you to", "i want for you to", "i'll need you to",
                     "i will need you to", "we need you to", "we'll need you to", "wanna", "do you wanna",
-                    "you wanna"]))
+                    "you wanna", "why don't you", "why not"]))
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
     "when you have a moment", "when you have a minute", "when you have a second", "when you have time",
@@ -462,3 +462,20 @@ VERB_TAKES = (NP_OPENERS | PRONOUNS | PARTICLES | END_MARKS | frozenset(["please
 PARTS = frozenset(["lid", "door", "handle", "seat", "tank", "cover", "basin"])
 """The portions that are parts a thing is made with ("the fridge *door*", "a spoon with a blue *handle*"):
 a thing said "with" one is described, not given contents."""
+PROHIBITIVES = frozenset(["don't", "dont", "do not", "never", "please don't", "please do not", "please never"])
+"""What opens an imperative said negatively, a prohibition ("*don't* open the window", "*do not* go in the
+bedroom", "*never* leave the door open"): the robot is asked not to do something, which is no frame of the
+library. "don't forget to" is a reminder, a request to do it (``POLITE``)."""
+NOT_FORGOTTEN = frozenset(["forget", "fail"])
+""""don't *forget* ...", "don't *fail* to ...": a negated verb of omission asks for the deed (no prohibition)."""
+CANCELLATIONS = frozenset(["never mind", "nevermind", "forget about", "don't bother with", "don't bother about",
+                           "no need to", "there's no need to", "you don't need to", "you needn't"])
+"""What takes back something asked or expected ("*never mind* the lamp, turn on the fan", "*no need to* wash it"):
+the clause they open asks nothing."""
+CORRECTION_MARKS = frozenset(["no", "no wait", "wait", "no sorry", "sorry", "i mean", "sorry i mean",
+                              "no i mean", "i meant", "sorry i meant", "or rather", "rather", "actually",
+                              "no actually", "oops", "whoops", "correction", "make that", "no make that",
+                              "scratch that"])
+"""Words that correct the phrase just said ("bring the cup, *no*, the mug", "open the window, *sorry, I mean*
+the door", "give Sam the book, *or rather* the magazine"); commas may come between them. The phrase after them
+stands for the last phrase said before them."""

@@ -330,6 +330,10 @@ def _explain(error: Any, text: str, words: Sequence[Word], lexicon: Lexicon) -> 
     wants_verb = "VERB" in (error.expected or ())
     if wants_verb and not at_end and token.type not in ("END", "SEP"):
         word = str(token).split()[0].lower()
+        if _prohibits(words, token.start_pos):
+            return CommandError(f"{_said_from(text, words, token.start_pos)!r} asks the robot not to do something: "
+                                f"no frame of the library does that; say what it should do (it can "
+                                f"{_either(list(lexicon.can))})", column, text, ["a verb"])
         return CommandError(_unknown_verb(lexicon, word), column, text, ["a verb"])
     before = _word_before(words, words[token.start_pos].start if not at_end else len(text))
     after = f" after {before!r}" if before else ""
@@ -339,6 +343,20 @@ def _explain(error: Any, text: str, words: Sequence[Word], lexicon: Lexicon) -> 
         return CommandError(f"the command ends too early{after}: expected {_either(expected)}", column, text,
                             expected)
     return CommandError(f"unexpected {str(token)!r}{after}: expected {_either(expected)}", column, text, expected)
+
+
+def _prohibits(words: Sequence[Word], k: int) -> bool:
+    """Whether a prohibition opens at word ``k`` ("*don't* open the window", "*do not* go", "can you *not* slam
+    the door", :mod:`seal_cli.language.rules.negatives`), said with no command beside it."""
+    first = words[k].lower.split()
+    return bool(first) and (first[0] in ("don't", "dont", "never", "not", "nevermind") or first[:2] == ["do", "not"]
+                            or first[:2] == ["no", "need"])
+
+
+def _said_from(text: str, words: Sequence[Word], k: int) -> str:
+    """The words of the clause from word ``k`` to the end of its sentence, as said."""
+    end = next((w.start for w in words[k + 1:] if w.lower in (".", "!", "?", ";")), len(text))
+    return text[words[k].start:end].strip()
 
 
 def _word_before(words: Sequence[Word], position: int) -> str | None:

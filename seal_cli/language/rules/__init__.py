@@ -16,6 +16,7 @@ from seal_cli.language.rules import (
     fronted,
     function_words,
     lead_ins,
+    negatives,
     numbers,
     open_words,
     politeness,
@@ -37,6 +38,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     fronted.FRONTED_WITH,
     politeness.ADVERB_COMMA,
     politeness.POLITENESS,
+    negatives.PROHIBITED_FIRST,
     politeness.EMPHATIC_DO,
     politeness.YOU_IMPERATIVE,
     lead_ins.COMMA_AFTER_POLITENESS,
@@ -101,6 +103,8 @@ word is tagged as what it is (``INSIDE``), and the grammar reports the missing v
 
 INSIDE: tuple[Rule, ...] = (
     clauses.END_MARK,
+    negatives.CORRECTED,
+    negatives.PROHIBITED_AFTER,
     question_tags.QUESTION_TAG,
     requests.KNOW_AFTER_LET,
     requests.STATE_ASKED,
@@ -153,6 +157,7 @@ WORDS: tuple[Rule, ...] = (
     numbers.APOSTROPHE_S,
     numbers.QUANTIFIER_OF,
     function_words.PARTICLE_NOUN,
+    function_words.ORDINAL_BEFORE_NUMBER,
     function_words.ORDINAL_FROM_AN_END,
     function_words.SIDE_OF_REGION,
     function_words.OF,
