@@ -302,10 +302,12 @@ WHERE_QUESTIONS = asked_negatively(frozenset([
     "where is", "where are", "where 's", "where's", "where're", "where did", "where has", "where have", "where had",
     "is there", "are there", "is there any", "are there any", "do we have", "do we have any", "have we got",
     "have we got any", "do we still have", "do we still have any", "whereabouts is", "whereabouts are",
-    "whereabouts 's", "whereabouts's"]))
+    "whereabouts 's", "whereabouts's", "where stays", "where stay", "where sits", "where sit", "where lies",
+    "where lie", "where stands", "where stand", "where hangs", "where hang"]))
 """Questions about where a thing is, or whether there is one ("*where is* the cup?", "*is there* a cup in the
 kitchen?", "*do we have any* eggs?", "*where did* the cat go?", "*where have* my keys gone?", "*whereabouts is* the
-remote?": "whereabouts" asking where, as only before "is"/"are"): they mean "find ..."
+remote?": "whereabouts" asking where, as only before "is"/"are"; a learner's verb of position said for "is",
+"*where stays* the remote?", "where sits my bag?", words27): they mean "find ..."
 (``WHERE_MEANS``); an auxiliary before a subject pronoun is ``WHERE_DID``'s ("where did *I* leave ...")."""
 WHERE_MEANS = "find"
 WHERE_DID = (frozenset(["where", "whereabouts"]),
@@ -479,3 +481,6 @@ CORRECTION_MARKS = frozenset(["no", "no wait", "wait", "no sorry", "sorry", "i m
 """Words that correct the phrase just said ("bring the cup, *no*, the mug", "open the window, *sorry, I mean*
 the door", "give Sam the book, *or rather* the magazine"); commas may come between them. The phrase after them
 stands for the last phrase said before them."""
+GREETINGS = frozenset(["hey", "hi", "hello", "ok", "okay", "yo", "oi", "oy", "hiya", "heya", "howdy"])
+"""Words that greet or call someone ("*hey* Siri, ...", "*ok* robot ..."): a word after one of them, before the
+command, is the name of whom is addressed, whatever else it may mean ("hey *google*, turn on the lights")."""

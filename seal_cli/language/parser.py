@@ -37,7 +37,7 @@ from seal_cli.language.phrasal import phrasal_verb
 from seal_cli.language.searches import drop_found_again, merge_searches
 from seal_cli.language.slicing import infer_slice
 from seal_cli.language.stacking import infer_stack
-from seal_cli.language.state import CLOSED
+from seal_cli.language.state import CLOSED, State
 from seal_cli.language.steps import infer_left_in, infer_step
 from seal_cli.language.swallowed import Swallowed, swallowed
 from seal_cli.language.syntax import NP, Syntax
@@ -334,6 +334,10 @@ def _explain(error: Any, text: str, words: Sequence[Word], lexicon: Lexicon) -> 
             return CommandError(f"{_said_from(text, words, token.start_pos)!r} asks the robot not to do something: "
                                 f"no frame of the library does that; say what it should do (it can "
                                 f"{_either(list(lexicon.can))})", column, text, ["a verb"])
+        if _states(lexicon, text, words[token.start_pos].start):
+            return CommandError(f"{_said_from(text, words, token.start_pos)!r} is a statement, no command: "
+                                f"say what the robot should do (it can "
+                                f"{_either(list(lexicon.can))})", column, text, ["a verb"])
         return CommandError(_unknown_verb(lexicon, word), column, text, ["a verb"])
     before = _word_before(words, words[token.start_pos].start if not at_end else len(text))
     after = f" after {before!r}" if before else ""
@@ -351,6 +355,14 @@ def _prohibits(words: Sequence[Word], k: int) -> bool:
     first = words[k].lower.split()
     return bool(first) and (first[0] in ("don't", "dont", "never", "not", "nevermind") or first[:2] == ["do", "not"]
                             or first[:2] == ["no", "need"])
+
+
+def _states(lexicon: Lexicon, text: str, start: int) -> bool:
+    """Whether a statement opens at character ``start`` of ``text`` ("*rose wants to go to bed*", "*the door is
+    open*": a subject and a finite verb, :meth:`State.statement_at`): no verb the robot lacks."""
+    raw = tokenize(text)
+    k = next((j for j, w in enumerate(raw) if w.start == start), None)
+    return k is not None and State(lexicon, raw, text).statement_at(k) > 0
 
 
 def _said_from(text: str, words: Sequence[Word], k: int) -> str:

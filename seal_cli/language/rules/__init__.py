@@ -55,6 +55,8 @@ CLAUSE_START: tuple[Rule, ...] = (
     lead_ins.WATCHING_RULE,
     lead_ins.POLITE_FRAME,
     politeness.VOCATIVE_NAME,
+    politeness.ADDRESSED,
+    politeness.LIKE_FILLER,
     requests.NUMBER_OF_RULE,
     requests.HOW_MUCH_COUNTED,
     requests.WHICH_PLACE,
