@@ -484,3 +484,7 @@ stands for the last phrase said before them."""
 GREETINGS = frozenset(["hey", "hi", "hello", "ok", "okay", "yo", "oi", "oy", "hiya", "heya", "howdy"])
 """Words that greet or call someone ("*hey* Siri, ...", "*ok* robot ..."): a word after one of them, before the
 command, is the name of whom is addressed, whatever else it may mean ("hey *google*, turn on the lights")."""
+URGENT = frozenset(["now", "right now", "quick", "quickly", "asap", "fast", "hurry", "immediately", "right away",
+                    "pronto", "please", "pls", "thanks", "thank you", "straight away", "at once"])
+"""Words that ask for haste or say please, said as a phrase of their own in a command of bare phrases ("keys. hallway.
+*now*", "bathroom, *quick*"): what is wanted is in the other phrases (``rules.telegraphic``)."""

@@ -23,6 +23,7 @@ from seal_cli.language.rules import (
     question_tags,
     requests,
     statements,
+    telegraphic,
     verbs,
 )
 
@@ -94,6 +95,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.SWITCHED_ALONE,
     requests.ANY_ASKED,
     requests.ASKED_ALONE_RULE,
+    telegraphic.TELEGRAPHIC,
     requests.SWITCHED_BY_UNKNOWN,
     verbs.USE,
     verbs.VERB,
