@@ -488,3 +488,10 @@ URGENT = frozenset(["now", "right now", "quick", "quickly", "asap", "fast", "hur
                     "pronto", "please", "pls", "thanks", "thank you", "straight away", "at once"])
 """Words that ask for haste or say please, said as a phrase of their own in a command of bare phrases ("keys. hallway.
 *now*", "bathroom, *quick*"): what is wanted is in the other phrases (``rules.telegraphic``)."""
+RELAYING = frozenset(["says", "said", "wants", "wanted", "asks", "asked", "told", "tells", "would like", "'d like"])
+"""Verbs by which a person's request is passed on to the robot ("mum *says* you have to ...", "Anna *asked* you to
+...", "dad *wants* you to ..."): the request that follows is the command; who made it is said beside it."""
+RELAYED_OBLIGATION = frozenset(["have to", "must", "should", "need to", "ought to", "'ve got to", "have got to",
+                                "are to", "to", "can", "could", "will", "may"])
+"""What comes after "you" in a request passed on ("... says you *have to* turn off the telly", "... asked you *to*
+bring her a towel"), before its verb."""

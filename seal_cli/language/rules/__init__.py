@@ -40,6 +40,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     politeness.ADVERB_COMMA,
     politeness.POLITENESS,
     negatives.PROHIBITED_FIRST,
+    politeness.RELAYED,
     politeness.EMPHATIC_DO,
     politeness.YOU_IMPERATIVE,
     lead_ins.COMMA_AFTER_POLITENESS,

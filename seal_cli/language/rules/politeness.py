@@ -7,9 +7,12 @@ from seal_cli.language.english import (
     ASKED_AGAIN,
     END_MARKS,
     GREETINGS,
+    NP_OPENERS,
     NUMBER_MEANS,
     POLITE,
     QUESTION_MEANS,
+    RELAYED_OBLIGATION,
+    RELAYING,
     SUBJECTS,
     TAG_QUESTIONS,
     WHERE_MEANS,
@@ -133,6 +136,43 @@ def _addressed(s: State, i: int) -> Match | None:
     return None
 
 
+_RELAY_SUBJECT_WORDS = 3
+_RELAYING_PRONOUNS = frozenset(["he", "she", "they", "we", "i"])
+
+
+def _relayed(s: State, i: int) -> Match | None:
+    """"mummy says you have to turn off the telly", "Anna asked you to bring her a towel", "dad says you should bring
+    him his glasses": a subject, a verb passing a request on (``RELAYING``), maybe "that", then "you" and what obliges
+    (``RELAYED_OBLIGATION``) before a verb: the request is the command (it was read as Tell, "say"/"ask" with the
+    clause as its message, or as an unknown verb "mummy"); the subject and its verb are a remark, which a pronoun
+    of the command may take up ("bring *him* his glasses": dad)."""
+    words = s.words
+    if not all(w.tag == Tag.POLITE for w in s.out):
+        return None
+    low = words[i].lower
+    if low in _RELAYING_PRONOUNS:
+        j = i + 1
+    else:
+        k = i + (low in NP_OPENERS)
+        j = k
+        while j < len(words) and j - k < _RELAY_SUBJECT_WORDS and words[j].lower.isalpha() and \
+                words[j].lower not in CLOSED and not _said(s, j, RELAYING) and s.verb_at(j) is None:
+            j += 1
+        if j == k:
+            return None
+    n = _said(s, j, RELAYING)
+    if not n:
+        return None
+    k = j + n + (j + n < len(words) and words[j + n].lower == "that")
+    if k >= len(words) or words[k].lower != "you":
+        return None
+    m = _said(s, k + 1, RELAYED_OBLIGATION)
+    if not m or not s.verb_after(k + 1 + m):
+        return None
+    end = k + 1 + m
+    return Match(end - i, (merge(words, i, end - i, Tag.POLITE),), remarks=((words[i].start, words[j + n - 1].end),))
+
+
 def _like_filler(s: State, i: int) -> Match | None:
     words = s.words
     if s.out and s.out[-1].tag == Tag.POLITE and i + 1 < len(words) and \
@@ -206,6 +246,11 @@ ADDRESSED = Rule("one addressed in lower case", _addressed, (
     Example("yo, grab me a coke", "yo ,", Tag.POLITE),
     Example("dude just shut the door", "dude", Tag.POLITE),
 ), None, "a word that names no thing and is no verb (or a person), before a comma and the command: whom is addressed")
+RELAYED = Rule("a request passed on", _relayed, (
+    Example("granny says you have to shut the window", "granny says you have to", Tag.POLITE),
+    Example("Omar asked you to fetch him a towel", "Omar asked you to", Tag.POLITE),
+    Example("my brother wants you to open the garage", "my brother wants you to", Tag.POLITE),
+), None, "'X says you have to V', 'X asked you to V': the request passed on is the command, X's words a remark")
 LIKE_FILLER = Rule("like as a filler", _like_filler, (
     Example("could you like pass me the salt", "like", ""),
 ), frozenset(["like"]), "'like' after politeness and before the verb: a filler")
