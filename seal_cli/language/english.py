@@ -144,7 +144,8 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                     "your task is to", "your job is to", "the task is to", "your next task is to",
                     "i would like for you to", "i'd like for you to", "i want for you to", "i'll need you to",
                     "i will need you to", "we need you to", "we'll need you to", "wanna", "do you wanna",
-                    "you wanna", "why don't you", "why not"]))
+                    "you wanna", "why don't you", "why not", "is possible to", "is possible for you to",
+                    "hurry", "hurry up"]))
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
     "when you have a moment", "when you have a minute", "when you have a second", "when you have time",
@@ -337,7 +338,8 @@ REQUESTS = frozenset(["i'd like", "i would like", "i should like", "i'd love", "
                       "i'm going to need", "we're going to need", "i could use", "i could really use", "we could use",
                       "we could really use", "i could do with", "i could really do with", "we could do with",
                       "i could just do with", "i'd really like", "i would really like", "i'd quite like",
-                      "i'd really love", "i really need", "i just need",
+                      "i'd really love", "i really need", "i just need", "need", "i am wanting", "i'm wanting",
+                      "i am needing", "i'm needing", "we are needing", "we're needing",
                       *(f"{modal} i {bother} you for" for modal in ("could", "can", "may", "might")
                         for bother in ("trouble", "bother"))])
 """A request for a thing said as the speaker's wish ("*I'd like* the red mug", "*Can I have* the big plate",

@@ -2186,3 +2186,23 @@ def test_a_bare_word_that_wants_is_a_person_and_a_statement_alone_says_so(librar
         with pytest.raises(CommandError) as refused:
             parse_command(text, library)
         assert "is a statement, no command" in refused.value.message and "unknown verb" not in refused.value.message
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("is possible to close the curtains?", [("Close", {"theme": "curtain"})]),
+    ("need my glasses asap", [("Bring", {"theme": "glass", "recipient": "me"})]),
+    ("I am wanting the blue mug", [("Bring", {"theme": "mug", "recipient": "me"})]),
+    ("hurry, the milk is boiling over, switch off the hob", [("ToggleOff", {"theme": "hob"})]),
+    ("is that my scarf on the chair?", [("Find", {"theme": "scarf", "ground": "chair"})]),
+    ("help me to find my purse", [("Find", {"theme": "purse"})]),                   # politeness: as before
+])
+def test_learners_and_hurried_wording(text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+def test_help_with_no_verb_after_it_is_the_verb_the_robot_lacks(library: Library) -> None:
+    """"help me to the bathroom" was "unknown verb 'the'" ("help me to" read as politeness before a verb); the
+    library has no frame of helping, so the message names "help" and what the robot can do instead."""
+    with pytest.raises(CommandError) as refused:
+        parse_command("help me to the kitchen", library)
+    assert "unknown verb 'help'" in refused.value.message and "the robot can" in refused.value.message

@@ -114,6 +114,7 @@ INSIDE: tuple[Rule, ...] = (
     requests.KNOW_AFTER_LET,
     requests.STATE_ASKED,
     requests.WHETHER_BE,
+    requests.POINTING_ASKED,
     requests.REMAINING,
     requests.STRANDED_WHERE,
     requests.PERSON_STATE_DROPPED,

@@ -73,6 +73,8 @@ def _adverb_comma(s: State, i: int) -> Match | None:
 def _politeness(s: State, i: int) -> Match | None:
     words, low = s.words, s.words[i].lower
     n = match_phrase(words, i, POLITE)
+    if n > 1 and words[i + n - 1].lower == "to" and not s.verb_after(i + n):
+        return None                                   # "help me to the bathroom": "help" is the verb said (words27)
     if n and not (n == 1 and low in ("and", "then") and not s.out and not s.verb_after(i + 1)) and (
             low in ("to", "and", "then") or s.verb_after(i + n) or i + n >= len(words) or not s.verb_at(i)):
         return Match(n, (merge(words, i, n, Tag.POLITE),))
