@@ -19,7 +19,7 @@ from seal_cli.language.english import (
 )
 from seal_cli.language.morphology import in_verb_tables, is_adverb, noun_lemma, parts_of_speech, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import CLOSED, FORMULA_FIRST, State, match_phrase, merge
+from seal_cli.language.state import CLOSED, FORMULA_FIRST, State, longest_phrase, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import capitalised
 
@@ -118,7 +118,7 @@ def _addressable(s: State, k: int) -> bool:
 
 def _addressed(s: State, i: int) -> Match | None:
     words = s.words
-    if not all(w.tag == Tag.POLITE for w in s.out):
+    if s.verb_at(i) is not None or not all(w.tag == Tag.POLITE for w in s.out):
         return None                                   # only before the command
     greeted = bool(s.out) and s.out[-1].lower.split()[-1] in GREETINGS
     n = 0
@@ -149,8 +149,9 @@ def _relayed(s: State, i: int) -> Match | None:
     clause as its message, or as an unknown verb "mummy"); the subject and its verb are a remark, which a pronoun
     of the command may take up ("bring *him* his glasses": dad)."""
     words = s.words
-    if not all(w.tag == Tag.POLITE for w in s.out):
-        return None
+    if not any(w.lower == "you" for w in words[i + 1:i + _RELAY_SUBJECT_WORDS + 5]) or \
+            not all(w.tag == Tag.POLITE for w in s.out):
+        return None                                   # no "you" near (the common case)
     low = words[i].lower
     if low in _RELAYING_PRONOUNS:
         j = i + 1
@@ -158,17 +159,17 @@ def _relayed(s: State, i: int) -> Match | None:
         k = i + (low in NP_OPENERS)
         j = k
         while j < len(words) and j - k < _RELAY_SUBJECT_WORDS and words[j].lower.isalpha() and \
-                words[j].lower not in CLOSED and not _said(s, j, RELAYING) and s.verb_at(j) is None:
+                words[j].lower not in CLOSED and not longest_phrase(words, j, RELAYING) and s.verb_at(j) is None:
             j += 1
         if j == k:
             return None
-    n = _said(s, j, RELAYING)
+    n = longest_phrase(words, j, RELAYING)
     if not n:
         return None
     k = j + n + (j + n < len(words) and words[j + n].lower == "that")
     if k >= len(words) or words[k].lower != "you":
         return None
-    m = _said(s, k + 1, RELAYED_OBLIGATION)
+    m = longest_phrase(words, k + 1, RELAYED_OBLIGATION)
     if not m or not s.verb_after(k + 1 + m):
         return None
     end = k + 1 + m

@@ -94,7 +94,7 @@ def _np_words(s: State, a: int, b: int) -> tuple[Word, ...]:
 
 def _telegraphic(s: State, i: int) -> Match | None:
     words = s.words
-    if any(t.tag != Tag.POLITE for t in s.out) or REQUEST_MEANS not in s.lexicon.units or \
+    if s.verb_at(i) is not None or any(t.tag != Tag.POLITE for t in s.out) or REQUEST_MEANS not in s.lexicon.units or \
             PATH_MEANS not in s.lexicon.units:
         return None
     segments = _segments(s, i)
