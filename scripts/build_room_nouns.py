@@ -3,17 +3,17 @@
 room, a hallway, a floor, a garage, a porch, a garden), from WordNet 3.0's noun hierarchy, one a line
 (read by ``seal_cli/language/premises.py``).
 
-A command said as a bare phrase ("kitchen, now", "bathroom, quick") asks the robot to go there when the phrase
-names such a place, and asks for the thing otherwise ("towel. bathroom. quick", "keys, now": bring it; words27).
-The category ``room`` of ``types.yaml`` is open (a map names its rooms), so it cannot say which words are
-places; this list is closed, and no category of the library (it adds no class the taxonomy would then know). A noun is written when it is one word of letters, written in lower case, and either
-its first sense (WordNet orders senses by how often they were tagged; at least one was) or, for a noun never
-tagged, every sense of it is a hyponym of one of :data:`PREMISES` — area.n.05 ("kitchen", "bedroom", "patio":
-rooms are areas of a structure), corridor.n.01 ("hallway", "hall"), building.n.01 ("garage", "shed"), floor.n.02
-("attic", "cellar"), porch.n.01 or garden.n.01. The first sense decides for tagged nouns: "study" (first a
-piece of research) and "lounge" (first a sofa) stay out, "kitchen" and "hall" (first a hallway) are in. The data
-itself (WordNet's files) is read only here, never by the parser. ``--check`` exits 1 when the shipped file
-differs.
+A command said as a bare phrase ("kitchen, now", "bathroom, quick") asks the robot to go there when the phrase names
+such a place, and asks for the thing otherwise ("towel. bathroom. quick", "keys, now": bring it; words27). The
+category ``room`` of ``types.yaml`` is open (a map names its rooms), so it cannot say which words are places; this
+list is closed, and no category of the library (it adds no class the taxonomy would then know). A noun is written
+when it is one word of letters, written in lower case, and either its first sense (WordNet orders senses by how
+often they were tagged; at least one was) or, for a noun never tagged, every sense of it is a hyponym of one of
+:data:`PREMISES` — area.n.05 ("kitchen", "bedroom", "patio": rooms are areas of a structure), corridor.n.01
+("hallway", "hall"), building.n.01 ("garage", "shed"), floor.n.02 ("attic", "cellar"), porch.n.01 or garden.n.01.
+The first sense decides for tagged nouns: "study" (first a piece of research) and "lounge" (first a sofa) stay out,
+"kitchen" and "hall" (first a hallway) are in. The data itself (WordNet's files) is read only here, never by the
+parser. ``--check`` exits 1 when the shipped file differs.
 
     python scripts/build_room_nouns.py --wordnet /usr/share/wordnet [--check]
 """

@@ -29,7 +29,7 @@ from seal_cli.language.english import (
 from seal_cli.language.morphology import noun_lemma, verb_lemma
 from seal_cli.language.premises import is_premises
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import State, longest_phrase, match_phrase
+from seal_cli.language.state import State, match_phrase
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word
 
@@ -101,7 +101,7 @@ def _telegraphic(s: State, i: int) -> Match | None:
     if not segments or len(segments) < 2:
         return None                                  # one phrase alone: "the remote please" is another rule's
     kinds = [_kind(s, a, b) for a, b in segments]
-    if kinds[0] != "np" or "other" in kinds[:1]:
+    if kinds[0] != "np":
         return None
     first_a, first_b = segments[0]
     lemma = noun_lemma(words[first_b - 1].lower) or words[first_b - 1].lower
@@ -120,7 +120,7 @@ def _telegraphic(s: State, i: int) -> Match | None:
                *_np_words(s, first_a, first_b)]
         verb = REQUEST_MEANS
     path_said = False
-    for (a, b), kind in zip(segments[1:], kinds[1:]):
+    for (a, b), kind in zip(segments[1:], kinds[1:], strict=True):
         if kind == "path" and not path_said and verb == REQUEST_MEANS:
             n = match_phrase(words, a, PREPOSITIONS)
             out += [words[a].tagged(Tag.PREP, PREPOSITIONS[" ".join(w.lower for w in words[a:a + n])]),
