@@ -16,6 +16,7 @@ from seal_cli.language.english import (
     MODALS,
     NOT_FORGOTTEN,
     PROHIBITIVES,
+    SUBJECTS,
 )
 from seal_cli.language.morphology import verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
@@ -39,6 +40,8 @@ def _negation(s: State, i: int) -> int:
     n = longest_phrase(words, i, PROHIBITIVES)
     if n:
         nxt = words[i + n].lower if i + n < len(words) else ""
+        if nxt in SUBJECTS or nxt == "you":
+            return 0                             # "don't we have any bulbs?", "don't you see it?": a question
         return 0 if verb_lemma(nxt) in NOT_FORGOTTEN or nxt in NOT_FORGOTTEN else n   # "don't forget to ..."
     if words[i].lower == "not" and len(s.out) and s.out[-1].tag == Tag.POLITE and \
             s.out[-1].lower.split()[:1] and s.out[-1].lower.split()[0] in MODALS and \

@@ -26,7 +26,7 @@ from seal_cli.language.english import (
     URGENT,
     WH_WORDS,
 )
-from seal_cli.language.morphology import noun_lemma, verb_lemma
+from seal_cli.language.morphology import is_adverb, noun_lemma, parts_of_speech, verb_lemma
 from seal_cli.language.premises import is_premises
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import State, match_phrase
@@ -79,11 +79,18 @@ def _kind(s: State, a: int, b: int) -> str:
 
 
 def _np(s: State, a: int, b: int) -> bool:
+    """Whether words ``a`` to ``b`` are a bare noun phrase: maybe a determiner or possessive, then up to four words of
+    letters, no adverb ("Sadly, the door" asks nothing), the last a noun (lemminflect lists it as one, or the
+    taxonomy knows it)."""
     words = s.words
     k = a + (words[a].lower in DETERMINERS or words[a].lower in POSSESSIVES)
-    return 0 < b - k <= _PHRASE_WORDS and all(w.lower.isalpha() and w.lower not in DETERMINERS and
-                                               w.lower not in PREPOSITIONS and w.lower not in URGENT
-                                               for w in words[k:b])
+    if not 0 < b - k <= _PHRASE_WORDS or not all(
+            w.lower.isalpha() and w.lower not in DETERMINERS and w.lower not in PREPOSITIONS and
+            w.lower not in URGENT and not is_adverb(w.lower) for w in words[k:b]):
+        return False
+    head = words[b - 1].lower
+    return "noun" in parts_of_speech(head) or head in s.lexicon.things or \
+        (noun_lemma(head) or head) in s.lexicon.things
 
 
 def _np_words(s: State, a: int, b: int) -> tuple[Word, ...]:
