@@ -144,7 +144,8 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                     "your task is to", "your job is to", "the task is to", "your next task is to",
                     "i would like for you to", "i'd like for you to", "i want for you to", "i'll need you to",
                     "i will need you to", "we need you to", "we'll need you to", "wanna", "do you wanna",
-                    "you wanna"]))
+                    "you wanna", "why don't you", "why not", "is possible to", "is possible for you to",
+                    "hurry", "hurry up"]))
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
     "when you have a moment", "when you have a minute", "when you have a second", "when you have time",
@@ -302,10 +303,12 @@ WHERE_QUESTIONS = asked_negatively(frozenset([
     "where is", "where are", "where 's", "where's", "where're", "where did", "where has", "where have", "where had",
     "is there", "are there", "is there any", "are there any", "do we have", "do we have any", "have we got",
     "have we got any", "do we still have", "do we still have any", "whereabouts is", "whereabouts are",
-    "whereabouts 's", "whereabouts's"]))
+    "whereabouts 's", "whereabouts's", "where stays", "where stay", "where sits", "where sit", "where lies",
+    "where lie", "where stands", "where stand", "where hangs", "where hang"]))
 """Questions about where a thing is, or whether there is one ("*where is* the cup?", "*is there* a cup in the
 kitchen?", "*do we have any* eggs?", "*where did* the cat go?", "*where have* my keys gone?", "*whereabouts is* the
-remote?": "whereabouts" asking where, as only before "is"/"are"): they mean "find ..."
+remote?": "whereabouts" asking where, as only before "is"/"are"; a learner's verb of position said for "is",
+"*where stays* the remote?", "where sits my bag?", words27): they mean "find ..."
 (``WHERE_MEANS``); an auxiliary before a subject pronoun is ``WHERE_DID``'s ("where did *I* leave ...")."""
 WHERE_MEANS = "find"
 WHERE_DID = (frozenset(["where", "whereabouts"]),
@@ -335,7 +338,8 @@ REQUESTS = frozenset(["i'd like", "i would like", "i should like", "i'd love", "
                       "i'm going to need", "we're going to need", "i could use", "i could really use", "we could use",
                       "we could really use", "i could do with", "i could really do with", "we could do with",
                       "i could just do with", "i'd really like", "i would really like", "i'd quite like",
-                      "i'd really love", "i really need", "i just need",
+                      "i'd really love", "i really need", "i just need", "need", "i am wanting", "i'm wanting",
+                      "i am needing", "i'm needing", "we are needing", "we're needing",
                       *(f"{modal} i {bother} you for" for modal in ("could", "can", "may", "might")
                         for bother in ("trouble", "bother"))])
 """A request for a thing said as the speaker's wish ("*I'd like* the red mug", "*Can I have* the big plate",
@@ -462,3 +466,34 @@ VERB_TAKES = (NP_OPENERS | PRONOUNS | PARTICLES | END_MARKS | frozenset(["please
 PARTS = frozenset(["lid", "door", "handle", "seat", "tank", "cover", "basin"])
 """The portions that are parts a thing is made with ("the fridge *door*", "a spoon with a blue *handle*"):
 a thing said "with" one is described, not given contents."""
+PROHIBITIVES = frozenset(["don't", "dont", "do not", "never", "please don't", "please do not", "please never"])
+"""What opens an imperative said negatively, a prohibition ("*don't* open the window", "*do not* go in the
+bedroom", "*never* leave the door open"): the robot is asked not to do something, which is no frame of the
+library. "don't forget to" is a reminder, a request to do it (``POLITE``)."""
+NOT_FORGOTTEN = frozenset(["forget", "fail"])
+""""don't *forget* ...", "don't *fail* to ...": a negated verb of omission asks for the deed (no prohibition)."""
+CANCELLATIONS = frozenset(["never mind", "nevermind", "forget about", "don't bother with", "don't bother about",
+                           "no need to", "there's no need to", "you don't need to", "you needn't"])
+"""What takes back something asked or expected ("*never mind* the lamp, turn on the fan", "*no need to* wash it"):
+the clause they open asks nothing."""
+CORRECTION_MARKS = frozenset(["no", "no wait", "wait", "no sorry", "sorry", "i mean", "sorry i mean",
+                              "no i mean", "i meant", "sorry i meant", "or rather", "rather", "actually",
+                              "no actually", "oops", "whoops", "correction", "make that", "no make that",
+                              "scratch that"])
+"""Words that correct the phrase just said ("bring the cup, *no*, the mug", "open the window, *sorry, I mean*
+the door", "give Sam the book, *or rather* the magazine"); commas may come between them. The phrase after them
+stands for the last phrase said before them."""
+GREETINGS = frozenset(["hey", "hi", "hello", "ok", "okay", "yo", "oi", "oy", "hiya", "heya", "howdy"])
+"""Words that greet or call someone ("*hey* Siri, ...", "*ok* robot ..."): a word after one of them, before the
+command, is the name of whom is addressed, whatever else it may mean ("hey *google*, turn on the lights")."""
+URGENT = frozenset(["now", "right now", "quick", "quickly", "asap", "fast", "hurry", "immediately", "right away",
+                    "pronto", "please", "pls", "thanks", "thank you", "straight away", "at once"])
+"""Words that ask for haste or say please, said as a phrase of their own in a command of bare phrases ("keys. hallway.
+*now*", "bathroom, *quick*"): what is wanted is in the other phrases (``rules.telegraphic``)."""
+RELAYING = frozenset(["says", "said", "wants", "wanted", "asks", "asked", "told", "tells", "would like", "'d like"])
+"""Verbs by which a person's request is passed on to the robot ("mum *says* you have to ...", "Anna *asked* you to
+...", "dad *wants* you to ..."): the request that follows is the command; who made it is said beside it."""
+RELAYED_OBLIGATION = frozenset(["have to", "must", "should", "need to", "ought to", "'ve got to", "have got to",
+                                "are to", "to", "can", "could", "will", "may"])
+"""What comes after "you" in a request passed on ("... says you *have to* turn off the telly", "... asked you *to*
+bring her a towel"), before its verb."""

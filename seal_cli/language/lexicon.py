@@ -40,6 +40,7 @@ from seal_cli.language.english import (
     PARTS,
     POLITE,
     PREPOSITIONS,
+    RELAYING,
     SEPARATOR_WORDS,
     SUBJECTS,
     SUBORDINATORS,
@@ -521,6 +522,7 @@ def mentions(text: str, start: int, end: int) -> list[Mention]:
         first, k = k, k + 1 if determined or someone else k
         while k < len(words) and words[k].lower.replace("-", "").isalpha() and words[k].lower not in CLOSED and \
                 words[k].lower not in FINITE and words[k].lower not in SEPARATOR_WORDS and \
+                words[k].lower not in RELAYING and \
                 words[k].lower not in SUB_FIRST and words[k].lower not in _SOMEWHERE and \
                 not (gerund_lemma(words[k].lower) and not _gerund_modifier(words, k, first + int(determined))) and \
                 not (k > first + int(determined) and _present_verb(words[k].lower)):

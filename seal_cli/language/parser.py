@@ -37,7 +37,7 @@ from seal_cli.language.phrasal import phrasal_verb
 from seal_cli.language.searches import drop_found_again, merge_searches
 from seal_cli.language.slicing import infer_slice
 from seal_cli.language.stacking import infer_stack
-from seal_cli.language.state import CLOSED
+from seal_cli.language.state import CLOSED, State
 from seal_cli.language.steps import infer_left_in, infer_step
 from seal_cli.language.swallowed import Swallowed, swallowed
 from seal_cli.language.syntax import NP, Syntax
@@ -330,6 +330,14 @@ def _explain(error: Any, text: str, words: Sequence[Word], lexicon: Lexicon) -> 
     wants_verb = "VERB" in (error.expected or ())
     if wants_verb and not at_end and token.type not in ("END", "SEP"):
         word = str(token).split()[0].lower()
+        if _prohibits(words, token.start_pos):
+            return CommandError(f"{_said_from(text, words, token.start_pos)!r} asks the robot not to do something: "
+                                f"no frame of the library does that; say what it should do (it can "
+                                f"{_either(list(lexicon.can))})", column, text, ["a verb"])
+        if _states(lexicon, text, words[token.start_pos].start):
+            return CommandError(f"{_said_from(text, words, token.start_pos)!r} is a statement, no command: "
+                                f"say what the robot should do (it can "
+                                f"{_either(list(lexicon.can))})", column, text, ["a verb"])
         return CommandError(_unknown_verb(lexicon, word), column, text, ["a verb"])
     before = _word_before(words, words[token.start_pos].start if not at_end else len(text))
     after = f" after {before!r}" if before else ""
@@ -339,6 +347,28 @@ def _explain(error: Any, text: str, words: Sequence[Word], lexicon: Lexicon) -> 
         return CommandError(f"the command ends too early{after}: expected {_either(expected)}", column, text,
                             expected)
     return CommandError(f"unexpected {str(token)!r}{after}: expected {_either(expected)}", column, text, expected)
+
+
+def _prohibits(words: Sequence[Word], k: int) -> bool:
+    """Whether a prohibition opens at word ``k`` ("*don't* open the window", "*do not* go", "can you *not* slam
+    the door", :mod:`seal_cli.language.rules.negatives`), said with no command beside it."""
+    first = words[k].lower.split()
+    return bool(first) and (first[0] in ("don't", "dont", "never", "not", "nevermind") or first[:2] == ["do", "not"]
+                            or first[:2] == ["no", "need"])
+
+
+def _states(lexicon: Lexicon, text: str, start: int) -> bool:
+    """Whether a statement opens at character ``start`` of ``text`` ("*rose wants to go to bed*", "*the door is
+    open*": a subject and a finite verb, :meth:`State.statement_at`): no verb the robot lacks."""
+    raw = tokenize(text)
+    k = next((j for j, w in enumerate(raw) if w.start == start), None)
+    return k is not None and State(lexicon, raw, text).statement_at(k) > 0
+
+
+def _said_from(text: str, words: Sequence[Word], k: int) -> str:
+    """The words of the clause from word ``k`` to the end of its sentence, as said."""
+    end = next((w.start for w in words[k + 1:] if w.lower in (".", "!", "?", ";")), len(text))
+    return text[words[k].start:end].strip()
 
 
 def _word_before(words: Sequence[Word], position: int) -> str | None:

@@ -49,6 +49,10 @@ _SPEAKERS = frozenset(["me", "us", "myself", "ourselves"])
 """The speaker said as an object: a pronoun of the third person ("them", "him") never stands for them."""
 
 
+_WANTING = frozenset(["wants", "wanted", "would", "'d"])
+"""What a subject that wishes says next ("grace *wants* a drink", "grandpa *would* like his tea"): a person."""
+
+
 class Reference:
     """Reference in one command: asked of the frames built so far (a list the builder appends to)."""
 
@@ -164,9 +168,11 @@ class Reference:
         if person and not said and self.types.is_person(frame.element(role).type):
             said = [m for m in self._mentions if m.end <= np.start and not m.oblique and not m.name and
                     " " not in self.text[m.start:m.end].strip() and
-                    self.types.is_a(noun_lemma(m.head), "person") is None and self.path_end_said(m) is not None]
+                    self.types.is_a(noun_lemma(m.head), "person") is None and
+                    (self.path_end_said(m) is not None or self.wanting_said(m))]
             # "lily has to get to the garage, lead her there": a word the taxonomy does not know, said bare as the
-            # subject of a statement that has it go somewhere, is the one a person's frame leads (words25)
+            # subject of a statement that has it go somewhere, is the one a person's frame leads (words25), and so
+            # is the subject of "wants" ("grace wants a drink, bring her some water": a thing wants nothing, words27)
         if not person:
             type_ = frame.element(role).type
             fitting = [m for m in said if noun_lemma(m.head) == type_ or not self.types.is_open(type_)
@@ -256,6 +262,13 @@ class Reference:
                     self.types.is_a(noun_lemma(m.head), "person") is not True:
                 return m
         return None
+
+    def wanting_said(self, said: Mention) -> bool:
+        """Whether a statement says that ``said`` wants something ("grace *wants* a drink", "rose *wanted* to go
+        to bed"): only a person wants (a thing may need, "the trousers need washing", but wishes nothing)."""
+        span = next(((a, b) for a, b in self.remarks if a <= said.start < b), None)
+        after = self.text[said.end:span[1]].split()[:1] if span is not None else []
+        return bool(after) and after[0].lower() in _WANTING
 
     def path_end_said(self, said: Mention) -> Mention | None:
         """Where the statement that introduced ``said`` has them go ("Jules has to get from the bookshelf *to the

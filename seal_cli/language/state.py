@@ -427,8 +427,10 @@ class State:
         if first.isalpha() and not capitalised(words[i]) and first not in CLOSED and first not in self.lexicon.units \
                 and not first.endswith("ever") \
                 and (nxt in _BE_STATED or nxt == "'s" and not self.possessed_at(i + 2, end) or
-                     nxt in _NEEDING and i + 2 < end and words[i + 2].lower == "to"):
-            return end          # "dinner's ready", "lunch is served" (not "whatever's"); "lily has to go" (words25)
+                     nxt in _NEEDING and i + 2 < end and (words[i + 2].lower == "to" or
+                                                          nxt != "has" and words[i + 2].lower in NP_OPENERS)):
+            return end          # "dinner's ready", "lunch is served" (not "whatever's"); "lily has to go" (words25);
+            # "grace wants a drink", "dad needs his glasses": a need of a thing stated (words27)
         if not capitalised(words[i]) and lower_case_name(words, i):
             return end                                        # "noah has to get to the garage": a name (words24)
         if verb_lemma(first) == first and first not in SUBJECTS:

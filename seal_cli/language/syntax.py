@@ -263,7 +263,8 @@ class Syntax(Transformer[Token, Command]):
         said = w.lower.split()         # "one of them": the pronoun is "them" (its quantifier, the word's info);
         low = said[-1] if said[-1] in PRONOUNS else said[0]     # "them both": "them"
         pron_kind = "person" if low in PERSON_PRONOUNS else "thing" if low in (
-            "it", "this", "that", "something", "everything", "anything", "nothing", "itself") else "pronoun"
+            "it", "this", "that", "these", "those", "something", "everything", "anything", "nothing", "itself") \
+            else "pronoun"      # "take *these* to the kitchen": pointing at things (people are "them", "these people")
         return NP(w.start, w.end, w, pron_kind, pronoun=low, plural=low in ("them", "they", "ones", "these",
                                                                             "those") and w.info != "one")
 

@@ -167,9 +167,9 @@ def test_our_sets_of_peoples_wording_score(path: Path, library: Library) -> None
     right = sum(scorer.score_one(parse, scorer.expected_frames(item))[0]
                 for item, parse in zip(items, parse_lines([it["text"] for it in items], library), strict=True)
                 if "error" not in parse)
-    # fragments: verbless, unknown verbs (docs/language.md); people16, the newest set, scored 0.816 after its round
-    # (words26: 0.631 untuned) and is held at 0.80 until a round lifts it to the others' 0.85
-    least = 0.80 if "fragments" in path.name or path.name == "wording_people16.jsonl" else 0.85
+    # fragments: verbless, unknown verbs (docs/language.md); people16 scored 0.816 after words26 and 0.893 after
+    # words27, people17 0.726 untuned and 0.943 after words27: both held at the others' 0.85
+    least = 0.80 if "fragments" in path.name else 0.85
     assert right / len(items) >= least           # measured: 1.000, 0.900, 0.933, 1.000; 0.938, 0.935, 0.986; 0.822
 
 
@@ -2079,3 +2079,130 @@ def test_statements_before_the_command_and_a_bare_thing_said_first(library: Libr
 def test_to_before_an_ing_form_still_starts_a_clause(library: Library) -> None:
     pick, turn_on = frames("pick up the mug prior to turning on the lamp", library)
     assert (pick[0], turn_on) == ("Pick", ("ToggleOn", {"theme": "lamp"}))
+
+
+# -- words27 ---------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("don't shut the door, open it", [("Open", {"theme": "door"})]),
+    ("please do not go into the garage. wait by the car", [("Wait", {"ground": "car"})]),
+    ("never mind the kettle, switch on the radio", [("ToggleOn", {"theme": "radio"})]),
+    ("don't bother with the bins, just wipe the counter", [("Clean", {"theme": "counter"})]),
+    ("could you not bang the door, just shut it", [("Close", {"theme": "door"})]),
+    ("take the plate to the sink but don't wash it", [("Bring", {"theme": "plate", "goal": "sink"})]),
+    ("switch off the heater, and never turn it on again", [("ToggleOff", {"theme": "heater"})]),
+    ("switch off the radio, but don't touch the lamp", [("ToggleOff", {"theme": "radio"})]),
+    ("don't forget to switch off the oven", [("ToggleOff", {"theme": "oven"})]),      # a reminder: as before
+    ("can you not find the scissors?", [("Find", {"theme": "scissors"})]),           # a question: as before
+    ("why don't you open the window?", [("Open", {"theme": "window"})]),             # a suggestion asks for it
+])
+def test_a_prohibition_beside_the_command_asks_nothing(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """A clause said negatively is no frame: never the negated verb's ("but don't wash it" was a Clean, "can you
+    not slam the door" a Close), kept as a remark."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize("text", ["don't open the window", "do not touch the oven", "can you not bang the door",
+                                  "never leave the gate open.", "please don't wake the baby"])
+def test_a_prohibition_alone_is_refused_saying_so(text: str, library: Library) -> None:
+    with pytest.raises(CommandError) as refused:
+        parse_command(text, library)
+    assert "asks the robot not to do something" in refused.value.message
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("bring the plate, no, the bowl", [("Bring", {"theme": "bowl"})]),
+    ("put it on the shelf, sorry, I mean the desk", [("Place", {"theme": "it", "goal": "desk"})]),
+    ("walk to the garage, no wait, the garden", [("Go", {"goal": "garden"})]),
+    ("give Ann the pen, or rather the pencil", [("Give", {"theme": "pencil", "recipient": "Ann"})]),
+    ("find my phone, sorry, my tablet", [("Find", {"theme": "tablet"})]),
+    ("bring me the sugar, no, not the sugar, the salt", [("Bring", {"theme": "salt", "recipient": "me"})]),
+    ("switch on the lamp, no, the reading light", [("ToggleOn", {"theme": "light"})]),
+    ("bring me a coffee, no sugar", [("Bring", {"theme": "coffee", "recipient": "me"})]),   # "no" a determiner
+])
+def test_a_phrase_corrected_as_it_is_said(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+def test_an_ordinal_before_a_number_is_part_of_the_counted_phrase(library: Library) -> None:
+    (place,) = parse_command("put the last two cups in the sink", library).frames
+    assert place.elements["theme"].text == "the last two cups" and place.elements["theme"].quantity == 2
+    (bring,) = parse_command("bring me the first three books", library).frames
+    assert bring.elements["theme"].text == "the first three books" and bring.elements["recipient"].head == "me"
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("alexa, turn off the radio", [("ToggleOff", {"theme": "radio"})]),
+    ("hey siri, where is my wallet", [("Find", {"theme": "wallet"})]),
+    ("ok google turn on the fan", [("ToggleOn", {"theme": "fan"})]),
+    ("young lady, bring me the paper", [("Bring", {"theme": "paper", "recipient": "me"})]),
+    ("yo, grab me a juice", [("Bring", {"theme": "juice", "recipient": "me"})]),
+    ("dude just shut the door", [("Close", {"theme": "door"})]),
+    ("could you like pass me the salt", [("Give", {"theme": "salt", "recipient": "me"})]),
+    ("where sits my bag?", [("Find", {"theme": "bag"})]),
+    ("towel, bring it here", [("Bring", {"theme": "towel", "goal": "here"})]),       # a thing said first: as before
+    ("i dropped my cup, can you pick it up", [("Pick", {"theme": "cup"})]),           # no one addressed
+])
+def test_one_addressed_a_filler_and_a_learners_where(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("garage, now", [("Go", {"goal": "garage"})]),
+    ("upstairs, quick", [("Go", {"goal": "upstairs"})]),
+    ("blanket. lounge. quick", [("Bring", {"theme": "blanket", "recipient": "me"})]),
+    ("boots. now. from the hall", [("Bring", {"theme": "boot", "recipient": "me", "source": "hall"})]),
+    ("tea, milk, two sugars", [("Bring", {"theme": "tea", "recipient": "me"})]),
+])
+def test_a_command_in_bare_phrases(text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+def test_the_other_bare_phrases_are_kept_as_remarks(library: Library) -> None:
+    parse = parse_command("tea, milk, two sugars", library)
+    assert parse.remarks == ("milk", "two sugars")
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("granny says you have to shut the window", [("Close", {"theme": "window"})]),
+    ("Omar asked you to fetch him a towel", [("Bring", {"theme": "towel", "recipient": "Omar"})]),
+    ("dad says you should bring him his slippers", [("Bring", {"theme": "slipper", "recipient": "dad"})]),
+    ("my brother wants you to open the garage", [("Open", {"theme": "garage"})]),
+    ("tell mum you have to go", [("Tell", {"message": "you have to go", "recipient": "mum"})]),   # as before
+])
+def test_a_request_passed_on_is_the_command(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+def test_a_bare_word_that_wants_is_a_person_and_a_statement_alone_says_so(library: Library) -> None:
+    assert frames("hope wants a blanket, bring her one from the cupboard", library)[0][1]["recipient"] == "hope"
+    assert frames("take these to the sink", library) == [("Bring", {"theme": "these", "goal": "sink"})]
+    for text in ("rose wants to go to bed", "the back door is open"):
+        with pytest.raises(CommandError) as refused:
+            parse_command(text, library)
+        assert "is a statement, no command" in refused.value.message and "unknown verb" not in refused.value.message
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("is possible to close the curtains?", [("Close", {"theme": "curtain"})]),
+    ("need my glasses asap", [("Bring", {"theme": "glass", "recipient": "me"})]),
+    ("I am wanting the blue mug", [("Bring", {"theme": "mug", "recipient": "me"})]),
+    ("hurry, the milk is boiling over, switch off the hob", [("ToggleOff", {"theme": "hob"})]),
+    ("is that my scarf on the chair?", [("Find", {"theme": "scarf", "ground": "chair"})]),
+    ("help me to find my purse", [("Find", {"theme": "purse"})]),                   # politeness: as before
+])
+def test_learners_and_hurried_wording(text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+def test_help_with_no_verb_after_it_is_the_verb_the_robot_lacks(library: Library) -> None:
+    """"help me to the bathroom" was "unknown verb 'the'" ("help me to" read as politeness before a verb); the
+    library has no frame of helping, so the message names "help" and what the robot can do instead."""
+    with pytest.raises(CommandError) as refused:
+        parse_command("help me to the kitchen", library)
+    assert "unknown verb 'help'" in refused.value.message and "the robot can" in refused.value.message

@@ -133,6 +133,23 @@ def _particle_noun(s: State, i: int) -> Match | None:
     return None
 
 
+_BEFORE_A_NUMBER = ORDINALS | frozenset(["next", "other", "remaining", "final", "same"])
+"""Words that order things and may come between a determiner and a number ("the *last* two plates", "the *other*
+three cups")."""
+
+
+def _ordinal_before_number(s: State, i: int) -> Match | None:
+    """"the *last* two plates", "my *first* three books": an ordinal between a determiner and a number, before a
+    noun, opens the counted phrase with its determiner (one noun phrase: two plates, the last of them), never a
+    phrase of its own ("the last" as the theme, "two plates" lost)."""
+    words = s.words
+    if s.prev_tag() not in (Tag.DET, Tag.POSS) or i + 2 >= len(words) or \
+            match_phrase(words, i + 1, NUMBERS) == 0 or words[i + 1].lower in ("one", "a", "an"):
+        return None
+    n = match_phrase(words, i + 1, NUMBERS)
+    return s.emit(i, 1, Tag.DET) if s.noun_follows(i + 1 + n) else None
+
+
 def _ordinal_from_an_end(s: State, i: int) -> Match | None:
     """"the *second from the bottom* shelf": an ordinal counting from an end of a row, said before the noun it counts,
     is one modifier of that noun (the phrase names a shelf, not "the second" of something taken from the bottom
@@ -327,6 +344,10 @@ ALTERNATIVES_TOLD = Rule("whether A or B told", _alternatives_told, (
 PARTICLE_NOUN = Rule("particle as a noun", _particle_noun, (
     Example("clean the back of the toilet", "back", Tag.WORD),
 ), PARTICLES, "a particle before 'of' is a noun ('the back of')")
+ORDINAL_BEFORE_NUMBER = Rule("ordinal before a number", _ordinal_before_number, (
+    Example("put the last two plates in the sink", "last", Tag.DET),
+    Example("bring me the first three cups", "first", Tag.DET),
+), _BEFORE_A_NUMBER, "'the last two plates': an ordinal between a determiner and a number, part of the phrase")
 ORDINAL_FROM_AN_END = Rule("ordinal from an end", _ordinal_from_an_end, (
     Example("put the bottle on the second from the bottom shelf", "second from the bottom", Tag.WORD),
     Example("put the book in the third from the left drawer", "third from the left", Tag.WORD),

@@ -6,15 +6,20 @@ from __future__ import annotations
 from seal_cli.language.english import (
     ASKED_AGAIN,
     END_MARKS,
+    GREETINGS,
+    NP_OPENERS,
     NUMBER_MEANS,
     POLITE,
     QUESTION_MEANS,
+    RELAYED_OBLIGATION,
+    RELAYING,
+    SUBJECTS,
     TAG_QUESTIONS,
     WHERE_MEANS,
 )
-from seal_cli.language.morphology import is_adverb, verb_lemma
+from seal_cli.language.morphology import in_verb_tables, is_adverb, noun_lemma, parts_of_speech, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import FORMULA_FIRST, State, match_phrase, merge
+from seal_cli.language.state import CLOSED, FORMULA_FIRST, State, longest_phrase, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import capitalised
 
@@ -68,6 +73,8 @@ def _adverb_comma(s: State, i: int) -> Match | None:
 def _politeness(s: State, i: int) -> Match | None:
     words, low = s.words, s.words[i].lower
     n = match_phrase(words, i, POLITE)
+    if n > 1 and words[i + n - 1].lower == "to" and not s.verb_after(i + n):
+        return None                                   # "help me to the bathroom": "help" is the verb said (words27)
     if n and not (n == 1 and low in ("and", "then") and not s.out and not s.verb_after(i + 1)) and (
             low in ("to", "and", "then") or s.verb_after(i + n) or i + n >= len(words) or not s.verb_at(i)):
         return Match(n, (merge(words, i, n, Tag.POLITE),))
@@ -93,6 +100,87 @@ def _vocative_name(s: State, i: int) -> Match | None:
     words = s.words
     if capitalised(words[i]) and i + 1 < len(words) and words[i + 1].lower == "," and s.verb_after(i + 2):
         return Match(2, (merge(words, i, 2, Tag.POLITE),))        # "Robin, bring me a cup"
+    return None
+
+
+def _addressable(s: State, k: int) -> bool:
+    """Whether the word at ``k`` may be one addressed: a lower-case word of no closed class and no verb of the
+    library, that names no thing of the taxonomy unless a person ("mum", "man"), and has no reading as a verb of
+    English unless a person ("alexa", "dude", "bro", "young"; never "towel", "water", "stop")."""
+    word = s.words[k]
+    low = word.lower
+    if not low.isalpha() or low in CLOSED or low in SUBJECTS or s.verb_at(k) is not None or is_adverb(low):
+        return False
+    person = low in s.lexicon.people or (noun_lemma(low) or low) in s.lexicon.people
+    return person or low not in s.lexicon.things and (noun_lemma(low) or low) not in s.lexicon.things and \
+        not in_verb_tables(low)
+
+
+def _addressed(s: State, i: int) -> Match | None:
+    words = s.words
+    if s.verb_at(i) is not None or not all(w.tag == Tag.POLITE for w in s.out):
+        return None                                   # only before the command
+    greeted = bool(s.out) and s.out[-1].lower.split()[-1] in GREETINGS
+    n = 0
+    while n < 2 and i + n < len(words) and (_addressable(s, i + n) or greeted and n == 0 and
+                                             words[i + n].lower.isalpha() and s.verb_at(i + n) is None and
+                                             words[i + n].lower not in CLOSED):
+        n += 1
+    if not n:
+        return None
+    k = i + n
+    if k < len(words) and words[k].lower == "," and (s.verb_after(k + 1) or s.asks_at(k + 1)) if k + 1 < len(words) \
+            else False:
+        return Match(n + 1, (merge(words, i, n + 1, Tag.POLITE),))   # "alexa, switch off the tv", "young man, ..."
+    if (greeted or words[i].lower in GREETINGS or not parts_of_speech(words[i].lower) - {"noun"}) and \
+            s.verb_after(i + 1):
+        return Match(1, (merge(words, i, 1, Tag.POLITE),))         # "dude just open the door", "ok google turn ..."
+    return None
+
+
+_RELAY_SUBJECT_WORDS = 3
+_RELAYING_PRONOUNS = frozenset(["he", "she", "they", "we", "i"])
+
+
+def _relayed(s: State, i: int) -> Match | None:
+    """"mummy says you have to turn off the telly", "Anna asked you to bring her a towel", "dad says you should bring
+    him his glasses": a subject, a verb passing a request on (``RELAYING``), maybe "that", then "you" and what obliges
+    (``RELAYED_OBLIGATION``) before a verb: the request is the command (it was read as Tell, "say"/"ask" with the
+    clause as its message, or as an unknown verb "mummy"); the subject and its verb are a remark, which a pronoun
+    of the command may take up ("bring *him* his glasses": dad)."""
+    words = s.words
+    if not any(w.lower == "you" for w in words[i + 1:i + _RELAY_SUBJECT_WORDS + 5]) or \
+            not all(w.tag == Tag.POLITE for w in s.out):
+        return None                                   # no "you" near (the common case)
+    low = words[i].lower
+    if low in _RELAYING_PRONOUNS:
+        j = i + 1
+    else:
+        k = i + (low in NP_OPENERS)
+        j = k
+        while j < len(words) and j - k < _RELAY_SUBJECT_WORDS and words[j].lower.isalpha() and \
+                words[j].lower not in CLOSED and not longest_phrase(words, j, RELAYING) and s.verb_at(j) is None:
+            j += 1
+        if j == k:
+            return None
+    n = longest_phrase(words, j, RELAYING)
+    if not n:
+        return None
+    k = j + n + (j + n < len(words) and words[j + n].lower == "that")
+    if k >= len(words) or words[k].lower != "you":
+        return None
+    m = longest_phrase(words, k + 1, RELAYED_OBLIGATION)
+    if not m or not s.verb_after(k + 1 + m):
+        return None
+    end = k + 1 + m
+    return Match(end - i, (merge(words, i, end - i, Tag.POLITE),), remarks=((words[i].start, words[j + n - 1].end),))
+
+
+def _like_filler(s: State, i: int) -> Match | None:
+    words = s.words
+    if s.out and s.out[-1].tag == Tag.POLITE and i + 1 < len(words) and \
+            (s.verb_after(i + 1) or words[i + 1].lower == "," and s.verb_after(i + 2)):
+        return Match(1 + (words[i + 1].lower == ","))             # "can you *like* grab my bag": a filler
     return None
 
 
@@ -154,6 +242,21 @@ YOU_IMPERATIVE = Rule("you before the verb", _you_imperative, (
 VOCATIVE_NAME = Rule("name addressed", _vocative_name, (
     Example("Robin, bring me a cup", "Robin ,", Tag.POLITE),
 ), None, "a capitalised name and a comma before the command: the robot addressed")
+ADDRESSED = Rule("one addressed in lower case", _addressed, (
+    Example("alexa, turn off the radio", "alexa ,", Tag.POLITE),
+    Example("hey siri, where is my wallet", "siri ,", Tag.POLITE),
+    Example("young lady, bring me the paper", "young lady ,", Tag.POLITE),
+    Example("yo, grab me a coke", "yo ,", Tag.POLITE),
+    Example("dude just shut the door", "dude", Tag.POLITE),
+), None, "a word that names no thing and is no verb (or a person), before a comma and the command: whom is addressed")
+RELAYED = Rule("a request passed on", _relayed, (
+    Example("granny says you have to shut the window", "granny says you have to", Tag.POLITE),
+    Example("Omar asked you to fetch him a towel", "Omar asked you to", Tag.POLITE),
+    Example("my brother wants you to open the garage", "my brother wants you to", Tag.POLITE),
+), None, "'X says you have to V', 'X asked you to V': the request passed on is the command, X's words a remark")
+LIKE_FILLER = Rule("like as a filler", _like_filler, (
+    Example("could you like pass me the salt", "like", ""),
+), frozenset(["like"]), "'like' after politeness and before the verb: a filler")
 PLEASE_INSIDE = Rule("please inside a clause", _please_inside, (
     Example("bring me, please, a glass of juice", "please", ""),
     Example("turn the heater on please, I'm shivering", "please", ""),

@@ -1641,6 +1641,21 @@ ASKED_OF_PERSON = Rule("found out by asking", _asked_of_person, (
     Example("find out if anna wants coffee", "find out", Tag.VERB),
     Example("check whether the guest is staying for dinner", "the guest is staying for dinner", Tag.SAID),
 ), first_words(CHECK_WHETHER[0]), "'find out if Anna wants coffee': ask Anna whether she wants coffee")
+def _pointing_asked(s: State, i: int) -> Match | None:
+    """"is *that* my phone on the sofa?", "is this the right key?": a demonstrative right after the "is" of a
+    question whether a thing is somewhere, before a phrase of its own, is the subject pointing at it; the phrase
+    names the thing (it was the theme "that", the phone lost)."""
+    words = s.words
+    if len(s.out) != 1 or s.out[0].tag != Tag.VERB or s.out[0].lower not in ("is", "are") or \
+            i + 1 >= len(words) or words[i + 1].lower not in NP_OPENERS:
+        return None
+    return Match(1)
+
+
+POINTING_ASKED = Rule("a demonstrative pointing at what is asked", _pointing_asked, (
+    Example("is that my hat on the chair?", "that", ""),
+    Example("are those your keys in the bowl?", "those", ""),
+), frozenset(["this", "that", "these", "those"]), "'is that my X on Y?': the demonstrative points at X, dropped")
 REMAINING = Rule("what is left", _remaining, (
     Example("is there any bread left?", "left", ""),
     Example("are there any eggs left in the fridge", "left", ""),

@@ -1,0 +1,179 @@
+"""What a person takes back: a prohibition ("don't open the window, close it"), a request cancelled ("never
+mind the lamp, ..."), and a phrase corrected as it is said ("bring the cup, no, the mug").
+
+A prohibition asks the robot not to do something, which no frame of the library does: its clause is dropped
+as a remark when another clause holds the command, and said alone it is an error that says so (never the
+frame of its verb: "can you not slam the door" is no Close). A correction says the phrase meant instead of the
+last phrase said: the earlier one is dropped and the new one read in its place.
+"""
+
+from __future__ import annotations
+
+from seal_cli.language.english import (
+    CANCELLATIONS,
+    CORRECTION_MARKS,
+    END_MARKS,
+    MODALS,
+    NOT_FORGOTTEN,
+    PROHIBITIVES,
+    SUBJECTS,
+)
+from seal_cli.language.morphology import verb_lemma
+from seal_cli.language.rule import Example, Match, Rule
+from seal_cli.language.state import State, longest_phrase, merge
+from seal_cli.language.tags import Tag
+
+_JOINS = frozenset(["and", "but", "then", "or"])
+_CLAUSE_ENDS = frozenset([",", ";", ":"]) | END_MARKS
+_NP_TAGS = frozenset([Tag.WORD, Tag.RESULT, Tag.NAME, Tag.LABEL, Tag.NUM, Tag.OF])
+_NP_OPENING = frozenset([Tag.DET, Tag.POSS])
+
+
+def _negation(s: State, i: int) -> int:
+    """How many words of a prohibition's opening start at ``i`` (0: none): "don't", "do not", "never", or a
+    cancellation ("never mind", "no need to"); "not" after a modal and "you" ("can you *not* slam the door") when
+    the sentence asks no question (no "?": "can you not find it?" asks whether the robot can find it)."""
+    words = s.words
+    n = longest_phrase(words, i, CANCELLATIONS)
+    if n:
+        return n
+    n = longest_phrase(words, i, PROHIBITIVES)
+    if n:
+        nxt = words[i + n].lower if i + n < len(words) else ""
+        if nxt in SUBJECTS or nxt == "you":
+            return 0                             # "don't we have any bulbs?", "don't you see it?": a question
+        return 0 if verb_lemma(nxt) in NOT_FORGOTTEN or nxt in NOT_FORGOTTEN else n   # "don't forget to ..."
+    if words[i].lower == "not" and len(s.out) and s.out[-1].tag == Tag.POLITE and \
+            s.out[-1].lower.split()[:1] and s.out[-1].lower.split()[0] in MODALS and \
+            s.out[-1].lower.split()[-1] == "you" and i + 1 < len(words) and \
+            _not_asked(s, i + 1):
+        return 1
+    return 0
+
+
+def _not_asked(s: State, k: int) -> bool:
+    """Whether the sentence going on at ``k`` ends without a question mark."""
+    words = s.words
+    while k < len(words) and words[k].lower not in END_MARKS:
+        k += 1
+    return k >= len(words) or words[k].lower != "?"
+
+
+def _prohibition_end(s: State, k: int) -> int:
+    """Where the clause of a prohibition starting at ``k`` ends: at a comma, a semicolon or an end mark, or
+    at "and"/"but"/"then" before a verb (the next clause)."""
+    words = s.words
+    while k < len(words):
+        low = words[k].lower
+        if low in _CLAUSE_ENDS or low in _JOINS and s.verb_after(k + 1):
+            return k
+        k += 1
+    return k
+
+
+def _command_after(s: State, k: int) -> bool:
+    """Whether a clause with a command starts at ``k``, after the prohibition's separator ("don't open the window,
+    *close it*"): a verb of the library, maybe after "but", "and", "then", "just", "instead" or politeness."""
+    words = s.words
+    while k < len(words) and (words[k].lower in _CLAUSE_ENDS or words[k].lower in _JOINS or
+                              words[k].lower in ("instead", "rather")):
+        k += 1
+    return k < len(words) and (s.verb_after(k) or s.asks_at(k))
+
+
+def _prohibited_first(s: State, i: int) -> Match | None:
+    n = _negation(s, i)
+    if not n:
+        return None
+    words = s.words
+    end = _prohibition_end(s, i + n)
+    if end <= i + n:
+        return None
+    said = any(w.tag == Tag.VERB for w in s.out)
+    if not said and not _command_after(s, end):
+        return Match(n, (merge(words, i, n, Tag.WORD),), expect=False)
+        # "can you not slam the door", "never leave the door open": refused at the negation, never a Close or an Open
+    stop = end + 1 if end < len(words) and words[end].lower in (",", ";", ":") or \
+        end < len(words) and words[end].lower in END_MARKS else end
+    return Match(stop - i, remarks=((words[i].start, words[end - 1].end),), expect=True)
+
+
+def _prohibited_after(s: State, i: int) -> Match | None:
+    """", but don't wash it", "and never leave it open": a prohibition said after the command, with its joint."""
+    words = s.words
+    k = i
+    while k < len(words) and (words[k].lower in (",", ";") or words[k].lower in _JOINS):
+        k += 1
+    if k == i or k >= len(words) or s.expect_verb:
+        return None
+    n = _negation(s, k)
+    if not n or words[k].lower == "not":
+        return None
+    end = _prohibition_end(s, k + n)
+    if end <= k + n:
+        return None
+    return Match(end - i, remarks=((words[k].start, words[end - 1].end),))
+
+
+def _corrected(s: State, i: int) -> Match | None:
+    """", no, the mug": the phrase after a correction's marks replaces the last noun phrase said."""
+    words = s.words
+    k, marks = i + 1, 0
+    while k < len(words):
+        if words[k].lower == ",":
+            k += 1
+            continue
+        n = longest_phrase(words, k, CORRECTION_MARKS)
+        if not n:
+            break
+        k, marks = k + n, marks + 1
+    if not marks or k >= len(words) or words[k - 1].lower != "," and words[k - 1].lower in ("no", "wait", "sorry"):
+        return None                              # "coffee, no sugar": "no" is its determiner
+    if words[k].lower == "not":                  # ", no, *not the salt,* the pepper": the phrase denied, said again
+        j = k + 1
+        while j < len(words) and words[j].lower not in _CLAUSE_ENDS:
+            j += 1
+        if j >= len(words) or words[j].lower != ",":
+            return None
+        k = j + 1
+    if not s.np_starts(k) or s.verb_after(k) and words[k].lower not in ("the", "a", "an", "my", "your"):
+        return None
+    end = k
+    while end < len(words) and words[end].lower not in _CLAUSE_ENDS and words[end].lower not in ("and", "then"):
+        end += 1
+    if end < len(words) and words[end].lower not in END_MARKS:
+        return None                              # only a phrase ending its sentence
+    out = s.out
+    m = len(out)
+    while m > 0 and out[m - 1].tag in _NP_TAGS:
+        m -= 1
+    if m > 0 and out[m - 1].tag in _NP_OPENING:
+        m -= 1
+    elif m == len(out) and m > 0 and out[m - 1].tag == Tag.PRON:
+        m -= 1                                   # "bring it, no, the mug"
+    if m == len(out) or m == 0 or s.verb_index >= m:
+        return None
+    return Match(k - i, last=out[m - 1], replaces=len(out) - m + 1)
+
+
+PROHIBITED_FIRST = Rule("a prohibition, then the command", _prohibited_first, (
+    Example("don't open the door, shut the window instead", "open", ""),
+    Example("please do not go in the garage. wait in the hall", "garage", ""),
+    Example("never mind the kettle, switch on the radio", "kettle", ""),
+    Example("could you not bang the door, just shut it", "bang", ""),
+    Example("can you not bang the door", "not", Tag.WORD),
+    Example("never leave the door open", "never", Tag.WORD),
+), frozenset(["don't", "dont", "do", "never", "please", "not", "nevermind", "forget", "no", "there's", "you"]),
+    "a clause said negatively before the command asks nothing: a remark; alone, an error")
+PROHIBITED_AFTER = Rule("a prohibition after the command", _prohibited_after, (
+    Example("take the plate but don't wash it", "wash", ""),
+    Example("shut the window, and never open it again", "open", ""),
+    Example("switch off the radio, but don't touch the tv", "tv", ""),
+), frozenset([",", ";", "and", "but", "then", "or"]), "', but don't V ...' after the command asks nothing: a remark")
+CORRECTED = Rule("a phrase corrected", _corrected, (
+    Example("bring the plate, no, the bowl", "plate", ""),
+    Example("put it on the shelf, sorry, I mean the desk", "shelf", ""),
+    Example("give Ann the pen, or rather the pencil", "pen", ""),
+    Example("switch on the lamp, no, the reading light", "lamp", ""),
+    Example("bring me the sugar, no, not the sugar, the salt", "sugar", ""),
+), frozenset([","]), "', no, NP' after a phrase: the new phrase stands for the last one said")
