@@ -61,8 +61,8 @@ if TYPE_CHECKING:
     from seal_cli.language.grounding import Vocabulary
 
 __all__ = ["FIELDS", "NOTHING", "SHIPPED", "TRUST", "FieldModel", "Reading", "candidates", "combine",
-           "field_classes", "fit_fields", "fit_trust", "label", "load_field_model", "read_fields", "reread", "score",
-           "sentence_grams", "shipped_field_model", "wanted"]
+           "field_classes", "fit_fields", "fit_trust", "fit_trust_count", "label", "load_field_model", "read_fields",
+           "reread", "score", "sentence_grams", "shipped_field_model", "wanted"]
 
 SHIPPED = Path(__file__).parent / "task_fields" / "alfred_train.json"
 FIELDS = ("type", "object", "receptacle", "mrecep")
@@ -371,6 +371,50 @@ def fit_trust(instances: Sequence[tuple[Mapping[str, Mapping[str, float]], str]]
     result = minimize(loss, start, jac=True, method="L-BFGS-B", options={"maxiter": 500, "gtol": 1e-6})
     return {k: round(float(w), digits) for k, w in zip(names, result.x, strict=True)
             if round(float(w), digits) != (1.0 if k.startswith("scale:") else 0.0)}
+
+
+PERCEPTRON_EPOCHS = 10
+PERCEPTRON_RATE = 0.1
+"""The passes and step of :func:`fit_trust_count`."""
+
+
+def fit_trust_count(instances: Sequence[tuple[Mapping[str, Mapping[str, float]], str]],
+                    start: Mapping[str, float] = TRUST, epochs: int = PERCEPTRON_EPOCHS,
+                    rate: float = PERCEPTRON_RATE, digits: int = 2) -> dict[str, float]:
+    """The weights of :func:`score` learned for the count of right values, not their likelihood: an averaged
+    perceptron over each instance's :func:`candidates` (whenever the highest-scored value is not the right one, the
+    weights move ``rate`` times the right value's features minus the chosen one's), from ``start`` (``scale:*`` 1
+    unless given), ``epochs`` passes in one fixed shuffled order; the average of the weights after every instance is
+    returned (the values that differ from the unlearned combination's). An instance whose right value is no
+    candidate, or with one candidate, teaches nothing. Deterministic."""
+    import random
+
+    usable = [(c, g) for c, g in instances if g in c and len(c) >= 2]
+    names = sorted({k for c, _ in usable for x in c.values() for k in x} | set(start))
+    if not usable:
+        return {}
+
+    def unlearned(k: str) -> float:
+        return 1.0 if k.startswith("scale:") else 0.0
+
+    w = {k: float(start.get(k, unlearned(k))) for k in names}
+    total = dict.fromkeys(names, 0.0)
+    order = list(range(len(usable)))
+    random.Random(0).shuffle(order)
+    steps = 0
+    for _ in range(epochs):
+        for i in order:
+            options, gold = usable[i]
+            chosen = max(sorted(options), key=lambda v: score(w, options[v]))
+            if chosen != gold:
+                for k, x in options[gold].items():
+                    w[k] += rate * x
+                for k, x in options[chosen].items():
+                    w[k] -= rate * x
+            for k in names:
+                total[k] += w[k]
+            steps += 1
+    return {k: round(total[k] / steps, digits) for k in names if round(total[k] / steps, digits) != unlearned(k)}
 
 
 def reread(parse: Parse, library: Library, vocabulary: Vocabulary, model: FieldModel, text: str) -> Parse:
