@@ -18,7 +18,9 @@ goals (the label each trial's task gives) and shipped as ``task_fields/alfred_tr
 **The combination** (:func:`combine`): each field's value is the most probable by the model once the parser's own
 reading is given :attr:`FieldModel.trust` (a log-odds bonus per field, chosen on train trials held out from the fit:
 ``build_task_fields.py --dev 0.2 --trust ...``), in order and consistently: the type first; the object (a class, never
-none); the receptacle (none for a look, else a class); the movable receptacle only for a stack. Only classes of the
+none); the receptacle (none for a look, else a class); the movable receptacle only for a stack. A stack whose
+movable receptacle would be the object's own class is no stack (no train task repeats a class across its fields): the
+parser's type stands, or else the next best. Only classes of the
 vocabulary are candidates (in a room, its classes).
 
 The bonus is one weight of a few features of each candidate value (:func:`candidates`, :func:`score`); they can be
@@ -311,19 +313,32 @@ def combine(model: FieldModel, grams: Sequence[str], reading: Reading, present: 
     present = set(present)
     trust = model.trust
     options = candidates(model, "type", grams, reading, None, present)
-    kind = _best(options, reading.type, trust, model.probabilities("type", grams))
-    out = {"type": kind[0] if kind else (reading.type or SIMPLE)}
+    p = model.probabilities("type", grams)
+    kind = _best(options, reading.type, trust, p)
+    out = _fields(model, grams, reading, present, meant, kind[0] if kind else (reading.type or SIMPLE))
+    if kind and out["type"] == STACK and out["mrecep"] == out["object"] and len(options) > 1:
+        # a stack whose container is the thing itself is no stack: the parser's type, or else the next
+        rest = {k: x for k, x in options.items() if k != STACK}
+        kind = (reading.type, p.get(reading.type, 0.0)) if reading.type in rest else _best(rest, reading.type, trust, p)
+        if kind:
+            out = _fields(model, grams, reading, present, meant, kind[0])
     chance = kind[1] if kind else 1.0
+    return out, chance
+
+
+def _fields(model: FieldModel, grams: Sequence[str], reading: Reading, present: set[str],
+            meant: Mapping[str, frozenset[str]] | None, kind: str) -> dict[str, str]:
+    """The type ``kind`` and the class fields it has, each the highest-scored of its candidates (:func:`combine`)."""
+    out = {"type": kind}
     for name in ("object", "receptacle", "mrecep"):
-        if not wanted(name, out["type"]):
+        if not wanted(name, kind):
             out[name] = NOTHING
             continue
         classes = present & meant[name] if meant and name in meant else present
         said = reading.values[name] if reading.values[name] in classes else None
-        best = _best(candidates(model, name, grams, reading, classes), said, trust, {})
+        best = _best(candidates(model, name, grams, reading, classes), said, model.trust, {})
         out[name] = best[0] if best else (said or NOTHING)
-    return out, chance
-
+    return out
 
 def wanted(name: str, kind: str) -> bool:
     """Whether a task of type ``kind`` has the field ``name`` (an object always; a receptacle unless a look; a
