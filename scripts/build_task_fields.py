@@ -149,7 +149,7 @@ def dev(args: argparse.Namespace, bwc: ModuleType, rows: list[dict[str, str]]) -
                 wrong = ",".join(f for f, good in ok.items() if not good)
                 errors.append("\t".join([wrong, row["goal_sentence"].strip(), json.dumps(got), json.dumps(want)]))
         n = max(len(parsed), 1)
-        print(f"{name:<44}" + " ".join(f"{k} {hits[k] / n:.3f}" for k in ("all", *scorer.FIELDS))
+        print(f"{name:<48}" + " ".join(f"{k} {hits[k] / n:.3f}" for k in ("all", *scorer.FIELDS))
               + f" ({n - hits['all']} wrong)", flush=True)
 
     show("parser", lambda row: None)
