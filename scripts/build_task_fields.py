@@ -13,7 +13,8 @@ the held-out sentences and prints the five fields as the scorer reads them, the 
 ``--trust`` tried (the parser's bonus, one number for every field, or ``type,object,receptacle,mrecep``): the shipped
 trust was chosen there, never on a valid split. With ``--learn`` the combination's weights are learned there too
 (``taskfields.fit_trust`` on one half of the held-out sentences, scored on the other half, and the other way
-round; then the weights learned on all of them are printed).
+round; then the weights learned on all of them are printed), by the likelihood (``taskfields.fit_trust``) and by the
+count of right values (``taskfields.fit_trust_count``).
 """
 
 from __future__ import annotations
@@ -44,6 +45,7 @@ from seal_cli.language.taskfields import (  # noqa: E402
     field_classes,
     fit_fields,
     fit_trust,
+    fit_trust_count,
     label,
     model_json,
     read_fields,
@@ -147,7 +149,7 @@ def dev(args: argparse.Namespace, bwc: ModuleType, rows: list[dict[str, str]]) -
                 wrong = ",".join(f for f, good in ok.items() if not good)
                 errors.append("\t".join([wrong, row["goal_sentence"].strip(), json.dumps(got), json.dumps(want)]))
         n = max(len(parsed), 1)
-        print(f"{name:<44}" + " ".join(f"{k} {hits[k] / n:.3f}" for k in ("all", *scorer.FIELDS))
+        print(f"{name:<48}" + " ".join(f"{k} {hits[k] / n:.3f}" for k in ("all", *scorer.FIELDS))
               + f" ({n - hits['all']} wrong)", flush=True)
 
     show("parser", lambda row: None)
@@ -164,6 +166,13 @@ def dev(args: argparse.Namespace, bwc: ModuleType, rows: list[dict[str, str]]) -
         show("reread, learned on the other half", lambda row: replace(model, trust=learned[half[id(row)]]))
         every = fit_trust([e for row, _, _ in parsed for e in examples[id(row)]])
         print("learned on all the held-out sentences (TRUST):", json.dumps(every, sort_keys=True))
+        # the same, learned for the count of right values (an averaged perceptron from the shipped combination)
+        counted = [fit_trust_count([e for row, _, _ in parsed if half[id(row)] != k for e in examples[id(row)]])
+                   for k in (0, 1)]
+        show("reread, learned for the count on the other half",
+             lambda row: replace(model, trust=counted[half[id(row)]]))
+        every = fit_trust_count([e for row, _, _ in parsed for e in examples[id(row)]])
+        print("learned for the count on all the held-out sentences (TRUST):", json.dumps(every, sort_keys=True))
     if args.errors is not None:
         args.errors.write_text("".join(line + "\n" for line in errors))
         print(f"wrote {args.errors} ({len(errors)} sentences of the first trust scored wrong)")

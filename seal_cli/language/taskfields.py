@@ -18,7 +18,9 @@ goals (the label each trial's task gives) and shipped as ``task_fields/alfred_tr
 **The combination** (:func:`combine`): each field's value is the most probable by the model once the parser's own
 reading is given :attr:`FieldModel.trust` (a log-odds bonus per field, chosen on train trials held out from the fit:
 ``build_task_fields.py --dev 0.2 --trust ...``), in order and consistently: the type first; the object (a class, never
-none); the receptacle (none for a look, else a class); the movable receptacle only for a stack. Only classes of the
+none); the receptacle (none for a look, else a class); the movable receptacle only for a stack. A stack whose
+movable receptacle would be the object's own class is no stack (no train task repeats a class across its fields): the
+parser's type stands, or else the next best. Only classes of the
 vocabulary are candidates (in a room, its classes).
 
 The bonus is one weight of a few features of each candidate value (:func:`candidates`, :func:`score`); they can be
@@ -61,8 +63,8 @@ if TYPE_CHECKING:
     from seal_cli.language.grounding import Vocabulary
 
 __all__ = ["FIELDS", "NOTHING", "SHIPPED", "TRUST", "FieldModel", "Reading", "candidates", "combine",
-           "field_classes", "fit_fields", "fit_trust", "label", "load_field_model", "read_fields", "reread", "score",
-           "sentence_grams", "shipped_field_model", "wanted"]
+           "field_classes", "fit_fields", "fit_trust", "fit_trust_count", "label", "load_field_model", "read_fields",
+           "reread", "score", "sentence_grams", "shipped_field_model", "wanted"]
 
 SHIPPED = Path(__file__).parent / "task_fields" / "alfred_train.json"
 FIELDS = ("type", "object", "receptacle", "mrecep")
@@ -311,19 +313,32 @@ def combine(model: FieldModel, grams: Sequence[str], reading: Reading, present: 
     present = set(present)
     trust = model.trust
     options = candidates(model, "type", grams, reading, None, present)
-    kind = _best(options, reading.type, trust, model.probabilities("type", grams))
-    out = {"type": kind[0] if kind else (reading.type or SIMPLE)}
+    p = model.probabilities("type", grams)
+    kind = _best(options, reading.type, trust, p)
+    out = _fields(model, grams, reading, present, meant, kind[0] if kind else (reading.type or SIMPLE))
+    if kind and out["type"] == STACK and out["mrecep"] == out["object"] and len(options) > 1:
+        # a stack whose container is the thing itself is no stack: the parser's type, or else the next
+        rest = {k: x for k, x in options.items() if k != STACK}
+        kind = (reading.type, p.get(reading.type, 0.0)) if reading.type in rest else _best(rest, reading.type, trust, p)
+        if kind:
+            out = _fields(model, grams, reading, present, meant, kind[0])
     chance = kind[1] if kind else 1.0
+    return out, chance
+
+
+def _fields(model: FieldModel, grams: Sequence[str], reading: Reading, present: set[str],
+            meant: Mapping[str, frozenset[str]] | None, kind: str) -> dict[str, str]:
+    """The type ``kind`` and the class fields it has, each the highest-scored of its candidates (:func:`combine`)."""
+    out = {"type": kind}
     for name in ("object", "receptacle", "mrecep"):
-        if not wanted(name, out["type"]):
+        if not wanted(name, kind):
             out[name] = NOTHING
             continue
         classes = present & meant[name] if meant and name in meant else present
         said = reading.values[name] if reading.values[name] in classes else None
-        best = _best(candidates(model, name, grams, reading, classes), said, trust, {})
+        best = _best(candidates(model, name, grams, reading, classes), said, model.trust, {})
         out[name] = best[0] if best else (said or NOTHING)
-    return out, chance
-
+    return out
 
 def wanted(name: str, kind: str) -> bool:
     """Whether a task of type ``kind`` has the field ``name`` (an object always; a receptacle unless a look; a
@@ -371,6 +386,50 @@ def fit_trust(instances: Sequence[tuple[Mapping[str, Mapping[str, float]], str]]
     result = minimize(loss, start, jac=True, method="L-BFGS-B", options={"maxiter": 500, "gtol": 1e-6})
     return {k: round(float(w), digits) for k, w in zip(names, result.x, strict=True)
             if round(float(w), digits) != (1.0 if k.startswith("scale:") else 0.0)}
+
+
+PERCEPTRON_EPOCHS = 10
+PERCEPTRON_RATE = 0.1
+"""The passes and step of :func:`fit_trust_count`."""
+
+
+def fit_trust_count(instances: Sequence[tuple[Mapping[str, Mapping[str, float]], str]],
+                    start: Mapping[str, float] = TRUST, epochs: int = PERCEPTRON_EPOCHS,
+                    rate: float = PERCEPTRON_RATE, digits: int = 2) -> dict[str, float]:
+    """The weights of :func:`score` learned for the count of right values, not their likelihood: an averaged
+    perceptron over each instance's :func:`candidates` (whenever the highest-scored value is not the right one, the
+    weights move ``rate`` times the right value's features minus the chosen one's), from ``start`` (``scale:*`` 1
+    unless given), ``epochs`` passes in one fixed shuffled order; the average of the weights after every instance is
+    returned (the values that differ from the unlearned combination's). An instance whose right value is no
+    candidate, or with one candidate, teaches nothing. Deterministic."""
+    import random
+
+    usable = [(c, g) for c, g in instances if g in c and len(c) >= 2]
+    names = sorted({k for c, _ in usable for x in c.values() for k in x} | set(start))
+    if not usable:
+        return {}
+
+    def unlearned(k: str) -> float:
+        return 1.0 if k.startswith("scale:") else 0.0
+
+    w = {k: float(start.get(k, unlearned(k))) for k in names}
+    total = dict.fromkeys(names, 0.0)
+    order = list(range(len(usable)))
+    random.Random(0).shuffle(order)
+    steps = 0
+    for _ in range(epochs):
+        for i in order:
+            options, gold = usable[i]
+            chosen = max(sorted(options), key=lambda v: score(w, options[v]))
+            if chosen != gold:
+                for k, x in options[gold].items():
+                    w[k] += rate * x
+                for k, x in options[chosen].items():
+                    w[k] -= rate * x
+            for k in names:
+                total[k] += w[k]
+            steps += 1
+    return {k: round(total[k] / steps, digits) for k in names if round(total[k] / steps, digits) != unlearned(k)}
 
 
 def reread(parse: Parse, library: Library, vocabulary: Vocabulary, model: FieldModel, text: str) -> Parse:
