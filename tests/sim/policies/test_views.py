@@ -98,7 +98,7 @@ def test_a_view_of_another_rule_is_weighed_on_the_same_footing_and_the_tables_gr
     reveals = [shut.get(c.open) if c.open is not None else None for c in search.candidates]
     assert grown and all(len(t.length) == n for t in grown.values())
     for origin, _ in list(grown)[:5]:
-        table = search._tables[(origin, frozenset(shut))]
+        table = search._tables[(origin, (frozenset(shut), None))]
         whole = search.lattice.drive_table(origin, search.nodes, reveals, hidden)
         assert len(table.length) == n + 1
         assert np.array_equal(table.seen_at, whole.seen_at) and np.array_equal(table.length, whole.length)
