@@ -179,6 +179,11 @@ class ObjectBeliefs:
     W: Array
     model: ObjectModel = field(default_factory=ObjectModel)
     views: Views = field(default_factory=lambda: Views(ObjectModel.view_step, None))
+    missed: Array | None = None
+    """Per row, the log-probability under the row's belief of every look since its class was last detected (or
+    since the start) having missed it: the sum of the log-normalisers of its reweightings (the model's evidence
+    for what it has not seen; 0 for a row never looked for). Read by a searcher to tell a belief its looks have
+    refuted (:attr:`seal_cli.sim.policies.sefm.SeFMPolicy.refuted`); it changes nothing in the filter."""
 
     @classmethod
     def from_prior(cls, m: Map, sources: Sequence[Source], particles: int, rng: np.random.Generator,
@@ -224,6 +229,10 @@ class ObjectBeliefs:
         L = self._likelihood(rows, contains if new_view else None, seen, hidden)
         raw = np.take(self.W, rows, axis=0) * L
         total = raw.sum(axis=1)
+        if self.missed is None or len(self.missed) != len(self.sources):
+            self.missed = np.zeros(len(self.sources))
+        self.missed[rows] += np.log(np.maximum(total, 1e-300))
+        self.missed[detected] = 0.0
         W = normalise(raw)
         low = ess(W) < self.model.resample_below * self.particles
         is_detected = np.zeros(len(self.sources), bool)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import numpy as np
 import pytest
@@ -85,3 +86,27 @@ def test_seeing_nothing_moves_mass_out_of_view_and_a_detection_pulls_it_in(apart
     close = np.linalg.norm(beliefs.X[0] - np.array([0.5, 3.5]), axis=1) < 0.6
     assert float(beliefs.W[0][close].sum()) > 0.5
     assert np.isclose(beliefs.W.sum(), 1.0)
+
+
+def test_missed_is_the_log_chance_under_the_belief_that_every_new_look_missed(apartment: Map) -> None:
+    """``missed``: each new view with nothing seen adds log(1 − p × the belief's share in view); a view used
+    already adds nothing (its misses count once); a detection of the class starts it again (search20)."""
+    rng = np.random.default_rng(2)
+    beliefs = ObjectBeliefs.from_prior(apartment, [source_for(apartment, "cup")], 400, rng)
+    p = min(beliefs.model.p_detect, beliefs.model.max_p_detect)
+
+    def region(centre: tuple[float, float]) -> Callable[[np.ndarray], np.ndarray]:
+        return lambda points: np.linalg.norm(np.asarray(points) - np.asarray(centre), axis=-1) < 2.5
+
+    expected = 0.0
+    far = beliefs.X[0][np.linalg.norm(beliefs.X[0] - (0.0, 3.0), axis=1) > 6.0][0]   # a second view, away
+    for centre in ((0.0, 3.0), (float(far[0]), float(far[1]))):
+        share = float(beliefs.W[0][region(centre)(beliefs.X[0])].sum())
+        assert share > 0.01
+        expected += math.log(1.0 - p * share)
+        beliefs.update((*centre, 0.0), region(centre), [], [], [], rng)
+        assert beliefs.missed is not None and math.isclose(beliefs.missed[0], expected, rel_tol=1e-9)
+    beliefs.update((0.1, 3.0, 0.0), region((0.1, 3.0)), [], [], [], rng)     # within view_step: not a new view
+    assert math.isclose(beliefs.missed[0], expected, rel_tol=1e-9) and expected < math.log(0.7)
+    beliefs.update((0.0, 3.0, 0.0), region((0.0, 3.0)), [("cup", (0.5, 3.5))], [], [], rng)
+    assert beliefs.missed[0] == 0.0

@@ -408,6 +408,12 @@ class SeFMPolicy(Policy):
     def next_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
         """With frames, the view that starts the shortest expected completion of the whole remaining
         plan (:meth:`plan_view`); where that has nothing to say, and for object-only, :meth:`greedy_view`."""
+        if self.use_frames and self.whole_plan and (why := self.refuted(agent, target)) is not None:
+            fallback = self.fallback.next_view(agent, binding, target)   # the sweep: complete, assumes nothing
+            if fallback is not None:
+                self._chosen = None
+                self.tried.add((fallback.cell, fallback.open))
+                return View(fallback.cell, fallback.look_at, fallback.open, f"{fallback.why} ({why})")
         if self.use_frames and self.whole_plan:
             chosen, self._chosen = self._chosen, None
             if chosen is not None and chosen[:2] == (agent.robot_cell(), target):   # on the drive, nothing seen since
@@ -420,6 +426,32 @@ class SeFMPolicy(Policy):
                 self.tried.add((decision.view.cell, decision.view.open))
                 return decision.view
         return self.greedy_view(agent, binding, target)
+
+    refute_below = 1e-3
+    """The probability, under SeFM's belief of the thing sought, of all its looks so far having missed it, below
+    which the whole-plan search hands the search for it to the frontier sweep (:meth:`refuted`). Set before
+    measuring, not tuned: a calibrated belief is this unlucky once in a thousand searches."""
+
+    def refuted(self, agent: Agent, target: str) -> str | None:
+        """Why SeFM's belief of the thing sought is refuted by its own looks (None: it is not): the probability
+        under that belief of every look since the thing's class was last seen having missed it
+        (:attr:`~seal_cli.sefm.object_beliefs.ObjectBeliefs.missed`, the filter's evidence) is below
+        :attr:`refute_below`. The belief then says where the thing is not, wrongly — it lies where the looks
+        were taken to see and did not (a sliver behind a bed's corner the sensor's fan of rays counts as seen), or
+        where the prior says next to nothing — and choosing views by it went round the same rooms for 200 m on
+        the held-out ranch (docs/benchmarks.md, "This round (search20)"); the sweep looks at every square not yet
+        seen, nearest first, and assumes nothing. Only on maps of :attr:`min_rooms` rooms or more, where the
+        whole-plan search runs."""
+        if self.sefm is None or len(self.map.rooms) < self.min_rooms:
+            return None
+        missed = self.sefm.objects.missed
+        cls = agent.class_of(target)
+        if missed is None or cls not in self.sefm.object_classes:
+            return None
+        p = float(np.exp(missed[self.sefm.objects.row(cls)]))
+        if p >= self.refute_below:
+            return None
+        return f"the belief of {cls} is refuted: its looks all missed it, a chance of {p:.1e} by it"
 
     rethink_m = 1.0
     """Metres of expected drive to finish the plan by which another view must beat the one driven to, after a
@@ -525,7 +557,33 @@ class SeFMPolicy(Policy):
             w = weights(sought)
             if w.sum() > 0:
                 greedy = self._house_best(agent, target, points, w / w.sum(), list(sefm.object_summary(sought).modes))
-        return self.planner.choose(agent, binding, target, weights, also=greedy, by_context=self.by_context)
+        return self.planner.choose(agent, binding, target, weights, also=greedy, by_context=self.by_context,
+                                   stale=self._stale_nodes() if self.count_views_once else None)
+
+    count_views_once = True
+    """The whole-plan search values a look from where SeFM has looked already (within its ``view_step``, with the
+    same places shut) as revealing nothing (:meth:`_stale_nodes`). Off (before search20): the model expected such a
+    look to reveal the belief its view sees, SeFM's filter counted the look's misses as nothing new, the belief
+    stayed, and the search chose the same kind of look again — on the held-out ranch, 200 m of views about a
+    bedroom whose belief no look could lower (docs/benchmarks.md, "This round (search20)")."""
+
+    def _stale_nodes(self) -> np.ndarray | None:
+        """The lattice nodes from which a look would tell SeFM's beliefs nothing: within the object filter's
+        ``view_step`` of a view it has used with the places shut as they are now (negative information counts
+        once per view: :mod:`seal_cli.sefm.object_beliefs`). None for a sensor that does not see all round,
+        whose views also differ by heading (the model's look at a view turns all round; not modelled)."""
+        views = self.sefm.objects.views
+        if views.turn is not None:
+            return None
+        shut = frozenset(self.sefm.hidden_places())
+        used = np.asarray([(x, y) for x, y, _, closed in views.used if closed == shut], dtype=float)
+        if not len(used):
+            return None
+        from scipy.spatial import cKDTree
+
+        points = self.planner.lattice.points
+        near = cKDTree(used).query(points, distance_upper_bound=views.step + 1e-9)[0]
+        return np.asarray(np.isfinite(near), dtype=bool)
 
     def _restate(self, agent: Agent) -> None:
         """Bring the frame beliefs up to the robot's state without an observation the robot did not make: one

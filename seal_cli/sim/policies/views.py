@@ -187,11 +187,14 @@ class Lattice:
         return float(np.arctan2(dy, dx))
 
     def drive_table(self, origin: int, candidates: Sequence[int], reveals: Sequence[np.ndarray | None],
-                    hidden: np.ndarray) -> DriveTable:
+                    hidden: np.ndarray, stale: np.ndarray | None = None) -> DriveTable:
         """The drives from ``origin`` to each candidate (see :class:`DriveTable`). A look does not see
         ``hidden`` nodes (in a shut receptacle); a look on the way sees what it faces (:meth:`visible_along`),
         the look at the end of the drive to candidate ``v`` sees all round (the robot turns round at a view)
-        and also ``reveals[v]`` (what opening a receptacle there shows)."""
+        and also ``reveals[v]`` (what opening a receptacle there shows). ``stale`` (a bool per node): a look
+        from such a node tells the beliefs nothing (a view they have used already: SeFM counts a miss once
+        per view), so it reveals nothing — unless it opens a receptacle (``reveals[v]``): with other places shut
+        it is a view of its own, and sees as any other."""
         k, n = len(candidates), self.size
         seen_at = np.full((k, n), np.inf, dtype=np.float32)
         look = np.full((k, n), -1, dtype=np.int32)
@@ -211,6 +214,8 @@ class Lattice:
                 masks[-1] = (masks[-1][0], masks[-1][1], reveals[v], None)
             row, at = seen_at[v], look[v]
             for u, m, extra, heading in masks:
+                if stale is not None and stale[u] and extra is None:
+                    continue
                 fresh = (self.visible(u) if heading is None else self.visible_along(u, heading)) & ~hidden
                 if extra is not None:
                     fresh = fresh | extra

@@ -15,6 +15,7 @@ view of its own. What the drives between them see on the way is counted by the m
 
 from __future__ import annotations
 
+import hashlib
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 
@@ -206,7 +207,7 @@ class WholePlanSearch:
         """Candidate cells looked from (never chosen again)."""
         self.pending: Cell | None = None
         """The view chosen last, until the robot looks from there (a drive that stops short leaves it unused)."""
-        self._tables: dict[tuple[int, frozenset[str]], DriveTable] = {}
+        self._tables: dict[tuple[int, tuple[frozenset[str], bytes | None]], DriveTable] = {}
         self._covered: np.ndarray | None = None
         self.added = 0
         """Views :meth:`_cover` has added (at most :data:`ADDED_VIEWS`)."""
@@ -368,29 +369,38 @@ class WholePlanSearch:
             names.append(known.id)
         return {name: owner == k for k, name in enumerate(names)}
 
-    def _cover(self, agent: Agent, beliefs: dict[str, np.ndarray]) -> None:
+    def _cover(self, agent: Agent, beliefs: dict[str, np.ndarray], stale: np.ndarray | None = None) -> None:
         """Add views until the candidates' looks see all but :data:`UNCOVERED` of each belief (at most
         :data:`MORE_VIEWS` of them each time): each the node, of a sample of those near the belief no
-        candidate sees, that sees most of it (a room its views see only part of, a short-range sensor)."""
+        candidate sees, that sees most of it (a room its views see only part of, a short-range sensor).
+        ``stale``: nodes whose looks tell the beliefs nothing (:meth:`choose`): a candidate there covers
+        nothing, and no view is added there."""
         lattice = self.lattice
         if self._covered is None:
             self._covered = np.zeros(lattice.size, dtype=bool)
             for node in self.nodes:
                 self._covered |= lattice.visible(node)
+        covered = self._covered
+        if stale is not None and stale.any():
+            covered = np.zeros(lattice.size, dtype=bool)
+            for node in self.nodes:
+                if not stale[node]:
+                    covered |= lattice.visible(node)
         for _ in range(MORE_VIEWS):
             if self.added >= ADDED_VIEWS:
                 break
-            left = {c: float(b[~self._covered].sum() / b.sum()) for c, b in beliefs.items() if b.sum() > 0}
+            left = {c: float(b[~covered].sum() / b.sum()) for c, b in beliefs.items() if b.sum() > 0}
             if not left or max(left.values()) <= UNCOVERED:
                 break
             weight = sum((b / b.sum() for b in beliefs.values() if b.sum() > 0), np.zeros(lattice.size))
-            weight = np.where(self._covered, 0.0, weight)
+            weight = np.where(covered, 0.0, weight)
             near = np.flatnonzero(weight > 0)
             rng = np.random.default_rng(len(self.nodes))
             pick = near if len(near) <= COVER_SAMPLE else rng.choice(near, COVER_SAMPLE, replace=False,
                                                                      p=weight[near] / weight[near].sum())
             field_ = agent.distances()
-            options = [int(k) for k in pick if np.isfinite(field_[tuple(lattice.cells[k])])]
+            options = [int(k) for k in pick if np.isfinite(field_[tuple(lattice.cells[k])])
+                       and (stale is None or not stale[k])]
             if not options:
                 break
             gains = {k: float(weight[lattice.visible(k)].sum()) for k in options}
@@ -404,6 +414,8 @@ class WholePlanSearch:
                                              self.map.rooms[room].name if room >= 0 else "the open floor"))
             self.nodes.append(best)
             self._covered |= lattice.visible(best)
+            if covered is not self._covered:
+                covered |= lattice.visible(best)
 
     def _add(self, agent: Agent, view: View) -> None:
         """A view of another rule (the greedy place view) among the candidates, kept for the run."""
@@ -425,20 +437,24 @@ class WholePlanSearch:
 
     def choose(self, agent: Agent, binding: Binding, target: str,
                weights: Callable[[str], np.ndarray], also: View | None = None,
-               by_context: bool = False) -> Decision | None:
+               by_context: bool = False, stale: np.ndarray | None = None) -> Decision | None:
         """The candidate view that starts the shortest expected completion (:func:`~seal_cli.sim.policies.
         completion.choose`); ``weights(cls)`` is the belief of a class per free cell of the map. ``also``: a
         view another rule would take now (the greedy place view), weighed among the candidates on the same
         footing, so the choice is never worse than it under the model, and taken when the model cannot tell
         it from the best (within the lattice's :data:`~seal_cli.sim.policies.views.SPACING`); ``by_context``: another
         view is taken over ``also`` only where the rest of the plan, too, makes it better (:func:`~seal_cli.sim.
-        policies.completion.choose`)."""
+        policies.completion.choose`); ``stale``: a bool per lattice node, where a look tells the beliefs nothing
+        (a view they have used already), so the model's looks from there reveal nothing (:meth:`~seal_cli.sim.
+        policies.views.Lattice.drive_table`)."""
         stops = self.targets(agent, binding, target)
         sought = list(dict.fromkeys(c for c, v, _ in stops if v is None))
         n = self.lattice.size
         beliefs = {c: np.bincount(self.belief_node, weights=np.where(np.isfinite(w := weights(c)) & (w > 0), w, 0.0),
                                   minlength=n) for c in sought}
-        self._cover(agent, beliefs)
+        if stale is not None and not stale.any():
+            stale = None
+        self._cover(agent, beliefs, stale)
         if also is not None:
             self._add(agent, also)
         shut = self._shut(agent)
@@ -449,11 +465,13 @@ class WholePlanSearch:
         reveals = [shut.get(c.open) if c.open is not None else None for c in self.candidates]
         lattice = self.lattice
 
+        kind = (key, None if stale is None else hashlib.blake2b(np.packbits(stale).tobytes(), digest_size=16).digest())
+
         def tables(origin: int) -> DriveTable:   # kept across choices; rows added for candidates added since
-            table = self._tables.pop((origin, key), None)   # taken out and put back: the dict is in order of use
+            table = self._tables.pop((origin, kind), None)   # taken out and put back: the dict is in order of use
             done = 0 if table is None else len(table.length)
             if done < len(self.nodes):
-                more = lattice.drive_table(origin, self.nodes[done:], reveals[done:], hidden)
+                more = lattice.drive_table(origin, self.nodes[done:], reveals[done:], hidden, stale)
                 if table is not None:
                     self._table_bytes -= table.nbytes
                     table = DriveTable(np.concatenate([table.seen_at, more.seen_at]),
@@ -463,7 +481,7 @@ class WholePlanSearch:
                     table = more
                 self._table_bytes += table.nbytes
             assert table is not None
-            self._tables[(origin, key)] = table
+            self._tables[(origin, kind)] = table
             self._forget_tables()
             return table
 

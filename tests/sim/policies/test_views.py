@@ -98,7 +98,7 @@ def test_a_view_of_another_rule_is_weighed_on_the_same_footing_and_the_tables_gr
     reveals = [shut.get(c.open) if c.open is not None else None for c in search.candidates]
     assert grown and all(len(t.length) == n for t in grown.values())
     for origin, _ in list(grown)[:5]:
-        table = search._tables[(origin, frozenset(shut))]
+        table = search._tables[(origin, (frozenset(shut), None))]
         whole = search.lattice.drive_table(origin, search.nodes, reveals, hidden)
         assert len(table.length) == n + 1
         assert np.array_equal(table.seen_at, whole.seen_at) and np.array_equal(table.length, whole.length)
@@ -264,3 +264,46 @@ def test_a_look_on_the_way_sees_what_it_faces_and_a_view_sees_all_round() -> Non
     away = narrow.drive_table(west, [east], [None], np.zeros(narrow.size, dtype=bool))
     mid = np.flatnonzero((narrow.points[:, 0] > 1.5) & (narrow.points[:, 0] < 2.0))
     assert (away.seen_at[0][mid] < metres[-1]).all()            # seen ahead on the way, before the end
+
+
+def test_a_look_from_a_stale_node_reveals_nothing_and_the_choice_goes_where_a_look_counts(library: Library) -> None:
+    """search20: SeFM counts a miss once per view, so a look from where it has looked already lowers none of its
+    belief. The model must expect the same (a stale node's look reveals nothing), or it chooses that look again and
+    again — the ranch's 200 m runs. A look that opens a receptacle is a new view and still sees."""
+    from seal_cli.pipeline import run_on_map
+
+    agent, _ = run_on_map(cottage(), "pick up the spoon", library, make_policy("prior_optimal"),
+                          rng=np.random.default_rng(0))
+    m = agent.scene.map
+    bedroom = np.asarray(m.rooms[m.room_id("bedroom")].contains(m.free_centres), dtype=bool).astype(float)
+
+    def weights(cls: str) -> np.ndarray:
+        return bedroom
+
+    search = WholePlanSearch(agent)
+    lattice = search.lattice
+    first = search.choose(agent, agent.steps[0], "spoon", weights)
+    assert first is not None and first.candidate.name == "bedroom"
+    node = first.candidate.node
+    stale = np.hypot(*(lattice.points - lattice.points[node]).T) <= 0.5
+    hidden = np.zeros(lattice.size, dtype=bool)
+    start = int(lattice.node_of(np.asarray([agent.grid.point(agent.robot_cell())]))[0])
+    fresh = lattice.drive_table(start, [node], [None], hidden)
+    old = lattice.drive_table(start, [node], [None], hidden, stale)
+    looks, _ = lattice.looks(start, node)
+    assert np.isfinite(fresh.seen_at[0, lattice.visible(node)]).all()
+    everywhere = np.ones(lattice.size, dtype=bool)
+    assert not np.isfinite(lattice.drive_table(start, [node], [None], hidden, everywhere).seen_at).any()
+    on_the_way = np.zeros(lattice.size, dtype=bool)
+    for u in looks[:-1]:
+        if not stale[u]:
+            on_the_way |= lattice.visible(u)
+    assert np.array_equal(np.isfinite(old.seen_at[0]), on_the_way)           # the end's look: nothing
+    opened = np.zeros(lattice.size, dtype=bool)
+    opened[node] = True
+    opening = lattice.drive_table(start, [node], [opened], hidden, stale)
+    assert np.isfinite(opening.seen_at[0, lattice.visible(node)]).all()
+    again = search.choose(agent, agent.steps[0], "spoon", weights, stale=stale)
+    assert again is not None and not stale[again.candidate.node]
+    assert again.candidate.cell != first.candidate.cell and "spoon" in again.view.why
+    assert again.costs[(first.candidate.cell, None)] > first.expected_m     # its own look is worth nothing now
