@@ -2145,6 +2145,10 @@ def test_an_ordinal_before_a_number_is_part_of_the_counted_phrase(library: Libra
     ("where sits my bag?", [("Find", {"theme": "bag"})]),
     ("towel, bring it here", [("Bring", {"theme": "towel", "goal": "here"})]),       # a thing said first: as before
     ("i dropped my cup, can you pick it up", [("Pick", {"theme": "cup"})]),           # no one addressed
+    # a name before a finite verb is its subject, no one addressed ("Priya went" was "Priya, go", lead)
+    ("Priya went to the garage. Ask her if she wants coffee",
+     [("Tell", {"message": "do you want coffee?", "recipient": "Priya"})]),
+    ("Tomas goes to bed at nine, so bring him his pills now", [("Bring", {"theme": "pill", "recipient": "Tomas"})]),
 ])
 def test_one_addressed_a_filler_and_a_learners_where(
         text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:

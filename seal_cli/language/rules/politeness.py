@@ -132,6 +132,9 @@ def _addressed(s: State, i: int) -> Match | None:
     if k < len(words) and words[k].lower == "," and (s.verb_after(k + 1) or s.asks_at(k + 1)) if k + 1 < len(words) \
             else False:
         return Match(n + 1, (merge(words, i, n + 1, Tag.POLITE),))   # "alexa, switch off the tv", "young man, ..."
+    nxt = words[i + 1].lower if i + 1 < len(words) else ""
+    if nxt and s.verb_at(i + 1) is not None and verb_lemma(nxt) != nxt:
+        return None                                   # "Priya went to the garage": a subject and its finite verb
     if (greeted or words[i].lower in GREETINGS or not parts_of_speech(words[i].lower) - {"noun"}) and \
             s.verb_after(i + 1):
         return Match(1, (merge(words, i, 1, Tag.POLITE),))         # "dude just open the door", "ok google turn ..."
