@@ -10,6 +10,8 @@ from pathlib import Path
 import pytest
 import yaml
 
+from tests.conftest import tiny_wordnet
+
 ROOT = Path(__file__).resolve().parents[2]
 SCRIPT = ROOT / "scripts" / "build_clothing_nouns.py"
 WORDNET_DICT = Path("/usr/share/wordnet")          # Debian's wordnet-base
@@ -47,11 +49,9 @@ def run(*args: str) -> subprocess.CompletedProcess[str]:
 
 
 def test_a_noun_whose_first_tagged_sense_or_every_sense_is_worn(tmp_path: Path) -> None:
-    (tmp_path / "data.noun").write_text(DATA)
-    (tmp_path / "index.noun").write_text(INDEX)
-    (tmp_path / "cntlist.rev").write_text(COUNTS)
+    wordnet = tiny_wordnet(tmp_path / "dict", "", DATA, "", INDEX, COUNTS)
     out = tmp_path / "clothing.yaml"
-    done = run("--wordnet", str(tmp_path), "--out", str(out))
+    done = run("--wordnet", str(wordnet), "--out", str(out))
     assert done.returncode == 0, done.stderr
     # jacket: its first (tagged) sense is a garment, the potato skin no matter; tunic: never tagged, every
     # sense worn; cardigan: never tagged, one sense a dog; table: no clothing

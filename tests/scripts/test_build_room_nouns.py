@@ -9,6 +9,8 @@ from pathlib import Path
 
 import pytest
 
+from tests.conftest import tiny_wordnet
+
 ROOT = Path(__file__).resolve().parents[2]
 SCRIPT = ROOT / "scripts" / "build_room_nouns.py"
 WORDNET_DICT = Path("/usr/share/wordnet")          # Debian's wordnet-base
@@ -48,11 +50,9 @@ def run(*args: str) -> subprocess.CompletedProcess[str]:
 
 
 def test_a_noun_whose_first_tagged_sense_or_every_sense_is_part_of_a_building(tmp_path: Path) -> None:
-    (tmp_path / "data.noun").write_text(DATA)
-    (tmp_path / "index.noun").write_text(INDEX)
-    (tmp_path / "cntlist.rev").write_text(COUNTS)
+    wordnet = tiny_wordnet(tmp_path / "dict", "", DATA, "", INDEX, COUNTS)
     out = tmp_path / "premises.txt"
-    done = run("--wordnet", str(tmp_path), "--out", str(out))
+    done = run("--wordnet", str(wordnet), "--out", str(out))
     assert done.returncode == 0, done.stderr
     nouns = [line for line in out.read_text().splitlines() if line and not line.startswith("#")]
     # scullery: a room; hallway: a corridor; study: its first (most tagged) sense is research; towel: cloth;
