@@ -129,6 +129,11 @@ def tiny_wordnet(folder: Path, data_verb: str, data_noun: str, index_verb: str, 
     return folder
 
 
+def run_script(script: Path, *args: str) -> subprocess.CompletedProcess[str]:
+    """``script`` (a build script of ``scripts/``) run with ``args`` by this Python, its output captured as text."""
+    return subprocess.run([sys.executable, str(script), *args], capture_output=True, text=True, timeout=300)
+
+
 def module_from_file(name: str, path: Path, register: bool = False) -> ModuleType:
     """The Python file at ``path`` (a script, a map's drawing, a scorer of ``../shared/eval``) run as the module
     ``name``, afresh each call; ``register`` puts it in ``sys.modules`` first (a dataclass of it looks itself up

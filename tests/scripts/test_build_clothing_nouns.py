@@ -4,13 +4,12 @@ tiny WordNet, and the shipped ``framelib/wordnet_clothing.yaml`` being what Word
 from __future__ import annotations
 
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 import yaml
 
-from tests.conftest import tiny_wordnet
+from tests.conftest import run_script, tiny_wordnet
 
 ROOT = Path(__file__).resolve().parents[2]
 SCRIPT = ROOT / "scripts" / "build_clothing_nouns.py"
@@ -45,7 +44,7 @@ table%1:06:00:: 1 30
 
 
 def run(*args: str) -> subprocess.CompletedProcess[str]:
-    return subprocess.run([sys.executable, str(SCRIPT), *args], capture_output=True, text=True, timeout=300)
+    return run_script(SCRIPT, *args)
 
 
 def test_a_noun_whose_first_tagged_sense_or_every_sense_is_worn(tmp_path: Path) -> None:

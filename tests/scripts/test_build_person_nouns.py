@@ -4,11 +4,12 @@ WordNet of six synsets, and the shipped ``framelib/wordnet_people.yaml`` being w
 from __future__ import annotations
 
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 import yaml
+
+from tests.conftest import run_script
 
 ROOT = Path(__file__).resolve().parents[2]
 SCRIPT = ROOT / "scripts" / "build_person_nouns.py"
@@ -52,7 +53,7 @@ def tiny_wordnet(folder: Path) -> Path:
 
 
 def run(*args: str) -> subprocess.CompletedProcess[str]:
-    return subprocess.run([sys.executable, str(SCRIPT), *args], capture_output=True, text=True, timeout=300)
+    return run_script(SCRIPT, *args)
 
 
 def test_only_nouns_every_sense_of_which_is_a_person_and_none_rude(tmp_path: Path) -> None:

@@ -4,12 +4,11 @@ on a tiny WordNet, and the shipped ``seal_cli/language/premises.txt`` being what
 from __future__ import annotations
 
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
-from tests.conftest import tiny_wordnet
+from tests.conftest import run_script, tiny_wordnet
 
 ROOT = Path(__file__).resolve().parents[2]
 SCRIPT = ROOT / "scripts" / "build_room_nouns.py"
@@ -46,7 +45,7 @@ towel%1:06:00:: 1 8
 
 
 def run(*args: str) -> subprocess.CompletedProcess[str]:
-    return subprocess.run([sys.executable, str(SCRIPT), *args], capture_output=True, text=True, timeout=300)
+    return run_script(SCRIPT, *args)
 
 
 def test_a_noun_whose_first_tagged_sense_or_every_sense_is_part_of_a_building(tmp_path: Path) -> None:

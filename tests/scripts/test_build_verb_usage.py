@@ -4,12 +4,12 @@
 from __future__ import annotations
 
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
 from seal_cli.language.verb_usage import mostly_verb, verb_share, verb_tags
+from tests.conftest import run_script
 
 ROOT = Path(__file__).resolve().parents[2]
 SCRIPT = ROOT / "scripts" / "build_verb_usage.py"
@@ -33,7 +33,7 @@ knife%1:06:00:: 1 5
 
 
 def run(*args: str) -> subprocess.CompletedProcess[str]:
-    return subprocess.run([sys.executable, str(SCRIPT), *args], capture_output=True, text=True, timeout=300)
+    return run_script(SCRIPT, *args)
 
 
 def test_the_share_of_verb_tags_with_each_sense_counted_once(tmp_path: Path) -> None:
