@@ -294,10 +294,13 @@ class Reference:
         """Whether a noun the library does not know as a person is one by the element it fills: an
         element typed person ("meet *the plumber*", Meet's theme), unless its class is known to be no
         person; or a noun the taxonomy does not know at all that fills the first element, one a person may
-        fill ("find *the bellhop*": Find's theme is any thing; not "in the kitchen", where it is)."""
+        fill ("find *the bellhop*": Find's theme is any thing; not "in the kitchen", where it is). A room's name
+        (``english.ROOM_WORDS``) is no person, whatever element it fills ("go to *the corridor* and look for him")."""
         evoked = self.library.frame(self.frames[target[0]].frame)
         type_ = evoked.element(target[1]).type
         known = self.types.is_a(phrase.cls or phrase.head, "person")
+        if known is None and is_room_word(phrase.head.lower().replace("_", " ").split()):
+            known = False                             # "go to the corridor and look for him": no room is him (words28)
         if known is None and phrase.head.lower() not in PRONOUNS and target[1] == evoked.elements[0].role and \
                 self.types.is_a("person", type_) is True:
             return True                               # "find the bellhop and tell him ...": one that may be a person

@@ -1068,6 +1068,10 @@ class State:
             n = match_phrase(words, i + 2, PREPOSITIONS)
             if n and self.np_starts(i + 2 + n):
                 return self.emit(i, 2, "REL", "be")     # "the cup that is on the table": the PP describes it
+            if gerund_lemma(after) and prev == "NAME" and len(self.out) > 1 and self.out[-2].tag == "PREP":
+                end = self.cond_end(i + 2)              # "bring it to Alex(,) who is sitting at the desk": a name
+                return self.emit(i, end - i, "REL")     # after a preposition takes no participle in the grammar;
+                #   the clause is one REL word the name keeps, as "who's in the bathroom" is (words28)
             if gerund_lemma(after):
                 return Match(2)  # "the person who is waving": "the person waving"
             end = i + 2

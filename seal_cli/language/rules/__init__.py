@@ -150,6 +150,7 @@ INSIDE: tuple[Rule, ...] = (
     politeness.TAG_QUESTION,
     politeness.THANKS,
     clauses.UNJOINED,
+    clauses.PERSON_VERB_UNJOINED,
     clauses.UNKNOWN_UNJOINED,
 )
 """Inside a clause, before the word is tagged by ``WORDS``."""

@@ -213,6 +213,40 @@ def _unjoined(s: State, i: int) -> Match | None:
                  expect=False, verb=unit, using=False)
 
 
+_NAME_ENDS = frozenset(["and", ",", ".", "!", "?", ";", "then"])
+
+
+def _person_verb_unjoined(s: State, i: int) -> Match | None:
+    """A verb whose first element only a person fills ("meet", "greet", "follow": ``Lexicon.people_only``), in
+    its base form right after a phrase, then one lower-case word that names nothing the library knows, that
+    English's word tables list as no part of speech (``morphology.parts_of_speech``: a name), and ends the clause ("go to the bathtub *meet tracy* and guide her", "wait by the door greet jo."): the word is the
+    person's name said in lower case, and the verb a clause of its own said without "and" (it was read as
+    part of the place, "the bathtub meet tracy", and Meet was lost). A word the library knows ("follow the
+    *guest*") or a closed-class word is left to ``UNJOINED``."""
+    words = s.words
+    if s.verb_index < 0 or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.LABEL, Tag.HERE):
+        return None
+    low = words[i].lower
+    if low not in s.lexicon.people_only or low not in s.lexicon.units:
+        return None
+    found = s.verb_at(i)
+    if found is None or found[2] is not None or found[1] != 1 or found[0] != low:
+        return None
+    after = i + 1
+    if after >= len(words):
+        return None
+    nxt = words[after].lower
+    if capitalised(words[after]) or not nxt.isalpha() or nxt in CLOSED or nxt in s.lexicon.things or \
+            nxt in s.lexicon.units or is_adjective(nxt) or parts_of_speech(nxt):
+        return None                       # "the swim meet *area*": a word of English's tables, no name
+    if after + 1 < len(words) and words[after + 1].lower not in _NAME_ENDS and \
+            not match_phrase(words, after + 1, PREPOSITIONS):
+        return None                       # "the swim meet schedule": a noun goes on
+    w = words[i]
+    return Match(1, (Word("", w.start, w.start, Tag.SEP), merge(words, i, 1, Tag.VERB, low)),
+                 expect=False, verb=low, using=False)
+
+
 _NO_NOUN_AFTER = frozenset(["it", "them", "him", "her"])
 """Object pronouns, which never go on a noun phrase: a verb's object ("grab the towel *fold it* on the rack")."""
 
@@ -323,6 +357,11 @@ UNJOINED = Rule("clause without a joint", _unjoined, (
     Example("pick up the cup bring it to me", "bring", Tag.VERB),
     Example("put the milk in the fridge go to the kitchen", "go", Tag.VERB),
 ), None, "a verb of the library and its object right after a phrase: a clause of its own, not a noun")
+PERSON_VERB_UNJOINED = Rule("a person's verb and a lower-case name without a joint", _person_verb_unjoined, (
+    Example("go to the bathtub meet tracy and guide her", "meet", Tag.VERB),
+    Example("wait by the front door greet jo.", "greet", Tag.VERB),
+    Example("walk to the porch follow sam to the car", "follow", Tag.VERB),
+), None, "'meet/greet/follow' and one lower-case word ending the clause after a phrase: a clause, the word a name")
 UNKNOWN_UNJOINED = Rule("unknown verb without a joint", _unknown_unjoined, (
     Example("grab the towel fold it on the rack", "fold", Tag.WORD),
     Example("head to the bedroom to wake up Jonas", "to", Tag.SEP),
