@@ -326,7 +326,9 @@ class Reference:
         return len(self.frames) - 1, relation.args[1], "thing"
     def implicit(self, frame: Frame, role: str) -> Phrase | None:
         """An object left unsaid refers to the object of the frame before ("and put [it] away"),
-        or to the container it was just put in (:meth:`carried`)."""
+        or to the container it was just put in (:meth:`carried`); never to a place nothing carries (a room, a
+        thing the taxonomy knows as ``fixed``: "go to *the shower*, meet Hayden and take him"), but to the one
+        before it ("pick up the cup, go to *the kitchen* and put [it] on the table")."""
         carried = self.carried(frame, role)
         if carried is not None:
             index, name, _ = carried
@@ -341,6 +343,9 @@ class Reference:
                 continue
             target = phrase.refers_to or (index, name)
             root = self.frames[target[0]].elements[target[1]]
+            if self.types.is_a(root.cls or root.head, "fixed") is True or \
+                    is_room_word((root.cls or root.head).lower().replace("_", " ").split()):
+                continue        # "go to the shower, meet Hayden and take him": no shower in hand (words28)
             return Phrase("", root.head, root.cls, root.kind, target, root.quantity, root.plural)
         return None
 

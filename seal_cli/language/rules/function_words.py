@@ -267,7 +267,21 @@ def _be(s: State, i: int) -> Match | None:
 def _possessive(s: State, i: int) -> Match | None:
     if s.in_np() or s.words[i].lower == "her" and (not s.noun_follows(i + 1) or s.next_lower(i) in HERE_WORDS):
         return None                                               # "take *her* there": the pronoun, then where
+    if s.words[i].lower == "her" and _verb_and_object(s, i + 1):
+        return None               # "when you find *her* tell her the time": the pronoun, then a clause (words28)
     return s.emit(i, 1, Tag.POSS)
+
+
+_OBJECTS_AFTER = frozenset(["it", "them", "him", "her", "me", "us", "the"])
+
+
+def _verb_and_object(s: State, j: int) -> bool:
+    """Whether a library verb's base form starts at ``j``, then an object ("tell *her*", "bring *the* cup"): no
+    noun a possessive goes on ("find her *tell her* the time"), but a clause said without a joint."""
+    if j + 1 >= len(s.words) or s.words[j].lower not in s.lexicon.units or s.words[j + 1].lower not in _OBJECTS_AFTER:
+        return False
+    found = s.verb_at(j)
+    return found is not None and found[2] is None and found[0].split()[0] == s.words[j].lower
 
 
 def _partitive(s: State, i: int) -> Match | None:
