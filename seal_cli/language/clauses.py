@@ -29,7 +29,7 @@ from seal_cli.frames.library import Library
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.language.asking import ASKING, IFS, WH_ASKED, contracted_wh, direct_question, person_subject
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import FIRST_LATER
+from seal_cli.language.english import DONE_BEFORE, FIRST_LATER
 from seal_cli.language.lexicon import CommandError, Word
 from seal_cli.language.morphology import in_dictionary, is_adjective, noun_lemma, verb_lemma
 from seal_cli.language.roles import FROM, LOCATIVE
@@ -497,9 +497,23 @@ class Clauses:
         """The clauses in the order they are to be done: "turn on the lamp while holding a clock" holds
         it first, but "carry a clock while turning on a lamp" is already holding it (the one that takes
         a thing in hand comes first); "A after B", "A when done B" do B first, and a clause of B that
-        leaves its object unsaid takes A's."""
+        leaves its object unsaid takes A's; "A; before that, B and C" (``english.DONE_BEFORE``) does B and C
+        first, in their order."""
         ordered: list[Clause] = []
+        first: int | None = None             # where the clauses said after "before that" go (words28)
         for clause, join in zip(clauses, joins, strict=True):
+            if join in DONE_BEFORE and ordered:
+                first = len(ordered) - 1     # "give me the cereal; before that, go to the table": Go first
+            elif first is not None and join not in ("and", ","):
+                first = None                 # "...; before that, rinse it. Then ...": in order again
+            if first is not None:
+                later = ordered[-1]          # the clause said before the joint, now done after
+                if clause.objects and clause.objects[-1].pronoun in ("it", "them") and later.objects and \
+                        not later.objects[-1].pronoun:
+                    clause.objects[-1] = later.objects[-1]   # "give me the cereal; before that, find *it*"
+                ordered.insert(first, clause)
+                first += 1
+                continue
             together = "while" in join.split() or join.split()[:1] == ["as"] and join != "as well as"
             if together and ordered and not (self.takes(ordered[-1]) and not self.takes(clause)) \
                     or (join in ("when done", "once done") or join in FIRST_LATER) and ordered:  # "A after B": B first

@@ -115,11 +115,20 @@ ADDITIVES = frozenset(["too", "as well", "also"])
 separator is one more object of the clause before's verb, said again (a clause of its own), never a conjunct of
 the phrase before it ("the kitchen table and the cereal")."""
 """Words that join like "and" (clauses or noun phrases)."""
+DONE_BEFORE = frozenset(["before that", "but before that", "but first", "before doing that", "but before you do that",
+                         "before you do that", "before you do so", "but before you do so", "prior to that"])
+""""give me the cereal; *before that*, go to the table and find it", "bring me the cup, *but first* rinse it": a joint
+after which the clauses are to be done before the clause said before it (words28); the clauses it joins with "and"
+or a comma go with it. ``Clauses.order`` puts them first."""
+YOU_MUST = frozenset(["you'll have to", "you'll need to", "you will have to", "you will need to", "you'd better",
+                      "you had better"])
+""""..., *you'll have to* go to the table and find it": what the robot must do, said to it (words28); a lead-in
+(``POLITE``), and no statement a comma's remark drops (``State.statement_at``: "you'll" is a subject otherwise)."""
 POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you", "would you", "will you", "might you",
                                      "would you mind",
                     "could you please", "i want you to", "i need you to", "i would like you to",
                     "i want that you", "i need that you", "i would like that you",
-                    "i'd like you to", "you should", "you must", "you need to", "you have to", "you will",
+                    "i'd like you to", "you should", "you must", "you need to", "you have to", "you will", *YOU_MUST,
                     "you can", "go ahead and", "robot", "hey", "ok", "okay", "now", "first", "firstly",
                     "just", "quickly", "quick", "carefully", "to", "try to", "attempt to", "then", "and", "also",
                     "simply",

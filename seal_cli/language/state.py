@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 
 from seal_cli.language.english import (
     ADDITIVES,
+    YOU_MUST,
     AND_WORDS,
     BASE_FORM_SUBJECTS,
     BE_WORDS,
@@ -437,6 +438,9 @@ class State:
             return 0                                          # "Grab the cup": a command, maybe an unknown verb
         if first in BASE_FORM_SUBJECTS and nxt.isalpha() and nxt not in PREPOSITIONS:
             return end                                        # "we open at six", "I need a hand": no command
+        if first in ("you'll", "you'd", "you") and match_phrase(words, i, YOU_MUST) and \
+                self.verb_after(i + match_phrase(words, i, YOU_MUST)):
+            return 0                                          # "..., you'll have to find it": the robot is told
         if "'" in first and first.split("'")[0] in SUBJECTS | {"you", "who", "what", "here"} and \
                 "'" + first.split("'", 1)[1] in CONTRACTED:
             return end                                        # "we're eating in ten", "i'll be right there"

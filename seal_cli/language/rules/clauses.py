@@ -4,11 +4,13 @@ inside a clause, relative clauses, "until the corner", "something to drink"."""
 from __future__ import annotations
 
 from seal_cli.language.english import (
+    DONE_BEFORE,
     END_MARKS,
     HERE_WORDS,
     NP_OPENERS,
     PARTICLES,
     PERSON_PRONOUNS,
+    POLITE,
     PREPOSITIONS,
     PRONOUNS,
     SEPARATOR_WORDS,
@@ -17,7 +19,18 @@ from seal_cli.language.english import (
 )
 from seal_cli.language.morphology import in_verb_tables, is_adjective, noun_lemma, parts_of_speech, verb_lemma
 from seal_cli.language.rule import AFTER_SEP, Example, Match, Rule
-from seal_cli.language.state import CLOSED, INDEFINITE, REL_FIRST, SEP_FIRST, SUB_FIRST, State, match_phrase, merge
+from seal_cli.language.state import (
+    CLOSED,
+    INDEFINITE,
+    REL_FIRST,
+    SEP_FIRST,
+    SUB_FIRST,
+    State,
+    first_words,
+    longest_phrase,
+    match_phrase,
+    merge,
+)
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 from seal_cli.language.verb_usage import mostly_verb
@@ -213,6 +226,30 @@ def _unjoined(s: State, i: int) -> Match | None:
                  expect=False, verb=unit, using=False)
 
 
+def _done_before(s: State, i: int) -> Match | None:
+    """A joint that says the clauses after it come first ("give me the cereal; *before that*, go to the table",
+    "bring me the cup, *but first* rinse it"): one ``SEP`` word whose info is the phrase (``english.DONE_BEFORE``),
+    replacing a separator said just before it; ``Clauses.order`` moves its clauses before the one said before."""
+    words = s.words
+    n = longest_phrase(words, i, DONE_BEFORE)
+    if not n or s.verb_index < 0:
+        return None
+    j = i + n + int(i + n < len(words) and words[i + n].lower == ",")
+    k = j if j >= len(words) or s.verb_at(j) is not None else j + match_phrase(words, j, POLITE)
+    if k >= len(words) or s.verb_at(k) is None or verb_lemma(words[k].lower) != words[k].lower:
+        return None                       # "put it away before that gets cold": a condition, no joint
+    if s.prev_tag() not in (Tag.SEP, Tag.AND_NP) and words[i].lower != "but" and words[j - 1].lower != ",":
+        return None                       # "before that" said bare inside a clause: left to the other rules
+    phrase = " ".join(w.lower for w in words[i:i + n])
+    prev = s.out[-1] if s.out else None
+    joined = prev is not None and prev.tag in (Tag.SEP, Tag.AND_NP)     # "..., but first": the comma is the joint
+    start = prev.start if prev is not None and joined else words[i].start
+    joint = Word(s.text_of(start, words[j - 1].end) or phrase, start, words[j - 1].end, Tag.SEP, phrase)
+    if joined:
+        return Match(j - i, (), last=joint, expect=True)
+    return Match(j - i, (joint,), expect=True)
+
+
 _NAME_ENDS = frozenset(["and", ",", ".", "!", "?", ";", "then"])
 
 
@@ -357,6 +394,13 @@ UNJOINED = Rule("clause without a joint", _unjoined, (
     Example("pick up the cup bring it to me", "bring", Tag.VERB),
     Example("put the milk in the fridge go to the kitchen", "go", Tag.VERB),
 ), None, "a verb of the library and its object right after a phrase: a clause of its own, not a noun")
+DONE_BEFORE_JOINT = Rule("a joint that puts what follows first", _done_before, (
+    Example("bring me the cup; before that, rinse it", "; before that,", Tag.SEP),
+    Example("hand me the towel, but first wash it", ", but first", Tag.SEP),
+), first_words(DONE_BEFORE), "'before that', 'but first' between clauses: what follows is done first")
+DONE_BEFORE_START = Rule("a joint that puts what follows first, a clause expected", _done_before, (
+    Example("bring me the cup. Before that, rinse it", ". Before that,", Tag.SEP),
+), first_words(DONE_BEFORE), "'before that' where a clause starts, after a sentence: what follows is done first")
 PERSON_VERB_UNJOINED = Rule("a person's verb and a lower-case name without a joint", _person_verb_unjoined, (
     Example("go to the bathtub meet tracy and guide her", "meet", Tag.VERB),
     Example("wait by the front door greet jo.", "greet", Tag.VERB),
