@@ -284,9 +284,14 @@ def _verb_and_object(s: State, j: int) -> bool:
     return found is not None and found[2] is None and found[0].split()[0] == s.words[j].lower
 
 
+_RECIPIENTS = frozenset(["me", "us", "him", "her", "them"])
+
+
 def _partitive(s: State, i: int) -> Match | None:
     nxt = s.next_lower(i)
-    if not s.in_np() and s.prev_tag() == Tag.VERB and not s.noun_follows(i + 1) and \
+    after_verb = s.prev_tag() == Tag.VERB or s.prev_tag() == Tag.PRON and len(s.out) > 1 and \
+        s.out[-2].tag == Tag.VERB and s.out[-1].lower in _RECIPIENTS    # "can you bring me *some*?" (words28)
+    if not s.in_np() and after_verb and not s.noun_follows(i + 1) and \
             nxt not in NP_OPENERS and nxt not in NUMBERS and nxt != "of":
         return s.emit(i, 1, Tag.PRON)                             # "pour *some* into the cup": some of it
     return None
@@ -446,7 +451,8 @@ POSSESSIVE = Rule("possessive", _possessive, (
                   "'my', 'their', 'her' before a noun")
 PARTITIVE = Rule("partitive pronoun", _partitive, (
     Example("pour some into the cup", "some", Tag.PRON),
-), PARTITIVES, "'some', 'all' right after the verb with no noun: some of it")
+    Example("I'm hungry, can you bring me some?", "some", Tag.PRON),
+), PARTITIVES, "'some', 'all' right after the verb (or its person) with no noun: some of it")
 DETERMINER = Rule("determiner", _determiner, (Example("bring me the cup", "the", Tag.DET),), DETERMINERS,
                   "a determiner ('that' only before a noun)")
 WHATEVER = Rule("whatever is", _whatever, (

@@ -282,9 +282,10 @@ def _any_asked(s: State, i: int) -> Match | None:
     if not (left or _place_asked(s, i)) or any(
             k not in left and (s.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS and
                                not _progressive(s, i, k) or
-                               words[k].lower in BE_WORDS or words[k].lower in (",", ";", "and", "then"))
+                               words[k].lower in BE_WORDS or words[k].lower in (",", ";", "and", "then") or
+                               words[k].lower in FINITE)
             for k in range(i + 1, end)):
-        return None                              # "any milk in the fridge *is* fine": a statement
+        return None               # "any milk in the fridge *is* fine", "someone in the hall *has* a question"
     tag = Tag.DET if words[i].lower == "any" else Tag.PRON
     return Match(1, (_unsaid(words[i].start, Tag.VERB, WHERE_MEANS), words[i].tagged(tag)), expect=False,
                  verb=WHERE_MEANS, using=False)
@@ -845,8 +846,8 @@ def _thing_placed(s: State, i: int) -> Match | None:
     rest = range(k + 1, end)
     if any(not words[p].lower.isalpha() or words[p].lower in PREPOSITIONS or words[p].lower in ("and", "or") or
            words[p].lower in _NEEDS or s.verb_at(p) is not None and words[p].lower not in s.lexicon.things and
-           words[p - 1].lower not in NP_OPENERS for p in rest):
-        return None
+           words[p - 1].lower not in NP_OPENERS or words[p].lower in FINITE for p in rest):
+        return None                               # "a man in the hall *has* a question": a statement (words28)
     w = words[i]
     return Match(0, (_unsaid(w.start, Tag.VERB, PLACE_MEANS),), expect=False, verb=PLACE_MEANS, using=False)
 
