@@ -14,7 +14,6 @@ from typing import TYPE_CHECKING
 
 from seal_cli.language.english import (
     ADDITIVES,
-    YOU_MUST,
     AND_WORDS,
     BASE_FORM_SUBJECTS,
     BE_WORDS,
@@ -64,6 +63,7 @@ from seal_cli.language.english import (
     VOCATIVES,
     WH_WORDS,
     WHERE_QUESTIONS,
+    YOU_MUST,
     is_room_word,
 )
 from seal_cli.language.morphology import (

@@ -256,7 +256,8 @@ _NAME_ENDS = frozenset(["and", ",", ".", "!", "?", ";", "then"])
 def _person_verb_unjoined(s: State, i: int) -> Match | None:
     """A verb whose first element only a person fills ("meet", "greet", "follow": ``Lexicon.people_only``), in
     its base form right after a phrase, then one lower-case word that names nothing the library knows, that
-    English's word tables list as no part of speech (``morphology.parts_of_speech``: a name), and ends the clause ("go to the bathtub *meet tracy* and guide her", "wait by the door greet jo."): the word is the
+    English's word tables list as no part of speech (``morphology.parts_of_speech``: a name), and ends the
+    clause ("go to the bathtub *meet tracy* and guide her", "wait by the door greet jo."): the word is the
     person's name said in lower case, and the verb a clause of its own said without "and" (it was read as
     part of the place, "the bathtub meet tracy", and Meet was lost). A word the library knows ("follow the
     *guest*") or a closed-class word is left to ``UNJOINED``."""
