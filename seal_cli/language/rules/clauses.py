@@ -396,11 +396,12 @@ UNJOINED = Rule("clause without a joint", _unjoined, (
     Example("put the milk in the fridge go to the kitchen", "go", Tag.VERB),
 ), None, "a verb of the library and its object right after a phrase: a clause of its own, not a noun")
 DONE_BEFORE_JOINT = Rule("a joint that puts what follows first", _done_before, (
-    Example("bring me the cup; before that, rinse it", "; before that,", Tag.SEP),
     Example("hand me the towel, but first wash it", ", but first", Tag.SEP),
+    Example("give me the plate, but before that go to the sink", ", but before that", Tag.SEP),
 ), first_words(DONE_BEFORE), "'before that', 'but first' between clauses: what follows is done first")
 DONE_BEFORE_START = Rule("a joint that puts what follows first, a clause expected", _done_before, (
     Example("bring me the cup. Before that, rinse it", ". Before that,", Tag.SEP),
+    Example("bring me the cup; before that, rinse it", "; before that,", Tag.SEP),
 ), first_words(DONE_BEFORE), "'before that' where a clause starts, after a sentence: what follows is done first")
 PERSON_VERB_UNJOINED = Rule("a person's verb and a lower-case name without a joint", _person_verb_unjoined, (
     Example("go to the bathtub meet tracy and guide her", "meet", Tag.VERB),
