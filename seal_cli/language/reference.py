@@ -22,7 +22,7 @@ from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
 from seal_cli.language.english import BESIDE, LOCATED, NP_OPENERS, PRONOUNS, is_room_word
 from seal_cli.language.lexicon import Mention, Word, mentions, noun_lemma
-from seal_cli.language.morphology import is_plural, plural_only
+from seal_cli.language.morphology import is_plural, parts_of_speech, plural_only
 from seal_cli.language.syntax import NP
 from seal_cli.language.values import Evoked, Phrase
 
@@ -51,6 +51,13 @@ _SPEAKERS = frozenset(["me", "us", "myself", "ourselves"])
 
 _WANTING = frozenset(["wants", "wanted", "would", "'d"])
 """What a subject that wishes says next ("grace *wants* a drink", "grandpa *would* like his tea"): a person."""
+
+
+def _unknown_plural(word: str) -> bool:
+    """A word English's tables lack ending in a plural's "-s" (not "-ss"): a plural, as a brand's name of a food
+    usually is ("the pringles are on the table, bring *them* to me", "the oreos", words28)."""
+    return len(word) > 3 and word.isalpha() and word.endswith("s") and not word.endswith("ss") and \
+        not parts_of_speech(word)
 
 
 class Reference:
@@ -149,7 +156,8 @@ class Reference:
         pronoun = np.pronoun or ""
         if pronoun in ("them", "they"):              # "*The plants on the balcony*, bring them inside": a plural
             plural = [m for m in self._mentions if m.end <= np.start and m.determined and not m.oblique and
-                      not m.name and (is_plural(m.head.lower()) or plural_only(m.head.lower()))]
+                      not m.name and (is_plural(m.head.lower()) or plural_only(m.head.lower()) or
+                                      _unknown_plural(m.head.lower()))]
             if plural:
                 return plural[-1]
             type_ = frame.element(role).type

@@ -362,11 +362,14 @@ class State:
 
     def verb_after(self, i: int) -> bool:
         """Whether a verb (a lexical unit) starts at ``i``, after any politeness words; or at ``i`` itself,
-        a verb that is politeness only before another ("and *go* to the hall", not "go and get")."""
+        a verb that is politeness only before another ("and *go* to the hall", not "go and get"), also after
+        politeness ("please *go* with her", words28)."""
         start = i
+        said = i                        # where the last politeness skipped started: maybe a verb ("go", "come")
         while i < len(self.words):
             n = match_phrase(self.words, i, POLITE)
             if n and self.words[i].lower not in ("to", "and", "then"):
+                said = i
                 i += n
                 continue
             low = self.words[i].lower
@@ -376,7 +379,8 @@ class State:
             break
         if i < len(self.words) and (self.verb_at(i) is not None or self.use_at(i)):
             return True
-        return start < i and start < len(self.words) and self.verb_at(start) is not None
+        return start < i and (start < len(self.words) and self.verb_at(start) is not None or
+                              said != start and self.verb_at(said) is not None)
 
     def formula(self, i: int) -> int:
         """How many words a politeness formula said as a whole clause takes at ``i`` (0: none): it
@@ -605,7 +609,9 @@ class State:
         for k in range(i + n, len(words)):
             low = words[k].lower
             if low == ",":                               # its last word a place the taxonomy knows: no "meantime"
-                return k > i + n and noun_lemma(words[k - 1].lower) in self.lexicon.things and self.verb_after(k + 1)
+                return k > i + n and (noun_lemma(words[k - 1].lower) in self.lexicon.things or is_room_word(
+                    [w.lower for w in words[i + n:k] if w.lower not in NP_OPENERS])) and self.verb_after(k + 1)
+                #   or a room's name ("*In the bedroom,* could you look for ...", words28)
             if low in END_MARKS or low in (";", "and", "then") or low in TIME_WORDS or \
                     self.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS:
                 return False

@@ -2284,3 +2284,23 @@ def test_a_phrase_a_place_and_a_finite_verb_is_a_statement(library: Library) -> 
 
 def test_a_partitive_after_the_verbs_person(library: Library) -> None:
     assert frames("we're out of bread, could you get us some?", library)[-1][1]["recipient"] == "us"
+
+
+def test_a_room_said_first_is_where(library: Library) -> None:
+    """"In the bedroom, could you ..." dropped the room as a remark beside the command: only a place the taxonomy
+    knows ("In the kitchen,") was taken as a phrase said first; a room's name is one too."""
+    assert frames("In the study, could you look for my glasses?", library) == [
+        ("Find", {"theme": "glass", "ground": "study"})]
+    assert frames("In the meantime, could you find the remote?", library) == [("Find", {"theme": "remote"})]
+
+
+def test_them_takes_up_a_plural_the_dictionary_lacks(library: Library) -> None:
+    assert frames("The oreos are in the cupboard, bring them to me", library) == [
+        ("Bring", {"theme": "oreos", "recipient": "me", "source": "cupboard"})]
+
+
+def test_a_verb_of_going_after_politeness_starts_the_command(library: Library) -> None:
+    """"Morgan is at the door, please go with her" was refused as a statement: "go" after "please" was read as
+    more politeness with no verb after it."""
+    assert frames("Ada is by the lift, please go with her", library) == [
+        ("Follow", {"theme": "Ada", "source": "lift"})]
