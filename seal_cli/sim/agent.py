@@ -236,6 +236,9 @@ class Agent:
         """Whether what the robot does now is a detail of a line already said (a survey's drives and looks)."""
         """The whole-house search for what no prior or detector knows of, started when needed."""
         self.questions: dict[Binding, Question] = dict(questions or {})
+        self.kept: set[str] = set()
+        """The classes whose house-wide count looks only where the map's priors keep them ("all the plates":
+        :meth:`_count_where_kept`, e2e24); a count asked ("how many plates are there?") looks all over."""
         """What each commanded frame asks (:mod:`seal_cli.planning.questions`); a Find, Count or Tell
         that asks nothing is a plain command."""
         self.clock = clock
@@ -1777,6 +1780,8 @@ class Agent:
             n = sum(1 for k in found if k.cls == key) + len(self._fixed_in(key, ground))
             note = "" if complete else f" seen, but it could not look all over it ({complete.message})"
             return f"{n} {noun}{'' if n == 1 else 's'} {where}{note}{self._none_known(key, noun, n)}"
+        if ground is None and key in self.kept and (spots := self.kept_spots(value)):
+            return self._count_where_kept(key, noun, spots)
         if ground is None and self.sweeper is not None and self.scene.map.rooms:
             return self._count_in_house(key, noun)
         n = sum(class_key(d.cls) == key for d in self.world.observe())
@@ -1801,6 +1806,47 @@ class Agent:
         n = sum(1 for k in self.known.values() if k.cls == key and k.id in self.world.items)
         note = f" seen, but it could not look all over {', '.join(unseen)}" if unseen else ""
         return f"{n} {noun}{'' if n == 1 else 's'} in the house{note}{self._none_known(key, noun, n)}"
+
+    def kept_spots(self, value: str) -> list[str]:
+        """Where the map's priors keep a thing of this kind: every place the prior names (by its name or its
+        class: "plate: {cupboard: 0.6}" names each cupboard) and every room it names; empty for a kind the map
+        has no prior of."""
+        from seal_cli.planning.keeping import prior_of
+
+        prior = prior_of(self.scene.map.priors, self.class_of(value))
+        if not prior:
+            return []
+        places = [k.id for k in self.known.values() if not k.movable and k.receptacle and self.prior_names(k, value)]
+        rooms = [r.name for r in self.scene.map.rooms if class_key(r.name) in prior]
+        return [*rooms, *places]
+
+    def _count_where_kept(self, key: str, noun: str, spots: list[str]) -> str:
+        """"All the plates" (e2e24): every room and place the priors keep the kind in is looked all over or into
+        (the nearest next, as the crow flies), not the whole house; then the things of the kind the robot knows,
+        wherever it saw them (those it saw on the way count too)."""
+        left = list(spots)
+        short: list[str] = []
+        said = ", ".join(f"the {s.replace('_', ' ')}" if self.room(s) is not None else s for s in spots)
+        self.say("search", f"looks where the map keeps {noun}s: {said}")
+        while left:
+            here = np.asarray(self.world.robot.pose[:2], dtype=float)
+
+            def far(spot: str) -> float:
+                room = self.room(spot)
+                at = room.centroid if room is not None else self.known[spot].at
+                return float(np.hypot(at[0] - here[0], at[1] - here[1]))
+
+            spot = min(left, key=far)
+            left.remove(spot)
+            _, _, complete = self.look_over(spot)
+            if not complete.ok:
+                short.append(spot.replace("_", " "))
+            if self.exhausted() is not None:
+                short.extend(s.replace("_", " ") for s in left)
+                break
+        n = sum(1 for k in self.known.values() if k.cls == key and k.id in self.world.items)
+        note = f" seen, but it could not look at {', '.join(short)}" if short else ""
+        return f"{n} {noun}{'' if n == 1 else 's'} where the map keeps them{note}"
 
     def _is_place_class(self, key: str) -> bool:
         """Whether a class is one of the map's places' (a sofa, a bed): known from the map, not sought."""
