@@ -255,12 +255,12 @@ def _legs(trail: np.ndarray, records: Sequence[Record]) -> list[tuple[str, np.nd
     legs: list[tuple[str, np.ndarray]] = []
     for k, (begun, text) in enumerate(starts):
         end = starts[k + 1][0] if k + 1 < len(starts) else np.inf
-        inside = (along >= begun - 1e-6) & (along <= end + 1e-6)
-        if np.count_nonzero(inside) < 2 or end - begun <= 1e-6:
+        if end - begun <= 1e-6:
             continue
-        first = max(int(np.argmax(inside)) - 1, 0)      # from the point before: the legs join up
-        last = int(len(inside) - 1 - np.argmax(inside[::-1]))
-        legs.append((text, trail[first:last + 1]))
+        first = max(int(np.searchsorted(along, begun + 1e-6)) - 1, 0)    # the last point at or before its start
+        last = min(int(np.searchsorted(along, end - 1e-6)), len(trail) - 1)   # the first at or after its end
+        if last > first:
+            legs.append((text, trail[first:last + 1]))
     return legs
 
 

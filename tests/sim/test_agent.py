@@ -623,3 +623,25 @@ def test_all_of_a_kind_is_counted_first_then_every_one_seen_is_done(library: Lib
     assert result.completed and sum("is in sink_1 already" in t for t in texts) == 1
     assert sum(t.startswith("put cup_") and t.endswith("in sink_1") for t in texts) == 2
     assert all(i.parent == "sink_1" for i in agent.world.items.values() if i.cls == "cup")
+
+
+def test_all_of_a_kind_is_counted_where_the_maps_priors_keep_it_not_all_over_the_house(library: Library) -> None:
+    """e2e24: "put all the plates on the kitchen table" on the student house looked all over its nine rooms and
+    into every wardrobe first, though the map's prior keeps plates only in the cupboard, the sink and on the
+    kitchen table. The count looks there (every place and room the prior names, by name or class: the four desks
+    for the cups), then moves every plate it saw; a kind the map has no prior of is still looked for all over."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+
+    house = load_map(str(map_path("student_house")))
+    agent, result = pipeline.run_on_map(house, "put all the plates on the kitchen table", library,
+                                        make_policy("oracle"), rng=np.random.default_rng(0))
+    texts = [r.text for r in agent.records]
+    assert result.completed and "then every plate it saw (3)" in texts
+    assert "looks where the map keeps plates: sink_1, cupboard_1, kitchen_table_1" in texts
+    assert not any(t.startswith("looks all over the") for t in texts)
+    assert all(i.parent == "kitchen_table_1" for i in agent.world.items.values() if i.cls == "plate")
+    assert set(agent.kept_spots("cup")) == {"kitchen_table_1", "cupboard_1", "desk_1", "desk_2", "desk_3", "desk_4"}
+    assert agent.kept_spots("guitar")[:1] == ["red_room"] and "living_room" in agent.kept_spots("guitar")
+    assert agent.kept_spots("pillow") == []
