@@ -649,6 +649,9 @@ class Agent:
         there = [k for k in candidates if place is not None and self.world.items[k.id].parent == place]
         if there:          # "the mug on the coffee table": one seen there, not the nearest mug elsewhere (e2e23)
             candidates = there
+        elif place is not None and self.known[place].openable and place not in self.inspected | self.unreachable \
+                and place in self.said_places(value):
+            return None    # "the cup in the cupboard": not one seen on the way before it looked in (e2e24)
         if previous is not None and any(k.id == previous for k in candidates):
             return previous
         return self.policy.choose(self, key, candidates) or self.nearest(candidates)
@@ -706,8 +709,8 @@ class Agent:
         (:meth:`said_places`), or a search for such a thing first, while none is seen (it then looks into it).
         An Outcome (None: looked) when it did something; False-y when there is nothing said to look at."""
         role = next((r for r, v in binding.values if v == value), None)
-        things = [p for p in self.said_places(value) if self.world.items[p].movable and p not in self.inspected
-                  and p not in self.unreachable]
+        things = [p for p in self.said_places(value) if (self.world.items[p].movable or self._shut_said(p, value))
+                  and p not in self.inspected and p not in self.unreachable]
         if things:
             self.look_where_said_at(things[0], value, binding, role)
             return Outcome(True, "looked")
@@ -721,6 +724,14 @@ class Agent:
                     break
             return Outcome(True, "looked")
         return None
+
+    def _shut_said(self, place: str, value: str) -> bool:
+        """Whether a place the command says the thing is in is shut and holds no thing of its kind the robot knows
+        of: what is inside is seen only by opening it, so the robot goes there first ("the cup in the cupboard",
+        e2e24: the cups seen on the way are not the one meant, :meth:`resolve`)."""
+        item = self.world.items[place]
+        return self.known[place].openable and not item.is_open and not any(
+            k.parent == place and k.cls == self.class_of(value) for k in self.known.values() if k.movable)
 
     def look_where_said_at(self, where: str, value: str, binding: Binding, role: str | None) -> None:
         """Look into a place or thing the command said a thing of this kind is in or on, saying so; not tried again
