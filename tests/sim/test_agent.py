@@ -645,3 +645,17 @@ def test_all_of_a_kind_is_counted_where_the_maps_priors_keep_it_not_all_over_the
     assert set(agent.kept_spots("cup")) == {"kitchen_table_1", "cupboard_1", "desk_1", "desk_2", "desk_3", "desk_4"}
     assert agent.kept_spots("guitar")[:1] == ["red_room"] and "living_room" in agent.kept_spots("guitar")
     assert agent.kept_spots("pillow") == []
+
+
+def test_a_thing_said_to_be_in_a_shut_place_is_taken_from_there_not_one_seen_on_the_way(library: Library) -> None:
+    """e2e24: "bring me the cup in the cupboard" on the flat handed over the cup on the dining table it saw on its
+    way ("not in cupboard_1, where the command said it was"), 9.22 m; the cup meant is in the shut cupboard. It
+    goes to the cupboard first, opens it and brings cup_3."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    agent, result = pipeline.run_on_map(load_map("flat"), "bring me the cup in the cupboard", library,
+                                        make_policy("sefm", 100), rng=np.random.default_rng(0))
+    texts = [r.text for r in agent.records]
+    assert result.completed and "picked up cup_3 from cupboard_1" in texts and "handed cup_3 to me" in texts
+    assert not any("where the command said it was" in t for t in texts)
