@@ -409,11 +409,12 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
 
 def _the_other(phrase: Phrase, value: str, earlier: Sequence[Mapping[str, tuple[str, ...]]],
                things: Things) -> str | None:
-    """"The other mug" after a mug the command named before (e2e24: "put the mug from the sink on the kitchen
-    table, then bring me the other mug"): English's "other" picks a thing of the kind that is not the one said, so
+    """"The other mug" (or "another mug") after a mug the command named before (e2e24: "put the mug from the sink on
+    the kitchen table, then bring me the other mug"): English's "other" picks a thing of the kind that is not the
+    one said, so
     the first of the kind no earlier frame names (a new one when the map has no more: the run looks for it and
     says there is none). None when the phrase says no "other" or nothing of the kind was named before it."""
-    if "other" not in (w.lower() for w in (phrase.text or "").split()):
+    if not {"other", "another"} & {w.lower() for w in (phrase.text or "").split()}:
         return None
     cls = things.class_of(things.name(value))
     said = {v for values in earlier for vs in values.values() for v in vs if things.class_of(v) == cls}
