@@ -659,3 +659,20 @@ def test_a_thing_said_to_be_in_a_shut_place_is_taken_from_there_not_one_seen_on_
     texts = [r.text for r in agent.records]
     assert result.completed and "picked up cup_3 from cupboard_1" in texts and "handed cup_3 to me" in texts
     assert not any("where the command said it was" in t for t in texts)
+
+
+def test_a_further_instance_in_a_house_is_sought_by_its_prior_where_not_yet_looked(library: Library) -> None:
+    """e2e24: "then bring me the other mug" on the student house (the first mug taken from the sink to the kitchen
+    table, the other on the green room's desk): the whole-plan search weighed SeFM's mug belief, drawn onto the
+    first mug, and drove 187.23 m between the hall and the living room before it found the other. It weighs the
+    mug's prior less the places looked into (as the single-room search does): the cupboard, then the desks."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+
+    agent, result = pipeline.run_on_map(load_map(str(map_path("student_house"))),
+                                        "put the mug from the sink on the kitchen table, then bring me the other mug",
+                                        library, make_policy("sefm", 100), rng=np.random.default_rng(0))
+    texts = [r.text for r in agent.records]
+    assert result.completed and "put mug_1 on kitchen_table_1" in texts and "handed mug_2 to me" in texts
+    assert result.path_m < 60.0, result.path_m
