@@ -1026,9 +1026,10 @@ def _where_said_first(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[s
                       things: Things, text: str) -> list[Binding]:
     """The frames that take a theme from where its phrase says it is, for a frame with no element to
     carry that: "wash the cup in the bedroom" picks the cup up there first (Pick with the room as its
-    source; with the place, when a place is said: "put the mug from the sink on the table", e2e24), "switch on the lamp in the study" finds the lamp there first (Find with the room or place
-    as its ground). A where the map lacks is refused ("the townhouse has no living room"), never
-    dropped. Nothing for a frame with a source or a ground of its own, which the parser fills."""
+    source; with the place, when a place is said: "put the mug from the sink on the table", e2e24), "switch on
+    the lamp in the study" finds the lamp there first (Find with the room or place as its ground). A where the
+    map lacks is refused ("the townhouse has no living room"), never dropped. Nothing for a frame with a source
+    or a ground of its own, which the parser fills."""
     names = things.names
     phrase = evoked.elements.get("theme")
     if (names is None or phrase is None or not phrase.text or phrase.conjuncts or "theme" not in values

@@ -1839,15 +1839,13 @@ class Agent:
         short: list[str] = []
         said = ", ".join(f"the {s.replace('_', ' ')}" if self.room(s) is not None else s for s in spots)
         self.say("search", f"looks where the map keeps {noun}s: {said}")
+        def at(spot: str) -> tuple[float, float]:
+            room = self.room(spot)
+            return tuple(room.centroid) if room is not None else self.known[spot].at
+
         while left:
-            here = np.asarray(self.world.robot.pose[:2], dtype=float)
-
-            def far(spot: str) -> float:
-                room = self.room(spot)
-                at = room.centroid if room is not None else self.known[spot].at
-                return float(np.hypot(at[0] - here[0], at[1] - here[1]))
-
-            spot = min(left, key=far)
+            x, y = self.world.robot.pose[:2]
+            spot = min(left, key=lambda s: math.dist(at(s), (x, y)))
             left.remove(spot)
             _, _, complete = self.look_over(spot)
             if not complete.ok:
