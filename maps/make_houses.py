@@ -1,7 +1,8 @@
 """Draw the occupancy images of the example houses ``townhouse.yaml``, ``office_floor.yaml``,
 ``cafe.yaml`` and ``clinic.yaml``, and of the context suite's unseen houses ``farmhouse.yaml`` and
 ``terrace.yaml``, the L-shaped ``bungalow.yaml``, ``lodge.yaml``, e2e21's held-out holiday lodge, and
-``flat.yaml``, e2e22's held-out long flat, and ``carehome.yaml``, e2e23's held-out care home (run once; the PGMs are committed next to this script).
+``flat.yaml``, e2e22's held-out long flat, and ``carehome.yaml``, e2e23's held-out care home, and
+``student_house.yaml``, e2e24's held-out student house (run once; the PGMs are committed next to this script).
 
     python maps/make_houses.py          # rewrites maps/<house>.pgm for each of HOUSES
 
@@ -209,7 +210,25 @@ CAREHOME = House(
     ),
 )
 
-HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC, FARMHOUSE, TERRACE, BUNGALOW, LODGE, FLAT, CAREHOME)
+STUDENT_HOUSE = House(
+    "student_house", (0.0, 0.0, 14.0, 10.0),
+    walls=(
+        ((3.0, 0.0, 3.0, 5.0), ((3.5, 4.5),)),                 # hall | blue room, hall | corridor
+        ((0.0, 5.0, 14.0, 5.0), ((1.0, 2.0), (4.5, 5.5), (8.0, 9.0), (12.0, 13.0))),  # hall, corridor | the north
+        ((3.0, 3.0, 14.0, 3.0), ((3.5, 4.3), (6.4, 7.2), (9.2, 10.0), (11.9, 12.7))),  # corridor | four bedrooms
+        ((5.75, 0.0, 5.75, 3.0), ()),                          # blue room | green room
+        ((8.5, 0.0, 8.5, 3.0), ()),                            # green room | red room
+        ((11.25, 0.0, 11.25, 3.0), ()),                        # red room | yellow room
+        ((7.0, 5.0, 7.0, 10.0), ((7.5, 8.5),)),                # kitchen | living room
+        ((11.0, 5.0, 11.0, 10.0), ()),                         # living room | bathroom
+    ),
+    blocks=(
+        (0.1, 4.2, 0.9, 4.9),      # the boiler cupboard in the hall's north-west corner
+        (12.6, 8.0, 13.9, 9.9),    # the bath against the bathroom's east wall
+    ),
+)
+
+HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC, FARMHOUSE, TERRACE, BUNGALOW, LODGE, FLAT, CAREHOME, STUDENT_HOUSE)
 
 
 def draw(house: House) -> np.ndarray:

@@ -230,8 +230,10 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
 def _every_seen(agent: Any, parse: Parse, library: Library, vocabulary: Any,
                 m: Map) -> tuple[Any, dict[str, int]] | None:
     """"put all the cups in the sink" on a map whose robot knows no object until it sees it (e2e23): it counts
-    them first, looking all over the house as "count all the cups" does, and the command is then every one it saw
-    (at least one); the count's result, and how many of each kind. None when the command asks for no "all"."""
+    them first, and the command is then every one it saw (at least one); the count's result, and how many of each
+    kind. The count looks where the map's priors keep the kind (e2e24: the cupboard and the sink for the plates,
+    :meth:`~seal_cli.sim.agent.Agent.kept_spots`), and all over the house, as "count all the cups" does, for a kind
+    the map has no prior of. None when the command asks for no "all"."""
     from seal_cli.planning.grounding import MapNames
     from seal_cli.planning.problem import every_said
     from seal_cli.planning.questions import read_questions
@@ -248,11 +250,13 @@ def _every_seen(agent: Any, parse: Parse, library: Library, vocabulary: Any,
             continue
         agent.questions.update(read_questions(count, problem.commanded, MapNames(m, library.taxonomy)))
         agent.classes.update({class_key(k): class_key(v) for k, v in problem.state.classes.items()})
-        agent.say("plan", f"counts first: {phrase.text} (looks all over the house)")
+        key = class_key(problem.commanded[0].elements["theme"])
+        agent.kept.add(key)
+        where = "looks where the map keeps them" if agent.kept_spots(key) else "looks all over the house"
+        agent.say("plan", f"counts first: {phrase.text} ({where})")
         result = agent.run(problem.commanded)
         if not result.completed:
             return result, counted
-        key = class_key(problem.commanded[0].elements["theme"])
         counted[key] = max(1, sum(1 for k in agent.known.values() if k.cls == key and k.id in agent.world.items))
     return None if result is None else (result, counted)
 

@@ -222,6 +222,25 @@ class Things:
             return 0
         return sum(1 for o in self.map.objects if class_key(o.cls) == cls)
 
+    def lies_in(self, name: str, where: str) -> bool:
+        """Whether the map has the thing ``name`` in or on the place ``where``, or in the room ``where`` (on a
+        place of it, or on its floor)."""
+        at = next((f.args[1] for f in self.facts if f.predicate == "in" and f.args[0] == name), None)
+        if at is not None:
+            return at == where or self.rooms.get(at) == where
+        return self.rooms.get(name) == where
+
+    def swap(self, one: str, other: str) -> None:
+        """Let two things of one class trade names: what the map says of each (its ``in`` facts, its room) is
+        said of the other."""
+        def named(value: str) -> str:
+            return other if value == one else one if value == other else value
+
+        self.facts = {Fact(f.predicate, tuple(named(a) for a in f.args)) if f.predicate == "in" else f
+                      for f in self.facts}
+        rooms = {named(k): v for k, v in self.rooms.items() if k in (one, other)}
+        self.rooms = {k: v for k, v in self.rooms.items() if k not in (one, other)} | rooms
+
     def hold(self, holding: str | None) -> None:
         """Keep what the robot holds as the command starts (:attr:`held`): ``holding`` (a class, refused if
         malformed or a room, place or person of the map), else the map's robot's."""
@@ -334,10 +353,12 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
     (:func:`_kept_in`)."""
     from seal_cli.language.english import PERSON_PRONOUNS, PRONOUNS
 
-    if phrase.conjuncts:        # "the apple and the pear": both
-        return tuple(dict.fromkeys(v for c in phrase.conjuncts
-                                   for v in _values(c, earlier, things, text, category, asked, carried, gone_to,
-                                                    vessel)))
+    if phrase.conjuncts:        # "the apple and the pear": both ("the book and the other book": two books)
+        found: list[str] = []
+        for c in phrase.conjuncts:
+            before = [*earlier, {"": tuple(found)}] if found else earlier
+            found += _values(c, before, things, text, category, asked, carried, gone_to, vessel)
+        return tuple(dict.fromkeys(found))
     if phrase.refers_to is not None:
         index, role = phrase.refers_to
         if 0 <= index < len(earlier) and role in earlier[index]:
@@ -378,10 +399,28 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
         raise _located(f"the {m.name} has no {word} to carry, only {where}, which the robot cannot get {word} "
                        f"from{known}", phrase, text)
     count = _count(phrase, value, things)
+    if count == 1 and (other := _the_other(phrase, value, earlier, things)) is not None:
+        return (other,)
     if count > MAX_COUNT:
         raise _located(f"{phrase.text!r} asks for {count:,} things; seal plans for at most {MAX_COUNT} "
                        "of a kind", phrase, text)
     return things.instances(value, count)
+
+
+def _the_other(phrase: Phrase, value: str, earlier: Sequence[Mapping[str, tuple[str, ...]]],
+               things: Things) -> str | None:
+    """"The other mug" (or "another mug") after a mug the command named before (e2e24: "put the mug from the sink on
+    the kitchen table, then bring me the other mug"): English's "other" picks a thing of the kind that is not the
+    one said, so
+    the first of the kind no earlier frame names (a new one when the map has no more: the run looks for it and
+    says there is none). None when the phrase says no "other" or nothing of the kind was named before it."""
+    if not {"other", "another"} & {w.lower() for w in (phrase.text or "").split()}:
+        return None
+    cls = things.class_of(things.name(value))
+    said = {v for values in earlier for vs in values.values() for v in vs if things.class_of(v) == cls}
+    if not said:
+        return None
+    return next(n for n in things.instances(value, len(said) + 1) if n not in said)
 
 
 def _comes_from(value: str, things: Things) -> list[Any]:
@@ -987,9 +1026,10 @@ def _where_said_first(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[s
                       things: Things, text: str) -> list[Binding]:
     """The frames that take a theme from where its phrase says it is, for a frame with no element to
     carry that: "wash the cup in the bedroom" picks the cup up there first (Pick with the room as its
-    source), "switch on the lamp in the study" finds the lamp there first (Find with the room or place
-    as its ground). A where the map lacks is refused ("the townhouse has no living room"), never
-    dropped. Nothing for a frame with a source or a ground of its own, which the parser fills."""
+    source; with the place, when a place is said: "put the mug from the sink on the table", e2e24), "switch on
+    the lamp in the study" finds the lamp there first (Find with the room or place as its ground). A where the
+    map lacks is refused ("the townhouse has no living room"), never dropped. Nothing for a frame with a source
+    or a ground of its own, which the parser fills."""
     names = things.names
     phrase = evoked.elements.get("theme")
     if (names is None or phrase is None or not phrase.text or phrase.conjuncts or "theme" not in values
@@ -1015,8 +1055,8 @@ def _where_said_first(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[s
     for value in values["theme"]:
         if names.by_id(value) is not None or value in things.people:     # a map thing: it stays where it is
             continue
-        if held and room is not None:
-            first.append(library.frame("Pick").bind({"theme": value, "source": room}))
+        if held and room is not None:     # from the place said, when one is ("the mug from the sink", e2e24)
+            first.append(library.frame("Pick").bind({"theme": value, "source": there.id}))
         elif not held:
             first.append(library.frame("Find").bind({"theme": value, "ground": there.id}))
     return first
@@ -1042,6 +1082,7 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
                 things.name(element.default)
     executed = [(p.text, b) for p in done for b in commanded_frames(p, library, things)]
     commanded = commanded_frames(parse, library, things)
+    _the_ones_said_where(commanded, things)
     state = things.state(holding)
     changed: dict[Fact, str] = {}  # a fact an earlier done command made true or false → that command
     for text, binding in executed:
@@ -1055,6 +1096,31 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
     return Problem(parse.text, tuple(commanded), state, tuple(unknown_to_map(commanded, things)) if map else (),
                    tuple(b for b in things.put_away if b in commanded),
                    tuple(b for b in things.put_back if b in commanded), dict(things.called))
+
+
+def _the_ones_said_where(commanded: Sequence[Binding], things: Things) -> None:
+    """A thing of a kind the map has several of, said with where it is ("the mug in the green room", "the cup in
+    the cupboard": the frame's source), is the one there (e2e24): the command's name of it (``mug``, the map's
+    first mug) trades names with the map's thing of that class in that room or place, when the first is not there
+    and the other is named by no frame of the command. Without it the plan took the first mug, in the kitchen's
+    sink, for the one to take to the kitchen and planned nothing ("already in the kitchen")."""
+    if things.map is None:
+        return
+    used = {v for b in commanded for _, v in b.values}
+    settled: set[str] = set()
+    for binding in commanded:
+        theme, source = binding.elements.get("theme"), binding.elements.get("source")
+        if (theme is None or source is None or theme in settled or theme in things.fixed
+                or theme not in things.classes or theme in things.people):
+            continue
+        settled.add(theme)
+        if things.lies_in(theme, source):
+            continue
+        cls = things.classes[theme]
+        there = next((n for n, c in things.classes.items() if c == cls and n != theme and n not in used
+                      and n not in things.fixed and things.lies_in(n, source)), None)
+        if there is not None:
+            things.swap(theme, there)
 
 
 def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:

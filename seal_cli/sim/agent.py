@@ -236,6 +236,9 @@ class Agent:
         """Whether what the robot does now is a detail of a line already said (a survey's drives and looks)."""
         """The whole-house search for what no prior or detector knows of, started when needed."""
         self.questions: dict[Binding, Question] = dict(questions or {})
+        self.kept: set[str] = set()
+        """The classes whose house-wide count looks only where the map's priors keep them ("all the plates":
+        :meth:`_count_where_kept`, e2e24); a count asked ("how many plates are there?") looks all over."""
         """What each commanded frame asks (:mod:`seal_cli.planning.questions`); a Find, Count or Tell
         that asks nothing is a plain command."""
         self.clock = clock
@@ -646,6 +649,9 @@ class Agent:
         there = [k for k in candidates if place is not None and self.world.items[k.id].parent == place]
         if there:          # "the mug on the coffee table": one seen there, not the nearest mug elsewhere (e2e23)
             candidates = there
+        elif place is not None and self.known[place].openable and place not in self.inspected | self.unreachable \
+                and place in self.said_places(value):
+            return None    # "the cup in the cupboard": not one seen on the way before it looked in (e2e24)
         if previous is not None and any(k.id == previous for k in candidates):
             return previous
         return self.policy.choose(self, key, candidates) or self.nearest(candidates)
@@ -703,8 +709,8 @@ class Agent:
         (:meth:`said_places`), or a search for such a thing first, while none is seen (it then looks into it).
         An Outcome (None: looked) when it did something; False-y when there is nothing said to look at."""
         role = next((r for r, v in binding.values if v == value), None)
-        things = [p for p in self.said_places(value) if self.world.items[p].movable and p not in self.inspected
-                  and p not in self.unreachable]
+        things = [p for p in self.said_places(value) if (self.world.items[p].movable or self._shut_said(p, value))
+                  and p not in self.inspected and p not in self.unreachable]
         if things:
             self.look_where_said_at(things[0], value, binding, role)
             return Outcome(True, "looked")
@@ -718,6 +724,14 @@ class Agent:
                     break
             return Outcome(True, "looked")
         return None
+
+    def _shut_said(self, place: str, value: str) -> bool:
+        """Whether a place the command says the thing is in is shut and holds no thing of its kind the robot knows
+        of: what is inside is seen only by opening it, so the robot goes there first ("the cup in the cupboard",
+        e2e24: the cups seen on the way are not the one meant, :meth:`resolve`)."""
+        item = self.world.items[place]
+        return self.known[place].openable and not item.is_open and not any(
+            k.parent == place and k.cls == self.class_of(value) for k in self.known.values() if k.movable)
 
     def look_where_said_at(self, where: str, value: str, binding: Binding, role: str | None) -> None:
         """Look into a place or thing the command said a thing of this kind is in or on, saying so; not tried again
@@ -1777,6 +1791,8 @@ class Agent:
             n = sum(1 for k in found if k.cls == key) + len(self._fixed_in(key, ground))
             note = "" if complete else f" seen, but it could not look all over it ({complete.message})"
             return f"{n} {noun}{'' if n == 1 else 's'} {where}{note}{self._none_known(key, noun, n)}"
+        if ground is None and key in self.kept and (spots := self.kept_spots(value)):
+            return self._count_where_kept(key, noun, spots)
         if ground is None and self.sweeper is not None and self.scene.map.rooms:
             return self._count_in_house(key, noun)
         n = sum(class_key(d.cls) == key for d in self.world.observe())
@@ -1801,6 +1817,45 @@ class Agent:
         n = sum(1 for k in self.known.values() if k.cls == key and k.id in self.world.items)
         note = f" seen, but it could not look all over {', '.join(unseen)}" if unseen else ""
         return f"{n} {noun}{'' if n == 1 else 's'} in the house{note}{self._none_known(key, noun, n)}"
+
+    def kept_spots(self, value: str) -> list[str]:
+        """Where the map's priors keep a thing of this kind: every place the prior names (by its name or its
+        class: "plate: {cupboard: 0.6}" names each cupboard) and every room it names; empty for a kind the map
+        has no prior of."""
+        from seal_cli.planning.keeping import prior_of
+
+        prior = prior_of(self.scene.map.priors, self.class_of(value))
+        if not prior:
+            return []
+        places = [k.id for k in self.known.values() if not k.movable and k.receptacle and self.prior_names(k, value)]
+        rooms = [r.name for r in self.scene.map.rooms if class_key(r.name) in prior]
+        return [*rooms, *places]
+
+    def _count_where_kept(self, key: str, noun: str, spots: list[str]) -> str:
+        """"All the plates" (e2e24): every room and place the priors keep the kind in is looked all over or into
+        (the nearest next, as the crow flies), not the whole house; then the things of the kind the robot knows,
+        wherever it saw them (those it saw on the way count too)."""
+        left = list(spots)
+        short: list[str] = []
+        said = ", ".join(f"the {s.replace('_', ' ')}" if self.room(s) is not None else s for s in spots)
+        self.say("search", f"looks where the map keeps {noun}s: {said}")
+        def at(spot: str) -> tuple[float, float]:
+            room = self.room(spot)
+            return tuple(room.centroid) if room is not None else self.known[spot].at
+
+        while left:
+            x, y = self.world.robot.pose[:2]
+            spot = min(left, key=lambda s: math.dist(at(s), (x, y)))
+            left.remove(spot)
+            _, _, complete = self.look_over(spot)
+            if not complete.ok:
+                short.append(spot.replace("_", " "))
+            if self.exhausted() is not None:
+                short.extend(s.replace("_", " ") for s in left)
+                break
+        n = sum(1 for k in self.known.values() if k.cls == key and k.id in self.world.items)
+        note = f" seen, but it could not look at {', '.join(short)}" if short else ""
+        return f"{n} {noun}{'' if n == 1 else 's'} where the map keeps them{note}"
 
     def _is_place_class(self, key: str) -> bool:
         """Whether a class is one of the map's places' (a sofa, a bed): known from the map, not sought."""

@@ -235,17 +235,52 @@ def _acts(records: Sequence[Record]) -> list[tuple[tuple[float, float, float], s
     return out
 
 
+LEG_COLOURS = ("#1f77b4", "#17becf", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#9467bd", "#2ca02c")
+"""The colours of a multi-step run's legs, step by step (blue first, as a one-step run's path; none is the orange
+of the belief clouds or the red of the moved things)."""
+
+ONE_CARD_M = 0.5
+"""Actions done within this distance of each other are said on one card (e2e24: "picked up watering_can_1" 0.15 m
+from "handed watering_can_1 to Walter" drew two cards over each other at the end)."""
+
+
+def _legs(trail: np.ndarray, records: Sequence[Record]) -> list[tuple[str, np.ndarray]]:
+    """The path cut into the legs of the frames the robot executed, in order (each frame's line, and the points
+    driven from its start to the next frame's start, by the distance driven when each began); one leg or none
+    when the run had fewer than two frames that drove. A frame that drove nothing has no leg."""
+    starts = [(r.path_m, r.text) for r in records if r.kind == "frame"]
+    if len(trail) < 2 or not starts:
+        return []
+    along = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(trail, axis=0).T))])
+    legs: list[tuple[str, np.ndarray]] = []
+    for k, (begun, text) in enumerate(starts):
+        end = starts[k + 1][0] if k + 1 < len(starts) else np.inf
+        if end - begun <= 1e-6:
+            continue
+        first = max(int(np.searchsorted(along, begun + 1e-6)) - 1, 0)    # the last point at or before its start
+        last = min(int(np.searchsorted(along, end - 1e-6)), len(trail) - 1)   # the first at or after its end
+        if last > first:
+            legs.append((text, trail[first:last + 1]))
+    return legs
+
+
 def _draw_run(ax: Any, agent: Agent) -> None:
     """The path, where the robot acted, and where the things are."""
     from seal_cli.maps.drawing import _HALO, LABEL, LABEL_Z
 
     trail = np.asarray(agent.world.robot.trajectory)
-    ax.plot(trail[:, 0], trail[:, 1], "-", color="#1f77b4", linewidth=2, zorder=4, label="path")
+    legs = _legs(trail, agent.records)
+    if len(legs) < 2:
+        ax.plot(trail[:, 0], trail[:, 1], "-", color="#1f77b4", linewidth=2, zorder=4, label="path")
+    for k, (frame, points) in enumerate(legs if len(legs) > 1 else []):   # each step's leg in its own colour
+        ax.plot(points[:, 0], points[:, 1], "-", color=LEG_COLOURS[k % len(LEG_COLOURS)], linewidth=2, zorder=4,
+                label=_short(f"step {k + 1}: {frame}"))
     ends = {"markeredgecolor": "white", "markeredgewidth": 1.2, "zorder": LABEL_Z + 1}   # over labels and acts
     ax.plot(*trail[0], "o", color="#1f77b4", markersize=9, label="start", **ends)
     stood: dict[tuple[float, float], list[str]] = {}      # where the robot stood for each action, numbered
     for n, (pose, text) in enumerate(_acts(agent.records), 1):
-        stood.setdefault((round(pose[0], 2), round(pose[1], 2)), []).append(f"{n}. {text}")
+        near = next((at for at in stood if math.dist(at, pose[:2]) <= ONE_CARD_M), None)   # one card a spot
+        stood.setdefault(near or (round(pose[0], 2), round(pose[1], 2)), []).append(f"{n}. {text}")
     xmin, _, xmax, _ = agent.scene.map.bounds
     for k, (at, texts) in enumerate(stood.items()):
         ax.plot(at[0], at[1], "D", color="#2ca02c", markeredgecolor="black", markersize=7, zorder=7,

@@ -374,3 +374,36 @@ def test_all_of_a_kind_is_every_one_the_map_places(library: Library, text: str, 
 
     m = load_map(Path(__file__).resolve().parents[2] / "maps" / "flat.yaml")
     assert [b.elements["theme"] for b in problem_of_text(text, library, map=m).commanded] == themes
+
+
+def _student_house_plan(text: str, library: Library) -> list[str]:
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "student_house.yaml")
+    return [str(step) for step in plan(text, library, map=m).steps]
+
+
+@pytest.mark.parametrize(("text", "first"), [
+    # the map's first mug is in the kitchen's sink: the one in the green room is meant, and taken to the kitchen
+    ("take the mug in the green room to the kitchen", "Pick(theme=mug, source=desk_2)"),
+    ("bring me the kettle from the yellow room", "Pick(theme=kettle, source=desk_4)"),   # not the kitchen's
+    ("bring me the cup in the blue room", "Pick(theme=cup, source=desk_1)"),
+    ("bring me the kettle", "Pick(theme=kettle, source=counter_1)"),     # nothing said: the map's first, as before
+])
+def test_a_thing_said_with_where_it_is_is_the_maps_one_there(library: Library, text: str, first: str) -> None:
+    """e2e24: on the student house, with a mug in the sink and one on the green room's desk, "take the mug in the
+    green room to the kitchen" planned nothing (the first mug is in the kitchen already)."""
+    assert _student_house_plan(text, library)[0] == first
+
+
+def test_the_other_one_is_a_thing_of_the_kind_no_earlier_frame_names(library: Library) -> None:
+    """e2e24: "then bring me the other mug" picked up the mug just put on the kitchen table again."""
+    steps = _student_house_plan("put the mug from the sink on the kitchen table, then bring me the other mug",
+                                library)
+    assert steps == ["Pick(theme=mug, source=sink_1)", "Place(theme=mug, goal=kitchen_table_1)",
+                     "Pick(theme=mug_2, source=desk_2)", "Bring(theme=mug_2, recipient=me)"]
+    two = _student_house_plan("bring me the guitar and the other guitar", library)   # one on the map: a new one
+    assert [s for s in two if s.startswith("Bring")] == ["Bring(theme=guitar, recipient=me)",
+                                                          "Bring(theme=guitar_2, recipient=me)"]
+    assert _student_house_plan("bring me the other mug", library)[0] == "Pick(theme=mug, source=sink_1)"

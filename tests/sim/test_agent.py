@@ -623,3 +623,56 @@ def test_all_of_a_kind_is_counted_first_then_every_one_seen_is_done(library: Lib
     assert result.completed and sum("is in sink_1 already" in t for t in texts) == 1
     assert sum(t.startswith("put cup_") and t.endswith("in sink_1") for t in texts) == 2
     assert all(i.parent == "sink_1" for i in agent.world.items.values() if i.cls == "cup")
+
+
+def test_all_of_a_kind_is_counted_where_the_maps_priors_keep_it_not_all_over_the_house(library: Library) -> None:
+    """e2e24: "put all the plates on the kitchen table" on the student house looked all over its nine rooms and
+    into every wardrobe first, though the map's prior keeps plates only in the cupboard, the sink and on the
+    kitchen table. The count looks there (every place and room the prior names, by name or class: the four desks
+    for the cups), then moves every plate it saw; a kind the map has no prior of is still looked for all over."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+
+    house = load_map(str(map_path("student_house")))
+    agent, result = pipeline.run_on_map(house, "put all the plates on the kitchen table", library,
+                                        make_policy("oracle"), rng=np.random.default_rng(0))
+    texts = [r.text for r in agent.records]
+    assert result.completed and "then every plate it saw (3)" in texts
+    assert "looks where the map keeps plates: sink_1, cupboard_1, kitchen_table_1" in texts
+    assert not any(t.startswith("looks all over the") for t in texts)
+    assert all(i.parent == "kitchen_table_1" for i in agent.world.items.values() if i.cls == "plate")
+    assert set(agent.kept_spots("cup")) == {"kitchen_table_1", "cupboard_1", "desk_1", "desk_2", "desk_3", "desk_4"}
+    assert agent.kept_spots("guitar")[:1] == ["red_room"] and "living_room" in agent.kept_spots("guitar")
+    assert agent.kept_spots("pillow") == []
+
+
+def test_a_thing_said_to_be_in_a_shut_place_is_taken_from_there_not_one_seen_on_the_way(library: Library) -> None:
+    """e2e24: "bring me the cup in the cupboard" on the flat handed over the cup on the dining table it saw on its
+    way ("not in cupboard_1, where the command said it was"), 9.22 m; the cup meant is in the shut cupboard. It
+    goes to the cupboard first, opens it and brings cup_3."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    agent, result = pipeline.run_on_map(load_map("flat"), "bring me the cup in the cupboard", library,
+                                        make_policy("sefm", 100), rng=np.random.default_rng(0))
+    texts = [r.text for r in agent.records]
+    assert result.completed and "picked up cup_3 from cupboard_1" in texts and "handed cup_3 to me" in texts
+    assert not any("where the command said it was" in t for t in texts)
+
+
+def test_a_further_instance_in_a_house_is_sought_by_its_prior_where_not_yet_looked(library: Library) -> None:
+    """e2e24: "then bring me the other mug" on the student house (the first mug taken from the sink to the kitchen
+    table, the other on the green room's desk): the whole-plan search weighed SeFM's mug belief, drawn onto the
+    first mug, and drove 187.23 m between the hall and the living room before it found the other. It weighs the
+    mug's prior less the places looked into (as the single-room search does): the cupboard, then the desks."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+
+    agent, result = pipeline.run_on_map(load_map(str(map_path("student_house"))),
+                                        "put the mug from the sink on the kitchen table, then bring me the other mug",
+                                        library, make_policy("sefm", 100), rng=np.random.default_rng(0))
+    texts = [r.text for r in agent.records]
+    assert result.completed and "put mug_1 on kitchen_table_1" in texts and "handed mug_2 to me" in texts
+    assert result.path_m < 60.0, result.path_m

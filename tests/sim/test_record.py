@@ -113,8 +113,10 @@ def test_the_png_legend_names_every_mark_and_the_end_is_drawn_over_the_last_acti
     try:
         _draw_run(ax, agent)
         handles, labels = ax.get_legend_handles_labels()
-        assert {"path", "start", "end", "where it acted (numbered)", "things, where they are at the end",
+        assert {"start", "end", "where it acted (numbered)", "things, where they are at the end",
                 "a moved thing, where it was at the start", "people"} <= set(labels) and len(labels) == len(set(labels))
+        assert [t for t in labels if t.startswith("step ")] == ["step 1: Pick(theme=spoon)",   # e2e24: leg by leg
+                                                               "step 2: Bring(theme=spoon, recipient=me)"]
         spoon = agent.started["spoon_1"]       # the spoon moved: a hollow star where it was, a full one where it ended
         assert tuple(handles[labels.index("a moved thing, where it was at the start")].get_xydata()[0]) == spoon
         ends = [tuple(line.get_xydata()[0]) for line in ax.get_lines() if line.get_marker() == "*"
@@ -158,3 +160,62 @@ def test_a_place_closed_after_something_was_taken_out_adds_no_card_of_its_own(li
     assert labels[:2] == ["opened larder_1; inside: jam_1, biscuit_tin_1",
                           "picked up jam_1 from larder_1, closed larder_1"]
     assert not any(text.startswith("closed") for text in labels)
+
+
+def test_the_path_is_cut_into_each_frames_leg_by_the_distance_driven_when_it_began() -> None:
+    """e2e24: a multi-step run's path was one blue line; ``_legs`` cuts it where each frame began (its record's
+    ``path_m``), each leg starting at the point the last one ended, and a frame that drove nothing has none."""
+    import numpy as np
+
+    from seal_cli.sim.agent import Record
+    from seal_cli.sim.record import _legs
+
+    trail = np.array([[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [2.0, 1.0], [2.0, 2.0]])
+    records = [Record("frame", "Pick(theme=cup)", 0, 0.0, (0.0, 0.0, 0.0)),
+               Record("act", "picked up cup_1", 1, 2.0, (2.0, 0.0, 0.0)),
+               Record("frame", "Open(theme=fridge_1)", 2, 2.0, (2.0, 0.0, 0.0)),
+               Record("frame", "Place(theme=cup, goal=me)", 3, 2.0, (2.0, 0.0, 0.0))]
+    legs = _legs(trail, records)
+    assert [name for name, _ in legs] == ["Pick(theme=cup)", "Place(theme=cup, goal=me)"]
+    assert legs[0][1].tolist() == [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0]]
+    assert legs[1][1].tolist() == [[2.0, 0.0], [2.0, 1.0], [2.0, 2.0]]
+    assert _legs(trail[:1], records) == [] and _legs(trail, records[1:2]) == []
+
+
+def test_a_multi_step_run_draws_each_leg_in_its_colour_and_one_card_a_spot(library: Any) -> None:
+    """e2e24: "bring Edith a blanket and Walter the watering can" on the care home: four legs, each named in the
+    legend in a colour of its own; the robot picked up the watering can 0.15 m from where it handed it to Walter,
+    and the two were cards drawn over each other: now one card holds both, no two cards within 0.5 m."""
+    import math
+
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.sim.policies import make_policy
+    from seal_cli.sim.record import ONE_CARD_M, _draw_run
+
+    agent, result = pipeline.run_on_map(load_map("carehome"), "bring Edith a blanket and Walter the watering can",
+                                        library, make_policy("oracle"), rng=np.random.default_rng(0))
+    assert result.completed
+    fig, ax = plt.subplots()
+    try:
+        _draw_run(ax, agent)
+        handles, labels = ax.get_legend_handles_labels()
+        steps = [(h, t) for h, t in zip(handles, labels, strict=True) if t.startswith("step ")]
+        assert [t.split(":")[0] for _, t in steps] == ["step 1", "step 2", "step 3", "step 4"]
+        assert len({h.get_color() for h, _ in steps}) == 4
+        cards = [t for t in ax.texts if "handed" in t.get_text() or "picked up" in t.get_text()]
+        spots = [t.xy for t in cards]
+        assert all(math.dist(a, b) > ONE_CARD_M for i, a in enumerate(spots) for b in spots[i + 1:])
+        picked, handed = (next(r.pose[:2] for r in agent.records if r.text.startswith(what))
+                          for what in ("picked up watering_can_1", "handed watering_can_1 to Walter"))
+        together = any("picked up watering_can_1" in t.get_text() and "handed watering_can_1" in t.get_text()
+                       for t in cards)
+        assert together == (math.dist(picked, handed) <= ONE_CARD_M)
+    finally:
+        plt.close(fig)

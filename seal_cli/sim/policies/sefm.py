@@ -544,14 +544,18 @@ class SeFMPolicy(Policy):
         self._restate(agent)
         points = self.map.free_centres
 
+        sought = agent.class_of(target)
+        further = self.further_prior and self.further(agent, target)
+
         def weights(cls: str) -> np.ndarray:
-            if cls in sefm.object_classes:
+            if further and cls == sought:   # e2e24: the other mug in a house, as in one room (:meth:`further_belief`)
+                w = self._further_unlooked(agent, points, cls)
+            elif cls in sefm.object_classes:
                 w = np.asarray(sefm.object_density(cls, points), dtype=float)
             else:
                 w = np.asarray(self.map.prior(cls).weights, dtype=float)
             return np.where(np.isfinite(w) & (w > 0), w, 0.0)
 
-        sought = agent.class_of(target)
         greedy = None
         if sought in sefm.object_classes:   # object-only's choice now, weighed among the candidates
             w = weights(sought)
@@ -666,6 +670,22 @@ class SeFMPolicy(Policy):
         if len(w) != len(X) or w.sum() <= 0:
             return np.zeros(len(X))
         return above_floor(w / w.sum())
+
+    def _further_unlooked(self, agent: Agent, X: np.ndarray, cls: str) -> np.ndarray:
+        """:meth:`further_belief` for the whole-plan search in a house (e2e24): the class's prior, less the places
+        the robot has looked into or onto from within reach (the single-room search's places model drops them;
+        the whole-plan model has no places, so their mass is cut here). Before, the search for a second mug on
+        the student house used the class's belief, drawn onto the first mug, and wandered 170 m."""
+        w = self.further_belief(agent, X, cls)
+        if not len(w):
+            return w
+        for k in agent.known.values():
+            if k.movable or k.id not in agent.inspected:
+                continue
+            where = self.map.place(k.id)
+            reach = where.reach if where is not None else agent.world.reach
+            w[np.hypot(X[:, 0] - k.at[0], X[:, 1] - k.at[1]) <= reach + 0.25] = 0.0
+        return w
 
     tour_views = 8
     """How many of the best looks (by belief per metre) the search orders as a tour before taking the
