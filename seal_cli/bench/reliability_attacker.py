@@ -950,3 +950,6 @@ def hostile22_cases() -> Iterator[Case]:
                                                                   "apartment", "--layouts", "4", "--jobs", "2",
                                                                   "--policies", "sefm,coverage"),
                codes=(0, 130), signal=(2, 5.0), says=r"interrupted")
+    for argv, said in ((("validate", "-"), r"-: no such file or folder: - \('-' is standard input only to seal parse"),
+                       (("map", "-"), r"-: no such map file \('-' is standard input only to seal parse")):
+        yield Case(f"A {argv[0]} - with a map on standard input", argv, codes=(1,), stdin=b"name: m\n", says=said)
