@@ -78,8 +78,8 @@ def test_picked_hostile15_cases_end_cleanly(name: str) -> None:
     assert outcome.problems == []
 
 
-@pytest.mark.parametrize("name", ["A a room called '[/]bed[bold]x' (rich markup): map",
-                                  "A a room called '$x^$' (mathematics to matplotlib): map --png",
+@pytest.mark.parametrize("name", ["A a map called '[/]bed[bold]x' (rich markup): map",
+                                  "A a map called '$x^$' (mathematics to matplotlib): map --png",
                                   "A a frame file named twice: validate", "A TERMINAL_WIDTH=abc: a usage error",
                                   "A plan --pddl of a command of two lines: both files PDDL",
                                   "A bench tasks --episodes onto its data: d/floorplans.json"])
