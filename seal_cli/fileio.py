@@ -39,7 +39,7 @@ if TYPE_CHECKING:
 __all__ = ["LOADER", "MAX_IMAGE_BYTES", "MAX_INPUT_BYTES", "YAML_BREAKS", "Outputs", "atomic_output",
            "atomic_write_text", "clean_up_on_signals", "compose_documents", "compose_yaml", "decode", "interrupted",
            "note_interrupts", "open_regular", "read_bytes", "read_json", "read_json_lines", "read_text", "read_yaml",
-           "remove_temporaries", "split_lines", "stream_lines", "typed", "yaml_problem"]
+           "remove_temporaries", "split_lines", "stdin_hint", "stream_lines", "typed", "yaml_problem"]
 
 if TYPE_CHECKING:
     LOADER: type[yaml.SafeLoader]
@@ -138,6 +138,14 @@ def _kind(mode: int) -> str:
     return "not a regular file"
 
 
+def stdin_hint(name: str) -> str:
+    """What to add to "no such file" when the name is ``-``: standard input, which only ``seal parse --file``
+    reads (``bench plan --file -`` said only "-: no such file", hostile21; ``seal validate -`` and ``seal map -``
+    said "no such file or folder" and "no such map file", hostile22)."""
+    return (" ('-' is standard input only to seal parse --file: save the text to a file and give its name)"
+            if name == "-" else "")
+
+
 def _regular(path: Path, what: str) -> os.stat_result:
     """The file's status if it is a regular file; else a SealError saying what it is (missing, a folder, a
     FIFO, ...), which :func:`read_bytes` and :func:`stream_lines` both refuse."""
@@ -145,9 +153,7 @@ def _regular(path: Path, what: str) -> os.stat_result:
     try:
         info = path.stat()
     except FileNotFoundError:
-        stdin = (" ('-' is standard input only to seal parse --file: save the text to a file and give its name)"
-                 if str(path) == "-" else "")  # bench plan --file - said only "-: no such file" (hostile21)
-        raise SealError(f"no such {what}{stdin}", where) from None
+        raise SealError(f"no such {what}{stdin_hint(str(path))}", where) from None
     except OSError as exc:
         raise SealError(f"cannot read this {what}: {exc.strerror}", where) from None
     if stat.S_ISDIR(info.st_mode):

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from seal_cli.errors import SealError, Where
 
-__all__ = ["MAX_NAME", "check_name_length", "check_sayable", "name_too_long"]
+__all__ = ["MAX_NAME", "check_name_length", "check_plannable", "check_sayable", "name_too_long"]
 
 MAX_NAME = 100
 """The most characters a name may hold (the class names' bound too: ``frames.taxonomy.MAX_CLASS_NAME``)."""
@@ -50,4 +50,28 @@ def check_sayable(name: str, what: str, where: Where | None = None) -> str:
             raise SealError(f"{what} {name!r} holds {character!r} (U+{ord(character):04X} "
                             f"{unicodedata.name(character, 'unnamed')}), {said} no command can say: name it in "
                             "letters, digits and spaces", where)
+    return check_plannable(name, what, where)
+
+
+def check_plannable(name: str, what: str, where: Where | None = None) -> str:
+    """``name`` itself, or a problem at ``where`` if a plan cannot name it. A plan names a room or a person by
+    its words joined by '_' (``"living room"`` is ``living_room``, a fact's argument: letters, digits and '_', not
+    starting with a digit), so a name with other punctuation (``"kid's room"``, ``"Dr. Smith"``, ``"hall: 2"``,
+    ``"R&D lab"``) or whose first word starts with a digit (``"2nd floor"``) validated, then failed every plan
+    that went there with ``argument "kid's_room" is not a name``, said at a line of seal's own ``motion.yaml``
+    (or, for ``&``, at the character of the command, hostile22). Spaces, '_' and '-' part words; the letters
+    of any script and their accents (combining marks) stay."""
+    import unicodedata
+
+    for character in name:
+        if not (character.isalnum() or character.isspace() or character in "_-"
+                or unicodedata.category(character).startswith("M")):
+            raise SealError(f"{what} {name!r} holds {character!r}, which a plan cannot name (it names a room or a "
+                            "person by its words joined by '_'): name it in letters, digits and spaces ('-' and "
+                            "'_' part words too)", where)
+    first = next((c for c in name if c.isalnum()), "")
+    if first.isdigit():
+        raise SealError(f"{what} {name!r} starts with a digit, which a plan cannot name (it names a room or a person "
+                        "by its words joined by '_', a name starting with a letter): put the number after a word, "
+                        "as in 'floor 2'", where)
     return name

@@ -64,5 +64,9 @@ def map_path(name: str) -> Path:
         pass
     names = shipped_maps()
     close = difflib.get_close_matches(name.lower().removesuffix(".yaml"), names, n=1)
+    if name == "-":
+        from seal_cli.fileio import stdin_hint
+
+        raise SealError(f"-: no such map file{stdin_hint(name)}")
     raise SealError(f"{name}: no such map file, nor a map shipped with seal"
                     f"{f' (did you mean {close[0]!r}?)' if close else ''}; shipped maps: {', '.join(names)}")

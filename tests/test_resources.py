@@ -40,3 +40,20 @@ def test_a_missing_installation_folder_is_one_clear_error(monkeypatch: pytest.Mo
     monkeypatch.setattr(resources, "_PACKAGE", tmp_path / "seal_cli")
     with pytest.raises(SealError, match="the shipped folder 'maps' is missing from this installation"):
         resources.maps_dir()
+
+
+def test_a_map_named_dash_says_standard_input_is_read_only_by_parse() -> None:
+    # "seal map -" said "no such map file, nor a map shipped with seal" and listed the maps (hostile22)
+    from seal_cli.resources import map_path
+
+    with pytest.raises(SealError, match=r"^-: no such map file \('-' is standard input only to seal parse --file"):
+        map_path("-")
+
+
+def test_a_frame_file_named_dash_says_standard_input_is_read_only_by_parse() -> None:
+    from seal_cli.frames.reading import frame_files
+
+    files, (problem,) = frame_files(["-"])
+    assert files == [] and problem.message.startswith("no such file or folder: - ('-' is standard input only")
+    _, (other,) = frame_files(["./nothing-here"])
+    assert "standard input" not in other.message

@@ -225,8 +225,9 @@ def run_context_suite(data: Path, policies: Sequence[str], *, commands: Sequence
     if jobs == 1 or "fork" not in multiprocessing.get_all_start_methods():
         yield from in_order(map(_work, work), len(work), progress)
         return
-    with multiprocessing.get_context("fork").Pool(jobs) as pool:   # the workers inherit the houses
-        yield from in_order(pool.imap_unordered(_work, work), len(work), progress)
+    from seal_cli.bench.workers import unordered
+
+    yield from in_order(unordered(_work, work, jobs, method="fork"), len(work), progress)  # they inherit the houses
 
 
 def regroup(outcomes: Sequence[Outcome], policies: Sequence[str], part: int) -> dict[str, Any]:

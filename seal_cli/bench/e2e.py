@@ -22,11 +22,11 @@ from __future__ import annotations
 
 import tempfile
 from collections.abc import Callable, Iterable, Sequence
-from concurrent.futures import ProcessPoolExecutor
 from dataclasses import asdict, dataclass, replace
 from pathlib import Path
 from typing import Any
 
+from seal_cli.bench.workers import ordered
 from seal_cli.errors import SealError, Where
 
 __all__ = ["AWS_ROBOT", "Case", "Verdict", "load_cases", "run_cases", "summarise"]
@@ -220,6 +220,10 @@ def plan_steps(case: Case, the_map: Any, library: Any) -> tuple[bool, str]:
     return case.plan == steps, "; ".join(steps)
 
 
+def _judge(args: tuple[Case, str, int, int, Sequence[str] | None]) -> Verdict:
+    return judge(*args)
+
+
 def judge(case: Case, map_file: str, seed: int, particles: int, framelib: Sequence[str] | None) -> Verdict:
     """Plan the case, then run it if it says how the run must end (one worker's job)."""
     import numpy as np
@@ -267,11 +271,10 @@ def run_cases(cases: Iterable[Case], data: Path, *, seed: int = 0, particles: in
                 if progress:
                     progress(i, len(args))
             return verdicts
-        with ProcessPoolExecutor(max_workers=jobs) as pool:
-            for i, verdict in enumerate(pool.map(judge, *zip(*args, strict=True)), 1):
-                verdicts.append(verdict)
-                if progress:
-                    progress(i, len(args))
+        for i, verdict in enumerate(ordered(_judge, args, jobs), 1):
+            verdicts.append(verdict)
+            if progress:
+                progress(i, len(args))
     return verdicts
 
 

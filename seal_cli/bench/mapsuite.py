@@ -175,8 +175,7 @@ def run_map_suite(map_path: str, commands: Sequence[str], policies: Sequence[str
         _WORKER.update(map=m, library=library)
         yield from in_order(map(_work, work), layouts, progress)
         return
-    import multiprocessing
+    from seal_cli.bench.workers import unordered
 
-    context = multiprocessing.get_context("fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn")
-    with context.Pool(jobs, initializer=_init_worker, initargs=(map_path, framelib)) as pool:
-        yield from in_order(pool.imap_unordered(_work, work), layouts, progress)
+    yield from in_order(unordered(_work, work, jobs, initializer=_init_worker, initargs=(map_path, framelib)),
+                        layouts, progress)

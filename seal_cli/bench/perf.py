@@ -215,13 +215,13 @@ def peak_rss_mb(children: bool = False) -> float:
 def measure_apart(name: str, seed: int = 0, framelib: Sequence[str] = ()) -> dict[str, Any]:
     """:func:`measure` of the scale ``name`` in a fresh process of its own, so that its ``peak_rss_mb``
     counts that scale alone. The library is the shipped one unless ``framelib`` paths are given."""
-    import multiprocessing
+    from seal_cli.bench.workers import ordered
 
-    with multiprocessing.get_context("spawn").Pool(1) as pool:
-        return pool.apply(_measure_named, (name, seed, tuple(framelib)))
+    return next(ordered(_measure_named, [(name, seed, tuple(framelib))], 1, method="spawn"))
 
 
-def _measure_named(name: str, seed: int, framelib: tuple[str, ...]) -> dict[str, Any]:
+def _measure_named(task: tuple[str, int, tuple[str, ...]]) -> dict[str, Any]:
+    name, seed, framelib = task
     from pathlib import Path
 
     from seal_cli.frames.reading import load_library

@@ -28,8 +28,8 @@ import numpy as np
 from seal_cli.bench.reliability import FRAME, Case, hostile_setting
 
 __all__ = ["alfred2d_data", "attacker_cases", "chain_library", "hostile14_cases", "hostile15_cases", "hostile16_cases",
-           "hostile17_cases", "hostile18_cases", "hostile19_cases", "hostile20_cases", "hostile21_cases", "rgba_png",
-           "sparse_pgm"]
+           "hostile17_cases", "hostile18_cases", "hostile19_cases", "hostile20_cases", "hostile21_cases",
+           "hostile22_cases", "rgba_png", "sparse_pgm"]
 
 DIGITS = "1" * 5_000
 """An integer longer than Python converts from text (4,300 digits)."""
@@ -288,6 +288,7 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield from hostile19_cases()
     yield from hostile20_cases()
     yield from hostile21_cases()
+    yield from hostile22_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -451,11 +452,12 @@ def hostile16_cases() -> Iterator[Case]:
         assert old in text, f"the apartment changed: update the hostile16 case for {old!r}"
         return ("m.yaml", text.replace(old, new).encode()), image
 
-    markup = named("bedroom", "'[/]bed[bold]x'")
+    # the map's own name: a room's or a person's can hold no '[', '$' or '\\' since hostile22 (no plan could name it)
+    markup = named("name: apartment", "name: '[/]bed[bold]x'")
     for argv in (("map", "m.yaml"), ("localize", "--map", "m.yaml", "--task", "find the spoon", "--steps", "1",
                                      "--particles", "20"),
                  ("run", "--map", "m.yaml", "find the spoon", "--particles", "20")):
-        yield Case(f"A a room called '[/]bed[bold]x' (rich markup): {argv[0]}", argv, markup, codes=(0,), keep=kept)
+        yield Case(f"A a map called '[/]bed[bold]x' (rich markup): {argv[0]}", argv, markup, codes=(0,), keep=kept)
     yield Case("A an answer naming a place 'fridge[/]': refused at the place's line",
                ("run", "--map", "m.yaml", "what is in the fridge"), named("fridge_1", "'fridge[/]'"), codes=(1,),
                keep=kept, says=r"m\.yaml:\d+:\d+: place name 'fridge\[/\]' is not")
@@ -468,15 +470,15 @@ def hostile16_cases() -> Iterator[Case]:
         yield Case(f"A a frame described in rich markup: {shown or 'the table'}",
                    ("frames", "--framelib", "+z.yaml", *([shown] if shown else [])), (zap,), codes=(0,),
                    keep=("z.yaml",))
-    dollars = named("bedroom", "'$x^$'")
-    yield Case("A a room called '$x^$' (mathematics to matplotlib): map --png", ("map", "m.yaml", "--png", "o.png"),
+    dollars = named("name: apartment", "name: '$x^$'")
+    yield Case("A a map called '$x^$' (mathematics to matplotlib): map --png", ("map", "m.yaml", "--png", "o.png"),
                dollars, codes=(0,), keep=kept, whole=("o.png",))
-    yield Case("A a room called '$x^$': localize --png", ("localize", "--map", "m.yaml", "--task", "find the spoon",
+    yield Case("A a map called '$x^$': localize --png", ("localize", "--map", "m.yaml", "--task", "find the spoon",
                                                          "--steps", "1", "--particles", "20", "--png", "o.png"),
                dollars, codes=(0,), keep=kept, whole=("o.png",))
-    yield Case("A a room called '$\\frac{$': run --png", ("run", "--map", "m.yaml", "find the spoon", "--particles",
+    yield Case("A a map called '$\\frac{$': run --png", ("run", "--map", "m.yaml", "find the spoon", "--particles",
                                                           "20", "--png", "o.png"),
-               named("bedroom", "'$\\frac{$'"), codes=(0,), keep=kept, whole=("o.png",))
+               named("name: apartment", "name: '$\\frac{$'"), codes=(0,), keep=kept, whole=("o.png",))
     stir = ("s.frame", FRAME.encode())
     yield Case("A a frame file named twice: validate", ("validate", "s.frame", "s.frame", "l.frame"),
                (stir, ("l.frame", "link:s.frame")), codes=(0,), keep=("s.frame",))
@@ -912,3 +914,43 @@ def hostile21_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
                    says=r"Stir .*caf\\xe9")
     yield Case("A plan of twenty apples", ("plan", "bring me twenty apples", "--map", "apartment", "--json"),
                codes=(0,), says=r'"apple_20"(?![\s\S]*"apple_21")')
+
+
+def hostile22_cases() -> Iterator[Case]:
+    """Round hostile22: names of rooms and people a plan cannot name (punctuation, a leading digit), which validated
+    and then failed every plan at a line of seal's own ``motion.yaml``; counts of zero and "a hundred and one"; a
+    ``.frame`` file with CR line ends (one comment line: no frames, silently); a ``--jobs 2`` pool interrupted."""
+    for kind, name, said in (("room", "kid's room", r"holds \"'\", which a plan cannot name"),
+                             ("room", "hall: 2", r"holds ':', which a plan cannot name"),
+                             ("room", "2nd floor", r"starts with a digit, which a plan cannot name"),
+                             ("person", "Dr. Smith", r"holds '\.', which a plan cannot name"),
+                             ("person", "R&D", r"holds '&', which a plan cannot name")):
+        rooms = "  - {name: hall, box: [0, 0, 10, 10]}\n"
+        entry = f'  - {{name: "{name}", ' + ("box: [0, 0, 10, 10]}\n" if kind == "room" else "at: [5, 5]}\n")
+        text = (f"name: m\nbounds: [0, 0, 10, 10]\nrooms:\n{entry if kind == 'room' else rooms}" +
+                ("" if kind == "room" else f"people:\n{entry}"))
+        line = 4 if kind == "room" else 6
+        for argv in (("validate", "m.yaml"), ("run", f"go to the {name}", "--map", "m.yaml")):
+            yield Case(f"A {argv[0]} of a {kind} called {name!r}", argv, (("m.yaml", text.encode()),), codes=(1,),
+                       keep=("m.yaml",), says=rf"m\.yaml:{line}:\d+: {kind} name .*{said}")
+    for text, said in (("bring me a hundred and one apples", r"'a hundred and one apples' asks for 101 things"),
+                       ("put two hundred and fifty cups in the sink", r"asks for 250 things"),
+                       ("bring me zero apples", r"column 10: 'zero apples' asks for no things"),
+                       ("put 0 cups in the sink", r"column 5: '0 cups' asks for no things")):
+        yield Case(f"A plan of {text!r}", ("plan", text, "--map", "apartment"), codes=(1,), says=said)
+    zap = ('// zapping\nframe Zap "zap" {\n  theme: object\n  do navigate(theme)\n  ensures zapped(theme)\n}\n')
+    for end, shown in (("\r", "CR"), ("\r\n", "CRLF")):
+        yield Case(f"A plan with a .frame file of {shown} lines", ("plan", "zap the cup", "--framelib", "+z.frame"),
+                   (("z.frame", zap.replace("\n", end).encode()),), codes=(0,), keep=("z.frame",),
+                   says=r"Zap\s+theme=cup")
+        broken = zap.replace("zapped(theme)", "zapped(theme").replace("\n", end)
+        yield Case(f"A validate of a broken .frame file of {shown} lines", ("validate", "z.frame"),
+                   (("z.frame", broken.encode()),), codes=(1,), keep=("z.frame",),
+                   says=r"z\.frame:6:1: syntax error: unexpected '\}'")
+    yield Case("A bench tasks --suite map --jobs 2 interrupted", ("bench", "tasks", "--suite", "map", "--map",
+                                                                  "apartment", "--layouts", "4", "--jobs", "2",
+                                                                  "--policies", "sefm,coverage"),
+               codes=(0, 130), signal=(2, 5.0), says=r"interrupted")
+    for argv, said in ((("validate", "-"), r"-: no such file or folder: - \('-' is standard input only to seal parse"),
+                       (("map", "-"), r"-: no such map file \('-' is standard input only to seal parse")):
+        yield Case(f"A {argv[0]} - with a map on standard input", argv, codes=(1,), stdin=b"name: m\n", says=said)

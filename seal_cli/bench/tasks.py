@@ -205,11 +205,9 @@ def run_suite(data_dir: str | Path, split: str, policies: Sequence[str], *, goal
         results: Iterable[tuple[int, list[Outcome]]] = map(_work, work)
         yield from in_order(results, total, progress)
         return
-    import multiprocessing
+    from seal_cli.bench.workers import unordered
 
-    context = multiprocessing.get_context("fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn")
-    with context.Pool(jobs, initializer=_init_worker, initargs=init) as pool:
-        yield from in_order(pool.imap_unordered(_work, work), total, progress)
+    yield from in_order(unordered(_work, work, jobs, initializer=_init_worker, initargs=init), total, progress)
 
 
 def in_order(results: Iterable[tuple[int, list[Outcome]]], total: int,

@@ -86,7 +86,9 @@ def frame_files(paths: Iterable[str | Path]) -> tuple[list[Path], list[SealError
         elif path.exists():  # a file, or a device or pipe that reading refuses by its kind
             files.append(path)
         else:
-            problems.append(SealError(f"no such file or folder: {path}", Where(str(path))))
+            from seal_cli.fileio import stdin_hint
+
+            problems.append(SealError(f"no such file or folder: {path}{stdin_hint(str(raw))}", Where(str(path))))
     return _each_once(files), problems
 
 

@@ -398,6 +398,9 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
         word = " ".join(class_words(value))
         raise _located(f"the {m.name} has no {word} to carry, only {where}, which the robot cannot get {word} "
                        f"from{known}", phrase, text)
+    if phrase.quantity == 0:   # "bring me zero apples", "0 cups" planned one (hostile22): a count of none is no task
+        raise _located(f"{phrase.text!r} asks for no things (a count of zero): say how many, at least one", phrase,
+                       text)
     count = _count(phrase, value, things)
     if count == 1 and (other := _the_other(phrase, value, earlier, things)) is not None:
         return (other,)

@@ -18,6 +18,7 @@ from seal_cli.bench.reliability_attacker import (
     hostile19_cases,
     hostile20_cases,
     hostile21_cases,
+    hostile22_cases,
     sparse_pgm,
 )
 from seal_cli.bench.reliability_outsider import outsider_cases
@@ -77,8 +78,8 @@ def test_picked_hostile15_cases_end_cleanly(name: str) -> None:
     assert outcome.problems == []
 
 
-@pytest.mark.parametrize("name", ["A a room called '[/]bed[bold]x' (rich markup): map",
-                                  "A a room called '$x^$' (mathematics to matplotlib): map --png",
+@pytest.mark.parametrize("name", ["A a map called '[/]bed[bold]x' (rich markup): map",
+                                  "A a map called '$x^$' (mathematics to matplotlib): map --png",
                                   "A a frame file named twice: validate", "A TERMINAL_WIDTH=abc: a usage error",
                                   "A plan --pddl of a command of two lines: both files PDDL",
                                   "A bench tasks --episodes onto its data: d/floorplans.json"])
@@ -193,6 +194,24 @@ def test_the_hostile21_cases_are_named_once_and_say_what_they_must() -> None:
     assert all(c.says for c in found if c.codes != (0,))
     assert {c.stream for c in found} >= {"full-stdout", "closed-stdout", "gone-stdout"}
 
+
+
+@pytest.mark.parametrize("name", ["A run of a room called \"kid's room\"", "A plan of 'bring me zero apples'",
+                                  "A plan with a .frame file of CR lines",
+                                  "A bench tasks --suite map --jobs 2 interrupted"])
+def test_picked_hostile22_cases_end_cleanly(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Each failed on main: a room "kid's room" validated, then its plan failed at a line of seal's motion.yaml;
+    "zero apples" planned one; a .frame file of CR lines held no frames, silently. The pool's case passed on main
+    too (an interrupt reached every worker). This tree's code."""
+    monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
+    outcome = run_case(next(c for c in hostile22_cases() if c.name == name))
+    assert outcome.problems == []
+
+
+def test_the_hostile22_cases_are_named_once_and_say_what_they_must() -> None:
+    found = list(hostile22_cases())
+    assert len({c.name for c in found}) == len(found) >= 19
+    assert all(c.says for c in found)
 
 def test_the_judge_sees_a_command_whose_reader_has_gone_fail(monkeypatch: pytest.MonkeyPatch) -> None:
     """The ``gone-stdout`` stream really is a pipe without a reader: a program that does not expect it fails there."""

@@ -176,12 +176,14 @@ def _map_with(tmp_path: Path, old: str, new: str) -> Path:
 ])
 @pytest.mark.parametrize("room", [MARKUP_ROOM, ":pile_of_poo:"])   # rich's markup; rich's emoji code (shown as 💩)
 def test_names_from_a_map_are_printed_as_written(tmp_path: Path, argv: list[str], room: str) -> None:
-    m = _map_with(tmp_path, "bedroom", f"'{room}'")
+    # the map's own name: a room's can hold no '[' or ':' since hostile22 (no plan could name such a room)
+    m = _map_with(tmp_path, "name: apartment", f"name: '{room}'")
     done = subprocess.run([sys.executable, "-m", "seal_cli", *(a.format(map=m) for a in argv)], capture_output=True,
                           text=True, check=False, env={**os.environ, "NO_COLOR": "1", "COLUMNS": "250"})
     assert "Traceback" not in done.stderr
     assert done.returncode in (0, 1), done.stderr
-    assert room in done.stdout or room.replace("_", " ") in done.stdout   # the narration says rooms in words
+    if argv[0] != "run":    # run narrates rooms and places, not the map's name
+        assert room in done.stdout
 
 
 def test_a_frame_described_in_markup_is_shown_as_written(tmp_path: Path) -> None:

@@ -349,7 +349,11 @@ def test_a_place_to_go_that_nothing_knows_of_is_refused_not_searched_for(library
 @pytest.mark.parametrize(("text", "count"), [("put one million apples in the fridge", "1,000,000"),
                                              ("put 2 thousand apples in the fridge", "2,000"),
                                              ("put hundreds of apples in the fridge", "200"),
-                                             ("put ninety nine thousand apples in the fridge", "99,000")])
+                                             ("put ninety nine thousand apples in the fridge", "99,000"),
+                                             ("put a hundred and one apples in the fridge", "101"),
+                                             ("put two hundred and fifty apples in the fridge", "250"),
+                                             ("put a hundred and twenty three apples in the fridge", "123"),
+                                             ("put a thousand and 7 apples in the fridge", "1,007")])
 def test_a_count_times_a_multiplier_is_their_product_and_refused_past_the_bound(library: Library, text: str,
                                                                              count: str) -> None:
     # "one million apples" was one apple, "2 thousand" two: the multiplier dropped in silence (hostile21)
@@ -357,6 +361,22 @@ def test_a_count_times_a_multiplier_is_their_product_and_refused_past_the_bound(
 
     with pytest.raises(SealError, match=re.escape(f"asks for {count} things; seal plans for at most 100")):
         themes(text, library)
+
+
+@pytest.mark.parametrize("text", ["put zero apples in the fridge", "put 0 apples in the fridge",
+                                  "bring me zero cups"])
+def test_a_count_of_zero_is_refused_not_read_as_one(library: Library, text: str) -> None:
+    # "bring me zero apples" brought one: the count was at least one (hostile22)
+    from seal_cli.errors import SealError
+
+    with pytest.raises(SealError, match=r"'(zero|0) (apples|cups)' asks for no things \(a count of zero\)"):
+        themes(text, library)
+
+
+def test_a_dozen_and_two_is_fourteen(library: Library) -> None:
+    # the "and" after a multiplier adds a smaller number before the noun: "a hundred and one apples" (hostile22)
+    assert len(themes("put a dozen and two apples in the fridge", library)) == 14
+    assert len(themes("put a dozen apples in the fridge", library)) == 12
 
 
 @pytest.mark.parametrize(("text", "themes"), [

@@ -68,7 +68,7 @@ MISTAKES: dict[str, list[str]] = {
 
 
 def _syntax_problem(exc: UnexpectedInput, text: str, file: str) -> SealError:
-    lines = text.splitlines()
+    lines = text.split("\n")
     line = getattr(exc, "line", None)
     column = getattr(exc, "column", None)
     if isinstance(exc, UnexpectedEOF) or line is None or line < 1:
@@ -137,7 +137,7 @@ class _Builder:
 
     def __init__(self, text: str, file: str) -> None:
         self.file = file
-        self.lines = text.splitlines()
+        self.lines = text.split("\n")
         self.contents = Contents()
 
     def where(self, item: Tree | Token) -> Where:
@@ -239,7 +239,14 @@ def _string(token: Any) -> str:
 
 def read(text: str, file: str = "<frame>") -> Contents:
     """The frames, categories and problems in a ``.frame`` file's text. After a syntax error each
-    statement is parsed on its own, so that one mistake hides none of the file's other problems."""
+    statement is parsed on its own, so that one mistake hides none of the file's other problems.
+
+    A line ends at LF, CRLF or a lone CR (an old Mac editor's, as YAML reads it): a file saved with CR alone was
+    one line to the grammar, whose first ``//`` comment took the whole file, so it validated "ok: 0 frames"
+    and ``--framelib +f.frame`` added nothing, silently (hostile22). Only those end a line: the lines of
+    messages are the grammar's (``str.splitlines`` also split at U+2028 or a form feed, so a caret could be
+    drawn under another line than the one named)."""
+    text = text.replace("\r\n", "\n").replace("\r", "\n")
     builder = _Builder(text, file)
     try:
         tree = parser().parse(text)

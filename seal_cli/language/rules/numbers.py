@@ -76,11 +76,32 @@ def _multiplied(s: State, i: int) -> Match | None:
     if not isinstance(value, int) or i + n + 1 >= len(words) or words[i + n].lower not in MULTIPLIERS:
         return None
     after = words[i + n + 1].lower
+    if after == "and" and (rest := _below(s, i + n + 2, MULTIPLIERS[words[i + n].lower])) is not None:
+        return s.emit(i, n + 2 + rest[0], Tag.NUM, value * MULTIPLIERS[words[i + n].lower] + rest[1])
     if after == "of":                       # "a dozen of the eggs", "two hundred of them": the "of" is the count's
         n += 1
     elif not s.noun_follows(i + n + 1):
         return None
     return s.emit(i, n + 1, Tag.NUM, value * MULTIPLIERS[words[i + n - (after == "of")].lower])
+
+
+def _below(s: State, i: int, limit: int) -> tuple[int, int] | None:
+    """The words and value of the number at ``i`` that the "and" after a multiplier adds, when it is below the
+    multiplier's ``limit`` and a noun follows it: "a hundred *and one* apples" (101), "two hundred *and fifty*
+    cups" (250), "a thousand *and 3* mugs". "a hundred and one apples" was read as a hundred things called
+    "hundred" and one apple (hostile21's leftover, hostile22)."""
+    words = s.words
+    if i >= len(words):
+        return None
+    low = words[i].lower
+    n, value = _number(s, i)
+    if not n:
+        n, value = 1, int(low) if low.isascii() and low.isdigit() else _past_twelve_value(low)
+        if low in TENS and s.next_lower(i) in UNITS:                # "a hundred and twenty three"
+            n, value = 2, TENS[low] + UNITS[s.next_lower(i)]
+    if not isinstance(value, int) or not 0 < value < limit or not s.noun_follows(i + n):
+        return None
+    return n, value
 
 
 TEENS = {"thirteen": 13, "fourteen": 14, "fifteen": 15, "sixteen": 16, "seventeen": 17, "eighteen": 18,

@@ -25,6 +25,21 @@ def test_a_syntax_error_is_located_and_says_what_to_write() -> None:
     assert "end of file" in cut.message and "'}'" in cut.message and cut.file == "w.frame"
 
 
+
+def test_a_file_of_cr_or_crlf_lines_reads_as_one_of_lf_lines() -> None:
+    # with CR alone the file was one line, its first '//' comment all of it: "ok: 0 frames" (hostile22)
+    commented = "// waving at people\n" + WAVE
+    for end in ("\r", "\r\n"):
+        (frame,) = read(commented.replace("\n", end), "w.frame").frames
+        assert frame.name == "Wave" and frame.where is not None and frame.where.line == 2
+        (problem,) = read('frame Wave "wave" {\n  theme person\n}\n'.replace("\n", end), "w.frame").problems
+        assert (problem.line, problem.column) == (2, 9) and str(problem).endswith("  theme person\n        ^")
+
+
+def test_a_caret_is_under_the_line_named_when_a_comment_holds_a_form_feed() -> None:
+    (problem,) = read('// a\x0cb\u2028c\nframe Wave "wave" {\n  theme person\n}\n', "w.frame").problems
+    assert problem.line == 3 and str(problem).endswith("  theme person\n        ^")
+
 def test_a_bad_name_is_refused_where_it_is() -> None:
     (problem,) = read("frame wave {}\n", "w.frame").problems
     assert problem.line == 1 and problem.column == 7 and "capital letter" in problem.message

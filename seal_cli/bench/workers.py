@@ -1,0 +1,124 @@
+"""Worker processes for the benchmarks' ``--jobs N``: work spread over processes that always ends.
+
+``multiprocessing.Pool`` (which ``bench tasks``, ``bench maps``' suite and ``bench tasks --suite context`` used)
+waits forever for the result of a worker that died: a worker killed by a signal (the kernel's out-of-memory
+killer, a ``kill -9``) leaves its task unanswered, and ``imap_unordered`` blocks for good; its ``terminate``
+can block too, on the queue lock a killed worker held; an initializer that raises makes it start workers for
+ever. Here the work runs on ``concurrent.futures.ProcessPoolExecutor``, which notices a worker that has gone, and
+every way out of a run ends it:
+
+- a worker killed by a signal: :class:`~seal_cli.errors.SealError` ``a worker process ended abruptly (killed by
+  a signal, or out of memory?)`` (exit code 1);
+- a worker whose initializer or task raised: the same exception in the parent (a SealError is the user's
+  message, as with ``--jobs 1``; the initializer's is raised by the first task, not logged by the worker as a
+  traceback);
+- a result that cannot be pickled: the pickling error in the parent (a bug of the caller, never a hang);
+- the parent interrupted (SIGINT, SIGTERM as an exception) or the caller stopping early: every pending task is
+  cancelled, every worker terminated (killed if it has not gone within :data:`GRACE` seconds) and reaped before
+  the exception goes on.
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+from collections.abc import Callable, Iterable, Iterator, Sequence
+from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
+from concurrent.futures.process import BrokenProcessPool
+from typing import Any, TypeVar
+
+from seal_cli.errors import SealError
+
+__all__ = ["GRACE", "ordered", "unordered"]
+
+T = TypeVar("T")
+R = TypeVar("R")
+
+GRACE = 2.0
+"""Seconds a terminated worker has to end before it is killed."""
+
+_STARTED: dict[str, BaseException | None] = {"failed": None}
+"""In a worker: what its initializer raised, if anything (raised again by each of its tasks)."""
+
+
+def _start(initializer: Callable[..., object] | None, initargs: Sequence[Any]) -> None:
+    """A worker's start: run ``initializer`` and keep what it raised for the first task to raise."""
+    _STARTED["failed"] = None
+    if initializer is None:
+        return
+    try:
+        initializer(*initargs)
+    except BaseException as error:  # noqa: BLE001 - sent to the parent by the task, not printed here
+        _STARTED["failed"] = error
+
+
+def _call(function: Callable[[T], R], item: T) -> R:
+    failed = _STARTED["failed"]
+    if failed is not None:
+        raise failed
+    return function(item)
+
+
+def _context(method: str | None) -> multiprocessing.context.BaseContext:
+    if method is None:
+        method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
+    return multiprocessing.get_context(method)
+
+
+def unordered(function: Callable[[T], R], items: Iterable[T], jobs: int, *,
+              initializer: Callable[..., object] | None = None, initargs: Sequence[Any] = (),
+              method: str | None = None) -> Iterator[R]:
+    """``function(item)`` of every item, in ``jobs`` worker processes (started by ``method``: ``fork`` where the
+    system has it, else ``spawn``; each runs ``initializer(*initargs)`` first), yielded as they finish."""
+    executor = ProcessPoolExecutor(max(1, jobs), mp_context=_context(method), initializer=_start,
+                                   initargs=(initializer, tuple(initargs)))
+    pending: set[Future[R]] = set()
+    try:
+        pending = {executor.submit(_call, function, item) for item in items}
+        while pending:
+            done, pending = wait(pending, return_when=FIRST_COMPLETED)
+            for future in done:
+                yield _result(future)
+    finally:
+        _stop(executor, pending)
+
+
+def ordered(function: Callable[[T], R], items: Iterable[T], jobs: int, **options: Any) -> Iterator[R]:
+    """:func:`unordered`'s results in the order of ``items``, each as soon as every earlier one has come."""
+    done: dict[int, R] = {}
+    following = 0
+    for index, result in unordered(_indexed, [(function, i, item) for i, item in enumerate(items)], jobs,
+                                   **options):
+        done[index] = result
+        while following in done:
+            yield done.pop(following)
+            following += 1
+
+
+def _indexed(task: tuple[Callable[[T], R], int, T]) -> tuple[int, R]:
+    function, index, item = task
+    return index, function(item)
+
+
+def _result(future: Future[R]) -> R:
+    try:
+        return future.result()
+    except BrokenProcessPool:
+        raise SealError("a worker process ended abruptly (killed by a signal, or out of memory?): the run "
+                        "stopped; run it again, with fewer --jobs if memory is short") from None
+
+
+def _stop(executor: ProcessPoolExecutor, pending: set[Future[Any]]) -> None:
+    """Cancel what has not run, end every worker (terminated, killed after :data:`GRACE` seconds) and reap it."""
+    for future in pending:
+        future.cancel()
+    processes = list((getattr(executor, "_processes", None) or {}).values())
+    if pending:  # stopped early: the workers still at a task are ended, not waited for
+        for process in processes:
+            if process.is_alive():
+                process.terminate()
+    executor.shutdown(wait=not pending, cancel_futures=True)
+    for process in processes:
+        process.join(GRACE)
+        if process.is_alive():
+            process.kill()
+            process.join()
