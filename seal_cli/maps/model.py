@@ -634,11 +634,14 @@ class Map:
                 rows, cols, _, valid = segment_cells(self.grid, a, b[None, :])
                 keep = valid & (rows >= 0) & (rows < h) & (cols >= 0) & (cols < w)
                 near[rows[keep], cols[keep]] = True
-        grown = near.copy()  # one cell of slack on every side: no rounding can put a point astray
-        grown[1:, :] |= near[:-1, :]
-        grown[:-1, :] |= near[1:, :]
-        grown[:, 1:] |= near[:, :-1]
-        grown[:, :-1] |= near[:, 1:]
+        # one cell of slack on every side, diagonals included (a 3 x 3 box, rows then columns): a
+        # vertex on a grid corner touches four cells, and its edges may run through only one of them
+        tall = near.copy()
+        tall[1:, :] |= near[:-1, :]
+        tall[:-1, :] |= near[1:, :]
+        grown = tall.copy()
+        grown[:, 1:] |= tall[:, :-1]
+        grown[:, :-1] |= tall[:, 1:]
         rr, cc = np.mgrid[0:h, 0:w]
         labels = self._room_index_exact(self.grid.cell_centres(rr.ravel(), cc.ravel())).reshape(h, w)
         return labels.astype(np.int16), grown

@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import yaml
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 from typer.testing import CliRunner
 
@@ -565,6 +565,7 @@ def test_a_rotated_grid_is_read_in_the_world_frame() -> None:
 
 
 @settings(max_examples=30, deadline=None)
+@example(specs=[(0.0, 0.0, 1.0, 1.0, 4, 0), (2.15625, 0.375, 2.0, 1.5, 6, 437795897)], resolution=0.05, seed=0)
 @given(st.lists(st.tuples(st.floats(-4, 4), st.floats(-3, 3), st.floats(0.3, 3), st.floats(0.3, 3),
                           st.integers(4, 9), st.integers(0, 2**31 - 1)), min_size=1, max_size=4),
        st.sampled_from([0.05, 0.1, 0.25, 0.5]), st.integers(0, 2**31 - 1))
