@@ -335,9 +335,8 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
     from seal_cli.language.english import PERSON_PRONOUNS, PRONOUNS
 
     if phrase.conjuncts:        # "the apple and the pear": both
-        return tuple(dict.fromkeys(v for c in phrase.conjuncts
-                                   for v in _values(c, earlier, things, text, category, asked, carried, gone_to,
-                                                    vessel)))
+        return _conjoined(phrase, [_values(c, earlier, things, text, category, asked, carried, gone_to, vessel)
+                                   for c in phrase.conjuncts], things, carried)
     if phrase.refers_to is not None:
         index, role = phrase.refers_to
         if 0 <= index < len(earlier) and role in earlier[index]:
@@ -382,6 +381,29 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
         raise _located(f"{phrase.text!r} asks for {count:,} things; seal plans for at most {MAX_COUNT} "
                        "of a kind", phrase, text)
     return things.instances(value, count)
+
+
+def _conjoined(phrase: Phrase, each: Sequence[tuple[str, ...]], things: Things, carried: bool) -> tuple[str, ...]:
+    """The things of a coordination: every conjunct's, in order. Two conjuncts are two things: where a
+    carried thing's conjunct, said by its own noun, names a class an earlier conjunct already gave, it is the
+    next thing of that class ("a salt and a pepper shaker", "the tube and the toilet paper roll", "an empty roll
+    and a full roll of toilet paper": two shakers, two rolls; alfred23). Without a map only: a map's thing
+    said twice ("the mug and the cup" of a map with one cup) is its one thing; a pronoun ("the apple and it")
+    and a thing the frame does not carry (a place, a person) keep their value."""
+    from seal_cli.language.english import PRONOUNS
+
+    out: list[str] = []
+    for conjunct, values in zip(phrase.conjuncts, each, strict=True):
+        anew = (carried and things.map is None and conjunct.refers_to is None and not conjunct.conjuncts
+                and bool(conjunct.head) and conjunct.head.lower() not in PRONOUNS)
+        for value in values:
+            if value in out and anew:
+                cls = things.classes.get(value, class_key(value))
+                taken = sum(1 for v in out if things.classes.get(v) == cls)
+                value = things.instances(cls, taken + 1)[-1]
+            if value not in out:
+                out.append(value)
+    return tuple(out)
 
 
 def _comes_from(value: str, things: Things) -> list[Any]:
