@@ -603,13 +603,15 @@ def every_said(parse: Parse) -> list[Phrase]:
 def _count(phrase: Phrase, value: str, things: Things) -> int:
     """How many things a phrase asks for: the number said ("two apples"); every one the map places for
     "all", "every" or "each" first ("all the cups": the two on the table and the one in the cupboard, e2e23;
-    at least one); at least two for a plural that names the class by its head ("the books", "both books"; not
-    "the keys" of a key chain; not "the gloves" or "a pair of gloves", one pair:
-    :data:`~seal_cli.planning.grounding.PAIRED`); one whole for pieces cut from it ("two slices of apple": one
+    at least one); at least two for a plural that names the class by its head or by the head of one of the
+    library's names for it ("the books", "both books", "toilet paper rolls" by "toilet roll"; not "the keys" of a
+    key chain; not "the gloves" or "a pair of gloves", one pair: :data:`~seal_cli.planning.grounding.PAIRED`); one whole for pieces cut from it ("two slices of apple": one
     apple, sliced; but "two sets of keys" are two key chains)."""
     from seal_cli.language.grounding import PIECES
 
-    named = class_words(value)[-1:] == (phrase.head,)
+    heads = {class_words(name)[-1] for name in (value, *things.taxonomy.names.get(class_key(value), ()))
+             if class_words(name)}       # "toilet paper rolls": the library's "toilet roll" (alfred23)
+    named = phrase.head in heads
     if phrase.head in PIECES and not named:
         return 1
     said = (phrase.text or "").lower().split()

@@ -28,6 +28,7 @@ def themes(text: str, library: Library) -> list[str]:
     ("put the keys on the desk", ["key_chain"]),                    # "keys" names a key chain, not its head
     ("put two sets of keys on the desk", ["key_chain", "key_chain_2"]),   # groups are counted
     ("put two rolls of toilet paper on the desk", ["toilet_paper", "toilet_paper_2"]),
+    ("put the toilet paper rolls on the desk", ["toilet_paper", "toilet_paper_2"]),   # the library's "toilet roll"
     ("put two slices of apple in the microwave", ["apple"]),        # pieces of one apple, sliced
     ("put the apple and the pear in the fridge", ["apple", "pear"]),     # every conjunct
     ("put the apple and two pears in the fridge", ["apple", "pear", "pear_2"]),
