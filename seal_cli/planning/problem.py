@@ -605,8 +605,9 @@ def _count(phrase: Phrase, value: str, things: Things) -> int:
     "all", "every" or "each" first ("all the cups": the two on the table and the one in the cupboard, e2e23;
     at least one); at least two for a plural that names the class by its head or by the head of one of the
     library's names for it ("the books", "both books", "toilet paper rolls" by "toilet roll"; not "the keys" of a
-    key chain; not "the gloves" or "a pair of gloves", one pair: :data:`~seal_cli.planning.grounding.PAIRED`); one whole for pieces cut from it ("two slices of apple": one
-    apple, sliced; but "two sets of keys" are two key chains)."""
+    key chain; not "the gloves" or "a pair of gloves", one pair: :data:`~seal_cli.planning.grounding.PAIRED`);
+    one whole for pieces cut from it ("two slices of apple": one apple, sliced; but "two sets of keys" are two
+    key chains)."""
     from seal_cli.language.grounding import PIECES
 
     heads = {class_words(name)[-1] for name in (value, *things.taxonomy.names.get(class_key(value), ()))
