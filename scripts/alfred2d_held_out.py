@@ -140,16 +140,23 @@ def main() -> int:
     ap.add_argument("--json", action="store_true", help="print the bench's JSON")
     args = ap.parse_args()
     if not 0 < args.dev < 1:
-        ap.error(f"--dev {args.dev}: a fraction in (0, 1)")
-    if args.sample < 1:
-        ap.error(f"--sample {args.sample}: at least 1")
+        raise SystemExit(f"error: --dev {args.dev}: a fraction in (0, 1)")
+    if args.sample < 1 or args.particles < 1:
+        raise SystemExit("error: --sample and --particles: at least 1")
     goals = args.data / "alfred" / "goals_train.tsv"
     for path in (goals, args.data / "alfred" / "alfred_constants.json", args.data / "alfred2d" / "floorplans.json"):
         if not path.is_file():
-            ap.error(f"{path}: no such file (the shared data folder is --data)")
+            raise SystemExit(f"error: {path}: no such file (the shared data folder is --data)")
     if args.episodes is not None and args.episodes.resolve().is_relative_to(args.data.resolve()):
-        ap.error(f"--episodes {args.episodes}: inside the data folder, which this script only reads")
+        raise SystemExit(f"error: --episodes {args.episodes}: inside the data folder, which this script only reads")
+    if args.episodes is not None and not args.episodes.resolve().parent.is_dir():
+        raise SystemExit(f"error: --episodes {args.episodes}: its folder does not exist")
     policies = [p.strip() for p in args.policies.split(",") if p.strip()]
+    from seal_cli.sim.policies import POLICIES
+
+    unknown = [p for p in policies if p not in POLICIES]
+    if not policies or unknown:
+        raise SystemExit(f"error: --policies {args.policies}: the policies are {', '.join(POLICIES)}")
 
     bwc = script("build_word_classes")
     rows = [r for r in bwc.read_rows(goals) if r.get("split", "train") == "train"]
