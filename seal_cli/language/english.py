@@ -278,6 +278,8 @@ MODALS = frozenset(["can", "could", "will", "would", "shall", "should", "may", "
 NOMINATIVE = frozenset(["i", "he", "she", "we", "they"])
 """Subject pronouns: never an object, so after a noun one starts a clause ("the book *I* left on the sofa")."""
 RELATIVES = frozenset(["that", "which", "who", "whom", "whose"])
+HOLDING_VERBS = frozenset(["have", "hold", "contain"])
+"""Verbs that say what a thing holds: "the box *that has* a candle in it" is the box with a candle in it."""
 STATES_DONE = frozenset(["done", "finished", "ready", "there", "here", "back", "through"])
 """What "once you are ___" says of the robot when it only sequences: "*once you're done*, ..." is "then"."""
 CLOCK_PREPOSITIONS = frozenset(["at", "by", "until", "till", "around", "in", "before"])

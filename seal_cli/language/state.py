@@ -28,6 +28,7 @@ from seal_cli.language.english import (
     FREE_RELATIVES,
     FREQUENCY_ADVERBS,
     HERE_WORDS,
+    HOLDING_VERBS,
     LINKING_VERBS,
     LOCATIVE,
     NOMINATIVE,
@@ -1073,6 +1074,9 @@ class State:
             return self.emit(i, end - i, "REL") if end > i + 1 else None
         if low not in RELATIVES or self.speech and low == "that" and not told_of or not nxt or nxt in END_MARKS:
             return None
+        holding = self.holding_relative(i)
+        if holding is not None:
+            return holding
         if nxt in BE_WORDS and i + 2 < len(words):
             after = words[i + 2].lower
             n = match_phrase(words, i + 2, PREPOSITIONS)
@@ -1106,6 +1110,25 @@ class State:
             return self.emit(i, max(end, i + 2) - i, "REL", tuple(results))
         end = self.relative_end(i + 1)
         return self.emit(i, end - i, "REL") if end > i + 1 else None
+
+    def holding_relative(self, i: int) -> Match | None:
+        """A relative clause that says what a thing holds (alfred23), read as the phrase of contents it means:
+        "the box *that has* a candle in it" is "the box *with* a candle in it", "a plate *which holds* a pen on
+        it" "a plate *with* a pen on it" (a verb of having, its object said to be in or on "it"); "the bowl *that
+        contains* an apple" is "the bowl *containing* an apple". "has" or "holds" with no "in it" ("the cup that has
+        a chip", "the man that holds a cup") stay relative clauses."""
+        words = self.words
+        if words[i].lower not in ("that", "which") or i + 2 >= len(words) or self.prev_tag() != "WORD":
+            return None
+        verb = verb_lemma(words[i + 1].lower)
+        if verb not in HOLDING_VERBS or words[i + 1].lower == verb or not self.np_starts(i + 2):
+            return None
+        end = self.cond_end(i + 2)
+        said_in = any(words[k].lower in ("in", "on", "inside") and words[k + 1].lower in ("it", "them")
+                      for k in range(i + 3, min(end, len(words) - 1)))
+        if said_in:
+            return self.emit(i, 2, Tag.PREP, "with")
+        return self.emit(i, 2, Tag.VBG_T, "contain") if verb == "contain" else None
 
     def relative_end(self, j: int) -> int:
         """Where a relative clause with a verb of its own ends: where a clause would end, or before a

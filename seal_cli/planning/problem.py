@@ -354,11 +354,12 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
     from seal_cli.language.english import PERSON_PRONOUNS, PRONOUNS
 
     if phrase.conjuncts:        # "the apple and the pear": both ("the book and the other book": two books)
-        found: list[str] = []
+        each: list[tuple[str, ...]] = []
         for c in phrase.conjuncts:
-            before = [*earlier, {"": tuple(found)}] if found else earlier
-            found += _values(c, before, things, text, category, asked, carried, gone_to, vessel)
-        return tuple(dict.fromkeys(found))
+            found = [v for values in each for v in values]
+            before = [*earlier, {"": tuple(dict.fromkeys(found))}] if found else earlier
+            each.append(_values(c, before, things, text, category, asked, carried, gone_to, vessel))
+        return _conjoined(phrase, each, things, carried)
     if phrase.refers_to is not None:
         index, role = phrase.refers_to
         if 0 <= index < len(earlier) and role in earlier[index]:
@@ -424,6 +425,29 @@ def _the_other(phrase: Phrase, value: str, earlier: Sequence[Mapping[str, tuple[
     if not said:
         return None
     return next(n for n in things.instances(value, len(said) + 1) if n not in said)
+
+
+def _conjoined(phrase: Phrase, each: Sequence[tuple[str, ...]], things: Things, carried: bool) -> tuple[str, ...]:
+    """The things of a coordination: every conjunct's, in order. Two conjuncts are two things: where a
+    carried thing's conjunct, said by its own noun, names a class an earlier conjunct already gave, it is the
+    next thing of that class ("a salt and a pepper shaker", "the tube and the toilet paper roll", "an empty roll
+    and a full roll of toilet paper": two shakers, two rolls; alfred23). Without a map only: a map's thing
+    said twice ("the mug and the cup" of a map with one cup) is its one thing; a pronoun ("the apple and it")
+    and a thing the frame does not carry (a place, a person) keep their value."""
+    from seal_cli.language.english import PRONOUNS
+
+    out: list[str] = []
+    for conjunct, values in zip(phrase.conjuncts, each, strict=True):
+        anew = (carried and things.map is None and conjunct.refers_to is None and not conjunct.conjuncts
+                and bool(conjunct.head) and conjunct.head.lower() not in PRONOUNS)
+        for value in values:
+            if value in out and anew:
+                cls = things.classes.get(value, class_key(value))
+                taken = sum(1 for v in out if things.classes.get(v) == cls)
+                value = things.instances(cls, taken + 1)[-1]
+            if value not in out:
+                out.append(value)
+    return tuple(out)
 
 
 def _comes_from(value: str, things: Things) -> list[Any]:
@@ -623,13 +647,16 @@ def every_said(parse: Parse) -> list[Phrase]:
 def _count(phrase: Phrase, value: str, things: Things) -> int:
     """How many things a phrase asks for: the number said ("two apples"); every one the map places for
     "all", "every" or "each" first ("all the cups": the two on the table and the one in the cupboard, e2e23;
-    at least one); at least two for a plural that names the class by its head ("the books", "both books"; not
-    "the keys" of a key chain; not "the gloves" or "a pair of gloves", one pair:
-    :data:`~seal_cli.planning.grounding.PAIRED`); one whole for pieces cut from it ("two slices of apple": one
-    apple, sliced; but "two sets of keys" are two key chains)."""
+    at least one); at least two for a plural that names the class by its head or by the head of one of the
+    library's names for it ("the books", "both books", "toilet paper rolls" by "toilet roll"; not "the keys" of a
+    key chain; not "the gloves" or "a pair of gloves", one pair: :data:`~seal_cli.planning.grounding.PAIRED`);
+    one whole for pieces cut from it ("two slices of apple": one apple, sliced; but "two sets of keys" are two
+    key chains)."""
     from seal_cli.language.grounding import PIECES
 
-    named = class_words(value)[-1:] == (phrase.head,)
+    heads = {class_words(name)[-1] for name in (value, *things.taxonomy.names.get(class_key(value), ()))
+             if class_words(name)}       # "toilet paper rolls": the library's "toilet roll" (alfred23)
+    named = phrase.head in heads
     if phrase.head in PIECES and not named:
         return 1
     said = (phrase.text or "").lower().split()

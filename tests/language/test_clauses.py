@@ -93,6 +93,27 @@ def test_contents_said_after_the_place_are_the_carried_thing_s(library: Library,
     assert _frames(text, library) == expected
 
 
+@pytest.mark.parametrize(("text", "expected"), [
+    ("put the crate that has a melon in it on the porch",       # "that has X in it": "with X in it" (alfred23)
+     [("Place", {"theme": "a melon", "goal": "the crate that has a melon in it"}),
+      ("Place", {"theme": "the crate that has a melon in it", "goal": "the porch"})]),
+    ("set the tray which holds a teapot on it on the bench",
+     [("Place", {"theme": "a teapot", "goal": "the tray which holds a teapot on it"}),
+      ("Place", {"theme": "the tray which holds a teapot on it", "goal": "the bench"})]),
+    ("move the basket that contains the lemons to the porch",   # "that contains X": "containing X"
+     [("Place", {"theme": "the lemons", "goal": "the basket that contains the lemons"}),
+      ("Place", {"theme": "the basket that contains the lemons", "goal": "the porch"})]),
+])
+def test_what_a_relative_clause_says_a_thing_holds_is_its_contents(library: Library, text: str,
+                                                                     expected: list[object]) -> None:
+    assert _frames(text, library) == expected
+
+
+def test_having_with_nothing_in_it_stays_a_relative_clause(library: Library) -> None:
+    assert _frames("bring me the cup that has a chip", library) == [
+        ("Bring", {"theme": "the cup", "recipient": "me"})]      # no contents, no second frame
+
+
 @pytest.mark.parametrize("text", [
     "bring the newspaper to the table with the lamp on it",     # a newspaper holds nothing: the table's lamp
     "put the apple on the plate with a fork on it",             # the plate holds things: its fork

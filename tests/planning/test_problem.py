@@ -28,9 +28,15 @@ def themes(text: str, library: Library) -> list[str]:
     ("put the keys on the desk", ["key_chain"]),                    # "keys" names a key chain, not its head
     ("put two sets of keys on the desk", ["key_chain", "key_chain_2"]),   # groups are counted
     ("put two rolls of toilet paper on the desk", ["toilet_paper", "toilet_paper_2"]),
+    ("put the toilet paper rolls on the desk", ["toilet_paper", "toilet_paper_2"]),   # the library's "toilet roll"
     ("put two slices of apple in the microwave", ["apple"]),        # pieces of one apple, sliced
     ("put the apple and the pear in the fridge", ["apple", "pear"]),     # every conjunct
     ("put the apple and two pears in the fridge", ["apple", "pear", "pear_2"]),
+    # two conjuncts of one class are two things (alfred23): a roll said twice, a tube and a roll
+    ("put an empty roll and a full roll of toilet paper on the desk", ["toilet_paper", "toilet_paper_2"]),
+    ("put the tube and the toilet paper roll in the fridge", ["toilet_paper", "toilet_paper_2"]),
+    ("put a book, an old book and a pear on the desk", ["book", "book_2", "pear"]),
+    ("put the book and two more books on the desk", ["book", "book_2", "book_3"]),
     ("put a dozen apples in the fridge", [f"apple{'' if k == 1 else f'_{k}'}" for k in range(1, 13)]),  # hostile21
     ("put ３ books on the desk", ["book", "book_2", "book_3"]),     # a full-width digit (hostile21)
     ("put fifteen books on the desk", [f"book{'' if k == 1 else f'_{k}'}" for k in range(1, 16)]),  # hostile21
@@ -38,6 +44,16 @@ def themes(text: str, library: Library) -> list[str]:
 ])
 def test_how_many_things_a_phrase_asks_for(library: Library, text: str, expected: list[str]) -> None:
     assert themes(text, library) == expected
+
+
+def test_a_coordination_of_one_class_on_a_map_is_the_map_s_one_thing(library: Library) -> None:
+    """On a map, a thing said twice is the map's thing, not a second one the map does not have."""
+    from seal_cli.maps.model import Map, Place
+
+    the_map = Map("room", (0.0, 0.0, 4.0, 4.0), places=[Place("desk", "desk", (1.0, 1.0))])
+    problem = problem_of_text("put the book and the old book on the desk", library, vocabulary=VOCAB,
+                              map=the_map)
+    assert [b.elements["theme"] for b in problem.commanded if b.frame.name == "Place"] == ["book"]
 
 
 def test_pieces_are_cut_from_one_whole(library: Library) -> None:

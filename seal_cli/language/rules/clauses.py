@@ -183,7 +183,12 @@ SUBORDINATE_INSIDE = Rule("subordinate clause", _subordinate, (
 RELATIVE = Rule("relative clause", _relative, (
     Example("bring me the glass that I was drinking from", "that I was drinking from", Tag.REL),
     Example("put the cup where it belongs", "where it belongs", Tag.HERE),
-), SUB_FIRST | REL_FIRST, "a relative clause after a noun, kept whole (or 'that is' dropped)")
+    Example("put the box that has a candle in it on the shelf", "that has", Tag.PREP),       # "with" (alfred23)
+    Example("set down the tray which holds two cups on it", "which holds", Tag.PREP),
+    Example("move the crate that contains the lemons to the porch", "that contains", Tag.VBG_T),  # "containing"
+    Example("bring me the cup that has a chip", "that has a chip", Tag.REL),
+), SUB_FIRST | REL_FIRST, "a relative clause after a noun, kept whole (or 'that is' dropped; 'that has X in it': "
+   "'with X in it')")
 COMMA_RELATIVE = Rule("relative clause after a comma", _comma_relative, (
     Example("take it to Adel, who's in the bathroom.", "who 's", Tag.REL),
     Example("give the cup to the man, who is sitting on the sofa", "sitting", Tag.VBG_P),
