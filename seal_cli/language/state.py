@@ -40,6 +40,7 @@ from seal_cli.language.english import (
     PATH_PREPOSITIONS,
     POLITE,
     POLITE_FORMULAE,
+    POSSESSIVES,
     PREPOSITIONS,
     PRONOUNS,
     QUANTIFIERS,
@@ -280,9 +281,36 @@ def _without_fillers(words: list[Word]) -> list[Word]:
     return kept
 
 
+_LEANING = (DETERMINERS | POSSESSIVES | frozenset(p for p in PREPOSITIONS if " " not in p)) - {"that", "this"}
+"""Words that lean on what follows (a determiner, a possessive, a one-word preposition): said twice in a row, they
+are a speaker's restart, not two words of the command."""
+_RESTART = 3
+"""The most words of a restart said again ("go *to the to the* kitchen")."""
+
+
+def _without_restarts(words: list[Word]) -> list[Word]:
+    """The words without a run of leaning words said again at once ("bring me *the the* remote", "go *to the to
+    the* kitchen", "put the keys *on the on the* hook"): dictated speech restarts a phrase, so the first run is
+    dropped. Only words that cannot end a phrase: "that that" (a pronoun, then a determiner) and "go in, in a
+    minute" keep both."""
+    kept: list[Word] = []
+    i = 0
+    while i < len(words):
+        for n in range(_RESTART, 0, -1):
+            if i + 2 * n <= len(words) and all(w.lower in _LEANING for w in words[i:i + n]) and \
+                    all(words[i + k].lower == words[i + n + k].lower for k in range(n)):
+                i += n                          # the first run said is dropped; the second is read
+                break
+        else:
+            kept.append(words[i])
+            i += 1
+    return kept
+
+
 def read_words(words: list[Word]) -> list[Word]:
-    """The words as the tagger reads them: without fillers, "its" read as "it's" where a noun cannot follow."""
-    words = _without_fillers(words)
+    """The words as the tagger reads them: without fillers and restarts, "its" read as "it's" where a noun cannot
+    follow."""
+    words = _without_restarts(_without_fillers(words))
     if any(w.lower == "its" for w in words):
         words = [Word(w.text, w.start, w.end, w.tag, w.info, "it's") if w.lower == "its" and _its_is_it_is(words, k)
                  else w for k, w in enumerate(words)]      # "turn the radio off *its* too loud"

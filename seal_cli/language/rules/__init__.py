@@ -45,6 +45,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     politeness.YOU_IMPERATIVE,
     lead_ins.COMMA_AFTER_POLITENESS,
     lead_ins.SEQUENCING,
+    lead_ins.TIME_SAID_FIRST,
     lead_ins.BEING_AT_RULE,
     lead_ins.HAVING_FIRST_RULE,
     lead_ins.ON_THE_WAY,

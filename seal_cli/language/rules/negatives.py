@@ -9,6 +9,8 @@ last phrase said: the earlier one is dropped and the new one read in its place.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from seal_cli.language.english import (
     CANCELLATIONS,
     CORRECTION_MARKS,
@@ -21,6 +23,7 @@ from seal_cli.language.english import (
 from seal_cli.language.morphology import verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import State, longest_phrase, merge
+from seal_cli.language.tokens import Word
 from seal_cli.language.tags import Tag
 
 _JOINS = frozenset(["and", "but", "then", "or"])
@@ -49,6 +52,21 @@ def _negation(s: State, i: int) -> int:
             _not_asked(s, i + 1):
         return 1
     return 0
+
+
+_NEGATIONS = PROHIBITIVES | CANCELLATIONS
+
+
+def opens_prohibition(words: Sequence[Word], k: int) -> bool:
+    """Whether the tagged word ``k`` opens a prohibition or a cancellation, as :func:`_negation` reads them: one of
+    ``english.PROHIBITIVES`` or ``english.CANCELLATIONS`` (merged into one word by the rule that refuses it, "do
+    not", "never mind", or said out: "*don't* open the window", "*no need to* wash it"), or "not" right after
+    "... you" ("can you *not* slam the door"). The one source of the parser's message "asks the robot not to do
+    something" (words29; the parser had its own word list)."""
+    low = words[k].lower
+    if low in _NEGATIONS or longest_phrase(words, k, _NEGATIONS):
+        return True
+    return low == "not" and k > 0 and words[k - 1].lower.split()[-1:] == ["you"]
 
 
 def _not_asked(s: State, k: int) -> bool:
