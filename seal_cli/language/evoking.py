@@ -850,7 +850,14 @@ class Evoker:
         plural = np.plural and np.kind != "message" and not (   # "the keys": one key chain, as people mean it
             np.quantity is None and not np.conjuncts and self.vocabulary is not None and np.head is not None
             and self.vocabulary.names_one([w.text for w in np.mods] + [np.head.text]))
-        return Phrase(text, np.head_text if np.kind != "message" else np.question or text, cls, np.kind, None,
+        head = np.head_text if np.kind != "message" else np.question or text
+        if np.kind == "thing":
+            noun = self.reference.noun_for_one(np)              # "the red one": the noun said before (words29)
+            if noun is not None:
+                head = noun
+                if cls is None and self.vocabulary is not None:
+                    cls = self.vocabulary.grounded([noun], [])
+        return Phrase(text, head, cls, np.kind, None,
                       np.quantity,
                       plural, modifiers, span=(np.start, np.end), conjuncts=conjuncts,
                       relative=np.relative)

@@ -133,6 +133,20 @@ class Reference:
             return None             # "wait at the door until *the guest* arrives, then greet them": no door greeted
         return None if best is None else best[1:]
 
+    def noun_for_one(self, np: NP) -> str | None:
+        """The noun "one"/"ones" stands for in a phrase that describes it ("not the blue cup, bring me *the red
+        one*", "the big spoon is dirty, bring me *a clean one*", "put the old batteries in the bin and bring me
+        *new ones*"): the head of the latest phrase said before it that no preposition governs (a thing moved or
+        named, not where it goes), a plural one for "ones"; None when no phrase was said before. One-anaphora
+        repeats the noun, not the thing: the phrase names another of the same kind, so it refers to no element."""
+        if np.head is None or np.head.lower not in ("one", "ones") or not np.mods or np.pronoun is not None:
+            return None
+        said = [m for m in mentions(self.text, 0, np.start) if not m.name and not m.oblique and
+                m.head.lower() not in ("one", "ones") and m.head.lower() not in PRONOUNS]
+        if np.head.lower == "ones":
+            said = [m for m in said if is_plural(m.head.lower()) or plural_only(m.head.lower())]
+        return noun_lemma(said[-1].head) if said else None
+
     def undoes(self, frame: Frame, role: str, earlier: str, name: str) -> bool:
         """Whether ``frame`` ends, on its element ``role``, a state the ``earlier`` frame gave its element
         ``name`` (Close's ``not open(theme)`` undoes Open's ``open(theme)``)."""

@@ -19,9 +19,11 @@ from seal_cli.language.english import (
     HAVING_FIRST,
     HAVING_MEANS,
     LOCATIVE,
+    NOMINATIVE,
     NP_OPENERS,
     PARTICLES,
     PARTS_OF_DAY,
+    PRONOUNS,
     PREPOSITIONS,
     SEPARATOR_WORDS,
     TIME_FIRST_LEAD,
@@ -29,11 +31,11 @@ from seal_cli.language.english import (
     TIME_UNITS,
     TIME_WORDS,
 )
-from seal_cli.language.morphology import gerund_lemma, is_adverb
+from seal_cli.language.morphology import gerund_lemma, is_adverb, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import CLOSED, LEAD_FIRST, TIME_FIRST, State, first_words, match_phrase, merge
 from seal_cli.language.tags import Tag
-from seal_cli.language.tokens import Word
+from seal_cli.language.tokens import Word, capitalised
 
 
 def _not_a_verb(s: State, i: int) -> bool:
@@ -90,7 +92,10 @@ def _time_said(s: State, i: int) -> int:
             return k + 1 - i
     if low in TIME_FIRST_LEAD and i + 1 < len(words):
         nxt = words[i + 1].lower
-        if nxt.isalpha() and nxt not in CLOSED and s.verb_at(i + 1) is None and not nxt.endswith("ing"):
+        after = s.next_lower(i + 1)
+        if nxt.isalpha() and nxt not in CLOSED and nxt not in PRONOUNS and nxt not in NOMINATIVE and not capitalised(words[i + 1]) and \
+                s.verb_at(i + 1) is None and not nxt.endswith("ing") and \
+                (after == "," or verb_lemma(after) == after):       # "until dad gets home": a clause, no time
             return 2                                                # "after lunch", "before bed"
     return 0
 

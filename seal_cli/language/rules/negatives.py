@@ -22,7 +22,7 @@ from seal_cli.language.english import (
 )
 from seal_cli.language.morphology import verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import State, longest_phrase, merge
+from seal_cli.language.state import State, first_words, longest_phrase, merge
 from seal_cli.language.tokens import Word
 from seal_cli.language.tags import Tag
 
@@ -116,6 +116,20 @@ def _prohibited_first(s: State, i: int) -> Match | None:
     return Match(stop - i, remarks=((words[i].start, words[end - 1].end),), expect=True)
 
 
+def _denied_first(s: State, i: int) -> Match | None:
+    """"*not the blue cup,* bring me the red one": "not" and a noun phrase, a comma, then a command: which thing is
+    not meant, a remark (the command's phrase says which is)."""
+    words = s.words
+    if s.out and s.prev_tag() not in (Tag.SEP, Tag.POLITE) or not s.np_starts(i + 1) or s.verb_after(i + 1):
+        return None
+    k = i + 1
+    while k < len(words) and words[k].lower not in _CLAUSE_ENDS and words[k].lower not in _JOINS:
+        k += 1
+    if k >= len(words) or words[k].lower != "," or k == i + 1 or not _command_after(s, k + 1):
+        return None
+    return Match(k + 1 - i, remarks=((words[i].start, words[k - 1].end),), expect=True)
+
+
 def _prohibited_after(s: State, i: int) -> Match | None:
     """", but don't wash it", "and never leave it open": a prohibition said after the command, with its joint."""
     words = s.words
@@ -181,8 +195,12 @@ PROHIBITED_FIRST = Rule("a prohibition, then the command", _prohibited_first, (
     Example("could you not bang the door, just shut it", "bang", ""),
     Example("can you not bang the door", "not", Tag.WORD),
     Example("never leave the door open", "never", Tag.WORD),
-), frozenset(["don't", "dont", "do", "never", "please", "not", "nevermind", "forget", "no", "there's", "you"]),
+), first_words(_NEGATIONS) | {"not"},
     "a clause said negatively before the command asks nothing: a remark; alone, an error")
+DENIED_FIRST = Rule("a phrase denied, then the command", _denied_first, (
+    Example("not the blue cup, bring me the red one", "blue", ""),
+    Example("not the green towel, please take the white one to the bathroom", "green", ""),
+), frozenset(["not"]), "'not NP, V ...': the phrase denied before the command is a remark (which one is not meant)")
 PROHIBITED_AFTER = Rule("a prohibition after the command", _prohibited_after, (
     Example("take the plate but don't wash it", "wash", ""),
     Example("shut the window, and never open it again", "open", ""),
