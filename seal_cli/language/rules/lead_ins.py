@@ -23,8 +23,8 @@ from seal_cli.language.english import (
     NP_OPENERS,
     PARTICLES,
     PARTS_OF_DAY,
-    PRONOUNS,
     PREPOSITIONS,
+    PRONOUNS,
     SEPARATOR_WORDS,
     TIME_FIRST_LEAD,
     TIME_MEASURE,
@@ -93,7 +93,8 @@ def _time_said(s: State, i: int) -> int:
     if low in TIME_FIRST_LEAD and i + 1 < len(words):
         nxt = words[i + 1].lower
         after = s.next_lower(i + 1)
-        if nxt.isalpha() and nxt not in CLOSED and nxt not in PRONOUNS and nxt not in NOMINATIVE and not capitalised(words[i + 1]) and \
+        if nxt.isalpha() and nxt not in CLOSED and nxt not in PRONOUNS | NOMINATIVE and \
+                not capitalised(words[i + 1]) and \
                 s.verb_at(i + 1) is None and not nxt.endswith("ing") and \
                 (after == "," or verb_lemma(after) == after):       # "until dad gets home": a clause, no time
             return 2                                                # "after lunch", "before bed"

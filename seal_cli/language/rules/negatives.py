@@ -23,8 +23,8 @@ from seal_cli.language.english import (
 from seal_cli.language.morphology import verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import State, first_words, longest_phrase, merge
-from seal_cli.language.tokens import Word
 from seal_cli.language.tags import Tag
+from seal_cli.language.tokens import Word
 
 _JOINS = frozenset(["and", "but", "then", "or"])
 _CLAUSE_ENDS = frozenset([",", ";", ":"]) | END_MARKS
