@@ -2210,3 +2210,86 @@ def test_help_with_no_verb_after_it_is_the_verb_the_robot_lacks(library: Library
     with pytest.raises(CommandError) as refused:
         parse_command("help me to the kitchen", library)
     assert "unknown verb 'help'" in refused.value.message and "the robot can" in refused.value.message
+
+
+# -- words29 ---------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("in ten minutes switch off the kettle", [("ToggleOff", {"theme": "kettle"})]),
+    ("in a few minutes, close the oven", [("Close", {"theme": "oven"})]),
+    ("at six thirty, switch on the radio", [("ToggleOn", {"theme": "radio"})]),
+    ("tomorrow morning open the blinds", [("Open", {"theme": "blind"})]),
+    ("later on, heat the stew", [("Heat", {"theme": "stew"})]),              # was a ToggleOn of "on"
+    ("after dinner wipe the hob", [("Clean", {"theme": "hob"})]),
+    ("before bed, switch off the heater", [("ToggleOff", {"theme": "heater"})]),
+    ("right now I need you to find the dog", [("Find", {"theme": "dog"})]),
+    ("until I get back, wait by the car", [("Wait", {"ground": "car"})]),   # a clause: a condition, as before
+    ("cut the melon in half", [("Slice", {"theme": "melon"})]),             # "in half" after the verb: as before
+])
+def test_a_time_said_before_the_verb_is_when(
+        text: str, want: list[tuple[str, dict[str, str]]] | None, library: Library) -> None:
+    """A time adverbial, a time with a number or a measure ("in a few minutes"), or "after"/"before" and a bare noun,
+    said before the verb, says when: it is no verb ("unknown verb 'in'") and no thing."""
+    assert_reads(text, want, library)
+
+
+def test_a_time_said_first_is_the_frames_time(library: Library) -> None:
+    frame = parse_command("in twenty minutes, take the pie out of the oven", library).frames[0]
+    assert frame.time == "in twenty minutes"
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("go into the into the garage", [("Go", {"goal": "garage"})]),
+    ("fetch me my my slippers", [("Bring", {"theme": "slipper", "recipient": "me"})]),
+    ("put the mug on the on the shelf", [("Place", {"theme": "mug", "goal": "shelf"})]),
+    ("bring me the cup that that man left", [("Bring", {"theme": "cup", "recipient": "me"})]),   # "that that" stays
+])
+def test_a_restart_of_leaning_words_is_read_once(
+        text: str, want: list[tuple[str, dict[str, str]]] | None, library: Library) -> None:
+    """Dictated speech restarts a phrase ("to the to the"): a run of determiners, possessives or prepositions said
+    again at once is read once; the element's text holds it once."""
+    assert_reads(text, want, library)
+
+
+def test_a_restart_leaves_the_phrase_as_said_once(library: Library) -> None:
+    goal = parse_command("go into the into the garage", library).frames[0].elements["goal"]
+    assert goal.text == "the garage"
+
+
+@pytest.mark.parametrize(("text", "head", "count"), [
+    ("put half the grapes in the bowl", "grape", None),
+    ("give Tom half of the sandwich", "sandwich", None),
+    ("bring me a hundred and one pegs", "peg", 101),
+    ("bring me two hundred and fifty napkins", "napkin", 250),
+    ("bring me three hundred forty beads", "bead", 340),
+])
+def test_half_and_numbers_past_a_hundred_count_the_noun(
+        text: str, head: str, count: int | None, library: Library) -> None:
+    theme = parse_command(text, library).frames[0].elements["theme"]
+    assert theme.head == head and theme.quantity == count and not theme.conjuncts
+
+
+@pytest.mark.parametrize(("text", "head"), [
+    ("the small towel is wet, bring me a dry one", "towel"),
+    ("not the green mug, bring me the white one", "mug"),
+    ("throw away the old socks and bring me clean ones", "sock"),
+    ("there are two cushions on the sofa, bring me the soft one", "cushion"),
+    ("open the top drawer, sorry, the bottom one", "drawer"),
+])
+def test_one_after_adjectives_stands_for_the_noun_said_before(text: str, head: str, library: Library) -> None:
+    """One-anaphora: "a dry one" is a towel, another than the wet one; the head is the noun, the phrase refers to
+    no earlier element (it is another thing of the kind)."""
+    theme = parse_command(text, library).frames[-1].elements["theme"]
+    assert theme.head == head and theme.refers_to is None
+
+
+def test_one_with_nothing_said_before_stays_one(library: Library) -> None:
+    assert parse_command("bring me the red one", library).frames[0].elements["theme"].head == "one"
+
+
+def test_a_phrase_denied_first_is_a_remark(library: Library) -> None:
+    parse = parse_command("not the blue towel, bring me the striped one", library)
+    assert parse.remarks and "not the blue towel" in parse.remarks[0]
+    with pytest.raises(CommandError):
+        parse_command("not the blue towel", library)               # nothing asked

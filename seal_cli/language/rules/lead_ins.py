@@ -21,6 +21,7 @@ from seal_cli.language.english import (
     LOCATIVE,
     NOMINATIVE,
     NP_OPENERS,
+    NUMBERS,
     PARTICLES,
     PARTS_OF_DAY,
     PREPOSITIONS,
@@ -33,6 +34,7 @@ from seal_cli.language.english import (
 )
 from seal_cli.language.morphology import gerund_lemma, is_adverb, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
+from seal_cli.language.rules.numbers import TEENS, TENS
 from seal_cli.language.state import CLOSED, LEAD_FIRST, TIME_FIRST, State, first_words, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
@@ -86,8 +88,9 @@ def _time_said(s: State, i: int) -> int:
         return n                                                    # "in five minutes", "at six"
     if low == "in":
         k = i + 1
-        while k < len(words) and words[k].lower in TIME_MEASURE:
-            k += 1                                                  # "in a couple of minutes", "in a few hours"
+        while k < len(words) and (words[k].lower in TIME_MEASURE or words[k].lower in NUMBERS or
+                                  words[k].lower in TEENS or words[k].lower in TENS or words[k].lower.isdigit()):
+            k += 1                                                  # "in a couple of minutes", "in twenty minutes"
         if k > i + 1 and k < len(words) and words[k].lower in TIME_UNITS:
             return k + 1 - i
     if low in TIME_FIRST_LEAD and i + 1 < len(words):
