@@ -30,6 +30,7 @@ from seal_cli.language.english import (
     HERE_WORDS,
     LINKING_VERBS,
     LOCATIVE,
+    MODALS,
     NOMINATIVE,
     NOT_PLACES,
     NP_OPENERS,
@@ -995,7 +996,35 @@ class State:
                 return "then", state + 1, "then"    # "when you're there look for a cup": the clause is its own
             return "then", self.cond_end(state + 1), "then"
         end = self.cond_end(j)
+        if end >= len(words) or words[end].lower in END_MARKS:
+            end = self.run_on_condition(j, end) or end      # "when Sam comes home *give* him his keys"
         return ("cond", end, sub) if end > j else None
+
+    def run_on_condition(self, j: int, end: int) -> int | None:
+        """Where the command starts inside a condition said first with no comma ("when Sam comes home *give* him
+        his keys", "if the kettle has boiled *pour* the water"): after a finite verb of the condition (one that
+        is not its own lemma: "comes", "has"), a verb of the library in its base form, not after a determiner,
+        "to", a modal or "and", with an object, a particle or nothing after it; None when there is none (dictated
+        speech drops the comma: words29)."""
+        words = self.words
+        finite = False
+        for k in range(j, end):
+            low = words[k].lower
+            lemma = verb_lemma(low)
+            if not finite:
+                finite = lemma is not None and lemma != low and low not in NP_OPENERS or low in BE_WORDS
+                continue
+            before = words[k - 1].lower
+            if before in NP_OPENERS or before in MODALS or before in BE_WORDS or \
+                    before in ("to", "and", "or", "not", "'s"):     # "if the door is *open*": its state
+                continue
+            found = self.verb_at(k)
+            if found is None or found[0].split()[0] != low:
+                continue
+            nxt = words[k + 1].lower if k + 1 < len(words) else ""
+            if not nxt or nxt in END_MARKS or nxt in PRONOUNS or self.np_starts(k + 1) or nxt in PARTICLES:
+                return k
+        return None
 
     def _clause_follows(self, k: int) -> bool:
         """Whether a clause of the command starts at ``k``, maybe after a comma."""
