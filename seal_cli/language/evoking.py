@@ -791,6 +791,10 @@ class Evoker:
                 target = self.frames[index].elements[name]
                 ref = target.refers_to or (index, name)
                 root = self.frames[ref[0]].elements[ref[1]]
+                owner = self.reference.owner_before(np)
+                if owner is not None and f"{owner}'s" in (root.text or ""):     # "go to Priya's office and tell
+                    return Phrase(self.text[np.start:np.end], owner, None, "person",     # her": Priya, no office
+                                  span=(np.start, np.end))
                 series = self.series(ref) if np.pronoun in ("them", "they", "both") and found[2] != "person" \
                     and not root.plural and not root.conjuncts else [ref]
                 if len(series) > 1:                 # "get the milk from the fridge and the mug from the living
@@ -809,6 +813,9 @@ class Evoker:
                 start, end = self.reference.with_its_place(said)
                 return Phrase(self.text[np.start:np.end], noun_lemma(said.head), self.mentioned_class(said), "thing",
                               span=(np.start, np.end), stands_for=self.text[start:end])
+            owner = self.reference.owner_before(np)
+            if owner is not None:                   # "go to Tom's room and tell him ...": Tom
+                return Phrase(self.text[np.start:np.end], owner, None, "person", span=(np.start, np.end))
             return Phrase(self.text[np.start:np.end], np.head_text, None,
                           "thing" if np.kind == "pronoun" and np.pronoun == "it" else
                           "person" if np.kind == "pronoun" else np.kind, span=(np.start, np.end))

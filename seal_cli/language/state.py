@@ -285,6 +285,9 @@ def _without_fillers(words: list[Word]) -> list[Word]:
 _LEANING = (DETERMINERS | POSSESSIVES | frozenset(p for p in PREPOSITIONS if " " not in p)) - {"that", "this"}
 """Words that lean on what follows (a determiner, a possessive, a one-word preposition): said twice in a row, they
 are a speaker's restart, not two words of the command."""
+_OPENING = DETERMINERS | POSSESSIVES
+"""The last word of a restart: one that opens a noun phrase ("the the", "to the to the"); a preposition said twice
+may be a particle and its preposition ("turn the lamp on *on* the desk")."""
 _RESTART = 3
 """The most words of a restart said again ("go *to the to the* kitchen")."""
 
@@ -292,13 +295,14 @@ _RESTART = 3
 def _without_restarts(words: list[Word]) -> list[Word]:
     """The words without a run of leaning words said again at once ("bring me *the the* remote", "go *to the to
     the* kitchen", "put the keys *on the on the* hook"): dictated speech restarts a phrase, so the first run is
-    dropped. Only words that cannot end a phrase: "that that" (a pronoun, then a determiner) and "go in, in a
-    minute" keep both."""
+    dropped. Only runs of words that cannot end a phrase, ending in a determiner or a possessive: "that that" (a
+    pronoun, then a determiner), "turn the lamp on on the desk" (a particle, then a preposition) keep both."""
     kept: list[Word] = []
     i = 0
     while i < len(words):
         for n in range(_RESTART, 0, -1):
             if i + 2 * n <= len(words) and all(w.lower in _LEANING for w in words[i:i + n]) and \
+                    words[i + n - 1].lower in _OPENING and \
                     all(words[i + k].lower == words[i + n + k].lower for k in range(n)):
                 i += n                          # the first run said is dropped; the second is read
                 break

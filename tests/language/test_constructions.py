@@ -2293,3 +2293,37 @@ def test_a_phrase_denied_first_is_a_remark(library: Library) -> None:
     assert parse.remarks and "not the blue towel" in parse.remarks[0]
     with pytest.raises(CommandError):
         parse_command("not the blue towel", library)               # nothing asked
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("when Ana gets back give her the parcel", [("Give", {"theme": "parcel", "recipient": "Ana"})]),
+    ("if the soup has cooled put it in the fridge", [("Place", {"theme": "soup", "goal": "fridge"})]),
+    ("if the gate is open shut it", [("Close", {"theme": "gate"})]),                  # "open": its state
+    ("if the radio is on turn it off", [("ToggleOff", {"theme": "radio"})]),
+])
+def test_a_condition_said_first_without_a_comma_ends_at_the_commands_verb(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """Dictated speech drops the comma after a condition: after the condition's finite verb, a verb of the library in
+    its base form, not after "is", a determiner, "to" or a modal, starts the command."""
+    assert_reads(text, want, library)
+
+
+def test_a_split_particle_before_a_direction_stands_alone(library: Library) -> None:
+    assert [f for f, _ in frames("turn the heating off upstairs", library)] == ["ToggleOff"]
+
+
+@pytest.mark.parametrize(("text", "who"), [
+    ("go to Priya's office and tell her the taxi is here", "Priya"),
+    ("take Omar's scarf to him", "Omar"),
+])
+def test_him_or_her_with_nobody_else_said_is_the_owner_named(text: str, who: str, library: Library) -> None:
+    frame = parse_command(text, library).frames[-1]
+    assert frame.elements["recipient"].head == who and frame.elements["recipient"].kind == "person"
+
+
+def test_a_phrase_denied_after_the_command_is_a_remark(library: Library) -> None:
+    """"give me the big bowl, not the small one." was refused as a prohibition ("asks the robot not to do
+    something"), then, with the one source of prohibitions, "unknown verb 'not'"; which thing is not meant is said
+    beside the command."""
+    parse = parse_command("hand me the long spoon, not the short one.", library)
+    assert [f.frame for f in parse.frames] == ["Give"] and parse.remarks == ("not the short one",)

@@ -111,6 +111,7 @@ word is tagged as what it is (``INSIDE``), and the grammar reports the missing v
 INSIDE: tuple[Rule, ...] = (
     clauses.END_MARK,
     negatives.CORRECTED,
+    negatives.DENIED_AFTER,
     negatives.PROHIBITED_AFTER,
     question_tags.QUESTION_TAG,
     requests.KNOW_AFTER_LET,

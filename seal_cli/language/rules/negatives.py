@@ -22,7 +22,7 @@ from seal_cli.language.english import (
 )
 from seal_cli.language.morphology import verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import State, first_words, longest_phrase, merge
+from seal_cli.language.state import TIME_FIRST, State, first_words, longest_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word
 
@@ -130,6 +130,21 @@ def _denied_first(s: State, i: int) -> Match | None:
     return Match(k + 1 - i, remarks=((words[i].start, words[k - 1].end),), expect=True)
 
 
+def _denied_after(s: State, i: int) -> Match | None:
+    """"give me the big bowl*, not the small one*": a comma, "not" and a noun phrase ending the sentence (or before
+    the next comma) after the command: which thing is not meant, a remark."""
+    words = s.words
+    if i + 2 >= len(words) or words[i + 1].lower != "not" or s.expect_verb or not s.np_starts(i + 2) or \
+            s.verb_after(i + 2) or words[i + 2].lower in TIME_FIRST:
+        return None                              # ", not now": when, not which (as before)
+    k = i + 2
+    while k < len(words) and words[k].lower not in _CLAUSE_ENDS and words[k].lower not in _JOINS:
+        k += 1
+    if k < len(words) and words[k].lower not in END_MARKS and words[k].lower != ",":
+        return None
+    return Match(k - i, remarks=((words[i + 1].start, words[k - 1].end),))
+
+
 def _prohibited_after(s: State, i: int) -> Match | None:
     """", but don't wash it", "and never leave it open": a prohibition said after the command, with its joint."""
     words = s.words
@@ -213,3 +228,7 @@ CORRECTED = Rule("a phrase corrected", _corrected, (
     Example("switch on the lamp, no, the reading light", "lamp", ""),
     Example("bring me the sugar, no, not the sugar, the salt", "sugar", ""),
 ), frozenset([","]), "', no, NP' after a phrase: the new phrase stands for the last one said")
+DENIED_AFTER = Rule("a phrase denied after the command", _denied_after, (
+    Example("give me the big bowl, not the small one.", "small", ""),
+    Example("bring the red mug, not the blue one, to the kitchen", "blue", ""),
+), frozenset([","]), "', not NP' after the command: which thing is not meant, a remark")
