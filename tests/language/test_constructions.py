@@ -2327,3 +2327,18 @@ def test_a_phrase_denied_after_the_command_is_a_remark(library: Library) -> None
     beside the command."""
     parse = parse_command("hand me the long spoon, not the short one.", library)
     assert [f.frame for f in parse.frames] == ["Give"] and parse.remarks == ("not the short one",)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("fetch Omar a blanket and Lea too", [("Bring", {"theme": "blanket", "recipient": "Omar"}),
+                                          ("Bring", {"theme": "blanket", "recipient": "Lea"})]),
+    ("give the children a biscuit and grandpa as well", [("Give", {"theme": "biscuit", "recipient": "child"}),
+                                                         ("Give", {"theme": "biscuit", "recipient": "grandpa"})]),
+    ("bring me the salt and the pepper too", [("Bring", {"theme": "salt", "recipient": "me"}),
+                                             ("Bring", {"theme": "pepper", "recipient": "me"})]),   # as before
+])
+def test_and_another_person_too_is_the_clause_again_for_them(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """"bring Anna a towel and Ben too" carried Ben as a second thing; a person after "and", then "too", after a
+    clause that gives a thing to a person, is the same clause for that person."""
+    assert_reads(text, want, library)
