@@ -295,6 +295,8 @@ class Clauses:
         person: "bring Anna a towel *and Ben too*", "get Sam a plate and Jo as well": the clause again for the other
         person, with the same things (the coordination pass had joined "a towel and Ben", and the robot would have
         carried Ben). A thing after "and" ("bring me the cup and the spoon too") stays one clause of two things."""
+        if not items or not isinstance(items[-1], Word) or items[-1].lower not in _ALSO:
+            return None
         k = next((j for j, x in enumerate(items) if isinstance(x, Word) and x.tag == "AND_NP" and x.lower == "and"),
                  None)
         if k is None or k < 2 or k + 2 >= len(items):

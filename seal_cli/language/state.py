@@ -288,8 +288,8 @@ are a speaker's restart, not two words of the command."""
 _OPENING = DETERMINERS | POSSESSIVES
 """The last word of a restart: one that opens a noun phrase ("the the", "to the to the"); a preposition said twice
 may be a particle and its preposition ("turn the lamp on *on* the desk")."""
-_RESTART = 3
-"""The most words of a restart said again ("go *to the to the* kitchen")."""
+_RUNS = (3, 2, 1)
+"""How many words a restart said again may have, longest first ("go *to the to the* kitchen")."""
 
 
 def _without_restarts(words: list[Word]) -> list[Word]:
@@ -297,19 +297,21 @@ def _without_restarts(words: list[Word]) -> list[Word]:
     the* kitchen", "put the keys *on the on the* hook"): dictated speech restarts a phrase, so the first run is
     dropped. Only runs of words that cannot end a phrase, ending in a determiner or a possessive: "that that" (a
     pronoun, then a determiner), "turn the lamp on on the desk" (a particle, then a preposition) keep both."""
+    lows = [w.lower for w in words]
+    size = len(lows)
     kept: list[Word] = []
     i = 0
-    while i < len(words):
-        for n in range(_RESTART, 0, -1):
-            if i + 2 * n <= len(words) and all(w.lower in _LEANING for w in words[i:i + n]) and \
-                    words[i + n - 1].lower in _OPENING and \
-                    all(words[i + k].lower == words[i + n + k].lower for k in range(n)):
-                i += n                          # the first run said is dropped; the second is read
+    while i < size:
+        for n in _RUNS:
+            e = i + n                           # the first run said is words[i:e], again at words[e:e + n]
+            if e + n <= size and lows[e - 1] in _OPENING and lows[i:e] == lows[e:e + n] and \
+                    _LEANING.issuperset(lows[i:e]):
+                i = e                           # the first run said is dropped; the second is read
                 break
         else:
             kept.append(words[i])
             i += 1
-    return kept
+    return kept if len(kept) < size else words
 
 
 def read_words(words: list[Word]) -> list[Word]:
