@@ -16,6 +16,7 @@ the garment, not a coat of paint ("jacket", "coat" and "hat" have senses of othe
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 
 from build_person_nouns import Nouns, render  # scripts/build_person_nouns.py, beside this script
@@ -34,12 +35,16 @@ HEADER = """\
 
 def clothing_nouns(nouns: Nouns, roots: tuple[str, ...] = WORN) -> list[str]:
     """The nouns the module's rules keep, sorted."""
-    is_worn = nouns.kind_of(roots)
+    return nouns_whose_senses(nouns, nouns.kind_of(roots))
+
+
+def nouns_whose_senses(nouns: Nouns, is_kind: Callable[[str], bool]) -> list[str]:
+    """The one-word, lower-case nouns whose first sense (every sense, for a noun never tagged) ``is_kind``, sorted."""
     found = []
     for noun, offsets in nouns.senses.items():
         if not (noun.isalpha() and noun in nouns.lower and offsets):
             continue
-        if is_worn(offsets[0]) if nouns.was_tagged(noun) else all(map(is_worn, offsets)):
+        if is_kind(offsets[0]) if nouns.was_tagged(noun) else all(map(is_kind, offsets)):
             found.append(noun)
     return sorted(found)
 

@@ -43,6 +43,8 @@ LIGHT_VERBS = ("give",)
 """Verbs that lend their clause to an action noun: "give the sauce a stir" is stirring it."""
 
 
+_ALSO = frozenset(["too", "as well", "also"])
+"""Words that say a clause holds again for one more ("and Ben *too*"; words29)."""
 _OBJECT_PERSONS = frozenset(["me", "him", "her", "them", "us"])
 """Object pronouns that can be the person a thing is given to ("give *him* the keys and *her* the coat")."""
 
@@ -95,6 +97,13 @@ class Clauses:
                           and not any(isinstance(y, PP) and y.prep == x.prep for y in items)]
             gap = self.make_clause(raw.verb, [*([replace(told)] if told is not None else []), *gapped], [], None)
             gap.start = gapped[0].start
+        echo = self.echoed(items) if split is None else None
+        if echo is not None:              # "bring Anna a towel and Ben too": the same for Ben (words29)
+            other = items[echo + 1]
+            said_end = end_of(items[echo - 1])
+            gap = self.make_clause(raw.verb, [other, *(replace(x) for x in items[1:echo])], [], None)
+            gap.start = other.start
+            items = items[:echo]
         clause = self.make_clause(raw.verb, items, raw.conditions, raw.sub)
         if gap is not None:
             clause.end = min(clause.end, max(said_end, clause.message.end if clause.message else 0))
@@ -279,6 +288,31 @@ class Clauses:
                     before.np.pronoun is None:     # "a bowl with a spoon in it and a knife ...": contents
                 return k
         return None
+
+    @staticmethod
+    def echoed(items: list[Item]) -> int | None:
+        """Where "and", another person and "too" (or "as well", "also") start after a clause that gives a thing to a
+        person: "bring Anna a towel *and Ben too*", "get Sam a plate and Jo as well": the clause again for the other
+        person, with the same things (the coordination pass had joined "a towel and Ben", and the robot would have
+        carried Ben). A thing after "and" ("bring me the cup and the spoon too") stays one clause of two things."""
+        if not items or not isinstance(items[-1], Word) or items[-1].lower not in _ALSO:
+            return None
+        k = next((j for j, x in enumerate(items) if isinstance(x, Word) and x.tag == "AND_NP" and x.lower == "and"),
+                 None)
+        if k is None or k < 2 or k + 2 >= len(items):
+            return None
+        rest = items[k + 2:]
+        if not all(isinstance(x, Word) and x.info == "time" and x.lower in _ALSO for x in rest):
+            return None
+
+        def person(x: Item) -> bool:
+            return isinstance(x, NP) and (x.kind == "person" or x.kind == "pronoun" and
+                                          (x.pronoun or "").lower() in _OBJECT_PERSONS)
+
+        if not (person(items[0]) and person(items[k + 1]) and
+                all(isinstance(x, NP) and x.kind == "thing" for x in items[1:k])):
+            return None
+        return k
 
     @staticmethod
     def to_each(items: list[Item]) -> bool:

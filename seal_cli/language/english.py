@@ -257,6 +257,12 @@ TIME_WORDS = frozenset(["now", "later", "soon", "today", "tonight", "tomorrow", 
                         "in a minute", "in a moment", "for now", "this morning", "this evening", "tonight"])
 """Time adverbials said after a verb's arguments ("put it in the fridge *right away*"): they say when,
 not what, and are no part of a noun phrase."""
+PARTS_OF_DAY = frozenset(["morning", "afternoon", "evening", "night", "weekend"])
+"""Parts of the day a time word names with "this", "tomorrow" or "tonight" before it ("*this afternoon*
+close the blinds", "*tomorrow morning*, wake me up")."""
+TIME_FIRST_LEAD = frozenset(["after", "before", "until", "till", "by"])
+"""Prepositions of a time said first with a bare noun ("*after lunch* clean the counter", "*before bed*, turn off
+the lights"): a time, no subordinate clause (no subject, no verb)."""
 SUBORDINATORS = frozenset(["after", "before", "when", "whenever", "once", "as soon as", "until", "till", "if",
                            "unless", "as long as", "in case", "while"])
 """Words that start a subordinate clause: one of the robot's own ("*after you* wash them": a frame,

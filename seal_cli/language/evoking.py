@@ -791,6 +791,10 @@ class Evoker:
                 target = self.frames[index].elements[name]
                 ref = target.refers_to or (index, name)
                 root = self.frames[ref[0]].elements[ref[1]]
+                owner = self.reference.owner_before(np)
+                if owner is not None and f"{owner}'s" in (root.text or ""):     # "go to Priya's office and tell
+                    return Phrase(self.text[np.start:np.end], owner, None, "person",     # her": Priya, no office
+                                  span=(np.start, np.end))
                 series = self.series(ref) if np.pronoun in ("them", "they", "both") and found[2] != "person" \
                     and not root.plural and not root.conjuncts else [ref]
                 if len(series) > 1:                 # "get the milk from the fridge and the mug from the living
@@ -809,6 +813,9 @@ class Evoker:
                 start, end = self.reference.with_its_place(said)
                 return Phrase(self.text[np.start:np.end], noun_lemma(said.head), self.mentioned_class(said), "thing",
                               span=(np.start, np.end), stands_for=self.text[start:end])
+            owner = self.reference.owner_before(np)
+            if owner is not None:                   # "go to Tom's room and tell him ...": Tom
+                return Phrase(self.text[np.start:np.end], owner, None, "person", span=(np.start, np.end))
             return Phrase(self.text[np.start:np.end], np.head_text, None,
                           "thing" if np.kind == "pronoun" and np.pronoun == "it" else
                           "person" if np.kind == "pronoun" else np.kind, span=(np.start, np.end))
@@ -850,7 +857,14 @@ class Evoker:
         plural = np.plural and np.kind != "message" and not (   # "the keys": one key chain, as people mean it
             np.quantity is None and not np.conjuncts and self.vocabulary is not None and np.head is not None
             and self.vocabulary.names_one([w.text for w in np.mods] + [np.head.text]))
-        return Phrase(text, np.head_text if np.kind != "message" else np.question or text, cls, np.kind, None,
+        head = np.head_text if np.kind != "message" else np.question or text
+        if np.kind == "thing":
+            noun = self.reference.noun_for_one(np)              # "the red one": the noun said before (words29)
+            if noun is not None:
+                head = noun
+                if cls is None and self.vocabulary is not None:
+                    cls = self.vocabulary.grounded([noun], [])
+        return Phrase(text, head, cls, np.kind, None,
                       np.quantity,
                       plural, modifiers, span=(np.start, np.end), conjuncts=conjuncts,
                       relative=np.relative)

@@ -31,6 +31,7 @@ from seal_cli.frames.library import Library
 from seal_cli.language.english import (
     BE_WORDS,
     BECAUSE,
+    DIRECTIONS,
     FINITE,
     NOMINATIVE,
     NP_OPENERS,
@@ -345,7 +346,7 @@ def _stands_alone(words: Sequence[Word], j: int) -> bool:
         return True            # "turn the lamp on *that is* on the table", "the light off *that I* left on": a
         # relative clause of the noun before
     return after in (",", ".", "!", "?", ";", "please") or after in PREPOSITIONS or after in SEPARATOR_WORDS or \
-        after in BECAUSE or "'" in after and after.split("'")[0] in SUBJECTS or \
+        after in DIRECTIONS or after in BECAUSE or "'" in after and after.split("'")[0] in SUBJECTS or \
         match_phrase(words, j + 1, SUBORDINATORS) > 0 or \
         match_phrase(words, j + 1, TIME_WORDS) > 0    # "turn it off *it's* too loud", "... *when*", "... *right away*"
 

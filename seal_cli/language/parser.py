@@ -34,6 +34,7 @@ from seal_cli.language.goals import infer_goal
 from seal_cli.language.lexicon import CommandError, Lexicon, Tagger, Word, tokenize
 from seal_cli.language.morphology import in_verb_tables
 from seal_cli.language.phrasal import phrasal_verb
+from seal_cli.language.rules.negatives import opens_prohibition
 from seal_cli.language.searches import drop_found_again, merge_searches
 from seal_cli.language.slicing import infer_slice
 from seal_cli.language.stacking import infer_stack
@@ -330,7 +331,7 @@ def _explain(error: Any, text: str, words: Sequence[Word], lexicon: Lexicon) -> 
     wants_verb = "VERB" in (error.expected or ())
     if wants_verb and not at_end and token.type not in ("END", "SEP"):
         word = str(token).split()[0].lower()
-        if _prohibits(words, token.start_pos):
+        if opens_prohibition(words, token.start_pos):
             return CommandError(f"{_said_from(text, words, token.start_pos)!r} asks the robot not to do something: "
                                 f"no frame of the library does that; say what it should do (it can "
                                 f"{_either(list(lexicon.can))})", column, text, ["a verb"])
@@ -347,14 +348,6 @@ def _explain(error: Any, text: str, words: Sequence[Word], lexicon: Lexicon) -> 
         return CommandError(f"the command ends too early{after}: expected {_either(expected)}", column, text,
                             expected)
     return CommandError(f"unexpected {str(token)!r}{after}: expected {_either(expected)}", column, text, expected)
-
-
-def _prohibits(words: Sequence[Word], k: int) -> bool:
-    """Whether a prohibition opens at word ``k`` ("*don't* open the window", "*do not* go", "can you *not* slam
-    the door", :mod:`seal_cli.language.rules.negatives`), said with no command beside it."""
-    first = words[k].lower.split()
-    return bool(first) and (first[0] in ("don't", "dont", "never", "not", "nevermind") or first[:2] == ["do", "not"]
-                            or first[:2] == ["no", "need"])
 
 
 def _states(lexicon: Lexicon, text: str, start: int) -> bool:

@@ -20,7 +20,7 @@ from dataclasses import replace
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import BESIDE, LOCATED, NP_OPENERS, PRONOUNS, is_room_word
+from seal_cli.language.english import BESIDE, LOCATED, NP_OPENERS, PREPOSITIONS, PRONOUNS, is_room_word
 from seal_cli.language.lexicon import Mention, Word, mentions, noun_lemma
 from seal_cli.language.morphology import is_plural, parts_of_speech, plural_only
 from seal_cli.language.syntax import NP
@@ -139,6 +139,34 @@ class Reference:
                 self.mentioned(np, frame, role) is not None:
             return None             # "wait at the door until *the guest* arrives, then greet them": no door greeted
         return None if best is None else best[1:]
+
+    def owner_before(self, np: NP) -> str | None:
+        """The person "him"/"her" stands for when no element or statement names one: the latest name said as an
+        owner before it ("go to *Tom's* room and tell him to get up", "take *Anna's* coat to her"; words29)."""
+        if np.pronoun not in ("him", "her", "he", "she"):
+            return None
+        owners = [w.info for w in self.words if w.tag == "POSS" and w.end <= np.start and isinstance(w.info, str)
+                  and w.info[:1].isupper() and " " not in w.info]
+        return owners[-1] if owners else None
+
+    def noun_for_one(self, np: NP) -> str | None:
+        """The noun "one"/"ones" stands for in a phrase that describes it ("not the blue cup, bring me *the red
+        one*", "the big spoon is dirty, bring me *a clean one*", "put the old batteries in the bin and bring me
+        *new ones*", "move it from the black table to *the white one*"): the head of the latest phrase said before
+        it, a plural one for "ones", governed by a preposition as the phrase is or not (the thing moved for an
+        object, where for a place: "take the cup to the sink and bring me a clean one" is a cup); None when no
+        phrase was said before. One-anaphora
+        repeats the noun, not the thing: the phrase names another of the same kind, so it refers to no element."""
+        if np.head is None or np.head.lower not in ("one", "ones") or not np.mods or np.pronoun is not None:
+            return None
+        said = [m for m in mentions(self.text, 0, np.start) if not m.name and
+                m.head.lower() not in ("one", "ones") and m.head.lower() not in PRONOUNS]
+        if np.head.lower == "ones":
+            said = [m for m in said if is_plural(m.head.lower()) or plural_only(m.head.lower())]
+        before = self.text[:np.start].split()
+        oblique = bool(before) and before[-1].lower() in PREPOSITIONS     # "from the black table to *the white one*"
+        said = [m for m in said if m.oblique == oblique] or said
+        return noun_lemma(said[-1].head) if said else None
 
     def undoes(self, frame: Frame, role: str, earlier: str, name: str) -> bool:
         """Whether ``frame`` ends, on its element ``role``, a state the ``earlier`` frame gave its element

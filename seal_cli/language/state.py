@@ -31,6 +31,7 @@ from seal_cli.language.english import (
     HOLDING_VERBS,
     LINKING_VERBS,
     LOCATIVE,
+    MODALS,
     NOMINATIVE,
     NOT_PLACES,
     NP_OPENERS,
@@ -41,6 +42,7 @@ from seal_cli.language.english import (
     PATH_PREPOSITIONS,
     POLITE,
     POLITE_FORMULAE,
+    POSSESSIVES,
     PREPOSITIONS,
     PRONOUNS,
     QUANTIFIERS,
@@ -282,9 +284,42 @@ def _without_fillers(words: list[Word]) -> list[Word]:
     return kept
 
 
+_LEANING = (DETERMINERS | POSSESSIVES | frozenset(p for p in PREPOSITIONS if " " not in p)) - {"that", "this"}
+"""Words that lean on what follows (a determiner, a possessive, a one-word preposition): said twice in a row, they
+are a speaker's restart, not two words of the command."""
+_OPENING = DETERMINERS | POSSESSIVES
+"""The last word of a restart: one that opens a noun phrase ("the the", "to the to the"); a preposition said twice
+may be a particle and its preposition ("turn the lamp on *on* the desk")."""
+_RUNS = (3, 2, 1)
+"""How many words a restart said again may have, longest first ("go *to the to the* kitchen")."""
+
+
+def _without_restarts(words: list[Word]) -> list[Word]:
+    """The words without a run of leaning words said again at once ("bring me *the the* remote", "go *to the to
+    the* kitchen", "put the keys *on the on the* hook"): dictated speech restarts a phrase, so the first run is
+    dropped. Only runs of words that cannot end a phrase, ending in a determiner or a possessive: "that that" (a
+    pronoun, then a determiner), "turn the lamp on on the desk" (a particle, then a preposition) keep both."""
+    lows = [w.lower for w in words]
+    size = len(lows)
+    kept: list[Word] = []
+    i = 0
+    while i < size:
+        for n in _RUNS:
+            e = i + n                           # the first run said is words[i:e], again at words[e:e + n]
+            if e + n <= size and lows[e - 1] in _OPENING and lows[i:e] == lows[e:e + n] and \
+                    _LEANING.issuperset(lows[i:e]):
+                i = e                           # the first run said is dropped; the second is read
+                break
+        else:
+            kept.append(words[i])
+            i += 1
+    return kept if len(kept) < size else words
+
+
 def read_words(words: list[Word]) -> list[Word]:
-    """The words as the tagger reads them: without fillers, "its" read as "it's" where a noun cannot follow."""
-    words = _without_fillers(words)
+    """The words as the tagger reads them: without fillers and restarts, "its" read as "it's" where a noun cannot
+    follow."""
+    words = _without_restarts(_without_fillers(words))
     if any(w.lower == "its" for w in words):
         words = [Word(w.text, w.start, w.end, w.tag, w.info, "it's") if w.lower == "its" and _its_is_it_is(words, k)
                  else w for k, w in enumerate(words)]      # "turn the radio off *its* too loud"
@@ -978,7 +1013,35 @@ class State:
                 return "then", state + 1, "then"    # "when you're there look for a cup": the clause is its own
             return "then", self.cond_end(state + 1), "then"
         end = self.cond_end(j)
+        if end >= len(words) or words[end].lower in END_MARKS:
+            end = self.run_on_condition(j, end) or end      # "when Sam comes home *give* him his keys"
         return ("cond", end, sub) if end > j else None
+
+    def run_on_condition(self, j: int, end: int) -> int | None:
+        """Where the command starts inside a condition said first with no comma ("when Sam comes home *give* him
+        his keys", "if the kettle has boiled *pour* the water"): after a finite verb of the condition (one that
+        is not its own lemma: "comes", "has"), a verb of the library in its base form, not after a determiner,
+        "to", a modal or "and", with an object, a particle or nothing after it; None when there is none (dictated
+        speech drops the comma: words29)."""
+        words = self.words
+        finite = False
+        for k in range(j, end):
+            low = words[k].lower
+            lemma = verb_lemma(low)
+            if not finite:
+                finite = lemma is not None and lemma != low and low not in NP_OPENERS or low in BE_WORDS
+                continue
+            before = words[k - 1].lower
+            if before in NP_OPENERS or before in MODALS or before in BE_WORDS or \
+                    before in ("to", "and", "or", "not", "'s"):     # "if the door is *open*": its state
+                continue
+            found = self.verb_at(k)
+            if found is None or found[0].split()[0] != low:
+                continue
+            nxt = words[k + 1].lower if k + 1 < len(words) else ""
+            if not nxt or nxt in END_MARKS or nxt in PRONOUNS or self.np_starts(k + 1) or nxt in PARTICLES:
+                return k
+        return None
 
     def _clause_follows(self, k: int) -> bool:
         """Whether a clause of the command starts at ``k``, maybe after a comma."""

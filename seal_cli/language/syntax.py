@@ -216,6 +216,9 @@ class Syntax(Transformer[Token, Command]):
                 for word in child.words:
                     if isinstance(word.info, str) and word.info in SUBORDINATORS:
                         sub = word.info          # "before you go to the garage, ..."
+                    elif word.info == "time":    # "in five minutes, turn off the oven": the frame's time
+                        text = word.text.rstrip(",;: ")
+                        items.append(Word(text, word.start, word.start + len(text), "PARTICLE", "time"))
             elif isinstance(child, Word) and child.tag == "COND" and child.info == "asked":
                 asked = child.text           # "is the fridge *open*?": the state asked, no condition
             elif isinstance(child, Word) and child.tag == "COND":

@@ -807,6 +807,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
                             f"multiply: {evoked.frame} alone is {math.prod(len(values[r]) for r in roles):,}); "
                             "split it into smaller commands")
         reading = frame if kept or "goal" in placed_back else on_top(frame, evoked.elements.get("goal"))
+        _one_thing_to_several(frame, evoked, values, roles, parse.text)
         for combination in _combinations(frame, evoked, values, roles, things):
             said = dict(zip(roles, combination, strict=True))
             if kept:        # "put away the cup and the spoon": each where it is kept
@@ -821,6 +822,32 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
 ONE_EACH = frozenset({"a", "an", "one", "another"})
 """Words that open a phrase of one thing of a kind, not a particular one ("*a* biscuit"): handed to several people,
 one each."""
+
+
+ONE_THING = frozenset({"the", "this", "that", "my", "your", "his", "her", "its", "our", "their", "it"})
+"""Words that open a phrase of one particular thing ("*the* cup", "*my* mug", "*it*"): it cannot be handed to
+several people at once."""
+
+
+def _one_thing_to_several(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]],
+                          roles: Sequence[str], text: str) -> None:
+    """Refuse one particular thing handed to several people ("bring Anna and Ben *the cup*"): the robot would give
+    it to Anna, take it back and give it to Ben, which nobody means; the command must say whom it goes to, or ask
+    for one each ("a cup each", ``ONE_EACH``). A thing said with "'s" ("Sam's mug") is one thing too (words29)."""
+    phrase = evoked.elements.get("theme")
+    people = values.get("recipient", ())
+    if (phrase is None or not phrase.text or phrase.plural or phrase.conjuncts or (phrase.quantity or 1) > 1
+            or len(values.get("theme", ())) != 1 or len(people) < 2 or "recipient" not in roles
+            or not frame.needs_held("theme")):
+        return
+    first = phrase.text.lower().split()[0]
+    if first not in ONE_THING and not first.endswith("'s"):
+        return
+    to = evoked.elements["recipient"]
+    raise _located(f"{phrase.text!r} is one thing, and {to.text or 'the recipient'!r} are {len(people)} people: the "
+                   f"robot cannot hand it to each; say whom it goes to (\"{evoked.lexical_unit} "
+                   f"{(to.conjuncts[0].text if to.conjuncts else None) or people[0]} {phrase.text}\"), or ask for "
+                   f"one each (\"a {phrase.head} each\")", phrase, text)
 
 
 def _combinations(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]], roles: Sequence[str],

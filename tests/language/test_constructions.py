@@ -168,7 +168,8 @@ def test_our_sets_of_peoples_wording_score(path: Path, library: Library) -> None
                 for item, parse in zip(items, parse_lines([it["text"] for it in items], library), strict=True)
                 if "error" not in parse)
     # fragments: verbless, unknown verbs (docs/language.md); people16 scored 0.816 after words26 and 0.893 after
-    # words27, people17 0.726 untuned and 0.943 after words27: both held at the others' 0.85
+    # words27, people17 0.726 untuned and 0.943 after words27, people18 0.820 untuned and 0.920 after words29: all held
+    # at the others' 0.85
     least = 0.80 if "fragments" in path.name else 0.85
     assert right / len(items) >= least           # measured: 1.000, 0.900, 0.933, 1.000; 0.938, 0.935, 0.986; 0.822
 
@@ -2304,3 +2305,135 @@ def test_a_verb_of_going_after_politeness_starts_the_command(library: Library) -
     more politeness with no verb after it."""
     assert frames("Ada is by the lift, please go with her", library) == [
         ("Follow", {"theme": "Ada", "source": "lift"})]
+
+
+# -- words29 ---------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("in ten minutes switch off the kettle", [("ToggleOff", {"theme": "kettle"})]),
+    ("in a few minutes, close the oven", [("Close", {"theme": "oven"})]),
+    ("at six thirty, switch on the radio", [("ToggleOn", {"theme": "radio"})]),
+    ("tomorrow morning open the blinds", [("Open", {"theme": "blind"})]),
+    ("later on, heat the stew", [("Heat", {"theme": "stew"})]),              # was a ToggleOn of "on"
+    ("after dinner wipe the hob", [("Clean", {"theme": "hob"})]),
+    ("before bed, switch off the heater", [("ToggleOff", {"theme": "heater"})]),
+    ("right now I need you to find the dog", [("Find", {"theme": "dog"})]),
+    ("until I get back, wait by the car", [("Wait", {"ground": "car"})]),   # a clause: a condition, as before
+    ("cut the melon in half", [("Slice", {"theme": "melon"})]),             # "in half" after the verb: as before
+])
+def test_a_time_said_before_the_verb_is_when(
+        text: str, want: list[tuple[str, dict[str, str]]] | None, library: Library) -> None:
+    """A time adverbial, a time with a number or a measure ("in a few minutes"), or "after"/"before" and a bare noun,
+    said before the verb, says when: it is no verb ("unknown verb 'in'") and no thing."""
+    assert_reads(text, want, library)
+
+
+def test_a_time_said_first_is_the_frames_time(library: Library) -> None:
+    frame = parse_command("in twenty minutes, take the pie out of the oven", library).frames[0]
+    assert frame.time == "in twenty minutes"
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("go into the into the garage", [("Go", {"goal": "garage"})]),
+    ("fetch me my my slippers", [("Bring", {"theme": "slipper", "recipient": "me"})]),
+    ("put the mug on the on the shelf", [("Place", {"theme": "mug", "goal": "shelf"})]),
+    ("bring me the cup that that man left", [("Bring", {"theme": "cup", "recipient": "me"})]),   # "that that" stays
+])
+def test_a_restart_of_leaning_words_is_read_once(
+        text: str, want: list[tuple[str, dict[str, str]]] | None, library: Library) -> None:
+    """Dictated speech restarts a phrase ("to the to the"): a run of determiners, possessives or prepositions said
+    again at once is read once; the element's text holds it once."""
+    assert_reads(text, want, library)
+
+
+def test_a_restart_leaves_the_phrase_as_said_once(library: Library) -> None:
+    goal = parse_command("go into the into the garage", library).frames[0].elements["goal"]
+    assert goal.text == "the garage"
+
+
+@pytest.mark.parametrize(("text", "head", "count"), [
+    ("put half the grapes in the bowl", "grape", None),
+    ("give Tom half of the sandwich", "sandwich", None),
+    ("bring me a hundred and one pegs", "peg", 101),
+    ("bring me two hundred and fifty napkins", "napkin", 250),
+    ("bring me three hundred forty beads", "bead", 340),
+])
+def test_half_and_numbers_past_a_hundred_count_the_noun(
+        text: str, head: str, count: int | None, library: Library) -> None:
+    theme = parse_command(text, library).frames[0].elements["theme"]
+    assert theme.head == head and theme.quantity == count and not theme.conjuncts
+
+
+@pytest.mark.parametrize(("text", "head"), [
+    ("the small towel is wet, bring me a dry one", "towel"),
+    ("not the green mug, bring me the white one", "mug"),
+    ("throw away the old socks and bring me clean ones", "sock"),
+    ("there are two cushions on the sofa, bring me the soft one", "cushion"),
+    ("open the top drawer, sorry, the bottom one", "drawer"),
+])
+def test_one_after_adjectives_stands_for_the_noun_said_before(text: str, head: str, library: Library) -> None:
+    """One-anaphora: "a dry one" is a towel, another than the wet one; the head is the noun, the phrase refers to
+    no earlier element (it is another thing of the kind)."""
+    theme = parse_command(text, library).frames[-1].elements["theme"]
+    assert theme.head == head and theme.refers_to is None
+
+
+def test_one_with_nothing_said_before_stays_one(library: Library) -> None:
+    assert parse_command("bring me the red one", library).frames[0].elements["theme"].head == "one"
+
+
+def test_a_phrase_denied_first_is_a_remark(library: Library) -> None:
+    parse = parse_command("not the blue towel, bring me the striped one", library)
+    assert parse.remarks and "not the blue towel" in parse.remarks[0]
+    with pytest.raises(CommandError):
+        parse_command("not the blue towel", library)               # nothing asked
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("when Ana gets back give her the parcel", [("Give", {"theme": "parcel", "recipient": "Ana"})]),
+    ("if the soup has cooled put it in the fridge", [("Place", {"theme": "soup", "goal": "fridge"})]),
+    ("if the gate is open shut it", [("Close", {"theme": "gate"})]),                  # "open": its state
+    ("if the radio is on turn it off", [("ToggleOff", {"theme": "radio"})]),
+])
+def test_a_condition_said_first_without_a_comma_ends_at_the_commands_verb(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """Dictated speech drops the comma after a condition: after the condition's finite verb, a verb of the library in
+    its base form, not after "is", a determiner, "to" or a modal, starts the command."""
+    assert_reads(text, want, library)
+
+
+def test_a_split_particle_before_a_direction_stands_alone(library: Library) -> None:
+    assert [f for f, _ in frames("turn the heating off upstairs", library)] == ["ToggleOff"]
+
+
+@pytest.mark.parametrize(("text", "who"), [
+    ("go to Priya's office and tell her the taxi is here", "Priya"),
+    ("take Omar's scarf to him", "Omar"),
+])
+def test_him_or_her_with_nobody_else_said_is_the_owner_named(text: str, who: str, library: Library) -> None:
+    frame = parse_command(text, library).frames[-1]
+    assert frame.elements["recipient"].head == who and frame.elements["recipient"].kind == "person"
+
+
+def test_a_phrase_denied_after_the_command_is_a_remark(library: Library) -> None:
+    """"give me the big bowl, not the small one." was refused as a prohibition ("asks the robot not to do
+    something"), then, with the one source of prohibitions, "unknown verb 'not'"; which thing is not meant is said
+    beside the command."""
+    parse = parse_command("hand me the long spoon, not the short one.", library)
+    assert [f.frame for f in parse.frames] == ["Give"] and parse.remarks == ("not the short one",)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("fetch Omar a blanket and Lea too", [("Bring", {"theme": "blanket", "recipient": "Omar"}),
+                                          ("Bring", {"theme": "blanket", "recipient": "Lea"})]),
+    ("give the children a biscuit and grandpa as well", [("Give", {"theme": "biscuit", "recipient": "child"}),
+                                                         ("Give", {"theme": "biscuit", "recipient": "grandpa"})]),
+    ("bring me the salt and the pepper too", [("Bring", {"theme": "salt", "recipient": "me"}),
+                                             ("Bring", {"theme": "pepper", "recipient": "me"})]),   # as before
+])
+def test_and_another_person_too_is_the_clause_again_for_them(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """"bring Anna a towel and Ben too" carried Ben as a second thing; a person after "and", then "too", after a
+    clause that gives a thing to a person, is the same clause for that person."""
+    assert_reads(text, want, library)

@@ -443,3 +443,22 @@ def test_the_other_one_is_a_thing_of_the_kind_no_earlier_frame_names(library: Li
     assert [s for s in two if s.startswith("Bring")] == ["Bring(theme=guitar, recipient=me)",
                                                           "Bring(theme=guitar_2, recipient=me)"]
     assert _student_house_plan("bring me the other mug", library)[0] == "Pick(theme=mug, source=sink_1)"
+
+
+def test_one_particular_thing_is_not_handed_to_several_people(library: Library) -> None:
+    """"bring Anna and Ben the cup": one cup cannot go to both (the robot gave it to Anna, took it back and gave it
+    to Ben); refused, saying whom to name or to ask for one each. "a cup" is one each, as before (words29)."""
+    from seal_cli.errors import SealError
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+
+    apartment = load_map(map_path("apartment"))
+    for text, column in (("bring Anna and Ben the cup", 20), ("take my cup to Anna and Ben", 6)):
+        with pytest.raises(SealError, match=re.escape("is one thing, and 'Anna and Ben' are 2 people")) as refused:
+            problem_of_text(text, library, map=apartment)
+        assert "a cup each" in refused.value.message
+        assert refused.value.where is not None and refused.value.where.column == column
+    assert [str(b) for b in problem_of_text("bring Anna and Ben a cup", library, map=apartment).commanded] == [
+        "Bring(theme=cup, recipient=anna)", "Bring(theme=cup_2, recipient=ben)"]
+    assert [str(b) for b in problem_of_text("bring Anna the cup", library, map=apartment).commanded] == [
+        "Bring(theme=cup, recipient=anna)"]

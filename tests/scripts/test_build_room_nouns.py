@@ -59,6 +59,43 @@ def test_a_noun_whose_first_tagged_sense_or_every_sense_is_part_of_a_building(tm
     assert nouns == ["hallway", "scullery"]
 
 
+STORES_DATA = """\
+  1 This is a licence line, skipped.
+02735688 06 n 01 area 0 000 | a part of a structure having some specific function
+04105893 06 n 01 room 0 001 @ 02735688 n 0000 | an area within a building enclosed by walls
+04328946 06 n 01 storage_space 0 001 @ 02735688 n 0000 | the area in any structure that provides space for storage
+03094503 06 n 01 container 0 000 | any object that can be used to hold things
+03000011 06 n 01 hutch 0 001 @ 04328946 n 0000 | a recess or cabinet for storing dishes
+03000012 06 n 01 tray 0 002 @ 03094503 n 0000 @ 04328946 n 0000 | a sliding box in a piece of furniture
+03000013 06 n 01 stockroom 0 002 @ 04105893 n 0000 @ 04328946 n 0000 | a room where goods are kept
+03000014 06 n 01 parlour 0 001 @ 04105893 n 0000 | a room for receiving guests
+"""
+STORES_INDEX = """\
+  1 This is a licence line, skipped.
+hutch n 1 1 @ 1 1 03000011
+tray n 1 1 @ 1 1 03000012
+stockroom n 1 1 @ 1 1 03000013
+parlour n 1 1 @ 1 1 03000014
+"""
+STORES_COUNTS = """\
+hutch%1:06:00:: 1 3
+tray%1:06:00:: 1 4
+stockroom%1:06:00:: 1 2
+parlour%1:06:00:: 1 5
+"""
+
+
+def test_a_place_things_are_kept_in_is_no_premises_unless_it_is_a_room(tmp_path: Path) -> None:
+    wordnet = tiny_wordnet(tmp_path / "dict", "", STORES_DATA, "", STORES_INDEX, STORES_COUNTS)
+    out = tmp_path / "premises.txt"
+    done = run("--wordnet", str(wordnet), "--out", str(out))
+    assert done.returncode == 0, done.stderr
+    nouns = [line for line in out.read_text().splitlines() if line and not line.startswith("#")]
+    # hutch: storage space (an area) and no room, as WordNet files "cupboard"; tray: a container and storage space,
+    # as "drawer"; stockroom: storage space and a room, as "pantry"/"storeroom"; parlour: a room
+    assert nouns == ["parlour", "stockroom"]
+
+
 def test_a_folder_without_wordnet_is_one_clear_error(tmp_path: Path) -> None:
     done = run("--wordnet", str(tmp_path))
     assert done.returncode == 1 and "data.noun: no such file" in done.stderr and "Traceback" not in done.stderr

@@ -79,6 +79,8 @@ def _one(s: State, i: int) -> Match | None:
         k -= 1
     if k >= 0 and s.out[k].tag in (Tag.DET, Tag.POSS, Tag.NUM):
         return s.emit(i, 1, Tag.WORD)                             # "the red one"
+    if s.words[i].lower == "ones" and k < len(s.out) - 1 and (k < 0 or s.out[k].tag in (Tag.VERB, Tag.PRON, Tag.PREP)):
+        return s.emit(i, 1, Tag.WORD)                             # "bring me new ones": a bare plural (words29)
     return None
 
 
@@ -347,6 +349,7 @@ CLOCK_TIME = Rule("clock time", _clock_time, (
 ), CLOCK_PREPOSITIONS, "a time said with a number ('at three', 'in ten minutes')")
 ONE = Rule("the red one", _one, (
     Example("bring me the red one", "one", Tag.WORD),
+    Example("put the old batteries in the bin and bring me new ones", "ones", Tag.WORD),
 ), frozenset(["one", "ones"]), "'one' after adjectives after a determiner: a noun")
 THAT_SAID = Rule("that and what is said", _that_said, (
     Example("tell the guest that dinner is ready", "dinner is ready", Tag.SAID),

@@ -14,20 +14,30 @@ from seal_cli.language.english import (
     BE_WORDS,
     BEING_AT,
     BEING_MEANS,
+    CLOCK_PREPOSITIONS,
     END_MARKS,
     HAVING_FIRST,
     HAVING_MEANS,
     LOCATIVE,
+    NOMINATIVE,
     NP_OPENERS,
+    NUMBERS,
     PARTICLES,
+    PARTS_OF_DAY,
     PREPOSITIONS,
+    PRONOUNS,
     SEPARATOR_WORDS,
+    TIME_FIRST_LEAD,
+    TIME_MEASURE,
+    TIME_UNITS,
+    TIME_WORDS,
 )
-from seal_cli.language.morphology import gerund_lemma, is_adverb
+from seal_cli.language.morphology import gerund_lemma, is_adverb, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import CLOSED, LEAD_FIRST, State, first_words, match_phrase, merge
+from seal_cli.language.rules.numbers import TEENS, TENS
+from seal_cli.language.state import CLOSED, LEAD_FIRST, TIME_FIRST, State, first_words, match_phrase, merge
 from seal_cli.language.tags import Tag
-from seal_cli.language.tokens import Word
+from seal_cli.language.tokens import Word, capitalised
 
 
 def _not_a_verb(s: State, i: int) -> bool:
@@ -53,6 +63,59 @@ def _sequencing(s: State, i: int) -> Match | None:
                 return Match(k - i, last=Word(last.text, last.start, last.end, last.tag, "then"))
             return Match(k - i, (merge(words, i, k - i, Tag.POLITE),))
     return None
+
+
+_TIME_NOT_FIRST = frozenset(["too", "as well", "again", "first"])
+"""Time words that never open a clause as its time ("first" is sequencing, ``SEPARATOR_WORDS``)."""
+
+
+def _time_said(s: State, i: int) -> int:
+    """How many words a time said before the verb takes at ``i`` (0: none): a time adverbial ("tonight", "right
+    now", "later on", "this afternoon"), a time with a number ("in five minutes", "at six"), a measure of time
+    ("in a couple of minutes", "in an hour"), or "after"/"before" and a bare noun ("after lunch", "before bed")."""
+    words, low = s.words, s.words[i].lower
+    n = match_phrase(words, i, TIME_WORDS)
+    if n and " ".join(w.lower for w in words[i:i + n]) not in _TIME_NOT_FIRST:
+        if low == "later" and s.next_lower(i) == "on":
+            n += 1                                                  # "later on"
+        if low in ("tonight", "tomorrow") and s.next_lower(i + n - 1) in PARTS_OF_DAY:
+            n += 1                                                  # "tomorrow morning"
+        return n
+    if low == "this" and s.next_lower(i) in PARTS_OF_DAY:
+        return 2                                                    # "this afternoon"
+    n = s.clock_time(i)
+    if n:
+        return n                                                    # "in five minutes", "at six"
+    if low == "in":
+        k = i + 1
+        while k < len(words) and (words[k].lower in TIME_MEASURE or words[k].lower in NUMBERS or
+                                  words[k].lower in TEENS or words[k].lower in TENS or words[k].lower.isdigit()):
+            k += 1                                                  # "in a couple of minutes", "in twenty minutes"
+        if k > i + 1 and k < len(words) and words[k].lower in TIME_UNITS:
+            return k + 1 - i
+    if low in TIME_FIRST_LEAD and i + 1 < len(words):
+        nxt = words[i + 1].lower
+        after = s.next_lower(i + 1)
+        if nxt.isalpha() and nxt not in CLOSED and nxt not in PRONOUNS | NOMINATIVE and \
+                not capitalised(words[i + 1]) and \
+                s.verb_at(i + 1) is None and not nxt.endswith("ing") and \
+                (after == "," or verb_lemma(after) == after):       # "until dad gets home": a clause, no time
+            return 2                                                # "after lunch", "before bed"
+    return 0
+
+
+def _time_first(s: State, i: int) -> Match | None:
+    """A time said before the clause's verb ("*in five minutes* turn off the oven", "*tonight* close the
+    curtains", "*after lunch*, clean the counter"): when, nothing to do; kept as the frame's time."""
+    n = _time_said(s, i)
+    if not n:
+        return None
+    words = s.words
+    k = i + n + (1 if i + n < len(words) and words[i + n].lower == "," else 0)
+    if k >= len(words) or not (s.verb_after(k) or s.asks_at(k) or words[k].lower == "i" and
+                               s.next_lower(k) in ("need", "want", "'d", "would")):
+        return None
+    return Match(k - i, (merge(words, i, k - i, Tag.POLITE, "time"),))
 
 
 def _subordinate(s: State, i: int) -> Match | None:
@@ -262,6 +325,15 @@ BEING_AT_RULE = Rule("being somewhere first", _being_at, (
     Example("when you are at the door, greet the visitor", "when you are", Tag.VERB),
     Example("once youre in the living room look for Skyler", "once youre", Tag.VERB),   # no comma: a run-on
 ), first_words(BEING_AT[0]), "'once you're in X, ...': go to X, then the clause")
+TIME_SAID_FIRST = Rule("a time said first", _time_first, (
+    Example("in five minutes turn off the oven", "in five minutes", Tag.POLITE),
+    Example("in a couple of minutes, check on the baby", "in a couple of minutes ,", Tag.POLITE),
+    Example("tonight close all the curtains", "tonight", Tag.POLITE),
+    Example("later on, bring me a coffee", "later on ,", Tag.POLITE),
+    Example("after lunch clean the kitchen counter", "after lunch", Tag.POLITE),
+    Example("this afternoon open the windows", "this afternoon", Tag.POLITE),
+), TIME_FIRST | TIME_FIRST_LEAD | frozenset(["this", "in", "at"]) | CLOCK_PREPOSITIONS,
+    "a time before the verb ('in five minutes', 'tonight', 'after lunch'): when, kept as the frame's time")
 SUBORDINATE = Rule("subordinate clause first", _subordinate, (
     Example("If the door is open, close it", "If the door is open,", Tag.COND),
     Example("When you reach the kitchen, open the fridge", "When you", Tag.POLITE),

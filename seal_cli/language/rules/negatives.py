@@ -9,6 +9,8 @@ last phrase said: the earlier one is dropped and the new one read in its place.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from seal_cli.language.english import (
     CANCELLATIONS,
     CORRECTION_MARKS,
@@ -20,8 +22,9 @@ from seal_cli.language.english import (
 )
 from seal_cli.language.morphology import verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import State, longest_phrase, merge
+from seal_cli.language.state import TIME_FIRST, State, first_words, longest_phrase, merge
 from seal_cli.language.tags import Tag
+from seal_cli.language.tokens import Word
 
 _JOINS = frozenset(["and", "but", "then", "or"])
 _CLAUSE_ENDS = frozenset([",", ";", ":"]) | END_MARKS
@@ -49,6 +52,21 @@ def _negation(s: State, i: int) -> int:
             _not_asked(s, i + 1):
         return 1
     return 0
+
+
+_NEGATIONS = PROHIBITIVES | CANCELLATIONS
+
+
+def opens_prohibition(words: Sequence[Word], k: int) -> bool:
+    """Whether the tagged word ``k`` opens a prohibition or a cancellation, as :func:`_negation` reads them: one of
+    ``english.PROHIBITIVES`` or ``english.CANCELLATIONS`` (merged into one word by the rule that refuses it, "do
+    not", "never mind", or said out: "*don't* open the window", "*no need to* wash it"), or "not" right after
+    "... you" ("can you *not* slam the door"). The one source of the parser's message "asks the robot not to do
+    something" (words29; the parser had its own word list)."""
+    low = words[k].lower
+    if low in _NEGATIONS or longest_phrase(words, k, _NEGATIONS):
+        return True
+    return low == "not" and k > 0 and words[k - 1].lower.split()[-1:] == ["you"]
 
 
 def _not_asked(s: State, k: int) -> bool:
@@ -96,6 +114,35 @@ def _prohibited_first(s: State, i: int) -> Match | None:
     stop = end + 1 if end < len(words) and words[end].lower in (",", ";", ":") or \
         end < len(words) and words[end].lower in END_MARKS else end
     return Match(stop - i, remarks=((words[i].start, words[end - 1].end),), expect=True)
+
+
+def _denied_first(s: State, i: int) -> Match | None:
+    """"*not the blue cup,* bring me the red one": "not" and a noun phrase, a comma, then a command: which thing is
+    not meant, a remark (the command's phrase says which is)."""
+    words = s.words
+    if s.out and s.prev_tag() not in (Tag.SEP, Tag.POLITE) or not s.np_starts(i + 1) or s.verb_after(i + 1):
+        return None
+    k = i + 1
+    while k < len(words) and words[k].lower not in _CLAUSE_ENDS and words[k].lower not in _JOINS:
+        k += 1
+    if k >= len(words) or words[k].lower != "," or k == i + 1 or not _command_after(s, k + 1):
+        return None
+    return Match(k + 1 - i, remarks=((words[i].start, words[k - 1].end),), expect=True)
+
+
+def _denied_after(s: State, i: int) -> Match | None:
+    """"give me the big bowl*, not the small one*": a comma, "not" and a noun phrase ending the sentence (or before
+    the next comma) after the command: which thing is not meant, a remark."""
+    words = s.words
+    if i + 2 >= len(words) or words[i + 1].lower != "not" or s.expect_verb or not s.np_starts(i + 2) or \
+            s.verb_after(i + 2) or words[i + 2].lower in TIME_FIRST:
+        return None                              # ", not now": when, not which (as before)
+    k = i + 2
+    while k < len(words) and words[k].lower not in _CLAUSE_ENDS and words[k].lower not in _JOINS:
+        k += 1
+    if k < len(words) and words[k].lower not in END_MARKS and words[k].lower != ",":
+        return None
+    return Match(k - i, remarks=((words[i + 1].start, words[k - 1].end),))
 
 
 def _prohibited_after(s: State, i: int) -> Match | None:
@@ -163,8 +210,12 @@ PROHIBITED_FIRST = Rule("a prohibition, then the command", _prohibited_first, (
     Example("could you not bang the door, just shut it", "bang", ""),
     Example("can you not bang the door", "not", Tag.WORD),
     Example("never leave the door open", "never", Tag.WORD),
-), frozenset(["don't", "dont", "do", "never", "please", "not", "nevermind", "forget", "no", "there's", "you"]),
+), first_words(_NEGATIONS) | {"not"},
     "a clause said negatively before the command asks nothing: a remark; alone, an error")
+DENIED_FIRST = Rule("a phrase denied, then the command", _denied_first, (
+    Example("not the blue cup, bring me the red one", "blue", ""),
+    Example("not the green towel, please take the white one to the bathroom", "green", ""),
+), frozenset(["not"]), "'not NP, V ...': the phrase denied before the command is a remark (which one is not meant)")
 PROHIBITED_AFTER = Rule("a prohibition after the command", _prohibited_after, (
     Example("take the plate but don't wash it", "wash", ""),
     Example("shut the window, and never open it again", "open", ""),
@@ -177,3 +228,7 @@ CORRECTED = Rule("a phrase corrected", _corrected, (
     Example("switch on the lamp, no, the reading light", "lamp", ""),
     Example("bring me the sugar, no, not the sugar, the salt", "sugar", ""),
 ), frozenset([","]), "', no, NP' after a phrase: the new phrase stands for the last one said")
+DENIED_AFTER = Rule("a phrase denied after the command", _denied_after, (
+    Example("give me the big bowl, not the small one.", "small", ""),
+    Example("bring the red mug, not the blue one, to the kitchen", "blue", ""),
+), frozenset([","]), "', not NP' after the command: which thing is not meant, a remark")

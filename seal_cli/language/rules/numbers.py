@@ -3,7 +3,7 @@ the cups", and the possessive "'s"."""
 
 from __future__ import annotations
 
-from seal_cli.language.english import NP_OPENERS, NUMBERS, PREPOSITIONS, QUANTIFIERS
+from seal_cli.language.english import NP_OPENERS, NUMBERS, PREPOSITIONS, QUANTIFIERS, VAGUE_NUMBERS
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import State, first_words, match_phrase
 from seal_cli.language.tags import Tag
@@ -75,9 +75,10 @@ def _multiplied(s: State, i: int) -> Match | None:
             return None
     if not isinstance(value, int) or i + n + 1 >= len(words) or words[i + n].lower not in MULTIPLIERS:
         return None
+    added, m = _added(s, i + n + 1)
+    if m and s.noun_follows(i + n + 1 + m):     # "a hundred and one apples", "two hundred fifty cups"
+        return s.emit(i, n + 1 + m, Tag.NUM, value * MULTIPLIERS[words[i + n].lower] + added)
     after = words[i + n + 1].lower
-    if after == "and" and (rest := _below(s, i + n + 2, MULTIPLIERS[words[i + n].lower])) is not None:
-        return s.emit(i, n + 2 + rest[0], Tag.NUM, value * MULTIPLIERS[words[i + n].lower] + rest[1])
     if after == "of":                       # "a dozen of the eggs", "two hundred of them": the "of" is the count's
         n += 1
     elif not s.noun_follows(i + n + 1):
@@ -85,23 +86,38 @@ def _multiplied(s: State, i: int) -> Match | None:
     return s.emit(i, n + 1, Tag.NUM, value * MULTIPLIERS[words[i + n - (after == "of")].lower])
 
 
-def _below(s: State, i: int, limit: int) -> tuple[int, int] | None:
-    """The words and value of the number at ``i`` that the "and" after a multiplier adds, when it is below the
-    multiplier's ``limit`` and a noun follows it: "a hundred *and one* apples" (101), "two hundred *and fifty*
-    cups" (250), "a thousand *and 3* mugs". "a hundred and one apples" was read as a hundred things called
-    "hundred" and one apple (hostile21's leftover, hostile22)."""
+def _added(s: State, k: int) -> tuple[int, int]:
+    """The number added after a multiplier at ``k``, maybe after "and" ("a hundred *and one*", "two hundred *and
+    fifty*", "a thousand *twenty-two*"): its value and how many words it takes ((0, 0): none)."""
     words = s.words
-    if i >= len(words):
-        return None
-    low = words[i].lower
-    n, value = _number(s, i)
-    if not n:
-        n, value = 1, int(low) if low.isascii() and low.isdigit() else _past_twelve_value(low)
-        if low in TENS and s.next_lower(i) in UNITS:                # "a hundred and twenty three"
-            n, value = 2, TENS[low] + UNITS[s.next_lower(i)]
-    if not isinstance(value, int) or not 0 < value < limit or not s.noun_follows(i + n):
-        return None
-    return n, value
+    j = k + (1 if k < len(words) and words[k].lower == "and" else 0)
+    if j >= len(words):
+        return 0, 0
+    low = words[j].lower
+    value = _past_twelve_value(low)
+    if value is not None:
+        if low in TENS and j + 1 < len(words) and words[j + 1].lower in UNITS:
+            return value + UNITS[words[j + 1].lower], j + 2 - k     # "and twenty three"
+        return value, j + 1 - k
+    if low.isascii() and low.isdigit():
+        return int(low), j + 1 - k
+    if low in NUMBERS and low not in VAGUE_NUMBERS or low == "one":
+        number = NUMBERS[low]
+        return (number, j + 1 - k) if isinstance(number, int) else (0, 0)
+    return 0, 0
+
+
+HALF = "half"
+"""A predeterminer: "*half* the cookies", "*half* of the cake", "*half* a cup of water": the thing is what follows
+("cut it in half" ends on it: a result, as before)."""
+
+
+def _half(s: State, i: int) -> Match | None:
+    words = s.words
+    k = i + 1 + (1 if s.next_lower(i) == "of" else 0)
+    if s.in_np() or k >= len(words) or words[k].lower not in NP_OPENERS or words[k].lower in PARTED:
+        return None                              # "half of it": a pronoun, as before
+    return s.emit(i, k - i, Tag.DET, HALF)
 
 
 TEENS = {"thirteen": 13, "fourteen": 14, "fifteen": 15, "sixteen": 16, "seventeen": 17, "eighteen": 18,
@@ -173,6 +189,8 @@ def _quantifier_of(s: State, i: int) -> Match | None:
 
 MULTIPLIED = Rule("number times a multiplier", _multiplied, (
     Example("bring me a dozen eggs", "a dozen", Tag.NUM),
+    Example("bring me a hundred and one apples", "a hundred and one", Tag.NUM),
+    Example("put two hundred fifty cups in the sink", "two hundred fifty", Tag.NUM),
     Example("bring me two hundred apples", "two hundred", Tag.NUM),
     Example("put 3 thousand cups in the sink", "3 thousand", Tag.NUM),
     Example("bring me hundreds of apples", "hundreds of", Tag.NUM),
@@ -212,3 +230,7 @@ QUANTIFIER_OF = Rule("quantifier of", _quantifier_of, (
     Example("put potatoes in the basket, slice one of them", "one of them", Tag.PRON),
     Example("take both of them to the sink", "both of them", Tag.PRON),
 ), QUANTIFIERS, "'both of the', 'one of the': a determiner or a number; 'one of them': a pronoun")
+HALF_OF = Rule("half the", _half, (
+    Example("put half the cookies in the jar", "half", Tag.DET),
+    Example("eat half of the cake", "half of", Tag.DET),
+), frozenset([HALF]), "'half' before a determiner (or 'of' and one): a predeterminer, the thing follows")
