@@ -298,8 +298,8 @@ class SeFM:
     def _observe(self, robot: tuple[float, float, float], region: VisibleRegion,
                  seen: tuple[tuple[str, tuple[float, float]], ...]) -> None:
         """The object beliefs take the observation; the kernel rows of the sources that changed follow."""
-        change = self.objects.update(robot, _within_range(region), seen, self.hidden_places(), held(self.state),
-                                     self.rng)
+        change = self.objects.update(robot, _within_range(region, self.sensor, robot), seen, self.hidden_places(),
+                                     held(self.state), self.rng)
         if change.redrawn:
             rows = list(change.redrawn)
             self.kernel.set(rows, self.objects.X[rows], self.objects.W[rows])
@@ -425,8 +425,14 @@ class SeFM:
                 "objects": [self.object_json(c) for c in self.object_classes]}
 
 
-def _within_range(region: VisibleRegion) -> Region:
-    """``region.contains``, asked only about the points within the sensor's range (the rest are not seen)."""
+def _within_range(region: VisibleRegion, sensor: SensorModel, pose: tuple[float, float, float]) -> Region:
+    """What a look from ``pose`` sees, asked only about the points within the sensor's range: the sensor's exact rule
+    (:meth:`~seal_cli.sensing.model.SensorModel.visible`: range, field of view and the segment's line of sight, the
+    rule the simulator detects by and the whole-plan search's view model uses), not the ray fan of ``region`` (kept
+    for drawing). The fan answers by the ray nearest a point's bearing, so a point a few centimetres behind an
+    occluder's corner lies on a ray that passes the corner and was counted seen: the belief there was lowered by a
+    look that could never have seen the thing (a cup beside a bed's end on the held-out ranch, docs/benchmarks.md,
+    "This round (search20)" and "This round (search21)")."""
     x, y, _ = region.pose
 
     def contains(points: Array) -> NDArray[np.bool_]:
@@ -439,7 +445,7 @@ def _within_range(region: VisibleRegion) -> Region:
             near = np.flatnonzero(np.einsum("ij,ij->i", d, d) <= region.range ** 2)
         out = np.zeros(len(points), bool)
         if len(near):
-            out[near] = region.contains(np.take(points, near, axis=0))  # np.take: a boolean row gather is slower
+            out[near] = np.asarray(sensor.visible(pose, np.take(points, near, axis=0)), dtype=bool)   # np.take: faster
         return out
 
     return contains
