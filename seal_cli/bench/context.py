@@ -39,12 +39,14 @@ from seal_cli.bench.houses import (
     CONTEXT_PRIORS,
     COTTAGE_STARTS,
     FARMHOUSE_STARTS,
+    GALLERY_STARTS,
     LONGHOUSE_STARTS,
     RANCH_STARTS,
     TERRACE_STARTS,
     aws_house,
     bungalow,
     cottage,
+    gallery,
     longhouse,
     ranch,
 )
@@ -99,13 +101,13 @@ def unseen_houses() -> list[House]:
     """Houses the suite's policies were not developed on, to check that its figures hold
     (:func:`~seal_cli.bench.houses.bungalow`, drawn after the suite's figures were taken, the shipped
     ``farmhouse`` and ``terrace`` maps, drawn later still, and :func:`~seal_cli.bench.houses.ranch`, drawn
-    for search13's held-out check, and :func:`~seal_cli.bench.houses.longhouse`, drawn for search16's; nothing tuned
-    on them)."""
+    for search13's held-out check, :func:`~seal_cli.bench.houses.longhouse`, drawn for search16's, and
+    :func:`~seal_cli.bench.houses.gallery`, drawn for search21's; nothing tuned on them)."""
     from seal_cli.resources import map_path
 
     return [House(bungalow(), BUNGALOW_STARTS), House(load_map(map_path("farmhouse")), FARMHOUSE_STARTS),
             House(load_map(map_path("terrace")), TERRACE_STARTS), House(ranch(), RANCH_STARTS),
-            House(longhouse(), LONGHOUSE_STARTS)]
+            House(longhouse(), LONGHOUSE_STARTS), House(gallery(), GALLERY_STARTS)]
 
 
 HOUSE_SETS = ("suite", "unseen")

@@ -260,6 +260,27 @@ LONGHOUSE_STARTS = ((18.0, 2.5, 0.0), (10.0, 6.0, 0.0), (17.0, 10.0, 0.0))
 """The living room's east end, the middle of the hallway, the study."""
 
 
+def gallery() -> Map:
+    """18 m × 10 m, drawn by search21 for a held-out check before any policy was run on it: a gallery the whole
+    depth of the house along its west side, and four rooms east of it in two rows — the kitchen and the dining
+    room to the south, the bedroom and the family room to the north. The gallery opens into the kitchen and the
+    bedroom; the kitchen into the dining room; the family room only from the dining room (the bedroom and the
+    family room share a wall and no door), so the bedroom's cups and the family room's are far apart by path."""
+    rooms = {"gallery": (0.0, 0.0, 3.0, 10.0), "kitchen": (3.0, 0.0, 10.0, 5.0), "dining_room": (10.0, 0.0, 18.0, 5.0),
+             "bedroom": (3.0, 5.0, 9.0, 10.0), "family_room": (9.0, 5.0, 18.0, 10.0)}
+    doors = [(3.0, 2.5), (3.0, 7.5), (10.0, 2.5), (14.0, 5.0)]
+    places = (Place("counter_1", "counter", (9.4, 0.6)), Place("dining_table_1", "dining_table", (14.0, 2.5)),
+              Place("bed_1", "bed", (5.0, 9.0)), Place("sofa_1", "sofa", (13.5, 9.4)))
+    objects = tuple(ObjectTruth(str(o["class"]), (1.5, 5.0)) for o in CONTEXT_OBJECTS)
+    return walled_house("gallery", (18.0, 10.0), rooms, doors, objects=objects, places=places,
+                        robot=(1.5, 1.5, 0.0), priors=CONTEXT_PRIORS,
+                        furniture=((4.0, 8.2, 6.0, 9.8), (13.3, 2.0, 14.7, 3.0), (12.0, 9.2, 15.0, 9.8)))
+
+
+GALLERY_STARTS = ((1.5, 1.5, 0.0), (1.5, 8.5, 0.0), (16.5, 8.0, 0.0))
+"""The gallery's south and north ends, the family room's east end."""
+
+
 FARMHOUSE_STARTS = ((4.0, 2.0, 0.0), (3.0, 9.0, 0.0), (15.0, 9.0, 0.0))
 """``maps/farmhouse.yaml`` (drawn by ``maps/make_houses.py``, an unseen house): the kitchen, the living room,
 the family room's east end."""

@@ -27,7 +27,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 __all__ = ["FREE", "MAX_GRID_CELLS", "MAX_IMAGE_CELLS", "OCCUPIED", "OUTSIDE", "UNKNOWN", "OccupancyGrid", "as_points",
-           "box_polygon", "cast_rays", "clipped_area", "coarsened", "fit_cells", "line_of_sight", "overlap_area",
+           "box_polygon", "cast_rays", "clipped_area", "coarsened", "fit_cells", "line_of_sight", "lines_of_sight",
+           "overlap_area",
            "point_in_polygon", "polygon_area", "segment_cells", "segments_intersect", "self_intersections",
            "shrink_factor"]
 
@@ -527,6 +528,41 @@ def line_of_sight(grid: OccupancyGrid, origin: ArrayLike, points: ArrayLike) -> 
             out[todo[blocked]] = False
             k0 += _BLOCK
             todo = todo[~blocked & (n >= k0)]
+    return out
+
+
+FAN_FROM = 64
+"""From this many points, :func:`lines_of_sight` settles most of them by one fan of rays."""
+
+
+def lines_of_sight(grid: OccupancyGrid, origin: ArrayLike, points: ArrayLike) -> NDArray[np.bool_]:
+    """:func:`line_of_sight` for many points from one origin — the same answer, most of it found by one fan of rays.
+
+    The fan (:func:`cast_rays`) has its neighbouring rays ``res / (2 (R + diag))`` radians apart (R: the farthest
+    point, diag: a cell's diagonal), reaching ``R + 2 diag``. A point whose distance plus ``2 diag`` is within the
+    reach of *both* rays either side of its bearing is in sight, and is settled; every other point is followed
+    exactly. Why a settled point is in sight: were the segment to it blocked by an occupied cell C (not the point's
+    own), C — a square of side ``res`` no farther than the point plus ``diag`` — spans at least ``res / (R + diag)``
+    radians, twice the gap between rays, so its angular span holds one of the two rays, which (C being convex and
+    not holding the origin, whose own cell never blocks either) passes through C and stops there, no farther than
+    the point plus ``diag``. Tested against :func:`line_of_sight` on every shipped house."""
+    p = as_points(points)
+    if len(p) < FAN_FROM or not grid.has_obstacles:
+        return line_of_sight(grid, origin, p)
+    o = as_points(origin)[0]
+    d = p - o
+    dist = np.hypot(d[:, 0], d[:, 1])
+    diag = grid.resolution * np.sqrt(2.0)
+    far = float(dist.max()) + diag
+    rays = int(np.ceil(2 * np.pi * 2 * far / grid.resolution))
+    gap = 2 * np.pi / rays
+    reach = cast_rays(grid, o, -np.pi + gap * np.arange(rays), far + diag)
+    below = np.floor((np.arctan2(d[:, 1], d[:, 0]) + np.pi) / gap).astype(np.intp) % rays
+    sure = dist + 2 * diag <= np.minimum(reach[below], reach[(below + 1) % rays])
+    out = sure.copy()
+    rest = np.flatnonzero(~sure)
+    if len(rest):
+        out[rest] = line_of_sight(grid, o, p[rest])
     return out
 
 

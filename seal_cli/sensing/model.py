@@ -29,7 +29,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from seal_cli.frames.taxonomy import class_key
-from seal_cli.maps.geometry import as_points
+from seal_cli.maps.geometry import as_points, lines_of_sight
 from seal_cli.maps.model import Map, ObjectTruth, Sensor
 from seal_cli.sensing.sensor import Detection, VisibleRegion, as_pose, fan_angles, in_view, visible_region
 
@@ -83,11 +83,12 @@ class RangeSensor:
         return self.spec.fov_deg
 
     def line_of_sight(self, origin: Sequence[float], points: ArrayLike) -> NDArray[np.bool_]:
-        """Whether nothing occupied lies between ``origin`` and each point."""
+        """Whether nothing occupied lies between ``origin`` and each point (the map's exact rule, many points at once:
+        :func:`~seal_cli.maps.geometry.lines_of_sight`)."""
         p = as_points(points)
         if self.occupancy is None:
             return np.ones(len(p), dtype=bool)
-        return np.asarray(self.occupancy.line_of_sight((float(origin[0]), float(origin[1])), p), dtype=bool)
+        return np.asarray(lines_of_sight(self.occupancy.grid, (float(origin[0]), float(origin[1])), p), dtype=bool)
 
     def visible(self, pose: Pose, points: ArrayLike) -> NDArray[np.bool_]:
         """Within range and field of view, and in line of sight (exact)."""

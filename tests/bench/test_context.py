@@ -50,9 +50,11 @@ def test_every_house_has_the_things_priors_and_starts_and_plans_every_command(sh
 # from the house's first start): the bungalow's kitchen and family room through the dining room, the
 # farmhouse's bedroom through the family room, the terrace's family room through the kitchen, the ranch's
 # kitchen (from its hallway, the second start) through the living room or the dining room, the longhouse's
-# bedroom (from the study, the third start) through the hallway: out, 13 m west along it and in, not across
+# bedroom (from the study, the third start) through the hallway: out, 13 m west along it and in, not across; the
+# gallery's family room (from the gallery's south end) through the kitchen and the dining room, not the bedroom
 ONLY_THROUGH = {"bungalow": [((13.0, 2.5), 9.0), ((11.5, 8.0), 9.0)], "farmhouse": [((15.5, 3.0), 14.0)],
-                "terrace": [((4.5, 18.5), 15.0)], "ranch": [((9.5, 2.0), 6.5)], "longhouse": [((2.0, 8.5), 17.5)]}
+                "terrace": [((4.5, 18.5), 15.0)], "ranch": [((9.5, 2.0), 6.5)], "longhouse": [((2.0, 8.5), 17.5)],
+                "gallery": [((12.0, 8.0), 15.0)]}
 THROUGH_FROM = {"ranch": 1, "longhouse": 2}
 
 
@@ -63,7 +65,8 @@ def test_the_unseen_houses_are_room_graphs_with_free_starts_and_plan_every_comma
     from seal_cli.sim.policies import make_policy
 
     unseen = unseen_houses()
-    assert [h.map.name for h in unseen] == ["bungalow", "farmhouse", "terrace", "ranch", "longhouse"]
+    assert [h.map.name for h in unseen] == ["bungalow", "farmhouse", "terrace", "ranch", "longhouse",
+                                                "gallery"]
     for house in unseen:
         m = house.map
         assert {r.name for r in m.rooms} >= {room for prior in CONTEXT_PRIORS.values() for room in prior}

@@ -535,3 +535,30 @@ def test_a_bad_look_is_refused_at_its_place_before_any_update(library: Library) 
         sefm.follow(looks)
     assert caught.value.where == Where("o.yaml", 4, 5) and "'zzz'" in caught.value.message
     assert sefm.step == 0
+
+
+def test_a_spot_behind_a_beds_corner_is_not_counted_seen_by_a_look_whose_ray_fan_grazes_the_corner(
+        library: Library) -> None:
+    """The cottage's bed (1.0–3.0 × 1.8–3.2 m): from (5.0, 2.5) the segment to (1.05, 1.15) cuts the bed's
+    south-east corner, but the ray of the filter's fan nearest its bearing passes the corner. Half the cup's
+    particles there, half at (4.0, 1.0) in plain view: a look with nothing seen lowers only the second half, as the
+    exact rule (and the simulator) has it; by the fan both halves fell alike (search21)."""
+    from seal_cli.bench.houses import cottage
+    from seal_cli.sensing.model import RangeSensor
+
+    m = cottage()
+    pose, hidden, plain = (5.0, 2.5, 0.0), (1.05, 1.15), (4.0, 1.0)
+    sensor = RangeSensor.on_map(m)
+    rays = max(16, int(np.ceil(2 * np.pi * m.sensor.range / SeFMConfig().ray_spacing)))
+    assert sensor.region(pose, rays).contains(np.asarray([hidden])).tolist() == [True]    # the fan: in view
+    assert sensor.visible(pose, np.asarray([hidden, plain])).tolist() == [False, True]     # the exact rule: hidden
+    sefm = SeFM(m, [], cup_state(library), np.random.default_rng(0), SeFMConfig(particles=200), classes=["cup"])
+    row = sefm.objects.row("cup")
+    X = sefm.objects.X[row]
+    X[:100], X[100:] = hidden, plain
+    sefm.objects.W[row] = 1.0 / 200
+    sefm.update(pose, [])
+    at = np.hypot(*(sefm.objects.X[row] - hidden).T) < 0.1
+    share = float(sefm.objects.W[row][at].sum() / sefm.objects.W[row].sum())
+    p = m.sensor.p_detect
+    assert share == pytest.approx(1 / (1 + (1 - p)), abs=0.03)      # only the spot in view fell, by 1 − p
