@@ -161,7 +161,7 @@ def test_drawn_starts_are_clear_of_walls_in_rooms_and_the_same_for_a_seed() -> N
 
 def test_the_house_sets_by_name(shared_data: Path) -> None:
     assert [h.map.name for h in house_set("unseen", shared_data)] == ["bungalow", "farmhouse", "terrace", "ranch",
-                                                                     "longhouse"]
+                                                                     "longhouse", "gallery"]
     assert [h.map.name for h in house_set("suite", shared_data)] == ["apartment", "aws_small_house", "cottage"]
     with pytest.raises(SealError, match="--houses 'mine': one of suite, unseen"):
         house_set("mine", shared_data)
@@ -174,8 +174,9 @@ def test_bench_tasks_context_on_the_unseen_houses_from_drawn_starts(shared_data:
     assert result.exit_code == 0, result.output
     data = json.loads(result.stdout)
     assert data["houses"] == "unseen" and data["starts"] == 1 and data["seed"] == 2
-    assert set(data["by_house"]) == {"bungalow", "farmhouse", "terrace", "ranch", "longhouse", "all"}
-    assert data["groups"]["all"]["n"] == 5 and data["groups"]["all"]["success"]["oracle"] == 1.0
+    assert set(data["by_house"]) == {"bungalow", "farmhouse", "terrace", "ranch", "longhouse", "gallery",
+                                     "all"}
+    assert data["groups"]["all"]["n"] == 6 and data["groups"]["all"]["success"]["oracle"] == 1.0
 
 
 def test_bench_tasks_refuses_an_unknown_house_set_and_starts_off_the_context_suite(shared_data: Path) -> None:
