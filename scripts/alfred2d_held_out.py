@@ -28,7 +28,6 @@ import importlib.util
 import json
 import sys
 import tempfile
-from collections import Counter
 from pathlib import Path
 from types import ModuleType
 from typing import Any
@@ -75,53 +74,9 @@ def fit_statistics(data: Path, rows: list[dict[str, str]], folder: Path, bwc: Mo
 def causes(outcomes: dict[str, dict[str, Any]], suite: alfred2d.Suite, data: Path, markdown: bool,
            listing: bool) -> None:
     """Each failed episode's first cause (``scripts/alfred_failures.py``'s classification), by task type."""
-    from seal_cli.language.parser import parse_command
-
     af = script("alfred_failures")
-    module = af.scorer(data.parent / "eval" / "score_alfred_goals.py")
-    library = load_library()
-    by_type: dict[str, Counter[str]] = {}
-    total: Counter[str] = Counter()
-    listed = []
-    for episode in suite.episodes:
-        outcome = outcomes.get(episode.task_id)
-        if outcome is None:
-            continue
-        counts = by_type.setdefault(episode.group, Counter())
-        counts["n"] += 1
-        total["n"] += 1
-        if outcome["success"]:
-            continue
-        scene = alfred2d.build_scene(episode, suite.floor_plans[episode.floor_plan], library, suite.priors)
-        sentence = " ".join(episode.goals[0].split())
-        try:
-            parse = parse_command(sentence, library, alfred2d.scene_vocabulary(scene.vocabulary)).to_json()
-            got = module.read_back(parse) if parse.get("frames") else None
-        except SealError:
-            got = None
-        cause, wrong = af.classify(outcome, got, module.gold(af.labels(episode.task)), False)
-        counts[cause] += 1
-        total[cause] += 1
-        listed.append((cause, episode.group, sentence, wrong, got, module.gold(af.labels(episode.task)),
-                       outcome["reason"]))
-    groups = sorted(by_type, key=lambda g: alfred2d.TASK_TYPES.index(g) if g in alfred2d.TASK_TYPES else 99)
-    shown = [c for c in af.CAUSES if total[c]]
-    header = ["type", "n", "failed", *shown]
-    table = [header] + [[group, str(counts["n"]), str(sum(counts[c] for c in shown)), *(str(counts[c]) for c in shown)]
-                        for group, counts in [*((g, by_type[g]) for g in groups), ("all", total)]]
-    if markdown:
-        print("| " + " | ".join(header) + " |")
-        print("|" + "---|" * len(header))
-        for row in table[1:]:
-            print("| " + " | ".join(row) + " |")
-    else:
-        widths = [max(len(r[i]) for r in table) for i in range(len(header))]
-        for row in table:
-            print("  ".join(cell.ljust(w) for cell, w in zip(row, widths, strict=True)))
-    if listing:
-        for cause, group, sentence, wrong, got, want, reason in sorted(listed, key=lambda x: af.CAUSES.index(x[0])):
-            detail = ", ".join(f"{f}: {got[f] if got else None} want {want[f]}" for f in wrong) or reason
-            print(f"[{cause}] {group}: {sentence!r} -- {detail}")
+    af.report(outcomes, suite, af.scorer(data.parent / "eval" / "score_alfred_goals.py"), {}, markdown=markdown,
+              listing=listing)
 
 
 def main() -> int:

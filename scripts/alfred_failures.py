@@ -98,24 +98,11 @@ def read_outcomes(path: Path, policy: str) -> dict[str, dict[str, Any]]:
     return rows
 
 
-def main() -> int:
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("episodes", type=Path, help="the --episodes file of a --goal human run")
-    ap.add_argument("--gold", type=Path, help="the --episodes file of a --goal gold run of the same split")
-    ap.add_argument("--data", type=Path, default=ROOT.parent / "shared" / "data")
-    ap.add_argument("--split", default="valid_seen")
-    ap.add_argument("--policy", default="sefm")
-    ap.add_argument("--list", action="store_true", help="print every failed episode with its cause")
-    ap.add_argument("--markdown", action="store_true")
-    args = ap.parse_args()
-
-    outcomes = read_outcomes(args.episodes, args.policy)
-    gold = read_outcomes(args.gold, args.policy) if args.gold else {}
-    module = scorer(args.data.parent / "eval" / "score_alfred_goals.py")
-    try:
-        suite = load_suite(args.data / "alfred2d", args.split)
-    except SealError as error:
-        raise SystemExit(f"error: {error}") from None
+def report(outcomes: dict[str, dict[str, Any]], suite: Any, module: Any, gold: dict[str, dict[str, Any]], *,
+           markdown: bool, listing: bool) -> None:
+    """Print each failed episode's first cause by task type (a table; with ``listing`` every failure too).
+    ``module`` is the goal scorer (:func:`scorer`), ``gold`` the outcomes of a gold run of the same episodes (an
+    episode that failed there too is counted as execution's)."""
     library = load_library()
     by_type: dict[str, Counter[str]] = {}
     total: Counter[str] = Counter()
@@ -149,7 +136,7 @@ def main() -> int:
     for group, counts in [*((g, by_type[g]) for g in groups), ("all", total)]:
         failed = sum(counts[c] for c in causes)
         table.append([group, str(counts["n"]), str(failed), *(str(counts[c]) for c in causes)])
-    if args.markdown:
+    if markdown:
         print("| " + " | ".join(header) + " |")
         print("|" + "---|" * len(header))
         for row in table[1:]:
@@ -158,10 +145,31 @@ def main() -> int:
         widths = [max(len(r[i]) for r in table) for i in range(len(header))]
         for row in table:
             print("  ".join(cell.ljust(w) for cell, w in zip(row, widths, strict=True)))
-    if args.list:
+    if listing:
         for cause, group, sentence, wrong, got, want, reason in sorted(listed, key=lambda x: CAUSES.index(x[0])):
             detail = ", ".join(f"{f}: {got[f] if got else None} want {want[f]}" for f in wrong) or reason
             print(f"[{cause}] {group}: {sentence!r} -- {detail}")
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("episodes", type=Path, help="the --episodes file of a --goal human run")
+    ap.add_argument("--gold", type=Path, help="the --episodes file of a --goal gold run of the same split")
+    ap.add_argument("--data", type=Path, default=ROOT.parent / "shared" / "data")
+    ap.add_argument("--split", default="valid_seen")
+    ap.add_argument("--policy", default="sefm")
+    ap.add_argument("--list", action="store_true", help="print every failed episode with its cause")
+    ap.add_argument("--markdown", action="store_true")
+    args = ap.parse_args()
+
+    outcomes = read_outcomes(args.episodes, args.policy)
+    gold = read_outcomes(args.gold, args.policy) if args.gold else {}
+    module = scorer(args.data.parent / "eval" / "score_alfred_goals.py")
+    try:
+        suite = load_suite(args.data / "alfred2d", args.split)
+    except SealError as error:
+        raise SystemExit(f"error: {error}") from None
+    report(outcomes, suite, module, gold, markdown=args.markdown, listing=args.list)
     return 0
 
 
