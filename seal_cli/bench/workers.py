@@ -72,14 +72,16 @@ def unordered(function: Callable[[T], R], items: Iterable[T], jobs: int, *,
     executor = ProcessPoolExecutor(max(1, jobs), mp_context=_context(method), initializer=_start,
                                    initargs=(initializer, tuple(initargs)))
     pending: set[Future[R]] = set()
+    finished = False
     try:
         pending = {executor.submit(_call, function, item) for item in items}
         while pending:
             done, pending = wait(pending, return_when=FIRST_COMPLETED)
             for future in done:
                 yield _result(future)
-    finally:
-        _stop(executor, pending)
+        finished = True
+    finally:  # any other way out (an interrupt even while the tasks were being submitted): end the workers
+        _stop(executor, pending, early=not finished)
 
 
 def ordered(function: Callable[[T], R], items: Iterable[T], jobs: int, **options: Any) -> Iterator[R]:
@@ -107,16 +109,20 @@ def _result(future: Future[R]) -> R:
                         "stopped; run it again, with fewer --jobs if memory is short") from None
 
 
-def _stop(executor: ProcessPoolExecutor, pending: set[Future[Any]]) -> None:
-    """Cancel what has not run, end every worker (terminated, killed after :data:`GRACE` seconds) and reap it."""
+def _stop(executor: ProcessPoolExecutor, pending: set[Future[Any]], *, early: bool) -> None:
+    """Cancel what has not run, end every worker (terminated, killed after :data:`GRACE` seconds) and reap it.
+    ``early``: the run did not finish (an error, an interrupt, the caller stopping), so the workers still at a task
+    are ended, not waited for — also when the interrupt came while the tasks were being submitted (``pending``
+    then still empty: waiting for the running tasks there outlived a SIGINT by a minute on a loaded machine)."""
     for future in pending:
         future.cancel()
     processes = list((getattr(executor, "_processes", None) or {}).values())
-    if pending:  # stopped early: the workers still at a task are ended, not waited for
+    if early:
         for process in processes:
             if process.is_alive():
                 process.terminate()
-    executor.shutdown(wait=not pending, cancel_futures=True)
+    # the workers ended above: the pool's manager thread sees them gone and ends; it reaps a broken pool's too
+    executor.shutdown(wait=True, cancel_futures=True)
     for process in processes:
         process.join(GRACE)
         if process.is_alive():
