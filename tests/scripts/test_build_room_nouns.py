@@ -48,12 +48,17 @@ def run(*args: str) -> subprocess.CompletedProcess[str]:
     return run_script(SCRIPT, *args)
 
 
-def test_a_noun_whose_first_tagged_sense_or_every_sense_is_part_of_a_building(tmp_path: Path) -> None:
-    wordnet = tiny_wordnet(tmp_path / "dict", "", DATA, "", INDEX, COUNTS)
+def premises(tmp_path: Path, data: str, index: str, counts: str) -> list[str]:
+    """The nouns the script writes from a tiny WordNet of these noun files (it must succeed)."""
+    wordnet = tiny_wordnet(tmp_path / "dict", "", data, "", index, counts)
     out = tmp_path / "premises.txt"
     done = run("--wordnet", str(wordnet), "--out", str(out))
     assert done.returncode == 0, done.stderr
-    nouns = [line for line in out.read_text().splitlines() if line and not line.startswith("#")]
+    return [line for line in out.read_text().splitlines() if line and not line.startswith("#")]
+
+
+def test_a_noun_whose_first_tagged_sense_or_every_sense_is_part_of_a_building(tmp_path: Path) -> None:
+    nouns = premises(tmp_path, DATA, INDEX, COUNTS)
     # scullery: a room; hallway: a corridor; study: its first (most tagged) sense is research; towel: cloth;
     # snug: never tagged, one sense a feeling
     assert nouns == ["hallway", "scullery"]
@@ -86,11 +91,7 @@ parlour%1:06:00:: 1 5
 
 
 def test_a_place_things_are_kept_in_is_no_premises_unless_it_is_a_room(tmp_path: Path) -> None:
-    wordnet = tiny_wordnet(tmp_path / "dict", "", STORES_DATA, "", STORES_INDEX, STORES_COUNTS)
-    out = tmp_path / "premises.txt"
-    done = run("--wordnet", str(wordnet), "--out", str(out))
-    assert done.returncode == 0, done.stderr
-    nouns = [line for line in out.read_text().splitlines() if line and not line.startswith("#")]
+    nouns = premises(tmp_path, STORES_DATA, STORES_INDEX, STORES_COUNTS)
     # hutch: storage space (an area) and no room, as WordNet files "cupboard"; tray: a container and storage space,
     # as "drawer"; stockroom: storage space and a room, as "pantry"/"storeroom"; parlour: a room
     assert nouns == ["parlour", "stockroom"]
