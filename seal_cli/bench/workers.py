@@ -112,8 +112,8 @@ def _result(future: Future[R]) -> R:
 def _stop(executor: ProcessPoolExecutor, pending: set[Future[Any]], *, early: bool) -> None:
     """Cancel what has not run, end every worker (terminated, killed after :data:`GRACE` seconds) and reap it.
     ``early``: the run did not finish (an error, an interrupt, the caller stopping), so the workers still at a task
-    are ended, not waited for — also when the interrupt came while the tasks were being submitted (``pending``
-    then still empty: waiting for the running tasks there outlived a SIGINT by a minute on a loaded machine)."""
+    are terminated before the pool is shut down, rather than their tasks awaited — also when the interrupt came
+    while the tasks were being submitted (``pending`` then still empty)."""
     for future in pending:
         future.cancel()
     processes = list((getattr(executor, "_processes", None) or {}).values())
