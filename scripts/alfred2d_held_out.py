@@ -54,13 +54,16 @@ def script(name: str) -> ModuleType:
 
 def fit_statistics(data: Path, rows: list[dict[str, str]], folder: Path, bwc: ModuleType) -> None:
     """The word-class table and the task fields' model fitted on ``rows`` as their build scripts fit them (the
-    word-class table as ``build_word_classes.py --dev`` fits it, with its scenes' weights), written into ``folder``
-    and put in place of the shipped ones for the rest of this process."""
+    word-class table as ``build_word_classes.py --dev`` fits it, with its scenes' weights, and with the scenery the
+    shipped table lists, of ``rows``' floor plans only: without it a scene with a faucet or a shower head is out of
+    the statistics' scope, and no step, goal, task or field is inferred there), written into ``folder`` and put in
+    place of the shipped ones for the rest of this process."""
     classes = json.loads((data / "alfred" / "alfred_constants.json").read_text())["OBJECTS"]
     vocabulary = bwc.Vocabulary.of(classes)
     table = bwc.table(*bwc.count(rows, vocabulary, bwc.scene_classes(data, classes)), classes,
                       "held-out floor plans", bwc.L2, bwc.SCENE_L2)
     table = bwc.with_stack_goals(bwc.with_steps(table, rows, vocabulary), rows, vocabulary)
+    table["scenery"] = bwc.scenery(data, classes, {r["floor_plan"] for r in rows})
     (folder / "word_classes").mkdir()
     (folder / "word_classes" / "alfred_train.json").write_text(bwc.dump(table), encoding="utf-8")
     (folder / "task_fields.json").write_text(

@@ -39,7 +39,7 @@ import sys
 import tempfile
 import zlib
 from collections import Counter
-from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Callable, Collection, Iterable, Iterator, Sequence
 from dataclasses import replace
 from pathlib import Path
 
@@ -264,16 +264,18 @@ def scene_classes(data: Path, classes: Sequence[str]) -> dict[str, frozenset[str
             for name, plan in plans.items()}
 
 
-def scenery(data: Path, classes: Sequence[str]) -> list[str]:
+def scenery(data: Path, classes: Sequence[str], floor_plans: Collection[str] | None = None) -> list[str]:
     """The classes of ALFRED's floor plans that are none of ``classes`` (THOR's ``Faucet``, ``ShowerHead``):
     parts of a scene no sentence names as a task's thing, listed so that a scene's vocabulary is still
-    one the statistics know (:attr:`~seal_cli.language.wordusage.WordUsage.scenery`)."""
+    one the statistics know (:attr:`~seal_cli.language.wordusage.WordUsage.scenery`). ``floor_plans``: only
+    these floor plans' classes (a fit on some of them); None: every floor plan's."""
     path = data / "alfred2d" / "floorplans.json"
     if not path.is_file():
         return []
     known = {class_key(c) for c in classes}
     plans = json.loads(path.read_text())["floor_plans"]
-    found = {c for plan in plans.values() for c in [*plan["object_types"], *(r["class"] for r in plan["receptacles"])]}
+    found = {c for name, plan in plans.items() if floor_plans is None or name in floor_plans
+             for c in [*plan["object_types"], *(r["class"] for r in plan["receptacles"])]}
     return sorted(c for c in found if class_key(c) not in known)
 
 

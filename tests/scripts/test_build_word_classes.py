@@ -84,3 +84,14 @@ def test_where_a_stack_s_container_went_is_learned_from_the_stacks_that_do_not_s
     assert built["stack_goal_prior"] == {"CounterTop": 2, "DiningTable": 2}
     weights = built["stack_goal_weights"]
     assert weights["o:bowl"]["DiningTable"] > weights["o:pan"]["DiningTable"]        # the container weighs
+
+
+def test_scenery_is_the_floor_plans_classes_no_task_names_and_may_be_of_some_floor_plans_only(tmp_path: Path) -> None:
+    plans = {"FloorPlan1": {"object_types": ["Apple", "Faucet"], "receptacles": [{"class": "Sink"}]},
+             "FloorPlan2": {"object_types": ["Mug"], "receptacles": [{"class": "ShowerHead"}]}}
+    (tmp_path / "alfred2d").mkdir()
+    (tmp_path / "alfred2d" / "floorplans.json").write_text(json.dumps({"floor_plans": plans}))
+    scenery = builder().scenery
+    assert scenery(tmp_path, ["Apple", "Mug", "Sink"]) == ["Faucet", "ShowerHead"]
+    assert scenery(tmp_path, ["Apple", "Mug", "Sink"], {"FloorPlan2"}) == ["ShowerHead"]
+    assert scenery(tmp_path / "nowhere", ["Apple"]) == []
