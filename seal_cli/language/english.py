@@ -154,7 +154,8 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                     "i would like for you to", "i'd like for you to", "i want for you to", "i'll need you to",
                     "i will need you to", "we need you to", "we'll need you to", "wanna", "do you wanna",
                     "you wanna", "why don't you", "why not", "is possible to", "is possible for you to",
-                    "hurry", "hurry up"]))
+                    "hurry", "hurry up", "sorry to bother you", "sorry to trouble you", "sorry to disturb you",
+                    "sorry to bother you but", "sorry to trouble you but", "sorry to disturb you but"]))
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
     "when you have a moment", "when you have a minute", "when you have a second", "when you have time",
@@ -165,6 +166,12 @@ POLITE_FORMULAE = frozenset([
     "if you do not mind", "if it's not too much trouble", "if it is not too much trouble", "if you wouldn't mind",
     "if you would not mind", "at your convenience", "when convenient", "when it's convenient", "no rush",
     "no hurry"])
+AS_ABLE = frozenset(["possible", "you can", "you could", "you're able", "you are able", "you can manage",
+                     "you're able to", "you are able to", "you can do it"])
+"""What ends "as fast *as you can*", "as gently *as possible*" (``politeness.AS_ABLE_RULE``): the manner said at the
+most the robot can; with a quantity between ("as much as you can") it is no manner but a thing."""
+AS_ABLE_NOT_MANNER = frozenset(["much", "many", "few", "little", "far"])
+"""Words between "as" and "as" that measure a thing or a way, not a manner ("bring *as many as* you can")."""
 """Politeness said as a clause of its own ("*when you get a chance*, could you ..."; "... *if you don't
 mind*"): the robot's time is asked for, not a condition or a task. Only a whole clause: "if you can"
 followed by more of its clause ("if you can reach the shelf, ...") is a condition."""
@@ -358,11 +365,17 @@ REQUESTS = frozenset(["i'd like", "i would like", "i should like", "i'd love", "
                       "i'd really love", "i really need", "i just need", "need", "i am wanting", "i'm wanting",
                       "i am needing", "i'm needing", "we are needing", "we're needing",
                       *(f"{modal} i {bother} you for" for modal in ("could", "can", "may", "might")
-                        for bother in ("trouble", "bother"))])
+                        for bother in ("trouble", "bother")),
+                      "i wouldn't mind", "i would not mind", "we wouldn't mind", "we would not mind",
+                      *(f"{chance} {wish}" for chance in ("any chance", "is there any chance", "is there a chance")
+                        for wish in ("of", "i could have", "i can have", "i could get", "i can get", "we could have",
+                                     "we can have"))])
 """A request for a thing said as the speaker's wish ("*I'd like* the red mug", "*Can I have* the big plate",
 "*I need* a pen", "*I could do with* a towel"): it means "bring me ..." (``REQUEST_MEANS``, with the speaker as
 recipient). Asked as a trouble to the hearer, a thing after "for" ("*might I trouble you for* a glass of water",
-words26), as politeness asks a deed after "to" ("could I trouble you to ...")."""
+words26), as politeness asks a deed after "to" ("could I trouble you to ..."). A wish said as not minding ("*I
+wouldn't mind* a biscuit") or as a chance asked ("*any chance I could have* a cushion?", "*any chance of* a cup of
+tea?") is one too (words30)."""
 REQUEST_MEANS = "bring"
 WISHED_PLACED = frozenset(["i want", "i'd like", "i would like", "we want", "we'd like", "we would like"])
 WISHED_PLACES = frozenset(["on", "onto", "in", "into", "inside", "under"])

@@ -1020,7 +1020,9 @@ class State:
     def run_on_condition(self, j: int, end: int) -> int | None:
         """Where the command starts inside a condition said first with no comma ("when Sam comes home *give* him
         his keys", "if the kettle has boiled *pour* the water"): after a finite verb of the condition (one that
-        is not its own lemma: "comes", "has"), a verb of the library in its base form, not after a determiner,
+        is not its own lemma: "comes", "has"; or a base form after a subject: "when guests *arrive*"; never the
+        condition's first word or one after a determiner: "the *guests*" is its subject, words30), a verb of the
+        library in its base form, not after a determiner,
         "to", a modal or "and", with an object, a particle or nothing after it; None when there is none (dictated
         speech drops the comma: words29)."""
         words = self.words
@@ -1029,8 +1031,10 @@ class State:
             low = words[k].lower
             lemma = verb_lemma(low)
             if not finite:
-                finite = lemma is not None and lemma != low and low not in NP_OPENERS or low in BE_WORDS
-                continue
+                finite = lemma is not None and low not in NP_OPENERS and k > j and \
+                    words[k - 1].lower not in NP_OPENERS and words[k - 1].lower not in MODALS and \
+                    words[k - 1].lower != "to" or low in BE_WORDS
+                continue            # "before *the guests* arrive", "when *guests* arrive": the subject (words30)
             before = words[k - 1].lower
             if before in NP_OPENERS or before in MODALS or before in BE_WORDS or \
                     before in ("to", "and", "or", "not", "'s"):     # "if the door is *open*": its state

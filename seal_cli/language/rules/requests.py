@@ -120,8 +120,9 @@ def _where(s: State, i: int) -> Match | None:
     n = _phrase(s, i, WHERE_QUESTIONS)
     if not n or WHERE_MEANS not in s.lexicon.units or not s.np_starts(i + n) or \
             words[i + n - 1].lower in WHERE_DID[1] and words[i + n].lower in WHERE_DID[2] or \
-            words[i].lower in WHERE_DID[0] and _where_did(s, i) is not None:
-        return None                         # "where did *I* leave my glasses", "where did *ben* put it": WHERE_DID's
+            words[i].lower in WHERE_DID[0] and _where_did(s, i) is not None or _phrase(s, i, REQUESTS):
+        return None                         # "where did *I* leave my glasses", "where did *ben* put it": WHERE_DID's;
+        #   "is there any chance I could have a cushion": a request (words30), no chance sought
     text = s.text_of(words[i].start, words[i + n - 1].end) or " ".join(w.text for w in words[i:i + n])
     return Match(n, (Word(text, words[i].start, words[i + n - 1].end, Tag.VERB, WHERE_MEANS),), expect=False,
                  verb=WHERE_MEANS, using=False)
@@ -1578,6 +1579,9 @@ REQUEST = Rule("wish for a thing", _request, (
     Example("I'd like the red mug", "I'd like", Tag.VERB),
     Example("Can I have the big plate?", "Can I have", Tag.VERB),
     Example("I need a pen.", "I need", Tag.VERB),
+    Example("I wouldn't mind a biscuit", "I wouldn't mind", Tag.VERB),
+    Example("is there any chance of a blanket?", "is there any chance of", Tag.VERB),
+    Example("any chance I could have a cushion", "any chance I could have", Tag.VERB),
 ), _REQUEST_FIRST, "'I'd like X', 'can I have X', 'I need X': bring X to the speaker")
 SWITCHED_ALONE = Rule("a thing switched on or off", _switched_alone, (
     Example("Lights off in the hall.", "Lights", Tag.WORD),
