@@ -182,7 +182,8 @@ SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "tha
              "isnt": "isn't", "arent": "aren't", "wasnt": "wasn't", "havent": "haven't", "couldnt": "couldn't",
              "wouldnt": "wouldn't", "shouldnt": "shouldn't", "shes": "she's", "hes": "he's", "whats": "what's",
              "theres": "there's", "wont": "won't", "cant": "can't", "wheres": "where's", "hows": "how's",
-             "ill": "i'll", "id": "i'd", "youll": "you'll", "weve": "we've", "theyve": "they've", "itll": "it'll"}
+             "ill": "i'll", "id": "i'd", "youll": "you'll", "weve": "we've", "theyve": "they've", "itll": "it'll",
+             "frm": "from", "thru": "through", "abt": "about"}
 """Texting spellings of function words ("turn the lights off *pls*", "open it *n* wipe it", "where *r* my keys",
 "tell her *im* late"): read as the word they spell."""
 SEEN_QUESTIONS = frozenset(["see", "you see", "do you see", "you spot", "do you spot", "notice",
@@ -367,6 +368,10 @@ REQUESTS = frozenset(["i'd like", "i would like", "i should like", "i'd love", "
                       *(f"{modal} i {bother} you for" for modal in ("could", "can", "may", "might")
                         for bother in ("trouble", "bother")),
                       "i wouldn't mind", "i would not mind", "we wouldn't mind", "we would not mind",
+                      "i fancy", "i'd fancy", "i would fancy", "i quite fancy", "i'd quite fancy", "i really fancy",
+                      *(f"{modal} {who} {adverb} {verb}" for modal in ("can", "could", "may") for who in ("i", "we")
+                        for adverb in ("possibly", "just", "please just") for verb in ("have", "get")),
+                      *(f"{modal} {who} borrow" for modal in ("can", "could", "may") for who in ("i", "we")),
                       *(f"{chance} {wish}" for chance in ("any chance", "is there any chance", "is there a chance")
                         for wish in ("of", "i could have", "i can have", "i could get", "i can get", "we could have",
                                      "we can have"))])
@@ -375,7 +380,7 @@ REQUESTS = frozenset(["i'd like", "i would like", "i should like", "i'd love", "
 recipient). Asked as a trouble to the hearer, a thing after "for" ("*might I trouble you for* a glass of water",
 words26), as politeness asks a deed after "to" ("could I trouble you to ..."). A wish said as not minding ("*I
 wouldn't mind* a biscuit") or as a chance asked ("*any chance I could have* a cushion?", "*any chance of* a cup of
-tea?") is one too (words30)."""
+tea?") is one too, and so are "I fancy X", "could I possibly have X" and "can I borrow X" (words30)."""
 REQUEST_MEANS = "bring"
 WISHED_PLACED = frozenset(["i want", "i'd like", "i would like", "we want", "we'd like", "we would like"])
 WISHED_PLACES = frozenset(["on", "onto", "in", "into", "inside", "under"])

@@ -189,7 +189,7 @@ class Lexicon:
         if i + 2 < len(words) and words[i + 1].lower == "of" and (words[i + 2].lower in NP_OPENERS or
                                                                  words[i + 2].lower in OBJECT_PRONOUNS):
             off = self.typed_of(candidates)
-            if off:
+            if off and off.split()[0] == first:  # the base form, said to the robot ("left of the sink": where)
                 return off, 2, None              # "turn *of* the kettle": "off" typed with one "f" (words30)
         for unit in candidates:
             n = len(unit)

@@ -21,6 +21,7 @@ from seal_cli.language.english import (
     CLOCK_PREPOSITIONS,
     CLOCK_WORDS,
     CONTRACTED,
+    CORRECTION_MARKS,
     DETERMINERS,
     END_MARKS,
     FILLERS,
@@ -269,13 +270,20 @@ def _its_is_it_is(words: Sequence[Word], k: int) -> bool:
 
 def _without_fillers(words: list[Word]) -> list[Word]:
     """The words without hesitations ("um", "uh", ...) and the comma after one ("and, *um,* put it on the
-    bed"): they say nothing, so "and then, um, chill it" is "and then, chill it"."""
+    bed"): they say nothing, so "and then, um, chill it" is "and then, chill it". A hesitation between a phrase and
+    the marks of a correction and its new phrase is the pause a comma writes ("take the bins out *er* I mean the
+    recycling": ", I mean the recycling"; words30)."""
     if not any(w.lower in FILLERS for w in words):
         return words
     kept: list[Word] = []
     skip_comma = False
-    for w in words:
+    for at, w in enumerate(words):
         if w.lower in FILLERS:
+            n = longest_phrase(words, at + 1, CORRECTION_MARKS)
+            if n and kept and kept[-1].lower != "," and at + 1 + n < len(words) and \
+                    words[at + 1 + n].lower in NP_OPENERS and words[at + n].lower not in ("no", "wait", "sorry"):
+                #   ("um no the mug": "no" may be the phrase's determiner, as in ", no sugar")
+                kept.append(Word(",", w.start, w.end))
             skip_comma = True
             continue
         if not (skip_comma and w.lower == ","):

@@ -2518,3 +2518,39 @@ def test_an_adverb_between_the_verb_and_its_object_is_no_thing(
         text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
     """"is there still some juice in the carton?" sought "still", the juice dropped."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("I'd quite fancy a mug of cocoa", [("Bring", {"theme": "mug", "recipient": "me"})]),
+    ("could I possibly have a napkin", [("Bring", {"theme": "napkin", "recipient": "me"})]),
+    ("can I borrow your umbrella", [("Bring", {"theme": "umbrella", "recipient": "me"})]),
+])
+def test_more_wishes_for_a_thing(text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+def test_from_written_as_texting_does(library: Library) -> None:
+    """"grab me a drink *frm* the fridge" was Pick of "a drink frm", the fridge and the speaker dropped."""
+    assert frames("can u grab me a juice frm the fridge", library) == [
+        ("Bring", {"theme": "juice", "recipient": "me", "source": "fridge"})]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("open the gate let the dog in", None),                  # "let": no frame; was Open of "the gate let"
+    ("go to the study to help me", [("Go", {"goal": "study"})]),   # was the goal "the study to help", "me" dropped
+    ("check the door lock", [("LookAt", {"theme": "lock"})]),       # a noun, as before
+])
+def test_an_unknown_verb_before_its_object_is_a_clause_of_its_own(
+        text: str, want: list[tuple[str, dict[str, str]]] | None, library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+def test_back_in_there_is_back_and_there(library: Library) -> None:
+    parse = parse_command("open the cupboard and put the mugs back in there", library)
+    goal = parse.frames[1].elements["goal"]
+    assert goal.text == "in there" and goal.refers_to == (0, "theme")
+
+
+def test_a_hesitation_before_a_correction_is_its_comma(library: Library) -> None:
+    assert frames("put it on the shelf uh I mean the desk", library) == [("Place", {"theme": "it", "goal": "desk"})]
+    assert frames("bring me the cup um no the mug", library) == [("Bring", {"theme": "cup", "recipient": "me"})]

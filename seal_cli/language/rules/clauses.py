@@ -352,7 +352,7 @@ def _unknown_unjoined(s: State, i: int) -> Match | None:
             return Match(0, (Word("", words[i].start, words[i].start, Tag.SEP),), expect=True)
         return None             # "go *round* the corner": an adverb or adjective too, a path
     if s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL, Tag.PARTICLE, Tag.HERE) or \
-            not to and words[i + 1].lower not in _NO_NOUN_AFTER:
+            not to and not _unknown_before_object(words[i].lower, words[i + 1].lower):
         return None
     k = i + 1 if to else i
     if k + 1 >= len(words):
@@ -361,14 +361,26 @@ def _unknown_unjoined(s: State, i: int) -> Match | None:
     if verb_lemma(verb) != verb or verb in s.lexicon.units or verb in CLOSED or verb in s.lexicon.things or \
             to and capitalised(words[k]):
         return None                       # "a blanket to *Grace* in the lounge": a capital after "to" is a name
-    if to and not (nxt.lower in PARTICLES or nxt.lower in NP_OPENERS or
+    if to and not (nxt.lower in PARTICLES or nxt.lower in NP_OPENERS or nxt.lower in _SPEAKER_OBJECTS or
                    nxt.lower in _NO_NOUN_AFTER or capitalised(nxt) and nxt.lower not in CLOSED):
-        return None
-    if not to and nxt.lower not in _NO_NOUN_AFTER:
-        return None
+        return None                       # "come to the kitchen *to help me*" (words30: the goal was "the kitchen
+        #                                   to help", "me" dropped)
     if to:
         return Match(1, (words[i].tagged(Tag.SEP),), expect=True)
     return Match(0, (Word("", words[i].start, words[i].start, Tag.SEP),), expect=True)
+
+
+def _unknown_before_object(verb: str, nxt: str) -> bool:
+    """Whether a word no frame lists, after a phrase, is a verb before its object: an object pronoun follows ("grab
+    the towel *fold it*"), or a determiner follows a word English uses as a verb only or mostly (``parts_of_speech``,
+    ``mostly_verb``: "open the door *let the* cat out" was Open of "the door let", the clause dropped; words30).
+    "the door *handle the* ..." would take a noun that is mostly one."""
+    if nxt in _NO_NOUN_AFTER:
+        return True
+    return nxt in NP_OPENERS and (parts_of_speech(verb) == _VERB_ONLY or mostly_verb(verb))
+
+
+_VERB_ONLY = frozenset(["verb"])
 
 
 def _particle_verb(s: State, j: int) -> bool:
@@ -449,4 +461,6 @@ UNKNOWN_UNJOINED = Rule("unknown verb without a joint", _unknown_unjoined, (
     Example("the person in the hall needs help, go see them", "see", Tag.WORD),
     Example("come help me", "help", Tag.WORD),
     Example("go feed the cat", "feed", Tag.WORD),
+    Example("open the door let the cat out", "let", Tag.WORD),
+    Example("come to the kitchen to help me", "to", Tag.SEP),
 ), None, "a verb no frame lists before its object, after a phrase: a clause of its own")

@@ -232,6 +232,8 @@ def _preposition(s: State, i: int) -> Match | None:
     n = match_phrase(words, i, PREPOSITIONS)
     if not n:
         return None
+    if n > 1 and match_phrase(words, i + n - 1, HERE_WORDS) == 2:
+        return s.emit(i, n - 1, Tag.PARTICLE, words[i].lower)    # "put them *back* in there": "in there" a place
     prep = PREPOSITIONS[" ".join(x.lower for x in words[i:i + n])]
     has_object = s.np_starts(i + n) or i + n < len(words) and words[i + n].lower in ("here", "there")
     if not has_object and prep == "outside":
@@ -436,6 +438,7 @@ OUT_OF_THE_HOUSE = Rule("a person seen out", _seen_out, (
     Example("guide the lady waving in the kitchen out", "out", Tag.HERE),
 ), frozenset([SEEN_OUT[0]]), "'out' after the person a verb of leading takes, ending the clause: to the exit")
 PREPOSITION = Rule("preposition", _preposition, (
+    Example("put the plates back in there", "back", Tag.PARTICLE),
     Example("put the cup on top of the fridge", "on top of", Tag.PREP),
     Example("take the trash bag outside", "outside", Tag.HERE),
 ), _PREP_FIRST, "a preposition with its object, else a particle")
