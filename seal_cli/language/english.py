@@ -371,7 +371,6 @@ REQUESTS = frozenset(["i'd like", "i would like", "i should like", "i'd love", "
                       "i fancy", "i'd fancy", "i would fancy", "i quite fancy", "i'd quite fancy", "i really fancy",
                       *(f"{modal} {who} {adverb} {verb}" for modal in ("can", "could", "may") for who in ("i", "we")
                         for adverb in ("possibly", "just", "please just") for verb in ("have", "get")),
-                      *(f"{modal} {who} borrow" for modal in ("can", "could", "may") for who in ("i", "we")),
                       *(f"{chance} {wish}" for chance in ("any chance", "is there any chance", "is there a chance")
                         for wish in ("of", "i could have", "i can have", "i could get", "i can get", "we could have",
                                      "we can have"))])
@@ -380,7 +379,7 @@ REQUESTS = frozenset(["i'd like", "i would like", "i should like", "i'd love", "
 recipient). Asked as a trouble to the hearer, a thing after "for" ("*might I trouble you for* a glass of water",
 words26), as politeness asks a deed after "to" ("could I trouble you to ..."). A wish said as not minding ("*I
 wouldn't mind* a biscuit") or as a chance asked ("*any chance I could have* a cushion?", "*any chance of* a cup of
-tea?") is one too, and so are "I fancy X", "could I possibly have X" and "can I borrow X" (words30)."""
+tea?") is one too, and so are "I fancy X", and "could I possibly have X" (words30)."""
 REQUEST_MEANS = "bring"
 WISHED_PLACED = frozenset(["i want", "i'd like", "i would like", "we want", "we'd like", "we would like"])
 WISHED_PLACES = frozenset(["on", "onto", "in", "into", "inside", "under"])
