@@ -367,7 +367,8 @@ REQUESTS = frozenset(["i'd like", "i would like", "i should like", "i'd love", "
                       "i am needing", "i'm needing", "we are needing", "we're needing",
                       *(f"{modal} i {bother} you for" for modal in ("could", "can", "may", "might")
                         for bother in ("trouble", "bother")),
-                      "i wouldn't mind", "i would not mind", "we wouldn't mind", "we would not mind",
+                      "we'd love", "we would love", "i wouldn't mind", "i would not mind", "we wouldn't mind",
+                      "we would not mind",
                       "i fancy", "i'd fancy", "i would fancy", "i quite fancy", "i'd quite fancy", "i really fancy",
                       *(f"{modal} {who} {adverb} {verb}" for modal in ("can", "could", "may") for who in ("i", "we")
                         for adverb in ("possibly", "just", "please just") for verb in ("have", "get")),

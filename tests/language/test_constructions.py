@@ -2553,3 +2553,22 @@ def test_back_in_there_is_back_and_there(library: Library) -> None:
 def test_a_hesitation_before_a_correction_is_its_comma(library: Library) -> None:
     assert frames("put it on the shelf uh I mean the desk", library) == [("Place", {"theme": "it", "goal": "desk"})]
     assert frames("bring me the cup um no the mug", library) == [("Bring", {"theme": "cup", "recipient": "me"})]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("is anybody downstairs?", [("Find", {"theme": "anybody", "ground": "downstairs"})]),
+    ("is the dog outdoors", [("Find", {"theme": "dog", "ground": "outdoors"})]),
+])
+def test_whether_someone_is_upstairs_asks_to_find_them_there(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("switchoff the radio", [("ToggleOff", {"theme": "radio"})]),
+    ("please pickup the socks", [("Pick", {"theme": "sock"})]),
+    ("bring me the pickup", [("Bring", {"theme": "pickup", "recipient": "me"})]),    # a noun where a noun stands
+])
+def test_a_verb_and_its_particle_written_together(text: str, want: list[tuple[str, dict[str, str]]],
+                                                  library: Library) -> None:
+    assert_reads(text, want, library)

@@ -16,6 +16,7 @@ from seal_cli.language.english import (
     BE_WORDS,
     CHECK_WHETHER,
     DETERMINERS,
+    DIRECTIONS,
     END_MARKS,
     ENSURED,
     FINITE,
@@ -248,9 +249,10 @@ _STATE_CONTRACTED = frozenset(["'s", "'re"])
 """"is"/"are" said joined to the phrase ("the oven*'s* off, isn't it?": a state said, then its tag, words26)."""
 _PEOPLE_PRONOUNS = frozenset(["he", "she"])
 _WHETHER_WHERE = frozenset(["in", "on", "at", "inside", "near", "by", "under", "beside", "behind"])
-_AT_HOME = frozenset(["home"])
+_AT_HOME = DIRECTIONS
 """Being *home* is being in the house ("is mum home?", "see if anyone is home"): where someone is, asked as finding
-them in the whole house, never a state of theirs to look at."""
+them in the whole house, never a state of theirs to look at; so is being *upstairs*, *downstairs*, *outdoors*
+(``english.DIRECTIONS``: "is anybody upstairs?" was "unknown verb 'is'", words30)."""
 _WHETHER_THERE = _WHETHER_WHERE | _AT_HOME | frozenset(["there", "here"])
 """After "see if anyone is": a place said, or pointed at ("... is *there*", where the robot went)."""
 
@@ -1515,6 +1517,7 @@ LEFT_ASKED_RULE = Rule("did someone leave X in a state", _left_asked, (
 ), LEFT_ASKED[0], "'did I leave X on?': check X (LookAt), the state asked kept; 'did I leave X in Y?': find X in Y")
 WHETHER_IS_RULE = Rule("is X somewhere", _whether_is, (
     Example("Is Ben in the kitchen?", "Is", Tag.VERB),
+    Example("is anybody upstairs?", "is", Tag.VERB),
     Example("are the apples in the fridge?", "are", Tag.VERB),
     Example("is anyone sitting at the table?", "is", Tag.VERB),
     Example("is someone waiting at the door?", "is", Tag.VERB),
