@@ -2572,3 +2572,14 @@ def test_whether_someone_is_upstairs_asks_to_find_them_there(
 def test_a_verb_and_its_particle_written_together(text: str, want: list[tuple[str, dict[str, str]]],
                                                   library: Library) -> None:
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("bring in the shopping", [("Bring", {"theme": "shopping"})]),       # was Guide from "the shopping"
+    ("bring in the bins from the drive", [("Bring", {"theme": "bin", "source": "drive"})]),
+    ("please hand in this letter", [("Give", {"theme": "letter"})]),
+    ("put in the fridge", [("Place", {"goal": "fridge"})]),            # no verb that hands: a place, as before
+])
+def test_in_between_a_verb_that_hands_and_its_object_is_a_particle(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert_reads(text, want, library)

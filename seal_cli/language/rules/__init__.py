@@ -190,6 +190,7 @@ WORDS: tuple[Rule, ...] = (
     function_words.PLACE_WORD_AFTER_FROM,
     function_words.HERE,
     function_words.BACK,
+    function_words.PARTICLE_BEFORE_OBJECT,
     function_words.PREPOSITION,
     function_words.PARTICLE,
     function_words.WH,
