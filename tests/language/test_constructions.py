@@ -2583,3 +2583,15 @@ def test_a_verb_and_its_particle_written_together(text: str, want: list[tuple[st
 def test_in_between_a_verb_that_hands_and_its_object_is_a_particle(
         text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("the visitors have arrived, go with them to the hall", [("Guide", {"theme": "visitor", "goal": "hall"})]),
+    ("walk with them", [("Follow", {"theme": "them"})]),
+    ("pick up the boxes and go with them to the car", [("Pick", {"theme": "box"}), ("Go", {"goal": "car"})]),
+])
+def test_going_with_them_is_going_with_people(text: str, want: list[tuple[str, dict[str, str]]],
+                                              library: Library) -> None:
+    """"go with them" was a bare Go, "with them" dropped without a word; with no thing said before, "them" are the
+    people gone with; things said before are carried (as before)."""
+    assert_reads(text, want, library)
