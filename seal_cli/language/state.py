@@ -268,6 +268,11 @@ def _its_is_it_is(words: Sequence[Word], k: int) -> bool:
     return is_adjective(nxt) and (not after.isalpha() or after in CLOSED or after in SEPARATOR_WORDS)
 
 
+_PLACED_SUBJECTS = frozenset(["someone", "somebody", "everyone", "everybody", "nobody", "anyone", "anybody"])
+"""Pronouns of people that may be said with where they are before their verb ("*someone in the kitchen* is
+waving"): the phrase of place is the subject's, so the statement's verb comes after it (words30)."""
+
+
 def _without_fillers(words: list[Word]) -> list[Word]:
     """The words without hesitations ("um", "uh", ...) and the comma after one ("and, *um,* put it on the
     bed"): they say nothing, so "and then, um, chill it" is "and then, chill it". A hesitation between a phrase and
@@ -492,6 +497,11 @@ class State:
         if "'" in first and first.split("'")[0] in SUBJECTS | {"you", "who", "what", "here"} and \
                 "'" + first.split("'", 1)[1] in CONTRACTED:
             return end                                        # "we're eating in ten", "i'll be right there"
+        if first in _PLACED_SUBJECTS and nxt in LOCATIVE and self.np_starts(i + 2):
+            k = i + 2                                         # "*someone in the kitchen is* waving, greet them"
+            while k < end and words[k].lower not in FINITE and self.verb_at(k) is None:
+                k += 1
+            return end if k < end and words[k].lower in FINITE else 0
         if first in SUBJECTS or first == "you" and nxt not in ("can", "could", "will", "would", "should", "must"):
             return end if nxt in FINITE or nxt in CONTRACTED or self.finite_form(i + 1, end) or \
                 first in THIRD_PERSON_SUBJECTS and inflected(nxt) else 0     # "he *likes* company", "it *smells* like"

@@ -2595,3 +2595,15 @@ def test_going_with_them_is_going_with_people(text: str, want: list[tuple[str, d
     """"go with them" was a bare Go, "with them" dropped without a word; with no thing said before, "them" are the
     people gone with; things said before are carried (as before)."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("somebody in the garden is shouting, go and find them", [("Find", {"theme": "somebody", "ground": "garden"})]),
+    ("someone at the gate wants to come in, meet them", [("Meet", {"theme": "someone", "ground": "gate"})]),
+    ("anyone in the hall?", [("Find", {"theme": "anyone", "ground": "hall"})]),                    # as before
+])
+def test_a_statement_of_someone_somewhere_beside_the_command(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """"Someone in the kitchen is waving, go and greet them" said "unknown verb 'someone'": a pronoun of people, where
+    they are and then a finite verb is a statement, which "them" takes up."""
+    assert_reads(text, want, library)
