@@ -155,7 +155,8 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                     "i will need you to", "we need you to", "we'll need you to", "wanna", "do you wanna",
                     "you wanna", "why don't you", "why not", "is possible to", "is possible for you to",
                     "hurry", "hurry up", "sorry to bother you", "sorry to trouble you", "sorry to disturb you",
-                    "sorry to bother you but", "sorry to trouble you but", "sorry to disturb you but"]))
+                    "sorry to bother you but", "sorry to trouble you but", "sorry to disturb you but",
+                    "do you mind", "how about", "what about"]))
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
     "when you have a moment", "when you have a minute", "when you have a second", "when you have time",

@@ -2607,3 +2607,14 @@ def test_a_statement_of_someone_somewhere_beside_the_command(
     """"Someone in the kitchen is waving, go and greet them" said "unknown verb 'someone'": a pronoun of people, where
     they are and then a finite verb is a statement, which "them" takes up."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("how about warming up the soup", [("Heat", {"theme": "soup"})]),
+    ("what about shutting the curtains", [("Close", {"theme": "curtain"})]),
+    ("do you mind turning the radio off", [("ToggleOff", {"theme": "radio"})]),
+])
+def test_a_deed_suggested_is_asked_for(text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert_reads(text, want, library)
+    (tell,) = parse_command("what about the dishes?", library).frames       # a question, as before
+    assert tell.frame == "Tell"

@@ -79,11 +79,20 @@ def _adverb_comma(s: State, i: int) -> Match | None:
     return None
 
 
+_VERB_NEXT = frozenset(["to", "about", "mind"])
+"""Last words of politeness that only a verb may follow ("help me *to* ...", "how *about* closing ...", "do you
+*mind* switching ..."): with none after, the words are no politeness."""
+
+
 def _politeness(s: State, i: int) -> Match | None:
     words, low = s.words, s.words[i].lower
     n = match_phrase(words, i, POLITE)
-    if n > 1 and words[i + n - 1].lower == "to" and not s.verb_after(i + n):
-        return None                                   # "help me to the bathroom": "help" is the verb said (words27)
+    k = i + n
+    while k < len(words) and words[k].lower != "to" and is_adverb(words[k].lower):
+        k += 1                                        # "would you mind *terribly* switching off ..."
+    if n > 1 and words[i + n - 1].lower in _VERB_NEXT and not s.verb_after(k):
+        return None                                   # "help me to the bathroom": "help" is the verb said (words27);
+        #   "what about the dishes?": a question, no suggestion of a deed ("what about closing it": words30)
     if n and not (n == 1 and low in ("and", "then") and not s.out and not s.verb_after(i + 1)) and (
             low in ("to", "and", "then") or s.verb_after(i + n) or i + n >= len(words) or not s.verb_at(i)):
         return Match(n, (merge(words, i, n, Tag.POLITE),))
@@ -262,6 +271,8 @@ ADVERB_COMMA = Rule("adverb and comma", _adverb_comma, (
 POLITENESS = Rule("politeness", _politeness, (
     Example("could you please bring me a cup", "could you please", Tag.POLITE),
     Example("robot, go to the kitchen", "robot,", Tag.POLITE),
+    Example("how about closing the window", "how about", Tag.POLITE),
+    Example("do you mind switching the fan on", "do you mind", Tag.POLITE),
 ), None, "politeness words and phrases before the verb (english.POLITE)")
 EMPHATIC_DO = Rule("emphatic do", _emphatic_do, (
     Example("Do take his coat", "Do", Tag.POLITE),
