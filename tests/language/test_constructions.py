@@ -2618,3 +2618,12 @@ def test_a_deed_suggested_is_asked_for(text: str, want: list[tuple[str, dict[str
     assert_reads(text, want, library)
     (tell,) = parse_command("what about the dishes?", library).frames       # a question, as before
     assert tell.frame == "Tell"
+
+
+def test_a_thing_said_to_belong_somewhere_after_a_comma_is_its_own_clause(library: Library) -> None:
+    """"..., the clean ones go in the cupboard" read "the dishwasher, the clean ones" as a list and "go" as a Go of
+    the cupboard: the comma joins a clause of putting."""
+    assert frames("put the big towels on the rail, the small ones go in the basket", library) == [
+        ("Place", {"theme": "towel", "goal": "rail"}), ("Place", {"theme": "towel", "goal": "basket"})]
+    assert frames("put the milk, the eggs and the cheese in the fridge", library) == [
+        ("Place", {"theme": "milk", "goal": "fridge"})]                  # a list, as before

@@ -153,6 +153,7 @@ INSIDE: tuple[Rule, ...] = (
     statements.REMARK_AFTER,
     clauses.COMMA_RELATIVE,
     clauses.VERB_AFTER_JOINT,
+    requests.OBLIGED_AFTER_COMMA,
     clauses.SEPARATOR,
     politeness.TAG_QUESTION,
     politeness.THANKS,

@@ -1064,6 +1064,15 @@ def _obliged(s: State, i: int) -> Match | None:
                  particle=(state, unit) if state is not None else None)
 
 
+def _obliged_after_comma(s: State, i: int) -> Match | None:
+    """"put the dirty cups in the dishwasher*,* the clean ones go in the cupboard": a comma before a thing said to
+    belong somewhere (:func:`_obliged`) joins a clause of its own, not a noun of a list ("the dishwasher, the clean
+    ones" was a list, and "go" a Go of the cupboard, the cups' place lost; words30)."""
+    if s.expect_verb or i + 1 >= len(s.words) or _obliged(s, i + 1) is None:
+        return None
+    return Match(1, (s.words[i].tagged(Tag.SEP),), expect=True)
+
+
 def _obliged_dropped(s: State, i: int) -> Match | None:
     at = next((k for k in range(len(s.out) - 1, -1, -1) if s.out[k].tag == Tag.VERB), -1)
     if at < 0 or at + 1 >= len(s.out) or s.out[at].text or \
@@ -1550,6 +1559,9 @@ SWITCHED_BY_UNKNOWN = Rule("an unknown verb of a thing and on/off", _switched_by
     Example("flick the light on in the bedroom", "flick", Tag.VERB),
     Example("knock the telly off", "knock", Tag.VERB),
 ), lambda low: low.isalpha(), "'flick the light on': a verb no frame lists, a thing and 'on'/'off': switch it so")
+OBLIGED_AFTER_COMMA = Rule("a comma before where a thing should go", _obliged_after_comma, (
+    Example("put the mugs in the sink, the clean ones go in the cupboard", ",", Tag.SEP),
+), frozenset([",", ";"]), "', the plates go in the dishwasher': a clause of its own after the comma")
 OBLIGED_RULE = Rule("where a thing should go", _obliged, (
     Example("the bowl should go in the dishwasher", "", Tag.VERB),
     Example("The milk belongs in the fridge.", "The", Tag.DET),
