@@ -168,8 +168,8 @@ def test_our_sets_of_peoples_wording_score(path: Path, library: Library) -> None
                 for item, parse in zip(items, parse_lines([it["text"] for it in items], library), strict=True)
                 if "error" not in parse)
     # fragments: verbless, unknown verbs (docs/language.md); people16 scored 0.816 after words26 and 0.893 after
-    # words27, people17 0.726 untuned and 0.943 after words27, people18 0.820 untuned and 0.920 after words29: all held
-    # at the others' 0.85
+    # words27, people17 0.726 untuned and 0.943 after words27, people18 0.820 untuned and 0.920 after words29, people19
+    # 0.931 untuned and 0.991 after words30: all held at the others' 0.85
     least = 0.80 if "fragments" in path.name else 0.85
     assert right / len(items) >= least           # measured: 1.000, 0.900, 0.933, 1.000; 0.938, 0.935, 0.986; 0.822
 
