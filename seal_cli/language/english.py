@@ -154,7 +154,9 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                     "i would like for you to", "i'd like for you to", "i want for you to", "i'll need you to",
                     "i will need you to", "we need you to", "we'll need you to", "wanna", "do you wanna",
                     "you wanna", "why don't you", "why not", "is possible to", "is possible for you to",
-                    "hurry", "hurry up"]))
+                    "hurry", "hurry up", "sorry to bother you", "sorry to trouble you", "sorry to disturb you",
+                    "sorry to bother you but", "sorry to trouble you but", "sorry to disturb you but",
+                    "do you mind", "how about", "what about"]))
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
     "when you have a moment", "when you have a minute", "when you have a second", "when you have time",
@@ -165,6 +167,12 @@ POLITE_FORMULAE = frozenset([
     "if you do not mind", "if it's not too much trouble", "if it is not too much trouble", "if you wouldn't mind",
     "if you would not mind", "at your convenience", "when convenient", "when it's convenient", "no rush",
     "no hurry"])
+AS_ABLE = frozenset(["possible", "you can", "you could", "you're able", "you are able", "you can manage",
+                     "you're able to", "you are able to", "you can do it"])
+"""What ends "as fast *as you can*", "as gently *as possible*" (``politeness.AS_ABLE_RULE``): the manner said at the
+most the robot can; with a quantity between ("as much as you can") it is no manner but a thing."""
+AS_ABLE_NOT_MANNER = frozenset(["much", "many", "few", "little", "far"])
+"""Words between "as" and "as" that measure a thing or a way, not a manner ("bring *as many as* you can")."""
 """Politeness said as a clause of its own ("*when you get a chance*, could you ..."; "... *if you don't
 mind*"): the robot's time is asked for, not a condition or a task. Only a whole clause: "if you can"
 followed by more of its clause ("if you can reach the shelf, ...") is a condition."""
@@ -175,7 +183,8 @@ SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "tha
              "isnt": "isn't", "arent": "aren't", "wasnt": "wasn't", "havent": "haven't", "couldnt": "couldn't",
              "wouldnt": "wouldn't", "shouldnt": "shouldn't", "shes": "she's", "hes": "he's", "whats": "what's",
              "theres": "there's", "wont": "won't", "cant": "can't", "wheres": "where's", "hows": "how's",
-             "ill": "i'll", "id": "i'd", "youll": "you'll", "weve": "we've", "theyve": "they've", "itll": "it'll"}
+             "ill": "i'll", "id": "i'd", "youll": "you'll", "weve": "we've", "theyve": "they've", "itll": "it'll",
+             "frm": "from", "thru": "through", "abt": "about"}
 """Texting spellings of function words ("turn the lights off *pls*", "open it *n* wipe it", "where *r* my keys",
 "tell her *im* late"): read as the word they spell."""
 SEEN_QUESTIONS = frozenset(["see", "you see", "do you see", "you spot", "do you spot", "notice",
@@ -358,11 +367,21 @@ REQUESTS = frozenset(["i'd like", "i would like", "i should like", "i'd love", "
                       "i'd really love", "i really need", "i just need", "need", "i am wanting", "i'm wanting",
                       "i am needing", "i'm needing", "we are needing", "we're needing",
                       *(f"{modal} i {bother} you for" for modal in ("could", "can", "may", "might")
-                        for bother in ("trouble", "bother"))])
+                        for bother in ("trouble", "bother")),
+                      "we'd love", "we would love", "i wouldn't mind", "i would not mind", "we wouldn't mind",
+                      "we would not mind",
+                      "i fancy", "i'd fancy", "i would fancy", "i quite fancy", "i'd quite fancy", "i really fancy",
+                      *(f"{modal} {who} {adverb} {verb}" for modal in ("can", "could", "may") for who in ("i", "we")
+                        for adverb in ("possibly", "just", "please just") for verb in ("have", "get")),
+                      *(f"{chance} {wish}" for chance in ("any chance", "is there any chance", "is there a chance")
+                        for wish in ("of", "i could have", "i can have", "i could get", "i can get", "we could have",
+                                     "we can have"))])
 """A request for a thing said as the speaker's wish ("*I'd like* the red mug", "*Can I have* the big plate",
 "*I need* a pen", "*I could do with* a towel"): it means "bring me ..." (``REQUEST_MEANS``, with the speaker as
 recipient). Asked as a trouble to the hearer, a thing after "for" ("*might I trouble you for* a glass of water",
-words26), as politeness asks a deed after "to" ("could I trouble you to ...")."""
+words26), as politeness asks a deed after "to" ("could I trouble you to ..."). A wish said as not minding ("*I
+wouldn't mind* a biscuit") or as a chance asked ("*any chance I could have* a cushion?", "*any chance of* a cup of
+tea?") is one too, and so are "I fancy X", and "could I possibly have X" (words30)."""
 REQUEST_MEANS = "bring"
 WISHED_PLACED = frozenset(["i want", "i'd like", "i would like", "we want", "we'd like", "we would like"])
 WISHED_PLACES = frozenset(["on", "onto", "in", "into", "inside", "under"])

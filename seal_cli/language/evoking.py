@@ -175,7 +175,10 @@ class Evoker:
                 or any("instrument" in self.types.roles(f) for f in frames):
             return None
         company = next((x for x in clause.items if isinstance(x, PP) and x.prep == "with" and not x.lead and
-                        self.roles.kind(x.np, None, None) == "person"), None)
+                        (self.roles.kind(x.np, None, None) == "person" or
+                         x.np.pronoun == "them" and self.roles.kind(x.np, None, None) == "pronoun")), None)
+        #   "go with *them*": no thing said before that they could be, so the people (words30: "with them" was
+        #   dropped, a bare Go)
         if company is None:
             return None
         together = [f for f in self.library.frames if f.elements and self.types.is_person(f.elements[0].type)

@@ -185,7 +185,12 @@ class Lexicon:
             base = verb_lemma(first) if first.isalpha() else None
             candidates = self.units.get(base) if base and base != first else None
             if not candidates:
-                return self.again(words, i) or self.mistyped(words, i, stop)
+                return self.again(words, i) or self.mistyped(words, i, stop) or self.written_together(words, i)
+        if i + 2 < len(words) and words[i + 1].lower == "of" and (words[i + 2].lower in NP_OPENERS or
+                                                                 words[i + 2].lower in OBJECT_PRONOUNS):
+            off = self.typed_of(candidates)
+            if off and off.split()[0] == first:  # the base form, said to the robot ("left of the sink": where)
+                return off, 2, None              # "turn *of* the kettle": "off" typed with one "f" (words30)
         for unit in candidates:
             n = len(unit)
             if i + n <= len(words) and all(words[i + k].lower == unit[k] for k in range(1, n)):
@@ -204,6 +209,29 @@ class Lexicon:
         if all(len(unit) == 1 and unit[0] in self.opening for unit in candidates):
             return self.again(words, i)          # "reposition two clocks": no object opener, so "re" + "position"
         return None
+
+    def written_together(self, words: Sequence[Word], i: int) -> tuple[str, int, None] | None:
+        """A unit of a verb and its particle written as one word ("*turnoff* the lights", "*pickup* the toys":
+        "turn off", "pick up"), where only a verb can stand (:func:`opens_before_object`: a clause's start, before
+        its object); elsewhere the word is the noun it also is ("a *pickup*", "what a *turnoff*"). words30."""
+        unit = self._joined.get(words[i].lower)
+        return (unit, 1, None) if unit is not None and opens_before_object(words, i) else None
+
+    @cached_property
+    def _joined(self) -> dict[str, str]:
+        """Each unit of two words (a verb and its particle) written together → the unit."""
+        return {"".join(unit): " ".join(unit) for units in self.units.values() for unit in units
+                if len(unit) == 2 and unit[1] in PARTICLES}
+
+    @staticmethod
+    def typed_of(candidates: Iterable[tuple[str, ...]]) -> str | None:
+        """The unit "V off" a verb said with "of" before its object stands for ("turn *of* the kettle", "switch
+        *of* the lights": "off" typed with one "f"): no verb of the library takes "of" right after it, so "V of"
+        and a noun phrase is no English but the slip; None when the verb has no such unit or one with "of"."""
+        units = tuple(candidates)
+        if any(len(unit) == 2 and unit[1] == "of" for unit in units):
+            return None
+        return next((" ".join(unit) for unit in units if len(unit) == 2 and unit[1] == "off"), None)
 
     def again(self, words: Sequence[Word], i: int) -> tuple[str, int, None] | None:
         """A verb said with the prefix *re-* ("again") that the library lacks is the verb it repeats: "re

@@ -21,6 +21,7 @@ from seal_cli.language.english import (
     CLOCK_PREPOSITIONS,
     CLOCK_WORDS,
     CONTRACTED,
+    CORRECTION_MARKS,
     DETERMINERS,
     END_MARKS,
     FILLERS,
@@ -267,15 +268,27 @@ def _its_is_it_is(words: Sequence[Word], k: int) -> bool:
     return is_adjective(nxt) and (not after.isalpha() or after in CLOSED or after in SEPARATOR_WORDS)
 
 
+_PLACED_SUBJECTS = frozenset(["someone", "somebody", "everyone", "everybody", "nobody", "anyone", "anybody"])
+"""Pronouns of people that may be said with where they are before their verb ("*someone in the kitchen* is
+waving"): the phrase of place is the subject's, so the statement's verb comes after it (words30)."""
+
+
 def _without_fillers(words: list[Word]) -> list[Word]:
     """The words without hesitations ("um", "uh", ...) and the comma after one ("and, *um,* put it on the
-    bed"): they say nothing, so "and then, um, chill it" is "and then, chill it"."""
+    bed"): they say nothing, so "and then, um, chill it" is "and then, chill it". A hesitation between a phrase and
+    the marks of a correction and its new phrase is the pause a comma writes ("take the bins out *er* I mean the
+    recycling": ", I mean the recycling"; words30)."""
     if not any(w.lower in FILLERS for w in words):
         return words
     kept: list[Word] = []
     skip_comma = False
-    for w in words:
+    for at, w in enumerate(words):
         if w.lower in FILLERS:
+            n = longest_phrase(words, at + 1, CORRECTION_MARKS)
+            if n and kept and kept[-1].lower != "," and at + 1 + n < len(words) and \
+                    words[at + 1 + n].lower in NP_OPENERS and words[at + n].lower not in ("no", "wait", "sorry"):
+                #   ("um no the mug": "no" may be the phrase's determiner, as in ", no sugar")
+                kept.append(Word(",", w.start, w.end))
             skip_comma = True
             continue
         if not (skip_comma and w.lower == ","):
@@ -484,6 +497,11 @@ class State:
         if "'" in first and first.split("'")[0] in SUBJECTS | {"you", "who", "what", "here"} and \
                 "'" + first.split("'", 1)[1] in CONTRACTED:
             return end                                        # "we're eating in ten", "i'll be right there"
+        if first in _PLACED_SUBJECTS and nxt in LOCATIVE and self.np_starts(i + 2):
+            k = i + 2                                         # "*someone in the kitchen is* waving, greet them"
+            while k < end and words[k].lower not in FINITE and self.verb_at(k) is None:
+                k += 1
+            return end if k < end and words[k].lower in FINITE else 0
         if first in SUBJECTS or first == "you" and nxt not in ("can", "could", "will", "would", "should", "must"):
             return end if nxt in FINITE or nxt in CONTRACTED or self.finite_form(i + 1, end) or \
                 first in THIRD_PERSON_SUBJECTS and inflected(nxt) else 0     # "he *likes* company", "it *smells* like"
@@ -1020,7 +1038,9 @@ class State:
     def run_on_condition(self, j: int, end: int) -> int | None:
         """Where the command starts inside a condition said first with no comma ("when Sam comes home *give* him
         his keys", "if the kettle has boiled *pour* the water"): after a finite verb of the condition (one that
-        is not its own lemma: "comes", "has"), a verb of the library in its base form, not after a determiner,
+        is not its own lemma: "comes", "has"; or a base form after a subject: "when guests *arrive*"; never the
+        condition's first word or one after a determiner: "the *guests*" is its subject, words30), a verb of the
+        library in its base form, not after a determiner,
         "to", a modal or "and", with an object, a particle or nothing after it; None when there is none (dictated
         speech drops the comma: words29)."""
         words = self.words
@@ -1029,8 +1049,10 @@ class State:
             low = words[k].lower
             lemma = verb_lemma(low)
             if not finite:
-                finite = lemma is not None and lemma != low and low not in NP_OPENERS or low in BE_WORDS
-                continue
+                finite = lemma is not None and low not in NP_OPENERS and k > j and \
+                    words[k - 1].lower not in NP_OPENERS and words[k - 1].lower not in MODALS and \
+                    words[k - 1].lower != "to" or low in BE_WORDS
+                continue            # "before *the guests* arrive", "when *guests* arrive": the subject (words30)
             before = words[k - 1].lower
             if before in NP_OPENERS or before in MODALS or before in BE_WORDS or \
                     before in ("to", "and", "or", "not", "'s"):     # "if the door is *open*": its state

@@ -168,8 +168,8 @@ def test_our_sets_of_peoples_wording_score(path: Path, library: Library) -> None
                 for item, parse in zip(items, parse_lines([it["text"] for it in items], library), strict=True)
                 if "error" not in parse)
     # fragments: verbless, unknown verbs (docs/language.md); people16 scored 0.816 after words26 and 0.893 after
-    # words27, people17 0.726 untuned and 0.943 after words27, people18 0.820 untuned and 0.920 after words29: all held
-    # at the others' 0.85
+    # words27, people17 0.726 untuned and 0.943 after words27, people18 0.820 untuned and 0.920 after words29, people19
+    # 0.931 untuned and 0.991 after words30: all held at the others' 0.85
     least = 0.80 if "fragments" in path.name else 0.85
     assert right / len(items) >= least           # measured: 1.000, 0.900, 0.933, 1.000; 0.938, 0.935, 0.986; 0.822
 
@@ -2437,3 +2437,193 @@ def test_and_another_person_too_is_the_clause_again_for_them(
     """"bring Anna a towel and Ben too" carried Ben as a second thing; a person after "and", then "too", after a
     clause that gives a thing to a person, is the same clause for that person."""
     assert_reads(text, want, library)
+
+
+# -- words30 ---------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("give me the book Tom lent you", [("Give", {"theme": "book", "recipient": "me"})]),
+    ("answer the question Ella asked", [("Answer", {"theme": "question"})]),
+    ("put the plate Anna used in the sink", [("Place", {"theme": "plate", "goal": "sink"})]),
+])
+def test_a_relative_clause_of_a_name_without_that_describes_the_noun(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """"give me the book Tom lent you" was Give of the noun "lent", the rest dropped without a word: a name and a
+    verb's past form after a noun are a relative clause, as "the book I left" is."""
+    assert_reads(text, want, library)
+    assert parse_command("give me the book Tom lent you", library).frames[0].elements["theme"].relative == \
+        "Tom lent you"
+
+
+@pytest.mark.parametrize(("text", "thing"), [
+    ("I wouldn't mind a biscuit", "biscuit"),
+    ("we would not mind some cake", "cake"),
+    ("any chance of a cup of tea?", "cup"),
+    ("is there any chance I could have a pillow", "pillow"),
+    ("any chance I can get a blanket?", "blanket"),
+])
+def test_a_wish_said_as_not_minding_or_as_a_chance_asks_for_the_thing(text: str, thing: str,
+                                                                      library: Library) -> None:
+    """"is there any chance I could get a blanket" was a search for "chance"; "I wouldn't mind a biscuit" a
+    statement refused."""
+    assert frames(text, library) == [("Bring", {"theme": thing, "recipient": "me"})]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("get to the hall as fast as you can", [("Go", {"goal": "hall"})]),
+    ("shut the gate as quietly as possible, then come back", [("Close", {"theme": "gate"}), ("Go", {})]),
+    ("bring me as many cups as you can", None),                     # a quantity, not a manner: still refused
+])
+def test_as_fast_as_you_can_is_a_manner(text: str, want: list[tuple[str, dict[str, str]]] | None,
+                                        library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize("text", ["sorry to bother you, but can you switch the fan on",
+                                  "sorry to trouble you but could you switch on the fan"])
+def test_an_apology_for_the_trouble_is_politeness(text: str, library: Library) -> None:
+    assert frames(text, library) == [("ToggleOn", {"theme": "fan"})]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("warm the plates before the guests arrive", [("Heat", {"theme": "plate"})]),
+    ("when visitors arrive greet them", [("Greet", {"theme": "them"})]),          # was an error at "greet"
+    ("when Sam comes home give him his keys", [("Give", {"theme": "key", "recipient": "Sam"})]),   # as before
+])
+def test_a_condition_whose_subject_is_a_plural_noun(text: str, want: list[tuple[str, dict[str, str]]],
+                                                    library: Library) -> None:
+    """"chill the wine before the guests arrive" said "unknown verb 'arrive'": "guests" (a form of the verb "to
+    guest") was read as the condition's finite verb, so "arrive" started the command; the word after a determiner,
+    or the condition's first, is its subject."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("turn of the kettle", [("ToggleOff", {"theme": "kettle"})]),
+    ("please switch of the lamp in the hall", [("ToggleOff", {"theme": "lamp"})]),
+    ("bring me a bowl of soup", [("Bring", {"theme": "bowl", "recipient": "me"})]),
+])
+def test_off_typed_with_one_f_before_the_object(text: str, want: list[tuple[str, dict[str, str]]],
+                                                library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("is there still some soup in the pot?", [("Find", {"theme": "soup", "ground": "pot"})]),
+    ("are there still three eggs in the box", [("Find", {"theme": "egg", "ground": "box"})]),
+    ("bring just the green cup", [("Bring", {"theme": "cup"})]),
+])
+def test_an_adverb_between_the_verb_and_its_object_is_no_thing(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """"is there still some juice in the carton?" sought "still", the juice dropped."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("I'd quite fancy a mug of cocoa", [("Bring", {"theme": "mug", "recipient": "me"})]),
+    ("could I possibly have a napkin", [("Bring", {"theme": "napkin", "recipient": "me"})]),
+])
+def test_more_wishes_for_a_thing(text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+def test_from_written_as_texting_does(library: Library) -> None:
+    """"grab me a drink *frm* the fridge" was Pick of "a drink frm", the fridge and the speaker dropped."""
+    assert frames("can u grab me a juice frm the fridge", library) == [
+        ("Bring", {"theme": "juice", "recipient": "me", "source": "fridge"})]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("open the gate let the dog in", None),                  # "let": no frame; was Open of "the gate let"
+    ("go to the study to help me", [("Go", {"goal": "study"})]),   # was the goal "the study to help", "me" dropped
+    ("check the door lock", [("LookAt", {"theme": "lock"})]),       # a noun, as before
+])
+def test_an_unknown_verb_before_its_object_is_a_clause_of_its_own(
+        text: str, want: list[tuple[str, dict[str, str]]] | None, library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+def test_back_in_there_is_back_and_there(library: Library) -> None:
+    parse = parse_command("open the cupboard and put the mugs back in there", library)
+    goal = parse.frames[1].elements["goal"]
+    assert goal.text == "in there" and goal.refers_to == (0, "theme")
+
+
+def test_a_hesitation_before_a_correction_is_its_comma(library: Library) -> None:
+    assert frames("put it on the shelf uh I mean the desk", library) == [("Place", {"theme": "it", "goal": "desk"})]
+    assert frames("bring me the cup um no the mug", library) == [("Bring", {"theme": "cup", "recipient": "me"})]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("is anybody downstairs?", [("Find", {"theme": "anybody", "ground": "downstairs"})]),
+    ("is the dog outdoors", [("Find", {"theme": "dog", "ground": "outdoors"})]),
+])
+def test_whether_someone_is_upstairs_asks_to_find_them_there(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("switchoff the radio", [("ToggleOff", {"theme": "radio"})]),
+    ("please pickup the socks", [("Pick", {"theme": "sock"})]),
+    ("bring me the pickup", [("Bring", {"theme": "pickup", "recipient": "me"})]),    # a noun where a noun stands
+])
+def test_a_verb_and_its_particle_written_together(text: str, want: list[tuple[str, dict[str, str]]],
+                                                  library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("bring in the shopping", [("Bring", {"theme": "shopping"})]),       # was Guide from "the shopping"
+    ("bring in the bins from the drive", [("Bring", {"theme": "bin", "source": "drive"})]),
+    ("please hand in this letter", [("Give", {"theme": "letter"})]),
+    ("put in the fridge", [("Place", {"goal": "fridge"})]),            # no verb that hands: a place, as before
+])
+def test_in_between_a_verb_that_hands_and_its_object_is_a_particle(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("the visitors have arrived, go with them to the hall", [("Guide", {"theme": "visitor", "goal": "hall"})]),
+    ("walk with them", [("Follow", {"theme": "them"})]),
+    ("pick up the boxes and go with them to the car", [("Pick", {"theme": "box"}), ("Go", {"goal": "car"})]),
+])
+def test_going_with_them_is_going_with_people(text: str, want: list[tuple[str, dict[str, str]]],
+                                              library: Library) -> None:
+    """"go with them" was a bare Go, "with them" dropped without a word; with no thing said before, "them" are the
+    people gone with; things said before are carried (as before)."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("somebody in the garden is shouting, go and find them", [("Find", {"theme": "somebody", "ground": "garden"})]),
+    ("someone at the gate wants to come in, meet them", [("Meet", {"theme": "someone", "ground": "gate"})]),
+    ("anyone in the hall?", [("Find", {"theme": "anyone", "ground": "hall"})]),                    # as before
+])
+def test_a_statement_of_someone_somewhere_beside_the_command(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """"Someone in the kitchen is waving, go and greet them" said "unknown verb 'someone'": a pronoun of people, where
+    they are and then a finite verb is a statement, which "them" takes up."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("how about warming up the soup", [("Heat", {"theme": "soup"})]),
+    ("what about shutting the curtains", [("Close", {"theme": "curtain"})]),
+    ("do you mind turning the radio off", [("ToggleOff", {"theme": "radio"})]),
+])
+def test_a_deed_suggested_is_asked_for(text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert_reads(text, want, library)
+    (tell,) = parse_command("what about the dishes?", library).frames       # a question, as before
+    assert tell.frame == "Tell"
+
+
+def test_a_thing_said_to_belong_somewhere_after_a_comma_is_its_own_clause(library: Library) -> None:
+    """"..., the clean ones go in the cupboard" read "the dishwasher, the clean ones" as a list and "go" as a Go of
+    the cupboard: the comma joins a clause of putting."""
+    assert frames("put the big towels on the rail, the small ones go in the basket", library) == [
+        ("Place", {"theme": "towel", "goal": "rail"}), ("Place", {"theme": "towel", "goal": "basket"})]
+    assert frames("put the milk, the eggs and the cheese in the fridge", library) == [
+        ("Place", {"theme": "milk", "goal": "fridge"})]                  # a list, as before

@@ -17,7 +17,14 @@ from seal_cli.language.english import (
     VERB_JOINTS,
     VERB_TAKES,
 )
-from seal_cli.language.morphology import in_verb_tables, is_adjective, noun_lemma, parts_of_speech, verb_lemma
+from seal_cli.language.morphology import (
+    in_verb_tables,
+    is_adjective,
+    noun_lemma,
+    participles,
+    parts_of_speech,
+    verb_lemma,
+)
 from seal_cli.language.rule import AFTER_SEP, Example, Match, Rule
 from seal_cli.language.state import (
     CLOSED,
@@ -108,6 +115,23 @@ def _relative(s: State, i: int) -> Match | None:
     return Match(m.consumed, m.words, expect=AFTER_SEP) if m else None
 
 
+def _contact_relative(s: State, i: int) -> Match | None:
+    """A relative clause with no "that" whose subject is a name ("the book *Tom lent you*", "the question *Ella
+    asked*", "the cup *Sam put on the shelf*"): after a common noun, a capitalised word that is no word of the
+    library's things, then a verb in its past form (none is the base form of an imperative, so no clause starts
+    there). Kept whole as one ``REL`` word the noun keeps, as "the book *I left on the sofa*" is; it used to be
+    read as the noun "lent", the rest dropped."""
+    words, w = s.words, s.words[i]
+    if s.prev_tag() != Tag.WORD or not capitalised(w) or i + 1 >= len(words) or w.lower in s.lexicon.things:
+        return None
+    verb = words[i + 1].lower
+    lemma = verb_lemma(verb)
+    if not lemma or verb.endswith("ing") or verb not in participles(lemma):
+        return None
+    end = s.relative_end(i + 1)
+    return s.emit(i, end - i, Tag.REL) if end > i + 1 else None
+
+
 def _partitive_of(s: State, i: int) -> Match | None:
     out = s.out
     if not out or s.verb_index != len(out) - 1 or out[-1].tag != Tag.VERB or \
@@ -189,6 +213,12 @@ RELATIVE = Rule("relative clause", _relative, (
     Example("bring me the cup that has a chip", "that has a chip", Tag.REL),
 ), SUB_FIRST | REL_FIRST, "a relative clause after a noun, kept whole (or 'that is' dropped; 'that has X in it': "
    "'with X in it')")
+CONTACT_RELATIVE = Rule("relative clause of a name, no that", _contact_relative, (
+    Example("give me the book Tom lent you", "Tom lent you", Tag.REL),
+    Example("answer the question Ella asked", "Ella asked", Tag.REL),
+    Example("bring me the mug Sam left on the sofa", "Sam left", Tag.REL),
+), lambda low: low.isalpha() and low not in CLOSED, "a name and a past verb after a noun: a relative clause "
+   "without 'that'")
 COMMA_RELATIVE = Rule("relative clause after a comma", _comma_relative, (
     Example("take it to Adel, who's in the bathroom.", "who 's", Tag.REL),
     Example("give the cup to the man, who is sitting on the sofa", "sitting", Tag.VBG_P),
@@ -322,7 +352,7 @@ def _unknown_unjoined(s: State, i: int) -> Match | None:
             return Match(0, (Word("", words[i].start, words[i].start, Tag.SEP),), expect=True)
         return None             # "go *round* the corner": an adverb or adjective too, a path
     if s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL, Tag.PARTICLE, Tag.HERE) or \
-            not to and words[i + 1].lower not in _NO_NOUN_AFTER:
+            not to and not _unknown_before_object(words[i].lower, words[i + 1].lower):
         return None
     k = i + 1 if to else i
     if k + 1 >= len(words):
@@ -331,14 +361,26 @@ def _unknown_unjoined(s: State, i: int) -> Match | None:
     if verb_lemma(verb) != verb or verb in s.lexicon.units or verb in CLOSED or verb in s.lexicon.things or \
             to and capitalised(words[k]):
         return None                       # "a blanket to *Grace* in the lounge": a capital after "to" is a name
-    if to and not (nxt.lower in PARTICLES or nxt.lower in NP_OPENERS or
+    if to and not (nxt.lower in PARTICLES or nxt.lower in NP_OPENERS or nxt.lower in _SPEAKER_OBJECTS or
                    nxt.lower in _NO_NOUN_AFTER or capitalised(nxt) and nxt.lower not in CLOSED):
-        return None
-    if not to and nxt.lower not in _NO_NOUN_AFTER:
-        return None
+        return None                       # "come to the kitchen *to help me*" (words30: the goal was "the kitchen
+        #                                   to help", "me" dropped)
     if to:
         return Match(1, (words[i].tagged(Tag.SEP),), expect=True)
     return Match(0, (Word("", words[i].start, words[i].start, Tag.SEP),), expect=True)
+
+
+def _unknown_before_object(verb: str, nxt: str) -> bool:
+    """Whether a word no frame lists, after a phrase, is a verb before its object: an object pronoun follows ("grab
+    the towel *fold it*"), or a determiner follows a word English uses as a verb only or mostly (``parts_of_speech``,
+    ``mostly_verb``: "open the door *let the* cat out" was Open of "the door let", the clause dropped; words30).
+    "the door *handle the* ..." would take a noun that is mostly one."""
+    if nxt in _NO_NOUN_AFTER:
+        return True
+    return nxt in NP_OPENERS and (parts_of_speech(verb) == _VERB_ONLY or mostly_verb(verb))
+
+
+_VERB_ONLY = frozenset(["verb"])
 
 
 def _particle_verb(s: State, j: int) -> bool:
@@ -419,4 +461,6 @@ UNKNOWN_UNJOINED = Rule("unknown verb without a joint", _unknown_unjoined, (
     Example("the person in the hall needs help, go see them", "see", Tag.WORD),
     Example("come help me", "help", Tag.WORD),
     Example("go feed the cat", "feed", Tag.WORD),
+    Example("open the door let the cat out", "let", Tag.WORD),
+    Example("come to the kitchen to help me", "to", Tag.SEP),
 ), None, "a verb no frame lists before its object, after a phrase: a clause of its own")

@@ -28,6 +28,7 @@ from seal_cli.language.english import (
     WH_WORDS,
 )
 from seal_cli.language.morphology import noun_lemma
+from seal_cli.language.premises import is_premises
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import TIME_FIRST, State, first_words, match_phrase
 from seal_cli.language.tags import Tag
@@ -225,6 +226,24 @@ def _place_word_after_from(s: State, i: int) -> Match | None:
 _PLACE_WORDS = frozenset(w for w in HERE_WORDS if " " not in w and w not in ("here", "there"))
 
 
+def _particle_before_object(s: State, i: int) -> Match | None:
+    """"bring *in* the washing", "hand *in* the form": "in" right after a verb that hands a thing to someone (a unit of
+    a frame with a recipient, no verb of saying) and before its object is the verb's particle, as "bring the washing
+    *in*" says it (it was a Guide from the washing, "take in" aside; words30). Only before a determiner or a
+    possessive: "put in the fridge" (no such verb) keeps its place."""
+    if s.prev_tag() != Tag.VERB or s.verb_index != len(s.out) - 1 or i + 1 >= len(s.words):
+        return None
+    unit = str(s.out[-1].info)
+    if unit not in s.lexicon.recipients or unit in s.lexicon.speech or " " in unit or \
+            s.words[i + 1].lower not in NP_OPENERS:
+        return None
+    end = s.clause_end(i + 1)
+    end = next((k for k in range(i + 2, end) if s.words[k].lower in PREPOSITIONS), end)
+    if any(is_premises(noun_lemma(w.lower) or w.lower) for w in s.words[i + 2:end]):
+        return None                 # "bring (it) in the kitchen": a place, where it goes
+    return s.emit(i, 1, Tag.PARTICLE, "in")
+
+
 def _preposition(s: State, i: int) -> Match | None:
     if s.in_np():
         return None
@@ -232,6 +251,8 @@ def _preposition(s: State, i: int) -> Match | None:
     n = match_phrase(words, i, PREPOSITIONS)
     if not n:
         return None
+    if n > 1 and match_phrase(words, i + n - 1, HERE_WORDS) == 2:
+        return s.emit(i, n - 1, Tag.PARTICLE, words[i].lower)    # "put them *back* in there": "in there" a place
     prep = PREPOSITIONS[" ".join(x.lower for x in words[i:i + n])]
     has_object = s.np_starts(i + n) or i + n < len(words) and words[i + n].lower in ("here", "there")
     if not has_object and prep == "outside":
@@ -435,7 +456,12 @@ OUT_OF_THE_HOUSE = Rule("a person seen out", _seen_out, (
     Example("show the guest out please", "out", Tag.HERE),
     Example("guide the lady waving in the kitchen out", "out", Tag.HERE),
 ), frozenset([SEEN_OUT[0]]), "'out' after the person a verb of leading takes, ending the clause: to the exit")
+PARTICLE_BEFORE_OBJECT = Rule("in before the object", _particle_before_object, (
+    Example("bring in the washing", "in", Tag.PARTICLE),
+    Example("could you hand in my form", "in", Tag.PARTICLE),
+), frozenset(["in"]), "'bring in the washing': the verb's particle before its object, the clause naming no place")
 PREPOSITION = Rule("preposition", _preposition, (
+    Example("put the plates back in there", "back", Tag.PARTICLE),
     Example("put the cup on top of the fridge", "on top of", Tag.PREP),
     Example("take the trash bag outside", "outside", Tag.HERE),
 ), _PREP_FIRST, "a preposition with its object, else a particle")

@@ -3,7 +3,16 @@ other word (a noun or an adjective). Nothing here lists a word."""
 
 from __future__ import annotations
 
-from seal_cli.language.english import LOCATIVE, PARTICLES, PREPOSITIONS, STATE_ADVERBS, TITLES_ONLY
+from seal_cli.language.english import (
+    FREQUENCY_ADVERBS,
+    LOCATIVE,
+    NP_OPENERS,
+    NUMBERS,
+    PARTICLES,
+    PREPOSITIONS,
+    STATE_ADVERBS,
+    TITLES_ONLY,
+)
 from seal_cli.language.morphology import (
     adverb_no_noun,
     gerund_lemma,
@@ -88,6 +97,21 @@ def _adverb(s: State, i: int) -> Match | None:
     if not s.in_np() and low.isalpha() and is_adverb(low) and s.prev_tag() != Tag.DET:
         return s.emit(i, 1, Tag.PARTICLE)                         # "gather together", "put it carefully on ..."
     return None
+
+
+_BEFORE_OBJECT = (STATE_ADVERBS | FREQUENCY_ADVERBS) - {"not", "all", "now"}
+
+
+def _adverb_before_object(s: State, i: int) -> Match | None:
+    """An adverb of time or degree between the verb and its object's first word ("is there *still* some juice in
+    the carton?", "is there *even* any milk?", "bring *just* the red cup"): how or since when, no part of the
+    thing (it was the theme "still", the juice dropped; words30)."""
+    if s.prev_tag() != Tag.VERB or i + 1 >= len(s.words):
+        return None
+    nxt = s.words[i + 1].lower
+    if nxt not in NP_OPENERS and nxt not in NUMBERS and not nxt.isdigit():
+        return None
+    return s.emit(i, 1, Tag.PARTICLE)
 
 
 def _adverb_of_place(s: State, i: int) -> Match | None:
@@ -201,6 +225,10 @@ RESULT = Rule("result word", _result, (
 ADVERB = Rule("adverb", _adverb, (
     Example("put it carefully on the shelf", "carefully", Tag.PARTICLE),
 ), lambda low: low.isalpha() and is_adverb(low), "an adverb inside the clause")
+ADVERB_BEFORE_OBJECT = Rule("adverb before the object", _adverb_before_object, (
+    Example("is there still some juice in the carton?", "still", Tag.PARTICLE),
+    Example("bring just the red cup", "just", Tag.PARTICLE),
+), _BEFORE_OBJECT, "'still', 'even', 'just' between the verb and its object's determiner: an adverb")
 ADVERB_OF_PLACE = Rule("adverb of place", _adverb_of_place, (
     Example("place the pen on the shelf just below the keys", "just", Tag.PARTICLE),
     Example("put the mug in the cabinet just above the sink", "just", Tag.PARTICLE),

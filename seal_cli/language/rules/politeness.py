@@ -4,6 +4,8 @@
 from __future__ import annotations
 
 from seal_cli.language.english import (
+    AS_ABLE,
+    AS_ABLE_NOT_MANNER,
     ASKED_AGAIN,
     END_MARKS,
     GREETINGS,
@@ -17,7 +19,14 @@ from seal_cli.language.english import (
     TAG_QUESTIONS,
     WHERE_MEANS,
 )
-from seal_cli.language.morphology import in_verb_tables, is_adverb, noun_lemma, parts_of_speech, verb_lemma
+from seal_cli.language.morphology import (
+    in_verb_tables,
+    is_adjective,
+    is_adverb,
+    noun_lemma,
+    parts_of_speech,
+    verb_lemma,
+)
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import CLOSED, FORMULA_FIRST, State, longest_phrase, match_phrase, merge
 from seal_cli.language.tags import Tag
@@ -70,11 +79,20 @@ def _adverb_comma(s: State, i: int) -> Match | None:
     return None
 
 
+_VERB_NEXT = frozenset(["to", "about", "mind"])
+"""Last words of politeness that only a verb may follow ("help me *to* ...", "how *about* closing ...", "do you
+*mind* switching ..."): with none after, the words are no politeness."""
+
+
 def _politeness(s: State, i: int) -> Match | None:
     words, low = s.words, s.words[i].lower
     n = match_phrase(words, i, POLITE)
-    if n > 1 and words[i + n - 1].lower == "to" and not s.verb_after(i + n):
-        return None                                   # "help me to the bathroom": "help" is the verb said (words27)
+    k = i + n
+    while k < len(words) and words[k].lower != "to" and is_adverb(words[k].lower):
+        k += 1                                        # "would you mind *terribly* switching off ..."
+    if n > 1 and words[i + n - 1].lower in _VERB_NEXT and not s.verb_after(k):
+        return None                                   # "help me to the bathroom": "help" is the verb said (words27);
+        #   "what about the dishes?": a question, no suggestion of a deed ("what about closing it": words30)
     if n and not (n == 1 and low in ("and", "then") and not s.out and not s.verb_after(i + 1)) and (
             low in ("to", "and", "then") or s.verb_after(i + n) or i + n >= len(words) or not s.verb_at(i)):
         return Match(n, (merge(words, i, n, Tag.POLITE),))
@@ -198,6 +216,24 @@ def _please_inside(s: State, i: int) -> Match | None:
     # "bring me, please, a glass of juice": politeness inside the clause
 
 
+def _as_able(s: State, i: int) -> Match | None:
+    """"get to the kitchen *as fast as you can*", "close it *as gently as possible*": "as", one adverb or adjective of
+    manner, "as" and what the robot can (``english.AS_ABLE``), ending the clause: how, no thing and no clause (it was
+    "as you" read as a joint and "can" an unknown verb). One adverb, as "quickly" is (``PARTICLE``)."""
+    words = s.words
+    if s.expect_verb or i + 3 >= len(words) or words[i + 2].lower != "as":
+        return None
+    low = words[i + 1].lower
+    if low in AS_ABLE_NOT_MANNER or not low.isalpha() or not (is_adverb(low) or is_adjective(low)):
+        return None
+    n = _said(s, i + 3, AS_ABLE)
+    k = i + 3 + n
+    if not n or k < len(words) and words[k].lower not in END_MARKS and words[k].lower not in (",", ";", "and",
+                                                                                                "then", "please"):
+        return None
+    return s.emit(i, k - i, Tag.PARTICLE)
+
+
 def _thanks(s: State, i: int) -> Match | None:
     words = s.words
     k = i + 1
@@ -235,6 +271,8 @@ ADVERB_COMMA = Rule("adverb and comma", _adverb_comma, (
 POLITENESS = Rule("politeness", _politeness, (
     Example("could you please bring me a cup", "could you please", Tag.POLITE),
     Example("robot, go to the kitchen", "robot,", Tag.POLITE),
+    Example("how about closing the window", "how about", Tag.POLITE),
+    Example("do you mind switching the fan on", "do you mind", Tag.POLITE),
 ), None, "politeness words and phrases before the verb (english.POLITE)")
 EMPHATIC_DO = Rule("emphatic do", _emphatic_do, (
     Example("Do take his coat", "Do", Tag.POLITE),
@@ -264,6 +302,10 @@ PLEASE_INSIDE = Rule("please inside a clause", _please_inside, (
     Example("bring me, please, a glass of juice", "please", ""),
     Example("turn the heater on please, I'm shivering", "please", ""),
 ), frozenset(["please"]), "politeness inside a clause, and a remark after it")
+AS_ABLE_RULE = Rule("as fast as you can", _as_able, (
+    Example("get to the kitchen as fast as you can", "as fast as you can", Tag.PARTICLE),
+    Example("close the lid as gently as possible, please", "as gently as possible", Tag.PARTICLE),
+), frozenset(["as"]), "'as fast as you can', 'as gently as possible': a manner, said as one adverb")
 TAG_QUESTION = Rule("tag question", _tag_question, (
     Example("fetch me a spoon from the cabinet would you", "would you", Tag.POLITE),
     Example("close the door will you?", "will you", Tag.POLITE),

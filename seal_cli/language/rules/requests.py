@@ -16,6 +16,7 @@ from seal_cli.language.english import (
     BE_WORDS,
     CHECK_WHETHER,
     DETERMINERS,
+    DIRECTIONS,
     END_MARKS,
     ENSURED,
     FINITE,
@@ -120,8 +121,9 @@ def _where(s: State, i: int) -> Match | None:
     n = _phrase(s, i, WHERE_QUESTIONS)
     if not n or WHERE_MEANS not in s.lexicon.units or not s.np_starts(i + n) or \
             words[i + n - 1].lower in WHERE_DID[1] and words[i + n].lower in WHERE_DID[2] or \
-            words[i].lower in WHERE_DID[0] and _where_did(s, i) is not None:
-        return None                         # "where did *I* leave my glasses", "where did *ben* put it": WHERE_DID's
+            words[i].lower in WHERE_DID[0] and _where_did(s, i) is not None or _phrase(s, i, REQUESTS):
+        return None                         # "where did *I* leave my glasses", "where did *ben* put it": WHERE_DID's;
+        #   "is there any chance I could have a cushion": a request (words30), no chance sought
     text = s.text_of(words[i].start, words[i + n - 1].end) or " ".join(w.text for w in words[i:i + n])
     return Match(n, (Word(text, words[i].start, words[i + n - 1].end, Tag.VERB, WHERE_MEANS),), expect=False,
                  verb=WHERE_MEANS, using=False)
@@ -247,9 +249,10 @@ _STATE_CONTRACTED = frozenset(["'s", "'re"])
 """"is"/"are" said joined to the phrase ("the oven*'s* off, isn't it?": a state said, then its tag, words26)."""
 _PEOPLE_PRONOUNS = frozenset(["he", "she"])
 _WHETHER_WHERE = frozenset(["in", "on", "at", "inside", "near", "by", "under", "beside", "behind"])
-_AT_HOME = frozenset(["home"])
+_AT_HOME = DIRECTIONS
 """Being *home* is being in the house ("is mum home?", "see if anyone is home"): where someone is, asked as finding
-them in the whole house, never a state of theirs to look at."""
+them in the whole house, never a state of theirs to look at; so is being *upstairs*, *downstairs*, *outdoors*
+(``english.DIRECTIONS``: "is anybody upstairs?" was "unknown verb 'is'", words30)."""
 _WHETHER_THERE = _WHETHER_WHERE | _AT_HOME | frozenset(["there", "here"])
 """After "see if anyone is": a place said, or pointed at ("... is *there*", where the robot went)."""
 
@@ -1061,6 +1064,15 @@ def _obliged(s: State, i: int) -> Match | None:
                  particle=(state, unit) if state is not None else None)
 
 
+def _obliged_after_comma(s: State, i: int) -> Match | None:
+    """"put the dirty cups in the dishwasher*,* the clean ones go in the cupboard": a comma before a thing said to
+    belong somewhere (:func:`_obliged`) joins a clause of its own, not a noun of a list ("the dishwasher, the clean
+    ones" was a list, and "go" a Go of the cupboard, the cups' place lost; words30)."""
+    if s.expect_verb or i + 1 >= len(s.words) or _obliged(s, i + 1) is None:
+        return None
+    return Match(1, (s.words[i].tagged(Tag.SEP),), expect=True)
+
+
 def _obliged_dropped(s: State, i: int) -> Match | None:
     at = next((k for k in range(len(s.out) - 1, -1, -1) if s.out[k].tag == Tag.VERB), -1)
     if at < 0 or at + 1 >= len(s.out) or s.out[at].text or \
@@ -1514,6 +1526,7 @@ LEFT_ASKED_RULE = Rule("did someone leave X in a state", _left_asked, (
 ), LEFT_ASKED[0], "'did I leave X on?': check X (LookAt), the state asked kept; 'did I leave X in Y?': find X in Y")
 WHETHER_IS_RULE = Rule("is X somewhere", _whether_is, (
     Example("Is Ben in the kitchen?", "Is", Tag.VERB),
+    Example("is anybody upstairs?", "is", Tag.VERB),
     Example("are the apples in the fridge?", "are", Tag.VERB),
     Example("is anyone sitting at the table?", "is", Tag.VERB),
     Example("is someone waiting at the door?", "is", Tag.VERB),
@@ -1546,6 +1559,9 @@ SWITCHED_BY_UNKNOWN = Rule("an unknown verb of a thing and on/off", _switched_by
     Example("flick the light on in the bedroom", "flick", Tag.VERB),
     Example("knock the telly off", "knock", Tag.VERB),
 ), lambda low: low.isalpha(), "'flick the light on': a verb no frame lists, a thing and 'on'/'off': switch it so")
+OBLIGED_AFTER_COMMA = Rule("a comma before where a thing should go", _obliged_after_comma, (
+    Example("put the mugs in the sink, the clean ones go in the cupboard", ",", Tag.SEP),
+), frozenset([",", ";"]), "', the plates go in the dishwasher': a clause of its own after the comma")
 OBLIGED_RULE = Rule("where a thing should go", _obliged, (
     Example("the bowl should go in the dishwasher", "", Tag.VERB),
     Example("The milk belongs in the fridge.", "The", Tag.DET),
@@ -1578,6 +1594,9 @@ REQUEST = Rule("wish for a thing", _request, (
     Example("I'd like the red mug", "I'd like", Tag.VERB),
     Example("Can I have the big plate?", "Can I have", Tag.VERB),
     Example("I need a pen.", "I need", Tag.VERB),
+    Example("I wouldn't mind a biscuit", "I wouldn't mind", Tag.VERB),
+    Example("is there any chance of a blanket?", "is there any chance of", Tag.VERB),
+    Example("any chance I could have a cushion", "any chance I could have", Tag.VERB),
 ), _REQUEST_FIRST, "'I'd like X', 'can I have X', 'I need X': bring X to the speaker")
 SWITCHED_ALONE = Rule("a thing switched on or off", _switched_alone, (
     Example("Lights off in the hall.", "Lights", Tag.WORD),
