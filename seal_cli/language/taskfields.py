@@ -440,6 +440,10 @@ def reread(parse: Parse, library: Library, vocabulary: Vocabulary, model: FieldM
     reading = read_fields(parse)
     present = vocabulary.by_key
     fields, chance = combine(model, sentence_grams(text), reading, present, field_classes(parse, reading, vocabulary))
+    if fields["type"] == LOOK == reading.type and not any(f.frame in MANIPULATE for f in parse.frames):
+        looked = _looked_at(parse, library, fields, chance)    # the thing only found or carried to the lamp
+        if looked is not None:
+            return looked
     if fields["type"] == reading.type and all(reading.at[n] is not None or fields[n] == NOTHING
                                               for n in ("object", "receptacle", "mrecep")):
         return _reclassed(parse, reading, fields, present)
@@ -489,6 +493,32 @@ def _thing(parse: Parse, where: tuple[int, str] | None, value: str, present: Map
         said = parse.frames[where[0]].elements[where[1]]
         return replace(said, cls=cls, refers_to=None, quantity=None, plural=False, conjuncts=())
     return Phrase(None, class_words(cls)[-1] if class_words(cls) else cls, cls, default=True)
+
+
+def _looked_at(parse: Parse, library: Library, fields: Mapping[str, str], chance: float) -> Parse | None:
+    """A look whose thing is only found or carried ("find the racket and turn on the lamp", "carry a candle to the
+    lamp and turn it on"): the parse with a LookAt of that thing in the light of the lamp switched on added last,
+    marked inferred with the type's probability (its precondition, holding the thing, is the planner's). The thing is
+    the first theme of a frame other than the switching whose class is the object field's; None when no frame's is,
+    or no lamp is switched on."""
+    if "LookAt" not in library:
+        return None
+    lamps = [i for i, f in enumerate(parse.frames) if f.frame == "ToggleOn" and "theme" in f.elements
+             and "lamp" in class_key(parse.resolve(f.elements["theme"]).cls or "")]
+    things = [i for i, f in enumerate(parse.frames) if f.frame != "ToggleOn" and "theme" in f.elements
+              and class_key(parse.resolve(f.elements["theme"]).cls or "") == fields["object"]]
+    if not lamps or not things:
+        return None
+    thing, lamp = _root(parse, (things[0], "theme")), _root(parse, (lamps[0], "theme"))
+
+    def it(at: tuple[int, str]) -> Phrase:
+        said = parse.frames[at[0]].elements[at[1]]
+        return Phrase("", said.head, said.cls, refers_to=at)
+
+    unit = library.frame("LookAt").lexical_units
+    look = Evoked("LookAt", unit[0].text if unit else "look at", parse.frames[-1].span,
+                  {"theme": it(thing), "instrument": it(lamp)}, inferred=round(chance, 3))
+    return replace(parse, frames=(*parse.frames, look))
 
 
 def _written(parse: Parse, library: Library, vocabulary: Vocabulary, reading: Reading, fields: Mapping[str, str],
