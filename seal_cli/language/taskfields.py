@@ -56,6 +56,7 @@ from typing import TYPE_CHECKING
 
 from seal_cli.frames.taxonomy import class_key, class_words
 from seal_cli.language.chooser import Instance, fit, posterior
+from seal_cli.language.reference import back_unplaced
 from seal_cli.language.values import Evoked, Parse, Phrase
 
 if TYPE_CHECKING:
@@ -457,12 +458,13 @@ def field_classes(parse: Parse, reading: Reading, vocabulary: Vocabulary) -> dic
     (:data:`MIN_SHARE`, :data:`FILL_SHARE`; :meth:`~seal_cli.language.grounding.Vocabulary.meanings`) and the
     parser's, if it grounded one ("the table": a dining, side or coffee table, never the sofa beside it). A phrase
     the rules ground to nothing takes a class only when people meant it by that word often (never "the glass" a
-    butter knife where no cup is)."""
+    butter knife where no cup is). A "back" nothing said places ("wash a spatula from the counter to put it back") is
+    no phrase of a class: any class may be the words' guess of where the thing was."""
     out: dict[str, frozenset[str]] = {}
     for name, where in reading.at.items():
         phrase = None if where is None else parse.frames[where[0]].elements[where[1]]
-        if phrase is None or phrase.default:
-            continue
+        if phrase is None or phrase.default or back_unplaced(phrase):
+            continue                # "put it back" where nothing said places it: its class is the words' guess
         meant = vocabulary.meanings(phrase.head)
         total = sum(meant.values())
         least = max(MIN_MEANT, MIN_SHARE * total) if phrase.cls else max(FILL_MEANT, FILL_SHARE * total)

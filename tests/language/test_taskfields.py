@@ -309,3 +309,19 @@ def test_a_look_whose_thing_is_only_found_or_carried_looks_at_it_in_the_lamp_s_l
     text = "pick up the mug and switch on the lamp"            # the thing already handled: read as before
     parse = parse_command(text, library, vocabulary, infer_steps=False)
     assert [f.frame for f in reread(parse, library, vocabulary, MODEL, text).frames] == ["Pick", "ToggleOn"]
+
+
+def test_a_place_said_back_with_nothing_placing_it_takes_the_class_the_words_say(library: Library) -> None:
+    """"put the apple from the bedroom back": no source said before places "back" (the planner's, on a map: where
+    the thing lay), so the receptacle is the words' guess of where that was (the bedroom's side table by the model),
+    not nothing; the phrase stays an unplaced "back" for the planner."""
+    from seal_cli.language.reference import back_unplaced
+
+    text = "put the apple from the bedroom back"
+    vocabulary, parse = parsed(text, library)
+    assert parse.frames[0].elements["goal"].cls is None
+    after = reread(parse, library, vocabulary, MODEL, text)
+    goal = after.frames[0].elements["goal"]
+    assert (goal.text, goal.cls) == ("back", "SideTable")
+    assert back_unplaced(goal)
+    assert read_fields(after).values["receptacle"] == "side_table"
