@@ -448,9 +448,17 @@ def reread(parse: Parse, library: Library, vocabulary: Vocabulary, model: FieldM
     if fields["type"] == reading.type and all(reading.at[n] is not None or fields[n] == NOTHING
                                               for n in ("object", "receptacle", "mrecep")):
         return _reclassed(parse, reading, fields, present)
-    if not all(f.frame in TASK_FRAMES for f in parse.frames):
-        return _reclassed(parse, reading, fields, present)   # never drop a frame no field holds ("find the clock")
-    return _written(parse, library, vocabulary, reading, fields, present, chance)
+    if not all(f.frame in TASK_FRAMES for f in parse.frames) or _coordinated(parse, reading):
+        return _reclassed(parse, reading, fields, present)   # never drop a frame no field holds ("find the clock"),
+    return _written(parse, library, vocabulary, reading, fields, present, chance)  # nor a thing said beside another
+
+
+def _coordinated(parse: Parse, reading: Reading) -> bool:
+    """Whether the object was said in a coordination of things of two classes or more ("put the knife and the apple
+    on the table"): frames written anew from the fields hold one object, so the other would be dropped."""
+    at = reading.at["object"]
+    phrase = None if at is None else parse.frames[at[0]].elements[at[1]]
+    return phrase is not None and len({c.cls for c in phrase.conjuncts}) >= 2
 
 
 def field_classes(parse: Parse, reading: Reading, vocabulary: Vocabulary) -> dict[str, frozenset[str]]:

@@ -325,3 +325,19 @@ def test_a_place_said_back_with_nothing_placing_it_takes_the_class_the_words_say
     assert (goal.text, goal.cls) == ("back", "SideTable")
     assert back_unplaced(goal)
     assert read_fields(after).values["receptacle"] == "side_table"
+
+
+def test_a_thing_said_beside_another_is_never_dropped_by_frames_written_anew(library: Library) -> None:
+    """"put the frosty apple and the mug on the counter": the words say cool, which would write Pick, Cool and Place
+    of one object anew and drop the mug; a coordination of things of two classes keeps the parser's frames (only
+    classes may change)."""
+    text = "put the frosty apple and the mug on the counter"
+    vocabulary, parse = parsed(text, library)
+    assert [f.frame for f in parse.frames] == ["Place"]
+    assert [c.cls for c in parse.frames[0].elements["theme"].conjuncts] == ["Apple", "Mug"]
+    after = reread(parse, library, vocabulary, MODEL, text)
+    assert [f.frame for f in after.frames] == ["Place"]
+    assert [c.cls for c in after.frames[0].elements["theme"].conjuncts] == ["Apple", "Mug"]
+    text = "put the frosty apple on the counter"                # one thing: written anew as before
+    vocabulary, parse = parsed(text, library)
+    assert [f.frame for f in reread(parse, library, vocabulary, MODEL, text).frames] == ["Pick", "Cool", "Place"]
