@@ -31,10 +31,12 @@ learned so they were no better than the hand-set bonuses (``docs/language.md``, 
 phrases the parser read the fields from (the root of a pronoun's chain), when they differ; when it is another type
 (or a field has no phrase), the frames are written anew from the fields, the parser's phrases reused where they
 said the thing (its words kept, its class the field's), each written frame marked ``Evoked.inferred`` with the
-type's probability. A sliced object keeps the parser's Slice. Two guards: a parse with a frame no task field holds
-(:data:`TASK_FRAMES`: "... and find the clock") is never written anew, only its classes may change; and a said phrase
-takes only a class people meant by its head often enough (:data:`MIN_SHARE`, :data:`FILL_SHARE`: "the table" by the
-couch is never the sofa).
+type's probability. A sliced object keeps the parser's Slice. A look whose thing is only found or carried to the
+lamp gets an inferred LookAt of it, every said frame kept (:func:`_looked_at`). Guards: a parse with a frame no task
+field holds (:data:`TASK_FRAMES`: "... and find the clock"), or whose object was said beside a thing of another class
+("the knife and the apple", :func:`_coordinated`), is never written anew, only its classes may change; and a said
+phrase takes only a class people meant by its head often enough (:data:`MIN_SHARE`, :data:`FILL_SHARE`: "the table"
+by the couch is never the sofa; a "back" nothing places is no phrase of a class).
 
 **Scoped** as the unsaid step is (:attr:`~seal_cli.language.grounding.Vocabulary.field_model`): only with the
 statistics seal ships, where every class of the vocabulary is one they know (ALFRED's, or an ALFRED scene's), never
