@@ -31,10 +31,12 @@ learned so they were no better than the hand-set bonuses (``docs/language.md``, 
 phrases the parser read the fields from (the root of a pronoun's chain), when they differ; when it is another type
 (or a field has no phrase), the frames are written anew from the fields, the parser's phrases reused where they
 said the thing (its words kept, its class the field's), each written frame marked ``Evoked.inferred`` with the
-type's probability. A sliced object keeps the parser's Slice. Two guards: a parse with a frame no task field holds
-(:data:`TASK_FRAMES`: "... and find the clock") is never written anew, only its classes may change; and a said phrase
-takes only a class people meant by its head often enough (:data:`MIN_SHARE`, :data:`FILL_SHARE`: "the table" by the
-couch is never the sofa).
+type's probability. A sliced object keeps the parser's Slice. A look whose thing is only found or carried to the
+lamp gets an inferred LookAt of it, every said frame kept (:func:`_looked_at`). Guards: a parse with a frame no task
+field holds (:data:`TASK_FRAMES`: "... and find the clock"), or whose object was said beside a thing of another class
+("the knife and the apple", :func:`_coordinated`), is never written anew, only its classes may change; and a said
+phrase takes only a class people meant by its head often enough (:data:`MIN_SHARE`, :data:`FILL_SHARE`: "the table"
+by the couch is never the sofa; a "back" nothing places is no phrase of a class).
 
 **Scoped** as the unsaid step is (:attr:`~seal_cli.language.grounding.Vocabulary.field_model`): only with the
 statistics seal ships, where every class of the vocabulary is one they know (ALFRED's, or an ALFRED scene's), never
@@ -56,6 +58,7 @@ from typing import TYPE_CHECKING
 
 from seal_cli.frames.taxonomy import class_key, class_words
 from seal_cli.language.chooser import Instance, fit, posterior
+from seal_cli.language.reference import back_unplaced
 from seal_cli.language.values import Evoked, Parse, Phrase
 
 if TYPE_CHECKING:
@@ -440,12 +443,24 @@ def reread(parse: Parse, library: Library, vocabulary: Vocabulary, model: FieldM
     reading = read_fields(parse)
     present = vocabulary.by_key
     fields, chance = combine(model, sentence_grams(text), reading, present, field_classes(parse, reading, vocabulary))
+    if fields["type"] == LOOK == reading.type and not any(f.frame in MANIPULATE for f in parse.frames):
+        looked = _looked_at(parse, library, fields, chance)    # the thing only found or carried to the lamp
+        if looked is not None:
+            return looked
     if fields["type"] == reading.type and all(reading.at[n] is not None or fields[n] == NOTHING
                                               for n in ("object", "receptacle", "mrecep")):
         return _reclassed(parse, reading, fields, present)
-    if not all(f.frame in TASK_FRAMES for f in parse.frames):
-        return _reclassed(parse, reading, fields, present)   # never drop a frame no field holds ("find the clock")
-    return _written(parse, library, vocabulary, reading, fields, present, chance)
+    if not all(f.frame in TASK_FRAMES for f in parse.frames) or _coordinated(parse, reading):
+        return _reclassed(parse, reading, fields, present)   # never drop a frame no field holds ("find the clock"),
+    return _written(parse, library, vocabulary, reading, fields, present, chance)  # nor a thing said beside another
+
+
+def _coordinated(parse: Parse, reading: Reading) -> bool:
+    """Whether the object was said in a coordination of things of two classes or more ("put the knife and the apple
+    on the table"): frames written anew from the fields hold one object, so the other would be dropped."""
+    at = reading.at["object"]
+    phrase = None if at is None else parse.frames[at[0]].elements[at[1]]
+    return phrase is not None and len({c.cls for c in phrase.conjuncts}) >= 2
 
 
 def field_classes(parse: Parse, reading: Reading, vocabulary: Vocabulary) -> dict[str, frozenset[str]]:
@@ -453,12 +468,13 @@ def field_classes(parse: Parse, reading: Reading, vocabulary: Vocabulary) -> dic
     (:data:`MIN_SHARE`, :data:`FILL_SHARE`; :meth:`~seal_cli.language.grounding.Vocabulary.meanings`) and the
     parser's, if it grounded one ("the table": a dining, side or coffee table, never the sofa beside it). A phrase
     the rules ground to nothing takes a class only when people meant it by that word often (never "the glass" a
-    butter knife where no cup is)."""
+    butter knife where no cup is). A "back" nothing said places ("wash a spatula from the counter to put it back") is
+    no phrase of a class: any class may be the words' guess of where the thing was."""
     out: dict[str, frozenset[str]] = {}
     for name, where in reading.at.items():
         phrase = None if where is None else parse.frames[where[0]].elements[where[1]]
-        if phrase is None or phrase.default:
-            continue
+        if phrase is None or phrase.default or back_unplaced(phrase):
+            continue                # "put it back" where nothing said places it: its class is the words' guess
         meant = vocabulary.meanings(phrase.head)
         total = sum(meant.values())
         least = max(MIN_MEANT, MIN_SHARE * total) if phrase.cls else max(FILL_MEANT, FILL_SHARE * total)
@@ -489,6 +505,32 @@ def _thing(parse: Parse, where: tuple[int, str] | None, value: str, present: Map
         said = parse.frames[where[0]].elements[where[1]]
         return replace(said, cls=cls, refers_to=None, quantity=None, plural=False, conjuncts=())
     return Phrase(None, class_words(cls)[-1] if class_words(cls) else cls, cls, default=True)
+
+
+def _looked_at(parse: Parse, library: Library, fields: Mapping[str, str], chance: float) -> Parse | None:
+    """A look whose thing is only found or carried ("find the racket and turn on the lamp", "carry a candle to the
+    lamp and turn it on"): the parse with a LookAt of that thing in the light of the lamp switched on added last,
+    marked inferred with the type's probability (its precondition, holding the thing, is the planner's). The thing is
+    the first theme of a frame other than the switching whose class is the object field's; None when no frame's is,
+    or no lamp is switched on."""
+    if "LookAt" not in library:
+        return None
+    lamps = [i for i, f in enumerate(parse.frames) if f.frame == "ToggleOn" and "theme" in f.elements
+             and "lamp" in class_key(parse.resolve(f.elements["theme"]).cls or "")]
+    things = [i for i, f in enumerate(parse.frames) if f.frame != "ToggleOn" and "theme" in f.elements
+              and class_key(parse.resolve(f.elements["theme"]).cls or "") == fields["object"]]
+    if not lamps or not things:
+        return None
+    thing, lamp = _root(parse, (things[0], "theme")), _root(parse, (lamps[0], "theme"))
+
+    def it(at: tuple[int, str]) -> Phrase:
+        said = parse.frames[at[0]].elements[at[1]]
+        return Phrase("", said.head, said.cls, refers_to=at)
+
+    unit = library.frame("LookAt").lexical_units
+    look = Evoked("LookAt", unit[0].text if unit else "look at", parse.frames[-1].span,
+                  {"theme": it(thing), "instrument": it(lamp)}, inferred=round(chance, 3))
+    return replace(parse, frames=(*parse.frames, look))
 
 
 def _written(parse: Parse, library: Library, vocabulary: Vocabulary, reading: Reading, fields: Mapping[str, str],

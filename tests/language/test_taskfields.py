@@ -284,3 +284,60 @@ def test_a_thing_taken_to_a_place_is_read_as_put_there(library: Library) -> None
     assert (reading.type, reading.values["object"], reading.values["receptacle"]) == (SIMPLE, "apple", "fridge")
     parse = parse_command("bring me the apple", library, vocabulary, infer_steps=False)
     assert read_fields(parse).values["receptacle"] == NOTHING                    # to a person: no place
+
+
+def test_a_look_whose_thing_is_only_found_or_carried_looks_at_it_in_the_lamp_s_light(library: Library) -> None:
+    """"find the mug and switch on the lamp", "carry the bread over to the lamp and switch it on": the lamp makes it
+    a look, but no frame the task's object is read from handles the thing; a LookAt of it in the light of the lamp
+    switched on is added last, marked inferred, every said frame kept (holding it is the planner's)."""
+    vocabulary = rules()
+    for text, said in (("find the mug and switch on the lamp", ["Find", "ToggleOn"]),
+                       ("carry the bread over to the lamp and switch it on", ["Bring", "ToggleOn"])):
+        parse = parse_command(text, library, vocabulary, infer_steps=False)
+        assert [f.frame for f in parse.frames] == said
+        after = reread(parse, library, vocabulary, MODEL, text)
+        assert [f.frame for f in after.frames] == [*said, "LookAt"]
+        assert after.frames[:-1] == parse.frames
+        look = after.frames[-1]
+        assert look.inferred is not None and look.inferred > 0.5
+        assert after.resolve(look.elements["theme"]).cls == ("Mug" if "mug" in text else "Bread")
+        assert after.resolve(look.elements["instrument"]).cls == "DeskLamp"
+        assert read_fields(after).type == LOOK
+    text = "find the mug and switch on the microwave"          # no lamp: no look, nothing added
+    parse = parse_command(text, library, vocabulary, infer_steps=False)
+    assert "LookAt" not in [f.frame for f in reread(parse, library, vocabulary, MODEL, text).frames]
+    text = "pick up the mug and switch on the lamp"            # the thing already handled: read as before
+    parse = parse_command(text, library, vocabulary, infer_steps=False)
+    assert [f.frame for f in reread(parse, library, vocabulary, MODEL, text).frames] == ["Pick", "ToggleOn"]
+
+
+def test_a_place_said_back_with_nothing_placing_it_takes_the_class_the_words_say(library: Library) -> None:
+    """"put the apple from the bedroom back": no source said before places "back" (the planner's, on a map: where
+    the thing lay), so the receptacle is the words' guess of where that was (the bedroom's side table by the model),
+    not nothing; the phrase stays an unplaced "back" for the planner."""
+    from seal_cli.language.reference import back_unplaced
+
+    text = "put the apple from the bedroom back"
+    vocabulary, parse = parsed(text, library)
+    assert parse.frames[0].elements["goal"].cls is None
+    after = reread(parse, library, vocabulary, MODEL, text)
+    goal = after.frames[0].elements["goal"]
+    assert (goal.text, goal.cls) == ("back", "SideTable")
+    assert back_unplaced(goal)
+    assert read_fields(after).values["receptacle"] == "side_table"
+
+
+def test_a_thing_said_beside_another_is_never_dropped_by_frames_written_anew(library: Library) -> None:
+    """"put the frosty apple and the mug on the counter": the words say cool, which would write Pick, Cool and Place
+    of one object anew and drop the mug; a coordination of things of two classes keeps the parser's frames (only
+    classes may change)."""
+    text = "put the frosty apple and the mug on the counter"
+    vocabulary, parse = parsed(text, library)
+    assert [f.frame for f in parse.frames] == ["Place"]
+    assert [c.cls for c in parse.frames[0].elements["theme"].conjuncts] == ["Apple", "Mug"]
+    after = reread(parse, library, vocabulary, MODEL, text)
+    assert [f.frame for f in after.frames] == ["Place"]
+    assert [c.cls for c in after.frames[0].elements["theme"].conjuncts] == ["Apple", "Mug"]
+    text = "put the frosty apple on the counter"                # one thing: written anew as before
+    vocabulary, parse = parsed(text, library)
+    assert [f.frame for f in reread(parse, library, vocabulary, MODEL, text).frames] == ["Pick", "Cool", "Place"]

@@ -86,6 +86,9 @@ def _result(s: State, i: int) -> Match | None:
         return s.emit(i, 2, Tag.RESULT, s.lexicon.results.get(f"{low} {nxt}", result))  # "a heated up potato"
     if nxt == "," and i + 2 < len(words) and words[i + 2].lower in s.lexicon.results and s.noun_follows(i + 3):
         return Match(2, s.emit(i, 1, Tag.RESULT, result).words)   # "a cooked, rinsed egg"
+    if nxt == "and" and s.prev_tag() == Tag.DET and i + 2 < len(words) and words[i + 2].lower in s.lexicon.results \
+            and s.noun_follows(i + 3):
+        return Match(2, s.emit(i, 1, Tag.RESULT, result).words)   # "the sliced and washed lettuce": one noun's two
     if nxt == "," and s.prev_tag() == Tag.DET and s.noun_follows(i + 2) and \
             (words[i + 2].lower not in s.lexicon.verb_set or s.next_lower(i + 2) == "of"):
         return Match(2, s.emit(i, 1, Tag.RESULT, result).words)   # "the rinsed, tea kettle": the comma a slip
@@ -219,6 +222,8 @@ RESULT = Rule("result word", _result, (
     Example("put a heated egg in the fridge", "heated", Tag.RESULT),
     Example("put the heated up egg in the fridge", "heated up", Tag.RESULT),
     Example("put a cooked, rinsed egg in the fridge", "cooked", Tag.RESULT),
+    Example("put the sliced and washed lettuce in the fridge", "sliced", Tag.RESULT),   # after a determiner only:
+    Example("put the cut and washed lettuce in the fridge", "washed", Tag.RESULT),      # "cut and wash the apple"
     Example("put the rinsed, tea kettle under the sink", "rinsed", Tag.RESULT),   # a comma after a determiner's
     Example("put a chilled, head of lettuce in the sink", "chilled", Tag.RESULT),  # adjective: the noun follows
 ), None, "a participle of a lexical unit, or a frame's result adjective, before a noun")
