@@ -323,9 +323,20 @@ def test_a_bad_clock_is_refused_naming_the_option() -> None:
 
 
 def test_a_negated_state_question_keeps_its_not() -> None:
-    assert run_json("is the fridge open?")["answer"] == "no: fridge_1 is closed"
-    assert run_json("is the fridge not open?")["answer"] == "yes: fridge_1 is closed"
-    assert run_json("isn't the microwave open?")["answer"] == "yes: microwave_1 is closed"
+    assert run_json("is the fridge open?")["answer"] == "no: fridge_1 is closed (as the map has it)"
+    assert run_json("is the fridge not open?")["answer"] == "yes: fridge_1 is closed (as the map has it)"
+    assert run_json("isn't the microwave open?")["answer"] == "yes: microwave_1 is closed (as the map has it)"
+
+
+def test_whether_a_place_is_open_is_answered_from_the_map_as_closing_it_is() -> None:
+    """e2e25: "is the fridge open?" drove 14 m to look while "close the fridge" said at 0 m it was shut already. One
+    rule: the map records whether each place is open and only the robot opens and closes things, so both answer
+    where the robot stands; what the map does not record (a lamp on, a fridge empty) it goes and looks at."""
+    asked, closed = run_json("is the fridge open?"), run_json("close the fridge")
+    assert asked["path_m"] == closed["path_m"] == 0.0 and asked["completed"] and closed["completed"]
+    opened = run_json("open the fridge, then tell me whether the fridge is open")
+    assert opened["answer"] == "yes: fridge_1 is open (as it left it)" and opened["path_m"] > 0
+    assert run_json("is the fridge empty?")["path_m"] > 0           # what is inside: it looks
 
 
 def test_a_state_question_with_a_place_looks_there_and_says_when_there_is_none() -> None:
