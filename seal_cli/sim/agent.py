@@ -1767,7 +1767,8 @@ class Agent:
             return None
         place = self.scene.map.place(theme)
         as_mapped = place is not None and place.open == self.world.items[theme].is_open
-        said = f"{self.state_answer(theme, question.relation)} ({'as the map has it' if as_mapped else 'as it left it'})"
+        how = "as the map has it" if as_mapped else "as it left it"
+        said = f"{self.state_answer(theme, question.relation)} ({how})"
         self.answer(said)
         return Outcome(True, said)
 
