@@ -176,7 +176,8 @@ class Agent:
         put it back"), not where such a thing is kept."""
         self.picked_from: dict[str, str | None] = {}
         """Where each thing the robot picked up lay."""
-        self.started = {i.id: i.at for i in self.world.items.values() if i.movable}
+        self.started = {i.id: i.at for i in self.world.items.values() if i.movable or i.key == "person"}
+        """Where each thing and each person was as the run began (the picture draws what moved from there)."""
         """Where each thing was as the run started (the picture shows where the moved ones came from)."""
         self.known: dict[str, Known] = {}
         self.unreachable: set[str] = set()
