@@ -1315,8 +1315,10 @@ def parse_to_plan(text: str, library: Library, vocabulary: Any = None) -> Parse:
     from seal_cli.language.parser import parse_command
     from seal_cli.planning.grounding import spoken, without_floating_each
     from seal_cli.planning.questions import anything_there, told_first
+    from seal_cli.planning.same import refuse_the_same
     from seal_cli.planning.told import told_where
 
+    refuse_the_same(text)
     parsed = told_where(parse_command(without_floating_each(spoken(text)), library, vocabulary), library)
     return anything_there(told_first(parsed, lambda said: parse_command(said, library, vocabulary)))
 
