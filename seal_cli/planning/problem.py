@@ -1176,6 +1176,10 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
                   map: Map | None = None, vocabulary: Any = None, every: Mapping[str, int] | None = None) -> Problem:
     """The commanded frames of a parse and the state they start from (see the module's docstring); ``every``:
     how many things of a class "all the ..." asks for, where the map does not place them (:attr:`Things.every`)."""
+    from seal_cli.planning.same import told_too
+
+    if map is not None:             # "tell Ben that breakfast is ready and Anna as well": Anna is told too
+        parse = told_too(parse, {p.name.lower() for p in map.people})
     things = Things(library.taxonomy, map)
     things.every = dict(every or {})
     things.hold(holding)            # before the frames: "put it in the sink" calls what the robot holds

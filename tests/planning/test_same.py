@@ -25,3 +25,22 @@ def test_the_same_for_something_else_is_refused_where_it_is_said(library: Librar
 @pytest.mark.parametrize("text", ["bring me the same cup", "put the cups in the same box", "the same for me"])
 def test_same_that_repeats_nothing_before_it_is_left_to_the_parser(text: str) -> None:
     refuse_the_same(text)      # no repeat of an instruction said before it: nothing refused here
+
+
+@pytest.mark.parametrize(("text", "told"), [
+    ("tell Carla that the taxi is here and Ben as well", [("the_taxi_is_here", "carla"), ("the_taxi_is_here", "ben")]),
+    ("tell Anna dinner is at seven, and Carla too", [("dinner_is_at_seven", "anna"), ("dinner_is_at_seven", "carla")]),
+    ("tell Ben that the tea and the cake are ready", [("the_tea_and_the_cake_are_ready", "ben")]),    # no person
+    ("tell Ben that the rain stopped and Bob too", [("the_rain_stopped_and_bob_too", "ben")]),   # Bob: not on the map
+])
+def test_a_message_for_another_person_too_is_told_to_them(library: Library, text: str,
+                                                          told: list[tuple[str, str]]) -> None:
+    """e2e25: "tell Ben that breakfast is ready and Anna as well" told Ben "breakfast is ready and Anna as well"."""
+    from pathlib import Path
+
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.planning.problem import build_problem
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "guesthouse.yaml")
+    commanded = build_problem(parse_to_plan(text, library), library, map=m).commanded
+    assert [(b.elements["message"], b.elements["recipient"]) for b in commanded] == told
