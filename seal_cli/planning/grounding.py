@@ -160,6 +160,9 @@ class MapNames:
         self.taxonomy = taxonomy
         self.chosen: dict[str, str] = {}
         """Each place chosen among several a phrase did not tell apart, by id: which they were and why this one."""
+        self.room_said: str | None = None
+        """The room an earlier frame of the command named last ("go to the bedroom and put it on the bed"): of
+        several places, the ones in it are meant."""
 
     @cached_property
     def referents(self) -> tuple[Referent, ...]:
@@ -330,13 +333,20 @@ class MapNames:
     def _nearest(self, text: str, places: list[Referent]) -> Referent:
         from seal_cli.maps.reach import drive_lengths
 
-        lengths = drive_lengths(self.map, self.map.robot.pose, [r.id for r in places])
-        best = min(range(len(places)), key=lambda k: (lengths[k], k))
-        one = places[best]
         listed = [f"{r.id} ({r.room or 'in no room'})" for r in places]
-        self.chosen.setdefault(one.id, f"'{' '.join(text.split())}' could be {', '.join(listed[:-1])} or "
-                               f"{listed[-1]}: chose {one.id}, the nearest the robot drives to from where it starts "
-                               f"({lengths[best]:.1f} m); say its room or its number ('{one.id}') to choose")
+        said = f"'{' '.join(text.split())}' could be {', '.join(listed[:-1])} or {listed[-1]}: chose"
+        inside = [r for r in places if self.room_said is not None and r.room == self.room_said]
+        if len(inside) == 1:
+            self.chosen.setdefault(inside[0].id, f"{said} {inside[0].id}, the one in the "
+                                   f"{spoken(inside[0].room or '')}, the room said before it")
+            return inside[0]
+        among = inside or places
+        lengths = drive_lengths(self.map, self.map.robot.pose, [r.id for r in among])
+        best = min(range(len(among)), key=lambda k: (lengths[k], k))
+        one = among[best]
+        which = f" of those in the {spoken(one.room or '')} (the room said before it)," if inside else ""
+        self.chosen.setdefault(one.id, f"{said} {one.id},{which} the nearest the robot drives to from where it "
+                               f"starts ({lengths[best]:.1f} m); say its room or its number ('{one.id}') to choose")
         return one
 
     def _room_of_words(self, words: tuple[str, ...]) -> str | None:

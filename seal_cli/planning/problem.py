@@ -770,6 +770,8 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
             frame = looking(frame)
             evoked = _where_asked(evoked)
         asked = _counted_roles(frame) | ({"theme"} if asks_whether(parse.text, evoked) else set())
+        if things.names is not None:    # "go to the bedroom and put it on the bed": the bedroom's bed
+            things.names.room_said = _room_said_last(earlier, things)
         values = {role: _values(_sought_where(evoked, role, things), earlier, things, parse.text,
                                 frame.element(role).type, role in asked, _carried(frame, role), _gone_to(frame, role),
                                 not _taken_out_of_a_thing(evoked, things))
@@ -837,6 +839,16 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
 ONE_EACH = frozenset({"a", "an", "one", "another"})
 """Words that open a phrase of one thing of a kind, not a particular one ("*a* biscuit"): handed to several people,
 one each."""
+
+
+def _room_said_last(earlier: Sequence[Mapping[str, tuple[str, ...]]], things: Things) -> str | None:
+    """The room the frames before named last, as a value of any element ("go to the bedroom": ``bedroom``)."""
+    names = things.names
+    for values in reversed(earlier):
+        for value in reversed([v for vs in values.values() for v in vs]):
+            if names is not None and (referent := names.by_id(value)) is not None and referent.kind == "room":
+                return referent.id
+    return None
 
 
 def _not_one_given(evoked: Evoked, values: dict[str, tuple[str, ...]], bindings: Sequence[Binding],

@@ -527,3 +527,16 @@ def test_a_place_of_a_kind_the_house_has_several_of_is_the_nearest_and_said(libr
     assert str(plan("leave the newspaper on the bed in the bedroom", library, map=m).steps[-1]) == \
         "Place(theme=newspaper, goal=bed_4)"
     assert not plan("go to the coffee table", library, map=m).warnings      # one of its class: nothing to say
+
+
+def test_of_several_places_the_one_in_the_room_said_before_is_meant(library: Library) -> None:
+    """e2e25: "go to the bedroom, then ... on the bed": the bedroom's bed, not the nearest to the start."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "guesthouse.yaml")
+    owners = plan("walk to the bedroom and leave the newspaper on the bed", library, map=m)
+    assert str(owners.steps[-1]) == "Place(theme=newspaper, goal=bed_4)"
+    assert any("chose bed_4, the one in the bedroom, the room said before it" in w for w in owners.warnings)
+    twin = plan("go to the twin room and then leave the newspaper on the bed", library, map=m)
+    assert str(twin.steps[-1]) == "Place(theme=newspaper, goal=bed_2)"        # of its two, the nearer
