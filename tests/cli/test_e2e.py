@@ -108,13 +108,13 @@ def test_bench_e2e_counts_plans_and_runs(tmp_path: Path) -> None:
                      "  - {map: apartment, text: go to the couch in the living room, plan: [Go(goal=sofa_2)], "
                      "run: done}\n"
                      "  - {map: apartment, text: bring the cup to the garage, refused: has no garage}\n"
-                     "  - {map: apartment, text: go to the couch, plan: [Go(goal=sofa_2)]}\n", encoding="utf-8")
+                     "  - {map: apartment, text: go to the couch, plan: [Go(goal=sofa_1)]}\n", encoding="utf-8")
     result = runner.invoke(app, ["bench", "e2e", "--file", str(suite), "--jobs", "1", "--json", "--particles", "50"])
     assert result.exit_code == 0, result.output
     report = json.loads(result.stdout)
     assert report["groups"]["all"] == {"n": 3, "plan_right": 2, "plan_rate": 0.667, "runs": 1, "run_completed": 1,
                                        "run_rate": 1.0}
-    assert [m["text"] for m in report["misses"]] == ["go to the couch"]       # it is sofa_1: the miss is reported
+    assert [m["text"] for m in report["misses"]] == ["go to the couch"]   # it is sofa_2, the nearer: a miss, reported
     table = runner.invoke(app, ["bench", "e2e", "--file", str(suite), "--jobs", "1", "--particles", "50"])
     assert "plan miss" in table.stdout and "2/3" in table.stdout
     bad = runner.invoke(app, ["bench", "e2e", "--map", "moon"])
