@@ -2,7 +2,8 @@
 ``cafe.yaml`` and ``clinic.yaml``, and of the context suite's unseen houses ``farmhouse.yaml`` and
 ``terrace.yaml``, the L-shaped ``bungalow.yaml``, ``lodge.yaml``, e2e21's held-out holiday lodge, and
 ``flat.yaml``, e2e22's held-out long flat, and ``carehome.yaml``, e2e23's held-out care home, and
-``student_house.yaml``, e2e24's held-out student house (run once; the PGMs are committed next to this script).
+``student_house.yaml``, e2e24's held-out student house, and ``guesthouse.yaml``, e2e25's held-out bed and
+breakfast (run once; the PGMs are committed next to this script).
 
     python maps/make_houses.py          # rewrites maps/<house>.pgm for each of HOUSES
 
@@ -228,7 +229,26 @@ STUDENT_HOUSE = House(
     ),
 )
 
-HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC, FARMHOUSE, TERRACE, BUNGALOW, LODGE, FLAT, CAREHOME, STUDENT_HOUSE)
+GUESTHOUSE = House(
+    "guesthouse", (0.0, 0.0, 16.0, 10.0),
+    walls=(
+        ((4.0, 0.0, 4.0, 5.0), ((3.3, 4.7),)),                 # reception | twin room, reception | corridor
+        ((0.0, 5.0, 16.0, 5.0), ((1.5, 2.5), (4.5, 5.5), (8.0, 9.0), (11.0, 12.0))),  # to dining, kitchen, lounge
+        ((4.0, 3.0, 16.0, 3.0), ((5.5, 6.5), (9.5, 10.5), (13.5, 14.5))),  # corridor | twin, double room, bathroom
+        ((8.0, 0.0, 8.0, 3.0), ()),                            # twin room | double room
+        ((12.0, 0.0, 12.0, 3.0), ()),                          # double room | bathroom
+        ((6.0, 5.0, 6.0, 10.0), ((7.0, 8.0),)),                # dining room | kitchen
+        ((10.0, 5.0, 10.0, 10.0), ()),                         # kitchen | lounge
+        ((13.0, 5.0, 13.0, 10.0), ((8.0, 9.0),)),              # lounge | the owner's bedroom
+    ),
+    blocks=(
+        (3.0, 0.1, 3.9, 1.0),      # the luggage cupboard in the reception's south-east corner
+        (14.6, 0.1, 15.9, 2.0),    # the bath against the bathroom's east wall
+    ),
+)
+
+HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC, FARMHOUSE, TERRACE, BUNGALOW, LODGE, FLAT, CAREHOME, STUDENT_HOUSE,
+          GUESTHOUSE)
 
 
 def draw(house: House) -> np.ndarray:

@@ -21,7 +21,10 @@ best, a phrase names, in turn:
    refused: "the table in the kitchen" when the kitchen has none);
 2. the ones the frame element can take (an ``openable`` element wants a place that opens; a
    ``heater`` a place that heats, by the library's categories);
-3. the first in the map's order (the map lists the usual one first).
+3. of several places of one class nothing said tells apart (four beds), the nearest the robot drives to from
+   where it starts, said as a warning with the others and why (:meth:`MapNames._one_of`; "on my desk": the one
+   nearest the speaker); else the first in the map's order (the map lists the usual one first: "the table" is
+   the dining table before the coffee table).
 
 A phrase whose words name no thing of the map is not grounded here (it is an object the robot
 must find, or a word of no class); but a room word ("garage", anything called a "room") or a
@@ -155,6 +158,11 @@ class MapNames:
     def __init__(self, map: Map, taxonomy: Taxonomy) -> None:
         self.map = map
         self.taxonomy = taxonomy
+        self.chosen: dict[str, str] = {}
+        """Each place chosen among several a phrase did not tell apart, by id: which they were and why this one."""
+        self.room_said: str | None = None
+        """The room an earlier frame of the command named last ("go to the bedroom and put it on the bed"): of
+        several places, the ones in it are meant."""
 
     @cached_property
     def referents(self) -> tuple[Referent, ...]:
@@ -303,16 +311,43 @@ class MapNames:
                  or (element_type == "openable" and self._openable(r.id))]
         if element_type == "openable":
             typed = [r for r in typed if r.kind == "place" and self._openable(r.id)] or typed
-        return self._speakers(text, typed or found)
+        return self._one_of(text, typed or found)
 
-    def _speakers(self, text: str, found: list[Referent]) -> Referent:
-        """The first referent in the map's order, but the one nearest the speaker when the phrase says it is
-        theirs and several places fit ("is there a stapler on my desk?": the desk the speaker stands by)."""
+    def _one_of(self, text: str, found: list[Referent]) -> Referent:
+        """The one of several referents a phrase calls: the one nearest the speaker when the phrase says it is
+        theirs and several places fit ("is there a stapler on my desk?": the desk the speaker stands by); else,
+        of several places of one class nothing said tells apart, the nearest the robot drives to from where it
+        starts ("put the guitar on the bed" with four beds), the choice and its reason kept in :attr:`chosen`;
+        else (places of several classes: "the table" for a dining table and a coffee table) the first in the map's
+        order, which lists the usual one first."""
         places = [r for r in found if r.kind == "place" and self.map.place(r.id) is not None]
-        if len(places) < 2 or re.match(r"\s*(my|our)\b", text, flags=re.IGNORECASE) is None:
+        if len(places) < 2 or len(places) < len(found):
             return found[0]
-        here = self.map.speaker_at
-        return min(places, key=lambda r: math.dist(self.map.place(r.id).at, here))  # type: ignore[union-attr]
+        if re.match(r"\s*(my|our)\b", text, flags=re.IGNORECASE) is not None:
+            here = self.map.speaker_at
+            return min(places, key=lambda r: math.dist(self.map.place(r.id).at, here))  # type: ignore[union-attr]
+        if len({r.cls for r in places}) > 1:
+            return found[0]             # "the table": a dining table before a coffee table, as the map lists them
+        return self._nearest(text, places)
+
+    def _nearest(self, text: str, places: list[Referent]) -> Referent:
+        from seal_cli.maps.reach import drive_lengths
+
+        listed = [f"{r.id} ({r.room or 'in no room'})" for r in places]
+        said = f"'{' '.join(text.split())}' could be {', '.join(listed[:-1])} or {listed[-1]}: chose"
+        inside = [r for r in places if self.room_said is not None and r.room == self.room_said]
+        if len(inside) == 1:
+            self.chosen.setdefault(inside[0].id, f"{said} {inside[0].id}, the one in the "
+                                   f"{spoken(inside[0].room or '')}, the room said before it")
+            return inside[0]
+        among = inside or places
+        lengths = drive_lengths(self.map, self.map.robot.pose, [r.id for r in among])
+        best = min(range(len(among)), key=lambda k: (lengths[k], k))
+        one = among[best]
+        which = f" of those in the {spoken(one.room or '')} (the room said before it)," if inside else ""
+        self.chosen.setdefault(one.id, f"{said} {one.id},{which} the nearest the robot drives to from where it "
+                               f"starts ({lengths[best]:.1f} m); say its room or its number ('{one.id}') to choose")
+        return one
 
     def _room_of_words(self, words: tuple[str, ...]) -> str | None:
         thing, _ = _split(words)

@@ -525,6 +525,19 @@ def _names(phrase: Phrase, cls: str, things: Things) -> bool:
     return any(noun_lemma(class_words(n)[-1]) in said for n in names if class_words(n))
 
 
+THIRD_PERSONS = frozenset({"him", "her", "them", "he", "she", "they"})
+"""Pronouns that stand for a person said before them; with nobody said, no one the robot can find."""
+
+
+def _someone_named(phrase: Phrase, text: str) -> None:
+    """Refuse "him", "her" or "them" that stands for nobody the command (or what it says beside it) named ("get
+    *him* a plate"): the robot cannot tell whom it means, and would look the house over for someone called Him."""
+    said = (phrase.text or "").lower()
+    if said in THIRD_PERSONS and phrase.refers_to is None and phrase.head.lower() in THIRD_PERSONS:
+        raise _located(f"cannot tell who {phrase.text!r} is: the command names nobody before it; say their name "
+                       f"(or their role: \"the cook\")", phrase, text)
+
+
 def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: bool = False, carried: bool = False,
             gone_to: bool = False) -> tuple[str, ...] | None:
     """The map's person, room or place a phrase names (see :mod:`seal_cli.planning.grounding`);
@@ -549,6 +562,7 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
             return called
     if phrase.head.lower() in SPEAKER_WORDS or phrase.kind == "person" \
             or things.taxonomy.is_a(category, "person") is True and category != "thing":
+        _someone_named(phrase, text)
         if phrase.text and phrase.text.split()[0].lower() in DROPPED:
             things.roles_said.add(class_key(phrase.head))     # "the nurse" on a map without one
         value = person_value(phrase.text or phrase.head, phrase.head, {p.key: p for p in things.map.people})
@@ -756,6 +770,8 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
             frame = looking(frame)
             evoked = _where_asked(evoked)
         asked = _counted_roles(frame) | ({"theme"} if asks_whether(parse.text, evoked) else set())
+        if things.names is not None:    # "go to the bedroom and put it on the bed": the bedroom's bed
+            things.names.room_said = _room_said_last(earlier, things)
         values = {role: _values(_sought_where(evoked, role, things), earlier, things, parse.text,
                                 frame.element(role).type, role in asked, _carried(frame, role), _gone_to(frame, role),
                                 not _taken_out_of_a_thing(evoked, things))
@@ -791,6 +807,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
             things.people.add(SPEAKER)          # "go to the kitchen and come back": back to whoever asked
             values["goal"] = (SPEAKER,)
         _to_recipient(frame, values, things)
+        _not_one_given(evoked, values, bindings, things)
         if _looked_at_where_it_stands(frame, values, things):       # "check on Ben": no picking Ben up
             frame = looking(frame)
         _check_types(frame, values, evoked.elements, things, parse.text)
@@ -808,7 +825,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
                             "split it into smaller commands")
         reading = frame if kept or "goal" in placed_back else on_top(frame, evoked.elements.get("goal"))
         _one_thing_to_several(frame, evoked, values, roles, parse.text)
-        for combination in _combinations(frame, evoked, values, roles, things):
+        for combination in _combinations(frame, evoked, values, roles, things, parse.text):
             said = dict(zip(roles, combination, strict=True))
             if kept:        # "put away the cup and the spoon": each where it is kept
                 said["goal"] = kept[said["theme"]]
@@ -822,6 +839,31 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
 ONE_EACH = frozenset({"a", "an", "one", "another"})
 """Words that open a phrase of one thing of a kind, not a particular one ("*a* biscuit"): handed to several people,
 one each."""
+
+
+def _room_said_last(earlier: Sequence[Mapping[str, tuple[str, ...]]], things: Things) -> str | None:
+    """The room the frames before named last, as a value of any element ("go to the bedroom": ``bedroom``)."""
+    names = things.names
+    for values in reversed(earlier):
+        for value in reversed([v for vs in values.values() for v in vs]):
+            if names is not None and (referent := names.by_id(value)) is not None and referent.kind == "room":
+                return referent.id
+    return None
+
+
+def _not_one_given(evoked: Evoked, values: dict[str, tuple[str, ...]], bindings: Sequence[Binding],
+                   things: Things) -> None:
+    """One of a kind ("*a* plate") in a frame after an earlier frame of the command handed a thing of that kind to
+    someone ("get Ben a plate and Anna as well", "give Ben a cup, then give Anna a cup") is another of the kind:
+    the one handed over is that person's now, not to be taken back."""
+    phrase = evoked.elements.get("theme")
+    said = (phrase.text or "").lower().split() if phrase is not None else []
+    if not said or said[0] not in ONE_EACH or len(values.get("theme", ())) != 1:
+        return
+    given = {b.elements["theme"] for b in bindings if "recipient" in b.elements and "theme" in b.elements}
+    theme = values["theme"][0]
+    if theme in given and theme in things.classes:
+        values["theme"] = (next(t for t in things.instances(theme, len(given) + 1) if t not in given),)
 
 
 ONE_THING = frozenset({"the", "this", "that", "my", "your", "his", "her", "its", "our", "their", "it"})
@@ -851,21 +893,40 @@ def _one_thing_to_several(frame: Frame, evoked: Evoked, values: Mapping[str, tup
 
 
 def _combinations(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]], roles: Sequence[str],
-                  things: Things) -> Iterator[tuple[str, ...]]:
-    """Every combination of the frame's values, in role order; except that one thing of a kind ("*a* biscuit")
-    handed to several people ("give Edith and Walter a biscuit (each)") is a thing of that kind for each of them
-    (``biscuit``, ``biscuit_2``), not the same one given to Edith, taken back and given to Walter (e2e23)."""
-    phrase = evoked.elements.get("theme")
-    said = (phrase.text or "").lower().split() if phrase is not None else []
+                  things: Things, text: str) -> Iterator[tuple[str, ...]]:
+    """Every combination of the frame's values, in role order; except that things handed to several people are
+    shared out, each thing to one of them (:func:`_shared_out`), not given to one, taken back and given to the next."""
     people = values.get("recipient", ())
-    if (len(values.get("theme", ())) == 1 and len(people) > 1 and said[:1] and said[0] in ONE_EACH
-            and frame.needs_held("theme") and "recipient" in roles):
-        each = things.instances(values["theme"][0], len(people))
-        for thing, person in zip(each, people, strict=True):
+    if len(people) > 1 and "theme" in values and frame.needs_held("theme") and "recipient" in roles:
+        for thing, person in _shared_out(evoked, values["theme"], people, things, text):
             yield from itertools.product(*((thing,) if r == "theme" else (person,) if r == "recipient"
                                            else values[r] for r in roles))
         return
     yield from itertools.product(*(values[r] for r in roles))
+
+
+def _shared_out(evoked: Evoked, themes: Sequence[str], people: Sequence[str], things: Things, text: str
+                ) -> list[tuple[str, str]]:
+    """Which thing goes to whom when things are handed to several people: one of a kind ("give Edith and Walter *a*
+    biscuit", e2e23) or a kind said without a number ("bring *the cups* to Anna and Ben") is one each; a number of
+    them ("*four* cups to Anna and Ben") is dealt out in turn, the first to the first person said; things said one
+    by one ("the milk and the juice to Anna and Ben") go in the order said, one to each, when there are as many as
+    people. Anything else does not share out: refused, as one thing to several people is
+    (:func:`_one_thing_to_several`)."""
+    phrase = evoked.elements.get("theme")
+    said = (phrase.text or "").lower().split() if phrase is not None else []
+    if phrase is not None and not phrase.conjuncts and (said[:1] and said[0] in ONE_EACH or phrase.plural
+                                                        and phrase.quantity is None):
+        return list(zip(things.instances(themes[0], len(people)), people, strict=True))
+    if phrase is not None and not phrase.conjuncts and phrase.quantity is not None and len(themes) >= len(people):
+        return [(thing, people[k % len(people)]) for k, thing in enumerate(themes)]
+    if len(themes) == len(people) and (phrase is None or phrase.conjuncts):
+        return list(zip(themes, people, strict=True))
+    if len(themes) == 1:
+        return [(themes[0], person) for person in people]     # what _one_thing_to_several lets by (a name)
+    what = phrase.text if phrase is not None and phrase.text else " and ".join(themes)
+    raise _located(f"{what!r} are {len(themes)} things for {len(people)} people: the robot cannot tell who gets "
+                   "which; say it thing by thing (\"bring Anna the milk and Ben the juice\")", phrase, text)
 
 
 def _back_to(phrase: Phrase | None, themes: Sequence[str], bindings: Sequence[Binding], things: Things,
@@ -1127,6 +1188,10 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
                   map: Map | None = None, vocabulary: Any = None, every: Mapping[str, int] | None = None) -> Problem:
     """The commanded frames of a parse and the state they start from (see the module's docstring); ``every``:
     how many things of a class "all the ..." asks for, where the map does not place them (:attr:`Things.every`)."""
+    from seal_cli.planning.same import told_too
+
+    if map is not None:             # "tell Ben that breakfast is ready and Anna as well": Anna is told too
+        parse = told_too(parse, {p.name.lower() for p in map.people})
     things = Things(library.taxonomy, map)
     things.every = dict(every or {})
     things.hold(holding)            # before the frames: "put it in the sink" calls what the robot holds
@@ -1150,7 +1215,8 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
                                 "in between (another --done) or drop one of them")
         state = state.apply(binding)
         changed.update((f.positive, text) for f in binding.postconditions)
-    return Problem(parse.text, tuple(commanded), state, tuple(unknown_to_map(commanded, things)) if map else (),
+    warnings = (*unknown_to_map(commanded, things), *chosen_among(commanded, things)) if map else ()
+    return Problem(parse.text, tuple(commanded), state, warnings,
                    tuple(b for b in things.put_away if b in commanded),
                    tuple(b for b in things.put_back if b in commanded), dict(things.called))
 
@@ -1178,6 +1244,15 @@ def _the_ones_said_where(commanded: Sequence[Binding], things: Things) -> None:
                       and n not in things.fixed and things.lies_in(n, source)), None)
         if there is not None:
             things.swap(theme, there)
+
+
+def chosen_among(commanded: Sequence[Binding], things: Things) -> list[str]:
+    """Which place the plan chose, and why, for each place it names that was one of several the command did not
+    tell apart (:meth:`MapNames._one_of <seal_cli.planning.grounding.MapNames._one_of>`): said, not asked."""
+    if things.names is None:
+        return []
+    named = dict.fromkeys(v for b in commanded for _, v in b.values)
+    return [note for id_, note in things.names.chosen.items() if id_ in named]
 
 
 def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:
@@ -1248,16 +1323,20 @@ def naming_done(done: Sequence[str], text: str) -> Iterator[None]:
 
 
 def parse_to_plan(text: str, library: Library, vocabulary: Any = None) -> Parse:
-    """A command as the planner reads it: parsed as said aloud (:func:`~seal_cli.planning.grounding.spoken`),
+    """A command as the planner reads it: parsed as said aloud (:func:`~seal_cli.planning.grounding.spoken`), where
+    a statement beside it says the thing is made part of it (:func:`~seal_cli.planning.told.told_where`),
     each question told to someone found out first (:func:`~seal_cli.planning.questions.told_first`:
     "tell Ben where the spoon is" finds the spoon, then tells Ben where it is), and a question of whether any
     thing at all is somewhere asked as what is there (:func:`~seal_cli.planning.questions.anything_there`)."""
     from seal_cli.language.parser import parse_command
     from seal_cli.planning.grounding import spoken, without_floating_each
     from seal_cli.planning.questions import anything_there, told_first
+    from seal_cli.planning.same import refuse_the_same
+    from seal_cli.planning.told import told_where
 
-    return anything_there(told_first(parse_command(without_floating_each(spoken(text)), library, vocabulary),
-                                     lambda said: parse_command(said, library, vocabulary)))
+    refuse_the_same(text)
+    parsed = told_where(parse_command(without_floating_each(spoken(text)), library, vocabulary), library)
+    return anything_there(told_first(parsed, lambda said: parse_command(said, library, vocabulary)))
 
 
 def _person_words(phrase: Phrase) -> str:

@@ -176,7 +176,8 @@ class Agent:
         put it back"), not where such a thing is kept."""
         self.picked_from: dict[str, str | None] = {}
         """Where each thing the robot picked up lay."""
-        self.started = {i.id: i.at for i in self.world.items.values() if i.movable}
+        self.started = {i.id: i.at for i in self.world.items.values() if i.movable or i.key == "person"}
+        """Where each thing and each person was as the run began (the picture draws what moved from there)."""
         """Where each thing was as the run started (the picture shows where the moved ones came from)."""
         self.known: dict[str, Known] = {}
         self.unreachable: set[str] = set()
@@ -586,6 +587,8 @@ class Agent:
         """Run the grounded frame's primitive actions in the world."""
         acted = False
         question = self.questions.get(binding)
+        if question is not None and question.kind == "state" and (known := self.state_known(binding, question)):
+            return known
         if question is not None and question.kind == "state" and (absent := self.state_absent(binding, question)):
             return absent
         for action in binding.actions:
@@ -1751,6 +1754,24 @@ class Agent:
                                                 f", but it could not look all over it ({complete.message})")
         self.answer(no)
         return Outcome(True, no)
+
+    def state_known(self, binding: Binding, question: Question) -> Outcome | None:
+        """A question of whether a place of the map is open or closed ("is the fridge open?"), answered where the
+        robot stands, as "close the fridge" is when it is shut (:meth:`_open_already`): the map records whether
+        each place is open (``open:``) and only the robot opens and closes things, so this is what it knows, and
+        driving over to look would tell it nothing new. A state the map does not record (a lamp on, a cup clean,
+        a fridge empty) it goes and looks at; None then."""
+        theme = binding.elements.get("theme")
+        words = question.relation.lower().split() or [""]
+        if (theme is None or STATE_WORDS.get(words[-1], (None, True))[0] != "open" or theme not in self.world.items
+                or not self._is_place(theme) or not self.world.items[theme].openable):
+            return None
+        place = self.scene.map.place(theme)
+        as_mapped = place is not None and place.open == self.world.items[theme].is_open
+        how = "as the map has it" if as_mapped else "as it left it"
+        said = f"{self.state_answer(theme, question.relation)} ({how})"
+        self.answer(said)
+        return Outcome(True, said)
 
     def state_answer(self, item_id: str, word: str) -> str:
         """Whether a thing the robot is looking at is in the state a question asks ("is the fridge

@@ -301,8 +301,13 @@ def _draw_run(ax: Any, agent: Agent) -> None:
         return {"label": what} if first else {}
 
     for item in agent.world.items.values():
-        if item.key == "person" and not item.movable:     # the people, and the speaker ("me")
-            ax.plot(*item.at, "^", markersize=7, color="#9467bd", zorder=5, **once("people"))
+        if item.key == "person" and not item.movable:     # the people, and the speaker ("me"), where they are now
+            start = agent.started.get(item.id)
+            if start is not None and math.dist(start, item.at) > 0.05:    # led somewhere: from where they stood
+                ax.plot(*start, "^", markersize=7, markerfacecolor="none", markeredgecolor="#9467bd", zorder=5,
+                        **once("a person led, where they stood at the start"))
+                ax.plot([start[0], item.at[0]], [start[1], item.at[1]], ":", color="#9467bd", linewidth=1, zorder=3)
+            ax.plot(*item.at, "^", markersize=7, color="#9467bd", zorder=LABEL_Z + 2, **once("people"))
             ax.annotate(agent.named(item.id), item.at, xytext=(4, -8), textcoords="offset points", fontsize=6,
                         color="#9467bd", zorder=LABEL_Z, gid=LABEL, bbox=_HALO)
         elif item.movable:

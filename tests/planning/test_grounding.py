@@ -25,7 +25,7 @@ def steps(text: str, library: Library) -> list[str]:
     ("go to the family_room", ["Go(goal=family_room)"]),               # the map's own spelling
     ("go to the couch in the living room", ["Go(goal=sofa_2)"]),       # a synonym, placed by its room
     ("go to the sofa in the family room", ["Go(goal=sofa_1)"]),
-    ("go to the couch", ["Go(goal=sofa_1)"]),                          # the first in the map's order
+    ("go to the couch", ["Go(goal=sofa_2)"]),                          # of two sofas, the nearest the robot drives to
     ("go to sofa 2", ["Go(goal=sofa_2)"]),                             # a place's name with its number
     ("go to the dining table", ["Go(goal=dining_table_1)"]),
     ("go to the tv stand", ["Go(goal=tv_stand_1)"]),
@@ -49,7 +49,7 @@ def test_words_ground_to_the_maps_ids(library: Library, text: str, expected: lis
     ("go to the table in the kitchen", "the apartment has no table in the kitchen; it has dining_table_1 "
                                        "(dining_room), coffee_table_1 (family_room)", 7),
     ("put the cup on the shelf", "the apartment has no shelf; its places are fridge_1", 16),
-    ("pick up the sofa", "'the sofa' (sofa_1) is fixed in the map", 9),
+    ("pick up the sofa", "'the sofa' (sofa_2) is fixed in the map", 9),
     ("clean the bathroom", "the apartment has no bathroom", 7),
     ("go to the washroom", "the apartment has no washroom", 7),       # another name of a room it lacks
     ("go upstairs", "the apartment has no upstairs; its rooms are", 4),   # not a thing to search the house for
@@ -139,7 +139,7 @@ def test_a_frame_that_must_hold_a_fixed_thing_is_refused(library: object) -> Non
     from seal_cli.pipeline import plan
 
     with pytest.raises(SealError, match=r"Clean needs its theme to be an object the robot can handle, and 'the sofa' "
-                                        r"\(sofa_1\) is fixed"):
+                                        r"\(sofa_2\) is fixed"):
         plan("clean the sofa", library, map=load_map("apartment").known())  # type: ignore[arg-type]
 
 

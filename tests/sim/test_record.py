@@ -86,7 +86,7 @@ def test_the_png_labels_where_a_go_ended_as_well_as_each_action(library: Any) ->
     assert [text for _, text in _acts(asked.records)] == [f"answer: {counted.answer}"]   # said once
     state, _ = pipeline.run_on_map(apartment, "is the fridge open?", library, make_policy("oracle"),
                                    rng=np.random.default_rng(0))
-    assert [text for _, text in _acts(state.records)] == ["looked at fridge_1", "answer: no: fridge_1 is closed"]
+    assert [text for _, text in _acts(state.records)] == ["answer: no: fridge_1 is closed (as the map has it)"]
     peeked, _ = pipeline.run_on_map(apartment, "how many cups are in the kitchen?", library, make_policy("sefm", 50),
                                     rng=np.random.default_rng(0))
     labels = [text for _, text in _acts(peeked.records)]      # opened, looked in, closed: one label, not two
@@ -126,6 +126,37 @@ def test_the_png_legend_names_every_mark_and_the_end_is_drawn_over_the_last_acti
         acted = handles[labels.index("where it acted (numbered)")]
         assert end.get_zorder() > acted.get_zorder() and end.get_markerfacecolor() == "none"
         assert tuple(end.get_xydata()[-1]) == tuple(agent.world.robot.trajectory[-1])
+    finally:
+        plt.close(fig)
+
+
+def test_a_person_led_is_drawn_where_they_ended_with_where_they_stood(library: Any) -> None:
+    """e2e25: the picture of "guide Anna to the lounge" showed Anna where she stood at the start (under the robot's
+    end square once she walked with it): now a full triangle where she is, a hollow one where she stood."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.sim.policies import make_policy
+    from seal_cli.sim.record import _draw_run
+
+    agent, result = pipeline.run_on_map(load_map("guesthouse"), "take Anna to the kitchen", library,
+                                        make_policy("oracle"), rng=np.random.default_rng(0))
+    assert result.completed
+    fig, ax = plt.subplots()
+    try:
+        _draw_run(ax, agent)
+        handles, labels = ax.get_legend_handles_labels()
+        stood = handles[labels.index("a person led, where they stood at the start")]
+        assert tuple(stood.get_xydata()[0]) == agent.started["anna"] == (2.0, 8.0)
+        now = [tuple(line.get_xydata()[0]) for line in ax.get_lines() if line.get_marker() == "^"
+               and line.get_markerfacecolor() != "none"]
+        assert agent.world.items["anna"].at in now and (2.0, 8.0) not in now
+        assert load_map("guesthouse").room_of([agent.world.items["anna"].at]) == ["kitchen"]
     finally:
         plt.close(fig)
 
