@@ -39,7 +39,7 @@ if TYPE_CHECKING:
 __all__ = ["LOADER", "MAX_IMAGE_BYTES", "MAX_INPUT_BYTES", "YAML_BREAKS", "Outputs", "atomic_output",
            "atomic_write_text", "clean_up_on_signals", "compose_documents", "compose_yaml", "decode", "interrupted",
            "note_interrupts", "open_regular", "read_bytes", "read_json", "read_json_lines", "read_text", "read_yaml",
-           "remove_temporaries", "split_lines", "stdin_hint", "stream_lines", "typed", "yaml_problem"]
+           "remove_temporaries", "signals_wait", "split_lines", "stdin_hint", "stream_lines", "typed", "yaml_problem"]
 
 if TYPE_CHECKING:
     LOADER: type[yaml.SafeLoader]
@@ -558,6 +558,18 @@ def _release_signals(held: _Held | None) -> None:
             handler(number, None)
         elif handler == signal.SIG_DFL:
             os.kill(os.getpid(), number)
+
+
+@contextlib.contextmanager
+def signals_wait() -> Iterator[None]:
+    """SIGINT, SIGTERM and SIGHUP arriving inside the block are noted, and acted on as they would have been (a
+    KeyboardInterrupt, a SystemExit) when it ends: for a step no interrupt may cut in two, such as starting a
+    process and recording it."""
+    held = _hold_signals()
+    try:
+        yield
+    finally:
+        _release_signals(held)
 
 
 def clean_up_on_signals() -> None:
