@@ -103,7 +103,6 @@ def unordered(function: Callable[[T], R], items: Iterable[T], jobs: int, *,
     system has it, else ``spawn``; each runs ``initializer(*initargs)`` first), yielded as they finish."""
     executor = ProcessPoolExecutor(max(1, jobs), mp_context=_context(method), initializer=_start,
                                    initargs=(initializer, tuple(initargs)))
-    pending: set[Future[R]] = set()
     finished = False
     try:
         with _starting():
@@ -114,7 +113,7 @@ def unordered(function: Callable[[T], R], items: Iterable[T], jobs: int, *,
                 yield _result(future)
         finished = True
     finally:  # any other way out (an interrupt even while the tasks were being submitted): end the workers
-        _stop(executor, pending, early=not finished)
+        _stop(executor, early=not finished)
 
 
 def ordered(function: Callable[[T], R], items: Iterable[T], jobs: int, **options: Any) -> Iterator[R]:
@@ -142,13 +141,13 @@ def _result(future: Future[R]) -> R:
                         "stopped; run it again, with fewer --jobs if memory is short") from None
 
 
-def _stop(executor: ProcessPoolExecutor, pending: set[Future[Any]], *, early: bool) -> None:
-    """Cancel what has not run, end every worker and reap it, then shut the pool down. ``early``: the run did not
-    finish (an error, an interrupt, the caller stopping), so the workers are ended first — terminated, killed after
-    :data:`GRACE` seconds, reaped — and only then is the pool shut down (its manager thread then sees them gone,
-    and waits for nothing); a finished run's workers are ended by the pool itself, then reaped here."""
-    for future in pending:
-        future.cancel()
+def _stop(executor: ProcessPoolExecutor, *, early: bool) -> None:
+    """End every worker and reap it, and shut the pool down, its tasks not yet run cancelled. ``early``: the run did
+    not finish (an error, an interrupt, the caller stopping), so the workers are ended first — terminated, killed
+    after :data:`GRACE` seconds, reaped — and only then is the pool shut down (its manager thread then sees them
+    gone, and waits for nothing); a finished run's workers are ended by the pool itself, then reaped here. The
+    pool's own thread cancels the tasks (cancelled here too, its failing of the tasks of a broken pool met a
+    cancelled one: an ``InvalidStateError`` traceback from that thread)."""
     processes = list((getattr(executor, "_processes", None) or {}).values())
     if early:
         _end(processes)

@@ -197,14 +197,12 @@ def test_the_hostile21_cases_are_named_once_and_say_what_they_must() -> None:
 
 
 @pytest.mark.parametrize("name", ["A run of a room called \"kid's room\"", "A plan of 'bring me zero apples'",
-                                  "A plan with a .frame file of CR lines"])
-# "A bench tasks --suite map --jobs 2 interrupted" is left to `seal bench reliability`: under CI's load (two test
-# workers) it outlived its SIGINT by 60 s twice in stop 35, in hostile22's ProcessPoolExecutor pool (it passed with
-# multiprocessing.Pool); an open defect, written in docs/reliability.md, not hidden by a longer timeout.
+                                  "A plan with a .frame file of CR lines",
+                                  "A bench tasks --suite map --jobs 2 interrupted"])
 def test_picked_hostile22_cases_end_cleanly(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
     """Each failed on main: a room "kid's room" validated, then its plan failed at a line of seal's motion.yaml;
-    "zero apples" planned one; a .frame file of CR lines held no frames, silently. The pool's case passed on main
-    too (an interrupt reached every worker). This tree's code."""
+    "zero apples" planned one; a .frame file of CR lines held no frames, silently. The pool's case outlived its SIGINT
+    by 60 s under load when the interrupt landed while a worker was forked (hostile23). This tree's code."""
     monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
     outcome = run_case(next(c for c in hostile22_cases() if c.name == name))
     assert outcome.problems == []
