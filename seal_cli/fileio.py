@@ -491,9 +491,13 @@ def note_interrupts() -> None:
             (``localize --steps 100000`` for minutes, or to its end, its outputs written): silently here, the
             signal is sent again a moment later (from a thread: sent from here it would be raised in this hook,
             and dropped), to be raised where Python runs then (the command's own code, or the next such callback,
-            which sends it again)."""
+            which sends it again). Once an interrupt has come, another error Python cannot raise is its echo and is
+            dropped too: an object the interrupt left half built fails in its ``__del__`` (llvmlite's
+            ``PassBuilder`` without its ``_as_parameter_``, interrupted while numba compiled), which printed an
+            "Exception ignored" traceback before the command's "interrupted"."""
             if not isinstance(info.exc_value, KeyboardInterrupt):
-                previous(info)
+                if not _INTERRUPTED[0]:
+                    previous(info)
                 return
             import threading
 
