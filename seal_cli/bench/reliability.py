@@ -130,8 +130,8 @@ class Case:
     """Environment variables set (or, with the value ``"<unset>"``, removed) for the command, after the
     suite's own (``COLUMNS=200``, ``NO_COLOR=1``, ``PYTHONWARNINGS=ignore``)."""
     to_worker: bool = False
-    """Send ``signal`` to a child process of the command (a worker of a ``--jobs N`` pool, as the kernel's
-    out-of-memory killer picks one), once it has one, rather than to the command itself."""
+    """Send ``signal`` to a forked worker of the command (of a ``--jobs N`` pool, as the kernel's out-of-memory
+    killer picks one), once it has one, rather than to the command itself."""
 
 
 @dataclass
@@ -358,25 +358,33 @@ def _wait_to_signal(process: subprocess.Popen[bytes], delay: float) -> bool:
     return False
 
 
-def _children(pid: int) -> list[int]:
-    """The process ids of a running process's children (from ``/proc``; none where it cannot be read)."""
+def _workers(pid: int) -> list[int]:
+    """The process ids of a running process's forked workers: its children with its own command line (from
+    ``/proc``; not a helper it runs, such as ``uname`` for :mod:`platform`; none where it cannot be read)."""
     try:
-        return [int(child) for child in Path(f"/proc/{pid}/task/{pid}/children").read_text().split()]
+        children = [int(child) for child in Path(f"/proc/{pid}/task/{pid}/children").read_text().split()]
+        own = Path(f"/proc/{pid}/cmdline").read_bytes()
     except (OSError, ValueError):
         return []
+    found = []
+    for child in children:
+        with contextlib.suppress(OSError):
+            if Path(f"/proc/{child}/cmdline").read_bytes() == own:
+                found.append(child)
+    return found
 
 
 def _send(process: subprocess.Popen[bytes], number: int, to_worker: bool) -> None:
-    """Send signal ``number`` to the process, or (``to_worker``) to its first child once it has one (none while
-    it still runs: nothing is sent)."""
+    """Send signal ``number`` to the process, or (``to_worker``) to its first forked worker once it has one (none
+    while it still runs: nothing is sent)."""
     if not to_worker:
         process.send_signal(number)
         return
     while process.poll() is None:
-        children = _children(process.pid)
-        if children:
+        workers = _workers(process.pid)
+        if workers:
             with contextlib.suppress(ProcessLookupError):
-                os.kill(children[0], number)
+                os.kill(workers[0], number)
             return
         time.sleep(0.01)
 
