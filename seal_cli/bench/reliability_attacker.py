@@ -981,10 +981,10 @@ def hostile23_cases() -> Iterator[Case]:
                (("m.yaml", rooms.format(room="кухня").encode()),), codes=(0,), says=r"recipient=ахмед")
     for kind, entry, line, column in (("room", '  - {name: "kid\'s room", box: [0, 0, 10, 10]}\n', 4, 12),
                                       ("person", '  - {at: [5, 5], name: "Dr. Smith"}\n', 6, 24)):
-        text = "name: m\nbounds: [0, 0, 10, 10]\nrooms:\n" + (entry if kind == "room" else
-                                                           "  - {name: hall, box: [0, 0, 10, 10]}\npeople:\n" + entry)
+        listed = "name: m\nbounds: [0, 0, 10, 10]\nrooms:\n" + (entry if kind == "room" else
+                                                             "  - {name: hall, box: [0, 0, 10, 10]}\npeople:\n" + entry)
         yield Case(f"A validate of a {kind} name no plan can name: said at the name", ("validate", "m.yaml"),
-                   (("m.yaml", text.encode()),), codes=(1,), keep=("m.yaml",),
+                   (("m.yaml", listed.encode()),), codes=(1,), keep=("m.yaml",),
                    says=rf"m\.yaml:{line}:{column}: {kind} name")
     small = rooms.format(room="kitchen").encode()
     goals = ("localize", "--map", "m.yaml", "--task", "go to the kitchen", "--particles", "20")
