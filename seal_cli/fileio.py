@@ -39,7 +39,7 @@ if TYPE_CHECKING:
 __all__ = ["LOADER", "MAX_IMAGE_BYTES", "MAX_INPUT_BYTES", "YAML_BREAKS", "Outputs", "atomic_output",
            "atomic_write_text", "clean_up_on_signals", "compose_documents", "compose_yaml", "decode", "interrupted",
            "note_interrupts", "open_regular", "read_bytes", "read_json", "read_json_lines", "read_text", "read_yaml",
-           "remove_temporaries", "split_lines", "stdin_hint", "stream_lines", "typed", "yaml_problem"]
+           "remove_temporaries", "signals_wait", "split_lines", "stdin_hint", "stream_lines", "typed", "yaml_problem"]
 
 if TYPE_CHECKING:
     LOADER: type[yaml.SafeLoader]
@@ -491,9 +491,13 @@ def note_interrupts() -> None:
             (``localize --steps 100000`` for minutes, or to its end, its outputs written): silently here, the
             signal is sent again a moment later (from a thread: sent from here it would be raised in this hook,
             and dropped), to be raised where Python runs then (the command's own code, or the next such callback,
-            which sends it again)."""
+            which sends it again). Once an interrupt has come, another error Python cannot raise is its echo and is
+            dropped too: an object the interrupt left half built fails in its ``__del__`` (llvmlite's
+            ``PassBuilder`` without its ``_as_parameter_``, interrupted while numba compiled), which printed an
+            "Exception ignored" traceback before the command's "interrupted"."""
             if not isinstance(info.exc_value, KeyboardInterrupt):
-                previous(info)
+                if not _INTERRUPTED[0]:
+                    previous(info)
                 return
             import threading
 
@@ -558,6 +562,18 @@ def _release_signals(held: _Held | None) -> None:
             handler(number, None)
         elif handler == signal.SIG_DFL:
             os.kill(os.getpid(), number)
+
+
+@contextlib.contextmanager
+def signals_wait() -> Iterator[None]:
+    """SIGINT, SIGTERM and SIGHUP arriving inside the block are noted, and acted on as they would have been (a
+    KeyboardInterrupt, a SystemExit) when it ends: for a step no interrupt may cut in two, such as starting a
+    process and recording it."""
+    held = _hold_signals()
+    try:
+        yield
+    finally:
+        _release_signals(held)
 
 
 def clean_up_on_signals() -> None:

@@ -214,6 +214,31 @@ def test_an_interrupt_python_cannot_raise_is_noted_silently(capfd: pytest.Captur
         fileio._INTERRUPTED[0] = False
 
 
+def test_an_error_in_a_del_after_an_interrupt_is_its_echo_not_printed(capfd: pytest.CaptureFixture[str]) -> None:
+    """An object an interrupt left half built fails in its ``__del__`` (llvmlite's ``PassBuilder`` interrupted while
+    numba compiled: "Exception ignored ... AttributeError"): dropped once SIGINT has come, printed before it."""
+    import sys
+
+    from seal_cli import fileio
+
+    class HalfBuilt:
+        def __del__(self) -> None:
+            raise AttributeError("'HalfBuilt' object has no attribute '_as_parameter_'")
+
+    hook = sys.unraisablehook
+    try:
+        sys.unraisablehook = sys.__unraisablehook__
+        fileio.note_interrupts()
+        HalfBuilt()
+        assert "_as_parameter_" in capfd.readouterr().err     # no interrupt yet: Python's own message
+        fileio._INTERRUPTED[0] = True
+        HalfBuilt()
+        assert capfd.readouterr().err == ""
+    finally:
+        sys.unraisablehook = hook
+        fileio._INTERRUPTED[0] = False
+
+
 def test_text_is_read_composed_so_a_decomposed_name_is_the_composed_one(tmp_path: Path) -> None:
     """macOS writes "é" as "e" + U+0301: a map or a command file in that form named rooms no command could reach
     ("the apartment has no caf"); files are read in NFC, which leaves composed and ASCII text as it is."""

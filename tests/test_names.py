@@ -27,7 +27,7 @@ def test_a_name_of_the_bound_passes_and_one_more_is_refused() -> None:
 @pytest.mark.parametrize(("field", "said", "where"), [
     ("map", "map name", (1, 7)),
     ("room", "room name", (4, 11)),
-    ("person", "person name", (7, 5)),
+    ("person", "person name", (7, 12)),   # at the name itself, not at the person
     ("role", "person Sam: role", (7, 5)),
 ])
 def test_a_map_names_the_long_name_at_its_line(tmp_path: Path, field: str, said: str, where: tuple[int, int]) -> None:

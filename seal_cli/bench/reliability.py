@@ -21,6 +21,7 @@ A reliable seal counts zero of each; only ``tried`` grows.
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import os
 import random
@@ -128,6 +129,9 @@ class Case:
     env: tuple[tuple[str, str], ...] = ()
     """Environment variables set (or, with the value ``"<unset>"``, removed) for the command, after the
     suite's own (``COLUMNS=200``, ``NO_COLOR=1``, ``PYTHONWARNINGS=ignore``)."""
+    to_worker: bool = False
+    """Send ``signal`` to a forked worker of the command (of a ``--jobs N`` pool, as the kernel's out-of-memory
+    killer picks one), once it has one, rather than to the command itself."""
 
 
 @dataclass
@@ -263,7 +267,7 @@ def _one(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
         if case.signal is not None:
             number, delay = case.signal
             if _wait_to_signal(process, delay):
-                process.send_signal(number)
+                _send(process, number, case.to_worker)
         out, err = process.communicate(case.stdin, timeout=case.timeout)
     except subprocess.TimeoutExpired:
         os.killpg(process.pid, signal.SIGKILL)
@@ -352,6 +356,37 @@ def _wait_to_signal(process: subprocess.Popen[bytes], delay: float) -> bool:
             return True
         time.sleep(0.005)
     return False
+
+
+def _workers(pid: int) -> list[int]:
+    """The process ids of a running process's forked workers: its children with its own command line (from
+    ``/proc``; not a helper it runs, such as ``uname`` for :mod:`platform`; none where it cannot be read)."""
+    try:
+        children = [int(child) for child in Path(f"/proc/{pid}/task/{pid}/children").read_text().split()]
+        own = Path(f"/proc/{pid}/cmdline").read_bytes()
+    except (OSError, ValueError):
+        return []
+    found = []
+    for child in children:
+        with contextlib.suppress(OSError):
+            if Path(f"/proc/{child}/cmdline").read_bytes() == own:
+                found.append(child)
+    return found
+
+
+def _send(process: subprocess.Popen[bytes], number: int, to_worker: bool) -> None:
+    """Send signal ``number`` to the process, or (``to_worker``) to its first forked worker once it has one (none
+    while it still runs: nothing is sent)."""
+    if not to_worker:
+        process.send_signal(number)
+        return
+    while process.poll() is None:
+        workers = _workers(process.pid)
+        if workers:
+            with contextlib.suppress(ProcessLookupError):
+                os.kill(workers[0], number)
+            return
+        time.sleep(0.01)
 
 
 def run_case(case: Case) -> Outcome:

@@ -29,7 +29,7 @@ from seal_cli.bench.reliability import FRAME, Case, hostile_setting
 
 __all__ = ["alfred2d_data", "attacker_cases", "chain_library", "hostile14_cases", "hostile15_cases", "hostile16_cases",
            "hostile17_cases", "hostile18_cases", "hostile19_cases", "hostile20_cases", "hostile21_cases",
-           "hostile22_cases", "rgba_png", "sparse_pgm"]
+           "hostile22_cases", "hostile23_cases", "rgba_png", "sparse_pgm"]
 
 DIGITS = "1" * 5_000
 """An integer longer than Python converts from text (4,300 digits)."""
@@ -289,6 +289,7 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield from hostile20_cases()
     yield from hostile21_cases()
     yield from hostile22_cases()
+    yield from hostile23_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -955,3 +956,48 @@ def hostile22_cases() -> Iterator[Case]:
     for argv, said in ((("validate", "-"), r"-: no such file or folder: - \('-' is standard input only to seal parse"),
                        (("map", "-"), r"-: no such map file \('-' is standard input only to seal parse")):
         yield Case(f"A {argv[0]} - with a map on standard input", argv, codes=(1,), stdin=b"name: m\n", says=said)
+
+
+def hostile23_cases() -> Iterator[Case]:
+    """Round hostile23: ``--jobs 2`` pools ended from outside (a worker killed as the out-of-memory killer does,
+    the command terminated or hung up), ``localize --goals`` stopped by each signal, rooms and people named in
+    other scripts (end to end), problems of a name said at the name, outputs onto inputs through a link or by name,
+    a map nested deeper than any reader's stack."""
+    suite = ("bench", "tasks", "--suite", "map", "--map", "apartment", "--layouts", "4", "--jobs", "2", "--policies",
+             "sefm,coverage")
+    yield Case("A bench tasks --suite map --jobs 2: a worker killed (SIGKILL)", suite, codes=(1,), to_worker=True,
+               signal=(9, 3.0), says=r"a worker process ended abruptly \(killed by a signal, or out of memory\?\)")
+    for number, code in ((15, 143), (1, 129)):
+        yield Case(f"A bench tasks --suite map --jobs 2: signal {number} to the command", suite,
+                   codes=(code, -number), signal=(number, 5.0))
+    rooms = ("name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {{name: \"{room}\", box: [0, 0, 5, 10]}}\n"
+             "  - {{name: hall, box: [5, 0, 10, 10]}}\npeople:\n  - {{name: Ахмед, at: [7, 5]}}\n")
+    for room, said in (("кухня", "кухня"), ("σαλόνι", "Σαλόνι"), ("厨房", "厨房")):
+        text = rooms.format(room=room).encode()
+        yield Case(f"A run to a room called {room}", ("run", f"go to the {said}", "--map", "m.yaml", "--particles",
+                                                      "20"), (("m.yaml", text),), codes=(0,), keep=("m.yaml",),
+                   says=rf"done: Go\(goal={room}\)")
+    yield Case("A plan of a cup for a person called Ахмед", ("plan", "bring the cup to Ахмед", "--map", "m.yaml"),
+               (("m.yaml", rooms.format(room="кухня").encode()),), codes=(0,), says=r"recipient=ахмед")
+    for kind, entry, line, column in (("room", '  - {name: "kid\'s room", box: [0, 0, 10, 10]}\n', 4, 12),
+                                      ("person", '  - {at: [5, 5], name: "Dr. Smith"}\n', 6, 24)):
+        listed = "name: m\nbounds: [0, 0, 10, 10]\nrooms:\n" + (entry if kind == "room" else
+                                                             "  - {name: hall, box: [0, 0, 10, 10]}\npeople:\n" + entry)
+        yield Case(f"A validate of a {kind} name no plan can name: said at the name", ("validate", "m.yaml"),
+                   (("m.yaml", listed.encode()),), codes=(1,), keep=("m.yaml",),
+                   says=rf"m\.yaml:{line}:{column}: {kind} name")
+    small = rooms.format(room="kitchen").encode()
+    goals = ("localize", "--map", "m.yaml", "--task", "go to the kitchen", "--particles", "20")
+    yield Case("A localize --goals onto the map through a symbolic link", (*goals, "--goals", "l.yaml"),
+               (("m.yaml", small), ("l.yaml", "link:m.yaml")), codes=(1,), keep=("m.yaml",),
+               says=r"l\.yaml.*(would overwrite|is the input|input)")
+    yield Case("A map --png onto the map itself", ("map", "m.yaml", "--png", "m.yaml"), (("m.yaml", small),),
+               codes=(1,), keep=("m.yaml",), says=r"--png")
+    for number, code in ((15, 143), (1, 129)):
+        yield Case(f"A signal {number} during localize --goals", (*goals, "--steps", "100000", "--goals", "g.yaml"),
+                   (("m.yaml", small),), codes=(code, -number), keep=("m.yaml",), absent=("g.yaml",),
+                   signal=(number, 5.0))
+    deep = b"name: m\nbounds: " + b"[" * 100_000 + b"]" * 100_000 + b"\n"
+    yield Case("A a map nested 100,000 lists deep", ("validate", "m.yaml"), (("m.yaml", deep),), codes=(1,),
+               keep=("m.yaml",), says=r"m\.yaml")
+

@@ -16,17 +16,28 @@ every way out of a run ends it:
 - the parent interrupted (SIGINT, SIGTERM as an exception) or the caller stopping early: every pending task is
   cancelled, every worker terminated (killed if it has not gone within :data:`GRACE` seconds) and reaped before
   the exception goes on.
+
+Two things make that hold under load. The workers are started (forked, at the first task) while SIGINT, SIGTERM
+and SIGHUP wait: an interrupt that landed between a fork and the pool's record of the process it made left a worker
+no one knew of, waiting for a task for ever and holding the command's standard output and error open (a judge
+reading them saw a command that outlived its SIGINT). A worker ignores SIGINT (the parent, which a terminal's Ctrl-C
+reaches too, ends its workers) and dies of SIGTERM and SIGHUP at once, even inside a long call of C code, where a
+Python handler inherited from the parent would wait for the call to return.
 """
 
 from __future__ import annotations
 
+import contextlib
 import multiprocessing
+import signal
+import time
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
 from typing import Any, TypeVar
 
 from seal_cli.errors import SealError
+from seal_cli.fileio import signals_wait
 
 __all__ = ["GRACE", "ordered", "unordered"]
 
@@ -36,12 +47,19 @@ R = TypeVar("R")
 GRACE = 2.0
 """Seconds a terminated worker has to end before it is killed."""
 
+_STOPPING = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
+"""The signals that end a run: they wait while workers are started."""
+
 _STARTED: dict[str, BaseException | None] = {"failed": None}
 """In a worker: what its initializer raised, if anything (raised again by each of its tasks)."""
 
 
 def _start(initializer: Callable[..., object] | None, initargs: Sequence[Any]) -> None:
-    """A worker's start: run ``initializer`` and keep what it raised for the first task to raise."""
+    """A worker's start: its own signal handling, then ``initializer``, keeping what it raised for the first task."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent's to act on: it ends its workers
+    for number in _STOPPING[1:]:
+        signal.signal(number, signal.SIG_DFL)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, _STOPPING)  # blocked by the parent while it forked: now acted on
     _STARTED["failed"] = None
     if initializer is None:
         return
@@ -64,6 +82,20 @@ def _context(method: str | None) -> multiprocessing.context.BaseContext:
     return multiprocessing.get_context(method)
 
 
+@contextlib.contextmanager
+def _starting() -> Iterator[None]:
+    """While the pool starts its workers (within the first ``submit``, or each for ``spawn``): SIGINT, SIGTERM and
+    SIGHUP wait, both as Python sees them (noted by :func:`~seal_cli.fileio.signals_wait`, acted on at the end, so
+    every process forked is recorded by then) and as the system does (blocked in this thread, so each new worker
+    holds them until :func:`_start` has set its own handlers)."""
+    with signals_wait():
+        mask = signal.pthread_sigmask(signal.SIG_BLOCK, _STOPPING)
+        try:
+            yield
+        finally:
+            signal.pthread_sigmask(signal.SIG_SETMASK, mask)
+
+
 def unordered(function: Callable[[T], R], items: Iterable[T], jobs: int, *,
               initializer: Callable[..., object] | None = None, initargs: Sequence[Any] = (),
               method: str | None = None) -> Iterator[R]:
@@ -71,17 +103,17 @@ def unordered(function: Callable[[T], R], items: Iterable[T], jobs: int, *,
     system has it, else ``spawn``; each runs ``initializer(*initargs)`` first), yielded as they finish."""
     executor = ProcessPoolExecutor(max(1, jobs), mp_context=_context(method), initializer=_start,
                                    initargs=(initializer, tuple(initargs)))
-    pending: set[Future[R]] = set()
     finished = False
     try:
-        pending = {executor.submit(_call, function, item) for item in items}
+        with _starting():
+            pending = {executor.submit(_call, function, item) for item in items}
         while pending:
             done, pending = wait(pending, return_when=FIRST_COMPLETED)
             for future in done:
                 yield _result(future)
         finished = True
     finally:  # any other way out (an interrupt even while the tasks were being submitted): end the workers
-        _stop(executor, pending, early=not finished)
+        _stop(executor, early=not finished)
 
 
 def ordered(function: Callable[[T], R], items: Iterable[T], jobs: int, **options: Any) -> Iterator[R]:
@@ -109,22 +141,28 @@ def _result(future: Future[R]) -> R:
                         "stopped; run it again, with fewer --jobs if memory is short") from None
 
 
-def _stop(executor: ProcessPoolExecutor, pending: set[Future[Any]], *, early: bool) -> None:
-    """Cancel what has not run, end every worker (terminated, killed after :data:`GRACE` seconds) and reap it.
-    ``early``: the run did not finish (an error, an interrupt, the caller stopping), so the workers still at a task
-    are terminated before the pool is shut down, rather than their tasks awaited — also when the interrupt came
-    while the tasks were being submitted (``pending`` then still empty)."""
-    for future in pending:
-        future.cancel()
+def _stop(executor: ProcessPoolExecutor, *, early: bool) -> None:
+    """End every worker and reap it, and shut the pool down, its tasks not yet run cancelled. ``early``: the run did
+    not finish (an error, an interrupt, the caller stopping), so the workers are ended first — terminated, killed
+    after :data:`GRACE` seconds, reaped — and only then is the pool shut down (its manager thread then sees them
+    gone, and waits for nothing); a finished run's workers are ended by the pool itself, then reaped here. The
+    pool's own thread cancels the tasks (cancelled here too, its failing of the tasks of a broken pool met a
+    cancelled one: an ``InvalidStateError`` traceback from that thread)."""
     processes = list((getattr(executor, "_processes", None) or {}).values())
     if early:
-        for process in processes:
-            if process.is_alive():
-                process.terminate()
-    # the workers ended above: the pool's manager thread sees them gone and ends; it reaps a broken pool's too
+        _end(processes)
     executor.shutdown(wait=True, cancel_futures=True)
+    _end(processes)
+
+
+def _end(processes: list[multiprocessing.process.BaseProcess]) -> None:
+    """Terminate each process, kill those still running after :data:`GRACE` seconds, and reap them all."""
     for process in processes:
-        process.join(GRACE)
+        if process.is_alive():
+            process.terminate()
+    deadline = time.monotonic() + GRACE
+    for process in processes:
+        process.join(max(0.0, deadline - time.monotonic()))
         if process.is_alive():
             process.kill()
             process.join()

@@ -115,7 +115,7 @@ def without_floating_each(text: str) -> str:
 
 def words_of(text: str) -> tuple[str, ...]:
     """The lemmatised words of a phrase, without articles and possessives."""
-    tokens = re.findall(r"[a-z0-9]+", text.lower().replace("_", " "))
+    tokens = re.findall(r"[^\W_]+", text.lower().replace("_", " "))
     return tuple(noun_lemma(t) for t in tokens if t not in DROPPED)
 
 

@@ -19,6 +19,7 @@ from seal_cli.bench.reliability_attacker import (
     hostile20_cases,
     hostile21_cases,
     hostile22_cases,
+    hostile23_cases,
     sparse_pgm,
 )
 from seal_cli.bench.reliability_outsider import outsider_cases
@@ -31,7 +32,8 @@ def test_the_cases_are_new_named_once_and_say_what_the_message_names() -> None:
     assert len(attacker) >= 80 and len({c.name for c in attacker}) == len(attacker)
     others = {c.name for c in [*issue_cases(), *hostile_cases(), *review_cases(), *user_cases(), *outsider_cases()]}
     assert {c.name for c in attacker}.isdisjoint(others)
-    assert all(c.says is not None for c in attacker if c.codes != (0,))
+    # a command a signal ends (exit 128 + n) says nothing, as any Unix tool; every other non-zero ending says why
+    assert all(c.says is not None for c in attacker if c.codes != (0,) and not (c.signal and 1 not in c.codes))
     assert {c.name for c in attacker} <= {c.name for c in cases(0, 0)}
 
 
@@ -197,14 +199,12 @@ def test_the_hostile21_cases_are_named_once_and_say_what_they_must() -> None:
 
 
 @pytest.mark.parametrize("name", ["A run of a room called \"kid's room\"", "A plan of 'bring me zero apples'",
-                                  "A plan with a .frame file of CR lines"])
-# "A bench tasks --suite map --jobs 2 interrupted" is left to `seal bench reliability`: under CI's load (two test
-# workers) it outlived its SIGINT by 60 s twice in stop 35, in hostile22's ProcessPoolExecutor pool (it passed with
-# multiprocessing.Pool); an open defect, written in docs/reliability.md, not hidden by a longer timeout.
+                                  "A plan with a .frame file of CR lines",
+                                  "A bench tasks --suite map --jobs 2 interrupted"])
 def test_picked_hostile22_cases_end_cleanly(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
     """Each failed on main: a room "kid's room" validated, then its plan failed at a line of seal's motion.yaml;
-    "zero apples" planned one; a .frame file of CR lines held no frames, silently. The pool's case passed on main
-    too (an interrupt reached every worker). This tree's code."""
+    "zero apples" planned one; a .frame file of CR lines held no frames, silently. The pool's case outlived its SIGINT
+    by 60 s under load when the interrupt landed while a worker was forked (hostile23). This tree's code."""
     monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
     outcome = run_case(next(c for c in hostile22_cases() if c.name == name))
     assert outcome.problems == []
@@ -214,6 +214,26 @@ def test_the_hostile22_cases_are_named_once_and_say_what_they_must() -> None:
     found = list(hostile22_cases())
     assert len({c.name for c in found}) == len(found) >= 19
     assert all(c.says for c in found)
+
+@pytest.mark.parametrize("name", ["A bench tasks --suite map --jobs 2: a worker killed (SIGKILL)",
+                                  "A run to a room called кухня",
+                                  "A validate of a room name no plan can name: said at the name",
+                                  "A validate of a person name no plan can name: said at the name"])
+def test_picked_hostile23_cases_end_cleanly(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The worker's case passed before this round too (kept: the judge now signals a worker itself); the others
+    failed: "the m has no кухня ... its rooms are кухня", a name's problem said at the room's box or the person's
+    first key. This tree's code."""
+    monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
+    outcome = run_case(next(c for c in hostile23_cases() if c.name == name))
+    assert outcome.problems == []
+
+
+def test_the_hostile23_cases_are_named_once_and_say_what_they_must() -> None:
+    found = list(hostile23_cases())
+    assert len({c.name for c in found}) == len(found) >= 14
+    assert all(c.says for c in found if c.codes in ((0,), (1,)))
+    assert any(c.to_worker for c in found)
+
 
 def test_the_judge_sees_a_command_whose_reader_has_gone_fail(monkeypatch: pytest.MonkeyPatch) -> None:
     """The ``gone-stdout`` stream really is a pipe without a reader: a program that does not expect it fails there."""

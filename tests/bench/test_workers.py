@@ -111,3 +111,65 @@ def test_an_interrupted_or_abandoned_run_ends_its_workers_at_once(stop: str) -> 
         results.close()
     assert time.monotonic() - started < 30   # the two tasks of a minute were not waited for
     assert _no_workers_left()
+
+
+def test_an_interrupt_while_a_worker_is_forked_leaves_no_worker_behind(monkeypatch: pytest.MonkeyPatch) -> None:
+    """SIGINT landing between a fork and the pool's record of its process (under load the fork of a large process
+    is slow): that worker was known to no one, waited for a task for ever and kept the command's output open."""
+    forked: list[int] = []
+    fork = os.fork
+
+    def interrupted_fork() -> int:
+        pid = fork()
+        if pid:
+            forked.append(pid)
+            if len(forked) == 1:
+                os.kill(os.getpid(), signal.SIGINT)   # acted on by Python right here, just after the fork
+        return pid
+
+    monkeypatch.setattr(os, "fork", interrupted_fork)
+    with pytest.raises(KeyboardInterrupt):
+        list(unordered(_square, range(4), 2, method="fork"))
+    assert forked
+    for pid in forked:   # ended and reaped: not even a zombie
+        with pytest.raises(ProcessLookupError):
+            os.kill(pid, 0)
+
+
+def _busy_in_c(n: int) -> int:
+    if n:
+        return sum(range(10**11))   # one call of C code for minutes: no Python signal handler runs meanwhile
+    return os.getpid()
+
+
+def test_a_worker_in_a_long_c_call_is_ended_at_once_though_the_parent_handles_sigterm() -> None:
+    """seal's command line handles SIGTERM in Python (to remove its temporaries); a worker inheriting that handler
+    ran it only when its C call returned, and the pool's shutdown waited for it."""
+    previous = signal.signal(signal.SIGTERM, lambda number, frame: None)
+    try:
+        started = time.monotonic()
+        results = unordered(_busy_in_c, range(3), 2)
+        next(results)
+        time.sleep(0.2)
+        results.close()
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+    assert time.monotonic() - started < 30
+    assert _no_workers_left()
+
+
+def _pid_or_nap(n: int) -> int:
+    if n == 0:
+        return os.getpid()
+    time.sleep(0.5)
+    return n
+
+
+def test_a_ctrl_c_reaching_a_worker_is_left_to_the_parent() -> None:
+    """A terminal's Ctrl-C goes to every process of the foreground group: a worker does not act on it (it ended a
+    task with a KeyboardInterrupt, or a waiting worker with a traceback); the parent, which got it too, does."""
+    results = unordered(_pid_or_nap, range(4), 1)
+    worker = next(results)
+    os.kill(worker, signal.SIGINT)
+    assert sorted(results) == [1, 2, 3]
+    assert _no_workers_left()

@@ -11,7 +11,7 @@ from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
 from seal_cli.maps.formats.map_server import load_map
 from seal_cli.pipeline import plan as plan_text
-from seal_cli.planning.grounding import MapNames, spoken
+from seal_cli.planning.grounding import MapNames, spoken, words_of
 
 APARTMENT = Path(__file__).resolve().parents[2] / "maps" / "apartment.yaml"
 
@@ -330,3 +330,15 @@ def test_there_stands_for_a_compound_place_a_statement_named(library: Library) -
     assert str(here.steps[-1]) == "Bring(theme=cup, recipient=me, source=family_room)"
     lead = plan_text("Sam wants to go to the dining room, lead him there", library, map=load_map(APARTMENT))
     assert str(lead.steps[-1]) == "Guide(theme=sam, goal=dining_room)"
+
+
+@pytest.mark.parametrize(("room", "said"), [("кухня", "кухня"), ("σαλόνι", "Σαλόνι"), ("café", "café")])
+def test_a_room_named_in_any_script_is_reached_by_its_name(library: Library, tmp_path: Path, room: str,
+                                                           said: str) -> None:
+    """A room's name is a proper name, written as its owner writes it: "go to the кухня" was "the m has no кухня
+    ... its rooms are кухня, hall" (a phrase's words were ASCII letters only; "café" was "caf" on both sides)."""
+    (tmp_path / "m.yaml").write_text(f'name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {{name: "{room}", box: [0, 0, 5, '
+                                     '10]}\n  - {name: hall, box: [5, 0, 10, 10]}\n', encoding="utf-8")
+    assert words_of(f"the {said}") == (room,)
+    plan = plan_text(f"go to the {said}", library, map=load_map(tmp_path / "m.yaml"))
+    assert [str(s) for s in plan.steps] == [f"Go(goal={room})"]

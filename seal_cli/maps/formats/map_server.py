@@ -61,7 +61,7 @@ from seal_cli.maps.geometry import (
     shrink_factor,
 )
 from seal_cli.maps.model import Map, MapWarning, ObjectTruth, Person, Place, Robot, Room, Sensor
-from seal_cli.names import check_name_length
+from seal_cli.names import check_name_length, check_sayable
 from seal_cli.resources import map_path
 from seal_cli.yamlnodes import NodeReader
 from seal_cli.yamlnodes import is_null as _is_null
@@ -508,7 +508,7 @@ class _Reader(NodeReader):
             name = self.string(fields["name"], "a room's name") if "name" in fields else None
             if "name" not in fields:
                 self.problem("a room needs a name", item)
-            if name and self.build(functools.partial(check_name_length, name, "room name"), fields["name"]) is None:
+            if name and self.build(functools.partial(_checked_name, name, "room name"), fields["name"]) is None:
                 self.broken.add(name)  # said once, at its name: priors naming it are not said again
                 continue
             shapes = [k for k in ("polygon", "box") if k in fields]
@@ -657,6 +657,8 @@ class _Reader(NodeReader):
                 self.problem("a person needs a name", item)
                 continue
             name = self.string(fields["name"], "a person's name")
+            if name and self.build(functools.partial(_checked_name, name, "person name"), fields["name"]) is None:
+                continue    # said at its name, not at the person's first key
             at = self.xy(fields["at"], f"person {name}: at") if "at" in fields else None
             room = self.string(fields["room"], f"person {name}: room") if "room" in fields else None
             roles = self.roles(fields["role"], f"person {name}: role") if "role" in fields else ()
@@ -712,6 +714,12 @@ class _Reader(NodeReader):
             return None
         args = {("fov_deg" if k == "fov" else k): v for k, v in values.items()}
         return self.build(lambda: Sensor(**args, where=self.where(node)), node)  # type: ignore[arg-type]
+
+
+def _checked_name(name: str, what: str) -> str:
+    """A room's or a person's name, checked where it is written (its length, then whether a command can say it):
+    a problem of the name is said at the name, not at the room's box or the person's first key."""
+    return check_sayable(check_name_length(name, what), what)
 
 
 def _default_name(path: Path) -> str:
