@@ -624,3 +624,67 @@ def test_a_belief_its_looks_refute_hands_the_search_to_the_sweep(library: Librar
     assert policy.refuted(agent, "cup") is None
     view = policy.next_view(agent, agent.steps[0], "cup")
     assert view is not None and "frontier" not in view.why
+
+
+def cottage_agent(library: Library, cup_at: tuple[float, float]) -> tuple[SeFMPolicy, Agent]:
+    """The cottage with only its cup (at ``cup_at``), SeFM with its plan to pick the cup up and its first look taken."""
+    import dataclasses
+
+    from seal_cli.bench.houses import cottage
+    from seal_cli.sim.agent import scene_from_map
+
+    m = cottage()
+    m = dataclasses.replace(m, objects=tuple(dataclasses.replace(o, at=cup_at) for o in m.objects if o.cls == "cup"))
+    policy = SeFMPolicy(particles=100)
+    agent = Agent(scene_from_map(m, library), library, policy, rng=np.random.default_rng(0))
+    agent.state = agent.initial_state()
+    policy.begin(agent)
+    agent.look()
+    commanded = [library.frame("Pick").bind({"theme": "cup"})]
+    agent.todo, agent.steps, agent.index = list(commanded), agent.planner(commanded, library, agent.state), 0
+    return policy, agent
+
+
+def test_the_cell_belief_is_the_prior_with_a_miss_for_every_new_view_that_saw_a_cell(library: Library) -> None:
+    """search22: SeFM's object belief on the map's cells: the prior, times 1 − p for each new view that saw a cell
+    (negative information once per view, as the object filter counts it); a look from within the view step adds
+    nothing, a look from elsewhere counts again."""
+    policy, agent = cottage_agent(library, (13.5, 9.0))
+    m = agent.scene.map
+    prior = np.asarray(m.prior("cup").weights, dtype=float)
+    seen_once = policy.looked == 1
+    assert seen_once.any() and (policy.looked <= 1).all()     # the first look, from the hall
+    b = policy.cell_belief("cup")
+    assert np.allclose(b[~seen_once], prior[~seen_once])
+    assert np.allclose(b[seen_once], prior[seen_once] * (1 - policy.p_detect))
+    before = policy.looked.copy()
+    x, y, _ = agent.world.robot.pose
+    agent.world.robot.pose = (x + 0.2, y, 0.0)                # the same view
+    agent.look(quiet=True)
+    assert (policy.looked == before).all()
+    agent.world.robot.pose = (3.0, 2.5, 0.0)                  # the bedroom: a new view
+    agent.look(quiet=True)
+    centres = m.free_centres
+    sees = np.asarray(agent.world.sensor.region((3.0, 2.5, 0.0)).contains(centres), dtype=bool) & \
+        (np.hypot(centres[:, 0] - 3.0, centres[:, 1] - 2.5) <= agent.world.sensor.range)
+    assert sees.sum() > 1000
+    assert (policy.looked - before == sees).all()
+
+
+def test_with_the_priors_rooms_looked_at_the_search_turns_to_the_rooms_they_do_not_name(library: Library) -> None:
+    """search22: the cup in the kitchen, where its prior (bedroom, family room) puts only the floor. With every cell of
+    both named rooms seen from two views or more, SeFM's belief on the cells keeps less than a third of what is left
+    there (1 − p per new view), and the whole-plan search looks elsewhere."""
+    policy, agent = cottage_agent(library, (13.0, 9.0))
+    m = agent.scene.map
+    for pose in ((4.5, 1.0), (0.5, 4.5), (0.5, 0.5), (5.5, 4.5), (1.5, 6.5), (4.5, 8.5), (0.5, 9.5), (5.5, 5.5)):
+        agent.world.robot.pose = (*pose, 0.0)
+        assert not agent.look(quiet=True)
+    rooms = [r.name for r in m.rooms]
+    named = np.isin(m.free_cell_room, [rooms.index("bedroom"), rooms.index("family_room")])
+    assert policy.looked[named].min() >= 2
+    b = policy.cell_belief("cup")
+    assert b[named].sum() < 0.3 * b.sum()
+    view = policy.next_view(agent, agent.steps[0], "cup")
+    assert view is not None
+    assert m.room_of([agent.grid.point(view.cell)])[0] not in ("bedroom", "family_room")
