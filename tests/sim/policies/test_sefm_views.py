@@ -594,21 +594,7 @@ def test_a_belief_its_looks_refute_hands_the_search_to_the_sweep(library: Librar
     below ``refute_below``: the
     belief says where the cup is not, wrongly, and choosing views by it went round the same rooms (the held-out
     ranch: 200 m); the next view is the frontier sweep's, which assumes nothing. Before the looks it is not."""
-    import dataclasses
-
-    from seal_cli.bench.houses import cottage
-    from seal_cli.sim.agent import scene_from_map
-
-    m = cottage()
-    m = dataclasses.replace(m, objects=tuple(dataclasses.replace(o, at=(13.5, 9.0)) if o.cls == "cup" else o
-                                            for o in m.objects if o.cls in ("cup",)))
-    policy = SeFMPolicy(particles=100)
-    agent = Agent(scene_from_map(m, library), library, policy, rng=np.random.default_rng(0))
-    agent.state = agent.initial_state()
-    policy.begin(agent)
-    agent.look()
-    commanded = [library.frame("Pick").bind({"theme": "cup"})]
-    agent.todo, agent.steps, agent.index = list(commanded), agent.planner(commanded, library, agent.state), 0
+    policy, agent = cottage_agent(library, (13.5, 9.0))
     assert policy.next_view(agent, agent.steps[0], "cup") is not None
     assert policy.refuted(agent, "cup") is None
     for x in np.arange(0.5, 14.0, 1.0):        # the house looked at from views a metre apart, wherever the cup
