@@ -721,8 +721,9 @@ def hostile19_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
     yield Case("A a room name of 5,000 letters: at its line", ("validate", "m.yaml"), (("m.yaml", room.encode()),),
                codes=(1,), keep=("m.yaml",), says=r"m\.yaml:4:11: room name 'k+…' is 5,000 characters long")
     person = f"name: m\nbounds: [0, 0, 10, 10]\npeople:\n  - {{name: {long}, at: [1, 1]}}\n"
+    # said at the name itself since hostile23 (4:12), not at the person's first key (4:5)
     yield Case("A a person name of 5,000 letters: map", ("map", "m.yaml"), (("m.yaml", person.encode()),),
-               codes=(1,), keep=("m.yaml",), says=r"m\.yaml:4:5: person name 'k+…' is 5,000 characters long")
+               codes=(1,), keep=("m.yaml",), says=r"m\.yaml:4:12: person name 'k+…' is 5,000 characters long")
     yield Case("A a map name of 5,000 letters: run", ("run", "go to the hall", "--map", "m.yaml"),
                (("m.yaml", f"name: {long}\nbounds: [0, 0, 10, 10]\n".encode()),), codes=(1,), keep=("m.yaml",),
                says=r"m\.yaml:1:7: map name 'k+…' is 5,000 characters long")
