@@ -304,11 +304,10 @@ class SeFMPolicy(Policy):
                   if p.name in items and items[p.name].openable and not items[p.name].is_open]
         if not self._views.first_look(pose, hidden):
             return
+        from seal_cli.sim.policies.whole_plan import cells_in_sight
+
         centres = self.map.free_centres
-        near = np.flatnonzero(np.hypot(centres[:, 0] - pose[0], centres[:, 1] - pose[1]) <= agent.world.sensor.range)
-        if not len(near):
-            return
-        near = near[np.asarray(agent.world.sensor.region(pose).contains(centres[near]), dtype=bool)]
+        near = cells_in_sight(agent, pose)
         for x, y, r in hidden:
             near = near[np.hypot(centres[near, 0] - x, centres[near, 1] - y) > r]
         self.looked[near] += 1

@@ -30,7 +30,7 @@ from seal_cli.sim.policies.completion import Choice, Target, choose
 from seal_cli.sim.policies.views import SPACING, DriveTable, Lattice, lattice_of
 
 __all__ = ["ADDED_VIEWS", "COVER_SAMPLE", "DOOR_GAP", "MORE_VIEWS", "ROOM_VIEWS", "UNCOVERED", "Candidate", "Region",
-           "WholePlanSearch"]
+           "WholePlanSearch", "cells_in_sight"]
 
 ROOM_VIEWS = 4
 """The most views of a room among the candidates (its best-seeing cells, the best first)."""
@@ -300,10 +300,7 @@ class WholePlanSearch:
 
     def see(self, agent: Agent, pose: tuple[float, float, float]) -> np.ndarray:
         """The free cells the sensor sees from ``pose`` (indices), added to :attr:`seen`."""
-        centres = self.map.free_centres
-        near = np.flatnonzero(np.hypot(centres[:, 0] - pose[0], centres[:, 1] - pose[1]) <= agent.world.sensor.range)
-        if len(near):
-            near = near[np.asarray(agent.world.sensor.region(pose).contains(centres[near]), dtype=bool)]
+        near = cells_in_sight(agent, pose)
         self.seen[near] = True
         return near
 
@@ -512,3 +509,13 @@ class WholePlanSearch:
         costs = {(self.candidates[k].cell, self.candidates[k].open): m for k, m in choice.costs.items()}
         return Decision(View(candidate.cell, candidate.look_at, candidate.open, why), candidate, choice.expected_m,
                         costs)
+
+
+def cells_in_sight(agent: Agent, pose: tuple[float, float, float]) -> np.ndarray:
+    """The map's free cells (indices into ``free_centres``) the robot's sensor sees from ``pose``: within its range
+    and inside its region (field of view and line of sight)."""
+    centres = agent.scene.map.free_centres
+    near = np.flatnonzero(np.hypot(centres[:, 0] - pose[0], centres[:, 1] - pose[1]) <= agent.world.sensor.range)
+    if len(near):
+        near = near[np.asarray(agent.world.sensor.region(pose).contains(centres[near]), dtype=bool)]
+    return near
