@@ -132,6 +132,9 @@ class Case:
     to_worker: bool = False
     """Send ``signal`` to a forked worker of the command (of a ``--jobs N`` pool, as the kernel's out-of-memory
     killer picks one), once it has one, rather than to the command itself."""
+    signal_on: str = ""
+    """Send ``signal`` only once a file whose name matches this pattern is in the case's folder (the command's
+    temporary output, while it is being written); never, if the command ends first."""
 
 
 @dataclass
@@ -266,7 +269,7 @@ def _one(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
     try:
         if case.signal is not None:
             number, delay = case.signal
-            if _wait_to_signal(process, delay):
+            if _wait_to_signal(process, delay) and _wait_for_file(process, folder, case.signal_on):
                 _send(process, number, case.to_worker)
         out, err = process.communicate(case.stdin, timeout=case.timeout)
     except subprocess.TimeoutExpired:
@@ -355,6 +358,17 @@ def _wait_to_signal(process: subprocess.Popen[bytes], delay: float) -> bool:
         if time.perf_counter() - start >= delay and (cpu is None or cpu >= SIGNAL_CPU):
             return True
         time.sleep(0.005)
+    return False
+
+
+def _wait_for_file(process: subprocess.Popen[bytes], folder: Path, pattern: str) -> bool:
+    """Wait until a file whose name matches ``pattern`` is in ``folder`` (at once without a pattern); whether the
+    process still runs."""
+    found = re.compile(pattern) if pattern else None
+    while process.poll() is None:
+        if found is None or any(found.search(name) for name in os.listdir(folder)):
+            return True
+        time.sleep(0.001)
     return False
 
 

@@ -29,7 +29,7 @@ from seal_cli.bench.reliability import FRAME, Case, hostile_setting
 
 __all__ = ["alfred2d_data", "attacker_cases", "chain_library", "hostile14_cases", "hostile15_cases", "hostile16_cases",
            "hostile17_cases", "hostile18_cases", "hostile19_cases", "hostile20_cases", "hostile21_cases",
-           "hostile22_cases", "hostile23_cases", "rgba_png", "sparse_pgm"]
+           "hostile22_cases", "hostile23_cases", "hostile24_cases", "rgba_png", "sparse_pgm", "split_house"]
 
 DIGITS = "1" * 5_000
 """An integer longer than Python converts from text (4,300 digits)."""
@@ -290,6 +290,7 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield from hostile21_cases()
     yield from hostile22_cases()
     yield from hostile23_cases()
+    yield from hostile24_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -1002,3 +1003,106 @@ def hostile23_cases() -> Iterator[Case]:
     yield Case("A a map nested 100,000 lists deep", ("validate", "m.yaml"), (("m.yaml", deep),), codes=(1,),
                keep=("m.yaml",), says=r"m\.yaml")
 
+
+
+def split_house() -> tuple[bytes, str]:
+    """A 10 m × 10 m house at 0.1 m whose free space a wall at x = 5 m splits into two islands (west, east), and the
+    head of its map file (its image, rooms and the robot in the west): what hostile24's reach cases start from."""
+    cells = np.full((100, 100), 254, dtype=np.uint8)
+    cells[:, [0, 50, 99]] = 0
+    cells[[0, 99], :] = 0
+    head = ("image: s.pgm\nresolution: 0.1\norigin: [0, 0, 0]\nname: m\nrobot: {pose: [1, 1, 0]}\nrooms:\n"
+            "  - {name: west, box: [0, 0, 5, 10]}\n  - {name: east, box: [5, 0, 10, 10]}\n")
+    return b"P5\n100 100\n255\n" + cells.tobytes(), head
+
+
+def hostile24_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read top to bottom
+    """Round hostile24: the nearest of several places by path (e2e25's ``maps/reach.py``) on a house split into
+    islands, places out of reach; degenerate grids (1 × 1, 20,000 × 20,000 declared, a resolution of 0 or NaN, an
+    origin at infinity); room names with control characters, line separators, combining marks only, typed
+    decomposed, in scripts whose letters take combining vowel signs; 1,000 ``--done`` commands; a place's ``open``
+    of the wrong type; an alias bomb; outputs onto the image through a link, past ``ulimit -f``, signalled while
+    their temporary is being written, written by two runs at once."""
+    image, head = split_house()
+    beds = head + ("places:\n  - {name: bed_1, class: bed, at: [8, 2]}\n  - {name: bed_2, class: bed, at: [3, 8]}\n"
+                   "  - {name: bed_3, class: bed, at: [9, 9]}\n")
+    far = head + "places:\n  - {name: bed_1, class: bed, at: [8, 2]}\n  - {name: bed_2, class: bed, at: [7, 8]}\n"
+    yield Case("A plan to the bed on a house split by a wall: the nearest by path", ("plan", "go to the bed", "--map",
+                                                                                   "m.yaml"),
+               (("m.yaml", beds.encode()), ("s.pgm", image)), codes=(0,), keep=("m.yaml", "s.pgm"),
+               says=r"chose bed_2, the nearest the robot drives to from where it starts \(\d")
+    yield Case("A plan to the bed when no bed can be reached", ("plan", "go to the bed", "--map", "m.yaml"),
+               (("m.yaml", far.encode()), ("s.pgm", image)), codes=(0,), keep=("m.yaml", "s.pgm"),
+               says=r"^(?![\s\S]*inf m)[\s\S]*'the bed' could be bed_1 \(east\) or bed_2 \(east\): none can be reached "
+                    r"from where the robot starts")
+    yield Case("A run to a bed on the other island", ("run", "go to bed_1", "--map", "m.yaml", "--particles", "20"),
+               (("m.yaml", far.encode()), ("s.pgm", image)), codes=(1,), keep=("m.yaml", "s.pgm"),
+               says=r"not done: bed_1 cannot be reached from anywhere the robot can drive — 0\.00 m driven")
+    yield Case("A run to a room on the other island", ("run", "go to the east", "--map", "m.yaml", "--particles", "20"),
+               (("m.yaml", far.encode()), ("s.pgm", image)), codes=(1,), keep=("m.yaml", "s.pgm"),
+               says=r"not done: cannot drive into east")
+    # -- degenerate grids ------------------------------------------------------------------------------------------
+    one = (b"image: o.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nrooms:\n  - {name: hall, box: [0, 0, 0.05, 0.05]}\n"
+           b"places:\n  - {name: bed_1, class: bed, at: [0.02, 0.02]}\n")
+    yield Case("A run on a map of one free cell", ("run", "go to the bed", "--map", "m.yaml", "--particles", "20"),
+               (("m.yaml", one), ("o.pgm", b"P5\n1 1\n255\n\xfe")), codes=(0,), keep=("m.yaml", "o.pgm"),
+               says=r"done: Go\(goal=bed_1\)")
+    yield Case("A run on a map of one occupied cell", ("run", "go to the bed", "--map", "m.yaml"),
+               (("m.yaml", one), ("o.pgm", b"P5\n1 1\n255\n\x00")), codes=(1,), keep=("m.yaml", "o.pgm"),
+               says=r"m\.yaml.*(no free space|outside|occupied)")
+    grid = b"image: g.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n"
+    for what, text, said in (
+            ("an image declared 20,000 × 20,000", grid, r"m\.yaml:1:8: the image is 20,000×20,000 pixels"),
+            ("a resolution of 0", grid.replace(b"0.05", b"0"), r"m\.yaml:2:13: "),
+            ("a resolution of NaN", grid.replace(b"0.05", b".nan"), r"m\.yaml:2:13: "),
+            ("an origin at infinity", grid.replace(b"[0, 0", b"[.inf, 0"), r"m\.yaml:3:10: ")):
+        yield Case(f"A validate of {what}", ("validate", "m.yaml"),
+                   (("m.yaml", text), ("g.pgm", b"P5\n20000 20000\n255\n" + b"\xfe" * 4096)), codes=(1,),
+                   keep=("m.yaml", "g.pgm"), says=said, timeout=30)
+    # -- room names ------------------------------------------------------------------------------------------------
+    named = 'name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {{name: "{room}", box: [0, 0, 5, 10]}}\n' \
+            '  - {{name: lounge, box: [5, 0, 10, 10]}}\nrobot: {{pose: [7, 5, 0]}}\n'
+    for room, said in (("ha\\tll", r"'\\t'"), ("hall\\x85", r"'\\x85'"), ("hall\\u2028", r"'\\u2028'"),
+                       ("\\u0301\\u0301", r"no letter")):
+        yield Case(f"A validate of a room called {room}", ("validate", "m.yaml"),
+                   (("m.yaml", named.format(room=room).encode()),), codes=(1,), keep=("m.yaml",),
+                   says=rf"m\.yaml:4:12: room name .*{said}")
+    for room, command, goal in (("cafe\u0301", "go to the café", "café"), ("रसोई", "go to the रसोई", "रसोई"),
+                                ("ครัว", "go to the ครัว", "ครัว"), ("İstanbul", "go to the İstanbul", "i̇stanbul"),
+                                ("ha\u0336l\u0336l", "go to the ha\u0336l\u0336l", "ha\u0336l\u0336l")):
+        yield Case(f"A run to a room called {room.encode('unicode_escape').decode()}",
+                   ("run", command, "--map", "m.yaml", "--particles", "20"),
+                   (("m.yaml", named.format(room=room).encode()),), codes=(0,), keep=("m.yaml",),
+                   says=rf"done: Go\(goal={goal}\)")
+    # -- --done, open, aliases -------------------------------------------------------------------------------------
+    done = tuple(a for _ in range(1_000) for a in ("--done", "go to the kitchen"))
+    for argv in (("plan", "bring me the cup", "--map", "apartment"),
+                 ("run", "bring me the cup", "--map", "apartment", "--particles", "20")):
+        yield Case(f"A {argv[0]} with 1,000 --done commands", (*argv, *done), codes=(0,), says=r"Bring")
+    fridge = "name: m\nbounds: [0, 0, 10, 10]\nplaces:\n  - {{name: fridge_1, class: fridge, at: [5, 5], openable: " \
+             "true, open: {value}}}\n"
+    for value, shown in (("[true]", "a list"), ("{a: 1}", "a mapping")):
+        yield Case(f"A validate of a fridge whose open is {shown}", ("validate", "m.yaml"),
+                   (("m.yaml", fridge.format(value=value).encode()),), codes=(1,), keep=("m.yaml",),
+                   says=rf"m\.yaml:4:71: open must be true or false, not {shown}$")
+    laughs = ['a0: &a0 ["lol", "lol", "lol", "lol", "lol", "lol", "lol", "lol", "lol", "lol"]',
+              *(f"a{i}: &a{i} [" + ", ".join([f"*a{i - 1}"] * 10) + "]" for i in range(1, 10))]
+    bomb = "name: m\nbounds: [0, 0, 10, 10]\nlaughs:\n" + "".join(f"  {line}\n" for line in laughs) + "rooms: *a9\n"
+    yield Case("A run on a map of a billion laughs", ("run", "go to the hall", "--map", "m.yaml"),
+               (("m.yaml", bomb.encode()),), codes=(1,), keep=("m.yaml",), timeout=30,
+               says=r"m\.yaml: this file holds more than 1,000,000 values once its aliases")
+    # -- outputs ---------------------------------------------------------------------------------------------------
+    m, apartment, _, both, inputs, _, _ = hostile_setting()
+    run = ("run", "go to the kitchen", "--map", "m.yaml", "--particles", "20")
+    yield Case("A run --png onto the map's image through a link", (*run, "--png", "l.png"),
+               (*both, ("l.png", "link:apartment.pgm")), codes=(1,), keep=inputs,
+               says=r"--png l\.png would overwrite the input apartment\.pgm")
+    yield Case("A run --png --rrd past ulimit -f of 4 KiB", (*run, "--png", "o.png", "--rrd", "o.rrd"), both,
+               codes=(1,), keep=inputs, file_blocks=8, absent=("o.png", "o.rrd"),
+               says=r"error: cannot write --(png o\.png|rrd o\.rrd)")
+    for number, code in ((15, 143), (2, 130)):
+        yield Case(f"A signal {number} while run --png --rrd writes its temporary",
+                   (*run, "--png", "o.png", "--rrd", "o.rrd"), both, codes=(code, -number), keep=inputs,
+                   absent=("o.png", "o.rrd"), signal=(number, 0.0), signal_on=r"\.seal\d+-[0-9a-f]{8}\.tmp")
+    yield Case("A two run --png --rrd at once onto the same files", (*run, "--png", "o.png", "--rrd", "o.rrd"), both,
+               codes=(0,), keep=inputs, parallel=2, whole=("o.png", "o.rrd"))
