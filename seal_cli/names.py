@@ -60,16 +60,20 @@ def check_plannable(name: str, what: str, where: Where | None = None) -> str:
     ``"R&D lab"``) or whose first word starts with a digit (``"2nd floor"``) validated, then failed every plan
     that went there with ``argument "kid's_room" is not a name``, said at a line of seal's own ``motion.yaml``
     (or, for ``&``, at the character of the command, hostile22). Spaces, '_' and '-' part words; the letters
-    of any script and their accents (combining marks) stay."""
+    of any script and their accents (combining marks) stay. A tab, a line's end (U+0085, U+2028) and a name of marks
+    alone (accents on nothing) validated (hostile24)."""
     import unicodedata
 
     for character in name:
-        if not (character.isalnum() or character.isspace() or character in "_-"
-                or unicodedata.category(character).startswith("M")):
+        if not (character.isalnum() or character in "_-" or unicodedata.category(character).startswith("M")
+                or character.isspace() and unicodedata.category(character) == "Zs"):  # not a tab, nor a line's end
             raise SealError(f"{what} {name!r} holds {character!r}, which a plan cannot name (it names a room or a "
                             "person by its words joined by '_'): name it in letters, digits and spaces ('-' and "
                             "'_' part words too)", where)
     first = next((c for c in name if c.isalnum()), "")
+    if not first:
+        raise SealError(f"{what} {name!r} holds no letter or digit, so no command can say it (a name is said by its "
+                        "words): name it in letters, digits and spaces", where)
     if first.isdigit():
         raise SealError(f"{what} {name!r} starts with a digit, which a plan cannot name (it names a room or a person "
                         "by its words joined by '_', a name starting with a letter): put the number after a word, "

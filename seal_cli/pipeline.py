@@ -179,9 +179,10 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
         m = replace(m, robot=Robot(m.robot.pose, holding))
     known = vocabulary_of_map(m)
     vocabulary = known if vocabulary is None else replace(vocabulary.restricted_to(known.classes), house=True)
+    known_map = m.known()     # once: a map checks itself when made (0.1 s), and --done may hold 1,000 commands
     with naming_done(done, text):
         parses = [parse_to_plan(t, library, vocabulary) for t in (*done, text)]
-        problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=m.known(),
+        problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=known_map,
                                 vocabulary=vocabulary)
     questions = read_questions(parses[-1], problem.commanded, MapNames(m, library.taxonomy))
     condition, check = _condition_check(parses[-1], library, vocabulary, m)
@@ -194,7 +195,7 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
                   sweeper=lambda: make_policy("coverage"), questions=questions,
                   clock=clock, search_end=search_end, put_away=kept, put_back=problem.put_back,
                   heed_sources=True, names=problem.names, absent_said=True)
-    executed = [b for p in parses[:-1] for b in build_problem(p, library, map=m.known()).commanded]
+    executed = [b for p in parses[:-1] for b in build_problem(p, library, map=known_map).commanded]
     warnings = [*problem.warnings, *(unchecked_conditions(parses[-1]) if check is None else [])]
     for warning in warnings:
         agent.say("warn", f"warning: {warning}")

@@ -111,3 +111,24 @@ def test_a_room_or_person_name_no_plan_can_name_is_refused(name: str, said: str)
         Room(name, ((0, 0), (1, 0), (1, 1)))
     with pytest.raises(SealError, match=re.escape(said.replace("room name", "person name"))):
         Person(name, at=(0.5, 0.5))
+
+
+@pytest.mark.parametrize(("name", "said"), [
+    ("ha\tll", "room name 'ha\\tll' holds '\\t', which a plan cannot name"),
+    ("hall\x85", "holds '\\x85', which a plan cannot name"),
+    ("hall\u2028", "holds '\\u2028', which a plan cannot name"),
+    ("\u0301\u0301", "holds no letter or digit, so no command can say it"),
+])
+def test_a_name_with_a_tab_a_line_end_or_no_letter_is_refused(name: str, said: str) -> None:
+    # each validated (a tab and U+0085 are spaces to str.isspace, a name of accents alone had no letter to fail on)
+    # (hostile24)
+    from seal_cli.maps.model import Room
+
+    with pytest.raises(SealError, match=re.escape(said)):
+        Room(name, ((0, 0), (1, 0), (1, 1)))
+
+
+def test_a_name_with_a_no_break_space_is_sayable() -> None:
+    from seal_cli.names import check_sayable
+
+    assert check_sayable("living\u00a0room", "room name") == "living\u00a0room"

@@ -132,6 +132,11 @@ STARTED = False
 """Whether a command's body has started (:func:`run_command`): what typer prints before one (its help, a usage
 error) is answered by :func:`run_framework`."""
 
+STOPPED: list[BaseException] = []
+"""The interrupt that stopped the command, kept: its traceback holds the frames it unwound, whose objects are then
+never freed. One was numba's half-built llvmlite module, which segfaulted when freed (exit -11 instead of 130,
+hostile24); the process then ends without freeing them (``seal_cli.__main__``)."""
+
 READER_GONE = False
 """Whether a write to standard output or error found its reader gone (``EPIPE``: ``seal --help | head -1``)."""
 
@@ -160,7 +165,8 @@ def run_command(function: Callable[[], int | None]) -> int:
     except SealError as error:
         report(error)
         return 1
-    except KeyboardInterrupt:
+    except KeyboardInterrupt as stop:
+        STOPPED.append(stop)
         if FINISHED is not None:  # an interrupt after the command finished changes nothing it did
             return FINISHED
         if committed():  # its outputs are in place, whole: what is left (a summary printed) is not worth a failure

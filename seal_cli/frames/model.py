@@ -32,7 +32,7 @@ _ATOM = re.compile(r"\s*(?P<neg>not\s+)?(?P<name>[^\W\d]\w*)\s*(?:\((?P<args>[^(
 
 def _check_identifier(kind: str, text: str, where: Where | None) -> None:
     check_name_length(text, kind, where)
-    if not IDENTIFIER.match(text):
+    if not (IDENTIFIER.match(text) or text.isidentifier()):    # a mark after a letter too: "i̇stanbul", "रसोई"
         raise SealError(f"{kind} {text!r} is not a name (letters, digits and '_', not starting with a digit)",
                         where)
 

@@ -107,11 +107,13 @@ def tokenize(text: str) -> list[Word]:
         raise CommandError(f"control character U+{ord(bad.group()):04X} in the command", bad.start() + 1,
                            printable(text), ["a word"])
     said = text
+    read = text
     if not text.isascii():
         text = _digits_of_any_script(text)
+        read = _marks_as_letters(text)
     words: list[Word] = []
     pos = 0
-    for match in _TOKEN.finditer(text):
+    for match in _TOKEN.finditer(read):
         start, end = match.span()
         if start != pos:
             raise CommandError(_unexpected(said[pos]), pos + 1, said, ["a word"])
@@ -120,10 +122,10 @@ def tokenize(text: str) -> list[Word]:
         if kind == "space" or kind == "quote":
             continue                    # as many spaces as words: the commonest token first
         if kind == "word":
-            if not match.group().isascii():
-                _check_whole_numbers(match.group(), start, said)
-                _check_one_alphabet(match.group(), start, said)
-            typed = match.group()
+            typed = text[start:end]
+            if not typed.isascii():
+                _check_whole_numbers(typed, start, said)
+                _check_one_alphabet(typed, start, said)
             slip = function_word(typed.lower()) if typed.isalpha() and (typed.islower() or typed[1:].islower() and (
                 not words or words[-1].lower in END_MARKS)) else None
             words.append(Word(typed, start, pos, lower=slip))    # "wher": "where" (slips.function_word)
@@ -158,6 +160,20 @@ def _digits_of_any_script(text: str) -> str:
     import unicodedata
 
     return _OTHER_DIGIT.sub(lambda m: str(unicodedata.digit(m[0])), text)
+
+
+def _marks_as_letters(text: str) -> str:
+    """``text`` with each combining mark that follows a letter (or another such mark) as the letter "a", one
+    character for one, for the word pattern to match: it takes letters only (Python's ``\\w`` holds no mark), so the
+    vowel signs of Devanagari or Thai ("रसोई", "ครัว": kitchen) and a decomposed accent were "unexpected character"
+    (hostile24). The words keep their own characters."""
+    import unicodedata
+
+    out = list(text)
+    for i in range(1, len(out)):
+        if unicodedata.category(out[i]).startswith("M") and out[i - 1].isalpha():
+            out[i] = "a"
+    return "".join(out)
 
 
 def _check_whole_numbers(word: str, start: int, text: str) -> None:

@@ -345,6 +345,12 @@ class MapNames:
         best = min(range(len(among)), key=lambda k: (lengths[k], k))
         one = among[best]
         which = f" of those in the {spoken(one.room or '')} (the room said before it)," if inside else ""
+        if math.isinf(lengths[best]):       # a house split in islands: no path to any ("inf m" said before)
+            said = said.removesuffix(": chose")
+            self.chosen.setdefault(one.id, f"{said}: none can be reached from where the robot starts; chose "
+                                   f"{one.id},{which} the first the map lists; say its room or its number "
+                                   f"('{one.id}') to choose")
+            return one
         self.chosen.setdefault(one.id, f"{said} {one.id},{which} the nearest the robot drives to from where it "
                                f"starts ({lengths[best]:.1f} m); say its room or its number ('{one.id}') to choose")
         return one

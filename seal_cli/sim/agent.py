@@ -974,7 +974,10 @@ class Agent:
                 cell = self.policy.stand(self, self.known[target])
                 if cell is None:
                     self.unreachable.add(target)
-                    self.say("fail", f"{target} cannot be reached from anywhere the robot can drive")
+                    said = f"{target} cannot be reached from anywhere the robot can drive"
+                    self.say("fail", said)
+                    if target == value and self.scene.map.place(value) is not None:
+                        return Fatal(False, said)   # the one place the plan names: no other to search for
                     continue
                 self.chosen[class_key(value)] = target
                 said = "the speaker" if target == SPEAKER else \

@@ -389,3 +389,21 @@ def test_help_shown_for_a_missing_command_keeps_its_code_when_its_reader_has_gon
     # `seal` alone prints the help and exits 2 (typer's usage error); its reader gone, it is still 2, not 0 (hostile21)
     done = _seal_into("gone", *argv)
     assert (done.returncode, done.stderr) == (code, "")
+
+
+def test_an_interrupt_ends_the_process_without_freeing_what_it_left_half_built() -> None:
+    """SIGINT inside numba's compiling left an llvmlite object half built; freeing it (when the interrupt's traceback
+    went) was a segmentation fault, exit -11 (hostile24). Here an object whose freeing crashes the same way."""
+    code = ("import ctypes, os, signal, sys, time\n"
+            "import seal_cli.__main__ as m, seal_cli.cli as c\n"
+            "from seal_cli.cli.output import run_command\n"
+            "class HalfBuilt:\n"
+            "    def __del__(self): ctypes.string_at(0)\n"
+            "def body():\n"
+            "    kept = HalfBuilt()\n"
+            "    os.kill(os.getpid(), signal.SIGINT)\n"
+            "    time.sleep(30)\n"
+            "def command(): sys.exit(run_command(body))\n"
+            "c.main = command\nsys.argv = ['seal', 'frames']\nm.main()\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=False, timeout=60)
+    assert (done.returncode, done.stderr) == (130, "interrupted\n")

@@ -63,3 +63,17 @@ def test_an_invisible_or_undecoded_character_is_named(text: str, column: int, sa
     with pytest.raises(CommandError, match=re.escape(said)) as caught:
         tokenize(text)
     assert caught.value.column == column
+
+
+@pytest.mark.parametrize("word", ["\u0930\u0938\u094b\u0908", "\u0e04\u0e23\u0e31\u0e27", "ha\u0336l\u0336l",
+                                  "\u0130stanbul"])
+def test_a_word_whose_letters_take_combining_marks_is_one_word(word: str) -> None:
+    # Devanagari's and Thai's vowel signs are combining marks, which Python's \w holds not: "go to the रसोई" was
+    # "unexpected character 'ो' (U+094B DEVANAGARI VOWEL SIGN O)" (hostile24)
+    assert [w.text for w in tokenize(f"go to the {word} now")] == ["go", "to", "the", word, "now"]
+
+
+def test_a_mark_on_no_letter_is_still_refused_at_its_column() -> None:
+    with pytest.raises(CommandError, match=r"unexpected character .*U\+0301") as caught:
+        tokenize("go to the \u0301hall")
+    assert caught.value.column == 11

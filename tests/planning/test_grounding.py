@@ -342,3 +342,18 @@ def test_a_room_named_in_any_script_is_reached_by_its_name(library: Library, tmp
     assert words_of(f"the {said}") == (room,)
     plan = plan_text(f"go to the {said}", library, map=load_map(tmp_path / "m.yaml"))
     assert [str(s) for s in plan.steps] == [f"Go(goal={room})"]
+
+
+def test_a_place_of_several_none_reachable_is_said_so_not_inf_metres(library: Library, tmp_path: Path) -> None:
+    """Two beds beyond a wall with no door: "chose bed_1, the nearest the robot drives to ... (inf m)" (hostile24)."""
+    from seal_cli.bench.reliability_attacker import split_house
+
+    image, head = split_house()
+    (tmp_path / "s.pgm").write_bytes(image)
+    (tmp_path / "m.yaml").write_text(head + "places:\n  - {name: bed_1, class: bed, at: [8, 2]}\n"
+                                     "  - {name: bed_2, class: bed, at: [7, 8]}\n", encoding="utf-8")
+    plan = plan_text("go to the bed", library, map=load_map(tmp_path / "m.yaml"))
+    assert [str(s) for s in plan.steps] == ["Go(goal=bed_1)"]
+    said = " ".join(plan.warnings)
+    assert "none can be reached from where the robot starts; chose bed_1, the first the map lists" in said
+    assert "inf m" not in said

@@ -676,3 +676,19 @@ def test_a_further_instance_in_a_house_is_sought_by_its_prior_where_not_yet_look
     texts = [r.text for r in agent.records]
     assert result.completed and "put mug_1 on kitchen_table_1" in texts and "handed mug_2 to me" in texts
     assert result.path_m < 60.0, result.path_m
+
+
+def test_the_one_place_a_plan_names_out_of_reach_ends_the_run_at_once(library: Library, tmp_path) -> None:  # noqa: ANN001
+    """bed_1 beyond a wall with no door: the robot said it could not be reached, then searched the west half for 14 m
+    "for bed_1" and gave up "found no bed_1" (hostile24). A place of the map is that place: there is no other."""
+    from seal_cli import pipeline
+    from seal_cli.bench.reliability_attacker import split_house
+    from seal_cli.maps.formats.map_server import load_map
+
+    image, head = split_house()
+    (tmp_path / "s.pgm").write_bytes(image)
+    (tmp_path / "m.yaml").write_text(head + "places:\n  - {name: bed_1, class: bed, at: [8, 2]}\n", encoding="utf-8")
+    _, result = pipeline.run_on_map(load_map(tmp_path / "m.yaml"), "go to bed_1", library, make_policy("sefm"),
+                                    rng=np.random.default_rng(0))
+    assert not result.completed and result.path_m == 0.0
+    assert result.reason == "bed_1 cannot be reached from anywhere the robot can drive"

@@ -47,7 +47,7 @@ import yaml
 from numpy.typing import NDArray
 
 from seal_cli.errors import SealError, SealErrors, Where
-from seal_cli.fileio import MAX_IMAGE_BYTES, compose_yaml, read_bytes, read_text
+from seal_cli.fileio import MAX_IMAGE_BYTES, compose_yaml, composed, read_bytes, read_text
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.geometry import (
     FREE,
@@ -354,11 +354,18 @@ class _Reader(NodeReader):
         values = self.numbers(node, what, (2,))
         return (values[0], values[1]) if values else None
 
+    def name(self, node: yaml.Node, what: str) -> str | None:
+        """A room's, place's or person's name, composed (NFC) as a command is: a YAML escape ("cafe\\u0301") can
+        still spell it decomposed after the file's text was composed, and "go to the café" missed it."""
+        text = self.string(node, what)
+        return composed(text) if text else text
+
     def boolean(self, node: yaml.Node, what: str) -> bool | None:
         value = self.value(node) if isinstance(node, yaml.ScalarNode) else None
         if isinstance(value, bool) or value in (0, 1):
             return bool(value)
-        self.problem(f"{what} must be true or false, not {getattr(node, 'value', _shape(node))!r}", node)
+        shown = repr(node.value) if isinstance(node, yaml.ScalarNode) else _shape(node)     # not a list's nodes
+        self.problem(f"{what} must be true or false, not {shown}", node)
         return None
 
     def pairs_at(self, node: yaml.Node, what: str, path: Path_, allowed: tuple[str, ...] | None = None
@@ -505,7 +512,7 @@ class _Reader(NodeReader):
             fields = {key: value for key, _, value in self.pairs_at(item, "a room", ("rooms", i), ROOM_KEYS)}
             if not isinstance(item, yaml.MappingNode):
                 continue
-            name = self.string(fields["name"], "a room's name") if "name" in fields else None
+            name = self.name(fields["name"], "a room's name") if "name" in fields else None
             if "name" not in fields:
                 self.problem("a room needs a name", item)
             if name and self.build(functools.partial(_checked_name, name, "room name"), fields["name"]) is None:
@@ -559,7 +566,7 @@ class _Reader(NodeReader):
             missing = [k for k in ("name", "class", "at") if k not in fields]
             if missing:
                 self.problem(f"a place needs {', '.join(missing)}", item)
-            name = self.string(fields["name"], "a place's name") if "name" in fields else None
+            name = self.name(fields["name"], "a place's name") if "name" in fields else None
             cls = self.string(fields["class"], "a place's class") if "class" in fields else None
             at = self.xy(fields["at"], f"place {name}: at") if "at" in fields else None
             openable = self.boolean(fields["openable"], "openable") if "openable" in fields else False
@@ -656,7 +663,7 @@ class _Reader(NodeReader):
             if "name" not in fields:
                 self.problem("a person needs a name", item)
                 continue
-            name = self.string(fields["name"], "a person's name")
+            name = self.name(fields["name"], "a person's name")
             if name and self.build(functools.partial(_checked_name, name, "person name"), fields["name"]) is None:
                 continue    # said at its name, not at the person's first key
             at = self.xy(fields["at"], f"person {name}: at") if "at" in fields else None

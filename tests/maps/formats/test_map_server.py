@@ -286,3 +286,25 @@ def test_the_area_of_a_polygon_inside_a_box() -> None:
     assert clipped_area(box_polygon(0, 0, 1, 1), (5, 5, 6, 6)) == 0.0
     concave = [[0, 0], [6, 0], [6, 6], [4, 6], [4, 2], [2, 2], [2, 6], [0, 6]]     # a U: 28 m²
     assert clipped_area(concave, (0, 0, 6, 3)) == pytest.approx(16.0)               # its lower 3 m: 12 + 2 × 2
+
+
+@pytest.mark.parametrize(("value", "shown"), [("[true]", "a list"), ("{a: 1}", "a mapping"), ('"yes"', "'yes'")])
+def test_an_open_of_another_type_is_said_as_its_shape(tmp_path: Path, value: str, shown: str) -> None:
+    # a list was said as "not [ScalarNode(tag='tag:yaml.org,2002:bool', value='true')]" (hostile24)
+    (tmp_path / "m.yaml").write_text("name: m\nbounds: [0, 0, 10, 10]\nplaces:\n  - {name: fridge_1, class: fridge, "
+                                     f"at: [5, 5], openable: true, open: {value}}}\n")
+    with pytest.raises(SealError) as caught:
+        load_map(tmp_path / "m.yaml")
+    assert (caught.value.message, caught.value.line, caught.value.column) == (
+        f"open must be true or false, not {shown}", 4, 71)
+
+
+def test_a_name_spelt_decomposed_by_a_yaml_escape_is_read_composed(tmp_path: Path) -> None:
+    # "cafe\u0301" in a double-quoted scalar is decomposed after the file's text was composed: "go to the café" was
+    # "the m has no café ...; its rooms are café, lounge" (hostile24)
+    (tmp_path / "m.yaml").write_text('name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {name: "cafe\\u0301", box: '
+                                     '[0, 0, 5, 10]}\nplaces:\n  - {name: "pe\\u0301tanque_1", class: table, '
+                                     'at: [2, 2]}\npeople:\n  - {name: "Zoe\\u0308", at: [1, 1]}\n')
+    m = load_map(tmp_path / "m.yaml")
+    assert [r.name for r in m.rooms] == ["caf\u00e9"]
+    assert [p.name for p in m.places] == ["p\u00e9tanque_1"] and [p.name for p in m.people] == ["Zo\u00eb"]
