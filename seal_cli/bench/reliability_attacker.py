@@ -1105,4 +1105,4 @@ def hostile24_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
                    (*run, "--png", "o.png", "--rrd", "o.rrd"), both, codes=(code, -number), keep=inputs,
                    absent=("o.png", "o.rrd"), signal=(number, 0.0), signal_on=r"\.seal\d+-[0-9a-f]{8}\.tmp")
     yield Case("A two run --png --rrd at once onto the same files", (*run, "--png", "o.png", "--rrd", "o.rrd"), both,
-               codes=(0,), keep=inputs, parallel=2, whole=("o.png", "o.rrd"))
+               codes=(0,), keep=inputs, parallel=2, whole=("o.png", "o.rrd"), says=r"done: Go\(goal=kitchen\)")

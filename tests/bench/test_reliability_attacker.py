@@ -20,6 +20,7 @@ from seal_cli.bench.reliability_attacker import (
     hostile21_cases,
     hostile22_cases,
     hostile23_cases,
+    hostile24_cases,
     sparse_pgm,
 )
 from seal_cli.bench.reliability_outsider import outsider_cases
@@ -233,6 +234,45 @@ def test_the_hostile23_cases_are_named_once_and_say_what_they_must() -> None:
     assert len({c.name for c in found}) == len(found) >= 14
     assert all(c.says for c in found if c.codes in ((0,), (1,)))
     assert any(c.to_worker for c in found)
+
+
+@pytest.mark.parametrize("name", ["A run to a bed on the other island", "A plan to the bed when no bed can be reached",
+                                  "A validate of a room called ha\\tll",
+                                  "A run to a room called \\u0e04\\u0e23\\u0e31\\u0e27",
+                                  "A validate of a fridge whose open is a list",
+                                  "A signal 15 while run --png --rrd writes its temporary"])
+def test_picked_hostile24_cases_end_cleanly(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Each but the last failed before this round: a bed beyond a wall searched for 14 m, none of several beds in
+    reach said "inf m", a room "ha<tab>ll" validated, "go to the ครัว" refused at its vowel sign, an ``open`` list
+    said as YAML nodes. This tree's code."""
+    monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
+    outcome = run_case(next(c for c in hostile24_cases() if c.name == name))
+    assert outcome.problems == []
+
+
+def test_the_hostile24_cases_are_named_once_and_say_what_they_must() -> None:
+    found = list(hostile24_cases())
+    assert len({c.name for c in found}) == len(found) >= 29
+    assert all(c.says for c in found if c.codes in ((0,), (1,)))
+    assert any(c.signal_on for c in found) and any(c.file_blocks for c in found) and any(c.parallel > 1 for c in found)
+
+
+def test_a_signal_waits_for_its_file() -> None:
+    """``Case.signal_on``: the signal goes once the file is there, and not at all when the command ends first."""
+    import sys
+
+    import seal_cli.bench.reliability as judge
+
+    waits = ("import pathlib, time\nt = time.time()\nwhile time.time() - t < 0.3: pass\n"   # busy: the judge waits for CPU
+             "pathlib.Path('.x.seal1-0123abcd.tmp').write_text('')\nwhile time.time() - t < 30: pass\n")
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(judge, "_seal", lambda: [sys.executable, "-c", waits])
+        stopped = run_case(judge.Case("stopped once its temporary is there", (), codes=(143, -15), signal=(15, 0.0),
+                                      signal_on=r"\.seal\d+-[0-9a-f]{8}\.tmp"))
+        patch.setattr(judge, "_seal", lambda: [sys.executable, "-c", "pass"])
+        unsent = run_case(judge.Case("ends before any file", (), codes=(0,), signal=(15, 0.0), signal_on=r"never"))
+    assert stopped.code == -15 and 0.3 <= stopped.seconds < 10
+    assert unsent.code == 0 and unsent.problems == []
 
 
 def test_the_judge_sees_a_command_whose_reader_has_gone_fail(monkeypatch: pytest.MonkeyPatch) -> None:
