@@ -3,7 +3,8 @@
 ``terrace.yaml``, the L-shaped ``bungalow.yaml``, ``lodge.yaml``, e2e21's held-out holiday lodge, and
 ``flat.yaml``, e2e22's held-out long flat, and ``carehome.yaml``, e2e23's held-out care home, and
 ``student_house.yaml``, e2e24's held-out student house, and ``guesthouse.yaml``, e2e25's held-out bed and
-breakfast, and ``studio.yaml``, e2e26's held-out open-plan studio flat (run once; the PGMs are committed next to this script).
+breakfast, and ``studio.yaml``, e2e26's held-out open-plan studio flat (run once; the PGMs are committed next to
+this script).
 
     python maps/make_houses.py          # rewrites maps/<house>.pgm for each of HOUSES
 

@@ -958,12 +958,10 @@ def _back_to(phrase: Phrase | None, themes: Sequence[str], bindings: Sequence[Bi
     later = False
     m = things.map
     for theme in themes:
-        taken = theme == (things.name(things.held) if things.held else None) or any(
-            b.frame.gets_held("theme") and b.elements.get("theme") == theme for b in bindings)
-        if not taken:
+        takers = [b for b in bindings if _takes(b.frame) and b.elements.get("theme") == theme]
+        if not takers and theme != (things.name(things.held) if things.held else None):
             return None
-        source = next((b.elements["source"] for b in reversed(bindings) if b.frame.gets_held("theme")
-                       and b.elements.get("theme") == theme and "source" in b.elements), None)
+        source = next((b.elements["source"] for b in takers if "source" in b.elements), None)   # the first taking
         if phrase is None and source is not None:    # "take the cup from the table and put back": that table
             places[source] = None
             continue
@@ -981,6 +979,12 @@ def _back_to(phrase: Phrase | None, themes: Sequence[str], bindings: Sequence[Bi
     if not places:
         raise _located(f"cannot tell where {_back_said(phrase)} is: nothing is put back", phrase, text)
     return tuple(places), later
+
+
+def _takes(frame: Frame) -> bool:
+    """Whether the frame takes its theme up: leaves it held (Pick), or needs it held to start (Bring: "take the key
+    to the hall and then return it" took the key from where it lay, though the Bring puts it down in the hall)."""
+    return frame.gets_held("theme") or frame.needs_held("theme")
 
 
 def _back_said(phrase: Phrase | None) -> str:

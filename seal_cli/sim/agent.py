@@ -175,7 +175,10 @@ class Agent:
         """Those of :attr:`put_away` that put the thing back where the robot took it from ("take the cup and
         put it back"), not where such a thing is kept."""
         self.picked_from: dict[str, str | None] = {}
-        """Where each thing the robot picked up lay."""
+        """Where each thing the robot picked up lay (the last time it picked it up)."""
+        self.taken_from: dict[str, str | None] = {}
+        """Where each thing lay when the robot first picked it up: where "put it back" puts it ("take the key to the
+        hall and then return it": the table, not the hall it was picked up from again)."""
         self.started = {i.id: i.at for i in self.world.items.values() if i.movable or i.key == "person"}
         """Where each thing and each person was as the run began (the picture draws what moved from there)."""
         """Where each thing was as the run started (the picture shows where the moved ones came from)."""
@@ -416,7 +419,7 @@ class Agent:
             return None
         if held.key != self.class_of(todo[0].elements.get("theme", "")):
             return None
-        lay = self.picked_from.get(held.id)
+        lay = (self.taken_from if todo[0] in self.put_back else self.picked_from).get(held.id)
         goal = choose(lay)
         if goal is None or goal == todo[0].elements.get("goal"):
             return None
@@ -1655,6 +1658,7 @@ class Agent:
         outcome = self.world.act(action.name, *args)
         if outcome.ok and action.name == "pick":
             self.picked_from[args[0]] = lay
+            self.taken_from.setdefault(args[0], lay)
             outcome = replace(outcome, message=outcome.message + self._not_where_said(args[0], lay))
         if outcome.reason is Reason.INSIDE_CLOSED and outcome.about is not None:
             self.open_to_look(outcome.about)

@@ -704,3 +704,19 @@ def test_the_narration_names_the_things_the_robot_handles(library: Library) -> N
     assert [r.data["frame"] for r in heard if r.kind == "frame"] == [
         "Pick(theme=plate)", "Bring(theme=plate, recipient=me)", "Pick(theme=plate_2)",
         "Bring(theme=plate_2, recipient=me)"]
+
+
+def test_put_back_after_carrying_it_elsewhere_is_where_it_was_first_taken_from(library: Library) -> None:
+    """e2e26: "take the key to the hall and then return it" put the key down in the hall (on the coat rack), then
+    found it "already where a key is kept" and left it there; the robot remembers where it first took it from."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    heard: list[Record] = []
+    agent, result = pipeline.run_on_map(load_map("studio"), "take the key to the hall and then return it", library,
+                                        SeFMPolicy(particles=50), rng=np.random.default_rng(0),
+                                        observers=[heard.append])
+    assert result.completed, result.reason
+    assert agent.world.items["key_1"].parent == "dining_table_1"
+    assert agent.taken_from["key_1"] == "dining_table_1" and agent.picked_from["key_1"] == "coat_rack_1"
+    assert "key_1 lay on dining_table_1: puts it back there" in " ".join(r.text for r in heard)

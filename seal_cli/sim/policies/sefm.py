@@ -169,7 +169,8 @@ def people_now(the_map: Map, agent: Agent) -> tuple[Person, ...]:
     for person in the_map.people:
         known = agent.known.get(person.key)
         moved = known is not None and math.dist(known.at, the_map.person_at(person)) > MOVED_M
-        people.append(replace(person, at=tuple(known.at), room=None) if moved and known is not None else person)
+        people.append(replace(person, at=(known.at[0], known.at[1]), room=None) if moved and known is not None
+                      else person)
     return tuple(people)
 
 
