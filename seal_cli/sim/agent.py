@@ -176,6 +176,8 @@ class Agent:
         put it back"), not where such a thing is kept."""
         self.picked_from: dict[str, str | None] = {}
         """Where each thing the robot picked up lay (the last time it picked it up)."""
+        self.framed: dict[str, Binding] = {}
+        """Each step the run began, by its plan's name (a record's ``frame`` data): :meth:`said_at_end` names it."""
         self.taken_from: dict[str, str | None] = {}
         """Where each thing lay when the robot first picked it up: where "put it back" puts it ("take the key to the
         hall and then return it": the table, not the hall it was picked up from again)."""
@@ -487,6 +489,12 @@ class Agent:
             return shown(binding)
         return shown(binding.frame.bind(said))
 
+    def said_at_end(self, record: Record) -> str:
+        """A step's record as the run would say it now, naming what it handled in it (the run's picture, drawn after
+        the run: "step 1: Pick(theme=spoon_1)", not the "Pick(theme=spoon)" said before it chose the spoon)."""
+        binding = self.framed.get(record.data.get("frame", ""))
+        return self.shown_now(binding) if binding is not None else record.text
+
     def handled(self, value: str) -> str:
         """The name the run says for a thing a step names (see :meth:`shown_now`)."""
         name = class_key(value)
@@ -541,6 +549,7 @@ class Agent:
         replans = 0
         while self.index < len(self.steps):
             binding = self.steps[self.index]
+            self.framed[str(binding)] = binding
             self.say("frame", self.shown_now(binding), frame=str(binding))
             outcome = self.execute(binding)
             if outcome.ok:
