@@ -3,7 +3,8 @@
 ``terrace.yaml``, the L-shaped ``bungalow.yaml``, ``lodge.yaml``, e2e21's held-out holiday lodge, and
 ``flat.yaml``, e2e22's held-out long flat, and ``carehome.yaml``, e2e23's held-out care home, and
 ``student_house.yaml``, e2e24's held-out student house, and ``guesthouse.yaml``, e2e25's held-out bed and
-breakfast (run once; the PGMs are committed next to this script).
+breakfast, and ``studio.yaml``, e2e26's held-out open-plan studio flat (run once; the PGMs are committed next to
+this script).
 
     python maps/make_houses.py          # rewrites maps/<house>.pgm for each of HOUSES
 
@@ -247,8 +248,21 @@ GUESTHOUSE = House(
     ),
 )
 
+STUDIO = House(
+    "studio", (0.0, 0.0, 12.0, 8.0),
+    walls=(
+        ((3.0, 0.0, 3.0, 8.0), ((1.0, 2.0),)),                 # hall | the open-plan room; bathroom | it, balcony
+        ((0.0, 3.0, 3.0, 3.0), ((1.0, 2.0),)),                 # hall | bathroom
+        ((3.0, 6.0, 12.0, 6.0), ((9.0, 10.0),)),               # the open-plan room | balcony (the balcony door)
+    ),
+    blocks=(
+        (7.5, 2.9, 9.5, 3.1),      # the low shelf that half parts the living area from the sleeping area
+        (0.1, 7.0, 2.0, 7.9),      # the bath against the bathroom's north wall
+    ),
+)
+
 HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC, FARMHOUSE, TERRACE, BUNGALOW, LODGE, FLAT, CAREHOME, STUDENT_HOUSE,
-          GUESTHOUSE)
+          GUESTHOUSE, STUDIO)
 
 
 def draw(house: House) -> np.ndarray:

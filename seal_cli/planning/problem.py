@@ -122,6 +122,9 @@ class Things:
         self.facts: set[Fact] = set()
         self.robot_holding: str | None = None
         self.held: str | None = None
+        self.named_before: list[str] = []
+        """The people the commands already done (``--done``) named, in order: the last is whom a "him" or "her"
+        the command does not name itself stands for."""
         """What the robot holds as the command starts (``--holding``, else the map's robot): what "it" calls
         when nothing before it in the command does ("put it in the sink")."""
         self.people: set[str] = set()
@@ -529,13 +532,19 @@ THIRD_PERSONS = frozenset({"him", "her", "them", "he", "she", "they"})
 """Pronouns that stand for a person said before them; with nobody said, no one the robot can find."""
 
 
-def _someone_named(phrase: Phrase, text: str) -> None:
-    """Refuse "him", "her" or "them" that stands for nobody the command (or what it says beside it) named ("get
-    *him* a plate"): the robot cannot tell whom it means, and would look the house over for someone called Him."""
+def _a_person_pronoun(phrase: Phrase) -> bool:
+    """Whether the phrase is "him", "her" or "them" standing for no one the command itself named."""
     said = (phrase.text or "").lower()
-    if said in THIRD_PERSONS and phrase.refers_to is None and phrase.head.lower() in THIRD_PERSONS:
-        raise _located(f"cannot tell who {phrase.text!r} is: the command names nobody before it; say their name "
-                       f"(or their role: \"the cook\")", phrase, text)
+    return said in THIRD_PERSONS and phrase.refers_to is None and phrase.head.lower() in THIRD_PERSONS
+
+
+def _someone_named(phrase: Phrase, text: str) -> None:
+    """Refuse "him", "her" or "them" that stands for nobody the command (or what it says beside it, or a command
+    already done) named ("get *him* a plate"): the robot cannot tell whom it means, and would look the house over
+    for someone called Him."""
+    if _a_person_pronoun(phrase):
+        raise _located(f"cannot tell who {phrase.text!r} is: the command names nobody before it, nor does a --done; "
+                       f"say their name (or their role: \"the cook\")", phrase, text)
 
 
 def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: bool = False, carried: bool = False,
@@ -562,6 +571,8 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
             return called
     if phrase.head.lower() in SPEAKER_WORDS or phrase.kind == "person" \
             or things.taxonomy.is_a(category, "person") is True and category != "thing":
+        if _a_person_pronoun(phrase) and things.named_before:   # --done 'find Ben' 'give him the remote'
+            return (things.named_before[-1],)
         _someone_named(phrase, text)
         if phrase.text and phrase.text.split()[0].lower() in DROPPED:
             things.roles_said.add(class_key(phrase.head))     # "the nurse" on a map without one
@@ -758,7 +769,9 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
     from seal_cli.language.reference import back_unplaced
     from seal_cli.planning.fetching import brought
     from seal_cli.planning.questions import asks_whether, looking
+    from seal_cli.planning.returning import returned
 
+    parse = replace(parse, frames=returned(parse.frames, library))    # "return it": back where it was taken from
     parse = replace(parse, frames=brought(parse.frames, library))     # "fetch the remote": bring it here
     earlier: list[dict[str, tuple[str, ...]]] = []
     bindings: list[Binding] = []
@@ -803,7 +816,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
             if element.role not in values and element.default is not None and not (storing and element.role == "goal"):
                 values[element.role] = (_default(frame, element, evoked, things, parse.text),)
         if (things.map is not None and "goal" in frame.roles and "goal" not in values and _returning(evoked)
-                and not stores(frame, evoked.lexical_unit)):
+                and not stores(frame, evoked.lexical_unit) and "recipient" not in values):   # "return it to Nora"
             things.people.add(SPEAKER)          # "go to the kitchen and come back": back to whoever asked
             values["goal"] = (SPEAKER,)
         _to_recipient(frame, values, things)
@@ -945,12 +958,10 @@ def _back_to(phrase: Phrase | None, themes: Sequence[str], bindings: Sequence[Bi
     later = False
     m = things.map
     for theme in themes:
-        taken = theme == (things.name(things.held) if things.held else None) or any(
-            b.frame.gets_held("theme") and b.elements.get("theme") == theme for b in bindings)
-        if not taken:
+        takers = [b for b in bindings if _takes(b.frame) and b.elements.get("theme") == theme]
+        if not takers and theme != (things.name(things.held) if things.held else None):
             return None
-        source = next((b.elements["source"] for b in reversed(bindings) if b.frame.gets_held("theme")
-                       and b.elements.get("theme") == theme and "source" in b.elements), None)
+        source = next((b.elements["source"] for b in takers if "source" in b.elements), None)   # the first taking
         if phrase is None and source is not None:    # "take the cup from the table and put back": that table
             places[source] = None
             continue
@@ -968,6 +979,12 @@ def _back_to(phrase: Phrase | None, themes: Sequence[str], bindings: Sequence[Bi
     if not places:
         raise _located(f"cannot tell where {_back_said(phrase)} is: nothing is put back", phrase, text)
     return tuple(places), later
+
+
+def _takes(frame: Frame) -> bool:
+    """Whether the frame takes its theme up: leaves it held (Pick), or needs it held to start (Bring: "take the key
+    to the hall and then return it" took the key from where it lay, though the Bring puts it down in the hall)."""
+    return frame.gets_held("theme") or frame.needs_held("theme")
 
 
 def _back_said(phrase: Phrase | None) -> str:
@@ -1202,7 +1219,11 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
         for element in frame.elements:
             if element.default is not None:
                 things.name(element.default)
-    executed = [(p.text, b) for p in done for b in commanded_frames(p, library, things)]
+    executed: list[tuple[str, Binding]] = []
+    for earlier in done:        # in order: a command done is context for the ones after it ("find Ben" → "him")
+        bindings = commanded_frames(earlier, library, things)
+        executed.extend((earlier.text, b) for b in bindings)
+        things.named_before = [*things.named_before, *_people_named(bindings, things)]
     commanded = commanded_frames(parse, library, things)
     _the_ones_said_where(commanded, things)
     state = things.state(holding)
@@ -1219,6 +1240,11 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
     return Problem(parse.text, tuple(commanded), state, warnings,
                    tuple(b for b in things.put_away if b in commanded),
                    tuple(b for b in things.put_back if b in commanded), dict(things.called))
+
+
+def _people_named(bindings: Sequence[Binding], things: Things) -> list[str]:
+    """The people the frames name, in order (not the speaker): whom a later "him" or "her" can stand for."""
+    return [v for b in bindings for _, v in b.values if v in things.people and v != SPEAKER]
 
 
 def _the_ones_said_where(commanded: Sequence[Binding], things: Things) -> None:

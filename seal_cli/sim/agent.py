@@ -175,7 +175,12 @@ class Agent:
         """Those of :attr:`put_away` that put the thing back where the robot took it from ("take the cup and
         put it back"), not where such a thing is kept."""
         self.picked_from: dict[str, str | None] = {}
-        """Where each thing the robot picked up lay."""
+        """Where each thing the robot picked up lay (the last time it picked it up)."""
+        self.framed: dict[str, Binding] = {}
+        """Each step the run began, by its plan's name (a record's ``frame`` data): :meth:`said_at_end` names it."""
+        self.taken_from: dict[str, str | None] = {}
+        """Where each thing lay when the robot first picked it up: where "put it back" puts it ("take the key to the
+        hall and then return it": the table, not the hall it was picked up from again)."""
         self.started = {i.id: i.at for i in self.world.items.values() if i.movable or i.key == "person"}
         """Where each thing and each person was as the run began (the picture draws what moved from there)."""
         """Where each thing was as the run started (the picture shows where the moved ones came from)."""
@@ -416,7 +421,7 @@ class Agent:
             return None
         if held.key != self.class_of(todo[0].elements.get("theme", "")):
             return None
-        lay = self.picked_from.get(held.id)
+        lay = (self.taken_from if todo[0] in self.put_back else self.picked_from).get(held.id)
         goal = choose(lay)
         if goal is None or goal == todo[0].elements.get("goal"):
             return None
@@ -471,6 +476,39 @@ class Agent:
         key = class_key(value)
         return self.classes.get(key, key)
 
+    def shown_now(self, binding: Binding) -> str:
+        """A step as the run says it (:func:`~seal_cli.frames.said.shown`), naming what the robot handles: a thing
+        the plan names (``cup``, ``cup_2``: a second cup, a name the plan made up, no cup of the house) is said as
+        the instance the robot chose for it once it has ("Bring(theme=cup_3, ...)" after "picked up cup_3"), and a
+        made-up name not yet chosen as "another cup" (e2e26: the plan said Pick(theme=cup_2), then "picked up
+        cup_1"). Places, rooms and people keep their names; the records' ``frame`` data keeps the plan's, and so
+        does a step skipped as so already ("umbrella_1 is in the waiting room already, so Bring(theme=umbrella,
+        ...) needs no doing": the plan's step, quoted, after the thing it found)."""
+        said = {role: self.handled(value) for role, value in binding.values}
+        if all(said[r] == v for r, v in binding.values):
+            return shown(binding)
+        return shown(binding.frame.bind(said))
+
+    def said_at_end(self, record: Record) -> str:
+        """A step's record as the run would say it now, naming what it handled in it (the run's picture, drawn after
+        the run: "step 1: Pick(theme=spoon_1)", not the "Pick(theme=spoon)" said before it chose the spoon)."""
+        binding = self.framed.get(record.data.get("frame", ""))
+        return self.shown_now(binding) if binding is not None else record.text
+
+    def handled(self, value: str) -> str:
+        """The name the run says for a thing a step names (see :meth:`shown_now`)."""
+        name = class_key(value)
+        item = self.world.items.get(value)
+        if (item is not None and not item.movable) or self.is_person(value) or self.room(value) is not None:
+            return value
+        chosen = self.chosen.get(name)
+        instance = self.world.items.get(chosen) if chosen is not None else None
+        if instance is not None and instance.movable and instance.key == self.class_of(value):
+            return instance.id
+        if name in self.classes and self.classes[name] != name:
+            return f"another {self.said(value)}"
+        return value
+
     def run(self, commanded: Sequence[Binding], done: Sequence[Binding] = ()) -> Result:
         """Plan the commanded frames, then search and execute until done or out of budget.
         ``done``: frames already carried out, whose postconditions hold at the start."""
@@ -497,7 +535,7 @@ class Agent:
 
             self.told = {self.class_of(k): v for k, v in said_where(steps).items()}
         plan = [str(b) for b in steps]
-        self.say("plan", "plan: " + ", ".join(shown(b) for b in steps) if plan else "nothing to do", plan=plan)
+        self.say("plan", "plan: " + ", ".join(self.shown_now(b) for b in steps) if plan else "nothing to do", plan=plan)
         for binding in todo:        # a goal chosen before the robot has seen the thing: said as such
             theme, goal = binding.elements.get("theme"), binding.elements.get("goal")
             if binding in self.put_back:
@@ -511,7 +549,8 @@ class Agent:
         replans = 0
         while self.index < len(self.steps):
             binding = self.steps[self.index]
-            self.say("frame", shown(binding), frame=str(binding))
+            self.framed[str(binding)] = binding
+            self.say("frame", self.shown_now(binding), frame=str(binding))
             outcome = self.execute(binding)
             if outcome.ok:
                 self.state = self.state.apply(binding)
@@ -520,12 +559,12 @@ class Agent:
                 passed = False
                 if todo and binding == todo[0]:
                     todo.pop(0)
-                    self.say("done", f"done: {shown(binding)}", frame=str(binding))
+                    self.say("done", f"done: {self.shown_now(binding)}", frame=str(binding))
                     while todo and (already := self.already_so(todo[0])) is not None:   # so by its turn
                         skipped, passed = todo.pop(0), True
                         self.say("done", f"{already}, so {shown(skipped)} needs no doing", frame=str(skipped))
                 else:
-                    self.say("done", f"done: {shown(binding)}", frame=str(binding))
+                    self.say("done", f"done: {self.shown_now(binding)}", frame=str(binding))
                 if passed:
                     if (failed := self._replan(todo, self.resync(self.state))) is not None:
                         return self._result(False, failed, plan, executed, Reason.CANNOT)
@@ -533,7 +572,7 @@ class Agent:
                 if (again := self._put_away_again(todo)) is not None:
                     if (failed := self._replan(todo, self.resync(self.state))) is not None:
                         return self._result(False, failed, plan, executed, Reason.CANNOT)
-                    self.say("replan", f"{again}; replans: " + ", ".join(str(b) for b in self.steps))
+                    self.say("replan", f"{again}; replans: " + ", ".join(self.shown_now(b) for b in self.steps))
                 continue
             if outcome.reason is Reason.ALREADY:     # what the next commanded frame would do is so already
                 skipped = todo.pop(0)
@@ -555,7 +594,7 @@ class Agent:
             self.state = self.resync(self.state)
             if (failed := self._replan(todo, self.state)) is not None:
                 return self._result(False, failed, plan, executed, Reason.CANNOT)
-            self.say("replan", f"{outcome.message}; replans: " + ", ".join(str(b) for b in self.steps))
+            self.say("replan", f"{outcome.message}; replans: " + ", ".join(self.shown_now(b) for b in self.steps))
         return self._result(True, "done", plan, executed)
 
     def _replan(self, todo: Sequence[Binding], state: State) -> str | None:
@@ -1631,6 +1670,7 @@ class Agent:
         outcome = self.world.act(action.name, *args)
         if outcome.ok and action.name == "pick":
             self.picked_from[args[0]] = lay
+            self.taken_from.setdefault(args[0], lay)
             outcome = replace(outcome, message=outcome.message + self._not_where_said(args[0], lay))
         if outcome.reason is Reason.INSIDE_CLOSED and outcome.about is not None:
             self.open_to_look(outcome.about)

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -244,11 +244,12 @@ ONE_CARD_M = 0.5
 from "handed watering_can_1 to Walter" drew two cards over each other at the end)."""
 
 
-def _legs(trail: np.ndarray, records: Sequence[Record]) -> list[tuple[str, np.ndarray]]:
-    """The path cut into the legs of the frames the robot executed, in order (each frame's line, and the points
-    driven from its start to the next frame's start, by the distance driven when each began); one leg or none
-    when the run had fewer than two frames that drove. A frame that drove nothing has no leg."""
-    starts = [(r.path_m, r.text) for r in records if r.kind == "frame"]
+def _legs(trail: np.ndarray, records: Sequence[Record],
+          said: Callable[[Record], str] = lambda r: r.text) -> list[tuple[str, np.ndarray]]:
+    """The path cut into the legs of the frames the robot executed, in order (each frame's line as ``said`` says it,
+    and the points driven from its start to the next frame's start, by the distance driven when each began); one leg
+    or none when the run had fewer than two frames that drove. A frame that drove nothing has no leg."""
+    starts = [(r.path_m, said(r)) for r in records if r.kind == "frame"]
     if len(trail) < 2 or not starts:
         return []
     along = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(trail, axis=0).T))])
@@ -269,7 +270,7 @@ def _draw_run(ax: Any, agent: Agent) -> None:
     from seal_cli.maps.drawing import _HALO, LABEL, LABEL_Z
 
     trail = np.asarray(agent.world.robot.trajectory)
-    legs = _legs(trail, agent.records)
+    legs = _legs(trail, agent.records, agent.said_at_end)   # each step naming what the robot handled in it
     if len(legs) < 2:
         ax.plot(trail[:, 0], trail[:, 1], "-", color="#1f77b4", linewidth=2, zorder=4, label="path")
     for k, (frame, points) in enumerate(legs if len(legs) > 1 else []):   # each step's leg in its own colour

@@ -514,6 +514,34 @@ def test_a_person_pronoun_that_stands_for_nobody_is_refused(library: Library, te
         "Bring(theme=jam, recipient=carla)"
 
 
+@pytest.mark.parametrize(("done", "text", "last"), [
+    (["find Ben"], "give him the remote", "Give(theme=remote, recipient=ben)"),
+    (["find Ben", "take the key to Anna"], "bring her the jam", "Bring(theme=jam, recipient=anna)"),   # the last named
+    (["tell Carla that the towels are dry", "open the fridge"], "hand her a cup", "Give(theme=cup, recipient=carla)"),
+])
+def test_a_person_pronoun_stands_for_the_last_person_a_done_command_named(library: Library, done: list[str],
+                                                                          text: str, last: str) -> None:
+    """e2e26: --done 'find Ben' 'give him the remote' was refused ("the command names nobody"): the commands done
+    before it are its context."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "guesthouse.yaml")
+    assert str(plan(text, library, done=done, map=m).steps[-1]) == last
+
+
+def test_a_person_pronoun_after_done_commands_that_name_nobody_is_refused(library: Library) -> None:
+    from seal_cli.errors import SealError
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "guesthouse.yaml")
+    with pytest.raises(SealError, match="cannot tell who 'him' is: the command names nobody before it, nor does a "
+                                        "--done") as refused:
+        plan("give him the remote", library, done=["open the fridge", "go to the lounge"], map=m)
+    assert refused.value.where is not None and refused.value.where.column == 6
+
+
 def test_a_place_of_a_kind_the_house_has_several_of_is_the_nearest_and_said(library: Library) -> None:
     """e2e25: "put the guitar on the bed" with four beds took bed_1 (the map's first) and said nothing of it."""
     from seal_cli.maps.formats.map_server import load_map

@@ -692,3 +692,47 @@ def test_the_one_place_a_plan_names_out_of_reach_ends_the_run_at_once(library: L
                                     rng=np.random.default_rng(0))
     assert not result.completed and result.path_m == 0.0
     assert result.reason == "bed_1 cannot be reached from anywhere the robot can drive"
+
+
+def test_the_narration_names_the_things_the_robot_handles(library: Library) -> None:
+    """e2e26: the run said ``Pick(theme=cup_2)`` (a name the plan made up for a second cup) and then "picked up
+    cup_1". Now a thing is said as the instance the robot chose once it has, and a made-up name not yet chosen as
+    "another plate"; the records' ``frame`` data keep the plan's names."""
+    import re
+
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    heard: list[Record] = []
+    agent, result = pipeline.run_on_map(load_map("studio"), "bring me two plates", library, SeFMPolicy(particles=50),
+                                        rng=np.random.default_rng(0), observers=[heard.append])
+    assert result.completed, result.reason
+    said = [r.text for r in heard if r.kind in ("plan", "frame", "done", "act")]
+    assert said[0] == ("plan: Pick(theme=plate), Bring(theme=plate, recipient=me), Pick(theme=another plate), "
+                       "Bring(theme=another plate, recipient=me)")
+    picked = [m.group(1) for t in said if (m := re.match(r"picked up (plate_\d)", t))]
+    assert sorted(picked) == ["plate_1", "plate_2"]
+    for plate in picked:        # after it is picked up, every line names it as what it is
+        after = said[next(i for i, t in enumerate(said) if t.startswith(f"picked up {plate}")):]
+        assert f"done: Pick(theme={plate})" in after and f"Bring(theme={plate}, recipient=me)" in after
+        assert f"handed {plate} to me" in after
+    assert not any("theme=plate_2" in t for t in said[:said.index(f"picked up {picked[1]} from cupboard_1")])
+    assert [r.data["frame"] for r in heard if r.kind == "frame"] == [
+        "Pick(theme=plate)", "Bring(theme=plate, recipient=me)", "Pick(theme=plate_2)",
+        "Bring(theme=plate_2, recipient=me)"]
+
+
+def test_put_back_after_carrying_it_elsewhere_is_where_it_was_first_taken_from(library: Library) -> None:
+    """e2e26: "take the key to the hall and then return it" put the key down in the hall (on the coat rack), then
+    found it "already where a key is kept" and left it there; the robot remembers where it first took it from."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    heard: list[Record] = []
+    agent, result = pipeline.run_on_map(load_map("studio"), "take the key to the hall and then return it", library,
+                                        SeFMPolicy(particles=50), rng=np.random.default_rng(0),
+                                        observers=[heard.append])
+    assert result.completed, result.reason
+    assert agent.world.items["key_1"].parent == "dining_table_1"
+    assert agent.taken_from["key_1"] == "dining_table_1" and agent.picked_from["key_1"] == "coat_rack_1"
+    assert "key_1 lay on dining_table_1: puts it back there" in " ".join(r.text for r in heard)

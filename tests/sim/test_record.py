@@ -115,8 +115,9 @@ def test_the_png_legend_names_every_mark_and_the_end_is_drawn_over_the_last_acti
         handles, labels = ax.get_legend_handles_labels()
         assert {"start", "end", "where it acted (numbered)", "things, where they are at the end",
                 "a moved thing, where it was at the start", "people"} <= set(labels) and len(labels) == len(set(labels))
-        assert [t for t in labels if t.startswith("step ")] == ["step 1: Pick(theme=spoon)",   # e2e24: leg by leg
-                                                               "step 2: Bring(theme=spoon, recipient=me)"]
+        assert [t for t in labels if t.startswith("step ")] == ["step 1: Pick(theme=spoon_1)",   # e2e24: leg by leg
+                                                               "step 2: Bring(theme=spoon_1, recipient=me)"]
+        # (e2e26: each step names what the robot handled in it, as the narration does once it has chosen)
         spoon = agent.started["spoon_1"]       # the spoon moved: a hollow star where it was, a full one where it ended
         assert tuple(handles[labels.index("a moved thing, where it was at the start")].get_xydata()[0]) == spoon
         ends = [tuple(line.get_xydata()[0]) for line in ax.get_lines() if line.get_marker() == "*"

@@ -10,13 +10,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
 
 from seal_cli.frames.model import Binding, Fact
 from seal_cli.frames.taxonomy import class_key
+from seal_cli.maps.model import Map, Person
 from seal_cli.planning.state import State
 from seal_cli.sim.agent import Agent, Known, View
 from seal_cli.sim.navigation import Cell
@@ -160,6 +161,23 @@ class _TourModel:
         return order, current
 
 
+def people_now(the_map: Map, agent: Agent) -> tuple[Person, ...]:
+    """The map's people where the robot knows they stand now: one it led ("guide Anna to the kitchen") stands where
+    it left them, not where the map put them, so a later frame about them ("then bring her the milk") is believed
+    where they are."""
+    people = []
+    for person in the_map.people:
+        known = agent.known.get(person.key)
+        moved = known is not None and math.dist(known.at, the_map.person_at(person)) > MOVED_M
+        people.append(replace(person, at=(known.at[0], known.at[1]), room=None) if moved and known is not None
+                      else person)
+    return tuple(people)
+
+
+MOVED_M = 0.05
+"""How far from where the map stands a person the robot must know them to stand to count them moved (a cell)."""
+
+
 class SeFMPolicy(Policy):
     """The SeFM searcher: observe the best mode of the current frame's belief.
 
@@ -265,10 +283,13 @@ class SeFMPolicy(Policy):
 
         bindings = [b.frame.bind({r: v if agent.is_person(v) else agent.class_of(v) for r, v in b.values})
                     for b in agent.steps]     # a person of the map is where they stand, not any person
-        key = (*(str(b) for b in bindings), *(f"{k}: {v}" for k, v in agent.told.items()))   # the word, withdrawn
+        people = people_now(self.map, agent)
+        key = (*(str(b) for b in bindings), *(f"{k}: {v}" for k, v in agent.told.items()),   # the word, withdrawn
+               *(f"{p.key} at {p.at}" for p in people if p not in self.map.people))        # one led: moved
         if self.sefm is None or key != self.key:
             state = self._state(agent)
-            self.sefm = SeFM(self.map, bindings, state, agent.rng,
+            the_map = self.map if people == self.map.people else replace(self.map, people=people)
+            self.sefm = SeFM(the_map, bindings, state, agent.rng,
                              SeFMConfig(particles=self.particles, bandwidth=self.bandwidth), said=agent.told)
             self.key = key
             for pose, seen in self.history:
