@@ -137,6 +137,8 @@ class Things:
         """The commanded frames whose goal "put away" chose."""
         self.put_back: list[Binding] = []
         """The commanded frames that put a thing "back" where the robot will take it from."""
+        self.points: dict[str, tuple[float, float]] = {}
+        """Where the map puts each of its rooms (the middle), places, things and people, by id."""
         self.every: Mapping[str, int] = {}
         """How many things of a class "all the ..." asks for when the map does not place them (``seal run``'s
         robot, after looking all over the house for them), by class key."""
@@ -151,9 +153,11 @@ class Things:
         for room in map.rooms:
             self.classes.setdefault(class_key(room.name), class_key(room.name))
             self.fixed.add(class_key(room.name))
+            self.points[class_key(room.name)] = room.centroid
         for place in map.places:
             name = class_key(place.name)
             self.classes[name] = place.cls
+            self.points[name] = place.at
             self.fixed.add(name)
             if place.room:
                 self.rooms[name] = class_key(place.room)
@@ -165,6 +169,7 @@ class Things:
         for obj in map.objects:
             counts[obj.cls] = counts.get(obj.cls, 0) + 1
             name = self._fresh(obj.cls, counts[obj.cls])
+            self.points[name] = obj.at
             if obj.inside is not None:
                 self.facts.add(Fact("in", (name, class_key(obj.inside))))
             elif (floor := map._room_name(obj.at)) is not None:
@@ -172,7 +177,9 @@ class Things:
         self.robot_holding = map.robot.holding
         for person in map.people:
             self.classes[person.key] = "person"
+            self.points[person.key] = map.person_at(person)
         self.classes.setdefault(SPEAKER, "person")
+        self.points[SPEAKER] = map.speaker_at
 
     def _fresh(self, cls: str, n: int) -> str:
         """Register a new thing of a class, the n-th if that name is free (else the next free one)."""
@@ -240,6 +247,8 @@ class Things:
                       for f in self.facts}
         rooms = {named(k): v for k, v in self.rooms.items() if k in (one, other)}
         self.rooms = {k: v for k, v in self.rooms.items() if k not in (one, other)} | rooms
+        points = {named(k): v for k, v in self.points.items() if k in (one, other)}
+        self.points = {k: v for k, v in self.points.items() if k not in (one, other)} | points
 
     def hold(self, holding: str | None) -> None:
         """Keep what the robot holds as the command starts (:attr:`held`): ``holding`` (a class, refused if
@@ -772,11 +781,17 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         asked = _counted_roles(frame) | ({"theme"} if asks_whether(parse.text, evoked) else set())
         if things.names is not None:    # "go to the bedroom and put it on the bed": the bedroom's bed
             things.names.room_said = _room_said_last(earlier, things)
-        values = {role: _values(_sought_where(evoked, role, things), earlier, things, parse.text,
-                                frame.element(role).type, role in asked, _carried(frame, role), _gone_to(frame, role),
-                                not _taken_out_of_a_thing(evoked, things))
-                  for role, phrase in evoked.elements.items() if not back_unplaced(phrase)
-                  and not _the_house(role, phrase, things)}
+        grounded = [r for r, p in evoked.elements.items() if not back_unplaced(p) and not _the_house(r, p, things)]
+        values: dict[str, tuple[str, ...]] = {}
+        for role in sorted(grounded, key=lambda r: r in CARRIED_TO):     # where a thing goes, once the thing is known
+            if things.names is not None:
+                things.names.robot_at = _robot_at(frame, role, values, bindings, things)
+            values[role] = _values(_sought_where(evoked, role, things), earlier, things, parse.text,
+                                   frame.element(role).type, role in asked, _carried(frame, role),
+                                   _gone_to(frame, role), not _taken_out_of_a_thing(evoked, things))
+        values = {r: values[r] for r in grounded}
+        if things.names is not None:
+            things.names.robot_at = None
         back_later = False
         backs: dict[str, Phrase | None] = {r: p for r, p in evoked.elements.items() if back_unplaced(p)}
         goal = evoked.elements.get("goal")
@@ -839,6 +854,42 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
 ONE_EACH = frozenset({"a", "an", "one", "another"})
 """Words that open a phrase of one thing of a kind, not a particular one ("*a* biscuit"): handed to several people,
 one each."""
+
+
+CARRIED_TO = frozenset({"goal", "recipient"})
+"""The elements a frame carries its theme to ("put the guitar *on the bed*", "give *Ben* the cup")."""
+
+MOVES = frozenset({"navigate", "approach", "lead"})
+"""Actions that take the robot to their last argument."""
+
+
+def _robot_at(frame: Frame, role: str, values: Mapping[str, tuple[str, ...]], bindings: Sequence[Binding],
+              things: Things) -> tuple[tuple[float, float], str] | None:
+    """Where the robot will be when it sets off for ``role``'s value, where the map says, and how to say it: where it
+    takes the thing it carries there, when the robot does not hold it already (where the map places the thing, else
+    the source the frame says); else where the frames before leave it (the value the last move of the last of them
+    goes to); None: where it starts."""
+    theme, source = values.get("theme", ()), values.get("source", ())
+    key = class_key(things.held) if things.held else None
+    held = key if key in things.classes else next((n for n, c in things.classes.items() if c == key), None)
+    if (role in CARRIED_TO and len(theme) == 1 and theme[0] != held
+            and any("theme" in a.args and role in a.args for a in frame.actions)):
+        what = things.class_of(theme[0]).replace("_", " ")
+        if theme[0] in things.points:
+            return things.points[theme[0]], f"where it takes the {what}"
+        if len(source) == 1 and source[0] in things.points:     # "bring the mug from the kitchen to the sofa"
+            return things.points[source[0]], f"{_at(source[0], things)}, where it takes the {what} from"
+    for binding in reversed(bindings):
+        for action in reversed(binding.frame.actions):
+            value = binding.elements.get(action.args[-1]) if action.name in MOVES and action.args else None
+            if value in things.points:
+                return things.points[value], f"{_at(value, things)}, where the step before leaves it"
+    return None
+
+
+def _at(value: str, things: Things) -> str:
+    """How a room ("the dining room"), place ("sofa_1") or person ("ben") the robot stands at is said."""
+    return f"the {value.replace('_', ' ')}" if value in things.fixed and things.class_of(value) == value else value
 
 
 def _room_said_last(earlier: Sequence[Mapping[str, tuple[str, ...]]], things: Things) -> str | None:
