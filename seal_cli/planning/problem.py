@@ -48,7 +48,7 @@ from seal_cli.frames.library import Library
 from seal_cli.frames.model import Action, Binding, Fact, Frame
 from seal_cli.frames.taxonomy import Taxonomy, check_class_name, class_key, class_words
 from seal_cli.maps.model import SPEAKER
-from seal_cli.planning.grounding import FIXED, PAIRED, is_room_word, kind_of, where_words, words_of
+from seal_cli.planning.grounding import FIXED, PAIRED, WHERE_TYPES, is_room_word, kind_of, where_words, words_of
 from seal_cli.planning.state import State, robot_facts
 
 OPENABLE = "openable"
@@ -596,12 +596,13 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
     refused = None if asked else names.refusal(_place_words(phrase), said)
     if refused is not None:
         raise _located(refused.message, phrase, text)
-    if gone_to and not asked and not where_words(phrase.text) and _unheard_of(phrase, things):
+    if gone_to and not asked and not _kinds_known_of(phrase, things, said=True):
         m = things.map
-        what = " ".join(words_of(_place_words(phrase))) or phrase.head
+        what = phrase.head if where_words(phrase.text) else " ".join(words_of(_place_words(phrase))) or phrase.head
+        kind = "no kind of thing it knows of" if _unheard_of(phrase, things) else \
+            "no prior, object or place of it names the kind, so the robot has nowhere to search for one"
         raise _located(f"the {m.name} has no {what} (no room, place or person of the map is called so, and "
-                       f"no kind of thing it knows of); its rooms are {', '.join(m.room_names) or 'none'}",
-                       phrase, text)
+                       f"{kind}); its rooms are {', '.join(m.room_names) or 'none'}", phrase, text)
     if not asked and category in FIXTURE_TYPES and not _kinds_known_of(phrase, things):
         m = things.map                 # said in a room too ("leave the light on in the hall"): the map knows none
         tax = things.taxonomy
@@ -618,12 +619,18 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
     return None
 
 
+DESTINATIONS = frozenset({"navigate", "lead", "place", "pour"})
+"""Actions whose place argument is where the robot sets out for (goes, leads someone, puts or pours a thing)."""
+
+
 def _gone_to(frame: Frame, role: str) -> bool:
-    """Whether a frame only goes (or leads someone) to the element's value, puts nothing in it and takes nothing from
-    it (Go's goal, Find's ground, Guide's goal): a place in the house, never a thing to search for and use."""
-    used = [a for a in frame.actions if role in a.args]
-    return (frame.element(role).type == "location" and bool(used) and all(a.name in ("navigate", "lead") for a in used)
-            and not any(role in f.args for f in frame.preconditions))
+    """Whether the element says where the robot sets out for: it goes there, leads someone there, or puts or pours
+    what it holds there (Go's, Guide's, Place's, Bring's and Pour's goal, Find's ground), never what it takes, finds
+    or looks at (a theme) nor where it takes a thing from. Such a value must be one the robot can find before it
+    drives: a room, place or person of the map, or a kind the map knows (:func:`_kinds_known_of`), else it is
+    refused where it is said (reach27: "put the cup on the spaceship" fetched the cup, 11.25 m, then gave up)."""
+    used = [a for a in frame.actions if role in a.args and a.name in DESTINATIONS]
+    return role != "theme" and frame.element(role).type in (*WHERE_TYPES, "container") and bool(used)
 
 
 def _unheard_of(phrase: Phrase, things: Things) -> bool:
@@ -642,13 +649,15 @@ said in a room ("the radio in the kitchen", "leave the light on in the hall") to
 while "turn off all the lights" was refused; a map that names no such thing anywhere has none in any room)."""
 
 
-def _kinds_known_of(phrase: Phrase, things: Things) -> bool:
+def _kinds_known_of(phrase: Phrase, things: Things, said: bool = False) -> bool:
     """Whether the map knows the kind of thing a phrase names: a prior, an object or a place of its class (the
-    parse's, or the head's)."""
+    parse's, or the head's; ``said``: the parse's only when the words name it, not a learned guess, so "the bowl"
+    read as a cup is a bowl, as the run seeks it)."""
     m = things.map
     assert m is not None
     known = {*m.kinds(), *(class_key(p.cls) for p in m.places)}
-    return any(class_key(c) in known for c in (phrase.cls, phrase.head) if c)
+    cls = phrase.cls if phrase.cls and not (said and not _names(phrase, phrase.cls, things)) else None
+    return any(class_key(c) in known for c in (cls, phrase.head) if c)
 
 
 UNIVERSAL = frozenset({"all", "every", "each"})
