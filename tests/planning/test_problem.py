@@ -359,7 +359,8 @@ def test_a_place_to_go_that_nothing_knows_of_is_refused_not_searched_for(library
     from seal_cli.maps.formats.map_server import load_map
 
     m = load_map("farmhouse")
-    for text in ("go to the barn", "is there a cup in the barn?", "guide Joe to the pharmacy", "put the cup in the bag"):
+    for text in ("go to the barn", "is there a cup in the barn?", "guide Joe to the pharmacy",
+                 "put the cup in the bag"):
         with pytest.raises(SealError, match=r"the farmhouse has no (barn|pharmacy|bag) .*its rooms are kitchen"):
             problem_of_text(text, library, map=m)
     bags = replace(m, priors={**m.priors, "bag": {"kitchen": 0.5}})
