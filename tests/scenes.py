@@ -7,9 +7,9 @@ import numpy as np
 from seal_cli.frames.library import Library
 from seal_cli.maps.geometry import OccupancyGrid
 from seal_cli.maps.model import Map, ObjectTruth, Place, Robot, Room, Sensor
+from seal_cli.maps.navigation import Grid
 from seal_cli.sensing.model import RangeSensor
 from seal_cli.sim.agent import Scene
-from seal_cli.sim.navigation import Grid
 from seal_cli.sim.world import Item, World
 from seal_cli.sim.world import Robot as WorldRobot
 

@@ -35,8 +35,8 @@ from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.model import Sensor as MapSensor
+from seal_cli.maps.navigation import Grid
 from seal_cli.sensing.model import RangeSensor, SensorModel
-from seal_cli.sim.navigation import Grid
 from seal_cli.sim.world import HAND, Item, Robot, World
 
 if TYPE_CHECKING:

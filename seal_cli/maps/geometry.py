@@ -504,31 +504,52 @@ def line_of_sight(grid: OccupancyGrid, origin: ArrayLike, points: ArrayLike) -> 
     t_rows, t_cols, _ = grid.cell_index(p)
     ga = grid.world_to_grid(as_points(origin)[:1])[0] / grid.resolution
     gb = grid.world_to_grid(p) / grid.resolution
-    d = gb - ga
-    nudge = np.sign(d) * 1e-9
-    h, w = grid.shape
     for axis in (0, 1):
-        a, b = ga[axis], gb[:, axis]
-        fa = np.floor(a)
-        count = np.abs(np.floor(b) - fa).astype(np.intp)
-        forward = b >= a
-        todo = np.flatnonzero(out & (count > 0))
+        lines = _Crossings(grid, ga, gb, axis)
+        todo = np.flatnonzero(out & (lines.count > 0))
         k0 = 1
         while len(todo):
-            k = np.arange(k0, k0 + _BLOCK)
-            n = count[todo]
-            lines = np.where(forward[todo, None], fa + k, fa - k + 1)
-            t = (lines - a) / (b[todo] - a)[:, None]
-            cols = np.floor(ga[0] + t * d[todo, 0:1] + nudge[todo, 0:1]).astype(np.intp)
-            rows = np.floor(ga[1] + t * d[todo, 1:2] + nudge[todo, 1:2]).astype(np.intp)
-            hit = (k <= n[:, None]) & (rows >= 0) & (rows < h) & (cols >= 0) & (cols < w)
-            hit[hit] = grid.occupied_mask[rows[hit], cols[hit]]
+            _, rows, cols, hit = lines.block(todo, k0)
             hit &= ~((rows == t_rows[todo, None]) & (cols == t_cols[todo, None]))
             blocked = hit.any(axis=1)
             out[todo[blocked]] = False
             k0 += _BLOCK
-            todo = todo[~blocked & (n >= k0)]
+            todo = todo[~blocked & (lines.count[todo] >= k0)]
     return out
+
+
+class _Crossings:
+    """Where segments from the grid point ``ga`` to the grid points ``gb`` (in cells) cross the grid lines of one
+    axis (0: the lines of constant x, 1: of constant y), the k-th of segment i (k ≥ 1) at ``t`` along it (0 at
+    ``ga``, 1 at its end), and the cell it enters there: one walk for :func:`line_of_sight` and :func:`cast_rays`."""
+
+    def __init__(self, grid: OccupancyGrid, ga: NDArray[np.float64], gb: NDArray[np.float64], axis: int) -> None:
+        self.grid, self.ga, self.d = grid, ga, gb - ga
+        self.nudge = np.sign(self.d) * 1e-9
+        self.a, self.b = ga[axis], gb[:, axis]
+        self.fa = np.floor(self.a)
+        self.count = np.abs(np.floor(self.b) - self.fa).astype(np.intp)
+        """How many lines of the axis each segment crosses."""
+        self.forward = self.b >= self.a
+
+    def t(self, todo: NDArray[np.intp], k: NDArray[np.intp]) -> NDArray[np.float64]:
+        """Where along each segment of ``todo`` its crossings ``k`` lie (one row a segment)."""
+        lines = np.where(self.forward[todo, None], self.fa + k, self.fa - k + 1)
+        return np.asarray((lines - self.a) / (self.b[todo] - self.a)[:, None], dtype=float)
+
+    def block(self, todo: NDArray[np.intp], k0: int) -> tuple[NDArray[np.float64], NDArray[np.intp],
+                                                               NDArray[np.intp], NDArray[np.bool_]]:
+        """The :data:`_BLOCK` crossings from the ``k0``-th on of each segment of ``todo``: where they lie, the rows and
+        columns of the cells they enter, and whether each is a crossing of the segment into an occupied cell."""
+        k = np.arange(k0, k0 + _BLOCK)
+        t = self.t(todo, k)
+        d, nudge, ga = self.d, self.nudge, self.ga
+        cols = np.floor(ga[0] + t * d[todo, 0:1] + nudge[todo, 0:1]).astype(np.intp)
+        rows = np.floor(ga[1] + t * d[todo, 1:2] + nudge[todo, 1:2]).astype(np.intp)
+        h, w = self.grid.shape
+        hit = (k <= self.count[todo][:, None]) & (rows >= 0) & (rows < h) & (cols >= 0) & (cols < w)
+        hit[hit] = self.grid.occupied_mask[rows[hit], cols[hit]]
+        return t, rows, cols, hit
 
 
 FAN_FROM = 64
@@ -584,26 +605,14 @@ def cast_rays(grid: OccupancyGrid, origin: ArrayLike, angles: ArrayLike, max_ran
     ga = grid.world_to_grid(o)[0] / grid.resolution
     gb = grid.world_to_grid(ends) / grid.resolution
     d = gb - ga
-    nudge = np.sign(d) * 1e-9
-    h, w = grid.shape
     hit_t = np.full(len(theta), np.inf)
     hit_cell = np.zeros((len(theta), 2), dtype=np.intp)
     for axis in (0, 1):
-        a, b = ga[axis], gb[:, axis]
-        fa = np.floor(a)
-        count = np.abs(np.floor(b) - fa).astype(np.intp)
-        forward = b >= a
-        todo = np.flatnonzero(count > 0)
+        lines = _Crossings(grid, ga, gb, axis)
+        todo = np.flatnonzero(lines.count > 0)
         k0 = 1
         while len(todo):
-            k = np.arange(k0, k0 + _BLOCK)
-            n = count[todo]
-            lines = np.where(forward[todo, None], fa + k, fa - k + 1)
-            t = (lines - a) / (b[todo] - a)[:, None]
-            cols = np.floor(ga[0] + t * d[todo, 0:1] + nudge[todo, 0:1]).astype(np.intp)
-            rows = np.floor(ga[1] + t * d[todo, 1:2] + nudge[todo, 1:2]).astype(np.intp)
-            hit = (k <= n[:, None]) & (rows >= 0) & (rows < h) & (cols >= 0) & (cols < w)
-            hit[hit] = grid.occupied_mask[rows[hit], cols[hit]]
+            t, rows, cols, hit = lines.block(todo, k0)
             first = np.argmax(hit, axis=1)
             found = hit[np.arange(len(todo)), first]
             t_found = np.where(found, t[np.arange(len(todo)), first], np.inf)
@@ -613,8 +622,8 @@ def cast_rays(grid: OccupancyGrid, origin: ArrayLike, angles: ArrayLike, max_ran
             hit_cell[rays, 0] = rows[better, first[better]]
             hit_cell[rays, 1] = cols[better, first[better]]
             k0 += _BLOCK
-            next_t = (np.where(forward[todo], fa + k0, fa - k0 + 1) - a) / (b[todo] - a)
-            todo = todo[~found & (n >= k0) & (next_t < hit_t[todo])]
+            next_t = lines.t(todo, np.array([k0]))[:, 0]
+            todo = todo[~found & (lines.count[todo] >= k0) & (next_t < hit_t[todo])]
     stopped = np.isfinite(hit_t)
     if stopped.any():
         # the ray leaves its hit cell where it crosses the cell's far side in x or in y

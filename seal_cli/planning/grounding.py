@@ -163,6 +163,9 @@ class MapNames:
         self.room_said: str | None = None
         """The room an earlier frame of the command named last ("go to the bedroom and put it on the bed"): of
         several places, the ones in it are meant."""
+        self.robot_at: tuple[tuple[float, float], str] | None = None
+        """Where the robot will be when it sets off for the phrase being grounded, and how to say it ("where it takes
+        the guitar"); None: where it starts. Of several places, the nearest is measured from there."""
 
     @cached_property
     def referents(self) -> tuple[Referent, ...]:
@@ -316,8 +319,9 @@ class MapNames:
     def _one_of(self, text: str, found: list[Referent]) -> Referent:
         """The one of several referents a phrase calls: the one nearest the speaker when the phrase says it is
         theirs and several places fit ("is there a stapler on my desk?": the desk the speaker stands by); else,
-        of several places of one class nothing said tells apart, the nearest the robot drives to from where it
-        starts ("put the guitar on the bed" with four beds), the choice and its reason kept in :attr:`chosen`;
+        of several places of one class nothing said tells apart, the nearest the robot drives to from where it will
+        be (:attr:`robot_at`: "put the guitar on the bed" with four beds, from where it takes the guitar), the choice
+        and its reason kept in :attr:`chosen`;
         else (places of several classes: "the table" for a dining table and a coffee table) the first in the map's
         order, which lists the usual one first."""
         places = [r for r in found if r.kind == "place" and self.map.place(r.id) is not None]
@@ -341,18 +345,19 @@ class MapNames:
                                    f"{spoken(inside[0].room or '')}, the room said before it")
             return inside[0]
         among = inside or places
-        lengths = drive_lengths(self.map, self.map.robot.pose, [r.id for r in among])
+        start, there = self.robot_at or (self.map.robot.xy, "where it starts")
+        lengths = drive_lengths(self.map, start, [r.id for r in among])
         best = min(range(len(among)), key=lambda k: (lengths[k], k))
         one = among[best]
         which = f" of those in the {spoken(one.room or '')} (the room said before it)," if inside else ""
         if math.isinf(lengths[best]):       # a house split in islands: no path to any ("inf m" said before)
             said = said.removesuffix(": chose")
-            self.chosen.setdefault(one.id, f"{said}: none can be reached from where the robot starts; chose "
+            self.chosen.setdefault(one.id, f"{said}: the robot can reach none of them from {there}; chose "
                                    f"{one.id},{which} the first the map lists; say its room or its number "
                                    f"('{one.id}') to choose")
             return one
-        self.chosen.setdefault(one.id, f"{said} {one.id},{which} the nearest the robot drives to from where it "
-                               f"starts ({lengths[best]:.1f} m); say its room or its number ('{one.id}') to choose")
+        self.chosen.setdefault(one.id, f"{said} {one.id},{which} the nearest the robot drives to from {there} "
+                               f"({lengths[best]:.1f} m); say its room or its number ('{one.id}') to choose")
         return one
 
     def _room_of_words(self, words: tuple[str, ...]) -> str | None:

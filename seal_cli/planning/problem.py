@@ -48,7 +48,7 @@ from seal_cli.frames.library import Library
 from seal_cli.frames.model import Action, Binding, Fact, Frame
 from seal_cli.frames.taxonomy import Taxonomy, check_class_name, class_key, class_words
 from seal_cli.maps.model import SPEAKER
-from seal_cli.planning.grounding import FIXED, PAIRED, is_room_word, kind_of, where_words, words_of
+from seal_cli.planning.grounding import FIXED, PAIRED, WHERE_TYPES, is_room_word, kind_of, where_words, words_of
 from seal_cli.planning.state import State, robot_facts
 
 OPENABLE = "openable"
@@ -140,6 +140,8 @@ class Things:
         """The commanded frames whose goal "put away" chose."""
         self.put_back: list[Binding] = []
         """The commanded frames that put a thing "back" where the robot will take it from."""
+        self.points: dict[str, tuple[float, float]] = {}
+        """Where the map puts each of its rooms (the middle), places, things and people, by id."""
         self.every: Mapping[str, int] = {}
         """How many things of a class "all the ..." asks for when the map does not place them (``seal run``'s
         robot, after looking all over the house for them), by class key."""
@@ -154,9 +156,11 @@ class Things:
         for room in map.rooms:
             self.classes.setdefault(class_key(room.name), class_key(room.name))
             self.fixed.add(class_key(room.name))
+            self.points[class_key(room.name)] = room.centroid
         for place in map.places:
             name = class_key(place.name)
             self.classes[name] = place.cls
+            self.points[name] = place.at
             self.fixed.add(name)
             if place.room:
                 self.rooms[name] = class_key(place.room)
@@ -168,6 +172,7 @@ class Things:
         for obj in map.objects:
             counts[obj.cls] = counts.get(obj.cls, 0) + 1
             name = self._fresh(obj.cls, counts[obj.cls])
+            self.points[name] = obj.at
             if obj.inside is not None:
                 self.facts.add(Fact("in", (name, class_key(obj.inside))))
             elif (floor := map._room_name(obj.at)) is not None:
@@ -175,7 +180,9 @@ class Things:
         self.robot_holding = map.robot.holding
         for person in map.people:
             self.classes[person.key] = "person"
+            self.points[person.key] = map.person_at(person)
         self.classes.setdefault(SPEAKER, "person")
+        self.points[SPEAKER] = map.speaker_at
 
     def _fresh(self, cls: str, n: int) -> str:
         """Register a new thing of a class, the n-th if that name is free (else the next free one)."""
@@ -243,6 +250,8 @@ class Things:
                       for f in self.facts}
         rooms = {named(k): v for k, v in self.rooms.items() if k in (one, other)}
         self.rooms = {k: v for k, v in self.rooms.items() if k not in (one, other)} | rooms
+        points = {named(k): v for k, v in self.points.items() if k in (one, other)}
+        self.points = {k: v for k, v in self.points.items() if k not in (one, other)} | points
 
     def hold(self, holding: str | None) -> None:
         """Keep what the robot holds as the command starts (:attr:`held`): ``holding`` (a class, refused if
@@ -598,12 +607,13 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
     refused = None if asked else names.refusal(_place_words(phrase), said)
     if refused is not None:
         raise _located(refused.message, phrase, text)
-    if gone_to and not asked and not where_words(phrase.text) and _unheard_of(phrase, things):
+    if gone_to and not asked and not _kinds_known_of(phrase, things, said=True):
         m = things.map
-        what = " ".join(words_of(_place_words(phrase))) or phrase.head
+        what = phrase.head if where_words(phrase.text) else " ".join(words_of(_place_words(phrase))) or phrase.head
+        kind = "no kind of thing it knows of" if _unheard_of(phrase, things) else \
+            "no prior, object or place of it names the kind, so the robot has nowhere to search for one"
         raise _located(f"the {m.name} has no {what} (no room, place or person of the map is called so, and "
-                       f"no kind of thing it knows of); its rooms are {', '.join(m.room_names) or 'none'}",
-                       phrase, text)
+                       f"{kind}); its rooms are {', '.join(m.room_names) or 'none'}", phrase, text)
     if not asked and category in FIXTURE_TYPES and not _kinds_known_of(phrase, things):
         m = things.map                 # said in a room too ("leave the light on in the hall"): the map knows none
         tax = things.taxonomy
@@ -620,12 +630,18 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
     return None
 
 
+DESTINATIONS = frozenset({"navigate", "lead", "place", "pour"})
+"""Actions whose place argument is where the robot sets out for (goes, leads someone, puts or pours a thing)."""
+
+
 def _gone_to(frame: Frame, role: str) -> bool:
-    """Whether a frame only goes (or leads someone) to the element's value, puts nothing in it and takes nothing from
-    it (Go's goal, Find's ground, Guide's goal): a place in the house, never a thing to search for and use."""
-    used = [a for a in frame.actions if role in a.args]
-    return (frame.element(role).type == "location" and bool(used) and all(a.name in ("navigate", "lead") for a in used)
-            and not any(role in f.args for f in frame.preconditions))
+    """Whether the element says where the robot sets out for: it goes there, leads someone there, or puts or pours
+    what it holds there (Go's, Guide's, Place's, Bring's and Pour's goal, Find's ground), never what it takes, finds
+    or looks at (a theme) nor where it takes a thing from. Such a value must be one the robot can find before it
+    drives: a room, place or person of the map, or a kind the map knows (:func:`_kinds_known_of`), else it is
+    refused where it is said (reach27: "put the cup on the spaceship" fetched the cup, 11.25 m, then gave up)."""
+    used = [a for a in frame.actions if role in a.args and a.name in DESTINATIONS]
+    return role != "theme" and frame.element(role).type in (*WHERE_TYPES, "container") and bool(used)
 
 
 def _unheard_of(phrase: Phrase, things: Things) -> bool:
@@ -644,13 +660,15 @@ said in a room ("the radio in the kitchen", "leave the light on in the hall") to
 while "turn off all the lights" was refused; a map that names no such thing anywhere has none in any room)."""
 
 
-def _kinds_known_of(phrase: Phrase, things: Things) -> bool:
+def _kinds_known_of(phrase: Phrase, things: Things, said: bool = False) -> bool:
     """Whether the map knows the kind of thing a phrase names: a prior, an object or a place of its class (the
-    parse's, or the head's)."""
+    parse's, or the head's; ``said``: the parse's only when the words name it, not a learned guess, so "the bowl"
+    read as a cup is a bowl, as the run seeks it)."""
     m = things.map
     assert m is not None
     known = {*m.kinds(), *(class_key(p.cls) for p in m.places)}
-    return any(class_key(c) in known for c in (phrase.cls, phrase.head) if c)
+    cls = phrase.cls if phrase.cls and not (said and not _names(phrase, phrase.cls, things)) else None
+    return any(class_key(c) in known for c in (cls, phrase.head) if c)
 
 
 UNIVERSAL = frozenset({"all", "every", "each"})
@@ -785,11 +803,17 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         asked = _counted_roles(frame) | ({"theme"} if asks_whether(parse.text, evoked) else set())
         if things.names is not None:    # "go to the bedroom and put it on the bed": the bedroom's bed
             things.names.room_said = _room_said_last(earlier, things)
-        values = {role: _values(_sought_where(evoked, role, things), earlier, things, parse.text,
-                                frame.element(role).type, role in asked, _carried(frame, role), _gone_to(frame, role),
-                                not _taken_out_of_a_thing(evoked, things))
-                  for role, phrase in evoked.elements.items() if not back_unplaced(phrase)
-                  and not _the_house(role, phrase, things)}
+        grounded = [r for r, p in evoked.elements.items() if not back_unplaced(p) and not _the_house(r, p, things)]
+        values: dict[str, tuple[str, ...]] = {}
+        for role in sorted(grounded, key=lambda r: r in CARRIED_TO):     # where a thing goes, once the thing is known
+            if things.names is not None:
+                things.names.robot_at = _robot_at(frame, role, values, bindings, things)
+            values[role] = _values(_sought_where(evoked, role, things), earlier, things, parse.text,
+                                   frame.element(role).type, role in asked, _carried(frame, role),
+                                   _gone_to(frame, role), not _taken_out_of_a_thing(evoked, things))
+        values = {r: values[r] for r in grounded}
+        if things.names is not None:
+            things.names.robot_at = None
         back_later = False
         backs: dict[str, Phrase | None] = {r: p for r, p in evoked.elements.items() if back_unplaced(p)}
         goal = evoked.elements.get("goal")
@@ -852,6 +876,42 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
 ONE_EACH = frozenset({"a", "an", "one", "another"})
 """Words that open a phrase of one thing of a kind, not a particular one ("*a* biscuit"): handed to several people,
 one each."""
+
+
+CARRIED_TO = frozenset({"goal", "recipient"})
+"""The elements a frame carries its theme to ("put the guitar *on the bed*", "give *Ben* the cup")."""
+
+MOVES = frozenset({"navigate", "approach", "lead"})
+"""Actions that take the robot to their last argument."""
+
+
+def _robot_at(frame: Frame, role: str, values: Mapping[str, tuple[str, ...]], bindings: Sequence[Binding],
+              things: Things) -> tuple[tuple[float, float], str] | None:
+    """Where the robot will be when it sets off for ``role``'s value, where the map says, and how to say it: where it
+    takes the thing it carries there, when the robot does not hold it already (where the map places the thing, else
+    the source the frame says); else where the frames before leave it (the value the last move of the last of them
+    goes to); None: where it starts."""
+    theme, source = values.get("theme", ()), values.get("source", ())
+    key = class_key(things.held) if things.held else None
+    held = key if key in things.classes else next((n for n, c in things.classes.items() if c == key), None)
+    if (role in CARRIED_TO and len(theme) == 1 and theme[0] != held
+            and any("theme" in a.args and role in a.args for a in frame.actions)):
+        what = things.class_of(theme[0]).replace("_", " ")
+        if theme[0] in things.points:
+            return things.points[theme[0]], f"where it takes the {what}"
+        if len(source) == 1 and source[0] in things.points:     # "bring the mug from the kitchen to the sofa"
+            return things.points[source[0]], f"{_at(source[0], things)}, where it takes the {what} from"
+    for binding in reversed(bindings):
+        for action in reversed(binding.frame.actions):
+            value = binding.elements.get(action.args[-1]) if action.name in MOVES and action.args else None
+            if value in things.points:
+                return things.points[value], f"{_at(value, things)}, where the step before leaves it"
+    return None
+
+
+def _at(value: str, things: Things) -> str:
+    """How a room ("the dining room"), place ("sofa_1") or person ("ben") the robot stands at is said."""
+    return f"the {value.replace('_', ' ')}" if value in things.fixed and things.class_of(value) == value else value
 
 
 def _room_said_last(earlier: Sequence[Mapping[str, tuple[str, ...]]], things: Things) -> str | None:

@@ -1,4 +1,4 @@
-"""The household simulator: the world, navigation, the agent and the search policies.
+"""The household simulator: the world, the agent and the search policies (it drives on :mod:`seal_cli.maps.navigation`).
 
 Imports everything below it; never bench or cli.
 """

@@ -43,11 +43,11 @@ from seal_cli.frames.model import Action, Binding, Fact
 from seal_cli.frames.said import said_words, shown
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.model import SPEAKER, Map
+from seal_cli.maps.navigation import ROBOT_RADIUS, Cell, Grid
 from seal_cli.planning.grounding import kind_of, spoken
 from seal_cli.planning.plan import already_so, open_already
 from seal_cli.planning.questions import STATE_WORDS, Question
 from seal_cli.planning.state import State
-from seal_cli.sim.navigation import Cell, Grid
 from seal_cli.sim.policies.base import Policy
 from seal_cli.sim.unsearched import Unsearched
 from seal_cli.sim.world import HAND, PERSON, Detection, Item, Outcome, Reason, World
@@ -2229,14 +2229,12 @@ def _two_opt(order: tuple[int, ...], first: np.ndarray, between: np.ndarray) -> 
     return best
 
 
-def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Scene:
+def scene_from_map(m: Map, library: Library, *, robot_radius: float = ROBOT_RADIUS) -> Scene:
     """A world built from a seal map's places, ground-truth objects and people (the speaker, "me",
     stands at ``speaker.at`` or where the robot starts), on its free space. A place's ``reach`` is
     how far the robot can act on it and on what is in or on it. A place switches on and off unless
     the library knows its class does not (a table; a dryer nobody lists does, as the planner allows); a
     thing only when the library knows its class does (a kettle standing on the worktop)."""
-    from scipy.ndimage import binary_erosion
-
     from seal_cli.sensing.model import RangeSensor
     from seal_cli.sim.world import Item, Robot
 
@@ -2260,13 +2258,7 @@ def scene_from_map(m: Map, library: Library, *, robot_radius: float = 0.2) -> Sc
     if m.robot.holding:
         holding = f"{m.robot.holding}_{counts.get(m.robot.holding, 0) + 1}"   # the next of its class: "cup_2"
         items.append(Item(holding, m.robot.holding, m.robot.xy, movable=True, parent=HAND))
-    grid_free = np.asarray(m.grid.free_mask, dtype=bool)
-    cells = max(0, int(math.ceil(robot_radius / m.grid.resolution)) - 1)
-    free = binary_erosion(grid_free, iterations=cells) if cells else grid_free
-    if not free.any():
-        free = grid_free
-    res = m.grid.resolution
-    grid = Grid(free.astype(bool), (m.grid.origin[0] + res / 2, m.grid.origin[1] + res / 2), res, 8)
+    grid = Grid.from_map(m, robot_radius)
     world = World(items, Robot(pose=m.robot.pose, holding=holding), taxonomy=taxonomy,
                   sensor=RangeSensor.on_map(m))
     known = {i.key for i in items} | {class_key(c) for c in m.priors}   # what the map has priors of, it knows

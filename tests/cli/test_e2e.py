@@ -68,9 +68,13 @@ def test_questions_are_answered() -> None:
 
 def test_a_kind_the_map_knows_nothing_of_is_warned_about_and_said_absent_at_once() -> None:
     """The apartment names no bowl: the robot's perception knows the map's classes only, so the run says so before
-    it moves (e2e20; it searched the whole house before, to the same end)."""
-    report = run_json("put the apple in the bowl", "--max-steps", "40")
-    assert not report["completed"] and report["warnings"] == [
+    it moves (e2e20; it searched the whole house before, to the same end). As where to put a thing, it is refused
+    before the run (reach27: it fetched the apple, 14.35 m, before giving up)."""
+    put = runner.invoke(app, ["run", "--map", "apartment", "put the apple in the bowl"])
+    assert put.exit_code == 1 and "Traceback" not in put.output
+    assert "column 18: the apartment has no bowl (" in put.output
+    report = run_json("bring me the bowl", "--max-steps", "40")
+    assert not report["completed"] and report["path_m"] == 0 and report["warnings"] == [
         "the map apartment knows nothing of bowl (no prior, object or place names it): seal run will say so "
         "without searching the house"]
     assert report["why"] == "not_found" and report["reason"].startswith(

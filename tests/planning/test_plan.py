@@ -497,6 +497,7 @@ def test_map_places_open_and_robot_holding(library: Library, tmp_path: Path) -> 
                     "  - {name: box_a, class: table, at: [3, 3], openable: true}\n"
                     "objects:\n  - {class: apple, at: [1, 1], in: fridge_a}\n"
                     "  - {class: apple, at: [3, 3], in: box_a}\n"
+                    "priors:\n  tray: {kitchen: 0.9}\n"      # a kind it knows: searched for (with none, refused)
                     "robot: {pose: [2, 2], holding: spoon}\n", encoding="utf-8")
     tiny = load_map(path)
     with pytest.raises(SealError, match="the tiny has no counter; its places are fridge_a, box_a"):

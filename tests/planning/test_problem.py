@@ -101,8 +101,8 @@ def test_a_maps_rooms_and_places_are_not_objects_to_handle(library: Library) -> 
         assert said in str(caught.value) and "is fixed in the map" in str(caught.value)
         assert caught.value.column == text.index("the") + 1
     problem = problem_of_text("bring the cup to the sofa", library, map=apartment)
-    # (of the two sofas, the nearest the robot drives to: e2e25)
-    assert [str(b) for b in problem.commanded] == ["Bring(theme=cup, goal=sofa_2)"]
+    # (of the two sofas, the nearest the robot drives to from the coffee table it takes the cup from: reach27)
+    assert [str(b) for b in problem.commanded] == ["Bring(theme=cup, goal=sofa_1)"]
     for text, why in (("clean the table", "is fixed: it never moves (the library's Clean: wash a held object"),
                       ("clean the bathroom", "'the bathroom' (bathroom) is a room")):
         with pytest.raises(SealError, match=re.escape(why)):     # without a map, the library says so
@@ -350,15 +350,21 @@ def test_a_goal_only_the_verbs_statistics_guessed_is_asked_for(library: Library)
 def test_a_place_to_go_that_nothing_knows_of_is_refused_not_searched_for(library: Library) -> None:
     """"Go to the barn", "is there a cup in the barn?": a word that names no room, place or person of the map and
     no kind of thing the map or the library knows is a place the house lacks (it searched the whole house for a
-    barn). Put into or taken from, an unknown word is still a thing to search for ("put the cup in the bag")."""
+    barn). Put into, a kind the library knows is refused too when the map knows nothing of it (reach27: "put the
+    cup in the bag" fetched the cup, 15.90 m, and gave up, the run searching for no kind the map does not know);
+    with a prior of it, it is searched for."""
+    from dataclasses import replace
+
     from seal_cli.errors import SealError
     from seal_cli.maps.formats.map_server import load_map
 
     m = load_map("farmhouse")
-    for text in ("go to the barn", "is there a cup in the barn?", "guide Joe to the pharmacy"):
-        with pytest.raises(SealError, match=r"the farmhouse has no (barn|pharmacy) .*its rooms are kitchen"):
+    for text in ("go to the barn", "is there a cup in the barn?", "guide Joe to the pharmacy",
+                 "put the cup in the bag"):
+        with pytest.raises(SealError, match=r"the farmhouse has no (barn|pharmacy|bag) .*its rooms are kitchen"):
             problem_of_text(text, library, map=m)
-    assert [str(b) for b in problem_of_text("put the cup in the bag", library, map=m).commanded] == \
+    bags = replace(m, priors={**m.priors, "bag": {"kitchen": 0.5}})
+    assert [str(b) for b in problem_of_text("put the cup in the bag", library, map=bags).commanded] == \
         ["Place(theme=cup, goal=bag)"]
     assert [str(b) for b in problem_of_text("go to the lounge", library, map=m).commanded] == ["Go(goal=living_room)"]
 
@@ -549,12 +555,38 @@ def test_a_place_of_a_kind_the_house_has_several_of_is_the_nearest_and_said(libr
 
     m = load_map(Path(__file__).resolve().parents[2] / "maps" / "guesthouse.yaml")
     found = plan("leave the newspaper on the bed", library, map=m)
-    assert str(found.steps[-1]) == "Place(theme=newspaper, goal=bed_3)"   # the double room's: 5.9 m from the start
+    # the twin room's first, the nearest to the reception desk the newspaper lies on (reach27; bed_3 is the nearest
+    # to where the robot starts)
+    assert str(found.steps[-1]) == "Place(theme=newspaper, goal=bed_1)"
     assert any("'the bed' could be bed_1 (twin_room), bed_2 (twin_room), bed_3 (double_room) or bed_4 (bedroom): "
-               "chose bed_3, the nearest the robot drives to" in w for w in found.warnings)
+               "chose bed_1, the nearest the robot drives to from where it takes the newspaper" in w
+               for w in found.warnings)
     assert str(plan("leave the newspaper on the bed in the bedroom", library, map=m).steps[-1]) == \
         "Place(theme=newspaper, goal=bed_4)"
     assert not plan("go to the coffee table", library, map=m).warnings      # one of its class: nothing to say
+
+
+def test_of_several_places_the_nearest_is_measured_from_where_the_robot_will_be(library: Library) -> None:
+    """reach27: from where it takes the thing it carries there, else where the step before leaves it, else where it
+    starts; said in the warning."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan
+
+    houses = Path(__file__).resolve().parents[2] / "maps"
+    guesthouse, students = load_map(houses / "guesthouse.yaml"), load_map(houses / "student_house.yaml")
+    carried = plan("put the guitar on the bed", library, map=guesthouse)       # the guitar is on the lounge's sofa
+    assert str(carried.steps[-1]) == "Place(theme=guitar, goal=bed_4)"
+    assert any("chose bed_4, the nearest the robot drives to from where it takes the guitar" in w
+               for w in carried.warnings)
+    held = plan("put the guitar on the bed", library, map=guesthouse, holding="guitar")   # in the hand: from the start
+    assert str(held.steps[-1]) == "Place(theme=guitar, goal=bed_3)"
+    assert any("from where it starts" in w for w in held.warnings)
+    after = plan("go to desk_4, then go to the bed", library, map=students)     # the last room's desk, then its bed
+    assert [str(s) for s in after.steps] == ["Go(goal=desk_4)", "Go(goal=bed_4)"]
+    assert any("from desk_4, where the step before leaves it" in w for w in after.warnings)
+    from_room = plan("bring the scissors from the twin room to the bed", library, map=guesthouse)   # placed by none
+    assert str(from_room.steps[-1]) == "Bring(theme=scissors, goal=bed_1, source=twin_room)"
+    assert any("from the twin room, where it takes the scissors from" in w for w in from_room.warnings)
 
 
 def test_of_several_places_the_one_in_the_room_said_before_is_meant(library: Library) -> None:
@@ -567,4 +599,4 @@ def test_of_several_places_the_one_in_the_room_said_before_is_meant(library: Lib
     assert str(owners.steps[-1]) == "Place(theme=newspaper, goal=bed_4)"
     assert any("chose bed_4, the one in the bedroom, the room said before it" in w for w in owners.warnings)
     twin = plan("go to the twin room and then leave the newspaper on the bed", library, map=m)
-    assert str(twin.steps[-1]) == "Place(theme=newspaper, goal=bed_2)"        # of its two, the nearer
+    assert str(twin.steps[-1]) == "Place(theme=newspaper, goal=bed_1)"    # of its two, the nearer to the newspaper

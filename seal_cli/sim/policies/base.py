@@ -20,8 +20,8 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 if TYPE_CHECKING:
     from seal_cli.frames.model import Binding
+    from seal_cli.maps.navigation import Cell
     from seal_cli.sim.agent import Agent, Known, View
-    from seal_cli.sim.navigation import Cell
     from seal_cli.sim.world import Detection
 
 __all__ = ["Policy"]

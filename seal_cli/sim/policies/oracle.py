@@ -10,8 +10,8 @@ import numpy as np
 
 from seal_cli.frames.model import Binding
 from seal_cli.frames.taxonomy import class_key
+from seal_cli.maps.navigation import Cell
 from seal_cli.sim.agent import Agent, Known, View
-from seal_cli.sim.navigation import Cell
 from seal_cli.sim.policies.base import Policy
 from seal_cli.sim.policies.coverage import one_per_quarter_metre
 from seal_cli.sim.world import Detection

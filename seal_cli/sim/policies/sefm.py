@@ -18,9 +18,9 @@ import numpy as np
 from seal_cli.frames.model import Binding, Fact
 from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.model import Map, Person
+from seal_cli.maps.navigation import Cell
 from seal_cli.planning.state import State
 from seal_cli.sim.agent import Agent, Known, View
-from seal_cli.sim.navigation import Cell
 from seal_cli.sim.policies.base import Policy
 from seal_cli.sim.world import PERSON, Detection
 

@@ -33,7 +33,7 @@ from typing import Any
 
 import numpy as np
 
-from seal_cli.sim.navigation import Grid
+from seal_cli.maps.navigation import Grid
 
 __all__ = ["MAX_NODES", "SPACING", "DriveTable", "Lattice", "lattice_of"]
 

@@ -23,9 +23,9 @@ import numpy as np
 
 from seal_cli.frames.model import Binding
 from seal_cli.frames.taxonomy import class_key
+from seal_cli.maps.navigation import Cell
 from seal_cli.maps.priors import target_cells
 from seal_cli.sim.agent import Agent, View
-from seal_cli.sim.navigation import Cell
 from seal_cli.sim.policies.completion import Choice, Target, choose
 from seal_cli.sim.policies.views import SPACING, DriveTable, Lattice, lattice_of
 

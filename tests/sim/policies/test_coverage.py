@@ -9,8 +9,8 @@ import numpy as np
 
 from seal_cli.maps.geometry import OccupancyGrid
 from seal_cli.maps.model import Map, Robot, Sensor
+from seal_cli.maps.navigation import Grid
 from seal_cli.sensing.model import RangeSensor
-from seal_cli.sim.navigation import Grid
 from seal_cli.sim.policies.coverage import CoveragePolicy
 
 RES = 0.05

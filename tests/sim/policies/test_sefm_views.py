@@ -8,9 +8,9 @@ import pytest
 from seal_cli.frames.library import Library
 from seal_cli.maps.geometry import OccupancyGrid
 from seal_cli.maps.model import Map, ObjectTruth, Place, Robot, Room, Sensor
+from seal_cli.maps.navigation import Grid
 from seal_cli.sensing.model import RangeSensor
 from seal_cli.sim.agent import Agent, Scene, View
-from seal_cli.sim.navigation import Grid
 from seal_cli.sim.policies.object_only import ObjectOnlyPolicy
 from seal_cli.sim.policies.sefm import Look, SeFMPolicy, above_floor
 from seal_cli.sim.world import Item, World

@@ -107,7 +107,7 @@ def test_a_view_of_another_rule_is_weighed_on_the_same_footing_and_the_tables_gr
 def test_a_lattice_on_a_large_free_space_has_at_most_max_nodes() -> None:
     """An empty 50 m x 50 m floor at 0.25 m was 40,000 nodes, their all-pairs tables more than 19 GB: the blocks grow
     until the nodes fit, and paths and looks still work on them."""
-    from seal_cli.sim.navigation import Grid
+    from seal_cli.maps.navigation import Grid
     from seal_cli.sim.policies.views import MAX_NODES, lattice_of
 
     grid = Grid(np.ones((400, 400), dtype=bool), (0.0, 0.0), 0.125)  # 50 m x 50 m
@@ -123,7 +123,7 @@ def test_the_lattice_is_built_a_band_of_sources_at_a_time_with_the_same_paths(mo
     from scipy.sparse.csgraph import dijkstra
 
     import seal_cli.sim.policies.views as views
-    from seal_cli.sim.navigation import Grid
+    from seal_cli.maps.navigation import Grid
 
     free = np.ones((60, 90), dtype=bool)
     free[30, 5:85] = False                                       # a wall with a gap at each end
@@ -240,7 +240,7 @@ def test_a_look_on_the_way_sees_what_it_faces_and_a_view_sees_all_round() -> Non
     """A 90° sensor on an open corridor (nothing blocks the view): a look on the drive east sees the nodes ahead of
     it within 45° of east, not those behind; the look at the drive's end (the view, where the robot turns round)
     sees all round; with a 360° sensor a look on the way sees all round too."""
-    from seal_cli.sim.navigation import Grid
+    from seal_cli.maps.navigation import Grid
     from seal_cli.sim.policies.views import lattice_of
 
     free = np.ones((8, 80), dtype=bool)        # 0.4 m × 4 m of 5 cm cells, rows along y, columns along x

@@ -3,7 +3,10 @@
 A :class:`Grid` is a boolean mask of free cells laid on the plane: cell ``(i, j)`` (row ``i``
 along +y, column ``j`` along +x) has its centre at ``origin + (j, i) * resolution``. ALFRED's
 scenes give such a grid directly (the agent's 0.25 m reachable positions); a seal map gives it
-from its occupancy image, with the robot's radius taken off the free space.
+from its occupancy image, with the robot's radius taken off the free space (:meth:`Grid.from_map`).
+It is the one model of where the robot drives: the simulator drives on it, and planning ranks
+places by it (:mod:`seal_cli.maps.reach`), so the place planning calls nearest is the one the
+robot reaches soonest.
 
 Moves go to the 4 or 8 neighbouring free cells (a diagonal costs √2 cells, and may not cut a
 corner). :func:`astar` finds one shortest path; :meth:`Grid.distances` gives the length of the
@@ -18,16 +21,23 @@ import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from seal_cli.errors import SealError
 
+if TYPE_CHECKING:
+    from seal_cli.maps.model import Map
+
+ROBOT_RADIUS = 0.2
+"""Metres the robot's body reaches from its centre: the free space it drives on keeps this far from walls."""
+
 CACHE_BYTES = 64 * 2**20
 """The most bytes of shortest-path fields a grid keeps (at most 256 of them): about 50 on the apartment, 5 on a
 grid of a million cells (256 of 12 MB each took the memory of a run past 1 GB there)."""
 
-__all__ = ["Cell", "Grid", "astar", "path_length"]
+__all__ = ["ROBOT_RADIUS", "Cell", "Grid", "astar", "path_length"]
 
 Cell = tuple[int, int]
 
@@ -67,6 +77,19 @@ class Grid:
         free = np.zeros(shape, dtype=bool)
         free[idx[:, 1], idx[:, 0]] = True
         return cls(free, (float(low[0]), float(low[1])), resolution, connectivity)
+
+    @classmethod
+    def from_map(cls, m: Map, robot_radius: float = ROBOT_RADIUS) -> Grid:
+        """The cells of a map's grid the robot's centre may stand on: its free cells, less those within
+        ``robot_radius`` of an obstacle (all of them when that would leave none), centred on the map's cells."""
+        from scipy.ndimage import binary_erosion
+
+        free = np.asarray(m.grid.free_mask, dtype=bool)
+        cells = max(0, int(math.ceil(robot_radius / m.grid.resolution)) - 1)
+        kept = binary_erosion(free, iterations=cells) if cells else free
+        res = m.grid.resolution
+        centre = (m.grid.origin[0] + res / 2, m.grid.origin[1] + res / 2)
+        return cls((kept if kept.any() else free).astype(bool), centre, res, 8)
 
     @property
     def shape(self) -> tuple[int, int]:

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from seal_cli.errors import SealError
-from seal_cli.sim.navigation import Grid, astar, path_length
+from seal_cli.maps.navigation import Grid, astar, path_length
 
 
 def wall_grid(connectivity: int = 8) -> Grid:
@@ -83,7 +83,7 @@ def test_bad_input_is_a_clear_error() -> None:
 
 def test_the_path_cache_keeps_a_bounded_number_of_bytes(monkeypatch: pytest.MonkeyPatch) -> None:
     """256 fields of a million-cell grid were 3 GB: the cache holds at most CACHE_BYTES (and at least 4 fields)."""
-    from seal_cli.sim import navigation
+    from seal_cli.maps import navigation
 
     grid = Grid(np.ones((40, 40), dtype=bool), (0.0, 0.0), 0.5)
     entry = 40 * 40 * 8 + 40 * 40 * 4
