@@ -263,7 +263,7 @@ def test_a_signal_waits_for_its_file() -> None:
 
     import seal_cli.bench.reliability as judge
 
-    waits = ("import pathlib, time\nt = time.time()\nwhile time.time() - t < 0.3: pass\n"   # busy: the judge waits for CPU
+    waits = ("import pathlib, time\nt = time.time()\nwhile time.time() - t < 0.3: pass\n"  # busy: judge waits for CPU
              "pathlib.Path('.x.seal1-0123abcd.tmp').write_text('')\nwhile time.time() - t < 30: pass\n")
     with pytest.MonkeyPatch.context() as patch:
         patch.setattr(judge, "_seal", lambda: [sys.executable, "-c", waits])
