@@ -130,8 +130,9 @@ class ObjectModel:
 
     @classmethod
     def for_sensor(cls, spec: Sensor, **overrides: float) -> ObjectModel:
-        """The observation model of a sensor's detections (its ``p_detect`` and ``sigma``)."""
-        return cls(p_detect=spec.p_detect, sigma=spec.sigma, **overrides)
+        """The observation model of a sensor's detections (its ``p_detect`` and ``sigma``, unless ``overrides`` says
+        otherwise)."""
+        return cls(**{"p_detect": spec.p_detect, "sigma": spec.sigma, **overrides})
 
     @classmethod
     def for_map(cls, m: Map, **overrides: float) -> ObjectModel:

@@ -281,6 +281,12 @@ class World:
             else None
         return REACH_MARGIN if owner is None else max(REACH_MARGIN, float(owner.reach or 0.0) - 0.5)
 
+    p_detect = 1.0
+    """The chance that :meth:`observe` reports a thing in the sensor's view: 1, the simulated detector never misses
+    (whatever ``p_detect`` the map's sensor declares, which describes a real robot's detector: ``seal localize``,
+    ROS). A policy that models its detector's misses reads it here in the simulator (SeFM's object filter,
+    :attr:`~seal_cli.sim.policies.sefm.SeFMPolicy.world_detector`)."""
+
     def observe(self, pose: Sequence[float] | None = None) -> list[Detection]:
         """The movable things the robot sees: not shut inside anything, and in its sensor's view or in
         or on a place within its reach (it looks at what it stands at)."""

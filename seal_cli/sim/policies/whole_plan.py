@@ -426,6 +426,24 @@ class WholePlanSearch:
         if self._covered is not None:
             self._covered |= self.lattice.visible(node)
 
+    def ahead(self, agent: Agent, view: View) -> list[Cell]:
+        """The looks the rest of the drive to ``view`` takes (the lattice's looks from the robot's node to the
+        view's, one every ``look_every`` metres, the view's own left out), each added among the candidates for the
+        run: driving on is worth at least stopping at any of them to choose again (:meth:`~seal_cli.sim.policies.
+        sefm.SeFMPolicy.reconsider`). Their grid cells, in the drive's order."""
+        lattice = self.lattice
+        start, end = (int(k) for k in lattice.node_of(np.asarray([agent.grid.point(agent.robot_cell()),
+                                                                   agent.grid.point(view.cell)])))
+        nodes, _ = lattice.looks(start, end)
+        out: list[Cell] = []
+        for node in nodes[:-1]:
+            cell = (int(lattice.cells[node, 0]), int(lattice.cells[node, 1]))
+            if cell == view.cell or cell in self.used or not agent.grid.is_free(cell):
+                continue
+            self._add(agent, View(cell, agent.grid.point(cell)))
+            out.append(cell)
+        return out
+
     def _forget_tables(self) -> None:
         """Drop the drive tables used longest ago while they hold more than :data:`TABLE_BYTES` (the last one
         used is always kept); a table dropped is made again if it is asked for."""

@@ -303,6 +303,9 @@ def test_the_drive_stops_to_choose_again_when_what_it_saw_makes_another_view_bet
     for rethink in (1.0, float("inf")):
         policy = make_policy("sefm", 100)
         policy.rethink_m = rethink  # type: ignore[attr-defined]
+        # as traced, with the filter expecting a miss in ten; with the world's detector (search23) the first
+        # choice is the turn's already, and the run is 24.70 m with no stop
+        policy.world_detector = False  # type: ignore[attr-defined]
         agent, result = run_on_map(world, "stir the mug", library, policy, rng=np.random.default_rng(1))
         assert result.completed, result.reason
         stops = [r.text for r in agent.records if r.kind == "go" and "what it saw makes" in r.text]
@@ -315,6 +318,50 @@ def test_the_drive_stops_to_choose_again_when_what_it_saw_makes_another_view_bet
             assert any(f"makes {room} better" in stops[0] for room in ("bedroom", "living_room")), stops
             assert any(t.startswith("looks for spoon: bedroom") for t in later)
     assert paths[1.0] < paths[float("inf")] - 1.0, paths
+
+
+def test_driving_on_is_worth_the_best_look_on_the_way_not_only_the_view(library: Library) -> None:
+    # the held-out farmhouse, layout 1, from the family room's east end, "stir the cup": the drive to the bedroom's
+    # view sees the cup 4 m in; with the cup known, the kitchen (the spoon's other room) beats driving on to the
+    # bedroom's view by 1.4 m, but not stopping at the next look on the way (0.8 m, under rethink_m), which is
+    # where the spoon lies in sight: the drive goes on and finds it; valued by the view alone it turned back
+    import dataclasses
+
+    from seal_cli.bench import context
+    from seal_cli.bench.mapsuite import sample_layout
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.policies import make_policy
+
+    house = next(h for h in context.unseen_houses() if h.map.name == "farmhouse")
+    drawn = sample_layout(house.map, np.random.default_rng(context.layout_seed(0, 1, "farmhouse")))
+    world = dataclasses.replace(drawn, robot=Robot(house.starts[2]))
+    paths = {}
+    for on_way in (True, False):
+        policy = make_policy("sefm", 200)
+        policy.on_the_way = on_way  # type: ignore[attr-defined]
+        policy.world_detector = False  # type: ignore[attr-defined]   # the filter expecting a miss in ten, as traced
+        agent, result = run_on_map(world, "stir the cup", library, policy, rng=np.random.default_rng(1),
+                                   search_end=None)
+        assert result.completed, result.reason
+        turned = [r.text for r in agent.records if r.kind == "go" and "what it saw makes kitchen better" in r.text]
+        assert bool(turned) == (not on_way), turned
+        paths[on_way] = agent.world.robot.path_m
+    assert paths[True] < 10.0 < 30.0 < paths[False], paths
+
+
+def test_the_looks_ahead_are_the_rest_of_the_drive_s_looks_added_among_the_candidates(library: Library) -> None:
+    from seal_cli.sim.policies.whole_plan import WholePlanSearch
+
+    scene = corridor(library, {"apple": {"kitchen": 1.0}})
+    agent = ready(library, scene, SeFMPolicy(particles=50), [("Pick", {"theme": "apple"})])
+    search = WholePlanSearch(agent)
+    before = len(search.candidates)
+    view = View(agent.grid.cell((7.0, 0.5)), (7.0, 0.5))
+    cells = search.ahead(agent, view)
+    xs = [agent.grid.point(c)[0] for c in cells]
+    assert len(cells) >= 5 and xs == sorted(xs) and 0.5 <= xs[0] <= 1.5 and xs[-1] < 7.0, xs   # a look a metre
+    assert view.cell not in cells and len(search.candidates) == before + len(cells)
+    assert search.ahead(agent, view) == cells and len(search.candidates) == before + len(cells)   # added once
 
 
 def test_a_further_instance_is_looked_for_by_the_prior_not_by_the_found_ones_belief(library: Library) -> None:
