@@ -14,13 +14,14 @@ from typing import TYPE_CHECKING, Any
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import BESIDE, LOCATED, NP_OPENERS, ROUTE_NOUNS, SPEAKER_PRONOUNS, is_room_word
+from seal_cli.language.english import BESIDE, DEGREE_PHRASES, LOCATED, NP_OPENERS, ROUTE_NOUNS, SPEAKER_PRONOUNS, is_room_word
 from seal_cli.language.grounding import PARTS, PIECES, PORTIONS
 from seal_cli.language.lexicon import CommandError, Mention, Word, noun_lemma
 from seal_cli.language.morphology import is_gradable
 from seal_cli.language.reference import PLACES, Reference
 from seal_cli.language.roles import PUT_IN, ROLE_PREPOSITIONS, TO, Roles
-from seal_cli.language.syntax import NP, PP, Clause
+from seal_cli.language.syntax import NP, PP, Clause, end_of
+from seal_cli.language.unplaced import unplaced
 from seal_cli.language.values import Evoked, Parse, Phrase
 
 if TYPE_CHECKING:
@@ -52,6 +53,9 @@ class Evoker:
         self.roles = Roles(types, vocabulary, self.reference, self.frames)
         self.cut: set[int] = set()                     # noun phrases of pieces already seen to (cut_for)
         self.clause_frames = 0                         # frames of the clauses before the one being built
+        self.unplaced: list[tuple[NP | PP, str, str]] = []   # phrases no element took, the frame, the verb
+        self.beside: list[tuple[int, int]] = []        # said beside the command: a degree, a manner, "you"
+        self.fell_back = False                         # no frame took every phrase of the clause (:meth:`choose`)
 
     def command(self, clauses: Iterable[Clause]) -> Parse:
         """The parse of the clauses (in the order they are to be done)."""
@@ -84,6 +88,9 @@ class Evoker:
         best = self.escorting(self.moving(best, self.types.evoked_by(unit), clause), clause)
         best = self.examining_for(best, clause)
         _, frame, roles, attached = self.showing(best, clause)
+        if self.fell_back:
+            self.fell_back = False
+            self.place_left(frame, clause, roles, attached)
         self.first_into(frame, roles, attached)
         self.beside_on(frame, clause, roles, attached)
         self.emit(frame, unit, clause, roles, attached)
@@ -161,8 +168,45 @@ class Evoker:
                 key = (score - 5 * len(clause.items), -self.unfilled(frame, roles), -order)
                 if best is None or key > best[0]:
                     best = (key, frame, roles, attached)
+            self.fell_back = True
         assert best is not None
         return unit, best
+
+    def place_left(self, frame: Frame, clause: Clause, roles: dict[str, Any], attached: list[tuple[NP, PP]]) -> None:
+        """The phrases no element of the frame took when none takes every phrase (:meth:`choose`,
+        :mod:`~seal_cli.language.unplaced`): each lands where English puts it, is kept as said beside the command,
+        or is recorded in :attr:`unplaced` (the parser refuses the command at it).
+
+        * "*of* the people in the hall, how many ...": a partitive said before the question is what is counted
+          (the frame's first element, when empty);
+        * "how many cups are *empty*", "how many eggs are *left*": a bare word after "are" says which of them are
+          counted (a modifier of the first element);
+        * "slice the bread, *two slices*": a number of portions after a frame that leaves its thing in a form is
+          the form ("into two slices");
+        * "open the window *a little*" (:data:`~seal_cli.language.english.DEGREE_PHRASES`), "cut it, not too
+          *thick*" (a bare gradable adjective: how), "..., would *you*, and ..." (the one spoken to): said beside
+          the command, a remark."""
+        first = frame.elements[0].role if frame.elements else None
+        for item in unplaced(clause, frame, roles, attached):
+            np = item.np if isinstance(item, PP) else item
+            at = clause.items.index(item) if any(item is x for x in clause.items) else -1
+            before = clause.items[at - 1] if at > 0 else None
+            said = self.text[item.start:np.end].lower()
+            if isinstance(item, PP) and item.prep == "of" and item.start < clause.verb.start and first and \
+                    first not in roles and np.kind in ("thing", "person"):
+                roles[first] = np
+            elif isinstance(item, NP) and isinstance(before, Word) and before.tag == "BE" and np.head is not None \
+                    and not np.determined and not np.mods and isinstance(roles.get(first), NP):
+                roles[first].mods.append(np.head)
+            elif isinstance(item, NP) and self.makes_state(frame) and np.quantity is not None and \
+                    np.head is not None and noun_lemma(np.head.text) in PORTIONS and not clause.result:
+                clause.result = [PP("into", np, np.start)]
+            elif said in DEGREE_PHRASES or np.pronoun == "you" or (
+                    isinstance(item, NP) and not np.determined and not np.mods and np.head is not None and
+                    is_gradable(np.head.text)):
+                self.beside.append((item.start, np.end))
+            else:
+                self.unplaced.append((item, frame.name, self.text[clause.verb.start:clause.verb.end]))
 
     def accompanying(self, frames: Sequence[Frame], clause: Clause) -> list[Frame] | None:
         """"go *with Sam*", "walk with the visitor to the door": a verb of going somewhere, no object,
