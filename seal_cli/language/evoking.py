@@ -14,13 +14,21 @@ from typing import TYPE_CHECKING, Any
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import BESIDE, DEGREE_PHRASES, LOCATED, NP_OPENERS, ROUTE_NOUNS, SPEAKER_PRONOUNS, is_room_word
+from seal_cli.language.english import (
+    BESIDE,
+    DEGREE_PHRASES,
+    LOCATED,
+    NP_OPENERS,
+    ROUTE_NOUNS,
+    SPEAKER_PRONOUNS,
+    is_room_word,
+)
 from seal_cli.language.grounding import PARTS, PIECES, PORTIONS
 from seal_cli.language.lexicon import CommandError, Mention, Word, noun_lemma
 from seal_cli.language.morphology import is_gradable
 from seal_cli.language.reference import PLACES, Reference
 from seal_cli.language.roles import PUT_IN, ROLE_PREPOSITIONS, TO, Roles
-from seal_cli.language.syntax import NP, PP, Clause, end_of
+from seal_cli.language.syntax import NP, PP, Clause
 from seal_cli.language.unplaced import unplaced
 from seal_cli.language.values import Evoked, Parse, Phrase
 
@@ -189,6 +197,9 @@ class Evoker:
           (the frame's first element, when empty);
         * "how many cups are *empty*", "how many eggs are *left*": a bare word after "are" says which of them are
           counted (a modifier of the first element; a remark when that is unsaid: "how many are left");
+        * "on the same shelf as *the clock*": what "the same" is compared with describes that phrase (its text);
+        * "go round *the corner*": a phrase with a determiner right after an element of one bare word takes its
+          place, the bare word said beside (a word of path or manner the grammar read as a noun);
         * "slice the bread, *two slices*": a number of portions after a frame that leaves its thing in a form is
           the form ("into two slices");
         * "open the window *a little*" (:data:`~seal_cli.language.english.DEGREE_PHRASES`), "cut it, not too
@@ -205,12 +216,21 @@ class Evoker:
             at = clause.items.index(item) if any(item is x for x in clause.items) else -1
             before = clause.items[at - 1] if at > 0 else None
             said = self.text[item.start:np.end].lower()
-            if isinstance(item, NP) and isinstance(before, Word) and before.tag == "BE" and np.head is not None \
+            same = next((v for v in roles.values() if isinstance(v, NP) and v.end <= item.start and
+                         any(m.lower == "same" for m in v.mods)), None)
+            if isinstance(item, NP) and isinstance(before, Word) and before.lower == "as" and same is not None:
+                same.end = max(same.end, np.end)     # "on the same cushion *as the laptop*": which cushion
+            elif isinstance(item, NP) and isinstance(before, Word) and before.tag == "BE" and np.head is not None \
                     and not np.determined and not np.mods:
-                if isinstance(roles.get(first), NP):
-                    roles[first].mods.append(np.head)
+                counted = roles.get(first) if first is not None else None
+                if isinstance(counted, NP):
+                    counted.mods.append(np.head)
                 else:                        # "tell me how many are left": of what the question counts, unsaid
                     self.beside.append((item.start, np.end))
+            elif isinstance(item, NP) and np.determined and self._bare_before(roles, np) is not None:
+                role, bare = self._bare_before(roles, np) or ("", np)
+                roles[role] = np                 # "go *round* the corner": a bare word, then the phrase it leads to
+                self.beside.append((bare.start, bare.end))
             elif isinstance(item, NP) and self.makes_state(frame) and np.quantity is not None and \
                     np.head is not None and noun_lemma(np.head.text) in PORTIONS and not clause.result:
                 clause.result = [PP("into", np, np.start)]
@@ -221,6 +241,16 @@ class Evoker:
             else:
                 self.unplaced.append((item, frame.name, self.text[clause.verb.start:clause.verb.end] or
                                       str(clause.verb.info)))      # a verb said once for two clauses: its unit
+
+    def _bare_before(self, roles: Mapping[str, Any], np: NP) -> tuple[str, NP] | None:
+        """The element filled by one bare word (no determiner, no modifier) said right before ``np`` ("go *round*
+        the corner"), with its role; None."""
+        for role, value in roles.items():
+            if isinstance(value, NP) and value.head is not None and not value.determined and not value.mods and \
+                    value.pronoun is None and value.start == value.head.start and value.end <= np.start and \
+                    not self.text[value.end:np.start].strip():
+                return role, value
+        return None
 
     def accompanying(self, frames: Sequence[Frame], clause: Clause) -> list[Frame] | None:
         """"go *with Sam*", "walk with the visitor to the door": a verb of going somewhere, no object,
@@ -253,12 +283,12 @@ class Evoker:
         return chosen
 
     def going_with_thing(self, clause: Clause) -> list[Frame] | None:
-        """"go *with the trolley* to the garage", "come with the laundry to the bedroom": going somewhere with a
-        thing (no person, no pronoun) is taking it there — the frames that take a thing in hand to where it goes
+        """"go *with the trolley* to the garage", "pick up the boxes and go with *them* to the car": going somewhere
+        with a thing (no person; a pronoun that takes up things) is taking it there — the frames that take a thing in hand to where it goes
         (:meth:`handing`, those with a goal: Bring); the thing becomes the object. Only with a goal said ("go with
         the flow" is none); None when this is not it (words31: the thing was dropped silently, a bare Go)."""
         with_thing = next((x for x in clause.items if isinstance(x, PP) and x.prep == "with" and not x.lead and
-                           x.np.pronoun is None and self.roles.kind(x.np, None, None) == "thing"), None)
+                           self.roles.kind(x.np, None, None) == "thing"), None)
         if with_thing is None or not any(isinstance(x, PP) and x.prep in TO for x in clause.items):
             return None
         carrying = [f for f in self.handing() if "goal" in self.types.roles(f)]

@@ -85,9 +85,14 @@ def test_a_number_of_portions_after_slicing_is_the_form(library: Library) -> Non
     assert cut.frame == "Slice" and cut.result == "six slices"
 
 
+def test_what_the_same_is_compared_with_describes_it(library: Library) -> None:
+    (place,) = parse_command("put the mug on the same shelf as the teapot", library).frames
+    assert place.elements["goal"].head == "shelf" and place.elements["goal"].text == "the same shelf as the teapot"
+
+
 @pytest.mark.parametrize(("text", "at"), [
-    ("place the vase on the same shelf as the clock", "the clock"),
     ("put the box a jar on the table", "a jar"),
+    ("put the jar on the shelf the teapot", "the teapot"),
 ])
 def test_a_phrase_no_frame_takes_is_refused_at_it(library: Library, text: str, at: str) -> None:
     with pytest.raises(CommandError) as caught:
