@@ -284,9 +284,10 @@ class Evoker:
 
     def going_with_thing(self, clause: Clause) -> list[Frame] | None:
         """"go *with the trolley* to the garage", "pick up the boxes and go with *them* to the car": going somewhere
-        with a thing (no person; a pronoun that takes up things) is taking it there — the frames that take a thing in hand to where it goes
-        (:meth:`handing`, those with a goal: Bring); the thing becomes the object. Only with a goal said ("go with
-        the flow" is none); None when this is not it (words31: the thing was dropped silently, a bare Go)."""
+        with a thing (no person; a pronoun that takes up things) is taking it there — the frames that take a thing
+        in hand to where it goes (:meth:`handing`, those with a goal: Bring); the thing becomes the object. Only
+        with a goal said ("go with the flow" is none); None when this is not it (words31: the thing was dropped
+        silently, a bare Go)."""
         with_thing = next((x for x in clause.items if isinstance(x, PP) and x.prep == "with" and not x.lead and
                            self.roles.kind(x.np, None, None) == "thing"), None)
         if with_thing is None or not any(isinstance(x, PP) and x.prep in TO for x in clause.items):
