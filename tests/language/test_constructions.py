@@ -169,7 +169,7 @@ def test_our_sets_of_peoples_wording_score(path: Path, library: Library) -> None
                 if "error" not in parse)
     # fragments: verbless, unknown verbs (docs/language.md); people16 scored 0.816 after words26 and 0.893 after
     # words27, people17 0.726 untuned and 0.943 after words27, people18 0.820 untuned and 0.920 after words29, people19
-    # 0.931 untuned and 0.991 after words30, people20 0.810 untuned and 0.920 after words31: all held at the others'
+    # 0.931 untuned and 0.991 after words30, people20 0.810 untuned and 0.910 after words31: all held at the others'
     # 0.85
     least = 0.80 if "fragments" in path.name else 0.85
     assert right / len(items) >= least           # measured: 1.000, 0.900, 0.933, 1.000; 0.938, 0.935, 0.986; 0.822
