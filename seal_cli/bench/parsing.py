@@ -12,7 +12,13 @@ machine, the CPU time is what compares), with:
   :func:`~seal_cli.language.swallowed.swallowed` on the output (over the command's own tokens, not
   the tagger's): the target is zero on every corpus;
 * ``silent_dropped``: parses that drop a word of state ending a sentence ("is the light in the office *on*?"
-  read as a search, words26), found by :func:`~seal_cli.language.dropped.dropped_states`: the target is zero too.
+  read as a search, words26), found by :func:`~seal_cli.language.dropped.dropped_states`: the target is zero too;
+* ``refused_unplaced``: commands refused because a phrase of a clause reached no frame element (the parser's
+  error "... no element of Bring takes it ...", :mod:`~seal_cli.language.unplaced`);
+* ``silent_unplaced``: parses that still leave such a phrase (``Parse.unplaced``): the target is zero (words31).
+  Since the parser refuses every command that leaves one, this is zero by construction; it was the figure of the
+  corpora before that refusal (GPSR dev 0, ALFRED valid_seen 9, ``tests/data`` 26), and ``refused_unplaced`` is the
+  one that moves now.
 """
 
 from __future__ import annotations
@@ -32,6 +38,7 @@ from seal_cli.language.dropped import dropped_states
 from seal_cli.language.lexicon import CommandError, tokenize
 from seal_cli.language.parser import CommandParser
 from seal_cli.language.swallowed import swallowed
+from seal_cli.language.unplaced import EXPECTED as UNPLACED
 from seal_cli.language.values import Parse
 
 if TYPE_CHECKING:
@@ -55,6 +62,8 @@ class ParsingFigures:
     silent_swallowed: int
     commands_per_cpu_s: float
     silent_dropped: int = 0
+    refused_unplaced: int = 0
+    silent_unplaced: int = 0
 
     def to_json(self) -> dict[str, float | int]:
         return asdict(self)
@@ -83,7 +92,7 @@ def measure(texts: Sequence[str], library: Library, vocabulary: Vocabulary | Non
         with contextlib.suppress(SealError):
             parser.parse(text, vocabulary)
     parses: list[Parse] = []
-    errors = refused = 0
+    errors = refused = refused_unplaced = 0
     start = time.process_time()
     for text in texts:
         try:
@@ -91,6 +100,7 @@ def measure(texts: Sequence[str], library: Library, vocabulary: Vocabulary | Non
         except CommandError as error:
             errors += 1
             refused += error.expected == [SWALLOWED]
+            refused_unplaced += error.expected == [UNPLACED]
         except SealError:
             errors += 1
     seconds = time.process_time() - start
@@ -101,4 +111,5 @@ def measure(texts: Sequence[str], library: Library, vocabulary: Vocabulary | Non
         silent += bool(swallowed(parse, tokens, parser.lexicon, things))
         dropped += bool(dropped_states(parse, tokens))
     return ParsingFigures(len(texts), len(parses), errors, refused, silent,
-                          round(len(texts) / seconds, 1) if seconds > 0 else float("inf"), dropped)
+                          round(len(texts) / seconds, 1) if seconds > 0 else float("inf"), dropped,
+                          refused_unplaced, sum(bool(parse.unplaced) for parse in parses))

@@ -142,8 +142,8 @@ def bench_parse(
 ) -> None:
     """Score `seal parse` on parsing corpora with the shared scorers, and print their figures; then
     parse each corpus in process: commands per CPU-second, clauses swallowed into an element
-    (refused by the parser, or left silently) and states a question asks dropped silently (the
-    target of both is zero)."""
+    (refused by the parser, or left silently), states a question asks dropped silently, and phrases of a
+    clause no frame element takes (refused, or left silently; the target of each is zero)."""
     from seal_cli.bench.parsing import commands_of, measure
     from seal_cli.fileio import read_json_lines
     from seal_cli.frames.reading import load_library
@@ -200,6 +200,7 @@ def bench_parse(
                 err.print(_escape(run.stderr.rstrip()[-1000:]))
             out.print(f"in process: {figures.commands_per_cpu_s:,.0f} commands/CPU-s; clauses swallowed into an "
                       f"element: {figures.silent_swallowed} silently, {figures.refused_swallowed} refused; states "
-                      f"dropped: {figures.silent_dropped} (n={figures.commands}, errors {figures.errors})")
+                      f"dropped: {figures.silent_dropped}; phrases no element takes: {figures.silent_unplaced} "
+                      f"silently, {figures.refused_unplaced} refused (n={figures.commands}, errors {figures.errors})")
     if as_json:
         emit_json({"corpora": results})

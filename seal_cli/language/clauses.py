@@ -297,8 +297,8 @@ class Clauses:
         carried Ben). A thing after "and" ("bring me the cup and the spoon too") stays one clause of two things."""
         if not items or not isinstance(items[-1], Word) or items[-1].lower not in _ALSO:
             return None
-        k = next((j for j, x in enumerate(items) if isinstance(x, Word) and x.tag == "AND_NP" and x.lower == "and"),
-                 None)
+        k = next((j for j, x in enumerate(items) if isinstance(x, Word) and x.tag == "AND_NP" and
+                  x.lower in ("and", ", and")), None)         # ", and Ben too" (words31)
         if k is None or k < 2 or k + 2 >= len(items):
             return None
         rest = items[k + 2:]

@@ -106,6 +106,11 @@ SEQUENCE_ADVERBS = frozenset(["later", "later on", "soon after", "soon afterward
 """Adverbs of time that, between a joint and the next clause's verb, say only that it comes after ("meet Ana,
 and *later on* find her in the garden"; "water the plants then *after a while* turn off the tap"): part of the
 joint. Said after a verb's arguments they stay a time ("come back *later*", ``TIME_WORDS``)."""
+DEGREE_PHRASES = frozenset(["a little", "a little bit", "a bit", "a tad", "a touch", "a lot", "a crack", "a fraction",
+                            "slightly", "somewhat", "fully", "halfway", "all the way"])
+"""Noun phrases of degree (Quirk's downtoners and boosters): said after a verb's object ("open the curtains *a
+crack*", "turn the heater up *a lot*") they say how far, no thing acted on; no frame element takes a degree, so the
+parse keeps it as a remark beside the command (:mod:`~seal_cli.language.unplaced`), never drops it silently."""
 AND_WORDS = frozenset(["and", "as well as", "plus"])
 VERB_JOINTS = frozenset(["and", "then", ","])
 """Joints after which a bare word used mostly as a verb starts a clause of its own ("go to the kitchen *and* wait

@@ -14,13 +14,22 @@ from typing import TYPE_CHECKING, Any
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import BESIDE, LOCATED, NP_OPENERS, ROUTE_NOUNS, SPEAKER_PRONOUNS, is_room_word
+from seal_cli.language.english import (
+    BESIDE,
+    DEGREE_PHRASES,
+    LOCATED,
+    NP_OPENERS,
+    ROUTE_NOUNS,
+    SPEAKER_PRONOUNS,
+    is_room_word,
+)
 from seal_cli.language.grounding import PARTS, PIECES, PORTIONS
 from seal_cli.language.lexicon import CommandError, Mention, Word, noun_lemma
 from seal_cli.language.morphology import is_gradable
 from seal_cli.language.reference import PLACES, Reference
 from seal_cli.language.roles import PUT_IN, ROLE_PREPOSITIONS, TO, Roles
 from seal_cli.language.syntax import NP, PP, Clause
+from seal_cli.language.unplaced import unplaced
 from seal_cli.language.values import Evoked, Parse, Phrase
 
 if TYPE_CHECKING:
@@ -52,6 +61,9 @@ class Evoker:
         self.roles = Roles(types, vocabulary, self.reference, self.frames)
         self.cut: set[int] = set()                     # noun phrases of pieces already seen to (cut_for)
         self.clause_frames = 0                         # frames of the clauses before the one being built
+        self.unplaced: list[tuple[NP | PP, str, str]] = []   # phrases no element took, the frame, the verb
+        self.beside: list[tuple[int, int]] = []        # said beside the command: a degree, a manner, "you"
+        self.fell_back = False                         # no frame took every phrase of the clause (:meth:`choose`)
 
     def command(self, clauses: Iterable[Clause]) -> Parse:
         """The parse of the clauses (in the order they are to be done)."""
@@ -84,6 +96,9 @@ class Evoker:
         best = self.escorting(self.moving(best, self.types.evoked_by(unit), clause), clause)
         best = self.examining_for(best, clause)
         _, frame, roles, attached = self.showing(best, clause)
+        if self.fell_back:
+            self.fell_back = False
+            self.place_left(frame, clause, roles, attached)
         self.first_into(frame, roles, attached)
         self.beside_on(frame, clause, roles, attached)
         self.emit(frame, unit, clause, roles, attached)
@@ -153,6 +168,14 @@ class Evoker:
             found = self.best_fit(brings, clause) if brings else None
             if found is not None:
                 best = found
+        if best is None and frames and all("recipient" in self.types.roles(f) and "goal" not in self.types.roles(f)
+                                           for f in frames) and \
+                any(isinstance(x, PP) and x.prep in PUT_IN and not x.lead for x in clause.items):
+            found = self.best_fit(self.putting(), clause)   # "serve it *on the table*": handed to no one, put there
+            if found is not None:
+                best = found
+        if best is None and not clause.objects and not clause.message:
+            best = self.object_said_late(frames, clause)
         if best is None:                     # no frame takes every phrase: the best that takes the most
             for order, frame in enumerate(frames):
                 assigned = self.roles.assign(frame, clause, strict=False)
@@ -161,8 +184,73 @@ class Evoker:
                 key = (score - 5 * len(clause.items), -self.unfilled(frame, roles), -order)
                 if best is None or key > best[0]:
                     best = (key, frame, roles, attached)
+            self.fell_back = True
         assert best is not None
         return unit, best
+
+    def place_left(self, frame: Frame, clause: Clause, roles: dict[str, Any], attached: list[tuple[NP, PP]]) -> None:
+        """The phrases no element of the frame took when none takes every phrase (:meth:`choose`,
+        :mod:`~seal_cli.language.unplaced`): each lands where English puts it, is kept as said beside the command,
+        or is recorded in :attr:`unplaced` (the parser refuses the command at it).
+
+        * "*of* the people in the hall, how many ...": a partitive said before the question is what is counted
+          (the frame's first element, when empty);
+        * "how many cups are *empty*", "how many eggs are *left*": a bare word after "are" says which of them are
+          counted (a modifier of the first element; a remark when that is unsaid: "how many are left");
+        * "on the same shelf as *the clock*": what "the same" is compared with describes that phrase (its text);
+        * "go round *the corner*": a phrase with a determiner right after an element of one bare word takes its
+          place, the bare word said beside (a word of path or manner the grammar read as a noun);
+        * "slice the bread, *two slices*": a number of portions after a frame that leaves its thing in a form is
+          the form ("into two slices");
+        * "open the window *a little*" (:data:`~seal_cli.language.english.DEGREE_PHRASES`), "cut it, not too
+          *thick*" (a bare gradable adjective: how), "..., would *you*, and ..." (the one spoken to): said beside
+          the command, a remark."""
+        first = frame.elements[0].role if frame.elements else None
+        fronted = next((x for x in clause.items if isinstance(x, PP) and x.prep == "of" and
+                        x.start < clause.verb.start and x.np.kind in ("thing", "person")), None)
+        if fronted is not None and first and first not in roles:
+            roles[first] = fronted.np        # (also when read as describing a word after it: "how many are *empty*")
+            attached[:] = [(host, pp) for host, pp in attached if pp is not fronted]
+        for item in unplaced(clause, frame, roles, attached):
+            np = item.np if isinstance(item, PP) else item
+            at = clause.items.index(item) if any(item is x for x in clause.items) else -1
+            before = clause.items[at - 1] if at > 0 else None
+            said = self.text[item.start:np.end].lower()
+            same = next((v for v in roles.values() if isinstance(v, NP) and v.end <= item.start and
+                         any(m.lower == "same" for m in v.mods)), None)
+            if isinstance(item, NP) and isinstance(before, Word) and before.lower == "as" and same is not None:
+                same.end = max(same.end, np.end)     # "on the same cushion *as the laptop*": which cushion
+            elif isinstance(item, NP) and isinstance(before, Word) and before.tag == "BE" and np.head is not None \
+                    and not np.determined and not np.mods:
+                counted = roles.get(first) if first is not None else None
+                if isinstance(counted, NP):
+                    counted.mods.append(np.head)
+                else:                        # "tell me how many are left": of what the question counts, unsaid
+                    self.beside.append((item.start, np.end))
+            elif isinstance(item, NP) and np.determined and self._bare_before(roles, np) is not None:
+                role, bare = self._bare_before(roles, np) or ("", np)
+                roles[role] = np                 # "go *round* the corner": a bare word, then the phrase it leads to
+                self.beside.append((bare.start, bare.end))
+            elif isinstance(item, NP) and self.makes_state(frame) and np.quantity is not None and \
+                    np.head is not None and noun_lemma(np.head.text) in PORTIONS and not clause.result:
+                clause.result = [PP("into", np, np.start)]
+            elif said in DEGREE_PHRASES or np.pronoun == "you" or (
+                    isinstance(item, NP) and not np.determined and not np.mods and np.head is not None and
+                    is_gradable(np.head.text)):
+                self.beside.append((item.start, np.end))
+            else:
+                self.unplaced.append((item, frame.name, self.text[clause.verb.start:clause.verb.end] or
+                                      str(clause.verb.info)))      # a verb said once for two clauses: its unit
+
+    def _bare_before(self, roles: Mapping[str, Any], np: NP) -> tuple[str, NP] | None:
+        """The element filled by one bare word (no determiner, no modifier) said right before ``np`` ("go *round*
+        the corner"), with its role; None."""
+        for role, value in roles.items():
+            if isinstance(value, NP) and value.head is not None and not value.determined and not value.mods and \
+                    value.pronoun is None and value.start == value.head.start and value.end <= np.start and \
+                    not self.text[value.end:np.start].strip():
+                return role, value
+        return None
 
     def accompanying(self, frames: Sequence[Frame], clause: Clause) -> list[Frame] | None:
         """"go *with Sam*", "walk with the visitor to the door": a verb of going somewhere, no object,
@@ -180,7 +268,7 @@ class Evoker:
         #   "go with *them*": no thing said before that they could be, so the people (words30: "with them" was
         #   dropped, a bare Go)
         if company is None:
-            return None
+            return self.going_with_thing(clause)
         together = [f for f in self.library.frames if f.elements and self.types.is_person(f.elements[0].type)
                     and "goal" in self.types.roles(f)]
         leading = [f for f in together if _relates_to_goal(self.types.relation(f))]
@@ -193,6 +281,23 @@ class Evoker:
         clause.items = [x for x in clause.items if x is not company]
         clause.objects = [company.np]
         return chosen
+
+    def going_with_thing(self, clause: Clause) -> list[Frame] | None:
+        """"go *with the trolley* to the garage", "pick up the boxes and go with *them* to the car": going somewhere
+        with a thing (no person; a pronoun that takes up things) is taking it there — the frames that take a thing
+        in hand to where it goes (:meth:`handing`, those with a goal: Bring); the thing becomes the object. Only
+        with a goal said ("go with the flow" is none); None when this is not it (words31: the thing was dropped
+        silently, a bare Go)."""
+        with_thing = next((x for x in clause.items if isinstance(x, PP) and x.prep == "with" and not x.lead and
+                           self.roles.kind(x.np, None, None) == "thing"), None)
+        if with_thing is None or not any(isinstance(x, PP) and x.prep in TO for x in clause.items):
+            return None
+        carrying = [f for f in self.handing() if "goal" in self.types.roles(f)]
+        if not carrying:
+            return None
+        clause.items = [x for x in clause.items if x is not with_thing]
+        clause.objects = [with_thing.np]
+        return carrying
 
     def keeping_near(self, unit: str, clause: Clause) -> list[Frame] | None:
         """"stay *close to* Morgan", "stay near me": a verb whose unit with "with" moves with a person ("stay with":
@@ -337,6 +442,31 @@ class Evoker:
         if not any(f.gets_held() for f in frames):
             return []
         return self.handing(frames)      # "grab me two eggs": taken from where they are, so Bring, not Give
+
+    def object_said_late(self, frames: Sequence[Frame], clause: Clause) -> Fit | None:
+        """"bring to the kitchen *the cups*", "put on the shelf *all the books you can find*": the object said after
+        a phrase of place (a long object is said last in English) is the verb's object when a frame takes the
+        clause so (one noun phrase after the phrases, none before); None otherwise (words31: it was dropped)."""
+        late = [x for x in clause.items if isinstance(x, NP)]
+        if len(late) != 1 or not clause.items or not isinstance(clause.items[0], PP) or \
+                not all(isinstance(x, PP) for x in clause.items if x is not late[0]):
+            return None
+        np = late[0]
+        items = clause.items
+        clause.objects, clause.items = [np], [x for x in items if x is not np]
+        found = self.best_fit(frames, clause)
+        if found is None:
+            clause.objects, clause.items = [], items
+        return found
+
+    def putting(self) -> list[Frame]:
+        """The library's frames that put a held thing somewhere and hand it to no one (a theme first, a goal, no
+        recipient, ``holding(theme)`` before and not after — the thing is let go of, as one served is: Place, not
+        Pour): a verb of handing over said with only a place ("serve the
+        soup *on the table*", words31) puts it there."""
+        return [f for f in self.library.frames if f.elements and f.elements[0].role == "theme" and f.needs_held()
+                and "goal" in self.types.roles(f) and "recipient" not in self.types.roles(f) and
+                any(p.predicate == "holding" and p.args == ("theme",) and p.negated for p in f.postconditions)]
 
     def handing(self, besides: Sequence[Frame] = ()) -> list[Frame]:
         """The library's frames (other than ``besides``) that take a thing in hand to someone (a recipient,

@@ -31,6 +31,7 @@ from seal_cli.frames.library import Library
 from seal_cli.language.english import (
     BE_WORDS,
     BECAUSE,
+    DEGREE_PHRASES,
     DIRECTIONS,
     FINITE,
     NOMINATIVE,
@@ -61,7 +62,15 @@ from seal_cli.language.morphology import (
 from seal_cli.language.rule import AFTER_SEP, Match, Rule
 from seal_cli.language.rules import ANYWHERE, CLAUSE_START, INSIDE, WORDS
 from seal_cli.language.slips import one_slip
-from seal_cli.language.state import CLOSED, SUB_FIRST, State, inflected, lower_case_name, match_phrase
+from seal_cli.language.state import (
+    CLOSED,
+    SUB_FIRST,
+    State,
+    inflected,
+    longest_phrase,
+    lower_case_name,
+    match_phrase,
+)
 from seal_cli.language.tags import NP_START, Tag
 from seal_cli.language.tokens import MAX_LENGTH, CommandError, Word, capitalised, tokenize
 
@@ -376,7 +385,9 @@ def _stands_alone(words: Sequence[Word], j: int) -> bool:
     return after in (",", ".", "!", "?", ";", "please") or after in PREPOSITIONS or after in SEPARATOR_WORDS or \
         after in DIRECTIONS or after in BECAUSE or "'" in after and after.split("'")[0] in SUBJECTS or \
         match_phrase(words, j + 1, SUBORDINATORS) > 0 or \
-        match_phrase(words, j + 1, TIME_WORDS) > 0    # "turn it off *it's* too loud", "... *when*", "... *right away*"
+        match_phrase(words, j + 1, TIME_WORDS) > 0 or \
+        longest_phrase(words, j + 1, DEGREE_PHRASES) > 0   # "turn it off *it's* too loud", "... *when*", "... *right
+    #                                                         away*"; "turn the heating on *a little*" (words31)
 
 
 def _result_words(library: Library) -> dict[str, tuple[str, str]]:

@@ -44,6 +44,7 @@ from seal_cli.language.swallowed import Swallowed, swallowed
 from seal_cli.language.syntax import NP, Syntax
 from seal_cli.language.taskfields import reread
 from seal_cli.language.tasks import infer_task
+from seal_cli.language.unplaced import unplaced_error
 from seal_cli.language.values import Evoked, Parse, Phrase
 
 if TYPE_CHECKING:
@@ -103,11 +104,13 @@ class CommandParser:
             vocabulary = self.with_library_synonyms(vocabulary).in_context(text)   # the sentence weighs
         command = Syntax(text, words, self.types).transform(tree)
         clauses = Clauses(text, self.library, self.types, lexicon.speech).passes(command)
-        parse = Evoker(text, self.library, self.types, vocabulary, words, tagger.remarks).command(clauses)
-        parse = drop_found_again(merge_searches(parse))
+        evoker = Evoker(text, self.library, self.types, vocabulary, words, tagger.remarks)
+        parse = drop_found_again(merge_searches(evoker.command(clauses)))
         lost = swallowed(parse, words, lexicon, self.library.taxonomy.known_classes)
         if lost:
             raise _swallowed_error(parse, lost[0])
+        if evoker.unplaced:               # a phrase no element took: refused at it, never dropped silently
+            raise unplaced_error(text, *evoker.unplaced[0])
         thing = thing_asked(parse, self.library, lexicon)
         if thing is not None:
             raise _thing_asked_error(text, lexicon, *thing)
@@ -120,8 +123,9 @@ class CommandParser:
             parse = infer_goal(parse, self.library, vocabulary.by_key, vocabulary.goal_model, vocabulary.context,
                                vocabulary.house)
             parse = reread(parse, self.library, vocabulary, vocabulary.field_model, text)
-        if tagger.remarks:
-            parse = replace(parse, remarks=tuple(text[a:b] for a, b in tagger.remarks))
+        remarks = sorted([*tagger.remarks, *evoker.beside])
+        if remarks:
+            parse = replace(parse, remarks=tuple(text[a:b] for a, b in remarks))
         return parse
 
     def tree(self, text: str, words: Sequence[Word]) -> Tree:

@@ -262,8 +262,8 @@ def _its_is_it_is(words: Sequence[Word], k: int) -> bool:
     if not nxt.isalpha():
         return False
     if nxt in DETERMINERS or nxt in ("not", "been", "going", "gonna", "got") or gerund_lemma(nxt) or \
-            nxt not in CLOSED and is_adverb(nxt):
-        return True
+            nxt not in CLOSED and is_adverb(nxt) or nxt in PREPOSITIONS and nxt != "one":
+        return True                          # "*its* on the chair": no noun after a possessive (words31)
     after = words[k + 2].lower if k + 2 < len(words) else ""
     return is_adjective(nxt) and (not after.isalpha() or after in CLOSED or after in SEPARATOR_WORDS)
 
@@ -342,6 +342,10 @@ _NEEDING = frozenset(["has", "needs", "wants"])
 """After a bare subject and before "to", a need stated ("lily *has* to get to the garage")."""
 _BE_STATED = frozenset(["is", "are", "was", "were", "isn't", "aren't", "wasn't", "weren't"])
 """Forms of "be" after a bare noun that make it a subject ("dinner *is* ready"): no command says "X is"."""
+
+_GIVEN_TO = frozenset(["me", "him", "her", "them", "us"])
+"""Object pronouns that can be the person a thing is given to ("give *him* the keys and then *her* the coat")."""
+
 
 class State:
     """What the tagger knows at a word of one command (see the module docstring)."""
@@ -616,8 +620,9 @@ class State:
         left* on the sofa"), so only these."""
         low = self.words[i].lower
         if low not in BECAUSE and not ("'" in low and low.split("'")[0] in SUBJECTS and
-                                        "'" + low.split("'", 1)[1] in CONTRACTED):
-            return 0, ()
+                                        "'" + low.split("'", 1)[1] in CONTRACTED) and \
+                not (low == "so" and i + 1 < len(self.words) and self.words[i + 1].lower in SUBJECTS):
+            return 0, ()                 # "stir the porridge *so it doesn't burn*": a purpose, said beside (words31)
         n, spans = self.remark_after(i - 1)
         return (n - 1, spans) if n else (0, ())
 
@@ -1271,6 +1276,12 @@ class State:
             return Match(j - i, (merge(words, i, j - i, Tag.SEP), Word("", words[j].start, words[j].start,
                                                                         Tag.VERB, again)),
                          expect=False, verb=again, using=False)
+        given = self._given_again(j) if (then or any(w.lower in (",", ";") for w in words[i:j])) and \
+            low in ("and", ",", ";", "then") else None
+        if given:                          # "hand Ben a cup and then *Anna a cup*": the verb again, to her
+            return Match(j - i, (merge(words, i, j - i, Tag.SEP), Word("", words[j].start, words[j].start,
+                                                                        Tag.VERB, given)),
+                         expect=False, verb=given, using=False)
         if low in ("then", "after that", "afterwards", "finally", "after", "before", "while", "once done",
                    "when done") or span > 1 and low != ",":
             again = self._path_again(j)
@@ -1283,6 +1294,9 @@ class State:
             return Match(1)                # "a round, gold object": one noun phrase, its head "object"
         if low in ("and", ",", ";") and self._obliged_at(j):
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),), expect=True)   # "..., the cups go on the shelf"
+        if low == "," and j == i + 2 and words[i + 1].lower == "and" and self.prev_tag() in ("WORD", "NAME") and \
+                self._person_at(j) and match_phrase(words, j + 1, ADDITIVES):
+            return Match(j - i, (merge(words, i, j - i, Tag.AND_NP),))   # "hand Ben a cup*, and* Anna too"
         if low in ("and", ",", "or") and self.np_starts(j) and self.prev_tag() in ("WORD", "NAME", "PRON"):
             unknown_verb = (nxt not in NP_OPENERS and nxt not in PRONOUNS
                             and not capitalised(words[j]) and nxt not in NUMBERS and
@@ -1384,6 +1398,35 @@ class State:
         if end < len(words) and words[end].lower not in END_MARKS and words[end].lower not in (",", ";", "please"):
             return None
         return str(self.out[self.verb_index].info)
+
+    def _person_at(self, j: int) -> bool:
+        """Whether word ``j`` names a person a thing can be given to: a name (written with a capital, no thing
+        nor verb of the library), a noun of people ("mum", "the twins" are not: one word), or an object pronoun."""
+        words = self.words
+        if j >= len(words):
+            return False
+        low = words[j].lower
+        return low in _GIVEN_TO or low in self.lexicon.people or \
+            capitalised(words[j]) and low not in self.lexicon.things and low not in CLOSED and self.verb_at(j) is None
+
+    def _given_again(self, j: int) -> str | None:
+        """The verb of the clause before when, after "and then" or a comma, another person and a thing follow
+        with no verb: "hand Ben a cup and then *Anna a cup*", "bring Dad his glasses, then *Mum her keys*" (gapping:
+        the verb is said once). The clause gave a thing to a person said first (a unit of a frame with a
+        recipient, a person right after the verb); the new person is followed by a noun phrase's opener (a
+        determiner, a possessive, a number); None."""
+        words = self.words
+        if self.verb_index < 0 or self.verb_index + 1 >= len(self.out):
+            return None
+        unit = str(self.out[self.verb_index].info)
+        first = self.out[self.verb_index + 1]
+        if unit not in self.lexicon.recipients or not (first.tag == Tag.NAME or first.lower in _GIVEN_TO or
+                                                        first.lower in self.lexicon.people):
+            return None
+        if not self._person_at(j) or j + 1 >= len(words) or words[j + 1].lower not in NP_OPENERS or \
+                self.verb_after(j):
+            return None
+        return unit
 
     def _placed_again(self, j: int) -> str | None:
         """The verb of the clause before when, after a comma, one more object and where it goes follow, with

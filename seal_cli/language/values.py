@@ -105,6 +105,10 @@ class Parse:
     remarks: tuple[str, ...] = ()
     """What was said beside the command and dropped: statements, greetings ("*The grandchildren are
     here.*", "..., *she's been waiting a while*")."""
+    unplaced: tuple[tuple[int, int], ...] = field(default=(), compare=False)
+    """Where the phrases are that no frame element took (:mod:`~seal_cli.language.unplaced`), for a parse made
+    without the parser's refusal: :class:`~seal_cli.language.parser.CommandParser` refuses a command that leaves
+    one, so a parse it returns has none (`seal bench parse` counts any that would); not part of the SPEC's JSON."""
 
     def to_json(self) -> dict[str, Any]:
         data: dict[str, Any] = {"text": self.text, "frames": [f.to_json() for f in self.frames]}

@@ -46,3 +46,11 @@ def test_the_commands_of_a_corpus(tmp_path: Path) -> None:
     bad.write_text('{"text": oops}\n', encoding="utf-8")
     with pytest.raises(SealError, match="not JSON"):
         commands_of(bad)
+
+
+def test_a_phrase_no_element_takes_is_counted_as_refused(library: Library) -> None:
+    """words31: a phrase of a clause no frame element takes is refused at it, never left silently."""
+    figures = measure(["put the jar on the shelf the teapot", "open the window a little",
+                       "bring to the hall the chairs"], library, warmup=0)
+    assert (figures.parsed, figures.errors, figures.refused_unplaced, figures.silent_unplaced) == (2, 1, 1, 0)
+    assert figures.to_json()["refused_unplaced"] == 1

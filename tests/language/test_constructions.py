@@ -169,7 +169,8 @@ def test_our_sets_of_peoples_wording_score(path: Path, library: Library) -> None
                 if "error" not in parse)
     # fragments: verbless, unknown verbs (docs/language.md); people16 scored 0.816 after words26 and 0.893 after
     # words27, people17 0.726 untuned and 0.943 after words27, people18 0.820 untuned and 0.920 after words29, people19
-    # 0.931 untuned and 0.991 after words30: all held at the others' 0.85
+    # 0.931 untuned and 0.991 after words30, people20 0.810 untuned and 0.910 after words31: all held at the others'
+    # 0.85
     least = 0.80 if "fragments" in path.name else 0.85
     assert right / len(items) >= least           # measured: 1.000, 0.900, 0.933, 1.000; 0.938, 0.935, 0.986; 0.822
 
@@ -209,7 +210,8 @@ def test_paraphrased_requests_of_gpsr_commands(library: Library) -> None:
     assert [f for f, _ in frames("Hey, when you get a sec, could you grab me a soda?", library)] == ["Bring"]
     assert [f for f, _ in frames("I'd really appreciate it if you brought me a toy.", library)] == ["Bring"]
     assert texts("go with sam to the bedroom", library) == [("Guide", {"theme": "sam", "goal": "the bedroom"})]
-    assert texts("go with milk to the kitchen", library) == [("Go", {"goal": "the kitchen"})]   # a word: no one
+    assert texts("go with milk to the kitchen", library) == [   # a word: no one; a thing taken there (words31)
+        ("Bring", {"theme": "milk", "goal": "the kitchen"})]
 
 
 def test_being_somewhere_before_a_clause_is_going_there_first(library: Library) -> None:
@@ -744,9 +746,9 @@ def test_an_unknown_verb_and_its_particle_after_please_is_no_thing_asked_for(lib
 
 def test_among_or_out_of_a_group_before_a_question(library: Library) -> None:
     assert frames("Among the people in the kitchen, how many are standing?", library) == [
-        ("Count", {"ground": "kitchen"})]
+        ("Count", {"theme": "person", "ground": "kitchen"})]            # the group is what is counted (words31)
     assert frames("out of the people in the office, how many are waving?", library) == [
-        ("Count", {"ground": "office"})]
+        ("Count", {"theme": "person", "ground": "office"})]
     assert frames("out of the fridge, take the milk", library) == [("Pick", {"theme": "milk", "source": "fridge"})]
 
 
@@ -1041,7 +1043,7 @@ def test_a_lower_case_name_the_dictionary_lists_as_a_noun(text: str, want: list,
 
 def test_a_bare_noun_after_with_that_describes_a_thing_stays_a_thing(library: Library) -> None:
     assert [f for f, _ in texts("put the plate with apple in the fridge", library)] == ["Place", "Place"]
-    assert texts("go with milk to the kitchen", library) == [("Go", {"goal": "the kitchen"})]
+    assert texts("go with milk to the kitchen", library) == [("Bring", {"theme": "milk", "goal": "the kitchen"})]
     assert texts("bring the cup to bed", library)[0][1].get("goal") == "bed"
 
 
@@ -2552,7 +2554,9 @@ def test_back_in_there_is_back_and_there(library: Library) -> None:
 
 def test_a_hesitation_before_a_correction_is_its_comma(library: Library) -> None:
     assert frames("put it on the shelf uh I mean the desk", library) == [("Place", {"theme": "it", "goal": "desk"})]
-    assert frames("bring me the cup um no the mug", library) == [("Bring", {"theme": "cup", "recipient": "me"})]
+    with pytest.raises(CommandError) as refused:   # "no the mug" no element takes: refused at it (words31; the
+        parse_command("bring me the cup um no the mug", library)    # mug was dropped without a word)
+    assert refused.value.column == len("bring me the cup um ") + 1
 
 
 @pytest.mark.parametrize(("text", "want"), [
@@ -2588,12 +2592,13 @@ def test_in_between_a_verb_that_hands_and_its_object_is_a_particle(
 @pytest.mark.parametrize(("text", "want"), [
     ("the visitors have arrived, go with them to the hall", [("Guide", {"theme": "visitor", "goal": "hall"})]),
     ("walk with them", [("Follow", {"theme": "them"})]),
-    ("pick up the boxes and go with them to the car", [("Pick", {"theme": "box"}), ("Go", {"goal": "car"})]),
+    ("pick up the boxes and go with them to the car", [("Pick", {"theme": "box"}),
+                                                       ("Bring", {"theme": "box", "goal": "car"})]),
 ])
 def test_going_with_them_is_going_with_people(text: str, want: list[tuple[str, dict[str, str]]],
                                               library: Library) -> None:
     """"go with them" was a bare Go, "with them" dropped without a word; with no thing said before, "them" are the
-    people gone with; things said before are carried (as before)."""
+    people gone with; things said before are carried there (words31: Bring; a Go dropped "with them")."""
     assert_reads(text, want, library)
 
 
@@ -2627,3 +2632,62 @@ def test_a_thing_said_to_belong_somewhere_after_a_comma_is_its_own_clause(librar
         ("Place", {"theme": "towel", "goal": "rail"}), ("Place", {"theme": "towel", "goal": "basket"})]
     assert frames("put the milk, the eggs and the cheese in the fridge", library) == [
         ("Place", {"theme": "milk", "goal": "fridge"})]                  # a list, as before
+
+
+# -- words31 ------------------------------------------------------------------------------------------------------
+@pytest.mark.parametrize(("text", "want"), [
+    ("pass Omar the salt, and Rosa too", [("Give", {"theme": "salt", "recipient": "Omar"}),
+                                          ("Give", {"theme": "salt", "recipient": "Rosa"})]),
+    ("get Kim a blanket, and Lou as well", [("Bring", {"theme": "blanket", "recipient": "Kim"}),
+                                            ("Bring", {"theme": "blanket", "recipient": "Lou"})]),
+    ("bring the cups, and the saucers too", [("Bring", {"theme": "cup"}), ("Bring", {"theme": "saucer"})]),  # before
+])
+def test_a_comma_before_and_another_person_too(text: str, want: list[tuple[str, dict[str, str]]],
+                                               library: Library) -> None:
+    """"hand Ben a cup, and Anna too" said "unknown verb 'anna'": the comma before "and" split the echo."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("pass Omar the salt and then Rosa the pepper", [("Give", {"theme": "salt", "recipient": "Omar"}),
+                                                     ("Give", {"theme": "pepper", "recipient": "Rosa"})]),
+    ("bring Grandpa his pills, then Jess her book", [("Bring", {"theme": "pill", "recipient": "Grandpa"}),
+                                                     ("Bring", {"theme": "book", "recipient": "Jess"})]),
+    ("give him the keys and then her the coat", [("Give", {"theme": "key", "recipient": "him"}),
+                                                 ("Give", {"theme": "coat", "recipient": "him"})]),
+    ("hand Omar the salt and then go to the hall", [("Give", {"theme": "salt", "recipient": "Omar"}),
+                                                    ("Go", {"goal": "hall"})]),           # a verb: its own clause
+])
+def test_gapping_after_and_then(text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """The verb said once for two persons and their things, after "and then" or a comma ("and then Anna a cup" said
+    "unknown verb 'anna'"). ("her" takes up "him": a known fault of pronoun reference, not of this rule.)"""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("get rid of the empty boxes", [("Place", {"theme": "box"})]),
+    ("pick up the peel and get rid of it", [("Pick", {"theme": "peel"}), ("Place", {"theme": "peel"})]),
+    ("get rid of the junk mail in the recycling", [("Place", {"theme": "mail", "goal": "recycling"})]),
+])
+def test_get_rid_of_is_putting_away(text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """"get rid of X" was Pick of "rid": a unit of Place now (WordNet: get_rid_of.v.01 is discard.v.01's hypernym)."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want", "remark"), [
+    ("fetch my scarf its on the hook", [("Pick", {"theme": "scarf"})], "its on the hook"),
+    ("put the lid back on its pan", [("Place", {"theme": "lid", "goal": "pan"})], None),      # a possessive
+    ("stir the soup so it doesn't stick", [("Stir", {"theme": "soup"})], "so it doesn't stick"),
+    ("switch the fan on a bit", [("ToggleOn", {"theme": "fan"})], "a bit"),
+    ("find Ola, actually find Tim", [("Find", {"theme": "Tim"})], "find Ola"),
+])
+def test_what_is_said_beside_is_kept_as_a_remark(text: str, want: list[tuple[str, dict[str, str]]],
+                                                 remark: str | None, library: Library) -> None:
+    assert_reads(text, want, library)
+    remarks = parse_command(text, library).remarks
+    assert (remark in remarks) if remark else not remarks
+
+
+def test_the_one_too_is_one_more_of_the_things(library: Library) -> None:
+    (close,) = parse_command("shut the front gate and the side one too", library).frames
+    assert [c.head for c in close.elements["theme"].conjuncts] == ["gate", "gate"]

@@ -148,6 +148,7 @@ INSIDE: tuple[Rule, ...] = (
     clauses.SUBORDINATE_INSIDE,
     clauses.RELATIVE,
     clauses.CONTACT_RELATIVE,
+    clauses.STRANDED_RELATIVE,
     statements.REMARK_UNMARKED,
     requests.FRONTED_END,
     statements.REMARK_AFTER,

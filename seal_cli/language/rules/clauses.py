@@ -4,6 +4,7 @@ inside a clause, relative clauses, "until the corner", "something to drink"."""
 from __future__ import annotations
 
 from seal_cli.language.english import (
+    BE_WORDS,
     DONE_BEFORE,
     END_MARKS,
     HERE_WORDS,
@@ -132,6 +133,25 @@ def _contact_relative(s: State, i: int) -> Match | None:
     return s.emit(i, end - i, Tag.REL) if end > i + 1 else None
 
 
+def _stranded_relative(s: State, i: int) -> Match | None:
+    """A relative clause with no "that" whose subject is "it" or "they" and whose preposition is left at its end
+    ("the sink *it came from*", "the table *it was on*", "the shelf *they sat on*"): after a common noun, "it" and a
+    past form or "was"/"is", up to a preposition ending the clause — kept whole as one ``REL`` word the noun keeps,
+    as "the shelf *I took it from*" is (words31: "it" was a phrase no element took, dropped silently)."""
+    words = s.words
+    if s.prev_tag() != Tag.WORD or i + 2 >= len(words):
+        return None
+    verb = words[i + 1].lower
+    lemma = verb_lemma(verb)
+    if verb not in BE_WORDS and (not lemma or verb.endswith("ing") or verb not in participles(lemma)):
+        return None
+    end = s.relative_end(i + 1)
+    if end <= i + 2 or words[end - 1].lower not in PREPOSITIONS or \
+            end < len(words) and words[end].lower not in END_MARKS and words[end].lower not in (",", "and", "then"):
+        return None                          # only a preposition left over at the clause's end
+    return s.emit(i, end - i, Tag.REL)
+
+
 def _partitive_of(s: State, i: int) -> Match | None:
     out = s.out
     if not out or s.verb_index != len(out) - 1 or out[-1].tag != Tag.VERB or \
@@ -219,6 +239,11 @@ CONTACT_RELATIVE = Rule("relative clause of a name, no that", _contact_relative,
     Example("bring me the mug Sam left on the sofa", "Sam left", Tag.REL),
 ), lambda low: low.isalpha() and low not in CLOSED, "a name and a past verb after a noun: a relative clause "
    "without 'that'")
+STRANDED_RELATIVE = Rule("relative clause of it, its preposition last", _stranded_relative, (
+    Example("put the mug back on the shelf it came from", "it came from", Tag.REL),
+    Example("leave the jar on the table it was on", "it was on", Tag.REL),
+), frozenset(["it", "they"]), "'it' and a past verb after a noun, its preposition ending the clause: a relative "
+   "clause without 'that'")
 COMMA_RELATIVE = Rule("relative clause after a comma", _comma_relative, (
     Example("take it to Adel, who's in the bathroom.", "who 's", Tag.REL),
     Example("give the cup to the man, who is sitting on the sofa", "sitting", Tag.VBG_P),

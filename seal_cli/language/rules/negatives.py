@@ -183,6 +183,9 @@ def _corrected(s: State, i: int) -> Match | None:
         if j >= len(words) or words[j].lower != ",":
             return None
         k = j + 1
+    again = _clause_again(s, i, k)
+    if again is not None:
+        return again
     if not s.np_starts(k) or s.verb_after(k) and words[k].lower not in ("the", "a", "an", "my", "your"):
         return None
     end = k
@@ -201,6 +204,20 @@ def _corrected(s: State, i: int) -> Match | None:
     if m == len(out) or m == 0 or s.verb_index >= m:
         return None
     return Match(k - i, last=out[m - 1], replaces=len(out) - m + 1)
+
+
+def _clause_again(s: State, i: int, k: int) -> Match | None:
+    """"find Oscar, *actually find Nina*", "go to the hall, sorry, go to the porch": after a correction's marks, the
+    clause's own verb said again starts it afresh — the clause said before the marks is taken back, a remark (it
+    asks nothing; words31: both were done). Only the same verb, as said: another verb may be a next step ("open the
+    door, sorry, then close the window" is no correction of the opening)."""
+    out, words = s.out, s.words
+    if s.verb_index < 0 or k >= len(words) or words[k].lower != out[s.verb_index].lower or not s.verb_after(k):
+        return None
+    first = out[s.verb_index]
+    said = Word(s.text_of(first.start, words[k - 1].end) or first.text, first.start, words[k - 1].end, Tag.POLITE)
+    return Match(k - i, last=said, replaces=len(out) - s.verb_index,
+                 remarks=((first.start, out[-1].end),), expect=True)
 
 
 PROHIBITED_FIRST = Rule("a prohibition, then the command", _prohibited_first, (
@@ -227,6 +244,7 @@ CORRECTED = Rule("a phrase corrected", _corrected, (
     Example("give Ann the pen, or rather the pencil", "pen", ""),
     Example("switch on the lamp, no, the reading light", "lamp", ""),
     Example("bring me the sugar, no, not the sugar, the salt", "sugar", ""),
+    Example("find Ola, actually find Tim", "Ola", ""),                    # the clause said again (words31)
 ), frozenset([","]), "', no, NP' after a phrase: the new phrase stands for the last one said")
 DENIED_AFTER = Rule("a phrase denied after the command", _denied_after, (
     Example("give me the big bowl, not the small one.", "small", ""),

@@ -3,7 +3,7 @@ the cups", and the possessive "'s"."""
 
 from __future__ import annotations
 
-from seal_cli.language.english import NP_OPENERS, NUMBERS, PREPOSITIONS, QUANTIFIERS, VAGUE_NUMBERS
+from seal_cli.language.english import ADDITIVES, NP_OPENERS, NUMBERS, PREPOSITIONS, QUANTIFIERS, VAGUE_NUMBERS
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import State, first_words, match_phrase
 from seal_cli.language.tags import Tag
@@ -39,8 +39,9 @@ def _number_as_noun(s: State, i: int) -> Match | None:
 def _count(s: State, i: int) -> Match | None:
     low, nxt = s.words[i].lower, s.next_lower(i)
     n, value = _number(s, i)
-    if n and not s.in_np() and (low != "one" or s.np_starts(i + 1) and nxt not in PREPOSITIONS) and \
-            (n > 1 or low != "one" or s.noun_follows(i + 1)):
+    if n and not s.in_np() and (low != "one" or s.np_starts(i + 1) and nxt not in PREPOSITIONS and
+                                not match_phrase(s.words, i + 1, ADDITIVES)) and \
+            (n > 1 or low != "one" or s.noun_follows(i + 1)):     # "the blue one *too*": no noun counted (words31)
         return s.emit(i, n, Tag.NUM, value)
     return None
 

@@ -4,7 +4,7 @@ words of address and statements after the request ("..., dear, I'm cold"), a cla
 
 from __future__ import annotations
 
-from seal_cli.language.english import BECAUSE, FINITE, LET_KNOW, WH_WORDS
+from seal_cli.language.english import BECAUSE, FINITE, LET_KNOW, SUBJECTS, WH_WORDS
 from seal_cli.language.morphology import verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import CLOSED, State, subject_word
@@ -52,7 +52,8 @@ def _told(s: State, i: int) -> Match | None:
 def _remark_unmarked(s: State, i: int) -> Match | None:
     low = s.words[i].lower
     if s.expect_verb or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.PARTICLE, Tag.LABEL, Tag.HERE) or \
-            not (low in BECAUSE or "'" in low):
+            not (low in BECAUSE or "'" in low or low == "so" and i + 1 < len(s.words) and
+                 s.words[i + 1].lower in SUBJECTS):
         return None
     n, spans = s.remark_unmarked(i)
     return Match(n, remarks=spans) if n else None                 # "give the ball to Lily cos she wants it"
@@ -104,7 +105,9 @@ TOLD_HOW_TO = Rule("how to, told", _told_how_to, (
 ), WH_WORDS, "'how to V', 'where to V' after a verb of saying: what is said, not a clause of purpose")
 REMARK_UNMARKED = Rule("remark without a comma", _remark_unmarked, (
     Example("give the ball to Lily cos she wants it", "cos", ""),
-), lambda low: low in BECAUSE or "'" in low, "'because' or a subject contraction after the request starts a statement")
+    Example("stir the soup so it doesn't stick", "so", ""),             # words31: purpose, "so" and a subject
+), lambda low: low in BECAUSE or "'" in low or low == "so",
+    "'because', a subject contraction, or 'so' and a subject pronoun after the request starts a statement")
 REMARK_AFTER = Rule("remark after a comma", _remark_after, (
     Example("close the door, dear, I'm cold", "dear", ""),
 ), frozenset([",", ";"]), "words of address and statements after a comma ending the request")
