@@ -71,12 +71,15 @@ BLOCKING = frozenset((*STEPS, "LookAt", "ToggleOn", "ToggleOff"))
 
 def step_features(words: Iterable[str], thing: str | None, goal: str | None) -> tuple[str, ...]:
     """The features of a sentence: ``w:`` each of its words (:func:`~seal_cli.language.wordusage.context_words`),
-    ``o:`` the class key of the thing placed and ``r:`` of its goal."""
+    ``o:`` the class key of the thing placed, ``r:`` of its goal, and ``or:`` the two together (what is put where:
+    a mug into a cabinet is a task of its own, not the sum of a mug and a cabinet)."""
     out = [f"w:{w}" for w in sorted(set(words))]
     if thing:
         out.append(f"o:{class_key(thing)}")
     if goal:
         out.append(f"r:{class_key(goal)}")
+    if thing and goal:
+        out.append(f"or:{class_key(thing)}|{class_key(goal)}")
     return tuple(out)
 
 

@@ -79,8 +79,8 @@ CONTAINER = "container"
 def task_features(words: Iterable[str], parse: Parse) -> tuple[str, ...]:
     """The features of a parsed sentence: ``w:`` each of its words
     (:func:`~seal_cli.language.wordusage.context_words`), ``f:`` each frame it says (none inferred), ``o:`` the class
-    key of the first thing it handles, ``r:`` of the goal of its last Place, ``p:`` how many Places it says (0, 1,
-    2 or more)."""
+    key of the first thing it handles, ``r:`` of the goal of its last Place, ``or:`` the two together (what is put
+    where), ``p:`` how many Places it says (0, 1, 2 or more)."""
     out = {f"w:{w}" for w in words}
     said = [f for f in parse.frames if f.inferred is None]
     out.update(f"f:{f.frame}" for f in said)
@@ -92,6 +92,8 @@ def task_features(words: Iterable[str], parse: Parse) -> tuple[str, ...]:
     goal = parse.resolve(places[-1].elements["goal"]).cls if places and "goal" in places[-1].elements else None
     if goal:
         out.add(f"r:{class_key(goal)}")
+    if thing and goal:
+        out.add(f"or:{class_key(thing)}|{class_key(goal)}")
     out.add(f"p:{min(len(places), 2)}")
     return tuple(sorted(out))
 

@@ -48,6 +48,16 @@ def test_the_model_gives_probabilities_from_its_prior_and_weights() -> None:
     assert not StepModel() and not StepModel({NONE: 5})
 
 
+def test_what_is_put_where_is_a_feature_of_its_own() -> None:
+    assert step_features({"put"}, "Mug", "Cabinet") == ("w:put", "o:mug", "r:cabinet", "or:mug|cabinet")
+    assert step_features({"put"}, "Mug", None) == ("w:put", "o:mug")          # no goal: no pair
+    # a mug into a cabinet may mean a step a mug alone and a cabinet alone do not
+    model = StepModel({"Cool": 30, NONE: 70}, {"or:mug|cabinet": {"Cool": 3.0}})
+    assert model.probabilities(step_features({"put"}, "Mug", "Cabinet"))["Cool"] > 0.8
+    assert model.probabilities(step_features({"put"}, "Mug", "Drawer"))["Cool"] == pytest.approx(0.3)
+    assert model.probabilities(step_features({"put"}, "Cup", "Cabinet"))["Cool"] == pytest.approx(0.3)
+
+
 def test_an_unsaid_step_is_added_before_the_place_and_marked(library: Library) -> None:
     parse = parse_command("put the apple in the fridge", library, kitchen())
     assert [f.frame for f in parse.frames] == ["Cool", "Place"]

@@ -50,7 +50,7 @@ def test_the_model_weighs_its_prior_by_the_sentence(library: Library) -> None:
     assert set(MODEL.probabilities(())) == {LOOK, SIMPLE}
     parse = parse_command("put the mug in the microwave", library, room(), infer_steps=False)
     assert task_features(context_words(parse.text), parse) == (
-        "f:Place", "o:mug", "p:1", "r:microwave", "w:in", "w:microwave", "w:mug", "w:put", "w:the")
+        "f:Place", "o:mug", "or:mug|microwave", "p:1", "r:microwave", "w:in", "w:microwave", "w:mug", "w:put", "w:the")
     assert not TaskModel() and not TaskModel({SIMPLE: 4})       # no kind with an adder: nothing to add
     assert set(ADDERS) <= set(TASKS)
 
