@@ -106,7 +106,7 @@ def unordered(function: Callable[[T], R], items: Iterable[T], jobs: int, *,
     finished = False
     try:
         with _starting():
-            pending = {executor.submit(_call, function, item) for item in items}
+            pending = _submitted(executor, function, items)
         while pending:
             done, pending = wait(pending, return_when=FIRST_COMPLETED)
             for future in done:
@@ -133,12 +133,24 @@ def _indexed(task: tuple[Callable[[T], R], int, T]) -> tuple[int, R]:
     return index, function(item)
 
 
+_BROKEN = ("a worker process ended abruptly (killed by a signal, or out of memory?): the run stopped; run it again, "
+           "with fewer --jobs if memory is short")
+
+
+def _submitted(executor: ProcessPoolExecutor, function: Callable[[T], R], items: Iterable[T]) -> set[Future[R]]:
+    """Every item handed to the pool. The items may be built as they are handed over (a suite's episodes, slow under
+    load), so a worker can die before the last: the pool then refuses the next, said as :func:`_result` says it."""
+    try:
+        return {executor.submit(_call, function, item) for item in items}
+    except BrokenProcessPool:
+        raise SealError(_BROKEN) from None
+
+
 def _result(future: Future[R]) -> R:
     try:
         return future.result()
     except BrokenProcessPool:
-        raise SealError("a worker process ended abruptly (killed by a signal, or out of memory?): the run "
-                        "stopped; run it again, with fewer --jobs if memory is short") from None
+        raise SealError(_BROKEN) from None
 
 
 def _stop(executor: ProcessPoolExecutor, *, early: bool) -> None:

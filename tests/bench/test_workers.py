@@ -79,6 +79,21 @@ def test_a_worker_killed_by_a_signal_ends_the_run_with_a_message() -> None:
     assert _no_workers_left()
 
 
+def _made_slowly(count: int) -> object:
+    """Items built one by one, slower than a worker dies: the pool breaks while they are still being handed over."""
+    for n in range(count):
+        yield n
+        time.sleep(1.0)
+
+
+def test_a_worker_killed_while_the_items_are_still_handed_over_ends_the_run_with_the_message() -> None:
+    """Under load a suite's episodes are built slower than a worker is killed: the pool broke during ``submit``
+    and its ``BrokenProcessPool`` escaped as a traceback (words31's whole-suite run, hostile23's SIGKILL case)."""
+    with pytest.raises(SealError, match=r"a worker process ended abruptly \(killed by a signal, or out of memory"):
+        list(unordered(_killed_at_one, _made_slowly(4), 2))  # type: ignore[arg-type]
+    assert _no_workers_left()
+
+
 def test_a_workers_error_is_the_runs_error() -> None:
     with pytest.raises(SealError, match="episode 2: no such room"):
         list(ordered(_refused_at_two, range(4), 2))
