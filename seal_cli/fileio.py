@@ -864,12 +864,13 @@ def _reserve(option: str, target: Path) -> _Output:
 
     name = f".{target.name}.seal{os.getpid()}-{secrets.token_hex(4)}.tmp{target.suffix}"
     tmp = Path(tempfile.gettempdir() if device else folder) / name
-    try:
-        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)  # the mode a plain open() gives
-    except OSError as exc:
-        raise SealError(f"cannot write {option} {target}: {exc.strerror} (in folder {folder})") from None
-    os.close(fd)
-    _LIVE.add(tmp)
+    with signals_wait():    # made and recorded as one step: a signal between them left the temporary behind
+        try:
+            fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)  # the mode a plain open() gives
+        except OSError as exc:
+            raise SealError(f"cannot write {option} {target}: {exc.strerror} (in folder {folder})") from None
+        os.close(fd)
+        _LIVE.add(tmp)
     return _Output(option, target, tmp, device)
 
 

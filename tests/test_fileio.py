@@ -471,3 +471,27 @@ def test_seal_parse_text_without_typer_composes_and_reads_utf8_in_an_ascii_local
                               env={**os.environ, **env})
         assert done.returncode == 0, (env, done.stderr)
         assert b"Stir" in done.stdout and (b"caf" in done.stdout)
+
+
+def test_a_signal_just_as_a_temporary_is_made_still_leaves_nothing_behind(tmp_path: Path) -> None:
+    """An interrupt landing between the temporary's creation and its recording left it behind (CI: "a signal 15
+    while run --png --rrd writes its temporary", the judge signalling as soon as the temporary appears): the two
+    are one step now, the signal acted on once the temporary is known. In a process of its own (a real SIGINT)."""
+    code = (
+        "import os, signal, sys\n"
+        "import seal_cli.fileio as fileio\n"
+        "real = os.close\n"
+        "def close(fd):\n"
+        "    real(fd)\n"
+        "    os.kill(os.getpid(), signal.SIGINT)\n"
+        "os.close = close\n"
+        "try:\n"
+        "    fileio.Outputs({'--png': sys.argv[1]}, suffixes={'--png': ('.png',)})\n"
+        "except KeyboardInterrupt:\n"
+        "    os.close = real\n"
+        "    fileio.remove_temporaries()\n"
+        "    print('interrupted')\n")
+    run = subprocess.run([sys.executable, "-c", code, str(tmp_path / "o.png")], capture_output=True, text=True,
+                         timeout=60)
+    assert run.stdout.strip() == "interrupted", run.stderr
+    assert list(tmp_path.iterdir()) == []
