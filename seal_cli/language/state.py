@@ -197,7 +197,9 @@ def time_asked(words: Sequence[Word], i: int) -> int:
 
 def merge(words: Sequence[Word], i: int, n: int, tag: str, info: object = None) -> Word:
     """Words ``i .. i+n`` as one tagged word."""
-    return Word(" ".join(w.text for w in words[i:i + n]), words[i].start, words[i + n - 1].end, tag, info)
+    text = "".join((" " if k and w.start > words[i + k - 1].end else "") + w.text    # spaced as the command was:
+                   for k, w in enumerate(words[i:i + n]))                            # "at 5:30"
+    return Word(text, words[i].start, words[i + n - 1].end, tag, info)
 
 
 def awaits_name(word: Word) -> bool:
@@ -1493,6 +1495,10 @@ class State:
             return 0
         digits = words[k].lower.isdigit()
         k += 1
+        if digits and k + 1 < len(words) and words[k].lower in (":", ".") and len(words[k + 1].lower) == 2 and \
+                words[k + 1].lower.isascii() and words[k + 1].lower.isdigit() and \
+                words[k - 1].end == words[k].start and words[k].end == words[k + 1].start:
+            k += 2                                              # "at 5:30", "by 17.45": the minutes written on
         if k < len(words) and words[k].lower in TIME_UNITS:
             return k + 1 - i                                    # "in ten minutes", "by 5 hours"
         if low == "in" and digits:

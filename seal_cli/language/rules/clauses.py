@@ -245,7 +245,7 @@ STRANDED_RELATIVE = Rule("relative clause of it, its preposition last", _strande
 ), frozenset(["it", "they"]), "'it' and a past verb after a noun, its preposition ending the clause: a relative "
    "clause without 'that'")
 COMMA_RELATIVE = Rule("relative clause after a comma", _comma_relative, (
-    Example("take it to Adel, who's in the bathroom.", "who 's", Tag.REL),
+    Example("take it to Adel, who's in the bathroom.", "who's", Tag.REL),
     Example("give the cup to the man, who is sitting on the sofa", "sitting", Tag.VBG_P),
 ), frozenset([","]), "', who is ...' after a name or a noun: a relative clause describing it, not a question")
 SEPARATOR = Rule("separator", _separator, (

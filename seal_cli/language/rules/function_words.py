@@ -367,6 +367,8 @@ FOR_A_TIME = Rule("for a time", _for_a_time, (
 ), frozenset(["for", "every", "each"]), "'for three minutes', 'every few minutes'")
 CLOCK_TIME = Rule("clock time", _clock_time, (
     Example("meet her at three", "at three", Tag.PARTICLE),
+    Example("bring me a cup at 5:30 from the kitchen", "at 5:30", Tag.PARTICLE),
+    Example("meet Anna at 17.45 in the hall", "at 17.45", Tag.PARTICLE),
 ), CLOCK_PREPOSITIONS, "a time said with a number ('at three', 'in ten minutes')")
 ONE = Rule("the red one", _one, (
     Example("bring me the red one", "one", Tag.WORD),

@@ -293,7 +293,7 @@ COMMA_AFTER_POLITENESS = Rule("comma after politeness", _comma_after_politeness,
 ), frozenset([",", ";", ":"]), "a comma after politeness, a condition or a separator joins it")
 SEQUENCING = Rule("sequencing word", _sequencing, (
     Example("Take the cup to the sink. After that, wash it.", ". After that,", Tag.SEP),
-    Example("Next, open the door", "Next ,", Tag.POLITE),
+    Example("Next, open the door", "Next,", Tag.POLITE),
 ), None, "a sequencing word before the verb")
 def _having_first(s: State, i: int) -> Match | None:
     """"*Once you have* the spoon, put it in the dishwasher": to have a thing before a clause is to get it first
@@ -327,9 +327,9 @@ BEING_AT_RULE = Rule("being somewhere first", _being_at, (
 ), first_words(BEING_AT[0]), "'once you're in X, ...': go to X, then the clause")
 TIME_SAID_FIRST = Rule("a time said first", _time_first, (
     Example("in five minutes turn off the oven", "in five minutes", Tag.POLITE),
-    Example("in a couple of minutes, check on the baby", "in a couple of minutes ,", Tag.POLITE),
+    Example("in a couple of minutes, check on the baby", "in a couple of minutes,", Tag.POLITE),
     Example("tonight close all the curtains", "tonight", Tag.POLITE),
-    Example("later on, bring me a coffee", "later on ,", Tag.POLITE),
+    Example("later on, bring me a coffee", "later on,", Tag.POLITE),
     Example("after lunch clean the kitchen counter", "after lunch", Tag.POLITE),
     Example("this afternoon open the windows", "this afternoon", Tag.POLITE),
 ), TIME_FIRST | TIME_FIRST_LEAD | frozenset(["this", "in", "at"]) | CLOCK_PREPOSITIONS,
@@ -344,8 +344,8 @@ SUBORDINATE = Rule("subordinate clause first", _subordinate, (
     Example("before you leave, turn off the stove", "before you leave,", Tag.COND),
 ), None, "a condition, or a clause of the robot's own, before the verb (arriving where it went: none; leaving: when)")
 ON_THE_WAY = Rule("on the way", _on_the_way, (
-    Example("on your way back, pick up the post", "on your way back ,", Tag.POLITE),
-    Example("on the way to the kitchen, grab a cup", "on the way to the kitchen ,", Tag.POLITE),
+    Example("on your way back, pick up the post", "on your way back,", Tag.POLITE),
+    Example("on the way to the kitchen, grab a cup", "on the way to the kitchen,", Tag.POLITE),
 ), _ON_THE_WAY[0], "'on your way back, ...': a circumstance of the trip before the clause, no command of its own")
 MANNER = Rule("manner adverb", _manner, (
     Example("Gently place the eggs in the bowl", "Gently", Tag.POLITE),

@@ -266,7 +266,7 @@ WHILE_HOLDING = Rule("while or after first", _while_holding, (
     Example("Having grabbed the cup, put it on the table.", "Having", Tag.POLITE),
 ), frozenset(["while", "after", "having"]), "'while'/'after'/'having' opening the command before a verb")
 ADVERB_COMMA = Rule("adverb and comma", _adverb_comma, (
-    Example("Quietly, please: turn off the radio", "Quietly ,", Tag.POLITE),
+    Example("Quietly, please: turn off the radio", "Quietly,", Tag.POLITE),
 ), None, "a manner adverb and its comma before a request")
 POLITENESS = Rule("politeness", _politeness, (
     Example("could you please bring me a cup", "could you please", Tag.POLITE),
@@ -281,13 +281,13 @@ YOU_IMPERATIVE = Rule("you before the verb", _you_imperative, (
     Example("You go to the hall", "You", Tag.POLITE),
 ), frozenset(["you"]), "'you' before a verb's base form: still a request")
 VOCATIVE_NAME = Rule("name addressed", _vocative_name, (
-    Example("Robin, bring me a cup", "Robin ,", Tag.POLITE),
+    Example("Robin, bring me a cup", "Robin,", Tag.POLITE),
 ), None, "a capitalised name and a comma before the command: the robot addressed")
 ADDRESSED = Rule("one addressed in lower case", _addressed, (
-    Example("alexa, turn off the radio", "alexa ,", Tag.POLITE),
-    Example("hey siri, where is my wallet", "siri ,", Tag.POLITE),
-    Example("young lady, bring me the paper", "young lady ,", Tag.POLITE),
-    Example("yo, grab me a coke", "yo ,", Tag.POLITE),
+    Example("alexa, turn off the radio", "alexa,", Tag.POLITE),
+    Example("hey siri, where is my wallet", "siri,", Tag.POLITE),
+    Example("young lady, bring me the paper", "young lady,", Tag.POLITE),
+    Example("yo, grab me a coke", "yo,", Tag.POLITE),
     Example("dude just shut the door", "dude", Tag.POLITE),
 ), None, "a word that names no thing and is no verb (or a person), before a comma and the command: whom is addressed")
 RELAYED = Rule("a request passed on", _relayed, (

@@ -1495,7 +1495,7 @@ _TOLD_LEADS = WH_WORDS | {"that", ",", "about"}       # WH_WORDS holds "if", "wh
 
 
 QUESTION = Rule("bare question", _question, (
-    Example("What's the biggest thing on the shelf?", "What 's the biggest thing on the shelf", Tag.SAID),
+    Example("What's the biggest thing on the shelf?", "What's the biggest thing on the shelf", Tag.SAID),
     Example("which of the bottles in the pantry is the biggest?", "", Tag.VERB),
     Example("who is in the kitchen?", "", Tag.VERB),
 ), QUESTION_WORDS, "a question where a command starts: 'tell me' and the question")
@@ -1825,7 +1825,7 @@ FRONTED_OF = Rule("of-phrase first", _fronted_of, (
 ), frozenset(["of", "among", "amongst", "out"]),
     "'of' ('among', 'out of') and a noun phrase before the clause ('Of the people in the hall, how many ...')")
 FRONTED_QUESTION = Rule("phrase said before a question", _fronted_question, (
-    Example("On the table, which object is lightest?", "On the table , which object is lightest", Tag.SAID),
+    Example("On the table, which object is lightest?", "On the table, which object is lightest", Tag.SAID),
 ), first_words(PREPOSITIONS) | {"of"},
     "a phrase and a comma before a question: all of it is what to tell")
 FRONTED_END = Rule("phrase said first", _fronted_end, (

@@ -80,15 +80,15 @@ def _dislocated(s: State, i: int) -> Match | None:
 
 
 DISLOCATED = Rule("phrase said first, taken up by a pronoun", _dislocated, (
-    Example("The sponge on the cabinet, bring it to me.", "The sponge on the cabinet ,", Tag.POLITE),
-    Example("That dice on the sofa, could you bring it to me?", "That dice on the sofa ,", Tag.POLITE),
-    Example("whoever's at the door, greet them", "whoever 's at the door ,", Tag.POLITE),    # a free relative
+    Example("The sponge on the cabinet, bring it to me.", "The sponge on the cabinet,", Tag.POLITE),
+    Example("That dice on the sofa, could you bring it to me?", "That dice on the sofa,", Tag.POLITE),
+    Example("whoever's at the door, greet them", "whoever's at the door,", Tag.POLITE),    # a free relative
 ), None, "a noun phrase and a comma before a command whose pronoun takes it up: a remark it names")
 ASIDE = Rule("sentence beside the command", _aside, (
-    Example("Good morning! Could you open the window?", "Good morning !", Tag.POLITE),
-    Example("Bogdan has a question; answer it for him", "Bogdan has a question ;", Tag.POLITE),
-    Example("see the man by the window? greet him", "see the man by the window ?", Tag.POLITE),
-    Example("on the sofa there's a blanket, bring it to me", "on the sofa there 's a blanket ,", Tag.POLITE),
+    Example("Good morning! Could you open the window?", "Good morning!", Tag.POLITE),
+    Example("Bogdan has a question; answer it for him", "Bogdan has a question;", Tag.POLITE),
+    Example("see the man by the window? greet him", "see the man by the window?", Tag.POLITE),
+    Example("on the sofa there's a blanket, bring it to me", "on the sofa there's a blanket,", Tag.POLITE),
 ), None, "a greeting, a statement with no verb of the library, or 'see X?', where a command should start")
 HER_TOLD = Rule("her told", _her_told, (
     Example("tell her we're moving", "her", Tag.PRON),
