@@ -135,6 +135,12 @@ class Case:
     signal_on: str = ""
     """Send ``signal`` only once a file whose name matches this pattern is in the case's folder (the command's
     temporary output, while it is being written); never, if the command ends first."""
+    ignored: tuple[int, ...] = ()
+    """Signals the command starts with ignored, as ``nohup`` starts it (SIGHUP) or a script's background job
+    (SIGINT): a shell's ``trap '' ...`` before it runs."""
+    cwd: str = ""
+    """The folder of the case's files to run the command in (a ``ro-dir``: a read-only working folder); the case's
+    folder itself when empty."""
 
 
 @dataclass
@@ -249,9 +255,10 @@ def _one(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
     env = {name: value for name, value in env.items() if value != "<unset>"}
     start = time.perf_counter()
     argv = [*_seal(), *(a.replace("\x00", "\x01") for a in case.argv)]  # no shell can pass a NUL in an argument
-    if STREAMS[case.stream] or case.file_blocks:
+    if STREAMS[case.stream] or case.file_blocks or case.ignored:
         limit = f"ulimit -f {case.file_blocks}; " if case.file_blocks else ""  # POSIX sh: 512-byte blocks
-        argv = ["/bin/sh", "-c", f'{limit}exec "$@" {STREAMS[case.stream]}', "sh", *argv]
+        trap = f"trap '' {' '.join(str(n) for n in case.ignored)}; " if case.ignored else ""
+        argv = ["/bin/sh", "-c", f'{limit}{trap}exec "$@" {STREAMS[case.stream]}', "sh", *argv]
     piped = case.stdin is not None or case.stream == "open-stdin"
     if case.stream == "nonblocking-stdout":
         return _nonblocking(case, argv, folder, env, start)
@@ -260,7 +267,7 @@ def _one(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
         reader, stdout = os.pipe()
         os.close(reader)
     try:
-        process = subprocess.Popen(argv, cwd=folder, env=env, stdout=stdout,
+        process = subprocess.Popen(argv, cwd=folder / case.cwd, env=env, stdout=stdout,
                                    stderr=subprocess.PIPE, stdin=subprocess.PIPE if piped
                                    else subprocess.DEVNULL, start_new_session=True)
     finally:
@@ -440,7 +447,7 @@ def run_case(case: Case) -> Outcome:
                 outcome.problems.append(f"partial: {name_} written though the command failed or was stopped")
         if code not in (0, None) and case.parallel == 1:
             for new in sorted(after - before):
-                if not TEMPORARY.search(new):
+                if not TEMPORARY.search(new) and new not in case.whole:  # a failed run's whole picture is asked for
                     outcome.problems.append(f"partial: {new} written by a failed command")
         if case.twice and code is not None:
             again = _once(case, folder)

@@ -29,7 +29,8 @@ from seal_cli.bench.reliability import FRAME, Case, hostile_setting
 
 __all__ = ["alfred2d_data", "attacker_cases", "chain_library", "hostile14_cases", "hostile15_cases", "hostile16_cases",
            "hostile17_cases", "hostile18_cases", "hostile19_cases", "hostile20_cases", "hostile21_cases",
-           "hostile22_cases", "hostile23_cases", "hostile24_cases", "rgba_png", "sparse_pgm", "split_house"]
+           "hostile22_cases", "hostile23_cases", "hostile24_cases", "hostile25_cases", "rgba_png", "sparse_pgm",
+           "split_house"]
 
 DIGITS = "1" * 5_000
 """An integer longer than Python converts from text (4,300 digits)."""
@@ -291,6 +292,7 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield from hostile22_cases()
     yield from hostile23_cases()
     yield from hostile24_cases()
+    yield from hostile25_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -1106,3 +1108,118 @@ def hostile24_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
                    absent=("o.png", "o.rrd"), signal=(number, 0.0), signal_on=r"\.seal\d+-[0-9a-f]{8}\.tmp")
     yield Case("A two run --png --rrd at once onto the same files", (*run, "--png", "o.png", "--rrd", "o.rrd"), both,
                codes=(0,), keep=inputs, parallel=2, whole=("o.png", "o.rrd"), says=r"done: Go\(goal=kitchen\)")
+
+
+def _areas(rooms: str, places: str = "", robot: str = "[8, 2, 0]") -> bytes:
+    """A 10 m × 10 m open-plan map without an image (all free, no walls), its areas told apart only by their outlines
+    (as the studio's), each ``rooms`` line one area."""
+    return (f"name: m\nbounds: [0, 0, 10, 10]\nrooms:\n{rooms}" + (f"places:\n{places}" if places else "")
+            + f"robot: {{pose: {robot}}}\n").encode()
+
+
+def hostile25_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read top to bottom
+    """Round hostile25: areas without walls (overlapping, self-intersecting, of no area, outside the map, a place in
+    two); "put it back" and pronouns with nothing before them, after 1,000 ``--done``; clock times out of range;
+    goals and grounds a map does not know; outputs onto a folder, a named pipe, ``/dev/full``; map YAML with a
+    repeated key, a line of 4 MB, a NUL, a BOM and CRLF; frame libraries with a precondition cycle or a unit claimed
+    twice; a junk environment (no HOME, LANG=C, a read-only working folder, SIGHUP ignored as ``nohup`` leaves it);
+    the picture and recording of a run that ends not done."""
+    two = "  - {name: a, box: [0, 0, 6, 10]}\n  - {name: b, box: [4, 0, 10, 10]}\n"
+    sofa = "  - {name: sofa_1, class: sofa, at: [5, 5]}\n"
+    # -- areas without walls ---------------------------------------------------------------------------------------
+    yield Case("A validate of two areas that overlap", ("validate", "m.yaml"), (("m.yaml", _areas(two)),),
+               codes=(1,), keep=("m.yaml",), says=r"m\.yaml:5:5: room b overlaps room a \(line 4\) by about 20\.00 m²")
+    yield Case("A plan on areas that overlap says so", ("plan", "go to a", "--map", "m.yaml"),
+               (("m.yaml", _areas(two)),), codes=(0,), keep=("m.yaml",),
+               says=r"warning: m\.yaml:5:5: room b overlaps room a")
+    yield Case("A plan to a place in two areas, by the second", ("plan", "go to the sofa in b", "--map", "m.yaml"),
+               (("m.yaml", _areas(two, sofa)),), codes=(0,), keep=("m.yaml",), says=r"Go +goal=sofa_1")
+    yield Case("A run to a place in two areas, by the first", ("run", "go to the sofa in a", "--map", "m.yaml",
+                                                                "--particles", "20"),
+               (("m.yaml", _areas(two, sofa)),), codes=(0,), keep=("m.yaml",), says=r"done: Go\(goal=sofa_1\)")
+    bow = "  - {name: a, polygon: [[0, 0], [10, 10], [10, 0], [0, 10]]}\n"
+    yield Case("A run on an area drawn as a bow tie", ("run", "go to a", "--map", "m.yaml", "--particles", "20"),
+               (("m.yaml", _areas(bow)),), codes=(1,), keep=("m.yaml",),
+               says=r"m\.yaml:4:24: room a intersects itself: edge 1 \(\[0, 0\]–\[10, 10\]\) meets edge 3")
+    flat = "  - {name: a, box: [0, 0, 10, 10]}\n  - {name: b, polygon: [[1, 1], [2, 2], [3, 3]]}\n"
+    yield Case("A plan on an area of no area", ("plan", "go to b", "--map", "m.yaml"), (("m.yaml", _areas(flat)),),
+               codes=(1,), keep=("m.yaml",), says=r"m\.yaml:5:24: room b (has no area|intersects itself)")
+    far = "  - {name: a, box: [0, 0, 10, 10]}\n  - {name: b, box: [20, 20, 30, 30]}\n"
+    yield Case("A run to an area outside the map", ("run", "go to b", "--map", "m.yaml", "--particles", "20"),
+               (("m.yaml", _areas(far)),), codes=(1,), keep=("m.yaml",),
+               says=r"m\.yaml:5:5: room b \(\[20, 20\]–\[30, 30\]\) is wholly outside the map's bounds")
+    # -- pronouns with nothing before them -------------------------------------------------------------------------
+    yield Case("A plan to put it back with nothing taken", ("plan", "put it back", "--map", "studio"), codes=(1,),
+               says=r"error: column 5: cannot tell what 'it' refers to")
+    done = tuple(a for _ in range(1_000) for a in ("--done", "go to the sofa"))
+    yield Case("A plan to return it after 1,000 --done", ("plan", "return it", "--map", "studio", *done), codes=(1,),
+               says=r"error: column 8: cannot tell what 'it' refers to")
+    yield Case("A plan to give it to her after --done naming nobody",
+               ("plan", "give the mug to her", "--map", "studio", "--done", "go to the sofa"), codes=(1,),
+               says=r"error: column 17: cannot tell who 'her' is")
+    # -- clock times -----------------------------------------------------------------------------------------------
+    for time in ("99:99", "25:00", "5:60", "5:30:10", "5.5.5"):
+        yield Case(f"A plan to bring a mug at {time}", ("plan", f"bring me a mug at {time}", "--map", "studio"),
+                   codes=(0, 1), says=r"error: column \d+: |Bring +theme=mug")
+    # -- goals and grounds the map does not know -------------------------------------------------------------------
+    yield Case("A plan onto a table of a map without places", ("plan", "put the mug on the table", "--map", "m.yaml"),
+               (("m.yaml", b"name: m\nbounds: [0, 0, 10, 10]\nobjects:\n  - {class: mug, at: [2, 2]}\n"),),
+               codes=(1,), keep=("m.yaml",), says=r"error: column 16: the m has no table")
+    yield Case("A run searching a room the studio lacks", ("run", "look for the mug in the garage", "--map",
+                                                           "studio", "--particles", "20"),
+               codes=(1,), says=r"error: column 21: the studio has no garage")
+    # -- outputs ---------------------------------------------------------------------------------------------------
+    run = ("run", "go to the sofa", "--map", "studio", "--particles", "20")
+    yield Case("A run --rrd onto a folder", (*run, "--rrd", "d.rrd"), (("d.rrd", "dir"),), codes=(1,),
+               says=r"--rrd d\.rrd: it is a folder")
+    yield Case("A run --png onto a named pipe nobody reads", (*run, "--png", "p.png"), (("p.png", "fifo"),),
+               codes=(1,), says=r"--png p\.png: it is a named pipe", timeout=30)
+    yield Case("A run --png --rrd onto /dev/full", (*run, "--png", "/dev/full", "--rrd", "o.rrd"), codes=(1,),
+               absent=("o.rrd",), says=r"cannot write --png /dev/full: No space left on device")
+    # -- map YAML --------------------------------------------------------------------------------------------------
+    yield Case("A run on a map whose area repeats its name key", ("run", "go to a", "--map", "m.yaml"),
+               (("m.yaml", _areas("  - {name: a, name: b, box: [0, 0, 10, 10]}\n")),), codes=(1,), keep=("m.yaml",),
+               says=r"m\.yaml:4:16: .*repeats the key 'name'")
+    yield Case("A validate of a map with a line of 4 MB", ("validate", "m.yaml"),
+               (("m.yaml", _areas(two).replace(b"rooms:", b"# " + b"x" * 4_000_000 + b"\nrooms:")),), codes=(1,),
+               keep=("m.yaml",), says=r"m\.yaml:6:5: room b overlaps", timeout=30)
+    yield Case("A run on a map with a NUL in an area's name", ("run", "go to a", "--map", "m.yaml"),
+               (("m.yaml", _areas("  - {name: \"a\x00\", box: [0, 0, 10, 10]}\n")),), codes=(1,), keep=("m.yaml",),
+               says=r"m\.yaml:4:14: YAML does not allow the control character '\\x00'")
+    yield Case("A run on a map with a BOM and CRLF", ("run", "go to the sofa", "--map", "m.yaml", "--particles", "20"),
+               (("m.yaml", b"\xef\xbb\xbf" + _areas(two, sofa).replace(b"\n", b"\r\n")),), codes=(0,),
+               keep=("m.yaml",), says=r"warning: m\.yaml:5:5: room b overlaps")
+    # -- frame libraries -------------------------------------------------------------------------------------------
+    cycle = FRAME.replace("requires holding(instrument)", "requires beaten(theme)") + '''frame Beat "batter" {
+  theme: container
+  instrument: utensil = spoon
+  requires whisked(theme)
+  do stir(instrument, theme)
+  ensures beaten(theme)
+}
+'''
+    yield Case("A plan on a library whose preconditions make a cycle",
+               ("plan", "whisk the cup", "--framelib", "c.frame"), (("c.frame", cycle.encode()),),
+               codes=(1,), keep=("c.frame",), says=r"c\.frame:\d+:\d+: .*cycle")
+    twice = FRAME + FRAME[FRAME.index("frame Whisk"):].replace("frame Whisk", "frame Beat").replace('"beat"', '"mix"')
+    yield Case("A plan on a library whose unit two frames claim", ("plan", "whisk the cup", "--framelib", "t.frame"),
+               (("t.frame", twice.encode()),), codes=(1,), keep=("t.frame",),
+               says=r"t\.frame:\d+:\d+: lexical unit 'whisk' of Beat is also claimed by Whisk")
+    # -- the environment -------------------------------------------------------------------------------------------
+    yield Case("A run --png with HOME unset", (*run, "--png", "o.png"), codes=(0,), env=(("HOME", "<unset>"),),
+               whole=("o.png",), says=r"done: Go\(goal=sofa_1\)")
+    yield Case("A run to the café with LANG=C", ("run", "go to the café", "--map", "m.yaml", "--particles", "20"),
+               (("m.yaml", _areas("  - {name: café, box: [0, 0, 10, 10]}\n")),), codes=(0,), keep=("m.yaml",),
+               env=(("LANG", "C"), ("LC_ALL", "C"), ("PYTHONUTF8", "0"), ("PYTHONIOENCODING", "<unset>")),
+               says=r"café")
+    yield Case("A run in a read-only working folder", ("run", "go to the sofa", "--map", "studio", "--particles", "20"),
+               (("ro", "ro-dir"),), codes=(0,), cwd="ro", says=r"done: Go\(goal=sofa_1\)")
+    yield Case("A run --png under nohup, sent SIGHUP", (*run, "--png", "o.png"), codes=(0,), ignored=(1,),
+               signal=(1, 0.0), signal_on=r"\.seal\d+-[0-9a-f]{8}\.tmp", whole=("o.png",),
+               says=r"done: Go\(goal=sofa_1\)")
+    # -- a run that ends not done ----------------------------------------------------------------------------------
+    yield Case("A run not done still draws its whole picture", ("run", "bring me the umbrella", "--map", "apartment",
+                                                                 "--particles", "20", "--png", "o.png", "--rrd",
+                                                                 "o.rrd"),
+               codes=(1,), whole=("o.png", "o.rrd"),
+               says=r"not done: no umbrella found[^\n]*\n[^\n]*o\.png[^\n]*o\.rrd")
