@@ -579,7 +579,10 @@ def signals_wait() -> Iterator[None]:
 def clean_up_on_signals() -> None:
     """Make SIGTERM and SIGHUP end this process as SIGINT does, by an exception, so that every
     ``with`` block unwinds and our temporaries are removed (``timeout`` and CI send SIGTERM).
-    Processes forked from this one (worker pools) keep the default behaviour."""
+    Processes forked from this one (worker pools) keep the default behaviour. A signal this process was started
+    with ignored stays ignored: ``nohup seal run ...`` ignores SIGHUP, so that the run outlives its terminal (it
+    ended with exit code 129 when the terminal closed, its outputs unwritten: hostile25), as Python leaves SIGINT
+    ignored in a shell's background job."""
     main = os.getpid()
 
     def stop(number: int, _frame: Any) -> None:
@@ -592,7 +595,8 @@ def clean_up_on_signals() -> None:
 
     for number in (signal.SIGTERM, signal.SIGHUP):
         with contextlib.suppress(ValueError, OSError):  # not the main thread, or no such signal here
-            signal.signal(number, stop)
+            if signal.getsignal(number) != signal.SIG_IGN:
+                signal.signal(number, stop)
 
 
 def _alive(pid: int) -> bool:
@@ -758,8 +762,9 @@ class Outputs:
             raise KeyboardInterrupt
         self._check_unread()
         held = _hold_signals()
-        try:
-            for output in self._outputs.values():
+        try:  # devices first: a write onto one can fail (/dev/full), a rename in place hardly; a device that failed
+            # left the other outputs unwritten (hostile25: --rrd o.rrd was in place when --png /dev/full failed)
+            for output in sorted(self._outputs.values(), key=lambda o: not o.device):
                 _move(output)
             _COMMITTED[0] = True
         finally:

@@ -495,3 +495,37 @@ def test_a_signal_just_as_a_temporary_is_made_still_leaves_nothing_behind(tmp_pa
                          timeout=60)
     assert run.stdout.strip() == "interrupted", run.stderr
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_device_that_fails_leaves_the_other_outputs_unwritten(tmp_path: Path) -> None:
+    """Devices are written before the renames: ``run --png /dev/full --rrd o.rrd`` failed on /dev/full with o.rrd
+    already in place (hostile25: "a failed command left o.rrd")."""
+    from seal_cli.fileio import Outputs
+
+    with pytest.raises(SealError, match="cannot write --png /dev/full: No space left on device"), \
+            Outputs({"--rrd": tmp_path / "o.rrd", "--png": "/dev/full"}) as plan:
+        plan["--rrd"].write_bytes(b"rrd")
+        plan["--png"].write_bytes(b"png")
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("ignored", [True, False])
+def test_a_signal_started_ignored_stays_ignored(tmp_path: Path, ignored: bool) -> None:
+    """``nohup seal run ...`` starts seal with SIGHUP ignored; seal's handler replaced that, and the run ended with
+    exit code 129 when the terminal closed (hostile25). Not ignored, SIGHUP still ends the command by an exception,
+    its temporaries removed. In a process of its own."""
+    code = (
+        "import os, signal, sys\n"
+        f"signal.signal(signal.SIGHUP, signal.SIG_IGN if {ignored} else signal.SIG_DFL)\n"
+        "import seal_cli.fileio as fileio\n"
+        "fileio.clean_up_on_signals()\n"
+        "with fileio.Outputs({'--png': sys.argv[1]}) as plan:\n"
+        "    os.kill(os.getpid(), signal.SIGHUP)\n"
+        "    plan['--png'].write_bytes(b'png')\n"
+        "print('written')\n")
+    run = subprocess.run([sys.executable, "-c", code, str(tmp_path / "o.png")], capture_output=True, text=True,
+                         timeout=60)
+    if ignored:
+        assert (run.returncode, run.stdout.strip()) == (0, "written") and (tmp_path / "o.png").read_bytes() == b"png"
+    else:
+        assert run.returncode == 129 and list(tmp_path.iterdir()) == [], run.stderr

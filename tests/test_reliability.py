@@ -225,3 +225,27 @@ def test_the_judge_sees_an_unclear_message() -> None:
     assert run_case(vague).kinds == {"message"}
     silent = Case("judge", ("map", "nope.yaml"), codes=(1,), stream="closed-stderr")
     assert run_case(silent).problems == []  # stderr closed: nothing can be said, nothing is asked
+
+
+def test_a_case_starts_with_the_signals_its_judge_was_started_ignoring(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Started in a shell's background (``nohup ... &``), the judge ignores SIGINT and SIGHUP and passed them ignored
+    to every case: "a signal 2 while run --png --rrd writes its temporary" ran to its end, 10 times in 10
+    (hostile25). A case now starts with them at their default, unless it asks for them ignored (``Case.ignored``);
+    the judge itself still ignores them."""
+    import sys
+
+    import seal_cli.bench.reliability as judge
+
+    shows = ("import signal; print('SIGINT', signal.getsignal(signal.SIGINT) is signal.default_int_handler, "
+             "'SIGHUP ignored', signal.getsignal(signal.SIGHUP) == signal.SIG_IGN)")
+    monkeypatch.setattr(judge, "_seal", lambda: [sys.executable, "-c", shows])
+    before = {n: signal.signal(n, signal.SIG_IGN) for n in (signal.SIGINT, signal.SIGHUP)}
+    try:
+        plain = judge.run_cases([Case("defaults", (), codes=(0,), says=r"SIGINT True SIGHUP ignored False")])
+        nohup = judge.run_case(Case("nohup", (), codes=(0,), ignored=(1,),
+                                    says=r"SIGINT True SIGHUP ignored True"))
+        assert signal.getsignal(signal.SIGINT) == signal.SIG_IGN == signal.getsignal(signal.SIGHUP)
+    finally:
+        for number, handler in before.items():
+            signal.signal(number, handler)
+    assert plain[0].problems == [] and nohup.problems == []

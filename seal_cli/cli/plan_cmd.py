@@ -95,6 +95,8 @@ def plan(
     held = one_held(holding)
     library = load_library(framelib_paths(framelib))
     world = _load_world(map_name)
+    for odd in world.warnings if world is not None else ():  # odd but usable (rooms that overlap): said, as run,
+        err.print(f"warning: {odd}", markup=False)            # localize and map say it (hostile25)
     outputs = Outputs({"--pddl": pddl}, [vocabulary, *(framelib or [])], folders={"--pddl": PDDL_FILES})
     result = plan_text(text, library, holding=held, done=tuple(done or ()), map=world,
                        vocabulary=vocabulary_from(vocabulary, map_name), max_nodes=max_nodes)

@@ -199,7 +199,19 @@ def run(
     if not result.completed:   # the job could not be done: exit 1, and why on stderr (SPEC, "Exit codes")
         err.print(f"[bold red]not done[/bold red]: {plain(result.reason)} — {result.path_m:.2f} m driven, "
                   f"{result.steps} steps", markup=True)
+        if written := not_done_outputs(png, rrd):
+            err.print(written, markup=False)
         raise typer.Exit(1)
+
+
+def not_done_outputs(png: Path | None, rrd: Path | None) -> str:
+    """What a run that ended not done says of its ``--png`` and ``--rrd`` (empty without them). They are written,
+    whole, all the same: the picture of where the robot searched is what tells why it failed, and exit code 1 says
+    the task was not done, not that the run broke off (a run that breaks off, or is refused, writes neither). Said,
+    so that a script reading the exit code does not take them for a success's (hostile25)."""
+    what = [f"its picture {png}" if png is not None else "", f"its recording {rrd}" if rrd is not None else ""]
+    said = " and ".join(w for w in what if w)
+    return plain(f"written all the same, to show where the robot searched: {said}") if said else ""
 
 
 @command("tasks", on=bench_app)

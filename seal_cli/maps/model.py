@@ -651,6 +651,13 @@ class Map:
         names = self.room_names + (OUTSIDE,)
         return [names[i] for i in self.room_index(points)]
 
+    def rooms_at(self, xy: ArrayLike) -> tuple[str, ...]:
+        """The name of every room whose polygon holds the point, in the map's order: one room where rooms do not
+        overlap; more where areas drawn without walls do (a map that :meth:`problems` warns of), where
+        :meth:`room_of` gives the first only."""
+        point = as_points(xy)[:1]
+        return tuple(room.name for room in self.rooms if point_in_polygon(point, room.vertices)[0])
+
     def line_of_sight(self, origin_xy: ArrayLike, points: ArrayLike) -> NDArray[np.bool_]:
         """Whether each point can be seen from ``origin_xy``: no occupied cell between them.
 

@@ -191,6 +191,12 @@ class MapNames:
                                   (words_of(person.name),), frozenset()))
         return tuple(found)
 
+    def _also_in(self, referent: Referent, room: str) -> bool:
+        """Whether a place of the map stands in ``room`` too, not only in the room it is said to be in: where areas
+        drawn without walls overlap (a map warned of), a sofa in both is "the sofa in" either (hostile25)."""
+        place = self.map.place(referent.id) if referent.kind == "place" else None
+        return place is not None and any(class_key(name) == room for name in self.map.rooms_at(place.at))
+
     def with_role(self, text: str) -> tuple[str, ...]:
         """Who a phrase calls by a role of the map ("the nurse", "the head nurse", "the cook in the
         kitchen"): the ids of the people (and :data:`SPEAKER`) whose role its thing's last words are,
@@ -304,7 +310,7 @@ class MapNames:
         if not found:
             return None
         if where and (room := self._room_of_words(where)) is not None:
-            inside = [r for r in found if r.room == room or r.id == room]
+            inside = [r for r in found if r.room == room or r.id == room or self._also_in(r, room)]
             if not inside:
                 what, there = " ".join(thing), room.replace("_", " ")
                 others = ", ".join(f"{r.id} ({r.room or 'in no room'})" for r in found)

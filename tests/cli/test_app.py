@@ -149,3 +149,13 @@ def test_an_option_listing_names_refuses_none_unknown_and_twice() -> None:
 def test_a_reliability_match_that_matches_nothing_is_refused() -> None:
     result = runner.invoke(app, ["bench", "reliability", "--match", "no such case zzz", "--count", "0"])
     assert result.exit_code == 1 and "--match 'no such case zzz': no case's name holds this text" in result.output
+
+
+def test_plan_says_what_is_odd_about_its_map(tmp_path: Path) -> None:
+    """Areas that overlap are a warning ``run``, ``localize`` and ``map`` said and ``plan`` kept quiet about
+    (hostile25): it is said before the plan, at the map's line and column, and the plan goes on."""
+    (tmp_path / "m.yaml").write_text("name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {name: west, box: [0, 0, 6, 10]}\n"
+                                     "  - {name: east, box: [4, 0, 10, 10]}\n")
+    result = runner.invoke(app, ["plan", "go to the west", "--map", str(tmp_path / "m.yaml")])
+    assert result.exit_code == 0 and "Go" in result.stdout
+    assert result.stderr.startswith(f"warning: {tmp_path / 'm.yaml'}:5:5: room east overlaps room west (line 4)")

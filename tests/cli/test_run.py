@@ -181,3 +181,21 @@ def test_run_refuses_a_png_onto_its_own_standard_output(tmp_path: Path) -> None:
                                  cwd=tmp_path, check=False)
     assert written.returncode == 0, written.stderr.decode()
     assert apart.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and b"done" in (tmp_path / "lines.txt").read_bytes()
+
+
+def test_a_run_not_done_draws_its_whole_picture_and_says_so(tmp_path: Path) -> None:
+    """A run that ends not done (exit 1) writes its --png and --rrd whole, the picture of where it searched, and
+    says so under its "not done" line, so that a script reading the exit code knows they are a failure's
+    (hostile25); a run refused before it starts writes neither."""
+    png, rrd = tmp_path / "o.png", tmp_path / "o.rrd"
+    args = ["run", "--map", "bungalow", "bring me the unicorn", "--particles", "20", "--png", str(png), "--rrd",
+            str(rrd)]
+    result = runner.invoke(app, args)
+    assert result.exit_code == 1 and result.stderr.startswith("not done: no unicorn found"), result.output
+    assert result.stderr.splitlines()[1] == (f"written all the same, to show where the robot searched: its picture "
+                                             f"{png} and its recording {rrd}")
+    assert png.read_bytes().endswith(b"IEND\xaeB`\x82") and rrd.stat().st_size > 0
+    png.unlink()
+    rrd.unlink()
+    refused = runner.invoke(app, [*args[:3], "put the unicorn in the spaceship", *args[4:]])
+    assert refused.exit_code == 1 and "not done" not in refused.output and list(tmp_path.iterdir()) == []

@@ -729,3 +729,11 @@ def test_a_room_of_more_points_than_seal_reads_is_refused_by_name() -> None:
     with pytest.raises(SealError, match=r"room den: its polygon has 10,001 points; .* simplify the outline"):
         Room("den", tuple(zip(np.cos(t), np.sin(t), strict=True)))
     assert len(Room("den", tuple(zip(np.cos(t[1:]), np.sin(t[1:]), strict=True))).polygon) == MAX_ROOM_VERTICES
+
+
+def test_rooms_at_names_every_area_that_holds_a_point() -> None:
+    """Where areas overlap, ``room_of`` gives the first; ``rooms_at`` every one, in the map's order (hostile25)."""
+    m = Map(name="m", bounds=(0, 0, 10, 10), rooms=(Room("west", ((0, 0), (6, 0), (6, 10), (0, 10))),
+                                                    Room("east", ((4, 0), (10, 0), (10, 10), (4, 10)))))
+    assert m.rooms_at((5, 5)) == ("west", "east") and m.room_of([(5, 5)]) == ["west"]
+    assert m.rooms_at((8, 5)) == ("east",) and m.rooms_at((11, 5)) == ()

@@ -368,3 +368,19 @@ def test_a_place_of_several_none_reachable_is_said_so_not_inf_metres(library: Li
     said = " ".join(plan.warnings)
     assert "the robot can reach none of them from where it starts; chose bed_1, the first the map lists" in said
     assert "inf m" not in said
+
+
+def test_a_place_where_two_areas_overlap_is_in_either(library: Library, tmp_path: Path) -> None:
+    """Areas drawn without walls may overlap (a map warned of): a sofa standing where both reach is "the sofa in"
+    either; it was refused in the second, "the m has no sofa in the east; it has sofa_1 (west)" (hostile25). A room
+    that does not hold it is still refused."""
+    text = ("name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {name: west, box: [0, 0, 6, 10]}\n"
+            "  - {name: east, box: [4, 0, 10, 10]}\n  - {name: loft, box: [0, 10, 10, 12]}\n"
+            "places:\n  - {name: sofa_1, class: sofa, at: [5, 5]}\n")
+    (tmp_path / "m.yaml").write_text(text.replace("bounds: [0, 0, 10, 10]", "bounds: [0, 0, 10, 12]"))
+    world = load_map(tmp_path / "m.yaml")
+    for room in ("west", "east"):
+        assert [str(s) for s in plan_text(f"go to the sofa in the {room}", library, map=world).steps] == \
+            ["Go(goal=sofa_1)"]
+    with pytest.raises(SealError, match="has no sofa in the loft; it has sofa_1 \\(west\\)"):
+        plan_text("go to the sofa in the loft", library, map=world)
