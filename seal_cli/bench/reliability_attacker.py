@@ -1178,6 +1178,10 @@ def hostile25_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
                codes=(1,), says=r"--png p\.png: it is a named pipe", timeout=30)
     yield Case("A run --png --rrd onto /dev/full", (*run, "--png", "/dev/full", "--rrd", "o.rrd"), codes=(1,),
                absent=("o.rrd",), says=r"cannot write --png /dev/full: No space left on device")
+    for argv, said in ((("localize", "--map", "studio", "--steps", "3", "--particles", "20", "--rrd", "o.rrd"),
+                        "localize"), ((*run, "--rrd", "o.rrd"), "run")):  # found while fixing: not in the gold
+        yield Case(f"A {said} --rrd past ulimit -f of 4 KiB says the file is too large", argv, codes=(1,),
+                   file_blocks=8, absent=("o.rrd",), says=r"error: cannot write --rrd o\.rrd: File too large")
     # -- map YAML --------------------------------------------------------------------------------------------------
     yield Case("A run on a map whose area repeats its name key", ("run", "go to a", "--map", "m.yaml"),
                (("m.yaml", _areas("  - {name: a, name: b, box: [0, 0, 10, 10]}\n")),), codes=(1,), keep=("m.yaml",),

@@ -53,6 +53,7 @@ def write_rrd(path: str | Path, agent: Agent) -> None:
         Classes,
         batching,
         blueprint,
+        flush,
         log_map,
         save,
         send_series,
@@ -76,7 +77,8 @@ def write_rrd(path: str | Path, agent: Agent) -> None:
     stream = rr.RecordingStream("seal_run", recording_id=f"{m.name}-seal-run",
                                 batcher_config=batching(), send_properties=False)
     rooms = [*m.room_names, "_outside"]
-    with writing(path), atomic_output(path) as tmp:  # rerun's failure said of ``path``, the file asked for
+    with atomic_output(path) as tmp, writing(tmp, stream):  # rerun's failure said of ``path``, the file asked for,
+        # once writing has looked at the disk that holds the temporary (still there: a full disk is said as one)
         save(stream, tmp)  # without rerun's footer, as seal localize's
         stream.set_log_time_enabled(False)
         stream.set_log_tick_enabled(False)
@@ -148,7 +150,7 @@ def write_rrd(path: str | Path, agent: Agent) -> None:
             series(f"metrics/rooms/{fid}", found, [f"{fid}: {room}" for room in rooms],
                    [series_colour(i) for i in range(len(rooms))])
         series("metrics/ess", sizes, objects, [classes.colour(c) for c in objects])
-        stream.flush()
+        flush(stream, tmp)
         stream.disconnect()
 
 

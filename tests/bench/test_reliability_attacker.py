@@ -21,6 +21,7 @@ from seal_cli.bench.reliability_attacker import (
     hostile22_cases,
     hostile23_cases,
     hostile24_cases,
+    hostile25_cases,
     sparse_pgm,
 )
 from seal_cli.bench.reliability_outsider import outsider_cases
@@ -284,3 +285,23 @@ def test_the_judge_sees_a_command_whose_reader_has_gone_fail(monkeypatch: pytest
     monkeypatch.setattr(judge, "_seal", lambda: [sys.executable, "-c", "print('x' * 100000)"])
     failed = run_case(judge.Case("print into no reader", ("--version",), codes=(0,), stream="gone-stdout"))
     assert failed.code == 1 and {"exit", "traceback"} <= failed.kinds    # BrokenPipeError
+
+
+@pytest.mark.parametrize("name", ["A plan on areas that overlap says so",
+                                  "A plan to a place in two areas, by the second", "A run --png --rrd onto /dev/full",
+                                  "A run --png under nohup, sent SIGHUP",
+                                  "A localize --rrd past ulimit -f of 4 KiB says the file is too large"])
+def test_picked_hostile25_cases_end_cleanly(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Each failed before this round: plan kept quiet about areas that overlap, a sofa where two areas overlap was
+    "not in" the second, --rrd was left in place when --png /dev/full failed, nohup's SIGHUP ended the run 129, and
+    rerun's "File too large" was "rerun's writer stopped". This tree's code."""
+    monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
+    outcome = run_case(next(c for c in hostile25_cases() if c.name == name))
+    assert outcome.problems == []
+
+
+def test_the_hostile25_cases_are_named_once_and_say_what_they_must() -> None:
+    found = list(hostile25_cases())
+    assert len({c.name for c in found}) == len(found) >= 33
+    assert all(c.says for c in found if c.codes in ((0,), (1,)))
+    assert any(c.ignored for c in found) and any(c.cwd for c in found)

@@ -58,6 +58,7 @@ from seal_cli.sefm.observers.rerun_scene import (
     Classes,
     batching,
     blueprint,
+    flush,
     log_grid_image,
     log_map,
     save,
@@ -169,15 +170,15 @@ class RerunRecorder:
         self._series_lines: dict[str, tuple[list[str], list[tuple[int, int, int]]]] = {}
 
     def start(self, sefm: SeFM) -> None:
-        with writing(self.path):
+        with writing(self.path, self.stream):
             self._start(sefm)
 
     def update(self, sefm: SeFM, step: Step) -> None:
-        with writing(self.path):
+        with writing(self.path, self.stream):
             self._update(step, sefm)
 
     def finish(self, sefm: SeFM) -> None:
-        with writing(self.path):
+        with writing(self.path, self.stream):
             self._finish(sefm)
 
     def _start(self, sefm: SeFM) -> None:
@@ -207,7 +208,7 @@ class RerunRecorder:
         if self.stream is not None:
             self._beliefs(sefm, force=True, only_pending=True, metrics=False)
             self._send_metrics()
-            self.stream.flush()
+            flush(self.stream, self.path)
             self.stream.disconnect()
             self.stream = None
 

@@ -24,6 +24,7 @@ bottom relative to RViz (north is at the bottom); positions are the map frame's 
 
 from __future__ import annotations
 
+import contextlib
 import io
 import os
 import sys
@@ -37,8 +38,8 @@ import numpy as np
 from seal_cli.maps.geometry import FREE, OCCUPIED, OccupancyGrid
 from seal_cli.maps.model import Map
 
-__all__ = ["DRAW", "Classes", "batching", "blueprint", "log_grid_image", "log_map", "png", "save", "send_series",
-           "series_colour"]
+__all__ = ["DRAW", "Classes", "batching", "blueprint", "flush", "log_grid_image", "log_map", "png", "save",
+           "send_series", "series_colour"]
 
 DRAW = {"occupancy": -10.0, "density": -5.0, "rooms": 1.0, "places": 2.0, "objects": 3.0, "frames": 4.0,
         "modes": 6.0, "observations": 7.0, "robot": 8.0}
@@ -81,11 +82,14 @@ def _quiet_stderr() -> Iterator[None]:
 
 
 @contextmanager
-def writing(path: str | Path) -> Iterator[None]:
+def writing(path: str | Path, stream: Any = None) -> Iterator[None]:
     """Rerun's failures to write a recording (a full disk, a file system that refuses) as the ``OSError`` of
     ``path`` every other writer raises: rerun raises ``RuntimeError("Failed to encode LogMsg: Failed to write: No
     space left on device (os error 28)")`` when it logs, or, from the flush after its writer thread died,
-    "File-writer thread shut down prematurely" — both were tracebacks of ``--rrd`` on a full disk."""
+    "File-writer thread shut down prematurely" — both were tracebacks of ``--rrd`` on a full disk. The second names
+    no reason: a disk with no space left under ``path`` is said as "No space left on device" (hostile25: it was
+    "rerun's writer stopped", on a full tmpfs). ``stream``, the recording written, is then let go quietly: its
+    sink's failure was printed again, after seal's own message, when the process ended."""
     import errno
     import re
 
@@ -94,12 +98,69 @@ def writing(path: str | Path) -> Iterator[None]:
     except RuntimeError as exc:
         text = str(exc)
         code = re.search(r"\(os error (\d+)\)", text)
-        if code is not None:
-            raise OSError(int(code.group(1)), os.strerror(int(code.group(1))), str(path)) from None
+        number = int(code.group(1)) if code is not None else _full(path)
+        if stream is not None and (number or "File-writer thread" in text or "Failed to write" in text):
+            with _quiet_stderr(), contextlib.suppress(Exception):
+                stream.disconnect()
+        if number:
+            raise OSError(number, os.strerror(number), str(path)) from None
         if "File-writer thread" in text or "Failed to write" in text:
             raise OSError(errno.EIO, "rerun's writer stopped before the recording was whole (rerun said why "
                           "above)", str(path)) from None
         raise
+
+
+FLUSH_ROUND = 1.0
+"""Seconds one wait for rerun's flush lasts (:func:`flush`)."""
+FLUSH_STALL = 60.0
+"""Seconds a flush may go on while the recording does not grow before it is given up."""
+
+
+def flush(stream: Any, path: str | Path) -> None:
+    """Flush the recording streamed to ``path``, in waits of :data:`FLUSH_ROUND` seconds. Rerun's own flush waits
+    for ever by default, and when its file writer had died on a full disk it never returned: ``seal localize --rrd``
+    onto a disk that filled up hung, SIGTERM and SIGINT held off while it waited inside rerun (hostile25, on a
+    16 KiB tmpfs; ``run --rrd`` happened to fail at once). Between waits an interrupt is acted on, a full disk is
+    said as one, and a recording that has not grown for :data:`FLUSH_STALL` seconds is given up as a writer that
+    stopped. Rerun's own failures (its writer gone) are left to :func:`writing`."""
+    import errno
+    import time
+
+    size, since = -1, time.monotonic()
+    while True:
+        try:
+            stream.flush(timeout_sec=FLUSH_ROUND)
+            return
+        except RuntimeError as exc:
+            text = str(exc)
+            if "File-writer thread" in text or "Failed to write" in text or "(os error" in text:
+                raise
+        number = _full(path)
+        if number:
+            raise OSError(number, os.strerror(number), str(path))
+        try:
+            grown = os.path.getsize(path)
+        except OSError:
+            grown = size
+        if grown != size:
+            size, since = grown, time.monotonic()
+        elif time.monotonic() - since > FLUSH_STALL:
+            raise OSError(errno.EIO, f"rerun's writer made no progress for {FLUSH_STALL:g} s", str(path))
+
+
+def _full(path: str | Path) -> int:
+    """``ENOSPC`` when the file system ``path`` is on has no space left for this process, ``EFBIG`` when ``path`` has
+    grown to the largest file this process may write (``ulimit -f``), else 0."""
+    import errno
+    import resource
+
+    try:
+        if os.statvfs(os.path.dirname(os.path.abspath(path))).f_bavail == 0:
+            return errno.ENOSPC
+        limit = resource.getrlimit(resource.RLIMIT_FSIZE)[0]
+        return errno.EFBIG if limit != resource.RLIM_INFINITY and os.path.getsize(path) >= limit else 0
+    except OSError:
+        return 0
 
 
 def save(stream: Any, path: str | Path) -> None:

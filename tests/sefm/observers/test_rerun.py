@@ -262,3 +262,58 @@ def test_rerun_failing_to_write_is_the_oserror_of_the_recording(raised: str, sai
     assert caught.value.filename == "r.rrd"
     with pytest.raises(RuntimeError, match="something else"), writing("r.rrd"):
         raise RuntimeError("something else")
+
+
+def test_a_writer_stopped_on_a_full_disk_is_said_as_a_full_disk(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Rerun's "File-writer thread shut down prematurely" names no reason; on a disk with no space left it is said
+    as "No space left on device" (hostile25, a 16 KiB tmpfs: it was "rerun's writer stopped"), and the stream is let
+    go quietly, so that rerun does not print its failure again at the process's end."""
+    import errno
+
+    import seal_cli.sefm.observers.rerun_scene as scene
+
+    class Stream:
+        gone = False
+
+        def disconnect(self) -> None:
+            self.gone = True
+
+    stream = Stream()
+    monkeypatch.setattr(scene, "_full", lambda path: errno.ENOSPC)
+    with pytest.raises(OSError, match="No space left on device") as caught, scene.writing("r.rrd", stream):
+        raise RuntimeError("File-writer thread shut down prematurely")
+    assert caught.value.filename == "r.rrd" and stream.gone
+
+
+class _Slow:
+    """A stream whose flush never ends within one wait (rerun's, its writer gone: it waited for ever by default)."""
+
+    def __init__(self, rounds: int) -> None:
+        self.rounds, self.waits = rounds, []
+
+    def flush(self, timeout_sec: float = 1e38) -> None:
+        self.waits.append(timeout_sec)
+        if len(self.waits) <= self.rounds:
+            raise RuntimeError("flush timed out")
+
+
+def test_a_flush_waits_in_rounds_and_gives_up_on_a_writer_that_stopped(tmp_path: Path,
+                                                                        monkeypatch: pytest.MonkeyPatch) -> None:
+    """``seal localize --rrd`` onto a disk that filled up hung in rerun's flush, deaf to SIGTERM (hostile25): the
+    flush now waits :data:`FLUSH_ROUND` at a time (an interrupt acts between), ends when rerun's does, says a full
+    disk as one and gives up on a recording that no longer grows."""
+    import errno
+
+    import seal_cli.sefm.observers.rerun_scene as scene
+
+    path = tmp_path / "r.rrd"
+    path.write_bytes(b"x")
+    slow = _Slow(2)
+    scene.flush(slow, path)
+    assert slow.waits == [scene.FLUSH_ROUND] * 3
+    monkeypatch.setattr(scene, "FLUSH_STALL", 0.05)
+    with pytest.raises(OSError, match="made no progress for 0.05 s"):
+        scene.flush(_Slow(10**9), path)
+    monkeypatch.setattr(scene, "_full", lambda _: errno.ENOSPC)
+    with pytest.raises(OSError, match="No space left on device"):
+        scene.flush(_Slow(10**9), path)
