@@ -171,7 +171,8 @@ POLITE_FORMULAE = frozenset([
     "if you have time", "if you can", "if possible", "if you please", "if you would", "if you don't mind",
     "if you do not mind", "if it's not too much trouble", "if it is not too much trouble", "if you wouldn't mind",
     "if you would not mind", "at your convenience", "when convenient", "when it's convenient", "no rush",
-    "no hurry"])
+    "no hurry", "thanks in advance", "thank you in advance", "many thanks", "do me a favor", "do me a favour",
+    "quick favor", "quick favour", "a quick favor", "a quick favour", "small favor", "small favour"])
 AS_ABLE = frozenset(["possible", "you can", "you could", "you're able", "you are able", "you can manage",
                      "you're able to", "you are able to", "you can do it"])
 """What ends "as fast *as you can*", "as gently *as possible*" (``politeness.AS_ABLE_RULE``): the manner said at the
@@ -180,7 +181,9 @@ AS_ABLE_NOT_MANNER = frozenset(["much", "many", "few", "little", "far"])
 """Words between "as" and "as" that measure a thing or a way, not a manner ("bring *as many as* you can")."""
 """Politeness said as a clause of its own ("*when you get a chance*, could you ..."; "... *if you don't
 mind*"): the robot's time is asked for, not a condition or a task. Only a whole clause: "if you can"
-followed by more of its clause ("if you can reach the shelf, ...") is a condition."""
+followed by more of its clause ("if you can reach the shelf, ...") is a condition. Thanks said first ("*thanks in
+advance*: please ...") and a favour announced ("*quick favour* - grab me ...", "*do me a favour*: ...") are such
+clauses too (words33); "a quick question" is not (a question is what "ask" and "answer" take)."""
 SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "thanks", "thanx": "thanks",
              "u": "you", "r": "are", "ya": "you", "ur": "your", "n": "and", "im": "i'm", "ive": "i've",
              "youre": "you're",

@@ -30,6 +30,7 @@ from seal_cli.language.english import (
     FREQUENCY_ADVERBS,
     HERE_WORDS,
     HOLDING_VERBS,
+    LET_KNOW,
     LINKING_VERBS,
     LOCATIVE,
     MODALS,
@@ -995,12 +996,19 @@ class State:
                 m = k + n
                 while m < len(words) and match_phrase(words, m, SEPARATOR_WORDS):
                     m += match_phrase(words, m, SEPARATOR_WORDS)
-                if m < len(words) and (self.verb_at(m) is not None or self.verb_after(m)):
+                if m < len(words) and (self.verb_at(m) is not None or self.verb_after(m) or self._let_know(m)):
                     break
             k += 1
         while k > j and words[k - 1].lower in (",", ";", ":"):
             k -= 1                                           # a comma before the next clause is no speech
         return k
+
+    def _let_know(self, m: int) -> bool:
+        """Whether "let X know" starts at ``m`` ("... *and let me know*", "and let the guests know"): a clause of
+        telling, which no verb of the library starts (words33)."""
+        words = self.words
+        return words[m].lower == LET_KNOW[0] and \
+            any(words[k].lower == LET_KNOW[1] for k in range(m + 2, min(m + 5, len(words))))
 
     def _subordinate_at(self, i: int) -> tuple[str, int, str] | None:
         """A subordinate clause at ``i``: ("clause", end, subordinator) for one of the robot's own

@@ -2691,3 +2691,86 @@ def test_what_is_said_beside_is_kept_as_a_remark(text: str, want: list[tuple[str
 def test_the_one_too_is_one_more_of_the_things(library: Library) -> None:
     (close,) = parse_command("shut the front gate and the side one too", library).frames
     assert [c.head for c in close.elements["theme"].conjuncts] == ["gate", "gate"]
+
+
+# words33: hedged advice, thanks and a favour said first, a question after "and", a place said before a question
+@pytest.mark.parametrize(("text", "want"), [
+    ("I think you should open the shed", [("Open", {"theme": "shed"})]),
+    ("I reckon you ought to close the shed", [("Close", {"theme": "shed"})]),
+    ("I suppose you need to wash the pan", [("Clean", {"theme": "pan"})]),
+    ("so, I think you should follow Maya", [("Follow", {"theme": "Maya"})]),
+    ("I think you should know the pan is hot", None),                   # no command: what the robot should know
+])
+def test_advice_said_with_a_hedge_is_the_command(text: str, want: list[tuple[str, dict[str, str]]] | None,
+                                                 library: Library) -> None:
+    """"I think you should V": the speaker's hedge and a modal of advice before the verb are politeness."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("Thanks in advance: please shut the garage door.", [("Close", {"theme": "door"})]),
+    ("quick favour - hand me the pliers", [("Give", {"theme": "pliers", "recipient": "me"})]),
+    ("Do me a favor: switch off the heater.", [("ToggleOff", {"theme": "heater"})]),
+    ("close the hatch, many thanks", [("Close", {"theme": "hatch"})]),
+])
+def test_thanks_and_a_favour_said_as_a_clause_are_politeness(text: str, want: list[tuple[str, dict[str, str]]],
+                                                              library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("And who is on the porch?", [("Tell", {"message": "who is on the porch"})]),
+    ("then where is the ladder?", [("Find", {"theme": "ladder"})]),
+    ("and how many jars are in the cellar?", [("Count", {"theme": "jar", "ground": "cellar"})]),
+])
+def test_a_question_after_a_first_and_is_asked(text: str, want: list[tuple[str, dict[str, str]]],
+                                               library: Library) -> None:
+    parse = parse_command(text, library)
+    assert [f.frame for f in parse.frames] == [f for f, _ in want]
+    for frame, (_, elements) in zip(parse.frames, want, strict=True):
+        for role, value in elements.items():
+            assert value in (frame.elements[role].text or "") or value == frame.elements[role].head
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("In the cellar, is anyone lying down?", [("Find", {"theme": "anyone", "ground": "cellar"})]),
+    ("On the bench, is somebody sitting?", [("Find", {"theme": "somebody", "ground": "bench"})]),
+    ("In the meantime, is anyone lying down?", None),                    # no place: still refused
+])
+def test_a_place_said_before_a_question_of_someone_there(text: str, want: list[tuple[str, dict[str, str]]] | None,
+                                                         library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("in the garage which car is the oldest?", [("Tell", {"message": "in the garage which car is the oldest"})]),
+    ("Out of the plates on the rack which one is the widest?", [("Tell", {})]),
+    ("in the garage which car is the oldest", None),                   # no question mark: no question said
+    ("in the box which is red put the cup?", None),                    # a command after "which": no question
+])
+def test_a_phrase_before_a_question_without_its_comma(text: str, want: list[tuple[str, dict[str, str]]] | None,
+                                                      library: Library) -> None:
+    if want is None:
+        assert_reads(text, None, library)
+        return
+    parse = parse_command(text, library)
+    assert [f.frame for f in parse.frames] == [f for f, _ in want]
+    for role, value in want[0][1].items():
+        assert parse.frames[0].elements[role].text == value
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("I want the kettle brought to me", [("Bring", {"theme": "kettle", "recipient": "me"})]),
+    ("we'd like the bench moved to the porch", [("Place", {"theme": "bench", "goal": "porch"})]),
+    ("I need the rug on the stairs taken to the garage",
+     [("Bring", {"theme": "rug", "source": "stair", "goal": "garage"})]),
+    ("I'd like the shutters closed", [("Close", {"theme": "shutter"})]),            # a state: as before
+    ("I'd like the baked beans from the pantry",
+     [("Bring", {"theme": "bean", "source": "pantry"})]),                           # the participle opens the phrase
+])
+def test_a_wish_for_a_thing_done_is_the_verb(text: str, want: list[tuple[str, dict[str, str]]],
+                                             library: Library) -> None:
+    got = frames(text, library)
+    assert [f for f, _ in got] == [f for f, _ in want]
+    for (_, have), (_, expected) in zip(got, want, strict=True):
+        assert {r: have.get(r) for r in expected} == expected

@@ -83,6 +83,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.ASKED_OF_PERSON,
     requests.WHETHER_IS_RULE,
     requests.KNOW_WISH,
+    requests.WISHED_DONE,
     requests.WISHED_PLACED_RULE,
     requests.THING_PLACED,
     requests.WISHED_STATE,

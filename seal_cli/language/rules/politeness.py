@@ -13,6 +13,7 @@ from seal_cli.language.english import (
     NUMBER_MEANS,
     POLITE,
     QUESTION_MEANS,
+    QUESTION_WORDS,
     RELAYED_OBLIGATION,
     RELAYING,
     SUBJECTS,
@@ -93,10 +94,21 @@ def _politeness(s: State, i: int) -> Match | None:
     if n > 1 and words[i + n - 1].lower in _VERB_NEXT and not s.verb_after(k):
         return None                                   # "help me to the bathroom": "help" is the verb said (words27);
         #   "what about the dishes?": a question, no suggestion of a deed ("what about closing it": words30)
-    if n and not (n == 1 and low in ("and", "then") and not s.out and not s.verb_after(i + 1)) and (
+    if n and not (n == 1 and low in ("and", "then") and not s.out and not s.verb_after(i + 1) and
+                  not _question_next(s, i + 1)) and (
             low in ("to", "and", "then") or s.verb_after(i + n) or i + n >= len(words) or not s.verb_at(i)):
         return Match(n, (merge(words, i, n, Tag.POLITE),))
     return None
+
+
+_QUESTION_FIRST = QUESTION_WORDS | {"where", "where's", "whereabouts", "how"}
+"""Words that open a question the robot answers, after which a first "and" or "then" only joins it to what was
+said before ("*And* who is in the kitchen?", "*then* where is the cup?": words33)."""
+
+
+def _question_next(s: State, k: int) -> bool:
+    """Whether a question the robot answers starts at ``k``."""
+    return k < len(s.words) and s.words[k].lower in _QUESTION_FIRST
 
 
 def _emphatic_do(s: State, i: int) -> Match | None:
@@ -273,6 +285,7 @@ POLITENESS = Rule("politeness", _politeness, (
     Example("robot, go to the kitchen", "robot,", Tag.POLITE),
     Example("how about closing the window", "how about", Tag.POLITE),
     Example("do you mind switching the fan on", "do you mind", Tag.POLITE),
+    Example("And who is in the kitchen?", "And", Tag.POLITE),
 ), None, "politeness words and phrases before the verb (english.POLITE)")
 EMPHATIC_DO = Rule("emphatic do", _emphatic_do, (
     Example("Do take his coat", "Do", Tag.POLITE),

@@ -26,6 +26,7 @@ from seal_cli.language.english import (
     LEFT_ASKED,
     LET_KNOW,
     LOCATED,
+    LOCATIVE,
     NP_OPENERS,
     NUMBER_MEANS,
     NUMBER_OF,
@@ -57,6 +58,7 @@ from seal_cli.language.english import (
     WHERE_QUESTIONS,
     WISHED_PLACED,
     WISHED_PLACES,
+    is_room_word,
 )
 from seal_cli.language.morphology import (
     gerund_lemma,
@@ -302,6 +304,8 @@ def _place_asked(s: State, j: int) -> bool:
         return False
     for k in range(j + 1, len(words)):
         low = words[k].lower
+        if low in END_MARKS and _place_fronted(s) and any(_progressive(s, j, m) for m in range(j + 1, k)):
+            return True                           # "In the bedroom, is anyone lying down?" (words33)
         if low in END_MARKS or low in (",", ";", "and", "then") or s.verb_at(k) is not None and \
                 words[k - 1].lower not in NP_OPENERS and not _progressive(s, j, k):
             return False                          # a verb ("the *pan*": a noun after a determiner)
@@ -312,6 +316,22 @@ def _place_asked(s: State, j: int) -> bool:
                 k += 1                            # "is mum home *yet*?"
             return k + 1 == len(words) or words[k + 1].lower in END_MARKS
     return False
+
+
+def _place_fronted(s: State) -> bool:
+    """Whether the words tagged so far end in a phrase of place said first and its comma ("*In the bedroom,* is
+    anyone lying down?"): the place a question asks about, said before it (words33)."""
+    out = s.out
+    if not out or out[-1].lower != ",":
+        return False
+    k = len(out) - 2
+    while k > 0 and out[k].tag in _PHRASE_TAGS and out[k].tag != Tag.PREP:
+        k -= 1
+    if k < 0 or out[k].tag != Tag.PREP or out[k].info not in LOCATIVE or k >= len(out) - 2 or \
+            k > 0 and out[k - 1].tag not in (Tag.SEP, Tag.END, Tag.POLITE):
+        return False
+    last = out[-2].lower                          # a place: a thing the taxonomy knows, or a room ("the meantime": no)
+    return noun_lemma(last) in s.lexicon.things or is_room_word([w.lower for w in out[k + 1:-1]])
 
 
 def _progressive(s: State, j: int, k: int) -> bool:
@@ -890,6 +910,34 @@ def _wished_state(s: State, i: int) -> Match | None:
         if found is not None and found.particle and found.particle[0] == end - 1:
             return found
     return _state_after(s, i, n)
+
+
+def _wished_done(s: State, i: int) -> Match | None:
+    """"*I want* the apple *brought* to me", "I'd like the plate *put* on the table", "I need the towel *taken* to the
+    bathroom": a wish for a verb of the library to be done to a thing (a phrase, then the verb's past participle
+    and where the thing goes) is that verb (words33), as "I'd like the blinds closed" is closing them: the wish is
+    the verb, the participle its split particle. A participle that opens the phrase ("I'd like the *baked* potato")
+    or follows a verb of being is none."""
+    words = s.words
+    n = _phrase(s, i, _WISHED_STATES)
+    k = i + n
+    if not n or not s.np_starts(k) or words[k].lower in ("you", "to") or s.verb_at(k) is not None:
+        return None
+    for q in range(k + 1, _sentence_end(s, k) - 1):
+        low = words[q].lower
+        if low in (",", ";", "and", "then") or low in BE_WORDS or low in FINITE:
+            return None
+        unit = verb_lemma(low)
+        if unit is None or low not in participles(unit) or \
+                (unit,) not in s.lexicon.units.get(unit, ()) or words[q - 1].lower in NP_OPENERS or \
+                words[q - 1].lower in PREPOSITIONS:
+            continue
+        if words[q + 1].lower not in PREPOSITIONS or not s.np_starts(q + 1 + match_phrase(words, q + 1, PREPOSITIONS)):
+            return None
+        start, stop = words[i].start, words[k - 1].end
+        return Match(n, (Word(s.text_of(start, stop), start, stop, Tag.VERB, unit),), expect=False, verb=unit,
+                     using=False, particle=(q, unit))
+    return None
 
 
 def _resultative(s: State, i: int) -> Match | None:
@@ -1540,6 +1588,11 @@ ANY_ASKED = Rule("any X somewhere, asked", _any_asked, (
     Example("any spoons in the drawer?", "any", Tag.DET),
     Example("someone waiting at the door?", "someone", Tag.PRON),
 ), _ANY_ASKED, "'anyone in the bathroom?', 'any milk in the fridge?': find them there ('is there' unsaid)")
+WISHED_DONE = Rule("a wish for a thing done", _wished_done, (
+    Example("I want the apple brought to me", "I want", Tag.VERB),
+    Example("I'd like the plate put on the table", "put", Tag.PARTICLE),
+    Example("we need the chairs moved to the porch", "we need", Tag.VERB),
+), first_words(_WISHED_STATES), "'I want X brought to me', 'I'd like X put on Y': bring X to me, put X on Y")
 WISHED_STATE = Rule("a wish for a thing's state", _wished_state, (
     Example("I'd like the blinds closed", "I'd like", Tag.VERB),
     Example("I want the lights off, please", "off", Tag.PARTICLE),
@@ -1794,14 +1847,29 @@ def _fronted_question(s: State, i: int) -> Match | None:
     if QUESTION_MEANS not in s.lexicon.units or not match_phrase(words, i, PREPOSITIONS) and words[i].lower != "of":
         return None
     k = i + 1
-    while k < len(words) and words[k].lower not in END_MARKS and words[k].lower not in (",", ";"):
+    while k < len(words) and words[k].lower not in END_MARKS and words[k].lower not in (",", ";") and \
+            not (k > i + 2 and words[k].lower in QUESTION_WORDS and _asked_to_the_end(s, k)):
         k += 1
-    if k + 1 >= len(words) or words[k].lower != "," or words[k + 1].lower not in QUESTION_WORDS or \
-            _question(s, k + 1) is None:
+    asked = k + (words[k].lower == ",") if k < len(words) else k      # the comma may be left out (words33)
+    if asked >= len(words) or words[asked].lower not in QUESTION_WORDS or _question(s, asked) is None:
         return None
-    end = s.speech_end(k + 1)
+    end = s.speech_end(asked)
     return Match(end - i, (_unsaid(words[i].start, Tag.VERB, QUESTION_MEANS), s.emit(i, end - i, Tag.SAID).words[0]),
                  expect=False, verb=QUESTION_MEANS, using=False)
+
+
+def _asked_to_the_end(s: State, k: int) -> bool:
+    """Whether a question that starts at ``k`` is all the rest of its sentence and asks ("in the hall *which person
+    is standing?*"): a question mark ends it, and no verb of the library in its base form is said in it (a command
+    the question word only opened a relative clause before: "in the box which is red put the cup")."""
+    words = s.words
+    m = k + 1
+    while m < len(words) and words[m].lower not in END_MARKS:
+        low = words[m].lower
+        if low in (",", ";") or s.verb_at(m) is not None and verb_lemma(low) == low:
+            return False
+        m += 1
+    return m < len(words) and words[m].lower == "?"
 
 
 def _fronted_end(s: State, i: int) -> Match | None:
@@ -1826,6 +1894,7 @@ FRONTED_OF = Rule("of-phrase first", _fronted_of, (
     "'of' ('among', 'out of') and a noun phrase before the clause ('Of the people in the hall, how many ...')")
 FRONTED_QUESTION = Rule("phrase said before a question", _fronted_question, (
     Example("On the table, which object is lightest?", "On the table, which object is lightest", Tag.SAID),
+    Example("in the garage which car is the oldest?", "in the garage which car is the oldest", Tag.SAID),
 ), first_words(PREPOSITIONS) | {"of"},
     "a phrase and a comma before a question: all of it is what to tell")
 FRONTED_END = Rule("phrase said first", _fronted_end, (
