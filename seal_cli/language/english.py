@@ -447,10 +447,12 @@ ASKED_ALONE = frozenset(["please"])
 """"Milk from the fridge, *please*", "the remote, please": a noun phrase and "please" with no verb in the
 sentence is a request for the thing, "bring me ..." (``REQUEST_MEANS``)."""
 CHECK_WHETHER = (frozenset(["check", "see", "find out", "look and see", "go and see", "go and check", "go see",
-                            "go check"]),
+                            "go check", "figure out", "work out", "determine", "discover"]),
                  frozenset(["if", "whether"]), frozenset(["there is", "there are", "there 's", "there's"]))
 """"*See if* anyone is in the kitchen", "*check whether* there is milk in the fridge": the question whether
-it is there, asked as "find ..." (``WHERE_MEANS``), as "is anyone in the kitchen?" is."""
+it is there, asked as "find ..." (``WHERE_MEANS``), as "is anyone in the kitchen?" is. The verbs of finding
+out by reasoning ("*figure out* who is in the garage", "*work out* how many cups are left", "*determine* ...",
+"*discover* ...": words33) ask as "find out" does."""
 STATE_MEANS = "check"
 """"*Is* the fridge *open*?", "check *whether* the door is *closed*": a yes/no question about a thing's state means
 "check the fridge" (a unit of LookAt in the standard library), the state asked kept beside the frame."""

@@ -2,16 +2,16 @@
 
 People wrap a question in a request to report it, before or after: "find out what is on the bench *and tell me*",
 "check who's in the hall *and let me know*", "how many cups are on the table? *Tell me, please.*", "count the
-plates *and report back*", "*Tell me,* who is at the door?". The telling says nothing of its own (no message): it
-is the answer of the question beside it, not a second thing to tell. :func:`merge_reported` makes the two one
-frame: the question's, with the person told when the question's frame tells someone (Tell) and said no one
-("find out who's in the hall and tell Jo": Tell, recipient Jo).
+plates *and report back*", "*Tell me,* who is at the door?". The telling says nothing of its own (no message, or
+"it": "find out his name and tell *it* to Jo"): it is the answer of the question beside it, not a second thing to
+tell. :func:`merge_reported` makes the two one frame: the question's, with the person told when the question's
+frame tells someone (Tell) and said no one ("find out who's in the hall and tell Jo": Tell, recipient Jo).
 
 A question is a frame that asks: Tell with a message, Count, a state asked (LookAt with ``asked``), or a search
 asked rather than commanded (Find whose words do not start with its verb: "is there milk in the fridge", "check
 whether ..."). "Find the cat and tell me" stays two frames (a search commanded, then a report of its own), and so
 does a telling with a message ("count the cups and tell me the number") or to another person after a frame that
-tells no one ("count the cups and tell Jo").
+tells no one ("count the cups and tell Jo"), or two people told ("tell me X and tell it to Jo").
 """
 
 from __future__ import annotations
@@ -29,6 +29,9 @@ TELLING = "Tell"
 
 _SPEAKER = frozenset(["me", "us"])
 """The heads of a recipient that is the speaker."""
+
+_ANSWER_AGAIN = frozenset(["it", "that", "this", "the answer"])
+"""A telling's message that is the answer of the question before it ("find out his name and tell *it* to Jo")."""
 
 _JOINT_AFTER = re.compile(r"^(?:\s|[,.;!?]|\band\b|\bthen\b|\bplease\b|\bjust\b|\bso\b|\balso\b)*$", re.IGNORECASE)
 """What may stand between a question and the telling after it: the joints of clauses and sentences, and politeness
@@ -81,8 +84,15 @@ def _asks(text: str, frame: Evoked) -> bool:
 def _reports(telling: Evoked, question: Evoked) -> bool:
     """Whether ``telling`` only reports the answer of ``question``: a Tell with no message and no element but the
     person told, who is the speaker unless the question's own frame tells someone."""
-    if telling.frame != TELLING or set(telling.elements) - {"recipient"}:
+    if telling.frame != TELLING or set(telling.elements) - {"recipient", "message"}:
         return False
+    asked_of, told_to = question.elements.get("recipient"), telling.elements.get("recipient")
+    if asked_of is not None and asked_of.text and told_to is not None and told_to.text and \
+            asked_of.head.lower() != told_to.head.lower():
+        return False                  # "tell me what is in the box and tell it to Jo": two people told
+    message = telling.elements.get("message")
+    if message is not None:           # "find out his name and tell *it* to Jo": the answer, said again
+        return question.frame == TELLING and (message.text or "").lower() in _ANSWER_AGAIN
     return question.frame == TELLING or _to_speaker(telling.elements.get("recipient"))
 
 

@@ -470,12 +470,14 @@ class State:
         """Whether a statement starts at ``i`` and where its clause ends (0: none): a subject (a pronoun,
         a contraction "it's", "we're", "i'll"; or a noun phrase: "the bus", "my son Declan", "Bogdan") and
         then a finite verb ("is", "has", "can't", "keeps", "arrives on"); a command starts with a verb's
-        base form instead. The clause ends at punctuation."""
+        base form instead. The clause ends at punctuation, or where the command goes on without it
+        (:meth:`command_resumes`: "look for Jo, *she's by the fence* and follow her")."""
         words = self.words
         if i >= len(words):
             return 0
         end = i
-        while end < len(words) and words[end].lower not in END_MARKS and words[end].lower not in (",", ";", ":"):
+        while end < len(words) and words[end].lower not in END_MARKS and words[end].lower not in (",", ";", ":") \
+                and not (end > i + 2 and self.command_resumes(end)):
             end += 1
         first = words[i].lower
         nxt = words[i + 1].lower if i + 1 < end else ""
@@ -616,6 +618,25 @@ class State:
                 break
         return k
 
+    def command_resumes(self, m: int) -> bool:
+        """Whether the command goes on at ``m``, inside a statement said without punctuation (words33): "and" or
+        "then" and a verb of the library in its base form ("..., he's near the fence *and follow* him"), or such a
+        verb right after "there"/"here" and before its object ("there's someone waving there *greet* them"). A
+        statement's own verbs are finite ("she *wants* it", "they *can* find it"): no base form of a unit after
+        "and" in a statement said to the robot but the robot's next command."""
+        words = self.words
+        low = words[m].lower
+        if low in ("and", "then"):
+            k = m + 1 + (m + 1 < len(words) and words[m + 1].lower == "then")
+            return k < len(words) and self._base_unit(k)
+        return low not in CLOSED and words[m - 1].lower in ("there", "here") and self._base_unit(m) and \
+            self.np_starts(m + 1)
+
+    def _base_unit(self, k: int) -> bool:
+        """Whether a verb of the library starts at ``k`` in its base form."""
+        found = self.verb_at(k)
+        return found is not None and verb_lemma(self.words[k].lower) == self.words[k].lower
+
     def remark_unmarked(self, i: int) -> tuple[int, tuple[tuple[int, int], ...]]:
         """A statement after the request with no comma before it, started by "because"/"cos"/... or a subject
         contraction ("give the ball to Lily *cos she wants it*", "turn the radio off *it's too loud*"): how
@@ -655,6 +676,8 @@ class State:
         if spans and k < len(words) and words[k - 1].lower in (",", ";") and \
                 (words[k].lower in ("and", "then") and self.verb_after(k + 1) or self.verb_after(k)):
             return k - 1 - i, tuple(spans)  # "find Jane, *she's in the bedroom*, and tell her ...": the clause goes on
+        if spans and k < len(words) and self.command_resumes(k):
+            return k - i, tuple(spans)      # "look for Jo *she's by the fence* and follow her" (words33)
         if k < len(words) and words[k].lower not in END_MARKS or k == i + 1:
             return 0, ()
         return k - i, tuple(spans)

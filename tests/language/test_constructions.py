@@ -2774,3 +2774,35 @@ def test_a_wish_for_a_thing_done_is_the_verb(text: str, want: list[tuple[str, di
     assert [f for f, _ in got] == [f for f, _ in want]
     for (_, have), (_, expected) in zip(got, want, strict=True):
         assert {r: have.get(r) for r in expected} == expected
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("look for pia in the yard shes near the gate and follow her",
+     [("Find", {"theme": "pia", "ground": "yard"}), ("Follow", {"theme": "pia"})]),
+    ("go to the den theres a man reading there greet him", [("Go", {"goal": "den"}), ("Greet", {"theme": "man"})]),
+    ("look for ola, she's by the shed and then follow her", [("Find", {"theme": "ola"}), ("Follow", {"theme": "ola"})]),
+    ("find the torch in the attic its in a box i think", [("Find", {"theme": "torch", "ground": "attic"})]),
+    ("give the pen to Lily cos she wants it and then open the door",
+     [("Give", {"theme": "pen", "recipient": "Lily"}), ("Open", {"theme": "door"})]),
+])
+def test_a_statement_said_without_punctuation_ends_where_the_command_goes_on(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """A run-on statement beside the command was dropped to the end of its sentence, with the command after it (a
+    clause lost silently): it ends at "and"/"then" and a verb of the library, or at such a verb after "there"."""
+    assert frames(text, library) == want
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("figure out who is in the shed", [("Tell", {"message": "who is in the shed"})]),
+    ("work out whether there is jam in the cupboard", [("Find", {"theme": "jam", "ground": "the cupboard"})]),
+    ("discover what's under the bed", [("Tell", {"message": "what's under the bed"})]),
+    ("find out the date", [("Tell", {"message": "the date"})]),
+    ("figure out his name", [("Tell", {"message": "his name"})]),
+    ("find out if the gate is locked", [("LookAt", {"theme": "the gate"})]),           # as before
+])
+def test_a_fact_found_out_is_told(text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """To find out (figure out, work out, discover) is to learn a fact, never to search for a thing (words33)."""
+    parse = parse_command(text, library)
+    assert [f.frame for f in parse.frames] == [f for f, _ in want]
+    for role, value in want[0][1].items():
+        assert parse.frames[0].elements[role].text == value

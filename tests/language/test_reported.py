@@ -42,9 +42,17 @@ def test_the_question_keeps_its_words_and_takes_the_person_told(library: Library
     ("count the mugs and tell Maya", ["Count", "Tell"]),                   # another person, a count tells no one
     ("tell him that lunch is ready and let me know", ["Tell", "Tell"]),    # no question: two tellings
     ("who is in the garage? greet them", ["Tell", "Greet"]),
+    ("count the mugs and tell it to Maya", ["Count", "Tell"]),            # a count tells no one
+    ("tell me what is in the box and tell it to Maya", ["Tell", "Tell"]),  # two people told
 ])
 def test_other_tellings_stay_frames_of_their_own(text: str, want: list[str], library: Library) -> None:
     assert frames(text, library) == want
+
+
+def test_the_answer_told_again_as_it_is_the_question_told(library: Library) -> None:
+    (told,) = parse_command("find out the name of the man in the shed and tell it to Maya", library).frames
+    assert (told.frame, told.elements["message"].text) == ("Tell", "the name of the man in the shed")
+    assert told.elements["recipient"].text == "Maya"
 
 
 def test_later_pronouns_still_name_their_antecedent(library: Library) -> None:

@@ -80,6 +80,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.ENSURED_RULE,
     requests.ASKED_WHETHER,
     requests.FOUND_OUT_RULE,
+    requests.FOUND_OUT_THING,
     requests.ASKED_OF_PERSON,
     requests.WHETHER_IS_RULE,
     requests.KNOW_WISH,

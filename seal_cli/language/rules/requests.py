@@ -680,6 +680,27 @@ def _found_out(s: State, i: int) -> Match | None:
                  expect=False, verb=QUESTION_MEANS, using=False)
 
 
+_LEARNED = frozenset(["find out", "figure out", "work out"])
+"""Verbs of learning a fact, which never find a thing ("*find out* the time", words33)."""
+
+
+def _found_out_thing(s: State, i: int) -> Match | None:
+    """"*Find out* the name of the person at the door", "figure out the time": to find out a thing is to learn it,
+    not to search for it (words33): what is learnt is told (``QUESTION_MEANS``), the phrase kept whole as what to
+    tell, as "find out who is at the door" is. A question word, "if"/"whether" or "how" after the verb are the rules
+    before this one's."""
+    words = s.words
+    n = _phrase(s, i, _LEARNED)
+    if not n or QUESTION_MEANS not in s.lexicon.units or not s.np_starts(i + n) or \
+            words[i + n].lower in FOUND_OUT or words[i + n].lower in WH_WORDS:
+        return None
+    end = s.speech_end(i + n)
+    last = words[i + n - 1].end
+    return Match(end - i, (Word(s.text_of(words[i].start, last), words[i].start, last, Tag.VERB, QUESTION_MEANS),
+                           _unsaid(last, Tag.PRON, None, _SPEAKER), s.emit(i + n, end - i - n, Tag.SAID).words[0]),
+                 expect=False, verb=QUESTION_MEANS, using=False)
+
+
 _WHERE_SAID = HERE_WORDS | frozenset(["home", "there", "around", "back", "out", "in", "upstairs", "downstairs",
                                       "inside", "outside", "away"])
 ASK_MEANS = "ask"
@@ -1710,6 +1731,10 @@ FOUND_OUT_RULE = Rule("find out who", _found_out, (
     Example("Find out who is in the hall.", "who is in the hall", Tag.SAID),
     Example("go to the hall and see who is there", "see", Tag.VERB),
 ), first_words(CHECK_WHETHER[0]), "'find out who ...', 'check what ...': tell me who ...")
+FOUND_OUT_THING = Rule("find out a thing", _found_out_thing, (
+    Example("find out the name of the person at the door", "the name of the person at the door", Tag.SAID),
+    Example("figure out the time and tell Jo", "the time", Tag.SAID),
+), first_words(_LEARNED), "'find out the name of X': tell the name of X (what is learnt is told, not searched for)")
 ASKED_OF_PERSON = Rule("found out by asking", _asked_of_person, (
     Example("find out if anna wants coffee", "find out", Tag.VERB),
     Example("check whether the guest is staying for dinner", "the guest is staying for dinner", Tag.SAID),
