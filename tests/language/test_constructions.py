@@ -2806,3 +2806,18 @@ def test_a_fact_found_out_is_told(text: str, want: list[tuple[str, dict[str, str
     assert [f.frame for f in parse.frames] == [f for f, _ in want]
     for role, value in want[0][1].items():
         assert parse.frames[0].elements[role].text == value
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("Can Priya have the ladle?", [("Bring", {"theme": "ladle", "recipient": "Priya"})]),
+    ("could Tomas get a blanket from the attic?",
+     [("Bring", {"theme": "blanket", "recipient": "Tomas", "source": "attic"})]),
+    ("Help Priya find her scarf.", [("Find", {"theme": "scarf"})]),
+    ("help the guest to find a seat", [("Find", {"theme": "seat"})]),
+    ("help him carry the crate to the van", [("Bring", {"theme": "crate", "goal": "van"})]),
+    ("Could Tomas get to the attic?", None),              # no thing to have: refused, not guessed
+])
+def test_a_thing_asked_for_another_person_and_help_given(text: str, want: list[tuple[str, dict[str, str]]] | None,
+                                                        library: Library) -> None:
+    """"can Priya have X?" brings X to Priya; "help Priya find X" is finding X (words33)."""
+    assert_reads(text, want, library)

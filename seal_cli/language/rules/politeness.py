@@ -7,6 +7,7 @@ from seal_cli.language.english import (
     AS_ABLE,
     AS_ABLE_NOT_MANNER,
     ASKED_AGAIN,
+    DETERMINERS,
     END_MARKS,
     GREETINGS,
     NP_OPENERS,
@@ -109,6 +110,31 @@ said before ("*And* who is in the kitchen?", "*then* where is the cup?": words33
 def _question_next(s: State, k: int) -> bool:
     """Whether a question the robot answers starts at ``k``."""
     return k < len(s.words) and s.words[k].lower in _QUESTION_FIRST
+
+
+_HELPED = frozenset(["him", "her", "them"])
+"""Pronouns of the person helped in "help *her* find ..." ("help me/us" are politeness of ``POLITE``)."""
+
+
+def _helping(s: State, i: int) -> Match | None:
+    """"*Help Jane* find her keys", "help him carry the box to the car", "help the guest to find a seat": helping a
+    person do something is doing it (words33), as "help me find my keys" is: "help", the person (a pronoun, one
+    name, or a person's noun the taxonomy knows with its determiner), maybe "to", then a verb of the library in its
+    base form. "help her to the car" has no verb after the person: "help" is the verb said there."""
+    words = s.words
+    if words[i].lower != "help" or i + 2 >= len(words):
+        return None
+    k = i + 1
+    if words[k].lower in DETERMINERS and k + 1 < len(words):
+        k += 1
+    person = words[k].lower
+    if not (person in _HELPED and k == i + 1 or capitalised(words[k]) and k == i + 1 or
+            (noun_lemma(person) or person) in s.lexicon.people):
+        return None
+    k += 1 + (k + 1 < len(words) and words[k + 1].lower == "to")
+    if k >= len(words) or verb_lemma(words[k].lower) != words[k].lower or s.verb_at(k) is None:
+        return None
+    return Match(k - i, (merge(words, i, k - i, Tag.POLITE),))
 
 
 def _emphatic_do(s: State, i: int) -> Match | None:
@@ -287,6 +313,10 @@ POLITENESS = Rule("politeness", _politeness, (
     Example("do you mind switching the fan on", "do you mind", Tag.POLITE),
     Example("And who is in the kitchen?", "And", Tag.POLITE),
 ), None, "politeness words and phrases before the verb (english.POLITE)")
+HELPING = Rule("help a person do", _helping, (
+    Example("Help Jane find her keys", "Help Jane", Tag.POLITE),
+    Example("help the guest to find a seat", "help the guest to", Tag.POLITE),
+), frozenset(["help"]), "'help Jane find X': find X (the robot does what it helps with)")
 EMPHATIC_DO = Rule("emphatic do", _emphatic_do, (
     Example("Do take his coat", "Do", Tag.POLITE),
 ), frozenset(["do"]), "'do' before a verb's base form")

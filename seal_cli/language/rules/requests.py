@@ -841,6 +841,28 @@ def _request(s: State, i: int) -> Match | None:
                      _unsaid(end, Tag.PRON, None, _SPEAKER)), expect=False, verb=REQUEST_MEANS, using=False)
 
 
+_ASKED_FOR = frozenset(["can", "could", "may", "might"])
+_HAVING = frozenset(["have", "get"])
+
+
+def _request_for(s: State, i: int) -> Match | None:
+    """"*Can* Jane *have* the salt?", "could Robin get a towel from the bathroom?": asking whether another person may
+    have a thing asks the robot to bring it to them (words33), as "can I have X" brings it to the speaker: a modal,
+    one name or a person's noun the taxonomy knows (the person), "have"/"get" and a phrase. The modal is the verb
+    (``REQUEST_MEANS``), the person its recipient, "have" dropped. "can you get ...", "can I have ..." are other
+    rules'."""
+    words = s.words
+    if i + 3 >= len(words) or words[i].lower not in _ASKED_FOR or words[i + 2].lower not in _HAVING or \
+            REQUEST_MEANS not in s.lexicon.units or not s.np_starts(i + 3) or s.verb_at(i + 3) is not None:
+        return None
+    person = words[i + 1]
+    low = person.lower
+    if low in CLOSED or not low.isalpha() or not (capitalised(person) or low in s.lexicon.people):
+        return None
+    return Match(3, (words[i].tagged(Tag.VERB, REQUEST_MEANS), person.tagged(Tag.NAME)), expect=False,
+                 verb=REQUEST_MEANS, using=False)
+
+
 def _wished_placed(s: State, i: int) -> Match | None:
     """"*I want* the mug on the shelf": a wish for a thing to be somewhere is putting it there (``PLACE_MEANS``):
     a phrase, then one preposition of place (``WISHED_PLACES``) whose phrase ends the sentence, no verb
@@ -1672,6 +1694,10 @@ REQUEST = Rule("wish for a thing", _request, (
     Example("is there any chance of a blanket?", "is there any chance of", Tag.VERB),
     Example("any chance I could have a cushion", "any chance I could have", Tag.VERB),
 ), _REQUEST_FIRST, "'I'd like X', 'can I have X', 'I need X': bring X to the speaker")
+REQUEST_FOR = Rule("may a person have a thing", _request_for, (
+    Example("Can Jane have the salt?", "Jane", Tag.NAME),
+    Example("could Robin get a towel from the bathroom?", "could", Tag.VERB),
+), _ASKED_FOR, "'can Jane have X?', 'could Robin get X?': bring X to the person")
 SWITCHED_ALONE = Rule("a thing switched on or off", _switched_alone, (
     Example("Lights off in the hall.", "Lights", Tag.WORD),
     Example("the porch lamp on, please", "on", Tag.PARTICLE),
