@@ -2821,3 +2821,10 @@ def test_a_thing_asked_for_another_person_and_help_given(text: str, want: list[t
                                                         library: Library) -> None:
     """"can Priya have X?" brings X to Priya; "help Priya find X" is finding X (words33)."""
     assert_reads(text, want, library)
+
+
+def test_a_slip_of_a_phrase_word_is_read_as_the_word(library: Library) -> None:
+    """"bring me *teh* kettle *frmo* the shed": "teh" was a modifier of the kettle, "frmo" an unknown word (words33)."""
+    (bring,) = parse_command("bring me teh kettle frmo the shed", library).frames
+    assert (bring.elements["theme"].head, bring.elements["theme"].modifiers) == ("kettle", ())
+    assert bring.elements["source"].head == "shed"
