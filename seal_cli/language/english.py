@@ -426,9 +426,13 @@ NUMBER_OF = frozenset(["tell me the number of", "tell me the total number of", "
                        "what 's the number of", "what is the total number of", "what 's the total number of",
                        "what number of", "give me the number of", "tell me the count of", "report the number of",
                        "count the number of", "count the total number of", "find out the number of",
-                       "check the number of", "figure out the number of", "work out the number of"])
+                       "check the number of", "figure out the number of", "work out the number of",
+                       "give me a count of", "give me the count of", "get me a count of", "i want a count of",
+                       "i need a count of", "i'd like a count of", "do a count of", "take a count of",
+                       "give me a headcount of", "do a headcount of", "take a headcount of"])
 """Asking for a count by its number ("*tell me the number of* toys on the desk", "*what number of* people
-..."): it means "tell me how many ..." (``NUMBER_MEANS``, a unit of counting when the library has it)."""
+..."), or by a count asked for ("*give me a count of* the people in the lounge", "*do a headcount of* the guests":
+words33): it means "tell me how many ..." (``NUMBER_MEANS``, a unit of counting when the library has it)."""
 NUMBER_MEANS = "tell me how many"
 BEING_AT = (frozenset(["once", "when", "as soon as", "after"]), frozenset(["you're", "you are", "you 're"]),
             frozenset(["in", "at", "inside", "by", "near", "next to", "beside", "into"]))

@@ -2828,3 +2828,13 @@ def test_a_slip_of_a_phrase_word_is_read_as_the_word(library: Library) -> None:
     (bring,) = parse_command("bring me teh kettle frmo the shed", library).frames
     assert (bring.elements["theme"].head, bring.elements["theme"].modifiers) == ("kettle", ())
     assert bring.elements["source"].head == "shed"
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("Give me a count of the chairs in the attic.", [("Count", {"theme": "chair", "ground": "attic"})]),
+    ("do a headcount of the guests on the patio", [("Count", {"theme": "guest", "ground": "patio"})]),
+    ("give me the chair", [("Give", {"theme": "chair", "recipient": "me"})]),
+])
+def test_a_count_asked_for_is_counting(text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """"give me a count of X" was Bring of "a count" (words33): a count asked for is "tell me how many X"."""
+    assert frames(text, library) == want
