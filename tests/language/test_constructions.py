@@ -2838,3 +2838,15 @@ def test_a_slip_of_a_phrase_word_is_read_as_the_word(library: Library) -> None:
 def test_a_count_asked_for_is_counting(text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
     """"give me a count of X" was Bring of "a count" (words33): a count asked for is "tell me how many X"."""
     assert frames(text, library) == want
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("Fetch Tomas from the garden.", [("Guide", {"theme": "Tomas", "source": "garden"})]),
+    ("go get Priya from the study", [("Guide", {"theme": "Priya", "source": "study"})]),
+    ("get Priya the ladle from the study",
+     [("Bring", {"theme": "ladle", "recipient": "Priya", "source": "study"})]),          # a thing: brought to her
+    ("get the ladle from the study", [("Pick", {"theme": "ladle", "source": "study"})]),
+])
+def test_a_person_fetched_from_a_place_is_led_from_there(text: str, want: list[tuple[str, dict[str, str]]],
+                                                         library: Library) -> None:
+    assert frames(text, library) == want
