@@ -2850,3 +2850,15 @@ def test_a_count_asked_for_is_counting(text: str, want: list[tuple[str, dict[str
 def test_a_person_fetched_from_a_place_is_led_from_there(text: str, want: list[tuple[str, dict[str, str]]],
                                                          library: Library) -> None:
     assert frames(text, library) == want
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("To the greenhouse, follow Priya.", [("Follow", {"theme": "Priya", "goal": "greenhouse"})]),
+    ("to the porch, escort the visitor", [("Guide", {"theme": "visitor", "goal": "porch"})]),
+    ("To the porch, please", [("Go", {"goal": "porch"})]),                          # as before
+    ("To be honest, bring me a mug", [("Bring", {"theme": "mug", "recipient": "me"})]),
+])
+def test_a_goal_said_first_with_its_comma(text: str, want: list[tuple[str, dict[str, str]]],
+                                          library: Library) -> None:
+    """"To the dining room, follow Jane": "to" was read as politeness and the goal lost (words33)."""
+    assert frames(text, library) == want

@@ -89,6 +89,8 @@ _VERB_NEXT = frozenset(["to", "about", "mind"])
 def _politeness(s: State, i: int) -> Match | None:
     words, low = s.words, s.words[i].lower
     n = match_phrase(words, i, POLITE)
+    if low == "to" and n == 1 and _goal_said_first(s, i):
+        return None                                   # "*To the dining room,* follow Jane": where, said first
     k = i + n
     while k < len(words) and words[k].lower != "to" and is_adverb(words[k].lower):
         k += 1                                        # "would you mind *terribly* switching off ..."
@@ -135,6 +137,20 @@ def _helping(s: State, i: int) -> Match | None:
     if k >= len(words) or verb_lemma(words[k].lower) != words[k].lower or s.verb_at(k) is None:
         return None
     return Match(k - i, (merge(words, i, k - i, Tag.POLITE),))
+
+
+def _goal_said_first(s: State, i: int) -> bool:
+    """Whether "to" at ``i`` opens a phrase of where, said first and ended by a comma before a clause ("*To the
+    dining room,* follow Jane": words33), not the "to" of an infinitive ("to open the door, turn the key")."""
+    words = s.words
+    if not s.np_starts(i + 1) or s.verb_at(i + 1) is not None:
+        return False
+    for k in range(i + 2, min(len(words), i + 8)):
+        if words[k].lower == ",":
+            return s.verb_after(k + 1)
+        if words[k].lower in END_MARKS or s.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS:
+            return False
+    return False
 
 
 def _emphatic_do(s: State, i: int) -> Match | None:
