@@ -161,7 +161,8 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                     "you wanna", "why don't you", "why not", "is possible to", "is possible for you to",
                     "hurry", "hurry up", "sorry to bother you", "sorry to trouble you", "sorry to disturb you",
                     "sorry to bother you but", "sorry to trouble you but", "sorry to disturb you but",
-                    "do you mind", "how about", "what about"]))
+                    "do you mind", "how about", "what about", "second", "secondly", "third", "thirdly", "fourth",
+                    "fourthly", "lastly"]))
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
     "when you have a moment", "when you have a minute", "when you have a second", "when you have time",

@@ -2862,3 +2862,14 @@ def test_a_goal_said_first_with_its_comma(text: str, want: list[tuple[str, dict[
                                           library: Library) -> None:
     """"To the dining room, follow Jane": "to" was read as politeness and the goal lost (words33)."""
     assert frames(text, library) == want
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("First, find the kettle; second, fill it with water.", ["Find", "Place"]),
+    ("firstly go to the shed. Secondly, find a rake. Lastly, bring it to me.", ["Go", "Find", "Bring"]),
+    ("second mug please", ["Bring"]),                      # a thing's order: kept with the thing
+])
+def test_steps_counted_by_ordinals(text: str, want: list[str], library: Library) -> None:
+    assert [f for f, _ in frames(text, library)] == want
+    if text.startswith("second"):
+        assert parse_command(text, library).frames[0].elements["theme"].text == "second mug"

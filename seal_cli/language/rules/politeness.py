@@ -81,6 +81,9 @@ def _adverb_comma(s: State, i: int) -> Match | None:
     return None
 
 
+_ORDINALS = frozenset(["second", "third", "fourth"])
+"""Ordinals that say which step comes ("*second,* fill it": words33) only before a comma or a verb."""
+
 _VERB_NEXT = frozenset(["to", "about", "mind"])
 """Last words of politeness that only a verb may follow ("help me *to* ...", "how *about* closing ...", "do you
 *mind* switching ..."): with none after, the words are no politeness."""
@@ -91,6 +94,8 @@ def _politeness(s: State, i: int) -> Match | None:
     n = match_phrase(words, i, POLITE)
     if low == "to" and n == 1 and _goal_said_first(s, i):
         return None                                   # "*To the dining room,* follow Jane": where, said first
+    if low in _ORDINALS and not (i + 1 < len(words) and words[i + 1].lower == "," or s.verb_after(i + 1)):
+        return None                                   # "*second* cup, please": a thing's order, no step's
     k = i + n
     while k < len(words) and words[k].lower != "to" and is_adverb(words[k].lower):
         k += 1                                        # "would you mind *terribly* switching off ..."
