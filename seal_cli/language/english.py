@@ -173,7 +173,8 @@ POLITE_FORMULAE = frozenset([
     "if you do not mind", "if it's not too much trouble", "if it is not too much trouble", "if you wouldn't mind",
     "if you would not mind", "at your convenience", "when convenient", "when it's convenient", "no rush",
     "no hurry", "thanks in advance", "thank you in advance", "many thanks", "do me a favor", "do me a favour",
-    "quick favor", "quick favour", "a quick favor", "a quick favour", "small favor", "small favour"])
+    "quick favor", "quick favour", "a quick favor", "a quick favour", "small favor", "small favour",
+    "thanks a lot", "thanks so much", "thank you so much", "thanks very much", "thank you very much"])
 AS_ABLE = frozenset(["possible", "you can", "you could", "you're able", "you are able", "you can manage",
                      "you're able to", "you are able to", "you can do it"])
 """What ends "as fast *as you can*", "as gently *as possible*" (``politeness.AS_ABLE_RULE``): the manner said at the
@@ -367,6 +368,7 @@ in a state (an auxiliary, a subject, "leave") asks about the thing's state, as "
 the thing (``STATE_MEANS``), the state kept."""
 REQUESTS = frozenset(["i'd like", "i would like", "i should like", "i'd love", "i would love", "i'd like to have",
                       "i would like to have", "can i have", "could i have", "may i have", "can i get", "could i get",
+                      "may i get", "might i have", "might i get", "can i please get", "could i please get",
                       "can i please have", "could i please have", "may i please have", "i need", "i want",
                       "i'll have", "i will have", "i'll take", "can we have", "could we have", "we need", "we'd like",
                       "i'll need", "i will need", "we'll need", "we will need", "i'm gonna need", "we're gonna need",

@@ -350,6 +350,10 @@ _GIVEN_TO = frozenset(["me", "him", "her", "them", "us"])
 """Object pronouns that can be the person a thing is given to ("give *him* the keys and then *her* the coat")."""
 
 
+_TOWARD = ("to", "into", "onto")
+"""Prepositions of where a motion ends, which a phrase said first may open ("*To the exit,* please guide her")."""
+
+
 class State:
     """What the tagger knows at a word of one command (see the module docstring)."""
 
@@ -618,6 +622,17 @@ class State:
                 break
         return k
 
+    def goal_verb_after(self, k: int) -> bool:
+        """Whether the first verb of the library after ``k`` (politeness before it skipped) has a goal ("to the
+        exit, please *guide* her"; "to the lamp, *turn on* the light" has none: the phrase is no goal of it)."""
+        for m in range(k, min(k + 8, len(self.words))):
+            found = self.verb_at(m)
+            if found is not None:
+                return found[0] in self.lexicon.goals
+            if self.words[m].lower in END_MARKS:
+                return False
+        return False
+
     def command_resumes(self, m: int) -> bool:
         """Whether the command goes on at ``m``, inside a statement said without punctuation (words33): "and" or
         "then" and a verb of the library in its base form ("..., he's near the fence *and follow* him"), or such a
@@ -683,18 +698,21 @@ class State:
         return k - i, tuple(spans)
 
     def _place_said_first(self, i: int) -> bool:
-        """Whether a phrase of place ("from", or a preposition of where, and a noun phrase with no verb in it) starts
-        at ``i`` and a comma ends it before a clause: a phrase said first ("*From the bookshelf,* could you get me
-        the red book?"), never a remark beside the command (its place was lost)."""
+        """Whether a phrase of place ("from", "to", or a preposition of where, and a noun phrase with no verb in it)
+        starts at ``i`` and a comma ends it before a clause: a phrase said first ("*From the bookshelf,* could you get
+        me the red book?", "*To the exit,* please guide her": words33), never a remark beside the command (its place
+        was lost)."""
         words = self.words
         n = match_phrase(words, i, PREPOSITIONS)
-        if not n or PREPOSITIONS[" ".join(w.lower for w in words[i:i + n])] not in (*LOCATIVE, "from") or \
+        if not n or PREPOSITIONS[" ".join(w.lower for w in words[i:i + n])] not in (*LOCATIVE, "from", *_TOWARD) or \
                 not self.np_starts(i + n):
             return False
         for k in range(i + n, len(words)):
             low = words[k].lower
             if low == ",":                               # its last word a place the taxonomy knows: no "meantime"
-                return k > i + n and (noun_lemma(words[k - 1].lower) in self.lexicon.things or is_room_word(
+                toward = PREPOSITIONS[" ".join(w.lower for w in words[i:i + n])] in _TOWARD and \
+                    self.goal_verb_after(k + 1)        # a goal: any place, before a verb that has one
+                return k > i + n and (toward or noun_lemma(words[k - 1].lower) in self.lexicon.things or is_room_word(
                     [w.lower for w in words[i + n:k] if w.lower not in NP_OPENERS])) and self.verb_after(k + 1)
                 #   or a room's name ("*In the bedroom,* could you look for ...", words28)
             if low in END_MARKS or low in (";", "and", "then") or low in TIME_WORDS or \

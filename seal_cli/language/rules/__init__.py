@@ -154,6 +154,7 @@ INSIDE: tuple[Rule, ...] = (
     clauses.CONTACT_RELATIVE,
     clauses.STRANDED_RELATIVE,
     statements.REMARK_UNMARKED,
+    requests.FRONTED_UNMARKED,
     requests.FRONTED_END,
     statements.REMARK_AFTER,
     clauses.COMMA_RELATIVE,

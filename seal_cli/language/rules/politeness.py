@@ -146,13 +146,14 @@ def _helping(s: State, i: int) -> Match | None:
 
 def _goal_said_first(s: State, i: int) -> bool:
     """Whether "to" at ``i`` opens a phrase of where, said first and ended by a comma before a clause ("*To the
-    dining room,* follow Jane": words33), not the "to" of an infinitive ("to open the door, turn the key")."""
+    dining room,* follow Jane": words33), not the "to" of an infinitive ("to open the door, turn the key"); the
+    verb after it has a goal ("to the lamp, turn on the light" is none: refused as before, never the goal dropped)."""
     words = s.words
     if not s.np_starts(i + 1) or s.verb_at(i + 1) is not None:
         return False
     for k in range(i + 2, min(len(words), i + 8)):
         if words[k].lower == ",":
-            return s.verb_after(k + 1)
+            return s.verb_after(k + 1) and s.goal_verb_after(k + 1)
         if words[k].lower in END_MARKS or s.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS:
             return False
     return False

@@ -37,6 +37,7 @@ from seal_cli.language.english import (
     PATH_ALONE,
     PATH_MEANS,
     PLACE_MEANS,
+    POLITE,
     POSSESSIVES,
     PREPOSITIONS,
     PRONOUNS,
@@ -1262,7 +1263,7 @@ def _path_alone(s: State, i: int) -> Match | None:
     while k < len(words) and words[k].lower in ASKED_ALONE | {","}:
         k += 1
     if not (k >= len(words) or words[k].lower in END_MARKS or words[k].lower in ("and", "then", ";") and
-            s.verb_after(k + 1) or words[k - 1].lower in ASKED_ALONE and s.verb_after(k)):
+            s.verb_after(k + 1) or words[k - 1].lower in ASKED_ALONE and s.verb_after(k) and not _takes_goal(s, k)):
         return None                               # "To the kitchen, bring the cup": a phrase said first
     w = words[i]
     prep = PREPOSITIONS[" ".join(x.lower for x in words[i:i + n])]
@@ -1270,6 +1271,13 @@ def _path_alone(s: State, i: int) -> Match | None:
     verb = str(before.info) if before is not None and str(before.info) in s.lexicon.goals else PATH_MEANS
     return Match(n, (_unsaid(w.start, Tag.VERB, verb), merge(words, i, n, Tag.PREP, prep)), expect=False,
                  verb=verb, using=False)    # "put it in the fridge, and *into* the microwave": the verb again
+
+
+def _takes_goal(s: State, k: int) -> bool:
+    """Whether the verb at ``k`` is a unit with a goal ("to the exit, please *guide* the woman": the path said first
+    is its goal, words33), not a clause of its own after a path alone ("to the kitchen, please; find the cup")."""
+    found = s.verb_at(k)
+    return found is not None and found[0] in s.lexicon.goals
 
 
 def _asked_alone(s: State, i: int) -> Match | None:
@@ -1923,6 +1931,38 @@ def _asked_to_the_end(s: State, k: int) -> bool:
     return m < len(words) and words[m].lower == "?"
 
 
+_FRONTED_FIRST = frozenset([*LOCATIVE, "from", "to", "into", "onto", "out of", "off"])
+"""Prepositions that may open a phrase said before the verb with no comma after it (words33)."""
+
+
+def _fronted_unmarked(s: State, i: int) -> Match | None:
+    """A phrase of place said first with no comma after it ("*From the dresser* take the hairbrush", "*In the
+    kitchen* how many people are standing?", words33): all the clause holds so far is that phrase (a preposition
+    of place, then a noun phrase ending in a noun), and a verb of the library in its base form starts here (or a
+    question's unit: "how many"). The clause starts at the verb, as after the comma ("From the dresser, take ...")."""
+    out, words = s.out, s.words
+    if not out or out[-1].tag not in (Tag.WORD, Tag.NAME):
+        return None
+    k = len(out) - 1
+    while k >= 0 and out[k].tag in _PHRASE_TAGS and out[k].tag != Tag.PREP:
+        k -= 1
+    if k < 0 or out[k].tag != Tag.PREP or out[k].info not in _FRONTED_FIRST or \
+            k > 0 and out[k - 1].tag not in (Tag.SEP, Tag.END, Tag.POLITE) or \
+            any(w.tag == Tag.PREP for w in out[k + 1:]):
+        return None
+    found = s.verb_at(i)
+    low = words[i].lower
+    polite = match_phrase(words, i, POLITE) if found is None and low not in ("to", "and", "then") else 0
+    if polite and s.verb_after(i + polite):     # "From the shelf *could you* get me the book"
+        return Match(polite, (_unsaid(words[i].start, Tag.SEP), merge(words, i, polite, Tag.POLITE)), expect=True)
+    if found is None or not (verb_lemma(low) == low or found[1] > 1 and low == "how") or \
+            out[k].info in ("to", "into", "onto") and found[0] not in s.lexicon.goals:
+        return None                             # "to the lamp turn on the light": no goal of it, refused as before
+    unit, n, split = found
+    return Match(n, (_unsaid(words[i].start, Tag.SEP), merge(words, i, n, Tag.VERB, unit)), expect=False, verb=unit,
+                 using=False, particle=(split, unit) if split is not None else None)
+
+
 def _fronted_end(s: State, i: int) -> Match | None:
     """A comma ending a phrase said before the clause's verb ("*From the cupboard,* give me the bowl", "*On
     the table,* which object is lightest?"): the clause starts after it."""
@@ -1948,6 +1988,10 @@ FRONTED_QUESTION = Rule("phrase said before a question", _fronted_question, (
     Example("in the garage which car is the oldest?", "in the garage which car is the oldest", Tag.SAID),
 ), first_words(PREPOSITIONS) | {"of"},
     "a phrase and a comma before a question: all of it is what to tell")
+FRONTED_UNMARKED = Rule("phrase said first, no comma", _fronted_unmarked, (
+    Example("From the dresser take the hairbrush", "take", Tag.VERB),
+    Example("In the kitchen how many people are standing?", "how many", Tag.VERB),
+), lambda low: low.isalpha(), "a phrase of place said before the verb with no comma: the clause starts at the verb")
 FRONTED_END = Rule("phrase said first", _fronted_end, (
     Example("From the cupboard, give me the bowl", ",", Tag.SEP),
     Example("go to the kitchen. In there, find the sponge", ",", Tag.SEP),
