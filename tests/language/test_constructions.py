@@ -2899,3 +2899,18 @@ def test_a_phrase_of_place_said_first_without_its_comma(text: str, want: list[tu
 def test_more_ways_of_asking_and_thanking(text: str, want: list[tuple[str, dict[str, str]]],
                                           library: Library) -> None:
     assert frames(text, library) == want
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("Do you see anyone in the shed?", [("Find", {"theme": "anyone", "ground": "shed"})]),
+    ("do you see the man by the gate? greet him", [("Greet", {"theme": "man"})]),      # as before: introduces him
+    ("Is Priya in the study right now?", [("Find", {"theme": "Priya", "ground": "study"})]),
+    ("is the heater on now", [("LookAt", {"theme": "heater"})]),
+])
+def test_questions_of_what_is_seen_now(text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """"do you see X in Y?" asked last is a search (words33); a time ending a question ("right now") is no state
+    asked of its phrase ("is Priya in the study right now?" was LookAt of "Priya in the study", state "right now")."""
+    got = frames(text, library)
+    assert [f for f, _ in got] == [f for f, _ in want]
+    for (_, have), (_, expected) in zip(got, want, strict=True):
+        assert {r: have.get(r) for r in expected} == expected

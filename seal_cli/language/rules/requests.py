@@ -51,6 +51,7 @@ from seal_cli.language.english import (
     STATE_MEANS,
     STATE_PARTICLES,
     SWITCHED_MEANS,
+    TIME_WORDS,
     WH_WORDS,
     WHERE_ASKERS,
     WHERE_BE,
@@ -171,6 +172,12 @@ def _asked_alone_last(s: State, i: int) -> bool:
         not any(w.lower == "out" for w in words[i:end])
 
 
+_DO_SEEN = frozenset(["do", "does", "don't", "doesn't"])
+"""The auxiliaries of the present before a verb of perceiving: a question of what is seen now, asked last ("*do
+you see* anyone in the kitchen?": find them); said before a command it introduces what the command's pronoun
+stands for ("do you see the man by the window? greet him", ``SEEN_QUESTIONS``)."""
+
+
 def _seen_asked(s: State, i: int) -> Match | None:
     words = s.words
     auxiliaries, subjects, _ = SEEN_ASKED
@@ -178,6 +185,9 @@ def _seen_asked(s: State, i: int) -> Match | None:
         return None
     if i + 3 < len(words) and words[i].lower in auxiliaries and words[i + 1].lower in subjects:
         v = i + 2
+    elif i + 3 < len(words) and words[i].lower in _DO_SEEN and words[i + 1].lower in subjects and \
+            _asked_alone_last(s, i):
+        v = i + 2                                    # "do you see anyone in the kitchen?" ending the command (words33)
     elif s.out and s.out[-1].tag == Tag.POLITE and s.out[-1].lower in _CAN_YOU and s.verb_at(i) is None and \
             i + 1 < len(words) and _asked_alone_last(s, i):
         v = i                                        # "can you | see the cat anywhere?" (words25)
@@ -470,6 +480,9 @@ def _state_stop(s: State, k: int) -> int:
     question became a search and "on" was dropped)."""
     end = _clause_stop(s, k)
     words = s.words
+    timed = next((t for t in range(max(k + 1, end - 3), end) if match_phrase(words, t, TIME_WORDS) == end - t), None)
+    if timed is not None:
+        end = timed                              # "is Jane in the office *right now*?": a time, no state (words33)
     for p in range(k + 1, end - 1):
         if words[p].lower in _WHETHER_WHERE and s.np_starts(p + 1) and _state_from(s, k, end) is None and \
                 any(_state_from(s, q, p) is not None and words[q - 1].lower not in NP_OPENERS
@@ -1617,7 +1630,9 @@ SEEN_ASKED_RULE = Rule("have you seen", _seen_asked, (
     Example("have you seen my phone anywhere", "have you seen", Tag.VERB),
     Example("Did you notice the keys in the hall?", "Did you notice", Tag.VERB),
     Example("has anyone come across my glasses", "has anyone come across", Tag.VERB),
-), SEEN_ASKED[0] | first_words(SEEN_ASKED[2]), "'have you seen X', 'did you notice X', 'can you see X?': find X")
+    Example("Do you see anyone in the kitchen?", "Do you see", Tag.VERB),
+), SEEN_ASKED[0] | _DO_SEEN | first_words(SEEN_ASKED[2]),
+    "'have you seen X', 'did you notice X', 'can you see X?': find X")
 LEFT_ASKED_RULE = Rule("did someone leave X in a state", _left_asked, (
     Example("did I leave the stove on", "did I leave", Tag.VERB),
     Example("Has anyone left the back door open?", "open", Tag.COND),
