@@ -162,7 +162,17 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                     "hurry", "hurry up", "sorry to bother you", "sorry to trouble you", "sorry to disturb you",
                     "sorry to bother you but", "sorry to trouble you but", "sorry to disturb you but",
                     "do you mind", "how about", "what about", "second", "secondly", "third", "thirdly", "fourth",
-                    "fourthly", "lastly"]))
+                    "fourthly", "lastly", "listen",
+                    *(f"{what} {who} {wish} you to do is" for what in ("what", "all") for who in ("i", "we")
+                      for wish in ("want", "need", "'d like", "would like")),
+                    *(f"{what} i'd like you to do is" for what in ("what", "all")),
+                    "all i need is for you to", "all i want is for you to", "all we need is for you to",
+                    "i'm asking you to", "i am asking you to", "i'm telling you to", "i am telling you to",
+                    *(f"{here} what i {wish}" for here in ("here's", "here 's", "here is")
+                      for wish in ("need", "want", "need you to do", "want you to do")),
+                    "here's the task", "here 's the task",
+                    "the task is", "your task is", "the job is", "your job is", "your mission is to",
+                    "your mission is", "the plan is", "the plan is to"]))
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
     "when you have a moment", "when you have a minute", "when you have a second", "when you have time",

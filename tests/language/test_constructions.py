@@ -2914,3 +2914,20 @@ def test_questions_of_what_is_seen_now(text: str, want: list[tuple[str, dict[str
     assert [f for f, _ in got] == [f for f, _ in want]
     for (_, have), (_, expected) in zip(got, want, strict=True):
         assert {r: have.get(r) for r in expected} == expected
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("The task is: bring me a ladle from the rack.",
+     [("Bring", {"theme": "ladle", "recipient": "me", "source": "rack"})]),
+    ("Here's what I need: go to the shed and find the rake.", [("Go", {"goal": "shed"}), ("Find", {"theme": "rake"})]),
+    ("What I'd like you to do is follow Priya.", [("Follow", {"theme": "Priya"})]),
+    ("All I need is for you to shut the gate.", [("Close", {"theme": "gate"})]),
+    ("I'm asking you to escort Tomas to the van.", [("Guide", {"theme": "Tomas", "goal": "van"})]),
+    ("Robot, listen: go to the cellar.", [("Go", {"goal": "cellar"})]),
+    ("the task is done", None),                                     # no verb after: a statement, as before
+])
+def test_the_task_announced_before_it_is_said(text: str, want: list[tuple[str, dict[str, str]]] | None,
+                                              library: Library) -> None:
+    """Phrases that announce the task and then say it ("the task is: ...", "what I want you to do is ...")
+    are politeness before the verb (words33)."""
+    assert_reads(text, want, library)

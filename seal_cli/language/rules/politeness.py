@@ -81,6 +81,10 @@ def _adverb_comma(s: State, i: int) -> Match | None:
     return None
 
 
+_ANNOUNCING = frozenset(["is", "need", "want", "do"])
+"""Last words of a phrase that announces the task ("the task is", "here's what I need", "what I want you to do
+is": words33): a verb must follow (after a colon or comma), else they are no politeness ("the task is done")."""
+
 _ORDINALS = frozenset(["second", "third", "fourth"])
 """Ordinals that say which step comes ("*second,* fill it": words33) only before a comma or a verb."""
 
@@ -99,7 +103,9 @@ def _politeness(s: State, i: int) -> Match | None:
     k = i + n
     while k < len(words) and words[k].lower != "to" and is_adverb(words[k].lower):
         k += 1                                        # "would you mind *terribly* switching off ..."
-    if n > 1 and words[i + n - 1].lower in _VERB_NEXT and not s.verb_after(k):
+    if n > 2 and words[i + n - 1].lower in _ANNOUNCING and k < len(words) and words[k].lower in (":", ","):
+        k += 1                                        # "the task is*:* bring me ...", "here's what I need*:* go ..."
+    if n > 1 and words[i + n - 1].lower in _VERB_NEXT | _ANNOUNCING and not s.verb_after(k):
         return None                                   # "help me to the bathroom": "help" is the verb said (words27);
         #   "what about the dishes?": a question, no suggestion of a deed ("what about closing it": words30)
     if n and not (n == 1 and low in ("and", "then") and not s.out and not s.verb_after(i + 1) and
