@@ -2931,3 +2931,13 @@ def test_the_task_announced_before_it_is_said(text: str, want: list[tuple[str, d
     """Phrases that announce the task and then say it ("the task is: ...", "what I want you to do is ...")
     are politeness before the verb (words33)."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("Look, the gate is open. Shut it.", [("Close", {"theme": "gate"})]),
+    ("listen, could you fetch the parcel?", [("Pick", {"theme": "parcel"})]),
+    ("look in the shed", [("Find", {"ground": "shed"})]),                              # a search, as before
+])
+def test_attention_asked_before_the_command(text: str, want: list[tuple[str, dict[str, str]]],
+                                            library: Library) -> None:
+    assert frames(text, library) == want

@@ -38,6 +38,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     politeness.WHILE_HOLDING,
     fronted.FRONTED_WITH,
     politeness.ADVERB_COMMA,
+    politeness.ATTENTION,
     politeness.HELPING,
     politeness.POLITENESS,
     negatives.PROHIBITED_FIRST,

@@ -165,6 +165,21 @@ def _goal_said_first(s: State, i: int) -> bool:
     return False
 
 
+_ATTENTION = frozenset(["look", "listen"])
+"""Verbs said to catch the hearer's attention before what follows ("*Look,* the window is open. Close it.")."""
+
+
+def _attention(s: State, i: int) -> Match | None:
+    """"*Look,* the window is open. Close it.", "*listen,* can you fetch the mail?": a verb of attention and a comma
+    before a statement or a command asks for attention, no search and no looking (words33: "Look," was Find with
+    nothing sought)."""
+    words = s.words
+    if words[i].lower not in _ATTENTION or i + 2 >= len(words) or words[i + 1].lower != "," or \
+            not (s.statement_at(i + 2) or s.verb_after(i + 2)):
+        return None
+    return Match(2, (merge(words, i, 2, Tag.POLITE),))
+
+
 def _emphatic_do(s: State, i: int) -> Match | None:
     words = s.words
     if i + 1 < len(words) and "do" not in s.lexicon.units and \
@@ -341,6 +356,10 @@ POLITENESS = Rule("politeness", _politeness, (
     Example("do you mind switching the fan on", "do you mind", Tag.POLITE),
     Example("And who is in the kitchen?", "And", Tag.POLITE),
 ), None, "politeness words and phrases before the verb (english.POLITE)")
+ATTENTION = Rule("look, listen", _attention, (
+    Example("Look, the window is open. Close it.", "Look,", Tag.POLITE),
+    Example("listen, can you fetch the mail?", "listen,", Tag.POLITE),
+), _ATTENTION, "'Look, ...', 'listen, ...' before a statement or a command: attention asked, no frame")
 HELPING = Rule("help a person do", _helping, (
     Example("Help Jane find her keys", "Help Jane", Tag.POLITE),
     Example("help the guest to find a seat", "help the guest to", Tag.POLITE),
