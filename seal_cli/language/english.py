@@ -182,7 +182,7 @@ POLITE_FORMULAE = frozenset([
     "if you have time", "if you can", "if possible", "if you please", "if you would", "if you don't mind",
     "if you do not mind", "if it's not too much trouble", "if it is not too much trouble", "if you wouldn't mind",
     "if you would not mind", "at your convenience", "when convenient", "when it's convenient", "no rush",
-    "no hurry", "thanks in advance", "thank you in advance", "many thanks", "do me a favor", "do me a favour",
+    "no hurry", "many thanks", "do me a favor", "do me a favour",
     "quick favor", "quick favour", "a quick favor", "a quick favour", "small favor", "small favour",
     "thanks a lot", "thanks so much", "thank you so much", "thanks very much", "thank you very much"])
 AS_ABLE = frozenset(["possible", "you can", "you could", "you're able", "you are able", "you can manage",
@@ -195,7 +195,12 @@ AS_ABLE_NOT_MANNER = frozenset(["much", "many", "few", "little", "far"])
 mind*"): the robot's time is asked for, not a condition or a task. Only a whole clause: "if you can"
 followed by more of its clause ("if you can reach the shelf, ...") is a condition. Thanks said first ("*thanks in
 advance*: please ...") and a favour announced ("*quick favour* - grab me ...", "*do me a favour*: ...") are such
-clauses too (words33); "a quick question" is not (a question is what "ask" and "answer" take)."""
+clauses too (words33; and ``THANKS_AHEAD``); "a quick question" is not (a question is what "ask" and "answer" take)."""
+THANKS_AHEAD = ("thanks in advance", "thank you in advance")
+"""Thanks said before the request is done ("*thanks in advance*: please ..."), a formula as ``POLITE_FORMULAE``'s
+(words33). A tuple, not one of this module's tables of closed classes: ``scripts/build_lexical_units.py`` reads
+every word of those tables as a closed-class word no WordNet verb may be, and "advance" is an open word (Go's
+"advance", from WordNet, stays)."""
 SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "thanks", "thanx": "thanks",
              "u": "you", "r": "are", "ya": "you", "ur": "your", "n": "and", "im": "i'm", "ive": "i've",
              "youre": "you're",

@@ -59,6 +59,7 @@ from seal_cli.language.english import (
     STATES_DONE,
     SUBJECTS,
     SUBORDINATORS,
+    THANKS_AHEAD,
     THIRD_PERSON_SUBJECTS,
     TIME_ASKED,
     TIME_UNITS,
@@ -102,7 +103,9 @@ __all__ = ["CLOSED", "State", "longest_phrase", "match_phrase", "merge"]
 _PHRASES: dict[tuple[str, str], tuple[tuple[str, tuple[str, ...]], ...]] = {}
 """First two words → (phrase, its words) of each multiword phrase of the closed-class tables, longest first (so
 :func:`match_phrase` stops at the first that fits)."""
-for _table in (PREPOSITIONS, POLITE, POLITE_FORMULAE, SEPARATOR_WORDS, SEQUENCE_ADVERBS, NUMBERS, HERE_WORDS,
+_FORMULAE = POLITE_FORMULAE | frozenset(THANKS_AHEAD)
+"""The politeness formulae said as a clause of their own (``State.formula``)."""
+for _table in (PREPOSITIONS, POLITE, _FORMULAE, SEPARATOR_WORDS, SEQUENCE_ADVERBS, NUMBERS, HERE_WORDS,
                TIME_WORDS, SUBORDINATORS, VOCATIVES):
     for _phrase in _table:
         _parts = tuple(_phrase.split())
@@ -118,7 +121,7 @@ def first_words(phrases: Iterable[str]) -> frozenset[str]:
 
 
 SUB_FIRST = first_words(SUBORDINATORS)
-FORMULA_FIRST = first_words(POLITE_FORMULAE) | TIME_ASKED[0]
+FORMULA_FIRST = first_words(_FORMULAE) | TIME_ASKED[0]
 TIME_FIRST = first_words(TIME_WORDS)
 SEP_FIRST = first_words(SEPARATOR_WORDS)
 LEAD_FIRST = SUB_FIRST | SEP_FIRST | {",", ";", ":", "start", "begin", "finish", "end", "continue", "take", "have",
@@ -448,7 +451,7 @@ class State:
         words = self.words
         if words[i].lower not in FORMULA_FIRST:
             return 0
-        n = match_phrase(words, i, POLITE_FORMULAE) or time_asked(words, i)
+        n = match_phrase(words, i, _FORMULAE) or time_asked(words, i)
         if not n or i + n == len(words):
             return n
         nxt = words[i + n].lower
