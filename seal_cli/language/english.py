@@ -161,7 +161,18 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                     "you wanna", "why don't you", "why not", "is possible to", "is possible for you to",
                     "hurry", "hurry up", "sorry to bother you", "sorry to trouble you", "sorry to disturb you",
                     "sorry to bother you but", "sorry to trouble you but", "sorry to disturb you but",
-                    "do you mind", "how about", "what about"]))
+                    "do you mind", "how about", "what about", "second", "secondly", "third", "thirdly", "fourth",
+                    "fourthly", "lastly", "listen",
+                    *(f"{what} {who} {wish} you to do is" for what in ("what", "all") for who in ("i", "we")
+                      for wish in ("want", "need", "'d like", "would like")),
+                    *(f"{what} i'd like you to do is" for what in ("what", "all")),
+                    "all i need is for you to", "all i want is for you to", "all we need is for you to",
+                    "i'm asking you to", "i am asking you to", "i'm telling you to", "i am telling you to",
+                    *(f"{here} what i {wish}" for here in ("here's", "here 's", "here is")
+                      for wish in ("need", "want", "need you to do", "want you to do")),
+                    "here's the task", "here 's the task",
+                    "the task is", "your task is", "the job is", "your job is", "your mission is to",
+                    "your mission is", "the plan is", "the plan is to"]))
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
     "when you have a moment", "when you have a minute", "when you have a second", "when you have time",
@@ -171,7 +182,9 @@ POLITE_FORMULAE = frozenset([
     "if you have time", "if you can", "if possible", "if you please", "if you would", "if you don't mind",
     "if you do not mind", "if it's not too much trouble", "if it is not too much trouble", "if you wouldn't mind",
     "if you would not mind", "at your convenience", "when convenient", "when it's convenient", "no rush",
-    "no hurry"])
+    "no hurry", "many thanks", "do me a favor", "do me a favour",
+    "quick favor", "quick favour", "a quick favor", "a quick favour", "small favor", "small favour",
+    "thanks a lot", "thanks so much", "thank you so much", "thanks very much", "thank you very much"])
 AS_ABLE = frozenset(["possible", "you can", "you could", "you're able", "you are able", "you can manage",
                      "you're able to", "you are able to", "you can do it"])
 """What ends "as fast *as you can*", "as gently *as possible*" (``politeness.AS_ABLE_RULE``): the manner said at the
@@ -180,7 +193,14 @@ AS_ABLE_NOT_MANNER = frozenset(["much", "many", "few", "little", "far"])
 """Words between "as" and "as" that measure a thing or a way, not a manner ("bring *as many as* you can")."""
 """Politeness said as a clause of its own ("*when you get a chance*, could you ..."; "... *if you don't
 mind*"): the robot's time is asked for, not a condition or a task. Only a whole clause: "if you can"
-followed by more of its clause ("if you can reach the shelf, ...") is a condition."""
+followed by more of its clause ("if you can reach the shelf, ...") is a condition. Thanks said first ("*thanks in
+advance*: please ...") and a favour announced ("*quick favour* - grab me ...", "*do me a favour*: ...") are such
+clauses too (words33; and ``THANKS_AHEAD``); "a quick question" is not (a question is what "ask" and "answer" take)."""
+THANKS_AHEAD = ("thanks in advance", "thank you in advance")
+"""Thanks said before the request is done ("*thanks in advance*: please ..."), a formula as ``POLITE_FORMULAE``'s
+(words33). A tuple, not one of this module's tables of closed classes: ``scripts/build_lexical_units.py`` reads
+every word of those tables as a closed-class word no WordNet verb may be, and "advance" is an open word (Go's
+"advance", from WordNet, stays)."""
 SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "thanks", "thanx": "thanks",
              "u": "you", "r": "are", "ya": "you", "ur": "your", "n": "and", "im": "i'm", "ive": "i've",
              "youre": "you're",
@@ -363,6 +383,7 @@ in a state (an auxiliary, a subject, "leave") asks about the thing's state, as "
 the thing (``STATE_MEANS``), the state kept."""
 REQUESTS = frozenset(["i'd like", "i would like", "i should like", "i'd love", "i would love", "i'd like to have",
                       "i would like to have", "can i have", "could i have", "may i have", "can i get", "could i get",
+                      "may i get", "might i have", "might i get", "can i please get", "could i please get",
                       "can i please have", "could i please have", "may i please have", "i need", "i want",
                       "i'll have", "i will have", "i'll take", "can we have", "could we have", "we need", "we'd like",
                       "i'll need", "i will need", "we'll need", "we will need", "i'm gonna need", "we're gonna need",
@@ -423,9 +444,13 @@ NUMBER_OF = frozenset(["tell me the number of", "tell me the total number of", "
                        "what 's the number of", "what is the total number of", "what 's the total number of",
                        "what number of", "give me the number of", "tell me the count of", "report the number of",
                        "count the number of", "count the total number of", "find out the number of",
-                       "check the number of", "figure out the number of", "work out the number of"])
+                       "check the number of", "figure out the number of", "work out the number of",
+                       "give me a count of", "give me the count of", "get me a count of", "i want a count of",
+                       "i need a count of", "i'd like a count of", "do a count of", "take a count of",
+                       "give me a headcount of", "do a headcount of", "take a headcount of"])
 """Asking for a count by its number ("*tell me the number of* toys on the desk", "*what number of* people
-..."): it means "tell me how many ..." (``NUMBER_MEANS``, a unit of counting when the library has it)."""
+..."), or by a count asked for ("*give me a count of* the people in the lounge", "*do a headcount of* the guests":
+words33): it means "tell me how many ..." (``NUMBER_MEANS``, a unit of counting when the library has it)."""
 NUMBER_MEANS = "tell me how many"
 BEING_AT = (frozenset(["once", "when", "as soon as", "after"]), frozenset(["you're", "you are", "you 're"]),
             frozenset(["in", "at", "inside", "by", "near", "next to", "beside", "into"]))
@@ -444,10 +469,12 @@ ASKED_ALONE = frozenset(["please"])
 """"Milk from the fridge, *please*", "the remote, please": a noun phrase and "please" with no verb in the
 sentence is a request for the thing, "bring me ..." (``REQUEST_MEANS``)."""
 CHECK_WHETHER = (frozenset(["check", "see", "find out", "look and see", "go and see", "go and check", "go see",
-                            "go check"]),
+                            "go check", "figure out", "work out", "determine", "discover"]),
                  frozenset(["if", "whether"]), frozenset(["there is", "there are", "there 's", "there's"]))
 """"*See if* anyone is in the kitchen", "*check whether* there is milk in the fridge": the question whether
-it is there, asked as "find ..." (``WHERE_MEANS``), as "is anyone in the kitchen?" is."""
+it is there, asked as "find ..." (``WHERE_MEANS``), as "is anyone in the kitchen?" is. The verbs of finding
+out by reasoning ("*figure out* who is in the garage", "*work out* how many cups are left", "*determine* ...",
+"*discover* ...": words33) ask as "find out" does."""
 STATE_MEANS = "check"
 """"*Is* the fridge *open*?", "check *whether* the door is *closed*": a yes/no question about a thing's state means
 "check the fridge" (a unit of LookAt in the standard library), the state asked kept beside the frame."""

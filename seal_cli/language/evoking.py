@@ -27,7 +27,7 @@ from seal_cli.language.grounding import PARTS, PIECES, PORTIONS
 from seal_cli.language.lexicon import CommandError, Mention, Word, noun_lemma
 from seal_cli.language.morphology import is_gradable
 from seal_cli.language.reference import PLACES, Reference
-from seal_cli.language.roles import PUT_IN, ROLE_PREPOSITIONS, TO, Roles
+from seal_cli.language.roles import FROM, PUT_IN, ROLE_PREPOSITIONS, TO, Roles
 from seal_cli.language.syntax import NP, PP, Clause
 from seal_cli.language.unplaced import unplaced
 from seal_cli.language.values import Evoked, Parse, Phrase
@@ -351,11 +351,14 @@ class Evoker:
         """"*get Jane to* the kitchen", "deliver the guest to the lobby": a frame that moves a thing to a goal,
         said of a person (one object, a person, where the frame wants no person) with the goal said, is
         bringing the person there — the library's frames whose first element is a person and whose result
-        relates them to the goal (Guide's ``at(theme, goal)``), as "take" and "bring" are listed there."""
+        relates them to the goal (Guide's ``at(theme, goal)``), as "take" and "bring" are listed there. So is one
+        said of a person and where they are fetched from, no thing ("*fetch Robin from* the garden", "go get Jane
+        from the office": words33; was Bring with Robin its recipient and nothing brought)."""
         _, frame, roles, _ = best
         first = frame.elements[0] if frame.elements else None
-        if first is None or self.types.is_person(first.type) or "goal" not in roles or len(clause.objects) != 1 \
-                or self.roles.kind(clause.objects[0], None, None) != "person":
+        fetched = "source" in roles and any(isinstance(x, PP) and x.prep in FROM for x in clause.items)
+        if first is None or self.types.is_person(first.type) or "goal" not in roles and not fetched or \
+                len(clause.objects) != 1 or self.roles.kind(clause.objects[0], None, None) != "person":
             return best
         leading = [f for f in self.library.frames if f.elements and self.types.is_person(f.elements[0].type)
                    and "goal" in self.types.roles(f) and _relates_to_goal(self.types.relation(f))]

@@ -34,6 +34,7 @@ from seal_cli.language.goals import infer_goal
 from seal_cli.language.lexicon import CommandError, Lexicon, Tagger, Word, tokenize
 from seal_cli.language.morphology import in_verb_tables
 from seal_cli.language.phrasal import phrasal_verb
+from seal_cli.language.reported import merge_reported
 from seal_cli.language.rules.negatives import opens_prohibition
 from seal_cli.language.searches import drop_found_again, merge_searches
 from seal_cli.language.slicing import infer_slice
@@ -105,7 +106,7 @@ class CommandParser:
         command = Syntax(text, words, self.types).transform(tree)
         clauses = Clauses(text, self.library, self.types, lexicon.speech).passes(command)
         evoker = Evoker(text, self.library, self.types, vocabulary, words, tagger.remarks)
-        parse = drop_found_again(merge_searches(evoker.command(clauses)))
+        parse = merge_reported(drop_found_again(merge_searches(evoker.command(clauses))))
         lost = swallowed(parse, words, lexicon, self.library.taxonomy.known_classes)
         if lost:
             raise _swallowed_error(parse, lost[0])

@@ -35,7 +35,7 @@ def merge_searches(parse: Parse) -> Parse:
             merged = {**asked.elements, **{r: p for r, p in again.elements.items() if r != "theme"}}
             frames[k] = replace(asked, elements=merged)
             del frames[k + 1]
-            frames = [_renumbered(f, k + 1) for f in frames]
+            frames = [renumbered(f, k + 1) for f in frames]
         k += 1
     return replace(parse, frames=tuple(frames)) if len(frames) != len(parse.frames) else parse
 
@@ -69,7 +69,7 @@ def drop_found_again(parse: Parse) -> Parse:
                 message, text=whole, head=whole, span=(said[0], again.span[1]))},
                 span=(told.span[0], max(told.span[1], again.span[1])))
         del frames[k]
-        frames = [_renumbered(f, k) for f in frames]
+        frames = [renumbered(f, k) for f in frames]
     return replace(parse, frames=tuple(frames)) if len(frames) != len(parse.frames) else parse
 
 
@@ -84,7 +84,7 @@ def _same_theme(again: Evoked, index: int) -> bool:
     return theme is None or theme.refers_to == (index, "theme")
 
 
-def _renumbered(frame: Evoked, gone: int) -> Evoked:
+def renumbered(frame: Evoked, gone: int) -> Evoked:
     """The frame with references to the merged frame ``gone`` made to the one before it, later ones one less."""
     def moved(p: Phrase) -> Phrase:
         if p.refers_to is None or p.refers_to[0] < gone:

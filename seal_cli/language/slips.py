@@ -23,10 +23,14 @@ from seal_cli.language.morphology import in_dictionary
 
 __all__ = ["SLIP_LONGER", "SLIP_TARGETS", "function_word", "one_slip"]
 
-SLIP_TARGETS = frozenset(w for w in (*WH_WORDS, *MODALS, "please", "you") if len(w) >= 3)
+_PHRASE_WORDS = ("the", "and", "from", "with", "into", "onto", "them", "this", "that", "there")
+"""The determiners, pronouns, conjunction and prepositions of place said most in commands, whose slips people type
+("*teh* cup", "*adn* then", "*fomr* the shelf", "give *tehm* to me")."""
+SLIP_TARGETS = frozenset(w for w in (*WH_WORDS, *MODALS, "please", "you", *_PHRASE_WORDS) if len(w) >= 3)
 """The function words a slip is read back to: the question words, the modals, "please" (the words that
 open a request or a question) and "you", the subject a request put as a question names ("can *yuo* open the
-door", words25; three letters: only two swapped)."""
+door", words25; three letters: only two swapped); and the commonest words inside a command's phrases
+(``_PHRASE_WORDS``: "bring me *teh* cup *fomr* the kitchen", words33)."""
 
 SLIP_LONGER = 4
 """The fewest letters of a typed word, and of the word it is read as, when a letter was left out or typed too

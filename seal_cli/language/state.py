@@ -30,6 +30,7 @@ from seal_cli.language.english import (
     FREQUENCY_ADVERBS,
     HERE_WORDS,
     HOLDING_VERBS,
+    LET_KNOW,
     LINKING_VERBS,
     LOCATIVE,
     MODALS,
@@ -58,6 +59,7 @@ from seal_cli.language.english import (
     STATES_DONE,
     SUBJECTS,
     SUBORDINATORS,
+    THANKS_AHEAD,
     THIRD_PERSON_SUBJECTS,
     TIME_ASKED,
     TIME_UNITS,
@@ -101,7 +103,9 @@ __all__ = ["CLOSED", "State", "longest_phrase", "match_phrase", "merge"]
 _PHRASES: dict[tuple[str, str], tuple[tuple[str, tuple[str, ...]], ...]] = {}
 """First two words → (phrase, its words) of each multiword phrase of the closed-class tables, longest first (so
 :func:`match_phrase` stops at the first that fits)."""
-for _table in (PREPOSITIONS, POLITE, POLITE_FORMULAE, SEPARATOR_WORDS, SEQUENCE_ADVERBS, NUMBERS, HERE_WORDS,
+_FORMULAE = POLITE_FORMULAE | frozenset(THANKS_AHEAD)
+"""The politeness formulae said as a clause of their own (``State.formula``)."""
+for _table in (PREPOSITIONS, POLITE, _FORMULAE, SEPARATOR_WORDS, SEQUENCE_ADVERBS, NUMBERS, HERE_WORDS,
                TIME_WORDS, SUBORDINATORS, VOCATIVES):
     for _phrase in _table:
         _parts = tuple(_phrase.split())
@@ -117,7 +121,7 @@ def first_words(phrases: Iterable[str]) -> frozenset[str]:
 
 
 SUB_FIRST = first_words(SUBORDINATORS)
-FORMULA_FIRST = first_words(POLITE_FORMULAE) | TIME_ASKED[0]
+FORMULA_FIRST = first_words(_FORMULAE) | TIME_ASKED[0]
 TIME_FIRST = first_words(TIME_WORDS)
 SEP_FIRST = first_words(SEPARATOR_WORDS)
 LEAD_FIRST = SUB_FIRST | SEP_FIRST | {",", ";", ":", "start", "begin", "finish", "end", "continue", "take", "have",
@@ -349,6 +353,10 @@ _GIVEN_TO = frozenset(["me", "him", "her", "them", "us"])
 """Object pronouns that can be the person a thing is given to ("give *him* the keys and then *her* the coat")."""
 
 
+_TOWARD = ("to", "into", "onto")
+"""Prepositions of where a motion ends, which a phrase said first may open ("*To the exit,* please guide her")."""
+
+
 class State:
     """What the tagger knows at a word of one command (see the module docstring)."""
 
@@ -443,7 +451,7 @@ class State:
         words = self.words
         if words[i].lower not in FORMULA_FIRST:
             return 0
-        n = match_phrase(words, i, POLITE_FORMULAE) or time_asked(words, i)
+        n = match_phrase(words, i, _FORMULAE) or time_asked(words, i)
         if not n or i + n == len(words):
             return n
         nxt = words[i + n].lower
@@ -469,12 +477,14 @@ class State:
         """Whether a statement starts at ``i`` and where its clause ends (0: none): a subject (a pronoun,
         a contraction "it's", "we're", "i'll"; or a noun phrase: "the bus", "my son Declan", "Bogdan") and
         then a finite verb ("is", "has", "can't", "keeps", "arrives on"); a command starts with a verb's
-        base form instead. The clause ends at punctuation."""
+        base form instead. The clause ends at punctuation, or where the command goes on without it
+        (:meth:`command_resumes`: "look for Jo, *she's by the fence* and follow her")."""
         words = self.words
         if i >= len(words):
             return 0
         end = i
-        while end < len(words) and words[end].lower not in END_MARKS and words[end].lower not in (",", ";", ":"):
+        while end < len(words) and words[end].lower not in END_MARKS and words[end].lower not in (",", ";", ":") \
+                and not (end > i + 2 and self.command_resumes(end)):
             end += 1
         first = words[i].lower
         nxt = words[i + 1].lower if i + 1 < end else ""
@@ -615,6 +625,36 @@ class State:
                 break
         return k
 
+    def goal_verb_after(self, k: int) -> bool:
+        """Whether the first verb of the library after ``k`` (politeness before it skipped) has a goal ("to the
+        exit, please *guide* her"; "to the lamp, *turn on* the light" has none: the phrase is no goal of it)."""
+        for m in range(k, min(k + 8, len(self.words))):
+            found = self.verb_at(m)
+            if found is not None:
+                return found[0] in self.lexicon.goals
+            if self.words[m].lower in END_MARKS:
+                return False
+        return False
+
+    def command_resumes(self, m: int) -> bool:
+        """Whether the command goes on at ``m``, inside a statement said without punctuation (words33): "and" or
+        "then" and a verb of the library in its base form ("..., he's near the fence *and follow* him"), or such a
+        verb right after "there"/"here" and before its object ("there's someone waving there *greet* them"). A
+        statement's own verbs are finite ("she *wants* it", "they *can* find it"): no base form of a unit after
+        "and" in a statement said to the robot but the robot's next command."""
+        words = self.words
+        low = words[m].lower
+        if low in ("and", "then"):
+            k = m + 1 + (m + 1 < len(words) and words[m + 1].lower == "then")
+            return k < len(words) and self._base_unit(k)
+        return low not in CLOSED and words[m - 1].lower in ("there", "here") and self._base_unit(m) and \
+            self.np_starts(m + 1)
+
+    def _base_unit(self, k: int) -> bool:
+        """Whether a verb of the library starts at ``k`` in its base form."""
+        found = self.verb_at(k)
+        return found is not None and verb_lemma(self.words[k].lower) == self.words[k].lower
+
     def remark_unmarked(self, i: int) -> tuple[int, tuple[tuple[int, int], ...]]:
         """A statement after the request with no comma before it, started by "because"/"cos"/... or a subject
         contraction ("give the ball to Lily *cos she wants it*", "turn the radio off *it's too loud*"): how
@@ -654,23 +694,28 @@ class State:
         if spans and k < len(words) and words[k - 1].lower in (",", ";") and \
                 (words[k].lower in ("and", "then") and self.verb_after(k + 1) or self.verb_after(k)):
             return k - 1 - i, tuple(spans)  # "find Jane, *she's in the bedroom*, and tell her ...": the clause goes on
+        if spans and k < len(words) and self.command_resumes(k):
+            return k - i, tuple(spans)      # "look for Jo *she's by the fence* and follow her" (words33)
         if k < len(words) and words[k].lower not in END_MARKS or k == i + 1:
             return 0, ()
         return k - i, tuple(spans)
 
     def _place_said_first(self, i: int) -> bool:
-        """Whether a phrase of place ("from", or a preposition of where, and a noun phrase with no verb in it) starts
-        at ``i`` and a comma ends it before a clause: a phrase said first ("*From the bookshelf,* could you get me
-        the red book?"), never a remark beside the command (its place was lost)."""
+        """Whether a phrase of place ("from", "to", or a preposition of where, and a noun phrase with no verb in it)
+        starts at ``i`` and a comma ends it before a clause: a phrase said first ("*From the bookshelf,* could you get
+        me the red book?", "*To the exit,* please guide her": words33), never a remark beside the command (its place
+        was lost)."""
         words = self.words
         n = match_phrase(words, i, PREPOSITIONS)
-        if not n or PREPOSITIONS[" ".join(w.lower for w in words[i:i + n])] not in (*LOCATIVE, "from") or \
+        if not n or PREPOSITIONS[" ".join(w.lower for w in words[i:i + n])] not in (*LOCATIVE, "from", *_TOWARD) or \
                 not self.np_starts(i + n):
             return False
         for k in range(i + n, len(words)):
             low = words[k].lower
             if low == ",":                               # its last word a place the taxonomy knows: no "meantime"
-                return k > i + n and (noun_lemma(words[k - 1].lower) in self.lexicon.things or is_room_word(
+                toward = PREPOSITIONS[" ".join(w.lower for w in words[i:i + n])] in _TOWARD and \
+                    self.goal_verb_after(k + 1)        # a goal: any place, before a verb that has one
+                return k > i + n and (toward or noun_lemma(words[k - 1].lower) in self.lexicon.things or is_room_word(
                     [w.lower for w in words[i + n:k] if w.lower not in NP_OPENERS])) and self.verb_after(k + 1)
                 #   or a room's name ("*In the bedroom,* could you look for ...", words28)
             if low in END_MARKS or low in (";", "and", "then") or low in TIME_WORDS or \
@@ -995,12 +1040,19 @@ class State:
                 m = k + n
                 while m < len(words) and match_phrase(words, m, SEPARATOR_WORDS):
                     m += match_phrase(words, m, SEPARATOR_WORDS)
-                if m < len(words) and (self.verb_at(m) is not None or self.verb_after(m)):
+                if m < len(words) and (self.verb_at(m) is not None or self.verb_after(m) or self._let_know(m)):
                     break
             k += 1
         while k > j and words[k - 1].lower in (",", ";", ":"):
             k -= 1                                           # a comma before the next clause is no speech
         return k
+
+    def _let_know(self, m: int) -> bool:
+        """Whether "let X know" starts at ``m`` ("... *and let me know*", "and let the guests know"): a clause of
+        telling, which no verb of the library starts (words33)."""
+        words = self.words
+        return words[m].lower == LET_KNOW[0] and \
+            any(words[k].lower == LET_KNOW[1] for k in range(m + 2, min(m + 5, len(words))))
 
     def _subordinate_at(self, i: int) -> tuple[str, int, str] | None:
         """A subordinate clause at ``i``: ("clause", end, subordinator) for one of the robot's own

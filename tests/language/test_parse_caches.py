@@ -33,7 +33,8 @@ DATA = Path(__file__).parents[1] / "data"
 SUITES = Path(__file__).parents[2] / "seal_cli" / "bench" / "suites"
 
 _MULTIWORD: dict[str, list[str]] = {}
-for _table in (english.PREPOSITIONS, english.POLITE, english.POLITE_FORMULAE, english.SEPARATOR_WORDS,
+for _table in (english.PREPOSITIONS, english.POLITE, english.POLITE_FORMULAE, english.THANKS_AHEAD,
+               english.SEPARATOR_WORDS,
                english.SEQUENCE_ADVERBS, english.NUMBERS, english.HERE_WORDS, english.TIME_WORDS,
                english.SUBORDINATORS, english.VOCATIVES):
     for _phrase in _table:

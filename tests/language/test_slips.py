@@ -13,6 +13,8 @@ from seal_cli.language.tokens import tokenize
     ("whch", "which"), ("shoud", "should"), ("pleae", "please"),                   # one left out
     ("whhere", "where"), ("pleasse", "please"),                                     # one too many
     ("cna", "can"),                                                                 # three letters: a swap
+    ("teh", "the"), ("adn", "and"), ("frmo", "from"), ("wiht", "with"),            # words of phrases (words33)
+    ("tehm", "them"), ("taht", "that"),
 ])
 def test_one_slip_from_one_function_word(typed: str, meant: str) -> None:
     assert function_word(typed) == meant
@@ -24,6 +26,7 @@ def test_one_slip_from_one_function_word(typed: str, meant: str) -> None:
     "hwo",                               # one swap from "who" and from "how": which one is unknown
     "maya", "mary", "wat",               # a letter more or less than a three-letter word ("may", "what")
     "jamie", "cora", "sam", "ab",        # names, too short
+    "form", "fomr", "thier",             # a word itself; two slips from "from"; "their" is no target
 ])
 def test_no_slip_read(typed: str) -> None:
     assert function_word(typed) is None

@@ -282,10 +282,18 @@ def _polite_frame(s: State, i: int) -> Match | None:
     for j in range(i, min(len(words) - 2, i + 12)):  # "It would be great if you could close ..."
         if words[j].lower in (",", ";") or words[j].lower in END_MARKS:
             break
-        if words[j].lower == "you" and words[j + 1].lower in ("could", "can", "would", "will", "might") \
-                and s.verb_after(j + 2):
-            return s.emit(i, j + 2 - i, Tag.POLITE)
+        n = 1 if words[j + 1].lower in _YOU_MODALS else 2 if j + 2 < len(words) and \
+            (words[j + 1].lower, words[j + 2].lower) in _YOU_MODALS_TO else 0
+        if words[j].lower == "you" and n and s.verb_after(j + 1 + n):
+            return s.emit(i, j + 1 + n - i, Tag.POLITE)
     return None
+
+
+_YOU_MODALS = frozenset(["could", "can", "would", "will", "might", "should", "must"])
+"""The modals that end a polite frame after "you" ("if you *could*", "I think you *should*": words33 added
+"should" and "must", the hedged advice of "I think you should follow her")."""
+_YOU_MODALS_TO = frozenset([("need", "to"), ("have", "to"), ("ought", "to")])
+"""Two-word modals that end a polite frame after "you" ("I guess you *need to* ...", words33)."""
 
 
 COMMA_AFTER_POLITENESS = Rule("comma after politeness", _comma_after_politeness, (
@@ -373,4 +381,6 @@ WATCHING_RULE = Rule("keep an eye on", _watching, (
 ), frozenset(["keep"]), "'keep an eye on X', 'keep watch over X': check on X (LookAt)")
 POLITE_FRAME = Rule("if you could", _polite_frame, (
     Example("It would be great if you could close the door", "It would be great if you could", Tag.POLITE),
+    Example("I think you should follow her", "I think you should", Tag.POLITE),
+    Example("I suppose you need to wash the cup", "I suppose you need to", Tag.POLITE),
 ), None, "a polite frame ending in 'you could' before the verb")

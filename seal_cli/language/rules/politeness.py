@@ -7,12 +7,14 @@ from seal_cli.language.english import (
     AS_ABLE,
     AS_ABLE_NOT_MANNER,
     ASKED_AGAIN,
+    DETERMINERS,
     END_MARKS,
     GREETINGS,
     NP_OPENERS,
     NUMBER_MEANS,
     POLITE,
     QUESTION_MEANS,
+    QUESTION_WORDS,
     RELAYED_OBLIGATION,
     RELAYING,
     SUBJECTS,
@@ -79,6 +81,13 @@ def _adverb_comma(s: State, i: int) -> Match | None:
     return None
 
 
+_ANNOUNCING = frozenset(["is", "need", "want", "do"])
+"""Last words of a phrase that announces the task ("the task is", "here's what I need", "what I want you to do
+is": words33): a verb must follow (after a colon or comma), else they are no politeness ("the task is done")."""
+
+_ORDINALS = frozenset(["second", "third", "fourth"])
+"""Ordinals that say which step comes ("*second,* fill it": words33) only before a comma or a verb."""
+
 _VERB_NEXT = frozenset(["to", "about", "mind"])
 """Last words of politeness that only a verb may follow ("help me *to* ...", "how *about* closing ...", "do you
 *mind* switching ..."): with none after, the words are no politeness."""
@@ -87,16 +96,88 @@ _VERB_NEXT = frozenset(["to", "about", "mind"])
 def _politeness(s: State, i: int) -> Match | None:
     words, low = s.words, s.words[i].lower
     n = match_phrase(words, i, POLITE)
+    if low == "to" and n == 1 and _goal_said_first(s, i):
+        return None                                   # "*To the dining room,* follow Jane": where, said first
+    if low in _ORDINALS and not (i + 1 < len(words) and words[i + 1].lower == "," or s.verb_after(i + 1)):
+        return None                                   # "*second* cup, please": a thing's order, no step's
     k = i + n
     while k < len(words) and words[k].lower != "to" and is_adverb(words[k].lower):
         k += 1                                        # "would you mind *terribly* switching off ..."
-    if n > 1 and words[i + n - 1].lower in _VERB_NEXT and not s.verb_after(k):
+    if n > 2 and words[i + n - 1].lower in _ANNOUNCING and k < len(words) and words[k].lower in (":", ","):
+        k += 1                                        # "the task is*:* bring me ...", "here's what I need*:* go ..."
+    if n > 1 and words[i + n - 1].lower in _VERB_NEXT | _ANNOUNCING and not s.verb_after(k):
         return None                                   # "help me to the bathroom": "help" is the verb said (words27);
         #   "what about the dishes?": a question, no suggestion of a deed ("what about closing it": words30)
-    if n and not (n == 1 and low in ("and", "then") and not s.out and not s.verb_after(i + 1)) and (
+    if n and not (n == 1 and low in ("and", "then") and not s.out and not s.verb_after(i + 1) and
+                  not _question_next(s, i + 1)) and (
             low in ("to", "and", "then") or s.verb_after(i + n) or i + n >= len(words) or not s.verb_at(i)):
         return Match(n, (merge(words, i, n, Tag.POLITE),))
     return None
+
+
+_QUESTION_FIRST = QUESTION_WORDS | {"where", "where's", "whereabouts", "how"}
+"""Words that open a question the robot answers, after which a first "and" or "then" only joins it to what was
+said before ("*And* who is in the kitchen?", "*then* where is the cup?": words33)."""
+
+
+def _question_next(s: State, k: int) -> bool:
+    """Whether a question the robot answers starts at ``k``."""
+    return k < len(s.words) and s.words[k].lower in _QUESTION_FIRST
+
+
+_HELPED = frozenset(["him", "her", "them"])
+"""Pronouns of the person helped in "help *her* find ..." ("help me/us" are politeness of ``POLITE``)."""
+
+
+def _helping(s: State, i: int) -> Match | None:
+    """"*Help Jane* find her keys", "help him carry the box to the car", "help the guest to find a seat": helping a
+    person do something is doing it (words33), as "help me find my keys" is: "help", the person (a pronoun, one
+    name, or a person's noun the taxonomy knows with its determiner), maybe "to", then a verb of the library in its
+    base form. "help her to the car" has no verb after the person: "help" is the verb said there."""
+    words = s.words
+    if words[i].lower != "help" or i + 2 >= len(words):
+        return None
+    k = i + 1
+    if words[k].lower in DETERMINERS and k + 1 < len(words):
+        k += 1
+    person = words[k].lower
+    if not (person in _HELPED and k == i + 1 or capitalised(words[k]) and k == i + 1 or
+            (noun_lemma(person) or person) in s.lexicon.people):
+        return None
+    k += 1 + (k + 1 < len(words) and words[k + 1].lower == "to")
+    if k >= len(words) or verb_lemma(words[k].lower) != words[k].lower or s.verb_at(k) is None:
+        return None
+    return Match(k - i, (merge(words, i, k - i, Tag.POLITE),))
+
+
+def _goal_said_first(s: State, i: int) -> bool:
+    """Whether "to" at ``i`` opens a phrase of where, said first and ended by a comma before a clause ("*To the
+    dining room,* follow Jane": words33), not the "to" of an infinitive ("to open the door, turn the key"); the
+    verb after it has a goal ("to the lamp, turn on the light" is none: refused as before, never the goal dropped)."""
+    words = s.words
+    if not s.np_starts(i + 1) or s.verb_at(i + 1) is not None:
+        return False
+    for k in range(i + 2, min(len(words), i + 8)):
+        if words[k].lower == ",":
+            return s.verb_after(k + 1) and s.goal_verb_after(k + 1)
+        if words[k].lower in END_MARKS or s.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS:
+            return False
+    return False
+
+
+_ATTENTION = frozenset(["look", "listen"])
+"""Verbs said to catch the hearer's attention before what follows ("*Look,* the window is open. Close it.")."""
+
+
+def _attention(s: State, i: int) -> Match | None:
+    """"*Look,* the window is open. Close it.", "*listen,* can you fetch the mail?": a verb of attention and a comma
+    before a statement or a command asks for attention, no search and no looking (words33: "Look," was Find with
+    nothing sought)."""
+    words = s.words
+    if words[i].lower not in _ATTENTION or i + 2 >= len(words) or words[i + 1].lower != "," or \
+            not (s.statement_at(i + 2) or s.verb_after(i + 2)):
+        return None
+    return Match(2, (merge(words, i, 2, Tag.POLITE),))
 
 
 def _emphatic_do(s: State, i: int) -> Match | None:
@@ -273,7 +354,16 @@ POLITENESS = Rule("politeness", _politeness, (
     Example("robot, go to the kitchen", "robot,", Tag.POLITE),
     Example("how about closing the window", "how about", Tag.POLITE),
     Example("do you mind switching the fan on", "do you mind", Tag.POLITE),
+    Example("And who is in the kitchen?", "And", Tag.POLITE),
 ), None, "politeness words and phrases before the verb (english.POLITE)")
+ATTENTION = Rule("look, listen", _attention, (
+    Example("Look, the window is open. Close it.", "Look,", Tag.POLITE),
+    Example("listen, can you fetch the mail?", "listen,", Tag.POLITE),
+), _ATTENTION, "'Look, ...', 'listen, ...' before a statement or a command: attention asked, no frame")
+HELPING = Rule("help a person do", _helping, (
+    Example("Help Jane find her keys", "Help Jane", Tag.POLITE),
+    Example("help the guest to find a seat", "help the guest to", Tag.POLITE),
+), frozenset(["help"]), "'help Jane find X': find X (the robot does what it helps with)")
 EMPHATIC_DO = Rule("emphatic do", _emphatic_do, (
     Example("Do take his coat", "Do", Tag.POLITE),
 ), frozenset(["do"]), "'do' before a verb's base form")

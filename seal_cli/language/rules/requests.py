@@ -26,6 +26,7 @@ from seal_cli.language.english import (
     LEFT_ASKED,
     LET_KNOW,
     LOCATED,
+    LOCATIVE,
     NP_OPENERS,
     NUMBER_MEANS,
     NUMBER_OF,
@@ -36,6 +37,7 @@ from seal_cli.language.english import (
     PATH_ALONE,
     PATH_MEANS,
     PLACE_MEANS,
+    POLITE,
     POSSESSIVES,
     PREPOSITIONS,
     PRONOUNS,
@@ -49,6 +51,7 @@ from seal_cli.language.english import (
     STATE_MEANS,
     STATE_PARTICLES,
     SWITCHED_MEANS,
+    TIME_WORDS,
     WH_WORDS,
     WHERE_ASKERS,
     WHERE_BE,
@@ -57,6 +60,7 @@ from seal_cli.language.english import (
     WHERE_QUESTIONS,
     WISHED_PLACED,
     WISHED_PLACES,
+    is_room_word,
 )
 from seal_cli.language.morphology import (
     gerund_lemma,
@@ -168,6 +172,12 @@ def _asked_alone_last(s: State, i: int) -> bool:
         not any(w.lower == "out" for w in words[i:end])
 
 
+_DO_SEEN = frozenset(["do", "does", "don't", "doesn't"])
+"""The auxiliaries of the present before a verb of perceiving: a question of what is seen now, asked last ("*do
+you see* anyone in the kitchen?": find them); said before a command it introduces what the command's pronoun
+stands for ("do you see the man by the window? greet him", ``SEEN_QUESTIONS``)."""
+
+
 def _seen_asked(s: State, i: int) -> Match | None:
     words = s.words
     auxiliaries, subjects, _ = SEEN_ASKED
@@ -175,6 +185,9 @@ def _seen_asked(s: State, i: int) -> Match | None:
         return None
     if i + 3 < len(words) and words[i].lower in auxiliaries and words[i + 1].lower in subjects:
         v = i + 2
+    elif i + 3 < len(words) and words[i].lower in _DO_SEEN and words[i + 1].lower in subjects and \
+            _asked_alone_last(s, i):
+        v = i + 2                                    # "do you see anyone in the kitchen?" ending the command (words33)
     elif s.out and s.out[-1].tag == Tag.POLITE and s.out[-1].lower in _CAN_YOU and s.verb_at(i) is None and \
             i + 1 < len(words) and _asked_alone_last(s, i):
         v = i                                        # "can you | see the cat anywhere?" (words25)
@@ -302,6 +315,8 @@ def _place_asked(s: State, j: int) -> bool:
         return False
     for k in range(j + 1, len(words)):
         low = words[k].lower
+        if low in END_MARKS and _place_fronted(s) and any(_progressive(s, j, m) for m in range(j + 1, k)):
+            return True                           # "In the bedroom, is anyone lying down?" (words33)
         if low in END_MARKS or low in (",", ";", "and", "then") or s.verb_at(k) is not None and \
                 words[k - 1].lower not in NP_OPENERS and not _progressive(s, j, k):
             return False                          # a verb ("the *pan*": a noun after a determiner)
@@ -312,6 +327,22 @@ def _place_asked(s: State, j: int) -> bool:
                 k += 1                            # "is mum home *yet*?"
             return k + 1 == len(words) or words[k + 1].lower in END_MARKS
     return False
+
+
+def _place_fronted(s: State) -> bool:
+    """Whether the words tagged so far end in a phrase of place said first and its comma ("*In the bedroom,* is
+    anyone lying down?"): the place a question asks about, said before it (words33)."""
+    out = s.out
+    if not out or out[-1].lower != ",":
+        return False
+    k = len(out) - 2
+    while k > 0 and out[k].tag in _PHRASE_TAGS and out[k].tag != Tag.PREP:
+        k -= 1
+    if k < 0 or out[k].tag != Tag.PREP or out[k].info not in LOCATIVE or k >= len(out) - 2 or \
+            k > 0 and out[k - 1].tag not in (Tag.SEP, Tag.END, Tag.POLITE):
+        return False
+    last = out[-2].lower                          # a place: a thing the taxonomy knows, or a room ("the meantime": no)
+    return noun_lemma(last) in s.lexicon.things or is_room_word([w.lower for w in out[k + 1:-1]])
 
 
 def _progressive(s: State, j: int, k: int) -> bool:
@@ -449,6 +480,9 @@ def _state_stop(s: State, k: int) -> int:
     question became a search and "on" was dropped)."""
     end = _clause_stop(s, k)
     words = s.words
+    timed = next((t for t in range(max(k + 1, end - 3), end) if match_phrase(words, t, TIME_WORDS) == end - t), None)
+    if timed is not None:
+        end = timed                              # "is Jane in the office *right now*?": a time, no state (words33)
     for p in range(k + 1, end - 1):
         if words[p].lower in _WHETHER_WHERE and s.np_starts(p + 1) and _state_from(s, k, end) is None and \
                 any(_state_from(s, q, p) is not None and words[q - 1].lower not in NP_OPENERS
@@ -660,6 +694,27 @@ def _found_out(s: State, i: int) -> Match | None:
                  expect=False, verb=QUESTION_MEANS, using=False)
 
 
+_LEARNED = frozenset(["find out", "figure out", "work out"])
+"""Verbs of learning a fact, which never find a thing ("*find out* the time", words33)."""
+
+
+def _found_out_thing(s: State, i: int) -> Match | None:
+    """"*Find out* the name of the person at the door", "figure out the time": to find out a thing is to learn it,
+    not to search for it (words33): what is learnt is told (``QUESTION_MEANS``), the phrase kept whole as what to
+    tell, as "find out who is at the door" is. A question word, "if"/"whether" or "how" after the verb are the rules
+    before this one's."""
+    words = s.words
+    n = _phrase(s, i, _LEARNED)
+    if not n or QUESTION_MEANS not in s.lexicon.units or not s.np_starts(i + n) or \
+            words[i + n].lower in FOUND_OUT or words[i + n].lower in WH_WORDS:
+        return None
+    end = s.speech_end(i + n)
+    last = words[i + n - 1].end
+    return Match(end - i, (Word(s.text_of(words[i].start, last), words[i].start, last, Tag.VERB, QUESTION_MEANS),
+                           _unsaid(last, Tag.PRON, None, _SPEAKER), s.emit(i + n, end - i - n, Tag.SAID).words[0]),
+                 expect=False, verb=QUESTION_MEANS, using=False)
+
+
 _WHERE_SAID = HERE_WORDS | frozenset(["home", "there", "around", "back", "out", "in", "upstairs", "downstairs",
                                       "inside", "outside", "away"])
 ASK_MEANS = "ask"
@@ -800,6 +855,28 @@ def _request(s: State, i: int) -> Match | None:
                      _unsaid(end, Tag.PRON, None, _SPEAKER)), expect=False, verb=REQUEST_MEANS, using=False)
 
 
+_ASKED_FOR = frozenset(["can", "could", "may", "might"])
+_HAVING = frozenset(["have", "get"])
+
+
+def _request_for(s: State, i: int) -> Match | None:
+    """"*Can* Jane *have* the salt?", "could Robin get a towel from the bathroom?": asking whether another person may
+    have a thing asks the robot to bring it to them (words33), as "can I have X" brings it to the speaker: a modal,
+    one name or a person's noun the taxonomy knows (the person), "have"/"get" and a phrase. The modal is the verb
+    (``REQUEST_MEANS``), the person its recipient, "have" dropped. "can you get ...", "can I have ..." are other
+    rules'."""
+    words = s.words
+    if i + 3 >= len(words) or words[i].lower not in _ASKED_FOR or words[i + 2].lower not in _HAVING or \
+            REQUEST_MEANS not in s.lexicon.units or not s.np_starts(i + 3) or s.verb_at(i + 3) is not None:
+        return None
+    person = words[i + 1]
+    low = person.lower
+    if low in CLOSED or not low.isalpha() or not (capitalised(person) or low in s.lexicon.people):
+        return None
+    return Match(3, (words[i].tagged(Tag.VERB, REQUEST_MEANS), person.tagged(Tag.NAME)), expect=False,
+                 verb=REQUEST_MEANS, using=False)
+
+
 def _wished_placed(s: State, i: int) -> Match | None:
     """"*I want* the mug on the shelf": a wish for a thing to be somewhere is putting it there (``PLACE_MEANS``):
     a phrase, then one preposition of place (``WISHED_PLACES``) whose phrase ends the sentence, no verb
@@ -890,6 +967,34 @@ def _wished_state(s: State, i: int) -> Match | None:
         if found is not None and found.particle and found.particle[0] == end - 1:
             return found
     return _state_after(s, i, n)
+
+
+def _wished_done(s: State, i: int) -> Match | None:
+    """"*I want* the apple *brought* to me", "I'd like the plate *put* on the table", "I need the towel *taken* to the
+    bathroom": a wish for a verb of the library to be done to a thing (a phrase, then the verb's past participle
+    and where the thing goes) is that verb (words33), as "I'd like the blinds closed" is closing them: the wish is
+    the verb, the participle its split particle. A participle that opens the phrase ("I'd like the *baked* potato")
+    or follows a verb of being is none."""
+    words = s.words
+    n = _phrase(s, i, _WISHED_STATES)
+    k = i + n
+    if not n or not s.np_starts(k) or words[k].lower in ("you", "to") or s.verb_at(k) is not None:
+        return None
+    for q in range(k + 1, _sentence_end(s, k) - 1):
+        low = words[q].lower
+        if low in (",", ";", "and", "then") or low in BE_WORDS or low in FINITE:
+            return None
+        unit = verb_lemma(low)
+        if unit is None or low not in participles(unit) or \
+                (unit,) not in s.lexicon.units.get(unit, ()) or words[q - 1].lower in NP_OPENERS or \
+                words[q - 1].lower in PREPOSITIONS:
+            continue
+        if words[q + 1].lower not in PREPOSITIONS or not s.np_starts(q + 1 + match_phrase(words, q + 1, PREPOSITIONS)):
+            return None
+        start, stop = words[i].start, words[k - 1].end
+        return Match(n, (Word(s.text_of(start, stop), start, stop, Tag.VERB, unit),), expect=False, verb=unit,
+                     using=False, particle=(q, unit))
+    return None
 
 
 def _resultative(s: State, i: int) -> Match | None:
@@ -1171,7 +1276,7 @@ def _path_alone(s: State, i: int) -> Match | None:
     while k < len(words) and words[k].lower in ASKED_ALONE | {","}:
         k += 1
     if not (k >= len(words) or words[k].lower in END_MARKS or words[k].lower in ("and", "then", ";") and
-            s.verb_after(k + 1) or words[k - 1].lower in ASKED_ALONE and s.verb_after(k)):
+            s.verb_after(k + 1) or words[k - 1].lower in ASKED_ALONE and s.verb_after(k) and not _takes_goal(s, k)):
         return None                               # "To the kitchen, bring the cup": a phrase said first
     w = words[i]
     prep = PREPOSITIONS[" ".join(x.lower for x in words[i:i + n])]
@@ -1179,6 +1284,13 @@ def _path_alone(s: State, i: int) -> Match | None:
     verb = str(before.info) if before is not None and str(before.info) in s.lexicon.goals else PATH_MEANS
     return Match(n, (_unsaid(w.start, Tag.VERB, verb), merge(words, i, n, Tag.PREP, prep)), expect=False,
                  verb=verb, using=False)    # "put it in the fridge, and *into* the microwave": the verb again
+
+
+def _takes_goal(s: State, k: int) -> bool:
+    """Whether the verb at ``k`` is a unit with a goal ("to the exit, please *guide* the woman": the path said first
+    is its goal, words33), not a clause of its own after a path alone ("to the kitchen, please; find the cup")."""
+    found = s.verb_at(k)
+    return found is not None and found[0] in s.lexicon.goals
 
 
 def _asked_alone(s: State, i: int) -> Match | None:
@@ -1518,7 +1630,9 @@ SEEN_ASKED_RULE = Rule("have you seen", _seen_asked, (
     Example("have you seen my phone anywhere", "have you seen", Tag.VERB),
     Example("Did you notice the keys in the hall?", "Did you notice", Tag.VERB),
     Example("has anyone come across my glasses", "has anyone come across", Tag.VERB),
-), SEEN_ASKED[0] | first_words(SEEN_ASKED[2]), "'have you seen X', 'did you notice X', 'can you see X?': find X")
+    Example("Do you see anyone in the kitchen?", "Do you see", Tag.VERB),
+), SEEN_ASKED[0] | _DO_SEEN | first_words(SEEN_ASKED[2]),
+    "'have you seen X', 'did you notice X', 'can you see X?': find X")
 LEFT_ASKED_RULE = Rule("did someone leave X in a state", _left_asked, (
     Example("did I leave the stove on", "did I leave", Tag.VERB),
     Example("Has anyone left the back door open?", "open", Tag.COND),
@@ -1540,6 +1654,11 @@ ANY_ASKED = Rule("any X somewhere, asked", _any_asked, (
     Example("any spoons in the drawer?", "any", Tag.DET),
     Example("someone waiting at the door?", "someone", Tag.PRON),
 ), _ANY_ASKED, "'anyone in the bathroom?', 'any milk in the fridge?': find them there ('is there' unsaid)")
+WISHED_DONE = Rule("a wish for a thing done", _wished_done, (
+    Example("I want the apple brought to me", "I want", Tag.VERB),
+    Example("I'd like the plate put on the table", "put", Tag.PARTICLE),
+    Example("we need the chairs moved to the porch", "we need", Tag.VERB),
+), first_words(_WISHED_STATES), "'I want X brought to me', 'I'd like X put on Y': bring X to me, put X on Y")
 WISHED_STATE = Rule("a wish for a thing's state", _wished_state, (
     Example("I'd like the blinds closed", "I'd like", Tag.VERB),
     Example("I want the lights off, please", "off", Tag.PARTICLE),
@@ -1598,6 +1717,10 @@ REQUEST = Rule("wish for a thing", _request, (
     Example("is there any chance of a blanket?", "is there any chance of", Tag.VERB),
     Example("any chance I could have a cushion", "any chance I could have", Tag.VERB),
 ), _REQUEST_FIRST, "'I'd like X', 'can I have X', 'I need X': bring X to the speaker")
+REQUEST_FOR = Rule("may a person have a thing", _request_for, (
+    Example("Can Jane have the salt?", "Jane", Tag.NAME),
+    Example("could Robin get a towel from the bathroom?", "could", Tag.VERB),
+), _ASKED_FOR, "'can Jane have X?', 'could Robin get X?': bring X to the person")
 SWITCHED_ALONE = Rule("a thing switched on or off", _switched_alone, (
     Example("Lights off in the hall.", "Lights", Tag.WORD),
     Example("the porch lamp on, please", "on", Tag.PARTICLE),
@@ -1657,6 +1780,10 @@ FOUND_OUT_RULE = Rule("find out who", _found_out, (
     Example("Find out who is in the hall.", "who is in the hall", Tag.SAID),
     Example("go to the hall and see who is there", "see", Tag.VERB),
 ), first_words(CHECK_WHETHER[0]), "'find out who ...', 'check what ...': tell me who ...")
+FOUND_OUT_THING = Rule("find out a thing", _found_out_thing, (
+    Example("find out the name of the person at the door", "the name of the person at the door", Tag.SAID),
+    Example("figure out the time and tell Jo", "the time", Tag.SAID),
+), first_words(_LEARNED), "'find out the name of X': tell the name of X (what is learnt is told, not searched for)")
 ASKED_OF_PERSON = Rule("found out by asking", _asked_of_person, (
     Example("find out if anna wants coffee", "find out", Tag.VERB),
     Example("check whether the guest is staying for dinner", "the guest is staying for dinner", Tag.SAID),
@@ -1794,14 +1921,61 @@ def _fronted_question(s: State, i: int) -> Match | None:
     if QUESTION_MEANS not in s.lexicon.units or not match_phrase(words, i, PREPOSITIONS) and words[i].lower != "of":
         return None
     k = i + 1
-    while k < len(words) and words[k].lower not in END_MARKS and words[k].lower not in (",", ";"):
+    while k < len(words) and words[k].lower not in END_MARKS and words[k].lower not in (",", ";") and \
+            not (k > i + 2 and words[k].lower in QUESTION_WORDS and _asked_to_the_end(s, k)):
         k += 1
-    if k + 1 >= len(words) or words[k].lower != "," or words[k + 1].lower not in QUESTION_WORDS or \
-            _question(s, k + 1) is None:
+    asked = k + (words[k].lower == ",") if k < len(words) else k      # the comma may be left out (words33)
+    if asked >= len(words) or words[asked].lower not in QUESTION_WORDS or _question(s, asked) is None:
         return None
-    end = s.speech_end(k + 1)
+    end = s.speech_end(asked)
     return Match(end - i, (_unsaid(words[i].start, Tag.VERB, QUESTION_MEANS), s.emit(i, end - i, Tag.SAID).words[0]),
                  expect=False, verb=QUESTION_MEANS, using=False)
+
+
+def _asked_to_the_end(s: State, k: int) -> bool:
+    """Whether a question that starts at ``k`` is all the rest of its sentence and asks ("in the hall *which person
+    is standing?*"): a question mark ends it, and no verb of the library in its base form is said in it (a command
+    the question word only opened a relative clause before: "in the box which is red put the cup")."""
+    words = s.words
+    m = k + 1
+    while m < len(words) and words[m].lower not in END_MARKS:
+        low = words[m].lower
+        if low in (",", ";") or s.verb_at(m) is not None and verb_lemma(low) == low:
+            return False
+        m += 1
+    return m < len(words) and words[m].lower == "?"
+
+
+_FRONTED_FIRST = frozenset([*LOCATIVE, "from", "to", "into", "onto", "out of", "off"])
+"""Prepositions that may open a phrase said before the verb with no comma after it (words33)."""
+
+
+def _fronted_unmarked(s: State, i: int) -> Match | None:
+    """A phrase of place said first with no comma after it ("*From the dresser* take the hairbrush", "*In the
+    kitchen* how many people are standing?", words33): all the clause holds so far is that phrase (a preposition
+    of place, then a noun phrase ending in a noun), and a verb of the library in its base form starts here (or a
+    question's unit: "how many"). The clause starts at the verb, as after the comma ("From the dresser, take ...")."""
+    out, words = s.out, s.words
+    if not out or out[-1].tag not in (Tag.WORD, Tag.NAME):
+        return None
+    k = len(out) - 1
+    while k >= 0 and out[k].tag in _PHRASE_TAGS and out[k].tag != Tag.PREP:
+        k -= 1
+    if k < 0 or out[k].tag != Tag.PREP or out[k].info not in _FRONTED_FIRST or \
+            k > 0 and out[k - 1].tag not in (Tag.SEP, Tag.END, Tag.POLITE) or \
+            any(w.tag == Tag.PREP for w in out[k + 1:]):
+        return None
+    found = s.verb_at(i)
+    low = words[i].lower
+    polite = match_phrase(words, i, POLITE) if found is None and low not in ("to", "and", "then") else 0
+    if polite and s.verb_after(i + polite):     # "From the shelf *could you* get me the book"
+        return Match(polite, (_unsaid(words[i].start, Tag.SEP), merge(words, i, polite, Tag.POLITE)), expect=True)
+    if found is None or not (verb_lemma(low) == low or found[1] > 1 and low == "how") or \
+            out[k].info in ("to", "into", "onto") and found[0] not in s.lexicon.goals:
+        return None                             # "to the lamp turn on the light": no goal of it, refused as before
+    unit, n, split = found
+    return Match(n, (_unsaid(words[i].start, Tag.SEP), merge(words, i, n, Tag.VERB, unit)), expect=False, verb=unit,
+                 using=False, particle=(split, unit) if split is not None else None)
 
 
 def _fronted_end(s: State, i: int) -> Match | None:
@@ -1826,8 +2000,13 @@ FRONTED_OF = Rule("of-phrase first", _fronted_of, (
     "'of' ('among', 'out of') and a noun phrase before the clause ('Of the people in the hall, how many ...')")
 FRONTED_QUESTION = Rule("phrase said before a question", _fronted_question, (
     Example("On the table, which object is lightest?", "On the table, which object is lightest", Tag.SAID),
+    Example("in the garage which car is the oldest?", "in the garage which car is the oldest", Tag.SAID),
 ), first_words(PREPOSITIONS) | {"of"},
     "a phrase and a comma before a question: all of it is what to tell")
+FRONTED_UNMARKED = Rule("phrase said first, no comma", _fronted_unmarked, (
+    Example("From the dresser take the hairbrush", "take", Tag.VERB),
+    Example("In the kitchen how many people are standing?", "how many", Tag.VERB),
+), lambda low: low.isalpha(), "a phrase of place said before the verb with no comma: the clause starts at the verb")
 FRONTED_END = Rule("phrase said first", _fronted_end, (
     Example("From the cupboard, give me the bowl", ",", Tag.SEP),
     Example("go to the kitchen. In there, find the sponge", ",", Tag.SEP),

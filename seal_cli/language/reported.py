@@ -1,0 +1,111 @@
+"""A question asked, and the telling of its answer said as a clause of its own: one frame (words33).
+
+People wrap a question in a request to report it, before or after: "find out what is on the bench *and tell me*",
+"check who's in the hall *and let me know*", "how many cups are on the table? *Tell me, please.*", "count the
+plates *and report back*", "*Tell me,* who is at the door?". The telling says nothing of its own (no message, or
+"it": "find out his name and tell *it* to Jo"): it is the answer of the question beside it, not a second thing to
+tell. :func:`merge_reported` makes the two one frame: the question's, with the person told when the question's
+frame tells someone (Tell) and said no one ("find out who's in the hall and tell Jo": Tell, recipient Jo).
+
+A question is a frame that asks: Tell with a message, Count, a state asked (LookAt with ``asked``), or a search
+asked rather than commanded (Find whose words do not start with its verb: "is there milk in the fridge", "check
+whether ..."). "Find the cat and tell me" stays two frames (a search commanded, then a report of its own), and so
+does a telling with a message ("count the cups and tell me the number") or to another person after a frame that
+tells no one ("count the cups and tell Jo"), or two people told ("tell me X and tell it to Jo").
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+
+from seal_cli.language.searches import renumbered
+from seal_cli.language.values import Evoked, Parse, Phrase
+
+__all__ = ["TELLING", "merge_reported"]
+
+TELLING = "Tell"
+"""The frame that reports to a person; a telling with no message is the one merged."""
+
+_SPEAKER = frozenset(["me", "us"])
+"""The heads of a recipient that is the speaker."""
+
+_ANSWER_AGAIN = frozenset(["it", "that", "this", "the answer"])
+"""A telling's message that is the answer of the question before it ("find out his name and tell *it* to Jo")."""
+
+_JOINT_AFTER = re.compile(r"^(?:\s|[,.;!?]|\band\b|\bthen\b|\bplease\b|\bjust\b|\bso\b|\balso\b)*$", re.IGNORECASE)
+"""What may stand between a question and the telling after it: the joints of clauses and sentences, and politeness
+("... ? Tell me, please", "... and then let me know")."""
+
+_JOINT_BEFORE = re.compile(r"^\s*[,:]\s*$")
+"""What stands between a telling said first and its question: a comma or a colon ("Tell me, who is at the door?")."""
+
+
+def merge_reported(parse: Parse) -> Parse:
+    """The parse with each question and the telling of its answer beside it made one frame (module docstring)."""
+    frames = list(parse.frames)
+    k = 0
+    while k + 1 < len(frames):
+        first, second = frames[k], frames[k + 1]
+        between = _between(parse.text, first, second)
+        if _asks(parse.text, first) and _reports(second, first) and _JOINT_AFTER.match(between):
+            frames[k] = _told(first, second)
+        elif _reports(first, second) and _asks(parse.text, second) and _JOINT_BEFORE.match(between):
+            frames[k] = _told(second, first)
+        else:
+            k += 1
+            continue
+        del frames[k + 1]
+        frames = [renumbered(f, k + 1) for f in frames]
+    return replace(parse, frames=tuple(frames)) if len(frames) != len(parse.frames) else parse
+
+
+def _between(text: str, first: Evoked, second: Evoked) -> str:
+    """What is said between two frames, without the end of the first one's own words its span leaves out: the
+    state a question asks ("is the door *closed*? let me know") and the "know" of "let me *know*"."""
+    between = text[first.span[1]:second.span[0]]
+    for own in (first.asked, "know" if first.frame == TELLING else None):
+        if own and between.lower().lstrip().startswith(own.lower()):
+            between = between.lstrip()[len(own):]
+    return between
+
+
+def _asks(text: str, frame: Evoked) -> bool:
+    """Whether the frame is a question: a telling of a message to the speaker or no one, a count, a state asked,
+    or a search asked (its words do not start with its verb)."""
+    if frame.frame == TELLING:
+        return "message" in frame.elements and _to_speaker(frame.elements.get("recipient"))
+    if frame.frame == "Count" or frame.asked:
+        return True
+    said = text[frame.span[0]:frame.span[1]].lower()
+    return frame.frame == "Find" and not said.startswith(frame.lexical_unit)
+
+
+def _reports(telling: Evoked, question: Evoked) -> bool:
+    """Whether ``telling`` only reports the answer of ``question``: a Tell with no message and no element but the
+    person told, who is the speaker unless the question's own frame tells someone."""
+    if telling.frame != TELLING or set(telling.elements) - {"recipient", "message"}:
+        return False
+    asked_of, told_to = question.elements.get("recipient"), telling.elements.get("recipient")
+    if asked_of is not None and asked_of.text and told_to is not None and told_to.text and \
+            asked_of.head.lower() != told_to.head.lower():
+        return False                  # "tell me what is in the box and tell it to Jo": two people told
+    message = telling.elements.get("message")
+    if message is not None:           # "find out his name and tell *it* to Jo": the answer, said again
+        return question.frame == TELLING and (message.text or "").lower() in _ANSWER_AGAIN
+    return question.frame == TELLING or _to_speaker(telling.elements.get("recipient"))
+
+
+def _to_speaker(recipient: Phrase | None) -> bool:
+    """Whether a recipient is the speaker, or unsaid."""
+    return recipient is None or not recipient.text or recipient.head.lower() in _SPEAKER
+
+
+def _told(question: Evoked, telling: Evoked) -> Evoked:
+    """The question's frame, telling the person the telling names when the question is itself a telling."""
+    recipient = telling.elements.get("recipient")
+    elements = dict(question.elements)
+    if question.frame == TELLING and recipient is not None and recipient.text:
+        elements["recipient"] = recipient
+    span = (min(question.span[0], telling.span[0]), max(question.span[1], telling.span[1]))
+    return replace(question, elements=elements, span=span)
