@@ -145,6 +145,10 @@ class Things:
         self.every: Mapping[str, int] = {}
         """How many things of a class "all the ..." asks for when the map does not place them (``seal run``'s
         robot, after looking all over the house for them), by class key."""
+        self.kinds: set[str] = set()
+        """The kinds of thing the map knows, by class key: its priors', objects' and places' classes, and those of
+        the house's vocabulary (``seal run`` plans on the map without its objects, whose classes its perception
+        knows all the same)."""
         if map is not None:
             self._read_map(map)
 
@@ -153,6 +157,7 @@ class Things:
         return self.map is not None and any(class_key(p.name) == name for p in self.map.places)
 
     def _read_map(self, map: Map) -> None:
+        self.kinds = {*map.kinds(), *(class_key(p.cls) for p in map.places)}
         for room in map.rooms:
             self.classes.setdefault(class_key(room.name), class_key(room.name))
             self.fixed.add(class_key(room.name))
@@ -853,6 +858,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         kept = {} if placed_back else _put_away(frame, evoked, values, things, parse.text)
         if not kept and not placed_back:
             _unsaid_goal(frame, evoked, values, things, parse.text)
+        _fetched_unheard_of(frame, evoked, values, things, parse.text)
         bindings.extend(_where_said_first(frame, evoked, values, library, things, parse.text))
         earlier.append(values)
         roles = [r for r in frame.roles if r in values]
@@ -1039,6 +1045,36 @@ def _back_to(phrase: Phrase | None, themes: Sequence[str], bindings: Sequence[Bi
     if not places:
         raise _located(f"cannot tell where {_back_said(phrase)} is: nothing is put back", phrase, text)
     return tuple(places), later
+
+
+def _fetched_unheard_of(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]], things: Things,
+                        text: str) -> None:
+    """Refuse, on a map, a thing to take up (a frame that picks it up or needs it held: Pick, Bring, Give, Place) of
+    a kind the map knows nothing of — no prior, object or place of it, nor of a kind of it (:attr:`Things.kinds`),
+    and not what the robot holds — where the command says it (e2e27: "bring me the hammer" on a house with none).
+    ``seal run``'s robot would not search for it (its perception knows the map's classes only,
+    :meth:`seal_cli.sim.agent.Agent.absent_from_map`), yet it drove to whatever the frames before asked first; the
+    plan was made and warned about. Said with what the map has of its kind ("a cup" on a map with mugs), the user's
+    next word. A thing looked for (Find, Count, a question) is still answered "not found" by the run; one said to be
+    somewhere ("a beer from the fridge") is looked for there; one put away or back is refused by :func:`_put_away`."""
+    m = things.map
+    phrase = evoked.elements.get("theme")
+    if (m is None or phrase is None or phrase.default or "theme" not in values or not _takes(frame)
+            or values.keys() & {"source", "ground"} or stores(frame, evoked.lexical_unit)):
+        return
+    held = class_key(things.held) if things.held else None
+    taxonomy = things.taxonomy
+    for value in values["theme"]:
+        cls = things.class_of(value)
+        if (value in things.fixed or value in things.people or cls in ("person", held) or cls in things.kinds
+                or any(taxonomy.is_a(k, cls) is True for k in things.kinds)):
+            continue
+        kin = taxonomy.kin(cls)
+        alike = sorted(k for k in things.kinds if kin is not None and k in kin[1])
+        has = f"; of its kind ({kin[0]}) it has: {', '.join(_words(k) for k in alike)}" if kin and alike else ""
+        raise _located(f"the {_words(m.name)} knows no {_words(cls)} (no prior, object or place of one), so the "
+                       f"robot would not find one to {' '.join(words_of(evoked.lexical_unit))}{has}; say something "
+                       "the house has", phrase, text)
 
 
 def _takes(frame: Frame) -> bool:
@@ -1275,6 +1311,8 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
     if vocabulary is not None:      # the names a vocabulary gives its classes name them too
         things.synonyms = {class_key(c): tuple(n) for c, n in zip(vocabulary.classes, vocabulary.synonyms,
                                                                    strict=True)}
+        if map is not None and getattr(vocabulary, "house", False):    # the map's classes, objects' too
+            things.kinds |= {class_key(c) for c in vocabulary.classes}
     for frame in library:
         for element in frame.elements:
             if element.default is not None:
@@ -1286,6 +1324,7 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
         things.named_before = [*things.named_before, *_people_named(bindings, things)]
     commanded = commanded_frames(parse, library, things)
     _the_ones_said_where(commanded, things)
+    the_ones_not_there(commanded, things)
     state = things.state(holding)
     changed: dict[Fact, str] = {}  # a fact an earlier done command made true or false → that command
     for text, binding in executed:
@@ -1330,6 +1369,37 @@ def _the_ones_said_where(commanded: Sequence[Binding], things: Things) -> None:
                       and n not in things.fixed and things.lies_in(n, source)), None)
         if there is not None:
             things.swap(theme, there)
+
+
+def the_ones_not_there(commanded: Sequence[Binding], things: Things) -> None:
+    """A thing put where one of its kind lies already, on a map with another of the kind elsewhere, is that other one
+    (e2e27): "put the book back on the shelf", a book on the shelf and one on the nightstand, asks for the
+    nightstand's; nobody asks for what is so already. The command's name of it (``book``, the map's first book)
+    trades names with the first other thing of its class that lies somewhere else, is named by no frame of the
+    command and is not what the robot holds. Only for the first frame that names the thing, when that frame takes it
+    up (it needs it held: a Place, a Bring) and says no source (:func:`_the_ones_said_where` settles those), and the
+    robot does not hold one of the kind (it would put down the one it holds). Without it the plan was empty
+    ("Place(theme=book, goal=bookshelf_1) is not done: ... holds already"). ``seal run``'s robot, which knows no
+    thing until it sees it, does the same when it sees one lying there (:meth:`seal_cli.sim.agent.Agent.already_so`)."""
+    if things.map is None:
+        return
+    used = {v for b in commanded for _, v in b.values}
+    key = class_key(things.held) if things.held else None
+    settled: set[str] = set()
+    for binding in commanded:
+        theme, goal = binding.elements.get("theme"), binding.elements.get("goal")
+        if theme is None or theme in settled:
+            continue
+        settled.add(theme)
+        if (goal is None or "source" in binding.elements or not binding.frame.needs_held("theme")
+                or theme in things.fixed or theme in things.people or theme not in things.classes
+                or things.classes[theme] == key or not things.lies_in(theme, goal)):
+            continue
+        cls = things.classes[theme]
+        other = next((n for n, c in things.classes.items() if c == cls and n != theme and n not in used
+                      and n not in things.fixed and n in things.points and not things.lies_in(n, goal)), None)
+        if other is not None:
+            things.swap(theme, other)
 
 
 def chosen_among(commanded: Sequence[Binding], things: Things) -> list[str]:

@@ -198,6 +198,12 @@ class Agent:
         """Things the robot has put where a frame wanted them: not to be taken away again."""
         self.chosen: dict[str, str] = {}
         """The instance chosen for each name a frame uses, across frames (open *this* cabinet, put into it)."""
+        self.there_already: dict[Binding, str] = {}
+        """Frames that put a thing where the robot saw one of its kind lying already, before the command took one
+        ("put the book back on the shelf", a book on the shelf): another one is meant, so the robot looks for it;
+        what it would have said ("book_1 is on bookshelf_1 already") is said only if it finds no other (e2e27)."""
+        self.not_meant: dict[str, set[str]] = {}
+        """The instances a name does not stand for, by name: the one seen where a frame puts its kind already."""
         self.looks: list[tuple[float, float, float]] = []
         self.inspected: set[str] = set()
         """Places the robot has looked into or onto from within reach: it has seen all they hold."""
@@ -343,7 +349,7 @@ class Agent:
             room, place = self.room(where), self._place_of(where)
             free = [k.id for k in self.known.values() if k.cls == self.class_of(thing) and k.movable
                     and k.id in self.world.items and not self.world.held_chain(k.id)
-                    and not self._chosen_as_other(k.id, thing)]
+                    and not self._chosen_as_other(k.id, thing) and k.id not in self.not_meant.get(thing, ())]
             if room is not None:      # on no place there (the room's floor), or in or on a place there
                 there = [i for i in free if bool(room.contains([self.world.position(i)])[0])]
                 loose = [i for i in there if self._place_of(self.world.items[i].parent or "") is None]
@@ -367,12 +373,30 @@ class Agent:
         if made is None or made.args[0] not in seen:
             return None
         thing, where = made.args
-        self.chosen.setdefault(class_key(thing), seen[thing])   # that one is this name's: not cup_2's too (e2e23)
         room = self.room(where)
         if room is not None:
-            return f"{seen[thing]} is in the {room.name.replace('_', ' ')} already"
-        place = self.world.items[seen[thing]].parent or where
-        return f"{seen[thing]} is {'in' if self.world.hollow(self.world.items[place]) else 'on'} {place} already"
+            said = f"{seen[thing]} is in the {room.name.replace('_', ' ')} already"
+        else:
+            place = self.world.items[seen[thing]].parent or where
+            said = f"{seen[thing]} is {'in' if self.world.hollow(self.world.items[place]) else 'on'} {place} already"
+        if self._another_meant(binding, thing):     # one lies there already: the command means another one
+            self.there_already[binding] = said
+            self.not_meant.setdefault(thing, set()).add(seen[thing])
+            self.say("search", f"{said}: looks for another {spoken(self.class_of(thing))} to put there",
+                     target=thing)
+            return None
+        self.chosen.setdefault(class_key(thing), seen[thing])   # that one is this name's: not cup_2's too (e2e23)
+        return said
+
+    def _another_meant(self, binding: Binding, thing: str) -> bool:
+        """Whether a frame that would put ``thing`` where the robot sees one of its kind already means another one
+        (e2e27, as the planner's :func:`seal_cli.planning.problem.the_ones_not_there`): the frame takes the thing up
+        (it needs it held), the command has not chosen one for the name yet, and the robot holds none of its kind (it
+        would put down the one it holds); asked once a frame."""
+        held = self.held()
+        return (binding not in self.there_already and class_key(thing) not in self.chosen
+                and binding.frame.needs_held("theme") and binding.elements.get("theme") == thing
+                and (held is None or held.key != self.class_of(thing)))
 
     def _open_already(self, binding: Binding) -> str | None:
         """"fridge_1 is already closed (as the map has it)", for an Open or a Close of a place of the map that is
@@ -581,6 +605,13 @@ class Agent:
                     return self._result(False, failed, plan, executed, Reason.CANNOT)
                 continue
             stop = self.exhausted()
+            if not stop and outcome.reason is Reason.NOT_FOUND and todo and todo[0] in self.there_already:
+                skipped = todo.pop(0)       # no other one anywhere: the one seen there was meant after all
+                self.say("done", f"{self.there_already[skipped]} and it found no other, so {shown(skipped)} needs "
+                         "no doing", frame=str(skipped))
+                if (failed := self._replan(todo, self.resync(self.state))) is not None:
+                    return self._result(False, failed, plan, executed, Reason.CANNOT)
+                continue
             if stop or isinstance(outcome, Fatal):
                 reason = stop or outcome.message
                 self.say("give_up", f"gives up: {reason}")
@@ -678,7 +709,7 @@ class Agent:
         if held is not None and held.key == key and held.id not in others:
             return held.id
         candidates = [k for k in self.instances(key) if k.id not in self.unreachable and k.id not in others
-                      and not self.world.held_chain(k.id)]
+                      and not self.world.held_chain(k.id) and k.id not in self.not_meant.get(value, ())]
         previous = self.chosen.get(name)
         taking = role == "theme" and any(a.name == "pick" for a in binding.actions)
         if taking:   # a thing put in place is not taken again, unless the command names it again
@@ -1010,6 +1041,8 @@ class Agent:
                     return self.go_to(holder, binding)      # handed to someone before: taken back from them
                 if self.todo and binding != self.todo[0] and (already := self.already_so(self.todo[0])):
                     return Outcome(False, already, Reason.ALREADY)   # seen where the command wants it
+                if target in self.not_meant.get(value, ()):     # seen where it is to go: another one is meant
+                    continue
                 cell = self.policy.stand(self, self.known[target])
                 if cell is None:
                     self.unreachable.add(target)
