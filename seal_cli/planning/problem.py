@@ -794,7 +794,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
     from seal_cli.planning.questions import asks_whether, looking
     from seal_cli.planning.returning import returned
 
-    parse = replace(parse, frames=returned(parse.frames, library))    # "return it": back where it was taken from
+    parse = replace(parse, frames=returned(parse.frames, library, parse.text))   # "return it", "take it back"
     parse = replace(parse, frames=brought(parse.frames, library))     # "fetch the remote": bring it here
     earlier: list[dict[str, tuple[str, ...]]] = []
     bindings: list[Binding] = []
@@ -907,12 +907,38 @@ def _robot_at(frame: Frame, role: str, values: Mapping[str, tuple[str, ...]], bi
             return things.points[theme[0]], f"where it takes the {what}"
         if len(source) == 1 and source[0] in things.points:     # "bring the mug from the kitchen to the sofa"
             return things.points[source[0]], f"{_at(source[0], things)}, where it takes the {what} from"
+        if not source and (likely := _likely_place(theme[0], things)) is not None:   # seal run: no thing placed
+            return things.points[likely], f"{likely}, where a {what} most likely lies"
     for binding in reversed(bindings):
         for action in reversed(binding.frame.actions):
             value = binding.elements.get(action.args[-1]) if action.name in MOVES and action.args else None
             if value in things.points:
                 return things.points[value], f"{_at(value, things)}, where the step before leaves it"
     return None
+
+
+def _likely_place(value: str, things: Things) -> str | None:
+    """Where the map's prior says a thing of the value's class most likely lies, for a thing the map does not place
+    (``seal run`` plans on the map without its objects): the place with the most prior mass, the one the robot
+    drives to soonest from where it starts among equals (as its search looks first); None without a prior (e2e27:
+    "put the ice cream in the fridge" chose the kitchen's fridge, nearer the start, where ``seal plan`` chose the
+    shop's, beside the freezer the ice cream is taken from)."""
+    from seal_cli.maps.reach import drive_lengths
+    from seal_cli.planning.keeping import mass, prior_of, spots_of
+
+    m = things.map
+    if m is None:
+        return None
+    prior = prior_of(m.priors, things.class_of(value))
+    spots = [s for s in spots_of(m) if s.name in things.points and mass(prior, s) > 0]
+    if not spots:
+        return None
+    top = max(mass(prior, s) for s in spots)
+    best = [s.name for s in spots if mass(prior, s) >= top - 1e-9]
+    if len(best) == 1:
+        return best[0]
+    lengths = drive_lengths(m, m.robot.xy, best)
+    return best[min(range(len(best)), key=lambda k: (lengths[k], k))]
 
 
 def _at(value: str, things: Things) -> str:
@@ -1032,7 +1058,10 @@ def _back_to(phrase: Phrase | None, themes: Sequence[str], bindings: Sequence[Bi
             places[source] = None
             continue
         lay = next((f.args[1] for f in sorted(things.facts, key=str) if f.predicate == "in" and f.args[0] == theme),
-                   None)
+                   None) if takers else None      # held from the start: no thing the map places (e2e27)
+        if lay is None and m is not None and not takers:     # held from the start: back where such a thing is kept
+            spot = kept_place(things.taxonomy, m.priors, things.class_of(theme), spots_of(m), near=m.robot.xy)
+            lay, later = (spot.name, later or not m.objects) if spot is not None else (None, later)
         if lay is None and m is not None and not m.objects:
             spot = kept_place(things.taxonomy, m.priors, things.class_of(theme), spots_of(m), near=m.robot.xy)
             lay, later = (spot.name, True) if spot is not None else (None, later)
@@ -1325,6 +1354,7 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
     commanded = commanded_frames(parse, library, things)
     _the_ones_said_where(commanded, things)
     the_ones_not_there(commanded, things)
+    the_nearest_ones(commanded, things)
     state = things.state(holding)
     changed: dict[Fact, str] = {}  # a fact an earlier done command made true or false → that command
     for text, binding in executed:
@@ -1400,6 +1430,52 @@ def the_ones_not_there(commanded: Sequence[Binding], things: Things) -> None:
                       and n not in things.fixed and n in things.points and not things.lies_in(n, goal)), None)
         if other is not None:
             things.swap(theme, other)
+
+
+def the_nearest_ones(commanded: Sequence[Binding], things: Things) -> None:
+    """A thing to take of a kind the map has several of, lying in places of one class, that the command does not tell
+    apart ("get me the milk", a fridge in the shop and one in the kitchen) is the one in the place the robot drives
+    to soonest from where it will be (where the frames before leave it, else where it starts), as ``seal run``'s
+    robot takes it: it knows no thing before it sees it, its prior is the same at places of one class, so it looks in
+    the nearest first (e2e27: the plan took the shop's milk, the map's first, the run the kitchen's, 4 m nearer). The
+    command's name trades names with that one. Left as the map lists them where the places differ in class: the
+    run weighs a prior against a drive, which the plan cannot tell (docs/planning.md). Only the first frame naming
+    the thing, when it takes it up and says no source, and the thing is not what the robot holds."""
+    from seal_cli.maps.reach import drive_lengths
+
+    m = things.map
+    if m is None:
+        return
+    used = {v for b in commanded for _, v in b.values}
+    key = class_key(things.held) if things.held else None
+    settled: set[str] = set()
+    for index, binding in enumerate(commanded):
+        theme = binding.elements.get("theme")
+        if theme is None or theme in settled:
+            continue
+        settled.add(theme)
+        if ("source" in binding.elements or not _takes(binding.frame) or theme in things.fixed
+                or theme in things.people or theme not in things.classes or things.classes[theme] == key):
+            continue
+        cls = things.classes[theme]
+        lying = {n: _lies_on(n, things) for n, c in things.classes.items()
+                 if c == cls and n not in things.fixed and (n == theme or n not in used)}
+        places = {p for p in lying.values() if p is not None}
+        if len(lying) < 2 or None in lying.values() or len({things.class_of(p) for p in places}) != 1 \
+                or len(places) < 2:
+            continue
+        start = _robot_at(binding.frame, "source", {}, commanded[:index], things)
+        order = sorted(places)
+        lengths = dict(zip(order, drive_lengths(m, start[0] if start else m.robot.xy, order), strict=True))
+        best = min(lying, key=lambda n: (lengths[lying[n] or ""], n != theme))
+        if best != theme and lengths[lying[best] or ""] < lengths[lying[theme] or ""]:
+            things.swap(theme, best)
+
+
+def _lies_on(name: str, things: Things) -> str | None:
+    """The place of the map a thing lies in or on, by the map (None: on a room's floor, or not placed)."""
+    return next((f.args[1] for f in things.facts if f.predicate == "in" and f.args[0] == name
+                 and things.is_place(f.args[1])), None)
 
 
 def chosen_among(commanded: Sequence[Binding], things: Things) -> list[str]:
