@@ -149,6 +149,9 @@ class Things:
         """The kinds of thing the map knows, by class key: its priors', objects' and places' classes, and those of
         the house's vocabulary (``seal run`` plans on the map without its objects, whose classes its perception
         knows all the same)."""
+        self.all_kinds = False
+        """Whether :attr:`kinds` are all the kinds of thing in the house: the map places its objects, or the house's
+        vocabulary says their classes (a map without objects and no such vocabulary may hold anything)."""
         if map is not None:
             self._read_map(map)
 
@@ -158,6 +161,7 @@ class Things:
 
     def _read_map(self, map: Map) -> None:
         self.kinds = {*map.kinds(), *(class_key(p.cls) for p in map.places)}
+        self.all_kinds = bool(map.objects)
         for room in map.rooms:
             self.classes.setdefault(class_key(room.name), class_key(room.name))
             self.fixed.add(class_key(room.name))
@@ -1088,8 +1092,8 @@ def _fetched_unheard_of(frame: Frame, evoked: Evoked, values: Mapping[str, tuple
     somewhere ("a beer from the fridge") is looked for there; one put away or back is refused by :func:`_put_away`."""
     m = things.map
     phrase = evoked.elements.get("theme")
-    if (m is None or phrase is None or phrase.default or "theme" not in values or not _takes(frame)
-            or values.keys() & {"source", "ground"} or stores(frame, evoked.lexical_unit)):
+    if (m is None or not things.all_kinds or phrase is None or phrase.default or "theme" not in values
+            or not _takes(frame) or values.keys() & {"source", "ground"} or stores(frame, evoked.lexical_unit)):
         return
     held = class_key(things.held) if things.held else None
     taxonomy = things.taxonomy
@@ -1342,6 +1346,7 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
                                                                    strict=True)}
         if map is not None and getattr(vocabulary, "house", False):    # the map's classes, objects' too
             things.kinds |= {class_key(c) for c in vocabulary.classes}
+            things.all_kinds = True
     for frame in library:
         for element in frame.elements:
             if element.default is not None:
@@ -1402,9 +1407,10 @@ def _the_ones_said_where(commanded: Sequence[Binding], things: Things) -> None:
 
 
 def the_ones_not_there(commanded: Sequence[Binding], things: Things) -> None:
-    """A thing put where one of its kind lies already, on a map with another of the kind elsewhere, is that other one
-    (e2e27): "put the book back on the shelf", a book on the shelf and one on the nightstand, asks for the
-    nightstand's; nobody asks for what is so already. The command's name of it (``book``, the map's first book)
+    """A thing put on or in a place where one of its kind lies already, on a map with another of the kind elsewhere, is
+    that other one (e2e27): "put the book back on the shelf", a book on the shelf and one on the nightstand, asks for
+    the nightstand's; nobody asks for what is so already (a room said as the goal is left as it was: one may lie on
+    its floor or any place of it, and "it is in the kitchen already" is the likelier reading). The command's name of it (``book``, the map's first book)
     trades names with the first other thing of its class that lies somewhere else, is named by no frame of the
     command and is not what the robot holds. Only for the first frame that names the thing, when that frame takes it
     up (it needs it held: a Place, a Bring) and says no source (:func:`_the_ones_said_where` settles those), and the
@@ -1421,7 +1427,8 @@ def the_ones_not_there(commanded: Sequence[Binding], things: Things) -> None:
         if theme is None or theme in settled:
             continue
         settled.add(theme)
-        if (goal is None or "source" in binding.elements or not binding.frame.needs_held("theme")
+        if (goal is None or not things.is_place(goal) or "source" in binding.elements
+                or not binding.frame.needs_held("theme")
                 or theme in things.fixed or theme in things.people or theme not in things.classes
                 or things.classes[theme] == key or not things.lies_in(theme, goal)):
             continue

@@ -380,7 +380,7 @@ class Agent:
         else:
             place = self.world.items[seen[thing]].parent or where
             said = f"{seen[thing]} is {'in' if self.world.hollow(self.world.items[place]) else 'on'} {place} already"
-        if self._another_meant(binding, thing):     # one lies there already: the command means another one
+        if room is None and self._another_meant(binding, thing):    # one lies there: the command means another
             self.there_already[binding] = said
             self.not_meant.setdefault(thing, set()).add(seen[thing])
             self.say("search", f"{said}: looks for another {spoken(self.class_of(thing))} to put there",
