@@ -262,8 +262,9 @@ STUDIO = House(
 )
 
 CORNER_SHOP = House(
-    "corner_shop", (0.0, 0.0, 14.0, 10.0),
+    "corner_shop", (0.0, 0.0, 14.0, 12.0),
     walls=(
+        ((0.0, 10.0, 14.0, 10.0), ((5.0, 6.0),)),              # the back rooms | the back yard (the kitchen's door)
         ((8.0, 0.0, 8.0, 10.0), ((2.0, 3.0), (8.0, 9.0))),     # shop | stockroom, kitchen | office
         ((8.0, 5.0, 14.0, 5.0), ((10.0, 11.0),)),              # stockroom | office
         ((0.0, 6.0, 8.0, 6.0), ((5.0, 6.0),)),                 # shop | bathroom, kitchen (the door behind the till)

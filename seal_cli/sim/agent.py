@@ -205,6 +205,8 @@ class Agent:
         what it would have said ("book_1 is on bookshelf_1 already") is said only if it finds no other (e2e27)."""
         self.not_meant: dict[str, set[str]] = {}
         """The instances a name does not stand for, by name: the one seen where a frame puts its kind already."""
+        self.several: set[str] = set()
+        """The classes the command names several things of ("all the cups", "two plates"): each is one of them."""
         self.looks: list[tuple[float, float, float]] = []
         self.inspected: set[str] = set()
         """Places the robot has looked into or onto from within reach: it has seen all they hold."""
@@ -393,9 +395,11 @@ class Agent:
         """Whether a frame that would put ``thing`` where the robot sees one of its kind already means another one
         (e2e27, as the planner's :func:`seal_cli.planning.problem.the_ones_not_there`): the frame takes the thing up
         (it needs it held), the command has not chosen one for the name yet, and the robot holds none of its kind (it
-        would put down the one it holds); asked once a frame."""
+        would put down the one it holds), and the command names one thing of its kind (each of "all the cups" is one of
+        them); asked once a frame."""
         held = self.held()
         return (binding not in self.there_already and class_key(thing) not in self.chosen
+                and self.class_of(thing) not in self.several
                 and binding.frame.needs_held("theme") and binding.elements.get("theme") == thing
                 and (held is None or held.key != self.class_of(thing)))
 
@@ -545,6 +549,11 @@ class Agent:
         self.policy.begin(self)
         self.look_round(self.world.robot.pose[:2])  # where it starts, all round (a narrow sensor turns)
         todo = list(commanded)
+        names: dict[str, set[str]] = {}
+        for binding in todo:
+            for _, value in binding.values:
+                names.setdefault(self.class_of(value), set()).add(class_key(value))
+        self.several = {cls for cls, said in names.items() if len(said) > 1}
         while todo and (already := self.already_so(todo[0])) is not None:
             skipped = todo.pop(0)
             self.say("done", f"{already}, so {shown(skipped)} needs no doing", frame=str(skipped))
