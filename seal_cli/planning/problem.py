@@ -1410,11 +1410,12 @@ def the_ones_not_there(commanded: Sequence[Binding], things: Things) -> None:
     """A thing put on or in a place where one of its kind lies already, on a map with another of the kind elsewhere, is
     that other one (e2e27): "put the book back on the shelf", a book on the shelf and one on the nightstand, asks for
     the nightstand's; nobody asks for what is so already (a room said as the goal is left as it was: one may lie on
-    its floor or any place of it, and "it is in the kitchen already" is the likelier reading). The command's name of it (``book``, the map's first book)
-    trades names with the first other thing of its class that lies somewhere else, is named by no frame of the
-    command and is not what the robot holds. Only for the first frame that names the thing, when that frame takes it
-    up (it needs it held: a Place, a Bring) and says no source (:func:`_the_ones_said_where` settles those), and the
-    robot does not hold one of the kind (it would put down the one it holds). Without it the plan was empty
+    its floor or any place of it, and "it is in the kitchen already" is the likelier reading). The command's name of
+    it (``book``, the map's first book) trades names with the first other thing of its class that lies somewhere
+    else, is named by no frame of the command and is not what the robot holds. Only for the first frame that names
+    the thing, when that frame takes it up (it needs it held: a Place, a Bring) and says no source
+    (:func:`_the_ones_said_where` settles those), and the robot does not hold one of the kind (it would put down the
+    one it holds). Without it the plan was empty
     ("Place(theme=book, goal=bookshelf_1) is not done: ... holds already"). ``seal run``'s robot, which knows no
     thing until it sees it, does the same when it sees one lying there (:meth:`seal_cli.sim.agent.Agent.already_so`)."""
     if things.map is None:

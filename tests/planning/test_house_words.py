@@ -92,7 +92,7 @@ def test_a_thing_the_map_knows_only_in_its_container_is_the_container(library: L
 
 
 @pytest.mark.parametrize(("text", "house", "plan"), [
-    ("on your way back, pick up the spoon", "apartment", ["Pick(theme=spoon)"]),   # (e2e27: the apartment knows no post)
+    ("on your way back, pick up the spoon", "apartment", ["Pick(theme=spoon)"]),   # (e2e27: no post on the map)
     ("on the way to the kitchen, grab the cup", "apartment", ["Pick(theme=cup)"]),
     ("see Ben to the kitchen", "apartment", ["Guide(theme=ben, goal=kitchen)"]),
     ("please see Helen to the exam room", "clinic", ["Guide(theme=helen, goal=exam_room)"]),
