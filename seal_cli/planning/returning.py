@@ -56,7 +56,8 @@ def _takes_back(evoked: Evoked, text: str) -> bool:
     the cup back", "take back the cup"): the word "back" within the frame's span, in no element's span."""
     unit = evoked.lexical_unit.split()
     said = {role for role, phrase in evoked.elements.items() if not phrase.default}
-    if unit != [*unit[:1]] or unit[0] not in TAKING_AWAY or "theme" not in said or said & {"recipient", "goal"}:
+    if (unit != [*unit[:1]] or unit[0] not in TAKING_AWAY or "theme" not in said or said & {"recipient", "goal"}
+            or evoked.elements["theme"].kind == "person"):      # "take Tom back": a person is led, not put back
         return False
     spans = [p.span for p in evoked.elements.values() if p.span is not None]
     start, end = evoked.span

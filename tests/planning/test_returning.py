@@ -67,6 +67,8 @@ def test_take_back_is_a_put_back_and_bring_back_a_bringing_here(library: Library
     assert returned([plain], library, "take the hammer") == (plain,)
     backpack = Evoked("Pick", "take", (0, 16), {"theme": Phrase("the backpack", "backpack", None, span=(5, 17))})
     assert returned([backpack], library, "take the backpack") == (backpack,)     # "back" only as a word of its own
+    tom = Evoked("Pick", "take", (0, 13), {"theme": Phrase("Tom", "tom", None, "person", span=(5, 8))})
+    assert returned([tom], library, "take Tom back") == (tom,)                  # a person: not put back
 
 
 def replace_span(phrase: Phrase, start: int) -> Phrase:
