@@ -3,8 +3,8 @@
 ``terrace.yaml``, the L-shaped ``bungalow.yaml``, ``lodge.yaml``, e2e21's held-out holiday lodge, and
 ``flat.yaml``, e2e22's held-out long flat, and ``carehome.yaml``, e2e23's held-out care home, and
 ``student_house.yaml``, e2e24's held-out student house, and ``guesthouse.yaml``, e2e25's held-out bed and
-breakfast, and ``studio.yaml``, e2e26's held-out open-plan studio flat (run once; the PGMs are committed next to
-this script).
+breakfast, and ``studio.yaml``, e2e26's held-out open-plan studio flat, and ``corner_shop.yaml``, e2e27's held-out
+corner shop with its back rooms (run once; the PGMs are committed next to this script).
 
     python maps/make_houses.py          # rewrites maps/<house>.pgm for each of HOUSES
 
@@ -261,8 +261,24 @@ STUDIO = House(
     ),
 )
 
+CORNER_SHOP = House(
+    "corner_shop", (0.0, 0.0, 14.0, 12.0),
+    walls=(
+        ((0.0, 10.0, 14.0, 10.0), ((5.0, 6.0),)),              # the back rooms | the back yard (the kitchen's door)
+        ((8.0, 0.0, 8.0, 10.0), ((2.0, 3.0), (8.0, 9.0))),     # shop | stockroom, kitchen | office
+        ((8.0, 5.0, 14.0, 5.0), ((10.0, 11.0),)),              # stockroom | office
+        ((0.0, 6.0, 8.0, 6.0), ((5.0, 6.0),)),                 # shop | bathroom, kitchen (the door behind the till)
+        ((3.0, 6.0, 3.0, 10.0), ((7.0, 8.0),)),                # bathroom | kitchen
+    ),
+    blocks=(
+        (1.0, 2.0, 1.4, 4.5),      # the shop's west aisle of shelving
+        (3.6, 2.0, 4.0, 4.5),      # the shop's east aisle of shelving
+        (13.5, 0.1, 13.9, 4.0),    # the stockroom's racking against its east wall
+    ),
+)
+
 HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC, FARMHOUSE, TERRACE, BUNGALOW, LODGE, FLAT, CAREHOME, STUDENT_HOUSE,
-          GUESTHOUSE, STUDIO)
+          GUESTHOUSE, STUDIO, CORNER_SHOP)
 
 
 def draw(house: House) -> np.ndarray:

@@ -247,3 +247,15 @@ def participles(verb: str) -> frozenset[str]:
 
     forms = lemminflect.getAllInflectionsOOV(verb, upos="VERB")
     return frozenset(f.lower() for tag in ("VBN", "VBD") for f in forms.get(tag, ()))
+
+
+@lru_cache(maxsize=4096)
+def plural_of(noun: str) -> str:
+    """The plural of a noun said in words, its last word inflected by lemminflect's tables ("box": "boxes", "ice
+    cream": "ice creams", "shelf": "shelves"); a word the tables do not know takes an "s" (e2e27: a count said "2
+    boxs")."""
+    import lemminflect
+
+    *first, last = noun.split(" ")
+    forms = lemminflect.getInflection(last, tag="NNS", inflect_oov=True) if last else ()
+    return " ".join([*first, forms[0] if forms else last + "s"])

@@ -145,6 +145,13 @@ class Things:
         self.every: Mapping[str, int] = {}
         """How many things of a class "all the ..." asks for when the map does not place them (``seal run``'s
         robot, after looking all over the house for them), by class key."""
+        self.kinds: set[str] = set()
+        """The kinds of thing the map knows, by class key: its priors', objects' and places' classes, and those of
+        the house's vocabulary (``seal run`` plans on the map without its objects, whose classes its perception
+        knows all the same)."""
+        self.all_kinds = False
+        """Whether :attr:`kinds` are all the kinds of thing in the house: the map places its objects, or the house's
+        vocabulary says their classes (a map without objects and no such vocabulary may hold anything)."""
         if map is not None:
             self._read_map(map)
 
@@ -153,6 +160,8 @@ class Things:
         return self.map is not None and any(class_key(p.name) == name for p in self.map.places)
 
     def _read_map(self, map: Map) -> None:
+        self.kinds = {*map.kinds(), *(class_key(p.cls) for p in map.places)}
+        self.all_kinds = bool(map.objects)
         for room in map.rooms:
             self.classes.setdefault(class_key(room.name), class_key(room.name))
             self.fixed.add(class_key(room.name))
@@ -789,7 +798,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
     from seal_cli.planning.questions import asks_whether, looking
     from seal_cli.planning.returning import returned
 
-    parse = replace(parse, frames=returned(parse.frames, library))    # "return it": back where it was taken from
+    parse = replace(parse, frames=returned(parse.frames, library, parse.text))   # "return it", "take it back"
     parse = replace(parse, frames=brought(parse.frames, library))     # "fetch the remote": bring it here
     earlier: list[dict[str, tuple[str, ...]]] = []
     bindings: list[Binding] = []
@@ -853,6 +862,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         kept = {} if placed_back else _put_away(frame, evoked, values, things, parse.text)
         if not kept and not placed_back:
             _unsaid_goal(frame, evoked, values, things, parse.text)
+        _fetched_unheard_of(frame, evoked, values, things, parse.text)
         bindings.extend(_where_said_first(frame, evoked, values, library, things, parse.text))
         earlier.append(values)
         roles = [r for r in frame.roles if r in values]
@@ -901,12 +911,38 @@ def _robot_at(frame: Frame, role: str, values: Mapping[str, tuple[str, ...]], bi
             return things.points[theme[0]], f"where it takes the {what}"
         if len(source) == 1 and source[0] in things.points:     # "bring the mug from the kitchen to the sofa"
             return things.points[source[0]], f"{_at(source[0], things)}, where it takes the {what} from"
+        if not source and (likely := _likely_place(theme[0], things)) is not None:   # seal run: no thing placed
+            return things.points[likely], f"{likely}, where a {what} most likely lies"
     for binding in reversed(bindings):
         for action in reversed(binding.frame.actions):
             value = binding.elements.get(action.args[-1]) if action.name in MOVES and action.args else None
             if value in things.points:
                 return things.points[value], f"{_at(value, things)}, where the step before leaves it"
     return None
+
+
+def _likely_place(value: str, things: Things) -> str | None:
+    """Where the map's prior says a thing of the value's class most likely lies, for a thing the map does not place
+    (``seal run`` plans on the map without its objects): the place with the most prior mass, the one the robot
+    drives to soonest from where it starts among equals (as its search looks first); None without a prior (e2e27:
+    "put the ice cream in the fridge" chose the kitchen's fridge, nearer the start, where ``seal plan`` chose the
+    shop's, beside the freezer the ice cream is taken from)."""
+    from seal_cli.maps.reach import drive_lengths
+    from seal_cli.planning.keeping import mass, prior_of, spots_of
+
+    m = things.map
+    if m is None:
+        return None
+    prior = prior_of(m.priors, things.class_of(value))
+    spots = [s for s in spots_of(m) if s.name in things.points and mass(prior, s) > 0]
+    if not spots:
+        return None
+    top = max(mass(prior, s) for s in spots)
+    best = [s.name for s in spots if mass(prior, s) >= top - 1e-9]
+    if len(best) == 1:
+        return best[0]
+    lengths = drive_lengths(m, m.robot.xy, best)
+    return best[min(range(len(best)), key=lambda k: (lengths[k], k))]
 
 
 def _at(value: str, things: Things) -> str:
@@ -1026,7 +1062,10 @@ def _back_to(phrase: Phrase | None, themes: Sequence[str], bindings: Sequence[Bi
             places[source] = None
             continue
         lay = next((f.args[1] for f in sorted(things.facts, key=str) if f.predicate == "in" and f.args[0] == theme),
-                   None)
+                   None) if takers else None      # held from the start: no thing the map places (e2e27)
+        if lay is None and m is not None and not takers:     # held from the start: back where such a thing is kept
+            spot = kept_place(things.taxonomy, m.priors, things.class_of(theme), spots_of(m), near=m.robot.xy)
+            lay, later = (spot.name, later or not m.objects) if spot is not None else (None, later)
         if lay is None and m is not None and not m.objects:
             spot = kept_place(things.taxonomy, m.priors, things.class_of(theme), spots_of(m), near=m.robot.xy)
             lay, later = (spot.name, True) if spot is not None else (None, later)
@@ -1039,6 +1078,36 @@ def _back_to(phrase: Phrase | None, themes: Sequence[str], bindings: Sequence[Bi
     if not places:
         raise _located(f"cannot tell where {_back_said(phrase)} is: nothing is put back", phrase, text)
     return tuple(places), later
+
+
+def _fetched_unheard_of(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]], things: Things,
+                        text: str) -> None:
+    """Refuse, on a map, a thing to take up (a frame that picks it up or needs it held: Pick, Bring, Give, Place) of
+    a kind the map knows nothing of — no prior, object or place of it, nor of a kind of it (:attr:`Things.kinds`),
+    and not what the robot holds — where the command says it (e2e27: "bring me the hammer" on a house with none).
+    ``seal run``'s robot would not search for it (its perception knows the map's classes only,
+    :meth:`seal_cli.sim.agent.Agent.absent_from_map`), yet it drove to whatever the frames before asked first; the
+    plan was made and warned about. Said with what the map has of its kind ("a cup" on a map with mugs), the user's
+    next word. A thing looked for (Find, Count, a question) is still answered "not found" by the run; one said to be
+    somewhere ("a beer from the fridge") is looked for there; one put away or back is refused by :func:`_put_away`."""
+    m = things.map
+    phrase = evoked.elements.get("theme")
+    if (m is None or not things.all_kinds or phrase is None or phrase.default or "theme" not in values
+            or not _takes(frame) or values.keys() & {"source", "ground"} or stores(frame, evoked.lexical_unit)):
+        return
+    held = class_key(things.held) if things.held else None
+    taxonomy = things.taxonomy
+    for value in values["theme"]:
+        cls = things.class_of(value)
+        if (value in things.fixed or value in things.people or cls in ("person", held) or cls in things.kinds
+                or any(taxonomy.is_a(k, cls) is True for k in things.kinds)):
+            continue
+        kin = taxonomy.kin(cls)
+        alike = sorted(k for k in things.kinds if kin is not None and k in kin[1])
+        has = f"; of its kind ({kin[0]}) it has: {', '.join(_words(k) for k in alike)}" if kin and alike else ""
+        raise _located(f"the {_words(m.name)} knows no {_words(cls)} (no prior, object or place of one), so the "
+                       f"robot would not find one to {' '.join(words_of(evoked.lexical_unit))}{has}; say something "
+                       "the house has", phrase, text)
 
 
 def _takes(frame: Frame) -> bool:
@@ -1275,6 +1344,9 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
     if vocabulary is not None:      # the names a vocabulary gives its classes name them too
         things.synonyms = {class_key(c): tuple(n) for c, n in zip(vocabulary.classes, vocabulary.synonyms,
                                                                    strict=True)}
+        if map is not None and getattr(vocabulary, "house", False):    # the map's classes, objects' too
+            things.kinds |= {class_key(c) for c in vocabulary.classes}
+            things.all_kinds = True
     for frame in library:
         for element in frame.elements:
             if element.default is not None:
@@ -1286,6 +1358,8 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
         things.named_before = [*things.named_before, *_people_named(bindings, things)]
     commanded = commanded_frames(parse, library, things)
     _the_ones_said_where(commanded, things)
+    the_ones_not_there(commanded, things)
+    the_nearest_ones(commanded, things)
     state = things.state(holding)
     changed: dict[Fact, str] = {}  # a fact an earlier done command made true or false → that command
     for text, binding in executed:
@@ -1330,6 +1404,86 @@ def _the_ones_said_where(commanded: Sequence[Binding], things: Things) -> None:
                       and n not in things.fixed and things.lies_in(n, source)), None)
         if there is not None:
             things.swap(theme, there)
+
+
+def the_ones_not_there(commanded: Sequence[Binding], things: Things) -> None:
+    """A thing put on or in a place where one of its kind lies already, on a map with another of the kind elsewhere, is
+    that other one (e2e27): "put the book back on the shelf", a book on the shelf and one on the nightstand, asks for
+    the nightstand's; nobody asks for what is so already (a room said as the goal is left as it was: one may lie on
+    its floor or any place of it, and "it is in the kitchen already" is the likelier reading). The command's name of
+    it (``book``, the map's first book) trades names with the first other thing of its class that lies somewhere
+    else, is named by no frame of the command and is not what the robot holds. Only for the first frame that names
+    the thing, when that frame takes it up (it needs it held: a Place, a Bring) and says no source
+    (:func:`_the_ones_said_where` settles those), and the robot does not hold one of the kind (it would put down the
+    one it holds). Without it the plan was empty
+    ("Place(theme=book, goal=bookshelf_1) is not done: ... holds already"). ``seal run``'s robot, which knows no
+    thing until it sees it, does the same when it sees one lying there (:meth:`seal_cli.sim.agent.Agent.already_so`)."""
+    if things.map is None:
+        return
+    used = {v for b in commanded for _, v in b.values}
+    key = class_key(things.held) if things.held else None
+    settled: set[str] = set()
+    for binding in commanded:
+        theme, goal = binding.elements.get("theme"), binding.elements.get("goal")
+        if theme is None or theme in settled:
+            continue
+        settled.add(theme)
+        if (goal is None or not things.is_place(goal) or "source" in binding.elements
+                or not binding.frame.needs_held("theme")
+                or theme in things.fixed or theme in things.people or theme not in things.classes
+                or things.classes[theme] == key or not things.lies_in(theme, goal)):
+            continue
+        cls = things.classes[theme]
+        other = next((n for n, c in things.classes.items() if c == cls and n != theme and n not in used
+                      and n not in things.fixed and n in things.points and not things.lies_in(n, goal)), None)
+        if other is not None:
+            things.swap(theme, other)
+
+
+def the_nearest_ones(commanded: Sequence[Binding], things: Things) -> None:
+    """A thing to take of a kind the map has several of, lying in places of one class, that the command does not tell
+    apart ("get me the milk", a fridge in the shop and one in the kitchen) is the one in the place the robot drives
+    to soonest from where it will be (where the frames before leave it, else where it starts), as ``seal run``'s
+    robot takes it: it knows no thing before it sees it, its prior is the same at places of one class, so it looks in
+    the nearest first (e2e27: the plan took the shop's milk, the map's first, the run the kitchen's, 4 m nearer). The
+    command's name trades names with that one. Left as the map lists them where the places differ in class: the
+    run weighs a prior against a drive, which the plan cannot tell (docs/planning.md). Only the first frame naming
+    the thing, when it takes it up and says no source, and the thing is not what the robot holds."""
+    from seal_cli.maps.reach import drive_lengths
+
+    m = things.map
+    if m is None:
+        return
+    used = {v for b in commanded for _, v in b.values}
+    key = class_key(things.held) if things.held else None
+    settled: set[str] = set()
+    for index, binding in enumerate(commanded):
+        theme = binding.elements.get("theme")
+        if theme is None or theme in settled:
+            continue
+        settled.add(theme)
+        if ("source" in binding.elements or not _takes(binding.frame) or theme in things.fixed
+                or theme in things.people or theme not in things.classes or things.classes[theme] == key):
+            continue
+        cls = things.classes[theme]
+        lying = {n: _lies_on(n, things) for n, c in things.classes.items()
+                 if c == cls and n not in things.fixed and (n == theme or n not in used)}
+        places = {p for p in lying.values() if p is not None}
+        if len(lying) < 2 or None in lying.values() or len({things.class_of(p) for p in places}) != 1 \
+                or len(places) < 2:
+            continue
+        start = _robot_at(binding.frame, "source", {}, commanded[:index], things)
+        order = sorted(places)
+        lengths = dict(zip(order, drive_lengths(m, start[0] if start else m.robot.xy, order), strict=True))
+        best = min(lying, key=lambda n: (lengths[lying[n] or ""], n != theme))
+        if best != theme and lengths[lying[best] or ""] < lengths[lying[theme] or ""]:
+            things.swap(theme, best)
+
+
+def _lies_on(name: str, things: Things) -> str | None:
+    """The place of the map a thing lies in or on, by the map (None: on a room's floor, or not placed)."""
+    return next((f.args[1] for f in things.facts if f.predicate == "in" and f.args[0] == name
+                 and things.is_place(f.args[1])), None)
 
 
 def chosen_among(commanded: Sequence[Binding], things: Things) -> list[str]:

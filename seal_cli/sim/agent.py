@@ -42,6 +42,7 @@ from seal_cli.frames.library import Library
 from seal_cli.frames.model import Action, Binding, Fact
 from seal_cli.frames.said import said_words, shown
 from seal_cli.frames.taxonomy import class_key
+from seal_cli.language.morphology import plural_of
 from seal_cli.maps.model import SPEAKER, Map
 from seal_cli.maps.navigation import ROBOT_RADIUS, Cell, Grid
 from seal_cli.planning.grounding import kind_of, spoken
@@ -198,6 +199,14 @@ class Agent:
         """Things the robot has put where a frame wanted them: not to be taken away again."""
         self.chosen: dict[str, str] = {}
         """The instance chosen for each name a frame uses, across frames (open *this* cabinet, put into it)."""
+        self.there_already: dict[Binding, str] = {}
+        """Frames that put a thing where the robot saw one of its kind lying already, before the command took one
+        ("put the book back on the shelf", a book on the shelf): another one is meant, so the robot looks for it;
+        what it would have said ("book_1 is on bookshelf_1 already") is said only if it finds no other (e2e27)."""
+        self.not_meant: dict[str, set[str]] = {}
+        """The instances a name does not stand for, by name: the one seen where a frame puts its kind already."""
+        self.several: set[str] = set()
+        """The classes the command names several things of ("all the cups", "two plates"): each is one of them."""
         self.looks: list[tuple[float, float, float]] = []
         self.inspected: set[str] = set()
         """Places the robot has looked into or onto from within reach: it has seen all they hold."""
@@ -343,7 +352,7 @@ class Agent:
             room, place = self.room(where), self._place_of(where)
             free = [k.id for k in self.known.values() if k.cls == self.class_of(thing) and k.movable
                     and k.id in self.world.items and not self.world.held_chain(k.id)
-                    and not self._chosen_as_other(k.id, thing)]
+                    and not self._chosen_as_other(k.id, thing) and k.id not in self.not_meant.get(thing, ())]
             if room is not None:      # on no place there (the room's floor), or in or on a place there
                 there = [i for i in free if bool(room.contains([self.world.position(i)])[0])]
                 loose = [i for i in there if self._place_of(self.world.items[i].parent or "") is None]
@@ -367,12 +376,32 @@ class Agent:
         if made is None or made.args[0] not in seen:
             return None
         thing, where = made.args
-        self.chosen.setdefault(class_key(thing), seen[thing])   # that one is this name's: not cup_2's too (e2e23)
         room = self.room(where)
         if room is not None:
-            return f"{seen[thing]} is in the {room.name.replace('_', ' ')} already"
-        place = self.world.items[seen[thing]].parent or where
-        return f"{seen[thing]} is {'in' if self.world.hollow(self.world.items[place]) else 'on'} {place} already"
+            said = f"{seen[thing]} is in the {room.name.replace('_', ' ')} already"
+        else:
+            place = self.world.items[seen[thing]].parent or where
+            said = f"{seen[thing]} is {'in' if self.world.hollow(self.world.items[place]) else 'on'} {place} already"
+        if room is None and self._another_meant(binding, thing):    # one lies there: the command means another
+            self.there_already[binding] = said
+            self.not_meant.setdefault(thing, set()).add(seen[thing])
+            self.say("search", f"{said}: looks for another {spoken(self.class_of(thing))} to put there",
+                     target=thing)
+            return None
+        self.chosen.setdefault(class_key(thing), seen[thing])   # that one is this name's: not cup_2's too (e2e23)
+        return said
+
+    def _another_meant(self, binding: Binding, thing: str) -> bool:
+        """Whether a frame that would put ``thing`` where the robot sees one of its kind already means another one
+        (e2e27, as the planner's :func:`seal_cli.planning.problem.the_ones_not_there`): the frame takes the thing up
+        (it needs it held), the command has not chosen one for the name yet, and the robot holds none of its kind (it
+        would put down the one it holds), and the command names one thing of its kind (each of "all the cups" is one of
+        them); asked once a frame."""
+        held = self.held()
+        return (binding not in self.there_already and class_key(thing) not in self.chosen
+                and self.class_of(thing) not in self.several
+                and binding.frame.needs_held("theme") and binding.elements.get("theme") == thing
+                and (held is None or held.key != self.class_of(thing)))
 
     def _open_already(self, binding: Binding) -> str | None:
         """"fridge_1 is already closed (as the map has it)", for an Open or a Close of a place of the map that is
@@ -520,6 +549,11 @@ class Agent:
         self.policy.begin(self)
         self.look_round(self.world.robot.pose[:2])  # where it starts, all round (a narrow sensor turns)
         todo = list(commanded)
+        names: dict[str, set[str]] = {}
+        for binding in todo:
+            for _, value in binding.values:
+                names.setdefault(self.class_of(value), set()).add(class_key(value))
+        self.several = {cls for cls, said in names.items() if len(said) > 1}
         while todo and (already := self.already_so(todo[0])) is not None:
             skipped = todo.pop(0)
             self.say("done", f"{already}, so {shown(skipped)} needs no doing", frame=str(skipped))
@@ -581,6 +615,13 @@ class Agent:
                     return self._result(False, failed, plan, executed, Reason.CANNOT)
                 continue
             stop = self.exhausted()
+            if not stop and outcome.reason is Reason.NOT_FOUND and todo and todo[0] in self.there_already:
+                skipped = todo.pop(0)       # no other one anywhere: the one seen there was meant after all
+                self.say("done", f"{self.there_already[skipped]} and it found no other, so {shown(skipped)} needs "
+                         "no doing", frame=str(skipped))
+                if (failed := self._replan(todo, self.resync(self.state))) is not None:
+                    return self._result(False, failed, plan, executed, Reason.CANNOT)
+                continue
             if stop or isinstance(outcome, Fatal):
                 reason = stop or outcome.message
                 self.say("give_up", f"gives up: {reason}")
@@ -678,7 +719,7 @@ class Agent:
         if held is not None and held.key == key and held.id not in others:
             return held.id
         candidates = [k for k in self.instances(key) if k.id not in self.unreachable and k.id not in others
-                      and not self.world.held_chain(k.id)]
+                      and not self.world.held_chain(k.id) and k.id not in self.not_meant.get(value, ())]
         previous = self.chosen.get(name)
         taking = role == "theme" and any(a.name == "pick" for a in binding.actions)
         if taking:   # a thing put in place is not taken again, unless the command names it again
@@ -1010,6 +1051,8 @@ class Agent:
                     return self.go_to(holder, binding)      # handed to someone before: taken back from them
                 if self.todo and binding != self.todo[0] and (already := self.already_so(self.todo[0])):
                     return Outcome(False, already, Reason.ALREADY)   # seen where the command wants it
+                if target in self.not_meant.get(value, ()):     # seen where it is to go: another one is meant
+                    continue
                 cell = self.policy.stand(self, self.known[target])
                 if cell is None:
                     self.unreachable.add(target)
@@ -1854,14 +1897,14 @@ class Agent:
             where, found, complete = self.look_over(ground)
             n = sum(1 for k in found if k.cls == key) + len(self._fixed_in(key, ground))
             note = "" if complete else f" seen, but it could not look all over it ({complete.message})"
-            return f"{n} {noun}{'' if n == 1 else 's'} {where}{note}{self._none_known(key, noun, n)}"
+            return f"{n} {noun if n == 1 else plural_of(noun)} {where}{note}{self._none_known(key, noun, n)}"
         if ground is None and key in self.kept and (spots := self.kept_spots(value)):
             return self._count_where_kept(key, noun, spots)
         if ground is None and self.sweeper is not None and self.scene.map.rooms:
             return self._count_in_house(key, noun)
         n = sum(class_key(d.cls) == key for d in self.world.observe())
         where = f" in the {ground.replace('_', ' ')}" if ground else " in view"
-        return f"{n} {noun}{'' if n == 1 else 's'}{where}"
+        return f"{n} {noun if n == 1 else plural_of(noun)}{where}"
 
     def _count_in_house(self, key: str, noun: str) -> str:
         """"How many cups are there?": every room looked all over (nearest room first, as the crow
@@ -1880,7 +1923,7 @@ class Agent:
                 break
         n = sum(1 for k in self.known.values() if k.cls == key and k.id in self.world.items)
         note = f" seen, but it could not look all over {', '.join(unseen)}" if unseen else ""
-        return f"{n} {noun}{'' if n == 1 else 's'} in the house{note}{self._none_known(key, noun, n)}"
+        return f"{n} {noun if n == 1 else plural_of(noun)} in the house{note}{self._none_known(key, noun, n)}"
 
     def kept_spots(self, value: str) -> list[str]:
         """Where the map's priors keep a thing of this kind: every place the prior names (by its name or its
@@ -1919,7 +1962,7 @@ class Agent:
                 break
         n = sum(1 for k in self.known.values() if k.cls == key and k.id in self.world.items)
         note = f" seen, but it could not look at {', '.join(short)}" if short else ""
-        return f"{n} {noun}{'' if n == 1 else 's'} where the map keeps them{note}"
+        return f"{n} {noun if n == 1 else plural_of(noun)} where the map keeps them{note}"
 
     def _is_place_class(self, key: str) -> bool:
         """Whether a class is one of the map's places' (a sofa, a bed): known from the map, not sought."""
@@ -1929,9 +1972,9 @@ class Agent:
         """How many places of a class the map has, in a room or in the house, without a look."""
         if ground is None:
             n = sum(1 for k in self.known.values() if not k.movable and k.cls == key and k.id in self.world.items)
-            return f"{n} {noun}{'' if n == 1 else 's'} in the house, by the map"
+            return f"{n} {noun if n == 1 else plural_of(noun)} in the house, by the map"
         n = len(self._fixed_in(key, ground))
-        return f"{n} {noun}{'' if n == 1 else 's'} in the {ground.replace('_', ' ')}, by the map"
+        return f"{n} {noun if n == 1 else plural_of(noun)} in the {ground.replace('_', ' ')}, by the map"
 
     def _fixed_in(self, key: str, ground: str) -> list[str]:
         """The places of a class in a room ("how many beds are in the bedroom?"): the map says where

@@ -73,7 +73,9 @@ def test_a_kind_the_map_knows_nothing_of_is_warned_about_and_said_absent_at_once
     put = runner.invoke(app, ["run", "--map", "apartment", "put the apple in the bowl"])
     assert put.exit_code == 1 and "Traceback" not in put.output
     assert "column 18: the apartment has no bowl (" in put.output
-    report = run_json("bring me the bowl", "--max-steps", "40")
+    fetched = runner.invoke(app, ["run", "--map", "apartment", "bring me the bowl"])   # e2e27: refused where it is said
+    assert fetched.exit_code == 1 and "column 10: the apartment knows no bowl (" in fetched.output
+    report = run_json("find the bowl", "--max-steps", "40")       # looked for: said absent at once
     assert not report["completed"] and report["path_m"] == 0 and report["warnings"] == [
         "the map apartment knows nothing of bowl (no prior, object or place names it): seal run will say so "
         "without searching the house"]
@@ -131,7 +133,7 @@ def test_the_shipped_suite_is_large_and_its_plans_are_right(library: object) -> 
 
     cases = [c for c in load_cases() if c.map == "apartment"]
     houses = {*MAPS, "townhouse", "office_floor", "cafe", "clinic", "terrace", "farmhouse", "bungalow", "lodge",
-              "flat", "carehome", "student_house", "guesthouse", "studio"}
+              "flat", "carehome", "student_house", "guesthouse", "studio", "corner_shop"}
     assert len(load_cases()) >= 100 and {c.map for c in load_cases()} == houses
     the_map = load_map(Path(__file__).resolve().parents[2] / "maps" / "apartment.yaml")
     wrong = [(c.text, got) for c in cases for right, got in [plan_steps(c, the_map, library)] if not right]
@@ -154,7 +156,7 @@ def test_the_example_houses_plans_are_right(library: object) -> None:
     from seal_cli.maps.formats.map_server import load_map
 
     houses = ("townhouse", "office_floor", "cafe", "clinic", "terrace", "farmhouse", "bungalow", "lodge", "flat",
-              "carehome", "student_house", "guesthouse", "studio")
+              "carehome", "student_house", "guesthouse", "studio", "corner_shop")
     cases = [c for c in load_cases() if c.map in houses]
     assert len(cases) >= 120 and all(c.file is not None and Path(c.file).is_file() for c in cases)
     maps = {c.map: load_map(c.file) for c in cases if c.file is not None}
@@ -446,7 +448,9 @@ def test_a_thing_not_in_the_house_ends_naming_what_the_map_has_of_its_kind() -> 
     """"bring me a cup" on the bungalow, which has a mug and no cup: the run says at once that the map names no
     cup, and names the mug and the kettle (the taxonomy's containers the map has), without taking either for a
     cup (e2e20; it searched the whole house before, 62.39 m, and named the mug it saw)."""
-    result = runner.invoke(app, ["run", "--map", "bungalow", "bring me a cup", *FAST])
+    refused = runner.invoke(app, ["run", "--map", "bungalow", "bring me a cup", *FAST])   # e2e27: before the run
+    assert refused.exit_code == 1 and "of its kind (container) it has: kettle, mug" in refused.output
+    result = runner.invoke(app, ["run", "--map", "bungalow", "find a cup", *FAST])
     report = json.loads(result.stdout)
     assert result.exit_code == 1 and report["why"] == "not_found" and report["path_m"] == 0.0
     assert report["reason"].startswith("no cup found: the bungalow map names none")

@@ -41,12 +41,13 @@ def test_run_json_is_reproducible_and_holding_skips_the_pick() -> None:
 
 def test_run_refuses_what_cannot_be_done() -> None:
     result = runner.invoke(app, ["run", "--map", "apartment", "pick up the unicorn", "--max-steps", "30",
-                                 "--particles", "50"])
-    assert result.exit_code == 1 and "not done" in result.output
-    json_run = runner.invoke(app, ["run", "--map", "bungalow", "bring me the unicorn", "--json"])
+                                 "--particles", "50"])      # (e2e27: refused before the run, where it is said)
+    assert result.exit_code == 1 and "column 9: the apartment knows no unicorn" in result.output
+    assert "Traceback" not in result.output
+    json_run = runner.invoke(app, ["run", "--map", "bungalow", "find the unicorn", "--json"])
     assert json_run.exit_code == 1 and not json.loads(json_run.stdout)["completed"]      # SPEC: exit 1, why on stderr
     assert json_run.stderr.startswith("not done: no unicorn found")
-    plain_run = runner.invoke(app, ["run", "--map", "bungalow", "bring me the unicorn"])
+    plain_run = runner.invoke(app, ["run", "--map", "bungalow", "find the unicorn"])
     assert plain_run.exit_code == 1 and "not done" not in plain_run.stdout and "not done" in plain_run.stderr
     bad = runner.invoke(app, ["run", "--map", "no_such_map.yaml", "stir the cup"])
     assert bad.exit_code == 1 and "Traceback" not in bad.output

@@ -74,3 +74,13 @@ def test_a_corrupt_or_unwritable_table_cache_falls_back_to_the_sorted_lines(tmp_
 ])
 def test_a_noun_with_a_plural_only(word: str, only: bool) -> None:
     assert plural_only(word) is only
+
+
+@pytest.mark.parametrize(("noun", "plural"), [
+    ("box", "boxes"), ("shelf", "shelves"), ("cup", "cups"), ("ice cream", "ice creams"), ("glass", "glasses"),
+    ("scissors", "scissors"), ("dish", "dishes"),
+])
+def test_the_plural_of_a_noun(noun: str, plural: str) -> None:
+    from seal_cli.language.morphology import plural_of
+
+    assert plural_of(noun) == plural

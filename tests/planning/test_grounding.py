@@ -75,8 +75,8 @@ def test_what_the_map_lacks_is_refused_where_it_is_said(library: Library, text: 
 
 
 def test_what_the_map_knows_nothing_of_is_a_warning(library: Library) -> None:
-    # a thing to take or find is sought, never refused at plan time (where it goes must be known: the test above)
-    plan = plan_text("bring me the bowl", library, map=load_map(APARTMENT))
+    # a thing to find is sought, never refused at plan time (where it goes must be known: the test above)
+    plan = plan_text("find the bowl", library, map=load_map(APARTMENT))
     assert plan.warnings == ("the map apartment knows nothing of bowl (no prior, object or place names it): "
                              "seal run will say so without searching the house",)     # (e2e20: it searched)
     assert plan.to_json()["warnings"] == list(plan.warnings)

@@ -58,9 +58,12 @@ def test_a_thing_only_looked_at_is_refused_as_a_fixture_the_map_lacks(library: L
         steps(text, library, "apartment")
 
 
-def test_a_thing_carried_is_still_searched_for(library: Library) -> None:
-    """Bringing a tv carries it: only its own words could make it furniture, so it is searched for."""
-    assert steps("bring me the tv", library, "apartment") == ["Pick(theme=tv)", "Bring(theme=tv, recipient=me)"]
+def test_a_thing_carried_is_not_furniture_but_a_thing_the_map_knows_nothing_of(library: Library) -> None:
+    """Bringing a tv carries it: only its own words could make it furniture, so it is not refused as furniture the
+    map lacks; the apartment knows no tv at all, so it is refused as such at plan time (e2e27: it was planned and the
+    run said so without searching)."""
+    with pytest.raises(SealError, match=r"column 10: the apartment knows no tv \(no prior, object or place of one\)"):
+        steps("bring me the tv", library, "apartment")
 
 
 @pytest.mark.parametrize(("text", "plan"), [
@@ -82,7 +85,6 @@ def test_home_is_the_whole_house_not_a_place_or_a_state(library: Library, text: 
                                              "source=mini_fridge_1)", "Bring(theme=water_bottle, recipient=me)"]),
     ("get the biscuits", "bungalow", ["Pick(theme=biscuit_tin)"]),     # was Pick, Place, Pick of two biscuits
     ("get the biscuit out of the tin", "bungalow", ["Pick(theme=biscuit, source=biscuit_tin)"]),    # what is inside
-    ("bring me some water", "apartment", ["Pick(theme=water)", "Bring(theme=water, recipient=me)"]),   # none: sought
 ])
 def test_a_thing_the_map_knows_only_in_its_container_is_the_container(library: Library, text: str, house: str,
                                                                      plan: list[str]) -> None:
@@ -90,7 +92,7 @@ def test_a_thing_the_map_knows_only_in_its_container_is_the_container(library: L
 
 
 @pytest.mark.parametrize(("text", "house", "plan"), [
-    ("on your way back, pick up the post", "apartment", ["Pick(theme=post)"]),
+    ("on your way back, pick up the spoon", "apartment", ["Pick(theme=spoon)"]),   # (e2e27: no post on the map)
     ("on the way to the kitchen, grab the cup", "apartment", ["Pick(theme=cup)"]),
     ("see Ben to the kitchen", "apartment", ["Guide(theme=ben, goal=kitchen)"]),
     ("please see Helen to the exam room", "clinic", ["Guide(theme=helen, goal=exam_room)"]),

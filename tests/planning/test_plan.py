@@ -532,7 +532,7 @@ def test_cli_json_is_the_spec_document() -> None:
 
 
 def test_cli_prints_a_numbered_list_with_reasons() -> None:
-    result = runner.invoke(app, ["plan", "heat the egg and put it in the fridge", "--map", "apartment"])
+    result = runner.invoke(app, ["plan", "heat the cup and put it in the fridge", "--map", "apartment"])
     assert result.exit_code == 0, result.output
     lines = [line.split() for line in result.stdout.splitlines()]
     assert [line[:2] for line in lines[:4]] == [["1.", "Pick"], ["2.", "Heat"], ["3.", "Open"], ["4.", "Place"]]

@@ -53,3 +53,41 @@ def test_return_puts_the_thing_back_where_it_was_taken_from(library: Library, te
 ])
 def test_return_with_someone_or_nothing_said_is_as_before(library: Library, text: str, last: str) -> None:
     assert _plan(text, library)[-1] == last
+
+
+def test_take_back_is_a_put_back_and_bring_back_a_bringing_here(library: Library) -> None:
+    """e2e27: "take" moves a thing away from the speaker, "bring" toward them; with a bare "back" and no one and
+    nowhere said, "take it back" puts it back, "bring it back" brings it here."""
+    thing = Phrase("the hammer", "hammer", "hammer", "thing", span=(5, 15))
+    taken = Evoked("Pick", "take", (0, 20), {"theme": thing})            # "take the hammer back"
+    before = Evoked("Pick", "take", (0, 20), {"theme": replace_span(thing, 10)})   # "take back the hammer"
+    plain = Evoked("Pick", "take", (0, 15), {"theme": thing})            # "take the hammer": a taking up
+    assert [e.lexical_unit for e in returned([taken], library, "take the hammer back")] == ["put back"]
+    assert [e.lexical_unit for e in returned([before], library, "take back the hammer")] == ["put back"]
+    assert returned([plain], library, "take the hammer") == (plain,)
+    backpack = Evoked("Pick", "take", (0, 16), {"theme": Phrase("the backpack", "backpack", None, span=(5, 17))})
+    assert returned([backpack], library, "take the backpack") == (backpack,)     # "back" only as a word of its own
+    tom = Evoked("Pick", "take", (0, 13), {"theme": Phrase("Tom", "tom", None, "person", span=(5, 8))})
+    assert returned([tom], library, "take Tom back") == (tom,)                  # a person: not put back
+
+
+def replace_span(phrase: Phrase, start: int) -> Phrase:
+    from dataclasses import replace
+
+    assert phrase.span is not None
+    return replace(phrase, span=(start, start + phrase.span[1] - phrase.span[0]))
+
+
+@pytest.mark.parametrize(("text", "holding", "steps"), [
+    ("take the mug back", "mug", ["Open(theme=cupboard_1)", "Place(theme=mug, goal=cupboard_1)"]),   # held: kept
+    ("take back the mug", "mug", ["Open(theme=cupboard_1)", "Place(theme=mug, goal=cupboard_1)"]),
+    ("bring the mug back", "mug", ["Bring(theme=mug, recipient=me)"]),          # toward the speaker
+    ("bring back the mug", "mug", ["Bring(theme=mug, recipient=me)"]),
+    ("take the mug back to the balcony", "mug", ["Bring(theme=mug, goal=balcony)"]),    # a place said: as said
+    ("take the remote to the kitchenette, then take it back", None,             # taken: back where it lay
+     ["Pick(theme=remote, source=sofa_1)", "Bring(theme=remote, goal=kitchenette)",
+      "Pick(theme=remote, source=kitchenette)", "Place(theme=remote, goal=sofa_1)"]),
+])
+def test_taking_back_and_bringing_back_on_a_map(library: Library, text: str, holding: str | None,
+                                                steps: list[str]) -> None:
+    assert _plan(text, library, holding) == steps

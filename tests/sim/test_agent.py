@@ -449,17 +449,23 @@ def test_a_thing_handed_over_is_taken_back_for_a_later_frame(library: Library) -
 
 
 @pytest.mark.parametrize(("text", "said"), [
-    ("bring me a cup", "no cup found: the bungalow map names none (no prior, object or place of one), so the robot "
-                       "did not search the house; of its kind (container) the map has: kettle, mug"),
-    ("bring me the unicorn", "no unicorn found: the bungalow map names none (no prior, object or place of one), so "
-                             "the robot did not search the house"),
+    ("find a cup", "no cup found: the bungalow map names none (no prior, object or place of one), so the robot "
+                   "did not search the house; of its kind (container) the map has: kettle, mug"),
+    ("find the unicorn", "no unicorn found: the bungalow map names none (no prior, object or place of one), so "
+                         "the robot did not search the house"),
 ])
 def test_a_thing_the_map_names_none_of_is_said_at_once(library: Library, text: str, said: str) -> None:
     """The robot's perception knows the map's classes only, so a whole-house search for a cup on the bungalow (no
     prior, object or place of one) could only end in "no cup": it drove 62.39 m for that before (e2e20). It says so
-    before moving, with the kinds of the map like it; a person nobody placed is still searched for."""
+    before moving, with the kinds of the map like it; a person nobody placed is still searched for. (e2e27: a thing
+    to fetch, "bring me a cup", is refused before the run starts, where it is said; one looked for is said so.)"""
     from seal_cli import pipeline
+    from seal_cli.errors import SealError
     from seal_cli.maps.formats.map_server import load_map
+
+    with pytest.raises(SealError, match=r"column 10: the bungalow knows no cup .* it has: kettle, mug"):
+        pipeline.run_on_map(load_map("bungalow"), "bring me a cup", library, make_policy("sefm", 50),
+                            rng=np.random.default_rng(0))
 
     _, result = pipeline.run_on_map(load_map("bungalow"), text, library, make_policy("sefm", 50),
                                     rng=np.random.default_rng(0))
@@ -563,8 +569,8 @@ def test_someone_not_in_the_house_is_reported_back_to_the_speaker(library: Libra
     assert lines[told].count("Raj") == 1 and "no Raj" not in lines[told]      # said once (e2e23)
     assert lines[told].startswith("tells the speaker that it did not find Raj (searched the whole house; looked all")
     assert np.hypot(*(np.asarray(agent.world.robot.pose[:2]) - m.speaker_at)) < 1.5
-    agent, result = pipeline.run_on_map(m, "bring me the unicorn", library, make_policy("oracle"),
-                                        rng=np.random.default_rng(0))
+    agent, result = pipeline.run_on_map(m, "find the unicorn", library, make_policy("oracle"),   # (e2e27: a find;
+                                        rng=np.random.default_rng(0))           # "bring me" it is refused at once)
     assert not result.completed and not any(r.text.startswith("tells the speaker") for r in agent.records)
 
 
@@ -736,3 +742,25 @@ def test_put_back_after_carrying_it_elsewhere_is_where_it_was_first_taken_from(l
     assert agent.world.items["key_1"].parent == "dining_table_1"
     assert agent.taken_from["key_1"] == "dining_table_1" and agent.picked_from["key_1"] == "coat_rack_1"
     assert "key_1 lay on dining_table_1: puts it back there" in " ".join(r.text for r in heard)
+
+
+def test_a_thing_seen_where_it_is_to_go_already_means_another_one(library: Library) -> None:
+    """e2e27: "put the book back on the shelf" on the studio saw book_1 on the shelf and stopped ("needs no
+    doing"); a book on the shelf is not what the user asks to put there, so the robot looks for another one and puts
+    it there, and says "needs no doing" only when it finds no other."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    heard: list[Record] = []
+    agent, result = pipeline.run_on_map(load_map("studio"), "put the book back on the shelf", library,
+                                        SeFMPolicy(particles=50), rng=np.random.default_rng(0),
+                                        observers=[heard.append])
+    assert result.completed, result.reason
+    said = [r.text for r in heard]
+    assert "book_1 is on bookshelf_1 already: looks for another book to put there" in said
+    assert {agent.world.items["book_1"].parent, agent.world.items["book_2"].parent} == {"bookshelf_1"}
+    assert "put book_2 on bookshelf_1" in said
+    alone, result = pipeline.run_on_map(load_map("studio"), "put the remote on the sofa", library,   # the only one
+                                        SeFMPolicy(particles=50), rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    assert any(r.text.endswith("so Place(theme=remote, goal=sofa_1) needs no doing") for r in alone.records)
