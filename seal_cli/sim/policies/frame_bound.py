@@ -20,7 +20,7 @@ suite says which approximation costs more there (docs/benchmarks.md, "This round
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Collection, Sequence
 
 import numpy as np
 
@@ -54,14 +54,16 @@ class FrameDPPolicy(PriorOptimalPolicy):
             self.looked.add(self.chosen.name)
             self.chosen = None
 
-    def _belief(self, cls: str, regions: list[Region]) -> np.ndarray:
-        w = self.weights(cls)
+    def _belief(self, cls: str, regions: list[Region],
+                weights: Callable[[str], np.ndarray] | None = None) -> np.ndarray:
+        w = (weights or self.weights)(cls)
         total = float(w.sum())
         return np.array([float(w[g.cells].sum()) / total if total > 0 else 0.0 for g in regions])
 
-    def _reach(self, cls: str, regions: list[Region], nodes: np.ndarray) -> np.ndarray:
+    def _reach(self, cls: str, regions: list[Region], nodes: np.ndarray,
+               weights: Callable[[str], np.ndarray] | None = None) -> np.ndarray:
         """Per region, the expected lattice metres from its view to the thing of ``cls`` if it is there."""
-        w = self.weights(cls)
+        w = (weights or self.weights)(cls)
         lattice = self.search.lattice
         out = np.zeros(len(regions))
         for k, g in enumerate(regions):
@@ -76,14 +78,22 @@ class FrameDPPolicy(PriorOptimalPolicy):
         view = self._dp_view(agent, binding, target)
         return view if view is not None else super().next_view(agent, binding, target)
 
-    def _dp_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
+    def problem_of(self, agent: Agent, binding: Binding, target: str,
+                   weights: Callable[[str], np.ndarray] | None = None,
+                   looked: Collection[str] | None = None) -> tuple[Problem, list[Region], str, str | None] | None:
+        """The programme's problem from where the robot stands: the regions it weighs (at most
+        :data:`MAX_REGIONS`, those holding most of the two beliefs), the first thing's class and the second
+        stop's (None: none). ``weights``: the belief of a class per free cell (default: the exact posterior);
+        ``looked``: the regions already looked at (default: those this run looked from). None: no region holds
+        anything of either."""
         stops = self.search.targets(agent, binding, target)
         first = stops[0][0]
         second = stops[1] if len(stops) > 1 else None
         here = agent.robot_cell()
-        regions = [g for g in self.search.regions if g.name not in self.looked and g.view != here]
-        p1 = self._belief(first, regions)
-        p2 = self._belief(second[0], regions) if second is not None and second[1] is None else None
+        done = self.looked if looked is None else looked
+        regions = [g for g in self.search.regions if g.name not in done and g.view != here]
+        p1 = self._belief(first, regions, weights)
+        p2 = self._belief(second[0], regions, weights) if second is not None and second[1] is None else None
         keep = np.argsort(-(p1 + (p2 if p2 is not None else 0.0)), kind="stable")[:MAX_REGIONS]
         keep = keep[(p1[keep] > 0) | ((p2[keep] > 0) if p2 is not None else False)]
         if not len(keep):
@@ -97,18 +107,26 @@ class FrameDPPolicy(PriorOptimalPolicy):
         if second is not None and second[1] is not None and second[2]:
             at = lattice.node_of(np.asarray([agent.grid.point(c) for c in second[2]]))
             after = lattice.distance[np.ix_(nodes[:-1], at)].min(axis=1)
-        problem = Problem(distance, p1[keep], self._reach(first, regions, nodes),
+        problem = Problem(distance, p1[keep], self._reach(first, regions, nodes, weights),
                           None if p2 is None else p2[keep],
-                          None if p2 is None else self._reach(second[0], regions, nodes) if second else None,
+                          None if p2 is None else self._reach(second[0], regions, nodes, weights) if second else None,
                           after)
+        return problem, regions, first, None if second is None else second[0]
+
+    def _dp_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
+        made = self.problem_of(agent, binding, target)
+        if made is None:
+            return None
+        problem, regions, first, second_cls = made
+        p1, p2 = problem.first, problem.second
         solution = solve(problem)
         if solution.region is None:
             return None
         g = regions[solution.region]
         self.chosen = g
-        shares = f"{first} {p1[keep][solution.region]:.2f}"
-        if p2 is not None and second is not None:
-            shares += f" and {second[0]} {p2[keep][solution.region]:.2f}"
+        shares = f"{first} {p1[solution.region]:.2f}"
+        if p2 is not None and second_cls is not None:
+            shares += f" and {second_cls} {p2[solution.region]:.2f}"
         field_ = agent.distances()
         why = (f"{g.name}: {shares} there, {field_[g.view]:.1f} m "
                f"(expected {solution.expected_m:.1f} m to reach both, by the exact programme over regions)")

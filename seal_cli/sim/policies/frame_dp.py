@@ -39,7 +39,7 @@ from functools import cache
 
 import numpy as np
 
-__all__ = ["SPENT", "Problem", "Solution", "solve"]
+__all__ = ["SPENT", "Problem", "Solution", "one_at_a_time", "solve"]
 
 SPENT = 1e-3
 """Below this share of its belief left in the regions not looked at, a thing is taken to be beyond the model."""
@@ -94,6 +94,20 @@ def _given(p: np.ndarray, looked: int) -> np.ndarray:
 def solve(problem: Problem) -> Solution:
     """The Bellman recursion over (view, regions looked at, where the second thing is): the optimal first
     region and the expected metres of the optimal adaptive search (the module's model)."""
+    return _programme(problem, one_at_a_time=False)
+
+
+def one_at_a_time(problem: Problem) -> Solution:
+    """The expected metres, under the same model, of the searcher that looks for one thing at a time: its
+    looks for the first thing follow the optimal search for the first thing *alone* (the second stop weighs
+    nothing in the order), while what those looks show of the second thing is kept, as every policy here keeps
+    it; once the first is found, the second is searched for optimally from there. Against :func:`solve` it is
+    what frame context can save in a problem, from its beliefs and metres alone: never less than
+    :func:`solve`'s, equal where the plan's second stop changes no choice."""
+    return _programme(problem, one_at_a_time=True)
+
+
+def _programme(problem: Problem, *, one_at_a_time: bool) -> Solution:
     k = len(problem.first)
     d = problem.distance
     p1 = np.asarray(problem.first, dtype=float)
@@ -124,15 +138,30 @@ def solve(problem: Problem) -> Solution:
         return second_alone(at, looked)
 
     @cache
+    def alone(at: int, looked: int) -> tuple[float, int | None]:
+        """The first thing searched for alone (the second stop weighs nothing): its value and first region."""
+        q1 = _given(p1, looked)
+        if q1.sum() < SPENT:
+            return 0.0, None
+        best, choice = np.inf, None
+        for u in range(k):
+            if q1[u] > 0 and not (looked >> u) & 1 and np.isfinite(d[at, u]):
+                cost = d[at, u] + q1[u] * e1[u] + (1 - q1[u]) * alone(u, looked | 1 << u)[0]
+                if cost < best - 1e-9:
+                    best, choice = cost, u
+        return (float(best), choice) if choice is not None else (0.0, None)
+
+    @cache
     def value(at: int, looked: int, second: int) -> tuple[float, int | None]:
         q1 = _given(p1, looked)
         if q1.sum() < SPENT:
             return 0.0, None
         q2 = _given(p2, looked) if p2 is not None and second == UNKNOWN else None
         best, choice = np.inf, None
+        fixed = alone(at, looked)[1] if one_at_a_time else None
         for u in range(k):
             worth = q1[u] > 0 or (q2 is not None and q2[u] > 0)
-            if not worth or (looked >> u) & 1 or not np.isfinite(d[at, u]):
+            if not worth or (looked >> u) & 1 or not np.isfinite(d[at, u]) or (one_at_a_time and u != fixed):
                 continue
             seen = looked | 1 << u
             a = float(q1[u])

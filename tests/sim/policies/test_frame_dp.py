@@ -8,7 +8,7 @@ from functools import cache
 import numpy as np
 import pytest
 
-from seal_cli.sim.policies.frame_dp import Problem, solve
+from seal_cli.sim.policies.frame_dp import Problem, one_at_a_time, solve
 
 
 def _by_worlds(problem: Problem) -> float:
@@ -138,6 +138,29 @@ def test_the_region_that_may_hold_both_things_comes_first_though_the_first_thing
     # region 0 first: 2 + 0.6 * 4 (then to region 1 for the cup) + 0.4 * 4 (the spoon in region 1) = 6.0;
     # region 1 first: 2 + 0.6 * (4 to the spoon in region 0, and back 4 only if the look saw the cup) = 5.6
     assert both.region == 1 and both.expected_m == pytest.approx(2 + 0.6 * (4 + 0.5 * 4))
+
+
+def test_one_thing_at_a_time_follows_the_first_things_order_and_pays_for_it() -> None:
+    # the case above: the spoon alone says region 0 first; searched that way the pair costs 6.0, not 5.6
+    d = np.array([[0.0, 4.0, 2.0],
+                  [4.0, 0.0, 2.0],
+                  [2.0, 2.0, 0.0]])
+    reach = np.zeros(2)
+    problem = Problem(d, np.array([0.6, 0.4]), reach, np.array([0.0, 0.5]), reach)
+    greedy = one_at_a_time(problem)
+    assert greedy.region == 0 and greedy.expected_m == pytest.approx(2 + 0.6 * 4 + 0.4 * 4)
+    assert solve(problem).expected_m == pytest.approx(5.6)
+
+
+@pytest.mark.parametrize("second", ["unknown", "known", "none"])
+def test_one_thing_at_a_time_is_never_shorter_than_the_programme(second: str) -> None:
+    rng = np.random.default_rng(11)
+    for _ in range(6):
+        problem = _random_problem(rng, 4, second)
+        best, greedy = solve(problem).expected_m, one_at_a_time(problem).expected_m
+        assert greedy >= best - 1e-9
+        if second == "none":   # nothing after the first thing: the first thing's own order is the optimum
+            assert greedy == pytest.approx(best)
 
 
 def test_a_thing_beyond_every_region_ends_the_model() -> None:
