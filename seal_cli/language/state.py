@@ -83,7 +83,7 @@ from seal_cli.language.morphology import (
 )
 from seal_cli.language.rule import Match
 from seal_cli.language.tags import Tag
-from seal_cli.language.tokens import Word, capitalised
+from seal_cli.language.tokens import CommandError, Word, capitalised
 
 _PUT_IN = frozenset(["in", "on", "inside"])
 """Prepositions (canonical) of where a thing is put, besides those of a path ("into", "onto")."""
@@ -623,7 +623,7 @@ class State:
         low = self.words[i].lower
         if low not in BECAUSE and not ("'" in low and low.split("'")[0] in SUBJECTS and
                                         "'" + low.split("'", 1)[1] in CONTRACTED) and \
-                not (low == "so" and i + 1 < len(self.words) and self.words[i + 1].lower in SUBJECTS):
+                not (low == "so" and i + 1 < len(self.words) and self.words[i + 1].lower in SUBJECTS | {"that"}):
             return 0, ()                 # "stir the porridge *so it doesn't burn*": a purpose, said beside (words31)
         n, spans = self.remark_after(i - 1)
         return (n - 1, spans) if n else (0, ())
@@ -639,6 +639,8 @@ class State:
         while True:
             k = self.vocatives_end(k)
             link = 1 if k < len(words) and words[k].lower in STATEMENT_LINKS and k + 1 < len(words) else 0
+            if link and words[k].lower == "so" and words[k + 1].lower == "that" and k + 2 < len(words):
+                link = 2                 # "stir the porridge *so that it doesn't stick*": a purpose (words32)
             end = self.statement_at(k + link)
             if not end:
                 break
@@ -1498,6 +1500,7 @@ class State:
         if digits and k + 1 < len(words) and words[k].lower in (":", ".") and len(words[k + 1].lower) == 2 and \
                 words[k + 1].lower.isascii() and words[k + 1].lower.isdigit() and \
                 words[k - 1].end == words[k].start and words[k].end == words[k + 1].start:
+            self._check_clock(words[k - 1], words[k + 1])
             k += 2                                              # "at 5:30", "by 17.45": the minutes written on
         if k < len(words) and words[k].lower in TIME_UNITS:
             return k + 1 - i                                    # "in ten minutes", "by 5 hours"
@@ -1508,6 +1511,17 @@ class State:
         if k < len(words) and self.noun_follows(k) and words[k].lower not in NUMBERS:
             return 0
         return k - i
+
+    def _check_clock(self, hours: Word, minutes: Word) -> None:
+        """Refuse a time written with its minutes that no clock shows: "at 25:00", "by 5:60", "at 99:99" (hours up
+        to 23, or 24:00, the day's end; minutes up to 59), at the column of its hours, rather than keep a time the
+        robot cannot wait for."""
+        h, m = int(hours.lower), int(minutes.lower)
+        if h <= 23 and m <= 59 or h == 24 and m == 0:
+            return
+        said = self.text[hours.start:minutes.end] if self.text else f"{hours.text}:{minutes.text}"
+        why = f"the minutes go up to 59, not {m}" if m > 59 else f"the hours go up to 23, not {h}"
+        raise CommandError(f"{said!r} is no time of day: {why}", hours.start + 1, self.text, ["a time such as 17:45"])
 
     def label_at(self, i: int) -> bool:
         """Whether the number at ``i`` names a numbered thing with the noun before it ("room *214*",
