@@ -1299,7 +1299,7 @@ class State:
         if low in ("and", ",", ";") and self._obliged_at(j):
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),), expect=True)   # "..., the cups go on the shelf"
         if low == "," and j == i + 2 and words[i + 1].lower == "and" and self.prev_tag() in ("WORD", "NAME") and \
-                self._person_at(j) and match_phrase(words, j + 1, ADDITIVES):
+                self.person_at(j) and match_phrase(words, j + 1, ADDITIVES):
             return Match(j - i, (merge(words, i, j - i, Tag.AND_NP),))   # "hand Ben a cup*, and* Anna too"
         if low in ("and", ",", "or") and self.np_starts(j) and self.prev_tag() in ("WORD", "NAME", "PRON"):
             unknown_verb = (nxt not in NP_OPENERS and nxt not in PRONOUNS
@@ -1403,7 +1403,7 @@ class State:
             return None
         return str(self.out[self.verb_index].info)
 
-    def _person_at(self, j: int) -> bool:
+    def person_at(self, j: int) -> bool:
         """Whether word ``j`` names a person a thing can be given to: a name (written with a capital, no thing
         nor verb of the library), a noun of people ("mum", "the twins" are not: one word), or an object pronoun."""
         words = self.words
@@ -1427,7 +1427,7 @@ class State:
         if unit not in self.lexicon.recipients or not (first.tag == Tag.NAME or first.lower in _GIVEN_TO or
                                                         first.lower in self.lexicon.people):
             return None
-        if not self._person_at(j) or j + 1 >= len(words) or words[j + 1].lower not in NP_OPENERS or \
+        if not self.person_at(j) or j + 1 >= len(words) or words[j + 1].lower not in NP_OPENERS or \
                 self.verb_after(j):
             return None
         return unit

@@ -1181,6 +1181,21 @@ def _path_alone(s: State, i: int) -> Match | None:
                  verb=verb, using=False)    # "put it in the fridge, and *into* the microwave": the verb again
 
 
+def _for_person_last(s: State, i: int, end: int) -> bool:
+    """Whether the sentence from ``i`` to ``end`` ends in "for" and a person, after a noun phrase ("coffee *for
+    Ruth*", "a glass of water *for grandad*"): the thing asked for and the one it is brought to, a request as "please"
+    makes one (words32). A thing after "for" ("another cushion *for the sofa*", "tea *for two*") says no one, and
+    the sentence stays without a verb (refused, naming it)."""
+    words = s.words
+    if in_verb_tables(words[i].lower) and words[i].lower not in NP_OPENERS:
+        return False                                 # "nip into the garage for me": a verb no frame lists
+    k = next((k for k in range(end - 1, i, -1) if words[k].lower == "for"), None)
+    if k is None or k == i + 1 and words[i].lower in DETERMINERS:
+        return False
+    j = k + 1 + (k + 1 < end and words[k + 1].lower in DETERMINERS | POSSESSIVES)
+    return j == end - 1 and s.person_at(j)
+
+
 def _asked_alone(s: State, i: int) -> Match | None:
     """"Milk from the fridge, please", "the remote please": a noun phrase and "please" (``ASKED_ALONE``), no
     verb anywhere in the sentence, is a request for the thing: "bring me ..." (``REQUEST_MEANS``). The capital of
@@ -1199,7 +1214,7 @@ def _asked_alone(s: State, i: int) -> Match | None:
         #                                           tidy *up the* room": an imperative, its verb unknown (a noun takes
         #                                           no pronoun after it, nor a particle and a phrase)
     end = _sentence_end(s, i)
-    if not any(words[k].lower in ASKED_ALONE for k in range(end)) or \
+    if not (any(words[k].lower in ASKED_ALONE for k in range(end)) or _for_person_last(s, i, end)) or \
             any(s.verb_at(k) or words[k].lower in BE_WORDS or words[k].lower in QUESTION_WORDS
                 for k in range(i, end)):
         return None
@@ -1629,6 +1644,8 @@ ASKED_ALONE_RULE = Rule("a thing asked for alone", _asked_alone, (
     Example("the spoon back, please", "", Tag.VERB),
     Example("The remote please.", "", Tag.PRON),
     Example("Orange juice, from the sofa, for me please", "Orange", Tag.WORD),
+    Example("cocoa for Priya", "", Tag.VERB),                              # words32: "for" and a person last
+    Example("a blanket for grandma", "", Tag.PRON),
 ), None, "a noun phrase and 'please' with no verb: bring it to the speaker (or to whom 'for' names)")
 STATE_QUESTION = Rule("is X in a state", _state_question, (
     Example("Is the fridge open?", "Is", Tag.VERB),
