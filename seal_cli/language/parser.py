@@ -32,7 +32,7 @@ from seal_cli.language.element_types import Types
 from seal_cli.language.evoking import Evoker
 from seal_cli.language.goals import infer_goal
 from seal_cli.language.lexicon import CommandError, Lexicon, Tagger, Word, tokenize
-from seal_cli.language.english import NP_OPENERS
+from seal_cli.language.english import BE_WORDS, NP_OPENERS, NUMBERS, WH_WORDS
 from seal_cli.language.morphology import in_verb_tables, parts_of_speech
 from seal_cli.language.phrasal import phrasal_verb
 from seal_cli.language.rules.negatives import opens_prohibition
@@ -309,8 +309,15 @@ def _no_verb(word: str) -> bool:
     """Whether a command's first word opens a phrase and is no verb (words32): a determiner or number ("*two* sugars
     in my tea", "*another* cushion"), or a noun English has no verb of ("*tea* for two"); a misspelt verb ("brin")
     is neither, and keeps the message that names the verbs spelt like it."""
-    return word in NP_OPENERS or word.isascii() and word.isdigit() or \
+    return word in NP_OPENERS or word in NUMBERS or word.isascii() and word.isdigit() or \
         not in_verb_tables(word) and "noun" in parts_of_speech(word)
+
+
+def _verbless(words: Sequence[Word]) -> bool:
+    """Whether the tagged command is phrases only: no verb found, no "is", no question, no "to" ("where is being my
+    bag?", "kids breakfast is ready, tell Tom ...": not said as a thing alone)."""
+    return not any(w.tag == "VERB" or w.lower in BE_WORDS or w.lower in WH_WORDS or w.lower in ("?", "to")
+                   for w in words)             # "keys need *to* end up on the chair": a verb after all
 
 
 def _unknown_verb(lexicon: Lexicon, word: str) -> str:
@@ -352,7 +359,7 @@ def _explain(error: Any, text: str, words: Sequence[Word], lexicon: Lexicon) -> 
             return CommandError(f"{_said_from(text, words, token.start_pos)!r} is a statement, no command: "
                                 f"say what the robot should do (it can "
                                 f"{_either(list(lexicon.can))})", column, text, ["a verb"])
-        if token.start_pos == 0 and _no_verb(word):
+        if token.start_pos == 0 and _no_verb(word) and _verbless(words):
             return CommandError(f"{_said_from(text, words, token.start_pos)!r} says no verb: a thing said alone is "
                                 f"asked for with 'please' ('the keys, please') or 'for' and a person ('coffee for "
                                 f"Ruth'); else say what to do with it (the robot can {_either(list(lexicon.can))})",

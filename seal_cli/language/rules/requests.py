@@ -1181,19 +1181,18 @@ def _path_alone(s: State, i: int) -> Match | None:
                  verb=verb, using=False)    # "put it in the fridge, and *into* the microwave": the verb again
 
 
-def _for_person_last(s: State, i: int, end: int) -> bool:
-    """Whether the sentence from ``i`` to ``end`` ends in "for" and a person, after a noun phrase ("coffee *for
-    Ruth*", "a glass of water *for grandad*"): the thing asked for and the one it is brought to, a request as "please"
-    makes one (words32). A thing after "for" ("another cushion *for the sofa*", "tea *for two*") says no one, and
-    the sentence stays without a verb (refused, naming it)."""
+def _asked_for(s: State, i: int, end: int) -> bool:
+    """Whether the sentence from ``i`` to ``end`` is a noun phrase and "for" with what it is for ("coffee *for Ruth*",
+    "a glass of water *for grandad*", "another cushion *for the sofa*", "tea *for two* in the lounge"): a request, as
+    "please" makes one (words32), the thing brought to the speaker, or to the person "for" names. The first word is
+    no verb of English ("nip into the garage for me" stays an unknown verb)."""
     words = s.words
     if in_verb_tables(words[i].lower) and words[i].lower not in NP_OPENERS:
-        return False                                 # "nip into the garage for me": a verb no frame lists
-    k = next((k for k in range(end - 1, i, -1) if words[k].lower == "for"), None)
-    if k is None or k == i + 1 and words[i].lower in DETERMINERS:
         return False
-    j = k + 1 + (k + 1 < end and words[k + 1].lower in DETERMINERS | POSSESSIVES)
-    return j == end - 1 and s.person_at(j)
+    k = next((k for k in range(i + 1, end) if words[k].lower == "for"), None)
+    if k is None or words[k - 1].lower in NP_OPENERS or k + 1 >= end:
+        return False
+    return s.np_starts(k + 1) or s.person_at(k + 1) or words[k + 1].lower in NUMBERS
 
 
 def _asked_alone(s: State, i: int) -> Match | None:
@@ -1214,7 +1213,7 @@ def _asked_alone(s: State, i: int) -> Match | None:
         #                                           tidy *up the* room": an imperative, its verb unknown (a noun takes
         #                                           no pronoun after it, nor a particle and a phrase)
     end = _sentence_end(s, i)
-    if not (any(words[k].lower in ASKED_ALONE for k in range(end)) or _for_person_last(s, i, end)) or \
+    if not (any(words[k].lower in ASKED_ALONE for k in range(end)) or _asked_for(s, i, end)) or \
             any(s.verb_at(k) or words[k].lower in BE_WORDS or words[k].lower in QUESTION_WORDS
                 for k in range(i, end)):
         return None
