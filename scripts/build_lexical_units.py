@@ -585,7 +585,7 @@ def particle_verbs_alone(wordnet: WordNet, units: dict[str, list[str]], closed: 
     parser's tables and mostly a verb (rule 1, of the verb alone), the particle one of English's (``PARTICLES``);
     never tagged, its first sense that reaches counts (rule 2)."""
     found = []
-    for lemma, (_, offsets) in sorted(wordnet.senses.items()):
+    for lemma in sorted(wordnet.senses):
         words = lemma.split()
         if len(words) != 2 or words[1] not in english.PARTICLES or lemma in units or words[0] in units or \
                 words[0] in closed or not words[0].isalpha() or not in_verb_tables(words[0]) or \

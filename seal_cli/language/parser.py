@@ -29,10 +29,10 @@ from seal_cli.frames.library import Library
 from seal_cli.language.asked import thing_asked
 from seal_cli.language.clauses import Clauses
 from seal_cli.language.element_types import Types
+from seal_cli.language.english import BE_WORDS, NP_OPENERS, NUMBERS, WH_WORDS
 from seal_cli.language.evoking import Evoker
 from seal_cli.language.goals import infer_goal
 from seal_cli.language.lexicon import CommandError, Lexicon, Tagger, Word, tokenize
-from seal_cli.language.english import BE_WORDS, NP_OPENERS, NUMBERS, WH_WORDS
 from seal_cli.language.morphology import in_verb_tables, parts_of_speech
 from seal_cli.language.phrasal import phrasal_verb
 from seal_cli.language.rules.negatives import opens_prohibition

@@ -1,7 +1,7 @@
 """``scripts/build_lexical_units.py --wordnet`` (words32): rule 14, a particle verb whose verb is no unit ("clear
 away") takes a frame from its own first sense when the verb alone has a tagged sense there too; and rule 1's tie (as
 many tagged senses as a verb as a noun) broken by how often the word was used as a verb ("chuck"). Read from a tiny
-WordNet ``dict`` folder written here, in WordNet's own file formats; the synsets and glosses are made up for the test."""
+WordNet ``dict`` folder written here, in WordNet's own file formats; its synsets made up."""
 
 from __future__ import annotations
 
