@@ -972,12 +972,26 @@ class State:
         k = j
         while k < len(words):
             low = words[k].lower
+            if low in (":", ".") and k >= 2 and words[k - 2].lower in CLOCK_PREPOSITIONS and self.minutes_written_on(k):
+                k += 2                           # "wait until 5:30": the minutes of a time, not an end (words32)
+                continue
             if low in (",", ";", ":") or low in END_MARKS:
                 break
             if low in ("and", "then", "but") and self.verb_after(k + 1):
                 break
             k += 1
         return k
+
+    def minutes_written_on(self, k: int) -> bool:
+        """Whether the ":" or "." at ``k`` joins a time's hours and minutes, written together ("5:30", "17.45"); a
+        time no clock shows is refused here (:meth:`_check_clock`)."""
+        words = self.words
+        if not (0 < k < len(words) - 1 and words[k - 1].lower.isascii() and words[k - 1].lower.isdigit() and
+                len(words[k + 1].lower) == 2 and words[k + 1].lower.isascii() and words[k + 1].lower.isdigit() and
+                words[k - 1].end == words[k].start and words[k].end == words[k + 1].start):
+            return False
+        self._check_clock(words[k - 1], words[k + 1])
+        return True
 
     def speech_end(self, j: int) -> int:
         """Where reported speech that starts at ``j`` ends: at the end of the sentence, or where a
@@ -1497,10 +1511,7 @@ class State:
             return 0
         digits = words[k].lower.isdigit()
         k += 1
-        if digits and k + 1 < len(words) and words[k].lower in (":", ".") and len(words[k + 1].lower) == 2 and \
-                words[k + 1].lower.isascii() and words[k + 1].lower.isdigit() and \
-                words[k - 1].end == words[k].start and words[k].end == words[k + 1].start:
-            self._check_clock(words[k - 1], words[k + 1])
+        if digits and k + 1 < len(words) and words[k].lower in (":", ".") and self.minutes_written_on(k):
             k += 2                                              # "at 5:30", "by 17.45": the minutes written on
         if k < len(words) and words[k].lower in TIME_UNITS:
             return k + 1 - i                                    # "in ten minutes", "by 5 hours"

@@ -2760,6 +2760,11 @@ def test_a_time_no_clock_shows_is_refused_at_its_column(text: str, column: int, 
 def test_a_time_a_clock_shows_is_kept(library: Library) -> None:
     (meet,) = parse_command("meet Jo at 23:59 in the hall", library).frames
     assert meet.time == "at 23:59" and meet.elements["ground"].head == "hall"
+    (wait,) = parse_command("wait until 6:45", library).frames       # refused as "unknown verb ':'" before words32
+    assert wait.condition == "until 6:45"
+    with pytest.raises(CommandError) as refused:
+        parse_command("wait until 19:61", library)
+    assert refused.value.column == 12
 
 
 @pytest.mark.parametrize(("text", "want"), [
