@@ -2721,6 +2721,8 @@ def test_a_pronoun_still_takes_up_the_person_of_its_gender(library: Library) -> 
     ("stir the custard so that it doesn't go lumpy", [("Stir", {"theme": "custard"})], "so that it doesn't go lumpy"),
     ("move the lamp so that I can read", [("Place", {"theme": "lamp"})], "so that I can read"),
     ("bring the jug so that the guests can pour", [("Bring", {"theme": "jug"})], "so that the guests can pour"),
+    ("open the skylight so that the attic airs out", [("Open", {"theme": "skylight"})],
+     "so that the attic airs out"),
 ])
 def test_so_that_says_a_purpose_beside(text: str, want: list[tuple[str, dict[str, str]]], remark: str,
                                        library: Library) -> None:
