@@ -2049,7 +2049,7 @@ def test_i_need_that_thing_stays_a_request(library: Library) -> None:
     assert frames("I need that towel", library) == [("Bring", {"theme": "towel", "recipient": "me"})]
 
 
-@pytest.mark.parametrize("verb", ["mop", "sweep", "chuck", "snag", "hop", "stash"])
+@pytest.mark.parametrize("verb", ["mop", "sweep", "snag", "hop", "stash"])   # "chuck": a Place since words32
 def test_a_verb_no_frame_does_stays_an_error_naming_it(verb: str, library: Library) -> None:
     with pytest.raises(CommandError, match=f"unknown verb '{verb}'"):
         parse_command(f"{verb} the rug", library)
