@@ -642,8 +642,9 @@ class State:
             if link and words[k].lower == "so" and words[k + 1].lower == "that" and k + 2 < len(words):
                 link = 2                 # "stir the porridge *so that it doesn't stick*": a purpose (words32)
             end = self.statement_at(k + link)
-            if not end and link == 2 and self.cond_end(k + 2) > k + 3:
-                end = self.cond_end(k + 2)       # "so that the room cools down": a clause, whatever its verb
+            if not end and link == 2 and self.cond_end(k + 2) > k + 3 and words[k + 2].lower not in ("you", "we"):
+                end = self.cond_end(k + 2)       # "so that the room cools down": a clause, not the robot's step
+                #                                  ("so that you can give them to Alex" is one: its own clause)
             if not end:
                 break
             spans.append((words[k].start, words[end - 1].end))
