@@ -2717,6 +2717,12 @@ def test_a_pronoun_still_takes_up_the_person_of_its_gender(library: Library) -> 
     assert give.elements["recipient"].refers_to == (0, "theme")
 
 
+def test_so_that_you_can_is_a_step_of_its_own(library: Library) -> None:
+    """"so that you can V": the robot's next step, never a remark ("find the cookies so that you can give them to Alex",
+    wording_paraphrases4)."""
+    assert [f for f, _ in frames("fetch the tray so that you can carry the cups to Mum", library)] == ["Pick", "Bring"]
+
+
 @pytest.mark.parametrize(("text", "want", "remark"), [
     ("stir the custard so that it doesn't go lumpy", [("Stir", {"theme": "custard"})], "so that it doesn't go lumpy"),
     ("move the lamp so that I can read", [("Place", {"theme": "lamp"})], "so that I can read"),
@@ -2724,12 +2730,6 @@ def test_a_pronoun_still_takes_up_the_person_of_its_gender(library: Library) -> 
     ("open the skylight so that the attic airs out", [("Open", {"theme": "skylight"})],
      "so that the attic airs out"),
 ])
-def test_so_that_you_can_is_a_step_of_its_own(library: Library) -> None:
-    """"so that you can V": the robot's next step, never a remark ("find the cookies so that you can give them to Alex",
-    wording_paraphrases4)."""
-    assert [f for f, _ in frames("fetch the tray so that you can carry the cups to Mum", library)] == ["Pick", "Bring"]
-
-
 def test_so_that_says_a_purpose_beside(text: str, want: list[tuple[str, dict[str, str]]], remark: str,
                                        library: Library) -> None:
     """"stir the porridge so that ..." gave the theme "the porridge so": a purpose, kept as a remark now."""
