@@ -139,7 +139,7 @@ import re
 import sys
 import xml.etree.ElementTree as ET
 from collections import Counter, defaultdict
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -334,9 +334,12 @@ class WordNet:
                 self.uses[(word, "n")] += int(count)
 
     def mostly_verb(self, word: str) -> bool:
-        """Whether WordNet tagged more senses of the word as a verb than as a noun (or it is no noun)."""
+        """Whether WordNet tagged more senses of the word as a verb than as a noun (or it is no noun); as many of
+        each, whether its corpus used it more often as a verb (words32: "chuck", one tagged sense of each, used twice
+        as a verb and once as a noun; "bin", none of its verb senses tagged, stays a noun)."""
         verb, noun = self.senses.get(word), self.noun_senses.get(word)
-        return verb is not None and (noun is None or verb[0] > noun[0])
+        return verb is not None and (noun is None or verb[0] > noun[0] or
+                                     verb[0] == noun[0] > 0 and self.used_as_verb(word))
 
     def used_as_verb(self, word: str) -> bool:
         """Whether WordNet's corpus used the word more often as a verb than as a noun ("reveal" 61 to 0,
@@ -560,6 +563,7 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[Any, ...]]:
                 found.append((frame, verb, f"wordnet:{wordnet.name(verb, sense)} {how} "
                                            f"{wordnet.name(lemma, synset)} ({lemma})"))
             break
+    found.extend(particle_verbs_alone(wordnet, units, closed, frames_at))
     named = {unit for _, unit, *_ in found}
     for verb, (_, offsets) in sorted(wordnet.senses.items()):
         if verb in units or verb in named or verb in closed or not verb.isalpha() or not offsets or \
@@ -570,6 +574,42 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[Any, ...]]:
     alone = {(frame, unit) for frame, unit, *_ in found}       # "grope" is a Find already: "grope for" adds nothing
     said_with = [u for u in prepositional(wordnet, library, closed) if (u[0], u[1].split()[0]) not in alone]
     return sorted(found + reflexive(wordnet, library, closed) + said_with)
+
+
+def particle_verbs_alone(wordnet: WordNet, units: dict[str, list[str]], closed: frozenset[str],
+                         frames_at: Callable[[str], tuple[str, list[str]] | None]) -> list[tuple[str, str, str]]:
+    """Rule 14 (words32): a particle verb ("clear away", "clear off") whose verb is no unit of the library and means
+    something else alone ("clear": unclutter) takes frames by rules 2-4 from its own first sense, as a one-word verb
+    does: clear_off.v.01 "clear off, clear away" < remove.v.01 (remove: Pick), so "clear away the mugs" and "clear
+    the plates off the table" are Picks while "clear the table" stays an unknown verb. The verb must be a verb of the
+    parser's tables and mostly a verb (rule 1, of the verb alone), the particle one of English's (``PARTICLES``);
+    never tagged, its first sense that reaches counts (rule 2)."""
+    found = []
+    for lemma in sorted(wordnet.senses):
+        words = lemma.split()
+        if len(words) != 2 or words[1] not in english.PARTICLES or lemma in units or words[0] in units or \
+                words[0] in closed or not words[0].isalpha() or not in_verb_tables(words[0]) or \
+                not wordnet.mostly_verb(words[0]):
+            continue
+        for sense in wordnet.frequent(lemma):
+            if wordnet.domain[sense] == BODY:
+                continue
+            hit = next(((synset, h) for synset in (sense, *wordnet.up[sense]) if (h := frames_at(synset))), None)
+            if hit is None:
+                continue
+            synset, (verb, frames) = hit
+            if len(units[verb]) > 1 or wordnet.senses[verb][1][:1] != [synset]:
+                break              # a unit of several frames, or a later sense of it: too far to say which
+            alone = next((o for n, o in enumerate(wordnet.senses[words[0]][1], 1) if wordnet.counts.get((words[0], n))
+                          and (o in (sense, synset) or synset in wordnet.up[o])), None)
+            if alone is None:
+                break              # the verb alone has no such sense: the particle makes another verb
+            how = "=" if synset == sense else "<"
+            found.extend((frame, lemma, f"wordnet:{wordnet.name(lemma, sense)} {how} {wordnet.name(verb, synset)} "
+                                        f"({verb}), as {wordnet.name(words[0], alone)}; a particle verb")
+                         for frame in frames)
+            break
+    return found
 
 
 _KIND_OF_TOOL = re.compile(r"^([a-z]+ing)_(implement|device|equipment|tool|utensil)$")
@@ -912,6 +952,8 @@ def main() -> int:
         own = library_without(args.out, ROLES_OUT, OUT)
         found = [*derive_wordnet(wordnet, listed), *particle_verbs(wordnet, own, listed),
                  *state_particles(wordnet, own, listed)]
+        by_roles = set(library_without(args.out).by_unit) - set(listed.by_unit)   # role_units.yaml's, made after
+        found = [unit for unit in found if unit[1] not in by_roles]               # these: "remark" is one already
         text = render(sorted(found), WORDNET_HEADER)
     else:
         path = args.data / "lexicon" / "propbank_rolesets.json"

@@ -29,10 +29,11 @@ from seal_cli.frames.library import Library
 from seal_cli.language.asked import thing_asked
 from seal_cli.language.clauses import Clauses
 from seal_cli.language.element_types import Types
+from seal_cli.language.english import BE_WORDS, NP_OPENERS, NUMBERS, WH_WORDS
 from seal_cli.language.evoking import Evoker
 from seal_cli.language.goals import infer_goal
 from seal_cli.language.lexicon import CommandError, Lexicon, Tagger, Word, tokenize
-from seal_cli.language.morphology import in_verb_tables
+from seal_cli.language.morphology import in_verb_tables, parts_of_speech
 from seal_cli.language.phrasal import phrasal_verb
 from seal_cli.language.reported import merge_reported
 from seal_cli.language.rules.negatives import opens_prohibition
@@ -305,6 +306,21 @@ def _thing_asked_error(text: str, lexicon: Lexicon, evoked: Evoked, role: str) -
                         f"the robot can {_either(list(lexicon.can))}", evoked.span[0] + 1, text, ["a question"])
 
 
+def _no_verb(word: str) -> bool:
+    """Whether a command's first word opens a phrase and is no verb (words32): a determiner or number ("*two* sugars
+    in my tea", "*another* cushion"), or a noun English has no verb of ("*tea* for two"); a misspelt verb ("brin")
+    is neither, and keeps the message that names the verbs spelt like it."""
+    return word in NP_OPENERS or word in NUMBERS or word.isascii() and word.isdigit() or \
+        not in_verb_tables(word) and "noun" in parts_of_speech(word)
+
+
+def _verbless(words: Sequence[Word]) -> bool:
+    """Whether the tagged command is phrases only: no verb found, no "is", no question, no "to" ("where is being my
+    bag?", "kids breakfast is ready, tell Tom ...": not said as a thing alone)."""
+    return not any(w.tag == "VERB" or w.lower in BE_WORDS or w.lower in WH_WORDS or w.lower in ("?", "to")
+                   for w in words)             # "keys need *to* end up on the chair": a verb after all
+
+
 def _unknown_verb(lexicon: Lexicon, word: str) -> str:
     """The message for a verb no frame lists: the known verbs spelt like it first, when it is no verb of English
     ("brin": bring), else what the robot can do, one verb for each frame of the library ("tidy", "wait", "make":
@@ -344,6 +360,11 @@ def _explain(error: Any, text: str, words: Sequence[Word], lexicon: Lexicon) -> 
             return CommandError(f"{_said_from(text, words, token.start_pos)!r} is a statement, no command: "
                                 f"say what the robot should do (it can "
                                 f"{_either(list(lexicon.can))})", column, text, ["a verb"])
+        if token.start_pos == 0 and _no_verb(word) and _verbless(words):
+            return CommandError(f"{_said_from(text, words, token.start_pos)!r} says no verb: a thing said alone is "
+                                f"asked for with 'please' ('the keys, please') or 'for' and a person ('coffee for "
+                                f"Ruth'); else say what to do with it (the robot can {_either(list(lexicon.can))})",
+                                column, text, ["a verb"])
         return CommandError(_unknown_verb(lexicon, word), column, text, ["a verb"])
     before = _word_before(words, words[token.start_pos].start if not at_end else len(text))
     after = f" after {before!r}" if before else ""

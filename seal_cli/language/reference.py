@@ -53,6 +53,11 @@ _WANTING = frozenset(["wants", "wanted", "would", "'d"])
 """What a subject that wishes says next ("grace *wants* a drink", "grandpa *would* like his tea"): a person."""
 
 
+_GENDERED = {"him": "he", "he": "he", "his": "he", "himself": "he", "her": "she", "she": "she", "hers": "she",
+             "herself": "she"}
+"""The pronouns of the third person that say a gender: "him" never stands for one said as "her" before."""
+
+
 def _unknown_plural(word: str) -> bool:
     """A word English's tables lack ending in a plural's "-s" (not "-ss"): a plural, as a brand's name of a food
     usually is ("the pringles are on the table, bring *them* to me", "the oreos", words28)."""
@@ -97,13 +102,13 @@ class Reference:
                         continue
                     phrase = self.frames[target[0]].elements[target[1]]
                 kind = phrase.kind
-                if kind in ("message", "place"):
+                if kind in ("message", "place") or self.other_gender(np.pronoun, target):
                     continue
                 if (phrase.text or "").lower() in _SPEAKERS and np.pronoun not in _SPEAKERS:
                     continue                         # "tell me if you find *them*": never the speaker (words25)
                 guessed = False
                 if kind == "thing" and np.pronoun in ("him", "her", "he", "she") and \
-                        self.person_by_role(target, phrase):
+                        self.person_by_role(target, phrase) and not self.beside_person(target):
                     kind = "person"                  # "meet the plumber ... and take him": a person there
                     guessed = not self.types.is_person(     # "find the bellhop": a thing that may be a person
                         self.library.frame(self.frames[target[0]].frame).element(target[1]).type)
@@ -139,6 +144,22 @@ class Reference:
                 self.mentioned(np, frame, role) is not None:
             return None             # "wait at the door until *the guest* arrives, then greet them": no door greeted
         return None if best is None else best[1:]
+
+    def beside_person(self, target: tuple[int, str]) -> bool:
+        """Whether another element of the target's frame is a person said: the thing beside a recipient is what is
+        handed over ("give him *the keys* and then her the coat": the keys are no "her")."""
+        return any(name != target[1] and phrase.kind == "person" and not phrase.default
+                   for name, phrase in self.frames[target[0]].elements.items())
+
+    def other_gender(self, pronoun: str | None, target: tuple[int, str]) -> bool:
+        """Whether a gendered pronoun ("her") cannot be ``target``: it, or an element that refers to it, was said
+        with a pronoun of the other gender ("give *him* the keys and then *her* the coat": two people)."""
+        gender = _GENDERED.get(pronoun or "")
+        if gender is None:
+            return False
+        said = [phrase for index, evoked in enumerate(self.frames) for name, phrase in evoked.elements.items()
+                if (index, name) == target or phrase.refers_to == target]
+        return any(_GENDERED.get((phrase.text or "").lower(), gender) != gender for phrase in said)
 
     def owner_before(self, np: NP) -> str | None:
         """The person "him"/"her" stands for when no element or statement names one: the latest name said as an

@@ -85,7 +85,7 @@ from seal_cli.language.morphology import (
 )
 from seal_cli.language.rule import Match
 from seal_cli.language.tags import Tag
-from seal_cli.language.tokens import Word, capitalised
+from seal_cli.language.tokens import CommandError, Word, capitalised
 
 _PUT_IN = frozenset(["in", "on", "inside"])
 """Prepositions (canonical) of where a thing is put, besides those of a path ("into", "onto")."""
@@ -663,7 +663,7 @@ class State:
         low = self.words[i].lower
         if low not in BECAUSE and not ("'" in low and low.split("'")[0] in SUBJECTS and
                                         "'" + low.split("'", 1)[1] in CONTRACTED) and \
-                not (low == "so" and i + 1 < len(self.words) and self.words[i + 1].lower in SUBJECTS):
+                not (low == "so" and i + 1 < len(self.words) and self.words[i + 1].lower in SUBJECTS | {"that"}):
             return 0, ()                 # "stir the porridge *so it doesn't burn*": a purpose, said beside (words31)
         n, spans = self.remark_after(i - 1)
         return (n - 1, spans) if n else (0, ())
@@ -679,7 +679,12 @@ class State:
         while True:
             k = self.vocatives_end(k)
             link = 1 if k < len(words) and words[k].lower in STATEMENT_LINKS and k + 1 < len(words) else 0
+            if link and words[k].lower == "so" and words[k + 1].lower == "that" and k + 2 < len(words):
+                link = 2                 # "stir the porridge *so that it doesn't stick*": a purpose (words32)
             end = self.statement_at(k + link)
+            if not end and link == 2 and self.cond_end(k + 2) > k + 3 and words[k + 2].lower not in ("you", "we"):
+                end = self.cond_end(k + 2)       # "so that the room cools down": a clause, not the robot's step
+                #                                  ("so that you can give them to Alex" is one: its own clause)
             if not end:
                 break
             spans.append((words[k].start, words[end - 1].end))
@@ -1015,12 +1020,26 @@ class State:
         k = j
         while k < len(words):
             low = words[k].lower
+            if low in (":", ".") and k >= 2 and words[k - 2].lower in CLOCK_PREPOSITIONS and self.minutes_written_on(k):
+                k += 2                           # "wait until 5:30": the minutes of a time, not an end (words32)
+                continue
             if low in (",", ";", ":") or low in END_MARKS:
                 break
             if low in ("and", "then", "but") and self.verb_after(k + 1):
                 break
             k += 1
         return k
+
+    def minutes_written_on(self, k: int) -> bool:
+        """Whether the ":" or "." at ``k`` joins a time's hours and minutes, written together ("5:30", "17.45"); a
+        time no clock shows is refused here (:meth:`_check_clock`)."""
+        words = self.words
+        if not (0 < k < len(words) - 1 and words[k - 1].lower.isascii() and words[k - 1].lower.isdigit() and
+                len(words[k + 1].lower) == 2 and words[k + 1].lower.isascii() and words[k + 1].lower.isdigit() and
+                words[k - 1].end == words[k].start and words[k].end == words[k + 1].start):
+            return False
+        self._check_clock(words[k - 1], words[k + 1])
+        return True
 
     def speech_end(self, j: int) -> int:
         """Where reported speech that starts at ``j`` ends: at the end of the sentence, or where a
@@ -1349,7 +1368,7 @@ class State:
         if low in ("and", ",", ";") and self._obliged_at(j):
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),), expect=True)   # "..., the cups go on the shelf"
         if low == "," and j == i + 2 and words[i + 1].lower == "and" and self.prev_tag() in ("WORD", "NAME") and \
-                self._person_at(j) and match_phrase(words, j + 1, ADDITIVES):
+                self.person_at(j) and match_phrase(words, j + 1, ADDITIVES):
             return Match(j - i, (merge(words, i, j - i, Tag.AND_NP),))   # "hand Ben a cup*, and* Anna too"
         if low in ("and", ",", "or") and self.np_starts(j) and self.prev_tag() in ("WORD", "NAME", "PRON"):
             unknown_verb = (nxt not in NP_OPENERS and nxt not in PRONOUNS
@@ -1453,7 +1472,7 @@ class State:
             return None
         return str(self.out[self.verb_index].info)
 
-    def _person_at(self, j: int) -> bool:
+    def person_at(self, j: int) -> bool:
         """Whether word ``j`` names a person a thing can be given to: a name (written with a capital, no thing
         nor verb of the library), a noun of people ("mum", "the twins" are not: one word), or an object pronoun."""
         words = self.words
@@ -1477,7 +1496,7 @@ class State:
         if unit not in self.lexicon.recipients or not (first.tag == Tag.NAME or first.lower in _GIVEN_TO or
                                                         first.lower in self.lexicon.people):
             return None
-        if not self._person_at(j) or j + 1 >= len(words) or words[j + 1].lower not in NP_OPENERS or \
+        if not self.person_at(j) or j + 1 >= len(words) or words[j + 1].lower not in NP_OPENERS or \
                 self.verb_after(j):
             return None
         return unit
@@ -1547,9 +1566,7 @@ class State:
             return 0
         digits = words[k].lower.isdigit()
         k += 1
-        if digits and k + 1 < len(words) and words[k].lower in (":", ".") and len(words[k + 1].lower) == 2 and \
-                words[k + 1].lower.isascii() and words[k + 1].lower.isdigit() and \
-                words[k - 1].end == words[k].start and words[k].end == words[k + 1].start:
+        if digits and k + 1 < len(words) and words[k].lower in (":", ".") and self.minutes_written_on(k):
             k += 2                                              # "at 5:30", "by 17.45": the minutes written on
         if k < len(words) and words[k].lower in TIME_UNITS:
             return k + 1 - i                                    # "in ten minutes", "by 5 hours"
@@ -1560,6 +1577,17 @@ class State:
         if k < len(words) and self.noun_follows(k) and words[k].lower not in NUMBERS:
             return 0
         return k - i
+
+    def _check_clock(self, hours: Word, minutes: Word) -> None:
+        """Refuse a time written with its minutes that no clock shows: "at 25:00", "by 5:60", "at 99:99" (hours up
+        to 23, or 24:00, the day's end; minutes up to 59), at the column of its hours, rather than keep a time the
+        robot cannot wait for."""
+        h, m = int(hours.lower), int(minutes.lower)
+        if h <= 23 and m <= 59 or h == 24 and m == 0:
+            return
+        said = self.text[hours.start:minutes.end] if self.text else f"{hours.text}:{minutes.text}"
+        why = f"the minutes go up to 59, not {m}" if m > 59 else f"the hours go up to 23, not {h}"
+        raise CommandError(f"{said!r} is no time of day: {why}", hours.start + 1, self.text, ["a time such as 17:45"])
 
     def label_at(self, i: int) -> bool:
         """Whether the number at ``i`` names a numbered thing with the noun before it ("room *214*",

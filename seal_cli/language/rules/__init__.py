@@ -181,6 +181,7 @@ WORDS: tuple[Rule, ...] = (
     numbers.APOSTROPHE_S,
     numbers.QUANTIFIER_OF,
     numbers.HALF_OF,
+    function_words.COMPOUND_MODIFIER,
     function_words.PARTICLE_NOUN,
     function_words.ORDINAL_BEFORE_NUMBER,
     function_words.ORDINAL_FROM_AN_END,

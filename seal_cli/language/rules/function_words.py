@@ -27,10 +27,10 @@ from seal_cli.language.english import (
     TIME_WORDS,
     WH_WORDS,
 )
-from seal_cli.language.morphology import noun_lemma
+from seal_cli.language.morphology import noun_lemma, parts_of_speech, verb_lemma
 from seal_cli.language.premises import is_premises
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import TIME_FIRST, State, first_words, match_phrase
+from seal_cli.language.state import CLOSED, TIME_FIRST, State, first_words, match_phrase
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word
 
@@ -134,6 +134,29 @@ def _particle_noun(s: State, i: int) -> Match | None:
     if s.next_lower(i) == "of" and match_phrase(s.words, i, PREPOSITIONS) < 2:
         return s.emit(i, 1, Tag.WORD)                             # "the back of the toilet"
     return None
+
+
+_COMPOUND_PARTICLES = frozenset(["out", "up", "down", "away", "back"])
+"""Particles that make a modifier of a verb before a noun ("the pull-out drawer", "a pop-up toaster", "the fold-down
+table"); the particles that are also prepositions of place ("in", "on", "off", "over") are left out: "put the pan
+*in* sink" keeps its place."""
+
+
+def _compound_modifier(s: State, i: int) -> Match | None:
+    """"the *pull out* drawer", "a *fold down* table", "the *pop up* toaster": a verb's base form and a particle after
+    a determiner, a possessive or a number, right before a noun (no adjective or adverb: "turn the heat up *high*"),
+    is a modifier of that noun, written apart as it is often said ("pull-out"), not the clause's particle (words32:
+    "out" ended the phrase and "drawer" was left over)."""
+    words, out = s.words, s.out
+    if len(out) < 2 or out[-1].tag != Tag.WORD or out[-2].tag not in (Tag.DET, Tag.POSS, Tag.NUM) or \
+            words[i].lower not in _COMPOUND_PARTICLES or i + 1 >= len(words):
+        return None
+    verb, noun = out[-1].text.lower(), words[i + 1].lower
+    kinds = parts_of_speech(noun)
+    if verb_lemma(verb) != verb or "noun" not in kinds or kinds & {"adj", "adv"} or noun in CLOSED or \
+            noun in TIME_WORDS:
+        return None
+    return s.emit(i, 1, Tag.WORD)
 
 
 _BEFORE_A_NUMBER = ORDINALS | frozenset(["next", "other", "remaining", "final", "same"])
@@ -386,6 +409,10 @@ ALTERNATIVES_TOLD = Rule("whether A or B told", _alternatives_told, (
     Example("tell the man at the door if the taxi is here or still on its way",
             "the taxi is here or still on its way", Tag.SAID),
 ), IFS, "'whether/if A or B' after the person a verb of saying tells: the question, kept whole")
+COMPOUND_MODIFIER = Rule("verb and particle as a modifier", _compound_modifier, (
+    Example("open the pull out drawer", "out", Tag.WORD),
+    Example("put the blanket on the fold down bed", "down", Tag.WORD),
+), _COMPOUND_PARTICLES, "'the pull out drawer': a verb and a particle after a determiner, before a noun, modify it")
 PARTICLE_NOUN = Rule("particle as a noun", _particle_noun, (
     Example("clean the back of the toilet", "back", Tag.WORD),
 ), PARTICLES, "a particle before 'of' is a noun ('the back of')")

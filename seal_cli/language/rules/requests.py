@@ -1293,6 +1293,20 @@ def _takes_goal(s: State, k: int) -> bool:
     return found is not None and found[0] in s.lexicon.goals
 
 
+def _asked_for(s: State, i: int, end: int) -> bool:
+    """Whether the sentence from ``i`` to ``end`` is a noun phrase and "for" with what it is for ("coffee *for Ruth*",
+    "a glass of water *for grandad*", "another cushion *for the sofa*", "tea *for two* in the lounge"): a request, as
+    "please" makes one (words32), the thing brought to the speaker, or to the person "for" names. The first word is
+    no verb of English ("nip into the garage for me" stays an unknown verb)."""
+    words = s.words
+    if in_verb_tables(words[i].lower) and words[i].lower not in NP_OPENERS:
+        return False
+    k = next((k for k in range(i + 1, end) if words[k].lower == "for"), None)
+    if k is None or words[k - 1].lower in NP_OPENERS or k + 1 >= end:
+        return False
+    return s.np_starts(k + 1) or s.person_at(k + 1) or words[k + 1].lower in NUMBERS
+
+
 def _asked_alone(s: State, i: int) -> Match | None:
     """"Milk from the fridge, please", "the remote please": a noun phrase and "please" (``ASKED_ALONE``), no
     verb anywhere in the sentence, is a request for the thing: "bring me ..." (``REQUEST_MEANS``). The capital of
@@ -1311,7 +1325,7 @@ def _asked_alone(s: State, i: int) -> Match | None:
         #                                           tidy *up the* room": an imperative, its verb unknown (a noun takes
         #                                           no pronoun after it, nor a particle and a phrase)
     end = _sentence_end(s, i)
-    if not any(words[k].lower in ASKED_ALONE for k in range(end)) or \
+    if not (any(words[k].lower in ASKED_ALONE for k in range(end)) or _asked_for(s, i, end)) or \
             any(s.verb_at(k) or words[k].lower in BE_WORDS or words[k].lower in QUESTION_WORDS
                 for k in range(i, end)):
         return None
@@ -1752,6 +1766,8 @@ ASKED_ALONE_RULE = Rule("a thing asked for alone", _asked_alone, (
     Example("the spoon back, please", "", Tag.VERB),
     Example("The remote please.", "", Tag.PRON),
     Example("Orange juice, from the sofa, for me please", "Orange", Tag.WORD),
+    Example("cocoa for Priya", "", Tag.VERB),                              # words32: "for" and a person last
+    Example("a blanket for grandma", "", Tag.PRON),
 ), None, "a noun phrase and 'please' with no verb: bring it to the speaker (or to whom 'for' names)")
 STATE_QUESTION = Rule("is X in a state", _state_question, (
     Example("Is the fridge open?", "Is", Tag.VERB),

@@ -106,6 +106,7 @@ TOLD_HOW_TO = Rule("how to, told", _told_how_to, (
 REMARK_UNMARKED = Rule("remark without a comma", _remark_unmarked, (
     Example("give the ball to Lily cos she wants it", "cos", ""),
     Example("stir the soup so it doesn't stick", "so", ""),             # words31: purpose, "so" and a subject
+    Example("stir the custard so that it doesn't go lumpy", "so", ""),   # words32: "so that" and a subject
 ), lambda low: low in BECAUSE or "'" in low or low == "so",
     "'because', a subject contraction, or 'so' and a subject pronoun after the request starts a statement")
 REMARK_AFTER = Rule("remark after a comma", _remark_after, (
