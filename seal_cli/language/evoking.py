@@ -234,7 +234,7 @@ class Evoker:
                 role, bare = self._bare_before(roles, np) or ("", np)
                 roles[role] = np                 # "go *round* the corner": a bare word, then the phrase it leads to
                 self.beside.append((bare.start, bare.end))
-            elif isinstance(item, NP) and self._goal_unmarked(frame, roles, attached, np) is not None:
+            elif isinstance(item, NP) and self._goal_unmarked(frame, roles, np) is not None:
                 roles["goal"] = np               # "put the bowl *a cabinet*": the goal, its preposition left out
             elif isinstance(item, NP) and self.makes_state(frame) and np.quantity is not None and \
                     np.head is not None and noun_lemma(np.head.text) in PORTIONS and not clause.result:
@@ -247,23 +247,18 @@ class Evoker:
                 self.unplaced.append((item, frame.name, self.text[clause.verb.start:clause.verb.end] or
                                       str(clause.verb.info)))      # a verb said once for two clauses: its unit
 
-    def _goal_unmarked(self, frame: Frame, roles: Mapping[str, Any], attached: Sequence[tuple[NP, PP]],
-                       np: NP) -> NP | None:
+    @staticmethod
+    def _goal_unmarked(frame: Frame, roles: Mapping[str, Any], np: NP) -> NP | None:
         """The thing a frame that puts its first element somewhere (a ``theme`` and a ``goal``) was given as that
-        element when ``np``, a determined thing said right after it (nothing between but what describes it: "a
-        bowl *with a sponge in it* a cabinet"), is where it goes with the preposition left out: the goal and
-        any person unfilled; else None ("bring me the cup, um, no, the mug" is a correction, not a goal)."""
+        element when ``np``, a determined thing said after it, is where it goes with the preposition left out:
+        the goal unfilled, no person; else None."""
         roles_of = {e.role for e in frame.elements}
         theme = roles.get("theme")
         if not {"theme", "goal"} <= roles_of or "goal" in roles or not isinstance(theme, NP) or \
                 not np.determined or np.kind != "thing" or np.pronoun is not None or theme.end > np.start or \
-                any(isinstance(v, NP) and v is not theme for v in roles.values()):
+                any(isinstance(v, NP) and v is not theme and v.start > theme.start for v in roles.values()):
             return None
-        gap = list(self.text[theme.end:np.start])
-        for host, pp in attached:
-            if host is theme and theme.end <= pp.start and pp.np.end <= np.start:
-                gap[pp.start - theme.end:pp.np.end - theme.end] = " " * (pp.np.end - pp.start)
-        return theme if not "".join(gap).strip(" ,") else None
+        return theme
 
     def _bare_before(self, roles: Mapping[str, Any], np: NP) -> tuple[str, NP] | None:
         """The element filled by one bare word (no determiner, no modifier) said right before ``np`` ("go *round*
