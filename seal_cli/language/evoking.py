@@ -200,9 +200,6 @@ class Evoker:
         * "on the same shelf as *the clock*": what "the same" is compared with describes that phrase (its text);
         * "go round *the corner*": a phrase with a determiner right after an element of one bare word takes its
           place, the bare word said beside (a word of path or manner the grammar read as a noun);
-        * "put the bowl with a sponge in it *a cabinet*": a thing said with a determiner after the thing a frame
-          puts somewhere, its goal unsaid, is that goal with its preposition left out (no frame that puts a thing
-          takes two objects);
         * "slice the bread, *two slices*": a number of portions after a frame that leaves its thing in a form is
           the form ("into two slices");
         * "open the window *a little*" (:data:`~seal_cli.language.english.DEGREE_PHRASES`), "cut it, not too
@@ -234,8 +231,6 @@ class Evoker:
                 role, bare = self._bare_before(roles, np) or ("", np)
                 roles[role] = np                 # "go *round* the corner": a bare word, then the phrase it leads to
                 self.beside.append((bare.start, bare.end))
-            elif isinstance(item, NP) and self._goal_unmarked(frame, roles, np) is not None:
-                roles["goal"] = np               # "put the bowl *a cabinet*": the goal, its preposition left out
             elif isinstance(item, NP) and self.makes_state(frame) and np.quantity is not None and \
                     np.head is not None and noun_lemma(np.head.text) in PORTIONS and not clause.result:
                 clause.result = [PP("into", np, np.start)]
@@ -246,19 +241,6 @@ class Evoker:
             else:
                 self.unplaced.append((item, frame.name, self.text[clause.verb.start:clause.verb.end] or
                                       str(clause.verb.info)))      # a verb said once for two clauses: its unit
-
-    @staticmethod
-    def _goal_unmarked(frame: Frame, roles: Mapping[str, Any], np: NP) -> NP | None:
-        """The thing a frame that puts its first element somewhere (a ``theme`` and a ``goal``) was given as that
-        element when ``np``, a determined thing said after it, is where it goes with the preposition left out:
-        the goal unfilled, no person; else None."""
-        roles_of = {e.role for e in frame.elements}
-        theme = roles.get("theme")
-        if not {"theme", "goal"} <= roles_of or "goal" in roles or not isinstance(theme, NP) or \
-                not np.determined or np.kind != "thing" or np.pronoun is not None or theme.end > np.start or \
-                any(isinstance(v, NP) and v is not theme and v.start > theme.start for v in roles.values()):
-            return None
-        return theme
 
     def _bare_before(self, roles: Mapping[str, Any], np: NP) -> tuple[str, NP] | None:
         """The element filled by one bare word (no determiner, no modifier) said right before ``np`` ("go *round*

@@ -113,20 +113,3 @@ def test_handing_over_said_with_only_a_place_puts_it_there(library: Library) -> 
     frames = parse_command("grab the salad, chill it and serve on the big plate", library).frames
     assert [f.frame for f in frames] == ["Pick", "Cool", "Place"]
     assert frames[2].elements["goal"].head == "plate"
-
-
-def test_a_goal_said_without_its_preposition_is_the_goal(library: Library) -> None:
-    # a frame that puts a thing takes one object: a thing said after it, the goal unsaid, is where it goes
-    (place,) = parse_command("put the teapot the top shelf", library).frames
-    assert place.frame == "Place"
-    assert (place.elements["theme"].head, place.elements["goal"].head) == ("teapot", "shelf")
-    frames = parse_command("put a jar with a spoon in it a cupboard", library).frames
-    assert frames[-1].elements["goal"].head == "cupboard"
-    assert frames[-1].elements["theme"].text == "a jar with a spoon in it"
-
-
-@pytest.mark.parametrize("text", ["put the jar on the shelf the teapot", "put the box a jar on the table",
-                                  "put the jar him"])
-def test_no_goal_without_its_preposition_where_one_is_said_or_a_person(library: Library, text: str) -> None:
-    with pytest.raises(CommandError):
-        parse_command(text, library)
