@@ -29,7 +29,9 @@ bread *next to the spoon*", "set the mug *in front of the laptop*": a prepositio
 nothing; the thing ends on whatever holds the knife, which the sentence leaves unsaid (when it says it, "next to the
 knife *on the counter*", the parser's ``beside_on`` reads the counter). Which classes hold things is learned, not
 listed: the classes train tasks put a thing in or on (:attr:`GoalModel.holders`, the table's ``receptacles``).
-When the last Place's goal is said so and its class is none of them (:func:`said_beside`), the goal is chosen as
+When the last Place's goal is said so and its class is none of them, or it names no class of the vocabulary ("in
+front of *the TV*" in a room whose classes hold none: it is no more known to hold things) (:func:`said_beside`), the
+goal is chosen as
 for a sentence that says none (the same model and features) and replaces the landmark, a ``default`` element: the
 most probable of the classes present, with no threshold, since the landmark itself is sure to be wrong (nothing can
 be put in a knife). Not in a house's vocabulary
@@ -120,14 +122,15 @@ def goalless(parse: Parse) -> int | None:
 def said_beside(parse: Parse, holders: frozenset[str]) -> int | None:
     """The index of the parse's last Place when its goal was said beside a thing (a preposition of
     :data:`~seal_cli.language.english.BESIDE`: "by the knife", "in front of the laptop") whose class is none of
-    ``holders`` (class keys of what holds things), said as a phrase of its own (no pronoun, coordination or
-    default); else None."""
+    ``holders`` (class keys of what holds things), or that names no class of the vocabulary at all ("in front of
+    *the TV*" in a room whose classes hold no television: nothing known holds it either), said as a phrase of its
+    own (no pronoun, coordination or default); else None."""
     places = [i for i, f in enumerate(parse.frames) if f.frame == "Place" and f.inferred is None]
     if not places or not holders:
         return None
     goal = parse.frames[places[-1]].elements.get("goal")
     if goal is None or goal.preposition not in BESIDE or goal.default or goal.refers_to is not None \
-            or goal.conjuncts or goal.kind != "thing" or goal.cls is None or class_key(goal.cls) in holders \
+            or goal.conjuncts or goal.kind != "thing" or goal.cls is not None and class_key(goal.cls) in holders \
             or "theme" not in parse.frames[places[-1]].elements:
         return None
     return places[-1]

@@ -283,8 +283,9 @@ class Vocabulary:
             if whole and whole[-1] not in PORTIONS and (
                     found == self._ground(whole, len(whole), ()) or not self._usage.meant(found)):
                 found = self._usage.choose(whole, self._present, found, self.scene, self.context)
-                said = self._usage.respelled(whole[-1]) if found is None else None
-                if said is not None:         # "a slice of bred": the whole misspelt, as "the stovve" is
+                said = self._usage.respelled(whole[-1], 4) if found is None else None
+                if said is not None:         # "a slice of bred": the whole misspelt, as "the stovve" is; a portion
+                    #                          is of a thing, so a 4-letter word no wording is may be its typo
                     found = self._usage.choose((said,), self._present, None, self.scene, self.context)
         elif of and end == len(words) and found is not None and of[-1] not in PORTIONS and \
                 words[-1] != noun_lemma(class_words(found)[-1]) and \

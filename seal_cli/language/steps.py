@@ -46,8 +46,8 @@ if TYPE_CHECKING:
     from seal_cli.language.grounding import Vocabulary
 
 __all__ = ["BLOCKING", "LEFT_SUPPORT", "LEFT_THRESHOLD", "NONE", "STEPS", "THRESHOLD", "StepModel", "add_step",
-           "eligible", "ends_at_steps", "filling", "infer_left_in", "infer_step", "moved_phrase", "shifted", "step_at",
-           "step_features"]
+           "done_by_step", "eligible", "ends_at_steps", "filling", "in_place_of_filling", "infer_left_in", "infer_step",
+           "moved_phrase", "shifted", "step_at", "step_features"]
 
 STEPS = ("Clean", "Cool", "Heat")
 """The steps a sentence may leave unsaid (frames of the library), in the model's order."""
@@ -248,11 +248,54 @@ def add_step(parse: Parse, library: Library, vocabulary: Vocabulary, step: str, 
             elements[e.role] = Phrase(None, e.default, cls, default=True)
     unit = frame.lexical_units[0].text if frame.lexical_units else best.lower()
     before = step_at(parse, at)
+    if before != at and done_by_step(parse, before):
+        elements[role] = parse.frames[before].elements["goal"]
+        added = Evoked(best, unit, parse.frames[before].span, elements, inferred=round(probability, 3))
+        return in_place_of_filling(parse, before, added, role)
     if before != at:
         elements[role] = moved_phrase(parse.frames[before].elements["goal"], before)
     added = Evoked(best, unit, parse.frames[before].span, elements, inferred=round(probability, 3))
     frames = [shifted(f, before) for f in parse.frames]
     return replace(parse, frames=(*frames[:before], added, *frames[before:]))
+
+
+def done_by_step(parse: Parse, at: int) -> bool:
+    """Whether the filling at ``at`` (:func:`filling`) is what the unsaid step added before it does, so that it
+    is read as that step and not kept as a Place of its own: its substance is no thing of the vocabulary ("fill
+    a bowl with *water*" in a kitchen whose classes hold no water: the bowl is filled at the sink as it is rinsed
+    there, and no thing "water" can be fetched and put in it) or the thing it fills itself (the substance
+    grounded to its container's class). Nothing refers to the substance (a later "it" is the thing filled)."""
+    frame = parse.frames[at]
+    theme, goal = frame.elements["theme"], frame.elements["goal"]
+    if theme.cls is not None and theme.cls != parse.resolve(goal).cls:
+        return False
+    return not any(ref == (at, r) for f in parse.frames for p in f.elements.values() for ref in _refs(p)
+                   for r in frame.elements if r != "goal")
+
+
+def in_place_of_filling(parse: Parse, at: int, step: Evoked, role: str) -> Parse:
+    """The parse with the filling at ``at`` replaced by ``step``, whose ``role`` is the thing filled: what
+    referred to the filling's goal ("fill a bowl with water and put *it* in the fridge") refers to the step's
+    thing."""
+    frames = [step if i == at else _retargeted(f, (at, "goal"), (at, role)) for i, f in enumerate(parse.frames)]
+    return replace(parse, frames=tuple(frames))
+
+
+def _refs(phrase: Phrase) -> list[tuple[int, str]]:
+    refs = [] if phrase.refers_to is None else [phrase.refers_to]
+    return refs + [r for c in phrase.conjuncts for r in _refs(c)]
+
+
+def _retargeted(frame: Evoked, old: tuple[int, str], new: tuple[int, str]) -> Evoked:
+    def moved(phrase: Phrase) -> Phrase:
+        conjuncts = tuple(moved(c) for c in phrase.conjuncts)
+        ref = new if phrase.refers_to == old else phrase.refers_to
+        if ref == phrase.refers_to and all(a is b for a, b in zip(conjuncts, phrase.conjuncts, strict=True)):
+            return phrase
+        return replace(phrase, refers_to=ref, conjuncts=conjuncts)
+
+    elements = {r: moved(p) for r, p in frame.elements.items()}
+    return frame if all(elements[r] is frame.elements[r] for r in elements) else replace(frame, elements=elements)
 
 
 def shifted(frame: Evoked, at: int) -> Evoked:

@@ -297,11 +297,13 @@ class WordUsage:
     def _spelled(self) -> dict[str, str | None]:
         return {}
 
-    def respelled(self, word: str) -> str | None:
+    def respelled(self, word: str, least: int = 5) -> str | None:
         """The word people said that ``word`` most likely misspells ("stovve": stove, "cabinst":
         cabinet), or None: the one wording of the table within :data:`SPELLING` similarity
-        (``difflib``'s ratio) of a word of at least 5 letters, closer than any other."""
-        if len(word) < 5 or not word.isalpha() or word in self.counts:
+        (``difflib``'s ratio) of a word of at least ``least`` letters (5: a shorter typo is too often another
+        word; 4 where the phrase is evidence that a thing's name is said, the whole of "a slice of *bred*"),
+        closer than any other."""
+        if len(word) < least or not word.isalpha() or word in self.counts:
             return None
         cache = self._spelled
         if word not in cache:

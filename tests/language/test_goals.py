@@ -122,6 +122,17 @@ def test_a_goal_said_beside_a_thing_that_holds_nothing_is_unsaid(library: Librar
     assert frames("put the kettle by the knife near the stove", library, kitchen())[-1][2] == "StoveBurner"
 
 
+def test_a_goal_said_beside_a_thing_the_room_does_not_hold_is_unsaid(library: Library) -> None:
+    # no class of this kitchen is a television: nothing known holds it, so what holds the kettle is left unsaid too
+    assert frames("put the kettle in front of the television", library, kitchen()) == \
+        [("Place", "Kettle", "CounterTop")]
+    off = parse_command("put the kettle in front of the television", library, kitchen(), infer_steps=False)
+    assert off.frames[-1].elements["goal"].cls is None and said_beside(off, MODEL.holders) == 0
+    # said on it, it stays what was said (the robot cannot put it there, and says so)
+    on = parse_command("put the kettle on the television", library, kitchen())
+    assert on.frames[-1].elements["goal"].cls is None and not on.frames[-1].elements["goal"].default
+
+
 def test_a_goal_beside_a_holder_said_on_or_in_or_in_a_house_stays(library: Library) -> None:
     assert frames("put the kettle next to the mug", library, kitchen()) == [("Place", "Kettle", "Mug")]  # holds things
     assert frames("put the kettle on the knife", library, kitchen()) == [("Place", "Kettle", "Knife")]   # said on it

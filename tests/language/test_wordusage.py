@@ -387,6 +387,12 @@ def test_a_misspelling_is_read_as_the_word_people_say_only_when_nothing_matches(
     # the whole of a portion misspelt: "a slice of stovve" is the stove's, as "the stovve" is
     assert vocab.ground_words(["slice"], of=["stovve"]) == "StoveBurner"
     assert vocab.with_usage(RULES).ground_words(["slice"], of=["stovve"]) is None
+    # four letters only as a portion's whole ("a slice of bred"): alone, "bred" is a word of its own
+    food = usage({"bread": {"bread": 20}, "bed": {"bed": 9}}, ("bread", "bed"))
+    room = Vocabulary.of(["Bread", "Bed"], usage=food)
+    assert food.respelled("bred") is None and food.respelled("bred", 4) == "bread"   # 0.89 to bread, 0.86 to bed
+    assert room.ground_words(["bred"]) is None and room.ground_words(["slice"], of=["bred"]) == "Bread"
+    assert food.respelled("bad", 4) is None                                          # three letters: never
 
 
 def test_a_misspelt_head_that_is_a_word_is_read_by_its_modifier_s_compound() -> None:
