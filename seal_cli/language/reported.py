@@ -91,8 +91,9 @@ def _reports(telling: Evoked, question: Evoked) -> bool:
             asked_of.head.lower() != told_to.head.lower():
         return False                  # "tell me what is in the box and tell it to Jo": two people told
     message = telling.elements.get("message")
-    if message is not None:           # "find out his name and tell *it* to Jo": the answer, said again
-        return question.frame == TELLING and (message.text or "").lower() in _ANSWER_AGAIN
+    if message is not None and message.text:    # "find out his name and tell *it* to Jo": the answer, said again
+        return question.frame == TELLING and message.text.lower() in _ANSWER_AGAIN
+    # a message left unsaid ("count the cups and let me know": the evoker's answer_told, head "how many") is no message
     return question.frame == TELLING or _to_speaker(telling.elements.get("recipient"))
 
 
