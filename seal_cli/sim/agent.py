@@ -382,7 +382,7 @@ class Agent:
         else:
             place = self.world.items[seen[thing]].parent or where
             said = f"{seen[thing]} is {'in' if self.world.hollow(self.world.items[place]) else 'on'} {place} already"
-        if room is None and self._another_meant(binding, thing):    # one lies there: the command means another
+        if room is None and self._another_meant(binding, thing, where):    # one lies there: another is meant
             self.there_already[binding] = said
             self.not_meant.setdefault(thing, set()).add(seen[thing])
             self.say("search", f"{said}: looks for another {spoken(self.class_of(thing))} to put there",
@@ -391,13 +391,19 @@ class Agent:
         self.chosen.setdefault(class_key(thing), seen[thing])   # that one is this name's: not cup_2's too (e2e23)
         return said
 
-    def _another_meant(self, binding: Binding, thing: str) -> bool:
+    def _another_meant(self, binding: Binding, thing: str, where: str) -> bool:
         """Whether a frame that would put ``thing`` where the robot sees one of its kind already means another one
         (e2e27, as the planner's :func:`seal_cli.planning.problem.the_ones_not_there`): the frame takes the thing up
         (it needs it held), the command has not chosen one for the name yet, and the robot holds none of its kind (it
         would put down the one it holds), and the command names one thing of its kind (each of "all the cups" is one of
-        them); asked once a frame."""
+        them); asked once a frame. Not where the map has other places of the goal's class: the goal was then one
+        of several ("put the milk in the fridge", a fridge in the shop and one in the kitchen, a milk in each: the
+        milk is in a fridge already, and a search for another milk went through the whole house, 256 m)."""
         held = self.held()
+        goal = self.world.items.get(where)
+        if goal is None or sum(1 for i in self.world.items.values()
+                               if i.key == goal.key and self._is_place(i.id)) > 1:
+            return False
         return (binding not in self.there_already and class_key(thing) not in self.chosen
                 and self.class_of(thing) not in self.several
                 and binding.frame.needs_held("theme") and binding.elements.get("theme") == thing

@@ -764,3 +764,20 @@ def test_a_thing_seen_where_it_is_to_go_already_means_another_one(library: Libra
                                         SeFMPolicy(particles=50), rng=np.random.default_rng(0))
     assert result.completed, result.reason
     assert any(r.text.endswith("so Place(theme=remote, goal=sofa_1) needs no doing") for r in alone.records)
+
+
+def test_a_thing_in_one_of_several_places_of_the_goals_class_is_put_there_already(library: Library) -> None:
+    """Lead, after e2e27: "put the milk in the fridge" on the corner shop (a fridge in the shop and one in the kitchen,
+    a milk in each) found milk_2 in the fridge it chose and searched the whole house for another milk, 256 m, to move
+    the shop's milk into the kitchen's fridge; the goal was one of several fridges, and a milk is in one already."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    agent, result = pipeline.run_on_map(load_map("corner_shop"), "put the milk in the fridge", library,
+                                        SeFMPolicy(particles=50), rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    said = [r.text for r in agent.records]
+    assert not any("looks for another milk" in s for s in said)
+    assert any(s.endswith("needs no doing") for s in said)
+    assert {agent.world.items["milk_1"].parent, agent.world.items["milk_2"].parent} == {"fridge_1", "fridge_2"}
+    assert result.path_m < 15.0
