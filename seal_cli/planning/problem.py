@@ -1346,7 +1346,7 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
                                                                    strict=True)}
         if map is not None and getattr(vocabulary, "house", False):    # the map's classes, objects' too
             things.kinds |= {class_key(c) for c in vocabulary.classes}
-            things.all_kinds = True
+            things.all_kinds = bool(vocabulary.classes)     # a bare map (no place, object or prior) may hold anything
     for frame in library:
         for element in frame.elements:
             if element.default is not None:

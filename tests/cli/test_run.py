@@ -189,8 +189,8 @@ def test_a_run_not_done_draws_its_whole_picture_and_says_so(tmp_path: Path) -> N
     says so under its "not done" line, so that a script reading the exit code knows they are a failure's
     (hostile25); a run refused before it starts writes neither."""
     png, rrd = tmp_path / "o.png", tmp_path / "o.rrd"
-    args = ["run", "--map", "bungalow", "bring me the unicorn", "--particles", "20", "--png", str(png), "--rrd",
-            str(rrd)]
+    args = ["run", "--map", "bungalow", "find the unicorn", "--particles", "20", "--png", str(png), "--rrd",
+            str(rrd)]      # a Find is still searched for (a thing to fetch the house knows nothing of is refused, e2e27)
     result = runner.invoke(app, args)
     assert result.exit_code == 1 and result.stderr.startswith("not done: no unicorn found"), result.output
     assert result.stderr.splitlines()[1] == (f"written all the same, to show where the robot searched: its picture "
