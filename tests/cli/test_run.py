@@ -190,7 +190,7 @@ def test_a_run_not_done_draws_its_whole_picture_and_says_so(tmp_path: Path) -> N
     (hostile25); a run refused before it starts writes neither."""
     png, rrd = tmp_path / "o.png", tmp_path / "o.rrd"
     args = ["run", "--map", "bungalow", "find the unicorn", "--particles", "20", "--png", str(png), "--rrd",
-            str(rrd)]      # a Find is still searched for (a thing to fetch the house knows nothing of is refused, e2e27)
+            str(rrd)]    # a Find is still searched (a thing to fetch the house knows nothing of is refused, e2e27)
     result = runner.invoke(app, args)
     assert result.exit_code == 1 and result.stderr.startswith("not done: no unicorn found"), result.output
     assert result.stderr.splitlines()[1] == (f"written all the same, to show where the robot searched: its picture "
