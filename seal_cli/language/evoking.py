@@ -576,6 +576,21 @@ class Evoker:
         if role is not None and roles.get(role) is None:
             roles[role] = theme.located
 
+    def place_said_first(self, frame: Frame, roles: Mapping[str, Any], attached: Sequence[tuple[NP, PP]],
+                         elements: dict[str, Phrase]) -> None:
+        """"*In the shop,* open the fridge": a place said before the clause that no element takes describes the thing
+        after it, as "open the fridge in the shop" does; its words reach the planner with the thing's
+        (``stands_for``), which grounds "the fridge in the shop" on the map (the kitchen's fridge was opened, the
+        place dropped silently). The parse's text of the element stays what the clause said."""
+        for host, pp in attached:
+            if pp.prep not in LOCATED or pp.np.end > host.start:
+                continue
+            role = next((r for r, np in roles.items() if np is host and r in elements), None)
+            if role is None or elements[role].stands_for or not elements[role].text:
+                continue
+            said = f"{elements[role].text} {self.text[pp.start:pp.np.end]}"
+            elements[role] = replace(elements[role], stands_for=said)
+
     def place_said(self, frame: Frame, roles: dict[str, Any], elements: dict[str, Phrase]) -> None:
         """"Paris is in the bathroom; meet her", "there's a cup somewhere in the kitchen, find it": a pronoun
         standing for what a statement before the command introduced, and the statement said where it is: that
@@ -680,6 +695,7 @@ class Evoker:
                 if prep is not None:             # "put the teapot *on* the sideboard": on its top, not in it
                     elements[element.role] = replace(elements[element.role], preposition=prep)
         self.place_said(frame, roles, elements)
+        self.place_said_first(frame, roles, attached, elements)
         self.led_where_already(clause, elements)
         first = frame.elements[0] if frame.elements else None
         said = self.types.object_role(unit)            # "fill [it] with water": the goal is what is unsaid

@@ -125,6 +125,23 @@ def test_a_place_sought_in_a_room_is_that_rooms_place(library: Library) -> None:
         problem_of_text("find the sofa in the kitchen", library, map=apartment)
 
 
+def test_a_place_said_before_the_clause_says_which_thing(library: Library) -> None:
+    """Lead, stop 38: "In the shop, open the fridge" on the corner shop (a fridge in the shop, one in the kitchen)
+    opened the kitchen's: the place said first, which no element of Open takes, described the fridge but never
+    reached the planner (dropped silently). It grounds as "open the fridge in the shop" does; the parse's theme text
+    stays what the clause said."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+
+    shop = load_map(map_path("corner_shop"))
+    for text, plan in (("In the shop, open the fridge", "Open(theme=fridge_1)"),
+                       ("open the fridge in the shop", "Open(theme=fridge_1)"),
+                       ("in the kitchen, please open the fridge", "Open(theme=fridge_2)")):
+        problem = problem_of_text(text, library, map=shop)
+        assert [str(b) for b in problem.commanded] == [plan], text
+        assert not any("could be fridge_1" in w for w in problem.warnings), text
+
+
 def test_where_a_theme_is_said_to_be_is_where_it_is_taken_from(library: Library) -> None:
     """A frame with no source or ground of its own takes its theme from where the phrase says it is:
     held, a Pick from that room first; not held, a Find there first. A where the map lacks is refused
