@@ -160,6 +160,8 @@ class MapNames:
         self.taxonomy = taxonomy
         self.chosen: dict[str, str] = {}
         """Each place chosen among several a phrase did not tell apart, by id: which they were and why this one."""
+        self._house = map.name.replace("_", " ")
+        """The map's name as words, in messages ("the office floor has no kitchen")."""
         self.room_said: str | None = None
         """The room an earlier frame of the command named last ("go to the bedroom and put it on the bed"): of
         several places, the ones in it are meant."""
@@ -213,11 +215,11 @@ class MapNames:
         if where and (room := self._room_of_words(where)) is not None:
             inside = tuple(p for p in found if self._room_of_person(p) == room)
             if not inside:
-                raise Refusal(f"the {self.map.name} has no {what} in the {room.replace('_', ' ')}; it has "
+                raise Refusal(f"the {self._house} has no {what} in the {room.replace('_', ' ')}; it has "
                               f"{self._who(found)}")
             found = inside
         if len(found) > 1:
-            raise Refusal(f"'the {' '.join(thing)}' could be {self._who(found, ' or ')}: the {self.map.name} has "
+            raise Refusal(f"'the {' '.join(thing)}' could be {self._who(found, ' or ')}: the {self._house} has "
                           f"{len(found)} people with the role {what}; say which one by name")
         return found
 
@@ -314,7 +316,7 @@ class MapNames:
             if not inside:
                 what, there = " ".join(thing), room.replace("_", " ")
                 others = ", ".join(f"{r.id} ({r.room or 'in no room'})" for r in found)
-                raise Refusal(f"the {self.map.name} has no {what} in the {there}; it has {others}")
+                raise Refusal(f"the {self._house} has no {what} in the {there}; it has {others}")
             found = inside
         typed = [r for r in found if r.kind != "place" or kind_of(self.taxonomy, r.cls, element_type) is not False
                  or (element_type == "openable" and self._openable(r.id))]
@@ -398,13 +400,13 @@ class MapNames:
         what = " ".join(_split(words_of(text))[0]) or text
         if self.is_room_word(text):
             rooms = ", ".join(r.name for r in self.map.rooms) or "none"
-            return Refusal(f"the {self.map.name} has no {what}; its rooms are {rooms}")
+            return Refusal(f"the {self._house} has no {what}; its rooms are {rooms}")
         if self.is_fixed_word(text, cls):
             places = ", ".join(p.name for p in self.map.places) or "none"
             like = [p.name for p in self.map.places if cls and class_key(p.cls) == class_key(cls)
                     and set(class_words(cls)) & set(what.split())]   # "the tv": a tv stand, not a guess's table
             only = f" (only {' and '.join(like)}, a {spoken(cls)})" if like and cls and what != spoken(cls) else ""
-            return Refusal(f"the {self.map.name} has no {what}{only}; its places are {places}")
+            return Refusal(f"the {self._house} has no {what}{only}; its places are {places}")
         return None
 
     def where_said(self, text: str) -> str | None:

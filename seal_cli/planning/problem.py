@@ -418,7 +418,7 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
         kinds = m.kinds()
         known = f"; the things it knows of are {', '.join(kinds)}" if kinds else ""
         word = " ".join(class_words(value))
-        raise _located(f"the {m.name} has no {word} to carry, only {where}, which the robot cannot get {word} "
+        raise _located(f"the {_words(m.name)} has no {word} to carry, only {where}, which the robot cannot get {word} "
                        f"from{known}", phrase, text)
     if phrase.quantity == 0:   # "bring me zero apples", "0 cups" planned one (hostile22): a count of none is no task
         raise _located(f"{phrase.text!r} asks for no things (a count of zero): say how many, at least one", phrase,
@@ -621,7 +621,7 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
         what = phrase.head if where_words(phrase.text) else " ".join(words_of(_place_words(phrase))) or phrase.head
         kind = "no kind of thing it knows of" if _unheard_of(phrase, things) else \
             "no prior, object or place of it names the kind, so the robot has nowhere to search for one"
-        raise _located(f"the {m.name} has no {what} (no room, place or person of the map is called so, and "
+        raise _located(f"the {_words(m.name)} has no {what} (no room, place or person of the map is called so, and "
                        f"{kind}); its rooms are {', '.join(m.room_names) or 'none'}", phrase, text)
     if not asked and category in FIXTURE_TYPES and not _kinds_known_of(phrase, things):
         m = things.map                 # said in a room too ("leave the light on in the hall"): the map knows none
@@ -633,7 +633,7 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
         places = [p.name for p in m.places if (p.openable if category == "openable" else does(p.cls))]
         places += [kind for kind in m.kinds() if does(kind)]
         what = phrase.head if where_words(phrase.text) else " ".join(words_of(phrase.text)) or phrase.head
-        raise _located(f"the {m.name} has no {what} (no place, thing or prior of the map names one, and what "
+        raise _located(f"the {_words(m.name)} has no {what} (no place, thing or prior of the map names one, and what "
                        f"opens or switches is not searched for); what it knows will {FIXTURE_TYPES[category]}: "
                        f"{', '.join(places) or 'nothing'}", phrase, text)
     return None
@@ -1071,7 +1071,7 @@ def _back_to(phrase: Phrase | None, themes: Sequence[str], bindings: Sequence[Bi
             lay, later = (spot.name, True) if spot is not None else (None, later)
         if lay is None:
             why = "no place it was taken from is said before it in the command" + (
-                "" if m is None else f", and the {m.name} does not say where {theme} lay")
+                "" if m is None else f", and the {_words(m.name)} does not say where {theme} lay")
             raise _located(f"cannot tell where {_back_said(phrase)} is: {why}; say where it was (\"take it from the "
                            "table and put it back\") or where to put it", phrase, text)
         places[lay] = None
@@ -1164,8 +1164,9 @@ def _put_away(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]
             known = sorted(class_key(c) for c in m.priors)
             targets = " or ".join(t.replace("_", " ") for t in prior_of(m.priors, cls))
             but = f" but {lies}, where it is" if lies else ""
-            why = (f"the {m.name} keeps a {cls} in the {targets}, and there is no table, shelf or cupboard there{but}"
-                   if targets else f"the {m.name} has no prior of where a {cls} is kept")
+            house = _words(m.name)
+            why = (f"the {house} keeps a {cls} in the {targets}, and there is no table, shelf or cupboard there{but}"
+                   if targets else f"the {house} has no prior of where a {cls} is kept")
             listed = f" (it knows where to keep {', '.join(known)})" if known else ""
             verb = "put back" if back else " ".join(words_of(evoked.lexical_unit))
             raise _located(f"cannot tell where to {verb} {_said(evoked.elements.get('theme'), theme)}: {why}"

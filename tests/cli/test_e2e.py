@@ -356,7 +356,7 @@ def test_a_place_the_map_does_not_mark_openable_is_refused_as_opened() -> None:
     result = runner.invoke(app, ["plan", "--map", "clinic", "open the hand dryer"])
     assert result.exit_code == 1 and "hand_dryer_1) does not (the map does not mark it openable)" in result.stderr
     lacking = runner.invoke(app, ["plan", "--map", "office_floor", "open the dryer"])   # an appliance: refused
-    assert lacking.exit_code == 1 and "the office_floor has no dryer" in lacking.stderr
+    assert lacking.exit_code == 1 and "the office floor has no dryer" in lacking.stderr
 
 
 def test_a_pair_of_gloves_is_one_thing_to_fetch() -> None:

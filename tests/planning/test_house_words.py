@@ -44,7 +44,7 @@ def test_a_compound_class_is_of_the_kinds_of_its_head(library: Library) -> None:
 
 def test_a_compound_name_is_called_by_its_head(library: Library) -> None:
     assert steps("bring me the bottle", library, "office_floor")[-1] == "Bring(theme=water_bottle, recipient=me)"
-    with pytest.raises(SealError, match=r"the office_floor has no coffee to carry, only coffee_machine_1 \(in the "
+    with pytest.raises(SealError, match=r"the office floor has no coffee to carry, only coffee_machine_1 \(in the "
                        r"break room\), which the robot cannot get coffee from; the things it knows of are badge"):
         plan_text("bring me a coffee", library, map=load_map(MAPS / "office_floor.yaml"))   # not a machine to carry
     assert steps("go to the coffee machine", library, "office_floor") == ["Go(goal=coffee_machine_1)"]
