@@ -21,8 +21,8 @@ import mmap
 from functools import lru_cache
 from pathlib import Path
 
-__all__ = ["adverb_no_noun", "gerund_lemma", "is_adjective", "is_adverb", "is_gradable", "is_plural", "noun_lemma",
-           "participles", "parts_of_speech", "verb_lemma"]
+__all__ = ["adverb_no_noun", "counted", "gerund_lemma", "is_adjective", "is_adverb", "is_gradable", "is_plural",
+           "noun_lemma", "participles", "parts_of_speech", "plural_of", "verb_lemma"]
 
 
 class _Table:
@@ -259,3 +259,8 @@ def plural_of(noun: str) -> str:
     *first, last = noun.split(" ")
     forms = lemminflect.getInflection(last, tag="NNS", inflect_oov=True) if last else ()
     return " ".join([*first, forms[0] if forms else last + "s"])
+
+
+def counted(n: int, noun: str) -> str:
+    """A number and its noun, plural unless one ("1 cup", "2 boxes", "0 ice creams")."""
+    return f"{n} {noun if n == 1 else plural_of(noun)}"

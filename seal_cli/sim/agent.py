@@ -42,7 +42,7 @@ from seal_cli.frames.library import Library
 from seal_cli.frames.model import Action, Binding, Fact
 from seal_cli.frames.said import said_words, shown
 from seal_cli.frames.taxonomy import class_key
-from seal_cli.language.morphology import plural_of
+from seal_cli.language.morphology import counted, plural_of
 from seal_cli.maps.model import SPEAKER, Map
 from seal_cli.maps.navigation import ROBOT_RADIUS, Cell, Grid
 from seal_cli.planning.grounding import kind_of, spoken
@@ -1903,14 +1903,14 @@ class Agent:
             where, found, complete = self.look_over(ground)
             n = sum(1 for k in found if k.cls == key) + len(self._fixed_in(key, ground))
             note = "" if complete else f" seen, but it could not look all over it ({complete.message})"
-            return f"{n} {noun if n == 1 else plural_of(noun)} {where}{note}{self._none_known(key, noun, n)}"
+            return f"{counted(n, noun)} {where}{note}{self._none_known(key, noun, n)}"
         if ground is None and key in self.kept and (spots := self.kept_spots(value)):
             return self._count_where_kept(key, noun, spots)
         if ground is None and self.sweeper is not None and self.scene.map.rooms:
             return self._count_in_house(key, noun)
         n = sum(class_key(d.cls) == key for d in self.world.observe())
         where = f" in the {ground.replace('_', ' ')}" if ground else " in view"
-        return f"{n} {noun if n == 1 else plural_of(noun)}{where}"
+        return f"{counted(n, noun)}{where}"
 
     def _count_in_house(self, key: str, noun: str) -> str:
         """"How many cups are there?": every room looked all over (nearest room first, as the crow
@@ -1929,7 +1929,7 @@ class Agent:
                 break
         n = sum(1 for k in self.known.values() if k.cls == key and k.id in self.world.items)
         note = f" seen, but it could not look all over {', '.join(unseen)}" if unseen else ""
-        return f"{n} {noun if n == 1 else plural_of(noun)} in the house{note}{self._none_known(key, noun, n)}"
+        return f"{counted(n, noun)} in the house{note}{self._none_known(key, noun, n)}"
 
     def kept_spots(self, value: str) -> list[str]:
         """Where the map's priors keep a thing of this kind: every place the prior names (by its name or its
@@ -1968,7 +1968,7 @@ class Agent:
                 break
         n = sum(1 for k in self.known.values() if k.cls == key and k.id in self.world.items)
         note = f" seen, but it could not look at {', '.join(short)}" if short else ""
-        return f"{n} {noun if n == 1 else plural_of(noun)} where the map keeps them{note}"
+        return f"{counted(n, noun)} where the map keeps them{note}"
 
     def _is_place_class(self, key: str) -> bool:
         """Whether a class is one of the map's places' (a sofa, a bed): known from the map, not sought."""
@@ -1978,9 +1978,9 @@ class Agent:
         """How many places of a class the map has, in a room or in the house, without a look."""
         if ground is None:
             n = sum(1 for k in self.known.values() if not k.movable and k.cls == key and k.id in self.world.items)
-            return f"{n} {noun if n == 1 else plural_of(noun)} in the house, by the map"
+            return f"{counted(n, noun)} in the house, by the map"
         n = len(self._fixed_in(key, ground))
-        return f"{n} {noun if n == 1 else plural_of(noun)} in the {ground.replace('_', ' ')}, by the map"
+        return f"{counted(n, noun)} in the {ground.replace('_', ' ')}, by the map"
 
     def _fixed_in(self, key: str, ground: str) -> list[str]:
         """The places of a class in a room ("how many beds are in the bedroom?"): the map says where
@@ -1996,7 +1996,7 @@ class Agent:
         chair, and it saw none): said, so a 0 is not taken for a room that merely lacks one."""
         if n or any(k.cls == key for k in self.known.values()) or key in {class_key(c) for c in self.scene.map.priors}:
             return ""
-        return f"; it knows of no {noun}s anywhere"
+        return f"; it knows of no {plural_of(noun)} anywhere"
 
     def survey(self, room: Any, views: int | None = None, peek: bool = False,
                until: Callable[[], bool] | None = None, announced: bool = False) -> Outcome:

@@ -84,3 +84,9 @@ def test_the_plural_of_a_noun(noun: str, plural: str) -> None:
     from seal_cli.language.morphology import plural_of
 
     assert plural_of(noun) == plural
+
+
+def test_a_number_and_its_noun() -> None:
+    from seal_cli.language.morphology import counted
+
+    assert [counted(1, "box"), counted(2, "box"), counted(0, "ice cream")] == ["1 box", "2 boxes", "0 ice creams"]
