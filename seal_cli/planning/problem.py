@@ -1063,12 +1063,10 @@ def _back_to(phrase: Phrase | None, themes: Sequence[str], bindings: Sequence[Bi
             continue
         lay = next((f.args[1] for f in sorted(things.facts, key=str) if f.predicate == "in" and f.args[0] == theme),
                    None) if takers else None      # held from the start: no thing the map places (e2e27)
-        if lay is None and m is not None and not takers:     # held from the start: back where such a thing is kept
+        if lay is None and m is not None and (not takers or not m.objects):
+            # held from the start, or a map that places no thing: back where such a thing is kept
             spot = kept_place(things.taxonomy, m.priors, things.class_of(theme), spots_of(m), near=m.robot.xy)
             lay, later = (spot.name, later or not m.objects) if spot is not None else (None, later)
-        if lay is None and m is not None and not m.objects:
-            spot = kept_place(things.taxonomy, m.priors, things.class_of(theme), spots_of(m), near=m.robot.xy)
-            lay, later = (spot.name, True) if spot is not None else (None, later)
         if lay is None:
             why = "no place it was taken from is said before it in the command" + (
                 "" if m is None else f", and the {_words(m.name)} does not say where {theme} lay")

@@ -401,13 +401,11 @@ class Agent:
         milk is in a fridge already, and a search for another milk went through the whole house, 256 m)."""
         held = self.held()
         goal = self.world.items.get(where)
-        if goal is None or sum(1 for i in self.world.items.values()
-                               if i.key == goal.key and self._is_place(i.id)) > 1:
-            return False
         return (binding not in self.there_already and class_key(thing) not in self.chosen
                 and self.class_of(thing) not in self.several
                 and binding.frame.needs_held("theme") and binding.elements.get("theme") == thing
-                and (held is None or held.key != self.class_of(thing)))
+                and (held is None or held.key != self.class_of(thing))
+                and goal is not None and sum(1 for k in self.instances(goal.key) if not k.movable) == 1)
 
     def _open_already(self, binding: Binding) -> str | None:
         """"fridge_1 is already closed (as the map has it)", for an Open or a Close of a place of the map that is
