@@ -19,6 +19,7 @@ from __future__ import annotations
 import re
 from dataclasses import replace
 
+from seal_cli.language.english import SPEAKER_PRONOUNS
 from seal_cli.language.searches import renumbered
 from seal_cli.language.values import Evoked, Parse, Phrase
 
@@ -26,9 +27,6 @@ __all__ = ["TELLING", "merge_reported"]
 
 TELLING = "Tell"
 """The frame that reports to a person; a telling with no message is the one merged."""
-
-_SPEAKER = frozenset(["me", "us"])
-"""The heads of a recipient that is the speaker."""
 
 _ANSWER_AGAIN = frozenset(["it", "that", "this", "the answer"])
 """A telling's message that is the answer of the question before it ("find out his name and tell *it* to Jo")."""
@@ -99,7 +97,7 @@ def _reports(telling: Evoked, question: Evoked) -> bool:
 
 def _to_speaker(recipient: Phrase | None) -> bool:
     """Whether a recipient is the speaker, or unsaid."""
-    return recipient is None or not recipient.text or recipient.head.lower() in _SPEAKER
+    return recipient is None or not recipient.text or recipient.head.lower() in SPEAKER_PRONOUNS
 
 
 def _told(question: Evoked, telling: Evoked) -> Evoked:
