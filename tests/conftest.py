@@ -129,6 +129,17 @@ def tiny_wordnet(folder: Path, data_verb: str, data_noun: str, index_verb: str, 
     return folder
 
 
+def tiny_library(path: Path, text: str) -> Library:
+    """A frame library of the given YAML text, written to ``path`` and read back without problems, for a build
+    script's tests on a few frames."""
+    from seal_cli.frames.reading import read_library
+
+    path.write_text(text)
+    found, problems = read_library([path])
+    assert problems == []
+    return found
+
+
 def run_script(script: Path, *args: str) -> subprocess.CompletedProcess[str]:
     """``script`` (a build script of ``scripts/``) run with ``args`` by this Python, its output captured as text."""
     return subprocess.run([sys.executable, str(script), *args], capture_output=True, text=True, timeout=300)

@@ -10,7 +10,7 @@ from pathlib import Path
 
 from seal_cli.frames.library import Library
 from seal_cli.frames.reading import read_library
-from tests.conftest import tiny_wordnet
+from tests.conftest import tiny_library, tiny_wordnet
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "scripts"))
@@ -66,10 +66,7 @@ def wordnet(tmp_path: Path) -> build.WordNet:
 
 
 def library(tmp_path: Path) -> Library:
-    (tmp_path / "lib.yaml").write_text(LIBRARY)
-    found, problems = read_library([tmp_path / "lib.yaml"])
-    assert problems == []
-    return found
+    return tiny_library(tmp_path / "lib.yaml", LIBRARY)
 
 
 def test_a_verb_that_is_mostly_a_noun_takes_the_frame_of_its_first_units_sense_read_only_opening(

@@ -9,8 +9,7 @@ import sys
 from pathlib import Path
 
 from seal_cli.frames.library import Library
-from seal_cli.frames.reading import read_library
-from tests.conftest import tiny_wordnet
+from tests.conftest import tiny_library, tiny_wordnet
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "scripts"))
@@ -75,10 +74,7 @@ def wordnet(tmp_path: Path) -> build.WordNet:
 
 
 def library(tmp_path: Path) -> Library:
-    (tmp_path / "lib.yaml").write_text(LIBRARY)
-    found, problems = read_library([tmp_path / "lib.yaml"])
-    assert problems == []
-    return found
+    return tiny_library(tmp_path / "lib.yaml", LIBRARY)
 
 
 def test_a_particle_verb_of_a_verb_no_frame_lists_takes_the_frame_its_verb_has_a_sense_of(tmp_path: Path) -> None:

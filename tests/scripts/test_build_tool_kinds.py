@@ -9,8 +9,7 @@ import sys
 from pathlib import Path
 
 from seal_cli.frames.library import Library
-from seal_cli.frames.reading import read_library
-from tests.conftest import tiny_wordnet
+from tests.conftest import tiny_library, tiny_wordnet
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "scripts"))
@@ -65,11 +64,7 @@ def wordnet(tmp_path: Path) -> build.WordNet:
 
 
 def library(tmp_path: Path, instrument: str, default: str) -> Library:
-    path = tmp_path / f"lib-{instrument}.yaml"
-    path.write_text(LIBRARY.format(instrument=instrument, default=default))
-    found, problems = read_library([path])
-    assert problems == []
-    return found
+    return tiny_library(tmp_path / f"lib-{instrument}.yaml", LIBRARY.format(instrument=instrument, default=default))
 
 
 def test_the_kinds_of_a_verbs_tool_are_its_implements_hypernyms(tmp_path: Path) -> None:

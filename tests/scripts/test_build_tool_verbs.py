@@ -8,8 +8,7 @@ import sys
 from pathlib import Path
 
 from seal_cli.frames.library import Library
-from seal_cli.frames.reading import read_library
-from tests.conftest import tiny_wordnet
+from tests.conftest import tiny_library, tiny_wordnet
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "scripts"))
@@ -64,10 +63,7 @@ def wordnet(tmp_path: Path) -> build.WordNet:
 
 
 def library(tmp_path: Path) -> Library:
-    (tmp_path / "lib.yaml").write_text(LIBRARY)
-    found, problems = read_library([tmp_path / "lib.yaml"])
-    assert problems == []
-    return found
+    return tiny_library(tmp_path / "lib.yaml", LIBRARY)
 
 
 def test_the_tools_a_verb_is_named_for_are_implements_its_word_names_first(tmp_path: Path) -> None:
