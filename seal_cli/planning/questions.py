@@ -43,11 +43,11 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 
-from seal_cli.errors import SealError
+from seal_cli.errors import SealError, Where
 from seal_cli.frames.model import Action, Binding, Frame
 from seal_cli.language.english import CHECK_WHETHER, WH_WORDS
 from seal_cli.language.values import Evoked, Parse, Phrase
-from seal_cli.planning.grounding import MapNames, words_of
+from seal_cli.planning.grounding import MapNames, Referent, Refusal, words_of
 
 __all__ = ["ANY_THING", "FACTS", "KINDS", "STATE_WORDS", "Question", "anything_there", "asks_whether", "fact_asked",
            "looking", "put_to_person", "read_questions", "reports", "told_first"]
@@ -170,12 +170,26 @@ def _what(message: str, names: MapNames | None) -> Question | None:
         for relation in CONTAINING:
             rel = relation.split()
             if words[i:i + len(rel)] == rel:
-                phrase = " ".join(words[i + len(rel):])
-                found = names.ground(phrase, "location", ("room", "place")) if words_of(phrase) else None
+                found = _longest_grounded(words[i + len(rel):], names)
                 if found is not None:
                     said = "in" if relation in ("inside", "in") else "on" if relation in ("on", "on top of") else "at"
                     return Question("what", found.id, said, ASKING_WHAT[words[0]])
                 return None
+    return None
+
+
+def _longest_grounded(words: Sequence[str], names: MapNames) -> Referent | None:
+    """The map room or place the longest run of ``words`` from the first names ("the kitchen right now": the
+    kitchen; "the table in the hall": that table, not any table); None when none does. Where no run names one but
+    a run calls a room or a fixed thing the map lacks ("who is in the kitchen?" on a map without a kitchen), that is
+    refused (:class:`Refusal`): a question the robot cannot look into is not said back as it was asked."""
+    runs = [" ".join(words[:end]) for end in range(len(words), 0, -1) if words_of(" ".join(words[:end]))]
+    for run in runs:
+        if (found := names.ground(run, "location", ("room", "place"))) is not None:
+            return found
+    for run in runs:
+        if (refused := names.refusal(run, None)) is not None:
+            raise refused
     return None
 
 
@@ -243,7 +257,10 @@ def read_questions(parse: Parse, commanded: Sequence[Binding], names: MapNames |
         elif evoked.frame == "Tell" and (message := evoked.elements.get("message")) is not None:
             said = message.text or message.head
             fact = fact_asked(said)
-            question = Question("fact", relation=fact) if fact else _what(said, names)
+            try:
+                question = Question("fact", relation=fact) if fact else _what(said, names)
+            except Refusal as refused:                                 # "who is in the kitchen?": no kitchen
+                raise _at_message(refused, message, parse.text) from None
             if put_to_person(message):                                  # "ask Raj if he wants tea"
                 question = Question("asked")
             if question is None and answered and reports(said):           # "find the cup and tell me where it is"
@@ -258,6 +275,13 @@ def read_questions(parse: Parse, commanded: Sequence[Binding], names: MapNames |
             questions.update((b, question) for b in commanded[start:k])
             answered = answered or question.kind not in ("report", "asked")
     return questions
+
+
+def _at_message(refused: Refusal, message: Phrase, text: str) -> SealError:
+    """A refusal of what a question asks about, placed at the question's words in the command."""
+    if message.span is None:
+        return SealError(refused.message)
+    return SealError(refused.message, Where(None, 1, message.span[0] + 1), source_line=text)
 
 
 def anything_there(parse: Parse) -> Parse:

@@ -40,6 +40,27 @@ def test_each_question_is_read_from_its_words(text: str, frame: str, question: Q
     assert asked(text, library) == [(frame, question)]
 
 
+@pytest.mark.parametrize(("text", "frame", "question"), [
+    ("who is in the kitchen right now?", "Tell(message=who_is_in_the_kitchen_right_now)",
+     Question("what", "kitchen", "in", "person")),
+    ("what's on the dining table at the moment", "Tell(message=what_s_on_the_dining_table_at_the_moment)",
+     Question("what", "dining_table_1", "on")),
+])
+def test_words_after_the_place_a_question_asks_about_leave_it_that_place(text: str, frame: str, question: Question,
+                                                                        library: Library) -> None:
+    """"who is in the kitchen right now?" was said back as it was asked: "the kitchen right now" named no room."""
+    assert asked(text, library) == [(frame, question)]
+
+
+@pytest.mark.parametrize("text", ["who is in the garage?", "what's in the dishwasher right now?"])
+def test_a_question_about_a_room_or_fixed_thing_the_map_lacks_is_refused_at_the_question(text: str,
+                                                                                      library: Library) -> None:
+    with pytest.raises(SealError) as refused:
+        asked(text, library)
+    assert "the apartment has no" in refused.value.message
+    assert refused.value.where.column == 1
+
+
 def test_a_message_that_asks_nothing_of_the_map_is_no_question(library: Library) -> None:
     assert asked("tell me a joke", library) == []
     assert asked("what is on the moon?", library) == []            # a place the map lacks: nothing to look at
