@@ -131,6 +131,8 @@ YOU_MUST = frozenset(["you'll have to", "you'll need to", "you will have to", "y
 (``POLITE``), and no statement a comma's remark drops (``State.statement_at``: "you'll" is a subject otherwise)."""
 POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you", "would you", "will you", "might you",
                                      "would you mind",
+                    *(f"{modal} {anyone}" for modal in ("can", "could", "would", "will")   # "could someone bring ..."
+                      for anyone in ("someone", "somebody", "anyone", "anybody")),
                     "could you please", "i want you to", "i need you to", "i would like you to",
                     "i want that you", "i need that you", "i would like that you",
                     "i'd like you to", "you should", "you must", "you need to", "you have to", "you will", *YOU_MUST,

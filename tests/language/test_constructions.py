@@ -3061,3 +3061,10 @@ def test_verbs_from_wordnet_units_of_words32(text: str, want: list[tuple[str, di
                                              library: Library) -> None:
     """Units the WordNet data gives since words32 (framelib/wordnet_units.yaml): rule 1's tie, rule 14."""
     assert_reads(text, want, library)
+
+
+def test_a_request_put_to_anyone_who_hears_it_is_put_to_the_robot(library: Library) -> None:
+    """"could someone bring ..." was refused as the unknown verb 'could' (lead, stop 39)."""
+    assert frames("could someone bring Kenji a mug", library) == [("Bring", {"theme": "mug", "recipient": "Kenji"})]
+    assert frames("can somebody open the fridge please", library) == [("Open", {"theme": "fridge"})]
+    assert frames("would anybody fetch me the towel", library) == [("Bring", {"theme": "towel", "recipient": "me"})]
