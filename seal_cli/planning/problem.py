@@ -1080,7 +1080,8 @@ def _back_to(phrase: Phrase | None, themes: Sequence[str], bindings: Sequence[Bi
 
 def _fetched_unheard_of(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]], things: Things,
                         text: str) -> None:
-    """Refuse, on a map, a thing to take up (a frame that picks it up or needs it held: Pick, Bring, Give, Place) of
+    """Refuse, on a map, a thing to take up (a frame that picks it up or needs it held: Pick, Bring, Give, Place) or to
+    act on where it is (:func:`_goes_to_theme`: Stir, Open) of
     a kind the map knows nothing of — no prior, object or place of it, nor of a kind of it (:attr:`Things.kinds`),
     and not what the robot holds — where the command says it (e2e27: "bring me the hammer" on a house with none).
     ``seal run``'s robot would not search for it (its perception knows the map's classes only,
@@ -1091,7 +1092,8 @@ def _fetched_unheard_of(frame: Frame, evoked: Evoked, values: Mapping[str, tuple
     m = things.map
     phrase = evoked.elements.get("theme")
     if (m is None or not things.all_kinds or phrase is None or phrase.default or "theme" not in values
-            or not _takes(frame) or values.keys() & {"source", "ground"} or stores(frame, evoked.lexical_unit)):
+            or not (_takes(frame) or _goes_to_theme(frame)) or evoked.asked or values.keys() & {"source", "ground"}
+            or stores(frame, evoked.lexical_unit)):
         return
     held = class_key(things.held) if things.held else None
     taxonomy = things.taxonomy
@@ -1106,6 +1108,13 @@ def _fetched_unheard_of(frame: Frame, evoked: Evoked, values: Mapping[str, tuple
         raise _located(f"the {_words(m.name)} knows no {_words(cls)} (no prior, object or place of one), so the "
                        f"robot would not find one to {' '.join(words_of(evoked.lexical_unit))}{has}; say something "
                        "the house has", phrase, text)
+
+
+def _goes_to_theme(frame: Frame) -> bool:
+    """Whether the frame drives to its theme to act on it where it is (Stir, Slice, Open, ToggleOn: "stir my tea" on
+    a house that knows no tea picked up the spoon, then gave up; lead, stop 39), unlike a frame that searches
+    somewhere for it (Find, Count: their question is answered "not found")."""
+    return any(a.name == "navigate" and a.args == ("theme",) for a in frame.actions)
 
 
 def _takes(frame: Frame) -> bool:
