@@ -82,8 +82,8 @@ def test_run_grounds_words_in_the_map_and_a_vocabulary_file(tmp_path: Path) -> N
     words = tmp_path / "words.yaml"
     words.write_text("- {class: cup, synonyms: [beaker]}\n- {class: pineapple, synonyms: [ananas]}\n", encoding="utf-8")
     args = ["run", "--map", "apartment", "stir the beaker", "--json", "--particles", "50", "--max-steps", "5"]
-    plain = json.loads(runner.invoke(app, args).stdout)
-    assert plain["plan"] == ["Pick(theme=spoon)", "Stir(theme=beaker, instrument=spoon)"]   # no such class
+    plain = runner.invoke(app, args)          # no such class: refused before anything moves (lead, stop 39)
+    assert plain.exit_code == 1 and "the apartment knows no beaker" in plain.output
     named = json.loads(runner.invoke(app, [*args, "--vocabulary", str(words)]).stdout)
     assert named["plan"] == ["Pick(theme=spoon)", "Stir(theme=cup, instrument=spoon)"]
     missing = runner.invoke(app, [*args, "--vocabulary", str(tmp_path / "none.yaml")])

@@ -508,7 +508,7 @@ def test_map_places_open_and_robot_holding(library: Library, tmp_path: Path) -> 
     assert steps(result) == ["Place(theme=spoon)", "Pick(theme=apple, source=fridge_a)",
                              "Place(theme=apple, goal=tray)", "Open(theme=box_a)",
                              "Pick(theme=apple_2, source=box_a)", "Place(theme=apple_2, goal=tray)"]
-    assert steps(plan_text("stir the cup", library, map=tiny, holding="knife"))[0] == "Place(theme=knife)"
+    assert steps(plan_text("stir the apple", library, map=tiny, holding="knife"))[0] == "Place(theme=knife)"
 
 
 def test_words_that_cannot_be_planned_are_refused_with_a_caret(library: Library) -> None:
