@@ -591,7 +591,9 @@ def fit_fields(rows: Sequence[Mapping[str, str]], l2: float = L2, trust: Mapping
                min_rooms: int = 0) -> FieldModel:
     """The model fitted on ALFRED goal rows (``goal_sentence``, ``task_type``, ``object``, ``receptacle``,
     ``mrecep``): each field's values counted as the prior, its weights by :func:`~seal_cli.language.chooser.fit`
-    (every value a candidate; a gram weighs a value it was said with in at least :data:`MIN_COUNT` sentences)."""
+    (every value a candidate; a gram weighs a value it was said with in at least :data:`MIN_COUNT` sentences, and
+    in at least ``min_rooms`` floor plans, the rows' ``floor_plan``: 0 ships, as 2 and 3 moved nothing on held-out
+    floor plans, ``docs/language.md`` alfred28)."""
     grams = [sentence_grams(" ".join(r["goal_sentence"].split())) for r in rows]
     priors: dict[str, dict[str, int]] = {}
     weights: dict[str, dict[str, dict[str, float]]] = {}
