@@ -14,7 +14,9 @@ the held-out sentences and prints the five fields as the scorer reads them, the 
 trust was chosen there, never on a valid split. With ``--learn`` the combination's weights are learned there too
 (``taskfields.fit_trust`` on one half of the held-out sentences, scored on the other half, and the other way
 round; then the weights learned on all of them are printed), by the likelihood (``taskfields.fit_trust``) and by the
-count of right values (``taskfields.fit_trust_count``).
+count of right values (``taskfields.fit_trust_count``). ``--l2`` and ``--min-rooms`` fit the words' model otherwise
+too (its L2 penalty; the least number of floor plans a word must have been said in with a value to weigh it) and
+score each with the first trust.
 """
 
 from __future__ import annotations
@@ -38,6 +40,7 @@ from rebuilt import write_or_check  # noqa: E402  scripts/rebuilt.py, beside thi
 from seal_cli.language.grounding import Vocabulary  # noqa: E402
 from seal_cli.language.taskfields import (  # noqa: E402
     FIELDS,
+    L2,
     SHIPPED,
     TRUST,
     FieldModel,
@@ -121,7 +124,9 @@ def dev(args: argparse.Namespace, bwc: ModuleType, rows: list[dict[str, str]]) -
                       bwc.SCENE_L2)
     usage = bwc.usage_of(bwc.with_stack_goals(bwc.with_steps(table, fit_rows, vocabulary), fit_rows, vocabulary))
     tried = vocabulary.with_usage(usage)
-    model = fit_fields(fit_rows)
+    settings = [(l2, rooms) for l2 in args.l2 for rooms in args.min_rooms]
+    models = {setting: fit_fields(fit_rows, l2=setting[0], min_rooms=setting[1]) for setting in settings}
+    model = models[settings[0]]
     scorer = bwc.scorer(data)
     library = bwc.load_library()
     parsed = []
@@ -156,6 +161,9 @@ def dev(args: argparse.Namespace, bwc: ModuleType, rows: list[dict[str, str]]) -
     for i, trust in enumerate(args.trusts):
         shown = "shipped" if trust == dict(TRUST) else ",".join(f"{trust[f]:g}" for f in FIELDS)
         show("reread, trust " + shown, lambda row, t=trust: replace(model, trust=t), keep=i == 0)
+    for l2, rooms in settings[1:]:         # the words' model fitted otherwise, with the first trust
+        show(f"reread, l2 {l2:g}, min rooms {rooms}",
+             lambda row, m=models[(l2, rooms)]: replace(m, trust=args.trusts[0]))
     if args.learn:
         # the combination learned on the held-out parses: scored on each half by the weights learned on the other
         examples = {id(row): trust_examples(model, row, text, parse, tried) for row, text, parse in parsed}
@@ -212,6 +220,11 @@ def main() -> int:
                     help="with --dev: learn the combination on the held-out parses (each half scored by the other's) "
                          "and print the weights learned on all of them")
     ap.add_argument("--errors", type=Path, help="with --dev: write the held-out sentences scored wrong here (TSV)")
+    ap.add_argument("--l2", type=float, nargs="+", default=[L2],
+                    help="with --dev: the words' model's L2 penalties to try (the first with every --trust)")
+    ap.add_argument("--min-rooms", type=int, nargs="+", default=[0],
+                    help="with --dev: the least number of floor plans a word must have been said in with a value "
+                         "to weigh it (taskfields.fit_fields' min_rooms), those to try")
     args = ap.parse_args()
 
     goals = args.data / "alfred" / "goals_train.tsv"
@@ -221,6 +234,14 @@ def main() -> int:
             print(f"error: {path}: no such file (the shared data folder is --data)", file=sys.stderr)
             return 1
     args.trusts = trusts(args.trust)
+    for x in args.l2:
+        if not x > 0:
+            print(f"error: --l2 {x:g}: expected a penalty above 0", file=sys.stderr)
+            return 1
+    for k in args.min_rooms:
+        if k < 0:
+            print(f"error: --min-rooms {k}: expected a count of floor plans, 0 or more", file=sys.stderr)
+            return 1
     bwc = word_classes()
     rows = [r for r in bwc.read_rows(goals) if r.get("split", "train") == "train"]
     if args.dev:

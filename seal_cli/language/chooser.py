@@ -101,26 +101,36 @@ class Instance:
 
 
 def fit(instances: Sequence[Instance], l2: float = 1.0, min_count: int = 2,
-        digits: int = 3, min_label: int = 0) -> dict[str, dict[str, float]]:
+        digits: int = 3, min_label: int = 0, groups: Sequence[str] | None = None,
+        min_groups: int = 0) -> dict[str, dict[str, float]]:
     """The weights ``{feature: {class key: weight}}`` maximising the instances' log-likelihood minus
     ``l2 / 2`` times the squared weights. A (feature, class) pair gets a weight when the feature was
     said with the class among the candidates in at least ``min_count`` instances, and with the class
     meant in at least ``min_label`` (a model over many classes, every one a candidate, keeps only the
-    pairs seen together: its table stays small); weights are rounded to ``digits`` decimals and those
-    that round to zero left out. Deterministic (L-BFGS from zero)."""
+    pairs seen together: its table stays small) and in at least ``min_groups`` of the instances'
+    ``groups`` (one per instance, such as the room it was said in: a word that went with a class in one
+    room only says more of that room than of the word); weights are rounded to ``digits`` decimals and
+    those that round to zero left out. Deterministic (L-BFGS from zero)."""
     import numpy as np
     from scipy.optimize import minimize
     from scipy.sparse import csr_matrix
 
-    usable = [i for i in instances if len(i.candidates) >= 2]
+    if groups is not None and len(groups) != len(instances):
+        raise ValueError(f"{len(instances)} instances have {len(groups)} groups")
+    kept = [(i, g) for i, g in zip(instances, groups if groups is not None else [""] * len(instances), strict=True)
+            if len(i.candidates) >= 2]
+    usable = [i for i, _ in kept]
     seen: Counter[tuple[str, str]] = Counter()
     meant: Counter[tuple[str, str]] = Counter()
-    for inst in usable:
+    meant_in: dict[tuple[str, str], set[str]] = {}
+    for inst, where in kept:
         for f in set(inst.features):
             meant[(f, inst.candidates[inst.label])] += 1
+            meant_in.setdefault((f, inst.candidates[inst.label]), set()).add(where)
             for c in inst.candidates:
                 seen[(f, c)] += 1
-    pairs = sorted(p for p, n in seen.items() if n >= min_count and meant[p] >= min_label)
+    pairs = sorted(p for p, n in seen.items() if n >= min_count and meant[p] >= min_label
+                   and len(meant_in.get(p, ())) >= min_groups)
     index = {p: k for k, p in enumerate(pairs)}
     rows: list[int] = []
     cols: list[int] = []

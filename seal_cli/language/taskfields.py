@@ -587,10 +587,13 @@ def _written(parse: Parse, library: Library, vocabulary: Vocabulary, reading: Re
     return replace(parse, frames=tuple(out))
 
 
-def fit_fields(rows: Sequence[Mapping[str, str]], l2: float = L2, trust: Mapping[str, float] = TRUST) -> FieldModel:
+def fit_fields(rows: Sequence[Mapping[str, str]], l2: float = L2, trust: Mapping[str, float] = TRUST,
+               min_rooms: int = 0) -> FieldModel:
     """The model fitted on ALFRED goal rows (``goal_sentence``, ``task_type``, ``object``, ``receptacle``,
     ``mrecep``): each field's values counted as the prior, its weights by :func:`~seal_cli.language.chooser.fit`
-    (every value a candidate; a gram weighs a value it was said with in at least :data:`MIN_COUNT` sentences)."""
+    (every value a candidate; a gram weighs a value it was said with in at least :data:`MIN_COUNT` sentences, and
+    in at least ``min_rooms`` floor plans, the rows' ``floor_plan``: 0 ships, as 2 and 3 moved nothing on held-out
+    floor plans, ``docs/language.md`` alfred28)."""
     grams = [sentence_grams(" ".join(r["goal_sentence"].split())) for r in rows]
     priors: dict[str, dict[str, int]] = {}
     weights: dict[str, dict[str, dict[str, float]]] = {}
@@ -601,7 +604,8 @@ def fit_fields(rows: Sequence[Mapping[str, str]], l2: float = L2, trust: Mapping
         offsets = tuple(math.log(counts[v]) for v in values)
         instances = [Instance(values, offsets, values.index(v), g) for v, g in zip(labels, grams, strict=True)]
         priors[name] = dict(sorted(counts.items()))
-        weights[name] = fit(instances, l2=l2, min_count=MIN_COUNT, digits=2, min_label=MIN_COUNT)
+        weights[name] = fit(instances, l2=l2, min_count=MIN_COUNT, digits=2, min_label=MIN_COUNT,
+                            groups=[r.get("floor_plan", "") for r in rows], min_groups=min_rooms)
     return FieldModel(priors, weights, trust)
 
 

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import math
 
+import pytest
+
 from seal_cli.frames.reading import Library
 from seal_cli.language.chooser import Instance, features, fit, logits
 from seal_cli.language.grounding import Vocabulary
@@ -43,6 +45,19 @@ def test_a_stronger_penalty_keeps_weights_smaller_and_rare_pairs_get_none() -> N
     rare = [*_cups(10), Instance(("cup", "mug"), (0.0, 0.0), 0, ("w:once",))]
     assert "w:once" not in fit(rare, min_count=2)
     assert fit([Instance(("cup",), (0.0,), 0, ("w:a",))]) == {}   # one candidate: nothing to choose
+
+
+def test_a_word_that_went_with_a_class_in_one_room_only_gets_no_weight() -> None:
+    # every mug said beside "coffee" was said in its own room; the one room whose cups all stood in a "sink"
+    # says more of that room than of the word "sink"
+    cups = _cups(40)
+    rooms = [f"kitchen{k}" if k % 2 == 0 else "the one kitchen" for k in range(len(cups))]
+    spread = fit(cups, l2=1.0, groups=rooms, min_groups=2)
+    assert "mug" in spread["w:coffee"]
+    assert "cup" not in spread.get("w:sink", {})
+    assert fit(cups, l2=1.0, groups=rooms, min_groups=0) == fit(cups, l2=1.0)    # 0: no room asked for
+    with pytest.raises(ValueError, match="40 instances have 2 groups"):
+        fit(cups, groups=["a", "b"], min_groups=2)
 
 
 def test_the_weights_decide_against_the_counts_prior(library: Library) -> None:
