@@ -95,7 +95,9 @@ class Evoker:
         unit, best = self.choose(unit, self.accompanying(frames, clause) or self.keeping_near(unit, clause) or frames,
                                  clause)
         best = self.moved_object(best, self.types.evoked_by(unit), clause)
-        best = self.escorting(self.moving(best, self.types.evoked_by(unit), clause), clause)
+        best = self.returning(self.moving(best, self.types.evoked_by(unit), clause), self.types.evoked_by(unit),
+                              clause)
+        best = self.escorting(self.caused_motion(best, clause), clause)
         best = self.examining_for(best, clause)
         _, frame, roles, attached = self.showing(best, clause)
         if self.fell_back:
@@ -115,11 +117,19 @@ class Evoker:
         rest = clause.items[1:]               # "pop the telly on *in the lounge*": where, after the state
         placed = all(isinstance(x, PP) and not x.lead and x.prep != clause.items[0].lower for x in rest) \
             if clause.items and isinstance(clause.items[0], Word) else False
-        stray = clause.items[0] if clause.items and placed and clause.objects else None
+        stray = clause.items[0] if clause.items and placed else None
         if not isinstance(stray, Word) or stray.tag != "PARTICLE" or stray.lower not in _STRAY_STATES or \
-                stray.lower in words[1:] or self.text[clause.objects[-1].end:stray.start].strip():
-            return                               # only right after the thing: "with the lamp *on*" describes
+                stray.lower in words[1:]:
+            return
         verb = self.text[clause.verb.start:clause.verb.end].lower()
+        if not clause.objects:                   # "hold on": the verb and the particle alone (words34: read as a
+            if self.text[clause.verb.end:stray.start].strip() or not clause.verb.text:   # Pick of nothing)
+                return
+            raise CommandError(f"'{verb} {stray.lower}' is no verb of the library: no frame of it takes "
+                               f"'{stray.lower}' alone; say what to do ('wait here', 'turn it {stray.lower}')",
+                               clause.verb.start + 1, self.text, ["a verb the robot knows"])
+        if self.text[clause.objects[-1].end:stray.start].strip():
+            return                               # only right after the thing: "with the lamp *on*" describes
         head = clause.objects[0].head
         part = head is not None and noun_lemma(head.text.lower()) in PARTS     # "put the lid on": on what?
         said = f"{stray.lower!r} after {self.text[clause.objects[0].start:clause.objects[0].end]!r}"
@@ -348,6 +358,61 @@ class Evoker:
             return best                      # "pick up the cup and get [it] to the kitchen"
         going = [f for f in self.library.frames if f.elements and f.elements[0].role == "goal"]
         return self.best_fit(going, clause) or best
+
+    def returning(self, best: Fit, frames: Sequence[Frame], clause: Clause) -> Fit:
+        """"then *return to me*", "return to the kitchen": a verb both of going (one of its ``frames`` has the goal
+        first: Go) and of handing a thing over (Bring: "return the cup to me"), said with no object, only where or
+        to whom, is going there: the frames of the verb whose first element is the goal, when one takes the clause
+        (words34: "return to me" was a Bring of nothing to me). Not while the frame before leaves a thing in hand
+        for the verb to carry on with unsaid ("heat the mug, move [it] to the cabinet")."""
+        _, frame, roles, _ = best
+        first = frame.elements[0].role if frame.elements else None
+        if first is None or first == "goal" or first in roles or clause.objects or clause.message or not roles or \
+                any(role not in PLACES and role != "recipient" for role in roles):
+            return best
+        if self.frames and frame.needs_held() and not self.let_go():
+            return best                      # "heat the mug, move [it] to the cabinet": still in hand
+        going = [f for f in frames if f.elements and f.elements[0].role == "goal"]
+        return (self.best_fit(going, clause) or best) if going else best
+
+    def let_go(self) -> bool:
+        """Whether the frame said last leaves nothing in the robot's hand (its result: ``not holding(theme)``, as
+        Place's and Bring's), so that nothing is there for a verb to carry on with unsaid."""
+        last = self.library.frame(self.frames[-1].frame)
+        return any(p.predicate == "holding" and p.negated for p in last.postconditions)
+
+    def caused_motion(self, best: Fit, clause: Clause) -> Fit:
+        """"bung the jeans *in the washing machine*", "bung the towels *into* the basket": a frame with no goal, said of one
+        thing and a phrase of putting right after it that the frame took as describing the thing, is English's
+        caused motion (the verb says how the thing is moved, the phrase where to: putting it there, the library's
+        frames of :meth:`putting`) when the phrase says a path ("into", "onto": no thing is described by where it
+        goes), or the thing is not known to be a member of the frame's first element's type (a closed one) nor a
+        container (a jar is opened) while the phrase names a thing things are put *in* (the ``hollow`` category: "bung
+        the jeans in the washing machine"). "close the door in the kitchen", "open the jar in the fridge", "wash the
+        cup in the sink" are as chosen
+        (words34: "bung the jeans in the washing machine" was Close of "the jeans in the washing machine", put
+        nowhere)."""
+        _, frame, roles, attached = best
+        first = frame.elements[0] if frame.elements else None
+        if first is None or first.role != "theme" or "goal" in self.types.roles(frame) or \
+                len(clause.objects) != 1 or roles.get("theme") is not clause.objects[0]:
+            return best
+        np = clause.objects[0]
+        pp = next((pp for host, pp in attached if host is np and pp.prep in PUT_IN and not pp.lead), None)
+        if pp is None or np.kind != "thing" or np.pronoun is not None or self.is_form(pp):
+            return best
+        thing = noun_lemma(self.roles.class_or_head(np))
+        if pp.prep not in ("into", "onto") and not (
+                pp.np.kind == "thing" and not self.types.is_open(first.type) and
+                self.types.is_a(thing, first.type) is not True and self.types.is_a(thing, "container") is not True
+                and any(self.types.is_a(name, "hollow") is True for name in self.names_of(pp.np))):
+            return best                      # "close the door in the kitchen", "open the jar in the fridge"
+        return self.best_fit(self.putting(), clause) or best
+
+    def names_of(self, np: NP) -> tuple[str, ...]:
+        """The class a phrase names, as its head's singular and with the word before it ("washing machine")."""
+        head = noun_lemma(self.roles.class_or_head(np))
+        return (f"{np.mods[-1].lower} {head}", head) if np.mods else (head,)
 
     def escorting(self, best: Fit, clause: Clause) -> Fit:
         """"*get Jane to* the kitchen", "deliver the guest to the lobby": a frame that moves a thing to a goal,

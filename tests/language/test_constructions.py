@@ -3061,3 +3061,80 @@ def test_verbs_from_wordnet_units_of_words32(text: str, want: list[tuple[str, di
                                              library: Library) -> None:
     """Units the WordNet data gives since words32 (framelib/wordnet_units.yaml): rule 1's tie, rule 14."""
     assert_reads(text, want, library)
+
+
+# words34: a wish said of a person described, a part of a whole counted, going back, caused motion, a verb and a
+# particle alone
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("Priya, who is on the patio, needs a sun hat", [("Bring", {"theme": "hat", "recipient": "Priya"})]),
+    ("Omar, who's upstairs, would like his slippers", [("Bring", {"theme": "slipper", "recipient": "Omar"})]),
+    ("the boy who is crying wants his teddy", [("Bring", {"theme": "teddy", "recipient": "boy"})]),
+    ("Lena in the conservatory needs a jug of water", [("Bring", {"theme": "jug", "recipient": "Lena"})]),
+    ("my aunt, who is in the den, wants a cushion", [("Bring", {"theme": "cushion", "recipient": "aunt"})]),
+])
+def test_a_wish_said_of_a_described_person_brings_them_the_thing(text: str, want: list[tuple[str, dict[str, str]]],
+                                                                 library: Library) -> None:
+    """The description between the person and "needs" was read as a question told to them (words34)."""
+    assert_reads(text, want, library)
+
+
+def test_a_person_addressed_and_a_question_stay_a_question(library: Library) -> None:
+    (tell,) = parse_command("Omar, who is in the den?", library).frames
+    assert tell.frame == "Tell" and tell.elements["message"].text == "who is in the den"
+
+
+@pytest.mark.parametrize(("text", "theme", "count"), [
+    ("hand me three of the pegs", "peg", 3),
+    ("pass me one of those plates", "plate", 1),
+    ("carry two of the stools to the porch", "stool", 2),
+])
+def test_a_number_of_a_whole_counts_its_things(text: str, theme: str, count: int, library: Library) -> None:
+    """"two of the chairs" was refused at "of" (words34)."""
+    frame = parse_command(text, library).frames[0]
+    assert frame.elements["theme"].head == theme and frame.elements["theme"].quantity == count
+
+
+def test_a_number_of_them_refers_to_the_things_before(library: Library) -> None:
+    pick, bring = parse_command("pick up the pears, then bring me two of them", library).frames
+    assert bring.frame == "Bring" and tuple(bring.elements["theme"].refers_to or ()) == (0, "theme")
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("return to the porch", [("Go", {"goal": "porch"})]),
+    ("now return to me", [("Go", {"goal": "me"})]),
+    ("put the keys on the hook and return to the hall", [("Place", {"theme": "key", "goal": "hook"}),
+                                                          ("Go", {"goal": "hall"})]),
+    ("return the scarf to Lena", [("Bring", {"theme": "scarf", "recipient": "Lena"})]),
+    ("pick up the scarf and return it to Lena", [("Pick", {"theme": "scarf"}),
+                                                 ("Bring", {"theme": "scarf", "recipient": "Lena"})]),
+    ("warm the soup, move to the table", [("Heat", {"theme": "soup"}), ("Place", {"theme": "soup", "goal": "table"})]),
+])
+def test_returning_with_nothing_said_is_going_back(text: str, want: list[tuple[str, dict[str, str]]],
+                                                   library: Library) -> None:
+    """"return to me" was a Bring of nothing to me; a thing still in hand is still carried on (words34)."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("bung the socks into the basket", [("Place", {"theme": "sock", "goal": "basket"})]),
+    ("bung the shirts in the tumble dryer", [("Place", {"theme": "shirt", "goal": "dryer"})]),
+    ("open the jar in the fridge", [("Open", {"theme": "jar"})]),
+    ("close the door in the hall", [("Close", {"theme": "door"})]),
+    ("open the jar on the shelf", [("Open", {"theme": "jar"})]),
+    ("rinse the mug in the sink", [("Clean", {"theme": "mug", "instrument": "sink"})]),
+])
+def test_a_verb_with_no_goal_and_a_path_puts_the_thing_there(text: str, want: list[tuple[str, dict[str, str]]],
+                                                              library: Library) -> None:
+    """Caused motion: "bung X into Y" was Close of "X into Y", X put nowhere (words34)."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "column"), [("hold on", 1), ("please hold on in the porch", 8),
+                                              ("hang on in the porch", 1)])
+def test_a_verb_and_on_alone_is_refused_at_the_verb(text: str, column: int, library: Library) -> None:
+    """"hold on" was a Pick of nothing; "hang on in the porch" turned on a thing called "hang" (words34)."""
+    with pytest.raises(CommandError) as refused:
+        parse_command(text, library)
+    assert refused.value.column == column
