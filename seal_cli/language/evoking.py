@@ -21,7 +21,6 @@ from seal_cli.language.english import (
     NP_OPENERS,
     ROUTE_NOUNS,
     SPEAKER_PRONOUNS,
-    WH_WORDS,
     is_room_word,
 )
 from seal_cli.language.grounding import PARTS, PIECES, PORTIONS
@@ -29,7 +28,6 @@ from seal_cli.language.lexicon import CommandError, Mention, Word, noun_lemma
 from seal_cli.language.morphology import is_gradable
 from seal_cli.language.reference import PLACES, Reference
 from seal_cli.language.roles import FROM, PUT_IN, ROLE_PREPOSITIONS, TO, Roles
-from seal_cli.language.searches import SEARCH
 from seal_cli.language.syntax import NP, PP, Clause
 from seal_cli.language.unplaced import unplaced
 from seal_cli.language.values import Evoked, Parse, Phrase
@@ -382,8 +380,8 @@ class Evoker:
         return any(p.predicate == "holding" and p.negated for p in last.postconditions)
 
     def caused_motion(self, best: Fit, clause: Clause) -> Fit:
-        """"bung the jeans *in the washing machine*", "bung the towels *into* the basket": a frame with no goal, said of one
-        thing and a phrase of putting right after it that the frame took as describing the thing, is English's
+        """"bung the jeans *in the washing machine*", "bung the towels *into* the basket": a frame with no goal, said of
+        one thing and a phrase of putting right after it that the frame took as describing the thing, is English's
         caused motion (the verb says how the thing is moved, the phrase where to: putting it there, the library's
         frames of :meth:`putting`) when the phrase says a path ("into", "onto": no thing is described by where it
         goes), or the thing is not known to be a member of the frame's first element's type (a closed one) nor a
@@ -770,9 +768,6 @@ class Evoker:
             implicit = self.reference.implicit(frame, first.role)
             if implicit is not None:
                 elements = {first.role: implicit, **elements}
-        told = self.answer_told(frame, elements)
-        if told is not None:
-            elements[told[0]] = told[1]
         for element in frame.elements:
             if element.role not in elements and element.default is not None:
                 elements[element.role] = Phrase(None, element.default, self.ground_name(element.default),
@@ -789,19 +784,6 @@ class Evoker:
                                   or None, clause.asked))
         self.carry_on(frame, roles, attached)
         self.cut_where_it_lies(frame, roles, attached)
-
-    def answer_told(self, frame: Frame, elements: Mapping[str, Phrase]) -> tuple[str, Phrase] | None:
-        """A message left unsaid right after a frame that answers a question is that answer: "count the cups and *let
-        me know*", "... and tell me" say how many there are, "find the keys and let me know" where they are (the
-        question the earlier frame answers: a unit of it that asks, "how many", or "where" for a search; words32).
-        Its text is empty (nothing said), its head the question, which the planner reads as a report."""
-        role = next((e.role for e in frame.elements if e.type == "message" and e.role not in elements), None)
-        if role is None or not self.frames or any(p.kind == "message" for p in elements.values()):
-            return None
-        before = self.library.frame(self.frames[-1].frame)
-        asks = next((u.text for u in before.lexical_units if u.text.split()[0] in WH_WORDS), None)
-        question = asks or ("where" if before.name == SEARCH else None)
-        return None if question is None else (role, Phrase("", question, None, "message"))
 
     def cut_where_it_lies(self, frame: Frame, roles: Mapping[str, Any], attached: list[tuple[NP, PP]]) -> None:
         """"Slice the apple *in the pan*", "cut an apple inside a pot": a thing cut where it lies in a container

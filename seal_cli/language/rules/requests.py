@@ -1821,7 +1821,8 @@ WISH_OF_DESCRIBED = Rule("a wish said of a person described", _wish_of_described
 WISH_DROPPED = Rule("the wish after a person's phrase", _wish_dropped, (
     Example("the person at the armchair needs a towel", "needs", ""),
     Example("Robin, who is in the garage, needs a wrench", ", needs", ""),
-), _WISHED | frozenset(["would", ","]), "the 'needs' of 'the guest needs X', dropped: 'bring' was read before the phrase")
+), _WISHED | frozenset(["would", ","]),
+   "the 'needs' of 'the guest needs X' (and the comma closing what describes them), dropped: 'bring' was read before")
 PATH_ALONE_RULE = Rule("a path alone", _path_alone, (
     Example("to the bathroom", "to", Tag.PREP),
     Example("back to the kitchen, please", "back to", Tag.PREP),
