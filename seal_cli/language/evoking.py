@@ -95,7 +95,7 @@ class Evoker:
         best = self.moved_object(best, self.types.evoked_by(unit), clause)
         best = self.returning(self.moving(best, self.types.evoked_by(unit), clause), self.types.evoked_by(unit),
                               clause)
-        best = self.escorting(self.caused_motion(best, clause), clause)
+        best = self.escorting(self.caused_motion(self.cleared(unit, best, clause), clause), clause)
         best = self.examining_for(best, clause)
         _, frame, roles, attached = self.showing(best, clause)
         if self.fell_back:
@@ -378,6 +378,27 @@ class Evoker:
         Place's and Bring's), so that nothing is there for a verb to carry on with unsaid."""
         last = self.library.frame(self.frames[-1].frame)
         return any(p.predicate == "holding" and p.negated for p in last.postconditions)
+
+    def cleared(self, unit: str, best: Fit, clause: Clause) -> Fit:
+        """"*clear off* the counter", "take off the table", "clear out the cupboard": a unit of taking in hand that ends in
+        a particle of leaving a place ("off", "out"), said of one thing that never moves (the ``fixed`` category: a
+        counter, a cupboard), takes things *from* it: the object is the frame's source, what is taken left unsaid
+        (words34: the counter itself was picked up). "take off the lid" and "clear away the cups" are as chosen."""
+        _, frame, roles, _ = best
+        particle = unit.split()[-1] if " " in unit else None
+        if particle not in _LEAVING or not frame.gets_held() or "source" not in self.types.roles(frame) or \
+                len(clause.objects) != 1 or roles.get("theme") is not clause.objects[0] or clause.items:
+            return best
+        np = clause.objects[0]
+        if np.kind != "thing" or np.pronoun is not None or \
+                self.types.is_a(noun_lemma(self.roles.class_or_head(np)), "fixed") is not True:
+            return best
+        said = replace(clause, objects=[], items=[PP(_LEAVING[particle], np, np.start)])
+        found = self.best_fit([frame], said)
+        if found is None:
+            return best
+        clause.objects, clause.items = said.objects, said.items
+        return found
 
     def caused_motion(self, best: Fit, clause: Clause) -> Fit:
         """"bung the jeans *in the washing machine*", "bung the towels *into* the basket": a frame with no goal, said of
@@ -1114,6 +1135,10 @@ def _named_again(content: NP, theme: Any, host: NP, attached: Sequence[tuple[NP,
     return any(h is content and p.prep in PUT_IN and p.np.head is not None and not p.np.pronoun
                and noun_lemma(p.np.head.text) == head for h, p in attached)
 
+
+_LEAVING = {"off": "off", "out": "out of"}
+"""The particles of taking a thing from where it is, and the preposition each says that place with ("clear *off* the
+counter": off the counter; "clear *out* the cupboard": out of it)."""
 
 _STRAY_STATES = frozenset(["on", "off"])
 """The particles that name a state (on.a.01 ! off.a.01): said alone after a thing, they change what is done."""

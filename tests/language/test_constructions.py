@@ -3138,3 +3138,15 @@ def test_a_verb_and_on_alone_is_refused_at_the_verb(text: str, column: int, libr
     with pytest.raises(CommandError) as refused:
         parse_command(text, library)
     assert refused.value.column == column
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("clear off the desk", [("Pick", {"source": "desk"})]),
+    ("take off the shelf", [("Pick", {"source": "shelf"})]),
+    ("take off the lid", [("Pick", {"theme": "lid"})]),                  # a thing that moves: taken off
+    ("clear away the glasses", [("Pick", {"theme": "glass"})]),
+])
+def test_clearing_off_a_thing_that_never_moves_takes_things_from_it(text: str, want: list[tuple[str, dict[str, str]]],
+                                                                     library: Library) -> None:
+    """"clear off the counter" picked the counter up (words34)."""
+    assert_reads(text, want, library)
