@@ -380,8 +380,8 @@ class Evoker:
         return any(p.predicate == "holding" and p.negated for p in last.postconditions)
 
     def cleared(self, unit: str, best: Fit, clause: Clause) -> Fit:
-        """"*clear off* the counter", "take off the table", "clear out the cupboard": a unit of taking in hand that ends in
-        a particle of leaving a place ("off", "out"), said of one thing that never moves (the ``fixed`` category: a
+        """"*clear off* the counter", "take off the table", "clear out the cupboard": a unit of taking in hand that ends
+        in a particle of leaving a place ("off", "out"), said of one thing that never moves (the ``fixed`` category: a
         counter, a cupboard), takes things *from* it: the object is the frame's source, what is taken left unsaid
         (words34: the counter itself was picked up). "take off the lid" and "clear away the cups" are as chosen."""
         _, frame, roles, _ = best
