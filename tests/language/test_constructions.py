@@ -3150,3 +3150,14 @@ def test_clearing_off_a_thing_that_never_moves_takes_things_from_it(text: str, w
                                                                      library: Library) -> None:
     """"clear off the counter" picked the counter up (words34)."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("switch on the heater, sorry, switch it off", [("ToggleOff", {"theme": "heater"})]),
+    ("turn off the radio, sorry, turn the tv off", [("ToggleOff", {"theme": "tv"})]),
+    ("open the door, sorry, then close the window", [("Open", {"theme": "door"}), ("Close", {"theme": "window"})]),
+])
+def test_a_clause_said_again_with_its_verb_corrects_the_one_before(text: str, want: list[tuple[str, dict[str, str]]],
+                                                                  library: Library) -> None:
+    """"turn on the lamp, sorry, turn it off" did both: the verb said again was compared whole ("turn on") (words34)."""
+    assert_reads(text, want, library)
