@@ -21,6 +21,7 @@ from seal_cli.language.english import (
     NP_OPENERS,
     ROUTE_NOUNS,
     SPEAKER_PRONOUNS,
+    TIME_UNITS,
     is_room_word,
 )
 from seal_cli.language.grounding import PARTS, PIECES, PORTIONS
@@ -112,6 +113,7 @@ class Evoker:
         only by places ("pop the telly on *in the lounge*"; "with the lamp *on*", "the table it was *on*", "on on the
         table" are not). A unit that ends in it ("take the lid *off*") keeps it."""
         words = unit.split()
+        self.particle_alone(words, clause)
         rest = clause.items[1:]               # "pop the telly on *in the lounge*": where, after the state
         placed = all(isinstance(x, PP) and not x.lead and x.prep != clause.items[0].lower for x in rest) \
             if clause.items and isinstance(clause.items[0], Word) else False
@@ -120,13 +122,7 @@ class Evoker:
                 stray.lower in words[1:]:
             return
         verb = self.text[clause.verb.start:clause.verb.end].lower()
-        if not clause.objects:                   # "hold on": the verb and the particle alone (words34: read as a
-            if self.text[clause.verb.end:stray.start].strip() or not clause.verb.text:   # Pick of nothing)
-                return
-            raise CommandError(f"'{verb} {stray.lower}' is no verb of the library: no frame of it takes "
-                               f"'{stray.lower}' alone; say what to do ('wait here', 'turn it {stray.lower}')",
-                               clause.verb.start + 1, self.text, ["a verb the robot knows"])
-        if self.text[clause.objects[-1].end:stray.start].strip():
+        if not clause.objects or self.text[clause.objects[-1].end:stray.start].strip():
             return                               # only right after the thing: "with the lamp *on*" describes
         head = clause.objects[0].head
         part = head is not None and noun_lemma(head.text.lower()) in PARTS     # "put the lid on": on what?
@@ -138,6 +134,31 @@ class Evoker:
                            f"{said}: '{verb} ... {stray.lower}' is no verb of the library, and the state it names "
                            f"would be lost; say what to do with it ('turn it {stray.lower}', 'put it down')",
                            stray.start + 1, self.text, ["a verb the robot knows"])
+
+    def particle_alone(self, unit: Sequence[str], clause: Clause) -> None:
+        """"hold on", "hold on for a moment", "hold on in the hall": "on"/"off" right after a verb said with no object,
+        no particle of the unit, followed by nothing, a time ("on *a moment*" is no place) or where (not where to: "go
+        on *to* the hall" goes), makes the verb another verb no frame has: refused at the verb (words34: a Pick of
+        nothing, "on" dropped; "go on a moment" went to a moment). "turn on", "switch it off", "put the cup on the
+        table", "come on in" are not."""
+        if clause.objects or not clause.items or not clause.verb.text:
+            return
+        first = clause.items[0]
+        if isinstance(first, Word):
+            particle = first.lower if first.tag == "PARTICLE" else None
+        else:
+            particle = first.prep if isinstance(first, PP) and not first.lead and \
+                first.np.head_text in TIME_UNITS else None
+        timed = all(isinstance(x, PP) and not x.lead and (x.np.head_text in TIME_UNITS or x.prep not in TO) or
+                    isinstance(x, Word) and x.info == "time"   # "hold on *in the hall*"; "go on *to* the hall" goes,
+                    for x in clause.items[1:])                 # "come on *in*": another particle
+        if particle not in _STRAY_STATES or particle in unit[1:] or not timed or \
+                self.text[clause.verb.end:first.start].strip():
+            return
+        verb = self.text[clause.verb.start:clause.verb.end].lower()
+        raise CommandError(f"'{verb} {particle}' is no verb of the library: no frame of '{verb}' takes "
+                           f"'{particle}' alone; say what to do ('wait here', 'turn it {particle}')",
+                           clause.verb.start + 1, self.text, ["a verb the robot knows"])
 
     @staticmethod
     def object_as(role: str, clause: Clause) -> None:
@@ -350,8 +371,9 @@ class Evoker:
         _, frame, roles, _ = best
         first = frame.elements[0].role if frame.elements else None
         if first is None or first in roles or clause.objects or clause.message or not roles or \
-                any(role not in PLACES for role in roles) or not any(f.gets_held() for f in frames):
-            return best
+                any(role not in PLACES for role in roles) or not any(f.gets_held() for f in frames) or \
+                any(isinstance(np, NP) and np.head_text in TIME_UNITS for np in roles.values()):
+            return best                      # "hold on a moment": a time, no place to go (words34)
         if self.frames and frame.needs_held() and self.reference.implicit(frame, first) is not None:
             return best                      # "pick up the cup and get [it] to the kitchen"
         going = [f for f in self.library.frames if f.elements and f.elements[0].role == "goal"]

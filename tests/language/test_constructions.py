@@ -3132,9 +3132,11 @@ def test_a_verb_with_no_goal_and_a_path_puts_the_thing_there(text: str, want: li
 
 
 @pytest.mark.parametrize(("text", "column"), [("hold on", 1), ("please hold on in the porch", 8),
-                                              ("hang on in the porch", 1)])
+                                              ("hang on in the porch", 1), ("hold on a second", 1),
+                                              ("ok, hold on for a minute", 5)])
 def test_a_verb_and_on_alone_is_refused_at_the_verb(text: str, column: int, library: Library) -> None:
-    """"hold on" was a Pick of nothing; "hang on in the porch" turned on a thing called "hang" (words34)."""
+    """"hold on" was a Pick of nothing, "hold on a second" a Pick from "a second"; "hang on in the porch" turned on a thing
+    called "hang" (words34)."""
     with pytest.raises(CommandError) as refused:
         parse_command(text, library)
     assert refused.value.column == column
@@ -3160,4 +3162,14 @@ def test_clearing_off_a_thing_that_never_moves_takes_things_from_it(text: str, w
 def test_a_clause_said_again_with_its_verb_corrects_the_one_before(text: str, want: list[tuple[str, dict[str, str]]],
                                                                   library: Library) -> None:
     """"turn on the lamp, sorry, turn it off" did both: the verb said again was compared whole ("turn on") (words34)."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("go on to the attic", [("Go", {"goal": "attic"})]),
+    ("come on in", [("Go", {})]),
+    ("turn on", [("ToggleOn", {})]),
+])
+def test_a_verb_and_on_going_on_or_a_unit_is_read(text: str, want: list[tuple[str, dict[str, str]]],
+                                                  library: Library) -> None:
     assert_reads(text, want, library)
