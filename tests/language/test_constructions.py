@@ -3135,8 +3135,8 @@ def test_a_verb_with_no_goal_and_a_path_puts_the_thing_there(text: str, want: li
                                               ("hang on in the porch", 1), ("hold on a second", 1),
                                               ("ok, hold on for a minute", 5)])
 def test_a_verb_and_on_alone_is_refused_at_the_verb(text: str, column: int, library: Library) -> None:
-    """"hold on" was a Pick of nothing, "hold on a second" a Pick from "a second"; "hang on in the porch" turned on a thing
-    called "hang" (words34)."""
+    """"hold on" was a Pick of nothing, "hold on a second" a Pick from "a second"; "hang on in the porch" turned on
+    a thing called "hang" (words34)."""
     with pytest.raises(CommandError) as refused:
         parse_command(text, library)
     assert refused.value.column == column
