@@ -3096,8 +3096,11 @@ def test_a_number_of_a_whole_counts_its_things(text: str, theme: str, count: int
     assert frame.elements["theme"].head == theme and frame.elements["theme"].quantity == count
 
 
-def test_a_number_of_them_refers_to_the_things_before(library: Library) -> None:
-    pick, bring = parse_command("pick up the pears, then bring me two of them", library).frames
+@pytest.mark.parametrize("text", ["pick up the pears, then bring me two of them",
+                                  "put the pears in the bowl, then bring me two of them"])
+def test_a_number_of_them_refers_to_the_things_before(text: str, library: Library) -> None:
+    """Of the pears put in the bowl, not of the bowl carried on ("bring them to me": the bowl with them; words34)."""
+    _, bring = parse_command(text, library).frames
     assert bring.frame == "Bring" and tuple(bring.elements["theme"].refers_to or ()) == (0, "theme")
 
 
