@@ -141,8 +141,9 @@ class Evoker:
         on *to* the hall" goes), makes the verb another verb no frame has: refused at the verb (words34: a Pick of
         nothing, "on" dropped; "go on a moment" went to a moment). "turn on", "switch it off", "put the cup on the
         table", "come on in" are not."""
-        if clause.objects or not clause.items or not clause.verb.text:
-            return
+        if clause.objects or not clause.items or not clause.verb.text or \
+                self.text[:clause.verb.start].lower().split()[-1:] == ["to"]:
+            return                           # "a plate for an egg *to rest on*": the thing it rests on, said before
         first = clause.items[0]
         if isinstance(first, Word):
             particle = first.lower if first.tag == "PARTICLE" else None
@@ -380,16 +381,16 @@ class Evoker:
         return self.best_fit(going, clause) or best
 
     def returning(self, best: Fit, frames: Sequence[Frame], clause: Clause) -> Fit:
-        """"then *return to me*", "return to the kitchen": a verb both of going (one of its ``frames`` has the goal
-        first: Go) and of handing a thing over (Bring: "return the cup to me"), said with no object, only where or
-        to whom, is going there: the frames of the verb whose first element is the goal, when one takes the clause
+        """"then *return to me*": a verb both of going (one of its ``frames`` has the goal first: Go) and of handing a
+        thing over (Bring: "return the cup to me"), said with no object, only the person it goes to, is going to
+        them: the frames of the verb whose first element is the goal, when one takes the clause
         (words34: "return to me" was a Bring of nothing to me). Not while the frame before leaves a thing in hand
         for the verb to carry on with unsaid ("heat the mug, move [it] to the cabinet")."""
         _, frame, roles, _ = best
         first = frame.elements[0].role if frame.elements else None
-        if first is None or first == "goal" or first in roles or clause.objects or clause.message or not roles or \
-                any(role not in PLACES and role != "recipient" for role in roles):
-            return best
+        if first is None or first == "goal" or first in roles or clause.objects or clause.message or \
+                set(roles) != {"recipient"}:
+            return best                      # "move to the sink" after "put the knife on the plate": the plate
         if self.frames and frame.needs_held() and not self.let_go():
             return best                      # "heat the mug, move [it] to the cabinet": still in hand
         going = [f for f in frames if f.elements and f.elements[0].role == "goal"]
@@ -423,8 +424,9 @@ class Evoker:
         return found
 
     def caused_motion(self, best: Fit, clause: Clause) -> Fit:
-        """"bung the jeans *in the washing machine*", "bung the towels *into* the basket": a frame with no goal, said of
-        one thing and a phrase of putting right after it that the frame took as describing the thing, is English's
+        """"bung the jeans *in the washing machine*", "bung the towels *into* the basket": a frame that says nothing but
+        the thing it changes, of a closed type (Close: no goal, no instrument), said of one thing and a phrase of
+        putting right after it that the frame took as describing the thing, is English's
         caused motion (the verb says how the thing is moved, the phrase where to: putting it there, the library's
         frames of :meth:`putting`) when the phrase says a path ("into", "onto": no thing is described by where it
         goes), or the thing is not known to be a member of the frame's first element's type (a closed one) nor a
@@ -435,25 +437,26 @@ class Evoker:
         nowhere)."""
         _, frame, roles, attached = best
         first = frame.elements[0] if frame.elements else None
-        if first is None or first.role != "theme" or "goal" in self.types.roles(frame) or \
+        if first is None or first.role != "theme" or len(frame.elements) != 1 or self.types.is_open(first.type) or \
                 len(clause.objects) != 1 or roles.get("theme") is not clause.objects[0]:
-            return best
+            return best                      # only a frame that says nothing but the thing it changes (Close)
         np = clause.objects[0]
         pp = next((pp for host, pp in attached if host is np and pp.prep in PUT_IN and not pp.lead), None)
         if pp is None or np.kind != "thing" or np.pronoun is not None or self.is_form(pp):
             return best
-        thing = noun_lemma(self.roles.class_or_head(np))
         if pp.prep not in ("into", "onto") and not (
-                pp.np.kind == "thing" and not self.types.is_open(first.type) and
-                self.types.is_a(thing, first.type) is not True and self.types.is_a(thing, "container") is not True
+                pp.np.kind == "thing" and not any(self.types.is_a(name, kind) is True for name in self.names_of(np)
+                                                  for kind in (first.type, "container"))
                 and any(self.types.is_a(name, "hollow") is True for name in self.names_of(pp.np))):
             return best                      # "close the door in the kitchen", "open the jar in the fridge"
         return self.best_fit(self.putting(), clause) or best
 
     def names_of(self, np: NP) -> tuple[str, ...]:
-        """The class a phrase names, as its head's singular and with the word before it ("washing machine")."""
-        head = noun_lemma(self.roles.class_or_head(np))
-        return (f"{np.mods[-1].lower} {head}", head) if np.mods else (head,)
+        """The classes a phrase may name: the vocabulary's class, its head's singular, and that with the word before
+        it ("washing machine")."""
+        head = noun_lemma(np.head_text)
+        said = (f"{np.mods[-1].lower} {head}", head) if np.mods else (head,)
+        return (self.roles.class_or_head(np), *said)
 
     def escorting(self, best: Fit, clause: Clause) -> Fit:
         """"*get Jane to* the kitchen", "deliver the guest to the lobby": a frame that moves a thing to a goal,
