@@ -21,7 +21,7 @@ from seal_cli.language.english import (
     NP_OPENERS,
     ROUTE_NOUNS,
     SPEAKER_PRONOUNS,
-    WH_WORDS,
+    TIME_UNITS,
     is_room_word,
 )
 from seal_cli.language.grounding import PARTS, PIECES, PORTIONS
@@ -29,7 +29,6 @@ from seal_cli.language.lexicon import CommandError, Mention, Word, noun_lemma
 from seal_cli.language.morphology import is_gradable
 from seal_cli.language.reference import PLACES, Reference
 from seal_cli.language.roles import FROM, PUT_IN, ROLE_PREPOSITIONS, TO, Roles
-from seal_cli.language.searches import SEARCH
 from seal_cli.language.syntax import NP, PP, Clause
 from seal_cli.language.unplaced import unplaced
 from seal_cli.language.values import Evoked, Parse, Phrase
@@ -95,7 +94,9 @@ class Evoker:
         unit, best = self.choose(unit, self.accompanying(frames, clause) or self.keeping_near(unit, clause) or frames,
                                  clause)
         best = self.moved_object(best, self.types.evoked_by(unit), clause)
-        best = self.escorting(self.moving(best, self.types.evoked_by(unit), clause), clause)
+        best = self.returning(self.moving(best, self.types.evoked_by(unit), clause), self.types.evoked_by(unit),
+                              clause)
+        best = self.escorting(self.caused_motion(self.cleared(unit, best, clause), clause), clause)
         best = self.examining_for(best, clause)
         _, frame, roles, attached = self.showing(best, clause)
         if self.fell_back:
@@ -112,14 +113,17 @@ class Evoker:
         only by places ("pop the telly on *in the lounge*"; "with the lamp *on*", "the table it was *on*", "on on the
         table" are not). A unit that ends in it ("take the lid *off*") keeps it."""
         words = unit.split()
+        self.particle_alone(words, clause)
         rest = clause.items[1:]               # "pop the telly on *in the lounge*": where, after the state
         placed = all(isinstance(x, PP) and not x.lead and x.prep != clause.items[0].lower for x in rest) \
             if clause.items and isinstance(clause.items[0], Word) else False
-        stray = clause.items[0] if clause.items and placed and clause.objects else None
+        stray = clause.items[0] if clause.items and placed else None
         if not isinstance(stray, Word) or stray.tag != "PARTICLE" or stray.lower not in _STRAY_STATES or \
-                stray.lower in words[1:] or self.text[clause.objects[-1].end:stray.start].strip():
-            return                               # only right after the thing: "with the lamp *on*" describes
+                stray.lower in words[1:]:
+            return
         verb = self.text[clause.verb.start:clause.verb.end].lower()
+        if not clause.objects or self.text[clause.objects[-1].end:stray.start].strip():
+            return                               # only right after the thing: "with the lamp *on*" describes
         head = clause.objects[0].head
         part = head is not None and noun_lemma(head.text.lower()) in PARTS     # "put the lid on": on what?
         said = f"{stray.lower!r} after {self.text[clause.objects[0].start:clause.objects[0].end]!r}"
@@ -130,6 +134,32 @@ class Evoker:
                            f"{said}: '{verb} ... {stray.lower}' is no verb of the library, and the state it names "
                            f"would be lost; say what to do with it ('turn it {stray.lower}', 'put it down')",
                            stray.start + 1, self.text, ["a verb the robot knows"])
+
+    def particle_alone(self, unit: Sequence[str], clause: Clause) -> None:
+        """"hold on", "hold on for a moment", "hold on in the hall": "on"/"off" right after a verb said with no object,
+        no particle of the unit, followed by nothing, a time ("on *a moment*" is no place) or where (not where to: "go
+        on *to* the hall" goes), makes the verb another verb no frame has: refused at the verb (words34: a Pick of
+        nothing, "on" dropped; "go on a moment" went to a moment). "turn on", "switch it off", "put the cup on the
+        table", "come on in" are not."""
+        if clause.objects or not clause.items or not clause.verb.text or \
+                self.text[:clause.verb.start].lower().split()[-1:] == ["to"]:
+            return                           # "a plate for an egg *to rest on*": the thing it rests on, said before
+        first = clause.items[0]
+        if isinstance(first, Word):
+            particle = first.lower if first.tag == "PARTICLE" else None
+        else:
+            particle = first.prep if isinstance(first, PP) and not first.lead and \
+                first.np.head_text in TIME_UNITS else None
+        timed = all(isinstance(x, PP) and not x.lead and (x.np.head_text in TIME_UNITS or x.prep not in TO) or
+                    isinstance(x, Word) and x.info == "time"   # "hold on *in the hall*"; "go on *to* the hall" goes,
+                    for x in clause.items[1:])                 # "come on *in*": another particle
+        if particle not in _STRAY_STATES or particle in unit[1:] or not timed or \
+                self.text[clause.verb.end:first.start].strip():
+            return
+        verb = self.text[clause.verb.start:clause.verb.end].lower()
+        raise CommandError(f"'{verb} {particle}' is no verb of the library: no frame of '{verb}' takes "
+                           f"'{particle}' alone; say what to do ('wait here', 'turn it {particle}')",
+                           clause.verb.start + 1, self.text, ["a verb the robot knows"])
 
     @staticmethod
     def object_as(role: str, clause: Clause) -> None:
@@ -342,12 +372,91 @@ class Evoker:
         _, frame, roles, _ = best
         first = frame.elements[0].role if frame.elements else None
         if first is None or first in roles or clause.objects or clause.message or not roles or \
-                any(role not in PLACES for role in roles) or not any(f.gets_held() for f in frames):
-            return best
+                any(role not in PLACES for role in roles) or not any(f.gets_held() for f in frames) or \
+                any(isinstance(np, NP) and np.head_text in TIME_UNITS for np in roles.values()):
+            return best                      # "hold on a moment": a time, no place to go (words34)
         if self.frames and frame.needs_held() and self.reference.implicit(frame, first) is not None:
             return best                      # "pick up the cup and get [it] to the kitchen"
         going = [f for f in self.library.frames if f.elements and f.elements[0].role == "goal"]
         return self.best_fit(going, clause) or best
+
+    def returning(self, best: Fit, frames: Sequence[Frame], clause: Clause) -> Fit:
+        """"then *return to me*": a verb both of going (one of its ``frames`` has the goal first: Go) and of handing a
+        thing over (Bring: "return the cup to me"), said with no object, only the person it goes to, is going to
+        them: the frames of the verb whose first element is the goal, when one takes the clause
+        (words34: "return to me" was a Bring of nothing to me). Not while the frame before leaves a thing in hand
+        for the verb to carry on with unsaid ("heat the mug, move [it] to the cabinet")."""
+        _, frame, roles, _ = best
+        first = frame.elements[0].role if frame.elements else None
+        if first is None or first == "goal" or first in roles or clause.objects or clause.message or \
+                set(roles) != {"recipient"}:
+            return best                      # "move to the sink" after "put the knife on the plate": the plate
+        if self.frames and frame.needs_held() and not self.let_go():
+            return best                      # "heat the mug, move [it] to the cabinet": still in hand
+        going = [f for f in frames if f.elements and f.elements[0].role == "goal"]
+        return (self.best_fit(going, clause) or best) if going else best
+
+    def let_go(self) -> bool:
+        """Whether the frame said last leaves nothing in the robot's hand (its result: ``not holding(theme)``, as
+        Place's and Bring's), so that nothing is there for a verb to carry on with unsaid."""
+        last = self.library.frame(self.frames[-1].frame)
+        return any(p.predicate == "holding" and p.negated for p in last.postconditions)
+
+    def cleared(self, unit: str, best: Fit, clause: Clause) -> Fit:
+        """"*clear off* the counter", "take off the table", "clear out the cupboard": a unit of taking in hand that ends
+        in a particle of leaving a place ("off", "out"), said of one thing that never moves (the ``fixed`` category: a
+        counter, a cupboard), takes things *from* it: the object is the frame's source, what is taken left unsaid
+        (words34: the counter itself was picked up). "take off the lid" and "clear away the cups" are as chosen."""
+        _, frame, roles, _ = best
+        particle = unit.split()[-1] if " " in unit else None
+        if particle not in _LEAVING or not frame.gets_held() or "source" not in self.types.roles(frame) or \
+                len(clause.objects) != 1 or roles.get("theme") is not clause.objects[0] or clause.items:
+            return best
+        np = clause.objects[0]
+        if np.kind != "thing" or np.pronoun is not None or \
+                self.types.is_a(noun_lemma(self.roles.class_or_head(np)), "fixed") is not True:
+            return best
+        said = replace(clause, objects=[], items=[PP(_LEAVING[particle], np, np.start)])
+        found = self.best_fit([frame], said)
+        if found is None:
+            return best
+        clause.objects, clause.items = said.objects, said.items
+        return found
+
+    def caused_motion(self, best: Fit, clause: Clause) -> Fit:
+        """"bung the jeans *in the washing machine*", "bung the towels *into* the basket": a frame that says nothing but
+        the thing it changes, of a closed type (Close: no goal, no instrument), said of one thing and a phrase of
+        putting right after it that the frame took as describing the thing, is English's
+        caused motion (the verb says how the thing is moved, the phrase where to: putting it there, the library's
+        frames of :meth:`putting`) when the phrase says a path ("into", "onto": no thing is described by where it
+        goes), or the thing is not known to be a member of the frame's first element's type (a closed one) nor a
+        container (a jar is opened) while the phrase names a thing things are put *in* (the ``hollow`` category: "bung
+        the jeans in the washing machine"). "close the door in the kitchen", "open the jar in the fridge", "wash the
+        cup in the sink" are as chosen
+        (words34: "bung the jeans in the washing machine" was Close of "the jeans in the washing machine", put
+        nowhere)."""
+        _, frame, roles, attached = best
+        first = frame.elements[0] if frame.elements else None
+        if first is None or first.role != "theme" or len(frame.elements) != 1 or self.types.is_open(first.type) or \
+                len(clause.objects) != 1 or roles.get("theme") is not clause.objects[0]:
+            return best                      # only a frame that says nothing but the thing it changes (Close)
+        np = clause.objects[0]
+        pp = next((pp for host, pp in attached if host is np and pp.prep in PUT_IN and not pp.lead), None)
+        if pp is None or np.kind != "thing" or np.pronoun is not None or self.is_form(pp):
+            return best
+        if pp.prep not in ("into", "onto") and not (
+                pp.np.kind == "thing" and not any(self.types.is_a(name, kind) is True for name in self.names_of(np)
+                                                  for kind in (first.type, "container"))
+                and any(self.types.is_a(name, "hollow") is True for name in self.names_of(pp.np))):
+            return best                      # "close the door in the kitchen", "open the jar in the fridge"
+        return self.best_fit(self.putting(), clause) or best
+
+    def names_of(self, np: NP) -> tuple[str, ...]:
+        """The classes a phrase may name: the vocabulary's class, its head's singular, and that with the word before
+        it ("washing machine")."""
+        head = noun_lemma(np.head_text)
+        said = (f"{np.mods[-1].lower} {head}", head) if np.mods else (head,)
+        return (self.roles.class_or_head(np), *said)
 
     def escorting(self, best: Fit, clause: Clause) -> Fit:
         """"*get Jane to* the kitchen", "deliver the guest to the lobby": a frame that moves a thing to a goal,
@@ -705,9 +814,6 @@ class Evoker:
             implicit = self.reference.implicit(frame, first.role)
             if implicit is not None:
                 elements = {first.role: implicit, **elements}
-        told = self.answer_told(frame, elements)
-        if told is not None:
-            elements[told[0]] = told[1]
         for element in frame.elements:
             if element.role not in elements and element.default is not None:
                 elements[element.role] = Phrase(None, element.default, self.ground_name(element.default),
@@ -724,19 +830,6 @@ class Evoker:
                                   or None, clause.asked))
         self.carry_on(frame, roles, attached)
         self.cut_where_it_lies(frame, roles, attached)
-
-    def answer_told(self, frame: Frame, elements: Mapping[str, Phrase]) -> tuple[str, Phrase] | None:
-        """A message left unsaid right after a frame that answers a question is that answer: "count the cups and *let
-        me know*", "... and tell me" say how many there are, "find the keys and let me know" where they are (the
-        question the earlier frame answers: a unit of it that asks, "how many", or "where" for a search; words32).
-        Its text is empty (nothing said), its head the question, which the planner reads as a report."""
-        role = next((e.role for e in frame.elements if e.type == "message" and e.role not in elements), None)
-        if role is None or not self.frames or any(p.kind == "message" for p in elements.values()):
-            return None
-        before = self.library.frame(self.frames[-1].frame)
-        asks = next((u.text for u in before.lexical_units if u.text.split()[0] in WH_WORDS), None)
-        question = asks or ("where" if before.name == SEARCH else None)
-        return None if question is None else (role, Phrase("", question, None, "message"))
 
     def cut_where_it_lies(self, frame: Frame, roles: Mapping[str, Any], attached: list[tuple[NP, PP]]) -> None:
         """"Slice the apple *in the pan*", "cut an apple inside a pot": a thing cut where it lies in a container
@@ -1067,6 +1160,10 @@ def _named_again(content: NP, theme: Any, host: NP, attached: Sequence[tuple[NP,
     return any(h is content and p.prep in PUT_IN and p.np.head is not None and not p.np.pronoun
                and noun_lemma(p.np.head.text) == head for h, p in attached)
 
+
+_LEAVING = {"off": "off", "out": "out of"}
+"""The particles of taking a thing from where it is, and the preposition each says that place with ("clear *off* the
+counter": off the counter; "clear *out* the cupboard": out of it)."""
 
 _STRAY_STATES = frozenset(["on", "off"])
 """The particles that name a state (on.a.01 ! off.a.01): said alone after a thing, they change what is done."""

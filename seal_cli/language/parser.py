@@ -107,7 +107,7 @@ class CommandParser:
         command = Syntax(text, words, self.types).transform(tree)
         clauses = Clauses(text, self.library, self.types, lexicon.speech).passes(command)
         evoker = Evoker(text, self.library, self.types, vocabulary, words, tagger.remarks)
-        parse = merge_reported(drop_found_again(merge_searches(evoker.command(clauses))))
+        parse = merge_reported(drop_found_again(merge_searches(evoker.command(clauses))), self.library)
         lost = swallowed(parse, words, lexicon, self.library.taxonomy.known_classes)
         if lost:
             raise _swallowed_error(parse, lost[0])

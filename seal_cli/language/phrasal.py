@@ -44,7 +44,9 @@ def phrasal_verb(words: Sequence[Word], lexicon: Lexicon) -> tuple[Word, Word] |
             particle = last
         else:
             continue
-        if any(w.tag == Tag.PREP and w is not particle and str(w.info) not in NOT_PLACES for w in clause):
+        if any(w.tag == Tag.PREP and w is not particle and str(w.info) not in NOT_PLACES for w in clause) and \
+                not (particle is first and len(clause) > 1 and clause[1].tag == Tag.PREP):
             continue                              # "hang up the coat on the hook": where it goes, the unit's own
+            # (not with no thing said: "hang on in the hall" is waiting there, no hanging, words34)
         return verb, particle
     return None

@@ -86,7 +86,8 @@ class Reference:
             type_ = frame.element(role).type
             wanted_person = True if self.types.is_person(type_) else None if self.types.is_open(type_) else \
                 bool(self.types.is_a("person", type_))
-        carried = self.carried(frame, role) if np.pronoun in ("it", "them", "they", "both") else None
+        part = np.head is not None and " of " in np.head.lower     # "one of them": of the things, not their container
+        carried = self.carried(frame, role) if np.pronoun in ("it", "them", "they", "both") and not part else None
         if carried is not None:
             return carried
         best: tuple[float, int, str, str] | None = None

@@ -1,4 +1,5 @@
-"""A question asked, and the telling of its answer said as a clause of its own: one frame (words33).
+"""A question asked, and the telling of its answer said as a clause of its own: one frame (words33), or a telling of
+that answer (words32's answer left unsaid; one pass since words34).
 
 People wrap a question in a request to report it, before or after: "find out what is on the bench *and tell me*",
 "check who's in the hall *and let me know*", "how many cups are on the table? *Tell me, please.*", "count the
@@ -12,6 +13,13 @@ asked rather than commanded (Find whose words do not start with its verb: "is th
 whether ..."). "Find the cat and tell me" stays two frames (a search commanded, then a report of its own), and so
 does a telling with a message ("count the cups and tell me the number") or to another person after a frame that
 tells no one ("count the cups and tell Jo"), or two people told ("tell me X and tell it to Jo").
+
+A telling that stays a frame of its own and leaves its message unsaid right after a frame that answers a question
+tells that answer (:func:`told_answers`): "find the keys and let me know" says where they are, "count the cups and
+tell Jo" how many there are (the question the earlier frame answers: a unit of it that asks, "how many", or "where"
+for a search). Its message has no text (nothing said) and the question as its head, which the planner reads as a
+report. Both are one idea, the telling of a question's answer, and :func:`merge_reported` does both: first the
+answers told, then the frames merged (a telling whose message is an answer left unsaid merges as one with none).
 """
 
 from __future__ import annotations
@@ -19,11 +27,12 @@ from __future__ import annotations
 import re
 from dataclasses import replace
 
-from seal_cli.language.english import SPEAKER_PRONOUNS
-from seal_cli.language.searches import renumbered
+from seal_cli.frames.library import Library
+from seal_cli.language.english import SPEAKER_PRONOUNS, WH_WORDS
+from seal_cli.language.searches import SEARCH, renumbered
 from seal_cli.language.values import Evoked, Parse, Phrase
 
-__all__ = ["TELLING", "merge_reported"]
+__all__ = ["TELLING", "merge_reported", "told_answers"]
 
 TELLING = "Tell"
 """The frame that reports to a person; a telling with no message is the one merged."""
@@ -39,8 +48,10 @@ _JOINT_BEFORE = re.compile(r"^\s*[,:]\s*$")
 """What stands between a telling said first and its question: a comma or a colon ("Tell me, who is at the door?")."""
 
 
-def merge_reported(parse: Parse) -> Parse:
-    """The parse with each question and the telling of its answer beside it made one frame (module docstring)."""
+def merge_reported(parse: Parse, library: Library) -> Parse:
+    """The parse with each telling of an answer left unsaid telling it (:func:`told_answers`), and each question and
+    the telling of its answer beside it made one frame (module docstring)."""
+    parse = told_answers(parse, library)
     frames = list(parse.frames)
     k = 0
     while k + 1 < len(frames):
@@ -56,6 +67,33 @@ def merge_reported(parse: Parse) -> Parse:
         del frames[k + 1]
         frames = [renumbered(f, k + 1) for f in frames]
     return replace(parse, frames=tuple(frames)) if len(frames) != len(parse.frames) else parse
+
+
+def told_answers(parse: Parse, library: Library) -> Parse:
+    """The parse with each frame that tells a message it leaves unsaid (no element of its says one), said right after
+    a frame that answers a question, telling that answer: a message with no text whose head is the question
+    (:func:`answer_of`; module docstring)."""
+    frames = list(parse.frames)
+    for k in range(1, len(frames)):
+        evoked = frames[k]
+        frame = library.frame(evoked.frame)
+        role = next((e.role for e in frame.elements if e.type == "message" and e.role not in evoked.elements), None)
+        if role is None or any(p.kind == "message" for p in evoked.elements.values()):
+            continue
+        question = answer_of(library, frames[k - 1].frame)
+        if question is None:
+            continue
+        elements = {**evoked.elements, role: Phrase("", question, None, "message")}
+        frames[k] = replace(evoked, elements={e.role: elements[e.role] for e in frame.elements if e.role in elements})
+    return replace(parse, frames=tuple(frames)) if frames != list(parse.frames) else parse
+
+
+def answer_of(library: Library, name: str) -> str | None:
+    """The question the frame ``name`` answers: a unit of it that starts with a question word (Count's "how many"),
+    "where" for a search; None for a frame that answers none."""
+    frame = library.frame(name)
+    asks = next((u.text for u in frame.lexical_units if u.text.split()[0] in WH_WORDS), None)
+    return asks or ("where" if frame.name == SEARCH else None)
 
 
 def _between(text: str, first: Evoked, second: Evoked) -> str:
@@ -91,7 +129,7 @@ def _reports(telling: Evoked, question: Evoked) -> bool:
     message = telling.elements.get("message")
     if message is not None and message.text:    # "find out his name and tell *it* to Jo": the answer, said again
         return question.frame == TELLING and message.text.lower() in _ANSWER_AGAIN
-    # a message left unsaid ("count the cups and let me know": the evoker's answer_told, head "how many") is no message
+    # a message left unsaid ("count the cups and let me know": told_answers's, head "how many") is no message
     return question.frame == TELLING or _to_speaker(telling.elements.get("recipient"))
 
 

@@ -59,3 +59,23 @@ def test_later_pronouns_still_name_their_antecedent(library: Library) -> None:
     parse = parse_command("Is anyone in the den? Let me know, then greet them.", library)
     assert [f.frame for f in parse.frames] == ["Find", "Greet"]
     assert parse.frames[1].elements["theme"].refers_to == (0, "theme")
+
+
+@pytest.mark.parametrize(("text", "frame", "question"), [
+    ("look for the scissors and let me know", "Find", "where"),
+    ("count the spoons and tell Nadia", "Count", "how many"),
+])
+def test_a_telling_that_stays_its_own_frame_tells_the_answer(text: str, frame: str, question: str,
+                                                             library: Library) -> None:
+    """The same pass that merges a question and its telling (words34: it was the evoker's answer_told before)."""
+    before, told = parse_command(text, library).frames
+    assert (before.frame, told.frame) == (frame, "Tell")
+    assert (told.elements["message"].text, told.elements["message"].head) == ("", question)
+
+
+def test_the_answer_is_told_only_after_a_frame_that_answers_one(library: Library) -> None:
+    from seal_cli.language.reported import answer_of, told_answers
+    assert answer_of(library, "Count") == "how many" and answer_of(library, "Find") == "where"
+    assert answer_of(library, "Open") is None
+    parse = parse_command("open the box and tell Nadia", library)
+    assert told_answers(parse, library) is parse and "message" not in parse.frames[1].elements

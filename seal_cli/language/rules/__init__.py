@@ -61,6 +61,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     lead_ins.LIGHT_VERB,
     lead_ins.WATCHING_RULE,
     lead_ins.POLITE_FRAME,
+    requests.WISH_OF_DESCRIBED,
     politeness.VOCATIVE_NAME,
     politeness.ADDRESSED,
     politeness.LIKE_FILLER,

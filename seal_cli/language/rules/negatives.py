@@ -209,10 +209,12 @@ def _corrected(s: State, i: int) -> Match | None:
 def _clause_again(s: State, i: int, k: int) -> Match | None:
     """"find Oscar, *actually find Nina*", "go to the hall, sorry, go to the porch": after a correction's marks, the
     clause's own verb said again starts it afresh — the clause said before the marks is taken back, a remark (it
-    asks nothing; words31: both were done). Only the same verb, as said: another verb may be a next step ("open the
-    door, sorry, then close the window" is no correction of the opening)."""
+    asks nothing; words31: both were done). Only the same verb, as said (its first word: "turn on the lamp, sorry,
+    *turn* it off", words34): another verb may be a next step ("open the door, sorry, then close the window" is no
+    correction of the opening)."""
     out, words = s.out, s.words
-    if s.verb_index < 0 or k >= len(words) or words[k].lower != out[s.verb_index].lower or not s.verb_after(k):
+    if s.verb_index < 0 or k >= len(words) or not out[s.verb_index].lower or \
+            words[k].lower != out[s.verb_index].lower.split()[0] or not s.verb_after(k):
         return None
     first = out[s.verb_index]
     said = Word(s.text_of(first.start, words[k - 1].end) or first.text, first.start, words[k - 1].end, Tag.POLITE)
@@ -245,6 +247,7 @@ CORRECTED = Rule("a phrase corrected", _corrected, (
     Example("switch on the lamp, no, the reading light", "lamp", ""),
     Example("bring me the sugar, no, not the sugar, the salt", "sugar", ""),
     Example("find Ola, actually find Tim", "Ola", ""),                    # the clause said again (words31)
+    Example("switch on the fan, sorry, switch it off", "fan", ""),        # the verb's first word again (words34)
 ), frozenset([","]), "', no, NP' after a phrase: the new phrase stands for the last one said")
 DENIED_AFTER = Rule("a phrase denied after the command", _denied_after, (
     Example("give me the big bowl, not the small one.", "small", ""),

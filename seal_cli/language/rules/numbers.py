@@ -39,6 +39,8 @@ def _number_as_noun(s: State, i: int) -> Match | None:
 def _count(s: State, i: int) -> Match | None:
     low, nxt = s.words[i].lower, s.next_lower(i)
     n, value = _number(s, i)
+    if n == 1 and nxt == "of" and _quantifier_of(s, i) is not None:
+        return None                               # "two *of* them", "two of the chairs": a part of a whole
     if n and not s.in_np() and (low != "one" or s.np_starts(i + 1) and nxt not in PREPOSITIONS and
                                 not match_phrase(s.words, i + 1, ADDITIVES)) and \
             (n > 1 or low != "one" or s.noun_follows(i + 1)):     # "the blue one *too*": no noun counted (words31)
@@ -179,7 +181,8 @@ def _apostrophe_s(s: State, i: int) -> Match | None:
 
 def _quantifier_of(s: State, i: int) -> Match | None:
     words, low = s.words, s.words[i].lower
-    if not s.in_np() and s.next_lower(i) == "of" and i + 2 < len(words) and words[i + 2].lower in PARTED:
+    if not s.in_np() and s.next_lower(i) == "of" and i + 2 < len(words) and words[i + 2].lower in PARTED and \
+            not (words[i + 2].lower in NP_OPENERS and s.noun_follows(i + 3)):
         return s.emit(i, 3, Tag.PRON, low)   # "slice one of them": a pronoun, the part of what "them" is
     if not s.in_np() and s.next_lower(i) == "of" and i + 2 < len(words) and \
             (words[i + 2].lower in NP_OPENERS):

@@ -1361,6 +1361,9 @@ def _switched_alone(s: State, i: int) -> Match | None:
     if k is None or words[k - 1].lower in NP_OPENERS or \
             any(words[j].lower in BE_WORDS or words[j].lower in PREPOSITIONS for j in range(i, k)):
         return None
+    if k == i + 1 and (words[k].lower in s.lexicon.apart.get(verb_lemma(first) or first, ()) or
+                       verb_lemma(first) == first and found is not None and first not in s.lexicon.things):
+        return None                               # "hang on", "hold on": a verb and its particle, no thing switched
     unit = SWITCHED_MEANS[words[k].lower]
     parts = tuple(unit.split())
     if parts not in s.lexicon.units.get(parts[0], ()):
@@ -1411,6 +1414,66 @@ def _wish_of(s: State, i: int) -> Match | None:
     return None
 
 
+_RELATIVE_WORDS = frozenset(["who", "whom", "which", "that"])
+_DESCRIBED_WORDS = 10
+"""The most words between a person and their wish said of them ("Robin*, who is in the garage,* needs ...")."""
+
+
+def _wish_after(s: State, head: int) -> int | None:
+    """Where a wish starts ("needs", "would like") after the person ending at ``head`` and what describes them: a
+    phrase of place ("Robin *in the garage* needs"), a relative clause ("the lady *who's waiting at the door*
+    needs"), or one set off by commas ("Robin*, who is in the garage,* needs": the closing comma is the wish's
+    first word). None when something else comes first (a verb, "is": a statement, not a wish)."""
+    words = s.words
+    relative = False
+    k = head + 1
+    while k < min(len(words), head + _DESCRIBED_WORDS) and not _wish_at(s, k):
+        low = words[k].lower
+        if low == "," and not relative and s.next_lower(k) in _RELATIVE_WORDS:
+            k += 1                                    # "Robin*,* who ...": the clause set off
+            continue
+        if low == "," and relative:
+            return k if k > head + 2 and _wish_at(s, k + 1) else None     # "..., needs": the closing comma
+        if low in _RELATIVE_WORDS:
+            relative = True
+        elif not (low.isalpha() or relative and low == "'s") or low in BE_WORDS and not relative or \
+                s.verb_at(k) is not None and words[k - 1].lower not in DETERMINERS and not relative:
+            return None
+        k += 1
+    return k if k < len(words) and _wish_at(s, k) and k > head + 1 else None
+
+
+def _wished_by(s: State, k: int) -> bool:
+    """Whether the wish at ``k`` (maybe its closing comma first) asks for a thing: a noun phrase after it, no
+    "you"/"to" (a wish of an action: "needs to be led"), no verb, and nothing else asked in the sentence."""
+    words = s.words
+    if words[k].lower == ",":
+        k += 1
+    n = _wish_at(s, k)
+    return bool(n) and k + n < len(words) and s.np_starts(k + n) and words[k + n].lower not in ("you", "to") and \
+        s.verb_at(k + n) is None and _sentence_asks_nothing_else(s, k + n)
+
+
+def _wish_of_described(s: State, i: int) -> Match | None:
+    """"Robin, who is in the garage, needs a wrench", "Sam in the study wants a coffee": a wish said of a name (as
+    :func:`_wish_of` takes it) and what describes them, a phrase of place or a relative clause, brings the thing to
+    them: the verb is unsaid before the name, the wish dropped after what describes them (``WISH_DROPPED``; was the
+    question "who is in the garage" told to Robin, words34)."""
+    words = s.words
+    low = words[i].lower
+    if REQUEST_MEANS not in s.lexicon.units or s.verb_at(i) is not None or i + 2 >= len(words) or \
+            words[i + 1].lower not in PREPOSITIONS and words[i + 1].lower != "," or not (
+                capitalised(words[i]) or low in s.lexicon.people or
+                low.isalpha() and words[i].text == low and low not in CLOSED and (
+                    not in_dictionary(low) or _bare_noun_first(s, i))):
+        return None
+    k = _wish_after(s, i)
+    if k is None or not _wished_by(s, k):
+        return None
+    return Match(1, (_unsaid(words[i].start, Tag.VERB, REQUEST_MEANS), words[i].tagged(Tag.NAME)), expect=False,
+                 verb=REQUEST_MEANS, using=False)
+
+
 def _bare_noun_first(s: State, i: int) -> bool:
     """Whether the word at ``i`` starts the sentence and is listed only as a noun, singular, and no thing the
     taxonomy knows ("morgan", "robin": a name written in lower case where a person is the subject)."""
@@ -1444,15 +1507,8 @@ def _wish_of_phrase(s: State, i: int) -> Match | None:
                  if noun_lemma(words[k].lower) in s.lexicon.people or words[k].lower in s.lexicon.people), None)
     if head is None or any(not words[j].lower.isalpha() for j in range(i + 1, head)):
         return None
-    k = head + 1
-    while k < min(len(words), head + 8) and not _wish_at(s, k):
-        if not words[k].lower.isalpha() or words[k].lower in BE_WORDS or \
-                (s.verb_at(k) is not None and words[k - 1].lower not in DETERMINERS):
-            return None
-        k += 1
-    n = _wish_at(s, k)
-    if not n or k + n >= len(words) or not s.np_starts(k + n) or words[k + n].lower in ("you", "to") or \
-            s.verb_at(k + n) is not None or not _sentence_asks_nothing_else(s, k + n):
+    k = head if _wish_at(s, head + 1) else _wish_after(s, head)
+    if k is None or not _wished_by(s, k + 1 if k == head else k):
         return None
     tag = Tag.DET if words[i].lower in DETERMINERS else Tag.POSS
     return Match(1, (_unsaid(words[i].start, Tag.VERB, REQUEST_MEANS), words[i].tagged(tag)), expect=False,
@@ -1461,8 +1517,12 @@ def _wish_of_phrase(s: State, i: int) -> Match | None:
 
 def _wish_dropped(s: State, i: int) -> Match | None:
     verb = next((t for t in reversed(s.out) if t.tag == Tag.VERB), None)
-    n = _wish_at(s, i)
-    if verb is None or verb.info != REQUEST_MEANS or verb.text or s.prev_tag() not in (Tag.WORD, Tag.NAME) or \
+    comma = int(s.words[i].lower == ",")             # "Robin, who is in the garage*,* needs": the closing comma
+    n = _wish_at(s, i + comma)
+    if comma and n:
+        n += 1
+    if verb is None or verb.info != REQUEST_MEANS or verb.text or \
+            s.prev_tag() not in ((Tag.WORD, Tag.NAME, Tag.REL) if comma else (Tag.WORD, Tag.NAME)) or \
             not n or not s.np_starts(i + n):
         return None
     if s.words[i + n].lower in NP_OPENERS:
@@ -1753,9 +1813,16 @@ WISH_OF_PHRASE = Rule("a wish said of a person's phrase", _wish_of_phrase, (
     Example("my son wants a glass of water", "my", Tag.POSS),
     Example("the guests in the hall would like some coffee", "the", Tag.DET),
 ), None, "'the person at the armchair needs X': bring X to the person")
+WISH_OF_DESCRIBED = Rule("a wish said of a person described", _wish_of_described, (
+    Example("Robin, who is in the garage, needs a wrench", "Robin", Tag.NAME),
+    Example("Sam in the study would like a coffee", "Sam", Tag.NAME),
+    Example("dad, who's in the shed, wants his gloves", "dad", Tag.NAME),
+), None, "'Robin, who is in the garage, needs X', 'Sam in the study wants X': bring X to the person")
 WISH_DROPPED = Rule("the wish after a person's phrase", _wish_dropped, (
     Example("the person at the armchair needs a towel", "needs", ""),
-), _WISHED | frozenset(["would"]), "the 'needs' of 'the guest needs X', dropped: 'bring' was read before the phrase")
+    Example("Robin, who is in the garage, needs a wrench", ", needs", ""),
+), _WISHED | frozenset(["would", ","]),
+   "the 'needs' of 'the guest needs X' (and the comma closing what describes them), dropped: 'bring' was read before")
 PATH_ALONE_RULE = Rule("a path alone", _path_alone, (
     Example("to the bathroom", "to", Tag.PREP),
     Example("back to the kitchen, please", "back to", Tag.PREP),
