@@ -16,11 +16,15 @@ knows no thing until it sees it, asks the same of what it sees (:meth:`seal_cli.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Sequence
+from typing import TYPE_CHECKING
 
 from seal_cli.frames.model import Binding
 from seal_cli.frames.taxonomy import class_key
 
-__all__ = ["another_meant", "goal_among", "several_said"]
+if TYPE_CHECKING:
+    from seal_cli.maps.model import Map
+
+__all__ = ["another_meant", "goal_among", "several_said", "unseen_there"]
 
 
 def several_said(bindings: Iterable[Binding], class_of: Callable[[str], str]) -> set[str]:
@@ -58,3 +62,29 @@ def goal_among(binding: Binding, thing: str, kind: str, *, held: str | None, amo
     lying = {p: lies_in(p) for p in among}     # the thing itself where it lies first, then the goal, then the others
     order = sorted(among, key=lambda p: (lying[p] != thing, p != goal))
     return next((p for p in order if lying[p] is not None), None)
+
+
+def unseen_there(commanded: Sequence[Binding], m: Map, class_of: Callable[[str], str]) -> list[str]:
+    """What ``seal run``'s robot says before it drives, for each frame that would put a thing on or in the map's one
+    place of its class where the map's prior expects such a thing: it cannot know before it looks whether one lies
+    there already (it knows no thing until it sees it; the map's objects are the world it finds, which ``seal plan``
+    reads), and if one does, the other-one rule sends it to look for another before it can say the frame needs no
+    doing (e2e28: "put the remote on the sofa" on the studio searched 21 m, silent on why)."""
+    from seal_cli.planning.keeping import Spot, mass, prior_of
+
+    said = []
+    for binding in commanded:
+        theme, goal = binding.elements.get("theme"), binding.elements.get("goal")
+        place = m.place(goal) if goal else None
+        if theme is None or place is None or not binding.frame.needs_held("theme"):
+            continue
+        if sum(1 for p in m.places if class_key(p.cls) == class_key(place.cls)) != 1:
+            continue
+        kind = class_of(theme)
+        share = mass(prior_of(m.priors, kind), Spot(class_key(place.name), place.cls, place.room, place.at))
+        if share > 0:
+            words = kind.replace("_", " ")
+            said.append(f"it knows no {words} until it sees one, and the map's prior puts one at {place.name} "
+                        f"({share:.2f}): if one lies there already, it looks for another {words} before it says "
+                        "this needs no doing")
+    return said

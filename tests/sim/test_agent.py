@@ -781,3 +781,15 @@ def test_a_thing_in_one_of_several_places_of_the_goals_class_is_put_there_alread
     assert any(s.endswith("needs no doing") for s in said)
     assert {agent.world.items["milk_1"].parent, agent.world.items["milk_2"].parent} == {"fridge_1", "fridge_2"}
     assert result.path_m < 15.0
+
+
+def test_a_thing_taken_to_the_speakers_room_is_put_down_by_the_speaker(library: Library) -> None:
+    """e2e28: "take the laptop to the shop" on the corner shop, the speaker behind the till: on the till's counter,
+    not on the shop's shelf nearest the robot's way in (counter and shelf are alike for a laptop)."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    agent, result = pipeline.run_on_map(load_map("corner_shop"), "take the laptop to the shop", library,
+                                        SeFMPolicy(particles=50), rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    assert agent.world.items["laptop_1"].parent == "counter_1"
