@@ -512,7 +512,12 @@ class Agent:
         "no sandwich found: searched the staff room, ..., looked into fridge_1 (...)"; for a further one of a kind
         it has one of ("bring me three towels", ``towel_2``), "no other towel found: ..."."""
         left = self.unsearched.get(self.class_of(value))
-        if self.search_end is None or left is None or left.left >= self.search_end:
+        if self.search_end is None or left is None:
+            return None
+        if (elsewhere := self._kept_elsewhere(value)) is not None:    # another one: where such things are kept
+            if left.left_at(elsewhere) >= self.search_end:
+                return None
+        elif left.left >= self.search_end:
             return None
         rooms = [r.replace("_", " ") for r in left.searched_rooms()]
         opened = sorted(p for p in self.opened if p in left.inside)
@@ -523,6 +528,29 @@ class Agent:
         what, one = (f"other {self.said(value)}", "another") if other else (self.said(value), "one")
         return Fatal(False, f"no {what} found: searched {said}{into} (had the {self.scene.map.said} {one}, it "
                      f"would have been seen with probability {1 - left.left:.2f})", Reason.NOT_FOUND, value)
+
+    def _kept_elsewhere(self, value: str) -> list[str] | None:
+        """Where to look for another thing of a kind than the one seen lying where the next frame puts it (the
+        other-one rule, :attr:`there_already`): the prior's own targets (its places, place classes and rooms, not the
+        floor share it spreads everywhere), less the goal, where one lies already. The reading that another is meant
+        is the command's guess, and one lying there says "it is so already" is likelier; so the robot looks where
+        such a thing is kept, not all over the house (e2e28: "put the milk in the fridge" on the houseboat, its milk
+        in its one fridge, searched 77.25 m before "it found no other"). None when the search is no such search."""
+        if not self.todo or (binding := self.todo[0]) not in self.there_already:
+            return None
+        theme, goal = binding.elements.get("theme"), binding.elements.get("goal")
+        if theme is None or goal is None or self.class_of(theme) != self.class_of(value):
+            return None
+        m = self.scene.map
+        targets = []
+        for target in m.prior(self.class_of(value)).masses:
+            resolved = m.prior_target(target) if target != "_rest" else None
+            if resolved is None:
+                continue
+            if resolved[0] != "room" and {class_key(m.places[i].name) for i in resolved[1]} <= {class_key(goal)}:
+                continue          # the goal itself: one lies there already
+            targets.append(target)
+        return targets
 
     def class_of(self, value: str) -> str:
         key = class_key(value)
