@@ -68,8 +68,9 @@ def unseen_there(commanded: Sequence[Binding], m: Map, class_of: Callable[[str],
     """What ``seal run``'s robot says before it drives, for each frame that would put a thing on or in the map's one
     place of its class where the map's prior expects such a thing: it cannot know before it looks whether one lies
     there already (it knows no thing until it sees it; the map's objects are the world it finds, which ``seal plan``
-    reads), and if one does, the other-one rule sends it to look for another before it can say the frame needs no
-    doing (e2e28: "put the remote on the sofa" on the studio searched 21 m, silent on why)."""
+    reads), and if one does, the other-one rule sends it to look for another where the prior keeps such things before
+    it can say the frame needs no doing (e2e28: "put the remote on the sofa" on the studio searched 21 m, silent on
+    why)."""
     from seal_cli.planning.keeping import Spot, mass, prior_of
 
     said = []
@@ -85,6 +86,6 @@ def unseen_there(commanded: Sequence[Binding], m: Map, class_of: Callable[[str],
         if share > 0:
             words = kind.replace("_", " ")
             said.append(f"it knows no {words} until it sees one, and the map's prior puts one at {place.name} "
-                        f"({share:.2f}): if one lies there already, it looks for another {words} before it says "
-                        "this needs no doing")
+                        f"({share:.2f}): if one lies there already, it looks for another {words} where such things "
+                        "are kept before it says this needs no doing")
     return said
