@@ -74,10 +74,11 @@ def unseen_there(commanded: Sequence[Binding], m: Map, class_of: Callable[[str],
     from seal_cli.planning.keeping import Spot, mass, prior_of
 
     said = []
+    several = several_said(commanded, class_of)
     for binding in commanded:
         theme, goal = binding.elements.get("theme"), binding.elements.get("goal")
         place = m.place(goal) if goal else None
-        if theme is None or place is None or not binding.frame.needs_held("theme"):
+        if theme is None or place is None or not binding.frame.needs_held("theme") or class_of(theme) in several:
             continue
         if sum(1 for p in m.places if class_key(p.cls) == class_key(place.cls)) != 1:
             continue
@@ -86,6 +87,6 @@ def unseen_there(commanded: Sequence[Binding], m: Map, class_of: Callable[[str],
         if share > 0:
             words = kind.replace("_", " ")
             said.append(f"it knows no {words} until it sees one, and the map's prior puts one at {place.name} "
-                        f"({share:.2f}): if one lies there already, it looks for another {words} where such things "
-                        "are kept before it says this needs no doing")
+                        f"({share:.2f}): if one lies there already, it first looks for another {words} where such "
+                        "things are kept")
     return said

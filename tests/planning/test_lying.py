@@ -108,7 +108,8 @@ def test_the_run_says_before_driving_why_it_may_look_for_another(library: Librar
 
     assert said("put the kettle on the hob", "houseboat") == [
         "it knows no kettle until it sees one, and the map's prior puts one at hob_1 (0.80): if one lies there "
-        "already, it looks for another kettle where such things are kept before it says this needs no doing"]
+        "already, it first looks for another kettle where such things are kept"]
     assert said("put the kettle on the bed", "houseboat") == []          # no prior mass there
     assert said("put the milk in the fridge", "corner_shop") == []      # one of two fridges: no other is sought
     assert said("bring me the kettle", "houseboat") == []               # no place as the goal
+    assert said("put both mugs in the cupboard", "houseboat") == []    # several said: each is one of them
