@@ -4,7 +4,7 @@
 ``flat.yaml``, e2e22's held-out long flat, and ``carehome.yaml``, e2e23's held-out care home, and
 ``student_house.yaml``, e2e24's held-out student house, and ``guesthouse.yaml``, e2e25's held-out bed and
 breakfast, and ``studio.yaml``, e2e26's held-out open-plan studio flat, and ``corner_shop.yaml``, e2e27's held-out
-corner shop with its back rooms (run once; the PGMs are committed next to this script).
+corner shop with its back rooms, and ``houseboat.yaml``, e2e28's held-out wide-beam houseboat (run once; the PGMs are committed next to this script).
 
     python maps/make_houses.py          # rewrites maps/<house>.pgm for each of HOUSES
 
@@ -277,8 +277,24 @@ CORNER_SHOP = House(
     ),
 )
 
+HOUSEBOAT = House(
+    "houseboat", (0.0, 0.0, 21.0, 6.0),
+    walls=(
+        ((3.0, 0.0, 3.0, 6.0), ((2.5, 3.5),)),                 # front deck | saloon (the front doors)
+        ((9.0, 0.0, 9.0, 6.0), ((2.5, 3.5),)),                 # saloon | galley
+        ((13.0, 0.0, 13.0, 6.0), ((0.5, 1.5),)),               # galley | corridor, bathroom
+        ((13.0, 2.0, 18.0, 2.0), ((13.8, 14.8), (16.2, 17.2))),  # corridor | bathroom, cabin
+        ((15.5, 2.0, 15.5, 6.0), ()),                          # bathroom | cabin
+        ((18.0, 0.0, 18.0, 6.0), ((0.5, 1.5),)),               # corridor, cabin | back deck (the back doors)
+    ),
+    blocks=(
+        (13.1, 4.9, 14.3, 5.9),    # the shower cubicle in the bathroom's north-west corner
+        (3.1, 0.1, 4.6, 0.5),      # the saloon's bookshelf along the south side
+    ),
+)
+
 HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC, FARMHOUSE, TERRACE, BUNGALOW, LODGE, FLAT, CAREHOME, STUDENT_HOUSE,
-          GUESTHOUSE, STUDIO, CORNER_SHOP)
+          GUESTHOUSE, STUDIO, CORNER_SHOP, HOUSEBOAT)
 
 
 def draw(house: House) -> np.ndarray:

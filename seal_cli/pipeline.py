@@ -170,6 +170,7 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
     from seal_cli.maps.model import Robot
     from seal_cli.planning.grounding import MapNames
     from seal_cli.planning.keeping import back_where_taken, where_kept
+    from seal_cli.planning.lying import unseen_there
     from seal_cli.planning.questions import read_questions
     from seal_cli.sim.agent import Agent, scene_from_map
     from seal_cli.sim.policies import make_policy
@@ -194,7 +195,7 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
                   classes={**(check[1].state.classes if check else {}), **problem.state.classes},
                   sweeper=lambda: make_policy("coverage"), questions=questions,
                   clock=clock, search_end=search_end, put_away=kept, put_back=problem.put_back,
-                  heed_sources=True, names=problem.names, absent_said=True)
+                  heed_sources=True, names=problem.names, absent_said=True, among=problem.among)
     executed = [b for p in parses[:-1] for b in build_problem(p, library, map=known_map).commanded]
     warnings = [*problem.warnings, *(unchecked_conditions(parses[-1]) if check is None else [])]
     for warning in warnings:
@@ -202,6 +203,8 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
     notes = inferred_steps(parses[-1])
     for note in notes:
         agent.say("warn", note)
+    for note in unseen_there(problem.commanded, m, problem.state.class_of):     # why it may search first (e2e28)
+        agent.say("plan", note)
     if check is not None and condition is not None:
         agent.say("plan", f"checks first whether {condition.said.split(None, 1)[1]}: {condition.question}")
         first = agent.run(check[1].commanded, done=executed)

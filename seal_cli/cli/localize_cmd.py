@@ -80,7 +80,7 @@ def turned_origin(name: str, yaw: float) -> str:
     """What a map whose origin turns its image means for a robot's bag (robot5): seal turns the image, as RViz
     draws it, but amcl and Nav2's costmaps ignore an origin's yaw, so a robot localised by them has its poses in
     the frame of the image unturned, and the bag's poses and detections would miss the map's rooms by the turn."""
-    return (f"map {name}'s origin turns its image by {yaw:g} rad ({math.degrees(yaw):.1f}°): seal turns it, as RViz "
+    return (f"the {name}'s origin turns its image by {yaw:g} rad ({math.degrees(yaw):.1f}°): seal turns it, as RViz "
             f"draws it, but amcl and Nav2's costmaps ignore an origin's yaw, so poses from them are in the frame of "
             f"the image unturned; if the robot was localised on this map by amcl or Nav2, set the yaw to 0 "
             f"(docs/maps.md)")
@@ -209,7 +209,7 @@ def localize(
     elif bag is not None:
         runs, stamps = _read_bag(bag, pose_topic, detections_topic, frame, base_frame, labels)
         if the_map.grid.yaw:
-            err.print(f"warning: {turned_origin(the_map.name, the_map.grid.yaw)}", markup=False)
+            err.print(f"warning: {turned_origin(the_map.said, the_map.grid.yaw)}", markup=False)
     for said in check_inside(runs, the_map.bounds, the_map.name, the_map.is_occupied, the_map.is_free,
                              the_map.grid.resolution):
         err.print(f"warning: {said}", markup=False)

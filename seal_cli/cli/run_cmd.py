@@ -182,7 +182,7 @@ def run(
             from seal_cli.sim.record import write_png
 
             ended = "done" if result.completed else result.reason.split(":")[0]     # "no sandwich found"
-            write_png(outputs["--png"], agent, f"{the_map.name}: {text} ({ended}, {result.path_m:.1f} m)")
+            write_png(outputs["--png"], agent, f"{the_map.said}: {text} ({ended}, {result.path_m:.1f} m)")
     if as_json:
         emit_json({"map": the_map.name, "text": text, "policy": policy, "seed": seed,
                    "completed": result.completed, "reason": result.reason, "path_m": round(result.path_m, 3),

@@ -528,6 +528,12 @@ class Map:
         """The place of that name, or None."""
         return self._place_by_key.get(class_key(name))
 
+    @property
+    def said(self) -> str:
+        """The map's name as words, as messages say it ("corner_shop": corner shop): "the corner shop knows no
+        hammer", not "the corner_shop" (e2e28: one place for every message that names a map)."""
+        return " ".join(self.name.replace("_", " ").split()) or self.name
+
     def kinds(self) -> list[str]:
         """The kinds of thing the map knows of, by class key, sorted: its priors' classes and its objects'."""
         return sorted({class_key(c) for c in (*self.priors, *(o.cls for o in self.objects))})

@@ -101,6 +101,10 @@ class Problem:
     where it took it from."""
     names: Mapping[str, str] = field(default_factory=dict)
     """How each person the command names is said, by id ("raj": Raj, as the map writes him)."""
+    among: Mapping[Binding, tuple[str, ...]] = field(default_factory=dict)
+    """The commanded frames whose goal was one of several places of a class the command did not tell apart ("the
+    fridge", two on the map), with those places: where a thing of the kind lies in any of them, the frame is so
+    already (:func:`seal_cli.planning.lying.goal_among`; ``seal run`` asks it of what the robot sees)."""
 
 
 class Things:
@@ -320,7 +324,7 @@ def _default(frame: Frame, element: Any, evoked: Any, things: Things, text: str)
     places = ", ".join(p.name for p in things.map.places) or "none"
     span = getattr(evoked, "span", None)
     raise SealError(f"{frame.name} needs a {element.type} as its {element.role} (a {element.default} unless one "
-                    f"is said), and the {things.map.name} has none; its places are {places}",
+                    f"is said), and the {things.map.said} has none; its places are {places}",
                     Where(None, 1, span[0] + 1) if span else None, source_line=text if span else None)
 
 
@@ -357,7 +361,7 @@ def _unnamed_kind(phrase: Phrase, map: Map) -> str:
     """The refusal of "something", "anything" as the thing of a frame on a map: no kind to look for
     (a search for a class called "something" would sweep the house and say "no something")."""
     kinds = map.kinds()
-    known = f" (the {map.name} knows of {', '.join(kinds)})" if kinds else ""
+    known = f" (the {map.said} knows of {', '.join(kinds)})" if kinds else ""
     return (f"{phrase.text!r} does not say what kind of thing: name it{known}, or ask what is on or in "
             "a place (\"what is in the fridge?\")")
 
@@ -389,7 +393,7 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
                        phrase, text)
     word = phrase.head.lower()
     if word in THERE and category in ("location", "place", "room"):
-        where = f" (the {things.map.name}'s places are {', '.join(p.name for p in things.map.places)})" \
+        where = f" (the {things.map.said}'s places are {', '.join(p.name for p in things.map.places)})" \
             if things.map is not None and things.map.places else ""
         raise _located(f"cannot tell where {phrase.text!r} is: no place before it in the command says; name the "
                        f"place{where}", phrase, text)
@@ -1105,7 +1109,7 @@ def _fetched_unheard_of(frame: Frame, evoked: Evoked, values: Mapping[str, tuple
         kin = taxonomy.kin(cls)
         alike = sorted(k for k in things.kinds if kin is not None and k in kin[1])
         has = f"; of its kind ({kin[0]}) it has: {', '.join(_words(k) for k in alike)}" if kin and alike else ""
-        raise _located(f"the {_words(m.name)} knows no {_words(cls)} (no prior, object or place of one), so the "
+        raise _located(f"the {m.said} knows no {_words(cls)} (no prior, object or place of one), so the "
                        f"robot would not find one to {' '.join(words_of(evoked.lexical_unit))}{has}; say something "
                        "the house has", phrase, text)
 
@@ -1368,6 +1372,7 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
     _the_ones_said_where(commanded, things)
     the_ones_not_there(commanded, things)
     the_nearest_ones(commanded, things)
+    among = the_goals_said_among(commanded, things)
     state = things.state(holding)
     changed: dict[Fact, str] = {}  # a fact an earlier done command made true or false → that command
     for text, binding in executed:
@@ -1381,7 +1386,8 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
     warnings = (*unknown_to_map(commanded, things), *chosen_among(commanded, things)) if map else ()
     return Problem(parse.text, tuple(commanded), state, warnings,
                    tuple(b for b in things.put_away if b in commanded),
-                   tuple(b for b in things.put_back if b in commanded), dict(things.called))
+                   tuple(b for b in things.put_back if b in commanded), dict(things.called),
+                   {b: places for b, places in among.items() if b in commanded})
 
 
 def _people_named(bindings: Sequence[Binding], things: Things) -> list[str]:
@@ -1414,6 +1420,51 @@ def _the_ones_said_where(commanded: Sequence[Binding], things: Things) -> None:
             things.swap(theme, there)
 
 
+def the_goals_said_among(commanded: list[Binding], things: Things) -> dict[Binding, tuple[str, ...]]:
+    """The frames whose goal grounding chose among several places of one class the command did not tell apart ("put the
+    milk in the fridge", a fridge in the shop and one in the kitchen), with those places; where the map has a thing of
+    the kind in one of them already, the frame's goal is that place and the command's name of the thing trades names
+    with it, so the plan says it is so already (:func:`seal_cli.planning.lying.goal_among`, e2e28: the plan moved the
+    kitchen's milk to the shop's fridge, each fridge holding a milk). ``commanded`` is changed in place."""
+    from seal_cli.planning.lying import goal_among
+
+    m = things.map
+    if m is None or things.names is None:
+        return {}
+    used = {v for b in commanded for _, v in b.values}
+    key = class_key(things.held) if things.held else None
+    found: dict[Binding, tuple[str, ...]] = {}
+    settled: set[str] = set()
+    for index, binding in enumerate(commanded):
+        theme, goal = binding.elements.get("theme"), binding.elements.get("goal")
+        if theme is None or theme in settled:
+            continue
+        settled.add(theme)
+        if (goal is None or goal not in things.names.chosen or not things.is_place(goal) or theme in things.fixed
+                or theme in things.people or theme not in things.classes):
+            continue
+        among = tuple(class_key(p.name) for p in m.places if class_key(p.cls) == things.class_of(goal))
+        cls = things.classes[theme]
+        ones = [theme, *(n for n, c in things.classes.items() if c == cls and n != theme and n not in used
+                         and n not in things.fixed)]
+
+        def lying(place: str, ones: list[str] = ones) -> str | None:
+            return next((n for n in ones if things.lies_in(n, place)), None)
+
+        place = goal_among(binding, theme, cls, held=key, among=among, lies_in=lying)
+        if len(among) > 1:
+            found[binding] = among
+        if place is None:
+            continue
+        if (one := lying(place)) is not None and one != theme:
+            things.swap(theme, one)
+        if place != goal:
+            again = binding.frame.bind({**binding.elements, "goal": place})
+            commanded[index] = again
+            found[again] = found.pop(binding)
+    return found
+
+
 def the_ones_not_there(commanded: Sequence[Binding], things: Things) -> None:
     """A thing put on or in a place where one of its kind lies already, on a map with another of the kind elsewhere, is
     that other one (e2e27): "put the book back on the shelf", a book on the shelf and one on the nightstand, asks for
@@ -1421,27 +1472,32 @@ def the_ones_not_there(commanded: Sequence[Binding], things: Things) -> None:
     its floor or any place of it, and "it is in the kitchen already" is the likelier reading). The command's name of
     it (``book``, the map's first book) trades names with the first other thing of its class that lies somewhere
     else, is named by no frame of the command and is not what the robot holds. Only for the first frame that names
-    the thing, when that frame takes it up (it needs it held: a Place, a Bring) and says no source
-    (:func:`_the_ones_said_where` settles those), and the robot does not hold one of the kind (it would put down the
-    one it holds). Without it the plan was empty
-    ("Place(theme=book, goal=bookshelf_1) is not done: ... holds already"). ``seal run``'s robot, which knows no
-    thing until it sees it, does the same when it sees one lying there (:meth:`seal_cli.sim.agent.Agent.already_so`)."""
-    if things.map is None:
+    the thing, by :func:`seal_cli.planning.lying.another_meant`, the rule ``seal run``'s robot asks of what it sees
+    (:meth:`seal_cli.sim.agent.Agent.already_so`): the frame takes the thing up, the robot holds none of its kind,
+    the goal is the map's one place of its class (e2e28: the planner lacked this), the command names one thing of
+    its kind. Without it the plan was empty ("Place(theme=book, goal=bookshelf_1) is not done: ... holds
+    already")."""
+    from seal_cli.planning.lying import another_meant, several_said
+
+    m = things.map
+    if m is None:
         return
     used = {v for b in commanded for _, v in b.values}
     key = class_key(things.held) if things.held else None
+    several = several_said(commanded, things.class_of)
     settled: set[str] = set()
     for binding in commanded:
         theme, goal = binding.elements.get("theme"), binding.elements.get("goal")
         if theme is None or theme in settled:
             continue
         settled.add(theme)
-        if (goal is None or not things.is_place(goal) or "source" in binding.elements
-                or not binding.frame.needs_held("theme")
-                or theme in things.fixed or theme in things.people or theme not in things.classes
-                or things.classes[theme] == key or not things.lies_in(theme, goal)):
+        if (goal is None or not things.is_place(goal) or theme in things.fixed or theme in things.people
+                or theme not in things.classes or not things.lies_in(theme, goal)):
             continue
         cls = things.classes[theme]
+        like_goal = sum(1 for p in m.places if class_key(p.cls) == things.class_of(goal))
+        if not another_meant(binding, theme, cls, held=key, places_like_goal=like_goal, several=several):
+            continue
         other = next((n for n, c in things.classes.items() if c == cls and n != theme and n not in used
                       and n not in things.fixed and n in things.points and not things.lies_in(n, goal)), None)
         if other is not None:
@@ -1523,7 +1579,7 @@ def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:
                 if value not in placed and value != "person":     # "a person", "anyone": whoever is there
                     called = f"is the {value.replace('_', ' ')} (no person has that role)" \
                         if value in things.roles_said else f"is called {things.called.get(value, value)}"
-                    warnings.setdefault(f"nobody on the map {m.name} {called}: seal run will search "
+                    warnings.setdefault(f"nobody on the map {m.said} {called}: seal run will search "
                                         "the whole house for them", None)
             elif cls not in known and cls not in unknown:    # said once, where it is first looked for
                 ground = binding.elements.get("ground")
@@ -1532,7 +1588,7 @@ def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:
                     "search the whole house for it" if kinds or m.robot.holding == cls else \
                     "say so without searching the house"
                 unknown.add(cls)
-                warnings.setdefault(f"the map {m.name} knows nothing of {cls} (no prior, object or place names "
+                warnings.setdefault(f"the map {m.said} knows nothing of {cls} (no prior, object or place names "
                                     f"it): seal run will {where}", None)
     return list(warnings)
 

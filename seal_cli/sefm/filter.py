@@ -283,15 +283,15 @@ class SeFM:
             raise SealError(f"a pose is (x, y[, yaw]) and a detection (class, (x, y)): {exc}") from None
         xmin, ymin, xmax, ymax = self.map.bounds
         if not all(math.isfinite(v) for v in robot) or not (xmin <= robot[0] <= xmax and ymin <= robot[1] <= ymax):
-            raise SealError(f"pose {robot} is not a finite point inside map {self.map.name}'s bounds "
+            raise SealError(f"pose {robot} is not a finite point inside the {self.map.said}'s bounds "
                             f"[{xmin:g}, {ymin:g}, {xmax:g}, {ymax:g}]")
         known = self.known_classes
         for cls, (x, y) in seen:
             if not (math.isfinite(x) and math.isfinite(y) and xmin <= x <= xmax and ymin <= y <= ymax):
                 raise SealError(f"a detection of {cls or '(no class)'} at ({x:g}, {y:g}) is not a finite point "
-                                f"inside map {self.map.name}'s bounds [{xmin:g}, {ymin:g}, {xmax:g}, {ymax:g}]")
+                                f"inside the {self.map.said}'s bounds [{xmin:g}, {ymin:g}, {xmax:g}, {ymax:g}]")
             if cls not in known:
-                raise SealError(f"a detection of {cls!r}: map {self.map.name} and the plan know no such class "
+                raise SealError(f"a detection of {cls!r}: the {self.map.said} and the plan know no such class "
                                 f"(they know {', '.join(sorted(known)) or 'none'})")
         return robot, seen
 

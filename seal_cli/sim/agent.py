@@ -46,6 +46,7 @@ from seal_cli.language.morphology import counted, plural_of
 from seal_cli.maps.model import SPEAKER, Map
 from seal_cli.maps.navigation import ROBOT_RADIUS, Cell, Grid
 from seal_cli.planning.grounding import kind_of, spoken
+from seal_cli.planning.lying import another_meant, goal_among, several_said
 from seal_cli.planning.plan import already_so, open_already
 from seal_cli.planning.questions import STATE_WORDS, Question
 from seal_cli.planning.state import State
@@ -151,7 +152,7 @@ class Agent:
                  put_away: Mapping[Binding, Callable[[str | None], str | None]] | None = None,
                  put_back: Iterable[Binding] = (), told: Mapping[str, Sequence[str]] | None = None,
                  names: Mapping[str, str] | None = None, heed_sources: bool = False,
-                 absent_said: bool = False) -> None:
+                 absent_said: bool = False, among: Mapping[Binding, Sequence[str]] | None = None) -> None:
         self.scene = scene
         self.world = scene.world
         self.grid = scene.grid
@@ -203,6 +204,10 @@ class Agent:
         """Frames that put a thing where the robot saw one of its kind lying already, before the command took one
         ("put the book back on the shelf", a book on the shelf): another one is meant, so the robot looks for it;
         what it would have said ("book_1 is on bookshelf_1 already") is said only if it finds no other (e2e27)."""
+        self.among: dict[Binding, tuple[str, ...]] = {b: tuple(p) for b, p in (among or {}).items()}
+        """The commanded frames whose goal was one of several places of a class the command did not tell apart, with
+        those places (:attr:`seal_cli.planning.problem.Problem.among`): one of the kind seen lying in any of them makes
+        the frame so already ("put the milk in the fridge", two fridges, a milk in each), as the planner says."""
         self.not_meant: dict[str, set[str]] = {}
         """The instances a name does not stand for, by name: the one seen where a frame puts its kind already."""
         self.several: set[str] = set()
@@ -362,8 +367,9 @@ class Agent:
                     there = [i for i in there if self._parent(i).id in self.left_open or not self._parent(i).openable]
                     facts |= {Fact("in", (thing, class_key(self._parent(i).id))) for i in there}
             elif place is not None:       # on top of a hollow place ("put it on the sideboard") is not in it
-                there = [i for i in free if self.world.items[i].parent == place and
-                         (self.world.items[i].on_top == on or not self.world.hollow(self.world.items[place]))]
+                places = self._goals_among(binding, thing, where, free, on)
+                there = [i for i in free if self.world.items[i].parent in places and
+                         (self.world.items[i].on_top == on or not self.world.hollow(self._parent(i)))]
                 if there:
                     facts.add(Fact("in", (thing, where)))
             else:
@@ -391,21 +397,34 @@ class Agent:
         self.chosen.setdefault(class_key(thing), seen[thing])   # that one is this name's: not cup_2's too (e2e23)
         return said
 
+    def _goals_among(self, binding: Binding, thing: str, where: str, free: Sequence[str], on: bool) -> tuple[str, ...]:
+        """The places where one of the kind seen lying makes a frame so already: its goal, or, where the goal was one
+        of several places the command did not tell apart, the one of those a thing of the kind lies in
+        (:func:`seal_cli.planning.lying.goal_among`, as the planner asks it of the map)."""
+        among = self.among.get(binding, ())
+        held = self.held()
+
+        def lying(place: str) -> str | None:
+            item = self.world.items.get(place)
+            return None if item is None else next((i for i in free if self.world.items[i].parent == place and (
+                self.world.items[i].on_top == on or not self.world.hollow(item))), None)
+
+        found = goal_among(binding, thing, self.class_of(thing), held=held.key if held else None, among=among,
+                           lies_in=lying) if among else None
+        return (where,) if found is None else (found,)
+
     def _another_meant(self, binding: Binding, thing: str, where: str) -> bool:
-        """Whether a frame that would put ``thing`` where the robot sees one of its kind already means another one
-        (e2e27, as the planner's :func:`seal_cli.planning.problem.the_ones_not_there`): the frame takes the thing up
-        (it needs it held), the command has not chosen one for the name yet, and the robot holds none of its kind (it
-        would put down the one it holds), and the command names one thing of its kind (each of "all the cups" is one of
-        them); asked once a frame. Not where the map has other places of the goal's class: the goal was then one
-        of several ("put the milk in the fridge", a fridge in the shop and one in the kitchen, a milk in each: the
-        milk is in a fridge already, and a search for another milk went through the whole house, 256 m)."""
+        """Whether a frame that would put ``thing`` where the robot sees one of its kind already means another one, by
+        the planner's rule (:func:`seal_cli.planning.lying.another_meant`, e2e27, e2e28: one rule in one place): the
+        frame takes the thing up, the robot holds none of its kind, the goal is the one place of its class the robot
+        knows (the map's), the command names one thing of its kind; asked once a frame, before the command chose one
+        for the name."""
         held = self.held()
         goal = self.world.items.get(where)
-        return (binding not in self.there_already and class_key(thing) not in self.chosen
-                and self.class_of(thing) not in self.several
-                and binding.frame.needs_held("theme") and binding.elements.get("theme") == thing
-                and (held is None or held.key != self.class_of(thing))
-                and goal is not None and sum(1 for k in self.instances(goal.key) if not k.movable) == 1)
+        return (binding not in self.there_already and class_key(thing) not in self.chosen and goal is not None
+                and another_meant(binding, thing, self.class_of(thing), held=held.key if held else None,
+                                  places_like_goal=sum(1 for k in self.instances(goal.key) if not k.movable),
+                                  several=self.several))
 
     def _open_already(self, binding: Binding) -> str | None:
         """"fridge_1 is already closed (as the map has it)", for an Open or a Close of a place of the map that is
@@ -493,7 +512,12 @@ class Agent:
         "no sandwich found: searched the staff room, ..., looked into fridge_1 (...)"; for a further one of a kind
         it has one of ("bring me three towels", ``towel_2``), "no other towel found: ..."."""
         left = self.unsearched.get(self.class_of(value))
-        if self.search_end is None or left is None or left.left >= self.search_end:
+        if self.search_end is None or left is None:
+            return None
+        if (elsewhere := self._kept_elsewhere(value)) is not None:    # another one: where such things are kept
+            if left.left_at(elsewhere) >= self.search_end:
+                return None
+        elif left.left >= self.search_end:
             return None
         rooms = [r.replace("_", " ") for r in left.searched_rooms()]
         opened = sorted(p for p in self.opened if p in left.inside)
@@ -502,8 +526,31 @@ class Agent:
         cls = self.class_of(value)
         other = class_key(value) != cls and any(k.cls == cls for k in self.known.values() if k.movable)
         what, one = (f"other {self.said(value)}", "another") if other else (self.said(value), "one")
-        return Fatal(False, f"no {what} found: searched {said}{into} (had the {self.scene.map.name} {one}, it "
+        return Fatal(False, f"no {what} found: searched {said}{into} (had the {self.scene.map.said} {one}, it "
                      f"would have been seen with probability {1 - left.left:.2f})", Reason.NOT_FOUND, value)
+
+    def _kept_elsewhere(self, value: str) -> list[str] | None:
+        """Where to look for another thing of a kind than the one seen lying where the next frame puts it (the
+        other-one rule, :attr:`there_already`): the prior's own targets (its places, place classes and rooms, not the
+        floor share it spreads everywhere), less the goal, where one lies already. The reading that another is meant
+        is the command's guess, and one lying there says "it is so already" is likelier; so the robot looks where
+        such a thing is kept, not all over the house (e2e28: "put the milk in the fridge" on the houseboat, its milk
+        in its one fridge, searched 77.25 m before "it found no other"). None when the search is no such search."""
+        if not self.todo or (binding := self.todo[0]) not in self.there_already:
+            return None
+        theme, goal = binding.elements.get("theme"), binding.elements.get("goal")
+        if theme is None or goal is None or self.class_of(theme) != self.class_of(value):
+            return None
+        m = self.scene.map
+        targets = []
+        for target in m.prior(self.class_of(value)).masses:
+            resolved = m.prior_target(target) if target != "_rest" else None
+            if resolved is None:
+                continue
+            if resolved[0] != "room" and {class_key(m.places[i].name) for i in resolved[1]} <= {class_key(goal)}:
+                continue          # the goal itself: one lies there already
+            targets.append(target)
+        return targets
 
     def class_of(self, value: str) -> str:
         key = class_key(value)
@@ -553,11 +600,7 @@ class Agent:
         self.policy.begin(self)
         self.look_round(self.world.robot.pose[:2])  # where it starts, all round (a narrow sensor turns)
         todo = list(commanded)
-        names: dict[str, set[str]] = {}
-        for binding in todo:
-            for _, value in binding.values:
-                names.setdefault(self.class_of(value), set()).add(class_key(value))
-        self.several = {cls for cls, said in names.items() if len(said) > 1}
+        self.several = several_said(todo, self.class_of)
         while todo and (already := self.already_so(todo[0])) is not None:
             skipped = todo.pop(0)
             self.say("done", f"{already}, so {shown(skipped)} needs no doing", frame=str(skipped))
@@ -936,7 +979,10 @@ class Agent:
         of class ``cls`` brought there, the room's place where such a thing is put, open or not
         (:func:`seal_cli.planning.keeping.put_in_room`: a counter, not the sink; the closed cabinet is
         opened to put it in), the nearest among equals, other than the place the thing in hand was taken
-        from (the apple brought from the fridge to the kitchen goes on the counter, not back in)."""
+        from (the apple brought from the fridge to the kitchen goes on the counter, not back in). In the room the
+        speaker is in, the nearest the speaker among equals: a thing taken to where the speaker is is put down by
+        them (e2e28: "take the laptop to the shop", the speaker behind the till, went on the shelf nearest the
+        robot's way in, not the till's counter)."""
         if cls is not None:
             from seal_cli.planning.keeping import Spot, put_in_room
 
@@ -952,6 +998,9 @@ class Agent:
             lay = self.picked_from.get(held.id) if held is not None else None
             if any(s.name != lay for s in spots if s.name in distance):     # not back where it was taken from
                 spots = [s for s in spots if s.name != lay]
+            speaker = self.scene.map.speaker         # where the map says they stand (none: not said)
+            if speaker is not None and bool(room.contains([speaker])[0]):     # by the speaker, where they can reach
+                distance = {s.name: math.dist(s.at, speaker) for s in spots if s.name in distance}
             best = put_in_room(self.library.taxonomy, self.scene.map.priors, cls, spots, distance)
             if best is not None:
                 return best.name

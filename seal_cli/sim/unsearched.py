@@ -85,6 +85,17 @@ class Unsearched:
             if place in self.inside:
                 self.inside[place] = 0.0
 
+    def left_at(self, targets: Iterable[str]) -> float:
+        """The mass still unsearched at some of the prior's targets (rooms, places, place classes, by name): on
+        their cells and inside their shut places."""
+        targets = list(targets)
+        mask = np.zeros(len(self.cells), dtype=bool)
+        places: set[str] = set()
+        for target in targets:
+            mask[self.map.target_cells(target)] = True
+            places.update(_places_of(self.map, target))
+        return float(self.cells[mask].sum()) + sum(m for p, m in self.inside.items() if p in places)
+
     def searched_rooms(self, share: float = 0.5) -> list[str]:
         """The rooms of which at least ``share`` of the prior's mass there has been searched, in the map's
         order (by how the cells compare with an unsearched copy)."""

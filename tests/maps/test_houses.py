@@ -13,7 +13,7 @@ from tests.conftest import module_from_file
 
 MAPS = Path(__file__).resolve().parents[2] / "maps"
 HOUSES = ["townhouse", "office_floor", "cafe", "clinic", "farmhouse", "terrace", "bungalow", "lodge", "flat",
-          "carehome", "student_house", "guesthouse", "studio", "corner_shop"]
+          "carehome", "student_house", "guesthouse", "studio", "corner_shop", "houseboat"]
 
 
 def make_houses():  # type: ignore[no-untyped-def]
@@ -56,3 +56,9 @@ def test_an_l_shaped_house_leaves_its_missing_corner_unknown() -> None:
     row = image.shape[0] - 1 - round((9.0 + 1.0) / module.RESOLUTION)      # y = 9 m, from the top
     col = round((12.5 + 1.0) / module.RESOLUTION)
     assert image[row, col] == module.UNKNOWN
+
+
+def test_a_maps_name_is_said_as_words() -> None:
+    """Messages name a map as words (e2e28: the simulator said "had the corner_shop one")."""
+    assert load_map(MAPS / "corner_shop.yaml").said == "corner shop"
+    assert load_map(MAPS / "houseboat.yaml").said == "houseboat"

@@ -764,6 +764,22 @@ def test_a_thing_seen_where_it_is_to_go_already_means_another_one(library: Libra
                                         SeFMPolicy(particles=50), rng=np.random.default_rng(0))
     assert result.completed, result.reason
     assert any(r.text.endswith("so Place(theme=remote, goal=sofa_1) needs no doing") for r in alone.records)
+    assert result.path_m < 10.0     # e2e28: it looks where remotes are kept, not all over the flat (21.39 m before)
+    assert any(r.text.startswith("it knows no remote until it sees one") for r in alone.records)   # said first
+
+
+def test_another_one_is_looked_for_where_such_things_are_kept(library: Library) -> None:
+    """e2e28: the houseboat's one milk in its one fridge; "put the milk in the fridge" saw it there and looked for
+    another all over the boat, 77.25 m, before "it found no other"; the prior keeps milk in the fridge alone, so no
+    other is to be looked for."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    agent, result = pipeline.run_on_map(load_map("houseboat"), "put the milk in the fridge", library,
+                                        SeFMPolicy(particles=50), rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    assert result.path_m < 5.0
+    assert agent.records[-1].text.endswith("found no other, so Place(theme=milk, goal=fridge_1) needs no doing")
 
 
 def test_a_thing_in_one_of_several_places_of_the_goals_class_is_put_there_already(library: Library) -> None:
@@ -781,3 +797,15 @@ def test_a_thing_in_one_of_several_places_of_the_goals_class_is_put_there_alread
     assert any(s.endswith("needs no doing") for s in said)
     assert {agent.world.items["milk_1"].parent, agent.world.items["milk_2"].parent} == {"fridge_1", "fridge_2"}
     assert result.path_m < 15.0
+
+
+def test_a_thing_taken_to_the_speakers_room_is_put_down_by_the_speaker(library: Library) -> None:
+    """e2e28: "take the laptop to the shop" on the corner shop, the speaker behind the till: on the till's counter,
+    not on the shop's shelf nearest the robot's way in (counter and shelf are alike for a laptop)."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    agent, result = pipeline.run_on_map(load_map("corner_shop"), "take the laptop to the shop", library,
+                                        SeFMPolicy(particles=50), rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    assert agent.world.items["laptop_1"].parent == "counter_1"

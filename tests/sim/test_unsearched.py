@@ -37,6 +37,23 @@ def test_the_unsearched_mass_is_the_prior_until_looked_at_then_keeps_one_minus_p
     assert cup.left == pytest.approx(0.1 * expected)
 
 
+def test_the_mass_left_at_some_targets_is_theirs_alone() -> None:
+    """e2e28: the search for another one counts only where the prior keeps such things (its targets), not its floor
+    share spread everywhere."""
+    m = two_rooms()
+    milk = Unsearched.of(m, "milk", ["fridge_1"])
+    near = float(milk.cells[m.target_cells("fridge")].sum())     # the floor share on the cells by it
+    assert milk.left_at(["fridge"]) == pytest.approx(milk.inside["fridge_1"] + near) and milk.left_at([]) == 0.0
+    assert milk.left_at(["fridge"]) < milk.left                  # the floor share is not the fridge's
+    cup = Unsearched.of(m, "cup")
+    in_a = m.free_cell_room == 0
+    assert cup.left_at(["a"]) == pytest.approx(float(cup.cells[in_a].sum()))
+    cup.saw(in_a)
+    assert cup.left_at(["a"]) == pytest.approx(0.1 * float(Unsearched.of(m, "cup").cells[in_a].sum()))
+    milk.saw(np.zeros(len(m.free_centres), bool), ["fridge_1"])
+    assert milk.left_at(["fridge"]) == pytest.approx(near)
+
+
 def test_the_mass_in_a_shut_place_waits_until_the_robot_looks_into_it() -> None:
     m = two_rooms()
     milk = Unsearched.of(m, "milk", shut=["fridge_1"])

@@ -77,7 +77,7 @@ def draw_beliefs(path: str | Path, sefm: SeFM, trace: Trace | None = None, dpi: 
     for ax in list(axes.flat)[panels:]:
         ax.axis("off")
     hidden = len(sefm.bindings) - len(frames)
-    title = f"SeFM on {sefm.map.name} after {sefm.step} update{'s' if sefm.step != 1 else ''}"
+    title = f"SeFM on the {sefm.map.said} after {sefm.step} update{'s' if sefm.step != 1 else ''}"
     if hidden > 0:
         title += f" (first {len(frames)} of {len(sefm.bindings)} frames shown)"
     fig.suptitle(title, fontsize=12)
