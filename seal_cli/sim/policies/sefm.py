@@ -951,7 +951,7 @@ class SeFMPolicy(Policy):
         other, deferred = model.best(first=next(k for k, o in enumerate(best) if o is alone))
         departs = self._departs(model, order, other, deferred - expected)
         context = None
-        if departs and self.by_context_in_room and then is not None:
+        if departs and self.by_context_in_room and then is not None and incumbent is None:
             context = self._context_share(agent, best, fields, then, best[order[0]], alone, deferred - expected)
             departs = context > self.defer_m if self.defer_m is not None else context > 0
         self.departures.append({"target": target, "gap": round(deferred - expected, 4),
@@ -966,7 +966,9 @@ class SeFMPolicy(Policy):
     and what the drives see on the way (:attr:`see_on_the_way`, a finer model of the *thing's own* search, which
     object-only's choice does not use). A departure the second alone earns is a bet on the search model, not on
     the frame: on ALFRED-2D's held-out floor plans it was the heating group's tomato (9.5 m against object-only's
-    6.0, docs/benchmarks.md, "search25"). Off: the whole gap counts (search9 to search24)."""
+    6.0, docs/benchmarks.md, "search25"). Against object-only's look only: a look being driven to
+    (:meth:`_reconsider_in_room`) is weighed again because the drive saw the plan's next stop, news of the context
+    itself, and there the whole gap counts. Off: the whole gap counts everywhere (search9 to search24)."""
 
     def _context_share(self, agent: Agent, best: Sequence[Look], fields: dict[Cell, np.ndarray], then: np.ndarray,
                        mine: Look, alone: Look, gap: float) -> float:
