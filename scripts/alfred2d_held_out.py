@@ -16,6 +16,7 @@ per task type (the bench's JSON with ``--json``), writes every outcome to ``--ep
 
     python scripts/alfred2d_held_out.py --sample 40 --episodes /tmp/held.jsonl --causes
     python scripts/alfred2d_held_out.py --sample 40 --goal gold --episodes /tmp/held_gold.jsonl
+    python scripts/alfred2d_held_out.py --goal gold --policies sefm,object_only --trial trial_T20190908_204024_506453
 
 Not refitted: SeFM's place spread (``SeFMPolicy.ON_PLACE``, four quantiles of where a thing lies on a surface) and the
 suite's vocabulary file (THOR's names, not learned).
@@ -96,6 +97,8 @@ def main() -> int:
     ap.add_argument("--list", action="store_true", help="with --causes: print every failed episode")
     ap.add_argument("--markdown", action="store_true", help="with --causes: the table in Markdown")
     ap.add_argument("--json", action="store_true", help="print the bench's JSON")
+    ap.add_argument("--trial", action="append", default=[],
+                    help="run only this trial of the sample (its task id; repeatable): one episode to trace")
     args = ap.parse_args()
     if not 0 < args.dev < 1:
         raise SystemExit(f"error: --dev {args.dev}: a fraction in (0, 1)")
@@ -128,13 +131,20 @@ def main() -> int:
     fit_ids = {r["task_id"] for r in fit_rows}
     suite.priors = alfred2d.estimate_priors((e for e in suite.episodes if e.task_id in fit_ids), suite.floor_plans)
     suite.episodes = alfred2d._stratified([e for e in suite.episodes if e.task_id in held], args.sample)
+    if args.trial:
+        missing = sorted(set(args.trial) - {e.task_id for e in suite.episodes})
+        if missing:
+            print(f"error: --trial {missing[0]}: not a trial of the held-out sample", file=sys.stderr)
+            return 1
+        suite.episodes = [e for e in suite.episodes if e.task_id in args.trial]
     plans = {e.floor_plan for e in suite.episodes}
     print(f"fit on {len(fit_rows)} sentences; {len(suite.episodes)} episodes of {len(plans)} held-out floor plans",
           file=sys.stderr, flush=True)
     library = load_library()
     outcomes: list[Outcome] = []
     with tempfile.TemporaryDirectory() as folder:
-        fit_statistics(args.data, fit_rows, Path(folder), bwc)
+        if args.goal == "human" or args.causes:  # gold commands are ALFRED's labels: no sentence is read
+            fit_statistics(args.data, fit_rows, Path(folder), bwc)
         for number, episode in enumerate(suite.episodes, 1):
             outcomes += run_episode(episode, suite, library, policies, goal=args.goal, seed=args.seed,
                                     particles=args.particles)

@@ -36,3 +36,25 @@ def test_episodes_written_into_the_data_folder_are_refused(tmp_path: Path) -> No
     assert (tmp_path / "alfred" / "goals_train.tsv").read_text() == ""
     done = run_script(SCRIPT, "--data", str(tmp_path), "--policies", "sefm,nope")
     assert done.returncode == 1 and "--policies sefm,nope: the policies are" in done.stderr
+
+
+def test_a_trial_not_in_the_held_out_sample_is_named(shared_data: Path, tmp_path: Path) -> None:
+    done = run_script(SCRIPT, "--data", str(shared_data), "--goal", "gold", "--sample", "1", "--trial", "trial_nope",
+                      "--episodes", str(tmp_path / "out.jsonl"))
+    assert done.returncode == 1 and "--trial trial_nope: not a trial of the held-out sample" in done.stderr
+    assert "Traceback" not in done.stderr and not (tmp_path / "out.jsonl").exists()
+
+
+def test_one_trial_is_run_alone(shared_data: Path, tmp_path: Path) -> None:
+    """The episode heating's context-share fix was traced on (docs/benchmarks.md, "search25"): run by itself, gold,
+    it is one episode of its group, SeFM's path object-only's."""
+    import json
+
+    out = tmp_path / "out.jsonl"
+    done = run_script(SCRIPT, "--data", str(shared_data), "--goal", "gold", "--policies", "sefm,object_only",
+                      "--trial", "trial_T20190911_135649_366423", "--episodes", str(out))
+    assert done.returncode == 0, done.stderr
+    rows = [json.loads(line) for line in out.read_text().splitlines()]
+    assert [r["policy"] for r in rows] == ["sefm", "object_only"]
+    assert {r["task_id"] for r in rows} == {"trial_T20190911_135649_366423"} and rows[0]["success"]
+    assert rows[0]["path_m"] == rows[1]["path_m"]

@@ -950,9 +950,41 @@ class SeFMPolicy(Policy):
             return alone.view
         other, deferred = model.best(first=next(k for k, o in enumerate(best) if o is alone))
         departs = self._departs(model, order, other, deferred - expected)
+        context = None
+        if departs and self.by_context_in_room and then is not None and incumbent is None:
+            context = self._context_share(agent, best, fields, then, best[order[0]], alone, deferred - expected)
+            departs = context > self.defer_m if self.defer_m is not None else context > 0
         self.departures.append({"target": target, "gap": round(deferred - expected, 4),
+                                "context": None if context is None else round(context, 4),
                                 "outcomes": (model.outcomes(order), model.outcomes(other)), "departs": departs})
         return best[order[0]].view if departs else alone.view
+
+    by_context_in_room = True
+    """In one room, SeFM's first look departs from object-only's only for what the frame's context adds to the
+    expected saving (:meth:`_context_share`), not for the rest of the gap. SeFM's expected cost differs from the
+    rule object-only's look comes from in two ways: the drive on to the plan's next stops (the frame's context)
+    and what the drives see on the way (:attr:`see_on_the_way`, a finer model of the *thing's own* search, which
+    object-only's choice does not use). A departure the second alone earns is a bet on the search model, not on
+    the frame: on ALFRED-2D's held-out floor plans it was the heating group's tomato (9.5 m against object-only's
+    6.0, docs/benchmarks.md, "search25"). Against object-only's look only: a look being driven to
+    (:meth:`_reconsider_in_room`) is weighed again because the drive saw the plan's next stop, news of the context
+    itself, and there the whole gap counts. Off: the whole gap counts everywhere (search9 to search24)."""
+
+    def _context_share(self, agent: Agent, best: Sequence[Look], fields: dict[Cell, np.ndarray], then: np.ndarray,
+                       mine: Look, alone: Look, gap: float) -> float:
+        """The part of ``gap`` — how much less SeFM's expected cost of finishing the plan is with ``mine`` first
+        than with object-only's ``alone`` first — that the frame's context makes: ``gap`` less the same comparison
+        under the same model with no stop after the thing (its search alone: the drives there, what they see on the
+        way and the drive to where it is acted on, as in the full model; not the drive on from there). Both
+        comparisons take each first look with the best order after it that the greedy build and or-opt find
+        (:meth:`_TourModel.best`)."""
+        alone_then = np.zeros_like(then)   # no stop after the thing: the drive to act on it stays, the drive on goes
+        search = self._tour_model(best, fields, alone_then, agent)
+        if self.see_on_the_way:
+            search = self._on_the_way(agent, best, search, alone_then)
+        i = next(k for k, o in enumerate(best) if o is mine)
+        j = next(k for k, o in enumerate(best) if o is alone)
+        return gap - (search.best(first=j)[1] - search.best(first=i)[1])
 
     def _departs(self, model: _TourModel, order: Sequence[int], other: Sequence[int], gap: float) -> bool:
         """Whether SeFM's best order ``order`` is taken over ``other``, the best that starts with object-only's look:

@@ -427,6 +427,41 @@ def test_a_known_stop_beside_unlikely_looks_does_not_draw_sefm_away_from_the_lik
     assert first(earlier) != (3.5, 0.5)
 
 
+def test_sefm_leaves_object_only_s_look_only_for_what_the_frame_s_context_adds(library: Library) -> None:
+    """Three shelves' looks west and east of the robot (3 m): object-only takes the one a metre west. Counting what
+    the drive sees on the way, the look 2.5 m west is better (the drive passes the first shelf): a gap in the
+    thing's own search, which object-only's rule does not weigh. With the drive on the same from every cell (a
+    stop the frame gives no reason to prefer a side for), the frame's share of that gap is nil, so SeFM keeps
+    object-only's look; the rule off (earlier rounds), the whole gap made it depart."""
+
+    class Flat(SeFMPolicy):
+        def _onward_field(self, agent: Agent, *stops: object) -> np.ndarray:
+            return np.full(agent.grid.shape, 2.0)
+
+    scene = corridor(library, {"apple": {"shelf": 0.4, "cabinet": 0.4}}, start=3.0)
+
+    def first(policy: SeFMPolicy) -> tuple[float, float]:
+        agent = ready(library, scene, policy, [("Place", {"theme": "apple", "goal": "dining_table"})])
+        places = policy._places(agent)
+        ids = [p.id for p in places]
+
+        def look(x: float, place: str) -> Look:
+            reveals = np.zeros(len(places))
+            reveals[ids.index(place)] = 0.3
+            cell = agent.grid.cell((x, 0.5))
+            return Look(0.3, float(agent.distances()[cell]), View(cell, (x, 1.4)), reveals)
+
+        looks = [look(2.0, "shelf_2"), look(0.5, "shelf_1"), look(7.0, "cabinet_2")]
+        return agent.grid.point(policy._first_of_tour(agent, looks, "apple").cell)
+
+    flat = Flat(particles=50)
+    assert first(ObjectOnlyPolicy(particles=50)) == first(flat) == (2.0, 0.5)
+    assert flat.departures[-1]["gap"] > flat.defer_m and flat.departures[-1]["context"] == pytest.approx(0.0)
+    whole_gap = Flat(particles=50)
+    whole_gap.by_context_in_room = False
+    assert first(whole_gap) == (0.5, 0.5)
+
+
 def test_a_look_chosen_with_the_next_stop_unseen_is_chosen_again_when_the_drive_sees_it(library: Library) -> None:
     """Place(apple, bowl): a look for the apple chosen while no bowl was seen (its drive on counted from the bowl's
     belief) is weighed again once the drive brings a bowl into sight: SeFM's expected cost of finishing from here
