@@ -141,7 +141,7 @@ class Case:
     cwd: str = ""
     """The folder of the case's files to run the command in (a ``ro-dir``: a read-only working folder); the case's
     folder itself when empty."""
-    vanish: tuple[str, str] = ()
+    vanish: tuple[str, str] | tuple[()] = ()
     """(folder, pattern): remove that folder of the case's files, with all it holds, once a file whose name matches
     the pattern is in it (the command's temporary output, while it is being written): a folder deleted under a
     running command."""
