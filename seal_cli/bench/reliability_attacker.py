@@ -1225,11 +1225,11 @@ def hostile25_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
                signal=(1, 0.0), signal_on=r"\.seal\d+-[0-9a-f]{8}\.tmp", whole=("o.png",),
                says=r"done: Go\(goal=sofa_1\)")
     # -- a run that ends not done ----------------------------------------------------------------------------------
-    yield Case("A run not done still draws its whole picture", ("run", "bring me the umbrella", "--map", "apartment",
+    yield Case("A run not done still draws its whole picture", ("run", "find the unicorn", "--map", "bungalow",
                                                                  "--particles", "20", "--png", "o.png", "--rrd",
-                                                                 "o.rrd"),
-               codes=(1,), whole=("o.png", "o.rrd"),
-               says=r"not done: no umbrella found[^\n]*\n[^\n]*o\.png[^\n]*o\.rrd")
+                                                                 "o.rrd"),    # a Find: a Bring of a thing the
+               codes=(1,), whole=("o.png", "o.rrd"),                           # house lacks is refused (e2e27)
+               says=r"not done: no unicorn found[^\n]*\n[^\n]*o\.png[^\n]*o\.rrd")
 
 
 def _laughs(anchor: str, depth: int = 9) -> str:
