@@ -39,7 +39,8 @@ if TYPE_CHECKING:
 __all__ = ["LOADER", "MAX_IMAGE_BYTES", "MAX_INPUT_BYTES", "YAML_BREAKS", "Outputs", "atomic_output",
            "atomic_write_text", "clean_up_on_signals", "compose_documents", "compose_yaml", "decode", "interrupted",
            "note_interrupts", "open_regular", "read_bytes", "read_json", "read_json_lines", "read_text", "read_yaml",
-           "remove_temporaries", "signals_wait", "split_lines", "stdin_hint", "stream_lines", "typed", "yaml_problem"]
+           "remove_temporaries", "shown_path", "signals_wait", "split_lines", "stdin_hint", "stream_lines", "typed",
+           "yaml_problem"]
 
 if TYPE_CHECKING:
     LOADER: type[yaml.SafeLoader]
@@ -695,7 +696,7 @@ class Outputs:
         self._guard_read = guard_read
         try:
             for option, target in planned:
-                self._outputs[option] = _reserve(option, target)
+                self._outputs[option] = _reserve(option, target, by_option)
         except BaseException:
             self.discard()
             raise
@@ -728,7 +729,8 @@ class Outputs:
                 raise OSError(value.errno, value.strerror, str(written.target)) from None
             if written is not None:  # said of the file asked for, not of its temporary or of "the output"
                 option = written.option.split(" ")[0]  # "--pddl domain.pddl": a file of a folder's option
-                raise SealError(f"cannot write {option} {written.target}: {value.strerror}") from None
+                raise SealError(f"cannot write {option} {shown_path(written.target)}: "
+                                f"{_reason(value, written.target)}") from None
 
     def _written_by(self, error: OSError) -> _Output | None:
         """The output whose writing failed with ``error``: the one whose temporary it names, or, for a full disk
@@ -778,8 +780,8 @@ class Outputs:
             identity = _identity(output.target)
             if self._guard_read and not output.device and identity in _READ:
                 self.discard()
-                raise SealError(f"{output.option} {output.target} would overwrite the input {_READ[identity]}, "
-                                "which the command read; give another file name")
+                raise SealError(f"{output.option} {shown_path(output.target)} would overwrite the input "
+                                f"{_READ[identity]}, which the command read; give another file name")
 
     def discard(self) -> None:
         """Remove every temporary not yet moved."""
@@ -809,7 +811,7 @@ def _check_suffix(target: Path, option: str, allowed: Sequence[str]) -> None:
     if allowed and suffix and suffix not in allowed and not _is_device(target):
         formats = " or ".join(allowed)
         kinds = " or ".join(s[1:].upper() for s in allowed)  # "JSONL or JSON" (it read "JSONL OR .JSON")
-        raise SealError(f"{option} {target}: seal writes {kinds} files here; give a name ending in "
+        raise SealError(f"{option} {shown_path(target)}: seal writes {kinds} files here; give a name ending in "
                         f"{formats}, not {target.suffix}")
 
 
@@ -835,33 +837,74 @@ def _check_distinct(planned: list[tuple[str, Path]], inputs: list[Path], guard_r
         if source is None and guard_read and identity in _READ:
             source = _READ[identity]
         if source is not None and not device:
-            raise SealError(f"{option} {target} would overwrite the input {source}; give another file name")
+            raise SealError(f"{option} {shown_path(target)} would overwrite the input {source}; give another file "
+                            "name")
         other = seen.get(real) or (seen_ids.get(identity) if identity else None)
         if other is not None and not device:
-            raise SealError(f"{option} and {other} name the same file ({target}); give each its own file")
+            raise SealError(f"{option} and {other} name the same file ({shown_path(target)}); give each its own "
+                            "file")
         seen[real] = option
         if identity:
             seen_ids[identity] = option
 
 
-def _reserve(option: str, target: Path) -> _Output:
-    """Create the temporary for ``target`` (which proves its folder takes a file)."""
+def _reserve(option: str, target: Path, by_option: bool = True) -> _Output:
+    """Create the temporary for ``target`` (which proves its folder takes a file). A failure of the system is said
+    of ``option``; but a writer nested in another's output (``atomic_output`` of the temporary that ``run --png``
+    handed it: ``by_option`` False, ``target`` a live temporary) raises the ``OSError`` of ``target``, so that the
+    outer one names its option (hostile26: a folder removed while ``run --png d/o.png`` ran was "cannot write output
+    d/.o.png.seal…tmp.png")."""
+    try:
+        return _reserved(option, target)
+    except OSError as exc:
+        if not by_option and target in _LIVE:
+            raise OSError(exc.errno, exc.strerror, str(target)) from None
+        raise SealError(f"cannot write {option} {shown_path(target)}: {_reason(exc, target, in_folder=True)}") \
+            from None
+
+
+def _reason(error: OSError, target: Path, *, in_folder: bool = False) -> str:
+    """Why writing ``target`` failed, in words: a folder that does not exist (or was removed while the command ran)
+    is named, and with ``in_folder`` the folder of any other failure."""
+    folder = target.parent
+    if error.errno == errno.ENOENT and not folder.is_dir():
+        return f"folder {shown_path(folder)} does not exist"
+    return f"{error.strerror}" + (f" (in folder {shown_path(folder)})" if in_folder else "")
+
+
+def shown_path(path: str | Path) -> str:
+    """A path as a message shows it: a character that is not printable (a newline, an escape, a byte that was not
+    UTF-8) as its escape, ``\\n``, ``\\x1b``, ``\\xff``, so that a name cannot break the message's line or talk
+    to the terminal (hostile26: ``--rrd $'x\\ny.png'`` was said over two lines)."""
+    text = str(path)
+    return text if text.isprintable() else "".join(map(_shown_char, text))
+
+
+def _shown_char(c: str) -> str:
+    if c.isprintable():
+        return c
+    if 0xDC80 <= ord(c) <= 0xDCFF:        # a byte that was not UTF-8, as the file system's decoding keeps it
+        return f"\\x{ord(c) - 0xDC00:02x}"
+    return repr(c)[1:-1]
+
+
+def _reserved(option: str, target: Path) -> _Output:
     try:
         mode = target.stat().st_mode
     except FileNotFoundError:
         mode = None
     except OSError as exc:
-        raise SealError(f"cannot write {option} {target}: {exc.strerror}") from None
+        raise SealError(f"cannot write {option} {shown_path(target)}: {exc.strerror}") from None
     if mode is not None and stat.S_ISDIR(mode):
-        raise SealError(f"cannot write {option} {target}: it is a folder; give a file name")
+        raise SealError(f"cannot write {option} {shown_path(target)}: it is a folder; give a file name")
     if mode is not None and not (stat.S_ISREG(mode) or stat.S_ISCHR(mode) or stat.S_ISFIFO(mode)):
-        raise SealError(f"cannot write {option} {target}: it is {_kind(mode)}")
+        raise SealError(f"cannot write {option} {shown_path(target)}: it is {_kind(mode)}")
     device = mode is not None and not stat.S_ISREG(mode)
     if device and stat.S_ISFIFO(mode or 0):
         _check_reader(option, target)
     folder = target.parent
     if not device and not folder.is_dir():
-        raise SealError(f"cannot write {option} {target}: folder {folder} does not exist")
+        raise FileNotFoundError(errno.ENOENT, os.strerror(errno.ENOENT))
     if not device:
         _sweep(target)
     import secrets
@@ -870,10 +913,7 @@ def _reserve(option: str, target: Path) -> _Output:
     name = f".{target.name}.seal{os.getpid()}-{secrets.token_hex(4)}.tmp{target.suffix}"
     tmp = Path(tempfile.gettempdir() if device else folder) / name
     with signals_wait():    # made and recorded as one step: a signal between them left the temporary behind
-        try:
-            fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)  # the mode a plain open() gives
-        except OSError as exc:
-            raise SealError(f"cannot write {option} {target}: {exc.strerror} (in folder {folder})") from None
+        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)  # the mode a plain open() gives
         os.close(fd)
         _LIVE.add(tmp)
     return _Output(option, target, tmp, device)
@@ -884,7 +924,8 @@ def _check_reader(option: str, target: Path) -> None:
     try:
         fd = os.open(target, os.O_WRONLY | os.O_NONBLOCK)
     except OSError:
-        raise SealError(f"cannot write {option} {target}: it is a named pipe that no process reads") from None
+        raise SealError(f"cannot write {option} {shown_path(target)}: it is a named pipe that no process reads") \
+            from None
     os.close(fd)
 
 
@@ -897,7 +938,8 @@ def _move(output: _Output) -> None:
         else:
             os.replace(output.tmp, output.target)
     except OSError as exc:
-        raise SealError(f"cannot write {output.option} {output.target}: {exc.strerror}") from None
+        raise SealError(f"cannot write {output.option} {shown_path(output.target)}: {_reason(exc, output.target)}") \
+            from None
     _LIVE.discard(output.tmp)
 
 

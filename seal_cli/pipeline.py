@@ -98,8 +98,9 @@ def frames_to_localise(tasks: Sequence[str], library: Library, map: Map, *, hold
         return bindings, state
     if not done:
         return bindings, Things(library.taxonomy, known).state(holding)
-    problem = problem_of_text(done[-1], library, holding=holding, done=tuple(done[:-1]), map=known,
-                              vocabulary=vocabulary)
+    with naming_done(done, ""):     # the last --done is parsed as the command: a refusal in it names it (hostile26)
+        problem = problem_of_text(done[-1], library, holding=holding, done=tuple(done[:-1]), map=known,
+                                  vocabulary=vocabulary)
     state = problem.state
     for binding in problem.commanded:
         state = state.apply(binding)

@@ -15,7 +15,7 @@ from pathlib import Path
 import yaml
 
 from seal_cli.errors import SealError
-from seal_cli.fileio import compose_yaml, read_text
+from seal_cli.fileio import read_text
 from seal_cli.frames.reading import frame_files, read_library
 from seal_cli.maps.formats.map_server import KEYS, check_map_file
 from seal_cli.resources import framelib_dir
@@ -36,13 +36,40 @@ def is_map_file(path: Path) -> bool:
     if path.suffix == ".frame" or path.is_dir():
         return False
     try:
-        node = compose_yaml(read_text(path), str(path))
-    except SealError:
+        keys = top_level_keys(read_text(path))
+    except (SealError, yaml.YAMLError):
         return False
-    if not isinstance(node, yaml.MappingNode):
-        return False
-    keys = {k.value for k, _ in node.value if isinstance(k, yaml.ScalarNode)}
-    return bool(keys & _MAP_ONLY_KEYS) and not keys & FRAME_FILE_KEYS
+    return keys is not None and bool(keys & _MAP_ONLY_KEYS) and not keys & FRAME_FILE_KEYS
+
+
+def top_level_keys(text: str) -> set[str] | None:
+    """The keys of a YAML text's top-level mapping (None: its first document is no mapping), read off the parser's
+    events: nothing is composed, so a map of 40,000 rooms is not composed twice (hostile26: once to tell it is a
+    map, once to read it; over a minute to validate)."""
+    from seal_cli import fileio
+
+    parser = fileio.LOADER(text)
+    keys: set[str] = set()
+    depth = position = 0     # how deep the parser is; how many keys and values of the top mapping it has passed
+    try:
+        while parser.check_event():
+            event = parser.get_event()
+            if isinstance(event, yaml.DocumentEndEvent):
+                break
+            if isinstance(event, yaml.NodeEvent):
+                if depth == 0 and not isinstance(event, yaml.MappingStartEvent):
+                    return None
+                if depth == 1:
+                    if position % 2 == 0 and isinstance(event, yaml.ScalarEvent):
+                        keys.add(event.value)
+                    position += 1
+                if isinstance(event, yaml.CollectionStartEvent):
+                    depth += 1
+            elif isinstance(event, yaml.CollectionEndEvent):
+                depth -= 1
+    finally:
+        parser.dispose()
+    return keys
 
 
 @dataclass

@@ -55,8 +55,29 @@ def check_size(root: yaml.Node | None, file: str, limit: int = MAX_VALUES) -> No
         stack.append((node, True))
         stack.extend((child, False) for child in _children(node))
     if sizes[id(root)] > limit:
+        past = _past_bound(root, sizes, limit)
         raise SealError(f"this file holds more than {limit:,} values once its aliases (*name) are expanded; "
-                        "seal reads at most that many", Where(file))
+                        "seal reads at most that many",
+                        Where(file, past.start_mark.line + 1, past.start_mark.column + 1))
+
+
+def _past_bound(root: yaml.Node, sizes: dict[int, int], limit: int) -> yaml.Node:
+    """Where the values of a file too large once expanded pass ``limit``: from the root, the child (in the order
+    written) that brings the count past it, down to a value made of aliases (a child met twice: a "billion laughs"
+    line ``&l8 [*l7, *l7, ...]``) or of none (hostile26: the refusal named the file only)."""
+    node, budget = root, limit
+    while True:
+        children = list(_children(node))
+        if not children or len({id(c) for c in children}) < len(children):
+            return node
+        count = 1
+        for child in children:
+            if count + sizes[id(child)] > budget:
+                break
+            count += sizes[id(child)]
+        else:
+            return node
+        node, budget = child, budget - count
 
 
 def count_values(text: str, loader: type[yaml.SafeLoader], file: str, limit: int, what: str = "file") -> None:

@@ -529,3 +529,45 @@ def test_a_signal_started_ignored_stays_ignored(tmp_path: Path, ignored: bool) -
         assert (run.returncode, run.stdout.strip()) == (0, "written") and (tmp_path / "o.png").read_bytes() == b"png"
     else:
         assert run.returncode == 129 and list(tmp_path.iterdir()) == [], run.stderr
+
+
+def test_a_path_is_shown_with_what_cannot_be_printed_escaped() -> None:
+    """A newline, an escape or a byte that was not UTF-8 in an output's name is shown as its escape: the message
+    stays one line and says nothing to the terminal (hostile26)."""
+    from seal_cli.fileio import shown_path
+
+    assert shown_path("a b/ç😀.png") == "a b/ç😀.png"
+    assert shown_path("x\ny\x1b[2J\udcff.png") == "x\\ny\\x1b[2J\\xff.png"
+
+
+def test_a_wrong_suffix_with_a_newline_is_said_on_one_line(tmp_path: Path) -> None:
+    from seal_cli.fileio import Outputs
+
+    with pytest.raises(SealError) as caught:
+        Outputs({"--rrd": tmp_path / "x\ny.png"}, suffixes={"--rrd": (".rrd",)})
+    assert "\n" not in str(caught.value) and "x\\ny.png" in str(caught.value)
+
+
+def test_a_folder_removed_while_an_output_is_written_is_said_of_its_option(tmp_path: Path) -> None:
+    """The folder of ``--png d/o.png`` removed while the command runs: the writer nested in the output (the picture's
+    own ``atomic_output`` of the temporary) leaves the message to the output, which names ``--png`` and the folder
+    (hostile26: "cannot write output d/.o.png.seal…tmp.png: folder d does not exist"); nothing is left behind."""
+    import shutil
+
+    from seal_cli.fileio import Outputs
+
+    folder = tmp_path / "d"
+    folder.mkdir()
+    with pytest.raises(SealError, match=r"^cannot write --png .*d/o\.png: folder .*d does not exist$"), \
+            Outputs({"--png": folder / "o.png"}) as plan:
+        shutil.rmtree(folder)
+        with atomic_output(plan["--png"]) as tmp:
+            tmp.write_bytes(b"x")
+    assert not folder.exists()
+    folder.mkdir()
+    with pytest.raises(SealError, match=r"^cannot write --png .*d/o\.png: folder .*d does not exist$"), \
+            Outputs({"--png": folder / "o.png"}) as plan:
+        plan["--png"].write_bytes(b"x")
+        shutil.rmtree(folder)                   # gone before the rename
+    with pytest.raises(SealError, match="folder .* does not exist"), atomic_output(tmp_path / "no" / "x.png"):
+        pass                                    # alone, atomic_output names its own target, as it always did

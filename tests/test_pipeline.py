@@ -103,3 +103,11 @@ def test_a_state_question_is_answered_by_looking_at_the_thing(library: Library, 
     _, on = pipeline.run_on_map(apartment, "is the stove still on?", library, make_policy("oracle"),
                                 rng=np.random.default_rng(0))
     assert on.answer == "no: stove_1 is off"
+
+
+def test_the_last_done_of_a_localization_without_a_task_is_named_when_refused(library: Library,
+                                                                              apartment: Map) -> None:
+    """``seal localize --done ...`` without ``--task`` reads its last ``--done`` as the command; a refusal there
+    names the option all the same (hostile26: "column 1: control character U+0001 in the command")."""
+    with pytest.raises(SealError, match=r"in --done '\\x01 go': control character U\+0001"):
+        pipeline.frames_to_localise([], library, apartment, done=["go to the sofa", "\x01 go"])

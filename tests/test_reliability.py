@@ -249,3 +249,23 @@ def test_a_case_starts_with_the_signals_its_judge_was_started_ignoring(monkeypat
         for number, handler in before.items():
             signal.signal(number, handler)
     assert plain[0].problems == [] and nohup.problems == []
+
+
+def test_a_case_s_folder_vanishes_once_the_command_writes_into_it(monkeypatch: pytest.MonkeyPatch) -> None:
+    """``Case.vanish``: the folder is removed, with what it holds, once a file matching the pattern is in it, while
+    the command runs (a folder deleted under ``run --png d/o.png``, hostile26); a command that never writes there
+    keeps it."""
+    import sys
+
+    import seal_cli.bench.reliability as judge
+
+    script = ("import os, sys, time; open('d/.o.seal1-0123abcd.tmp', 'w').close(); deadline = time.time() + 5\n"
+              "while os.path.isdir('d') and time.time() < deadline: time.sleep(0.01)\n"
+              "sys.exit(1 if os.path.isdir('d') else 0)")
+    monkeypatch.setattr(judge, "_seal", lambda: [sys.executable, "-c", script])
+    gone = judge.run_case(judge.Case("a folder removed", (), (("d", "dir"),), codes=(0,),
+                                     vanish=("d", r"\.seal\d+-[0-9a-f]{8}\.tmp")))
+    assert gone.code == 0 and gone.problems == []
+    kept = judge.run_case(judge.Case("a folder never written into", (), (("d", "dir"),), codes=(0,),
+                                     vanish=("d", r"never"), timeout=30))
+    assert kept.code == 1

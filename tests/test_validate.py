@@ -61,3 +61,13 @@ def test_a_map_is_a_map_whatever_its_name_says(tmp_path: Path) -> None:
         assert report.problems == [] and report.maps == 1
     (tmp_path / "m.frame").write_text(text, encoding="utf-8")
     assert not is_map_file(tmp_path / "m.frame")   # the DSL's suffix: a frame file, whatever it holds
+
+
+def test_the_top_level_keys_are_read_without_composing_the_file() -> None:
+    from seal_cli.validate import top_level_keys
+
+    text = "name: m\nbounds: [0, 0, 1, 1]\nrooms:\n  - {name: a, box: [0, 0, 1, 1]}\npriors: {cup: {a: 1}}\n"
+    text += "? [k]\n: 3\n"
+    assert top_level_keys(text) == {"name", "bounds", "rooms", "priors"}
+    assert top_level_keys("- a\n") is None and top_level_keys("a\n") is None and top_level_keys("") == set()
+    assert top_level_keys("frames: []\nx: {frame: 1}\n---\nrooms: []\n") == {"frames", "x"}   # the first document

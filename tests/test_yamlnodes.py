@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import pytest
 import yaml
 
 from seal_cli.errors import SealError, Where
@@ -131,3 +132,16 @@ def test_a_merged_pair_stands_at_the_merge_that_brought_it() -> None:
     assert (key.start_mark.line, key.start_mark.column) == (1, 8) == (value.start_mark.line, value.start_mark.column)
     inner = value.value[0][0]
     assert (inner.start_mark.line, inner.start_mark.column) == (0, 11)  # what is inside: where it is written
+
+
+def test_a_file_too_large_once_expanded_is_refused_where_it_passes_the_bound() -> None:
+    """A "billion laughs" is refused at the line whose aliases pass the bound, not at the file alone (hostile26)."""
+    from seal_cli.yamlnodes import check_size
+
+    laughs = "a: 1\nl:\n  - &l0 [x, x, x]\n  - &l1 [*l0, *l0, *l0]\n  - &l2 [*l1, *l1, *l1]\n"
+    with pytest.raises(SealError, match="more than 20 values once its aliases") as caught:
+        check_size(yaml.compose(laughs, Loader=LOADER), "b.yaml", 20)
+    assert caught.value.where == Where("b.yaml", 4, 5)            # &l1: its 13 values bring the count to 22
+    with pytest.raises(SealError) as caught:
+        check_size(yaml.compose("x: [" + ", ".join("1" * 30) + "]\n", Loader=LOADER), "f.yaml", 20)
+    assert caught.value.where.line == 1 and caught.value.where.column is not None

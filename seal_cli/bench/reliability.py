@@ -141,6 +141,10 @@ class Case:
     cwd: str = ""
     """The folder of the case's files to run the command in (a ``ro-dir``: a read-only working folder); the case's
     folder itself when empty."""
+    vanish: tuple[str, str] | tuple[()] = ()
+    """(folder, pattern): remove that folder of the case's files, with all it holds, once a file whose name matches
+    the pattern is in it (the command's temporary output, while it is being written): a folder deleted under a
+    running command."""
 
 
 @dataclass
@@ -274,6 +278,8 @@ def _one(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
         if stdout != subprocess.PIPE:
             os.close(stdout)
     try:
+        if case.vanish:
+            _remove_when(process, folder / case.vanish[0], case.vanish[1])
         if case.signal is not None:
             number, delay = case.signal
             if _wait_to_signal(process, delay) and _wait_for_file(process, folder, case.signal_on):
@@ -377,6 +383,20 @@ def _wait_for_file(process: subprocess.Popen[bytes], folder: Path, pattern: str)
             return True
         time.sleep(0.001)
     return False
+
+
+def _remove_when(process: subprocess.Popen[bytes], folder: Path, pattern: str) -> None:
+    """Remove ``folder`` and all it holds once a file whose name matches ``pattern`` is in it (``Case.vanish``);
+    nothing if the process ends first."""
+    import shutil
+
+    found = re.compile(pattern)
+    while process.poll() is None:
+        with contextlib.suppress(OSError):
+            if any(found.search(name) for name in os.listdir(folder)):
+                shutil.rmtree(folder, ignore_errors=True)
+                return
+        time.sleep(0.001)
 
 
 def _workers(pid: int) -> list[int]:

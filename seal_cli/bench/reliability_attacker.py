@@ -25,12 +25,12 @@ from collections.abc import Iterator
 
 import numpy as np
 
-from seal_cli.bench.reliability import FRAME, Case, hostile_setting
+from seal_cli.bench.reliability import FRAME, FRAME_YAML, Case, hostile_setting
 
 __all__ = ["alfred2d_data", "attacker_cases", "chain_library", "hostile14_cases", "hostile15_cases", "hostile16_cases",
            "hostile17_cases", "hostile18_cases", "hostile19_cases", "hostile20_cases", "hostile21_cases",
-           "hostile22_cases", "hostile23_cases", "hostile24_cases", "hostile25_cases", "rgba_png", "sparse_pgm",
-           "split_house"]
+           "hostile22_cases", "hostile23_cases", "hostile24_cases", "hostile25_cases", "hostile26_cases", "rgba_png",
+           "sparse_pgm", "split_house"]
 
 DIGITS = "1" * 5_000
 """An integer longer than Python converts from text (4,300 digits)."""
@@ -293,6 +293,7 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield from hostile23_cases()
     yield from hostile24_cases()
     yield from hostile25_cases()
+    yield from hostile26_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -676,7 +677,7 @@ def hostile18_cases() -> Iterator[Case]:
     yield Case("A a billion laughs merged (<<: *l0 beside *l8)", ("validate", "m.yaml"),
                (("m.yaml", (SMALL_MAP + "l0: &l0 {a: 1, b: 2, c: 3, d: 4, e: 5, f: 6, g: 7, h: 8, i: 9}\n" + laughs
                             + "z: {<<: *l0, y: *l8}\n").encode()),), codes=(1,), keep=("m.yaml",),
-               says=r"m\.yaml: this file holds more than 1,000,000 values once its aliases")
+               says=r"m\.yaml(:\d+:\d+)?: this file holds more than 1,000,000 values once its aliases")
     # robot5: a detector reports every class it knows (a chair, a person); they are set aside with a warning
     yield Case("A observations whose second look sees a class nobody knows: set aside, said",
                ("localize", "--map", "apartment", "--particles", "20", "--observations", "o.yaml"),
@@ -1092,7 +1093,7 @@ def hostile24_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
     bomb = "name: m\nbounds: [0, 0, 10, 10]\nlaughs:\n" + "".join(f"  {line}\n" for line in laughs) + "rooms: *a9\n"
     yield Case("A run on a map of a billion laughs", ("run", "go to the hall", "--map", "m.yaml"),
                (("m.yaml", bomb.encode()),), codes=(1,), keep=("m.yaml",), timeout=30,
-               says=r"m\.yaml: this file holds more than 1,000,000 values once its aliases")
+               says=r"m\.yaml(:\d+:\d+)?: this file holds more than 1,000,000 values once its aliases")
     # -- outputs ---------------------------------------------------------------------------------------------------
     m, apartment, _, both, inputs, _, _ = hostile_setting()
     run = ("run", "go to the kitchen", "--map", "m.yaml", "--particles", "20")
@@ -1224,8 +1225,144 @@ def hostile25_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
                signal=(1, 0.0), signal_on=r"\.seal\d+-[0-9a-f]{8}\.tmp", whole=("o.png",),
                says=r"done: Go\(goal=sofa_1\)")
     # -- a run that ends not done ----------------------------------------------------------------------------------
-    yield Case("A run not done still draws its whole picture", ("run", "bring me the umbrella", "--map", "apartment",
+    yield Case("A run not done still draws its whole picture", ("run", "find the unicorn", "--map", "bungalow",
                                                                  "--particles", "20", "--png", "o.png", "--rrd",
-                                                                 "o.rrd"),
-               codes=(1,), whole=("o.png", "o.rrd"),
-               says=r"not done: no umbrella found[^\n]*\n[^\n]*o\.png[^\n]*o\.rrd")
+                                                                 "o.rrd"),    # a Find: a Bring of a thing the
+               codes=(1,), whole=("o.png", "o.rrd"),                           # house lacks is refused (e2e27)
+               says=r"not done: no unicorn found[^\n]*\n[^\n]*o\.png[^\n]*o\.rrd")
+
+
+def _laughs(anchor: str, depth: int = 9) -> str:
+    """``depth`` lines of a YAML "billion laughs" inside a sequence (``- &l0 [...]``, each line ten aliases of the
+    one before): 10**depth values once expanded, from about a kilobyte."""
+    lines = [f"  - &{anchor}0 [{', '.join(['lol'] * 10)}]\n"]
+    lines += [f"  - &{anchor}{i} [{', '.join([f'*{anchor}{i - 1}'] * 10)}]\n" for i in range(1, depth)]
+    return "".join(lines)
+
+
+def _many_places(count: int) -> bytes:
+    """A 100 m × 100 m map without an image holding ``count`` tables in one room (about 50 bytes a place)."""
+    places = "".join(f"  - {{name: t{i}, class: table, at: [{1 + i % 98}.5, {1 + i // 98 % 98}.5]}}\n"
+                     for i in range(count))
+    return f"name: m\nbounds: [0, 0, 100, 100]\nrooms:\n  - {{name: hall, box: [0, 0, 100, 100]}}\nplaces:\n{places}" \
+        .encode()
+
+
+def _many_rooms(side: int) -> bytes:
+    """A map without an image of ``side`` × ``side`` rooms of 1 m × 1 m side by side."""
+    rooms = "".join(f"  - {{name: r{x}_{y}, box: [{x}, {y}, {x + 1}, {y + 1}]}}\n"
+                    for x in range(side) for y in range(side))
+    return f"name: m\nbounds: [0, 0, {side}, {side}]\nrooms:\n{rooms}".encode()
+
+
+def hostile26_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read top to bottom
+    """Round hostile26: the corner shop's two of a kind ("put the milk back" with a milk in each fridge), "take it
+    back" / "bring it back" with nothing taken, things a map knows only by a prior, by a prior over a room it lacks,
+    or by a misspelt class; outputs whose folder vanishes while they are written, onto the map itself or one another,
+    named with spaces, a newline and emoji, through a link to the map, written by four runs at once; maps of 200,000
+    places and 40,000 rooms; YAML "billion laughs" in a map and a frame library, block nesting 20,000 deep; a frame
+    file with a line of 10 MB; ``--done`` texts of bytes that are not UTF-8 and of control characters."""
+    run = ("run", "go to the sofa", "--map", "studio", "--particles", "20")
+    shop = ("--map", "corner_shop")
+    # -- the corner shop: two of a kind ----------------------------------------------------------------------------
+    yield Case("A plan to put the milk back when each fridge holds one", ("plan", "put the milk back", *shop),
+               codes=(0,), says=r"\A(?![\s\S]*Pick)[\s\S]*in\(milk, fridge_\d\), hand_empty holds already")
+    yield Case("A plan to take the milk and put it back puts it where it was",
+               ("plan", "take the milk and put it back", *shop), codes=(0,),
+               says=r"Place +theme=milk, goal=(fridge_\d)[\s\S]*state: [^\n]*in\(milk, \1\)")
+    yield Case("A run to put back the milk it holds, two fridges", ("run", "put it back", *shop, "--holding", "milk",
+                                                                  "--particles", "20"),
+               codes=(0,), says=r"done: Place\(theme=milk, goal=fridge_\d\)")
+    yield Case("A plan to take it back with nothing taken", ("plan", "take it back", *shop), codes=(1,),
+               says=r"error: column 6: cannot tell what 'it' refers to")
+    yield Case("A plan to bring it back after --done naming a place", ("plan", "bring it back", *shop, "--done",
+                                                                       "go to the counter"),
+               codes=(1,), says=r"error: column 7: ")
+    yield Case("A run to take it back with nothing taken writes no picture",
+               ("run", "take it back", *shop, "--particles", "20", "--png", "o.png"), codes=(1,), absent=("o.png",),
+               says=r"error: column 6: cannot tell what 'it' refers to")
+    # -- things a map knows only by a prior, by a prior over no room, by a misspelt class --------------------------
+    base = "name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {name: kitchen, box: [0, 0, 10, 10]}\n" \
+           "places:\n  - {name: table_1, class: table, at: [5, 5]}\n"
+    prior_only = (base + "priors:\n  umbrella: {table: 0.9}\n").encode()
+    yield Case("A plan to bring a thing the map knows only by a prior", ("plan", "bring me the umbrella", "--map",
+                                                                         "m.yaml"),
+               (("m.yaml", prior_only),), codes=(0,), keep=("m.yaml",), says=r"Bring +theme=umbrella")
+    yield Case("A run to bring a thing the map knows only by a prior, not there",
+               ("run", "bring me the umbrella", "--map", "m.yaml", "--particles", "20"), (("m.yaml", prior_only),),
+               codes=(1,), keep=("m.yaml",), says=r"not done: no umbrella found")
+    no_room = (base + "priors:\n  mug: {garage: 0.9}\n").encode()
+    yield Case("A plan on a map whose prior names a room it lacks", ("plan", "bring me the mug", "--map", "m.yaml"),
+               (("m.yaml", no_room),), codes=(1,), keep=("m.yaml",),
+               says=r"m\.yaml:8:9: prior of mug names 'garage', which is no room")
+    yield Case("A run --png on a map whose prior names a room it lacks",
+               ("run", "find the mug", "--map", "m.yaml", "--particles", "20", "--png", "o.png"),
+               (("m.yaml", no_room),), codes=(1,), keep=("m.yaml",), absent=("o.png",), says=r"m\.yaml:8:9: ")
+    typo = (base + "objects:\n  - {class: mgu, at: [5, 5], in: table_1}\n").encode()
+    yield Case("A plan to bring a thing whose class the map misspells", ("plan", "bring me the mug", "--map", "m.yaml"),
+               (("m.yaml", typo),), codes=(1,), keep=("m.yaml",), says=r"error: column 10: [^\n]*\bmgu\b")
+    typo_prior = (base + "priors:\n  mgu: {table: 0.9}\n").encode()
+    yield Case("A run to find a thing whose prior the map misspells",
+               ("run", "find the mug", "--map", "m.yaml", "--particles", "20"), (("m.yaml", typo_prior),),
+               codes=(1,), keep=("m.yaml",), says=r"\bmgu\b")
+    # -- outputs ---------------------------------------------------------------------------------------------------
+    temporary = r"\.seal\d+-[0-9a-f]{8}\.tmp"
+    yield Case("A localize --rrd whose folder vanishes while it writes",
+               ("localize", "--map", "studio", "--steps", "20", "--particles", "200", "--rrd", "d/o.rrd"),
+               (("d", "dir"),), codes=(1,), vanish=("d", temporary), absent=("d/o.rrd",),
+               says=r"error: cannot write --rrd d/o\.rrd: [^\n]*(No such file or directory|folder)")
+    yield Case("A run --rrd whose folder vanishes while it writes", (*run, "--rrd", "d/o.rrd"), (("d", "dir"),),
+               codes=(1,), vanish=("d", temporary), absent=("d/o.rrd",),
+               says=r"error: cannot write --rrd d/o\.rrd: [^\n]*(No such file or directory|folder)")
+    yield Case("A run --png whose folder vanishes while it writes", (*run, "--png", "d/o.png"), (("d", "dir"),),
+               codes=(1,), vanish=("d", temporary), absent=("d/o.png",),
+               says=r"error: cannot write --png d/o\.png: [^\n]*(No such file or directory|folder)")
+    mine = (("m.yaml", _areas("  - {name: a, box: [0, 0, 10, 10]}\n")),)
+    mine_run = ("run", "go to a", "--map", "m.yaml", "--particles", "20")
+    yield Case("A run --png onto its map file", (*mine_run, "--png", "m.yaml"), mine, codes=(1,), keep=("m.yaml",),
+               says=r"--png m\.yaml")
+    yield Case("A run --png onto a link to its map", (*mine_run, "--png", "l.png"), (*mine, ("l.png", "link:m.yaml")),
+               codes=(1,), keep=("m.yaml",), says=r"--png l\.png would overwrite the input m\.yaml")
+    yield Case("A run --rrd onto its --png", (*mine_run, "--png", "o.png", "--rrd", "o.png"), mine, codes=(1,),
+               keep=("m.yaml",), absent=("o.png",), says=r"--rrd o\.png")
+    odd = "a b\nç😀.png"
+    yield Case("A run --png named with a space, a newline and emoji", (*run, "--png", odd), codes=(0,), whole=(odd,),
+               says=r"done: Go\(goal=sofa_1\)")
+    yield Case("A run --rrd with a newline in a wrong suffix", (*run, "--rrd", "x\ny.png"), codes=(1,),
+               absent=("x\ny.png",), says=r"--rrd [^\n]*x\\ny\.png")
+    yield Case("Four runs --png onto one file at once", (*run, "--png", "o.png"), codes=(0,), parallel=4,
+               whole=("o.png",), says=r"done: Go\(goal=sofa_1\)")
+    yield Case("Three localize --rrd onto one file at once", ("localize", "--map", "studio", "--steps", "3",
+                                                              "--particles", "20", "--rrd", "o.rrd"),
+               codes=(0,), parallel=3, whole=("o.rrd",), says=r"(?s).")
+    # -- sizes -----------------------------------------------------------------------------------------------------
+    yield Case("A run on a map of 200,000 places", ("run", "go to the hall", "--map", "m.yaml", "--particles", "20"),
+               (("m.yaml", _many_places(200_000)),), codes=(0, 1), keep=("m.yaml",), says=r"m\.yaml")
+    yield Case("A validate of a map of 40,000 rooms", ("validate", "m.yaml"), (("m.yaml", _many_rooms(200)),),
+               codes=(0, 1), keep=("m.yaml",), says=r"m\.yaml")
+    # -- YAML bombs and nesting ------------------------------------------------------------------------------------
+    yield Case("A run on a map whose rooms are a billion laughs", ("run", "go to a", "--map", "m.yaml"),
+               (("m.yaml", f"name: m\nbounds: [0, 0, 10, 10]\nrooms:\n{_laughs('r')}".encode()),), codes=(1,),
+               keep=("m.yaml",), says=r"m\.yaml:\d+:\d+: ")
+    library = FRAME_YAML.replace("  utensil: [spoon, fork]\n", "  utensil: [spoon, fork]\n  laughs:\n"
+                                 + _laughs("c").replace("  - ", "    - "))
+    yield Case("A plan on a frame library whose category is a billion laughs",
+               ("plan", "whisk the cup", "--framelib", "l.yaml"), (("l.yaml", library.encode()),), codes=(1,),
+               keep=("l.yaml",), says=r"l\.yaml:\d+:\d+: ")
+    yield Case("A validate of a map nested 20,000 deep in block sequences", ("validate", "m.yaml"),
+               (("m.yaml", b"name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  " + b"- " * 20_000 + b"a\n"),), codes=(1,),
+               keep=("m.yaml",), says=r"m\.yaml:\d+:\d+: ")
+    yield Case("A plan on a frame file after a comment of 10 MB", ("plan", "whisk the cup", "--framelib", "f.frame"),
+               (("f.frame", b"// " + b"x" * 10_000_000 + b"\n" + FRAME.replace("do navigate", "do do navigate")
+                 .encode()),), codes=(1,), keep=("f.frame",), says=r"f\.frame:\d+:\d+: ")
+    yield Case("A plan on a frame file with a category of 10 MB on one line",
+               ("plan", "whisk the cup", "--framelib", "f.frame"),
+               (("f.frame", FRAME.encode() + b"category many = " + ", ".join(f"m{i}" for i in range(1_100_000))
+                 .encode() + b"\n"),), codes=(0, 1), keep=("f.frame",), says=r"f\.frame")
+    # -- --done texts that are not text ----------------------------------------------------------------------------
+    yield Case("A plan with a --done of bytes that are not UTF-8", ("plan", "go to the sofa", "--map", "studio",
+                                                                    "--done", "\udcff\udcfe\udc80 the cup"),
+               codes=(1,), says=r"--done")
+    yield Case("A localize with a --done of control characters", ("localize", "--map", "studio", "--steps", "3",
+                                                                  "--particles", "20", "--done", "\x01\x02\x7f\x1b[2J"),
+               codes=(1,), says=r"--done")

@@ -66,6 +66,10 @@ OVERLAP_TOLERANCE = 0.01
 MAX_IMPLICIT_CELLS = MAX_GRID_CELLS
 """Largest implicit all-free grid built from bounds alone (its resolution grows to fit): the bound of every map's
 grid (4,000,000 before hostile14: a run on it took 2.3 GB)."""
+MAX_LISTED = 10_000
+"""The most rooms, places, objects or people a map may list (a real building has tens to hundreds): checking a map
+grows with them, and 40,000 rooms of 1 m² took over a minute to validate, 100,000 places two minutes to run
+(hostile26); a longer list is refused at its first item past the bound."""
 MAX_ROOM_VERTICES = 10_000
 """The most points a room's polygon may have (real outlines have tens): a map's checks and each cell's room
 grow with them (a room of 62,831 points took 15 GB before the edges' crossing test swept by x)."""
@@ -537,6 +541,18 @@ class Map:
     def kinds(self) -> list[str]:
         """The kinds of thing the map knows of, by class key, sorted: its priors' classes and its objects'."""
         return sorted({class_key(c) for c in (*self.priors, *(o.cls for o in self.objects))})
+
+    def spelt_like(self, cls: str, kinds: Iterable[str] = ()) -> str:
+        """``; the map names a mgu, spelt like it (a typo in the map?)`` when a kind of thing the map knows of
+        (:meth:`kinds`, and ``kinds``) is spelt like ``cls``, which it does not know; else nothing. A refusal of a
+        thing the map lacks then says what the user can fix: the map's ``{class: mgu}`` (hostile26: "the m knows no
+        mug" said nothing of it)."""
+        import difflib
+
+        key = class_key(cls)
+        known = sorted({*self.kinds(), *(class_key(k) for k in kinds)} - {key})
+        close = difflib.get_close_matches(key, known, n=1, cutoff=0.6)
+        return f"; the map names a {close[0].replace('_', ' ')}, spelt like it (a typo in the map?)" if close else ""
 
     def unholdable(self, name: str) -> str | None:
         """Why the robot cannot hold a thing of this name on this map, or None: it names a room, a place,

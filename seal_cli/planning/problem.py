@@ -1109,6 +1109,7 @@ def _fetched_unheard_of(frame: Frame, evoked: Evoked, values: Mapping[str, tuple
         kin = taxonomy.kin(cls)
         alike = sorted(k for k in things.kinds if kin is not None and k in kin[1])
         has = f"; of its kind ({kin[0]}) it has: {', '.join(_words(k) for k in alike)}" if kin and alike else ""
+        has += m.spelt_like(cls, things.kinds)
         raise _located(f"the {m.said} knows no {_words(cls)} (no prior, object or place of one), so the "
                        f"robot would not find one to {' '.join(words_of(evoked.lexical_unit))}{has}; say something "
                        "the house has", phrase, text)
@@ -1498,10 +1499,27 @@ def the_ones_not_there(commanded: Sequence[Binding], things: Things) -> None:
         like_goal = sum(1 for p in m.places if class_key(p.cls) == things.class_of(goal))
         if not another_meant(binding, theme, cls, held=key, places_like_goal=like_goal, several=several):
             continue
+        kept = binding in things.put_away       # its goal: where it is kept, read off where it lies
         other = next((n for n, c in things.classes.items() if c == cls and n != theme and n not in used
-                      and n not in things.fixed and n in things.points and not things.lies_in(n, goal)), None)
+                      and n not in things.fixed and n in things.points and not things.lies_in(n, goal)
+                      and not (kept and _kept_already(n, things))), None)
         if other is not None:
             things.swap(theme, other)
+
+
+def _kept_already(name: str, things: Things) -> bool:
+    """Whether a thing lies where such a thing is kept (:func:`seal_cli.planning.keeping.kept_place` of where it
+    lies is that place): put away or back already. "Put the milk back", a milk in each of the corner shop's fridges,
+    asks for neither: the shop's milk is back already, and putting the kitchen's into the shop's fridge was no
+    reading of it (hostile26; the run said "needs no doing")."""
+    from seal_cli.planning.keeping import kept_place, spots_of
+
+    lies = _lies_on(name, things)
+    m = things.map
+    if lies is None or m is None:
+        return False
+    spot = kept_place(things.taxonomy, m.priors, things.classes[name], spots_of(m), lies=lies, near=m.robot.xy)
+    return spot is not None and spot.name == lies
 
 
 def the_nearest_ones(commanded: Sequence[Binding], things: Things) -> None:
@@ -1534,7 +1552,7 @@ def the_nearest_ones(commanded: Sequence[Binding], things: Things) -> None:
                  if c == cls and n not in things.fixed and (n == theme or n not in used)}
         places = {p for p in lying.values() if p is not None}
         if len(lying) < 2 or None in lying.values() or len({things.class_of(p) for p in places}) != 1 \
-                or len(places) < 2:
+                or len(places) < 2 or _put_where_it_lies(theme, lying[theme], commanded[index:]):
             continue
         start = _robot_at(binding.frame, "source", {}, commanded[:index], things)
         order = sorted(places)
@@ -1542,6 +1560,14 @@ def the_nearest_ones(commanded: Sequence[Binding], things: Things) -> None:
         best = min(lying, key=lambda n: (lengths[lying[n] or ""], n != theme))
         if best != theme and lengths[lying[best] or ""] < lengths[lying[theme] or ""]:
             things.swap(theme, best)
+
+
+def _put_where_it_lies(theme: str, lies: str | None, commanded: Sequence[Binding]) -> bool:
+    """Whether a frame of the command puts ``theme`` where it lies: its goal was read off where that one lies (put
+    back, put away where it is kept already: "put the milk back", "take the milk and put it back"), so that one is
+    the thing meant. Trading its name for a nearer one's moved the other thing there (hostile26: on the corner shop,
+    a milk in each fridge, "put the milk back" took the kitchen's milk and put it in the shop's fridge)."""
+    return any(b.elements.get("theme") == theme and b.elements.get("goal") == lies for b in commanded)
 
 
 def _lies_on(name: str, things: Things) -> str | None:
@@ -1611,14 +1637,18 @@ def problem_of_text(text: str, library: Library, *, holding: str | None = None, 
 def naming_done(done: Sequence[str], text: str) -> Iterator[None]:
     """Say which ``--done`` command a refusal is about: a SealError located in one of them (not in the
     command itself) gets ``in --done '...':`` before its message, so "column 7" points into that one."""
+    from seal_cli.language.tokens import printable
     from seal_cli.planning.grounding import spoken
+
+    def said(command: str, line: str) -> bool:    # as parsed, or as shown (control characters as spaces: hostile26)
+        return any(form.startswith(line) for form in (spoken(command), printable(spoken(command)), command))
 
     try:
         yield
     except SealError as exc:
         line = exc.source_line      # the text, or its start (a command too long is shown cut)
-        which = None if line is None or spoken(text).startswith(line) else \
-            next((t for t in done if spoken(t).startswith(line)), None)
+        which = None if line is None or said(text, line) or exc.message.startswith("in --done ") else \
+            next((t for t in done if said(t, line)), None)
         if which is None:
             raise
         shown = which if len(which) <= 60 else which[:57] + "..."

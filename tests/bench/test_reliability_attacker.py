@@ -22,6 +22,7 @@ from seal_cli.bench.reliability_attacker import (
     hostile23_cases,
     hostile24_cases,
     hostile25_cases,
+    hostile26_cases,
     sparse_pgm,
 )
 from seal_cli.bench.reliability_outsider import outsider_cases
@@ -305,3 +306,27 @@ def test_the_hostile25_cases_are_named_once_and_say_what_they_must() -> None:
     assert len({c.name for c in found}) == len(found) >= 33
     assert all(c.says for c in found if c.codes in ((0,), (1,)))
     assert any(c.ignored for c in found) and any(c.cwd for c in found)
+
+
+@pytest.mark.parametrize("name", ["A plan to put the milk back when each fridge holds one",
+                                  "A run --rrd whose folder vanishes while it writes",
+                                  "A run on a map whose rooms are a billion laughs",
+                                  "A plan on a frame file with a category of 10 MB on one line",
+                                  "A localize with a --done of control characters",
+                                  "A run --rrd with a newline in a wrong suffix"])
+def test_picked_hostile26_cases_end_cleanly(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Each failed before this round: the corner shop's milk moved from one fridge to the other, a vanished folder
+    was said of a temporary's name, a billion laughs was said of the file alone, a 10 MB category line ran past a
+    minute, a --done of control characters was not named, a file name's newline broke the message. This tree's
+    code."""
+    monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
+    outcome = run_case(next(c for c in hostile26_cases() if c.name == name))
+    assert outcome.problems == []
+
+
+def test_the_hostile26_cases_are_named_once_and_say_what_they_must() -> None:
+    found = list(hostile26_cases())
+    assert len({c.name for c in found}) == len(found) >= 31
+    assert all(c.says for c in found if c.codes in ((0,), (1,)))
+    assert sum(bool(c.vanish) for c in found) == 3 and any(c.parallel > 1 for c in found)
+    assert {c.name for c in found} <= {c.name for c in attacker_cases()}

@@ -737,3 +737,13 @@ def test_rooms_at_names_every_area_that_holds_a_point() -> None:
                                                     Room("east", ((4, 0), (10, 0), (10, 10), (4, 10)))))
     assert m.rooms_at((5, 5)) == ("west", "east") and m.room_of([(5, 5)]) == ["west"]
     assert m.rooms_at((8, 5)) == ("east",) and m.rooms_at((11, 5)) == ()
+
+
+def test_a_kind_the_map_spells_like_an_unknown_one_is_named() -> None:
+    """What a refusal of a thing the map lacks adds when the map names a kind spelt like it (hostile26: a map's
+    ``{class: mgu}``, and "bring me the mug" refused without a word of it)."""
+    m = Map("m", (0.0, 0.0, 10.0, 10.0), priors={"mgu": {"kitchen": 1.0}},
+            rooms=(Room.box("kitchen", 0, 0, 10, 10),))
+    assert m.spelt_like("mug") == "; the map names a mgu, spelt like it (a typo in the map?)"
+    assert m.spelt_like("mgu") == "" and m.spelt_like("sofa") == ""
+    assert "coffee table" in m.spelt_like("coffee_tabel", ["coffee_table"])

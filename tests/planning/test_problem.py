@@ -702,3 +702,66 @@ def test_a_thing_the_map_knows_nothing_of_is_still_sought_when_found_or_said_whe
         "Place(theme=hammer, goal=desk_1)"]                                       # what it holds is no search
     assert _steps("bring me the receipt", library, "corner_shop") == [           # a prior, no object: sought
         "Pick(theme=receipt)", "Bring(theme=receipt, recipient=me)"]
+
+
+TWO_FRIDGES = """name: shop
+bounds: [0, 0, 12, 6]
+rooms:
+  - {name: front, box: [0, 0, 6, 6]}
+  - {name: back, box: [6, 0, 12, 6]}
+places:
+  - {name: fridge_1, class: fridge, at: [1, 5], openable: true}
+  - {name: fridge_2, class: fridge, at: [11, 5], openable: true}
+  - {name: shelf_1, class: shelf, at: [3, 1]}
+priors:
+  juice: {fridge: 0.9}
+objects:
+  - {class: juice, in: fridge_1}
+  - {class: juice, in: fridge_2}
+robot: {pose: [10, 1, 0]}
+"""
+
+
+@pytest.mark.parametrize("text", ["put the juice back", "put the juice away"])
+def test_a_thing_kept_already_where_each_of_its_kind_is_kept_needs_no_doing(text: str, library: Library,
+                                                                           tmp_path: Path) -> None:
+    """A juice in each of two fridges, where juice is kept: "put the juice back" asks for nothing, as the run says
+    (hostile26: the plan took the nearer fridge's juice and put it in the other fridge)."""
+    from seal_cli.maps.formats.map_server import load_map
+
+    (tmp_path / "shop.yaml").write_text(TWO_FRIDGES)
+    problem = problem_of_text(text, library, map=load_map(tmp_path / "shop.yaml"))
+    [place] = problem.commanded
+    assert f"in(juice, {place.elements['goal']})" in {str(f) for f in problem.state.facts}
+
+
+def test_a_thing_taken_and_put_back_goes_where_that_one_lay(library: Library, tmp_path: Path) -> None:
+    """"Take the juice and put it back": back into the fridge the juice taken lay in, whichever that is (hostile26:
+    the juice nearer the robot was taken, and put into the other fridge)."""
+    from seal_cli.maps.formats.map_server import load_map
+
+    (tmp_path / "shop.yaml").write_text(TWO_FRIDGES)
+    problem = problem_of_text("take the juice and put it back", library, map=load_map(tmp_path / "shop.yaml"))
+    place = next(b for b in problem.commanded if b.frame.name == "Place")
+    assert f"in({place.elements['theme']}, {place.elements['goal']})" in {str(f) for f in problem.state.facts}
+
+
+def test_a_thing_the_map_misspells_is_named_in_the_refusal(library: Library, tmp_path: Path) -> None:
+    """A map listing ``{class: jucie}``: "bring me the juice" is refused, naming the map's word (hostile26)."""
+    from seal_cli.errors import SealError
+    from seal_cli.maps.formats.map_server import load_map
+
+    (tmp_path / "shop.yaml").write_text(TWO_FRIDGES.replace("juice", "jucie"))
+    with pytest.raises(SealError, match=r"knows no juice .*the map names a jucie, spelt like it"):
+        problem_of_text("bring me the juice", library, map=load_map(tmp_path / "shop.yaml"))
+
+
+@pytest.mark.parametrize(("done", "said"), [("\x01 go to the shelf", r"in --done '\\x01 go to the shelf': control"),
+                                            ("\udcff go", r"in --done '\\udcff go': byte 0xff is not UTF-8")])
+def test_a_done_command_that_is_no_text_is_named(done: str, said: str, library: Library) -> None:
+    """A ``--done`` of a control character or of a byte that is not UTF-8 names that option (hostile26: "column 1:
+    control character U+0001 in the command", as if the command were at fault)."""
+    from seal_cli.errors import SealError
+
+    with pytest.raises(SealError, match=said):
+        problem_of_text("stir the cup", library, done=[done])

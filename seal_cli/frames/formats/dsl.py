@@ -248,6 +248,10 @@ def read(text: str, file: str = "<frame>") -> Contents:
     drawn under another line than the one named)."""
     text = text.replace("\r\n", "\n").replace("\r", "\n")
     builder = _Builder(text, file)
+    past = _past_bound(text, file, builder.lines)
+    if past is not None:
+        builder.contents.problems.append(past)
+        return builder.contents
     try:
         tree = parser().parse(text)
     except UnexpectedInput:
@@ -262,6 +266,30 @@ def read(text: str, file: str = "<frame>") -> Contents:
         return builder.contents
     builder.build(tree)
     return builder.contents
+
+
+MAX_WORDS = 150_000
+"""The most names and quoted units a ``.frame`` file may hold (the shipped library has about 10,000): parsing grows
+with them, and a category of 1,100,000 members on one line of 10 MB ran past a minute (hostile26); a file holding
+more is refused at the first word past the bound, before it is parsed."""
+
+_WORD = re.compile(r'//[^\n]*|"(?:[^"\\\n]|\\.)*"|[^\W\d]\w*')
+
+
+def _past_bound(text: str, file: str, lines: list[str]) -> SealError | None:
+    """The refusal of a file of more than :data:`MAX_WORDS` words (comments not counted), at the first past it."""
+    count = 0
+    for found in _WORD.finditer(text):
+        if found.group().startswith("//"):
+            continue
+        count += 1
+        if count > MAX_WORDS:
+            line = text.count("\n", 0, found.start()) + 1
+            column = found.start() - (text.rfind("\n", 0, found.start()) + 1) + 1
+            return SealError(f"this frame file holds more than {MAX_WORDS:,} names and units; seal reads at most "
+                             "that many (split it into several files)", Where(file, line, column),
+                             source_line=lines[line - 1])
+    return None
 
 
 _STATEMENT = re.compile(r"[ \t]*(frame|category|world|synonyms)[ \t]+[^:=\s]")

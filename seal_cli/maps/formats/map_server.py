@@ -60,7 +60,7 @@ from seal_cli.maps.geometry import (
     fit_cells,
     shrink_factor,
 )
-from seal_cli.maps.model import Map, MapWarning, ObjectTruth, Person, Place, Robot, Room, Sensor
+from seal_cli.maps.model import MAX_LISTED, Map, MapWarning, ObjectTruth, Person, Place, Robot, Room, Sensor
 from seal_cli.names import check_name_length, check_sayable
 from seal_cli.resources import map_path
 from seal_cli.yamlnodes import NodeReader
@@ -507,7 +507,7 @@ class _Reader(NodeReader):
 
     def rooms(self, node: yaml.Node) -> tuple[Room, ...]:
         rooms, kept = [], []
-        for i, item in enumerate(self.items(node, "rooms")):
+        for i, item in enumerate(self.listed(node, "rooms")):
             self.positions[("rooms", i)] = self.where(item)
             fields = {key: value for key, _, value in self.pairs_at(item, "a room", ("rooms", i), ROOM_KEYS)}
             if not isinstance(item, yaml.MappingNode):
@@ -556,9 +556,19 @@ class _Reader(NodeReader):
             return None
         return self.build(lambda: Room(name, tuple(points), where), node)  # type: ignore[arg-type]
 
+    def listed(self, node: yaml.Node, what: str) -> list[yaml.Node]:
+        """The items of the map's list ``what`` (rooms, places, ...), at most :data:`MAX_LISTED`: a longer list is a
+        problem at its first item past the bound, and only those before it are read (hostile26)."""
+        items = self.items(node, what)
+        if len(items) > MAX_LISTED:
+            self.problem(f"this map lists more than {MAX_LISTED:,} {what}; seal reads at most that many (a building "
+                         f"has tens or hundreds): split the map, or merge {what} of one kind", items[MAX_LISTED])
+            return items[:MAX_LISTED]
+        return items
+
     def places(self, node: yaml.Node) -> tuple[Place, ...]:
         places, kept = [], []
-        for i, item in enumerate(self.items(node, "places")):
+        for i, item in enumerate(self.listed(node, "places")):
             self.positions[("places", i)] = self.where(item)
             fields = {key: value for key, _, value in self.pairs_at(item, "a place", ("places", i), PLACE_KEYS)}
             if not isinstance(item, yaml.MappingNode):
@@ -616,7 +626,7 @@ class _Reader(NodeReader):
     def objects(self, node: yaml.Node, places: tuple[Place, ...]) -> tuple[ObjectTruth, ...]:
         by_name = {class_key(p.name): p for p in places}
         objects, kept = [], []
-        for i, item in enumerate(self.items(node, "objects")):
+        for i, item in enumerate(self.listed(node, "objects")):
             self.positions[("objects", i)] = self.where(item)
             fields = {key: value for key, _, value in self.pairs_at(item, "an object", ("objects", i), OBJECT_KEYS)}
             if not isinstance(item, yaml.MappingNode):
@@ -655,7 +665,7 @@ class _Reader(NodeReader):
 
     def people(self, node: yaml.Node) -> tuple[Person, ...]:
         people, kept = [], []
-        for i, item in enumerate(self.items(node, "people")):
+        for i, item in enumerate(self.listed(node, "people")):
             self.positions[("people", i)] = self.where(item)
             fields = {key: value for key, _, value in self.pairs_at(item, "a person", ("people", i), PERSON_KEYS)}
             if not isinstance(item, yaml.MappingNode):

@@ -38,8 +38,8 @@ import numpy as np
 from seal_cli.maps.geometry import FREE, OCCUPIED, OccupancyGrid
 from seal_cli.maps.model import Map
 
-__all__ = ["DRAW", "Classes", "batching", "blueprint", "flush", "log_grid_image", "log_map", "png", "save",
-           "send_series", "series_colour"]
+__all__ = ["DRAW", "Classes", "batching", "blueprint", "cause", "failure", "flush", "log_grid_image", "log_map", "png",
+           "save", "send_series", "series_colour"]
 
 DRAW = {"occupancy": -10.0, "density": -5.0, "rooms": 1.0, "places": 2.0, "objects": 3.0, "frames": 4.0,
         "modes": 6.0, "observations": 7.0, "robot": 8.0}
@@ -84,30 +84,44 @@ def _quiet_stderr() -> Iterator[None]:
 @contextmanager
 def writing(path: str | Path, stream: Any = None) -> Iterator[None]:
     """Rerun's failures to write a recording (a full disk, a file system that refuses) as the ``OSError`` of
-    ``path`` every other writer raises: rerun raises ``RuntimeError("Failed to encode LogMsg: Failed to write: No
-    space left on device (os error 28)")`` when it logs, or, from the flush after its writer thread died,
-    "File-writer thread shut down prematurely" — both were tracebacks of ``--rrd`` on a full disk. The second names
-    no reason: a disk with no space left under ``path`` is said as "No space left on device" (hostile25: it was
-    "rerun's writer stopped", on a full tmpfs). ``stream``, the recording written, is then let go quietly: its
-    sink's failure was printed again, after seal's own message, when the process ended."""
-    import errno
-    import re
-
+    ``path`` every other writer raises (:func:`failure`): both rerun's "Failed to encode LogMsg: Failed to write: No
+    space left on device (os error 28)" when it logs and its "File-writer thread shut down prematurely" from the
+    flush after its writer died were tracebacks of ``--rrd`` on a full disk. ``stream``, the recording written, is
+    then let go quietly: its sink's failure was printed again, after seal's own message, when the process ended."""
     try:
         yield
     except RuntimeError as exc:
-        text = str(exc)
-        code = re.search(r"\(os error (\d+)\)", text)
-        number = int(code.group(1)) if code is not None else _full(path)
-        if stream is not None and (number or "File-writer thread" in text or "Failed to write" in text):
+        error = failure(str(exc), path)
+        if error is None:
+            raise
+        if stream is not None:
             with _quiet_stderr(), contextlib.suppress(Exception):
                 stream.disconnect()
-        if number:
-            raise OSError(number, os.strerror(number), str(path)) from None
-        if "File-writer thread" in text or "Failed to write" in text:
-            raise OSError(errno.EIO, "rerun's writer stopped before the recording was whole (rerun said why "
-                          "above)", str(path)) from None
-        raise
+        raise error from None
+
+
+WRITER_GONE = ("File-writer thread", "Failed to write", "(os error")
+"""What rerun says when it could not write a recording: its writer thread died (a full disk), a write failed, an
+error of the system with its number."""
+
+
+def failure(text: str, path: str | Path) -> OSError | None:
+    """The one reading of rerun's error ``text`` as the ``OSError`` of the recording ``path`` (None: not a failure to
+    write). The system's number when rerun gives one (``(os error 28)``); else the cause found at ``path``
+    (:func:`cause`: a full disk, ``ulimit -f``, a folder gone, one not writable), since "File-writer thread shut down
+    prematurely" names none (hostile25: it was "rerun's writer stopped" on a full tmpfs); else the writer stopped,
+    as rerun said above."""
+    import errno
+    import re
+
+    if not any(said in text for said in WRITER_GONE):
+        return None
+    code = re.search(r"\(os error (\d+)\)", text)
+    number = int(code.group(1)) if code is not None else cause(path)
+    if number:
+        return OSError(number, os.strerror(number), str(path))
+    return OSError(errno.EIO, "rerun's writer stopped before the recording was whole (rerun said why above)",
+                   str(path))
 
 
 FLUSH_ROUND = 1.0
@@ -132,10 +146,9 @@ def flush(stream: Any, path: str | Path) -> None:
             stream.flush(timeout_sec=FLUSH_ROUND)
             return
         except RuntimeError as exc:
-            text = str(exc)
-            if "File-writer thread" in text or "Failed to write" in text or "(os error" in text:
+            if failure(str(exc), path) is not None:
                 raise
-        number = _full(path)
+        number = cause(path)
         if number:
             raise OSError(number, os.strerror(number), str(path))
         try:
@@ -148,19 +161,26 @@ def flush(stream: Any, path: str | Path) -> None:
             raise OSError(errno.EIO, f"rerun's writer made no progress for {FLUSH_STALL:g} s", str(path))
 
 
-def _full(path: str | Path) -> int:
-    """``ENOSPC`` when the file system ``path`` is on has no space left for this process, ``EFBIG`` when ``path`` has
-    grown to the largest file this process may write (``ulimit -f``), else 0."""
+def cause(path: str | Path) -> int:
+    """Why a recording could not be written to ``path``, read off the file system, as an ``errno`` (0: none
+    found): ``ENOSPC`` when the file system has no space left for this process, ``EFBIG`` when ``path`` has grown to
+    the largest file this process may write (``ulimit -f``), ``ENOENT`` when its folder is gone (removed while the
+    command ran), ``EACCES`` when the folder no longer takes a file."""
     import errno
     import resource
 
+    folder = os.path.dirname(os.path.abspath(path))
+    if not os.path.isdir(folder):
+        return errno.ENOENT
     try:
-        if os.statvfs(os.path.dirname(os.path.abspath(path))).f_bavail == 0:
+        if os.statvfs(folder).f_bavail == 0:
             return errno.ENOSPC
         limit = resource.getrlimit(resource.RLIMIT_FSIZE)[0]
-        return errno.EFBIG if limit != resource.RLIM_INFINITY and os.path.getsize(path) >= limit else 0
+        if limit != resource.RLIM_INFINITY and os.path.exists(path) and os.path.getsize(path) >= limit:
+            return errno.EFBIG
     except OSError:
         return 0
+    return 0 if os.access(folder, os.W_OK) else errno.EACCES
 
 
 def save(stream: Any, path: str | Path) -> None:

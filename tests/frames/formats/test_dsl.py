@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import pytest
+
 from seal_cli.frames.formats import dsl
 from seal_cli.frames.formats.dsl import dump, read
 from seal_cli.frames.reading import standard_library
@@ -64,3 +66,13 @@ def test_dump_reads_back_to_the_same_frames() -> None:
     again = read(text, "dumped.frame")
     assert again.problems == [] and tuple(again.frames) == library.frames
     assert dsl.parser() is dsl.parser()                         # built once per process
+
+
+def test_a_file_of_more_words_than_the_bound_is_refused_before_it_is_parsed(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A category of a million members on a line of 10 MB took minutes to parse (hostile26): past
+    :data:`dsl.MAX_WORDS` names and units (comments not counted) the file is refused at the first word past it."""
+    monkeypatch.setattr(dsl, "MAX_WORDS", 5)
+    found = read("// one two three four five six\ncategory c = a, b, d, e\n", "w.frame")
+    [problem] = found.problems
+    assert (problem.where.line, problem.where.column) == (2, 23) and "more than 5 names" in problem.message
+    assert read("category c = a, b\n", "w.frame").problems == []

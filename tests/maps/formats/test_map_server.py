@@ -308,3 +308,15 @@ def test_a_name_spelt_decomposed_by_a_yaml_escape_is_read_composed(tmp_path: Pat
     m = load_map(tmp_path / "m.yaml")
     assert [r.name for r in m.rooms] == ["caf\u00e9"]
     assert [p.name for p in m.places] == ["p\u00e9tanque_1"] and [p.name for p in m.people] == ["Zo\u00eb"]
+
+
+def test_a_map_listing_more_than_the_bound_is_refused_at_the_first_past_it(tmp_path: Path,
+                                                                           monkeypatch: pytest.MonkeyPatch) -> None:
+    """40,000 rooms took over a minute to validate, 100,000 places two minutes to run (hostile26): a list of rooms,
+    places, objects or people longer than :data:`MAX_LISTED` is refused at its first item past the bound."""
+    import seal_cli.maps.formats.map_server as server
+
+    monkeypatch.setattr(server, "MAX_LISTED", 2)
+    rooms = "".join(f"  - {{name: r{i}, box: [{i}, 0, {i + 1}, 1]}}\n" for i in range(3))
+    assert (6, "this map lists more than 2 rooms") in [(line, message[:32]) for line, message in
+                                                        _problems(tmp_path, f"rooms:\n{rooms}")]

@@ -279,10 +279,53 @@ def test_a_writer_stopped_on_a_full_disk_is_said_as_a_full_disk(monkeypatch: pyt
             self.gone = True
 
     stream = Stream()
-    monkeypatch.setattr(scene, "_full", lambda path: errno.ENOSPC)
+    monkeypatch.setattr(scene, "cause", lambda path: errno.ENOSPC)
     with pytest.raises(OSError, match="No space left on device") as caught, scene.writing("r.rrd", stream):
         raise RuntimeError("File-writer thread shut down prematurely")
     assert caught.value.filename == "r.rrd" and stream.gone
+
+
+@pytest.mark.parametrize(("raised", "number"), [
+    ("Failed to encode LogMsg: Failed to write: No space left on device (os error 28)", 28),
+    ("Failed to create file: Permission denied (os error 13)", 13),
+    ("Failed to write: No such file or directory (os error 2)", 2)])
+def test_rerun_saying_the_system_error_is_that_error_of_the_recording(raised: str, number: int) -> None:
+    """One reading of rerun's words (:func:`failure`) for the log, the flush and the writer: the system's number
+    rerun gives is the ``OSError``'s, said of the recording asked for."""
+    import os
+
+    from seal_cli.sefm.observers.rerun_scene import failure
+
+    error = failure(raised, "d/r.rrd")
+    assert error is not None and (error.errno, error.strerror, error.filename) == (number, os.strerror(number),
+                                                                                     "d/r.rrd")
+    assert failure("flush timed out", "d/r.rrd") is None          # not a failure to write: rerun's own words stand
+
+
+def test_a_writer_stopped_without_a_reason_is_said_by_what_the_file_system_shows(tmp_path: Path,
+                                                                                 monkeypatch: pytest.MonkeyPatch
+                                                                                 ) -> None:
+    """"File-writer thread shut down prematurely" names no reason: it is read off the recording's folder, a full disk
+    (no blocks left), a folder removed while the command ran (hostile26: ``--rrd d/o.rrd``, ``d`` deleted), a
+    folder that no longer takes a file; else the writer stopped."""
+    import errno
+    import os
+    from types import SimpleNamespace
+
+    import seal_cli.sefm.observers.rerun_scene as scene
+
+    stopped = "File-writer thread shut down prematurely"
+    gone = tmp_path / "gone" / "r.rrd"
+    assert scene.failure(stopped, gone).errno == errno.ENOENT                         # type: ignore[union-attr]
+    shut = tmp_path / "shut"
+    shut.mkdir()
+    monkeypatch.setattr(os, "access", lambda path, mode: str(path) != str(shut))
+    assert scene.failure(stopped, shut / "r.rrd").strerror == "Permission denied"     # type: ignore[union-attr]
+    assert "rerun's writer stopped" in str(scene.failure(stopped, tmp_path / "r.rrd"))
+    real = os.statvfs
+    monkeypatch.setattr(os, "statvfs", lambda path: SimpleNamespace(f_bavail=0) if str(path) == str(tmp_path)
+                        else real(path))
+    assert scene.failure(stopped, tmp_path / "r.rrd").errno == errno.ENOSPC             # type: ignore[union-attr]
 
 
 class _Slow:
@@ -314,6 +357,6 @@ def test_a_flush_waits_in_rounds_and_gives_up_on_a_writer_that_stopped(tmp_path:
     monkeypatch.setattr(scene, "FLUSH_STALL", 0.05)
     with pytest.raises(OSError, match="made no progress for 0.05 s"):
         scene.flush(_Slow(10**9), path)
-    monkeypatch.setattr(scene, "_full", lambda _: errno.ENOSPC)
+    monkeypatch.setattr(scene, "cause", lambda _: errno.ENOSPC)
     with pytest.raises(OSError, match="No space left on device"):
         scene.flush(_Slow(10**9), path)
