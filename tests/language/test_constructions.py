@@ -3061,3 +3061,46 @@ def test_verbs_from_wordnet_units_of_words32(text: str, want: list[tuple[str, di
                                              library: Library) -> None:
     """Units the WordNet data gives since words32 (framelib/wordnet_units.yaml): rule 1's tie, rule 14."""
     assert_reads(text, want, library)
+
+
+# words35: what crowd workers wrap a command in, passives of things, a wish said as "what I need is"
+@pytest.mark.parametrize(("text", "want"), [
+    ("so what I need is for you to open the shed", [("Open", {"theme": "shed"})]),
+    ("what you have to do is open the shed", [("Open", {"theme": "shed"})]),
+    ("alright, close the gate", [("Close", {"theme": "gate"})]),
+    ("listen up robot, close the gate", [("Close", {"theme": "gate"})]),
+    ("first things first: open the shed", [("Open", {"theme": "shed"})]),
+    ("can you manage to open the gate?", [("Open", {"theme": "gate"})]),
+    ("are you capable of closing the hatch", [("Close", {"theme": "hatch"})]),
+    ("do you think you're able to find my scarf?", [("Find", {"theme": "scarf"})]),
+    ("you're going to close the hatch", [("Close", {"theme": "hatch"})]),
+    ("ya gotta close the hatch", [("Close", {"theme": "hatch"})]),
+    ("gimme the ladle", [("Give", {"theme": "ladle", "recipient": "me"})]),
+    ("cud u open the hatch", [("Open", {"theme": "hatch"})]),
+    ("1) open the shed 2) find the rake", [("Open", {"theme": "shed"}), ("Find", {"theme": "rake"})]),
+    ("Step 1: open the shed. Step 2: find the rake", [("Open", {"theme": "shed"}), ("Find", {"theme": "rake"})]),
+    ("first - open the hatch; second - close it", [("Open", {"theme": "hatch"}), ("Close", {"theme": "hatch"})]),
+])
+def test_a_command_wrapped_as_people_say_it(text: str, want: list[tuple[str, dict[str, str]]],
+                                            library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("the rake should be taken to the shed", [("Bring", {"theme": "rake", "goal": "shed"})]),
+    ("the ladle needs to be placed in the drawer", [("Place", {"theme": "ladle", "goal": "drawer"})]),
+    ("the letters must be brought to Priya", [("Bring", {"theme": "letter", "recipient": "Priya"})]),
+])
+def test_a_thing_said_to_need_a_verb_done_to_it_is_that_verb(text: str, want: list[tuple[str, dict[str, str]]],
+                                                             library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("what I want is the towels taken to the bathroom", [("Bring", {"theme": "towel", "goal": "bathroom"})]),
+    ("what we need is the jars on the pantry shelf counted", [("Count", {"theme": "jar", "ground": "shelf"})]),
+    ("what I'd like is the blue scarf", [("Bring", {"theme": "scarf", "recipient": "me"})]),
+])
+def test_a_wish_said_as_what_i_need_is_is_no_question(text: str, want: list[tuple[str, dict[str, str]]],
+                                                      library: Library) -> None:
+    assert_reads(text, want, library)

@@ -98,7 +98,7 @@ def _politeness(s: State, i: int) -> Match | None:
     n = match_phrase(words, i, POLITE)
     if low == "to" and n == 1 and _goal_said_first(s, i):
         return None                                   # "*To the dining room,* follow Jane": where, said first
-    if low in _ORDINALS and not (i + 1 < len(words) and words[i + 1].lower == "," or s.verb_after(i + 1)):
+    if low in _ORDINALS and not (i + 1 < len(words) and words[i + 1].lower in (",", ";", ":") or s.verb_after(i + 1)):
         return None                                   # "*second* cup, please": a thing's order, no step's
     k = i + n
     while k < len(words) and words[k].lower != "to" and is_adverb(words[k].lower):
