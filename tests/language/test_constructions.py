@@ -3104,3 +3104,28 @@ def test_a_thing_said_to_need_a_verb_done_to_it_is_that_verb(text: str, want: li
 def test_a_wish_said_as_what_i_need_is_is_no_question(text: str, want: list[tuple[str, dict[str, str]]],
                                                       library: Library) -> None:
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("guide Ben to the hall, then Ana to the porch",
+     [("Guide", {"theme": "Ben", "goal": "hall"}), ("Guide", {"theme": "Ana", "goal": "porch"})]),
+    ("escort Priya to the gate and then Tom to the shed",
+     [("Guide", {"theme": "Priya", "goal": "gate"}), ("Guide", {"theme": "Tom", "goal": "shed"})]),
+    ("count the jars in the pantry and then the ones in the cellar",
+     [("Count", {"theme": "jar", "ground": "pantry"}), ("Count", {"theme": "one", "ground": "cellar"})]),
+    ("find the red scarf and then the blue one", [("Find", {"theme": "scarf"}), ("Find", {"theme": "scarf"})]),
+])
+def test_a_second_clause_said_without_its_verb_is_the_verb_again(text: str, want: list[tuple[str, dict[str, str]]],
+                                                                 library: Library) -> None:
+    """Gapping (words35): the verb is said once, a person and a path or a thing and a place follow "then"."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("answer a question for Priya, who is in the den", [("Answer", {"theme": "question", "recipient": "Priya"})]),
+    ("tell the joke to Tom, who's on the porch", [("Tell", {"message": "joke", "recipient": "Tom"})]),
+])
+def test_a_comma_relative_after_the_person_told_describes_them(text: str, want: list[tuple[str, dict[str, str]]],
+                                                                library: Library) -> None:
+    """", who is in the den" after the person of a verb of speech whose message is said: no question (words35)."""
+    assert_reads(text, want, library)

@@ -188,8 +188,16 @@ def _comma_relative(s: State, i: int) -> Match | None:
     if i + 2 >= len(words) or words[i + 1].lower not in _COMMA_RELATIVES or s.verb_index < 0 or \
             s.prev_tag() not in (Tag.NAME, Tag.WORD):
         return None
-    m = s.relative(i + 1)
+    m = s.relative(i + 1, described=s.speech and _said_before_person(s))
     return Match(1 + m.consumed, m.words, expect=AFTER_SEP) if m else None
+
+
+def _said_before_person(s: State) -> bool:
+    """Whether a verb of speech has its message (or question) before the person ("answer *a question* for Morgan",
+    "tell *the time* to Jo"): a comma's "who ..." after the person then describes them (words35), nothing more said."""
+    after = s.out[s.verb_index + 1:]
+    return len(after) >= 3 and after[-1].tag == Tag.NAME and after[-2].tag == Tag.PREP and \
+        any(w.tag == Tag.WORD for w in after[:-2])
 
 
 def _separator(s: State, i: int) -> Match | None:
@@ -247,6 +255,7 @@ STRANDED_RELATIVE = Rule("relative clause of it, its preposition last", _strande
 COMMA_RELATIVE = Rule("relative clause after a comma", _comma_relative, (
     Example("take it to Adel, who's in the bathroom.", "who's", Tag.REL),
     Example("give the cup to the man, who is sitting on the sofa", "sitting", Tag.VBG_P),
+    Example("tell the joke to Priya, who is in the den", "who is", Tag.REL),
 ), frozenset([","]), "', who is ...' after a name or a noun: a relative clause describing it, not a question")
 SEPARATOR = Rule("separator", _separator, (
     Example("take the cup and put it on the table", "and", Tag.SEP),
