@@ -82,7 +82,7 @@ _TOKEN = re.compile(r"""
                                                            # ("t-shirt", "under-12s", "covid-19"); numbers
   | (?P<poss>['’]s\b)                                      # possessive 's (and is)
   | (?P<amp>&)
-  | (?P<dash>[—–]|-{2,}|(?<=\s)-(?=\s))                   # a dash between clauses reads as ";"
+  | (?P<dash>[—–→]|-+>|=>|-{2,}|(?<=\s)-(?=\s))           # a dash (or an arrow) between clauses reads as ";"
   | (?P<punct>[,;:.!?]+)
   | (?P<quote>["“”'‘’`()\[\]])                             # quotes and brackets are ignored
   | (?P<space>\s+)
@@ -112,6 +112,7 @@ def tokenize(text: str) -> list[Word]:
         text = _digits_of_any_script(text)
         read = _marks_as_letters(text)
     read = _list_markers_read(read)
+    paired = _bracket_pairs(read)
     words: list[Word] = []
     pos = 0
     for match in _TOKEN.finditer(read):
@@ -120,8 +121,11 @@ def tokenize(text: str) -> list[Word]:
             raise CommandError(_unexpected(said[pos]), pos + 1, said, ["a word"])
         pos = end
         kind = match.lastgroup
-        if kind == "space" or kind == "quote":
+        if kind == "space" or kind == "quote" and start not in paired:
             continue                    # as many spaces as words: the commonest token first
+        if kind == "quote":             # a bracket of a pair: the aside it holds (``statements.BRACKETED``)
+            words.append(Word(read[start], start, pos))
+            continue
         if kind == "word":
             typed = text[start:end]
             if not typed.isascii():
@@ -147,7 +151,7 @@ def tokenize(text: str) -> list[Word]:
         elif kind == "amp":
             words.append(Word("and", start, pos))
         elif kind == "dash":
-            words.append(Word(";", start, pos))
+            words.append(Word(read[start:pos], start, pos, lower=";"))   # its text the dash said
         elif kind == "poss":
             words.append(Word("'s", start, pos))
     if pos != len(text):
@@ -194,6 +198,21 @@ def _list_markers_read(read: str) -> str:
             if start > 0 and read[start - 1] not in " \t":
                 return read          # a mark stuck to a word: no list
     return "".join(out)
+
+
+def _bracket_pairs(read: str) -> frozenset[int]:
+    """The offsets of the round brackets that pair up ("bring me a drink *(*any drink is fine*)*"), not nested: a
+    bracket alone, or a pair inside a pair, is ignored as before (words35)."""
+    found: set[int] = set()
+    opened = -1
+    for k, character in enumerate(read):
+        if character == "(":
+            opened = k if opened < 0 else -2        # a second "(" before ")": nested, no pair of the first
+        elif character == ")":
+            if opened >= 0:
+                found.update((opened, k))
+            opened = -1
+    return frozenset(found)
 
 
 def _label(mark: str) -> str:

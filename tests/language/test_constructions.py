@@ -3129,3 +3129,22 @@ def test_a_comma_relative_after_the_person_told_describes_them(text: str, want: 
                                                                 library: Library) -> None:
     """", who is in the den" after the person of a verb of speech whose message is said: no question (words35)."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want", "remark"), [
+    ("bring me a scarf (any colour is fine) from the hall",
+     [("Bring", {"theme": "scarf", "recipient": "me", "source": "hall"})], "any colour is fine"),
+    ("follow Ada - she's the one in red - to the porch", [("Follow", {"theme": "Ada", "goal": "porch"})],
+     "she's the one in red"),
+    ("lift the vase \u2014 mind, it's heavy \u2014 and put it on the shelf",
+     [("Pick", {"theme": "vase"}), ("Place", {"theme": "vase", "goal": "shelf"})], "mind, it's heavy"),
+    ("open the shed (and then close it)", [("Open", {"theme": "shed"}), ("Close", {"theme": "shed"})], None),
+    ("open the gate - then find the rake - and bring it to me",
+     [("Open", {"theme": "gate"}), ("Find", {"theme": "rake"}), ("Bring", {"theme": "rake", "recipient": "me"})], None),
+])
+def test_an_aside_in_brackets_or_dashes_is_a_remark(text: str, want: list[tuple[str, dict[str, str]]],
+                                                    remark: str | None, library: Library) -> None:
+    """words35: an aside is kept as a remark, never dropped in silence; a clause in brackets is read as said."""
+    assert_reads(text, want, library)
+    remarks = parse_command(text, library).remarks
+    assert (remark in remarks) if remark else not remarks
