@@ -211,6 +211,11 @@ def awaits_name(word: Word) -> bool:
     return word.text.endswith(".") and word.lower.rstrip(".") in TITLES
 
 
+def _superlative(low: str) -> bool:
+    """Whether ``low`` is an adjective's superlative ("biggest", "heaviest", "most", "least")."""
+    return low in ("most", "least", "best", "worst") or len(low) > 4 and low.endswith("est") and is_adjective(low)
+
+
 def subject_word(word: Word) -> bool:
     """Whether a word may only start a clause: a subject pronoun or its contraction ("we're", "I'll")."""
     low = word.lower
@@ -1242,17 +1247,24 @@ class State:
         if holding is not None:
             return holding
         if nxt in BE_WORDS and i + 2 < len(words):
-            after = words[i + 2].lower
-            n = match_phrase(words, i + 2, PREPOSITIONS)
-            if n and self.np_starts(i + 2 + n):
-                return self.emit(i, 2, "REL", "be")     # "the cup that is on the table": the PP describes it
+            b = i + 2                                   # "the man who's *the one* in red": "the one" says nothing
+            if b + 2 < len(words) and words[b].lower == "the" and words[b + 1].lower in ("one", "ones"):
+                b += 2                                  # more (words35)
+            after = words[b].lower
+            n = match_phrase(words, b, PREPOSITIONS)
+            if n and self.np_starts(b + n):
+                return self.emit(i, b - i, "REL", "be")     # "the cup that is on the table": the PP describes it
             if gerund_lemma(after) and prev == "NAME" and len(self.out) > 1 and self.out[-2].tag == "PREP":
-                end = self.cond_end(i + 2)              # "bring it to Alex(,) who is sitting at the desk": a name
+                end = self.cond_end(b)              # "bring it to Alex(,) who is sitting at the desk": a name
                 return self.emit(i, end - i, "REL")     # after a preposition takes no participle in the grammar;
                 #   the clause is one REL word the name keeps, as "who's in the bathroom" is (words28)
             if gerund_lemma(after):
-                return Match(2)  # "the person who is waving": "the person waving"
-            end = i + 2
+                return Match(b - i)  # "the person who is waving": "the person waving"
+            end = b
+            if end + 1 < len(words) and words[end].lower in ("the", "a") and _superlative(words[end + 1].lower) and \
+                    (end + 2 >= len(words) or words[end + 2].lower in END_MARKS or
+                     words[end + 2].lower in (",", ";", "and", "then")):
+                end += 1        # "the cup that is *the* biggest" (words35); "the closest to the sink": no end
             results: list[tuple[str, str]] = []
             while end < len(words) and (words[end].lower not in CLOSED or words[end].lower == "not") and \
                     words[end].lower not in END_MARKS and words[end].lower not in (",", ";", ":", "then") and \

@@ -3148,3 +3148,21 @@ def test_an_aside_in_brackets_or_dashes_is_a_remark(text: str, want: list[tuple[
     assert_reads(text, want, library)
     remarks = parse_command(text, library).remarks
     assert (remark in remarks) if remark else not remarks
+
+
+@pytest.mark.parametrize(("text", "want", "remark"), [
+    ("bring me the mug, the one that's chipped", [("Bring", {"theme": "mug", "recipient": "me"})], None),
+    ("find the man in the hall, the one who is waving", [("Find", {"theme": "man", "ground": "hall"})],
+     "the one who is waving"),
+    ("follow the woman who's the one wearing a scarf", [("Follow", {"theme": "woman"})], None),
+    ("bring me the jar on the shelf that is the biggest",
+     [("Bring", {"theme": "jar", "recipient": "me", "source": "shelf"})], None),
+    ("you'll lead the woman in the scarf to the porch", [("Guide", {"theme": "woman", "goal": "porch"})], None),
+])
+def test_the_one_that_describes_the_noun_said_before(text: str, want: list[tuple[str, dict[str, str]]],
+                                                     remark: str | None, library: Library) -> None:
+    """", the one that's X" and "who's the one X-ing" describe the noun (words35); after a place phrase the
+    description is a remark, never the place's."""
+    assert_reads(text, want, library)
+    remarks = parse_command(text, library).remarks
+    assert (remark in remarks) if remark else not remarks
