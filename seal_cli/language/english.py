@@ -174,8 +174,9 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                     "the task is", "your task is", "the job is", "your job is", "your mission is to",
                     "your mission is", "the plan is", "the plan is to",
                     # words35: the task announced with "for you to" or with what the robot must do
-                    *(f"{what} {who} {wish} is for you to" for what in ("what", "all") for who in ("i", "we")
-                      for wish in ("need", "want", "'d like", "would like")),
+                    *(f"{what} {wish} is for you to" for what in ("what", "all")
+                      for wish in ("i need", "i want", "i'd like", "i would like", "we need", "we want", "we'd like",
+                                   "we would like")),
                     *(f"what {must} do is" for must in ("you have to", "you need to", "you should", "you must",
                                                          "you got to", "you've got to", "you have got to",
                                                          "you'll have to", "you will have to", "you're going to",
@@ -195,7 +196,8 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                     "you got to", "you've got to", "you have got to", "you need", "going to need you to",
                     "i'm going to need you to", "i am going to need you to", "we're going to need you to",
                     "i'd appreciate if you", "i would appreciate if you", "i'd appreciate if you could",
-                    "let's have you", "let 's have you", "let's get you to", "let 's get you to"]))
+                    "let's have you", "let 's have you", "let's get you to", "let 's get you to",
+                    "kind of", "kinda", "got to", "your going to", "your job", "your task", "your mission"]))
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
     "when you have a moment", "when you have a minute", "when you have a second", "when you have time",

@@ -435,7 +435,11 @@ class Tagger(State):
 
     def __init__(self, lexicon: Lexicon, words: list[Word], text: str = "",
                  trace: list[str] | None = None) -> None:
+        from seal_cli.language.asides import set_aside
+
+        words, aside = set_aside(lexicon, words)     # "(any drink is fine)": a remark, before any rule reads on
         super().__init__(lexicon, words, text)
+        self.remarks.extend(aside)
         self.trace = trace
 
     def run(self) -> list[Word]:

@@ -82,7 +82,7 @@ _TOKEN = re.compile(r"""
                                                            # ("t-shirt", "under-12s", "covid-19"); numbers
   | (?P<poss>['’]s\b)                                      # possessive 's (and is)
   | (?P<amp>&)
-  | (?P<dash>[—–→]|-+>|=>|-{2,}|(?<=\s)-(?=\s))           # a dash (or an arrow) between clauses reads as ";"
+  | (?P<dash>[—–]|-+>|=>|-{2,}|(?<=\s)-(?=\s))            # a dash (or "->") between clauses reads as ";"
   | (?P<punct>[,;:.!?]+)
   | (?P<quote>["“”'‘’`()\[\]])                             # quotes and brackets are ignored
   | (?P<space>\s+)

@@ -3166,3 +3166,23 @@ def test_the_one_that_describes_the_noun_said_before(text: str, want: list[tuple
     assert_reads(text, want, library)
     remarks = parse_command(text, library).remarks
     assert (remark in remarks) if remark else not remarks
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("your job: open the shed", [("Open", {"theme": "shed"})]),
+    ("could you kind of close the gate?", [("Close", {"theme": "gate"})]),
+    ("got to find the rake in the shed", [("Find", {"theme": "rake", "ground": "shed"})]),
+    ("lead Priya to the gate and after that Tom to the shed",
+     [("Guide", {"theme": "Priya", "goal": "gate"}), ("Guide", {"theme": "Tom", "goal": "shed"})]),
+    ("answer a question for the man sitting in the den, who seems lost",
+     [("Answer", {"theme": "question", "recipient": "man"})]),
+])
+def test_more_of_what_people_say_around_a_command(text: str, want: list[tuple[str, dict[str, str]]],
+                                                  library: Library) -> None:
+    """words35, after paraphrases14's first score."""
+    assert_reads(text, want, library)
+
+
+def test_your_job_without_its_colon_announces_nothing(library: Library) -> None:
+    with pytest.raises(CommandError):
+        parse_command("your job is done", library)

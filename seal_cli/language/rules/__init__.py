@@ -29,7 +29,7 @@ from seal_cli.language.rules import (
 
 __all__ = ["ANYWHERE", "CLAUSE_START", "INSIDE", "TABLES", "WORDS"]
 
-ANYWHERE: tuple[Rule, ...] = (statements.BRACKETED, verbs.SPLIT_PARTICLE, politeness.FORMULA)
+ANYWHERE: tuple[Rule, ...] = (verbs.SPLIT_PARTICLE, politeness.FORMULA)
 """At every word, first."""
 
 CLAUSE_START: tuple[Rule, ...] = (

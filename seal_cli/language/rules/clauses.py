@@ -213,8 +213,8 @@ def _said_before_person(s: State) -> bool:
     """Whether a verb of speech has its message (or question) before the person ("answer *a question* for Morgan",
     "tell *the time* to Jo"): a comma's "who ..." after the person then describes them (words35), nothing more said."""
     after = s.out[s.verb_index + 1:]
-    return len(after) >= 3 and after[-1].tag == Tag.NAME and after[-2].tag == Tag.PREP and \
-        any(w.tag == Tag.WORD for w in after[:-2])
+    first = next((k for k, w in enumerate(after) if w.tag == Tag.PREP), -1)
+    return first > 0 and after[-1].tag in (Tag.NAME, Tag.WORD) and any(w.tag == Tag.WORD for w in after[:first])
 
 
 def _separator(s: State, i: int) -> Match | None:

@@ -2012,7 +2012,13 @@ def _fronted_end(s: State, i: int) -> Match | None:
         return None                               # "*in there,* find the sponge": a place pointed at, said first
     if k < len(out) - 1 and out[k + 1].tag != Tag.PREP or not _clause_at(s, i + 1):
         return None
-    return Match(1, (s.words[i].tagged(Tag.SEP),), expect=True)
+    if 0 <= k < len(out) - 1 and out[k].tag not in _BEFORE_FRONTED:
+        return None                               # "answer the man standing *in the hall*, who ...": no phrase said
+    return Match(1, (s.words[i].tagged(Tag.SEP),), expect=True)     # first, the clause's own (words35)
+
+
+_BEFORE_FRONTED = frozenset([Tag.SEP, Tag.POLITE, Tag.END])
+"""Tags a phrase said before the verb may follow: it opens its clause."""
 
 
 FRONTED_OF = Rule("of-phrase first", _fronted_of, (

@@ -4,7 +4,7 @@ words of address and statements after the request ("..., dear, I'm cold"), a cla
 
 from __future__ import annotations
 
-from seal_cli.language.english import BECAUSE, END_MARKS, FINITE, LET_KNOW, SUBJECTS, WH_WORDS
+from seal_cli.language.english import BECAUSE, FINITE, LET_KNOW, SUBJECTS, WH_WORDS
 from seal_cli.language.morphology import verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import CLOSED, State, subject_word
@@ -14,37 +14,6 @@ from seal_cli.language.tokens import capitalised
 
 def _aside(s: State, i: int) -> Match | None:
     return s.aside(i)
-
-
-_DASHES = frozenset("-—–")
-_CLAUSE_JOINTS = frozenset([",", ";", "and", "then", "please", "("])
-
-
-def _bracketed(s: State, i: int) -> Match | None:
-    """"bring me a drink *(any drink is fine)* from the fridge", "follow Ada *- she's in red -* to the porch": what
-    is said in brackets, or between two dashes in one sentence, beside the command is a remark (words35), unless a
-    verb of the library opens a clause in it ("(and then close it)"): then only the brackets are dropped and its
-    words read as said. A dash alone stays what it was, a stop between clauses."""
-    words = s.words
-    w = words[i]
-    if w.lower == ")":
-        return Match(1)                               # the bracket closing an aside read as said
-    if w.lower == "(":
-        end = next((k for k in range(i + 1, len(words)) if words[k].lower == ")"), -1)
-    elif w.text[:1] in _DASHES and s.out:
-        end = next((k for k in range(i + 1, len(words)) if words[k].lower in END_MARKS or
-                    words[k].lower == ";" and words[k].text[:1] in _DASHES), -1)
-        if end < 0 or words[end].lower != ";" or end == i + 1 or end + 1 >= len(words) or \
-                words[end + 1].lower in END_MARKS:
-            return None                               # one dash: a stop, as before
-    else:
-        return None
-    if end < 0:
-        return Match(1)
-    if any(s.verb_at(k) is not None and verb_lemma(words[k].lower) == words[k].lower and
-           (k == i + 1 or words[k - 1].lower in _CLAUSE_JOINTS) for k in range(i + 1, end)):
-        return Match(1) if w.lower == "(" else None   # "(and then close it)": a clause, read as said
-    return Match(end - i + 1, remarks=((words[i + 1].start, words[end - 1].end),))
 
 
 def _her_told(s: State, i: int) -> Match | None:
@@ -115,11 +84,6 @@ DISLOCATED = Rule("phrase said first, taken up by a pronoun", _dislocated, (
     Example("That dice on the sofa, could you bring it to me?", "That dice on the sofa,", Tag.POLITE),
     Example("whoever's at the door, greet them", "whoever's at the door,", Tag.POLITE),    # a free relative
 ), None, "a noun phrase and a comma before a command whose pronoun takes it up: a remark it names")
-BRACKETED = Rule("an aside in brackets or between dashes", _bracketed, (
-    Example("bring me a scarf (any colour is fine) from the hall", "from", Tag.PREP),
-    Example("follow Ada - she's the one in red - to the porch", "to", Tag.PREP),
-    Example("open the shed (and then close it)", "close", Tag.VERB),
-), frozenset(["(", ")", ";"]), "what is said in brackets or between two dashes beside the command: a remark")
 ASIDE = Rule("sentence beside the command", _aside, (
     Example("Good morning! Could you open the window?", "Good morning!", Tag.POLITE),
     Example("Bogdan has a question; answer it for him", "Bogdan has a question;", Tag.POLITE),
