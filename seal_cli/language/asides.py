@@ -58,8 +58,9 @@ def _clause_in(lexicon: Lexicon, words: Sequence[Word], start: int, end: int) ->
 def set_aside(lexicon: Lexicon, words: Sequence[Word]) -> tuple[list[Word], list[tuple[int, int]]]:
     """The words of the command with its asides taken out, and the character spans of those asides (remarks).
     A bracket of an aside that holds a clause is taken out alone."""
-    if not any(w.lower in ("(", ")") or _dash(w) for w in words):
-        return list(words), []
+    said = {w.lower for w in words}
+    if "(" not in said and ")" not in said and (";" not in said or not any(_dash(w) for w in words)):
+        return list(words), []                      # the commonest case: nothing to set aside, asked cheaply
     kept: list[Word] = []
     remarks: list[tuple[int, int]] = []
     i = 0

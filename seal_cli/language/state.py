@@ -1355,8 +1355,9 @@ class State:
             return Match(1)                # "a pan, containing a knife, in the fridge"
         if low in (",", ";", ":") and (nxt in PREPOSITIONS or nxt == "please"):
             return Match(1)                # "Put a pan with a spoon in it, in the sink"
-        then = any(w.lower in ("then", "afterwards", "next") for w in words[i:j]) or \
-            any(words[k].lower == "after" and words[k + 1].lower == "that" for k in range(i, j - 1))
+        joint = [w.lower for w in words[i:j]]
+        then = "then" in joint or "afterwards" in joint or "next" in joint or \
+            "after" in joint and "that" in joint          # "and after that Jane to the office" (words35)
         again = self._object_again(j, then, any(w.lower in (",", ";") for w in words[i:j])) \
             if low in ("and", ",", ";", "then") else None
         if again:                          # "bring the milk to the table and the cereal too": the verb again

@@ -131,7 +131,7 @@ def tokenize(text: str) -> list[Word]:
             if not typed.isascii():
                 _check_whole_numbers(typed, start, said)
                 _check_one_alphabet(typed, start, said)
-            two = RUN_TOGETHER.get(typed.lower())
+            two = RUN_TOGETHER.get(typed.lower()) if len(typed) == 5 else None     # all five letters
             if two is not None:                                  # "gimme": "give" and "me", each its letters
                 cut = start + len(two[2])
                 words.append(Word(text[start:cut], start, cut, lower=two[0]))
@@ -203,6 +203,8 @@ def _list_markers_read(read: str) -> str:
 def _bracket_pairs(read: str) -> frozenset[int]:
     """The offsets of the round brackets that pair up ("bring me a drink *(*any drink is fine*)*"), not nested: a
     bracket alone, or a pair inside a pair, is ignored as before (words35)."""
+    if "(" not in read:
+        return frozenset()
     found: set[int] = set()
     opened = -1
     for k, character in enumerate(read):
