@@ -11,11 +11,14 @@ rule reads the word after an aside's first bracket as the next word of the comma
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 from seal_cli.language.english import END_MARKS
-from seal_cli.language.lexicon import Lexicon
 from seal_cli.language.morphology import verb_lemma
 from seal_cli.language.tokens import Word
+
+if TYPE_CHECKING:
+    from seal_cli.language.lexicon import Lexicon
 
 __all__ = ["set_aside"]
 
