@@ -174,7 +174,32 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                       for wish in ("need", "want", "need you to do", "want you to do")),
                     "here's the task", "here 's the task",
                     "the task is", "your task is", "the job is", "your job is", "your mission is to",
-                    "your mission is", "the plan is", "the plan is to"]))
+                    "your mission is", "the plan is", "the plan is to",
+                    # words35: the task announced with "for you to" or with what the robot must do
+                    *(f"{what} {wish} is for you to" for what in ("what", "all")
+                      for wish in ("i need", "i want", "i'd like", "i would like", "we need", "we want", "we'd like",
+                                   "we would like")),
+                    *(f"what {must} do is" for must in ("you have to", "you need to", "you should", "you must",
+                                                         "you got to", "you've got to", "you have got to",
+                                                         "you'll have to", "you will have to", "you're going to",
+                                                         "you are going to")),
+                    "here's the deal", "here 's the deal", "here is the deal", "here's the thing",
+                    "here 's the thing", "here is the thing",
+                    # words35: discourse markers said first, and the robot's ability asked
+                    "alright", "all right", "right", "right so", "ok so", "okay so", "alright so", "so basically",
+                    "basically", "listen up", "quick one", "a quick one", "first off", "first things first",
+                    "first of all", "to start", "to start with", "to begin", "to begin with",
+                    *(f"{modal} you manage to" for modal in ("can", "could", "will", "would")),
+                    *(f"{be} you capable of" for be in ("are", "would", "would you be")),
+                    *(f"do you think {able}" for able in ("you can", "you could", "you are able to",
+                                                          "you're able to", "you would be able to",
+                                                          "you'd be able to", "you could manage to")),
+                    "you're going to", "you are going to", "you'll", "you'll need to", "you'll have to",
+                    "you got to", "you've got to", "you have got to", "you need", "going to need you to",
+                    "i'm going to need you to", "i am going to need you to", "we're going to need you to",
+                    "i'd appreciate if you", "i would appreciate if you", "i'd appreciate if you could",
+                    "let's have you", "let 's have you", "let's get you to", "let 's get you to",
+                    "kind of", "kinda", "got to", "your going to", "your job", "your task", "your mission"]))
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
     "when you have a moment", "when you have a minute", "when you have a second", "when you have time",
@@ -211,9 +236,14 @@ SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "tha
              "wouldnt": "wouldn't", "shouldnt": "shouldn't", "shes": "she's", "hes": "he's", "whats": "what's",
              "theres": "there's", "wont": "won't", "cant": "can't", "wheres": "where's", "hows": "how's",
              "ill": "i'll", "id": "i'd", "youll": "you'll", "weve": "we've", "theyve": "they've", "itll": "it'll",
-             "frm": "from", "thru": "through", "abt": "about"}
+             "frm": "from", "thru": "through", "abt": "about", "cud": "could", "cld": "could", "wud": "would",
+             "shud": "should", "pleez": "please", "ppl": "people"}
 """Texting spellings of function words ("turn the lights off *pls*", "open it *n* wipe it", "where *r* my keys",
 "tell her *im* late"): read as the word they spell."""
+RUN_TOGETHER = {"gimme": ("give", "me", "gim"), "lemme": ("let", "me", "lem"), "gonna": ("going", "to", "gon"),
+              "gotta": ("got", "to", "got"), "outta": ("out", "of", "out"), "hafta": ("have", "to", "haf")}
+"""Two words run together as they are said ("*gimme* the orange", "*lemme* know", "you *gotta* greet him"): each is
+read as its two words (the first, the second, and the letters the first is written with; words35)."""
 SEEN_QUESTIONS = frozenset(["see", "you see", "do you see", "you spot", "do you spot", "notice",
                             "you notice", "do you notice"])
 """A question of perception said before the command ("*see* the man by the window? greet him", "*do you see* the
@@ -403,7 +433,9 @@ REQUESTS = frozenset(["i'd like", "i would like", "i should like", "i'd love", "
                         for adverb in ("possibly", "just", "please just") for verb in ("have", "get")),
                       *(f"{chance} {wish}" for chance in ("any chance", "is there any chance", "is there a chance")
                         for wish in ("of", "i could have", "i can have", "i could get", "i can get", "we could have",
-                                     "we can have"))])
+                                     "we can have")),
+                      *(f"what {wish} is" for wish in ("i need", "i want", "i'd like", "i would like", "we need",
+                                                       "we want", "we'd like", "we would like"))])
 """A request for a thing said as the speaker's wish ("*I'd like* the red mug", "*Can I have* the big plate",
 "*I need* a pen", "*I could do with* a towel"): it means "bring me ..." (``REQUEST_MEANS``, with the speaker as
 recipient). Asked as a trouble to the hearer, a thing after "for" ("*might I trouble you for* a glass of water",

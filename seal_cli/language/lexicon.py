@@ -28,6 +28,7 @@ from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
 
 from seal_cli.frames.library import Library
+from seal_cli.language.asides import set_aside
 from seal_cli.language.english import (
     BE_WORDS,
     BECAUSE,
@@ -435,7 +436,9 @@ class Tagger(State):
 
     def __init__(self, lexicon: Lexicon, words: list[Word], text: str = "",
                  trace: list[str] | None = None) -> None:
+        words, aside = set_aside(lexicon, words)     # "(any drink is fine)": a remark, before any rule reads on
         super().__init__(lexicon, words, text)
+        self.remarks.extend(aside)
         self.trace = trace
 
     def run(self) -> list[Word]:

@@ -211,6 +211,11 @@ def awaits_name(word: Word) -> bool:
     return word.text.endswith(".") and word.lower.rstrip(".") in TITLES
 
 
+def _superlative(low: str) -> bool:
+    """Whether ``low`` is an adjective's superlative ("biggest", "heaviest", "most", "least")."""
+    return low in ("most", "least", "best", "worst") or len(low) > 4 and low.endswith("est") and is_adjective(low)
+
+
 def subject_word(word: Word) -> bool:
     """Whether a word may only start a clause: a subject pronoun or its contraction ("we're", "I'll")."""
     low = word.lower
@@ -1208,12 +1213,13 @@ class State:
         tag = Tag.COND if kind == "cond" else Tag.POLITE if start else Tag.SEP
         return Match(end - i, (merge(self.words, i, end - i, tag, sub),))
 
-    def relative(self, i: int) -> Match | None:
+    def relative(self, i: int, described: bool = False) -> Match | None:
         """A relative clause after a noun (None: none here). "the cup *that is* on the
         table" and "the person *who is* waving" drop "that is" (the rest describes the noun as
         usual); any other ("the glass *that I was drinking from*", "the book *I left on the sofa*",
         "the bananas *that have gone bad*") is one ``REL`` word the noun keeps; "*where it belongs*"
-        names a place (``HERE``)."""
+        names a place (``HERE``). ``described``: the clause is set off by a comma after a verb of speech whose
+        message is said already ("tell the time to Jo*, who is in the hall*"), so it describes, nothing said."""
         words, low, prev = self.words, self.words[i].lower, self.prev_tag()
         nxt = words[i + 1].lower if i + 1 < len(words) else ""
         if low == "where":
@@ -1230,7 +1236,7 @@ class State:
                 not (told_of and low in ("that", "which")) and \
                 not (prev == "PRON" and low in ("that", "which") and self.out[-1].lower in INDEFINITE):
             return None             # "take everything *that's in the sink*": an indefinite's relative clause
-        if self.speech and not told_of:
+        if self.speech and not told_of and not described:
             return None             # "tell the man (that) ...": what is said
         if low in NOMINATIVE or low == "you" and verb_lemma(nxt):
             end = self.relative_end(i + 1)
@@ -1241,17 +1247,24 @@ class State:
         if holding is not None:
             return holding
         if nxt in BE_WORDS and i + 2 < len(words):
-            after = words[i + 2].lower
-            n = match_phrase(words, i + 2, PREPOSITIONS)
-            if n and self.np_starts(i + 2 + n):
-                return self.emit(i, 2, "REL", "be")     # "the cup that is on the table": the PP describes it
+            b = i + 2                                   # "the man who's *the one* in red": "the one" says nothing
+            if b + 2 < len(words) and words[b].lower == "the" and words[b + 1].lower in ("one", "ones"):
+                b += 2                                  # more (words35)
+            after = words[b].lower
+            n = match_phrase(words, b, PREPOSITIONS)
+            if n and self.np_starts(b + n):
+                return self.emit(i, b - i, "REL", "be")     # "the cup that is on the table": the PP describes it
             if gerund_lemma(after) and prev == "NAME" and len(self.out) > 1 and self.out[-2].tag == "PREP":
-                end = self.cond_end(i + 2)              # "bring it to Alex(,) who is sitting at the desk": a name
+                end = self.cond_end(b)              # "bring it to Alex(,) who is sitting at the desk": a name
                 return self.emit(i, end - i, "REL")     # after a preposition takes no participle in the grammar;
                 #   the clause is one REL word the name keeps, as "who's in the bathroom" is (words28)
             if gerund_lemma(after):
-                return Match(2)  # "the person who is waving": "the person waving"
-            end = i + 2
+                return Match(b - i)  # "the person who is waving": "the person waving"
+            end = b
+            if end + 1 < len(words) and words[end].lower in ("the", "a") and _superlative(words[end + 1].lower) and \
+                    (end + 2 >= len(words) or words[end + 2].lower in END_MARKS or
+                     words[end + 2].lower in (",", ";", "and", "then")):
+                end += 1        # "the cup that is *the* biggest" (words35); "the closest to the sink": no end
             results: list[tuple[str, str]] = []
             while end < len(words) and (words[end].lower not in CLOSED or words[end].lower == "not") and \
                     words[end].lower not in END_MARKS and words[end].lower not in (",", ";", ":", "then") and \
@@ -1342,15 +1355,17 @@ class State:
             return Match(1)                # "a pan, containing a knife, in the fridge"
         if low in (",", ";", ":") and (nxt in PREPOSITIONS or nxt == "please"):
             return Match(1)                # "Put a pan with a spoon in it, in the sink"
-        then = any(w.lower == "then" for w in words[i:j])
+        joint = [w.lower for w in words[i:j]]
+        then = "then" in joint or "afterwards" in joint or "next" in joint or \
+            "after" in joint and "that" in joint          # "and after that Jane to the office" (words35)
         again = self._object_again(j, then, any(w.lower in (",", ";") for w in words[i:j])) \
             if low in ("and", ",", ";", "then") else None
         if again:                          # "bring the milk to the table and the cereal too": the verb again
             return Match(j - i, (merge(words, i, j - i, Tag.SEP), Word("", words[j].start, words[j].start,
                                                                         Tag.VERB, again)),
                          expect=False, verb=again, using=False)
-        given = self._given_again(j) if (then or any(w.lower in (",", ";") for w in words[i:j])) and \
-            low in ("and", ",", ";", "then") else None
+        given = (self._given_again(j) or self._led_again(j)) if (
+            then or any(w.lower in (",", ";") for w in words[i:j])) and low in ("and", ",", ";", "then") else None
         if given:                          # "hand Ben a cup and then *Anna a cup*": the verb again, to her
             return Match(j - i, (merge(words, i, j - i, Tag.SEP), Word("", words[j].start, words[j].start,
                                                                         Tag.VERB, given)),
@@ -1458,7 +1473,8 @@ class State:
                 words[j].lower not in NP_OPENERS:
             return None
         k = j + 1
-        while k < min(len(words), j + 8) and words[k].lower.isalpha() and words[k].lower not in CLOSED and \
+        while k < min(len(words), j + 8) and words[k].lower.isalpha() and (
+                words[k].lower not in CLOSED or then and words[k].lower in ("one", "ones")) and \
                 not match_phrase(words, k, ADDITIVES) and \
                 (self.verb_at(k) is None or words[k].lower in self.lexicon.things):
             k += 1                                        # "and a *pan* too": a thing, though a verb of English
@@ -1467,6 +1483,14 @@ class State:
         n = match_phrase(words, k, ADDITIVES) if k < len(words) else 0
         if not n and not then:
             return self._placed_again(j) if comma else None
+        if not n and then and k < len(words):
+            m, prep = self.preposition(k)           # "count the cups in the den and then *the ones in the hall*":
+            if prep is not None and self.np_starts(k + m):     # the verb again, with a place of its own (words35)
+                end = self.cond_end(k + m)
+                if any(self.verb_at(x) is not None and words[x - 1].lower not in NP_OPENERS
+                       for x in range(k + m, end)):
+                    return None
+                k = end
         end = k + n
         if end < len(words) and words[end].lower not in END_MARKS and words[end].lower not in (",", ";", "please"):
             return None
@@ -1498,6 +1522,29 @@ class State:
             return None
         if not self.person_at(j) or j + 1 >= len(words) or words[j + 1].lower not in NP_OPENERS or \
                 self.verb_after(j):
+            return None
+        return unit
+
+    def _led_again(self, j: int) -> str | None:
+        """The verb of the clause before when, after "then" or a comma, another person and a path follow with no
+        verb: "guide Ben to the hall, then *Ana to the porch*" (gapping, words35). The clause's verb has a goal and
+        its object, said right after it, is a person; the new person is followed by a preposition of a path and its
+        noun phrase, and no verb to the clause's end; None."""
+        words = self.words
+        if self.verb_index < 0 or self.verb_index + 1 >= len(self.out):
+            return None
+        unit = str(self.out[self.verb_index].info)
+        first = self.out[self.verb_index + 1]
+        if unit not in self.lexicon.goals or not (first.tag == Tag.NAME or first.lower in _GIVEN_TO or
+                                                   first.lower in self.lexicon.people):
+            return None
+        if not self.person_at(j) or j + 1 >= len(words) or self.verb_after(j):
+            return None
+        m, prep = self.preposition(j + 1)
+        if prep not in PATH_PREPOSITIONS or not self.np_starts(j + 1 + m):
+            return None
+        end = self.cond_end(j + 1 + m)
+        if any(self.verb_at(x) is not None and words[x - 1].lower not in NP_OPENERS for x in range(j + 1 + m, end)):
             return None
         return unit
 

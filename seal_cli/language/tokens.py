@@ -13,7 +13,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from seal_cli.errors import SealError, Where
-from seal_cli.language.english import DETERMINERS, END_MARKS, SPELLINGS, TITLES, TITLES_ONLY
+from seal_cli.language.english import DETERMINERS, END_MARKS, RUN_TOGETHER, SPELLINGS, TITLES, TITLES_ONLY
 from seal_cli.language.slips import function_word
 
 __all__ = ["MAX_LENGTH", "CommandError", "Word", "capitalised", "printable", "tokenize"]
@@ -82,7 +82,7 @@ _TOKEN = re.compile(r"""
                                                            # ("t-shirt", "under-12s", "covid-19"); numbers
   | (?P<poss>['’]s\b)                                      # possessive 's (and is)
   | (?P<amp>&)
-  | (?P<dash>[—–]|-{2,}|(?<=\s)-(?=\s))                   # a dash between clauses reads as ";"
+  | (?P<dash>[—–]|-+>|=>|-{2,}|(?<=\s)-(?=\s))            # a dash (or "->") between clauses reads as ";"
   | (?P<punct>[,;:.!?]+)
   | (?P<quote>["“”'‘’`()\[\]])                             # quotes and brackets are ignored
   | (?P<space>\s+)
@@ -111,6 +111,8 @@ def tokenize(text: str) -> list[Word]:
     if not text.isascii():
         text = _digits_of_any_script(text)
         read = _marks_as_letters(text)
+    read = _list_markers_read(read)
+    paired = _bracket_pairs(read)
     words: list[Word] = []
     pos = 0
     for match in _TOKEN.finditer(read):
@@ -119,13 +121,22 @@ def tokenize(text: str) -> list[Word]:
             raise CommandError(_unexpected(said[pos]), pos + 1, said, ["a word"])
         pos = end
         kind = match.lastgroup
-        if kind == "space" or kind == "quote":
+        if kind == "space" or kind == "quote" and start not in paired:
             continue                    # as many spaces as words: the commonest token first
+        if kind == "quote":             # a bracket of a pair: the aside it holds (``statements.BRACKETED``)
+            words.append(Word(read[start], start, pos))
+            continue
         if kind == "word":
             typed = text[start:end]
             if not typed.isascii():
                 _check_whole_numbers(typed, start, said)
                 _check_one_alphabet(typed, start, said)
+            two = RUN_TOGETHER.get(typed.lower()) if len(typed) == 5 else None     # all five letters
+            if two is not None:                                  # "gimme": "give" and "me", each its letters
+                cut = start + len(two[2])
+                words.append(Word(text[start:cut], start, cut, lower=two[0]))
+                words.append(Word(text[cut:end], cut, end, lower=two[1]))
+                continue
             slip = function_word(typed.lower()) if typed.isalpha() and (typed.islower() or typed[1:].islower() and (
                 not words or words[-1].lower in END_MARKS)) else None
             words.append(Word(typed, start, pos, lower=slip))    # "wher": "where" (slips.function_word)
@@ -140,12 +151,78 @@ def tokenize(text: str) -> list[Word]:
         elif kind == "amp":
             words.append(Word("and", start, pos))
         elif kind == "dash":
-            words.append(Word(";", start, pos))
+            words.append(Word(read[start:pos], start, pos, lower=";"))   # its text the dash said
         elif kind == "poss":
             words.append(Word("'s", start, pos))
     if pos != len(text):
         raise CommandError(_unexpected(said[pos]), pos + 1, said, ["a word"])
     return words
+
+
+_MARKER = re.compile(r"""
+    (?:(?<=^)|(?<=[\s.;:!?,]))                                # at the start, or after a space or a stop
+    (?:(?:step|part)\s+)?                                      # "Step 1:"
+    (?P<mark>\(\s*(?:[0-9]{1,2}|[a-z])\s*\)                   # "(1)", "(a)"
+      |(?:[0-9]{1,2}|[a-z])\s*\)                             # "1)", "a)"
+      |[0-9]{1,2}\s*(?:[.:](?!\d)|-(?=\s)))                   # "1.", "1:", "1 -"
+    (?=\s)""", re.VERBOSE | re.IGNORECASE)
+"""A mark that numbers a step of a list: "1)", "(2)", "3.", "a)", "1 -", "Step 1:"."""
+
+
+def _list_markers_read(read: str) -> str:
+    """``read`` with the marks that number the steps of a list read as stops between clauses, one character for one
+    (columns stay): "1) go to the kitchen 2) find the apple 3) bring it to me" (words35). The marks count a list only
+    when the first opens the command and each next one counts on from it (1, 2, 3 or a, b, c): "put 2. then ..." and
+    "bring me 3) apples" number nothing. The first mark is read as nothing, each next one as ";" (or nothing after a
+    stop already said)."""
+    first = _MARKER.match(read, len(read) - len(read.lstrip()))
+    if first is None:
+        return read
+    marks = [first]
+    label = _label(first["mark"])
+    for found in _MARKER.finditer(read, first.end()):
+        if _label(found["mark"]) == _next_label(label):
+            marks.append(found)
+            label = _next_label(label)
+    if len(marks) < 2:
+        return read
+    out = list(read)
+    for k, mark in enumerate(marks):
+        start, end = mark.span()
+        before = read[:start].rstrip()
+        stop = k > 0 and not (before and before[-1] in ".;:!?")
+        for j in range(start, end):
+            out[j] = " "
+        if stop:
+            out[start] = ";"
+            if start > 0 and read[start - 1] not in " \t":
+                return read          # a mark stuck to a word: no list
+    return "".join(out)
+
+
+def _bracket_pairs(read: str) -> frozenset[int]:
+    """The offsets of the round brackets that pair up ("bring me a drink *(*any drink is fine*)*"), not nested: a
+    bracket alone, or a pair inside a pair, is ignored as before (words35)."""
+    if "(" not in read:
+        return frozenset()
+    found: set[int] = set()
+    opened = -1
+    for k, character in enumerate(read):
+        if character == "(":
+            opened = k if opened < 0 else -2        # a second "(" before ")": nested, no pair of the first
+        elif character == ")":
+            if opened >= 0:
+                found.update((opened, k))
+            opened = -1
+    return frozenset(found)
+
+
+def _label(mark: str) -> str:
+    return mark.strip("()- .:\t").strip().lower()
+
+
+def _next_label(label: str) -> str:
+    return str(int(label) + 1) if label.isdigit() else chr(ord(label) + 1)
 
 
 _OTHER_DIGIT = re.compile(r"(?![0-9])\d")

@@ -3205,3 +3205,130 @@ def test_a_verb_and_its_preposition_in_a_clause_of_purpose_is_read(library: Libr
     """"a plate for an egg to rest on": "on" is the plate's, said before, not a particle alone (words34)."""
     parse = parse_command("provide a plate for a pear to rest on in the fridge", library)
     assert [f.frame for f in parse.frames] == ["Give", "Place"]
+
+
+
+
+# words35: what crowd workers wrap a command in, passives of things, a wish said as "what I need is"
+@pytest.mark.parametrize(("text", "want"), [
+    ("so what I need is for you to open the shed", [("Open", {"theme": "shed"})]),
+    ("what you have to do is open the shed", [("Open", {"theme": "shed"})]),
+    ("alright, close the gate", [("Close", {"theme": "gate"})]),
+    ("listen up robot, close the gate", [("Close", {"theme": "gate"})]),
+    ("first things first: open the shed", [("Open", {"theme": "shed"})]),
+    ("can you manage to open the gate?", [("Open", {"theme": "gate"})]),
+    ("are you capable of closing the hatch", [("Close", {"theme": "hatch"})]),
+    ("do you think you're able to find my scarf?", [("Find", {"theme": "scarf"})]),
+    ("you're going to close the hatch", [("Close", {"theme": "hatch"})]),
+    ("ya gotta close the hatch", [("Close", {"theme": "hatch"})]),
+    ("gimme the ladle", [("Give", {"theme": "ladle", "recipient": "me"})]),
+    ("cud u open the hatch", [("Open", {"theme": "hatch"})]),
+    ("1) open the shed 2) find the rake", [("Open", {"theme": "shed"}), ("Find", {"theme": "rake"})]),
+    ("Step 1: open the shed. Step 2: find the rake", [("Open", {"theme": "shed"}), ("Find", {"theme": "rake"})]),
+    ("first - open the hatch; second - close it", [("Open", {"theme": "hatch"}), ("Close", {"theme": "hatch"})]),
+])
+def test_a_command_wrapped_as_people_say_it(text: str, want: list[tuple[str, dict[str, str]]],
+                                            library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("the rake should be taken to the shed", [("Bring", {"theme": "rake", "goal": "shed"})]),
+    ("the ladle needs to be placed in the drawer", [("Place", {"theme": "ladle", "goal": "drawer"})]),
+    ("the letters must be brought to Priya", [("Bring", {"theme": "letter", "recipient": "Priya"})]),
+])
+def test_a_thing_said_to_need_a_verb_done_to_it_is_that_verb(text: str, want: list[tuple[str, dict[str, str]]],
+                                                             library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("what I want is the towels taken to the bathroom", [("Bring", {"theme": "towel", "goal": "bathroom"})]),
+    ("what we need is the jars on the pantry shelf counted", [("Count", {"theme": "jar", "ground": "shelf"})]),
+    ("what I'd like is the blue scarf", [("Bring", {"theme": "scarf", "recipient": "me"})]),
+])
+def test_a_wish_said_as_what_i_need_is_is_no_question(text: str, want: list[tuple[str, dict[str, str]]],
+                                                      library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("guide Ben to the hall, then Ana to the porch",
+     [("Guide", {"theme": "Ben", "goal": "hall"}), ("Guide", {"theme": "Ana", "goal": "porch"})]),
+    ("escort Priya to the gate and then Tom to the shed",
+     [("Guide", {"theme": "Priya", "goal": "gate"}), ("Guide", {"theme": "Tom", "goal": "shed"})]),
+    ("count the jars in the pantry and then the ones in the cellar",
+     [("Count", {"theme": "jar", "ground": "pantry"}), ("Count", {"theme": "one", "ground": "cellar"})]),
+    ("find the red scarf and then the blue one", [("Find", {"theme": "scarf"}), ("Find", {"theme": "scarf"})]),
+])
+def test_a_second_clause_said_without_its_verb_is_the_verb_again(text: str, want: list[tuple[str, dict[str, str]]],
+                                                                 library: Library) -> None:
+    """Gapping (words35): the verb is said once, a person and a path or a thing and a place follow "then"."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("answer a question for Priya, who is in the den", [("Answer", {"theme": "question", "recipient": "Priya"})]),
+    ("tell the joke to Tom, who's on the porch", [("Tell", {"message": "joke", "recipient": "Tom"})]),
+])
+def test_a_comma_relative_after_the_person_told_describes_them(text: str, want: list[tuple[str, dict[str, str]]],
+                                                                library: Library) -> None:
+    """", who is in the den" after the person of a verb of speech whose message is said: no question (words35)."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want", "remark"), [
+    ("bring me a scarf (any colour is fine) from the hall",
+     [("Bring", {"theme": "scarf", "recipient": "me", "source": "hall"})], "any colour is fine"),
+    ("follow Ada - she's the one in red - to the porch", [("Follow", {"theme": "Ada", "goal": "porch"})],
+     "she's the one in red"),
+    ("lift the vase \u2014 mind, it's heavy \u2014 and put it on the shelf",
+     [("Pick", {"theme": "vase"}), ("Place", {"theme": "vase", "goal": "shelf"})], "mind, it's heavy"),
+    ("open the shed (and then close it)", [("Open", {"theme": "shed"}), ("Close", {"theme": "shed"})], None),
+    ("open the gate - then find the rake - and bring it to me",
+     [("Open", {"theme": "gate"}), ("Find", {"theme": "rake"}), ("Bring", {"theme": "rake", "recipient": "me"})], None),
+])
+def test_an_aside_in_brackets_or_dashes_is_a_remark(text: str, want: list[tuple[str, dict[str, str]]],
+                                                    remark: str | None, library: Library) -> None:
+    """words35: an aside is kept as a remark, never dropped in silence; a clause in brackets is read as said."""
+    assert_reads(text, want, library)
+    remarks = parse_command(text, library).remarks
+    assert (remark in remarks) if remark else not remarks
+
+
+@pytest.mark.parametrize(("text", "want", "remark"), [
+    ("bring me the mug, the one that's chipped", [("Bring", {"theme": "mug", "recipient": "me"})], None),
+    ("find the man in the hall, the one who is waving", [("Find", {"theme": "man", "ground": "hall"})],
+     "the one who is waving"),
+    ("follow the woman who's the one wearing a scarf", [("Follow", {"theme": "woman"})], None),
+    ("bring me the jar on the shelf that is the biggest",
+     [("Bring", {"theme": "jar", "recipient": "me", "source": "shelf"})], None),
+    ("you'll lead the woman in the scarf to the porch", [("Guide", {"theme": "woman", "goal": "porch"})], None),
+])
+def test_the_one_that_describes_the_noun_said_before(text: str, want: list[tuple[str, dict[str, str]]],
+                                                     remark: str | None, library: Library) -> None:
+    """", the one that's X" and "who's the one X-ing" describe the noun (words35); after a place phrase the
+    description is a remark, never the place's."""
+    assert_reads(text, want, library)
+    remarks = parse_command(text, library).remarks
+    assert (remark in remarks) if remark else not remarks
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("your job: open the shed", [("Open", {"theme": "shed"})]),
+    ("could you kind of close the gate?", [("Close", {"theme": "gate"})]),
+    ("got to find the rake in the shed", [("Find", {"theme": "rake", "ground": "shed"})]),
+    ("lead Priya to the gate and after that Tom to the shed",
+     [("Guide", {"theme": "Priya", "goal": "gate"}), ("Guide", {"theme": "Tom", "goal": "shed"})]),
+    ("answer a question for the man sitting in the den, who seems lost",
+     [("Answer", {"theme": "question", "recipient": "man"})]),
+])
+def test_more_of_what_people_say_around_a_command(text: str, want: list[tuple[str, dict[str, str]]],
+                                                  library: Library) -> None:
+    """words35, after paraphrases14's first score."""
+    assert_reads(text, want, library)
+
+
+def test_your_job_without_its_colon_announces_nothing(library: Library) -> None:
+    with pytest.raises(CommandError):
+        parse_command("your job is done", library)

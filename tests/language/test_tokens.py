@@ -77,3 +77,37 @@ def test_a_mark_on_no_letter_is_still_refused_at_its_column() -> None:
     with pytest.raises(CommandError, match=r"unexpected character .*U\+0301") as caught:
         tokenize("go to the \u0301hall")
     assert caught.value.column == 11
+
+
+@pytest.mark.parametrize(("text", "read"), [
+    ("1) water the ferns 2) feed the cat", ["water", "the", "ferns", ";", "feed", "the", "cat"]),
+    ("(a) open the gate (b) close it", ["open", "the", "gate", ";", "close", "it"]),
+    ("1. sweep the porch. 2. wipe the bench", ["sweep", "the", "porch", ".", "wipe", "the", "bench"]),
+    ("Step 1: rinse the jug Step 2: dry it", ["rinse", "the", "jug", ";", "dry", "it"]),
+    ("1 - lock the shed, 2 - feed the hens", ["lock", "the", "shed", ",", ";", "feed", "the", "hens"]),
+])
+def test_the_marks_that_number_a_list_are_stops_between_its_steps(text: str, read: list[str]) -> None:
+    """A list numbered 1, 2, ... or a, b, ... (words35): each mark after the first reads as a stop, columns kept."""
+    words = tokenize(text)
+    assert [w.lower for w in words] == read
+    assert all(text[w.start:w.end].lower() == w.lower for w in words if w.lower.isalpha())
+
+
+@pytest.mark.parametrize(("text", "read"), [
+    ("bring me 2. then sit", ["bring", "me", "2", ".", "then", "sit"]),          # no list opens the command
+    ("1) feed the cat", ["1", "feed", "the", "cat"]),                             # one mark: no list
+    ("1) feed the cat 3) water it", ["1", "feed", "the", "cat", "3", "water", "it"]),   # 3 does not follow 1
+])
+def test_a_number_that_counts_no_list_is_read_as_said(text: str, read: list[str]) -> None:
+    assert [w.lower for w in tokenize(text)] == read
+
+
+@pytest.mark.parametrize(("text", "read"), [
+    ("gimme the ladle", ["give", "me", "the", "ladle"]),
+    ("lemme know", ["let", "me", "know"]),
+    ("you gotta feed it", ["you", "got", "to", "feed", "it"]),
+])
+def test_two_words_run_together_are_read_as_both(text: str, read: list[str]) -> None:
+    words = tokenize(text)
+    assert [w.lower for w in words] == read
+    assert "".join(w.text for w in words) == text.replace(" ", "")

@@ -14,6 +14,7 @@ from seal_cli.language.english import (
     POLITE,
     PREPOSITIONS,
     PRONOUNS,
+    RELATIVES,
     SEPARATOR_WORDS,
     VERB_JOINTS,
     VERB_TAKES,
@@ -181,6 +182,22 @@ PARTITIVE_OF = Rule("of after how many", _partitive_of, (
 _COMMA_RELATIVES = frozenset(["who", "whom", "whose", "which"])
 
 
+def _the_one_described(s: State, i: int) -> Match | None:
+    """"bring me the mug on the shelf*, the one* that's chipped", "find the man in the hall*, the one* who is
+    waving": "the one" set off by a comma after a noun, then a relative clause, names the noun again to describe it
+    (words35): the comma and "the one" are dropped, the relative clause describes the noun. After a noun of a
+    place phrase ("the man in the hall, the one who is waving") it describes the thing before, not the place: the
+    whole of it is a remark then, never the place's."""
+    words = s.words
+    if i + 3 >= len(words) or words[i + 1].lower != "the" or words[i + 2].lower not in ("one", "ones") or \
+            words[i + 3].lower not in RELATIVES or s.verb_index < 0 or s.prev_tag() not in (Tag.NAME, Tag.WORD):
+        return None
+    if any(w.tag == Tag.PREP for w in s.out[s.verb_index + 1:]):
+        end = s.cond_end(i + 1)
+        return Match(end - i, remarks=((words[i + 1].start, words[end - 1].end),))
+    return Match(3)
+
+
 def _comma_relative(s: State, i: int) -> Match | None:
     """A relative clause set off by a comma after a name or a noun ("take it to Adel*, who's in the bathroom*"):
     it describes the noun as one without the comma does, and asks nothing (no question to tell)."""
@@ -188,8 +205,16 @@ def _comma_relative(s: State, i: int) -> Match | None:
     if i + 2 >= len(words) or words[i + 1].lower not in _COMMA_RELATIVES or s.verb_index < 0 or \
             s.prev_tag() not in (Tag.NAME, Tag.WORD):
         return None
-    m = s.relative(i + 1)
+    m = s.relative(i + 1, described=s.speech and _said_before_person(s))
     return Match(1 + m.consumed, m.words, expect=AFTER_SEP) if m else None
+
+
+def _said_before_person(s: State) -> bool:
+    """Whether a verb of speech has its message (or question) before the person ("answer *a question* for Morgan",
+    "tell *the time* to Jo"): a comma's "who ..." after the person then describes them (words35), nothing more said."""
+    after = s.out[s.verb_index + 1:]
+    first = next((k for k, w in enumerate(after) if w.tag == Tag.PREP), -1)
+    return first > 0 and after[-1].tag in (Tag.NAME, Tag.WORD) and any(w.tag == Tag.WORD for w in after[:first])
 
 
 def _separator(s: State, i: int) -> Match | None:
@@ -244,9 +269,15 @@ STRANDED_RELATIVE = Rule("relative clause of it, its preposition last", _strande
     Example("leave the jar on the table it was on", "it was on", Tag.REL),
 ), frozenset(["it", "they"]), "'it' and a past verb after a noun, its preposition ending the clause: a relative "
    "clause without 'that'")
+THE_ONE_DESCRIBED = Rule("', the one' and a relative clause after a noun", _the_one_described, (
+    Example("bring me the mug, the one that is chipped", "that is chipped", Tag.REL),
+    Example("find the man, the one who is waving", "waving", Tag.VBG_I),
+    Example("find the man in the hall, the one who is waving. then greet him", "greet", Tag.VERB),
+), frozenset([","]), "', the one that ...' after a noun: the noun described again, 'the one' dropped")
 COMMA_RELATIVE = Rule("relative clause after a comma", _comma_relative, (
     Example("take it to Adel, who's in the bathroom.", "who's", Tag.REL),
     Example("give the cup to the man, who is sitting on the sofa", "sitting", Tag.VBG_P),
+    Example("tell the joke to Priya, who is in the den", "who is", Tag.REL),
 ), frozenset([","]), "', who is ...' after a name or a noun: a relative clause describing it, not a question")
 SEPARATOR = Rule("separator", _separator, (
     Example("take the cup and put it on the table", "and", Tag.SEP),

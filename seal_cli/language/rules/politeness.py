@@ -81,9 +81,12 @@ def _adverb_comma(s: State, i: int) -> Match | None:
     return None
 
 
-_ANNOUNCING = frozenset(["is", "need", "want", "do"])
+_ANNOUNCING = frozenset(["is", "need", "want", "do", "job", "task", "mission"])
 """Last words of a phrase that announces the task ("the task is", "here's what I need", "what I want you to do
 is": words33): a verb must follow (after a colon or comma), else they are no politeness ("the task is done")."""
+
+_ANNOUNCED = frozenset(["job", "task", "mission"])
+"""Nouns of "your job: ..." (words35), an announcement only with its colon or comma."""
 
 _ORDINALS = frozenset(["second", "third", "fourth"])
 """Ordinals that say which step comes ("*second,* fill it": words33) only before a comma or a verb."""
@@ -98,13 +101,15 @@ def _politeness(s: State, i: int) -> Match | None:
     n = match_phrase(words, i, POLITE)
     if low == "to" and n == 1 and _goal_said_first(s, i):
         return None                                   # "*To the dining room,* follow Jane": where, said first
-    if low in _ORDINALS and not (i + 1 < len(words) and words[i + 1].lower == "," or s.verb_after(i + 1)):
+    if low in _ORDINALS and not (i + 1 < len(words) and words[i + 1].lower in (",", ";", ":") or s.verb_after(i + 1)):
         return None                                   # "*second* cup, please": a thing's order, no step's
     k = i + n
     while k < len(words) and words[k].lower != "to" and is_adverb(words[k].lower):
         k += 1                                        # "would you mind *terribly* switching off ..."
-    if n > 2 and words[i + n - 1].lower in _ANNOUNCING and k < len(words) and words[k].lower in (":", ","):
+    if n > 1 and words[i + n - 1].lower in _ANNOUNCING and k < len(words) and words[k].lower in (":", ","):
         k += 1                                        # "the task is*:* bring me ...", "here's what I need*:* go ..."
+    elif n == 2 and words[i + 1].lower in _ANNOUNCED:
+        return None                                   # "your job" with no colon: no announcement ("your job is done")
     if n > 1 and words[i + n - 1].lower in _VERB_NEXT | _ANNOUNCING and not s.verb_after(k):
         return None                                   # "help me to the bathroom": "help" is the verb said (words27);
         #   "what about the dishes?": a question, no suggestion of a deed ("what about closing it": words30)

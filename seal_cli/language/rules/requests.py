@@ -111,8 +111,8 @@ def _question(s: State, i: int) -> Match | None:
     if QUESTION_MEANS not in s.lexicon.units or i + 1 >= len(words) or words[i + 1].lower in END_MARKS:
         return None
     nxt = words[i + 1].lower
-    if nxt not in ("is", "are", "'s", "was", "were") and not nxt.isalpha():
-        return None
+    if nxt not in ("is", "are", "'s", "was", "were") and not nxt.isalpha() or _phrase(s, i, _PSEUDO_CLEFTS):
+        return None                               # "what I need is X": a wish (``WISHED_STATE``), no question
     end = s.speech_end(i)                         # the question, whatever its shape, is what to tell
     if end - i < 3 and words[end - 1].lower in ("is", "are", "'s", "was", "were"):
         return None                               # "what is": no question yet
@@ -948,7 +948,11 @@ def _state_unit(s: State, low: str) -> str | None:
     return result[1] if result is not None else None        # "I'd like my tea *hot*": heat it
 
 
-_WISHED_STATES = WISHED_PLACED | frozenset(["i need", "we need"])
+_WISHES = WISHED_PLACED | frozenset(["i need", "we need"])
+_PSEUDO_CLEFTS = frozenset(f"what {wish} is" for wish in _WISHES)
+"""A wish said as "*what I need is* the dishes counted" (a pseudo-cleft, words35): what follows "is" is the wish's
+object, as after "I need"; no question of what something is (``QUESTION`` leaves it)."""
+_WISHED_STATES = _WISHES | _PSEUDO_CLEFTS
 
 
 def _wished_state(s: State, i: int) -> Match | None:
@@ -1194,7 +1198,7 @@ _NEEDS_DONE = frozenset(["needs", "need", "wants", "has to be", "have to be", "n
                          "wants to be", "should be", "must be", "is to be", "are to be"])
 """What a person said to need a verb done to them is said with ("Ana *needs* guiding to the door", "Ben *has to be*
 taken to the exit"): the -ing form after "needs"/"wants", a past participle after the others."""
-_PERSON_WORDS = 12
+_PERSON_WORDS = 16
 """The most words the person's noun phrase may have before what they need ("the person at the coat rack raising
 their right arm")."""
 
@@ -1210,9 +1214,10 @@ def _person_needs(s: State, i: int) -> tuple[int, int, str] | None:
     person = named
     for k in range(i + 1, min(len(words) - 1, i + _PERSON_WORDS)):
         n = _phrase(s, k, _NEEDS_DONE)
-        if n and person and k + n < len(words):
-            low = words[k + n].lower
-            lemma = gerund_lemma(low) if words[k + n - 1].lower in ("needs", "need", "wants") else \
+        gerund = n and words[k + n - 1].lower in ("needs", "need", "wants")
+        if n and (person or not gerund and first.lower in DETERMINERS) and k + n < len(words):
+            low = words[k + n].lower    # a thing too, with its passive: "the apple *should be taken* to ..." (words35)
+            lemma = gerund_lemma(low) if gerund else \
                 next((v for v in (verb_lemma(low),) if v is not None and low in participles(v)), None)
             return (k, n + 1, lemma) if lemma is not None and (lemma,) in s.lexicon.units.get(lemma, ()) \
                 else None
@@ -1732,6 +1737,7 @@ WISHED_DONE = Rule("a wish for a thing done", _wished_done, (
     Example("I want the apple brought to me", "I want", Tag.VERB),
     Example("I'd like the plate put on the table", "put", Tag.PARTICLE),
     Example("we need the chairs moved to the porch", "we need", Tag.VERB),
+    Example("what I want is the towels taken to the bathroom", "what I want is", Tag.VERB),
 ), first_words(_WISHED_STATES), "'I want X brought to me', 'I'd like X put on Y': bring X to me, put X on Y")
 WISHED_STATE = Rule("a wish for a thing's state", _wished_state, (
     Example("I'd like the blinds closed", "I'd like", Tag.VERB),
@@ -1741,6 +1747,7 @@ WISHED_STATE = Rule("a wish for a thing's state", _wished_state, (
     Example("I'd like my tea hot", "hot", Tag.PARTICLE),
     Example("I want the door open and the radio on", "open", Tag.PARTICLE),
     Example("I'd like the bread and butter warm", "warm", Tag.PARTICLE),
+    Example("what we need is the plates on the shelf counted", "what we need is", Tag.VERB),
 ), first_words(_WISHED_STATES), "'I'd like X closed', 'I want X off': close X, turn X off")
 RESULTATIVE = Rule("a thing left in a state", _resultative, (
     Example("leave the door open", "leave", Tag.VERB),
@@ -2072,7 +2079,13 @@ def _fronted_end(s: State, i: int) -> Match | None:
         return None                               # "*in there,* find the sponge": a place pointed at, said first
     if k < len(out) - 1 and out[k + 1].tag != Tag.PREP or not _clause_at(s, i + 1):
         return None
-    return Match(1, (s.words[i].tagged(Tag.SEP),), expect=True)
+    if 0 <= k < len(out) - 1 and out[k].tag not in _BEFORE_FRONTED:
+        return None                               # "answer the man standing *in the hall*, who ...": no phrase said
+    return Match(1, (s.words[i].tagged(Tag.SEP),), expect=True)     # first, the clause's own (words35)
+
+
+_BEFORE_FRONTED = frozenset([Tag.SEP, Tag.POLITE, Tag.END])
+"""Tags a phrase said before the verb may follow: it opens its clause."""
 
 
 FRONTED_OF = Rule("of-phrase first", _fronted_of, (
