@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import difflib
 import math
-from collections.abc import Iterable, Iterator, Mapping, Sequence
+from collections.abc import Container, Iterable, Iterator, Mapping, Sequence
 from dataclasses import InitVar, dataclass, field, replace
 from functools import cached_property
 from typing import TYPE_CHECKING, Any
@@ -542,15 +542,16 @@ class Map:
         """The kinds of thing the map knows of, by class key, sorted: its priors' classes and its objects'."""
         return sorted({class_key(c) for c in (*self.priors, *(o.cls for o in self.objects))})
 
-    def spelt_like(self, cls: str, kinds: Iterable[str] = ()) -> str:
+    def spelt_like(self, cls: str, kinds: Iterable[str] = (), words: Container[str] = frozenset()) -> str:
         """``; the map names a mgu, spelt like it (a typo in the map?)`` when a kind of thing the map knows of
         (:meth:`kinds`, and ``kinds``) is spelt like ``cls``, which it does not know; else nothing. A refusal of a
         thing the map lacks then says what the user can fix: the map's ``{class: mgu}`` (hostile26: "the m knows no
-        mug" said nothing of it)."""
+        mug" said nothing of it). A kind among ``words`` (the classes the library knows) is spelt as meant, no typo:
+        "slice the bread" on a map with beds said "the map names a bed, spelt like it" (lead, stop 39)."""
         import difflib
 
         key = class_key(cls)
-        known = sorted({*self.kinds(), *(class_key(k) for k in kinds)} - {key})
+        known = sorted(k for k in {*self.kinds(), *(class_key(k) for k in kinds)} - {key} if k not in words)
         close = difflib.get_close_matches(key, known, n=1, cutoff=0.6)
         return f"; the map names a {close[0].replace('_', ' ')}, spelt like it (a typo in the map?)" if close else ""
 

@@ -144,6 +144,8 @@ class Things:
         """The commanded frames whose goal "put away" chose."""
         self.put_back: list[Binding] = []
         """The commanded frames that put a thing "back" where the robot will take it from."""
+        self.goal_back: list[Binding] = []
+        """The commanded frames whose goal "back" chose (where the thing was taken from or lies: "put it back")."""
         self.points: dict[str, tuple[float, float]] = {}
         """Where the map puts each of its rooms (the middle), places, things and people, by id."""
         self.every: Mapping[str, int] = {}
@@ -883,6 +885,8 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
                 things.put_away.append(frame.bind(said))
             if back_later:  # back where the robot will have taken it from
                 things.put_back.append(frame.bind(said))
+            if "goal" in placed_back:
+                things.goal_back.append(frame.bind(said))
             bindings.append(reading.bind(said))
     return bindings
 
@@ -1109,7 +1113,7 @@ def _fetched_unheard_of(frame: Frame, evoked: Evoked, values: Mapping[str, tuple
         kin = taxonomy.kin(cls)
         alike = sorted(k for k in things.kinds if kin is not None and k in kin[1])
         has = f"; of its kind ({kin[0]}) it has: {', '.join(_words(k) for k in alike)}" if kin and alike else ""
-        has += m.spelt_like(cls, things.kinds)
+        has += m.spelt_like(cls, things.kinds, taxonomy.known_classes)
         raise _located(f"the {m.said} knows no {_words(cls)} (no prior, object or place of one), so the "
                        f"robot would not find one to {' '.join(words_of(evoked.lexical_unit))}{has}; say something "
                        "the house has", phrase, text)
@@ -1552,7 +1556,7 @@ def the_nearest_ones(commanded: Sequence[Binding], things: Things) -> None:
                  if c == cls and n not in things.fixed and (n == theme or n not in used)}
         places = {p for p in lying.values() if p is not None}
         if len(lying) < 2 or None in lying.values() or len({things.class_of(p) for p in places}) != 1 \
-                or len(places) < 2 or _put_where_it_lies(theme, lying[theme], commanded[index:]):
+                or len(places) < 2 or _put_where_it_lies(theme, lying[theme], commanded[index:], things):
             continue
         start = _robot_at(binding.frame, "source", {}, commanded[:index], things)
         order = sorted(places)
@@ -1562,12 +1566,15 @@ def the_nearest_ones(commanded: Sequence[Binding], things: Things) -> None:
             things.swap(theme, best)
 
 
-def _put_where_it_lies(theme: str, lies: str | None, commanded: Sequence[Binding]) -> bool:
-    """Whether a frame of the command puts ``theme`` where it lies: its goal was read off where that one lies (put
+def _put_where_it_lies(theme: str, lies: str | None, commanded: Sequence[Binding], things: Things) -> bool:
+    """Whether a frame of the command puts ``theme`` where it lies, its goal read off where that one lies (put
     back, put away where it is kept already: "put the milk back", "take the milk and put it back"), so that one is
     the thing meant. Trading its name for a nearer one's moved the other thing there (hostile26: on the corner shop,
-    a milk in each fridge, "put the milk back" took the kitchen's milk and put it in the shop's fridge)."""
-    return any(b.elements.get("theme") == theme and b.elements.get("goal") == lies for b in commanded)
+    a milk in each fridge, "put the milk back" took the kitchen's milk and put it in the shop's fridge). A goal the
+    command said is no such reading: "put the milk in the fridge in the shop" still takes the kitchen's milk there
+    (lead, stop 39: with any goal counted, it said the shop's milk "holds already")."""
+    return any(b.elements.get("theme") == theme and b.elements.get("goal") == lies
+               and (b in things.put_away or b in things.goal_back) for b in commanded)
 
 
 def _lies_on(name: str, things: Things) -> str | None:

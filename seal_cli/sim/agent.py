@@ -1268,7 +1268,7 @@ class Agent:
         alike = [k for k in m.kinds() if kin is not None and k in kin[1]]
         if kin is not None and alike:
             said += f"; of its kind ({kin[0]}) the map has: {', '.join(k.replace('_', ' ') for k in alike)}"
-        return said + m.spelt_like(cls)
+        return said + m.spelt_like(cls, words=taxonomy.known_classes)
 
     def _drive_into(self, region: Any, field_: np.ndarray) -> float:
         """Metres to the nearest free cell of a region (inf when none can be reached)."""

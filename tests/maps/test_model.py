@@ -747,3 +747,7 @@ def test_a_kind_the_map_spells_like_an_unknown_one_is_named() -> None:
     assert m.spelt_like("mug") == "; the map names a mgu, spelt like it (a typo in the map?)"
     assert m.spelt_like("mgu") == "" and m.spelt_like("sofa") == ""
     assert "coffee table" in m.spelt_like("coffee_tabel", ["coffee_table"])
+    beds = Map("m", (0.0, 0.0, 10.0, 10.0), priors={"bed": {"kitchen": 1.0}},
+               rooms=(Room.box("kitchen", 0, 0, 10, 10),))
+    assert "a bed, spelt like it" in beds.spelt_like("bread")
+    assert beds.spelt_like("bread", words={"bed", "bread"}) == ""       # a word the library knows is no typo
