@@ -549,6 +549,11 @@ class Agent:
                 continue
             if resolved[0] != "room" and {class_key(m.places[i].name) for i in resolved[1]} <= {class_key(goal)}:
                 continue          # the goal itself: one lies there already
+            if resolved[0] == "room" and (place := m.place(goal)) is not None and place.room is not None \
+                    and class_key(place.room) in {class_key(m.rooms[i].name) for i in resolved[1]}:
+                continue          # the goal's room: its prior is the goal's own (lead, stop 39: the houseboat's
+                #                   "put the blanket on the sofa" circled the saloon, where the seen one kept the
+                #                   belief, 211 m before "it found no other")
             targets.append(target)
         return targets
 

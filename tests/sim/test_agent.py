@@ -782,6 +782,25 @@ def test_another_one_is_looked_for_where_such_things_are_kept(library: Library) 
     assert agent.records[-1].text.endswith("found no other, so Place(theme=milk, goal=fridge_1) needs no doing")
 
 
+@pytest.mark.parametrize(("house", "text", "goal", "before"), [
+    ("houseboat", "put the blanket on the sofa", "sofa_1", 211.38),
+    ("guesthouse", "hang my umbrella on the coat rack", "coat_rack_1", 51.81)])
+def test_the_one_seen_where_another_is_to_go_is_no_evidence_of_where_another_lies(
+        library: Library, house: str, text: str, goal: str, before: float) -> None:
+    """Lead, stop 39: the blanket seen on the sofa kept SeFM's belief of a blanket at the sofa, so the search for
+    another circled the saloon (211.38 m, "saloon: blanket 1.00 there" after every look); the umbrella's search for
+    another stayed in the reception it was kept in (51.81 m). The one not meant is no detection of the class now, and
+    the goal's room is no place to look for another (its prior is the goal's own)."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    agent, result = pipeline.run_on_map(load_map(house), text, library, SeFMPolicy(particles=50),
+                                        rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    assert agent.records[-1].text.endswith("needs no doing") and goal in agent.records[-1].text
+    assert result.path_m < before / 3
+
+
 def test_a_thing_in_one_of_several_places_of_the_goals_class_is_put_there_already(library: Library) -> None:
     """Lead, after e2e27: "put the milk in the fridge" on the corner shop (a fridge in the shop and one in the kitchen,
     a milk in each) found milk_2 in the fridge it chose and searched the whole house for another milk, 256 m, to move
