@@ -1388,11 +1388,33 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
                                 "in between (another --done) or drop one of them")
         state = state.apply(binding)
         changed.update((f.positive, text) for f in binding.postconditions)
+    _nothing_to_hand(parse, commanded, state)
     warnings = (*unknown_to_map(commanded, things), *chosen_among(commanded, things)) if map else ()
     return Problem(parse.text, tuple(commanded), state, warnings,
                    tuple(b for b in things.put_away if b in commanded),
                    tuple(b for b in things.put_back if b in commanded), dict(things.called),
                    {b: places for b, places in among.items() if b in commanded})
+
+
+def _nothing_to_hand(parse: Parse, commanded: Sequence[Binding], state: State) -> None:
+    """Refuse a frame that hands over or puts down a thing it does not name ("give me", "gimme") when the robot holds
+    nothing as the command starts (after ``--done``) and no frame before it takes anything up: there is nothing to
+    give. Before, the plan was a Give of nothing and ``seal run`` drove to the speaker and said it was done (lead,
+    stop 39). Holding something, the frame is left as it was."""
+    if Fact("hand_empty") not in state:
+        return
+    for binding in commanded:
+        if binding.frame.gets_held():
+            return
+        if binding.frame.needs_held("theme") and "theme" in binding.frame.roles and "theme" not in binding.elements:
+            evoked = next((e for e in parse.frames if e.frame == binding.frame.name and "theme" not in e.elements),
+                          None)
+            verb = " ".join(words_of(evoked.lexical_unit)) if evoked is not None else binding.frame.name.lower()
+            message = (f"{verb} what? the command says no thing to {verb}, and the robot holds nothing; say what "
+                       f"(\"{verb} me the cup\")")
+            if evoked is None:
+                raise SealError(message)
+            raise SealError(message, Where(None, 1, evoked.span[0] + 1), source_line=parse.text)
 
 
 def _people_named(bindings: Sequence[Binding], things: Things) -> list[str]:

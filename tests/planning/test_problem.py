@@ -765,3 +765,24 @@ def test_a_done_command_that_is_no_text_is_named(done: str, said: str, library: 
 
     with pytest.raises(SealError, match=said):
         problem_of_text("stir the cup", library, done=[done])
+
+
+def test_a_thing_to_hand_over_unsaid_with_nothing_held_is_refused_at_the_verb(library: Library) -> None:
+    """"give me" (and "gimme") was a Give of nothing: `seal run` drove to the speaker and said it was done (lead,
+    stop 39). Holding something, as the command starts or by --done, or taking something up first, it stands."""
+    from seal_cli.errors import SealError
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan as plan_text
+
+    apartment = load_map("apartment")
+    for text in ("give me", "gimme"):
+        with pytest.raises(SealError, match=r"give what\? the command says no thing to give, and the robot holds "
+                                            r"nothing") as refused:
+            plan_text(text, library, map=apartment)
+        assert refused.value.where.column == 1
+    assert [str(s) for s in plan_text("give me", library, map=apartment, holding="cup").steps] == [
+        "Give(recipient=me)"]
+    assert [str(s) for s in plan_text("give me", library, map=apartment, done=["pick up the cup"]).steps] == [
+        "Give(recipient=me)"]
+    assert [str(s) for s in plan_text("pick up the cup and give me", library, map=apartment).steps] == [
+        "Pick(theme=cup)", "Give(theme=cup, recipient=me)"]
