@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
-__all__ = ["SealError", "SealErrors", "Where", "at_line", "caret", "readable"]
+__all__ = ["SealError", "SealErrors", "Where", "at_line", "at_words", "caret", "readable"]
 
 
 @dataclass(frozen=True, order=True)
@@ -117,6 +117,14 @@ class SealError(Exception):
 
     def to_json(self) -> dict[str, object]:
         return {"file": self.file, "line": self.line, "column": self.column, "message": self.message}
+
+
+def at_words(message: str, span: tuple[int, int] | None, text: str) -> SealError:
+    """An error about some words of a command (``span``, their characters in ``text``), with a caret under them when
+    their place is known; the message alone when it is not."""
+    if span is None:
+        return SealError(message)
+    return SealError(message, Where(None, 1, span[0] + 1), source_line=text)
 
 
 def at_line(error: SealError, file: str, line: int, source_line: str) -> SealError:

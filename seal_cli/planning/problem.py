@@ -43,7 +43,7 @@ from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
-from seal_cli.errors import SealError, Where
+from seal_cli.errors import SealError, Where, at_words
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Action, Binding, Fact, Frame
 from seal_cli.frames.taxonomy import Taxonomy, check_class_name, class_key, class_words
@@ -348,11 +348,9 @@ def _goal_not_source(evoked: Evoked, values: Mapping[str, tuple[str, ...]], thin
                    "place)", goal, text)
 
 
-def _located(message: str, phrase: Phrase | None, text: str) -> SealError:
-    """An error about a phrase, with a caret under it when its place in the text is known."""
-    if phrase is None or phrase.span is None:
-        return SealError(message)
-    return SealError(message, Where(None, 1, phrase.span[0] + 1), source_line=text)
+def _located(message: str, phrase: Phrase | Evoked | None, text: str) -> SealError:
+    """An error about a phrase (or a frame's words), with a caret under it when its place in the text is known."""
+    return at_words(message, phrase.span if phrase is not None else None, text)
 
 
 def _said(phrase: Phrase | None, name: str) -> str:
@@ -1410,11 +1408,8 @@ def _nothing_to_hand(parse: Parse, commanded: Sequence[Binding], state: State) -
             evoked = next((e for e in parse.frames if e.frame == binding.frame.name and "theme" not in e.elements),
                           None)
             verb = " ".join(words_of(evoked.lexical_unit)) if evoked is not None else binding.frame.name.lower()
-            message = (f"{verb} what? the command says no thing to {verb}, and the robot holds nothing; say what "
-                       f"(\"{verb} me the cup\")")
-            if evoked is None:
-                raise SealError(message)
-            raise SealError(message, Where(None, 1, evoked.span[0] + 1), source_line=parse.text)
+            raise _located(f"{verb} what? the command says no thing to {verb}, and the robot holds nothing; say what "
+                           f"(\"{verb} me the cup\")", evoked, parse.text)
 
 
 def _people_named(bindings: Sequence[Binding], things: Things) -> list[str]:

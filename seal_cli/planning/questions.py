@@ -43,7 +43,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 
-from seal_cli.errors import SealError, Where
+from seal_cli.errors import SealError, at_words
 from seal_cli.frames.model import Action, Binding, Frame
 from seal_cli.language.english import CHECK_WHETHER, WH_WORDS
 from seal_cli.language.values import Evoked, Parse, Phrase
@@ -260,7 +260,7 @@ def read_questions(parse: Parse, commanded: Sequence[Binding], names: MapNames |
             try:
                 question = Question("fact", relation=fact) if fact else _what(said, names)
             except Refusal as refused:                                 # "who is in the kitchen?": no kitchen
-                raise _at_message(refused, message, parse.text) from None
+                raise at_words(refused.message, message.span, parse.text) from None
             if put_to_person(message):                                  # "ask Raj if he wants tea"
                 question = Question("asked")
             if question is None and answered and reports(said):           # "find the cup and tell me where it is"
@@ -275,13 +275,6 @@ def read_questions(parse: Parse, commanded: Sequence[Binding], names: MapNames |
             questions.update((b, question) for b in commanded[start:k])
             answered = answered or question.kind not in ("report", "asked")
     return questions
-
-
-def _at_message(refused: Refusal, message: Phrase, text: str) -> SealError:
-    """A refusal of what a question asks about, placed at the question's words in the command."""
-    if message.span is None:
-        return SealError(refused.message)
-    return SealError(refused.message, Where(None, 1, message.span[0] + 1), source_line=text)
 
 
 def anything_there(parse: Parse) -> Parse:
