@@ -29,8 +29,8 @@ from seal_cli.bench.reliability import FRAME, FRAME_YAML, Case, hostile_setting
 
 __all__ = ["alfred2d_data", "attacker_cases", "chain_library", "hostile14_cases", "hostile15_cases", "hostile16_cases",
            "hostile17_cases", "hostile18_cases", "hostile19_cases", "hostile20_cases", "hostile21_cases",
-           "hostile22_cases", "hostile23_cases", "hostile24_cases", "hostile25_cases", "hostile26_cases", "rgba_png",
-           "sparse_pgm", "split_house"]
+           "hostile22_cases", "hostile23_cases", "hostile24_cases", "hostile25_cases", "hostile26_cases",
+           "hostile27_cases", "rgba_png", "sparse_pgm", "split_house"]
 
 DIGITS = "1" * 5_000
 """An integer longer than Python converts from text (4,300 digits)."""
@@ -294,6 +294,7 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield from hostile24_cases()
     yield from hostile25_cases()
     yield from hostile26_cases()
+    yield from hostile27_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -1366,3 +1367,119 @@ def hostile26_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
     yield Case("A localize with a --done of control characters", ("localize", "--map", "studio", "--steps", "3",
                                                                   "--particles", "20", "--done", "\x01\x02\x7f\x1b[2J"),
                codes=(1,), says=r"--done")
+
+
+def _pgm16(width: int, height: int, value: int) -> bytes:
+    """A 16-bit binary PGM (maximum 65535, each pixel two bytes, most significant first) of one ``value``, its header
+    with a comment between each of its numbers (as netpbm allows)."""
+    return f"P5\n# a\n{width} # b\n{height}\n# c\n65535\n".encode() + value.to_bytes(2, "big") * (width * height)
+
+
+def _two_cycle_files() -> tuple[tuple[str, bytes], tuple[str, bytes]]:
+    """Two ``.frame`` files whose frames need each other's postcondition: Whisk (in c.frame) needs ``beaten``, which
+    only Beat (in d.frame) ensures, and Beat needs ``whisked``, which only Whisk ensures."""
+    whisk = ('category container = cup, bowl\nworld holding, hand_empty\nframe Whisk "whisk" {\n  theme: container\n'
+             '  requires beaten(theme)\n  do navigate(theme)\n  ensures whisked(theme)\n}\n')
+    beat = ('frame Beat "beat" {\n  theme: container\n  requires whisked(theme)\n  do navigate(theme)\n'
+            '  ensures beaten(theme)\n}\n')
+    return ("c.frame", whisk.encode()), ("d.frame", beat.encode())
+
+
+def hostile27_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read top to bottom
+    """Round hostile27: options given as empty strings (``--holding``, a bag's topics and frames), a map named with a
+    NUL or a right-to-left override, ``--goals`` written as a bag (onto a device, onto a file where a bag folder goes,
+    hard-linked to the map, through ``..``, by two runs at once, interrupted, a killed run's temporary), commands and
+    ``--done`` texts of 60,000 to 100,000 words, a precondition cycle across two frame files, the houseboat's shut
+    places, a 16-bit ROS map image, a seed of 2**128 + 1, clocks at the calendar's ends, priors of a thing summing to
+    zero."""
+    studio = ("--map", "studio")
+    loc = ("localize", *studio, "--steps", "1", "--particles", "20")
+    task = (*loc, "--task", "go to the sofa")
+    # -- options given as empty strings ----------------------------------------------------------------------------
+    yield Case("A plan with --holding ''", ("plan", "go to the sofa", *studio, "--holding", ""), codes=(1,),
+               says=r"--holding")
+    yield Case("A run with --holding ''", ("run", "go to the sofa", *studio, "--holding", "", "--particles", "20"),
+               codes=(1,), says=r"--holding")
+    yield Case("A localize with --holding ''", (*task, "--holding", ""), codes=(1,), says=r"--holding")
+    bag = _sample_bag()
+    if bag is not None:
+        for option in ("--pose-topic", "--frame", "--base-frame"):
+            yield Case(f"A import-bag with {option} ''", ("import-bag", "r.mcap", "-o", "o.yaml", option, ""),
+                       (("r.mcap", bag),), codes=(1,), keep=("r.mcap",), absent=("o.yaml",), says=f"{option}\\b")
+        yield Case("A localize --bag with --detections-topic ''",
+                   ("localize", "--map", "apartment", "--bag", "r.mcap", "--steps", "1", "--particles", "20",
+                    "--detections-topic", ""), (("r.mcap", bag),), codes=(1,), keep=("r.mcap",),
+                   says=r"--detections-topic\b")
+    # -- a map's own name -------------------------------------------------------------------------------------------
+    named = "bounds: [0, 0, 10, 10]\nrooms:\n  - {name: hall, box: [0, 0, 10, 10]}\n"
+    yield Case("A validate of a map named with a NUL", ("validate", "m.yaml"),
+               (("m.yaml", ('name: "m\\0x"\n' + named).encode()),), codes=(1,), keep=("m.yaml",),
+               says=r"m\.yaml:1:7: ")
+    yield Case("A map --png of a map named with a right-to-left override", ("map", "m.yaml", "--png", "o.png"),
+               (("m.yaml", ('name: "m\\u202Eeman"\n' + named).encode()),), codes=(1,), keep=("m.yaml",),
+               absent=("o.png",), says=r"m\.yaml:1:7: ")
+    # -- --goals written as a bag -----------------------------------------------------------------------------------
+    yield Case("A localize --goals onto /dev/full, a bag folder's name", (*task, "--goals", "/dev/full"), codes=(1,),
+               says=r"--goals /dev/full")
+    yield Case("A localize --goals onto a file where a bag folder goes", (*task, "--goals", "out"),
+               (("out", b"a file, not a bag folder\n"),), codes=(1,), keep=("out",), says=r"--goals out\b")
+    mine = (("m.yaml", _areas("  - {name: a, box: [0, 0, 10, 10]}\n",
+                              "  - {name: sofa_1, class: sofa, at: [5, 5]}\n")),)
+    mine_task = ("localize", "--map", "m.yaml", "--steps", "1", "--particles", "20", "--task", "go to the sofa")
+    yield Case("A localize --goals as a bag hard-linked to its map", (*mine_task, "--goals", "g.bag"),
+               (*mine, ("g.bag", "hard:m.yaml")), codes=(1,), keep=("m.yaml", "g.bag"), says=r"--goals g\.bag")
+    yield Case("A localize --goals through .. onto its map", (*mine_task, "--goals", "d/../m.yaml"),
+               (*mine, ("d", "dir")), codes=(1,), keep=("m.yaml",), says=r"--goals d/\.\./m\.yaml")
+    yield Case("Two localize --goals onto one .mcap at once", (*task, "--goals", "g.mcap"), codes=(0,), parallel=2,
+               whole=("g.mcap",), says=r"(?s).")
+    yield Case("A SIGINT during localize --goals .mcap", (*task, "--goals", "g.mcap"), codes=(130,),
+               absent=("g.mcap",), signal=(2, 0.0), signal_on=r"^\.g\.mcap\.")
+    stale = ".g.mcap.seal999999-0123abcd.tmp"
+    yield Case("A killed localize's bag temporary is swept", (*task, "--goals", "g.mcap"),
+               ((f"{stale}/out/half.mcap", b"half"),), codes=(0,), whole=("g.mcap",), absent=(stale,),
+               says=r"(?s).")
+    # -- 60,000 to 100,000 words -------------------------------------------------------------------------------------
+    yield Case("A parse --file of one line of 100,000 words", ("parse", "--file", "c.txt", "--json"),
+               (("c.txt", (" ".join(["cup"] * 100_000) + "\n").encode()),), codes=(0,), keep=("c.txt",), twice=True)
+    yield Case("A bench plan --file of one line of 100,000 words",
+               ("bench", "plan", "--file", "c.txt", "--repeat", "1"),
+               (("c.txt", (" ".join(["go"] * 100_000) + "\n").encode()),), codes=(1,), keep=("c.txt",),
+               says=r"c\.txt:1:\d+: command too long")
+    yield Case("A run with a --done of 60,000 words", ("run", "go to the sofa", *studio, "--particles", "20",
+                                                       "--done", "go to the bed " + " ".join(["a"] * 60_000)),
+               codes=(1,), says=r"--done")
+    # -- a precondition cycle across two files -----------------------------------------------------------------------
+    yield Case("A plan on two frame files whose frames need each other",
+               ("plan", "whisk the cup", "--framelib", "c.frame", "--framelib", "d.frame"), _two_cycle_files(),
+               codes=(1,), keep=("c.frame", "d.frame"), says=r"[cd]\.frame:\d+:\d+: precondition cycle")
+    # -- the houseboat's shut places ---------------------------------------------------------------------------------
+    boat = ("--map", "houseboat")
+    yield Case("A run to put the mug in the houseboat's shut locker",
+               ("run", "put the mug in the locker", *boat, "--particles", "50"), codes=(0,),
+               says=r"done: Place\(theme=mug, goal=locker_1\)")
+    yield Case("A plan on the houseboat: the locker opened, then shut, before taking the rope",
+               ("plan", "take the rope out of the locker", *boat, "--done", "open the locker", "--done",
+                "close the locker"), codes=(0,), says=r"Open +theme=locker_1")
+    yield Case("A run on the houseboat: the fridge said open already, bring me the milk",
+               ("run", "bring me the milk", *boat, "--done", "open the fridge", "--particles", "50"), codes=(0,),
+               says=r"plan: (?![^\n]*Open\(theme=fridge_1)")
+    # -- a ROS map image of 16 bits ----------------------------------------------------------------------------------
+    ros = (b"image: m.pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\nnegate: 0\noccupied_thresh: 0.65\n"
+           b"free_thresh: 0.196\n")
+    yield Case("A map whose ROS image is a 16-bit PGM with comments in its header", ("map", "m.yaml", "--json"),
+               (("m.yaml", ros), ("m.pgm", _pgm16(100, 80, 65535))), codes=(0,), keep=("m.yaml", "m.pgm"))
+    # -- numbers at their edges --------------------------------------------------------------------------------------
+    yield Case("A run with a seed of 2**128 + 1", ("run", "go to the sofa", *studio, "--particles", "20", "--seed",
+                                                   str(2 ** 128 + 1)), codes=(0,), twice=True,
+               says=r"done: Go\(goal=sofa_1\)")
+    yield Case("A run whose clock reads the last minute of 9999", ("run", "go to the sofa", *studio, "--particles",
+                                                                   "20", "--clock", "9999-12-31T23:59"), codes=(0,),
+               says=r"done: Go\(goal=sofa_1\)")
+    yield Case("A run whose clock reads the year 0", ("run", "go to the sofa", *studio, "--particles", "20", "--clock",
+                                                      "0000-01-01T00:00"), codes=(1,), says=r"--clock")
+    zero = (b"name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {name: kitchen, box: [0, 0, 5, 10]}\n"
+            b"  - {name: hall, box: [5, 0, 10, 10]}\npriors:\n  mug: {kitchen: 0, hall: 0.0}\n"
+            b"robot: {pose: [1, 1, 0]}\n")
+    yield Case("A run to find a thing whose priors sum to zero", ("run", "find the mug", "--map", "m.yaml",
+                                                                  "--particles", "20"),
+               (("m.yaml", zero),), codes=(1,), keep=("m.yaml",), says=r"m\.yaml:\d+:\d+: ")
