@@ -1485,6 +1485,7 @@ def hostile27_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
     zero = (b"name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {name: kitchen, box: [0, 0, 5, 10]}\n"
             b"  - {name: hall, box: [5, 0, 10, 10]}\npriors:\n  mug: {kitchen: 0, hall: 0.0}\n"
             b"robot: {pose: [1, 1, 0]}\n")
+    # masses given, the rest of 1 spread over all free space: masses all 0 are a uniform prior (maps.priors), searched
     yield Case("A run to find a thing whose priors sum to zero", ("run", "find the mug", "--map", "m.yaml",
                                                                   "--particles", "20"),
-               (("m.yaml", zero),), codes=(1,), keep=("m.yaml",), says=r"m\.yaml:\d+:\d+: ")
+               (("m.yaml", zero),), codes=(1,), keep=("m.yaml",), says=r"not done: no mug found")
