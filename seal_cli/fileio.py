@@ -22,6 +22,7 @@ import contextlib
 import errno
 import os
 import re
+import shutil
 import signal
 import stat
 import sys
@@ -40,7 +41,7 @@ __all__ = ["LOADER", "MAX_IMAGE_BYTES", "MAX_INPUT_BYTES", "YAML_BREAKS", "Outpu
            "atomic_write_text", "clean_up_on_signals", "compose_documents", "compose_yaml", "decode", "interrupted",
            "note_interrupts", "open_regular", "read_bytes", "read_json", "read_json_lines", "read_text", "read_yaml",
            "remove_temporaries", "shown_path", "signals_wait", "split_lines", "stdin_hint", "stream_lines", "typed",
-           "yaml_problem"]
+           "work_folder", "yaml_problem"]
 
 if TYPE_CHECKING:
     LOADER: type[yaml.SafeLoader]
@@ -621,7 +622,23 @@ def _sweep(target: Path) -> None:
             found = _TEMP.match(entry.name[len(target.name) + 1:])
             if found and int(found.group(1)) != os.getpid() and not _alive(int(found.group(1))):
                 with contextlib.suppress(OSError):
-                    os.unlink(entry.path)
+                    if entry.is_dir(follow_symlinks=False):     # a bag writer's work folder (work_folder)
+                        shutil.rmtree(entry.path)
+                    else:
+                        os.unlink(entry.path)
+
+
+def work_folder(target: Path) -> Path:
+    """A new folder beside ``target`` to build it in (a bag's writer makes a folder of files), named as a temporary
+    of ``target`` with this process's id: the next write of ``target`` removes it if its process was killed (hostile27:
+    ``localize --goals g.mcap`` killed left ``.g.mcap.2x8f_k1/`` for ever, named by ``tempfile.mkdtemp``). The caller
+    removes it."""
+    import secrets
+
+    _sweep(target)
+    folder = target.parent / f".{target.name}.seal{os.getpid()}-{secrets.token_hex(4)}.tmp"
+    folder.mkdir()
+    return folder
 
 
 def _check_not_stdout(path: Path, option: str) -> None:

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from seal_cli.errors import SealError, Where
 
-__all__ = ["MAX_NAME", "check_name_length", "check_plannable", "check_sayable", "name_too_long"]
+__all__ = ["MAX_NAME", "check_name_length", "check_plannable", "check_sayable", "check_shown", "name_too_long"]
 
 MAX_NAME = 100
 """The most characters a name may hold (the class names' bound too: ``frames.taxonomy.MAX_CLASS_NAME``)."""
@@ -33,6 +33,35 @@ def check_name_length(name: str, what: str, where: Where | None = None) -> str:
     problem = name_too_long(name, what, where)
     if problem is not None:
         raise problem
+    return name
+
+
+UNSHOWN = {"Cc": "a control character", "Zl": "a line separator", "Zp": "a paragraph separator",
+           "Cs": "half of a character (a lone surrogate)"}
+"""Unicode's categories of what a name cannot hold to be shown: on a terminal (a NUL ends a C string, an escape
+starts a terminal's command), in a picture's title (no glyph) or on a line of its own."""
+
+REORDERING = {"LRE", "RLE", "LRO", "RLO", "PDF", "LRI", "RLI", "FSI", "PDI"}
+"""Unicode's bidirectional embeddings, overrides and isolates: invisible, they reorder what follows them on the line
+(a right-to-left override turns the rest of a terminal's line around). Other invisible characters stay: a zero-width
+non-joiner belongs in Persian words, a zero-width joiner in emoji."""
+
+
+def check_shown(name: str, what: str, where: Where | None = None) -> str:
+    """``name`` itself, or a problem at ``where`` if it holds a character no terminal line or picture shows as itself
+    (:data:`UNSHOWN`, :data:`REORDERING`). A map's own name is never said in a command (so it may hold symbols and
+    punctuation), but it is the first word of ``seal map``, a picture's title and the JSON's ``map``: a map named
+    ``"m\\0x"`` or ``"m\\u202Eeman"`` (YAML's escapes) validated, its NUL drawn as a missing glyph, its override
+    reversing the rest of the terminal's line (hostile27)."""
+    import unicodedata
+
+    for character in name:
+        kind = unicodedata.category(character)
+        if kind in UNSHOWN or unicodedata.bidirectional(character) in REORDERING:
+            called = unicodedata.name(character, "")
+            raise SealError(f"{what} {name!r} holds {character!r} (U+{ord(character):04X}{' ' if called else ''}"
+                            f"{called}), {UNSHOWN.get(kind, 'an invisible character that reorders the line')}, "
+                            "which no terminal line or picture shows as itself: name it in printable characters", where)
     return name
 
 

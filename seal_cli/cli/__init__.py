@@ -121,7 +121,7 @@ def a_number(value: float | None) -> float | None:
 
 
 OUTPUT_SUFFIXES = {"--png": (".png",), "--rrd": (".rrd",), "--episodes": (".jsonl", ".json"),
-                   "--goals": (".yaml", ".yml"), "--output": (".yaml", ".yml")}
+                   "--goals": (".yaml", ".yml", ".bag", ".mcap"), "--output": (".yaml", ".yml")}
 """The suffixes each output option's format may carry (``--png out.jpg`` is refused, not mislabelled)."""
 
 

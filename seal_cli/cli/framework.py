@@ -72,7 +72,7 @@ def command(*args: Any, on: typer.Typer | None = None, **kwargs: Any) -> Callabl
         @functools.wraps(function)
         def run(*a: Any, **kw: Any) -> None:
             def checked() -> int | None:
-                _refuse_empty_paths(kw)
+                _refuse_empty_values(kw)
                 return function(*a, **_composed_commands(kw))
 
             code = run_command(checked)
@@ -126,23 +126,49 @@ def _composed_commands(values: dict[str, Any]) -> dict[str, Any]:
     return {name: one(value) if name in COMMAND_TEXTS else value for name, value in values.items()}
 
 
-def _refuse_empty_paths(values: dict[str, Any]) -> None:
-    """Refuse a file or folder option given an empty value (``--pddl ''``): typer reads it as ``.``, the current
-    folder, and ``plan --pddl ''`` wrote its files there, ``--png ''`` was "a folder". An option's name is its
-    parameter's (``max_steps``: ``--max-steps``)."""
+def _options() -> list[Any]:
+    """The running command's options (click's parameters that have ``--names``), or none outside a command."""
+    from typer._click.globals import get_current_context
+
+    context = get_current_context(silent=True)
+    return [p for p in context.command.params if p.param_type_name == "option"] if context is not None else []
+
+
+def _given_empty(opts: list[str], argv: list[str]) -> str | None:
+    """Which of an option's names ``argv`` gives an empty value (``--pddl ''``, ``--pddl=``), or None."""
+    for option in opts:
+        if f"{option}=" in argv or any(argv[k] == option and argv[k + 1] == "" for k in range(len(argv) - 1)):
+            return option
+    return None
+
+
+def _refuse_empty_values(values: dict[str, Any]) -> None:
+    """Refuse an option given an empty value, naming it. A file or folder option: typer reads ``''`` as ``.``, the
+    current folder, and ``plan --pddl ''`` wrote its files there, ``--png ''`` was "a folder". Any other: ``''`` was
+    read as if the option were left out, or as a name no one gives (hostile27: ``plan --holding ''`` planned with the
+    map's robot's hand, ``run --holding ''`` with an empty one; ``import-bag --pose-topic ''`` said "no topic  in the
+    bag"; ``--done ''`` and ``--task ''`` were "column 1: empty command", naming no option). The option is named as
+    typed (its click names, not its parameter's: ``--vocabulary`` of ``vocabulary_file`` was "an empty
+    VOCABULARY_FILE was given")."""
     import sys
 
     from seal_cli.errors import SealError
 
     argv = sys.argv[1:]
+    options = {p.name: p for p in _options()}
     for name, given in values.items():
-        paths = given if isinstance(given, list | tuple) else [given]
-        if not any(isinstance(p, Path) and str(p) == "." for p in paths):
+        items = given if isinstance(given, list | tuple) else [given]
+        if not any(isinstance(v, Path) and str(v) == "." or v == "" for v in items):
             continue
-        option = "--" + name.replace("_", "-")
-        if f"{option}=" in argv or any(argv[k] == option and argv[k + 1] == "" for k in range(len(argv) - 1)):
-            raise SealError(f"{option} is empty: give a file or folder name")
-        if option not in argv and "" in argv and "." not in argv:  # an argument, not an option: `validate ''`
+        option = _given_empty(options[name].opts, argv) if name in options and "--map" not in options[name].opts \
+            else None
+        if option is not None:  # (an empty --map is the map's name's problem: resources.map_path lists the maps)
+            out = "" if options[name].required else ", or leave the option out"
+            said = (f" (an empty command says nothing): give one{out}" if name in COMMAND_TEXTS[:4]
+                    else ": give a file or folder name" if any(isinstance(v, Path) for v in items)
+                    else f": give a value{out}")
+            raise SealError(f"{option} is empty{said}")
+        if any(isinstance(v, Path) for v in items) and "" in argv and "." not in argv:  # an argument: `validate ''`
             raise SealError(f"an empty {name.upper().rstrip('S')} was given: give a file or folder name")
 
 

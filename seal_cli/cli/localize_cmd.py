@@ -217,7 +217,7 @@ def localize(
     if goals is not None and not bindings:
         raise SealError("--goals writes a pose per frame, and there are none: give --task")
     rng = np.random.default_rng(seed)
-    goal_file = goals if goals is not None and goals.suffix in (".yaml", ".yml") else None  # bags: by their writer
+    goal_file = goals if goals is not None and goals.suffix else None  # a ROS 2 bag's folder: by its writer
     with Outputs({"--rrd": rrd, "--png": png, "--goals": goal_file},
                  [map_name, trajectory, observations, bag, labels, *(framelib or [])],
                  suffixes=OUTPUT_SUFFIXES) as files, progress_bar("updates", len(runs) + steps) as advance:

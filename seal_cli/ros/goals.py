@@ -25,8 +25,8 @@ from typing import Any
 import numpy as np
 import yaml
 
-from seal_cli.errors import SealError, Where
-from seal_cli.fileio import atomic_write_text
+from seal_cli.errors import SealError
+from seal_cli.fileio import atomic_write_text, shown_path
 from seal_cli.maps.model import Map
 
 __all__ = ["GOAL_TOPIC", "Goal", "check_goals_path", "goals_for", "write_goals"]
@@ -80,21 +80,34 @@ def goals_for(m: Map, frame_ids: Sequence[str], frames: Sequence[Mapping[str, An
 
 def check_goals_path(path: str | Path, inputs: Sequence[str | Path | None] = ()) -> None:
     """Refuse, before anything runs, a goals file that cannot be written or is one of ``inputs`` (the run's
-    inputs and its other outputs)."""
+    inputs and its other outputs), by path or by file (a hard link: hostile27, ``--goals g.bag`` hard-linked to the
+    map was replaced by the bag). A name without a suffix is a ROS 2 bag's folder, made new: one that names a file or
+    a device is refused too (hostile27: ``--goals /dev/full`` ran the whole filter, then said "Not a directory")."""
     target = Path(path)
+    shown = shown_path(target)
     for given in inputs:
-        if given is not None and os.path.realpath(given) == os.path.realpath(target):  # a link loop: no raise
-            raise SealError(f"--goals {target} is an input or another output of the run: give another file",
-                            Where(str(target)))
+        if given is not None and (os.path.realpath(given) == os.path.realpath(target) or _same_file(given, target)):
+            raise SealError(f"--goals {shown} is an input or another output of the run ({shown_path(given)}): give "
+                            "another file")
     if target.suffix and target.suffix not in (*YAML_SUFFIXES, *BAG_SUFFIXES):
-        raise SealError(f"--goals {target}: seal writes goals as YAML (.yaml, .yml), a ROS 1 bag (.bag), an MCAP bag "
-                        f"(.mcap) or a ROS 2 bag folder (a name without a suffix), not {target.suffix}",
-                        Where(str(target)))
+        raise SealError(f"--goals {shown}: seal writes goals as YAML (.yaml, .yml), a ROS 1 bag (.bag), an MCAP bag "
+                        f"(.mcap) or a ROS 2 bag folder (a name without a suffix), not {target.suffix}")
     folder = target.parent if str(target.parent) else Path(".")
     if not folder.is_dir():
-        raise SealError(f"cannot write goals to {target}: folder {folder} does not exist", Where(str(target)))
+        raise SealError(f"cannot write --goals {shown}: folder {shown_path(folder)} does not exist")
     if target.is_dir():
-        raise SealError(f"cannot write goals to {target}: a folder of that name exists", Where(str(target)))
+        raise SealError(f"cannot write --goals {shown}: a folder of that name exists")
+    if not target.suffix and (target.exists() or target.is_symlink()):
+        raise SealError(f"cannot write --goals {shown}: a name without a suffix is written as a ROS 2 bag's folder, "
+                        f"and {shown} is {'a file' if target.is_file() else 'no folder (a device or a link)'}; give a "
+                        "new name, or one ending .yaml, .bag or .mcap")
+
+
+def _same_file(one: str | Path, other: Path) -> bool:
+    try:
+        return os.path.samefile(one, other)
+    except OSError:
+        return False
 
 
 def write_goals(path: str | Path, goals: Sequence[Goal], frame: str = "map", stamp: float = 0.0) -> None:

@@ -15,7 +15,6 @@ from __future__ import annotations
 import contextlib
 import os
 import shutil
-import tempfile
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
@@ -23,6 +22,7 @@ from typing import Any
 import numpy as np
 
 from seal_cli.errors import SealError, Where
+from seal_cli.fileio import work_folder
 from seal_cli.ros.messages import DETECTION_2D, DETECTION_3D, ODOMETRY, TF, require_rosbags, typestore
 from seal_cli.ros.transforms import yaw_quaternion
 
@@ -145,9 +145,15 @@ def write_bag(path: str | Path, messages: Sequence[Message], store: Any | None =
     if target.is_dir():
         raise SealError(f"cannot write {target}: a folder of that name exists (a bag folder is not overwritten)",
                         Where(str(target)))
+    if target.exists() and not target.is_file():    # a device: a bag is built beside it and renamed into place
+        raise SealError(f"cannot write {target}: it is no file nor folder (a device?); give a file name",
+                        Where(str(target)))
     ros1 = is_ros1(target)
     store = store or typestore(ros1)
-    work = Path(tempfile.mkdtemp(prefix=f".{target.name}.", dir=folder))
+    try:
+        work = work_folder(target)
+    except OSError as exc:
+        raise SealError(f"cannot write {target}: {exc.strerror or exc}", Where(str(target))) from None
     try:
         inner = work / ("out.bag" if ros1 else "out")
         _write(inner, messages, store, ros1, mcap=target.suffix == ".mcap")

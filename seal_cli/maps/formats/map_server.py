@@ -61,7 +61,7 @@ from seal_cli.maps.geometry import (
     shrink_factor,
 )
 from seal_cli.maps.model import MAX_LISTED, Map, MapWarning, ObjectTruth, Person, Place, Robot, Room, Sensor
-from seal_cli.names import check_name_length, check_sayable
+from seal_cli.names import check_name_length, check_sayable, check_shown
 from seal_cli.resources import map_path
 from seal_cli.yamlnodes import NodeReader
 from seal_cli.yamlnodes import is_null as _is_null
@@ -400,7 +400,7 @@ class _Reader(NodeReader):
         server = self.map_server(nodes, root)
         name = self.string(nodes["name"], "name") if "name" in nodes else None
         if name is not None:
-            name = self.build(functools.partial(check_name_length, name, "map name"), nodes["name"])
+            name = self.build(functools.partial(_map_name, name), nodes["name"])
         fields["name"] = name or _default_name(self.path)
         if "bounds" in nodes:
             fields["bounds"] = self.bounds(nodes["bounds"])
@@ -737,6 +737,11 @@ def _checked_name(name: str, what: str) -> str:
     """A room's or a person's name, checked where it is written (its length, then whether a command can say it):
     a problem of the name is said at the name, not at the room's box or the person's first key."""
     return check_sayable(check_name_length(name, what), what)
+
+
+def _map_name(name: str) -> str:
+    """A map's own name, checked: not too long to show whole, nothing in it a terminal or a picture cannot show."""
+    return check_shown(check_name_length(name, "map name"), "map name")
 
 
 def _default_name(path: Path) -> str:
