@@ -571,3 +571,19 @@ def test_a_folder_removed_while_an_output_is_written_is_said_of_its_option(tmp_p
         shutil.rmtree(folder)                   # gone before the rename
     with pytest.raises(SealError, match="folder .* does not exist"), atomic_output(tmp_path / "no" / "x.png"):
         pass                                    # alone, atomic_output names its own target, as it always did
+
+
+def test_a_work_folder_carries_the_process_id_and_a_dead_one_s_is_swept(tmp_path: Path) -> None:
+    """A writer that builds its output in a folder (a bag) gets one named as a temporary of the target, with this
+    process's id; a folder of a process that no longer runs is removed, with what it holds (hostile27: a killed
+    ``--goals g.mcap`` left ``tempfile.mkdtemp``'s ``.g.mcap.2x8f_k1`` for ever)."""
+    from seal_cli.fileio import work_folder
+
+    dead = tmp_path / ".g.mcap.seal999999-0123abcd.tmp"
+    (dead / "out").mkdir(parents=True)
+    (dead / "out" / "half.mcap").write_bytes(b"half")
+    mine = work_folder(tmp_path / "g.mcap")
+    assert mine.is_dir() and mine.name.startswith(f".g.mcap.seal{os.getpid()}-") and mine.name.endswith(".tmp")
+    assert not dead.exists()
+    other = work_folder(tmp_path / "g.mcap")    # this process's own are live: never swept
+    assert mine.exists() and other != mine

@@ -11,7 +11,7 @@ from seal_cli.errors import SealError
 from seal_cli.frames.formats import dsl
 from seal_cli.frames.taxonomy import Category, Synonyms
 from seal_cli.maps.formats.map_server import load_map
-from seal_cli.names import MAX_NAME, check_name_length, name_too_long
+from seal_cli.names import MAX_NAME, check_name_length, check_shown, name_too_long
 
 SMALL = "name: {map}\nbounds: [0, 0, 10, 10]\nrooms:\n  - name: {room}\n    box: [0, 0, 5, 10]\n" \
         "people:\n  - {{name: {person}, at: [1, 1], role: {role}}}\n"
@@ -132,3 +132,29 @@ def test_a_name_with_a_no_break_space_is_sayable() -> None:
     from seal_cli.names import check_sayable
 
     assert check_sayable("living\u00a0room", "room name") == "living\u00a0room"
+
+
+@pytest.mark.parametrize(("name", "said"), [("m\x00x", "a control character"), ("m\x1b[2J", "a control character"),
+                                            ("m\u202eeman", "reorders the line"), ("a\u2028b", "a line separator")])
+def test_a_name_a_terminal_cannot_show_is_refused(name: str, said: str) -> None:
+    """hostile27: a map named with a NUL drew a missing glyph; a right-to-left override turned the terminal's line."""
+    with pytest.raises(SealError, match=re.escape(said)):
+        check_shown(name, "map name")
+
+
+@pytest.mark.parametrize("name", ["Café ☕ №5 — R&D", "خانه\u200cما", "👨\u200d👩\u200d👧 home", "2nd floor"])
+def test_a_name_of_symbols_punctuation_and_joiners_is_shown(name: str) -> None:
+    """A zero-width non-joiner belongs in Persian words, a zero-width joiner in emoji: only what reorders stays out."""
+    assert check_shown(name, "map name") == name
+
+
+@pytest.mark.parametrize(("escaped", "character"), [("\\0", "\\x00"), ("\\u202E", "\\u202e")])
+def test_a_map_named_with_what_cannot_be_shown_is_refused_at_its_name(tmp_path: Path, escaped: str,
+                                                                      character: str) -> None:
+    (tmp_path / "m.yaml").write_text(f'name: "m{escaped}x"\nbounds: [0, 0, 10, 10]\nrooms:\n'
+                                     "  - {name: hall, box: [0, 0, 10, 10]}\n")
+    with pytest.raises(SealError) as caught:
+        load_map(tmp_path / "m.yaml")
+    problems = getattr(caught.value, "problems", None) or [caught.value]
+    assert [(p.line, p.column) for p in problems] == [(1, 7)]
+    assert problems[0].message.startswith(f"map name 'm{character}x' holds '{character}'")

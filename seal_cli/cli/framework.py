@@ -156,20 +156,26 @@ def _refuse_empty_values(values: dict[str, Any]) -> None:
 
     argv = sys.argv[1:]
     options = {p.name: p for p in _options()}
-    for name, given in values.items():
-        items = given if isinstance(given, list | tuple) else [given]
+    for name, value in values.items():
+        items = value if isinstance(value, list | tuple) else [value]
         if not any(isinstance(v, Path) and str(v) == "." or v == "" for v in items):
             continue
-        option = _given_empty(options[name].opts, argv) if name in options and "--map" not in options[name].opts \
-            else None
-        if option is not None:  # (an empty --map is the map's name's problem: resources.map_path lists the maps)
-            out = "" if options[name].required else ", or leave the option out"
+        option = options.get(name)
+        if option is None:      # an argument: `validate ''`
+            if any(isinstance(v, Path) for v in items) and "" in argv and "." not in argv:
+                raise SealError(f"an empty {name.upper().rstrip('S')} was given: give a file or folder name")
+            continue
+        if "--map" in option.opts:  # an empty map name is the map's own problem: resources.map_path lists the maps
+            continue
+        typed = _given_empty(option.opts, argv)
+        if typed is None and "" in items and given(name):  # an empty text given, argv not this command's own
+            typed = max(option.opts, key=len)
+        if typed is not None:
+            out = "" if option.required else ", or leave the option out"
             said = (f" (an empty command says nothing): give one{out}" if name in COMMAND_TEXTS[:4]
                     else ": give a file or folder name" if any(isinstance(v, Path) for v in items)
                     else f": give a value{out}")
-            raise SealError(f"{option} is empty{said}")
-        if any(isinstance(v, Path) for v in items) and "" in argv and "." not in argv:  # an argument: `validate ''`
-            raise SealError(f"an empty {name.upper().rstrip('S')} was given: give a file or folder name")
+            raise SealError(f"{typed} is empty{said}")
 
 
 FramelibOption = typer.Option(None, "--framelib", help="Frame library file or folder (repeatable); "

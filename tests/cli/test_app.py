@@ -120,7 +120,24 @@ def test_an_empty_file_or_folder_name_is_refused_naming_the_option(tmp_path: Pat
         assert list(tmp_path.iterdir()) == []
     done = subprocess.run([sys.executable, "-m", "seal_cli", "plan", "--done", "", "stir the cup"], cwd=tmp_path,
                           capture_output=True, text=True)
-    assert "empty command" in done.stderr  # an empty text is the text's problem, not a path's
+    assert "--done is empty (an empty command says nothing)" in done.stderr  # a text's problem, not a path's
+
+
+def test_an_empty_value_of_any_option_is_refused_naming_it_as_typed(tmp_path: Path) -> None:
+    """hostile27: `plan --holding ''` planned with the map's robot's hand and `run --holding ''` with an empty one;
+    `--task ''` was "column 1: empty command"; `run --vocabulary ''` said "an empty VOCABULARY_FILE" (its parameter's
+    name); `bench perf --scale ''` "unknown scale ;". Each now names the option as typed; an empty --map still lists
+    the shipped maps."""
+    for argv, says in ((["plan", "stir the cup", "--holding", ""], "--holding is empty: give a value, or leave"),
+                       (["plan", "stir the cup", "--holding="], "--holding is empty"),
+                       (["localize", "--map", "studio", "--task", ""], "--task is empty (an empty command"),
+                       (["run", "go to the sofa", "--map", "studio", "--vocabulary", ""], "--vocabulary is empty"),
+                       (["parse", "-f", ""], "-f is empty"),
+                       (["bench", "perf", "--scale", ""], "--scale is empty"),
+                       (["plan", "stir the cup", "--map", ""], "the map's name is empty: give a map file")):
+        done = subprocess.run([sys.executable, "-m", "seal_cli", *argv], cwd=tmp_path, capture_output=True, text=True)
+        assert done.returncode == 1 and says in done.stderr and "Traceback" not in done.stderr, (argv, done.stderr)
+        assert list(tmp_path.iterdir()) == []
 
 
 def test_framelib_plus_alone_is_refused_not_read_as_the_current_folder(tmp_path: Path) -> None:

@@ -244,3 +244,47 @@ def test_a_map_whose_origin_turns_its_image_is_warned_of_with_a_bag(tmp_path: Pa
         said = "origin turns its image by 0.01 rad (0.6°)" in result.stderr and "amcl and Nav2's costmaps ignore" \
             in result.stderr
         assert said is warned, result.stderr
+
+
+def test_goals_where_a_bag_folder_goes_are_refused_before_the_run(tmp_path: Path) -> None:
+    """hostile27: a name without a suffix is a ROS 2 bag's folder; `--goals out` onto a file, or `--goals /dev/full`,
+    ran the whole filter and then said "Not a directory". Both are refused first, naming --goals; the file is kept."""
+    target = tmp_path / "out"
+    target.write_text("a file\n")
+    message = refused("localize", "--map", "apartment", "--task", "stir the cup", "--steps", "1", "--particles", "10",
+                      "--goals", str(target))
+    assert f"cannot write --goals {target}: a name without a suffix is written as a ROS 2 bag's folder" in message
+    assert target.read_text() == "a file\n"
+    assert "--goals /dev/full" in refused("localize", "--map", "apartment", "--task", "stir the cup", "--steps", "1",
+                                          "--goals", "/dev/full")
+
+
+def test_goals_as_a_bag_hard_linked_to_an_input_are_refused(tmp_path: Path) -> None:
+    """hostile27: `--goals g.bag`, g.bag a hard link to the observations, was replaced by the bag (the path differs,
+    the file is the same)."""
+    bag = kitchen_run(tmp_path / "run.mcap")
+    link = tmp_path / "g.mcap"
+    link.hardlink_to(bag)
+    before = bag.read_bytes()
+    message = refused("localize", "--map", "apartment", "--task", "stir the cup", "--bag", str(bag), "--goals",
+                      str(link))
+    assert f"--goals {link} is an input or another output of the run ({bag})" in message
+    assert bag.read_bytes() == before and link.read_bytes() == before
+
+
+def test_a_killed_goal_writer_s_work_folder_is_swept_and_the_bag_reads_back(tmp_path: Path) -> None:
+    """hostile27: the bag writer's work folder was ``tempfile.mkdtemp``'s ``.g.mcap.2x8f_k1``, left for ever by a
+    killed run; it now carries the writer's process id (``fileio.work_folder``), and the next write sweeps it."""
+    stale = tmp_path / ".g.mcap.seal999999-0123abcd.tmp"
+    (stale / "out").mkdir(parents=True)
+    (stale / "out" / "half.mcap").write_bytes(b"half")
+    result = invoke("localize", "--map", "apartment", "--task", "stir the cup", "--steps", "1", "--particles", "10",
+                    "--goals", str(tmp_path / "g.mcap"))
+    assert result.exit_code == 0, result.output
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["g.mcap"]
+    from rosbags.highlevel import AnyReader
+
+    from seal_cli.ros.messages import typestore
+
+    with AnyReader([tmp_path / "g.mcap"], default_typestore=typestore(False)) as reader:
+        assert [c.topic for c in reader.connections] == ["/goal_pose"] and len(list(reader.messages())) == 2
