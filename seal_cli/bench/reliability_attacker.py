@@ -241,7 +241,8 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield Case("A plan --pddl /dev/full", ("plan", "--pddl", "/dev/full", "stir the cup"), codes=(1,),
                says=r"--pddl")
     yield Case("A bench tasks --episodes /dev/full", ("bench", "tasks", "--suite", "map", "--layouts", "1",
-                                                      "--policies", "sefm", "--episodes", "/dev/full"),
+                                                      "--policies", "sefm", "--command", "go to the kitchen",
+                                                      "--particles", "50", "--episodes", "/dev/full"),
                codes=(1,), says=r"--episodes")
     # -- empty names and overlong values for options ------------------------------------------------------
     empties = {"plan --pddl ''": ("plan", "--pddl", "", "stir the cup"),
@@ -694,7 +695,7 @@ def hostile18_cases() -> Iterator[Case]:
                ("bench", "tasks", "--suite", "map", "--map", "apartment", "--policies", "sefm,sefm"), codes=(1,),
                says=r"--policies 'sefm,sefm' names 'sefm' twice")
     yield Case("A bench ros --format ''", ("bench", "ros", "--format", ""), codes=(1,),
-               says=r"--format '' names nothing")
+               says=r"--format( is empty|'' names nothing)[^\n]*mcap")
     yield Case("A bench reliability --match of no case", ("bench", "reliability", "--match", "zzz no case"),
                codes=(1,), says=r"--match 'zzz no case': no case's name holds this text")
     good = [(1.0, -6.0, -3.0, 0.0), (3.0, -5.0, -3.0, 0.0)]
@@ -917,7 +918,7 @@ def hostile21_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
     yield Case("A parse TEXT typed decomposed (NFD)", ("parse", "stir the cafe\u0301", "--json"), codes=(0,),
                says=r'"head": "caf\u00e9"')
     ascii_locale = (("LC_ALL", "C"), ("LANG", "C"), ("PYTHONUTF8", "0"), ("PYTHONCOERCECLOCALE", "0"))
-    for argv in (("parse", "stir the café"), ("plan", "stir the café", "--map", "apartment")):
+    for argv in (("parse", "stir the café"), ("plan", "stir the café")):  # the apartment knows no café (e2e27)
         yield Case(f"A {argv[0]} of an accented word in an ASCII locale", argv, codes=(0,), env=ascii_locale,
                    says=r"Stir .*caf\\xe9")
     yield Case("A plan of twenty apples", ("plan", "bring me twenty apples", "--map", "apartment", "--json"),

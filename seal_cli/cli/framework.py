@@ -172,9 +172,11 @@ def _refuse_empty_values(values: dict[str, Any]) -> None:
             typed = max(option.opts, key=len)
         if typed is not None:
             out = "" if option.required else ", or leave the option out"
+            helped = (option.help or "").rstrip(".")      # what it takes: its choices, if any
+            takes = f" ({helped[:1].lower()}{helped[1:]})" if helped else ""
             said = (f" (an empty command says nothing): give one{out}" if name in COMMAND_TEXTS[:4]
                     else ": give a file or folder name" if any(isinstance(v, Path) for v in items)
-                    else f": give a value{out}")
+                    else f": give a value{takes}{out}")
             raise SealError(f"{typed} is empty{said}")
 
 

@@ -128,12 +128,13 @@ def test_an_empty_value_of_any_option_is_refused_naming_it_as_typed(tmp_path: Pa
     `--task ''` was "column 1: empty command"; `run --vocabulary ''` said "an empty VOCABULARY_FILE" (its parameter's
     name); `bench perf --scale ''` "unknown scale ;". Each now names the option as typed; an empty --map still lists
     the shipped maps."""
-    for argv, says in ((["plan", "stir the cup", "--holding", ""], "--holding is empty: give a value, or leave"),
+    for argv, says in ((["plan", "stir the cup", "--holding", ""],
+                        "--holding is empty: give a value (the class of what the robot holds"),
                        (["plan", "stir the cup", "--holding="], "--holding is empty"),
                        (["localize", "--map", "studio", "--task", ""], "--task is empty (an empty command"),
                        (["run", "go to the sofa", "--map", "studio", "--vocabulary", ""], "--vocabulary is empty"),
                        (["parse", "-f", ""], "-f is empty"),
-                       (["bench", "perf", "--scale", ""], "--scale is empty"),
+                       (["bench", "perf", "--scale", ""], "--scale is empty: give a value (paper, building or large"),
                        (["plan", "stir the cup", "--map", ""], "the map's name is empty: give a map file")):
         done = subprocess.run([sys.executable, "-m", "seal_cli", *argv], cwd=tmp_path, capture_output=True, text=True)
         assert done.returncode == 1 and says in done.stderr and "Traceback" not in done.stderr, (argv, done.stderr)
