@@ -514,11 +514,12 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[Any, ...]]:
     other_object = {unit.text for frame in library.frames for unit in frame.lexical_units if unit.object}
 
     def named_by_many(synset: str) -> tuple[str, str] | None:
-        """Rule 15: (F, the unit whose first sense it is) for a synset that two or more verbs of the library name, all
-        evoking F alone, F one of ``heads``, and that is the first sense of one of them: discard.v.01 (discard, toss,
-        throw out, throw away, put away: Place), store.v.01 (store, put in: Place); not one whose object is another element
-        (fill.v.01: "fill the glass" says where a thing goes, so "flood" and "load" would put the glass). Such a synset *is* F's meaning in
-        WordNet, as the first sense of F's own verb is: a kind of it is a way of doing F ("trash" < discard.v.01)."""
+        """Rule 15: (F, the unit whose first sense it is) for a synset that two or more verbs of the library name,
+        all evoking F alone, F one of ``heads``, and that is the first sense of one of them: discard.v.01 (discard,
+        toss, throw out, throw away, put away: Place), store.v.01 (store, put in: Place); not one whose object is
+        another element (fill.v.01: "fill the glass" says where a thing goes, so "flood" and "load" would put the
+        glass). Such a synset *is* F's meaning in WordNet, as the first sense of F's own verb is: a kind of it is a
+        way of doing F ("trash" < discard.v.01)."""
         named = {lemma: verb for lemma in wordnet.lemmas[synset] if (verb := library_verb(lemma))}
         frames = {frame for verb in named.values() for frame in units[verb]}
         first = [lemma for lemma, verb in named.items() if lemma == verb and wordnet.senses[lemma][1][:1] == [synset]]
@@ -622,8 +623,9 @@ def causatives(wordnet: WordNet, library: Library, found: set[str], heads: dict[
             for frame, head in sorted(heads.items()):
                 synset = next((o for o in wordnet.up[sense] if wordnet.senses.get(head, (0, []))[1][:1] == [o]), None)
                 if synset is not None and all(o[0] != frame for o in out if o[1] == verb):
-                    out.append((frame, verb, f"wordnet:{wordnet.name(verb, sense)} < {wordnet.name(head, synset)} "
-                                             f"({head}), causing {wordnet.name(verb, offsets[0])}", "", "", False, True))
+                    source = f"wordnet:{wordnet.name(verb, sense)} < {wordnet.name(head, synset)} ({head}), " \
+                             f"causing {wordnet.name(verb, offsets[0])}"
+                    out.append((frame, verb, source, "", "", False, True))
     return out
 
 

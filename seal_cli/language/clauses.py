@@ -128,7 +128,8 @@ class Clauses:
             words = [*np.mods, np.head]
             verb = words[0]
             if verb.start != np.start or verb_lemma(verb.lower) != verb.lower or not self.types.evoked_by(verb.lower) \
-                    or class_key(verb.lower) in self.types.taxonomy.known_classes or self.types.opening_only(verb.lower):
+                    or class_key(verb.lower) in self.types.taxonomy.known_classes or \
+                    self.types.opening_only(verb.lower):
                 continue                      # "move the mug to *microwave*": a thing the library knows; "to *trash*
                 #                               can", "to *dust* pan": a word that is mostly a noun, a verb only before
                 #                               its object (alfred29)
