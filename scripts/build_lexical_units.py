@@ -75,6 +75,17 @@ cleaning_implement) and the gerund is a frame's own first verb ("clean": Clean),
 for it too. With the shipped library it gives nothing: mop, broom, squeegee, swab and swob reach Clean, but Clean
 washes a held thing at a sink (its instrument a washer), and none of those tools is a washer.
 
+And (rule 15, alfred29) rule 12 also takes a hyponym of a synset that two or more verbs of the library name, all
+evoking one frame F alone (F's first element a thing), that is the first sense of one of them, and none of whose
+verbs takes another element as its object: discard.v.01 (discard, throw away, throw out, toss, put away: Place) is
+where WordNet keeps F's meaning as much as F's own verb's first sense is, so "trash", "junk", "scrap" < discard.v.01
+are Places; store.v.01 (store, put in) gives "bin"; fill.v.01 (fill, object: goal) gives nothing.
+And (rule 16, alfred29) a verb of state or posture whose first sense takes no object ("stand", "sit") takes F through
+a sense that WordNet says *causes* the first (its cause pointer, ">": stand.v.10 "place upright" > stand.v.01) when
+that sense is a hyponym of the first sense of F's own verb (< put.v.01: Place), marked ``opening``; only the closed
+class's single words keep a verb out here ("stand" is in "where does it stand", read at no clause's start).
+The closed-class words are ``english.py``'s public tables only, not Python's ``__builtins__`` ("bin", "hash", "quit").
+
 A verb whose first sense fails rule 3 may still take a frame from it by **corroboration** (rule 5):
 the synset names two verbs of the library — a lexical unit itself, and a unit or a particle verb of
 one ("pick out" of "pick") whose *first* sense the synset is (what that verb mostly means) — and the
