@@ -75,6 +75,17 @@ cleaning_implement) and the gerund is a frame's own first verb ("clean": Clean),
 for it too. With the shipped library it gives nothing: mop, broom, squeegee, swab and swob reach Clean, but Clean
 washes a held thing at a sink (its instrument a washer), and none of those tools is a washer.
 
+And (rule 15, alfred29) rule 12 also takes a hyponym of a synset that two or more verbs of the library name, all
+evoking one frame F alone (F's first element a thing), that is the first sense of one of them, and none of whose
+verbs takes another element as its object: discard.v.01 (discard, throw away, throw out, toss, put away: Place) is
+where WordNet keeps F's meaning as much as F's own verb's first sense is, so "trash", "junk", "scrap" < discard.v.01
+are Places; store.v.01 (store, put in) gives "bin"; fill.v.01 (fill, object: goal) gives nothing.
+And (rule 16, alfred29) a verb of state or posture whose first sense takes no object ("stand", "sit") takes F through
+a sense that WordNet says *causes* the first (its cause pointer, ">": stand.v.10 "place upright" > stand.v.01) when
+that sense is a hyponym of the first sense of F's own verb (< put.v.01: Place), marked ``opening``; only the closed
+class's single words keep a verb out here ("stand" is in "where does it stand", read at no clause's start).
+The closed-class words are ``english.py``'s public tables only, not Python's ``__builtins__`` ("bin", "hash", "quit").
+
 A verb whose first sense fails rule 3 may still take a frame from it by **corroboration** (rule 5):
 the synset names two verbs of the library — a lexical unit itself, and a unit or a particle verb of
 one ("pick out" of "pick") whose *first* sense the synset is (what that verb mostly means) — and the
@@ -296,6 +307,7 @@ class WordNet:
         self.up: dict[str, list[str]] = defaultdict(list)
         self.down: dict[str, list[str]] = defaultdict(list)
         self.opposite: dict[str, set[str]] = defaultdict(set)      # synset -> the synsets of its antonyms
+        self.causes: dict[str, list[str]] = defaultdict(list)      # synset -> what it causes (stand.v.10 > stand.v.01)
         self.derived: dict[tuple[str, int], list[str]] = defaultdict(list)  # (synset, lemma's place) -> nouns
         self.adjective_opposites = self._adjective_opposites(folder / "data.adj")
         for line in (folder / "data.verb").read_text(encoding="latin-1").splitlines():
@@ -318,6 +330,8 @@ class WordNet:
                     self.down[offset].append(target)
                 elif pos == "v" and symbol == "!":
                     self.opposite[offset].add(target)
+                elif pos == "v" and symbol == ">":
+                    self.causes[offset].append(target)
         self.senses = self._index(folder / "index.verb")
         self.artifacts, self.kinds = self._artifacts(folder / "data.noun")
         self.noun_senses = self._index(folder / "index.noun")
@@ -439,13 +453,15 @@ class WordNet:
         return f"{lemma.replace(' ', '_')}.v.{self.senses[lemma][1].index(offset) + 1:02d}"
 
 
-def closed_class_words() -> frozenset[str]:
+def closed_class_words(phrases: bool = True) -> frozenset[str]:
     """Every word of English's closed classes and fixed phrases (``english.py``): "near", "back",
-    "sound" are a preposition, a particle and a linking verb before any verb WordNet lists."""
+    "sound" are a preposition, a particle and a linking verb before any verb WordNet lists. With ``phrases=False``,
+    the single words only (not "stand" of "where does it stand")."""
     words: set[str] = set()
-    for value in vars(english).values():
-        if isinstance(value, (frozenset, set, dict)):
-            words.update(word for key in value if isinstance(key, str) for word in key.split())
+    for name, value in vars(english).items():
+        if isinstance(value, (frozenset, set, dict)) and not name.startswith("_"):   # not __builtins__: "bin", "list"
+            keys = [key for key in value if isinstance(key, str) and (phrases or " " not in key)]
+            words.update(word for key in keys for word in key.split())
     return frozenset(words)
 
 
@@ -506,6 +522,23 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[Any, ...]]:
              frame.elements and frame.elements[0].role == "theme" and frame.elements[0].type != "question" and
              library.taxonomy.is_a(frame.elements[0].type, "person") is not True}
 
+    other_object = {unit.text for frame in library.frames for unit in frame.lexical_units if unit.object}
+
+    def named_by_many(synset: str) -> tuple[str, str] | None:
+        """Rule 15: (F, the unit whose first sense it is) for a synset that two or more verbs of the library name,
+        all evoking F alone, F one of ``heads``, and that is the first sense of one of them: discard.v.01 (discard,
+        toss, throw out, throw away, put away: Place), store.v.01 (store, put in: Place); not one whose object is
+        another element (fill.v.01: "fill the glass" says where a thing goes, so "flood" and "load" would put the
+        glass). Such a synset *is* F's meaning in WordNet, as the first sense of F's own verb is: a kind of it is a
+        way of doing F ("trash" < discard.v.01)."""
+        named = {lemma: verb for lemma in wordnet.lemmas[synset] if (verb := library_verb(lemma))}
+        frames = {frame for verb in named.values() for frame in units[verb]}
+        first = [lemma for lemma, verb in named.items() if lemma == verb and wordnet.senses[lemma][1][:1] == [synset]]
+        if len(named) < 2 or len(frames) != 1 or not first or next(iter(frames)) not in heads or \
+                any(verb in other_object for verb in named.values()):
+            return None
+        return next(iter(frames)), first[0]
+
     def named_for(verb: str, sense: str, why: str) -> list[tuple[Any, ...]]:
         """Rule 12: a verb that is mostly a noun takes frame F when its first sense is the first sense of a unit that
         evokes F alone (the same meaning: "stick" = deposit.v.01, "slit" = slice.v.01), or a way of doing F's own
@@ -517,11 +550,13 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[Any, ...]]:
             return []
         said = [(lemma, sense) for lemma in wordnet.lemmas[sense] if lemma in only and only[lemma] in heads
                 and wordnet.senses[lemma][1][:1] == [sense]]
-        said += [(heads[frame], synset) for synset in wordnet.up[sense] for frame in heads
+        said = [(only[lemma], lemma, synset) for lemma, synset in said]
+        said += [(frame, heads[frame], synset) for synset in wordnet.up[sense] for frame in heads
                  if heads[frame] in wordnet.senses and wordnet.senses[heads[frame]][1][:1] == [synset]]
+        said += [(frame, lemma, synset) for synset in wordnet.up[sense] if (agreed := named_by_many(synset))
+                 for frame, lemma in [agreed]]
         out = []
-        for lemma, synset in said:
-            frame = only.get(lemma) if synset == sense else next(f for f, head in heads.items() if head == lemma)
+        for frame, lemma, synset in said:
             if frame is not None and done_with(frame, wordnet.tools(verb, sense)) and \
                     all(o[0] != frame for o in out):
                 how = "=" if synset == sense else "<"
@@ -564,6 +599,7 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[Any, ...]]:
                                            f"{wordnet.name(lemma, synset)} ({lemma})"))
             break
     found.extend(particle_verbs_alone(wordnet, units, closed, frames_at))
+    found.extend(causatives(wordnet, library, {unit for _, unit, *_ in found}, heads))
     named = {unit for _, unit, *_ in found}
     for verb, (_, offsets) in sorted(wordnet.senses.items()):
         if verb in units or verb in named or verb in closed or not verb.isalpha() or not offsets or \
@@ -571,9 +607,37 @@ def derive_wordnet(wordnet: WordNet, library: Library) -> list[tuple[Any, ...]]:
             continue
         found.extend(unit for unit in tool_of_kind(wordnet, verb, offsets[0], heads)
                      if done_with(unit[0], wordnet.tools(verb, offsets[0])))     # rule 11 still holds
-    alone = {(frame, unit) for frame, unit, *_ in found}       # "grope" is a Find already: "grope for" adds nothing
+    alone = {(frame, unit) for frame, unit, *rest in found    # "grope" is a Find already: "grope for" adds nothing;
+             if rest[4:5] != [True]}                            # "fish" read only before its object: "fish for" does
     said_with = [u for u in prepositional(wordnet, library, closed) if (u[0], u[1].split()[0]) not in alone]
     return sorted(found + reflexive(wordnet, library, closed) + said_with)
+
+
+def causatives(wordnet: WordNet, library: Library, found: set[str], heads: dict[str, str]) -> list[tuple[Any, ...]]:
+    """Rule 16 (alfred29): a verb of posture or state whose first sense takes no object ("stand", "sit": be upright,
+    be seated) has a sense that *causes* it (WordNet's cause pointer: stand.v.10 "place upright" > stand.v.01; seat.v.01
+    > sit.v.01). When that causing sense is a way of doing F's own verb (a hyponym of the first sense of the frame's
+    first unit: stand.v.10 < put.v.01, Place), the verb said with an object is F: "stand the bottle on the shelf".
+    Marked ``opening``, as rule 12's: read only opening an imperative clause before its object, so "stand by the door"
+    and "where does it stand" are not it. The closed-class filter is the single words' (``near``, ``back``): a word of a
+    fixed phrase ("where does it *stand*") is not read at a clause's start before an object anyway."""
+    units = library.by_unit
+    single = closed_class_words(phrases=False)
+    out: list[tuple[Any, ...]] = []
+    for verb, (_, offsets) in sorted(wordnet.senses.items()):
+        if verb in units or verb in found or verb in single or not verb.isalpha() or len(offsets) < 2 or \
+                wordnet.domain[offsets[0]] == BODY:
+            continue
+        for sense in offsets[1:]:
+            if offsets[0] not in wordnet.causes[sense]:
+                continue
+            for frame, head in sorted(heads.items()):
+                synset = next((o for o in wordnet.up[sense] if wordnet.senses.get(head, (0, []))[1][:1] == [o]), None)
+                if synset is not None and all(o[0] != frame for o in out if o[1] == verb):
+                    source = f"wordnet:{wordnet.name(verb, sense)} < {wordnet.name(head, synset)} ({head}), " \
+                             f"causing {wordnet.name(verb, offsets[0])}"
+                    out.append((frame, verb, source, "", "", False, True))
+    return out
 
 
 def particle_verbs_alone(wordnet: WordNet, units: dict[str, list[str]], closed: frozenset[str],

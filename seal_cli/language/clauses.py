@@ -128,8 +128,11 @@ class Clauses:
             words = [*np.mods, np.head]
             verb = words[0]
             if verb.start != np.start or verb_lemma(verb.lower) != verb.lower or not self.types.evoked_by(verb.lower) \
-                    or class_key(verb.lower) in self.types.taxonomy.known_classes:
-                continue                      # "move the mug to *microwave*": a thing the library knows
+                    or class_key(verb.lower) in self.types.taxonomy.known_classes or \
+                    self.types.opening_only(verb.lower):
+                continue                      # "move the mug to *microwave*": a thing the library knows; "to *trash*
+                #                               can", "to *dust* pan": a word that is mostly a noun, a verb only before
+                #                               its object (alfred29)
             after = words[1].lower if len(words) > 1 else None
             if after is not None and (is_adjective(after) or verb_lemma(after) not in (None, after)):
                 continue                      # "to get chilled": a state the thing gets into

@@ -22,6 +22,7 @@ class Types:
         self._states: dict[str, bool] = {}
         self._evoked: dict[str, tuple[Frame, ...]] = {}
         self._objects: dict[str, str | None] = {}
+        self._opening: dict[str, bool] = {}
         self._cutting: dict[str, tuple[Frame, str] | None] = {}
         self._person: dict[str, bool] = {}
         self._library = library
@@ -33,6 +34,14 @@ class Types:
             said = {u.object for f in self.evoked_by(unit) for u in f.lexical_units if u.text == unit}
             self._objects[unit] = next(iter(said)) if len(said) == 1 else None
         return self._objects[unit]
+
+    def opening_only(self, unit: str) -> bool:
+        """Whether every entry of the unit is ``opening`` (a word that is mostly a noun: "trash", "dust"), read as
+        the verb only opening a clause before its object, so a noun in a bare phrase ("to *trash* can")."""
+        if unit not in self._opening:
+            said = [u.opening for f in self.evoked_by(unit) for u in f.lexical_units if u.text == unit]
+            self._opening[unit] = bool(said) and all(said)
+        return self._opening[unit]
 
     def evoked_by(self, unit: str) -> tuple[Frame, ...]:
         """The frames a lexical unit evokes (:meth:`Library.evoked_by`, memoised by unit)."""

@@ -44,6 +44,17 @@ def test_no_purpose_where_the_word_is_a_thing(library: Library, text: str, frame
     assert [f.frame for f in parse.frames if f.frame != "Cool"] == frames
 
 
+@pytest.mark.parametrize(("text", "goal"), [
+    ("move the jug from the shelf to trash can", "trash can"),     # "trash": a verb only before its object
+    ("move the brush to dust pan", "dust pan"),
+])
+def test_no_purpose_where_the_verb_is_mostly_a_noun(library: Library, text: str, goal: str) -> None:
+    """A word the library reads as a verb only opening a clause before its object (``opening``: "trash", "dust")
+    is the noun it mostly is in a bare "to" phrase (alfred29)."""
+    assert [(name, elements.get("goal")) for name, elements in _frames(text, library)] == [("Place", goal)]
+    assert _frames("carry the jug to the hall to trash the wrapper", library)[-1] == ("Place", {"theme": "the wrapper"})
+
+
 def test_a_purpose_read_as_a_to_phrase_keeps_what_follows_its_verb(library: Library) -> None:
     from seal_cli.language.clauses import Clauses
     from seal_cli.language.lexicon import Tagger, tokenize
