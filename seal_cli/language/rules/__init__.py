@@ -71,6 +71,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.WHICH_PLACE,
     requests.QUESTION,
     requests.FRONTED_QUESTION,
+    requests.PHRASE_ASKED,
     requests.WHERE,
     requests.WHERE_DID_RULE,
     requests.SEEN_ASKED_RULE,

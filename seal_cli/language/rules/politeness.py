@@ -10,6 +10,7 @@ from seal_cli.language.english import (
     DETERMINERS,
     END_MARKS,
     GREETINGS,
+    KNOW_WISHES,
     NP_OPENERS,
     NUMBER_MEANS,
     POLITE,
@@ -103,6 +104,9 @@ def _politeness(s: State, i: int) -> Match | None:
         return None                                   # "*To the dining room,* follow Jane": where, said first
     if low in _ORDINALS and not (i + 1 < len(words) and words[i + 1].lower in (",", ";", ":") or s.verb_after(i + 1)):
         return None                                   # "*second* cup, please": a thing's order, no step's
+    wish = longest_phrase(words, i, KNOW_WISHES)
+    if n and wish > n and i + wish < len(words) and words[i + wish].lower != "where":
+        return None                                   # "*would you know* how many ...": a wish to know (words37)
     k = i + n
     while k < len(words) and words[k].lower != "to" and is_adverb(words[k].lower):
         k += 1                                        # "would you mind *terribly* switching off ..."
@@ -360,6 +364,7 @@ POLITENESS = Rule("politeness", _politeness, (
     Example("how about closing the window", "how about", Tag.POLITE),
     Example("do you mind switching the fan on", "do you mind", Tag.POLITE),
     Example("And who is in the kitchen?", "And", Tag.POLITE),
+    Example("would you close the gate", "would you", Tag.POLITE),
 ), None, "politeness words and phrases before the verb (english.POLITE)")
 ATTENTION = Rule("look, listen", _attention, (
     Example("Look, the window is open. Close it.", "Look,", Tag.POLITE),

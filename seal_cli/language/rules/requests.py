@@ -297,7 +297,7 @@ def _any_asked(s: State, i: int) -> Match | None:
     left = [k for k in range(i + 2, end) if words[k].lower in _REMAINING and words[k - 1].lower.isalpha()]
     if not (left or _place_asked(s, i)) or any(
             k not in left and (s.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS and
-                               not _progressive(s, i, k) or
+                               not _progressive(s, i, k) and not _compound_head(s, i, k) or
                                words[k].lower in BE_WORDS or words[k].lower in (",", ";", "and", "then") or
                                words[k].lower in FINITE)
             for k in range(i + 1, end)):
@@ -305,6 +305,18 @@ def _any_asked(s: State, i: int) -> Match | None:
     tag = Tag.DET if words[i].lower == "any" else Tag.PRON
     return Match(1, (_unsaid(words[i].start, Tag.VERB, WHERE_MEANS), words[i].tagged(tag)), expect=False,
                  verb=WHERE_MEANS, using=False)
+
+
+def _compound_head(s: State, j: int, k: int) -> bool:
+    """Whether the word at ``k`` ends a phrase opened by a determiner at ``j`` as the head of a compound, not a verb
+    ("any cleaning *supplies* in the bathroom?", "any dish *towels* left?"; words37): a plural noun right after
+    another word of the phrase, before a preposition of place, "left" or the sentence's end."""
+    words = s.words
+    if k < j + 2 or words[j].lower not in NP_OPENERS or not words[k - 1].lower.isalpha() or k + 1 >= len(words):
+        return False
+    after = words[k + 1].lower
+    return (after in LOCATIVE or after in END_MARKS or after in _REMAINING) and is_plural(words[k].lower) and \
+        "noun" in parts_of_speech(words[k].lower)
 
 
 def _place_asked(s: State, j: int) -> bool:
@@ -318,7 +330,7 @@ def _place_asked(s: State, j: int) -> bool:
         if low in END_MARKS and _place_fronted(s) and any(_progressive(s, j, m) for m in range(j + 1, k)):
             return True                           # "In the bedroom, is anyone lying down?" (words33)
         if low in END_MARKS or low in (",", ";", "and", "then") or s.verb_at(k) is not None and \
-                words[k - 1].lower not in NP_OPENERS and not _progressive(s, j, k):
+                words[k - 1].lower not in NP_OPENERS and not _progressive(s, j, k) and not _compound_head(s, j, k):
             return False                          # a verb ("the *pan*": a noun after a determiner)
         if low in _WHETHER_WHERE:
             return s.np_starts(k + 1)
@@ -1623,7 +1635,7 @@ def _let_know(s: State, i: int) -> Match | None:
     if QUESTION_MEANS not in s.lexicon.units or i + 2 >= len(words):
         return None
     told = words[i + 1]
-    if told.lower in NP_OPENERS or \
+    if told.lower in NP_OPENERS or told.lower in _EVERYONE or \
             words[i + 2].lower != LET_KNOW[1] and _one_told(told):      # "let mum and dad know"
         return _let_phrase_know(s, i)
     pronoun = told.lower in OBJECT_PRONOUNS and told.lower not in ("it", "this", "that")
@@ -1645,6 +1657,10 @@ def _let_know(s: State, i: int) -> Match | None:
 
 
 _LET_PHRASE_WORDS = 12
+
+
+_EVERYONE = _INDEFINITES - {"anything", "something"} | {"everyone", "everybody"}
+"""Indefinite pronouns of people that may be told ("let *everyone* in the hall know ...", words37)."""
 
 
 def _one_told(word: Word) -> bool:
@@ -1671,7 +1687,8 @@ def _let_phrase_know(s: State, i: int) -> Match | None:
 
 def _know_after_let(s: State, i: int) -> Match | None:
     if s.verb_index < 0 or s.out[s.verb_index].lower != LET_KNOW[0] or \
-            s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.LABEL):
+            s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.LABEL) and \
+            not (s.prev_tag() == Tag.PRON and s.out[-1].lower in _EVERYONE):
         return None
     k = i + 1                                     # "let mum and dad know *dinner is ready*": what is told
     if s.speech and k < len(s.words) and s.words[k].lower not in _TOLD_LEADS and s.words[k].lower not in END_MARKS \
@@ -1966,6 +1983,8 @@ LET_KNOW_RULE = Rule("let me know", _let_know, (
     Example("let grandpa know that his taxi is here", "grandpa", Tag.NAME),
     Example("let mum and dad know dinner is ready", "let", Tag.VERB),
     Example("let the person at the chairs know what gesture the person at the sofa is making", "let", Tag.VERB),
+    Example("let everyone in the den know that the film is starting", "let", Tag.VERB),
+    Example("let everybody know lunch is served", "let", Tag.VERB),
 ), frozenset([LET_KNOW[0]]), "'let X know': tell X")
 KNOW_AFTER_LET = Rule("know after let X", _know_after_let, (
     Example("let the people in the hall know that dinner is ready", "know", ""),
@@ -2018,6 +2037,34 @@ def _fronted_question(s: State, i: int) -> Match | None:
     if asked >= len(words) or words[asked].lower not in QUESTION_WORDS or _question(s, asked) is None:
         return None
     end = s.speech_end(asked)
+    return Match(end - i, (_unsaid(words[i].start, Tag.VERB, QUESTION_MEANS), s.emit(i, end - i, Tag.SAID).words[0]),
+                 expect=False, verb=QUESTION_MEANS, using=False)
+
+
+_TAKEN_UP = frozenset(["it", "they", "them", "he", "she", "him", "her", "that", "this", "those", "these", "one"])
+"""Pronouns with which a question takes up the phrase said before it ("the heaviest jar, what is *it*?")."""
+
+
+def _phrase_asked(s: State, i: int) -> Match | None:
+    """A noun phrase said first and taken up by a pronoun of the question after its comma ("*the heaviest jar on the
+    shelf*, what is it?", "the man by the door, who is he?"; words37): the phrase is part of what to tell, as a
+    phrase of place before a question is (:func:`_fronted_question`)."""
+    words = s.words
+    if QUESTION_MEANS not in s.lexicon.units or s.out and s.out[-1].tag != Tag.POLITE or \
+            words[i].lower not in NP_OPENERS:
+        return None
+    k = i + 1
+    while k < len(words) and words[k].lower not in END_MARKS and words[k].lower not in (",", ";"):
+        if s.verb_at(k) is not None and verb_lemma(words[k].lower) == words[k].lower and \
+                words[k - 1].lower not in NP_OPENERS:
+            return None                           # "the cup, bring it": a command takes it up (``DISLOCATED``)
+        k += 1
+    if k + 2 >= len(words) or words[k].lower != "," or words[k + 1].lower not in QUESTION_WORDS or \
+            not _asked_to_the_end(s, k + 1) or _question(s, k + 1) is None:
+        return None
+    end = s.speech_end(k + 1)
+    if not any(w.lower in _TAKEN_UP for w in words[k + 2:end]):
+        return None                               # "the cup, what about the plate?": nothing taken up
     return Match(end - i, (_unsaid(words[i].start, Tag.VERB, QUESTION_MEANS), s.emit(i, end - i, Tag.SAID).words[0]),
                  expect=False, verb=QUESTION_MEANS, using=False)
 
@@ -2099,6 +2146,10 @@ FRONTED_QUESTION = Rule("phrase said before a question", _fronted_question, (
     Example("in the garage which car is the oldest?", "in the garage which car is the oldest", Tag.SAID),
 ), first_words(PREPOSITIONS) | {"of"},
     "a phrase and a comma before a question: all of it is what to tell")
+PHRASE_ASKED = Rule("phrase said before a question that takes it up", _phrase_asked, (
+    Example("The heaviest jar on the shelf, what is it?", "The heaviest jar on the shelf, what is it", Tag.SAID),
+    Example("the man by the gate, who is he?", "the man by the gate, who is he", Tag.SAID),
+), first_words(NP_OPENERS), "a noun phrase and a comma before a question with a pronoun: all of it is what to tell")
 FRONTED_UNMARKED = Rule("phrase said first, no comma", _fronted_unmarked, (
     Example("From the dresser take the hairbrush", "take", Tag.VERB),
     Example("In the kitchen how many people are standing?", "how many", Tag.VERB),
