@@ -3351,6 +3351,9 @@ def test_your_job_without_its_colon_announces_nothing(library: Library) -> None:
      [("Find", {"theme": "Max", "ground": "gate"}), ("Find", {"theme": "Ada", "ground": "shed"})]),
     ("follow the lady with the green scarf", [("Follow", {"theme": "lady"})]),
     ("meet the boy with the blue cap at the gate", [("Meet", {"theme": "boy", "ground": "gate"})]),
+    ("let Jo know the bus leaves at six", [("Tell", {"message": "the bus leaves at six", "recipient": "Jo"})]),
+    ("pick up the ladle form the drawer", [("Pick", {"theme": "ladle", "source": "drawer"})]),
+    ("put the form on the desk", [("Place", {"theme": "form", "goal": "desk"})]),
 ])
 def test_what_crowd_workers_ask_and_wish(text: str, want: list[tuple[str, dict[str, str]]],
                                          library: Library) -> None:
@@ -3362,6 +3365,7 @@ def test_what_crowd_workers_ask_and_wish(text: str, want: list[tuple[str, dict[s
     ("The tallest vase in the hall, what is it?", "The tallest vase in the hall, what is it"),
     ("the woman at the gate, who is she?", "the woman at the gate, who is she"),
     ("wats the oldest book on the shelf", "wats the oldest book on the shelf"),     # read as "what's", kept as typed
+    ("wat is the oldest book on the shelf", "wat is the oldest book on the shelf"),
 ])
 def test_a_question_that_takes_up_a_phrase_said_first_is_told(text: str, want: str, library: Library) -> None:
     """words37: the phrase said first and the question that takes it up with a pronoun are both what to tell."""

@@ -1692,10 +1692,20 @@ def _know_after_let(s: State, i: int) -> Match | None:
         return None
     k = i + 1                                     # "let mum and dad know *dinner is ready*": what is told
     if s.speech and k < len(s.words) and s.words[k].lower not in _TOLD_LEADS and s.words[k].lower not in END_MARKS \
-            and s.verb_at(k) is None and any(w.lower in BE_WORDS or w.lower in FINITE for w in s.words[k:k + 4]):
+            and s.verb_at(k) is None and (any(w.lower in BE_WORDS or w.lower in FINITE for w in s.words[k:k + 4]) or
+                                          any(_finite_s(s, m) for m in range(k + 1, min(k + 4, len(s.words))))):
         said = s.emit(k, s.speech_end(k) - k, Tag.SAID)
         return Match(1 + said.consumed, said.words)
     return Match(1)                               # "let the person at the chairs *know* what ...": dropped
+
+
+def _finite_s(s: State, m: int) -> bool:
+    """Whether the word at ``m`` is a verb's -s form said of the noun before it ("let him know the meeting *starts*
+    soon", "the bus *leaves* at six"; words37): no noun of a phrase its determiner opens ("the *cups*")."""
+    low = s.words[m].lower
+    lemma = verb_lemma(low)
+    return low.endswith("s") and lemma is not None and lemma != low and \
+        s.words[m - 1].lower not in NP_OPENERS and s.words[m - 1].lower.isalpha()
 
 
 _TOLD_LEADS = WH_WORDS | {"that", ",", "about"}       # WH_WORDS holds "if", "whether", "how"
@@ -1985,6 +1995,7 @@ LET_KNOW_RULE = Rule("let me know", _let_know, (
     Example("let the person at the chairs know what gesture the person at the sofa is making", "let", Tag.VERB),
     Example("let everyone in the den know that the film is starting", "let", Tag.VERB),
     Example("let everybody know lunch is served", "let", Tag.VERB),
+    Example("let Jo know the bus leaves at six", "the bus leaves at six", Tag.SAID),
 ), frozenset([LET_KNOW[0]]), "'let X know': tell X")
 KNOW_AFTER_LET = Rule("know after let X", _know_after_let, (
     Example("let the people in the hall know that dinner is ready", "know", ""),
