@@ -321,7 +321,7 @@ something is looked for ("find the cat *downstairs*"), never where it is taken f
 TIME_WORDS = frozenset(["now", "later", "soon", "today", "tonight", "tomorrow", "again", "too", "first",
                         "right away", "right now", "at once", "as well", "as soon as possible", "asap", "meanwhile",
                         "in a minute", "in a moment", "for now", "this morning", "this evening", "tonight",
-                        "at the moment", "at present", "just now"])
+                        "at the moment", "just now"])
 """Time adverbials said after a verb's arguments ("put it in the fridge *right away*"): they say when,
 not what, and are no part of a noun phrase."""
 PARTS_OF_DAY = frozenset(["morning", "afternoon", "evening", "night", "weekend"])
