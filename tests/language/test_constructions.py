@@ -3354,6 +3354,10 @@ def test_your_job_without_its_colon_announces_nothing(library: Library) -> None:
     ("let Jo know the bus leaves at six", [("Tell", {"message": "the bus leaves at six", "recipient": "Jo"})]),
     ("pick up the ladle form the drawer", [("Pick", {"theme": "ladle", "source": "drawer"})]),
     ("put the form on the desk", [("Place", {"theme": "form", "goal": "desk"})]),
+    ("where is the ladle kept?", [("Find", {"theme": "ladle"})]),
+    ("where are the jars usually stored?", [("Find", {"theme": "jar"})]),
+    ("how many jars are in the pantry, would you say?", [("Count", {"theme": "jar", "ground": "pantry"})]),
+    ("what's in the shed, kindly tell me", [("Tell", {"message": "what's in the shed"})]),
 ])
 def test_what_crowd_workers_ask_and_wish(text: str, want: list[tuple[str, dict[str, str]]],
                                          library: Library) -> None:

@@ -67,6 +67,7 @@ from seal_cli.language.morphology import (
     in_dictionary,
     in_verb_tables,
     is_adjective,
+    is_adverb,
     is_plural,
     noun_lemma,
     participles,
@@ -249,12 +250,26 @@ def _where_be(s: State, i: int) -> Match | None:
     sentence, dropped ("where" was read as "find")."""
     if s.verb_index < 0 or s.out[s.verb_index].info != WHERE_MEANS or \
             not any(w in ("where", "where's") for w in s.out[s.verb_index].lower.split()) or \
-            s.prev_tag() not in (Tag.WORD, Tag.NAME):
+            s.prev_tag() not in (Tag.WORD, Tag.NAME) and not (s.prev_tag() == Tag.PARTICLE and
+                                                            is_adverb(s.out[-1].lower)):
         return None
-    n = _phrase(s, i, WHERE_BE)
+    n = _phrase(s, i, WHERE_BE) or _where_kept(s, i)
     if not n or i + n < len(s.words) and s.words[i + n].lower not in END_MARKS:
         return None
     return Match(n)
+
+
+def _where_kept(s: State, i: int) -> int:
+    """1 when the word at ``i`` is the past participle of a passive "where" question ("where is the ladle *kept*?",
+    "where are the spoons usually *stored*?"; words37): where the thing is, asked; the participle says nothing more
+    and was read as the thing's noun ("Find *kept*")."""
+    where = s.out[s.verb_index].lower.split()
+    low = s.words[i].lower
+    lemma = verb_lemma(low)
+    if not (where[-1:] and where[-1] in ("is", "are", "where's") or "'s" in where) or lemma is None or \
+            low not in participles(lemma):
+        return 0
+    return 1
 
 
 _WHETHER_IS = frozenset(["is", "are", "isn't", "aren't"])
@@ -1953,6 +1968,8 @@ WHERE_BE_DROPPED = Rule("is, after asked where", _where_be, (
     Example("do you know where the tea spoon is", "is", ""),
     Example("do u know where the remote went", "went", ""),
     Example("where's the remote gone?", "gone", ""),
+    Example("where is the ladle kept?", "kept", ""),
+    Example("where are the jars usually stored?", "stored", ""),
 ), None, "the 'is' of 'do you know where X is', dropped: 'do you know where' was read as 'find'")
 ENSURED_RULE = Rule("make sure of a state", _ensured, (
     Example("please make sure the stove is off", "make sure", Tag.VERB),
