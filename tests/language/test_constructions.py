@@ -3359,8 +3359,11 @@ def test_your_job_without_its_colon_announces_nothing(library: Library) -> None:
     ("where are the jars usually stored?", [("Find", {"theme": "jar"})]),
     ("how many jars are in the pantry, would you say?", [("Count", {"theme": "jar", "ground": "pantry"})]),
     ("what's in the shed, kindly tell me", [("Tell", {"message": "what's in the shed"})]),
+    ("the jars on the shelf, how many are there?", [("Count", {"theme": "jar", "ground": "shelf"})]),
+    ("the kids in the den, how many of them are left", [("Count", {"theme": "kid", "ground": "den"})]),
+    ("the jars on the shelf, how many is that", None),
 ])
-def test_what_crowd_workers_ask_and_wish(text: str, want: list[tuple[str, dict[str, str]]],
+def test_what_crowd_workers_ask_and_wish(text: str, want: list[tuple[str, dict[str, str]]] | None,
                                          library: Library) -> None:
     """words37, after paraphrases15's first score."""
     assert_reads(text, want, library)

@@ -2097,6 +2097,55 @@ def _phrase_asked(s: State, i: int) -> Match | None:
                  expect=False, verb=QUESTION_MEANS, using=False)
 
 
+def _count_tail(s: State, k: int) -> int:
+    """How many words from the comma at ``k`` to the sentence's end ask how many of the phrase before it there are
+    (", how many are there?", ", how many of them are left", ", how many is there": words37); 0 if they do not."""
+    words = s.words
+    if k + 3 >= len(words) or words[k].lower != "," or words[k + 1].lower != "how" or words[k + 2].lower != "many":
+        return 0
+    m = k + 3
+    if m + 1 < len(words) and words[m].lower == "of" and words[m + 1].lower in ("them", "those", "these"):
+        m += 2
+    if m < len(words) and words[m].lower in ("are", "is"):
+        m += 1
+    else:
+        return 0
+    while m < len(words) and words[m].lower in ("there", "left", "remaining", "in", "here", "now"):
+        if words[m].lower == "in" and not (m + 1 < len(words) and words[m + 1].lower == "there"):
+            return 0
+        m += 1
+    return m - k if m == len(words) or words[m].lower in END_MARKS else 0
+
+
+def _phrase_counted(s: State, i: int) -> Match | None:
+    """A noun phrase said first and counted by the question after its comma ("*the mugs on the counter*, how many are
+    there?"; words37): count them (the unit "how many"), the question after the comma dropped
+    (:data:`COUNT_TAIL_DROPPED`), as "how many mugs are on the counter?" does."""
+    words = s.words
+    unit = tuple(_COUNTED.split())
+    if unit not in s.lexicon.units.get(unit[0], ()) or s.out and s.out[-1].tag != Tag.POLITE or \
+            words[i].lower not in NP_OPENERS:
+        return None
+    k = i + 1
+    while k < len(words) and words[k].lower not in END_MARKS and words[k].lower not in (",", ";"):
+        if s.verb_at(k) is not None and verb_lemma(words[k].lower) == words[k].lower and \
+                words[k - 1].lower not in NP_OPENERS:
+            return None
+        k += 1
+    if k == i + 1 or not _count_tail(s, k):
+        return None
+    return Match(1, (_unsaid(words[i].start, Tag.VERB, _COUNTED), words[i].tagged(Tag.DET)), expect=False,
+                 verb=_COUNTED, using=False)
+
+
+def _count_tail_dropped(s: State, i: int) -> Match | None:
+    verb = s.out[s.verb_index] if s.verb_index >= 0 else None
+    if verb is None or verb.info != _COUNTED or verb.text:
+        return None
+    n = _count_tail(s, i)
+    return Match(n) if n else None
+
+
 def _asked_to_the_end(s: State, k: int) -> bool:
     """Whether a question that starts at ``k`` is all the rest of its sentence and asks ("in the hall *which person
     is standing?*"): a question mark ends it, and no verb of the library in its base form is said in it (a command
@@ -2178,6 +2227,13 @@ PHRASE_ASKED = Rule("phrase said before a question that takes it up", _phrase_as
     Example("The heaviest jar on the shelf, what is it?", "The heaviest jar on the shelf, what is it", Tag.SAID),
     Example("the man by the gate, who is he?", "the man by the gate, who is he", Tag.SAID),
 ), first_words(NP_OPENERS), "a noun phrase and a comma before a question with a pronoun: all of it is what to tell")
+PHRASE_COUNTED = Rule("phrase said before how many", _phrase_counted, (
+    Example("the jars on the shelf, how many are there?", "the", Tag.DET),
+    Example("those mugs in the sink, how many of them are left", "those", Tag.DET),
+), first_words(NP_OPENERS), "a noun phrase and a comma before 'how many are there': count what it names")
+COUNT_TAIL_DROPPED = Rule("how many are there, after the phrase counted", _count_tail_dropped, (
+    Example("the jars on the shelf, how many are there?", "how", ""),
+), frozenset([","]), "the ', how many are there' of a phrase said first and counted, dropped")
 FRONTED_UNMARKED = Rule("phrase said first, no comma", _fronted_unmarked, (
     Example("From the dresser take the hairbrush", "take", Tag.VERB),
     Example("In the kitchen how many people are standing?", "how many", Tag.VERB),
