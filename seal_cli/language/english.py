@@ -237,7 +237,7 @@ SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "tha
              "theres": "there's", "wont": "won't", "cant": "can't", "wheres": "where's", "hows": "how's",
              "ill": "i'll", "id": "i'd", "youll": "you'll", "weve": "we've", "theyve": "they've", "itll": "it'll",
              "frm": "from", "thru": "through", "abt": "about", "cud": "could", "cld": "could", "wud": "would",
-             "shud": "should", "pleez": "please", "ppl": "people"}
+             "shud": "should", "pleez": "please", "ppl": "people", "wats": "what's", "wat's": "what's", "wat": "what"}
 """Texting spellings of function words ("turn the lights off *pls*", "open it *n* wipe it", "where *r* my keys",
 "tell her *im* late"): read as the word they spell."""
 RUN_TOGETHER = {"gimme": ("give", "me", "gim"), "lemme": ("let", "me", "lem"), "gonna": ("going", "to", "gon"),
@@ -320,7 +320,8 @@ DIRECTIONS = frozenset(["upstairs", "downstairs", "indoors", "outdoors", "home"]
 something is looked for ("find the cat *downstairs*"), never where it is taken from (that is "from upstairs")."""
 TIME_WORDS = frozenset(["now", "later", "soon", "today", "tonight", "tomorrow", "again", "too", "first",
                         "right away", "right now", "at once", "as well", "as soon as possible", "asap", "meanwhile",
-                        "in a minute", "in a moment", "for now", "this morning", "this evening", "tonight"])
+                        "in a minute", "in a moment", "for now", "this morning", "this evening", "tonight",
+                        "at the moment", "just now"])
 """Time adverbials said after a verb's arguments ("put it in the fridge *right away*"): they say when,
 not what, and are no part of a noun phrase."""
 PARTS_OF_DAY = frozenset(["morning", "afternoon", "evening", "night", "weekend"])

@@ -781,7 +781,8 @@ class Evoker:
                     and noun_lemma(pp.np.head.text) in PARTS:
                 continue                         # "a spoon with a blue handle": described by its part, nothing in it
             if pp.prep == "with" and pp.np.kind != "person" and (host.kind != "person" or host.pronoun):
-                if holds_nothing and host is roles.get(theme) and pp.np.kind == "thing" and not pp.np.pronoun:
+                if holds_nothing and host is roles.get(theme) and pp.np.kind == "thing" and not pp.np.pronoun and \
+                        not self.worn_by(frame, theme, pp.np):
                     self.hold(pp.np)     # "turn on the lamp with the remote": held while it is done
                 elif again:
                     roles[theme].contents.append(pp.np)   # "a pan on the table with an apple on the pan"
@@ -1004,6 +1005,14 @@ class Evoker:
                 self.frames.append(Evoked(frame.name, frame.lexical_units[0].text if frame.lexical_units else "",
                                           (np.start, np.end), elements | self.defaults(frame, elements)))
                 return
+
+    def worn_by(self, frame: Frame, theme: str, np: NP) -> bool:
+        """Whether ``np``, said with "with" after the first element of a frame that takes a person first, is a
+        garment that describes that person ("greet the guy *with the gray sweater*": worn, no thing to hold first;
+        words37). "turn on the lamp with the remote" still holds the remote."""
+        element = frame.elements[0] if frame.elements else None
+        return element is not None and element.role == theme and element.type == "person" and \
+            np.head is not None and self.types.is_a(noun_lemma(np.head_text.lower()), "clothing") is True
 
     def put(self, content: NP, container: NP, predicate: str) -> None:
         """The frame that makes ``predicate(content, container)`` true (Place for ``in``)."""

@@ -32,6 +32,7 @@ from seal_cli.language.english import (
     HOLDING_VERBS,
     LET_KNOW,
     LINKING_VERBS,
+    LOCATED,
     LOCATIVE,
     MODALS,
     NOMINATIVE,
@@ -1529,19 +1530,21 @@ class State:
         """The verb of the clause before when, after "then" or a comma, another person and a path follow with no
         verb: "guide Ben to the hall, then *Ana to the porch*" (gapping, words35). The clause's verb has a goal and
         its object, said right after it, is a person; the new person is followed by a preposition of a path and its
-        noun phrase, and no verb to the clause's end; None."""
+        noun phrase, and no verb to the clause's end; None. A preposition of where the person is ("in", "at", "on")
+        may follow instead, after any verb whose object is a person: "greet Ben in the hall, then *Ana in the den*",
+        "find Jo at the desk and then Max in the shed" (words37)."""
         words = self.words
         if self.verb_index < 0 or self.verb_index + 1 >= len(self.out):
             return None
         unit = str(self.out[self.verb_index].info)
         first = self.out[self.verb_index + 1]
-        if unit not in self.lexicon.goals or not (first.tag == Tag.NAME or first.lower in _GIVEN_TO or
-                                                   first.lower in self.lexicon.people):
+        if not (first.tag == Tag.NAME or first.lower in _GIVEN_TO or first.lower in self.lexicon.people):
             return None
         if not self.person_at(j) or j + 1 >= len(words) or self.verb_after(j):
             return None
         m, prep = self.preposition(j + 1)
-        if prep not in PATH_PREPOSITIONS or not self.np_starts(j + 1 + m):
+        if not (prep in PATH_PREPOSITIONS and unit in self.lexicon.goals or prep in LOCATED) or \
+                not self.np_starts(j + 1 + m):
             return None
         end = self.cond_end(j + 1 + m)
         if any(self.verb_at(x) is not None and words[x - 1].lower not in NP_OPENERS for x in range(j + 1 + m, end)):

@@ -3332,3 +3332,57 @@ def test_more_of_what_people_say_around_a_command(text: str, want: list[tuple[st
 def test_your_job_without_its_colon_announces_nothing(library: Library) -> None:
     with pytest.raises(CommandError):
         parse_command("your job is done", library)
+
+
+# words37: questions and wishes as crowd workers word GPSR commands
+@pytest.mark.parametrize(("text", "want"), [
+    ("it'd be great if you could open the shed", [("Open", {"theme": "shed"})]),
+    ("it would be nice if you closed the hatch", [("Close", {"theme": "hatch"})]),
+    ("It'd be lovely if you'd find my scarf.", [("Find", {"theme": "scarf"})]),
+    ("any garden tools in the shed?", [("Find", {"theme": "tool", "ground": "shed"})]),
+    ("any tea towels left?", [("Find", {"theme": "towel"})]),
+    ("would you know how many jars are in the pantry?", [("Count", {"theme": "jar", "ground": "pantry"})]),
+    ("how many kids are playing in the den at the moment?", [("Count", {"theme": "kid", "ground": "den"})]),
+    ("let everyone in the den know that the film is starting",
+     [("Tell", {"message": "the film is starting", "recipient": "everyone"})]),
+    ("let everybody know lunch is served", [("Tell", {"message": "lunch is served", "recipient": "everybody"})]),
+    ("greet Priya in the den, then Tom in the hall",
+     [("Greet", {"theme": "Priya", "ground": "den"}), ("Greet", {"theme": "Tom", "ground": "hall"})]),
+    ("find Max at the gate and then Ada in the shed",
+     [("Find", {"theme": "Max", "ground": "gate"}), ("Find", {"theme": "Ada", "ground": "shed"})]),
+    ("follow the lady with the green scarf", [("Follow", {"theme": "lady"})]),
+    ("meet the boy with the blue cap at the gate", [("Meet", {"theme": "boy", "ground": "gate"})]),
+    ("let Jo know the bus leaves at six", [("Tell", {"message": "the bus leaves at six", "recipient": "Jo"})]),
+    ("pick up the ladle form the drawer", [("Pick", {"theme": "ladle", "source": "drawer"})]),
+    ("put the form on the desk", [("Place", {"theme": "form", "goal": "desk"})]),
+    ("where is the ladle kept?", [("Find", {"theme": "ladle"})]),
+    ("where are the jars usually stored?", [("Find", {"theme": "jar"})]),
+    ("how many jars are in the pantry, would you say?", [("Count", {"theme": "jar", "ground": "pantry"})]),
+    ("what's in the shed, kindly tell me", [("Tell", {"message": "what's in the shed"})]),
+    ("the jars on the shelf, how many are there?", [("Count", {"theme": "jar", "ground": "shelf"})]),
+    ("the kids in the den, how many of them are left", [("Count", {"theme": "kid", "ground": "den"})]),
+    ("the jars on the shelf, how many is that", None),
+])
+def test_what_crowd_workers_ask_and_wish(text: str, want: list[tuple[str, dict[str, str]]] | None,
+                                         library: Library) -> None:
+    """words37, after paraphrases15's first score."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("The tallest vase in the hall, what is it?", "The tallest vase in the hall, what is it"),
+    ("the woman at the gate, who is she?", "the woman at the gate, who is she"),
+    ("wats the oldest book on the shelf", "wats the oldest book on the shelf"),     # read as "what's", kept as typed
+    ("wat is the oldest book on the shelf", "wat is the oldest book on the shelf"),
+])
+def test_a_question_that_takes_up_a_phrase_said_first_is_told(text: str, want: str, library: Library) -> None:
+    """words37: the phrase said first and the question that takes it up with a pronoun are both what to tell."""
+    parse = parse_command(text, library)
+    (tell,) = parse.frames
+    assert tell.frame == "Tell" and tell.elements["message"].text.lower() == want.lower()
+
+
+def test_a_tool_said_with_with_is_still_held(library: Library) -> None:
+    """words37: a garment after a person describes them; a thing a verb is done with is still taken first."""
+    assert [f.frame for f in parse_command("turn on the lamp with the remote", library).frames] == ["Pick", "ToggleOn"]
+    assert [f.frame for f in parse_command("greet the man with the hat", library).frames] == ["Greet"]

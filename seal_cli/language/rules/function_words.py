@@ -283,6 +283,25 @@ def _preposition(s: State, i: int) -> Match | None:
     return s.emit(i, n, Tag.PREP if has_object else Tag.PARTICLE, prep)   # "pick it up", "... from"
 
 
+_FROM_SLIP = "form"
+""""from" with two letters swapped that is also a word ("bring me the cup *form* the shelf"): the slips of function
+words never read a word the dictionary lists (:mod:`seal_cli.language.slips`), so this one is read by its place."""
+
+
+def _form_for_from(s: State, i: int) -> Match | None:
+    """"pick up the spoon *form* the sink" (words37): "form" right after the noun phrase a verb took, before a
+    determiner or a possessive that opens a phrase with no verb after it to the clause's end, is "from" typed with
+    two letters swapped; "the *form*", "fill in the tax form the bank sent" stay nouns."""
+    words = s.words
+    if s.verb_index < 0 or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON) or i + 2 >= len(words) or \
+            words[i + 1].lower not in NP_OPENERS:
+        return None
+    end = s.cond_end(i + 1)
+    if any(s.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS for k in range(i + 2, end)):
+        return None
+    return s.emit(i, 1, Tag.PREP, "from")
+
+
 def _back(s: State, i: int) -> Match | None:
     """"put the mug *back*": "back" after the object of a verb that puts its thing in its goal, with no
     place said in the rest of the clause, is where the thing goes: back where it was taken from (a place, as
@@ -489,6 +508,10 @@ PARTICLE_BEFORE_OBJECT = Rule("in before the object", _particle_before_object, (
     Example("bring in the washing", "in", Tag.PARTICLE),
     Example("could you hand in my form", "in", Tag.PARTICLE),
 ), frozenset(["in"]), "'bring in the washing': the verb's particle before its object, the clause naming no place")
+FORM_FOR_FROM = Rule("'form' typed for 'from'", _form_for_from, (
+    Example("pick up the ladle form the drawer", "form", Tag.PREP),
+    Example("bring me a pear form the bowl", "form", Tag.PREP),
+), frozenset([_FROM_SLIP]), "'form' after a verb's object and before a phrase: 'from' typed with a slip")
 PREPOSITION = Rule("preposition", _preposition, (
     Example("put the plates back in there", "back", Tag.PARTICLE),
     Example("put the cup on top of the fridge", "on top of", Tag.PREP),

@@ -286,7 +286,26 @@ def _polite_frame(s: State, i: int) -> Match | None:
             (words[j + 1].lower, words[j + 2].lower) in _YOU_MODALS_TO else 0
         if words[j].lower == "you" and n and s.verb_after(j + 1 + n):
             return s.emit(i, j + 1 + n - i, Tag.POLITE)
+        if j > i and words[j - 1].lower == "if" and _you_would(s, j):
+            return s.emit(i, j + 1 - i, Tag.POLITE)
     return None
+
+
+def _you_would(s: State, j: int) -> bool:
+    """Whether "if" and the subject at ``j`` end a polite frame said before it ("it'd be great if *you'd* close
+    ...", "it would be nice if *you* closed the hatch": words37): "you'd", or "you" and a verb's past form (the
+    past of a wish, no time), before what the verb takes. A frame said first only: "*if you* found the keys, bring
+    them" is a condition (the frame needs words before its "if")."""
+    words = s.words
+    low = words[j].lower
+    if low in ("you'd", "u'd"):
+        return s.verb_after(j + 1)
+    if low != "you" or j + 2 >= len(words):
+        return False
+    past = words[j + 1].lower
+    lemma = verb_lemma(past)
+    return lemma is not None and lemma != past and not past.endswith(("ing", "s")) and \
+        s.verb_at(j + 1) is not None and s.np_starts(j + 2)
 
 
 _YOU_MODALS = frozenset(["could", "can", "would", "will", "might", "should", "must"])
@@ -381,6 +400,8 @@ WATCHING_RULE = Rule("keep an eye on", _watching, (
 ), frozenset(["keep"]), "'keep an eye on X', 'keep watch over X': check on X (LookAt)")
 POLITE_FRAME = Rule("if you could", _polite_frame, (
     Example("It would be great if you could close the door", "It would be great if you could", Tag.POLITE),
+    Example("it'd be great if you'd close the door", "it'd be great if you'd", Tag.POLITE),
+    Example("it would be nice if you opened the gate", "it would be nice if you", Tag.POLITE),
     Example("I think you should follow her", "I think you should", Tag.POLITE),
     Example("I suppose you need to wash the cup", "I suppose you need to", Tag.POLITE),
 ), None, "a polite frame ending in 'you could' before the verb")

@@ -10,6 +10,7 @@ from seal_cli.language.english import (
     DETERMINERS,
     END_MARKS,
     GREETINGS,
+    KNOW_WISHES,
     NP_OPENERS,
     NUMBER_MEANS,
     POLITE,
@@ -44,6 +45,14 @@ def _said(s: State, i: int, table: frozenset[str]) -> int:
                 all(s.words[i + k].lower == part for k, part in enumerate(parts))), default=0)
 
 
+_ASKED_NICELY = frozenset(["please", "kindly"])
+"""Politeness before the question asked again ("what's in the box, *kindly* tell me": words37)."""
+_OPINION_ASKED = frozenset(["say", "think", "guess", "reckon"])
+"""The hearer's opinion asked after a question ("how many are in the hall, would you *say*?", "who's at the door, do
+you *think*?": words37): the question asked again, no clause of its own. Not a table of :mod:`english` ("say" is a
+verb of the library's)."""
+
+
 def _asked_again(s: State, i: int) -> Match | None:
     """"Which drink is the heaviest, *can you tell me*?": the question asked again after its comma, nothing after
     it: politeness ending the command (``ASKED_AGAIN``), not a clause that tells nothing."""
@@ -51,8 +60,9 @@ def _asked_again(s: State, i: int) -> Match | None:
     if not s.out or s.out[-1].tag != Tag.SEP or s.out[-1].lower != "," or \
             not any(w.tag == Tag.VERB and w.info in _ASKING for w in s.out):
         return None
-    n = _said(s, i, TAG_QUESTIONS | _DO_YOU)
-    m = _said(s, i + n, ASKED_AGAIN)
+    n = _said(s, i, TAG_QUESTIONS | _DO_YOU) or _said(s, i, _ASKED_NICELY)
+    m = _said(s, i + n, ASKED_AGAIN) or (_said(s, i + n, _OPINION_ASKED) if n and words[i].lower not in
+                                         _ASKED_NICELY else 0)
     if not m or not all(w.lower in END_MARKS for w in words[i + n + m:]):
         return None
     return Match(n + m, (merge(words, i, n + m, Tag.POLITE),))
@@ -103,6 +113,9 @@ def _politeness(s: State, i: int) -> Match | None:
         return None                                   # "*To the dining room,* follow Jane": where, said first
     if low in _ORDINALS and not (i + 1 < len(words) and words[i + 1].lower in (",", ";", ":") or s.verb_after(i + 1)):
         return None                                   # "*second* cup, please": a thing's order, no step's
+    wish = longest_phrase(words, i, KNOW_WISHES)
+    if n and wish > n and i + wish < len(words) and words[i + wish].lower != "where":
+        return None                                   # "*would you know* how many ...": a wish to know (words37)
     k = i + n
     while k < len(words) and words[k].lower != "to" and is_adverb(words[k].lower):
         k += 1                                        # "would you mind *terribly* switching off ..."
@@ -341,6 +354,8 @@ def _tag_question(s: State, i: int) -> Match | None:
 ASKED_AGAIN_RULE = Rule("the question asked again", _asked_again, (
     Example("What's the largest snack in the pantry, can you tell me?", "can you tell me", Tag.POLITE),
     Example("how many cups are on the table, could you tell me", "could you tell me", Tag.POLITE),
+    Example("how many jars are in the pantry, would you say?", "would you say", Tag.POLITE),
+    Example("what's in the shed, kindly tell me", "kindly tell me", Tag.POLITE),
 ), None, "'..., can you tell me?' after a question: politeness, nothing more asked")
 FORMULA = Rule("politeness formula", _formula, (
     Example("When you get a chance, could you close the window?", "When you get a chance,", Tag.POLITE),
@@ -360,6 +375,7 @@ POLITENESS = Rule("politeness", _politeness, (
     Example("how about closing the window", "how about", Tag.POLITE),
     Example("do you mind switching the fan on", "do you mind", Tag.POLITE),
     Example("And who is in the kitchen?", "And", Tag.POLITE),
+    Example("would you close the gate", "would you", Tag.POLITE),
 ), None, "politeness words and phrases before the verb (english.POLITE)")
 ATTENTION = Rule("look, listen", _attention, (
     Example("Look, the window is open. Close it.", "Look,", Tag.POLITE),

@@ -67,6 +67,7 @@ from seal_cli.language.morphology import (
     in_dictionary,
     in_verb_tables,
     is_adjective,
+    is_adverb,
     is_plural,
     noun_lemma,
     participles,
@@ -249,12 +250,26 @@ def _where_be(s: State, i: int) -> Match | None:
     sentence, dropped ("where" was read as "find")."""
     if s.verb_index < 0 or s.out[s.verb_index].info != WHERE_MEANS or \
             not any(w in ("where", "where's") for w in s.out[s.verb_index].lower.split()) or \
-            s.prev_tag() not in (Tag.WORD, Tag.NAME):
+            s.prev_tag() not in (Tag.WORD, Tag.NAME) and not (s.prev_tag() == Tag.PARTICLE and
+                                                            is_adverb(s.out[-1].lower)):
         return None
-    n = _phrase(s, i, WHERE_BE)
+    n = _phrase(s, i, WHERE_BE) or _where_kept(s, i)
     if not n or i + n < len(s.words) and s.words[i + n].lower not in END_MARKS:
         return None
     return Match(n)
+
+
+def _where_kept(s: State, i: int) -> int:
+    """1 when the word at ``i`` is the past participle of a passive "where" question ("where is the ladle *kept*?",
+    "where are the spoons usually *stored*?"; words37): where the thing is, asked; the participle says nothing more
+    and was read as the thing's noun ("Find *kept*")."""
+    where = s.out[s.verb_index].lower.split()
+    low = s.words[i].lower
+    lemma = verb_lemma(low)
+    if not (where[-1:] and where[-1] in ("is", "are", "where's") or "'s" in where) or lemma is None or \
+            low not in participles(lemma):
+        return 0
+    return 1
 
 
 _WHETHER_IS = frozenset(["is", "are", "isn't", "aren't"])
@@ -297,7 +312,7 @@ def _any_asked(s: State, i: int) -> Match | None:
     left = [k for k in range(i + 2, end) if words[k].lower in _REMAINING and words[k - 1].lower.isalpha()]
     if not (left or _place_asked(s, i)) or any(
             k not in left and (s.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS and
-                               not _progressive(s, i, k) or
+                               not _progressive(s, i, k) and not _compound_head(s, i, k) or
                                words[k].lower in BE_WORDS or words[k].lower in (",", ";", "and", "then") or
                                words[k].lower in FINITE)
             for k in range(i + 1, end)):
@@ -305,6 +320,18 @@ def _any_asked(s: State, i: int) -> Match | None:
     tag = Tag.DET if words[i].lower == "any" else Tag.PRON
     return Match(1, (_unsaid(words[i].start, Tag.VERB, WHERE_MEANS), words[i].tagged(tag)), expect=False,
                  verb=WHERE_MEANS, using=False)
+
+
+def _compound_head(s: State, j: int, k: int) -> bool:
+    """Whether the word at ``k`` ends a phrase opened by a determiner at ``j`` as the head of a compound, not a verb
+    ("any cleaning *supplies* in the bathroom?", "any dish *towels* left?"; words37): a plural noun right after
+    another word of the phrase, before a preposition of place, "left" or the sentence's end."""
+    words = s.words
+    if k < j + 2 or words[j].lower not in NP_OPENERS or not words[k - 1].lower.isalpha() or k + 1 >= len(words):
+        return False
+    after = words[k + 1].lower
+    return (after in LOCATIVE or after in END_MARKS or after in _REMAINING) and is_plural(words[k].lower) and \
+        "noun" in parts_of_speech(words[k].lower)
 
 
 def _place_asked(s: State, j: int) -> bool:
@@ -318,7 +345,7 @@ def _place_asked(s: State, j: int) -> bool:
         if low in END_MARKS and _place_fronted(s) and any(_progressive(s, j, m) for m in range(j + 1, k)):
             return True                           # "In the bedroom, is anyone lying down?" (words33)
         if low in END_MARKS or low in (",", ";", "and", "then") or s.verb_at(k) is not None and \
-                words[k - 1].lower not in NP_OPENERS and not _progressive(s, j, k):
+                words[k - 1].lower not in NP_OPENERS and not _progressive(s, j, k) and not _compound_head(s, j, k):
             return False                          # a verb ("the *pan*": a noun after a determiner)
         if low in _WHETHER_WHERE:
             return s.np_starts(k + 1)
@@ -1623,7 +1650,7 @@ def _let_know(s: State, i: int) -> Match | None:
     if QUESTION_MEANS not in s.lexicon.units or i + 2 >= len(words):
         return None
     told = words[i + 1]
-    if told.lower in NP_OPENERS or \
+    if told.lower in NP_OPENERS or told.lower in _EVERYONE or \
             words[i + 2].lower != LET_KNOW[1] and _one_told(told):      # "let mum and dad know"
         return _let_phrase_know(s, i)
     pronoun = told.lower in OBJECT_PRONOUNS and told.lower not in ("it", "this", "that")
@@ -1645,6 +1672,10 @@ def _let_know(s: State, i: int) -> Match | None:
 
 
 _LET_PHRASE_WORDS = 12
+
+
+_EVERYONE = _INDEFINITES - {"anything", "something"} | {"everyone", "everybody"}
+"""Indefinite pronouns of people that may be told ("let *everyone* in the hall know ...", words37)."""
 
 
 def _one_told(word: Word) -> bool:
@@ -1671,14 +1702,25 @@ def _let_phrase_know(s: State, i: int) -> Match | None:
 
 def _know_after_let(s: State, i: int) -> Match | None:
     if s.verb_index < 0 or s.out[s.verb_index].lower != LET_KNOW[0] or \
-            s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.LABEL):
+            s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.LABEL) and \
+            not (s.prev_tag() == Tag.PRON and s.out[-1].lower in _EVERYONE):
         return None
     k = i + 1                                     # "let mum and dad know *dinner is ready*": what is told
     if s.speech and k < len(s.words) and s.words[k].lower not in _TOLD_LEADS and s.words[k].lower not in END_MARKS \
-            and s.verb_at(k) is None and any(w.lower in BE_WORDS or w.lower in FINITE for w in s.words[k:k + 4]):
+            and s.verb_at(k) is None and (any(w.lower in BE_WORDS or w.lower in FINITE for w in s.words[k:k + 4]) or
+                                          any(_finite_s(s, m) for m in range(k + 1, min(k + 4, len(s.words))))):
         said = s.emit(k, s.speech_end(k) - k, Tag.SAID)
         return Match(1 + said.consumed, said.words)
     return Match(1)                               # "let the person at the chairs *know* what ...": dropped
+
+
+def _finite_s(s: State, m: int) -> bool:
+    """Whether the word at ``m`` is a verb's -s form said of the noun before it ("let him know the meeting *starts*
+    soon", "the bus *leaves* at six"; words37): no noun of a phrase its determiner opens ("the *cups*")."""
+    low = s.words[m].lower
+    lemma = verb_lemma(low)
+    return low.endswith("s") and lemma is not None and lemma != low and \
+        s.words[m - 1].lower not in NP_OPENERS and s.words[m - 1].lower.isalpha()
 
 
 _TOLD_LEADS = WH_WORDS | {"that", ",", "about"}       # WH_WORDS holds "if", "whether", "how"
@@ -1926,6 +1968,8 @@ WHERE_BE_DROPPED = Rule("is, after asked where", _where_be, (
     Example("do you know where the tea spoon is", "is", ""),
     Example("do u know where the remote went", "went", ""),
     Example("where's the remote gone?", "gone", ""),
+    Example("where is the ladle kept?", "kept", ""),
+    Example("where are the jars usually stored?", "stored", ""),
 ), None, "the 'is' of 'do you know where X is', dropped: 'do you know where' was read as 'find'")
 ENSURED_RULE = Rule("make sure of a state", _ensured, (
     Example("please make sure the stove is off", "make sure", Tag.VERB),
@@ -1966,6 +2010,9 @@ LET_KNOW_RULE = Rule("let me know", _let_know, (
     Example("let grandpa know that his taxi is here", "grandpa", Tag.NAME),
     Example("let mum and dad know dinner is ready", "let", Tag.VERB),
     Example("let the person at the chairs know what gesture the person at the sofa is making", "let", Tag.VERB),
+    Example("let everyone in the den know that the film is starting", "let", Tag.VERB),
+    Example("let everybody know lunch is served", "let", Tag.VERB),
+    Example("let Jo know the bus leaves at six", "the bus leaves at six", Tag.SAID),
 ), frozenset([LET_KNOW[0]]), "'let X know': tell X")
 KNOW_AFTER_LET = Rule("know after let X", _know_after_let, (
     Example("let the people in the hall know that dinner is ready", "know", ""),
@@ -2020,6 +2067,83 @@ def _fronted_question(s: State, i: int) -> Match | None:
     end = s.speech_end(asked)
     return Match(end - i, (_unsaid(words[i].start, Tag.VERB, QUESTION_MEANS), s.emit(i, end - i, Tag.SAID).words[0]),
                  expect=False, verb=QUESTION_MEANS, using=False)
+
+
+_TAKEN_UP = frozenset(["it", "they", "them", "he", "she", "him", "her", "that", "this", "those", "these", "one"])
+"""Pronouns with which a question takes up the phrase said before it ("the heaviest jar, what is *it*?")."""
+
+
+def _phrase_asked(s: State, i: int) -> Match | None:
+    """A noun phrase said first and taken up by a pronoun of the question after its comma ("*the heaviest jar on the
+    shelf*, what is it?", "the man by the door, who is he?"; words37): the phrase is part of what to tell, as a
+    phrase of place before a question is (:func:`_fronted_question`)."""
+    words = s.words
+    if QUESTION_MEANS not in s.lexicon.units or s.out and s.out[-1].tag != Tag.POLITE or \
+            words[i].lower not in NP_OPENERS:
+        return None
+    k = i + 1
+    while k < len(words) and words[k].lower not in END_MARKS and words[k].lower not in (",", ";"):
+        if s.verb_at(k) is not None and verb_lemma(words[k].lower) == words[k].lower and \
+                words[k - 1].lower not in NP_OPENERS:
+            return None                           # "the cup, bring it": a command takes it up (``DISLOCATED``)
+        k += 1
+    if k + 2 >= len(words) or words[k].lower != "," or words[k + 1].lower not in QUESTION_WORDS or \
+            not _asked_to_the_end(s, k + 1) or _question(s, k + 1) is None:
+        return None
+    end = s.speech_end(k + 1)
+    if not any(w.lower in _TAKEN_UP for w in words[k + 2:end]):
+        return None                               # "the cup, what about the plate?": nothing taken up
+    return Match(end - i, (_unsaid(words[i].start, Tag.VERB, QUESTION_MEANS), s.emit(i, end - i, Tag.SAID).words[0]),
+                 expect=False, verb=QUESTION_MEANS, using=False)
+
+
+def _count_tail(s: State, k: int) -> int:
+    """How many words from the comma at ``k`` to the sentence's end ask how many of the phrase before it there are
+    (", how many are there?", ", how many of them are left", ", how many is there": words37); 0 if they do not."""
+    words = s.words
+    if k + 3 >= len(words) or words[k].lower != "," or words[k + 1].lower != "how" or words[k + 2].lower != "many":
+        return 0
+    m = k + 3
+    if m + 1 < len(words) and words[m].lower == "of" and words[m + 1].lower in ("them", "those", "these"):
+        m += 2
+    if m < len(words) and words[m].lower in ("are", "is"):
+        m += 1
+    else:
+        return 0
+    while m < len(words) and words[m].lower in ("there", "left", "remaining", "in", "here", "now"):
+        if words[m].lower == "in" and not (m + 1 < len(words) and words[m + 1].lower == "there"):
+            return 0
+        m += 1
+    return m - k if m == len(words) or words[m].lower in END_MARKS else 0
+
+
+def _phrase_counted(s: State, i: int) -> Match | None:
+    """A noun phrase said first and counted by the question after its comma ("*the mugs on the counter*, how many are
+    there?"; words37): count them (the unit "how many"), the question after the comma dropped
+    (:data:`COUNT_TAIL_DROPPED`), as "how many mugs are on the counter?" does."""
+    words = s.words
+    unit = tuple(_COUNTED.split())
+    if unit not in s.lexicon.units.get(unit[0], ()) or s.out and s.out[-1].tag != Tag.POLITE or \
+            words[i].lower not in NP_OPENERS:
+        return None
+    k = i + 1
+    while k < len(words) and words[k].lower not in END_MARKS and words[k].lower not in (",", ";"):
+        if s.verb_at(k) is not None and verb_lemma(words[k].lower) == words[k].lower and \
+                words[k - 1].lower not in NP_OPENERS:
+            return None
+        k += 1
+    if k == i + 1 or not _count_tail(s, k):
+        return None
+    return Match(1, (_unsaid(words[i].start, Tag.VERB, _COUNTED), words[i].tagged(Tag.DET)), expect=False,
+                 verb=_COUNTED, using=False)
+
+
+def _count_tail_dropped(s: State, i: int) -> Match | None:
+    verb = s.out[s.verb_index] if s.verb_index >= 0 else None
+    if verb is None or verb.info != _COUNTED or verb.text:
+        return None
+    n = _count_tail(s, i)
+    return Match(n) if n else None
 
 
 def _asked_to_the_end(s: State, k: int) -> bool:
@@ -2099,6 +2223,17 @@ FRONTED_QUESTION = Rule("phrase said before a question", _fronted_question, (
     Example("in the garage which car is the oldest?", "in the garage which car is the oldest", Tag.SAID),
 ), first_words(PREPOSITIONS) | {"of"},
     "a phrase and a comma before a question: all of it is what to tell")
+PHRASE_ASKED = Rule("phrase said before a question that takes it up", _phrase_asked, (
+    Example("The heaviest jar on the shelf, what is it?", "The heaviest jar on the shelf, what is it", Tag.SAID),
+    Example("the man by the gate, who is he?", "the man by the gate, who is he", Tag.SAID),
+), first_words(NP_OPENERS), "a noun phrase and a comma before a question with a pronoun: all of it is what to tell")
+PHRASE_COUNTED = Rule("phrase said before how many", _phrase_counted, (
+    Example("the jars on the shelf, how many are there?", "the", Tag.DET),
+    Example("those mugs in the sink, how many of them are left", "those", Tag.DET),
+), first_words(NP_OPENERS), "a noun phrase and a comma before 'how many are there': count what it names")
+COUNT_TAIL_DROPPED = Rule("how many are there, after the phrase counted", _count_tail_dropped, (
+    Example("the jars on the shelf, how many are there?", "how", ""),
+), frozenset([","]), "the ', how many are there' of a phrase said first and counted, dropped")
 FRONTED_UNMARKED = Rule("phrase said first, no comma", _fronted_unmarked, (
     Example("From the dresser take the hairbrush", "take", Tag.VERB),
     Example("In the kitchen how many people are standing?", "how many", Tag.VERB),
