@@ -71,6 +71,7 @@ from seal_cli.language.state import (
     longest_phrase,
     lower_case_name,
     match_phrase,
+    subject_contracted,
 )
 from seal_cli.language.tags import NP_START, Tag
 from seal_cli.language.tokens import MAX_LENGTH, CommandError, Word, capitalised, tokenize
@@ -131,6 +132,9 @@ class Lexicon:
     opening: frozenset[str] = frozenset()
     """Verbs that are mostly nouns (``opening: true`` in the library: "dust", "vacuum", "ladle"): a unit only
     opening an imperative clause before its object (:func:`opens_before_object`), a noun anywhere else."""
+    motionless: frozenset[str] = frozenset()
+    """Units none of whose frames has a goal or a source ("wipe", "dust", "heat"; not "take", "clear off"): a
+    particle right after them, before their object, moves nothing ("dust *off* the shelf", words36)."""
     undoable: frozenset[str] = frozenset()
     """Units of frames that leave their theme in a state another frame of the library undoes (a one-place fact on
     the theme that two frames' postconditions say, one way or the other: open/closed, on/off, hot/cold; what the
@@ -174,11 +178,15 @@ class Lexicon:
                   if any(p in other for n, other in said.items() if n != name)}
         undoable = frozenset(unit.text for frame in library.frames if said.get(frame.name, set()) & undone
                              for unit in frame.lexical_units)
+        moving = frozenset(unit.text for frame in library.frames if any(e.role in ("goal", "source")
+                                                                       for e in frame.elements)
+                           for unit in frame.lexical_units)
+        motionless = frozenset(library.by_unit) - moving
         return cls({w: tuple(us) for w, us in units.items()}, _result_words(library),
                    tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts, apart, can, puts,
                    stores, split, frozenset(unit.split()[0] for unit in split), people_only,
                    frozenset(unit.text for frame in library.frames for unit in frame.lexical_units if unit.opening),
-                   undoable)
+                   motionless, undoable)
 
     @cached_property
     def verb_set(self) -> frozenset[str]:
@@ -341,8 +349,10 @@ besides the sentence's start and politeness ("please", "could you")."""
 def opens_before_object(words: Sequence[Word], i: int) -> bool:
     """Whether the word at ``i`` stands where only a verb can: opening an imperative clause (the sentence's start,
     after a joint, "to" or politeness) and right before a noun phrase's opener or an object pronoun ("dust *the*
-    shelf", "please vacuum *my* room", "ladle *it* into the bowl"). A noun is never followed by "the" there."""
-    if i + 1 >= len(words) or not (words[i + 1].lower in NP_OPENERS or words[i + 1].lower in OBJECT_PRONOUNS):
+    shelf", "please vacuum *my* room", "ladle *it* into the bowl"), maybe with a particle between ("dust *off* the
+    shelf", "hoover *up* the crumbs", words36). A noun is never followed by "the" there."""
+    k = i + 2 if i + 2 < len(words) and words[i + 1].lower in PARTICLES else i + 1
+    if k >= len(words) or not (words[k].lower in NP_OPENERS or words[k].lower in OBJECT_PRONOUNS):
         return False
     if i == 0 or words[i - 1].lower in OPENERS:
         return True
@@ -385,6 +395,7 @@ def _stands_alone(words: Sequence[Word], j: int) -> bool:
         # relative clause of the noun before
     return after in (",", ".", "!", "?", ";", "please") or after in PREPOSITIONS or after in SEPARATOR_WORDS or \
         after in DIRECTIONS or after in BECAUSE or "'" in after and after.split("'")[0] in SUBJECTS or \
+        subject_contracted(words, j + 1) or \
         match_phrase(words, j + 1, SUBORDINATORS) > 0 or \
         match_phrase(words, j + 1, TIME_WORDS) > 0 or \
         longest_phrase(words, j + 1, DEGREE_PHRASES) > 0   # "turn it off *it's* too loud", "... *when*", "... *right
