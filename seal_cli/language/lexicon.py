@@ -201,6 +201,7 @@ class Lexicon:
         candidates = self.units.get(first)
         if not candidates:                       # "putting", "placed": a form of a lexical unit
             base = verb_lemma(first) if first.isalpha() else None
+            base = base or self.regular_past(first)
             candidates = self.units.get(base) if base and base != first else None
             if not candidates:
                 return self.again(words, i) or self.mistyped(words, i, stop) or self.written_together(words, i)
@@ -216,7 +217,8 @@ class Lexicon:
                     return None                  # "slice of apple", "the light's": a noun ("how many of": a part)
                 if n > 1 and " ".join(unit) in self.split:
                     continue                     # "put on the table", "put on your coat": no unit said joined
-                if n == 1 and unit[0] in self.opening and not (first == unit[0] and opens_before_object(words, i)):
+                if n == 1 and unit[0] in self.opening and not (first == unit[0] and opens_before_object(words, i)) \
+                        and not _perfect(words, i):
                     continue                     # "put the dust in the bin": a noun; "dust the shelf": the verb
                 if n > 1 or not self._split(words, i, stop, candidates):
                     return " ".join(unit), n, None
@@ -227,6 +229,13 @@ class Lexicon:
         if all(len(unit) == 1 and unit[0] in self.opening for unit in candidates):
             return self.again(words, i)          # "reposition two clocks": no object opener, so "re" + "position"
         return None
+
+    def regular_past(self, word: str) -> str | None:
+        """The unit whose regular past form a word lemminflect does not know is ("hoovered": "hoover", "hoovered"
+        was no verb at all; words36): "-ed" or "-d" taken off leaves a one-word unit of the library; else None."""
+        if len(word) < 5 or not word.endswith("ed") or not word.isalpha():
+            return None
+        return next((stem for stem in (word[:-2], word[:-1]) if (stem,) in self.units.get(stem, ())), None)
 
     def written_together(self, words: Sequence[Word], i: int) -> tuple[str, int, None] | None:
         """A unit of a verb and its particle written as one word ("*turnoff* the lights", "*pickup* the toys":
@@ -344,6 +353,12 @@ class Lexicon:
 OPENERS = frozenset(w for w in (*SEPARATOR_WORDS, "to") if " " not in w) | {".", "!", "?"}
 """The words after which an imperative clause opens ("and", "then", ",", "to": "I need you *to* dust the shelf"),
 besides the sentence's start and politeness ("please", "could you")."""
+
+
+def _perfect(words: Sequence[Word], i: int) -> bool:
+    """Whether the word at ``i`` is a past form ending in "-ed" after "have" ("once you've *hoovered* the rug"): a
+    verb, never a noun (words36)."""
+    return i > 0 and words[i].lower.endswith("ed") and words[i - 1].lower in ("have", "has", "had", "'ve", "you've")
 
 
 def opens_before_object(words: Sequence[Word], i: int) -> bool:

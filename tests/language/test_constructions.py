@@ -3430,3 +3430,14 @@ def test_a_with_phrase_after_the_person_a_frame_takes_describes_them(
     such modifier, as before."""
     assert_reads(text, want, library)
     assert [f for f, _ in frames("follow him with the torch", library)] == ["Pick", "Follow"]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("once you've vacuumed the stairs, shut the gate", [("Clean", {"theme": "stair"}), ("Close", {"theme": "gate"})]),
+    ("after you have hoovered the mat, open the window", [("Clean", {"theme": "mat"}), ("Open", {"theme": "window"})]),
+])
+def test_a_regular_past_of_a_unit_lemminflect_does_not_know_after_have(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """"hoovered" (no form lemminflect lists) after "you've" is the unit "hoover" said in the perfect: the robot's
+    step, as "once you've dusted the shelf" is; it was the having of a thing brought to "hoovered"."""
+    assert_reads(text, want, library)
