@@ -38,6 +38,7 @@ from seal_cli.language.english import (
     NOMINATIVE,
     NP_OPENERS,
     NUMBERS,
+    OBJECT_PARTICLES,
     OBJECT_PRONOUNS,
     PARTICLES,
     PARTS,
@@ -366,7 +367,7 @@ def opens_before_object(words: Sequence[Word], i: int) -> bool:
     after a joint, "to" or politeness) and right before a noun phrase's opener or an object pronoun ("dust *the*
     shelf", "please vacuum *my* room", "ladle *it* into the bowl"), maybe with a particle between ("dust *off* the
     shelf", "hoover *up* the crumbs", words36). A noun is never followed by "the" there."""
-    k = i + 2 if i + 2 < len(words) and words[i + 1].lower in PARTICLES else i + 1
+    k = i + 2 if i + 2 < len(words) and words[i + 1].lower in OBJECT_PARTICLES else i + 1
     if k >= len(words) or not (words[k].lower in NP_OPENERS or words[k].lower in OBJECT_PRONOUNS):
         return False
     if i == 0 or words[i - 1].lower in OPENERS:

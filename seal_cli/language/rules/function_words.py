@@ -14,6 +14,7 @@ from seal_cli.language.english import (
     HERE_WORDS,
     NP_OPENERS,
     NUMBERS,
+    OBJECT_PARTICLES,
     ORDINALS,
     PARTICLES,
     PARTITIVES,
@@ -503,7 +504,7 @@ PARTICLE_BEFORE_OBJECT = Rule("in before the object", _particle_before_object, (
 PARTICLE_OF_NO_MOTION = Rule("a particle before the object of a verb of no motion", _particle_of_no_motion, (
     Example("dust off the bookcase", "off", Tag.PARTICLE),
     Example("please scrub out the roasting tin", "out", Tag.PARTICLE),
-), frozenset(["off", "up", "down", "out"]), "'dust off the shelf': the particle of a verb that moves nothing, before its"
+), OBJECT_PARTICLES, "'dust off the shelf': the particle of a verb that moves nothing, before its"
    " object")
 PREPOSITION = Rule("preposition", _preposition, (
     Example("put the plates back in there", "back", Tag.PARTICLE),
