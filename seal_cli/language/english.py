@@ -524,6 +524,12 @@ STATE_ASKERS = frozenset(["tell me", "let me know", "let us know", "do you know"
 """What asks whether something holds, before "if"/"whether" ("*tell me* if the keys are on the table",
 "*let me know* whether the stove is on", "*find out* if Tom is in the kitchen"): the question, not the verb
 of saying, is the frame (Find of a place, LookAt of a state)."""
+OBJECT_PARTICLES = frozenset(["off", "up", "down", "out"])
+"""Particles a verb may take before its object that never say where a thing is ("dust *off* the shelf"; not "in":
+"a pan with a knife and ladle *in* the sink" names a place, words36)."""
+DEPARTING = frozenset(["out", "away", "off"])
+"""Particles that make a verb of going a leaving ("before you go *out*", "when you head *off*"): with nothing after
+them the going is the time of the command, no frame (words36)."""
 STATE_PARTICLES = frozenset(["on", "off", "open", "shut"])
 """Words that end a question of state though lemminflect lists them as no adjective ("is the TV *on*?")."""
 STATE_ADVERBS = frozenset(["still", "already", "yet", "now", "really", "currently", "properly", "all", "fully",

@@ -762,6 +762,7 @@ class Evoker:
         theme = frame.elements[0].role if frame.elements else ""
         holds_nothing = "instrument" not in frame.roles and not any(
             not p.negated and len(p.args) == 2 and p.args[0] == theme for p in frame.postconditions)
+        people = [roles.get(e.role) for e in frame.elements if self.types.is_person(e.type)]
         for host, pp in attached:
             if pp.describes and pp.prep in LOCATED and host.located is None:
                 host.located = pp.np             # "the dice *that's on the sofa*": where it is
@@ -780,6 +781,8 @@ class Evoker:
             if pp.prep == "with" and pp.np.head is not None and pp.np.kind == "thing" and not pp.np.conjuncts \
                     and noun_lemma(pp.np.head.text) in PARTS:
                 continue                         # "a spoon with a blue handle": described by its part, nothing in it
+            if pp.prep == "with" and not host.pronoun and any(host is p for p in people):
+                continue                         # "follow the guy *with the beard*": a person described (words36)
             if pp.prep == "with" and pp.np.kind != "person" and (host.kind != "person" or host.pronoun):
                 if holds_nothing and host is roles.get(theme) and pp.np.kind == "thing" and not pp.np.pronoun and \
                         not self.worn_by(frame, theme, pp.np):

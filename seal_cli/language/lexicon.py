@@ -38,6 +38,7 @@ from seal_cli.language.english import (
     NOMINATIVE,
     NP_OPENERS,
     NUMBERS,
+    OBJECT_PARTICLES,
     OBJECT_PRONOUNS,
     PARTICLES,
     PARTS,
@@ -71,6 +72,7 @@ from seal_cli.language.state import (
     longest_phrase,
     lower_case_name,
     match_phrase,
+    subject_contracted,
 )
 from seal_cli.language.tags import NP_START, Tag
 from seal_cli.language.tokens import MAX_LENGTH, CommandError, Word, capitalised, tokenize
@@ -131,6 +133,9 @@ class Lexicon:
     opening: frozenset[str] = frozenset()
     """Verbs that are mostly nouns (``opening: true`` in the library: "dust", "vacuum", "ladle"): a unit only
     opening an imperative clause before its object (:func:`opens_before_object`), a noun anywhere else."""
+    motionless: frozenset[str] = frozenset()
+    """Units none of whose frames has a goal or a source ("wipe", "dust", "heat"; not "take", "clear off"): a
+    particle right after them, before their object, moves nothing ("dust *off* the shelf", words36)."""
     undoable: frozenset[str] = frozenset()
     """Units of frames that leave their theme in a state another frame of the library undoes (a one-place fact on
     the theme that two frames' postconditions say, one way or the other: open/closed, on/off, hot/cold; what the
@@ -174,11 +179,15 @@ class Lexicon:
                   if any(p in other for n, other in said.items() if n != name)}
         undoable = frozenset(unit.text for frame in library.frames if said.get(frame.name, set()) & undone
                              for unit in frame.lexical_units)
+        moving = frozenset(unit.text for frame in library.frames if any(e.role in ("goal", "source")
+                                                                       for e in frame.elements)
+                           for unit in frame.lexical_units)
+        motionless = frozenset(library.by_unit) - moving
         return cls({w: tuple(us) for w, us in units.items()}, _result_words(library),
                    tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts, apart, can, puts,
                    stores, split, frozenset(unit.split()[0] for unit in split), people_only,
                    frozenset(unit.text for frame in library.frames for unit in frame.lexical_units if unit.opening),
-                   undoable)
+                   motionless, undoable)
 
     @cached_property
     def verb_set(self) -> frozenset[str]:
@@ -193,6 +202,7 @@ class Lexicon:
         candidates = self.units.get(first)
         if not candidates:                       # "putting", "placed": a form of a lexical unit
             base = verb_lemma(first) if first.isalpha() else None
+            base = base or self.regular_past(first)
             candidates = self.units.get(base) if base and base != first else None
             if not candidates:
                 return self.again(words, i) or self.mistyped(words, i, stop) or self.written_together(words, i)
@@ -208,7 +218,8 @@ class Lexicon:
                     return None                  # "slice of apple", "the light's": a noun ("how many of": a part)
                 if n > 1 and " ".join(unit) in self.split:
                     continue                     # "put on the table", "put on your coat": no unit said joined
-                if n == 1 and unit[0] in self.opening and not (first == unit[0] and opens_before_object(words, i)):
+                if n == 1 and unit[0] in self.opening and not (first == unit[0] and opens_before_object(words, i)) \
+                        and not _perfect(words, i):
                     continue                     # "put the dust in the bin": a noun; "dust the shelf": the verb
                 if n > 1 or not self._split(words, i, stop, candidates):
                     return " ".join(unit), n, None
@@ -219,6 +230,13 @@ class Lexicon:
         if all(len(unit) == 1 and unit[0] in self.opening for unit in candidates):
             return self.again(words, i)          # "reposition two clocks": no object opener, so "re" + "position"
         return None
+
+    def regular_past(self, word: str) -> str | None:
+        """The unit whose regular past form a word lemminflect does not know is ("hoovered": "hoover", "hoovered"
+        was no verb at all; words36): "-ed" or "-d" taken off leaves a one-word unit of the library; else None."""
+        if len(word) < 5 or not word.endswith("ed") or not word.isalpha():
+            return None
+        return next((stem for stem in (word[:-2], word[:-1]) if (stem,) in self.units.get(stem, ())), None)
 
     def written_together(self, words: Sequence[Word], i: int) -> tuple[str, int, None] | None:
         """A unit of a verb and its particle written as one word ("*turnoff* the lights", "*pickup* the toys":
@@ -338,11 +356,19 @@ OPENERS = frozenset(w for w in (*SEPARATOR_WORDS, "to") if " " not in w) | {".",
 besides the sentence's start and politeness ("please", "could you")."""
 
 
+def _perfect(words: Sequence[Word], i: int) -> bool:
+    """Whether the word at ``i`` is a past form ending in "-ed" after "have" ("once you've *hoovered* the rug"): a
+    verb, never a noun (words36)."""
+    return i > 0 and words[i].lower.endswith("ed") and words[i - 1].lower in ("have", "has", "had", "'ve", "you've")
+
+
 def opens_before_object(words: Sequence[Word], i: int) -> bool:
     """Whether the word at ``i`` stands where only a verb can: opening an imperative clause (the sentence's start,
     after a joint, "to" or politeness) and right before a noun phrase's opener or an object pronoun ("dust *the*
-    shelf", "please vacuum *my* room", "ladle *it* into the bowl"). A noun is never followed by "the" there."""
-    if i + 1 >= len(words) or not (words[i + 1].lower in NP_OPENERS or words[i + 1].lower in OBJECT_PRONOUNS):
+    shelf", "please vacuum *my* room", "ladle *it* into the bowl"), maybe with a particle between ("dust *off* the
+    shelf", "hoover *up* the crumbs", words36). A noun is never followed by "the" there."""
+    k = i + 2 if i + 2 < len(words) and words[i + 1].lower in OBJECT_PARTICLES else i + 1
+    if k >= len(words) or not (words[k].lower in NP_OPENERS or words[k].lower in OBJECT_PRONOUNS):
         return False
     if i == 0 or words[i - 1].lower in OPENERS:
         return True
@@ -385,6 +411,7 @@ def _stands_alone(words: Sequence[Word], j: int) -> bool:
         # relative clause of the noun before
     return after in (",", ".", "!", "?", ";", "please") or after in PREPOSITIONS or after in SEPARATOR_WORDS or \
         after in DIRECTIONS or after in BECAUSE or "'" in after and after.split("'")[0] in SUBJECTS or \
+        subject_contracted(words, j + 1) or \
         match_phrase(words, j + 1, SUBORDINATORS) > 0 or \
         match_phrase(words, j + 1, TIME_WORDS) > 0 or \
         longest_phrase(words, j + 1, DEGREE_PHRASES) > 0   # "turn it off *it's* too loud", "... *when*", "... *right

@@ -22,6 +22,7 @@ from seal_cli.language.english import (
     CLOCK_WORDS,
     CONTRACTED,
     CORRECTION_MARKS,
+    DEPARTING,
     DETERMINERS,
     END_MARKS,
     FILLERS,
@@ -81,6 +82,7 @@ from seal_cli.language.morphology import (
     is_adverb,
     is_plural,
     noun_lemma,
+    participles,
     parts_of_speech,
     verb_lemma,
 )
@@ -274,10 +276,27 @@ def _its_is_it_is(words: Sequence[Word], k: int) -> bool:
     if not nxt.isalpha():
         return False
     if nxt in DETERMINERS or nxt in ("not", "been", "going", "gonna", "got") or gerund_lemma(nxt) or \
-            nxt not in CLOSED and is_adverb(nxt) or nxt in PREPOSITIONS and nxt != "one":
-        return True                          # "*its* on the chair": no noun after a possessive (words31)
+            nxt not in CLOSED and is_adverb(nxt) or nxt in PREPOSITIONS and nxt != "one" or _past_only(nxt):
+        return True                          # "*its* on the chair": no noun after a possessive (words31); "*its*
+        #                                      gone cold": a verb's past form that is nothing else (words36)
     after = words[k + 2].lower if k + 2 < len(words) else ""
     return is_adjective(nxt) and (not after.isalpha() or after in CLOSED or after in SEPARATOR_WORDS)
+
+
+def _past_only(word: str) -> bool:
+    """Whether a word is a verb's past form and nothing else in lemminflect ("gone", "melted", "finished"; not
+    "broken", an adjective too, nor "left")."""
+    lemma = verb_lemma(word)
+    return lemma is not None and lemma != word and word in participles(lemma) and parts_of_speech(word) == {"verb"}
+
+
+def subject_contracted(words: Sequence[Word], i: int) -> bool:
+    """Whether a subject pronoun and a contraction written apart start at ``i`` ("it 's", "she 's", "we 're", as the
+    tokenizer splits "it's"): a statement's start; "it 's" only where no noun follows, as for "its" (":func:`
+    _its_is_it_is`": "heat up my coffee *it's gone cold*", words36; "take off it's lid" is the possessive typed)."""
+    if i + 1 >= len(words) or words[i].lower not in SUBJECTS or words[i + 1].lower not in CONTRACTED:
+        return False
+    return words[i].lower != "it" or words[i + 1].lower != "'s" or _its_is_it_is(words, i + 1)
 
 
 _PLACED_SUBJECTS = frozenset(["someone", "somebody", "everyone", "everybody", "nobody", "anyone", "anybody"])
@@ -669,6 +688,7 @@ class State:
         low = self.words[i].lower
         if low not in BECAUSE and not ("'" in low and low.split("'")[0] in SUBJECTS and
                                         "'" + low.split("'", 1)[1] in CONTRACTED) and \
+                not subject_contracted(self.words, i) and \
                 not (low == "so" and i + 1 < len(self.words) and self.words[i + 1].lower in SUBJECTS | {"that"}):
             return 0, ()                 # "stir the porridge *so it doesn't burn*": a purpose, said beside (words31)
         n, spans = self.remark_after(i - 1)
@@ -1168,6 +1188,8 @@ class State:
         if found is None or found[2] is not None or found[0] not in self.lexicon.goals:
             return 0
         after = k + found[1]
+        if after < len(words) and words[after].lower in DEPARTING and found[0] not in self.lexicon.puts:
+            after += 1                          # "before you go *out*": a particle of leaving, nothing after it
         room = after + (after < len(words) and words[after].lower in NP_OPENERS)
         stop = next((m for m in range(room, len(words)) if words[m].lower in END_MARKS or
                      words[m].lower in ("now", "please", ",")), len(words))

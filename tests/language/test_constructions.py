@@ -164,9 +164,9 @@ def test_our_sets_of_peoples_wording_score(path: Path, library: Library) -> None
     scorer = module_from_file("score_parse", SCORER)
     items = [json.loads(line) for line in path.read_text(encoding="utf-8").splitlines() if line.strip()]
     assert len(items) >= 30
-    right = sum(scorer.score_one(parse, scorer.expected_frames(item))[0]
-                for item, parse in zip(items, parse_lines([it["text"] for it in items], library), strict=True)
-                if "error" not in parse)
+    right = sum(_refused_there(item, parse) if "refuse" in item else
+                "error" not in parse and scorer.score_one(parse, scorer.expected_frames(item))[0]
+                for item, parse in zip(items, parse_lines([it["text"] for it in items], library), strict=True))
     # fragments: verbless, unknown verbs (docs/language.md); people16 scored 0.816 after words26 and 0.893 after
     # words27, people17 0.726 untuned and 0.943 after words27, people18 0.820 untuned and 0.920 after words29, people19
     # 0.931 untuned and 0.991 after words30, people20 0.810 untuned and 0.910 after words31: all held at the others'
@@ -175,6 +175,12 @@ def test_our_sets_of_peoples_wording_score(path: Path, library: Library) -> None
     # nowhere ("nip to", "tidy away", "top up", "bin"), refused by design as unknown verbs, like the fragments' set
     least = 0.80 if "fragments" in path.name or "people21" in path.name else 0.85
     assert right / len(items) >= least           # measured: 1.000, 0.900, 0.933, 1.000; 0.938, 0.935, 0.986; 0.822
+
+
+def _refused_there(item: dict, parse: dict) -> bool:
+    """An item whose gold is a refusal (``"refuse": {"at": word, "column": n}``, words36: what no frame of the
+    library says) is right when the command is refused at that column."""
+    return "error" in parse and parse["error"]["column"] == item["refuse"]["column"]
 
 
 def test_where_did_someone_put_it_asks_to_find(library: Library) -> None:
@@ -3386,3 +3392,106 @@ def test_a_tool_said_with_with_is_still_held(library: Library) -> None:
     """words37: a garment after a person describes them; a thing a verb is done with is still taken first."""
     assert [f.frame for f in parse_command("turn on the lamp with the remote", library).frames] == ["Pick", "ToggleOn"]
     assert [f.frame for f in parse_command("greet the man with the hat", library).frames] == ["Greet"]
+
+
+# words36: the kinds wording_people23 found (corrections, conditions, particles, statements run on), each a general
+# construction with examples of my own
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("once you've walked the dog, wash its bowl", [("Guide", {"theme": "dog"}), ("Clean", {"theme": "bowl"})]),
+    ("once you have ironed the shirts, close the wardrobe", [("Close", {"theme": "wardrobe"})]),
+    ("after you've watered the plants, shut the back door", [("Close", {"theme": "door"})]),
+    ("once you have the tray, put it on the table", [("Pick", {"theme": "tray"}), ("Place", {"theme": "tray",
+                                                                                             "goal": "table"})]),
+])
+def test_a_perfect_after_once_or_after_is_a_condition_unless_the_robot_can_do_it(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """"once you've ironed the shirts": the perfect of a verb no frame has is the condition, never the having of a
+    thing ("ironed" was a person things were brought to); a verb of the library is the robot's step, and "have" and
+    a thing is still getting it."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize("text", ["lock the shed before you go out", "before you head off, lock the shed"])
+def test_going_out_is_leaving(text: str, library: Library) -> None:
+    (frame,) = parse_command(text.replace("lock", "close"), library).frames
+    assert frame.frame == "Close" and frame.condition is not None
+
+
+def test_going_out_somewhere_is_still_going(library: Library) -> None:
+    assert [f for f, _ in frames("when you go out to the shed, close the gate", library)] == ["Go", "Close"]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("hand me the fork, or actually the spoon", [("Give", {"theme": "spoon", "recipient": "me"})]),
+    ("switch the heater off, no, the fan", [("ToggleOff", {"theme": "fan"})]),
+    ("turn the tap on, er, sorry, the kettle", [("ToggleOn", {"theme": "kettle"})]),
+])
+def test_a_correction_after_or_or_a_split_particle(text: str, want: list[tuple[str, dict[str, str]]],
+                                                   library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+def test_a_correction_after_the_particle_of_a_verb_said_alone_is_refused(library: Library) -> None:
+    """"put the lid on, sorry, the cover": "put" is a verb alone and "on" may say where; refused, not guessed."""
+    with pytest.raises(CommandError):
+        parse_command("put the lid on, sorry, the cover", library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("dust off the bookcase", [("Clean", {"theme": "bookcase"})]),
+    ("scrub out the roasting tin", [("Clean", {"theme": "tin"})]),
+    ("wipe down the worktop in the kitchen", [("Clean", {"theme": "worktop"})]),
+    ("take off the lid", [("Pick", {"theme": "lid"})]),
+    ("wipe the crumbs off the counter", [("Clean", {"theme": "crumb"})]),    # after the object: which crumbs, as before
+])
+def test_a_particle_before_the_object_of_a_verb_of_no_motion(text: str, want: list[tuple[str, dict[str, str]]] | None,
+                                                             library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize("text", ["warm up my tea it's gone cold", "warm up my tea its gone cold",
+                                  "switch the heater on it's freezing", "close the door it's got cold"])
+def test_a_statement_run_on_after_the_command_is_a_remark(text: str, library: Library) -> None:
+    parse = parse_command(text, library)
+    assert len(parse.frames) == 1 and parse.remarks and parse.remarks[0].lower().startswith("it")
+
+
+def test_its_before_a_noun_is_still_the_possessive(library: Library) -> None:
+    assert frames("take off it's lid", library) == [("Pick", {"theme": "lid"})]
+    assert frames("wash its bowl", library) == [("Clean", {"theme": "bowl"})]
+
+
+def test_a_prohibition_before_a_command_no_frame_has_is_refused_at_that_command(library: Library) -> None:
+    text = "don't switch the radio off, just turn it down"
+    with pytest.raises(CommandError) as caught:
+        parse_command(text, library)
+    assert caught.value.column == text.index("turn it down") + 1 and "turn" in str(caught.value)
+    with pytest.raises(CommandError) as alone:
+        parse_command("don't switch the radio off", library)
+    assert alone.value.column == 1 and "not to do" in str(alone.value)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("follow the fellow with the umbrella", [("Follow", {"theme": "fellow"})]),
+    ("guide the chap with the suitcase to the taxi", [("Guide", {"theme": "chap", "goal": "taxi"})]),
+])
+def test_a_with_phrase_after_the_person_a_frame_takes_describes_them(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """A noun nobody listed as a person ("fellow", "chap") in an element only people fill is a person, and "with"
+    after it says what they have, never a thing picked up first (it was a Pick of the umbrella). A pronoun takes no
+    such modifier, as before."""
+    assert_reads(text, want, library)
+    assert [f for f, _ in frames("follow him with the torch", library)] == ["Pick", "Follow"]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("once you've vacuumed the stairs, shut the gate", [("Clean", {"theme": "stair"}), ("Close", {"theme": "gate"})]),
+    ("after you have hoovered the mat, open the window", [("Clean", {"theme": "mat"}), ("Open", {"theme": "window"})]),
+])
+def test_a_regular_past_of_a_unit_lemminflect_does_not_know_after_have(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """"hoovered" (no form lemminflect lists) after "you've" is the unit "hoover" said in the perfect: the robot's
+    step, as "once you've dusted the shelf" is; it was the having of a thing brought to "hoovered"."""
+    assert_reads(text, want, library)

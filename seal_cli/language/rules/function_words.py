@@ -14,6 +14,7 @@ from seal_cli.language.english import (
     HERE_WORDS,
     NP_OPENERS,
     NUMBERS,
+    OBJECT_PARTICLES,
     ORDINALS,
     PARTICLES,
     PARTITIVES,
@@ -267,6 +268,17 @@ def _particle_before_object(s: State, i: int) -> Match | None:
     return s.emit(i, 1, Tag.PARTICLE, "in")
 
 
+def _particle_of_no_motion(s: State, i: int) -> Match | None:
+    """"dust *off* the shelf", "wipe *down* the worktop", "scrub *out* the pan": a particle right after a verb none of
+    whose frames moves anything (no goal, no source: ``Lexicon.motionless``) and before a determiner or a possessive
+    is the verb's, and the phrase its object: it names no place the thing comes off (words36: "dust off the shelf"
+    was refused as a phrase Clean has no element for). "take off the lid" (Pick has a source) is unchanged."""
+    if s.prev_tag() != Tag.VERB or s.verb_index != len(s.out) - 1 or i + 1 >= len(s.words) or \
+            str(s.out[-1].info) not in s.lexicon.motionless or s.words[i + 1].lower not in NP_OPENERS:
+        return None
+    return s.emit(i, 1, Tag.PARTICLE, s.words[i].lower)
+
+
 def _preposition(s: State, i: int) -> Match | None:
     if s.in_np():
         return None
@@ -512,6 +524,11 @@ FORM_FOR_FROM = Rule("'form' typed for 'from'", _form_for_from, (
     Example("pick up the ladle form the drawer", "form", Tag.PREP),
     Example("bring me a pear form the bowl", "form", Tag.PREP),
 ), frozenset([_FROM_SLIP]), "'form' after a verb's object and before a phrase: 'from' typed with a slip")
+PARTICLE_OF_NO_MOTION = Rule("a particle before the object of a verb of no motion", _particle_of_no_motion, (
+    Example("dust off the bookcase", "off", Tag.PARTICLE),
+    Example("please scrub out the roasting tin", "out", Tag.PARTICLE),
+), OBJECT_PARTICLES, "'dust off the shelf': the particle of a verb that moves nothing, before its"
+   " object")
 PREPOSITION = Rule("preposition", _preposition, (
     Example("put the plates back in there", "back", Tag.PARTICLE),
     Example("put the cup on top of the fridge", "on top of", Tag.PREP),

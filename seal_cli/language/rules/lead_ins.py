@@ -32,7 +32,7 @@ from seal_cli.language.english import (
     TIME_UNITS,
     TIME_WORDS,
 )
-from seal_cli.language.morphology import gerund_lemma, is_adverb, verb_lemma
+from seal_cli.language.morphology import gerund_lemma, is_adverb, participles, parts_of_speech, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.rules.numbers import TEENS, TENS
 from seal_cli.language.state import CLOSED, LEAD_FIRST, TIME_FIRST, State, first_words, match_phrase, merge
@@ -325,14 +325,16 @@ SEQUENCING = Rule("sequencing word", _sequencing, (
 def _having_first(s: State, i: int) -> Match | None:
     """"*Once you have* the spoon, put it in the dishwasher": to have a thing before a clause is to get it first
     (``HAVING_MEANS``); the subordinator and "you have" are read as that verb, the phrase as its object, and the
-    comma or "then" after it joins the clause that follows. "once you have washed it" is a clause of its own."""
+    comma or "then" after it joins the clause that follows. "once you have washed it" is a clause of its own, and so
+    is a past participle of a verb no frame has ("after you've *fed* the cat": the perfect, a condition; words36)."""
     words = s.words
     subordinators, havings = HAVING_FIRST
     n = _longest(s, i, subordinators)
     m = _longest(s, i + n, havings) if n else 0
     k = i + n + m
     if not m or HAVING_MEANS not in s.lexicon.units or not s.np_starts(k) or s.verb_at(k) is not None or \
-            words[k].lower in ("to", "been", "got", "done", "finished") or s.formula(i):
+            words[k].lower in ("to", "been", "got", "done", "finished") or _past_participle(words[k].lower) or \
+            s.formula(i):
         return None                     # "once you have the time": politeness (``TIME_ASKED``)
     end = s.cond_end(k)
     if (end >= len(words) or words[end].lower not in (",", ";", "then", "and") or not s.verb_after(end + 1)) and \
@@ -341,6 +343,13 @@ def _having_first(s: State, i: int) -> Match | None:
     last = words[k - 1].end
     return Match(k - i, (Word(s.text_of(words[i].start, last), words[i].start, last, Tag.VERB, HAVING_MEANS),),
                  expect=False, verb=HAVING_MEANS, using=False)
+
+
+def _past_participle(word: str) -> bool:
+    """Whether a word is only a verb's past form, no noun ("fed", "swept", "ironed"; not "left", "spoon"): after
+    "you have" it makes the perfect, never the having of a thing."""
+    lemma = verb_lemma(word)
+    return lemma is not None and lemma != word and word in participles(lemma) and "noun" not in parts_of_speech(word)
 
 
 HAVING_FIRST_RULE = Rule("having a thing first", _having_first, (

@@ -17,12 +17,15 @@ from seal_cli.language.english import (
     END_MARKS,
     MODALS,
     NOT_FORGOTTEN,
+    NP_OPENERS,
+    OBJECT_PRONOUNS,
+    PARTICLES,
     PROHIBITIVES,
     SUBJECTS,
 )
-from seal_cli.language.morphology import verb_lemma
+from seal_cli.language.morphology import in_verb_tables, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import TIME_FIRST, State, first_words, longest_phrase, merge
+from seal_cli.language.state import CLOSED, TIME_FIRST, State, first_words, longest_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word
 
@@ -96,7 +99,20 @@ def _command_after(s: State, k: int) -> bool:
     while k < len(words) and (words[k].lower in _CLAUSE_ENDS or words[k].lower in _JOINS or
                               words[k].lower in ("instead", "rather")):
         k += 1
-    return k < len(words) and (s.verb_after(k) or s.asks_at(k))
+    return k < len(words) and (s.verb_after(k) or s.asks_at(k) or _unknown_imperative(s, k))
+
+
+def _unknown_imperative(s: State, k: int) -> bool:
+    """Whether an imperative with a verb of English no frame has starts at ``k`` (maybe after "just"): its base form
+    and then an object or a particle ("don't turn it off, just *turn it down*"): a command of its own, refused at its
+    verb, not the prohibition refused for it (words36)."""
+    words = s.words
+    k += k < len(words) and words[k].lower in ("just", "please")
+    if k + 1 >= len(words):
+        return False
+    low, nxt = words[k].lower, words[k + 1].lower
+    return low.isalpha() and low not in CLOSED and verb_lemma(low) == low and in_verb_tables(low) and \
+        (nxt in NP_OPENERS or nxt in OBJECT_PRONOUNS or nxt in PARTICLES)
 
 
 def _prohibited_first(s: State, i: int) -> Match | None:
@@ -170,6 +186,9 @@ def _corrected(s: State, i: int) -> Match | None:
         if words[k].lower == ",":
             k += 1
             continue
+        if words[k].lower == "or" and longest_phrase(words, k + 1, CORRECTION_MARKS):
+            k += 1                               # ", *or* actually the white one": "or" before the marks
+            continue
         n = longest_phrase(words, k, CORRECTION_MARKS)
         if not n:
             break
@@ -194,15 +213,20 @@ def _corrected(s: State, i: int) -> Match | None:
     if end < len(words) and words[end].lower not in END_MARKS:
         return None                              # only a phrase ending its sentence
     out = s.out
-    m = len(out)
+    split = len(out) > 1 and out[-1].tag == Tag.PARTICLE and s.verb_index >= 0 and \
+        (out[s.verb_index].lower,) not in s.lexicon.units.get(out[s.verb_index].lower, ())  # "turn the oven *on*,
+    # sorry, the grill"; not "put": a verb alone, and the particle may say where the phrase goes
+    m = len(out) - split
     while m > 0 and out[m - 1].tag in _NP_TAGS:
         m -= 1
     if m > 0 and out[m - 1].tag in _NP_OPENING:
         m -= 1
     elif m == len(out) and m > 0 and out[m - 1].tag == Tag.PRON:
         m -= 1                                   # "bring it, no, the mug"
-    if m == len(out) or m == 0 or s.verb_index >= m:
+    if m == len(out) - split or m == 0 or s.verb_index >= m:
         return None
+    if split:                                    # the particle stays with its verb, before the phrase said again
+        return Match(k - i, last=out[-1], replaces=len(out) - m)
     return Match(k - i, last=out[m - 1], replaces=len(out) - m + 1)
 
 
@@ -248,6 +272,8 @@ CORRECTED = Rule("a phrase corrected", _corrected, (
     Example("bring me the sugar, no, not the sugar, the salt", "sugar", ""),
     Example("find Ola, actually find Tim", "Ola", ""),                    # the clause said again (words31)
     Example("switch on the fan, sorry, switch it off", "fan", ""),        # the verb's first word again (words34)
+    Example("hand me the fork, or actually the spoon", "fork", ""),       # "or" before the marks (words36)
+    Example("switch the fan off, no, the heater", "fan", ""),             # after a split particle (words36)
 ), frozenset([","]), "', no, NP' after a phrase: the new phrase stands for the last one said")
 DENIED_AFTER = Rule("a phrase denied after the command", _denied_after, (
     Example("give me the big bowl, not the small one.", "small", ""),
