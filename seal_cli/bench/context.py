@@ -16,11 +16,19 @@ policy on a fresh world of that layout, with the same generator seed for every p
 
 Groups are ``house · command · start``; ``all`` is everything; the JSON also has ``by_command``
 and ``by_house`` (the same figures folded another way).
+
+Which cases (:func:`selected_houses`): ``seal bench tasks --suite context`` runs the cases that fit the issue's
+definition by :mod:`~seal_cli.bench.headroom`'s criterion (frame context changes the best first look, by at least
+:data:`~seal_cli.bench.headroom.FITS_SHARE` of the expected path), chosen from priors and map alone among many drawn
+starts and commands and written with their criterion values to :data:`CASES_FILE` before any policy ran on them;
+a case's start keeps its number among the drawn starts. ``--suite context_all`` runs every command from every one of
+the houses' own starts (:func:`houses`: the suite as it was before search26, 36 cases).
 """
 
 from __future__ import annotations
 
 import dataclasses
+import json
 import os
 import tempfile
 import time
@@ -41,6 +49,7 @@ from seal_cli.bench.houses import (
     FARMHOUSE_STARTS,
     GALLERY_STARTS,
     LONGHOUSE_STARTS,
+    MEWS_STARTS,
     RANCH_STARTS,
     TERRACE_STARTS,
     aws_house,
@@ -48,6 +57,7 @@ from seal_cli.bench.houses import (
     cottage,
     gallery,
     longhouse,
+    mews,
     ranch,
 )
 from seal_cli.bench.mapsuite import sample_layout
@@ -58,8 +68,9 @@ from seal_cli.frames.reading import load_library
 from seal_cli.maps.formats.map_server import load_map
 from seal_cli.maps.model import Map, ObjectTruth, Robot
 
-__all__ = ["COMMANDS", "HOUSE_SETS", "START_CLEARANCE", "House", "drawn_starts", "house_set", "houses", "paired",
-           "regroup", "run_context_suite", "unseen_houses", "with_fov"]
+__all__ = ["CASES_FILE", "COMMANDS", "HOUSE_SETS", "START_CLEARANCE", "House", "candidate_houses", "drawn_starts",
+           "house_set", "houses",
+           "paired", "regroup", "run_context_suite", "selected_houses", "unseen_houses", "with_fov"]
 
 COMMANDS = ("stir the cup", "put the spoon in the cup", "stir the mug", "pour the kettle into the mug")
 """Spoon and cup (both likely in the bedroom), twice with different frames; spoon and mug (the
@@ -75,6 +86,10 @@ class House:
 
     map: Map
     starts: tuple[tuple[float, float, float], ...]
+    commands: tuple[tuple[str, ...], ...] | None = None
+    """Per start, the commands run from it (None: every command the suite is given, from every start)."""
+    labels: tuple[int, ...] | None = None
+    """Per start, its number in the groups' names (None: 1, 2, ... in order)."""
 
 
 def houses(data: Path) -> list[House]:
@@ -97,6 +112,12 @@ def houses(data: Path) -> list[House]:
     return [House(apartment, APARTMENT_STARTS), House(aws, AWS_CONTEXT_STARTS), House(cottage(), COTTAGE_STARTS)]
 
 
+def candidate_houses(data: Path) -> list[House]:
+    """The houses the context suite's cases are chosen on: :func:`houses`' three and
+    :func:`~seal_cli.bench.houses.mews`, drawn by search26 when the three gave few cases that fit."""
+    return [*houses(data), House(mews(), MEWS_STARTS)]
+
+
 def unseen_houses() -> list[House]:
     """Houses the suite's policies were not developed on, to check that its figures hold
     (:func:`~seal_cli.bench.houses.bungalow`, drawn after the suite's figures were taken, the shipped
@@ -108,6 +129,37 @@ def unseen_houses() -> list[House]:
     return [House(bungalow(), BUNGALOW_STARTS), House(load_map(map_path("farmhouse")), FARMHOUSE_STARTS),
             House(load_map(map_path("terrace")), TERRACE_STARTS), House(ranch(), RANCH_STARTS),
             House(longhouse(), LONGHOUSE_STARTS), House(gallery(), GALLERY_STARTS)]
+
+
+CASES_FILE = Path(__file__).parent / "suites" / "context_cases.json"
+"""The context suite's cases, with the values of the criterion that chose them (``scripts/context_cases.py``)."""
+
+
+def selected_houses(data: Path, commands: Sequence[str] | None = None, cases_file: Path = CASES_FILE) -> list[House]:
+    """The context suite's selected cases (:data:`CASES_FILE`) as houses: each house with the starts a case was
+    chosen from (numbered as drawn) and, per start, the commands chosen from it; ``commands``: only these
+    commands' cases (refused when none is one). The houses are :func:`candidate_houses`' maps, in their order."""
+    try:
+        cases = json.loads(cases_file.read_text(encoding="utf-8"))["cases"]
+    except (OSError, ValueError, KeyError, TypeError) as error:
+        raise SealError(f"{cases_file}: the context suite's cases cannot be read ({error})") from None
+    if commands is not None:
+        unknown = [c for c in commands if c not in {case["command"] for case in cases}]
+        if unknown:
+            raise SealError(f"--command {unknown[0]!r}: no case of the context suite has it; its commands are "
+                            + ", ".join(sorted({case["command"] for case in cases})))
+        cases = [case for case in cases if case["command"] in commands]
+    built = []
+    for house in candidate_houses(data):
+        mine = [case for case in cases if case["house"] == house.map.name]
+        labels = sorted({int(case["start"]) for case in mine})
+        if not labels:
+            continue
+        poses = tuple(next((float(case["pose"][0]), float(case["pose"][1]), float(case["pose"][2]))
+                           for case in mine if case["start"] == k) for k in labels)
+        said = tuple(tuple(case["command"] for case in mine if case["start"] == k) for k in labels)
+        built.append(House(house.map, poses, said, tuple(labels)))
+    return built
 
 
 HOUSE_SETS = ("suite", "unseen")
@@ -128,7 +180,8 @@ def with_fov(built: Sequence[House], fov: float | None) -> list[House]:
         return list(built)
     if not 0 < fov <= 360:
         raise SealError(f"--fov {fov:g}: degrees in (0, 360]")
-    return [House(dataclasses.replace(h.map, sensor=dataclasses.replace(h.map.sensor, fov_deg=float(fov))), h.starts)
+    return [dataclasses.replace(h, map=dataclasses.replace(h.map, sensor=dataclasses.replace(h.map.sensor,
+                                                                                           fov_deg=float(fov))))
             for h in built]
 
 
@@ -176,15 +229,16 @@ def run_house_layout(house: House, layout: int, commands: Sequence[str], library
     outcomes = []
     for s, pose in enumerate(house.starts):
         start = dataclasses.replace(world, robot=Robot(pose))
-        for c, text in enumerate(commands):
-            group = f"{m.name} · {text} · start {s + 1}"
+        label = house.labels[s] if house.labels is not None else s + 1
+        for c, text in enumerate(house.commands[s] if house.commands is not None else commands):
+            group = f"{m.name} · {text} · start {label}"
             asked = commanded_frames(start, text, library)
             for name in policies:   # judged by the end state, as the map suite (saycan too)
                 began = time.perf_counter()
                 rng = np.random.default_rng(base + 1 + 97 * s + c)
                 ok, path, steps, reason, plan = run_judged(start, text, library, name, rng=rng, particles=particles,
                                                            asked=asked)
-                outcomes.append(Outcome(f"{m.name}-layout{layout}-start{s + 1}-{c}", group, name, ok, round(path, 3),
+                outcomes.append(Outcome(f"{m.name}-layout{layout}-start{label}-{c}", group, name, ok, round(path, 3),
                                         steps, reason, float("nan"), round(time.perf_counter() - began, 3), plan))
     return outcomes
 
@@ -216,7 +270,7 @@ def run_context_suite(data: Path, policies: Sequence[str], *, commands: Sequence
     if starts is not None:
         built = [House(h.map, drawn_starts(h.map, starts, seed)) for h in built]
     for house in built:
-        for text in commands:
+        for text in sorted({t for said in house.commands for t in said} if house.commands is not None else commands):
             plan_text(text, library, vocabulary=vocabulary_of_map(house.map))
     work = [(layout * len(built) + h, layout, tuple(commands), tuple(policies), seed, particles)
             for layout in range(layouts) for h in range(len(built))]

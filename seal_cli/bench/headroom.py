@@ -11,6 +11,11 @@ A case *fits* the issue's definition ("frames need two or more things with overl
 changes the best order) when the programme's first region differs from the one-at-a-time searcher's and the
 expected saving is at least :data:`FITS_SHARE` of the one-at-a-time path: the things' priors overlap in a way
 that changes what to look at first, by enough to measure.
+
+The context suite (``seal bench tasks --suite context``) is made of the cases that fit: :func:`candidates` computes
+every :data:`CANDIDATE_COMMANDS` command from :data:`CANDIDATE_STARTS` starts drawn with :data:`CANDIDATE_SEED` on
+each house, :func:`selected` keeps those that fit, and ``scripts/context_cases.py`` writes them, with their values,
+to :data:`CASES_FILE` (``--check``: the file is what the criterion gives now).
 """
 
 from __future__ import annotations
@@ -21,7 +26,7 @@ from typing import Any
 
 import numpy as np
 
-from seal_cli.bench.context import COMMANDS, House
+from seal_cli.bench.context import COMMANDS, House, drawn_starts
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Binding
 from seal_cli.maps.model import Map, ObjectTruth
@@ -29,7 +34,8 @@ from seal_cli.sim.agent import Agent, View
 from seal_cli.sim.policies.frame_bound import FrameDPPolicy
 from seal_cli.sim.policies.frame_dp import one_at_a_time, solve
 
-__all__ = ["FITS_SHARE", "Headroom", "headroom", "headrooms"]
+__all__ = ["CANDIDATE_COMMANDS", "CANDIDATE_SEED", "CANDIDATE_STARTS", "FITS_SHARE", "Headroom", "candidates",
+           "headroom", "headrooms", "selected"]
 
 FITS_SHARE = 0.05
 """The least expected saving, as a share of the one-at-a-time path, for a case to fit (module docstring):
@@ -51,6 +57,8 @@ class Headroom:
     one_at_a_time_region: str | None
     covered: float
     """The share of the two priors the weighed regions hold (the rest is beyond the model)."""
+    pose: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    """The robot's start."""
 
     @property
     def saving(self) -> float:
@@ -62,7 +70,7 @@ class Headroom:
         return self.joint_region != self.one_at_a_time_region and self.saving >= FITS_SHARE
 
     def to_json(self) -> dict[str, Any]:
-        return {**dataclasses.asdict(self), "joint_m": round(self.joint_m, 3),
+        return {**dataclasses.asdict(self), "pose": list(self.pose), "joint_m": round(self.joint_m, 3),
                 "one_at_a_time_m": round(self.one_at_a_time_m, 3), "covered": round(self.covered, 3),
                 "saving": round(self.saving, 4), "fits": self.fits}
 
@@ -80,6 +88,7 @@ class _Probe(FrameDPPolicy):
 
     name = "headroom"
     case: tuple[str, str, int] = ("", "", 0)
+    pose: tuple[float, float, float] = (0.0, 0.0, 0.0)
 
     def next_view(self, agent: Agent, binding: Binding, target: str) -> View | None:
         m = self.map
@@ -102,7 +111,8 @@ class _Probe(FrameDPPolicy):
 
         house, command, start = self.case
         raise _Asked(Headroom(house, command, start, first, second if problem.second is not None else None,
-                              joint.expected_m, alone.expected_m, name(joint.region), name(alone.region), covered))
+                              joint.expected_m, alone.expected_m, name(joint.region), name(alone.region), covered,
+                              self.pose))
 
 
 def _unseen_world(m: Map) -> Map:
@@ -122,6 +132,7 @@ def headroom(m: Map, pose: tuple[float, float, float], command: str, library: Li
     world = dataclasses.replace(_unseen_world(m), robot=Robot(pose))
     probe = _Probe()
     probe.case = (m.name, command, start)
+    probe.pose = (float(pose[0]), float(pose[1]), float(pose[2]))
     try:
         run_on_map(world, command, library, probe, rng=np.random.default_rng(0), search_end=None)
     except _Asked as asked:
@@ -137,3 +148,28 @@ def headrooms(built: Sequence[House], library: Library, commands: Sequence[str] 
                 found = headroom(house.map, pose, command, library, s + 1)
                 if found is not None:
                     yield found
+
+
+CANDIDATE_COMMANDS = (*COMMANDS, "put the spoon in the mug", "pour the kettle into the cup",
+                      "bring me the cup and the spoon", "bring me the mug and the kettle",
+                      "bring me the spoon and the mug")
+"""The context suite's commands and more of the same kind (two things, each with its prior), the candidates of
+:func:`candidates`; written before any case was computed, by the things' classes, not by any result."""
+
+CANDIDATE_STARTS = 32
+"""Starts drawn per house (:func:`~seal_cli.bench.context.drawn_starts`) for the candidates."""
+
+CANDIDATE_SEED = 26
+"""The seed of the candidates' drawn starts (this round's number, set before any case was computed)."""
+
+
+def candidates(built: Sequence[House], library: Library, commands: Sequence[str] = CANDIDATE_COMMANDS,
+               starts: int = CANDIDATE_STARTS, seed: int = CANDIDATE_SEED) -> Iterator[Headroom]:
+    """Every command from ``starts`` starts drawn with ``seed`` on every house (numbered 1.. in the drawn order),
+    in that order: the priors and the map alone, no layout, no policy."""
+    yield from headrooms([House(h.map, drawn_starts(h.map, starts, seed)) for h in built], library, commands)
+
+
+def selected(cases: Sequence[Headroom]) -> list[Headroom]:
+    """The cases that fit (:attr:`Headroom.fits`), in their order: the context suite."""
+    return [c for c in cases if c.fits]

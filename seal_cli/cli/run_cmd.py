@@ -32,14 +32,18 @@ from seal_cli.cli.output import plain, styled
 from seal_cli.sim.policies import DEFAULT_POLICIES, POLICIES
 from seal_cli.sim.unsearched import SEARCH_END
 
-SUITES = ("alfred2d", "map", "context")
+SUITES = ("alfred2d", "map", "context", "context_all")
 
-SUITE_OPTIONS = {"data": ("--data", ("alfred2d", "context")), "split": ("--split", ("alfred2d",)),
+CONTEXT_SUITES = ("context", "context_all")
+"""``context``: the cases chosen by the headroom criterion (``bench.context.selected_houses``); ``context_all``:
+every command from every own start of the three houses (the suite before search26), or ``--houses unseen``."""
+
+SUITE_OPTIONS = {"data": ("--data", ("alfred2d", *CONTEXT_SUITES)), "split": ("--split", ("alfred2d",)),
                  "goal": ("--goal", ("alfred2d",)), "limit": ("--limit", ("alfred2d",)),
                  "sample": ("--sample", ("alfred2d",)), "types": ("--type", ("alfred2d",)),
-                 "map_name": ("--map", ("map",)), "commands": ("--command", ("map", "context")),
-                 "layouts": ("--layouts", ("map", "context")), "house_set": ("--houses", ("context",)),
-                 "starts": ("--starts", ("context",)), "fov": ("--fov", ("context",))}
+                 "map_name": ("--map", ("map",)), "commands": ("--command", ("map", *CONTEXT_SUITES)),
+                 "layouts": ("--layouts", ("map", *CONTEXT_SUITES)), "house_set": ("--houses", ("context_all",)),
+                 "starts": ("--starts", ("context_all",)), "fov": ("--fov", CONTEXT_SUITES)}
 """The options of ``bench tasks`` that only some suites read (parameter: option, suites). Given to another suite,
 one was passed over in silence (hostile20): ``--suite map --type x`` or ``--limit 1``, meant to make a run short,
 ran the whole suite for minutes; ``--suite alfred2d --map townhouse`` ran ALFRED-2D. Now refused before any work.
@@ -218,10 +222,12 @@ def not_done_outputs(png: Path | None, rrd: Path | None) -> str:
 def tasks(
     suite: str = typer.Option("alfred2d", "--suite", help="alfred2d: ALFRED-2D's episodes; map: commands on "
                               "one seal map over layouts drawn from its priors; context: commands needing two "
-                              "things with overlapping priors, on three houses from several starts."),
+                              "things with overlapping priors, the cases where frame context changes the best "
+                              "first look (chosen from priors and map alone); context_all: every such command "
+                              "from every start of the three houses."),
     data: Path | None = typer.Option(None, "--data", help="The ALFRED-2D folder (default: ../shared/data/alfred2d "
-                                     "beside the project); with --suite context the shared data folder (default "
-                                     "../shared/data), for the AWS house's map.", show_default=False),
+                                     "beside the project); with --suite context or context_all the shared data "
+                                     "folder (default ../shared/data), for the AWS house's map.", show_default=False),
     split: str = typer.Option("valid_seen", "--split", help="Which split's episodes to run (priors always come "
                               "from train)."),
     goal: str = typer.Option("gold", "--goal", help="gold: ALFRED's task labels; human: the first human goal "
@@ -239,16 +245,16 @@ def tasks(
                                               "(repeatable; default: five household commands).",
                                               show_default=False),
     layouts: int | None = typer.Option(None, "--layouts", min=1, max=MAX_COUNT,
-                                       help="With --suite map or context: object "
+                                       help="With --suite map, context or context_all: object "
                                        "layouts drawn from the priors (default 10 for map, 3 for context).",
                                        show_default=False),
-    house_set: str = typer.Option("suite", "--houses", help="With --suite context: suite (the three houses the "
+    house_set: str = typer.Option("suite", "--houses", help="With --suite context_all: suite (the three houses the "
                                   "policies were developed on) or unseen (four held-out houses)."),
-    starts: int | None = typer.Option(None, "--starts", min=1, max=MAX_COUNT, help="With --suite context: this "
+    starts: int | None = typer.Option(None, "--starts", min=1, max=MAX_COUNT, help="With --suite context_all: this "
                                       "many starts per house drawn with --seed from its rooms' free space "
                                       "(default: each house's own three).", show_default=False),
-    fov: float | None = typer.Option(None, "--fov", help="With --suite context: every house's sensor sees this "
-                                     "many degrees, in (0, 360] (default: each house's own, 360).",
+    fov: float | None = typer.Option(None, "--fov", help="With --suite context or context_all: every house's "
+                                     "sensor sees this many degrees, in (0, 360] (default: each house's own, 360).",
                                      show_default=False),
     policies: str = typer.Option(",".join(DEFAULT_POLICIES), "--policies",
                                  help="Comma-separated policies, of: " + ", ".join(POLICIES) + "."),
@@ -283,14 +289,14 @@ def tasks(
     _unread_options(suite, given)
     if fov is not None and not 0 < fov <= 360:      # NaN too
         raise SealError(f"--fov {fov:g}: degrees in (0, 360]")
-    if suite == "context":
+    if suite == "context_all":
         from seal_cli.bench.context import HOUSE_SETS
 
         if house_set not in HOUSE_SETS:
             raise SealError(f"--houses {house_set!r}: one of {', '.join(HOUSE_SETS)}")
     shared = Path(__file__).resolve().parents[2].parent / "shared" / "data"
     if data is None:
-        data = shared if suite == "context" else shared / "alfred2d"
+        data = shared if suite in CONTEXT_SUITES else shared / "alfred2d"
         if suite != "map" and not data.is_dir():
             raise SealError(f"the {suite} suite's data is not at {data}, the default beside a checkout of seal (an "
                             "installed seal has no data): give --data DIR")
@@ -318,15 +324,16 @@ def tasks(
             runs = run_map_suite(str(the_map), list(commands or COMMANDS), names, layouts=layouts,
                                  seed=seed, jobs=jobs or os.cpu_count() or 1, particles=particles, framelib=libs,
                                  progress=advance)
-        elif suite == "context":
+        elif suite in CONTEXT_SUITES:
             from seal_cli.bench import context
 
             layouts = layouts or 3
+            on = context.selected_houses(data, commands or None) if suite == "context" else \
+                context.house_set(house_set, data)
             runs = context.run_context_suite(data, names, commands=list(commands or context.COMMANDS),
                                              layouts=layouts, seed=seed, jobs=jobs or os.cpu_count() or 1,
                                              particles=particles, framelib=libs, progress=advance,
-                                             on=context.with_fov(context.house_set(house_set, data), fov),
-                                             starts=starts)
+                                             on=context.with_fov(on, fov), starts=starts)
         else:
             runs = run_suite(data, split, names, goal=goal, limit=limit, types=types, seed=seed,
                              jobs=jobs or os.cpu_count() or 1, particles=particles, framelib=libs,
@@ -339,11 +346,12 @@ def tasks(
     report = summarise(outcomes, names)
     if suite == "map":
         report.update({"suite": suite, "map": map_name, "layouts": layouts, "seed": seed})
-    elif suite == "context":
+    elif suite in CONTEXT_SUITES:
         from seal_cli.bench.context import paired, regroup
 
-        report.update({"suite": suite, "houses": house_set, "starts": starts or "the houses' own", "fov": fov,
-                       "layouts": layouts, "seed": seed, "by_command": regroup(outcomes, names, 1),
+        report.update({"suite": suite, "houses": house_set if suite == "context_all" else "selected",
+                       "starts": starts or ("the houses' own" if suite == "context_all" else "the cases' own"),
+                       "fov": fov, "layouts": layouts, "seed": seed, "by_command": regroup(outcomes, names, 1),
                        "by_house": regroup(outcomes, names, 0), "against_prior_optimal": paired(outcomes, names)})
     else:
         report.update({"suite": suite, "split": split, "goal": goal, "seed": seed, "limit": limit, "sample": sample})
@@ -362,8 +370,9 @@ def _table(report: dict[str, Any], names: list[str]) -> None:
 
     if report["suite"] == "map":
         title = f"map {plain(report['map'])}, {report['layouts']} layouts: success rate / mean path (m)"
-    elif report["suite"] == "context":
-        title = f"context suite ({report['houses']} houses), {report['layouts']} layouts: success rate / mean path (m)"
+    elif report["suite"] in CONTEXT_SUITES:
+        title = (f"{report['suite']} suite ({report['houses']} houses), {report['layouts']} layouts: success rate / "
+                 "mean path (m)")
     else:
         title = f"ALFRED-2D {plain(report['split'])}, goals from {report['goal']}: success rate / mean path (m)"
     table = Table(title=title)

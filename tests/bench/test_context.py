@@ -109,18 +109,19 @@ def test_a_layout_runs_every_policy_on_the_same_worlds(library: Library) -> None
 def test_bench_tasks_context_refuses_an_unknown_policy_and_a_bad_command(shared_data: Path) -> None:
     bad = runner.invoke(app, ["bench", "tasks", "--suite", "context", "--policies", "sefm,psychic"])
     assert bad.exit_code == 1 and "unknown policy 'psychic'; known: sefm" in bad.stderr
-    unplannable = runner.invoke(app, ["bench", "tasks", "--suite", "context", "--command", "launch the rocket",
+    unplannable = runner.invoke(app, ["bench", "tasks", "--suite", "context_all", "--command", "launch the rocket",
                                       "--data", str(shared_data), "--jobs", "1"])
     assert unplannable.exit_code == 1 and "unknown verb 'launch'" in unplannable.stderr
     assert "Traceback" not in unplannable.output
 
 
-def test_bench_tasks_context_json(shared_data: Path) -> None:
-    result = runner.invoke(app, ["bench", "tasks", "--suite", "context", "--command", "stir the cup", "--layouts", "1",
-                                 "--policies", "oracle", "--jobs", "1", "--data", str(shared_data), "--json"])
+def test_bench_tasks_context_all_json(shared_data: Path) -> None:
+    # the suite as it was before search26: every command from every own start of the three houses
+    result = runner.invoke(app, ["bench", "tasks", "--suite", "context_all", "--command", "stir the cup", "--layouts",
+                                 "1", "--policies", "oracle", "--jobs", "1", "--data", str(shared_data), "--json"])
     assert result.exit_code == 0, result.output
     data = json.loads(result.stdout)
-    assert data["suite"] == "context" and "all" in data["groups"]
+    assert data["suite"] == "context_all" and data["houses"] == "suite" and "all" in data["groups"]
     assert data["groups"]["all"]["n"] == 9 and set(data["by_house"]) == {"apartment", "aws_small_house", "cottage",
                                                                           "all"}
 
@@ -168,7 +169,7 @@ def test_the_house_sets_by_name(shared_data: Path) -> None:
 
 
 def test_bench_tasks_context_on_the_unseen_houses_from_drawn_starts(shared_data: Path) -> None:
-    result = runner.invoke(app, ["bench", "tasks", "--suite", "context", "--houses", "unseen", "--starts", "1",
+    result = runner.invoke(app, ["bench", "tasks", "--suite", "context_all", "--houses", "unseen", "--starts", "1",
                                  "--seed", "2", "--command", "stir the cup", "--layouts", "1", "--policies", "oracle",
                                  "--jobs", "1", "--data", str(shared_data), "--json"])
     assert result.exit_code == 0, result.output
@@ -180,11 +181,12 @@ def test_bench_tasks_context_on_the_unseen_houses_from_drawn_starts(shared_data:
 
 
 def test_bench_tasks_refuses_an_unknown_house_set_and_starts_off_the_context_suite(shared_data: Path) -> None:
-    bad = runner.invoke(app, ["bench", "tasks", "--suite", "context", "--houses", "mine", "--data", str(shared_data)])
+    bad = runner.invoke(app, ["bench", "tasks", "--suite", "context_all", "--houses", "mine", "--data",
+                              str(shared_data)])
     assert bad.exit_code == 1 and "--houses 'mine': one of suite, unseen" in bad.stderr
     off = runner.invoke(app, ["bench", "tasks", "--suite", "map", "--starts", "2"])
     assert (off.exit_code, off.stderr) == (1, "error: --suite map does not read --starts: --starts goes with --suite "
-                                              "context\n")
+                                              "context_all\n")
     assert "Traceback" not in bad.output + off.output
 
 
@@ -197,9 +199,43 @@ def test_bench_tasks_context_fov_gives_every_house_that_sensor_and_refuses_a_sen
         assert out.exit_code == 1 and "degrees in (0, 360]" in out.stderr and "Traceback" not in out.output, bad
     off = runner.invoke(app, ["bench", "tasks", "--suite", "map", "--fov", "90"])
     assert off.exit_code == 1 and "--suite map does not read --fov: --fov goes with --suite context" in off.stderr
-    result = runner.invoke(app, ["bench", "tasks", "--suite", "context", "--houses", "unseen", "--starts", "1",
+    result = runner.invoke(app, ["bench", "tasks", "--suite", "context_all", "--houses", "unseen", "--starts", "1",
                                  "--command", "stir the cup", "--layouts", "1", "--policies", "oracle", "--fov", "90",
                                  "--jobs", "1", "--data", str(shared_data), "--json"])
     assert result.exit_code == 0, result.output
     data = json.loads(result.stdout)
     assert data["fov"] == 90 and data["groups"]["all"]["success"]["oracle"] == 1.0
+
+
+def test_the_context_suite_is_the_chosen_cases_from_their_own_starts(shared_data: Path, tmp_path: Path) -> None:
+    from seal_cli.bench.context import CASES_FILE, selected_houses
+
+    cases = json.loads(CASES_FILE.read_text(encoding="utf-8"))["cases"]
+    built = selected_houses(shared_data)
+    runs = {(h.map.name, label, text, pose) for h in built
+            for label, said, pose in zip(h.labels or (), h.commands or (), h.starts, strict=True) for text in said}
+    assert runs == {(c["house"], c["start"], c["command"], tuple(c["pose"])) for c in cases}
+    assert len(cases) >= 30 and {"apartment", "aws_small_house"} < {h.map.name for h in built}
+    only = selected_houses(shared_data, ["stir the cup"])
+    assert {t for h in only for said in h.commands or () for t in said} == {"stir the cup"}
+    with pytest.raises(SealError, match="--command 'launch the rocket': no case of the context suite has it"):
+        selected_houses(shared_data, ["launch the rocket"])
+    broken = tmp_path / "cases.json"
+    broken.write_text("{", encoding="utf-8")
+    with pytest.raises(SealError, match="cases.json: the context suite's cases cannot be read"):
+        selected_houses(shared_data, cases_file=broken)
+
+
+def test_bench_tasks_context_runs_the_chosen_cases(shared_data: Path) -> None:
+    from seal_cli.bench.context import CASES_FILE
+
+    cases = json.loads(CASES_FILE.read_text(encoding="utf-8"))["cases"]
+    text = min({c["command"] for c in cases}, key=lambda t: sum(c["command"] == t for c in cases))
+    mine = [c for c in cases if c["command"] == text]
+    result = runner.invoke(app, ["bench", "tasks", "--suite", "context", "--command", text, "--layouts", "1",
+                                 "--policies", "oracle", "--jobs", "1", "--data", str(shared_data), "--json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert data["suite"] == "context" and data["houses"] == "selected"
+    assert set(data["groups"]) - {"all"} == {f"{c['house']} · {text} · start {c['start']}" for c in mine}
+    assert data["groups"]["all"]["n"] == len(mine) and data["groups"]["all"]["success"]["oracle"] == 1.0

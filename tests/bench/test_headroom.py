@@ -37,3 +37,43 @@ def test_a_case_fits_when_context_changes_the_first_look_by_enough() -> None:
     assert case(20.0 * (1 - FITS_SHARE), "bedroom").fits
     assert not case(20.0 * (1 - FITS_SHARE) + 0.01, "bedroom").fits   # the order changes, by too little
     assert not case(10.0, "kitchen").fits                                # the same first look
+
+
+def test_the_candidates_are_the_same_for_a_seed_and_numbered_as_drawn() -> None:
+    from seal_cli.bench.context import House, drawn_starts
+    from seal_cli.bench.headroom import candidates
+    from seal_cli.bench.houses import mews
+
+    house, library = House(mews(), ()), load_library(None)
+    once = list(candidates([house], library, commands=("stir the cup",), starts=2, seed=5))
+    assert once == list(candidates([house], library, commands=("stir the cup",), starts=2, seed=5))
+    assert [c.pose for c in once] == list(drawn_starts(house.map, 2, 5)) and [c.start for c in once] == [1, 2]
+    other = list(candidates([house], library, commands=("stir the cup",), starts=2, seed=6))
+    assert [c.pose for c in other] != [c.pose for c in once]
+
+
+def test_the_committed_cases_are_what_the_criterion_gives_on_a_slice() -> None:
+    # the whole file takes ~15 min to recompute (scripts/context_cases.py --check); here: the file's own consistency,
+    # and the mews (built in code) recomputed for its first case that fits and its first that does not
+    import json
+
+    from seal_cli.bench.context import CASES_FILE, drawn_starts
+    from seal_cli.bench.headroom import CANDIDATE_COMMANDS, CANDIDATE_SEED, CANDIDATE_STARTS
+    from seal_cli.bench.houses import mews
+
+    doc = json.loads(CASES_FILE.read_text(encoding="utf-8"))
+    assert (doc["fits_share"], doc["starts"], doc["seed"]) == (FITS_SHARE, CANDIDATE_STARTS, CANDIDATE_SEED)
+    assert doc["commands"] == list(CANDIDATE_COMMANDS)
+    assert doc["cases"] == [c for c in doc["candidates"] if c["fits"]]
+    assert len(doc["candidates"]) == len(doc["houses"]) * CANDIDATE_STARTS * len(CANDIDATE_COMMANDS)
+    assert all(c["fits"] == (c["joint_region"] != c["one_at_a_time_region"] and c["saving"] >= FITS_SHARE)
+               for c in doc["candidates"])
+    m = mews()
+    poses = drawn_starts(m, CANDIDATE_STARTS, CANDIDATE_SEED)
+    mine = [c for c in doc["candidates"] if c["house"] == "mews"]
+    picked = [next(c for c in mine if c["fits"]), next(c for c in mine if not c["fits"] and c["second"])]
+    library = load_library(None)
+    for case in picked:
+        assert case["pose"] == list(poses[case["start"] - 1])
+        again = headroom(m, poses[case["start"] - 1], case["command"], library, case["start"])
+        assert again is not None and again.to_json() == case

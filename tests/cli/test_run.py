@@ -139,15 +139,19 @@ def test_holding_given_once_is_what_the_robot_holds() -> None:
     (["--suite", "context", "--goal", "human", "--layouts", "1"],
      "error: --suite context does not read --goal: --goal goes with --suite alfred2d\n"),
     (["--suite", "map", "--data", "."], "error: --suite map does not read --data: --data goes with --suite alfred2d or "
-                                        "context\n"),
+                                        "context or context_all\n"),
     # the context suite's own options are in the same table, with the same message (hostile21: they had a check of
     # their own, by value, so '--houses suite' to another suite passed)
     (["--houses", "suite", "--fov", "90"],
-     "error: --suite alfred2d does not read --houses, --fov: --houses goes with --suite context; --fov goes with "
-     "--suite context\n"),
+     "error: --suite alfred2d does not read --houses, --fov: --houses goes with --suite context_all; --fov goes with "
+     "--suite context or context_all\n"),
+    # the chosen cases have their own starts: --houses and --starts go with the whole suite (search26)
+    (["--suite", "context", "--houses", "unseen", "--starts", "2"],
+     "error: --suite context does not read --houses, --starts: --houses goes with --suite context_all; --starts goes "
+     "with --suite context_all\n"),
     (["--suite", "map", "--starts", "2", "--type", "x"],
      "error: --suite map does not read --type, --starts: --type goes with --suite alfred2d; --starts goes with --suite "
-     "context\n"),
+     "context_all\n"),
 ])
 def test_bench_tasks_refuses_an_option_its_suite_does_not_read(args: list[str], said: str) -> None:
     # given to a suite that does not read it, an option was passed over: '--suite map --type x' ran the whole suite for
