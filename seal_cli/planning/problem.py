@@ -43,7 +43,7 @@ from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
-from seal_cli.errors import SealError, Where, at_words
+from seal_cli.errors import SealError, at_words
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Action, Binding, Fact, Frame
 from seal_cli.frames.taxonomy import Taxonomy, check_class_name, class_key, class_words
@@ -325,9 +325,8 @@ def _default(frame: Frame, element: Any, evoked: Any, things: Things, text: str)
         return value
     places = ", ".join(p.name for p in things.map.places) or "none"
     span = getattr(evoked, "span", None)
-    raise SealError(f"{frame.name} needs a {element.type} as its {element.role} (a {element.default} unless one "
-                    f"is said), and the {things.map.said} has none; its places are {places}",
-                    Where(None, 1, span[0] + 1) if span else None, source_line=text if span else None)
+    raise at_words(f"{frame.name} needs a {element.type} as its {element.role} (a {element.default} unless one "
+                   f"is said), and the {things.map.said} has none; its places are {places}", span, text)
 
 
 def _goal_not_source(evoked: Evoked, values: Mapping[str, tuple[str, ...]], things: Things, text: str) -> None:
@@ -1387,11 +1386,28 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
         state = state.apply(binding)
         changed.update((f.positive, text) for f in binding.postconditions)
     _nothing_to_hand(parse, commanded, state)
+    commanded = _the_thing_held(commanded, state)
     warnings = (*unknown_to_map(commanded, things), *chosen_among(commanded, things)) if map else ()
     return Problem(parse.text, tuple(commanded), state, warnings,
                    tuple(b for b in things.put_away if b in commanded),
                    tuple(b for b in things.put_back if b in commanded), dict(things.called),
                    {b: places for b, places in among.items() if b in commanded})
+
+
+def _the_thing_held(commanded: Sequence[Binding], state: State) -> list[Binding]:
+    """The frames with a frame that hands over or puts down a thing it does not name ("give me", "hand it over to
+    Owen" said with no thing) given the thing the robot holds as the command starts (after ``--done``), when no frame
+    before it takes another up: "give me" holding a mug gives the mug. Before, the Give had no theme, so nothing was
+    handed over and the run put the mug down on the nearest table (lead, e2e29)."""
+    held = next((f.args[0] for f in state.facts if f.predicate == "holding" and not f.negated and f.args), None)
+    frames: list[Binding] = []
+    for number, binding in enumerate(commanded):
+        if held is None or binding.frame.gets_held():
+            return [*frames, *commanded[number:]]
+        if binding.frame.needs_held("theme") and "theme" in binding.frame.roles and "theme" not in binding.elements:
+            binding = binding.frame.bind({**binding.elements, "theme": held})
+        frames.append(binding)
+    return frames
 
 
 def _nothing_to_hand(parse: Parse, commanded: Sequence[Binding], state: State) -> None:
@@ -1616,6 +1632,8 @@ def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:
     if m is None:
         return []
     known = set(m.priors) | {o.cls for o in m.objects} | {p.cls for p in m.places}
+    if things.held:                 # what the robot holds as it starts is not searched for ("give me", holding a mug)
+        known.add(things.class_of(things.name(things.held)))
     placed = {p.key for p in m.people} | {SPEAKER}
     warnings: dict[str, None] = {}
     unknown: set[str] = set()

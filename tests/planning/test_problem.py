@@ -781,8 +781,30 @@ def test_a_thing_to_hand_over_unsaid_with_nothing_held_is_refused_at_the_verb(li
             plan_text(text, library, map=apartment)
         assert refused.value.where.column == 1
     assert [str(s) for s in plan_text("give me", library, map=apartment, holding="cup").steps] == [
-        "Give(recipient=me)"]
+        "Give(theme=cup, recipient=me)"]
     assert [str(s) for s in plan_text("give me", library, map=apartment, done=["pick up the cup"]).steps] == [
-        "Give(recipient=me)"]
+        "Give(theme=cup, recipient=me)"]
     assert [str(s) for s in plan_text("pick up the cup and give me", library, map=apartment).steps] == [
         "Pick(theme=cup)", "Give(theme=cup, recipient=me)"]
+
+
+def test_a_thing_to_hand_over_unsaid_is_the_thing_held(library: Library) -> None:
+    """"give me" holding a mug hands the mug over: the Give had no theme, so the run put the mug down on the nearest
+    table instead (lead, e2e29). A mug the map does not place is not warned about: the robot holds it."""
+    import numpy as np
+
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan as plan_text
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.policies import make_policy
+
+    apartment = load_map("apartment")
+    planned = plan_text("give me", library, map=apartment, holding="mug")
+    assert [str(s) for s in planned.steps] == ["Give(theme=mug, recipient=me)"] and not planned.warnings
+    assert [str(s) for s in plan_text("give it to Ben", library, map=apartment, holding="mug").steps] == [
+        "Give(theme=mug, recipient=ben)"]
+    agent, result = run_on_map(apartment, "give me", library, make_policy("sefm"), rng=np.random.default_rng(0),
+                               holding="mug")
+    assert result.completed, result.reason
+    assert any(r.text == "handed mug_1 to me" for r in agent.records)
+    assert not any(r.text.startswith("put mug_1") for r in agent.records)
