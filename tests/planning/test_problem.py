@@ -808,3 +808,18 @@ def test_a_thing_to_hand_over_unsaid_is_the_thing_held(library: Library) -> None
     assert result.completed, result.reason
     assert any(r.text == "handed mug_1 to me" for r in agent.records)
     assert not any(r.text.startswith("put mug_1") for r in agent.records)
+
+
+def test_more_things_of_a_kind_than_the_map_places_are_warned_of(library: Library) -> None:
+    """Lead, e2e29: "bring me two books" where the map places one book searched 87 m for the second before it said
+    there was none; the plan says first how many the map places, and where the run will look for the other."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan as plan_text
+
+    guesthouse = load_map("guesthouse")
+    warned = list(plan_text("fetch me two books", library, map=guesthouse).warnings)
+    assert warned == ["the guesthouse places 1 book (on bookshelf_1) and the command asks for 2: seal run looks for "
+                      "the other where the map's prior keeps them (bookshelf, nightstand) and says so if it finds none"]
+    assert not plan_text("fetch me a book", library, map=guesthouse).warnings
+    assert not plan_text("bring me two cups", library, map=guesthouse).warnings      # it places four
+    assert "places 4 cups" in plan_text("bring me five cups", library, map=guesthouse).warnings[0]

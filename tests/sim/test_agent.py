@@ -801,6 +801,21 @@ def test_the_one_seen_where_another_is_to_go_is_no_evidence_of_where_another_lie
     assert result.path_m < before / 3
 
 
+def test_a_thing_already_chosen_for_another_name_is_no_evidence_of_where_the_next_lies(library: Library) -> None:
+    """Lead, e2e29: "bring me two books" on the guesthouse (one book, on the bookshelf) handed the book over, then the
+    search for the second looked at the speaker, where the book handed over kept the belief, and gave up at 87.37 m.
+    The book chosen for the first name, which no step left names, is no detection of the second."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    agent, result = pipeline.run_on_map(load_map("guesthouse"), "bring me two books", library, SeFMPolicy(),
+                                        rng=np.random.default_rng(0))
+    said = [r.text for r in agent.records]
+    assert "handed book_1 to me" in said and not result.completed and result.reason.startswith("no other book found")
+    assert not any("looks at me" in s for s in said[said.index("handed book_1 to me"):])
+    assert result.path_m < 87.37 * 0.6
+
+
 def test_a_thing_in_one_of_several_places_of_the_goals_class_is_put_there_already(library: Library) -> None:
     """Lead, after e2e27: "put the milk in the fridge" on the corner shop (a fridge in the shop and one in the kitchen,
     a milk in each) found milk_2 in the fridge it chose and searched the whole house for another milk, 256 m, to move
