@@ -129,10 +129,15 @@ class Things:
         self.named_before: list[str] = []
         """The people the commands already done (``--done``) named, in order: the last is whom a "him" or "her"
         the command does not name itself stands for."""
+        self.handled_before: list[str] = []
+        """The things the commands already done (``--done``) acted on (their frames' themes), in order: the last is
+        what an "it" the command does not name itself stands for (--done 'pick up the cup' 'give it to me')."""
         """What the robot holds as the command starts (``--holding``, else the map's robot): what "it" calls
         when nothing before it in the command does ("put it in the sink")."""
         self.people: set[str] = set()
         """The people the command names."""
+        self.done_said = False
+        """Whether commands done before this one (``--done``) were given."""
         self.roles_said: set[str] = set()
         """The people the command calls by a noun ("the nurse"), not by a name."""
         self.called: dict[str, str] = {}
@@ -399,10 +404,12 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
     if word in INDEFINITE and things.map is not None and category not in ("message", "question"):
         raise _located(_unnamed_kind(phrase, things.map), phrase, text)
     if word in PRONOUNS and word not in PERSON_PRONOUNS and word not in INDEFINITE:
+        if things.handled_before and word in HELD_PRONOUNS:     # what the commands done acted on last
+            return (things.handled_before[-1],)
         if things.held and word in HELD_PRONOUNS:
             return (things.name(things.held),)
-        raise _located(f"cannot tell what {phrase.text!r} refers to: nothing before it in the command fits",
-                       phrase, text)
+        raise _located(f"cannot tell what {phrase.text!r} refers to: nothing before it in the command fits"
+                       f"{', nor does a command done before it (--done)' if things.done_said else ''}", phrase, text)
     if things.names is not None and (on_map := _on_map(phrase, things, text, category, asked, carried,
                                                        gone_to)) is not None:
         return on_map
@@ -1370,6 +1377,8 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
         bindings = commanded_frames(earlier, library, things)
         executed.extend((earlier.text, b) for b in bindings)
         things.named_before = [*things.named_before, *_people_named(bindings, things)]
+        things.handled_before = [*things.handled_before, *_handled(bindings, things)]
+        things.done_said = True
     commanded = commanded_frames(parse, library, things)
     _the_ones_said_where(commanded, things)
     the_ones_not_there(commanded, things)
@@ -1427,6 +1436,11 @@ def _nothing_to_hand(parse: Parse, commanded: Sequence[Binding], state: State) -
             verb = " ".join(words_of(evoked.lexical_unit)) if evoked is not None else binding.frame.name.lower()
             raise _located(f"{verb} what? the command says no thing to {verb}, and the robot holds nothing; say what "
                            f"(\"{verb} me the cup\")", evoked, parse.text)
+
+
+def _handled(bindings: Sequence[Binding], things: Things) -> list[str]:
+    """The things the frames act on (their themes, not people), in order: what a later "it" can stand for."""
+    return [v for b in bindings for r, v in b.values if r == "theme" and v not in things.people and v != SPEAKER]
 
 
 def _people_named(bindings: Sequence[Binding], things: Things) -> list[str]:
@@ -1589,8 +1603,16 @@ def the_nearest_ones(commanded: Sequence[Binding], things: Things) -> None:
         lying = {n: _lies_on(n, things) for n, c in things.classes.items()
                  if c == cls and n not in things.fixed and (n == theme or n not in used)}
         places = {p for p in lying.values() if p is not None}
-        if len(lying) < 2 or None in lying.values() or len({things.class_of(p) for p in places}) != 1 \
-                or len(places) < 2 or _put_where_it_lies(theme, lying[theme], commanded[index:], things):
+        if len(lying) < 2 or None in lying.values() or len(places) < 2 \
+                or _put_where_it_lies(theme, lying[theme], commanded[index:], things):
+            continue
+        if len({things.class_of(p) for p in places}) != 1:
+            goals = {things.class_of(g) for b in commanded if b.elements.get("theme") == theme
+                     for g in (b.elements.get("goal"),) if g is not None}
+            kept = _most_kept(cls, {n: p for n, p in lying.items() if things.class_of(p or "") not in goals},
+                              m, things) if not any(p in things.closable for p in places) else None
+            if kept is not None and kept != theme:
+                things.swap(theme, kept)
             continue
         start = _robot_at(binding.frame, "source", {}, commanded[:index], things)
         order = sorted(places)
@@ -1598,6 +1620,20 @@ def the_nearest_ones(commanded: Sequence[Binding], things: Things) -> None:
         best = min(lying, key=lambda n: (lengths[lying[n] or ""], n != theme))
         if best != theme and lengths[lying[best] or ""] < lengths[lying[theme] or ""]:
             things.swap(theme, best)
+
+
+def _most_kept(cls: str, lying: Mapping[str, str | None], m: Map, things: Things) -> str | None:
+    """Of things of one kind lying in places of different classes, the one in the place the map's prior keeps that
+    kind at most (a towel on the towel rail, 0.8, not the one left on the deck's bench, 0.1), as ``seal run``'s robot
+    looks there first; None when no one place's prior is the highest. Only among open places, and not at the goal (a
+    shut cupboard's mug is not the one the robot sees first; one where the command puts it is not the one meant)."""
+    if not lying:
+        return None
+    prior = m.priors.get(cls, {})
+    weight = {n: prior.get(things.class_of(p or ""), 0.0) for n, p in lying.items()}
+    best = max(weight.values())
+    top = [n for n, w in weight.items() if w == best]
+    return top[0] if best > 0 and len(top) == 1 else None
 
 
 def _put_where_it_lies(theme: str, lies: str | None, commanded: Sequence[Binding], things: Things) -> bool:

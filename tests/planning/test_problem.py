@@ -823,3 +823,41 @@ def test_more_things_of_a_kind_than_the_map_places_are_warned_of(library: Librar
     assert not plan_text("fetch me a book", library, map=guesthouse).warnings
     assert not plan_text("bring me two cups", library, map=guesthouse).warnings      # it places four
     assert "places 4 cups" in plan_text("bring me five cups", library, map=guesthouse).warnings[0]
+
+
+def test_it_after_commands_done_is_what_they_acted_on_last(library: Library) -> None:
+    """Lead, e2e29: --done 'pick up the cup' 'give it to me' was refused ("nothing before it in the command fits"):
+    "it" stands for the thing the commands done acted on last, else what the robot holds; with neither, it is
+    refused at the word, saying the commands done name nothing either."""
+    from seal_cli.errors import SealError
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan as plan_text
+
+    boat = load_map("houseboat")
+    assert [str(s) for s in plan_text("give it to me", library, map=boat, done=["pick up the book"]).steps] == [
+        "Give(theme=book, recipient=me)"]
+    assert [str(s) for s in plan_text("put it on the bed", library, map=boat,
+                                      done=["pick up the book", "put it on the dining table"]).steps][-1] == \
+        "Place(theme=book, goal=bed_1)"
+    assert [str(s) for s in plan_text("now close it", library, map=boat, done=["open the fridge"]).steps] == [
+        "Close(theme=fridge_1)"]
+    with pytest.raises(SealError, match=r"nothing before it in the command fits, nor does a command done before "
+                                        r"it \(--done\)") as refused:
+        plan_text("put it on the bed", library, map=boat, done=["go to the galley"])
+    assert refused.value.where.column == 5
+
+
+@pytest.mark.parametrize(("house", "text", "source"), [
+    ("houseboat", "bring Owen a towel", "towel_rail_1"),       # the rail (0.8) over the deck's bench (0.1)
+    ("studio", "bring me a mug", "coffee_table_1"),            # a shut cupboard's mug is not the one seen first
+    ("corner_shop", "put the apron on the coat rack", "counter_1")])    # not the one where it is to go
+def test_of_things_in_places_of_different_classes_the_one_kept_where_the_prior_keeps_most(
+        library: Library, house: str, text: str, source: str) -> None:
+    """e2e28, lead: "bring Owen a towel" on the houseboat planned the towel the map lists first (the back deck's
+    bench) while seal run's robot, looking where towels are kept, took the rail's: of open places of different classes,
+    the plan takes the one the map's prior keeps such a thing at most, as the run does."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan as plan_text
+
+    steps = [str(s) for s in plan_text(text, library, map=load_map(house)).steps]
+    assert any(s.startswith("Pick(") and f"source={source})" in s for s in steps), steps
