@@ -982,9 +982,11 @@ class Agent:
         that does not open, such as a counter), else the nearest open receptacle in it (a fridge the
         robot left open is no place to put down what it was asked to bring to the kitchen). For a thing
         of class ``cls`` brought there, the room's place where such a thing is put, open or not
-        (:func:`seal_cli.planning.keeping.put_in_room`: a counter, not the sink; the closed cabinet is
-        opened to put it in), the nearest among equals, other than the place the thing in hand was taken
-        from (the apple brought from the fridge to the kitchen goes on the counter, not back in). In the room the
+        (:func:`seal_cli.planning.keeping.put_in_room`: a counter, not the sink), the nearest among equals, other
+        than the place the thing in hand was taken from (the apple brought from the fridge to the kitchen goes on the
+        counter, not back in), and an open one while the room has one: a thing taken to a room is left out in it,
+        not shut away (lead, e2e29: "bring the towel up to the double room" went into its closed wardrobe, where
+        towels are kept too; a closed place is opened only when it is the room's one place, or said). In the room the
         speaker is in, the nearest the speaker among equals: a thing taken to where the speaker is is put down by
         them (e2e28: "take the laptop to the shop", the speaker behind the till, went on the shelf nearest the
         robot's way in, not the till's counter)."""
@@ -1003,6 +1005,8 @@ class Agent:
             lay = self.picked_from.get(held.id) if held is not None else None
             if any(s.name != lay for s in spots if s.name in distance):     # not back where it was taken from
                 spots = [s for s in spots if s.name != lay]
+            if any(self.world.items[s.name].is_open for s in spots if s.name in distance):   # not shut away
+                spots = [s for s in spots if self.world.items[s.name].is_open]
             speaker = self.scene.map.speaker         # where the map says they stand (none: not said)
             if speaker is not None and bool(room.contains([speaker])[0]):     # by the speaker, where they can reach
                 distance = {s.name: math.dist(s.at, speaker) for s in spots if s.name in distance}

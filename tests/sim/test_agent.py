@@ -816,6 +816,20 @@ def test_a_thing_already_chosen_for_another_name_is_no_evidence_of_where_the_nex
     assert result.path_m < 87.37 * 0.6
 
 
+def test_a_thing_taken_to_a_room_is_left_out_in_it_not_shut_away(library: Library) -> None:
+    """Lead, e2e29: "bring the towel up to the double room" on the guesthouse opened the room's wardrobe (towels are
+    kept in wardrobes too, 0.2) and shut the towel in it; a room said as the goal puts the thing on an open place."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    agent, result = pipeline.run_on_map(load_map("guesthouse"), "bring the towel up to the double room", library,
+                                        SeFMPolicy(particles=50), rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    where = agent.world.items["towel_1"].parent
+    assert where in ("bed_3", "nightstand_2", "desk_1") and not any("opened wardrobe_2" in r.text
+                                                                     for r in agent.records)
+
+
 def test_a_thing_in_one_of_several_places_of_the_goals_class_is_put_there_already(library: Library) -> None:
     """Lead, after e2e27: "put the milk in the fridge" on the corner shop (a fridge in the shop and one in the kitchen,
     a milk in each) found milk_2 in the fridge it chose and searched the whole house for another milk, 256 m, to move
