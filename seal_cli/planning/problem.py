@@ -1382,6 +1382,7 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
     commanded = commanded_frames(parse, library, things)
     _the_ones_said_where(commanded, things)
     the_ones_not_there(commanded, things)
+    the_ones_from_elsewhere(commanded, things)
     the_nearest_ones(commanded, things)
     among = the_goals_said_among(commanded, things)
     state = things.state(holding)
@@ -1555,6 +1556,31 @@ def the_ones_not_there(commanded: Sequence[Binding], things: Things) -> None:
         other = next((n for n, c in things.classes.items() if c == cls and n != theme and n not in used
                       and n not in things.fixed and n in things.points and not things.lies_in(n, goal)
                       and not (kept and _kept_already(n, things))), None)
+        if other is not None:
+            things.swap(theme, other)
+
+
+def the_ones_from_elsewhere(commanded: Sequence[Binding], things: Things) -> None:
+    """A thing taken to a room where it lies shut away in a place ("take the mug to the galley", the command's mug in
+    the galley's cupboard) is another of its kind from outside the room, when the map has one the command names no
+    other way: moving a thing from a cupboard to the counter of its own room is no taking it there. None elsewhere,
+    it is that one, taken out (lead, e2e29; ``seal run``'s robot reads it alike, :meth:`Agent._shut_in_goal_room
+    <seal_cli.sim.agent.Agent._shut_in_goal_room>`)."""
+    m = things.map
+    if m is None:
+        return
+    used = {v for b in commanded for _, v in b.values}
+    for binding in commanded:
+        theme, goal = binding.elements.get("theme"), binding.elements.get("goal")
+        if (theme is None or goal is None or m.room_id(goal) is None or theme not in things.classes
+                or not binding.frame.needs_held("theme") or class_key(things.held or "") == things.classes[theme]):
+            continue
+        lies = _lies_on(theme, things)
+        if lies is None or lies not in things.closable or things.rooms.get(lies) != goal:
+            continue
+        other = next((n for n, c in things.classes.items() if c == things.classes[theme] and n != theme
+                      and n not in used and n not in things.fixed and (p := _lies_on(n, things)) is not None
+                      and things.rooms.get(p) != goal), None)
         if other is not None:
             things.swap(theme, other)
 

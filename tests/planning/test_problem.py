@@ -861,3 +861,22 @@ def test_of_things_in_places_of_different_classes_the_one_kept_where_the_prior_k
 
     steps = [str(s) for s in plan_text(text, library, map=load_map(house)).steps]
     assert any(s.startswith("Pick(") and f"source={source})" in s for s in steps), steps
+
+
+def test_a_thing_taken_to_a_room_it_lies_shut_away_in_is_one_from_elsewhere(library: Library) -> None:
+    """e2e28, lead: "take the mug to the galley" on the houseboat, one mug in the galley's cupboard and one on the
+    saloon's coffee table: taking the cupboard's mug to the galley's counter is no taking it there, so the saloon's
+    is meant, whichever the map lists first; with no other (the milk in the galley's fridge), that one is taken out."""
+    from dataclasses import replace
+
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan as plan_text
+
+    boat = load_map("houseboat")
+    mugs = [o for o in boat.objects if o.cls == "mug"]
+    cupboard_first = replace(boat, objects=[*(o for o in boat.objects if o.cls != "mug"), *reversed(mugs)])
+    for m in (boat, cupboard_first):
+        assert [str(s) for s in plan_text("take the mug to the galley", library, map=m).steps] == [
+            "Pick(theme=mug, source=coffee_table_1)", "Bring(theme=mug, goal=galley)"]
+    assert [str(s) for s in plan_text("take the milk to the galley", library, map=boat).steps] == [
+        "Open(theme=fridge_1)", "Pick(theme=milk, source=fridge_1)", "Bring(theme=milk, goal=galley)"]
