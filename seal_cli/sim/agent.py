@@ -368,11 +368,11 @@ class Agent:
                 if loose:
                     rooms[thing], there = class_key(room.name), loose
                 else:                 # in a place only if the state says the place is open (as seal plan)
-                    shut = [i for i in there if self._parent(i).id not in self.left_open and self._parent(i).openable]
-                    there = [i for i in there if i not in shut]
+                    away = [i for i in there if self._parent(i).id not in self.left_open and self._parent(i).openable]
+                    there = [i for i in there if i not in away]
                     facts |= {Fact("in", (thing, class_key(self._parent(i).id))) for i in there}
-                    if not there and shut:
-                        self._shut_in_goal_room(binding, thing, room, shut)
+                    if not there and away:
+                        self._shut_in_goal_room(binding, thing, room, away)
             elif place is not None:       # on top of a hollow place ("put it on the sideboard") is not in it
                 places = self._goals_among(binding, thing, where, free, on)
                 there = [i for i in free if self.world.items[i].parent in places and
@@ -1029,8 +1029,8 @@ class Agent:
         counter, not back in), and one that does not shut while the room has one: a thing taken to a room is left out
         in it, not shut away (lead, e2e29: "bring the towel up to the double room" went into its closed wardrobe,
         where towels are kept too; a place that shuts is used only when the room has no other, or when said). In the
-        room the speaker is in, the nearest the speaker among equals: a thing taken to where the speaker is is put down by
-        them (e2e28: "take the laptop to the shop", the speaker behind the till, went on the shelf nearest the
+        room the speaker is in, the nearest the speaker among equals: a thing taken to where the speaker is is put
+        down by them (e2e28: "take the laptop to the shop", the speaker behind the till, went on the shelf nearest the
         robot's way in, not the till's counter)."""
         if cls is not None:
             from seal_cli.planning.keeping import Spot, put_in_room
