@@ -1632,17 +1632,18 @@ def the_nearest_ones(commanded: Sequence[Binding], things: Things) -> None:
         if len(lying) < 2 or None in lying.values() or len(places) < 2 \
                 or _put_where_it_lies(theme, lying[theme], commanded[index:], things):
             continue
+        start = _robot_at(binding.frame, "source", {}, commanded[:index], things)
+        order = sorted(places)
+        lengths = dict(zip(order, drive_lengths(m, start[0] if start else m.robot.xy, order), strict=True))
         if len({things.class_of(p) for p in places}) != 1:
             goals = {things.class_of(g) for b in commanded if b.elements.get("theme") == theme
                      for g in (b.elements.get("goal"),) if g is not None}
             kept = _most_kept(cls, {n: p for n, p in lying.items() if things.class_of(p or "") not in goals},
                               m, things) if not any(p in things.closable for p in places) else None
-            if kept is not None and kept != theme:
+            nearest = min(lying, key=lambda n: (lengths[lying[n] or ""], n != theme))
+            if kept is not None and kept != theme and kept == nearest:    # the prior and the drive agree
                 things.swap(theme, kept)
             continue
-        start = _robot_at(binding.frame, "source", {}, commanded[:index], things)
-        order = sorted(places)
-        lengths = dict(zip(order, drive_lengths(m, start[0] if start else m.robot.xy, order), strict=True))
         best = min(lying, key=lambda n: (lengths[lying[n] or ""], n != theme))
         if best != theme and lengths[lying[best] or ""] < lengths[lying[theme] or ""]:
             things.swap(theme, best)
@@ -1651,7 +1652,7 @@ def the_nearest_ones(commanded: Sequence[Binding], things: Things) -> None:
 def _most_kept(cls: str, lying: Mapping[str, str | None], m: Map, things: Things) -> str | None:
     """Of things of one kind lying in places of different classes, the one in the place the map's prior keeps that
     kind at most (a towel on the towel rail, 0.8, not the one left on the deck's bench, 0.1), as ``seal run``'s robot
-    looks there first; None when no one place's prior is the highest. Only among open places, and not at the goal (a
+    looks there first (the plan takes it when it is also the nearest: the run weighs the prior against the drive); None when no one place's prior is the highest. Only among open places, and not at the goal (a
     shut cupboard's mug is not the one the robot sees first; one where the command puts it is not the one meant)."""
     if not lying:
         return None

@@ -850,7 +850,8 @@ def test_it_after_commands_done_is_what_they_acted_on_last(library: Library) -> 
 @pytest.mark.parametrize(("house", "text", "source"), [
     ("houseboat", "bring Owen a towel", "towel_rail_1"),       # the rail (0.8) over the deck's bench (0.1)
     ("studio", "bring me a mug", "coffee_table_1"),            # a shut cupboard's mug is not the one seen first
-    ("corner_shop", "put the apron on the coat rack", "counter_1")])    # not the one where it is to go
+    ("corner_shop", "put the apron on the coat rack", "counter_1"),     # not the one where it is to go
+    ("library", "bring me a book", "trolley_1")])     # the shelves keep more, the trolley's is the nearer: map order
 def test_of_things_in_places_of_different_classes_the_one_kept_where_the_prior_keeps_most(
         library: Library, house: str, text: str, source: str) -> None:
     """e2e28, lead: "bring Owen a towel" on the houseboat planned the towel the map lists first (the back deck's
