@@ -1652,8 +1652,9 @@ def the_nearest_ones(commanded: Sequence[Binding], things: Things) -> None:
 def _most_kept(cls: str, lying: Mapping[str, str | None], m: Map, things: Things) -> str | None:
     """Of things of one kind lying in places of different classes, the one in the place the map's prior keeps that
     kind at most (a towel on the towel rail, 0.8, not the one left on the deck's bench, 0.1), as ``seal run``'s robot
-    looks there first (the plan takes it when it is also the nearest: the run weighs the prior against the drive); None when no one place's prior is the highest. Only among open places, and not at the goal (a
-    shut cupboard's mug is not the one the robot sees first; one where the command puts it is not the one meant)."""
+    looks there first (the plan takes it when it is also the nearest: the run weighs the prior against the drive);
+    None when no one place's prior is the highest. Only among open places, and not at the goal (a shut cupboard's mug
+    is not the one the robot sees first; one where the command puts it is not the one meant)."""
     if not lying:
         return None
     prior = m.priors.get(cls, {})

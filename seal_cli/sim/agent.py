@@ -1026,14 +1026,15 @@ class Agent:
         of class ``cls`` brought there, the room's place where such a thing is put, open or not
         (:func:`seal_cli.planning.keeping.put_in_room`: a counter, not the sink), the nearest among equals, other
         than the place the thing in hand was taken from (the apple brought from the fridge to the kitchen goes on the
-        counter, not back in), and one that does not shut while the room has one: a thing taken to a room is left out
-        in it, not shut away (lead, e2e29: "bring the towel up to the double room" went into its closed wardrobe,
-        where towels are kept too; a place that shuts is used only when the room has no other, or when said). In the
-        room the speaker is in, the nearest the speaker among equals: a thing taken to where the speaker is is put
-        down by them (e2e28: "take the laptop to the shop", the speaker behind the till, went on the shelf nearest the
+        counter, not back in), and one that does not shut while the room has one where such a thing can be left (its
+        prior's place, or furniture: :func:`~seal_cli.planning.keeping.tier` 0 or 1): a thing taken to a room is left
+        out in it, not shut away (lead, e2e29: "bring the towel up to the double room" went into its closed wardrobe,
+        where towels are kept too; the townhouse bathroom's towel still goes in the medicine cabinet, not the bath).
+        In the room the speaker is in, the nearest the speaker among equals: a thing taken to where the speaker is is
+        put down by them (e2e28: "take the laptop to the shop", the speaker behind the till, went on the shelf nearest the
         robot's way in, not the till's counter)."""
         if cls is not None:
-            from seal_cli.planning.keeping import Spot, put_in_room
+            from seal_cli.planning.keeping import Spot, prior_of, put_in_room, tier
 
             field_ = self.distances()
             spots, distance = [], {}
@@ -1047,8 +1048,10 @@ class Agent:
             lay = self.picked_from.get(held.id) if held is not None else None
             if any(s.name != lay for s in spots if s.name in distance):     # not back where it was taken from
                 spots = [s for s in spots if s.name != lay]
-            if any(not self.world.items[s.name].openable for s in spots if s.name in distance):   # not shut away
-                spots = [s for s in spots if not self.world.items[s.name].openable]
+            out = [s for s in spots if not self.world.items[s.name].openable]
+            prior = prior_of(self.scene.map.priors, cls)
+            if any(s.name in distance and tier(self.library.taxonomy, prior, s) <= 1 for s in out):   # not shut away
+                spots = out
             speaker = self.scene.map.speaker         # where the map says they stand (none: not said)
             if speaker is not None and bool(room.contains([speaker])[0]):     # by the speaker, where they can reach
                 distance = {s.name: math.dist(s.at, speaker) for s in spots if s.name in distance}
