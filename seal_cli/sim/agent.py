@@ -1031,8 +1031,8 @@ class Agent:
         out in it, not shut away (lead, e2e29: "bring the towel up to the double room" went into its closed wardrobe,
         where towels are kept too; the townhouse bathroom's towel still goes in the medicine cabinet, not the bath).
         In the room the speaker is in, the nearest the speaker among equals: a thing taken to where the speaker is is
-        put down by them (e2e28: "take the laptop to the shop", the speaker behind the till, went on the shelf nearest the
-        robot's way in, not the till's counter)."""
+        put down by them (e2e28: "take the laptop to the shop", the speaker behind the till, went on the shelf
+        nearest the robot's way in, not the till's counter)."""
         if cls is not None:
             from seal_cli.planning.keeping import Spot, prior_of, put_in_room, tier
 
