@@ -4,7 +4,8 @@
 ``flat.yaml``, e2e22's held-out long flat, and ``carehome.yaml``, e2e23's held-out care home, and
 ``student_house.yaml``, e2e24's held-out student house, and ``guesthouse.yaml``, e2e25's held-out bed and
 breakfast, and ``studio.yaml``, e2e26's held-out open-plan studio flat, and ``corner_shop.yaml``, e2e27's held-out
-corner shop with its back rooms, and ``houseboat.yaml``, e2e28's held-out wide-beam houseboat (run once; the PGMs are committed next to this script).
+corner shop with its back rooms, and ``houseboat.yaml``, e2e28's held-out wide-beam houseboat, and ``library.yaml``, e2e29's held-out
+branch library (run once; the PGMs are committed next to this script).
 
     python maps/make_houses.py          # rewrites maps/<house>.pgm for each of HOUSES
 
@@ -293,8 +294,24 @@ HOUSEBOAT = House(
     ),
 )
 
+LIBRARY = House(
+    "library", (0.0, 0.0, 16.0, 10.0),
+    walls=(
+        ((3.0, 0.0, 3.0, 10.0), ((1.5, 3.0),)),                # foyer | reading room (the inner doors)
+        ((11.0, 0.0, 11.0, 6.0), ((2.0, 3.5),)),               # reading room | study room
+        ((3.0, 6.0, 16.0, 6.0), ((5.0, 6.0), (8.5, 9.5), (11.5, 12.5), (14.0, 15.0))),  # the north row's doors
+        ((7.0, 6.0, 7.0, 10.0), ()),                           # office | staff room
+        ((11.0, 6.0, 11.0, 10.0), ()),                         # staff room | toilet
+        ((13.0, 6.0, 13.0, 10.0), ()),                         # toilet | storeroom
+    ),
+    blocks=(
+        (4.0, 0.1, 6.0, 0.5),      # the reading room's bookshelves along the south wall
+        (7.0, 0.1, 9.0, 0.5),
+    ),
+)
+
 HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC, FARMHOUSE, TERRACE, BUNGALOW, LODGE, FLAT, CAREHOME, STUDENT_HOUSE,
-          GUESTHOUSE, STUDIO, CORNER_SHOP, HOUSEBOAT)
+          GUESTHOUSE, STUDIO, CORNER_SHOP, HOUSEBOAT, LIBRARY)
 
 
 def draw(house: House) -> np.ndarray:

@@ -43,7 +43,7 @@ from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
-from seal_cli.errors import SealError, Where, at_words
+from seal_cli.errors import SealError, at_words
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Action, Binding, Fact, Frame
 from seal_cli.frames.taxonomy import Taxonomy, check_class_name, class_key, class_words
@@ -129,10 +129,15 @@ class Things:
         self.named_before: list[str] = []
         """The people the commands already done (``--done``) named, in order: the last is whom a "him" or "her"
         the command does not name itself stands for."""
+        self.handled_before: list[str] = []
+        """The things the commands already done (``--done``) acted on (their frames' themes), in order: the last is
+        what an "it" the command does not name itself stands for (--done 'pick up the cup' 'give it to me')."""
         """What the robot holds as the command starts (``--holding``, else the map's robot): what "it" calls
         when nothing before it in the command does ("put it in the sink")."""
         self.people: set[str] = set()
         """The people the command names."""
+        self.done_said = False
+        """Whether commands done before this one (``--done``) were given."""
         self.roles_said: set[str] = set()
         """The people the command calls by a noun ("the nurse"), not by a name."""
         self.called: dict[str, str] = {}
@@ -325,9 +330,8 @@ def _default(frame: Frame, element: Any, evoked: Any, things: Things, text: str)
         return value
     places = ", ".join(p.name for p in things.map.places) or "none"
     span = getattr(evoked, "span", None)
-    raise SealError(f"{frame.name} needs a {element.type} as its {element.role} (a {element.default} unless one "
-                    f"is said), and the {things.map.said} has none; its places are {places}",
-                    Where(None, 1, span[0] + 1) if span else None, source_line=text if span else None)
+    raise at_words(f"{frame.name} needs a {element.type} as its {element.role} (a {element.default} unless one "
+                   f"is said), and the {things.map.said} has none; its places are {places}", span, text)
 
 
 def _goal_not_source(evoked: Evoked, values: Mapping[str, tuple[str, ...]], things: Things, text: str) -> None:
@@ -400,10 +404,12 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
     if word in INDEFINITE and things.map is not None and category not in ("message", "question"):
         raise _located(_unnamed_kind(phrase, things.map), phrase, text)
     if word in PRONOUNS and word not in PERSON_PRONOUNS and word not in INDEFINITE:
+        if things.handled_before and word in HELD_PRONOUNS:     # what the commands done acted on last
+            return (things.handled_before[-1],)
         if things.held and word in HELD_PRONOUNS:
             return (things.name(things.held),)
-        raise _located(f"cannot tell what {phrase.text!r} refers to: nothing before it in the command fits",
-                       phrase, text)
+        raise _located(f"cannot tell what {phrase.text!r} refers to: nothing before it in the command fits"
+                       f"{', nor does a command done before it (--done)' if things.done_said else ''}", phrase, text)
     if things.names is not None and (on_map := _on_map(phrase, things, text, category, asked, carried,
                                                        gone_to)) is not None:
         return on_map
@@ -1371,9 +1377,12 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
         bindings = commanded_frames(earlier, library, things)
         executed.extend((earlier.text, b) for b in bindings)
         things.named_before = [*things.named_before, *_people_named(bindings, things)]
+        things.handled_before = [*things.handled_before, *_handled(bindings, things)]
+        things.done_said = True
     commanded = commanded_frames(parse, library, things)
     _the_ones_said_where(commanded, things)
     the_ones_not_there(commanded, things)
+    the_ones_from_elsewhere(commanded, things)
     the_nearest_ones(commanded, things)
     among = the_goals_said_among(commanded, things)
     state = things.state(holding)
@@ -1387,11 +1396,29 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
         state = state.apply(binding)
         changed.update((f.positive, text) for f in binding.postconditions)
     _nothing_to_hand(parse, commanded, state)
-    warnings = (*unknown_to_map(commanded, things), *chosen_among(commanded, things)) if map else ()
+    commanded = _the_thing_held(commanded, state)
+    warnings = (*unknown_to_map(commanded, things), *fewer_than_asked(commanded, things),
+                *chosen_among(commanded, things)) if map else ()
     return Problem(parse.text, tuple(commanded), state, warnings,
                    tuple(b for b in things.put_away if b in commanded),
                    tuple(b for b in things.put_back if b in commanded), dict(things.called),
                    {b: places for b, places in among.items() if b in commanded})
+
+
+def _the_thing_held(commanded: Sequence[Binding], state: State) -> list[Binding]:
+    """The frames with a frame that hands over or puts down a thing it does not name ("give me", "hand it over to
+    Owen" said with no thing) given the thing the robot holds as the command starts (after ``--done``), when no frame
+    before it takes another up: "give me" holding a mug gives the mug. Before, the Give had no theme, so nothing was
+    handed over and the run put the mug down on the nearest table (lead, e2e29)."""
+    held = next((f.args[0] for f in state.facts if f.predicate == "holding" and not f.negated and f.args), None)
+    frames: list[Binding] = []
+    for number, binding in enumerate(commanded):
+        if held is None or binding.frame.gets_held():
+            return [*frames, *commanded[number:]]
+        if binding.frame.needs_held("theme") and "theme" in binding.frame.roles and "theme" not in binding.elements:
+            binding = binding.frame.bind({**binding.elements, "theme": held})
+        frames.append(binding)
+    return frames
 
 
 def _nothing_to_hand(parse: Parse, commanded: Sequence[Binding], state: State) -> None:
@@ -1410,6 +1437,11 @@ def _nothing_to_hand(parse: Parse, commanded: Sequence[Binding], state: State) -
             verb = " ".join(words_of(evoked.lexical_unit)) if evoked is not None else binding.frame.name.lower()
             raise _located(f"{verb} what? the command says no thing to {verb}, and the robot holds nothing; say what "
                            f"(\"{verb} me the cup\")", evoked, parse.text)
+
+
+def _handled(bindings: Sequence[Binding], things: Things) -> list[str]:
+    """The things the frames act on (their themes, not people), in order: what a later "it" can stand for."""
+    return [v for b in bindings for r, v in b.values if r == "theme" and v not in things.people and v != SPEAKER]
 
 
 def _people_named(bindings: Sequence[Binding], things: Things) -> list[str]:
@@ -1528,6 +1560,31 @@ def the_ones_not_there(commanded: Sequence[Binding], things: Things) -> None:
             things.swap(theme, other)
 
 
+def the_ones_from_elsewhere(commanded: Sequence[Binding], things: Things) -> None:
+    """A thing taken to a room where it lies shut away in a place ("take the mug to the galley", the command's mug in
+    the galley's cupboard) is another of its kind from outside the room, when the map has one the command names no
+    other way: moving a thing from a cupboard to the counter of its own room is no taking it there. None elsewhere,
+    it is that one, taken out (lead, e2e29; ``seal run``'s robot reads it alike, :meth:`Agent._shut_in_goal_room
+    <seal_cli.sim.agent.Agent._shut_in_goal_room>`)."""
+    m = things.map
+    if m is None:
+        return
+    used = {v for b in commanded for _, v in b.values}
+    for binding in commanded:
+        theme, goal = binding.elements.get("theme"), binding.elements.get("goal")
+        if (theme is None or goal is None or m.room_id(goal) is None or theme not in things.classes
+                or not binding.frame.needs_held("theme") or class_key(things.held or "") == things.classes[theme]):
+            continue
+        lies = _lies_on(theme, things)
+        if lies is None or lies not in things.closable or things.rooms.get(lies) != goal:
+            continue
+        other = next((n for n, c in things.classes.items() if c == things.classes[theme] and n != theme
+                      and n not in used and n not in things.fixed and (p := _lies_on(n, things)) is not None
+                      and things.rooms.get(p) != goal), None)
+        if other is not None:
+            things.swap(theme, other)
+
+
 def _kept_already(name: str, things: Things) -> bool:
     """Whether a thing lies where such a thing is kept (:func:`seal_cli.planning.keeping.kept_place` of where it
     lies is that place): put away or back already. "Put the milk back", a milk in each of the corner shop's fridges,
@@ -1572,15 +1629,39 @@ def the_nearest_ones(commanded: Sequence[Binding], things: Things) -> None:
         lying = {n: _lies_on(n, things) for n, c in things.classes.items()
                  if c == cls and n not in things.fixed and (n == theme or n not in used)}
         places = {p for p in lying.values() if p is not None}
-        if len(lying) < 2 or None in lying.values() or len({things.class_of(p) for p in places}) != 1 \
-                or len(places) < 2 or _put_where_it_lies(theme, lying[theme], commanded[index:], things):
+        if len(lying) < 2 or None in lying.values() or len(places) < 2 \
+                or _put_where_it_lies(theme, lying[theme], commanded[index:], things):
             continue
         start = _robot_at(binding.frame, "source", {}, commanded[:index], things)
         order = sorted(places)
         lengths = dict(zip(order, drive_lengths(m, start[0] if start else m.robot.xy, order), strict=True))
+        if len({things.class_of(p) for p in places}) != 1:
+            goals = {things.class_of(g) for b in commanded if b.elements.get("theme") == theme
+                     for g in (b.elements.get("goal"),) if g is not None}
+            kept = _most_kept(cls, {n: p for n, p in lying.items() if things.class_of(p or "") not in goals},
+                              m, things) if not any(p in things.closable for p in places) else None
+            nearest = min(lying, key=lambda n: (lengths[lying[n] or ""], n != theme))
+            if kept is not None and kept != theme and kept == nearest:    # the prior and the drive agree
+                things.swap(theme, kept)
+            continue
         best = min(lying, key=lambda n: (lengths[lying[n] or ""], n != theme))
         if best != theme and lengths[lying[best] or ""] < lengths[lying[theme] or ""]:
             things.swap(theme, best)
+
+
+def _most_kept(cls: str, lying: Mapping[str, str | None], m: Map, things: Things) -> str | None:
+    """Of things of one kind lying in places of different classes, the one in the place the map's prior keeps that
+    kind at most (a towel on the towel rail, 0.8, not the one left on the deck's bench, 0.1), as ``seal run``'s robot
+    looks there first (the plan takes it when it is also the nearest: the run weighs the prior against the drive);
+    None when no one place's prior is the highest. Only among open places, and not at the goal (a shut cupboard's mug
+    is not the one the robot sees first; one where the command puts it is not the one meant)."""
+    if not lying:
+        return None
+    prior = m.priors.get(cls, {})
+    weight = {n: prior.get(things.class_of(p or ""), 0.0) for n, p in lying.items()}
+    best = max(weight.values())
+    top = [n for n, w in weight.items() if w == best]
+    return top[0] if best > 0 and len(top) == 1 else None
 
 
 def _put_where_it_lies(theme: str, lies: str | None, commanded: Sequence[Binding], things: Things) -> bool:
@@ -1609,6 +1690,38 @@ def chosen_among(commanded: Sequence[Binding], things: Things) -> list[str]:
     return [note for id_, note in things.names.chosen.items() if id_ in named]
 
 
+def fewer_than_asked(commanded: Sequence[Binding], things: Things) -> list[str]:
+    """A warning for each kind the frames take more things of than the map places ("bring me two books" where the map
+    has one book): said before the run drives, which looks for the others only where the map's prior keeps that kind
+    (lead, e2e29: the guesthouse's one book took 87 m to give up on the second)."""
+    from seal_cli.language.morphology import plural_of
+
+    m = things.map
+    if m is None:
+        return []
+    asked: dict[str, set[str]] = {}
+    for binding in commanded:
+        value = binding.elements.get("theme")
+        if value is not None and value not in things.people and things.names is not None \
+                and things.names.by_id(value) is None:
+            asked.setdefault(things.class_of(value), set()).add(value)
+    held = things.class_of(things.name(things.held)) if things.held else None
+    warnings = []
+    for cls, values in asked.items():
+        placed = [o for o in m.objects if class_key(o.cls) == cls]
+        have = len(placed) + (held == cls)
+        if not placed or len(values) <= have:
+            continue
+        where = ", ".join(dict.fromkeys(f"on {o.inside}" if o.inside else "on the floor" for o in placed))
+        others = "the other" if len(values) - have == 1 else "the others"
+        kept = ", ".join(m.priors.get(cls, {})) or "anywhere"
+        name = cls.replace("_", " ") if have == 1 else plural_of(cls.replace("_", " "))
+        warnings.append(f"the {m.said} places {have} {name} ({where}) and the command asks for "
+                        f"{len(values)}: seal run looks for {others} where the map's prior keeps them ({kept}) "
+                        "and says so if it finds none")
+    return warnings
+
+
 def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:
     """The warnings of a plan on a map: each class a frame needs that no prior, object or place of
     the map names, and each person nobody placed (the robot will have to search for them)."""
@@ -1616,6 +1729,8 @@ def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:
     if m is None:
         return []
     known = set(m.priors) | {o.cls for o in m.objects} | {p.cls for p in m.places}
+    if things.held:                 # what the robot holds as it starts is not searched for ("give me", holding a mug)
+        known.add(things.class_of(things.name(things.held)))
     placed = {p.key for p in m.people} | {SPEAKER}
     warnings: dict[str, None] = {}
     unknown: set[str] = set()

@@ -17,7 +17,7 @@ import re
 from collections.abc import Collection
 from dataclasses import replace
 
-from seal_cli.errors import SealError, Where
+from seal_cli.errors import at_words
 from seal_cli.language.values import Parse
 
 __all__ = ["ALSO", "SAME", "refuse_the_same", "told_too"]
@@ -33,9 +33,9 @@ def refuse_the_same(text: str) -> None:
     if said is None or not text[:said.start()].strip():
         return
     repeat = said.group(0).strip()
-    raise SealError(f"{repeat!r} repeats an instruction said before it for something else, and the robot cannot "
-                    "tell which part of it that replaces: say the instruction again in full, naming what changes",
-                    Where(None, 1, said.start() + 1), source_line=text)
+    raise at_words(f"{repeat!r} repeats an instruction said before it for something else, and the robot cannot "
+                   "tell which part of it that replaces: say the instruction again in full, naming what changes",
+                   said.span(), text)
 
 
 ALSO = re.compile(r"^(?P<message>.*\S)\s*,?\s+and\s+(?P<who>[\w'-]+(?:\s[\w'-]+)?)\s+(?:as\s+well|too|also)\W*$",

@@ -210,6 +210,10 @@ class Agent:
         the frame so already ("put the milk in the fridge", two fridges, a milk in each), as the planner says."""
         self.not_meant: dict[str, set[str]] = {}
         """The instances a name does not stand for, by name: the one seen where a frame puts its kind already."""
+        self.shut_there: dict[Binding, tuple[str, set[str]]] = {}
+        """Frames that take a thing to a room where the robot saw one of its kind shut away in a place (a mug in the
+        galley's cupboard, for "take the mug to the galley"), with the thing's name and those seen there: one from
+        elsewhere is meant, as the planner reads it; found none, the robot takes one of those out (lead, e2e29)."""
         self.several: set[str] = set()
         """The classes the command names several things of ("all the cups", "two plates"): each is one of them."""
         self.looks: list[tuple[float, float, float]] = []
@@ -364,8 +368,11 @@ class Agent:
                 if loose:
                     rooms[thing], there = class_key(room.name), loose
                 else:                 # in a place only if the state says the place is open (as seal plan)
-                    there = [i for i in there if self._parent(i).id in self.left_open or not self._parent(i).openable]
+                    away = [i for i in there if self._parent(i).id not in self.left_open and self._parent(i).openable]
+                    there = [i for i in there if i not in away]
                     facts |= {Fact("in", (thing, class_key(self._parent(i).id))) for i in there}
+                    if not there and away:
+                        self._shut_in_goal_room(binding, thing, room, away)
             elif place is not None:       # on top of a hollow place ("put it on the sideboard") is not in it
                 places = self._goals_among(binding, thing, where, free, on)
                 there = [i for i in free if self.world.items[i].parent in places and
@@ -396,6 +403,32 @@ class Agent:
             return None
         self.chosen.setdefault(class_key(thing), seen[thing])   # that one is this name's: not cup_2's too (e2e23)
         return said
+
+    def _shut_in_goal_room(self, binding: Binding, thing: str, room: Any, shut: Sequence[str]) -> None:
+        """A frame takes ``thing`` to ``room``, where the robot sees things of its kind shut away in a place (``shut``):
+        those are not the one meant while another may lie elsewhere ("take the mug to the galley", a mug in the
+        galley's cupboard: the saloon's mug, as ``seal plan`` reads it); the robot looks for another where such
+        things are kept (:meth:`_kept_elsewhere`), and takes one of those out if it finds none."""
+        if binding in self.shut_there or class_key(thing) in self.chosen or not binding.frame.needs_held("theme"):
+            return
+        held = self.held()
+        if held is not None and held.key == self.class_of(thing):
+            return
+        self.shut_there[binding] = (thing, set(shut))
+        self.not_meant.setdefault(thing, set()).update(shut)
+        where = self._parent(shut[0]).id
+        self.say("search", f"{shut[0]} is in {where} in the {room.name.replace('_', ' ')} already: looks for another "
+                 f"{spoken(self.class_of(thing))} to take there", target=thing)
+
+    def _take_out_after_all(self, binding: Binding) -> str | None:
+        """Found no other thing to take to the room (:attr:`shut_there`): the ones shut away there are meant after
+        all, and the robot takes one out; what it says, or None when the frame is no such frame."""
+        if binding not in self.shut_there:
+            return None
+        thing, shut = self.shut_there[binding]
+        self.not_meant[thing] = self.not_meant.get(thing, set()) - shut
+        self.there_already.pop(binding, None)
+        return f"found no other {spoken(self.class_of(thing))}, so takes {', '.join(sorted(shut))} out"
 
     def _goals_among(self, binding: Binding, thing: str, where: str, free: Sequence[str], on: bool) -> tuple[str, ...]:
         """The places where one of the kind seen lying makes a frame so already: its goal, or, where the goal was one
@@ -536,12 +569,16 @@ class Agent:
         is the command's guess, and one lying there says "it is so already" is likelier; so the robot looks where
         such a thing is kept, not all over the house (e2e28: "put the milk in the fridge" on the houseboat, its milk
         in its one fridge, searched 77.25 m before "it found no other"). None when the search is no such search."""
-        if not self.todo or (binding := self.todo[0]) not in self.there_already:
+        if not self.todo or ((binding := self.todo[0]) not in self.there_already and binding not in self.shut_there):
             return None
         theme, goal = binding.elements.get("theme"), binding.elements.get("goal")
         if theme is None or goal is None or self.class_of(theme) != self.class_of(value):
             return None
         m = self.scene.map
+        if binding in self.shut_there:         # not in the goal room, where the ones seen lie shut away
+            return [t for t in m.prior(self.class_of(value)).masses if t != "_rest" and (r := m.prior_target(t))
+                    and not ({class_key(m.rooms[i].name) for i in r[1]} if r[0] == "room" else
+                             {class_key(m.places[i].room or "") for i in r[1]}) <= {class_key(goal)}]
         targets = []
         for target in m.prior(self.class_of(value)).masses:
             resolved = m.prior_target(target) if target != "_rest" else None
@@ -667,6 +704,11 @@ class Agent:
                     return self._result(False, failed, plan, executed, Reason.CANNOT)
                 continue
             stop = self.exhausted()
+            if not stop and outcome.reason is Reason.NOT_FOUND and todo and (out := self._take_out_after_all(todo[0])):
+                self.say("search", out)
+                if (failed := self._replan(todo, self.resync(self.state))) is not None:
+                    return self._result(False, failed, plan, executed, Reason.CANNOT)
+                continue
             if not stop and outcome.reason is Reason.NOT_FOUND and todo and todo[0] in self.there_already:
                 skipped = todo.pop(0)       # no other one anywhere: the one seen there was meant after all
                 self.say("done", f"{self.there_already[skipped]} and it found no other, so {shown(skipped)} needs "
@@ -982,14 +1024,17 @@ class Agent:
         that does not open, such as a counter), else the nearest open receptacle in it (a fridge the
         robot left open is no place to put down what it was asked to bring to the kitchen). For a thing
         of class ``cls`` brought there, the room's place where such a thing is put, open or not
-        (:func:`seal_cli.planning.keeping.put_in_room`: a counter, not the sink; the closed cabinet is
-        opened to put it in), the nearest among equals, other than the place the thing in hand was taken
-        from (the apple brought from the fridge to the kitchen goes on the counter, not back in). In the room the
-        speaker is in, the nearest the speaker among equals: a thing taken to where the speaker is is put down by
-        them (e2e28: "take the laptop to the shop", the speaker behind the till, went on the shelf nearest the
-        robot's way in, not the till's counter)."""
+        (:func:`seal_cli.planning.keeping.put_in_room`: a counter, not the sink), the nearest among equals, other
+        than the place the thing in hand was taken from (the apple brought from the fridge to the kitchen goes on the
+        counter, not back in), and one that does not shut while the room has one where such a thing can be left (its
+        prior's place, or furniture: :func:`~seal_cli.planning.keeping.tier` 0 or 1): a thing taken to a room is left
+        out in it, not shut away (lead, e2e29: "bring the towel up to the double room" went into its closed wardrobe,
+        where towels are kept too; the townhouse bathroom's towel still goes in the medicine cabinet, not the bath).
+        In the room the speaker is in, the nearest the speaker among equals: a thing taken to where the speaker is is
+        put down by them (e2e28: "take the laptop to the shop", the speaker behind the till, went on the shelf
+        nearest the robot's way in, not the till's counter)."""
         if cls is not None:
-            from seal_cli.planning.keeping import Spot, put_in_room
+            from seal_cli.planning.keeping import Spot, prior_of, put_in_room, tier
 
             field_ = self.distances()
             spots, distance = [], {}
@@ -1003,6 +1048,10 @@ class Agent:
             lay = self.picked_from.get(held.id) if held is not None else None
             if any(s.name != lay for s in spots if s.name in distance):     # not back where it was taken from
                 spots = [s for s in spots if s.name != lay]
+            out = [s for s in spots if not self.world.items[s.name].openable]
+            prior = prior_of(self.scene.map.priors, cls)
+            if any(s.name in distance and tier(self.library.taxonomy, prior, s) <= 1 for s in out):   # not shut away
+                spots = out
             speaker = self.scene.map.speaker         # where the map says they stand (none: not said)
             if speaker is not None and bool(room.contains([speaker])[0]):     # by the speaker, where they can reach
                 distance = {s.name: math.dist(s.at, speaker) for s in spots if s.name in distance}

@@ -781,8 +781,103 @@ def test_a_thing_to_hand_over_unsaid_with_nothing_held_is_refused_at_the_verb(li
             plan_text(text, library, map=apartment)
         assert refused.value.where.column == 1
     assert [str(s) for s in plan_text("give me", library, map=apartment, holding="cup").steps] == [
-        "Give(recipient=me)"]
+        "Give(theme=cup, recipient=me)"]
     assert [str(s) for s in plan_text("give me", library, map=apartment, done=["pick up the cup"]).steps] == [
-        "Give(recipient=me)"]
+        "Give(theme=cup, recipient=me)"]
     assert [str(s) for s in plan_text("pick up the cup and give me", library, map=apartment).steps] == [
         "Pick(theme=cup)", "Give(theme=cup, recipient=me)"]
+
+
+def test_a_thing_to_hand_over_unsaid_is_the_thing_held(library: Library) -> None:
+    """"give me" holding a mug hands the mug over: the Give had no theme, so the run put the mug down on the nearest
+    table instead (lead, e2e29). A mug the map does not place is not warned about: the robot holds it."""
+    import numpy as np
+
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan as plan_text
+    from seal_cli.pipeline import run_on_map
+    from seal_cli.sim.policies import make_policy
+
+    apartment = load_map("apartment")
+    planned = plan_text("give me", library, map=apartment, holding="mug")
+    assert [str(s) for s in planned.steps] == ["Give(theme=mug, recipient=me)"] and not planned.warnings
+    assert [str(s) for s in plan_text("give it to Ben", library, map=apartment, holding="mug").steps] == [
+        "Give(theme=mug, recipient=ben)"]
+    agent, result = run_on_map(apartment, "give me", library, make_policy("sefm"), rng=np.random.default_rng(0),
+                               holding="mug")
+    assert result.completed, result.reason
+    assert any(r.text == "handed mug_1 to me" for r in agent.records)
+    assert not any(r.text.startswith("put mug_1") for r in agent.records)
+
+
+def test_more_things_of_a_kind_than_the_map_places_are_warned_of(library: Library) -> None:
+    """Lead, e2e29: "bring me two books" where the map places one book searched 87 m for the second before it said
+    there was none; the plan says first how many the map places, and where the run will look for the other."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan as plan_text
+
+    guesthouse = load_map("guesthouse")
+    warned = list(plan_text("fetch me two books", library, map=guesthouse).warnings)
+    assert warned == ["the guesthouse places 1 book (on bookshelf_1) and the command asks for 2: seal run looks for "
+                      "the other where the map's prior keeps them (bookshelf, nightstand) and says so if it finds none"]
+    assert not plan_text("fetch me a book", library, map=guesthouse).warnings
+    assert not plan_text("bring me two cups", library, map=guesthouse).warnings      # it places four
+    assert "places 4 cups" in plan_text("bring me five cups", library, map=guesthouse).warnings[0]
+
+
+def test_it_after_commands_done_is_what_they_acted_on_last(library: Library) -> None:
+    """Lead, e2e29: --done 'pick up the cup' 'give it to me' was refused ("nothing before it in the command fits"):
+    "it" stands for the thing the commands done acted on last, else what the robot holds; with neither, it is
+    refused at the word, saying the commands done name nothing either."""
+    from seal_cli.errors import SealError
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan as plan_text
+
+    boat = load_map("houseboat")
+    assert [str(s) for s in plan_text("give it to me", library, map=boat, done=["pick up the book"]).steps] == [
+        "Give(theme=book, recipient=me)"]
+    assert [str(s) for s in plan_text("put it on the bed", library, map=boat,
+                                      done=["pick up the book", "put it on the dining table"]).steps][-1] == \
+        "Place(theme=book, goal=bed_1)"
+    assert [str(s) for s in plan_text("now close it", library, map=boat, done=["open the fridge"]).steps] == [
+        "Close(theme=fridge_1)"]
+    with pytest.raises(SealError, match=r"nothing before it in the command fits, nor does a command done before "
+                                        r"it \(--done\)") as refused:
+        plan_text("put it on the bed", library, map=boat, done=["go to the galley"])
+    assert refused.value.where.column == 5
+
+
+@pytest.mark.parametrize(("house", "text", "source"), [
+    ("houseboat", "bring Owen a towel", "towel_rail_1"),       # the rail (0.8) over the deck's bench (0.1)
+    ("studio", "bring me a mug", "coffee_table_1"),            # a shut cupboard's mug is not the one seen first
+    ("corner_shop", "put the apron on the coat rack", "counter_1"),     # not the one where it is to go
+    ("library", "bring me a book", "trolley_1")])     # the shelves keep more, the trolley's is the nearer: map order
+def test_of_things_in_places_of_different_classes_the_one_kept_where_the_prior_keeps_most(
+        library: Library, house: str, text: str, source: str) -> None:
+    """e2e28, lead: "bring Owen a towel" on the houseboat planned the towel the map lists first (the back deck's
+    bench) while seal run's robot, looking where towels are kept, took the rail's: of open places of different classes,
+    the plan takes the one the map's prior keeps such a thing at most, as the run does."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan as plan_text
+
+    steps = [str(s) for s in plan_text(text, library, map=load_map(house)).steps]
+    assert any(s.startswith("Pick(") and f"source={source})" in s for s in steps), steps
+
+
+def test_a_thing_taken_to_a_room_it_lies_shut_away_in_is_one_from_elsewhere(library: Library) -> None:
+    """e2e28, lead: "take the mug to the galley" on the houseboat, one mug in the galley's cupboard and one on the
+    saloon's coffee table: taking the cupboard's mug to the galley's counter is no taking it there, so the saloon's
+    is meant, whichever the map lists first; with no other (the milk in the galley's fridge), that one is taken out."""
+    from dataclasses import replace
+
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan as plan_text
+
+    boat = load_map("houseboat")
+    mugs = [o for o in boat.objects if o.cls == "mug"]
+    cupboard_first = replace(boat, objects=[*(o for o in boat.objects if o.cls != "mug"), *reversed(mugs)])
+    for m in (boat, cupboard_first):
+        assert [str(s) for s in plan_text("take the mug to the galley", library, map=m).steps] == [
+            "Pick(theme=mug, source=coffee_table_1)", "Bring(theme=mug, goal=galley)"]
+    assert [str(s) for s in plan_text("take the milk to the galley", library, map=boat).steps] == [
+        "Open(theme=fridge_1)", "Pick(theme=milk, source=fridge_1)", "Bring(theme=milk, goal=galley)"]

@@ -1482,5 +1482,11 @@ def _not_meant(agent: Agent) -> frozenset[str]:
     """The things the robot saw lying where the command puts one of their kind, another being meant
     (:attr:`Agent.not_meant <seal_cli.sim.agent.Agent.not_meant>`): no evidence of where another lies. Counted as
     seen, the one on the sofa kept the belief of a blanket at the sofa, and "put the blanket on the sofa" on the
-    houseboat circled the saloon for 211 m (lead, stop 39); unseen, each look there is a miss."""
-    return frozenset(i for ids in agent.not_meant.values() for i in ids)
+    houseboat circled the saloon for 211 m (lead, stop 39); unseen, each look there is a miss.
+
+    So are the things chosen for a name no step left names (the book already brought for "bring me two books"): they
+    are no evidence of where the next one of their kind lies. Counted as seen, the book handed over drew the second
+    book's belief to the speaker, and the guesthouse's one book took 87 m to give up on (lead, e2e29)."""
+    named = {class_key(v) for b in agent.remaining for _, v in b.values}
+    done = {i for name, i in agent.chosen.items() if name not in named}
+    return frozenset(i for ids in agent.not_meant.values() for i in ids) | done
