@@ -2073,6 +2073,20 @@ _TAKEN_UP = frozenset(["it", "they", "them", "he", "she", "him", "her", "that", 
 """Pronouns with which a question takes up the phrase said before it ("the heaviest jar, what is *it*?")."""
 
 
+def _phrase_said_first(s: State, i: int) -> int | None:
+    """Where the noun phrase from ``i`` ends (the index of the comma, semicolon or end mark after it) when it is a
+    phrase said first for a question to take up (:func:`_phrase_asked`, :func:`_phrase_counted`); None when a verb of
+    the library in its base form stands in it ("the cup, bring it": a command takes it up, ``DISLOCATED``)."""
+    words = s.words
+    k = i + 1
+    while k < len(words) and words[k].lower not in END_MARKS and words[k].lower not in (",", ";"):
+        if s.verb_at(k) is not None and verb_lemma(words[k].lower) == words[k].lower and \
+                words[k - 1].lower not in NP_OPENERS:
+            return None
+        k += 1
+    return k
+
+
 def _phrase_asked(s: State, i: int) -> Match | None:
     """A noun phrase said first and taken up by a pronoun of the question after its comma ("*the heaviest jar on the
     shelf*, what is it?", "the man by the door, who is he?"; words37): the phrase is part of what to tell, as a
@@ -2081,13 +2095,8 @@ def _phrase_asked(s: State, i: int) -> Match | None:
     if QUESTION_MEANS not in s.lexicon.units or s.out and s.out[-1].tag != Tag.POLITE or \
             words[i].lower not in NP_OPENERS:
         return None
-    k = i + 1
-    while k < len(words) and words[k].lower not in END_MARKS and words[k].lower not in (",", ";"):
-        if s.verb_at(k) is not None and verb_lemma(words[k].lower) == words[k].lower and \
-                words[k - 1].lower not in NP_OPENERS:
-            return None                           # "the cup, bring it": a command takes it up (``DISLOCATED``)
-        k += 1
-    if k + 2 >= len(words) or words[k].lower != "," or words[k + 1].lower not in QUESTION_WORDS or \
+    k = _phrase_said_first(s, i)
+    if k is None or k + 2 >= len(words) or words[k].lower != "," or words[k + 1].lower not in QUESTION_WORDS or \
             not _asked_to_the_end(s, k + 1) or _question(s, k + 1) is None:
         return None
     end = s.speech_end(k + 1)
@@ -2126,13 +2135,8 @@ def _phrase_counted(s: State, i: int) -> Match | None:
     if unit not in s.lexicon.units.get(unit[0], ()) or s.out and s.out[-1].tag != Tag.POLITE or \
             words[i].lower not in NP_OPENERS:
         return None
-    k = i + 1
-    while k < len(words) and words[k].lower not in END_MARKS and words[k].lower not in (",", ";"):
-        if s.verb_at(k) is not None and verb_lemma(words[k].lower) == words[k].lower and \
-                words[k - 1].lower not in NP_OPENERS:
-            return None
-        k += 1
-    if k == i + 1 or not _count_tail(s, k):
+    k = _phrase_said_first(s, i)
+    if k is None or k == i + 1 or not _count_tail(s, k):
         return None
     return Match(1, (_unsaid(words[i].start, Tag.VERB, _COUNTED), words[i].tagged(Tag.DET)), expect=False,
                  verb=_COUNTED, using=False)
