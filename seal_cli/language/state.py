@@ -1090,7 +1090,21 @@ class State:
             k += 1
         while k > j and words[k - 1].lower in (",", ";", ":"):
             k -= 1                                           # a comma before the next clause is no speech
-        return k
+        return self._thanked_after(j, k)
+
+    def _thanked_after(self, j: int, k: int) -> int:
+        """Where speech from ``j`` to ``k`` ends once ", please" / ", thanks" / ", thank you" closing it is left
+        out: after its comma it is the speaker's politeness to the robot ("tell Priya the bus is here*, please*",
+        "..., please, and bring my coat"), not part of what to tell. Without the comma it stays said ("tell Jo I
+        said thanks")."""
+        words = self.words
+        m = k
+        while m > j and words[m - 1].lower in ("please", "thanks", "thank", "you"):
+            m -= 1
+        if m == k or m - 1 <= j or words[m - 1].lower != "," or words[m].lower == "you" or \
+                words[k - 1].lower == "thank":
+            return k
+        return m - 1
 
     def _let_know(self, m: int) -> bool:
         """Whether "let X know" starts at ``m`` ("... *and let me know*", "and let the guests know"): a clause of

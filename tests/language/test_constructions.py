@@ -3495,3 +3495,16 @@ def test_a_regular_past_of_a_unit_lemminflect_does_not_know_after_have(
     """"hoovered" (no form lemminflect lists) after "you've" is the unit "hoover" said in the perfect: the robot's
     step, as "once you've dusted the shelf" is; it was the having of a thing brought to "hoovered"."""
     assert_reads(text, want, library)
+
+
+# lead, stop 40: ", please" / ", thank you" closing what to tell is the speaker's politeness, not the message
+@pytest.mark.parametrize(("text", "want"), [
+    ("tell Priya the bus is here, please", [("Tell", {"message": "the bus is here", "recipient": "Priya"})]),
+    ("tell Sam that dinner is ready, thank you.", [("Tell", {"message": "dinner is ready", "recipient": "Sam"})]),
+    ("tell Bo the taxi is here, please, and bring me my coat",
+     [("Tell", {"message": "the taxi is here", "recipient": "Bo"}), ("Bring", {"theme": "coat", "recipient": "me"})]),
+    ("tell Jo I said thanks", [("Tell", {"message": "I said thanks", "recipient": "Jo"})]),
+])
+def test_thanks_after_what_to_tell_is_not_told(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    assert_reads(text, want, library)
