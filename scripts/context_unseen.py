@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
-"""The context suite on houses its policies were not developed on (``seal_cli.bench.context.unseen_houses``; the same
-as ``seal bench tasks --suite context --houses unseen``, which also takes ``--starts N``):
-the same commands, layouts drawn from the same priors, starts fixed with the house; the same JSON as
-``seal bench tasks --suite context --json``.
+"""The old context suite (``--suite context_all``) on houses its policies were not developed on
+(``seal_cli.bench.context.unseen_houses``; the same as ``seal bench tasks --suite context_all --houses unseen``, which
+also takes ``--starts N``): the same commands, layouts drawn from the same priors, starts fixed with the house; the
+same JSON as ``seal bench tasks --suite context_all --json``.
 
     python scripts/context_unseen.py --layouts 3 --jobs 2 --policies sefm,object_only,prior_optimal > unseen.json
 """
