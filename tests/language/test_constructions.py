@@ -3508,3 +3508,15 @@ def test_a_regular_past_of_a_unit_lemminflect_does_not_know_after_have(
 def test_thanks_after_what_to_tell_is_not_told(
         text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("tell Ana to say thank you", [("Tell", {"message": "say thank you", "recipient": "Ana"})]),
+    ("tell him to say please", [("Tell", {"message": "say please", "recipient": "him"})]),
+    ("bring me the cup thank you.", [("Bring", {"theme": "cup", "recipient": "me"})]),
+])
+def test_thanks_a_verb_of_saying_says_are_told(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """lead, stop 40: "please" / "thank you" after "say" is what is said, not the speaker's politeness (the message
+    was "say")."""
+    assert_reads(text, want, library)

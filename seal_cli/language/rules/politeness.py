@@ -334,7 +334,11 @@ def _as_able(s: State, i: int) -> Match | None:
 
 
 def _thanks(s: State, i: int) -> Match | None:
+    """"please", "thanks", "thank you" ending the command: politeness, unless a verb of saying says them ("tell
+    him to say thank you": what is said, not the speaker's thanks; the message was "say")."""
     words = s.words
+    if i > 0 and verb_lemma(words[i - 1].lower) == "say":
+        return None
     k = i + 1
     while k < len(words) and words[k].lower in ("you", "please", "thanks"):
         k += 1
