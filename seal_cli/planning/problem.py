@@ -1411,14 +1411,22 @@ def _the_thing_held(commanded: Sequence[Binding], state: State) -> list[Binding]
     before it takes another up: "give me" holding a mug gives the mug. Before, the Give had no theme, so nothing was
     handed over and the run put the mug down on the nearest table (lead, e2e29)."""
     held = next((f.args[0] for f in state.facts if f.predicate == "holding" and not f.negated and f.args), None)
-    frames: list[Binding] = []
-    for number, binding in enumerate(commanded):
-        if held is None or binding.frame.gets_held():
-            return [*frames, *commanded[number:]]
-        if binding.frame.needs_held("theme") and "theme" in binding.frame.roles and "theme" not in binding.elements:
-            binding = binding.frame.bind({**binding.elements, "theme": held})
-        frames.append(binding)
+    frames = list(commanded)
+    if held is not None:
+        for number, binding in _handing_over_unnamed(commanded):
+            frames[number] = binding.frame.bind({**binding.elements, "theme": held})
     return frames
+
+
+def _handing_over_unnamed(commanded: Sequence[Binding]) -> Iterator[tuple[int, Binding]]:
+    """The frames (with their index) that hand over or put down a thing held without naming it ("give me"), before
+    any frame takes a thing up: what :func:`_the_thing_held` gives the thing held and :func:`_nothing_to_hand` refuses
+    when the hand is empty."""
+    for number, binding in enumerate(commanded):
+        if binding.frame.gets_held():
+            return
+        if binding.frame.needs_held("theme") and "theme" in binding.frame.roles and "theme" not in binding.elements:
+            yield number, binding
 
 
 def _nothing_to_hand(parse: Parse, commanded: Sequence[Binding], state: State) -> None:
@@ -1428,15 +1436,11 @@ def _nothing_to_hand(parse: Parse, commanded: Sequence[Binding], state: State) -
     stop 39). Holding something, the frame is left as it was."""
     if Fact("hand_empty") not in state:
         return
-    for binding in commanded:
-        if binding.frame.gets_held():
-            return
-        if binding.frame.needs_held("theme") and "theme" in binding.frame.roles and "theme" not in binding.elements:
-            evoked = next((e for e in parse.frames if e.frame == binding.frame.name and "theme" not in e.elements),
-                          None)
-            verb = " ".join(words_of(evoked.lexical_unit)) if evoked is not None else binding.frame.name.lower()
-            raise _located(f"{verb} what? the command says no thing to {verb}, and the robot holds nothing; say what "
-                           f"(\"{verb} me the cup\")", evoked, parse.text)
+    for _, binding in _handing_over_unnamed(commanded):
+        evoked = next((e for e in parse.frames if e.frame == binding.frame.name and "theme" not in e.elements), None)
+        verb = " ".join(words_of(evoked.lexical_unit)) if evoked is not None else binding.frame.name.lower()
+        raise _located(f"{verb} what? the command says no thing to {verb}, and the robot holds nothing; say what "
+                       f"(\"{verb} me the cup\")", evoked, parse.text)
 
 
 def _handled(bindings: Sequence[Binding], things: Things) -> list[str]:
