@@ -5,7 +5,7 @@
 ``student_house.yaml``, e2e24's held-out student house, and ``guesthouse.yaml``, e2e25's held-out bed and
 breakfast, and ``studio.yaml``, e2e26's held-out open-plan studio flat, and ``corner_shop.yaml``, e2e27's held-out
 corner shop with its back rooms, and ``houseboat.yaml``, e2e28's held-out wide-beam houseboat, and ``library.yaml``, e2e29's held-out
-branch library (run once; the PGMs are committed next to this script).
+branch library, and ``bakery.yaml``, e2e30's held-out bakery with its bakehouse and back rooms (run once; the PGMs are committed next to this script).
 
     python maps/make_houses.py          # rewrites maps/<house>.pgm for each of HOUSES
 
@@ -310,8 +310,22 @@ LIBRARY = House(
     ),
 )
 
+BAKERY = House(
+    "bakery", (0.0, 0.0, 14.0, 10.0),
+    walls=(
+        ((7.0, 0.0, 7.0, 10.0), ((2.0, 3.0),)),                 # shop | bakehouse (the door behind the counter)
+        ((0.0, 6.0, 7.0, 6.0), ((1.0, 5.0),)),                  # shop | seating area (a wide archway)
+        ((7.0, 6.0, 14.0, 6.0), ((8.0, 9.0), (10.5, 11.5), (12.5, 13.5))),  # the back rooms' doors
+        ((10.0, 6.0, 10.0, 10.0), ()),                          # storeroom | office
+        ((12.0, 6.0, 12.0, 10.0), ()),                          # office | toilet
+    ),
+    blocks=(
+        (0.1, 0.5, 0.45, 3.5),     # the bread shelves along the shop's west wall
+    ),
+)
+
 HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC, FARMHOUSE, TERRACE, BUNGALOW, LODGE, FLAT, CAREHOME, STUDENT_HOUSE,
-          GUESTHOUSE, STUDIO, CORNER_SHOP, HOUSEBOAT, LIBRARY)
+          GUESTHOUSE, STUDIO, CORNER_SHOP, HOUSEBOAT, LIBRARY, BAKERY)
 
 
 def draw(house: House) -> np.ndarray:
