@@ -97,7 +97,9 @@ def frames_to_localise(tasks: Sequence[str], library: Library, map: Map, *, hold
     if state is not None:
         return bindings, state
     if not done:
-        return bindings, Things(library.taxonomy, known).state(holding)
+        things = Things(library.taxonomy, known)
+        things.hold(holding)
+        return bindings, things.state()
     with naming_done(done, ""):     # the last --done is parsed as the command: a refusal in it names it (hostile26)
         problem = problem_of_text(done[-1], library, holding=holding, done=tuple(done[:-1]), map=known,
                                   vocabulary=vocabulary)
@@ -184,6 +186,8 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
     known_map = m.known()     # once: a map checks itself when made (0.1 s), and --done may hold 1,000 commands
     with naming_done(done, text):
         parses = [parse_to_plan(t, library, vocabulary) for t in (*done, text)]
+        if done:                # the house as the done commands left it; the robot knows what it handled (e2e30)
+            m, known_map = _after_done(m, parses[:-1], library, holding, known_map)
         problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=known_map,
                                 vocabulary=vocabulary)
     questions = read_questions(parses[-1], problem.commanded, MapNames(m, library.taxonomy))
@@ -230,6 +234,21 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
     result = agent.run(problem.commanded, done=executed)
     result.warnings = [*warnings, *notes]
     return agent, result
+
+
+def _after_done(m: Map, done: Sequence[Parse], library: Library, holding: str | None,
+                known: Map) -> tuple[Map, Map]:
+    """The world the done commands left (:func:`~seal_cli.planning.aftermath.world_after`), and what the robot knows
+    of the map before them: ``known`` and the objects they handled, where the map drew them (the plan replays the done
+    commands on those)."""
+    from seal_cli.planning.aftermath import handled, world_after
+    from seal_cli.planning.problem import carry_out_done
+
+    things = Things(library.taxonomy, m)
+    things.hold(holding)
+    carry_out_done(done, library, things)
+    remembered = handled(m, things)
+    return world_after(m, things), replace(known, objects=remembered) if remembered else known
 
 
 def _every_seen(agent: Any, parse: Parse, library: Library, vocabulary: Any,

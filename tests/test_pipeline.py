@@ -111,3 +111,17 @@ def test_the_last_done_of_a_localization_without_a_task_is_named_when_refused(li
     names the option all the same (hostile26: "column 1: control character U+0001 in the command")."""
     with pytest.raises(SealError, match=r"in --done '\\x01 go': control character U\+0001"):
         pipeline.frames_to_localise([], library, apartment, done=["go to the sofa", "\x01 go"])
+
+
+def test_run_on_map_acts_in_the_house_the_done_commands_left(library: Library, apartment: Map) -> None:
+    """e2e30: `seal run --done 'bring the cup to the table' 'put it back'` acted in the map as drawn, the cup on the
+    coffee table: it found it "on coffee_table_1 already" and did nothing. Now the cup lies on the dining table, the
+    robot fetches it from there and puts it back on the coffee table; a cup picked up is in its hand."""
+    agent, result = pipeline.run_on_map(apartment, "put it back", library, make_policy("sefm", 100),
+                                        rng=np.random.default_rng(0), done=["bring the cup to the table"])
+    assert result.completed, result.reason
+    assert result.executed == ["Pick(theme=cup, source=dining_table_1)", "Place(theme=cup, goal=coffee_table_1)"]
+    assert agent.world.items["cup_1"].parent == "coffee_table_1"
+    agent, result = pipeline.run_on_map(apartment, "give it to me", library, make_policy("sefm", 100),
+                                        rng=np.random.default_rng(0), done=["pick up the cup"])
+    assert result.completed and result.path_m == 0.0 and any("handed cup_1 to me" in r.text for r in agent.records)

@@ -11,7 +11,9 @@ map file, by its path from the cases file), and what must come of it:
   robot searched and the thing is not in the house); ``answer``: words the answer must contain;
   ``says``: words a line the run prints must contain ("put spoon_1 in sink_1");
 - ``holding``: the class of what the robot holds at the start (as ``seal run --holding``), for a command
-  to a robot that already has something in hand.
+  to a robot that already has something in hand;
+- ``done``: the commands already carried out, in order (as ``seal plan --done`` / ``seal run --done``): the
+  command is planned and run in the house they left (e2e30).
 
 A case is **plan-right** when the plan is exactly the expected one (or the refusal says what
 it must), and **run-completed** when the run ends as expected. The cases are data
@@ -52,6 +54,8 @@ class Case:
     says: str | None = None
     holding: str | None = None
     """The class of what the robot holds at the start (None: what the map's robot holds)."""
+    done: tuple[str, ...] = ()
+    """The commands already carried out, in order (``--done``)."""
 
     def __post_init__(self) -> None:
         if (self.plan is None) == (self.refused is None):
@@ -94,7 +98,7 @@ def load_cases(path: str | Path | None = None) -> list[Case]:
     return _load(Path(path))
 
 
-KEYS = ("map", "text", "plan", "refused", "run", "answer", "says", "holding")
+KEYS = ("map", "text", "plan", "refused", "run", "answer", "says", "holding", "done")
 """The keys of a case in a suite file."""
 
 
@@ -125,9 +129,10 @@ def _load(path: Path) -> list[Case]:
             continue  # said by pairs
         values: dict[str, Any] = {}
         for key, (_, value) in fields.items():
-            if key == "plan":
-                values[key] = tuple(v for v in (reader.string(item, f"a step of case {number}'s plan")
-                                                for item in reader.items(value, f"case {number}'s plan")) if v)
+            if key in ("plan", "done"):
+                what = "a step of case {}'s plan" if key == "plan" else "a command of case {}'s done"
+                values[key] = tuple(v for v in (reader.string(item, what.format(number))
+                                                for item in reader.items(value, f"case {number}'s {key}")) if v)
             else:
                 values[key] = reader.string(value, f"case {number}'s {key}")
         missing = [k for k in ("text", "map") if k not in fields]
@@ -151,7 +156,7 @@ def _load(path: Path) -> list[Case]:
             continue
         cases.append(Case(values["map"], values["text"], values.get("plan"), values.get("refused"),
                           values.get("run"), values.get("answer"), where, values.get("says"),
-                          values.get("holding")))
+                          values.get("holding"), values.get("done", ())))
     if not entries.value and not reader.problems:  # a run of nothing reported "all 0" and exited 0, as if it passed
         reader.problem("the suite holds no cases: list at least one under cases: (text, map, and plan or refused)",
                        entries)
@@ -216,7 +221,7 @@ def plan_steps(case: Case, the_map: Any, library: Any) -> tuple[bool, str]:
     try:
         if case.holding is not None:
             the_map = held(the_map, case.holding)
-        found = plan_text(case.text, library, map=the_map)
+        found = plan_text(case.text, library, map=the_map, done=case.done)
     except SealError as error:
         return case.refused is not None and case.refused in error.message, f"refused: {error.message}"
     steps = tuple(str(step) for step in found.steps)
@@ -249,7 +254,8 @@ def judge(case: Case, map_file: str, seed: int, particles: int, framelib: Sequen
         return Verdict(case.map, case.text, right, got)
     try:
         agent, result = run_on_map(the_map, case.text, library, make_policy("sefm", particles),
-                               rng=np.random.default_rng(seed), budget=Budget(steps=400, metres=300.0))
+                                   rng=np.random.default_rng(seed), budget=Budget(steps=400, metres=300.0),
+                                   done=case.done)
     except SealError as error:
         return Verdict(case.map, case.text, right, got, True, False, f"refused: {error.message}")
     ended = result.completed if case.run == "done" else (not result.completed and result.why.value == "not_found")

@@ -138,6 +138,14 @@ class Things:
         """The people the command names."""
         self.done_said = False
         """Whether commands done before this one (``--done``) were given."""
+        self.taken_from: dict[str, str] = {}
+        """Where each thing the commands already done (``--done``) moved lay before the last of them moved it (its
+        place, or its room when it lay on no place): where "put it back" takes it (:func:`_back_to`)."""
+        self.changed: dict[Fact, str] = {}
+        """Each fact a command already done made true or false → that command (:meth:`carry_out`)."""
+        self.object_names: list[str] = []
+        """The name of each of the map's objects, in the map's order (``cup``, ``cup_2``): what :meth:`carry_out` moved
+        is read back onto the map by :func:`seal_cli.planning.aftermath.world_after`."""
         self.roles_said: set[str] = set()
         """The people the command calls by a noun ("the nurse"), not by a name."""
         self.called: dict[str, str] = {}
@@ -192,6 +200,7 @@ class Things:
         for obj in map.objects:
             counts[obj.cls] = counts.get(obj.cls, 0) + 1
             name = self._fresh(obj.cls, counts[obj.cls])
+            self.object_names.append(name)
             self.points[name] = obj.at
             if obj.inside is not None:
                 self.facts.add(Fact("in", (name, class_key(obj.inside))))
@@ -268,6 +277,7 @@ class Things:
 
         self.facts = {Fact(f.predicate, tuple(named(a) for a in f.args)) if f.predicate == "in" else f
                       for f in self.facts}
+        self.taken_from = {named(k): v for k, v in self.taken_from.items()}
         rooms = {named(k): v for k, v in self.rooms.items() if k in (one, other)}
         self.rooms = {k: v for k, v in self.rooms.items() if k not in (one, other)} | rooms
         points = {named(k): v for k, v in self.points.items() if k in (one, other)}
@@ -282,12 +292,45 @@ class Things:
                 self.map.check_holding(holding)
         self.held = holding or self.robot_holding
 
-    def state(self, holding: str | None = None) -> State:
-        """The world's facts and the robot's hand; ``holding`` (a class) overrides the map's robot."""
-        self.hold(holding)
+    def state(self) -> State:
+        """The world's facts and the robot's hand (what :meth:`hold` and the commands already done left in it)."""
         name = self.name(self.held) if self.held else None
         facts = {f for f in self.facts if not (f.predicate == "in" and f.args[0] == name)}
         return State.of(facts | robot_facts(name), self.taxonomy, self.closable, self.classes, self.rooms)
+
+    def carry_out(self, text: str, bindings: Sequence[Binding]) -> None:
+        """What a command already done (``--done``, said as ``text``) left: its frames applied in order to the map's
+        facts and the robot's hand, a thing in one place at a time — a frame that puts it somewhere, or takes it up,
+        takes it from wherever it lay (e2e30: "bring the cup to the table" left the cup on the coffee table too,
+        whence "put it back" was already so). Refused, naming both, when a frame needs a fact an earlier done
+        command undid."""
+        state = self.state()
+        for binding in bindings:
+            for fact in state.unmet(binding):
+                if fact.positive in self.changed:
+                    raise SealError(f"--done {text!r} cannot follow --done {self.changed[fact.positive]!r}: "
+                                    f"{binding.frame.name} needs {fact}, which that command undid; say what happened "
+                                    "in between (another --done) or drop one of them")
+            after = state.apply(binding)
+            for thing in moved_by(binding):
+                self._moved(thing, state, after)
+                after = State(frozenset(f for f in after.facts if not _elsewhere(f, thing, binding)), after.taxonomy,
+                              after.closable, after.classes, after.rooms)
+            state = after
+            self.changed.update((f.positive, text) for f in binding.postconditions)
+        self.facts = {f for f in state.facts if f.predicate not in ("holding", "hand_empty")}
+        self.held = next((f.args[0] for f in state.facts if f.predicate == "holding"), None)
+
+    def _moved(self, thing: str, before: State, after: State) -> None:
+        """Keep where a thing lay before a frame moved it (:attr:`taken_from`), and where it lies now."""
+        lay = next((f.args[1] for f in sorted(before.facts, key=str) if f.predicate == "in" and f.args[0] == thing),
+                   None) or (self.rooms.get(thing) if not any(f.args[:1] == (thing,) for f in before.facts) else None)
+        now = next((f.args[1] for f in sorted(after.facts, key=str) if f.predicate == "in" and f.args[0] == thing
+                    and f.args[1] != lay), None)
+        if lay is not None and Fact("holding", (thing,)) not in before.facts:
+            self.taken_from[thing] = lay
+        if now is not None and now in self.points:
+            self.points[thing] = self.points[now]
 
 
 MAX_COUNT = 100
@@ -1067,6 +1110,9 @@ def _back_to(phrase: Phrase | None, themes: Sequence[str], bindings: Sequence[Bi
     m = things.map
     for theme in themes:
         takers = [b for b in bindings if _takes(b.frame) and b.elements.get("theme") == theme]
+        if not takers and theme in things.taken_from:   # where a command done took it from (e2e30)
+            places[things.taken_from[theme]] = None
+            continue
         if not takers and theme != (things.name(things.held) if things.held else None):
             return None
         source = next((b.elements["source"] for b in takers if "source" in b.elements), None)   # the first taking
@@ -1372,29 +1418,14 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
         for element in frame.elements:
             if element.default is not None:
                 things.name(element.default)
-    executed: list[tuple[str, Binding]] = []
-    for earlier in done:        # in order: a command done is context for the ones after it ("find Ben" → "him")
-        bindings = commanded_frames(earlier, library, things)
-        executed.extend((earlier.text, b) for b in bindings)
-        things.named_before = [*things.named_before, *_people_named(bindings, things)]
-        things.handled_before = [*things.handled_before, *_handled(bindings, things)]
-        things.done_said = True
+    carry_out_done(done, library, things)
     commanded = commanded_frames(parse, library, things)
     _the_ones_said_where(commanded, things)
     the_ones_not_there(commanded, things)
     the_ones_from_elsewhere(commanded, things)
     the_nearest_ones(commanded, things)
     among = the_goals_said_among(commanded, things)
-    state = things.state(holding)
-    changed: dict[Fact, str] = {}  # a fact an earlier done command made true or false → that command
-    for text, binding in executed:
-        for fact in state.unmet(binding):
-            if fact.positive in changed:
-                raise SealError(f"--done {text!r} cannot follow --done {changed[fact.positive]!r}: "
-                                f"{binding.frame.name} needs {fact}, which that command undid; say what happened "
-                                "in between (another --done) or drop one of them")
-        state = state.apply(binding)
-        changed.update((f.positive, text) for f in binding.postconditions)
+    state = things.state()
     _nothing_to_hand(parse, commanded, state)
     commanded = _the_thing_held(commanded, state)
     warnings = (*unknown_to_map(commanded, things), *fewer_than_asked(commanded, things),
@@ -1403,6 +1434,33 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
                    tuple(b for b in things.put_away if b in commanded),
                    tuple(b for b in things.put_back if b in commanded), dict(things.called),
                    {b: places for b, places in among.items() if b in commanded})
+
+
+def carry_out_done(done: Iterable[Parse], library: Library, things: Things) -> None:
+    """The commands already done (``--done``), in order, grounded and carried out on ``things``: each is context for
+    the ones after it ("find Ben" → "him", "pick up the cup" → "it") and leaves the world as it left it (what the
+    next one, and the command, are grounded on: the book put on the table is fetched from the table)."""
+    for earlier in done:
+        bindings = commanded_frames(earlier, library, things)
+        things.carry_out(earlier.text, bindings)
+        things.named_before = [*things.named_before, *_people_named(bindings, things)]
+        things.handled_before = [*things.handled_before, *_handled(bindings, things)]
+        things.done_said = True
+
+
+def moved_by(binding: Binding) -> tuple[str, ...]:
+    """The things a grounded frame moves: each its postconditions put in something, in the robot's hand or in
+    someone's (``has(me, cup)``)."""
+    moved = [f.args[0] for f in binding.postconditions if not f.negated and len(f.args) == 2 and f.predicate == "in"
+             or f.predicate == "holding"]
+    moved += [f.args[1] for f in binding.postconditions if not f.negated and f.predicate == "has" and len(f.args) == 2]
+    return tuple(dict.fromkeys(moved))
+
+
+def _elsewhere(fact: Fact, thing: str, binding: Binding) -> bool:
+    """Whether a fact puts ``thing`` somewhere the frame did not: where it lay before the frame moved it."""
+    return (fact.predicate in ("in", "on") and fact.args[:1] == (thing,) or fact.predicate == "has"
+            and fact.args[1:] == (thing,)) and fact not in binding.postconditions
 
 
 def _the_thing_held(commanded: Sequence[Binding], state: State) -> list[Binding]:

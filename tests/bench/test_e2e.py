@@ -31,6 +31,8 @@ def test_the_shipped_suite_and_a_good_file_load(tmp_path: Path) -> None:
     (GOOD.replace("}", ", run: done}"), r"e\.yaml:2:\d+: case 1 repeats the key 'run'"),
     (GOOD.replace('text: "go to the kitchen", ', ""), r"e\.yaml:2:\d+: case 1 has no text"),
     (GOOD.replace("apartment", "garage"), r"e\.yaml:2:\d+: case 1: no map 'garage'"),
+    (GOOD.replace("}", ", done: 5}"), r"e\.yaml:2:\d+: case 1's done must be a list, not '5'"),
+    (GOOD.replace("}", ", done: [[a]]}"), r"e\.yaml:2:\d+: a command of case 1's done must be a single value"),
 ])
 def test_a_case_of_the_wrong_shape_is_said_at_its_line_and_column(tmp_path: Path, entry: str, message: str) -> None:
     """Each was a TypeError traceback (``plan: 5``) or taken as it was (a plan of one string read letter by
@@ -69,6 +71,22 @@ def test_a_case_may_say_what_the_robot_holds_at_the_start(tmp_path: Path) -> Non
     assert verdict.plan_right, verdict.got
     refused = judge(fixed, str(map_path("apartment")), 0, 50, None)
     assert not refused.plan_right and refused.got.startswith("refused: --holding 'fridge'")
+
+
+def test_a_case_may_say_the_commands_already_carried_out(tmp_path: Path) -> None:
+    """``done`` (e2e30): the commands already carried out, as ``seal plan --done``; the plan starts from the house they
+    left (the cup on the dining table, so back is the coffee table)."""
+    from seal_cli.bench.e2e import judge
+    from seal_cli.resources import map_path
+
+    suite = tmp_path / "suite.yaml"
+    suite.write_text('cases:\n'
+                     '  - {map: apartment, done: ["bring the cup to the table"], text: "put it back", '
+                     'plan: ["Pick(theme=cup, source=dining_table_1)", "Place(theme=cup, goal=coffee_table_1)"]}\n')
+    [case] = load_cases(suite)
+    assert case.done == ("bring the cup to the table",)
+    verdict = judge(case, str(map_path("apartment")), 0, 50, None)
+    assert verdict.plan_right, verdict.got
 
 
 def test_a_suite_of_no_cases_is_refused(tmp_path: Path) -> None:

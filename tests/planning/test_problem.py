@@ -881,3 +881,36 @@ def test_a_thing_taken_to_a_room_it_lies_shut_away_in_is_one_from_elsewhere(libr
             "Pick(theme=mug, source=coffee_table_1)", "Bring(theme=mug, goal=galley)"]
     assert [str(s) for s in plan_text("take the milk to the galley", library, map=boat).steps] == [
         "Open(theme=fridge_1)", "Pick(theme=milk, source=fridge_1)", "Bring(theme=milk, goal=galley)"]
+
+
+@pytest.mark.parametrize(("done", "text", "expected"), [
+    (["bring the cup to the table"], "put it back",
+     ["Pick(theme=cup, source=dining_table_1)", "Place(theme=cup, goal=coffee_table_1)"]),
+    (["put the cup in the sink"], "bring me the cup",
+     ["Pick(theme=cup, source=sink_1)", "Bring(theme=cup, recipient=me)"]),
+    (["pick up the cup"], "put it back", ["Place(theme=cup, goal=coffee_table_1)"]),
+    (["pick up the cup", "put it on the table"], "put it back",
+     ["Pick(theme=cup, source=dining_table_1)", "Place(theme=cup, goal=coffee_table_1)"]),
+])
+def test_a_done_command_leaves_the_thing_where_it_put_it_and_back_is_where_it_took_it_from(
+        library: Library, done: list[str], text: str, expected: list[str]) -> None:
+    """e2e30: after --done 'bring the cup to the table' the state held in(cup, coffee_table_1) and in(cup,
+    dining_table_1) at once, so "put it back" was already so and "bring me the cup" fetched it from the coffee table."""
+    from seal_cli.frames.model import Fact
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "apartment.yaml")
+    found = plan(text, library, done=done, map=m)
+    assert [str(s) for s in found.steps] == expected
+    where = {f.args[1] for f in found.initial.facts if f.predicate == "in" and f.args[0] == "cup"}
+    assert len(where) <= 1 and (Fact("holding", ("cup",)) in found.initial.facts) == (not where)
+
+
+def test_a_done_command_that_hands_a_thing_over_takes_it_from_where_it_lay(library: Library) -> None:
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.planning.problem import problem_of_text
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "apartment.yaml")
+    state = problem_of_text("go to the kitchen", library, done=["bring me the cup"], map=m).state
+    assert {str(f) for f in state.facts if "cup" in f.args} == {"has(me, cup)"}
