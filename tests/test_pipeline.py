@@ -125,3 +125,25 @@ def test_run_on_map_acts_in_the_house_the_done_commands_left(library: Library, a
     agent, result = pipeline.run_on_map(apartment, "give it to me", library, make_policy("sefm", 100),
                                         rng=np.random.default_rng(0), done=["pick up the cup"])
     assert result.completed and result.path_m == 0.0 and any("handed cup_1 to me" in r.text for r in agent.records)
+
+
+def test_run_on_map_puts_back_a_thing_that_is_not_where_it_belongs(library: Library) -> None:
+    """e2e30: "put the book back on the bookshelf" in the library: the robot saw a book on a bookshelf and said the
+    frame needed no doing; "back" means one away from the bookshelves (the returns trolley's)."""
+    agent, result = pipeline.run_on_map(load_map("library"), "put the book back on the bookshelf", library,
+                                        make_policy("sefm", 100), rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    assert agent.world.items["book_1"].parent == "bookshelf_1" and result.executed[0] == "Pick(theme=book)"
+    assert any("on a bookshelf already: takes a book that is not on one" in r.text for r in agent.records)
+
+
+def test_run_on_map_says_the_source_a_thing_was_taken_from_when_not_the_one_said(library: Library) -> None:
+    """e2e30: "fetch me a book from the study room", none there: the run said so and fetched one from a table, yet its
+    step lines kept "source=study_room"; they name where it took the book from."""
+    agent, result = pipeline.run_on_map(load_map("library"), "fetch me a book from the study room", library,
+                                        make_policy("sefm", 100), rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    texts = [r.text for r in agent.records]
+    assert any("no book in the study room, where the command said it was; looks elsewhere" in t for t in texts)
+    done = [t for t in texts if t.startswith("done: ")]
+    assert done and all("study_room" not in t for t in done) and "source=table_2" in done[0]

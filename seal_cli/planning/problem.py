@@ -105,6 +105,10 @@ class Problem:
     """The commanded frames whose goal was one of several places of a class the command did not tell apart ("the
     fridge", two on the map), with those places: where a thing of the kind lies in any of them, the frame is so
     already (:func:`seal_cli.planning.lying.goal_among`; ``seal run`` asks it of what the robot sees)."""
+    one_away: tuple[Binding, ...] = ()
+    """The commanded frames that put a thing "back" on or in a place they name ("put the book back on the bookshelf"):
+    the thing is one on or in no place of the goal's class (:func:`the_ones_not_there`; ``seal run``'s robot asks it
+    of what it sees, :meth:`seal_cli.sim.agent.Agent.already_so`)."""
 
 
 class Things:
@@ -157,6 +161,16 @@ class Things:
         """The commanded frames whose goal "put away" chose."""
         self.put_back: list[Binding] = []
         """The commanded frames that put a thing "back" where the robot will take it from."""
+        self.one_away: list[Binding] = []
+        """The commanded frames that put a thing "back" on or in a place they name ("put the book back on the
+        bookshelf"), or "another" of a kind ("put another loaf on the counter"): the thing is one on or in no place of
+        the goal's class now (:func:`the_ones_not_there`)."""
+        self.one_more: list[Binding] = []
+        """Those of :attr:`one_away` that say "another": their goal is the place of its class where one lies."""
+        self.all_there: list[str] = []
+        """What the map says against the command's words, said as warnings: every book on a bookshelf already for a
+        thing put "back" (:func:`the_ones_not_there`), no book where the command says one is
+        (:func:`_the_ones_said_where`)."""
         self.goal_back: list[Binding] = []
         """The commanded frames whose goal "back" chose (where the thing was taken from or lies: "put it back")."""
         self.points: dict[str, tuple[float, float]] = {}
@@ -483,6 +497,18 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
         raise _located(f"{phrase.text!r} asks for {count:,} things; seal plans for at most {MAX_COUNT} "
                        "of a kind", phrase, text)
     return things.instances(value, count)
+
+
+def _another_said(evoked: Evoked, earlier: Sequence[Mapping[str, tuple[str, ...]]], things: Things) -> bool:
+    """Whether the frame's theme is "another" of a kind no earlier frame of the command named ("put another loaf on the
+    counter"): one more besides the one where it goes, so not one lying there (e2e30; after a thing of the kind
+    named before, "another" is that one's other, :func:`_the_other`)."""
+    phrase = evoked.elements.get("theme")
+    if phrase is None or "another" not in {w.lower() for w in (phrase.text or "").split()}:
+        return False
+    value = class_key(phrase.cls or phrase.head or "")
+    cls = things.class_of(things.name(value)) if value else ""
+    return not any(things.class_of(v) == cls for values in earlier for vs in values.values() for v in vs)
 
 
 def _the_other(phrase: Phrase, value: str, earlier: Sequence[Mapping[str, tuple[str, ...]]],
@@ -849,7 +875,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
     from seal_cli.language.reference import back_unplaced
     from seal_cli.planning.fetching import brought
     from seal_cli.planning.questions import asks_whether, looking
-    from seal_cli.planning.returning import returned
+    from seal_cli.planning.returning import returned, says_back
 
     parse = replace(parse, frames=returned(parse.frames, library, parse.text))   # "return it", "take it back"
     parse = replace(parse, frames=brought(parse.frames, library))     # "fetch the remote": bring it here
@@ -934,6 +960,10 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
                 things.put_back.append(frame.bind(said))
             if "goal" in placed_back:
                 things.goal_back.append(frame.bind(said))
+            elif "goal" in said and (says_back(evoked, parse.text) or _another_said(evoked, earlier[:-1], things)):
+                things.one_away.append(reading.bind(said))      # "back on the bookshelf", "another loaf on it"
+                if not says_back(evoked, parse.text):
+                    things.one_more.append(reading.bind(said))
             bindings.append(reading.bind(said))
     return bindings
 
@@ -1429,11 +1459,12 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
     _nothing_to_hand(parse, commanded, state)
     commanded = _the_thing_held(commanded, state)
     warnings = (*unknown_to_map(commanded, things), *fewer_than_asked(commanded, things),
-                *chosen_among(commanded, things)) if map else ()
+                *chosen_among(commanded, things), *things.all_there) if map else ()
     return Problem(parse.text, tuple(commanded), state, warnings,
                    tuple(b for b in things.put_away if b in commanded),
                    tuple(b for b in things.put_back if b in commanded), dict(things.called),
-                   {b: places for b, places in among.items() if b in commanded})
+                   {b: places for b, places in among.items() if b in commanded},
+                   one_away=tuple(b for b in things.one_away if b in commanded))
 
 
 def carry_out_done(done: Iterable[Parse], library: Library, things: Things) -> None:
@@ -1534,6 +1565,13 @@ def _the_ones_said_where(commanded: Sequence[Binding], things: Things) -> None:
                       and n not in things.fixed and things.lies_in(n, source)), None)
         if there is not None:
             things.swap(theme, there)
+        elif (elsewhere := sorted({p for n, c in things.classes.items() if c == cls and n not in things.fixed
+                                   and (p := _lies_on(n, things)) is not None})):
+            words, m = cls.replace("_", " "), things.map
+            said = f"in the {source.replace('_', ' ')}" if m.room_id(source) is not None else f"in or on {source}"
+            things.all_there.append(f"the {_words(m.name)} places no {words} {said} (it has "
+                                    f"one in or on {', '.join(elsewhere)}): seal run looks there first, as the command "
+                                    f"says, says it found none, then takes the nearest other {words}")
 
 
 def the_goals_said_among(commanded: list[Binding], things: Things) -> dict[Binding, tuple[str, ...]]:
@@ -1567,9 +1605,17 @@ def the_goals_said_among(commanded: list[Binding], things: Things) -> dict[Bindi
         def lying(place: str, ones: list[str] = ones) -> str | None:
             return next((n for n in ones if things.lies_in(n, place)), None)
 
-        place = goal_among(binding, theme, cls, held=key, among=among, lies_in=lying)
-        if len(among) > 1:
+        back = binding in things.one_away and not any(things.lies_in(theme, p) for p in among)
+        place = None if back else goal_among(binding, theme, cls, held=key, among=among, lies_in=lying)
+        if len(among) > 1 and not back:     # "back on the bookshelf": one not on any (the_ones_not_there)
             found[binding] = among
+        if back and binding in things.one_more:     # "another loaf on the counter": the counter one lies on
+            ones_there = [p for p in among if any(things.lies_in(n, p) for n, c in things.classes.items() if c == cls)]
+            place = goal if goal in ones_there or not ones_there else ones_there[0]
+            if place != goal:
+                commanded[index] = binding.frame.bind({**binding.elements, "goal": place})
+                things.one_away.append(commanded[index])
+            continue
         if place is None:
             continue
         if (one := lying(place)) is not None and one != theme:
@@ -1607,19 +1653,30 @@ def the_ones_not_there(commanded: Sequence[Binding], things: Things) -> None:
         if theme is None or theme in settled:
             continue
         settled.add(theme)
-        if (goal is None or not things.is_place(goal) or theme in things.fixed or theme in things.people
-                or theme not in things.classes or not things.lies_in(theme, goal)):
+        if goal is None or not things.is_place(goal) or theme in things.fixed or theme in things.people \
+                or theme not in things.classes:
             continue
         cls = things.classes[theme]
-        like_goal = sum(1 for p in m.places if class_key(p.cls) == things.class_of(goal))
-        if not another_meant(binding, theme, cls, held=key, places_like_goal=like_goal, several=several):
+        like_goal = [class_key(p.name) for p in m.places if class_key(p.cls) == things.class_of(goal)]
+        back = binding in things.one_away and len(like_goal) > 1    # "back on the bookshelf": on none now (e2e30)
+        among = like_goal if back else [goal]
+        if not any(things.lies_in(theme, p) for p in among) and not back:
+            continue
+        if not another_meant(binding, theme, cls, held=key, places_like_goal=1 if back else len(like_goal),
+                             several=several):
             continue
         kept = binding in things.put_away       # its goal: where it is kept, read off where it lies
-        other = next((n for n, c in things.classes.items() if c == cls and n != theme and n not in used
-                      and n not in things.fixed and n in things.points and not things.lies_in(n, goal)
-                      and not (kept and _kept_already(n, things))), None)
-        if other is not None:
-            things.swap(theme, other)
+        others = [n for n, c in things.classes.items() if c == cls and (n == theme or n not in used) and (
+                  n != theme or back) and n not in things.fixed and n in things.points
+                  and not any(things.lies_in(n, p) for p in among) and not (kept and _kept_already(n, things))]
+        if back and len(others) > 1:        # one a command done moved first ("back"), else the nearest by drive
+            others = _nearest_first(others, binding, commanded, things)
+        if others:
+            if others[0] != theme:
+                things.swap(theme, others[0])
+        elif back:
+            things.all_there.append(f"every {cls.replace('_', ' ')} the {_words(m.name)} has lies on or in a "
+                                    f"{things.class_of(goal).replace('_', ' ')} already: none to put back")
 
 
 def the_ones_from_elsewhere(commanded: Sequence[Binding], things: Things) -> None:
@@ -1705,10 +1762,28 @@ def the_nearest_ones(commanded: Sequence[Binding], things: Things) -> None:
             nearest = min(lying, key=lambda n: (lengths[lying[n] or ""], n != theme))
             if kept is not None and kept != theme and kept == nearest:    # the prior and the drive agree
                 things.swap(theme, kept)
+            elif (in_sight := _open_nearer(theme, lying, lengths, things)) is not None:
+                things.swap(theme, in_sight)
             continue
         best = min(lying, key=lambda n: (lengths[lying[n] or ""], n != theme))
         if best != theme and lengths[lying[best] or ""] < lengths[lying[theme] or ""]:
             things.swap(theme, best)
+
+
+def _open_nearer(theme: str, lying: Mapping[str, str | None], lengths: Mapping[str, float],
+                 things: Things) -> str | None:
+    """Of things of one kind in places of different classes, the one in an open place nearer by drive than the shut
+    place the command's thing lies in (e2e30: "go to the office and then bring me a mug", a mug on the office desk and
+    one in the bakehouse's shut cupboard): ``seal run``'s robot sees it first and takes it; None when the thing does not
+    lie shut away or no open place is nearer."""
+    def shut(place: str | None) -> bool:
+        return place is not None and place in things.closable and Fact("open", (place,)) not in things.facts
+
+    if not shut(lying[theme]):
+        return None
+    open_ones = [n for n, p in lying.items() if p is not None and not shut(p)]
+    best = min(open_ones, key=lambda n: lengths[lying[n] or ""], default=None)
+    return best if best is not None and lengths[lying[best] or ""] < lengths[lying[theme] or ""] else None
 
 
 def _most_kept(cls: str, lying: Mapping[str, str | None], m: Map, things: Things) -> str | None:
@@ -1735,6 +1810,21 @@ def _put_where_it_lies(theme: str, lies: str | None, commanded: Sequence[Binding
     (lead, stop 39: with any goal counted, it said the shop's milk "holds already")."""
     return any(b.elements.get("theme") == theme and b.elements.get("goal") == lies
                and (b in things.put_away or b in things.goal_back) for b in commanded)
+
+
+def _nearest_first(names: Sequence[str], binding: Binding, commanded: Sequence[Binding], things: Things) -> list[str]:
+    """Things of a kind, those a command done moved first (:attr:`Things.taken_from`), then each by how far the robot
+    drives to where it lies from where the frames before ``binding`` leave it (else where it starts)."""
+    from seal_cli.maps.reach import drive_lengths
+
+    m = things.map
+    assert m is not None
+    before = list(commanded[:commanded.index(binding)]) if binding in commanded else []
+    start = _robot_at(binding.frame, "source", {}, before, things)
+    places = {n: _lies_on(n, things) for n in names}
+    said = sorted({p for p in places.values() if p is not None})
+    lengths = dict(zip(said, drive_lengths(m, start[0] if start else m.robot.xy, said), strict=True))
+    return sorted(names, key=lambda n: (n not in things.taken_from, lengths.get(places[n] or "", math.inf)))
 
 
 def _lies_on(name: str, things: Things) -> str | None:

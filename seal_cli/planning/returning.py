@@ -25,7 +25,7 @@ from dataclasses import replace
 from seal_cli.frames.library import Library
 from seal_cli.language.values import Evoked
 
-__all__ = ["RETURNING_THINGS", "TAKING_AWAY", "put_back_unit", "returned"]
+__all__ = ["RETURNING_THINGS", "TAKING_AWAY", "put_back_unit", "returned", "says_back"]
 
 RETURNING_THINGS = frozenset({"return"})
 """Verbs whose transitive sense is "bring back to the point of departure" (WordNet 02078312, whose other
@@ -59,6 +59,15 @@ def _takes_back(evoked: Evoked, text: str) -> bool:
     if (unit != [*unit[:1]] or unit[0] not in TAKING_AWAY or "theme" not in said or said & {"recipient", "goal"}
             or evoked.elements["theme"].kind == "person"):      # "take Tom back": a person is led, not put back
         return False
+    return says_back(evoked, text)
+
+
+def says_back(evoked: Evoked, text: str) -> bool:
+    """Whether the frame's words hold a bare "back", in no element's span ("put the book *back* on the shelf", "take
+    the cup *back*"), or its unit ends in it ("put back"): the thing is to return where it belongs, so it is not there
+    now (e2e30, :func:`seal_cli.planning.problem.the_ones_not_there`)."""
+    if evoked.lexical_unit.split()[-1:] == ["back"]:
+        return True
     spans = [p.span for p in evoked.elements.values() if p.span is not None]
     start, end = evoked.span
     return any(word.group(0).lower() == "back" and not any(a <= start + word.start() < b for a, b in spans)

@@ -152,7 +152,8 @@ class Agent:
                  put_away: Mapping[Binding, Callable[[str | None], str | None]] | None = None,
                  put_back: Iterable[Binding] = (), told: Mapping[str, Sequence[str]] | None = None,
                  names: Mapping[str, str] | None = None, heed_sources: bool = False,
-                 absent_said: bool = False, among: Mapping[Binding, Sequence[str]] | None = None) -> None:
+                 absent_said: bool = False, among: Mapping[Binding, Sequence[str]] | None = None,
+                 one_away: Iterable[Binding] = ()) -> None:
         self.scene = scene
         self.world = scene.world
         self.grid = scene.grid
@@ -208,6 +209,9 @@ class Agent:
         """The commanded frames whose goal was one of several places of a class the command did not tell apart, with
         those places (:attr:`seal_cli.planning.problem.Problem.among`): one of the kind seen lying in any of them makes
         the frame so already ("put the milk in the fridge", two fridges, a milk in each), as the planner says."""
+        self.one_away: set[Binding] = set(one_away)
+        """The commanded frames that put a thing "back" on or in a place they name (:attr:`seal_cli.planning.problem.
+        Problem.one_away`): one of the kind seen on or in any place of the goal's class is not the one meant (e2e30)."""
         self.not_meant: dict[str, set[str]] = {}
         """The instances a name does not stand for, by name: the one seen where a frame puts its kind already."""
         self.shut_there: dict[Binding, tuple[str, set[str]]] = {}
@@ -351,6 +355,8 @@ class Agent:
             return shut
         if binding in self.put_away:        # put away: already so only where such a thing is kept
             return self._kept_already(binding)
+        if binding in self.one_away and self._back_from_elsewhere(binding):     # one on no bookshelf (e2e30)
+            return None
         results = [f for f in binding.postconditions if not f.negated and f.predicate == "in" and len(f.args) == 2]
         on = any(a.name == "place_on" for a in binding.actions)
         rooms = {class_key(p.name): class_key(p.room) for p in self.scene.map.places if p.room}
@@ -403,6 +409,27 @@ class Agent:
             return None
         self.chosen.setdefault(class_key(thing), seen[thing])   # that one is this name's: not cup_2's too (e2e23)
         return said
+
+    def _back_from_elsewhere(self, binding: Binding) -> bool:
+        """A frame puts a thing "back" on or in a place it names ("put the book back on the bookshelf"), or "another"
+        ("put another loaf on the counter"): the things of its kind the robot sees on or in a place of the goal's class
+        are not the one meant; it says so and looks on (as :func:`seal_cli.planning.problem.the_ones_not_there` reads
+        the map). False where the goal is the one place of its class (the other-one rule holds there, e2e27)."""
+        thing, goal = binding.elements.get("theme"), self.world.items.get(binding.elements.get("goal") or "")
+        if thing is None or goal is None or sum(1 for k in self.instances(goal.key) if not k.movable) < 2:
+            return False        # one place of its class: the other-one rule (:meth:`_another_meant`)
+        if class_key(thing) in self.chosen:
+            return True
+        kind = self.class_of(thing)
+        there = {k.id for k in self.known.values() if k.cls == kind and k.movable and k.id in self.world.items
+                 and (parent := self.world.items[k.id].parent) in self.world.items
+                 and self.world.items[parent].cls == goal.cls}
+        new = sorted(there - self.not_meant.get(thing, set()))
+        if new:
+            self.not_meant.setdefault(thing, set()).update(new)
+            self.say("search", f"{', '.join(new)} {'is' if len(new) == 1 else 'are'} on a {spoken(goal.cls)} already: "
+                     f"takes a {spoken(kind)} that is not on one", target=thing)
+        return True
 
     def _shut_in_goal_room(self, binding: Binding, thing: str, room: Any, shut: Sequence[str]) -> None:
         """A frame takes ``thing`` to ``room``, where the robot sees things of its kind shut away in a place (``shut``):
@@ -607,9 +634,18 @@ class Agent:
         does a step skipped as so already ("umbrella_1 is in the waiting room already, so Bring(theme=umbrella,
         ...) needs no doing": the plan's step, quoted, after the thing it found)."""
         said = {role: self.handled(value) for role, value in binding.values}
+        lay = self.picked_from.get(said.get("theme", ""))
+        if "source" in said and lay is not None and not self._lies_within(lay, said["source"]):
+            said["source"] = lay        # taken from elsewhere than the command said (e2e30: no book in the study room)
         if all(said[r] == v for r, v in binding.values):
             return shown(binding)
         return shown(binding.frame.bind(said))
+
+    def _lies_within(self, place: str, where: str) -> bool:
+        """Whether a place is ``where`` or lies in the room ``where`` names."""
+        room = self.room(where)
+        item = self.world.items.get(place)
+        return place == where or (room is not None and item is not None and bool(room.contains([item.at])[0]))
 
     def said_at_end(self, record: Record) -> str:
         """A step's record as the run would say it now, naming what it handled in it (the run's picture, drawn after

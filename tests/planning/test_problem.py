@@ -914,3 +914,81 @@ def test_a_done_command_that_hands_a_thing_over_takes_it_from_where_it_lay(libra
     m = load_map(Path(__file__).resolve().parents[2] / "maps" / "apartment.yaml")
     state = problem_of_text("go to the kitchen", library, done=["bring me the cup"], map=m).state
     assert {str(f) for f in state.facts if "cup" in f.args} == {"has(me, cup)"}
+
+
+def _library_plan(text: str, library: Library, yaml_text: str | None = None, tmp: Path | None = None) -> tuple[
+        list[str], tuple[str, ...]]:
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan
+
+    source = Path(__file__).resolve().parents[2] / "maps" / "library.yaml"
+    if yaml_text is not None and tmp is not None:
+        (tmp / "library.pgm").write_bytes(source.with_suffix(".pgm").read_bytes())
+        (tmp / "library.yaml").write_text(yaml_text)
+        source = tmp / "library.yaml"
+    found = plan(text, library, map=load_map(source))
+    return [str(s) for s in found.steps], found.warnings
+
+
+def test_a_thing_put_back_on_a_place_of_a_kind_is_one_on_none_of_them(library: Library, tmp_path: Path) -> None:
+    """e2e30: "put the book back on the bookshelf" on the library (a book on two of its four bookshelves, one on the
+    returns trolley, one on a table) planned nothing: a book lay on a bookshelf. "Back" says the thing is not where
+    it belongs now: the trolley's book. Where every book is on a bookshelf, the plan says so."""
+    steps, _ = _library_plan("put the book back on the bookshelf", library)
+    assert steps == ["Pick(theme=book, source=trolley_1)", "Place(theme=book, goal=bookshelf_1)"]
+    assert _library_plan("put the book on the bookshelf", library)[0] == []     # no "back": so already (e2e28)
+    text = (Path(__file__).resolve().parents[2] / "maps" / "library.yaml").read_text()
+    shelved = text.replace("in: trolley_1}", "in: bookshelf_3}").replace("in: table_2}", "in: bookshelf_4}")
+    steps, warnings = _library_plan("put the book back on the bookshelf", library, shelved, tmp_path)
+    assert steps == [] and "every book the library has lies on or in a bookshelf already: none to put back" in warnings
+
+
+def test_back_on_a_place_after_done_takes_the_thing_the_done_command_moved(library: Library) -> None:
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "library.yaml")
+    found = plan("put the book back on the bookshelf", library, done=["take the book to the office"], map=m)
+    assert [str(s) for s in found.steps] == ["Pick(theme=book, source=office)", "Place(theme=book, goal=bookshelf_4)"]
+
+
+def test_another_of_a_kind_put_where_one_lies_is_one_from_elsewhere(library: Library) -> None:
+    """e2e30: "put another loaf on the counter" on the bakery (a loaf on the shop counter, two on the shelves, a second
+    counter in the bakehouse) planned nothing, as "a loaf" does: "another" asks for one more besides the one there, so
+    the nearest loaf on no counter goes on the counter one lies on."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "bakery.yaml")
+    assert [str(s) for s in plan("put another loaf on the counter", library, map=m).steps] == [
+        "Pick(theme=bread, source=shelf_2)", "Place(theme=bread, goal=counter_1)"]
+    assert [str(s) for s in plan("put a loaf on the counter", library, map=m).steps] == []
+
+
+def test_a_thing_said_to_be_where_the_map_has_none_is_warned_of(library: Library) -> None:
+    """e2e30: "fetch me a book from the study room" (no book there) planned the study room as the source and said
+    nothing; the run looked there, said it found none and fetched one from elsewhere. The plan now says so too."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "library.yaml")
+    found = plan("fetch me a book from the study room", library, map=m)
+    assert [str(s) for s in found.steps] == ["Pick(theme=book, source=study_room)",
+                                             "Bring(theme=book, recipient=me, source=study_room)"]
+    assert found.warnings == ("the library places no book in the study room (it has one in or on bookshelf_1, "
+                              "bookshelf_2, table_2, trolley_1): seal run looks there first, as the command says, says "
+                              "it found none, then takes the nearest other book",)
+    assert plan("bring me a box from the storeroom", library, map=m).warnings == ()
+
+
+def test_a_thing_in_sight_is_taken_before_one_shut_away_further_off(library: Library) -> None:
+    """e2e30: "go to the office and then bring me a mug" (a mug on the office desk, one in the bakehouse's shut
+    cupboard) planned the cupboard's; the run, in the office, takes the desk's. From the shop the cupboard is nearer."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "bakery.yaml")
+    assert [str(s) for s in plan("go to the office and then bring me a mug", library, map=m).steps][:2] == [
+        "Go(goal=office)", "Pick(theme=mug, source=desk_1)"]
+    assert [str(s) for s in plan("bring me a mug", library, map=m).steps][:2] == [
+        "Open(theme=cupboard_1)", "Pick(theme=mug, source=cupboard_1)"]

@@ -91,3 +91,17 @@ def replace_span(phrase: Phrase, start: int) -> Phrase:
 def test_taking_back_and_bringing_back_on_a_map(library: Library, text: str, holding: str | None,
                                                 steps: list[str]) -> None:
     assert _plan(text, library, holding) == steps
+
+
+@pytest.mark.parametrize(("text", "back"), [
+    ("put the vase back on the mantelpiece", True),
+    ("set the vase back down on the mantelpiece", True),
+    ("put the vase on the mantelpiece", False),
+    ("put the vase on the back porch", False),      # "back" inside an element: a porch, not a return
+])
+def test_a_bare_back_in_a_frame_says_the_thing_returns(library: Library, text: str, back: bool) -> None:
+    from seal_cli.language.parser import parse_command
+    from seal_cli.planning.returning import says_back
+
+    parse = parse_command(text, library)
+    assert says_back(parse.frames[0], text) is back
