@@ -896,7 +896,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         for role in sorted(grounded, key=lambda r: r in CARRIED_TO):     # where a thing goes, once the thing is known
             if things.names is not None:
                 things.names.robot_at = _robot_at(frame, role, values, bindings, things)
-            values[role] = _values(_sought_where(evoked, role, things), earlier, things, parse.text,
+            values[role] = _values(_sought_where(evoked, role, things, role in asked), earlier, things, parse.text,
                                    frame.element(role).type, role in asked, _carried(frame, role),
                                    _gone_to(frame, role), not _taken_out_of_a_thing(evoked, things))
         values = {r: values[r] for r in grounded}
@@ -1366,10 +1366,12 @@ def _the_house(role: str, phrase: Phrase, things: Things) -> bool:
                                                               ("room", "place")) is None))
 
 
-def _sought_where(evoked: Evoked, role: str, things: Things) -> Phrase:
+def _sought_where(evoked: Evoked, role: str, things: Things, asked: bool = False) -> Phrase:
     """The phrase of a role, with the frame's ground said after a theme that says no room of its own:
     "find the sofa in the living room" seeks the living room's sofa (``sofa_2``), not the map's first;
-    a movable thing is not a map referent, so its phrase grounds as before."""
+    a movable thing is not a map referent, so its phrase grounds as before. A theme only ``asked`` of (counted,
+    or a yes/no question's) is not refused where the room has none of it: "how many tables are in the foyer?"
+    has the answer none, which the run gives by the map."""
     phrase = evoked.elements[role]
     ground = evoked.elements.get("ground")
     if (role != "theme" or ground is None or not ground.text or not phrase.text or phrase.conjuncts
@@ -1379,7 +1381,7 @@ def _sought_where(evoked: Evoked, role: str, things: Things) -> Phrase:
     try:
         found = things.names.ground(there.text or "", "thing", ("place",))
     except SealError:
-        return there            # "find the sofa in the kitchen": refused, naming the sofas there are
+        return phrase if asked else there   # "find the sofa in the kitchen": refused, naming the sofas there are
     return there if found is not None else phrase
 
 

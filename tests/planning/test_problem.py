@@ -125,6 +125,21 @@ def test_a_place_sought_in_a_room_is_that_rooms_place(library: Library) -> None:
         problem_of_text("find the sofa in the kitchen", library, map=apartment)
 
 
+def test_a_place_counted_in_a_room_without_one_is_counted_not_refused(library: Library) -> None:
+    """Lead, stop 41: "how many sofas are in the kitchen?" was refused like "find the sofa in the kitchen"; a count
+    is a question whose answer is none, which the run gives by the map. Finding one there is still refused."""
+    from seal_cli.errors import SealError
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+
+    apartment = load_map(map_path("apartment"))
+    for text, plan in (("how many sofas are in the kitchen", "Count(theme=sofa, ground=kitchen)"),
+                       ("how many sofas are in the living room", "Count(theme=sofa, ground=living_room)")):
+        assert [str(b) for b in problem_of_text(text, library, map=apartment).commanded] == [plan]
+    with pytest.raises(SealError, match=re.escape("has no sofa in the kitchen")):
+        problem_of_text("look for the sofa in the kitchen", library, map=apartment)
+
+
 def test_a_place_said_before_the_clause_says_which_thing(library: Library) -> None:
     """Lead, stop 38: "In the shop, open the fridge" on the corner shop (a fridge in the shop, one in the kitchen)
     opened the kitchen's: the place said first, which no element of Open takes, described the fridge but never
