@@ -145,6 +145,7 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                     "would you be good enough to", "could you be so kind as to", "do me a favor and",
                     "do me a favour and", "don't forget to", "do not forget to", "help me", "help me to", "help us",
                     "make sure you", "see that you", "hi", "hello", "hi there", "hello there", "hey there",
+                    *(f"good {part}" for part in ("morning", "afternoon", "evening", "night", "day")),
                     "excuse me", "maybe", "perhaps", "oh", "ah",
                     "could i ask you to", "can i ask you to", "may i ask you to", "might i ask you to",
                     "could i trouble you to", "can i trouble you to", "may i trouble you to",
@@ -327,6 +328,13 @@ not what, and are no part of a noun phrase."""
 PARTS_OF_DAY = frozenset(["morning", "afternoon", "evening", "night", "weekend"])
 """Parts of the day a time word names with "this", "tomorrow" or "tonight" before it ("*this afternoon*
 close the blinds", "*tomorrow morning*, wake me up")."""
+FREQUENCY_LEADS = frozenset(["every", "each"])
+"""Determiners of a time said as how often ("*every morning*, open the curtains", "*each* evening"): with a part
+of the day or a measure of time after them (``PARTS_OF_DAY``, ``TIME_UNITS``)."""
+TIMES_SAID = frozenset(["once", "twice", "thrice"])
+"""Adverbs of how many times ("*twice* a day"); a number before "times" says the same ("three times a week")."""
+RATE_WORDS = frozenset(["a", "an", "per", "every", "each"])
+"""Words between a number of times and its unit ("twice *a* day", "three times *per* week")."""
 TIME_FIRST_LEAD = frozenset(["after", "before", "until", "till", "by"])
 """Prepositions of a time said first with a bare noun ("*after lunch* clean the counter", "*before bed*, turn off
 the lights"): a time, no subordinate clause (no subject, no verb)."""
@@ -582,9 +590,14 @@ library. "don't forget to" is a reminder, a request to do it (``POLITE``)."""
 NOT_FORGOTTEN = frozenset(["forget", "fail"])
 """"don't *forget* ...", "don't *fail* to ...": a negated verb of omission asks for the deed (no prohibition)."""
 CANCELLATIONS = frozenset(["never mind", "nevermind", "forget about", "don't bother with", "don't bother about",
-                           "no need to", "there's no need to", "you don't need to", "you needn't"])
-"""What takes back something asked or expected ("*never mind* the lamp, turn on the fan", "*no need to* wash it"):
-the clause they open asks nothing."""
+                           "no need to", "there's no need to", "you don't need to", "you needn't",
+                           "cancel", "forget", "ignore", "disregard"])
+"""What takes back something asked or expected ("*never mind* the lamp, turn on the fan", "*no need to* wash it"),
+and the verbs of taking back ("*cancel* that, bring me a cup", "*forget* what I said, go to the garage",
+"*ignore* the dishes, ..."): the clause they open asks nothing."""
+HALTS = frozenset(["stop", "halt"])
+"""Verbs of halting: said with no object ("*stop*!", "*halt*, wait there") they ask the robot to stop what it
+does, a cancellation (``CANCELLATIONS``); with one ("stop the music") they are the verb of a frame."""
 CORRECTION_MARKS = frozenset(["no", "no wait", "wait", "no sorry", "sorry", "i mean", "sorry i mean",
                               "no i mean", "i meant", "sorry i meant", "or rather", "rather", "actually",
                               "no actually", "oops", "whoops", "correction", "make that", "no make that",

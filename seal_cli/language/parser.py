@@ -43,6 +43,7 @@ from seal_cli.language.stacking import infer_stack
 from seal_cli.language.state import CLOSED, State
 from seal_cli.language.steps import infer_left_in, infer_step
 from seal_cli.language.swallowed import Swallowed, swallowed
+from seal_cli.language.tags import Tag
 from seal_cli.language.syntax import NP, Syntax
 from seal_cli.language.taskfields import reread
 from seal_cli.language.tasks import infer_task
@@ -368,6 +369,10 @@ def _explain(error: Any, text: str, words: Sequence[Word], lexicon: Lexicon) -> 
         return CommandError(_unknown_verb(lexicon, word), column, text, ["a verb"])
     before = _word_before(words, words[token.start_pos].start if not at_end else len(text))
     after = f" after {before!r}" if before else ""
+    if wants_verb and at_end and all(w.tag in (Tag.POLITE, Tag.SEP, Tag.END) for w in words):
+        return CommandError(f"{text.strip()!r} asks nothing: a greeting, thanks or politeness alone is no "
+                            f"instruction; say what the robot should do (it can {_either(list(lexicon.can))})",
+                            _first_column(text), text, ["a verb"])
     if wants_verb:
         return CommandError(f"expected a verb{after}, such as {_some_verbs(lexicon)}", column, text, ["a verb"])
     if at_end:

@@ -16,6 +16,7 @@ from seal_cli.language.english import (
     BEING_MEANS,
     CLOCK_PREPOSITIONS,
     END_MARKS,
+    FREQUENCY_LEADS,
     HAVING_FIRST,
     HAVING_MEANS,
     LOCATIVE,
@@ -26,11 +27,13 @@ from seal_cli.language.english import (
     PARTS_OF_DAY,
     PREPOSITIONS,
     PRONOUNS,
+    RATE_WORDS,
     SEPARATOR_WORDS,
     TIME_FIRST_LEAD,
     TIME_MEASURE,
     TIME_UNITS,
     TIME_WORDS,
+    TIMES_SAID,
 )
 from seal_cli.language.morphology import gerund_lemma, is_adverb, participles, parts_of_speech, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
@@ -83,6 +86,11 @@ def _time_said(s: State, i: int) -> int:
         return n
     if low == "this" and s.next_lower(i) in PARTS_OF_DAY:
         return 2                                                    # "this afternoon"
+    n = _how_often(s, i)
+    if n:
+        return n                                                    # "every morning", "twice a day"
+    if low == "from" and s.next_lower(i) == "now" and s.next_lower(i + 1) == "on":
+        return 3                                                    # "from now on"
     n = s.clock_time(i)
     if n:
         return n                                                    # "in five minutes", "at six"
@@ -101,6 +109,30 @@ def _time_said(s: State, i: int) -> int:
                 s.verb_at(i + 1) is None and not nxt.endswith("ing") and \
                 (after == "," or verb_lemma(after) == after):       # "until dad gets home": a clause, no time
             return 2                                                # "after lunch", "before bed"
+    return 0
+
+
+def _how_often(s: State, i: int) -> int:
+    """How many words a time said as how often takes at ``i`` (0: none): "every"/"each", a few words of
+    quantity and a part of the day or a unit ("*every morning*", "*every few minutes*"), or a number of times
+    and its rate ("*twice a day*", "*three times a week*", "*once every hour*")."""
+    words, low = s.words, s.words[i].lower
+    units = TIME_UNITS | PARTS_OF_DAY
+    k = i
+    if low in TIMES_SAID:
+        k = i + 1
+    elif (low in NUMBERS or low.isdigit()) and s.next_lower(i) == "times":
+        k = i + 2
+    if k > i:
+        if k + 1 < len(words) and words[k].lower in RATE_WORDS and words[k + 1].lower in units:
+            return k + 2 - i
+        return 0
+    if low in FREQUENCY_LEADS:
+        k = i + 1
+        while k < len(words) and (words[k].lower in TIME_MEASURE or words[k].lower in NUMBERS):
+            k += 1                                                  # "every few minutes", "every two hours"
+        if k < len(words) and words[k].lower in units:
+            return k + 1 - i
     return 0
 
 
@@ -368,7 +400,11 @@ TIME_SAID_FIRST = Rule("a time said first", _time_first, (
     Example("later on, bring me a coffee", "later on,", Tag.POLITE),
     Example("after lunch clean the kitchen counter", "after lunch", Tag.POLITE),
     Example("this afternoon open the windows", "this afternoon", Tag.POLITE),
-), TIME_FIRST | TIME_FIRST_LEAD | frozenset(["this", "in", "at"]) | CLOCK_PREPOSITIONS,
+    Example("every morning, open the curtains", "every morning,", Tag.POLITE),
+    Example("three times a week, dust the shelves", "three times a week,", Tag.POLITE),
+    Example("from now on, close the back door", "from now on,", Tag.POLITE),
+), TIME_FIRST | TIME_FIRST_LEAD | frozenset(["this", "in", "at", "from"]) | CLOCK_PREPOSITIONS | FREQUENCY_LEADS |
+    TIMES_SAID | frozenset(NUMBERS) | frozenset(str(n) for n in range(2, 13)),
     "a time before the verb ('in five minutes', 'tonight', 'after lunch'): when, kept as the frame's time")
 SUBORDINATE = Rule("subordinate clause first", _subordinate, (
     Example("If the door is open, close it", "If the door is open,", Tag.COND),

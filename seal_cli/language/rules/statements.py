@@ -85,7 +85,7 @@ DISLOCATED = Rule("phrase said first, taken up by a pronoun", _dislocated, (
     Example("whoever's at the door, greet them", "whoever's at the door,", Tag.POLITE),    # a free relative
 ), None, "a noun phrase and a comma before a command whose pronoun takes it up: a remark it names")
 ASIDE = Rule("sentence beside the command", _aside, (
-    Example("Good morning! Could you open the window?", "Good morning!", Tag.POLITE),
+    Example("Morning! Could you open the window?", "Morning!", Tag.POLITE),
     Example("Bogdan has a question; answer it for him", "Bogdan has a question;", Tag.POLITE),
     Example("see the man by the window? greet him", "see the man by the window?", Tag.POLITE),
     Example("on the sofa there's a blanket, bring it to me", "on the sofa there's a blanket,", Tag.POLITE),
