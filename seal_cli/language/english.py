@@ -46,6 +46,8 @@ POSSESSIVES = _closed_class("my your his her its our their")
 NP_OPENERS = DETERMINERS | POSSESSIVES
 """Words that open a noun phrase: a determiner or a possessive ("*the* cup", "*my* keys"). A verb's form right
 after one is a noun ("the *lights*", "my *drink*"); a noun phrase after a verb starts with one."""
+DEMONSTRATIVES = frozenset(["this", "that", "these", "those"])
+"""Demonstratives: a pronoun alone ("bring me *this*"), a determiner before a noun or "one" ("*this one*")."""
 PRONOUNS = _closed_class("it them him her me you us they he she yourself myself himself herself themselves",
                          "itself ourselves yourselves something someone somebody everything everyone everybody",
                          "anything anyone anybody nothing one ones this that those these")

@@ -411,11 +411,13 @@ def _stands_alone(words: Sequence[Word], j: int) -> bool:
         # relative clause of the noun before
     return after in (",", ".", "!", "?", ";", "please") or after in PREPOSITIONS or after in SEPARATOR_WORDS or \
         after in DIRECTIONS or after in BECAUSE or "'" in after and after.split("'")[0] in SUBJECTS or \
+        after == "so" and j + 2 < len(words) and words[j + 2].lower in SUBJECTS | {"that"} or \
         subject_contracted(words, j + 1) or \
         match_phrase(words, j + 1, SUBORDINATORS) > 0 or \
         match_phrase(words, j + 1, TIME_WORDS) > 0 or \
         longest_phrase(words, j + 1, DEGREE_PHRASES) > 0   # "turn it off *it's* too loud", "... *when*", "... *right
-    #                                                         away*"; "turn the heating on *a little*" (words31)
+    #                                                         away*"; "turn the heating on *a little*" (words31);
+    #                                                         "switch the fan on *so I* can sleep": a purpose
 
 
 def _result_words(library: Library) -> dict[str, tuple[str, str]]:

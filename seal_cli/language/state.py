@@ -689,8 +689,10 @@ class State:
         if low not in BECAUSE and not ("'" in low and low.split("'")[0] in SUBJECTS and
                                         "'" + low.split("'", 1)[1] in CONTRACTED) and \
                 not subject_contracted(self.words, i) and \
-                not (low == "so" and i + 1 < len(self.words) and self.words[i + 1].lower in SUBJECTS | {"that"}):
-            return 0, ()                 # "stir the porridge *so it doesn't burn*": a purpose, said beside (words31)
+                not (low == "so" and i + 1 < len(self.words) and (self.words[i + 1].lower in SUBJECTS | {"that"} or
+                                                                  self.words[i + 1].lower in NP_OPENERS)):
+            return 0, ()                 # "stir the porridge *so it doesn't burn*": a purpose, said beside (words31);
+            #                              "close the gate *so the dog can't get out*": its subject a noun phrase
         n, spans = self.remark_after(i - 1)
         return (n - 1, spans) if n else (0, ())
 
@@ -708,9 +710,11 @@ class State:
             if link and words[k].lower == "so" and words[k + 1].lower == "that" and k + 2 < len(words):
                 link = 2                 # "stir the porridge *so that it doesn't stick*": a purpose (words32)
             end = self.statement_at(k + link)
-            if not end and link == 2 and self.cond_end(k + 2) > k + 3 and words[k + 2].lower not in ("you", "we"):
-                end = self.cond_end(k + 2)       # "so that the room cools down": a clause, not the robot's step
-                #                                  ("so that you can give them to Alex" is one: its own clause)
+            purpose = link == 2 or link == 1 and words[k].lower == "so" and words[k + 1].lower in NP_OPENERS
+            if not end and purpose and self.cond_end(k + link) > k + link + 1 and \
+                    words[k + link].lower not in ("you", "we"):
+                end = self.cond_end(k + link)    # "so that the room cools down", "so the cat can't get out": a
+                #     clause, not the robot's step ("so that you can give them to Alex" is one: its own clause)
             if not end:
                 break
             spans.append((words[k].start, words[end - 1].end))

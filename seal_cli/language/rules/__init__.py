@@ -195,6 +195,7 @@ WORDS: tuple[Rule, ...] = (
     function_words.DETERMINER_IN_NP,
     function_words.TIME_WORD,
     function_words.FOR_A_TIME,
+    function_words.FLOATING_EACH,
     function_words.CLOCK_TIME,
     function_words.ONE,
     function_words.THAT_SAID,
