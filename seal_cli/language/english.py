@@ -610,6 +610,9 @@ stands for the last phrase said before them."""
 GREETINGS = frozenset(["hey", "hi", "hello", "ok", "okay", "yo", "oi", "oy", "hiya", "heya", "howdy"])
 """Words that greet or call someone ("*hey* Siri, ...", "*ok* robot ..."): a word after one of them, before the
 command, is the name of whom is addressed, whatever else it may mean ("hey *google*, turn on the lights")."""
+SPEECH_ACTS = GREETINGS | frozenset(["thank", "thanks", "cheers", "please", "good", "goodbye", "bye", "robot"])
+"""Words of a greeting, thanks or address: a command of politeness alone that has one ("thank you", "good morning,
+robot", "hello") asks nothing, refused at its start (words38), not as a verb missing at its end."""
 URGENT = frozenset(["now", "right now", "quick", "quickly", "asap", "fast", "hurry", "immediately", "right away",
                     "pronto", "please", "pls", "thanks", "thank you", "straight away", "at once"])
 """Words that ask for haste or say please, said as a phrase of their own in a command of bare phrases ("keys. hallway.

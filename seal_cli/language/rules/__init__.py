@@ -166,6 +166,7 @@ INSIDE: tuple[Rule, ...] = (
     clauses.COMMA_RELATIVE,
     clauses.VERB_AFTER_JOINT,
     requests.OBLIGED_AFTER_COMMA,
+    open_words.AND_PARTICIPLE,
     clauses.SEPARATOR,
     politeness.TAG_QUESTION,
     politeness.THANKS,

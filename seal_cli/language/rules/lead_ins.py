@@ -145,9 +145,22 @@ def _time_first(s: State, i: int) -> Match | None:
     words = s.words
     k = i + n + (1 if i + n < len(words) and words[i + n].lower == "," else 0)
     if k >= len(words) or not (s.verb_after(k) or s.asks_at(k) or words[k].lower == "i" and
-                               s.next_lower(k) in ("need", "want", "'d", "would")):
+                               s.next_lower(k) in ("need", "want", "'d", "would") or
+                               k > i + n and _verb_of_english(s, k)):
         return None
     return Match(k - i, (merge(words, i, k - i, Tag.POLITE, "time"),))
+
+
+def _verb_of_english(s: State, k: int) -> bool:
+    """Whether the word at ``k``, after a time said first and its comma, is a verb's base form no frame has, with an
+    object after it ("tomorrow morning, *wake* Priya up"): the clause's verb, refused there, not a thing asked for."""
+    words = s.words
+    low = words[k].lower
+    if k + 1 >= len(words) or not low.isalpha() or low in CLOSED or verb_lemma(low) != low or \
+            "verb" not in parts_of_speech(low):
+        return False
+    nxt = words[k + 1]
+    return nxt.lower in NP_OPENERS or nxt.lower in PRONOUNS or capitalised(nxt)
 
 
 def _subordinate(s: State, i: int) -> Match | None:
@@ -403,6 +416,7 @@ TIME_SAID_FIRST = Rule("a time said first", _time_first, (
     Example("every morning, open the curtains", "every morning,", Tag.POLITE),
     Example("three times a week, dust the shelves", "three times a week,", Tag.POLITE),
     Example("from now on, close the back door", "from now on,", Tag.POLITE),
+    Example("tonight, feed the cat", "tonight,", Tag.POLITE),     # a verb no frame has: refused at "feed"
 ), TIME_FIRST | TIME_FIRST_LEAD | frozenset(["this", "in", "at", "from"]) | CLOCK_PREPOSITIONS | FREQUENCY_LEADS |
     TIMES_SAID | frozenset(NUMBERS) | frozenset(str(n) for n in range(2, 13)),
     "a time before the verb ('in five minutes', 'tonight', 'after lunch'): when, kept as the frame's time")
