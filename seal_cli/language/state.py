@@ -1279,6 +1279,9 @@ class State:
             return None             # "take everything *that's in the sink*": an indefinite's relative clause
         if self.speech and not told_of and not described:
             return None             # "tell the man (that) ...": what is said
+        if low == "you" and "adv" in parts_of_speech(nxt) and nxt not in CLOSED and i + 2 < len(words) and \
+                verb_lemma(words[i + 2].lower) not in (None, words[i + 2].lower):
+            nxt = words[i + 2].lower                    # "the one you *just* brought": the verb after the adverb
         if low in NOMINATIVE or low == "you" and verb_lemma(nxt):
             end = self.relative_end(i + 1)
             return self.emit(i, end - i, "REL") if end > i + 1 else None
