@@ -34,6 +34,7 @@ from seal_cli.language.english import (
     BECAUSE,
     DEGREE_PHRASES,
     DIRECTIONS,
+    END_MARKS,
     FINITE,
     NOMINATIVE,
     NP_OPENERS,
@@ -321,7 +322,8 @@ class Lexicon:
                candidates: Iterable[tuple[str, ...]]) -> tuple[str, int, int] | None:
         """The split unit whose particle stands alone nearest after the verb: "switch the light *off* that I left
         on" is "switch off" (the last "on" is the relative clause's). One pass over the words."""
-        by_particle = _by_particle(tuple(candidates), self.stores)
+        candidates = tuple(candidates)
+        by_particle = _by_particle(candidates, self.stores)
         if not by_particle:
             return None
         for j in range(i + 2, stop):
@@ -333,7 +335,9 @@ class Lexicon:
                 if _stands_alone(words, j) and match_phrase(words, j - 1, TIME_WORDS) < 2 and \
                         self._split_fits(unit, words, i, j):  # not "right away"
                     return unit, 1, j
-        return None
+        if any(len(unit) == 1 for unit in candidates):
+            return None                          # "take the lid off the pot": "take" is a unit alone
+        return _particle_as_source(words, i, stop, by_particle)
 
     def _split_fits(self, unit: str, words: Sequence[Word], i: int, j: int) -> bool:
         """A split-only unit ("put on") holds around a thing its frame takes, with no place said between: "put the
@@ -376,6 +380,25 @@ def opens_before_object(words: Sequence[Word], i: int) -> bool:
 
 
 POLITE_WORDS = tuple(tuple(phrase.split()) for phrase in POLITE)
+
+
+_SOURCE_PARTICLES = frozenset(["off"])
+"""Particles of leaving that are also the preposition of a source ("the plates *off* the table")."""
+
+
+def _particle_as_source(words: Sequence[Word], i: int, stop: int,
+                        by_particle: dict[str, tuple[str, ...]]) -> tuple[str, int, None] | None:
+    """"*clear* the plates *off* the table": a verb that is a unit only with a particle of leaving ("clear off";
+    "clear" alone is none), its particle after the object and before a noun phrase, is that unit, and the particle
+    is also the preposition of where from (words38: refused at "clear"). The particle stays a preposition: the
+    place is the frame's source."""
+    for j in range(i + 2, min(stop, len(words) - 1)):
+        low = words[j].lower
+        if low in SEPARATOR_WORDS or low in END_MARKS or low == ",":
+            return None
+        if low in _SOURCE_PARTICLES and low in by_particle and words[j + 1].lower in NP_OPENERS:
+            return by_particle[low][0], 1, None
+    return None
 
 
 @lru_cache(maxsize=4096)
