@@ -418,6 +418,10 @@ question whether the thing was seen (an auxiliary of the past, a subject, a verb
 to find it (``WHERE_MEANS``); asked negatively too ("*haven't you seen* my glasses?"), and whether it can be
 seen ("*can you see* the cat anywhere?": where "can you" is no politeness before a verb of the library; "can you
 see the guest out" stays Guide's), words25."""
+PERCEIVING = frozenset(["see", "spot", "notice", "come across", "happen to see", "happen to spot"])
+"""Verbs of perceiving a thing by chance: in a condition ("*if you spot* my wallet, hand it to me", "if you come
+across my keys, ...") they say whether the thing is met, asking for no search (words38: a Find, or a Go to the keys
+for "come across"); "when you find it" is the robot's own step, as before."""
 LEFT_ASKED = (frozenset(["did", "have", "has", "didn't", "haven't", "hasn't"]),
               frozenset(["i", "you", "we", "he", "she", "they", "anyone", "anybody", "someone", "somebody"]),
               frozenset(["leave", "left"]))
