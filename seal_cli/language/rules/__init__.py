@@ -209,6 +209,7 @@ WORDS: tuple[Rule, ...] = (
     function_words.PARTICLE_BEFORE_OBJECT,
     function_words.FORM_FOR_FROM,
     function_words.PARTICLE_OF_NO_MOTION,
+    function_words.NEAREST,
     function_words.PREPOSITION,
     function_words.PARTICLE,
     function_words.WH,

@@ -298,6 +298,15 @@ def _preposition(s: State, i: int) -> Match | None:
     return s.emit(i, n, Tag.PREP if has_object else Tag.PARTICLE, prep)   # "pick it up", "... from"
 
 
+def _nearest(s: State, i: int) -> Match | None:
+    """"the chair *nearest* the window", "the one *nearer* the door": the comparative or superlative of "near" after a
+    noun and before a noun phrase's opener is a preposition, as "near" is ("nearest to" is one already; words38: the
+    window was a phrase no element took). Before a noun it stays an adjective ("the *nearest* chair")."""
+    if s.in_np() or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON) or s.next_lower(i) not in NP_OPENERS:
+        return None
+    return s.emit(i, 1, Tag.PREP, "near")
+
+
 _FROM_SLIP = "form"
 """"from" with two letters swapped that is also a word ("bring me the cup *form* the shelf"): the slips of function
 words never read a word the dictionary lists (:mod:`seal_cli.language.slips`), so this one is read by its place."""
@@ -438,6 +447,10 @@ CLOCK_TIME = Rule("clock time", _clock_time, (
     Example("bring me a cup at 5:30 from the kitchen", "at 5:30", Tag.PARTICLE),
     Example("meet Anna at 17.45 in the hall", "at 17.45", Tag.PARTICLE),
 ), CLOCK_PREPOSITIONS, "a time said with a number ('at three', 'in ten minutes')")
+NEAREST = Rule("nearest as a preposition", _nearest, (
+    Example("bring me the chair nearest the window", "nearest", Tag.PREP),
+    Example("wipe the bench nearer the gate", "nearer", Tag.PREP),
+), frozenset(["nearest", "nearer"]), "'nearest'/'nearer' after a noun, before a noun phrase: a preposition, 'near'")
 FLOATING_EACH = Rule("each after the object", _floating_each, (
     Example("give the twins a biscuit each", "each", ""),
     Example("hand Kim and Lou a towel each, please", "each", ""),
