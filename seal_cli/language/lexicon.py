@@ -319,7 +319,7 @@ class Lexicon:
         return found.pop() if len(found) == 1 else ""
 
     def _split(self, words: Sequence[Word], i: int, stop: int,
-               candidates: Iterable[tuple[str, ...]]) -> tuple[str, int, int] | None:
+               candidates: Iterable[tuple[str, ...]]) -> tuple[str, int, int | None] | None:
         """The split unit whose particle stands alone nearest after the verb: "switch the light *off* that I left
         on" is "switch off" (the last "on" is the relative clause's). One pass over the words."""
         candidates = tuple(candidates)

@@ -43,8 +43,8 @@ from seal_cli.language.stacking import infer_stack
 from seal_cli.language.state import CLOSED, State
 from seal_cli.language.steps import infer_left_in, infer_step
 from seal_cli.language.swallowed import Swallowed, swallowed
-from seal_cli.language.tags import Tag
 from seal_cli.language.syntax import NP, Syntax
+from seal_cli.language.tags import Tag
 from seal_cli.language.taskfields import reread
 from seal_cli.language.tasks import infer_task
 from seal_cli.language.unplaced import unplaced_error
