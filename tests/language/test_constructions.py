@@ -3606,3 +3606,18 @@ def test_a_particle_that_is_the_source_and_a_condition_of_perceiving(
     """"clear X off Y": "clear" is a unit only with "off", which is also where from (refused at "clear"); "if you
     spot/notice X" is whether X is met, no search ("when you find it" is the robot's step)."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("hand the toddler who is sobbing his blanket", [("Give", {"theme": "blanket", "recipient": "toddler"})]),
+    ("give the boy who is waiting his coat", [("Give", {"theme": "coat", "recipient": "boy"})]),
+    ("hand the man snoozing his paper", [("Give", {"theme": "paper", "recipient": "man"})]),
+    ("bring the man wearing a scarf his gloves", [("Bring", {"theme": "glove", "recipient": "man"})]),
+    ("bring the boy holding the kite", [("Guide", {"theme": "boy"})]),
+])
+def test_a_participle_mostly_said_without_an_object_leaves_it_to_a_verb_of_giving(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """After the first object of a verb that takes a recipient and a thing, a participle of a verb mostly said with no
+    object (WordNet's frames: sob, wait, snooze) leaves the noun phrase after it to the verb: the thing given (the
+    blanket was what the toddler sobbed, and Guide took him). "holding the kite" keeps its object."""
+    assert_reads(text, want, library)

@@ -27,6 +27,7 @@ from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import CLOSED, State, match_phrase
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
+from seal_cli.language.verb_objects import takes_object
 
 
 def _participle(s: State, i: int) -> Match | None:
@@ -34,9 +35,21 @@ def _participle(s: State, i: int) -> Match | None:
     gerund = gerund_lemma(low)
     if not gerund or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.BE, Tag.AND_VBG):
         return None
-    tag = Tag.VBG_T if s.np_starts(i + 1) and nxt not in PARTICLES else \
+    tag = Tag.VBG_T if s.np_starts(i + 1) and nxt not in PARTICLES and not _second_object(s, gerund) else \
         Tag.VBG_P if nxt in PREPOSITIONS and s.np_starts(i + 2) else Tag.VBG_I
     return s.emit(i, 1, tag, gerund)
+
+
+def _second_object(s: State, gerund: str) -> bool:
+    """Whether the noun phrase after a participle is the clause verb's second object, not the participle's: "bring
+    the kid who's *crying* his teddy", "give the boy *waiting* his coat" (words38: the teddy was the kid's crying and
+    Guide took the kid). The clause's verb takes a recipient and a thing (not a verb of saying), the participle
+    describes its first object, and its verb is mostly said with no object (:func:`~seal_cli.language.verb_objects.
+    takes_object`: people cry and wait, they wear and hold things)."""
+    if s.verb_index < 0 or str(s.out[s.verb_index].info) not in s.lexicon.recipients or \
+            str(s.out[s.verb_index].info) in s.lexicon.speech or takes_object(gerund):
+        return False
+    return all(w.tag in (Tag.DET, Tag.POSS, Tag.NUM, Tag.WORD) for w in s.out[s.verb_index + 1:])
 
 
 def _and_participle(s: State, i: int) -> Match | None:
@@ -220,6 +233,7 @@ PARTICIPLE = Rule("participle after a noun", _participle, (
     Example("find the person pointing to the left", "pointing", Tag.VBG_P),
     Example("find the person sitting", "sitting", Tag.VBG_I),
     Example("count the men standing and holding umbrellas", "holding", Tag.VBG_T),
+    Example("hand the man snoozing his paper", "snoozing", Tag.VBG_I),     # the paper is handed (words38)
 ), lambda low: bool(gerund_lemma(low)),
     "an -ing form after a noun, a pronoun or 'is': transitive, with a preposition, or bare")
 AND_PARTICIPLE = Rule("and between participles", _and_participle, (
