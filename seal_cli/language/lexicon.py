@@ -593,7 +593,8 @@ class Mention:
 
 def mentions(text: str, start: int, end: int) -> list[Mention]:
     """The noun phrases of ``text[start:end]``, a statement or condition that is no command: a determiner, a
-    possessive or a capitalised word, then open-class words; a name ends its phrase ("my friend *Ana* arrives")."""
+    possessive or a capitalised word, then open-class words; a name ends its phrase ("my friend *Ana* arrives"), a
+    subject pronoun too ("the book *I* was reading": a relative clause without "that", words38)."""
     try:
         words = tokenize(text[start:end])
     except CommandError:
@@ -616,6 +617,7 @@ def mentions(text: str, start: int, end: int) -> list[Mention]:
             continue
         first, k = k, k + 1 if determined or someone else k
         while k < len(words) and words[k].lower.replace("-", "").isalpha() and words[k].lower not in CLOSED and \
+                words[k].lower not in NOMINATIVE and \
                 words[k].lower not in FINITE and words[k].lower not in SEPARATOR_WORDS and \
                 words[k].lower not in RELAYING and \
                 words[k].lower not in SUB_FIRST and words[k].lower not in _SOMEWHERE and \

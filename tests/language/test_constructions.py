@@ -3621,3 +3621,10 @@ def test_a_participle_mostly_said_without_an_object_leaves_it_to_a_verb_of_givin
     object (WordNet's frames: sob, wait, snooze) leaves the noun phrase after it to the verb: the thing given (the
     blanket was what the toddler sobbed, and Guide took him). "holding the kite" keeps its object."""
     assert_reads(text, want, library)
+
+
+def test_a_phrase_said_first_with_a_relative_clause_without_that_is_what_it_stands_for(library: Library) -> None:
+    """"the scarf she knitted, put it ...": a subject pronoun ends the phrase a later pronoun takes up (its head was
+    "she", so "it" stood for nothing the scorer could find; words38)."""
+    assert frames("the scarf she knitted, put it in the drawer", library) == [
+        ("Place", {"theme": "scarf", "goal": "drawer"})]
