@@ -46,9 +46,10 @@ def _second_object(s: State, gerund: str) -> bool:
     Guide took the kid). The clause's verb takes a recipient and a thing (not a verb of saying), the participle
     describes its first object, and its verb is mostly said with no object (:func:`~seal_cli.language.verb_objects.
     takes_object`: people cry and wait, they wear and hold things)."""
-    if s.verb_index < 0 or str(s.out[s.verb_index].info) not in s.lexicon.recipients or \
-            str(s.out[s.verb_index].info) in s.lexicon.speech or takes_object(gerund):
-        return False
+    verb = s.out[s.verb_index] if s.verb_index >= 0 else None
+    if verb is None or verb.start == verb.end or str(verb.info) not in s.lexicon.recipients or \
+            str(verb.info) in s.lexicon.speech or takes_object(gerund):
+        return False                   # "the boy who is crying wants his teddy": an implied verb, the wish's
     return all(w.tag in (Tag.DET, Tag.POSS, Tag.NUM, Tag.WORD) for w in s.out[s.verb_index + 1:])
 
 
