@@ -46,6 +46,8 @@ POSSESSIVES = _closed_class("my your his her its our their")
 NP_OPENERS = DETERMINERS | POSSESSIVES
 """Words that open a noun phrase: a determiner or a possessive ("*the* cup", "*my* keys"). A verb's form right
 after one is a noun ("the *lights*", "my *drink*"); a noun phrase after a verb starts with one."""
+DEMONSTRATIVES = frozenset(["this", "that", "these", "those"])
+"""Demonstratives: a pronoun alone ("bring me *this*"), a determiner before a noun or "one" ("*this one*")."""
 PRONOUNS = _closed_class("it them him her me you us they he she yourself myself himself herself themselves",
                          "itself ourselves yourselves something someone somebody everything everyone everybody",
                          "anything anyone anybody nothing one ones this that those these")
@@ -145,6 +147,7 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                     "would you be good enough to", "could you be so kind as to", "do me a favor and",
                     "do me a favour and", "don't forget to", "do not forget to", "help me", "help me to", "help us",
                     "make sure you", "see that you", "hi", "hello", "hi there", "hello there", "hey there",
+                    *(f"good {part}" for part in ("morning", "afternoon", "evening", "night", "day")),
                     "excuse me", "maybe", "perhaps", "oh", "ah",
                     "could i ask you to", "can i ask you to", "may i ask you to", "might i ask you to",
                     "could i trouble you to", "can i trouble you to", "may i trouble you to",
@@ -327,6 +330,13 @@ not what, and are no part of a noun phrase."""
 PARTS_OF_DAY = frozenset(["morning", "afternoon", "evening", "night", "weekend"])
 """Parts of the day a time word names with "this", "tomorrow" or "tonight" before it ("*this afternoon*
 close the blinds", "*tomorrow morning*, wake me up")."""
+FREQUENCY_LEADS = frozenset(["every", "each"])
+"""Determiners of a time said as how often ("*every morning*, open the curtains", "*each* evening"): with a part
+of the day or a measure of time after them (``PARTS_OF_DAY``, ``TIME_UNITS``)."""
+TIMES_SAID = frozenset(["once", "twice", "thrice"])
+"""Adverbs of how many times ("*twice* a day"); a number before "times" says the same ("three times a week")."""
+RATE_WORDS = frozenset(["a", "an", "per", "every", "each"])
+"""Words between a number of times and its unit ("twice *a* day", "three times *per* week")."""
 TIME_FIRST_LEAD = frozenset(["after", "before", "until", "till", "by"])
 """Prepositions of a time said first with a bare noun ("*after lunch* clean the counter", "*before bed*, turn off
 the lights"): a time, no subordinate clause (no subject, no verb)."""
@@ -408,6 +418,10 @@ question whether the thing was seen (an auxiliary of the past, a subject, a verb
 to find it (``WHERE_MEANS``); asked negatively too ("*haven't you seen* my glasses?"), and whether it can be
 seen ("*can you see* the cat anywhere?": where "can you" is no politeness before a verb of the library; "can you
 see the guest out" stays Guide's), words25."""
+PERCEIVING = frozenset(["see", "spot", "notice", "come across", "happen to see", "happen to spot"])
+"""Verbs of perceiving a thing by chance: in a condition ("*if you spot* my wallet, hand it to me", "if you come
+across my keys, ...") they say whether the thing is met, asking for no search (words38: a Find, or a Go to the keys
+for "come across"); "when you find it" is the robot's own step, as before."""
 LEFT_ASKED = (frozenset(["did", "have", "has", "didn't", "haven't", "hasn't"]),
               frozenset(["i", "you", "we", "he", "she", "they", "anyone", "anybody", "someone", "somebody"]),
               frozenset(["leave", "left"]))
@@ -582,9 +596,14 @@ library. "don't forget to" is a reminder, a request to do it (``POLITE``)."""
 NOT_FORGOTTEN = frozenset(["forget", "fail"])
 """"don't *forget* ...", "don't *fail* to ...": a negated verb of omission asks for the deed (no prohibition)."""
 CANCELLATIONS = frozenset(["never mind", "nevermind", "forget about", "don't bother with", "don't bother about",
-                           "no need to", "there's no need to", "you don't need to", "you needn't"])
-"""What takes back something asked or expected ("*never mind* the lamp, turn on the fan", "*no need to* wash it"):
-the clause they open asks nothing."""
+                           "no need to", "there's no need to", "you don't need to", "you needn't",
+                           "cancel", "forget", "ignore", "disregard"])
+"""What takes back something asked or expected ("*never mind* the lamp, turn on the fan", "*no need to* wash it"),
+and the verbs of taking back ("*cancel* that, bring me a cup", "*forget* what I said, go to the garage",
+"*ignore* the dishes, ..."): the clause they open asks nothing."""
+HALTS = frozenset(["stop", "halt"])
+"""Verbs of halting: said with no object ("*stop*!", "*halt*, wait there") they ask the robot to stop what it
+does, a cancellation (``CANCELLATIONS``); with one ("stop the music") they are the verb of a frame."""
 CORRECTION_MARKS = frozenset(["no", "no wait", "wait", "no sorry", "sorry", "i mean", "sorry i mean",
                               "no i mean", "i meant", "sorry i meant", "or rather", "rather", "actually",
                               "no actually", "oops", "whoops", "correction", "make that", "no make that",
@@ -595,6 +614,9 @@ stands for the last phrase said before them."""
 GREETINGS = frozenset(["hey", "hi", "hello", "ok", "okay", "yo", "oi", "oy", "hiya", "heya", "howdy"])
 """Words that greet or call someone ("*hey* Siri, ...", "*ok* robot ..."): a word after one of them, before the
 command, is the name of whom is addressed, whatever else it may mean ("hey *google*, turn on the lights")."""
+SPEECH_ACTS = GREETINGS | frozenset(["thank", "thanks", "cheers", "please", "good", "goodbye", "bye", "robot"])
+"""Words of a greeting, thanks or address: a command of politeness alone that has one ("thank you", "good morning,
+robot", "hello") asks nothing, refused at its start (words38), not as a verb missing at its end."""
 URGENT = frozenset(["now", "right now", "quick", "quickly", "asap", "fast", "hurry", "immediately", "right away",
                     "pronto", "please", "pls", "thanks", "thank you", "straight away", "at once"])
 """Words that ask for haste or say please, said as a phrase of their own in a command of bare phrases ("keys. hallway.

@@ -34,6 +34,7 @@ from seal_cli.language.english import (
     BECAUSE,
     DEGREE_PHRASES,
     DIRECTIONS,
+    END_MARKS,
     FINITE,
     NOMINATIVE,
     NP_OPENERS,
@@ -318,10 +319,11 @@ class Lexicon:
         return found.pop() if len(found) == 1 else ""
 
     def _split(self, words: Sequence[Word], i: int, stop: int,
-               candidates: Iterable[tuple[str, ...]]) -> tuple[str, int, int] | None:
+               candidates: Iterable[tuple[str, ...]]) -> tuple[str, int, int | None] | None:
         """The split unit whose particle stands alone nearest after the verb: "switch the light *off* that I left
         on" is "switch off" (the last "on" is the relative clause's). One pass over the words."""
-        by_particle = _by_particle(tuple(candidates), self.stores)
+        candidates = tuple(candidates)
+        by_particle = _by_particle(candidates, self.stores)
         if not by_particle:
             return None
         for j in range(i + 2, stop):
@@ -333,7 +335,9 @@ class Lexicon:
                 if _stands_alone(words, j) and match_phrase(words, j - 1, TIME_WORDS) < 2 and \
                         self._split_fits(unit, words, i, j):  # not "right away"
                     return unit, 1, j
-        return None
+        if any(len(unit) == 1 for unit in candidates):
+            return None                          # "take the lid off the pot": "take" is a unit alone
+        return _particle_as_source(words, i, stop, by_particle)
 
     def _split_fits(self, unit: str, words: Sequence[Word], i: int, j: int) -> bool:
         """A split-only unit ("put on") holds around a thing its frame takes, with no place said between: "put the
@@ -378,6 +382,25 @@ def opens_before_object(words: Sequence[Word], i: int) -> bool:
 POLITE_WORDS = tuple(tuple(phrase.split()) for phrase in POLITE)
 
 
+_SOURCE_PARTICLES = frozenset(["off"])
+"""Particles of leaving that are also the preposition of a source ("the plates *off* the table")."""
+
+
+def _particle_as_source(words: Sequence[Word], i: int, stop: int,
+                        by_particle: dict[str, tuple[str, ...]]) -> tuple[str, int, None] | None:
+    """"*clear* the plates *off* the table": a verb that is a unit only with a particle of leaving ("clear off";
+    "clear" alone is none), its particle after the object and before a noun phrase, is that unit, and the particle
+    is also the preposition of where from (words38: refused at "clear"). The particle stays a preposition: the
+    place is the frame's source."""
+    for j in range(i + 2, min(stop, len(words) - 1)):
+        low = words[j].lower
+        if low in SEPARATOR_WORDS or low in END_MARKS or low == ",":
+            return None
+        if low in _SOURCE_PARTICLES and low in by_particle and words[j + 1].lower in NP_OPENERS:
+            return by_particle[low][0], 1, None
+    return None
+
+
 @lru_cache(maxsize=4096)
 def _by_particle(candidates: tuple[tuple[str, ...], ...], stores: frozenset[str]) -> dict[str, tuple[str, ...]]:
     """A verb's two-word particle units by their particle ("turn" → on: "turn on", off: "turn off"), in the
@@ -411,11 +434,13 @@ def _stands_alone(words: Sequence[Word], j: int) -> bool:
         # relative clause of the noun before
     return after in (",", ".", "!", "?", ";", "please") or after in PREPOSITIONS or after in SEPARATOR_WORDS or \
         after in DIRECTIONS or after in BECAUSE or "'" in after and after.split("'")[0] in SUBJECTS or \
+        after == "so" and j + 2 < len(words) and words[j + 2].lower in SUBJECTS | {"that"} or \
         subject_contracted(words, j + 1) or \
         match_phrase(words, j + 1, SUBORDINATORS) > 0 or \
         match_phrase(words, j + 1, TIME_WORDS) > 0 or \
         longest_phrase(words, j + 1, DEGREE_PHRASES) > 0   # "turn it off *it's* too loud", "... *when*", "... *right
-    #                                                         away*"; "turn the heating on *a little*" (words31)
+    #                                                         away*"; "turn the heating on *a little*" (words31);
+    #                                                         "switch the fan on *so I* can sleep": a purpose
 
 
 def _result_words(library: Library) -> dict[str, tuple[str, str]]:
@@ -568,7 +593,8 @@ class Mention:
 
 def mentions(text: str, start: int, end: int) -> list[Mention]:
     """The noun phrases of ``text[start:end]``, a statement or condition that is no command: a determiner, a
-    possessive or a capitalised word, then open-class words; a name ends its phrase ("my friend *Ana* arrives")."""
+    possessive or a capitalised word, then open-class words; a name ends its phrase ("my friend *Ana* arrives"), a
+    subject pronoun too ("the book *I* was reading": a relative clause without "that", words38)."""
     try:
         words = tokenize(text[start:end])
     except CommandError:
@@ -591,6 +617,7 @@ def mentions(text: str, start: int, end: int) -> list[Mention]:
             continue
         first, k = k, k + 1 if determined or someone else k
         while k < len(words) and words[k].lower.replace("-", "").isalpha() and words[k].lower not in CLOSED and \
+                words[k].lower not in NOMINATIVE and \
                 words[k].lower not in FINITE and words[k].lower not in SEPARATOR_WORDS and \
                 words[k].lower not in RELAYING and \
                 words[k].lower not in SUB_FIRST and words[k].lower not in _SOMEWHERE and \

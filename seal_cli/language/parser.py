@@ -29,7 +29,7 @@ from seal_cli.frames.library import Library
 from seal_cli.language.asked import thing_asked
 from seal_cli.language.clauses import Clauses
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import BE_WORDS, NP_OPENERS, NUMBERS, WH_WORDS
+from seal_cli.language.english import BE_WORDS, NP_OPENERS, NUMBERS, SPEECH_ACTS, WH_WORDS
 from seal_cli.language.evoking import Evoker
 from seal_cli.language.goals import infer_goal
 from seal_cli.language.lexicon import CommandError, Lexicon, Tagger, Word, tokenize
@@ -44,6 +44,7 @@ from seal_cli.language.state import CLOSED, State
 from seal_cli.language.steps import infer_left_in, infer_step
 from seal_cli.language.swallowed import Swallowed, swallowed
 from seal_cli.language.syntax import NP, Syntax
+from seal_cli.language.tags import Tag
 from seal_cli.language.taskfields import reread
 from seal_cli.language.tasks import infer_task
 from seal_cli.language.unplaced import unplaced_error
@@ -368,6 +369,11 @@ def _explain(error: Any, text: str, words: Sequence[Word], lexicon: Lexicon) -> 
         return CommandError(_unknown_verb(lexicon, word), column, text, ["a verb"])
     before = _word_before(words, words[token.start_pos].start if not at_end else len(text))
     after = f" after {before!r}" if before else ""
+    if wants_verb and at_end and all(w.tag in (Tag.POLITE, Tag.SEP, Tag.END) for w in words) and \
+            any(part in SPEECH_ACTS for w in words for part in w.lower.split()):
+        return CommandError(f"{text.strip()!r} asks nothing: a greeting, thanks or politeness alone is no "
+                            f"instruction; say what the robot should do (it can {_either(list(lexicon.can))})",
+                            _first_column(text), text, ["a verb"])
     if wants_verb:
         return CommandError(f"expected a verb{after}, such as {_some_verbs(lexicon)}", column, text, ["a verb"])
     if at_end:

@@ -181,8 +181,10 @@ class Reference:
         repeats the noun, not the thing: the phrase names another of the same kind, so it refers to no element."""
         if np.head is None or np.head.lower not in ("one", "ones") or not np.mods or np.pronoun is not None:
             return None
+        verbs = [w.start for w in self.words if w.tag == "VERB"]
         said = [m for m in mentions(self.text, 0, np.start) if not m.name and
-                m.head.lower() not in ("one", "ones") and m.head.lower() not in PRONOUNS]
+                m.head.lower() not in ("one", "ones") and m.head.lower() not in PRONOUNS and
+                not any(m.start <= v < m.end for v in verbs)]     # "open the other one": no noun "open"
         if np.head.lower == "ones":
             said = [m for m in said if is_plural(m.head.lower()) or plural_only(m.head.lower())]
         before = self.text[:np.start].split()

@@ -44,6 +44,7 @@ from seal_cli.language.english import (
     OBLIGED,
     PARTICLES,
     PATH_PREPOSITIONS,
+    PERCEIVING,
     POLITE,
     POLITE_FORMULAE,
     POSSESSIVES,
@@ -689,8 +690,10 @@ class State:
         if low not in BECAUSE and not ("'" in low and low.split("'")[0] in SUBJECTS and
                                         "'" + low.split("'", 1)[1] in CONTRACTED) and \
                 not subject_contracted(self.words, i) and \
-                not (low == "so" and i + 1 < len(self.words) and self.words[i + 1].lower in SUBJECTS | {"that"}):
-            return 0, ()                 # "stir the porridge *so it doesn't burn*": a purpose, said beside (words31)
+                not (low == "so" and i + 1 < len(self.words) and (self.words[i + 1].lower in SUBJECTS | {"that"} or
+                                                                  self.words[i + 1].lower in NP_OPENERS)):
+            return 0, ()                 # "stir the porridge *so it doesn't burn*": a purpose, said beside (words31);
+            #                              "close the gate *so the dog can't get out*": its subject a noun phrase
         n, spans = self.remark_after(i - 1)
         return (n - 1, spans) if n else (0, ())
 
@@ -708,9 +711,11 @@ class State:
             if link and words[k].lower == "so" and words[k + 1].lower == "that" and k + 2 < len(words):
                 link = 2                 # "stir the porridge *so that it doesn't stick*": a purpose (words32)
             end = self.statement_at(k + link)
-            if not end and link == 2 and self.cond_end(k + 2) > k + 3 and words[k + 2].lower not in ("you", "we"):
-                end = self.cond_end(k + 2)       # "so that the room cools down": a clause, not the robot's step
-                #                                  ("so that you can give them to Alex" is one: its own clause)
+            purpose = link == 2 or link == 1 and words[k].lower == "so" and words[k + 1].lower in NP_OPENERS
+            if not end and purpose and self.cond_end(k + link) > k + link + 1 and \
+                    words[k + link].lower not in ("you", "we"):
+                end = self.cond_end(k + link)    # "so that the room cools down", "so the cat can't get out": a
+                #     clause, not the robot's step ("so that you can give them to Alex" is one: its own clause)
             if not end:
                 break
             spans.append((words[k].start, words[end - 1].end))
@@ -1139,6 +1144,8 @@ class State:
                 return "then", arrived, "then"      # "when you get there", "once you arrive,": arrived where we went
             if left:
                 return "cond", left, sub            # "turn off the stove *before you leave*": when, no frame
+            if sub in ("if", "in case") and match_phrase(words, k, PERCEIVING) and self.cond_end(k) > k + 1:
+                return "cond", self.cond_end(k), sub    # "if you spot my wallet, ...": whether it is seen, no search
             if k < len(words) and (self.verb_at(k) is not None or self.verb_after(k)):
                 return "clause", k, sub
         state = j + 1 if subject in ("you're", "we're", "you've", "we've") else \
@@ -1275,6 +1282,9 @@ class State:
             return None             # "take everything *that's in the sink*": an indefinite's relative clause
         if self.speech and not told_of and not described:
             return None             # "tell the man (that) ...": what is said
+        if low == "you" and "adv" in parts_of_speech(nxt) and nxt not in CLOSED and i + 2 < len(words) and \
+                verb_lemma(words[i + 2].lower) not in (None, words[i + 2].lower):
+            nxt = words[i + 2].lower                    # "the one you *just* brought": the verb after the adverb
         if low in NOMINATIVE or low == "you" and verb_lemma(nxt):
             end = self.relative_end(i + 1)
             return self.emit(i, end - i, "REL") if end > i + 1 else None

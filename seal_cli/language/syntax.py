@@ -330,6 +330,8 @@ class Syntax(Transformer[Token, Command]):
             return
         end = first.end
         for item in postmod.items:
+            if isinstance(item, Word) and item.tag in ("VBG_T", "VBG_P", "VBG_I"):
+                first = item                   # "sitting and *wearing* red shirts": the next participle's
             if isinstance(item, NP):
                 np.inner.append(item)
                 if first.info in ("contain", "hold", "have", "carry"):

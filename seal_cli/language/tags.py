@@ -60,6 +60,7 @@ class Tag(str, metaclass=_Tags):
     THERE = "THERE"          # existential "there"
     HERE = "HERE"            # locative "here", "there", "where it belongs"
     AND_NP = "AND_NP"        # "and" between noun phrases
+    AND_VBG = "AND_VBG"      # "and" between two participles of one noun ("sitting *and* wearing a hat")
     COND = "COND"            # a condition on the world, kept whole
     REL = "REL"              # a relative clause kept whole
     SAID = "SAID"            # what is said after a verb of saying, kept whole

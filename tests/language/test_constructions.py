@@ -3520,3 +3520,111 @@ def test_thanks_a_verb_of_saying_says_are_told(
     """lead, stop 40: "please" / "thank you" after "say" is what is said, not the speaker's politeness (the message
     was "say")."""
     assert_reads(text, want, library)
+
+
+# words38: needs and states, deixis, time, purpose, several recipients, speech acts
+@pytest.mark.parametrize(("text", "want"), [
+    ("each evening, close the curtains in the lounge", [("Close", {"theme": "curtain"})]),
+    ("three times a week, dust the bookshelf", [("Clean", {"theme": "bookshelf"})]),
+    ("from now on, switch off the porch light at night", [("ToggleOff", {"theme": "light"})]),
+])
+def test_a_time_said_first_as_how_often(text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """"every"/"each" with a part of the day or a unit, a number of times and its rate, "from now on": when, no
+    thing asked for (it was refused at "every", or read as a verb "twice")."""
+    assert_reads(text, want, library)
+
+
+def test_a_time_said_first_before_a_verb_no_frame_has_is_refused_at_that_verb(library: Library) -> None:
+    text = "this afternoon, water the ferns"
+    with pytest.raises(CommandError) as caught:
+        parse_command(text, library)
+    assert caught.value.column == text.index("water") + 1          # not a Bring of "afternoon"
+
+
+@pytest.mark.parametrize("text", ["good evening, robot", "thank you", "hello there", "hi, robot"])
+def test_a_greeting_or_thanks_alone_asks_nothing(text: str, library: Library) -> None:
+    with pytest.raises(CommandError) as caught:
+        parse_command(text, library)
+    assert caught.value.column == 1 and "asks nothing" in str(caught.value)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("good afternoon, could you shut the garage door", [("Close", {"theme": "door"})]),
+    ("cancel that, put the bin by the gate", [("Place", {"theme": "bin", "goal": "gate"})]),
+    ("ignore the laundry, just fetch me my slippers", [("Bring", {"theme": "slipper", "recipient": "me"})]),
+    ("right, stop, wait by the car", [("Wait", {"ground": "car"})]),
+    ("stop the blender", [("ToggleOff", {"theme": "blender"})]),
+])
+def test_greetings_take_backs_and_halts_before_a_command(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """"good <part of the day>" greets; "cancel/forget/ignore X" takes X back; "stop" with no object halts: none is a
+    frame of its own ("stop" alone was a ToggleOff of nothing), and "stop X" still turns X off."""
+    assert_reads(text, want, library)
+    for alone in ("halt!", "forget it"):
+        with pytest.raises(CommandError) as caught:
+            parse_command(alone, library)
+        assert caught.value.column == 1
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("hand me that one", [("Give", {"theme": "one", "recipient": "me"})]),
+    ("wipe the other one", [("Clean", {"theme": "one"})]),
+    ("put the jug you just filled in the fridge", [("Place", {"theme": "jug", "goal": "fridge"})]),
+    ("shut the window so the rain can't get in", [("Close", {"theme": "window"})]),
+    ("switch the kettle on so I can make tea", [("ToggleOn", {"theme": "kettle"})]),
+    ("hand the twins a sandwich each", [("Give", {"theme": "sandwich", "recipient": "twin"})]),
+])
+def test_deixis_purpose_and_each_after_the_object(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """"this/that one" is a noun phrase (refused at "one"; "the other one" had the verb as its noun); an adverb in a
+    relative clause without "that"; "so" and a clause of its own subject is a purpose said beside; "each" floated
+    after the object says one each (all were refused)."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("count the kids standing and waving", [("Count", {"theme": "kid"})]),
+    ("find the man sitting and reading a newspaper", [("Find", {"theme": "man"})]),
+    ("follow the girl sitting and fetch me a spoon", [("Follow", {"theme": "girl"}),
+                                                       ("Bring", {"theme": "spoon", "recipient": "me"})]),
+])
+def test_two_participles_of_one_noun(text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """"and" between a bare participle and another describes the same people (the second was refused as a verb
+    no frame has); "and" before a verb's base form still starts a clause."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("clear the toys off the rug", [("Pick", {"theme": "toy", "source": "rug"})]),
+    ("take the cover off the sofa", [("Pick", {"theme": "cover", "source": "sofa"})]),
+    ("if you notice my umbrella, bring it to me", [("Bring", {"theme": "umbrella", "recipient": "me"})]),
+    ("when you find my umbrella, bring it to me", [("Find", {"theme": "umbrella"}),
+                                                   ("Bring", {"theme": "umbrella", "recipient": "me"})]),
+])
+def test_a_particle_that_is_the_source_and_a_condition_of_perceiving(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """"clear X off Y": "clear" is a unit only with "off", which is also where from (refused at "clear"); "if you
+    spot/notice X" is whether X is met, no search ("when you find it" is the robot's step)."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("hand the toddler who is sobbing his blanket", [("Give", {"theme": "blanket", "recipient": "toddler"})]),
+    ("give the boy who is waiting his coat", [("Give", {"theme": "coat", "recipient": "boy"})]),
+    ("hand the man snoozing his paper", [("Give", {"theme": "paper", "recipient": "man"})]),
+    ("bring the man wearing a scarf his gloves", [("Bring", {"theme": "glove", "recipient": "man"})]),
+    ("bring the boy holding the kite", [("Guide", {"theme": "boy"})]),
+])
+def test_a_participle_mostly_said_without_an_object_leaves_it_to_a_verb_of_giving(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """After the first object of a verb that takes a recipient and a thing, a participle of a verb mostly said with no
+    object (WordNet's frames: sob, wait, snooze) leaves the noun phrase after it to the verb: the thing given (the
+    blanket was what the toddler sobbed, and Guide took him). "holding the kite" keeps its object."""
+    assert_reads(text, want, library)
+
+
+def test_a_phrase_said_first_with_a_relative_clause_without_that_is_what_it_stands_for(library: Library) -> None:
+    """"the scarf she knitted, put it ...": a subject pronoun ends the phrase a later pronoun takes up (its head was
+    "she", so "it" stood for nothing the scorer could find; words38)."""
+    assert frames("the scarf she knitted, put it in the drawer", library) == [
+        ("Place", {"theme": "scarf", "goal": "drawer"})]

@@ -251,6 +251,7 @@ SUBORDINATE_INSIDE = Rule("subordinate clause", _subordinate, (
 ), SUB_FIRST | REL_FIRST, "a subordinate clause inside a clause: a condition, or a clause of the robot's own")
 RELATIVE = Rule("relative clause", _relative, (
     Example("bring me the glass that I was drinking from", "that I was drinking from", Tag.REL),
+    Example("put the cup you just washed on the shelf", "you just washed", Tag.REL),        # words38: an adverb
     Example("put the cup where it belongs", "where it belongs", Tag.HERE),
     Example("put the box that has a candle in it on the shelf", "that has", Tag.PREP),       # "with" (alfred23)
     Example("set down the tray which holds two cups on it", "which holds", Tag.PREP),

@@ -8,6 +8,7 @@ from seal_cli.language.asking import ASKING, IFS
 from seal_cli.language.english import (
     BE_WORDS,
     CLOCK_PREPOSITIONS,
+    DEMONSTRATIVES,
     DETERMINERS,
     END_MARKS,
     ENDS,
@@ -74,6 +75,8 @@ def _clock_time(s: State, i: int) -> Match | None:
 
 
 def _one(s: State, i: int) -> Match | None:
+    if s.out and s.prev_tag() == Tag.PRON and s.out[-1].lower in DEMONSTRATIVES and not s.in_np():
+        return Match(1, (s.words[i].tagged(Tag.WORD),), last=s.out[-1].tagged(Tag.DET))   # "bring me *this one*"
     if s.in_np() or s.prev_tag() not in (Tag.WORD, Tag.RESULT):
         return None
     k = len(s.out) - 1
@@ -295,6 +298,15 @@ def _preposition(s: State, i: int) -> Match | None:
     return s.emit(i, n, Tag.PREP if has_object else Tag.PARTICLE, prep)   # "pick it up", "... from"
 
 
+def _nearest(s: State, i: int) -> Match | None:
+    """"the chair *nearest* the window", "the one *nearer* the door": the comparative or superlative of "near" after a
+    noun and before a noun phrase's opener is a preposition, as "near" is ("nearest to" is one already; words38: the
+    window was a phrase no element took). Before a noun it stays an adjective ("the *nearest* chair")."""
+    if s.in_np() or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON) or s.next_lower(i) not in NP_OPENERS:
+        return None
+    return s.emit(i, 1, Tag.PREP, "near")
+
+
 _FROM_SLIP = "form"
 """"from" with two letters swapped that is also a word ("bring me the cup *form* the shelf"): the slips of function
 words never read a word the dictionary lists (:mod:`seal_cli.language.slips`), so this one is read by its place."""
@@ -401,6 +413,17 @@ def _pronoun(s: State, i: int) -> Match | None:
     return None if s.in_np() else s.emit(i, 1, Tag.PRON)
 
 
+def _floating_each(s: State, i: int) -> Match | None:
+    """"give Ana and Bo a cup *each*", "bring the kids an apple *each*": "each" after the object, before the end, a
+    comma, "and", "then" or "please", is English's floating quantifier: the people said get one each, as the
+    phrase's conjuncts already say; no determiner of a noun to come (words38: "the command ends too early")."""
+    nxt = s.next_lower(i)
+    if s.in_np() or s.prev_tag() not in (Tag.WORD, Tag.NAME) or \
+            not (i + 1 >= len(s.words) or nxt in (",", ";", "and", "then", "please") or nxt in END_MARKS):
+        return None
+    return Match(1)
+
+
 FLOATED = frozenset(["both", "all"])
 """Quantifiers said after a pronoun of several things ("put them *both* on the table")."""
 
@@ -424,8 +447,17 @@ CLOCK_TIME = Rule("clock time", _clock_time, (
     Example("bring me a cup at 5:30 from the kitchen", "at 5:30", Tag.PARTICLE),
     Example("meet Anna at 17.45 in the hall", "at 17.45", Tag.PARTICLE),
 ), CLOCK_PREPOSITIONS, "a time said with a number ('at three', 'in ten minutes')")
+NEAREST = Rule("nearest as a preposition", _nearest, (
+    Example("bring me the chair nearest the window", "nearest", Tag.PREP),
+    Example("wipe the bench nearer the gate", "nearer", Tag.PREP),
+), frozenset(["nearest", "nearer"]), "'nearest'/'nearer' after a noun, before a noun phrase: a preposition, 'near'")
+FLOATING_EACH = Rule("each after the object", _floating_each, (
+    Example("give the twins a biscuit each", "each", ""),
+    Example("hand Kim and Lou a towel each, please", "each", ""),
+), frozenset(["each"]), "'each' after the object, at the clause's end: the floating quantifier, said of the people")
 ONE = Rule("the red one", _one, (
     Example("bring me the red one", "one", Tag.WORD),
+    Example("put that one in the drawer", "one", Tag.WORD),
     Example("put the old batteries in the bin and bring me new ones", "ones", Tag.WORD),
 ), frozenset(["one", "ones"]), "'one' after adjectives after a determiner: a noun")
 THAT_SAID = Rule("that and what is said", _that_said, (

@@ -16,6 +16,7 @@ from seal_cli.language.english import (
     BEING_MEANS,
     CLOCK_PREPOSITIONS,
     END_MARKS,
+    FREQUENCY_LEADS,
     HAVING_FIRST,
     HAVING_MEANS,
     LOCATIVE,
@@ -26,11 +27,13 @@ from seal_cli.language.english import (
     PARTS_OF_DAY,
     PREPOSITIONS,
     PRONOUNS,
+    RATE_WORDS,
     SEPARATOR_WORDS,
     TIME_FIRST_LEAD,
     TIME_MEASURE,
     TIME_UNITS,
     TIME_WORDS,
+    TIMES_SAID,
 )
 from seal_cli.language.morphology import gerund_lemma, is_adverb, participles, parts_of_speech, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
@@ -83,6 +86,11 @@ def _time_said(s: State, i: int) -> int:
         return n
     if low == "this" and s.next_lower(i) in PARTS_OF_DAY:
         return 2                                                    # "this afternoon"
+    n = _how_often(s, i)
+    if n:
+        return n                                                    # "every morning", "twice a day"
+    if low == "from" and s.next_lower(i) == "now" and s.next_lower(i + 1) == "on":
+        return 3                                                    # "from now on"
     n = s.clock_time(i)
     if n:
         return n                                                    # "in five minutes", "at six"
@@ -104,6 +112,30 @@ def _time_said(s: State, i: int) -> int:
     return 0
 
 
+def _how_often(s: State, i: int) -> int:
+    """How many words a time said as how often takes at ``i`` (0: none): "every"/"each", a few words of
+    quantity and a part of the day or a unit ("*every morning*", "*every few minutes*"), or a number of times
+    and its rate ("*twice a day*", "*three times a week*", "*once every hour*")."""
+    words, low = s.words, s.words[i].lower
+    units = TIME_UNITS | PARTS_OF_DAY
+    k = i
+    if low in TIMES_SAID:
+        k = i + 1
+    elif (low in NUMBERS or low.isdigit()) and s.next_lower(i) == "times":
+        k = i + 2
+    if k > i:
+        if k + 1 < len(words) and words[k].lower in RATE_WORDS and words[k + 1].lower in units:
+            return k + 2 - i
+        return 0
+    if low in FREQUENCY_LEADS:
+        k = i + 1
+        while k < len(words) and (words[k].lower in TIME_MEASURE or words[k].lower in NUMBERS):
+            k += 1                                                  # "every few minutes", "every two hours"
+        if k < len(words) and words[k].lower in units:
+            return k + 1 - i
+    return 0
+
+
 def _time_first(s: State, i: int) -> Match | None:
     """A time said before the clause's verb ("*in five minutes* turn off the oven", "*tonight* close the
     curtains", "*after lunch*, clean the counter"): when, nothing to do; kept as the frame's time."""
@@ -113,9 +145,22 @@ def _time_first(s: State, i: int) -> Match | None:
     words = s.words
     k = i + n + (1 if i + n < len(words) and words[i + n].lower == "," else 0)
     if k >= len(words) or not (s.verb_after(k) or s.asks_at(k) or words[k].lower == "i" and
-                               s.next_lower(k) in ("need", "want", "'d", "would")):
+                               s.next_lower(k) in ("need", "want", "'d", "would") or
+                               k > i + n and _verb_of_english(s, k)):
         return None
     return Match(k - i, (merge(words, i, k - i, Tag.POLITE, "time"),))
+
+
+def _verb_of_english(s: State, k: int) -> bool:
+    """Whether the word at ``k``, after a time said first and its comma, is a verb's base form no frame has, with an
+    object after it ("tomorrow morning, *wake* Priya up"): the clause's verb, refused there, not a thing asked for."""
+    words = s.words
+    low = words[k].lower
+    if k + 1 >= len(words) or not low.isalpha() or low in CLOSED or verb_lemma(low) != low or \
+            "verb" not in parts_of_speech(low):
+        return False
+    nxt = words[k + 1]
+    return nxt.lower in NP_OPENERS or nxt.lower in PRONOUNS or capitalised(nxt)
 
 
 def _subordinate(s: State, i: int) -> Match | None:
@@ -368,7 +413,12 @@ TIME_SAID_FIRST = Rule("a time said first", _time_first, (
     Example("later on, bring me a coffee", "later on,", Tag.POLITE),
     Example("after lunch clean the kitchen counter", "after lunch", Tag.POLITE),
     Example("this afternoon open the windows", "this afternoon", Tag.POLITE),
-), TIME_FIRST | TIME_FIRST_LEAD | frozenset(["this", "in", "at"]) | CLOCK_PREPOSITIONS,
+    Example("every morning, open the curtains", "every morning,", Tag.POLITE),
+    Example("three times a week, dust the shelves", "three times a week,", Tag.POLITE),
+    Example("from now on, close the back door", "from now on,", Tag.POLITE),
+    Example("tonight, feed the cat", "tonight,", Tag.POLITE),     # a verb no frame has: refused at "feed"
+), TIME_FIRST | TIME_FIRST_LEAD | frozenset(["this", "in", "at", "from"]) | CLOCK_PREPOSITIONS | FREQUENCY_LEADS |
+    TIMES_SAID | frozenset(NUMBERS) | frozenset(str(n) for n in range(2, 13)),
     "a time before the verb ('in five minutes', 'tonight', 'after lunch'): when, kept as the frame's time")
 SUBORDINATE = Rule("subordinate clause first", _subordinate, (
     Example("If the door is open, close it", "If the door is open,", Tag.COND),

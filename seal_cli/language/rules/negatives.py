@@ -15,6 +15,7 @@ from seal_cli.language.english import (
     CANCELLATIONS,
     CORRECTION_MARKS,
     END_MARKS,
+    HALTS,
     MODALS,
     NOT_FORGOTTEN,
     NP_OPENERS,
@@ -43,6 +44,8 @@ def _negation(s: State, i: int) -> int:
     n = longest_phrase(words, i, CANCELLATIONS)
     if n:
         return n
+    if halted(words, i):
+        return 1                                 # "stop!", "okay stop, wait there": halt, no ToggleOff
     n = longest_phrase(words, i, PROHIBITIVES)
     if n:
         nxt = words[i + n].lower if i + n < len(words) else ""
@@ -60,6 +63,13 @@ def _negation(s: State, i: int) -> int:
 _NEGATIONS = PROHIBITIVES | CANCELLATIONS
 
 
+def halted(words: Sequence[Word], k: int) -> bool:
+    """Whether word ``k`` is a verb of halting said with no object ("*stop*", "*stop*, don't put that there",
+    "*stop*! wait there"): the robot asked to stop what it does, no frame of the library ("stop *the music*"
+    turns something off)."""
+    return words[k].lower in HALTS and (k + 1 >= len(words) or words[k + 1].lower in _CLAUSE_ENDS)
+
+
 def opens_prohibition(words: Sequence[Word], k: int) -> bool:
     """Whether the tagged word ``k`` opens a prohibition or a cancellation, as :func:`_negation` reads them: one of
     ``english.PROHIBITIVES`` or ``english.CANCELLATIONS`` (merged into one word by the rule that refuses it, "do
@@ -67,7 +77,7 @@ def opens_prohibition(words: Sequence[Word], k: int) -> bool:
     "... you" ("can you *not* slam the door"). The one source of the parser's message "asks the robot not to do
     something" (words29; the parser had its own word list)."""
     low = words[k].lower
-    if low in _NEGATIONS or longest_phrase(words, k, _NEGATIONS):
+    if low in _NEGATIONS or longest_phrase(words, k, _NEGATIONS) or halted(words, k):
         return True
     return low == "not" and k > 0 and words[k - 1].lower.split()[-1:] == ["you"]
 
@@ -121,7 +131,7 @@ def _prohibited_first(s: State, i: int) -> Match | None:
         return None
     words = s.words
     end = _prohibition_end(s, i + n)
-    if end <= i + n:
+    if end <= i + n and not halted(words, i):
         return None
     said = any(w.tag == Tag.VERB for w in s.out)
     if not said and not _command_after(s, end):
@@ -253,7 +263,9 @@ PROHIBITED_FIRST = Rule("a prohibition, then the command", _prohibited_first, (
     Example("could you not bang the door, just shut it", "bang", ""),
     Example("can you not bang the door", "not", Tag.WORD),
     Example("never leave the door open", "never", Tag.WORD),
-), first_words(_NEGATIONS) | {"not"},
+    Example("okay stop, wait in the hall", "stop", ""),
+    Example("stop!", "stop", Tag.WORD),
+), first_words(_NEGATIONS) | HALTS | {"not"},
     "a clause said negatively before the command asks nothing: a remark; alone, an error")
 DENIED_FIRST = Rule("a phrase denied, then the command", _denied_first, (
     Example("not the blue cup, bring me the red one", "blue", ""),

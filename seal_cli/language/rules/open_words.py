@@ -27,16 +27,41 @@ from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import CLOSED, State, match_phrase
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
+from seal_cli.language.verb_objects import takes_object
 
 
 def _participle(s: State, i: int) -> Match | None:
     low, nxt = s.words[i].lower, s.next_lower(i)
     gerund = gerund_lemma(low)
-    if not gerund or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.BE):
+    if not gerund or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.BE, Tag.AND_VBG):
         return None
-    tag = Tag.VBG_T if s.np_starts(i + 1) and nxt not in PARTICLES else \
+    tag = Tag.VBG_T if s.np_starts(i + 1) and nxt not in PARTICLES and not _second_object(s, gerund) else \
         Tag.VBG_P if nxt in PREPOSITIONS and s.np_starts(i + 2) else Tag.VBG_I
     return s.emit(i, 1, tag, gerund)
+
+
+def _second_object(s: State, gerund: str) -> bool:
+    """Whether the noun phrase after a participle is the clause verb's second object, not the participle's: "bring
+    the kid who's *crying* his teddy", "give the boy *waiting* his coat" (words38: the teddy was the kid's crying and
+    Guide took the kid). The clause's verb takes a recipient and a thing (not a verb of saying), the participle
+    describes its first object, and its verb is mostly said with no object (:func:`~seal_cli.language.verb_objects.
+    takes_object`: people cry and wait, they wear and hold things)."""
+    verb = s.out[s.verb_index] if s.verb_index >= 0 else None
+    if verb is None or verb.start == verb.end or str(verb.info) not in s.lexicon.recipients or \
+            str(verb.info) in s.lexicon.speech or takes_object(gerund):
+        return False                   # "the boy who is crying wants his teddy": an implied verb, the wish's
+    return all(w.tag in (Tag.DET, Tag.POSS, Tag.NUM, Tag.WORD) for w in s.out[s.verb_index + 1:])
+
+
+def _and_participle(s: State, i: int) -> Match | None:
+    """"the people sitting *and* wearing red shirts", "the man standing *and* waving": "and" between two
+    participles of one noun (words38: the second was read as a clause of its own and refused). The first is a
+    bare participle (after an object, "and" could join the object's own: the grammar stays LALR(1)), and an -ing
+    form follows."""
+    nxt = s.next_lower(i)
+    if not nxt or gerund_lemma(nxt) in (None, nxt):
+        return None                                               # "sitting and *bring* me ...": a verb's base form
+    return s.emit(i, 1, Tag.AND_VBG) if s.prev_tag() == Tag.VBG_I else None
 
 
 def _noun_modifier(s: State, i: int) -> bool:
@@ -208,8 +233,14 @@ PARTICIPLE = Rule("participle after a noun", _participle, (
     Example("find the person wearing a red blouse", "wearing", Tag.VBG_T),
     Example("find the person pointing to the left", "pointing", Tag.VBG_P),
     Example("find the person sitting", "sitting", Tag.VBG_I),
+    Example("count the men standing and holding umbrellas", "holding", Tag.VBG_T),
+    Example("hand the man snoozing his paper", "snoozing", Tag.VBG_I),     # the paper is handed (words38)
 ), lambda low: bool(gerund_lemma(low)),
     "an -ing form after a noun, a pronoun or 'is': transitive, with a preposition, or bare")
+AND_PARTICIPLE = Rule("and between participles", _and_participle, (
+    Example("count the people sitting and wearing hats", "and", Tag.AND_VBG),
+    Example("find the girl standing and talking on the phone", "and", Tag.AND_VBG),
+), frozenset(["and"]), "'and' between two participles that describe one noun: the second describes it too")
 FILLED_WITH = Rule("participle before with", _filled_with, (
     Example("put a bowl filled with water in the cabinet", "filled", ""),
 ), lambda low: low.endswith("ed"), "a past participle between a noun and 'with': what the thing holds, as 'with'")

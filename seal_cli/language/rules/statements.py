@@ -4,7 +4,7 @@ words of address and statements after the request ("..., dear, I'm cold"), a cla
 
 from __future__ import annotations
 
-from seal_cli.language.english import BECAUSE, FINITE, LET_KNOW, SUBJECTS, WH_WORDS
+from seal_cli.language.english import BECAUSE, FINITE, LET_KNOW, NP_OPENERS, SUBJECTS, WH_WORDS
 from seal_cli.language.morphology import verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import CLOSED, State, subject_contracted, subject_word
@@ -53,7 +53,8 @@ def _remark_unmarked(s: State, i: int) -> Match | None:
     low = s.words[i].lower
     if s.expect_verb or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.PARTICLE, Tag.LABEL, Tag.HERE) or \
             not (low in BECAUSE or "'" in low or subject_contracted(s.words, i) or
-                 low == "so" and i + 1 < len(s.words) and s.words[i + 1].lower in SUBJECTS):
+                 low == "so" and i + 1 < len(s.words) and (s.words[i + 1].lower in SUBJECTS or
+                                                           s.words[i + 1].lower in NP_OPENERS)):
         return None
     n, spans = s.remark_unmarked(i)
     return Match(n, remarks=spans) if n else None                 # "give the ball to Lily cos she wants it"
@@ -85,7 +86,7 @@ DISLOCATED = Rule("phrase said first, taken up by a pronoun", _dislocated, (
     Example("whoever's at the door, greet them", "whoever's at the door,", Tag.POLITE),    # a free relative
 ), None, "a noun phrase and a comma before a command whose pronoun takes it up: a remark it names")
 ASIDE = Rule("sentence beside the command", _aside, (
-    Example("Good morning! Could you open the window?", "Good morning!", Tag.POLITE),
+    Example("Morning! Could you open the window?", "Morning!", Tag.POLITE),
     Example("Bogdan has a question; answer it for him", "Bogdan has a question;", Tag.POLITE),
     Example("see the man by the window? greet him", "see the man by the window?", Tag.POLITE),
     Example("on the sofa there's a blanket, bring it to me", "on the sofa there's a blanket,", Tag.POLITE),
@@ -108,8 +109,10 @@ REMARK_UNMARKED = Rule("remark without a comma", _remark_unmarked, (
     Example("stir the soup so it doesn't stick", "so", ""),             # words31: purpose, "so" and a subject
     Example("stir the custard so that it doesn't go lumpy", "so", ""),   # words32: "so that" and a subject
     Example("warm up my tea it's gone cold", "it", ""),                 # words36: "it" and "'s" written apart
+    Example("shut the gate so the dog can't get out", "so", ""),       # words38: "so" and a noun phrase subject
 ), lambda low: low in BECAUSE or "'" in low or low == "so" or low in SUBJECTS,
-    "'because', a subject contraction, or 'so' and a subject pronoun after the request starts a statement")
+    "'because', a subject contraction, or 'so' and a subject (a pronoun or a noun phrase) after the request starts a "
+    "statement")
 REMARK_AFTER = Rule("remark after a comma", _remark_after, (
     Example("close the door, dear, I'm cold", "dear", ""),
 ), frozenset([",", ";"]), "words of address and statements after a comma ending the request")
