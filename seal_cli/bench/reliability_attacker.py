@@ -1612,3 +1612,15 @@ def hostile28_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
     yield Case("A bench parse with a read-only TMPDIR", corpus,
                (("c.jsonl", f"{{{go}, {expect}}}\n".encode()), ("t", "ro-dir")), codes=(0,), keep=("c.jsonl",),
                env=(("TMPDIR", "t"),), says=r"frames 1\.000", timeout=120)
+    # -- the second batch: class names no terminal shows, in priors and vocabularies ----------------------------------
+    yield Case("A validate of priors whose class holds a NUL", ("validate", "m.yaml"),
+               (("m.yaml", b'name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {name: hall, box: [0, 0, 10, 10]}\n'
+                           b'priors:\n  "cu\\0p": {hall: 1.0}\n'),), codes=(1,), keep=("m.yaml",),
+               says=r"m\.yaml:6:3: .*class")
+    yield Case("A parse with a vocabulary class holding an escape sequence",
+               ("parse", "find the cup", "--vocabulary", "v.yaml", "--json"), (("v.yaml", b'- "cu\\e[31mp"\n- mug\n'),),
+               codes=(1,), keep=("v.yaml",), says=r"v\.yaml:1:\d+: ")
+    yield Case("A run with a vocabulary synonym holding a right-to-left override",
+               ("run", "go to the sofa", "--map", "studio", "--particles", "20", "--vocabulary", "v.yaml"),
+               (("v.yaml", b'- {class: mug, synonyms: ["be\\u202eaker"]}\n'),), codes=(1,), keep=("v.yaml",),
+               says=r"v\.yaml:1:\d+: ")
