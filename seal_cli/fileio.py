@@ -629,6 +629,10 @@ def signals_wait() -> Iterator[None]:
         _release_signals(held)
 
 
+_STOPPED: list[int] = [0]
+"""The signal (SIGTERM, SIGHUP) that asked this command to stop before its outputs were in place, 0 if none."""
+
+
 def clean_up_on_signals() -> None:
     """Make SIGTERM and SIGHUP end this process as SIGINT does, by an exception, so that every
     ``with`` block unwinds and our temporaries are removed (``timeout`` and CI send SIGTERM).
@@ -637,12 +641,15 @@ def clean_up_on_signals() -> None:
     ended with exit code 129 when the terminal closed, its outputs unwritten: hostile25), as Python leaves SIGINT
     ignored in a shell's background job."""
     main = os.getpid()
+    _STOPPED[0] = 0  # a command run before in this process (the API, tests) was stopped: not this one
 
     def stop(number: int, _frame: Any) -> None:
         if os.getpid() != main:
             signal.signal(number, signal.SIG_DFL)
             os.kill(os.getpid(), number)
             return
+        if not committed():
+            _STOPPED[0] = number  # noted: a SystemExit raised where a library swallows it still ends the command
         remove_temporaries()
         raise SystemExit(0 if committed() else 128 + number)  # after the outputs are in place: the work is done
 
@@ -829,11 +836,14 @@ class Outputs:
         """Move every temporary onto its target (devices are written in place). SIGINT, SIGTERM and SIGHUP wait
         while the outputs move and until that is recorded (:func:`committed`): one arriving then ends the command
         with the outputs whole and in place, never with them written by a command that says it failed. An
-        interrupt noted before but never raised (dropped where Python could not raise it) stops it here: the
-        outputs of an interrupted command are not written."""
+        interrupt noted before but never raised (dropped where Python could not raise it) stops it here, and so does
+        a SIGTERM or SIGHUP whose ``SystemExit`` was dropped: the outputs of an interrupted command are not written."""
         if interrupted():
             self.discard()
             raise KeyboardInterrupt
+        if _STOPPED[0]:  # SIGTERM's SystemExit dropped on its way (the whole bench, hostile28: exit 0, outputs written)
+            self.discard()
+            raise SystemExit(128 + _STOPPED[0])
         self._check_unread()
         held = _hold_signals()
         try:  # devices first: a write onto one can fail (/dev/full), a rename in place hardly; a device that failed

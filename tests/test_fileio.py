@@ -632,3 +632,14 @@ def test_a_deleted_working_folder_is_named_for_a_relative_name(tmp_path: Path, m
     with Outputs({"--png": tmp_path / "o.png"}, suffixes={"--png": (".png",)}) as plan:
         plan["--png"].write_bytes(b"x")
     assert (tmp_path / "o.png").read_bytes() == b"x"
+
+
+def test_a_stop_whose_exit_was_dropped_still_writes_nothing(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # the whole bench (hostile28): "A signal 15 while run --png --rrd writes its temporary" ended 0 with both outputs
+    # written, one run in three at a load of 25; SIGTERM's SystemExit is now noted, as SIGINT is, and checked here
+    from seal_cli import fileio
+
+    monkeypatch.setattr(fileio, "_STOPPED", [15])
+    with pytest.raises(SystemExit) as ended, fileio.Outputs({"--png": tmp_path / "o.png"}) as plan:
+        plan["--png"].write_bytes(b"x")
+    assert ended.value.code == 143 and list(tmp_path.iterdir()) == []
