@@ -26,6 +26,7 @@ from collections.abc import Iterator
 import numpy as np
 
 from seal_cli.bench.reliability import FRAME, FRAME_YAML, Case, hostile_setting
+from seal_cli.bench.reliability_outsider import ALFRED_ROW
 
 __all__ = ["alfred2d_data", "attacker_cases", "chain_library", "hostile14_cases", "hostile15_cases", "hostile16_cases",
            "hostile17_cases", "hostile18_cases", "hostile19_cases", "hostile20_cases", "hostile21_cases",
@@ -320,7 +321,7 @@ def hostile14_cases() -> Iterator[Case]:
         "m.yaml"), both, codes=(1,), keep=inputs, says=r"writes JSONL or JSON files")
     yield Case("A bench parse: a second corpus's constants nested too deeply, before any is scored",
                ("bench", "parse", "--corpus", "g.jsonl", "--corpus", "c.tsv", "--constants", "k.json"),
-               (("g.jsonl", b'{"command": "stir the cup"}\n'), ("c.tsv", b"put the cup in the sink\tx\n"),
+               (("g.jsonl", b'{"text": "stir the cup", "expect": [{"frame": "Stir"}]}\n'), ("c.tsv", ALFRED_ROW),
                 ("k.json", b"[" * 100_000 + b"]" * 100_000)), codes=(1,),
                says=r"\A(?![\s\S]*scoring)[\s\S]*k\.json: .*nested too deeply")
     known = np.full((5_000, 5_000), 254, dtype=np.uint8)  # a fully known image: free, walls round it and across
