@@ -148,6 +148,25 @@ def stdin_hint(name: str) -> str:
             if name == "-" else "")
 
 
+def cwd_gone() -> bool:
+    """Whether the working folder has been deleted (``os.getcwd`` fails): a relative name then names nothing."""
+    try:
+        os.getcwd()
+    except FileNotFoundError:
+        return True
+    return False
+
+
+def gone_cwd_hint(path: str | Path) -> str:
+    """What to add to a failure to find or write ``path`` when it is relative and the working folder has been
+    deleted under seal's caller (``cd d; rm -r ../d; seal map m --png o.png`` said only "cannot write the output:
+    No such file or directory", hostile28)."""
+    if Path(path).is_absolute() or not cwd_gone():
+        return ""
+    return (" (the working folder has been deleted, and a relative name is read from it: give an absolute path, or "
+            "run seal from a folder that exists)")
+
+
 def _regular(path: Path, what: str) -> os.stat_result:
     """The file's status if it is a regular file; else a SealError saying what it is (missing, a folder, a
     FIFO, ...), which :func:`read_bytes` and :func:`stream_lines` both refuse."""
@@ -155,7 +174,7 @@ def _regular(path: Path, what: str) -> os.stat_result:
     try:
         info = path.stat()
     except FileNotFoundError:
-        raise SealError(f"no such {what}{stdin_hint(str(path))}", where) from None
+        raise SealError(f"no such {what}{stdin_hint(str(path))}{gone_cwd_hint(path)}", where) from None
     except OSError as exc:
         raise SealError(f"cannot read this {what}: {exc.strerror}", where) from None
     if stat.S_ISDIR(info.st_mode):
@@ -387,13 +406,45 @@ def read_yaml(path: str | Path, max_values: int | None = None, what: str = "file
         raise yaml_problem(exc, text, str(path)) from None
 
 
+_LONE_SURROGATE = re.compile(r"\\u[dD][89abAB][0-9a-fA-F]{2}(?!\\u[dD][c-fC-F])"
+                             r"|(?<!\\u[dD][89abAB][0-9a-fA-F]{2})\\u[dD][c-fC-F][0-9a-fA-F]{2}")
+"""A JSON escape of half a character: a high surrogate not followed by a low one, or a low one alone."""
+
+
+def _halves(value: Any) -> bool:
+    """Whether a decoded JSON value holds a string with a lone surrogate (JSON's ``"\\ud800"``)."""
+    if isinstance(value, str):
+        return any("\ud800" <= c <= "\udfff" for c in value)
+    if isinstance(value, dict):
+        return any(_halves(k) or _halves(v) for k, v in value.items())
+    if isinstance(value, list):
+        return any(_halves(v) for v in value)
+    return False
+
+
+def check_whole_characters(value: Any, text: str, path: str | Path, line: int = 1) -> Any:
+    """``value``, decoded from the JSON ``text``, or a SealError at the escape that is half a character: Python's
+    ``json`` decodes ``"\\ud800"`` to a lone surrogate, which no UTF-8 can hold, so the first write of it (a
+    scorer handing it to ``seal parse``, a JSON output) failed with a UnicodeEncodeError (hostile28)."""
+    if "\\u" not in text or not _halves(value):
+        return value
+    found = _LONE_SURROGATE.search(text)
+    start = found.start() if found else 0
+    before = text.rfind("\n", 0, start)
+    number = line + text.count("\n", 0, start)
+    shown = text[before + 1:].split("\n", 1)[0]
+    raise SealError(f"{found.group() if found else 'an escape'} is half a character (a lone surrogate, which UTF-8 "
+                    "cannot hold): write the character itself, or both halves of its pair",
+                    Where(str(path), number, start - before), source_line=shown)
+
+
 def read_json(path: str | Path, what: str = "JSON file") -> Any:
     """A JSON file's value; a file that is not JSON is a SealError at its line and column."""
     import json
 
     text = read_text(path)
     try:
-        return json.loads(text)
+        return check_whole_characters(json.loads(text), text, path)
     except json.JSONDecodeError as exc:
         lines = text.split("\n")
         source = lines[exc.lineno - 1] if exc.lineno <= len(lines) else None
@@ -442,7 +493,7 @@ def read_json_lines(path: str | Path) -> list[Any]:
         if not line.strip():
             continue
         try:
-            values.append(json.loads(line))
+            values.append(check_whole_characters(json.loads(line), line, path, number))
         except json.JSONDecodeError as exc:
             raise SealError(f"not JSON: {exc.msg}", Where(str(path), number, exc.colno), source_line=line) from None
         except RecursionError:
@@ -578,6 +629,10 @@ def signals_wait() -> Iterator[None]:
         _release_signals(held)
 
 
+_STOPPED: list[int] = [0]
+"""The signal (SIGTERM, SIGHUP) that asked this command to stop before its outputs were in place, 0 if none."""
+
+
 def clean_up_on_signals() -> None:
     """Make SIGTERM and SIGHUP end this process as SIGINT does, by an exception, so that every
     ``with`` block unwinds and our temporaries are removed (``timeout`` and CI send SIGTERM).
@@ -586,12 +641,15 @@ def clean_up_on_signals() -> None:
     ended with exit code 129 when the terminal closed, its outputs unwritten: hostile25), as Python leaves SIGINT
     ignored in a shell's background job."""
     main = os.getpid()
+    _STOPPED[0] = 0  # a command run before in this process (the API, tests) was stopped: not this one
 
     def stop(number: int, _frame: Any) -> None:
         if os.getpid() != main:
             signal.signal(number, signal.SIG_DFL)
             os.kill(os.getpid(), number)
             return
+        if not committed():
+            _STOPPED[0] = number  # noted: a SystemExit raised where a library swallows it still ends the command
         remove_temporaries()
         raise SystemExit(0 if committed() else 128 + number)  # after the outputs are in place: the work is done
 
@@ -701,6 +759,10 @@ class Outputs:
                 kind = "folder" if folders and option in folders else "file"
                 raise SealError(f"{option} {str(value)!r}: seal writes this output into a {kind}, not to standard "
                                 f"output; give a {kind} name")
+            if gone_cwd_hint(value):
+                raise SealError(f"cannot write {option} {shown_path(value)}: the working folder has been deleted, and "
+                                "a relative name is read from it: give an absolute path, or run seal from a folder "
+                                "that exists")
             if folders and option in folders:
                 folder = _folder(Path(value), option)
                 self._folders[option] = folder
@@ -774,11 +836,14 @@ class Outputs:
         """Move every temporary onto its target (devices are written in place). SIGINT, SIGTERM and SIGHUP wait
         while the outputs move and until that is recorded (:func:`committed`): one arriving then ends the command
         with the outputs whole and in place, never with them written by a command that says it failed. An
-        interrupt noted before but never raised (dropped where Python could not raise it) stops it here: the
-        outputs of an interrupted command are not written."""
+        interrupt noted before but never raised (dropped where Python could not raise it) stops it here, and so does
+        a SIGTERM or SIGHUP whose ``SystemExit`` was dropped: the outputs of an interrupted command are not written."""
         if interrupted():
             self.discard()
             raise KeyboardInterrupt
+        if _STOPPED[0]:  # SIGTERM's SystemExit dropped on its way (the whole bench, hostile28: exit 0, outputs written)
+            self.discard()
+            raise SystemExit(128 + _STOPPED[0])
         self._check_unread()
         held = _hold_signals()
         try:  # devices first: a write onto one can fail (/dev/full), a rename in place hardly; a device that failed

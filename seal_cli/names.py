@@ -47,15 +47,18 @@ REORDERING = {"LRE", "RLE", "LRO", "RLO", "PDF", "LRI", "RLI", "FSI", "PDI"}
 non-joiner belongs in Persian words, a zero-width joiner in emoji."""
 
 
-def check_shown(name: str, what: str, where: Where | None = None) -> str:
+def check_shown(name: str, what: str, where: Where | None = None, *, allowed: str = "") -> str:
     """``name`` itself, or a problem at ``where`` if it holds a character no terminal line or picture shows as itself
     (:data:`UNSHOWN`, :data:`REORDERING`). A map's own name is never said in a command (so it may hold symbols and
     punctuation), but it is the first word of ``seal map``, a picture's title and the JSON's ``map``: a map named
     ``"m\\0x"`` or ``"m\\u202Eeman"`` (YAML's escapes) validated, its NUL drawn as a missing glyph, its override
-    reversing the rest of the terminal's line (hostile27)."""
+    reversing the rest of the terminal's line (hostile27). ``allowed``: characters a longer text may hold all the same
+    (a frame's description: its line breaks and tabs)."""
     import unicodedata
 
     for character in name:
+        if character in allowed:
+            continue
         kind = unicodedata.category(character)
         if kind in UNSHOWN or unicodedata.bidirectional(character) in REORDERING:
             called = unicodedata.name(character, "")

@@ -68,5 +68,7 @@ def map_path(name: str) -> Path:
         from seal_cli.fileio import stdin_hint
 
         raise SealError(f"-: no such map file{stdin_hint(name)}")
-    raise SealError(f"{name}: no such map file, nor a map shipped with seal"
+    from seal_cli.fileio import gone_cwd_hint
+
+    raise SealError(f"{name}: no such map file{gone_cwd_hint(name)}, nor a map shipped with seal"
                     f"{f' (did you mean {close[0]!r}?)' if close else ''}; shipped maps: {', '.join(names)}")

@@ -587,3 +587,59 @@ def test_a_work_folder_carries_the_process_id_and_a_dead_one_s_is_swept(tmp_path
     assert not dead.exists()
     other = work_folder(tmp_path / "g.mcap")    # this process's own are live: never swept
     assert mine.exists() and other != mine
+
+
+@pytest.mark.parametrize(("text", "column"), [('{"a": "x\\ud800"}', 9), ('{"a": ["\\udc80"]}', 9),
+                                              ('{"\\ud800": 1}', 3), ('{"a": "\\ud83d"}', 8)])
+def test_a_json_escape_of_half_a_character_is_refused_at_its_column(tmp_path: Path, text: str, column: int) -> None:
+    # hostile28: json decodes "\ud800" to a lone surrogate, which failed at its first write (UnicodeEncodeError)
+    from seal_cli.fileio import read_json, read_json_lines
+
+    path = tmp_path / "f.json"
+    path.write_text(text + "\n", encoding="utf-8")
+    with pytest.raises(SealError, match="is half a character") as caught:
+        read_json(path)
+    assert (caught.value.where.line, caught.value.where.column) == (1, column)
+    path.write_text('{"a": 1}\n\n' + text + "\n", encoding="utf-8")
+    with pytest.raises(SealError, match="lone surrogate") as caught:
+        read_json_lines(path)
+    assert (caught.value.where.line, caught.value.where.column) == (3, column)
+
+
+def test_whole_characters_written_as_escapes_or_pairs_pass(tmp_path: Path) -> None:
+    from seal_cli.fileio import read_json
+
+    path = tmp_path / "f.json"
+    path.write_text('{"a": "\\ud83d\\ude00 caf\\u00e9", "b": "\\\\ud800 is text"}', encoding="utf-8")
+    assert read_json(path) == {"a": "😀 café", "b": "\\ud800 is text"}
+
+
+def test_a_deleted_working_folder_is_named_for_a_relative_name(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # hostile28: "cannot write the output: No such file or directory", "c.txt: no such file"
+    from seal_cli.fileio import Outputs, cwd_gone, gone_cwd_hint
+
+    gone = tmp_path / "gone"
+    gone.mkdir()
+    monkeypatch.chdir(gone)
+    assert not cwd_gone() and gone_cwd_hint("c.txt") == ""
+    gone.rmdir()
+    assert cwd_gone() and "working folder has been deleted" in gone_cwd_hint("c.txt")
+    assert gone_cwd_hint(tmp_path / "c.txt") == ""     # an absolute name names what it always named
+    with pytest.raises(SealError, match=r"^c\.txt: no such file \(the working folder has been deleted"):
+        read_text("c.txt")
+    with pytest.raises(SealError, match=r"cannot write --png o\.png: the working folder has been deleted"):
+        Outputs({"--png": "o.png"}, suffixes={"--png": (".png",)})
+    with Outputs({"--png": tmp_path / "o.png"}, suffixes={"--png": (".png",)}) as plan:
+        plan["--png"].write_bytes(b"x")
+    assert (tmp_path / "o.png").read_bytes() == b"x"
+
+
+def test_a_stop_whose_exit_was_dropped_still_writes_nothing(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # the whole bench (hostile28): "A signal 15 while run --png --rrd writes its temporary" ended 0 with both outputs
+    # written, one run in three at a load of 25; SIGTERM's SystemExit is now noted, as SIGINT is, and checked here
+    from seal_cli import fileio
+
+    monkeypatch.setattr(fileio, "_STOPPED", [15])
+    with pytest.raises(SystemExit) as ended, fileio.Outputs({"--png": tmp_path / "o.png"}) as plan:
+        plan["--png"].write_bytes(b"x")
+    assert ended.value.code == 143 and list(tmp_path.iterdir()) == []

@@ -158,3 +158,12 @@ def test_a_map_named_with_what_cannot_be_shown_is_refused_at_its_name(tmp_path: 
     problems = getattr(caught.value, "problems", None) or [caught.value]
     assert [(p.line, p.column) for p in problems] == [(1, 7)]
     assert problems[0].message.startswith(f"map name 'm{character}x' holds '{character}'")
+
+
+def test_a_longer_text_may_keep_the_characters_it_allows() -> None:
+    # a frame's description keeps its line breaks and tabs; an escape sequence stays refused in it (hostile28)
+    assert check_shown("one\n\ttwo", "description", allowed="\n\t") == "one\n\ttwo"
+    with pytest.raises(SealError, match=r"holds '\\x1b' \(U\+001B\), a control character"):
+        check_shown("a \x1b[31m red", "description", allowed="\n\t")
+    with pytest.raises(SealError, match=r"holds '\\n'"):
+        check_shown("one\ntwo", "map name")

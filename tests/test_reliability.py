@@ -269,3 +269,18 @@ def test_a_case_s_folder_vanishes_once_the_command_writes_into_it(monkeypatch: p
     kept = judge.run_case(judge.Case("a folder never written into", (), (("d", "dir"),), codes=(0,),
                                      vanish=("d", r"never"), timeout=30))
     assert kept.code == 1
+
+
+def test_the_judge_counts_what_a_case_must_not_say(tmp_path: Path) -> None:
+    # Case.unsaid (hostile28): a Python warning naming seal's source, on a run that succeeded
+    said = Case("said", ("parse", "go to the kitchen"), codes=(0,), says=r"Go", unsaid=r"Go")
+    assert [p.split(":")[0] for p in run_case(said).problems] == ["message"]
+    assert run_case(Case("quiet", ("parse", "go to the kitchen"), codes=(0,), says=r"Go", unsaid=r"Warning: ")
+                    ).problems == []
+
+
+def test_the_judge_can_run_a_command_in_a_deleted_working_folder() -> None:
+    # Case.remove_cwd (hostile28): `cd d; rm -r ../d; seal ...`
+    case = Case("gone", ("parse", "--file", "c.txt"), (("d", "dir"),), codes=(1,), cwd="d", remove_cwd=True,
+                says=r"working folder has been deleted")
+    assert run_case(case).problems == []

@@ -145,6 +145,12 @@ class Case:
     """(folder, pattern): remove that folder of the case's files, with all it holds, once a file whose name matches
     the pattern is in it (the command's temporary output, while it is being written): a folder deleted under a
     running command."""
+    unsaid: str | None = None
+    """A pattern the command's messages must *not* hold, whatever it ends with (a Python warning naming seal's
+    source, ``UserWarning: Tight layout not applied``, where the case unsets the suite's ``PYTHONWARNINGS``)."""
+    remove_cwd: bool = False
+    """Remove the working folder (``cwd``, an empty folder of the case's files) just before seal starts in it:
+    ``cd d; rm -r ../d; seal ...``, a relative name then names nothing (hostile28)."""
 
 
 @dataclass
@@ -259,10 +265,11 @@ def _one(case: Case, folder: Path) -> tuple[int | None, bytes, bytes, float]:
     env = {name: value for name, value in env.items() if value != "<unset>"}
     start = time.perf_counter()
     argv = [*_seal(), *(a.replace("\x00", "\x01") for a in case.argv)]  # no shell can pass a NUL in an argument
-    if STREAMS[case.stream] or case.file_blocks or case.ignored:
+    if STREAMS[case.stream] or case.file_blocks or case.ignored or case.remove_cwd:
         limit = f"ulimit -f {case.file_blocks}; " if case.file_blocks else ""  # POSIX sh: 512-byte blocks
         trap = f"trap '' {' '.join(str(n) for n in case.ignored)}; " if case.ignored else ""
-        argv = ["/bin/sh", "-c", f'{limit}{trap}exec "$@" {STREAMS[case.stream]}', "sh", *argv]
+        gone = 'rmdir "$PWD" && ' if case.remove_cwd else ""
+        argv = ["/bin/sh", "-c", f'{limit}{trap}{gone}exec "$@" {STREAMS[case.stream]}', "sh", *argv]
     piped = case.stdin is not None or case.stream == "open-stdin"
     if case.stream == "nonblocking-stdout":
         return _nonblocking(case, argv, folder, env, start)
@@ -478,6 +485,8 @@ def _run_case(case: Case) -> Outcome:
         elif case.says is not None and (code in (1, 2) or (code == 0 and case.codes == (0,))) \
                 and not re.search(case.says, said):
             outcome.problems.append(f"message: what it said does not match {case.says!r}: {said[-300:]}")
+        if case.unsaid is not None and re.search(case.unsaid, said):
+            outcome.problems.append(f"message: what it said holds {case.unsaid!r}: {said[-300:]}")
         for key, digest in kept.items():
             if _digest(folder / key) != digest:
                 outcome.problems.append(f"lost: input {key} changed or vanished")

@@ -26,11 +26,12 @@ from collections.abc import Iterator
 import numpy as np
 
 from seal_cli.bench.reliability import FRAME, FRAME_YAML, Case, hostile_setting
+from seal_cli.bench.reliability_outsider import ALFRED_ROW
 
 __all__ = ["alfred2d_data", "attacker_cases", "chain_library", "hostile14_cases", "hostile15_cases", "hostile16_cases",
            "hostile17_cases", "hostile18_cases", "hostile19_cases", "hostile20_cases", "hostile21_cases",
            "hostile22_cases", "hostile23_cases", "hostile24_cases", "hostile25_cases", "hostile26_cases",
-           "hostile27_cases", "rgba_png", "sparse_pgm", "split_house"]
+           "hostile27_cases", "hostile28_cases", "rgba_png", "sparse_pgm", "split_house"]
 
 DIGITS = "1" * 5_000
 """An integer longer than Python converts from text (4,300 digits)."""
@@ -296,6 +297,7 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield from hostile25_cases()
     yield from hostile26_cases()
     yield from hostile27_cases()
+    yield from hostile28_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -319,7 +321,7 @@ def hostile14_cases() -> Iterator[Case]:
         "m.yaml"), both, codes=(1,), keep=inputs, says=r"writes JSONL or JSON files")
     yield Case("A bench parse: a second corpus's constants nested too deeply, before any is scored",
                ("bench", "parse", "--corpus", "g.jsonl", "--corpus", "c.tsv", "--constants", "k.json"),
-               (("g.jsonl", b'{"command": "stir the cup"}\n'), ("c.tsv", b"put the cup in the sink\tx\n"),
+               (("g.jsonl", b'{"text": "stir the cup", "expect": [{"frame": "Stir"}]}\n'), ("c.tsv", ALFRED_ROW),
                 ("k.json", b"[" * 100_000 + b"]" * 100_000)), codes=(1,),
                says=r"\A(?![\s\S]*scoring)[\s\S]*k\.json: .*nested too deeply")
     known = np.full((5_000, 5_000), 254, dtype=np.uint8)  # a fully known image: free, walls round it and across
@@ -1490,3 +1492,136 @@ def hostile27_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
     yield Case("A run to find a thing whose priors sum to zero", ("run", "find the mug", "--map", "m.yaml",
                                                                   "--particles", "20"),
                (("m.yaml", zero),), codes=(1,), keep=("m.yaml",), says=r"not done: no mug found")
+
+
+def _long_names() -> bytes:
+    """A map whose rooms, places and classes have names of 96 to 100 characters (the most a name may have)."""
+    room, thing, person = "w" * 99, "a" * 98, "p" * 100
+    return (f"name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {{name: {room}, box: [0, 0, 5, 10]}}\n"
+            f"  - {{name: b{room}, box: [5, 0, 10, 10]}}\nplaces:\n"
+            f"  - {{name: {thing}_1, class: {thing}, at: [2, 5]}}\n"
+            f"  - {{name: {thing}_2, class: {thing}, at: [7, 5]}}\npeople:\n  - {{name: {person}, at: [3, 3]}}\n"
+            f"priors:\n  cup: {{{room}: 1.0}}\n").encode()
+
+
+def _frame_described(description: str) -> bytes:
+    """A ``.frame`` file of one frame whose description is ``description`` (DSL escapes as written)."""
+    return (f'frame Whisk "whisk" {{\n  description "{description}"\n  theme: object\n'
+            "  do navigate(theme)\n  ensures whisked(theme)\n}\n").encode()
+
+
+def hostile28_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read top to bottom
+    """Round hostile28: ``bench parse`` corpora the shared scorers cannot read (fields missing or of another type,
+    NaN, 1e999, a lone surrogate, a BOM and CRLF, an ALFRED table short of columns, constants that are numbers, a
+    device), a map's priors naming a room it lacks under ``bench tasks``, every kind of command run in a working
+    folder deleted under it, a frame description holding a lone surrogate, an escape sequence or an override, an
+    unclosed frame at the end of its file, names of 100 characters drawn in a picture, a read-only ``TMPDIR``."""
+    corpus = ("bench", "parse", "--corpus", "c.jsonl")
+    go = '"text": "go to the kitchen"'
+    expect = '"expect": [{"frame": "Go", "elements": {"goal": "kitchen"}}]'
+    # -- bench parse: what the scorer reads, at its line ---------------------------------------------------------------
+    yield Case("A bench parse --corpus whose line says nothing to score by", corpus,
+               (("c.jsonl", f"{{{go}}}\n".encode()),), codes=(1,), keep=("c.jsonl",), says=r"c\.jsonl:1:\d+: .*expect")
+    yield Case("A bench parse --corpus of a GPSR command without its fills", corpus,
+               (("c.jsonl", f'{{{go}, "command_types": ["goToLoc"]}}\n'.encode()),), codes=(1,), keep=("c.jsonl",),
+               says=r"c\.jsonl:1:\d+: .*'fills'")
+    yield Case("A bench parse --corpus whose expected frame has no name", corpus,
+               (("c.jsonl", f'{{{go}, "expect": [{{"elements": {{}}}}]}}\n'.encode()),), codes=(1,),
+               keep=("c.jsonl",), says=r"c\.jsonl:1:\d+: .*'frame'")
+    yield Case("A bench parse --corpus whose element is 1e999", corpus,
+               (("c.jsonl", f'{{{go}, "expect": [{{"frame": "Go", "elements": {{"goal": 1e999}}}}]}}\n'.encode()),),
+               codes=(1,), keep=("c.jsonl",), says=r"c\.jsonl:1:\d+: .*goal")
+    yield Case("A bench parse --corpus whose second text is NaN", corpus,
+               (("c.jsonl", f'{{{go}, {expect}}}\n{{"text": NaN, {expect}}}\n'.encode()),), codes=(1,),
+               keep=("c.jsonl",), says=r"c\.jsonl:2:\d+: .*'text'")
+    yield Case("A bench parse --corpus whose text holds a lone surrogate", corpus,
+               (("c.jsonl", f'{{"text": "go to the kitchen\\ud800", {expect}}}\n'.encode()),), codes=(1,),
+               keep=("c.jsonl",), says=r"c\.jsonl:1:\d+: .*surrogate")
+    yield Case("A bench parse --corpus with a BOM and CRLF line ends", corpus,
+               (("c.jsonl", f"\ufeff{{{go}, {expect}}}\r\n".encode()),), codes=(0,), keep=("c.jsonl",),
+               says=r"frames 1\.000", timeout=120)
+    yield Case("A bench parse --corpus of GPSR templates the scorer does not know", corpus,
+               (("c.jsonl", f'{{{go}, "command_types": ["flyToMoon"], "fills": []}}\n'.encode()),), codes=(1,),
+               keep=("c.jsonl",), says=r"c\.jsonl: .*(scored none|no command)", timeout=120)
+    table = "task_type\tobject\treceptacle\tmrecep\tsliced\tgoal_sentence\n"
+    yield Case("A bench parse --corpus of an ALFRED table without its task columns",
+               ("bench", "parse", "--corpus", "g.tsv"), (("g.tsv", b"goal_sentence\ngo to the kitchen\n"),),
+               codes=(1,), keep=("g.tsv",), says=r"g\.tsv:1:\d+: .*'task_type'")
+    yield Case("A bench parse --corpus of an ALFRED row short of columns", ("bench", "parse", "--corpus", "g.tsv"),
+               (("g.tsv", (table + "pick_and_place_simple\tApple\n").encode()),), codes=(1,), keep=("g.tsv",),
+               says=r"g\.tsv:2:\d+: .*'goal_sentence'")
+    yield Case("A bench parse --constants whose OBJECTS holds a number",
+               ("bench", "parse", "--corpus", "g.tsv", "--constants", "k.json"),
+               (("g.tsv", (table + "pick_and_place_simple\tApple\tFridge\t\t0\tput an apple in the fridge\n").encode()),
+                ("k.json", b'{"OBJECTS": ["Apple", 5, "Fridge"]}\n')), codes=(1,), keep=("g.tsv", "k.json"),
+               says=r"k\.json: .*OBJECTS")
+    yield Case("A bench parse --corpus that is /dev/null", ("bench", "parse", "--corpus", "/dev/null"), codes=(1,),
+               says=r"/dev/null: .*character device")
+    # -- bench tasks: a map's priors naming a room it lacks -----------------------------------------------------------
+    lacking = (b"name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {name: hall, box: [0, 0, 10, 10]}\n"
+               b"priors:\n  cup: {garage: 1.0}\n")
+    yield Case("A bench tasks --map whose priors name a room it lacks",
+               ("bench", "tasks", "--suite", "map", "--map", "m.yaml", "--command", "find the cup", "--policies",
+                "sefm", "--particles", "20", "--layouts", "1"), (("m.yaml", lacking),), codes=(1,),
+               keep=("m.yaml",), says=r"m\.yaml:6:\d+: ")
+    # -- a working folder deleted under the command ------------------------------------------------------------------
+    gone = {"files": (("d", "dir"),), "cwd": "d", "remove_cwd": True}
+    yield Case("A map --png in a deleted working folder", ("map", "apartment", "--png", "o.png"), codes=(1,),
+               says=r"--png o\.png.*working folder", **gone)  # type: ignore[arg-type]
+    yield Case("A run --rrd in a deleted working folder", ("run", "go to the kitchen", "--map", "apartment",
+                                                           "--particles", "20", "--rrd", "o.rrd"), codes=(1,),
+               says=r"--rrd o\.rrd.*working folder", **gone)  # type: ignore[arg-type]
+    yield Case("A localize --goals in a deleted working folder",
+               ("localize", "--map", "apartment", "--steps", "1", "--particles", "20", "--task", "go to the kitchen",
+                "--goals", "g.yaml"), codes=(1,), says=r"--goals g\.yaml.*working folder", **gone)  # type: ignore[arg-type]
+    yield Case("A parse --file in a deleted working folder", ("parse", "--file", "c.txt"), codes=(1,),
+               says=r"c\.txt: .*working folder", **gone)  # type: ignore[arg-type]
+    yield Case("A validate in a deleted working folder", ("validate", "m.yaml"), codes=(1,),
+               says=r"m\.yaml.*working folder", **gone)  # type: ignore[arg-type]
+    yield Case("A map of a relative map file in a deleted working folder", ("map", "m.yaml"), codes=(1,),
+               says=r"m\.yaml: no such map file.*working folder", **gone)  # type: ignore[arg-type]
+    yield Case("A plan on a shipped map in a deleted working folder", ("plan", "go to the kitchen", "--map",
+                                                                       "apartment"), codes=(0,),
+               says=r"Go +goal=kitchen", **gone)  # type: ignore[arg-type]
+    # -- a frame's description: what no terminal shows ----------------------------------------------------------------
+    described = ("frames", "--framelib", "+d.frame", "--json")
+    yield Case("A frames --json of a description holding a lone surrogate", described,
+               (("d.frame", _frame_described("a \\udc80 b")),), codes=(1,), keep=("d.frame",),
+               says=r"d\.frame:\d+:\d+: .*description")
+    yield Case("A frames --json of a description holding an escape sequence", described,
+               (("d.frame", _frame_described("a \\u001b[31m red")),), codes=(1,), keep=("d.frame",),
+               says=r"d\.frame:\d+:\d+: .*description")
+    yield Case("A validate of a YAML frame whose description holds a right-to-left override",
+               ("validate", "d.yaml"),
+               (("d.yaml", b'frames:\n  - frame: Whisk\n    description: "a \\u202e b"\n'
+                           b'    lexical_units: [whisk]\n'),),
+               codes=(1,), keep=("d.yaml",), says=r"d\.yaml:\d+:\d+: .*description")
+    yield Case("A validate of a frame file that ends inside its last frame", ("validate", "u.frame"),
+               (("u.frame", b'frame Whisk "whisk" {\n  theme: object\n  do navigate(theme)\n'),), codes=(1,),
+               keep=("u.frame",), says=r"u\.frame:\d+:\d+: .*not closed")
+    # -- names of 100 characters in a picture ------------------------------------------------------------------------
+    loud = (("PYTHONWARNINGS", "<unset>"),)
+    yield Case("A run --png on a map of 100-character names", ("run", f"go to the {'a' * 98}", "--map", "m.yaml",
+                                                               "--particles", "20", "--png", "o.png"),
+               (("m.yaml", _long_names()),), codes=(0,), keep=("m.yaml",), whole=("o.png",), env=loud,
+               unsaid=r"Warning", says=r"done: Go")
+    yield Case("A localize --png on a map of 100-character names",
+               ("localize", "--map", "m.yaml", "--steps", "1", "--particles", "20", "--task", "find the cup",
+                "--png", "o.png"), (("m.yaml", _long_names()),), codes=(0,), keep=("m.yaml",), whole=("o.png",),
+               env=loud, unsaid=r"Warning", says=r"(?s).")
+    # -- a read-only TMPDIR -------------------------------------------------------------------------------------------
+    yield Case("A bench parse with a read-only TMPDIR", corpus,
+               (("c.jsonl", f"{{{go}, {expect}}}\n".encode()), ("t", "ro-dir")), codes=(0,), keep=("c.jsonl",),
+               env=(("TMPDIR", "t"),), says=r"frames 1\.000", timeout=120)
+    # -- the second batch: class names no terminal shows, in priors and vocabularies ----------------------------------
+    yield Case("A validate of priors whose class holds a NUL", ("validate", "m.yaml"),
+               (("m.yaml", b'name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {name: hall, box: [0, 0, 10, 10]}\n'
+                           b'priors:\n  "cu\\0p": {hall: 1.0}\n'),), codes=(1,), keep=("m.yaml",),
+               says=r"m\.yaml:6:3: .*class")
+    yield Case("A parse with a vocabulary class holding an escape sequence",
+               ("parse", "find the cup", "--vocabulary", "v.yaml", "--json"), (("v.yaml", b'- "cu\\e[31mp"\n- mug\n'),),
+               codes=(1,), keep=("v.yaml",), says=r"v\.yaml:1:\d+: ")
+    yield Case("A run with a vocabulary synonym holding a right-to-left override",
+               ("run", "go to the sofa", "--map", "studio", "--particles", "20", "--vocabulary", "v.yaml"),
+               (("v.yaml", b'- {class: mug, synonyms: ["be\\u202eaker"]}\n'),), codes=(1,), keep=("v.yaml",),
+               says=r"v\.yaml:1:\d+: ")

@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -16,6 +17,7 @@ from seal_cli.cli.parse_view import _escape, print_parse, summary
 from seal_cli.errors import SealError, Where
 
 if TYPE_CHECKING:
+    from seal_cli.frames.library import Library
     from seal_cli.language.grounding import Vocabulary
 
 VocabularyOption = typer.Option(None, "--vocabulary", help="YAML list of object classes (each a name or "
@@ -109,10 +111,9 @@ def parse(
 # seal bench parse
 
 
-def _alfred_vocabulary(constants: Path) -> Vocabulary:
-    """The classes of ALFRED's constants as a vocabulary (what the scorer grounds in)."""
+def _alfred_classes(constants: Path) -> list[str]:
+    """The classes of ALFRED's constants (what the scorer grounds in)."""
     from seal_cli.fileio import read_json
-    from seal_cli.language.grounding import Vocabulary
 
     raw = read_json(constants, "ALFRED constants file")
     try:
@@ -121,7 +122,11 @@ def _alfred_vocabulary(constants: Path) -> Vocabulary:
             raise TypeError(f"OBJECTS is {type(classes).__name__}, not a list")
     except (KeyError, TypeError) as error:
         raise SealError(f"cannot read the ALFRED constants' OBJECTS: {error}", Where(str(constants))) from None
-    return Vocabulary.of([str(c) for c in classes])
+    wrong = next((c for c in classes if not isinstance(c, str) or not c.strip()), None)
+    if wrong is not None or not classes:  # the scorer writes each as a YAML list item: 5 was read as a number
+        raise SealError("the ALFRED constants' OBJECTS " + ("is empty" if not classes else f"holds {wrong!r}, not "
+                        "a class name") + ": it lists ALFRED's object classes as strings", Where(str(constants)))
+    return classes
 
 
 def _shared() -> Path:
@@ -144,8 +149,6 @@ def bench_parse(
     parse each corpus in process: commands per CPU-second, clauses swallowed into an element
     (refused by the parser, or left silently), states a question asks dropped silently, and phrases of a
     clause no frame element takes (refused, or left silently; the target of each is zero)."""
-    from seal_cli.bench.parsing import commands_of, measure
-    from seal_cli.fileio import read_json_lines
     from seal_cli.frames.reading import load_library
 
     library = load_library()
@@ -156,35 +159,57 @@ def bench_parse(
     if constants is not None and not any(path.suffix == ".tsv" for path in corpora):  # passed over before (hostile20)
         raise SealError(f"--constants {constants}: the ALFRED constants are read for ALFRED goals (a .tsv --corpus), "
                         "and no --corpus given is one")
+    with tempfile.TemporaryDirectory(prefix="seal-bench-parse-") as work:
+        _score(corpora, folder, constants or shared / "data" / "alfred" / "alfred_constants.json", Path(work),
+               library, as_json, shipped=not corpus)
+
+
+def _score(corpora: list[Path], folder: Path, constants: Path, work: Path, library: Library, as_json: bool, *,
+           shipped: bool) -> None:
+    """Check every corpus, scorer and constants file, then score each: the scorers read seal's plain copies of
+    the corpora and constants (:mod:`seal_cli.bench.corpora`), never the user's files."""
+    from seal_cli.bench.corpora import Corpus, read_corpus, write_plain
+    from seal_cli.bench.parsing import commands_of, measure
+    from seal_cli.language.grounding import Vocabulary
+
     seal = f"{sys.executable} -m seal_cli"
     results: dict[str, Any] = {}
-    runs: list[tuple[Path, list[str], Vocabulary | None]] = []
+    runs: list[tuple[Corpus, list[str], Vocabulary | None]] = []
     for path in corpora:  # every corpus, scorer and constants file checked before any is scored (no half output)
-        if not path.is_file():
-            where = "" if corpus else (" (the default corpora are in ../shared/data beside a checkout of seal, which "
-                                       "an installed seal does not have: give --corpus FILE and --scorers DIR)")
+        if not path.exists():
+            where = "" if not shipped else (" (the default corpora are in ../shared/data beside a checkout of seal, "
+                                            "which an installed seal does not have: give --corpus FILE and --scorers "
+                                            "DIR)")
             raise SealError(f"no such corpus: {path}{where}", Where(str(path)))
-        if path.suffix == ".tsv":
-            consts = constants or shared / "data" / "alfred" / "alfred_constants.json"
-            argv = [str(folder / "score_alfred_goals.py"), str(path), str(consts)]
+        read = read_corpus(path)  # every field the scorer reads, at its line (hostile28: a KeyError in the scorer)
+        vocab = None
+        if read.table:  # the constants checked before the scorer reads them (a FIFO there hung it), then copied
+            classes = _alfred_classes(constants)
+            vocab = Vocabulary.of(classes)
+            plain_constants = work / "constants.json"
+            plain_constants.write_text(json.dumps({"OBJECTS": classes}), encoding="utf-8")
+            argv = [str(folder / "score_alfred_goals.py"), str(write_plain(read, work)), str(plain_constants)]
         else:
-            if not all(isinstance(item, dict) for item in read_json_lines(path)):
-                raise SealError(f"{path} is not a corpus: each line must be a JSON object", Where(str(path)))
-            argv = [str(folder / "score_parse.py"), str(path)]
+            argv = [str(folder / "score_parse.py"), str(write_plain(read, work))]
         if not Path(argv[0]).is_file():
             raise SealError(f"scorer not found: {argv[0]} (give --scorers DIR)", Where(argv[0]))
-        # the constants are checked before the scorer reads them (a FIFO there would hang it)
-        runs.append((path, argv, _alfred_vocabulary(Path(argv[2])) if path.suffix == ".tsv" else None))
-    for path, _, _ in runs:  # then what each holds: the scorer divided by zero on a corpus of no commands
-        if not any(commands_of(path)):
+        runs.append((read, argv, vocab))
+    for read, _, _ in runs:  # then what each holds: the scorer divided by zero on a corpus of no commands
+        if not any(commands_of(read.path)):
             raise SealError("this corpus holds no commands: a corpus is JSON Lines with a 'text' in each line, or an "
-                            "ALFRED goals table (.tsv) with a 'goal_sentence' column", Where(str(path)))
-    for path, argv, vocab in runs:
+                            "ALFRED goals table (.tsv) with a 'goal_sentence' column", Where(str(read.path)))
+    for read, argv, vocab in runs:
+        path = read.path
         err.print(f"scoring {path} ...", markup=False)
         run = subprocess.run([sys.executable, *argv, "--seal", seal, *(["--json"] if as_json else [])],
                              capture_output=True, text=True)
         if run.returncode and "Traceback (most recent call last)" in run.stderr:  # it crashed (exit 1 is a low score)
-            raise SealError(f"the scorer failed on {path}: {run.stderr.strip().splitlines()[-1]}", Where(str(path)))
+            last = run.stderr.strip().splitlines()[-1]
+            if last.startswith("ZeroDivisionError") and not read.expects:
+                raise SealError("the scorer scored none of this corpus's commands: it passes over a GPSR command "
+                                "whose command_types it has no template for (or whose fills do not match them), "
+                                "and no line gives its frames as 'expect'", Where(str(path)))
+            raise SealError(f"the scorer failed on {path}: {last}", Where(str(path)))
         figures = measure(commands_of(path), library, vocab)
         if as_json:
             lines = run.stdout.strip().splitlines()

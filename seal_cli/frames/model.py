@@ -21,7 +21,7 @@ from functools import cached_property
 from typing import Any
 
 from seal_cli.errors import SealError, SealErrors, Where
-from seal_cli.names import check_name_length, name_too_long
+from seal_cli.names import check_name_length, check_shown, name_too_long
 
 __all__ = ["Action", "Element", "Fact", "Frame", "LexicalUnit", "parse_atom"]
 
@@ -220,6 +220,11 @@ class Frame:
         elif not FRAME_NAME.match(self.name):
             yield SealError(f"frame name {self.name!r} must start with a capital letter "
                             "and hold only letters, digits and '_'", self.where)
+        for what, text in (("description", self.description), ("FrameNet name", self.framenet or "")):
+            try:  # printed by `seal frames` and its JSON (hostile28: a lone surrogate, an escape sequence passed)
+                check_shown(text, f"{self.name}'s {what}", self.where, allowed="\n\t" if what == "description" else "")
+            except SealError as problem:
+                yield problem
         seen: dict[str, Element] = {}
         for element in self.elements:
             if element.role in seen:

@@ -81,14 +81,18 @@ def frame_files(paths: Iterable[str | Path]) -> tuple[list[Path], list[SealError
         if path.is_dir():
             found = _frame_files_under(path)
             if not found:
-                problems.append(SealError(f"no frame files (*.yaml, *.frame) in folder {path}", Where(str(path))))
+                from seal_cli.fileio import gone_cwd_hint
+
+                problems.append(SealError(f"no frame files (*.yaml, *.frame) in folder {path}{gone_cwd_hint(path)}",
+                                          Where(str(path))))
             files.extend(found)
         elif path.exists():  # a file, or a device or pipe that reading refuses by its kind
             files.append(path)
         else:
-            from seal_cli.fileio import stdin_hint
+            from seal_cli.fileio import gone_cwd_hint, stdin_hint
 
-            problems.append(SealError(f"no such file or folder: {path}{stdin_hint(str(raw))}", Where(str(path))))
+            problems.append(SealError(f"no such file or folder: {path}{stdin_hint(str(raw))}{gone_cwd_hint(path)}",
+                                      Where(str(path))))
     return _each_once(files), problems
 
 

@@ -47,7 +47,7 @@ from seal_cli.language.steps import StepModel
 from seal_cli.language.taskfields import FieldModel, shipped_field_model
 from seal_cli.language.tasks import TaskModel
 from seal_cli.language.wordusage import WordUsage, context_words, shipped_word_usage, unsaid_wording
-from seal_cli.names import name_too_long
+from seal_cli.names import check_shown, name_too_long
 
 __all__ = ["PARTS", "PIECES", "PORTIONS", "Vocabulary", "load_vocabulary", "vocabulary_of_map"]
 
@@ -467,6 +467,10 @@ def _entries(data: Any, where: Where) -> tuple[list[str], dict[str, list[str]]]:
             long = name_too_long(str(name), f"entry {number}: name")
             if long is not None:
                 raise _problem(long.message, where, number)
+            try:  # an escape sequence or an override in a class or synonym (hostile28)
+                check_shown(str(name), f"entry {number}: name")
+            except SealError as problem:
+                raise _problem(problem.message, where, number) from None
     return names, synonyms
 
 

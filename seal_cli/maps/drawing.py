@@ -17,8 +17,8 @@ import numpy as np
 from seal_cli.maps.geometry import FREE, OCCUPIED
 from seal_cli.maps.model import Map
 
-__all__ = ["LABEL", "MARGIN", "declutter", "draw_map", "legend_below", "room_colour", "save_map_png", "shown_extent",
-           "text_as_written"]
+__all__ = ["LABEL", "LEGEND_CHARS", "MARGIN", "NAME_CHARS", "ROOM_CHARS", "TITLE_CHARS", "cut", "cut_title",
+           "declutter", "draw_map", "legend_below", "room_colour", "save_map_png", "shown_extent", "text_as_written"]
 
 _Drawing = TypeVar("_Drawing", bound=Callable[..., Any])
 
@@ -36,6 +36,30 @@ def text_as_written(draw: _Drawing) -> _Drawing:
             return draw(*args, **kwargs)
 
     return cast(_Drawing, drawn)
+
+NAME_CHARS = 32
+"""A name written beside its point (a room, place, class or person) is cut to this many characters, with "…": a
+name may have 100 (``names.MAX_NAME``), and drawn whole it ran off the picture and over its neighbours' names
+(hostile28). The tables and the JSON keep every name whole."""
+ROOM_CHARS = 20
+"""A room's name, in bold inside its room, is cut to this many characters, and clipped to the axes: cut to
+:data:`NAME_CHARS`, two rooms side by side on a small panel still wrote their names over each other."""
+LEGEND_CHARS = 48
+"""A legend's entry is cut to this many characters: longer, the legend under the map was wider than the figure, and
+matplotlib warned "Tight layout not applied" on stderr (hostile28)."""
+TITLE_CHARS = 56
+"""Each line of a picture's title is cut to this many characters (a map's name of 100, three rooms' names)."""
+
+
+def cut(text: str, limit: int = NAME_CHARS) -> str:
+    """``text``, or its first ``limit - 1`` characters and "…"."""
+    return text if len(text) <= limit else text[:limit - 1] + "…"
+
+
+def cut_title(text: str) -> str:
+    """A title, each of its lines cut to :data:`TITLE_CHARS`."""
+    return "\n".join(cut(line, TITLE_CHARS) for line in text.split("\n"))
+
 
 LABEL = "seal-label"
 """The ``gid`` of the names written on a map; :func:`declutter` moves those that are annotations."""
@@ -102,19 +126,20 @@ def draw_map(ax: Any, m: Map, *, rooms: bool = True, places: bool = True, object
             ax.add_patch(Polygon(room.vertices, closed=True, facecolor=colour, alpha=0.12, edgecolor=colour,
                                  linewidth=1.5, zorder=1))
             x, y, ha, va = _label_point(m, i)
-            ax.text(x, y, room.name, ha=ha, va=va, fontsize=9, color=colour, weight="bold", zorder=LABEL_Z,
+            ax.text(x, y, cut(room.name, ROOM_CHARS), clip_on=True, ha=ha, va=va, fontsize=9, color=colour,
+                    weight="bold", zorder=LABEL_Z,
                     gid=LABEL, bbox=_HALO)
     if places:
         for place in m.places:
             marker = "s" if place.openable else "o"
             ax.plot(*place.at, marker=marker, markersize=5, markerfacecolor="white" if place.closed else "#555",
                     markeredgecolor="#555", zorder=3)
-            ax.annotate(place.name, place.at, xytext=(3, 3), textcoords="offset points", fontsize=6, color="#555",
+            ax.annotate(cut(place.name), place.at, xytext=(3, 3), textcoords="offset points", fontsize=6, color="#555",
                         zorder=LABEL_Z, gid=LABEL, bbox=_HALO)
     if objects:
         for obj in m.objects:
             ax.plot(*obj.at, marker="*", markersize=11, color="#d62728", markeredgecolor="black", zorder=4)
-            ax.annotate(obj.cls, obj.at, xytext=(4, -9), textcoords="offset points", fontsize=7, color="#d62728",
+            ax.annotate(cut(obj.cls), obj.at, xytext=(4, -9), textcoords="offset points", fontsize=7, color="#d62728",
                         zorder=LABEL_Z, gid=LABEL, bbox=_HALO)
     if robot:
         x, y, yaw = m.robot.pose
@@ -140,7 +165,8 @@ def legend_below(ax: Any, columns: int = 4, **options: Any) -> None:
     (fewer where panels stand side by side, so that their legends do not run into each other)."""
     handles, labels = ax.get_legend_handles_labels()
     if handles:
-        ax.legend(handles, labels, loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=min(len(handles), columns),
+        ax.legend(handles, [cut(label, LEGEND_CHARS) for label in labels], loc="upper center",
+                  bbox_to_anchor=(0.5, -0.1), ncol=min(len(handles), columns),
                   fontsize=7, frameon=False, **options)
 
 
@@ -215,7 +241,7 @@ def save_map_png(m: Map, path: str | Path, *, visible: bool = True, dpi: int = 1
     fig, ax = plt.subplots(figsize=(width, height))
     try:
         draw_map(ax, m, visible=visible)
-        ax.set_title(m.name)
+        ax.set_title(cut_title(m.name))
         fig.tight_layout()
         declutter(fig)
         with atomic_output(path) as tmp:

@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 
 from seal_cli.fileio import atomic_output
-from seal_cli.maps.drawing import text_as_written
+from seal_cli.maps.drawing import cut, text_as_written
 from seal_cli.sim.agent import Agent, Record
 
 __all__ = ["write_png", "write_rrd"]
@@ -165,7 +165,7 @@ def write_png(path: str | Path, agent: Agent, title: str = "") -> None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from seal_cli.maps.drawing import declutter, draw_map, legend_below, shown_extent
+    from seal_cli.maps.drawing import cut_title, declutter, draw_map, legend_below, shown_extent
 
     m = agent.scene.map
     xmin, ymin, xmax, ymax = shown_extent(m)
@@ -187,7 +187,7 @@ def write_png(path: str | Path, agent: Agent, title: str = "") -> None:
                            label=f"{label} belief: {last[name]}")
             _draw_run(ax, agent)
             legend_below(ax, columns=4 if panels == 1 else 3)  # under the map: no cloud covers it
-        axes[0][0].set_title(title or m.name)
+        axes[0][0].set_title(cut_title(title or m.name))
         if panels == 2:
             axes[0][1].set_title("the commanded frame's belief")
         fig.tight_layout()
@@ -311,7 +311,7 @@ def _draw_run(ax: Any, agent: Agent) -> None:
                         **once("a person led, where they stood at the start"))
                 ax.plot([start[0], item.at[0]], [start[1], item.at[1]], ":", color="#9467bd", linewidth=1, zorder=3)
             ax.plot(*item.at, "^", markersize=7, color="#9467bd", zorder=LABEL_Z + 2, **once("people"))
-            ax.annotate(agent.named(item.id), item.at, xytext=(4, -8), textcoords="offset points", fontsize=6,
+            ax.annotate(cut(agent.named(item.id)), item.at, xytext=(4, -8), textcoords="offset points", fontsize=6,
                         color="#9467bd", zorder=LABEL_Z, gid=LABEL, bbox=_HALO)
         elif item.movable:
             end = agent.world.position(item.id)

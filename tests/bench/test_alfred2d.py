@@ -201,6 +201,12 @@ def test_bad_data_is_a_clear_error(tmp_path: Path, shared_data: Path) -> None:
     (tmp_path / "trials_x.jsonl").write_text('{"task_id": 1,}\n')
     with pytest.raises(SealError, match=r"trials_x\.jsonl:1:15: trial is not JSON"):
         list(read_trials(tmp_path, "x", {}))
+    (tmp_path / "trials_x.jsonl").write_text('\n{"task_id": "t\\ud800"}\n')  # hostile28: half a character
+    with pytest.raises(SealError, match=r"trials_x\.jsonl:2:15: \\ud800 is half a character"):
+        list(read_trials(tmp_path, "x", {}))
+    (tmp_path / "floorplans.json").write_text('{"floor_plans": {"F\\udc80": {}}}')
+    with pytest.raises(SealError, match=r"floorplans\.json:1:20: \\udc80 is half a character"):
+        read_floorplans(tmp_path)
     (tmp_path / "floorplans.json").write_text(json.dumps({"floor_plans": {"F": {"receptacles": [{}]}}}))
     with pytest.raises(SealError, match=r"floorplans\.json: floor_plans\.F\.receptacles\[0\] has no 'position'"):
         read_floorplans(tmp_path)

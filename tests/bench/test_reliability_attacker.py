@@ -24,6 +24,7 @@ from seal_cli.bench.reliability_attacker import (
     hostile25_cases,
     hostile26_cases,
     hostile27_cases,
+    hostile28_cases,
     sparse_pgm,
 )
 from seal_cli.bench.reliability_outsider import outsider_cases
@@ -353,4 +354,28 @@ def test_the_hostile27_cases_are_named_once_and_say_what_they_must() -> None:
     assert len({c.name for c in found}) == len(found) >= 28
     assert all(c.says for c in found if c.codes == (1,))
     assert any(c.parallel > 1 for c in found) and any(c.signal for c in found)
+    assert {c.name for c in found} <= {c.name for c in attacker_cases()}
+
+
+@pytest.mark.parametrize("name", ["A bench parse --corpus of a GPSR command without its fills",
+                                  "A bench parse --corpus whose text holds a lone surrogate",
+                                  "A bench parse --corpus of an ALFRED row short of columns",
+                                  "A map --png in a deleted working folder",
+                                  "A parse --file in a deleted working folder",
+                                  "A frames --json of a description holding an escape sequence"])
+def test_picked_hostile28_cases_end_cleanly(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Each failed before this round: a GPSR line without fills and a lone surrogate were the scorer's KeyError and
+    UnicodeEncodeError, an ALFRED row short of columns said "holds no commands" naming no line, a deleted working
+    folder said "cannot write the output: No such file or directory" or "no such file" alone, a frame's description
+    holding an escape sequence was accepted. This tree's code; none needs ../shared."""
+    monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
+    case = next(c for c in hostile28_cases() if c.name == name)
+    assert run_case(case).problems == []
+
+
+def test_the_hostile28_cases_are_named_once_and_say_what_they_must() -> None:
+    found = list(hostile28_cases())
+    assert len({c.name for c in found}) == len(found) >= 25
+    assert all(c.says for c in found if c.codes in ((0,), (1,)))
+    assert sum(c.remove_cwd for c in found) >= 5 and sum(bool(c.unsaid) for c in found) == 2
     assert {c.name for c in found} <= {c.name for c in attacker_cases()}

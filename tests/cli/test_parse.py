@@ -140,11 +140,11 @@ def test_bench_parse_runs_the_scorer(shared_data: Path, tmp_path: Path) -> None:
 @pytest.mark.parametrize(("content", "expected"), [
     (b"\x84\x00binary", "is not UTF-8 text"),
     (b"- a\n- b\n", ":1:1: not JSON"),
-    (b'{"text": "stir the cup"}\n{"text": oops}\n', ":2:10: not JSON"),
-    (b'{"text": "stir the cup"}\n[1, 2]\n', "each line must be a JSON object"),
+    (b'{"text": "stir the cup", "expect": []}\n{"text": oops}\n', ":2:10: not JSON"),
+    (b'{"text": "stir the cup", "expect": []}\n[1, 2]\n', ":2:1: this line is a list, not a JSON object"),
     (b"", "this corpus holds no commands"),  # hostile19: the scorer divided by zero
     (b"\n\n", "this corpus holds no commands"),
-    (b'{"frames": []}\n', "this corpus holds no commands"),
+    (b'{"frames": []}\n', ":1:1: this command has no 'text'"),  # hostile28: the scorer's KeyError
 ])
 def test_bench_parse_refuses_a_corpus_that_is_not_json_lines(tmp_path: Path, content: bytes, expected: str) -> None:
     corpus = tmp_path / "bad.jsonl"
@@ -166,12 +166,77 @@ def test_bench_parse_refuses_constants_no_corpus_reads(tmp_path: Path) -> None:
     assert (result.exit_code, result.stderr) == (1, said + "--corpus given is one\n")
 
 
-def test_bench_parse_reports_a_crashing_scorer_as_an_error(shared_data: Path, tmp_path: Path) -> None:
-    scorers = shared_data.parent / "eval"
-    if not (scorers / "score_parse.py").is_file():
-        pytest.skip("the shared scorers are not here")
+def test_bench_parse_reports_a_crashing_scorer_as_an_error(tmp_path: Path) -> None:
     corpus = tmp_path / "odd.jsonl"
-    corpus.write_text('{"text": "go to the kitchen"}\n', encoding="utf-8")  # a command, no field it scores
-    result = runner.invoke(app, ["bench", "parse", "--corpus", str(corpus)])
+    corpus.write_text('{"text": "go to the kitchen", "expect": [{"frame": "Go"}]}\n', encoding="utf-8")
+    (tmp_path / "score_parse.py").write_text("raise RuntimeError('the scorer broke')\n")
+    result = runner.invoke(app, ["bench", "parse", "--corpus", str(corpus), "--scorers", str(tmp_path)])
     assert result.exit_code == 1, result.output
-    assert f"the scorer failed on {corpus}" in result.stderr and "Traceback" not in result.output + result.stderr
+    assert f"the scorer failed on {corpus}: RuntimeError: the scorer broke" in result.stderr
+    assert "Traceback" not in result.output + result.stderr
+
+
+GO = '"text": "go to the kitchen"'
+
+
+@pytest.mark.parametrize(("line", "expected"), [
+    ("{" + GO + '}', ":1:1: this command says nothing to score it by: give 'expect'"),
+    ("{" + GO + ', "command_types": ["goToLoc"]}', ":1:1: this GPSR command has no 'fills'"),
+    ("{" + GO + ', "command_types": [], "fills": []}', ":1:31: its 'command_types' is an empty list"),
+    ("{" + GO + ', "command_types": ["goToLoc"], "fills": [{"placeholder": "loc"}]}', ":1:61: fill 1 has no 'value'"),
+    ("{" + GO + ', "expect": "Go"}', ":1:31: its 'expect' is a string, not a list of frames"),
+    ("{" + GO + ', "expect": [{"elements": {}}]}', ":1:31: frame 1 of its 'expect' has no 'frame'"),
+    ("{" + GO + ', "expect": [{"frame": "Go", "elements": {"goal": 1e999}}]}',
+     ":1:71: element 'goal' of frame 1 of its 'expect' is the number inf, not a string"),
+    ('{"text": NaN, "expect": []}', ":1:2: its 'text' is the number nan, not a string"),
+    ('{"text": "go\\udc80", "expect": []}', ":1:13: \\udc80 is half a character"),
+])
+def test_bench_parse_names_the_line_and_the_field_the_scorer_would_miss(tmp_path: Path, line: str,
+                                                                         expected: str) -> None:
+    # hostile28: each was a KeyError, AttributeError or UnicodeEncodeError inside the shared scorer, "the scorer
+    # failed on c.jsonl: KeyError: 'command_types'", naming no line; the scorer is never run on them now
+    corpus = tmp_path / "c.jsonl"
+    corpus.write_text(line + "\n", encoding="utf-8")
+    (tmp_path / "score_parse.py").write_text("raise SystemExit('never run')\n")
+    result = runner.invoke(app, ["bench", "parse", "--corpus", str(corpus), "--scorers", str(tmp_path)])
+    assert result.exit_code == 1, result.output
+    assert f"error: {corpus}{expected}" in result.stderr and "Traceback" not in result.output + result.stderr
+
+
+ALFRED = "task_type\tobject\treceptacle\tmrecep\tsliced\tgoal_sentence\n"
+
+
+@pytest.mark.parametrize(("table", "expected"), [
+    ("goal_sentence\nput an apple in the fridge\n", ":1:1: this ALFRED goals table has no columns 'task_type', "),
+    (ALFRED + "pick_and_place_simple\tApple\n", ":2:1: this row has no 'receptacle', 'mrecep', 'sliced', "
+                                                 "'goal_sentence': it has 2 of the header's 6 columns"),
+])
+def test_bench_parse_names_what_an_alfred_table_lacks(tmp_path: Path, table: str, expected: str) -> None:
+    corpus = tmp_path / "g.tsv"
+    corpus.write_text(table, encoding="utf-8")
+    result = runner.invoke(app, ["bench", "parse", "--corpus", str(corpus), "--scorers", str(tmp_path)])
+    assert result.exit_code == 1, result.output
+    assert f"error: {corpus}{expected}" in result.stderr
+
+
+def test_bench_parse_refuses_constants_whose_classes_are_not_names(tmp_path: Path) -> None:
+    corpus = tmp_path / "g.tsv"
+    corpus.write_text(ALFRED + "pick_and_place_simple\tApple\tFridge\t\t0\tput an apple in the fridge\n")
+    constants = tmp_path / "k.json"
+    constants.write_text('{"OBJECTS": ["Apple", 5]}')
+    result = runner.invoke(app, ["bench", "parse", "--corpus", str(corpus), "--constants", str(constants)])
+    assert result.exit_code == 1, result.output
+    assert f"error: {constants}: the ALFRED constants' OBJECTS holds 5, not a class name" in result.stderr
+
+
+def test_bench_parse_scores_a_corpus_with_a_bom_and_crlf(shared_data: Path, tmp_path: Path) -> None:
+    # the scorer reads seal's plain copy: on the file itself it failed on the BOM ("Unexpected UTF-8 BOM")
+    if not (shared_data.parent / "eval" / "score_parse.py").is_file():
+        pytest.skip("the shared scorers are not here")
+    corpus = tmp_path / "c.jsonl"
+    line = "{" + GO + ', "expect": [{"frame": "Go", "elements": {"goal": "kitchen"}}]}'
+    corpus.write_bytes(("\ufeff" + line + "\r\n").encode())
+    result = runner.invoke(app, ["bench", "parse", "--corpus", str(corpus), "--json"])
+    assert result.exit_code == 0, result.output
+    figures = json.loads(result.stdout)["corpora"][str(corpus)]
+    assert (figures["n"], figures["frames"], figures["roles"]) == (1, 1.0, 1.0)

@@ -121,3 +121,19 @@ def test_a_lexical_unit_longer_than_any_command_is_refused() -> None:
     LexicalUnit(" ".join(["zap"] * 250))  # 999 characters
     with pytest.raises(SealError, match=r"1,003 characters long, longer than any command seal takes"):
         LexicalUnit(" ".join(["zap"] * 251))
+
+
+@pytest.mark.parametrize(("description", "framenet", "said"), [
+    ("a \udc80 b", None, r"Stir's description 'a \\udc80 b' holds '\\udc80' \(U\+DC80\), half of a character"),
+    ("a \x1b[31m red", None, r"Stir's description .* a control character"),
+    ("a \u202e b", None, r"Stir's description .* reorders the line"),
+    ("", "Apply\x00heat", r"Stir's FrameNet name .* a control character"),
+])
+def test_a_description_no_terminal_shows_is_refused(description: str, framenet: str | None, said: str) -> None:
+    # hostile28: `seal frames` printed them (its JSON with a lone surrogate no strict reader takes)
+    with pytest.raises(SealError, match=said):
+        Frame("Stir", (LexicalUnit("stir"),), description=description, framenet=framenet)
+
+
+def test_a_description_keeps_its_line_breaks() -> None:
+    assert Frame("Stir", (LexicalUnit("stir"),), description="Stir.\n\tWith a spoon.").description.endswith("spoon.")

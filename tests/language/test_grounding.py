@@ -341,3 +341,14 @@ def test_the_form_said_tells_apart_classes_one_by_their_lemmas() -> None:
         assert both.ground_words(["a", "pair"], -1, ["glasses"]) == "glasses"  # its "of" phrase's form
     assert Vocabulary.of(["glasses", "cup"]).ground_words(["glass"]) == "glasses"
     assert Vocabulary.of(["glass", "cup"]).ground_words(["glasses"]) == "glass"
+
+
+@pytest.mark.parametrize(("text", "said"), [
+    ('- "cu\\e[31mp"\n- mug\n', r"v\.yaml:1:3: entry 1: name 'cu\\x1b\[31mp' holds '\\x1b' \(U\+001B\), a control"),
+    ('- cup\n- {class: mug, synonyms: ["be\\u202eaker"]}\n', r"v\.yaml:2:3: entry 2: name 'be\\u202eaker' holds"),
+])
+def test_a_vocabulary_name_no_terminal_shows_is_refused_at_its_entry(tmp_path: Path, text: str, said: str) -> None:
+    # hostile28: the escape sequence reached the terminal in every table naming the class
+    (tmp_path / "v.yaml").write_text(text, encoding="utf-8")
+    with pytest.raises(SealError, match=said):
+        load_vocabulary(tmp_path / "v.yaml")

@@ -22,3 +22,35 @@ def test_a_name_with_dollars_is_drawn_not_read_as_mathematics(tmp_path: Path, na
     import matplotlib
 
     assert matplotlib.rcParams["text.parse_math"]      # the setting is the picture's own, not the process's
+
+
+def test_long_names_are_cut_on_the_picture_only() -> None:
+    from seal_cli.maps.drawing import LEGEND_CHARS, NAME_CHARS, TITLE_CHARS, cut, cut_title
+
+    assert cut("kitchen") == "kitchen" and cut("a" * NAME_CHARS) == "a" * NAME_CHARS
+    assert cut("a" * 100) == "a" * (NAME_CHARS - 1) + "…" and len(cut("b" * 100, LEGEND_CHARS)) == LEGEND_CHARS
+    assert cut_title("Find(theme=cup)\n" + "w" * 99 + " 0.50") == "Find(theme=cup)\n" + "w" * (TITLE_CHARS - 1) + "…"
+
+
+def test_a_map_of_100_character_names_draws_them_cut_within_the_figure(tmp_path: Path) -> None:
+    # hostile28: drawn whole, the names ran off the picture and over each other
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from seal_cli.maps.drawing import LABEL, ROOM_CHARS, draw_map
+
+    room, thing = "w" * 99, "a" * 98
+    (tmp_path / "m.yaml").write_text(
+        f"name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {{name: {room}, box: [0, 0, 5, 10]}}\n"
+        f"  - {{name: b{room}, box: [5, 0, 10, 10]}}\nplaces:\n  - {{name: {thing}_1, class: {thing}, at: [2, 5]}}\n",
+        encoding="utf-8")
+    fig, ax = plt.subplots(figsize=(9, 9))
+    try:
+        draw_map(ax, load_map(tmp_path / "m.yaml"))
+        names = [t.get_text() for t in ax.texts if t.get_gid() == LABEL]
+        assert names[:2] == ["w" * (ROOM_CHARS - 1) + "…", "b" + "w" * (ROOM_CHARS - 2) + "…"]
+        assert all(len(n) <= 32 for n in names) and all(t.get_clip_on() for t in ax.texts[:2])
+    finally:
+        plt.close(fig)

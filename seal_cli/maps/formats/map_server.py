@@ -48,7 +48,7 @@ from numpy.typing import NDArray
 
 from seal_cli.errors import SealError, SealErrors, Where
 from seal_cli.fileio import MAX_IMAGE_BYTES, compose_yaml, composed, read_bytes, read_text
-from seal_cli.frames.taxonomy import class_key
+from seal_cli.frames.taxonomy import check_class_name, class_key
 from seal_cli.maps.geometry import (
     FREE,
     MAX_GRID_CELLS,
@@ -603,7 +603,11 @@ class _Reader(NodeReader):
         priors: dict[str, dict[str, float]] = {}
         first: dict[str, str] = {}
         for cls, key_node, value in self.pairs_at(node, "priors", ("priors_raw",)):
-            key = class_key(cls)
+            try:  # a class a place or an object could not have ("cu\0p" validated, hostile28)
+                key = check_class_name(cls, "the prior's class", self.where(key_node))
+            except SealError as problem:
+                self.problem(problem.message, key_node)
+                continue
             if key in first:
                 self.problem(f"priors name the class {cls!r} twice (as {first[key]!r} too)", key_node)
                 continue

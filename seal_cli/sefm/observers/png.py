@@ -129,7 +129,7 @@ def _objects(ax: Any, sefm: SeFM, trace: Trace) -> None:
 def _frame(ax: Any, sefm: SeFM, trace: Trace, i: int) -> None:
     from matplotlib.patches import Ellipse, Polygon, Rectangle
 
-    from seal_cli.maps.drawing import legend_below
+    from seal_cli.maps.drawing import cut_title, legend_below
     from seal_cli.sefm.shown import rooms_text, share
 
     _base(ax, sefm, trace)
@@ -162,4 +162,4 @@ def _frame(ax: Any, sefm: SeFM, trace: Trace, i: int) -> None:
     if summary.modes:
         ax.plot([], [], color="#d62728", linewidth=1.5, label="mode: 2σ ellipse (within its room), weight")
     legend_below(ax)
-    ax.set_title(f"{sefm.bindings[i]}\n{rooms_text(written['rooms'])}", fontsize=9)
+    ax.set_title(cut_title(f"{sefm.bindings[i]}\n{rooms_text(written['rooms'])}"), fontsize=9)
