@@ -269,3 +269,21 @@ def test_a_drawn_house_is_its_seed_alone_every_room_reached_and_every_command_pl
         assert np.isfinite(field_[free[:, 0], free[:, 1]]).all(), m.name    # every room reached through its doors
         for text in COMMANDS:
             assert len(plan_text(text, library, vocabulary=vocabulary_of_map(m)).steps) == 2
+
+
+def test_bench_tasks_context_held_out_runs_the_cases_chosen_on_the_drawn_houses(tmp_path: Path) -> None:
+    from seal_cli.bench.context import HELD_OUT_CASES_FILE
+
+    cases = json.loads(HELD_OUT_CASES_FILE.read_text(encoding="utf-8"))["cases"]
+    text = min({c["command"] for c in cases}, key=lambda t: sum(c["command"] == t for c in cases))
+    mine = [c for c in cases if c["command"] == text]
+    result = runner.invoke(app, ["bench", "tasks", "--suite", "context_held_out", "--command", text, "--layouts", "1",
+                                 "--policies", "oracle", "--jobs", "1", "--data", str(tmp_path), "--json"])
+    assert result.exit_code == 0, result.output      # drawn in code: no shared data read
+    data = json.loads(result.stdout)
+    assert data["suite"] == "context_held_out" and data["houses"] == "held_out"
+    assert set(data["groups"]) - {"all"} == {f"{c['house']} · {text} · start {c['start']}" for c in mine}
+    assert data["groups"]["all"]["n"] == len(mine) and data["groups"]["all"]["success"]["oracle"] == 1.0
+    refused = runner.invoke(app, ["bench", "tasks", "--suite", "context_held_out", "--houses", "unseen",
+                                  "--data", str(tmp_path)])
+    assert refused.exit_code == 1 and "--houses" in refused.output
