@@ -7,6 +7,7 @@ file is not what the criterion gives now.
     python scripts/context_cases.py                 # rebuild (about 15 min)
     python scripts/context_cases.py --check         # the same, compared with the file
     python scripts/context_cases.py --house mews --out part.json   # one house's part
+    python scripts/context_cases.py --held-out      # the held-out houses' cases (context_held_out_cases.json)
 """
 
 from __future__ import annotations
@@ -49,11 +50,16 @@ def main() -> int:
     parser.add_argument("--data", type=Path, default=ROOT / ".." / "shared" / "data",
                         help="the shared data folder (default: beside the checkout), for the AWS house")
     parser.add_argument("--house", action="append", default=[], help="only this house (repeatable; default: all)")
-    parser.add_argument("--out", type=Path, default=context.CASES_FILE, help="where to write (default: the suite's)")
+    parser.add_argument("--held-out", action="store_true",
+                        help="the held-out houses (context.held_out_houses) instead of the suite's; default --out: "
+                             "context_held_out_cases.json")
+    parser.add_argument("--out", type=Path, help="where to write (default: the suite's cases file)")
     parser.add_argument("--check", action="store_true", help="write nothing; exit 1 if --out differs")
     args = parser.parse_args()
+    if args.out is None:
+        args.out = context.HELD_OUT_CASES_FILE if args.held_out else context.CASES_FILE
     try:
-        built = context.candidate_houses(args.data)
+        built = context.held_out_houses() if args.held_out else context.candidate_houses(args.data)
     except SealError as error:
         print(f"error: {error.message}", file=sys.stderr)
         return 1

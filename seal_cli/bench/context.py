@@ -48,6 +48,7 @@ from seal_cli.bench.houses import (
     COTTAGE_STARTS,
     FARMHOUSE_STARTS,
     GALLERY_STARTS,
+    HELD_OUT_SEEDS,
     LONGHOUSE_STARTS,
     MEWS_STARTS,
     RANCH_STARTS,
@@ -55,6 +56,7 @@ from seal_cli.bench.houses import (
     aws_house,
     bungalow,
     cottage,
+    drawn_house,
     gallery,
     longhouse,
     mews,
@@ -68,8 +70,8 @@ from seal_cli.frames.reading import load_library
 from seal_cli.maps.formats.map_server import load_map
 from seal_cli.maps.model import Map, ObjectTruth, Robot
 
-__all__ = ["CASES_FILE", "COMMANDS", "HOUSE_SETS", "START_CLEARANCE", "House", "candidate_houses", "drawn_starts",
-           "house_set", "houses",
+__all__ = ["CASES_FILE", "COMMANDS", "HELD_OUT_CASES_FILE", "HOUSE_SETS", "START_CLEARANCE", "House",
+           "candidate_houses", "drawn_starts", "held_out_houses", "house_set", "houses",
            "paired", "regroup", "run_context_suite", "selected_houses", "unseen_houses", "with_fov"]
 
 COMMANDS = ("stir the cup", "put the spoon in the cup", "stir the mug", "pour the kettle into the mug")
@@ -131,14 +133,28 @@ def unseen_houses() -> list[House]:
             House(longhouse(), LONGHOUSE_STARTS), House(gallery(), GALLERY_STARTS)]
 
 
+def held_out_houses() -> list[House]:
+    """Houses no policy was developed or measured on, drawn by search27 from
+    :data:`~seal_cli.bench.houses.HELD_OUT_SEEDS` alone (:func:`~seal_cli.bench.houses.drawn_house`: no one chose
+    their plans); their cases are chosen by the same criterion as the suite's (``--suite context_held_out``).
+    No starts of their own: the cases' starts are drawn."""
+    return [House(drawn_house(seed), ()) for seed in HELD_OUT_SEEDS]
+
+
 CASES_FILE = Path(__file__).parent / "suites" / "context_cases.json"
 """The context suite's cases, with the values of the criterion that chose them (``scripts/context_cases.py``)."""
 
+HELD_OUT_CASES_FILE = Path(__file__).parent / "suites" / "context_held_out_cases.json"
+"""The held-out houses' cases (:func:`held_out_houses`), chosen by the same criterion
+(``scripts/context_cases.py --held-out``)."""
 
-def selected_houses(data: Path, commands: Sequence[str] | None = None, cases_file: Path = CASES_FILE) -> list[House]:
+
+def selected_houses(data: Path, commands: Sequence[str] | None = None, cases_file: Path = CASES_FILE,
+                    among: Sequence[House] | None = None) -> list[House]:
     """The context suite's selected cases (:data:`CASES_FILE`) as houses: each house with the starts a case was
     chosen from (numbered as drawn) and, per start, the commands chosen from it; ``commands``: only these
-    commands' cases (refused when none is one). The houses are :func:`candidate_houses`' maps, in their order."""
+    commands' cases (refused when none is one). The houses are ``among``'s maps (default :func:`candidate_houses`'),
+    in their order."""
     try:
         cases = json.loads(cases_file.read_text(encoding="utf-8"))["cases"]
     except (OSError, ValueError, KeyError, TypeError) as error:
@@ -150,7 +166,7 @@ def selected_houses(data: Path, commands: Sequence[str] | None = None, cases_fil
                             + ", ".join(sorted({case["command"] for case in cases})))
         cases = [case for case in cases if case["command"] in commands]
     built = []
-    for house in candidate_houses(data):
+    for house in (candidate_houses(data) if among is None else among):
         mine = [case for case in cases if case["house"] == house.map.name]
         labels = sorted({int(case["start"]) for case in mine})
         if not labels:

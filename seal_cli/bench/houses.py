@@ -311,3 +311,77 @@ the family room's east end."""
 
 TERRACE_STARTS = ((0.75, 1.0, 0.0), (5.0, 2.5, 0.0), (5.0, 15.0, 0.0))
 """``maps/terrace.yaml`` (an unseen house): the passage by the front door, the living room, the kitchen."""
+
+
+# -- houses no one drew: a seeded plan, for held-out checks no policy was developed on -------------------------
+DRAWN_ROOMS = ("kitchen", "living_room", "family_room", "dining_room", "bedroom", "study")
+"""The rooms of a :func:`drawn_house`: the four the context priors name, the living room and a study (no prior)."""
+
+DRAWN_PLACES = {"kitchen": "counter", "living_room": "coffee_table", "family_room": "sofa",
+                "dining_room": "dining_table", "bedroom": "bed", "study": "desk"}
+"""The piece of furniture each room of a :func:`drawn_house` has (a place, not an obstacle)."""
+
+HELD_OUT_SEEDS = (2701, 2702)
+"""The seeds of the held-out houses search27 drew (:func:`held_out_houses`), set before either was drawn."""
+
+
+def _cuts(rng: np.random.Generator, width: float, least: float = 4.0) -> tuple[float, float]:
+    """Two cuts splitting ``width`` into three rooms at least ``least`` wide, on a 0.5 m step."""
+    a = float(np.round(rng.uniform(least, width - 2 * least) * 2) / 2)
+    b = float(np.round(rng.uniform(a + least, width - least) * 2) / 2)
+    return a, b
+
+
+def drawn_house(seed: int, priors: Mapping[str, Mapping[str, float]] | None = None,
+                objects: Sequence[Mapping[str, object]] | None = None) -> Map:
+    """A house drawn from ``seed`` alone (no one chose its plan): 14–20 m × 9–12 m, two rows of three box rooms
+    (each at least 4 m wide, the rows split at 40–60 % of the depth), the six :data:`DRAWN_ROOMS` in a shuffled
+    order, doors on a random spanning tree of the rooms that share a wall (so every room is reached) and each other
+    shared wall a door with probability 0.3, each door at its wall's shared middle; one piece of furniture a room
+    (:data:`DRAWN_PLACES`). Named ``drawn<seed>``; priors and things: the context suite's by default."""
+    rng = np.random.default_rng(seed)
+    width = float(np.round(rng.uniform(14.0, 20.0) * 2) / 2)
+    height = float(np.round(rng.uniform(9.0, 12.0) * 2) / 2)
+    split = float(np.round(height * rng.uniform(0.4, 0.6) * 2) / 2)
+    boxes: list[tuple[float, float, float, float]] = []
+    for ymin, ymax in ((0.0, split), (split, height)):
+        a, b = _cuts(rng, width)
+        boxes += [(0.0, ymin, a, ymax), (a, ymin, b, ymax), (b, ymin, width, ymax)]
+    names = [DRAWN_ROOMS[i] for i in rng.permutation(len(DRAWN_ROOMS))]
+    walls: list[tuple[int, int, tuple[float, float]]] = []
+    for row in (0, 3):
+        for i in (row, row + 1):
+            walls.append((i, i + 1, (boxes[i][2], (boxes[i][1] + boxes[i][3]) / 2)))
+    for i in range(3):
+        for j in range(3, 6):
+            lo, hi = max(boxes[i][0], boxes[j][0]), min(boxes[i][2], boxes[j][2])
+            if hi - lo >= 2.0:
+                walls.append((i, j, ((lo + hi) / 2, split)))
+    order = rng.permutation(len(walls))
+    group = list(range(6))
+
+    def root(k: int) -> int:
+        while group[k] != k:
+            k = group[k]
+        return k
+
+    doors = []
+    for w in order:
+        i, j, at = walls[int(w)]
+        if root(i) != root(j):
+            group[root(i)] = root(j)
+            doors.append(at)
+        elif rng.random() < 0.3:
+            doors.append(at)
+    rooms = dict(zip(names, boxes, strict=True))
+    places = []
+    for n, (xmin, ymin, xmax, ymax) in rooms.items():
+        at = ((xmin + xmax) / 2, ymax - 0.6) if DRAWN_PLACES[n] in ("counter", "bed", "sofa", "desk") else \
+            ((xmin + xmax) / 2, (ymin + ymax) / 2)
+        places.append(Place(f"{DRAWN_PLACES[n]}_1", DRAWN_PLACES[n], (round(at[0], 2), round(at[1], 2))))
+    first = boxes[0]
+    robot = ((first[0] + first[2]) / 2, (first[1] + first[3]) / 2, 0.0)
+    things = CONTEXT_OBJECTS if objects is None else objects
+    return walled_house(f"drawn{seed}", (width, height), rooms, doors,
+                        objects=tuple(ObjectTruth(str(o["class"]), robot[:2]) for o in things), places=tuple(places),
+                        robot=robot, priors=CONTEXT_PRIORS if priors is None else priors)

@@ -32,11 +32,12 @@ from seal_cli.cli.output import plain, styled
 from seal_cli.sim.policies import DEFAULT_POLICIES, POLICIES
 from seal_cli.sim.unsearched import SEARCH_END
 
-SUITES = ("alfred2d", "map", "context", "context_all")
+SUITES = ("alfred2d", "map", "context", "context_all", "context_held_out")
 
-CONTEXT_SUITES = ("context", "context_all")
+CONTEXT_SUITES = ("context", "context_all", "context_held_out")
 """``context``: the cases chosen by the headroom criterion (``bench.context.selected_houses``); ``context_all``:
-every command from every own start of the three houses (the suite before search26), or ``--houses unseen``."""
+every command from every own start of the three houses (the suite before search26), or ``--houses unseen``;
+``context_held_out``: the cases the same criterion chose on houses drawn from a seed (``context.held_out_houses``)."""
 
 SUITE_OPTIONS = {"data": ("--data", ("alfred2d", *CONTEXT_SUITES)), "split": ("--split", ("alfred2d",)),
                  "goal": ("--goal", ("alfred2d",)), "limit": ("--limit", ("alfred2d",)),
@@ -224,7 +225,8 @@ def tasks(
                               "one seal map over layouts drawn from its priors; context: commands needing two "
                               "things with overlapping priors, the cases where frame context changes the best "
                               "first look (chosen from priors and map alone); context_all: every such command "
-                              "from every start of the three houses."),
+                              "from every start of the three houses; context_held_out: the cases the same "
+                              "criterion chose on two houses drawn from a seed, held out."),
     data: Path | None = typer.Option(None, "--data", help="The ALFRED-2D folder (default: ../shared/data/alfred2d "
                                      "beside the project); with --suite context or context_all the shared data "
                                      "folder (default ../shared/data), for the AWS house's map.", show_default=False),
@@ -329,6 +331,8 @@ def tasks(
 
             layouts = layouts or 3
             on = context.selected_houses(data, commands or None) if suite == "context" else \
+                context.selected_houses(data, commands or None, context.HELD_OUT_CASES_FILE,
+                                        context.held_out_houses()) if suite == "context_held_out" else \
                 context.house_set(house_set, data)
             runs = context.run_context_suite(data, names, commands=list(commands or context.COMMANDS),
                                              layouts=layouts, seed=seed, jobs=jobs or os.cpu_count() or 1,
@@ -349,7 +353,8 @@ def tasks(
     elif suite in CONTEXT_SUITES:
         from seal_cli.bench.context import paired, regroup
 
-        report.update({"suite": suite, "houses": house_set if suite == "context_all" else "selected",
+        which = {"context_all": house_set, "context": "selected"}.get(suite, "held_out")
+        report.update({"suite": suite, "houses": which,
                        "starts": starts or ("the houses' own" if suite == "context_all" else "the cases' own"),
                        "fov": fov, "layouts": layouts, "seed": seed, "by_command": regroup(outcomes, names, 1),
                        "by_house": regroup(outcomes, names, 0), "against_prior_optimal": paired(outcomes, names)})

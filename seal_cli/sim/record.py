@@ -278,6 +278,10 @@ def _draw_run(ax: Any, agent: Agent) -> None:
     for k, (frame, points) in enumerate(legs if len(legs) > 1 else []):   # each step's leg in its own colour
         ax.plot(points[:, 0], points[:, 1], "-", color=LEG_COLOURS[k % len(LEG_COLOURS)], linewidth=2, zorder=4,
                 label=_short(f"step {k + 1}: {frame}"))
+    looks = np.asarray([r.pose[:2] for r in agent.records if r.kind == "go" and r.text.startswith("goes to look")])
+    if len(looks):       # each "goes to look" of the narration, where it ended: the views the search chose
+        ax.plot(looks[:, 0], looks[:, 1], "o", markersize=7, markerfacecolor="white", markeredgecolor="#1f77b4",
+                markeredgewidth=1.5, zorder=5, label="where it stopped to look")
     ends = {"markeredgecolor": "white", "markeredgewidth": 1.2, "zorder": LABEL_Z + 1}   # over labels and acts
     ax.plot(*trail[0], "o", color="#1f77b4", markersize=9, label="start", **ends)
     stood: dict[tuple[float, float], list[str]] = {}      # where the robot stood for each action, numbered

@@ -239,3 +239,51 @@ def test_bench_tasks_context_runs_the_chosen_cases(shared_data: Path) -> None:
     assert data["suite"] == "context" and data["houses"] == "selected"
     assert set(data["groups"]) - {"all"} == {f"{c['house']} · {text} · start {c['start']}" for c in mine}
     assert data["groups"]["all"]["n"] == len(mine) and data["groups"]["all"]["success"]["oracle"] == 1.0
+
+
+def test_a_drawn_house_is_its_seed_alone_every_room_reached_and_every_command_planned(library: Library) -> None:
+    import numpy as np
+
+    from seal_cli.bench.context import held_out_houses
+    from seal_cli.bench.houses import DRAWN_PLACES, DRAWN_ROOMS, HELD_OUT_SEEDS, drawn_house
+    from seal_cli.sim.agent import Agent, scene_from_map
+    from seal_cli.sim.policies import make_policy
+
+    one, again, other = drawn_house(11), drawn_house(11), drawn_house(12)
+    assert one.rooms == again.rooms and (one.grid.free_mask == again.grid.free_mask).all()
+    assert one.rooms != other.rooms and one.name == "drawn11"
+    assert [h.map.name for h in held_out_houses()] == [f"drawn{s}" for s in HELD_OUT_SEEDS]
+    for m in (one, other, *(h.map for h in held_out_houses())):
+        assert sorted(r.name for r in m.rooms) == sorted(DRAWN_ROOMS)
+        assert {p.cls for p in m.places} == set(DRAWN_PLACES.values())
+        assert all(DRAWN_PLACES[room] == p.cls for p, room in zip(m.places, m.room_of([p.at for p in m.places]),
+                                                                  strict=True)), m.name   # each in its own room
+        assert {c: dict(p) for c, p in m.priors.items()} == {c: dict(p) for c, p in CONTEXT_PRIORS.items()}
+        assert 14 <= m.bounds[2] <= 20 and 9 <= m.bounds[3] <= 12
+        for room in m.rooms:   # each at least 4 m wide
+            xs = [v[0] for v in room.polygon]
+            assert max(xs) - min(xs) >= 4.0, (m.name, room.name)
+        agent = Agent(scene_from_map(m, library), library, make_policy("oracle"), rng=np.random.default_rng(0))
+        field_ = agent.distances()
+        free = agent.grid.free_cells
+        assert np.isfinite(field_[free[:, 0], free[:, 1]]).all(), m.name    # every room reached through its doors
+        for text in COMMANDS:
+            assert len(plan_text(text, library, vocabulary=vocabulary_of_map(m)).steps) == 2
+
+
+def test_bench_tasks_context_held_out_runs_the_cases_chosen_on_the_drawn_houses(tmp_path: Path) -> None:
+    from seal_cli.bench.context import HELD_OUT_CASES_FILE
+
+    cases = json.loads(HELD_OUT_CASES_FILE.read_text(encoding="utf-8"))["cases"]
+    text = min({c["command"] for c in cases}, key=lambda t: sum(c["command"] == t for c in cases))
+    mine = [c for c in cases if c["command"] == text]
+    result = runner.invoke(app, ["bench", "tasks", "--suite", "context_held_out", "--command", text, "--layouts", "1",
+                                 "--policies", "oracle", "--jobs", "1", "--data", str(tmp_path), "--json"])
+    assert result.exit_code == 0, result.output      # drawn in code: no shared data read
+    data = json.loads(result.stdout)
+    assert data["suite"] == "context_held_out" and data["houses"] == "held_out"
+    assert set(data["groups"]) - {"all"} == {f"{c['house']} · {text} · start {c['start']}" for c in mine}
+    assert data["groups"]["all"]["n"] == len(mine) and data["groups"]["all"]["success"]["oracle"] == 1.0
+    refused = runner.invoke(app, ["bench", "tasks", "--suite", "context_held_out", "--houses", "unseen",
+                                  "--data", str(tmp_path)])
+    assert refused.exit_code == 1 and "--houses" in refused.output

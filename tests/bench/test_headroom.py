@@ -77,3 +77,26 @@ def test_the_committed_cases_are_what_the_criterion_gives_on_a_slice() -> None:
         assert case["pose"] == list(poses[case["start"] - 1])
         again = headroom(m, poses[case["start"] - 1], case["command"], library, case["start"])
         assert again is not None and again.to_json() == case
+
+
+def test_the_held_out_cases_are_the_criterions_on_the_drawn_houses() -> None:
+    # search27: the held-out houses' cases (context.HELD_OUT_CASES_FILE), chosen by the same criterion before any policy
+    # ran on them; the file's own consistency, and its first case that fits recomputed from the drawn house
+    import json
+
+    from seal_cli.bench.context import HELD_OUT_CASES_FILE, drawn_starts, held_out_houses
+    from seal_cli.bench.headroom import CANDIDATE_COMMANDS, CANDIDATE_SEED, CANDIDATE_STARTS
+
+    doc = json.loads(HELD_OUT_CASES_FILE.read_text(encoding="utf-8"))
+    built = held_out_houses()
+    assert doc["houses"] == [h.map.name for h in built]
+    assert (doc["fits_share"], doc["starts"], doc["seed"]) == (FITS_SHARE, CANDIDATE_STARTS, CANDIDATE_SEED)
+    assert doc["commands"] == list(CANDIDATE_COMMANDS)
+    assert doc["cases"] == [c for c in doc["candidates"] if c["fits"]] and doc["cases"]
+    assert len(doc["candidates"]) == len(built) * CANDIDATE_STARTS * len(CANDIDATE_COMMANDS)
+    m = built[0].map
+    case = next(c for c in doc["candidates"] if c["house"] == m.name and c["fits"])
+    pose = drawn_starts(m, CANDIDATE_STARTS, CANDIDATE_SEED)[case["start"] - 1]
+    assert case["pose"] == list(pose)
+    again = headroom(m, pose, case["command"], load_library(None), case["start"])
+    assert again is not None and again.to_json() == case

@@ -139,12 +139,12 @@ def test_holding_given_once_is_what_the_robot_holds() -> None:
     (["--suite", "context", "--goal", "human", "--layouts", "1"],
      "error: --suite context does not read --goal: --goal goes with --suite alfred2d\n"),
     (["--suite", "map", "--data", "."], "error: --suite map does not read --data: --data goes with --suite alfred2d or "
-                                        "context or context_all\n"),
+                                        "context or context_all or context_held_out\n"),
     # the context suite's own options are in the same table, with the same message (hostile21: they had a check of
     # their own, by value, so '--houses suite' to another suite passed)
     (["--houses", "suite", "--fov", "90"],
      "error: --suite alfred2d does not read --houses, --fov: --houses goes with --suite context_all; --fov goes with "
-     "--suite context or context_all\n"),
+     "--suite context or context_all or context_held_out\n"),
     # the chosen cases have their own starts: --houses and --starts go with the whole suite (search26)
     (["--suite", "context", "--houses", "unseen", "--starts", "2"],
      "error: --suite context does not read --houses, --starts: --houses goes with --suite context_all; --starts goes "

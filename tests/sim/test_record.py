@@ -131,6 +131,41 @@ def test_the_png_legend_names_every_mark_and_the_end_is_drawn_over_the_last_acti
         plt.close(fig)
 
 
+def test_the_png_marks_each_view_the_search_stopped_at_as_the_narration_says_it(library: Any) -> None:
+    """search27: the narration's "goes to look" lines ("looks for spoon: bedroom: ...") had no mark on the picture, so
+    a reader could not find where each look was; each is a hollow circle where that drive ended, and only those."""
+    import dataclasses
+
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    from seal_cli import pipeline
+    from seal_cli.bench.houses import cottage
+    from seal_cli.maps.model import ObjectTruth, Robot
+    from seal_cli.sim.policies import make_policy
+    from seal_cli.sim.record import _draw_run
+
+    world = dataclasses.replace(cottage(), objects=(ObjectTruth("spoon", (12.5, 8.5)), ObjectTruth("cup", (2.0, 7.0))),
+                                robot=Robot((7.5, 4.5, 0.0)))
+    agent, result = pipeline.run_on_map(world, "stir the cup", library, make_policy("sefm", 100),
+                                        rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    went = [r.pose[:2] for r in agent.records if r.kind == "go" and r.text.startswith("goes to look")]
+    assert went                                  # the spoon is out of sight from the hall: the search looked
+    fig, ax = plt.subplots()
+    try:
+        _draw_run(ax, agent)
+        handles, labels = ax.get_legend_handles_labels()
+        looks = handles[labels.index("where it stopped to look")]
+        assert [tuple(p) for p in looks.get_xydata()] == [tuple(p) for p in went]
+        assert looks.get_markerfacecolor() == "white" and looks.get_marker() == "o"
+    finally:
+        plt.close(fig)
+
+
 def test_a_person_led_is_drawn_where_they_ended_with_where_they_stood(library: Any) -> None:
     """e2e25: the picture of "guide Anna to the lounge" showed Anna where she stood at the start (under the robot's
     end square once she walked with it): now a full triangle where she is, a hollow one where she stood."""

@@ -89,6 +89,9 @@ class Choice:
     """Every candidate weighed and its expected metres to finish the plan (what :func:`choose` compared)."""
     search: Mapping[int, float] = dataclasses.field(default_factory=dict)
     """Of :attr:`costs`, the expected metres until the thing sought now is reached (the rest is the plan after it)."""
+    then: int | None = None
+    """The view the chosen one's tour looks from next if the thing is not found (None: the tour ends there): what a
+    look that reveals little is worth, when it is on the way to more."""
 
 
 @dataclass(frozen=True)
@@ -203,7 +206,9 @@ def choose(tables: Tables, nodes: Sequence[int], distance: np.ndarray, beliefs: 
                       if costs[k] < costs[prefer] - tie and after[k] < after[prefer] - tie]
             best = min(better) if better else (costs[prefer], prefer)
     expected, v = best
-    return Choice(v, expected, {c: float(share[c][v]) for c in q}, costs, search)
+    views = greedy_tour(tables, nodes, q1, start, first=v).views
+    return Choice(v, expected, {c: float(share[c][v]) for c in q}, costs, search,
+                  views[1] if len(views) > 1 else None)
 
 
 def quantiles(belief: np.ndarray, k: int) -> np.ndarray:

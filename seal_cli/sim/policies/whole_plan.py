@@ -521,8 +521,10 @@ class WholePlanSearch:
             return None
         candidate = self.candidates[choice.view]
         there = " and ".join(f"{c} {p:.2f}" for c, p in choice.shares.items() if p >= 0.005) or "little of anything"
+        then = None if choice.then is None else self.candidates[choice.then].name
         why = (f"{candidate.name}: {there} there, {field_[candidate.cell]:.1f} m "
-               f"(expected {choice.expected_m:.1f} m to finish the plan)")
+               f"(expected {choice.expected_m:.1f} m to finish the plan)"
+               + (f", {then} next if it is not there" if then is not None and then != candidate.name else ""))
         self.pending = candidate.cell
         costs = {(self.candidates[k].cell, self.candidates[k].open): m for k, m in choice.costs.items()}
         return Decision(View(candidate.cell, candidate.look_at, candidate.open, why), candidate, choice.expected_m,

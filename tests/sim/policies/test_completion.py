@@ -63,6 +63,7 @@ def test_two_things_go_first_where_both_may_be_and_one_alone_does_not() -> None:
     # (found at 15 m): the cup in the bedroom was seen (10 m back) or in the family room (3 m): 10 + 6.5 = 16.5
     assert both is not None and both.view == 2 and abs(both.expected_m - 16.5) < 1e-6
     assert both.shares == {"spoon": 0.5, "cup": 0.5}
+    assert both.then == 1          # and if the spoon is not in the bedroom, the kitchen next (what the narration says)
     # kitchen first is 10 + 0.5 * (3 + 0.5 * 13) + 0.5 * (0.5 * 13) = 18
     kitchen = choose(tables, nodes, lattice.distance, {"spoon": spoon, "cup": cup}, [Target("spoon"), Target("cup")],
                      start=node[5], allowed=[1])
@@ -196,3 +197,14 @@ def test_looks_that_saw_next_to_none_of_the_next_thing_share_its_tour_planned_wi
         later._search("cup", np.asarray([8]), np.asarray([0]))
         later._search("cup", np.asarray([8]), np.asarray([0]), first, np.asarray([4.0]))
         assert len(later.tours) == (2 if replanned else 1), share
+
+
+def test_the_choice_names_the_view_its_tour_looks_from_next_and_none_when_it_ends_there() -> None:
+    lattice, node, nodes, beliefs, tables = _spoons_and_cups()
+    spoon = beliefs["spoon"]
+    only = choose(tables, nodes, lattice.distance, {"spoon": spoon}, [Target("spoon")], start=node[5], allowed=[1])
+    assert only is not None and only.view == 1 and only.then == 2      # the kitchen, then the bedroom's half
+    last = np.zeros(lattice.size)
+    last[node[10]] = 1.0
+    alone = choose(tables, nodes, lattice.distance, {"spoon": last}, [Target("spoon")], start=node[5], allowed=[2])
+    assert alone is not None and alone.view == 2 and alone.then is None   # all of it there: no view after it
