@@ -3367,7 +3367,7 @@ def test_your_job_without_its_colon_announces_nothing(library: Library) -> None:
     ("what's in the shed, kindly tell me", [("Tell", {"message": "what's in the shed"})]),
     ("the jars on the shelf, how many are there?", [("Count", {"theme": "jar", "ground": "shelf"})]),
     ("the kids in the den, how many of them are left", [("Count", {"theme": "kid", "ground": "den"})]),
-    ("the jars on the shelf, how many is that", None),
+    ("the jars on the shelf, how many is that", [("Count", {"theme": "jar", "ground": "shelf"})]),   # words39
 ])
 def test_what_crowd_workers_ask_and_wish(text: str, want: list[tuple[str, dict[str, str]]] | None,
                                          library: Library) -> None:

@@ -119,6 +119,7 @@ word is tagged as what it is (``INSIDE``), and the grammar reports the missing v
 
 INSIDE: tuple[Rule, ...] = (
     clauses.END_MARK,
+    clauses.PARTICIPLES_JOINED,
     negatives.CORRECTED,
     negatives.DENIED_AFTER,
     negatives.PROHIBITED_AFTER,

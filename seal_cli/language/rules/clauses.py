@@ -20,6 +20,7 @@ from seal_cli.language.english import (
     VERB_TAKES,
 )
 from seal_cli.language.morphology import (
+    gerund_lemma,
     in_verb_tables,
     is_adjective,
     noun_lemma,
@@ -484,6 +485,31 @@ def _verb_after_joint(s: State, i: int) -> Match | None:
     return Match(j - i, (merge(words, i, j - i, Tag.SEP),), expect=True)
 
 
+def _participles_joined(s: State, i: int) -> Match | None:
+    """Two participles that describe a noun, joined by "and" ("the people *sitting and waving*", "the people that are
+    *sitting and wearing* red shirts"; words39): the bare participle before "and" and the one after it are one
+    description, tagged as the second is (it takes the object or phrase that follows), so that neither is read as a
+    clause of its own. A verb of the library in its base form after "and" is still a clause ("find the man standing
+    and *bring* him a cup")."""
+    words = s.words
+    if s.prev_tag() != Tag.VBG_I or i + 1 >= len(words):
+        return None
+    j = i + 1
+    gerund = gerund_lemma(words[j].lower)
+    if not gerund or words[j].lower == gerund:
+        return None
+    nxt = s.next_lower(j)
+    tag = Tag.VBG_T if s.np_starts(j + 1) and nxt not in PARTICLES else \
+        Tag.VBG_P if nxt in PREPOSITIONS and s.np_starts(j + 2) else Tag.VBG_I
+    last = s.out[-1]
+    return Match(2, last=Word(s.text_of(last.start, words[j].end) or f"{last.text} and {words[j].text}", last.start,
+                              words[j].end, tag, gerund))
+
+
+PARTICIPLES_JOINED = Rule("two participles joined by 'and'", _participles_joined, (
+    Example("count the people sitting and waving in the kitchen", "sitting and waving", Tag.VBG_P),
+    Example("find the girls that are standing and wearing hats", "standing and wearing", Tag.VBG_T),
+), frozenset(["and"]), "a bare participle after a noun, 'and' and another participle: one description")
 VERB_AFTER_JOINT = Rule("verb after a joint", _verb_after_joint, (
     Example("go to the kitchen and sleep there", "sleep", Tag.WORD),
     Example("take the cup and dance", "dance", Tag.WORD),

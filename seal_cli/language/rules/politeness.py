@@ -60,12 +60,20 @@ def _asked_again(s: State, i: int) -> Match | None:
     if not s.out or s.out[-1].tag != Tag.SEP or s.out[-1].lower != "," or \
             not any(w.tag == Tag.VERB and w.info in _ASKING for w in s.out):
         return None
+    n = asked_again_at(s, i)
+    return Match(n, (merge(words, i, n, Tag.POLITE),)) if n else None
+
+
+def asked_again_at(s: State, i: int) -> int:
+    """How many words from ``i`` ask the question before them again and end the command (", *do you think*?",
+    ", *can you tell me*", ", *kindly tell me*"); 0: none (words37, shared with the question's own end: words39)."""
+    words = s.words
     n = _said(s, i, TAG_QUESTIONS | _DO_YOU) or _said(s, i, _ASKED_NICELY)
     m = _said(s, i + n, ASKED_AGAIN) or (_said(s, i + n, _OPINION_ASKED) if n and words[i].lower not in
                                          _ASKED_NICELY else 0)
     if not m or not all(w.lower in END_MARKS for w in words[i + n + m:]):
-        return None
-    return Match(n + m, (merge(words, i, n + m, Tag.POLITE),))
+        return 0
+    return n + m
 
 
 def _formula(s: State, i: int) -> Match | None:

@@ -75,6 +75,7 @@ from seal_cli.language.morphology import (
     verb_lemma,
 )
 from seal_cli.language.rule import Example, Match, Rule
+from seal_cli.language.rules.politeness import asked_again_at
 from seal_cli.language.state import CLOSED, State, first_words, longest_phrase, lower_case_name, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
@@ -114,11 +115,21 @@ def _question(s: State, i: int) -> Match | None:
     nxt = words[i + 1].lower
     if nxt not in ("is", "are", "'s", "was", "were") and not nxt.isalpha() or _phrase(s, i, _PSEUDO_CLEFTS):
         return None                               # "what I need is X": a wish (``WISHED_STATE``), no question
-    end = s.speech_end(i)                         # the question, whatever its shape, is what to tell
+    end = _asked_again_cut(s, i, s.speech_end(i))  # the question, whatever its shape, is what to tell
     if end - i < 3 and words[end - 1].lower in ("is", "are", "'s", "was", "were"):
         return None                               # "what is": no question yet
     return Match(end - i, (_unsaid(words[i].start, Tag.VERB, QUESTION_MEANS), s.emit(i, end - i, Tag.SAID).words[0]),
                  expect=False, verb=QUESTION_MEANS, using=False)
+
+
+def _asked_again_cut(s: State, i: int, end: int) -> int:
+    """Where a question from ``i`` to ``end`` ends once the same question asked again after its last comma is left out
+    ("who is at the door*, do you think*?": the hearer's opinion asked, not part of what to tell; words39)."""
+    words = s.words
+    for c in range(end - 1, i + 1, -1):
+        if words[c].lower == ",":
+            return c if asked_again_at(s, c + 1) >= end - c - 1 > 0 else end
+    return end
 
 
 def _where(s: State, i: int) -> Match | None:
@@ -1731,6 +1742,7 @@ QUESTION = Rule("bare question", _question, (
     Example("What's the biggest thing on the shelf?", "What's the biggest thing on the shelf", Tag.SAID),
     Example("which of the bottles in the pantry is the biggest?", "", Tag.VERB),
     Example("who is in the kitchen?", "", Tag.VERB),
+    Example("who is knocking on the gate, would you say?", "who is knocking on the gate", Tag.SAID),
 ), QUESTION_WORDS, "a question where a command starts: 'tell me' and the question")
 WHERE = Rule("where is", _where, (
     Example("where is the cup?", "where is", Tag.VERB),
@@ -2106,9 +2118,14 @@ def _phrase_asked(s: State, i: int) -> Match | None:
                  expect=False, verb=QUESTION_MEANS, using=False)
 
 
+_COUNTED_TAKEN_UP = frozenset(["that", "those", "these", "they"])
+"""Pronouns after "how many is/are" that take up the phrase said before the comma (words39)."""
+
+
 def _count_tail(s: State, k: int) -> int:
     """How many words from the comma at ``k`` to the sentence's end ask how many of the phrase before it there are
-    (", how many are there?", ", how many of them are left", ", how many is there": words37); 0 if they do not."""
+    (", how many are there?", ", how many of them are left", ", how many is there": words37; ", how many is that?",
+    ", how many are they": words39); 0 if they do not."""
     words = s.words
     if k + 3 >= len(words) or words[k].lower != "," or words[k + 1].lower != "how" or words[k + 2].lower != "many":
         return 0
@@ -2119,6 +2136,8 @@ def _count_tail(s: State, k: int) -> int:
         m += 1
     else:
         return 0
+    if m < len(words) and words[m].lower in _COUNTED_TAKEN_UP:
+        m += 1                  # ", how many *is that*?", ", how many are *they*?": a pronoun takes up the phrase
     while m < len(words) and words[m].lower in ("there", "left", "remaining", "in", "here", "now"):
         if words[m].lower == "in" and not (m + 1 < len(words) and words[m + 1].lower == "there"):
             return 0
@@ -2234,6 +2253,7 @@ PHRASE_ASKED = Rule("phrase said before a question that takes it up", _phrase_as
 PHRASE_COUNTED = Rule("phrase said before how many", _phrase_counted, (
     Example("the jars on the shelf, how many are there?", "the", Tag.DET),
     Example("those mugs in the sink, how many of them are left", "those", Tag.DET),
+    Example("the spoons in the drawer, how many is that?", "the", Tag.DET),
 ), first_words(NP_OPENERS), "a noun phrase and a comma before 'how many are there': count what it names")
 COUNT_TAIL_DROPPED = Rule("how many are there, after the phrase counted", _count_tail_dropped, (
     Example("the jars on the shelf, how many are there?", "how", ""),
