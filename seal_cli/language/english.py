@@ -163,7 +163,7 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                     "you wanna", "why don't you", "why not", "is possible to", "is possible for you to",
                     "hurry", "hurry up", "sorry to bother you", "sorry to trouble you", "sorry to disturb you",
                     "sorry to bother you but", "sorry to trouble you but", "sorry to disturb you but",
-                    "do you mind", "how about", "what about", "second", "secondly", "third", "thirdly", "fourth",
+                    "do you mind", "how about", "what about", "how about you", "what about you", "second", "secondly", "third", "thirdly", "fourth",
                     "fourthly", "lastly", "listen",
                     *(f"{what} {who} {wish} you to do is" for what in ("what", "all") for who in ("i", "we")
                       for wish in ("want", "need", "'d like", "would like")),

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from seal_cli.language.english import (
     BE_WORDS,
+    BECAUSE,
     BEING_AT,
     BEING_MEANS,
     CLOCK_PREPOSITIONS,
@@ -127,6 +128,24 @@ def _longest(s: State, i: int, table: frozenset[str]) -> int:
     words = s.words
     return max((len(p.split()) for p in table if i + len(p.split()) <= len(words) and
                 all(words[i + k].lower == w for k, w in enumerate(p.split()))), default=0)
+
+
+_REASONS = frozenset(["since", "now that", "seeing as", "seeing that", "given that", *BECAUSE])
+"""Words that open a reason said before the command ("*since* you're in the kitchen anyway, grab a spoon": words39)."""
+
+
+def _reason_first(s: State, i: int) -> Match | None:
+    """A reason said before the command: "since", "now that", "because" and a statement, then a comma and the command
+    ("*Since you're in the kitchen anyway,* grab a spoon", "*now that Sam is here,* greet him"). The reason asks nothing:
+    it is kept as a remark, beside the command, and the clause starts after its comma."""
+    words = s.words
+    if s.out and s.out[-1].tag not in (Tag.POLITE, Tag.SEP):
+        return None
+    n = _longest(s, i, _REASONS)
+    end = s.statement_at(i + n) if n else 0
+    if not end or end >= len(words) or words[end].lower != "," or not s.verb_after(end + 1):
+        return None
+    return Match(end + 1 - i, remarks=((words[i].start, words[end - 1].end),), expect=True)
 
 
 def _being_at(s: State, i: int) -> Match | None:
@@ -370,6 +389,11 @@ TIME_SAID_FIRST = Rule("a time said first", _time_first, (
     Example("this afternoon open the windows", "this afternoon", Tag.POLITE),
 ), TIME_FIRST | TIME_FIRST_LEAD | frozenset(["this", "in", "at"]) | CLOCK_PREPOSITIONS,
     "a time before the verb ('in five minutes', 'tonight', 'after lunch'): when, kept as the frame's time")
+REASON_FIRST = Rule("a reason said first", _reason_first, (
+    Example("Since you're in the shed anyway, grab the rake", "rake", Tag.WORD),
+    Example("now that Sam is here, open the gate", "gate", Tag.WORD),
+), frozenset(["since", "now", "seeing", "given", *BECAUSE]), "'since' and a statement, then a comma, before the "
+   "command: a reason, kept as a remark")
 SUBORDINATE = Rule("subordinate clause first", _subordinate, (
     Example("If the door is open, close it", "If the door is open,", Tag.COND),
     Example("When you reach the kitchen, open the fridge", "When you", Tag.POLITE),

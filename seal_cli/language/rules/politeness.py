@@ -9,6 +9,7 @@ from seal_cli.language.english import (
     ASKED_AGAIN,
     DETERMINERS,
     END_MARKS,
+    FREQUENCY_ADVERBS,
     GREETINGS,
     KNOW_WISHES,
     NP_OPENERS,
@@ -254,11 +255,16 @@ def _addressed(s: State, i: int) -> Match | None:
     if not n:
         return None
     k = i + n
-    if k < len(words) and words[k].lower == "," and (s.verb_after(k + 1) or s.asks_at(k + 1)) if k + 1 < len(words) \
+    if k < len(words) and words[k].lower == "," and (s.verb_after(k + 1) or s.asks_at(k + 1) or
+                                                     greeted and s.statement_at(k + 1)) if k + 1 < len(words) \
             else False:
         return Match(n + 1, (merge(words, i, n + 1, Tag.POLITE),))   # "alexa, switch off the tv", "young man, ..."
-    nxt = words[i + 1].lower if i + 1 < len(words) else ""
-    if nxt and s.verb_at(i + 1) is not None and verb_lemma(nxt) != nxt:
+    m = i + 1
+    while m + 1 < len(words) and s.verb_at(m) is None and words[m].lower.isalpha() and \
+            (is_adverb(words[m].lower) or words[m].lower in FREQUENCY_ADVERBS):
+        m += 1                                        # "Morgan *just* arrived": an adverb before the verb (words39)
+    nxt = words[m].lower if m < len(words) else ""
+    if nxt and s.verb_at(m) is not None and verb_lemma(nxt) != nxt:
         return None                                   # "Priya went to the garage": a subject and its finite verb
     if (greeted or words[i].lower in GREETINGS or not parts_of_speech(words[i].lower) - {"noun"}) and \
             s.verb_after(i + 1):
@@ -310,6 +316,21 @@ def _like_filler(s: State, i: int) -> Match | None:
             (s.verb_after(i + 1) or words[i + 1].lower == "," and s.verb_after(i + 2)):
         return Match(1 + (words[i + 1].lower == ","))             # "can you *like* grab my bag": a filler
     return None
+
+
+_SPOKEN_FILLERS = frozenset(["you know", "i mean", "like", "basically", "so basically", "you see"])
+"""Words a speaker fills a pause with, said between commas where a clause starts ("go to the office and, *you know*,
+find Morgan"; words39): they ask nothing."""
+
+
+def _spoken_filler(s: State, i: int) -> Match | None:
+    words = s.words
+    if not s.expect_verb or s.out and s.out[-1].tag not in (Tag.SEP, Tag.POLITE):
+        return None
+    n = _said(s, i, _SPOKEN_FILLERS)
+    if not n or i + n + 1 >= len(words) or words[i + n].lower != "," or not s.verb_after(i + n + 1):
+        return None
+    return Match(n + 1)
 
 
 def _please_inside(s: State, i: int) -> Match | None:
@@ -421,6 +442,10 @@ RELAYED = Rule("a request passed on", _relayed, (
 LIKE_FILLER = Rule("like as a filler", _like_filler, (
     Example("could you like pass me the salt", "like", ""),
 ), frozenset(["like"]), "'like' after politeness and before the verb: a filler")
+SPOKEN_FILLER = Rule("a spoken filler before its comma", _spoken_filler, (
+    Example("open the shed and, you know, shut it", "you", ""),
+    Example("I mean, grab the mop", "mean", ""),
+), frozenset(["you", "i", "like", "basically", "so"]), "'you know,' / 'I mean,' where a clause starts: a filler")
 PLEASE_INSIDE = Rule("please inside a clause", _please_inside, (
     Example("bring me, please, a glass of juice", "please", ""),
     Example("turn the heater on please, I'm shivering", "please", ""),
