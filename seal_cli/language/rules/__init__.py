@@ -42,6 +42,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     politeness.HELPING,
     question_tags.YOU_MODAL_TAGGED,
     lead_ins.REASON_FIRST,
+    lead_ins.ROOM_HEADING,
     politeness.POLITENESS,
     negatives.PROHIBITED_FIRST,
     negatives.DENIED_FIRST,

@@ -498,9 +498,9 @@ def _participles_joined(s: State, i: int) -> Match | None:
     gerund = gerund_lemma(words[j].lower)
     if not gerund or words[j].lower == gerund:
         return None
-    nxt = s.next_lower(j)
-    tag = Tag.VBG_T if s.np_starts(j + 1) and nxt not in PARTICLES else \
-        Tag.VBG_P if nxt in PREPOSITIONS and s.np_starts(j + 2) else Tag.VBG_I
+    nxt, n = s.next_lower(j), match_phrase(words, j + 1, PREPOSITIONS) if j + 2 < len(words) else 0
+    tag = Tag.VBG_P if n > 1 and s.np_starts(j + 1 + n) else Tag.VBG_T if s.np_starts(j + 1) and nxt not in PARTICLES \
+        else Tag.VBG_P if nxt in PREPOSITIONS and s.np_starts(j + 2) else Tag.VBG_I
     last = s.out[-1]
     return Match(2, last=Word(s.text_of(last.start, words[j].end) or f"{last.text} and {words[j].text}", last.start,
                               words[j].end, tag, gerund))

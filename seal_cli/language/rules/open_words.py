@@ -34,6 +34,9 @@ def _participle(s: State, i: int) -> Match | None:
     gerund = gerund_lemma(low)
     if not gerund or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.BE):
         return None
+    n = match_phrase(s.words, i + 1, PREPOSITIONS) if i + 2 < len(s.words) else 0
+    if n > 1 and s.np_starts(i + 1 + n):
+        return s.emit(i, 1, Tag.VBG_P, gerund)  # "the person standing *next to* the door" (words39): not "next" an NP
     tag = Tag.VBG_T if s.np_starts(i + 1) and nxt not in PARTICLES else \
         Tag.VBG_P if nxt in PREPOSITIONS and s.np_starts(i + 2) else Tag.VBG_I
     return s.emit(i, 1, tag, gerund)
@@ -208,6 +211,7 @@ PARTICIPLE = Rule("participle after a noun", _participle, (
     Example("find the person wearing a red blouse", "wearing", Tag.VBG_T),
     Example("find the person pointing to the left", "pointing", Tag.VBG_P),
     Example("find the person sitting", "sitting", Tag.VBG_I),
+    Example("find the person standing next to the door", "standing", Tag.VBG_P),
 ), lambda low: bool(gerund_lemma(low)),
     "an -ing form after a noun, a pronoun or 'is': transitive, with a preposition, or bare")
 FILLED_WITH = Rule("participle before with", _filled_with, (
