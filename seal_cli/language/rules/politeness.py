@@ -328,8 +328,12 @@ def _spoken_filler(s: State, i: int) -> Match | None:
     if not s.expect_verb or s.out and s.out[-1].tag not in (Tag.SEP, Tag.POLITE):
         return None
     n = _said(s, i, _SPOKEN_FILLERS)
-    if not n or i + n + 1 >= len(words) or words[i + n].lower != "," or not s.verb_after(i + n + 1):
+    if not n or i + n + 1 >= len(words) or words[i + n].lower != ",":
         return None
+    after = words[i + n + 1].lower
+    if not s.verb_after(i + n + 1) and not (in_verb_tables(after) and verb_lemma(after) == after and
+                                            after not in CLOSED and after not in SUBJECTS):
+        return None             # a clause's verb follows ("I mean, *see* if Jane is there"), known or not
     return Match(n + 1)
 
 
