@@ -148,6 +148,7 @@ INSIDE: tuple[Rule, ...] = (
     requests.HOW_MANY_SEEN,
     requests.HOW_MANY_SAID,
     verbs.MOVED_YOURSELF,
+    politeness.FILLER_INSIDE,
     politeness.PLEASE_INSIDE,
     politeness.AS_ABLE_RULE,
     clauses.SOMETHING_TO,

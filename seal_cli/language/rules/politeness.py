@@ -115,9 +115,17 @@ _VERB_NEXT = frozenset(["to", "about", "mind"])
 *mind* switching ..."): with none after, the words are no politeness."""
 
 
+_WANT_YOU_BARE = frozenset(["i want you", "i need you", "i would like you", "i'd like you", "we want you", "we need you"])
+"""A wish that the robot do something said without its "to", as learners of English say it ("*I want you* bring me the
+book": words39): politeness only when a verb of the library follows ("I need you here" stays a statement)."""
+
+
 def _politeness(s: State, i: int) -> Match | None:
     words, low = s.words, s.words[i].lower
     n = match_phrase(words, i, POLITE)
+    bare = longest_phrase(words, i, _WANT_YOU_BARE) if low in ("i", "we", "i'd") else 0
+    if bare > n and s.verb_after(i + bare):
+        return Match(bare, (merge(words, i, bare, Tag.POLITE),))
     if low == "to" and n == 1 and _goal_said_first(s, i):
         return None                                   # "*To the dining room,* follow Jane": where, said first
     if low in _ORDINALS and not (i + 1 < len(words) and words[i + 1].lower in (",", ";", ":") or s.verb_after(i + 1)):
@@ -337,6 +345,18 @@ def _spoken_filler(s: State, i: int) -> Match | None:
     return Match(n + 1)
 
 
+def _filler_inside(s: State, i: int) -> Match | None:
+    """", like," / ", you know," / ", I mean," between commas inside a clause ("find*, like,* the biggest box";
+    words39): a pause filled, nothing said; the clause goes on after it."""
+    words = s.words
+    if s.expect_verb or i + 3 >= len(words):
+        return None
+    n = _said(s, i + 1, _SPOKEN_FILLERS)
+    if not n or i + n + 2 >= len(words) or words[i + n + 1].lower != "," or words[i + n + 2].lower in END_MARKS:
+        return None
+    return Match(n + 2)
+
+
 def _please_inside(s: State, i: int) -> Match | None:
     words = s.words
     if s.expect_verb or i + 1 >= len(words) or words[i + 1].lower in END_MARKS:
@@ -413,6 +433,7 @@ POLITENESS = Rule("politeness", _politeness, (
     Example("do you mind switching the fan on", "do you mind", Tag.POLITE),
     Example("And who is in the kitchen?", "And", Tag.POLITE),
     Example("would you close the gate", "would you", Tag.POLITE),
+    Example("I want you open the gate", "I want you", Tag.POLITE),
 ), None, "politeness words and phrases before the verb (english.POLITE)")
 ATTENTION = Rule("look, listen", _attention, (
     Example("Look, the window is open. Close it.", "Look,", Tag.POLITE),
@@ -450,6 +471,10 @@ SPOKEN_FILLER = Rule("a spoken filler before its comma", _spoken_filler, (
     Example("open the shed and, you know, shut it", "you", ""),
     Example("I mean, grab the mop", "mean", ""),
 ), frozenset(["you", "i", "like", "basically", "so"]), "'you know,' / 'I mean,' where a clause starts: a filler")
+FILLER_INSIDE = Rule("a spoken filler between commas inside a clause", _filler_inside, (
+    Example("fetch, like, the biggest box from the shed", "like", ""),
+    Example("put the mug, you know, in the sink", "know", ""),
+), frozenset([","]), "', like,' / ', you know,' inside a clause: a filler")
 PLEASE_INSIDE = Rule("please inside a clause", _please_inside, (
     Example("bring me, please, a glass of juice", "please", ""),
     Example("turn the heater on please, I'm shivering", "please", ""),
