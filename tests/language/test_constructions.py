@@ -3578,3 +3578,15 @@ def test_a_reason_said_first_is_a_remark(library: Library) -> None:
     """words39: the reason is kept beside the command, never dropped silently."""
     parse = parse_command("because it is cold, shut the window", library)
     assert [f.frame for f in parse.frames] == ["Close"] and parse.remarks == ("because it is cold",)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("tell to me how many jars are in the shed", [("Count", {"theme": "jar", "ground": "shed"})]),
+    ("mug -> sink", [("Bring", {"theme": "mug", "recipient": "me", "goal": "sink"})]),
+    ("open the shed -> grab the rake", [("Open", {"theme": "shed"}), ("Pick", {"theme": "rake"})]),
+])
+def test_a_learners_tell_to_me_and_an_arrow_between_bare_phrases(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words39: "tell to me how many" is the unit "tell me how many"; an arrow between two bare phrases says where
+    the first goes (between clauses it still joins them)."""
+    assert_reads(text, want, library)

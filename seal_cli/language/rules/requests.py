@@ -844,8 +844,9 @@ def _told_how_many(s: State, i: int) -> Match | None:
     m = _phrase(s, k, _TOLD_PEOPLE)
     k += m
     if k + 1 >= len(words) or words[k].lower != "how" or words[k + 1].lower != "many" or \
-            found[0] == NUMBER_MEANS.split()[0] and m:
-        return None                               # "tell me how many": the unit itself, read as it is
+            found[0] == NUMBER_MEANS.split()[0] and m and words[k - m].lower != "to":
+        return None                               # "tell me how many": the unit itself, read as it is; "tell *to*
+        #   me how many", as learners of English say it, is the unit's too (words39)
     end = words[k + 1].end
     return Match(k + 2 - i, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, NUMBER_MEANS),),
                  expect=False, verb=NUMBER_MEANS, using=False)
@@ -1961,6 +1962,7 @@ WHETHER_BE = Rule("is, after see if X", _whether_be, (
 TOLD_HOW_MANY = Rule("said how many", _told_how_many, (
     Example("Report to me how many cups are in the sink.", "Report to me how many", Tag.VERB),
     Example("say how many people are in the hall", "say how many", Tag.VERB),
+    Example("tell to me how many jars are in the shed", "tell to me how many", Tag.VERB),
 ), None, "a verb of saying and 'how many': tell me how many (Count)")
 HOW_MANY_SEEN = Rule("how many X can you see", _how_many_seen, (
     Example("How many dishes can you see on the dining table?", "can", ""),
