@@ -3535,6 +3535,8 @@ def test_thanks_a_verb_of_saying_says_are_told(
      [("Guide", {"theme": "Ada", "source": "gate", "goal": "den"})]),
     ("get acquainted with Tom at the gate", [("Meet", {"theme": "Tom", "ground": "gate"})]),
     ("meet with Tom in the den", [("Meet", {"theme": "Tom", "ground": "den"})]),
+    ("meet up with Tom at the gate", [("Meet", {"theme": "Tom", "ground": "gate"})]),
+    ("wave hello to Ada in the hall", [("Greet", {"theme": "Ada", "ground": "hall"})]),
     ("open the shed and, you know, shut the gate", [("Open", {"theme": "shed"}), ("Close", {"theme": "gate"})]),
     ("fetch, like, the biggest box from the shed", [("Pick", {"theme": "box", "source": "shed"})]),
     ("how about you shut the gate?", [("Close", {"theme": "gate"})]),
