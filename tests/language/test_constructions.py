@@ -3586,9 +3586,16 @@ def test_a_reason_said_first_is_a_remark(library: Library) -> None:
     ("tell to me how many jars are in the shed", [("Count", {"theme": "jar", "ground": "shed"})]),
     ("mug -> sink", [("Bring", {"theme": "mug", "recipient": "me", "goal": "sink"})]),
     ("open the shed -> grab the rake", [("Open", {"theme": "shed"}), ("Pick", {"theme": "rake"})]),
+    ("open the gate when you get to the shed", [("Go", {"goal": "shed"}), ("Open", {"theme": "gate"})]),
+    ("greet Ada after you get to the hall", [("Go", {"goal": "hall"}), ("Greet", {"theme": "Ada"})]),
+    ("put the mug on the shelf after taking from the sink",
+     [("Pick", {"theme": "mug", "source": "sink"}), ("Place", {"theme": "mug", "goal": "shelf"})]),
+    ("the jars in the shed must be counted by you", [("Count", {"theme": "jar", "ground": "shed"})]),
+    ("put the mug by you", [("Place", {"theme": "mug", "goal": "you"})]),
 ])
 def test_a_learners_tell_to_me_and_an_arrow_between_bare_phrases(
         text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
     """words39: "tell to me how many" is the unit "tell me how many"; an arrow between two bare phrases says where
-    the first goes (between clauses it still joins them)."""
+    the first goes (between clauses it still joins them); "when you get to X" after a command is going there, not
+    the command's object brought there; "by you" after a passive command is the robot, no place."""
     assert_reads(text, want, library)

@@ -139,6 +139,7 @@ INSIDE: tuple[Rule, ...] = (
     requests.ENSURED_STATE,
     requests.WISH_DROPPED,
     requests.OBLIGED_DROPPED,
+    requests.AGENT_DROPPED,
     requests.PERSON_NEED_DROPPED,
     clauses.PARTITIVE_OF,
     clauses.PARTICLE_BETWEEN_OBJECTS,

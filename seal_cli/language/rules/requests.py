@@ -1233,6 +1233,23 @@ def _obliged_dropped(s: State, i: int) -> Match | None:
     return Match(found[1])                        # "the bowl *should go* in ...": dropped, "put" was unsaid before
 
 
+_AGENTS = frozenset(["by you", "by yourself", "by the robot"])
+"""The robot named as the doer of a command said in the passive ("the cups must be counted *by you*": words39)."""
+
+
+def _agent_dropped(s: State, i: int) -> Match | None:
+    """"the cups must be counted *by you*", "Ana should be taken to the exit by you": in a clause said in the passive (its
+    verb unsaid before the thing, :func:`_obliged`, :func:`_person_needing`), "by you" at the clause's end names the
+    robot as who does it: nothing more to do, no place ("by" was read as "near you": the ground "you")."""
+    words = s.words
+    at = next((k for k in range(len(s.out) - 1, -1, -1) if s.out[k].tag == Tag.VERB), -1)
+    n = _phrase(s, i, _AGENTS)
+    if at < 0 or s.out[at].text or not n or i + n < len(words) and words[i + n].lower not in END_MARKS and \
+            words[i + n].lower not in (",", ";", "and", "then", "please"):
+        return None
+    return Match(n)
+
+
 _NEEDS_DONE = frozenset(["needs", "need", "wants", "has to be", "have to be", "needs to be", "need to be",
                          "wants to be", "should be", "must be", "is to be", "are to be"])
 """What a person said to need a verb done to them is said with ("Ana *needs* guiding to the door", "Ben *has to be*
@@ -1834,6 +1851,10 @@ PERSON_NEEDING = Rule("a person who needs leading", _person_needing, (
 PERSON_NEED_DROPPED = Rule("the need after the person", _person_need_dropped, (
     Example("Morgan needs to be led to the bookshelf", "needs to be led", ""),
 ), first_words(_NEEDS_DONE), "the 'needs to be led' of 'Morgan needs to be led to X', dropped: 'lead' was unsaid")
+AGENT_DROPPED = Rule("'by you' after a command said in the passive", _agent_dropped, (
+    Example("the jars must be counted by you", "by you", ""),
+    Example("Ada needs to be taken to the gate by you.", "you", ""),
+), frozenset(["by"]), "'by you' ending a clause said in the passive: the robot does it, no place")
 OBLIGED_DROPPED = Rule("the obligation after the thing", _obliged_dropped, (
     Example("the bowl should go in the dishwasher", "should go", ""),
 ), first_words(OBLIGED), "the 'should go' of 'the bowl should go in Y', dropped: 'put' was unsaid before")
