@@ -570,8 +570,9 @@ class Clauses:
         the kitchen*" (words39) — the robot goes; the object of the clause said before is not borrowed (it was "Bring
         the door to the kitchen", silently)."""
         frames = self.types.evoked_by(clause.unit or str(clause.verb.info))
-        return bool(clause.items) and all(isinstance(x, PP) and x.prep in ("to", "into", "onto") for x in clause.items) \
-            and any(f.elements and f.elements[0].role == "goal" or f.gets_held() for f in frames)
+        only_where = bool(clause.items) and all(isinstance(x, PP) and x.prep in ("to", "into", "onto")
+                                                for x in clause.items)
+        return only_where and any(f.elements and f.elements[0].role == "goal" or f.gets_held() for f in frames)
 
     def takes(self, clause: Clause) -> bool:
         """Whether the clause's verb takes a thing in hand (a frame of it has ``holding(theme)`` as a

@@ -340,7 +340,7 @@ def _unknown_verb(lexicon: Lexicon, word: str) -> str:
 def _one_letter_replaced(word: str, verb: str) -> bool:
     """Whether ``word`` is ``verb`` with one letter typed for another, past the first ("cound": count, "brimg": bring;
     words39). Such a slip is not read as the verb ("cound" is as near "could", "found", "round"): the refusal asks."""
-    return len(word) == len(verb) and word[0] == verb[0] and sum(a != b for a, b in zip(word, verb)) == 1
+    return len(word) == len(verb) and word[0] == verb[0] and sum(a != b for a, b in zip(word, verb, strict=True)) == 1
 
 
 def _first_column(text: str) -> int:

@@ -29,6 +29,7 @@ from seal_cli.language.morphology import (
     verb_lemma,
 )
 from seal_cli.language.rule import AFTER_SEP, Example, Match, Rule
+from seal_cli.language.rules.open_words import where_said
 from seal_cli.language.state import (
     CLOSED,
     INDEFINITE,
@@ -498,8 +499,8 @@ def _participles_joined(s: State, i: int) -> Match | None:
     gerund = gerund_lemma(words[j].lower)
     if not gerund or words[j].lower == gerund:
         return None
-    nxt, n = s.next_lower(j), match_phrase(words, j + 1, PREPOSITIONS) if j + 2 < len(words) else 0
-    tag = Tag.VBG_P if n > 1 and s.np_starts(j + 1 + n) else Tag.VBG_T if s.np_starts(j + 1) and nxt not in PARTICLES \
+    nxt = s.next_lower(j)
+    tag = Tag.VBG_P if where_said(s, j + 1) else Tag.VBG_T if s.np_starts(j + 1) and nxt not in PARTICLES \
         else Tag.VBG_P if nxt in PREPOSITIONS and s.np_starts(j + 2) else Tag.VBG_I
     last = s.out[-1]
     return Match(2, last=Word(s.text_of(last.start, words[j].end) or f"{last.text} and {words[j].text}", last.start,

@@ -138,8 +138,8 @@ _REASONS = frozenset(["since", "now that", "seeing as", "seeing that", "given th
 
 def _reason_first(s: State, i: int) -> Match | None:
     """A reason said before the command: "since", "now that", "because" and a statement, then a comma and the command
-    ("*Since you're in the kitchen anyway,* grab a spoon", "*now that Sam is here,* greet him"). The reason asks nothing:
-    it is kept as a remark, beside the command, and the clause starts after its comma."""
+    ("*Since you're in the kitchen anyway,* grab a spoon", "*now that Sam is here,* greet him"). The reason asks
+    nothing: it is kept as a remark, beside the command, and the clause starts after its comma."""
     words = s.words
     if s.out and s.out[-1].tag not in (Tag.POLITE, Tag.SEP):
         return None

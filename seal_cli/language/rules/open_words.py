@@ -29,13 +29,22 @@ from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 
 
+def where_said(s: State, k: int) -> bool:
+    """Whether a preposition of two words or more that says where a thing is ("next to", "in front of", "close to",
+    "on top of") and its noun phrase start at ``k``: a participle before it takes that phrase ("standing *next to*
+    the door"; words39). Not one of motion ("back to", "up to": "going *back to* the table")."""
+    words = s.words
+    n = match_phrase(words, k, PREPOSITIONS) if k + 1 < len(words) else 0
+    return n > 1 and words[k].lower not in ("back", "to") and \
+        PREPOSITIONS[" ".join(w.lower for w in words[k:k + n])] in LOCATIVE and s.np_starts(k + n)
+
+
 def _participle(s: State, i: int) -> Match | None:
     low, nxt = s.words[i].lower, s.next_lower(i)
     gerund = gerund_lemma(low)
     if not gerund or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.BE):
         return None
-    n = match_phrase(s.words, i + 1, PREPOSITIONS) if i + 2 < len(s.words) else 0
-    if n > 1 and s.np_starts(i + 1 + n):
+    if where_said(s, i + 1):
         return s.emit(i, 1, Tag.VBG_P, gerund)  # "the person standing *next to* the door" (words39): not "next" an NP
     tag = Tag.VBG_T if s.np_starts(i + 1) and nxt not in PARTICLES else \
         Tag.VBG_P if nxt in PREPOSITIONS and s.np_starts(i + 2) else Tag.VBG_I

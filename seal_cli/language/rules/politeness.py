@@ -115,7 +115,8 @@ _VERB_NEXT = frozenset(["to", "about", "mind"])
 *mind* switching ..."): with none after, the words are no politeness."""
 
 
-_WANT_YOU_BARE = frozenset(["i want you", "i need you", "i would like you", "i'd like you", "we want you", "we need you"])
+_WANT_YOU_BARE = frozenset(["i want you", "i need you", "i would like you", "i'd like you", "we want you",
+                            "we need you"])
 """A wish that the robot do something said without its "to", as learners of English say it ("*I want you* bring me the
 book": words39): politeness only when a verb of the library follows ("I need you here" stays a statement)."""
 

@@ -1238,9 +1238,9 @@ _AGENTS = frozenset(["by you", "by yourself", "by the robot"])
 
 
 def _agent_dropped(s: State, i: int) -> Match | None:
-    """"the cups must be counted *by you*", "Ana should be taken to the exit by you": in a clause said in the passive (its
-    verb unsaid before the thing, :func:`_obliged`, :func:`_person_needing`), "by you" at the clause's end names the
-    robot as who does it: nothing more to do, no place ("by" was read as "near you": the ground "you")."""
+    """"the cups must be counted *by you*", "Ana should be taken to the exit by you": in a clause said in the passive
+    (its verb unsaid before the thing, :func:`_obliged`, :func:`_person_needing`), "by you" at the clause's end names
+    the robot as who does it: nothing more to do, no place ("by" was read as "near you": the ground "you")."""
     words = s.words
     at = next((k for k in range(len(s.out) - 1, -1, -1) if s.out[k].tag == Tag.VERB), -1)
     n = _phrase(s, i, _AGENTS)
