@@ -554,7 +554,7 @@ class Clauses:
             together = "while" in join.split() or join.split()[:1] == ["as"] and join != "as well as"
             if together and ordered and not (self.takes(ordered[-1]) and not self.takes(clause)) \
                     or (join in ("when done", "once done") or join in FIRST_LATER) and ordered:  # "A after B": B first
-                if not (clause.objects or clause.message) and ordered[-1].objects:
+                if not (clause.objects or clause.message) and ordered[-1].objects and not self.goes(clause):
                     clause.objects = [ordered[-1].objects[0]]     # "put it away when done heating": it
                 elif clause.objects and clause.objects[0].pronoun in ("it", "them") and ordered[-1].objects and \
                         not ordered[-1].objects[0].pronoun:
@@ -563,6 +563,16 @@ class Clauses:
             else:
                 ordered.append(clause)
         return ordered
+
+    def goes(self, clause: Clause) -> bool:
+        """Whether the clause says only where to ("to", "into") and its verb may go there with no object (a frame of it
+        has the goal first, or takes a thing in hand: "get to", :meth:`Evoker.moving`): "open the door when you *get to
+        the kitchen*" (words39) — the robot goes; the object of the clause said before is not borrowed (it was "Bring
+        the door to the kitchen", silently)."""
+        frames = self.types.evoked_by(clause.unit or str(clause.verb.info))
+        only_where = bool(clause.items) and all(isinstance(x, PP) and x.prep in ("to", "into", "onto")
+                                                for x in clause.items)
+        return only_where and any(f.elements and f.elements[0].role == "goal" or f.gets_held() for f in frames)
 
     def takes(self, clause: Clause) -> bool:
         """Whether the clause's verb takes a thing in hand (a frame of it has ``holding(theme)`` as a

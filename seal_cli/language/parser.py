@@ -331,9 +331,17 @@ def _unknown_verb(lexicon: Lexicon, word: str) -> str:
     english = in_verb_tables(word) and word not in CLOSED                   # "this", "it": no verbs here
     close = [] if english else difflib.get_close_matches(word, lexicon.verbs, n=3, cutoff=0.75)
     if close or not lexicon.can:                 # "make" is a verb of English, no misspelt "take"
-        return f"unknown verb {word!r}; known verbs include {_some_verbs(lexicon, word)}"
+        meant = [verb for verb in close if _one_letter_replaced(word, verb)]
+        asked = f": did you mean {meant[0]!r}? (one letter differs)" if len(meant) == 1 else ""
+        return f"unknown verb {word!r}{asked}; known verbs include {_some_verbs(lexicon, word)}"
     return (f"unknown verb {word!r}: no frame of the library does it; the robot can {_either(list(lexicon.can))} "
             f"({len(lexicon.verbs)} verbs in all; `seal frames` lists them)")
+
+
+def _one_letter_replaced(word: str, verb: str) -> bool:
+    """Whether ``word`` is ``verb`` with one letter typed for another, past the first ("cound": count, "brimg": bring;
+    words39). Such a slip is not read as the verb ("cound" is as near "could", "found", "round"): the refusal asks."""
+    return len(word) == len(verb) and word[0] == verb[0] and sum(a != b for a, b in zip(word, verb, strict=True)) == 1
 
 
 def _first_column(text: str) -> int:

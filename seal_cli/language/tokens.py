@@ -164,9 +164,14 @@ _MARKER = re.compile(r"""
     (?:(?:step|part)\s+)?                                      # "Step 1:"
     (?P<mark>\(\s*(?:[0-9]{1,2}|[a-z])\s*\)                   # "(1)", "(a)"
       |(?:[0-9]{1,2}|[a-z])\s*\)                             # "1)", "a)"
-      |[0-9]{1,2}\s*(?:[.:](?!\d)|-(?=\s)))                   # "1.", "1:", "1 -"
+      |[0-9]{1,2}\s*(?:[.:](?!\d)|-(?=\s))                    # "1.", "1:", "1 -"
+      |(?<=step\s|part\s)(?:one|two|three|four|five|six|seven|eight|nine|ten)\s*[.:])   # "Step one:" (words39)
     (?=\s)""", re.VERBOSE | re.IGNORECASE)
-"""A mark that numbers a step of a list: "1)", "(2)", "3.", "a)", "1 -", "Step 1:"."""
+"""A mark that numbers a step of a list: "1)", "(2)", "3.", "a)", "1 -", "Step 1:", "Step one:"."""
+
+_STEP_WORDS = {word: str(k) for k, word in enumerate(
+    ["one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten"], start=1)}
+"""The number words of "Step one:", "Step two:" as the digits they count (words39)."""
 
 
 def _list_markers_read(read: str) -> str:
@@ -218,7 +223,8 @@ def _bracket_pairs(read: str) -> frozenset[int]:
 
 
 def _label(mark: str) -> str:
-    return mark.strip("()- .:\t").strip().lower()
+    label = mark.strip("()- .:\t").strip().lower()
+    return _STEP_WORDS.get(label, label)
 
 
 def _next_label(label: str) -> str:

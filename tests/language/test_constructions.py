@@ -3367,7 +3367,7 @@ def test_your_job_without_its_colon_announces_nothing(library: Library) -> None:
     ("what's in the shed, kindly tell me", [("Tell", {"message": "what's in the shed"})]),
     ("the jars on the shelf, how many are there?", [("Count", {"theme": "jar", "ground": "shelf"})]),
     ("the kids in the den, how many of them are left", [("Count", {"theme": "kid", "ground": "den"})]),
-    ("the jars on the shelf, how many is that", None),
+    ("the jars on the shelf, how many is that", [("Count", {"theme": "jar", "ground": "shelf"})]),   # words39
 ])
 def test_what_crowd_workers_ask_and_wish(text: str, want: list[tuple[str, dict[str, str]]] | None,
                                          library: Library) -> None:
@@ -3628,3 +3628,80 @@ def test_a_phrase_said_first_with_a_relative_clause_without_that_is_what_it_stan
     "she", so "it" stood for nothing the scorer could find; words38)."""
     assert frames("the scarf she knitted, put it in the drawer", library) == [
         ("Place", {"theme": "scarf", "goal": "drawer"})]
+# words39: how crowd workers of many voices word GPSR commands — each a general construction, examples of my own
+@pytest.mark.parametrize(("text", "want"), [
+    ("count the kids in the den that are sitting and wearing caps", [("Count", {"theme": "kid", "ground": "den"})]),
+    ("find the girl standing and waving in the hall", [("Find", {"theme": "girl", "ground": "hall"})]),
+    ("find the boy standing and bring him a cup", [("Find", {"theme": "boy"}), ("Bring", {"theme": "cup",
+                                                                                          "recipient": "boy"})]),
+    ("the spoons in the drawer, how many is that?", [("Count", {"theme": "spoon", "ground": "drawer"})]),
+    ("the jars on the shelf, how many are they", [("Count", {"theme": "jar", "ground": "shelf"})]),
+    ("greet the man standing next to the gate", [("Greet", {"theme": "man"})]),
+    ("Ada just arrived at the gate, take her to the den",
+     [("Guide", {"theme": "Ada", "source": "gate", "goal": "den"})]),
+    ("get acquainted with Tom at the gate", [("Meet", {"theme": "Tom", "ground": "gate"})]),
+    ("meet with Tom in the den", [("Meet", {"theme": "Tom", "ground": "den"})]),
+    ("meet up with Tom at the gate", [("Meet", {"theme": "Tom", "ground": "gate"})]),
+    ("wave hello to Ada in the hall", [("Greet", {"theme": "Ada", "ground": "hall"})]),
+    ("open the shed and, you know, shut the gate", [("Open", {"theme": "shed"}), ("Close", {"theme": "gate"})]),
+    ("fetch, like, the biggest box from the shed", [("Pick", {"theme": "box", "source": "shed"})]),
+    ("how about you shut the gate?", [("Close", {"theme": "gate"})]),
+    ("since you are in the shed anyway, grab the rake", [("Pick", {"theme": "rake"})]),
+    ("now that Tom is here, open the gate", [("Open", {"theme": "gate"})]),
+    ("hey pal, the gate is open, shut it", [("Close", {"theme": "gate"})]),
+    ("Garage: fetch the drill", [("Pick", {"theme": "drill", "source": "garage"})]),
+    ("the hallway - count the boxes", [("Count", {"theme": "box", "ground": "hallway"})]),
+    ("Step one: go to the den. Step two: open the window.", [("Go", {"goal": "den"}), ("Open", {"theme": "window"})]),
+    ("I want you open the gate", [("Open", {"theme": "gate"})]),
+    ("I want you here", None),                        # no verb of the library after it: a statement, refused
+    ("Ada went to the gate", None),                   # a name and a past verb: a statement, no Go
+])
+def test_what_crowd_workers_of_many_voices_say(text: str, want: list[tuple[str, dict[str, str]]] | None,
+                                               library: Library) -> None:
+    """words39, after paraphrases17's first score."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("who is knocking on the gate, do you think?", "who is knocking on the gate"),
+    ("what's in the shed, would you say?", "what's in the shed"),
+    ("what is on the desk, the lamp or the book?", "what is on the desk, the lamp or the book"),
+])
+def test_the_question_asked_again_is_not_told(text: str, want: str, library: Library) -> None:
+    """words39: ", do you think?" after a question asks it again; it is no part of what to tell."""
+    (tell,) = parse_command(text, library).frames
+    assert tell.frame == "Tell" and tell.elements["message"].text == want
+
+
+def test_a_verb_with_one_letter_replaced_is_refused_with_the_verb_meant(library: Library) -> None:
+    """words39: "cound" is as near "could", "found" and "round" as "count": not read, but the refusal names it."""
+    with pytest.raises(CommandError, match="did you mean 'count'"):
+        parse_command("cound the jars", library)
+    with pytest.raises(CommandError) as caught:
+        parse_command("make the bed", library)           # a verb of English: no slip asked about
+    assert "did you mean" not in caught.value.message
+
+
+def test_a_reason_said_first_is_a_remark(library: Library) -> None:
+    """words39: the reason is kept beside the command, never dropped silently."""
+    parse = parse_command("because it is cold, shut the window", library)
+    assert [f.frame for f in parse.frames] == ["Close"] and parse.remarks == ("because it is cold",)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("tell to me how many jars are in the shed", [("Count", {"theme": "jar", "ground": "shed"})]),
+    ("mug -> sink", [("Bring", {"theme": "mug", "recipient": "me", "goal": "sink"})]),
+    ("open the shed -> grab the rake", [("Open", {"theme": "shed"}), ("Pick", {"theme": "rake"})]),
+    ("open the gate when you get to the shed", [("Go", {"goal": "shed"}), ("Open", {"theme": "gate"})]),
+    ("greet Ada after you get to the hall", [("Go", {"goal": "hall"}), ("Greet", {"theme": "Ada"})]),
+    ("put the mug on the shelf after taking from the sink",
+     [("Pick", {"theme": "mug", "source": "sink"}), ("Place", {"theme": "mug", "goal": "shelf"})]),
+    ("the jars in the shed must be counted by you", [("Count", {"theme": "jar", "ground": "shed"})]),
+    ("put the mug by you", [("Place", {"theme": "mug", "goal": "you"})]),
+])
+def test_a_learners_tell_to_me_and_an_arrow_between_bare_phrases(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words39: "tell to me how many" is the unit "tell me how many"; an arrow between two bare phrases says where
+    the first goes (between clauses it still joins them); "when you get to X" after a command is going there, not
+    the command's object brought there; "by you" after a passive command is the robot, no place."""
+    assert_reads(text, want, library)

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from seal_cli.language.english import (
     BE_WORDS,
+    BECAUSE,
     BEING_AT,
     BEING_MEANS,
     CLOCK_PREPOSITIONS,
@@ -34,8 +35,10 @@ from seal_cli.language.english import (
     TIME_UNITS,
     TIME_WORDS,
     TIMES_SAID,
+    is_room_word,
 )
-from seal_cli.language.morphology import gerund_lemma, is_adverb, participles, parts_of_speech, verb_lemma
+from seal_cli.language.morphology import gerund_lemma, is_adverb, noun_lemma, participles, parts_of_speech, verb_lemma
+from seal_cli.language.premises import is_premises
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.rules.numbers import TEENS, TENS
 from seal_cli.language.state import CLOSED, LEAD_FIRST, TIME_FIRST, State, first_words, match_phrase, merge
@@ -172,6 +175,56 @@ def _longest(s: State, i: int, table: frozenset[str]) -> int:
     words = s.words
     return max((len(p.split()) for p in table if i + len(p.split()) <= len(words) and
                 all(words[i + k].lower == w for k, w in enumerate(p.split()))), default=0)
+
+
+_REASONS = frozenset(["since", "now that", "seeing as", "seeing that", "given that", *BECAUSE])
+"""Words that open a reason said before the command ("*since* you're in the kitchen anyway, grab a spoon": words39)."""
+
+
+def _reason_first(s: State, i: int) -> Match | None:
+    """A reason said before the command: "since", "now that", "because" and a statement, then a comma and the command
+    ("*Since you're in the kitchen anyway,* grab a spoon", "*now that Sam is here,* greet him"). The reason asks
+    nothing: it is kept as a remark, beside the command, and the clause starts after its comma."""
+    words = s.words
+    if s.out and s.out[-1].tag not in (Tag.POLITE, Tag.SEP):
+        return None
+    n = _longest(s, i, _REASONS)
+    end = s.statement_at(i + n) if n else 0
+    if not end or end >= len(words) or words[end].lower != "," or not s.verb_after(end + 1):
+        return None
+    return Match(end + 1 - i, remarks=((words[i].start, words[end - 1].end),), expect=True)
+
+
+_HEADING_MARKS = frozenset([":", ";", ".", ","])
+"""Marks after a room said as a heading before the command ("*Bedroom:* find Jane", "*Office -* count people": the
+tokenizer reads a dash as ";")."""
+
+
+def _room_heading(s: State, i: int) -> Match | None:
+    """A room said alone before the command, as a heading, with a colon, a dash, a full stop or a comma after it
+    ("*Bedroom:* find Jane", "*the pantry.* find the tuna", "*Office -* count the people"; words39): where the
+    command is done, as "in the bedroom, find Jane" says it. Only a room (``english.is_room_word`` or a part of a
+    building, ``premises``): a thing said so stays a bare phrase ("cola, fridge"); a name so is one addressed."""
+    words = s.words
+    if any(w.tag != Tag.POLITE for w in s.out):
+        return None
+    j = i + (words[i].lower == "the")
+    k = j
+    while k < len(words) and k < j + 2 and words[k].lower.isalpha() and s.verb_at(k) is None and \
+            words[k].lower not in CLOSED:
+        k += 1
+    if k == j or k + 1 >= len(words) or words[k].lower not in _HEADING_MARKS or not s.verb_after(k + 1):
+        return None
+    nouns = [w.lower for w in words[j:k]]
+    if not (is_room_word(nouns) or is_premises(noun_lemma(nouns[-1]) or nouns[-1])):
+        return None
+    at = words[i].start
+    out = [Word("", at, at, Tag.PREP, "in", "in")]
+    if j > i:
+        out.append(words[i].tagged(Tag.DET))
+    out.extend(w.tagged(Tag.WORD) for w in words[j:k])
+    out.append(Word(words[k].text, words[k].start, words[k].end, Tag.SEP, None, ","))
+    return Match(k + 1 - i, tuple(out), expect=True)
 
 
 def _being_at(s: State, i: int) -> Match | None:
@@ -420,6 +473,15 @@ TIME_SAID_FIRST = Rule("a time said first", _time_first, (
 ), TIME_FIRST | TIME_FIRST_LEAD | frozenset(["this", "in", "at", "from"]) | CLOCK_PREPOSITIONS | FREQUENCY_LEADS |
     TIMES_SAID | frozenset(NUMBERS) | frozenset(str(n) for n in range(2, 13)),
     "a time before the verb ('in five minutes', 'tonight', 'after lunch'): when, kept as the frame's time")
+ROOM_HEADING = Rule("a room said as a heading", _room_heading, (
+    Example("Garage: fetch the drill", "Garage", Tag.WORD),
+    Example("the hallway - count the boxes", "hallway", Tag.WORD),
+), None, "a room alone and a colon, dash or stop before the command: where it is done ('in the garage, ...')")
+REASON_FIRST = Rule("a reason said first", _reason_first, (
+    Example("Since you're in the shed anyway, grab the rake", "rake", Tag.WORD),
+    Example("now that Sam is here, open the gate", "gate", Tag.WORD),
+), frozenset(["since", "now", "seeing", "given", *BECAUSE]), "'since' and a statement, then a comma, before the "
+   "command: a reason, kept as a remark")
 SUBORDINATE = Rule("subordinate clause first", _subordinate, (
     Example("If the door is open, close it", "If the door is open,", Tag.COND),
     Example("When you reach the kitchen, open the fridge", "When you", Tag.POLITE),

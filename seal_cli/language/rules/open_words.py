@@ -30,11 +30,23 @@ from seal_cli.language.tokens import Word, capitalised
 from seal_cli.language.verb_objects import takes_object
 
 
+def where_said(s: State, k: int) -> bool:
+    """Whether a preposition of two words or more that says where a thing is ("next to", "in front of", "close to",
+    "on top of") and its noun phrase start at ``k``: a participle before it takes that phrase ("standing *next to*
+    the door"; words39). Not one of motion ("back to", "up to": "going *back to* the table")."""
+    words = s.words
+    n = match_phrase(words, k, PREPOSITIONS) if k + 1 < len(words) else 0
+    return n > 1 and words[k].lower not in ("back", "to") and \
+        PREPOSITIONS[" ".join(w.lower for w in words[k:k + n])] in LOCATIVE and s.np_starts(k + n)
+
+
 def _participle(s: State, i: int) -> Match | None:
     low, nxt = s.words[i].lower, s.next_lower(i)
     gerund = gerund_lemma(low)
     if not gerund or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.BE, Tag.AND_VBG):
         return None
+    if where_said(s, i + 1):
+        return s.emit(i, 1, Tag.VBG_P, gerund)  # "the person standing *next to* the door" (words39): not "next" an NP
     tag = Tag.VBG_T if s.np_starts(i + 1) and nxt not in PARTICLES and not _second_object(s, gerund) else \
         Tag.VBG_P if nxt in PREPOSITIONS and s.np_starts(i + 2) else Tag.VBG_I
     return s.emit(i, 1, tag, gerund)
@@ -235,11 +247,14 @@ PARTICIPLE = Rule("participle after a noun", _participle, (
     Example("find the person sitting", "sitting", Tag.VBG_I),
     Example("count the men standing and holding umbrellas", "holding", Tag.VBG_T),
     Example("hand the man snoozing his paper", "snoozing", Tag.VBG_I),     # the paper is handed (words38)
+    Example("find the person standing next to the door", "standing", Tag.VBG_P),
 ), lambda low: bool(gerund_lemma(low)),
     "an -ing form after a noun, a pronoun or 'is': transitive, with a preposition, or bare")
 AND_PARTICIPLE = Rule("and between participles", _and_participle, (
     Example("count the people sitting and wearing hats", "and", Tag.AND_VBG),
     Example("find the girl standing and talking on the phone", "and", Tag.AND_VBG),
+    Example("find the girls that are standing and wearing hats", "and", Tag.AND_VBG),
+    Example("count the people sitting and waving in the kitchen", "and", Tag.AND_VBG),
 ), frozenset(["and"]), "'and' between two participles that describe one noun: the second describes it too")
 FILLED_WITH = Rule("participle before with", _filled_with, (
     Example("put a bowl filled with water in the cabinet", "filled", ""),

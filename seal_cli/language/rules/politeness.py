@@ -9,6 +9,7 @@ from seal_cli.language.english import (
     ASKED_AGAIN,
     DETERMINERS,
     END_MARKS,
+    FREQUENCY_ADVERBS,
     GREETINGS,
     KNOW_WISHES,
     NP_OPENERS,
@@ -60,12 +61,20 @@ def _asked_again(s: State, i: int) -> Match | None:
     if not s.out or s.out[-1].tag != Tag.SEP or s.out[-1].lower != "," or \
             not any(w.tag == Tag.VERB and w.info in _ASKING for w in s.out):
         return None
+    n = asked_again_at(s, i)
+    return Match(n, (merge(words, i, n, Tag.POLITE),)) if n else None
+
+
+def asked_again_at(s: State, i: int) -> int:
+    """How many words from ``i`` ask the question before them again and end the command (", *do you think*?",
+    ", *can you tell me*", ", *kindly tell me*"); 0: none (words37, shared with the question's own end: words39)."""
+    words = s.words
     n = _said(s, i, TAG_QUESTIONS | _DO_YOU) or _said(s, i, _ASKED_NICELY)
     m = _said(s, i + n, ASKED_AGAIN) or (_said(s, i + n, _OPINION_ASKED) if n and words[i].lower not in
                                          _ASKED_NICELY else 0)
     if not m or not all(w.lower in END_MARKS for w in words[i + n + m:]):
-        return None
-    return Match(n + m, (merge(words, i, n + m, Tag.POLITE),))
+        return 0
+    return n + m
 
 
 def _formula(s: State, i: int) -> Match | None:
@@ -106,9 +115,18 @@ _VERB_NEXT = frozenset(["to", "about", "mind"])
 *mind* switching ..."): with none after, the words are no politeness."""
 
 
+_WANT_YOU_BARE = frozenset(["i want you", "i need you", "i would like you", "i'd like you", "we want you",
+                            "we need you"])
+"""A wish that the robot do something said without its "to", as learners of English say it ("*I want you* bring me the
+book": words39): politeness only when a verb of the library follows ("I need you here" stays a statement)."""
+
+
 def _politeness(s: State, i: int) -> Match | None:
     words, low = s.words, s.words[i].lower
     n = match_phrase(words, i, POLITE)
+    bare = longest_phrase(words, i, _WANT_YOU_BARE) if low in ("i", "we", "i'd") else 0
+    if bare > n and s.verb_after(i + bare):
+        return Match(bare, (merge(words, i, bare, Tag.POLITE),))
     if low == "to" and n == 1 and _goal_said_first(s, i):
         return None                                   # "*To the dining room,* follow Jane": where, said first
     if low in _ORDINALS and not (i + 1 < len(words) and words[i + 1].lower in (",", ";", ":") or s.verb_after(i + 1)):
@@ -246,11 +264,16 @@ def _addressed(s: State, i: int) -> Match | None:
     if not n:
         return None
     k = i + n
-    if k < len(words) and words[k].lower == "," and (s.verb_after(k + 1) or s.asks_at(k + 1)) if k + 1 < len(words) \
+    if k < len(words) and words[k].lower == "," and (s.verb_after(k + 1) or s.asks_at(k + 1) or
+                                                     greeted and s.statement_at(k + 1)) if k + 1 < len(words) \
             else False:
         return Match(n + 1, (merge(words, i, n + 1, Tag.POLITE),))   # "alexa, switch off the tv", "young man, ..."
-    nxt = words[i + 1].lower if i + 1 < len(words) else ""
-    if nxt and s.verb_at(i + 1) is not None and verb_lemma(nxt) != nxt:
+    m = i + 1
+    while m + 1 < len(words) and s.verb_at(m) is None and words[m].lower.isalpha() and \
+            (is_adverb(words[m].lower) or words[m].lower in FREQUENCY_ADVERBS):
+        m += 1                                        # "Morgan *just* arrived": an adverb before the verb (words39)
+    nxt = words[m].lower if m < len(words) else ""
+    if nxt and s.verb_at(m) is not None and verb_lemma(nxt) != nxt:
         return None                                   # "Priya went to the garage": a subject and its finite verb
     if (greeted or words[i].lower in GREETINGS or not parts_of_speech(words[i].lower) - {"noun"}) and \
             s.verb_after(i + 1):
@@ -302,6 +325,37 @@ def _like_filler(s: State, i: int) -> Match | None:
             (s.verb_after(i + 1) or words[i + 1].lower == "," and s.verb_after(i + 2)):
         return Match(1 + (words[i + 1].lower == ","))             # "can you *like* grab my bag": a filler
     return None
+
+
+_SPOKEN_FILLERS = frozenset(["you know", "i mean", "like", "basically", "so basically", "you see"])
+"""Words a speaker fills a pause with, said between commas where a clause starts ("go to the office and, *you know*,
+find Morgan"; words39): they ask nothing."""
+
+
+def _spoken_filler(s: State, i: int) -> Match | None:
+    words = s.words
+    if not s.expect_verb or s.out and s.out[-1].tag not in (Tag.SEP, Tag.POLITE):
+        return None
+    n = _said(s, i, _SPOKEN_FILLERS)
+    if not n or i + n + 1 >= len(words) or words[i + n].lower != ",":
+        return None
+    after = words[i + n + 1].lower
+    if not s.verb_after(i + n + 1) and not (in_verb_tables(after) and verb_lemma(after) == after and
+                                            after not in CLOSED and after not in SUBJECTS):
+        return None             # a clause's verb follows ("I mean, *see* if Jane is there"), known or not
+    return Match(n + 1)
+
+
+def _filler_inside(s: State, i: int) -> Match | None:
+    """", like," / ", you know," / ", I mean," between commas inside a clause ("find*, like,* the biggest box";
+    words39): a pause filled, nothing said; the clause goes on after it."""
+    words = s.words
+    if s.expect_verb or i + 3 >= len(words):
+        return None
+    n = _said(s, i + 1, _SPOKEN_FILLERS)
+    if not n or i + n + 2 >= len(words) or words[i + n + 1].lower != "," or words[i + n + 2].lower in END_MARKS:
+        return None
+    return Match(n + 2)
 
 
 def _please_inside(s: State, i: int) -> Match | None:
@@ -380,6 +434,7 @@ POLITENESS = Rule("politeness", _politeness, (
     Example("do you mind switching the fan on", "do you mind", Tag.POLITE),
     Example("And who is in the kitchen?", "And", Tag.POLITE),
     Example("would you close the gate", "would you", Tag.POLITE),
+    Example("I want you open the gate", "I want you", Tag.POLITE),
 ), None, "politeness words and phrases before the verb (english.POLITE)")
 ATTENTION = Rule("look, listen", _attention, (
     Example("Look, the window is open. Close it.", "Look,", Tag.POLITE),
@@ -413,6 +468,14 @@ RELAYED = Rule("a request passed on", _relayed, (
 LIKE_FILLER = Rule("like as a filler", _like_filler, (
     Example("could you like pass me the salt", "like", ""),
 ), frozenset(["like"]), "'like' after politeness and before the verb: a filler")
+SPOKEN_FILLER = Rule("a spoken filler before its comma", _spoken_filler, (
+    Example("open the shed and, you know, shut it", "you", ""),
+    Example("I mean, grab the mop", "mean", ""),
+), frozenset(["you", "i", "like", "basically", "so"]), "'you know,' / 'I mean,' where a clause starts: a filler")
+FILLER_INSIDE = Rule("a spoken filler between commas inside a clause", _filler_inside, (
+    Example("fetch, like, the biggest box from the shed", "like", ""),
+    Example("put the mug, you know, in the sink", "know", ""),
+), frozenset([","]), "', like,' / ', you know,' inside a clause: a filler")
 PLEASE_INSIDE = Rule("please inside a clause", _please_inside, (
     Example("bring me, please, a glass of juice", "please", ""),
     Example("turn the heater on please, I'm shivering", "please", ""),

@@ -75,6 +75,7 @@ from seal_cli.language.morphology import (
     verb_lemma,
 )
 from seal_cli.language.rule import Example, Match, Rule
+from seal_cli.language.rules.politeness import asked_again_at
 from seal_cli.language.state import CLOSED, State, first_words, longest_phrase, lower_case_name, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
@@ -114,11 +115,21 @@ def _question(s: State, i: int) -> Match | None:
     nxt = words[i + 1].lower
     if nxt not in ("is", "are", "'s", "was", "were") and not nxt.isalpha() or _phrase(s, i, _PSEUDO_CLEFTS):
         return None                               # "what I need is X": a wish (``WISHED_STATE``), no question
-    end = s.speech_end(i)                         # the question, whatever its shape, is what to tell
+    end = _asked_again_cut(s, i, s.speech_end(i))  # the question, whatever its shape, is what to tell
     if end - i < 3 and words[end - 1].lower in ("is", "are", "'s", "was", "were"):
         return None                               # "what is": no question yet
     return Match(end - i, (_unsaid(words[i].start, Tag.VERB, QUESTION_MEANS), s.emit(i, end - i, Tag.SAID).words[0]),
                  expect=False, verb=QUESTION_MEANS, using=False)
+
+
+def _asked_again_cut(s: State, i: int, end: int) -> int:
+    """Where a question from ``i`` to ``end`` ends once the same question asked again after its last comma is left out
+    ("who is at the door*, do you think*?": the hearer's opinion asked, not part of what to tell; words39)."""
+    words = s.words
+    for c in range(end - 1, i + 1, -1):
+        if words[c].lower == ",":
+            return c if asked_again_at(s, c + 1) >= end - c - 1 > 0 else end
+    return end
 
 
 def _where(s: State, i: int) -> Match | None:
@@ -833,8 +844,9 @@ def _told_how_many(s: State, i: int) -> Match | None:
     m = _phrase(s, k, _TOLD_PEOPLE)
     k += m
     if k + 1 >= len(words) or words[k].lower != "how" or words[k + 1].lower != "many" or \
-            found[0] == NUMBER_MEANS.split()[0] and m:
-        return None                               # "tell me how many": the unit itself, read as it is
+            found[0] == NUMBER_MEANS.split()[0] and m and words[k - m].lower != "to":
+        return None                               # "tell me how many": the unit itself, read as it is; "tell *to*
+        #   me how many", as learners of English say it, is the unit's too (words39)
     end = words[k + 1].end
     return Match(k + 2 - i, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, NUMBER_MEANS),),
                  expect=False, verb=NUMBER_MEANS, using=False)
@@ -1219,6 +1231,23 @@ def _obliged_dropped(s: State, i: int) -> Match | None:
     if found is None or found[0] != i or _obliged_unit(s, *found) is None:
         return None                               # only the obligation of the unsaid verb's own phrase
     return Match(found[1])                        # "the bowl *should go* in ...": dropped, "put" was unsaid before
+
+
+_AGENTS = frozenset(["by you", "by yourself", "by the robot"])
+"""The robot named as the doer of a command said in the passive ("the cups must be counted *by you*": words39)."""
+
+
+def _agent_dropped(s: State, i: int) -> Match | None:
+    """"the cups must be counted *by you*", "Ana should be taken to the exit by you": in a clause said in the passive
+    (its verb unsaid before the thing, :func:`_obliged`, :func:`_person_needing`), "by you" at the clause's end names
+    the robot as who does it: nothing more to do, no place ("by" was read as "near you": the ground "you")."""
+    words = s.words
+    at = next((k for k in range(len(s.out) - 1, -1, -1) if s.out[k].tag == Tag.VERB), -1)
+    n = _phrase(s, i, _AGENTS)
+    if at < 0 or s.out[at].text or not n or i + n < len(words) and words[i + n].lower not in END_MARKS and \
+            words[i + n].lower not in (",", ";", "and", "then", "please"):
+        return None
+    return Match(n)
 
 
 _NEEDS_DONE = frozenset(["needs", "need", "wants", "has to be", "have to be", "needs to be", "need to be",
@@ -1731,6 +1760,7 @@ QUESTION = Rule("bare question", _question, (
     Example("What's the biggest thing on the shelf?", "What's the biggest thing on the shelf", Tag.SAID),
     Example("which of the bottles in the pantry is the biggest?", "", Tag.VERB),
     Example("who is in the kitchen?", "", Tag.VERB),
+    Example("who is knocking on the gate, would you say?", "who is knocking on the gate", Tag.SAID),
 ), QUESTION_WORDS, "a question where a command starts: 'tell me' and the question")
 WHERE = Rule("where is", _where, (
     Example("where is the cup?", "where is", Tag.VERB),
@@ -1821,6 +1851,10 @@ PERSON_NEEDING = Rule("a person who needs leading", _person_needing, (
 PERSON_NEED_DROPPED = Rule("the need after the person", _person_need_dropped, (
     Example("Morgan needs to be led to the bookshelf", "needs to be led", ""),
 ), first_words(_NEEDS_DONE), "the 'needs to be led' of 'Morgan needs to be led to X', dropped: 'lead' was unsaid")
+AGENT_DROPPED = Rule("'by you' after a command said in the passive", _agent_dropped, (
+    Example("the jars must be counted by you", "by you", ""),
+    Example("Ada needs to be taken to the gate by you.", "you", ""),
+), frozenset(["by"]), "'by you' ending a clause said in the passive: the robot does it, no place")
 OBLIGED_DROPPED = Rule("the obligation after the thing", _obliged_dropped, (
     Example("the bowl should go in the dishwasher", "should go", ""),
 ), first_words(OBLIGED), "the 'should go' of 'the bowl should go in Y', dropped: 'put' was unsaid before")
@@ -1949,6 +1983,7 @@ WHETHER_BE = Rule("is, after see if X", _whether_be, (
 TOLD_HOW_MANY = Rule("said how many", _told_how_many, (
     Example("Report to me how many cups are in the sink.", "Report to me how many", Tag.VERB),
     Example("say how many people are in the hall", "say how many", Tag.VERB),
+    Example("tell to me how many jars are in the shed", "tell to me how many", Tag.VERB),
 ), None, "a verb of saying and 'how many': tell me how many (Count)")
 HOW_MANY_SEEN = Rule("how many X can you see", _how_many_seen, (
     Example("How many dishes can you see on the dining table?", "can", ""),
@@ -2106,9 +2141,14 @@ def _phrase_asked(s: State, i: int) -> Match | None:
                  expect=False, verb=QUESTION_MEANS, using=False)
 
 
+_COUNTED_TAKEN_UP = frozenset(["that", "those", "these", "they"])
+"""Pronouns after "how many is/are" that take up the phrase said before the comma (words39)."""
+
+
 def _count_tail(s: State, k: int) -> int:
     """How many words from the comma at ``k`` to the sentence's end ask how many of the phrase before it there are
-    (", how many are there?", ", how many of them are left", ", how many is there": words37); 0 if they do not."""
+    (", how many are there?", ", how many of them are left", ", how many is there": words37; ", how many is that?",
+    ", how many are they": words39); 0 if they do not."""
     words = s.words
     if k + 3 >= len(words) or words[k].lower != "," or words[k + 1].lower != "how" or words[k + 2].lower != "many":
         return 0
@@ -2119,6 +2159,8 @@ def _count_tail(s: State, k: int) -> int:
         m += 1
     else:
         return 0
+    if m < len(words) and words[m].lower in _COUNTED_TAKEN_UP:
+        m += 1                  # ", how many *is that*?", ", how many are *they*?": a pronoun takes up the phrase
     while m < len(words) and words[m].lower in ("there", "left", "remaining", "in", "here", "now"):
         if words[m].lower == "in" and not (m + 1 < len(words) and words[m + 1].lower == "there"):
             return 0
@@ -2234,6 +2276,7 @@ PHRASE_ASKED = Rule("phrase said before a question that takes it up", _phrase_as
 PHRASE_COUNTED = Rule("phrase said before how many", _phrase_counted, (
     Example("the jars on the shelf, how many are there?", "the", Tag.DET),
     Example("those mugs in the sink, how many of them are left", "those", Tag.DET),
+    Example("the spoons in the drawer, how many is that?", "the", Tag.DET),
 ), first_words(NP_OPENERS), "a noun phrase and a comma before 'how many are there': count what it names")
 COUNT_TAIL_DROPPED = Rule("how many are there, after the phrase counted", _count_tail_dropped, (
     Example("the jars on the shelf, how many are there?", "how", ""),

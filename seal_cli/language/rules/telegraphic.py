@@ -133,6 +133,9 @@ def _telegraphic(s: State, i: int) -> Match | None:
             out += [words[a].tagged(Tag.PREP, PREPOSITIONS[" ".join(w.lower for w in words[a:a + n])]),
                     *_np_words(s, a + n, b)]
             path_said = True
+        elif kind == "np" and not path_said and verb == REQUEST_MEANS and words[a - 1].text.endswith(">"):
+            out += [_unsaid(words[a].start, Tag.PREP, PREPOSITIONS["to"], "to"), *_np_words(s, a, b)]
+            path_said = True                         # "bowl -> dishwasher": an arrow says where to (words39)
         elif kind != "urgent":
             remarks.append((words[a].start, words[b - 1].end))
     return Match(len(words) - i, tuple(out), remarks=tuple(remarks), expect=False, verb=verb, using=False)
@@ -143,4 +146,5 @@ TELEGRAPHIC = Rule("a command in bare phrases", _telegraphic, (
     Example("blanket. lounge. quick", "blanket", Tag.WORD),
     Example("boots. now. from the hall", "from", Tag.PREP),
     Example("tea, milk, two sugars", "tea", Tag.WORD),
+    Example("mug -> sink", "sink", Tag.WORD),
 ), None, "bare phrases and no verb: go to the one place named, else bring the first thing asked for")
