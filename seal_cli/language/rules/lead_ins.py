@@ -33,7 +33,7 @@ from seal_cli.language.english import (
     TIME_WORDS,
 )
 from seal_cli.language.morphology import gerund_lemma, is_adverb, participles, parts_of_speech, verb_lemma
-from seal_cli.language.rule import Example, Match, Rule
+from seal_cli.language.rule import START, Example, Match, Rule
 from seal_cli.language.rules.numbers import TEENS, TENS
 from seal_cli.language.state import CLOSED, LEAD_FIRST, TIME_FIRST, State, first_words, match_phrase, merge
 from seal_cli.language.tags import Tag
@@ -413,4 +413,4 @@ POLITE_FRAME = Rule("if you could", _polite_frame, (
     Example("it would be nice if you opened the gate", "it would be nice if you", Tag.POLITE),
     Example("I think you should follow her", "I think you should", Tag.POLITE),
     Example("I suppose you need to wash the cup", "I suppose you need to", Tag.POLITE),
-), None, "a polite frame ending in 'you could' before the verb")
+), None, "a polite frame ending in 'you could' before the verb", after=frozenset([START, Tag.POLITE]))

@@ -74,7 +74,7 @@ from seal_cli.language.morphology import (
     parts_of_speech,
     verb_lemma,
 )
-from seal_cli.language.rule import Example, Match, Rule
+from seal_cli.language.rule import START, Example, Match, Rule
 from seal_cli.language.state import CLOSED, State, first_words, longest_phrase, lower_case_name, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
@@ -1831,7 +1831,8 @@ WISHED_PLACED_RULE = Rule("a wish for where a thing is", _wished_placed, (
 THING_PLACED = Rule("a thing and where it goes, no verb", _thing_placed, (
     Example("mug in the sink", "", Tag.VERB),
     Example("the dirty cups in the dishwasher.", "", Tag.VERB),
-), None, "'mug in the sink': a sentence of only a thing and a place of putting is putting it there")
+), None, "'mug in the sink': a sentence of only a thing and a place of putting is putting it there",
+   after=frozenset([START, Tag.END, Tag.POLITE]))
 REQUEST = Rule("wish for a thing", _request, (
     Example("I'd like the red mug", "I'd like", Tag.VERB),
     Example("Can I have the big plate?", "Can I have", Tag.VERB),
@@ -1884,7 +1885,8 @@ ASKED_ALONE_RULE = Rule("a thing asked for alone", _asked_alone, (
     Example("Orange juice, from the sofa, for me please", "Orange", Tag.WORD),
     Example("cocoa for Priya", "", Tag.VERB),                              # words32: "for" and a person last
     Example("a blanket for grandma", "", Tag.PRON),
-), None, "a noun phrase and 'please' with no verb: bring it to the speaker (or to whom 'for' names)")
+), None, "a noun phrase and 'please' with no verb: bring it to the speaker (or to whom 'for' names)",
+   after=frozenset([START, Tag.POLITE]))
 STATE_QUESTION = Rule("is X in a state", _state_question, (
     Example("Is the fridge open?", "Is", Tag.VERB),
     Example("is the kitchen light still on?", "still on", Tag.COND),
@@ -1942,7 +1944,8 @@ REMAINING = Rule("what is left", _remaining, (
 PERSON_STATE_DROPPED = Rule("the state of a person asked where", _person_state_dropped, (
     Example("is lucy still asleep in her room?", "asleep", ""),
     Example("is ben still waiting in the kitchen?", "still", ""),
-), None, "'is lucy still asleep in her room?': find her there; the state said of her is no head, dropped")
+), None, "'is lucy still asleep in her room?': find her there; the state said of her is no head, dropped",
+   after=frozenset([Tag.WORD, Tag.NAME]))
 WHETHER_BE = Rule("is, after see if X", _whether_be, (
     Example("see if the cat is in the garden", "is", ""),
 ), _WHETHER_IS, "the 'is' of 'see if X is in Y', dropped: 'see if' was read as 'find'")
@@ -1970,7 +1973,8 @@ WHERE_BE_DROPPED = Rule("is, after asked where", _where_be, (
     Example("where's the remote gone?", "gone", ""),
     Example("where is the ladle kept?", "kept", ""),
     Example("where are the jars usually stored?", "stored", ""),
-), None, "the 'is' of 'do you know where X is', dropped: 'do you know where' was read as 'find'")
+), None, "the 'is' of 'do you know where X is', dropped: 'do you know where' was read as 'find'",
+   after=frozenset([Tag.WORD, Tag.NAME, Tag.PARTICLE]))
 ENSURED_RULE = Rule("make sure of a state", _ensured, (
     Example("please make sure the stove is off", "make sure", Tag.VERB),
     Example("Please make sure the door is closed", "make sure", Tag.VERB),
@@ -2241,7 +2245,8 @@ COUNT_TAIL_DROPPED = Rule("how many are there, after the phrase counted", _count
 FRONTED_UNMARKED = Rule("phrase said first, no comma", _fronted_unmarked, (
     Example("From the dresser take the hairbrush", "take", Tag.VERB),
     Example("In the kitchen how many people are standing?", "how many", Tag.VERB),
-), lambda low: low.isalpha(), "a phrase of place said before the verb with no comma: the clause starts at the verb")
+), lambda low: low.isalpha(), "a phrase of place said before the verb with no comma: the clause starts at the verb",
+   after=frozenset([Tag.WORD, Tag.NAME]))
 FRONTED_END = Rule("phrase said first", _fronted_end, (
     Example("From the cupboard, give me the bowl", ",", Tag.SEP),
     Example("go to the kitchen. In there, find the sponge", ",", Tag.SEP),
