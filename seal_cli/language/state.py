@@ -344,7 +344,9 @@ def _without_restarts(words: list[Word]) -> list[Word]:
     dropped. Only runs of words that cannot end a phrase, ending in a determiner or a possessive: "that that" (a
     pronoun, then a determiner), "turn the lamp on on the desk" (a particle, then a preposition) keep both."""
     lows = [w.lower for w in words]
-    if not any(low in _OPENING and low in lows[k + 1:k + 1 + _RUNS[0]] for k, low in enumerate(lows)):
+    opening = [k for k, low in enumerate(lows) if low in _OPENING]
+    if not any(lows[a] == lows[b] for n, a in enumerate(opening) for b in opening[n + 1:n + 1 + _RUNS[0]]
+               if b - a <= _RUNS[0]):
         return words                            # no word opening a phrase said again a run's length on: no restart
     size = len(lows)
     kept: list[Word] = []
