@@ -513,6 +513,11 @@ PERSON_VERB_UNJOINED = Rule("a person's verb and a lower-case name without a joi
     Example("walk to the porch follow sam to the car", "follow", Tag.VERB),
 ), None, "'meet/greet/follow' and one lower-case word ending the clause after a phrase: a clause, the word a name",
    after=frozenset([Tag.WORD, Tag.NAME, Tag.LABEL, Tag.HERE]))
+def _unknown_verb_first(low: str) -> bool:
+    """Where an unknown verb without a joint can start (its rule's gate): "to", or a verb's base form."""
+    return low == "to" or low not in CLOSED and verb_lemma(low) == low
+
+
 UNKNOWN_UNJOINED = Rule("unknown verb without a joint", _unknown_unjoined, (
     Example("grab the towel fold it on the rack", "fold", Tag.WORD),
     Example("head to the bedroom to wake up Jonas", "to", Tag.SEP),
@@ -521,5 +526,5 @@ UNKNOWN_UNJOINED = Rule("unknown verb without a joint", _unknown_unjoined, (
     Example("go feed the cat", "feed", Tag.WORD),
     Example("open the door let the cat out", "let", Tag.WORD),
     Example("come to the kitchen to help me", "to", Tag.SEP),
-), None, "a verb no frame lists before its object, after a phrase: a clause of its own",
+), _unknown_verb_first, "a verb no frame lists before its object, after a phrase: a clause of its own",
    after=frozenset([Tag.VERB, Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL, Tag.PARTICLE, Tag.HERE]))

@@ -35,7 +35,7 @@ from seal_cli.language.english import (
 from seal_cli.language.morphology import gerund_lemma, is_adverb, participles, parts_of_speech, verb_lemma
 from seal_cli.language.rule import START, Example, Match, Rule
 from seal_cli.language.rules.numbers import TEENS, TENS
-from seal_cli.language.state import CLOSED, LEAD_FIRST, TIME_FIRST, State, first_words, match_phrase, merge
+from seal_cli.language.state import CLOSED, LEAD_FIRST, SEP_FIRST, TIME_FIRST, State, first_words, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 
@@ -321,7 +321,7 @@ COMMA_AFTER_POLITENESS = Rule("comma after politeness", _comma_after_politeness,
 SEQUENCING = Rule("sequencing word", _sequencing, (
     Example("Take the cup to the sink. After that, wash it.", ". After that,", Tag.SEP),
     Example("Next, open the door", "Next,", Tag.POLITE),
-), None, "a sequencing word before the verb")
+), SEP_FIRST, "a sequencing word before the verb")
 def _having_first(s: State, i: int) -> Match | None:
     """"*Once you have* the spoon, put it in the dishwasher": to have a thing before a clause is to get it first
     (``HAVING_MEANS``); the subordinator and "you have" are read as that verb, the phrase as its object, and the
@@ -383,9 +383,14 @@ ON_THE_WAY = Rule("on the way", _on_the_way, (
     Example("on your way back, pick up the post", "on your way back,", Tag.POLITE),
     Example("on the way to the kitchen, grab a cup", "on the way to the kitchen,", Tag.POLITE),
 ), _ON_THE_WAY[0], "'on your way back, ...': a circumstance of the trip before the clause, no command of its own")
+def _manner_first(low: str) -> bool:
+    """Where a manner adverb can start (its rule's gate)."""
+    return low.isalpha() and low not in PARTICLES and is_adverb(low)
+
+
 MANNER = Rule("manner adverb", _manner, (
     Example("Gently place the eggs in the bowl", "Gently", Tag.POLITE),
-), None, "a manner adverb before the verb")
+), _manner_first, "a manner adverb before the verb")
 BE_CAREFUL = Rule("be careful and", _be_careful, (
     Example("Be careful and carry the tray to the table", "Be careful and", Tag.POLITE),
 ), frozenset(["be"]), "'be careful and', 'be a dear and' before a verb")

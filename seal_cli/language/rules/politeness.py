@@ -31,7 +31,7 @@ from seal_cli.language.morphology import (
     verb_lemma,
 )
 from seal_cli.language.rule import START, Example, Match, Rule
-from seal_cli.language.state import CLOSED, FORMULA_FIRST, State, longest_phrase, match_phrase, merge
+from seal_cli.language.state import CLOSED, FORMULA_FIRST, State, first_words, longest_phrase, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import capitalised
 
@@ -372,7 +372,9 @@ WHILE_HOLDING = Rule("while or after first", _while_holding, (
 ), frozenset(["while", "after", "having"]), "'while'/'after'/'having' opening the command before a verb")
 ADVERB_COMMA = Rule("adverb and comma", _adverb_comma, (
     Example("Quietly, please: turn off the radio", "Quietly,", Tag.POLITE),
-), None, "a manner adverb and its comma before a request")
+), is_adverb, "a manner adverb and its comma before a request")
+_POLITE_FIRST = first_words(POLITE)
+"""Where politeness can start (its rule's gate)."""
 POLITENESS = Rule("politeness", _politeness, (
     Example("could you please bring me a cup", "could you please", Tag.POLITE),
     Example("robot, go to the kitchen", "robot,", Tag.POLITE),
@@ -380,7 +382,7 @@ POLITENESS = Rule("politeness", _politeness, (
     Example("do you mind switching the fan on", "do you mind", Tag.POLITE),
     Example("And who is in the kitchen?", "And", Tag.POLITE),
     Example("would you close the gate", "would you", Tag.POLITE),
-), None, "politeness words and phrases before the verb (english.POLITE)")
+), _POLITE_FIRST, "politeness words and phrases before the verb (english.POLITE)")
 ATTENTION = Rule("look, listen", _attention, (
     Example("Look, the window is open. Close it.", "Look,", Tag.POLITE),
     Example("listen, can you fetch the mail?", "listen,", Tag.POLITE),

@@ -1862,7 +1862,7 @@ WISH_OF_PHRASE = Rule("a wish said of a person's phrase", _wish_of_phrase, (
     Example("the person at the armchair needs a towel", "the", Tag.DET),
     Example("my son wants a glass of water", "my", Tag.POSS),
     Example("the guests in the hall would like some coffee", "the", Tag.DET),
-), None, "'the person at the armchair needs X': bring X to the person")
+), NP_OPENERS, "'the person at the armchair needs X': bring X to the person")
 WISH_OF_DESCRIBED = Rule("a wish said of a person described", _wish_of_described, (
     Example("Robin, who is in the garage, needs a wrench", "Robin", Tag.NAME),
     Example("Sam in the study would like a coffee", "Sam", Tag.NAME),
@@ -1960,13 +1960,21 @@ HOW_MANY_SEEN = Rule("how many X can you see", _how_many_seen, (
 HOW_MANY_SAID = Rule("how many, said", _how_many_said, (
     Example("tell Anna how many cups are left", "how many cups are left", Tag.SAID),
 ), frozenset(["how"]), "'how many ...' after a verb of saying and the person told: what is said")
+_WHERE_ASKER_FIRST = first_words(WHERE_ASKERS)
+
+
+def _asks_where_first(low: str) -> bool:
+    """Where a lead-in asking where can start (:func:`_where_asker`; its rule's gate)."""
+    return low in _WHERE_ASKER_FIRST or gerund_lemma(low) in _WHERE_ASKER_FIRST
+
+
 ASKED_WHERE = Rule("asked where", _asked_where, (
     Example("Do you know where the tea spoon is?", "Do you know where", Tag.VERB),
     Example("can you tell me where the keys are?", "tell me where", Tag.VERB),
     Example("Would you know where I left my phone?", "know where I left", Tag.VERB),
     Example("did you see where I put my wallet", "did you see where I put", Tag.VERB),
     Example("would you mind showing me where the remote is", "showing me where", Tag.VERB),
-), None, "'do you know / tell me where X is': find X")
+), _asks_where_first, "'do you know / tell me where X is': find X")
 WHERE_BE_DROPPED = Rule("is, after asked where", _where_be, (
     Example("do you know where the tea spoon is", "is", ""),
     Example("do u know where the remote went", "went", ""),
