@@ -35,7 +35,17 @@ from seal_cli.language.english import (
 from seal_cli.language.morphology import gerund_lemma, is_adverb, participles, parts_of_speech, verb_lemma
 from seal_cli.language.rule import START, Example, Match, Rule
 from seal_cli.language.rules.numbers import TEENS, TENS
-from seal_cli.language.state import CLOSED, LEAD_FIRST, SEP_FIRST, TIME_FIRST, State, first_words, match_phrase, merge
+from seal_cli.language.state import (
+    CLOSED,
+    LEAD_FIRST,
+    SEP_FIRST,
+    SUB_FIRST,
+    TIME_FIRST,
+    State,
+    first_words,
+    match_phrase,
+    merge,
+)
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 
@@ -378,7 +388,8 @@ SUBORDINATE = Rule("subordinate clause first", _subordinate, (
     Example("Go to the kitchen and once there find a cup", "once there", Tag.POLITE),
     Example("when you leave the bedroom, switch off the light", "when you leave the bedroom,", Tag.COND),
     Example("before you leave, turn off the stove", "before you leave,", Tag.COND),
-), None, "a condition, or a clause of the robot's own, before the verb (arriving where it went: none; leaving: when)")
+), SUB_FIRST,
+   "a condition, or a clause of the robot's own, before the verb (arriving where it went: none; leaving: when)")
 ON_THE_WAY = Rule("on the way", _on_the_way, (
     Example("on your way back, pick up the post", "on your way back,", Tag.POLITE),
     Example("on the way to the kitchen, grab a cup", "on the way to the kitchen,", Tag.POLITE),
