@@ -34,9 +34,12 @@ def commands(path: Path) -> list[str]:
             return [" ".join(str(row.get("goal_sentence") or "").split())
                     for row in csv.DictReader(rows, delimiter="\t")]
     found = []
-    for line in path.read_text(encoding="utf-8").splitlines():
+    for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
         if line.strip():
-            item = json.loads(line)
+            try:
+                item = json.loads(line)
+            except json.JSONDecodeError as error:
+                raise ValueError(f"{path}:{number}:{error.colno}: not JSON ({error.msg})") from None
             if isinstance(item, dict) and isinstance(item.get("text"), str):
                 found.append(item["text"])
     return found
@@ -102,7 +105,11 @@ def main() -> int:
             classes = json.loads(constants.read_text(encoding="utf-8"))["OBJECTS"]
             vocabulary.write_text("".join(f"- {c}\n" for c in classes), encoding="utf-8")
         for corpus in chosen:
-            texts = commands(corpus)
+            try:
+                texts = commands(corpus)
+            except (ValueError, UnicodeDecodeError, csv.Error) as error:
+                print(f"error: {error}", file=sys.stderr)
+                return 2
             old = output(args.old.resolve(), corpus, texts, vocabulary, args.keep and args.keep / "old", True)
             new = output(args.new.resolve(), corpus, texts, vocabulary, args.keep and args.keep / "new", False)
             changed = [k for k, (a, b) in enumerate(zip(old, new, strict=True)) if a != b]
