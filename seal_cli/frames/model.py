@@ -275,8 +275,9 @@ class Frame:
         except SealError:
             return None
 
-    @property
+    @cached_property
     def roles(self) -> tuple[str, ...]:
+        """The roles of the elements, in order (made once: the parser asks a frame for them at every clause)."""
         return tuple(e.role for e in self.elements)
 
     def element(self, role: str) -> Element:

@@ -62,7 +62,7 @@ from seal_cli.language.morphology import (
     parts_of_speech,
     verb_lemma,
 )
-from seal_cli.language.rule import AFTER_SEP, Match, Rule
+from seal_cli.language.rule import AFTER_SEP, START, Match, Rule
 from seal_cli.language.rules import ANYWHERE, CLAUSE_START, INSIDE, WORDS
 from seal_cli.language.slips import one_slip
 from seal_cli.language.state import (
@@ -497,16 +497,16 @@ class Tagger(State):
         words = self.words
         i = 0
         while i < len(words):
-            anywhere, clause_start, inside, word = _GATES.rules(words[i].lower)
-            found = self.first_match(anywhere, i)
+            low = words[i].lower
+            found = self.first_match(_ANYWHERE, low, i)
             if found is None and self.expect_verb:
-                found = self.first_match(clause_start, i)
+                found = self.first_match(_CLAUSE_START, low, i)
                 if found is None:
                     self.expect_verb = False    # not a verb: tag it as what it is; the grammar reports it
             if found is None:
-                found = self.first_match(inside, i)
+                found = self.first_match(_INSIDE, low, i)
             if found is None:
-                found = self.first_match(word, i)
+                found = self.first_match(_WORDS, low, i)
                 assert found is not None        # the last rule of WORDS always matches
                 last = self.out[-1]
                 if last.lower in ("hand", "hands") and len(self.out) > 1 and \
@@ -515,9 +515,21 @@ class Tagger(State):
             i += found.consumed
         return self.out
 
-    def first_match(self, rules: tuple[Rule, ...], i: int) -> Match | None:
-        """The first of ``rules`` (a table's, those its gates admit at the word) that consumes words at ``i``,
-        applied; rules that only retag the last word are applied on the way."""
+    def first_match(self, table: int, low: str, i: int) -> Match | None:
+        """The first rule of table ``table`` (of those its gates admit at word ``i``, read as ``low``) that consumes
+        words at ``i``, applied; rules that only retag the last word are applied on the way."""
+        out = self.out
+        after = out[-1].tag if out else START
+        gated = _KNOWN.get((low, after))
+        if gated is None:
+            gated = _GATES.rules(low, after)
+        return self.first_of(gated[table], table, low, i, after)
+
+    def first_of(self, rules: tuple[Rule, ...], table: int, low: str, i: int, after: str) -> Match | None:
+        """:meth:`first_match` over ``rules``, gated after a word tagged ``after``: where a rule retags the last
+        word ("tell *her* we're moving": a pronoun, not a possessive), the rules after it are those the gates admit
+        after its new tag."""
+        out = self.out
         for rule in rules:
             found = rule.match(self, i)
             if found is None:
@@ -527,6 +539,9 @@ class Tagger(State):
                 self.trace.append(rule.name)
             if found.consumed:
                 return found
+            retagged = out[-1].tag if out else START
+            if retagged != after:
+                return self.first_of(_GATES.rest(table, low, retagged, rule), table, low, i, retagged)
         return None
 
     def apply(self, found: Match, i: int) -> None:
@@ -554,28 +569,44 @@ class Tagger(State):
 
 
 class Gates:
-    """The rules of each table that may match a word, by the word's lower-case form (each rule's ``first`` gate is
-    asked once per form, the answer kept here)."""
+    """The rules of each table that may match a word, by the word's lower-case form and the tag of the last tagged
+    word (each rule's ``first`` and ``after`` gates, asked once per form and tag, the answer kept here): an index
+    derived from the rules themselves, so a new rule is in it as soon as it is in its table."""
 
     FORMS = 100_000
-    """How many word forms are kept before the cache starts again."""
+    """How many (word form, tag) pairs are kept before the cache starts again."""
 
     def __init__(self, tables: tuple[tuple[Rule, ...], ...]) -> None:
         self.tables = tables
-        self._by_form: dict[str, tuple[tuple[Rule, ...], ...]] = {}
+        self.known: dict[tuple[str, str], tuple[tuple[Rule, ...], ...]] = {}
+        """What :meth:`rules` has answered, by (word form, tag): the tagger reads it first."""
+        self._position = [{id(rule): k for k, rule in enumerate(table)} for table in tables]
 
-    def rules(self, low: str) -> tuple[tuple[Rule, ...], ...]:
-        """For each table, its rules, in order, that may match a word read as ``low``."""
-        rules = self._by_form.get(low)
+    def rules(self, low: str, after: str) -> tuple[tuple[Rule, ...], ...]:
+        """For each table, its rules, in order, that may match a word read as ``low`` after a word tagged
+        ``after`` (``START``: the first)."""
+        key = (low, after)
+        rules = self.known.get(key)
         if rules is None:
-            if len(self._by_form) >= self.FORMS:
-                self._by_form.clear()
-            rules = self._by_form[low] = tuple(tuple(r for r in table if r.admits(low)) for table in self.tables)
+            if len(self.known) >= self.FORMS:
+                self.known.clear()
+            rules = self.known[key] = tuple(tuple(r for r in table if r.admits(low) and r.follows(after))
+                                               for table in self.tables)
         return rules
+
+    def rest(self, table: int, low: str, after: str, rule: Rule) -> tuple[Rule, ...]:
+        """The rules of table ``table`` after ``rule`` that may match a word read as ``low`` after a word tagged
+        ``after`` (where a rule has just retagged the last word)."""
+        position = self._position[table]
+        here = position[id(rule)]
+        return tuple(r for r in self.rules(low, after)[table] if position[id(r)] > here)
 
 
 _GATES = Gates((ANYWHERE, CLAUSE_START, INSIDE, WORDS))
 """The tagger's tables in the order :meth:`Tagger.run` tries them."""
+_KNOWN = _GATES.known
+_ANYWHERE, _CLAUSE_START, _INSIDE, _WORDS = range(4)
+"""The tables' places in ``_GATES``."""
 
 
 @dataclass(frozen=True)

@@ -217,6 +217,7 @@ def parts_of_speech(word: str) -> frozenset[str]:
     return frozenset(entry[0] for entry in _WORDS.entries(word.lower()))
 
 
+@lru_cache(maxsize=65536)
 def adverb_no_noun(word: str) -> bool:
     """Whether lemminflect lists the word as an adverb and never as a noun, whatever else ("just",
     "directly"; not "right" or "supply", nouns too)."""
@@ -231,6 +232,7 @@ def is_gradable(word: str) -> bool:
     return any(entry[0] == "adj" and len(entry) > 1 and entry[1] for entry in _LEMMAS.entries(word.lower()))
 
 
+@lru_cache(maxsize=65536)
 def in_verb_tables(word: str) -> bool:
     """Whether lemminflect's shipped tables list the word as a verb with its past forms (so its
     participles need no model: :func:`participles` reads them there)."""

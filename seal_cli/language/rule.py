@@ -15,12 +15,13 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, NamedTuple
 
+from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word
 
 if TYPE_CHECKING:
     from seal_cli.language.state import State
 
-__all__ = ["AFTER_SEP", "Example", "Match", "Rule"]
+__all__ = ["AFTER_SEP", "START", "Example", "Match", "Rule", "after_all_but"]
 
 AFTER_SEP = "after-sep"
 """``Match.expect``: expect a verb when the last tagged word, the match applied, is a separator."""
@@ -62,17 +63,34 @@ class Example:
 
 @dataclass(frozen=True, slots=True)
 class Rule:
-    """A named construction: ``match(state, i)`` is pure (see :class:`Match`). ``first``: when
-    given, the rule can only match where the word's lower-case form is one of these, or satisfies
-    this predicate (a gate the tagger checks, once per word form, before calling it); ``examples`` are run by a test."""
+    """A named construction: ``match(state, i)`` is pure (see :class:`Match`). Two gates say where it can match at
+    all, so that the tagger asks it only there (:class:`~seal_cli.language.lexicon.Gates` indexes the tables by
+    them): ``first``, when given, the word's lower-case form is one of these, or satisfies this predicate; ``after``,
+    when given, the tag of the last tagged word is one of these (:data:`START`: no word tagged yet). A gate must
+    never turn away a word where ``match`` would have matched (``tests/language/test_rules.py`` asks every rule at
+    every word of every example, gated or not); ``examples`` are run by a test."""
 
     name: str
     match: Callable[[State, int], Match | None]
     examples: tuple[Example, ...]
     first: frozenset[str] | Callable[[str], bool] | None = None
     doc: str = ""
+    after: frozenset[str] | None = None
 
     def admits(self, low: str) -> bool:
         """Whether the rule may match a word read as ``low`` (its gate; asked once per word form)."""
         first = self.first
         return first is None or (low in first if isinstance(first, frozenset) else first(low))
+
+    def follows(self, tag: str) -> bool:
+        """Whether the rule may match after a last tagged word tagged ``tag`` (:data:`START`: none)."""
+        return self.after is None or tag in self.after
+
+
+START = ""
+"""``Rule.after``: the tag of the last tagged word when none is tagged yet (``State.prev_tag`` at the first word)."""
+
+
+def after_all_but(*tags: str) -> frozenset[str]:
+    """A gate ``after`` that admits every tag, and :data:`START`, but ``tags``."""
+    return frozenset([START, *Tag]) - frozenset(tags)

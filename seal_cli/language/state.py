@@ -99,7 +99,7 @@ _SOURCES = frozenset(["from", "out of", "off"])
 if TYPE_CHECKING:
     from seal_cli.language.lexicon import Lexicon
 
-__all__ = ["CLOSED", "State", "longest_phrase", "match_phrase", "merge"]
+__all__ = ["CLOSED", "IN_NP", "State", "longest_phrase", "match_phrase", "merge"]
 
 # ---------------------------------------------------------------------------------------------
 # Phrases of closed-class words, and the first words of what the tagger looks at specially
@@ -182,7 +182,7 @@ def longest_phrase(words: Sequence[Word], i: int, table: Iterable[str]) -> int:
     return 0
 
 
-_IN_NP = frozenset({Tag.DET, Tag.NUM, Tag.POSS, Tag.RESULT})
+IN_NP = frozenset({Tag.DET, Tag.NUM, Tag.POSS, Tag.RESULT})
 """The tags after which the next word is inside a noun phrase, before its head (:meth:`State.in_np`)."""
 
 _DISLOCATED_WORDS = 12
@@ -345,6 +345,10 @@ def _without_restarts(words: list[Word]) -> list[Word]:
     dropped. Only runs of words that cannot end a phrase, ending in a determiner or a possessive: "that that" (a
     pronoun, then a determiner), "turn the lamp on on the desk" (a particle, then a preposition) keep both."""
     lows = [w.lower for w in words]
+    opening = [k for k, low in enumerate(lows) if low in _OPENING]
+    if not any(lows[a] == lows[b] for n, a in enumerate(opening) for b in opening[n + 1:n + 1 + _RUNS[0]]
+               if b - a <= _RUNS[0]):
+        return words                            # no word opening a phrase said again a run's length on: no restart
     size = len(lows)
     kept: list[Word] = []
     i = 0
@@ -431,7 +435,7 @@ class State:
 
     def in_np(self) -> bool:
         """Whether the next word is inside a noun phrase, before its head."""
-        return bool(self.out) and self.out[-1].tag in _IN_NP
+        return bool(self.out) and self.out[-1].tag in IN_NP
 
     def next_lower(self, i: int) -> str:
         return self.words[i + 1].lower if i + 1 < len(self.words) else ""

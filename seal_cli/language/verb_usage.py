@@ -8,7 +8,7 @@ a verb from a noun — a bare word after "and": "go to the kitchen and *wait* th
 
 from __future__ import annotations
 
-from functools import cache
+from functools import cache, lru_cache
 from pathlib import Path
 
 __all__ = ["MIN_VERB_TAGS", "SHIPPED", "VERB_SHARE", "mostly_verb", "verb_share", "verb_tags"]
@@ -45,6 +45,7 @@ def verb_tags(form: str) -> int:
     return _table().get(form, (0.0, 0))[1]
 
 
+@lru_cache(maxsize=65536)
 def mostly_verb(form: str) -> bool:
     """Whether a lower-case word form is used mostly as a verb, on evidence: a share of at least
     :data:`VERB_SHARE`, from at least :data:`MIN_VERB_TAGS` tags as a verb."""

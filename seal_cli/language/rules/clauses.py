@@ -264,7 +264,7 @@ CONTACT_RELATIVE = Rule("relative clause of a name, no that", _contact_relative,
     Example("answer the question Ella asked", "Ella asked", Tag.REL),
     Example("bring me the mug Sam left on the sofa", "Sam left", Tag.REL),
 ), lambda low: low.isalpha() and low not in CLOSED, "a name and a past verb after a noun: a relative clause "
-   "without 'that'")
+   "without 'that'", after=frozenset([Tag.WORD]))
 STRANDED_RELATIVE = Rule("relative clause of it, its preposition last", _stranded_relative, (
     Example("put the mug back on the shelf it came from", "it came from", Tag.REL),
     Example("leave the jar on the table it was on", "it was on", Tag.REL),
@@ -493,12 +493,13 @@ VERB_AFTER_JOINT = Rule("verb after a joint", _verb_after_joint, (
     Example("grab the mug then sit down", "sit", Tag.WORD),
     Example("head back to the kitchen and tidy up", "tidy", Tag.WORD),
 ), frozenset(VERB_JOINTS), "a bare word mostly used as a verb after 'and', 'then' or ',', before what a verb takes: "
-   "a clause of its own, not a noun of a list")
+   "a clause of its own, not a noun of a list", after=frozenset([Tag.WORD, Tag.NAME, Tag.PRON, Tag.HERE, Tag.PARTICLE]))
 UNJOINED = Rule("clause without a joint", _unjoined, (
     Example("meet Jo at the counter escort her back", "escort", Tag.VERB),
     Example("pick up the cup bring it to me", "bring", Tag.VERB),
     Example("put the milk in the fridge go to the kitchen", "go", Tag.VERB),
-), None, "a verb of the library and its object right after a phrase: a clause of its own, not a noun")
+), None, "a verb of the library and its object right after a phrase: a clause of its own, not a noun",
+   after=frozenset([Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL, Tag.PARTICLE, Tag.HERE]))
 DONE_BEFORE_JOINT = Rule("a joint that puts what follows first", _done_before, (
     Example("hand me the towel, but first wash it", ", but first", Tag.SEP),
     Example("give me the plate, but before that go to the sink", ", but before that", Tag.SEP),
@@ -511,7 +512,13 @@ PERSON_VERB_UNJOINED = Rule("a person's verb and a lower-case name without a joi
     Example("go to the bathtub meet tracy and guide her", "meet", Tag.VERB),
     Example("wait by the front door greet jo.", "greet", Tag.VERB),
     Example("walk to the porch follow sam to the car", "follow", Tag.VERB),
-), None, "'meet/greet/follow' and one lower-case word ending the clause after a phrase: a clause, the word a name")
+), None, "'meet/greet/follow' and one lower-case word ending the clause after a phrase: a clause, the word a name",
+   after=frozenset([Tag.WORD, Tag.NAME, Tag.LABEL, Tag.HERE]))
+def _unknown_verb_first(low: str) -> bool:
+    """Where an unknown verb without a joint can start (its rule's gate): "to", or a verb's base form."""
+    return low == "to" or low not in CLOSED and verb_lemma(low) == low
+
+
 UNKNOWN_UNJOINED = Rule("unknown verb without a joint", _unknown_unjoined, (
     Example("grab the towel fold it on the rack", "fold", Tag.WORD),
     Example("head to the bedroom to wake up Jonas", "to", Tag.SEP),
@@ -520,4 +527,5 @@ UNKNOWN_UNJOINED = Rule("unknown verb without a joint", _unknown_unjoined, (
     Example("go feed the cat", "feed", Tag.WORD),
     Example("open the door let the cat out", "let", Tag.WORD),
     Example("come to the kitchen to help me", "to", Tag.SEP),
-), None, "a verb no frame lists before its object, after a phrase: a clause of its own")
+), _unknown_verb_first, "a verb no frame lists before its object, after a phrase: a clause of its own",
+   after=frozenset([Tag.VERB, Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL, Tag.PARTICLE, Tag.HERE]))

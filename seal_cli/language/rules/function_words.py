@@ -32,7 +32,7 @@ from seal_cli.language.english import (
 from seal_cli.language.morphology import noun_lemma, parts_of_speech, verb_lemma
 from seal_cli.language.premises import is_premises
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import CLOSED, TIME_FIRST, State, first_words, match_phrase
+from seal_cli.language.state import CLOSED, IN_NP, TIME_FIRST, State, first_words, match_phrase
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word
 
@@ -495,7 +495,7 @@ SIDE_OF_REGION = Rule("side of a region", _side_of_region, (
 OF = Rule("of", _of, (Example("bring me a slice of apple", "of", Tag.OF),), frozenset(["of"]), "'of'")
 DETERMINER_IN_NP = Rule("determiner inside a noun phrase", _determiner_in_np, (
     Example("bring me all the cups", "the", Tag.DET),
-), NP_OPENERS, "a determiner or possessive after another, before a noun")
+), NP_OPENERS, "a determiner or possessive after another, before a noun", after=IN_NP)
 SEEN_OUT = ("out", "exit", "toward")
 """A person *seen out*: the word, the place it names (where a person leaves a building by), the way it is said
 (where the motion goes: a goal)."""

@@ -39,9 +39,19 @@ from seal_cli.language.english import (
 )
 from seal_cli.language.morphology import gerund_lemma, is_adverb, noun_lemma, participles, parts_of_speech, verb_lemma
 from seal_cli.language.premises import is_premises
-from seal_cli.language.rule import Example, Match, Rule
+from seal_cli.language.rule import START, Example, Match, Rule
 from seal_cli.language.rules.numbers import TEENS, TENS
-from seal_cli.language.state import CLOSED, LEAD_FIRST, TIME_FIRST, State, first_words, match_phrase, merge
+from seal_cli.language.state import (
+    CLOSED,
+    LEAD_FIRST,
+    SEP_FIRST,
+    SUB_FIRST,
+    TIME_FIRST,
+    State,
+    first_words,
+    match_phrase,
+    merge,
+)
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 
@@ -419,7 +429,7 @@ COMMA_AFTER_POLITENESS = Rule("comma after politeness", _comma_after_politeness,
 SEQUENCING = Rule("sequencing word", _sequencing, (
     Example("Take the cup to the sink. After that, wash it.", ". After that,", Tag.SEP),
     Example("Next, open the door", "Next,", Tag.POLITE),
-), None, "a sequencing word before the verb")
+), SEP_FIRST, "a sequencing word before the verb")
 def _having_first(s: State, i: int) -> Match | None:
     """"*Once you have* the spoon, put it in the dishwasher": to have a thing before a clause is to get it first
     (``HAVING_MEANS``); the subordinator and "you have" are read as that verb, the phrase as its object, and the
@@ -490,14 +500,20 @@ SUBORDINATE = Rule("subordinate clause first", _subordinate, (
     Example("Go to the kitchen and once there find a cup", "once there", Tag.POLITE),
     Example("when you leave the bedroom, switch off the light", "when you leave the bedroom,", Tag.COND),
     Example("before you leave, turn off the stove", "before you leave,", Tag.COND),
-), None, "a condition, or a clause of the robot's own, before the verb (arriving where it went: none; leaving: when)")
+), SUB_FIRST,
+   "a condition, or a clause of the robot's own, before the verb (arriving where it went: none; leaving: when)")
 ON_THE_WAY = Rule("on the way", _on_the_way, (
     Example("on your way back, pick up the post", "on your way back,", Tag.POLITE),
     Example("on the way to the kitchen, grab a cup", "on the way to the kitchen,", Tag.POLITE),
 ), _ON_THE_WAY[0], "'on your way back, ...': a circumstance of the trip before the clause, no command of its own")
+def _manner_first(low: str) -> bool:
+    """Where a manner adverb can start (its rule's gate)."""
+    return low.isalpha() and low not in PARTICLES and is_adverb(low)
+
+
 MANNER = Rule("manner adverb", _manner, (
     Example("Gently place the eggs in the bowl", "Gently", Tag.POLITE),
-), None, "a manner adverb before the verb")
+), _manner_first, "a manner adverb before the verb")
 BE_CAREFUL = Rule("be careful and", _be_careful, (
     Example("Be careful and carry the tray to the table", "Be careful and", Tag.POLITE),
 ), frozenset(["be"]), "'be careful and', 'be a dear and' before a verb")
@@ -525,4 +541,4 @@ POLITE_FRAME = Rule("if you could", _polite_frame, (
     Example("it would be nice if you opened the gate", "it would be nice if you", Tag.POLITE),
     Example("I think you should follow her", "I think you should", Tag.POLITE),
     Example("I suppose you need to wash the cup", "I suppose you need to", Tag.POLITE),
-), None, "a polite frame ending in 'you could' before the verb")
+), None, "a polite frame ending in 'you could' before the verb", after=frozenset([START, Tag.POLITE]))

@@ -209,7 +209,8 @@ PAST_TWELVE = Rule("number word past twelve", _past_twelve, (
 LABEL = Rule("number naming a thing", _label, (
     Example("go to room 214", "214", Tag.LABEL),
     Example("clean meeting room three", "three", Tag.LABEL),
-), _digits_or_number, "a number after a noun names a numbered thing, unless a noun follows it")
+), _digits_or_number, "a number after a noun names a numbered thing, unless a noun follows it",
+   after=frozenset([Tag.WORD, Tag.NAME]))
 NUMBER_AS_NOUN = Rule("number as a noun", _number_as_noun, (
     Example("cut it into eight", "eight", Tag.WORD),
 ), _NUMBER_FIRST, "a number word after a preposition with no noun: so many pieces")

@@ -23,8 +23,8 @@ from seal_cli.language.morphology import (
     parts_of_speech,
     verb_lemma,
 )
-from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import CLOSED, State, match_phrase
+from seal_cli.language.rule import Example, Match, Rule, after_all_but
+from seal_cli.language.state import CLOSED, IN_NP, State, match_phrase
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 from seal_cli.language.verb_objects import takes_object
@@ -249,7 +249,8 @@ PARTICIPLE = Rule("participle after a noun", _participle, (
     Example("hand the man snoozing his paper", "snoozing", Tag.VBG_I),     # the paper is handed (words38)
     Example("find the person standing next to the door", "standing", Tag.VBG_P),
 ), lambda low: bool(gerund_lemma(low)),
-    "an -ing form after a noun, a pronoun or 'is': transitive, with a preposition, or bare")
+    "an -ing form after a noun, a pronoun or 'is': transitive, with a preposition, or bare",
+    after=frozenset([Tag.WORD, Tag.NAME, Tag.PRON, Tag.BE, Tag.AND_VBG]))
 AND_PARTICIPLE = Rule("and between participles", _and_participle, (
     Example("count the people sitting and wearing hats", "and", Tag.AND_VBG),
     Example("find the girl standing and talking on the phone", "and", Tag.AND_VBG),
@@ -258,7 +259,8 @@ AND_PARTICIPLE = Rule("and between participles", _and_participle, (
 ), frozenset(["and"]), "'and' between two participles that describe one noun: the second describes it too")
 FILLED_WITH = Rule("participle before with", _filled_with, (
     Example("put a bowl filled with water in the cabinet", "filled", ""),
-), lambda low: low.endswith("ed"), "a past participle between a noun and 'with': what the thing holds, as 'with'")
+), lambda low: low.endswith("ed"), "a past participle between a noun and 'with': what the thing holds, as 'with'",
+   after=frozenset([Tag.WORD, Tag.NAME]))
 KIND_GERUND = Rule("-ing form of a kind of thing", _kind_gerund, (
     Example("put the bottle in the blue recycling bin", "recycling", Tag.WORD),
     Example("put the mug on a small black shelving unit", "shelving", Tag.WORD),
@@ -286,11 +288,12 @@ ADVERB_OF_PLACE = Rule("adverb of place", _adverb_of_place, (
     Example("is the cup still on the coffee table?", "still", Tag.PARTICLE),
 ), _of_place,
     "a word that may be an adverb and is no noun (or 'still', 'already'), after a noun and before a phrase of where: "
-    "how near, not the head")
+    "how near, not the head", after=frozenset([Tag.WORD, Tag.NAME]))
 NAME = Rule("name", _name, (
     Example("greet Mary Ann", "Mary Ann", Tag.NAME),
     Example("go to Emmas room", "Emmas", Tag.POSS),
-), None, "a capitalised word where a noun phrase starts; two in a row are one name")
+), None, "a capitalised word where a noun phrase starts; two in a row are one name",
+   after=after_all_but(Tag.WORD, *IN_NP))
 TITLE_IN_LOWER_CASE = Rule("title in lower case", _title_in_lower_case, (
     Example("take mr smith to the kitchen", "mr smith", Tag.NAME),
     Example("greet dr. ahmed in the hall", "dr. ahmed", Tag.NAME),
@@ -307,7 +310,7 @@ LOWER_CASE_NAME = Rule("name in lower case", _lower_case_name, (
     Example("meet morgan at the door", "morgan", Tag.NAME),
     Example("dinner's ready, go tell ben", "ben", Tag.NAME),
 ), None, "a word no dictionary lists, alone after 'to' or 'for' (a clause that may have a recipient) or "
-         "'with' (one that has a goal): a name")
+         "'with' (one that has a goal): a name", after=frozenset([Tag.PREP, Tag.VERB]))
 WORD = Rule("open word", _word, (
     Example("bring me the cup", "cup", Tag.WORD),
 ), None, "every other word: a noun or an adjective")

@@ -31,8 +31,8 @@ from seal_cli.language.morphology import (
     parts_of_speech,
     verb_lemma,
 )
-from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import CLOSED, FORMULA_FIRST, State, longest_phrase, match_phrase, merge
+from seal_cli.language.rule import START, Example, Match, Rule
+from seal_cli.language.state import CLOSED, FORMULA_FIRST, State, first_words, longest_phrase, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import capitalised
 
@@ -414,7 +414,7 @@ ASKED_AGAIN_RULE = Rule("the question asked again", _asked_again, (
     Example("how many cups are on the table, could you tell me", "could you tell me", Tag.POLITE),
     Example("how many jars are in the pantry, would you say?", "would you say", Tag.POLITE),
     Example("what's in the shed, kindly tell me", "kindly tell me", Tag.POLITE),
-), None, "'..., can you tell me?' after a question: politeness, nothing more asked")
+), None, "'..., can you tell me?' after a question: politeness, nothing more asked", after=frozenset([Tag.SEP]))
 FORMULA = Rule("politeness formula", _formula, (
     Example("When you get a chance, could you close the window?", "When you get a chance,", Tag.POLITE),
     Example("Hey, when you get a sec, could you grab me a soda?", "when you get a sec,", Tag.POLITE),
@@ -426,7 +426,9 @@ WHILE_HOLDING = Rule("while or after first", _while_holding, (
 ), frozenset(["while", "after", "having"]), "'while'/'after'/'having' opening the command before a verb")
 ADVERB_COMMA = Rule("adverb and comma", _adverb_comma, (
     Example("Quietly, please: turn off the radio", "Quietly,", Tag.POLITE),
-), None, "a manner adverb and its comma before a request")
+), is_adverb, "a manner adverb and its comma before a request")
+_POLITE_FIRST = first_words(POLITE)
+"""Where politeness can start (its rule's gate)."""
 POLITENESS = Rule("politeness", _politeness, (
     Example("could you please bring me a cup", "could you please", Tag.POLITE),
     Example("robot, go to the kitchen", "robot,", Tag.POLITE),
@@ -435,7 +437,7 @@ POLITENESS = Rule("politeness", _politeness, (
     Example("And who is in the kitchen?", "And", Tag.POLITE),
     Example("would you close the gate", "would you", Tag.POLITE),
     Example("I want you open the gate", "I want you", Tag.POLITE),
-), None, "politeness words and phrases before the verb (english.POLITE)")
+), _POLITE_FIRST, "politeness words and phrases before the verb (english.POLITE)")
 ATTENTION = Rule("look, listen", _attention, (
     Example("Look, the window is open. Close it.", "Look,", Tag.POLITE),
     Example("listen, can you fetch the mail?", "listen,", Tag.POLITE),
@@ -459,12 +461,14 @@ ADDRESSED = Rule("one addressed in lower case", _addressed, (
     Example("young lady, bring me the paper", "young lady,", Tag.POLITE),
     Example("yo, grab me a coke", "yo,", Tag.POLITE),
     Example("dude just shut the door", "dude", Tag.POLITE),
-), None, "a word that names no thing and is no verb (or a person), before a comma and the command: whom is addressed")
+), None, "a word that names no thing and is no verb (or a person), before a comma and the command: whom is addressed",
+   after=frozenset([START, Tag.POLITE]))
 RELAYED = Rule("a request passed on", _relayed, (
     Example("granny says you have to shut the window", "granny says you have to", Tag.POLITE),
     Example("Omar asked you to fetch him a towel", "Omar asked you to", Tag.POLITE),
     Example("my brother wants you to open the garage", "my brother wants you to", Tag.POLITE),
-), None, "'X says you have to V', 'X asked you to V': the request passed on is the command, X's words a remark")
+), None, "'X says you have to V', 'X asked you to V': the request passed on is the command, X's words a remark",
+   after=frozenset([START, Tag.POLITE]))
 LIKE_FILLER = Rule("like as a filler", _like_filler, (
     Example("could you like pass me the salt", "like", ""),
 ), frozenset(["like"]), "'like' after politeness and before the verb: a filler")

@@ -74,7 +74,7 @@ from seal_cli.language.morphology import (
     parts_of_speech,
     verb_lemma,
 )
-from seal_cli.language.rule import Example, Match, Rule
+from seal_cli.language.rule import START, Example, Match, Rule
 from seal_cli.language.rules.politeness import asked_again_at
 from seal_cli.language.state import CLOSED, State, first_words, longest_phrase, lower_case_name, match_phrase, merge
 from seal_cli.language.tags import Tag
@@ -1865,7 +1865,8 @@ WISHED_PLACED_RULE = Rule("a wish for where a thing is", _wished_placed, (
 THING_PLACED = Rule("a thing and where it goes, no verb", _thing_placed, (
     Example("mug in the sink", "", Tag.VERB),
     Example("the dirty cups in the dishwasher.", "", Tag.VERB),
-), None, "'mug in the sink': a sentence of only a thing and a place of putting is putting it there")
+), None, "'mug in the sink': a sentence of only a thing and a place of putting is putting it there",
+   after=frozenset([START, Tag.END, Tag.POLITE]))
 REQUEST = Rule("wish for a thing", _request, (
     Example("I'd like the red mug", "I'd like", Tag.VERB),
     Example("Can I have the big plate?", "Can I have", Tag.VERB),
@@ -1895,7 +1896,7 @@ WISH_OF_PHRASE = Rule("a wish said of a person's phrase", _wish_of_phrase, (
     Example("the person at the armchair needs a towel", "the", Tag.DET),
     Example("my son wants a glass of water", "my", Tag.POSS),
     Example("the guests in the hall would like some coffee", "the", Tag.DET),
-), None, "'the person at the armchair needs X': bring X to the person")
+), NP_OPENERS, "'the person at the armchair needs X': bring X to the person")
 WISH_OF_DESCRIBED = Rule("a wish said of a person described", _wish_of_described, (
     Example("Robin, who is in the garage, needs a wrench", "Robin", Tag.NAME),
     Example("Sam in the study would like a coffee", "Sam", Tag.NAME),
@@ -1918,7 +1919,8 @@ ASKED_ALONE_RULE = Rule("a thing asked for alone", _asked_alone, (
     Example("Orange juice, from the sofa, for me please", "Orange", Tag.WORD),
     Example("cocoa for Priya", "", Tag.VERB),                              # words32: "for" and a person last
     Example("a blanket for grandma", "", Tag.PRON),
-), None, "a noun phrase and 'please' with no verb: bring it to the speaker (or to whom 'for' names)")
+), None, "a noun phrase and 'please' with no verb: bring it to the speaker (or to whom 'for' names)",
+   after=frozenset([START, Tag.POLITE]))
 STATE_QUESTION = Rule("is X in a state", _state_question, (
     Example("Is the fridge open?", "Is", Tag.VERB),
     Example("is the kitchen light still on?", "still on", Tag.COND),
@@ -1976,7 +1978,8 @@ REMAINING = Rule("what is left", _remaining, (
 PERSON_STATE_DROPPED = Rule("the state of a person asked where", _person_state_dropped, (
     Example("is lucy still asleep in her room?", "asleep", ""),
     Example("is ben still waiting in the kitchen?", "still", ""),
-), None, "'is lucy still asleep in her room?': find her there; the state said of her is no head, dropped")
+), None, "'is lucy still asleep in her room?': find her there; the state said of her is no head, dropped",
+   after=frozenset([Tag.WORD, Tag.NAME]))
 WHETHER_BE = Rule("is, after see if X", _whether_be, (
     Example("see if the cat is in the garden", "is", ""),
 ), _WHETHER_IS, "the 'is' of 'see if X is in Y', dropped: 'see if' was read as 'find'")
@@ -1992,20 +1995,29 @@ HOW_MANY_SEEN = Rule("how many X can you see", _how_many_seen, (
 HOW_MANY_SAID = Rule("how many, said", _how_many_said, (
     Example("tell Anna how many cups are left", "how many cups are left", Tag.SAID),
 ), frozenset(["how"]), "'how many ...' after a verb of saying and the person told: what is said")
+_WHERE_ASKER_FIRST = first_words(WHERE_ASKERS)
+
+
+def _asks_where_first(low: str) -> bool:
+    """Where a lead-in asking where can start (:func:`_where_asker`; its rule's gate)."""
+    return low in _WHERE_ASKER_FIRST or gerund_lemma(low) in _WHERE_ASKER_FIRST
+
+
 ASKED_WHERE = Rule("asked where", _asked_where, (
     Example("Do you know where the tea spoon is?", "Do you know where", Tag.VERB),
     Example("can you tell me where the keys are?", "tell me where", Tag.VERB),
     Example("Would you know where I left my phone?", "know where I left", Tag.VERB),
     Example("did you see where I put my wallet", "did you see where I put", Tag.VERB),
     Example("would you mind showing me where the remote is", "showing me where", Tag.VERB),
-), None, "'do you know / tell me where X is': find X")
+), _asks_where_first, "'do you know / tell me where X is': find X")
 WHERE_BE_DROPPED = Rule("is, after asked where", _where_be, (
     Example("do you know where the tea spoon is", "is", ""),
     Example("do u know where the remote went", "went", ""),
     Example("where's the remote gone?", "gone", ""),
     Example("where is the ladle kept?", "kept", ""),
     Example("where are the jars usually stored?", "stored", ""),
-), None, "the 'is' of 'do you know where X is', dropped: 'do you know where' was read as 'find'")
+), None, "the 'is' of 'do you know where X is', dropped: 'do you know where' was read as 'find'",
+   after=frozenset([Tag.WORD, Tag.NAME, Tag.PARTICLE]))
 ENSURED_RULE = Rule("make sure of a state", _ensured, (
     Example("please make sure the stove is off", "make sure", Tag.VERB),
     Example("Please make sure the door is closed", "make sure", Tag.VERB),
@@ -2284,7 +2296,8 @@ COUNT_TAIL_DROPPED = Rule("how many are there, after the phrase counted", _count
 FRONTED_UNMARKED = Rule("phrase said first, no comma", _fronted_unmarked, (
     Example("From the dresser take the hairbrush", "take", Tag.VERB),
     Example("In the kitchen how many people are standing?", "how many", Tag.VERB),
-), lambda low: low.isalpha(), "a phrase of place said before the verb with no comma: the clause starts at the verb")
+), lambda low: low.isalpha(), "a phrase of place said before the verb with no comma: the clause starts at the verb",
+   after=frozenset([Tag.WORD, Tag.NAME]))
 FRONTED_END = Rule("phrase said first", _fronted_end, (
     Example("From the cupboard, give me the bowl", ",", Tag.SEP),
     Example("go to the kitchen. In there, find the sponge", ",", Tag.SEP),

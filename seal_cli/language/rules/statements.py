@@ -94,12 +94,13 @@ ASIDE = Rule("sentence beside the command", _aside, (
 HER_TOLD = Rule("her told", _her_told, (
     Example("tell her we're moving", "her", Tag.PRON),
     Example("tell her dinner's ready", "her", Tag.PRON),
-), None, "'her' before a subject is the person a verb of saying tells, not a possessive")
+), None, "'her' before a subject is the person a verb of saying tells, not a possessive", after=frozenset([Tag.POSS]))
 TOLD = Rule("told without that", _told, (
     Example("tell mom I'm late", "I'm late", Tag.SAID),
     Example("tell the kids dinner is ready", "dinner is ready", Tag.SAID),
     Example("tell grandma lunch is ready", "lunch is ready", Tag.SAID),
-), None, "what is told without 'that', right after the person told")
+), None, "what is told without 'that', right after the person told",
+   after=frozenset([Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL]))
 TOLD_HOW_TO = Rule("how to, told", _told_how_to, (
     Example("Explain to Robin how to get to the kitchen.", "how to get to the kitchen", Tag.SAID),
     Example("tell me where to put the plates", "where to put the plates", Tag.SAID),

@@ -28,7 +28,7 @@ from seal_cli.language.english import (
 )
 from seal_cli.language.morphology import is_adverb, noun_lemma, parts_of_speech, verb_lemma
 from seal_cli.language.premises import is_premises
-from seal_cli.language.rule import Example, Match, Rule
+from seal_cli.language.rule import START, Example, Match, Rule
 from seal_cli.language.state import State, match_phrase
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word
@@ -147,4 +147,5 @@ TELEGRAPHIC = Rule("a command in bare phrases", _telegraphic, (
     Example("boots. now. from the hall", "from", Tag.PREP),
     Example("tea, milk, two sugars", "tea", Tag.WORD),
     Example("mug -> sink", "sink", Tag.WORD),
-), None, "bare phrases and no verb: go to the one place named, else bring the first thing asked for")
+), None, "bare phrases and no verb: go to the one place named, else bring the first thing asked for",
+    after=frozenset([START, Tag.POLITE]))
