@@ -180,6 +180,12 @@ def test_counting_furniture_reads_the_map_and_a_class_nobody_knows_is_none_anywh
     _, chairs = pipeline.run_on_map(m, "how many chairs are in the dining room", library, make_policy("sefm"),
                                     rng=np.random.default_rng(0))
     assert chairs.completed and chairs.answer == "0 chairs in the dining room; it knows of no chairs anywhere"
+    _, kitchen = pipeline.run_on_map(m, "how many sofas are in the kitchen?", library, make_policy("sefm"),
+                                     rng=np.random.default_rng(0))     # lead, stop 41: it drove there first
+    assert kitchen.completed and kitchen.answer == "0 sofas in the kitchen, by the map" and kitchen.path_m == 0
+    _, family = pipeline.run_on_map(m, "how many sofas are in the family room", library, make_policy("sefm"),
+                                    rng=np.random.default_rng(0))
+    assert family.answer == "1 sofa in the family room, by the map" and family.path_m == 0
 
 
 @pytest.mark.parametrize(("text", "plan", "said"), [
