@@ -226,19 +226,26 @@ def test_the_context_suite_is_the_chosen_cases_from_their_own_starts(shared_data
         selected_houses(shared_data, cases_file=broken)
 
 
+def _run_fewest_cased_command(suite: str, cases_file: Path, data: Path) -> dict:
+    """`bench tasks --suite SUITE` on the command of the cases file with the fewest cases (one layout, the oracle):
+    its JSON, after checking it ran exactly that command's cases, each a success."""
+    cases = json.loads(cases_file.read_text(encoding="utf-8"))["cases"]
+    text = min({c["command"] for c in cases}, key=lambda t: sum(c["command"] == t for c in cases))
+    mine = [c for c in cases if c["command"] == text]
+    result = runner.invoke(app, ["bench", "tasks", "--suite", suite, "--command", text, "--layouts", "1",
+                                 "--policies", "oracle", "--jobs", "1", "--data", str(data), "--json"])
+    assert result.exit_code == 0, result.output
+    found: dict = json.loads(result.stdout)
+    assert found["suite"] == suite
+    assert set(found["groups"]) - {"all"} == {f"{c['house']} · {text} · start {c['start']}" for c in mine}
+    assert found["groups"]["all"]["n"] == len(mine) and found["groups"]["all"]["success"]["oracle"] == 1.0
+    return found
+
+
 def test_bench_tasks_context_runs_the_chosen_cases(shared_data: Path) -> None:
     from seal_cli.bench.context import CASES_FILE
 
-    cases = json.loads(CASES_FILE.read_text(encoding="utf-8"))["cases"]
-    text = min({c["command"] for c in cases}, key=lambda t: sum(c["command"] == t for c in cases))
-    mine = [c for c in cases if c["command"] == text]
-    result = runner.invoke(app, ["bench", "tasks", "--suite", "context", "--command", text, "--layouts", "1",
-                                 "--policies", "oracle", "--jobs", "1", "--data", str(shared_data), "--json"])
-    assert result.exit_code == 0, result.output
-    data = json.loads(result.stdout)
-    assert data["suite"] == "context" and data["houses"] == "selected"
-    assert set(data["groups"]) - {"all"} == {f"{c['house']} · {text} · start {c['start']}" for c in mine}
-    assert data["groups"]["all"]["n"] == len(mine) and data["groups"]["all"]["success"]["oracle"] == 1.0
+    assert _run_fewest_cased_command("context", CASES_FILE, shared_data)["houses"] == "selected"
 
 
 def test_a_drawn_house_is_its_seed_alone_every_room_reached_and_every_command_planned(library: Library) -> None:
@@ -274,16 +281,8 @@ def test_a_drawn_house_is_its_seed_alone_every_room_reached_and_every_command_pl
 def test_bench_tasks_context_held_out_runs_the_cases_chosen_on_the_drawn_houses(tmp_path: Path) -> None:
     from seal_cli.bench.context import HELD_OUT_CASES_FILE
 
-    cases = json.loads(HELD_OUT_CASES_FILE.read_text(encoding="utf-8"))["cases"]
-    text = min({c["command"] for c in cases}, key=lambda t: sum(c["command"] == t for c in cases))
-    mine = [c for c in cases if c["command"] == text]
-    result = runner.invoke(app, ["bench", "tasks", "--suite", "context_held_out", "--command", text, "--layouts", "1",
-                                 "--policies", "oracle", "--jobs", "1", "--data", str(tmp_path), "--json"])
-    assert result.exit_code == 0, result.output      # drawn in code: no shared data read
-    data = json.loads(result.stdout)
-    assert data["suite"] == "context_held_out" and data["houses"] == "held_out"
-    assert set(data["groups"]) - {"all"} == {f"{c['house']} · {text} · start {c['start']}" for c in mine}
-    assert data["groups"]["all"]["n"] == len(mine) and data["groups"]["all"]["success"]["oracle"] == 1.0
+    # drawn in code: no shared data read (an empty folder as --data)
+    assert _run_fewest_cased_command("context_held_out", HELD_OUT_CASES_FILE, tmp_path)["houses"] == "held_out"
     refused = runner.invoke(app, ["bench", "tasks", "--suite", "context_held_out", "--houses", "unseen",
                                   "--data", str(tmp_path)])
     assert refused.exit_code == 1 and "--houses" in refused.output
