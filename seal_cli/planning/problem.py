@@ -1901,9 +1901,11 @@ def unknown_to_map(commanded: Sequence[Binding], things: Things) -> list[str]:
                     warnings.setdefault(f"nobody on the map {m.said} {called}: seal run will search "
                                         "the whole house for them", None)
             elif cls not in known and cls not in unknown:    # said once, where it is first looked for
-                ground = binding.elements.get("ground")
+                # where the command says it is ("a mug from the kitchen"): looked for there, and only there
+                ground = next((binding.elements[r] for r in ("ground", "source") if r != role and
+                               binding.elements.get(r)), None)
                 kinds = any(things.taxonomy.is_a(k, cls) is True for k in known)    # "a drink": a kind of it
-                where = f"look for it in {ground}" if ground and role != "ground" else \
+                where = f"look for it in {ground}" if ground else \
                     "search the whole house for it" if kinds or m.robot.holding == cls else \
                     "say so without searching the house"
                 unknown.add(cls)

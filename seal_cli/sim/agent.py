@@ -1354,8 +1354,15 @@ class Agent:
                 any(taxonomy.is_a(k, cls) is True for k in known):
             return None
         m = self.scene.map
-        said = f"no {self.said(value)} found: the {m.name.replace('_', ' ')} map names none (no prior, object or " \
-               "place of one), so the robot did not search the house"
+        looked = [r.replace("_", " ") for c, r in sorted(self.missed_rooms) if c == cls] + \
+            [p for p in self.said_places(value) if p in self.missed]
+        if looked:      # "bring me a mug from the kitchen": it looked there, as the command said, and nowhere else
+            said = f"no {self.said(value)} found: none in the {' or '.join(looked)}, where the command said, and " \
+                   f"the {m.name.replace('_', ' ')} map names none elsewhere (no prior, object or place of one), so " \
+                   "the robot did not search the rest of the house"
+        else:
+            said = f"no {self.said(value)} found: the {m.name.replace('_', ' ')} map names none (no prior, object " \
+                   "or place of one), so the robot did not search the house"
         kin = taxonomy.kin(cls)
         alike = [k for k in m.kinds() if kin is not None and k in kin[1]]
         if kin is not None and alike:

@@ -480,6 +480,23 @@ def test_a_thing_the_map_names_none_of_is_said_at_once(library: Library, text: s
     assert result.warnings[0].endswith("seal run will say so without searching the house")
 
 
+def test_a_thing_the_map_names_none_of_is_looked_for_only_where_the_command_said(library: Library) -> None:
+    """"bring me a mug from the kitchen" on the apartment (no mug anywhere): the run looks in the kitchen, as told,
+    and nowhere else. The plan's warning said "say so without searching the house" and the run's last word "so the
+    robot did not search the house" after it had driven 18 m through the kitchen (lead, stop 42): both now say where
+    it looked."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    _, result = pipeline.run_on_map(load_map("apartment"), "bring me a mug from the kitchen", library,
+                                    make_policy("sefm", 50), rng=np.random.default_rng(0))
+    assert not result.completed and result.why.value == "not_found" and result.path_m > 0
+    assert result.warnings[0].endswith("seal run will look for it in kitchen")
+    assert result.reason.startswith("no mug found: none in the kitchen, where the command said, and the apartment "
+                                    "map names none elsewhere (no prior, object or place of one), so the robot did "
+                                    "not search the rest of the house; of its kind (container) the map has: cup")
+
+
 def test_a_person_asked_gives_no_answer_and_the_run_says_so(library: Library) -> None:
     """The simulator's people do not speak: "ask Raj if he wants tea" asks, and the run's answer (what the
     speaker is told) says plainly that Raj gave none, instead of ending silent."""
