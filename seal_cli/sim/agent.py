@@ -362,12 +362,19 @@ class Agent:
         rooms = {class_key(p.name): class_key(p.room) for p in self.scene.map.places if p.room}
         facts = set(self.state.facts)
         seen: dict[str, str] = {}
+        source = binding.elements.get("source")
         for fact in results:
             thing, where = fact.args
             room, place = self.room(where), self._place_of(where)
             free = [k.id for k in self.known.values() if k.cls == self.class_of(thing) and k.movable
                     and k.id in self.world.items and not self.world.held_chain(k.id)
                     and not self._chosen_as_other(k.id, thing) and k.id not in self.not_meant.get(thing, ())]
+            if source is not None and thing == binding.elements.get("theme"):   # "the towel from the dining table"
+                elsewhere = [i for i in free if not self._from(i, source)]
+                free = [i for i in free if i not in elsewhere]
+                # one lying where it is to go already is not the one to take there (it would move nothing)
+                if at_goal := [i for i in elsewhere if self._from(i, where)]:
+                    self.not_meant.setdefault(thing, set()).update(at_goal)
             if room is not None:      # on no place there (the room's floor), or in or on a place there
                 there = [i for i in free if bool(room.contains([self.world.position(i)])[0])]
                 loose = [i for i in there if self._place_of(self.world.items[i].parent or "") is None]
@@ -409,6 +416,14 @@ class Agent:
             return None
         self.chosen.setdefault(class_key(thing), seen[thing])   # that one is this name's: not cup_2's too (e2e23)
         return said
+
+    def _from(self, thing: str, source: str) -> bool:
+        """Whether a thing lies where a frame says it is taken from (on or in the place, or in the room): "take the
+        towel from the dining table to the bathroom" means the dining table's towel, so the one on the bathroom's
+        rail does not make it so already (lead, stop 42: the guesthouse's run said "towel_1 is in the bathroom
+        already, so Bring(..., source=dining_table_1) needs no doing" and did nothing)."""
+        parent = self.world.items[thing].parent
+        return (parent is not None and self._lies_within(parent, source)) or self._lies_within(thing, source)
 
     def _back_from_elsewhere(self, binding: Binding) -> bool:
         """A frame puts a thing "back" on or in a place it names ("put the book back on the bookshelf"), or "another"

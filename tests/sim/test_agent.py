@@ -480,6 +480,27 @@ def test_a_thing_the_map_names_none_of_is_said_at_once(library: Library, text: s
     assert result.warnings[0].endswith("seal run will say so without searching the house")
 
 
+def test_a_thing_said_to_come_from_somewhere_is_not_one_lying_where_it_goes(library: Library) -> None:
+    """"take the towel from the dining table back to the bathroom" (guesthouse: a towel on the dining table, another
+    on the bathroom's rail, in sight at the start): the run said "towel_1 is in the bathroom already, so Bring(...,
+    source=dining_table_1) needs no doing" and did nothing; then it took the rail's towel to the bathroom's cabinet.
+    The towel said is the dining table's (lead, stop 42)."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    heard: list = []
+    agent, result = pipeline.run_on_map(load_map("guesthouse"), "take the towel from the dining table back to the "
+                                        "bathroom", library, make_policy("sefm", 50), rng=np.random.default_rng(0),
+                                        observers=[heard.append])
+    assert result.completed and result.path_m > 10, result.reason
+    assert not any("needs no doing" in r.text for r in heard)
+    assert "picked up towel_2 from dining_table_1" in [r.text for r in heard]
+    assert agent.world.items["towel_2"].parent == "towel_rail_1"
+    _, without = pipeline.run_on_map(load_map("guesthouse"), "take the towel to the bathroom", library,
+                                     make_policy("sefm", 50), rng=np.random.default_rng(0))
+    assert without.completed and without.path_m == 0.0      # no source said: the rail's towel is one there already
+
+
 def test_a_thing_the_map_names_none_of_is_looked_for_only_where_the_command_said(library: Library) -> None:
     """"bring me a mug from the kitchen" on the apartment (no mug anywhere): the run looks in the kitchen, as told,
     and nowhere else. The plan's warning said "say so without searching the house" and the run's last word "so the
