@@ -178,11 +178,16 @@ class MapNames:
             found.append(Referent(class_key(room.name), "room", class_key(room.name), class_key(room.name),
                                   tuple(dict.fromkeys(w for w in said if w)), frozenset(), 1))
         for place in self.map.places:
-            spelled = [re.sub(r"[_ ]?\d+$", "", place.name), place.name, place.cls,
-                       *synonyms.get(place.cls, ())]
+            base = re.sub(r"[_ ]?\d+$", "", place.name)
+            number = place.name[len(base):].strip("_ ")
+            # its number said as a word too: "table two" is table_2, as "table 2" is
+            spoken_number = [f"{base} {w}" for w, n in NUMBERS.items() if number.isdigit() and n == int(number)
+                             and w not in ("couple", "several", "few", "many") and " " not in w]
+            spelled = [base, place.name, *spoken_number, place.cls, *synonyms.get(place.cls, ())]
+            mine = 3 + len(spoken_number)
             names = tuple(dict.fromkeys(w for w in map(words_of, spelled) if w))
-            own = len(dict.fromkeys(w for w in map(words_of, spelled[:3]) if w))
-            closed = {"".join(n) for n in map(words_of, spelled[:3]) if n}
+            own = len(dict.fromkeys(w for w in map(words_of, spelled[:mine]) if w))
+            closed = {"".join(n) for n in map(words_of, spelled[:mine]) if n}
             heads = frozenset(n[-1] for n in map(words_of, spelled) if n and (     # not a synonym's: a "tv table";
                 n in names[:own] or "".join(n) in closed))    # but "arm chair" is "armchair" spelt apart: a chair
             found.append(Referent(class_key(place.name), "place", place.cls,

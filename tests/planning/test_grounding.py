@@ -130,6 +130,17 @@ def test_a_thing_acted_on_is_named_by_its_head_not_by_the_first_words_of_a_place
     assert steps("go to the tv", library) == ["Go(goal=tv_stand_1)"]
 
 
+def test_a_numbered_place_is_its_number_said_as_a_word_too(library: Library) -> None:
+    """"bring a mug to table two" on the cafe (table_1 to table_3) was refused: "the cafe has no table two (only
+    table_1 and table_2 and table_3, a table)" while "table 2" was table_2 (lead, stop 42). A number the map has
+    not is still refused, naming the tables it has."""
+    cafe = load_map("cafe")
+    for said, table in (("table two", "table_2"), ("table 2", "table_2"), ("table three", "table_3")):
+        assert [str(s) for s in plan_text(f"go to {said}", library, map=cafe).steps] == [f"Go(goal={table})"]
+    with pytest.raises(SealError, match=r"no table four \(only table_1 and table_2 and table_3"):
+        plan_text("go to table four", library, map=cafe)
+
+
 def test_a_question_about_what_the_map_lacks_is_asked_not_refused(library: Library) -> None:
     """"how many chairs ...?", "is there a chair ...?" on a map without chairs: a class to look for
     in the room (the warning says where), while "go to the chair" is still refused."""
