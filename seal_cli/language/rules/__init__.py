@@ -221,6 +221,7 @@ WORDS: tuple[Rule, ...] = (
     function_words.BE,
     function_words.POSSESSIVE,
     function_words.PARTITIVE,
+    function_words.ANOTHER_ALONE,
     function_words.DETERMINER,
     function_words.WHATEVER,
     function_words.PRONOUN_QUANTIFIED,

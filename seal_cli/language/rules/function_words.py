@@ -386,6 +386,15 @@ def _partitive(s: State, i: int) -> Match | None:
     return None
 
 
+def _another_alone(s: State, i: int) -> Match | None:
+    """"move the vase from one shelf to *another*", "put the cushions on another, then sit down": "another" with its
+    noun left out, after a preposition and before no noun, is the noun phrase (of the kind said before it:
+    ``Reference.noun_for_one``), never a determiner whose noun is missing."""
+    if s.prev_tag() != Tag.PREP or s.noun_follows(i + 1) or s.next_lower(i) in ("one", "ones"):
+        return None                                  # "to another one": the determiner of "one"
+    return s.emit(i, 1, Tag.WORD)
+
+
 def _determiner(s: State, i: int) -> Match | None:
     if s.in_np() or s.words[i].lower in ("that", "this", "these", "those") and not s.noun_follows(i + 1):
         return None
@@ -583,6 +592,11 @@ PARTITIVE = Rule("partitive pronoun", _partitive, (
     Example("pour some into the cup", "some", Tag.PRON),
     Example("I'm hungry, can you bring me some?", "some", Tag.PRON),
 ), PARTITIVES, "'some', 'all' right after the verb (or its person) with no noun: some of it")
+ANOTHER_ALONE = Rule("another, its noun left out", _another_alone, (
+    Example("move the vase from one shelf to another", "another", Tag.WORD),
+    Example("carry the box from one room to another, then wait", "another", Tag.WORD),
+), frozenset(["another"]), "'from one shelf to another': the noun phrase, its noun the one said before",
+    after=frozenset([Tag.PREP]))
 DETERMINER = Rule("determiner", _determiner, (Example("bring me the cup", "the", Tag.DET),), DETERMINERS,
                   "a determiner ('that' only before a noun)")
 WHATEVER = Rule("whatever is", _whatever, (
