@@ -175,8 +175,8 @@ class Reference:
         """The noun "one"/"ones" stands for in a phrase that describes it ("not the blue cup, bring me *the red
         one*", "the big spoon is dirty, bring me *a clean one*", "put the old batteries in the bin and bring me
         *new ones*", "move it from the black table to *the white one*"; with its noun left out, "from one shelf to
-        *another*", "*another one*", "to *the other*", alfred30): the head of the latest phrase said before
-        it, a plural one for "ones", governed by a preposition as the phrase is or not (the thing moved for an
+        *another*", "*another one*", "to *the other*", "to *the next*", alfred30): the head of the latest phrase said
+        before it, a plural one for "ones", governed by a preposition as the phrase is or not (the thing moved for an
         object, where for a place: "take the cup to the sink and bring me a clean one" is a cup); None when no
         phrase was said before. One-anaphora
         repeats the noun, not the thing: the phrase names another of the same kind, so it refers to no element."""
@@ -186,8 +186,8 @@ class Reference:
         if np.head.lower in ("one", "ones"):
             if not np.mods and first != "another":    # "to *another one*": another of the kind (alfred30)
                 return None
-        elif np.head.lower not in ("another", "other") or np.mods:
-            return None                               # "from one shelf to *another*", "to *the other*" (alfred30)
+        elif np.head.lower not in ("another", "other", "next") or np.mods:
+            return None                       # "from one shelf to *another*", "to *the other*", "*the next*" (alfred30)
         verbs = [w.start for w in self.words if w.tag == "VERB"]
         said = [m for m in mentions(self.text, 0, np.start) if not m.name and
                 m.head.lower() not in ("one", "ones") and m.head.lower() not in PRONOUNS and

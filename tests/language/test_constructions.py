@@ -3743,6 +3743,7 @@ def test_the_robot_told_in_the_third_person(text: str, want: list[tuple[str, dic
     ("carry the box from one room to another", "room"),
     ("move the book from one table to the other", "table"),
     ("put the cushions from one sofa onto another one", "sofa"),
+    ("move the box from one table to the next", "table"),
 ])
 def test_another_with_its_noun_left_out_is_of_the_kind_said_before(text: str, goal: str, library: Library) -> None:
     """"from one shelf to *another*": the noun phrase, its head the noun said before it (one-anaphora with the noun
@@ -3753,3 +3754,4 @@ def test_another_with_its_noun_left_out_is_of_the_kind_said_before(text: str, go
 
 def test_another_with_no_noun_said_before_stays_another(library: Library) -> None:
     assert parse_command("give me the other", library).frames[0].elements["theme"].head == "other"
+    assert parse_command("put it on the next shelf", library).frames[0].elements["goal"].head == "shelf"

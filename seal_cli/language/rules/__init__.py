@@ -172,6 +172,7 @@ INSIDE: tuple[Rule, ...] = (
     clauses.VERB_AFTER_JOINT,
     requests.OBLIGED_AFTER_COMMA,
     open_words.AND_PARTICIPLE,
+    function_words.NEXT_ALONE,
     clauses.SEPARATOR,
     politeness.TAG_QUESTION,
     politeness.THANKS,

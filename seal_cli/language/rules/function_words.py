@@ -395,6 +395,17 @@ def _another_alone(s: State, i: int) -> Match | None:
     return s.emit(i, 1, Tag.WORD)
 
 
+def _next_alone(s: State, i: int) -> Match | None:
+    """"move the box from one table to *the next*": "the next" after a preposition and before no noun is the noun
+    phrase, its noun left out (``Reference.noun_for_one``), as "another" is (:func:`_another_alone`); never "next"
+    the joint of a clause ("then")."""
+    out = s.out
+    if len(out) < 2 or out[-1].lower != "the" or out[-2].tag != Tag.PREP or s.noun_follows(i + 1) or \
+            s.next_lower(i) in ("one", "ones", "to") or s.verb_after(i + 1):
+        return None
+    return s.emit(i, 1, Tag.WORD)
+
+
 def _determiner(s: State, i: int) -> Match | None:
     if s.in_np() or s.words[i].lower in ("that", "this", "these", "those") and not s.noun_follows(i + 1):
         return None
@@ -597,6 +608,11 @@ ANOTHER_ALONE = Rule("another, its noun left out", _another_alone, (
     Example("carry the box from one room to another, then wait", "another", Tag.WORD),
 ), frozenset(["another"]), "'from one shelf to another': the noun phrase, its noun the one said before",
     after=frozenset([Tag.PREP]))
+NEXT_ALONE = Rule("the next, its noun left out", _next_alone, (
+    Example("move the box from one table to the next", "next", Tag.WORD),
+    Example("move the box from this shelf to the next, then wait", "next", Tag.WORD),
+), frozenset(["next"]), "'from one table to the next': the noun phrase, its noun the one said before",
+    after=frozenset([Tag.DET]))
 DETERMINER = Rule("determiner", _determiner, (Example("bring me the cup", "the", Tag.DET),), DETERMINERS,
                   "a determiner ('that' only before a noun)")
 WHATEVER = Rule("whatever is", _whatever, (
