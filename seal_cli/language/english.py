@@ -131,6 +131,17 @@ YOU_MUST = frozenset(["you'll have to", "you'll need to", "you will have to", "y
                       "you had better"])
 """"..., *you'll have to* go to the table and find it": what the robot must do, said to it (words28); a lead-in
 (``POLITE``), and no statement a comma's remark drops (``State.statement_at``: "you'll" is a subject otherwise)."""
+_ROBOT = ("the robot", "robot", "the robot's", "the robot 's", "robot's", "robot 's")
+ROBOT_ADDRESSED = frozenset(
+    [*(f"{robot} {must}" for robot in _ROBOT[:2] for must in ("should", "must", "needs to", "need to", "has to",
+                                                             "have to", "will", "shall", "is to", "is going to",
+                                                             "ought to", "is supposed to")),
+     *(f"{whose} {aim} is to" for whose in ("the", "your", "our", *_ROBOT[2:])
+       for aim in ("goal", "aim", "objective", "task", "job", "mission"))])
+"""The robot told what to do in the third person, as people describe a task to it (alfred30): "*the robot should* put
+the vase on the shelf", "*robot must* open the window", "*the goal is to* put the apple in the fridge", "*the
+robot's task is to* bring the towel" say what "you should", "your task is to" say (a lead-in, ``POLITE``). The
+robot described doing it ("the robot is cooking a potato", "the robot slices the bread") stays a statement."""
 POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you", "would you", "will you", "might you",
                                      "would you mind",
                     *(f"{modal} {anyone}" for modal in ("can", "could", "would", "will")   # "could someone bring ..."
@@ -203,7 +214,8 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                     "i'm going to need you to", "i am going to need you to", "we're going to need you to",
                     "i'd appreciate if you", "i would appreciate if you", "i'd appreciate if you could",
                     "let's have you", "let 's have you", "let's get you to", "let 's get you to",
-                    "kind of", "kinda", "got to", "your going to", "your job", "your task", "your mission"]))
+                    "kind of", "kinda", "got to", "your going to", "your job", "your task", "your mission",
+                    *ROBOT_ADDRESSED]))
 POLITE_FORMULAE = frozenset([
     "when you get a chance", "when you get the chance", "when you have a chance", "when you get a moment",
     "when you have a moment", "when you have a minute", "when you have a second", "when you have time",
@@ -244,6 +256,10 @@ SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "tha
              "shud": "should", "pleez": "please", "ppl": "people", "wats": "what's", "wat's": "what's", "wat": "what"}
 """Texting spellings of function words ("turn the lights off *pls*", "open it *n* wipe it", "where *r* my keys",
 "tell her *im* late"): read as the word they spell."""
+READ_AS_ONE = {"prior to": "before", "subsequent to": "after"}
+"""Two words that say one preposition or subordinator, read as that word wherever they stand (alfred30): "pick up the
+mug *prior to* turning on the lamp", "*prior to* that, open the door", "*subsequent to* washing it, put the cup
+away" read as "before" and "after" do. One word of both spans (its text both words said)."""
 RUN_TOGETHER = {"gimme": ("give", "me", "gim"), "lemme": ("let", "me", "lem"), "gonna": ("going", "to", "gon"),
               "gotta": ("got", "to", "got"), "outta": ("out", "of", "out"), "hafta": ("have", "to", "haf")}
 """Two words run together as they are said ("*gimme* the orange", "*lemme* know", "you *gotta* greet him"): each is

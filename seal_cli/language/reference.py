@@ -174,13 +174,20 @@ class Reference:
     def noun_for_one(self, np: NP) -> str | None:
         """The noun "one"/"ones" stands for in a phrase that describes it ("not the blue cup, bring me *the red
         one*", "the big spoon is dirty, bring me *a clean one*", "put the old batteries in the bin and bring me
-        *new ones*", "move it from the black table to *the white one*"): the head of the latest phrase said before
-        it, a plural one for "ones", governed by a preposition as the phrase is or not (the thing moved for an
+        *new ones*", "move it from the black table to *the white one*"; with its noun left out, "from one shelf to
+        *another*", "*another one*", "to *the other*", "to *the next*", alfred30): the head of the latest phrase said
+        before it, a plural one for "ones", governed by a preposition as the phrase is or not (the thing moved for an
         object, where for a place: "take the cup to the sink and bring me a clean one" is a cup); None when no
         phrase was said before. One-anaphora
         repeats the noun, not the thing: the phrase names another of the same kind, so it refers to no element."""
-        if np.head is None or np.head.lower not in ("one", "ones") or not np.mods or np.pronoun is not None:
+        if np.head is None or np.pronoun is not None:
             return None
+        first = self.text[np.start:np.end].split(None, 1)[0].lower()
+        if np.head.lower in ("one", "ones"):
+            if not np.mods and first != "another":    # "to *another one*": another of the kind (alfred30)
+                return None
+        elif np.head.lower not in ("another", "other", "next") or np.mods:
+            return None                       # "from one shelf to *another*", "to *the other*", "*the next*" (alfred30)
         verbs = [w.start for w in self.words if w.tag == "VERB"]
         said = [m for m in mentions(self.text, 0, np.start) if not m.name and
                 m.head.lower() not in ("one", "ones") and m.head.lower() not in PRONOUNS and

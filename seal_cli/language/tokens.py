@@ -13,7 +13,15 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from seal_cli.errors import SealError, Where
-from seal_cli.language.english import DETERMINERS, END_MARKS, RUN_TOGETHER, SPELLINGS, TITLES, TITLES_ONLY
+from seal_cli.language.english import (
+    DETERMINERS,
+    END_MARKS,
+    READ_AS_ONE,
+    RUN_TOGETHER,
+    SPELLINGS,
+    TITLES,
+    TITLES_ONLY,
+)
 from seal_cli.language.slips import function_word
 
 __all__ = ["MAX_LENGTH", "CommandError", "Word", "capitalised", "printable", "tokenize"]
@@ -136,6 +144,12 @@ def tokenize(text: str) -> list[Word]:
                 cut = start + len(two[2])
                 words.append(Word(text[start:cut], start, cut, lower=two[0]))
                 words.append(Word(text[cut:end], cut, end, lower=two[1]))
+                continue
+            one = READ_AS_ONE.get(f"{words[-1].lower} {typed.lower()}") if words and words[-1].end < start \
+                else None
+            if one is not None:                                  # "prior to": "before", one word of both
+                first = words.pop()
+                words.append(Word(text[first.start:pos], first.start, pos, lower=one))
                 continue
             slip = function_word(typed.lower()) if typed.isalpha() and (typed.islower() or typed[1:].islower() and (
                 not words or words[-1].lower in END_MARKS)) else None

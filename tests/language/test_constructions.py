@@ -3705,3 +3705,53 @@ def test_a_learners_tell_to_me_and_an_arrow_between_bare_phrases(
     the first goes (between clauses it still joins them); "when you get to X" after a command is going there, not
     the command's object brought there; "by you" after a passive command is the robot, no place."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("grab the mug prior to switching on the lamp", [("Pick", {"theme": "mug"}), ("ToggleOn", {"theme": "lamp"})]),
+    ("prior to that, open the door", [("Open", {"theme": "door"})]),
+    ("wash the plate and subsequent to that put it in the cupboard",
+     [("Clean", {"theme": "plate"}), ("Place", {"theme": "plate", "goal": "cupboard"})]),
+])
+def test_prior_to_is_before(text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """"prior to" says what "before" says, and "subsequent to" what "after" says (alfred30): "the mug prior" was the
+    theme, its head "prior"."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("The robot should put the vase on the shelf.", [("Place", {"theme": "vase", "goal": "shelf"})]),
+    ("robot must open the window", [("Open", {"theme": "window"})]),
+    ("the robot needs to find the keys", [("Find", {"theme": "key"})]),
+    ("The goal is to put the apple in the fridge", [("Place", {"theme": "apple", "goal": "fridge"})]),
+    ("the robot's task is to bring the towel to the bathroom", [("Bring", {"theme": "towel", "goal": "bathroom"})]),
+    ("the robot is cooking a potato", None),                      # the robot described: a statement
+    ("the robot slices the bread", None),
+    ("the robot should not open the window", None),               # a prohibition: no frame does it
+    ("you should not open the window", None),
+    ("you must not open the window, close it", [("Close", {"theme": "window"})]),
+])
+def test_the_robot_told_in_the_third_person(text: str, want: list[tuple[str, dict[str, str]]] | None,
+                                            library: Library) -> None:
+    """"the robot should ...", "the goal is to ..." say what "you should ...", "your task is to ..." say (alfred30);
+    "not" after such a lead-in is a prohibition, never dropped ("you should not open the window" was an Open)."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "goal"), [
+    ("move the vase from one shelf to another", "shelf"),
+    ("carry the box from one room to another", "room"),
+    ("move the book from one table to the other", "table"),
+    ("put the cushions from one sofa onto another one", "sofa"),
+    ("move the box from one table to the next", "table"),
+])
+def test_another_with_its_noun_left_out_is_of_the_kind_said_before(text: str, goal: str, library: Library) -> None:
+    """"from one shelf to *another*": the noun phrase, its head the noun said before it (one-anaphora with the noun
+    left out, alfred30); "another" was a determiner with no noun ("the command ends too early")."""
+    element = parse_command(text, library).frames[-1].elements["goal"]
+    assert element.head == goal and element.refers_to is None
+
+
+def test_another_with_no_noun_said_before_stays_another(library: Library) -> None:
+    assert parse_command("give me the other", library).frames[0].elements["theme"].head == "other"
+    assert parse_command("put it on the next shelf", library).frames[0].elements["goal"].head == "shelf"

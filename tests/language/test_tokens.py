@@ -111,3 +111,18 @@ def test_two_words_run_together_are_read_as_both(text: str, read: list[str]) -> 
     words = tokenize(text)
     assert [w.lower for w in words] == read
     assert "".join(w.text for w in words) == text.replace(" ", "")
+
+
+@pytest.mark.parametrize(("text", "said", "read"), [
+    ("pick up the mug prior to turning on the lamp", "prior to", "before"),
+    ("Subsequent to that wash it", "Subsequent to", "after"),
+])
+def test_two_words_of_one_preposition_are_one_word_read_as_it(text: str, said: str, read: str) -> None:
+    words = tokenize(text)
+    one = next(w for w in words if w.lower == read)
+    assert one.text == said and text[one.start:one.end] == said
+    assert len(words) == len(text.split()) - 1
+
+
+def test_prior_alone_is_a_word_of_its_own() -> None:
+    assert [w.lower for w in tokenize("the prior owner to")] == ["the", "prior", "owner", "to"]

@@ -386,6 +386,26 @@ def _partitive(s: State, i: int) -> Match | None:
     return None
 
 
+def _another_alone(s: State, i: int) -> Match | None:
+    """"move the vase from one shelf to *another*", "put the cushions on another, then sit down": "another" with its
+    noun left out, after a preposition and before no noun, is the noun phrase (of the kind said before it:
+    ``Reference.noun_for_one``), never a determiner whose noun is missing."""
+    if s.prev_tag() != Tag.PREP or s.noun_follows(i + 1) or s.next_lower(i) in ("one", "ones"):
+        return None                                  # "to another one": the determiner of "one"
+    return s.emit(i, 1, Tag.WORD)
+
+
+def _next_alone(s: State, i: int) -> Match | None:
+    """"move the box from one table to *the next*": "the next" after a preposition and before no noun is the noun
+    phrase, its noun left out (``Reference.noun_for_one``), as "another" is (:func:`_another_alone`); never "next"
+    the joint of a clause ("then")."""
+    out = s.out
+    if len(out) < 2 or out[-1].lower != "the" or out[-2].tag != Tag.PREP or s.noun_follows(i + 1) or \
+            s.next_lower(i) in ("one", "ones", "to") or s.verb_after(i + 1):
+        return None
+    return s.emit(i, 1, Tag.WORD)
+
+
 def _determiner(s: State, i: int) -> Match | None:
     if s.in_np() or s.words[i].lower in ("that", "this", "these", "those") and not s.noun_follows(i + 1):
         return None
@@ -583,6 +603,16 @@ PARTITIVE = Rule("partitive pronoun", _partitive, (
     Example("pour some into the cup", "some", Tag.PRON),
     Example("I'm hungry, can you bring me some?", "some", Tag.PRON),
 ), PARTITIVES, "'some', 'all' right after the verb (or its person) with no noun: some of it")
+ANOTHER_ALONE = Rule("another, its noun left out", _another_alone, (
+    Example("move the vase from one shelf to another", "another", Tag.WORD),
+    Example("carry the box from one room to another, then wait", "another", Tag.WORD),
+), frozenset(["another"]), "'from one shelf to another': the noun phrase, its noun the one said before",
+    after=frozenset([Tag.PREP]))
+NEXT_ALONE = Rule("the next, its noun left out", _next_alone, (
+    Example("move the box from one table to the next", "next", Tag.WORD),
+    Example("move the box from this shelf to the next, then wait", "next", Tag.WORD),
+), frozenset(["next"]), "'from one table to the next': the noun phrase, its noun the one said before",
+    after=frozenset([Tag.DET]))
 DETERMINER = Rule("determiner", _determiner, (Example("bring me the cup", "the", Tag.DET),), DETERMINERS,
                   "a determiner ('that' only before a noun)")
 WHATEVER = Rule("whatever is", _whatever, (

@@ -38,7 +38,8 @@ _NP_OPENING = frozenset([Tag.DET, Tag.POSS])
 
 def _negation(s: State, i: int) -> int:
     """How many words of a prohibition's opening start at ``i`` (0: none): "don't", "do not", "never", or a
-    cancellation ("never mind", "no need to"); "not" after a modal and "you" ("can you *not* slam the door") when
+    cancellation ("never mind", "no need to"); "not" after a modal and "you" ("can you *not* slam the door") or
+    after a lead-in that ends in a modal or "to" ("you should *not* open it", "the robot must *not* open it") when
     the sentence asks no question (no "?": "can you not find it?" asks whether the robot can find it)."""
     words = s.words
     n = longest_phrase(words, i, CANCELLATIONS)
@@ -57,6 +58,10 @@ def _negation(s: State, i: int) -> int:
             s.out[-1].lower.split()[-1] == "you" and i + 1 < len(words) and \
             _not_asked(s, i + 1):
         return 1
+    if words[i].lower == "not" and len(s.out) and s.out[-1].tag == Tag.POLITE and \
+            len(s.out[-1].lower.split()) > 1 and s.out[-1].lower.split()[-1] in (*MODALS, "to") and \
+            i + 1 < len(words) and _not_asked(s, i + 1):
+        return 1                                 # "you should *not* open it", "the robot must *not* ..." (alfred30)
     return 0
 
 
@@ -74,12 +79,16 @@ def opens_prohibition(words: Sequence[Word], k: int) -> bool:
     """Whether the tagged word ``k`` opens a prohibition or a cancellation, as :func:`_negation` reads them: one of
     ``english.PROHIBITIVES`` or ``english.CANCELLATIONS`` (merged into one word by the rule that refuses it, "do
     not", "never mind", or said out: "*don't* open the window", "*no need to* wash it"), or "not" right after
-    "... you" ("can you *not* slam the door"). The one source of the parser's message "asks the robot not to do
-    something" (words29; the parser had its own word list)."""
+    "... you" ("can you *not* slam the door") or after a lead-in that ends in a modal or "to" ("you should *not*
+    open the window", "the robot must *not* open it", "you need to *not* touch it"; alfred30). The one source of the
+    parser's message "asks the robot not to do something" (words29; the parser had its own word list)."""
     low = words[k].lower
     if low in _NEGATIONS or longest_phrase(words, k, _NEGATIONS) or halted(words, k):
         return True
-    return low == "not" and k > 0 and words[k - 1].lower.split()[-1:] == ["you"]
+    if low != "not" or k == 0:
+        return False
+    said = words[k - 1].lower.split()
+    return said[-1:] == ["you"] or len(said) > 1 and (said[-1] in MODALS or said[-1] == "to")
 
 
 def _not_asked(s: State, k: int) -> bool:
@@ -262,6 +271,8 @@ PROHIBITED_FIRST = Rule("a prohibition, then the command", _prohibited_first, (
     Example("never mind the kettle, switch on the radio", "kettle", ""),
     Example("could you not bang the door, just shut it", "bang", ""),
     Example("can you not bang the door", "not", Tag.WORD),
+    Example("you should not open the window, close it", "open", ""),
+    Example("the robot must not touch the oven, wipe the counter", "touch", ""),
     Example("never leave the door open", "never", Tag.WORD),
     Example("okay stop, wait in the hall", "stop", ""),
     Example("stop!", "stop", Tag.WORD),
