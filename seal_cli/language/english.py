@@ -490,6 +490,10 @@ read as "where is ..." ("find ...", ``WHERE_MEANS``); the verb of being after th
 (``WHERE_BE``). Said before "where" only; "do you know how many ..." stays a wish to know."""
 WHERE_BE = frozenset(["is", "are", "'s", "was", "were", "went", "goes", "go", "gone", "got to", "has gone", "have gone",
                       "ended up", "has got to", "have got to", "might be", "could be", "would be", "can be"])
+INFORMATION = frozenset(["name", "names", "pose", "poses", "gesture", "gestures", "gender", "genders"])
+"""What the robot reports of a person, as the GPSR generator asks it ("tell me the *name* of the person at the
+door": its ``persInfo`` are name, pose and gesture; 2018's templates ask the gender too): given or brought to
+someone, such a word is told (words41)."""
 NUMBER_OF = frozenset(["tell me the number of", "tell me the total number of", "what is the number of",
                        "what 's the number of", "what is the total number of", "what 's the total number of",
                        "what number of", "give me the number of", "tell me the count of", "report the number of",

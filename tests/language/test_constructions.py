@@ -3705,3 +3705,81 @@ def test_a_learners_tell_to_me_and_an_arrow_between_bare_phrases(
     the first goes (between clauses it still joins them); "when you get to X" after a command is going there, not
     the command's object brought there; "by you" after a passive command is the robot, no place."""
     assert_reads(text, want, library)
+
+
+# words41: questions put to the robot, fronted phrases, information given (after questions6's first score)
+
+@pytest.mark.parametrize("text", [
+    "which vase is the tallest one you can spot in the hall?",
+    "what's the oldest book you can find on the shelf",
+])
+def test_a_question_with_you_can_inside_is_told_not_a_polite_frame(text: str, library: Library) -> None:
+    """"what's the X you can find on Y" was read as a polite frame ("..., you can find"): Find of nothing, silently."""
+    (tell,) = parse_command(text, library).frames
+    assert tell.frame == "Tell" and tell.elements["message"].text == text.rstrip("?")
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("how many guests in the garden wear sunglasses?", [("Count", {"theme": "guest", "ground": "garden"})]),
+    ("how many kids in the den hold a balloon", [("Count", {"theme": "kid", "ground": "den"})]),   # no Pick added
+    ("how many guests in the lounge point to the window", [("Count", {"theme": "guest", "ground": "lounge"})]),
+    ("how many kids raise their hands", [("Count", {"theme": "kid"})]),
+    ("how many tea spoon are in the drawer", [("Count", {"theme": "spoon", "ground": "drawer"})]),  # no verb
+])
+def test_what_the_counted_do_in_the_plain_present(text: str, want: list[tuple[str, dict[str, str]]],
+                                                  library: Library) -> None:
+    """"how many X wear ..." is "how many X are wearing ..." (was refused at "wear", or a Pick of "hold a cup")."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize("text", [
+    "in the shed what is the heaviest tool",                 # no question mark: the command's end
+    "on the porch which chair is the oldest.",
+    "the woman by the piano - what is her name?",            # a dash (read as ';') and a possessive taking it up
+    "the guy at the gate: what is he wearing?",
+])
+def test_a_phrase_said_before_a_question_without_a_comma_or_mark(text: str, library: Library) -> None:
+    (tell,) = parse_command(text, library).frames
+    assert tell.frame == "Tell" and tell.elements["message"].text == text.rstrip("?.")
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("to the man sitting on the bench, tell the time", [("Tell", {"message": "time", "recipient": "man"})]),
+    ("to the girl waving at the gate, bring an umbrella", [("Bring", {"theme": "umbrella", "recipient": "girl"})]),
+    ("to the lamp, turn on the light", None),                # no goal nor recipient of it: refused as before
+])
+def test_a_person_said_first_with_to_is_who_it_is_done_to(text: str, want: list[tuple[str, dict[str, str]]] | None,
+                                                          library: Library) -> None:
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "asked"), [
+    ("is the person on the bench a boy or a girl?", "a boy or a girl"),
+    ("is the guest at the gate a man or woman", "a man or woman"),
+])
+def test_which_of_two_kinds_a_person_is_is_asked_of_them(text: str, asked: str, library: Library) -> None:
+    """Was refused: the alternatives were a phrase no element of Find took."""
+    (look,) = parse_command(text, library).frames
+    assert look.frame == "LookAt" and look.asked == asked
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("give me the name of the woman at the piano", [("Tell", {"message": "name", "recipient": "me"})]),
+    ("bring us the names of the people in the garden", [("Tell", {"message": "name", "recipient": "us"})]),
+    ("give me the cover of the book", [("Give", {"theme": "cover", "recipient": "me"})]),   # a thing: given
+])
+def test_information_given_is_told(text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """"give me the name of X" was a Bring of "the name", silently."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "column"), [
+    ("why is the gate open?", 1),
+    ("how tall is the lamp in the den?", 1),
+    ("How heavy is the box on the shelf", 1),
+])
+def test_a_question_the_robot_cannot_answer_is_refused_as_one(text: str, column: int, library: Library) -> None:
+    """Such questions were refused as "a statement, no command"; the message now says what was asked."""
+    with pytest.raises(CommandError) as refused:
+        parse_command(text, library)
+    assert refused.value.column == column and "is a question the robot cannot answer" in refused.value.message

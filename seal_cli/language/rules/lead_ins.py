@@ -28,6 +28,7 @@ from seal_cli.language.english import (
     PARTS_OF_DAY,
     PREPOSITIONS,
     PRONOUNS,
+    QUESTION_WORDS,
     RATE_WORDS,
     SEPARATOR_WORDS,
     TIME_FIRST_LEAD,
@@ -385,8 +386,8 @@ def _watching(s: State, i: int) -> Match | None:
 
 def _polite_frame(s: State, i: int) -> Match | None:
     words = s.words
-    if not all(t.tag == Tag.POLITE for t in s.out) or s.verb_at(i) is not None:
-        return None
+    if not all(t.tag == Tag.POLITE for t in s.out) or s.verb_at(i) is not None or words[i].lower in QUESTION_WORDS:
+        return None                     # "what's the thinnest thing *you can* find on the shelf?": a question (words41)
     for j in range(i, min(len(words) - 2, i + 12)):  # "It would be great if you could close ..."
         if words[j].lower in (",", ";") or words[j].lower in END_MARKS:
             break

@@ -22,6 +22,7 @@ from seal_cli.language.english import (
     FINITE,
     FOUND_OUT,
     HERE_WORDS,
+    INFORMATION,
     KNOW_WISHES,
     LEFT_ASKED,
     LET_KNOW,
@@ -461,6 +462,8 @@ def _state_from(s: State, k: int, end: int) -> int | None:
         last -= 2                                 # "whether the door is locked *or not*": the state, either way
     if last < k or words[last].lower in STATE_ADVERBS:
         return None                              # "is the cup *still* on the table": an adverb, no state of its own
+    if _kinds_asked(s, k, last):
+        return k                                 # "is the person at the bed *a man or a woman*?" (words41)
     for q in _state_starts(s, k, last):
         first = _state_starts(s, k, q - 2) if q - 2 >= k and words[q - 1].lower == "or" else []
         if q < last and not first and not _participle(s, q):
@@ -471,6 +474,17 @@ def _state_from(s: State, k: int, end: int) -> int | None:
             if p == k:
                 return p
     return None
+
+
+def _kinds_asked(s: State, k: int, last: int) -> bool:
+    """Whether words ``k .. last`` are two kinds joined by "or", each a noun after "a" or "an" ("*a man or a
+    woman*", "a boy or girl"): which of them a thing or person is is asked, as "male or female" asks a state
+    (words41: the alternatives were a phrase no element took, refused)."""
+    words = s.words
+    if words[k].lower not in ("a", "an") or last - k not in (3, 4) or words[k + 2].lower != "or":
+        return False
+    return (last - k == 3 or words[k + 3].lower in ("a", "an")) and \
+        all(words[m].lower.isalpha() and words[m].lower not in CLOSED and s.verb_at(m) is None for m in (k + 1, last))
 
 
 def _participle(s: State, q: int) -> bool:
@@ -879,6 +893,38 @@ def _how_many_seen(s: State, i: int) -> Match | None:
     if verb_lemma(verb) != verb or verb in s.lexicon.things or verb in CLOSED or not in_dictionary(verb):
         return None
     return Match(3)
+
+
+def _how_many_doing(s: State, i: int) -> Match | None:
+    """"How many people in the kitchen *wear* a hat?", "how many people in the bedroom *raise* their left arm": after
+    the people or things a "how many" question counts (a plural), a verb's plain present says what they do, as "are
+    wearing" does (words41: "wear" was refused as an unknown verb, and "hold a cup" was a Pick of its own, added
+    silently). Read as an unsaid "are" and the verb's -ing form: transitive before a noun phrase, with its
+    preposition before one, bare before the end or a particle. No noun the taxonomy knows ("how many tea *spoon*
+    are ..."), no word of a closed class, and only while nothing but the counted phrase follows the question's unit."""
+    words, low = s.words, s.words[i].lower
+    if s.verb_index < 0 or not str(s.out[s.verb_index].info).endswith(_COUNTED) or s.prev_tag() != Tag.WORD or \
+            verb_lemma(low) != low or not low.isalpha() or low in CLOSED or low in s.lexicon.things or \
+            not in_dictionary(low):
+        return None
+    after = s.out[s.verb_index + 1:]
+    counted = next((w for w in after if w.tag == Tag.WORD), None)
+    if counted is None or not is_plural(counted.lower) or any(w.tag not in _COUNTED_PHRASE for w in after):
+        return None
+    nxt = s.next_lower(i)
+    if s.np_starts(i + 1) and nxt not in PARTICLES:
+        tag = Tag.VBG_T
+    elif nxt in PREPOSITIONS and s.np_starts(i + 2):
+        tag = Tag.VBG_P
+    elif nxt in END_MARKS or nxt in PARTICLES or not nxt:
+        tag = Tag.VBG_I
+    else:
+        return None
+    return Match(1, (_unsaid(words[i].start, Tag.BE, None, "are"), words[i].tagged(tag, low)))
+
+
+_COUNTED_PHRASE = frozenset([Tag.WORD, Tag.DET, Tag.PREP, Tag.NUM, Tag.POSS, Tag.OF])
+"""Tags of the words of a counted phrase and the place it is in ("how many *people in the kitchen* wear ...")."""
 
 
 def _request(s: State, i: int) -> Match | None:
@@ -1674,6 +1720,25 @@ def _number_of(s: State, i: int) -> Match | None:
                  expect=False, verb=NUMBER_MEANS, using=False)
 
 
+def _information_given(s: State, i: int) -> Match | None:
+    """"*Give* me the name of the person at the door", "bring us the names of the three biggest objects on the shelf":
+    a verb of giving or bringing (a unit with a recipient, no verb of saying), "me" or "us", and a piece of
+    information of something (:data:`~seal_cli.language.english.INFORMATION`, then "of") is telling it (words41: a
+    Bring of "the name", silently). The verb is read as "tell"; what follows is what "tell me ..." takes."""
+    words = s.words
+    if i + 4 >= len(words) or words[i + 1].lower not in ("me", "us") or words[i + 2].lower not in _INFO_DETERMINERS \
+            or words[i + 3].lower not in INFORMATION or words[i + 4].lower != "of" or QUESTION_MEANS not in \
+            s.lexicon.units:
+        return None
+    found = s.verb_at(i)
+    if found is None or found[1] != 1 or found[0] not in s.lexicon.recipients or found[0] in s.lexicon.speech:
+        return None
+    return Match(1, (words[i].tagged(Tag.VERB, QUESTION_MEANS),), expect=False, verb=QUESTION_MEANS, using=False)
+
+
+_INFO_DETERMINERS = frozenset(["the", "their", "his", "her", "its"])
+
+
 def _let_know(s: State, i: int) -> Match | None:
     words = s.words
     if QUESTION_MEANS not in s.lexicon.units or i + 2 >= len(words):
@@ -1992,6 +2057,12 @@ HOW_MANY_SEEN = Rule("how many X can you see", _how_many_seen, (
     Example("How many dishes can you see on the dining table?", "can", ""),
     Example("how many cups do you find in the kitchen", "do", ""),
 ), _SEEN_AUXILIARIES, "'how many X can you see': who counts, dropped (the things are X)")
+HOW_MANY_DOING = Rule("how many X do", _how_many_doing, (
+    Example("How many people in the kitchen wear a hat?", "wear", Tag.VBG_T),
+    Example("how many people in the bedroom raise their left arm", "raise", Tag.VBG_T),
+    Example("how many people in the office point to the left", "point", Tag.VBG_P),
+    Example("how many men in the hall sit?", "sit", Tag.VBG_I),
+), None, "'how many X V': what the counted do, read as 'are V-ing'", after=frozenset([Tag.WORD]))
 HOW_MANY_SAID = Rule("how many, said", _how_many_said, (
     Example("tell Anna how many cups are left", "how many cups are left", Tag.SAID),
 ), frozenset(["how"]), "'how many ...' after a verb of saying and the person told: what is said")
@@ -2044,6 +2115,10 @@ WHICH_PLACE = Rule("which room is X in", _which_place, (
 STRANDED_WHERE = Rule("the preposition left at the end of which room", _stranded_where, (
     Example("which room is grandpa in?", "in", ""),
 ), _STRANDED, "the 'in' of 'which room is X in?': dropped")
+INFORMATION_GIVEN = Rule("give me the name of", _information_given, (
+    Example("give me the name of the person at the door", "give", Tag.VERB),
+    Example("Bring me the names of the three biggest objects on the shelf", "Bring", Tag.VERB),
+), None, "'give me the name of X': tell me the name of X", after=frozenset([START, Tag.POLITE, Tag.SEP]))
 NUMBER_OF_RULE = Rule("the number of", _number_of, (
     Example("Tell me the total number of snacks on the desk.", "Tell me the total number of", Tag.VERB),
     Example("What number of people in the bedroom wear white jackets?", "What number of", Tag.VERB),
@@ -2116,8 +2191,13 @@ def _fronted_question(s: State, i: int) -> Match | None:
                  expect=False, verb=QUESTION_MEANS, using=False)
 
 
-_TAKEN_UP = frozenset(["it", "they", "them", "he", "she", "him", "her", "that", "this", "those", "these", "one"])
-"""Pronouns with which a question takes up the phrase said before it ("the heaviest jar, what is *it*?")."""
+_TAKEN_UP = frozenset(["it", "they", "them", "he", "she", "him", "her", "that", "this", "those", "these", "one",
+                       "its", "their", "his"])
+"""Pronouns with which a question takes up the phrase said before it ("the heaviest jar, what is *it*?"; a
+possessive too, "the man at the door, what's *his* name?": words41)."""
+_PHRASE_BREAKS = frozenset([",", ";", ":"])
+"""What ends a phrase said first before the question that takes it up: a comma, a dash (read as ";") or a colon
+("the person by the shelf *-* what are they wearing?", words41)."""
 
 
 def _phrase_said_first(s: State, i: int) -> int | None:
@@ -2126,7 +2206,7 @@ def _phrase_said_first(s: State, i: int) -> int | None:
     the library in its base form stands in it ("the cup, bring it": a command takes it up, ``DISLOCATED``)."""
     words = s.words
     k = i + 1
-    while k < len(words) and words[k].lower not in END_MARKS and words[k].lower not in (",", ";"):
+    while k < len(words) and words[k].lower not in END_MARKS and words[k].lower not in _PHRASE_BREAKS:
         if s.verb_at(k) is not None and verb_lemma(words[k].lower) == words[k].lower and \
                 words[k - 1].lower not in NP_OPENERS:
             return None
@@ -2143,7 +2223,8 @@ def _phrase_asked(s: State, i: int) -> Match | None:
             words[i].lower not in NP_OPENERS:
         return None
     k = _phrase_said_first(s, i)
-    if k is None or k + 2 >= len(words) or words[k].lower != "," or words[k + 1].lower not in QUESTION_WORDS or \
+    if k is None or k + 2 >= len(words) or words[k].lower not in _PHRASE_BREAKS or \
+            words[k + 1].lower not in QUESTION_WORDS or \
             not _asked_to_the_end(s, k + 1) or _question(s, k + 1) is None:
         return None
     end = s.speech_end(k + 1)
@@ -2207,7 +2288,9 @@ def _count_tail_dropped(s: State, i: int) -> Match | None:
 def _asked_to_the_end(s: State, k: int) -> bool:
     """Whether a question that starts at ``k`` is all the rest of its sentence and asks ("in the hall *which person
     is standing?*"): a question mark ends it, and no verb of the library in its base form is said in it (a command
-    the question word only opened a relative clause before: "in the box which is red put the cup")."""
+    the question word only opened a relative clause before: "in the box which is red put the cup"). Crowd workers
+    often leave the mark out or write a stop ("on the shelf what is the biggest object", words41): the command's
+    end does as well, when nothing follows it."""
     words = s.words
     m = k + 1
     while m < len(words) and words[m].lower not in END_MARKS:
@@ -2215,7 +2298,7 @@ def _asked_to_the_end(s: State, k: int) -> bool:
         if low in (",", ";") or s.verb_at(m) is not None and verb_lemma(low) == low:
             return False
         m += 1
-    return m < len(words) and words[m].lower == "?"
+    return m >= len(words) or words[m].lower == "?" or m == len(words) - 1
 
 
 _FRONTED_FIRST = frozenset([*LOCATIVE, "from", "to", "into", "onto", "out of", "off"])
