@@ -3777,9 +3777,32 @@ def test_information_given_is_told(text: str, want: list[tuple[str, dict[str, st
     ("why is the gate open?", 1),
     ("how tall is the lamp in the den?", 1),
     ("How heavy is the box on the shelf", 1),
+    ("how much does the crate in the shed weigh?", 1),      # was a Count of "does" (a plural of "doe")
 ])
 def test_a_question_the_robot_cannot_answer_is_refused_as_one(text: str, column: int, library: Library) -> None:
     """Such questions were refused as "a statement, no command"; the message now says what was asked."""
     with pytest.raises(CommandError) as refused:
         parse_command(text, library)
     assert refused.value.column == column and "is a question the robot cannot answer" in refused.value.message
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("count the jars and let me know how many there are", [("Count", {"theme": "jar"})]),
+    ("count the jars, then tell me how many there are", [("Count", {"theme": "jar"})]),
+    ("count the jars and tell me how many lids there are", [("Count", {"theme": "jar"}), ("Count", {"theme": "lid"})]),
+    ("how much jars are in the shed", [("Count", {"theme": "jar", "ground": "shed"})]),     # words25's, kept
+])
+def test_a_count_of_nothing_after_a_count_reports_it(text: str, want: list[tuple[str, dict[str, str]]],
+                                                     library: Library) -> None:
+    """words41, after questions7's first score: "... and let me know how many there are" was a second Count."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("tell the boy at the gate something about yourself", "something about yourself"),
+    ("tell the woman sitting in the den something", "something"),
+])
+def test_something_told_to_a_person_described(text: str, want: str, library: Library) -> None:
+    """words41: after a person and where they are, "something" is the message (it was refused as unplaced)."""
+    (tell,) = parse_command(text, library).frames
+    assert tell.frame == "Tell" and tell.elements["message"].text == want

@@ -1672,13 +1672,16 @@ def _how_much_counted(s: State, i: int) -> Match | None:
     while k < len(words) and words[k].lower.isalpha() and words[k].lower not in CLOSED and not is_plural(
             words[k].lower) and s.verb_at(k) is None:
         k += 1                                       # "how much *dirty* plates"
-    if k >= len(words) or not is_plural(words[k].lower) or words[k].lower in CLOSED:
-        return None
+    if k >= len(words) or not is_plural(words[k].lower) or words[k].lower in CLOSED or \
+            verb_lemma(words[k].lower) in _AUXILIARY_LEMMAS:
+        return None                                  # "how much *does* the box weigh?": a weight, no count (words41)
     end = words[i + 1].end
     return Match(2, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, _COUNTED),),
                  expect=False, verb=_COUNTED, using=False)
 
 
+_AUXILIARY_LEMMAS = frozenset(["do", "be", "have"])
+"""Verbs whose forms ("does", "is", "has") open the question after "how much", no noun counted."""
 _PLACE_NOUNS = frozenset(["room", "place", "part", "floor"])
 _STRANDED = frozenset(["in", "at", "on"])
 
