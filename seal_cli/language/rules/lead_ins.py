@@ -391,8 +391,9 @@ def _polite_frame(s: State, i: int) -> Match | None:
     for j in range(i, min(len(words) - 2, i + 12)):  # "It would be great if you could close ..."
         if words[j].lower in (",", ";") or words[j].lower in END_MARKS:
             break
-        n = 1 if words[j + 1].lower in _YOU_MODALS else 2 if j + 2 < len(words) and \
-            (words[j + 1].lower, words[j + 2].lower) in _YOU_MODALS_TO else 0
+        n = 1 if words[j + 1].lower in _YOU_MODALS or j > i and words[j - 1].lower == "of" and \
+            words[j + 1].lower == "to" else 2 if j + 2 < len(words) and \
+            (words[j + 1].lower, words[j + 2].lower) in _YOU_MODALS_TO else 0   # "it'd be kind *of you to*" (words41)
         if words[j].lower == "you" and n and s.verb_after(j + 1 + n):
             return s.emit(i, j + 1 + n - i, Tag.POLITE)
         if j > i and words[j - 1].lower == "if" and _you_would(s, j):
@@ -542,4 +543,5 @@ POLITE_FRAME = Rule("if you could", _polite_frame, (
     Example("it would be nice if you opened the gate", "it would be nice if you", Tag.POLITE),
     Example("I think you should follow her", "I think you should", Tag.POLITE),
     Example("I suppose you need to wash the cup", "I suppose you need to", Tag.POLITE),
+    Example("it would be kind of you to open the gate", "it would be kind of you to", Tag.POLITE),
 ), None, "a polite frame ending in 'you could' before the verb", after=frozenset([START, Tag.POLITE]))

@@ -114,7 +114,8 @@ def _question(s: State, i: int) -> Match | None:
     if QUESTION_MEANS not in s.lexicon.units or i + 1 >= len(words) or words[i + 1].lower in END_MARKS:
         return None
     nxt = words[i + 1].lower
-    if nxt not in ("is", "are", "'s", "was", "were") and not nxt.isalpha() or _phrase(s, i, _PSEUDO_CLEFTS):
+    if nxt not in ("is", "are", "'s", "was", "were") and not nxt.isalpha() and not nxt.isdigit() or \
+            _phrase(s, i, _PSEUDO_CLEFTS):      # "which *3* items on the table are the thinnest?" (words41)
         return None                               # "what I need is X": a wish (``WISHED_STATE``), no question
     end = _asked_again_cut(s, i, s.speech_end(i))  # the question, whatever its shape, is what to tell
     if end - i < 3 and words[end - 1].lower in ("is", "are", "'s", "was", "were"):
@@ -469,6 +470,8 @@ def _state_from(s: State, k: int, end: int) -> int | None:
         if q < last and not first and not _participle(s, q):
             continue                              # a particle only in alternatives: "is the light *on*" as before
         for p in first or [q]:                    # "sitting (down) or": the first alternative begins the state
+            while first and p - 2 >= k and words[p - 1].lower == "," and _state_starts(s, k, p - 2):
+                p = _state_starts(s, k, p - 2)[-1]  # "standing, sitting or lying": three alternatives (words41)
             while p > k and words[p - 1].lower in STATE_ADVERBS:
                 p -= 1
             if p == k:
@@ -478,9 +481,11 @@ def _state_from(s: State, k: int, end: int) -> int | None:
 
 def _kinds_asked(s: State, k: int, last: int) -> bool:
     """Whether words ``k .. last`` are two kinds joined by "or", each a noun after "a" or "an" ("*a man or a
-    woman*", "a boy or girl"): which of them a thing or person is is asked, as "male or female" asks a state
-    (words41: the alternatives were a phrase no element took, refused)."""
+    woman*", "a boy or girl"), or one kind of person ("a woman"): which of them a thing or person is is asked, as
+    "male or female" asks a state (words41: the alternatives were a phrase no element took, refused)."""
     words = s.words
+    if words[k].lower in ("a", "an") and last == k + 1:
+        return words[last].lower in s.lexicon.people      # "is the person at the door *a woman*?": one kind of person
     if words[k].lower not in ("a", "an") or last - k not in (3, 4) or words[k + 2].lower != "or":
         return False
     return (last - k == 3 or words[k + 3].lower in ("a", "an")) and \
@@ -521,7 +526,27 @@ def _clause_stop(s: State, k: int) -> int:
     """Where a question said from ``k`` ends: the clause's end, or an "and"/"then" before it ("check if the door
     is closed *and* lock it": the next clause, whatever its verb)."""
     end = s.cond_end(k)
-    return next((j for j in range(k, end) if s.words[j].lower in ("and", "then")), end)
+    end = next((j for j in range(k, end) if s.words[j].lower in ("and", "then")), end)
+    return _listed_states_end(s, k, end)
+
+
+def _listed_states_end(s: State, k: int, end: int) -> int:
+    """Where a list of states a question asks ends when a comma at ``end`` joins a state before it to more ("is he
+    *standing, sitting or lying down*?", words41: the comma ended the clause, the rest was refused); else ``end``.
+    The list ends in "or" and a state, each state maybe with its particle."""
+    words = s.words
+    if end >= len(words) or words[end].lower != "," or end - 1 < k or not _state_starts(s, k, end - 1):
+        return end
+    j, joined = end, False
+    while j < len(words) and words[j].lower in (",", "or"):
+        joined = joined or words[j].lower == "or"
+        m = j + 1
+        if m >= len(words) or not _is_state(s, words[m].lower) or words[m].lower in STATE_ADVERBS:
+            return end
+        j = m + 1 + (m + 1 < len(words) and words[m + 1].lower in PARTICLES)
+        if joined:
+            return j if j >= len(words) or words[j].lower in END_MARKS or words[j].lower in (",", "?") else end
+    return end
 
 
 def _state_stop(s: State, k: int) -> int:
